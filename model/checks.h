@@ -1,0 +1,25 @@
+#pragma once
+
+// The checks the vendor tools make, on the listing and on the ladder. Every code is listed
+// in docs/diagnostics.md and has a test that triggers it and one that does not.
+
+#include "diagnostic.h"
+#include "il.h"
+#include "ladder.h"
+
+#include <vector>
+
+namespace rung::model {
+
+struct CheckOptions {
+    const ModelVariant *model = nullptr; // nullptr: the family's default model
+};
+
+// Checks on a parsed listing (fuzzy forms, END, nesting, stack, operands, duplicates, length).
+std::vector<Diagnostic> checkList(const InstructionList &list, const CheckOptions &options = {});
+
+// Checks on the ladder (reverse current, open branches, unconnected elements, outputs with no
+// condition) plus every listing check mapped back to rung locations.
+std::vector<Diagnostic> checkLadder(const LadderProgram &ladder, const CheckOptions &options = {});
+
+} // namespace rung::model

@@ -1,0 +1,242 @@
+#pragma once
+
+// A target family's description as data: device areas, system devices, the instruction
+// table and the limits. Every room reads these tables; no address or mnemonic rule is
+// written anywhere else.
+
+#include <QString>
+#include <QStringList>
+
+#include <cstdint>
+#include <optional>
+#include <span>
+#include <vector>
+
+namespace rung::model {
+
+enum class Family : std::uint8_t { Vpc, Vigor, Cpm1, Pl110 };
+
+// How the element numbers of an area are written.
+enum class Numbering : std::uint8_t {
+    Decimal,    // X0, M100, i00 (with Area::digits for zero padding)
+    Octal,      // Vigor X/Y: X7 is followed by X10
+    ChannelBit, // CPM1: channel and bit, 010.00 (bit), 010 (channel as a word)
+};
+
+enum class AreaKind : std::uint8_t {
+    Bit,     // a bit device: X, Y, M, S, i, o, r, PL110 I/Q/M/B
+    Word,    // a word device: D, p, a, d, V
+    Timer,   // contact bit + current value + set value
+    Counter, // contact bit + current value + set value
+    Channel, // CPM1 style: a 16-bit word whose bits are devices too (000.00 .. 255.15, HR, DM)
+};
+
+struct Area {
+    QString key;           // stable name, unique per target, used by models and files: "X", "IN"
+    QString prefix;        // as written in listings: "X", "i", "HR", "" for CPM1 IR/SR
+    AreaKind kind = AreaKind::Bit;
+    int first = 0;         // first element number (PL110 areas start at 1)
+    int last = 0;          // last element number, inclusive
+    Numbering numbering = Numbering::Decimal;
+    int digits = 0;        // minimum printed digits (VPC: 2, CPM1 channels: 3)
+    bool writable = true;  // may be the destination of an output / transfer
+    bool retentive = false;
+    bool system = false;   // system area (special relays / registers)
+    bool physical = false; // mapped to terminals: inputs are refreshed from the I/O image
+    int bank = -1;         // areas with the same bank share element numbers (VPC t/c, CPM1 TIM/CNT)
+    int wordBits = 16;     // value width for Word/Timer/Counter/Channel areas (Vigor C200+: 32)
+    const char *description = nullptr; // QT_TRANSLATE_NOOP("rung::model::Target", ...)
+    // Sub-ranges with other properties (read-only system bits inside a channel area,
+    // retentive M ranges on Vigor) are separate Area entries; the parser picks the one that
+    // contains the number.
+};
+
+// A device address resolved against a target: the area, the element number as written
+// (octal areas keep their numeric value, e.g. X10 -> 8) and, for bit access to a word or a
+// channel, the bit number.
+struct Address {
+    int area = -1;
+    int index = 0;
+    int bit = -1;
+
+    bool valid() const { return area >= 0; }
+    friend bool operator==(const Address &, const Address &) = default;
+    friend auto operator<=>(const Address &, const Address &) = default;
+};
+
+enum class SystemRole : std::uint8_t {
+    AlwaysOn,
+    FirstScan,
+    ScanToggle,
+    Clock10ms,
+    Clock100ms,
+    Clock1s,
+    Clock1min,
+    Run,
+    Error,
+    Connected,
+    ScanTimeCurrent,
+    ScanTimeMin,
+    ScanTimeMax,
+    Other,
+};
+
+struct SystemDevice {
+    QString device; // as written: "r88", "M9000", "253.13", "SM0.0"
+    SystemRole role = SystemRole::Other;
+    const char *description = nullptr; // QT_TRANSLATE_NOOP("rung::model::Target", ...)
+};
+
+// What an instruction does, independent of its spelling.
+enum class Op : std::uint8_t {
+    Load,           // start a block with a contact
+    And,            // contact in series
+    Or,             // contact in parallel
+    AndBlock,       // ANB / AND LD
+    OrBlock,        // ORB / OR LD
+    Push,           // MPS
+    ReadStack,      // MRD
+    Pop,            // MPP
+    Invert,         // INV (Vigor), NOT (PL110)
+    Out,            // coil; Instruction::negated for OUT NOT
+    Set,
+    Reset,
+    PulseRise,      // PLS / DIFU
+    PulseFall,      // PLF / DIFD
+    Keep,           // two inputs (set, reset), reset wins: VPC LR, CPM1 KEEP
+    Timer,          // one input
+    Counter,        // Vigor: one input (reset by RST); VPC/CPM1: two inputs (count, reset)
+    UpDownCounter,  // three inputs (up, down, reset): CPM1 CNTR, PL110 MUP/MDOWN
+    Transfer,       // VPC OUT d,s / OUT d+s / OUT d-s (and OUT* forms)
+    Apply,          // application instruction box (MOV, ADD, CMP, FM, ...)
+    Interlock,      // IL
+    InterlockClear, // ILC
+    Jump,           // JMP
+    JumpEnd,        // JPE / JME
+    StepLadder,     // STL
+    Return,         // RET
+    End,
+    Nop,
+};
+
+enum class ContactMode : std::uint8_t { Normal, Negated, Rising, Falling };
+
+enum class CompareOp : std::uint8_t { None, Eq, Ne, Lt, Le, Gt, Ge };
+
+enum class TransferOp : std::uint8_t { None, Assign, Add, Subtract };
+
+// What may stand in an operand slot.
+enum class OperandKind : std::uint8_t {
+    BitSource,   // any readable bit device
+    BitDest,     // a writable bit device
+    WordSource,  // a word device, a timer/counter current value, or a constant
+    WordDest,    // a writable word device (timer/counter = its set value on VPC)
+    Constant,    // a constant only (K/H, #BCD, plain number)
+    TimerNumber, // a timer element
+    CounterNumber,
+    StepRelay,   // Vigor S
+    Label,       // jump label number (CPM1 JMP 00..49)
+    SetValue,    // timer/counter preset: constant or word device
+    Count,       // a repetition count n (ZRST range end is a device, so this is for n only)
+};
+
+struct OperandSpec {
+    OperandKind kind = OperandKind::BitSource;
+    bool optional = false;
+};
+
+// Application-instruction semantics the simulator implements (Op::Apply).
+enum class ApplyFunction : std::uint8_t {
+    None,
+    Mov,
+    BlockMove,
+    IndirectMove,
+    Compare, // Vigor CMP S1 S2 D: D, D+1, D+2 = >, =, <
+    ZoneReset,
+    Add,
+    Sub,
+    Mul,
+    Div,
+    Inc,
+    Dec,
+    Math, // PL110 FM: operator is the second operand's text
+    SetBit,
+    ResetBit,
+    NotSimulated,
+};
+
+struct InstructionSpec {
+    QString mnemonic;          // canonical spelling as the printer writes it: "LD NOT", "LDI"
+    QStringList aliases;       // other accepted spellings: "LD*", "KEEP(11)", "AND LD"
+    int functionCode = -1;     // CPM1 function code, accepted as MNEMONIC(NN)
+    Op op = Op::Nop;
+    ContactMode mode = ContactMode::Normal; // for contacts
+    CompareOp compare = CompareOp::None;    // compare contacts
+    bool negated = false;                   // OUT NOT, OUT*, LD NOT (with mode = Negated)
+    TransferOp transfer = TransferOp::None;
+    ApplyFunction function = ApplyFunction::None;
+    int inputs = 1;            // blocks consumed by an output instruction (LR/KEEP: 2, CNTR: 3)
+    bool fusedOperand = false; // VPC TIM00, CNT05: the element number is part of the mnemonic
+    std::vector<OperandSpec> operands;
+    const char *summary = nullptr;    // QT_TRANSLATE_NOOP("rung::model::Target", ...) for call tips
+    const char *operandHelp = nullptr; // e.g. "T0..T255 K1..K32767"; untranslated syntax
+};
+
+struct Limits {
+    int programSteps = 0;     // program length in steps / lines / words
+    int stackDepth = 8;       // MPS levels
+    int contactsPerRow = 11;  // ladder row width (contacts before the output column)
+    int maxBlocksInRow = 8;   // consecutive ANB/ORB allowed (0 = no limit)
+    int jumpLabels = 0;       // JMP N range (CPM1: 50)
+    bool allowsStack = false; // MPS/MRD/MPP exist
+    bool duplicateCoilIsError = true; // VPC/CPM1 error, Vigor warning
+    bool outputNeedsCondition = true;
+};
+
+// A model (hardware variant) narrows the areas: I/O counts, analog channels.
+struct ModelVariant {
+    QString name;            // "VPC2416", "VB", "CPM1-20CDR", "PL110-1A"
+    struct Override {
+        QString area;        // Area::key of the area it narrows
+        int first = 0;
+        int last = -1;       // last < first: the area does not exist on this model
+    };
+    std::vector<Override> overrides;
+    int programSteps = 0;    // 0 = the family's limit
+};
+
+class Target {
+public:
+    Family family;
+    QString id;          // "vpc", "vigor", "cpm1", "pl110" (command-line and file key)
+    QString displayName; // "VPC", "Vigor M/VB/VH", "Omron CPM1", "PL110"
+    std::vector<Area> areas;
+    std::vector<SystemDevice> systemDevices;
+    std::vector<InstructionSpec> instructions;
+    std::vector<ModelVariant> models;
+    Limits limits;
+    double defaultTimerBaseMs = 100.0; // Vigor TMR default resolution
+
+    // The four families, built once.
+    static const Target &get(Family family);
+    static const Target *byId(const QString &id); // nullptr when unknown
+    static std::span<const Family> families();
+
+    const ModelVariant *model(const QString &name) const; // nullptr when unknown
+    const ModelVariant &defaultModel() const;
+
+    // Instruction lookup by spelling (case-insensitive, aliases and "NAME(NN)" accepted).
+    const InstructionSpec *findInstruction(const QString &mnemonic) const;
+    // The canonical instruction for an operation, as the converter emits it.
+    const InstructionSpec *findInstruction(Op op, ContactMode mode = ContactMode::Normal,
+                                           CompareOp compare = CompareOp::None,
+                                           bool negated = false) const;
+    int indexOf(const InstructionSpec *spec) const;
+
+    const Area &area(int index) const { return areas[static_cast<std::size_t>(index)]; }
+    // Effective range of an area on a model (after the model's overrides); nullopt = absent.
+    std::optional<std::pair<int, int>> range(int areaIndex, const ModelVariant *model) const;
+    const SystemDevice *systemDevice(SystemRole role) const;
+};
+
+} // namespace rung::model
