@@ -180,6 +180,7 @@ struct InstructionSpec {
     std::vector<OperandSpec> operands;
     const char *summary = nullptr;    // QT_TRANSLATE_NOOP("rung::model::Target", ...) for call tips
     const char *operandHelp = nullptr; // e.g. "T0..T255 K1..K32767"; untranslated syntax
+    int steps = 1;             // program memory the instruction occupies (words / steps)
 };
 
 struct Limits {
