@@ -8,9 +8,9 @@ namespace rung::model {
 
 namespace {
 
-QString tr(const char *text) {
-    return QCoreApplication::translate("rung::model::Address", text);
-}
+struct Tr {
+    Q_DECLARE_TR_FUNCTIONS(rung::model::Address)
+};
 
 // Prefixes are compared without spaces and case: "TIM 000", "TIM000" and "tim000" are one
 // device, and VPC's lower-case "i00" may be typed as "I00".
@@ -96,7 +96,7 @@ std::variant<Address, AddressError> parseAddress(const Target &target, QStringVi
         return AddressError{message, lead + originalColumn(trimmed, squeezedPos)};
     };
     if (s.isEmpty())
-        return AddressError{tr("A device is missing"), 0};
+        return AddressError{Tr::tr("A device is missing"), 0};
 
     // The longest prefix followed by a digit wins: "HR00" is HR, not an unprefixed channel.
     qsizetype bestLength = -1;
@@ -113,10 +113,10 @@ std::variant<Address, AddressError> parseAddress(const Target &target, QStringVi
         if (letters == s.size()) {
             for (const Area &a : target.areas)
                 if (squeeze(a.prefix) == s)
-                    return error(tr("%1: a number is expected after %2").arg(shown, a.prefix),
+                    return error(Tr::tr("%1: a number is expected after %2").arg(shown, a.prefix),
                                  s.size());
         }
-        return error(tr("%1 is not a device of %2").arg(shown, target.displayName), 0);
+        return error(Tr::tr("%1 is not a device of %2").arg(shown, target.displayName), 0);
     }
 
     // Areas sharing the prefix differ by numbering only in theory; read with the first one's
@@ -131,23 +131,25 @@ std::variant<Address, AddressError> parseAddress(const Target &target, QStringVi
     const Area &rules = target.area(firstArea);
     const Number number = readNumber(s, bestLength, radixOf(rules.numbering));
     if (number.overflow)
-        return error(tr("%1: the number is too large").arg(shown), bestLength);
+        return error(Tr::tr("%1: the number is too large").arg(shown), bestLength);
     if (number.badDigit >= 0)
-        return error(tr("%1: %2 is numbered in octal").arg(shown, rules.prefix), number.badDigit);
+        return error(Tr::tr("%1: %2 is numbered in octal").arg(shown, rules.prefix),
+                     number.badDigit);
 
     int bit = -1;
     qsizetype pos = bestLength + number.length;
     if (pos < s.size() && s[pos] == QLatin1Char('.')) {
         const Number b = readNumber(s, pos + 1, 10);
         if (b.length == 0)
-            return error(tr("%1: a bit number is expected after the point").arg(shown), pos + 1);
+            return error(Tr::tr("%1: a bit number is expected after the point").arg(shown),
+                         pos + 1);
         if (b.overflow || b.value > 15)
-            return error(tr("%1: bit %2 is beyond 00..15").arg(shown).arg(b.value), pos + 1);
+            return error(Tr::tr("%1: bit %2 is beyond 00..15").arg(shown).arg(b.value), pos + 1);
         bit = static_cast<int>(b.value);
         pos += 1 + b.length;
     }
     if (pos < s.size())
-        return error(tr("%1: unexpected '%2' after the device").arg(shown, s.mid(pos)), pos);
+        return error(Tr::tr("%1: unexpected '%2' after the device").arg(shown, s.mid(pos)), pos);
 
     const int index = static_cast<int>(number.value);
     const QString who = model ? model->name : target.displayName;
@@ -182,9 +184,17 @@ std::variant<Address, AddressError> parseAddress(const Target &target, QStringVi
             bitAllowed = bitAllowed || a.numbering == Numbering::ChannelBit;
         }
         if (bit >= 0 && !bitAllowed)
-            return error(tr("%1: %2 has no bit numbers").arg(shown, rules.prefix), bestLength);
+            return error(Tr::tr("%1: %2 has no bit numbers").arg(shown, rules.prefix), bestLength);
         const Area &a = target.area(anyArea);
-        return error(tr("%1 is beyond %2's %3 %4..%5")
+        if (model) {
+            // Name the model's range: "o31 is beyond VPC2416's outputs o00..o15".
+            if (const auto r = target.range(anyArea, model))
+                return error(Tr::tr("%1 is beyond %2's %3 %4..%5")
+                                 .arg(shown, who, areaName(a), a.prefix + formatNumber(a, r->first),
+                                      a.prefix + formatNumber(a, r->second)),
+                             bestLength);
+        }
+        return error(Tr::tr("%1 is beyond %2's %3 %4..%5")
                          .arg(shown, target.displayName, areaName(a),
                               a.prefix + formatNumber(a, lo), a.prefix + formatNumber(a, hi)),
                      bestLength);
@@ -194,10 +204,10 @@ std::variant<Address, AddressError> parseAddress(const Target &target, QStringVi
     if (model) {
         const auto r = target.range(matched, model);
         if (!r)
-            return error(tr("%1: %2 has no %3").arg(shown, who, areaName(a)), 0);
+            return error(Tr::tr("%1: %2 has no %3").arg(shown, who, areaName(a)), 0);
         if (index < r->first || index > r->second) {
             // The model narrows the area: name the model's range, as the user sees it.
-            return error(tr("%1 is beyond %2's %3 %4..%5")
+            return error(Tr::tr("%1 is beyond %2's %3 %4..%5")
                              .arg(shown, who, areaName(a), a.prefix + formatNumber(a, r->first),
                                   a.prefix + formatNumber(a, r->second)),
                          bestLength);
@@ -220,7 +230,7 @@ std::variant<Constant, AddressError> parseConstant(const Target &target, QString
     const QStringView t = text.trimmed();
     const int lead = static_cast<int>(text.indexOf(t.isEmpty() ? text : t));
     if (t.isEmpty())
-        return AddressError{tr("A constant is missing"), 0};
+        return AddressError{Tr::tr("A constant is missing"), 0};
     Constant c;
     qsizetype pos = 0;
     int radix = 10;
@@ -243,14 +253,16 @@ std::variant<Constant, AddressError> parseConstant(const Target &target, QString
     const bool cpm1 = target.family == Family::Cpm1;
     if ((c.style == Constant::Style::Decimal || c.style == Constant::Style::Hex) && !vigor)
         return AddressError{
-            tr("%1: %2 writes constants without K or H").arg(t.toString(), target.displayName),
+            Tr::tr("%1: %2 writes constants without K or H").arg(t.toString(), target.displayName),
             lead};
     if (c.style == Constant::Style::Bcd && !cpm1)
-        return AddressError{tr("%1: # constants belong to CPM1 listings").arg(t.toString()), lead};
+        return AddressError{Tr::tr("%1: # constants belong to CPM1 listings").arg(t.toString()),
+                            lead};
     if (c.style == Constant::Style::Plain && (vigor || cpm1))
         return AddressError{
-            vigor ? tr("%1: write a constant as K (decimal) or H (hexadecimal)").arg(t.toString())
-                  : tr("%1: write a constant with # (e.g. #0150)").arg(t.toString()),
+            vigor
+                ? Tr::tr("%1: write a constant as K (decimal) or H (hexadecimal)").arg(t.toString())
+                : Tr::tr("%1: write a constant with # (e.g. #0150)").arg(t.toString()),
             lead};
     bool negative = false;
     if (pos < t.size() && (t[pos] == QLatin1Char('-') || t[pos] == QLatin1Char('+')) &&
@@ -259,7 +271,7 @@ std::variant<Constant, AddressError> parseConstant(const Target &target, QString
         ++pos;
     }
     if (pos >= t.size())
-        return AddressError{tr("%1: digits are expected").arg(t.toString()),
+        return AddressError{Tr::tr("%1: digits are expected").arg(t.toString()),
                             lead + static_cast<int>(pos)};
     qint64 value = 0;
     bool hexDigitInBcd = false;
@@ -272,14 +284,14 @@ std::variant<Constant, AddressError> parseConstant(const Target &target, QString
                  ch <= QLatin1Char('F'))
             d = ch.unicode() - 'A' + 10;
         if (d < 0)
-            return AddressError{tr("%1: '%2' is not a digit").arg(t.toString(), QString(t[i])),
+            return AddressError{Tr::tr("%1: '%2' is not a digit").arg(t.toString(), QString(t[i])),
                                 lead + static_cast<int>(i)};
         if (c.style == Constant::Style::Bcd && d > 9)
             hexDigitInBcd = true;
         const int base = (c.style == Constant::Style::Bcd && hexDigitInBcd) ? 16 : radix;
         value = value * base + d;
         if (value > 0xFFFFFFFFLL)
-            return AddressError{tr("%1: the constant is too large").arg(t.toString()), lead};
+            return AddressError{Tr::tr("%1: the constant is too large").arg(t.toString()), lead};
     }
     if (hexDigitInBcd) {
         // "#00FF" is a hexadecimal word, not BCD: re-read all digits in base 16.

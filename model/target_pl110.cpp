@@ -2,8 +2,7 @@
 
 namespace rung::model::detail {
 
-Target makePl110Target()
-{
+Target makePl110Target() {
     Target t;
     t.family = Family::Pl110;
     t.id = QStringLiteral("pl110");

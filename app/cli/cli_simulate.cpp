@@ -1,0 +1,108 @@
+#include "cli_simulate.h"
+
+#include "model/il.h"
+#include "simulator/compiler.h"
+#include "simulator/trace.h"
+
+#include <QCoreApplication>
+#include <QFile>
+#include <QRegularExpression>
+
+namespace rung::app {
+
+namespace {
+
+struct Tr {
+    Q_DECLARE_TR_FUNCTIONS(rung::app::Simulate)
+};
+
+QString usage() {
+    return Tr::tr("usage: rungstudio-cli simulate FILE [--target T] --scans N [--period MS] "
+                  "[--set DEV=VALUE@SCAN]... --trace DEV[,DEV...]");
+}
+
+// "; target: vigor" on the first line names the target of a listing.
+QString targetFromListing(const QString &text) {
+    static const QRegularExpression re(QStringLiteral("^\\s*(?:;|//)\\s*target\\s*:\\s*(\\w+)"),
+                                       QRegularExpression::CaseInsensitiveOption);
+    const auto m = re.match(text.section(QLatin1Char('\n'), 0, 0));
+    return m.hasMatch() ? m.captured(1) : QString();
+}
+
+} // namespace
+
+int runSimulateCommand(const QStringList &args, QTextStream &out, QTextStream &err) {
+    QString file;
+    QString targetId;
+    QStringList options;
+    for (qsizetype i = 0; i < args.size(); ++i) {
+        if (args[i] == QLatin1String("--target") && i + 1 < args.size()) {
+            targetId = args[++i];
+        } else if (args[i].startsWith(QLatin1String("--"))) {
+            options << args[i];
+            if (i + 1 < args.size())
+                options << args[++i];
+        } else if (file.isEmpty()) {
+            file = args[i];
+        } else {
+            err << Tr::tr("unexpected argument %1").arg(args[i]) << '\n' << usage() << '\n';
+            return 2;
+        }
+    }
+    if (file.isEmpty()) {
+        err << usage() << '\n';
+        return 2;
+    }
+    QFile f(file);
+    if (!f.open(QIODevice::ReadOnly | QIODevice::Text)) {
+        err << Tr::tr("cannot read %1: %2").arg(file, f.errorString()) << '\n';
+        return 2;
+    }
+    const QString text = QString::fromUtf8(f.readAll());
+    if (targetId.isEmpty())
+        targetId = targetFromListing(text);
+    if (targetId.isEmpty()) {
+        err << Tr::tr("%1: no target; give --target or a \"; target: NAME\" first line").arg(file)
+            << '\n';
+        return 2;
+    }
+    const model::Target *target = model::Target::byId(targetId);
+    if (!target) {
+        err << Tr::tr("unknown target %1").arg(targetId) << '\n';
+        return 2;
+    }
+    simulator::TraceRequest request;
+    QString error;
+    if (!simulator::parseTraceOptions(*target, options, &request, &error)) {
+        err << error << '\n' << usage() << '\n';
+        return 2;
+    }
+
+    const model::ParseResult parsed = model::parseInstructionList(*target, text);
+    if (!parsed.ok()) {
+        for (const model::ParseError &e : parsed.errors)
+            err << QStringLiteral("%1:%2:%3: ").arg(file).arg(e.line).arg(e.column)
+                << Tr::tr("error: %1").arg(e.message) << '\n';
+        err << Tr::tr("the program does not start") << '\n';
+        return 1;
+    }
+    const simulator::CompileResult compiled = simulator::compileProgram(parsed.list);
+    for (const model::Diagnostic &d : compiled.diagnostics)
+        err << QStringLiteral("%1:%2:%3: ").arg(file).arg(d.location.line).arg(d.location.column)
+            << (d.severity == model::Severity::Error ? Tr::tr("error: %1").arg(d.message)
+                                                     : Tr::tr("warning: %1").arg(d.message))
+            << '\n';
+    if (!compiled.ok()) {
+        err << Tr::tr("the program does not start") << '\n';
+        return 1;
+    }
+    std::vector<simulator::RuntimeError> runtimeErrors;
+    simulator::runTrace(compiled.program, request, out, &runtimeErrors);
+    out.flush();
+    for (const simulator::RuntimeError &e : runtimeErrors)
+        err << QStringLiteral("%1:%2: ").arg(file).arg(e.line)
+            << Tr::tr("runtime error at step %1: %2").arg(e.instruction).arg(e.message) << '\n';
+    return 0;
+}
+
+} // namespace rung::app

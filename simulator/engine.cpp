@@ -1,0 +1,736 @@
+#include "engine.h"
+
+#include <QCoreApplication>
+
+#include <algorithm>
+#include <chrono>
+#include <cstring>
+#include <thread>
+
+namespace rung::simulator {
+
+namespace {
+
+struct Tr {
+    Q_DECLARE_TR_FUNCTIONS(rung::simulator::Engine)
+};
+
+constexpr int kBlockStack = 64;
+constexpr int kPushStack = 33;
+constexpr std::int64_t kMaxTimerValue = 32767;
+
+bool compare(std::uint8_t op, std::int32_t a, std::int32_t b) {
+    switch (static_cast<model::CompareOp>(op)) {
+    case model::CompareOp::Eq:
+        return a == b;
+    case model::CompareOp::Ne:
+        return a != b;
+    case model::CompareOp::Lt:
+        return a < b;
+    case model::CompareOp::Le:
+        return a <= b;
+    case model::CompareOp::Gt:
+        return a > b;
+    case model::CompareOp::Ge:
+        return a >= b;
+    case model::CompareOp::None:
+        break;
+    }
+    return false;
+}
+
+// BCD digits -> number; -1 when a nibble is above 9 (or the value is negative).
+std::int32_t fromBcd(std::int32_t raw) {
+    if (raw < 0)
+        return -1;
+    std::int32_t result = 0;
+    std::int32_t scale = 1;
+    for (std::uint32_t v = static_cast<std::uint32_t>(raw); v != 0; v >>= 4) {
+        const std::uint32_t digit = v & 0xF;
+        if (digit > 9)
+            return -1;
+        result += static_cast<std::int32_t>(digit) * scale;
+        scale *= 10;
+    }
+    return result;
+}
+
+qint64 clockPeriodMs(model::SystemRole role) {
+    switch (role) {
+    case model::SystemRole::Clock10ms:
+        return 10;
+    case model::SystemRole::Clock100ms:
+        return 100;
+    case model::SystemRole::Clock1s:
+        return 1000;
+    case model::SystemRole::Clock1min:
+        return 60000;
+    default:
+        return 0;
+    }
+}
+
+} // namespace
+
+Engine::Engine(std::shared_ptr<const Program> program)
+    : m_program(std::move(program)) {
+    const auto words = static_cast<std::size_t>(m_program->layout->wordCount());
+    m_words.assign(words, 0);
+    m_write.assign(words, 0);
+    m_stimulus.assign(words, 0);
+    m_forceMask.assign(words, 0);
+    m_forceValue.assign(words, 0);
+    m_states.assign(static_cast<std::size_t>(m_program->layout->elementStateCount()), {});
+    m_edges.assign(static_cast<std::size_t>(m_program->edgeSlots), 0);
+    m_flow.assign(m_program->steps.size(), 0);
+    m_reported.assign(m_program->steps.size(), 0);
+}
+
+void Engine::setPeriodMs(qint64 periodMs) {
+    m_stats.periodMs = std::max<qint64>(1, periodMs);
+}
+
+void Engine::scan() {
+    const auto start = std::chrono::steady_clock::now();
+    beginScan();
+    if (m_record)
+        execute<true>();
+    else
+        execute<false>();
+    endScan();
+    const qint64 ns = std::chrono::duration_cast<std::chrono::nanoseconds>(
+                          std::chrono::steady_clock::now() - start)
+                          .count();
+    m_stats.execNsCurrent = ns;
+    m_stats.execNsMin = m_stats.scans == 1 ? ns : std::min(m_stats.execNsMin, ns);
+    m_stats.execNsMax = std::max(m_stats.execNsMax, ns);
+    if (m_channel && m_channel->wanted())
+        m_channel->publish(std::make_shared<const Snapshot>(snapshot()));
+}
+
+void Engine::runScans(quint64 count) {
+    for (quint64 k = 0; k < count; ++k)
+        scan();
+}
+
+bool Engine::runUntil(const std::function<bool(const Engine &)> &condition, quint64 maxScans) {
+    for (quint64 k = 0; k < maxScans; ++k) {
+        scan();
+        if (condition(*this))
+            return true;
+    }
+    return false;
+}
+
+quint64 Engine::runRealTime(double speedFactor, const std::atomic<bool> &stop, quint64 maxScans) {
+    using Clock = std::chrono::steady_clock;
+    const double factor = speedFactor > 0 ? speedFactor : 1.0;
+    const auto start = Clock::now();
+    const qint64 startMs = m_stats.timeMs;
+    quint64 done = 0;
+    while (done < maxScans && !stop.load(std::memory_order_acquire)) {
+        // Scan k is due when wall time has caught up with its virtual start time.
+        const double dueMs = static_cast<double>(m_stats.timeMs - startMs) / factor;
+        std::this_thread::sleep_until(start +
+                                      std::chrono::duration_cast<Clock::duration>(
+                                          std::chrono::duration<double, std::milli>(dueMs)));
+        scan();
+        ++done;
+    }
+    return done;
+}
+
+void Engine::runFor(qint64 durationMs) {
+    if (durationMs <= 0)
+        return;
+    const qint64 scans = std::max<qint64>(1, durationMs / m_stats.periodMs);
+    runScans(static_cast<quint64>(scans));
+}
+
+void Engine::beginScan() {
+    const Program &p = *m_program;
+    std::int32_t *R = m_words.data();
+    for (const auto &[begin, end] : p.inputWordRanges)
+        std::copy(m_stimulus.begin() + begin, m_stimulus.begin() + end, m_words.begin() + begin);
+    const qint64 t = m_stats.timeMs;
+    for (const SystemBinding &b : p.system) {
+        if (b.word >= 0) {
+            R[b.word] = static_cast<std::int32_t>(m_stats.periodMs);
+            continue;
+        }
+        bool on = false;
+        switch (b.role) {
+        case model::SystemRole::AlwaysOn:
+        case model::SystemRole::Run:
+            on = true;
+            break;
+        case model::SystemRole::FirstScan:
+            on = m_scansSincePowerOn == 0;
+            break;
+        case model::SystemRole::ScanToggle:
+            on = (m_scansSincePowerOn & 1u) != 0;
+            break;
+        default:
+            if (const qint64 period = clockPeriodMs(b.role); period > 0)
+                on = (t % period) < period / 2;
+            break;
+        }
+        auto &w = reinterpret_cast<std::uint32_t &>(R[b.bit.word]);
+        w = on ? (w | b.bit.mask) : (w & ~b.bit.mask);
+    }
+    if (p.parallelInWord >= 0) {
+        std::int32_t v = 0;
+        for (std::size_t k = 0; k < p.parallelInBits.size(); ++k)
+            if (static_cast<std::uint32_t>(R[p.parallelInBits[k].word]) & p.parallelInBits[k].mask)
+                v |= 1 << k;
+        R[p.parallelInWord] = v;
+    }
+    applyForces(R);
+    if (p.deferredBitWrites)
+        for (const auto &[begin, end] : p.bitWordRanges)
+            std::copy(m_words.begin() + begin, m_words.begin() + end, m_write.begin() + begin);
+}
+
+void Engine::endScan() {
+    const Program &p = *m_program;
+    std::int32_t *W = p.deferredBitWrites ? m_write.data() : m_words.data();
+    if (p.writesParallelOut) {
+        const auto v =
+            static_cast<std::uint32_t>(m_words[static_cast<std::size_t>(p.parallelOutWord)]) %
+            4096u;
+        for (std::size_t k = 0; k < p.parallelOutBits.size(); ++k)
+            put(W, p.parallelOutBits[k], (v >> k) & 1u);
+    }
+    if (p.deferredBitWrites)
+        for (const auto &[begin, end] : p.bitWordRanges)
+            std::copy(m_write.begin() + begin, m_write.begin() + end, m_words.begin() + begin);
+    ++m_stats.scans;
+    ++m_scansSincePowerOn;
+    m_stats.timeMs += m_stats.periodMs;
+}
+
+void Engine::applyForces(std::int32_t *words) const {
+    for (int w : m_forcedWords) {
+        const auto i = static_cast<std::size_t>(w);
+        auto &v = reinterpret_cast<std::uint32_t &>(words[w]);
+        v = (v & ~m_forceMask[i]) | (m_forceValue[i] & m_forceMask[i]);
+    }
+}
+
+void Engine::rebuildForcedWords() {
+    m_forcedWords.clear();
+    for (std::size_t i = 0; i < m_forceMask.size(); ++i)
+        if (m_forceMask[i])
+            m_forcedWords.push_back(static_cast<int>(i));
+}
+
+void Engine::runtimeError(std::size_t step, const QString &message) {
+    if (m_reported[step])
+        return;
+    m_reported[step] = 1;
+    m_errors.push_back({static_cast<int>(step), m_program->lines[step], message});
+}
+
+std::int32_t Engine::readSet(const Step &s, std::size_t step) {
+    std::int32_t set = s.x.index >= 0 ? m_words[static_cast<std::size_t>(s.x.index)] : s.x.constant;
+    if (s.flags & kBcd) {
+        const std::int32_t decoded = fromBcd(set);
+        if (decoded < 0) {
+            runtimeError(step,
+                         Tr::tr("set value %1 is not a BCD number; the instruction is "
+                                "skipped")
+                             .arg(QString::number(static_cast<std::uint32_t>(set) & 0xFFFFu, 16)));
+            return -1;
+        }
+        set = decoded;
+    }
+    set = std::max<std::int32_t>(0, set);
+    if (s.y.index >= 0)
+        m_words[static_cast<std::size_t>(s.y.index)] = set;
+    return set;
+}
+
+template <bool Record> void Engine::execute() {
+    const Program &p = *m_program;
+    const Step *steps = p.steps.data();
+    const std::size_t n = p.steps.size();
+    std::int32_t *R = m_words.data();
+    std::int32_t *W = p.deferredBitWrites ? m_write.data() : R;
+    const std::int64_t period = m_stats.periodMs;
+    auto rd = [R](const BitRef &b) {
+        return (static_cast<std::uint32_t>(R[b.word]) & b.mask) != 0;
+    };
+    auto rdw = [R](const WordOperand &o) { return o.index >= 0 ? R[o.index] : o.constant; };
+    auto wrw = [&](std::int32_t index, std::int64_t v, int width) {
+        const auto i = static_cast<std::size_t>(index);
+        const auto value = static_cast<std::uint32_t>(wrapToWidth(v, width));
+        R[index] = static_cast<std::int32_t>((value & ~m_forceMask[i]) |
+                                             (m_forceValue[i] & m_forceMask[i]));
+    };
+
+    bool blocks[kBlockStack];
+    bool pushed[kPushStack];
+    int bsp = 0;
+    int psp = 0;
+    bool acc = false;
+    bool interlock = true;
+    bool stepActive = true;
+    bool gate = true;
+
+    for (std::size_t i = 0; i < n; ++i) {
+        const Step &s = steps[i];
+        switch (s.code) {
+        case Code::Load:
+        case Code::LoadEdge:
+        case Code::LoadCompare: {
+            bool v;
+            if (s.code == Code::Load) {
+                v = rd(s.bit) != ((s.flags & kNegated) != 0);
+            } else if (s.code == Code::LoadEdge) {
+                const bool now = rd(s.bit);
+                std::uint8_t &prev = m_edges[static_cast<std::size_t>(s.slot)];
+                v = (s.flags & kFalling) ? (prev && !now) : (now && !prev);
+                prev = now;
+            } else {
+                v = compare(s.op, rdw(s.x), rdw(s.y)) != ((s.flags & kNegated) != 0);
+            }
+            if (s.flags & kRungStart) {
+                bsp = 0;
+                psp = 0;
+            } else if (bsp < kBlockStack) {
+                blocks[bsp++] = acc;
+            }
+            acc = v && gate;
+            break;
+        }
+        case Code::And:
+            acc = acc && (rd(s.bit) != ((s.flags & kNegated) != 0));
+            break;
+        case Code::Or:
+            acc = acc || (rd(s.bit) != ((s.flags & kNegated) != 0) && gate);
+            break;
+        case Code::AndEdge:
+        case Code::OrEdge: {
+            const bool now = rd(s.bit);
+            std::uint8_t &prev = m_edges[static_cast<std::size_t>(s.slot)];
+            const bool v = (s.flags & kFalling) ? (prev && !now) : (now && !prev);
+            prev = now;
+            acc = s.code == Code::AndEdge ? acc && v : acc || (v && gate);
+            break;
+        }
+        case Code::AndCompare:
+        case Code::OrCompare: {
+            const bool v = compare(s.op, rdw(s.x), rdw(s.y)) != ((s.flags & kNegated) != 0);
+            acc = s.code == Code::AndCompare ? acc && v : acc || (v && gate);
+            break;
+        }
+        case Code::AndBlock:
+            if (bsp > 0)
+                acc = blocks[--bsp] && acc;
+            break;
+        case Code::OrBlock:
+            if (bsp > 0)
+                acc = blocks[--bsp] || acc;
+            break;
+        case Code::Push:
+            if (psp < kPushStack)
+                pushed[psp++] = acc;
+            break;
+        case Code::ReadStack:
+            if (psp > 0)
+                acc = pushed[psp - 1];
+            break;
+        case Code::Pop:
+            if (psp > 0)
+                acc = pushed[--psp];
+            break;
+        case Code::Invert:
+            acc = !acc;
+            break;
+        case Code::Out:
+            put(W, s.bit, acc != ((s.flags & kNegated) != 0));
+            break;
+        case Code::Set:
+            if (acc)
+                put(W, s.bit, true);
+            break;
+        case Code::SetStep:
+            if (acc) {
+                put(W, s.bit, true);
+                put(W, p.bitLists[static_cast<std::size_t>(s.slot)], false);
+            }
+            break;
+        case Code::Reset:
+            if (acc) {
+                for (int k = 0; k < s.count; ++k) {
+                    const ResetTarget &t = p.resets[static_cast<std::size_t>(s.slot + k)];
+                    if (t.bit.valid())
+                        put(W, t.bit, false);
+                    if (t.word >= 0)
+                        wrw(t.word, 0, 32);
+                    if (t.state >= 0) { // the input edge memory stays: no count on release
+                        ElementState &st = m_states[static_cast<std::size_t>(t.state)];
+                        st.accumulated = 0;
+                        st.running = 0;
+                    }
+                }
+            }
+            break;
+        case Code::Pulse: {
+            std::uint8_t &prev = m_edges[static_cast<std::size_t>(s.slot)];
+            const bool out = (s.flags & kFalling) ? (prev && !acc) : (acc && !prev);
+            prev = acc;
+            put(W, s.bit, out);
+            break;
+        }
+        case Code::Keep: {
+            const bool set = bsp > 0 ? blocks[--bsp] : false;
+            if (acc)
+                put(W, s.bit, false);
+            else if (set)
+                put(W, s.bit, true);
+            break;
+        }
+        case Code::Timer: {
+            ElementState &st = m_states[static_cast<std::size_t>(s.slot)];
+            const std::int32_t set = readSet(s, i);
+            if (set < 0)
+                break;
+            std::int64_t units = 0;
+            if (!acc) {
+                st.accumulated = 0;
+                st.running = 0;
+            } else {
+                if (st.running)
+                    st.accumulated = std::min<std::int64_t>(st.accumulated + period,
+                                                            std::int64_t{set} * s.count);
+                st.running = 1;
+                units = st.accumulated / s.count;
+            }
+            put(W, s.bit, acc && units >= set);
+            R[s.dest] = static_cast<std::int32_t>(
+                (s.flags & kDown) ? set - units : std::min<std::int64_t>(units, kMaxTimerValue));
+            break;
+        }
+        case Code::Counter: {
+            ElementState &st = m_states[static_cast<std::size_t>(s.slot)];
+            bool input = acc;
+            bool reset = false;
+            if (!(s.flags & kOneInput)) {
+                input = bsp > 0 ? blocks[--bsp] : false;
+                reset = acc;
+            }
+            const std::int32_t set = readSet(s, i);
+            if (set < 0)
+                break;
+            if (reset) {
+                st.accumulated = 0;
+            } else if (input && !st.previous && st.accumulated < set) {
+                ++st.accumulated;
+            }
+            st.previous = input;
+            put(W, s.bit, !reset && st.accumulated >= set);
+            R[s.dest] =
+                wrapToWidth((s.flags & kDown) ? set - st.accumulated : st.accumulated, s.width);
+            break;
+        }
+        case Code::UpDownCounter: {
+            ElementState &st = m_states[static_cast<std::size_t>(s.slot)];
+            const bool reset = acc;
+            const bool down = bsp > 0 ? blocks[--bsp] : false;
+            const bool up = bsp > 0 ? blocks[--bsp] : false;
+            const std::int32_t set = readSet(s, i);
+            if (set < 0)
+                break;
+            const bool upEdge = up && !(st.previous & 1);
+            const bool downEdge = down && !(st.previous & 2);
+            st.previous = static_cast<std::uint8_t>((up ? 1 : 0) | (down ? 2 : 0));
+            if (reset) {
+                st.accumulated = 0;
+                st.running = 0; // completion flag
+            } else if (upEdge != downEdge) {
+                if (upEdge) {
+                    st.running = st.accumulated >= set;
+                    st.accumulated = st.running ? 0 : st.accumulated + 1;
+                } else {
+                    st.running = st.accumulated <= 0;
+                    st.accumulated = st.running ? set : st.accumulated - 1;
+                }
+            }
+            put(W, s.bit, st.running != 0);
+            R[s.dest] = static_cast<std::int32_t>(st.accumulated);
+            break;
+        }
+        case Code::Transfer:
+            if (acc != ((s.flags & kNegated) != 0)) {
+                const std::int64_t v = rdw(s.x);
+                const std::int64_t d = R[s.dest];
+                const auto kind = static_cast<TransferKind>(s.op);
+                wrw(s.dest,
+                    kind == TransferKind::Assign ? v
+                    : kind == TransferKind::Add  ? d + v
+                                                 : d - v,
+                    s.width);
+            }
+            break;
+        case Code::Move:
+            if (acc)
+                wrw(s.dest, rdw(s.x), s.width);
+            break;
+        case Code::Compare:
+            if (acc) {
+                const std::int32_t a = rdw(s.x);
+                const std::int32_t b = rdw(s.y);
+                const BitRef *bits = &p.bitLists[static_cast<std::size_t>(s.slot)];
+                put(W, bits[0], a > b);
+                put(W, bits[1], a == b);
+                put(W, bits[2], a < b);
+            }
+            break;
+        case Code::Add:
+            if (acc)
+                wrw(s.dest, std::int64_t{rdw(s.x)} + rdw(s.y), s.width);
+            break;
+        case Code::Sub:
+            if (acc)
+                wrw(s.dest, std::int64_t{rdw(s.x)} - rdw(s.y), s.width);
+            break;
+        case Code::Mul:
+            if (acc) {
+                const std::int64_t product = std::int64_t{rdw(s.x)} * rdw(s.y);
+                if (s.slot >= 0 && s.width < 32) {
+                    wrw(s.dest, product & 0xFFFF, 16);
+                    wrw(s.slot, product >> 16, 16);
+                } else {
+                    wrw(s.dest, product, 32);
+                    if (s.slot >= 0)
+                        wrw(s.slot, product >> 32, 32);
+                }
+            }
+            break;
+        case Code::Div:
+            if (acc) {
+                const std::int64_t a = rdw(s.x);
+                const std::int64_t b = rdw(s.y);
+                if (b == 0) {
+                    runtimeError(i, Tr::tr("division by zero; the destination is unchanged"));
+                    break;
+                }
+                wrw(s.dest, a / b, s.width);
+                if (s.slot >= 0)
+                    wrw(s.slot, a % b, s.width);
+            }
+            break;
+        case Code::Inc:
+        case Code::Dec:
+            if (acc)
+                wrw(s.dest, std::int64_t{R[s.dest]} + (s.code == Code::Inc ? 1 : -1), s.width);
+            break;
+        case Code::Math:
+            if (acc) {
+                const std::int64_t a = rdw(s.x);
+                const std::int64_t b = rdw(s.y);
+                std::int64_t r = 0;
+                switch (static_cast<MathOp>(s.op)) {
+                case MathOp::Add:
+                    r = a + b;
+                    break;
+                case MathOp::Sub:
+                    r = a - b;
+                    break;
+                case MathOp::Mul:
+                    r = a * b;
+                    break;
+                case MathOp::Div:
+                    r = b == 0 ? 0 : a / b;
+                    break;
+                case MathOp::Or:
+                    r = a | b;
+                    break;
+                case MathOp::And:
+                    r = a & b;
+                    break;
+                case MathOp::Xor:
+                    r = a ^ b;
+                    break;
+                case MathOp::Shl:
+                    r = b < 0 || b > 31
+                            ? 0
+                            : static_cast<std::int64_t>(static_cast<std::uint64_t>(a) << b);
+                    break;
+                case MathOp::Shr:
+                    r = b < 0 || b > 31
+                            ? 0
+                            : static_cast<std::int64_t>(static_cast<std::uint32_t>(a) >> b);
+                    break;
+                }
+                if (static_cast<MathOp>(s.op) == MathOp::Div && b == 0)
+                    runtimeError(i, Tr::tr("division by zero; the destination is unchanged"));
+                else
+                    wrw(s.dest, r, s.width);
+            }
+            break;
+        case Code::BlockMove:
+            if (acc) {
+                // memmove order: an overlapping block copies as if through a buffer
+                if (s.x.index >= 0 && s.x.index < s.dest) {
+                    for (int k = s.count - 1; k >= 0; --k)
+                        wrw(s.dest + k, R[s.x.index + k], s.width);
+                } else {
+                    for (int k = 0; k < s.count; ++k)
+                        wrw(s.dest + k, s.x.index >= 0 ? R[s.x.index + k] : s.x.constant, s.width);
+                }
+            }
+            break;
+        case Code::Interlock:
+            interlock = acc;
+            gate = interlock && stepActive;
+            break;
+        case Code::InterlockClear:
+            interlock = true;
+            gate = stepActive;
+            break;
+        case Code::Jump:
+            if (!acc && s.slot > static_cast<int>(i))
+                i = static_cast<std::size_t>(s.slot); // the JPE/JME itself does nothing
+            break;
+        case Code::JumpEnd:
+        case Code::Nop:
+            break;
+        case Code::StepLadder:
+            stepActive = rd(s.bit);
+            gate = interlock && stepActive;
+            acc = gate;
+            break;
+        case Code::Return:
+            stepActive = true;
+            gate = interlock;
+            acc = gate;
+            break;
+        case Code::End:
+            if constexpr (Record)
+                m_flow[i] = acc;
+            return;
+        }
+        if constexpr (Record)
+            m_flow[i] = acc;
+    }
+}
+
+bool Engine::isStimulus(const model::Address &address) const {
+    const model::Area &a = layout().target().area(address.area);
+    return a.physical && !a.writable;
+}
+
+bool Engine::bit(const model::Address &address) const {
+    const BitRef r = layout().bit(address);
+    return r.valid() &&
+           (static_cast<std::uint32_t>(m_words[static_cast<std::size_t>(r.word)]) & r.mask);
+}
+
+std::int32_t Engine::value(const model::Address &address) const {
+    const int w = layout().word(address);
+    return w >= 0 ? m_words[static_cast<std::size_t>(w)] : 0;
+}
+
+std::int32_t Engine::setValue(const model::Address &address) const {
+    const int w = layout().setValueWord(address);
+    return w >= 0 ? m_words[static_cast<std::size_t>(w)] : 0;
+}
+
+bool Engine::setBit(const model::Address &address, bool on) {
+    const BitRef r = layout().bit(address);
+    if (!r.valid())
+        return false;
+    auto &s = reinterpret_cast<std::uint32_t &>(m_stimulus[static_cast<std::size_t>(r.word)]);
+    if (isStimulus(address))
+        s = on ? (s | r.mask) : (s & ~r.mask);
+    put(m_words.data(), r, on);
+    return true;
+}
+
+bool Engine::writeWord(const model::Address &address, qint64 value) {
+    const int w = layout().word(address);
+    if (w < 0)
+        return false;
+    const auto i = static_cast<std::size_t>(w);
+    const std::int32_t v = wrapToWidth(value, layout().wordBits(address));
+    if (isStimulus(address))
+        m_stimulus[i] = v;
+    m_words[i] = static_cast<std::int32_t>((static_cast<std::uint32_t>(v) & ~m_forceMask[i]) |
+                                           (m_forceValue[i] & m_forceMask[i]));
+    return true;
+}
+
+bool Engine::writeSetValue(const model::Address &address, qint64 value) {
+    const int w = layout().setValueWord(address);
+    if (w < 0)
+        return false;
+    m_words[static_cast<std::size_t>(w)] = wrapToWidth(value, layout().wordBits(address));
+    return true;
+}
+
+bool Engine::force(const model::Address &address, bool on) {
+    const BitRef r = layout().bit(address);
+    if (!r.valid())
+        return false;
+    const auto i = static_cast<std::size_t>(r.word);
+    m_forceMask[i] |= r.mask;
+    m_forceValue[i] = on ? (m_forceValue[i] | r.mask) : (m_forceValue[i] & ~r.mask);
+    rebuildForcedWords();
+    applyForces(m_words.data());
+    return true;
+}
+
+bool Engine::release(const model::Address &address) {
+    const BitRef r = layout().bit(address);
+    if (!r.valid())
+        return false;
+    const auto i = static_cast<std::size_t>(r.word);
+    m_forceMask[i] &= ~r.mask;
+    m_forceValue[i] &= ~r.mask;
+    rebuildForcedWords();
+    return true;
+}
+
+void Engine::releaseAll() {
+    std::fill(m_forceMask.begin(), m_forceMask.end(), 0u);
+    std::fill(m_forceValue.begin(), m_forceValue.end(), 0u);
+    m_forcedWords.clear();
+}
+
+void Engine::powerCycle() {
+    const MemoryLayout &l = layout();
+    auto clear = [&](int base, int words) {
+        if (base >= 0)
+            std::fill_n(m_words.begin() + base, words, 0);
+    };
+    for (int k = 0; k < l.areaCount(); ++k) {
+        const AreaLayout &a = l.area(k);
+        if (a.retentive)
+            continue;
+        clear(a.bitBase, (a.count + 15) / 16);
+        clear(a.wordBase, a.count);
+        clear(a.setBase, a.count);
+        if (a.stateBase >= 0)
+            std::fill_n(m_states.begin() + a.stateBase, a.count, ElementState{});
+    }
+    std::fill(m_edges.begin(), m_edges.end(), 0);
+    std::fill(m_flow.begin(), m_flow.end(), 0);
+    applyForces(m_words.data());
+    m_scansSincePowerOn = 0;
+}
+
+Snapshot Engine::snapshot() const {
+    Snapshot s;
+    s.layout = m_program->layout;
+    s.words = m_words;
+    s.forceMask = m_forceMask;
+    s.forceValue = m_forceValue;
+    s.statistics = m_stats;
+    if (m_record)
+        s.powerFlow.assign(m_flow.begin(), m_flow.end());
+    return s;
+}
+
+} // namespace rung::simulator

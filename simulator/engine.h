@@ -1,0 +1,111 @@
+#pragma once
+
+// The scan engine: runs a compiled Program on deterministic virtual time. Every scan reads
+// the input image (stimulus + forcing), evaluates the steps top to bottom, then makes the
+// outputs visible at END; the virtual clock advances by exactly one period per scan.
+// Not thread-safe: one thread drives an Engine; other threads read SnapshotChannel.
+
+#include "program.h"
+#include "snapshot.h"
+
+#include <QString>
+
+#include <atomic>
+#include <functional>
+#include <memory>
+#include <vector>
+
+namespace rung::simulator {
+
+struct RuntimeError {
+    int instruction = 0; // index in the instruction list
+    int line = 0;        // source line (0 when generated)
+    QString message;     // translated
+};
+
+class Engine {
+public:
+    explicit Engine(std::shared_ptr<const Program> program);
+
+    const Program &program() const { return *m_program; }
+    const MemoryLayout &layout() const { return *m_program->layout; }
+
+    void setPeriodMs(qint64 periodMs); // >= 1
+    qint64 periodMs() const { return m_stats.periodMs; }
+
+    void scan();
+    void runScans(quint64 count);
+    // Scans until the condition holds after a scan; false when maxScans ran out first.
+    bool runUntil(const std::function<bool(const Engine &)> &condition, quint64 maxScans);
+    void runFor(qint64 durationMs); // as many whole periods as fit (at least one if > 0)
+    // Real-time mode: paces scans by the wall clock, speedFactor times faster than real
+    // (2.0 = twice as fast); returns the scans run when stop is set or maxScans ran.
+    quint64 runRealTime(double speedFactor, const std::atomic<bool> &stop, quint64 maxScans);
+    // Power off and on: non-retentive areas clear, retentive ones (Area::retentive) survive.
+    void powerCycle();
+
+    // Devices. Bits of physical input areas are stimulus: the input image takes them at the
+    // start of each scan. Every other write changes the memory image at once.
+    bool bit(const model::Address &address) const;
+    std::int32_t value(const model::Address &address) const;    // timer/counter: current
+    std::int32_t setValue(const model::Address &address) const; // timer/counter set value
+    bool setBit(const model::Address &address, bool on);
+    bool writeWord(const model::Address &address, qint64 value);
+    bool writeSetValue(const model::Address &address, qint64 value);
+    // A forced bit keeps its value against stimulus and program writes until released.
+    bool force(const model::Address &address, bool on);
+    bool release(const model::Address &address);
+    void releaseAll();
+
+    void setPowerFlowRecording(bool on) { m_record = on; }
+    bool powerFlowRecording() const { return m_record; }
+    const std::vector<std::uint8_t> &powerFlow() const { return m_flow; }
+
+    const ScanStatistics &statistics() const { return m_stats; }
+    const std::vector<RuntimeError> &runtimeErrors() const { return m_errors; }
+
+    Snapshot snapshot() const;
+    // After each scan, publish a snapshot when the channel asks for one (may be null).
+    void attach(SnapshotChannel *channel) { m_channel = channel; }
+
+private:
+    struct ElementState {
+        std::int64_t accumulated = 0; // timers: ms with the input ON; counters: count
+        std::uint8_t previous = 0;    // counters: input state at the last execution
+        std::uint8_t running = 0;     // timers: input was ON at the last execution
+    };
+
+    void beginScan();
+    template <bool Record> void execute();
+    void endScan();
+    void applyForces(std::int32_t *words) const;
+    void rebuildForcedWords();
+    void runtimeError(std::size_t step, const QString &message);
+    void put(std::int32_t *words, const BitRef &bit, bool on) const {
+        if (m_forceMask[static_cast<std::size_t>(bit.word)] & bit.mask)
+            return;
+        auto &w = reinterpret_cast<std::uint32_t &>(words[bit.word]);
+        w = on ? (w | bit.mask) : (w & ~bit.mask);
+    }
+    bool isStimulus(const model::Address &address) const;
+    std::int32_t readSet(const Step &s, std::size_t step);
+
+    std::shared_ptr<const Program> m_program;
+    std::vector<std::int32_t> m_words;
+    std::vector<std::int32_t> m_write; // VPC: the bit image written during the scan
+    std::vector<std::int32_t> m_stimulus;
+    std::vector<std::uint32_t> m_forceMask;
+    std::vector<std::uint32_t> m_forceValue;
+    std::vector<int> m_forcedWords;
+    std::vector<ElementState> m_states;
+    std::vector<std::uint8_t> m_edges;
+    std::vector<std::uint8_t> m_flow;
+    std::vector<std::uint8_t> m_reported;
+    std::vector<RuntimeError> m_errors;
+    ScanStatistics m_stats;
+    quint64 m_scansSincePowerOn = 0;
+    bool m_record = false;
+    SnapshotChannel *m_channel = nullptr;
+};
+
+} // namespace rung::simulator

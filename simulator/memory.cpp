@@ -1,0 +1,104 @@
+#include "memory.h"
+
+namespace rung::simulator {
+
+using model::AreaKind;
+
+MemoryLayout::MemoryLayout(const model::Target &target)
+    : m_target(&target) {
+    m_areas.reserve(target.areas.size());
+    for (const model::Area &a : target.areas) {
+        AreaLayout l;
+        l.kind = a.kind;
+        l.first = a.first;
+        l.count = a.last >= a.first ? a.last - a.first + 1 : 0;
+        l.wordBits = a.wordBits;
+        l.retentive = a.retentive;
+        switch (a.kind) {
+        case AreaKind::Bit:
+            l.bitBase = m_words;
+            m_words += (l.count + 15) / 16;
+            break;
+        case AreaKind::Word:
+        case AreaKind::Channel:
+            l.wordBase = m_words;
+            m_words += l.count;
+            break;
+        case AreaKind::Timer:
+        case AreaKind::Counter:
+            l.bitBase = m_words;
+            m_words += (l.count + 15) / 16;
+            l.wordBase = m_words;
+            m_words += l.count;
+            l.setBase = m_words;
+            m_words += l.count;
+            l.stateBase = m_states;
+            m_states += l.count;
+            break;
+        }
+        m_areas.push_back(l);
+    }
+}
+
+bool MemoryLayout::inRange(const model::Address &address) const {
+    if (address.area < 0 || address.area >= areaCount())
+        return false;
+    const AreaLayout &l = area(address.area);
+    return address.index >= l.first && address.index - l.first < l.count;
+}
+
+BitRef MemoryLayout::bit(const model::Address &address) const {
+    if (!inRange(address))
+        return {};
+    const AreaLayout &l = area(address.area);
+    const int i = address.index - l.first;
+    switch (l.kind) {
+    case AreaKind::Bit:
+    case AreaKind::Timer:
+    case AreaKind::Counter:
+        if (l.kind == AreaKind::Bit || address.bit < 0)
+            return {l.bitBase + i / 16, 1u << (i % 16)};
+        [[fallthrough]];
+    case AreaKind::Word:
+    case AreaKind::Channel:
+        if (address.bit < 0 || address.bit >= l.wordBits || address.bit >= 32)
+            return {};
+        return {l.wordBase + i, 1u << address.bit};
+    }
+    return {};
+}
+
+int MemoryLayout::word(const model::Address &address) const {
+    if (!inRange(address))
+        return -1;
+    const AreaLayout &l = area(address.area);
+    if (l.kind == AreaKind::Bit) {
+        // A bit area read as a word: the 16 bits starting at a multiple of 16 (PL110 I/Q words).
+        const int i = address.index - l.first;
+        return i % 16 == 0 ? l.bitBase + i / 16 : -1;
+    }
+    return l.wordBase + (address.index - l.first);
+}
+
+int MemoryLayout::setValueWord(const model::Address &address) const {
+    if (!inRange(address) || area(address.area).setBase < 0)
+        return -1;
+    const AreaLayout &l = area(address.area);
+    return l.setBase + (address.index - l.first);
+}
+
+int MemoryLayout::elementState(const model::Address &address) const {
+    if (!inRange(address) || area(address.area).stateBase < 0)
+        return -1;
+    const AreaLayout &l = area(address.area);
+    return l.stateBase + (address.index - l.first);
+}
+
+int MemoryLayout::wordBits(const model::Address &address) const {
+    if (address.area < 0 || address.area >= areaCount())
+        return 16;
+    const AreaLayout &l = area(address.area);
+    return l.kind == AreaKind::Bit ? 16 : l.wordBits;
+}
+
+} // namespace rung::simulator

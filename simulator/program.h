@@ -1,0 +1,140 @@
+#pragma once
+
+// The executable form of an instruction list: one Step per instruction with every operand
+// resolved to an index into the flat memory of a MemoryLayout. Built once by compileProgram()
+// (compiler.h) and scanned by the Engine (engine.h) without looking at text or the target.
+
+#include "memory.h"
+
+#include "model/diagnostic.h"
+
+#include <cstdint>
+#include <memory>
+#include <vector>
+
+namespace rung::simulator {
+
+enum class Code : std::uint8_t {
+    // contacts; Load* at a rung start do not push (Step::flags & kRungStart)
+    Load,
+    And,
+    Or,
+    LoadEdge,
+    AndEdge,
+    OrEdge,
+    LoadCompare,
+    AndCompare,
+    OrCompare,
+    AndBlock,
+    OrBlock,
+    Push,
+    ReadStack,
+    Pop,
+    Invert,
+    // outputs
+    Out,
+    Set,
+    SetStep, // SET of a step relay inside an STL block: the current step is reset
+    Reset,   // resets a list of targets (bits, words, timer/counter elements)
+    Pulse,
+    Keep,
+    Timer,
+    Counter,
+    UpDownCounter,
+    Transfer,
+    Move,
+    Compare,
+    Add,
+    Sub,
+    Mul,
+    Div,
+    Inc,
+    Dec,
+    Math,      // PL110 FM: op = MathOp
+    BlockMove, // x = first source word (or a constant to fill), dest = first word, count
+    // control
+    Interlock,
+    InterlockClear,
+    Jump,
+    JumpEnd,
+    StepLadder,
+    Return,
+    End,
+    Nop,
+};
+
+enum StepFlag : std::uint8_t {
+    kNegated = 1, // NOT contacts, OUT NOT, OUT* transfers (run while the condition is OFF)
+    kFalling = 2, // falling-edge contacts, PLF / DIFD
+    kDown = 4,    // timers / counters that count down from the set value
+    kBcd = 8,     // set value read from a word holds BCD digits (CPM1)
+    kRungStart = 16,
+    kOneInput = 32, // counter reset only by RST (Vigor)
+};
+
+enum class TransferKind : std::uint8_t { Assign, Add, Subtract };
+
+enum class MathOp : std::uint8_t { Add, Sub, Mul, Div, Or, And, Xor, Shl, Shr };
+
+// A word operand: a memory word, or a constant when index < 0.
+struct WordOperand {
+    std::int32_t index = -1;
+    std::int32_t constant = 0;
+};
+
+// What RST / ZRST clear.
+struct ResetTarget {
+    BitRef bit;              // bit device or a timer/counter done bit
+    std::int32_t word = -1;  // word device or a timer/counter current value
+    std::int32_t state = -1; // timer/counter element state
+};
+
+struct Step {
+    Code code = Code::Nop;
+    std::uint8_t flags = 0;
+    std::uint8_t op = 0;     // CompareOp / TransferKind
+    std::uint8_t width = 16; // destination width in bits
+    BitRef bit;              // contact, coil, done bit
+    WordOperand x, y;        // sources (timers/counters: x = set value)
+    std::int32_t dest = -1;  // destination word (timers/counters: current value)
+    std::int32_t slot = -1;  // edge slot, element state, jump target, list start
+    std::int32_t count = 0;  // list length; timers: time base in ms
+};
+
+// A system device the engine drives at the start of every scan.
+struct SystemBinding {
+    model::SystemRole role = model::SystemRole::Other;
+    BitRef bit;
+    std::int32_t word = -1;
+};
+
+struct Program {
+    std::shared_ptr<const MemoryLayout> layout;
+    std::vector<Step> steps; // index = instruction index in the list
+    std::vector<int> lines;  // source line of each step
+    std::vector<BitRef> bitLists;
+    std::vector<ResetTarget> resets;
+    std::vector<SystemBinding> system;
+    int edgeSlots = 0;
+    int maxBlockDepth = 0;
+    int maxPushDepth = 0;
+    // VPC: bit writes land in a write image that becomes visible at END (docs/simulator.md).
+    bool deferredBitWrites = false;
+    std::vector<std::pair<int, int>> bitWordRanges; // [begin, end) words holding bits
+    // VPC p76 / p77 parallel output / input.
+    std::int32_t parallelOutWord = -1;
+    bool writesParallelOut = false;
+    std::int32_t parallelInWord = -1;
+    std::vector<BitRef> parallelOutBits; // LSB first
+    std::vector<BitRef> parallelInBits;
+    // physical inputs refreshed from the stimulus image: [begin, end) words
+    std::vector<std::pair<int, int>> inputWordRanges;
+};
+
+struct CompileResult {
+    std::shared_ptr<const Program> program;     // null when there are errors
+    std::vector<model::Diagnostic> diagnostics; // errors, and "not simulated" warnings
+    bool ok() const { return program != nullptr; }
+};
+
+} // namespace rung::simulator

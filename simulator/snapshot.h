@@ -1,0 +1,85 @@
+#pragma once
+
+// What a monitor shows: the memory image, forced bits, scan statistics and the power flow
+// of the last scan. A plain value: the simulator fills it, and so will the online monitor,
+// from the same MemoryLayout.
+
+#include "memory.h"
+
+#include <QtGlobal>
+
+#include <atomic>
+#include <memory>
+#include <mutex>
+#include <vector>
+
+namespace rung::simulator {
+
+struct ScanStatistics {
+    quint64 scans = 0;        // completed scans since start
+    qint64 timeMs = 0;        // virtual time at the end of the last scan
+    qint64 periodMs = 10;     // virtual scan period
+    qint64 execNsCurrent = 0; // wall-clock time the last scan took to evaluate
+    qint64 execNsMin = 0;
+    qint64 execNsMax = 0;
+};
+
+struct Snapshot {
+    std::shared_ptr<const MemoryLayout> layout;
+    std::vector<std::int32_t> words;       // MemoryLayout order
+    std::vector<std::uint32_t> forceMask;  // per word: forced bits
+    std::vector<std::uint32_t> forceValue; // per word: their forced values
+    ScanStatistics statistics;
+    // Logic result after each instruction of the last scan (index = instruction index);
+    // empty when power-flow recording is off.
+    std::vector<bool> powerFlow;
+
+    bool bit(const model::Address &address) const {
+        const BitRef r = layout ? layout->bit(address) : BitRef{};
+        return r.valid() && (static_cast<std::uint32_t>(word(r.word)) & r.mask) != 0;
+    }
+    // Word value; a timer/counter gives its current value.
+    std::int32_t value(const model::Address &address) const {
+        return layout ? word(layout->word(address)) : 0;
+    }
+    std::int32_t setValue(const model::Address &address) const {
+        return layout ? word(layout->setValueWord(address)) : 0;
+    }
+    bool forced(const model::Address &address) const {
+        const BitRef r = layout ? layout->bit(address) : BitRef{};
+        return r.valid() && static_cast<std::size_t>(r.word) < forceMask.size() &&
+               (forceMask[static_cast<std::size_t>(r.word)] & r.mask) != 0;
+    }
+
+private:
+    std::int32_t word(int index) const {
+        return index >= 0 && static_cast<std::size_t>(index) < words.size()
+                   ? words[static_cast<std::size_t>(index)]
+                   : 0;
+    }
+};
+
+// Hands snapshots from the scan thread to a reader. The reader asks (request()); the scan
+// loop copies its state only when asked, after END, and swaps a pointer under a mutex held
+// for the swap alone, so a slow reader never stalls a scan.
+class SnapshotChannel {
+public:
+    void request() { m_wanted.store(true, std::memory_order_release); }
+    bool wanted() const { return m_wanted.load(std::memory_order_acquire); }
+    void publish(std::shared_ptr<const Snapshot> snapshot) {
+        m_wanted.store(false, std::memory_order_release);
+        std::lock_guard lock(m_mutex);
+        m_latest = std::move(snapshot);
+    }
+    std::shared_ptr<const Snapshot> latest() const {
+        std::lock_guard lock(m_mutex);
+        return m_latest;
+    }
+
+private:
+    std::atomic<bool> m_wanted{false};
+    mutable std::mutex m_mutex;
+    std::shared_ptr<const Snapshot> m_latest;
+};
+
+} // namespace rung::simulator

@@ -1,0 +1,156 @@
+#include "trace.h"
+
+#include "model/address.h"
+
+#include <QCoreApplication>
+#include <QRegularExpression>
+
+#include <algorithm>
+#include <variant>
+
+namespace rung::simulator {
+
+namespace {
+
+struct Tr {
+    Q_DECLARE_TR_FUNCTIONS(rung::simulator::Trace)
+};
+
+bool device(const model::Target &target, const QString &text, model::Address *address,
+            QString *error) {
+    const auto parsed = model::parseAddress(target, text.trimmed());
+    if (const auto *e = std::get_if<model::AddressError>(&parsed)) {
+        *error = Tr::tr("unknown device %1: %2").arg(text, e->message);
+        return false;
+    }
+    *address = std::get<model::Address>(parsed);
+    return true;
+}
+
+bool isWord(const model::Target &target, const model::Address &a) {
+    const model::AreaKind k = target.area(a.area).kind;
+    return a.bit < 0 && (k == model::AreaKind::Word || k == model::AreaKind::Channel);
+}
+
+bool isTimerOrCounter(const model::Target &target, const model::Address &a) {
+    const model::AreaKind k = target.area(a.area).kind;
+    return a.bit < 0 && (k == model::AreaKind::Timer || k == model::AreaKind::Counter);
+}
+
+} // namespace
+
+bool parseTraceOptions(const model::Target &target, const QStringList &args, TraceRequest *request,
+                       QString *error) {
+    static const QRegularExpression setRe(QStringLiteral("^(.+)=(-?\\d+)@(\\d+)$"));
+    bool haveScans = false;
+    for (qsizetype i = 0; i < args.size(); ++i) {
+        const QString &a = args[i];
+        if (i + 1 >= args.size() || !a.startsWith(QLatin1String("--"))) {
+            *error = a.startsWith(QLatin1String("--")) ? Tr::tr("%1 needs a value").arg(a)
+                                                       : Tr::tr("unexpected argument %1").arg(a);
+            return false;
+        }
+        const QString v = args[++i];
+        if (a == QLatin1String("--scans") || a == QLatin1String("--period")) {
+            bool ok = false;
+            const qint64 n = v.toLongLong(&ok);
+            const bool scans = a == QLatin1String("--scans");
+            if (!ok || n < (scans ? 0 : 1) || n > 1000000000) {
+                *error = Tr::tr("%1 needs a positive number, not \"%2\"").arg(a, v);
+                return false;
+            }
+            if (scans) {
+                request->scans = static_cast<quint64>(n);
+                haveScans = true;
+            } else {
+                request->periodMs = n;
+            }
+        } else if (a == QLatin1String("--set")) {
+            const auto m = setRe.match(v);
+            if (!m.hasMatch()) {
+                *error = Tr::tr("--set needs DEV=VALUE@SCAN, not \"%1\"").arg(v);
+                return false;
+            }
+            TraceStimulus s;
+            if (!device(target, m.captured(1), &s.address, error))
+                return false;
+            bool ok = false;
+            s.value = m.captured(2).toLongLong(&ok);
+            s.scan = m.captured(3).toULongLong(&ok);
+            request->stimuli.push_back(s);
+        } else if (a == QLatin1String("--trace")) {
+            for (const QString &name : v.split(QLatin1Char(','), Qt::SkipEmptyParts)) {
+                TraceColumn c;
+                c.name = name.trimmed();
+                QString dev = c.name;
+                if (dev.startsWith(QLatin1String("cv:"), Qt::CaseInsensitive)) {
+                    c.kind = TraceColumn::Kind::Word;
+                    dev = dev.mid(3);
+                } else if (dev.startsWith(QLatin1String("sv:"), Qt::CaseInsensitive)) {
+                    c.kind = TraceColumn::Kind::SetValue;
+                    dev = dev.mid(3);
+                }
+                if (!device(target, dev, &c.address, error))
+                    return false;
+                if (c.kind == TraceColumn::Kind::Bit && isWord(target, c.address))
+                    c.kind = TraceColumn::Kind::Word;
+                request->columns.push_back(c);
+            }
+        } else {
+            *error = Tr::tr("unknown option %1").arg(a);
+            return false;
+        }
+    }
+    if (!haveScans || request->columns.empty()) {
+        *error = Tr::tr("--scans and --trace are required");
+        return false;
+    }
+    std::stable_sort(
+        request->stimuli.begin(), request->stimuli.end(),
+        [](const TraceStimulus &x, const TraceStimulus &y) { return x.scan < y.scan; });
+    return true;
+}
+
+void runTrace(const std::shared_ptr<const Program> &program, const TraceRequest &request,
+              QTextStream &out, std::vector<RuntimeError> *runtimeErrors) {
+    const model::Target &target = program->layout->target();
+    Engine engine(program);
+    engine.setPeriodMs(request.periodMs);
+    out << "scan,time_ms";
+    for (const TraceColumn &c : request.columns)
+        out << ',' << c.name;
+    out << '\n';
+    auto next = request.stimuli.begin();
+    for (quint64 scan = 0; scan < request.scans; ++scan) {
+        for (; next != request.stimuli.end() && next->scan <= scan; ++next) {
+            if (isTimerOrCounter(target, next->address))
+                engine.writeSetValue(next->address, next->value);
+            else if (isWord(target, next->address))
+                engine.writeWord(next->address, next->value);
+            else
+                engine.setBit(next->address, next->value != 0);
+        }
+        const qint64 time = engine.statistics().timeMs;
+        engine.scan();
+        out << scan << ',' << time;
+        for (const TraceColumn &c : request.columns) {
+            out << ',';
+            switch (c.kind) {
+            case TraceColumn::Kind::Bit:
+                out << (engine.bit(c.address) ? 1 : 0);
+                break;
+            case TraceColumn::Kind::Word:
+                out << engine.value(c.address);
+                break;
+            case TraceColumn::Kind::SetValue:
+                out << engine.setValue(c.address);
+                break;
+            }
+        }
+        out << '\n';
+    }
+    if (runtimeErrors)
+        *runtimeErrors = engine.runtimeErrors();
+}
+
+} // namespace rung::simulator

@@ -1,0 +1,46 @@
+#pragma once
+
+// Traces: run a program for N scans with stimuli applied before given scans and print the
+// chosen devices as CSV after every END. The `simulate` command and the golden-trace tests
+// share this, so both read the same options.
+
+#include "engine.h"
+
+#include <QStringList>
+#include <QTextStream>
+
+namespace rung::simulator {
+
+struct TraceStimulus {
+    model::Address address;
+    qint64 value = 0;
+    quint64 scan = 0; // applied before this scan (scans count from 0)
+};
+
+struct TraceColumn {
+    enum class Kind : std::uint8_t { Bit, Word, SetValue };
+    QString name; // as given
+    model::Address address;
+    Kind kind = Kind::Bit;
+};
+
+struct TraceRequest {
+    quint64 scans = 0;
+    qint64 periodMs = 10;
+    std::vector<TraceStimulus> stimuli;
+    std::vector<TraceColumn> columns;
+};
+
+// Reads --scans N, --period MS, --set DEV=VALUE@SCAN (repeatable) and --trace DEV[,DEV...].
+// A trace column "cv:T0" / "sv:T0" is a timer/counter's current / set value; a bare timer or
+// counter is its done bit; a word device its value. Unknown options are errors.
+bool parseTraceOptions(const model::Target &target, const QStringList &args, TraceRequest *request,
+                       QString *error);
+
+// Runs the request on a fresh engine, writing the CSV header and one row per scan
+// (scan,time_ms,...; time_ms = virtual time at the start of the scan). Stimuli on a
+// timer/counter set its set value; on a word device its value; otherwise the bit.
+void runTrace(const std::shared_ptr<const Program> &program, const TraceRequest &request,
+              QTextStream &out, std::vector<RuntimeError> *runtimeErrors = nullptr);
+
+} // namespace rung::simulator

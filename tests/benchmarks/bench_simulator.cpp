@@ -1,0 +1,106 @@
+// Scan speed of the simulator (issue 3): a 2048-step mixed program, the same with power-flow
+// recording, and the STL traffic light over 24 h of virtual time at 10 ms scans.
+// Runs on the synthetic Vigor-like target of the engine tests so it does not depend on the
+// device tables; the instruction mix is what a real program holds.
+
+#include "tests/simulator/sim_test_target.h"
+
+#include "simulator/compiler.h"
+#include "simulator/engine.h"
+
+#include <benchmark/benchmark.h>
+
+using namespace rung;
+using namespace rung::simulator;
+
+namespace {
+
+// 128 rungs of 16 steps: contacts, a block, a stack branch, a timer, a counter, moves and
+// arithmetic.
+QString mixedProgram() {
+    QString p;
+    for (int r = 0; r < 128; ++r) {
+        const int a = r % 32;
+        const int b = (r * 7) % 32;
+        p += QStringLiteral("LD X%1\nAND M%2\nOR Y%3\nLD X%4\nORI M%5\nANB\nMPS\nAND X%6\n"
+                            "OUT M%7\nMPP\nTMR T%8 K50\nLD M%9\nCNT C%8 K10\nLD SM9000\n"
+                            "MOV D%10 D%11\nADD D%11 K3 D%12\n")
+                 .arg(a)
+                 .arg(r + 100)
+                 .arg(b)
+                 .arg((a + 5) % 32)
+                 .arg(r + 200)
+                 .arg((a + 9) % 32)
+                 .arg(r)
+                 .arg(r % 32)
+                 .arg((r + 1) % 128)
+                 .arg(r % 90)
+                 .arg((r + 3) % 90)
+                 .arg((r + 6) % 90);
+    }
+    return p;
+}
+
+// Traffic light (seed 004, 1.9 example 16): red 35 s, yellow 5 s, green 25 s, green blinking
+// 5 s; the same program as tests/data/sim/vigor_traffic_light.il.
+const char *kTrafficLight = "LD SM9002\nSET S0\n"
+                            "STL S0\nOUT Y0\nTMR T0 K350\nLD T0\nSET S1\n"
+                            "STL S1\nOUT Y1\nTMR T1 K50\nLD T1\nSET S2\n"
+                            "STL S2\nOUT M2\nTMR T2 K250\nLD T2\nSET S3\n"
+                            "STL S3\nTMR T3 K50\nLDI T5\nTMR T4 K5\nLD T4\nTMR T5 K5\nLDI T4\n"
+                            "OUT M3\nLD T3\nSET S0\nRET\nLD M2\nOR M3\nOUT Y2\nEND";
+
+struct Fixture {
+    explicit Fixture(const QString &program)
+        : target(test::makeTestTarget())
+        , list(test::assemble(*target, program))
+        , result(compileProgram(list))
+        , engine(result.program) {}
+    std::unique_ptr<model::Target> target;
+    model::InstructionList list;
+    CompileResult result;
+    Engine engine;
+};
+
+void scanMixed(benchmark::State &state, bool record) {
+    Fixture f(mixedProgram());
+    if (f.list.instructions.size() != 2048 || !f.result.ok()) {
+        state.SkipWithError("program did not compile to 2048 steps");
+        return;
+    }
+    f.engine.setPowerFlowRecording(record);
+    // Inputs that change so edges, timers and counters do work.
+    int k = 0;
+    for (auto _ : state) {
+        f.engine.setBit(f.list.instructions[0].operands[0].address, (++k & 8) != 0);
+        f.engine.scan();
+    }
+    state.counters["steps"] = 2048;
+    state.counters["ns_per_step"] =
+        benchmark::Counter(static_cast<double>(state.iterations()) * 2048,
+                           benchmark::Counter::kIsRate | benchmark::Counter::kInvert);
+}
+
+void BM_Scan2048Steps(benchmark::State &state) {
+    scanMixed(state, false);
+}
+void BM_Scan2048StepsWithPowerFlow(benchmark::State &state) {
+    scanMixed(state, true);
+}
+
+void BM_TrafficLight24Hours(benchmark::State &state) {
+    for (auto _ : state) {
+        Fixture f(QString::fromLatin1(kTrafficLight));
+        f.engine.setPeriodMs(10);
+        f.engine.runFor(24LL * 3600 * 1000);
+        benchmark::DoNotOptimize(f.engine.statistics().scans);
+    }
+}
+
+} // namespace
+
+BENCHMARK(BM_Scan2048Steps);
+BENCHMARK(BM_Scan2048StepsWithPowerFlow);
+BENCHMARK(BM_TrafficLight24Hours)->Unit(benchmark::kMillisecond)->Iterations(1)->Repetitions(3);
+
+BENCHMARK_MAIN();
