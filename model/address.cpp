@@ -151,7 +151,18 @@ std::variant<Address, AddressError> parseAddress(const Target &target, QStringVi
     if (pos < s.size())
         return error(Tr::tr("%1: unexpected '%2' after the device").arg(shown, s.mid(pos)), pos);
 
-    const int index = static_cast<int>(number.value);
+    qint64 value = number.value;
+    // SYSWIN also writes a CPM1 bit as five digits, CCCBB: 25313 is 253.13 (seed 002).
+    if (bit < 0 && rules.numbering == Numbering::ChannelBit && rules.prefix.isEmpty() &&
+        number.length >= 4 && number.length <= 5) {
+        const int b = static_cast<int>(value % 100);
+        if (b > 15)
+            return error(Tr::tr("%1: bit %2 is beyond 00..15").arg(shown).arg(b),
+                         bestLength + number.length - 2);
+        bit = b;
+        value /= 100;
+    }
+    const int index = static_cast<int>(value);
     const QString who = model ? model->name : target.displayName;
     int matched = -1;
     int anyArea = -1;
@@ -221,8 +232,10 @@ QString formatAddress(const Target &target, const Address &address) {
         return QStringLiteral("?");
     const Area &a = target.area(address.area);
     QString out = a.prefix + formatNumber(a, address.index);
+    // CPM1 pads the bit like its channel (010.00); PL110 writes SM0.1 as the manual does.
     if (address.bit >= 0)
-        out += QLatin1Char('.') + QStringLiteral("%1").arg(address.bit, 2, 10, QLatin1Char('0'));
+        out += QLatin1Char('.') +
+               QStringLiteral("%1").arg(address.bit, a.digits > 0 ? 2 : 1, 10, QLatin1Char('0'));
     return out;
 }
 
@@ -255,7 +268,10 @@ std::variant<Constant, AddressError> parseConstant(const Target &target, QString
         return AddressError{
             Tr::tr("%1: %2 writes constants without K or H").arg(t.toString(), target.displayName),
             lead};
-    if (c.style == Constant::Style::Bcd && !cpm1)
+    if (c.style == Constant::Style::Bcd && target.family == Family::Pl110) {
+        // PLProg writes "MOV(Tx = #0)": on PL110 '#' only marks a plain number.
+        c.style = Constant::Style::Plain;
+    } else if (c.style == Constant::Style::Bcd && !cpm1)
         return AddressError{Tr::tr("%1: # constants belong to CPM1 listings").arg(t.toString()),
                             lead};
     if (c.style == Constant::Style::Plain && (vigor || cpm1))

@@ -14,9 +14,9 @@ namespace rung::model {
 
 struct Operand {
     enum class Kind : std::uint8_t { Device, Constant, Text } kind = Kind::Device;
-    Address address;    // Kind::Device
-    Constant constant;  // Kind::Constant
-    QString text;       // Kind::Text: PL110 FM operator, labels kept verbatim
+    Address address;   // Kind::Device
+    Constant constant; // Kind::Constant
+    QString text;      // Kind::Text: PL110 FM operator, labels kept verbatim
     friend bool operator==(const Operand &, const Operand &) = default;
 };
 
@@ -43,8 +43,8 @@ struct InstructionList {
 };
 
 struct ParseError {
-    int line = 0;   // 1-based
-    int column = 0; // 1-based
+    int line = 0;    // 1-based
+    int column = 0;  // 1-based
     QString message; // translated
 };
 

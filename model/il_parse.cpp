@@ -16,7 +16,6 @@ namespace {
 
 constexpr int kMaxErrors = 1000;
 
-
 struct Token {
     QString text;
     int column = 0; // 1-based

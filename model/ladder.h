@@ -19,6 +19,7 @@ struct Contact {
     ContactMode mode = ContactMode::Normal;
     CompareOp compare = CompareOp::None; // != None: a compare contact with two operands
     std::vector<Operand> operands;
+    bool invert = false; // the INV (Vigor) / NOT (PL110) element: inverts the power flow
     friend bool operator==(const Contact &, const Contact &) = default;
 };
 
@@ -34,26 +35,29 @@ struct Cell {
 struct Rung {
     int rows = 1;
     int columns = 0;
-    std::vector<Cell> cells;                   // rows * columns, row-major
-    std::vector<std::uint8_t> links;           // rows * (columns + 1): link from row r down to r+1
-    std::vector<std::optional<Instruction>> outputs; // per row; a box with k inputs sits on its
-                                               // first input row and covers the k-1 rows below
+    std::vector<Cell> cells;         // rows * columns, row-major
+    std::vector<std::uint8_t> links; // rows * (columns + 1): link from row r down to r+1
+    std::vector<std::optional<Instruction>>
+        outputs; // per row; a box with k inputs sits on its
+                 // first input row and covers the k-1 rows below
+    // A box with k > 1 inputs (LR, KEEP, two-input counters, CNTR) stands alone in its rung;
+    // inputRows holds the row of each input, first = the box's row. Empty: rows r..r+k-1.
+    std::vector<int> inputRows;
     QString comment;
 
     Rung() = default;
     Rung(int rows, int columns);
 
-    Cell &cell(int row, int column) { return cells[static_cast<std::size_t>(row * columns + column)]; }
-    const Cell &cell(int row, int column) const
-    {
+    Cell &cell(int row, int column) {
         return cells[static_cast<std::size_t>(row * columns + column)];
     }
-    bool link(int row, int nodeColumn) const
-    {
+    const Cell &cell(int row, int column) const {
+        return cells[static_cast<std::size_t>(row * columns + column)];
+    }
+    bool link(int row, int nodeColumn) const {
         return links[static_cast<std::size_t>(row * (columns + 1) + nodeColumn)] != 0;
     }
-    void setLink(int row, int nodeColumn, bool on)
-    {
+    void setLink(int row, int nodeColumn, bool on) {
         links[static_cast<std::size_t>(row * (columns + 1) + nodeColumn)] = on ? 1 : 0;
     }
     void resize(int newRows, int newColumns); // keeps what fits
@@ -63,6 +67,8 @@ struct Rung {
     void removeColumn(int column);
     // Rows that hold a box input other than the box's own first row.
     bool coveredByBox(int row) const;
+    // The rows feeding the box at `row` (one row for a coil).
+    std::vector<int> boxInputRows(int row) const;
     friend bool operator==(const Rung &, const Rung &);
 };
 

@@ -26,7 +26,7 @@ struct WatchList {
 
 struct Project {
     const Target *target = nullptr;
-    QString model;             // ModelVariant::name
+    QString model; // ModelVariant::name
     LadderProgram program;
     std::vector<Symbol> symbols;
     std::map<Address, qint64> setValues; // VPC timer/counter set values kept in the PLC

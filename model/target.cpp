@@ -17,15 +17,13 @@ struct Registry {
     Target pl110 = detail::makePl110Target();
 };
 
-const Registry &registry()
-{
+const Registry &registry() {
     static const Registry instance; // built once, thread-safe, never changes afterwards
     return instance;
 }
 
 // "KEEP(11)" -> "KEEP", 11; "LD" -> "LD", -1
-QString stripFunctionCode(const QString &mnemonic, int *code)
-{
+QString stripFunctionCode(const QString &mnemonic, int *code) {
     *code = -1;
     const qsizetype open = mnemonic.indexOf(QLatin1Char('('));
     if (open > 0 && mnemonic.endsWith(QLatin1Char(')'))) {
@@ -39,15 +37,13 @@ QString stripFunctionCode(const QString &mnemonic, int *code)
     return mnemonic;
 }
 
-QString normalizeSpaces(const QString &text)
-{
+QString normalizeSpaces(const QString &text) {
     return text.simplified().toUpper();
 }
 
 } // namespace
 
-const Target &Target::get(Family family)
-{
+const Target &Target::get(Family family) {
     const Registry &r = registry();
     switch (family) {
     case Family::Vpc:
@@ -62,8 +58,7 @@ const Target &Target::get(Family family)
     return r.vpc;
 }
 
-const Target *Target::byId(const QString &id)
-{
+const Target *Target::byId(const QString &id) {
     for (Family f : kFamilies) {
         const Target &t = get(f);
         if (t.id.compare(id, Qt::CaseInsensitive) == 0)
@@ -72,28 +67,24 @@ const Target *Target::byId(const QString &id)
     return nullptr;
 }
 
-std::span<const Family> Target::families()
-{
+std::span<const Family> Target::families() {
     return kFamilies;
 }
 
-const ModelVariant *Target::model(const QString &name) const
-{
+const ModelVariant *Target::model(const QString &name) const {
     for (const ModelVariant &m : models)
         if (m.name.compare(name, Qt::CaseInsensitive) == 0)
             return &m;
     return nullptr;
 }
 
-const ModelVariant &Target::defaultModel() const
-{
+const ModelVariant &Target::defaultModel() const {
     // The largest model is the default: a program written for it fits every smaller check
     // the user opts into by choosing a model.
     return models.back();
 }
 
-const InstructionSpec *Target::findInstruction(const QString &mnemonic) const
-{
+const InstructionSpec *Target::findInstruction(const QString &mnemonic) const {
     int code = -1;
     const QString wanted = normalizeSpaces(stripFunctionCode(mnemonic.trimmed(), &code));
     for (const InstructionSpec &spec : instructions) {
@@ -110,8 +101,7 @@ const InstructionSpec *Target::findInstruction(const QString &mnemonic) const
 }
 
 const InstructionSpec *Target::findInstruction(Op op, ContactMode mode, CompareOp compare,
-                                               bool negated) const
-{
+                                               bool negated) const {
     for (const InstructionSpec &spec : instructions)
         if (spec.op == op && spec.mode == mode && spec.compare == compare &&
             spec.negated == negated)
@@ -119,15 +109,14 @@ const InstructionSpec *Target::findInstruction(Op op, ContactMode mode, CompareO
     return nullptr;
 }
 
-int Target::indexOf(const InstructionSpec *spec) const
-{
-    if (!spec || instructions.empty() || spec < &instructions.front() || spec > &instructions.back())
+int Target::indexOf(const InstructionSpec *spec) const {
+    if (!spec || instructions.empty() || spec < &instructions.front() ||
+        spec > &instructions.back())
         return -1;
     return static_cast<int>(spec - &instructions.front());
 }
 
-std::optional<std::pair<int, int>> Target::range(int areaIndex, const ModelVariant *variant) const
-{
+std::optional<std::pair<int, int>> Target::range(int areaIndex, const ModelVariant *variant) const {
     const Area &a = area(areaIndex);
     std::pair<int, int> r{a.first, a.last};
     if (variant) {
@@ -144,8 +133,7 @@ std::optional<std::pair<int, int>> Target::range(int areaIndex, const ModelVaria
     return r;
 }
 
-const SystemDevice *Target::systemDevice(SystemRole role) const
-{
+const SystemDevice *Target::systemDevice(SystemRole role) const {
     for (const SystemDevice &d : systemDevices)
         if (d.role == role)
             return &d;

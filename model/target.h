@@ -32,14 +32,14 @@ enum class AreaKind : std::uint8_t {
 };
 
 struct Area {
-    QString key;           // stable name, unique per target, used by models and files: "X", "IN"
-    QString prefix;        // as written in listings: "X", "i", "HR", "" for CPM1 IR/SR
+    QString key;    // stable name, unique per target, used by models and files: "X", "IN"
+    QString prefix; // as written in listings: "X", "i", "HR", "" for CPM1 IR/SR
     AreaKind kind = AreaKind::Bit;
-    int first = 0;         // first element number (PL110 areas start at 1)
-    int last = 0;          // last element number, inclusive
+    int first = 0; // first element number (PL110 areas start at 1)
+    int last = 0;  // last element number, inclusive
     Numbering numbering = Numbering::Decimal;
-    int digits = 0;        // minimum printed digits (VPC: 2, CPM1 channels: 3)
-    bool writable = true;  // may be the destination of an output / transfer
+    int digits = 0;       // minimum printed digits (VPC: 2, CPM1 channels: 3)
+    bool writable = true; // may be the destination of an output / transfer
     bool retentive = false;
     bool system = false;   // system area (special relays / registers)
     bool physical = false; // mapped to terminals: inputs are refreshed from the I/O image
@@ -89,16 +89,16 @@ struct SystemDevice {
 
 // What an instruction does, independent of its spelling.
 enum class Op : std::uint8_t {
-    Load,           // start a block with a contact
-    And,            // contact in series
-    Or,             // contact in parallel
-    AndBlock,       // ANB / AND LD
-    OrBlock,        // ORB / OR LD
-    Push,           // MPS
-    ReadStack,      // MRD
-    Pop,            // MPP
-    Invert,         // INV (Vigor), NOT (PL110)
-    Out,            // coil; Instruction::negated for OUT NOT
+    Load,      // start a block with a contact
+    And,       // contact in series
+    Or,        // contact in parallel
+    AndBlock,  // ANB / AND LD
+    OrBlock,   // ORB / OR LD
+    Push,      // MPS
+    ReadStack, // MRD
+    Pop,       // MPP
+    Invert,    // INV (Vigor), NOT (PL110)
+    Out,       // coil; Instruction::negated for OUT NOT
     Set,
     Reset,
     PulseRise,      // PLS / DIFU
@@ -134,10 +134,10 @@ enum class OperandKind : std::uint8_t {
     Constant,    // a constant only (K/H, #BCD, plain number)
     TimerNumber, // a timer element
     CounterNumber,
-    StepRelay,   // Vigor S
-    Label,       // jump label number (CPM1 JMP 00..49)
-    SetValue,    // timer/counter preset: constant or word device
-    Count,       // a repetition count n (ZRST range end is a device, so this is for n only)
+    StepRelay, // Vigor S
+    Label,     // jump label number (CPM1 JMP 00..49)
+    SetValue,  // timer/counter preset: constant or word device
+    Count,     // a repetition count n (ZRST range end is a device, so this is for n only)
 };
 
 struct OperandSpec {
@@ -162,13 +162,20 @@ enum class ApplyFunction : std::uint8_t {
     Math, // PL110 FM: operator is the second operand's text
     SetBit,
     ResetBit,
+    Toggle, // PL110 bistable relay coil B: each activation (rising edge) flips the bit
     NotSimulated,
 };
 
+// Timer behaviours beyond the plain on-delay (PL110 TOFF / TONR).
+enum class TimerMode : std::uint8_t { OnDelay, OffDelay, Accumulating };
+
+// Counter direction where one family has both (PL110 MUP counts up to PV, MDOWN down to 0).
+enum class CounterMode : std::uint8_t { Up, Down };
+
 struct InstructionSpec {
-    QString mnemonic;          // canonical spelling as the printer writes it: "LD NOT", "LDI"
-    QStringList aliases;       // other accepted spellings: "LD*", "KEEP(11)", "AND LD"
-    int functionCode = -1;     // CPM1 function code, accepted as MNEMONIC(NN)
+    QString mnemonic;      // canonical spelling as the printer writes it: "LD NOT", "LDI"
+    QStringList aliases;   // other accepted spellings: "LD*", "KEEP(11)", "AND LD"
+    int functionCode = -1; // CPM1 function code, accepted as MNEMONIC(NN)
     Op op = Op::Nop;
     ContactMode mode = ContactMode::Normal; // for contacts
     CompareOp compare = CompareOp::None;    // compare contacts
@@ -178,32 +185,34 @@ struct InstructionSpec {
     int inputs = 1;            // blocks consumed by an output instruction (LR/KEEP: 2, CNTR: 3)
     bool fusedOperand = false; // VPC TIM00, CNT05: the element number is part of the mnemonic
     std::vector<OperandSpec> operands;
-    const char *summary = nullptr;    // QT_TRANSLATE_NOOP("rung::model::Target", ...) for call tips
+    const char *summary = nullptr; // QT_TRANSLATE_NOOP("rung::model::Target", ...) for call tips
     const char *operandHelp = nullptr; // e.g. "T0..T255 K1..K32767"; untranslated syntax
-    int steps = 1;             // program memory the instruction occupies (words / steps)
+    int steps = 1;                     // program memory the instruction occupies (words / steps)
+    TimerMode timerMode = TimerMode::OnDelay;  // Op::Timer
+    CounterMode counterMode = CounterMode::Up; // Op::UpDownCounter
 };
 
 struct Limits {
-    int programSteps = 0;     // program length in steps / lines / words
-    int stackDepth = 8;       // MPS levels
-    int contactsPerRow = 11;  // ladder row width (contacts before the output column)
-    int maxBlocksInRow = 8;   // consecutive ANB/ORB allowed (0 = no limit)
-    int jumpLabels = 0;       // JMP N range (CPM1: 50)
-    bool allowsStack = false; // MPS/MRD/MPP exist
+    int programSteps = 0;             // program length in steps / lines / words
+    int stackDepth = 8;               // MPS levels
+    int contactsPerRow = 11;          // ladder row width (contacts before the output column)
+    int maxBlocksInRow = 8;           // consecutive ANB/ORB allowed (0 = no limit)
+    int jumpLabels = 0;               // JMP N range (CPM1: 50)
+    bool allowsStack = false;         // MPS/MRD/MPP exist
     bool duplicateCoilIsError = true; // VPC/CPM1 error, Vigor warning
     bool outputNeedsCondition = true;
 };
 
 // A model (hardware variant) narrows the areas: I/O counts, analog channels.
 struct ModelVariant {
-    QString name;            // "VPC2416", "VB", "CPM1-20CDR", "PL110-1A"
+    QString name; // "VPC2416", "VB", "CPM1-20CDR", "PL110-1A"
     struct Override {
-        QString area;        // Area::key of the area it narrows
+        QString area; // Area::key of the area it narrows
         int first = 0;
-        int last = -1;       // last < first: the area does not exist on this model
+        int last = -1; // last < first: the area does not exist on this model
     };
     std::vector<Override> overrides;
-    int programSteps = 0;    // 0 = the family's limit
+    int programSteps = 0; // 0 = the family's limit
 };
 
 class Target {

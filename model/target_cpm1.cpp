@@ -76,7 +76,7 @@ Target makeCpm1Target() {
          QT_TRANSLATE_NOOP("rung::model::Target", "ON for the first scan")},
         {QStringLiteral("254.00"), SystemRole::Clock1min,
          QT_TRANSLATE_NOOP("rung::model::Target", "1 min clock")},
-        {QStringLiteral("254.01"), SystemRole::Clock100ms,
+        {QStringLiteral("254.01"), SystemRole::Other,
          QT_TRANSLATE_NOOP("rung::model::Target", "0.02 s clock")},
         {QStringLiteral("255.00"), SystemRole::Clock100ms,
          QT_TRANSLATE_NOOP("rung::model::Target", "0.1 s clock")},

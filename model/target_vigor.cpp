@@ -105,8 +105,8 @@ Target makeVigorTarget() {
         .retentive = true;
     Area &sm = area("SM", "M", AreaKind::Bit, 9000, 9255,
                     QT_TRANSLATE_NOOP("rung::model::Target", "special relays"));
+    // Writable: seed 001's programs drive M9100 (start dialing) and M9122 (RS send).
     sm.system = true;
-    sm.writable = false;
     area("S", "S", AreaKind::Bit, 0, 499, QT_TRANSLATE_NOOP("rung::model::Target", "step relays"));
     area("SL", "S", AreaKind::Bit, 500, 999,
          QT_TRANSLATE_NOOP("rung::model::Target", "latched step relays"))

@@ -74,7 +74,13 @@ Target makeVpcTarget() {
                        QT_TRANSLATE_NOOP("rung::model::Target", "retentive auxiliary relays"));
     rl.digits = 2;
     rl.retentive = true;
-    Area &rs = addArea(t, "rs", "r", AreaKind::Bit, 88, 95,
+    // The seed lists r88..r95 as system registers, yet lets OUT/LR drive r00..r89: the program
+    // may drop r88 (RUN) to stop and raise r89 (ERR) to signal an alarm. r90..r95 are read-only.
+    Area &rsw = addArea(t, "rsw", "r", AreaKind::Bit, 88, 89,
+                        QT_TRANSLATE_NOOP("rung::model::Target", "system relays"));
+    rsw.digits = 2;
+    rsw.system = true;
+    Area &rs = addArea(t, "rs", "r", AreaKind::Bit, 90, 95,
                        QT_TRANSLATE_NOOP("rung::model::Target", "system relays"));
     rs.digits = 2;
     rs.system = true;

@@ -4,8 +4,7 @@
 
 using namespace rung::model;
 
-TEST(Targets, EveryFamilyHasAnIdAndAModel)
-{
+TEST(Targets, EveryFamilyHasAnIdAndAModel) {
     for (Family f : Target::families()) {
         const Target &t = Target::get(f);
         EXPECT_FALSE(t.id.isEmpty());

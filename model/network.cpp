@@ -1,0 +1,93 @@
+#include "network.h"
+
+namespace rung::model::detail {
+
+namespace {
+
+Expr combine(Expr::Kind kind, Expr a, Expr b) {
+    if (a.empty())
+        return b;
+    if (b.empty())
+        return a;
+    Expr out;
+    out.kind = kind;
+    for (Expr *e : {&a, &b}) {
+        if (e->kind == kind)
+            for (Expr &item : e->items)
+                out.items.push_back(std::move(item));
+        else
+            out.items.push_back(std::move(*e));
+    }
+    return out;
+}
+
+} // namespace
+
+Expr series(Expr a, Expr b) {
+    return combine(Expr::Kind::Series, std::move(a), std::move(b));
+}
+
+Expr parallel(Expr a, Expr b) {
+    return combine(Expr::Kind::Parallel, std::move(a), std::move(b));
+}
+
+bool sameExpr(const Expr &a, const Expr &b, bool byCell) {
+    if (a.kind != b.kind)
+        return false;
+    if (a.kind == Expr::Kind::Leaf)
+        return byCell ? a.cell == b.cell : a.leaf == b.leaf;
+    if (a.items.size() != b.items.size())
+        return false;
+    for (std::size_t i = 0; i < a.items.size(); ++i)
+        if (!sameExpr(a.items[i], b.items[i], byCell))
+            return false;
+    return true;
+}
+
+std::vector<Expr> seriesItems(const Expr &e) {
+    if (e.kind == Expr::Kind::Series)
+        return e.items;
+    return {e};
+}
+
+Expr seriesOf(std::vector<Expr> items) {
+    if (items.size() == 1)
+        return std::move(items.front());
+    Expr e;
+    e.kind = Expr::Kind::Series;
+    e.items = std::move(items);
+    return e;
+}
+
+bool isUnconditional(Op op) {
+    switch (op) {
+    case Op::End:
+    case Op::InterlockClear:
+    case Op::JumpEnd:
+    case Op::Return:
+    case Op::StepLadder:
+    case Op::Nop:
+        return true;
+    default:
+        return false;
+    }
+}
+
+bool isOutputOp(Op op) {
+    switch (op) {
+    case Op::Load:
+    case Op::And:
+    case Op::Or:
+    case Op::AndBlock:
+    case Op::OrBlock:
+    case Op::Push:
+    case Op::ReadStack:
+    case Op::Pop:
+    case Op::Invert:
+        return false;
+    default:
+        return true;
+    }
+}
+
+} // namespace rung::model::detail

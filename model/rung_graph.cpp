@@ -1,0 +1,369 @@
+#include "rung_graph.h"
+#include "reverse_current.h"
+
+#include <algorithm>
+#include <limits>
+#include <map>
+#include <numeric>
+
+namespace rung::model::detail {
+
+namespace {
+
+constexpr int kMaxPaths = 256;
+
+struct UnionFind {
+    std::vector<int> parent;
+    explicit UnionFind(int n)
+        : parent(static_cast<std::size_t>(n)) {
+        std::iota(parent.begin(), parent.end(), 0);
+    }
+    int find(int x) {
+        while (parent[static_cast<std::size_t>(x)] != x) {
+            parent[static_cast<std::size_t>(x)] =
+                parent[static_cast<std::size_t>(parent[static_cast<std::size_t>(x)])];
+            x = parent[static_cast<std::size_t>(x)];
+        }
+        return x;
+    }
+    void join(int a, int b) { parent[static_cast<std::size_t>(find(a))] = find(b); }
+};
+
+struct Edge {
+    int from = 0;
+    int to = 0;
+    Expr expr;
+    int key = 0; // drawing order: first row, then column, of the edge's top-left leaf
+};
+
+struct Graph {
+    int rail = 0;
+    std::vector<Edge> edges;     // one per contact
+    std::vector<int> outputNode; // per row: the node at the output column
+};
+
+Graph buildGraph(const Rung &rung) {
+    const int width = rung.columns + 1;
+    UnionFind uf(rung.rows * width);
+    auto node = [width](int r, int c) { return r * width + c; };
+    for (int r = 1; r < rung.rows; ++r)
+        uf.join(node(r, 0), node(0, 0));
+    for (int r = 0; r < rung.rows; ++r) {
+        for (int c = 0; c <= rung.columns; ++c)
+            if (r + 1 < rung.rows && rung.link(r, c))
+                uf.join(node(r, c), node(r + 1, c));
+        for (int c = 0; c < rung.columns; ++c)
+            if (rung.cell(r, c).kind == CellKind::Wire)
+                uf.join(node(r, c), node(r, c + 1));
+    }
+    Graph g;
+    g.rail = uf.find(node(0, 0));
+    for (int r = 0; r < rung.rows; ++r) {
+        for (int c = 0; c < rung.columns; ++c) {
+            const Cell &cell = rung.cell(r, c);
+            if (cell.kind != CellKind::Contact)
+                continue;
+            const int cellId = r * rung.columns + c;
+            g.edges.push_back(Edge{uf.find(node(r, c)), uf.find(node(r, c + 1)),
+                                   Expr::leafOf(cell.contact, cellId), r * 4096 + c});
+        }
+        g.outputNode.push_back(uf.find(node(r, rung.columns)));
+    }
+    return g;
+}
+
+int firstCell(const Expr &e) {
+    if (e.kind == Expr::Kind::Leaf)
+        return e.cell;
+    int best = std::numeric_limits<int>::max();
+    for (const Expr &i : e.items)
+        best = std::min(best, firstCell(i));
+    return best;
+}
+
+// Reduces a two-terminal network by parallel and series steps; true when one edge is left.
+bool reduce(std::vector<Edge> edges, int source, int sink, Expr *out) {
+    for (bool changed = true; changed;) {
+        changed = false;
+        // Parallel edges between the same two nodes become one, branches in drawing order.
+        std::map<std::pair<int, int>, std::vector<std::size_t>> groups;
+        for (std::size_t i = 0; i < edges.size(); ++i)
+            groups[{edges[i].from, edges[i].to}].push_back(i);
+        std::vector<Edge> next;
+        std::vector<bool> done(edges.size(), false);
+        for (std::size_t i = 0; i < edges.size(); ++i) {
+            if (done[i])
+                continue;
+            const auto &group = groups[{edges[i].from, edges[i].to}];
+            if (group.size() == 1) {
+                next.push_back(std::move(edges[i]));
+                continue;
+            }
+            std::vector<Edge *> members;
+            for (std::size_t k : group) {
+                members.push_back(&edges[k]);
+                done[k] = true;
+            }
+            // Branches in drawing order, each by its own top-left cell, so the order does
+            // not depend on which branches were reduced first.
+            std::vector<Expr> branches;
+            int key = members[0]->key;
+            for (Edge *m : members) {
+                key = std::min(key, m->key);
+                if (m->expr.kind == Expr::Kind::Parallel)
+                    for (Expr &b : m->expr.items)
+                        branches.push_back(std::move(b));
+                else
+                    branches.push_back(std::move(m->expr));
+            }
+            std::stable_sort(branches.begin(), branches.end(), [](const Expr &a, const Expr &b) {
+                return firstCell(a) < firstCell(b);
+            });
+            Edge merged{members[0]->from, members[0]->to, {}, key};
+            merged.expr.kind = Expr::Kind::Parallel;
+            merged.expr.items = std::move(branches);
+            next.push_back(std::move(merged));
+            changed = true;
+        }
+        edges = std::move(next);
+        // A node with one edge in and one edge out joins them in series.
+        std::map<int, std::pair<int, int>> degree; // node -> (in, out)
+        for (const Edge &e : edges) {
+            ++degree[e.to].first;
+            ++degree[e.from].second;
+        }
+        for (const auto &[n, d] : degree) {
+            if (n == source || n == sink || d.first != 1 || d.second != 1)
+                continue;
+            auto in =
+                std::find_if(edges.begin(), edges.end(), [n](const Edge &e) { return e.to == n; });
+            auto outIt = std::find_if(edges.begin(), edges.end(),
+                                      [n](const Edge &e) { return e.from == n; });
+            if (in == outIt)
+                continue;
+            Edge joined{in->from, outIt->to, series(std::move(in->expr), std::move(outIt->expr)),
+                        std::min(in->key, outIt->key)};
+            const std::size_t a = static_cast<std::size_t>(in - edges.begin());
+            const std::size_t b = static_cast<std::size_t>(outIt - edges.begin());
+            edges.erase(edges.begin() + static_cast<std::ptrdiff_t>(std::max(a, b)));
+            edges.erase(edges.begin() + static_cast<std::ptrdiff_t>(std::min(a, b)));
+            edges.push_back(std::move(joined));
+            changed = true;
+            break; // degrees changed: recount
+        }
+    }
+    if (edges.size() == 1 && edges[0].from == source && edges[0].to == sink) {
+        *out = std::move(edges[0].expr);
+        return true;
+    }
+    return false;
+}
+
+Expr factor(std::vector<std::vector<Expr>> paths) {
+    for (const auto &p : paths)
+        if (p.empty())
+            return Expr{};
+    Expr result;
+    std::vector<bool> used(paths.size(), false);
+    for (std::size_t i = 0; i < paths.size(); ++i) {
+        if (used[i])
+            continue;
+        std::vector<std::vector<Expr>> rest;
+        for (std::size_t k = i; k < paths.size(); ++k) {
+            if (used[k] || paths[k][0].cell != paths[i][0].cell)
+                continue;
+            used[k] = true;
+            rest.emplace_back(paths[k].begin() + 1, paths[k].end());
+        }
+        result = parallel(std::move(result), series(paths[i][0], factor(std::move(rest))));
+    }
+    return result;
+}
+
+void collectPaths(const std::vector<const Edge *> &edges, int at, int sink, std::vector<Expr> &path,
+                  std::vector<std::vector<Expr>> &paths, std::vector<int> &visiting) {
+    if (paths.size() >= static_cast<std::size_t>(kMaxPaths))
+        return;
+    if (at == sink) {
+        paths.push_back(path);
+        return;
+    }
+    if (std::find(visiting.begin(), visiting.end(), at) != visiting.end())
+        return; // a loop: no left-to-right path goes round it
+    visiting.push_back(at);
+    for (const Edge *e : edges) {
+        if (e->from != at)
+            continue;
+        path.push_back(e->expr);
+        collectPaths(edges, e->to, sink, path, paths, visiting);
+        path.pop_back();
+    }
+    visiting.pop_back();
+}
+
+InputNetwork analyze(const Graph &g, int row) {
+    InputNetwork net;
+    net.row = row;
+    const int sink = g.outputNode[static_cast<std::size_t>(row)];
+    if (sink == g.rail) {
+        net.connected = true;
+        return net;
+    }
+    // Edges on some rail -> sink path: reachable forward from the rail and backward from the sink.
+    std::vector<int> forward{g.rail};
+    for (bool grew = true; grew;) {
+        grew = false;
+        for (const Edge &e : g.edges)
+            if (e.from != e.to && std::count(forward.begin(), forward.end(), e.from) &&
+                !std::count(forward.begin(), forward.end(), e.to)) {
+                forward.push_back(e.to);
+                grew = true;
+            }
+    }
+    std::vector<int> backward{sink};
+    for (bool grew = true; grew;) {
+        grew = false;
+        for (const Edge &e : g.edges)
+            if (e.from != e.to && std::count(backward.begin(), backward.end(), e.to) &&
+                !std::count(backward.begin(), backward.end(), e.from)) {
+                backward.push_back(e.from);
+                grew = true;
+            }
+    }
+    std::vector<Edge> relevant;
+    for (const Edge &e : g.edges)
+        if (e.from != e.to && std::count(forward.begin(), forward.end(), e.from) &&
+            std::count(backward.begin(), backward.end(), e.to)) {
+            relevant.push_back(e);
+            net.cells.push_back(e.expr.cell);
+        }
+    net.connected = std::count(forward.begin(), forward.end(), sink) > 0;
+    if (!net.connected)
+        return net;
+    std::vector<const Edge *> pointers;
+    for (const Edge &e : relevant)
+        pointers.push_back(&e);
+    net.seriesParallel = reduce(relevant, g.rail, sink, &net.expr);
+    if (!net.seriesParallel) {
+        std::vector<Expr> path;
+        std::vector<std::vector<Expr>> paths;
+        std::vector<int> visiting;
+        collectPaths(pointers, g.rail, sink, path, paths, visiting);
+        net.paths = factor(std::move(paths));
+    }
+    return net;
+}
+
+void insert(Branch &node, const std::vector<Expr> &list, std::size_t pos,
+            const Instruction &output) {
+    if (pos < list.size() && !node.items.empty() && !node.items.back().isOutput) {
+        Branch &child = node.items.back().child.front();
+        const std::vector<Expr> childList = seriesItems(child.cond);
+        std::size_t p = 0;
+        while (p < childList.size() && pos + p < list.size() &&
+               sameExpr(childList[p], list[pos + p], true))
+            ++p;
+        if (p > 0) {
+            if (p < childList.size()) {
+                Branch lower;
+                lower.cond =
+                    seriesOf({childList.begin() + static_cast<std::ptrdiff_t>(p), childList.end()});
+                lower.items = std::move(child.items);
+                child.cond = seriesOf(
+                    {childList.begin(), childList.begin() + static_cast<std::ptrdiff_t>(p)});
+                child.items.clear();
+                Branch::Item item;
+                item.isOutput = false;
+                item.child.push_back(std::move(lower));
+                child.items.push_back(std::move(item));
+            }
+            insert(child, list, pos + p, output);
+            return;
+        }
+    }
+    Branch::Item item;
+    if (pos == list.size()) {
+        item.output = output;
+        node.items.push_back(std::move(item));
+        return;
+    }
+    Branch leaf;
+    leaf.cond = seriesOf({list.begin() + static_cast<std::ptrdiff_t>(pos), list.end()});
+    Branch::Item out;
+    out.output = output;
+    leaf.items.push_back(std::move(out));
+    item.isOutput = false;
+    item.child.push_back(std::move(leaf));
+    node.items.push_back(std::move(item));
+}
+
+} // namespace
+
+std::vector<InputNetwork> analyzeRung(const Rung &rung) {
+    const Graph g = buildGraph(rung);
+    std::vector<InputNetwork> result;
+    for (int r = 0; r < rung.rows; ++r) {
+        const auto &out = rung.outputs[static_cast<std::size_t>(r)];
+        if (!out)
+            continue;
+        for (int input : rung.boxInputRows(r))
+            result.push_back(analyze(g, input));
+    }
+    return result;
+}
+
+RungLogic logicOf(const Rung &rung, const std::vector<InputNetwork> &networks, bool useFixes) {
+    RungLogic logic;
+    auto exprOf = [useFixes](const InputNetwork &n) {
+        return (!n.seriesParallel && useFixes) ? n.paths : n.expr;
+    };
+    std::size_t next = 0;
+    for (int r = 0; r < rung.rows; ++r) {
+        const auto &out = rung.outputs[static_cast<std::size_t>(r)];
+        if (!out)
+            continue;
+        const std::vector<int> inputs = rung.boxInputRows(r);
+        if (inputs.size() > 1) {
+            logic.box = *out;
+            for (std::size_t k = 0; k < inputs.size() && next < networks.size(); ++k)
+                logic.boxInputs.push_back(exprOf(networks[next++]));
+            continue;
+        }
+        if (next >= networks.size())
+            break;
+        const Expr e = exprOf(networks[next++]);
+        insert(logic.root, e.empty() ? std::vector<Expr>{} : seriesItems(e), 0, *out);
+    }
+    return logic;
+}
+
+} // namespace rung::model::detail
+
+namespace rung::model {
+
+std::vector<ReverseCurrentFinding> findReverseCurrent(const Rung &rung) {
+    const auto networks = detail::analyzeRung(rung);
+    std::vector<ReverseCurrentFinding> findings;
+    bool any = false;
+    for (const auto &n : networks)
+        any = any || (n.connected && !n.seriesParallel);
+    if (!any)
+        return findings;
+    Rung corrected = detail::layoutRung(detail::logicOf(rung, networks, true));
+    corrected.comment = rung.comment;
+    for (const auto &n : networks) {
+        if (!n.connected || n.seriesParallel)
+            continue;
+        ReverseCurrentFinding f;
+        f.row = n.row;
+        for (int id : n.cells)
+            f.cells.emplace_back(id / std::max(1, rung.columns), id % std::max(1, rung.columns));
+        std::sort(f.cells.begin(), f.cells.end());
+        f.cells.erase(std::unique(f.cells.begin(), f.cells.end()), f.cells.end());
+        f.corrected = corrected;
+        findings.push_back(std::move(f));
+    }
+    return findings;
+}
+
+} // namespace rung::model

@@ -1,0 +1,257 @@
+#include "random_program.h"
+
+#include "model/address.h"
+
+#include <QStringList>
+
+#include <random>
+
+namespace rung::testing {
+
+using namespace rung::model;
+
+namespace {
+
+struct Node {
+    enum Kind { Leaf, Series, Parallel } kind = Leaf;
+    QString device;
+    bool negated = false;
+    std::vector<Node> items;
+};
+
+class Generator {
+public:
+    Generator(const Target &t, std::uint64_t seed, const RandomProgramOptions &o)
+        : m_t(t)
+        , m_rng(seed)
+        , m_o(o) {
+        pool(true, false, 12, &m_inputs);
+        pool(true, true, 10, &m_outputs);
+        pool(false, true, 10, &m_relays);
+    }
+
+    QString run() {
+        for (int r = 0; r < m_o.rungs; ++r)
+            rung();
+        if (m_o.end)
+            line(mn(Op::End));
+        return m_lines.join(QLatin1Char('\n')) + QLatin1Char('\n');
+    }
+
+private:
+    // Devices of the first area that matches: physical inputs, physical outputs, or internal
+    // relays. Channel areas give their bits.
+    void pool(bool physical, bool writable, int count, QStringList *out) {
+        for (int i = 0; i < static_cast<int>(m_t.areas.size()); ++i) {
+            const Area &a = m_t.area(i);
+            if (a.physical != physical || a.writable != writable || a.system)
+                continue;
+            if (a.kind != AreaKind::Bit && a.kind != AreaKind::Channel)
+                continue;
+            for (int k = 0; k < count; ++k) {
+                Address addr{i, a.first, -1};
+                if (a.numbering == Numbering::ChannelBit) {
+                    addr.index = a.first + k / 16;
+                    addr.bit = k % 16;
+                    if (addr.index > a.last)
+                        break;
+                } else {
+                    addr.index = a.first + k;
+                    if (addr.index > a.last)
+                        break;
+                }
+                out->append(formatAddress(m_t, addr));
+            }
+            return;
+        }
+    }
+
+    int pick(int n) { return std::uniform_int_distribution<int>(0, n - 1)(m_rng); }
+    bool chance(int percent) { return pick(100) < percent; }
+
+    QString mn(Op op, ContactMode mode = ContactMode::Normal) const {
+        const InstructionSpec *s = m_t.findInstruction(op, mode);
+        return s ? s->mnemonic : QString();
+    }
+
+    void line(const QString &text) { m_lines << text; }
+
+    Node leaf() {
+        Node n;
+        n.device = m_readable[static_cast<std::size_t>(pick(static_cast<int>(m_readable.size())))];
+        n.negated = chance(30);
+        return n;
+    }
+
+    Node expr(int depth) {
+        if (depth <= 0 || chance(35))
+            return leaf();
+        Node n;
+        n.kind = chance(50) ? Node::Series : Node::Parallel;
+        const int count = 2 + pick(2);
+        for (int i = 0; i < count; ++i) {
+            Node item = expr(depth - 1);
+            if (item.kind == n.kind) // keep the tree flat: nested same kinds are one
+                for (Node &x : item.items)
+                    n.items.push_back(std::move(x));
+            else
+                n.items.push_back(std::move(item));
+        }
+        return n;
+    }
+
+    void contact(Op op, const Node &n) {
+        line(mn(op, n.negated ? ContactMode::Negated : ContactMode::Normal) + QLatin1Char(' ') +
+             n.device);
+    }
+
+    void load(const Node &n) {
+        switch (n.kind) {
+        case Node::Leaf:
+            contact(Op::Load, n);
+            return;
+        case Node::Series: {
+            load(n.items[0]);
+            const bool stacked = m_o.fuzzy && chance(30);
+            int pending = 0;
+            for (std::size_t i = 1; i < n.items.size(); ++i) {
+                if (n.items[i].kind == Node::Leaf && pending == 0) {
+                    contact(Op::And, n.items[i]);
+                    continue;
+                }
+                load(n.items[i]);
+                if (stacked && i + 1 < n.items.size() && pending < 3) {
+                    ++pending; // combined at the end: "LD.. LD.. ANB ANB"
+                    continue;
+                }
+                line(mn(Op::AndBlock));
+                for (; pending > 0; --pending)
+                    line(mn(Op::AndBlock));
+            }
+            return;
+        }
+        case Node::Parallel: {
+            const bool bad = m_o.fuzzy && chance(30);
+            load(n.items[0]);
+            int pending = 0;
+            for (std::size_t i = 1; i < n.items.size(); ++i) {
+                if (n.items[i].kind == Node::Leaf && !bad) {
+                    contact(Op::Or, n.items[i]);
+                    continue;
+                }
+                load(n.items[i]);
+                if (bad && i + 1 < n.items.size()) {
+                    ++pending; // "LD X0 LD X1 LD X2 ORB ORB"
+                    continue;
+                }
+                line(mn(Op::OrBlock));
+                for (; pending > 0; --pending)
+                    line(mn(Op::OrBlock));
+            }
+            return;
+        }
+        }
+    }
+
+    // A condition added after a branch point: AND-chains or a block and ANB.
+    void andOn(const Node &n) {
+        if (n.kind == Node::Leaf)
+            return contact(Op::And, n);
+        if (n.kind == Node::Series) {
+            for (const Node &i : n.items)
+                andOn(i);
+            return;
+        }
+        load(n);
+        line(mn(Op::AndBlock));
+    }
+
+    QString coil() {
+        QString d;
+        do {
+            const bool relay = !m_relays.isEmpty() && chance(40);
+            const QStringList &from = relay ? m_relays : m_outputs;
+            d = from[pick(static_cast<int>(from.size()))];
+        } while (m_written.contains(d) &&
+                 m_written.size() < m_outputs.size() + m_relays.size() - 1);
+        m_written << d;
+        return d;
+    }
+
+    void rung() {
+        // Outputs first, so the rung's contacts can leave out what the rung writes.
+        m_written.clear();
+        const int kind = pick(10);
+        const bool stack = m_t.limits.allowsStack && m_o.branches;
+        const InstructionSpec *box = nullptr;
+        for (const InstructionSpec &s : m_t.instructions)
+            if (s.op == Op::Keep && s.inputs == 2)
+                box = &s;
+        const int coilCount = kind < 3 ? 1 : 3;
+        m_readable.clear();
+        // Choose the written devices, then the readable ones.
+        std::vector<QString> written;
+        for (int i = 0; i < coilCount; ++i)
+            written.push_back(coil());
+        for (const QStringList *p : {&m_inputs, &m_relays})
+            for (const QString &d : *p)
+                if (!m_written.contains(d))
+                    m_readable.push_back(d);
+        auto out = [&](const QString &d) {
+            const int k = pick(10);
+            if (k == 0 && !mn(Op::Set).isEmpty())
+                line(mn(Op::Set) + QLatin1Char(' ') + d);
+            else if (k == 1 && !mn(Op::Reset).isEmpty())
+                line(mn(Op::Reset) + QLatin1Char(' ') + d);
+            else
+                line(mn(Op::Out) + QLatin1Char(' ') + d);
+        };
+        if (kind == 9 && box && m_o.boxes) {
+            load(expr(m_o.maxDepth - 1));
+            load(expr(m_o.maxDepth - 1));
+            line(box->mnemonic + QLatin1Char(' ') + written[0]);
+            return;
+        }
+        load(expr(m_o.maxDepth));
+        if (coilCount == 1 || !m_o.branches) {
+            out(written[0]);
+            return;
+        }
+        if (stack && kind >= 6) {
+            line(mn(Op::Push));
+            andOn(expr(1));
+            out(written[0]);
+            line(mn(Op::ReadStack));
+            andOn(expr(1));
+            out(written[1]);
+            line(mn(Op::Pop));
+            if (chance(50))
+                andOn(expr(1));
+            out(written[2]);
+            return;
+        }
+        // Parallel outputs, then a continuation that adds a condition.
+        // Without MPS a new block after an output would start the next rung: AND only.
+        out(written[0]);
+        out(written[1]);
+        andOn(leaf());
+        if (chance(50))
+            andOn(leaf());
+        out(written[2]);
+    }
+
+    const Target &m_t;
+    std::mt19937_64 m_rng;
+    RandomProgramOptions m_o;
+    QStringList m_inputs, m_outputs, m_relays, m_lines, m_written;
+    std::vector<QString> m_readable;
+};
+
+} // namespace
+
+QString randomProgram(const Target &target, std::uint64_t seed,
+                      const RandomProgramOptions &options) {
+    return Generator(target, seed, options).run();
+}
+
+} // namespace rung::testing

@@ -1,0 +1,28 @@
+#pragma once
+
+// Random valid programs for the property tests: rungs of series/parallel networks written in
+// any of the valid ("fuzzy") orders, several outputs per rung, MPS branches where the target
+// has a branch stack, two-input boxes where it has one. A rung never reads a device its own
+// outputs write, so one pass of the listing and one pass of the ladder mean the same thing.
+
+#include "model/target.h"
+
+#include <QString>
+
+#include <cstdint>
+
+namespace rung::testing {
+
+struct RandomProgramOptions {
+    int rungs = 8;
+    int maxDepth = 3;
+    bool fuzzy = true;    // also emit stacked ANB/ORB and LD/ORB chains
+    bool branches = true; // MPS/MRD/MPP (or output continuations) and parallel outputs
+    bool boxes = true;    // LR / KEEP / two-input counters where the target has them
+    bool end = true;
+};
+
+QString randomProgram(const model::Target &target, std::uint64_t seed,
+                      const RandomProgramOptions &options = {});
+
+} // namespace rung::testing

@@ -1,0 +1,267 @@
+#include "random_program.h"
+
+#include "model/convert.h"
+#include "model/ladder_text.h"
+#include "model/logic.h"
+
+#include <gtest/gtest.h>
+
+#include <QHash>
+
+#include <random>
+#include <set>
+
+using namespace rung::model;
+
+namespace {
+
+InstructionList parse(Family family, const QString &text) {
+    ParseResult r = parseInstructionList(Target::get(family), text);
+    EXPECT_TRUE(r.ok()) << (r.errors.empty() ? std::string()
+                                             : QStringLiteral("%1:%2: %3")
+                                                   .arg(r.errors[0].line)
+                                                   .arg(r.errors[0].column)
+                                                   .arg(r.errors[0].message)
+                                                   .toStdString())
+                        << "\n"
+                        << text.toStdString();
+    return r.list;
+}
+
+QString problemsOf(const std::vector<Diagnostic> &ds) {
+    QString s;
+    for (const Diagnostic &d : ds)
+        s += QStringLiteral("%1 line %2 rung %3: %4\n")
+                 .arg(d.code)
+                 .arg(d.location.line)
+                 .arg(d.location.rung)
+                 .arg(d.message);
+    return s;
+}
+
+// IL -> ladder -> IL, printed.
+QString roundTrip(const InstructionList &list, LadderProgram *ladder = nullptr) {
+    ToLadderResult lad = listToLadder(list);
+    EXPECT_TRUE(lad.ok()) << problemsOf(lad.problems).toStdString();
+    ToListingResult back = ladderToList(lad.ladder);
+    EXPECT_TRUE(back.ok()) << problemsOf(back.problems).toStdString();
+    if (ladder)
+        *ladder = lad.ladder;
+    return printInstructionList(back.list);
+}
+
+QString canonical(Family family, const QString &text) {
+    return roundTrip(parse(family, text));
+}
+
+QString lines(std::initializer_list<const char *> ls) {
+    QString s;
+    for (const char *l : ls)
+        s += QString::fromLatin1(l) + QLatin1Char('\n');
+    return s;
+}
+
+// ladder-rules.md, "Execution order example (seed 004, 1.5.1)", verbatim.
+const char *kExecutionOrder =
+    "LD X0\nOR M0\nAND X1\nLD X3\nAND M1\nORB\nLD Y1\nAND X4\nLD T0\nAND M3\n"
+    "ORB\nANB\nOUT Y1\nTMR T0 K10\n";
+
+} // namespace
+
+TEST(Conversion, ExecutionOrderExampleIsAlreadyCanonical) {
+    const QString text = QString::fromLatin1(kExecutionOrder);
+    LadderProgram ladder;
+    EXPECT_EQ(roundTrip(parse(Family::Vigor, text), &ladder), text);
+    ASSERT_EQ(ladder.rungs.size(), 1u);
+    const Rung &r = ladder.rungs[0];
+    // (X0 | M0) & X1 over X3 & M1, then the block (Y1 & X4 | T0 & M3): two parallel blocks.
+    EXPECT_EQ(r.columns, 4);
+    ASSERT_TRUE(r.outputs[0].has_value());
+    EXPECT_EQ(printInstruction(Target::get(Family::Vigor), *r.outputs[0]),
+              QStringLiteral("OUT Y1"));
+    ASSERT_TRUE(r.outputs[1].has_value());
+    EXPECT_EQ(printInstruction(Target::get(Family::Vigor), *r.outputs[1]),
+              QStringLiteral("TMR T0 K10"));
+}
+
+TEST(Conversion, StackedAnbBecomesAnbAfterEachBlock) {
+    // seed 004 1.7 example 1: "OK" form in, "better" form out.
+    const QString ok =
+        lines({"LD X0", "OR X1", "LD X2", "OR X3", "LD X4", "OR X5", "ANB", "ANB", "OUT Y0"});
+    const QString better =
+        lines({"LD X0", "OR X1", "LD X2", "OR X3", "ANB", "LD X4", "OR X5", "ANB", "OUT Y0"});
+    EXPECT_EQ(canonical(Family::Vigor, ok), better);
+    EXPECT_EQ(canonical(Family::Vigor, better), better);
+}
+
+TEST(Conversion, StackedOrbBecomesAnOrChain) {
+    // seed 004 1.7 example 2: "bad" form in, "good" form out.
+    const QString bad = lines({"LD X0", "LD X1", "LD X2", "LD X3", "ORB", "ORB", "ORB", "OUT Y0"});
+    const QString good = lines({"LD X0", "OR X1", "OR X2", "OR X3", "OUT Y0"});
+    EXPECT_EQ(canonical(Family::Vigor, bad), good);
+    EXPECT_EQ(canonical(Family::Vigor, good), good);
+}
+
+TEST(Conversion, VigorBranchesUseMpsMrdMpp) {
+    const QString text = lines(
+        {"LD X0", "MPS", "AND X1", "OUT Y0", "MRD", "AND X2", "OUT Y1", "MPP", "AND X3", "OUT Y2"});
+    EXPECT_EQ(canonical(Family::Vigor, text), text);
+}
+
+TEST(Conversion, OutputsAtTheBranchPointNeedNoStack) {
+    const QString text = lines({"LD X0", "OUT Y0", "OUT Y1", "AND X1", "OUT Y2"});
+    EXPECT_EQ(canonical(Family::Vigor, text), text);
+    // The same written with MPS/MPP loses the needless stack instructions.
+    const QString withStack =
+        lines({"LD X0", "MPS", "OUT Y0", "MRD", "OUT Y1", "MPP", "AND X1", "OUT Y2"});
+    EXPECT_EQ(canonical(Family::Vigor, withStack), text);
+}
+
+TEST(Conversion, VpcRepeatsTheConditionForEachBranch) {
+    // VPC has no branch stack: the ladder's branch becomes one rung per path.
+    const Target &vpc = Target::get(Family::Vpc);
+    ParseResult vigorLike = parseInstructionList(
+        vpc, lines({"LD i00", "AND i01", "OUT o00", "LD i00", "AND i02", "OUT o01"}));
+    ASSERT_TRUE(vigorLike.ok());
+    LadderProgram ladder;
+    ladder.target = &vpc;
+    // Draw the branch by hand: i00 then (i01 -> o00 | i02 -> o01).
+    Rung r(2, 2);
+    const auto dev = [&](const char *name) {
+        Operand o;
+        o.address = std::get<Address>(parseAddress(vpc, QString::fromLatin1(name)));
+        return o;
+    };
+    r.cell(0, 0).kind = CellKind::Contact;
+    r.cell(0, 0).contact.operands = {dev("i00")};
+    r.cell(0, 1).kind = CellKind::Contact;
+    r.cell(0, 1).contact.operands = {dev("i01")};
+    r.cell(1, 1).kind = CellKind::Contact;
+    r.cell(1, 1).contact.operands = {dev("i02")};
+    r.setLink(0, 1, true);
+    Instruction o0 = vigorLike.list.instructions[2];
+    Instruction o1 = vigorLike.list.instructions[5];
+    r.outputs[0] = o0;
+    r.outputs[1] = o1;
+    ladder.rungs.push_back(r);
+    ToListingResult list = ladderToList(ladder);
+    ASSERT_TRUE(list.ok());
+    EXPECT_EQ(printInstructionList(list.list), printInstructionList(vigorLike.list));
+}
+
+TEST(Conversion, CpmKeepTakesTwoBlocks) {
+    const QString text =
+        lines({"LD 000.00", "OR 010.00", "LD 000.01", "KEEP(11) 010.00", "END(01)"});
+    LadderProgram ladder;
+    EXPECT_EQ(roundTrip(parse(Family::Cpm1, text), &ladder), text);
+    ASSERT_EQ(ladder.rungs.size(), 2u);
+    EXPECT_EQ(ladder.rungs[0].boxInputRows(0), (std::vector<int>{0, 2}));
+}
+
+TEST(Conversion, FunctionCodeSpellingsMeanTheSameInstruction) {
+    EXPECT_EQ(canonical(Family::Cpm1, lines({"LD 000.00", "LD 000.01", "KEEP 010.00", "END"})),
+              lines({"LD 000.00", "LD 000.01", "KEEP(11) 010.00", "END(01)"}));
+}
+
+TEST(Conversion, RungCommentsTravelBothWays) {
+    const QString text =
+        lines({"; start the pump", "LD X0", "OUT Y0", "; stop it", "LD X1", "OUT Y1"});
+    LadderProgram ladder;
+    EXPECT_EQ(roundTrip(parse(Family::Vigor, text), &ladder), text);
+    ASSERT_EQ(ladder.rungs.size(), 2u);
+    EXPECT_EQ(ladder.rungs[1].comment, QStringLiteral("stop it"));
+}
+
+TEST(Conversion, BrokenListingReportsTheLine) {
+    const InstructionList list =
+        parse(Family::Vigor, lines({"LD X0", "ANB", "OUT Y0", "LD X1", "OUT Y1"}));
+    ToLadderResult r = listToLadder(list);
+    ASSERT_FALSE(r.ok());
+    EXPECT_EQ(r.problems[0].location.line, 2);
+    // The good rung after it is still drawn.
+    ASSERT_EQ(r.ladder.rungs.size(), 1u);
+    EXPECT_EQ(r.rungLine[0], 4);
+}
+
+TEST(Conversion, OpenBlockAtTheEndIsReported) {
+    ToLadderResult r =
+        listToLadder(parse(Family::Vigor, lines({"LD X0", "OUT Y0", "LD X1", "LD X2"})));
+    ASSERT_FALSE(r.ok());
+    EXPECT_EQ(r.problems.back().code, QStringLiteral("CV007"));
+}
+
+// ---- properties over random programs --------------------------------------------------------
+
+namespace {
+
+std::set<Address> devicesRead(const InstructionList &list) {
+    std::set<Address> out;
+    for (const Instruction &i : list.instructions)
+        for (const Operand &o : i.operands)
+            if (o.kind == Operand::Kind::Device)
+                out.insert(o.address);
+    return out;
+}
+
+void checkProgram(const Target &target, const QString &text, std::uint64_t seed) {
+    SCOPED_TRACE(
+        QStringLiteral("target %1 seed %2\n%3").arg(target.id).arg(seed).arg(text).toStdString());
+    ParseResult parsed = parseInstructionList(target, text);
+    ASSERT_TRUE(parsed.ok()) << parsed.errors[0].line << ": "
+                             << parsed.errors[0].message.toStdString();
+    ToLadderResult lad1 = listToLadder(parsed.list);
+    ASSERT_TRUE(lad1.ok()) << problemsOf(lad1.problems).toStdString();
+    ToListingResult il1 = ladderToList(lad1.ladder);
+    ASSERT_TRUE(il1.ok()) << problemsOf(il1.problems).toStdString();
+    ToLadderResult lad2 = listToLadder(il1.list);
+    ASSERT_TRUE(lad2.ok()) << problemsOf(lad2.problems).toStdString();
+    ToListingResult il2 = ladderToList(lad2.ladder);
+    // Fixpoint after the first pass.
+    ASSERT_EQ(printInstructionList(il2.list), printInstructionList(il1.list));
+    ASSERT_EQ(lad2.ladder.rungs.size(), lad1.ladder.rungs.size());
+    for (std::size_t r = 0; r < lad1.ladder.rungs.size(); ++r)
+        ASSERT_TRUE(lad1.ladder.rungs[r] == lad2.ladder.rungs[r])
+            << "rung " << r << "\n"
+            << printLadderText(lad1.ladder).toStdString() << printLadderText(lad2.ladder).toStdString()
+            << printInstructionList(il1.list).toStdString();
+    // Same meaning: the listing, its ladder and the canonical listing agree on every output.
+    const std::set<Address> devices = devicesRead(parsed.list);
+    const std::vector<Address> order(devices.begin(), devices.end());
+    const int n = static_cast<int>(order.size());
+    const bool exhaustive = n <= 6;
+    const int cases = exhaustive ? 1 << n : 48;
+    std::mt19937_64 rng(seed);
+    for (int k = 0; k < cases; ++k) {
+        const std::uint64_t bits = exhaustive ? static_cast<std::uint64_t>(k) : rng();
+        const BitReader read = [&](const Address &a) {
+            const auto it = std::lower_bound(order.begin(), order.end(), a);
+            const auto i = static_cast<std::size_t>(it - order.begin());
+            return ((bits >> (i % 64)) & 1u) != 0;
+        };
+        const OutputImage a = evaluateList(parsed.list, read);
+        const OutputImage b = evaluateLadder(lad1.ladder, read);
+        const OutputImage c = evaluateList(il1.list, read);
+        ASSERT_EQ(a, b) << "case " << k << "\n"
+                        << printLadderText(lad1.ladder).toStdString();
+        ASSERT_EQ(a, c) << "case " << k;
+    }
+}
+
+} // namespace
+
+class RandomPrograms : public ::testing::TestWithParam<Family> {};
+
+TEST_P(RandomPrograms, RoundTripIsAFixpointAndKeepsMeaning) {
+    const Target &target = Target::get(GetParam());
+    for (std::uint64_t seed = 1; seed <= 700; ++seed) {
+        rung::testing::RandomProgramOptions o;
+        o.rungs = 4;
+        checkProgram(target, rung::testing::randomProgram(target, seed, o), seed);
+        if (::testing::Test::HasFatalFailure())
+            return;
+    }
+}
+
+INSTANTIATE_TEST_SUITE_P(AllTargets, RandomPrograms,
+                         ::testing::Values(Family::Vpc, Family::Vigor, Family::Cpm1),
+                         [](const auto &info) { return Target::get(info.param).id.toStdString(); });
