@@ -337,6 +337,8 @@ private:
             finishRung(false);
             return;
         }
+        if (m_blocks.empty())
+            return problem(ins, "CV006", Tr::tr("%1 has no condition").arg(ins.spec->mnemonic));
         if (m_blocks.size() != 1)
             return problem(ins, "CV005",
                            m_blocks.empty() ? Tr::tr("%1 has no condition").arg(ins.spec->mnemonic)

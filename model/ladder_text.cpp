@@ -413,6 +413,58 @@ private:
 
 } // namespace
 
+QString contactToText(const Target &target, const Contact &contact) {
+    if (contact.invert)
+        return QStringLiteral("~");
+    QString mark;
+    switch (contact.mode) {
+    case ContactMode::Normal:
+        break;
+    case ContactMode::Negated:
+        mark = QStringLiteral("/");
+        break;
+    case ContactMode::Rising:
+        mark = QStringLiteral("^");
+        break;
+    case ContactMode::Falling:
+        mark = QStringLiteral("_");
+        break;
+    }
+    return mark + contactText(target, contact);
+}
+
+std::optional<Contact> contactFromText(const Target &target, const QString &text, QString *error,
+                                       const ModelVariant *model) {
+    QString body = text.trimmed();
+    QChar mark = QLatin1Char(' ');
+    if (body == QLatin1String("~"))
+        mark = QLatin1Char('~');
+    else if (body.startsWith(QLatin1Char('/')))
+        mark = QLatin1Char('/');
+    else if (body.startsWith(QLatin1Char('^')))
+        mark = QLatin1Char('P');
+    else if (body.startsWith(QLatin1Char('_')))
+        mark = QLatin1Char('N');
+    if (mark != QLatin1Char(' '))
+        body.remove(0, 1);
+    // Reuse the ladder-text reader on a one-cell line.
+    const int width = static_cast<int>(body.size()) + 5;
+    const QString doc = QStringLiteral("LADDER %1 WIDTH %2\nRUNG 1 ROWS 1 COLUMNS 1\n|-[%3%4]-\n")
+                            .arg(target.id)
+                            .arg(width)
+                            .arg(mark)
+                            .arg(body.leftJustified(width - 5, QLatin1Char(' ')));
+    LadderTextResult r = parseLadderText(target, doc, model);
+    if (!r.ok() || r.ladder.rungs.size() != 1 ||
+        r.ladder.rungs[0].cell(0, 0).kind != CellKind::Contact) {
+        if (error)
+            *error = r.errors.empty() ? Tr::tr("'%1' is not a contact").arg(text)
+                                      : r.errors.front().message;
+        return std::nullopt;
+    }
+    return r.ladder.rungs[0].cell(0, 0).contact;
+}
+
 LadderTextResult parseLadderText(const Target &target, const QString &text,
                                  const ModelVariant *model) {
     return TextReader(target, model, text).run();

@@ -1,17 +1,151 @@
 #include "cli.h"
 
+#include "cli_common.h"
+#include "cli_simulate.h"
+
+#include "model/checks.h"
+#include "model/convert.h"
+#include "model/ladder_text.h"
+
+#include <QCoreApplication>
+#include <QSaveFile>
+
 namespace rung::app {
 
-int runCli(const QStringList &arguments, QTextStream &out, QTextStream &err)
-{
-    Q_UNUSED(arguments);
-    Q_UNUSED(out);
-    err << "usage: rungstudio-cli check|convert|simulate FILE ...\n";
+namespace {
+
+struct Tr {
+    Q_DECLARE_TR_FUNCTIONS(rung::app::Cli)
+};
+
+QString usage() {
+    return Tr::tr("usage:\n"
+                  "  rungstudio-cli check FILE [--target vpc|vigor|cpm1|pl110] [--model M]\n"
+                  "  rungstudio-cli convert FILE [--target T] [--from il|ladder|project] --to "
+                  "il|ladder|project "
+                  "[-o OUT]\n"
+                  "  rungstudio-cli simulate FILE [--target T] --scans N [--period MS] [--set "
+                  "DEV=VALUE@SCAN]... "
+                  "--trace DEV[,DEV...]\n"
+                  "FILE is a listing (.il), a ladder text (.ladder) or a project (.rung).\n"
+                  "Exit status: 0 no error, 1 the program has errors, 2 usage or I/O error.");
+}
+
+int check(const QStringList &args, QTextStream &out, QTextStream &err) {
+    CommonOptions options;
+    QStringList rest;
+    QString error;
+    if (!parseCommonOptions(args, &options, &rest, &error) || !rest.isEmpty()) {
+        err << (error.isEmpty() ? Tr::tr("unexpected argument %1").arg(rest.value(0)) : error)
+            << '\n'
+            << usage() << '\n';
+        return 2;
+    }
+    Input input;
+    if (!loadInput(options, &input, &error)) {
+        err << error << '\n';
+        return 2;
+    }
+    std::vector<model::Diagnostic> all = input.problems;
+    model::CheckOptions checkOptions;
+    checkOptions.model = input.model;
+    if (!model::hasErrors(input.problems)) {
+        const auto found = input.kind == InputKind::Listing
+                               ? model::checkList(input.list, checkOptions)
+                               : model::checkLadder(input.ladder, checkOptions);
+        all.insert(all.end(), found.begin(), found.end());
+    }
+    model::sortDiagnostics(all);
+    for (const model::Diagnostic &d : all)
+        out << formatDiagnostic(input.file, d) << '\n';
+    return model::hasErrors(all) ? 1 : 0;
+}
+
+int convert(const QStringList &args, QTextStream &out, QTextStream &err) {
+    CommonOptions options;
+    QStringList rest;
+    QString error;
+    if (!parseCommonOptions(args, &options, &rest, &error)) {
+        err << error << '\n' << usage() << '\n';
+        return 2;
+    }
+    QString to;
+    QString output;
+    for (qsizetype i = 0; i < rest.size(); ++i) {
+        if (rest[i] == QLatin1String("--to") && i + 1 < rest.size())
+            to = rest[++i];
+        else if (rest[i] == QLatin1String("-o") && i + 1 < rest.size())
+            output = rest[++i];
+        else {
+            err << Tr::tr("unexpected argument %1").arg(rest[i]) << '\n' << usage() << '\n';
+            return 2;
+        }
+    }
+    if (to != QLatin1String("il") && to != QLatin1String("ladder") &&
+        to != QLatin1String("project")) {
+        err << Tr::tr("--to must be il, ladder or project") << '\n' << usage() << '\n';
+        return 2;
+    }
+    Input input;
+    if (!loadInput(options, &input, &error)) {
+        err << error << '\n';
+        return 2;
+    }
+    for (const model::Diagnostic &d : input.problems)
+        err << formatDiagnostic(input.file, d) << '\n';
+    if (model::hasErrors(input.problems)) {
+        err << Tr::tr("nothing written: the input has errors") << '\n';
+        return 1;
+    }
+    QByteArray bytes;
+    if (to == QLatin1String("il")) {
+        bytes = model::printInstructionList(input.list).toUtf8();
+    } else if (to == QLatin1String("ladder")) {
+        input.ladder.target = input.target;
+        bytes = model::printLadderText(input.ladder).toUtf8();
+    } else {
+        bytes = model::projectToJson(input.project);
+    }
+    if (output.isEmpty()) {
+        out << QString::fromUtf8(bytes);
+        return 0;
+    }
+    QSaveFile file(output);
+    if (!file.open(QIODevice::WriteOnly) || file.write(bytes) != bytes.size() || !file.commit()) {
+        err << Tr::tr("cannot write %1: %2").arg(output, file.errorString()) << '\n';
+        return 2;
+    }
+    return 0;
+}
+
+} // namespace
+
+int runCli(const QStringList &arguments, QTextStream &out, QTextStream &err) {
+    const QString command = arguments.value(1);
+    const QStringList args = arguments.mid(2);
+    if (command == QLatin1String("check"))
+        return check(args, out, err);
+    if (command == QLatin1String("convert"))
+        return convert(args, out, err);
+    if (command == QLatin1String("simulate"))
+        return runSimulateCommand(args, out, err);
+    if (command == QLatin1String("--help") || command == QLatin1String("-h") ||
+        command == QLatin1String("help")) {
+        out << usage() << '\n';
+        return 0;
+    }
+    if (command == QLatin1String("--version")) {
+        out << QStringLiteral("rungstudio-cli %1\n").arg(QStringLiteral(RUNG_VERSION));
+        return 0;
+    }
+    err << (command.isEmpty() ? Tr::tr("no command given")
+                              : Tr::tr("unknown command %1").arg(command))
+        << '\n'
+        << usage() << '\n';
     return 2;
 }
 
-int runCli(const QStringList &arguments)
-{
+int runCli(const QStringList &arguments) {
     QTextStream out(stdout);
     QTextStream err(stderr);
     return runCli(arguments, out, err);

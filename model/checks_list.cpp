@@ -1,0 +1,500 @@
+#include "checks.h"
+#include "checks_internal.h"
+#include "convert.h"
+#include "network.h"
+
+#include <QCoreApplication>
+
+#include <map>
+
+// The listing checks (docs/diagnostics.md). Each finding remembers the instruction it is
+// about, so the ladder checks can show it on the rung that instruction came from.
+
+namespace rung::model::detail {
+
+namespace {
+
+struct Tr {
+    Q_DECLARE_TR_FUNCTIONS(rung::model::Checks)
+};
+
+bool isCoil(Op op) {
+    switch (op) {
+    case Op::Out:
+    case Op::Keep:
+    case Op::PulseRise:
+    case Op::PulseFall:
+    case Op::Timer:
+    case Op::Counter:
+    case Op::UpDownCounter:
+        return true;
+    default:
+        return false;
+    }
+}
+
+class ListChecker {
+public:
+    ListChecker(const InstructionList &list, const CheckOptions &options)
+        : m_list(list)
+        , m_t(*list.target)
+        , m_model(options.model ? options.model : &list.target->defaultModel()) {}
+
+    std::vector<Finding> run() {
+        spans();
+        blocksAndStack();
+        endAndNesting();
+        operands();
+        duplicates();
+        length();
+        structure();
+        return std::move(m_found);
+    }
+
+private:
+    Finding &add(const char *code, Severity severity, int index, const QString &message) {
+        Finding f;
+        f.diagnostic.code = QString::fromLatin1(code);
+        f.diagnostic.severity = severity;
+        f.diagnostic.message = message;
+        f.instruction = index;
+        if (index >= 0 && index < static_cast<int>(m_list.instructions.size())) {
+            const Instruction &ins = m_list.instructions[static_cast<std::size_t>(index)];
+            f.diagnostic.location.line = ins.line;
+            f.diagnostic.location.column = ins.column;
+        }
+        m_found.push_back(std::move(f));
+        return m_found.back();
+    }
+
+    const Instruction &at(int i) const { return m_list.instructions[static_cast<std::size_t>(i)]; }
+    int size() const { return static_cast<int>(m_list.instructions.size()); }
+    QString name(int i) const { return at(i).spec ? at(i).spec->mnemonic : QString(); }
+
+    // Rung spans: a rung starts at a load that follows an output with no branch pending.
+    void spans() {
+        int start = 0;
+        int depth = 0;
+        bool afterOutput = false;
+        for (int i = 0; i < size(); ++i) {
+            const Op op = at(i).op();
+            if (op == Op::Load && afterOutput && depth == 0) {
+                m_spans.emplace_back(start, i);
+                start = i;
+            }
+            if (op == Op::Push)
+                ++depth;
+            if (op == Op::Pop && depth > 0)
+                --depth;
+            afterOutput = isOutputOp(op);
+            if (isUnconditional(op)) {
+                if (start < i)
+                    m_spans.emplace_back(start, i);
+                m_spans.emplace_back(i, i + 1);
+                start = i + 1;
+                afterOutput = false;
+                depth = 0;
+            }
+        }
+        if (start < size())
+            m_spans.emplace_back(start, size());
+    }
+
+    std::pair<int, int> spanOf(int index) const {
+        for (const auto &s : m_spans)
+            if (index >= s.first && index < s.second)
+                return s;
+        return {index, index + 1};
+    }
+
+    // The canonical rewrite of the rung holding `index`, as a fix.
+    void offerCanonical(Finding &f, int index) {
+        const auto [first, last] = spanOf(index);
+        InstructionList part;
+        part.target = m_list.target;
+        for (int i = first; i < last; ++i)
+            part.instructions.push_back(at(i));
+        const ToLadderResult ladder = listToLadder(part);
+        if (!ladder.ok())
+            return;
+        const ToListingResult back = ladderToList(ladder.ladder);
+        if (!back.ok())
+            return;
+        Fix fix;
+        fix.label = Tr::tr("Rewrite the rung in the canonical form");
+        fix.firstLine = at(first).line;
+        fix.lastLine = at(last - 1).line;
+        PrintOptions o;
+        o.comments = false;
+        fix.listing = printInstructionList(back.list, o);
+        if (fix.firstLine > 0)
+            f.diagnostic.fix = fix;
+    }
+
+    // Fuzzy forms (ladder-rules.md), block limits, and the branch stack.
+    void blocksAndStack() {
+        struct Block {
+            int first = 0;      // instruction index that opened it
+            bool single = true; // one contact only
+        };
+        std::vector<Block> blocks;
+        int mps = 0;
+        int run = 0;
+        Op runOp = Op::Nop;
+        bool afterOutput = false;
+        for (int i = 0; i < size(); ++i) {
+            const Op op = at(i).op();
+            if (op == Op::AndBlock || op == Op::OrBlock) {
+                run = op == runOp ? run + 1 : 1;
+                runOp = op;
+                if (m_t.limits.maxBlocksInRow > 0 && run == m_t.limits.maxBlocksInRow + 1)
+                    add("FZ003", Severity::Error, i,
+                        Tr::tr("More than %1 %2 in a row: the PLC rejects the program")
+                            .arg(m_t.limits.maxBlocksInRow)
+                            .arg(name(i)));
+            } else {
+                run = 0;
+                runOp = Op::Nop;
+            }
+            switch (op) {
+            case Op::Load:
+                if (afterOutput && mps == 0)
+                    blocks.clear();
+                blocks.push_back({i, true});
+                break;
+            case Op::And:
+            case Op::Or:
+            case Op::Invert:
+                if (!blocks.empty())
+                    blocks.back().single = false;
+                break;
+            case Op::AndBlock:
+            case Op::OrBlock: {
+                if (blocks.size() < 2)
+                    break; // the conversion reports the missing block
+                const Block second = blocks.back();
+                const Block first = blocks[blocks.size() - 2];
+                if (blocks.size() > 2) {
+                    Finding &f = add(
+                        op == Op::AndBlock ? "FZ001" : "FZ002", Severity::Warning, i,
+                        op == Op::AndBlock
+                            ? Tr::tr("Stacked ANB: combine each block with ANB as soon as it is "
+                                     "complete")
+                            : Tr::tr(
+                                  "Stacked ORB: %n blocks are open; an OR chain needs less stack",
+                                  nullptr, static_cast<int>(blocks.size())));
+                    offerCanonical(f, i);
+                } else if (op == Op::OrBlock && second.single) {
+                    Finding &f = add("FZ002", Severity::Warning, i,
+                                     Tr::tr("A single contact joined with %1 is simpler as %2")
+                                         .arg(name(i), m_t.findInstruction(Op::Or)
+                                                           ? m_t.findInstruction(Op::Or)->mnemonic
+                                                           : QString()));
+                    offerCanonical(f, i);
+                } else if (op == Op::OrBlock && first.single) {
+                    Finding &f = add(
+                        "FZ005", Severity::Warning, i,
+                        Tr::tr("A single device in parallel with a block belongs on the lower row: "
+                               "the block first, then an OR, drops the %1")
+                            .arg(name(i)));
+                    offerCanonical(f, i);
+                } else if (op == Op::AndBlock && first.single) {
+                    Finding &f = add(
+                        "FZ004", Severity::Warning, i,
+                        Tr::tr("The block after a single contact can move to the front and drop "
+                               "the %1")
+                            .arg(name(i)));
+                    offerCanonical(f, i);
+                }
+                blocks.pop_back();
+                blocks.back().single = false;
+                break;
+            }
+            case Op::Push:
+                ++mps;
+                if (mps == m_t.limits.stackDepth + 1)
+                    add("ST001", Severity::Error, i,
+                        Tr::tr("MPS nests more than %1 deep").arg(m_t.limits.stackDepth));
+                break;
+            case Op::ReadStack:
+            case Op::Pop:
+                if (mps == 0)
+                    add("ST002", Severity::Error, i,
+                        Tr::tr("%1 without a matching MPS").arg(name(i)));
+                else if (op == Op::Pop)
+                    --mps;
+                if (i + 1 < size() && isOutputOp(at(i + 1).op()) &&
+                    !isUnconditional(at(i + 1).op()) && mps >= 0) {
+                    Finding &f = add(
+                        "FZ006", Severity::Warning, i + 1,
+                        Tr::tr("An output with no contacts of its own belongs on top of the branch "
+                               "and needs no %1")
+                            .arg(name(i)));
+                    offerCanonical(f, i + 1);
+                }
+                break;
+            default:
+                break;
+            }
+            afterOutput = isOutputOp(op);
+            if (afterOutput && op != Op::Push) {
+                const bool rungEnds = i + 1 >= size() || at(i + 1).op() == Op::Load ||
+                                      isUnconditional(at(i + 1).op());
+                if (rungEnds && mps > 0) {
+                    add("ST003", Severity::Error, i,
+                        Tr::tr("%n MPS left without MPP at the end of the rung", nullptr, mps));
+                    mps = 0;
+                }
+            }
+        }
+    }
+
+    void endAndNesting() {
+        const bool needsEnd = m_t.findInstruction(Op::End) != nullptr;
+        int end = -1;
+        for (int i = 0; i < size(); ++i)
+            if (at(i).op() == Op::End) {
+                end = i;
+                break;
+            }
+        if (needsEnd && end < 0) {
+            Finding &f = add("EN001", Severity::Error, size() - 1, Tr::tr("END is missing"));
+            if (size() == 0)
+                f.diagnostic.location.line = 1;
+        }
+        if (end >= 0 && end + 1 < size())
+            add("EN002", Severity::Warning, end + 1,
+                Tr::tr("Instructions after END are never executed"));
+
+        int il = -1;
+        int jmp = -1;
+        int stl = -1;
+        std::map<qint64, int> jmpLabels;
+        std::map<qint64, int> jmeLabels;
+        const bool labels = m_t.limits.jumpLabels > 0;
+        for (int i = 0; i < (end >= 0 ? end : size()); ++i) {
+            const Op op = at(i).op();
+            switch (op) {
+            case Op::Interlock:
+                if (il >= 0)
+                    add("NE001", Severity::Error, i,
+                        Tr::tr("IL inside IL: close the first with ILC"));
+                il = i;
+                break;
+            case Op::InterlockClear:
+                if (il < 0)
+                    add("NE002", Severity::Error, i,
+                        Tr::tr("ILC without IL (\"IL (JMP) missing\")"));
+                else if (jmp > il)
+                    add("NE005", Severity::Error, i,
+                        Tr::tr("IL-JMP interlace: the jump opened inside the interlock is still "
+                               "open"));
+                il = -1;
+                break;
+            case Op::Jump:
+                if (labels) {
+                    const qint64 n = at(i).operands.empty() ? -1 : at(i).operands[0].constant.value;
+                    if (n >= m_t.limits.jumpLabels)
+                        add("NE006", Severity::Error, i,
+                            Tr::tr("Jump number %1 is beyond 00..%2")
+                                .arg(n)
+                                .arg(m_t.limits.jumpLabels - 1));
+                    jmpLabels.emplace(n, i);
+                    break;
+                }
+                if (jmp >= 0)
+                    add("NE003", Severity::Error, i,
+                        Tr::tr("JMP inside JMP: close the first jump"));
+                jmp = i;
+                break;
+            case Op::JumpEnd:
+                if (labels) {
+                    const qint64 n = at(i).operands.empty() ? -1 : at(i).operands[0].constant.value;
+                    if (jmeLabels.count(n)) {
+                        Finding &f =
+                            add("NE007", Severity::Error, i,
+                                Tr::tr("A second %1 %2: several JMP may share a number, only one "
+                                       "JME")
+                                    .arg(name(i))
+                                    .arg(n));
+                        f.diagnostic.related.push_back(location(jmeLabels[n]));
+                    }
+                    if (!jmpLabels.count(n))
+                        add("NE004", Severity::Error, i,
+                            Tr::tr("%1 %2 without a JMP before it").arg(name(i)).arg(n));
+                    jmeLabels.emplace(n, i);
+                    break;
+                }
+                if (jmp < 0)
+                    add("NE004", Severity::Error, i,
+                        Tr::tr("%1 without JMP (\"IL (JMP) missing\")").arg(name(i)));
+                else if (il > jmp)
+                    add("NE005", Severity::Error, i,
+                        Tr::tr("IL-JMP interlace: the interlock opened inside the jump is still "
+                               "open"));
+                jmp = -1;
+                break;
+            case Op::StepLadder:
+                stl = i;
+                break;
+            case Op::Return:
+                stl = -1;
+                break;
+            default:
+                break;
+            }
+        }
+        if (il >= 0)
+            add("NE002", Severity::Error, il, Tr::tr("IL without ILC"));
+        if (jmp >= 0)
+            add("NE004", Severity::Error, jmp,
+                Tr::tr("JMP without its end (%1)")
+                    .arg(m_t.findInstruction(Op::JumpEnd)
+                             ? m_t.findInstruction(Op::JumpEnd)->mnemonic
+                             : QString()));
+        for (const auto &[n, i] : jmpLabels)
+            if (!jmeLabels.count(n))
+                add("NE004", Severity::Error, i, Tr::tr("JMP %1 has no JME %1").arg(n));
+        if (stl >= 0)
+            add("SL001", Severity::Error, stl, Tr::tr("The step ladder is not closed with RET"));
+    }
+
+    Location location(int i) const {
+        Location l;
+        l.line = at(i).line;
+        l.column = at(i).column;
+        return l;
+    }
+
+    void operands() {
+        std::map<int, std::pair<int, int>> bankUse; // number -> (timer use, counter use)
+        for (int i = 0; i < size(); ++i) {
+            const Instruction &ins = at(i);
+            if (!ins.spec)
+                continue;
+            for (std::size_t k = 0; k < ins.operands.size(); ++k) {
+                const Operand &o = ins.operands[k];
+                const OperandKind kind = k < ins.spec->operands.size() ? ins.spec->operands[k].kind
+                                                                       : OperandKind::BitSource;
+                if (o.kind == Operand::Kind::Constant && kind == OperandKind::SetValue) {
+                    const qint64 v = o.constant.value;
+                    const bool bcd = o.constant.style == Constant::Style::Bcd;
+                    if ((bcd && (v < 0 || v > 9999)) || (!bcd && (v < 0 || v > 32767)))
+                        add("OP004", Severity::Error, i,
+                            Tr::tr("Set value %1 is out of range").arg(v));
+                }
+                if (o.kind != Operand::Kind::Device)
+                    continue;
+                const Area &area = m_t.area(o.address.area);
+                const QString text = formatAddress(m_t, o.address);
+                auto check = parseAddress(m_t, text, m_model);
+                if (auto *e = std::get_if<AddressError>(&check))
+                    add("OP001", Severity::Error, i, e->message);
+                const bool destination =
+                    kind == OperandKind::BitDest || kind == OperandKind::WordDest;
+                if (destination && !area.writable && ins.op() != Op::Reset)
+                    add("OP002", Severity::Error, i,
+                        Tr::tr("%1 cannot be written: %2 are read-only")
+                            .arg(text, QCoreApplication::translate("rung::model::Target",
+                                                                   area.description)));
+                if (area.bank >= 0 &&
+                    (area.kind == AreaKind::Timer || area.kind == AreaKind::Counter)) {
+                    auto &use = bankUse[o.address.index];
+                    (area.kind == AreaKind::Timer ? use.first : use.second) = i + 1;
+                }
+            }
+        }
+        for (const auto &[n, use] : bankUse)
+            if (use.first && use.second) {
+                Finding &f =
+                    add("OP003", Severity::Error, use.second - 1,
+                        Tr::tr("Number %1 is used as a timer and as a counter; they share one bank")
+                            .arg(n));
+                f.diagnostic.related.push_back(location(use.first - 1));
+            }
+    }
+
+    void duplicates() {
+        std::map<Address, int> driven;
+        for (int i = 0; i < size(); ++i) {
+            const Instruction &ins = at(i);
+            if (!isCoil(ins.op()) || ins.operands.empty() ||
+                ins.operands[0].kind != Operand::Kind::Device)
+                continue;
+            const Address a = ins.operands[0].address;
+            const auto it = driven.find(a);
+            if (it == driven.end()) {
+                driven.emplace(a, i);
+                continue;
+            }
+            const bool error = m_t.limits.duplicateCoilIsError;
+            Finding &f = add(
+                "DC001", error ? Severity::Error : Severity::Warning, i,
+                error ? Tr::tr("%1 is driven twice (\"Oper duplication\"); the first is on line %2")
+                            .arg(formatAddress(m_t, a))
+                            .arg(at(it->second).line)
+                      : Tr::tr("%1 is driven twice; the later one wins (first on line %2)")
+                            .arg(formatAddress(m_t, a))
+                            .arg(at(it->second).line));
+            f.diagnostic.related.push_back(location(it->second));
+            f.related.push_back(it->second);
+        }
+    }
+
+    void length() {
+        int steps = 0;
+        for (const Instruction &ins : m_list.instructions)
+            steps += instructionSteps(m_t, ins);
+        const int limit =
+            m_model->programSteps > 0 ? m_model->programSteps : m_t.limits.programSteps;
+        if (limit > 0 && steps > limit)
+            add("LN001", Severity::Error, size() - 1,
+                Tr::tr("The program needs %1 steps; %2 holds %3")
+                    .arg(steps)
+                    .arg(m_model->name)
+                    .arg(limit));
+    }
+
+    // Outputs with no condition and blocks left open, as the conversion finds them.
+    void structure() {
+        const ToLadderResult ladder = listToLadder(m_list);
+        for (const Diagnostic &d : ladder.problems) {
+            Finding f;
+            f.diagnostic = d;
+            f.diagnostic.code = d.code == QLatin1String("CV006") ? QStringLiteral("OC001")
+                                                                 : QStringLiteral("BL001");
+            for (int i = 0; i < size(); ++i)
+                if (at(i).line == d.location.line && at(i).column == d.location.column)
+                    f.instruction = i;
+            m_found.push_back(std::move(f));
+        }
+    }
+
+    const InstructionList &m_list;
+    const Target &m_t;
+    const ModelVariant *m_model;
+    std::vector<std::pair<int, int>> m_spans;
+    std::vector<Finding> m_found;
+};
+
+} // namespace
+
+std::vector<Finding> checkListFindings(const InstructionList &list, const CheckOptions &options) {
+    if (!list.target)
+        return {};
+    return ListChecker(list, options).run();
+}
+
+} // namespace rung::model::detail
+
+namespace rung::model {
+
+std::vector<Diagnostic> checkList(const InstructionList &list, const CheckOptions &options) {
+    std::vector<Diagnostic> out;
+    for (detail::Finding &f : detail::checkListFindings(list, options))
+        out.push_back(std::move(f.diagnostic));
+    sortDiagnostics(out);
+    return out;
+}
+
+} // namespace rung::model

@@ -1,0 +1,261 @@
+#include "model/checks.h"
+#include "model/convert.h"
+#include "model/ladder_text.h"
+
+#include <gtest/gtest.h>
+
+using namespace rung::model;
+
+namespace {
+
+struct Case {
+    const char *code;
+    Family family;
+    const char *model; // nullptr: the default model
+    const char *triggers;
+    const char *clean;
+};
+
+QString text(const char *semicolonSeparated) {
+    return QString::fromLatin1(semicolonSeparated).replace(QLatin1Char(';'), QLatin1Char('\n'));
+}
+
+std::vector<Diagnostic> check(Family family, const char *model, const QString &listing) {
+    const Target &t = Target::get(family);
+    const ModelVariant *variant = model ? t.model(QString::fromLatin1(model)) : nullptr;
+    ParseResult parsed = parseInstructionList(t, listing);
+    EXPECT_TRUE(parsed.ok()) << (parsed.errors.empty() ? ""
+                                                       : parsed.errors[0].message.toStdString());
+    CheckOptions o;
+    o.model = variant;
+    return checkList(parsed.list, o);
+}
+
+const Diagnostic *find(const std::vector<Diagnostic> &ds, const char *code) {
+    for (const Diagnostic &d : ds)
+        if (d.code == QLatin1String(code))
+            return &d;
+    return nullptr;
+}
+
+QString all(const std::vector<Diagnostic> &ds) {
+    QString s;
+    for (const Diagnostic &d : ds)
+        s += QStringLiteral("%1 %2:%3 %4\n")
+                 .arg(d.code)
+                 .arg(d.location.line)
+                 .arg(d.location.column)
+                 .arg(d.message);
+    return s;
+}
+
+QString repeat(const char *lines, int times) {
+    QString s;
+    for (int i = 0; i < times; ++i)
+        s += text(lines) + QLatin1Char('\n');
+    return s;
+}
+
+const Case kCases[] = {
+    // Fuzzy syntax (ladder-rules.md, seed 004 1.7 and 1.8).
+    {"FZ001", Family::Vigor, nullptr, "LD X0;OR X1;LD X2;OR X3;LD X4;OR X5;ANB;ANB;OUT Y0;END",
+     "LD X0;OR X1;LD X2;OR X3;ANB;LD X4;OR X5;ANB;OUT Y0;END"},
+    {"FZ002", Family::Vigor, nullptr, "LD X0;LD X1;LD X2;LD X3;ORB;ORB;ORB;OUT Y0;END",
+     "LD X0;OR X1;OR X2;OR X3;OUT Y0;END"},
+    {"FZ003", Family::Vigor, nullptr,
+     "LD X0;LD X1;LD X2;LD X3;LD X4;LD X5;LD X6;LD X7;LD X10;LD "
+     "X11;ANB;ANB;ANB;ANB;ANB;ANB;ANB;ANB;ANB;OUT Y0;END",
+     "LD X0;LD X1;LD X2;LD X3;LD X4;LD X5;LD X6;LD X7;LD X10;ANB;ANB;ANB;ANB;ANB;ANB;ANB;ANB;OUT "
+     "Y0;END"},
+    {"FZ004", Family::Vigor, nullptr, "LD X0;LD X1;OR X2;ANB;OUT Y0;END",
+     "LD X1;OR X2;AND X0;OUT Y0;END"},
+    {"FZ005", Family::Vigor, nullptr, "LD X0;LD X1;AND X2;ORB;OUT Y0;END",
+     "LD X1;AND X2;OR X0;OUT Y0;END"},
+    {"FZ006", Family::Vigor, nullptr, "LD X0;MPS;AND X1;OUT Y0;MPP;OUT Y1;END",
+     "LD X0;OUT Y1;AND X1;OUT Y0;END"},
+    // Branch stack.
+    {"ST001", Family::Vigor, nullptr,
+     "LD X0;MPS;AND X1;MPS;AND X2;MPS;AND X3;MPS;AND X4;MPS;AND X5;MPS;AND X6;MPS;AND X7;MPS;AND "
+     "X10;MPS;AND "
+     "X11;OUT Y0;MPP;OUT Y1;MPP;OUT Y2;MPP;OUT Y3;MPP;OUT Y4;MPP;OUT Y5;MPP;OUT Y6;MPP;OUT "
+     "Y7;MPP;OUT Y10;END",
+     "LD X0;MPS;AND X1;MPS;AND X2;MPS;AND X3;MPS;AND X4;MPS;AND X5;MPS;AND X6;MPS;AND X7;MPS;AND "
+     "X10;OUT Y0;MPP;OUT Y1;MPP;OUT Y2;MPP;OUT Y3;MPP;OUT Y4;MPP;OUT Y5;MPP;OUT Y6;MPP;OUT Y7;END"},
+    {"ST002", Family::Vigor, nullptr, "LD X0;MPP;OUT Y0;END",
+     "LD X0;MPS;AND X1;OUT Y0;MPP;AND X2;OUT Y1;END"},
+    {"ST003", Family::Vigor, nullptr, "LD X0;MPS;AND X1;OUT Y0;LD X2;OUT Y1;END",
+     "LD X0;MPS;AND X1;OUT Y0;MPP;AND X3;OUT Y2;LD X2;OUT Y1;END"},
+    // END and nesting (VPC "END' missing!", "IL (JMP) missing", "IL-JMP interlace").
+    {"EN001", Family::Vpc, nullptr, "LD i00;OUT o00", "LD i00;OUT o00;END"},
+    {"EN002", Family::Vigor, nullptr, "LD X0;OUT Y0;END;LD X1;OUT Y1",
+     "LD X0;OUT Y0;LD X1;OUT Y1;END"},
+    {"NE001", Family::Vpc, nullptr, "LD i00;IL;LD i01;IL;LD i02;OUT o00;ILC;END",
+     "LD i00;IL;LD i02;OUT o00;ILC;END"},
+    {"NE002", Family::Vpc, nullptr, "LD i00;OUT o00;ILC;END", "LD i00;IL;LD i01;OUT o00;ILC;END"},
+    {"NE003", Family::Vpc, nullptr, "LD i00;JMP;LD i01;JMP;LD i02;OUT o00;JPE;JPE;END",
+     "LD i00;JMP;LD i02;OUT o00;JPE;END"},
+    {"NE004", Family::Vpc, nullptr, "LD i00;OUT o00;JPE;END", "LD i00;JMP;LD i01;OUT o00;JPE;END"},
+    {"NE005", Family::Vpc, nullptr, "LD i00;IL;LD i01;JMP;LD i02;OUT o00;ILC;JPE;END",
+     "LD i00;IL;LD i01;JMP;LD i02;OUT o00;JPE;ILC;END"},
+    {"NE006", Family::Cpm1, nullptr, "LD 000.00;JMP(04) 50;LD 000.01;OUT 010.00;JME(05) 50;END(01)",
+     "LD 000.00;JMP(04) 49;LD 000.01;OUT 010.00;JME(05) 49;END(01)"},
+    {"NE007", Family::Cpm1, nullptr,
+     "LD 000.00;JMP(04) 01;LD 000.01;OUT 010.00;JME(05) 01;LD 000.02;OUT 010.01;JME(05) 01;END(01)",
+     "LD 000.00;JMP(04) 01;LD 000.02;JMP(04) 01;LD 000.01;OUT 010.00;JME(05) 01;END(01)"},
+    {"SL001", Family::Vigor, nullptr, "LD M9002;SET S0;STL S0;LD X0;OUT Y0;END",
+     "LD M9002;SET S0;STL S0;LD X0;OUT Y0;RET;END"},
+    // Operands per target and model.
+    {"OP001", Family::Vpc, "VPC2416", "LD i00;OUT o20;END", "LD i00;OUT o15;END"},
+    {"OP002", Family::Vigor, nullptr, "LD X0;OUT X1;END", "LD X0;OUT Y1;END"},
+    {"OP003", Family::Vpc, nullptr, "LD i00;TIM05;LD i01;LD i02;CNT05;END",
+     "LD i00;TIM05;LD i01;LD i02;CNT06;END"},
+    {"OP004", Family::Vigor, nullptr, "LD X0;TMR T0 K40000;END", "LD X0;TMR T0 K100;END"},
+    {"DC001", Family::Vpc, nullptr, "LD i00;OUT o00;LD i01;OUT o00;END",
+     "LD i00;OUT o00;LD i01;OUT o01;END"},
+    {"OC001", Family::Vigor, nullptr, "OUT Y0;END", "LD M9000;OUT Y0;END"},
+    {"BL001", Family::Vigor, nullptr, "LD X0;LD X1;OUT Y0;END", "LD X0;AND X1;OUT Y0;END"},
+};
+
+} // namespace
+
+class EveryCode : public ::testing::TestWithParam<Case> {};
+
+TEST_P(EveryCode, TriggersOnItsProgramAndNotOnTheCleanOne) {
+    const Case &c = GetParam();
+    const auto bad = check(c.family, c.model, text(c.triggers));
+    const Diagnostic *d = find(bad, c.code);
+    ASSERT_NE(d, nullptr) << all(bad).toStdString();
+    EXPECT_FALSE(d->message.isEmpty());
+    EXPECT_GT(d->location.line, 0) << "a listing finding has a line";
+    const auto good = check(c.family, c.model, text(c.clean));
+    EXPECT_EQ(find(good, c.code), nullptr) << all(good).toStdString();
+}
+
+INSTANTIATE_TEST_SUITE_P(Checks, EveryCode, ::testing::ValuesIn(kCases),
+                         [](const auto &info) { return std::string(info.param.code); });
+
+TEST(Checks, DuplicateCoilIsAWarningOnVigorAndAnErrorOnVpcAndCpm1) {
+    const auto vigor = check(Family::Vigor, nullptr, text("LD X0;OUT Y0;LD X1;OUT Y0;END"));
+    ASSERT_NE(find(vigor, "DC001"), nullptr);
+    EXPECT_EQ(find(vigor, "DC001")->severity, Severity::Warning);
+    const auto cpm1 =
+        check(Family::Cpm1, nullptr, text("LD 000.00;OUT 010.00;LD 000.01;OUT 010.00;END(01)"));
+    ASSERT_NE(find(cpm1, "DC001"), nullptr);
+    EXPECT_EQ(find(cpm1, "DC001")->severity, Severity::Error);
+    // Both places: the finding is on the second coil and names the first.
+    EXPECT_EQ(find(cpm1, "DC001")->location.line, 4);
+    ASSERT_EQ(find(cpm1, "DC001")->related.size(), 1u);
+    EXPECT_EQ(find(cpm1, "DC001")->related[0].line, 2);
+}
+
+TEST(Checks, ProgramTooLongForTheModel) {
+    const QString longProgram = repeat("LD i00;OUT r00", 1025) + QStringLiteral("END\n");
+    EXPECT_NE(find(check(Family::Vpc, nullptr, longProgram), "LN001"), nullptr);
+    EXPECT_EQ(
+        find(check(Family::Vpc, nullptr, repeat("LD i00;OUT r00", 1000) + QStringLiteral("END\n")),
+             "LN001"),
+        nullptr);
+}
+
+TEST(Checks, FuzzyFormsOfferTheCanonicalRewrite) {
+    const auto ds =
+        check(Family::Vigor, nullptr, text("LD X0;LD X1;LD X2;LD X3;ORB;ORB;ORB;OUT Y0;END"));
+    const Diagnostic *d = find(ds, "FZ002");
+    ASSERT_NE(d, nullptr);
+    ASSERT_TRUE(d->fix.has_value());
+    EXPECT_EQ(d->fix->firstLine, 1);
+    EXPECT_EQ(d->fix->lastLine, 8);
+    EXPECT_EQ(d->fix->listing, text("LD X0;OR X1;OR X2;OR X3;OUT Y0") + QLatin1Char('\n'));
+}
+
+TEST(Checks, OperandRangeNamesTheModel) {
+    const auto ds = check(Family::Vpc, "VPC2416", text("LD i00;OUT o20;END"));
+    ASSERT_NE(find(ds, "OP001"), nullptr);
+    EXPECT_EQ(find(ds, "OP001")->message,
+              QStringLiteral("o20 is beyond VPC2416's outputs o00..o15"));
+}
+
+// ---- ladder checks --------------------------------------------------------------------------
+
+namespace {
+
+// A bridge: X2 joins the two branches between contacts, so X3 -> X2 -> X1 would carry current
+// right to left through X2's branch point (seed 004 1.8). No listing can express it.
+const char *kBridge = "LADDER vigor WIDTH 8\n"
+                      "RUNG 1 ROWS 3 COLUMNS 3\n"
+                      "|-[ X0 ]-+----------[ X1 ]-+(OUT Y0)\n"
+                      "|        |                 |\n"
+                      "|        +-[ X2 ]-+        +\n"
+                      "|                 |        |\n"
+                      "|-[ X3 ]----------+-[ X4 ]-+\n";
+
+const char *kCorrected = "LADDER vigor WIDTH 8\n"
+                         "RUNG 1 ROWS 3 COLUMNS 3\n"
+                         "|-[ X0 ]-+-[ X1 ]----------+(OUT Y0)\n"
+                         "|        |                 |\n"
+                         "|        +-[ X2 ]---[ X4 ]-+\n"
+                         "|                          |\n"
+                         "|-[ X3 ]---[ X4 ]----------+\n"
+                         "\n";
+
+LadderProgram ladderOf(const char *source) {
+    LadderTextResult r = parseLadderText(Target::get(Family::Vigor), QString::fromLatin1(source));
+    EXPECT_TRUE(r.ok()) << (r.errors.empty() ? "" : r.errors[0].message.toStdString());
+    return r.ladder;
+}
+
+} // namespace
+
+TEST(LadderChecks, ReverseCurrentMarksTheCellsAndOffersTheStandardCorrection) {
+    const LadderProgram ladder = ladderOf(kBridge);
+    const auto ds = checkLadder(ladder);
+    const Diagnostic *d = find(ds, "RC001");
+    ASSERT_NE(d, nullptr) << all(ds).toStdString();
+    EXPECT_EQ(d->location.rung, 0);
+    EXPECT_EQ(d->related.size(), 5u); // X0, X1, X2, X3, X4
+    ASSERT_TRUE(d->fix.has_value());
+    LadderProgram fixed;
+    fixed.target = ladder.target;
+    fixed.rungs = d->fix->rungs;
+    EXPECT_EQ(printLadderText(fixed), QString::fromLatin1(kCorrected));
+    EXPECT_EQ(find(checkLadder(fixed), "RC001"), nullptr);
+    // The listing cannot express the bridge: conversion refuses it with the same finding.
+    EXPECT_FALSE(ladderToList(ladder).ok());
+    EXPECT_TRUE(ladderToList(fixed).ok());
+}
+
+TEST(LadderChecks, OpenBranchAndUnconnectedContact) {
+    const LadderProgram open = ladderOf("LADDER vigor WIDTH 8\n"
+                                        "RUNG 1 ROWS 2 COLUMNS 2\n"
+                                        "|-[ X0 ]---[ X1 ]-+(OUT Y0)\n"
+                                        "|\n"
+                                        "|         -[ X2 ]-+(OUT Y1)\n");
+    const auto ds = checkLadder(open);
+    ASSERT_NE(find(ds, "LD001"), nullptr) << all(ds).toStdString();
+    EXPECT_EQ(find(ds, "LD001")->location.row, 1);
+    ASSERT_NE(find(ds, "LD002"), nullptr);
+    EXPECT_EQ(find(ds, "LD002")->location.row, 1);
+    EXPECT_EQ(find(ds, "LD002")->location.cell, 1);
+    const auto clean = checkLadder(ladderOf("LADDER vigor WIDTH 8\n"
+                                            "RUNG 1 ROWS 1 COLUMNS 2\n"
+                                            "|-[ X0 ]---[ X1 ]-+(OUT Y0)\n"));
+    EXPECT_EQ(find(clean, "LD001"), nullptr);
+    EXPECT_EQ(find(clean, "LD002"), nullptr);
+}
+
+TEST(LadderChecks, OutputWiredStraightToTheRail) {
+    const auto ds = checkLadder(ladderOf("LADDER vigor WIDTH 8\n"
+                                         "RUNG 1 ROWS 1 COLUMNS 1\n"
+                                         "|---------(OUT Y0)\n"));
+    ASSERT_NE(find(ds, "OC001"), nullptr) << all(ds).toStdString();
+}
+
+TEST(LadderChecks, ListingFindingsLandOnTheirRung) {
+    const Target &t = Target::get(Family::Vigor);
+    ToLadderResult lad =
+        listToLadder(parseInstructionList(t, text("LD X0;OUT Y0;LD X1;OUT X2;END")).list);
+    ASSERT_TRUE(lad.ok());
+    const auto ds = checkLadder(lad.ladder);
+    ASSERT_NE(find(ds, "OP002"), nullptr) << all(ds).toStdString();
+    EXPECT_EQ(find(ds, "OP002")->location.rung, 1);
+}
