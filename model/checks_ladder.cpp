@@ -41,7 +41,11 @@ std::vector<Diagnostic> checkLadder(const LadderProgram &ladder, const CheckOpti
         std::set<int> used;
         for (const auto &n : networks)
             used.insert(n.cells.begin(), n.cells.end());
-        for (const ReverseCurrentFinding &f : findReverseCurrent(rung)) {
+        const bool bridged = std::any_of(networks.begin(), networks.end(), [](const auto &n) {
+            return n.connected && !n.seriesParallel;
+        });
+        for (const ReverseCurrentFinding &f :
+             bridged ? findReverseCurrent(rung) : std::vector<ReverseCurrentFinding>{}) {
             Diagnostic d;
             d.code = QStringLiteral("RC001");
             d.severity = Severity::Error;

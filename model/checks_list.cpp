@@ -5,6 +5,7 @@
 
 #include <QCoreApplication>
 
+#include <algorithm>
 #include <map>
 
 // The listing checks (docs/diagnostics.md). Each finding remembers the instruction it is
@@ -41,6 +42,7 @@ public:
         , m_model(options.model ? options.model : &list.target->defaultModel()) {}
 
     std::vector<Finding> run() {
+        m_ladder = listToLadder(m_list);
         spans();
         blocksAndStack();
         endAndNesting();
@@ -101,34 +103,49 @@ private:
     }
 
     std::pair<int, int> spanOf(int index) const {
-        for (const auto &s : m_spans)
-            if (index >= s.first && index < s.second)
-                return s;
+        // Spans are in order and do not overlap.
+        auto it = std::upper_bound(m_spans.begin(), m_spans.end(), index,
+                                   [](int i, const std::pair<int, int> &s) { return i < s.first; });
+        if (it != m_spans.begin() && index < std::prev(it)->second)
+            return *std::prev(it);
         return {index, index + 1};
     }
 
     // The canonical rewrite of the rung holding `index`, as a fix.
+    // The canonical rewrite of the rung holding `index`, as a fix. The whole listing is
+    // converted once; each rung's rewrite is cut from that.
     void offerCanonical(Finding &f, int index) {
         const auto [first, last] = spanOf(index);
+        const int line = at(first).line;
+        if (line <= 0)
+            return;
+        if (!m_canonical) {
+            m_canonical = true;
+            if (!m_ladder.ok())
+                return;
+            m_back = ladderToList(m_ladder.ladder);
+        }
+        if (!m_back.ok())
+            return;
+        const auto &lines = m_ladder.rungLine;
+        const auto it = std::lower_bound(lines.begin(), lines.end(), line);
+        if (it == lines.end() || *it != line)
+            return;
+        const std::size_t r = static_cast<std::size_t>(it - lines.begin());
+        if (r + 1 >= m_back.rungFirst.size())
+            return;
         InstructionList part;
         part.target = m_list.target;
-        for (int i = first; i < last; ++i)
-            part.instructions.push_back(at(i));
-        const ToLadderResult ladder = listToLadder(part);
-        if (!ladder.ok())
-            return;
-        const ToListingResult back = ladderToList(ladder.ladder);
-        if (!back.ok())
-            return;
+        part.instructions.assign(m_back.list.instructions.begin() + m_back.rungFirst[r],
+                                 m_back.list.instructions.begin() + m_back.rungFirst[r + 1]);
         Fix fix;
         fix.label = Tr::tr("Rewrite the rung in the canonical form");
-        fix.firstLine = at(first).line;
+        fix.firstLine = line;
         fix.lastLine = at(last - 1).line;
         PrintOptions o;
         o.comments = false;
-        fix.listing = printInstructionList(back.list, o);
-        if (fix.firstLine > 0)
-            f.diagnostic.fix = fix;
+        fix.listing = printInstructionList(part, o);
+        f.diagnostic.fix = fix;
     }
 
     // Fuzzy forms (ladder-rules.md), block limits, and the branch stack.
@@ -386,17 +403,21 @@ private:
                 if (o.kind != Operand::Kind::Device)
                     continue;
                 const Area &area = m_t.area(o.address.area);
-                const QString text = formatAddress(m_t, o.address);
-                auto check = parseAddress(m_t, text, m_model);
-                if (auto *e = std::get_if<AddressError>(&check))
-                    add("OP001", Severity::Error, i, e->message);
+                const auto range = m_t.range(o.address.area, m_model);
+                if (!range || o.address.index < range->first || o.address.index > range->second) {
+                    // The address rules word the message ("o20 is beyond VPC2416's outputs").
+                    auto check = parseAddress(m_t, formatAddress(m_t, o.address), m_model);
+                    if (auto *e = std::get_if<AddressError>(&check))
+                        add("OP001", Severity::Error, i, e->message);
+                }
                 const bool destination =
                     kind == OperandKind::BitDest || kind == OperandKind::WordDest;
                 if (destination && !area.writable && ins.op() != Op::Reset)
                     add("OP002", Severity::Error, i,
                         Tr::tr("%1 cannot be written: %2 are read-only")
-                            .arg(text, QCoreApplication::translate("rung::model::Target",
-                                                                   area.description)));
+                            .arg(formatAddress(m_t, o.address),
+                                 QCoreApplication::translate("rung::model::Target",
+                                                             area.description)));
                 if (area.bank >= 0 &&
                     (area.kind == AreaKind::Timer || area.kind == AreaKind::Counter)) {
                     auto &use = bankUse[o.address.index];
@@ -457,8 +478,7 @@ private:
 
     // Outputs with no condition and blocks left open, as the conversion finds them.
     void structure() {
-        const ToLadderResult ladder = listToLadder(m_list);
-        for (const Diagnostic &d : ladder.problems) {
+        for (const Diagnostic &d : m_ladder.problems) {
             Finding f;
             f.diagnostic = d;
             f.diagnostic.code = d.code == QLatin1String("CV006") ? QStringLiteral("OC001")
@@ -474,6 +494,9 @@ private:
     const Target &m_t;
     const ModelVariant *m_model;
     std::vector<std::pair<int, int>> m_spans;
+    ToLadderResult m_ladder;
+    ToListingResult m_back;
+    bool m_canonical = false;
     std::vector<Finding> m_found;
 };
 

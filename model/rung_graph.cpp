@@ -38,6 +38,7 @@ struct Edge {
 
 struct Graph {
     int rail = 0;
+    int nodes = 0;
     std::vector<Edge> edges;     // one per contact
     std::vector<int> outputNode; // per row: the node at the output column
 };
@@ -57,6 +58,7 @@ Graph buildGraph(const Rung &rung) {
                 uf.join(node(r, c), node(r, c + 1));
     }
     Graph g;
+    g.nodes = rung.rows * width;
     g.rail = uf.find(node(0, 0));
     for (int r = 0; r < rung.rows; ++r) {
         for (int c = 0; c < rung.columns; ++c) {
@@ -210,34 +212,32 @@ InputNetwork analyze(const Graph &g, int row) {
         return net;
     }
     // Edges on some rail -> sink path: reachable forward from the rail and backward from the sink.
-    std::vector<int> forward{g.rail};
+    std::vector<char> forward(static_cast<std::size_t>(g.nodes), 0);
+    std::vector<char> backward(static_cast<std::size_t>(g.nodes), 0);
+    forward[static_cast<std::size_t>(g.rail)] = 1;
+    backward[static_cast<std::size_t>(sink)] = 1;
     for (bool grew = true; grew;) {
         grew = false;
         for (const Edge &e : g.edges)
-            if (e.from != e.to && std::count(forward.begin(), forward.end(), e.from) &&
-                !std::count(forward.begin(), forward.end(), e.to)) {
-                forward.push_back(e.to);
-                grew = true;
-            }
+            if (e.from != e.to && forward[static_cast<std::size_t>(e.from)] &&
+                !forward[static_cast<std::size_t>(e.to)])
+                grew = forward[static_cast<std::size_t>(e.to)] = 1;
     }
-    std::vector<int> backward{sink};
     for (bool grew = true; grew;) {
         grew = false;
-        for (const Edge &e : g.edges)
-            if (e.from != e.to && std::count(backward.begin(), backward.end(), e.to) &&
-                !std::count(backward.begin(), backward.end(), e.from)) {
-                backward.push_back(e.from);
-                grew = true;
-            }
+        for (auto it = g.edges.rbegin(); it != g.edges.rend(); ++it)
+            if (it->from != it->to && backward[static_cast<std::size_t>(it->to)] &&
+                !backward[static_cast<std::size_t>(it->from)])
+                grew = backward[static_cast<std::size_t>(it->from)] = 1;
     }
     std::vector<Edge> relevant;
     for (const Edge &e : g.edges)
-        if (e.from != e.to && std::count(forward.begin(), forward.end(), e.from) &&
-            std::count(backward.begin(), backward.end(), e.to)) {
+        if (e.from != e.to && forward[static_cast<std::size_t>(e.from)] &&
+            backward[static_cast<std::size_t>(e.to)]) {
             relevant.push_back(e);
             net.cells.push_back(e.expr.cell);
         }
-    net.connected = std::count(forward.begin(), forward.end(), sink) > 0;
+    net.connected = forward[static_cast<std::size_t>(sink)] != 0;
     if (!net.connected)
         return net;
     std::vector<const Edge *> pointers;

@@ -15,6 +15,10 @@ struct Registry {
     Target vigor = detail::makeVigorTarget();
     Target cpm1 = detail::makeCpm1Target();
     Target pl110 = detail::makePl110Target();
+    Registry() {
+        for (Target *t : {&vpc, &vigor, &cpm1, &pl110})
+            t->buildIndex();
+    }
 };
 
 const Registry &registry() {
@@ -84,9 +88,32 @@ const ModelVariant &Target::defaultModel() const {
     return models.back();
 }
 
+void Target::buildIndex() {
+    m_spellings.clear();
+    for (int i = 0; i < static_cast<int>(instructions.size()); ++i) {
+        const InstructionSpec &spec = instructions[static_cast<std::size_t>(i)];
+        m_spellings.insert(normalizeSpaces(spec.mnemonic), i);
+        for (const QString &alias : spec.aliases)
+            m_spellings.insert(normalizeSpaces(alias), i);
+    }
+}
+
 const InstructionSpec *Target::findInstruction(const QString &mnemonic) const {
     int code = -1;
     const QString wanted = normalizeSpaces(stripFunctionCode(mnemonic.trimmed(), &code));
+    if (!m_spellings.isEmpty()) {
+        // The first entry of the table that matches, as the linear search below finds it.
+        int best = -1;
+        for (auto it = m_spellings.constFind(wanted);
+             it != m_spellings.cend() && it.key() == wanted; ++it) {
+            const InstructionSpec &spec = instructions[static_cast<std::size_t>(it.value())];
+            if (code >= 0 && spec.functionCode != code)
+                continue;
+            if (best < 0 || it.value() < best)
+                best = it.value();
+        }
+        return best >= 0 ? &instructions[static_cast<std::size_t>(best)] : nullptr;
+    }
     for (const InstructionSpec &spec : instructions) {
         bool match = normalizeSpaces(spec.mnemonic) == wanted;
         for (const QString &alias : spec.aliases)

@@ -4,6 +4,7 @@
 // table and the limits. Every room reads these tables; no address or mnemonic rule is
 // written anywhere else.
 
+#include <QMultiHash>
 #include <QString>
 #include <QStringList>
 
@@ -34,6 +35,7 @@ enum class AreaKind : std::uint8_t {
 struct Area {
     QString key;    // stable name, unique per target, used by models and files: "X", "IN"
     QString prefix; // as written in listings: "X", "i", "HR", "" for CPM1 IR/SR
+    QStringList prefixAliases; // other accepted spellings, printed as prefix: PL110 "VW" for "V"
     AreaKind kind = AreaKind::Bit;
     int first = 0; // first element number (PL110 areas start at 1)
     int last = 0;  // last element number, inclusive
@@ -247,6 +249,12 @@ public:
     // Effective range of an area on a model (after the model's overrides); nullopt = absent.
     std::optional<std::pair<int, int>> range(int areaIndex, const ModelVariant *model) const;
     const SystemDevice *systemDevice(SystemRole role) const;
+
+    // Builds the spelling index findInstruction(text) uses; the registry calls it once.
+    void buildIndex();
+
+private:
+    QMultiHash<QString, int> m_spellings; // normalized mnemonic or alias -> instruction index
 };
 
 } // namespace rung::model
