@@ -2,7 +2,9 @@
 
 #include <QCoreApplication>
 
+#include <algorithm>
 #include <limits>
+#include <vector>
 
 namespace rung::model {
 
@@ -21,6 +23,29 @@ QString squeeze(QStringView text) {
         if (!c.isSpace())
             out.append(c.toUpper());
     return out;
+}
+
+// Length of the longest spelling of the area's prefix that starts s and is followed by a
+// digit, or -1.
+// Compares without building the squeezed prefix: this runs for every area on every operand.
+qsizetype prefixMatch(const Area &area, const QString &s) {
+    qsizetype best = -1;
+    auto tryOne = [&](const QString &spelling) {
+        qsizetype n = 0;
+        for (QChar c : spelling) {
+            if (c.isSpace())
+                continue;
+            if (n >= s.size() || s[n] != c.toUpper())
+                return;
+            ++n;
+        }
+        if (s.size() > n && s[n].isDigit())
+            best = std::max(best, n);
+    };
+    tryOne(area.prefix);
+    for (const QString &alias : area.prefixAliases)
+        tryOne(alias);
+    return best;
 }
 
 int radixOf(Numbering n) {
@@ -100,11 +125,8 @@ std::variant<Address, AddressError> parseAddress(const Target &target, QStringVi
 
     // The longest prefix followed by a digit wins: "HR00" is HR, not an unprefixed channel.
     qsizetype bestLength = -1;
-    for (const Area &a : target.areas) {
-        const QString p = squeeze(a.prefix);
-        if (s.startsWith(p) && s.size() > p.size() && s[p.size()].isDigit())
-            bestLength = std::max(bestLength, p.size());
-    }
+    for (const Area &a : target.areas)
+        bestLength = std::max(bestLength, prefixMatch(a, s));
     if (bestLength < 0) {
         // Name the prefix the user wrote, if any, for a clearer message.
         qsizetype letters = 0;
@@ -123,8 +145,7 @@ std::variant<Address, AddressError> parseAddress(const Target &target, QStringVi
     // rules, then pick the area whose range holds the number.
     int firstArea = -1;
     for (int i = 0; i < static_cast<int>(target.areas.size()); ++i)
-        if (squeeze(target.areas[static_cast<std::size_t>(i)].prefix).size() == bestLength &&
-            s.startsWith(squeeze(target.areas[static_cast<std::size_t>(i)].prefix))) {
+        if (prefixMatch(target.area(i), s) == bestLength) {
             firstArea = i;
             break;
         }
@@ -152,9 +173,10 @@ std::variant<Address, AddressError> parseAddress(const Target &target, QStringVi
         return error(Tr::tr("%1: unexpected '%2' after the device").arg(shown, s.mid(pos)), pos);
 
     qint64 value = number.value;
-    // SYSWIN also writes a CPM1 bit as five digits, CCCBB: 25313 is 253.13 (seed 002).
-    if (bit < 0 && rules.numbering == Numbering::ChannelBit && rules.prefix.isEmpty() &&
-        number.length >= 4 && number.length <= 5) {
+    // Seed 002 writes a CPM1 bit as channel digits + two bit digits without the point:
+    // 25313 is 253.13, HR0005 is HR00.05.
+    if (bit < 0 && rules.numbering == Numbering::ChannelBit && rules.digits > 0 &&
+        number.length == rules.digits + 2) {
         const int b = static_cast<int>(value % 100);
         if (b > 15)
             return error(Tr::tr("%1: bit %2 is beyond 00..15").arg(shown).arg(b),
@@ -168,7 +190,7 @@ std::variant<Address, AddressError> parseAddress(const Target &target, QStringVi
     int anyArea = -1;
     for (int i = 0; i < static_cast<int>(target.areas.size()); ++i) {
         const Area &a = target.area(i);
-        if (squeeze(a.prefix).size() != bestLength || !s.startsWith(squeeze(a.prefix)))
+        if (prefixMatch(a, s) != bestLength)
             continue;
         if (anyArea < 0)
             anyArea = i;
@@ -182,33 +204,44 @@ std::variant<Address, AddressError> parseAddress(const Target &target, QStringVi
         break;
     }
     if (matched < 0) {
-        // Out of every area's range: report the whole span the prefix covers.
-        int lo = std::numeric_limits<int>::max();
-        int hi = std::numeric_limits<int>::min();
+        // Out of every area's range: name the spans the prefix covers (on the model, if one
+        // is given), merged where areas follow each other: "r96 is beyond VPC's auxiliary
+        // relays r00..r95", "M9300 is beyond Vigor's M0..M5119, M9000..M9255".
         bool bitAllowed = false;
+        std::vector<std::pair<int, int>> spans;
         for (int i = 0; i < static_cast<int>(target.areas.size()); ++i) {
             const Area &a = target.area(i);
-            if (squeeze(a.prefix).size() != bestLength || !s.startsWith(squeeze(a.prefix)))
+            if (prefixMatch(a, s) != bestLength)
                 continue;
-            lo = std::min(lo, a.first);
-            hi = std::max(hi, a.last);
             bitAllowed = bitAllowed || a.numbering == Numbering::ChannelBit;
+            if (const auto r = target.range(i, model))
+                spans.push_back(*r);
         }
         if (bit >= 0 && !bitAllowed)
             return error(Tr::tr("%1: %2 has no bit numbers").arg(shown, rules.prefix), bestLength);
         const Area &a = target.area(anyArea);
-        if (model) {
-            // Name the model's range: "o31 is beyond VPC2416's outputs o00..o15".
-            if (const auto r = target.range(anyArea, model))
-                return error(Tr::tr("%1 is beyond %2's %3 %4..%5")
-                                 .arg(shown, who, areaName(a), a.prefix + formatNumber(a, r->first),
-                                      a.prefix + formatNumber(a, r->second)),
-                             bestLength);
+        if (spans.empty())
+            return error(Tr::tr("%1: %2 has no %3").arg(shown, who, areaName(a)), 0);
+        std::sort(spans.begin(), spans.end());
+        std::vector<std::pair<int, int>> merged{spans.front()};
+        for (const auto &span : spans) {
+            if (span.first <= merged.back().second + 1)
+                merged.back().second = std::max(merged.back().second, span.second);
+            else
+                merged.push_back(span);
         }
-        return error(Tr::tr("%1 is beyond %2's %3 %4..%5")
-                         .arg(shown, target.displayName, areaName(a),
-                              a.prefix + formatNumber(a, lo), a.prefix + formatNumber(a, hi)),
-                     bestLength);
+        QStringList ranges;
+        for (const auto &[lo, hi] : merged)
+            ranges << a.prefix + formatNumber(a, lo) + QStringLiteral("..") + a.prefix +
+                          formatNumber(a, hi);
+        // One span reads best with the area's name; several spans cross areas of different
+        // kinds (CPM1 input and work channels), so only the ranges are named.
+        if (merged.size() == 1)
+            return error(Tr::tr("%1 is beyond %2's %3 %4").arg(shown, who, areaName(a), ranges[0]),
+                         bestLength);
+        return error(
+            Tr::tr("%1 is beyond %2's %3").arg(shown, who, ranges.join(QStringLiteral(", "))),
+            bestLength);
     }
 
     const Area &a = target.area(matched);
@@ -218,9 +251,10 @@ std::variant<Address, AddressError> parseAddress(const Target &target, QStringVi
             return error(Tr::tr("%1: %2 has no %3").arg(shown, who, areaName(a)), 0);
         if (index < r->first || index > r->second) {
             // The model narrows the area: name the model's range, as the user sees it.
-            return error(Tr::tr("%1 is beyond %2's %3 %4..%5")
-                             .arg(shown, who, areaName(a), a.prefix + formatNumber(a, r->first),
-                                  a.prefix + formatNumber(a, r->second)),
+            return error(Tr::tr("%1 is beyond %2's %3 %4")
+                             .arg(shown, who, areaName(a),
+                                  a.prefix + formatNumber(a, r->first) + QStringLiteral("..") +
+                                      a.prefix + formatNumber(a, r->second)),
                          bestLength);
         }
     }

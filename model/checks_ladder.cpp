@@ -34,8 +34,15 @@ std::vector<Diagnostic> checkLadder(const LadderProgram &ladder, const CheckOpti
     std::vector<Diagnostic> out;
     if (!ladder.target)
         return out;
+    bool inStep = false; // outputs between STL and RET may hang on the step bus
     for (std::size_t r = 0; r < ladder.rungs.size(); ++r) {
         const Rung &rung = ladder.rungs[r];
+        for (const auto &o : rung.outputs) {
+            if (o && o->op() == Op::StepLadder)
+                inStep = true;
+            else if (o && o->op() == Op::Return)
+                inStep = false;
+        }
         const int rungIndex = static_cast<int>(r);
         const auto networks = detail::analyzeRung(rung);
         std::set<int> used;
@@ -75,7 +82,7 @@ std::vector<Diagnostic> checkLadder(const LadderProgram &ladder, const CheckOpti
         }
         for (int row = 0; row < rung.rows; ++row) {
             const auto &o = rung.outputs[static_cast<std::size_t>(row)];
-            if (!o || !o->spec || detail::isUnconditional(o->op()))
+            if (!o || !o->spec || detail::isUnconditional(o->op()) || inStep)
                 continue;
             for (const auto &n : networks)
                 if (n.row == row && n.connected && n.seriesParallel && n.expr.empty()) {

@@ -226,6 +226,10 @@ private:
 
     void step(const Instruction &ins, int index) {
         const Op op = ins.op();
+        if (op == Op::StepLadder)
+            m_inStep = true;
+        else if (op == Op::Return)
+            m_inStep = false;
         if (detail::isUnconditional(op)) {
             finishRung(false);
             begin(index, ins);
@@ -337,6 +341,11 @@ private:
             finishRung(false);
             return;
         }
+        if (m_blocks.empty() && m_inStep && !m_hadOutput) {
+            // Inside a step (STL .. RET) an output may hang on the step bus itself.
+            begin(index, ins);
+            m_blocks.assign(1, Expr{});
+        }
         if (m_blocks.empty())
             return problem(ins, "CV006", Tr::tr("%1 has no condition").arg(ins.spec->mnemonic));
         if (m_blocks.size() != 1)
@@ -345,7 +354,7 @@ private:
                                             : Tr::tr("%1 needs one block, but %2 are open")
                                                   .arg(ins.spec->mnemonic)
                                                   .arg(m_blocks.size()));
-        if (m_blocks[0].empty() && m_cur == 0)
+        if (m_blocks[0].empty() && m_cur == 0 && !m_inStep)
             return problem(ins, "CV006", Tr::tr("%1 has no condition").arg(ins.spec->mnemonic));
         if (!m_blocks[0].empty())
             m_cur = addChild(std::move(m_blocks[0]));
@@ -442,6 +451,7 @@ private:
     int m_first = -1;
     int m_firstLine = 0;
     bool m_hadOutput = false;
+    bool m_inStep = false; // between STL and RET
     bool m_lastWasOutput = false;
     bool m_broken = false;
     bool m_brokenSawOutput = false;

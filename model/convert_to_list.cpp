@@ -34,7 +34,7 @@ public:
 
     bool failed() const { return m_failed; }
 
-    void emitRung(const detail::RungLogic &logic) {
+    void emitRung(const detail::RungLogic &logic, bool inStep) {
         if (!logic.boxInputs.empty()) {
             for (const Expr &e : logic.boxInputs) {
                 if (e.empty())
@@ -48,7 +48,8 @@ public:
         }
         for (const Branch::Item &item : logic.root.items) {
             if (item.isOutput) {
-                if (!detail::isUnconditional(item.output.op()))
+                // Inside a step (STL .. RET) an output may hang on the step bus itself.
+                if (!detail::isUnconditional(item.output.op()) && !inStep)
                     return fail(-1, Tr::tr("%1 has no condition").arg(item.output.spec->mnemonic));
                 emitOutput(item.output);
                 continue;
@@ -72,7 +73,7 @@ private:
 
     void emitContact(Op op, const Contact &c) {
         const InstructionSpec *spec = c.invert
-                                          ? m_target.findInstruction(Op::Invert)
+                                          ? m_target.findInstruction(Op::Invert, c.mode)
                                           : m_target.findInstruction(op, c.mode, c.compare, false);
         if (!spec) {
             fail(-1, c.invert ? Tr::tr("%1 has no INV element").arg(m_target.displayName)
@@ -227,6 +228,7 @@ ToListingResult ladderToList(const LadderProgram &ladder) {
     if (!ladder.target)
         return result;
     const Target &target = *ladder.target;
+    bool inStep = false;
     for (std::size_t r = 0; r < ladder.rungs.size(); ++r) {
         const Rung &rung = ladder.rungs[r];
         const int rungIndex = static_cast<int>(r);
@@ -274,9 +276,15 @@ ToListingResult ladderToList(const LadderProgram &ladder) {
             continue;
         std::vector<Instruction> emitted;
         Emitter emitter(target, rungIndex, &emitted, &result.problems);
-        emitter.emitRung(detail::logicOf(rung, networks, false));
+        emitter.emitRung(detail::logicOf(rung, networks, false), inStep);
         if (emitter.failed())
             continue;
+        for (const Instruction &ins : emitted) {
+            if (ins.op() == Op::StepLadder)
+                inStep = true;
+            else if (ins.op() == Op::Return)
+                inStep = false;
+        }
         if (!rung.comment.isEmpty()) {
             const int at = static_cast<int>(result.list.instructions.size());
             for (const QString &line : rung.comment.split(QLatin1Char('\n')))

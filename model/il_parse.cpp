@@ -386,8 +386,14 @@ private:
         case Family::Cpm1:
             return c == QLatin1Char('#');
         case Family::Vpc:
-        case Family::Pl110:
-            return c.isDigit() || c == QLatin1Char('-') || c == QLatin1Char('+');
+        case Family::Pl110: {
+            // A sign alone is an FM operator, not a number; PL110 also writes "#0".
+            const qsizetype digit = (c == QLatin1Char('-') || c == QLatin1Char('+') ||
+                                     (m_target.family == Family::Pl110 && c == QLatin1Char('#')))
+                                        ? 1
+                                        : 0;
+            return t.size() > digit && t[digit].isDigit();
+        }
         }
         return false;
     }

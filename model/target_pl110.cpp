@@ -85,9 +85,12 @@ Target makePl110Target() {
                       QT_TRANSLATE_NOOP("rung::model::Target", "variables"));
     v.numbering = Numbering::ChannelBit;
     v.retentive = true;
+    v.prefixAliases = {QStringLiteral("VW")}; // the seed writes word access as VW30, SMW4
+
     Area &sm = addArea(t, "SM", "SM", AreaKind::Word, 0, 99,
                        QT_TRANSLATE_NOOP("rung::model::Target", "special markers"));
     sm.numbering = Numbering::ChannelBit;
+    sm.prefixAliases = {QStringLiteral("SMW")};
     sm.retentive = true;
     sm.system = true;
     Area &ai = addArea(t, "AI", "AI", AreaKind::Word, 1, 4,

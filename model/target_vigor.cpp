@@ -105,7 +105,8 @@ Target makeVigorTarget() {
         .retentive = true;
     Area &sm = area("SM", "M", AreaKind::Bit, 9000, 9255,
                     QT_TRANSLATE_NOOP("rung::model::Target", "special relays"));
-    // Writable: seed 001's programs drive M9100 (start dialing) and M9122 (RS send).
+    // Writable as a whole: seed 001's programs drive M9100 (start dialing) and M9122 (RS send);
+    // the read-only ones are known by name in systemDevices.
     sm.system = true;
     area("S", "S", AreaKind::Bit, 0, 499, QT_TRANSLATE_NOOP("rung::model::Target", "step relays"));
     area("SL", "S", AreaKind::Bit, 500, 999,
@@ -150,6 +151,45 @@ Target makeVigorTarget() {
          QT_TRANSLATE_NOOP("rung::model::Target", "minimum scan time (0.1 ms)")},
         {QStringLiteral("D9012"), SystemRole::ScanTimeMax,
          QT_TRANSLATE_NOOP("rung::model::Target", "maximum scan time (0.1 ms)")},
+        // Named in seed 001's communication chapters; the simulator leaves them alone.
+        {QStringLiteral("M9063"), SystemRole::Other,
+         QT_TRANSLATE_NOOP("rung::model::Target",
+                           "parallel operation or RS communication error, PLC keeps running")},
+        {QStringLiteral("M9070"), SystemRole::Other,
+         QT_TRANSLATE_NOOP("rung::model::Target", "parallel link: this unit is the master")},
+        {QStringLiteral("M9071"), SystemRole::Other,
+         QT_TRANSLATE_NOOP("rung::model::Target", "parallel link: this unit is a slave")},
+        {QStringLiteral("M9072"), SystemRole::Other,
+         QT_TRANSLATE_NOOP("rung::model::Target", "parallel operation normal")},
+        {QStringLiteral("M9100"), SystemRole::Other,
+         QT_TRANSLATE_NOOP("rung::model::Target", "CP2 modem: start dialing (OFF to ON)")},
+        {QStringLiteral("M9101"), SystemRole::Other,
+         QT_TRANSLATE_NOOP("rung::model::Target", "CP2 modem: dialing failed")},
+        {QStringLiteral("M9122"), SystemRole::Other,
+         QT_TRANSLATE_NOOP("rung::model::Target", "RS instruction send flag")},
+        {QStringLiteral("M9123"), SystemRole::Other,
+         QT_TRANSLATE_NOOP("rung::model::Target", "RS instruction receive done")},
+        {QStringLiteral("M9124"), SystemRole::Other,
+         QT_TRANSLATE_NOOP("rung::model::Target", "CP2 modem CD signal")},
+        {QStringLiteral("M9129"), SystemRole::Other,
+         QT_TRANSLATE_NOOP("rung::model::Target", "time-out during RS")},
+        {QStringLiteral("M9162"), SystemRole::Other,
+         QT_TRANSLATE_NOOP("rung::model::Target", "parallel operation high-speed transfer")},
+        {QStringLiteral("M9183"), SystemRole::Other,
+         QT_TRANSLATE_NOOP("rung::model::Target",
+                           "CPU link communication failed (master); M9184..M9190 slaves 1..7")},
+        {QStringLiteral("D9063"), SystemRole::Other,
+         QT_TRANSLATE_NOOP("rung::model::Target", "RS communication error code")},
+        {QStringLiteral("D9080"), SystemRole::Other,
+         QT_TRANSLATE_NOOP("rung::model::Target", "display mode of the display screen")},
+        {QStringLiteral("D9081"), SystemRole::Other,
+         QT_TRANSLATE_NOOP("rung::model::Target", "number of the D register shown in mode 3")},
+        {QStringLiteral("D9121"), SystemRole::Other,
+         QT_TRANSLATE_NOOP("rung::model::Target", "computer link station number")},
+        {QStringLiteral("D9201"), SystemRole::Other,
+         QT_TRANSLATE_NOOP("rung::model::Target", "current network scan time")},
+        {QStringLiteral("D9202"), SystemRole::Other,
+         QT_TRANSLATE_NOOP("rung::model::Target", "maximum network scan time")},
     };
 
     auto &in = t.instructions;

@@ -1,0 +1,466 @@
+#include "main_window.h"
+
+#include "editor/il_editor.h"
+#include "editor/ladder_view.h"
+#include "editor/problems_view.h"
+
+#include <QAction>
+#include <QActionGroup>
+#include <QApplication>
+#include <QCloseEvent>
+#include <QFile>
+#include <QDockWidget>
+#include <QFormLayout>
+#include <QHeaderView>
+#include <QLabel>
+#include <QMenuBar>
+#include <QMessageBox>
+#include <QSettings>
+#include <QSplitter>
+#include <QStatusBar>
+#include <QTabWidget>
+#include <QTableWidget>
+#include <QToolBar>
+#include <QVBoxLayout>
+
+namespace rung::app {
+
+MainWindow::MainWindow(QWidget *parent)
+    : QMainWindow(parent)
+    , m_document(new editor::Document(this)) {
+    setObjectName(QStringLiteral("MainWindow"));
+    m_ladder = new editor::LadderView(m_document);
+    m_ladder->setObjectName(QStringLiteral("ladderView"));
+    m_il = new editor::IlEditor(m_document->target());
+    m_il->setObjectName(QStringLiteral("ilEditor"));
+    m_problems = new editor::ProblemsView;
+    m_problems->setObjectName(QStringLiteral("problemsView"));
+    m_tabs = new QTabWidget;
+    m_split = new QSplitter(Qt::Horizontal);
+    auto *central = new QWidget;
+    auto *layout = new QVBoxLayout(central);
+    layout->setContentsMargins(0, 0, 0, 0);
+    layout->addWidget(m_tabs);
+    layout->addWidget(m_split);
+    setCentralWidget(central);
+
+    m_statusTarget = new QLabel;
+    m_statusSteps = new QLabel;
+    m_statusCursor = new QLabel;
+    statusBar()->addWidget(m_statusCursor, 1);
+    statusBar()->addPermanentWidget(m_statusSteps);
+    statusBar()->addPermanentWidget(m_statusTarget);
+
+    buildDocks();
+    buildActions();
+
+    m_ilTimer.setSingleShot(true);
+    m_ilTimer.setInterval(500);
+    connect(&m_ilTimer, &QTimer::timeout, this, &MainWindow::applyListing);
+    connect(m_il, &editor::IlEditor::listingEdited, this, [this] { m_ilTimer.start(); });
+    connect(m_document, &editor::Document::programChanged, this, &MainWindow::refreshFromDocument);
+    connect(m_document, &editor::Document::pathChanged, this, &MainWindow::updateTitle);
+    connect(m_document->undoStack(), &QUndoStack::cleanChanged, this, &MainWindow::updateTitle);
+    connect(m_ladder, &editor::LadderView::cursorMoved, this, [this](const editor::CellCursor &c) {
+        updateStatus();
+        const int line = m_document->firstLineOfRung(c.rung);
+        if (line > 0 && !m_il->hasFocus()) {
+            // The listing follows the ladder: its rung's lines come into view, selected.
+            const int next = m_document->firstLineOfRung(c.rung + 1);
+            m_il->setSelection(line - 1, 0, next > 0 ? next - 1 : m_il->lines() - 1, 0);
+            m_il->ensureLineVisible(line - 1);
+        }
+    });
+    connect(m_ladder, &editor::LadderView::message, this,
+            [this](const QString &text) { statusBar()->showMessage(text, 5000); });
+    connect(m_il, &QsciScintilla::cursorPositionChanged, this, [this](int line, int) {
+        updateStatus();
+        if (!m_il->hasFocus())
+            return;
+        const int rung = m_document->rungOfLine(line + 1);
+        if (rung >= 0 && rung != m_ladder->cursor().rung)
+            m_ladder->setCursor({rung, 0, 0});
+    });
+    connect(m_problems, &editor::ProblemsView::locate, this, &MainWindow::locate);
+    connect(m_problems, &editor::ProblemsView::applyFix, this, &MainWindow::applyFix);
+
+    m_recoveryTimer.setInterval(60 * 1000);
+    connect(&m_recoveryTimer, &QTimer::timeout, this, &MainWindow::writeRecovery);
+    m_recoveryTimer.start();
+
+    QSettings settings;
+    setSideBySide(settings.value(QStringLiteral("view/sideBySide"), false).toBool());
+    resize(1400, 900);
+    resizeDocks({findChild<QDockWidget *>(QStringLiteral("problemsDock"))}, {150}, Qt::Vertical);
+    resizeDocks({findChild<QDockWidget *>(QStringLiteral("projectDock"))}, {230}, Qt::Horizontal);
+    restoreGeometry(settings.value(QStringLiteral("window/geometry")).toByteArray());
+    restoreState(settings.value(QStringLiteral("window/state")).toByteArray());
+    refreshFromDocument();
+    updateTitle();
+}
+
+MainWindow::~MainWindow() = default;
+
+void MainWindow::buildDocks() {
+    auto *problemsDock = new QDockWidget(tr("Problems"), this);
+    problemsDock->setObjectName(QStringLiteral("problemsDock"));
+    problemsDock->setWidget(m_problems);
+    addDockWidget(Qt::BottomDockWidgetArea, problemsDock);
+
+    auto *projectDock = new QDockWidget(tr("Project"), this);
+    projectDock->setObjectName(QStringLiteral("projectDock"));
+    auto *panel = new QWidget;
+    auto *layout = new QVBoxLayout(panel);
+    m_projectInfo = new QLabel;
+    m_projectInfo->setWordWrap(true);
+    layout->addWidget(m_projectInfo);
+    layout->addWidget(new QLabel(tr("Symbols")));
+    m_symbols = new QTableWidget(0, 3);
+    m_symbols->setObjectName(QStringLiteral("symbolsTable"));
+    m_symbols->setHorizontalHeaderLabels({tr("Device"), tr("Name"), tr("Comment")});
+    m_symbols->horizontalHeader()->setStretchLastSection(true);
+    m_symbols->verticalHeader()->hide();
+    layout->addWidget(m_symbols, 1);
+    projectDock->setWidget(panel);
+    addDockWidget(Qt::LeftDockWidgetArea, projectDock);
+    connect(m_symbols, &QTableWidget::cellChanged, this, [this](int row, int) {
+        if (m_updatingSymbols)
+            return;
+        // Edited in place: a new symbol list, one undo step.
+        std::vector<model::Symbol> symbols;
+        for (int r = 0; r < m_symbols->rowCount(); ++r) {
+            const QString device =
+                m_symbols->item(r, 0) ? m_symbols->item(r, 0)->text().trimmed() : QString();
+            if (device.isEmpty())
+                continue;
+            auto parsed =
+                model::parseAddress(m_document->target(), device, m_document->modelVariant());
+            if (auto *e = std::get_if<model::AddressError>(&parsed)) {
+                if (r == row)
+                    statusBar()->showMessage(e->message, 5000);
+                continue;
+            }
+            model::Symbol s;
+            s.address = std::get<model::Address>(parsed);
+            s.name = m_symbols->item(r, 1) ? m_symbols->item(r, 1)->text() : QString();
+            s.comment = m_symbols->item(r, 2) ? m_symbols->item(r, 2)->text() : QString();
+            symbols.push_back(s);
+        }
+        m_document->setSymbols(symbols);
+    });
+}
+
+void MainWindow::buildActions() {
+    QMenu *file = menuBar()->addMenu(tr("&File"));
+    QToolBar *bar = addToolBar(tr("Main"));
+    bar->setObjectName(QStringLiteral("mainToolBar"));
+    QAction *newAction = file->addAction(QIcon::fromTheme(QStringLiteral("document-new")),
+                                         tr("&New Project..."), this, &MainWindow::fileNew);
+    newAction->setShortcut(QKeySequence::New);
+    QAction *open = file->addAction(QIcon::fromTheme(QStringLiteral("document-open")),
+                                    tr("&Open..."), this, &MainWindow::fileOpen);
+    open->setShortcut(QKeySequence::Open);
+    m_recentMenu = file->addMenu(tr("Open &Recent"));
+    m_examplesMenu = file->addMenu(tr("E&xamples"));
+    QAction *save = file->addAction(QIcon::fromTheme(QStringLiteral("document-save")), tr("&Save"),
+                                    this, &MainWindow::fileSave);
+    save->setShortcut(QKeySequence::Save);
+    file->addAction(tr("Save &As..."), this, &MainWindow::fileSaveAs)
+        ->setShortcut(QKeySequence::SaveAs);
+    file->addSeparator();
+    file->addAction(tr("&Import Instruction List..."), this, &MainWindow::importListing);
+    file->addAction(tr("&Export Instruction List..."), this, &MainWindow::exportListing);
+    QMenu *exportMenu = file->addMenu(tr("Export &Ladder"));
+    exportMenu->addAction(tr("As &PDF..."), this, [this] { exportImage(QStringLiteral("pdf")); });
+    exportMenu->addAction(tr("As &SVG..."), this, [this] { exportImage(QStringLiteral("svg")); });
+    exportMenu->addAction(tr("As P&NG..."), this, [this] { exportImage(QStringLiteral("png")); });
+    file->addAction(tr("Print Pre&view..."), this, &MainWindow::printPreview)
+        ->setShortcut(QKeySequence::Print);
+    file->addSeparator();
+    file->addAction(tr("&Quit"), this, &QWidget::close)->setShortcut(QKeySequence::Quit);
+    bar->addAction(newAction);
+    bar->addAction(open);
+    bar->addAction(save);
+    bar->addSeparator();
+
+    QMenu *edit = menuBar()->addMenu(tr("&Edit"));
+    QAction *undo = m_document->undoStack()->createUndoAction(this, tr("&Undo"));
+    undo->setShortcut(QKeySequence::Undo);
+    QAction *redo = m_document->undoStack()->createRedoAction(this, tr("&Redo"));
+    redo->setShortcuts({QKeySequence::Redo, QKeySequence(Qt::CTRL | Qt::Key_Y)});
+    edit->addAction(undo);
+    edit->addAction(redo);
+    bar->addAction(undo);
+    bar->addAction(redo);
+    bar->addSeparator();
+    edit->addSeparator();
+    struct Tool {
+        QString text;
+        QKeySequence key;
+        std::function<void()> run;
+    };
+    const std::vector<Tool> tools = {
+        {tr("Normally Open Contact"), QKeySequence(Qt::Key_F5),
+         [this] {
+             m_ladder->setFocus();
+             QApplication::postEvent(m_ladder,
+                                     new QKeyEvent(QEvent::KeyPress, Qt::Key_F5, Qt::NoModifier));
+         }},
+        {tr("Normally Closed Contact"), QKeySequence(Qt::Key_F6),
+         [this] {
+             m_ladder->setFocus();
+             QApplication::postEvent(m_ladder,
+                                     new QKeyEvent(QEvent::KeyPress, Qt::Key_F6, Qt::NoModifier));
+         }},
+        {tr("Coil"), QKeySequence(Qt::Key_F7),
+         [this] {
+             m_ladder->setFocus();
+             QApplication::postEvent(m_ladder,
+                                     new QKeyEvent(QEvent::KeyPress, Qt::Key_F7, Qt::NoModifier));
+         }},
+        {tr("Instruction"), QKeySequence(Qt::Key_F8),
+         [this] {
+             m_ladder->setFocus();
+             QApplication::postEvent(m_ladder,
+                                     new QKeyEvent(QEvent::KeyPress, Qt::Key_F8, Qt::NoModifier));
+         }},
+        {tr("Horizontal Wire"), QKeySequence(Qt::Key_F9), [this] { m_ladder->placeWire(); }},
+        {tr("Vertical Link"), QKeySequence(Qt::SHIFT | Qt::Key_F9),
+         [this] { m_ladder->toggleLink(); }},
+    };
+    for (const Tool &t : tools) {
+        QAction *a = edit->addAction(t.text, this, t.run);
+        a->setToolTip(
+            QStringLiteral("%1 (%2)").arg(t.text, t.key.toString(QKeySequence::NativeText)));
+        bar->addAction(a);
+    }
+    edit->addSeparator();
+    edit->addAction(tr("Insert Rung"), this, [this] { m_ladder->insertRung(); });
+    edit->addAction(tr("Delete Rung"), this, [this] { m_ladder->deleteRung(); });
+    edit->addAction(tr("Insert Row"), this, [this] { m_ladder->insertRow(); });
+    edit->addAction(tr("Delete Row"), this, [this] { m_ladder->deleteRow(); });
+
+    QMenu *view = menuBar()->addMenu(tr("&View"));
+    QAction *side = view->addAction(tr("Ladder and List &Side by Side"));
+    side->setCheckable(true);
+    side->setChecked(QSettings().value(QStringLiteral("view/sideBySide"), false).toBool());
+    connect(side, &QAction::toggled, this, &MainWindow::setSideBySide);
+    view->addAction(tr("Zoom &In"), this, [this] { m_ladder->setZoom(m_ladder->zoom() * 1.15); })
+        ->setShortcut(QKeySequence::ZoomIn);
+    view->addAction(tr("Zoom &Out"), this, [this] { m_ladder->setZoom(m_ladder->zoom() / 1.15); })
+        ->setShortcut(QKeySequence::ZoomOut);
+    view->addAction(tr("&Check Program"), this, [this] { refreshFromDocument(); })
+        ->setShortcut(Qt::Key_F4);
+
+    QMenu *language = menuBar()->addMenu(tr("&Language"));
+    auto *group = new QActionGroup(this);
+    const QString current = QSettings().value(QStringLiteral("ui/language")).toString();
+    for (const auto &[code, name] :
+         {std::pair{"en", "English"}, {"hu", "Magyar"}, {"it", "Italiano"}}) {
+        QAction *a = language->addAction(QString::fromUtf8(name));
+        a->setCheckable(true);
+        a->setChecked(current == QLatin1String(code) ||
+                      (current.isEmpty() && QLatin1String(code) == QLatin1String("en")));
+        group->addAction(a);
+        const QString c = QString::fromLatin1(code);
+        connect(a, &QAction::triggered, this, [this, c] {
+            QSettings().setValue(QStringLiteral("ui/language"), c);
+            QMessageBox::information(this, tr("Language"),
+                                     tr("The new language applies when Rung Studio starts again."));
+        });
+    }
+    QMenu *help = menuBar()->addMenu(tr("&Help"));
+    help->addAction(tr("&Keyboard..."), this, [this] {
+        QMessageBox::information(
+            this, tr("Keyboard"),
+            tr("F5 normally open contact, F6 normally closed contact, F7 coil, F8 instruction\n"
+               "F9 horizontal wire, Shift+F9 vertical link\n"
+               "Type an instruction into the cell: LD X0, ANI X2, OUT Y1, TMR T0 K10\n"
+               "Insert: insert a cell, Ctrl+Insert: insert a row, Shift+Insert: insert a rung\n"
+               "Delete: clear, Ctrl+Delete: delete the row, Shift+Delete: delete the rung\n"
+               "Ctrl+Z / Ctrl+Y: undo / redo, Ctrl+wheel: zoom, F4: check the program"));
+    });
+    help->addAction(tr("&About Rung Studio"), this, [this] {
+        QMessageBox::about(
+            this, tr("About Rung Studio"),
+            tr("Rung Studio %1\nLadder and instruction-list editor for VPC, Vigor, CPM1 and PL110.")
+                .arg(QApplication::applicationVersion()));
+    });
+    rebuildRecentMenu();
+    rebuildExamplesMenu();
+}
+
+void MainWindow::setSideBySide(bool sideBySide) {
+    m_sideBySide = sideBySide;
+    QSettings().setValue(QStringLiteral("view/sideBySide"), sideBySide);
+    m_tabs->clear();
+    if (sideBySide) {
+        m_split->addWidget(m_ladder);
+        m_split->addWidget(m_il);
+        m_split->setStretchFactor(0, 3);
+        m_split->setStretchFactor(1, 1);
+        m_split->show();
+        m_tabs->hide();
+    } else {
+        m_tabs->addTab(m_ladder, tr("Ladder"));
+        m_tabs->addTab(m_il, tr("Instruction List"));
+        m_tabs->show();
+        m_split->hide();
+    }
+}
+
+void MainWindow::refreshFromDocument() {
+    if (!m_editingListing) {
+        m_il->setListing(m_document->listingText());
+        m_listingErrors.clear();
+    }
+    std::vector<model::Diagnostic> all = m_document->diagnostics();
+    all.insert(all.end(), m_listingErrors.begin(), m_listingErrors.end());
+    m_problems->setDiagnostics(all);
+    if (!m_editingListing) {
+        // Listing findings of the canonical text: map each rung's findings to its lines.
+        std::vector<model::Diagnostic> onLines;
+        for (model::Diagnostic d : m_document->diagnostics()) {
+            if (d.location.rung < 0)
+                continue;
+            d.location.line = m_document->firstLineOfRung(d.location.rung);
+            if (d.location.line > 0)
+                onLines.push_back(d);
+        }
+        m_il->showDiagnostics(onLines);
+    } else {
+        m_il->showDiagnostics(m_listingErrors);
+    }
+    std::vector<int> stepOfLine;
+    {
+        const auto &list = m_document->listing().list;
+        const QStringList lines = m_document->listingText().split(QLatin1Char('\n'));
+        std::size_t next = 0;
+        for (const QString &line : lines) {
+            const QString code = line.section(QLatin1Char(';'), 0, 0).trimmed();
+            if (!code.isEmpty() && next < list.instructions.size())
+                stepOfLine.push_back(list.instructions[next++].step);
+            else
+                stepOfLine.push_back(-1);
+        }
+    }
+    if (!m_editingListing)
+        m_il->setStepNumbers(stepOfLine);
+    refreshSymbols();
+    updateStatus();
+}
+
+void MainWindow::refreshSymbols() {
+    m_updatingSymbols = true;
+    const auto &symbols = m_document->project().symbols;
+    m_symbols->setRowCount(static_cast<int>(symbols.size()) + 1); // a free row for a new symbol
+    for (int r = 0; r < static_cast<int>(symbols.size()); ++r) {
+        const model::Symbol &s = symbols[static_cast<std::size_t>(r)];
+        m_symbols->setItem(
+            r, 0, new QTableWidgetItem(model::formatAddress(m_document->target(), s.address)));
+        m_symbols->setItem(r, 1, new QTableWidgetItem(s.name));
+        m_symbols->setItem(r, 2, new QTableWidgetItem(s.comment));
+    }
+    for (int c = 0; c < 3; ++c)
+        m_symbols->setItem(static_cast<int>(symbols.size()), c, new QTableWidgetItem);
+    const model::Target &t = m_document->target();
+    m_projectInfo->setText(tr("<b>%1</b><br>Target: %2, model %3<br>%4 rungs, %5 steps")
+                               .arg(m_document->path().isEmpty()
+                                        ? tr("Untitled")
+                                        : m_document->path().section(QLatin1Char('/'), -1),
+                                    t.displayName, m_document->modelVariant()->name)
+                               .arg(m_document->ladder().rungs.size())
+                               .arg(m_document->stepCount()));
+    m_updatingSymbols = false;
+}
+
+void MainWindow::applyListing() {
+    m_ilTimer.stop();
+    std::vector<model::Diagnostic> errors;
+    m_editingListing = true;
+    const bool ok = m_document->setListing(m_il->text(), &errors);
+    m_listingErrors = ok ? std::vector<model::Diagnostic>{} : errors;
+    // While the text is invalid the ladder keeps the last valid program; the errors show in
+    // the listing and in the problems panel.
+    refreshFromDocument();
+    m_editingListing = false;
+}
+
+void MainWindow::updateStatus() {
+    const model::Target &t = m_document->target();
+    const model::ModelVariant *m = m_document->modelVariant();
+    m_statusTarget->setText(tr("%1 %2").arg(t.displayName, m->name));
+    const int limit = m->programSteps > 0 ? m->programSteps : t.limits.programSteps;
+    m_statusSteps->setText(tr("%1 / %2 steps").arg(m_document->stepCount()).arg(limit));
+    if (m_il->hasFocus()) {
+        int line = 0;
+        int index = 0;
+        m_il->getCursorPosition(&line, &index);
+        m_statusCursor->setText(tr("Line %1, column %2").arg(line + 1).arg(index + 1));
+    } else {
+        const editor::CellCursor c = m_ladder->cursor();
+        m_statusCursor->setText(
+            tr("Rung %1, row %2, column %3").arg(c.rung + 1).arg(c.row + 1).arg(c.column + 1));
+    }
+}
+
+void MainWindow::updateTitle() {
+    const QString name = m_document->path().isEmpty()
+                             ? tr("Untitled")
+                             : m_document->path().section(QLatin1Char('/'), -1);
+    setWindowTitle(QStringLiteral("%1[*] — Rung Studio").arg(name));
+    setWindowModified(m_document->isModified());
+}
+
+void MainWindow::locate(const model::Diagnostic &d) {
+    if (d.location.onLadder()) {
+        if (m_tabs->isVisible())
+            m_tabs->setCurrentWidget(m_ladder);
+        m_ladder->setCursor(
+            {d.location.rung, std::max(0, d.location.row), std::max(0, d.location.cell)});
+        m_ladder->setFocus();
+    } else if (d.location.onListing()) {
+        if (m_tabs->isVisible())
+            m_tabs->setCurrentWidget(m_il);
+        m_il->goToLine(d.location.line);
+    }
+}
+
+void MainWindow::applyFix(const model::Diagnostic &d) {
+    if (!d.fix)
+        return;
+    if (d.fix->firstRung >= 0) {
+        m_document->replaceRungs(d.fix->firstRung, d.fix->lastRung - d.fix->firstRung + 1,
+                                 d.fix->rungs, d.fix->label);
+        return;
+    }
+    // A listing fix: replace its lines and rebuild the ladder, one undo step.
+    QStringList lines = m_il->text().split(QLatin1Char('\n'));
+    const int first = d.fix->firstLine - 1;
+    const int last = d.fix->lastLine - 1;
+    if (first < 0 || last >= lines.size() || first > last)
+        return;
+    QStringList replacement = d.fix->listing.split(QLatin1Char('\n'));
+    if (!replacement.isEmpty() && replacement.back().isEmpty())
+        replacement.removeLast();
+    lines.erase(lines.begin() + first, lines.begin() + last + 1);
+    for (qsizetype i = 0; i < replacement.size(); ++i)
+        lines.insert(first + i, replacement[i]);
+    std::vector<model::Diagnostic> errors;
+    if (m_document->setListing(lines.join(QLatin1Char('\n')), &errors))
+        refreshFromDocument();
+}
+
+void MainWindow::closeEvent(QCloseEvent *event) {
+    if (!maybeSave()) {
+        event->ignore();
+        return;
+    }
+    QSettings settings;
+    settings.setValue(QStringLiteral("window/geometry"), saveGeometry());
+    settings.setValue(QStringLiteral("window/state"), saveState());
+    QFile::remove(recoveryPath());
+    event->accept();
+}
+
+} // namespace rung::app

@@ -1,0 +1,98 @@
+#pragma once
+
+// The main window: the ladder and the instruction list of one program (tabs or side by side),
+// the problems panel, the project dock (target, model, symbols), menus, toolbar and status
+// bar. File handling (open, save, recovery, export) lives in main_window_files.cpp.
+
+#include "editor/document.h"
+
+#include <QMainWindow>
+#include <QTimer>
+
+class QLabel;
+class QSplitter;
+class QTabWidget;
+class QTableWidget;
+class QMenu;
+
+namespace rung::editor {
+class IlEditor;
+class LadderView;
+class ProblemsView;
+} // namespace rung::editor
+
+namespace rung::app {
+
+class MainWindow : public QMainWindow {
+    Q_OBJECT
+
+public:
+    explicit MainWindow(QWidget *parent = nullptr);
+    ~MainWindow() override;
+
+    editor::Document *document() { return m_document; }
+    editor::LadderView *ladderView() { return m_ladder; }
+    editor::IlEditor *ilEditor() { return m_il; }
+    editor::ProblemsView *problemsView() { return m_problems; }
+
+    // Opens a project (.rung) or a listing (.il, with the given target); false after telling
+    // the user why when the file cannot be read.
+    bool openFile(const QString &path, const QString &targetId = QString(), bool quiet = false);
+    bool saveTo(const QString &path);
+    void newProject(const model::Target &target, const QString &modelName);
+    void setSideBySide(bool sideBySide);
+    // Applies the IL editor's text now (the editor also does it after a short pause).
+    void applyListing();
+    QString recoveryPath() const;
+    void writeRecovery();
+    bool offerRecovery(bool ask = true);
+
+protected:
+    void closeEvent(QCloseEvent *event) override;
+
+private:
+    void buildActions();
+    void buildDocks();
+    void updateTitle();
+    void updateStatus();
+    void refreshFromDocument();
+    void refreshSymbols();
+    void locate(const model::Diagnostic &diagnostic);
+    void applyFix(const model::Diagnostic &diagnostic);
+    bool maybeSave();
+    void addRecent(const QString &path);
+    void rebuildRecentMenu();
+    void rebuildExamplesMenu();
+
+    // File actions (main_window_files.cpp).
+    void fileNew();
+    void fileOpen();
+    bool fileSave();
+    bool fileSaveAs();
+    void importListing();
+    void exportListing();
+    void exportImage(const QString &format);
+    void printPreview();
+
+    editor::Document *m_document;
+    editor::LadderView *m_ladder;
+    editor::IlEditor *m_il;
+    editor::ProblemsView *m_problems;
+    QTabWidget *m_tabs;
+    QSplitter *m_split;
+    QTableWidget *m_symbols = nullptr;
+    QLabel *m_projectInfo = nullptr;
+    QLabel *m_statusTarget;
+    QLabel *m_statusSteps;
+    QLabel *m_statusCursor;
+    QMenu *m_recentMenu = nullptr;
+    QMenu *m_examplesMenu = nullptr;
+    QTimer m_ilTimer;
+    QTimer m_recoveryTimer;
+    std::vector<model::Diagnostic> m_listingErrors;
+    bool m_editingListing = false;
+    bool m_sideBySide = false;
+    bool m_updatingSymbols = false;
+};
+
+} // namespace rung::app

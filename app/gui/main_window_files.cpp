@@ -1,0 +1,395 @@
+#include "main_window.h"
+
+#include "editor/il_editor.h"
+#include "editor/ladder_painter.h"
+#include "editor/ladder_view.h"
+
+#include "model/project.h"
+
+#include <QComboBox>
+#include <QDialog>
+#include <QDialogButtonBox>
+#include <QDir>
+#include <QDirIterator>
+#include <QFileDialog>
+#include <QFileInfo>
+#include <QFormLayout>
+#include <QImage>
+#include <QMenu>
+#include <QMessageBox>
+#include <QPdfWriter>
+#include <QPrintPreviewDialog>
+#include <QPrinter>
+#include <QSaveFile>
+#include <QSettings>
+#include <QStatusBar>
+#include <QDate>
+#include <QPainter>
+#include <QStandardPaths>
+#include <QSvgGenerator>
+
+namespace rung::app {
+
+namespace {
+
+constexpr int kMaxRecent = 8;
+
+// Paints every rung, one below the other, starting at `top`; a new page when needed.
+template <typename NewPage>
+void paintProgram(QPainter &p, const model::Project &project, const editor::LadderMetrics &m,
+                  double pageHeight, double top, NewPage newPage) {
+    editor::LadderPainter painter(project, m);
+    double y = top;
+    for (int i = 0; i < static_cast<int>(project.program.rungs.size()); ++i) {
+        const double h = m.rungHeight(project.program.rungs[static_cast<std::size_t>(i)]);
+        if (pageHeight > 0 && y + h > pageHeight && y > top) {
+            newPage();
+            y = top;
+        }
+        painter.paintRung(p, QPointF(0, y), i, {});
+        y += h;
+    }
+}
+
+editor::LadderMetrics exportMetrics(const model::Project &project) {
+    editor::LadderMetrics m;
+    int widest = std::max(1, project.target->limits.contactsPerRow);
+    for (const model::Rung &r : project.program.rungs)
+        widest = std::max(widest, r.columns);
+    m.gridColumns = widest;
+    return m;
+}
+
+double programHeight(const model::Project &project, const editor::LadderMetrics &m) {
+    double h = 0;
+    for (const model::Rung &r : project.program.rungs)
+        h += m.rungHeight(r);
+    return h;
+}
+
+} // namespace
+
+QString MainWindow::recoveryPath() const {
+    const QString dir = QStandardPaths::writableLocation(QStandardPaths::AppDataLocation);
+    QDir().mkpath(dir);
+    return dir + QStringLiteral("/recovery.rung");
+}
+
+void MainWindow::writeRecovery() {
+    if (!m_document->isModified())
+        return;
+    model::ProjectError error;
+    model::saveProject(m_document->project(), recoveryPath(), &error);
+}
+
+bool MainWindow::offerRecovery(bool ask) {
+    const QString path = recoveryPath();
+    if (!QFileInfo::exists(path))
+        return false;
+    if (ask && QMessageBox::question(
+                   this, tr("Recover"),
+                   tr("Rung Studio was not closed properly last time. Recover the unsaved "
+                      "program?")) != QMessageBox::Yes) {
+        QFile::remove(path);
+        return false;
+    }
+    model::ProjectError error;
+    auto project = model::loadProject(path, &error);
+    if (!project)
+        return false;
+    m_document->setProject(*project, QString());
+    m_il->setTarget(*project->target);
+    refreshFromDocument();
+    return true;
+}
+
+void MainWindow::newProject(const model::Target &target, const QString &modelName) {
+    m_document->reset(target, modelName);
+    m_il->setTarget(target);
+    refreshFromDocument();
+}
+
+bool MainWindow::openFile(const QString &path, const QString &targetId, bool quiet) {
+    auto fail = [&](const QString &message) {
+        if (!quiet)
+            QMessageBox::critical(this, tr("Cannot open the file"), message);
+        statusBar()->showMessage(message, 10000);
+        return false;
+    };
+    const QString suffix = QFileInfo(path).suffix().toLower();
+    model::Project project;
+    if (suffix == QLatin1String(model::kProjectExtension)) {
+        model::ProjectError error;
+        auto loaded = model::loadProject(path, &error);
+        if (!loaded)
+            return fail(error.message);
+        project = *loaded;
+    } else {
+        const model::Target *target =
+            model::Target::byId(targetId.isEmpty() ? m_document->target().id : targetId);
+        if (!target)
+            return fail(tr("Unknown target %1").arg(targetId));
+        QFile file(path);
+        if (!file.open(QIODevice::ReadOnly))
+            return fail(tr("%1: %2").arg(path, file.errorString()));
+        if (file.size() > 64 * 1024 * 1024)
+            return fail(tr("%1 is larger than 64 MB").arg(path));
+        const model::ParseResult parsed =
+            model::parseInstructionList(*target, QString::fromUtf8(file.readAll()));
+        if (!parsed.ok())
+            return fail(tr("%1, line %2, column %3: %4")
+                            .arg(QFileInfo(path).fileName())
+                            .arg(parsed.errors.front().line)
+                            .arg(parsed.errors.front().column)
+                            .arg(parsed.errors.front().message));
+        const model::ToLadderResult ladder = model::listToLadder(parsed.list);
+        if (!ladder.ok())
+            return fail(tr("%1, line %2: %3")
+                            .arg(QFileInfo(path).fileName())
+                            .arg(ladder.problems.front().location.line)
+                            .arg(ladder.problems.front().message));
+        project.target = target;
+        project.model = target->defaultModel().name;
+        project.program = ladder.ladder;
+    }
+    m_document->setProject(project,
+                           suffix == QLatin1String(model::kProjectExtension) ? path : QString());
+    m_il->setTarget(*project.target);
+    refreshFromDocument();
+    if (suffix == QLatin1String(model::kProjectExtension))
+        addRecent(path);
+    return true;
+}
+
+bool MainWindow::saveTo(const QString &path) {
+    model::ProjectError error;
+    if (!model::saveProject(m_document->project(), path, &error)) {
+        QMessageBox::critical(this, tr("Cannot save"), error.message);
+        return false;
+    }
+    m_document->setPath(path);
+    m_document->markSaved();
+    QFile::remove(recoveryPath());
+    addRecent(path);
+    refreshSymbols();
+    statusBar()->showMessage(tr("Saved %1").arg(path), 3000);
+    return true;
+}
+
+bool MainWindow::maybeSave() {
+    if (!m_document->isModified())
+        return true;
+    const auto answer =
+        QMessageBox::warning(this, tr("Unsaved changes"), tr("Save the changes to the program?"),
+                             QMessageBox::Save | QMessageBox::Discard | QMessageBox::Cancel);
+    if (answer == QMessageBox::Save)
+        return fileSave();
+    return answer == QMessageBox::Discard;
+}
+
+void MainWindow::fileNew() {
+    if (!maybeSave())
+        return;
+    QDialog dialog(this);
+    dialog.setWindowTitle(tr("New Project"));
+    auto *form = new QFormLayout(&dialog);
+    auto *family = new QComboBox;
+    auto *modelBox = new QComboBox;
+    for (model::Family f : model::Target::families())
+        family->addItem(model::Target::get(f).displayName, model::Target::get(f).id);
+    auto fillModels = [&] {
+        modelBox->clear();
+        const model::Target *t = model::Target::byId(family->currentData().toString());
+        for (const model::ModelVariant &m : t->models)
+            modelBox->addItem(m.name);
+        modelBox->setCurrentIndex(modelBox->count() - 1);
+    };
+    connect(family, &QComboBox::currentIndexChanged, &dialog, fillModels);
+    family->setCurrentIndex(1);
+    fillModels();
+    form->addRow(tr("PLC family:"), family);
+    form->addRow(tr("Model:"), modelBox);
+    auto *buttons = new QDialogButtonBox(QDialogButtonBox::Ok | QDialogButtonBox::Cancel);
+    connect(buttons, &QDialogButtonBox::accepted, &dialog, &QDialog::accept);
+    connect(buttons, &QDialogButtonBox::rejected, &dialog, &QDialog::reject);
+    form->addRow(buttons);
+    if (dialog.exec() != QDialog::Accepted)
+        return;
+    newProject(*model::Target::byId(family->currentData().toString()), modelBox->currentText());
+}
+
+void MainWindow::fileOpen() {
+    if (!maybeSave())
+        return;
+    const QString path = QFileDialog::getOpenFileName(
+        this, tr("Open"), QString(),
+        tr("Rung Studio projects (*.rung);;Instruction lists (*.il *.txt)"));
+    if (!path.isEmpty())
+        openFile(path);
+}
+
+bool MainWindow::fileSave() {
+    if (m_document->path().isEmpty())
+        return fileSaveAs();
+    return saveTo(m_document->path());
+}
+
+bool MainWindow::fileSaveAs() {
+    QString path = QFileDialog::getSaveFileName(this, tr("Save As"), m_document->path(),
+                                                tr("Rung Studio projects (*.rung)"));
+    if (path.isEmpty())
+        return false;
+    if (!path.endsWith(QLatin1String(".rung")))
+        path += QLatin1String(".rung");
+    return saveTo(path);
+}
+
+void MainWindow::importListing() {
+    if (!maybeSave())
+        return;
+    const QString path =
+        QFileDialog::getOpenFileName(this, tr("Import Instruction List"), QString(),
+                                     tr("Instruction lists (*.il *.txt);;All files (*)"));
+    if (!path.isEmpty())
+        openFile(path, m_document->target().id);
+}
+
+void MainWindow::exportListing() {
+    const QString path = QFileDialog::getSaveFileName(
+        this, tr("Export Instruction List"), QString(), tr("Instruction lists (*.il *.txt)"));
+    if (path.isEmpty())
+        return;
+    QSaveFile file(path);
+    const QByteArray bytes = m_document->listingText().toUtf8();
+    if (!file.open(QIODevice::WriteOnly) || file.write(bytes) != bytes.size() || !file.commit())
+        QMessageBox::critical(this, tr("Cannot export"),
+                              tr("%1: %2").arg(path, file.errorString()));
+}
+
+void MainWindow::exportImage(const QString &format) {
+    const QString path = QFileDialog::getSaveFileName(this, tr("Export Ladder"), QString(),
+                                                      QStringLiteral("*.%1").arg(format));
+    if (path.isEmpty())
+        return;
+    const model::Project &project = m_document->project();
+    const editor::LadderMetrics m = exportMetrics(project);
+    const QSize size(static_cast<int>(m.width()), static_cast<int>(programHeight(project, m)) + 20);
+    if (format == QLatin1String("png")) {
+        QImage image(size, QImage::Format_ARGB32);
+        image.fill(Qt::white);
+        QPainter p(&image);
+        paintProgram(p, project, m, 0, 10, [] {});
+        p.end();
+        if (!image.save(path))
+            QMessageBox::critical(this, tr("Cannot export"),
+                                  tr("%1 could not be written").arg(path));
+    } else if (format == QLatin1String("svg")) {
+        QSvgGenerator svg;
+        svg.setFileName(path);
+        svg.setSize(size);
+        svg.setViewBox(QRect(QPoint(0, 0), size));
+        svg.setTitle(QFileInfo(m_document->path()).baseName());
+        QPainter p(&svg);
+        paintProgram(p, project, m, 0, 10, [] {});
+    } else {
+        QPdfWriter pdf(path);
+        pdf.setPageSize(QPageSize(QPageSize::A4));
+        pdf.setPageOrientation(QPageLayout::Landscape);
+        pdf.setTitle(QFileInfo(m_document->path()).baseName());
+        QPainter p(&pdf);
+        const double scale = pdf.width() / m.width();
+        p.scale(scale, scale);
+        paintProgram(p, project, m, pdf.height() / scale, 10, [&] { pdf.newPage(); });
+    }
+}
+
+void MainWindow::printPreview() {
+    QPrinter printer(QPrinter::HighResolution);
+    printer.setPageOrientation(QPageLayout::Landscape);
+    QPrintPreviewDialog dialog(&printer, this);
+    connect(&dialog, &QPrintPreviewDialog::paintRequested, this, [this](QPrinter *pr) {
+        const model::Project &project = m_document->project();
+        const editor::LadderMetrics m = exportMetrics(project);
+        QPainter p(pr);
+        const QRect page = pr->pageLayout().paintRectPixels(pr->resolution());
+        const double scale = page.width() / m.width();
+        p.scale(scale, scale);
+        const QString header =
+            tr("%1 — %2 — %3")
+                .arg(m_document->path().isEmpty() ? tr("Untitled")
+                                                  : QFileInfo(m_document->path()).fileName(),
+                     project.target->displayName, QDate::currentDate().toString(Qt::ISODate));
+        int pageNumber = 1;
+        auto drawHeader = [&] {
+            p.drawText(QRectF(0, 0, m.width(), 24), Qt::AlignLeft | Qt::AlignVCenter,
+                       tr("%1, page %2").arg(header).arg(pageNumber));
+        };
+        drawHeader();
+        paintProgram(p, project, m, page.height() / scale, 30, [&] {
+            pr->newPage();
+            ++pageNumber;
+            drawHeader();
+        });
+    });
+    dialog.exec();
+}
+
+void MainWindow::addRecent(const QString &path) {
+    QSettings settings;
+    QStringList recent = settings.value(QStringLiteral("files/recent")).toStringList();
+    recent.removeAll(path);
+    recent.prepend(path);
+    while (recent.size() > kMaxRecent)
+        recent.removeLast();
+    settings.setValue(QStringLiteral("files/recent"), recent);
+    rebuildRecentMenu();
+}
+
+void MainWindow::rebuildRecentMenu() {
+    m_recentMenu->clear();
+    const QStringList recent = QSettings().value(QStringLiteral("files/recent")).toStringList();
+    for (const QString &path : recent)
+        m_recentMenu
+            ->addAction(QFileInfo(path).fileName(), this,
+                        [this, path] {
+                            if (maybeSave())
+                                openFile(path);
+                        })
+            ->setToolTip(path);
+    m_recentMenu->setEnabled(!recent.isEmpty());
+}
+
+void MainWindow::rebuildExamplesMenu() {
+    // The manuals' examples, one submenu per target, from the resources.
+    m_examplesMenu->clear();
+    QDirIterator it(QStringLiteral(":/examples"), {QStringLiteral("*.rung")}, QDir::Files,
+                    QDirIterator::Subdirectories);
+    std::map<QString, QStringList> byTarget;
+    while (it.hasNext()) {
+        const QString path = it.next();
+        byTarget[QFileInfo(path).dir().dirName()] << path;
+    }
+    for (auto &[target, paths] : byTarget) {
+        const model::Target *t = model::Target::byId(target);
+        QMenu *sub = m_examplesMenu->addMenu(t ? t->displayName : target);
+        paths.sort();
+        for (const QString &path : paths)
+            sub->addAction(QFileInfo(path).baseName(), this, [this, path] {
+                if (!maybeSave())
+                    return;
+                // Examples open as untitled copies: saving asks where.
+                model::ProjectError error;
+                auto project = model::loadProject(path, &error);
+                if (!project) {
+                    QMessageBox::critical(this, tr("Cannot open the example"), error.message);
+                    return;
+                }
+                m_document->setProject(*project, QString());
+                m_il->setTarget(*project->target);
+                refreshFromDocument();
+            });
+    }
+    m_examplesMenu->setEnabled(!byTarget.empty());
+}
+
+} // namespace rung::app

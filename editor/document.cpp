@@ -1,0 +1,215 @@
+#include "document.h"
+
+#include "model/ladder_text.h"
+
+#include <QUndoCommand>
+
+namespace rung::editor {
+
+namespace {
+
+// Replaces rungs [first, first + oldRungs.size()) by newRungs; stores both as values (the
+// serialized state of the rungs), never pointers into the document.
+class ReplaceRungsCommand : public QUndoCommand {
+public:
+    ReplaceRungsCommand(Document *doc, int first, std::vector<model::Rung> oldRungs,
+                        std::vector<model::Rung> newRungs, const QString &label)
+        : QUndoCommand(label)
+        , m_doc(doc)
+        , m_first(first)
+        , m_old(std::move(oldRungs))
+        , m_new(std::move(newRungs)) {}
+
+    void redo() override { m_doc->applyRungs(m_first, static_cast<int>(m_old.size()), m_new); }
+    void undo() override { m_doc->applyRungs(m_first, static_cast<int>(m_new.size()), m_old); }
+
+private:
+    Document *m_doc;
+    int m_first;
+    std::vector<model::Rung> m_old;
+    std::vector<model::Rung> m_new;
+};
+
+class SymbolsCommand : public QUndoCommand {
+public:
+    SymbolsCommand(Document *doc, std::vector<model::Symbol> oldSymbols,
+                   std::vector<model::Symbol> newSymbols)
+        : QUndoCommand(Document::tr("Edit symbols"))
+        , m_doc(doc)
+        , m_old(std::move(oldSymbols))
+        , m_new(std::move(newSymbols)) {}
+    void redo() override { m_doc->applySymbols(m_new); }
+    void undo() override { m_doc->applySymbols(m_old); }
+
+private:
+    Document *m_doc;
+    std::vector<model::Symbol> m_old;
+    std::vector<model::Symbol> m_new;
+};
+
+} // namespace
+
+Document::Document(QObject *parent)
+    : QObject(parent) {
+    reset(model::Target::get(model::Family::Vigor), QString());
+}
+
+void Document::reset(const model::Target &target, const QString &modelName) {
+    model::Project p;
+    p.target = &target;
+    p.model = modelName.isEmpty() ? target.defaultModel().name : modelName;
+    p.program.target = &target;
+    // A new program ends with END where the target has one.
+    if (const model::InstructionSpec *end = target.findInstruction(model::Op::End)) {
+        model::Rung r(1, 0);
+        model::Instruction ins;
+        ins.spec = end;
+        r.outputs[0] = ins;
+        p.program.rungs.push_back(r);
+    }
+    setProject(p, QString());
+}
+
+void Document::setProject(const model::Project &project, const QString &path) {
+    m_project = project;
+    m_project.program.target = m_project.target;
+    m_undo.clear();
+    setPath(path);
+    refresh();
+}
+
+const model::ModelVariant *Document::modelVariant() const {
+    const model::ModelVariant *m = m_project.target->model(m_project.model);
+    return m ? m : &m_project.target->defaultModel();
+}
+
+void Document::setPath(const QString &path) {
+    if (path == m_path)
+        return;
+    m_path = path;
+    emit pathChanged(path);
+}
+
+int Document::rungOfLine(int line) const {
+    int rung = -1;
+    for (std::size_t r = 0; r < m_rungLine.size(); ++r)
+        if (m_rungLine[r] > 0 && m_rungLine[r] <= line)
+            rung = static_cast<int>(r);
+    return rung;
+}
+
+int Document::firstLineOfRung(int rung) const {
+    if (rung < 0 || rung >= static_cast<int>(m_rungLine.size()))
+        return -1;
+    return m_rungLine[static_cast<std::size_t>(rung)];
+}
+
+int Document::stepCount() const {
+    int steps = 0;
+    for (const model::Instruction &i : m_listing.list.instructions)
+        steps += model::instructionSteps(*m_project.target, i);
+    return steps;
+}
+
+void Document::replaceRungs(int first, int count, const std::vector<model::Rung> &rungs,
+                            const QString &label) {
+    const auto &all = m_project.program.rungs;
+    first = std::clamp(first, 0, static_cast<int>(all.size()));
+    count = std::clamp(count, 0, static_cast<int>(all.size()) - first);
+    std::vector<model::Rung> old(all.begin() + first, all.begin() + first + count);
+    m_undo.push(new ReplaceRungsCommand(this, first, std::move(old), rungs, label));
+}
+
+void Document::setRung(int index, const model::Rung &rung, const QString &label) {
+    replaceRungs(index, 1, {rung}, label);
+}
+
+void Document::insertRung(int index, const model::Rung &rung) {
+    replaceRungs(index, 0, {rung}, tr("Insert rung"));
+}
+
+void Document::removeRungs(int first, int count) {
+    replaceRungs(first, count, {},
+                 count == 1 ? tr("Delete rung") : tr("Delete %n rungs", nullptr, count));
+}
+
+void Document::setSymbols(const std::vector<model::Symbol> &symbols) {
+    m_undo.push(new SymbolsCommand(this, m_project.symbols, symbols));
+}
+
+void Document::applySymbols(const std::vector<model::Symbol> &symbols) {
+    m_project.symbols = symbols;
+    emit programChanged();
+}
+
+bool Document::setListing(const QString &text, std::vector<model::Diagnostic> *errors) {
+    const model::ParseResult parsed =
+        model::parseInstructionList(*m_project.target, text, modelVariant());
+    std::vector<model::Diagnostic> problems;
+    for (const model::ParseError &e : parsed.errors) {
+        model::Diagnostic d;
+        d.code = QStringLiteral("SYN001");
+        d.location.line = e.line;
+        d.location.column = e.column;
+        d.message = e.message;
+        problems.push_back(d);
+    }
+    model::ToLadderResult ladder;
+    if (parsed.ok()) {
+        ladder = model::listToLadder(parsed.list);
+        for (const model::Diagnostic &d : ladder.problems)
+            problems.push_back(d);
+    }
+    if (errors)
+        *errors = problems;
+    if (model::hasErrors(problems))
+        return false;
+    if (ladder.ladder.rungs == m_project.program.rungs)
+        return true;
+    replaceRungs(0, static_cast<int>(m_project.program.rungs.size()), ladder.ladder.rungs,
+                 tr("Edit instruction list"));
+    return true;
+}
+
+void Document::applyRungs(int first, int count, const std::vector<model::Rung> &rungs) {
+    auto &all = m_project.program.rungs;
+    all.erase(all.begin() + first, all.begin() + first + count);
+    all.insert(all.begin() + first, rungs.begin(), rungs.end());
+    refresh();
+}
+
+void Document::refresh() {
+    m_listing = model::ladderToList(m_project.program);
+    m_listingText = model::printInstructionList(m_listing.list);
+    // Lines of the printed listing: comments come before their rung's first instruction.
+    m_rungLine.assign(m_project.program.rungs.size(), -1);
+    {
+        int line = 1;
+        std::size_t comment = 0;
+        const auto &ins = m_listing.list.instructions;
+        const auto &comments = m_listing.list.comments;
+        std::vector<int> lineOfInstruction(ins.size() + 1, 0);
+        for (std::size_t i = 0; i <= ins.size(); ++i) {
+            const int firstLine = line;
+            while (comment < comments.size() && comments[comment].first <= static_cast<int>(i)) {
+                ++line;
+                ++comment;
+            }
+            lineOfInstruction[i] = firstLine;
+            ++line;
+        }
+        for (std::size_t r = 0; r + 1 < m_listing.rungFirst.size() && r < m_rungLine.size(); ++r)
+            if (m_listing.rungFirst[r] < m_listing.rungFirst[r + 1])
+                m_rungLine[r] = lineOfInstruction[static_cast<std::size_t>(m_listing.rungFirst[r])];
+    }
+    model::CheckOptions options;
+    options.model = modelVariant();
+    m_diagnostics = model::checkLadder(m_project.program, options);
+    for (const model::Diagnostic &d : m_listing.problems)
+        if (d.code != QLatin1String("RC001")) // the checks report it with its fix
+            m_diagnostics.push_back(d);
+    model::sortDiagnostics(m_diagnostics);
+    emit programChanged();
+}
+
+} // namespace rung::editor

@@ -1,0 +1,76 @@
+#pragma once
+
+// The open project as both views see it: the ladder is the program, the listing is derived
+// from it (canonical form), every change goes through the undo stack as one step.
+
+#include "model/checks.h"
+#include "model/convert.h"
+#include "model/project.h"
+
+#include <QObject>
+#include <QUndoStack>
+
+namespace rung::editor {
+
+class Document : public QObject {
+    Q_OBJECT
+
+public:
+    explicit Document(QObject *parent = nullptr);
+
+    // A new empty program for a target and model.
+    void reset(const model::Target &target, const QString &modelName);
+    void setProject(const model::Project &project, const QString &path);
+
+    const model::Project &project() const { return m_project; }
+    const model::Target &target() const { return *m_project.target; }
+    const model::ModelVariant *modelVariant() const;
+    const model::LadderProgram &ladder() const { return m_project.program; }
+    QUndoStack *undoStack() { return &m_undo; }
+
+    QString path() const { return m_path; }
+    void setPath(const QString &path);
+    bool isModified() const { return !m_undo.isClean(); }
+    void markSaved() { m_undo.setClean(); }
+
+    // The canonical listing of the ladder and where each rung starts in it.
+    const model::ToListingResult &listing() const { return m_listing; }
+    QString listingText() const { return m_listingText; }
+    int rungOfLine(int line) const; // 1-based line of the listing text -> rung, -1 if none
+    int firstLineOfRung(int rung) const;
+    int stepCount() const;
+
+    const std::vector<model::Diagnostic> &diagnostics() const { return m_diagnostics; }
+
+    // Edits, each one undo step with its label.
+    void replaceRungs(int first, int count, const std::vector<model::Rung> &rungs,
+                      const QString &label);
+    void setRung(int index, const model::Rung &rung, const QString &label);
+    void insertRung(int index, const model::Rung &rung);
+    void removeRungs(int first, int count);
+    void setSymbols(const std::vector<model::Symbol> &symbols);
+    // Rebuilds the ladder from listing text; false (nothing changed) when the text has errors,
+    // which land in *errors.
+    bool setListing(const QString &text, std::vector<model::Diagnostic> *errors);
+
+    // Used by the undo commands only.
+    void applyRungs(int first, int count, const std::vector<model::Rung> &rungs);
+    void applySymbols(const std::vector<model::Symbol> &symbols);
+
+signals:
+    void programChanged();
+    void pathChanged(const QString &path);
+
+private:
+    void refresh();
+
+    model::Project m_project;
+    QString m_path;
+    QUndoStack m_undo;
+    model::ToListingResult m_listing;
+    QString m_listingText;
+    std::vector<int> m_rungLine; // first line of each rung in m_listingText (1-based)
+    std::vector<model::Diagnostic> m_diagnostics;
+};
+
+} // namespace rung::editor

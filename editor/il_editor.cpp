@@ -1,0 +1,288 @@
+#include "il_editor.h"
+
+#include "model/address.h"
+
+#include <Qsci/qsciapis.h>
+
+#include <QCoreApplication>
+#include <QFontDatabase>
+
+namespace rung::editor {
+
+namespace {
+
+constexpr int kErrorMarker = 1;
+constexpr int kWarningMarker = 2;
+
+} // namespace
+
+IlLexer::IlLexer(const model::Target &target, QObject *parent)
+    : QsciLexerCustom(parent)
+    , m_target(target) {}
+
+QString IlLexer::description(int style) const {
+    switch (style) {
+    case Default:
+        return tr("Default");
+    case Mnemonic:
+        return tr("Instruction");
+    case Device:
+        return tr("Device");
+    case Constant:
+        return tr("Constant");
+    case Comment:
+        return tr("Comment");
+    case StepNumber:
+        return tr("Step number");
+    case Error:
+        return tr("Unknown word");
+    default:
+        return {};
+    }
+}
+
+QColor IlLexer::defaultColor(int style) const {
+    switch (style) {
+    case Mnemonic:
+        return QColor(0x1f, 0x4e, 0xa8);
+    case Device:
+        return QColor(0x20, 0x24, 0x2a);
+    case Constant:
+        return QColor(0x9c, 0x4d, 0x00);
+    case Comment:
+        return QColor(0x2e, 0x7d, 0x32);
+    case StepNumber:
+        return QColor(0x8a, 0x8f, 0x98);
+    case Error:
+        return QColor(0xc6, 0x28, 0x28);
+    default:
+        return QColor(0x20, 0x24, 0x2a);
+    }
+}
+
+QFont IlLexer::defaultFont(int style) const {
+    QFont f = QFontDatabase::systemFont(QFontDatabase::FixedFont);
+    f.setPointSize(11);
+    if (style == Mnemonic)
+        f.setBold(true);
+    if (style == Comment)
+        f.setItalic(true);
+    return f;
+}
+
+std::vector<int> IlLexer::styleLine(const QString &line) const {
+    std::vector<int> styles(static_cast<std::size_t>(line.size()), Default);
+    qsizetype cut = line.indexOf(QLatin1Char(';'));
+    const qsizetype slashes = line.indexOf(QLatin1String("//"));
+    if (slashes >= 0 && (cut < 0 || slashes < cut))
+        cut = slashes;
+    const qsizetype codeEnd = cut >= 0 ? cut : line.size();
+    for (qsizetype i = codeEnd; i < line.size(); ++i)
+        styles[static_cast<std::size_t>(i)] = Comment;
+    // Words: the first (after an optional step number) is the mnemonic, possibly two words
+    // ("LD NOT", "AND LD"); the rest are operands.
+    struct Word {
+        qsizetype start, length;
+    };
+    std::vector<Word> words;
+    for (qsizetype i = 0; i < codeEnd;) {
+        while (i < codeEnd && line[i].isSpace())
+            ++i;
+        const qsizetype start = i;
+        while (i < codeEnd && !line[i].isSpace())
+            ++i;
+        if (i > start)
+            words.push_back({start, i - start});
+    }
+    auto paint = [&](const Word &w, int style) {
+        for (qsizetype k = w.start; k < w.start + w.length; ++k)
+            styles[static_cast<std::size_t>(k)] = style;
+    };
+    std::size_t next = 0;
+    if (words.size() > 1) {
+        const QString first = line.mid(words[0].start, words[0].length);
+        bool digits = !first.isEmpty();
+        for (QChar c : first)
+            digits = digits && c.isDigit();
+        if (digits) {
+            paint(words[0], StepNumber);
+            next = 1;
+        }
+    }
+    if (next < words.size()) {
+        const QString one = line.mid(words[next].start, words[next].length);
+        const QString two =
+            next + 1 < words.size()
+                ? line.mid(words[next].start,
+                           words[next + 1].start + words[next + 1].length - words[next].start)
+                : QString();
+        if (!two.isEmpty() && m_target.findInstruction(two)) {
+            paint({words[next].start,
+                   words[next + 1].start + words[next + 1].length - words[next].start},
+                  Mnemonic);
+            next += 2;
+        } else {
+            qsizetype letters = 0;
+            while (letters < one.size() && one[letters].isLetter())
+                ++letters;
+            const bool known = m_target.findInstruction(one) ||
+                               (letters > 0 && m_target.findInstruction(one.left(letters)) &&
+                                m_target.findInstruction(one.left(letters))->fusedOperand);
+            paint(words[next], known ? Mnemonic : Error);
+            ++next;
+        }
+    }
+    for (; next < words.size(); ++next) {
+        const QString w = line.mid(words[next].start, words[next].length);
+        const bool constant =
+            std::holds_alternative<model::Constant>(model::parseConstant(m_target, w));
+        paint(words[next], constant ? Constant : Device);
+    }
+    return styles;
+}
+
+void IlLexer::styleText(int start, int end) {
+    if (!editor() || end <= start)
+        return;
+    // bytes() may carry a terminating NUL: style exactly end - start bytes.
+    const QByteArray bytes = editor()->bytes(start, end).left(end - start);
+    const QString text = QString::fromUtf8(bytes.constData(), bytes.size());
+    startStyling(start);
+    int styled = 0;
+    const QStringList lines = text.split(QLatin1Char('\n'));
+    for (qsizetype n = 0; n < lines.size(); ++n) {
+        const QString &line = lines[n];
+        const std::vector<int> styles = styleLine(line);
+        // Scintilla styles bytes: each character takes its UTF-8 length.
+        for (qsizetype i = 0; i < line.size(); ++i) {
+            int length = 0;
+            if (line[i].isHighSurrogate())
+                length = 4;
+            else if (!line[i].isLowSurrogate())
+                length = static_cast<int>(QString(line[i]).toUtf8().size());
+            if (length > 0 && styled + length <= bytes.size()) {
+                setStyling(length, styles[static_cast<std::size_t>(i)]);
+                styled += length;
+            }
+        }
+        if (n + 1 < lines.size() && styled < bytes.size()) {
+            setStyling(1, Default); // the newline
+            ++styled;
+        }
+    }
+}
+
+IlEditor::IlEditor(const model::Target &target, QWidget *parent)
+    : QsciScintilla(parent)
+    , m_target(&target) {
+    setUtf8(true);
+    setMarginType(0, QsciScintilla::NumberMargin);
+    setMarginWidth(0, QStringLiteral("00000"));
+    setMarginType(1, QsciScintilla::SymbolMargin);
+    setMarginWidth(1, 14);
+    setMarginMarkerMask(1, (1 << kErrorMarker) | (1 << kWarningMarker));
+    markerDefine(QsciScintilla::Circle, kErrorMarker);
+    setMarkerBackgroundColor(QColor(0xd9, 0x3f, 0x3f), kErrorMarker);
+    markerDefine(QsciScintilla::Circle, kWarningMarker);
+    setMarkerBackgroundColor(QColor(0xe0, 0x9b, 0x1a), kWarningMarker);
+    setMarginType(2, QsciScintilla::TextMargin);
+    setMarginWidth(2, QStringLiteral("00000 "));
+    setAnnotationDisplay(QsciScintilla::AnnotationBoxed);
+    setCaretLineVisible(true);
+    setCaretLineBackgroundColor(QColor(0xf1, 0xf5, 0xfb));
+    setAutoCompletionSource(QsciScintilla::AcsAPIs);
+    setAutoCompletionThreshold(1);
+    setAutoCompletionCaseSensitivity(false);
+    setCallTipsStyle(QsciScintilla::CallTipsNoContext);
+    setAccessibleName(tr("Instruction list"));
+    setTarget(target);
+    connect(this, &QsciScintilla::textChanged, this, [this] {
+        if (!m_settingText)
+            emit listingEdited();
+    });
+    connect(this, &QsciScintilla::cursorPositionChanged, this, [this] { updateCallTip(); });
+}
+
+void IlEditor::setTarget(const model::Target &target) {
+    m_target = &target;
+    auto *lexer = new IlLexer(target, this);
+    auto *apis = new QsciAPIs(lexer);
+    for (const model::InstructionSpec &s : target.instructions) {
+        // "TMR(T0..T255 K1..K32767) On-delay timer" as the completion and the call tip.
+        const QString help = s.operandHelp ? QString::fromLatin1(s.operandHelp) : QString();
+        const QString summary =
+            s.summary ? QCoreApplication::translate("rung::model::Target", s.summary) : QString();
+        apis->add(QStringLiteral("%1(%2) %3")
+                      .arg(s.mnemonic.section(QLatin1Char(' '), 0, 0), help, summary));
+    }
+    apis->prepare();
+    setLexer(lexer);
+    if (m_lexer)
+        m_lexer->deleteLater();
+    m_lexer = lexer;
+}
+
+void IlEditor::setListing(const QString &text) {
+    if (text == this->text())
+        return;
+    m_settingText = true;
+    int line = 0;
+    int index = 0;
+    getCursorPosition(&line, &index);
+    setText(text);
+    setCursorPosition(std::min(line, lines() - 1), index);
+    m_settingText = false;
+}
+
+void IlEditor::showDiagnostics(const std::vector<model::Diagnostic> &diagnostics) {
+    markerDeleteAll(kErrorMarker);
+    markerDeleteAll(kWarningMarker);
+    clearAnnotations();
+    std::map<int, QStringList> notes;
+    for (const model::Diagnostic &d : diagnostics) {
+        if (!d.location.onListing())
+            continue;
+        const int line = d.location.line - 1;
+        markerAdd(line, d.severity == model::Severity::Error ? kErrorMarker : kWarningMarker);
+        notes[line] << QStringLiteral("%1 [%2]").arg(d.message, d.code);
+    }
+    for (const auto &[line, list] : notes)
+        annotate(line, list.join(QLatin1Char('\n')), IlLexer::Comment);
+}
+
+void IlEditor::setStepNumbers(const std::vector<int> &stepOfLine) {
+    for (int line = 0; line < lines(); ++line) {
+        const int step = line < static_cast<int>(stepOfLine.size())
+                             ? stepOfLine[static_cast<std::size_t>(line)]
+                             : -1;
+        setMarginText(
+            line, step >= 0 ? QStringLiteral("%1").arg(step, 4, 10, QLatin1Char('0')) : QString(),
+            IlLexer::StepNumber);
+    }
+}
+
+void IlEditor::goToLine(int line) {
+    setCursorPosition(std::max(0, line - 1), 0);
+    ensureLineVisible(std::max(0, line - 1));
+    setFocus();
+}
+
+void IlEditor::updateCallTip() {
+    // The operand form of the mnemonic on the cursor's line, in the tooltip of the editor.
+    int line = 0;
+    int index = 0;
+    getCursorPosition(&line, &index);
+    const QString word =
+        text(line).section(QLatin1Char(';'), 0, 0).simplified().section(QLatin1Char(' '), 0, 0);
+    const model::InstructionSpec *s = m_target->findInstruction(word);
+    if (s && s->operandHelp)
+        setToolTip(QStringLiteral("%1 %2 — %3")
+                       .arg(s->mnemonic, QString::fromLatin1(s->operandHelp),
+                            s->summary
+                                ? QCoreApplication::translate("rung::model::Target", s->summary)
+                                : QString()));
+    else
+        setToolTip(QString());
+}
+
+} // namespace rung::editor

@@ -1,0 +1,60 @@
+#pragma once
+
+// The instruction-list editor: QScintilla with a lexer per target (mnemonics, devices,
+// constants, comments in their own styles), step numbers in the margin, auto-completion and
+// call tips from the target's instruction table, and diagnostics as markers and annotations.
+
+#include "model/diagnostic.h"
+#include "model/target.h"
+
+#include <Qsci/qscilexercustom.h>
+#include <Qsci/qsciscintilla.h>
+
+namespace rung::editor {
+
+class IlLexer : public QsciLexerCustom {
+    Q_OBJECT
+
+public:
+    enum Style { Default = 0, Mnemonic, Device, Constant, Comment, StepNumber, Error };
+
+    explicit IlLexer(const model::Target &target, QObject *parent = nullptr);
+    const char *language() const override { return "IL"; }
+    QString description(int style) const override;
+    QColor defaultColor(int style) const override;
+    QFont defaultFont(int style) const override;
+    void styleText(int start, int end) override;
+
+    // The style of each character of one line (used by styleText, open for tests).
+    std::vector<int> styleLine(const QString &line) const;
+
+private:
+    const model::Target &m_target;
+};
+
+class IlEditor : public QsciScintilla {
+    Q_OBJECT
+
+public:
+    explicit IlEditor(const model::Target &target, QWidget *parent = nullptr);
+
+    void setTarget(const model::Target &target);
+    // Replaces the text without being taken for a user edit.
+    void setListing(const QString &text);
+    // Markers in the margin and annotations under the lines of the listing findings.
+    void showDiagnostics(const std::vector<model::Diagnostic> &diagnostics);
+    void setStepNumbers(const std::vector<int> &stepOfLine); // -1: no step on that line
+    void goToLine(int line);                                 // 1-based
+
+signals:
+    void listingEdited();
+
+private:
+    void updateCallTip();
+
+    const model::Target *m_target;
+    IlLexer *m_lexer = nullptr;
+    bool m_settingText = false;
+};
+
+} // namespace rung::editor

@@ -1,0 +1,317 @@
+#include "ladder_painter.h"
+
+#include <QPainterPath>
+
+namespace rung::editor {
+
+namespace {
+
+const QColor kInk(0x20, 0x24, 0x2a);
+const QColor kRail(0x3a, 0x5a, 0x8c);
+const QColor kDim(0x6b, 0x72, 0x80);
+const QColor kCursor(0x2f, 0x7d, 0xe1);
+const QColor kError(0xd9, 0x3f, 0x3f);
+const QColor kWarning(0xe0, 0x9b, 0x1a);
+
+const char *compareText(model::CompareOp op) {
+    switch (op) {
+    case model::CompareOp::Eq:
+        return "=";
+    case model::CompareOp::Ne:
+        return "<>";
+    case model::CompareOp::Lt:
+        return "<";
+    case model::CompareOp::Le:
+        return "<=";
+    case model::CompareOp::Gt:
+        return ">";
+    case model::CompareOp::Ge:
+        return ">=";
+    case model::CompareOp::None:
+        break;
+    }
+    return "";
+}
+
+} // namespace
+
+double LadderMetrics::rungHeight(const model::Rung &rung) const {
+    return (rung.comment.isEmpty() ? 0.0
+                                   : commentHeight * (rung.comment.count(QLatin1Char('\n')) + 1)) +
+           rung.rows * rowHeight + rungGap;
+}
+
+LadderPainter::LadderPainter(const model::Project &project, const LadderMetrics &metrics)
+    : m_project(project)
+    , m_m(metrics) {
+    m_font = QFont(QStringLiteral("DejaVu Sans"));
+    m_font.setPixelSize(static_cast<int>(metrics.rowHeight * 0.24));
+    m_small = m_font;
+    m_small.setPixelSize(static_cast<int>(metrics.rowHeight * 0.2));
+}
+
+QRectF LadderPainter::cellRect(const model::Rung &rung, int row, int column) const {
+    const double top =
+        (rung.comment.isEmpty() ? 0.0
+                                : m_m.commentHeight * (rung.comment.count(QLatin1Char('\n')) + 1)) +
+        row * m_m.rowHeight;
+    if (column >= m_m.gridColumns) // the output column, aligned for every rung
+        return QRectF(m_m.gutter + m_m.gridColumns * m_m.cellWidth, top, m_m.outputWidth,
+                      m_m.rowHeight);
+    return QRectF(m_m.gutter + column * m_m.cellWidth, top, m_m.cellWidth, m_m.rowHeight);
+}
+
+QRectF LadderPainter::outputRect(const model::Rung &rung, int row) const {
+    return cellRect(rung, row, m_m.gridColumns);
+}
+
+QString LadderPainter::deviceLabel(const model::Operand &o) const {
+    switch (o.kind) {
+    case model::Operand::Kind::Device:
+        return model::formatAddress(*m_project.target, o.address);
+    case model::Operand::Kind::Constant:
+        return model::formatConstant(*m_project.target, o.constant);
+    case model::Operand::Kind::Text:
+        return o.text;
+    }
+    return {};
+}
+
+QString LadderPainter::symbolLabel(const model::Operand &o) const {
+    if (o.kind != model::Operand::Kind::Device)
+        return {};
+    const model::Symbol *s = m_project.symbol(o.address);
+    return s ? s->name : QString();
+}
+
+void LadderPainter::paintContact(QPainter &p, const QRectF &cell, const model::Contact &c) const {
+    const double y = cell.top() + m_m.rowHeight * 0.55;
+    const double cx = cell.center().x();
+    const double half = m_m.cellWidth * 0.12;
+    const double h = m_m.rowHeight * 0.2;
+    p.setPen(QPen(kInk, 1.6));
+    if (c.invert) {
+        p.drawLine(QPointF(cell.left(), y), QPointF(cx - half, y));
+        p.drawLine(QPointF(cx + half, y), QPointF(cell.right(), y));
+        p.drawLine(QPointF(cx - half, y + h), QPointF(cx + half, y - h));
+        p.setFont(m_small);
+        p.drawText(QRectF(cell.left(), cell.top(), cell.width(), y - h - cell.top()),
+                   Qt::AlignCenter, QStringLiteral("INV"));
+        return;
+    }
+    if (c.compare != model::CompareOp::None && c.operands.size() >= 2) {
+        // A compare contact: a box with the comparison in it.
+        const QRectF box(cell.left() + 4, y - h, cell.width() - 8, 2 * h);
+        p.drawLine(QPointF(cell.left(), y), QPointF(box.left(), y));
+        p.drawLine(QPointF(box.right(), y), QPointF(cell.right(), y));
+        p.drawRect(box);
+        p.setFont(m_small);
+        QString text = deviceLabel(c.operands[0]) + QLatin1String(compareText(c.compare)) +
+                       deviceLabel(c.operands[1]);
+        if (c.mode == model::ContactMode::Negated)
+            text = QStringLiteral("NOT ") + text;
+        p.drawText(box, Qt::AlignCenter, text);
+        return;
+    }
+    p.drawLine(QPointF(cell.left(), y), QPointF(cx - half, y));
+    p.drawLine(QPointF(cx + half, y), QPointF(cell.right(), y));
+    p.drawLine(QPointF(cx - half, y - h), QPointF(cx - half, y + h));
+    p.drawLine(QPointF(cx + half, y - h), QPointF(cx + half, y + h));
+    switch (c.mode) {
+    case model::ContactMode::Normal:
+        break;
+    case model::ContactMode::Negated:
+        p.drawLine(QPointF(cx - half - 3, y + h), QPointF(cx + half + 3, y - h));
+        break;
+    case model::ContactMode::Rising:
+    case model::ContactMode::Falling: {
+        const bool up = c.mode == model::ContactMode::Rising;
+        const double a = up ? y + h * 0.7 : y - h * 0.7;
+        const double b = up ? y - h * 0.7 : y + h * 0.7;
+        p.drawLine(QPointF(cx, a), QPointF(cx, b));
+        p.drawLine(QPointF(cx, b), QPointF(cx - 3, b + (up ? 4 : -4)));
+        p.drawLine(QPointF(cx, b), QPointF(cx + 3, b + (up ? 4 : -4)));
+        break;
+    }
+    }
+    if (!c.operands.empty()) {
+        p.setFont(m_font);
+        p.drawText(QRectF(cell.left(), cell.top() + 1, cell.width(), y - h - cell.top() - 1),
+                   Qt::AlignHCenter | Qt::AlignBottom, deviceLabel(c.operands[0]));
+        const QString symbol = symbolLabel(c.operands[0]);
+        if (!symbol.isEmpty()) {
+            p.setFont(m_small);
+            p.setPen(kDim);
+            const QFontMetricsF fm(m_small);
+            p.drawText(QRectF(cell.left(), y + h, cell.width(), cell.bottom() - y - h),
+                       Qt::AlignHCenter | Qt::AlignTop,
+                       fm.elidedText(symbol, Qt::ElideRight, cell.width() - 4));
+        }
+    }
+}
+
+void LadderPainter::paintOutput(QPainter &p, const QRectF &area,
+                                const model::Instruction &ins) const {
+    const double y = area.top() + m_m.rowHeight * 0.55;
+    const double h = m_m.rowHeight * 0.2;
+    p.setPen(QPen(kInk, 1.6));
+    const model::Op op = ins.op();
+    const bool coil = (op == model::Op::Out || op == model::Op::Set || op == model::Op::Reset ||
+                       op == model::Op::PulseRise || op == model::Op::PulseFall) &&
+                      ins.operands.size() == 1;
+    if (coil) {
+        const double cx = area.left() + area.width() * 0.4;
+        const double r = h * 1.1;
+        p.drawLine(QPointF(area.left(), y), QPointF(cx - r, y));
+        p.drawLine(QPointF(cx + r, y), QPointF(area.right() - 6, y));
+        p.drawArc(QRectF(cx - r, y - r, r * 1.2, 2 * r), 100 * 16, 160 * 16);
+        p.drawArc(QRectF(cx - r * 0.2, y - r, r * 1.2, 2 * r), -80 * 16, 160 * 16);
+        QString mark;
+        if (op == model::Op::Set)
+            mark = QStringLiteral("S");
+        else if (op == model::Op::Reset)
+            mark = QStringLiteral("R");
+        else if (op == model::Op::PulseRise)
+            mark = QStringLiteral("P");
+        else if (op == model::Op::PulseFall)
+            mark = QStringLiteral("F");
+        else if (ins.spec && ins.spec->negated)
+            mark = QStringLiteral("/");
+        p.setFont(m_small);
+        p.drawText(QRectF(cx - r, y - r, 2 * r, 2 * r), Qt::AlignCenter, mark);
+        p.setFont(m_font);
+        p.drawText(QRectF(area.left(), area.top() + 1, area.width() * 0.8, y - r - area.top() - 1),
+                   Qt::AlignHCenter | Qt::AlignBottom, deviceLabel(ins.operands[0]));
+        const QString symbol = symbolLabel(ins.operands[0]);
+        if (!symbol.isEmpty()) {
+            p.setFont(m_small);
+            p.setPen(kDim);
+            p.drawText(QRectF(area.left(), y + r, area.width() * 0.8, area.bottom() - y - r),
+                       Qt::AlignHCenter | Qt::AlignTop, symbol);
+        }
+        return;
+    }
+    // A box: the instruction in a rectangle (timers, counters, moves, jumps, END).
+    const QRectF box(area.left() + 14, y - h * 1.4, area.width() - 26,
+                     area.height() - (y - h * 1.4 - area.top()) - 6);
+    p.drawLine(QPointF(area.left(), y), QPointF(box.left(), y));
+    p.drawLine(QPointF(box.right(), y), QPointF(area.right() - 6, y));
+    p.setBrush(QColor(0xf4, 0xf6, 0xfa));
+    p.drawRect(box);
+    p.setBrush(Qt::NoBrush);
+    p.setFont(m_font);
+    const QString text = model::printInstruction(*m_project.target, ins);
+    const QFontMetricsF fm(m_font);
+    p.drawText(box.adjusted(4, 0, -4, 0), Qt::AlignLeft | Qt::AlignTop | Qt::TextWordWrap,
+               fm.elidedText(text, Qt::ElideRight, box.width() * 2));
+}
+
+void LadderPainter::paintRung(QPainter &p, QPointF origin, int index,
+                              const RungDecorations &d) const {
+    const model::Rung &rung = m_project.program.rungs[static_cast<std::size_t>(index)];
+    p.save();
+    p.translate(origin);
+    p.setRenderHint(QPainter::Antialiasing, true);
+    const double commentH = rung.comment.isEmpty()
+                                ? 0.0
+                                : m_m.commentHeight * (rung.comment.count(QLatin1Char('\n')) + 1);
+    const double height = commentH + rung.rows * m_m.rowHeight;
+    const double rightRail = m_m.gutter + m_m.gridColumns * m_m.cellWidth + m_m.outputWidth - 6;
+
+    if (!rung.comment.isEmpty()) {
+        p.setFont(m_small);
+        p.setPen(QColor(0x2e, 0x7d, 0x32));
+        p.drawText(QRectF(m_m.gutter + 6, 0, m_m.width() - m_m.gutter, commentH),
+                   Qt::AlignLeft | Qt::AlignVCenter, rung.comment);
+    }
+    // Gutter: rung number, step address, an error or warning bar.
+    p.setFont(m_small);
+    p.setPen(kDim);
+    p.drawText(QRectF(0, commentH, m_m.gutter - 8, m_m.rowHeight * 0.5),
+               Qt::AlignRight | Qt::AlignVCenter, QString::number(index + 1));
+    if (d.firstStep >= 0)
+        p.drawText(QRectF(0, commentH + m_m.rowHeight * 0.45, m_m.gutter - 8, m_m.rowHeight * 0.4),
+                   Qt::AlignRight | Qt::AlignVCenter,
+                   QStringLiteral("%1").arg(d.firstStep, 4, 10, QLatin1Char('0')));
+    if (d.hasError || d.hasWarning)
+        p.fillRect(QRectF(2, commentH + 4, 4, height - commentH - 8),
+                   d.hasError ? kError : kWarning);
+
+    // Rails.
+    p.setPen(QPen(kRail, 3));
+    p.drawLine(QPointF(m_m.gutter, commentH), QPointF(m_m.gutter, height));
+    p.drawLine(QPointF(rightRail, commentH), QPointF(rightRail, height));
+
+    // Marked cells and the cursor under the drawing.
+    for (const auto &[row, col] : d.marked)
+        if (row >= 0 && row < rung.rows && col >= 0 && col < rung.columns)
+            p.fillRect(cellRect(rung, row, col), QColor(0xfd, 0xe2, 0xe2));
+
+    for (int r = 0; r < rung.rows; ++r) {
+        for (int c = 0; c < rung.columns; ++c) {
+            const model::Cell &cell = rung.cell(r, c);
+            const QRectF rect = cellRect(rung, r, c);
+            if (cell.kind == model::CellKind::Wire) {
+                p.setPen(QPen(kInk, 1.6));
+                const double y = rect.top() + m_m.rowHeight * 0.55;
+                p.drawLine(QPointF(rect.left(), y), QPointF(rect.right(), y));
+            } else if (cell.kind == model::CellKind::Contact) {
+                paintContact(p, rect, cell.contact);
+            }
+        }
+        // Vertical links between this row and the next.
+        p.setPen(QPen(kInk, 1.6));
+        for (int c = 0; c <= rung.columns; ++c) {
+            if (r + 1 >= rung.rows || !rung.link(r, c))
+                continue;
+            const double x = c == rung.columns ? m_m.gutter + m_m.gridColumns * m_m.cellWidth
+                                               : m_m.gutter + c * m_m.cellWidth;
+            const double y0 = cellRect(rung, r, 0).top() + m_m.rowHeight * 0.55;
+            p.drawLine(QPointF(x, y0), QPointF(x, y0 + m_m.rowHeight));
+        }
+        // From the last contact column to the output column the row is a wire when it has an
+        // output, so every output lines up at the right.
+        const auto &out = rung.outputs[static_cast<std::size_t>(r)];
+        const QRectF outRect = outputRect(rung, r);
+        const double y = outRect.top() + m_m.rowHeight * 0.55;
+        const bool linkedAtEnd =
+            rung.link(r, rung.columns) || (r > 0 && rung.link(r - 1, rung.columns));
+        const bool wiredToEnd =
+            rung.columns == 0 || rung.cell(r, rung.columns - 1).kind != model::CellKind::Empty;
+        if ((out || rung.coveredByBox(r) || linkedAtEnd) && wiredToEnd) {
+            p.setPen(QPen(kInk, 1.6));
+            p.drawLine(QPointF(m_m.gutter + rung.columns * m_m.cellWidth, y),
+                       QPointF(outRect.left(), y));
+        }
+        if (out && out->spec) {
+            QRectF area = outRect;
+            const std::vector<int> inputs = rung.boxInputRows(r);
+            if (inputs.size() > 1)
+                area.setBottom(outputRect(rung, inputs.back()).bottom());
+            paintOutput(p, area, *out);
+            if (inputs.size() > 1) {
+                p.setFont(m_small);
+                p.setPen(kDim);
+                const QStringList pins = inputs.size() == 2
+                                             ? QStringList{QStringLiteral("S"), QStringLiteral("R")}
+                                             : QStringList{QStringLiteral("U"), QStringLiteral("D"),
+                                                           QStringLiteral("R")};
+                for (std::size_t k = 0;
+                     k < inputs.size() && k < static_cast<std::size_t>(pins.size()); ++k) {
+                    const QRectF pin = outputRect(rung, inputs[k]);
+                    p.drawText(
+                        QRectF(pin.left() + 16, pin.top() + m_m.rowHeight * 0.55 - 8, 14, 16),
+                        Qt::AlignCenter, pins[static_cast<int>(k)]);
+                }
+            }
+        }
+    }
+    if (d.cursorRow >= 0 && d.cursorRow < rung.rows) {
+        p.setPen(QPen(kCursor, 2));
+        p.setBrush(Qt::NoBrush);
+        p.drawRect(cellRect(rung, d.cursorRow, d.cursorColumn).adjusted(1, 1, -1, -1));
+    }
+    p.restore();
+}
+
+} // namespace rung::editor

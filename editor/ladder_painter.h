@@ -1,0 +1,63 @@
+#pragma once
+
+// Draws rungs with QPainter: the screen, print, PDF, SVG and PNG export share it, so every
+// output looks the same and stays crisp at any scale.
+
+#include "model/diagnostic.h"
+#include "model/project.h"
+
+#include <QFont>
+#include <QPainter>
+
+#include <set>
+
+namespace rung::editor {
+
+struct LadderMetrics {
+    double cellWidth = 66;
+    double rowHeight = 52;
+    double gutter = 56;       // rung number and step address
+    double outputWidth = 150; // the coil / box column
+    double commentHeight = 20;
+    double rungGap = 10;
+    int gridColumns = 11; // contact columns before the output column (aligned for all rungs)
+
+    double rungHeight(const model::Rung &rung) const;
+    double width() const { return gutter + gridColumns * cellWidth + outputWidth + 12; }
+};
+
+struct RungDecorations {
+    int cursorRow = -1;
+    int cursorColumn = -1;                // grid column; >= gridColumns: the output column
+    std::set<std::pair<int, int>> marked; // cells (row, column) in error (reverse current)
+    bool hasError = false;
+    bool hasWarning = false;
+    int firstStep = -1;
+};
+
+class LadderPainter {
+public:
+    LadderPainter(const model::Project &project, const LadderMetrics &metrics);
+
+    // Paints rung `index` with its top-left corner at `origin`.
+    void paintRung(QPainter &p, QPointF origin, int index,
+                   const RungDecorations &decorations) const;
+
+    // Cell geometry within a rung drawn at (0, 0); column >= gridColumns is the output column.
+    QRectF cellRect(const model::Rung &rung, int row, int column) const;
+    QRectF outputRect(const model::Rung &rung, int row) const;
+    const LadderMetrics &metrics() const { return m_m; }
+
+private:
+    void paintContact(QPainter &p, const QRectF &cell, const model::Contact &contact) const;
+    void paintOutput(QPainter &p, const QRectF &area, const model::Instruction &ins) const;
+    QString deviceLabel(const model::Operand &operand) const;
+    QString symbolLabel(const model::Operand &operand) const;
+
+    const model::Project &m_project;
+    LadderMetrics m_m;
+    QFont m_font;
+    QFont m_small;
+};
+
+} // namespace rung::editor

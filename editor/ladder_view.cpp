@@ -1,0 +1,507 @@
+#include "ladder_view.h"
+
+#include <QCompleter>
+#include <QKeyEvent>
+#include <QLineEdit>
+#include <QPainter>
+#include <QScrollBar>
+
+#include <algorithm>
+
+namespace rung::editor {
+
+namespace {
+
+bool isContactOp(model::Op op) {
+    return op == model::Op::Load || op == model::Op::And || op == model::Op::Or ||
+           op == model::Op::Invert;
+}
+
+bool isUnconditional(model::Op op) {
+    return op == model::Op::End || op == model::Op::InterlockClear || op == model::Op::JumpEnd ||
+           op == model::Op::Return || op == model::Op::StepLadder || op == model::Op::Nop;
+}
+
+} // namespace
+
+LadderView::LadderView(Document *document, QWidget *parent)
+    : QAbstractScrollArea(parent)
+    , m_document(document) {
+    setFocusPolicy(Qt::StrongFocus);
+    viewport()->setBackgroundRole(QPalette::Base);
+    viewport()->setAutoFillBackground(true);
+    QPalette pal = viewport()->palette();
+    pal.setColor(QPalette::Base, Qt::white);
+    viewport()->setPalette(pal);
+    setAccessibleName(tr("Ladder diagram"));
+    connect(document, &Document::programChanged, this, [this] {
+        relayout();
+        setCursor(m_cursor);
+        viewport()->update();
+    });
+    m_editor = new QLineEdit(viewport());
+    m_editor->hide();
+    m_editor->setObjectName(QStringLiteral("cellEditor"));
+    QStringList words;
+    for (const model::InstructionSpec &s : document->target().instructions)
+        words << s.mnemonic;
+    auto *completer = new QCompleter(words, m_editor);
+    completer->setCaseSensitivity(Qt::CaseInsensitive);
+    m_editor->setCompleter(completer);
+    connect(m_editor, &QLineEdit::returnPressed, this, &LadderView::commitEditor);
+    relayout();
+}
+
+LadderMetrics LadderView::metrics() const {
+    LadderMetrics m;
+    int widest = std::max(1, m_document->target().limits.contactsPerRow);
+    for (const model::Rung &r : m_document->ladder().rungs)
+        widest = std::max(widest, r.columns);
+    m.gridColumns = widest;
+    m.cellWidth *= m_zoom;
+    m.rowHeight *= m_zoom;
+    m.gutter *= m_zoom;
+    m.outputWidth *= m_zoom;
+    m.commentHeight *= m_zoom;
+    m.rungGap *= m_zoom;
+    return m;
+}
+
+void LadderView::relayout() {
+    const LadderMetrics m = metrics();
+    const auto &rungs = m_document->ladder().rungs;
+    m_top.assign(rungs.size() + 1, 0.0);
+    double y = 8;
+    for (std::size_t i = 0; i < rungs.size(); ++i) {
+        m_top[i] = y;
+        y += m.rungHeight(rungs[i]);
+        if (static_cast<int>(i) == m_cursor.rung)
+            y += m.rowHeight; // a spare row under the rung being edited, for new branches
+    }
+    m_top.back() = y + 40;
+    verticalScrollBar()->setRange(0, std::max(0, static_cast<int>(y + 40) - viewport()->height()));
+    verticalScrollBar()->setPageStep(viewport()->height());
+    verticalScrollBar()->setSingleStep(static_cast<int>(m.rowHeight));
+    horizontalScrollBar()->setRange(0,
+                                    std::max(0, static_cast<int>(m.width()) - viewport()->width()));
+    horizontalScrollBar()->setPageStep(viewport()->width());
+}
+
+void LadderView::setZoom(double zoom) {
+    m_zoom = std::clamp(zoom, 0.4, 3.0);
+    relayout();
+    viewport()->update();
+}
+
+int LadderView::rungAt(double y) const {
+    if (m_top.size() < 2)
+        return -1;
+    const auto it = std::upper_bound(m_top.begin(), m_top.end() - 1, y);
+    return std::clamp(static_cast<int>(it - m_top.begin()) - 1, 0,
+                      static_cast<int>(m_top.size()) - 2);
+}
+
+model::Rung LadderView::currentRung() const {
+    const auto &rungs = m_document->ladder().rungs;
+    if (m_cursor.rung < 0 || m_cursor.rung >= static_cast<int>(rungs.size()))
+        return model::Rung(1, 1);
+    return rungs[static_cast<std::size_t>(m_cursor.rung)];
+}
+
+void LadderView::setCursor(const CellCursor &cursor) {
+    const auto &rungs = m_document->ladder().rungs;
+    CellCursor c = cursor;
+    const LadderMetrics m = metrics();
+    c.rung = std::clamp(c.rung, 0, std::max(0, static_cast<int>(rungs.size()) - 1));
+    const int rows = rungs.empty() ? 1 : rungs[static_cast<std::size_t>(c.rung)].rows;
+    c.row = std::clamp(c.row, 0, rows); // rows: the spare row
+    c.column = std::clamp(c.column, 0, m.gridColumns);
+    const bool rungChanged = c.rung != m_cursor.rung;
+    const bool changed = !(c == m_cursor);
+    m_cursor = c;
+    if (rungChanged)
+        relayout();
+    ensureCursorVisible();
+    viewport()->update();
+    if (changed)
+        emit cursorMoved(m_cursor);
+}
+
+QRect LadderView::cellRectOnScreen(const CellCursor &cell) const {
+    const auto &rungs = m_document->ladder().rungs;
+    if (cell.rung < 0 || cell.rung >= static_cast<int>(rungs.size()))
+        return {};
+    const LadderMetrics m = metrics();
+    LadderPainter painter(m_document->project(), m);
+    const QRectF r =
+        painter.cellRect(rungs[static_cast<std::size_t>(cell.rung)], cell.row, cell.column)
+            .translated(-horizontalScrollBar()->value(),
+                        m_top[static_cast<std::size_t>(cell.rung)] * 1.0 -
+                            verticalScrollBar()->value());
+    return r.toAlignedRect();
+}
+
+void LadderView::ensureCursorVisible() {
+    if (m_top.empty() || m_cursor.rung >= static_cast<int>(m_top.size()) - 1)
+        return;
+    const QRect r = cellRectOnScreen(m_cursor);
+    if (r.top() < 0)
+        verticalScrollBar()->setValue(verticalScrollBar()->value() + r.top() - 8);
+    else if (r.bottom() > viewport()->height())
+        verticalScrollBar()->setValue(verticalScrollBar()->value() + r.bottom() -
+                                      viewport()->height() + 8);
+    if (r.left() < 0)
+        horizontalScrollBar()->setValue(horizontalScrollBar()->value() + r.left() - 8);
+    else if (r.right() > viewport()->width())
+        horizontalScrollBar()->setValue(horizontalScrollBar()->value() + r.right() -
+                                        viewport()->width() + 8);
+}
+
+void LadderView::paintEvent(QPaintEvent *) {
+    QPainter p(viewport());
+    const LadderMetrics m = metrics();
+    LadderPainter painter(m_document->project(), m);
+    const auto &rungs = m_document->ladder().rungs;
+    const double top = verticalScrollBar()->value();
+    const double bottom = top + viewport()->height();
+    const auto &listing = m_document->listing();
+    std::vector<RungDecorations> decorations;
+    // Only the visible rungs are painted: a 10,000-rung program scrolls as fast as a small one.
+    for (int i = std::max(0, rungAt(top)); i < static_cast<int>(rungs.size()); ++i) {
+        const double y = m_top[static_cast<std::size_t>(i)];
+        if (y > bottom)
+            break;
+        RungDecorations d;
+        if (i == m_cursor.rung && hasFocus()) {
+            d.cursorRow = m_cursor.row;
+            d.cursorColumn = m_cursor.column;
+        } else if (i == m_cursor.rung) {
+            d.cursorRow = m_cursor.row;
+            d.cursorColumn = m_cursor.column;
+        }
+        if (static_cast<std::size_t>(i) + 1 < listing.rungFirst.size()) {
+            const int first = listing.rungFirst[static_cast<std::size_t>(i)];
+            if (first < static_cast<int>(listing.list.instructions.size()) &&
+                first < listing.rungFirst[static_cast<std::size_t>(i) + 1])
+                d.firstStep = listing.list.instructions[static_cast<std::size_t>(first)].step;
+        }
+        for (const model::Diagnostic &diag : m_document->diagnostics()) {
+            if (diag.location.rung != i)
+                continue;
+            if (diag.severity == model::Severity::Error)
+                d.hasError = true;
+            else if (diag.severity == model::Severity::Warning)
+                d.hasWarning = true;
+            if (diag.code == QLatin1String("RC001"))
+                for (const model::Location &l : diag.related)
+                    d.marked.insert({l.row, l.cell});
+        }
+        painter.paintRung(p, QPointF(-horizontalScrollBar()->value(), y - top), i, d);
+    }
+}
+
+QString LadderView::mnemonicFor(model::Op op, model::ContactMode mode) const {
+    const model::InstructionSpec *s = m_document->target().findInstruction(op, mode);
+    return s ? s->mnemonic : QString();
+}
+
+bool LadderView::enterInstruction(const QString &text, QString *error) {
+    const model::Target &t = m_document->target();
+    const model::ParseResult parsed =
+        model::parseInstructionList(t, text, m_document->modelVariant());
+    auto fail = [&](const QString &why) {
+        if (error)
+            *error = why;
+        emit message(why);
+        return false;
+    };
+    if (!parsed.ok())
+        return fail(parsed.errors.front().message);
+    if (parsed.list.instructions.size() != 1)
+        return fail(
+            tr("Type one instruction, for example \"%1 X0\"").arg(mnemonicFor(model::Op::Load)));
+    model::Instruction ins = parsed.list.instructions.front();
+    ins.line = ins.column = ins.step = 0;
+    const model::Op op = ins.op();
+    const LadderMetrics m = metrics();
+    model::Rung rung = currentRung();
+    int rungIndex = m_cursor.rung;
+    bool insertBefore = false;
+    // Typing on the END rung adds a rung in front of it: END stays last.
+    const bool onEnd = rung.outputs[0] && isUnconditional(rung.outputs[0]->op()) &&
+                       rung.columns == 0 && !isUnconditional(op);
+    if (onEnd) {
+        rung = model::Rung(1, 1);
+        insertBefore = true;
+    }
+    if (op == model::Op::AndBlock || op == model::Op::OrBlock || op == model::Op::Push ||
+        op == model::Op::ReadStack || op == model::Op::Pop)
+        return fail(
+            tr("%1 is drawn with vertical links, not typed into a cell").arg(ins.spec->mnemonic));
+    QString label;
+    if (isContactOp(op)) {
+        if (m_cursor.column >= m.gridColumns)
+            return fail(tr("Contacts go in the grid; the right-hand column holds coils and boxes"));
+        const int row = insertBefore ? 0 : m_cursor.row;
+        rung.resize(std::max(rung.rows, row + 1), std::max(rung.columns, m_cursor.column + 1));
+        model::Cell &cell = rung.cell(row, m_cursor.column);
+        cell.kind = model::CellKind::Contact;
+        cell.contact = model::Contact{};
+        cell.contact.invert = op == model::Op::Invert;
+        if (!cell.contact.invert) {
+            cell.contact.mode = ins.spec->mode;
+            cell.contact.compare = ins.spec->compare;
+            cell.contact.operands = ins.operands;
+        }
+        // The first row is the main circuit: a gap on it from the rail becomes a wire.
+        if (row == 0)
+            for (int c = 0; c < m_cursor.column; ++c)
+                if (rung.cell(0, c).kind == model::CellKind::Empty)
+                    rung.cell(0, c).kind = model::CellKind::Wire;
+        label = tr("Place %1").arg(model::printInstruction(t, ins));
+    } else {
+        const int row = insertBefore ? 0 : m_cursor.row;
+        rung.resize(std::max(rung.rows, row + 1), rung.columns);
+        rung.outputs[static_cast<std::size_t>(row)] = ins;
+        // Wire the row from its last element to the output column.
+        int last = -1;
+        for (int c = 0; c < rung.columns; ++c)
+            if (rung.cell(row, c).kind != model::CellKind::Empty)
+                last = c;
+        if (last >= 0 || row == 0)
+            for (int c = last + 1; c < rung.columns; ++c)
+                rung.cell(row, c).kind = model::CellKind::Wire;
+        label = tr("Place %1").arg(model::printInstruction(t, ins));
+    }
+    if (insertBefore)
+        m_document->replaceRungs(rungIndex, 0, {rung}, label);
+    else
+        m_document->setRung(rungIndex, rung, label);
+    CellCursor next = m_cursor;
+    if (isContactOp(op))
+        next.column = std::min(m_cursor.column + 1, m.gridColumns);
+    if (insertBefore)
+        next.row = 0;
+    setCursor(next);
+    return true;
+}
+
+void LadderView::placeWire() {
+    const LadderMetrics m = metrics();
+    if (m_cursor.column >= m.gridColumns)
+        return;
+    model::Rung rung = currentRung();
+    rung.resize(std::max(rung.rows, m_cursor.row + 1), std::max(rung.columns, m_cursor.column + 1));
+    rung.cell(m_cursor.row, m_cursor.column) = model::Cell{model::CellKind::Wire, {}};
+    m_document->setRung(m_cursor.rung, rung, tr("Draw a wire"));
+    setCursor({m_cursor.rung, m_cursor.row, m_cursor.column + 1});
+}
+
+void LadderView::toggleLink() {
+    const LadderMetrics m = metrics();
+    model::Rung rung = currentRung();
+    const int node =
+        m_cursor.column >= m.gridColumns ? rung.columns : std::min(m_cursor.column, rung.columns);
+    rung.resize(std::max(rung.rows, m_cursor.row + 2), rung.columns);
+    rung.setLink(m_cursor.row, node, !rung.link(m_cursor.row, node));
+    m_document->setRung(m_cursor.rung, rung, tr("Toggle a vertical link"));
+}
+
+void LadderView::clearCell() {
+    const LadderMetrics m = metrics();
+    model::Rung rung = currentRung();
+    if (m_cursor.row >= rung.rows)
+        return;
+    if (m_cursor.column >= m.gridColumns) {
+        if (!rung.outputs[static_cast<std::size_t>(m_cursor.row)])
+            return;
+        rung.outputs[static_cast<std::size_t>(m_cursor.row)].reset();
+    } else {
+        if (m_cursor.column >= rung.columns ||
+            rung.cell(m_cursor.row, m_cursor.column).kind == model::CellKind::Empty)
+            return;
+        rung.cell(m_cursor.row, m_cursor.column) = model::Cell{};
+    }
+    m_document->setRung(m_cursor.rung, rung, tr("Delete"));
+}
+
+void LadderView::insertColumn() {
+    model::Rung rung = currentRung();
+    if (m_cursor.column > rung.columns)
+        return;
+    rung.insertColumn(m_cursor.column);
+    m_document->setRung(m_cursor.rung, rung, tr("Insert a cell"));
+}
+
+void LadderView::insertRow() {
+    model::Rung rung = currentRung();
+    rung.insertRow(std::min(m_cursor.row, rung.rows));
+    m_document->setRung(m_cursor.rung, rung, tr("Insert a row"));
+}
+
+void LadderView::deleteRow() {
+    model::Rung rung = currentRung();
+    if (rung.rows <= 1 || m_cursor.row >= rung.rows)
+        return;
+    rung.removeRow(m_cursor.row);
+    m_document->setRung(m_cursor.rung, rung, tr("Delete a row"));
+}
+
+void LadderView::insertRung() {
+    m_document->insertRung(m_cursor.rung, model::Rung(1, 1));
+    setCursor({m_cursor.rung, 0, 0});
+}
+
+void LadderView::deleteRung() {
+    if (m_document->ladder().rungs.empty())
+        return;
+    m_document->removeRungs(m_cursor.rung, 1);
+}
+
+void LadderView::openEditor(const QString &initial) {
+    const QRect r = cellRectOnScreen(m_cursor);
+    m_editor->setGeometry(r.left(), r.top() + r.height() / 4, std::max(r.width() * 2, 180),
+                          r.height() / 2);
+    m_editor->setText(initial);
+    m_editor->setStyleSheet(QString());
+    m_editor->show();
+    m_editor->setFocus();
+}
+
+void LadderView::commitEditor() {
+    QString error;
+    if (enterInstruction(m_editor->text(), &error)) {
+        m_editor->hide();
+        setFocus();
+    } else {
+        m_editor->setStyleSheet(QStringLiteral("border: 2px solid #d93f3f;"));
+        m_editor->setToolTip(error);
+    }
+}
+
+void LadderView::keyPressEvent(QKeyEvent *event) {
+    const LadderMetrics m = metrics();
+    const auto mods = event->modifiers();
+    const auto &rungs = m_document->ladder().rungs;
+    CellCursor c = m_cursor;
+    const int rows = rungs.empty() ? 1 : rungs[static_cast<std::size_t>(c.rung)].rows;
+    switch (event->key()) {
+    case Qt::Key_Escape:
+        m_editor->hide();
+        return;
+    case Qt::Key_Left:
+        c.column = std::max(0, c.column - 1);
+        return setCursor(c);
+    case Qt::Key_Right:
+        c.column = std::min(m.gridColumns, c.column + 1);
+        return setCursor(c);
+    case Qt::Key_Home:
+        c.column = 0;
+        return setCursor(c);
+    case Qt::Key_End:
+        c.column = m.gridColumns;
+        return setCursor(c);
+    case Qt::Key_Up:
+        if (c.row > 0) {
+            --c.row;
+        } else if (c.rung > 0) {
+            --c.rung;
+            c.row = rungs[static_cast<std::size_t>(c.rung)].rows - 1;
+        }
+        return setCursor(c);
+    case Qt::Key_Down:
+        if (c.row < rows) {
+            ++c.row;
+        } else if (c.rung + 1 < static_cast<int>(rungs.size())) {
+            ++c.rung;
+            c.row = 0;
+        }
+        return setCursor(c);
+    case Qt::Key_PageDown:
+        c.rung = std::min(static_cast<int>(rungs.size()) - 1, c.rung + 10);
+        c.row = 0;
+        return setCursor(c);
+    case Qt::Key_PageUp:
+        c.rung = std::max(0, c.rung - 10);
+        c.row = 0;
+        return setCursor(c);
+    case Qt::Key_F5:
+        return openEditor(mnemonicFor(model::Op::Load) + QLatin1Char(' '));
+    case Qt::Key_F6:
+        return openEditor(mnemonicFor(model::Op::Load, model::ContactMode::Negated) +
+                          QLatin1Char(' '));
+    case Qt::Key_F7:
+        c.column = m.gridColumns;
+        setCursor(c);
+        return openEditor(mnemonicFor(model::Op::Out) + QLatin1Char(' '));
+    case Qt::Key_F8:
+        c.column = m.gridColumns;
+        setCursor(c);
+        return openEditor(QString());
+    case Qt::Key_F9:
+        if (mods & Qt::ShiftModifier)
+            return toggleLink();
+        return placeWire();
+    case Qt::Key_Delete:
+        if (mods & Qt::ShiftModifier)
+            return deleteRung();
+        if (mods & Qt::ControlModifier)
+            return deleteRow();
+        return clearCell();
+    case Qt::Key_Insert:
+        if (mods & Qt::ShiftModifier)
+            return insertRung();
+        if (mods & Qt::ControlModifier)
+            return insertRow();
+        return insertColumn();
+    case Qt::Key_Return:
+    case Qt::Key_Enter:
+        return openEditor(QString());
+    default:
+        break;
+    }
+    const QString text = event->text();
+    if (!text.isEmpty() && text[0].isPrint() && !(mods & (Qt::ControlModifier | Qt::AltModifier))) {
+        openEditor(text);
+        return;
+    }
+    QAbstractScrollArea::keyPressEvent(event);
+}
+
+void LadderView::mousePressEvent(QMouseEvent *event) {
+    setFocus();
+    const LadderMetrics m = metrics();
+    const double y = event->position().y() + verticalScrollBar()->value();
+    const double x = event->position().x() + horizontalScrollBar()->value();
+    const int rung = rungAt(y);
+    if (rung < 0)
+        return;
+    const model::Rung &r = m_document->ladder().rungs[static_cast<std::size_t>(rung)];
+    const double commentH =
+        r.comment.isEmpty() ? 0.0 : m.commentHeight * (r.comment.count(QLatin1Char('\n')) + 1);
+    const int row = std::max(
+        0, static_cast<int>((y - m_top[static_cast<std::size_t>(rung)] - commentH) / m.rowHeight));
+    const int column = std::max(0, static_cast<int>((x - m.gutter) / m.cellWidth));
+    m_editor->hide();
+    setCursor({rung, row, std::min(column, m.gridColumns)});
+}
+
+void LadderView::mouseDoubleClickEvent(QMouseEvent *event) {
+    mousePressEvent(event);
+    openEditor(QString());
+}
+
+void LadderView::wheelEvent(QWheelEvent *event) {
+    if (event->modifiers() & Qt::ControlModifier) {
+        setZoom(m_zoom * (event->angleDelta().y() > 0 ? 1.1 : 1 / 1.1));
+        return;
+    }
+    QAbstractScrollArea::wheelEvent(event);
+}
+
+void LadderView::resizeEvent(QResizeEvent *event) {
+    QAbstractScrollArea::resizeEvent(event);
+    relayout();
+}
+
+} // namespace rung::editor

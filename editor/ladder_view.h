@@ -1,0 +1,81 @@
+#pragma once
+
+// The ladder editor: paints only the visible rungs, moves a cell cursor with the keyboard,
+// and edits as the vendor tools do: F5 normally open contact, F6 normally closed, F7 coil,
+// F8 instruction, F9 wire, Shift+F9 vertical link, typing a mnemonic with its operand
+// ("LD X0", "OUT Y1", "TMR T0 K10") into the cell, Insert/Delete for cells, rows and rungs.
+
+#include "document.h"
+#include "ladder_painter.h"
+
+#include <QAbstractScrollArea>
+#include <QPointer>
+
+class QLineEdit;
+
+namespace rung::editor {
+
+struct CellCursor {
+    int rung = 0;
+    int row = 0;
+    int column = 0; // grid column; == gridColumns: the output column
+    friend bool operator==(const CellCursor &, const CellCursor &) = default;
+};
+
+class LadderView : public QAbstractScrollArea {
+    Q_OBJECT
+
+public:
+    explicit LadderView(Document *document, QWidget *parent = nullptr);
+
+    CellCursor cursor() const { return m_cursor; }
+    void setCursor(const CellCursor &cursor);
+    double zoom() const { return m_zoom; }
+    void setZoom(double zoom);
+    LadderMetrics metrics() const;
+
+    // Places what one instruction text says at the cursor ("LD X0", "ANI X2", "OUT Y1");
+    // false with *error when the text is not one instruction of the target.
+    bool enterInstruction(const QString &text, QString *error = nullptr);
+    void placeWire();
+    void toggleLink();
+    void clearCell();
+    void insertColumn();
+    void insertRow();
+    void deleteRow();
+    void insertRung();
+    void deleteRung();
+    void openEditor(const QString &initial);
+    QLineEdit *inlineEditor() const { return m_editor; }
+
+    // The rung geometry, for navigation and tests.
+    QRect cellRectOnScreen(const CellCursor &cell) const;
+
+signals:
+    void cursorMoved(const rung::editor::CellCursor &cursor);
+    void message(const QString &text);
+
+protected:
+    void paintEvent(QPaintEvent *event) override;
+    void keyPressEvent(QKeyEvent *event) override;
+    void mousePressEvent(QMouseEvent *event) override;
+    void mouseDoubleClickEvent(QMouseEvent *event) override;
+    void wheelEvent(QWheelEvent *event) override;
+    void resizeEvent(QResizeEvent *event) override;
+
+private:
+    void relayout();
+    int rungAt(double y) const;
+    void ensureCursorVisible();
+    model::Rung currentRung() const;
+    void commitEditor();
+    QString mnemonicFor(model::Op op, model::ContactMode mode = model::ContactMode::Normal) const;
+
+    Document *m_document;
+    CellCursor m_cursor;
+    double m_zoom = 1.0;
+    std::vector<double> m_top; // y of each rung at zoom 1, plus the total height at the end
+    QLineEdit *m_editor = nullptr;
+};
+
+} // namespace rung::editor

@@ -1,0 +1,71 @@
+#include "problems_view.h"
+
+#include <QContextMenuEvent>
+#include <QHeaderView>
+#include <QMenu>
+#include <QStyle>
+
+namespace rung::editor {
+
+ProblemsView::ProblemsView(QWidget *parent)
+    : QTreeWidget(parent) {
+    setColumnCount(4);
+    setHeaderLabels({tr("Severity"), tr("Code"), tr("Place"), tr("Message")});
+    setRootIsDecorated(false);
+    setUniformRowHeights(true);
+    setAlternatingRowColors(true);
+    header()->setStretchLastSection(true);
+    setAccessibleName(tr("Problems"));
+    connect(this, &QTreeWidget::itemActivated, this, [this](QTreeWidgetItem *item) {
+        if (const model::Diagnostic *d = diagnosticAt(indexOfTopLevelItem(item)))
+            emit locate(*d);
+    });
+}
+
+void ProblemsView::setDiagnostics(const std::vector<model::Diagnostic> &diagnostics) {
+    m_diagnostics = diagnostics;
+    model::sortDiagnostics(m_diagnostics);
+    clear();
+    for (const model::Diagnostic &d : m_diagnostics) {
+        auto *item = new QTreeWidgetItem(this);
+        const bool error = d.severity == model::Severity::Error;
+        item->setIcon(0, style()->standardIcon(error ? QStyle::SP_MessageBoxCritical
+                                                     : QStyle::SP_MessageBoxWarning));
+        item->setText(0, error                                    ? tr("Error")
+                         : d.severity == model::Severity::Warning ? tr("Warning")
+                                                                  : tr("Note"));
+        item->setText(1, d.code);
+        QString place;
+        if (d.location.onListing())
+            place = tr("line %1").arg(d.location.line);
+        else if (d.location.onLadder())
+            place = d.location.row >= 0
+                        ? tr("rung %1, row %2").arg(d.location.rung + 1).arg(d.location.row + 1)
+                        : tr("rung %1").arg(d.location.rung + 1);
+        item->setText(2, place);
+        item->setText(3, d.fix ? tr("%1 (fix available)").arg(d.message) : d.message);
+        item->setToolTip(3, d.message);
+    }
+    for (int c = 0; c < 3; ++c)
+        resizeColumnToContents(c);
+}
+
+const model::Diagnostic *ProblemsView::diagnosticAt(int row) const {
+    if (row < 0 || row >= static_cast<int>(m_diagnostics.size()))
+        return nullptr;
+    return &m_diagnostics[static_cast<std::size_t>(row)];
+}
+
+void ProblemsView::contextMenuEvent(QContextMenuEvent *event) {
+    const model::Diagnostic *d = diagnosticAt(indexOfTopLevelItem(itemAt(event->pos())));
+    if (!d)
+        return;
+    QMenu menu(this);
+    const model::Diagnostic copy = *d;
+    menu.addAction(tr("Show"), this, [this, copy] { emit locate(copy); });
+    if (d->fix)
+        menu.addAction(d->fix->label, this, [this, copy] { emit applyFix(copy); });
+    menu.exec(event->globalPos());
+}
+
+} // namespace rung::editor

@@ -1,0 +1,32 @@
+#pragma once
+
+// The problems panel: every finding of the checks, sorted by place, with its code and
+// severity. Activating one asks to show its place; a finding with a fix offers it.
+
+#include "model/diagnostic.h"
+
+#include <QTreeWidget>
+
+namespace rung::editor {
+
+class ProblemsView : public QTreeWidget {
+    Q_OBJECT
+
+public:
+    explicit ProblemsView(QWidget *parent = nullptr);
+
+    void setDiagnostics(const std::vector<model::Diagnostic> &diagnostics);
+    const model::Diagnostic *diagnosticAt(int row) const;
+
+signals:
+    void locate(const rung::model::Diagnostic &diagnostic);
+    void applyFix(const rung::model::Diagnostic &diagnostic);
+
+protected:
+    void contextMenuEvent(QContextMenuEvent *event) override;
+
+private:
+    std::vector<model::Diagnostic> m_diagnostics;
+};
+
+} // namespace rung::editor
