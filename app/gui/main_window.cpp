@@ -99,7 +99,17 @@ MainWindow::MainWindow(QWidget *parent)
     updateTitle();
 }
 
-MainWindow::~MainWindow() = default;
+MainWindow::~MainWindow() {
+    // The child widgets outlive this body and emit while they go (cursor moves, text
+    // cleared): nothing of this window may answer them any more.
+    m_ilTimer.stop();
+    m_recoveryTimer.stop();
+    m_il->disconnect(this);
+    m_ladder->disconnect(this);
+    m_document->disconnect(this);
+    m_problems->disconnect(this);
+    m_document->undoStack()->disconnect(this);
+}
 
 void MainWindow::buildDocks() {
     auto *problemsDock = new QDockWidget(tr("Problems"), this);

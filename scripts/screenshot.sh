@@ -1,0 +1,16 @@
+#!/usr/bin/env bash
+# Starts the IDE under Xvfb on a project (default: the Vigor traffic light) and saves a
+# picture of the window: bash scripts/screenshot.sh [FILE] [OUT.png]
+set -euo pipefail
+cd "$(dirname "$0")/.."
+file="${1:-resources/examples/vigor/traffic-light.rung}"
+out="${2:-docs/screenshot.png}"
+build="${RUNG_BUILD_DIR:-build}"
+if [ ! -x "$build/app/rungstudio" ]; then
+    cmake -S . -B "$build" -G Ninja -DCMAKE_BUILD_TYPE=RelWithDebInfo -DRUNG_BUILD_TESTS=OFF >/dev/null
+    cmake --build "$build" --target rungstudio
+fi
+# A throw-away settings directory: the picture shows the defaults a new user sees.
+export XDG_CONFIG_HOME="$(mktemp -d)" XDG_DATA_HOME="$(mktemp -d)"
+xvfb-run -a -s "-screen 0 1600x1000x24" "$build/app/rungstudio" "$file" --screenshot "$out"
+echo "Saved $out"

@@ -1,0 +1,204 @@
+#include "app/gui/main_window.h"
+#include "editor/il_editor.h"
+#include "editor/ladder_view.h"
+#include "editor/problems_view.h"
+
+#include "model/ladder_text.h"
+
+#include <QLineEdit>
+#include <QSignalSpy>
+#include <QTemporaryDir>
+#include <QTest>
+
+#include <gtest/gtest.h>
+
+using namespace rung;
+
+namespace {
+
+struct Fixture : ::testing::Test {
+    app::MainWindow window;
+    void SetUp() override {
+        window.newProject(model::Target::get(model::Family::Vigor), QStringLiteral("VB"));
+        window.show();
+        window.ladderView()->setFocus();
+    }
+    QString listing() { return window.document()->listingText(); }
+    editor::LadderView *ladder() { return window.ladderView(); }
+    void typeIntoCell(Qt::Key key, const char *operand) {
+        QTest::keyClick(ladder(), key);
+        QLineEdit *edit = ladder()->inlineEditor();
+        ASSERT_TRUE(edit->isVisible());
+        QTest::keyClicks(edit, QString::fromLatin1(operand));
+        QTest::keyClick(edit, Qt::Key_Return);
+    }
+};
+
+} // namespace
+
+TEST_F(Fixture, FunctionKeysAndTypingPlaceContactsAndCoils) {
+    EXPECT_EQ(listing(), QStringLiteral("END\n"));
+    typeIntoCell(Qt::Key_F5, "X0"); // "LD " is prefilled
+    typeIntoCell(Qt::Key_F6, "X1"); // "LDI "
+    typeIntoCell(Qt::Key_F7, "Y0"); // "OUT "
+    EXPECT_EQ(listing(), QStringLiteral("LD X0\nANI X1\nOUT Y0\nEND\n"));
+    // Typing a mnemonic with its operand into the selected cell, as the vendor tools allow.
+    ladder()->setCursor({0, 1, 0});
+    QTest::keyClicks(ladder(), QStringLiteral("L"));
+    QLineEdit *edit = ladder()->inlineEditor();
+    QTest::keyClicks(edit, QStringLiteral("D M5"));
+    QTest::keyClick(edit, Qt::Key_Return);
+    ladder()->setCursor({0, 0, 1});
+    QTest::keyClick(ladder(), Qt::Key_F9, Qt::ShiftModifier); // link row 0 to row 1 at column 1
+    EXPECT_EQ(listing(), QStringLiteral("LD X0\nOR M5\nANI X1\nOUT Y0\nEND\n"));
+}
+
+TEST_F(Fixture, AWrongInstructionKeepsTheEditorOpenAndChangesNothing) {
+    QTest::keyClick(ladder(), Qt::Key_F5);
+    QTest::keyClicks(ladder()->inlineEditor(), QStringLiteral("X8"));
+    QTest::keyClick(ladder()->inlineEditor(), Qt::Key_Return);
+    EXPECT_TRUE(ladder()->inlineEditor()->isVisible());
+    EXPECT_EQ(ladder()->inlineEditor()->toolTip(), QStringLiteral("X8: X is numbered in octal"));
+    EXPECT_EQ(listing(), QStringLiteral("END\n"));
+}
+
+TEST_F(Fixture, EveryEditIsOneUndoStepWithALabel) {
+    typeIntoCell(Qt::Key_F5, "X0");
+    typeIntoCell(Qt::Key_F7, "Y0");
+    QUndoStack *undo = window.document()->undoStack();
+    ASSERT_EQ(undo->count(), 2);
+    EXPECT_EQ(undo->text(0), QStringLiteral("Place LD X0"));
+    EXPECT_EQ(undo->text(1), QStringLiteral("Place OUT Y0"));
+    undo->undo();
+    // The rung keeps its contact and loses its coil: not a complete circuit, so no listing yet.
+    const model::Rung &rung = window.document()->ladder().rungs.front();
+    EXPECT_EQ(rung.cell(0, 0).kind, model::CellKind::Contact);
+    EXPECT_FALSE(rung.outputs[0].has_value());
+    undo->undo();
+    EXPECT_EQ(listing(), QStringLiteral("END\n"));
+    undo->redo();
+    undo->redo();
+    EXPECT_EQ(listing(), QStringLiteral("LD X0\nOUT Y0\nEND\n"));
+}
+
+TEST_F(Fixture, EditingTheListRebuildsTheLadder) {
+    window.ilEditor()->setText(QStringLiteral("LD X0\nLD X1\nORB\nOUT Y0\nEND\n"));
+    window.applyListing();
+    const auto &rungs = window.document()->ladder().rungs;
+    ASSERT_EQ(rungs.size(), 2u);
+    EXPECT_EQ(rungs[0].rows, 2);
+    // The ladder writes the canonical form back.
+    EXPECT_EQ(listing(), QStringLiteral("LD X0\nOR X1\nOUT Y0\nEND\n"));
+    EXPECT_EQ(window.document()->undoStack()->count(), 1);
+}
+
+TEST_F(Fixture, InvalidListKeepsTheLastLadderAndShowsTheError) {
+    window.ilEditor()->setText(QStringLiteral("LD X0\nOUT Y0\nEND\n"));
+    window.applyListing();
+    window.ilEditor()->setText(QStringLiteral("LD X8\nOUT Y0\nEND\n"));
+    window.applyListing();
+    EXPECT_EQ(listing(), QStringLiteral("LD X0\nOUT Y0\nEND\n"));
+    bool found = false;
+    for (int i = 0; window.problemsView()->diagnosticAt(i); ++i)
+        found = found || (window.problemsView()->diagnosticAt(i)->code == QLatin1String("SYN001") &&
+                          window.problemsView()->diagnosticAt(i)->location.line == 1);
+    EXPECT_TRUE(found);
+}
+
+TEST_F(Fixture, EditingTheListAfterAPauseNeedsNoExplicitApply) {
+    QSignalSpy changed(window.document(), &editor::Document::programChanged);
+    window.ilEditor()->setText(QStringLiteral("LD X2\nOUT Y2\nEND\n"));
+    ASSERT_TRUE(changed.wait(3000)); // the 500 ms pause timer fires
+    EXPECT_EQ(window.document()->ladder().rungs.size(), 2u);
+}
+
+TEST_F(Fixture, MouseClickSelectsTheCell) {
+    window.ilEditor()->setText(QStringLiteral("LD X0\nAND X1\nOUT Y0\nEND\n"));
+    window.applyListing();
+    const QRect cell = ladder()->cellRectOnScreen({0, 0, 1});
+    QTest::mouseClick(ladder()->viewport(), Qt::LeftButton, Qt::NoModifier, cell.center());
+    EXPECT_EQ(ladder()->cursor(), (editor::CellCursor{0, 0, 1}));
+}
+
+TEST_F(Fixture, ProblemsNavigateToTheirPlace) {
+    window.ilEditor()->setText(QStringLiteral("LD X0\nOUT Y0\nLD X1\nOUT X2\nEND\n"));
+    window.applyListing();
+    editor::ProblemsView *problems = window.problemsView();
+    int row = -1;
+    for (int i = 0; problems->diagnosticAt(i); ++i)
+        if (problems->diagnosticAt(i)->code == QLatin1String("OP002"))
+            row = i;
+    ASSERT_GE(row, 0);
+    QSignalSpy moved(ladder(), &editor::LadderView::cursorMoved);
+    emit problems->itemActivated(problems->topLevelItem(row), 0);
+    EXPECT_EQ(ladder()->cursor().rung, 1);
+}
+
+TEST_F(Fixture, ReverseCurrentFixIsOneUndoStep) {
+    const char *bridge = "LADDER vigor WIDTH 8\n"
+                         "RUNG 1 ROWS 3 COLUMNS 3\n"
+                         "|-[ X0 ]-+----------[ X1 ]-+(OUT Y0)\n"
+                         "|        |                 |\n"
+                         "|        +-[ X2 ]-+        +\n"
+                         "|                 |        |\n"
+                         "|-[ X3 ]----------+-[ X4 ]-+\n";
+    auto parsed = model::parseLadderText(model::Target::get(model::Family::Vigor),
+                                         QString::fromLatin1(bridge));
+    ASSERT_TRUE(parsed.ok());
+    window.document()->replaceRungs(0, 0, parsed.ladder.rungs, QStringLiteral("paste"));
+    auto find = [&]() -> const model::Diagnostic * {
+        for (const model::Diagnostic &d : window.document()->diagnostics())
+            if (d.code == QLatin1String("RC001"))
+                return &d;
+        return nullptr;
+    };
+    ASSERT_NE(find(), nullptr);
+    const model::Diagnostic d = *find();
+    ASSERT_TRUE(d.fix.has_value());
+    const int before = window.document()->undoStack()->count();
+    emit window.problemsView()->applyFix(d);
+    EXPECT_EQ(find(), nullptr);
+    EXPECT_EQ(window.document()->undoStack()->count(), before + 1);
+    window.document()->undoStack()->undo();
+    EXPECT_NE(find(), nullptr);
+}
+
+TEST_F(Fixture, SaveAndOpenGiveTheSameProgram) {
+    window.ilEditor()->setText(
+        QStringLiteral("; pump\nLD X0\nOR X1\nANI X2\nOUT Y0\nTMR T0 K10\nEND\n"));
+    window.applyListing();
+    QTemporaryDir dir;
+    const QString path = dir.filePath(QStringLiteral("pump.rung"));
+    ASSERT_TRUE(window.saveTo(path));
+    EXPECT_FALSE(window.document()->isModified());
+    const QString before = listing();
+    window.newProject(model::Target::get(model::Family::Vpc), QString());
+    ASSERT_TRUE(window.openFile(path, QString(), true));
+    EXPECT_EQ(listing(), before);
+    EXPECT_EQ(window.document()->target().id, QStringLiteral("vigor"));
+}
+
+TEST_F(Fixture, UnreadableFileLeavesTheProgramAlone) {
+    window.ilEditor()->setText(QStringLiteral("LD X0\nOUT Y0\nEND\n"));
+    window.applyListing();
+    QTemporaryDir dir;
+    const QString path = dir.filePath(QStringLiteral("broken.rung"));
+    QFile f(path);
+    ASSERT_TRUE(f.open(QIODevice::WriteOnly));
+    f.write(
+        "{\"format\": \"rungstudio-project\", \"schema\": 1, \"target\": \"vigor\", \"rungs\": [");
+    f.close();
+    EXPECT_FALSE(window.openFile(path, QString(), true));
+    EXPECT_EQ(listing(), QStringLiteral("LD X0\nOUT Y0\nEND\n"));
+}
+
+TEST_F(Fixture, RecoveryBringsBackUnsavedWork) {
+    window.ilEditor()->setText(QStringLiteral("LD X5\nOUT Y5\nEND\n"));
+    window.applyListing();
+    ASSERT_TRUE(window.document()->isModified());
+    window.writeRecovery();
+    app::MainWindow other;
+    ASSERT_TRUE(other.offerRecovery(false));
+    EXPECT_EQ(other.document()->listingText(), QStringLiteral("LD X5\nOUT Y5\nEND\n"));
+    QFile::remove(window.recoveryPath());
+}
