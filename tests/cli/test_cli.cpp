@@ -1,0 +1,189 @@
+#include "app/cli/cli.h"
+
+#include "model/project.h"
+
+#include <QDir>
+#include <QFile>
+#include <QProcess>
+#include <QTemporaryDir>
+
+#include <gtest/gtest.h>
+
+namespace {
+
+struct CliRun {
+    int code = 0;
+    QString out;
+    QString err;
+};
+
+CliRun cli(QStringList args) {
+    CliRun r;
+    QTextStream out(&r.out);
+    QTextStream err(&r.err);
+    args.prepend(QStringLiteral("rungstudio-cli"));
+    r.code = rung::app::runCli(args, out, err);
+    out.flush();
+    err.flush();
+    return r;
+}
+
+QString write(const QTemporaryDir &dir, const QString &name, const QByteArray &content) {
+    const QString path = dir.filePath(name);
+    QFile f(path);
+    f.open(QIODevice::WriteOnly);
+    f.write(content);
+    return path;
+}
+
+} // namespace
+
+TEST(CliCheck, PrintsOneLinePerFindingWithPlaceSeverityAndCode) {
+    QTemporaryDir dir;
+    const QString file = write(dir, QStringLiteral("dup.il"),
+                               "LD 000.00\nOUT 010.00\nLD 000.01\nOUT 010.00\nEND(01)\n");
+    const CliRun r =
+        cli({QStringLiteral("check"), file, QStringLiteral("--target"), QStringLiteral("cpm1")});
+    EXPECT_EQ(r.code, 1);
+    EXPECT_EQ(
+        r.out,
+        QStringLiteral(
+            "%1:4:1: error: 010.00 is driven twice (\"Oper duplication\"); the first is on line 2 "
+            "[DC001]\n")
+            .arg(file));
+}
+
+TEST(CliCheck, ExitsZeroWhenThereAreOnlyWarnings) {
+    QTemporaryDir dir;
+    const QString file =
+        write(dir, QStringLiteral("w.il"), "; target: vigor\nLD X0\nOUT Y0\nLD X1\nOUT Y0\nEND\n");
+    const CliRun r = cli({QStringLiteral("check"), file});
+    EXPECT_EQ(r.code, 0);
+    EXPECT_TRUE(r.out.contains(QStringLiteral(":5:1: warning: ")));
+}
+
+TEST(CliCheck, SyntaxErrorsHaveLineAndColumn) {
+    QTemporaryDir dir;
+    const QString file = write(dir, QStringLiteral("bad.il"), "LD X0\nOUT Y8\nEND\n");
+    const CliRun r =
+        cli({QStringLiteral("check"), file, QStringLiteral("--target"), QStringLiteral("vigor")});
+    EXPECT_EQ(r.code, 1);
+    EXPECT_EQ(r.out,
+              QStringLiteral("%1:2:6: error: Y8: Y is numbered in octal [SYN001]\n").arg(file));
+}
+
+TEST(CliCheck, LadderFindingsNameTheRung) {
+    QTemporaryDir dir;
+    const QString file = write(dir, QStringLiteral("bridge.ladder"),
+                               "LADDER vigor WIDTH 8\n"
+                               "RUNG 1 ROWS 3 COLUMNS 3\n"
+                               "|-[ X0 ]-+----------[ X1 ]-+(OUT Y0)\n"
+                               "|        |                 |\n"
+                               "|        +-[ X2 ]-+        +\n"
+                               "|                 |        |\n"
+                               "|-[ X3 ]----------+-[ X4 ]-+\n");
+    const CliRun r = cli({QStringLiteral("check"), file});
+    EXPECT_EQ(r.code, 1);
+    EXPECT_TRUE(r.out.contains(QStringLiteral("%1:rung 1:1:4: error: Reverse current").arg(file)))
+        << r.out.toStdString();
+    EXPECT_TRUE(r.out.contains(QStringLiteral("[RC001]")));
+}
+
+TEST(CliCheck, ModelNarrowsTheRanges) {
+    QTemporaryDir dir;
+    const QString file = write(dir, QStringLiteral("v.il"), "LD i00\nOUT o20\nEND\n");
+    EXPECT_EQ(
+        cli({QStringLiteral("check"), file, QStringLiteral("--target"), QStringLiteral("vpc")})
+            .code,
+        0);
+    const CliRun r =
+        cli({QStringLiteral("check"), file, QStringLiteral("--target"), QStringLiteral("vpc"),
+             QStringLiteral("--model"), QStringLiteral("VPC2416")});
+    EXPECT_EQ(r.code, 1);
+    EXPECT_TRUE(r.out.contains(QStringLiteral("v.il:2:6: error: o20 is beyond VPC2416's outputs o00..o15")));
+}
+
+TEST(CliUsage, ErrorsExitTwo) {
+    EXPECT_EQ(cli({}).code, 2);
+    EXPECT_EQ(cli({QStringLiteral("frobnicate")}).code, 2);
+    EXPECT_EQ(cli({QStringLiteral("check")}).code, 2);
+    const CliRun missing = cli({QStringLiteral("check"), QStringLiteral("/nonexistent/x.il"),
+                             QStringLiteral("--target"), QStringLiteral("vigor")});
+    EXPECT_EQ(missing.code, 2);
+    EXPECT_TRUE(missing.err.contains(QStringLiteral("/nonexistent/x.il")));
+    QTemporaryDir dir;
+    const QString noTarget = write(dir, QStringLiteral("n.il"), "LD X0\nOUT Y0\n");
+    const CliRun r = cli({QStringLiteral("check"), noTarget});
+    EXPECT_EQ(r.code, 2);
+    EXPECT_TRUE(r.err.contains(QStringLiteral("--target")));
+    EXPECT_EQ(cli({QStringLiteral("--help")}).code, 0);
+}
+
+TEST(CliConvert, ListingToLadderToProjectAndBack) {
+    QTemporaryDir dir;
+    const QByteArray listing = "LD X0\nOR X1\nLD X2\nOR X3\nANB\nOUT Y0\nEND\n";
+    const QString il = write(dir, QStringLiteral("p.il"), listing);
+    const QString ladder = dir.filePath(QStringLiteral("p.ladder"));
+    const QString project = dir.filePath(QStringLiteral("p.rung"));
+    ASSERT_EQ(
+        cli({QStringLiteral("convert"), il, QStringLiteral("--target"), QStringLiteral("vigor"),
+             QStringLiteral("--to"), QStringLiteral("ladder"), QStringLiteral("-o"), ladder})
+            .code,
+        0);
+    ASSERT_EQ(cli({QStringLiteral("convert"), ladder, QStringLiteral("--to"),
+                   QStringLiteral("project"), QStringLiteral("-o"), project})
+                  .code,
+              0);
+    const CliRun back =
+        cli({QStringLiteral("convert"), project, QStringLiteral("--to"), QStringLiteral("il")});
+    EXPECT_EQ(back.code, 0);
+    EXPECT_EQ(back.out, QString::fromLatin1(listing));
+}
+
+TEST(CliConvert, FromOverridesTheExtension) {
+    QTemporaryDir dir;
+    const QString file = write(dir, QStringLiteral("prog.txt"), "LD X0\nOUT Y0\nEND\n");
+    const CliRun r = cli({QStringLiteral("convert"), file, QStringLiteral("--from"),
+                       QStringLiteral("il"), QStringLiteral("--target"), QStringLiteral("vigor"),
+                       QStringLiteral("--to"), QStringLiteral("ladder")});
+    EXPECT_EQ(r.code, 0);
+    EXPECT_TRUE(r.out.startsWith(QStringLiteral("LADDER vigor WIDTH")));
+}
+
+TEST(CliConvert, RefusesToWriteWhatHasErrors) {
+    QTemporaryDir dir;
+    const QString file = write(dir, QStringLiteral("e.il"), "LD X0\nANB\nOUT Y0\n");
+    const QString out = dir.filePath(QStringLiteral("e.rung"));
+    const CliRun r =
+        cli({QStringLiteral("convert"), file, QStringLiteral("--target"), QStringLiteral("vigor"),
+             QStringLiteral("--to"), QStringLiteral("project"), QStringLiteral("-o"), out});
+    EXPECT_EQ(r.code, 1);
+    EXPECT_FALSE(QFile::exists(out));
+    EXPECT_TRUE(r.err.contains(QStringLiteral("e.il:2:1: error:")));
+}
+
+TEST(CliBinary, TheInstalledToolRunsTheSameCommands) {
+    QTemporaryDir dir;
+    const QString file = write(dir, QStringLiteral("b.il"), "LD X0\nOUT X1\nEND\n");
+    QProcess p;
+    p.start(QStringLiteral(RUNG_CLI_PATH),
+            {QStringLiteral("check"), file, QStringLiteral("--target"), QStringLiteral("vigor")});
+    ASSERT_TRUE(p.waitForFinished(30000));
+    EXPECT_EQ(p.exitCode(), 1);
+    EXPECT_TRUE(QString::fromUtf8(p.readAllStandardOutput()).contains(QStringLiteral("[OP002]")));
+}
+
+TEST(Examples, EveryExampleProjectLoadsAndHasNoError) {
+    int count = 0;
+    for (const char *target : {"vpc", "vigor", "cpm1", "pl110"}) {
+        QDir dir(QStringLiteral(RUNG_SOURCE_DIR "/resources/examples/") +
+                 QString::fromLatin1(target));
+        for (const QString &name : dir.entryList({QStringLiteral("*.rung")})) {
+            const CliRun r = cli({QStringLiteral("check"), dir.filePath(name)});
+            EXPECT_EQ(r.code, 0) << name.toStdString() << "\n"
+                                 << r.out.toStdString() << r.err.toStdString();
+            ++count;
+        }
+    }
+    EXPECT_GE(count, 12);
+}

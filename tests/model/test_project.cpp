@@ -1,0 +1,131 @@
+#include "model/convert.h"
+#include "model/project.h"
+
+#include <QDir>
+#include <QFile>
+#include <QRandomGenerator>
+#include <QTemporaryDir>
+
+#include <gtest/gtest.h>
+
+using namespace rung::model;
+
+namespace {
+
+Project sample() {
+    const Target &t = Target::get(Family::Vigor);
+    ParseResult parsed = parseInstructionList(
+        t, QStringLiteral("; start\nLD X0\nOR Y0\nANI X1\nOUT Y0\nLD X2\nMPS\nAND "
+                          "X3\nOUT Y1\nMPP\nTMR T0 K10\nEND\n"));
+    EXPECT_TRUE(parsed.ok());
+    Project p;
+    p.target = &t;
+    p.model = QStringLiteral("VB");
+    p.program = listToLadder(parsed.list).ladder;
+    p.symbols = {{std::get<Address>(parseAddress(t, u"X0")), QStringLiteral("Start"),
+                  QStringLiteral("green button")}};
+    p.setValues[std::get<Address>(parseAddress(t, u"T0"))] = 10;
+    p.watchLists = {{QStringLiteral("Main"), {QStringLiteral("X0"), QStringLiteral("Y0")}}};
+    return p;
+}
+
+QByteArray readAll(const QString &path) {
+    QFile f(path);
+    f.open(QIODevice::ReadOnly);
+    return f.readAll();
+}
+
+std::string why(const char *json) {
+    ProjectError e;
+    EXPECT_FALSE(projectFromJson(QByteArray(json), &e).has_value());
+    return e.message.toStdString();
+}
+
+} // namespace
+
+TEST(ProjectFile, SaveAndLoadKeepEverything) {
+    QTemporaryDir dir;
+    const QString path = dir.filePath(QStringLiteral("a.rung"));
+    const Project p = sample();
+    ProjectError error;
+    ASSERT_TRUE(saveProject(p, path, &error)) << error.message.toStdString();
+    auto loaded = loadProject(path, &error);
+    ASSERT_TRUE(loaded.has_value()) << error.message.toStdString();
+    EXPECT_EQ(loaded->target, p.target);
+    EXPECT_EQ(loaded->model, p.model);
+    EXPECT_EQ(loaded->program.rungs, p.program.rungs);
+    ASSERT_EQ(loaded->symbols.size(), 1u);
+    EXPECT_EQ(loaded->symbols[0].name, QStringLiteral("Start"));
+    EXPECT_EQ(loaded->setValues, p.setValues);
+    ASSERT_EQ(loaded->watchLists.size(), 1u);
+    EXPECT_EQ(loaded->watchLists[0].devices, p.watchLists[0].devices);
+    // Writing it again gives the same bytes: the format is stable for diffs.
+    EXPECT_EQ(projectToJson(*loaded), readAll(path));
+}
+
+TEST(ProjectFile, IsReadableJsonWithASchemaVersion) {
+    const QByteArray json = projectToJson(sample());
+    EXPECT_TRUE(json.contains("\"format\": \"rungstudio-project\""));
+    EXPECT_TRUE(json.contains("\"schema\": 1"));
+    EXPECT_TRUE(json.contains("\"X0\""));
+    EXPECT_TRUE(json.contains("\"OUT Y0\""));
+}
+
+TEST(ProjectFile, MalformedJsonNamesLineAndColumn) {
+    EXPECT_EQ(why("{\n  \"format\": \"rungstudio-project\",\n  \"schema\": 1,,\n}"),
+              "Line 3, column 16: the file is not valid JSON (unterminated object)");
+}
+
+TEST(ProjectFile, TruncatedFileIsAClearError) {
+    const QByteArray json = projectToJson(sample());
+    ProjectError e;
+    EXPECT_FALSE(projectFromJson(json.left(json.size() / 2), &e).has_value());
+    EXPECT_TRUE(e.message.contains(QStringLiteral("not valid JSON"))) << e.message.toStdString();
+}
+
+TEST(ProjectFile, NewerSchemaIsRefusedWithTheReason) {
+    EXPECT_EQ(why("{\"format\": \"rungstudio-project\", \"schema\": 7, \"target\": \"vigor\"}"),
+              "The project was written by a newer Rung Studio (schema 7); this version reads "
+              "schema 1 and older");
+}
+
+TEST(ProjectFile, WrongContentNamesThePath) {
+    EXPECT_EQ(why("{\"format\": \"rungstudio-project\", \"schema\": 1, \"target\": \"s7\"}"),
+              "\"target\": unknown PLC family \"s7\"");
+    EXPECT_EQ(why("{\"format\": \"rungstudio-project\", \"schema\": 1, \"target\": \"vigor\", "
+                  "\"rungs\": [{\"rows\": 1, "
+                  "\"columns\": 1, \"cells\": [[\"X8\"]], \"outputs\": []}]}"),
+              "rungs[0].cells[0][0]: X8: X is numbered in octal");
+    EXPECT_EQ(why("[1, 2]"),
+              "The file is JSON but not a Rung Studio project (no top-level object)");
+}
+
+TEST(ProjectFile, RandomBytesAndHugeFilesAreRefused) {
+    QByteArray noise(4096, '\0');
+    QRandomGenerator rng(7);
+    for (char &c : noise)
+        c = static_cast<char>(rng.bounded(256));
+    ProjectError e;
+    EXPECT_FALSE(projectFromJson(noise, &e).has_value());
+    EXPECT_FALSE(e.message.isEmpty());
+    QTemporaryDir dir;
+    const QString big = dir.filePath(QStringLiteral("big.rung"));
+    QFile f(big);
+    ASSERT_TRUE(f.open(QIODevice::WriteOnly));
+    ASSERT_TRUE(f.resize(100LL * 1024 * 1024)); // 100 MB, sparse
+    f.close();
+    EXPECT_FALSE(loadProject(big, &e).has_value());
+    EXPECT_TRUE(e.message.contains(QStringLiteral("100 MB"))) << e.message.toStdString();
+}
+
+TEST(ProjectFile, FailedSaveLeavesTheOldFileUntouched) {
+    QTemporaryDir dir;
+    const QString path = dir.filePath(QStringLiteral("keep.rung"));
+    ProjectError error;
+    ASSERT_TRUE(saveProject(sample(), path, &error));
+    const QByteArray before = readAll(path);
+    // A directory where the file should go: the save fails and says why.
+    EXPECT_FALSE(saveProject(sample(), dir.filePath(QStringLiteral("missing/dir/x.rung")), &error));
+    EXPECT_TRUE(error.message.contains(QStringLiteral("missing/dir/x.rung")));
+    EXPECT_EQ(readAll(path), before);
+}
