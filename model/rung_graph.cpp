@@ -134,7 +134,8 @@ bool reduce(std::vector<Edge> edges, int source, int sink, Expr *out) {
             ++degree[e.to].first;
             ++degree[e.from].second;
         }
-        for (const auto &[n, d] : degree) {
+        for (const auto &[node, d] : degree) {
+            const int n = node; // clang 14 cannot capture structured bindings
             if (n == source || n == sink || d.first != 1 || d.second != 1)
                 continue;
             auto in =

@@ -1,0 +1,28 @@
+#!/usr/bin/env bash
+# Builds the libFuzzer targets with clang (ASan + UBSan) and runs each for SECONDS:
+#   bash scripts/fuzz.sh [SECONDS] [fuzz_il_parser|fuzz_project_loader]
+# Corpora start from the project's own listings, ladders and projects; findings land in
+# build-fuzz/findings/.
+set -euo pipefail
+cd "$(dirname "$0")/.."
+seconds="${1:-300}"
+only="${2:-}"
+bash scripts/install-deps.sh
+CC=clang CXX=clang++ cmake -S . -B build-fuzz -G Ninja -DCMAKE_BUILD_TYPE=RelWithDebInfo \
+    -DRUNG_BUILD_FUZZERS=ON -DRUNG_BUILD_GUI=OFF -DRUNG_BUILD_BENCHMARKS=OFF >/dev/null
+cmake --build build-fuzz --target fuzz_il_parser fuzz_project_loader
+mkdir -p build-fuzz/corpus/il build-fuzz/corpus/project build-fuzz/findings
+# The IL fuzzer reads the first byte as the target: 1 = Vigor (listings here are mostly Vigor).
+for f in tests/data/sim/*.il; do
+    { printf '\001'; cat "$f"; } > "build-fuzz/corpus/il/$(basename "$f")"
+done
+cp resources/examples/*/*.rung build-fuzz/corpus/project/
+export ASAN_OPTIONS=detect_leaks=0
+for name in fuzz_il_parser fuzz_project_loader; do
+    [ -n "$only" ] && [ "$only" != "$name" ] && continue
+    corpus=build-fuzz/corpus/il
+    [ "$name" = fuzz_project_loader ] && corpus=build-fuzz/corpus/project
+    echo "== $name for ${seconds}s"
+    "build-fuzz/tests/fuzz/$name" -max_total_time="$seconds" -max_len=65536 -timeout=10 \
+        -artifact_prefix=build-fuzz/findings/ "$corpus" 2>&1 | tail -n 4
+done
