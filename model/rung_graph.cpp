@@ -221,15 +221,19 @@ InputNetwork analyze(const Graph &g, int row) {
         grew = false;
         for (const Edge &e : g.edges)
             if (e.from != e.to && forward[static_cast<std::size_t>(e.from)] &&
-                !forward[static_cast<std::size_t>(e.to)])
-                grew = forward[static_cast<std::size_t>(e.to)] = 1;
+                !forward[static_cast<std::size_t>(e.to)]) {
+                forward[static_cast<std::size_t>(e.to)] = 1;
+                grew = true;
+            }
     }
     for (bool grew = true; grew;) {
         grew = false;
         for (auto it = g.edges.rbegin(); it != g.edges.rend(); ++it)
             if (it->from != it->to && backward[static_cast<std::size_t>(it->to)] &&
-                !backward[static_cast<std::size_t>(it->from)])
-                grew = backward[static_cast<std::size_t>(it->from)] = 1;
+                !backward[static_cast<std::size_t>(it->from)]) {
+                backward[static_cast<std::size_t>(it->from)] = 1;
+                grew = true;
+            }
     }
     std::vector<Edge> relevant;
     for (const Edge &e : g.edges)

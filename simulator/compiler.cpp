@@ -588,6 +588,7 @@ CompileResult Compiler::run() {
             break;
         case Op::Push:
             s.code = Code::Push;
+            m_rungStart = false; // "MPS LD X1 ANB": the load opens a block on the branch
             if (++m_push > pushLimit) {
                 error(ins, Tr::tr("more than %1 nested %2").arg(pushLimit).arg(spec.mnemonic));
                 m_push = pushLimit;
@@ -597,6 +598,7 @@ CompileResult Compiler::run() {
         case Op::ReadStack:
         case Op::Pop:
             s.code = spec.op == Op::ReadStack ? Code::ReadStack : Code::Pop;
+            m_rungStart = false; // "MPP LD X1 ANB" continues the branch
             if (m_push == 0)
                 error(ins, Tr::tr("%1 without MPS before it").arg(spec.mnemonic));
             else if (spec.op == Op::Pop)
