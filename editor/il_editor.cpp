@@ -203,6 +203,15 @@ IlEditor::IlEditor(const model::Target &target, QWidget *parent)
     connect(this, &QsciScintilla::cursorPositionChanged, this, [this] { updateCallTip(); });
 }
 
+IlLexer::~IlLexer() {
+    // QsciAPIs prepares its word list on a worker thread that calls back into this lexer;
+    // it has to finish while the lexer is still whole, not when QObject deletes children.
+    if (QsciAbstractAPIs *a = apis()) {
+        setAPIs(nullptr);
+        delete a;
+    }
+}
+
 void IlEditor::setTarget(const model::Target &target) {
     m_target = &target;
     auto *lexer = new IlLexer(target, this);

@@ -19,6 +19,7 @@ public:
     enum Style { Default = 0, Mnemonic, Device, Constant, Comment, StepNumber, Error };
 
     explicit IlLexer(const model::Target &target, QObject *parent = nullptr);
+    ~IlLexer() override;
     const char *language() const override { return "IL"; }
     QString description(int style) const override;
     QColor defaultColor(int style) const override;

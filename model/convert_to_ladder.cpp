@@ -98,7 +98,10 @@ void place(const Expr &e, Rung &rung, int row, int col) {
             lastTop = r;
             r += heightOf(i);
         }
-        link(rung, col, row, lastTop);
+        // At the rail the rows are already joined: a link there would be a second spelling
+        // of the same ladder, which the text form and the grid equality could not tell apart.
+        if (col > 0)
+            link(rung, col, row, lastTop);
         link(rung, col + w, row, lastTop);
         return;
     }

@@ -23,9 +23,10 @@ struct Operand {
 struct Instruction {
     const InstructionSpec *spec = nullptr; // entry of the target's instruction table
     std::vector<Operand> operands;
-    int line = 0;   // 1-based source line, 0 when generated
-    int column = 0; // 1-based source column of the mnemonic
-    int step = 0;   // step address (0-based), assigned by the printer / parser
+    int line = 0;    // 1-based source line, 0 when generated
+    int column = 0;  // 1-based source column of the mnemonic
+    int step = 0;    // step address (0-based), assigned by the printer / parser
+    QString comment; // comment after the instruction on its line ("LD X0 ; start"), no marker
 
     Op op() const { return spec ? spec->op : Op::Nop; }
     bool sameAs(const Instruction &other) const // equal ignoring the source position

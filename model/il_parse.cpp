@@ -15,6 +15,11 @@ namespace rung::model {
 namespace {
 
 constexpr int kMaxErrors = 1000;
+// No instruction has more than a handful of operands; a line with more tokens is an error
+// anyway, and not copying the rest keeps a huge line from costing memory.
+constexpr std::size_t kMaxTokens = 16;
+// Longer tokens are no mnemonic, address or constant of any family.
+constexpr qsizetype kMaxTokenLength = 64;
 
 struct Token {
     QString text;
@@ -32,8 +37,10 @@ std::vector<Token> tokenize(QStringView line, int firstColumn) {
         const qsizetype start = i;
         while (i < line.size() && !line[i].isSpace())
             ++i;
-        tokens.push_back(
-            {line.mid(start, i - start).toString(), firstColumn + static_cast<int>(start)});
+        tokens.push_back({line.mid(start, std::min(i - start, kMaxTokenLength + 1)).toString(),
+                          firstColumn + static_cast<int>(start)});
+        if (tokens.size() > kMaxTokens)
+            break;
     }
     return tokens;
 }
@@ -125,10 +132,14 @@ private:
         if (slashes >= 0 && (cut < 0 || slashes < cut))
             cut = slashes;
         QStringView code = cut >= 0 ? line.left(cut) : line;
-        if (cut >= 0 && code.trimmed().isEmpty()) {
+        QString comment;
+        if (cut >= 0) {
             const qsizetype skip = line[cut] == QLatin1Char(';') ? 1 : 2;
+            comment = line.mid(cut + skip).trimmed().toString();
+        }
+        if (cut >= 0 && code.trimmed().isEmpty()) {
             m_result.list.comments.emplace_back(static_cast<int>(m_result.list.instructions.size()),
-                                                line.mid(cut + skip).trimmed().toString());
+                                                comment);
             return;
         }
         std::vector<Token> tokens = tokenize(code, 1);
@@ -145,9 +156,11 @@ private:
         Instruction ins;
         ins.line = lineNumber;
         ins.column = tokens[0].column;
+        ins.comment = std::move(comment);
         std::size_t used = 0;
         QString fusedNumber;
-        if (!matchMnemonic(tokens, &ins.spec, &used, &fusedNumber)) {
+        if (tokens[0].text.size() > kMaxTokenLength ||
+            !matchMnemonic(tokens, &ins.spec, &used, &fusedNumber)) {
             reportUnknown(tokens[0], lineNumber);
             return;
         }
@@ -158,14 +171,16 @@ private:
         if (!readOperands(&ins, operands, lineNumber, tokens[0]))
             return;
         ins.step = m_step;
-        m_step += ins.spec->steps;
+        m_step += instructionSteps(m_target, ins);
         m_result.list.instructions.push_back(std::move(ins));
     }
 
     bool matchMnemonic(const std::vector<Token> &tokens, const InstructionSpec **spec,
                        std::size_t *used, QString *fusedNumber) const {
-        // Two-word mnemonics first: "LD NOT", "AND LD", "OUT NOT".
-        if (tokens.size() >= 2) {
+        // Two-word mnemonics first: "LD NOT", "AND LD", "OUT NOT", "KEEP (11)". A second word
+        // with a digit outside brackets is an operand; skipping the lookup halves the work.
+        if (tokens.size() >= 2 &&
+            (isLetters(tokens[1].text) || tokens[1].text.startsWith(QLatin1Char('(')))) {
             if (const InstructionSpec *s =
                     m_target.findInstruction(tokens[0].text + QLatin1Char(' ') + tokens[1].text)) {
                 *spec = s;
@@ -284,7 +299,9 @@ private:
         Operand a;
         Operand b;
         if (!readOperand(leftKind, left, lineNumber, &a) ||
-            !readOperand(rightKind, right, lineNumber, &b))
+            !readOperand(rightKind, right, lineNumber, &b) ||
+            !constantFits(*ins, leftKind, a, left, lineNumber) ||
+            !constantFits(*ins, rightKind, b, right, lineNumber))
             return false;
         ins->operands = {a, b};
         return true;
@@ -292,6 +309,12 @@ private:
 
     bool readOperands(Instruction *ins, std::vector<Token> tokens, int lineNumber,
                       const Token &mnemonic) {
+        for (const Token &t : tokens)
+            if (t.text.size() > kMaxTokenLength) {
+                error(lineNumber, t.column,
+                      tr("'%1...' is too long for an operand").arg(t.text.left(20)));
+                return false;
+            }
         // An infix operand is one token holding two operands.
         if (tokens.size() == 1) {
             const bool contact =
@@ -332,7 +355,7 @@ private:
             for (const Token &t : tokens) {
                 int offset = 0;
                 for (const QString &part : t.text.split(QLatin1Char(','))) {
-                    if (!part.isEmpty())
+                    if (!part.isEmpty() && split.size() <= kMaxTokens)
                         split.push_back({part, t.column + offset});
                     offset += static_cast<int>(part.size()) + 1;
                 }
@@ -366,12 +389,55 @@ private:
         bool ok = true;
         for (std::size_t i = 0; i < tokens.size(); ++i) {
             Operand o;
-            if (readOperand(specs[i].kind, tokens[i], lineNumber, &o))
+            if (readOperand(specs[i].kind, tokens[i], lineNumber, &o) &&
+                constantFits(*ins, specs[i].kind, o, tokens[i], lineNumber))
                 ins->operands.push_back(o);
             else
                 ok = false;
         }
         return ok;
+    }
+
+    // A constant must fit the word it is written into: what the PLC can store, not what makes
+    // sense for the instruction: set values are the checks' business (OP004), which must see
+    // them, so only their CPM1 BCD form is a syntax matter here.
+    bool constantFits(const Instruction &ins, OperandKind kind, const Operand &o,
+                      const Token &token, int lineNumber) {
+        if (o.kind != Operand::Kind::Constant || kind == OperandKind::Label)
+            return true;
+        const Constant &c = o.constant;
+        if (m_target.family == Family::Cpm1 && kind == OperandKind::SetValue &&
+            c.style != Constant::Style::Bcd) {
+            error(lineNumber, token.column,
+                  tr("%1: a set value is a BCD constant #0000..#9999 or a channel")
+                      .arg(token.text.left(40)));
+            return false;
+        }
+        if (kind == OperandKind::SetValue)
+            return true;
+        // 32-bit when the instruction works on a 32-bit device (Vigor C200..C255).
+        const bool wide =
+            std::any_of(ins.operands.begin(), ins.operands.end(), [&](const Operand &x) {
+                return x.kind == Operand::Kind::Device && x.address.area >= 0 &&
+                       m_target.area(x.address.area).wordBits == 32;
+            });
+        qint64 low = wide ? -2147483648LL : -32768;
+        qint64 high = wide ? 2147483647LL : 32767;
+        if (c.style == Constant::Style::Hex) {
+            low = 0;
+            high = wide ? 0xFFFFFFFFLL : 0xFFFF;
+        } else if (c.style == Constant::Style::Bcd || m_target.family == Family::Vpc) {
+            low = 0;
+            high = 9999; // four BCD digits; VPC registers hold 0000..9999
+        }
+        if (c.value < low || c.value > high) {
+            error(lineNumber, token.column,
+                  tr("%1 is out of range: %2..%3 fit here")
+                      .arg(token.text.left(40), formatConstant(m_target, {low, c.style}),
+                           formatConstant(m_target, {high, c.style})));
+            return false;
+        }
+        return true;
     }
 
     bool looksConstant(const QString &t) const {
@@ -413,6 +479,11 @@ private:
 
     bool readOperand(OperandKind kind, const Token &token, int lineNumber, Operand *out) {
         const QString &t = token.text;
+        if (t.size() > kMaxTokenLength) {
+            error(lineNumber, token.column,
+                  tr("'%1...' is too long for an operand").arg(t.left(20)));
+            return false;
+        }
         auto fail = [&](const AddressError &e) {
             error(lineNumber, token.column + e.column, e.message);
             return false;
@@ -424,8 +495,10 @@ private:
                       tr("%1: a label number is expected").arg(t.left(40)));
                 return false;
             }
+            // The range of jump numbers is a check (NE006), not a syntax error.
+            const int label = t.toInt();
             out->kind = Operand::Kind::Constant;
-            out->constant = Constant{t.toInt(), Constant::Style::Plain};
+            out->constant = Constant{label, Constant::Style::Plain};
             return true;
         }
         case OperandKind::Constant:

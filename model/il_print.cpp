@@ -112,6 +112,8 @@ QString printInstructionList(const InstructionList &list, const PrintOptions &op
         if (options.stepNumbers)
             out += QStringLiteral("%1 ").arg(step, 4, 10, QLatin1Char('0'));
         out += printInstruction(target, ins);
+        if (options.comments && !ins.comment.isEmpty())
+            out += QLatin1String(" ; ") + ins.comment;
         out += QLatin1Char('\n');
         step += instructionSteps(target, ins);
     }

@@ -145,7 +145,9 @@ QString printLadderText(const LadderProgram &ladder) {
                 line += QLatin1String("(^)");
             out += line + QLatin1Char('\n');
             if (r + 1 < rung.rows) {
-                QString connector = QStringLiteral("|");
+                // A link drawn on the rail (the editor allows it) shows as '+' on the rail.
+                QString connector =
+                    rung.columns > 0 && rung.link(r, 0) ? QStringLiteral("+") : QStringLiteral("|");
                 for (int c = 0; c < rung.columns; ++c)
                     connector += QString(width, QLatin1Char(' ')) +
                                  (rung.link(r, c + 1) ? QLatin1Char('|') : QLatin1Char(' '));
@@ -396,6 +398,8 @@ private:
     void readConnector(Rung &rung, int r) {
         const QString &line = m_lines[m_at];
         const int stride = m_width + 1;
+        if (rung.columns > 0 && line.startsWith(QLatin1Char('+')))
+            rung.setLink(r, 0, true);
         for (int c = 0; c < rung.columns; ++c) {
             const int at = 1 + c * stride + m_width;
             if (at < line.size() && line[at] == QLatin1Char('|'))

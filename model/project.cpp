@@ -10,6 +10,8 @@
 #include <QJsonObject>
 #include <QSaveFile>
 
+#include <cmath>
+
 // The project file (docs/project-format.md): one JSON object, keys in a fixed order, one rung
 // per object with its cells as short strings, so a change to one contact is a one-line diff.
 
@@ -22,6 +24,7 @@ struct Tr {
 };
 
 constexpr qint64 kMaxProjectBytes = 64 * 1024 * 1024;
+constexpr double kMaxSetValue = 2147483647.0; // the widest set value is a 32-bit register
 const char *const kFormat = "rungstudio-project";
 
 QString deviceText(const Target &t, const Address &a) {
@@ -68,10 +71,11 @@ QJsonObject rungToJson(const Target &t, const Rung &rung) {
         if (!out)
             continue;
         QJsonArray entry{r, printInstruction(t, *out)};
-        const std::vector<int> inputs = rung.boxInputRows(r);
-        if (inputs.size() > 1) {
+        // Only rows the rung names explicitly: a box without them takes r..r+k-1 on reading.
+        const int k = out->spec ? out->spec->inputs : 1;
+        if (k > 1 && !rung.inputRows.empty() && rung.inputRows.front() == r) {
             QJsonArray rows;
-            for (int i : inputs)
+            for (int i : rung.inputRows)
                 rows.append(i);
             entry.append(rows);
         }
@@ -102,9 +106,10 @@ public:
                     ++column;
                 }
             }
-            return fail(Tr::tr("Line %1, column %2: the file is not valid JSON (%3)")
+            return fail(Tr::tr("Line %1, column %2 (byte %3): the file is not valid JSON (%4)")
                             .arg(line)
                             .arg(column)
+                            .arg(parseError.offset)
                             .arg(parseError.errorString()));
         }
         if (!doc.isObject())
@@ -124,6 +129,13 @@ public:
                     .arg(kProjectSchemaVersion));
         if (schema < 1)
             return fail(Tr::tr("\"schema\" must be a positive number"));
+        if (!expect(root, "target", QJsonValue::String, QString()) ||
+            !expect(root, "model", QJsonValue::String, QString()) ||
+            !expect(root, "rungs", QJsonValue::Array, QString()) ||
+            !expect(root, "symbols", QJsonValue::Array, QString()) ||
+            !expect(root, "setValues", QJsonValue::Object, QString()) ||
+            !expect(root, "watchLists", QJsonValue::Array, QString()))
+            return std::nullopt;
         Project p;
         const QString targetId = root.value(QStringLiteral("target")).toString();
         p.target = Target::byId(targetId);
@@ -146,8 +158,15 @@ public:
         }
         const QJsonArray symbols = root.value(QStringLiteral("symbols")).toArray();
         for (qsizetype i = 0; i < symbols.size(); ++i) {
-            const QJsonObject s = symbols[i].toObject();
             const QString where = QStringLiteral("symbols[%1]").arg(i);
+            if (!symbols[i].isObject())
+                return fail(
+                    Tr::tr("%1: an object with \"device\" and \"name\" is expected").arg(where));
+            const QJsonObject s = symbols[i].toObject();
+            if (!expect(s, "device", QJsonValue::String, where) ||
+                !expect(s, "name", QJsonValue::String, where) ||
+                !expect(s, "comment", QJsonValue::String, where))
+                return std::nullopt;
             Symbol symbol;
             if (!device(*p.target, s.value(QStringLiteral("device")).toString(), where,
                         &symbol.address))
@@ -161,16 +180,33 @@ public:
             Address a;
             if (!device(*p.target, it.key(), QStringLiteral("setValues"), &a))
                 return std::nullopt;
-            if (!it.value().isDouble())
-                return fail(Tr::tr("setValues.%1: a number is expected").arg(it.key()));
-            p.setValues[a] = static_cast<qint64>(it.value().toDouble());
+            // Range-checked before the cast: converting an out-of-range double is undefined.
+            const double v = it.value().toDouble();
+            if (!it.value().isDouble() || v != std::floor(v) || std::fabs(v) > kMaxSetValue)
+                return fail(Tr::tr("setValues.%1: a whole number between -%2 and %2 is expected")
+                                .arg(it.key())
+                                .arg(kMaxSetValue, 0, 'f', 0));
+            p.setValues[a] = static_cast<qint64>(v);
         }
         const QJsonArray watch = root.value(QStringLiteral("watchLists")).toArray();
-        for (const QJsonValue &w : watch) {
+        for (qsizetype i = 0; i < watch.size(); ++i) {
+            const QString where = QStringLiteral("watchLists[%1]").arg(i);
+            if (!watch[i].isObject())
+                return fail(
+                    Tr::tr("%1: an object with \"name\" and \"devices\" is expected").arg(where));
+            const QJsonObject w = watch[i].toObject();
+            if (!expect(w, "name", QJsonValue::String, where) ||
+                !expect(w, "devices", QJsonValue::Array, where))
+                return std::nullopt;
             WatchList list;
-            list.name = w.toObject().value(QStringLiteral("name")).toString();
-            for (const QJsonValue &d : w.toObject().value(QStringLiteral("devices")).toArray())
-                list.devices << d.toString();
+            list.name = w.value(QStringLiteral("name")).toString();
+            const QJsonArray devices = w.value(QStringLiteral("devices")).toArray();
+            for (qsizetype d = 0; d < devices.size(); ++d) {
+                if (!devices[d].isString())
+                    return fail(
+                        Tr::tr("%1.devices[%2]: a device name is expected").arg(where).arg(d));
+                list.devices << devices[d].toString();
+            }
             p.watchLists.push_back(list);
         }
         return p;
@@ -181,6 +217,35 @@ private:
         if (m_error)
             m_error->message = message;
         return std::nullopt;
+    }
+
+    static QString typeName(QJsonValue::Type type) {
+        switch (type) {
+        case QJsonValue::String:
+            return Tr::tr("a string");
+        case QJsonValue::Array:
+            return Tr::tr("an array");
+        case QJsonValue::Object:
+            return Tr::tr("an object");
+        case QJsonValue::Double:
+            return Tr::tr("a number");
+        default:
+            return Tr::tr("another value");
+        }
+    }
+
+    // A key that is absent is allowed (it takes its default); one of the wrong type is an
+    // error, so a hand-edited file never loads as silently empty.
+    bool expect(const QJsonObject &o, const char *key, QJsonValue::Type type,
+                const QString &where) {
+        const QJsonValue v = o.value(QLatin1String(key));
+        if (v.isUndefined() || v.type() == type)
+            return true;
+        const QString path = where.isEmpty()
+                                 ? QLatin1String(key)
+                                 : QStringLiteral("%1.%2").arg(where, QLatin1String(key));
+        fail(Tr::tr("%1: %2 is expected").arg(path, typeName(type)));
+        return false;
     }
 
     bool device(const Target &t, const QString &text, const QString &where, Address *out) {
@@ -200,6 +265,11 @@ private:
             return false;
         }
         const QJsonObject o = value.toObject();
+        if (!expect(o, "comment", QJsonValue::String, where) ||
+            !expect(o, "cells", QJsonValue::Array, where) ||
+            !expect(o, "links", QJsonValue::Array, where) ||
+            !expect(o, "outputs", QJsonValue::Array, where))
+            return false;
         const int rows = o.value(QStringLiteral("rows")).toInt(-1);
         const int columns = o.value(QStringLiteral("columns")).toInt(-1);
         if (rows < 1 || rows > 1000 || columns < 0 || columns > 1000) {
@@ -217,6 +287,10 @@ private:
             return false;
         }
         for (int r = 0; r < rows; ++r) {
+            if (!cells[r].isArray()) {
+                fail(Tr::tr("%1.cells[%2]: an array of cells is expected").arg(where).arg(r));
+                return false;
+            }
             const QJsonArray row = cells[r].toArray();
             if (row.size() != columns) {
                 fail(Tr::tr("%1.cells[%2]: %3 cells are expected, the file has %4")
@@ -227,6 +301,14 @@ private:
                 return false;
             }
             for (int c = 0; c < columns; ++c) {
+                if (!row[c].isString()) {
+                    fail(Tr::tr("%1.cells[%2][%3]: a cell is a string (\"\", \"-\" or a "
+                                "contact)")
+                             .arg(where)
+                             .arg(r)
+                             .arg(c));
+                    return false;
+                }
                 const QString text = row[c].toString();
                 if (text.isEmpty())
                     continue;
@@ -261,8 +343,14 @@ private:
         for (const QJsonValue &v : o.value(QStringLiteral("outputs")).toArray()) {
             const QJsonArray entry = v.toArray();
             const int r = entry.size() >= 2 ? entry[0].toInt(-1) : -1;
-            if (r < 0 || r >= rows) {
-                fail(Tr::tr("%1.outputs: the row is outside the rung").arg(where));
+            if (r < 0 || r >= rows || !entry[1].isString()) {
+                fail(Tr::tr("%1.outputs: [row, \"instruction\"] with a row inside the rung is "
+                            "expected")
+                         .arg(where));
+                return false;
+            }
+            if (rung->outputs[static_cast<std::size_t>(r)]) {
+                fail(Tr::tr("%1.outputs: row %2 has two outputs").arg(where).arg(r));
                 return false;
             }
             const QString text = entry[1].toString();
@@ -278,10 +366,23 @@ private:
             ins.line = ins.column = ins.step = 0;
             rung->outputs[static_cast<std::size_t>(r)] = ins;
             if (entry.size() >= 3) {
-                for (const QJsonValue &in : entry[2].toArray()) {
-                    const int row = in.toInt(-1);
-                    if (row < 0 || row >= rows) {
-                        fail(Tr::tr("%1.outputs: an input row is outside the rung").arg(where));
+                // The grid keeps one box's input rows per rung (a box with several inputs
+                // stands alone in its rung): first = the box's row, rows going down.
+                const QJsonArray inputs = entry[2].toArray();
+                const int k = std::max(1, ins.spec->inputs);
+                if (!rung->inputRows.empty() || k < 2 || inputs.size() < 1 || inputs.size() > k) {
+                    fail(Tr::tr("%1.outputs: \"%2\" takes up to %3 input rows, one box per rung")
+                             .arg(where, text)
+                             .arg(k));
+                    return false;
+                }
+                for (qsizetype i = 0; i < inputs.size(); ++i) {
+                    const int row = inputs[i].toInt(-1);
+                    const int previous = i == 0 ? r - 1 : rung->inputRows.back();
+                    if (row <= previous || row >= rows || (i == 0 && row != r)) {
+                        fail(Tr::tr("%1.outputs: the input rows of \"%2\" start at its own row "
+                                    "and go down inside the rung")
+                                 .arg(where, text));
                         return false;
                     }
                     rung->inputRows.push_back(row);

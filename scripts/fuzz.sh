@@ -12,9 +12,16 @@ CC=clang CXX=clang++ cmake -S . -B build-fuzz -G Ninja -DCMAKE_BUILD_TYPE=RelWit
     -DRUNG_BUILD_FUZZERS=ON -DRUNG_BUILD_GUI=OFF -DRUNG_BUILD_BENCHMARKS=OFF >/dev/null
 cmake --build build-fuzz --target fuzz_il_parser fuzz_project_loader
 mkdir -p build-fuzz/corpus/il build-fuzz/corpus/project build-fuzz/findings
-# The IL fuzzer reads the first byte as the target: 1 = Vigor (listings here are mostly Vigor).
+# The IL fuzzer reads the first byte as the target (Family: 0 VPC, 1 Vigor, 2 CPM1, 3 PL110);
+# each listing is seeded with its own family, named by the file's prefix.
 for f in tests/data/sim/*.il; do
-    { printf '\001'; cat "$f"; } > "build-fuzz/corpus/il/$(basename "$f")"
+    case "$(basename "$f")" in
+    vpc_*) byte='\000' ;;
+    cpm1_*) byte='\002' ;;
+    pl110_*) byte='\003' ;;
+    *) byte='\001' ;;
+    esac
+    { printf "$byte"; cat "$f"; } > "build-fuzz/corpus/il/$(basename "$f")"
 done
 cp resources/examples/*/*.rung build-fuzz/corpus/project/
 export ASAN_OPTIONS=detect_leaks=0

@@ -8,10 +8,12 @@
 #include <QActionGroup>
 #include <QApplication>
 #include <QCloseEvent>
-#include <QFile>
 #include <QDockWidget>
+#include <QFile>
+#include <QFileDialog>
 #include <QFormLayout>
 #include <QHeaderView>
+#include <QKeyEvent>
 #include <QLabel>
 #include <QMenuBar>
 #include <QMessageBox>
@@ -52,6 +54,7 @@ MainWindow::MainWindow(QWidget *parent)
     statusBar()->addPermanentWidget(m_statusTarget);
 
     buildDocks();
+    buildCrossReference();
     buildActions();
 
     m_ilTimer.setSingleShot(true);
@@ -245,6 +248,28 @@ void MainWindow::buildActions() {
         bar->addAction(a);
     }
     edit->addSeparator();
+    // Ctrl+X/C/V act on rungs in the ladder; the listing keeps its own text clipboard keys.
+    for (QAction *a : {edit->addAction(tr("Cu&t Rung"), this, [this] { copyRung(true); }),
+                       edit->addAction(tr("&Copy Rung"), this, [this] { copyRung(false); }),
+                       edit->addAction(tr("&Paste Rungs"), this, &MainWindow::pasteRungs)}) {
+        a->setShortcutContext(Qt::WidgetWithChildrenShortcut);
+        m_ladder->addAction(a);
+    }
+    edit->actions().at(edit->actions().size() - 3)->setShortcut(QKeySequence::Cut);
+    edit->actions().at(edit->actions().size() - 2)->setShortcut(QKeySequence::Copy);
+    edit->actions().at(edit->actions().size() - 1)->setShortcut(QKeySequence::Paste);
+    edit->addAction(tr("Replace &Device..."), this, &MainWindow::replaceDevice)
+        ->setShortcut(QKeySequence::Replace);
+    edit->addSeparator();
+    edit->addAction(tr("Import Symbols (CSV)..."), this, [this] {
+        const QString path = QFileDialog::getOpenFileName(this, tr("Import Symbols"), QString(),
+                                                          tr("CSV files (*.csv)"));
+        QString error;
+        if (!path.isEmpty() && !importSymbols(path, &error))
+            QMessageBox::critical(this, tr("Cannot import"), error);
+    });
+    edit->addAction(tr("Export Symbols (CSV)..."), this, &MainWindow::exportSymbols);
+    edit->addSeparator();
     edit->addAction(tr("Insert Rung"), this, [this] { m_ladder->insertRung(); });
     edit->addAction(tr("Delete Rung"), this, [this] { m_ladder->deleteRung(); });
     edit->addAction(tr("Insert Row"), this, [this] { m_ladder->insertRow(); });
@@ -357,6 +382,7 @@ void MainWindow::refreshFromDocument() {
     if (!m_editingListing)
         m_il->setStepNumbers(stepOfLine);
     refreshSymbols();
+    refreshCrossReference();
     updateStatus();
 }
 

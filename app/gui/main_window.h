@@ -13,6 +13,8 @@ class QLabel;
 class QSplitter;
 class QTabWidget;
 class QTableWidget;
+class QTreeWidget;
+class QLineEdit;
 class QMenu;
 
 namespace rung::editor {
@@ -44,6 +46,15 @@ public:
     // Applies the IL editor's text now (the editor also does it after a short pause).
     void applyListing();
     QString recoveryPath() const;
+    // Tools over the whole program (main_window_tools.cpp).
+    void copyRung(bool cut);
+    void pasteRungs();
+    int replaceDeviceEverywhere(const QString &from, const QString &to,
+                                QString *error); // -1: error
+    bool importSymbols(const QString &path, QString *error);
+    void refreshCrossReference();
+    QLineEdit *crossReferenceDevice() { return m_crossDevice; }
+    QTreeWidget *crossReference() { return m_crossTree; }
     void writeRecovery();
     bool offerRecovery(bool ask = true);
 
@@ -73,6 +84,9 @@ private:
     void exportListing();
     void exportImage(const QString &format);
     void printPreview();
+    void replaceDevice();
+    void exportSymbols();
+    void buildCrossReference();
 
     editor::Document *m_document;
     editor::LadderView *m_ladder;
@@ -81,6 +95,8 @@ private:
     QTabWidget *m_tabs;
     QSplitter *m_split;
     QTableWidget *m_symbols = nullptr;
+    QLineEdit *m_crossDevice = nullptr;
+    QTreeWidget *m_crossTree = nullptr;
     QLabel *m_projectInfo = nullptr;
     QLabel *m_statusTarget;
     QLabel *m_statusSteps;

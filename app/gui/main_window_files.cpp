@@ -7,6 +7,7 @@
 #include "model/project.h"
 
 #include <QComboBox>
+#include <QDate>
 #include <QDialog>
 #include <QDialogButtonBox>
 #include <QDir>
@@ -17,15 +18,14 @@
 #include <QImage>
 #include <QMenu>
 #include <QMessageBox>
+#include <QPainter>
 #include <QPdfWriter>
 #include <QPrintPreviewDialog>
 #include <QPrinter>
 #include <QSaveFile>
 #include <QSettings>
-#include <QStatusBar>
-#include <QDate>
-#include <QPainter>
 #include <QStandardPaths>
+#include <QStatusBar>
 #include <QSvgGenerator>
 
 namespace rung::app {

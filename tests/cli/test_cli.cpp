@@ -5,6 +5,7 @@
 #include <QDir>
 #include <QFile>
 #include <QProcess>
+#include <QRegularExpression>
 #include <QTemporaryDir>
 
 #include <gtest/gtest.h>
@@ -100,7 +101,8 @@ TEST(CliCheck, ModelNarrowsTheRanges) {
         cli({QStringLiteral("check"), file, QStringLiteral("--target"), QStringLiteral("vpc"),
              QStringLiteral("--model"), QStringLiteral("VPC2416")});
     EXPECT_EQ(r.code, 1);
-    EXPECT_TRUE(r.out.contains(QStringLiteral("v.il:2:6: error: o20 is beyond VPC2416's outputs o00..o15")));
+    EXPECT_TRUE(r.out.contains(
+        QStringLiteral("v.il:2:6: error: o20 is beyond VPC2416's outputs o00..o15")));
 }
 
 TEST(CliUsage, ErrorsExitTwo) {
@@ -108,7 +110,7 @@ TEST(CliUsage, ErrorsExitTwo) {
     EXPECT_EQ(cli({QStringLiteral("frobnicate")}).code, 2);
     EXPECT_EQ(cli({QStringLiteral("check")}).code, 2);
     const CliRun missing = cli({QStringLiteral("check"), QStringLiteral("/nonexistent/x.il"),
-                             QStringLiteral("--target"), QStringLiteral("vigor")});
+                                QStringLiteral("--target"), QStringLiteral("vigor")});
     EXPECT_EQ(missing.code, 2);
     EXPECT_TRUE(missing.err.contains(QStringLiteral("/nonexistent/x.il")));
     QTemporaryDir dir;
@@ -144,8 +146,8 @@ TEST(CliConvert, FromOverridesTheExtension) {
     QTemporaryDir dir;
     const QString file = write(dir, QStringLiteral("prog.txt"), "LD X0\nOUT Y0\nEND\n");
     const CliRun r = cli({QStringLiteral("convert"), file, QStringLiteral("--from"),
-                       QStringLiteral("il"), QStringLiteral("--target"), QStringLiteral("vigor"),
-                       QStringLiteral("--to"), QStringLiteral("ladder")});
+                          QStringLiteral("il"), QStringLiteral("--target"), QStringLiteral("vigor"),
+                          QStringLiteral("--to"), QStringLiteral("ladder")});
     EXPECT_EQ(r.code, 0);
     EXPECT_TRUE(r.out.startsWith(QStringLiteral("LADDER vigor WIDTH")));
 }
@@ -186,4 +188,28 @@ TEST(Examples, EveryExampleProjectLoadsAndHasNoError) {
         }
     }
     EXPECT_GE(count, 12);
+}
+
+TEST(CliUsage, HelpListsEveryCommandAndVersionNamesTheTool) {
+    const CliRun help = cli({QStringLiteral("--help")});
+    EXPECT_EQ(help.code, 0);
+    for (const char *command : {"check FILE", "convert FILE", "simulate FILE"})
+        EXPECT_TRUE(help.out.contains(QLatin1String(command))) << command;
+    const CliRun version = cli({QStringLiteral("--version")});
+    EXPECT_EQ(version.code, 0);
+    EXPECT_TRUE(QRegularExpression(QStringLiteral("^rungstudio-cli \\d+\\.\\d+\\.\\d+\n$"))
+                    .match(version.out)
+                    .hasMatch())
+        << version.out.toStdString();
+}
+
+TEST(CliCheck, BrokenProjectIsAnIoErrorWithTheReason) {
+    QTemporaryDir dir;
+    const QString file = write(dir, QStringLiteral("bad.rung"),
+                               "{\"format\": \"rungstudio-project\", \"schema\": 1,\n\"target\": ");
+    const CliRun r = cli({QStringLiteral("check"), file});
+    EXPECT_EQ(r.code, 2);
+    EXPECT_TRUE(r.err.startsWith(QStringLiteral("bad.rung: Line 2, column 11 (byte 56): the file "
+                                                "is not valid JSON")))
+        << r.err.toStdString();
 }

@@ -5,10 +5,12 @@
 
 #include "model/ladder_text.h"
 
+#include <QClipboard>
 #include <QLineEdit>
 #include <QSignalSpy>
 #include <QTemporaryDir>
 #include <QTest>
+#include <QTreeWidget>
 
 #include <gtest/gtest.h>
 
@@ -201,4 +203,70 @@ TEST_F(Fixture, RecoveryBringsBackUnsavedWork) {
     ASSERT_TRUE(other.offerRecovery(false));
     EXPECT_EQ(other.document()->listingText(), QStringLiteral("LD X5\nOUT Y5\nEND\n"));
     QFile::remove(window.recoveryPath());
+}
+
+TEST_F(Fixture, CopyAndPasteRungsAlsoAsListingText) {
+    window.ilEditor()->setText(QStringLiteral("LD X0\nOUT Y0\nEND\n"));
+    window.applyListing();
+    ladder()->setCursor({0, 0, 0});
+    window.copyRung(false);
+    EXPECT_EQ(QApplication::clipboard()->text(),
+              QStringLiteral("LD X0\nOUT Y1\n").replace(QLatin1String("Y1"), QLatin1String("Y0")));
+    window.pasteRungs();
+    EXPECT_EQ(listing(), QStringLiteral("LD X0\nOUT Y0\nLD X0\nOUT Y0\nEND\n"));
+    // Plain listing text from another program pastes as rungs too.
+    QApplication::clipboard()->setText(QStringLiteral("LD X1\nANI X2\nOUT Y3\n"));
+    ladder()->setCursor({2, 0, 0});
+    window.pasteRungs();
+    EXPECT_EQ(listing(),
+              QStringLiteral("LD X0\nOUT Y0\nLD X0\nOUT Y0\nLD X1\nANI X2\nOUT Y3\nEND\n"));
+    EXPECT_EQ(window.document()->undoStack()->text(window.document()->undoStack()->count() - 1),
+              QStringLiteral("Paste rung"));
+}
+
+TEST_F(Fixture, ReplaceDeviceEverywhereIsOneUndoStep) {
+    window.ilEditor()->setText(QStringLiteral("LD X0\nOUT Y0\nLD Y0\nAND X0\nOUT Y1\nEND\n"));
+    window.applyListing();
+    QString error;
+    EXPECT_EQ(window.replaceDeviceEverywhere(QStringLiteral("X0"), QStringLiteral("X7"), &error),
+              2);
+    EXPECT_EQ(listing(), QStringLiteral("LD X7\nOUT Y0\nLD Y0\nAND X7\nOUT Y1\nEND\n"));
+    EXPECT_EQ(window.replaceDeviceEverywhere(QStringLiteral("X0"), QStringLiteral("X8"), &error),
+              -1);
+    EXPECT_EQ(error, QStringLiteral("X8: X is numbered in octal"));
+    window.document()->undoStack()->undo();
+    EXPECT_EQ(listing(), QStringLiteral("LD X0\nOUT Y0\nLD Y0\nAND X0\nOUT Y1\nEND\n"));
+}
+
+TEST_F(Fixture, CrossReferenceListsEveryUse) {
+    window.ilEditor()->setText(QStringLiteral("LD X0\nOUT Y0\nLD Y0\nAND X0\nOUT Y1\nEND\n"));
+    window.applyListing();
+    window.crossReferenceDevice()->setText(QStringLiteral("Y0"));
+    QTreeWidget *tree = window.crossReference();
+    ASSERT_EQ(tree->topLevelItemCount(), 2);
+    EXPECT_EQ(tree->topLevelItem(0)->text(2), QStringLiteral("coil / box"));
+    EXPECT_EQ(tree->topLevelItem(1)->text(0), QStringLiteral("2"));
+    EXPECT_EQ(tree->topLevelItem(1)->text(2), QStringLiteral("contact"));
+}
+
+TEST_F(Fixture, SymbolsImportFromCsvAndShowByName) {
+    QTemporaryDir dir;
+    const QString path = dir.filePath(QStringLiteral("symbols.csv"));
+    QFile f(path);
+    ASSERT_TRUE(f.open(QIODevice::WriteOnly));
+    f.write("device,name,comment\nX0,Start,\"green, big\"\nY0,Pump,\n");
+    f.close();
+    QString error;
+    ASSERT_TRUE(window.importSymbols(path, &error)) << error.toStdString();
+    const auto &symbols = window.document()->project().symbols;
+    ASSERT_EQ(symbols.size(), 2u);
+    EXPECT_EQ(symbols[0].comment, QStringLiteral("green, big"));
+    QFile bad(dir.filePath(QStringLiteral("bad.csv")));
+    ASSERT_TRUE(bad.open(QIODevice::WriteOnly));
+    bad.write("X9,Oops,\n");
+    bad.close();
+    EXPECT_FALSE(window.importSymbols(bad.fileName(), &error));
+    EXPECT_TRUE(error.endsWith(QStringLiteral("line 1: X9: X is numbered in octal")));
+    window.document()->undoStack()->undo();
+    EXPECT_TRUE(window.document()->project().symbols.empty());
 }

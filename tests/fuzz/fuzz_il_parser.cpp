@@ -10,7 +10,8 @@ extern "C" int LLVMFuzzerTestOneInput(const std::uint8_t *data, std::size_t size
         return 0;
     using namespace rung::model;
     const Family family = static_cast<Family>(data[0] % 4);
-    const QString text = QString::fromUtf8(reinterpret_cast<const char *>(data + 1), static_cast<qsizetype>(size - 1));
+    const QString text = QString::fromUtf8(reinterpret_cast<const char *>(data + 1),
+                                           static_cast<qsizetype>(size - 1));
     const ParseResult parsed = parseInstructionList(Target::get(family), text);
     if (parsed.ok()) {
         const ToLadderResult ladder = listToLadder(parsed.list);

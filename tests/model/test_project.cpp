@@ -2,6 +2,7 @@
 #include "model/project.h"
 
 #include <QDir>
+#include <QDirIterator>
 #include <QFile>
 #include <QRandomGenerator>
 #include <QTemporaryDir>
@@ -73,7 +74,7 @@ TEST(ProjectFile, IsReadableJsonWithASchemaVersion) {
 
 TEST(ProjectFile, MalformedJsonNamesLineAndColumn) {
     EXPECT_EQ(why("{\n  \"format\": \"rungstudio-project\",\n  \"schema\": 1,,\n}"),
-              "Line 3, column 16: the file is not valid JSON (unterminated object)");
+              "Line 3, column 16 (byte 51): the file is not valid JSON (unterminated object)");
 }
 
 TEST(ProjectFile, TruncatedFileIsAClearError) {
@@ -128,4 +129,59 @@ TEST(ProjectFile, FailedSaveLeavesTheOldFileUntouched) {
     EXPECT_FALSE(saveProject(sample(), dir.filePath(QStringLiteral("missing/dir/x.rung")), &error));
     EXPECT_TRUE(error.message.contains(QStringLiteral("missing/dir/x.rung")));
     EXPECT_EQ(readAll(path), before);
+}
+
+TEST(ProjectFile, WrongTypesAreErrorsNotSilentlyEmpty) {
+    EXPECT_EQ(why("{\"format\": \"rungstudio-project\", \"schema\": 1, \"target\": \"vigor\", "
+                  "\"rungs\": 5}"),
+              "rungs: an array is expected");
+    EXPECT_EQ(why("{\"format\": \"rungstudio-project\", \"schema\": 1, \"target\": \"vigor\", "
+                  "\"rungs\": [{\"rows\": 1, \"columns\": 1, \"cells\": [[7]]}]}"),
+              "rungs[0].cells[0][0]: a cell is a string (\"\", \"-\" or a contact)");
+    EXPECT_EQ(why("{\"format\": \"rungstudio-project\", \"schema\": 1, \"target\": \"vigor\", "
+                  "\"symbols\": [\"X0\"]}"),
+              "symbols[0]: an object with \"device\" and \"name\" is expected");
+    EXPECT_EQ(why("{\"format\": \"rungstudio-project\", \"schema\": 1, \"target\": \"vigor\", "
+                  "\"watchLists\": [{\"name\": \"a\", \"devices\": [1]}]}"),
+              "watchLists[0].devices[0]: a device name is expected");
+}
+
+TEST(ProjectFile, SetValuesMustBeWholeNumbersInRange) {
+    // 1e300 would overflow the conversion to an integer: refused before it.
+    EXPECT_EQ(why("{\"format\": \"rungstudio-project\", \"schema\": 1, \"target\": \"vigor\", "
+                  "\"setValues\": {\"T0\": 1e300}}"),
+              "setValues.T0: a whole number between -2147483647 and 2147483647 is expected");
+    EXPECT_EQ(why("{\"format\": \"rungstudio-project\", \"schema\": 1, \"target\": \"vigor\", "
+                  "\"setValues\": {\"T0\": 1.5}}"),
+              "setValues.T0: a whole number between -2147483647 and 2147483647 is expected");
+}
+
+TEST(ProjectFile, BoxInputRowsAreValidated) {
+    const char *prefix = "{\"format\": \"rungstudio-project\", \"schema\": 1, \"target\": "
+                         "\"vigor\", \"rungs\": [{\"rows\": 2, \"columns\": 1, \"cells\": "
+                         "[[\"X0\"], [\"X1\"]], \"outputs\": ";
+    // OUT takes one input: no input rows may be given.
+    EXPECT_EQ(why((std::string(prefix) + "[[0, \"OUT Y0\", [0, 1]]]}]}").c_str()),
+              "rungs[0].outputs: \"OUT Y0\" takes up to 1 input rows, one box per rung");
+    EXPECT_EQ(why((std::string(prefix) + "[[0, \"OUT Y0\"], [0, \"OUT Y1\"]]}]}").c_str()),
+              "rungs[0].outputs: row 0 has two outputs");
+}
+
+TEST(ProjectFile, EveryExampleReadsBackToTheSameBytes) {
+    int count = 0;
+    QDirIterator it(QStringLiteral(RUNG_SOURCE_DIR "/resources/examples"),
+                    {QStringLiteral("*.rung")}, QDir::Files, QDirIterator::Subdirectories);
+    while (it.hasNext()) {
+        const QString path = it.next();
+        ProjectError error;
+        const auto project = loadProject(path, &error);
+        ASSERT_TRUE(project.has_value())
+            << path.toStdString() << ": " << error.message.toStdString();
+        EXPECT_EQ(projectToJson(*project), readAll(path)) << path.toStdString();
+        const auto again = projectFromJson(projectToJson(*project), &error);
+        ASSERT_TRUE(again.has_value()) << error.message.toStdString();
+        EXPECT_EQ(again->program.rungs, project->program.rungs) << path.toStdString();
+        ++count;
+    }
+    EXPECT_GE(count, 12);
 }

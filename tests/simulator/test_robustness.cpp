@@ -72,9 +72,11 @@ TEST(Robustness, RandomInstructionSequencesCompileCleanlyOrReportALine)
         }
         const CompileResult result = compileProgram(list);
         if (!result.ok()) {
-            for (const model::Diagnostic &d : result.diagnostics)
-                if (d.severity == model::Severity::Error)
+            for (const model::Diagnostic &d : result.diagnostics) {
+                if (d.severity == model::Severity::Error) {
                     EXPECT_GT(d.location.line, 0) << text.toStdString();
+                }
+            }
             continue;
         }
         ++started;
