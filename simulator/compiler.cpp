@@ -250,6 +250,25 @@ void Compiler::compileTimer(const model::Instruction &ins, Step &s) {
     double base = m_sem.timerBaseMs > 0 ? m_sem.timerBaseMs : m_target.defaultTimerBaseMs;
     if (m_sem.fastTimerFunctionCode >= 0 && ins.spec->functionCode == m_sem.fastTimerFunctionCode)
         base = m_sem.fastTimerBaseMs;
+    if (m_target.family == model::Family::Pl110) {
+        // TON / TOFF / TONR T PT [base]: the time base is the third operand (10, 100 or
+        // 1000 ms, seed 003 4.2.4); the current value lives in the T word so that
+        // MOV(Tx = #0) resets a TONR as the manual says.
+        s.code = Code::PlTimer;
+        s.op = static_cast<std::uint8_t>(
+            ins.spec->timerMode == model::TimerMode::OffDelay       ? PlTimerMode::OffDelay
+            : ins.spec->timerMode == model::TimerMode::Accumulating ? PlTimerMode::Accumulating
+                                                                    : PlTimerMode::OnDelay);
+        if (const model::Operand *b = ins.operands.size() > 2 ? &ins.operands[2] : nullptr) {
+            const qint64 v = b->kind == model::Operand::Kind::Constant ? b->constant.value : -1;
+            if (v != 10 && v != 100 && v != 1000) {
+                error(ins, Tr::tr("the time base of %1 must be 10, 100 or 1000 ms, not %2")
+                               .arg(ins.spec->mnemonic, describe(*b)));
+                return;
+            }
+            base = static_cast<double>(v);
+        }
+    }
     s.count = std::max(1, static_cast<int>(base));
     outputDone();
 }
@@ -258,11 +277,9 @@ void Compiler::compileCounter(const model::Instruction &ins, Step &s) {
     const bool upDown = ins.spec->op == Op::UpDownCounter;
     s.code = upDown ? Code::UpDownCounter : Code::Counter;
     if (upDown && m_target.family == model::Family::Pl110) {
-        notSimulated(ins);
-        s.code = Code::Nop;
-        popBlocks(ins, std::max(0, ins.spec->inputs - 1));
-        outputDone();
-        return;
+        s.code = Code::PlCounter;
+        if (ins.spec->counterMode == model::CounterMode::Down)
+            s.flags |= kDown;
     }
     const model::Operand *c = operand(ins, 0);
     if (!c)
@@ -438,6 +455,22 @@ void Compiler::compileApply(const model::Instruction &ins, Step &s) {
         };
         if (!fits(ins.operands[1]) || (s.x.index >= 0 && !fits(ins.operands[0])))
             error(ins, Tr::tr("the block of %1 words runs past the end of its area").arg(s.count));
+        break;
+    }
+    case ApplyFunction::IndirectMove: {
+        // MOVIND S D INDEX: the area from D on is a vector; element INDEX (0-based) := S.
+        s.code = Code::IndirectMove;
+        s.x = sourceOf(ins, 0);
+        s.dest = destOf(ins, 1, false, &s.width);
+        s.y = sourceOf(ins, 2);
+        if (m_failed)
+            break;
+        // How many words the vector has: from D to the end of D's area (a bit area read
+        // as words has one word per 16 bits).
+        const model::Address base = ins.operands[1].address;
+        const model::Area &area = m_target.area(base.area);
+        const int span = area.last - base.index;
+        s.count = 1 + (area.kind == AreaKind::Bit ? span / 16 : span);
         break;
     }
     default:

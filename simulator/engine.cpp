@@ -461,6 +461,87 @@ template <bool Record> void Engine::execute() {
             R[s.dest] = static_cast<std::int32_t>(st.accumulated);
             break;
         }
+        case Code::PlTimer: {
+            // PL110 (seed 003 4.2.4): the current value counts time-base units in the T word
+            // and saturates at 32767; st.accumulated holds the ms not yet a whole unit.
+            ElementState &st = m_states[static_cast<std::size_t>(s.slot)];
+            const std::int32_t set = readSet(s, i);
+            if (set < 0)
+                break;
+            std::int32_t &current = R[s.dest];
+            auto advance = [&] {
+                st.accumulated += period;
+                const std::int64_t units = std::int64_t{current} + st.accumulated / s.count;
+                st.accumulated %= s.count;
+                current = static_cast<std::int32_t>(std::min(units, kMaxTimerValue));
+            };
+            bool out = false;
+            switch (static_cast<PlTimerMode>(s.op)) {
+            case PlTimerMode::OnDelay:
+                if (acc) {
+                    if (st.running)
+                        advance();
+                } else {
+                    current = 0;
+                    st.accumulated = 0;
+                }
+                st.running = acc;
+                out = acc && current >= set;
+                break;
+            case PlTimerMode::Accumulating:
+                if (acc && st.running)
+                    advance();
+                st.running = acc;
+                out = current >= set;
+                break;
+            case PlTimerMode::OffDelay:
+                // running: 0 idle, 1 input ON, 2 timing after an ON -> OFF transition
+                if (acc) {
+                    current = 0;
+                    st.accumulated = 0;
+                    st.running = 1;
+                } else if (st.running == 1) {
+                    st.running = 2;
+                } else if (st.running == 2) {
+                    advance();
+                    if (current >= set) {
+                        current = std::min(current, set);
+                        st.running = 0;
+                    }
+                }
+                out = st.running != 0;
+                break;
+            }
+            put(W, s.bit, out);
+            break;
+        }
+        case Code::PlCounter: {
+            // PL110 MUP / MDOWN (seed 003 4.2.5): counts rising edges of UP and DOWN in the
+            // C word, which saturates at -32768..32767 (MDOWN stops at 0); RESET clears MUP
+            // and loads PV into MDOWN. MUP is ON at >= PV, MDOWN at 0.
+            ElementState &st = m_states[static_cast<std::size_t>(s.slot)];
+            const bool reset = acc;
+            const bool down = bsp > 0 ? blocks[--bsp] : false;
+            const bool up = bsp > 0 ? blocks[--bsp] : false;
+            const std::int32_t set = readSet(s, i);
+            if (set < 0)
+                break;
+            const bool upEdge = up && !(st.previous & 1);
+            const bool downEdge = down && !(st.previous & 2);
+            st.previous = static_cast<std::uint8_t>((up ? 1 : 0) | (down ? 2 : 0));
+            std::int32_t &current = R[s.dest];
+            const bool countsDown = (s.flags & kDown) != 0;
+            if (reset) {
+                current = countsDown ? set : 0;
+            } else {
+                if (upEdge && current < 32767)
+                    ++current;
+                if (downEdge && current > (countsDown ? 0 : -32768))
+                    --current;
+            }
+            put(W, s.bit, countsDown ? !reset && current == 0 : current >= set);
+            break;
+        }
         case Code::Transfer:
             if (acc != ((s.flags & kNegated) != 0)) {
                 const std::int64_t v = rdw(s.x);
@@ -580,6 +661,18 @@ template <bool Record> void Engine::execute() {
                     for (int k = 0; k < s.count; ++k)
                         wrw(s.dest + k, s.x.index >= 0 ? R[s.x.index + k] : s.x.constant, s.width);
                 }
+            }
+            break;
+        case Code::IndirectMove:
+            if (acc) {
+                const std::int32_t index = rdw(s.y);
+                if (index < 0 || index >= s.count) {
+                    runtimeError(i, Tr::tr("MOVIND index %1 is outside 0..%2; nothing is written")
+                                        .arg(index)
+                                        .arg(s.count - 1));
+                    break;
+                }
+                wrw(s.dest + index, rdw(s.x), s.width);
             }
             break;
         case Code::Interlock:

@@ -41,6 +41,8 @@ enum class Code : std::uint8_t {
     Timer,
     Counter,
     UpDownCounter,
+    PlTimer,   // PL110 TON / TOFF / TONR (op = PlTimerMode); current value = time base units
+    PlCounter, // PL110 MUP / MDOWN (kDown): UP, DOWN, RESET; current value saturates
     Transfer,
     Move,
     Compare,
@@ -52,6 +54,7 @@ enum class Code : std::uint8_t {
     Dec,
     Math,      // PL110 FM: op = MathOp
     BlockMove, // x = first source word (or a constant to fill), dest = first word, count
+    IndirectMove, // PL110 MOVIND: dest + value of y := x; count = words from dest to area end
     // control
     Interlock,
     InterlockClear,
@@ -73,6 +76,8 @@ enum StepFlag : std::uint8_t {
 };
 
 enum class TransferKind : std::uint8_t { Assign, Add, Subtract };
+
+enum class PlTimerMode : std::uint8_t { OnDelay, OffDelay, Accumulating };
 
 enum class MathOp : std::uint8_t { Add, Sub, Mul, Div, Or, And, Xor, Shl, Shr };
 

@@ -1,0 +1,126 @@
+// PL110 boxes on the real target table and listing (seed 003 4.2.4 - 4.2.9): what the golden
+// traces in tests/data/sim/pl110_*.il do not pin.
+
+#include "model/address.h"
+#include "model/il.h"
+#include "simulator/compiler.h"
+#include "simulator/engine.h"
+
+#include <gtest/gtest.h>
+
+using namespace rung;
+using namespace rung::simulator;
+
+namespace {
+
+struct Pl110 {
+    explicit Pl110(const char *text)
+        : target(model::Target::get(model::Family::Pl110))
+        , parsed(model::parseInstructionList(target, QString::fromLatin1(text))) {
+        if (parsed.ok())
+            result = compileProgram(parsed.list);
+        if (result.ok())
+            engine = std::make_unique<Engine>(result.program);
+    }
+    model::Address at(const char *name) const {
+        return std::get<model::Address>(model::parseAddress(target, QString::fromLatin1(name)));
+    }
+    const model::Target &target;
+    model::ParseResult parsed;
+    CompileResult result;
+    std::unique_ptr<Engine> engine;
+};
+
+} // namespace
+
+TEST(Pl110Timer, TimeBaseOperandSetsTheUnitOfTheCurrentValue) {
+    Pl110 s("LD I1\nTON T1 5 1000\nEND");
+    ASSERT_TRUE(s.parsed.ok());
+    ASSERT_TRUE(s.result.ok());
+    s.engine->setPeriodMs(100);
+    s.engine->setBit(s.at("I1"), true);
+    s.engine->runScans(50); // the first scan starts the timer, 49 more are 4.9 s
+    EXPECT_EQ(s.engine->value(s.at("T1")), 4);
+    EXPECT_FALSE(s.engine->bit(s.at("T1")));
+    s.engine->scan();
+    EXPECT_EQ(s.engine->value(s.at("T1")), 5);
+    EXPECT_TRUE(s.engine->bit(s.at("T1")));
+}
+
+TEST(Pl110Timer, OnlyTheThreeTimeBasesOfTheManualAreAccepted) {
+    Pl110 s("LD I1\nTON T1 5 100\nLD I2\nTOFF T2 5 50\nEND");
+    ASSERT_TRUE(s.parsed.ok());
+    ASSERT_FALSE(s.result.ok());
+    ASSERT_FALSE(s.result.diagnostics.empty());
+    EXPECT_EQ(s.result.diagnostics.front().location.line, 4);
+    EXPECT_TRUE(s.result.diagnostics.front().message.contains(QStringLiteral("10, 100 or 1000")));
+}
+
+TEST(Pl110Timer, CurrentValueStopsAt32767) {
+    Pl110 s("LD I1\nTON T1 100 10\nEND");
+    ASSERT_TRUE(s.result.ok());
+    s.engine->setBit(s.at("I1"), true);
+    s.engine->runScans(40000);
+    EXPECT_EQ(s.engine->value(s.at("T1")), 32767);
+    EXPECT_TRUE(s.engine->bit(s.at("T1")));
+}
+
+TEST(Pl110Counter, UpCountStaysAtTheMaximum) {
+    Pl110 s("LD I1\nLD I2\nLD I3\nMUP C1 10\nEND");
+    ASSERT_TRUE(s.result.ok());
+    ASSERT_TRUE(s.result.diagnostics.empty()); // MUP is simulated, not a SIM100 warning
+    s.engine->writeWord(s.at("C1"), 32767);
+    s.engine->setBit(s.at("I1"), true);
+    s.engine->scan();
+    EXPECT_EQ(s.engine->value(s.at("C1")), 32767);
+    EXPECT_TRUE(s.engine->bit(s.at("C1")));
+}
+
+TEST(Pl110Counter, DownCountOfMupStaysAtTheMinimum) {
+    Pl110 s("LD I1\nLD I2\nLD I3\nMUP C1 10\nEND");
+    ASSERT_TRUE(s.result.ok());
+    s.engine->writeWord(s.at("C1"), -32768);
+    s.engine->setBit(s.at("I2"), true);
+    s.engine->scan();
+    EXPECT_EQ(s.engine->value(s.at("C1")), -32768);
+}
+
+TEST(Pl110IndirectMove, IndexOutsideTheAreaIsARuntimeErrorWithItsLine) {
+    // V340..V349 are the last ten words of V: index 10 is one past the end.
+    Pl110 s("LD SM0.0\nMOVIND 5 V340 V0\nEND");
+    ASSERT_TRUE(s.result.ok());
+    s.engine->writeWord(s.at("V0"), 9);
+    s.engine->scan();
+    EXPECT_EQ(s.engine->value(s.at("V349")), 5);
+    s.engine->writeWord(s.at("V0"), 10);
+    s.engine->scan();
+    s.engine->writeWord(s.at("V0"), -1);
+    s.engine->scan();
+    ASSERT_EQ(s.engine->runtimeErrors().size(), 1u); // reported once per step
+    EXPECT_EQ(s.engine->runtimeErrors().front().line, 2);
+    EXPECT_TRUE(s.engine->runtimeErrors().front().message.contains(QStringLiteral("0..9")));
+    EXPECT_EQ(s.engine->value(s.at("V339")), 0); // nothing written outside the vector
+}
+
+TEST(Pl110Boxes, UnmodelledBoxesAreReportedWhenTheSimulationStarts) {
+    Pl110 s("LD I1\nPID 1 2 3\nLD I1\nOUT Q1\nEND");
+    ASSERT_TRUE(s.parsed.ok());
+    ASSERT_TRUE(s.result.ok());
+    ASSERT_EQ(s.result.diagnostics.size(), 1u);
+    EXPECT_EQ(s.result.diagnostics[0].code, QStringLiteral("SIM100"));
+    EXPECT_EQ(s.result.diagnostics[0].location.line, 2);
+}
+
+TEST(Pl110Power, VariablesSurviveAPowerCycleMarkersAndTimersClear) {
+    Pl110 s("LD I1\nOUT M1\nLD I1\nTONR T1 100 10\nLD I1\nMOV 42 V5\nEND");
+    ASSERT_TRUE(s.result.ok());
+    s.engine->setBit(s.at("I1"), true);
+    s.engine->runScans(10);
+    ASSERT_TRUE(s.engine->bit(s.at("M1")));
+    ASSERT_EQ(s.engine->value(s.at("T1")), 9);
+    s.engine->setBit(s.at("I1"), false);
+    s.engine->powerCycle();
+    EXPECT_EQ(s.engine->value(s.at("V5")), 42);
+    EXPECT_FALSE(s.engine->bit(s.at("M1")));
+    EXPECT_EQ(s.engine->value(s.at("T1")), 0);
+}
