@@ -779,4 +779,17 @@ CompileResult compileProgram(const model::InstructionList &list) {
     return Compiler(list).run();
 }
 
+CompileResult prepareProgram(const model::InstructionList &list,
+                             const model::CheckOptions &options) {
+    std::vector<model::Diagnostic> errors;
+    for (model::Diagnostic &d : model::checkList(list, options))
+        if (d.severity == model::Severity::Error)
+            errors.push_back(std::move(d));
+    if (errors.empty())
+        return compileProgram(list);
+    CompileResult result;
+    result.diagnostics = std::move(errors);
+    return result;
+}
+
 } // namespace rung::simulator

@@ -52,8 +52,8 @@ enum class Code : std::uint8_t {
     Div,
     Inc,
     Dec,
-    Math,      // PL110 FM: op = MathOp
-    BlockMove, // x = first source word (or a constant to fill), dest = first word, count
+    Math,         // PL110 FM: op = MathOp
+    BlockMove,    // x = first source word (or a constant to fill), dest = first word, count
     IndirectMove, // PL110 MOVIND: dest + value of y := x; count = words from dest to area end
     // control
     Interlock,

@@ -86,12 +86,12 @@ int runSimulateCommand(const QStringList &args, QTextStream &out, QTextStream &e
         err << Tr::tr("the program does not start") << '\n';
         return 1;
     }
-    const simulator::CompileResult compiled = simulator::compileProgram(parsed.list);
+    const simulator::CompileResult compiled = simulator::prepareProgram(parsed.list);
     for (const model::Diagnostic &d : compiled.diagnostics)
         err << QStringLiteral("%1:%2:%3: ").arg(file).arg(d.location.line).arg(d.location.column)
             << (d.severity == model::Severity::Error ? Tr::tr("error: %1").arg(d.message)
                                                      : Tr::tr("warning: %1").arg(d.message))
-            << '\n';
+            << QStringLiteral(" [%1]").arg(d.code) << '\n';
     if (!compiled.ok()) {
         err << Tr::tr("the program does not start") << '\n';
         return 1;

@@ -5,8 +5,11 @@
 
 #include "tests/simulator/sim_test_target.h"
 
+#include "model/il.h"
 #include "simulator/compiler.h"
 #include "simulator/engine.h"
+
+#include <QFile>
 
 #include <benchmark/benchmark.h>
 
@@ -97,10 +100,36 @@ void BM_TrafficLight24Hours(benchmark::State &state) {
     }
 }
 
+// The same 24 h on the real Vigor table and listing, as a user's simulation runs it.
+void BM_TrafficLight24HoursVigorListing(benchmark::State &state) {
+    QFile file(QStringLiteral(RUNG_TEST_DATA_DIR "/sim/vigor_traffic_light.il"));
+    if (!file.open(QIODevice::ReadOnly)) {
+        state.SkipWithError("vigor_traffic_light.il not found");
+        return;
+    }
+    const model::ParseResult parsed = model::parseInstructionList(
+        model::Target::get(model::Family::Vigor), QString::fromUtf8(file.readAll()));
+    const CompileResult compiled = parsed.ok() ? compileProgram(parsed.list) : CompileResult{};
+    if (!compiled.ok()) {
+        state.SkipWithError("the traffic light did not compile");
+        return;
+    }
+    for (auto _ : state) {
+        Engine engine(compiled.program);
+        engine.setPeriodMs(10);
+        engine.runFor(24LL * 3600 * 1000);
+        benchmark::DoNotOptimize(engine.statistics().scans);
+    }
+}
+
 } // namespace
 
 BENCHMARK(BM_Scan2048Steps);
 BENCHMARK(BM_Scan2048StepsWithPowerFlow);
 BENCHMARK(BM_TrafficLight24Hours)->Unit(benchmark::kMillisecond)->Iterations(1)->Repetitions(3);
+BENCHMARK(BM_TrafficLight24HoursVigorListing)
+    ->Unit(benchmark::kMillisecond)
+    ->Iterations(1)
+    ->Repetitions(3);
 
 BENCHMARK_MAIN();

@@ -124,3 +124,21 @@ TEST(Pl110Power, VariablesSurviveAPowerCycleMarkersAndTimersClear) {
     EXPECT_FALSE(s.engine->bit(s.at("M1")));
     EXPECT_EQ(s.engine->value(s.at("T1")), 0);
 }
+
+TEST(SimulationStart, ProgramWithACheckErrorDoesNotStart) {
+    const model::Target &t = model::Target::get(model::Family::Cpm1);
+    const model::ParseResult bad =
+        model::parseInstructionList(t, QStringLiteral("LD 000.00\nOUT 010.00\nLD 000.01\n"
+                                                      "OUT 010.00\nEND\n"));
+    ASSERT_TRUE(bad.ok());
+    const CompileResult refused = prepareProgram(bad.list);
+    EXPECT_FALSE(refused.ok());
+    ASSERT_FALSE(refused.diagnostics.empty());
+    EXPECT_EQ(refused.diagnostics.front().severity, model::Severity::Error);
+    EXPECT_EQ(refused.diagnostics.front().location.line, 4);
+
+    const model::ParseResult good =
+        model::parseInstructionList(t, QStringLiteral("LD 000.00\nOR 000.01\nOUT 010.00\nEND\n"));
+    ASSERT_TRUE(good.ok());
+    EXPECT_TRUE(prepareProgram(good.list).ok());
+}
