@@ -61,16 +61,19 @@ TEST_P(SimulatedEquivalence, ListingAndItsRoundTripGiveIdenticalTraces) {
             }
             ea.scan();
             eb.scan();
-            for (const model::Address &d : devices)
+            for (const model::Address &d : devices) {
                 ASSERT_EQ(ea.bit(d), eb.bit(d))
                     << "scan " << scan << " device " << model::formatAddress(t, d).toStdString();
+                ASSERT_EQ(ea.value(d), eb.value(d))
+                    << "scan " << scan << " value of " << model::formatAddress(t, d).toStdString();
+            }
         }
     }
 }
 
 INSTANTIATE_TEST_SUITE_P(Targets, SimulatedEquivalence,
                          ::testing::Values(model::Family::Vpc, model::Family::Vigor,
-                                           model::Family::Cpm1),
+                                           model::Family::Cpm1, model::Family::Pl110),
                          [](const auto &info) {
                              return model::Target::get(info.param).id.toStdString();
                          });
