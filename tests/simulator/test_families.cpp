@@ -146,3 +146,13 @@ TEST(PowerCycle, FirstScanPulseComesAgain) {
     f.engine->powerCycle();
     EXPECT_EQ(f.bits("Y0", 2), "10");
 }
+
+TEST(ParallelIo, VpcP77ReadsI00ToI11AsANumberWithI11TheMostSignificantBit) {
+    Family f(model::Family::Vpc, "LD r88\nOUT p00,p77\nEND");
+    ASSERT_TRUE(f.result.ok());
+    for (const char *in : {"i00", "i03", "i11", "i12"})
+        f.engine->setBit(f.at(in), true);
+    f.engine->scan();
+    EXPECT_EQ(f.value("p77"), 1 + 8 + 2048); // i12 is not part of it
+    EXPECT_EQ(f.value("p00"), 2057);
+}
