@@ -84,75 +84,110 @@ int firstCell(const Expr &e) {
 }
 
 // Reduces a two-terminal network by parallel and series steps; true when one edge is left.
+// Each round merges every group of parallel edges, then joins every node with one edge in
+// and one edge out; the result does not depend on the order of the joins (series() and
+// parallel() flatten, branches are sorted by their top-left cell).
 bool reduce(std::vector<Edge> edges, int source, int sink, Expr *out) {
+    int nodes = std::max(source, sink) + 1;
+    for (const Edge &e : edges)
+        nodes = std::max({nodes, e.from + 1, e.to + 1});
+    std::vector<int> inCount(static_cast<std::size_t>(nodes));
+    std::vector<int> outCount(static_cast<std::size_t>(nodes));
+    std::vector<int> inEdge(static_cast<std::size_t>(nodes));
+    std::vector<int> outEdge(static_cast<std::size_t>(nodes));
+    std::vector<std::size_t> order;
     for (bool changed = true; changed;) {
         changed = false;
         // Parallel edges between the same two nodes become one, branches in drawing order.
-        std::map<std::pair<int, int>, std::vector<std::size_t>> groups;
-        for (std::size_t i = 0; i < edges.size(); ++i)
-            groups[{edges[i].from, edges[i].to}].push_back(i);
+        order.resize(edges.size());
+        std::iota(order.begin(), order.end(), std::size_t{0});
+        std::stable_sort(order.begin(), order.end(), [&](std::size_t a, std::size_t b) {
+            return std::pair(edges[a].from, edges[a].to) < std::pair(edges[b].from, edges[b].to);
+        });
         std::vector<Edge> next;
-        std::vector<bool> done(edges.size(), false);
-        for (std::size_t i = 0; i < edges.size(); ++i) {
-            if (done[i])
+        next.reserve(edges.size());
+        for (std::size_t i = 0; i < order.size();) {
+            std::size_t j = i + 1;
+            const Edge &first = edges[order[i]];
+            while (j < order.size() && edges[order[j]].from == first.from &&
+                   edges[order[j]].to == first.to)
+                ++j;
+            if (j - i == 1) {
+                next.push_back(std::move(edges[order[i]]));
+                i = j;
                 continue;
-            const auto &group = groups[{edges[i].from, edges[i].to}];
-            if (group.size() == 1) {
-                next.push_back(std::move(edges[i]));
-                continue;
-            }
-            std::vector<Edge *> members;
-            for (std::size_t k : group) {
-                members.push_back(&edges[k]);
-                done[k] = true;
             }
             // Branches in drawing order, each by its own top-left cell, so the order does
             // not depend on which branches were reduced first.
             std::vector<Expr> branches;
-            int key = members[0]->key;
-            for (Edge *m : members) {
-                key = std::min(key, m->key);
-                if (m->expr.kind == Expr::Kind::Parallel)
-                    for (Expr &b : m->expr.items)
+            int key = first.key;
+            Edge merged{first.from, first.to, {}, key};
+            for (std::size_t k = i; k < j; ++k) {
+                Edge &m = edges[order[k]];
+                merged.key = std::min(merged.key, m.key);
+                if (m.expr.kind == Expr::Kind::Parallel)
+                    for (Expr &b : m.expr.items)
                         branches.push_back(std::move(b));
                 else
-                    branches.push_back(std::move(m->expr));
+                    branches.push_back(std::move(m.expr));
             }
-            std::stable_sort(branches.begin(), branches.end(), [](const Expr &a, const Expr &b) {
-                return firstCell(a) < firstCell(b);
-            });
-            Edge merged{members[0]->from, members[0]->to, {}, key};
+            std::vector<std::pair<int, std::size_t>> byCell;
+            byCell.reserve(branches.size());
+            for (std::size_t k = 0; k < branches.size(); ++k)
+                byCell.emplace_back(firstCell(branches[k]), k);
+            std::stable_sort(byCell.begin(), byCell.end(),
+                             [](const auto &a, const auto &b) { return a.first < b.first; });
             merged.expr.kind = Expr::Kind::Parallel;
-            merged.expr.items = std::move(branches);
+            merged.expr.items.reserve(branches.size());
+            for (const auto &[cell, k] : byCell)
+                merged.expr.items.push_back(std::move(branches[k]));
             next.push_back(std::move(merged));
             changed = true;
+            i = j;
         }
         edges = std::move(next);
         // A node with one edge in and one edge out joins them in series.
-        std::map<int, std::pair<int, int>> degree; // node -> (in, out)
-        for (const Edge &e : edges) {
-            ++degree[e.to].first;
-            ++degree[e.from].second;
+        std::fill(inCount.begin(), inCount.end(), 0);
+        std::fill(outCount.begin(), outCount.end(), 0);
+        for (std::size_t i = 0; i < edges.size(); ++i) {
+            const auto to = static_cast<std::size_t>(edges[i].to);
+            const auto from = static_cast<std::size_t>(edges[i].from);
+            ++inCount[to];
+            inEdge[to] = static_cast<int>(i);
+            ++outCount[from];
+            outEdge[from] = static_cast<int>(i);
         }
-        for (const auto &[node, d] : degree) {
-            const int n = node; // clang 14 cannot capture structured bindings
-            if (n == source || n == sink || d.first != 1 || d.second != 1)
+        std::vector<bool> dead(edges.size(), false);
+        for (int n = 0; n < nodes; ++n) {
+            const auto un = static_cast<std::size_t>(n);
+            if (n == source || n == sink || inCount[un] != 1 || outCount[un] != 1)
                 continue;
-            auto in =
-                std::find_if(edges.begin(), edges.end(), [n](const Edge &e) { return e.to == n; });
-            auto outIt = std::find_if(edges.begin(), edges.end(),
-                                      [n](const Edge &e) { return e.from == n; });
-            if (in == outIt)
-                continue;
-            Edge joined{in->from, outIt->to, series(std::move(in->expr), std::move(outIt->expr)),
-                        std::min(in->key, outIt->key)};
-            const std::size_t a = static_cast<std::size_t>(in - edges.begin());
-            const std::size_t b = static_cast<std::size_t>(outIt - edges.begin());
-            edges.erase(edges.begin() + static_cast<std::ptrdiff_t>(std::max(a, b)));
-            edges.erase(edges.begin() + static_cast<std::ptrdiff_t>(std::min(a, b)));
-            edges.push_back(std::move(joined));
+            const auto a = static_cast<std::size_t>(inEdge[un]);
+            const auto b = static_cast<std::size_t>(outEdge[un]);
+            if (a == b)
+                continue; // a loop on n
+            // a: x -> n, b: n -> y become a: x -> y; y's single in-edge (if it has one) is a.
+            Edge &in = edges[a];
+            Edge &outE = edges[b];
+            in.expr = series(std::move(in.expr), std::move(outE.expr));
+            in.key = std::min(in.key, outE.key);
+            in.to = outE.to;
+            const auto y = static_cast<std::size_t>(in.to);
+            if (inEdge[y] == static_cast<int>(b))
+                inEdge[y] = static_cast<int>(a);
+            if (outEdge[static_cast<std::size_t>(in.from)] == static_cast<int>(b))
+                outEdge[static_cast<std::size_t>(in.from)] = static_cast<int>(a);
+            dead[b] = true;
+            inCount[un] = outCount[un] = 0;
             changed = true;
-            break; // degrees changed: recount
+        }
+        if (changed) {
+            std::vector<Edge> alive;
+            alive.reserve(edges.size());
+            for (std::size_t i = 0; i < edges.size(); ++i)
+                if (!dead[i])
+                    alive.push_back(std::move(edges[i]));
+            edges = std::move(alive);
         }
     }
     if (edges.size() == 1 && edges[0].from == source && edges[0].to == sink) {
