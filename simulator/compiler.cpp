@@ -21,6 +21,13 @@ struct Tr {
     Q_DECLARE_TR_FUNCTIONS(rung::simulator::Compiler)
 };
 
+// lupdate loses the scope of Tr::tr after some comparisons in inline member functions and
+// files those texts under a context "Tr" that the program never asks for; the explicit
+// context keeps them translatable.
+QString trCompiler(const char *text) {
+    return QCoreApplication::translate("rung::simulator::Compiler", text);
+}
+
 constexpr int kMaxBlockDepth = 63; // Engine keeps a 64-entry block stack
 constexpr int kMaxPushDepth = 32;
 constexpr int kMaxZoneElements = 65536;
@@ -71,7 +78,9 @@ private:
     const model::Operand *operand(const model::Instruction &ins, std::size_t i) {
         if (i < ins.operands.size())
             return &ins.operands[i];
-        error(ins, Tr::tr("%1 needs operand %2").arg(ins.spec->mnemonic).arg(i + 1));
+        error(ins, trCompiler(QT_TRANSLATE_NOOP("rung::simulator::Compiler", "%1 needs operand %2"))
+                       .arg(ins.spec->mnemonic)
+                       .arg(i + 1));
         return nullptr;
     }
     bool isDevice(const model::Operand &o) const {
@@ -122,9 +131,13 @@ private:
             *width = static_cast<std::uint8_t>(m_layout->wordBits(o->address));
         }
         if (index == -2)
-            error(ins, Tr::tr("%1 cannot be written").arg(describe(*o)));
+            error(ins,
+                  trCompiler(QT_TRANSLATE_NOOP("rung::simulator::Compiler", "%1 cannot be written"))
+                      .arg(describe(*o)));
         else if (index < 0)
-            error(ins, Tr::tr("%1 is not a word device").arg(describe(*o)));
+            error(ins, trCompiler(QT_TRANSLATE_NOOP("rung::simulator::Compiler",
+                                                    "%1 is not a word device"))
+                           .arg(describe(*o)));
         return index;
     }
     // The word after a destination (MUL high word, DIV remainder).
@@ -137,7 +150,9 @@ private:
         const int w = m_layout->word(a);
         if (w < 0)
             error(ins,
-                  Tr::tr("%1 needs the next word too, which does not exist").arg(describe(*o)));
+                  trCompiler(QT_TRANSLATE_NOOP("rung::simulator::Compiler",
+                                               "%1 needs the next word too, which does not exist"))
+                      .arg(describe(*o)));
         return w;
     }
     ResetTarget resetTargetOf(const model::Address &a) {
