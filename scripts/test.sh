@@ -8,9 +8,11 @@ cmake -S . -B "$build_dir" -G Ninja -DCMAKE_BUILD_TYPE=RelWithDebInfo -DRUNG_WER
     ${RUNG_CMAKE_ARGS:-} >/dev/null
 cmake --build "$build_dir" -j "$(nproc)"
 export QT_QPA_PLATFORM=offscreen
-ctest --test-dir "$build_dir" --output-on-failure -j "$(nproc)" --timeout 600
 # A short run of every benchmark proves they still build and run; the figures are for reading.
 for b in "$build_dir"/tests/benchmarks/bench_*; do
     [ -f "$b" ] && [ -x "$b" ] || continue
-    "$b" --benchmark_min_time=0.01 >/dev/null
+    log="$build_dir/$(basename "$b").log"
+    "$b" --benchmark_min_time=0.01 >"$log" 2>&1 || { cat "$log"; echo "FAILED: $b"; exit 1; }
 done
+# The tests run last, so their summary closes the output.
+ctest --test-dir "$build_dir" --output-on-failure -j "$(nproc)" --timeout 600
