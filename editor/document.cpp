@@ -204,7 +204,7 @@ void Document::refresh() {
     }
     model::CheckOptions options;
     options.model = modelVariant();
-    m_diagnostics = model::checkLadder(m_project.program, options);
+    m_diagnostics = model::checkLadder(m_project.program, m_listing, options);
     for (const model::Diagnostic &d : m_listing.problems)
         if (d.code != QLatin1String("RC001")) // the checks report it with its fix
             m_diagnostics.push_back(d);

@@ -213,6 +213,8 @@ IlLexer::~IlLexer() {
 }
 
 void IlEditor::setTarget(const model::Target &target) {
+    if (m_lexer && m_target == &target)
+        return; // a new lexer restyles the whole text
     m_target = &target;
     auto *lexer = new IlLexer(target, this);
     auto *apis = new QsciAPIs(lexer);

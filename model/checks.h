@@ -3,6 +3,7 @@
 // The checks the vendor tools make, on the listing and on the ladder. Every code is listed
 // in docs/diagnostics.md and has a test that triggers it and one that does not.
 
+#include "convert.h"
 #include "diagnostic.h"
 #include "il.h"
 #include "ladder.h"
@@ -21,5 +22,9 @@ std::vector<Diagnostic> checkList(const InstructionList &list, const CheckOption
 // Checks on the ladder (reverse current, open branches, unconnected elements, outputs with no
 // condition) plus every listing check mapped back to rung locations.
 std::vector<Diagnostic> checkLadder(const LadderProgram &ladder, const CheckOptions &options = {});
+// The same with the listing of the ladder already made (ladderToList(ladder)), as the editor
+// has it: the conversion is the larger part of the work.
+std::vector<Diagnostic> checkLadder(const LadderProgram &ladder, const ToListingResult &listing,
+                                    const CheckOptions &options = {});
 
 } // namespace rung::model

@@ -31,6 +31,13 @@ int rungOf(const std::vector<int> &rungFirst, int instruction) {
 } // namespace
 
 std::vector<Diagnostic> checkLadder(const LadderProgram &ladder, const CheckOptions &options) {
+    if (!ladder.target)
+        return {};
+    return checkLadder(ladder, ladderToList(ladder), options);
+}
+
+std::vector<Diagnostic> checkLadder(const LadderProgram &ladder, const ToListingResult &list,
+                                    const CheckOptions &options) {
     std::vector<Diagnostic> out;
     if (!ladder.target)
         return out;
@@ -109,7 +116,6 @@ std::vector<Diagnostic> checkLadder(const LadderProgram &ladder, const CheckOpti
             }
     }
     // The listing checks, on the rungs the instructions came from.
-    const ToListingResult list = ladderToList(ladder);
     for (detail::Finding &f : detail::checkListFindings(list.list, options)) {
         if (f.diagnostic.code == QLatin1String("OC001") ||
             f.diagnostic.code == QLatin1String("BL001"))

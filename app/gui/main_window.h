@@ -67,6 +67,7 @@ private:
     void updateTitle();
     void updateStatus();
     void refreshFromDocument();
+    void showProject(const model::Project &project, const QString &path);
     void refreshSymbols();
     void locate(const model::Diagnostic &diagnostic);
     void applyFix(const model::Diagnostic &diagnostic);

@@ -97,16 +97,20 @@ bool MainWindow::offerRecovery(bool ask) {
     auto project = model::loadProject(path, &error);
     if (!project)
         return false;
-    m_document->setProject(*project, QString());
-    m_il->setTarget(*project->target);
-    refreshFromDocument();
+    showProject(*project, QString());
     return true;
 }
 
+void MainWindow::showProject(const model::Project &project, const QString &path) {
+    // The editor gets the target's lexer before the text arrives, so the text is styled
+    // once, as it is shown; Document::setProject emits programChanged, which refreshes.
+    m_il->setTarget(*project.target);
+    m_document->setProject(project, path);
+}
+
 void MainWindow::newProject(const model::Target &target, const QString &modelName) {
-    m_document->reset(target, modelName);
     m_il->setTarget(target);
-    refreshFromDocument();
+    m_document->reset(target, modelName);
 }
 
 bool MainWindow::openFile(const QString &path, const QString &targetId, bool quiet) {
@@ -152,10 +156,7 @@ bool MainWindow::openFile(const QString &path, const QString &targetId, bool qui
         project.model = target->defaultModel().name;
         project.program = ladder.ladder;
     }
-    m_document->setProject(project,
-                           suffix == QLatin1String(model::kProjectExtension) ? path : QString());
-    m_il->setTarget(*project.target);
-    refreshFromDocument();
+    showProject(project, suffix == QLatin1String(model::kProjectExtension) ? path : QString());
     if (suffix == QLatin1String(model::kProjectExtension))
         addRecent(path);
     return true;
@@ -384,9 +385,7 @@ void MainWindow::rebuildExamplesMenu() {
                     QMessageBox::critical(this, tr("Cannot open the example"), error.message);
                     return;
                 }
-                m_document->setProject(*project, QString());
-                m_il->setTarget(*project->target);
-                refreshFromDocument();
+                showProject(*project, QString());
             });
     }
     m_examplesMenu->setEnabled(!byTarget.empty());
