@@ -202,7 +202,8 @@ void LadderPainter::paintOutput(QPainter &p, const QRectF &area,
     p.setFont(m_font);
     const QString text = model::printInstruction(*m_project.target, ins);
     const QFontMetricsF fm(m_font);
-    p.drawText(box.adjusted(4, 0, -4, 0), Qt::AlignLeft | Qt::AlignTop | Qt::TextWordWrap,
+    // Centred, so the pin letters of a multi-input box (U, D, R at its left edge) stay clear.
+    p.drawText(box.adjusted(16, 0, -4, 0), Qt::AlignHCenter | Qt::AlignTop | Qt::TextWordWrap,
                fm.elidedText(text, Qt::ElideRight, box.width() * 2));
 }
 

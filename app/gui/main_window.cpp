@@ -3,6 +3,7 @@
 #include "editor/il_editor.h"
 #include "editor/ladder_view.h"
 #include "editor/problems_view.h"
+#include "editor/tool_icons.h"
 
 #include <QAction>
 #include <QActionGroup>
@@ -22,6 +23,7 @@
 #include <QStatusBar>
 #include <QTabWidget>
 #include <QTableWidget>
+#include <QTimer>
 #include <QToolBar>
 #include <QVBoxLayout>
 
@@ -97,7 +99,14 @@ MainWindow::MainWindow(QWidget *parent)
     resizeDocks({findChild<QDockWidget *>(QStringLiteral("problemsDock"))}, {150}, Qt::Vertical);
     resizeDocks({findChild<QDockWidget *>(QStringLiteral("projectDock"))}, {230}, Qt::Horizontal);
     restoreGeometry(settings.value(QStringLiteral("window/geometry")).toByteArray());
-    restoreState(settings.value(QStringLiteral("window/state")).toByteArray());
+    if (!restoreState(settings.value(QStringLiteral("window/state")).toByteArray())) {
+        // First start: the project dock wide enough for device, name and the start of the
+        // comment, the problems list a few lines high. Docks take sizes once laid out.
+        QTimer::singleShot(0, this, [this] {
+            if (auto *project = findChild<QDockWidget *>(QStringLiteral("projectDock")))
+                resizeDocks({project}, {300}, Qt::Horizontal);
+        });
+    }
     refreshFromDocument();
     updateTitle();
 }
@@ -132,7 +141,10 @@ void MainWindow::buildDocks() {
     m_symbols->setObjectName(QStringLiteral("symbolsTable"));
     m_symbols->setHorizontalHeaderLabels({tr("Device"), tr("Name"), tr("Comment")});
     m_symbols->horizontalHeader()->setStretchLastSection(true);
+    m_symbols->setColumnWidth(0, 70);
+    m_symbols->setColumnWidth(1, 90);
     m_symbols->verticalHeader()->hide();
+    m_symbols->verticalHeader()->setDefaultSectionSize(m_symbols->fontMetrics().height() + 8);
     layout->addWidget(m_symbols, 1);
     projectDock->setWidget(panel);
     addDockWidget(Qt::LeftDockWidgetArea, projectDock);
@@ -167,16 +179,18 @@ void MainWindow::buildActions() {
     QMenu *file = menuBar()->addMenu(tr("&File"));
     QToolBar *bar = addToolBar(tr("Main"));
     bar->setObjectName(QStringLiteral("mainToolBar"));
-    QAction *newAction = file->addAction(QIcon::fromTheme(QStringLiteral("document-new")),
+    bar->setIconSize(QSize(24, 24));
+    bar->setToolButtonStyle(Qt::ToolButtonIconOnly); // the names and keys are in the tooltips
+    QAction *newAction = file->addAction(editor::toolIcon(editor::ToolIcon::NewFile),
                                          tr("&New Project..."), this, &MainWindow::fileNew);
     newAction->setShortcut(QKeySequence::New);
-    QAction *open = file->addAction(QIcon::fromTheme(QStringLiteral("document-open")),
-                                    tr("&Open..."), this, &MainWindow::fileOpen);
+    QAction *open = file->addAction(editor::toolIcon(editor::ToolIcon::OpenFile), tr("&Open..."),
+                                    this, &MainWindow::fileOpen);
     open->setShortcut(QKeySequence::Open);
     m_recentMenu = file->addMenu(tr("Open &Recent"));
     m_examplesMenu = file->addMenu(tr("E&xamples"));
-    QAction *save = file->addAction(QIcon::fromTheme(QStringLiteral("document-save")), tr("&Save"),
-                                    this, &MainWindow::fileSave);
+    QAction *save = file->addAction(editor::toolIcon(editor::ToolIcon::SaveFile), tr("&Save"), this,
+                                    &MainWindow::fileSave);
     save->setShortcut(QKeySequence::Save);
     file->addAction(tr("Save &As..."), this, &MainWindow::fileSaveAs)
         ->setShortcut(QKeySequence::SaveAs);
@@ -194,6 +208,10 @@ void MainWindow::buildActions() {
     bar->addAction(newAction);
     bar->addAction(open);
     bar->addAction(save);
+    for (QAction *a : {newAction, open, save})
+        a->setToolTip(QStringLiteral("%1 (%2)").arg(
+            a->text().remove(QLatin1Char('&')).remove(QStringLiteral("...")),
+            a->shortcut().toString(QKeySequence::NativeText)));
     bar->addSeparator();
 
     QMenu *edit = menuBar()->addMenu(tr("&Edit"));
@@ -201,48 +219,42 @@ void MainWindow::buildActions() {
     undo->setShortcut(QKeySequence::Undo);
     QAction *redo = m_document->undoStack()->createRedoAction(this, tr("&Redo"));
     redo->setShortcuts({QKeySequence::Redo, QKeySequence(Qt::CTRL | Qt::Key_Y)});
+    undo->setIcon(editor::toolIcon(editor::ToolIcon::Undo));
+    redo->setIcon(editor::toolIcon(editor::ToolIcon::Redo));
     edit->addAction(undo);
     edit->addAction(redo);
     bar->addAction(undo);
     bar->addAction(redo);
     bar->addSeparator();
     edit->addSeparator();
+    // The palette: what F5..F9 do, as the vendor tools have it.
+    auto pressKey = [this](Qt::Key key) {
+        return [this, key] {
+            m_ladder->setFocus();
+            QApplication::postEvent(m_ladder, new QKeyEvent(QEvent::KeyPress, key, Qt::NoModifier));
+        };
+    };
     struct Tool {
         QString text;
+        editor::ToolIcon icon;
         QKeySequence key;
         std::function<void()> run;
     };
     const std::vector<Tool> tools = {
-        {tr("Normally Open Contact"), QKeySequence(Qt::Key_F5),
-         [this] {
-             m_ladder->setFocus();
-             QApplication::postEvent(m_ladder,
-                                     new QKeyEvent(QEvent::KeyPress, Qt::Key_F5, Qt::NoModifier));
-         }},
-        {tr("Normally Closed Contact"), QKeySequence(Qt::Key_F6),
-         [this] {
-             m_ladder->setFocus();
-             QApplication::postEvent(m_ladder,
-                                     new QKeyEvent(QEvent::KeyPress, Qt::Key_F6, Qt::NoModifier));
-         }},
-        {tr("Coil"), QKeySequence(Qt::Key_F7),
-         [this] {
-             m_ladder->setFocus();
-             QApplication::postEvent(m_ladder,
-                                     new QKeyEvent(QEvent::KeyPress, Qt::Key_F7, Qt::NoModifier));
-         }},
-        {tr("Instruction"), QKeySequence(Qt::Key_F8),
-         [this] {
-             m_ladder->setFocus();
-             QApplication::postEvent(m_ladder,
-                                     new QKeyEvent(QEvent::KeyPress, Qt::Key_F8, Qt::NoModifier));
-         }},
-        {tr("Horizontal Wire"), QKeySequence(Qt::Key_F9), [this] { m_ladder->placeWire(); }},
-        {tr("Vertical Link"), QKeySequence(Qt::SHIFT | Qt::Key_F9),
+        {tr("Normally Open Contact"), editor::ToolIcon::OpenContact, QKeySequence(Qt::Key_F5),
+         pressKey(Qt::Key_F5)},
+        {tr("Normally Closed Contact"), editor::ToolIcon::ClosedContact, QKeySequence(Qt::Key_F6),
+         pressKey(Qt::Key_F6)},
+        {tr("Coil"), editor::ToolIcon::Coil, QKeySequence(Qt::Key_F7), pressKey(Qt::Key_F7)},
+        {tr("Instruction"), editor::ToolIcon::Instruction, QKeySequence(Qt::Key_F8),
+         pressKey(Qt::Key_F8)},
+        {tr("Horizontal Wire"), editor::ToolIcon::HorizontalWire, QKeySequence(Qt::Key_F9),
+         [this] { m_ladder->placeWire(); }},
+        {tr("Vertical Link"), editor::ToolIcon::VerticalLink, QKeySequence(Qt::SHIFT | Qt::Key_F9),
          [this] { m_ladder->toggleLink(); }},
     };
     for (const Tool &t : tools) {
-        QAction *a = edit->addAction(t.text, this, t.run);
+        QAction *a = edit->addAction(editor::toolIcon(t.icon), t.text, this, t.run);
         a->setToolTip(
             QStringLiteral("%1 (%2)").arg(t.text, t.key.toString(QKeySequence::NativeText)));
         bar->addAction(a);
