@@ -22,8 +22,10 @@ struct LadderMetrics {
     double rungGap = 10;
     int gridColumns = 11; // contact columns before the output column (aligned for all rungs)
 
+    static constexpr double kRightMargin = 12; // not zoomed
+
     double rungHeight(const model::Rung &rung) const;
-    double width() const { return gutter + gridColumns * cellWidth + outputWidth + 12; }
+    double width() const { return gutter + gridColumns * cellWidth + outputWidth + kRightMargin; }
 };
 
 struct RungDecorations {

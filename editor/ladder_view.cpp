@@ -88,9 +88,31 @@ void LadderView::relayout() {
 }
 
 void LadderView::setZoom(double zoom) {
+    setFitWidth(false);
+    applyZoom(zoom);
+}
+
+void LadderView::applyZoom(double zoom) {
     m_zoom = std::clamp(zoom, 0.4, 3.0);
     relayout();
     viewport()->update();
+}
+
+void LadderView::setFitWidth(bool on) {
+    if (on == m_fitWidth)
+        return;
+    m_fitWidth = on;
+    if (on)
+        fitZoomToWidth();
+    emit fitWidthChanged(on);
+}
+
+void LadderView::fitZoomToWidth() {
+    // The drawing's zoomed width at 100 %, and what the viewport leaves for it.
+    const double full = (metrics().width() - LadderMetrics::kRightMargin) / m_zoom;
+    const double available = viewport()->width() - LadderMetrics::kRightMargin - 2;
+    if (full > 0 && available > 0)
+        applyZoom(std::min(1.0, available / full));
 }
 
 int LadderView::rungAt(double y) const {
@@ -501,7 +523,10 @@ void LadderView::wheelEvent(QWheelEvent *event) {
 
 void LadderView::resizeEvent(QResizeEvent *event) {
     QAbstractScrollArea::resizeEvent(event);
-    relayout();
+    if (m_fitWidth)
+        fitZoomToWidth();
+    else
+        relayout();
 }
 
 } // namespace rung::editor

@@ -31,7 +31,11 @@ public:
     CellCursor cursor() const { return m_cursor; }
     void setCursor(const CellCursor &cursor);
     double zoom() const { return m_zoom; }
-    void setZoom(double zoom);
+    void setZoom(double zoom); // the user's zoom: ends fit-to-width
+    // Fit to width: the zoom follows the view's width (never above 100 %), so the output
+    // column is never cut off, e.g. beside the instruction list.
+    bool fitWidth() const { return m_fitWidth; }
+    void setFitWidth(bool on);
     LadderMetrics metrics() const;
 
     // Places what one instruction text says at the cursor ("LD X0", "ANI X2", "OUT Y1");
@@ -54,6 +58,7 @@ public:
 signals:
     void cursorMoved(const rung::editor::CellCursor &cursor);
     void message(const QString &text);
+    void fitWidthChanged(bool on);
 
 protected:
     void paintEvent(QPaintEvent *event) override;
@@ -65,6 +70,8 @@ protected:
 
 private:
     void relayout();
+    void applyZoom(double zoom);
+    void fitZoomToWidth();
     int rungAt(double y) const;
     void ensureCursorVisible();
     model::Rung currentRung() const;
@@ -74,6 +81,7 @@ private:
     Document *m_document;
     CellCursor m_cursor;
     double m_zoom = 1.0;
+    bool m_fitWidth = false;
     std::vector<double> m_top; // y of each rung at zoom 1, plus the total height at the end
     QLineEdit *m_editor = nullptr;
 };

@@ -292,6 +292,15 @@ void MainWindow::buildActions() {
     side->setCheckable(true);
     side->setChecked(QSettings().value(QStringLiteral("view/sideBySide"), false).toBool());
     connect(side, &QAction::toggled, this, &MainWindow::setSideBySide);
+    QAction *fit = view->addAction(tr("&Fit Ladder to Width"));
+    fit->setCheckable(true);
+    fit->setShortcut(QKeySequence(Qt::CTRL | Qt::Key_0));
+    connect(fit, &QAction::toggled, m_ladder, &editor::LadderView::setFitWidth);
+    connect(m_ladder, &editor::LadderView::fitWidthChanged, this, [fit](bool on) {
+        fit->setChecked(on);
+        QSettings().setValue(QStringLiteral("view/fitWidth"), on);
+    });
+    fit->setChecked(QSettings().value(QStringLiteral("view/fitWidth"), true).toBool());
     view->addAction(tr("Zoom &In"), this, [this] { m_ladder->setZoom(m_ladder->zoom() * 1.15); })
         ->setShortcut(QKeySequence::ZoomIn);
     view->addAction(tr("Zoom &Out"), this, [this] { m_ladder->setZoom(m_ladder->zoom() / 1.15); })

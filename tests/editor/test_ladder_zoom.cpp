@@ -1,0 +1,82 @@
+// Fit to width: beside the instruction list the ladder shrinks so the output column is never
+// cut off; the user's own zoom ends it.
+
+#include "app/gui/main_window.h"
+#include "editor/document.h"
+#include "editor/ladder_view.h"
+
+#include <QAction>
+#include <QSignalSpy>
+#include <QTest>
+
+#include <gtest/gtest.h>
+
+using namespace rung;
+
+TEST(LadderZoom, FitToWidthShrinksTheDrawingIntoANarrowViewButNeverEnlargesIt) {
+    editor::Document document;
+    document.reset(model::Target::get(model::Family::Vigor), QStringLiteral("VB"));
+    editor::LadderView view(&document);
+    view.resize(600, 400);
+    view.show();
+    ASSERT_TRUE(QTest::qWaitForWindowExposed(&view));
+    const double fullWidth = view.metrics().width();
+    ASSERT_GT(fullWidth, view.viewport()->width()); // cut off at 100 %
+
+    QSignalSpy changed(&view, &editor::LadderView::fitWidthChanged);
+    view.setFitWidth(true);
+    EXPECT_EQ(changed.count(), 1);
+    EXPECT_LT(view.zoom(), 1.0);
+    EXPECT_LE(view.metrics().width(), view.viewport()->width());
+
+    view.resize(2400, 400); // wider than the drawing: stays at 100 %
+    QCoreApplication::processEvents();
+    EXPECT_DOUBLE_EQ(view.zoom(), 1.0);
+    view.resize(700, 400);
+    QCoreApplication::processEvents();
+    EXPECT_LE(view.metrics().width(), view.viewport()->width());
+}
+
+TEST(LadderZoom, TheUsersZoomEndsFitToWidth) {
+    editor::Document document;
+    document.reset(model::Target::get(model::Family::Vigor), QStringLiteral("VB"));
+    editor::LadderView view(&document);
+    view.resize(600, 400);
+    view.setFitWidth(true);
+    QSignalSpy changed(&view, &editor::LadderView::fitWidthChanged);
+    view.setZoom(1.5);
+    EXPECT_FALSE(view.fitWidth());
+    ASSERT_EQ(changed.count(), 1);
+    EXPECT_FALSE(changed.front().front().toBool());
+    EXPECT_DOUBLE_EQ(view.zoom(), 1.5);
+    view.resize(500, 400); // no longer follows the width
+    QCoreApplication::processEvents();
+    EXPECT_DOUBLE_EQ(view.zoom(), 1.5);
+}
+
+TEST(LadderZoom, TheChoiceIsAViewMenuOptionRememberedForTheNextStart) {
+    auto fitAction = [](app::MainWindow &w) -> QAction * {
+        for (QAction *a : w.findChildren<QAction *>())
+            if (a->text().remove(QLatin1Char('&')) == QStringLiteral("Fit Ladder to Width"))
+                return a;
+        return nullptr;
+    };
+    {
+        app::MainWindow window;
+        QAction *fit = fitAction(window);
+        ASSERT_NE(fit, nullptr);
+        fit->setChecked(true);
+        EXPECT_TRUE(window.ladderView()->fitWidth());
+        fit->setChecked(false);
+        EXPECT_FALSE(window.ladderView()->fitWidth());
+    }
+    {
+        app::MainWindow window;
+        EXPECT_FALSE(window.ladderView()->fitWidth());
+        EXPECT_FALSE(fitAction(window)->isChecked());
+        window.ladderView()->setZoom(1.0);
+        fitAction(window)->setChecked(true); // leave the default for the other tests
+    }
+    app::MainWindow again;
+    EXPECT_TRUE(again.ladderView()->fitWidth());
+}
