@@ -84,6 +84,16 @@ QString LadderPainter::symbolLabel(const model::Operand &o) const {
     return s ? s->name : QString();
 }
 
+QString LadderPainter::primaryLabel(const model::Operand &o) const {
+    const QString name = m_namesFirst ? symbolLabel(o) : QString();
+    return name.isEmpty() ? deviceLabel(o) : name;
+}
+
+QString LadderPainter::secondaryLabel(const model::Operand &o) const {
+    const QString name = symbolLabel(o);
+    return m_namesFirst && !name.isEmpty() ? deviceLabel(o) : name;
+}
+
 void LadderPainter::paintContact(QPainter &p, const QRectF &cell, const model::Contact &c) const {
     const double y = cell.top() + m_m.rowHeight * 0.55;
     const double cx = cell.center().x();
@@ -137,15 +147,17 @@ void LadderPainter::paintContact(QPainter &p, const QRectF &cell, const model::C
     if (!c.operands.empty()) {
         p.setFont(m_font);
         p.drawText(QRectF(cell.left(), cell.top() + 1, cell.width(), y - h - cell.top() - 1),
-                   Qt::AlignHCenter | Qt::AlignBottom, deviceLabel(c.operands[0]));
-        const QString symbol = symbolLabel(c.operands[0]);
-        if (!symbol.isEmpty()) {
+                   Qt::AlignHCenter | Qt::AlignBottom,
+                   QFontMetricsF(m_font).elidedText(primaryLabel(c.operands[0]), Qt::ElideRight,
+                                                    cell.width() - 2));
+        const QString below = secondaryLabel(c.operands[0]);
+        if (!below.isEmpty()) {
             p.setFont(m_small);
             p.setPen(kDim);
             const QFontMetricsF fm(m_small);
             p.drawText(QRectF(cell.left(), y + h, cell.width(), cell.bottom() - y - h),
                        Qt::AlignHCenter | Qt::AlignTop,
-                       fm.elidedText(symbol, Qt::ElideRight, cell.width() - 4));
+                       fm.elidedText(below, Qt::ElideRight, cell.width() - 4));
         }
     }
 }
@@ -181,13 +193,15 @@ void LadderPainter::paintOutput(QPainter &p, const QRectF &area,
         p.drawText(QRectF(cx - r, y - r, 2 * r, 2 * r), Qt::AlignCenter, mark);
         p.setFont(m_font);
         p.drawText(QRectF(area.left(), area.top() + 1, area.width() * 0.8, y - r - area.top() - 1),
-                   Qt::AlignHCenter | Qt::AlignBottom, deviceLabel(ins.operands[0]));
-        const QString symbol = symbolLabel(ins.operands[0]);
-        if (!symbol.isEmpty()) {
+                   Qt::AlignHCenter | Qt::AlignBottom,
+                   QFontMetricsF(m_font).elidedText(primaryLabel(ins.operands[0]), Qt::ElideRight,
+                                                    area.width() * 0.8));
+        const QString below = secondaryLabel(ins.operands[0]);
+        if (!below.isEmpty()) {
             p.setFont(m_small);
             p.setPen(kDim);
             p.drawText(QRectF(area.left(), y + r, area.width() * 0.8, area.bottom() - y - r),
-                       Qt::AlignHCenter | Qt::AlignTop, symbol);
+                       Qt::AlignHCenter | Qt::AlignTop, below);
         }
         return;
     }

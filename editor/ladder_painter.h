@@ -49,17 +49,23 @@ public:
     QRectF cellRect(const model::Rung &rung, int row, int column) const;
     QRectF outputRect(const model::Rung &rung, int row) const;
     const LadderMetrics &metrics() const { return m_m; }
+    // Symbol names above the elements and the addresses small below them (where a device
+    // has a name), instead of the other way round.
+    void setNamesFirst(bool on) { m_namesFirst = on; }
 
 private:
     void paintContact(QPainter &p, const QRectF &cell, const model::Contact &contact) const;
     void paintOutput(QPainter &p, const QRectF &area, const model::Instruction &ins) const;
     QString deviceLabel(const model::Operand &operand) const;
     QString symbolLabel(const model::Operand &operand) const;
+    QString primaryLabel(const model::Operand &operand) const;
+    QString secondaryLabel(const model::Operand &operand) const;
 
     const model::Project &m_project;
     LadderMetrics m_m;
     QFont m_font;
     QFont m_small;
+    bool m_namesFirst = false;
 };
 
 } // namespace rung::editor

@@ -98,6 +98,23 @@ void LadderView::applyZoom(double zoom) {
     viewport()->update();
 }
 
+void LadderView::setNamesFirst(bool on) {
+    m_namesFirst = on;
+    viewport()->update();
+}
+
+void LadderView::setRungComment(const QString &comment) {
+    const auto &rungs = m_document->ladder().rungs;
+    if (m_cursor.rung < 0 || m_cursor.rung >= static_cast<int>(rungs.size()))
+        return;
+    model::Rung rung = rungs[static_cast<std::size_t>(m_cursor.rung)];
+    const QString text = comment.trimmed();
+    if (rung.comment == text)
+        return;
+    rung.comment = text;
+    m_document->setRung(m_cursor.rung, rung, tr("Edit rung comment"));
+}
+
 void LadderView::setFitWidth(bool on) {
     if (on == m_fitWidth)
         return;
@@ -183,6 +200,7 @@ void LadderView::paintEvent(QPaintEvent *) {
     QPainter p(viewport());
     const LadderMetrics m = metrics();
     LadderPainter painter(m_document->project(), m);
+    painter.setNamesFirst(m_namesFirst);
     const auto &rungs = m_document->ladder().rungs;
     const double top = verticalScrollBar()->value();
     const double bottom = top + viewport()->height();

@@ -36,6 +36,11 @@ public:
     // column is never cut off, e.g. beside the instruction list.
     bool fitWidth() const { return m_fitWidth; }
     void setFitWidth(bool on);
+    // Symbol names in place of the addresses (the address small below), where a name exists.
+    bool namesFirst() const { return m_namesFirst; }
+    void setNamesFirst(bool on);
+    // The comment above the rung under the cursor; one undo step.
+    void setRungComment(const QString &comment);
     LadderMetrics metrics() const;
 
     // Places what one instruction text says at the cursor ("LD X0", "ANI X2", "OUT Y1");
@@ -82,6 +87,7 @@ private:
     CellCursor m_cursor;
     double m_zoom = 1.0;
     bool m_fitWidth = false;
+    bool m_namesFirst = false;
     std::vector<double> m_top; // y of each rung at zoom 1, plus the total height at the end
     QLineEdit *m_editor = nullptr;
 };

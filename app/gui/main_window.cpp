@@ -14,6 +14,7 @@
 #include <QFileDialog>
 #include <QFormLayout>
 #include <QHeaderView>
+#include <QInputDialog>
 #include <QKeyEvent>
 #include <QLabel>
 #include <QMenuBar>
@@ -282,6 +283,8 @@ void MainWindow::buildActions() {
     });
     edit->addAction(tr("Export Symbols (CSV)..."), this, &MainWindow::exportSymbols);
     edit->addSeparator();
+    edit->addAction(tr("Rung &Comment..."), this, &MainWindow::editRungComment)
+        ->setShortcut(QKeySequence(Qt::CTRL | Qt::SHIFT | Qt::Key_M));
     edit->addAction(tr("Insert Rung"), this, [this] { m_ladder->insertRung(); });
     edit->addAction(tr("Delete Rung"), this, [this] { m_ladder->deleteRung(); });
     edit->addAction(tr("Insert Row"), this, [this] { m_ladder->insertRow(); });
@@ -292,6 +295,14 @@ void MainWindow::buildActions() {
     side->setCheckable(true);
     side->setChecked(QSettings().value(QStringLiteral("view/sideBySide"), false).toBool());
     connect(side, &QAction::toggled, this, &MainWindow::setSideBySide);
+    QAction *names = view->addAction(tr("Show Symbol &Names"));
+    names->setCheckable(true);
+    names->setToolTip(tr("Names from the symbol table in place of the addresses"));
+    connect(names, &QAction::toggled, this, [this](bool on) {
+        m_ladder->setNamesFirst(on);
+        QSettings().setValue(QStringLiteral("view/namesFirst"), on);
+    });
+    names->setChecked(QSettings().value(QStringLiteral("view/namesFirst"), false).toBool());
     QAction *fit = view->addAction(tr("&Fit Ladder to Width"));
     fit->setCheckable(true);
     fit->setShortcut(QKeySequence(Qt::CTRL | Qt::Key_0));
@@ -344,6 +355,19 @@ void MainWindow::buildActions() {
     });
     rebuildRecentMenu();
     rebuildExamplesMenu();
+}
+
+void MainWindow::editRungComment() {
+    const auto &rungs = m_document->ladder().rungs;
+    const int index = m_ladder->cursor().rung;
+    if (index < 0 || index >= static_cast<int>(rungs.size()))
+        return;
+    bool ok = false;
+    const QString text = QInputDialog::getMultiLineText(
+        this, tr("Rung Comment"), tr("Comment above rung %1:").arg(index + 1),
+        rungs[static_cast<std::size_t>(index)].comment, &ok);
+    if (ok)
+        m_ladder->setRungComment(text);
 }
 
 void MainWindow::setSideBySide(bool sideBySide) {

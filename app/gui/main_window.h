@@ -17,6 +17,8 @@ class QTreeWidget;
 class QLineEdit;
 class QMenu;
 
+class QPrinter;
+
 namespace rung::editor {
 class IlEditor;
 class LadderView;
@@ -43,6 +45,11 @@ public:
     bool saveTo(const QString &path);
     void newProject(const model::Target &target, const QString &modelName);
     void setSideBySide(bool sideBySide);
+    void editRungComment(); // asks for the comment of the rung under the cursor
+    // The ladder as PNG, SVG or PDF (by the file's suffix; the PDF is the printout, with
+    // the page header); false with the reason when it cannot be written.
+    bool exportLadder(const QString &path, QString *error);
+    bool printLadder(QPrinter *printer);
     // Applies the IL editor's text now (the editor also does it after a short pause).
     void applyListing();
     QString recoveryPath() const;

@@ -19,7 +19,6 @@
 #include <QMenu>
 #include <QMessageBox>
 #include <QPainter>
-#include <QPdfWriter>
 #include <QPrintPreviewDialog>
 #include <QPrinter>
 #include <QSaveFile>
@@ -36,9 +35,12 @@ constexpr int kMaxRecent = 8;
 
 // Paints every rung, one below the other, starting at `top`; a new page when needed.
 template <typename NewPage>
-void paintProgram(QPainter &p, const model::Project &project, const editor::LadderMetrics &m,
-                  double pageHeight, double top, NewPage newPage) {
+void paintProgram(QPainter &p, const editor::Document &document, const editor::LadderMetrics &m,
+                  bool namesFirst, double pageHeight, double top, NewPage newPage) {
+    const model::Project &project = document.project();
     editor::LadderPainter painter(project, m);
+    painter.setNamesFirst(namesFirst); // as the view shows it
+    const model::ToListingResult &listing = document.listing();
     double y = top;
     for (int i = 0; i < static_cast<int>(project.program.rungs.size()); ++i) {
         const double h = m.rungHeight(project.program.rungs[static_cast<std::size_t>(i)]);
@@ -46,7 +48,14 @@ void paintProgram(QPainter &p, const model::Project &project, const editor::Ladd
             newPage();
             y = top;
         }
-        painter.paintRung(p, QPointF(0, y), i, {});
+        editor::RungDecorations d; // step addresses, as on screen
+        const auto first =
+            static_cast<std::size_t>(i) < listing.rungFirst.size()
+                ? static_cast<std::size_t>(listing.rungFirst[static_cast<std::size_t>(i)])
+                : listing.list.instructions.size();
+        if (first < listing.list.instructions.size())
+            d.firstStep = listing.list.instructions[first].step;
+        painter.paintRung(p, QPointF(0, y), i, d);
         y += h;
     }
 }
@@ -272,66 +281,99 @@ void MainWindow::exportImage(const QString &format) {
                                                       QStringLiteral("*.%1").arg(format));
     if (path.isEmpty())
         return;
+    QString error;
+    if (!exportLadder(path.endsWith(QLatin1Char('.') + format, Qt::CaseInsensitive)
+                          ? path
+                          : path + QLatin1Char('.') + format,
+                      &error))
+        QMessageBox::critical(this, tr("Cannot export"), error);
+}
+
+bool MainWindow::exportLadder(const QString &path, QString *error) {
+    const QString format = QFileInfo(path).suffix().toLower();
     const model::Project &project = m_document->project();
     const editor::LadderMetrics m = exportMetrics(project);
     const QSize size(static_cast<int>(m.width()), static_cast<int>(programHeight(project, m)) + 20);
+    auto fail = [&] {
+        if (error)
+            *error = tr("%1 could not be written").arg(QDir::toNativeSeparators(path));
+        return false;
+    };
     if (format == QLatin1String("png")) {
         QImage image(size, QImage::Format_ARGB32);
         image.fill(Qt::white);
         QPainter p(&image);
-        paintProgram(p, project, m, 0, 10, [] {});
+        paintProgram(p, *m_document, m, m_ladder->namesFirst(), 0, 10, [] {});
         p.end();
-        if (!image.save(path))
-            QMessageBox::critical(this, tr("Cannot export"),
-                                  tr("%1 could not be written").arg(path));
-    } else if (format == QLatin1String("svg")) {
+        return image.save(path) || fail();
+    }
+    if (format == QLatin1String("svg")) {
+        QFile probe(path); // QSvgGenerator does not say when it cannot write
+        if (!probe.open(QIODevice::WriteOnly))
+            return fail();
+        probe.close();
         QSvgGenerator svg;
         svg.setFileName(path);
         svg.setSize(size);
         svg.setViewBox(QRect(QPoint(0, 0), size));
         svg.setTitle(QFileInfo(m_document->path()).baseName());
         QPainter p(&svg);
-        paintProgram(p, project, m, 0, 10, [] {});
-    } else {
-        QPdfWriter pdf(path);
-        pdf.setPageSize(QPageSize(QPageSize::A4));
-        pdf.setPageOrientation(QPageLayout::Landscape);
-        pdf.setTitle(QFileInfo(m_document->path()).baseName());
-        QPainter p(&pdf);
-        const double scale = pdf.width() / m.width();
-        p.scale(scale, scale);
-        paintProgram(p, project, m, pdf.height() / scale, 10, [&] { pdf.newPage(); });
+        paintProgram(p, *m_document, m, m_ladder->namesFirst(), 0, 10, [] {});
+        return true;
     }
+    if (format == QLatin1String("pdf")) {
+        // A PDF is the printout: pages with the header, rung numbers and comments.
+        QPrinter printer(QPrinter::HighResolution);
+        printer.setOutputFormat(QPrinter::PdfFormat);
+        printer.setOutputFileName(path);
+        printer.setPageSize(QPageSize(QPageSize::A4));
+        printer.setPageOrientation(QPageLayout::Landscape);
+        printer.setDocName(QFileInfo(m_document->path()).baseName());
+        return printLadder(&printer) || fail();
+    }
+    if (error)
+        *error = tr("%1: the ladder can be exported as PDF, SVG or PNG").arg(path);
+    return false;
+}
+
+bool MainWindow::printLadder(QPrinter *printer) {
+    const model::Project &project = m_document->project();
+    const editor::LadderMetrics m = exportMetrics(project);
+    QPainter p;
+    if (!p.begin(printer))
+        return false;
+    const QRect page = printer->pageLayout().paintRectPixels(printer->resolution());
+    const double scale = page.width() / m.width();
+    p.scale(scale, scale);
+    const QString header =
+        tr("%1 — %2 — %3")
+            .arg(m_document->path().isEmpty() ? tr("Untitled")
+                                              : QFileInfo(m_document->path()).fileName(),
+                 project.target->displayName, QDate::currentDate().toString(Qt::ISODate));
+    int pageNumber = 1;
+    QFont headerFont(QStringLiteral("DejaVu Sans"));
+    headerFont.setPixelSize(13); // in the drawing's units, like the ladder's own text
+    p.setFont(headerFont);
+    auto drawHeader = [&] {
+        p.setPen(Qt::black);
+        p.drawText(QRectF(0, 0, m.width(), 24), Qt::AlignLeft | Qt::AlignVCenter,
+                   tr("%1, page %2").arg(header).arg(pageNumber));
+    };
+    drawHeader();
+    paintProgram(p, *m_document, m, m_ladder->namesFirst(), page.height() / scale, 30, [&] {
+        printer->newPage();
+        ++pageNumber;
+        drawHeader();
+    });
+    return p.end();
 }
 
 void MainWindow::printPreview() {
     QPrinter printer(QPrinter::HighResolution);
     printer.setPageOrientation(QPageLayout::Landscape);
     QPrintPreviewDialog dialog(&printer, this);
-    connect(&dialog, &QPrintPreviewDialog::paintRequested, this, [this](QPrinter *pr) {
-        const model::Project &project = m_document->project();
-        const editor::LadderMetrics m = exportMetrics(project);
-        QPainter p(pr);
-        const QRect page = pr->pageLayout().paintRectPixels(pr->resolution());
-        const double scale = page.width() / m.width();
-        p.scale(scale, scale);
-        const QString header =
-            tr("%1 — %2 — %3")
-                .arg(m_document->path().isEmpty() ? tr("Untitled")
-                                                  : QFileInfo(m_document->path()).fileName(),
-                     project.target->displayName, QDate::currentDate().toString(Qt::ISODate));
-        int pageNumber = 1;
-        auto drawHeader = [&] {
-            p.drawText(QRectF(0, 0, m.width(), 24), Qt::AlignLeft | Qt::AlignVCenter,
-                       tr("%1, page %2").arg(header).arg(pageNumber));
-        };
-        drawHeader();
-        paintProgram(p, project, m, page.height() / scale, 30, [&] {
-            pr->newPage();
-            ++pageNumber;
-            drawHeader();
-        });
-    });
+    connect(&dialog, &QPrintPreviewDialog::paintRequested, this,
+            [this](QPrinter *pr) { printLadder(pr); });
     dialog.exec();
 }
 

@@ -1,0 +1,114 @@
+// Export of the ladder (PNG, SVG, PDF = the printout), symbol names in place of addresses,
+// and rung comments, through the main window as the menus call them.
+
+#include "app/gui/main_window.h"
+#include "editor/ladder_view.h"
+#include "model/address.h"
+
+#include <QFile>
+#include <QImage>
+#include <QSignalSpy>
+#include <QTemporaryDir>
+#include <QUndoStack>
+
+#include <gtest/gtest.h>
+
+using namespace rung;
+
+namespace {
+
+struct ExportFixture : ::testing::Test {
+    app::MainWindow window;
+    QTemporaryDir dir;
+    void SetUp() override {
+        window.newProject(model::Target::get(model::Family::Vigor), QStringLiteral("VB"));
+        QString listing;
+        for (int i = 0; i < 60; ++i) // several printed pages
+            listing += QStringLiteral("LD X%1\nOUT Y%1\n").arg(QString::number(i % 8, 8));
+        std::vector<model::Diagnostic> errors;
+        ASSERT_TRUE(window.document()->setListing(listing + QStringLiteral("END\n"), &errors));
+    }
+    QByteArray read(const QString &name) {
+        QFile f(dir.filePath(name));
+        return f.open(QIODevice::ReadOnly) ? f.readAll() : QByteArray();
+    }
+};
+
+} // namespace
+
+TEST_F(ExportFixture, PngShowsTheWholeLadder) {
+    QString error;
+    ASSERT_TRUE(window.exportLadder(dir.filePath(QStringLiteral("ladder.png")), &error))
+        << error.toStdString();
+    const QImage image(dir.filePath(QStringLiteral("ladder.png")));
+    ASSERT_FALSE(image.isNull());
+    EXPECT_GT(image.height(), 60 * 50); // every rung, one below the other
+    int ink = 0;
+    for (int y = 0; y < image.height(); y += 7)
+        for (int x = 0; x < image.width(); x += 7)
+            ink += qGray(image.pixel(x, y)) < 128;
+    EXPECT_GT(ink, 100);
+}
+
+TEST_F(ExportFixture, SvgIsVectorTextWithTheDevices) {
+    QString error;
+    ASSERT_TRUE(window.exportLadder(dir.filePath(QStringLiteral("ladder.svg")), &error))
+        << error.toStdString();
+    const QByteArray svg = read(QStringLiteral("ladder.svg"));
+    EXPECT_TRUE(svg.contains("<svg"));
+    EXPECT_TRUE(svg.contains(">X0<") || svg.contains("X0")) << svg.left(400).toStdString();
+    EXPECT_TRUE(svg.contains("Y7"));
+}
+
+TEST_F(ExportFixture, PdfIsThePrintoutOnSeveralPages) {
+    QString error;
+    ASSERT_TRUE(window.exportLadder(dir.filePath(QStringLiteral("ladder.pdf")), &error))
+        << error.toStdString();
+    const QByteArray pdf = read(QStringLiteral("ladder.pdf"));
+    ASSERT_TRUE(pdf.startsWith("%PDF"));
+    EXPECT_GE(pdf.count("/Type /Page\n") + pdf.count("/Type /Page\r") + pdf.count("/Type /Page>") +
+                  pdf.count("/Type /Page "),
+              3)
+        << "60 rungs do not fit one A4 page";
+}
+
+TEST_F(ExportFixture, AnUnwritablePlaceOrAnUnknownFormatSaysWhy) {
+    QString error;
+    EXPECT_FALSE(window.exportLadder(QStringLiteral("/nonexistent-dir/ladder.png"), &error));
+    EXPECT_TRUE(error.contains(QStringLiteral("could not be written"))) << error.toStdString();
+    EXPECT_FALSE(window.exportLadder(QStringLiteral("/nonexistent-dir/ladder.svg"), &error));
+    EXPECT_FALSE(window.exportLadder(dir.filePath(QStringLiteral("ladder.bmp")), &error));
+    EXPECT_TRUE(error.contains(QStringLiteral("PDF, SVG or PNG"))) << error.toStdString();
+}
+
+TEST_F(ExportFixture, NamesInPlaceOfAddressesReachTheExport) {
+    window.document()->setSymbols(
+        {model::Symbol{std::get<model::Address>(
+                           model::parseAddress(window.document()->target(), QStringLiteral("X0"))),
+                       QStringLiteral("Start"), QString()}});
+    QString error;
+    ASSERT_TRUE(window.exportLadder(dir.filePath(QStringLiteral("plain.svg")), &error));
+    window.ladderView()->setNamesFirst(true);
+    ASSERT_TRUE(window.exportLadder(dir.filePath(QStringLiteral("names.svg")), &error));
+    const QByteArray plain = read(QStringLiteral("plain.svg"));
+    const QByteArray names = read(QStringLiteral("names.svg"));
+    // Both show the name and the address; with names first the name is the large label,
+    // so the two drawings differ.
+    EXPECT_TRUE(plain.contains("Start"));
+    EXPECT_TRUE(names.contains("Start"));
+    EXPECT_NE(plain, names);
+}
+
+TEST_F(ExportFixture, RungCommentIsOneUndoStepAndGoesIntoTheListing) {
+    window.ladderView()->setCursor({0, 0, 0});
+    const int before = window.document()->undoStack()->count();
+    window.ladderView()->setRungComment(QStringLiteral("Pump start"));
+    EXPECT_EQ(window.document()->undoStack()->count(), before + 1);
+    EXPECT_EQ(window.document()->undoStack()->undoText(), QStringLiteral("Edit rung comment"));
+    EXPECT_TRUE(window.document()->listingText().startsWith(QStringLiteral("; Pump start\nLD X0")))
+        << window.document()->listingText().left(60).toStdString();
+    window.ladderView()->setRungComment(QStringLiteral("Pump start")); // unchanged: no step
+    EXPECT_EQ(window.document()->undoStack()->count(), before + 1);
+    window.document()->undoStack()->undo();
+    EXPECT_TRUE(window.document()->listingText().startsWith(QStringLiteral("LD X0")));
+}
