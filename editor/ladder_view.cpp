@@ -508,37 +508,6 @@ void LadderView::keyPressEvent(QKeyEvent *event) {
     QAbstractScrollArea::keyPressEvent(event);
 }
 
-void LadderView::mousePressEvent(QMouseEvent *event) {
-    setFocus();
-    const LadderMetrics m = metrics();
-    const double y = event->position().y() + verticalScrollBar()->value();
-    const double x = event->position().x() + horizontalScrollBar()->value();
-    const int rung = rungAt(y);
-    if (rung < 0)
-        return;
-    const model::Rung &r = m_document->ladder().rungs[static_cast<std::size_t>(rung)];
-    const double commentH =
-        r.comment.isEmpty() ? 0.0 : m.commentHeight * (r.comment.count(QLatin1Char('\n')) + 1);
-    const int row = std::max(
-        0, static_cast<int>((y - m_top[static_cast<std::size_t>(rung)] - commentH) / m.rowHeight));
-    const int column = std::max(0, static_cast<int>((x - m.gutter) / m.cellWidth));
-    m_editor->hide();
-    setCursor({rung, row, std::min(column, m.gridColumns)});
-}
-
-void LadderView::mouseDoubleClickEvent(QMouseEvent *event) {
-    mousePressEvent(event);
-    openEditor(QString());
-}
-
-void LadderView::wheelEvent(QWheelEvent *event) {
-    if (event->modifiers() & Qt::ControlModifier) {
-        setZoom(m_zoom * (event->angleDelta().y() > 0 ? 1.1 : 1 / 1.1));
-        return;
-    }
-    QAbstractScrollArea::wheelEvent(event);
-}
-
 void LadderView::resizeEvent(QResizeEvent *event) {
     QAbstractScrollArea::resizeEvent(event);
     if (m_fitWidth)

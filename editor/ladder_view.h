@@ -69,12 +69,18 @@ protected:
     void paintEvent(QPaintEvent *event) override;
     void keyPressEvent(QKeyEvent *event) override;
     void mousePressEvent(QMouseEvent *event) override;
+    void mouseMoveEvent(QMouseEvent *event) override;
+    void mouseReleaseEvent(QMouseEvent *event) override;
     void mouseDoubleClickEvent(QMouseEvent *event) override;
     void wheelEvent(QWheelEvent *event) override;
     void resizeEvent(QResizeEvent *event) override;
 
 private:
     void relayout();
+    // The cell under a viewport position; rung -1 where there is none.
+    CellCursor cellAt(QPointF position) const;
+    // Wires along a row or vertical links down a column, from one cell to another of a rung.
+    void drawDrag(const CellCursor &from, const CellCursor &to);
     void applyZoom(double zoom);
     void fitZoomToWidth();
     int rungAt(double y) const;
@@ -88,7 +94,8 @@ private:
     double m_zoom = 1.0;
     bool m_fitWidth = false;
     bool m_namesFirst = false;
-    std::vector<double> m_top; // y of each rung at zoom 1, plus the total height at the end
+    CellCursor m_dragFrom{-1, 0, 0}; // where the left button went down
+    std::vector<double> m_top;       // y of each rung at zoom 1, plus the total height at the end
     QLineEdit *m_editor = nullptr;
 };
 

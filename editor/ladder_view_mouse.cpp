@@ -1,0 +1,109 @@
+// The ladder view's mouse: click selects a cell, double-click edits it, a drag along a row
+// draws wires and a drag down a column draws vertical links (as in WPLSoft and GX), Ctrl+wheel
+// zooms.
+
+#include "ladder_view.h"
+
+#include "document.h"
+
+#include <QLineEdit>
+#include <QMouseEvent>
+#include <QScrollBar>
+#include <QWheelEvent>
+
+namespace rung::editor {
+
+CellCursor LadderView::cellAt(QPointF position) const {
+    const LadderMetrics m = metrics();
+    const double y = position.y() + verticalScrollBar()->value();
+    const double x = position.x() + horizontalScrollBar()->value();
+    const int rung = rungAt(y);
+    if (rung < 0)
+        return {-1, 0, 0};
+    const model::Rung &r = m_document->ladder().rungs[static_cast<std::size_t>(rung)];
+    const double commentH =
+        r.comment.isEmpty() ? 0.0 : m.commentHeight * (r.comment.count(QLatin1Char('\n')) + 1);
+    const int row = std::max(
+        0, static_cast<int>((y - m_top[static_cast<std::size_t>(rung)] - commentH) / m.rowHeight));
+    const int column = std::max(0, static_cast<int>((x - m.gutter) / m.cellWidth));
+    return {rung, row, std::min(column, m.gridColumns)};
+}
+
+void LadderView::mousePressEvent(QMouseEvent *event) {
+    setFocus();
+    const CellCursor cell = cellAt(event->position());
+    if (cell.rung < 0)
+        return;
+    m_editor->hide();
+    setCursor(cell);
+    m_dragFrom = event->button() == Qt::LeftButton ? cell : CellCursor{-1, 0, 0};
+}
+
+void LadderView::mouseMoveEvent(QMouseEvent *event) {
+    if (m_dragFrom.rung < 0 || !(event->buttons() & Qt::LeftButton))
+        return;
+    const CellCursor cell = cellAt(event->position());
+    if (cell.rung == m_dragFrom.rung && !(cell == m_cursor))
+        setCursor(cell); // the cursor follows the drag: it shows where the wire will end
+}
+
+void LadderView::mouseReleaseEvent(QMouseEvent *event) {
+    const CellCursor from = m_dragFrom;
+    m_dragFrom = {-1, 0, 0};
+    if (from.rung < 0 || event->button() != Qt::LeftButton)
+        return;
+    const CellCursor to = cellAt(event->position());
+    if (to.rung == from.rung && !(to == from))
+        drawDrag(from, to);
+}
+
+void LadderView::drawDrag(const CellCursor &from, const CellCursor &to) {
+    const LadderMetrics m = metrics();
+    model::Rung rung = m_document->ladder().rungs[static_cast<std::size_t>(from.rung)];
+    const bool horizontal =
+        std::abs(to.column - from.column) >= std::abs(to.row - from.row) && from.row == to.row;
+    if (horizontal) {
+        // Wires over the empty cells between the two, never over an element; the output
+        // column takes no wire (the row is wired to it by itself).
+        const int first = std::min(from.column, to.column);
+        const int last = std::min(std::max(from.column, to.column), m.gridColumns - 1);
+        rung.resize(std::max(rung.rows, from.row + 1), std::max(rung.columns, last + 1));
+        bool changed = false;
+        for (int c = first; c <= last; ++c) {
+            model::Cell &cell = rung.cell(from.row, c);
+            if (cell.kind == model::CellKind::Empty) {
+                cell = model::Cell{model::CellKind::Wire, {}};
+                changed = true;
+            }
+        }
+        if (changed)
+            m_document->setRung(from.rung, rung, tr("Draw a wire"));
+        return;
+    }
+    if (from.column != to.column)
+        return; // a diagonal drag draws nothing: the user meant neither
+    // Links at the node left of the column (the output column's node is the row's end).
+    const int node = from.column >= m.gridColumns ? rung.columns : from.column;
+    const int top = std::min(from.row, to.row);
+    const int bottom = std::max(from.row, to.row);
+    rung.resize(std::max(rung.rows, bottom + 1), std::max(rung.columns, node));
+    for (int r = top; r < bottom; ++r)
+        rung.setLink(r, node, true);
+    m_document->setRung(from.rung, rung, tr("Draw a vertical link"));
+}
+
+void LadderView::mouseDoubleClickEvent(QMouseEvent *event) {
+    mousePressEvent(event);
+    m_dragFrom = {-1, 0, 0};
+    openEditor(QString());
+}
+
+void LadderView::wheelEvent(QWheelEvent *event) {
+    if (event->modifiers() & Qt::ControlModifier) {
+        setZoom(m_zoom * (event->angleDelta().y() > 0 ? 1.1 : 1 / 1.1));
+        return;
+    }
+    QAbstractScrollArea::wheelEvent(event);
+}
+
+} // namespace rung::editor

@@ -1,0 +1,76 @@
+// Drawing with the mouse: a drag along a row lays wires over the empty cells, a drag down a
+// column draws vertical links; each drag is one undo step.
+
+#include "app/gui/main_window.h"
+#include "editor/ladder_view.h"
+
+#include <QTest>
+#include <QUndoStack>
+
+#include <gtest/gtest.h>
+
+using namespace rung;
+
+namespace {
+
+struct MouseFixture : ::testing::Test {
+    app::MainWindow window;
+    editor::LadderView *view = nullptr;
+    void SetUp() override {
+        window.newProject(model::Target::get(model::Family::Vigor), QStringLiteral("VB"));
+        view = window.ladderView();
+        window.resize(1400, 900);
+        window.show();
+        ASSERT_TRUE(QTest::qWaitForWindowExposed(&window));
+    }
+    void drag(const editor::CellCursor &from, const editor::CellCursor &to) {
+        const QPoint a = view->cellRectOnScreen(from).center();
+        const QPoint b = view->cellRectOnScreen(to).center();
+        QTest::mousePress(view->viewport(), Qt::LeftButton, Qt::NoModifier, a);
+        QTest::mouseMove(view->viewport(), (a + b) / 2);
+        QTest::mouseMove(view->viewport(), b);
+        QTest::mouseRelease(view->viewport(), Qt::LeftButton, Qt::NoModifier, b);
+    }
+    QString listing() { return window.document()->listingText(); }
+};
+
+} // namespace
+
+TEST_F(MouseFixture, DragAlongARowWiresTheEmptyCellsAroundAContact) {
+    std::vector<model::Diagnostic> errors;
+    // X0 in column 0, a branch X1 in row 1 column 0 that ends open: drag a wire to its end.
+    ASSERT_TRUE(window.document()->setListing(QStringLiteral("LD X0\nOUT Y0\nEND\n"), &errors));
+    const int before = window.document()->undoStack()->count();
+    drag({0, 0, 1}, {0, 0, 4});
+    EXPECT_EQ(window.document()->undoStack()->count(), before + 1);
+    EXPECT_EQ(window.document()->undoStack()->undoText(), QStringLiteral("Draw a wire"));
+    const model::Rung &rung = window.document()->ladder().rungs.front();
+    for (int c = 1; c <= 4 && c < rung.columns; ++c)
+        EXPECT_NE(rung.cell(0, c).kind, model::CellKind::Empty) << "column " << c;
+    EXPECT_EQ(rung.cell(0, 0).kind, model::CellKind::Contact);    // never over an element
+    EXPECT_EQ(listing(), QStringLiteral("LD X0\nOUT Y0\nEND\n")); // same logic
+}
+
+TEST_F(MouseFixture, DragDownAColumnDrawsTheLinkThatMakesABranch) {
+    std::vector<model::Diagnostic> errors;
+    ASSERT_TRUE(window.document()->setListing(QStringLiteral("LD X0\nOUT Y0\nEND\n"), &errors));
+    // An X1 contact under X0 (row 1, column 0) and a link at node 1 make X0 OR X1.
+    view->setCursor({0, 1, 0});
+    ASSERT_TRUE(view->enterInstruction(QStringLiteral("LD X1")));
+    const int before = window.document()->undoStack()->count();
+    drag({0, 0, 1}, {0, 1, 1});
+    EXPECT_EQ(window.document()->undoStack()->count(), before + 1);
+    EXPECT_EQ(window.document()->undoStack()->undoText(), QStringLiteral("Draw a vertical link"));
+    EXPECT_EQ(listing(), QStringLiteral("LD X0\nOR X1\nOUT Y0\nEND\n"));
+    window.document()->undoStack()->undo();
+    EXPECT_NE(listing(), QStringLiteral("LD X0\nOR X1\nOUT Y0\nEND\n"));
+}
+
+TEST_F(MouseFixture, AClickIsNotADrag) {
+    std::vector<model::Diagnostic> errors;
+    ASSERT_TRUE(window.document()->setListing(QStringLiteral("LD X0\nOUT Y0\nEND\n"), &errors));
+    const int before = window.document()->undoStack()->count();
+    drag({0, 0, 2}, {0, 0, 2});
+    EXPECT_EQ(window.document()->undoStack()->count(), before);
+    EXPECT_EQ(view->cursor(), (editor::CellCursor{0, 0, 2}));
+}
