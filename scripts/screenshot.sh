@@ -1,6 +1,7 @@
 #!/usr/bin/env bash
 # Starts the IDE under Xvfb on a project (default: the Vigor traffic light) and saves a
-# picture of the window: bash scripts/screenshot.sh [FILE] [OUT.png]
+# picture of the window: bash scripts/screenshot.sh [FILE] [OUT.png] [tabs|side]
+# (side: ladder and instruction list side by side, the README's picture).
 set -euo pipefail
 cd "$(dirname "$0")/.."
 file="${1:-resources/examples/vigor/traffic-light.rung}"
@@ -12,5 +13,9 @@ if [ ! -x "$build/app/rungstudio" ]; then
 fi
 # A throw-away settings directory: the picture shows the defaults a new user sees.
 export XDG_CONFIG_HOME="$(mktemp -d)" XDG_DATA_HOME="$(mktemp -d)"
+if [ "${3:-tabs}" = side ]; then
+    mkdir -p "$XDG_CONFIG_HOME/RungStudio"
+    printf '[view]\nsideBySide=true\n' >"$XDG_CONFIG_HOME/RungStudio/Rung Studio.conf"
+fi
 xvfb-run -a -s "-screen 0 1600x1000x24" "$build/app/rungstudio" "$file" --screenshot "$out"
 echo "Saved $out"

@@ -106,6 +106,8 @@ MainWindow::MainWindow(QWidget *parent)
         QTimer::singleShot(0, this, [this] {
             if (auto *project = findChild<QDockWidget *>(QStringLiteral("projectDock")))
                 resizeDocks({project}, {300}, Qt::Horizontal);
+            if (auto *problems = findChild<QDockWidget *>(QStringLiteral("problemsDock")))
+                resizeDocks({problems}, {140}, Qt::Vertical);
         });
     }
     refreshFromDocument();
