@@ -5,8 +5,10 @@
 #include <QLineEdit>
 #include <QPainter>
 #include <QScrollBar>
+#include <QStringListModel>
 
 #include <algorithm>
+#include <set>
 
 namespace rung::editor {
 
@@ -42,12 +44,14 @@ LadderView::LadderView(Document *document, QWidget *parent)
     m_editor = new QLineEdit(viewport());
     m_editor->hide();
     m_editor->setObjectName(QStringLiteral("cellEditor"));
-    QStringList words;
-    for (const model::InstructionSpec &s : document->target().instructions)
-        words << s.mnemonic;
-    auto *completer = new QCompleter(words, m_editor);
+    // Completion follows what is typed: mnemonics of the project's target first, then the
+    // devices the program and the symbol table use ("LD X" offers "LD X0", "LD X1", ...).
+    m_completions = new QStringListModel(this);
+    auto *completer = new QCompleter(m_completions, m_editor);
     completer->setCaseSensitivity(Qt::CaseInsensitive);
+    completer->setCompletionMode(QCompleter::PopupCompletion);
     m_editor->setCompleter(completer);
+    connect(m_editor, &QLineEdit::textEdited, this, &LadderView::updateCompletions);
     connect(m_editor, &QLineEdit::returnPressed, this, &LadderView::commitEditor);
     relayout();
 }
@@ -398,11 +402,49 @@ void LadderView::deleteRung() {
     m_document->removeRungs(m_cursor.rung, 1);
 }
 
+void LadderView::updateCompletions(const QString &text) {
+    const model::Target &target = m_document->target();
+    QStringList words;
+    const int space = text.indexOf(QLatin1Char(' '));
+    if (space < 0) {
+        for (const model::InstructionSpec &s : target.instructions)
+            words << s.mnemonic;
+    } else {
+        const QString mnemonic = text.left(space);
+        std::set<model::Address> devices;
+        for (const model::Rung &r : m_document->ladder().rungs) {
+            for (const model::Cell &c : r.cells)
+                for (const model::Operand &o : c.contact.operands)
+                    if (o.kind == model::Operand::Kind::Device)
+                        devices.insert(o.address);
+            for (const auto &out : r.outputs)
+                if (out)
+                    for (const model::Operand &o : out->operands)
+                        if (o.kind == model::Operand::Kind::Device)
+                            devices.insert(o.address);
+            if (devices.size() > 2000)
+                break; // enough to choose from in a huge program
+        }
+        for (const model::Symbol &sym : m_document->project().symbols)
+            devices.insert(sym.address);
+        for (const model::Address &a : devices)
+            words << mnemonic + QLatin1Char(' ') + model::formatAddress(target, a);
+    }
+    words.removeDuplicates();
+    if (words != m_completions->stringList())
+        m_completions->setStringList(words);
+}
+
+QStringList LadderView::completions() const {
+    return m_completions->stringList();
+}
+
 void LadderView::openEditor(const QString &initial) {
     const QRect r = cellRectOnScreen(m_cursor);
     m_editor->setGeometry(r.left(), r.top() + r.height() / 4, std::max(r.width() * 2, 180),
                           r.height() / 2);
     m_editor->setText(initial);
+    updateCompletions(initial);
     m_editor->setStyleSheet(QString());
     m_editor->show();
     m_editor->setFocus();

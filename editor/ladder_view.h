@@ -13,6 +13,8 @@
 
 class QLineEdit;
 
+class QStringListModel;
+
 namespace rung::editor {
 
 struct CellCursor {
@@ -56,6 +58,8 @@ public:
     void deleteRung();
     void openEditor(const QString &initial);
     QLineEdit *inlineEditor() const { return m_editor; }
+    // What the cell editor's completer offers for the text typed so far.
+    QStringList completions() const;
 
     // The rung geometry, for navigation and tests.
     QRect cellRectOnScreen(const CellCursor &cell) const;
@@ -83,6 +87,7 @@ private:
     void drawDrag(const CellCursor &from, const CellCursor &to);
     void applyZoom(double zoom);
     void fitZoomToWidth();
+    void updateCompletions(const QString &text);
     int rungAt(double y) const;
     void ensureCursorVisible();
     model::Rung currentRung() const;
@@ -94,6 +99,7 @@ private:
     double m_zoom = 1.0;
     bool m_fitWidth = false;
     bool m_namesFirst = false;
+    QStringListModel *m_completions = nullptr;
     CellCursor m_dragFrom{-1, 0, 0}; // where the left button went down
     std::vector<double> m_top;       // y of each rung at zoom 1, plus the total height at the end
     QLineEdit *m_editor = nullptr;
