@@ -1,0 +1,69 @@
+// The instruction-list editor: the lexer's styles per target and the operand form of the
+// mnemonic on the cursor's line.
+
+#include "editor/il_editor.h"
+
+#include <QTest>
+
+#include <gtest/gtest.h>
+
+using namespace rung;
+using editor::IlLexer;
+
+namespace {
+
+// The style of the first character of `word` in `line`.
+int styleOf(const IlLexer &lexer, const QString &line, const QString &word) {
+    const auto styles = lexer.styleLine(line);
+    const qsizetype at = line.indexOf(word);
+    return at < 0 ? -1 : styles[static_cast<std::size_t>(at)];
+}
+
+} // namespace
+
+TEST(IlLexer, MnemonicDeviceConstantAndCommentOnVigor) {
+    IlLexer lexer(model::Target::get(model::Family::Vigor));
+    const QString line = QStringLiteral("TMR T0 K10 ; one second");
+    EXPECT_EQ(styleOf(lexer, line, QStringLiteral("TMR")), IlLexer::Mnemonic);
+    EXPECT_EQ(styleOf(lexer, line, QStringLiteral("T0")), IlLexer::Device);
+    EXPECT_EQ(styleOf(lexer, line, QStringLiteral("K10")), IlLexer::Constant);
+    EXPECT_EQ(styleOf(lexer, line, QStringLiteral("one")), IlLexer::Comment);
+}
+
+TEST(IlLexer, StepNumbersAndTwoWordMnemonicsOnVpc) {
+    IlLexer lexer(model::Target::get(model::Family::Vpc));
+    const QString line = QStringLiteral("0002 LD NOT i03");
+    EXPECT_EQ(styleOf(lexer, line, QStringLiteral("0002")), IlLexer::StepNumber);
+    EXPECT_EQ(styleOf(lexer, line, QStringLiteral("NOT")), IlLexer::Mnemonic);
+    EXPECT_EQ(styleOf(lexer, line, QStringLiteral("i03")), IlLexer::Device);
+}
+
+TEST(IlLexer, BcdConstantsAndChannelBitsOnCpm1) {
+    IlLexer lexer(model::Target::get(model::Family::Cpm1));
+    const QString line = QStringLiteral("TIM 000 #0150");
+    EXPECT_EQ(styleOf(lexer, line, QStringLiteral("TIM")), IlLexer::Mnemonic);
+    EXPECT_EQ(styleOf(lexer, line, QStringLiteral("#0150")), IlLexer::Constant);
+    EXPECT_EQ(styleOf(lexer, QStringLiteral("OUT 010.00"), QStringLiteral("010.00")),
+              IlLexer::Device);
+}
+
+TEST(IlLexer, AnUnknownMnemonicIsMarked) {
+    IlLexer lexer(model::Target::get(model::Family::Vigor));
+    EXPECT_EQ(styleOf(lexer, QStringLiteral("LDD X0"), QStringLiteral("LDD")), IlLexer::Error);
+}
+
+TEST(IlEditorHelp, TheCursorsLineShowsTheOperandFormOfItsMnemonic) {
+    editor::IlEditor editor(model::Target::get(model::Family::Vigor));
+    editor.setListing(QStringLiteral("LD X0\nTMR T0 K10\nEND\n"));
+    editor.show();
+    ASSERT_TRUE(QTest::qWaitForWindowExposed(&editor));
+    editor.setCursorPosition(1, 2);
+    QCoreApplication::processEvents(); // Scintilla reports the move when it updates
+    EXPECT_TRUE(editor.toolTip().startsWith(QStringLiteral("TMR ")))
+        << editor.toolTip().toStdString();
+    EXPECT_TRUE(editor.toolTip().contains(QStringLiteral("T0..T255")))
+        << editor.toolTip().toStdString();
+    editor.setCursorPosition(2, 0);
+    QCoreApplication::processEvents();
+    EXPECT_TRUE(editor.toolTip().startsWith(QStringLiteral("END")) || editor.toolTip().isEmpty());
+}
