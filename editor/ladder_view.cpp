@@ -37,6 +37,8 @@ LadderView::LadderView(Document *document, QWidget *parent)
     viewport()->setPalette(pal);
     setAccessibleName(tr("Ladder diagram"));
     connect(document, &Document::programChanged, this, [this] {
+        if (m_anchorRung >= static_cast<int>(m_document->ladder().rungs.size()))
+            m_anchorRung = -1;
         relayout();
         setCursor(m_cursor);
         viewport()->update();
@@ -216,13 +218,15 @@ void LadderView::paintEvent(QPaintEvent *) {
         if (y > bottom)
             break;
         RungDecorations d;
-        if (i == m_cursor.rung && hasFocus()) {
-            d.cursorRow = m_cursor.row;
-            d.cursorColumn = m_cursor.column;
-        } else if (i == m_cursor.rung) {
+        if (i == m_cursor.rung) {
             d.cursorRow = m_cursor.row;
             d.cursorColumn = m_cursor.column;
         }
+        if (m_anchorRung >= 0 && i >= selectedRungs().first &&
+            i < selectedRungs().first + selectedRungs().second)
+            p.fillRect(QRectF(0, y - top, viewport()->width(),
+                              m.rungHeight(rungs[static_cast<std::size_t>(i)]) - m.rungGap / 2),
+                       QColor(0xe3, 0xee, 0xfb));
         if (static_cast<std::size_t>(i) + 1 < listing.rungFirst.size()) {
             const int first = listing.rungFirst[static_cast<std::size_t>(i)];
             if (first < static_cast<int>(listing.list.instructions.size()) &&
@@ -399,7 +403,33 @@ void LadderView::insertRung() {
 void LadderView::deleteRung() {
     if (m_document->ladder().rungs.empty())
         return;
-    m_document->removeRungs(m_cursor.rung, 1);
+    const auto [first, count] = selectedRungs();
+    clearSelection();
+    m_document->removeRungs(first, count);
+}
+
+std::pair<int, int> LadderView::selectedRungs() const {
+    const int rungs = static_cast<int>(m_document->ladder().rungs.size());
+    if (m_anchorRung < 0 || m_anchorRung >= rungs)
+        return {m_cursor.rung, rungs > 0 ? 1 : 0};
+    const int first = std::min(m_anchorRung, m_cursor.rung);
+    return {first, std::max(m_anchorRung, m_cursor.rung) - first + 1};
+}
+
+void LadderView::selectRungs(int first, int last) {
+    const int rungs = static_cast<int>(m_document->ladder().rungs.size());
+    if (rungs == 0)
+        return;
+    m_anchorRung = std::clamp(first, 0, rungs - 1);
+    setCursor({std::clamp(last, 0, rungs - 1), 0, 0});
+    viewport()->update();
+}
+
+void LadderView::clearSelection() {
+    if (m_anchorRung < 0)
+        return;
+    m_anchorRung = -1;
+    viewport()->update();
 }
 
 void LadderView::updateCompletions(const QString &text) {
@@ -464,6 +494,19 @@ void LadderView::commitEditor() {
 void LadderView::keyPressEvent(QKeyEvent *event) {
     const LadderMetrics m = metrics();
     const auto mods = event->modifiers();
+    // Shift with Up/Down/PgUp/PgDn selects whole rungs from where it started (as in GX and
+    // WPLSoft); moving without Shift drops the selection.
+    const int key = event->key();
+    if (key == Qt::Key_Up || key == Qt::Key_Down || key == Qt::Key_PageUp ||
+        key == Qt::Key_PageDown) {
+        if (mods & Qt::ShiftModifier) {
+            if (m_anchorRung < 0)
+                m_anchorRung = m_cursor.rung;
+        } else if (m_anchorRung >= 0) {
+            m_anchorRung = -1;
+            viewport()->update();
+        }
+    }
     const auto &rungs = m_document->ladder().rungs;
     CellCursor c = m_cursor;
     const int rows = rungs.empty() ? 1 : rungs[static_cast<std::size_t>(c.rung)].rows;

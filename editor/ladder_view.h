@@ -55,7 +55,11 @@ public:
     void insertRow();
     void deleteRow();
     void insertRung();
-    void deleteRung();
+    void deleteRung(); // the selected rungs
+    // The selected rungs as (first, count): a Shift+Up/Down range, else the cursor's rung.
+    std::pair<int, int> selectedRungs() const;
+    void selectRungs(int first, int last);
+    void clearSelection();
     void openEditor(const QString &initial);
     QLineEdit *inlineEditor() const { return m_editor; }
     // What the cell editor's completer offers for the text typed so far.
@@ -101,6 +105,7 @@ private:
     bool m_namesFirst = false;
     QStringListModel *m_completions = nullptr;
     CellCursor m_dragFrom{-1, 0, 0}; // where the left button went down
+    int m_anchorRung = -1;           // where a rung selection started; -1: none
     std::vector<double> m_top;       // y of each rung at zoom 1, plus the total height at the end
     QLineEdit *m_editor = nullptr;
 };

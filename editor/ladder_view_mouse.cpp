@@ -35,6 +35,14 @@ void LadderView::mousePressEvent(QMouseEvent *event) {
     if (cell.rung < 0)
         return;
     m_editor->hide();
+    // Shift+click extends a rung selection; a plain click drops it.
+    if (event->modifiers() & Qt::ShiftModifier) {
+        if (m_anchorRung < 0)
+            m_anchorRung = m_cursor.rung;
+        viewport()->update();
+    } else {
+        clearSelection();
+    }
     setCursor(cell);
     m_dragFrom = event->button() == Qt::LeftButton ? cell : CellCursor{-1, 0, 0};
 }

@@ -72,21 +72,23 @@ QStringList csvFields(const QString &line) {
 } // namespace
 
 void MainWindow::copyRung(bool cut) {
-    const int rung = m_ladder->cursor().rung;
+    const auto [rung, count] = m_ladder->selectedRungs();
     const auto &rungs = m_document->ladder().rungs;
-    if (rung < 0 || rung >= static_cast<int>(rungs.size()))
+    if (rung < 0 || count <= 0 || rung + count > static_cast<int>(rungs.size()))
         return;
     model::LadderProgram one;
     one.target = &m_document->target();
-    one.rungs = {rungs[static_cast<std::size_t>(rung)]};
+    one.rungs.assign(rungs.begin() + rung, rungs.begin() + rung + count);
     auto *mime = new QMimeData;
     // Other programs get the listing; Rung Studio gets the exact drawing.
     const model::ToListingResult il = model::ladderToList(one);
     mime->setText(il.ok() ? model::printInstructionList(il.list) : model::printLadderText(one));
     mime->setData(QString::fromLatin1(kLadderMime), model::printLadderText(one).toUtf8());
     QApplication::clipboard()->setMimeData(mime);
-    if (cut)
-        m_document->replaceRungs(rung, 1, {}, tr("Cut rung"));
+    if (cut) {
+        m_ladder->clearSelection();
+        m_document->replaceRungs(rung, count, {}, tr("Cut rungs"));
+    }
 }
 
 void MainWindow::pasteRungs() {
