@@ -4,6 +4,8 @@
 
 #include <Qsci/qsciapis.h>
 
+#include <algorithm>
+
 #include <QCoreApplication>
 #include <QFontDatabase>
 
@@ -201,6 +203,41 @@ IlEditor::IlEditor(const model::Target &target, QWidget *parent)
             emit listingEdited();
     });
     connect(this, &QsciScintilla::cursorPositionChanged, this, [this] { updateCallTip(); });
+    // A space after a mnemonic shows its operand form at the caret, as a call tip.
+    connect(this, &QsciScintillaBase::SCN_CHARADDED, this, [this](int ch) {
+        if (ch == ' ')
+            showOperandTip();
+    });
+}
+
+void IlEditor::showOperandTip() {
+    int line = 0;
+    int index = 0;
+    getCursorPosition(&line, &index);
+    // The words before the caret: an optional step number, then the mnemonic (maybe two
+    // words, "LD NOT"); the tip shows only while no operand has been typed yet.
+    QStringList words =
+        text(line).left(index).section(QLatin1Char(';'), 0, 0).simplified().split(QLatin1Char(' '));
+    words.removeAll(QString());
+    const auto isNumber = [](const QString &w) {
+        return std::all_of(w.begin(), w.end(), [](QChar c) { return c.isDigit(); });
+    };
+    if (words.size() > 1 && isNumber(words.front()))
+        words.removeFirst(); // a step number, as the VPC console shows it
+    const model::InstructionSpec *s = words.isEmpty() ? nullptr
+                                      : words.size() == 2
+                                          ? m_target->findInstruction(words.join(QLatin1Char(' ')))
+                                          : m_target->findInstruction(words.front());
+    if (!s || words.size() > 2 || !s->operandHelp)
+        return;
+    const QString tip =
+        QStringLiteral("%1 %2").arg(s->mnemonic, QString::fromLatin1(s->operandHelp));
+    const QByteArray utf8 = tip.toUtf8();
+    SendScintilla(SCI_CALLTIPSHOW, SendScintilla(SCI_GETCURRENTPOS), utf8.constData());
+}
+
+bool IlEditor::operandTipShown() {
+    return SendScintilla(SCI_CALLTIPACTIVE) != 0;
 }
 
 IlLexer::~IlLexer() {

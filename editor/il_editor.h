@@ -46,6 +46,9 @@ public:
     void showDiagnostics(const std::vector<model::Diagnostic> &diagnostics);
     void setStepNumbers(const std::vector<int> &stepOfLine); // -1: no step on that line
     void goToLine(int line);                                 // 1-based
+    // The operand form of the mnemonic before the caret, as a call tip ("TMR T0..T255 ...").
+    void showOperandTip();
+    bool operandTipShown();
 
 signals:
     void listingEdited();

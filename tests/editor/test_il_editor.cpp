@@ -67,3 +67,18 @@ TEST(IlEditorHelp, TheCursorsLineShowsTheOperandFormOfItsMnemonic) {
     QCoreApplication::processEvents();
     EXPECT_TRUE(editor.toolTip().startsWith(QStringLiteral("END")) || editor.toolTip().isEmpty());
 }
+
+TEST(IlEditorHelp, ASpaceAfterAMnemonicShowsItsOperandFormAsACallTip) {
+    editor::IlEditor editor(model::Target::get(model::Family::Vigor));
+    editor.show();
+    ASSERT_TRUE(QTest::qWaitForWindowExposed(&editor));
+    editor.setFocus();
+    QTest::keyClicks(&editor, QStringLiteral("TMR "));
+    EXPECT_TRUE(editor.operandTipShown());
+    editor.SendScintilla(QsciScintillaBase::SCI_CALLTIPCANCEL);
+    QTest::keyClicks(&editor, QStringLiteral("T0 "));
+    EXPECT_FALSE(editor.operandTipShown()); // an operand is there: no tip
+    QTest::keyClick(&editor, Qt::Key_Return);
+    QTest::keyClicks(&editor, QStringLiteral("FOO "));
+    EXPECT_FALSE(editor.operandTipShown()); // not a mnemonic of the target
+}
