@@ -25,11 +25,23 @@ for f in tests/data/sim/*.il; do
 done
 cp resources/examples/*/*.rung build-fuzz/corpus/project/
 export ASAN_OPTIONS=detect_leaks=0
+export UBSAN_OPTIONS=print_stacktrace=1
 for name in fuzz_il_parser fuzz_project_loader; do
     [ -n "$only" ] && [ "$only" != "$name" ] && continue
     corpus=build-fuzz/corpus/il
     [ "$name" = fuzz_project_loader ] && corpus=build-fuzz/corpus/project
     echo "== $name for ${seconds}s"
+    log="build-fuzz/$name.log"
+    status=0
     "build-fuzz/tests/fuzz/$name" -max_total_time="$seconds" -max_len=65536 -timeout=10 \
-        -artifact_prefix=build-fuzz/findings/ "$corpus" 2>&1 | tail -n 4
+        -artifact_prefix=build-fuzz/findings/ "$corpus" >"$log" 2>&1 || status=$?
+    # The closing figures: runs, coverage (cov), features (ft), corpus, speed.
+    grep -E '^#[0-9]+[[:space:]]+DONE' "$log" | tail -n 1 || true
+    grep -E '^Done [0-9]+ runs' "$log" | tail -n 1 || true
+    if [ "$status" -ne 0 ]; then
+        grep -E 'ERROR|SUMMARY|runtime error|Test unit written' "$log" | head -n 20
+        echo "$name found a problem: see $log and build-fuzz/findings/"
+        failed=1
+    fi
 done
+exit "${failed:-0}"
