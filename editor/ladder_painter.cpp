@@ -35,10 +35,14 @@ const char *compareText(model::CompareOp op) {
 
 } // namespace
 
+double LadderMetrics::commentBlock(const model::Rung &rung) const {
+    return rung.comment.isEmpty() ? 0.0
+                                  : commentHeight * (rung.comment.count(QLatin1Char('\n')) + 1);
+}
+
 double LadderMetrics::rungHeight(const model::Rung &rung) const {
-    return (rung.comment.isEmpty() ? 0.0
-                                   : commentHeight * (rung.comment.count(QLatin1Char('\n')) + 1)) +
-           rung.rows * rowHeight + rungGap;
+    const int lines = (blocks(rung) - 1) * blockStride(rung) + rung.rows;
+    return commentBlock(rung) + lines * rowHeight + rungGap;
 }
 
 LadderPainter::LadderPainter(const model::Project &project, const LadderMetrics &metrics)
@@ -51,14 +55,16 @@ LadderPainter::LadderPainter(const model::Project &project, const LadderMetrics 
 }
 
 QRectF LadderPainter::cellRect(const model::Rung &rung, int row, int column) const {
+    const int shown = m_m.shownColumns();
+    const int lastBlock = m_m.blocks(rung) - 1;
+    const bool output = column >= m_m.gridColumns;
+    const int block = output ? lastBlock : std::min(column / std::max(1, shown), lastBlock);
     const double top =
-        (rung.comment.isEmpty() ? 0.0
-                                : m_m.commentHeight * (rung.comment.count(QLatin1Char('\n')) + 1)) +
-        row * m_m.rowHeight;
-    if (column >= m_m.gridColumns) // the output column, aligned for every rung
-        return QRectF(m_m.gutter + m_m.gridColumns * m_m.cellWidth, top, m_m.outputWidth,
-                      m_m.rowHeight);
-    return QRectF(m_m.gutter + column * m_m.cellWidth, top, m_m.cellWidth, m_m.rowHeight);
+        m_m.commentBlock(rung) + (block * m_m.blockStride(rung) + row) * m_m.rowHeight;
+    if (output) // the output column, aligned for every rung
+        return QRectF(m_m.gutter + shown * m_m.cellWidth, top, m_m.outputWidth, m_m.rowHeight);
+    return QRectF(m_m.gutter + (column - block * shown) * m_m.cellWidth, top, m_m.cellWidth,
+                  m_m.rowHeight);
 }
 
 QRectF LadderPainter::outputRect(const model::Rung &rung, int row) const {
@@ -221,17 +227,33 @@ void LadderPainter::paintOutput(QPainter &p, const QRectF &area,
                fm.elidedText(text, Qt::ElideRight, box.width() * 2));
 }
 
+void LadderPainter::paintContinuation(QPainter &p, QPointF at, int mark, int row) const {
+    // A small arrow with the fold and the row it joins ("1a": first fold, row a), drawn where
+    // a row leaves one block and again where it comes in on the next.
+    const double s = m_m.rowHeight * 0.12;
+    p.save();
+    p.setPen(QPen(kRail, 1.4));
+    p.setBrush(kRail);
+    const QPointF tri[3] = {at + QPointF(-s, -s), at + QPointF(s, 0), at + QPointF(-s, s)};
+    p.drawPolygon(tri, 3);
+    p.setFont(m_small);
+    p.drawText(QRectF(at.x() - 3 * s - 4, at.y() - 4.4 * s, 6 * s + 8, 3 * s), Qt::AlignCenter,
+               QStringLiteral("%1%2").arg(mark).arg(QChar(u'a' + row % 26)));
+    p.restore();
+}
+
 void LadderPainter::paintRung(QPainter &p, QPointF origin, int index,
                               const RungDecorations &d) const {
     const model::Rung &rung = m_project.program.rungs[static_cast<std::size_t>(index)];
     p.save();
     p.translate(origin);
     p.setRenderHint(QPainter::Antialiasing, true);
-    const double commentH = rung.comment.isEmpty()
-                                ? 0.0
-                                : m_m.commentHeight * (rung.comment.count(QLatin1Char('\n')) + 1);
-    const double height = commentH + rung.rows * m_m.rowHeight;
-    const double rightRail = m_m.gutter + m_m.gridColumns * m_m.cellWidth + m_m.outputWidth - 6;
+    const double commentH = m_m.commentBlock(rung);
+    const double height = m_m.rungHeight(rung) - m_m.rungGap;
+    const int shown = m_m.shownColumns();
+    const int blocks = m_m.blocks(rung);
+    const double rightRail = m_m.gutter + shown * m_m.cellWidth + m_m.outputWidth - 6;
+    const double blockHeight = m_m.blockStride(rung) * m_m.rowHeight;
 
     if (!rung.comment.isEmpty()) {
         p.setFont(m_small);
@@ -252,10 +274,27 @@ void LadderPainter::paintRung(QPainter &p, QPointF origin, int index,
         p.fillRect(QRectF(2, commentH + 4, 4, height - commentH - 8),
                    d.hasError ? kError : kWarning);
 
-    // Rails.
+    // Rails: the left one beside the first block, the right one beside the last; the rows
+    // of a folded rung run on from block to block through continuation marks.
     p.setPen(QPen(kRail, 3));
-    p.drawLine(QPointF(m_m.gutter, commentH), QPointF(m_m.gutter, height));
-    p.drawLine(QPointF(rightRail, commentH), QPointF(rightRail, height));
+    p.drawLine(QPointF(m_m.gutter, commentH),
+               QPointF(m_m.gutter, commentH + rung.rows * m_m.rowHeight));
+    p.drawLine(QPointF(rightRail, commentH + (blocks - 1) * blockHeight),
+               QPointF(rightRail, height));
+    for (int b = 0; b + 1 < blocks; ++b) {
+        const int boundary = (b + 1) * shown; // the node between the two blocks
+        for (int r = 0; r < rung.rows; ++r) {
+            const bool before = rung.cell(r, boundary - 1).kind != model::CellKind::Empty;
+            const bool after =
+                boundary < rung.columns && rung.cell(r, boundary).kind != model::CellKind::Empty;
+            if (!before && !after)
+                continue;
+            const double yOut = commentH + b * blockHeight + (r + 0.55) * m_m.rowHeight;
+            const double yIn = yOut + blockHeight;
+            paintContinuation(p, QPointF(m_m.gutter + shown * m_m.cellWidth, yOut), b + 1, r);
+            paintContinuation(p, QPointF(m_m.gutter, yIn), b + 1, r);
+        }
+    }
 
     // Marked cells and the cursor under the drawing.
     for (const auto &[row, col] : d.marked)
@@ -274,15 +313,25 @@ void LadderPainter::paintRung(QPainter &p, QPointF origin, int index,
                 paintContact(p, rect, cell.contact);
             }
         }
-        // Vertical links between this row and the next.
+        // Vertical links between this row and the next; a link on a block boundary shows at
+        // the end of one block and the start of the next.
         p.setPen(QPen(kInk, 1.6));
         for (int c = 0; c <= rung.columns; ++c) {
             if (r + 1 >= rung.rows || !rung.link(r, c))
                 continue;
-            const double x = c == rung.columns ? m_m.gutter + m_m.gridColumns * m_m.cellWidth
-                                               : m_m.gutter + c * m_m.cellWidth;
-            const double y0 = cellRect(rung, r, 0).top() + m_m.rowHeight * 0.55;
-            p.drawLine(QPointF(x, y0), QPointF(x, y0 + m_m.rowHeight));
+            auto drawLink = [&](int block, double x) {
+                const double y0 =
+                    commentH + (block * m_m.blockStride(rung) + r + 0.55) * m_m.rowHeight;
+                p.drawLine(QPointF(x, y0), QPointF(x, y0 + m_m.rowHeight));
+            };
+            if (c == rung.columns) {
+                drawLink(blocks - 1, m_m.gutter + shown * m_m.cellWidth);
+                continue;
+            }
+            const int block = std::min(c / std::max(1, shown), blocks - 1);
+            drawLink(block, m_m.gutter + (c - block * shown) * m_m.cellWidth);
+            if (block > 0 && c == block * shown)
+                drawLink(block - 1, m_m.gutter + shown * m_m.cellWidth);
         }
         // From the last contact column to the output column the row is a wire when it has an
         // output, so every output lines up at the right.
@@ -295,7 +344,8 @@ void LadderPainter::paintRung(QPainter &p, QPointF origin, int index,
             rung.columns == 0 || rung.cell(r, rung.columns - 1).kind != model::CellKind::Empty;
         if ((out || rung.coveredByBox(r) || linkedAtEnd) && wiredToEnd) {
             p.setPen(QPen(kInk, 1.6));
-            p.drawLine(QPointF(m_m.gutter + rung.columns * m_m.cellWidth, y),
+            const int endInBlock = rung.columns - (blocks - 1) * shown;
+            p.drawLine(QPointF(m_m.gutter + endInBlock * m_m.cellWidth, y),
                        QPointF(outRect.left(), y));
         }
         if (out && out->spec) {

@@ -9,6 +9,7 @@
 #include <QFont>
 #include <QPainter>
 
+#include <algorithm>
 #include <set>
 
 namespace rung::editor {
@@ -21,11 +22,30 @@ struct LadderMetrics {
     double commentHeight = 20;
     double rungGap = 10;
     int gridColumns = 11; // contact columns before the output column (aligned for all rungs)
-
+    // Contacts per drawn line, as the vendor editor has it (Vigor: 11): a longer rung goes on
+    // in blocks below, each row ending and starting with a continuation mark. 0: no folding.
+    int foldColumns = 0;
     static constexpr double kRightMargin = 12; // not zoomed
 
     double rungHeight(const model::Rung &rung) const;
-    double width() const { return gutter + gridColumns * cellWidth + outputWidth + kRightMargin; }
+    // Drawn contact columns per line, and the blocks a rung takes.
+    int shownColumns() const {
+        return foldColumns > 0 ? std::min(gridColumns, foldColumns) : gridColumns;
+    }
+    int blocks(const model::Rung &rung) const {
+        return foldColumns > 0 && rung.columns > foldColumns
+                   ? (rung.columns + foldColumns - 1) / foldColumns
+                   : 1;
+    }
+    // Drawn lines from one block to the next: a folded rung leaves a line between its blocks
+    // (where a new branch row goes).
+    int blockStride(const model::Rung &rung) const {
+        return blocks(rung) > 1 ? rung.rows + 1 : rung.rows;
+    }
+    double commentBlock(const model::Rung &rung) const;
+    double width() const {
+        return gutter + shownColumns() * cellWidth + outputWidth + kRightMargin;
+    }
 };
 
 struct RungDecorations {
@@ -55,6 +75,7 @@ public:
 
 private:
     void paintContact(QPainter &p, const QRectF &cell, const model::Contact &contact) const;
+    void paintContinuation(QPainter &p, QPointF at, int mark, int row) const;
     void paintOutput(QPainter &p, const QRectF &area, const model::Instruction &ins) const;
     QString deviceLabel(const model::Operand &operand) const;
     QString symbolLabel(const model::Operand &operand) const;

@@ -64,6 +64,7 @@ LadderMetrics LadderView::metrics() const {
     for (const model::Rung &r : m_document->ladder().rungs)
         widest = std::max(widest, r.columns);
     m.gridColumns = widest;
+    m.foldColumns = std::max(0, m_document->target().limits.contactsPerRow);
     m.cellWidth *= m_zoom;
     m.rowHeight *= m_zoom;
     m.gutter *= m_zoom;
@@ -465,6 +466,16 @@ void LadderView::updateCompletions(const QString &text) {
         m_completions->setStringList(words);
 }
 
+int LadderView::lastColumn(int rung) const {
+    const LadderMetrics m = metrics();
+    const auto &rungs = m_document->ladder().rungs;
+    if (rung < 0 || rung >= static_cast<int>(rungs.size()) || m.foldColumns <= 0)
+        return m.gridColumns - 1;
+    return std::min(m.gridColumns,
+                    m.blocks(rungs[static_cast<std::size_t>(rung)]) * m.shownColumns()) -
+           1;
+}
+
 QStringList LadderView::completions() const {
     return m_completions->stringList();
 }
@@ -515,10 +526,10 @@ void LadderView::keyPressEvent(QKeyEvent *event) {
         m_editor->hide();
         return;
     case Qt::Key_Left:
-        c.column = std::max(0, c.column - 1);
+        c.column = c.column >= m.gridColumns ? lastColumn(c.rung) : std::max(0, c.column - 1);
         return setCursor(c);
     case Qt::Key_Right:
-        c.column = std::min(m.gridColumns, c.column + 1);
+        c.column = c.column >= lastColumn(c.rung) ? m.gridColumns : c.column + 1;
         return setCursor(c);
     case Qt::Key_Home:
         c.column = 0;

@@ -92,6 +92,9 @@ private:
     void applyZoom(double zoom);
     void fitZoomToWidth();
     void updateCompletions(const QString &text);
+    // The last contact column the cursor reaches in a rung before the output column (the end
+    // of its last block when the rung is folded).
+    int lastColumn(int rung) const;
     int rungAt(double y) const;
     void ensureCursorVisible();
     model::Rung currentRung() const;

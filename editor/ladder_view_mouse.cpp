@@ -21,12 +21,19 @@ CellCursor LadderView::cellAt(QPointF position) const {
     if (rung < 0)
         return {-1, 0, 0};
     const model::Rung &r = m_document->ladder().rungs[static_cast<std::size_t>(rung)];
-    const double commentH =
-        r.comment.isEmpty() ? 0.0 : m.commentHeight * (r.comment.count(QLatin1Char('\n')) + 1);
-    const int row = std::max(
-        0, static_cast<int>((y - m_top[static_cast<std::size_t>(rung)] - commentH) / m.rowHeight));
-    const int column = std::max(0, static_cast<int>((x - m.gutter) / m.cellWidth));
-    return {rung, row, std::min(column, m.gridColumns)};
+    // Drawn line -> block and row (a folded rung repeats its rows once per block).
+    const int line = std::max(
+        0, static_cast<int>((y - m_top[static_cast<std::size_t>(rung)] - m.commentBlock(r)) /
+                            m.rowHeight));
+    const int stride = std::max(1, m.blockStride(r));
+    const int blocks = m.blocks(r);
+    const int block = std::min(line / stride, blocks - 1);
+    const int row = line - block * stride;
+    const int shown = m.shownColumns();
+    const int inBlock = std::max(0, static_cast<int>((x - m.gutter) / m.cellWidth));
+    if (inBlock >= shown) // the output column, or the end of an earlier block
+        return {rung, row, block == blocks - 1 ? m.gridColumns : block * shown + shown - 1};
+    return {rung, row, std::min(block * shown + inBlock, m.gridColumns)};
 }
 
 void LadderView::mousePressEvent(QMouseEvent *event) {

@@ -66,6 +66,7 @@ editor::LadderMetrics exportMetrics(const model::Project &project) {
     for (const model::Rung &r : project.program.rungs)
         widest = std::max(widest, r.columns);
     m.gridColumns = widest;
+    m.foldColumns = std::max(0, project.target->limits.contactsPerRow); // as on screen
     return m;
 }
 
