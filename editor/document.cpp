@@ -47,6 +47,23 @@ private:
     std::vector<model::Symbol> m_new;
 };
 
+class WatchListsCommand : public QUndoCommand {
+public:
+    WatchListsCommand(Document *doc, std::vector<model::WatchList> oldLists,
+                      std::vector<model::WatchList> newLists, const QString &label)
+        : QUndoCommand(label)
+        , m_doc(doc)
+        , m_old(std::move(oldLists))
+        , m_new(std::move(newLists)) {}
+    void redo() override { m_doc->applyWatchLists(m_new); }
+    void undo() override { m_doc->applyWatchLists(m_old); }
+
+private:
+    Document *m_doc;
+    std::vector<model::WatchList> m_old;
+    std::vector<model::WatchList> m_new;
+};
+
 } // namespace
 
 Document::Document(QObject *parent)
@@ -135,6 +152,15 @@ void Document::removeRungs(int first, int count) {
 
 void Document::setSymbols(const std::vector<model::Symbol> &symbols) {
     m_undo.push(new SymbolsCommand(this, m_project.symbols, symbols));
+}
+
+void Document::setWatchLists(const std::vector<model::WatchList> &lists, const QString &label) {
+    m_undo.push(new WatchListsCommand(this, m_project.watchLists, lists, label));
+}
+
+void Document::applyWatchLists(const std::vector<model::WatchList> &lists) {
+    m_project.watchLists = lists;
+    emit programChanged();
 }
 
 void Document::applySymbols(const std::vector<model::Symbol> &symbols) {

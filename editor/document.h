@@ -49,6 +49,7 @@ public:
     void insertRung(int index, const model::Rung &rung);
     void removeRungs(int first, int count);
     void setSymbols(const std::vector<model::Symbol> &symbols);
+    void setWatchLists(const std::vector<model::WatchList> &lists, const QString &label);
     // Rebuilds the ladder from listing text; false (nothing changed) when the text has errors,
     // which land in *errors.
     bool setListing(const QString &text, std::vector<model::Diagnostic> *errors);
@@ -56,6 +57,7 @@ public:
     // Used by the undo commands only.
     void applyRungs(int first, int count, const std::vector<model::Rung> &rungs);
     void applySymbols(const std::vector<model::Symbol> &symbols);
+    void applyWatchLists(const std::vector<model::WatchList> &lists);
 
 signals:
     void programChanged();

@@ -13,6 +13,17 @@ const QColor kCursor(0x2f, 0x7d, 0xe1);
 const QColor kError(0xd9, 0x3f, 0x3f);
 const QColor kWarning(0xe0, 0x9b, 0x1a);
 
+// Wires and symbols: square caps, so segments that meet at a cell border overlap and leave no
+// light seam where antialiasing would fade both ends.
+QPen inkPen() {
+    return QPen(kInk, 1.6, Qt::SolidLine, Qt::SquareCap, Qt::MiterJoin);
+}
+
+// How far a box stands in from the output column's left edge (its input stubs).
+double boxInset(const LadderMetrics &m) {
+    return m.rowHeight * 0.27;
+}
+
 const char *compareText(model::CompareOp op) {
     switch (op) {
     case model::CompareOp::Eq:
@@ -105,7 +116,7 @@ void LadderPainter::paintContact(QPainter &p, const QRectF &cell, const model::C
     const double cx = cell.center().x();
     const double half = m_m.cellWidth * 0.12;
     const double h = m_m.rowHeight * 0.2;
-    p.setPen(QPen(kInk, 1.6));
+    p.setPen(inkPen());
     if (c.invert) {
         p.drawLine(QPointF(cell.left(), y), QPointF(cx - half, y));
         p.drawLine(QPointF(cx + half, y), QPointF(cell.right(), y));
@@ -172,7 +183,7 @@ void LadderPainter::paintOutput(QPainter &p, const QRectF &area,
                                 const model::Instruction &ins) const {
     const double y = area.top() + m_m.rowHeight * 0.55;
     const double h = m_m.rowHeight * 0.2;
-    p.setPen(QPen(kInk, 1.6));
+    p.setPen(inkPen());
     const model::Op op = ins.op();
     const bool coil = (op == model::Op::Out || op == model::Op::Set || op == model::Op::Reset ||
                        op == model::Op::PulseRise || op == model::Op::PulseFall) &&
@@ -211,20 +222,45 @@ void LadderPainter::paintOutput(QPainter &p, const QRectF &area,
         }
         return;
     }
-    // A box: the instruction in a rectangle (timers, counters, moves, jumps, END).
-    const QRectF box(area.left() + 14, y - h * 1.4, area.width() - 26,
-                     area.height() - (y - h * 1.4 - area.top()) - 6);
+    // A box: the instruction in a rectangle (timers, counters, moves, jumps, END). The wire runs
+    // into the middle of a one-row box; a box with several inputs (S/R, U/D/R) spans their
+    // rows, each input wired to its left edge.
+    const double rowH = m_m.rowHeight;
+    const bool tall = area.height() > rowH * 1.5;
+    const QRectF box(QPointF(area.left() + boxInset(m_m), y - rowH * 0.3),
+                     QPointF(area.right() - 6 - boxInset(m_m) * 0.45, area.bottom() - rowH * 0.15));
     p.drawLine(QPointF(area.left(), y), QPointF(box.left(), y));
     p.drawLine(QPointF(box.right(), y), QPointF(area.right() - 6, y));
     p.setBrush(QColor(0xf4, 0xf6, 0xfa));
     p.drawRect(box);
     p.setBrush(Qt::NoBrush);
-    p.setFont(m_font);
     const QString text = model::printInstruction(*m_project.target, ins);
+    // Pin letters (U, D, R) sit inside the left edge of a tall box: its text keeps clear.
+    const QRectF inner = box.adjusted(tall ? rowH * 0.3 : 3, 1, -3, -1);
     const QFontMetricsF fm(m_font);
-    // Centred, so the pin letters of a multi-input box (U, D, R at its left edge) stay clear.
-    p.drawText(box.adjusted(16, 0, -4, 0), Qt::AlignHCenter | Qt::AlignTop | Qt::TextWordWrap,
-               fm.elidedText(text, Qt::ElideRight, box.width() * 2));
+    if (!tall && fm.horizontalAdvance(text) <= inner.width()) {
+        p.setFont(m_font);
+        p.drawText(inner, Qt::AlignCenter, text);
+        return;
+    }
+    // The mnemonic as the box's title, its operands below in the small font.
+    const qsizetype space = text.indexOf(QLatin1Char(' '));
+    const QString title = space < 0 ? text : text.left(space);
+    const QString operands = space < 0 ? QString() : text.mid(space + 1);
+    QFont bold = m_font;
+    bold.setBold(true);
+    const QFontMetricsF fb(bold);
+    const QFontMetricsF fs(m_small);
+    const double textHeight = fb.height() + (operands.isEmpty() ? 0.0 : fs.height());
+    const double top = tall ? inner.top() + 2 : inner.center().y() - textHeight / 2;
+    p.setFont(bold);
+    p.drawText(QRectF(inner.left(), top, inner.width(), fb.height()), Qt::AlignCenter,
+               fb.elidedText(title, Qt::ElideRight, inner.width()));
+    if (!operands.isEmpty()) {
+        p.setFont(m_small);
+        p.drawText(QRectF(inner.left(), top + fb.height(), inner.width(), fs.height()),
+                   Qt::AlignCenter, fs.elidedText(operands, Qt::ElideRight, inner.width()));
+    }
 }
 
 void LadderPainter::paintContinuation(QPainter &p, QPointF at, int mark, int row) const {
@@ -281,6 +317,15 @@ void LadderPainter::paintRung(QPainter &p, QPointF origin, int index,
                QPointF(m_m.gutter, commentH + rung.rows * m_m.rowHeight));
     p.drawLine(QPointF(rightRail, commentH + (blocks - 1) * blockHeight),
                QPointF(rightRail, height));
+    if (d.cursorRow >= 0 && blocks == 1) {
+        // The rung being edited has a spare row below for a new branch: its rails, dashed.
+        QPen spare(kRail, 1.5, Qt::DashLine);
+        spare.setColor(QColor(0x3a, 0x5a, 0x8c, 110));
+        p.setPen(spare);
+        p.drawLine(QPointF(m_m.gutter, height), QPointF(m_m.gutter, height + m_m.rowHeight));
+        p.drawLine(QPointF(rightRail, height), QPointF(rightRail, height + m_m.rowHeight));
+        p.setPen(QPen(kRail, 3));
+    }
     for (int b = 0; b + 1 < blocks; ++b) {
         const int boundary = (b + 1) * shown; // the node between the two blocks
         for (int r = 0; r < rung.rows; ++r) {
@@ -297,6 +342,8 @@ void LadderPainter::paintRung(QPainter &p, QPointF origin, int index,
     }
 
     // Marked cells and the cursor under the drawing.
+    for (const auto &[row, col] : d.selected)
+        p.fillRect(cellRect(rung, row, col), QColor(0xd6, 0xe6, 0xfa));
     for (const auto &[row, col] : d.marked)
         if (row >= 0 && row < rung.rows && col >= 0 && col < rung.columns)
             p.fillRect(cellRect(rung, row, col), QColor(0xfd, 0xe2, 0xe2));
@@ -306,7 +353,7 @@ void LadderPainter::paintRung(QPainter &p, QPointF origin, int index,
             const model::Cell &cell = rung.cell(r, c);
             const QRectF rect = cellRect(rung, r, c);
             if (cell.kind == model::CellKind::Wire) {
-                p.setPen(QPen(kInk, 1.6));
+                p.setPen(inkPen());
                 const double y = rect.top() + m_m.rowHeight * 0.55;
                 p.drawLine(QPointF(rect.left(), y), QPointF(rect.right(), y));
             } else if (cell.kind == model::CellKind::Contact) {
@@ -315,7 +362,7 @@ void LadderPainter::paintRung(QPainter &p, QPointF origin, int index,
         }
         // Vertical links between this row and the next; a link on a block boundary shows at
         // the end of one block and the start of the next.
-        p.setPen(QPen(kInk, 1.6));
+        p.setPen(inkPen());
         for (int c = 0; c <= rung.columns; ++c) {
             if (r + 1 >= rung.rows || !rung.link(r, c))
                 continue;
@@ -343,7 +390,7 @@ void LadderPainter::paintRung(QPainter &p, QPointF origin, int index,
         const bool wiredToEnd =
             rung.columns == 0 || rung.cell(r, rung.columns - 1).kind != model::CellKind::Empty;
         if ((out || rung.coveredByBox(r) || linkedAtEnd) && wiredToEnd) {
-            p.setPen(QPen(kInk, 1.6));
+            p.setPen(inkPen());
             const int endInBlock = rung.columns - (blocks - 1) * shown;
             p.drawLine(QPointF(m_m.gutter + endInBlock * m_m.cellWidth, y),
                        QPointF(outRect.left(), y));
@@ -364,14 +411,21 @@ void LadderPainter::paintRung(QPainter &p, QPointF origin, int index,
                 for (std::size_t k = 0;
                      k < inputs.size() && k < static_cast<std::size_t>(pins.size()); ++k) {
                     const QRectF pin = outputRect(rung, inputs[k]);
-                    p.drawText(
-                        QRectF(pin.left() + 16, pin.top() + m_m.rowHeight * 0.55 - 8, 14, 16),
-                        Qt::AlignCenter, pins[static_cast<int>(k)]);
+                    const double pinY = pin.top() + m_m.rowHeight * 0.55;
+                    const double boxLeft = pin.left() + boxInset(m_m);
+                    if (k > 0) { // the first input's stub comes with the box
+                        p.setPen(inkPen());
+                        p.drawLine(QPointF(pin.left(), pinY), QPointF(boxLeft, pinY));
+                        p.setPen(kDim);
+                    }
+                    p.drawText(QRectF(boxLeft + 1, pinY - m_m.rowHeight * 0.16,
+                                      m_m.rowHeight * 0.28, m_m.rowHeight * 0.32),
+                               Qt::AlignCenter, pins[static_cast<int>(k)]);
                 }
             }
         }
     }
-    if (d.cursorRow >= 0 && d.cursorRow < rung.rows) {
+    if (d.cursorRow >= 0 && d.cursorRow <= rung.rows) { // rows: the spare row for a branch
         p.setPen(QPen(kCursor, 2));
         p.setBrush(Qt::NoBrush);
         p.drawRect(cellRect(rung, d.cursorRow, d.cursorColumn).adjusted(1, 1, -1, -1));

@@ -50,8 +50,9 @@ struct LadderMetrics {
 
 struct RungDecorations {
     int cursorRow = -1;
-    int cursorColumn = -1;                // grid column; >= gridColumns: the output column
-    std::set<std::pair<int, int>> marked; // cells (row, column) in error (reverse current)
+    int cursorColumn = -1;                  // grid column; >= gridColumns: the output column
+    std::set<std::pair<int, int>> marked;   // cells (row, column) in error (reverse current)
+    std::set<std::pair<int, int>> selected; // cells (row, column) the user selected
     bool hasError = false;
     bool hasWarning = false;
     int firstStep = -1;
@@ -81,12 +82,18 @@ private:
     QString symbolLabel(const model::Operand &operand) const;
     QString primaryLabel(const model::Operand &operand) const;
     QString secondaryLabel(const model::Operand &operand) const;
+    // Pixel-grid geometry: the wire of a row whose top is `rowTop`, and a line position for
+    // a pen of `width`, so lines cover whole pixels (no blur, no seams where they meet).
+    double wireY(double rowTop) const;
+    static double snap(double v, double width);
+    QPen inkPen() const;
 
     const model::Project &m_project;
     LadderMetrics m_m;
     QFont m_font;
     QFont m_small;
     bool m_namesFirst = false;
+    double m_pen = 2; // wire width: 1.6 at 100 %, rounded to whole pixels
 };
 
 } // namespace rung::editor

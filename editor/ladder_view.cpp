@@ -1,5 +1,7 @@
 #include "ladder_view.h"
 
+#include "model/address.h"
+
 #include <QCompleter>
 #include <QKeyEvent>
 #include <QLineEdit>
@@ -8,6 +10,7 @@
 #include <QStringListModel>
 
 #include <algorithm>
+#include <cmath>
 #include <set>
 
 namespace rung::editor {
@@ -65,12 +68,14 @@ LadderMetrics LadderView::metrics() const {
         widest = std::max(widest, r.columns);
     m.gridColumns = widest;
     m.foldColumns = std::max(0, m_document->target().limits.contactsPerRow);
-    m.cellWidth *= m_zoom;
-    m.rowHeight *= m_zoom;
-    m.gutter *= m_zoom;
-    m.outputWidth *= m_zoom;
-    m.commentHeight *= m_zoom;
-    m.rungGap *= m_zoom;
+    // Whole pixels at every zoom: rails, wires and cell borders fall on the pixel grid and
+    // stay crisp (the cell sizes round down, so fit-to-width never overshoots).
+    m.cellWidth = std::floor(m.cellWidth * m_zoom);
+    m.rowHeight = std::round(m.rowHeight * m_zoom);
+    m.gutter = std::round(m.gutter * m_zoom);
+    m.outputWidth = std::floor(m.outputWidth * m_zoom);
+    m.commentHeight = std::round(m.commentHeight * m_zoom);
+    m.rungGap = std::round(m.rungGap * m_zoom);
     return m;
 }
 
@@ -222,6 +227,9 @@ void LadderView::paintEvent(QPaintEvent *) {
         if (i == m_cursor.rung) {
             d.cursorRow = m_cursor.row;
             d.cursorColumn = m_cursor.column;
+            if (const CellRun run = selectedCells(); run.valid())
+                for (int c = run.first; c <= run.last; ++c)
+                    d.selected.insert({run.row, c});
         }
         if (m_anchorRung >= 0 && i >= selectedRungs().first &&
             i < selectedRungs().first + selectedRungs().second)
@@ -409,63 +417,6 @@ void LadderView::deleteRung() {
     m_document->removeRungs(first, count);
 }
 
-std::pair<int, int> LadderView::selectedRungs() const {
-    const int rungs = static_cast<int>(m_document->ladder().rungs.size());
-    if (m_anchorRung < 0 || m_anchorRung >= rungs)
-        return {m_cursor.rung, rungs > 0 ? 1 : 0};
-    const int first = std::min(m_anchorRung, m_cursor.rung);
-    return {first, std::max(m_anchorRung, m_cursor.rung) - first + 1};
-}
-
-void LadderView::selectRungs(int first, int last) {
-    const int rungs = static_cast<int>(m_document->ladder().rungs.size());
-    if (rungs == 0)
-        return;
-    m_anchorRung = std::clamp(first, 0, rungs - 1);
-    setCursor({std::clamp(last, 0, rungs - 1), 0, 0});
-    viewport()->update();
-}
-
-void LadderView::clearSelection() {
-    if (m_anchorRung < 0)
-        return;
-    m_anchorRung = -1;
-    viewport()->update();
-}
-
-void LadderView::updateCompletions(const QString &text) {
-    const model::Target &target = m_document->target();
-    QStringList words;
-    const int space = text.indexOf(QLatin1Char(' '));
-    if (space < 0) {
-        for (const model::InstructionSpec &s : target.instructions)
-            words << s.mnemonic;
-    } else {
-        const QString mnemonic = text.left(space);
-        std::set<model::Address> devices;
-        for (const model::Rung &r : m_document->ladder().rungs) {
-            for (const model::Cell &c : r.cells)
-                for (const model::Operand &o : c.contact.operands)
-                    if (o.kind == model::Operand::Kind::Device)
-                        devices.insert(o.address);
-            for (const auto &out : r.outputs)
-                if (out)
-                    for (const model::Operand &o : out->operands)
-                        if (o.kind == model::Operand::Kind::Device)
-                            devices.insert(o.address);
-            if (devices.size() > 2000)
-                break; // enough to choose from in a huge program
-        }
-        for (const model::Symbol &sym : m_document->project().symbols)
-            devices.insert(sym.address);
-        for (const model::Address &a : devices)
-            words << mnemonic + QLatin1Char(' ') + model::formatAddress(target, a);
-    }
-    words.removeDuplicates();
-    if (words != m_completions->stringList())
-        m_completions->setStringList(words);
-}
-
 int LadderView::lastColumn(int rung) const {
     const LadderMetrics m = metrics();
     const auto &rungs = m_document->ladder().rungs;
@@ -474,10 +425,6 @@ int LadderView::lastColumn(int rung) const {
     return std::min(m.gridColumns,
                     m.blocks(rungs[static_cast<std::size_t>(rung)]) * m.shownColumns()) -
            1;
-}
-
-QStringList LadderView::completions() const {
-    return m_completions->stringList();
 }
 
 void LadderView::openEditor(const QString &initial) {
@@ -507,16 +454,28 @@ void LadderView::keyPressEvent(QKeyEvent *event) {
     const auto mods = event->modifiers();
     // Shift with Up/Down/PgUp/PgDn selects whole rungs from where it started (as in GX and
     // WPLSoft); moving without Shift drops the selection.
+    // Shift with Left/Right selects a run of cells in the row.
     const int key = event->key();
     if (key == Qt::Key_Up || key == Qt::Key_Down || key == Qt::Key_PageUp ||
         key == Qt::Key_PageDown) {
+        m_anchorColumn = -1;
         if (mods & Qt::ShiftModifier) {
             if (m_anchorRung < 0)
                 m_anchorRung = m_cursor.rung;
         } else if (m_anchorRung >= 0) {
             m_anchorRung = -1;
-            viewport()->update();
         }
+        viewport()->update();
+    } else if (key == Qt::Key_Left || key == Qt::Key_Right || key == Qt::Key_Home ||
+               key == Qt::Key_End) {
+        m_anchorRung = -1;
+        if ((mods & Qt::ShiftModifier) && m_cursor.column < m.gridColumns) {
+            if (m_anchorColumn < 0)
+                m_anchorColumn = m_cursor.column;
+        } else {
+            m_anchorColumn = -1;
+        }
+        viewport()->update();
     }
     const auto &rungs = m_document->ladder().rungs;
     CellCursor c = m_cursor;
@@ -529,6 +488,8 @@ void LadderView::keyPressEvent(QKeyEvent *event) {
         c.column = c.column >= m.gridColumns ? lastColumn(c.rung) : std::max(0, c.column - 1);
         return setCursor(c);
     case Qt::Key_Right:
+        if (m_anchorColumn >= 0 && c.column >= lastColumn(c.rung))
+            return; // a cell selection stays among the contacts
         c.column = c.column >= lastColumn(c.rung) ? m.gridColumns : c.column + 1;
         return setCursor(c);
     case Qt::Key_Home:
@@ -579,6 +540,8 @@ void LadderView::keyPressEvent(QKeyEvent *event) {
             return toggleLink();
         return placeWire();
     case Qt::Key_Delete:
+        if (selectedCells().valid() && !(mods & (Qt::ShiftModifier | Qt::ControlModifier)))
+            return clearCells();
         if (mods & Qt::ShiftModifier)
             return deleteRung();
         if (mods & Qt::ControlModifier)

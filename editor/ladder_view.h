@@ -59,9 +59,27 @@ public:
     // The selected rungs as (first, count): a Shift+Up/Down range, else the cursor's rung.
     std::pair<int, int> selectedRungs() const;
     void selectRungs(int first, int last);
-    void clearSelection();
+    void clearSelection(); // rungs and cells
+    // A run of cells in one row (Shift+Left/Right): copy, cut, paste and Delete act on it.
+    struct CellRun {
+        int rung = -1;
+        int row = 0;
+        int first = 0;
+        int last = -1;
+        bool valid() const { return rung >= 0 && last >= first; }
+    };
+    CellRun selectedCells() const;
+    void selectCells(int first, int last); // in the cursor's row
+    // The selected cells as a one-row rung (a fragment to paste elsewhere).
+    model::Rung copyCells() const;
+    void clearCells(); // the selected cells, one undo step
+    // Writes a one-row fragment from the cursor cell on, one undo step.
+    void pasteCells(const model::Rung &fragment);
     void openEditor(const QString &initial);
     QLineEdit *inlineEditor() const { return m_editor; }
+    // The device of the element under the cursor (contact or output), as the target writes
+    // it; empty on a wire or an empty cell.
+    QString deviceAtCursor() const;
     // What the cell editor's completer offers for the text typed so far.
     QStringList completions() const;
 
@@ -109,6 +127,7 @@ private:
     QStringListModel *m_completions = nullptr;
     CellCursor m_dragFrom{-1, 0, 0}; // where the left button went down
     int m_anchorRung = -1;           // where a rung selection started; -1: none
+    int m_anchorColumn = -1;         // where a cell selection in the cursor's row started
     std::vector<double> m_top;       // y of each rung at zoom 1, plus the total height at the end
     QLineEdit *m_editor = nullptr;
 };

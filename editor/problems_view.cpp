@@ -3,7 +3,10 @@
 #include <QContextMenuEvent>
 #include <QHeaderView>
 #include <QMenu>
+#include <QPainter>
 #include <QStyle>
+
+#include <algorithm>
 
 namespace rung::editor {
 
@@ -46,8 +49,44 @@ void ProblemsView::setDiagnostics(const std::vector<model::Diagnostic> &diagnost
         item->setText(3, d.fix ? tr("%1 (fix available)").arg(d.message) : d.message);
         item->setToolTip(3, d.message);
     }
-    for (int c = 0; c < 3; ++c)
+    // Columns fit their contents, but never narrower than a "Warning" with its icon, a code
+    // and a "rung 10, row 2": an empty or short list does not squeeze its headers.
+    const QFontMetrics fm(font());
+    const int minimum[3] = {fm.horizontalAdvance(tr("Warning")) + 44,
+                            fm.horizontalAdvance(QStringLiteral("SYN001")) + 24,
+                            fm.horizontalAdvance(tr("rung %1, row %2").arg(10).arg(2)) + 24};
+    for (int c = 0; c < 3; ++c) {
         resizeColumnToContents(c);
+        setColumnWidth(c, std::max(columnWidth(c), minimum[c]));
+    }
+    viewport()->update();
+}
+
+int ProblemsView::count(model::Severity severity) const {
+    return static_cast<int>(
+        std::count_if(m_diagnostics.begin(), m_diagnostics.end(),
+                      [severity](const model::Diagnostic &d) { return d.severity == severity; }));
+}
+
+QString ProblemsView::summary() const {
+    const int errors = count(model::Severity::Error);
+    const int warnings = count(model::Severity::Warning);
+    QStringList parts;
+    if (errors > 0)
+        parts << (errors == 1 ? tr("1 error") : tr("%1 errors").arg(errors));
+    if (warnings > 0)
+        parts << (warnings == 1 ? tr("1 warning") : tr("%1 warnings").arg(warnings));
+    return parts.isEmpty() ? tr("Problems") : tr("Problems (%1)").arg(parts.join(tr(", ")));
+}
+
+void ProblemsView::paintEvent(QPaintEvent *event) {
+    QTreeWidget::paintEvent(event);
+    if (topLevelItemCount() > 0)
+        return;
+    // An empty list says so, instead of looking like it has not run.
+    QPainter p(viewport());
+    p.setPen(palette().color(QPalette::Disabled, QPalette::Text));
+    p.drawText(viewport()->rect(), Qt::AlignCenter, tr("No problems found"));
 }
 
 const model::Diagnostic *ProblemsView::diagnosticAt(int row) const {

@@ -17,6 +17,9 @@ public:
 
     void setDiagnostics(const std::vector<model::Diagnostic> &diagnostics);
     const model::Diagnostic *diagnosticAt(int row) const;
+    int count(model::Severity severity) const;
+    // "Problems (2 errors, 1 warning)", the panel's title.
+    QString summary() const;
 
 signals:
     void locate(const rung::model::Diagnostic &diagnostic);
@@ -24,6 +27,7 @@ signals:
 
 protected:
     void contextMenuEvent(QContextMenuEvent *event) override;
+    void paintEvent(QPaintEvent *event) override;
 
 private:
     std::vector<model::Diagnostic> m_diagnostics;

@@ -4,6 +4,7 @@
 #include "editor/ladder_view.h"
 #include "editor/problems_view.h"
 #include "editor/tool_icons.h"
+#include "editor/watch_list_view.h"
 
 #include <QAction>
 #include <QActionGroup>
@@ -149,6 +150,9 @@ void MainWindow::buildDocks() {
     m_symbols->verticalHeader()->hide();
     m_symbols->verticalHeader()->setDefaultSectionSize(m_symbols->fontMetrics().height() + 8);
     layout->addWidget(m_symbols, 1);
+    layout->addWidget(new QLabel(tr("Watch lists")));
+    m_watch = new editor::WatchListView(m_document);
+    layout->addWidget(m_watch);
     projectDock->setWidget(panel);
     addDockWidget(Qt::LeftDockWidgetArea, projectDock);
     connect(m_symbols, &QTableWidget::cellChanged, this, [this](int row, int) {
@@ -285,6 +289,9 @@ void MainWindow::buildActions() {
     });
     edit->addAction(tr("Export Symbols (CSV)..."), this, &MainWindow::exportSymbols);
     edit->addSeparator();
+    edit->addAction(tr("Add to &Watch List"), this,
+                    [this] { m_watch->addDevice(m_ladder->deviceAtCursor()); })
+        ->setShortcut(QKeySequence(Qt::CTRL | Qt::SHIFT | Qt::Key_W));
     edit->addAction(tr("Rung &Comment..."), this, &MainWindow::editRungComment)
         ->setShortcut(QKeySequence(Qt::CTRL | Qt::SHIFT | Qt::Key_M));
     edit->addAction(tr("Insert Rung"), this, [this] { m_ladder->insertRung(); });
@@ -399,6 +406,8 @@ void MainWindow::refreshFromDocument() {
     std::vector<model::Diagnostic> all = m_document->diagnostics();
     all.insert(all.end(), m_listingErrors.begin(), m_listingErrors.end());
     m_problems->setDiagnostics(all);
+    if (auto *dock = findChild<QDockWidget *>(QStringLiteral("problemsDock")))
+        dock->setWindowTitle(m_problems->summary());
     if (!m_editingListing) {
         // Listing findings of the canonical text: map each rung's findings to its lines.
         std::vector<model::Diagnostic> onLines;

@@ -23,6 +23,7 @@ namespace rung::editor {
 class IlEditor;
 class LadderView;
 class ProblemsView;
+class WatchListView;
 } // namespace rung::editor
 
 namespace rung::app {
@@ -59,6 +60,7 @@ public:
     int replaceDeviceEverywhere(const QString &from, const QString &to,
                                 QString *error); // -1: error
     bool importSymbols(const QString &path, QString *error);
+    editor::WatchListView *watchListView() const { return m_watch; }
     void refreshCrossReference();
     QLineEdit *crossReferenceDevice() { return m_crossDevice; }
     QTreeWidget *crossReference() { return m_crossTree; }
@@ -100,6 +102,7 @@ private:
     editor::LadderView *m_ladder;
     editor::IlEditor *m_il;
     editor::ProblemsView *m_problems;
+    editor::WatchListView *m_watch = nullptr;
     QTabWidget *m_tabs;
     QSplitter *m_split;
     QTableWidget *m_symbols = nullptr;

@@ -26,6 +26,7 @@ namespace rung::app {
 namespace {
 
 const char *const kLadderMime = "application/x-rungstudio-ladder";
+const char *const kCellsMime = "application/x-rungstudio-cells";
 
 bool sameDevice(const model::Operand &o, const model::Address &a) {
     return o.kind == model::Operand::Kind::Device && o.address == a;
@@ -72,6 +73,20 @@ QStringList csvFields(const QString &line) {
 } // namespace
 
 void MainWindow::copyRung(bool cut) {
+    if (m_ladder->selectedCells().valid()) {
+        // A run of cells: the exact drawing for Rung Studio, the same as text for others.
+        model::LadderProgram piece;
+        piece.target = &m_document->target();
+        piece.rungs = {m_ladder->copyCells()};
+        auto *mime = new QMimeData;
+        const QString text = model::printLadderText(piece);
+        mime->setText(text);
+        mime->setData(QString::fromLatin1(kCellsMime), text.toUtf8());
+        QApplication::clipboard()->setMimeData(mime);
+        if (cut)
+            m_ladder->clearCells();
+        return;
+    }
     const auto [rung, count] = m_ladder->selectedRungs();
     const auto &rungs = m_document->ladder().rungs;
     if (rung < 0 || count <= 0 || rung + count > static_cast<int>(rungs.size()))
@@ -96,6 +111,16 @@ void MainWindow::pasteRungs() {
     if (!mime)
         return;
     const model::Target &t = m_document->target();
+    if (mime->hasFormat(QString::fromLatin1(kCellsMime))) {
+        const model::LadderTextResult r = model::parseLadderText(
+            t, QString::fromUtf8(mime->data(QString::fromLatin1(kCellsMime))));
+        if (r.ok() && !r.ladder.rungs.empty())
+            m_ladder->pasteCells(r.ladder.rungs.front());
+        else if (!r.ok())
+            statusBar()->showMessage(tr("Cannot paste the cells: %1").arg(r.errors.front().message),
+                                     5000);
+        return;
+    }
     std::vector<model::Rung> rungs;
     QString problem;
     if (mime->hasFormat(QString::fromLatin1(kLadderMime))) {
