@@ -265,6 +265,15 @@ void IlEditor::setTarget(const model::Target &target) {
     }
     apis->prepare();
     setLexer(lexer);
+    // The margins in a small grey font: the line numbers and step addresses stay quieter
+    // than the program (a lexer resets the margins' font).
+    QFont margins = lexer->defaultFont(IlLexer::StepNumber);
+    margins.setPointSize(std::max(7, margins.pointSize() - 2));
+    setMarginsFont(margins);
+    setMarginsForegroundColor(lexer->defaultColor(IlLexer::StepNumber));
+    setMarginsBackgroundColor(QColor(0xf4, 0xf5, 0xf7));
+    setMarginWidth(0, QStringLiteral("0000"));
+    setMarginWidth(2, QStringLiteral("00000 "));
     if (m_lexer)
         m_lexer->deleteLater();
     m_lexer = lexer;

@@ -2,6 +2,8 @@
 
 #include <QPainterPath>
 
+#include <cmath>
+
 namespace rung::editor {
 
 namespace {
@@ -12,12 +14,6 @@ const QColor kDim(0x6b, 0x72, 0x80);
 const QColor kCursor(0x2f, 0x7d, 0xe1);
 const QColor kError(0xd9, 0x3f, 0x3f);
 const QColor kWarning(0xe0, 0x9b, 0x1a);
-
-// Wires and symbols: square caps, so segments that meet at a cell border overlap and leave no
-// light seam where antialiasing would fade both ends.
-QPen inkPen() {
-    return QPen(kInk, 1.6, Qt::SolidLine, Qt::SquareCap, Qt::MiterJoin);
-}
 
 // How far a box stands in from the output column's left edge (its input stubs).
 double boxInset(const LadderMetrics &m) {
@@ -58,11 +54,27 @@ double LadderMetrics::rungHeight(const model::Rung &rung) const {
 
 LadderPainter::LadderPainter(const model::Project &project, const LadderMetrics &metrics)
     : m_project(project)
-    , m_m(metrics) {
+    , m_m(metrics)
+    , m_pen(std::max(1.0, std::round(1.6 * metrics.rowHeight / 52.0))) {
     m_font = QFont(QStringLiteral("DejaVu Sans"));
     m_font.setPixelSize(static_cast<int>(metrics.rowHeight * 0.24));
     m_small = m_font;
     m_small.setPixelSize(static_cast<int>(metrics.rowHeight * 0.2));
+}
+
+double LadderPainter::snap(double v, double width) {
+    // A line of odd width is centred on a pixel, one of even width on a pixel border.
+    return std::round(v) + (static_cast<int>(std::round(width)) % 2 == 1 ? 0.5 : 0.0);
+}
+
+double LadderPainter::wireY(double rowTop) const {
+    return snap(rowTop + m_m.rowHeight * 0.55, m_pen);
+}
+
+// Wires and symbols: square caps, so segments that meet at a cell border overlap and leave no
+// light seam.
+QPen LadderPainter::inkPen() const {
+    return QPen(kInk, m_pen, Qt::SolidLine, Qt::SquareCap, Qt::MiterJoin);
 }
 
 QRectF LadderPainter::cellRect(const model::Rung &rung, int row, int column) const {
@@ -112,9 +124,9 @@ QString LadderPainter::secondaryLabel(const model::Operand &o) const {
 }
 
 void LadderPainter::paintContact(QPainter &p, const QRectF &cell, const model::Contact &c) const {
-    const double y = cell.top() + m_m.rowHeight * 0.55;
+    const double y = wireY(cell.top());
     const double cx = cell.center().x();
-    const double half = m_m.cellWidth * 0.12;
+    const double half = snap(cx + m_m.cellWidth * 0.12, m_pen) - cx;
     const double h = m_m.rowHeight * 0.2;
     p.setPen(inkPen());
     if (c.invert) {
@@ -181,7 +193,7 @@ void LadderPainter::paintContact(QPainter &p, const QRectF &cell, const model::C
 
 void LadderPainter::paintOutput(QPainter &p, const QRectF &area,
                                 const model::Instruction &ins) const {
-    const double y = area.top() + m_m.rowHeight * 0.55;
+    const double y = wireY(area.top());
     const double h = m_m.rowHeight * 0.2;
     p.setPen(inkPen());
     const model::Op op = ins.op();
@@ -227,8 +239,9 @@ void LadderPainter::paintOutput(QPainter &p, const QRectF &area,
     // rows, each input wired to its left edge.
     const double rowH = m_m.rowHeight;
     const bool tall = area.height() > rowH * 1.5;
-    const QRectF box(QPointF(area.left() + boxInset(m_m), y - rowH * 0.3),
-                     QPointF(area.right() - 6 - boxInset(m_m) * 0.45, area.bottom() - rowH * 0.15));
+    const QRectF box(QPointF(snap(area.left() + boxInset(m_m), m_pen), snap(y - rowH * 0.3, m_pen)),
+                     QPointF(snap(area.right() - 6 - boxInset(m_m) * 0.45, m_pen),
+                             snap(area.bottom() - rowH * 0.15, m_pen)));
     p.drawLine(QPointF(area.left(), y), QPointF(box.left(), y));
     p.drawLine(QPointF(box.right(), y), QPointF(area.right() - 6, y));
     p.setBrush(QColor(0xf4, 0xf6, 0xfa));
@@ -312,19 +325,19 @@ void LadderPainter::paintRung(QPainter &p, QPointF origin, int index,
 
     // Rails: the left one beside the first block, the right one beside the last; the rows
     // of a folded rung run on from block to block through continuation marks.
-    p.setPen(QPen(kRail, 3));
-    p.drawLine(QPointF(m_m.gutter, commentH),
-               QPointF(m_m.gutter, commentH + rung.rows * m_m.rowHeight));
-    p.drawLine(QPointF(rightRail, commentH + (blocks - 1) * blockHeight),
-               QPointF(rightRail, height));
+    const double railWidth = m_pen + 1;
+    const double leftX = snap(m_m.gutter, railWidth);
+    const double rightX = snap(rightRail, railWidth);
+    p.setPen(QPen(kRail, railWidth, Qt::SolidLine, Qt::FlatCap));
+    p.drawLine(QPointF(leftX, commentH), QPointF(leftX, commentH + rung.rows * m_m.rowHeight));
+    p.drawLine(QPointF(rightX, commentH + (blocks - 1) * blockHeight), QPointF(rightX, height));
     if (d.cursorRow >= 0 && blocks == 1) {
         // The rung being edited has a spare row below for a new branch: its rails, dashed.
         QPen spare(kRail, 1.5, Qt::DashLine);
         spare.setColor(QColor(0x3a, 0x5a, 0x8c, 110));
         p.setPen(spare);
-        p.drawLine(QPointF(m_m.gutter, height), QPointF(m_m.gutter, height + m_m.rowHeight));
-        p.drawLine(QPointF(rightRail, height), QPointF(rightRail, height + m_m.rowHeight));
-        p.setPen(QPen(kRail, 3));
+        p.drawLine(QPointF(leftX, height), QPointF(leftX, height + m_m.rowHeight));
+        p.drawLine(QPointF(rightX, height), QPointF(rightX, height + m_m.rowHeight));
     }
     for (int b = 0; b + 1 < blocks; ++b) {
         const int boundary = (b + 1) * shown; // the node between the two blocks
@@ -334,7 +347,7 @@ void LadderPainter::paintRung(QPainter &p, QPointF origin, int index,
                 boundary < rung.columns && rung.cell(r, boundary).kind != model::CellKind::Empty;
             if (!before && !after)
                 continue;
-            const double yOut = commentH + b * blockHeight + (r + 0.55) * m_m.rowHeight;
+            const double yOut = wireY(commentH + b * blockHeight + r * m_m.rowHeight);
             const double yIn = yOut + blockHeight;
             paintContinuation(p, QPointF(m_m.gutter + shown * m_m.cellWidth, yOut), b + 1, r);
             paintContinuation(p, QPointF(m_m.gutter, yIn), b + 1, r);
@@ -354,7 +367,7 @@ void LadderPainter::paintRung(QPainter &p, QPointF origin, int index,
             const QRectF rect = cellRect(rung, r, c);
             if (cell.kind == model::CellKind::Wire) {
                 p.setPen(inkPen());
-                const double y = rect.top() + m_m.rowHeight * 0.55;
+                const double y = wireY(rect.top());
                 p.drawLine(QPointF(rect.left(), y), QPointF(rect.right(), y));
             } else if (cell.kind == model::CellKind::Contact) {
                 paintContact(p, rect, cell.contact);
@@ -368,8 +381,9 @@ void LadderPainter::paintRung(QPainter &p, QPointF origin, int index,
                 continue;
             auto drawLink = [&](int block, double x) {
                 const double y0 =
-                    commentH + (block * m_m.blockStride(rung) + r + 0.55) * m_m.rowHeight;
-                p.drawLine(QPointF(x, y0), QPointF(x, y0 + m_m.rowHeight));
+                    wireY(commentH + (block * m_m.blockStride(rung) + r) * m_m.rowHeight);
+                p.drawLine(QPointF(snap(x, m_pen), y0),
+                           QPointF(snap(x, m_pen), y0 + m_m.rowHeight));
             };
             if (c == rung.columns) {
                 drawLink(blocks - 1, m_m.gutter + shown * m_m.cellWidth);
@@ -384,7 +398,7 @@ void LadderPainter::paintRung(QPainter &p, QPointF origin, int index,
         // output, so every output lines up at the right.
         const auto &out = rung.outputs[static_cast<std::size_t>(r)];
         const QRectF outRect = outputRect(rung, r);
-        const double y = outRect.top() + m_m.rowHeight * 0.55;
+        const double y = wireY(outRect.top());
         const bool linkedAtEnd =
             rung.link(r, rung.columns) || (r > 0 && rung.link(r - 1, rung.columns));
         const bool wiredToEnd =
@@ -411,7 +425,7 @@ void LadderPainter::paintRung(QPainter &p, QPointF origin, int index,
                 for (std::size_t k = 0;
                      k < inputs.size() && k < static_cast<std::size_t>(pins.size()); ++k) {
                     const QRectF pin = outputRect(rung, inputs[k]);
-                    const double pinY = pin.top() + m_m.rowHeight * 0.55;
+                    const double pinY = wireY(pin.top());
                     const double boxLeft = pin.left() + boxInset(m_m);
                     if (k > 0) { // the first input's stub comes with the box
                         p.setPen(inkPen());

@@ -62,6 +62,10 @@ LadderView::LadderView(Document *document, QWidget *parent)
 }
 
 LadderMetrics LadderView::metrics() const {
+    return metricsAt(m_zoom);
+}
+
+LadderMetrics LadderView::metricsAt(double zoom) const {
     LadderMetrics m;
     int widest = std::max(1, m_document->target().limits.contactsPerRow);
     for (const model::Rung &r : m_document->ladder().rungs)
@@ -70,12 +74,12 @@ LadderMetrics LadderView::metrics() const {
     m.foldColumns = std::max(0, m_document->target().limits.contactsPerRow);
     // Whole pixels at every zoom: rails, wires and cell borders fall on the pixel grid and
     // stay crisp (the cell sizes round down, so fit-to-width never overshoots).
-    m.cellWidth = std::floor(m.cellWidth * m_zoom);
-    m.rowHeight = std::round(m.rowHeight * m_zoom);
-    m.gutter = std::round(m.gutter * m_zoom);
-    m.outputWidth = std::floor(m.outputWidth * m_zoom);
-    m.commentHeight = std::round(m.commentHeight * m_zoom);
-    m.rungGap = std::round(m.rungGap * m_zoom);
+    m.cellWidth = std::floor(m.cellWidth * zoom);
+    m.rowHeight = std::round(m.rowHeight * zoom);
+    m.gutter = std::round(m.gutter * zoom);
+    m.outputWidth = std::floor(m.outputWidth * zoom);
+    m.commentHeight = std::round(m.commentHeight * zoom);
+    m.rungGap = std::round(m.rungGap * zoom);
     return m;
 }
 
@@ -137,8 +141,9 @@ void LadderView::setFitWidth(bool on) {
 }
 
 void LadderView::fitZoomToWidth() {
-    // The drawing's zoomed width at 100 %, and what the viewport leaves for it.
-    const double full = (metrics().width() - LadderMetrics::kRightMargin) / m_zoom;
+    // The drawing's width at 100 %, and what the viewport leaves for it (the zoomed cells
+    // round down to whole pixels, so the drawing never comes out wider).
+    const double full = metricsAt(1.0).width() - LadderMetrics::kRightMargin;
     const double available = viewport()->width() - LadderMetrics::kRightMargin - 2;
     if (full > 0 && available > 0)
         applyZoom(std::min(1.0, available / full));

@@ -82,6 +82,8 @@ public:
     QString deviceAtCursor() const;
     // What the cell editor's completer offers for the text typed so far.
     QStringList completions() const;
+    // The tooltip of an element: its devices with their symbol names and comments.
+    QString elementHelp(const CellCursor &cell) const;
 
     // The rung geometry, for navigation and tests.
     QRect cellRectOnScreen(const CellCursor &cell) const;
@@ -99,10 +101,12 @@ protected:
     void mouseReleaseEvent(QMouseEvent *event) override;
     void mouseDoubleClickEvent(QMouseEvent *event) override;
     void wheelEvent(QWheelEvent *event) override;
+    bool viewportEvent(QEvent *event) override;
     void resizeEvent(QResizeEvent *event) override;
 
 private:
     void relayout();
+    LadderMetrics metricsAt(double zoom) const;
     // The cell under a viewport position; rung -1 where there is none.
     CellCursor cellAt(QPointF position) const;
     // Wires along a row or vertical links down a column, from one cell to another of a rung.

@@ -6,9 +6,12 @@
 
 #include "document.h"
 
+#include "model/address.h"
+
 #include <QLineEdit>
 #include <QMouseEvent>
 #include <QScrollBar>
+#include <QToolTip>
 #include <QWheelEvent>
 
 namespace rung::editor {
@@ -111,6 +114,49 @@ void LadderView::mouseDoubleClickEvent(QMouseEvent *event) {
     mousePressEvent(event);
     m_dragFrom = {-1, 0, 0};
     openEditor(QString());
+}
+
+bool LadderView::viewportEvent(QEvent *event) {
+    if (event->type() != QEvent::ToolTip)
+        return QAbstractScrollArea::viewportEvent(event);
+    // Hovering an element shows its device with the symbol's name and comment.
+    const auto *help = static_cast<QHelpEvent *>(event);
+    const QString text = elementHelp(cellAt(help->pos()));
+    if (text.isEmpty())
+        QToolTip::hideText();
+    else
+        QToolTip::showText(help->globalPos(), text, viewport());
+    return true;
+}
+
+QString LadderView::elementHelp(const CellCursor &cell) const {
+    const auto &rungs = m_document->ladder().rungs;
+    if (cell.rung < 0 || cell.rung >= static_cast<int>(rungs.size()))
+        return {};
+    const model::Rung &rung = rungs[static_cast<std::size_t>(cell.rung)];
+    if (cell.row >= rung.rows)
+        return {};
+    const std::vector<model::Operand> *operands = nullptr;
+    if (cell.column >= metrics().gridColumns) {
+        if (const auto &out = rung.outputs[static_cast<std::size_t>(cell.row)])
+            operands = &out->operands;
+    } else if (cell.column < rung.columns) {
+        operands = &rung.cell(cell.row, cell.column).contact.operands;
+    }
+    QStringList lines;
+    for (const model::Operand &o : operands ? *operands : std::vector<model::Operand>{}) {
+        if (o.kind != model::Operand::Kind::Device)
+            continue;
+        QString line = model::formatAddress(m_document->target(), o.address);
+        if (const model::Symbol *s = m_document->project().symbol(o.address)) {
+            if (!s->name.isEmpty())
+                line += QStringLiteral(" — ") + s->name;
+            if (!s->comment.isEmpty())
+                line += QStringLiteral(": ") + s->comment;
+        }
+        lines << line;
+    }
+    return lines.join(QLatin1Char('\n'));
 }
 
 void LadderView::wheelEvent(QWheelEvent *event) {

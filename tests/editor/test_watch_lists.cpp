@@ -4,6 +4,7 @@
 #include "app/gui/main_window.h"
 #include "editor/ladder_view.h"
 #include "editor/watch_list_view.h"
+#include "model/address.h"
 
 #include <QTemporaryDir>
 #include <QTest>
@@ -52,4 +53,19 @@ TEST(WatchLists, TheDeviceUnderTheCursorIsAddedOnceAndRemovedWithDelete) {
     ASSERT_EQ(again.document()->project().watchLists.size(), 1u);
     EXPECT_EQ(again.document()->project().watchLists[0].devices.size(), 2);
     EXPECT_EQ(again.watchListView()->topLevelItem(0)->childCount(), 2);
+}
+
+TEST(ElementHelp, HoveringAnElementNamesItsDeviceWithTheSymbolsNameAndComment) {
+    app::MainWindow window;
+    window.newProject(model::Target::get(model::Family::Vigor), QStringLiteral("VB"));
+    std::vector<model::Diagnostic> errors;
+    ASSERT_TRUE(window.document()->setListing(QStringLiteral("LD X0\nOUT Y0\nEND\n"), &errors));
+    window.document()->setSymbols(
+        {model::Symbol{std::get<model::Address>(
+                           model::parseAddress(window.document()->target(), QStringLiteral("X0"))),
+                       QStringLiteral("Start"), QStringLiteral("green button")}});
+    editor::LadderView *view = window.ladderView();
+    EXPECT_EQ(view->elementHelp({0, 0, 0}), QStringLiteral("X0 — Start: green button"));
+    EXPECT_EQ(view->elementHelp({0, 0, view->metrics().gridColumns}), QStringLiteral("Y0"));
+    EXPECT_TRUE(view->elementHelp({0, 0, 5}).isEmpty());
 }
