@@ -1,6 +1,5 @@
 #include "app/gui/application.h"
 
-int main(int argc, char **argv)
-{
+int main(int argc, char **argv) {
     return rung::app::runGui(argc, argv);
 }

@@ -64,7 +64,7 @@ QColor IlLexer::defaultColor(int style) const {
 
 QFont IlLexer::defaultFont(int style) const {
     QFont f = QFontDatabase::systemFont(QFontDatabase::FixedFont);
-    f.setPointSize(11);
+    f.setPointSize(10);
     if (style == Mnemonic)
         f.setBold(true);
     if (style == Comment)

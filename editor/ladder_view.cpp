@@ -57,6 +57,10 @@ LadderView::LadderView(Document *document, QWidget *parent)
     completer->setCompletionMode(QCompleter::PopupCompletion);
     m_editor->setCompleter(completer);
     connect(m_editor, &QLineEdit::textEdited, this, &LadderView::updateCompletions);
+    // Return commits here (eventFilter): a Return the line edit ignores would reach the view
+    // and open the editor again. With the completion list open, the completer hands Return
+    // to the line edit itself, which reports it as returnPressed.
+    m_editor->installEventFilter(this);
     connect(m_editor, &QLineEdit::returnPressed, this, &LadderView::commitEditor);
     relayout();
 }
@@ -315,6 +319,13 @@ bool LadderView::enterInstruction(const QString &text, QString *error) {
             cell.contact.compare = ins.spec->compare;
             cell.contact.operands = ins.operands;
         }
+        // OR (ORI, ORP, ...) below the first row: in parallel with the cell above, linked to
+        // its row at the contact's right node and, away from the rail, at its left node.
+        if (op == model::Op::Or && row > 0) {
+            rung.setLink(row - 1, m_cursor.column + 1, true);
+            if (m_cursor.column > 0)
+                rung.setLink(row - 1, m_cursor.column, true);
+        }
         // The first row is the main circuit: a gap on it from the rail becomes a wire.
         if (row == 0)
             for (int c = 0; c < m_cursor.column; ++c)
@@ -528,22 +539,14 @@ void LadderView::keyPressEvent(QKeyEvent *event) {
         c.row = 0;
         return setCursor(c);
     case Qt::Key_F5:
-        return openEditor(mnemonicFor(model::Op::Load) + QLatin1Char(' '));
     case Qt::Key_F6:
-        return openEditor(mnemonicFor(model::Op::Load, model::ContactMode::Negated) +
-                          QLatin1Char(' '));
     case Qt::Key_F7:
-        c.column = m.gridColumns;
-        setCursor(c);
-        return openEditor(mnemonicFor(model::Op::Out) + QLatin1Char(' '));
     case Qt::Key_F8:
-        c.column = m.gridColumns;
-        setCursor(c);
-        return openEditor(QString());
     case Qt::Key_F9:
-        if (mods & Qt::ShiftModifier)
-            return toggleLink();
-        return placeWire();
+    case Qt::Key_F10:
+        if (functionKey(event)) // ladder_view_keys.cpp
+            return;
+        break;
     case Qt::Key_Delete:
         if (selectedCells().valid() && !(mods & (Qt::ShiftModifier | Qt::ControlModifier)))
             return clearCells();
@@ -574,6 +577,7 @@ void LadderView::keyPressEvent(QKeyEvent *event) {
 
 void LadderView::resizeEvent(QResizeEvent *event) {
     QAbstractScrollArea::resizeEvent(event);
+    placeNotice();
     if (m_fitWidth)
         fitZoomToWidth();
     else

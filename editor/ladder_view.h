@@ -2,8 +2,10 @@
 
 // The ladder editor: paints only the visible rungs, moves a cell cursor with the keyboard,
 // and edits as the vendor tools do: F5 normally open contact, F6 normally closed, F7 coil,
-// F8 instruction, F9 wire, Shift+F9 vertical link, typing a mnemonic with its operand
-// ("LD X0", "OUT Y1", "TMR T0 K10") into the cell, Insert/Delete for cells, rows and rungs.
+// F8 instruction, F9 wire, Shift+F9 vertical link, with Shift/Alt/Ctrl the parallel and edge
+// contacts and deleting wires and links (ladder_view_keys.cpp), typing a mnemonic with its
+// operand ("LD X0", "OUT Y1", "TMR T0 K10") into the cell, Insert/Delete for cells, rows and
+// rungs.
 
 #include "document.h"
 #include "ladder_painter.h"
@@ -11,6 +13,7 @@
 #include <QAbstractScrollArea>
 #include <QPointer>
 
+class QLabel;
 class QLineEdit;
 
 class QStringListModel;
@@ -51,6 +54,8 @@ public:
     void placeWire();
     void toggleLink();
     void clearCell();
+    void deleteWire(); // Ctrl+F9
+    void deleteLink(); // Ctrl+F10: the link at the cursor's left node, down to the next row
     void insertColumn();
     void insertRow();
     void deleteRow();
@@ -80,6 +85,13 @@ public:
     // The device of the element under the cursor (contact or output), as the target writes
     // it; empty on a wire or an empty cell.
     QString deviceAtCursor() const;
+    // Moves the cursor to the next (previous) element that uses the device, wrapping round;
+    // false, with a message, when nothing uses it (ladder_view_find.cpp).
+    bool findDevice(const model::Address &device, bool backwards = false);
+    // A line across the top of the drawing (the list has errors and the ladder shows the
+    // last valid program); empty: none.
+    void setNotice(const QString &text);
+    QString notice() const;
     // What the cell editor's completer offers for the text typed so far.
     QStringList completions() const;
     // The tooltip of an element: its devices with their symbol names and comments.
@@ -96,6 +108,7 @@ signals:
 protected:
     void paintEvent(QPaintEvent *event) override;
     void keyPressEvent(QKeyEvent *event) override;
+    bool eventFilter(QObject *watched, QEvent *event) override; // the cell editor's keys
     void mousePressEvent(QMouseEvent *event) override;
     void mouseMoveEvent(QMouseEvent *event) override;
     void mouseReleaseEvent(QMouseEvent *event) override;
@@ -106,6 +119,8 @@ protected:
 
 private:
     void relayout();
+    void placeNotice();
+    bool functionKey(QKeyEvent *event); // F5..F10 with their modifiers; false: not one
     LadderMetrics metricsAt(double zoom) const;
     // The cell under a viewport position; rung -1 where there is none.
     CellCursor cellAt(QPointF position) const;
@@ -134,6 +149,7 @@ private:
     int m_anchorColumn = -1;         // where a cell selection in the cursor's row started
     std::vector<double> m_top;       // y of each rung at zoom 1, plus the total height at the end
     QLineEdit *m_editor = nullptr;
+    QLabel *m_notice = nullptr;
 };
 
 } // namespace rung::editor

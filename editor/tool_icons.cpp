@@ -26,6 +26,31 @@ void draw(QPainter &p, ToolIcon icon) {
         if (icon == ToolIcon::ClosedContact)
             p.drawLine(QPointF(8, 25), QPointF(24, 7));
         break;
+    case ToolIcon::ParallelContact:
+        // A contact on a branch below, joined to the line above at both ends.
+        p.drawLine(QPointF(2, 8), QPointF(30, 8));
+        p.drawLine(QPointF(5, 8), QPointF(5, 23));
+        p.drawLine(QPointF(27, 8), QPointF(27, 23));
+        p.drawLine(QPointF(5, 23), QPointF(12, 23));
+        p.drawLine(QPointF(20, 23), QPointF(27, 23));
+        p.drawLine(QPointF(12, 16), QPointF(12, 30));
+        p.drawLine(QPointF(20, 16), QPointF(20, 30));
+        break;
+    case ToolIcon::RisingContact:
+    case ToolIcon::FallingContact: {
+        p.drawLine(QPointF(2, 16), QPointF(9, 16));
+        p.drawLine(QPointF(23, 16), QPointF(30, 16));
+        p.drawLine(QPointF(9, 6), QPointF(9, 26));
+        p.drawLine(QPointF(23, 6), QPointF(23, 26));
+        const bool up = icon == ToolIcon::RisingContact;
+        const double tip = up ? 9 : 23;
+        const double tail = up ? 23 : 9;
+        p.setPen(QPen(kAccent, 2.2, Qt::SolidLine, Qt::RoundCap, Qt::RoundJoin));
+        p.drawLine(QPointF(16, tail), QPointF(16, tip));
+        p.drawLine(QPointF(12.5, tip + (up ? 4 : -4)), QPointF(16, tip));
+        p.drawLine(QPointF(19.5, tip + (up ? 4 : -4)), QPointF(16, tip));
+        break;
+    }
     case ToolIcon::Coil:
         p.drawLine(QPointF(2, 16), QPointF(9, 16));
         p.drawLine(QPointF(23, 16), QPointF(30, 16));
@@ -54,9 +79,8 @@ void draw(QPainter &p, ToolIcon icon) {
         p.drawLine(QPointF(16, 24), QPointF(28, 24));
         p.drawLine(QPointF(16, 8), QPointF(28, 8));
         break;
-    case ToolIcon::NewFile:
-    case ToolIcon::OpenFile:
-    case ToolIcon::SaveFile: {
+    case ToolIcon::NewFile: {
+        // A sheet with a small rung on it and a plus.
         QPainterPath sheet;
         sheet.moveTo(7, 3);
         sheet.lineTo(20, 3);
@@ -69,26 +93,52 @@ void draw(QPainter &p, ToolIcon icon) {
         p.drawPath(sheet);
         p.drawLine(QPointF(20, 3), QPointF(20, 9));
         p.drawLine(QPointF(20, 9), QPointF(26, 9));
-        // a small rung on the sheet
         p.setPen(QPen(kInk, 1.4));
         p.drawLine(QPointF(10, 12), QPointF(10, 24));
-        p.drawLine(QPointF(10, 18), QPointF(23, 18));
-        if (icon == ToolIcon::OpenFile || icon == ToolIcon::SaveFile) {
-            QPainterPath arrow;
-            const bool down = icon == ToolIcon::SaveFile;
-            const double y0 = down ? 12 : 28;
-            const double y1 = down ? 28 : 12;
-            arrow.moveTo(22, y0);
-            arrow.lineTo(22, y1);
-            p.setPen(QPen(kAccent, 3, Qt::SolidLine, Qt::RoundCap));
-            p.drawPath(arrow);
-            p.drawLine(QPointF(17, y1 + (down ? -5 : 5)), QPointF(22, y1));
-            p.drawLine(QPointF(27, y1 + (down ? -5 : 5)), QPointF(22, y1));
-        } else {
-            p.setPen(QPen(kAccent, 3, Qt::SolidLine, Qt::RoundCap));
-            p.drawLine(QPointF(23, 20), QPointF(23, 30));
-            p.drawLine(QPointF(18, 25), QPointF(28, 25));
-        }
+        p.drawLine(QPointF(10, 18), QPointF(19, 18));
+        p.setPen(QPen(kAccent, 3, Qt::SolidLine, Qt::RoundCap));
+        p.drawLine(QPointF(24, 19), QPointF(24, 29));
+        p.drawLine(QPointF(19, 24), QPointF(29, 24));
+        break;
+    }
+    case ToolIcon::OpenFile: {
+        // A folder, its front flap open.
+        QPainterPath back;
+        back.moveTo(3, 26);
+        back.lineTo(3, 7);
+        back.lineTo(11, 7);
+        back.lineTo(14, 10);
+        back.lineTo(26, 10);
+        back.lineTo(26, 14);
+        p.setPen(QPen(kInk, 1.8, Qt::SolidLine, Qt::FlatCap, Qt::RoundJoin));
+        p.drawPath(back);
+        QPainterPath front;
+        front.moveTo(3, 26);
+        front.lineTo(8, 14);
+        front.lineTo(30, 14);
+        front.lineTo(25, 26);
+        front.closeSubpath();
+        p.setBrush(QColor(0xd6, 0xe6, 0xfa));
+        p.drawPath(front);
+        break;
+    }
+    case ToolIcon::SaveFile: {
+        // A diskette: body, shutter and label.
+        QPainterPath body;
+        body.moveTo(4, 4);
+        body.lineTo(24, 4);
+        body.lineTo(28, 8);
+        body.lineTo(28, 28);
+        body.lineTo(4, 28);
+        body.closeSubpath();
+        p.setPen(QPen(kInk, 1.8, Qt::SolidLine, Qt::FlatCap, Qt::RoundJoin));
+        p.setBrush(QColor(0xd6, 0xe6, 0xfa));
+        p.drawPath(body);
+        p.setBrush(kPaper);
+        p.drawRect(QRectF(9, 4, 13, 8));
+        p.drawRect(QRectF(8, 17, 16, 11));
+        p.setPen(QPen(kAccent, 2));
+        p.drawLine(QPointF(18, 6), QPointF(18, 10));
         break;
     }
     case ToolIcon::Undo:

@@ -10,6 +10,9 @@ namespace rung::editor {
 enum class ToolIcon {
     OpenContact,
     ClosedContact,
+    ParallelContact,
+    RisingContact,
+    FallingContact,
     Coil,
     Instruction,
     HorizontalWire,

@@ -1,5 +1,6 @@
 #include "application.h"
 
+#include "command_line.h"
 #include "main_window.h"
 
 #include "editor/ladder_view.h"
@@ -8,6 +9,7 @@
 #include <QCommandLineParser>
 #include <QLibraryInfo>
 #include <QLocale>
+#include <QMessageBox>
 #include <QSettings>
 #include <QTimer>
 #include <QTranslator>
@@ -33,36 +35,21 @@ int runGui(int argc, char **argv) {
         QApplication::installTranslator(&qtTranslator);
 
     QCommandLineParser parser;
-    parser.setApplicationDescription(QApplication::translate(
-        "rung::app::Gui", "Ladder and instruction-list IDE for small PLCs"));
-    parser.addHelpOption();
-    parser.addVersionOption();
-    parser.addPositionalArgument(
-        QStringLiteral("file"),
-        QApplication::translate("rung::app::Gui",
-                                "A project (.rung) or an instruction list to open"));
-    QCommandLineOption target(
-        QStringLiteral("target"),
-        QApplication::translate("rung::app::Gui",
-                                "Target of an instruction list: vpc, vigor, cpm1, pl110"),
-        QStringLiteral("T"));
-    QCommandLineOption screenshot(
-        QStringLiteral("screenshot"),
-        QApplication::translate("rung::app::Gui", "Save a picture of the window and quit"),
-        QStringLiteral("PNG"));
-    parser.addOption(target);
-    parser.addOption(screenshot);
-    parser.process(app);
+    describeGuiArguments(parser);
+    parser.process(app); // --help, --version and unknown options end here
+    const GuiArguments arguments = readGuiArguments(parser);
 
     MainWindow window;
     window.show();
-    const QStringList files = parser.positionalArguments();
-    if (!files.isEmpty())
-        window.openFile(files.front(), parser.value(target));
+    if (!arguments.ok())
+        QMessageBox::critical(&window, QApplication::translate("rung::app::Gui", "Rung Studio"),
+                              arguments.error);
+    else if (!arguments.file.isEmpty())
+        window.openFile(arguments.file, arguments.target);
     else
         window.offerRecovery();
-    if (parser.isSet(screenshot)) {
-        const QString path = parser.value(screenshot);
+    if (!arguments.screenshot.isEmpty()) {
+        const QString path = arguments.screenshot;
         QTimer::singleShot(1200, &window, [&window, &app, path] {
             window.ladderView()->setFocus();
             window.ladderView()->setCursor({1, 0, 1});

@@ -89,6 +89,11 @@ MainWindow::MainWindow(QWidget *parent)
             m_ladder->setCursor({rung, 0, 0});
     });
     connect(m_problems, &editor::ProblemsView::locate, this, &MainWindow::locate);
+    // The status bar's cursor is the ladder's cell or the list's line, whichever has focus.
+    connect(qApp, &QApplication::focusChanged, this, [this](QWidget *, QWidget *now) {
+        if (now == m_il || now == m_ladder)
+            updateStatus();
+    });
     connect(m_problems, &editor::ProblemsView::applyFix, this, &MainWindow::applyFix);
 
     m_recoveryTimer.setInterval(60 * 1000);
@@ -235,10 +240,10 @@ void MainWindow::buildActions() {
     bar->addSeparator();
     edit->addSeparator();
     // The palette: what F5..F9 do, as the vendor tools have it.
-    auto pressKey = [this](Qt::Key key) {
-        return [this, key] {
+    auto pressKey = [this](Qt::Key key, Qt::KeyboardModifiers mods = Qt::NoModifier) {
+        return [this, key, mods] {
             m_ladder->setFocus();
-            QApplication::postEvent(m_ladder, new QKeyEvent(QEvent::KeyPress, key, Qt::NoModifier));
+            QApplication::postEvent(m_ladder, new QKeyEvent(QEvent::KeyPress, key, mods));
         };
     };
     struct Tool {
@@ -252,6 +257,12 @@ void MainWindow::buildActions() {
          pressKey(Qt::Key_F5)},
         {tr("Normally Closed Contact"), editor::ToolIcon::ClosedContact, QKeySequence(Qt::Key_F6),
          pressKey(Qt::Key_F6)},
+        {tr("Parallel Contact"), editor::ToolIcon::ParallelContact,
+         QKeySequence(Qt::SHIFT | Qt::Key_F5), pressKey(Qt::Key_F5, Qt::ShiftModifier)},
+        {tr("Rising-Edge Contact"), editor::ToolIcon::RisingContact,
+         QKeySequence(Qt::SHIFT | Qt::Key_F7), pressKey(Qt::Key_F7, Qt::ShiftModifier)},
+        {tr("Falling-Edge Contact"), editor::ToolIcon::FallingContact,
+         QKeySequence(Qt::SHIFT | Qt::Key_F8), pressKey(Qt::Key_F8, Qt::ShiftModifier)},
         {tr("Coil"), editor::ToolIcon::Coil, QKeySequence(Qt::Key_F7), pressKey(Qt::Key_F7)},
         {tr("Instruction"), editor::ToolIcon::Instruction, QKeySequence(Qt::Key_F8),
          pressKey(Qt::Key_F8)},
@@ -277,6 +288,12 @@ void MainWindow::buildActions() {
     edit->actions().at(edit->actions().size() - 3)->setShortcut(QKeySequence::Cut);
     edit->actions().at(edit->actions().size() - 2)->setShortcut(QKeySequence::Copy);
     edit->actions().at(edit->actions().size() - 1)->setShortcut(QKeySequence::Paste);
+    edit->addAction(tr("&Find Device..."), this, &MainWindow::findDeviceDialog)
+        ->setShortcut(QKeySequence(Qt::CTRL | Qt::Key_F));
+    edit->addAction(tr("Find &Next"), this, [this] { findDevice(m_findText, false); })
+        ->setShortcut(QKeySequence(Qt::Key_F3));
+    edit->addAction(tr("Find Pre&vious"), this, [this] { findDevice(m_findText, true); })
+        ->setShortcut(QKeySequence(Qt::SHIFT | Qt::Key_F3));
     edit->addAction(tr("Replace &Device..."), this, &MainWindow::replaceDevice)
         ->setShortcut(QKeySequence::Replace);
     edit->addSeparator();
@@ -350,7 +367,9 @@ void MainWindow::buildActions() {
         QMessageBox::information(
             this, tr("Keyboard"),
             tr("F5 normally open contact, F6 normally closed contact, F7 coil, F8 instruction\n"
-               "F9 horizontal wire, Shift+F9 vertical link\n"
+               "Shift+F5 / Shift+F6 the same contacts in parallel with the row above\n"
+               "Shift+F7 / Shift+F8 rising / falling edge contact (Alt: in parallel)\n"
+               "F9 horizontal wire, Shift+F9 vertical link, Ctrl+F9 / Ctrl+F10 delete them\n"
                "Type an instruction into the cell: LD X0, ANI X2, OUT Y1, TMR T0 K10\n"
                "Insert: insert a cell, Ctrl+Insert: insert a row, Shift+Insert: insert a rung\n"
                "Delete: clear, Ctrl+Delete: delete the row, Shift+Delete: delete the rung\n"
@@ -388,6 +407,9 @@ void MainWindow::setSideBySide(bool sideBySide) {
         m_split->addWidget(m_il);
         m_split->setStretchFactor(0, 3);
         m_split->setStretchFactor(1, 1);
+        // Out of the tabs the pages come hidden (a tab widget hides all but its current one).
+        m_ladder->show();
+        m_il->show();
         m_split->show();
         m_tabs->hide();
     } else {
@@ -438,7 +460,6 @@ void MainWindow::refreshFromDocument() {
     if (!m_editingListing)
         m_il->setStepNumbers(stepOfLine);
     refreshSymbols();
-    refreshCrossReference();
     updateStatus();
 }
 
@@ -472,6 +493,17 @@ void MainWindow::applyListing() {
     m_editingListing = true;
     const bool ok = m_document->setListing(m_il->text(), &errors);
     m_listingErrors = ok ? std::vector<model::Diagnostic>{} : errors;
+    if (ok || errors.empty()) {
+        m_ladder->setNotice(QString());
+    } else {
+        const model::Diagnostic &first = errors.front();
+        m_ladder->setNotice(
+            tr("The instruction list has %1: line %2: %3. The ladder shows the last valid "
+               "program.")
+                .arg(errors.size() == 1 ? tr("an error") : tr("%1 errors").arg(errors.size()))
+                .arg(first.location.line)
+                .arg(first.message));
+    }
     // While the text is invalid the ladder keeps the last valid program; the errors show in
     // the listing and in the problems panel.
     refreshFromDocument();

@@ -20,6 +20,7 @@ class QMenu;
 class QPrinter;
 
 namespace rung::editor {
+class CrossReferenceView;
 class IlEditor;
 class LadderView;
 class ProblemsView;
@@ -59,9 +60,12 @@ public:
     void pasteRungs();
     int replaceDeviceEverywhere(const QString &from, const QString &to,
                                 QString *error); // -1: error
+    // Moves the ladder's cursor to the next (previous) use of a device, remembered for F3;
+    // false with a message in the status bar when the text is no device or nothing uses it.
+    bool findDevice(const QString &device, bool backwards);
     bool importSymbols(const QString &path, QString *error);
+    bool exportSymbolsTo(const QString &path, QString *error);
     editor::WatchListView *watchListView() const { return m_watch; }
-    void refreshCrossReference();
     QLineEdit *crossReferenceDevice() { return m_crossDevice; }
     QTreeWidget *crossReference() { return m_crossTree; }
     void writeRecovery();
@@ -95,6 +99,7 @@ private:
     void exportImage(const QString &format);
     void printPreview();
     void replaceDevice();
+    void findDeviceDialog();
     void exportSymbols();
     void buildCrossReference();
 
@@ -106,6 +111,7 @@ private:
     QTabWidget *m_tabs;
     QSplitter *m_split;
     QTableWidget *m_symbols = nullptr;
+    editor::CrossReferenceView *m_crossReference = nullptr;
     QLineEdit *m_crossDevice = nullptr;
     QTreeWidget *m_crossTree = nullptr;
     QLabel *m_projectInfo = nullptr;
@@ -118,6 +124,7 @@ private:
     QTimer m_recoveryTimer;
     std::vector<model::Diagnostic> m_listingErrors;
     bool m_editingListing = false;
+    QString m_findText; // the device of the last Find, for F3 / Shift+F3
     bool m_sideBySide = false;
     bool m_updatingSymbols = false;
 };

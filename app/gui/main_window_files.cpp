@@ -16,6 +16,7 @@
 #include <QFileInfo>
 #include <QFormLayout>
 #include <QImage>
+#include <QLocale>
 #include <QMenu>
 #include <QMessageBox>
 #include <QPainter>
@@ -34,9 +35,11 @@ namespace {
 constexpr int kMaxRecent = 8;
 
 // Paints every rung, one below the other, starting at `top`; a new page when needed.
+// With `paint` false it only lays the rungs out on pages (to count them for the header).
 template <typename NewPage>
 void paintProgram(QPainter &p, const editor::Document &document, const editor::LadderMetrics &m,
-                  bool namesFirst, double pageHeight, double top, NewPage newPage) {
+                  bool namesFirst, double pageHeight, double top, NewPage newPage,
+                  bool paint = true) {
     const model::Project &project = document.project();
     editor::LadderPainter painter(project, m);
     painter.setNamesFirst(namesFirst); // as the view shows it
@@ -47,6 +50,10 @@ void paintProgram(QPainter &p, const editor::Document &document, const editor::L
         if (pageHeight > 0 && y + h > pageHeight && y > top) {
             newPage();
             y = top;
+        }
+        if (!paint) {
+            y += h;
+            continue;
         }
         editor::RungDecorations d; // step addresses, as on screen
         const auto first =
@@ -329,6 +336,7 @@ bool MainWindow::exportLadder(const QString &path, QString *error) {
         printer.setOutputFileName(path);
         printer.setPageSize(QPageSize(QPageSize::A4));
         printer.setPageOrientation(QPageLayout::Landscape);
+        printer.setPageMargins(QMarginsF(12, 10, 12, 10), QPageLayout::Millimeter);
         printer.setDocName(QFileInfo(m_document->path()).baseName());
         return printLadder(&printer) || fail();
     }
@@ -343,25 +351,41 @@ bool MainWindow::printLadder(QPrinter *printer) {
     QPainter p;
     if (!p.begin(printer))
         return false;
+    // The ladder fills the page's width between the margins; the page header is drawn in the
+    // same units, so it scales with it.
     const QRect page = printer->pageLayout().paintRectPixels(printer->resolution());
     const double scale = page.width() / m.width();
     p.scale(scale, scale);
-    const QString header =
-        tr("%1 — %2 — %3")
-            .arg(m_document->path().isEmpty() ? tr("Untitled")
-                                              : QFileInfo(m_document->path()).fileName(),
-                 project.target->displayName, QDate::currentDate().toString(Qt::ISODate));
+    const double pageHeight = page.height() / scale;
+    constexpr double kTop = 40; // below the header and its rule
+    int pages = 1;
+    paintProgram(
+        p, *m_document, m, m_ladder->namesFirst(), pageHeight, kTop, [&] { ++pages; }, false);
+    const QString projectName =
+        m_document->path().isEmpty() ? tr("Untitled") : QFileInfo(m_document->path()).fileName();
+    const QString target =
+        tr("%1 %2").arg(project.target->displayName, m_document->modelVariant()->name);
+    const QString date = QLocale().toString(QDate::currentDate(), QLocale::ShortFormat);
     int pageNumber = 1;
     QFont headerFont(QStringLiteral("DejaVu Sans"));
     headerFont.setPixelSize(13); // in the drawing's units, like the ladder's own text
-    p.setFont(headerFont);
+    QFont bold = headerFont;
+    bold.setBold(true);
     auto drawHeader = [&] {
+        // Project on the left, PLC in the middle, date and page on the right, a rule below.
+        const QRectF line(0, 0, m.width(), 24);
         p.setPen(Qt::black);
-        p.drawText(QRectF(0, 0, m.width(), 24), Qt::AlignLeft | Qt::AlignVCenter,
-                   tr("%1, page %2").arg(header).arg(pageNumber));
+        p.setFont(bold);
+        p.drawText(line, Qt::AlignLeft | Qt::AlignVCenter, projectName);
+        p.setFont(headerFont);
+        p.drawText(line, Qt::AlignHCenter | Qt::AlignVCenter, target);
+        p.drawText(line, Qt::AlignRight | Qt::AlignVCenter,
+                   tr("%1    page %2 of %3").arg(date).arg(pageNumber).arg(pages));
+        p.setPen(QPen(Qt::darkGray, 1));
+        p.drawLine(QPointF(0, 28), QPointF(m.width(), 28));
     };
     drawHeader();
-    paintProgram(p, *m_document, m, m_ladder->namesFirst(), page.height() / scale, 30, [&] {
+    paintProgram(p, *m_document, m, m_ladder->namesFirst(), pageHeight, kTop, [&] {
         printer->newPage();
         ++pageNumber;
         drawHeader();
@@ -372,6 +396,7 @@ bool MainWindow::printLadder(QPrinter *printer) {
 void MainWindow::printPreview() {
     QPrinter printer(QPrinter::HighResolution);
     printer.setPageOrientation(QPageLayout::Landscape);
+    printer.setPageMargins(QMarginsF(12, 10, 12, 10), QPageLayout::Millimeter);
     QPrintPreviewDialog dialog(&printer, this);
     connect(&dialog, &QPrintPreviewDialog::paintRequested, this,
             [this](QPrinter *pr) { printLadder(pr); });

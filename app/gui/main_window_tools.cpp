@@ -1,12 +1,15 @@
 #include "main_window.h"
 
+#include "editor/cross_reference_view.h"
 #include "editor/ladder_view.h"
+#include "editor/symbols_csv.h"
 
 #include "model/convert.h"
 #include "model/ladder_text.h"
 
 #include <QApplication>
 #include <QClipboard>
+#include <QDir>
 #include <QDockWidget>
 #include <QFileDialog>
 #include <QInputDialog>
@@ -30,44 +33,6 @@ const char *const kCellsMime = "application/x-rungstudio-cells";
 
 bool sameDevice(const model::Operand &o, const model::Address &a) {
     return o.kind == model::Operand::Kind::Device && o.address == a;
-}
-
-// CSV field with quotes where needed (RFC 4180).
-QString csvField(const QString &s) {
-    if (!s.contains(QLatin1Char(',')) && !s.contains(QLatin1Char('"')) &&
-        !s.contains(QLatin1Char('\n')))
-        return s;
-    QString q = s;
-    q.replace(QLatin1String("\""), QLatin1String("\"\""));
-    return QLatin1Char('"') + q + QLatin1Char('"');
-}
-
-QStringList csvFields(const QString &line) {
-    QStringList out;
-    QString field;
-    bool quoted = false;
-    for (qsizetype i = 0; i < line.size(); ++i) {
-        const QChar c = line[i];
-        if (quoted) {
-            if (c == QLatin1Char('"') && i + 1 < line.size() && line[i + 1] == QLatin1Char('"')) {
-                field += c;
-                ++i;
-            } else if (c == QLatin1Char('"')) {
-                quoted = false;
-            } else {
-                field += c;
-            }
-        } else if (c == QLatin1Char('"')) {
-            quoted = true;
-        } else if (c == QLatin1Char(',') || c == QLatin1Char(';')) {
-            out << field;
-            field.clear();
-        } else {
-            field += c;
-        }
-    }
-    out << field;
-    return out;
 }
 
 } // namespace
@@ -158,6 +123,34 @@ void MainWindow::pasteRungs() {
                                  : tr("Paste %n rungs", nullptr, static_cast<int>(rungs.size())));
 }
 
+void MainWindow::findDeviceDialog() {
+    bool ok = false;
+    const QString start =
+        m_ladder->deviceAtCursor().isEmpty() ? m_findText : m_ladder->deviceAtCursor();
+    const QString text = QInputDialog::getText(this, tr("Find Device"), tr("Device:"),
+                                               QLineEdit::Normal, start, &ok);
+    if (ok && !text.trimmed().isEmpty())
+        findDevice(text, false);
+}
+
+bool MainWindow::findDevice(const QString &text, bool backwards) {
+    if (text.trimmed().isEmpty()) {
+        findDeviceDialog();
+        return false;
+    }
+    auto parsed =
+        model::parseAddress(m_document->target(), text.trimmed(), m_document->modelVariant());
+    if (auto *e = std::get_if<model::AddressError>(&parsed)) {
+        statusBar()->showMessage(e->message, 5000);
+        return false;
+    }
+    m_findText = text.trimmed();
+    if (m_tabs->isVisible())
+        m_tabs->setCurrentWidget(m_ladder);
+    m_ladder->setFocus();
+    return m_ladder->findDevice(std::get<model::Address>(parsed), backwards);
+}
+
 void MainWindow::replaceDevice() {
     const model::Target &t = m_document->target();
     bool ok = false;
@@ -221,72 +214,39 @@ int MainWindow::replaceDeviceEverywhere(const QString &fromText, const QString &
 void MainWindow::buildCrossReference() {
     auto *dock = new QDockWidget(tr("Cross Reference"), this);
     dock->setObjectName(QStringLiteral("crossReferenceDock"));
-    auto *panel = new QWidget;
-    auto *layout = new QVBoxLayout(panel);
-    m_crossDevice = new QLineEdit;
-    m_crossDevice->setPlaceholderText(tr("Device, e.g. X0"));
-    m_crossTree = new QTreeWidget;
-    m_crossTree->setHeaderLabels({tr("Rung"), tr("Step"), tr("Use"), tr("Instruction")});
-    m_crossTree->setRootIsDecorated(false);
-    layout->addWidget(m_crossDevice);
-    layout->addWidget(m_crossTree, 1);
-    dock->setWidget(panel);
+    m_crossReference = new editor::CrossReferenceView(m_document);
+    m_crossDevice = m_crossReference->filter();
+    m_crossTree = m_crossReference->tree();
+    dock->setWidget(m_crossReference);
     addDockWidget(Qt::LeftDockWidgetArea, dock);
     tabifyDockWidget(findChild<QDockWidget *>(QStringLiteral("projectDock")), dock);
     findChild<QDockWidget *>(QStringLiteral("projectDock"))->raise();
-    connect(m_crossDevice, &QLineEdit::textChanged, this, &MainWindow::refreshCrossReference);
-    connect(m_crossTree, &QTreeWidget::itemActivated, this, [this](QTreeWidgetItem *item) {
-        m_ladder->setCursor({item->data(0, Qt::UserRole).toInt(), 0, 0});
+    connect(dock, &QDockWidget::visibilityChanged, m_crossReference,
+            &editor::CrossReferenceView::setOnScreen);
+    connect(m_crossReference, &editor::CrossReferenceView::rungActivated, this, [this](int rung) {
+        m_ladder->setCursor({rung, 0, 0});
         m_ladder->setFocus();
     });
-}
-
-void MainWindow::refreshCrossReference() {
-    if (!m_crossTree)
-        return;
-    m_crossTree->clear();
-    const model::Target &t = m_document->target();
-    auto parsed = model::parseAddress(t, m_crossDevice->text());
-    if (!std::holds_alternative<model::Address>(parsed))
-        return;
-    const model::Address device = std::get<model::Address>(parsed);
-    const auto &listing = m_document->listing();
-    for (std::size_t r = 0; r + 1 < listing.rungFirst.size(); ++r) {
-        for (int i = listing.rungFirst[r]; i < listing.rungFirst[r + 1]; ++i) {
-            const model::Instruction &ins = listing.list.instructions[static_cast<std::size_t>(i)];
-            bool uses = false;
-            for (const model::Operand &o : ins.operands)
-                uses = uses || sameDevice(o, device);
-            if (!uses)
-                continue;
-            const model::Op op = ins.op();
-            const bool contact =
-                op == model::Op::Load || op == model::Op::And || op == model::Op::Or;
-            auto *item = new QTreeWidgetItem(m_crossTree);
-            item->setText(0, QString::number(r + 1));
-            item->setText(1, QStringLiteral("%1").arg(ins.step, 4, 10, QLatin1Char('0')));
-            item->setText(2, contact ? tr("contact") : tr("coil / box"));
-            item->setText(3, model::printInstruction(t, ins));
-            item->setData(0, Qt::UserRole, static_cast<int>(r));
-        }
-    }
 }
 
 void MainWindow::exportSymbols() {
     const QString path = QFileDialog::getSaveFileName(this, tr("Export Symbols"), QString(),
                                                       tr("CSV files (*.csv)"));
-    if (path.isEmpty())
-        return;
-    QString text = QStringLiteral("device,name,comment\n");
-    for (const model::Symbol &s : m_document->project().symbols)
-        text += QStringLiteral("%1,%2,%3\n")
-                    .arg(csvField(model::formatAddress(m_document->target(), s.address)),
-                         csvField(s.name), csvField(s.comment));
+    QString error;
+    if (!path.isEmpty() && !exportSymbolsTo(path, &error))
+        QMessageBox::critical(this, tr("Cannot export"), error);
+}
+
+bool MainWindow::exportSymbolsTo(const QString &path, QString *error) {
     QSaveFile file(path);
-    const QByteArray bytes = text.toUtf8();
-    if (!file.open(QIODevice::WriteOnly) || file.write(bytes) != bytes.size() || !file.commit())
-        QMessageBox::critical(this, tr("Cannot export"),
-                              tr("%1: %2").arg(path, file.errorString()));
+    const QByteArray bytes =
+        editor::symbolsToCsv(m_document->target(), m_document->project().symbols).toUtf8();
+    if (!file.open(QIODevice::WriteOnly) || file.write(bytes) != bytes.size() || !file.commit()) {
+        if (error)
+            *error = tr("%1: %2").arg(QDir::toNativeSeparators(path), file.errorString());
+        return false;
+    }
+    return true;
 }
 
 bool MainWindow::importSymbols(const QString &path, QString *error) {
@@ -295,24 +255,13 @@ bool MainWindow::importSymbols(const QString &path, QString *error) {
         *error = tr("%1: %2").arg(path, file.errorString());
         return false;
     }
-    std::vector<model::Symbol> symbols;
-    int lineNumber = 0;
-    for (const QString &line : QString::fromUtf8(file.readAll()).split(QLatin1Char('\n'))) {
-        ++lineNumber;
-        const QString trimmed = line.trimmed();
-        if (trimmed.isEmpty() ||
-            (lineNumber == 1 && trimmed.startsWith(QLatin1String("device"), Qt::CaseInsensitive)))
-            continue;
-        const QStringList fields = csvFields(trimmed);
-        auto a =
-            model::parseAddress(m_document->target(), fields.value(0), m_document->modelVariant());
-        if (auto *e = std::get_if<model::AddressError>(&a)) {
-            *error = tr("%1, line %2: %3").arg(path).arg(lineNumber).arg(e->message);
-            return false;
-        }
-        symbols.push_back({std::get<model::Address>(a), fields.value(1), fields.value(2)});
+    const editor::SymbolsCsv csv = editor::symbolsFromCsv(
+        m_document->target(), m_document->modelVariant(), QString::fromUtf8(file.readAll()));
+    if (!csv.ok()) {
+        *error = tr("%1, line %2: %3").arg(path).arg(csv.errorLine).arg(csv.error);
+        return false;
     }
-    m_document->setSymbols(symbols);
+    m_document->setSymbols(csv.symbols);
     return true;
 }
 

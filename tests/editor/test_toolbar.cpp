@@ -31,6 +31,9 @@ TEST(Toolbar, EveryButtonHasADrawnIconAndItsKeyInTheTooltip) {
     window.newProject(model::Target::get(model::Family::Vigor), QStringLiteral("VB"));
     const std::pair<const char *, const char *> tools[] = {{"Normally Open Contact", "F5"},
                                                            {"Normally Closed Contact", "F6"},
+                                                           {"Parallel Contact", "Shift+F5"},
+                                                           {"Rising-Edge Contact", "Shift+F7"},
+                                                           {"Falling-Edge Contact", "Shift+F8"},
                                                            {"Coil", "F7"},
                                                            {"Instruction", "F8"},
                                                            {"Horizontal Wire", "F9"},
@@ -67,4 +70,9 @@ TEST(Toolbar, PaletteButtonsPlaceWhatTheirKeysPlace) {
     place("Normally Closed Contact", "X4");
     place("Coil", "Y2");
     EXPECT_EQ(window.document()->listingText(), QStringLiteral("LD X3\nANI X4\nOUT Y2\nEND\n"));
+    // The buttons with modifiers post them too: a parallel contact below the first one.
+    window.ladderView()->setCursor({0, 1, 0});
+    place("Parallel Contact", "M1");
+    EXPECT_EQ(window.document()->listingText(),
+              QStringLiteral("LD X3\nOR M1\nANI X4\nOUT Y2\nEND\n"));
 }

@@ -1,0 +1,151 @@
+#include "cross_reference_view.h"
+
+#include "model/address.h"
+
+#include <QHeaderView>
+#include <QLineEdit>
+#include <QTreeWidget>
+#include <QVBoxLayout>
+
+#include <map>
+#include <optional>
+
+namespace rung::editor {
+
+namespace {
+
+enum class Use { Contact, Coil, Box };
+
+struct Place {
+    int rung;
+    int step;
+    Use use;
+    QString instruction;
+};
+
+Use useOf(model::Op op) {
+    switch (op) {
+    case model::Op::Load:
+    case model::Op::And:
+    case model::Op::Or:
+        return Use::Contact;
+    case model::Op::Out:
+    case model::Op::Set:
+    case model::Op::Reset:
+    case model::Op::PulseRise:
+    case model::Op::PulseFall:
+        return Use::Coil;
+    default:
+        return Use::Box;
+    }
+}
+
+} // namespace
+
+CrossReferenceView::CrossReferenceView(Document *document, QWidget *parent)
+    : QWidget(parent)
+    , m_document(document) {
+    auto *layout = new QVBoxLayout(this);
+    m_filter = new QLineEdit(this);
+    m_filter->setObjectName(QStringLiteral("crossReferenceFilter"));
+    m_filter->setPlaceholderText(tr("Device or prefix (X0, X); empty: every device"));
+    m_filter->setClearButtonEnabled(true);
+    m_tree = new QTreeWidget(this);
+    m_tree->setObjectName(QStringLiteral("crossReferenceTree"));
+    m_tree->setHeaderLabels({tr("Device / rung"), tr("Step"), tr("Use"), tr("Instruction")});
+    m_tree->setUniformRowHeights(true);
+    m_tree->setAlternatingRowColors(true);
+    m_tree->header()->setStretchLastSection(true);
+    layout->addWidget(m_filter);
+    layout->addWidget(m_tree, 1);
+    connect(m_filter, &QLineEdit::textChanged, this, &CrossReferenceView::refresh);
+    connect(document, &Document::programChanged, this, [this] {
+        m_stale = true;
+        if (m_onScreen)
+            refresh();
+    });
+    connect(m_tree, &QTreeWidget::itemActivated, this, [this](QTreeWidgetItem *item) {
+        const QVariant rung = item->data(0, Qt::UserRole);
+        if (rung.isValid())
+            emit rungActivated(rung.toInt());
+    });
+}
+
+void CrossReferenceView::setOnScreen(bool onScreen) {
+    m_onScreen = onScreen;
+    if (onScreen && m_stale)
+        refresh();
+}
+
+void CrossReferenceView::refresh() {
+    m_stale = false;
+    m_tree->clear();
+    const model::Target &t = m_document->target();
+    const QString filter = m_filter->text().trimmed();
+    // A whole device shows only its uses; otherwise the text is a prefix of the names.
+    std::optional<model::Address> exact;
+    if (!filter.isEmpty()) {
+        auto parsed = model::parseAddress(t, filter, m_document->modelVariant());
+        if (auto *a = std::get_if<model::Address>(&parsed))
+            exact = *a;
+    }
+    std::map<model::Address, std::vector<Place>> uses;
+    int count = 0;
+    const model::ToListingResult &listing = m_document->listing();
+    for (std::size_t r = 0; r + 1 < listing.rungFirst.size() && count < kMaxUses; ++r) {
+        for (int i = listing.rungFirst[r]; i < listing.rungFirst[r + 1]; ++i) {
+            const model::Instruction &ins = listing.list.instructions[static_cast<std::size_t>(i)];
+            for (const model::Operand &o : ins.operands) {
+                if (o.kind != model::Operand::Kind::Device)
+                    continue;
+                if (exact ? !(o.address == *exact)
+                          : !model::formatAddress(t, o.address)
+                                 .startsWith(filter, Qt::CaseInsensitive))
+                    continue;
+                auto &places = uses[o.address];
+                if (places.empty() || places.back().step != ins.step) {
+                    places.push_back({static_cast<int>(r), ins.step, useOf(ins.op()),
+                                      model::printInstruction(t, ins)});
+                    ++count;
+                }
+            }
+        }
+    }
+    const QString useText[] = {tr("contact"), tr("coil"), tr("box")};
+    for (const auto &[address, places] : uses) {
+        auto *device = new QTreeWidgetItem(m_tree);
+        const model::Symbol *symbol = m_document->project().symbol(address);
+        const QString name = model::formatAddress(t, address);
+        device->setText(0, symbol && !symbol->name.isEmpty()
+                               ? QStringLiteral("%1  %2").arg(name, symbol->name)
+                               : name);
+        int counts[3] = {0, 0, 0};
+        for (const Place &p : places) {
+            ++counts[static_cast<int>(p.use)];
+            auto *item = new QTreeWidgetItem(device);
+            item->setText(0, tr("rung %1").arg(p.rung + 1));
+            item->setText(1, QStringLiteral("%1").arg(p.step, 4, 10, QLatin1Char('0')));
+            item->setText(2, useText[static_cast<int>(p.use)]);
+            item->setText(3, p.instruction);
+            item->setData(0, Qt::UserRole, p.rung);
+        }
+        QStringList summary;
+        for (int k = 0; k < 3; ++k)
+            if (counts[k] > 0)
+                summary << QStringLiteral("%1 × %2").arg(counts[k]).arg(useText[k]);
+        device->setText(2, summary.join(QStringLiteral(", ")));
+        if (symbol && !symbol->comment.isEmpty())
+            device->setText(3, symbol->comment);
+        device->setExpanded(exact.has_value() || uses.size() <= 3);
+    }
+    if (count >= kMaxUses) {
+        auto *more = new QTreeWidgetItem(m_tree);
+        more->setText(
+            0, tr("The first %1 uses; type a device or a prefix for the rest").arg(kMaxUses));
+        more->setFirstColumnSpanned(true);
+    }
+    for (int c = 0; c < 3; ++c)
+        m_tree->resizeColumnToContents(c);
+}
+
+} // namespace rung::editor

@@ -1,0 +1,56 @@
+// rungstudio [FILE] [--target T]: the arguments, and an instruction list opened with the
+// target given on the command line.
+
+#include "app/gui/command_line.h"
+#include "app/gui/main_window.h"
+
+#include <QFile>
+#include <QTemporaryDir>
+
+#include <gtest/gtest.h>
+
+using namespace rung;
+
+TEST(CommandLine, AFileAndATarget) {
+    const app::GuiArguments a =
+        app::parseGuiArguments({QStringLiteral("rungstudio"), QStringLiteral("prog.il"),
+                                QStringLiteral("--target"), QStringLiteral("CPM1")});
+    ASSERT_TRUE(a.ok()) << a.error.toStdString();
+    EXPECT_EQ(a.file, QStringLiteral("prog.il"));
+    EXPECT_EQ(a.target, QStringLiteral("cpm1"));
+    EXPECT_TRUE(a.screenshot.isEmpty());
+    const app::GuiArguments none = app::parseGuiArguments({QStringLiteral("rungstudio")});
+    EXPECT_TRUE(none.ok());
+    EXPECT_TRUE(none.file.isEmpty());
+}
+
+TEST(CommandLine, WhatCannotBeUsedSaysWhy) {
+    const app::GuiArguments unknown = app::parseGuiArguments(
+        {QStringLiteral("rungstudio"), QStringLiteral("p.il"), QStringLiteral("--target=s7")});
+    EXPECT_EQ(unknown.error, QStringLiteral("Unknown target s7: use vpc, vigor, cpm1 or pl110"));
+    EXPECT_FALSE(app::parseGuiArguments({QStringLiteral("rungstudio"), QStringLiteral("a.rung"),
+                                         QStringLiteral("b.rung")})
+                     .ok());
+    EXPECT_FALSE(
+        app::parseGuiArguments({QStringLiteral("rungstudio"), QStringLiteral("--bogus")}).ok());
+}
+
+TEST(CommandLine, AnInstructionListOpensForTheTargetGiven) {
+    QTemporaryDir dir;
+    const QString path = dir.filePath(QStringLiteral("prog.il"));
+    QFile f(path);
+    ASSERT_TRUE(f.open(QIODevice::WriteOnly));
+    f.write("LD 000.01\nOUT 010.00\nEND(01)\n");
+    f.close();
+    const app::GuiArguments a = app::parseGuiArguments(
+        {QStringLiteral("rungstudio"), path, QStringLiteral("--target"), QStringLiteral("cpm1")});
+    ASSERT_TRUE(a.ok());
+    app::MainWindow window;
+    ASSERT_TRUE(window.openFile(a.file, a.target, true));
+    EXPECT_EQ(window.document()->target().id, QStringLiteral("cpm1"));
+    EXPECT_EQ(window.document()->listingText(), QStringLiteral("LD 000.01\nOUT 010.00\nEND(01)\n"));
+    EXPECT_TRUE(window.document()->path().isEmpty()); // saving asks where: it is no project
+    // Without the target the default (Vigor) cannot read CPM1 addresses: the file stays shut.
+    app::MainWindow other;
+    EXPECT_FALSE(other.openFile(path, QString(), true));
+}

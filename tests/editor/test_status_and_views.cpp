@@ -1,0 +1,149 @@
+// The status bar (target, model, program size in steps, cursor cell or line), the problems
+// panel's title and empty state, and the ladder / list layout (tabs or side by side) that the
+// next start remembers.
+
+#include "app/gui/main_window.h"
+#include "editor/il_editor.h"
+#include "editor/ladder_view.h"
+#include "editor/problems_view.h"
+
+#include <QAction>
+#include <QDockWidget>
+#include <QLabel>
+#include <QMenuBar>
+#include <QSettings>
+#include <QSignalSpy>
+#include <QSplitter>
+#include <QStatusBar>
+#include <QTabWidget>
+#include <QTest>
+
+#include <gtest/gtest.h>
+
+using namespace rung;
+
+namespace {
+
+QString statusText(app::MainWindow &window) {
+    QStringList texts;
+    for (QLabel *label : window.statusBar()->findChildren<QLabel *>())
+        texts << label->text();
+    return texts.join(QLatin1Char('|'));
+}
+
+QAction *menuAction(app::MainWindow &window, const QString &text) {
+    for (QAction *menu : window.menuBar()->actions())
+        if (menu->menu())
+            for (QAction *a : menu->menu()->actions())
+                if (a->text().remove(QLatin1Char('&')) == text)
+                    return a;
+    return nullptr;
+}
+
+void load(app::MainWindow &window, const char *listing) {
+    std::vector<model::Diagnostic> errors;
+    ASSERT_TRUE(window.document()->setListing(QString::fromLatin1(listing), &errors));
+}
+
+} // namespace
+
+TEST(StatusBar, ShowsTargetModelStepsAndTheCursor) {
+    app::MainWindow window;
+    window.newProject(model::Target::get(model::Family::Vigor), QStringLiteral("VB"));
+    window.show();
+    ASSERT_TRUE(QTest::qWaitForWindowActive(&window));
+    load(window, "LD X0\nAND X1\nOUT Y0\nEND\n");
+    const model::ModelVariant *vb =
+        model::Target::get(model::Family::Vigor).model(QStringLiteral("VB"));
+    ASSERT_NE(vb, nullptr);
+    const int limit = vb->programSteps > 0
+                          ? vb->programSteps
+                          : model::Target::get(model::Family::Vigor).limits.programSteps;
+    EXPECT_TRUE(statusText(window).contains(QStringLiteral("Vigor VB")))
+        << statusText(window).toStdString();
+    EXPECT_TRUE(statusText(window).contains(QStringLiteral("4 / %1 steps").arg(limit)))
+        << statusText(window).toStdString();
+
+    window.ladderView()->setFocus();
+    window.ladderView()->setCursor({0, 0, 1});
+    EXPECT_TRUE(statusText(window).contains(QStringLiteral("Rung 1, row 1, column 2")))
+        << statusText(window).toStdString();
+
+    // In the list the cursor is a line and a column.
+    auto *tabs = window.findChild<QTabWidget *>();
+    ASSERT_NE(tabs, nullptr);
+    tabs->setCurrentWidget(window.ilEditor());
+    window.ilEditor()->setFocus();
+    ASSERT_TRUE(window.ilEditor()->hasFocus());
+    EXPECT_TRUE(statusText(window).startsWith(QStringLiteral("Line ")))
+        << statusText(window).toStdString();
+    // Scintilla reports the move when it updates its view, after the call.
+    QSignalSpy moved(window.ilEditor(), &QsciScintilla::cursorPositionChanged);
+    window.ilEditor()->setCursorPosition(1, 3);
+    if (moved.isEmpty()) {
+        ASSERT_TRUE(moved.wait(3000));
+    }
+    EXPECT_TRUE(statusText(window).contains(QStringLiteral("Line 2, column 4")))
+        << statusText(window).toStdString();
+
+    // Another target and model: the status bar follows.
+    window.newProject(model::Target::get(model::Family::Cpm1), QString());
+    EXPECT_TRUE(statusText(window).contains(model::Target::get(model::Family::Cpm1).displayName))
+        << statusText(window).toStdString();
+    EXPECT_TRUE(statusText(window).contains(QStringLiteral("1 / "))) // END
+        << statusText(window).toStdString();
+}
+
+TEST(ProblemsPanel, TitleCountsTheFindingsAndAnEmptyListSaysSo) {
+    app::MainWindow window;
+    window.newProject(model::Target::get(model::Family::Vigor), QStringLiteral("VB"));
+    auto *dock = window.findChild<QDockWidget *>(QStringLiteral("problemsDock"));
+    ASSERT_NE(dock, nullptr);
+    EXPECT_EQ(dock->windowTitle(), QStringLiteral("Problems"));
+    // Y0 driven twice: a duplicate-coil warning at least.
+    load(window, "LD X0\nOUT Y0\nLD X1\nOUT Y0\nEND\n");
+    const int warnings = window.problemsView()->count(model::Severity::Warning);
+    const int errors = window.problemsView()->count(model::Severity::Error);
+    ASSERT_GT(warnings + errors, 0);
+    EXPECT_NE(dock->windowTitle(), QStringLiteral("Problems"));
+    EXPECT_TRUE(dock->windowTitle().startsWith(QStringLiteral("Problems (")))
+        << dock->windowTitle().toStdString();
+    EXPECT_EQ(dock->windowTitle(), window.problemsView()->summary());
+    // Columns wide enough for their headers even when short.
+    editor::ProblemsView *problems = window.problemsView();
+    const QFontMetrics fm(problems->font());
+    EXPECT_GE(problems->columnWidth(0), fm.horizontalAdvance(QStringLiteral("Severity")));
+    EXPECT_GE(problems->columnWidth(2), fm.horizontalAdvance(QStringLiteral("rung 10, row 2")));
+}
+
+TEST(ViewLayout, SideBySideOrTabsIsTheUsersChoiceRememberedForTheNextStart) {
+    QSettings().remove(QStringLiteral("view/sideBySide"));
+    {
+        app::MainWindow window;
+        window.show();
+        // Tabs by default.
+        EXPECT_EQ(qobject_cast<QSplitter *>(window.ladderView()->parentWidget()), nullptr);
+        QAction *side = menuAction(window, QStringLiteral("Ladder and List Side by Side"));
+        ASSERT_NE(side, nullptr);
+        EXPECT_FALSE(side->isChecked());
+        side->trigger();
+        auto *split = qobject_cast<QSplitter *>(window.ladderView()->parentWidget());
+        ASSERT_NE(split, nullptr);
+        EXPECT_EQ(window.ilEditor()->parentWidget(), split);
+        EXPECT_TRUE(window.ladderView()->isVisible());
+        EXPECT_TRUE(window.ilEditor()->isVisible());
+    }
+    {
+        app::MainWindow next; // as on the next start
+        next.show();
+        EXPECT_NE(qobject_cast<QSplitter *>(next.ladderView()->parentWidget()), nullptr);
+        QAction *side = menuAction(next, QStringLiteral("Ladder and List Side by Side"));
+        ASSERT_NE(side, nullptr);
+        EXPECT_TRUE(side->isChecked());
+        side->trigger(); // back to tabs
+        EXPECT_EQ(qobject_cast<QSplitter *>(next.ladderView()->parentWidget()), nullptr);
+    }
+    app::MainWindow last;
+    EXPECT_EQ(qobject_cast<QSplitter *>(last.ladderView()->parentWidget()), nullptr);
+    QSettings().remove(QStringLiteral("view/sideBySide"));
+}

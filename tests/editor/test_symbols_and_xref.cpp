@@ -1,0 +1,169 @@
+// The symbol table as CSV (export, import, the forms spreadsheets write) and the cross
+// reference of every device: grouped by device, filtered by a device or a prefix, and a use
+// shows its rung.
+
+#include "app/gui/main_window.h"
+#include "editor/ladder_view.h"
+#include "editor/symbols_csv.h"
+#include "model/address.h"
+
+#include <QDockWidget>
+#include <QFile>
+#include <QLineEdit>
+#include <QSet>
+#include <QSignalSpy>
+#include <QTemporaryDir>
+#include <QTest>
+#include <QTreeWidget>
+#include <QUndoStack>
+
+#include <gtest/gtest.h>
+
+using namespace rung;
+
+namespace {
+
+model::Address address(const char *text) {
+    return std::get<model::Address>(
+        model::parseAddress(model::Target::get(model::Family::Vigor), QString::fromLatin1(text)));
+}
+
+QSet<QString> devicesListed(QTreeWidget *tree) {
+    QSet<QString> names;
+    for (int i = 0; i < tree->topLevelItemCount(); ++i)
+        names << tree->topLevelItem(i)->text(0).section(QLatin1Char(' '), 0, 0);
+    return names;
+}
+
+struct XrefFixture : ::testing::Test {
+    app::MainWindow window;
+    void SetUp() override {
+        window.newProject(model::Target::get(model::Family::Vigor), QStringLiteral("VB"));
+        std::vector<model::Diagnostic> errors;
+        ASSERT_TRUE(window.document()->setListing(
+            QStringLiteral("LD X0\nOUT Y0\nLD Y0\nANI X1\nOUT Y1\nLD M0\nTMR T0 K10\nEND\n"),
+            &errors));
+    }
+    void filter(const QString &text) {
+        window.crossReferenceDevice()->setText(QStringLiteral("#")); // a change either way
+        window.crossReferenceDevice()->setText(text);
+    }
+};
+
+} // namespace
+
+TEST_F(XrefFixture, AnEmptyFilterListsEveryDeviceAPrefixSome) {
+    filter(QString());
+    QTreeWidget *tree = window.crossReference();
+    EXPECT_EQ(devicesListed(tree),
+              (QSet<QString>{QStringLiteral("X0"), QStringLiteral("X1"), QStringLiteral("Y0"),
+                             QStringLiteral("Y1"), QStringLiteral("M0"), QStringLiteral("T0")}));
+    filter(QStringLiteral("x"));
+    EXPECT_EQ(devicesListed(tree), (QSet<QString>{QStringLiteral("X0"), QStringLiteral("X1")}));
+    filter(QStringLiteral("T0"));
+    ASSERT_EQ(tree->topLevelItemCount(), 1);
+    ASSERT_EQ(tree->topLevelItem(0)->childCount(), 1);
+    EXPECT_EQ(tree->topLevelItem(0)->child(0)->text(2), QStringLiteral("box"));
+    EXPECT_EQ(tree->topLevelItem(0)->child(0)->text(3), QStringLiteral("TMR T0 K10"));
+}
+
+TEST_F(XrefFixture, ADeviceShowsItsNameAndEachUseLeadsToItsRung) {
+    window.document()->setSymbols(
+        {{address("Y0"), QStringLiteral("Pump"), QStringLiteral("main")}});
+    filter(QStringLiteral("Y0"));
+    QTreeWidget *tree = window.crossReference();
+    ASSERT_EQ(tree->topLevelItemCount(), 1);
+    QTreeWidgetItem *y0 = tree->topLevelItem(0);
+    EXPECT_EQ(y0->text(0), QStringLiteral("Y0  Pump"));
+    EXPECT_EQ(y0->text(3), QStringLiteral("main"));
+    EXPECT_TRUE(y0->isExpanded());
+    ASSERT_EQ(y0->childCount(), 2);
+    EXPECT_EQ(y0->child(1)->text(1), QStringLiteral("0002")); // LD Y0 is step 2
+    emit tree->itemActivated(y0->child(1), 0);
+    EXPECT_EQ(window.ladderView()->cursor().rung, 1);
+}
+
+TEST_F(XrefFixture, ACrossReferenceOffScreenCatchesUpWhenItComesBack) {
+    window.show();
+    ASSERT_TRUE(QTest::qWaitForWindowExposed(&window));
+    auto *dock = window.findChild<QDockWidget *>(QStringLiteral("crossReferenceDock"));
+    auto *project = window.findChild<QDockWidget *>(QStringLiteral("projectDock"));
+    ASSERT_NE(dock, nullptr);
+    ASSERT_NE(project, nullptr);
+    QSignalSpy shown(dock, &QDockWidget::visibilityChanged);
+    dock->raise();
+    if (shown.isEmpty()) {
+        ASSERT_TRUE(shown.wait(3000));
+    }
+    filter(QString());
+    std::vector<model::Diagnostic> errors;
+    ASSERT_TRUE(window.document()->setListing(QStringLiteral("LD X7\nOUT Y7\nEND\n"), &errors));
+    EXPECT_EQ(devicesListed(window.crossReference()), // on screen: it follows at once
+              (QSet<QString>{QStringLiteral("X7"), QStringLiteral("Y7")}));
+
+    shown.clear();
+    project->raise(); // behind the project dock: edits leave it alone
+    if (shown.isEmpty()) {
+        ASSERT_TRUE(shown.wait(3000));
+    }
+    ASSERT_TRUE(window.document()->setListing(QStringLiteral("LD X6\nOUT Y6\nEND\n"), &errors));
+    EXPECT_EQ(devicesListed(window.crossReference()),
+              (QSet<QString>{QStringLiteral("X7"), QStringLiteral("Y7")}));
+    shown.clear();
+    dock->raise(); // back: it catches up
+    if (shown.isEmpty()) {
+        ASSERT_TRUE(shown.wait(3000));
+    }
+    EXPECT_EQ(devicesListed(window.crossReference()),
+              (QSet<QString>{QStringLiteral("X6"), QStringLiteral("Y6")}));
+}
+
+TEST(SymbolsCsv, ExportAndImportGiveTheSameTableWithCommasQuotesAndLineBreaks) {
+    const std::vector<model::Symbol> symbols = {
+        {address("X0"), QStringLiteral("Start"), QStringLiteral("green, big; left")},
+        {address("Y0"), QStringLiteral("Pump \"A\""), QStringLiteral("line one\nline two")},
+        {address("M7"), QStringLiteral("Fault"), QString()}};
+    app::MainWindow window;
+    window.newProject(model::Target::get(model::Family::Vigor), QStringLiteral("VB"));
+    window.document()->setSymbols(symbols);
+    QTemporaryDir dir;
+    const QString path = dir.filePath(QStringLiteral("symbols.csv"));
+    QString error;
+    ASSERT_TRUE(window.exportSymbolsTo(path, &error)) << error.toStdString();
+
+    app::MainWindow other;
+    other.newProject(model::Target::get(model::Family::Vigor), QStringLiteral("VB"));
+    ASSERT_TRUE(other.importSymbols(path, &error)) << error.toStdString();
+    const auto &back = other.document()->project().symbols;
+    ASSERT_EQ(back.size(), symbols.size());
+    for (std::size_t i = 0; i < symbols.size(); ++i) {
+        EXPECT_EQ(back[i].address, symbols[i].address);
+        EXPECT_EQ(back[i].name, symbols[i].name);
+        EXPECT_EQ(back[i].comment, symbols[i].comment);
+    }
+    EXPECT_EQ(other.document()->undoStack()->count(), 1); // one step
+
+    EXPECT_FALSE(window.exportSymbolsTo(QStringLiteral("/nonexistent-dir/s.csv"), &error));
+    EXPECT_TRUE(error.contains(QStringLiteral("nonexistent-dir"))) << error.toStdString();
+}
+
+TEST(SymbolsCsv, ReadsWhatSpreadsheetsWrite) {
+    const model::Target &vigor = model::Target::get(model::Family::Vigor);
+    // Semicolons, a byte-order mark, CRLF, a header in capitals, blank lines, a device again.
+    const QString text =
+        QString(QChar(0xfeff)) + QStringLiteral("Device;Name;Comment\r\nX0;Start;\"a; b\"\r\n\r\n"
+                                                "Y1;Lamp;\r\nX0;Begin;again\r\n");
+    const editor::SymbolsCsv csv = editor::symbolsFromCsv(vigor, nullptr, text);
+    ASSERT_TRUE(csv.ok()) << csv.error.toStdString();
+    ASSERT_EQ(csv.symbols.size(), 2u);
+    EXPECT_EQ(csv.symbols[0].name, QStringLiteral("Begin")); // the later row wins
+    EXPECT_EQ(csv.symbols[0].comment, QStringLiteral("again"));
+    EXPECT_EQ(csv.symbols[1].address, address("Y1"));
+    // A bad device is reported on the line where its record starts.
+    const editor::SymbolsCsv bad =
+        editor::symbolsFromCsv(vigor, nullptr, QStringLiteral("X0,A,\"two\nlines\"\nX9,B,\n"));
+    EXPECT_FALSE(bad.ok());
+    EXPECT_EQ(bad.errorLine, 3);
+    EXPECT_EQ(bad.error, QStringLiteral("X9: X is numbered in octal"));
+    EXPECT_TRUE(bad.symbols.empty());
+}
