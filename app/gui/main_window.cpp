@@ -125,6 +125,9 @@ MainWindow::~MainWindow() {
     // cleared): nothing of this window may answer them any more.
     m_ilTimer.stop();
     m_recoveryTimer.stop();
+    // ~QWidget hides the window, which moves the application's focus: the lambda on
+    // focusChanged would run on an object that is no longer a MainWindow.
+    disconnect(qApp, nullptr, this, nullptr);
     m_il->disconnect(this);
     m_ladder->disconnect(this);
     m_document->disconnect(this);
