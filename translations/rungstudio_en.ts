@@ -800,9 +800,9 @@ Ladder and instruction-list editor for VPC, Vigor, CPM1 and PL110.</source>
     <message numerus="yes">
         <location line="+1"/>
         <source>Paste %n rungs</source>
-        <translation type="unfinished">
-            <numerusform></numerusform>
-            <numerusform></numerusform>
+        <translation>
+            <numerusform>Paste %n rung</numerusform>
+            <numerusform>Paste %n rungs</numerusform>
         </translation>
     </message>
     <message>
@@ -835,9 +835,9 @@ Ladder and instruction-list editor for VPC, Vigor, CPM1 and PL110.</source>
     <message numerus="yes">
         <location line="+9"/>
         <source>%n place(s) changed</source>
-        <translation type="unfinished">
-            <numerusform></numerusform>
-            <numerusform></numerusform>
+        <translation>
+            <numerusform>%n place changed</numerusform>
+            <numerusform>%n places changed</numerusform>
         </translation>
     </message>
     <message>
@@ -979,9 +979,9 @@ Ladder and instruction-list editor for VPC, Vigor, CPM1 and PL110.</source>
     <message numerus="yes">
         <location line="+0"/>
         <source>Delete %n rungs</source>
-        <translation type="unfinished">
-            <numerusform></numerusform>
-            <numerusform></numerusform>
+        <translation>
+            <numerusform>Delete %n rung</numerusform>
+            <numerusform>Delete %n rungs</numerusform>
         </translation>
     </message>
     <message>
@@ -1439,9 +1439,9 @@ Ladder and instruction-list editor for VPC, Vigor, CPM1 and PL110.</source>
     <message numerus="yes">
         <location line="+2"/>
         <source>Stacked ORB: %n blocks are open; an OR chain needs less stack</source>
-        <translation type="unfinished">
-            <numerusform></numerusform>
-            <numerusform></numerusform>
+        <translation>
+            <numerusform>Stacked ORB: %n block is open; an OR chain needs less stack</numerusform>
+            <numerusform>Stacked ORB: %n blocks are open; an OR chain needs less stack</numerusform>
         </translation>
     </message>
     <message>
@@ -1477,9 +1477,9 @@ Ladder and instruction-list editor for VPC, Vigor, CPM1 and PL110.</source>
     <message numerus="yes">
         <location line="+15"/>
         <source>%n MPS left without MPP at the end of the rung</source>
-        <translation type="unfinished">
-            <numerusform></numerusform>
-            <numerusform></numerusform>
+        <translation>
+            <numerusform>%n MPS left without MPP at the end of the rung</numerusform>
+            <numerusform>%n MPS left without MPP at the end of the rung</numerusform>
         </translation>
     </message>
     <message>
@@ -1604,17 +1604,17 @@ Ladder and instruction-list editor for VPC, Vigor, CPM1 and PL110.</source>
     <message numerus="yes">
         <location line="-9"/>
         <source>%1 needs two blocks, but %n is open</source>
-        <translation type="unfinished">
-            <numerusform></numerusform>
-            <numerusform></numerusform>
+        <translation>
+            <numerusform>%1 needs two blocks, but %n is open</numerusform>
+            <numerusform>%1 needs two blocks, but %n are open</numerusform>
         </translation>
     </message>
     <message numerus="yes">
         <location line="+17"/>
         <source>MPS needs exactly one open block, but %n is open</source>
-        <translation type="unfinished">
-            <numerusform></numerusform>
-            <numerusform></numerusform>
+        <translation>
+            <numerusform>MPS needs exactly one open block, but %n is open</numerusform>
+            <numerusform>MPS needs exactly one open block, but %n are open</numerusform>
         </translation>
     </message>
     <message>
@@ -1654,9 +1654,9 @@ Ladder and instruction-list editor for VPC, Vigor, CPM1 and PL110.</source>
     <message numerus="yes">
         <location line="+4"/>
         <source>The rung starting on line %1 leaves %n MPS without MPP</source>
-        <translation type="unfinished">
-            <numerusform></numerusform>
-            <numerusform></numerusform>
+        <translation>
+            <numerusform>The rung starting on line %1 leaves %n MPS without MPP</numerusform>
+            <numerusform>The rung starting on line %1 leaves %n MPS without MPP</numerusform>
         </translation>
     </message>
     <message>
@@ -1736,9 +1736,9 @@ Ladder and instruction-list editor for VPC, Vigor, CPM1 and PL110.</source>
     <message numerus="yes">
         <location line="-110"/>
         <source>%1 needs %n operand(s): %2</source>
-        <translation type="unfinished">
-            <numerusform></numerusform>
-            <numerusform></numerusform>
+        <translation>
+            <numerusform>%1 needs %n operand: %2</numerusform>
+            <numerusform>%1 needs %n operands: %2</numerusform>
         </translation>
     </message>
     <message>
@@ -1749,9 +1749,9 @@ Ladder and instruction-list editor for VPC, Vigor, CPM1 and PL110.</source>
     <message numerus="yes">
         <location line="+1"/>
         <source>Unexpected &apos;%1&apos;: %2 takes %n operand(s)</source>
-        <translation type="unfinished">
-            <numerusform></numerusform>
-            <numerusform></numerusform>
+        <translation>
+            <numerusform>Unexpected &apos;%1&apos;: %2 takes %n operand</numerusform>
+            <numerusform>Unexpected &apos;%1&apos;: %2 takes %n operands</numerusform>
         </translation>
     </message>
     <message>
