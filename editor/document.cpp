@@ -4,6 +4,9 @@
 
 #include <QUndoCommand>
 
+#include <map>
+#include <set>
+
 namespace rung::editor {
 
 namespace {
@@ -236,6 +239,39 @@ void Document::refresh() {
             m_diagnostics.push_back(d);
     model::sortDiagnostics(m_diagnostics);
     emit programChanged();
+}
+
+QStringList Document::knownDevices(bool withNames) const {
+    std::set<model::Address> devices;
+    const auto add = [&devices](const std::vector<model::Operand> &operands) {
+        for (const model::Operand &o : operands)
+            if (o.kind == model::Operand::Kind::Device)
+                devices.insert(o.address);
+    };
+    for (const model::Rung &r : m_project.program.rungs) {
+        for (const model::Cell &c : r.cells)
+            add(c.contact.operands);
+        for (const auto &out : r.outputs)
+            if (out)
+                add(out->operands);
+        if (devices.size() > 2000)
+            break; // enough to choose from in a huge program
+    }
+    std::map<model::Address, QString> names;
+    for (const model::Symbol &sym : m_project.symbols) {
+        devices.insert(sym.address);
+        if (withNames && !sym.name.isEmpty())
+            names.emplace(sym.address, sym.name);
+    }
+    QStringList words;
+    words.reserve(static_cast<qsizetype>(devices.size()));
+    for (const model::Address &a : devices) {
+        QString word = model::formatAddress(target(), a);
+        if (const auto name = names.find(a); name != names.end())
+            word += QLatin1String("  ") + name->second;
+        words << word;
+    }
+    return words;
 }
 
 } // namespace rung::editor

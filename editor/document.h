@@ -42,6 +42,11 @@ public:
 
     const std::vector<model::Diagnostic> &diagnostics() const { return m_diagnostics; }
 
+    // Devices worth offering when an operand is typed: those the program uses and those the
+    // symbol table names, in address order, as the target writes them; withNames adds the
+    // symbol's name after two spaces ("X0  Start").
+    QStringList knownDevices(bool withNames = false) const;
+
     // Edits, each one undo step with its label.
     void replaceRungs(int first, int count, const std::vector<model::Rung> &rungs,
                       const QString &label);

@@ -5,9 +5,12 @@
 #include <Qsci/qsciapis.h>
 
 #include <algorithm>
+#include <cctype>
+#include <optional>
 
 #include <QCoreApplication>
 #include <QFontDatabase>
+#include <QRegularExpression>
 
 namespace rung::editor {
 
@@ -15,6 +18,32 @@ namespace {
 
 constexpr int kErrorMarker = 1;
 constexpr int kWarningMarker = 2;
+constexpr int kDeviceList = 1;
+
+bool isNumber(const QString &word) {
+    return !word.isEmpty() &&
+           std::all_of(word.begin(), word.end(), [](QChar c) { return c.isDigit(); });
+}
+
+// The line up to the caret split into the finished words (a leading step number dropped)
+// and the word being typed; nullopt inside a comment.
+struct Typing {
+    QStringList before;
+    QString word;
+};
+std::optional<Typing> typingAt(const QString &lineToCaret) {
+    if (lineToCaret.contains(QLatin1Char(';')) || lineToCaret.contains(QLatin1String("//")))
+        return std::nullopt;
+    Typing t;
+    const qsizetype lastSpace = lineToCaret.lastIndexOf(QRegularExpression(QStringLiteral("\\s")));
+    t.word = lineToCaret.mid(lastSpace + 1);
+    t.before =
+        lineToCaret.left(std::max<qsizetype>(lastSpace, 0)).simplified().split(QLatin1Char(' '));
+    t.before.removeAll(QString());
+    if (!t.before.isEmpty() && isNumber(t.before.front()))
+        t.before.removeFirst(); // a step number, as the VPC console shows it
+    return t;
+}
 
 } // namespace
 
@@ -192,8 +221,11 @@ IlEditor::IlEditor(const model::Target &target, QWidget *parent)
     setAnnotationDisplay(QsciScintilla::AnnotationBoxed);
     setCaretLineVisible(true);
     setCaretLineBackgroundColor(QColor(0xf1, 0xf5, 0xfb));
+    // Completion opens from showCompletions(): mnemonics from the target's table at the start
+    // of a line, the project's devices after a mnemonic (Scintilla alone would offer
+    // mnemonics for operands too).
     setAutoCompletionSource(QsciScintilla::AcsAPIs);
-    setAutoCompletionThreshold(1);
+    setAutoCompletionThreshold(-1);
     setAutoCompletionCaseSensitivity(false);
     setCallTipsStyle(QsciScintilla::CallTipsNoContext);
     setAccessibleName(tr("Instruction list"));
@@ -207,7 +239,63 @@ IlEditor::IlEditor(const model::Target &target, QWidget *parent)
     connect(this, &QsciScintillaBase::SCN_CHARADDED, this, [this](int ch) {
         if (ch == ' ')
             showOperandTip();
+        else if (ch < 128 && (std::isalnum(ch) || ch == '.' || ch == '_'))
+            showCompletions();
     });
+    connect(this, &QsciScintilla::userListActivated, this, &IlEditor::insertDevice);
+}
+
+void IlEditor::showCompletions() {
+    int line = 0;
+    int index = 0;
+    getCursorPosition(&line, &index);
+    const auto typing = typingAt(text(line).left(index));
+    if (!typing || typing->word.isEmpty() || isNumber(typing->word)) {
+        if (isListActive())
+            cancelList();
+        return;
+    }
+    if (typing->before.isEmpty()) {
+        autoCompleteFromAPIs();
+        return;
+    }
+    QStringList items;
+    // The second word of a two-word mnemonic ("LD NOT") is typed where an operand would be.
+    for (const model::InstructionSpec &s : m_target->instructions) {
+        if (s.mnemonic.count(QLatin1Char(' ')) == 1 &&
+            s.mnemonic.section(QLatin1Char(' '), 0, 0) == typing->before.join(QLatin1Char(' ')) &&
+            s.mnemonic.section(QLatin1Char(' '), 1).startsWith(typing->word, Qt::CaseInsensitive))
+            items << s.mnemonic.section(QLatin1Char(' '), 1);
+    }
+    if (m_devices) {
+        for (const QString &item : m_devices())
+            if (item.startsWith(typing->word, Qt::CaseInsensitive))
+                items << item;
+    }
+    // An exact match alone needs no list: the operand is complete (a name still shows).
+    if (items.isEmpty() ||
+        (items.size() == 1 && items.front().compare(typing->word, Qt::CaseInsensitive) == 0)) {
+        if (isListActive())
+            cancelList();
+        return;
+    }
+    if (isListActive())
+        cancelList();
+    showUserList(kDeviceList, items);
+}
+
+void IlEditor::insertDevice(int id, const QString &item) {
+    if (id != kDeviceList)
+        return;
+    int line = 0;
+    int index = 0;
+    getCursorPosition(&line, &index);
+    const auto typing = typingAt(text(line).left(index));
+    if (!typing)
+        return;
+    const int start = index - static_cast<int>(typing->word.size());
+    setSelection(line, start, line, index);
+    replaceSelectedText(item.section(QLatin1Char(' '), 0, 0));
 }
 
 void IlEditor::showOperandTip() {
@@ -216,14 +304,10 @@ void IlEditor::showOperandTip() {
     getCursorPosition(&line, &index);
     // The words before the caret: an optional step number, then the mnemonic (maybe two
     // words, "LD NOT"); the tip shows only while no operand has been typed yet.
-    QStringList words =
-        text(line).left(index).section(QLatin1Char(';'), 0, 0).simplified().split(QLatin1Char(' '));
-    words.removeAll(QString());
-    const auto isNumber = [](const QString &w) {
-        return std::all_of(w.begin(), w.end(), [](QChar c) { return c.isDigit(); });
-    };
-    if (words.size() > 1 && isNumber(words.front()))
-        words.removeFirst(); // a step number, as the VPC console shows it
+    const auto typing = typingAt(text(line).left(index));
+    if (!typing || !typing->word.isEmpty())
+        return;
+    const QStringList &words = typing->before;
     const model::InstructionSpec *s = words.isEmpty() ? nullptr
                                       : words.size() == 2
                                           ? m_target->findInstruction(words.join(QLatin1Char(' ')))

@@ -10,6 +10,8 @@
 #include <Qsci/qscilexercustom.h>
 #include <Qsci/qsciscintilla.h>
 
+#include <functional>
+
 namespace rung::editor {
 
 class IlLexer : public QsciLexerCustom {
@@ -49,16 +51,23 @@ public:
     // The operand form of the mnemonic before the caret, as a call tip ("TMR T0..T255 ...").
     void showOperandTip();
     bool operandTipShown();
+    // Where the devices offered while an operand is typed come from: the project's devices,
+    // each maybe followed by its symbol name ("X0  Start"); only the device is inserted.
+    void setDeviceSource(std::function<QStringList()> source) { m_devices = std::move(source); }
+    // Opens the list that fits the caret: mnemonics at the start of a line, devices after one.
+    void showCompletions();
 
 signals:
     void listingEdited();
 
 private:
     void updateCallTip();
+    void insertDevice(int id, const QString &item);
 
     const model::Target *m_target;
     IlLexer *m_lexer = nullptr;
     bool m_settingText = false;
+    std::function<QStringList()> m_devices;
 };
 
 } // namespace rung::editor

@@ -133,24 +133,8 @@ void LadderView::updateCompletions(const QString &text) {
             words << s.mnemonic;
     } else {
         const QString mnemonic = text.left(space);
-        std::set<model::Address> devices;
-        for (const model::Rung &r : m_document->ladder().rungs) {
-            for (const model::Cell &c : r.cells)
-                for (const model::Operand &o : c.contact.operands)
-                    if (o.kind == model::Operand::Kind::Device)
-                        devices.insert(o.address);
-            for (const auto &out : r.outputs)
-                if (out)
-                    for (const model::Operand &o : out->operands)
-                        if (o.kind == model::Operand::Kind::Device)
-                            devices.insert(o.address);
-            if (devices.size() > 2000)
-                break; // enough to choose from in a huge program
-        }
-        for (const model::Symbol &sym : m_document->project().symbols)
-            devices.insert(sym.address);
-        for (const model::Address &a : devices)
-            words << mnemonic + QLatin1Char(' ') + model::formatAddress(target, a);
+        for (const QString &device : m_document->knownDevices())
+            words << mnemonic + QLatin1Char(' ') + device;
     }
     words.removeDuplicates();
     if (words != m_completions->stringList())

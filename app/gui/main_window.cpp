@@ -38,6 +38,7 @@ MainWindow::MainWindow(QWidget *parent)
     m_ladder = new editor::LadderView(m_document);
     m_ladder->setObjectName(QStringLiteral("ladderView"));
     m_il = new editor::IlEditor(m_document->target());
+    m_il->setDeviceSource([this] { return m_document->knownDevices(true); });
     m_il->setObjectName(QStringLiteral("ilEditor"));
     m_problems = new editor::ProblemsView;
     m_problems->setObjectName(QStringLiteral("problemsView"));
