@@ -11,6 +11,7 @@
 
 #include <algorithm>
 #include <cmath>
+#include <map>
 #include <set>
 
 namespace rung::editor {
@@ -226,9 +227,17 @@ void LadderView::paintEvent(QPaintEvent *) {
     const double top = verticalScrollBar()->value();
     const double bottom = top + viewport()->height();
     const auto &listing = m_document->listing();
-    std::vector<RungDecorations> decorations;
     // Only the visible rungs are painted: a 10,000-rung program scrolls as fast as a small one.
-    for (int i = std::max(0, rungAt(top)); i < static_cast<int>(rungs.size()); ++i) {
+    // Their findings are gathered in one pass over the diagnostics.
+    const int firstVisible = std::max(0, rungAt(top));
+    std::multimap<int, const model::Diagnostic *> findings;
+    for (const model::Diagnostic &diag : m_document->diagnostics()) {
+        const int rung = diag.location.rung;
+        if (rung >= firstVisible && rung < static_cast<int>(rungs.size()) &&
+            m_top[static_cast<std::size_t>(rung)] <= bottom)
+            findings.emplace(rung, &diag);
+    }
+    for (int i = firstVisible; i < static_cast<int>(rungs.size()); ++i) {
         const double y = m_top[static_cast<std::size_t>(i)];
         if (y > bottom)
             break;
@@ -251,9 +260,8 @@ void LadderView::paintEvent(QPaintEvent *) {
                 first < listing.rungFirst[static_cast<std::size_t>(i) + 1])
                 d.firstStep = listing.list.instructions[static_cast<std::size_t>(first)].step;
         }
-        for (const model::Diagnostic &diag : m_document->diagnostics()) {
-            if (diag.location.rung != i)
-                continue;
+        for (auto [at, end] = findings.equal_range(i); at != end; ++at) {
+            const model::Diagnostic &diag = *at->second;
             if (diag.severity == model::Severity::Error)
                 d.hasError = true;
             else if (diag.severity == model::Severity::Warning)

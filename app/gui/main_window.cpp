@@ -362,8 +362,14 @@ void MainWindow::buildActions() {
         const QString c = QString::fromLatin1(code);
         connect(a, &QAction::triggered, this, [this, c] {
             QSettings().setValue(QStringLiteral("ui/language"), c);
-            QMessageBox::information(this, tr("Language"),
-                                     tr("The new language applies when Rung Studio starts again."));
+            // Window-modal, not a nested event loop: the work in the window goes on.
+            auto *box =
+                new QMessageBox(QMessageBox::Information, tr("Language"),
+                                tr("The new language applies when Rung Studio starts again."),
+                                QMessageBox::Ok, this);
+            box->setObjectName(QStringLiteral("languageNotice"));
+            box->setAttribute(Qt::WA_DeleteOnClose);
+            box->open();
         });
     }
     QMenu *help = menuBar()->addMenu(tr("&Help"));

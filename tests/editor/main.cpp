@@ -1,6 +1,8 @@
 // One QApplication for every GUI test, on the offscreen platform (tests/CMakeLists.txt).
 #include <QApplication>
+#include <QSettings>
 #include <QStandardPaths>
+#include <QTemporaryDir>
 
 #include <gtest/gtest.h>
 
@@ -9,6 +11,11 @@ int main(int argc, char **argv) {
     if (qEnvironmentVariableIsEmpty("QT_QPA_PLATFORM"))
         qputenv("QT_QPA_PLATFORM", "offscreen");
     QStandardPaths::setTestModeEnabled(true); // settings and recovery files out of the user's way
+    // ctest runs the tests in parallel processes: each keeps its settings to itself, so a test
+    // that changes the layout or the language cannot disturb another.
+    QTemporaryDir settingsDir;
+    QSettings::setPath(QSettings::NativeFormat, QSettings::UserScope, settingsDir.path());
+    QSettings::setPath(QSettings::IniFormat, QSettings::UserScope, settingsDir.path());
     QApplication app(argc, argv);
     QApplication::setOrganizationName(QStringLiteral("RungStudioTests"));
     QApplication::setApplicationName(QStringLiteral("Rung Studio Tests"));
