@@ -474,6 +474,10 @@ void LadderView::commitEditor() {
 }
 
 void LadderView::keyPressEvent(QKeyEvent *event) {
+    if (event->key() == Qt::Key_Escape && !m_tool.isEmpty()) {
+        armTool({});
+        return;
+    }
     const LadderMetrics m = metrics();
     const auto mods = event->modifiers();
     // Shift with Up/Down/PgUp/PgDn selects whole rungs from where it started (as in GX and

@@ -11,6 +11,7 @@
 #include "ladder_painter.h"
 
 #include <QAbstractScrollArea>
+#include <QKeySequence>
 #include <QPointer>
 
 class QLabel;
@@ -97,6 +98,12 @@ public:
     // The tooltip of an element: its devices with their symbol names and comments.
     QString elementHelp(const CellCursor &cell) const;
 
+    // A palette tool picked with the mouse: each click on a cell then does there what the
+    // tool's function key does at the cursor (F5 contact, Shift+F9 link...), until Esc, a
+    // right click or armTool({}) puts it away (ladder_view_mouse.cpp).
+    void armTool(const QKeySequence &key);
+    QKeySequence armedTool() const { return m_tool; }
+
     // The rung geometry, for navigation and tests.
     QRect cellRectOnScreen(const CellCursor &cell) const;
 
@@ -104,6 +111,7 @@ signals:
     void cursorMoved(const rung::editor::CellCursor &cursor);
     void message(const QString &text);
     void fitWidthChanged(bool on);
+    void toolArmed(const QKeySequence &key); // empty: the select tool
 
 protected:
     void paintEvent(QPaintEvent *event) override;
@@ -120,7 +128,8 @@ protected:
 private:
     void relayout();
     void placeNotice();
-    bool functionKey(QKeyEvent *event); // F5..F10 with their modifiers; false: not one
+    bool functionKey(QKeyEvent *event);     // F5..F10 with their modifiers; false: not one
+    bool applyTool(const CellCursor &cell); // the armed tool's key at a clicked cell
     LadderMetrics metricsAt(double zoom) const;
     // The cell under a viewport position; rung -1 where there is none.
     CellCursor cellAt(QPointF position) const;
@@ -145,6 +154,7 @@ private:
     bool m_namesFirst = false;
     QStringListModel *m_completions = nullptr;
     CellCursor m_dragFrom{-1, 0, 0}; // where the left button went down
+    QKeySequence m_tool;             // the armed palette tool, empty: select
     int m_anchorRung = -1;           // where a rung selection started; -1: none
     int m_anchorColumn = -1;         // where a cell selection in the cursor's row started
     std::vector<double> m_top;       // y of each rung at zoom 1, plus the total height at the end

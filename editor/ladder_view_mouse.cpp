@@ -1,6 +1,6 @@
 // The ladder view's mouse: click selects a cell, double-click edits it, a drag along a row
 // draws wires and a drag down a column draws vertical links (as in WPLSoft and GX), Ctrl+wheel
-// zooms.
+// zooms. With a palette tool armed a click places that tool's element (as in CX-Programmer).
 
 #include "ladder_view.h"
 
@@ -8,6 +8,7 @@
 
 #include "model/address.h"
 
+#include <QKeyEvent>
 #include <QLineEdit>
 #include <QMouseEvent>
 #include <QScrollBar>
@@ -39,12 +40,37 @@ CellCursor LadderView::cellAt(QPointF position) const {
     return {rung, row, std::min(block * shown + inBlock, m.gridColumns)};
 }
 
+void LadderView::armTool(const QKeySequence &key) {
+    if (key == m_tool)
+        return;
+    m_tool = key;
+    viewport()->setCursor(m_tool.isEmpty() ? Qt::ArrowCursor : Qt::CrossCursor);
+    emit toolArmed(m_tool);
+}
+
+bool LadderView::applyTool(const CellCursor &cell) {
+    const QKeyCombination combination = m_tool[0];
+    QKeyEvent key(QEvent::KeyPress, combination.key(), combination.keyboardModifiers());
+    setCursor(cell);
+    return functionKey(&key);
+}
+
 void LadderView::mousePressEvent(QMouseEvent *event) {
     setFocus();
+    if (!m_tool.isEmpty() && event->button() == Qt::RightButton) {
+        armTool({}); // a right click puts the tool away, as in drawing programs
+        return;
+    }
     const CellCursor cell = cellAt(event->position());
     if (cell.rung < 0)
         return;
     m_editor->hide();
+    if (!m_tool.isEmpty() && event->button() == Qt::LeftButton) {
+        clearSelection();
+        m_dragFrom = {-1, 0, 0};
+        applyTool(cell);
+        return;
+    }
     // Shift+click extends a rung selection; a plain click drops it.
     if (event->modifiers() & Qt::ShiftModifier) {
         if (m_anchorRung < 0)
@@ -111,6 +137,8 @@ void LadderView::drawDrag(const CellCursor &from, const CellCursor &to) {
 }
 
 void LadderView::mouseDoubleClickEvent(QMouseEvent *event) {
+    if (!m_tool.isEmpty())
+        return; // the first click placed the tool's element; its editor stays as it is
     mousePressEvent(event);
     m_dragFrom = {-1, 0, 0};
     openEditor(QString());

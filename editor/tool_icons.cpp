@@ -160,6 +160,21 @@ void draw(QPainter &p, ToolIcon icon) {
         p.restore();
         break;
     }
+    case ToolIcon::Pointer: {
+        QPainterPath arrow;
+        arrow.moveTo(9, 4);
+        arrow.lineTo(9, 25);
+        arrow.lineTo(14, 20);
+        arrow.lineTo(18, 29);
+        arrow.lineTo(21.5, 27.5);
+        arrow.lineTo(17.5, 18.5);
+        arrow.lineTo(24, 18.5);
+        arrow.closeSubpath();
+        p.setPen(QPen(kInk, 1.8, Qt::SolidLine, Qt::RoundCap, Qt::RoundJoin));
+        p.setBrush(kPaper);
+        p.drawPath(arrow);
+        break;
+    }
     }
 }
 

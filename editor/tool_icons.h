@@ -22,6 +22,7 @@ enum class ToolIcon {
     SaveFile,
     Undo,
     Redo,
+    Pointer, // the select tool: the palette's tools put away
 };
 
 QIcon toolIcon(ToolIcon icon);

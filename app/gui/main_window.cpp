@@ -275,12 +275,43 @@ void MainWindow::buildActions() {
         {tr("Vertical Link"), editor::ToolIcon::VerticalLink, QKeySequence(Qt::SHIFT | Qt::Key_F9),
          [this] { m_ladder->toggleLink(); }},
     };
+    // The menu acts at the cursor, as the keys do. The toolbar's palette is a set of tools: pick
+    // one, then each click on a cell places its element there, until Esc, a right click or the
+    // select tool (CX-Programmer and drawing programs work this way).
+    auto *palette = new QActionGroup(this);
+    QAction *pointer = bar->addAction(editor::toolIcon(editor::ToolIcon::Pointer), tr("Select"));
+    pointer->setToolTip(tr("Select (Esc)"));
+    pointer->setCheckable(true);
+    pointer->setChecked(true);
+    palette->addAction(pointer);
+    connect(pointer, &QAction::triggered, this, [this] { m_ladder->armTool({}); });
     for (const Tool &t : tools) {
         QAction *a = edit->addAction(editor::toolIcon(t.icon), t.text, this, t.run);
         a->setToolTip(
             QStringLiteral("%1 (%2)").arg(t.text, t.key.toString(QKeySequence::NativeText)));
-        bar->addAction(a);
+        QAction *tool = bar->addAction(editor::toolIcon(t.icon), t.text);
+        tool->setToolTip(tr("%1 (%2): click the cells to place it")
+                             .arg(t.text, t.key.toString(QKeySequence::NativeText)));
+        tool->setCheckable(true);
+        tool->setData(t.key);
+        palette->addAction(tool);
+        connect(tool, &QAction::triggered, this, [this, key = t.key, text = t.text] {
+            m_ladder->armTool(key);
+            m_ladder->setFocus();
+            statusBar()->showMessage(
+                tr("%1: click a cell to place it; Esc or a right click ends").arg(text));
+        });
     }
+    connect(m_ladder, &editor::LadderView::toolArmed, this,
+            [palette, pointer](const QKeySequence &key) {
+                if (key.isEmpty()) {
+                    pointer->setChecked(true);
+                    return;
+                }
+                for (QAction *a : palette->actions())
+                    if (a->data().value<QKeySequence>() == key)
+                        a->setChecked(true);
+            });
     edit->addSeparator();
     // Ctrl+X/C/V act on rungs in the ladder; the listing keeps its own text clipboard keys.
     for (QAction *a : {edit->addAction(tr("Cu&t Rung"), this, [this] { copyRung(true); }),

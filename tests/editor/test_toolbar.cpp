@@ -1,5 +1,6 @@
 // The palette on the main toolbar: drawn icons (no icon theme on a plain desktop), the
-// function key in every tooltip, and a click does what the key does.
+// function key in every tooltip; a picked tool places its element where the cells are clicked,
+// the Edit menu acts at the cursor as the keys do.
 
 #include "app/gui/main_window.h"
 #include "editor/ladder_view.h"
@@ -8,6 +9,7 @@
 #include <QCoreApplication>
 #include <QLineEdit>
 #include <QTest>
+#include <QMenuBar>
 #include <QToolBar>
 
 #include <gtest/gtest.h>
@@ -50,19 +52,79 @@ TEST(Toolbar, EveryButtonHasADrawnIconAndItsKeyInTheTooltip) {
     }
 }
 
-TEST(Toolbar, PaletteButtonsPlaceWhatTheirKeysPlace) {
+TEST(Toolbar, APickedToolPlacesItsElementInEveryCellClickedUntilEsc) {
     app::MainWindow window;
     window.newProject(model::Target::get(model::Family::Vigor), QStringLiteral("VB"));
     window.show();
     ASSERT_TRUE(QTest::qWaitForWindowExposed(&window));
-    // The buttons post their function key to the ladder, as if the user had pressed it.
-    auto place = [&](const char *button, const char *operand) {
+    editor::LadderView *view = window.ladderView();
+    QAction *select = toolbarAction(window, QStringLiteral("Select"));
+    ASSERT_NE(select, nullptr);
+    EXPECT_TRUE(select->isChecked());
+    // Pick a tool, click a cell, type the operand: the element is there.
+    auto pick = [&](const char *button) {
         QAction *a = toolbarAction(window, QString::fromLatin1(button));
         ASSERT_NE(a, nullptr) << button;
         a->trigger();
+        EXPECT_TRUE(a->isChecked()) << button;
+        EXPECT_FALSE(select->isChecked());
+        EXPECT_FALSE(view->armedTool().isEmpty());
+    };
+    auto click = [&](int row, int column, const char *operand) {
+        const QRect cell = view->cellRectOnScreen({0, row, column});
+        ASSERT_TRUE(cell.isValid());
+        QTest::mouseClick(view->viewport(), Qt::LeftButton, Qt::NoModifier, cell.center());
+        QLineEdit *edit = view->inlineEditor();
+        ASSERT_TRUE(edit->isVisible()) << operand;
+        QTest::keyClicks(edit, QString::fromLatin1(operand));
+        QTest::keyClick(edit, Qt::Key_Return);
+    };
+    pick("Normally Open Contact");
+    click(0, 0, "X3");
+    click(0, 1, "X5"); // the tool stays picked: a second contact in the next cell
+    pick("Coil");
+    click(0, 2, "Y2"); // any cell of the row: a coil goes to the output column
+    EXPECT_EQ(window.document()->listingText(), QStringLiteral("LD X3\nAND X5\nOUT Y2\nEND\n"));
+    // A parallel contact where the click is, on the row below.
+    pick("Parallel Contact");
+    click(1, 0, "M1");
+    EXPECT_EQ(window.document()->listingText(),
+              QStringLiteral("LD X3\nOR M1\nAND X5\nOUT Y2\nEND\n"));
+
+    // Esc puts the tool away: a click only selects again.
+    QTest::keyClick(view, Qt::Key_Escape);
+    EXPECT_TRUE(view->armedTool().isEmpty());
+    EXPECT_TRUE(select->isChecked());
+    const QRect cell = view->cellRectOnScreen({0, 0, 1});
+    QTest::mouseClick(view->viewport(), Qt::LeftButton, Qt::NoModifier, cell.center());
+    EXPECT_FALSE(view->inlineEditor()->isVisible());
+    EXPECT_EQ(view->cursor().column, 1);
+
+    // So does a right click.
+    pick("Normally Closed Contact");
+    QTest::mouseClick(view->viewport(), Qt::RightButton, Qt::NoModifier, cell.center());
+    EXPECT_TRUE(view->armedTool().isEmpty());
+    EXPECT_TRUE(select->isChecked());
+}
+
+TEST(Toolbar, TheEditMenuActsAtTheCursorAsTheKeysDo) {
+    app::MainWindow window;
+    window.newProject(model::Target::get(model::Family::Vigor), QStringLiteral("VB"));
+    window.show();
+    ASSERT_TRUE(QTest::qWaitForWindowExposed(&window));
+    // The menu's entries post their function key to the ladder, as if the user pressed it.
+    auto place = [&](const char *entry, const char *operand) {
+        QAction *a = nullptr;
+        for (QAction *m : window.menuBar()->actions())
+            if (m->menu() && m->text() == QStringLiteral("&Edit"))
+                for (QAction *e : m->menu()->actions())
+                    if (e->text() == QString::fromLatin1(entry))
+                        a = e;
+        ASSERT_NE(a, nullptr) << entry;
+        a->trigger();
         QCoreApplication::sendPostedEvents();
         QLineEdit *edit = window.ladderView()->inlineEditor();
-        ASSERT_TRUE(edit->isVisible()) << button;
+        ASSERT_TRUE(edit->isVisible()) << entry;
         QTest::keyClicks(edit, QString::fromLatin1(operand));
         QTest::keyClick(edit, Qt::Key_Return);
     };
@@ -70,7 +132,6 @@ TEST(Toolbar, PaletteButtonsPlaceWhatTheirKeysPlace) {
     place("Normally Closed Contact", "X4");
     place("Coil", "Y2");
     EXPECT_EQ(window.document()->listingText(), QStringLiteral("LD X3\nANI X4\nOUT Y2\nEND\n"));
-    // The buttons with modifiers post them too: a parallel contact below the first one.
     window.ladderView()->setCursor({0, 1, 0});
     place("Parallel Contact", "M1");
     EXPECT_EQ(window.document()->listingText(),
