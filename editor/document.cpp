@@ -189,9 +189,19 @@ bool Document::setListing(const QString &text, std::vector<model::Diagnostic> *e
         for (const model::Diagnostic &d : ladder.problems)
             problems.push_back(d);
     }
+    const bool blocked = model::hasErrors(problems);
+    if (!blocked) {
+        // The text stays as typed until the ladder is edited: its fuzzy forms are worth a
+        // warning with the canonical rewrite as a fix, and never stop the ladder following.
+        model::CheckOptions form;
+        form.model = modelVariant();
+        form.formOnly = true;
+        for (model::Diagnostic &d : model::checkList(parsed.list, form))
+            problems.push_back(std::move(d));
+    }
     if (errors)
         *errors = problems;
-    if (model::hasErrors(problems))
+    if (blocked)
         return false;
     if (ladder.ladder.rungs == m_project.program.rungs)
         return true;

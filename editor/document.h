@@ -56,7 +56,8 @@ public:
     void setSymbols(const std::vector<model::Symbol> &symbols);
     void setWatchLists(const std::vector<model::WatchList> &lists, const QString &label);
     // Rebuilds the ladder from listing text; false (nothing changed) when the text has errors,
-    // which land in *errors.
+    // which land in *errors. On success *errors holds the fuzzy forms of the text as typed
+    // (FZ*, with the canonical rewrite as a fix).
     bool setListing(const QString &text, std::vector<model::Diagnostic> *errors);
 
     // Used by the undo commands only.

@@ -14,6 +14,9 @@ namespace rung::model {
 
 struct CheckOptions {
     const ModelVariant *model = nullptr; // nullptr: the family's default model
+    // Only the fuzzy-syntax findings (FZ*) on the form of the text: for an editor that keeps
+    // the user's listing as typed and has the program's other findings from the ladder.
+    bool formOnly = false;
 };
 
 // Checks on a parsed listing (fuzzy forms, END, nesting, stack, operands, duplicates, length).

@@ -39,12 +39,19 @@ public:
     ListChecker(const InstructionList &list, const CheckOptions &options)
         : m_list(list)
         , m_t(*list.target)
-        , m_model(options.model ? options.model : &list.target->defaultModel()) {}
+        , m_model(options.model ? options.model : &list.target->defaultModel())
+        , m_formOnly(options.formOnly) {}
 
     std::vector<Finding> run() {
         m_ladder = listToLadder(m_list);
         spans();
         blocksAndStack();
+        if (m_formOnly) {
+            std::erase_if(m_found, [](const Finding &f) {
+                return !f.diagnostic.code.startsWith(QLatin1String("FZ"));
+            });
+            return std::move(m_found);
+        }
         endAndNesting();
         operands();
         duplicates();
@@ -493,6 +500,7 @@ private:
     const InstructionList &m_list;
     const Target &m_t;
     const ModelVariant *m_model;
+    bool m_formOnly = false;
     std::vector<std::pair<int, int>> m_spans;
     ToLadderResult m_ladder;
     ToListingResult m_back;

@@ -533,7 +533,7 @@ void MainWindow::applyListing() {
     std::vector<model::Diagnostic> errors;
     m_editingListing = true;
     const bool ok = m_document->setListing(m_il->text(), &errors);
-    m_listingErrors = ok ? std::vector<model::Diagnostic>{} : errors;
+    m_listingErrors = errors; // when ok: the fuzzy forms of the text as typed
     if (ok || errors.empty()) {
         m_ladder->setNotice(QString());
     } else {
@@ -599,21 +599,24 @@ void MainWindow::applyFix(const model::Diagnostic &d) {
                                  d.fix->rungs, d.fix->label);
         return;
     }
-    // A listing fix: replace its lines and rebuild the ladder, one undo step.
-    QStringList lines = m_il->text().split(QLatin1Char('\n'));
+    // A listing fix rewrites the lines of the text as typed, the rest of it untouched. The
+    // program is the same (a fuzzy form and its canonical rewrite draw one ladder), so it is
+    // one step of the list's own undo (Ctrl+Z there), then the ladder follows as after typing.
     const int first = d.fix->firstLine - 1;
     const int last = d.fix->lastLine - 1;
-    if (first < 0 || last >= lines.size() || first > last)
+    if (first < 0 || last >= m_il->lines() || first > last)
         return;
-    QStringList replacement = d.fix->listing.split(QLatin1Char('\n'));
-    if (!replacement.isEmpty() && replacement.back().isEmpty())
-        replacement.removeLast();
-    lines.erase(lines.begin() + first, lines.begin() + last + 1);
-    for (qsizetype i = 0; i < replacement.size(); ++i)
-        lines.insert(first + i, replacement[i]);
-    std::vector<model::Diagnostic> errors;
-    if (m_document->setListing(lines.join(QLatin1Char('\n')), &errors))
-        refreshFromDocument();
+    QString replacement = d.fix->listing;
+    if (!replacement.endsWith(QLatin1Char('\n')))
+        replacement += QLatin1Char('\n');
+    m_il->beginUndoAction();
+    if (last + 1 < m_il->lines())
+        m_il->setSelection(first, 0, last + 1, 0);
+    else
+        m_il->setSelection(first, 0, last, m_il->text(last).size());
+    m_il->replaceSelectedText(last + 1 < m_il->lines() ? replacement : replacement.chopped(1));
+    m_il->endUndoAction();
+    applyListing();
 }
 
 void MainWindow::closeEvent(QCloseEvent *event) {

@@ -272,3 +272,32 @@ TEST_F(Fixture, SymbolsImportFromCsvAndShowByName) {
     window.document()->undoStack()->undo();
     EXPECT_TRUE(window.document()->project().symbols.empty());
 }
+
+TEST_F(Fixture, FuzzyFormsOfTheTypedListOfferTheirCanonicalRewriteAsOneStep) {
+    const QString typed =
+        QStringLiteral("LD X0\nLD X1\nORB\nOUT Y0\nLD    X2   ; as typed\nOUT Y1\nEND\n");
+    window.ilEditor()->setText(typed);
+    window.applyListing();
+    EXPECT_EQ(window.ilEditor()->text(), typed);             // the text stays as the user wrote it
+    EXPECT_EQ(window.document()->ladder().rungs.size(), 3u); // and the ladder follows it
+    editor::ProblemsView *problems = window.problemsView();
+    const model::Diagnostic *fuzzy = nullptr;
+    for (int i = 0; problems->diagnosticAt(i); ++i)
+        if (problems->diagnosticAt(i)->code == QLatin1String("FZ002"))
+            fuzzy = problems->diagnosticAt(i);
+    ASSERT_NE(fuzzy, nullptr);
+    EXPECT_EQ(fuzzy->severity, model::Severity::Warning);
+    EXPECT_TRUE(fuzzy->location.onListing());
+    ASSERT_TRUE(fuzzy->fix.has_value());
+    const int programSteps = window.document()->undoStack()->count();
+
+    emit problems->applyFix(model::Diagnostic(*fuzzy));
+    EXPECT_EQ(window.ilEditor()->text(),
+              QStringLiteral("LD X0\nOR X1\nOUT Y0\nLD    X2   ; as typed\nOUT Y1\nEND\n"));
+    for (int i = 0; problems->diagnosticAt(i); ++i)
+        EXPECT_FALSE(problems->diagnosticAt(i)->code.startsWith(QLatin1String("FZ")));
+    // The program did not change, only its text: one step of the list's undo brings it back.
+    EXPECT_EQ(window.document()->undoStack()->count(), programSteps);
+    window.ilEditor()->undo();
+    EXPECT_EQ(window.ilEditor()->text(), typed);
+}

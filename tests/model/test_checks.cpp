@@ -259,3 +259,26 @@ TEST(LadderChecks, ListingFindingsLandOnTheirRung) {
     ASSERT_NE(find(ds, "OP002"), nullptr) << all(ds).toStdString();
     EXPECT_EQ(find(ds, "OP002")->location.rung, 1);
 }
+
+TEST(Checks, FormOnlyGivesTheFuzzyFormsAloneWithTheirFixes) {
+    const Target &t = Target::get(Family::Vigor);
+    // Stacked ANB (FZ001), a coil driven twice (DC001) and no END (EN001).
+    const ParseResult parsed = parseInstructionList(
+        t, text("LD X0;OR X1;LD X2;OR X3;LD X4;OR X5;ANB;ANB;OUT Y0;LD X6;OUT Y0"));
+    ASSERT_TRUE(parsed.ok());
+    const auto all = checkList(parsed.list);
+    ASSERT_NE(find(all, "FZ001"), nullptr);
+    ASSERT_NE(find(all, "DC001"), nullptr);
+    ASSERT_NE(find(all, "EN001"), nullptr);
+    CheckOptions form;
+    form.formOnly = true;
+    const auto fuzzy = checkList(parsed.list, form);
+    ASSERT_FALSE(fuzzy.empty());
+    for (const Diagnostic &d : fuzzy)
+        EXPECT_TRUE(d.code.startsWith(QLatin1String("FZ"))) << d.code.toStdString();
+    const Diagnostic *stacked = find(fuzzy, "FZ001");
+    ASSERT_NE(stacked, nullptr);
+    ASSERT_TRUE(stacked->fix.has_value());
+    EXPECT_EQ(stacked->fix->listing,
+              QStringLiteral("LD X0\nOR X1\nLD X2\nOR X3\nANB\nLD X4\nOR X5\nANB\nOUT Y0\n"));
+}
