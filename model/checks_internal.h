@@ -13,6 +13,9 @@ struct Finding {
     Diagnostic diagnostic;
     int instruction = -1;     // index in the listing
     std::vector<int> related; // indexes of the related instructions
+    // The message for the ladder, where listing lines mean nothing: %1 is the rung (1-based)
+    // of the first related instruction. Empty: the message serves both.
+    QString ladderMessage;
 };
 
 std::vector<Finding> checkListFindings(const InstructionList &list, const CheckOptions &options);

@@ -128,6 +128,8 @@ std::vector<Diagnostic> checkLadder(const LadderProgram &ladder, const ToListing
         d.related.clear();
         for (int i : f.related)
             d.related.push_back(Location{0, 0, rungOf(list.rungFirst, i), -1, -1});
+        if (!f.ladderMessage.isEmpty() && !d.related.empty())
+            d.message = f.ladderMessage.arg(d.related.front().rung + 1);
         out.push_back(std::move(d));
     }
     sortDiagnostics(out);

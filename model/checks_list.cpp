@@ -466,6 +466,12 @@ private:
                             .arg(at(it->second).line));
             f.diagnostic.related.push_back(location(it->second));
             f.related.push_back(it->second);
+            const QString device = formatAddress(m_t, a);
+            f.ladderMessage =
+                error ? Tr::tr("%1 is driven twice (\"Oper duplication\"); the first is in rung %2")
+                            .arg(device, QStringLiteral("%1"))
+                      : Tr::tr("%1 is driven twice; the later one wins (first in rung %2)")
+                            .arg(device, QStringLiteral("%1"));
         }
     }
 

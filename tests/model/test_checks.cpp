@@ -146,6 +146,25 @@ TEST(Checks, DuplicateCoilIsAWarningOnVigorAndAnErrorOnVpcAndCpm1) {
     EXPECT_EQ(find(cpm1, "DC001")->location.line, 4);
     ASSERT_EQ(find(cpm1, "DC001")->related.size(), 1u);
     EXPECT_EQ(find(cpm1, "DC001")->related[0].line, 2);
+    EXPECT_TRUE(find(cpm1, "DC001")->message.contains(QStringLiteral("line 2")))
+        << find(cpm1, "DC001")->message.toStdString();
+}
+
+TEST(Checks, OnTheLadderADuplicateCoilNamesTheRungOfTheFirst) {
+    const Target &t = Target::get(Family::Vigor);
+    const ParseResult parsed =
+        parseInstructionList(t, text("LD X0;OUT Y1;LD X1;OUT Y0;LD X2;OUT Y0;END"));
+    ASSERT_TRUE(parsed.ok());
+    const ToLadderResult ladder = listToLadder(parsed.list);
+    ASSERT_TRUE(ladder.ok());
+    const auto ds = checkLadder(ladder.ladder);
+    const Diagnostic *d = find(ds, "DC001");
+    ASSERT_NE(d, nullptr);
+    EXPECT_EQ(d->location.rung, 2);
+    ASSERT_EQ(d->related.size(), 1u);
+    EXPECT_EQ(d->related[0].rung, 1);
+    EXPECT_TRUE(d->message.contains(QStringLiteral("rung 2"))) << d->message.toStdString();
+    EXPECT_FALSE(d->message.contains(QStringLiteral("line"))) << d->message.toStdString();
 }
 
 TEST(Checks, ProgramTooLongForTheModel) {
