@@ -530,10 +530,15 @@ private:
         default:
             break;
         }
-        const QString text =
-            (kind == OperandKind::TimerNumber || kind == OperandKind::CounterNumber)
-                ? withPrefix(kind, t)
-                : t;
+        const bool number = kind == OperandKind::TimerNumber || kind == OperandKind::CounterNumber;
+        if (!number && looksConstant(t) &&
+            std::holds_alternative<Constant>(parseConstant(m_target, t))) {
+            // "OUT K5": say what is wrong with it rather than that K5 is no device.
+            error(lineNumber, token.column,
+                  tr("%1 is a constant; a device is expected here").arg(t.left(40)));
+            return false;
+        }
+        const QString text = number ? withPrefix(kind, t) : t;
         auto a = parseAddress(m_target, text, m_model);
         if (auto *e = std::get_if<AddressError>(&a)) {
             AddressError shifted = *e;

@@ -68,6 +68,12 @@ TEST(IlErrors, ConstantWhereADeviceIsNeeded) {
     const ParseResult cpm = parse(Family::Cpm1, QStringLiteral("LD #0001"));
     ASSERT_EQ(cpm.errors.size(), 1u) << describe(cpm);
     EXPECT_EQ(cpm.errors[0].column, 4);
+    // The message says what is wrong, not that K10 is no device of Vigor.
+    for (const ParseError &e : {r.errors[0], r.errors[1], cpm.errors[0]})
+        EXPECT_TRUE(e.message.contains(QStringLiteral("is a constant; a device is expected")))
+            << e.message.toStdString();
+    // Where a constant belongs it is one: a set value, a source.
+    EXPECT_TRUE(parse(Family::Vigor, QStringLiteral("LD X0\nTMR T0 K10\nMOV K5 D0")).ok());
 }
 
 TEST(IlErrors, TimerWhereACounterIsNeeded) {
