@@ -272,9 +272,12 @@ void IlEditor::showCompletions() {
             if (item.startsWith(typing->word, Qt::CaseInsensitive))
                 items << item;
     }
-    // An exact match alone needs no list: the operand is complete (a name still shows).
+    // A device typed in full with nothing longer to offer needs no list: Return then ends
+    // the line instead of taking the same device again.
     if (items.isEmpty() ||
-        (items.size() == 1 && items.front().compare(typing->word, Qt::CaseInsensitive) == 0)) {
+        (items.size() == 1 &&
+         items.front().section(QLatin1Char(' '), 0, 0).compare(typing->word, Qt::CaseInsensitive) ==
+             0)) {
         if (isListActive())
             cancelList();
         return;

@@ -89,8 +89,8 @@ TEST(IlCompletion, MnemonicsAtTheStartOfALineDevicesWithTheirNamesAfterIt) {
     QTest::keyClicks(il, QStringLiteral("I X"));
     ASSERT_TRUE(il->isListActive()); // the devices of the project
     EXPECT_EQ(selectedItem(il), QStringLiteral("X0"));
-    QTest::keyClick(il, Qt::Key_5);
-    ASSERT_TRUE(il->isListActive());
+    QTest::keyClick(il, Qt::Key_Down);
+    QTest::keyClick(il, Qt::Key_Down);
     EXPECT_EQ(selectedItem(il), QStringLiteral("X5  Stop")); // the symbol's name beside it
     QTest::keyClick(il, Qt::Key_Return);
     EXPECT_FALSE(il->isListActive());
@@ -106,6 +106,9 @@ TEST(IlCompletion, MnemonicsAtTheStartOfALineDevicesWithTheirNamesAfterIt) {
     QTest::keyClicks(il, QStringLiteral("OUT Y"));
     EXPECT_TRUE(il->isListActive());
     QTest::keyClicks(il, QStringLiteral("1"));
+    EXPECT_FALSE(il->isListActive());
+    QTest::keyClick(il, Qt::Key_Return);
+    QTest::keyClicks(il, QStringLiteral("LD X5")); // named, but typed in full: Return ends the line
     EXPECT_FALSE(il->isListActive());
 }
 
