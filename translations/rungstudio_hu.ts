@@ -185,7 +185,7 @@ Exit status: 0 no error, 1 the program has errors, 2 usage or I/O error.</source
 <context>
     <name>rung::app::MainWindow</name>
     <message>
-        <location filename="../app/gui/main_window.cpp" line="+139"/>
+        <location filename="../app/gui/main_window.cpp" line="+140"/>
         <source>Problems</source>
         <translation type="unfinished"></translation>
     </message>
@@ -360,7 +360,27 @@ Exit status: 0 no error, 1 the program has errors, 2 usage or I/O error.</source
         <translation type="unfinished"></translation>
     </message>
     <message>
-        <location line="+11"/>
+        <location line="+7"/>
+        <source>Select</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <location line="+1"/>
+        <source>Select (Esc)</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <location line="+10"/>
+        <source>%1 (%2): click the cells to place it</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <location line="+9"/>
+        <source>%1: click a cell to place it; Esc or a right click ends</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <location line="+15"/>
         <source>Cu&amp;t Rung</source>
         <translation type="unfinished"></translation>
     </message>
@@ -496,7 +516,7 @@ Exit status: 0 no error, 1 the program has errors, 2 usage or I/O error.</source
         <translation type="unfinished"></translation>
     </message>
     <message>
-        <location line="+13"/>
+        <location line="+15"/>
         <source>Language</source>
         <translation type="unfinished"></translation>
     </message>
@@ -506,7 +526,7 @@ Exit status: 0 no error, 1 the program has errors, 2 usage or I/O error.</source
         <translation type="unfinished"></translation>
     </message>
     <message>
-        <location line="+3"/>
+        <location line="+7"/>
         <source>&amp;Help</source>
         <translation type="unfinished"></translation>
     </message>
@@ -960,7 +980,7 @@ Ladder and instruction-list editor for VPC, Vigor, CPM1 and PL110.</source>
 <context>
     <name>rung::editor::Document</name>
     <message>
-        <location filename="../editor/document.cpp" line="+37"/>
+        <location filename="../editor/document.cpp" line="+40"/>
         <source>Edit symbols</source>
         <translation type="unfinished"></translation>
     </message>
@@ -982,7 +1002,7 @@ Ladder and instruction-list editor for VPC, Vigor, CPM1 and PL110.</source>
         </translation>
     </message>
     <message>
-        <location line="+46"/>
+        <location line="+56"/>
         <source>Edit instruction list</source>
         <translation type="unfinished"></translation>
     </message>
@@ -990,7 +1010,7 @@ Ladder and instruction-list editor for VPC, Vigor, CPM1 and PL110.</source>
 <context>
     <name>rung::editor::IlEditor</name>
     <message>
-        <location filename="../editor/il_editor.cpp" line="+199"/>
+        <location filename="../editor/il_editor.cpp" line="+231"/>
         <source>Instruction list</source>
         <translation type="unfinished"></translation>
     </message>
@@ -998,7 +1018,7 @@ Ladder and instruction-list editor for VPC, Vigor, CPM1 and PL110.</source>
 <context>
     <name>rung::editor::IlLexer</name>
     <message>
-        <location line="-171"/>
+        <location line="-174"/>
         <source>Default</source>
         <translation type="unfinished"></translation>
     </message>
@@ -1036,7 +1056,7 @@ Ladder and instruction-list editor for VPC, Vigor, CPM1 and PL110.</source>
 <context>
     <name>rung::editor::LadderView</name>
     <message>
-        <location filename="../editor/ladder_view.cpp" line="+41"/>
+        <location filename="../editor/ladder_view.cpp" line="+42"/>
         <source>Ladder diagram</source>
         <translation type="unfinished"></translation>
     </message>
@@ -1046,7 +1066,7 @@ Ladder and instruction-list editor for VPC, Vigor, CPM1 and PL110.</source>
         <translation type="unfinished"></translation>
     </message>
     <message>
-        <location line="+153"/>
+        <location line="+160"/>
         <source>Type one instruction, for example &quot;%1 X0&quot;</source>
         <translation type="unfinished"></translation>
     </message>
@@ -1068,7 +1088,7 @@ Ladder and instruction-list editor for VPC, Vigor, CPM1 and PL110.</source>
     </message>
     <message>
         <location line="+22"/>
-        <location filename="../editor/ladder_view_mouse.cpp" line="+98"/>
+        <location filename="../editor/ladder_view_mouse.cpp" line="+124"/>
         <source>Draw a wire</source>
         <translation type="unfinished"></translation>
     </message>
@@ -1419,7 +1439,7 @@ Ladder and instruction-list editor for VPC, Vigor, CPM1 and PL110.</source>
         <translation type="unfinished"></translation>
     </message>
     <message>
-        <location filename="../model/checks_list.cpp" line="+142"/>
+        <location filename="../model/checks_list.cpp" line="+149"/>
         <source>Rewrite the rung in the canonical form</source>
         <translation type="unfinished"></translation>
     </message>
@@ -1578,7 +1598,17 @@ Ladder and instruction-list editor for VPC, Vigor, CPM1 and PL110.</source>
         <translation type="unfinished"></translation>
     </message>
     <message>
-        <location line="+16"/>
+        <location line="+7"/>
+        <source>%1 is driven twice (&quot;Oper duplication&quot;); the first is in rung %2</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <location line="+2"/>
+        <source>%1 is driven twice; the later one wins (first in rung %2)</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <location line="+13"/>
         <source>The program needs %1 steps; %2 holds %3</source>
         <translation type="unfinished"></translation>
     </message>
@@ -1760,7 +1790,12 @@ Ladder and instruction-list editor for VPC, Vigor, CPM1 and PL110.</source>
         <translation type="unfinished"></translation>
     </message>
     <message>
-        <location line="+51"/>
+        <location line="+43"/>
+        <source>%1 is a constant; a device is expected here</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <location line="+13"/>
         <source>%1: %2 is expected here</source>
         <translation type="unfinished"></translation>
     </message>
