@@ -6,37 +6,37 @@
     <message>
         <location filename="../editor/qscintilla_tr.h" line="+11"/>
         <source>&amp;Undo</source>
-        <translation type="unfinished"></translation>
+        <translation>&amp;Visszavonás</translation>
     </message>
     <message>
         <location line="+0"/>
         <source>&amp;Redo</source>
-        <translation type="unfinished"></translation>
+        <translation>&amp;Mégis</translation>
     </message>
     <message>
         <location line="+1"/>
         <source>Cu&amp;t</source>
-        <translation type="unfinished"></translation>
+        <translation>&amp;Kivágás</translation>
     </message>
     <message>
         <location line="+0"/>
         <source>&amp;Copy</source>
-        <translation type="unfinished"></translation>
+        <translation>&amp;Másolás</translation>
     </message>
     <message>
         <location line="+1"/>
         <source>&amp;Paste</source>
-        <translation type="unfinished"></translation>
+        <translation>&amp;Beillesztés</translation>
     </message>
     <message>
         <location line="+0"/>
         <source>Delete</source>
-        <translation type="unfinished"></translation>
+        <translation>Törlés</translation>
     </message>
     <message>
         <location line="+1"/>
         <source>Select All</source>
-        <translation type="unfinished"></translation>
+        <translation>Az összes kijelölése</translation>
     </message>
 </context>
 <context>
@@ -49,99 +49,104 @@
   rungstudio-cli simulate FILE [--target T] --scans N [--period MS] [--set DEV=VALUE@SCAN]... --trace DEV[,DEV...]
 FILE is a listing (.il), a ladder text (.ladder) or a project (.rung).
 Exit status: 0 no error, 1 the program has errors, 2 usage or I/O error.</source>
-        <translation type="unfinished"></translation>
+        <translation>használat:
+  rungstudio-cli check FILE [--target vpc|vigor|cpm1|pl110] [--model M]
+  rungstudio-cli convert FILE [--target T] [--from il|ladder|project] --to il|ladder|project [-o OUT]
+  rungstudio-cli simulate FILE [--target T] --scans N [--period MS] [--set DEV=VALUE@SCAN]... --trace DEV[,DEV...]
+A FILE utasításlista (.il), létra-szöveg (.ladder) vagy projekt (.rung).
+Kilépési kód: 0 nincs hiba, 1 a programban hiba van, 2 használati vagy I/O hiba.</translation>
     </message>
     <message>
         <location line="+17"/>
         <location line="+41"/>
         <source>unexpected argument %1</source>
-        <translation type="unfinished"></translation>
+        <translation>váratlan argumentum: %1</translation>
     </message>
     <message>
         <location line="+6"/>
         <source>--to must be il, ladder or project</source>
-        <translation type="unfinished"></translation>
+        <translation>a --to értéke il, ladder vagy project lehet</translation>
     </message>
     <message>
         <location line="+11"/>
         <source>nothing written: the input has errors</source>
-        <translation type="unfinished"></translation>
+        <translation>nem íródott semmi: a bemenet hibás</translation>
     </message>
     <message>
         <location line="+18"/>
         <source>cannot write %1: %2</source>
-        <translation type="unfinished"></translation>
+        <translation>%1 nem írható: %2</translation>
     </message>
     <message>
         <location line="+26"/>
         <source>no command given</source>
-        <translation type="unfinished"></translation>
+        <translation>nincs megadva parancs</translation>
     </message>
     <message>
         <location line="+1"/>
         <source>unknown command %1</source>
-        <translation type="unfinished"></translation>
+        <translation>ismeretlen parancs: %1</translation>
     </message>
     <message>
         <location filename="../app/cli/cli_common.cpp" line="+51"/>
         <source>%1 needs a value</source>
-        <translation type="unfinished"></translation>
+        <translation>%1 után érték kell</translation>
     </message>
     <message>
         <location line="+25"/>
         <source>no FILE given</source>
-        <translation type="unfinished"></translation>
+        <translation>nincs megadva FILE</translation>
     </message>
     <message>
         <location line="+21"/>
         <source>--from must be il, ladder or project, not %1</source>
-        <translation type="unfinished"></translation>
+        <translation>a --from értéke il, ladder vagy project lehet, nem %1</translation>
     </message>
     <message>
         <location line="+14"/>
         <source>%1 is a %2 project, not %3</source>
-        <translation type="unfinished"></translation>
+        <translation>%1 egy %2 projekt, nem %3</translation>
     </message>
     <message>
         <location line="+10"/>
         <source>cannot read %1: %2</source>
-        <translation type="unfinished"></translation>
+        <translation>%1 nem olvasható: %2</translation>
     </message>
     <message>
         <location line="+4"/>
         <source>%1 is %2 MB; the limit is %3 MB</source>
-        <translation type="unfinished"></translation>
+        <translation>%1 mérete %2 MB; a korlát %3 MB</translation>
     </message>
     <message>
         <location line="+13"/>
         <source>%1: which PLC? Give --target vpc|vigor|cpm1|pl110 or a &quot;; target: NAME&quot; first line</source>
-        <translation type="unfinished"></translation>
+        <translation>%1: melyik PLC? Adja meg: --target vpc|vigor|cpm1|pl110, vagy egy &quot;; target: NAME&quot; első sort</translation>
     </message>
     <message>
         <location line="+7"/>
         <source>unknown target %1 (vpc, vigor, cpm1, pl110)</source>
-        <translation type="unfinished"></translation>
+        <translation>ismeretlen célrendszer: %1 (vpc, vigor, cpm1, pl110)</translation>
     </message>
     <message>
         <location line="+7"/>
         <location line="+27"/>
         <source>%1 has no model %2</source>
-        <translation type="unfinished"></translation>
+        <translation>a(z) %1 rendszernek nincs %2 modellje</translation>
     </message>
     <message>
         <location line="+18"/>
         <source>error</source>
-        <translation type="unfinished"></translation>
+        <translation>hiba</translation>
     </message>
     <message>
         <location line="+1"/>
         <source>warning</source>
-        <translation type="unfinished"></translation>
+        <translation>figyelmeztetés</translation>
     </message>
     <message>
         <location line="+1"/>
         <source>note</source>
-        <translation type="unfinished"></translation>
+        <translation>megjegyzés</translation>
     </message>
 </context>
 <context>
@@ -149,37 +154,37 @@ Exit status: 0 no error, 1 the program has errors, 2 usage or I/O error.</source
     <message>
         <location filename="../app/gui/command_line.cpp" line="+21"/>
         <source>Ladder and instruction-list IDE for small PLCs</source>
-        <translation type="unfinished"></translation>
+        <translation>Létradiagram- és utasításlista-fejlesztőkörnyezet kis PLC-khez</translation>
     </message>
     <message>
         <location line="+5"/>
         <source>A project (.rung) or an instruction list to open</source>
-        <translation type="unfinished"></translation>
+        <translation>Megnyitandó projekt (.rung) vagy utasításlista</translation>
     </message>
     <message>
         <location line="+4"/>
         <source>Target of an instruction list: vpc, vigor, cpm1, pl110</source>
-        <translation type="unfinished"></translation>
+        <translation>Az utasításlista célrendszere: vpc, vigor, cpm1, pl110</translation>
     </message>
     <message>
         <location line="+5"/>
         <source>Save a picture of the window and quit</source>
-        <translation type="unfinished"></translation>
+        <translation>Kép mentése az ablakról, majd kilépés</translation>
     </message>
     <message>
         <location line="+11"/>
         <source>Open one file at a time</source>
-        <translation type="unfinished"></translation>
+        <translation>Egyszerre egy fájl nyitható meg</translation>
     </message>
     <message>
         <location line="+2"/>
         <source>Unknown target %1: use vpc, vigor, cpm1 or pl110</source>
-        <translation type="unfinished"></translation>
+        <translation>Ismeretlen célrendszer: %1; használható: vpc, vigor, cpm1 vagy pl110</translation>
     </message>
     <message>
         <location filename="../app/gui/application.cpp" line="+45"/>
         <source>Rung Studio</source>
-        <translation type="unfinished"></translation>
+        <translation>Rung Studio</translation>
     </message>
 </context>
 <context>
@@ -187,358 +192,358 @@ Exit status: 0 no error, 1 the program has errors, 2 usage or I/O error.</source
     <message>
         <location filename="../app/gui/main_window.cpp" line="+140"/>
         <source>Problems</source>
-        <translation type="unfinished"></translation>
+        <translation>Problémák</translation>
     </message>
     <message>
         <location line="+5"/>
         <source>Project</source>
-        <translation type="unfinished"></translation>
+        <translation>Projekt</translation>
     </message>
     <message>
         <location line="+7"/>
         <source>Symbols</source>
-        <translation type="unfinished"></translation>
+        <translation>Szimbólumok</translation>
     </message>
     <message>
         <location line="+3"/>
         <source>Device</source>
-        <translation type="unfinished"></translation>
+        <translation>Operandus</translation>
     </message>
     <message>
         <location line="+0"/>
         <source>Name</source>
-        <translation type="unfinished"></translation>
+        <translation>Név</translation>
     </message>
     <message>
         <location line="+0"/>
         <source>Comment</source>
-        <translation type="unfinished"></translation>
+        <translation>Megjegyzés</translation>
     </message>
     <message>
         <location line="+7"/>
         <source>Watch lists</source>
-        <translation type="unfinished"></translation>
+        <translation>Figyelőlisták</translation>
     </message>
     <message>
         <location line="+33"/>
         <source>&amp;File</source>
-        <translation type="unfinished"></translation>
+        <translation>&amp;Fájl</translation>
     </message>
     <message>
         <location line="+1"/>
         <source>Main</source>
-        <translation type="unfinished"></translation>
+        <translation>Fő</translation>
     </message>
     <message>
         <location line="+5"/>
         <source>&amp;New Project...</source>
-        <translation type="unfinished"></translation>
+        <translation>Ú&amp;j projekt...</translation>
     </message>
     <message>
         <location line="+2"/>
         <source>&amp;Open...</source>
-        <translation type="unfinished"></translation>
+        <translation>&amp;Megnyitás...</translation>
     </message>
     <message>
         <location line="+3"/>
         <source>Open &amp;Recent</source>
-        <translation type="unfinished"></translation>
+        <translation>&amp;Legutóbbi fájlok</translation>
     </message>
     <message>
         <location line="+1"/>
         <source>E&amp;xamples</source>
-        <translation type="unfinished"></translation>
+        <translation>&amp;Példák</translation>
     </message>
     <message>
         <location line="+1"/>
         <source>&amp;Save</source>
-        <translation type="unfinished"></translation>
+        <translation>M&amp;entés</translation>
     </message>
     <message>
         <location line="+3"/>
         <source>Save &amp;As...</source>
-        <translation type="unfinished"></translation>
+        <translation>Mentés m&amp;ásként...</translation>
     </message>
     <message>
         <location line="+3"/>
         <source>&amp;Import Instruction List...</source>
-        <translation type="unfinished"></translation>
+        <translation>Utasításlista &amp;importálása...</translation>
     </message>
     <message>
         <location line="+1"/>
         <source>&amp;Export Instruction List...</source>
-        <translation type="unfinished"></translation>
+        <translation>Utasításlista e&amp;xportálása...</translation>
     </message>
     <message>
         <location line="+1"/>
         <source>Export &amp;Ladder</source>
-        <translation type="unfinished"></translation>
+        <translation>Létradiagram exportálá&amp;sa</translation>
     </message>
     <message>
         <location line="+1"/>
         <source>As &amp;PDF...</source>
-        <translation type="unfinished"></translation>
+        <translation>&amp;PDF-ként...</translation>
     </message>
     <message>
         <location line="+1"/>
         <source>As &amp;SVG...</source>
-        <translation type="unfinished"></translation>
+        <translation>&amp;SVG-ként...</translation>
     </message>
     <message>
         <location line="+1"/>
         <source>As P&amp;NG...</source>
-        <translation type="unfinished"></translation>
+        <translation>P&amp;NG-ként...</translation>
     </message>
     <message>
         <location line="+1"/>
         <source>Print Pre&amp;view...</source>
-        <translation type="unfinished"></translation>
+        <translation>N&amp;yomtatási kép...</translation>
     </message>
     <message>
         <location line="+3"/>
         <source>&amp;Quit</source>
-        <translation type="unfinished"></translation>
+        <translation>&amp;Kilépés</translation>
     </message>
     <message>
         <location line="+10"/>
         <source>&amp;Edit</source>
-        <translation type="unfinished"></translation>
+        <translation>&amp;Szerkesztés</translation>
     </message>
     <message>
         <location line="+1"/>
         <source>&amp;Undo</source>
-        <translation type="unfinished"></translation>
+        <translation>&amp;Visszavonás</translation>
     </message>
     <message>
         <location line="+2"/>
         <source>&amp;Redo</source>
-        <translation type="unfinished"></translation>
+        <translation>&amp;Mégis</translation>
     </message>
     <message>
         <location line="+24"/>
         <source>Normally Open Contact</source>
-        <translation type="unfinished"></translation>
+        <translation>Záró érintkező</translation>
     </message>
     <message>
         <location line="+2"/>
         <source>Normally Closed Contact</source>
-        <translation type="unfinished"></translation>
+        <translation>Nyitó érintkező</translation>
     </message>
     <message>
         <location line="+2"/>
         <source>Parallel Contact</source>
-        <translation type="unfinished"></translation>
+        <translation>Párhuzamos érintkező</translation>
     </message>
     <message>
         <location line="+2"/>
         <source>Rising-Edge Contact</source>
-        <translation type="unfinished"></translation>
+        <translation>Felfutó él érintkező</translation>
     </message>
     <message>
         <location line="+2"/>
         <source>Falling-Edge Contact</source>
-        <translation type="unfinished"></translation>
+        <translation>Lefutó él érintkező</translation>
     </message>
     <message>
         <location line="+2"/>
         <source>Coil</source>
-        <translation type="unfinished"></translation>
+        <translation>Tekercs</translation>
     </message>
     <message>
         <location line="+1"/>
         <source>Instruction</source>
-        <translation type="unfinished"></translation>
+        <translation>Utasítás</translation>
     </message>
     <message>
         <location line="+2"/>
         <source>Horizontal Wire</source>
-        <translation type="unfinished"></translation>
+        <translation>Vízszintes vezeték</translation>
     </message>
     <message>
         <location line="+2"/>
         <source>Vertical Link</source>
-        <translation type="unfinished"></translation>
+        <translation>Függőleges összekötés</translation>
     </message>
     <message>
         <location line="+7"/>
         <source>Select</source>
-        <translation type="unfinished"></translation>
+        <translation>Kijelölés</translation>
     </message>
     <message>
         <location line="+1"/>
         <source>Select (Esc)</source>
-        <translation type="unfinished"></translation>
+        <translation>Kijelölés (Esc)</translation>
     </message>
     <message>
         <location line="+10"/>
         <source>%1 (%2): click the cells to place it</source>
-        <translation type="unfinished"></translation>
+        <translation>%1 (%2): kattintson a cellákra az elhelyezéshez</translation>
     </message>
     <message>
         <location line="+9"/>
         <source>%1: click a cell to place it; Esc or a right click ends</source>
-        <translation type="unfinished"></translation>
+        <translation>%1: kattintson egy cellára az elhelyezéshez; Esc vagy jobb kattintás befejezi</translation>
     </message>
     <message>
         <location line="+15"/>
         <source>Cu&amp;t Rung</source>
-        <translation type="unfinished"></translation>
+        <translation>Létrafok k&amp;ivágása</translation>
     </message>
     <message>
         <location line="+1"/>
         <source>&amp;Copy Rung</source>
-        <translation type="unfinished"></translation>
+        <translation>Létrafok má&amp;solása</translation>
     </message>
     <message>
         <location line="+1"/>
         <source>&amp;Paste Rungs</source>
-        <translation type="unfinished"></translation>
+        <translation>Létrafokok &amp;beillesztése</translation>
     </message>
     <message>
         <location line="+7"/>
         <source>&amp;Find Device...</source>
-        <translation type="unfinished"></translation>
+        <translation>Operandus &amp;keresése...</translation>
     </message>
     <message>
         <location line="+2"/>
         <source>Find &amp;Next</source>
-        <translation type="unfinished"></translation>
+        <translation>Következő &amp;találat</translation>
     </message>
     <message>
         <location line="+2"/>
         <source>Find Pre&amp;vious</source>
-        <translation type="unfinished"></translation>
+        <translation>&amp;Előző találat</translation>
     </message>
     <message>
         <location line="+2"/>
         <source>Replace &amp;Device...</source>
-        <translation type="unfinished"></translation>
+        <translation>Operandus &amp;cseréje...</translation>
     </message>
     <message>
         <location line="+3"/>
         <source>Import Symbols (CSV)...</source>
-        <translation type="unfinished"></translation>
+        <translation>Szimbólumok importálása (CSV)...</translation>
     </message>
     <message>
         <location line="+1"/>
         <source>Import Symbols</source>
-        <translation type="unfinished"></translation>
+        <translation>Szimbólumok importálása</translation>
     </message>
     <message>
         <location line="+1"/>
         <location filename="../app/gui/main_window_tools.cpp" line="+234"/>
         <source>CSV files (*.csv)</source>
-        <translation type="unfinished"></translation>
+        <translation>CSV-fájlok (*.csv)</translation>
     </message>
     <message>
         <location line="+3"/>
         <source>Cannot import</source>
-        <translation type="unfinished"></translation>
+        <translation>Az importálás nem sikerült</translation>
     </message>
     <message>
         <location line="+2"/>
         <source>Export Symbols (CSV)...</source>
-        <translation type="unfinished"></translation>
+        <translation>Szimbólumok exportálása (CSV)...</translation>
     </message>
     <message>
         <location line="+2"/>
         <source>Add to &amp;Watch List</source>
-        <translation type="unfinished"></translation>
+        <translation>Hozzáadás a &amp;figyelőlistához</translation>
     </message>
     <message>
         <location line="+3"/>
         <source>Rung &amp;Comment...</source>
-        <translation type="unfinished"></translation>
+        <translation>Létrafok megje&amp;gyzése...</translation>
     </message>
     <message>
         <location line="+2"/>
         <source>Insert Rung</source>
-        <translation type="unfinished"></translation>
+        <translation>Létrafok beszúrása</translation>
     </message>
     <message>
         <location line="+1"/>
         <source>Delete Rung</source>
-        <translation type="unfinished"></translation>
+        <translation>Létrafok törlése</translation>
     </message>
     <message>
         <location line="+1"/>
         <source>Insert Row</source>
-        <translation type="unfinished"></translation>
+        <translation>Sor beszúrása</translation>
     </message>
     <message>
         <location line="+1"/>
         <source>Delete Row</source>
-        <translation type="unfinished"></translation>
+        <translation>Sor törlése</translation>
     </message>
     <message>
         <location line="+2"/>
         <source>&amp;View</source>
-        <translation type="unfinished"></translation>
+        <translation>&amp;Nézet</translation>
     </message>
     <message>
         <location line="+1"/>
         <source>Ladder and List &amp;Side by Side</source>
-        <translation type="unfinished"></translation>
+        <translation>Létradiagram és lista &amp;egymás mellett</translation>
     </message>
     <message>
         <location line="+4"/>
         <source>Show Symbol &amp;Names</source>
-        <translation type="unfinished"></translation>
+        <translation>Szimbólumne&amp;vek megjelenítése</translation>
     </message>
     <message>
         <location line="+2"/>
         <source>Names from the symbol table in place of the addresses</source>
-        <translation type="unfinished"></translation>
+        <translation>A szimbólumtábla nevei a címek helyett</translation>
     </message>
     <message>
         <location line="+6"/>
         <source>&amp;Fit Ladder to Width</source>
-        <translation type="unfinished"></translation>
+        <translation>Létradiagram &amp;igazítása a szélességhez</translation>
     </message>
     <message>
         <location line="+9"/>
         <source>Zoom &amp;In</source>
-        <translation type="unfinished"></translation>
+        <translation>&amp;Nagyítás</translation>
     </message>
     <message>
         <location line="+2"/>
         <source>Zoom &amp;Out</source>
-        <translation type="unfinished"></translation>
+        <translation>&amp;Kicsinyítés</translation>
     </message>
     <message>
         <location line="+2"/>
         <source>&amp;Check Program</source>
-        <translation type="unfinished"></translation>
+        <translation>Program ellen&amp;őrzése</translation>
     </message>
     <message>
         <location line="+3"/>
         <source>&amp;Language</source>
-        <translation type="unfinished"></translation>
+        <translation>&amp;Nyelv</translation>
     </message>
     <message>
         <location line="+15"/>
         <source>Language</source>
-        <translation type="unfinished"></translation>
+        <translation>Nyelv</translation>
     </message>
     <message>
         <location line="+1"/>
         <source>The new language applies when Rung Studio starts again.</source>
-        <translation type="unfinished"></translation>
+        <translation>Az új nyelv a Rung Studio következő indításakor lép életbe.</translation>
     </message>
     <message>
         <location line="+7"/>
         <source>&amp;Help</source>
-        <translation type="unfinished"></translation>
+        <translation>&amp;Súgó</translation>
     </message>
     <message>
         <location line="+1"/>
         <source>&amp;Keyboard...</source>
-        <translation type="unfinished"></translation>
+        <translation>&amp;Billentyűzet...</translation>
     </message>
     <message>
         <location line="+2"/>
         <source>Keyboard</source>
-        <translation type="unfinished"></translation>
+        <translation>Billentyűzet</translation>
     </message>
     <message>
         <location line="+1"/>
@@ -550,111 +555,119 @@ Type an instruction into the cell: LD X0, ANI X2, OUT Y1, TMR T0 K10
 Insert: insert a cell, Ctrl+Insert: insert a row, Shift+Insert: insert a rung
 Delete: clear, Ctrl+Delete: delete the row, Shift+Delete: delete the rung
 Ctrl+Z / Ctrl+Y: undo / redo, Ctrl+wheel: zoom, F4: check the program</source>
-        <translation type="unfinished"></translation>
+        <translation>F5 záró érintkező, F6 nyitó érintkező, F7 tekercs, F8 utasítás
+Shift+F5 / Shift+F6 ugyanezek az érintkezők a fölötte lévő sorral párhuzamosan
+Shift+F7 / Shift+F8 felfutó / lefutó él érintkező (Alt: párhuzamosan)
+F9 vízszintes vezeték, Shift+F9 függőleges összekötés, Ctrl+F9 / Ctrl+F10 ezek törlése
+Utasítás beírása a cellába: LD X0, ANI X2, OUT Y1, TMR T0 K10
+Insert: cella beszúrása, Ctrl+Insert: sor beszúrása, Shift+Insert: létrafok beszúrása
+Delete: törlés, Ctrl+Delete: a sor törlése, Shift+Delete: a létrafok törlése
+Ctrl+Z / Ctrl+Y: visszavonás / mégis, Ctrl+görgő: nagyítás, F4: a program ellenőrzése</translation>
     </message>
     <message>
         <location line="+9"/>
         <source>&amp;About Rung Studio</source>
-        <translation type="unfinished"></translation>
+        <translation>A Rung Studio &amp;névjegye</translation>
     </message>
     <message>
         <location line="+2"/>
         <source>About Rung Studio</source>
-        <translation type="unfinished"></translation>
+        <translation>A Rung Studio névjegye</translation>
     </message>
     <message>
         <location line="+1"/>
         <source>Rung Studio %1
 Ladder and instruction-list editor for VPC, Vigor, CPM1 and PL110.</source>
-        <translation type="unfinished"></translation>
+        <translation>Rung Studio %1
+Létradiagram- és utasításlista-szerkesztő VPC, Vigor, CPM1 és PL110 PLC-khez.</translation>
     </message>
     <message>
         <location line="+14"/>
         <source>Rung Comment</source>
-        <translation type="unfinished"></translation>
+        <translation>Létrafok megjegyzése</translation>
     </message>
     <message>
         <location line="+0"/>
         <source>Comment above rung %1:</source>
-        <translation type="unfinished"></translation>
+        <translation>Megjegyzés a(z) %1. létrafok fölött:</translation>
     </message>
     <message>
         <location line="+21"/>
         <source>Ladder</source>
-        <translation type="unfinished"></translation>
+        <translation>Létradiagram</translation>
     </message>
     <message>
         <location line="+1"/>
         <source>Instruction List</source>
-        <translation type="unfinished"></translation>
+        <translation>Utasításlista</translation>
     </message>
     <message>
         <location line="+63"/>
         <source>&lt;b&gt;%1&lt;/b&gt;&lt;br&gt;Target: %2, model %3&lt;br&gt;%4 rungs, %5 steps</source>
-        <translation type="unfinished"></translation>
+        <translation>&lt;b&gt;%1&lt;/b&gt;&lt;br&gt;Célrendszer: %2, modell: %3&lt;br&gt;%4 létrafok, %5 lépés</translation>
     </message>
     <message>
         <location line="+2"/>
         <location line="+51"/>
         <location filename="../app/gui/main_window_files.cpp" line="+365"/>
         <source>Untitled</source>
-        <translation type="unfinished"></translation>
+        <translation>Névtelen</translation>
     </message>
     <message>
         <location line="-32"/>
         <source>The instruction list has %1: line %2: %3. The ladder shows the last valid program.</source>
-        <translation type="unfinished"></translation>
+        <translation>Az utasításlistában %1 van: %2. sor: %3. A létradiagram az utolsó érvényes programot mutatja.</translation>
     </message>
     <message>
         <location line="+2"/>
         <source>an error</source>
-        <translation type="unfinished"></translation>
+        <translation>egy hiba</translation>
     </message>
     <message>
         <location line="+0"/>
         <source>%1 errors</source>
-        <translation type="unfinished"></translation>
+        <translation>%1 hiba</translation>
     </message>
     <message>
         <location line="+13"/>
         <location filename="../app/gui/main_window_files.cpp" line="+2"/>
         <source>%1 %2</source>
-        <translation type="unfinished"></translation>
+        <translation>%1 %2</translation>
     </message>
     <message>
         <location line="+2"/>
         <source>%1 / %2 steps</source>
-        <translation type="unfinished"></translation>
+        <translation>%1 / %2 lépés</translation>
     </message>
     <message>
         <location line="+5"/>
         <source>Line %1, column %2</source>
-        <translation type="unfinished"></translation>
+        <translation>%1. sor, %2. oszlop</translation>
     </message>
     <message>
         <location line="+4"/>
         <source>Rung %1, row %2, column %3</source>
-        <translation type="unfinished"></translation>
+        <translation>%1. létrafok, %2. sor, %3. oszlop</translation>
     </message>
     <message>
         <location filename="../app/gui/main_window_files.cpp" line="-260"/>
         <source>Recover</source>
-        <translation type="unfinished"></translation>
+        <translation>Helyreállítás</translation>
     </message>
     <message>
         <location line="+1"/>
         <source>Rung Studio was not closed properly last time. Recover the unsaved program?</source>
-        <translation type="unfinished"></translation>
+        <translation>A Rung Studio legutóbb nem záródott be szabályosan. Helyreállítja a nem mentett programot?</translation>
     </message>
     <message>
         <location line="+28"/>
         <source>Cannot open the file</source>
-        <translation type="unfinished"></translation>
+        <translation>A fájl nem nyitható meg</translation>
     </message>
     <message>
         <location line="+16"/>
         <source>Unknown target %1</source>
-        <translation type="unfinished"></translation>
+        <translation>Ismeretlen célrendszer: %1</translation>
     </message>
     <message>
         <location line="+3"/>
@@ -662,216 +675,216 @@ Ladder and instruction-list editor for VPC, Vigor, CPM1 and PL110.</source>
         <location filename="../app/gui/main_window_tools.cpp" line="+12"/>
         <location line="+9"/>
         <source>%1: %2</source>
-        <translation type="unfinished"></translation>
+        <translation>%1: %2</translation>
     </message>
     <message>
         <location line="-127"/>
         <source>%1 is larger than 64 MB</source>
-        <translation type="unfinished"></translation>
+        <translation>%1 nagyobb 64 MB-nál</translation>
     </message>
     <message>
         <location line="+4"/>
         <source>%1, line %2, column %3: %4</source>
-        <translation type="unfinished"></translation>
+        <translation>%1, %2. sor, %3. oszlop: %4</translation>
     </message>
     <message>
         <location line="+7"/>
         <location filename="../app/gui/main_window_tools.cpp" line="+6"/>
         <source>%1, line %2: %3</source>
-        <translation type="unfinished"></translation>
+        <translation>%1, %2. sor: %3</translation>
     </message>
     <message>
         <location line="+17"/>
         <source>Cannot save</source>
-        <translation type="unfinished"></translation>
+        <translation>A mentés nem sikerült</translation>
     </message>
     <message>
         <location line="+8"/>
         <source>Saved %1</source>
-        <translation type="unfinished"></translation>
+        <translation>Mentve: %1</translation>
     </message>
     <message>
         <location line="+8"/>
         <source>Unsaved changes</source>
-        <translation type="unfinished"></translation>
+        <translation>Nem mentett változások</translation>
     </message>
     <message>
         <location line="+0"/>
         <source>Save the changes to the program?</source>
-        <translation type="unfinished"></translation>
+        <translation>Menti a program változásait?</translation>
     </message>
     <message>
         <location line="+11"/>
         <source>New Project</source>
-        <translation type="unfinished"></translation>
+        <translation>Új projekt</translation>
     </message>
     <message>
         <location line="+16"/>
         <source>PLC family:</source>
-        <translation type="unfinished"></translation>
+        <translation>PLC-család:</translation>
     </message>
     <message>
         <location line="+1"/>
         <source>Model:</source>
-        <translation type="unfinished"></translation>
+        <translation>Modell:</translation>
     </message>
     <message>
         <location line="+14"/>
         <source>Open</source>
-        <translation type="unfinished"></translation>
+        <translation>Megnyitás</translation>
     </message>
     <message>
         <location line="+1"/>
         <source>Rung Studio projects (*.rung);;Instruction lists (*.il *.txt)</source>
-        <translation type="unfinished"></translation>
+        <translation>Rung Studio projektek (*.rung);;Utasításlisták (*.il *.txt)</translation>
     </message>
     <message>
         <location line="+12"/>
         <source>Save As</source>
-        <translation type="unfinished"></translation>
+        <translation>Mentés másként</translation>
     </message>
     <message>
         <location line="+1"/>
         <source>Rung Studio projects (*.rung)</source>
-        <translation type="unfinished"></translation>
+        <translation>Rung Studio projektek (*.rung)</translation>
     </message>
     <message>
         <location line="+12"/>
         <source>Import Instruction List</source>
-        <translation type="unfinished"></translation>
+        <translation>Utasításlista importálása</translation>
     </message>
     <message>
         <location line="+1"/>
         <source>Instruction lists (*.il *.txt);;All files (*)</source>
-        <translation type="unfinished"></translation>
+        <translation>Utasításlisták (*.il *.txt);;Minden fájl (*)</translation>
     </message>
     <message>
         <location line="+7"/>
         <source>Export Instruction List</source>
-        <translation type="unfinished"></translation>
+        <translation>Utasításlista exportálása</translation>
     </message>
     <message>
         <location line="+0"/>
         <source>Instruction lists (*.il *.txt)</source>
-        <translation type="unfinished"></translation>
+        <translation>Utasításlisták (*.il *.txt)</translation>
     </message>
     <message>
         <location line="+6"/>
         <location line="+14"/>
         <location filename="../app/gui/main_window_tools.cpp" line="-24"/>
         <source>Cannot export</source>
-        <translation type="unfinished"></translation>
+        <translation>Az exportálás nem sikerült</translation>
     </message>
     <message>
         <location line="-9"/>
         <source>Export Ladder</source>
-        <translation type="unfinished"></translation>
+        <translation>Létradiagram exportálása</translation>
     </message>
     <message>
         <location line="+19"/>
         <source>%1 could not be written</source>
-        <translation type="unfinished"></translation>
+        <translation>%1 nem írható</translation>
     </message>
     <message>
         <location line="+37"/>
         <source>%1: the ladder can be exported as PDF, SVG or PNG</source>
-        <translation type="unfinished"></translation>
+        <translation>%1: a létradiagram PDF, SVG vagy PNG formátumba exportálható</translation>
     </message>
     <message>
         <location line="+39"/>
         <source>%1    page %2 of %3</source>
-        <translation type="unfinished"></translation>
+        <translation>%1    %2. oldal / %3</translation>
     </message>
     <message>
         <location line="+70"/>
         <source>Cannot open the example</source>
-        <translation type="unfinished"></translation>
+        <translation>A példa nem nyitható meg</translation>
     </message>
     <message>
         <location filename="../app/gui/main_window_tools.cpp" line="-167"/>
         <source>Cut rungs</source>
-        <translation type="unfinished"></translation>
+        <translation>Létrafokok kivágása</translation>
     </message>
     <message>
         <location line="+15"/>
         <source>Cannot paste the cells: %1</source>
-        <translation type="unfinished"></translation>
+        <translation>A cellák nem illeszthetők be: %1</translation>
     </message>
     <message>
         <location line="+18"/>
         <source>Line %1: %2</source>
-        <translation type="unfinished"></translation>
+        <translation>%1. sor: %2</translation>
     </message>
     <message>
         <location line="+12"/>
         <source>The clipboard holds no rungs</source>
-        <translation type="unfinished"></translation>
+        <translation>A vágólapon nincsenek létrafokok</translation>
     </message>
     <message>
         <location line="+1"/>
         <source>Cannot paste: %1</source>
-        <translation type="unfinished"></translation>
+        <translation>A beillesztés nem sikerült: %1</translation>
     </message>
     <message>
         <location line="+6"/>
         <source>Paste rung</source>
-        <translation type="unfinished"></translation>
+        <translation>Létrafok beillesztése</translation>
     </message>
     <message numerus="yes">
         <location line="+1"/>
         <source>Paste %n rungs</source>
-        <translation type="unfinished">
-            <numerusform></numerusform>
+        <translation>
+            <numerusform>%n létrafok beillesztése</numerusform>
         </translation>
     </message>
     <message>
         <location line="+7"/>
         <source>Find Device</source>
-        <translation type="unfinished"></translation>
+        <translation>Operandus keresése</translation>
     </message>
     <message>
         <location line="+0"/>
         <source>Device:</source>
-        <translation type="unfinished"></translation>
+        <translation>Operandus:</translation>
     </message>
     <message>
         <location line="+28"/>
         <location line="+3"/>
         <location line="+7"/>
         <source>Replace Device</source>
-        <translation type="unfinished"></translation>
+        <translation>Operandus cseréje</translation>
     </message>
     <message>
         <location line="-10"/>
         <source>Replace the device:</source>
-        <translation type="unfinished"></translation>
+        <translation>A cserélendő operandus:</translation>
     </message>
     <message>
         <location line="+3"/>
         <source>with:</source>
-        <translation type="unfinished"></translation>
+        <translation>erre:</translation>
     </message>
     <message numerus="yes">
         <location line="+9"/>
         <source>%n place(s) changed</source>
-        <translation type="unfinished">
-            <numerusform></numerusform>
+        <translation>
+            <numerusform>%n helyen történt módosítás</numerusform>
         </translation>
     </message>
     <message>
         <location line="+39"/>
         <source>Replace %1 with %2</source>
-        <translation type="unfinished"></translation>
+        <translation>%1 cseréje erre: %2</translation>
     </message>
     <message>
         <location line="+6"/>
         <source>Cross Reference</source>
-        <translation type="unfinished"></translation>
+        <translation>Kereszthivatkozás</translation>
     </message>
     <message>
         <location line="+18"/>
         <source>Export Symbols</source>
-        <translation type="unfinished"></translation>
+        <translation>Szimbólumok exportálása</translation>
     </message>
 </context>
 <context>
@@ -879,49 +892,49 @@ Ladder and instruction-list editor for VPC, Vigor, CPM1 and PL110.</source>
     <message>
         <location filename="../app/cli/cli_simulate.cpp" line="+20"/>
         <source>usage: rungstudio-cli simulate FILE [--target T] --scans N [--period MS] [--set DEV=VALUE@SCAN]... --trace DEV[,DEV...]</source>
-        <translation type="unfinished"></translation>
+        <translation>használat: rungstudio-cli simulate FILE [--target T] --scans N [--period MS] [--set DEV=VALUE@SCAN]... --trace DEV[,DEV...]</translation>
     </message>
     <message>
         <location line="+28"/>
         <source>unexpected argument %1</source>
-        <translation type="unfinished"></translation>
+        <translation>váratlan argumentum: %1</translation>
     </message>
     <message>
         <location line="+10"/>
         <source>cannot read %1: %2</source>
-        <translation type="unfinished"></translation>
+        <translation>%1 nem olvasható: %2</translation>
     </message>
     <message>
         <location line="+7"/>
         <source>%1: no target; give --target or a &quot;; target: NAME&quot; first line</source>
-        <translation type="unfinished"></translation>
+        <translation>%1: nincs célrendszer; adja meg a --target kapcsolót vagy egy &quot;; target: NAME&quot; első sort</translation>
     </message>
     <message>
         <location line="+6"/>
         <source>unknown target %1</source>
-        <translation type="unfinished"></translation>
+        <translation>ismeretlen célrendszer: %1</translation>
     </message>
     <message>
         <location line="+14"/>
         <location line="+7"/>
         <source>error: %1</source>
-        <translation type="unfinished"></translation>
+        <translation>hiba: %1</translation>
     </message>
     <message>
         <location line="-6"/>
         <location line="+10"/>
         <source>the program does not start</source>
-        <translation type="unfinished"></translation>
+        <translation>a program nem indul el</translation>
     </message>
     <message>
         <location line="-3"/>
         <source>warning: %1</source>
-        <translation type="unfinished"></translation>
+        <translation>figyelmeztetés: %1</translation>
     </message>
     <message>
         <location line="+11"/>
         <source>runtime error at step %1: %2</source>
-        <translation type="unfinished"></translation>
+        <translation>futási hiba a(z) %1. lépésnél: %2</translation>
     </message>
 </context>
 <context>
@@ -929,52 +942,52 @@ Ladder and instruction-list editor for VPC, Vigor, CPM1 and PL110.</source>
     <message>
         <location filename="../editor/cross_reference_view.cpp" line="+51"/>
         <source>Device or prefix (X0, X); empty: every device</source>
-        <translation type="unfinished"></translation>
+        <translation>Operandus vagy előtag (X0, X); üresen: minden operandus</translation>
     </message>
     <message>
         <location line="+4"/>
         <source>Device / rung</source>
-        <translation type="unfinished"></translation>
+        <translation>Operandus / létrafok</translation>
     </message>
     <message>
         <location line="+0"/>
         <source>Step</source>
-        <translation type="unfinished"></translation>
+        <translation>Lépés</translation>
     </message>
     <message>
         <location line="+0"/>
         <source>Use</source>
-        <translation type="unfinished"></translation>
+        <translation>Használat</translation>
     </message>
     <message>
         <location line="+0"/>
         <source>Instruction</source>
-        <translation type="unfinished"></translation>
+        <translation>Utasítás</translation>
     </message>
     <message>
         <location line="+59"/>
         <source>contact</source>
-        <translation type="unfinished"></translation>
+        <translation>érintkező</translation>
     </message>
     <message>
         <location line="+0"/>
         <source>coil</source>
-        <translation type="unfinished"></translation>
+        <translation>tekercs</translation>
     </message>
     <message>
         <location line="+0"/>
         <source>box</source>
-        <translation type="unfinished"></translation>
+        <translation>doboz</translation>
     </message>
     <message>
         <location line="+12"/>
         <source>rung %1</source>
-        <translation type="unfinished"></translation>
+        <translation>%1. létrafok</translation>
     </message>
     <message>
         <location line="+18"/>
         <source>The first %1 uses; type a device or a prefix for the rest</source>
-        <translation type="unfinished"></translation>
+        <translation>Az első %1 előfordulás; a többihez írjon be egy operandust vagy előtagot</translation>
     </message>
 </context>
 <context>
@@ -982,29 +995,29 @@ Ladder and instruction-list editor for VPC, Vigor, CPM1 and PL110.</source>
     <message>
         <location filename="../editor/document.cpp" line="+40"/>
         <source>Edit symbols</source>
-        <translation type="unfinished"></translation>
+        <translation>Szimbólumok szerkesztése</translation>
     </message>
     <message>
         <location line="+108"/>
         <source>Insert rung</source>
-        <translation type="unfinished"></translation>
+        <translation>Létrafok beszúrása</translation>
     </message>
     <message>
         <location line="+5"/>
         <source>Delete rung</source>
-        <translation type="unfinished"></translation>
+        <translation>Létrafok törlése</translation>
     </message>
     <message numerus="yes">
         <location line="+0"/>
         <source>Delete %n rungs</source>
-        <translation type="unfinished">
-            <numerusform></numerusform>
+        <translation>
+            <numerusform>%n létrafok törlése</numerusform>
         </translation>
     </message>
     <message>
         <location line="+56"/>
         <source>Edit instruction list</source>
-        <translation type="unfinished"></translation>
+        <translation>Utasításlista szerkesztése</translation>
     </message>
 </context>
 <context>
@@ -1012,7 +1025,7 @@ Ladder and instruction-list editor for VPC, Vigor, CPM1 and PL110.</source>
     <message>
         <location filename="../editor/il_editor.cpp" line="+231"/>
         <source>Instruction list</source>
-        <translation type="unfinished"></translation>
+        <translation>Utasításlista</translation>
     </message>
 </context>
 <context>
@@ -1020,37 +1033,37 @@ Ladder and instruction-list editor for VPC, Vigor, CPM1 and PL110.</source>
     <message>
         <location line="-174"/>
         <source>Default</source>
-        <translation type="unfinished"></translation>
+        <translation>Alapértelmezett</translation>
     </message>
     <message>
         <location line="+2"/>
         <source>Instruction</source>
-        <translation type="unfinished"></translation>
+        <translation>Utasítás</translation>
     </message>
     <message>
         <location line="+2"/>
         <source>Device</source>
-        <translation type="unfinished"></translation>
+        <translation>Operandus</translation>
     </message>
     <message>
         <location line="+2"/>
         <source>Constant</source>
-        <translation type="unfinished"></translation>
+        <translation>Konstans</translation>
     </message>
     <message>
         <location line="+2"/>
         <source>Comment</source>
-        <translation type="unfinished"></translation>
+        <translation>Megjegyzés</translation>
     </message>
     <message>
         <location line="+2"/>
         <source>Step number</source>
-        <translation type="unfinished"></translation>
+        <translation>Lépésszám</translation>
     </message>
     <message>
         <location line="+2"/>
         <source>Unknown word</source>
-        <translation type="unfinished"></translation>
+        <translation>Ismeretlen szó</translation>
     </message>
 </context>
 <context>
@@ -1058,109 +1071,109 @@ Ladder and instruction-list editor for VPC, Vigor, CPM1 and PL110.</source>
     <message>
         <location filename="../editor/ladder_view.cpp" line="+42"/>
         <source>Ladder diagram</source>
-        <translation type="unfinished"></translation>
+        <translation>Létradiagram</translation>
     </message>
     <message>
         <location line="+94"/>
         <source>Edit rung comment</source>
-        <translation type="unfinished"></translation>
+        <translation>Létrafok megjegyzésének szerkesztése</translation>
     </message>
     <message>
         <location line="+160"/>
         <source>Type one instruction, for example &quot;%1 X0&quot;</source>
-        <translation type="unfinished"></translation>
+        <translation>Egy utasítást írjon be, például: &quot;%1 X0&quot;</translation>
     </message>
     <message>
         <location line="+18"/>
         <source>%1 is drawn with vertical links, not typed into a cell</source>
-        <translation type="unfinished"></translation>
+        <translation>%1 függőleges összekötésekkel rajzolható, cellába nem írható</translation>
     </message>
     <message>
         <location line="+4"/>
         <source>Contacts go in the grid; the right-hand column holds coils and boxes</source>
-        <translation type="unfinished"></translation>
+        <translation>Az érintkezők a rácsba kerülnek; a jobb oldali oszlopban tekercsek és dobozok állnak</translation>
     </message>
     <message>
         <location line="+24"/>
         <location line="+13"/>
         <source>Place %1</source>
-        <translation type="unfinished"></translation>
+        <translation>%1 elhelyezése</translation>
     </message>
     <message>
         <location line="+22"/>
         <location filename="../editor/ladder_view_mouse.cpp" line="+124"/>
         <source>Draw a wire</source>
-        <translation type="unfinished"></translation>
+        <translation>Vezeték rajzolása</translation>
     </message>
     <message>
         <location line="+11"/>
         <source>Toggle a vertical link</source>
-        <translation type="unfinished"></translation>
+        <translation>Függőleges összekötés be/ki</translation>
     </message>
     <message>
         <location line="+18"/>
         <source>Delete</source>
-        <translation type="unfinished"></translation>
+        <translation>Törlés</translation>
     </message>
     <message>
         <location line="+8"/>
         <source>Insert a cell</source>
-        <translation type="unfinished"></translation>
+        <translation>Cella beszúrása</translation>
     </message>
     <message>
         <location line="+6"/>
         <source>Insert a row</source>
-        <translation type="unfinished"></translation>
+        <translation>Sor beszúrása</translation>
     </message>
     <message>
         <location line="+8"/>
         <source>Delete a row</source>
-        <translation type="unfinished"></translation>
+        <translation>Sor törlése</translation>
     </message>
     <message>
         <location filename="../editor/ladder_view_mouse.cpp" line="+12"/>
         <source>Draw a vertical link</source>
-        <translation type="unfinished"></translation>
+        <translation>Függőleges összekötés rajzolása</translation>
     </message>
     <message>
         <location filename="../editor/ladder_view_keys.cpp" line="+32"/>
         <source>%1 has no such contact</source>
-        <translation type="unfinished"></translation>
+        <translation>%1 nem rendelkezik ilyen érintkezővel</translation>
     </message>
     <message>
         <location line="+78"/>
         <source>There is no wire under the cursor</source>
-        <translation type="unfinished"></translation>
+        <translation>A kurzor alatt nincs vezeték</translation>
     </message>
     <message>
         <location line="+4"/>
         <source>Delete a wire</source>
-        <translation type="unfinished"></translation>
+        <translation>Vezeték törlése</translation>
     </message>
     <message>
         <location line="+10"/>
         <source>There is no vertical link at the cursor</source>
-        <translation type="unfinished"></translation>
+        <translation>A kurzornál nincs függőleges összekötés</translation>
     </message>
     <message>
         <location line="+4"/>
         <source>Delete a vertical link</source>
-        <translation type="unfinished"></translation>
+        <translation>Függőleges összekötés törlése</translation>
     </message>
     <message>
         <location filename="../editor/ladder_view_selection.cpp" line="+85"/>
         <source>Delete cells</source>
-        <translation type="unfinished"></translation>
+        <translation>Cellák törlése</translation>
     </message>
     <message>
         <location line="+14"/>
         <source>Paste cells</source>
-        <translation type="unfinished"></translation>
+        <translation>Cellák beillesztése</translation>
     </message>
     <message>
         <location filename="../editor/ladder_view_find.cpp" line="+45"/>
         <source>%1 is not used in the program</source>
-        <translation type="unfinished"></translation>
+        <translation>%1 nincs használatban a programban</translation>
     </message>
 </context>
 <context>
@@ -1168,105 +1181,105 @@ Ladder and instruction-list editor for VPC, Vigor, CPM1 and PL110.</source>
     <message>
         <location filename="../editor/problems_view.cpp" line="+16"/>
         <source>Severity</source>
-        <translation type="unfinished"></translation>
+        <translation>Súlyosság</translation>
     </message>
     <message>
         <location line="+0"/>
         <source>Code</source>
-        <translation type="unfinished"></translation>
+        <translation>Kód</translation>
     </message>
     <message>
         <location line="+0"/>
         <source>Place</source>
-        <translation type="unfinished"></translation>
+        <translation>Hely</translation>
     </message>
     <message>
         <location line="+0"/>
         <source>Message</source>
-        <translation type="unfinished"></translation>
+        <translation>Üzenet</translation>
     </message>
     <message>
         <location line="+5"/>
         <location line="+58"/>
         <source>Problems</source>
-        <translation type="unfinished"></translation>
+        <translation>Problémák</translation>
     </message>
     <message>
         <location line="-42"/>
         <source>Error</source>
-        <translation type="unfinished"></translation>
+        <translation>Hiba</translation>
     </message>
     <message>
         <location line="+1"/>
         <location line="+17"/>
         <source>Warning</source>
-        <translation type="unfinished"></translation>
+        <translation>Figyelmeztetés</translation>
     </message>
     <message>
         <location line="-16"/>
         <source>Note</source>
-        <translation type="unfinished"></translation>
+        <translation>Megjegyzés</translation>
     </message>
     <message>
         <location line="+4"/>
         <source>line %1</source>
-        <translation type="unfinished"></translation>
+        <translation>%1. sor</translation>
     </message>
     <message>
         <location line="+3"/>
         <location line="+11"/>
         <source>rung %1, row %2</source>
-        <translation type="unfinished"></translation>
+        <translation>%1. létrafok, %2. sor</translation>
     </message>
     <message>
         <location line="-10"/>
         <source>rung %1</source>
-        <translation type="unfinished"></translation>
+        <translation>%1. létrafok</translation>
     </message>
     <message>
         <location line="+2"/>
         <source>%1 (fix available)</source>
-        <translation type="unfinished"></translation>
+        <translation>%1 (javítás elérhető)</translation>
     </message>
     <message>
         <location line="+27"/>
         <source>1 error</source>
-        <translation type="unfinished"></translation>
+        <translation>1 hiba</translation>
     </message>
     <message>
         <location line="+0"/>
         <source>%1 errors</source>
-        <translation type="unfinished"></translation>
+        <translation>%1 hiba</translation>
     </message>
     <message>
         <location line="+2"/>
         <source>1 warning</source>
-        <translation type="unfinished"></translation>
+        <translation>1 figyelmeztetés</translation>
     </message>
     <message>
         <location line="+0"/>
         <source>%1 warnings</source>
-        <translation type="unfinished"></translation>
+        <translation>%1 figyelmeztetés</translation>
     </message>
     <message>
         <location line="+1"/>
         <source>Problems (%1)</source>
-        <translation type="unfinished"></translation>
+        <translation>Problémák (%1)</translation>
     </message>
     <message>
         <location line="+0"/>
         <source>, </source>
-        <translation type="unfinished"></translation>
+        <translation>, </translation>
     </message>
     <message>
         <location line="+10"/>
         <source>No problems found</source>
-        <translation type="unfinished"></translation>
+        <translation>Nincs probléma</translation>
     </message>
     <message>
         <location line="+15"/>
         <source>Show</source>
-        <translation type="unfinished"></translation>
+        <translation>Megjelenítés</translation>
     </message>
 </context>
 <context>
@@ -1274,7 +1287,7 @@ Ladder and instruction-list editor for VPC, Vigor, CPM1 and PL110.</source>
     <message>
         <location filename="../editor/symbols_csv.cpp" line="+113"/>
         <source>a symbol without a device</source>
-        <translation type="unfinished"></translation>
+        <translation>operandus nélküli szimbólum</translation>
     </message>
 </context>
 <context>
@@ -1282,27 +1295,27 @@ Ladder and instruction-list editor for VPC, Vigor, CPM1 and PL110.</source>
     <message>
         <location filename="../editor/watch_list_view.cpp" line="+14"/>
         <source>Watch list</source>
-        <translation type="unfinished"></translation>
+        <translation>Figyelőlista</translation>
     </message>
     <message>
         <location line="+3"/>
         <source>Watch lists</source>
-        <translation type="unfinished"></translation>
+        <translation>Figyelőlisták</translation>
     </message>
     <message>
         <location line="+42"/>
         <source>Watch 1</source>
-        <translation type="unfinished"></translation>
+        <translation>Figyelés 1</translation>
     </message>
     <message>
         <location line="+6"/>
         <source>Add %1 to the watch list</source>
-        <translation type="unfinished"></translation>
+        <translation>%1 hozzáadása a figyelőlistához</translation>
     </message>
     <message>
         <location line="+14"/>
         <source>Remove %1 from the watch list</source>
-        <translation type="unfinished"></translation>
+        <translation>%1 eltávolítása a figyelőlistáról</translation>
     </message>
 </context>
 <context>
@@ -1310,105 +1323,105 @@ Ladder and instruction-list editor for VPC, Vigor, CPM1 and PL110.</source>
     <message>
         <location filename="../model/address.cpp" line="+124"/>
         <source>A device is missing</source>
-        <translation type="unfinished"></translation>
+        <translation>Hiányzik egy operandus</translation>
     </message>
     <message>
         <location line="+14"/>
         <source>%1: a number is expected after %2</source>
-        <translation type="unfinished"></translation>
+        <translation>%1: %2 után szám kell</translation>
     </message>
     <message>
         <location line="+3"/>
         <source>%1 is not a device of %2</source>
-        <translation type="unfinished"></translation>
+        <translation>%1 nem operandusa a(z) %2 rendszernek</translation>
     </message>
     <message>
         <location line="+14"/>
         <source>%1: the number is too large</source>
-        <translation type="unfinished"></translation>
+        <translation>%1: a szám túl nagy</translation>
     </message>
     <message>
         <location line="+2"/>
         <source>%1: %2 is numbered in octal</source>
-        <translation type="unfinished"></translation>
+        <translation>%1: a(z) %2 operandusok számozása oktális</translation>
     </message>
     <message>
         <location line="+8"/>
         <source>%1: a bit number is expected after the point</source>
-        <translation type="unfinished"></translation>
+        <translation>%1: a pont után bitszám kell</translation>
     </message>
     <message>
         <location line="+3"/>
         <location line="+14"/>
         <source>%1: bit %2 is beyond 00..15</source>
-        <translation type="unfinished"></translation>
+        <translation>%1: a(z) %2 bit kívül esik a 00..15 tartományon</translation>
     </message>
     <message>
         <location line="-9"/>
         <source>%1: unexpected &apos;%2&apos; after the device</source>
-        <translation type="unfinished"></translation>
+        <translation>%1: váratlan &apos;%2&apos; az operandus után</translation>
     </message>
     <message>
         <location line="+48"/>
         <source>%1: %2 has no bit numbers</source>
-        <translation type="unfinished"></translation>
+        <translation>%1: a(z) %2 operandusnak nincsenek bitszámai</translation>
     </message>
     <message>
         <location line="+3"/>
         <location line="+27"/>
         <source>%1: %2 has no %3</source>
-        <translation type="unfinished"></translation>
+        <translation>%1: a(z) %2 típusnak nincsenek %3</translation>
     </message>
     <message>
         <location line="-11"/>
         <location line="+14"/>
         <source>%1 is beyond %2&apos;s %3 %4</source>
-        <translation type="unfinished"></translation>
+        <translation>%1 kívül esik a(z) %2 %3 tartományán (%4)</translation>
     </message>
     <message>
         <location line="-11"/>
         <source>%1 is beyond %2&apos;s %3</source>
-        <translation type="unfinished"></translation>
+        <translation>%1 kívül esik a(z) %2 %3 tartományán</translation>
     </message>
     <message>
         <location line="+37"/>
         <source>A constant is missing</source>
-        <translation type="unfinished"></translation>
+        <translation>Hiányzik egy konstans</translation>
     </message>
     <message>
         <location line="+23"/>
         <source>%1: %2 writes constants without K or H</source>
-        <translation type="unfinished"></translation>
+        <translation>%1: a(z) %2 a konstansokat K és H nélkül írja</translation>
     </message>
     <message>
         <location line="+6"/>
         <source>%1: # constants belong to CPM1 listings</source>
-        <translation type="unfinished"></translation>
+        <translation>%1: a # konstansok a CPM1 utasításlistákhoz tartoznak</translation>
     </message>
     <message>
         <location line="+5"/>
         <source>%1: write a constant as K (decimal) or H (hexadecimal)</source>
-        <translation type="unfinished"></translation>
+        <translation>%1: a konstanst K (decimális) vagy H (hexadecimális) előtaggal kell írni</translation>
     </message>
     <message>
         <location line="+1"/>
         <source>%1: write a constant with # (e.g. #0150)</source>
-        <translation type="unfinished"></translation>
+        <translation>%1: a konstanst # jellel kell írni (pl. #0150)</translation>
     </message>
     <message>
         <location line="+9"/>
         <source>%1: digits are expected</source>
-        <translation type="unfinished"></translation>
+        <translation>%1: számjegyek kellenek</translation>
     </message>
     <message>
         <location line="+13"/>
         <source>%1: &apos;%2&apos; is not a digit</source>
-        <translation type="unfinished"></translation>
+        <translation>%1: a(z) &apos;%2&apos; nem számjegy</translation>
     </message>
     <message>
         <location line="+7"/>
         <source>%1: the constant is too large</source>
-        <translation type="unfinished"></translation>
+        <translation>%1: a konstans túl nagy</translation>
     </message>
 </context>
 <context>
@@ -1416,201 +1429,201 @@ Ladder and instruction-list editor for VPC, Vigor, CPM1 and PL110.</source>
     <message>
         <location filename="../model/checks_ladder.cpp" line="+70"/>
         <source>Reverse current: power would cross an element right to left to reach row %1</source>
-        <translation type="unfinished"></translation>
+        <translation>Visszáram: az áram jobbról balra haladna át egy elemen, hogy elérje a(z) %1. sort</translation>
     </message>
     <message>
         <location line="+4"/>
         <source>Duplicate the shared contact into each branch</source>
-        <translation type="unfinished"></translation>
+        <translation>A közös érintkező megkettőzése minden ágba</translation>
     </message>
     <message>
         <location line="+13"/>
         <source>Open branch: row %1 is not connected to the left rail</source>
-        <translation type="unfinished"></translation>
+        <translation>Nyitott ág: a(z) %1. sor nincs a bal oldali gyűjtősínhez kötve</translation>
     </message>
     <message>
         <location line="+12"/>
         <source>%1 has no condition: it is wired straight to the left rail</source>
-        <translation type="unfinished"></translation>
+        <translation>%1 feltétel nélküli: közvetlenül a bal oldali gyűjtősínre van kötve</translation>
     </message>
     <message>
         <location line="+15"/>
         <source>This contact is not on any path from the left rail to an output</source>
-        <translation type="unfinished"></translation>
+        <translation>Ez az érintkező nincs rajta egyetlen áramúton sem a bal oldali gyűjtősíntől egy kimenetig</translation>
     </message>
     <message>
         <location filename="../model/checks_list.cpp" line="+149"/>
         <source>Rewrite the rung in the canonical form</source>
-        <translation type="unfinished"></translation>
+        <translation>A létrafok átírása kanonikus formára</translation>
     </message>
     <message>
         <location line="+27"/>
         <source>More than %1 %2 in a row: the PLC rejects the program</source>
-        <translation type="unfinished"></translation>
+        <translation>Több mint %1 %2 egymás után: a PLC elutasítja a programot</translation>
     </message>
     <message>
         <location line="+29"/>
         <source>Stacked ANB: combine each block with ANB as soon as it is complete</source>
-        <translation type="unfinished"></translation>
+        <translation>Halmozott ANB: minden blokkot kapcsoljon ANB-vel, amint elkészült</translation>
     </message>
     <message numerus="yes">
         <location line="+2"/>
         <source>Stacked ORB: %n blocks are open; an OR chain needs less stack</source>
-        <translation type="unfinished">
-            <numerusform></numerusform>
+        <translation>
+            <numerusform>Halmozott ORB: %n blokk nyitott; egy OR-lánc kevesebb vermet igényel</numerusform>
         </translation>
     </message>
     <message>
         <location line="+6"/>
         <source>A single contact joined with %1 is simpler as %2</source>
-        <translation type="unfinished"></translation>
+        <translation>Egyetlen érintkező %1 kapcsolással egyszerűbb %2 formában</translation>
     </message>
     <message>
         <location line="+8"/>
         <source>A single device in parallel with a block belongs on the lower row: the block first, then an OR, drops the %1</source>
-        <translation type="unfinished"></translation>
+        <translation>Egy blokkal párhuzamos egyetlen operandus az alsó sorba való: előbb a blokk, majd egy OR, így elmarad a(z) %1</translation>
     </message>
     <message>
         <location line="+7"/>
         <source>The block after a single contact can move to the front and drop the %1</source>
-        <translation type="unfinished"></translation>
+        <translation>Az egyetlen érintkező utáni blokk előre kerülhet, így elmarad a(z) %1</translation>
     </message>
     <message>
         <location line="+13"/>
         <source>MPS nests more than %1 deep</source>
-        <translation type="unfinished"></translation>
+        <translation>Az MPS-ek egymásba ágyazása %1 szintnél mélyebb</translation>
     </message>
     <message>
         <location line="+6"/>
         <source>%1 without a matching MPS</source>
-        <translation type="unfinished"></translation>
+        <translation>%1 hozzá tartozó MPS nélkül</translation>
     </message>
     <message>
         <location line="+7"/>
         <source>An output with no contacts of its own belongs on top of the branch and needs no %1</source>
-        <translation type="unfinished"></translation>
+        <translation>A saját érintkező nélküli kimenet az ág tetejére való, és nem kell hozzá %1</translation>
     </message>
     <message numerus="yes">
         <location line="+15"/>
         <source>%n MPS left without MPP at the end of the rung</source>
-        <translation type="unfinished">
-            <numerusform></numerusform>
+        <translation>
+            <numerusform>%n MPS maradt MPP nélkül a létrafok végén</numerusform>
         </translation>
     </message>
     <message>
         <location line="+16"/>
         <source>END is missing</source>
-        <translation type="unfinished"></translation>
+        <translation>Hiányzik az END</translation>
     </message>
     <message>
         <location line="+6"/>
         <source>Instructions after END are never executed</source>
-        <translation type="unfinished"></translation>
+        <translation>Az END utáni utasítások sosem hajtódnak végre</translation>
     </message>
     <message>
         <location line="+14"/>
         <source>IL inside IL: close the first with ILC</source>
-        <translation type="unfinished"></translation>
+        <translation>IL az IL-en belül: az elsőt zárja le ILC-vel</translation>
     </message>
     <message>
         <location line="+6"/>
         <source>ILC without IL (&quot;IL (JMP) missing&quot;)</source>
-        <translation type="unfinished"></translation>
+        <translation>ILC IL nélkül (&quot;IL (JMP) missing&quot;)</translation>
     </message>
     <message>
         <location line="+3"/>
         <source>IL-JMP interlace: the jump opened inside the interlock is still open</source>
-        <translation type="unfinished"></translation>
+        <translation>IL-JMP átfedés: a reteszelésen belül nyitott ugrás még nyitva van</translation>
     </message>
     <message>
         <location line="+9"/>
         <source>Jump number %1 is beyond 00..%2</source>
-        <translation type="unfinished"></translation>
+        <translation>A(z) %1 ugrásszám kívül esik a 00..%2 tartományon</translation>
     </message>
     <message>
         <location line="+8"/>
         <source>JMP inside JMP: close the first jump</source>
-        <translation type="unfinished"></translation>
+        <translation>JMP a JMP-n belül: zárja le az első ugrást</translation>
     </message>
     <message>
         <location line="+9"/>
         <source>A second %1 %2: several JMP may share a number, only one JME</source>
-        <translation type="unfinished"></translation>
+        <translation>Második %1 %2: több JMP osztozhat egy számon, de csak egy JME lehet</translation>
     </message>
     <message>
         <location line="+8"/>
         <source>%1 %2 without a JMP before it</source>
-        <translation type="unfinished"></translation>
+        <translation>%1 %2 előtte lévő JMP nélkül</translation>
     </message>
     <message>
         <location line="+6"/>
         <source>%1 without JMP (&quot;IL (JMP) missing&quot;)</source>
-        <translation type="unfinished"></translation>
+        <translation>%1 JMP nélkül (&quot;IL (JMP) missing&quot;)</translation>
     </message>
     <message>
         <location line="+3"/>
         <source>IL-JMP interlace: the interlock opened inside the jump is still open</source>
-        <translation type="unfinished"></translation>
+        <translation>IL-JMP átfedés: az ugráson belül nyitott reteszelés még nyitva van</translation>
     </message>
     <message>
         <location line="+15"/>
         <source>IL without ILC</source>
-        <translation type="unfinished"></translation>
+        <translation>IL ILC nélkül</translation>
     </message>
     <message>
         <location line="+3"/>
         <source>JMP without its end (%1)</source>
-        <translation type="unfinished"></translation>
+        <translation>JMP lezárás nélkül (%1)</translation>
     </message>
     <message>
         <location line="+6"/>
         <source>JMP %1 has no JME %1</source>
-        <translation type="unfinished"></translation>
+        <translation>A JMP %1 utasításnak nincs JME %1 párja</translation>
     </message>
     <message>
         <location line="+2"/>
         <source>The step ladder is not closed with RET</source>
-        <translation type="unfinished"></translation>
+        <translation>A léptetőlánc nincs RET-tel lezárva</translation>
     </message>
     <message>
         <location line="+25"/>
         <source>Set value %1 is out of range</source>
-        <translation type="unfinished"></translation>
+        <translation>A(z) %1 beállított érték tartományon kívül esik</translation>
     </message>
     <message>
         <location line="+16"/>
         <source>%1 cannot be written: %2 are read-only</source>
-        <translation type="unfinished"></translation>
+        <translation>%1 nem írható (%2: csak olvasható)</translation>
     </message>
     <message>
         <location line="+15"/>
         <source>Number %1 is used as a timer and as a counter; they share one bank</source>
-        <translation type="unfinished"></translation>
+        <translation>A(z) %1 szám időzítőként és számlálóként is használatban van; közös tartományuk van</translation>
     </message>
     <message>
         <location line="+22"/>
         <source>%1 is driven twice (&quot;Oper duplication&quot;); the first is on line %2</source>
-        <translation type="unfinished"></translation>
+        <translation>%1 kétszer van vezérelve (&quot;Oper duplication&quot;); az első a(z) %2. sorban</translation>
     </message>
     <message>
         <location line="+3"/>
         <source>%1 is driven twice; the later one wins (first on line %2)</source>
-        <translation type="unfinished"></translation>
+        <translation>%1 kétszer van vezérelve; a későbbi érvényesül (az első a(z) %2. sorban)</translation>
     </message>
     <message>
         <location line="+7"/>
         <source>%1 is driven twice (&quot;Oper duplication&quot;); the first is in rung %2</source>
-        <translation type="unfinished"></translation>
+        <translation>%1 kétszer van vezérelve (&quot;Oper duplication&quot;); az első a(z) %2. létrafokon</translation>
     </message>
     <message>
         <location line="+2"/>
         <source>%1 is driven twice; the later one wins (first in rung %2)</source>
-        <translation type="unfinished"></translation>
+        <translation>%1 kétszer van vezérelve; a későbbi érvényesül (az első a(z) %2. létrafokon)</translation>
     </message>
     <message>
         <location line="+13"/>
         <source>The program needs %1 steps; %2 holds %3</source>
-        <translation type="unfinished"></translation>
+        <translation>A program %1 lépést igényel; a(z) %2 kapacitása %3</translation>
     </message>
 </context>
 <context>
@@ -1618,43 +1631,43 @@ Ladder and instruction-list editor for VPC, Vigor, CPM1 and PL110.</source>
     <message>
         <location filename="../model/convert_to_ladder.cpp" line="+272"/>
         <source>%1 has no block to continue; start the rung with a load</source>
-        <translation type="unfinished"></translation>
+        <translation>%1 előtt nincs folytatható blokk; a létrafokot töltő (LD) utasítással kezdje</translation>
     </message>
     <message>
         <location line="+8"/>
         <location line="+16"/>
         <source>%1 has no block to join in parallel</source>
-        <translation type="unfinished"></translation>
+        <translation>%1 előtt nincs párhuzamosan kapcsolható blokk</translation>
     </message>
     <message numerus="yes">
         <location line="-9"/>
         <source>%1 needs two blocks, but %n is open</source>
-        <translation type="unfinished">
-            <numerusform></numerusform>
+        <translation>
+            <numerusform>%1 két blokkot igényel, de %n nyitott</numerusform>
         </translation>
     </message>
     <message numerus="yes">
         <location line="+17"/>
         <source>MPS needs exactly one open block, but %n is open</source>
-        <translation type="unfinished">
-            <numerusform></numerusform>
+        <translation>
+            <numerusform>Az MPS pontosan egy nyitott blokkot igényel, de %n nyitott</numerusform>
         </translation>
     </message>
     <message>
         <location line="+11"/>
         <source>%1 without a matching MPS</source>
-        <translation type="unfinished"></translation>
+        <translation>%1 hozzá tartozó MPS nélkül</translation>
     </message>
     <message>
         <location line="+15"/>
         <source>%1 needs %2 input blocks, but %3 are open</source>
-        <translation type="unfinished"></translation>
+        <translation>%1 %2 bemeneti blokkot igényel, de %3 nyitott</translation>
     </message>
     <message>
         <location line="+9"/>
         <location filename="../model/convert_to_list.cpp" line="+43"/>
         <source>%1 has an input with no condition</source>
-        <translation type="unfinished"></translation>
+        <translation>%1 egyik bemenetének nincs feltétele</translation>
     </message>
     <message>
         <location line="+14"/>
@@ -1662,64 +1675,64 @@ Ladder and instruction-list editor for VPC, Vigor, CPM1 and PL110.</source>
         <location line="+5"/>
         <location filename="../model/convert_to_list.cpp" line="+10"/>
         <source>%1 has no condition</source>
-        <translation type="unfinished"></translation>
+        <translation>%1 feltétel nélküli</translation>
     </message>
     <message>
         <location line="-4"/>
         <source>%1 needs one block, but %2 are open</source>
-        <translation type="unfinished"></translation>
+        <translation>%1 egy blokkot igényel, de %2 nyitott</translation>
     </message>
     <message>
         <location line="+39"/>
         <source>The rung starting on line %1 ends without an output</source>
-        <translation type="unfinished"></translation>
+        <translation>A(z) %1. sorban kezdődő létrafok kimenet nélkül ér véget</translation>
     </message>
     <message numerus="yes">
         <location line="+4"/>
         <source>The rung starting on line %1 leaves %n MPS without MPP</source>
-        <translation type="unfinished">
-            <numerusform></numerusform>
+        <translation>
+            <numerusform>A(z) %1. sorban kezdődő létrafok %n MPS-t hagy MPP nélkül</numerusform>
         </translation>
     </message>
     <message>
         <location filename="../model/convert_to_list.cpp" line="+26"/>
         <source>%1 has no INV element</source>
-        <translation type="unfinished"></translation>
+        <translation>%1 nem tartalmaz INV elemet</translation>
     </message>
     <message>
         <location line="+1"/>
         <source>%1 has no such contact</source>
-        <translation type="unfinished"></translation>
+        <translation>%1 nem rendelkezik ilyen érintkezővel</translation>
     </message>
     <message>
         <location line="+14"/>
         <source>%1 has no branch stack</source>
-        <translation type="unfinished"></translation>
+        <translation>%1 nem rendelkezik elágazási veremmel</translation>
     </message>
     <message>
         <location line="+16"/>
         <source>A block cannot start with INV</source>
-        <translation type="unfinished"></translation>
+        <translation>Blokk nem kezdődhet INV-vel</translation>
     </message>
     <message>
         <location line="+4"/>
         <source>An output has no condition</source>
-        <translation type="unfinished"></translation>
+        <translation>Egy kimenetnek nincs feltétele</translation>
     </message>
     <message>
         <location line="+135"/>
         <source>A box with several inputs must stand alone in its rung</source>
-        <translation type="unfinished"></translation>
+        <translation>A több bemenetű doboznak egyedül kell állnia a létrafokán</translation>
     </message>
     <message>
         <location line="+11"/>
         <source>Row %1 is not connected to the left rail</source>
-        <translation type="unfinished"></translation>
+        <translation>A(z) %1. sor nincs a bal oldali gyűjtősínhez kötve</translation>
     </message>
     <message>
         <location line="+3"/>
         <source>Reverse current: the network feeding row %1 can only close through an element crossed right to left</source>
-        <translation type="unfinished"></translation>
+        <translation>Visszáram: a(z) %1. sort tápláló hálózat csak jobbról balra bejárt elemen át záródhat</translation>
     </message>
 </context>
 <context>
@@ -1727,97 +1740,97 @@ Ladder and instruction-list editor for VPC, Vigor, CPM1 and PL110.</source>
     <message>
         <location filename="../model/il_parse.cpp" line="+120"/>
         <source>Too many errors; the rest of the listing was not read</source>
-        <translation type="unfinished"></translation>
+        <translation>Túl sok hiba; a lista többi része nem lett beolvasva</translation>
     </message>
     <message>
         <location line="+110"/>
         <source>Unknown instruction &apos;%1&apos; for %2</source>
-        <translation type="unfinished"></translation>
+        <translation>Ismeretlen utasítás: &apos;%1&apos; (%2)</translation>
     </message>
     <message>
         <location line="+3"/>
         <source>Unknown instruction &apos;%1&apos; for %2; did you mean %3?</source>
-        <translation type="unfinished"></translation>
+        <translation>Ismeretlen utasítás: &apos;%1&apos; (%2); erre gondolt: %3?</translation>
     </message>
     <message>
         <location line="+44"/>
         <source>%1 cannot compare values</source>
-        <translation type="unfinished"></translation>
+        <translation>%1 nem tud értékeket összehasonlítani</translation>
     </message>
     <message>
         <location line="+19"/>
         <source>A second operand is missing after &apos;%1&apos;</source>
-        <translation type="unfinished"></translation>
+        <translation>Hiányzik a második operandus &apos;%1&apos; után</translation>
     </message>
     <message>
         <location line="+19"/>
         <location line="+169"/>
         <source>&apos;%1...&apos; is too long for an operand</source>
-        <translation type="unfinished"></translation>
+        <translation>A(z) &apos;%1...&apos; túl hosszú egy operandushoz</translation>
     </message>
     <message numerus="yes">
         <location line="-110"/>
         <source>%1 needs %n operand(s): %2</source>
-        <translation type="unfinished">
-            <numerusform></numerusform>
+        <translation>
+            <numerusform>%1 %n operandust igényel: %2</numerusform>
         </translation>
     </message>
     <message>
         <location line="+9"/>
         <source>%1 takes no operand</source>
-        <translation type="unfinished"></translation>
+        <translation>%1 nem vár operandust</translation>
     </message>
     <message numerus="yes">
         <location line="+1"/>
         <source>Unexpected &apos;%1&apos;: %2 takes %n operand(s)</source>
-        <translation type="unfinished">
-            <numerusform></numerusform>
+        <translation>
+            <numerusform>Váratlan &apos;%1&apos;: %2 %n operandust vár</numerusform>
         </translation>
     </message>
     <message>
         <location line="+28"/>
         <source>%1: a set value is a BCD constant #0000..#9999 or a channel</source>
-        <translation type="unfinished"></translation>
+        <translation>%1: a beállított érték BCD konstans (#0000..#9999) vagy csatorna</translation>
     </message>
     <message>
         <location line="+23"/>
         <source>%1 is out of range: %2..%3 fit here</source>
-        <translation type="unfinished"></translation>
+        <translation>%1 tartományon kívül esik: itt %2..%3 lehet</translation>
     </message>
     <message>
         <location line="+60"/>
         <source>%1: a label number is expected</source>
-        <translation type="unfinished"></translation>
+        <translation>%1: címkeszám kell</translation>
     </message>
     <message>
         <location line="+43"/>
         <source>%1 is a constant; a device is expected here</source>
-        <translation type="unfinished"></translation>
+        <translation>%1 konstans; ide operandus kell</translation>
     </message>
     <message>
         <location line="+13"/>
         <source>%1: %2 is expected here</source>
-        <translation type="unfinished"></translation>
+        <translation>%1: itt %2 kell</translation>
     </message>
     <message>
         <location line="+6"/>
         <source>a timer</source>
-        <translation type="unfinished"></translation>
+        <translation>egy időzítő</translation>
     </message>
     <message>
         <location line="+4"/>
         <source>a counter</source>
-        <translation type="unfinished"></translation>
+        <translation>egy számláló</translation>
     </message>
     <message>
         <location line="+4"/>
         <source>a step relay</source>
-        <translation type="unfinished"></translation>
+        <translation>egy lépésrelé</translation>
     </message>
     <message>
         <location line="+7"/>
         <source>a bit device</source>
-        <translation type="unfinished"></translation>
+        <translation>egy bit típusú operandus</translation>
     </message>
 </context>
 <context>
@@ -1825,68 +1838,68 @@ Ladder and instruction-list editor for VPC, Vigor, CPM1 and PL110.</source>
     <message>
         <location filename="../model/ladder_text.cpp" line="+206"/>
         <source>A ladder text starts with &quot;LADDER &lt;target&gt; WIDTH &lt;n&gt;&quot;</source>
-        <translation type="unfinished"></translation>
+        <translation>A létra-szöveg így kezdődik: &quot;LADDER &lt;target&gt; WIDTH &lt;n&gt;&quot;</translation>
     </message>
     <message>
         <location line="+4"/>
         <source>This ladder is for %1, not %2</source>
-        <translation type="unfinished"></translation>
+        <translation>Ez a létradiagram a(z) %1 rendszerhez készült, nem a(z) %2 rendszerhez</translation>
     </message>
     <message>
         <location line="+6"/>
         <source>The cell width must be a number from 5 to 200</source>
-        <translation type="unfinished"></translation>
+        <translation>A cellaszélesség 5 és 200 közötti szám lehet</translation>
     </message>
     <message>
         <location line="+17"/>
         <source>Expected &quot;RUNG &lt;n&gt; ROWS &lt;rows&gt; COLUMNS &lt;columns&gt;&quot;</source>
-        <translation type="unfinished"></translation>
+        <translation>A várt forma: &quot;RUNG &lt;n&gt; ROWS &lt;rows&gt; COLUMNS &lt;columns&gt;&quot;</translation>
     </message>
     <message>
         <location line="+17"/>
         <location line="+8"/>
         <source>The rung has fewer rows than its header says</source>
-        <translation type="unfinished"></translation>
+        <translation>A létrafoknak kevesebb sora van, mint amennyit a fejléce megad</translation>
     </message>
     <message>
         <location line="+14"/>
         <source>A row starts with the left rail &apos;|&apos;</source>
-        <translation type="unfinished"></translation>
+        <translation>A sor a bal oldali &apos;|&apos; gyűjtősínnel kezdődik</translation>
     </message>
     <message>
         <location line="+14"/>
         <source>A cell is empty, a wire, or a contact &quot;-[ X0 ]-&quot;</source>
-        <translation type="unfinished"></translation>
+        <translation>A cella üres, vezeték, vagy egy &quot;-[ X0 ]-&quot; érintkező</translation>
     </message>
     <message>
         <location line="+16"/>
         <source>An output is written in parentheses: (OUT Y0)</source>
-        <translation type="unfinished"></translation>
+        <translation>A kimenetet zárójelben kell írni: (OUT Y0)</translation>
     </message>
     <message>
         <location line="+6"/>
         <source>(^) marks a further input of a box above it</source>
-        <translation type="unfinished"></translation>
+        <translation>A (^) a fölötte álló doboz további bemenetét jelöli</translation>
     </message>
     <message>
         <location line="+10"/>
         <source>One output instruction is expected</source>
-        <translation type="unfinished"></translation>
+        <translation>Egy kimeneti utasítás a várt</translation>
     </message>
     <message>
         <location line="+50"/>
         <source>&apos;%1&apos; is not a contact mark (&apos; &apos;, &apos;/&apos;, &apos;P&apos;, &apos;N&apos;, &apos;~&apos;)</source>
-        <translation type="unfinished"></translation>
+        <translation>A(z) &apos;%1&apos; nem érintkezőjel (&apos; &apos;, &apos;/&apos;, &apos;P&apos;, &apos;N&apos;, &apos;~&apos;)</translation>
     </message>
     <message>
         <location line="+4"/>
         <source>The contact has no device</source>
-        <translation type="unfinished"></translation>
+        <translation>Az érintkezőnek nincs operandusa</translation>
     </message>
     <message>
         <location line="+93"/>
         <source>&apos;%1&apos; is not a contact</source>
-        <translation type="unfinished"></translation>
+        <translation>A(z) &apos;%1&apos; nem érintkező</translation>
     </message>
 </context>
 <context>
@@ -1894,167 +1907,167 @@ Ladder and instruction-list editor for VPC, Vigor, CPM1 and PL110.</source>
     <message>
         <location filename="../model/project.cpp" line="+109"/>
         <source>Line %1, column %2 (byte %3): the file is not valid JSON (%4)</source>
-        <translation type="unfinished"></translation>
+        <translation>%1. sor, %2. oszlop (%3. bájt): a fájl nem érvényes JSON (%4)</translation>
     </message>
     <message>
         <location line="+8"/>
         <source>The file is JSON but not a Rung Studio project (no top-level object)</source>
-        <translation type="unfinished"></translation>
+        <translation>A fájl JSON, de nem Rung Studio projekt (nincs legfelső szintű objektum)</translation>
     </message>
     <message>
         <location line="+4"/>
         <source>The file is JSON but not a Rung Studio project (&quot;format&quot; is not &quot;%1&quot;)</source>
-        <translation type="unfinished"></translation>
+        <translation>A fájl JSON, de nem Rung Studio projekt (a &quot;format&quot; nem &quot;%1&quot;)</translation>
     </message>
     <message>
         <location line="+5"/>
         <source>The project was written by a newer Rung Studio (schema %1); this version reads schema %2 and older</source>
-        <translation type="unfinished"></translation>
+        <translation>A projektet egy újabb Rung Studio írta (%1. séma); ez a verzió a %2. és korábbi sémát olvassa</translation>
     </message>
     <message>
         <location line="+5"/>
         <source>&quot;schema&quot; must be a positive number</source>
-        <translation type="unfinished"></translation>
+        <translation>A &quot;schema&quot; pozitív szám kell legyen</translation>
     </message>
     <message>
         <location line="+12"/>
         <source>&quot;target&quot;: unknown PLC family &quot;%1&quot;</source>
-        <translation type="unfinished"></translation>
+        <translation>&quot;target&quot;: ismeretlen PLC-család: &quot;%1&quot;</translation>
     </message>
     <message>
         <location line="+5"/>
         <source>&quot;model&quot;: %1 has no model &quot;%2&quot;</source>
-        <translation type="unfinished"></translation>
+        <translation>&quot;model&quot;: a(z) %1 rendszernek nincs &quot;%2&quot; modellje</translation>
     </message>
     <message>
         <location line="+16"/>
         <source>%1: an object with &quot;device&quot; and &quot;name&quot; is expected</source>
-        <translation type="unfinished"></translation>
+        <translation>%1: &quot;device&quot; és &quot;name&quot; mezőket tartalmazó objektum a várt</translation>
     </message>
     <message>
         <location line="+22"/>
         <source>setValues.%1: a whole number between -%2 and %2 is expected</source>
-        <translation type="unfinished"></translation>
+        <translation>setValues.%1: -%2 és %2 közötti egész szám a várt</translation>
     </message>
     <message>
         <location line="+10"/>
         <source>%1: an object with &quot;name&quot; and &quot;devices&quot; is expected</source>
-        <translation type="unfinished"></translation>
+        <translation>%1: &quot;name&quot; és &quot;devices&quot; mezőket tartalmazó objektum a várt</translation>
     </message>
     <message>
         <location line="+11"/>
         <source>%1.devices[%2]: a device name is expected</source>
-        <translation type="unfinished"></translation>
+        <translation>%1.devices[%2]: operandusnév a várt</translation>
     </message>
     <message>
         <location line="+18"/>
         <source>a string</source>
-        <translation type="unfinished"></translation>
+        <translation>karakterlánc</translation>
     </message>
     <message>
         <location line="+2"/>
         <source>an array</source>
-        <translation type="unfinished"></translation>
+        <translation>tömb</translation>
     </message>
     <message>
         <location line="+2"/>
         <source>an object</source>
-        <translation type="unfinished"></translation>
+        <translation>objektum</translation>
     </message>
     <message>
         <location line="+2"/>
         <source>a number</source>
-        <translation type="unfinished"></translation>
+        <translation>szám</translation>
     </message>
     <message>
         <location line="+2"/>
         <source>another value</source>
-        <translation type="unfinished"></translation>
+        <translation>egyéb érték</translation>
     </message>
     <message>
         <location line="+14"/>
         <source>%1: %2 is expected</source>
-        <translation type="unfinished"></translation>
+        <translation>%1: a várt típus: %2</translation>
     </message>
     <message>
         <location line="+100"/>
         <source>%1.outputs: [row, &quot;instruction&quot;] with a row inside the rung is expected</source>
-        <translation type="unfinished"></translation>
+        <translation>%1.outputs: [sor, &quot;utasítás&quot;] a várt forma, a létrafokon belüli sorral</translation>
     </message>
     <message>
         <location line="+6"/>
         <source>%1.outputs: row %2 has two outputs</source>
-        <translation type="unfinished"></translation>
+        <translation>%1.outputs: a(z) %2. sornak két kimenete van</translation>
     </message>
     <message>
         <location line="+21"/>
         <source>%1.outputs: &quot;%2&quot; takes up to %3 input rows, one box per rung</source>
-        <translation type="unfinished"></translation>
+        <translation>%1.outputs: &quot;%2&quot; legfeljebb %3 bemeneti sort fogad, létrafokonként egy dobozt</translation>
     </message>
     <message>
         <location line="+9"/>
         <source>%1.outputs: the input rows of &quot;%2&quot; start at its own row and go down inside the rung</source>
-        <translation type="unfinished"></translation>
+        <translation>%1.outputs: &quot;%2&quot; bemeneti sorai a saját sorától indulnak lefelé, a létrafokon belül</translation>
     </message>
     <message>
         <location line="-119"/>
         <source>%1: a rung object is expected</source>
-        <translation type="unfinished"></translation>
+        <translation>%1: létrafok-objektum a várt</translation>
     </message>
     <message>
         <location line="+12"/>
         <source>%1: &quot;rows&quot; must be 1..1000 and &quot;columns&quot; 0..1000</source>
-        <translation type="unfinished"></translation>
+        <translation>%1: a &quot;rows&quot; értéke 1..1000, a &quot;columns&quot; értéke 0..1000 lehet</translation>
     </message>
     <message>
         <location line="+7"/>
         <source>%1.cells: %2 rows are expected, the file has %3</source>
-        <translation type="unfinished"></translation>
+        <translation>%1.cells: %2 sor a várt, a fájlban %3 van</translation>
     </message>
     <message>
         <location line="+8"/>
         <source>%1.cells[%2]: an array of cells is expected</source>
-        <translation type="unfinished"></translation>
+        <translation>%1.cells[%2]: cellák tömbje a várt</translation>
     </message>
     <message>
         <location line="+5"/>
         <source>%1.cells[%2]: %3 cells are expected, the file has %4</source>
-        <translation type="unfinished"></translation>
+        <translation>%1.cells[%2]: %3 cella a várt, a fájlban %4 van</translation>
     </message>
     <message>
         <location line="+9"/>
         <source>%1.cells[%2][%3]: a cell is a string (&quot;&quot;, &quot;-&quot; or a contact)</source>
-        <translation type="unfinished"></translation>
+        <translation>%1.cells[%2][%3]: a cella egy karakterlánc (&quot;&quot;, &quot;-&quot; vagy egy érintkező)</translation>
     </message>
     <message>
         <location line="+33"/>
         <source>%1.links: [%2, %3] is outside the rung</source>
-        <translation type="unfinished"></translation>
+        <translation>%1.links: [%2, %3] a létrafokon kívül esik</translation>
     </message>
     <message>
         <location line="+23"/>
         <source>one instruction is expected</source>
-        <translation type="unfinished"></translation>
+        <translation>egyetlen utasítás a várt</translation>
     </message>
     <message>
         <location line="+91"/>
         <source>%1: cannot open the file (%2)</source>
-        <translation type="unfinished"></translation>
+        <translation>%1: a fájl nem nyitható meg (%2)</translation>
     </message>
     <message>
         <location line="+5"/>
         <source>%1: the file is %2 MB; a project is at most %3 MB</source>
-        <translation type="unfinished"></translation>
+        <translation>%1: a fájl %2 MB; egy projekt legfeljebb %3 MB lehet</translation>
     </message>
     <message>
         <location line="+19"/>
         <source>%1: cannot write the file (%2)</source>
-        <translation type="unfinished"></translation>
+        <translation>%1: a fájl nem írható (%2)</translation>
     </message>
     <message>
         <location line="+6"/>
         <source>%1: saving failed (%2); the previous file is unchanged</source>
-        <translation type="unfinished"></translation>
+        <translation>%1: a mentés sikertelen (%2); az előző fájl változatlan</translation>
     </message>
 </context>
 <context>
@@ -2062,27 +2075,27 @@ Ladder and instruction-list editor for VPC, Vigor, CPM1 and PL110.</source>
     <message>
         <location filename="../model/target_cpm1.cpp" line="+36"/>
         <source>input channels</source>
-        <translation type="unfinished"></translation>
+        <translation>bemeneti csatornák</translation>
     </message>
     <message>
         <location line="+3"/>
         <source>output channels</source>
-        <translation type="unfinished"></translation>
+        <translation>kimeneti csatornák</translation>
     </message>
     <message>
         <location line="+2"/>
         <source>work channels</source>
-        <translation type="unfinished"></translation>
+        <translation>munkacsatornák</translation>
     </message>
     <message>
         <location line="+2"/>
         <source>special channels</source>
-        <translation type="unfinished"></translation>
+        <translation>speciális csatornák</translation>
     </message>
     <message>
         <location line="+4"/>
         <source>holding relays</source>
-        <translation type="unfinished"></translation>
+        <translation>tartórelék</translation>
     </message>
     <message>
         <location line="+5"/>
@@ -2090,7 +2103,7 @@ Ladder and instruction-list editor for VPC, Vigor, CPM1 and PL110.</source>
         <location filename="../model/target_vigor.cpp" line="+115"/>
         <location filename="../model/target_vpc.cpp" line="+61"/>
         <source>timers</source>
-        <translation type="unfinished"></translation>
+        <translation>időzítők</translation>
     </message>
     <message>
         <location line="+4"/>
@@ -2098,73 +2111,73 @@ Ladder and instruction-list editor for VPC, Vigor, CPM1 and PL110.</source>
         <location filename="../model/target_vigor.cpp" line="+1"/>
         <location filename="../model/target_vpc.cpp" line="+5"/>
         <source>counters</source>
-        <translation type="unfinished"></translation>
+        <translation>számlálók</translation>
     </message>
     <message>
         <location line="+5"/>
         <source>data memory</source>
-        <translation type="unfinished"></translation>
+        <translation>adatmemória</translation>
     </message>
     <message>
         <location line="+4"/>
         <source>read-only data memory</source>
-        <translation type="unfinished"></translation>
+        <translation>csak olvasható adatmemória</translation>
     </message>
     <message>
         <location line="+7"/>
         <source>always ON</source>
-        <translation type="unfinished"></translation>
+        <translation>mindig BE</translation>
     </message>
     <message>
         <location line="+2"/>
         <source>always OFF</source>
-        <translation type="unfinished"></translation>
+        <translation>mindig KI</translation>
     </message>
     <message>
         <location line="+2"/>
         <location filename="../model/target_pl110.cpp" line="+41"/>
         <location filename="../model/target_vigor.cpp" line="+21"/>
         <source>ON for the first scan</source>
-        <translation type="unfinished"></translation>
+        <translation>az első ciklusban BE</translation>
     </message>
     <message>
         <location line="+2"/>
         <location filename="../model/target_vigor.cpp" line="+8"/>
         <source>1 min clock</source>
-        <translation type="unfinished"></translation>
+        <translation>1 perces órajel</translation>
     </message>
     <message>
         <location line="+2"/>
         <source>0.02 s clock</source>
-        <translation type="unfinished"></translation>
+        <translation>0,02 s-os órajel</translation>
     </message>
     <message>
         <location line="+2"/>
         <location filename="../model/target_vpc.cpp" line="+57"/>
         <source>0.1 s clock</source>
-        <translation type="unfinished"></translation>
+        <translation>0,1 s-os órajel</translation>
     </message>
     <message>
         <location line="+2"/>
         <source>0.2 s clock</source>
-        <translation type="unfinished"></translation>
+        <translation>0,2 s-os órajel</translation>
     </message>
     <message>
         <location line="+2"/>
         <location filename="../model/target_vigor.cpp" line="-2"/>
         <location filename="../model/target_vpc.cpp" line="+2"/>
         <source>1 s clock</source>
-        <translation type="unfinished"></translation>
+        <translation>1 s-os órajel</translation>
     </message>
     <message>
         <location line="+2"/>
         <source>analog setting 0 (BCD 0..200)</source>
-        <translation type="unfinished"></translation>
+        <translation>0. analóg beállítás (BCD 0..200)</translation>
     </message>
     <message>
         <location line="+2"/>
         <source>analog setting 1 (BCD 0..200)</source>
-        <translation type="unfinished"></translation>
+        <translation>1. analóg beállítás (BCD 0..200)</translation>
     </message>
     <message>
         <location line="+5"/>
@@ -2172,7 +2185,7 @@ Ladder and instruction-list editor for VPC, Vigor, CPM1 and PL110.</source>
         <location filename="../model/target_vigor.cpp" line="+56"/>
         <location filename="../model/target_vpc.cpp" line="+5"/>
         <source>Start a block with a normally open contact</source>
-        <translation type="unfinished"></translation>
+        <translation>Blokk kezdése záró érintkezővel</translation>
     </message>
     <message>
         <location line="+3"/>
@@ -2180,7 +2193,7 @@ Ladder and instruction-list editor for VPC, Vigor, CPM1 and PL110.</source>
         <location filename="../model/target_vigor.cpp" line="+3"/>
         <location filename="../model/target_vpc.cpp" line="+1"/>
         <source>Start a block with a normally closed contact</source>
-        <translation type="unfinished"></translation>
+        <translation>Blokk kezdése nyitó érintkezővel</translation>
     </message>
     <message>
         <location line="+3"/>
@@ -2188,7 +2201,7 @@ Ladder and instruction-list editor for VPC, Vigor, CPM1 and PL110.</source>
         <location filename="../model/target_vigor.cpp" line="+9"/>
         <location filename="../model/target_vpc.cpp" line="+2"/>
         <source>Normally open contact in series</source>
-        <translation type="unfinished"></translation>
+        <translation>Záró érintkező sorosan</translation>
     </message>
     <message>
         <location line="+2"/>
@@ -2196,7 +2209,7 @@ Ladder and instruction-list editor for VPC, Vigor, CPM1 and PL110.</source>
         <location filename="../model/target_vigor.cpp" line="+3"/>
         <location filename="../model/target_vpc.cpp" line="+1"/>
         <source>Normally closed contact in series</source>
-        <translation type="unfinished"></translation>
+        <translation>Nyitó érintkező sorosan</translation>
     </message>
     <message>
         <location line="+2"/>
@@ -2204,7 +2217,7 @@ Ladder and instruction-list editor for VPC, Vigor, CPM1 and PL110.</source>
         <location filename="../model/target_vigor.cpp" line="+9"/>
         <location filename="../model/target_vpc.cpp" line="+2"/>
         <source>Normally open contact in parallel</source>
-        <translation type="unfinished"></translation>
+        <translation>Záró érintkező párhuzamosan</translation>
     </message>
     <message>
         <location line="+2"/>
@@ -2212,7 +2225,7 @@ Ladder and instruction-list editor for VPC, Vigor, CPM1 and PL110.</source>
         <location filename="../model/target_vigor.cpp" line="+3"/>
         <location filename="../model/target_vpc.cpp" line="+1"/>
         <source>Normally closed contact in parallel</source>
-        <translation type="unfinished"></translation>
+        <translation>Nyitó érintkező párhuzamosan</translation>
     </message>
     <message>
         <location line="+4"/>
@@ -2220,7 +2233,7 @@ Ladder and instruction-list editor for VPC, Vigor, CPM1 and PL110.</source>
         <location filename="../model/target_vigor.cpp" line="+21"/>
         <location filename="../model/target_vpc.cpp" line="+2"/>
         <source>Connect the last two blocks in series</source>
-        <translation type="unfinished"></translation>
+        <translation>Az utolsó két blokk soros kapcsolása</translation>
     </message>
     <message>
         <location line="+2"/>
@@ -2228,7 +2241,7 @@ Ladder and instruction-list editor for VPC, Vigor, CPM1 and PL110.</source>
         <location filename="../model/target_vigor.cpp" line="+3"/>
         <location filename="../model/target_vpc.cpp" line="+2"/>
         <source>Connect the last two blocks in parallel</source>
-        <translation type="unfinished"></translation>
+        <translation>Az utolsó két blokk párhuzamos kapcsolása</translation>
     </message>
     <message>
         <location line="+2"/>
@@ -2236,93 +2249,93 @@ Ladder and instruction-list editor for VPC, Vigor, CPM1 and PL110.</source>
         <location filename="../model/target_vigor.cpp" line="+12"/>
         <location filename="../model/target_vpc.cpp" line="+2"/>
         <source>Output coil</source>
-        <translation type="unfinished"></translation>
+        <translation>Kimeneti tekercs</translation>
     </message>
     <message>
         <location line="+2"/>
         <location filename="../model/target_vpc.cpp" line="+3"/>
         <source>Inverted output coil</source>
-        <translation type="unfinished"></translation>
+        <translation>Negált kimeneti tekercs</translation>
     </message>
     <message>
         <location line="+3"/>
         <source>Set (latch) a bit</source>
-        <translation type="unfinished"></translation>
+        <translation>Bit beállítása (tárolás)</translation>
     </message>
     <message>
         <location line="+2"/>
         <source>Reset a bit</source>
-        <translation type="unfinished"></translation>
+        <translation>Bit törlése</translation>
     </message>
     <message>
         <location line="+3"/>
         <source>Keep: set = last but one block, reset = last block; reset wins</source>
-        <translation type="unfinished"></translation>
+        <translation>Keep: beállítás = utolsó előtti blokk, törlés = utolsó blokk; a törlés az erősebb</translation>
     </message>
     <message>
         <location line="+6"/>
         <location filename="../model/target_vigor.cpp" line="+9"/>
         <source>ON for one scan on a rising edge</source>
-        <translation type="unfinished"></translation>
+        <translation>Egy ciklusig BE felfutó élre</translation>
     </message>
     <message>
         <location line="+4"/>
         <location filename="../model/target_vigor.cpp" line="+3"/>
         <source>ON for one scan on a falling edge</source>
-        <translation type="unfinished"></translation>
+        <translation>Egy ciklusig BE lefutó élre</translation>
     </message>
     <message>
         <location line="+4"/>
         <source>Timer, 0.1 s, counts down from the BCD set value</source>
-        <translation type="unfinished"></translation>
+        <translation>Időzítő, 0,1 s, a BCD beállított értéktől lefelé számol</translation>
     </message>
     <message>
         <location line="+5"/>
         <source>High-speed timer, 0.01 s, counts down from the BCD set value</source>
-        <translation type="unfinished"></translation>
+        <translation>Nagysebességű időzítő, 0,01 s, a BCD beállított értéktől lefelé számol</translation>
     </message>
     <message>
         <location line="+5"/>
         <source>Down counter: count = last but one block, reset = last block</source>
-        <translation type="unfinished"></translation>
+        <translation>Lefelé számláló: számlálás = utolsó előtti blokk, törlés = utolsó blokk</translation>
     </message>
     <message>
         <location line="+5"/>
         <source>Reversible counter: up, down and reset inputs; wraps at the limits</source>
-        <translation type="unfinished"></translation>
+        <translation>Kétirányú számláló: fel, le és törlés bemenet; a határoknál körbefordul</translation>
     </message>
     <message>
         <location line="+7"/>
         <location filename="../model/target_vpc.cpp" line="+41"/>
         <source>Interlock: what follows runs under this condition</source>
-        <translation type="unfinished"></translation>
+        <translation>Reteszelés: ami követi, ezzel a feltétellel fut</translation>
     </message>
     <message>
         <location line="+4"/>
         <location filename="../model/target_vpc.cpp" line="+3"/>
         <source>Clear the interlock</source>
-        <translation type="unfinished"></translation>
+        <translation>A reteszelés feloldása</translation>
     </message>
     <message>
         <location line="+3"/>
         <source>Jump: while OFF, skip to the JME with the same number</source>
-        <translation type="unfinished"></translation>
+        <translation>Ugrás: amíg KI, az azonos számú JME-ig ugrik</translation>
     </message>
     <message>
         <location line="+5"/>
         <source>End of the jump with this number</source>
-        <translation type="unfinished"></translation>
+        <translation>Az ilyen számú ugrás vége</translation>
     </message>
     <message>
         <location line="+4"/>
         <source>Move a channel or a constant</source>
-        <translation type="unfinished"></translation>
+        <translation>Csatorna vagy konstans mozgatása</translation>
     </message>
     <message>
         <location line="+5"/>
         <location filename="../model/target_vigor.cpp" line="+23"/>
         <source>No operation</source>
-        <translation type="unfinished"></translation>
+        <translation>Nincs művelet</translation>
     </message>
     <message>
         <location line="+3"/>
@@ -2330,721 +2343,721 @@ Ladder and instruction-list editor for VPC, Vigor, CPM1 and PL110.</source>
         <location filename="../model/target_vigor.cpp" line="-1"/>
         <location filename="../model/target_vpc.cpp" line="+5"/>
         <source>End of the program</source>
-        <translation type="unfinished"></translation>
+        <translation>A program vége</translation>
     </message>
     <message>
         <location filename="../model/target_pl110.cpp" line="-244"/>
         <source>IF contact: ON while S1 ? S2 is true</source>
-        <translation type="unfinished"></translation>
+        <translation>IF érintkező: BE, amíg S1 ? S2 igaz</translation>
     </message>
     <message>
         <location line="+27"/>
         <source>digital inputs</source>
-        <translation type="unfinished"></translation>
+        <translation>digitális bemenetek</translation>
     </message>
     <message>
         <location line="+4"/>
         <source>digital outputs</source>
-        <translation type="unfinished"></translation>
+        <translation>digitális kimenetek</translation>
     </message>
     <message>
         <location line="+3"/>
         <source>bistable relays</source>
-        <translation type="unfinished"></translation>
+        <translation>bistabil relék</translation>
     </message>
     <message>
         <location line="+2"/>
         <source>markers</source>
-        <translation type="unfinished"></translation>
+        <translation>markerek</translation>
     </message>
     <message>
         <location line="+10"/>
         <source>variables</source>
-        <translation type="unfinished"></translation>
+        <translation>változók</translation>
     </message>
     <message>
         <location line="+6"/>
         <source>special markers</source>
-        <translation type="unfinished"></translation>
+        <translation>speciális markerek</translation>
     </message>
     <message>
         <location line="+6"/>
         <location filename="../model/target_vpc.cpp" line="-106"/>
         <source>analog inputs</source>
-        <translation type="unfinished"></translation>
+        <translation>analóg bemenetek</translation>
     </message>
     <message>
         <location line="+4"/>
         <location filename="../model/target_vpc.cpp" line="+5"/>
         <source>analog outputs</source>
-        <translation type="unfinished"></translation>
+        <translation>analóg kimenetek</translation>
     </message>
     <message>
         <location line="+3"/>
         <source>timer presets</source>
-        <translation type="unfinished"></translation>
+        <translation>időzítők beállított értékei</translation>
     </message>
     <message>
         <location line="+2"/>
         <source>counter presets</source>
-        <translation type="unfinished"></translation>
+        <translation>számlálók beállított értékei</translation>
     </message>
     <message>
         <location line="+2"/>
         <source>EEPROM words</source>
-        <translation type="unfinished"></translation>
+        <translation>EEPROM szavak</translation>
     </message>
     <message>
         <location line="+3"/>
         <source>MMC words</source>
-        <translation type="unfinished"></translation>
+        <translation>MMC szavak</translation>
     </message>
     <message>
         <location line="+3"/>
         <source>display characters</source>
-        <translation type="unfinished"></translation>
+        <translation>kijelző karakterei</translation>
     </message>
     <message>
         <location line="+6"/>
         <source>RUN/STOP (1 = RUN)</source>
-        <translation type="unfinished"></translation>
+        <translation>RUN/STOP (1 = RUN)</translation>
     </message>
     <message>
         <location line="+4"/>
         <source>60 s clock (30 s ON, 30 s OFF)</source>
-        <translation type="unfinished"></translation>
+        <translation>60 s-os órajel (30 s BE, 30 s KI)</translation>
     </message>
     <message>
         <location line="+2"/>
         <source>1 s clock (0.5 s ON, 0.5 s OFF)</source>
-        <translation type="unfinished"></translation>
+        <translation>1 s-os órajel (0,5 s BE, 0,5 s KI)</translation>
     </message>
     <message>
         <location line="+2"/>
         <location filename="../model/target_vpc.cpp" line="+25"/>
         <source>toggles every scan</source>
-        <translation type="unfinished"></translation>
+        <translation>minden ciklusban átvált</translation>
     </message>
     <message>
         <location line="+2"/>
         <source>TEST: inputs are taken from SM37</source>
-        <translation type="unfinished"></translation>
+        <translation>TEST: a bemenetek az SM37-ből jönnek</translation>
     </message>
     <message>
         <location line="+2"/>
         <source>counters C1..C16 off, timers T49..T64 on</source>
-        <translation type="unfinished"></translation>
+        <translation>C1..C16 számlálók kikapcsolva, T49..T64 időzítők bekapcsolva</translation>
     </message>
     <message>
         <location line="+2"/>
         <source>last scan time (0.1 ms)</source>
-        <translation type="unfinished"></translation>
+        <translation>utolsó ciklusidő (0,1 ms)</translation>
     </message>
     <message>
         <location line="+2"/>
         <location filename="../model/target_vigor.cpp" line="-145"/>
         <source>minimum scan time (0.1 ms)</source>
-        <translation type="unfinished"></translation>
+        <translation>legkisebb ciklusidő (0,1 ms)</translation>
     </message>
     <message>
         <location line="+2"/>
         <location filename="../model/target_vigor.cpp" line="+2"/>
         <source>maximum scan time (0.1 ms)</source>
-        <translation type="unfinished"></translation>
+        <translation>legnagyobb ciklusidő (0,1 ms)</translation>
     </message>
     <message>
         <location line="+24"/>
         <source>NOT contact: invert the power flow</source>
-        <translation type="unfinished"></translation>
+        <translation>NOT érintkező: az áramút negálása</translation>
     </message>
     <message>
         <location line="+4"/>
         <source>P contact: power flows for one scan when it turns ON</source>
-        <translation type="unfinished"></translation>
+        <translation>P érintkező: bekapcsoláskor egy ciklusig vezet</translation>
     </message>
     <message>
         <location line="+4"/>
         <source>N contact: power flows for one scan when it turns OFF</source>
-        <translation type="unfinished"></translation>
+        <translation>N érintkező: kikapcsoláskor egy ciklusig vezet</translation>
     </message>
     <message>
         <location line="+6"/>
         <source>Start a block with an immediate input contact</source>
-        <translation type="unfinished"></translation>
+        <translation>Blokk kezdése közvetlen bemeneti érintkezővel</translation>
     </message>
     <message>
         <location line="+2"/>
         <source>Start a block with a normally closed immediate input contact</source>
-        <translation type="unfinished"></translation>
+        <translation>Blokk kezdése közvetlen bemeneti nyitó érintkezővel</translation>
     </message>
     <message>
         <location line="+3"/>
         <source>Immediate input contact in series</source>
-        <translation type="unfinished"></translation>
+        <translation>Közvetlen bemeneti érintkező sorosan</translation>
     </message>
     <message>
         <location line="+2"/>
         <source>Normally closed immediate input contact in series</source>
-        <translation type="unfinished"></translation>
+        <translation>Közvetlen bemeneti nyitó érintkező sorosan</translation>
     </message>
     <message>
         <location line="+3"/>
         <source>Immediate input contact in parallel</source>
-        <translation type="unfinished"></translation>
+        <translation>Közvetlen bemeneti érintkező párhuzamosan</translation>
     </message>
     <message>
         <location line="+2"/>
         <source>Normally closed immediate input contact in parallel</source>
-        <translation type="unfinished"></translation>
+        <translation>Közvetlen bemeneti nyitó érintkező párhuzamosan</translation>
     </message>
     <message>
         <location line="+7"/>
         <source>Immediate output coil: writes the terminal at once</source>
-        <translation type="unfinished"></translation>
+        <translation>Közvetlen kimeneti tekercs: azonnal írja a kimeneti kapcsot</translation>
     </message>
     <message>
         <location line="+5"/>
         <source>Bistable relay coil: each activation toggles the relay</source>
-        <translation type="unfinished"></translation>
+        <translation>Bistabil relé tekercse: minden működtetés átbillenti a relét</translation>
     </message>
     <message>
         <location line="+5"/>
         <source>Set a bit (0..15) of a word to 1</source>
-        <translation type="unfinished"></translation>
+        <translation>Egy szó egy bitjének (0..15) 1-be állítása</translation>
     </message>
     <message>
         <location line="+3"/>
         <source>Reset a bit (0..15) of a word to 0</source>
-        <translation type="unfinished"></translation>
+        <translation>Egy szó egy bitjének (0..15) 0-ba állítása</translation>
     </message>
     <message>
         <location line="+6"/>
         <source>On-delay timer: T ON once the time reaches PT; OFF resets</source>
-        <translation type="unfinished"></translation>
+        <translation>Bekapcsolás-késleltetésű időzítő: T BE, amint az idő eléri a PT-t; KI törli</translation>
     </message>
     <message>
         <location line="+4"/>
         <source>Off-delay timer: T ON at once, OFF when PT has elapsed after OFF</source>
-        <translation type="unfinished"></translation>
+        <translation>Kikapcsolás-késleltetésű időzítő: T azonnal BE, KI után PT elteltével KI</translation>
     </message>
     <message>
         <location line="+6"/>
         <source>Accumulating on-delay timer: keeps its time while OFF</source>
-        <translation type="unfinished"></translation>
+        <translation>Összegző bekapcsolás-késleltetésű időzítő: KI állapotban megtartja az idejét</translation>
     </message>
     <message>
         <location line="+8"/>
         <source>Up counter: UP, DOWN and RESET inputs; C ON while the count &gt;= PV</source>
-        <translation type="unfinished"></translation>
+        <translation>Felfelé számláló: UP, DOWN és RESET bemenetek; C BE, amíg a számláló &gt;= PV</translation>
     </message>
     <message>
         <location line="+6"/>
         <source>Down counter from PV: UP, DOWN and RESET (load PV) inputs; C ON at 0</source>
-        <translation type="unfinished"></translation>
+        <translation>Lefelé számláló PV-től: UP, DOWN és RESET (PV betöltése) bemenetek; C BE 0-nál</translation>
     </message>
     <message>
         <location line="+10"/>
         <source>Math formula: D = S1 op S2, op one of + - * / | &amp; ^ &lt;&lt; &gt;&gt;</source>
-        <translation type="unfinished"></translation>
+        <translation>Matematikai képlet: D = S1 op S2, op a következők egyike: + - * / | &amp; ^ &lt;&lt; &gt;&gt;</translation>
     </message>
     <message>
         <location line="+4"/>
         <source>Move a value or a word to D</source>
-        <translation type="unfinished"></translation>
+        <translation>Érték vagy szó mozgatása D-be</translation>
     </message>
     <message>
         <location line="+2"/>
         <source>Move n words from S (or the value S) to D</source>
-        <translation type="unfinished"></translation>
+        <translation>n szó mozgatása S-ből (vagy az S érték) D-be</translation>
     </message>
     <message>
         <location line="+3"/>
         <source>Indexed move: D[index] = S, the area used as a vector</source>
-        <translation type="unfinished"></translation>
+        <translation>Indexelt mozgatás: D[index] = S, a terület vektorként használva</translation>
     </message>
     <message>
         <location line="+6"/>
         <source>Store a text string in words</source>
-        <translation type="unfinished"></translation>
+        <translation>Szöveg tárolása szavakban</translation>
     </message>
     <message>
         <location line="+2"/>
         <source>Set the range of an AI, TR, AQ or PID output</source>
-        <translation type="unfinished"></translation>
+        <translation>AI, TR, AQ vagy PID kimenet tartományának beállítása</translation>
     </message>
     <message>
         <location line="+1"/>
         <source>Send data on a serial port</source>
-        <translation type="unfinished"></translation>
+        <translation>Adatküldés soros porton</translation>
     </message>
     <message>
         <location line="+1"/>
         <source>Serial communication on COM1/COM2</source>
-        <translation type="unfinished"></translation>
+        <translation>Soros kommunikáció a COM1/COM2 porton</translation>
     </message>
     <message>
         <location line="+1"/>
         <source>Communication with an expansion</source>
-        <translation type="unfinished"></translation>
+        <translation>Kommunikáció egy bővítőegységgel</translation>
     </message>
     <message>
         <location line="+1"/>
         <source>Tune an on/off positioner</source>
-        <translation type="unfinished"></translation>
+        <translation>Kétállású pozicionáló hangolása</translation>
     </message>
     <message>
         <location line="+1"/>
         <source>On/off positioner</source>
-        <translation type="unfinished"></translation>
+        <translation>Kétállású pozicionáló</translation>
     </message>
     <message>
         <location line="+1"/>
         <source>Start a PID loop</source>
-        <translation type="unfinished"></translation>
+        <translation>PID-szabályozókör indítása</translation>
     </message>
     <message>
         <location line="+1"/>
         <source>PID control loop</source>
-        <translation type="unfinished"></translation>
+        <translation>PID-szabályozókör</translation>
     </message>
     <message>
         <location line="+1"/>
         <source>Set the output of a PID loop</source>
-        <translation type="unfinished"></translation>
+        <translation>PID-szabályozókör kimenetének beállítása</translation>
     </message>
     <message>
         <location line="+1"/>
         <source>Generator set control</source>
-        <translation type="unfinished"></translation>
+        <translation>Áramfejlesztő aggregát vezérlése</translation>
     </message>
     <message>
         <location line="+1"/>
         <source>Convert a value</source>
-        <translation type="unfinished"></translation>
+        <translation>Érték konvertálása</translation>
     </message>
     <message>
         <location line="+1"/>
         <source>Set a display parameter</source>
-        <translation type="unfinished"></translation>
+        <translation>Kijelzőparaméter beállítása</translation>
     </message>
     <message>
         <location line="+1"/>
         <source>Format a display parameter</source>
-        <translation type="unfinished"></translation>
+        <translation>Kijelzőparaméter formázása</translation>
     </message>
     <message>
         <location line="+1"/>
         <source>Place a display parameter</source>
-        <translation type="unfinished"></translation>
+        <translation>Kijelzőparaméter elhelyezése</translation>
     </message>
     <message>
         <location filename="../model/target_vigor.cpp" line="-120"/>
         <source>Compare contact: ON while S1 ? S2</source>
-        <translation type="unfinished"></translation>
+        <translation>Összehasonlító érintkező: BE, amíg S1 ? S2</translation>
     </message>
     <message>
         <location line="+60"/>
         <location filename="../model/target_vpc.cpp" line="-67"/>
         <source>inputs</source>
-        <translation type="unfinished"></translation>
+        <translation>bemenetek</translation>
     </message>
     <message>
         <location line="+5"/>
         <location filename="../model/target_vpc.cpp" line="+5"/>
         <source>outputs</source>
-        <translation type="unfinished"></translation>
+        <translation>kimenetek</translation>
     </message>
     <message>
         <location line="+4"/>
         <location filename="../model/target_vpc.cpp" line="+14"/>
         <source>auxiliary relays</source>
-        <translation type="unfinished"></translation>
+        <translation>segédrelék</translation>
     </message>
     <message>
         <location line="+2"/>
         <source>latched auxiliary relays</source>
-        <translation type="unfinished"></translation>
+        <translation>tárolt segédrelék</translation>
     </message>
     <message>
         <location line="+3"/>
         <source>special relays</source>
-        <translation type="unfinished"></translation>
+        <translation>speciális relék</translation>
     </message>
     <message>
         <location line="+4"/>
         <source>step relays</source>
-        <translation type="unfinished"></translation>
+        <translation>lépésrelék</translation>
     </message>
     <message>
         <location line="+2"/>
         <source>latched step relays</source>
-        <translation type="unfinished"></translation>
+        <translation>tárolt lépésrelék</translation>
     </message>
     <message>
         <location line="+5"/>
         <source>latched counters</source>
-        <translation type="unfinished"></translation>
+        <translation>tárolt számlálók</translation>
     </message>
     <message>
         <location line="+3"/>
         <source>32-bit counters</source>
-        <translation type="unfinished"></translation>
+        <translation>32 bites számlálók</translation>
     </message>
     <message>
         <location line="+4"/>
         <source>data registers</source>
-        <translation type="unfinished"></translation>
+        <translation>adatregiszterek</translation>
     </message>
     <message>
         <location line="+2"/>
         <source>latched data registers</source>
-        <translation type="unfinished"></translation>
+        <translation>tárolt adatregiszterek</translation>
     </message>
     <message>
         <location line="+3"/>
         <source>special registers</source>
-        <translation type="unfinished"></translation>
+        <translation>speciális regiszterek</translation>
     </message>
     <message>
         <location line="+5"/>
         <source>ON while the PLC runs</source>
-        <translation type="unfinished"></translation>
+        <translation>BE, amíg a PLC fut</translation>
     </message>
     <message>
         <location line="+4"/>
         <source>10 ms clock</source>
-        <translation type="unfinished"></translation>
+        <translation>10 ms-os órajel</translation>
     </message>
     <message>
         <location line="+2"/>
         <source>100 ms clock</source>
-        <translation type="unfinished"></translation>
+        <translation>100 ms-os órajel</translation>
     </message>
     <message>
         <location line="+6"/>
         <source>ON for one scan when an MBUS cycle completes</source>
-        <translation type="unfinished"></translation>
+        <translation>egy ciklusig BE, amikor egy MBUS-ciklus befejeződik</translation>
     </message>
     <message>
         <location line="+2"/>
         <source>current scan time (0.1 ms)</source>
-        <translation type="unfinished"></translation>
+        <translation>aktuális ciklusidő (0,1 ms)</translation>
     </message>
     <message>
         <location line="+7"/>
         <source>parallel operation or RS communication error, PLC keeps running</source>
-        <translation type="unfinished"></translation>
+        <translation>párhuzamos üzem vagy RS-kommunikáció hibája, a PLC tovább fut</translation>
     </message>
     <message>
         <location line="+3"/>
         <source>parallel link: this unit is the master</source>
-        <translation type="unfinished"></translation>
+        <translation>párhuzamos kapcsolat: ez az egység a master</translation>
     </message>
     <message>
         <location line="+2"/>
         <source>parallel link: this unit is a slave</source>
-        <translation type="unfinished"></translation>
+        <translation>párhuzamos kapcsolat: ez az egység slave</translation>
     </message>
     <message>
         <location line="+2"/>
         <source>parallel operation normal</source>
-        <translation type="unfinished"></translation>
+        <translation>párhuzamos üzem rendben</translation>
     </message>
     <message>
         <location line="+2"/>
         <source>CP2 modem: start dialing (OFF to ON)</source>
-        <translation type="unfinished"></translation>
+        <translation>CP2 modem: tárcsázás indítása (KI -&gt; BE)</translation>
     </message>
     <message>
         <location line="+2"/>
         <source>CP2 modem: dialing failed</source>
-        <translation type="unfinished"></translation>
+        <translation>CP2 modem: a tárcsázás sikertelen</translation>
     </message>
     <message>
         <location line="+2"/>
         <source>RS instruction send flag</source>
-        <translation type="unfinished"></translation>
+        <translation>RS utasítás küldésjelzője</translation>
     </message>
     <message>
         <location line="+2"/>
         <source>RS instruction receive done</source>
-        <translation type="unfinished"></translation>
+        <translation>RS utasítás: a vétel kész</translation>
     </message>
     <message>
         <location line="+2"/>
         <source>CP2 modem CD signal</source>
-        <translation type="unfinished"></translation>
+        <translation>CP2 modem CD jele</translation>
     </message>
     <message>
         <location line="+2"/>
         <source>time-out during RS</source>
-        <translation type="unfinished"></translation>
+        <translation>időtúllépés RS közben</translation>
     </message>
     <message>
         <location line="+2"/>
         <source>parallel operation high-speed transfer</source>
-        <translation type="unfinished"></translation>
+        <translation>párhuzamos üzem nagysebességű átvitele</translation>
     </message>
     <message>
         <location line="+2"/>
         <source>CPU link communication failed (master); M9184..M9190 slaves 1..7</source>
-        <translation type="unfinished"></translation>
+        <translation>a CPU-kapcsolat kommunikációja sikertelen (master); M9184..M9190: 1..7. slave</translation>
     </message>
     <message>
         <location line="+3"/>
         <source>RS communication error code</source>
-        <translation type="unfinished"></translation>
+        <translation>RS-kommunikáció hibakódja</translation>
     </message>
     <message>
         <location line="+2"/>
         <source>display mode of the display screen</source>
-        <translation type="unfinished"></translation>
+        <translation>a kijelző megjelenítési módja</translation>
     </message>
     <message>
         <location line="+2"/>
         <source>number of the D register shown in mode 3</source>
-        <translation type="unfinished"></translation>
+        <translation>a 3. módban megjelenített D regiszter száma</translation>
     </message>
     <message>
         <location line="+2"/>
         <source>computer link station number</source>
-        <translation type="unfinished"></translation>
+        <translation>számítógépes kapcsolat állomásszáma</translation>
     </message>
     <message>
         <location line="+2"/>
         <source>current network scan time</source>
-        <translation type="unfinished"></translation>
+        <translation>aktuális hálózati ciklusidő</translation>
     </message>
     <message>
         <location line="+2"/>
         <source>maximum network scan time</source>
-        <translation type="unfinished"></translation>
+        <translation>legnagyobb hálózati ciklusidő</translation>
     </message>
     <message>
         <location line="+13"/>
         <source>Start a block with a rising-edge contact</source>
-        <translation type="unfinished"></translation>
+        <translation>Blokk kezdése felfutó él érintkezővel</translation>
     </message>
     <message>
         <location line="+3"/>
         <source>Start a block with a falling-edge contact</source>
-        <translation type="unfinished"></translation>
+        <translation>Blokk kezdése lefutó él érintkezővel</translation>
     </message>
     <message>
         <location line="+9"/>
         <source>Rising-edge contact in series</source>
-        <translation type="unfinished"></translation>
+        <translation>Felfutó él érintkező sorosan</translation>
     </message>
     <message>
         <location line="+3"/>
         <source>Falling-edge contact in series</source>
-        <translation type="unfinished"></translation>
+        <translation>Lefutó él érintkező sorosan</translation>
     </message>
     <message>
         <location line="+9"/>
         <source>Rising-edge contact in parallel</source>
-        <translation type="unfinished"></translation>
+        <translation>Felfutó él érintkező párhuzamosan</translation>
     </message>
     <message>
         <location line="+3"/>
         <source>Falling-edge contact in parallel</source>
-        <translation type="unfinished"></translation>
+        <translation>Lefutó él érintkező párhuzamosan</translation>
     </message>
     <message>
         <location line="+21"/>
         <source>Push the result onto the branch stack</source>
-        <translation type="unfinished"></translation>
+        <translation>Az eredmény mentése az elágazási verembe</translation>
     </message>
     <message>
         <location line="+3"/>
         <source>Read the top of the branch stack</source>
-        <translation type="unfinished"></translation>
+        <translation>Az elágazási verem tetejének olvasása</translation>
     </message>
     <message>
         <location line="+2"/>
         <source>Pop the branch stack</source>
-        <translation type="unfinished"></translation>
+        <translation>Kivétel az elágazási veremből</translation>
     </message>
     <message>
         <location line="+2"/>
         <source>Invert the result</source>
-        <translation type="unfinished"></translation>
+        <translation>Az eredmény negálása</translation>
     </message>
     <message>
         <location line="+4"/>
         <source>Set (latch) a device</source>
-        <translation type="unfinished"></translation>
+        <translation>Operandus beállítása (tárolás)</translation>
     </message>
     <message>
         <location line="+3"/>
         <source>Reset a device, a timer or a counter</source>
-        <translation type="unfinished"></translation>
+        <translation>Operandus, időzítő vagy számláló törlése</translation>
     </message>
     <message>
         <location line="+11"/>
         <source>On-delay timer, 100 ms units</source>
-        <translation type="unfinished"></translation>
+        <translation>Bekapcsolás-késleltetésű időzítő, 100 ms-os egységben</translation>
     </message>
     <message>
         <location line="+7"/>
         <source>Counter: counts rising edges, reset with RST</source>
-        <translation type="unfinished"></translation>
+        <translation>Számláló: a felfutó éleket számolja, törlés RST-vel</translation>
     </message>
     <message>
         <location line="+6"/>
         <source>Step ladder: start of step S</source>
-        <translation type="unfinished"></translation>
+        <translation>Léptetőlánc: az S lépés kezdete</translation>
     </message>
     <message>
         <location line="+3"/>
         <source>End of the step ladder</source>
-        <translation type="unfinished"></translation>
+        <translation>A léptetőlánc vége</translation>
     </message>
     <message>
         <location line="+9"/>
         <source>Move S to D</source>
-        <translation type="unfinished"></translation>
+        <translation>S mozgatása D-be</translation>
     </message>
     <message>
         <location line="+2"/>
         <source>Move n words from S to D</source>
-        <translation type="unfinished"></translation>
+        <translation>n szó mozgatása S-ből D-be</translation>
     </message>
     <message>
         <location line="+4"/>
         <source>Compare S1 with S2: D, D+1, D+2 = &gt;, =, &lt;</source>
-        <translation type="unfinished"></translation>
+        <translation>S1 összehasonlítása S2-vel: D, D+1, D+2 = &gt;, =, &lt;</translation>
     </message>
     <message>
         <location line="+3"/>
         <source>Reset every device from D1 to D2</source>
-        <translation type="unfinished"></translation>
+        <translation>Minden operandus törlése D1-től D2-ig</translation>
     </message>
     <message>
         <location line="+3"/>
         <source>D = S1 + S2</source>
-        <translation type="unfinished"></translation>
+        <translation>D = S1 + S2</translation>
     </message>
     <message>
         <location line="+2"/>
         <source>D = S1 - S2</source>
-        <translation type="unfinished"></translation>
+        <translation>D = S1 - S2</translation>
     </message>
     <message>
         <location line="+3"/>
         <source>D, D+1 = S1 x S2 (32-bit product)</source>
-        <translation type="unfinished"></translation>
+        <translation>D, D+1 = S1 x S2 (32 bites szorzat)</translation>
     </message>
     <message>
         <location line="+2"/>
         <source>D = S1 / S2, D+1 = remainder</source>
-        <translation type="unfinished"></translation>
+        <translation>D = S1 / S2, D+1 = maradék</translation>
     </message>
     <message>
         <location line="+3"/>
         <source>D = D + 1</source>
-        <translation type="unfinished"></translation>
+        <translation>D = D + 1</translation>
     </message>
     <message>
         <location line="+2"/>
         <source>D = D - 1</source>
-        <translation type="unfinished"></translation>
+        <translation>D = D - 1</translation>
     </message>
     <message>
         <location line="+5"/>
         <source>Communication or conversion instruction</source>
-        <translation type="unfinished"></translation>
+        <translation>Kommunikációs vagy konverziós utasítás</translation>
     </message>
     <message>
         <location filename="../model/target_vpc.cpp" line="-41"/>
         <source>Compare contact between two decimal operands</source>
-        <translation type="unfinished"></translation>
+        <translation>Összehasonlító érintkező két decimális operandus között</translation>
     </message>
     <message>
         <location line="+44"/>
         <source>retentive auxiliary relays</source>
-        <translation type="unfinished"></translation>
+        <translation>remanens segédrelék</translation>
     </message>
     <message>
         <location line="+6"/>
         <location line="+4"/>
         <source>system relays</source>
-        <translation type="unfinished"></translation>
+        <translation>rendszerrelék</translation>
     </message>
     <message>
         <location line="+14"/>
         <source>registers</source>
-        <translation type="unfinished"></translation>
+        <translation>regiszterek</translation>
     </message>
     <message>
         <location line="+4"/>
         <source>parallel output (o00..o11)</source>
-        <translation type="unfinished"></translation>
+        <translation>párhuzamos kimenet (o00..o11)</translation>
     </message>
     <message>
         <location line="+3"/>
         <source>parallel input (i00..i11)</source>
-        <translation type="unfinished"></translation>
+        <translation>párhuzamos bemenet (i00..i11)</translation>
     </message>
     <message>
         <location line="+6"/>
         <source>RUN: always ON</source>
-        <translation type="unfinished"></translation>
+        <translation>RUN: mindig BE</translation>
     </message>
     <message>
         <location line="+2"/>
         <source>ERR: program error</source>
-        <translation type="unfinished"></translation>
+        <translation>ERR: programhiba</translation>
     </message>
     <message>
         <location line="+2"/>
         <source>CON: PC connected</source>
-        <translation type="unfinished"></translation>
+        <translation>CON: PC csatlakoztatva</translation>
     </message>
     <message>
         <location line="+2"/>
         <source>VPCIO connected</source>
-        <translation type="unfinished"></translation>
+        <translation>VPCIO csatlakoztatva</translation>
     </message>
     <message>
         <location line="+4"/>
         <source>0.01 s clock</source>
-        <translation type="unfinished"></translation>
+        <translation>0,01 s-os órajel</translation>
     </message>
     <message>
         <location line="+35"/>
         <source>Transfer while the condition is OFF: d,s  d+s  d-s</source>
-        <translation type="unfinished"></translation>
+        <translation>Átvitel, amíg a feltétel KI: d,s  d+s  d-s</translation>
     </message>
     <message>
         <location line="+2"/>
         <source>Transfer while the condition is ON: d,s  d+s  d-s</source>
-        <translation type="unfinished"></translation>
+        <translation>Átvitel, amíg a feltétel BE: d,s  d+s  d-s</translation>
     </message>
     <message>
         <location line="+11"/>
         <source>Latching relay: set = last but one block, reset = last block</source>
-        <translation type="unfinished"></translation>
+        <translation>Tartórelé: beállítás = utolsó előtti blokk, törlés = utolsó blokk</translation>
     </message>
     <message>
         <location line="+6"/>
         <source>Timer: 00..15 count down, 16..31 count up, 0.01 s</source>
-        <translation type="unfinished"></translation>
+        <translation>Időzítő: 00..15 lefelé, 16..31 felfelé számol, 0,01 s</translation>
     </message>
     <message>
         <location line="+6"/>
         <source>Counter: count = last but one block, reset = last block</source>
-        <translation type="unfinished"></translation>
+        <translation>Számláló: számlálás = utolsó előtti blokk, törlés = utolsó blokk</translation>
     </message>
     <message>
         <location line="+11"/>
         <source>Jump: skip up to JPE while the condition is OFF</source>
-        <translation type="unfinished"></translation>
+        <translation>Ugrás: JPE-ig átugorja a programot, amíg a feltétel KI</translation>
     </message>
     <message>
         <location line="+2"/>
         <source>End of a jump</source>
-        <translation type="unfinished"></translation>
+        <translation>Ugrás vége</translation>
     </message>
 </context>
 <context>
@@ -3052,147 +3065,147 @@ Ladder and instruction-list editor for VPC, Vigor, CPM1 and PL110.</source>
     <message>
         <location filename="../simulator/compiler.cpp" line="+66"/>
         <source>%1 is not simulated: it does nothing in the simulator</source>
-        <translation type="unfinished"></translation>
+        <translation>%1 nincs szimulálva: a szimulátorban nem csinál semmit</translation>
     </message>
     <message>
         <location line="+15"/>
         <source>%1 needs operand %2</source>
-        <translation type="unfinished"></translation>
+        <translation>%1: hiányzik a(z) %2. operandus</translation>
     </message>
     <message>
         <location line="+17"/>
         <source>%1 is not a bit device</source>
-        <translation type="unfinished"></translation>
+        <translation>%1 nem bit típusú operandus</translation>
     </message>
     <message>
         <location line="+12"/>
         <source>constant %1 is out of range</source>
-        <translation type="unfinished"></translation>
+        <translation>a(z) %1 konstans tartományon kívül esik</translation>
     </message>
     <message>
         <location line="+5"/>
         <source>%1 is not a word device or a constant</source>
-        <translation type="unfinished"></translation>
+        <translation>%1 nem szó típusú operandus és nem konstans</translation>
     </message>
     <message>
         <location line="+20"/>
         <source>%1 cannot be written</source>
-        <translation type="unfinished"></translation>
+        <translation>%1 nem írható</translation>
     </message>
     <message>
         <location line="+3"/>
         <source>%1 is not a word device</source>
-        <translation type="unfinished"></translation>
+        <translation>%1 nem szó típusú operandus</translation>
     </message>
     <message>
         <location line="+15"/>
         <source>%1 needs the next word too, which does not exist</source>
-        <translation type="unfinished"></translation>
+        <translation>%1 a következő szót is igényli, de az nem létezik</translation>
     </message>
     <message>
         <location line="+24"/>
         <source>%1 needs %2 open blocks before it</source>
-        <translation type="unfinished"></translation>
+        <translation>%1 előtt %2 nyitott blokk kell</translation>
     </message>
     <message>
         <location line="+38"/>
         <source>more than %1 open blocks</source>
-        <translation type="unfinished"></translation>
+        <translation>több mint %1 nyitott blokk</translation>
     </message>
     <message>
         <location line="+34"/>
         <source>%1 is not a timer</source>
-        <translation type="unfinished"></translation>
+        <translation>%1 nem időzítő</translation>
     </message>
     <message>
         <location line="+31"/>
         <source>the time base of %1 must be 10, 100 or 1000 ms, not %2</source>
-        <translation type="unfinished"></translation>
+        <translation>%1 időalapja 10, 100 vagy 1000 ms lehet, nem %2</translation>
     </message>
     <message>
         <location line="+23"/>
         <source>%1 is not a counter</source>
-        <translation type="unfinished"></translation>
+        <translation>%1 nem számláló</translation>
     </message>
     <message>
         <location line="+46"/>
         <source>%1 needs three bit devices from %2</source>
-        <translation type="unfinished"></translation>
+        <translation>%1 három bit típusú operandust igényel %2-tól</translation>
     </message>
     <message>
         <location line="+17"/>
         <source>%1 needs two devices of one kind, the first not after the second</source>
-        <translation type="unfinished"></translation>
+        <translation>%1 két azonos fajtájú operandust igényel, az első nem lehet a második után</translation>
     </message>
     <message>
         <location line="+48"/>
         <source>unknown operator %1 (use + - * / | &amp; ^ &lt;&lt; &gt;&gt;)</source>
-        <translation type="unfinished"></translation>
+        <translation>ismeretlen művelet: %1 (használható: + - * / | &amp; ^ &lt;&lt; &gt;&gt;)</translation>
     </message>
     <message>
         <location line="+17"/>
         <source>%1 needs a bit: a bit device, or a word and a bit number 0..15</source>
-        <translation type="unfinished"></translation>
+        <translation>%1 egy bitet igényel: bit típusú operandust, vagy egy szót és egy 0..15 bitszámot</translation>
     </message>
     <message>
         <location line="+27"/>
         <source>%1 needs a count from 1 to %2</source>
-        <translation type="unfinished"></translation>
+        <translation>%1 darabszáma 1 és %2 között lehet</translation>
     </message>
     <message>
         <location line="+14"/>
         <source>the block of %1 words runs past the end of its area</source>
-        <translation type="unfinished"></translation>
+        <translation>a(z) %1 szavas blokk túlnyúlik a terület végén</translation>
     </message>
     <message>
         <location line="+107"/>
         <source>label %1 ends more than one jump</source>
-        <translation type="unfinished"></translation>
+        <translation>a(z) %1 címke több ugrást is lezár</translation>
     </message>
     <message>
         <location line="+12"/>
         <source>jump %1 has no end after it</source>
-        <translation type="unfinished"></translation>
+        <translation>a(z) %1 ugrásnak nincs vége utána</translation>
     </message>
     <message>
         <location line="+6"/>
         <source>%1 without a jump before it</source>
-        <translation type="unfinished"></translation>
+        <translation>%1 előtte lévő ugrás nélkül</translation>
     </message>
     <message>
         <location line="+9"/>
         <source>%1 has no end</source>
-        <translation type="unfinished"></translation>
+        <translation>%1 nincs lezárva</translation>
     </message>
     <message>
         <location line="+15"/>
         <source>unknown instruction</source>
-        <translation type="unfinished"></translation>
+        <translation>ismeretlen utasítás</translation>
     </message>
     <message>
         <location line="+20"/>
         <source>more than %1 nested %2</source>
-        <translation type="unfinished"></translation>
+        <translation>több mint %1 egymásba ágyazott %2</translation>
     </message>
     <message>
         <location line="+10"/>
         <source>%1 without MPS before it</source>
-        <translation type="unfinished"></translation>
+        <translation>%1 előtte lévő MPS nélkül</translation>
     </message>
     <message>
         <location line="+31"/>
         <source>%1 cannot be reset</source>
-        <translation type="unfinished"></translation>
+        <translation>%1 nem törölhető</translation>
     </message>
     <message>
         <location line="+5"/>
         <source>%1 is not a device</source>
-        <translation type="unfinished"></translation>
+        <translation>%1 nem operandus</translation>
     </message>
     <message>
         <location line="+103"/>
         <source>the program has no target</source>
-        <translation type="unfinished"></translation>
+        <translation>a programnak nincs célrendszere</translation>
     </message>
 </context>
 <context>
@@ -3200,18 +3213,18 @@ Ladder and instruction-list editor for VPC, Vigor, CPM1 and PL110.</source>
     <message>
         <location filename="../simulator/engine.cpp" line="+240"/>
         <source>set value %1 is not a BCD number; the instruction is skipped</source>
-        <translation type="unfinished"></translation>
+        <translation>a(z) %1 beállított érték nem BCD szám; az utasítás kimarad</translation>
     </message>
     <message>
         <location line="+357"/>
         <location line="+52"/>
         <source>division by zero; the destination is unchanged</source>
-        <translation type="unfinished"></translation>
+        <translation>osztás nullával; a cél változatlan marad</translation>
     </message>
     <message>
         <location line="+21"/>
         <source>MOVIND index %1 is outside 0..%2; nothing is written</source>
-        <translation type="unfinished"></translation>
+        <translation>a MOVIND %1 indexe kívül esik a 0..%2 tartományon; nem íródik semmi</translation>
     </message>
 </context>
 <context>
@@ -3219,37 +3232,37 @@ Ladder and instruction-list editor for VPC, Vigor, CPM1 and PL110.</source>
     <message>
         <location filename="../simulator/trace.cpp" line="+23"/>
         <source>unknown device %1: %2</source>
-        <translation type="unfinished"></translation>
+        <translation>ismeretlen operandus: %1: %2</translation>
     </message>
     <message>
         <location line="+26"/>
         <source>%1 needs a value</source>
-        <translation type="unfinished"></translation>
+        <translation>%1 után érték kell</translation>
     </message>
     <message>
         <location line="+1"/>
         <source>unexpected argument %1</source>
-        <translation type="unfinished"></translation>
+        <translation>váratlan argumentum: %1</translation>
     </message>
     <message>
         <location line="+9"/>
         <source>%1 needs a positive number, not &quot;%2&quot;</source>
-        <translation type="unfinished"></translation>
+        <translation>%1 után pozitív szám kell, nem &quot;%2&quot;</translation>
     </message>
     <message>
         <location line="+12"/>
         <source>--set needs DEV=VALUE@SCAN, not &quot;%1&quot;</source>
-        <translation type="unfinished"></translation>
+        <translation>--set formája DEV=VALUE@SCAN, nem &quot;%1&quot;</translation>
     </message>
     <message>
         <location line="+29"/>
         <source>unknown option %1</source>
-        <translation type="unfinished"></translation>
+        <translation>ismeretlen kapcsoló: %1</translation>
     </message>
     <message>
         <location line="+5"/>
         <source>--scans and --trace are required</source>
-        <translation type="unfinished"></translation>
+        <translation>a --scans és a --trace megadása kötelező</translation>
     </message>
 </context>
 </TS>

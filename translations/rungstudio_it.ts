@@ -6,37 +6,37 @@
     <message>
         <location filename="../editor/qscintilla_tr.h" line="+11"/>
         <source>&amp;Undo</source>
-        <translation type="unfinished"></translation>
+        <translation>&amp;Annulla</translation>
     </message>
     <message>
         <location line="+0"/>
         <source>&amp;Redo</source>
-        <translation type="unfinished"></translation>
+        <translation>&amp;Ripeti</translation>
     </message>
     <message>
         <location line="+1"/>
         <source>Cu&amp;t</source>
-        <translation type="unfinished"></translation>
+        <translation>&amp;Taglia</translation>
     </message>
     <message>
         <location line="+0"/>
         <source>&amp;Copy</source>
-        <translation type="unfinished"></translation>
+        <translation>&amp;Copia</translation>
     </message>
     <message>
         <location line="+1"/>
         <source>&amp;Paste</source>
-        <translation type="unfinished"></translation>
+        <translation>&amp;Incolla</translation>
     </message>
     <message>
         <location line="+0"/>
         <source>Delete</source>
-        <translation type="unfinished"></translation>
+        <translation>Elimina</translation>
     </message>
     <message>
         <location line="+1"/>
         <source>Select All</source>
-        <translation type="unfinished"></translation>
+        <translation>Seleziona tutto</translation>
     </message>
 </context>
 <context>
@@ -49,99 +49,104 @@
   rungstudio-cli simulate FILE [--target T] --scans N [--period MS] [--set DEV=VALUE@SCAN]... --trace DEV[,DEV...]
 FILE is a listing (.il), a ladder text (.ladder) or a project (.rung).
 Exit status: 0 no error, 1 the program has errors, 2 usage or I/O error.</source>
-        <translation type="unfinished"></translation>
+        <translation>uso:
+  rungstudio-cli check FILE [--target vpc|vigor|cpm1|pl110] [--model M]
+  rungstudio-cli convert FILE [--target T] [--from il|ladder|project] --to il|ladder|project [-o OUT]
+  rungstudio-cli simulate FILE [--target T] --scans N [--period MS] [--set DEV=VALUE@SCAN]... --trace DEV[,DEV...]
+FILE è una lista istruzioni (.il), un testo ladder (.ladder) o un progetto (.rung).
+Codice di uscita: 0 nessun errore, 1 il programma contiene errori, 2 errore di utilizzo o di I/O.</translation>
     </message>
     <message>
         <location line="+17"/>
         <location line="+41"/>
         <source>unexpected argument %1</source>
-        <translation type="unfinished"></translation>
+        <translation>argomento non previsto: %1</translation>
     </message>
     <message>
         <location line="+6"/>
         <source>--to must be il, ladder or project</source>
-        <translation type="unfinished"></translation>
+        <translation>--to deve essere il, ladder o project</translation>
     </message>
     <message>
         <location line="+11"/>
         <source>nothing written: the input has errors</source>
-        <translation type="unfinished"></translation>
+        <translation>nessun file scritto: l&apos;ingresso contiene errori</translation>
     </message>
     <message>
         <location line="+18"/>
         <source>cannot write %1: %2</source>
-        <translation type="unfinished"></translation>
+        <translation>impossibile scrivere %1: %2</translation>
     </message>
     <message>
         <location line="+26"/>
         <source>no command given</source>
-        <translation type="unfinished"></translation>
+        <translation>nessun comando specificato</translation>
     </message>
     <message>
         <location line="+1"/>
         <source>unknown command %1</source>
-        <translation type="unfinished"></translation>
+        <translation>comando sconosciuto: %1</translation>
     </message>
     <message>
         <location filename="../app/cli/cli_common.cpp" line="+51"/>
         <source>%1 needs a value</source>
-        <translation type="unfinished"></translation>
+        <translation>%1 richiede un valore</translation>
     </message>
     <message>
         <location line="+25"/>
         <source>no FILE given</source>
-        <translation type="unfinished"></translation>
+        <translation>nessun FILE specificato</translation>
     </message>
     <message>
         <location line="+21"/>
         <source>--from must be il, ladder or project, not %1</source>
-        <translation type="unfinished"></translation>
+        <translation>--from deve essere il, ladder o project, non %1</translation>
     </message>
     <message>
         <location line="+14"/>
         <source>%1 is a %2 project, not %3</source>
-        <translation type="unfinished"></translation>
+        <translation>%1 è un progetto %2, non %3</translation>
     </message>
     <message>
         <location line="+10"/>
         <source>cannot read %1: %2</source>
-        <translation type="unfinished"></translation>
+        <translation>impossibile leggere %1: %2</translation>
     </message>
     <message>
         <location line="+4"/>
         <source>%1 is %2 MB; the limit is %3 MB</source>
-        <translation type="unfinished"></translation>
+        <translation>%1 è di %2 MB; il limite è %3 MB</translation>
     </message>
     <message>
         <location line="+13"/>
         <source>%1: which PLC? Give --target vpc|vigor|cpm1|pl110 or a &quot;; target: NAME&quot; first line</source>
-        <translation type="unfinished"></translation>
+        <translation>%1: quale PLC? Specificare --target vpc|vigor|cpm1|pl110 oppure una prima riga &quot;; target: NAME&quot;</translation>
     </message>
     <message>
         <location line="+7"/>
         <source>unknown target %1 (vpc, vigor, cpm1, pl110)</source>
-        <translation type="unfinished"></translation>
+        <translation>famiglia PLC sconosciuta: %1 (vpc, vigor, cpm1, pl110)</translation>
     </message>
     <message>
         <location line="+7"/>
         <location line="+27"/>
         <source>%1 has no model %2</source>
-        <translation type="unfinished"></translation>
+        <translation>%1 non ha il modello %2</translation>
     </message>
     <message>
         <location line="+18"/>
         <source>error</source>
-        <translation type="unfinished"></translation>
+        <translation>errore</translation>
     </message>
     <message>
         <location line="+1"/>
         <source>warning</source>
-        <translation type="unfinished"></translation>
+        <translation>avviso</translation>
     </message>
     <message>
         <location line="+1"/>
         <source>note</source>
-        <translation type="unfinished"></translation>
+        <translation>nota</translation>
     </message>
 </context>
 <context>
@@ -149,37 +154,37 @@ Exit status: 0 no error, 1 the program has errors, 2 usage or I/O error.</source
     <message>
         <location filename="../app/gui/command_line.cpp" line="+21"/>
         <source>Ladder and instruction-list IDE for small PLCs</source>
-        <translation type="unfinished"></translation>
+        <translation>IDE ladder e lista istruzioni per PLC compatti</translation>
     </message>
     <message>
         <location line="+5"/>
         <source>A project (.rung) or an instruction list to open</source>
-        <translation type="unfinished"></translation>
+        <translation>Progetto (.rung) o lista istruzioni da aprire</translation>
     </message>
     <message>
         <location line="+4"/>
         <source>Target of an instruction list: vpc, vigor, cpm1, pl110</source>
-        <translation type="unfinished"></translation>
+        <translation>Famiglia PLC della lista istruzioni: vpc, vigor, cpm1, pl110</translation>
     </message>
     <message>
         <location line="+5"/>
         <source>Save a picture of the window and quit</source>
-        <translation type="unfinished"></translation>
+        <translation>Salva un&apos;immagine della finestra ed esce</translation>
     </message>
     <message>
         <location line="+11"/>
         <source>Open one file at a time</source>
-        <translation type="unfinished"></translation>
+        <translation>Aprire un solo file alla volta</translation>
     </message>
     <message>
         <location line="+2"/>
         <source>Unknown target %1: use vpc, vigor, cpm1 or pl110</source>
-        <translation type="unfinished"></translation>
+        <translation>Famiglia PLC sconosciuta: %1; usare vpc, vigor, cpm1 o pl110</translation>
     </message>
     <message>
         <location filename="../app/gui/application.cpp" line="+45"/>
         <source>Rung Studio</source>
-        <translation type="unfinished"></translation>
+        <translation>Rung Studio</translation>
     </message>
 </context>
 <context>
@@ -187,358 +192,358 @@ Exit status: 0 no error, 1 the program has errors, 2 usage or I/O error.</source
     <message>
         <location filename="../app/gui/main_window.cpp" line="+140"/>
         <source>Problems</source>
-        <translation type="unfinished"></translation>
+        <translation>Problemi</translation>
     </message>
     <message>
         <location line="+5"/>
         <source>Project</source>
-        <translation type="unfinished"></translation>
+        <translation>Progetto</translation>
     </message>
     <message>
         <location line="+7"/>
         <source>Symbols</source>
-        <translation type="unfinished"></translation>
+        <translation>Simboli</translation>
     </message>
     <message>
         <location line="+3"/>
         <source>Device</source>
-        <translation type="unfinished"></translation>
+        <translation>Operando</translation>
     </message>
     <message>
         <location line="+0"/>
         <source>Name</source>
-        <translation type="unfinished"></translation>
+        <translation>Nome</translation>
     </message>
     <message>
         <location line="+0"/>
         <source>Comment</source>
-        <translation type="unfinished"></translation>
+        <translation>Commento</translation>
     </message>
     <message>
         <location line="+7"/>
         <source>Watch lists</source>
-        <translation type="unfinished"></translation>
+        <translation>Liste di osservazione</translation>
     </message>
     <message>
         <location line="+33"/>
         <source>&amp;File</source>
-        <translation type="unfinished"></translation>
+        <translation>&amp;File</translation>
     </message>
     <message>
         <location line="+1"/>
         <source>Main</source>
-        <translation type="unfinished"></translation>
+        <translation>Principale</translation>
     </message>
     <message>
         <location line="+5"/>
         <source>&amp;New Project...</source>
-        <translation type="unfinished"></translation>
+        <translation>&amp;Nuovo progetto...</translation>
     </message>
     <message>
         <location line="+2"/>
         <source>&amp;Open...</source>
-        <translation type="unfinished"></translation>
+        <translation>&amp;Apri...</translation>
     </message>
     <message>
         <location line="+3"/>
         <source>Open &amp;Recent</source>
-        <translation type="unfinished"></translation>
+        <translation>Apri &amp;recenti</translation>
     </message>
     <message>
         <location line="+1"/>
         <source>E&amp;xamples</source>
-        <translation type="unfinished"></translation>
+        <translation>Ese&amp;mpi</translation>
     </message>
     <message>
         <location line="+1"/>
         <source>&amp;Save</source>
-        <translation type="unfinished"></translation>
+        <translation>&amp;Salva</translation>
     </message>
     <message>
         <location line="+3"/>
         <source>Save &amp;As...</source>
-        <translation type="unfinished"></translation>
+        <translation>Salva &amp;con nome...</translation>
     </message>
     <message>
         <location line="+3"/>
         <source>&amp;Import Instruction List...</source>
-        <translation type="unfinished"></translation>
+        <translation>&amp;Importa lista istruzioni...</translation>
     </message>
     <message>
         <location line="+1"/>
         <source>&amp;Export Instruction List...</source>
-        <translation type="unfinished"></translation>
+        <translation>Es&amp;porta lista istruzioni...</translation>
     </message>
     <message>
         <location line="+1"/>
         <source>Export &amp;Ladder</source>
-        <translation type="unfinished"></translation>
+        <translation>Esporta schema &amp;ladder</translation>
     </message>
     <message>
         <location line="+1"/>
         <source>As &amp;PDF...</source>
-        <translation type="unfinished"></translation>
+        <translation>Come &amp;PDF...</translation>
     </message>
     <message>
         <location line="+1"/>
         <source>As &amp;SVG...</source>
-        <translation type="unfinished"></translation>
+        <translation>Come &amp;SVG...</translation>
     </message>
     <message>
         <location line="+1"/>
         <source>As P&amp;NG...</source>
-        <translation type="unfinished"></translation>
+        <translation>Come P&amp;NG...</translation>
     </message>
     <message>
         <location line="+1"/>
         <source>Print Pre&amp;view...</source>
-        <translation type="unfinished"></translation>
+        <translation>Anteprima di s&amp;tampa...</translation>
     </message>
     <message>
         <location line="+3"/>
         <source>&amp;Quit</source>
-        <translation type="unfinished"></translation>
+        <translation>&amp;Esci</translation>
     </message>
     <message>
         <location line="+10"/>
         <source>&amp;Edit</source>
-        <translation type="unfinished"></translation>
+        <translation>&amp;Modifica</translation>
     </message>
     <message>
         <location line="+1"/>
         <source>&amp;Undo</source>
-        <translation type="unfinished"></translation>
+        <translation>&amp;Annulla</translation>
     </message>
     <message>
         <location line="+2"/>
         <source>&amp;Redo</source>
-        <translation type="unfinished"></translation>
+        <translation>&amp;Ripeti</translation>
     </message>
     <message>
         <location line="+24"/>
         <source>Normally Open Contact</source>
-        <translation type="unfinished"></translation>
+        <translation>Contatto NA</translation>
     </message>
     <message>
         <location line="+2"/>
         <source>Normally Closed Contact</source>
-        <translation type="unfinished"></translation>
+        <translation>Contatto NC</translation>
     </message>
     <message>
         <location line="+2"/>
         <source>Parallel Contact</source>
-        <translation type="unfinished"></translation>
+        <translation>Contatto in parallelo</translation>
     </message>
     <message>
         <location line="+2"/>
         <source>Rising-Edge Contact</source>
-        <translation type="unfinished"></translation>
+        <translation>Contatto su fronte di salita</translation>
     </message>
     <message>
         <location line="+2"/>
         <source>Falling-Edge Contact</source>
-        <translation type="unfinished"></translation>
+        <translation>Contatto su fronte di discesa</translation>
     </message>
     <message>
         <location line="+2"/>
         <source>Coil</source>
-        <translation type="unfinished"></translation>
+        <translation>Bobina</translation>
     </message>
     <message>
         <location line="+1"/>
         <source>Instruction</source>
-        <translation type="unfinished"></translation>
+        <translation>Istruzione</translation>
     </message>
     <message>
         <location line="+2"/>
         <source>Horizontal Wire</source>
-        <translation type="unfinished"></translation>
+        <translation>Collegamento orizzontale</translation>
     </message>
     <message>
         <location line="+2"/>
         <source>Vertical Link</source>
-        <translation type="unfinished"></translation>
+        <translation>Collegamento verticale</translation>
     </message>
     <message>
         <location line="+7"/>
         <source>Select</source>
-        <translation type="unfinished"></translation>
+        <translation>Seleziona</translation>
     </message>
     <message>
         <location line="+1"/>
         <source>Select (Esc)</source>
-        <translation type="unfinished"></translation>
+        <translation>Seleziona (Esc)</translation>
     </message>
     <message>
         <location line="+10"/>
         <source>%1 (%2): click the cells to place it</source>
-        <translation type="unfinished"></translation>
+        <translation>%1 (%2): fare clic sulle celle per inserirlo</translation>
     </message>
     <message>
         <location line="+9"/>
         <source>%1: click a cell to place it; Esc or a right click ends</source>
-        <translation type="unfinished"></translation>
+        <translation>%1: fare clic su una cella per inserirlo; Esc o un clic destro termina</translation>
     </message>
     <message>
         <location line="+15"/>
         <source>Cu&amp;t Rung</source>
-        <translation type="unfinished"></translation>
+        <translation>&amp;Taglia segmento</translation>
     </message>
     <message>
         <location line="+1"/>
         <source>&amp;Copy Rung</source>
-        <translation type="unfinished"></translation>
+        <translation>&amp;Copia segmento</translation>
     </message>
     <message>
         <location line="+1"/>
         <source>&amp;Paste Rungs</source>
-        <translation type="unfinished"></translation>
+        <translation>&amp;Incolla segmenti</translation>
     </message>
     <message>
         <location line="+7"/>
         <source>&amp;Find Device...</source>
-        <translation type="unfinished"></translation>
+        <translation>Trova o&amp;perando...</translation>
     </message>
     <message>
         <location line="+2"/>
         <source>Find &amp;Next</source>
-        <translation type="unfinished"></translation>
+        <translation>Trova &amp;successivo</translation>
     </message>
     <message>
         <location line="+2"/>
         <source>Find Pre&amp;vious</source>
-        <translation type="unfinished"></translation>
+        <translation>Trova pr&amp;ecedente</translation>
     </message>
     <message>
         <location line="+2"/>
         <source>Replace &amp;Device...</source>
-        <translation type="unfinished"></translation>
+        <translation>S&amp;ostituisci operando...</translation>
     </message>
     <message>
         <location line="+3"/>
         <source>Import Symbols (CSV)...</source>
-        <translation type="unfinished"></translation>
+        <translation>Importa simboli (CSV)...</translation>
     </message>
     <message>
         <location line="+1"/>
         <source>Import Symbols</source>
-        <translation type="unfinished"></translation>
+        <translation>Importa simboli</translation>
     </message>
     <message>
         <location line="+1"/>
         <location filename="../app/gui/main_window_tools.cpp" line="+234"/>
         <source>CSV files (*.csv)</source>
-        <translation type="unfinished"></translation>
+        <translation>File CSV (*.csv)</translation>
     </message>
     <message>
         <location line="+3"/>
         <source>Cannot import</source>
-        <translation type="unfinished"></translation>
+        <translation>Impossibile importare</translation>
     </message>
     <message>
         <location line="+2"/>
         <source>Export Symbols (CSV)...</source>
-        <translation type="unfinished"></translation>
+        <translation>Esporta simboli (CSV)...</translation>
     </message>
     <message>
         <location line="+2"/>
         <source>Add to &amp;Watch List</source>
-        <translation type="unfinished"></translation>
+        <translation>Aggiungi alla lista di osser&amp;vazione</translation>
     </message>
     <message>
         <location line="+3"/>
         <source>Rung &amp;Comment...</source>
-        <translation type="unfinished"></translation>
+        <translation>Co&amp;mmento del segmento...</translation>
     </message>
     <message>
         <location line="+2"/>
         <source>Insert Rung</source>
-        <translation type="unfinished"></translation>
+        <translation>Inserisci segmento</translation>
     </message>
     <message>
         <location line="+1"/>
         <source>Delete Rung</source>
-        <translation type="unfinished"></translation>
+        <translation>Elimina segmento</translation>
     </message>
     <message>
         <location line="+1"/>
         <source>Insert Row</source>
-        <translation type="unfinished"></translation>
+        <translation>Inserisci riga</translation>
     </message>
     <message>
         <location line="+1"/>
         <source>Delete Row</source>
-        <translation type="unfinished"></translation>
+        <translation>Elimina riga</translation>
     </message>
     <message>
         <location line="+2"/>
         <source>&amp;View</source>
-        <translation type="unfinished"></translation>
+        <translation>&amp;Visualizza</translation>
     </message>
     <message>
         <location line="+1"/>
         <source>Ladder and List &amp;Side by Side</source>
-        <translation type="unfinished"></translation>
+        <translation>Schema ladder e lista &amp;affiancati</translation>
     </message>
     <message>
         <location line="+4"/>
         <source>Show Symbol &amp;Names</source>
-        <translation type="unfinished"></translation>
+        <translation>Mostra &amp;nomi simbolici</translation>
     </message>
     <message>
         <location line="+2"/>
         <source>Names from the symbol table in place of the addresses</source>
-        <translation type="unfinished"></translation>
+        <translation>Nomi della tabella dei simboli al posto degli indirizzi</translation>
     </message>
     <message>
         <location line="+6"/>
         <source>&amp;Fit Ladder to Width</source>
-        <translation type="unfinished"></translation>
+        <translation>Adatta schema ladder alla &amp;larghezza</translation>
     </message>
     <message>
         <location line="+9"/>
         <source>Zoom &amp;In</source>
-        <translation type="unfinished"></translation>
+        <translation>&amp;Ingrandisci</translation>
     </message>
     <message>
         <location line="+2"/>
         <source>Zoom &amp;Out</source>
-        <translation type="unfinished"></translation>
+        <translation>&amp;Riduci</translation>
     </message>
     <message>
         <location line="+2"/>
         <source>&amp;Check Program</source>
-        <translation type="unfinished"></translation>
+        <translation>&amp;Verifica programma</translation>
     </message>
     <message>
         <location line="+3"/>
         <source>&amp;Language</source>
-        <translation type="unfinished"></translation>
+        <translation>&amp;Lingua</translation>
     </message>
     <message>
         <location line="+15"/>
         <source>Language</source>
-        <translation type="unfinished"></translation>
+        <translation>Lingua</translation>
     </message>
     <message>
         <location line="+1"/>
         <source>The new language applies when Rung Studio starts again.</source>
-        <translation type="unfinished"></translation>
+        <translation>La nuova lingua verrà applicata al prossimo avvio di Rung Studio.</translation>
     </message>
     <message>
         <location line="+7"/>
         <source>&amp;Help</source>
-        <translation type="unfinished"></translation>
+        <translation>&amp;Aiuto</translation>
     </message>
     <message>
         <location line="+1"/>
         <source>&amp;Keyboard...</source>
-        <translation type="unfinished"></translation>
+        <translation>&amp;Tastiera...</translation>
     </message>
     <message>
         <location line="+2"/>
         <source>Keyboard</source>
-        <translation type="unfinished"></translation>
+        <translation>Tastiera</translation>
     </message>
     <message>
         <location line="+1"/>
@@ -550,111 +555,119 @@ Type an instruction into the cell: LD X0, ANI X2, OUT Y1, TMR T0 K10
 Insert: insert a cell, Ctrl+Insert: insert a row, Shift+Insert: insert a rung
 Delete: clear, Ctrl+Delete: delete the row, Shift+Delete: delete the rung
 Ctrl+Z / Ctrl+Y: undo / redo, Ctrl+wheel: zoom, F4: check the program</source>
-        <translation type="unfinished"></translation>
+        <translation>F5 contatto NA, F6 contatto NC, F7 bobina, F8 istruzione
+Shift+F5 / Shift+F6 gli stessi contatti in parallelo alla riga superiore
+Shift+F7 / Shift+F8 contatto su fronte di salita / di discesa (Alt: in parallelo)
+F9 collegamento orizzontale, Shift+F9 collegamento verticale, Ctrl+F9 / Ctrl+F10 li eliminano
+Digitare un&apos;istruzione nella cella: LD X0, ANI X2, OUT Y1, TMR T0 K10
+Insert: inserisce una cella, Ctrl+Insert: inserisce una riga, Shift+Insert: inserisce un segmento
+Delete: cancella, Ctrl+Delete: elimina la riga, Shift+Delete: elimina il segmento
+Ctrl+Z / Ctrl+Y: annulla / ripeti, Ctrl+rotellina: zoom, F4: verifica il programma</translation>
     </message>
     <message>
         <location line="+9"/>
         <source>&amp;About Rung Studio</source>
-        <translation type="unfinished"></translation>
+        <translation>&amp;Informazioni su Rung Studio</translation>
     </message>
     <message>
         <location line="+2"/>
         <source>About Rung Studio</source>
-        <translation type="unfinished"></translation>
+        <translation>Informazioni su Rung Studio</translation>
     </message>
     <message>
         <location line="+1"/>
         <source>Rung Studio %1
 Ladder and instruction-list editor for VPC, Vigor, CPM1 and PL110.</source>
-        <translation type="unfinished"></translation>
+        <translation>Rung Studio %1
+Editor di schemi ladder e liste istruzioni per VPC, Vigor, CPM1 e PL110.</translation>
     </message>
     <message>
         <location line="+14"/>
         <source>Rung Comment</source>
-        <translation type="unfinished"></translation>
+        <translation>Commento del segmento</translation>
     </message>
     <message>
         <location line="+0"/>
         <source>Comment above rung %1:</source>
-        <translation type="unfinished"></translation>
+        <translation>Commento sopra il segmento %1:</translation>
     </message>
     <message>
         <location line="+21"/>
         <source>Ladder</source>
-        <translation type="unfinished"></translation>
+        <translation>Ladder</translation>
     </message>
     <message>
         <location line="+1"/>
         <source>Instruction List</source>
-        <translation type="unfinished"></translation>
+        <translation>Lista istruzioni</translation>
     </message>
     <message>
         <location line="+63"/>
         <source>&lt;b&gt;%1&lt;/b&gt;&lt;br&gt;Target: %2, model %3&lt;br&gt;%4 rungs, %5 steps</source>
-        <translation type="unfinished"></translation>
+        <translation>&lt;b&gt;%1&lt;/b&gt;&lt;br&gt;Famiglia PLC: %2, modello %3&lt;br&gt;%4 segmenti, %5 passi</translation>
     </message>
     <message>
         <location line="+2"/>
         <location line="+51"/>
         <location filename="../app/gui/main_window_files.cpp" line="+365"/>
         <source>Untitled</source>
-        <translation type="unfinished"></translation>
+        <translation>Senza titolo</translation>
     </message>
     <message>
         <location line="-32"/>
         <source>The instruction list has %1: line %2: %3. The ladder shows the last valid program.</source>
-        <translation type="unfinished"></translation>
+        <translation>La lista istruzioni contiene %1: riga %2: %3. Lo schema ladder mostra l&apos;ultimo programma valido.</translation>
     </message>
     <message>
         <location line="+2"/>
         <source>an error</source>
-        <translation type="unfinished"></translation>
+        <translation>un errore</translation>
     </message>
     <message>
         <location line="+0"/>
         <source>%1 errors</source>
-        <translation type="unfinished"></translation>
+        <translation>%1 errori</translation>
     </message>
     <message>
         <location line="+13"/>
         <location filename="../app/gui/main_window_files.cpp" line="+2"/>
         <source>%1 %2</source>
-        <translation type="unfinished"></translation>
+        <translation>%1 %2</translation>
     </message>
     <message>
         <location line="+2"/>
         <source>%1 / %2 steps</source>
-        <translation type="unfinished"></translation>
+        <translation>%1 / %2 passi</translation>
     </message>
     <message>
         <location line="+5"/>
         <source>Line %1, column %2</source>
-        <translation type="unfinished"></translation>
+        <translation>Riga %1, colonna %2</translation>
     </message>
     <message>
         <location line="+4"/>
         <source>Rung %1, row %2, column %3</source>
-        <translation type="unfinished"></translation>
+        <translation>Segmento %1, riga %2, colonna %3</translation>
     </message>
     <message>
         <location filename="../app/gui/main_window_files.cpp" line="-260"/>
         <source>Recover</source>
-        <translation type="unfinished"></translation>
+        <translation>Ripristino</translation>
     </message>
     <message>
         <location line="+1"/>
         <source>Rung Studio was not closed properly last time. Recover the unsaved program?</source>
-        <translation type="unfinished"></translation>
+        <translation>Rung Studio non è stato chiuso correttamente l&apos;ultima volta. Ripristinare il programma non salvato?</translation>
     </message>
     <message>
         <location line="+28"/>
         <source>Cannot open the file</source>
-        <translation type="unfinished"></translation>
+        <translation>Impossibile aprire il file</translation>
     </message>
     <message>
         <location line="+16"/>
         <source>Unknown target %1</source>
-        <translation type="unfinished"></translation>
+        <translation>Famiglia PLC sconosciuta: %1</translation>
     </message>
     <message>
         <location line="+3"/>
@@ -662,218 +675,218 @@ Ladder and instruction-list editor for VPC, Vigor, CPM1 and PL110.</source>
         <location filename="../app/gui/main_window_tools.cpp" line="+12"/>
         <location line="+9"/>
         <source>%1: %2</source>
-        <translation type="unfinished"></translation>
+        <translation>%1: %2</translation>
     </message>
     <message>
         <location line="-127"/>
         <source>%1 is larger than 64 MB</source>
-        <translation type="unfinished"></translation>
+        <translation>%1 supera i 64 MB</translation>
     </message>
     <message>
         <location line="+4"/>
         <source>%1, line %2, column %3: %4</source>
-        <translation type="unfinished"></translation>
+        <translation>%1, riga %2, colonna %3: %4</translation>
     </message>
     <message>
         <location line="+7"/>
         <location filename="../app/gui/main_window_tools.cpp" line="+6"/>
         <source>%1, line %2: %3</source>
-        <translation type="unfinished"></translation>
+        <translation>%1, riga %2: %3</translation>
     </message>
     <message>
         <location line="+17"/>
         <source>Cannot save</source>
-        <translation type="unfinished"></translation>
+        <translation>Impossibile salvare</translation>
     </message>
     <message>
         <location line="+8"/>
         <source>Saved %1</source>
-        <translation type="unfinished"></translation>
+        <translation>%1 salvato</translation>
     </message>
     <message>
         <location line="+8"/>
         <source>Unsaved changes</source>
-        <translation type="unfinished"></translation>
+        <translation>Modifiche non salvate</translation>
     </message>
     <message>
         <location line="+0"/>
         <source>Save the changes to the program?</source>
-        <translation type="unfinished"></translation>
+        <translation>Salvare le modifiche al programma?</translation>
     </message>
     <message>
         <location line="+11"/>
         <source>New Project</source>
-        <translation type="unfinished"></translation>
+        <translation>Nuovo progetto</translation>
     </message>
     <message>
         <location line="+16"/>
         <source>PLC family:</source>
-        <translation type="unfinished"></translation>
+        <translation>Famiglia PLC:</translation>
     </message>
     <message>
         <location line="+1"/>
         <source>Model:</source>
-        <translation type="unfinished"></translation>
+        <translation>Modello:</translation>
     </message>
     <message>
         <location line="+14"/>
         <source>Open</source>
-        <translation type="unfinished"></translation>
+        <translation>Apri</translation>
     </message>
     <message>
         <location line="+1"/>
         <source>Rung Studio projects (*.rung);;Instruction lists (*.il *.txt)</source>
-        <translation type="unfinished"></translation>
+        <translation>Progetti Rung Studio (*.rung);;Liste istruzioni (*.il *.txt)</translation>
     </message>
     <message>
         <location line="+12"/>
         <source>Save As</source>
-        <translation type="unfinished"></translation>
+        <translation>Salva con nome</translation>
     </message>
     <message>
         <location line="+1"/>
         <source>Rung Studio projects (*.rung)</source>
-        <translation type="unfinished"></translation>
+        <translation>Progetti Rung Studio (*.rung)</translation>
     </message>
     <message>
         <location line="+12"/>
         <source>Import Instruction List</source>
-        <translation type="unfinished"></translation>
+        <translation>Importa lista istruzioni</translation>
     </message>
     <message>
         <location line="+1"/>
         <source>Instruction lists (*.il *.txt);;All files (*)</source>
-        <translation type="unfinished"></translation>
+        <translation>Liste istruzioni (*.il *.txt);;Tutti i file (*)</translation>
     </message>
     <message>
         <location line="+7"/>
         <source>Export Instruction List</source>
-        <translation type="unfinished"></translation>
+        <translation>Esporta lista istruzioni</translation>
     </message>
     <message>
         <location line="+0"/>
         <source>Instruction lists (*.il *.txt)</source>
-        <translation type="unfinished"></translation>
+        <translation>Liste istruzioni (*.il *.txt)</translation>
     </message>
     <message>
         <location line="+6"/>
         <location line="+14"/>
         <location filename="../app/gui/main_window_tools.cpp" line="-24"/>
         <source>Cannot export</source>
-        <translation type="unfinished"></translation>
+        <translation>Impossibile esportare</translation>
     </message>
     <message>
         <location line="-9"/>
         <source>Export Ladder</source>
-        <translation type="unfinished"></translation>
+        <translation>Esporta schema ladder</translation>
     </message>
     <message>
         <location line="+19"/>
         <source>%1 could not be written</source>
-        <translation type="unfinished"></translation>
+        <translation>Impossibile scrivere %1</translation>
     </message>
     <message>
         <location line="+37"/>
         <source>%1: the ladder can be exported as PDF, SVG or PNG</source>
-        <translation type="unfinished"></translation>
+        <translation>%1: lo schema ladder può essere esportato in PDF, SVG o PNG</translation>
     </message>
     <message>
         <location line="+39"/>
         <source>%1    page %2 of %3</source>
-        <translation type="unfinished"></translation>
+        <translation>%1    pagina %2 di %3</translation>
     </message>
     <message>
         <location line="+70"/>
         <source>Cannot open the example</source>
-        <translation type="unfinished"></translation>
+        <translation>Impossibile aprire l&apos;esempio</translation>
     </message>
     <message>
         <location filename="../app/gui/main_window_tools.cpp" line="-167"/>
         <source>Cut rungs</source>
-        <translation type="unfinished"></translation>
+        <translation>Taglia segmenti</translation>
     </message>
     <message>
         <location line="+15"/>
         <source>Cannot paste the cells: %1</source>
-        <translation type="unfinished"></translation>
+        <translation>Impossibile incollare le celle: %1</translation>
     </message>
     <message>
         <location line="+18"/>
         <source>Line %1: %2</source>
-        <translation type="unfinished"></translation>
+        <translation>Riga %1: %2</translation>
     </message>
     <message>
         <location line="+12"/>
         <source>The clipboard holds no rungs</source>
-        <translation type="unfinished"></translation>
+        <translation>Gli appunti non contengono segmenti</translation>
     </message>
     <message>
         <location line="+1"/>
         <source>Cannot paste: %1</source>
-        <translation type="unfinished"></translation>
+        <translation>Impossibile incollare: %1</translation>
     </message>
     <message>
         <location line="+6"/>
         <source>Paste rung</source>
-        <translation type="unfinished"></translation>
+        <translation>Incolla segmento</translation>
     </message>
     <message numerus="yes">
         <location line="+1"/>
         <source>Paste %n rungs</source>
-        <translation type="unfinished">
-            <numerusform></numerusform>
-            <numerusform></numerusform>
+        <translation>
+            <numerusform>Incolla %n segmento</numerusform>
+            <numerusform>Incolla %n segmenti</numerusform>
         </translation>
     </message>
     <message>
         <location line="+7"/>
         <source>Find Device</source>
-        <translation type="unfinished"></translation>
+        <translation>Trova operando</translation>
     </message>
     <message>
         <location line="+0"/>
         <source>Device:</source>
-        <translation type="unfinished"></translation>
+        <translation>Operando:</translation>
     </message>
     <message>
         <location line="+28"/>
         <location line="+3"/>
         <location line="+7"/>
         <source>Replace Device</source>
-        <translation type="unfinished"></translation>
+        <translation>Sostituisci operando</translation>
     </message>
     <message>
         <location line="-10"/>
         <source>Replace the device:</source>
-        <translation type="unfinished"></translation>
+        <translation>Sostituisci l&apos;operando:</translation>
     </message>
     <message>
         <location line="+3"/>
         <source>with:</source>
-        <translation type="unfinished"></translation>
+        <translation>con:</translation>
     </message>
     <message numerus="yes">
         <location line="+9"/>
         <source>%n place(s) changed</source>
-        <translation type="unfinished">
-            <numerusform></numerusform>
-            <numerusform></numerusform>
+        <translation>
+            <numerusform>%n occorrenza modificata</numerusform>
+            <numerusform>%n occorrenze modificate</numerusform>
         </translation>
     </message>
     <message>
         <location line="+39"/>
         <source>Replace %1 with %2</source>
-        <translation type="unfinished"></translation>
+        <translation>Sostituisci %1 con %2</translation>
     </message>
     <message>
         <location line="+6"/>
         <source>Cross Reference</source>
-        <translation type="unfinished"></translation>
+        <translation>Riferimenti incrociati</translation>
     </message>
     <message>
         <location line="+18"/>
         <source>Export Symbols</source>
-        <translation type="unfinished"></translation>
+        <translation>Esporta simboli</translation>
     </message>
 </context>
 <context>
@@ -881,49 +894,49 @@ Ladder and instruction-list editor for VPC, Vigor, CPM1 and PL110.</source>
     <message>
         <location filename="../app/cli/cli_simulate.cpp" line="+20"/>
         <source>usage: rungstudio-cli simulate FILE [--target T] --scans N [--period MS] [--set DEV=VALUE@SCAN]... --trace DEV[,DEV...]</source>
-        <translation type="unfinished"></translation>
+        <translation>uso: rungstudio-cli simulate FILE [--target T] --scans N [--period MS] [--set DEV=VALUE@SCAN]... --trace DEV[,DEV...]</translation>
     </message>
     <message>
         <location line="+28"/>
         <source>unexpected argument %1</source>
-        <translation type="unfinished"></translation>
+        <translation>argomento non previsto: %1</translation>
     </message>
     <message>
         <location line="+10"/>
         <source>cannot read %1: %2</source>
-        <translation type="unfinished"></translation>
+        <translation>impossibile leggere %1: %2</translation>
     </message>
     <message>
         <location line="+7"/>
         <source>%1: no target; give --target or a &quot;; target: NAME&quot; first line</source>
-        <translation type="unfinished"></translation>
+        <translation>%1: famiglia PLC non specificata; usare --target oppure una prima riga &quot;; target: NAME&quot;</translation>
     </message>
     <message>
         <location line="+6"/>
         <source>unknown target %1</source>
-        <translation type="unfinished"></translation>
+        <translation>famiglia PLC sconosciuta: %1</translation>
     </message>
     <message>
         <location line="+14"/>
         <location line="+7"/>
         <source>error: %1</source>
-        <translation type="unfinished"></translation>
+        <translation>errore: %1</translation>
     </message>
     <message>
         <location line="-6"/>
         <location line="+10"/>
         <source>the program does not start</source>
-        <translation type="unfinished"></translation>
+        <translation>il programma non si avvia</translation>
     </message>
     <message>
         <location line="-3"/>
         <source>warning: %1</source>
-        <translation type="unfinished"></translation>
+        <translation>avviso: %1</translation>
     </message>
     <message>
         <location line="+11"/>
         <source>runtime error at step %1: %2</source>
-        <translation type="unfinished"></translation>
+        <translation>errore di esecuzione al passo %1: %2</translation>
     </message>
 </context>
 <context>
@@ -931,52 +944,52 @@ Ladder and instruction-list editor for VPC, Vigor, CPM1 and PL110.</source>
     <message>
         <location filename="../editor/cross_reference_view.cpp" line="+51"/>
         <source>Device or prefix (X0, X); empty: every device</source>
-        <translation type="unfinished"></translation>
+        <translation>Operando o prefisso (X0, X); vuoto: tutti gli operandi</translation>
     </message>
     <message>
         <location line="+4"/>
         <source>Device / rung</source>
-        <translation type="unfinished"></translation>
+        <translation>Operando / segmento</translation>
     </message>
     <message>
         <location line="+0"/>
         <source>Step</source>
-        <translation type="unfinished"></translation>
+        <translation>Passo</translation>
     </message>
     <message>
         <location line="+0"/>
         <source>Use</source>
-        <translation type="unfinished"></translation>
+        <translation>Uso</translation>
     </message>
     <message>
         <location line="+0"/>
         <source>Instruction</source>
-        <translation type="unfinished"></translation>
+        <translation>Istruzione</translation>
     </message>
     <message>
         <location line="+59"/>
         <source>contact</source>
-        <translation type="unfinished"></translation>
+        <translation>contatto</translation>
     </message>
     <message>
         <location line="+0"/>
         <source>coil</source>
-        <translation type="unfinished"></translation>
+        <translation>bobina</translation>
     </message>
     <message>
         <location line="+0"/>
         <source>box</source>
-        <translation type="unfinished"></translation>
+        <translation>box</translation>
     </message>
     <message>
         <location line="+12"/>
         <source>rung %1</source>
-        <translation type="unfinished"></translation>
+        <translation>segmento %1</translation>
     </message>
     <message>
         <location line="+18"/>
         <source>The first %1 uses; type a device or a prefix for the rest</source>
-        <translation type="unfinished"></translation>
+        <translation>Primi %1 utilizzi; digitare un operando o un prefisso per vedere gli altri</translation>
     </message>
 </context>
 <context>
@@ -984,30 +997,30 @@ Ladder and instruction-list editor for VPC, Vigor, CPM1 and PL110.</source>
     <message>
         <location filename="../editor/document.cpp" line="+40"/>
         <source>Edit symbols</source>
-        <translation type="unfinished"></translation>
+        <translation>Modifica simboli</translation>
     </message>
     <message>
         <location line="+108"/>
         <source>Insert rung</source>
-        <translation type="unfinished"></translation>
+        <translation>Inserisci segmento</translation>
     </message>
     <message>
         <location line="+5"/>
         <source>Delete rung</source>
-        <translation type="unfinished"></translation>
+        <translation>Elimina segmento</translation>
     </message>
     <message numerus="yes">
         <location line="+0"/>
         <source>Delete %n rungs</source>
-        <translation type="unfinished">
-            <numerusform></numerusform>
-            <numerusform></numerusform>
+        <translation>
+            <numerusform>Elimina %n segmento</numerusform>
+            <numerusform>Elimina %n segmenti</numerusform>
         </translation>
     </message>
     <message>
         <location line="+56"/>
         <source>Edit instruction list</source>
-        <translation type="unfinished"></translation>
+        <translation>Modifica lista istruzioni</translation>
     </message>
 </context>
 <context>
@@ -1015,7 +1028,7 @@ Ladder and instruction-list editor for VPC, Vigor, CPM1 and PL110.</source>
     <message>
         <location filename="../editor/il_editor.cpp" line="+231"/>
         <source>Instruction list</source>
-        <translation type="unfinished"></translation>
+        <translation>Lista istruzioni</translation>
     </message>
 </context>
 <context>
@@ -1023,37 +1036,37 @@ Ladder and instruction-list editor for VPC, Vigor, CPM1 and PL110.</source>
     <message>
         <location line="-174"/>
         <source>Default</source>
-        <translation type="unfinished"></translation>
+        <translation>Predefinito</translation>
     </message>
     <message>
         <location line="+2"/>
         <source>Instruction</source>
-        <translation type="unfinished"></translation>
+        <translation>Istruzione</translation>
     </message>
     <message>
         <location line="+2"/>
         <source>Device</source>
-        <translation type="unfinished"></translation>
+        <translation>Operando</translation>
     </message>
     <message>
         <location line="+2"/>
         <source>Constant</source>
-        <translation type="unfinished"></translation>
+        <translation>Costante</translation>
     </message>
     <message>
         <location line="+2"/>
         <source>Comment</source>
-        <translation type="unfinished"></translation>
+        <translation>Commento</translation>
     </message>
     <message>
         <location line="+2"/>
         <source>Step number</source>
-        <translation type="unfinished"></translation>
+        <translation>Numero di passo</translation>
     </message>
     <message>
         <location line="+2"/>
         <source>Unknown word</source>
-        <translation type="unfinished"></translation>
+        <translation>Parola sconosciuta</translation>
     </message>
 </context>
 <context>
@@ -1061,109 +1074,109 @@ Ladder and instruction-list editor for VPC, Vigor, CPM1 and PL110.</source>
     <message>
         <location filename="../editor/ladder_view.cpp" line="+42"/>
         <source>Ladder diagram</source>
-        <translation type="unfinished"></translation>
+        <translation>Schema ladder</translation>
     </message>
     <message>
         <location line="+94"/>
         <source>Edit rung comment</source>
-        <translation type="unfinished"></translation>
+        <translation>Modifica commento del segmento</translation>
     </message>
     <message>
         <location line="+160"/>
         <source>Type one instruction, for example &quot;%1 X0&quot;</source>
-        <translation type="unfinished"></translation>
+        <translation>Digitare una sola istruzione, ad esempio &quot;%1 X0&quot;</translation>
     </message>
     <message>
         <location line="+18"/>
         <source>%1 is drawn with vertical links, not typed into a cell</source>
-        <translation type="unfinished"></translation>
+        <translation>%1 si disegna con i collegamenti verticali, non si digita in una cella</translation>
     </message>
     <message>
         <location line="+4"/>
         <source>Contacts go in the grid; the right-hand column holds coils and boxes</source>
-        <translation type="unfinished"></translation>
+        <translation>I contatti vanno nella griglia; la colonna di destra contiene bobine e box</translation>
     </message>
     <message>
         <location line="+24"/>
         <location line="+13"/>
         <source>Place %1</source>
-        <translation type="unfinished"></translation>
+        <translation>Posiziona %1</translation>
     </message>
     <message>
         <location line="+22"/>
         <location filename="../editor/ladder_view_mouse.cpp" line="+124"/>
         <source>Draw a wire</source>
-        <translation type="unfinished"></translation>
+        <translation>Disegna collegamento orizzontale</translation>
     </message>
     <message>
         <location line="+11"/>
         <source>Toggle a vertical link</source>
-        <translation type="unfinished"></translation>
+        <translation>Attiva/disattiva un collegamento verticale</translation>
     </message>
     <message>
         <location line="+18"/>
         <source>Delete</source>
-        <translation type="unfinished"></translation>
+        <translation>Elimina</translation>
     </message>
     <message>
         <location line="+8"/>
         <source>Insert a cell</source>
-        <translation type="unfinished"></translation>
+        <translation>Inserisci una cella</translation>
     </message>
     <message>
         <location line="+6"/>
         <source>Insert a row</source>
-        <translation type="unfinished"></translation>
+        <translation>Inserisci una riga</translation>
     </message>
     <message>
         <location line="+8"/>
         <source>Delete a row</source>
-        <translation type="unfinished"></translation>
+        <translation>Elimina una riga</translation>
     </message>
     <message>
         <location filename="../editor/ladder_view_mouse.cpp" line="+12"/>
         <source>Draw a vertical link</source>
-        <translation type="unfinished"></translation>
+        <translation>Traccia un collegamento verticale</translation>
     </message>
     <message>
         <location filename="../editor/ladder_view_keys.cpp" line="+32"/>
         <source>%1 has no such contact</source>
-        <translation type="unfinished"></translation>
+        <translation>%1 non ha un contatto di questo tipo</translation>
     </message>
     <message>
         <location line="+78"/>
         <source>There is no wire under the cursor</source>
-        <translation type="unfinished"></translation>
+        <translation>Non c&apos;è un collegamento orizzontale sotto il cursore</translation>
     </message>
     <message>
         <location line="+4"/>
         <source>Delete a wire</source>
-        <translation type="unfinished"></translation>
+        <translation>Elimina un collegamento orizzontale</translation>
     </message>
     <message>
         <location line="+10"/>
         <source>There is no vertical link at the cursor</source>
-        <translation type="unfinished"></translation>
+        <translation>Non c&apos;è un collegamento verticale al cursore</translation>
     </message>
     <message>
         <location line="+4"/>
         <source>Delete a vertical link</source>
-        <translation type="unfinished"></translation>
+        <translation>Elimina un collegamento verticale</translation>
     </message>
     <message>
         <location filename="../editor/ladder_view_selection.cpp" line="+85"/>
         <source>Delete cells</source>
-        <translation type="unfinished"></translation>
+        <translation>Elimina celle</translation>
     </message>
     <message>
         <location line="+14"/>
         <source>Paste cells</source>
-        <translation type="unfinished"></translation>
+        <translation>Incolla celle</translation>
     </message>
     <message>
         <location filename="../editor/ladder_view_find.cpp" line="+45"/>
         <source>%1 is not used in the program</source>
-        <translation type="unfinished"></translation>
+        <translation>%1 non è usato nel programma</translation>
     </message>
 </context>
 <context>
@@ -1171,105 +1184,105 @@ Ladder and instruction-list editor for VPC, Vigor, CPM1 and PL110.</source>
     <message>
         <location filename="../editor/problems_view.cpp" line="+16"/>
         <source>Severity</source>
-        <translation type="unfinished"></translation>
+        <translation>Gravità</translation>
     </message>
     <message>
         <location line="+0"/>
         <source>Code</source>
-        <translation type="unfinished"></translation>
+        <translation>Codice</translation>
     </message>
     <message>
         <location line="+0"/>
         <source>Place</source>
-        <translation type="unfinished"></translation>
+        <translation>Posizione</translation>
     </message>
     <message>
         <location line="+0"/>
         <source>Message</source>
-        <translation type="unfinished"></translation>
+        <translation>Messaggio</translation>
     </message>
     <message>
         <location line="+5"/>
         <location line="+58"/>
         <source>Problems</source>
-        <translation type="unfinished"></translation>
+        <translation>Problemi</translation>
     </message>
     <message>
         <location line="-42"/>
         <source>Error</source>
-        <translation type="unfinished"></translation>
+        <translation>Errore</translation>
     </message>
     <message>
         <location line="+1"/>
         <location line="+17"/>
         <source>Warning</source>
-        <translation type="unfinished"></translation>
+        <translation>Avviso</translation>
     </message>
     <message>
         <location line="-16"/>
         <source>Note</source>
-        <translation type="unfinished"></translation>
+        <translation>Nota</translation>
     </message>
     <message>
         <location line="+4"/>
         <source>line %1</source>
-        <translation type="unfinished"></translation>
+        <translation>riga %1</translation>
     </message>
     <message>
         <location line="+3"/>
         <location line="+11"/>
         <source>rung %1, row %2</source>
-        <translation type="unfinished"></translation>
+        <translation>segmento %1, riga %2</translation>
     </message>
     <message>
         <location line="-10"/>
         <source>rung %1</source>
-        <translation type="unfinished"></translation>
+        <translation>segmento %1</translation>
     </message>
     <message>
         <location line="+2"/>
         <source>%1 (fix available)</source>
-        <translation type="unfinished"></translation>
+        <translation>%1 (correzione disponibile)</translation>
     </message>
     <message>
         <location line="+27"/>
         <source>1 error</source>
-        <translation type="unfinished"></translation>
+        <translation>1 errore</translation>
     </message>
     <message>
         <location line="+0"/>
         <source>%1 errors</source>
-        <translation type="unfinished"></translation>
+        <translation>%1 errori</translation>
     </message>
     <message>
         <location line="+2"/>
         <source>1 warning</source>
-        <translation type="unfinished"></translation>
+        <translation>1 avviso</translation>
     </message>
     <message>
         <location line="+0"/>
         <source>%1 warnings</source>
-        <translation type="unfinished"></translation>
+        <translation>%1 avvisi</translation>
     </message>
     <message>
         <location line="+1"/>
         <source>Problems (%1)</source>
-        <translation type="unfinished"></translation>
+        <translation>Problemi (%1)</translation>
     </message>
     <message>
         <location line="+0"/>
         <source>, </source>
-        <translation type="unfinished"></translation>
+        <translation>, </translation>
     </message>
     <message>
         <location line="+10"/>
         <source>No problems found</source>
-        <translation type="unfinished"></translation>
+        <translation>Nessun problema trovato</translation>
     </message>
     <message>
         <location line="+15"/>
         <source>Show</source>
-        <translation type="unfinished"></translation>
+        <translation>Mostra</translation>
     </message>
 </context>
 <context>
@@ -1277,7 +1290,7 @@ Ladder and instruction-list editor for VPC, Vigor, CPM1 and PL110.</source>
     <message>
         <location filename="../editor/symbols_csv.cpp" line="+113"/>
         <source>a symbol without a device</source>
-        <translation type="unfinished"></translation>
+        <translation>un simbolo senza operando</translation>
     </message>
 </context>
 <context>
@@ -1285,27 +1298,27 @@ Ladder and instruction-list editor for VPC, Vigor, CPM1 and PL110.</source>
     <message>
         <location filename="../editor/watch_list_view.cpp" line="+14"/>
         <source>Watch list</source>
-        <translation type="unfinished"></translation>
+        <translation>Lista di osservazione</translation>
     </message>
     <message>
         <location line="+3"/>
         <source>Watch lists</source>
-        <translation type="unfinished"></translation>
+        <translation>Liste di osservazione</translation>
     </message>
     <message>
         <location line="+42"/>
         <source>Watch 1</source>
-        <translation type="unfinished"></translation>
+        <translation>Osservazione 1</translation>
     </message>
     <message>
         <location line="+6"/>
         <source>Add %1 to the watch list</source>
-        <translation type="unfinished"></translation>
+        <translation>Aggiungi %1 alla lista di osservazione</translation>
     </message>
     <message>
         <location line="+14"/>
         <source>Remove %1 from the watch list</source>
-        <translation type="unfinished"></translation>
+        <translation>Rimuovi %1 dalla lista di osservazione</translation>
     </message>
 </context>
 <context>
@@ -1313,105 +1326,105 @@ Ladder and instruction-list editor for VPC, Vigor, CPM1 and PL110.</source>
     <message>
         <location filename="../model/address.cpp" line="+124"/>
         <source>A device is missing</source>
-        <translation type="unfinished"></translation>
+        <translation>Manca un operando</translation>
     </message>
     <message>
         <location line="+14"/>
         <source>%1: a number is expected after %2</source>
-        <translation type="unfinished"></translation>
+        <translation>%1: dopo %2 è atteso un numero</translation>
     </message>
     <message>
         <location line="+3"/>
         <source>%1 is not a device of %2</source>
-        <translation type="unfinished"></translation>
+        <translation>%1 non è un operando di %2</translation>
     </message>
     <message>
         <location line="+14"/>
         <source>%1: the number is too large</source>
-        <translation type="unfinished"></translation>
+        <translation>%1: il numero è troppo grande</translation>
     </message>
     <message>
         <location line="+2"/>
         <source>%1: %2 is numbered in octal</source>
-        <translation type="unfinished"></translation>
+        <translation>%1: %2 è numerato in ottale</translation>
     </message>
     <message>
         <location line="+8"/>
         <source>%1: a bit number is expected after the point</source>
-        <translation type="unfinished"></translation>
+        <translation>%1: dopo il punto è atteso un numero di bit</translation>
     </message>
     <message>
         <location line="+3"/>
         <location line="+14"/>
         <source>%1: bit %2 is beyond 00..15</source>
-        <translation type="unfinished"></translation>
+        <translation>%1: il bit %2 è oltre 00..15</translation>
     </message>
     <message>
         <location line="-9"/>
         <source>%1: unexpected &apos;%2&apos; after the device</source>
-        <translation type="unfinished"></translation>
+        <translation>%1: &apos;%2&apos; inatteso dopo l&apos;operando</translation>
     </message>
     <message>
         <location line="+48"/>
         <source>%1: %2 has no bit numbers</source>
-        <translation type="unfinished"></translation>
+        <translation>%1: %2 non ha numeri di bit</translation>
     </message>
     <message>
         <location line="+3"/>
         <location line="+27"/>
         <source>%1: %2 has no %3</source>
-        <translation type="unfinished"></translation>
+        <translation>%1: %2 non ha %3</translation>
     </message>
     <message>
         <location line="-11"/>
         <location line="+14"/>
         <source>%1 is beyond %2&apos;s %3 %4</source>
-        <translation type="unfinished"></translation>
+        <translation>%1 è fuori campo (%3 di %2: %4)</translation>
     </message>
     <message>
         <location line="-11"/>
         <source>%1 is beyond %2&apos;s %3</source>
-        <translation type="unfinished"></translation>
+        <translation>%1 è fuori campo (%3 di %2)</translation>
     </message>
     <message>
         <location line="+37"/>
         <source>A constant is missing</source>
-        <translation type="unfinished"></translation>
+        <translation>Manca una costante</translation>
     </message>
     <message>
         <location line="+23"/>
         <source>%1: %2 writes constants without K or H</source>
-        <translation type="unfinished"></translation>
+        <translation>%1: %2 scrive le costanti senza K o H</translation>
     </message>
     <message>
         <location line="+6"/>
         <source>%1: # constants belong to CPM1 listings</source>
-        <translation type="unfinished"></translation>
+        <translation>%1: le costanti con # appartengono alle liste CPM1</translation>
     </message>
     <message>
         <location line="+5"/>
         <source>%1: write a constant as K (decimal) or H (hexadecimal)</source>
-        <translation type="unfinished"></translation>
+        <translation>%1: scrivere una costante come K (decimale) o H (esadecimale)</translation>
     </message>
     <message>
         <location line="+1"/>
         <source>%1: write a constant with # (e.g. #0150)</source>
-        <translation type="unfinished"></translation>
+        <translation>%1: scrivere una costante con # (ad es. #0150)</translation>
     </message>
     <message>
         <location line="+9"/>
         <source>%1: digits are expected</source>
-        <translation type="unfinished"></translation>
+        <translation>%1: sono attese delle cifre</translation>
     </message>
     <message>
         <location line="+13"/>
         <source>%1: &apos;%2&apos; is not a digit</source>
-        <translation type="unfinished"></translation>
+        <translation>%1: &apos;%2&apos; non è una cifra</translation>
     </message>
     <message>
         <location line="+7"/>
         <source>%1: the constant is too large</source>
-        <translation type="unfinished"></translation>
+        <translation>%1: la costante è troppo grande</translation>
     </message>
 </context>
 <context>
@@ -1419,203 +1432,203 @@ Ladder and instruction-list editor for VPC, Vigor, CPM1 and PL110.</source>
     <message>
         <location filename="../model/checks_ladder.cpp" line="+70"/>
         <source>Reverse current: power would cross an element right to left to reach row %1</source>
-        <translation type="unfinished"></translation>
+        <translation>Corrente inversa: la corrente attraverserebbe un elemento da destra a sinistra per raggiungere la riga %1</translation>
     </message>
     <message>
         <location line="+4"/>
         <source>Duplicate the shared contact into each branch</source>
-        <translation type="unfinished"></translation>
+        <translation>Duplica il contatto condiviso in ogni ramo</translation>
     </message>
     <message>
         <location line="+13"/>
         <source>Open branch: row %1 is not connected to the left rail</source>
-        <translation type="unfinished"></translation>
+        <translation>Ramo aperto: la riga %1 non è collegata alla barra sinistra</translation>
     </message>
     <message>
         <location line="+12"/>
         <source>%1 has no condition: it is wired straight to the left rail</source>
-        <translation type="unfinished"></translation>
+        <translation>%1 non ha condizione: è collegato direttamente alla barra sinistra</translation>
     </message>
     <message>
         <location line="+15"/>
         <source>This contact is not on any path from the left rail to an output</source>
-        <translation type="unfinished"></translation>
+        <translation>Questo contatto non si trova su alcun percorso dalla barra sinistra a un&apos;uscita</translation>
     </message>
     <message>
         <location filename="../model/checks_list.cpp" line="+149"/>
         <source>Rewrite the rung in the canonical form</source>
-        <translation type="unfinished"></translation>
+        <translation>Riscrivi il segmento nella forma canonica</translation>
     </message>
     <message>
         <location line="+27"/>
         <source>More than %1 %2 in a row: the PLC rejects the program</source>
-        <translation type="unfinished"></translation>
+        <translation>Più di %1 %2 consecutivi: il PLC rifiuta il programma</translation>
     </message>
     <message>
         <location line="+29"/>
         <source>Stacked ANB: combine each block with ANB as soon as it is complete</source>
-        <translation type="unfinished"></translation>
+        <translation>ANB impilati: combinare ogni blocco con ANB appena è completo</translation>
     </message>
     <message numerus="yes">
         <location line="+2"/>
         <source>Stacked ORB: %n blocks are open; an OR chain needs less stack</source>
-        <translation type="unfinished">
-            <numerusform></numerusform>
-            <numerusform></numerusform>
+        <translation>
+            <numerusform>ORB impilati: %n blocco è aperto; una catena OR richiede meno stack</numerusform>
+            <numerusform>ORB impilati: %n blocchi sono aperti; una catena OR richiede meno stack</numerusform>
         </translation>
     </message>
     <message>
         <location line="+6"/>
         <source>A single contact joined with %1 is simpler as %2</source>
-        <translation type="unfinished"></translation>
+        <translation>Un singolo contatto unito con %1 è più semplice come %2</translation>
     </message>
     <message>
         <location line="+8"/>
         <source>A single device in parallel with a block belongs on the lower row: the block first, then an OR, drops the %1</source>
-        <translation type="unfinished"></translation>
+        <translation>Un singolo operando in parallelo a un blocco va sulla riga inferiore: prima il blocco, poi un OR, senza %1</translation>
     </message>
     <message>
         <location line="+7"/>
         <source>The block after a single contact can move to the front and drop the %1</source>
-        <translation type="unfinished"></translation>
+        <translation>Il blocco dopo un singolo contatto può essere spostato in testa, senza %1</translation>
     </message>
     <message>
         <location line="+13"/>
         <source>MPS nests more than %1 deep</source>
-        <translation type="unfinished"></translation>
+        <translation>MPS annidati oltre %1 livelli</translation>
     </message>
     <message>
         <location line="+6"/>
         <source>%1 without a matching MPS</source>
-        <translation type="unfinished"></translation>
+        <translation>%1 senza un MPS corrispondente</translation>
     </message>
     <message>
         <location line="+7"/>
         <source>An output with no contacts of its own belongs on top of the branch and needs no %1</source>
-        <translation type="unfinished"></translation>
+        <translation>Un&apos;uscita senza contatti propri va in cima alla diramazione e non richiede %1</translation>
     </message>
     <message numerus="yes">
         <location line="+15"/>
         <source>%n MPS left without MPP at the end of the rung</source>
-        <translation type="unfinished">
-            <numerusform></numerusform>
-            <numerusform></numerusform>
+        <translation>
+            <numerusform>%n MPS senza MPP alla fine del segmento</numerusform>
+            <numerusform>%n MPS senza MPP alla fine del segmento</numerusform>
         </translation>
     </message>
     <message>
         <location line="+16"/>
         <source>END is missing</source>
-        <translation type="unfinished"></translation>
+        <translation>Manca END</translation>
     </message>
     <message>
         <location line="+6"/>
         <source>Instructions after END are never executed</source>
-        <translation type="unfinished"></translation>
+        <translation>Le istruzioni dopo END non vengono mai eseguite</translation>
     </message>
     <message>
         <location line="+14"/>
         <source>IL inside IL: close the first with ILC</source>
-        <translation type="unfinished"></translation>
+        <translation>IL dentro IL: chiudere il primo con ILC</translation>
     </message>
     <message>
         <location line="+6"/>
         <source>ILC without IL (&quot;IL (JMP) missing&quot;)</source>
-        <translation type="unfinished"></translation>
+        <translation>ILC senza IL (&quot;IL (JMP) missing&quot;)</translation>
     </message>
     <message>
         <location line="+3"/>
         <source>IL-JMP interlace: the jump opened inside the interlock is still open</source>
-        <translation type="unfinished"></translation>
+        <translation>Intreccio IL-JMP: il salto aperto dentro l&apos;interblocco è ancora aperto</translation>
     </message>
     <message>
         <location line="+9"/>
         <source>Jump number %1 is beyond 00..%2</source>
-        <translation type="unfinished"></translation>
+        <translation>Il numero di salto %1 è oltre 00..%2</translation>
     </message>
     <message>
         <location line="+8"/>
         <source>JMP inside JMP: close the first jump</source>
-        <translation type="unfinished"></translation>
+        <translation>JMP dentro JMP: chiudere il primo salto</translation>
     </message>
     <message>
         <location line="+9"/>
         <source>A second %1 %2: several JMP may share a number, only one JME</source>
-        <translation type="unfinished"></translation>
+        <translation>Un secondo %1 %2: più JMP possono condividere un numero, un solo JME</translation>
     </message>
     <message>
         <location line="+8"/>
         <source>%1 %2 without a JMP before it</source>
-        <translation type="unfinished"></translation>
+        <translation>%1 %2 senza un JMP prima</translation>
     </message>
     <message>
         <location line="+6"/>
         <source>%1 without JMP (&quot;IL (JMP) missing&quot;)</source>
-        <translation type="unfinished"></translation>
+        <translation>%1 senza JMP (&quot;IL (JMP) missing&quot;)</translation>
     </message>
     <message>
         <location line="+3"/>
         <source>IL-JMP interlace: the interlock opened inside the jump is still open</source>
-        <translation type="unfinished"></translation>
+        <translation>Intreccio IL-JMP: l&apos;interblocco aperto dentro il salto è ancora aperto</translation>
     </message>
     <message>
         <location line="+15"/>
         <source>IL without ILC</source>
-        <translation type="unfinished"></translation>
+        <translation>IL senza ILC</translation>
     </message>
     <message>
         <location line="+3"/>
         <source>JMP without its end (%1)</source>
-        <translation type="unfinished"></translation>
+        <translation>JMP senza la sua fine (%1)</translation>
     </message>
     <message>
         <location line="+6"/>
         <source>JMP %1 has no JME %1</source>
-        <translation type="unfinished"></translation>
+        <translation>JMP %1 non ha JME %1</translation>
     </message>
     <message>
         <location line="+2"/>
         <source>The step ladder is not closed with RET</source>
-        <translation type="unfinished"></translation>
+        <translation>Lo step ladder non è chiuso con RET</translation>
     </message>
     <message>
         <location line="+25"/>
         <source>Set value %1 is out of range</source>
-        <translation type="unfinished"></translation>
+        <translation>Il valore di preset %1 è fuori campo</translation>
     </message>
     <message>
         <location line="+16"/>
         <source>%1 cannot be written: %2 are read-only</source>
-        <translation type="unfinished"></translation>
+        <translation>%1 non può essere scritto: area di sola lettura (%2)</translation>
     </message>
     <message>
         <location line="+15"/>
         <source>Number %1 is used as a timer and as a counter; they share one bank</source>
-        <translation type="unfinished"></translation>
+        <translation>Il numero %1 è usato come temporizzatore e come contatore; condividono un banco</translation>
     </message>
     <message>
         <location line="+22"/>
         <source>%1 is driven twice (&quot;Oper duplication&quot;); the first is on line %2</source>
-        <translation type="unfinished"></translation>
+        <translation>%1 è comandato due volte (&quot;Oper duplication&quot;); il primo è alla riga %2</translation>
     </message>
     <message>
         <location line="+3"/>
         <source>%1 is driven twice; the later one wins (first on line %2)</source>
-        <translation type="unfinished"></translation>
+        <translation>%1 è comandato due volte; prevale l&apos;ultimo (il primo alla riga %2)</translation>
     </message>
     <message>
         <location line="+7"/>
         <source>%1 is driven twice (&quot;Oper duplication&quot;); the first is in rung %2</source>
-        <translation type="unfinished"></translation>
+        <translation>%1 è comandato due volte (&quot;Oper duplication&quot;); il primo è nel segmento %2</translation>
     </message>
     <message>
         <location line="+2"/>
         <source>%1 is driven twice; the later one wins (first in rung %2)</source>
-        <translation type="unfinished"></translation>
+        <translation>%1 è comandato due volte; prevale l&apos;ultimo (il primo nel segmento %2)</translation>
     </message>
     <message>
         <location line="+13"/>
         <source>The program needs %1 steps; %2 holds %3</source>
-        <translation type="unfinished"></translation>
+        <translation>Il programma richiede %1 passi; %2 ne contiene %3</translation>
     </message>
 </context>
 <context>
@@ -1623,45 +1636,45 @@ Ladder and instruction-list editor for VPC, Vigor, CPM1 and PL110.</source>
     <message>
         <location filename="../model/convert_to_ladder.cpp" line="+272"/>
         <source>%1 has no block to continue; start the rung with a load</source>
-        <translation type="unfinished"></translation>
+        <translation>%1 non ha un blocco da continuare; iniziare il segmento con un caricamento</translation>
     </message>
     <message>
         <location line="+8"/>
         <location line="+16"/>
         <source>%1 has no block to join in parallel</source>
-        <translation type="unfinished"></translation>
+        <translation>%1 non ha un blocco da collegare in parallelo</translation>
     </message>
     <message numerus="yes">
         <location line="-9"/>
         <source>%1 needs two blocks, but %n is open</source>
-        <translation type="unfinished">
-            <numerusform></numerusform>
-            <numerusform></numerusform>
+        <translation>
+            <numerusform>%1 richiede due blocchi, ma %n è aperto</numerusform>
+            <numerusform>%1 richiede due blocchi, ma %n sono aperti</numerusform>
         </translation>
     </message>
     <message numerus="yes">
         <location line="+17"/>
         <source>MPS needs exactly one open block, but %n is open</source>
-        <translation type="unfinished">
-            <numerusform></numerusform>
-            <numerusform></numerusform>
+        <translation>
+            <numerusform>MPS richiede esattamente un blocco aperto, ma %n è aperto</numerusform>
+            <numerusform>MPS richiede esattamente un blocco aperto, ma %n sono aperti</numerusform>
         </translation>
     </message>
     <message>
         <location line="+11"/>
         <source>%1 without a matching MPS</source>
-        <translation type="unfinished"></translation>
+        <translation>%1 senza un MPS corrispondente</translation>
     </message>
     <message>
         <location line="+15"/>
         <source>%1 needs %2 input blocks, but %3 are open</source>
-        <translation type="unfinished"></translation>
+        <translation>%1 richiede %2 blocchi di ingresso, ma %3 sono aperti</translation>
     </message>
     <message>
         <location line="+9"/>
         <location filename="../model/convert_to_list.cpp" line="+43"/>
         <source>%1 has an input with no condition</source>
-        <translation type="unfinished"></translation>
+        <translation>%1 ha un ingresso senza condizione</translation>
     </message>
     <message>
         <location line="+14"/>
@@ -1669,65 +1682,65 @@ Ladder and instruction-list editor for VPC, Vigor, CPM1 and PL110.</source>
         <location line="+5"/>
         <location filename="../model/convert_to_list.cpp" line="+10"/>
         <source>%1 has no condition</source>
-        <translation type="unfinished"></translation>
+        <translation>%1 non ha condizione</translation>
     </message>
     <message>
         <location line="-4"/>
         <source>%1 needs one block, but %2 are open</source>
-        <translation type="unfinished"></translation>
+        <translation>%1 richiede un blocco, ma %2 sono aperti</translation>
     </message>
     <message>
         <location line="+39"/>
         <source>The rung starting on line %1 ends without an output</source>
-        <translation type="unfinished"></translation>
+        <translation>Il segmento che inizia alla riga %1 termina senza un&apos;uscita</translation>
     </message>
     <message numerus="yes">
         <location line="+4"/>
         <source>The rung starting on line %1 leaves %n MPS without MPP</source>
-        <translation type="unfinished">
-            <numerusform></numerusform>
-            <numerusform></numerusform>
+        <translation>
+            <numerusform>Il segmento che inizia alla riga %1 lascia %n MPS senza MPP</numerusform>
+            <numerusform>Il segmento che inizia alla riga %1 lascia %n MPS senza MPP</numerusform>
         </translation>
     </message>
     <message>
         <location filename="../model/convert_to_list.cpp" line="+26"/>
         <source>%1 has no INV element</source>
-        <translation type="unfinished"></translation>
+        <translation>%1 non ha un elemento INV</translation>
     </message>
     <message>
         <location line="+1"/>
         <source>%1 has no such contact</source>
-        <translation type="unfinished"></translation>
+        <translation>%1 non ha un contatto di questo tipo</translation>
     </message>
     <message>
         <location line="+14"/>
         <source>%1 has no branch stack</source>
-        <translation type="unfinished"></translation>
+        <translation>%1 non ha uno stack delle diramazioni</translation>
     </message>
     <message>
         <location line="+16"/>
         <source>A block cannot start with INV</source>
-        <translation type="unfinished"></translation>
+        <translation>Un blocco non può iniziare con INV</translation>
     </message>
     <message>
         <location line="+4"/>
         <source>An output has no condition</source>
-        <translation type="unfinished"></translation>
+        <translation>Un&apos;uscita non ha condizione</translation>
     </message>
     <message>
         <location line="+135"/>
         <source>A box with several inputs must stand alone in its rung</source>
-        <translation type="unfinished"></translation>
+        <translation>Un blocco funzione con più ingressi deve stare da solo nel suo segmento</translation>
     </message>
     <message>
         <location line="+11"/>
         <source>Row %1 is not connected to the left rail</source>
-        <translation type="unfinished"></translation>
+        <translation>La riga %1 non è collegata alla barra sinistra</translation>
     </message>
     <message>
         <location line="+3"/>
         <source>Reverse current: the network feeding row %1 can only close through an element crossed right to left</source>
-        <translation type="unfinished"></translation>
+        <translation>Corrente inversa: la rete che alimenta la riga %1 può chiudersi solo attraverso un elemento percorso da destra a sinistra</translation>
     </message>
 </context>
 <context>
@@ -1735,99 +1748,99 @@ Ladder and instruction-list editor for VPC, Vigor, CPM1 and PL110.</source>
     <message>
         <location filename="../model/il_parse.cpp" line="+120"/>
         <source>Too many errors; the rest of the listing was not read</source>
-        <translation type="unfinished"></translation>
+        <translation>Troppi errori; il resto della lista non è stato letto</translation>
     </message>
     <message>
         <location line="+110"/>
         <source>Unknown instruction &apos;%1&apos; for %2</source>
-        <translation type="unfinished"></translation>
+        <translation>Istruzione sconosciuta &apos;%1&apos; per %2</translation>
     </message>
     <message>
         <location line="+3"/>
         <source>Unknown instruction &apos;%1&apos; for %2; did you mean %3?</source>
-        <translation type="unfinished"></translation>
+        <translation>Istruzione sconosciuta &apos;%1&apos; per %2; forse intendevi %3?</translation>
     </message>
     <message>
         <location line="+44"/>
         <source>%1 cannot compare values</source>
-        <translation type="unfinished"></translation>
+        <translation>%1 non può confrontare valori</translation>
     </message>
     <message>
         <location line="+19"/>
         <source>A second operand is missing after &apos;%1&apos;</source>
-        <translation type="unfinished"></translation>
+        <translation>Manca un secondo operando dopo &apos;%1&apos;</translation>
     </message>
     <message>
         <location line="+19"/>
         <location line="+169"/>
         <source>&apos;%1...&apos; is too long for an operand</source>
-        <translation type="unfinished"></translation>
+        <translation>&apos;%1...&apos; è troppo lungo per un operando</translation>
     </message>
     <message numerus="yes">
         <location line="-110"/>
         <source>%1 needs %n operand(s): %2</source>
-        <translation type="unfinished">
-            <numerusform></numerusform>
-            <numerusform></numerusform>
+        <translation>
+            <numerusform>%1 richiede %n operando: %2</numerusform>
+            <numerusform>%1 richiede %n operandi: %2</numerusform>
         </translation>
     </message>
     <message>
         <location line="+9"/>
         <source>%1 takes no operand</source>
-        <translation type="unfinished"></translation>
+        <translation>%1 non accetta operandi</translation>
     </message>
     <message numerus="yes">
         <location line="+1"/>
         <source>Unexpected &apos;%1&apos;: %2 takes %n operand(s)</source>
-        <translation type="unfinished">
-            <numerusform></numerusform>
-            <numerusform></numerusform>
+        <translation>
+            <numerusform>&apos;%1&apos; inatteso: %2 accetta %n operando</numerusform>
+            <numerusform>&apos;%1&apos; inatteso: %2 accetta %n operandi</numerusform>
         </translation>
     </message>
     <message>
         <location line="+28"/>
         <source>%1: a set value is a BCD constant #0000..#9999 or a channel</source>
-        <translation type="unfinished"></translation>
+        <translation>%1: un valore di preset è una costante BCD #0000..#9999 o un canale</translation>
     </message>
     <message>
         <location line="+23"/>
         <source>%1 is out of range: %2..%3 fit here</source>
-        <translation type="unfinished"></translation>
+        <translation>%1 è fuori campo: qui sono ammessi %2..%3</translation>
     </message>
     <message>
         <location line="+60"/>
         <source>%1: a label number is expected</source>
-        <translation type="unfinished"></translation>
+        <translation>%1: è atteso un numero di etichetta</translation>
     </message>
     <message>
         <location line="+43"/>
         <source>%1 is a constant; a device is expected here</source>
-        <translation type="unfinished"></translation>
+        <translation>%1 è una costante; qui è atteso un operando</translation>
     </message>
     <message>
         <location line="+13"/>
         <source>%1: %2 is expected here</source>
-        <translation type="unfinished"></translation>
+        <translation>%1: qui è atteso %2</translation>
     </message>
     <message>
         <location line="+6"/>
         <source>a timer</source>
-        <translation type="unfinished"></translation>
+        <translation>un temporizzatore</translation>
     </message>
     <message>
         <location line="+4"/>
         <source>a counter</source>
-        <translation type="unfinished"></translation>
+        <translation>un contatore</translation>
     </message>
     <message>
         <location line="+4"/>
         <source>a step relay</source>
-        <translation type="unfinished"></translation>
+        <translation>un relè di passo</translation>
     </message>
     <message>
         <location line="+7"/>
         <source>a bit device</source>
-        <translation type="unfinished"></translation>
+        <translation>un operando a bit</translation>
     </message>
 </context>
 <context>
@@ -1835,68 +1848,68 @@ Ladder and instruction-list editor for VPC, Vigor, CPM1 and PL110.</source>
     <message>
         <location filename="../model/ladder_text.cpp" line="+206"/>
         <source>A ladder text starts with &quot;LADDER &lt;target&gt; WIDTH &lt;n&gt;&quot;</source>
-        <translation type="unfinished"></translation>
+        <translation>Un testo ladder inizia con &quot;LADDER &lt;target&gt; WIDTH &lt;n&gt;&quot;</translation>
     </message>
     <message>
         <location line="+4"/>
         <source>This ladder is for %1, not %2</source>
-        <translation type="unfinished"></translation>
+        <translation>Questo ladder è per %1, non per %2</translation>
     </message>
     <message>
         <location line="+6"/>
         <source>The cell width must be a number from 5 to 200</source>
-        <translation type="unfinished"></translation>
+        <translation>La larghezza delle celle deve essere un numero da 5 a 200</translation>
     </message>
     <message>
         <location line="+17"/>
         <source>Expected &quot;RUNG &lt;n&gt; ROWS &lt;rows&gt; COLUMNS &lt;columns&gt;&quot;</source>
-        <translation type="unfinished"></translation>
+        <translation>Atteso &quot;RUNG &lt;n&gt; ROWS &lt;rows&gt; COLUMNS &lt;columns&gt;&quot;</translation>
     </message>
     <message>
         <location line="+17"/>
         <location line="+8"/>
         <source>The rung has fewer rows than its header says</source>
-        <translation type="unfinished"></translation>
+        <translation>Il segmento ha meno righe di quante ne dichiari l&apos;intestazione</translation>
     </message>
     <message>
         <location line="+14"/>
         <source>A row starts with the left rail &apos;|&apos;</source>
-        <translation type="unfinished"></translation>
+        <translation>Una riga inizia con la barra sinistra &apos;|&apos;</translation>
     </message>
     <message>
         <location line="+14"/>
         <source>A cell is empty, a wire, or a contact &quot;-[ X0 ]-&quot;</source>
-        <translation type="unfinished"></translation>
+        <translation>Una cella è vuota, un collegamento o un contatto &quot;-[ X0 ]-&quot;</translation>
     </message>
     <message>
         <location line="+16"/>
         <source>An output is written in parentheses: (OUT Y0)</source>
-        <translation type="unfinished"></translation>
+        <translation>Un&apos;uscita si scrive tra parentesi: (OUT Y0)</translation>
     </message>
     <message>
         <location line="+6"/>
         <source>(^) marks a further input of a box above it</source>
-        <translation type="unfinished"></translation>
+        <translation>(^) indica un ulteriore ingresso del blocco funzione soprastante</translation>
     </message>
     <message>
         <location line="+10"/>
         <source>One output instruction is expected</source>
-        <translation type="unfinished"></translation>
+        <translation>È attesa un&apos;istruzione di uscita</translation>
     </message>
     <message>
         <location line="+50"/>
         <source>&apos;%1&apos; is not a contact mark (&apos; &apos;, &apos;/&apos;, &apos;P&apos;, &apos;N&apos;, &apos;~&apos;)</source>
-        <translation type="unfinished"></translation>
+        <translation>&apos;%1&apos; non è un segno di contatto (&apos; &apos;, &apos;/&apos;, &apos;P&apos;, &apos;N&apos;, &apos;~&apos;)</translation>
     </message>
     <message>
         <location line="+4"/>
         <source>The contact has no device</source>
-        <translation type="unfinished"></translation>
+        <translation>Il contatto non ha un operando</translation>
     </message>
     <message>
         <location line="+93"/>
         <source>&apos;%1&apos; is not a contact</source>
-        <translation type="unfinished"></translation>
+        <translation>&apos;%1&apos; non è un contatto</translation>
     </message>
 </context>
 <context>
@@ -1904,167 +1917,167 @@ Ladder and instruction-list editor for VPC, Vigor, CPM1 and PL110.</source>
     <message>
         <location filename="../model/project.cpp" line="+109"/>
         <source>Line %1, column %2 (byte %3): the file is not valid JSON (%4)</source>
-        <translation type="unfinished"></translation>
+        <translation>Riga %1, colonna %2 (byte %3): il file non è JSON valido (%4)</translation>
     </message>
     <message>
         <location line="+8"/>
         <source>The file is JSON but not a Rung Studio project (no top-level object)</source>
-        <translation type="unfinished"></translation>
+        <translation>Il file è JSON ma non è un progetto Rung Studio (nessun oggetto al livello superiore)</translation>
     </message>
     <message>
         <location line="+4"/>
         <source>The file is JSON but not a Rung Studio project (&quot;format&quot; is not &quot;%1&quot;)</source>
-        <translation type="unfinished"></translation>
+        <translation>Il file è JSON ma non è un progetto Rung Studio (&quot;format&quot; non è &quot;%1&quot;)</translation>
     </message>
     <message>
         <location line="+5"/>
         <source>The project was written by a newer Rung Studio (schema %1); this version reads schema %2 and older</source>
-        <translation type="unfinished"></translation>
+        <translation>Il progetto è stato scritto da una versione più recente di Rung Studio (schema %1); questa versione legge lo schema %2 e precedenti</translation>
     </message>
     <message>
         <location line="+5"/>
         <source>&quot;schema&quot; must be a positive number</source>
-        <translation type="unfinished"></translation>
+        <translation>&quot;schema&quot; deve essere un numero positivo</translation>
     </message>
     <message>
         <location line="+12"/>
         <source>&quot;target&quot;: unknown PLC family &quot;%1&quot;</source>
-        <translation type="unfinished"></translation>
+        <translation>&quot;target&quot;: famiglia PLC sconosciuta &quot;%1&quot;</translation>
     </message>
     <message>
         <location line="+5"/>
         <source>&quot;model&quot;: %1 has no model &quot;%2&quot;</source>
-        <translation type="unfinished"></translation>
+        <translation>&quot;model&quot;: %1 non ha il modello &quot;%2&quot;</translation>
     </message>
     <message>
         <location line="+16"/>
         <source>%1: an object with &quot;device&quot; and &quot;name&quot; is expected</source>
-        <translation type="unfinished"></translation>
+        <translation>%1: è atteso un oggetto con &quot;device&quot; e &quot;name&quot;</translation>
     </message>
     <message>
         <location line="+22"/>
         <source>setValues.%1: a whole number between -%2 and %2 is expected</source>
-        <translation type="unfinished"></translation>
+        <translation>setValues.%1: è atteso un numero intero tra -%2 e %2</translation>
     </message>
     <message>
         <location line="+10"/>
         <source>%1: an object with &quot;name&quot; and &quot;devices&quot; is expected</source>
-        <translation type="unfinished"></translation>
+        <translation>%1: è atteso un oggetto con &quot;name&quot; e &quot;devices&quot;</translation>
     </message>
     <message>
         <location line="+11"/>
         <source>%1.devices[%2]: a device name is expected</source>
-        <translation type="unfinished"></translation>
+        <translation>%1.devices[%2]: è atteso il nome di un operando</translation>
     </message>
     <message>
         <location line="+18"/>
         <source>a string</source>
-        <translation type="unfinished"></translation>
+        <translation>una stringa</translation>
     </message>
     <message>
         <location line="+2"/>
         <source>an array</source>
-        <translation type="unfinished"></translation>
+        <translation>un array</translation>
     </message>
     <message>
         <location line="+2"/>
         <source>an object</source>
-        <translation type="unfinished"></translation>
+        <translation>un oggetto</translation>
     </message>
     <message>
         <location line="+2"/>
         <source>a number</source>
-        <translation type="unfinished"></translation>
+        <translation>un numero</translation>
     </message>
     <message>
         <location line="+2"/>
         <source>another value</source>
-        <translation type="unfinished"></translation>
+        <translation>un altro valore</translation>
     </message>
     <message>
         <location line="+14"/>
         <source>%1: %2 is expected</source>
-        <translation type="unfinished"></translation>
+        <translation>%1: è atteso %2</translation>
     </message>
     <message>
         <location line="+100"/>
         <source>%1.outputs: [row, &quot;instruction&quot;] with a row inside the rung is expected</source>
-        <translation type="unfinished"></translation>
+        <translation>%1.outputs: è atteso [riga, &quot;istruzione&quot;] con una riga interna al segmento</translation>
     </message>
     <message>
         <location line="+6"/>
         <source>%1.outputs: row %2 has two outputs</source>
-        <translation type="unfinished"></translation>
+        <translation>%1.outputs: la riga %2 ha due uscite</translation>
     </message>
     <message>
         <location line="+21"/>
         <source>%1.outputs: &quot;%2&quot; takes up to %3 input rows, one box per rung</source>
-        <translation type="unfinished"></translation>
+        <translation>%1.outputs: &quot;%2&quot; accetta fino a %3 righe di ingresso, un blocco funzione per segmento</translation>
     </message>
     <message>
         <location line="+9"/>
         <source>%1.outputs: the input rows of &quot;%2&quot; start at its own row and go down inside the rung</source>
-        <translation type="unfinished"></translation>
+        <translation>%1.outputs: le righe di ingresso di &quot;%2&quot; partono dalla sua riga e scendono all&apos;interno del segmento</translation>
     </message>
     <message>
         <location line="-119"/>
         <source>%1: a rung object is expected</source>
-        <translation type="unfinished"></translation>
+        <translation>%1: è atteso un oggetto segmento</translation>
     </message>
     <message>
         <location line="+12"/>
         <source>%1: &quot;rows&quot; must be 1..1000 and &quot;columns&quot; 0..1000</source>
-        <translation type="unfinished"></translation>
+        <translation>%1: &quot;rows&quot; deve essere 1..1000 e &quot;columns&quot; 0..1000</translation>
     </message>
     <message>
         <location line="+7"/>
         <source>%1.cells: %2 rows are expected, the file has %3</source>
-        <translation type="unfinished"></translation>
+        <translation>%1.cells: sono attese %2 righe, il file ne ha %3</translation>
     </message>
     <message>
         <location line="+8"/>
         <source>%1.cells[%2]: an array of cells is expected</source>
-        <translation type="unfinished"></translation>
+        <translation>%1.cells[%2]: è atteso un array di celle</translation>
     </message>
     <message>
         <location line="+5"/>
         <source>%1.cells[%2]: %3 cells are expected, the file has %4</source>
-        <translation type="unfinished"></translation>
+        <translation>%1.cells[%2]: sono attese %3 celle, il file ne ha %4</translation>
     </message>
     <message>
         <location line="+9"/>
         <source>%1.cells[%2][%3]: a cell is a string (&quot;&quot;, &quot;-&quot; or a contact)</source>
-        <translation type="unfinished"></translation>
+        <translation>%1.cells[%2][%3]: una cella è una stringa (&quot;&quot;, &quot;-&quot; o un contatto)</translation>
     </message>
     <message>
         <location line="+33"/>
         <source>%1.links: [%2, %3] is outside the rung</source>
-        <translation type="unfinished"></translation>
+        <translation>%1.links: [%2, %3] è fuori dal segmento</translation>
     </message>
     <message>
         <location line="+23"/>
         <source>one instruction is expected</source>
-        <translation type="unfinished"></translation>
+        <translation>è attesa una sola istruzione</translation>
     </message>
     <message>
         <location line="+91"/>
         <source>%1: cannot open the file (%2)</source>
-        <translation type="unfinished"></translation>
+        <translation>%1: impossibile aprire il file (%2)</translation>
     </message>
     <message>
         <location line="+5"/>
         <source>%1: the file is %2 MB; a project is at most %3 MB</source>
-        <translation type="unfinished"></translation>
+        <translation>%1: il file è di %2 MB; un progetto è al massimo di %3 MB</translation>
     </message>
     <message>
         <location line="+19"/>
         <source>%1: cannot write the file (%2)</source>
-        <translation type="unfinished"></translation>
+        <translation>%1: impossibile scrivere il file (%2)</translation>
     </message>
     <message>
         <location line="+6"/>
         <source>%1: saving failed (%2); the previous file is unchanged</source>
-        <translation type="unfinished"></translation>
+        <translation>%1: salvataggio non riuscito (%2); il file precedente è invariato</translation>
     </message>
 </context>
 <context>
@@ -2072,27 +2085,27 @@ Ladder and instruction-list editor for VPC, Vigor, CPM1 and PL110.</source>
     <message>
         <location filename="../model/target_cpm1.cpp" line="+36"/>
         <source>input channels</source>
-        <translation type="unfinished"></translation>
+        <translation>canali di ingresso</translation>
     </message>
     <message>
         <location line="+3"/>
         <source>output channels</source>
-        <translation type="unfinished"></translation>
+        <translation>canali di uscita</translation>
     </message>
     <message>
         <location line="+2"/>
         <source>work channels</source>
-        <translation type="unfinished"></translation>
+        <translation>canali di lavoro</translation>
     </message>
     <message>
         <location line="+2"/>
         <source>special channels</source>
-        <translation type="unfinished"></translation>
+        <translation>canali speciali</translation>
     </message>
     <message>
         <location line="+4"/>
         <source>holding relays</source>
-        <translation type="unfinished"></translation>
+        <translation>relè di mantenimento</translation>
     </message>
     <message>
         <location line="+5"/>
@@ -2100,7 +2113,7 @@ Ladder and instruction-list editor for VPC, Vigor, CPM1 and PL110.</source>
         <location filename="../model/target_vigor.cpp" line="+115"/>
         <location filename="../model/target_vpc.cpp" line="+61"/>
         <source>timers</source>
-        <translation type="unfinished"></translation>
+        <translation>temporizzatori</translation>
     </message>
     <message>
         <location line="+4"/>
@@ -2108,73 +2121,73 @@ Ladder and instruction-list editor for VPC, Vigor, CPM1 and PL110.</source>
         <location filename="../model/target_vigor.cpp" line="+1"/>
         <location filename="../model/target_vpc.cpp" line="+5"/>
         <source>counters</source>
-        <translation type="unfinished"></translation>
+        <translation>contatori</translation>
     </message>
     <message>
         <location line="+5"/>
         <source>data memory</source>
-        <translation type="unfinished"></translation>
+        <translation>memoria dati</translation>
     </message>
     <message>
         <location line="+4"/>
         <source>read-only data memory</source>
-        <translation type="unfinished"></translation>
+        <translation>memoria dati di sola lettura</translation>
     </message>
     <message>
         <location line="+7"/>
         <source>always ON</source>
-        <translation type="unfinished"></translation>
+        <translation>sempre ON</translation>
     </message>
     <message>
         <location line="+2"/>
         <source>always OFF</source>
-        <translation type="unfinished"></translation>
+        <translation>sempre OFF</translation>
     </message>
     <message>
         <location line="+2"/>
         <location filename="../model/target_pl110.cpp" line="+41"/>
         <location filename="../model/target_vigor.cpp" line="+21"/>
         <source>ON for the first scan</source>
-        <translation type="unfinished"></translation>
+        <translation>ON per la prima scansione</translation>
     </message>
     <message>
         <location line="+2"/>
         <location filename="../model/target_vigor.cpp" line="+8"/>
         <source>1 min clock</source>
-        <translation type="unfinished"></translation>
+        <translation>clock da 1 min</translation>
     </message>
     <message>
         <location line="+2"/>
         <source>0.02 s clock</source>
-        <translation type="unfinished"></translation>
+        <translation>clock da 0,02 s</translation>
     </message>
     <message>
         <location line="+2"/>
         <location filename="../model/target_vpc.cpp" line="+57"/>
         <source>0.1 s clock</source>
-        <translation type="unfinished"></translation>
+        <translation>clock da 0,1 s</translation>
     </message>
     <message>
         <location line="+2"/>
         <source>0.2 s clock</source>
-        <translation type="unfinished"></translation>
+        <translation>clock da 0,2 s</translation>
     </message>
     <message>
         <location line="+2"/>
         <location filename="../model/target_vigor.cpp" line="-2"/>
         <location filename="../model/target_vpc.cpp" line="+2"/>
         <source>1 s clock</source>
-        <translation type="unfinished"></translation>
+        <translation>clock da 1 s</translation>
     </message>
     <message>
         <location line="+2"/>
         <source>analog setting 0 (BCD 0..200)</source>
-        <translation type="unfinished"></translation>
+        <translation>impostazione analogica 0 (BCD 0..200)</translation>
     </message>
     <message>
         <location line="+2"/>
         <source>analog setting 1 (BCD 0..200)</source>
-        <translation type="unfinished"></translation>
+        <translation>impostazione analogica 1 (BCD 0..200)</translation>
     </message>
     <message>
         <location line="+5"/>
@@ -2182,7 +2195,7 @@ Ladder and instruction-list editor for VPC, Vigor, CPM1 and PL110.</source>
         <location filename="../model/target_vigor.cpp" line="+56"/>
         <location filename="../model/target_vpc.cpp" line="+5"/>
         <source>Start a block with a normally open contact</source>
-        <translation type="unfinished"></translation>
+        <translation>Inizia un blocco con un contatto normalmente aperto</translation>
     </message>
     <message>
         <location line="+3"/>
@@ -2190,7 +2203,7 @@ Ladder and instruction-list editor for VPC, Vigor, CPM1 and PL110.</source>
         <location filename="../model/target_vigor.cpp" line="+3"/>
         <location filename="../model/target_vpc.cpp" line="+1"/>
         <source>Start a block with a normally closed contact</source>
-        <translation type="unfinished"></translation>
+        <translation>Inizia un blocco con un contatto normalmente chiuso</translation>
     </message>
     <message>
         <location line="+3"/>
@@ -2198,7 +2211,7 @@ Ladder and instruction-list editor for VPC, Vigor, CPM1 and PL110.</source>
         <location filename="../model/target_vigor.cpp" line="+9"/>
         <location filename="../model/target_vpc.cpp" line="+2"/>
         <source>Normally open contact in series</source>
-        <translation type="unfinished"></translation>
+        <translation>Contatto normalmente aperto in serie</translation>
     </message>
     <message>
         <location line="+2"/>
@@ -2206,7 +2219,7 @@ Ladder and instruction-list editor for VPC, Vigor, CPM1 and PL110.</source>
         <location filename="../model/target_vigor.cpp" line="+3"/>
         <location filename="../model/target_vpc.cpp" line="+1"/>
         <source>Normally closed contact in series</source>
-        <translation type="unfinished"></translation>
+        <translation>Contatto normalmente chiuso in serie</translation>
     </message>
     <message>
         <location line="+2"/>
@@ -2214,7 +2227,7 @@ Ladder and instruction-list editor for VPC, Vigor, CPM1 and PL110.</source>
         <location filename="../model/target_vigor.cpp" line="+9"/>
         <location filename="../model/target_vpc.cpp" line="+2"/>
         <source>Normally open contact in parallel</source>
-        <translation type="unfinished"></translation>
+        <translation>Contatto normalmente aperto in parallelo</translation>
     </message>
     <message>
         <location line="+2"/>
@@ -2222,7 +2235,7 @@ Ladder and instruction-list editor for VPC, Vigor, CPM1 and PL110.</source>
         <location filename="../model/target_vigor.cpp" line="+3"/>
         <location filename="../model/target_vpc.cpp" line="+1"/>
         <source>Normally closed contact in parallel</source>
-        <translation type="unfinished"></translation>
+        <translation>Contatto normalmente chiuso in parallelo</translation>
     </message>
     <message>
         <location line="+4"/>
@@ -2230,7 +2243,7 @@ Ladder and instruction-list editor for VPC, Vigor, CPM1 and PL110.</source>
         <location filename="../model/target_vigor.cpp" line="+21"/>
         <location filename="../model/target_vpc.cpp" line="+2"/>
         <source>Connect the last two blocks in series</source>
-        <translation type="unfinished"></translation>
+        <translation>Collega in serie gli ultimi due blocchi</translation>
     </message>
     <message>
         <location line="+2"/>
@@ -2238,7 +2251,7 @@ Ladder and instruction-list editor for VPC, Vigor, CPM1 and PL110.</source>
         <location filename="../model/target_vigor.cpp" line="+3"/>
         <location filename="../model/target_vpc.cpp" line="+2"/>
         <source>Connect the last two blocks in parallel</source>
-        <translation type="unfinished"></translation>
+        <translation>Collega in parallelo gli ultimi due blocchi</translation>
     </message>
     <message>
         <location line="+2"/>
@@ -2246,93 +2259,93 @@ Ladder and instruction-list editor for VPC, Vigor, CPM1 and PL110.</source>
         <location filename="../model/target_vigor.cpp" line="+12"/>
         <location filename="../model/target_vpc.cpp" line="+2"/>
         <source>Output coil</source>
-        <translation type="unfinished"></translation>
+        <translation>Bobina di uscita</translation>
     </message>
     <message>
         <location line="+2"/>
         <location filename="../model/target_vpc.cpp" line="+3"/>
         <source>Inverted output coil</source>
-        <translation type="unfinished"></translation>
+        <translation>Bobina di uscita negata</translation>
     </message>
     <message>
         <location line="+3"/>
         <source>Set (latch) a bit</source>
-        <translation type="unfinished"></translation>
+        <translation>Imposta (memorizza) un bit</translation>
     </message>
     <message>
         <location line="+2"/>
         <source>Reset a bit</source>
-        <translation type="unfinished"></translation>
+        <translation>Resetta un bit</translation>
     </message>
     <message>
         <location line="+3"/>
         <source>Keep: set = last but one block, reset = last block; reset wins</source>
-        <translation type="unfinished"></translation>
+        <translation>Keep: set = penultimo blocco, reset = ultimo blocco; prevale il reset</translation>
     </message>
     <message>
         <location line="+6"/>
         <location filename="../model/target_vigor.cpp" line="+9"/>
         <source>ON for one scan on a rising edge</source>
-        <translation type="unfinished"></translation>
+        <translation>ON per una scansione su un fronte di salita</translation>
     </message>
     <message>
         <location line="+4"/>
         <location filename="../model/target_vigor.cpp" line="+3"/>
         <source>ON for one scan on a falling edge</source>
-        <translation type="unfinished"></translation>
+        <translation>ON per una scansione su un fronte di discesa</translation>
     </message>
     <message>
         <location line="+4"/>
         <source>Timer, 0.1 s, counts down from the BCD set value</source>
-        <translation type="unfinished"></translation>
+        <translation>Temporizzatore, 0,1 s, conta all&apos;indietro dal valore di preset BCD</translation>
     </message>
     <message>
         <location line="+5"/>
         <source>High-speed timer, 0.01 s, counts down from the BCD set value</source>
-        <translation type="unfinished"></translation>
+        <translation>Temporizzatore veloce, 0,01 s, conta all&apos;indietro dal valore di preset BCD</translation>
     </message>
     <message>
         <location line="+5"/>
         <source>Down counter: count = last but one block, reset = last block</source>
-        <translation type="unfinished"></translation>
+        <translation>Contatore all&apos;indietro: conteggio = penultimo blocco, reset = ultimo blocco</translation>
     </message>
     <message>
         <location line="+5"/>
         <source>Reversible counter: up, down and reset inputs; wraps at the limits</source>
-        <translation type="unfinished"></translation>
+        <translation>Contatore reversibile: ingressi avanti, indietro e reset; ricomincia ai limiti</translation>
     </message>
     <message>
         <location line="+7"/>
         <location filename="../model/target_vpc.cpp" line="+41"/>
         <source>Interlock: what follows runs under this condition</source>
-        <translation type="unfinished"></translation>
+        <translation>Interblocco: ciò che segue viene eseguito sotto questa condizione</translation>
     </message>
     <message>
         <location line="+4"/>
         <location filename="../model/target_vpc.cpp" line="+3"/>
         <source>Clear the interlock</source>
-        <translation type="unfinished"></translation>
+        <translation>Chiude l&apos;interblocco</translation>
     </message>
     <message>
         <location line="+3"/>
         <source>Jump: while OFF, skip to the JME with the same number</source>
-        <translation type="unfinished"></translation>
+        <translation>Salto: mentre è OFF, salta al JME con lo stesso numero</translation>
     </message>
     <message>
         <location line="+5"/>
         <source>End of the jump with this number</source>
-        <translation type="unfinished"></translation>
+        <translation>Fine del salto con questo numero</translation>
     </message>
     <message>
         <location line="+4"/>
         <source>Move a channel or a constant</source>
-        <translation type="unfinished"></translation>
+        <translation>Sposta un canale o una costante</translation>
     </message>
     <message>
         <location line="+5"/>
         <location filename="../model/target_vigor.cpp" line="+23"/>
         <source>No operation</source>
-        <translation type="unfinished"></translation>
+        <translation>Nessuna operazione</translation>
     </message>
     <message>
         <location line="+3"/>
@@ -2340,721 +2353,721 @@ Ladder and instruction-list editor for VPC, Vigor, CPM1 and PL110.</source>
         <location filename="../model/target_vigor.cpp" line="-1"/>
         <location filename="../model/target_vpc.cpp" line="+5"/>
         <source>End of the program</source>
-        <translation type="unfinished"></translation>
+        <translation>Fine del programma</translation>
     </message>
     <message>
         <location filename="../model/target_pl110.cpp" line="-244"/>
         <source>IF contact: ON while S1 ? S2 is true</source>
-        <translation type="unfinished"></translation>
+        <translation>Contatto IF: ON mentre S1 ? S2 è vero</translation>
     </message>
     <message>
         <location line="+27"/>
         <source>digital inputs</source>
-        <translation type="unfinished"></translation>
+        <translation>ingressi digitali</translation>
     </message>
     <message>
         <location line="+4"/>
         <source>digital outputs</source>
-        <translation type="unfinished"></translation>
+        <translation>uscite digitali</translation>
     </message>
     <message>
         <location line="+3"/>
         <source>bistable relays</source>
-        <translation type="unfinished"></translation>
+        <translation>relè bistabili</translation>
     </message>
     <message>
         <location line="+2"/>
         <source>markers</source>
-        <translation type="unfinished"></translation>
+        <translation>marker</translation>
     </message>
     <message>
         <location line="+10"/>
         <source>variables</source>
-        <translation type="unfinished"></translation>
+        <translation>variabili</translation>
     </message>
     <message>
         <location line="+6"/>
         <source>special markers</source>
-        <translation type="unfinished"></translation>
+        <translation>marker speciali</translation>
     </message>
     <message>
         <location line="+6"/>
         <location filename="../model/target_vpc.cpp" line="-106"/>
         <source>analog inputs</source>
-        <translation type="unfinished"></translation>
+        <translation>ingressi analogici</translation>
     </message>
     <message>
         <location line="+4"/>
         <location filename="../model/target_vpc.cpp" line="+5"/>
         <source>analog outputs</source>
-        <translation type="unfinished"></translation>
+        <translation>uscite analogiche</translation>
     </message>
     <message>
         <location line="+3"/>
         <source>timer presets</source>
-        <translation type="unfinished"></translation>
+        <translation>preset dei temporizzatori</translation>
     </message>
     <message>
         <location line="+2"/>
         <source>counter presets</source>
-        <translation type="unfinished"></translation>
+        <translation>preset dei contatori</translation>
     </message>
     <message>
         <location line="+2"/>
         <source>EEPROM words</source>
-        <translation type="unfinished"></translation>
+        <translation>parole EEPROM</translation>
     </message>
     <message>
         <location line="+3"/>
         <source>MMC words</source>
-        <translation type="unfinished"></translation>
+        <translation>parole MMC</translation>
     </message>
     <message>
         <location line="+3"/>
         <source>display characters</source>
-        <translation type="unfinished"></translation>
+        <translation>caratteri del display</translation>
     </message>
     <message>
         <location line="+6"/>
         <source>RUN/STOP (1 = RUN)</source>
-        <translation type="unfinished"></translation>
+        <translation>RUN/STOP (1 = RUN)</translation>
     </message>
     <message>
         <location line="+4"/>
         <source>60 s clock (30 s ON, 30 s OFF)</source>
-        <translation type="unfinished"></translation>
+        <translation>clock da 60 s (30 s ON, 30 s OFF)</translation>
     </message>
     <message>
         <location line="+2"/>
         <source>1 s clock (0.5 s ON, 0.5 s OFF)</source>
-        <translation type="unfinished"></translation>
+        <translation>clock da 1 s (0,5 s ON, 0,5 s OFF)</translation>
     </message>
     <message>
         <location line="+2"/>
         <location filename="../model/target_vpc.cpp" line="+25"/>
         <source>toggles every scan</source>
-        <translation type="unfinished"></translation>
+        <translation>commuta a ogni scansione</translation>
     </message>
     <message>
         <location line="+2"/>
         <source>TEST: inputs are taken from SM37</source>
-        <translation type="unfinished"></translation>
+        <translation>TEST: gli ingressi sono presi da SM37</translation>
     </message>
     <message>
         <location line="+2"/>
         <source>counters C1..C16 off, timers T49..T64 on</source>
-        <translation type="unfinished"></translation>
+        <translation>contatori C1..C16 disattivati, temporizzatori T49..T64 attivi</translation>
     </message>
     <message>
         <location line="+2"/>
         <source>last scan time (0.1 ms)</source>
-        <translation type="unfinished"></translation>
+        <translation>tempo dell&apos;ultima scansione (0,1 ms)</translation>
     </message>
     <message>
         <location line="+2"/>
         <location filename="../model/target_vigor.cpp" line="-145"/>
         <source>minimum scan time (0.1 ms)</source>
-        <translation type="unfinished"></translation>
+        <translation>tempo di scansione minimo (0,1 ms)</translation>
     </message>
     <message>
         <location line="+2"/>
         <location filename="../model/target_vigor.cpp" line="+2"/>
         <source>maximum scan time (0.1 ms)</source>
-        <translation type="unfinished"></translation>
+        <translation>tempo di scansione massimo (0,1 ms)</translation>
     </message>
     <message>
         <location line="+24"/>
         <source>NOT contact: invert the power flow</source>
-        <translation type="unfinished"></translation>
+        <translation>Contatto NOT: inverte il flusso di corrente</translation>
     </message>
     <message>
         <location line="+4"/>
         <source>P contact: power flows for one scan when it turns ON</source>
-        <translation type="unfinished"></translation>
+        <translation>Contatto P: la corrente passa per una scansione quando si attiva</translation>
     </message>
     <message>
         <location line="+4"/>
         <source>N contact: power flows for one scan when it turns OFF</source>
-        <translation type="unfinished"></translation>
+        <translation>Contatto N: la corrente passa per una scansione quando si disattiva</translation>
     </message>
     <message>
         <location line="+6"/>
         <source>Start a block with an immediate input contact</source>
-        <translation type="unfinished"></translation>
+        <translation>Inizia un blocco con un contatto di ingresso immediato</translation>
     </message>
     <message>
         <location line="+2"/>
         <source>Start a block with a normally closed immediate input contact</source>
-        <translation type="unfinished"></translation>
+        <translation>Inizia un blocco con un contatto di ingresso immediato normalmente chiuso</translation>
     </message>
     <message>
         <location line="+3"/>
         <source>Immediate input contact in series</source>
-        <translation type="unfinished"></translation>
+        <translation>Contatto di ingresso immediato in serie</translation>
     </message>
     <message>
         <location line="+2"/>
         <source>Normally closed immediate input contact in series</source>
-        <translation type="unfinished"></translation>
+        <translation>Contatto di ingresso immediato normalmente chiuso in serie</translation>
     </message>
     <message>
         <location line="+3"/>
         <source>Immediate input contact in parallel</source>
-        <translation type="unfinished"></translation>
+        <translation>Contatto di ingresso immediato in parallelo</translation>
     </message>
     <message>
         <location line="+2"/>
         <source>Normally closed immediate input contact in parallel</source>
-        <translation type="unfinished"></translation>
+        <translation>Contatto di ingresso immediato normalmente chiuso in parallelo</translation>
     </message>
     <message>
         <location line="+7"/>
         <source>Immediate output coil: writes the terminal at once</source>
-        <translation type="unfinished"></translation>
+        <translation>Bobina di uscita immediata: scrive subito il morsetto</translation>
     </message>
     <message>
         <location line="+5"/>
         <source>Bistable relay coil: each activation toggles the relay</source>
-        <translation type="unfinished"></translation>
+        <translation>Bobina di relè bistabile: ogni attivazione commuta il relè</translation>
     </message>
     <message>
         <location line="+5"/>
         <source>Set a bit (0..15) of a word to 1</source>
-        <translation type="unfinished"></translation>
+        <translation>Porta a 1 un bit (0..15) di una parola</translation>
     </message>
     <message>
         <location line="+3"/>
         <source>Reset a bit (0..15) of a word to 0</source>
-        <translation type="unfinished"></translation>
+        <translation>Porta a 0 un bit (0..15) di una parola</translation>
     </message>
     <message>
         <location line="+6"/>
         <source>On-delay timer: T ON once the time reaches PT; OFF resets</source>
-        <translation type="unfinished"></translation>
+        <translation>Temporizzatore all&apos;eccitazione: T ON quando il tempo raggiunge PT; OFF lo azzera</translation>
     </message>
     <message>
         <location line="+4"/>
         <source>Off-delay timer: T ON at once, OFF when PT has elapsed after OFF</source>
-        <translation type="unfinished"></translation>
+        <translation>Temporizzatore alla diseccitazione: T ON subito, OFF quando è trascorso PT dopo l&apos;OFF</translation>
     </message>
     <message>
         <location line="+6"/>
         <source>Accumulating on-delay timer: keeps its time while OFF</source>
-        <translation type="unfinished"></translation>
+        <translation>Temporizzatore all&apos;eccitazione a ritenzione: conserva il tempo mentre è OFF</translation>
     </message>
     <message>
         <location line="+8"/>
         <source>Up counter: UP, DOWN and RESET inputs; C ON while the count &gt;= PV</source>
-        <translation type="unfinished"></translation>
+        <translation>Contatore avanti: ingressi UP, DOWN e RESET; C ON mentre il conteggio è &gt;= PV</translation>
     </message>
     <message>
         <location line="+6"/>
         <source>Down counter from PV: UP, DOWN and RESET (load PV) inputs; C ON at 0</source>
-        <translation type="unfinished"></translation>
+        <translation>Contatore all&apos;indietro da PV: ingressi UP, DOWN e RESET (carica PV); C ON a 0</translation>
     </message>
     <message>
         <location line="+10"/>
         <source>Math formula: D = S1 op S2, op one of + - * / | &amp; ^ &lt;&lt; &gt;&gt;</source>
-        <translation type="unfinished"></translation>
+        <translation>Formula matematica: D = S1 op S2, op uno tra + - * / | &amp; ^ &lt;&lt; &gt;&gt;</translation>
     </message>
     <message>
         <location line="+4"/>
         <source>Move a value or a word to D</source>
-        <translation type="unfinished"></translation>
+        <translation>Sposta un valore o una parola in D</translation>
     </message>
     <message>
         <location line="+2"/>
         <source>Move n words from S (or the value S) to D</source>
-        <translation type="unfinished"></translation>
+        <translation>Sposta n parole da S (o il valore S) a D</translation>
     </message>
     <message>
         <location line="+3"/>
         <source>Indexed move: D[index] = S, the area used as a vector</source>
-        <translation type="unfinished"></translation>
+        <translation>Spostamento indicizzato: D[indice] = S, l&apos;area usata come vettore</translation>
     </message>
     <message>
         <location line="+6"/>
         <source>Store a text string in words</source>
-        <translation type="unfinished"></translation>
+        <translation>Memorizza una stringa di testo in parole</translation>
     </message>
     <message>
         <location line="+2"/>
         <source>Set the range of an AI, TR, AQ or PID output</source>
-        <translation type="unfinished"></translation>
+        <translation>Imposta il campo di un&apos;uscita AI, TR, AQ o PID</translation>
     </message>
     <message>
         <location line="+1"/>
         <source>Send data on a serial port</source>
-        <translation type="unfinished"></translation>
+        <translation>Invia dati su una porta seriale</translation>
     </message>
     <message>
         <location line="+1"/>
         <source>Serial communication on COM1/COM2</source>
-        <translation type="unfinished"></translation>
+        <translation>Comunicazione seriale su COM1/COM2</translation>
     </message>
     <message>
         <location line="+1"/>
         <source>Communication with an expansion</source>
-        <translation type="unfinished"></translation>
+        <translation>Comunicazione con un&apos;espansione</translation>
     </message>
     <message>
         <location line="+1"/>
         <source>Tune an on/off positioner</source>
-        <translation type="unfinished"></translation>
+        <translation>Taratura di un posizionatore on/off</translation>
     </message>
     <message>
         <location line="+1"/>
         <source>On/off positioner</source>
-        <translation type="unfinished"></translation>
+        <translation>Posizionatore on/off</translation>
     </message>
     <message>
         <location line="+1"/>
         <source>Start a PID loop</source>
-        <translation type="unfinished"></translation>
+        <translation>Avvia un regolatore PID</translation>
     </message>
     <message>
         <location line="+1"/>
         <source>PID control loop</source>
-        <translation type="unfinished"></translation>
+        <translation>Regolatore PID</translation>
     </message>
     <message>
         <location line="+1"/>
         <source>Set the output of a PID loop</source>
-        <translation type="unfinished"></translation>
+        <translation>Imposta l&apos;uscita di un regolatore PID</translation>
     </message>
     <message>
         <location line="+1"/>
         <source>Generator set control</source>
-        <translation type="unfinished"></translation>
+        <translation>Controllo del gruppo elettrogeno</translation>
     </message>
     <message>
         <location line="+1"/>
         <source>Convert a value</source>
-        <translation type="unfinished"></translation>
+        <translation>Converte un valore</translation>
     </message>
     <message>
         <location line="+1"/>
         <source>Set a display parameter</source>
-        <translation type="unfinished"></translation>
+        <translation>Imposta un parametro del display</translation>
     </message>
     <message>
         <location line="+1"/>
         <source>Format a display parameter</source>
-        <translation type="unfinished"></translation>
+        <translation>Formatta un parametro del display</translation>
     </message>
     <message>
         <location line="+1"/>
         <source>Place a display parameter</source>
-        <translation type="unfinished"></translation>
+        <translation>Posiziona un parametro del display</translation>
     </message>
     <message>
         <location filename="../model/target_vigor.cpp" line="-120"/>
         <source>Compare contact: ON while S1 ? S2</source>
-        <translation type="unfinished"></translation>
+        <translation>Contatto di confronto: ON mentre S1 ? S2</translation>
     </message>
     <message>
         <location line="+60"/>
         <location filename="../model/target_vpc.cpp" line="-67"/>
         <source>inputs</source>
-        <translation type="unfinished"></translation>
+        <translation>ingressi</translation>
     </message>
     <message>
         <location line="+5"/>
         <location filename="../model/target_vpc.cpp" line="+5"/>
         <source>outputs</source>
-        <translation type="unfinished"></translation>
+        <translation>uscite</translation>
     </message>
     <message>
         <location line="+4"/>
         <location filename="../model/target_vpc.cpp" line="+14"/>
         <source>auxiliary relays</source>
-        <translation type="unfinished"></translation>
+        <translation>relè ausiliari</translation>
     </message>
     <message>
         <location line="+2"/>
         <source>latched auxiliary relays</source>
-        <translation type="unfinished"></translation>
+        <translation>relè ausiliari ritentivi</translation>
     </message>
     <message>
         <location line="+3"/>
         <source>special relays</source>
-        <translation type="unfinished"></translation>
+        <translation>relè speciali</translation>
     </message>
     <message>
         <location line="+4"/>
         <source>step relays</source>
-        <translation type="unfinished"></translation>
+        <translation>relè di passo</translation>
     </message>
     <message>
         <location line="+2"/>
         <source>latched step relays</source>
-        <translation type="unfinished"></translation>
+        <translation>relè di passo ritentivi</translation>
     </message>
     <message>
         <location line="+5"/>
         <source>latched counters</source>
-        <translation type="unfinished"></translation>
+        <translation>contatori ritentivi</translation>
     </message>
     <message>
         <location line="+3"/>
         <source>32-bit counters</source>
-        <translation type="unfinished"></translation>
+        <translation>contatori a 32 bit</translation>
     </message>
     <message>
         <location line="+4"/>
         <source>data registers</source>
-        <translation type="unfinished"></translation>
+        <translation>registri dati</translation>
     </message>
     <message>
         <location line="+2"/>
         <source>latched data registers</source>
-        <translation type="unfinished"></translation>
+        <translation>registri dati ritentivi</translation>
     </message>
     <message>
         <location line="+3"/>
         <source>special registers</source>
-        <translation type="unfinished"></translation>
+        <translation>registri speciali</translation>
     </message>
     <message>
         <location line="+5"/>
         <source>ON while the PLC runs</source>
-        <translation type="unfinished"></translation>
+        <translation>ON mentre il PLC è in RUN</translation>
     </message>
     <message>
         <location line="+4"/>
         <source>10 ms clock</source>
-        <translation type="unfinished"></translation>
+        <translation>clock da 10 ms</translation>
     </message>
     <message>
         <location line="+2"/>
         <source>100 ms clock</source>
-        <translation type="unfinished"></translation>
+        <translation>clock da 100 ms</translation>
     </message>
     <message>
         <location line="+6"/>
         <source>ON for one scan when an MBUS cycle completes</source>
-        <translation type="unfinished"></translation>
+        <translation>ON per una scansione al termine di un ciclo MBUS</translation>
     </message>
     <message>
         <location line="+2"/>
         <source>current scan time (0.1 ms)</source>
-        <translation type="unfinished"></translation>
+        <translation>tempo di scansione attuale (0,1 ms)</translation>
     </message>
     <message>
         <location line="+7"/>
         <source>parallel operation or RS communication error, PLC keeps running</source>
-        <translation type="unfinished"></translation>
+        <translation>errore di funzionamento parallelo o di comunicazione RS, il PLC continua a funzionare</translation>
     </message>
     <message>
         <location line="+3"/>
         <source>parallel link: this unit is the master</source>
-        <translation type="unfinished"></translation>
+        <translation>collegamento parallelo: questa unità è il master</translation>
     </message>
     <message>
         <location line="+2"/>
         <source>parallel link: this unit is a slave</source>
-        <translation type="unfinished"></translation>
+        <translation>collegamento parallelo: questa unità è uno slave</translation>
     </message>
     <message>
         <location line="+2"/>
         <source>parallel operation normal</source>
-        <translation type="unfinished"></translation>
+        <translation>funzionamento parallelo normale</translation>
     </message>
     <message>
         <location line="+2"/>
         <source>CP2 modem: start dialing (OFF to ON)</source>
-        <translation type="unfinished"></translation>
+        <translation>modem CP2: avvio composizione (da OFF a ON)</translation>
     </message>
     <message>
         <location line="+2"/>
         <source>CP2 modem: dialing failed</source>
-        <translation type="unfinished"></translation>
+        <translation>modem CP2: composizione non riuscita</translation>
     </message>
     <message>
         <location line="+2"/>
         <source>RS instruction send flag</source>
-        <translation type="unfinished"></translation>
+        <translation>flag di invio dell&apos;istruzione RS</translation>
     </message>
     <message>
         <location line="+2"/>
         <source>RS instruction receive done</source>
-        <translation type="unfinished"></translation>
+        <translation>ricezione dell&apos;istruzione RS completata</translation>
     </message>
     <message>
         <location line="+2"/>
         <source>CP2 modem CD signal</source>
-        <translation type="unfinished"></translation>
+        <translation>segnale CD del modem CP2</translation>
     </message>
     <message>
         <location line="+2"/>
         <source>time-out during RS</source>
-        <translation type="unfinished"></translation>
+        <translation>time-out durante RS</translation>
     </message>
     <message>
         <location line="+2"/>
         <source>parallel operation high-speed transfer</source>
-        <translation type="unfinished"></translation>
+        <translation>trasferimento ad alta velocità del funzionamento parallelo</translation>
     </message>
     <message>
         <location line="+2"/>
         <source>CPU link communication failed (master); M9184..M9190 slaves 1..7</source>
-        <translation type="unfinished"></translation>
+        <translation>comunicazione del collegamento CPU non riuscita (master); M9184..M9190 slave 1..7</translation>
     </message>
     <message>
         <location line="+3"/>
         <source>RS communication error code</source>
-        <translation type="unfinished"></translation>
+        <translation>codice di errore della comunicazione RS</translation>
     </message>
     <message>
         <location line="+2"/>
         <source>display mode of the display screen</source>
-        <translation type="unfinished"></translation>
+        <translation>modo di visualizzazione dello schermo</translation>
     </message>
     <message>
         <location line="+2"/>
         <source>number of the D register shown in mode 3</source>
-        <translation type="unfinished"></translation>
+        <translation>numero del registro D visualizzato nel modo 3</translation>
     </message>
     <message>
         <location line="+2"/>
         <source>computer link station number</source>
-        <translation type="unfinished"></translation>
+        <translation>numero di stazione del collegamento al computer</translation>
     </message>
     <message>
         <location line="+2"/>
         <source>current network scan time</source>
-        <translation type="unfinished"></translation>
+        <translation>tempo di scansione attuale della rete</translation>
     </message>
     <message>
         <location line="+2"/>
         <source>maximum network scan time</source>
-        <translation type="unfinished"></translation>
+        <translation>tempo di scansione massimo della rete</translation>
     </message>
     <message>
         <location line="+13"/>
         <source>Start a block with a rising-edge contact</source>
-        <translation type="unfinished"></translation>
+        <translation>Inizia un blocco con un contatto sul fronte di salita</translation>
     </message>
     <message>
         <location line="+3"/>
         <source>Start a block with a falling-edge contact</source>
-        <translation type="unfinished"></translation>
+        <translation>Inizia un blocco con un contatto sul fronte di discesa</translation>
     </message>
     <message>
         <location line="+9"/>
         <source>Rising-edge contact in series</source>
-        <translation type="unfinished"></translation>
+        <translation>Contatto sul fronte di salita in serie</translation>
     </message>
     <message>
         <location line="+3"/>
         <source>Falling-edge contact in series</source>
-        <translation type="unfinished"></translation>
+        <translation>Contatto sul fronte di discesa in serie</translation>
     </message>
     <message>
         <location line="+9"/>
         <source>Rising-edge contact in parallel</source>
-        <translation type="unfinished"></translation>
+        <translation>Contatto sul fronte di salita in parallelo</translation>
     </message>
     <message>
         <location line="+3"/>
         <source>Falling-edge contact in parallel</source>
-        <translation type="unfinished"></translation>
+        <translation>Contatto sul fronte di discesa in parallelo</translation>
     </message>
     <message>
         <location line="+21"/>
         <source>Push the result onto the branch stack</source>
-        <translation type="unfinished"></translation>
+        <translation>Salva il risultato nello stack delle diramazioni</translation>
     </message>
     <message>
         <location line="+3"/>
         <source>Read the top of the branch stack</source>
-        <translation type="unfinished"></translation>
+        <translation>Legge la cima dello stack delle diramazioni</translation>
     </message>
     <message>
         <location line="+2"/>
         <source>Pop the branch stack</source>
-        <translation type="unfinished"></translation>
+        <translation>Preleva dallo stack delle diramazioni</translation>
     </message>
     <message>
         <location line="+2"/>
         <source>Invert the result</source>
-        <translation type="unfinished"></translation>
+        <translation>Inverte il risultato</translation>
     </message>
     <message>
         <location line="+4"/>
         <source>Set (latch) a device</source>
-        <translation type="unfinished"></translation>
+        <translation>Imposta (memorizza) un operando</translation>
     </message>
     <message>
         <location line="+3"/>
         <source>Reset a device, a timer or a counter</source>
-        <translation type="unfinished"></translation>
+        <translation>Resetta un operando, un temporizzatore o un contatore</translation>
     </message>
     <message>
         <location line="+11"/>
         <source>On-delay timer, 100 ms units</source>
-        <translation type="unfinished"></translation>
+        <translation>Temporizzatore all&apos;eccitazione, unità di 100 ms</translation>
     </message>
     <message>
         <location line="+7"/>
         <source>Counter: counts rising edges, reset with RST</source>
-        <translation type="unfinished"></translation>
+        <translation>Contatore: conta i fronti di salita, reset con RST</translation>
     </message>
     <message>
         <location line="+6"/>
         <source>Step ladder: start of step S</source>
-        <translation type="unfinished"></translation>
+        <translation>Step ladder: inizio del passo S</translation>
     </message>
     <message>
         <location line="+3"/>
         <source>End of the step ladder</source>
-        <translation type="unfinished"></translation>
+        <translation>Fine dello step ladder</translation>
     </message>
     <message>
         <location line="+9"/>
         <source>Move S to D</source>
-        <translation type="unfinished"></translation>
+        <translation>Sposta S in D</translation>
     </message>
     <message>
         <location line="+2"/>
         <source>Move n words from S to D</source>
-        <translation type="unfinished"></translation>
+        <translation>Sposta n parole da S a D</translation>
     </message>
     <message>
         <location line="+4"/>
         <source>Compare S1 with S2: D, D+1, D+2 = &gt;, =, &lt;</source>
-        <translation type="unfinished"></translation>
+        <translation>Confronta S1 con S2: D, D+1, D+2 = &gt;, =, &lt;</translation>
     </message>
     <message>
         <location line="+3"/>
         <source>Reset every device from D1 to D2</source>
-        <translation type="unfinished"></translation>
+        <translation>Resetta tutti gli operandi da D1 a D2</translation>
     </message>
     <message>
         <location line="+3"/>
         <source>D = S1 + S2</source>
-        <translation type="unfinished"></translation>
+        <translation>D = S1 + S2</translation>
     </message>
     <message>
         <location line="+2"/>
         <source>D = S1 - S2</source>
-        <translation type="unfinished"></translation>
+        <translation>D = S1 - S2</translation>
     </message>
     <message>
         <location line="+3"/>
         <source>D, D+1 = S1 x S2 (32-bit product)</source>
-        <translation type="unfinished"></translation>
+        <translation>D, D+1 = S1 x S2 (prodotto a 32 bit)</translation>
     </message>
     <message>
         <location line="+2"/>
         <source>D = S1 / S2, D+1 = remainder</source>
-        <translation type="unfinished"></translation>
+        <translation>D = S1 / S2, D+1 = resto</translation>
     </message>
     <message>
         <location line="+3"/>
         <source>D = D + 1</source>
-        <translation type="unfinished"></translation>
+        <translation>D = D + 1</translation>
     </message>
     <message>
         <location line="+2"/>
         <source>D = D - 1</source>
-        <translation type="unfinished"></translation>
+        <translation>D = D - 1</translation>
     </message>
     <message>
         <location line="+5"/>
         <source>Communication or conversion instruction</source>
-        <translation type="unfinished"></translation>
+        <translation>Istruzione di comunicazione o di conversione</translation>
     </message>
     <message>
         <location filename="../model/target_vpc.cpp" line="-41"/>
         <source>Compare contact between two decimal operands</source>
-        <translation type="unfinished"></translation>
+        <translation>Contatto di confronto tra due operandi decimali</translation>
     </message>
     <message>
         <location line="+44"/>
         <source>retentive auxiliary relays</source>
-        <translation type="unfinished"></translation>
+        <translation>relè ausiliari ritentivi</translation>
     </message>
     <message>
         <location line="+6"/>
         <location line="+4"/>
         <source>system relays</source>
-        <translation type="unfinished"></translation>
+        <translation>relè di sistema</translation>
     </message>
     <message>
         <location line="+14"/>
         <source>registers</source>
-        <translation type="unfinished"></translation>
+        <translation>registri</translation>
     </message>
     <message>
         <location line="+4"/>
         <source>parallel output (o00..o11)</source>
-        <translation type="unfinished"></translation>
+        <translation>uscita parallela (o00..o11)</translation>
     </message>
     <message>
         <location line="+3"/>
         <source>parallel input (i00..i11)</source>
-        <translation type="unfinished"></translation>
+        <translation>ingresso parallelo (i00..i11)</translation>
     </message>
     <message>
         <location line="+6"/>
         <source>RUN: always ON</source>
-        <translation type="unfinished"></translation>
+        <translation>RUN: sempre ON</translation>
     </message>
     <message>
         <location line="+2"/>
         <source>ERR: program error</source>
-        <translation type="unfinished"></translation>
+        <translation>ERR: errore di programma</translation>
     </message>
     <message>
         <location line="+2"/>
         <source>CON: PC connected</source>
-        <translation type="unfinished"></translation>
+        <translation>CON: PC collegato</translation>
     </message>
     <message>
         <location line="+2"/>
         <source>VPCIO connected</source>
-        <translation type="unfinished"></translation>
+        <translation>VPCIO collegato</translation>
     </message>
     <message>
         <location line="+4"/>
         <source>0.01 s clock</source>
-        <translation type="unfinished"></translation>
+        <translation>clock da 0,01 s</translation>
     </message>
     <message>
         <location line="+35"/>
         <source>Transfer while the condition is OFF: d,s  d+s  d-s</source>
-        <translation type="unfinished"></translation>
+        <translation>Trasferimento mentre la condizione è OFF: d,s  d+s  d-s</translation>
     </message>
     <message>
         <location line="+2"/>
         <source>Transfer while the condition is ON: d,s  d+s  d-s</source>
-        <translation type="unfinished"></translation>
+        <translation>Trasferimento mentre la condizione è ON: d,s  d+s  d-s</translation>
     </message>
     <message>
         <location line="+11"/>
         <source>Latching relay: set = last but one block, reset = last block</source>
-        <translation type="unfinished"></translation>
+        <translation>Relè con ritenuta: set = penultimo blocco, reset = ultimo blocco</translation>
     </message>
     <message>
         <location line="+6"/>
         <source>Timer: 00..15 count down, 16..31 count up, 0.01 s</source>
-        <translation type="unfinished"></translation>
+        <translation>Temporizzatore: 00..15 contano all&apos;indietro, 16..31 in avanti, 0,01 s</translation>
     </message>
     <message>
         <location line="+6"/>
         <source>Counter: count = last but one block, reset = last block</source>
-        <translation type="unfinished"></translation>
+        <translation>Contatore: conteggio = penultimo blocco, reset = ultimo blocco</translation>
     </message>
     <message>
         <location line="+11"/>
         <source>Jump: skip up to JPE while the condition is OFF</source>
-        <translation type="unfinished"></translation>
+        <translation>Salto: salta fino a JPE mentre la condizione è OFF</translation>
     </message>
     <message>
         <location line="+2"/>
         <source>End of a jump</source>
-        <translation type="unfinished"></translation>
+        <translation>Fine di un salto</translation>
     </message>
 </context>
 <context>
@@ -3062,147 +3075,147 @@ Ladder and instruction-list editor for VPC, Vigor, CPM1 and PL110.</source>
     <message>
         <location filename="../simulator/compiler.cpp" line="+66"/>
         <source>%1 is not simulated: it does nothing in the simulator</source>
-        <translation type="unfinished"></translation>
+        <translation>%1 non è simulato: nel simulatore non fa nulla</translation>
     </message>
     <message>
         <location line="+15"/>
         <source>%1 needs operand %2</source>
-        <translation type="unfinished"></translation>
+        <translation>%1 richiede l&apos;operando %2</translation>
     </message>
     <message>
         <location line="+17"/>
         <source>%1 is not a bit device</source>
-        <translation type="unfinished"></translation>
+        <translation>%1 non è un operando a bit</translation>
     </message>
     <message>
         <location line="+12"/>
         <source>constant %1 is out of range</source>
-        <translation type="unfinished"></translation>
+        <translation>la costante %1 è fuori campo</translation>
     </message>
     <message>
         <location line="+5"/>
         <source>%1 is not a word device or a constant</source>
-        <translation type="unfinished"></translation>
+        <translation>%1 non è un operando a parola né una costante</translation>
     </message>
     <message>
         <location line="+20"/>
         <source>%1 cannot be written</source>
-        <translation type="unfinished"></translation>
+        <translation>%1 non può essere scritto</translation>
     </message>
     <message>
         <location line="+3"/>
         <source>%1 is not a word device</source>
-        <translation type="unfinished"></translation>
+        <translation>%1 non è un operando a parola</translation>
     </message>
     <message>
         <location line="+15"/>
         <source>%1 needs the next word too, which does not exist</source>
-        <translation type="unfinished"></translation>
+        <translation>%1 richiede anche la parola successiva, che non esiste</translation>
     </message>
     <message>
         <location line="+24"/>
         <source>%1 needs %2 open blocks before it</source>
-        <translation type="unfinished"></translation>
+        <translation>%1 richiede %2 blocchi aperti prima di sé</translation>
     </message>
     <message>
         <location line="+38"/>
         <source>more than %1 open blocks</source>
-        <translation type="unfinished"></translation>
+        <translation>più di %1 blocchi aperti</translation>
     </message>
     <message>
         <location line="+34"/>
         <source>%1 is not a timer</source>
-        <translation type="unfinished"></translation>
+        <translation>%1 non è un temporizzatore</translation>
     </message>
     <message>
         <location line="+31"/>
         <source>the time base of %1 must be 10, 100 or 1000 ms, not %2</source>
-        <translation type="unfinished"></translation>
+        <translation>la base dei tempi di %1 deve essere 10, 100 o 1000 ms, non %2</translation>
     </message>
     <message>
         <location line="+23"/>
         <source>%1 is not a counter</source>
-        <translation type="unfinished"></translation>
+        <translation>%1 non è un contatore</translation>
     </message>
     <message>
         <location line="+46"/>
         <source>%1 needs three bit devices from %2</source>
-        <translation type="unfinished"></translation>
+        <translation>%1 richiede tre operandi a bit a partire da %2</translation>
     </message>
     <message>
         <location line="+17"/>
         <source>%1 needs two devices of one kind, the first not after the second</source>
-        <translation type="unfinished"></translation>
+        <translation>%1 richiede due operandi dello stesso tipo, il primo non successivo al secondo</translation>
     </message>
     <message>
         <location line="+48"/>
         <source>unknown operator %1 (use + - * / | &amp; ^ &lt;&lt; &gt;&gt;)</source>
-        <translation type="unfinished"></translation>
+        <translation>operatore sconosciuto %1 (usare + - * / | &amp; ^ &lt;&lt; &gt;&gt;)</translation>
     </message>
     <message>
         <location line="+17"/>
         <source>%1 needs a bit: a bit device, or a word and a bit number 0..15</source>
-        <translation type="unfinished"></translation>
+        <translation>%1 richiede un bit: un operando a bit, o una parola e un numero di bit 0..15</translation>
     </message>
     <message>
         <location line="+27"/>
         <source>%1 needs a count from 1 to %2</source>
-        <translation type="unfinished"></translation>
+        <translation>%1 richiede un numero da 1 a %2</translation>
     </message>
     <message>
         <location line="+14"/>
         <source>the block of %1 words runs past the end of its area</source>
-        <translation type="unfinished"></translation>
+        <translation>il blocco di %1 parole va oltre la fine della sua area</translation>
     </message>
     <message>
         <location line="+107"/>
         <source>label %1 ends more than one jump</source>
-        <translation type="unfinished"></translation>
+        <translation>l&apos;etichetta %1 chiude più di un salto</translation>
     </message>
     <message>
         <location line="+12"/>
         <source>jump %1 has no end after it</source>
-        <translation type="unfinished"></translation>
+        <translation>il salto %1 non ha una fine dopo di sé</translation>
     </message>
     <message>
         <location line="+6"/>
         <source>%1 without a jump before it</source>
-        <translation type="unfinished"></translation>
+        <translation>%1 senza un salto prima</translation>
     </message>
     <message>
         <location line="+9"/>
         <source>%1 has no end</source>
-        <translation type="unfinished"></translation>
+        <translation>%1 non ha una fine</translation>
     </message>
     <message>
         <location line="+15"/>
         <source>unknown instruction</source>
-        <translation type="unfinished"></translation>
+        <translation>istruzione sconosciuta</translation>
     </message>
     <message>
         <location line="+20"/>
         <source>more than %1 nested %2</source>
-        <translation type="unfinished"></translation>
+        <translation>più di %1 %2 annidati</translation>
     </message>
     <message>
         <location line="+10"/>
         <source>%1 without MPS before it</source>
-        <translation type="unfinished"></translation>
+        <translation>%1 senza MPS prima</translation>
     </message>
     <message>
         <location line="+31"/>
         <source>%1 cannot be reset</source>
-        <translation type="unfinished"></translation>
+        <translation>%1 non può essere resettato</translation>
     </message>
     <message>
         <location line="+5"/>
         <source>%1 is not a device</source>
-        <translation type="unfinished"></translation>
+        <translation>%1 non è un operando</translation>
     </message>
     <message>
         <location line="+103"/>
         <source>the program has no target</source>
-        <translation type="unfinished"></translation>
+        <translation>il programma non ha una famiglia PLC</translation>
     </message>
 </context>
 <context>
@@ -3210,18 +3223,18 @@ Ladder and instruction-list editor for VPC, Vigor, CPM1 and PL110.</source>
     <message>
         <location filename="../simulator/engine.cpp" line="+240"/>
         <source>set value %1 is not a BCD number; the instruction is skipped</source>
-        <translation type="unfinished"></translation>
+        <translation>il valore di preset %1 non è un numero BCD; l&apos;istruzione viene saltata</translation>
     </message>
     <message>
         <location line="+357"/>
         <location line="+52"/>
         <source>division by zero; the destination is unchanged</source>
-        <translation type="unfinished"></translation>
+        <translation>divisione per zero; la destinazione resta invariata</translation>
     </message>
     <message>
         <location line="+21"/>
         <source>MOVIND index %1 is outside 0..%2; nothing is written</source>
-        <translation type="unfinished"></translation>
+        <translation>l&apos;indice %1 di MOVIND è fuori da 0..%2; non viene scritto nulla</translation>
     </message>
 </context>
 <context>
@@ -3229,37 +3242,37 @@ Ladder and instruction-list editor for VPC, Vigor, CPM1 and PL110.</source>
     <message>
         <location filename="../simulator/trace.cpp" line="+23"/>
         <source>unknown device %1: %2</source>
-        <translation type="unfinished"></translation>
+        <translation>operando sconosciuto %1: %2</translation>
     </message>
     <message>
         <location line="+26"/>
         <source>%1 needs a value</source>
-        <translation type="unfinished"></translation>
+        <translation>%1 richiede un valore</translation>
     </message>
     <message>
         <location line="+1"/>
         <source>unexpected argument %1</source>
-        <translation type="unfinished"></translation>
+        <translation>argomento inatteso %1</translation>
     </message>
     <message>
         <location line="+9"/>
         <source>%1 needs a positive number, not &quot;%2&quot;</source>
-        <translation type="unfinished"></translation>
+        <translation>%1 richiede un numero positivo, non &quot;%2&quot;</translation>
     </message>
     <message>
         <location line="+12"/>
         <source>--set needs DEV=VALUE@SCAN, not &quot;%1&quot;</source>
-        <translation type="unfinished"></translation>
+        <translation>--set richiede DEV=VALUE@SCAN, non &quot;%1&quot;</translation>
     </message>
     <message>
         <location line="+29"/>
         <source>unknown option %1</source>
-        <translation type="unfinished"></translation>
+        <translation>opzione sconosciuta %1</translation>
     </message>
     <message>
         <location line="+5"/>
         <source>--scans and --trace are required</source>
-        <translation type="unfinished"></translation>
+        <translation>--scans e --trace sono obbligatori</translation>
     </message>
 </context>
 </TS>

@@ -1,0 +1,203 @@
+// The Hungarian and Italian catalogues: complete, faithful to the placeholders, embedded in the
+// program, and reaching every room (menus, diagnostics of the model, QScintilla's own menu).
+#include "app/gui/main_window.h"
+#include "editor/il_editor.h"
+#include "model/checks.h"
+#include "model/il.h"
+#include "model/target.h"
+
+#include <QApplication>
+#include <QFile>
+#include <QMenu>
+#include <QMenuBar>
+#include <QRegularExpression>
+#include <QTranslator>
+#include <QXmlStreamReader>
+
+#include <gtest/gtest.h>
+
+#include <memory>
+#include <set>
+
+using namespace rung;
+
+namespace {
+
+struct Message {
+    QString context;
+    QString source;
+    bool numerus = false;
+    bool finished = true;
+    QStringList forms; // one string, or the numerus forms
+};
+
+std::vector<Message> readCatalogue(const QString &path) {
+    QFile file(path);
+    EXPECT_TRUE(file.open(QIODevice::ReadOnly)) << path.toStdString();
+    std::vector<Message> messages;
+    QXmlStreamReader xml(&file);
+    QString context;
+    Message current;
+    while (!xml.atEnd()) {
+        xml.readNext();
+        if (!xml.isStartElement())
+            continue;
+        const auto name = xml.name();
+        if (name == QLatin1String("name")) {
+            context = xml.readElementText();
+        } else if (name == QLatin1String("message")) {
+            current =
+                Message{context, {}, xml.attributes().value("numerus") == QLatin1String("yes")};
+        } else if (name == QLatin1String("source")) {
+            current.source = xml.readElementText();
+        } else if (name == QLatin1String("translation")) {
+            current.finished = xml.attributes().value("type").isEmpty();
+            if (current.numerus) {
+                while (xml.readNextStartElement())
+                    current.forms << xml.readElementText();
+            } else {
+                current.forms << xml.readElementText();
+            }
+            messages.push_back(current);
+        }
+    }
+    EXPECT_FALSE(xml.hasError()) << xml.errorString().toStdString();
+    return messages;
+}
+
+std::multiset<QString> placeholders(const QString &text, bool numerus) {
+    static const QRegularExpression re(QStringLiteral("%(?:n|L?[1-9])"));
+    std::multiset<QString> found;
+    for (const auto &m : re.globalMatch(text)) {
+        // A plural form may say "one" instead of "%n" (Italian "un segmento").
+        if (!(numerus && m.captured() == QLatin1String("%n")))
+            found.insert(m.captured());
+    }
+    return found;
+}
+
+// Installs a catalogue for one test and takes it away again.
+class Language {
+public:
+    explicit Language(const QString &code) {
+        m_loaded = m_translator.load(QStringLiteral(":/i18n/rungstudio_%1").arg(code));
+        if (m_loaded)
+            QCoreApplication::installTranslator(&m_translator);
+    }
+    ~Language() { QCoreApplication::removeTranslator(&m_translator); }
+    bool loaded() const { return m_loaded; }
+
+private:
+    QTranslator m_translator;
+    bool m_loaded = false;
+};
+
+QStringList menuTitles(const QMainWindow &window) {
+    QStringList titles;
+    for (QAction *a : window.menuBar()->actions())
+        titles << a->text();
+    return titles;
+}
+
+struct Finding {
+    QString code;
+    QString message;
+};
+
+std::vector<Finding> vigorFindings() {
+    const auto &vigor = model::Target::get(model::Family::Vigor);
+    // An octal slip, a coil written twice and no END.
+    const auto parsed =
+        parseInstructionList(vigor, QStringLiteral("LD X8\nLD X0\nOUT Y0\nLD X1\nOUT Y0\n"));
+    std::vector<Finding> findings;
+    for (const auto &e : parsed.errors)
+        findings.push_back({QStringLiteral("parse"), e.message});
+    for (const auto &d : model::checkList(parsed.list))
+        findings.push_back({d.code, d.message});
+    return findings;
+}
+
+} // namespace
+
+class Catalogue : public ::testing::TestWithParam<const char *> {};
+
+TEST_P(Catalogue, EveryTextIsTranslatedAndKeepsItsPlaceholders) {
+    const QString path =
+        QStringLiteral(RUNG_SOURCE_DIR "/translations/rungstudio_%1.ts").arg(GetParam());
+    const auto messages = readCatalogue(path);
+    ASSERT_GT(messages.size(), 500u);
+    for (const auto &m : messages) {
+        const std::string where = (m.context + QLatin1String(": ") + m.source).toStdString();
+        EXPECT_TRUE(m.finished) << "unfinished: " << where;
+        ASSERT_FALSE(m.forms.isEmpty()) << where;
+        for (const QString &form : m.forms) {
+            EXPECT_FALSE(form.trimmed().isEmpty()) << "empty: " << where;
+            EXPECT_EQ(placeholders(form, m.numerus), placeholders(m.source, m.numerus))
+                << where << " -> " << form.toStdString();
+            // A menu accelerator stays an accelerator.
+            if (m.source.contains(QRegularExpression(QStringLiteral("&[^& ]")))) {
+                EXPECT_TRUE(form.contains(QRegularExpression(QStringLiteral("&[^& ]"))))
+                    << where << " -> " << form.toStdString();
+            }
+        }
+    }
+}
+
+TEST_P(Catalogue, IsEmbeddedAndTranslatesTheMenusTheDiagnosticsAndTheEditorsOwnMenu) {
+    const auto english = vigorFindings();
+    ASSERT_GE(english.size(), 3u); // the octal error, the duplicate coil, the missing END
+    QStringList englishMenus;
+    {
+        app::MainWindow window;
+        englishMenus = menuTitles(window);
+    }
+
+    Language language(QString::fromLatin1(GetParam()));
+    ASSERT_TRUE(language.loaded());
+
+    app::MainWindow window;
+    const QStringList menus = menuTitles(window);
+    ASSERT_EQ(menus.size(), englishMenus.size());
+    // Every title comes from the catalogue; a word may stay as it is ("&File" in Italian).
+    int changed = 0;
+    for (int i = 0; i < menus.size(); ++i) {
+        EXPECT_EQ(menus[i].toStdString(),
+                  QCoreApplication::translate("rung::app::MainWindow",
+                                              englishMenus[i].toUtf8().constData())
+                      .toStdString());
+        changed += menus[i] != englishMenus[i] ? 1 : 0;
+    }
+    EXPECT_GE(changed, menus.size() - 1);
+
+    const auto translated = vigorFindings();
+    ASSERT_EQ(translated.size(), english.size());
+    for (size_t i = 0; i < english.size(); ++i) {
+        EXPECT_EQ(translated[i].code, english[i].code);
+        EXPECT_NE(translated[i].message, english[i].message) << english[i].message.toStdString();
+        EXPECT_TRUE(translated[i].message.contains(QLatin1String("Y0")) ||
+                    translated[i].message.contains(QLatin1String("X8")) ||
+                    !english[i].message.contains(QLatin1String("Y0")))
+            << "the device is still named: " << translated[i].message.toStdString();
+    }
+
+    // QScintilla ships no catalogue of its own; ours answers its context menu.
+    editor::IlEditor il(model::Target::get(model::Family::Vigor));
+    std::unique_ptr<QMenu> menu(il.createStandardContextMenu());
+    ASSERT_TRUE(menu);
+    const auto actions = menu->actions();
+    ASSERT_FALSE(actions.isEmpty());
+    EXPECT_NE(actions.first()->text(), QStringLiteral("&Undo"));
+    EXPECT_EQ(actions.first()->text(), QCoreApplication::translate("QsciScintilla", "&Undo"));
+}
+
+INSTANTIATE_TEST_SUITE_P(Translations, Catalogue, ::testing::Values("hu", "it"),
+                         [](const auto &info) { return std::string(info.param); });
+
+TEST(Translations, EnglishSaysOneRungAndTwoRungs) {
+    Language language(QStringLiteral("en"));
+    ASSERT_TRUE(language.loaded());
+    EXPECT_EQ(QCoreApplication::translate("rung::editor::Document", "Delete %n rungs", nullptr, 1),
+              QStringLiteral("Delete 1 rung"));
+    EXPECT_EQ(QCoreApplication::translate("rung::editor::Document", "Delete %n rungs", nullptr, 2),
+              QStringLiteral("Delete 2 rungs"));
+}
