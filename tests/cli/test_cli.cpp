@@ -2,13 +2,17 @@
 
 #include "model/project.h"
 
+#include <QCoreApplication>
 #include <QDir>
 #include <QFile>
 #include <QProcess>
 #include <QRegularExpression>
 #include <QTemporaryDir>
+#include <QTranslator>
 
 #include <gtest/gtest.h>
+
+#include <memory>
 
 namespace {
 
@@ -174,6 +178,57 @@ TEST(CliBinary, TheInstalledToolRunsTheSameCommands) {
     EXPECT_EQ(p.exitCode(), 1);
     EXPECT_TRUE(QString::fromUtf8(p.readAllStandardOutput()).contains(QStringLiteral("[OP002]")));
 }
+
+#ifdef RUNG_QM_DIR
+// The tool follows the locale like other command-line tools; the C locale of scripts keeps
+// English. What it should print is what the same command prints with the catalogue loaded.
+TEST(CliBinary, SpeaksTheLanguageOfTheLocale) {
+    QTemporaryDir dir;
+    const QString file = write(dir, QStringLiteral("l.il"), "LD X0\nOUT X1\n");
+    const QStringList args{QStringLiteral("check"), file, QStringLiteral("--target"),
+                           QStringLiteral("vigor")};
+    const auto runBinary = [&](const QString &lang) {
+        QProcessEnvironment env = QProcessEnvironment::systemEnvironment();
+        for (const char *name : {"LC_ALL", "LC_MESSAGES", "LANGUAGE"})
+            env.remove(QString::fromLatin1(name));
+        env.insert(QStringLiteral("LANG"), lang);
+        QProcess p;
+        p.setProcessEnvironment(env);
+        p.start(QStringLiteral(RUNG_CLI_PATH), args);
+        EXPECT_TRUE(p.waitForFinished(30000));
+        EXPECT_EQ(p.exitCode(), 1);
+        return QString::fromUtf8(p.readAllStandardOutput());
+    };
+    std::unique_ptr<QCoreApplication> app;
+    int argc = 1;
+    char arg0[] = "test_cli";
+    char *argv[] = {arg0, nullptr};
+    if (!QCoreApplication::instance())
+        app = std::make_unique<QCoreApplication>(argc, argv);
+    const auto runWith = [&](const QString &language) {
+        QTranslator translator;
+        EXPECT_TRUE(translator.load(QStringLiteral(RUNG_QM_DIR "/rungstudio_") + language));
+        QCoreApplication::installTranslator(&translator);
+        const QString out = cli(args).out;
+        QCoreApplication::removeTranslator(&translator);
+        return out;
+    };
+
+    const QString english = cli(args).out;
+    ASSERT_TRUE(english.contains(QStringLiteral("[OP002]")));
+    ASSERT_TRUE(english.contains(QStringLiteral("[EN001]")));
+    EXPECT_EQ(runBinary(QStringLiteral("C")).toStdString(), english.toStdString());
+    for (const QString &language : {QStringLiteral("hu"), QStringLiteral("it")}) {
+        const QString expected = runWith(language);
+        EXPECT_NE(expected.toStdString(), english.toStdString()) << language.toStdString();
+        EXPECT_TRUE(expected.contains(QStringLiteral("[OP002]")));
+        EXPECT_EQ(runBinary(language + QStringLiteral("_") + language.toUpper() +
+                            QStringLiteral(".UTF-8"))
+                      .toStdString(),
+                  expected.toStdString());
+    }
+}
+#endif
 
 TEST(Examples, EveryExampleProjectLoadsAndHasNoError) {
     int count = 0;
