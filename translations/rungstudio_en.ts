@@ -447,7 +447,7 @@ Exit status: 0 no error, 1 the program has errors, 2 usage or I/O error.</source
     </message>
     <message>
         <location line="+3"/>
-        <source>Rung &amp;Comment...</source>
+        <source>Rung Co&amp;mment...</source>
         <translation type="unfinished"></translation>
     </message>
     <message>

@@ -452,7 +452,7 @@ Kilépési kód: 0 nincs hiba, 1 a programban hiba van, 2 használati vagy I/O h
     </message>
     <message>
         <location line="+3"/>
-        <source>Rung &amp;Comment...</source>
+        <source>Rung Co&amp;mment...</source>
         <translation>Létrafok megje&amp;gyzése...</translation>
     </message>
     <message>
@@ -518,7 +518,7 @@ Kilépési kód: 0 nincs hiba, 1 a programban hiba van, 2 használati vagy I/O h
     <message>
         <location line="+3"/>
         <source>&amp;Language</source>
-        <translation>&amp;Nyelv</translation>
+        <translation>N&amp;yelv</translation>
     </message>
     <message>
         <location line="+15"/>
@@ -533,7 +533,7 @@ Kilépési kód: 0 nincs hiba, 1 a programban hiba van, 2 használati vagy I/O h
     <message>
         <location line="+7"/>
         <source>&amp;Help</source>
-        <translation>&amp;Súgó</translation>
+        <translation>Sú&amp;gó</translation>
     </message>
     <message>
         <location line="+1"/>

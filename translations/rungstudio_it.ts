@@ -452,7 +452,7 @@ Codice di uscita: 0 nessun errore, 1 il programma contiene errori, 2 errore di u
     </message>
     <message>
         <location line="+3"/>
-        <source>Rung &amp;Comment...</source>
+        <source>Rung Co&amp;mment...</source>
         <translation>Co&amp;mmento del segmento...</translation>
     </message>
     <message>

@@ -344,7 +344,7 @@ void MainWindow::buildActions() {
     edit->addAction(tr("Add to &Watch List"), this,
                     [this] { m_watch->addDevice(m_ladder->deviceAtCursor()); })
         ->setShortcut(QKeySequence(Qt::CTRL | Qt::SHIFT | Qt::Key_W));
-    edit->addAction(tr("Rung &Comment..."), this, &MainWindow::editRungComment)
+    edit->addAction(tr("Rung Co&mment..."), this, &MainWindow::editRungComment)
         ->setShortcut(QKeySequence(Qt::CTRL | Qt::SHIFT | Qt::Key_M));
     edit->addAction(tr("Insert Rung"), this, [this] { m_ladder->insertRung(); });
     edit->addAction(tr("Delete Rung"), this, [this] { m_ladder->deleteRung(); });

@@ -16,6 +16,7 @@
 
 #include <gtest/gtest.h>
 
+#include <map>
 #include <memory>
 #include <set>
 
@@ -97,6 +98,29 @@ QStringList menuTitles(const QMainWindow &window) {
     for (QAction *a : window.menuBar()->actions())
         titles << a->text();
     return titles;
+}
+
+// The access keys (the letter after '&') that two entries of one menu share, as
+// "menu: key (first, second)"; the menu bar counts as a menu too.
+QStringList clashingAccessKeys(const QString &where, const QList<QAction *> &actions) {
+    QStringList clashes;
+    std::map<QChar, QString> seen;
+    static const QRegularExpression key(QStringLiteral("&([^& ])"));
+    for (QAction *a : actions) {
+        if (a->isSeparator())
+            continue;
+        const QRegularExpressionMatch m = key.match(a->text());
+        if (m.hasMatch()) {
+            const QChar letter = m.captured(1).at(0).toLower();
+            const auto [it, fresh] = seen.emplace(letter, a->text());
+            if (!fresh)
+                clashes
+                    << QStringLiteral("%1: %2 (%3, %4)").arg(where, letter, it->second, a->text());
+        }
+        if (a->menu())
+            clashes << clashingAccessKeys(a->text(), a->menu()->actions());
+    }
+    return clashes;
 }
 
 struct Finding {
@@ -192,6 +216,19 @@ TEST_P(Catalogue, IsEmbeddedAndTranslatesTheMenusTheDiagnosticsAndTheEditorsOwnM
 
 INSTANTIATE_TEST_SUITE_P(Translations, Catalogue, ::testing::Values("hu", "it"),
                          [](const auto &info) { return std::string(info.param); });
+
+// Alt+letter reaches one entry only, in every language.
+TEST(Translations, NoTwoEntriesOfAMenuShareAnAccessKey) {
+    for (const char *code : {"en", "hu", "it"}) {
+        Language language(QString::fromLatin1(code));
+        ASSERT_TRUE(language.loaded()) << code;
+        app::MainWindow window;
+        const QStringList clashes =
+            clashingAccessKeys(QStringLiteral("menu bar"), window.menuBar()->actions());
+        EXPECT_TRUE(clashes.isEmpty())
+            << code << ": " << clashes.join(QStringLiteral("; ")).toStdString();
+    }
+}
 
 TEST(Translations, EnglishSaysOneRungAndTwoRungs) {
     Language language(QStringLiteral("en"));
