@@ -411,6 +411,31 @@ void IlEditor::goToLine(int line) {
     setFocus();
 }
 
+QString IlEditor::lineText(int line) const {
+    QString t = text(line);
+    while (t.endsWith(QLatin1Char('\n')) || t.endsWith(QLatin1Char('\r')))
+        t.chop(1);
+    return t;
+}
+
+bool IlEditor::replaceLines(int first, const QStringList &expected,
+                            const QStringList &replacement) {
+    const int last = first + static_cast<int>(expected.size()) - 1;
+    if (first < 0 || expected.isEmpty() || last >= lines())
+        return false;
+    for (int i = 0; i < expected.size(); ++i)
+        if (lineText(first + i) != expected[i])
+            return false;
+    beginUndoAction();
+    // Scintilla's own positions: a line's end is a byte offset, whatever the characters.
+    SendScintilla(SCI_SETSEL, SendScintilla(SCI_POSITIONFROMLINE, first),
+                  SendScintilla(SCI_GETLINEENDPOSITION, last));
+    replaceSelectedText(replacement.join(QLatin1Char('\n')));
+    endUndoAction();
+    setCursorPosition(first, 0);
+    return true;
+}
+
 void IlEditor::updateCallTip() {
     // The operand form of the mnemonic on the cursor's line, in the tooltip of the editor.
     int line = 0;

@@ -48,6 +48,11 @@ public:
     void showDiagnostics(const std::vector<model::Diagnostic> &diagnostics);
     void setStepNumbers(const std::vector<int> &stepOfLine); // -1: no step on that line
     void goToLine(int line);                                 // 1-based
+    // The text of a line without its line break (0-based, as QScintilla counts).
+    QString lineText(int line) const;
+    // Replaces lines first.. (0-based) when they still read `expected`, as one step of the
+    // editor's own undo; false, and nothing changed, when they do not.
+    bool replaceLines(int first, const QStringList &expected, const QStringList &replacement);
     // The operand form of the mnemonic before the caret, as a call tip ("TMR T0..T255 ...").
     void showOperandTip();
     bool operandTipShown();

@@ -2,6 +2,7 @@
 
 #include "editor/il_editor.h"
 #include "editor/ladder_view.h"
+#include "editor/listing_lines_command.h"
 #include "editor/problems_view.h"
 #include "editor/tool_icons.h"
 #include "editor/watch_list_view.h"
@@ -231,9 +232,9 @@ void MainWindow::buildActions() {
     bar->addSeparator();
 
     QMenu *edit = menuBar()->addMenu(tr("&Edit"));
-    QAction *undo = m_document->undoStack()->createUndoAction(this, tr("&Undo"));
+    QAction *undo = undoAction(false);
     undo->setShortcut(QKeySequence::Undo);
-    QAction *redo = m_document->undoStack()->createRedoAction(this, tr("&Redo"));
+    QAction *redo = undoAction(true);
     redo->setShortcuts({QKeySequence::Redo, QKeySequence(Qt::CTRL | Qt::Key_Y)});
     undo->setIcon(editor::toolIcon(editor::ToolIcon::Undo));
     redo->setIcon(editor::toolIcon(editor::ToolIcon::Redo));
@@ -591,6 +592,43 @@ void MainWindow::locate(const model::Diagnostic &d) {
     }
 }
 
+QAction *MainWindow::undoAction(bool redo) {
+    // As QUndoStack's own actions, but the list's pending edit (typed, not yet applied)
+    // becomes a step first: Undo then takes back what was just typed, and no step of the
+    // stack runs on a text the program has not caught up with.
+    QUndoStack *stack = m_document->undoStack();
+    auto *action = new QAction(this);
+    const auto label = [redo, stack] {
+        const QString what = redo ? stack->redoText() : stack->undoText();
+        if (what.isEmpty())
+            return redo ? tr("&Redo") : tr("&Undo");
+        //: %1 is the step's label, e.g. "Insert rung"
+        return redo ? tr("&Redo %1").arg(what) : tr("&Undo %1").arg(what);
+    };
+    const auto update = [this, action, label, redo, stack] {
+        action->setText(label());
+        action->setEnabled((redo ? stack->canRedo() : stack->canUndo()) ||
+                           (!redo && (m_ilTimer.isActive() || model::hasErrors(m_listingErrors))));
+    };
+    update();
+    connect(stack, &QUndoStack::indexChanged, action, update);
+    connect(stack, &QUndoStack::cleanChanged, action, update);
+    connect(m_il, &editor::IlEditor::listingEdited, action, update);
+    connect(action, &QAction::triggered, this, [this, redo, stack] {
+        if (m_ilTimer.isActive())
+            applyListing();
+        // Text the program cannot follow (it has errors) is the list's own business: the
+        // stack's step would overwrite it with the last valid program's listing.
+        if (!redo && model::hasErrors(m_listingErrors) && m_il->isUndoAvailable()) {
+            m_il->undo();
+            applyListing();
+            return;
+        }
+        redo ? stack->redo() : stack->undo();
+    });
+    return action;
+}
+
 void MainWindow::applyFix(const model::Diagnostic &d) {
     if (!d.fix)
         return;
@@ -600,23 +638,20 @@ void MainWindow::applyFix(const model::Diagnostic &d) {
         return;
     }
     // A listing fix rewrites the lines of the text as typed, the rest of it untouched. The
-    // program is the same (a fuzzy form and its canonical rewrite draw one ladder), so it is
-    // one step of the list's own undo (Ctrl+Z there), then the ladder follows as after typing.
+    // program is the same (a fuzzy form and its canonical rewrite draw one ladder); the step
+    // is still one of the project's undo (Edit > Undo) and of the list's own (Ctrl+Z there).
     const int first = d.fix->firstLine - 1;
     const int last = d.fix->lastLine - 1;
     if (first < 0 || last >= m_il->lines() || first > last)
         return;
-    QString replacement = d.fix->listing;
-    if (!replacement.endsWith(QLatin1Char('\n')))
-        replacement += QLatin1Char('\n');
-    m_il->beginUndoAction();
-    if (last + 1 < m_il->lines())
-        m_il->setSelection(first, 0, last + 1, 0);
-    else
-        m_il->setSelection(first, 0, last, m_il->text(last).size());
-    m_il->replaceSelectedText(last + 1 < m_il->lines() ? replacement : replacement.chopped(1));
-    m_il->endUndoAction();
-    applyListing();
+    QStringList before;
+    for (int line = first; line <= last; ++line)
+        before << m_il->lineText(line);
+    QStringList after = d.fix->listing.split(QLatin1Char('\n'));
+    if (after.size() > 1 && after.back().isEmpty())
+        after.removeLast();
+    m_document->undoStack()->push(new editor::ListingLinesCommand(
+        m_il, first, before, after, [this] { applyListing(); }, d.fix->label));
 }
 
 void MainWindow::closeEvent(QCloseEvent *event) {

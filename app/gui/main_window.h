@@ -84,6 +84,7 @@ private:
     void refreshSymbols();
     void locate(const model::Diagnostic &diagnostic);
     void applyFix(const model::Diagnostic &diagnostic);
+    QAction *undoAction(bool redo);
     bool maybeSave();
     void addRecent(const QString &path);
     void rebuildRecentMenu();

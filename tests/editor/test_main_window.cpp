@@ -11,6 +11,7 @@
 #include <QTemporaryDir>
 #include <QTest>
 #include <QTreeWidget>
+#include <QUndoStack>
 
 #include <gtest/gtest.h>
 
@@ -296,8 +297,65 @@ TEST_F(Fixture, FuzzyFormsOfTheTypedListOfferTheirCanonicalRewriteAsOneStep) {
               QStringLiteral("LD X0\nOR X1\nOUT Y0\nLD    X2   ; as typed\nOUT Y1\nEND\n"));
     for (int i = 0; problems->diagnosticAt(i); ++i)
         EXPECT_FALSE(problems->diagnosticAt(i)->code.startsWith(QLatin1String("FZ")));
-    // The program did not change, only its text: one step of the list's undo brings it back.
-    EXPECT_EQ(window.document()->undoStack()->count(), programSteps);
+    // The program did not change, only its text; the fix is still one step of Edit > Undo
+    // under its own label, and of the list's own undo (Ctrl+Z in the list).
+    const QString fixed = window.ilEditor()->text();
+    QUndoStack *stack = window.document()->undoStack();
+    EXPECT_EQ(stack->count(), programSteps + 1);
+    EXPECT_EQ(stack->undoText(), fuzzy->fix->label);
+    stack->undo();
+    EXPECT_EQ(window.ilEditor()->text(), typed);
+    EXPECT_EQ(window.document()->ladder().rungs.size(), 3u);
+    stack->redo();
+    EXPECT_EQ(window.ilEditor()->text(), fixed);
     window.ilEditor()->undo();
     EXPECT_EQ(window.ilEditor()->text(), typed);
+    // The lines were changed behind the step's back: it goes rather than overwrite them.
+    stack->undo();
+    EXPECT_EQ(window.ilEditor()->text(), typed);
+    EXPECT_EQ(stack->count(), programSteps);
+}
+
+// Undo right after typing in the list takes back what was typed, even before the pause that
+// applies it; the step is named like any edit of the list.
+TEST_F(Fixture, UndoRightAfterTypingInTheListTakesTheTypingBack) {
+    window.ilEditor()->setText(QStringLiteral("LD X0\nOUT Y0\nEND\n"));
+    window.applyListing();
+    ASSERT_EQ(listing(), QStringLiteral("LD X0\nOUT Y0\nEND\n"));
+    QAction *undo = nullptr;
+    QAction *redo = nullptr;
+    for (QAction *a : window.findChildren<QAction *>()) {
+        if (a->shortcut() == QKeySequence(QKeySequence::Undo))
+            undo = a;
+        if (a->shortcut() == QKeySequence(QKeySequence::Redo))
+            redo = a;
+    }
+    ASSERT_TRUE(undo && redo);
+    EXPECT_EQ(undo->text(), QStringLiteral("&Undo Edit instruction list"));
+
+    window.ilEditor()->setFocus();
+    window.ilEditor()->setCursorPosition(1, 0);
+    QTest::keyClicks(window.ilEditor(), QStringLiteral("AND X1"));
+    QTest::keyClick(window.ilEditor(), Qt::Key_Return);
+    ASSERT_EQ(window.ilEditor()->text(), QStringLiteral("LD X0\nAND X1\nOUT Y0\nEND\n"));
+    EXPECT_EQ(listing(), QStringLiteral("LD X0\nOUT Y0\nEND\n")); // not applied yet
+    undo->trigger();
+    EXPECT_EQ(listing(), QStringLiteral("LD X0\nOUT Y0\nEND\n"));
+    EXPECT_EQ(window.ilEditor()->text(), listing());
+    EXPECT_EQ(redo->text(), QStringLiteral("&Redo Edit instruction list"));
+    redo->trigger();
+    EXPECT_EQ(listing(), QStringLiteral("LD X0\nAND X1\nOUT Y0\nEND\n"));
+
+    // Typing the program cannot follow yet (an error) is taken back in the list itself; the
+    // program's steps stay as they are.
+    const int steps = window.document()->undoStack()->index();
+    window.ilEditor()->setCursorPosition(2, 0);
+    QTest::keyClicks(window.ilEditor(), QStringLiteral("ORB"));
+    QTest::keyClick(window.ilEditor(), Qt::Key_Return);
+    window.applyListing(); // the pause passed: the list shows the error
+    EXPECT_EQ(listing(), QStringLiteral("LD X0\nAND X1\nOUT Y0\nEND\n"));
+    EXPECT_TRUE(undo->isEnabled());
+    undo->trigger();
+    EXPECT_EQ(window.ilEditor()->text(), QStringLiteral("LD X0\nAND X1\nOUT Y0\nEND\n"));
+    EXPECT_EQ(window.document()->undoStack()->index(), steps);
 }
