@@ -185,7 +185,7 @@ Exit status: 0 no error, 1 the program has errors, 2 usage or I/O error.</source
 <context>
     <name>rung::app::MainWindow</name>
     <message>
-        <location filename="../app/gui/main_window.cpp" line="+140"/>
+        <location filename="../app/gui/main_window.cpp" line="+141"/>
         <source>Problems</source>
         <translation type="unfinished"></translation>
     </message>
@@ -305,17 +305,17 @@ Exit status: 0 no error, 1 the program has errors, 2 usage or I/O error.</source
         <translation type="unfinished"></translation>
     </message>
     <message>
-        <location line="+1"/>
+        <location line="+370"/>
         <source>&amp;Undo</source>
         <translation type="unfinished"></translation>
     </message>
     <message>
-        <location line="+2"/>
+        <location line="+0"/>
         <source>&amp;Redo</source>
         <translation type="unfinished"></translation>
     </message>
     <message>
-        <location line="+24"/>
+        <location line="-343"/>
         <source>Normally Open Contact</source>
         <translation type="unfinished"></translation>
     </message>
@@ -634,6 +634,17 @@ Ladder and instruction-list editor for VPC, Vigor, CPM1 and PL110.</source>
     <message>
         <location line="+4"/>
         <source>Rung %1, row %2, column %3</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <location line="+37"/>
+        <source>&amp;Redo %1</source>
+        <extracomment>%1 is the step&apos;s label, e.g. &quot;Insert rung&quot;</extracomment>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <location line="+0"/>
+        <source>&amp;Undo %1</source>
         <translation type="unfinished"></translation>
     </message>
     <message>

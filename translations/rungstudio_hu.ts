@@ -190,7 +190,7 @@ Kilépési kód: 0 nincs hiba, 1 a programban hiba van, 2 használati vagy I/O h
 <context>
     <name>rung::app::MainWindow</name>
     <message>
-        <location filename="../app/gui/main_window.cpp" line="+140"/>
+        <location filename="../app/gui/main_window.cpp" line="+141"/>
         <source>Problems</source>
         <translation>Problémák</translation>
     </message>
@@ -310,17 +310,17 @@ Kilépési kód: 0 nincs hiba, 1 a programban hiba van, 2 használati vagy I/O h
         <translation>&amp;Szerkesztés</translation>
     </message>
     <message>
-        <location line="+1"/>
+        <location line="+370"/>
         <source>&amp;Undo</source>
         <translation>&amp;Visszavonás</translation>
     </message>
     <message>
-        <location line="+2"/>
+        <location line="+0"/>
         <source>&amp;Redo</source>
         <translation>&amp;Mégis</translation>
     </message>
     <message>
-        <location line="+24"/>
+        <location line="-343"/>
         <source>Normally Open Contact</source>
         <translation>Záró érintkező</translation>
     </message>
@@ -648,6 +648,17 @@ Létradiagram- és utasításlista-szerkesztő VPC, Vigor, CPM1 és PL110 PLC-kh
         <location line="+4"/>
         <source>Rung %1, row %2, column %3</source>
         <translation>%1. létrafok, %2. sor, %3. oszlop</translation>
+    </message>
+    <message>
+        <location line="+37"/>
+        <source>&amp;Redo %1</source>
+        <extracomment>%1 is the step&apos;s label, e.g. &quot;Insert rung&quot;</extracomment>
+        <translation>&amp;Mégis: %1</translation>
+    </message>
+    <message>
+        <location line="+0"/>
+        <source>&amp;Undo %1</source>
+        <translation>&amp;Visszavonás: %1</translation>
     </message>
     <message>
         <location filename="../app/gui/main_window_files.cpp" line="-260"/>

@@ -190,7 +190,7 @@ Codice di uscita: 0 nessun errore, 1 il programma contiene errori, 2 errore di u
 <context>
     <name>rung::app::MainWindow</name>
     <message>
-        <location filename="../app/gui/main_window.cpp" line="+140"/>
+        <location filename="../app/gui/main_window.cpp" line="+141"/>
         <source>Problems</source>
         <translation>Problemi</translation>
     </message>
@@ -310,17 +310,17 @@ Codice di uscita: 0 nessun errore, 1 il programma contiene errori, 2 errore di u
         <translation>&amp;Modifica</translation>
     </message>
     <message>
-        <location line="+1"/>
+        <location line="+370"/>
         <source>&amp;Undo</source>
         <translation>&amp;Annulla</translation>
     </message>
     <message>
-        <location line="+2"/>
+        <location line="+0"/>
         <source>&amp;Redo</source>
         <translation>&amp;Ripeti</translation>
     </message>
     <message>
-        <location line="+24"/>
+        <location line="-343"/>
         <source>Normally Open Contact</source>
         <translation>Contatto NA</translation>
     </message>
@@ -648,6 +648,17 @@ Editor di schemi ladder e liste istruzioni per VPC, Vigor, CPM1 e PL110.</transl
         <location line="+4"/>
         <source>Rung %1, row %2, column %3</source>
         <translation>Segmento %1, riga %2, colonna %3</translation>
+    </message>
+    <message>
+        <location line="+37"/>
+        <source>&amp;Redo %1</source>
+        <extracomment>%1 is the step&apos;s label, e.g. &quot;Insert rung&quot;</extracomment>
+        <translation>&amp;Ripeti %1</translation>
+    </message>
+    <message>
+        <location line="+0"/>
+        <source>&amp;Undo %1</source>
+        <translation>&amp;Annulla %1</translation>
     </message>
     <message>
         <location filename="../app/gui/main_window_files.cpp" line="-260"/>
