@@ -271,7 +271,7 @@ Target makePl110Target() {
         {"StartPID", QT_TRANSLATE_NOOP("rung::model::Target", "Start a PID loop")},
         {"PID", QT_TRANSLATE_NOOP("rung::model::Target", "PID control loop")},
         {"SetOutPID", QT_TRANSLATE_NOOP("rung::model::Target", "Set the output of a PID loop")},
-        {"GENSET", QT_TRANSLATE_NOOP("rung::model::Target", "Generator set control")},
+        {"GENSET", QT_TRANSLATE_NOOP("rung::model::Target", "Setpoint generator with acceleration and deceleration ramps")},
         {"CONV", QT_TRANSLATE_NOOP("rung::model::Target", "Convert a value")},
         {"SetPAR", QT_TRANSLATE_NOOP("rung::model::Target", "Set a display parameter")},
         {"FormatPAR", QT_TRANSLATE_NOOP("rung::model::Target", "Format a display parameter")},

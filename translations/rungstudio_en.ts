@@ -2635,7 +2635,7 @@ Ladder and instruction-list editor for VPC, Vigor, CPM1 and PL110.</source>
     </message>
     <message>
         <location line="+1"/>
-        <source>Generator set control</source>
+        <source>Setpoint generator with acceleration and deceleration ramps</source>
         <translation type="unfinished"></translation>
     </message>
     <message>

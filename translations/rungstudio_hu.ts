@@ -2638,8 +2638,8 @@ Létradiagram- és utasításlista-szerkesztő VPC, Vigor, CPM1 és PL110 PLC-kh
     </message>
     <message>
         <location line="+1"/>
-        <source>Generator set control</source>
-        <translation>Áramfejlesztő aggregát vezérlése</translation>
+        <source>Setpoint generator with acceleration and deceleration ramps</source>
+        <translation>Alapjel-generátor gyorsító és lassító rámpával</translation>
     </message>
     <message>
         <location line="+1"/>

@@ -377,12 +377,12 @@ Codice di uscita: 0 nessun errore, 1 il programma contiene errori, 2 errore di u
     <message>
         <location line="+10"/>
         <source>%1 (%2): click the cells to place it</source>
-        <translation>%1 (%2): fare clic sulle celle per inserirlo</translation>
+        <translation>%1 (%2): fare clic sulle celle per posizionare l&apos;elemento</translation>
     </message>
     <message>
         <location line="+9"/>
         <source>%1: click a cell to place it; Esc or a right click ends</source>
-        <translation>%1: fare clic su una cella per inserirlo; Esc o un clic destro termina</translation>
+        <translation>%1: fare clic su una cella per posizionare l&apos;elemento; Esc o un clic destro per terminare</translation>
     </message>
     <message>
         <location line="+15"/>
@@ -2426,12 +2426,12 @@ Editor di schemi ladder e liste istruzioni per VPC, Vigor, CPM1 e PL110.</transl
     <message>
         <location line="+2"/>
         <source>EEPROM words</source>
-        <translation>parole EEPROM</translation>
+        <translation>word EEPROM</translation>
     </message>
     <message>
         <location line="+3"/>
         <source>MMC words</source>
-        <translation>parole MMC</translation>
+        <translation>word MMC</translation>
     </message>
     <message>
         <location line="+3"/>
@@ -2544,12 +2544,12 @@ Editor di schemi ladder e liste istruzioni per VPC, Vigor, CPM1 e PL110.</transl
     <message>
         <location line="+5"/>
         <source>Set a bit (0..15) of a word to 1</source>
-        <translation>Porta a 1 un bit (0..15) di una parola</translation>
+        <translation>Porta a 1 un bit (0..15) di una word</translation>
     </message>
     <message>
         <location line="+3"/>
         <source>Reset a bit (0..15) of a word to 0</source>
-        <translation>Porta a 0 un bit (0..15) di una parola</translation>
+        <translation>Porta a 0 un bit (0..15) di una word</translation>
     </message>
     <message>
         <location line="+6"/>
@@ -2584,12 +2584,12 @@ Editor di schemi ladder e liste istruzioni per VPC, Vigor, CPM1 e PL110.</transl
     <message>
         <location line="+4"/>
         <source>Move a value or a word to D</source>
-        <translation>Sposta un valore o una parola in D</translation>
+        <translation>Sposta un valore o una word in D</translation>
     </message>
     <message>
         <location line="+2"/>
         <source>Move n words from S (or the value S) to D</source>
-        <translation>Sposta n parole da S (o il valore S) a D</translation>
+        <translation>Sposta n word da S (o il valore S) a D</translation>
     </message>
     <message>
         <location line="+3"/>
@@ -2599,7 +2599,7 @@ Editor di schemi ladder e liste istruzioni per VPC, Vigor, CPM1 e PL110.</transl
     <message>
         <location line="+6"/>
         <source>Store a text string in words</source>
-        <translation>Memorizza una stringa di testo in parole</translation>
+        <translation>Memorizza una stringa di testo in word</translation>
     </message>
     <message>
         <location line="+2"/>
@@ -2648,8 +2648,8 @@ Editor di schemi ladder e liste istruzioni per VPC, Vigor, CPM1 e PL110.</transl
     </message>
     <message>
         <location line="+1"/>
-        <source>Generator set control</source>
-        <translation>Controllo del gruppo elettrogeno</translation>
+        <source>Setpoint generator with acceleration and deceleration ramps</source>
+        <translation>Generatore di setpoint con rampe di accelerazione e decelerazione</translation>
     </message>
     <message>
         <location line="+1"/>
@@ -2942,7 +2942,7 @@ Editor di schemi ladder e liste istruzioni per VPC, Vigor, CPM1 e PL110.</transl
     <message>
         <location line="+2"/>
         <source>Move n words from S to D</source>
-        <translation>Sposta n parole da S a D</translation>
+        <translation>Sposta n word da S a D</translation>
     </message>
     <message>
         <location line="+4"/>
@@ -3106,7 +3106,7 @@ Editor di schemi ladder e liste istruzioni per VPC, Vigor, CPM1 e PL110.</transl
     <message>
         <location line="+5"/>
         <source>%1 is not a word device or a constant</source>
-        <translation>%1 non è un operando a parola né una costante</translation>
+        <translation>%1 non è un operando word né una costante</translation>
     </message>
     <message>
         <location line="+20"/>
@@ -3116,12 +3116,12 @@ Editor di schemi ladder e liste istruzioni per VPC, Vigor, CPM1 e PL110.</transl
     <message>
         <location line="+3"/>
         <source>%1 is not a word device</source>
-        <translation>%1 non è un operando a parola</translation>
+        <translation>%1 non è un operando word</translation>
     </message>
     <message>
         <location line="+15"/>
         <source>%1 needs the next word too, which does not exist</source>
-        <translation>%1 richiede anche la parola successiva, che non esiste</translation>
+        <translation>%1 richiede anche la word successiva, che non esiste</translation>
     </message>
     <message>
         <location line="+24"/>
@@ -3166,7 +3166,7 @@ Editor di schemi ladder e liste istruzioni per VPC, Vigor, CPM1 e PL110.</transl
     <message>
         <location line="+17"/>
         <source>%1 needs a bit: a bit device, or a word and a bit number 0..15</source>
-        <translation>%1 richiede un bit: un operando a bit, o una parola e un numero di bit 0..15</translation>
+        <translation>%1 richiede un bit: un operando a bit, o una word e un numero di bit 0..15</translation>
     </message>
     <message>
         <location line="+27"/>
@@ -3176,7 +3176,7 @@ Editor di schemi ladder e liste istruzioni per VPC, Vigor, CPM1 e PL110.</transl
     <message>
         <location line="+14"/>
         <source>the block of %1 words runs past the end of its area</source>
-        <translation>il blocco di %1 parole va oltre la fine della sua area</translation>
+        <translation>il blocco di %1 word va oltre la fine della sua area</translation>
     </message>
     <message>
         <location line="+107"/>
