@@ -611,9 +611,10 @@ QAction *MainWindow::undoAction(bool redo) {
                            (!redo && (m_ilTimer.isActive() || model::hasErrors(m_listingErrors))));
     };
     update();
-    connect(stack, &QUndoStack::indexChanged, action, update);
-    connect(stack, &QUndoStack::cleanChanged, action, update);
-    connect(m_il, &editor::IlEditor::listingEdited, action, update);
+    // `this` as the context: ~MainWindow cuts these before the stack and the list go.
+    connect(stack, &QUndoStack::indexChanged, this, update);
+    connect(stack, &QUndoStack::cleanChanged, this, update);
+    connect(m_il, &editor::IlEditor::listingEdited, this, update);
     connect(action, &QAction::triggered, this, [this, redo, stack] {
         if (m_ilTimer.isActive())
             applyListing();
