@@ -60,6 +60,10 @@ struct ParseResult {
 ParseResult parseInstructionList(const Target &target, const QString &text,
                                  const ModelVariant *model = nullptr);
 
+// The target a listing names on its first line ("; target: vigor", also "// target: cpm1"),
+// empty when it names none; the command-line tool and the IDE both read it.
+QString declaredTarget(const QString &text);
+
 // Print in the target's canonical listing form, one instruction a line.
 struct PrintOptions {
     bool stepNumbers = false; // "0002 LD  p01<p00" as the VPC console shows

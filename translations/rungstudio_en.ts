@@ -83,7 +83,7 @@ Exit status: 0 no error, 1 the program has errors, 2 usage or I/O error.</source
         <translation type="unfinished"></translation>
     </message>
     <message>
-        <location filename="../app/cli/cli_common.cpp" line="+51"/>
+        <location filename="../app/cli/cli_common.cpp" line="+44"/>
         <source>%1 needs a value</source>
         <translation type="unfinished"></translation>
     </message>
@@ -596,7 +596,7 @@ Ladder and instruction-list editor for VPC, Vigor, CPM1 and PL110.</source>
     <message>
         <location line="+2"/>
         <location line="+51"/>
-        <location filename="../app/gui/main_window_files.cpp" line="+365"/>
+        <location filename="../app/gui/main_window_files.cpp" line="+369"/>
         <source>Untitled</source>
         <translation type="unfinished"></translation>
     </message>
@@ -648,7 +648,7 @@ Ladder and instruction-list editor for VPC, Vigor, CPM1 and PL110.</source>
         <translation type="unfinished"></translation>
     </message>
     <message>
-        <location filename="../app/gui/main_window_files.cpp" line="-260"/>
+        <location filename="../app/gui/main_window_files.cpp" line="-264"/>
         <source>Recover</source>
         <translation type="unfinished"></translation>
     </message>
@@ -663,36 +663,35 @@ Ladder and instruction-list editor for VPC, Vigor, CPM1 and PL110.</source>
         <translation type="unfinished"></translation>
     </message>
     <message>
-        <location line="+16"/>
+        <location line="+25"/>
         <source>Unknown target %1</source>
         <translation type="unfinished"></translation>
     </message>
     <message>
-        <location line="+3"/>
-        <location line="+129"/>
+        <location line="-9"/>
+        <location line="+136"/>
         <location filename="../app/gui/main_window_tools.cpp" line="+12"/>
         <location line="+9"/>
         <source>%1: %2</source>
         <translation type="unfinished"></translation>
     </message>
     <message>
-        <location line="-127"/>
+        <location line="-134"/>
         <source>%1 is larger than 64 MB</source>
         <translation type="unfinished"></translation>
     </message>
     <message>
-        <location line="+4"/>
-        <source>%1, line %2, column %3: %4</source>
-        <translation type="unfinished"></translation>
-    </message>
-    <message>
-        <location line="+7"/>
         <location filename="../app/gui/main_window_tools.cpp" line="+6"/>
         <source>%1, line %2: %3</source>
         <translation type="unfinished"></translation>
     </message>
     <message>
-        <location line="+17"/>
+        <location filename="../app/gui/main_window_files.cpp" line="+17"/>
+        <source>%1 has errors; the ladder follows once they are fixed</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <location line="+18"/>
         <source>Cannot save</source>
         <translation type="unfinished"></translation>
     </message>
@@ -1744,7 +1743,7 @@ Ladder and instruction-list editor for VPC, Vigor, CPM1 and PL110.</source>
 <context>
     <name>rung::model::InstructionList</name>
     <message>
-        <location filename="../model/il_parse.cpp" line="+120"/>
+        <location filename="../model/il_parse.cpp" line="+121"/>
         <source>Too many errors; the rest of the listing was not read</source>
         <translation type="unfinished"></translation>
     </message>

@@ -88,7 +88,7 @@ Kilépési kód: 0 nincs hiba, 1 a programban hiba van, 2 használati vagy I/O h
         <translation>ismeretlen parancs: %1</translation>
     </message>
     <message>
-        <location filename="../app/cli/cli_common.cpp" line="+51"/>
+        <location filename="../app/cli/cli_common.cpp" line="+44"/>
         <source>%1 needs a value</source>
         <translation>%1 után érték kell</translation>
     </message>
@@ -609,7 +609,7 @@ Létradiagram- és utasításlista-szerkesztő VPC, Vigor, CPM1 és PL110 PLC-kh
     <message>
         <location line="+2"/>
         <location line="+51"/>
-        <location filename="../app/gui/main_window_files.cpp" line="+365"/>
+        <location filename="../app/gui/main_window_files.cpp" line="+369"/>
         <source>Untitled</source>
         <translation>Névtelen</translation>
     </message>
@@ -661,7 +661,7 @@ Létradiagram- és utasításlista-szerkesztő VPC, Vigor, CPM1 és PL110 PLC-kh
         <translation>&amp;Visszavonás: %1</translation>
     </message>
     <message>
-        <location filename="../app/gui/main_window_files.cpp" line="-260"/>
+        <location filename="../app/gui/main_window_files.cpp" line="-264"/>
         <source>Recover</source>
         <translation>Helyreállítás</translation>
     </message>
@@ -676,36 +676,35 @@ Létradiagram- és utasításlista-szerkesztő VPC, Vigor, CPM1 és PL110 PLC-kh
         <translation>A fájl nem nyitható meg</translation>
     </message>
     <message>
-        <location line="+16"/>
+        <location line="+25"/>
         <source>Unknown target %1</source>
         <translation>Ismeretlen célrendszer: %1</translation>
     </message>
     <message>
-        <location line="+3"/>
-        <location line="+129"/>
+        <location line="-9"/>
+        <location line="+136"/>
         <location filename="../app/gui/main_window_tools.cpp" line="+12"/>
         <location line="+9"/>
         <source>%1: %2</source>
         <translation>%1: %2</translation>
     </message>
     <message>
-        <location line="-127"/>
+        <location line="-134"/>
         <source>%1 is larger than 64 MB</source>
         <translation>%1 nagyobb 64 MB-nál</translation>
     </message>
     <message>
-        <location line="+4"/>
-        <source>%1, line %2, column %3: %4</source>
-        <translation>%1, %2. sor, %3. oszlop: %4</translation>
-    </message>
-    <message>
-        <location line="+7"/>
         <location filename="../app/gui/main_window_tools.cpp" line="+6"/>
         <source>%1, line %2: %3</source>
         <translation>%1, %2. sor: %3</translation>
     </message>
     <message>
-        <location line="+17"/>
+        <location filename="../app/gui/main_window_files.cpp" line="+17"/>
+        <source>%1 has errors; the ladder follows once they are fixed</source>
+        <translation>%1 hibás; a létradiagram a hibák javítása után követi</translation>
+    </message>
+    <message>
+        <location line="+18"/>
         <source>Cannot save</source>
         <translation>A mentés nem sikerült</translation>
     </message>
@@ -1749,7 +1748,7 @@ Létradiagram- és utasításlista-szerkesztő VPC, Vigor, CPM1 és PL110 PLC-kh
 <context>
     <name>rung::model::InstructionList</name>
     <message>
-        <location filename="../model/il_parse.cpp" line="+120"/>
+        <location filename="../model/il_parse.cpp" line="+121"/>
         <source>Too many errors; the rest of the listing was not read</source>
         <translation>Túl sok hiba; a lista többi része nem lett beolvasva</translation>
     </message>

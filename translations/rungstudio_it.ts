@@ -88,7 +88,7 @@ Codice di uscita: 0 nessun errore, 1 il programma contiene errori, 2 errore di u
         <translation>comando sconosciuto: %1</translation>
     </message>
     <message>
-        <location filename="../app/cli/cli_common.cpp" line="+51"/>
+        <location filename="../app/cli/cli_common.cpp" line="+44"/>
         <source>%1 needs a value</source>
         <translation>%1 richiede un valore</translation>
     </message>
@@ -609,7 +609,7 @@ Editor di schemi ladder e liste istruzioni per VPC, Vigor, CPM1 e PL110.</transl
     <message>
         <location line="+2"/>
         <location line="+51"/>
-        <location filename="../app/gui/main_window_files.cpp" line="+365"/>
+        <location filename="../app/gui/main_window_files.cpp" line="+369"/>
         <source>Untitled</source>
         <translation>Senza titolo</translation>
     </message>
@@ -661,7 +661,7 @@ Editor di schemi ladder e liste istruzioni per VPC, Vigor, CPM1 e PL110.</transl
         <translation>&amp;Annulla %1</translation>
     </message>
     <message>
-        <location filename="../app/gui/main_window_files.cpp" line="-260"/>
+        <location filename="../app/gui/main_window_files.cpp" line="-264"/>
         <source>Recover</source>
         <translation>Ripristino</translation>
     </message>
@@ -676,36 +676,35 @@ Editor di schemi ladder e liste istruzioni per VPC, Vigor, CPM1 e PL110.</transl
         <translation>Impossibile aprire il file</translation>
     </message>
     <message>
-        <location line="+16"/>
+        <location line="+25"/>
         <source>Unknown target %1</source>
         <translation>Famiglia PLC sconosciuta: %1</translation>
     </message>
     <message>
-        <location line="+3"/>
-        <location line="+129"/>
+        <location line="-9"/>
+        <location line="+136"/>
         <location filename="../app/gui/main_window_tools.cpp" line="+12"/>
         <location line="+9"/>
         <source>%1: %2</source>
         <translation>%1: %2</translation>
     </message>
     <message>
-        <location line="-127"/>
+        <location line="-134"/>
         <source>%1 is larger than 64 MB</source>
         <translation>%1 supera i 64 MB</translation>
     </message>
     <message>
-        <location line="+4"/>
-        <source>%1, line %2, column %3: %4</source>
-        <translation>%1, riga %2, colonna %3: %4</translation>
-    </message>
-    <message>
-        <location line="+7"/>
         <location filename="../app/gui/main_window_tools.cpp" line="+6"/>
         <source>%1, line %2: %3</source>
         <translation>%1, riga %2: %3</translation>
     </message>
     <message>
-        <location line="+17"/>
+        <location filename="../app/gui/main_window_files.cpp" line="+17"/>
+        <source>%1 has errors; the ladder follows once they are fixed</source>
+        <translation>%1 contiene errori; lo schema ladder si aggiorna quando sono corretti</translation>
+    </message>
+    <message>
+        <location line="+18"/>
         <source>Cannot save</source>
         <translation>Impossibile salvare</translation>
     </message>
@@ -1757,7 +1756,7 @@ Editor di schemi ladder e liste istruzioni per VPC, Vigor, CPM1 e PL110.</transl
 <context>
     <name>rung::model::InstructionList</name>
     <message>
-        <location filename="../model/il_parse.cpp" line="+120"/>
+        <location filename="../model/il_parse.cpp" line="+121"/>
         <source>Too many errors; the rest of the listing was not read</source>
         <translation>Troppi errori; il resto della lista non è stato letto</translation>
     </message>

@@ -18,13 +18,6 @@ struct Tr {
 
 constexpr qint64 kMaxInputBytes = 64 * 1024 * 1024;
 
-QString targetFromFirstLine(const QString &text) {
-    static const QRegularExpression re(QStringLiteral("^\\s*(?:;|//)\\s*target\\s*:\\s*(\\w+)"),
-                                       QRegularExpression::CaseInsensitiveOption);
-    const auto m = re.match(text.section(QLatin1Char('\n'), 0, 0));
-    return m.hasMatch() ? m.captured(1) : QString();
-}
-
 QString targetFromLadder(const QString &text) {
     static const QRegularExpression re(QStringLiteral("^\\s*LADDER\\s+(\\w+)"));
     const auto m = re.match(text);
@@ -132,7 +125,7 @@ bool loadInput(const CommonOptions &options, Input *input, QString *error) {
         QString targetId = options.target;
         if (targetId.isEmpty())
             targetId = input->kind == InputKind::Ladder ? targetFromLadder(text)
-                                                        : targetFromFirstLine(text);
+                                                        : model::declaredTarget(text);
         if (targetId.isEmpty()) {
             *error =
                 Tr::tr("%1: which PLC? Give --target vpc|vigor|cpm1|pl110 or a \"; target: NAME\" "

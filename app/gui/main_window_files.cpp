@@ -146,29 +146,33 @@ bool MainWindow::openFile(const QString &path, const QString &targetId, bool qui
             return fail(error.message);
         project = *loaded;
     } else {
-        const model::Target *target =
-            model::Target::byId(targetId.isEmpty() ? m_document->target().id : targetId);
-        if (!target)
-            return fail(tr("Unknown target %1").arg(targetId));
+        // The target: as asked, else as the listing's first line names it, else the current.
         QFile file(path);
         if (!file.open(QIODevice::ReadOnly))
             return fail(tr("%1: %2").arg(path, file.errorString()));
         if (file.size() > 64 * 1024 * 1024)
             return fail(tr("%1 is larger than 64 MB").arg(path));
-        const model::ParseResult parsed =
-            model::parseInstructionList(*target, QString::fromUtf8(file.readAll()));
-        if (!parsed.ok())
-            return fail(tr("%1, line %2, column %3: %4")
-                            .arg(QFileInfo(path).fileName())
-                            .arg(parsed.errors.front().line)
-                            .arg(parsed.errors.front().column)
-                            .arg(parsed.errors.front().message));
-        const model::ToLadderResult ladder = model::listToLadder(parsed.list);
-        if (!ladder.ok())
-            return fail(tr("%1, line %2: %3")
-                            .arg(QFileInfo(path).fileName())
-                            .arg(ladder.problems.front().location.line)
-                            .arg(ladder.problems.front().message));
+        const QString text = QString::fromUtf8(file.readAll());
+        QString id = targetId.isEmpty() ? model::declaredTarget(text) : targetId;
+        if (id.isEmpty())
+            id = m_document->target().id;
+        const model::Target *target = model::Target::byId(id.toLower());
+        if (!target)
+            return fail(tr("Unknown target %1").arg(id));
+        const model::ParseResult parsed = model::parseInstructionList(*target, text);
+        const model::ToLadderResult ladder =
+            parsed.ok() ? model::listToLadder(parsed.list) : model::ToLadderResult{};
+        if (!parsed.ok() || !ladder.ok()) {
+            // A listing with errors opens as text, as typed, its errors marked in the list and
+            // the problems: the user fixes it here and the ladder follows.
+            newProject(*target, target->defaultModel().name);
+            m_il->setText(text);
+            applyListing();
+            statusBar()->showMessage(tr("%1 has errors; the ladder follows once they are fixed")
+                                         .arg(QFileInfo(path).fileName()),
+                                     10000);
+            return true;
+        }
         project.target = target;
         project.model = target->defaultModel().name;
         project.program = ladder.ladder;

@@ -195,6 +195,47 @@ TEST_F(Fixture, UnreadableFileLeavesTheProgramAlone) {
     EXPECT_EQ(listing(), QStringLiteral("LD X0\nOUT Y0\nEND\n"));
 }
 
+// A listing names its PLC on the first line, as the command-line tool reads it too.
+TEST_F(Fixture, AListingOpensForTheTargetItsFirstLineNames) {
+    QTemporaryDir dir;
+    const QString path = dir.filePath(QStringLiteral("keep.il"));
+    QFile f(path);
+    ASSERT_TRUE(f.open(QIODevice::WriteOnly));
+    f.write("; target: cpm1\nLD 000.00\nOR 010.00\nAND NOT 000.01\nOUT 010.00\nEND(01)\n");
+    f.close();
+    ASSERT_EQ(window.document()->target().family, model::Family::Vigor);
+    ASSERT_TRUE(window.openFile(path, QString(), true));
+    EXPECT_EQ(window.document()->target().family, model::Family::Cpm1);
+    EXPECT_EQ(window.document()->ladder().rungs.size(), 2u);
+}
+
+// A listing with errors is not refused: it opens as typed, its errors marked, so that the
+// user can fix it where it is shown; the ladder follows once it is valid.
+TEST_F(Fixture, AListingWithErrorsOpensAsTypedWithItsErrorsMarked) {
+    QTemporaryDir dir;
+    const QString path = dir.filePath(QStringLiteral("broken.il"));
+    const QString text = QStringLiteral("; target: vigor\nLD X0\nOUT Y0\nLD X8\nOUT Y1\nEND\n");
+    QFile f(path);
+    ASSERT_TRUE(f.open(QIODevice::WriteOnly));
+    f.write(text.toUtf8());
+    f.close();
+    ASSERT_TRUE(window.openFile(path, QString(), true));
+    EXPECT_EQ(window.ilEditor()->text(), text);
+    EXPECT_EQ(listing(), QStringLiteral("END\n")); // the ladder: a new, empty program
+    EXPECT_TRUE(ladder()->notice().contains(QStringLiteral("line 4")))
+        << ladder()->notice().toStdString();
+    editor::ProblemsView *problems = window.problemsView();
+    ASSERT_NE(problems->diagnosticAt(0), nullptr);
+    EXPECT_EQ(problems->diagnosticAt(0)->location.line, 4);
+    EXPECT_TRUE(problems->diagnosticAt(0)->message.contains(QStringLiteral("octal")));
+
+    window.ilEditor()->setSelection(3, 4, 3, 5);
+    window.ilEditor()->replaceSelectedText(QStringLiteral("7"));
+    window.applyListing();
+    EXPECT_TRUE(ladder()->notice().isEmpty());
+    EXPECT_EQ(listing(), QStringLiteral("; target: vigor\nLD X0\nOUT Y0\nLD X7\nOUT Y1\nEND\n"));
+}
+
 TEST_F(Fixture, RecoveryBringsBackUnsavedWork) {
     window.ilEditor()->setText(QStringLiteral("LD X5\nOUT Y5\nEND\n"));
     window.applyListing();
