@@ -3,6 +3,8 @@
 
 #include "app/gui/command_line.h"
 #include "app/gui/main_window.h"
+#include "editor/il_editor.h"
+#include "editor/problems_view.h"
 
 #include <QFile>
 #include <QTemporaryDir>
@@ -50,7 +52,13 @@ TEST(CommandLine, AnInstructionListOpensForTheTargetGiven) {
     EXPECT_EQ(window.document()->target().id, QStringLiteral("cpm1"));
     EXPECT_EQ(window.document()->listingText(), QStringLiteral("LD 000.01\nOUT 010.00\nEND(01)\n"));
     EXPECT_TRUE(window.document()->path().isEmpty()); // saving asks where: it is no project
-    // Without the target the default (Vigor) cannot read CPM1 addresses: the file stays shut.
+    // Without the target the default (Vigor) cannot read CPM1 addresses: the text opens as
+    // written, with the errors marked, and the ladder waits for a valid program.
     app::MainWindow other;
-    EXPECT_FALSE(other.openFile(path, QString(), true));
+    ASSERT_TRUE(other.openFile(path, QString(), true));
+    EXPECT_EQ(other.document()->target().id, QStringLiteral("vigor"));
+    EXPECT_EQ(other.ilEditor()->text(), QStringLiteral("LD 000.01\nOUT 010.00\nEND(01)\n"));
+    EXPECT_EQ(other.document()->listingText(), QStringLiteral("END\n"));
+    ASSERT_NE(other.problemsView()->diagnosticAt(0), nullptr);
+    EXPECT_EQ(other.problemsView()->diagnosticAt(0)->location.line, 1);
 }
