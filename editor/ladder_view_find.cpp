@@ -76,6 +76,8 @@ void LadderView::setNotice(const QString &text) {
     }
     m_notice->setText(text);
     m_notice->setVisible(!text.isEmpty());
+    if (text.isEmpty())
+        setViewportMargins(0, 0, 0, 0);
     placeNotice();
 }
 
@@ -86,10 +88,12 @@ QString LadderView::notice() const {
 void LadderView::placeNotice() {
     if (!m_notice || m_notice->isHidden())
         return;
-    // Across the top of the drawing, clear of the scroll bars.
+    // A band above the drawing, which moves down to make room: nothing hides under it.
+    const int height = m_notice->heightForWidth(viewport()->width());
+    if (viewportMargins().top() != height)
+        setViewportMargins(0, height, 0, 0);
     const QRect area = viewport()->geometry();
-    m_notice->setGeometry(area.left(), area.top(), area.width(),
-                          m_notice->heightForWidth(area.width()));
+    m_notice->setGeometry(area.left(), area.top() - height, area.width(), height);
     m_notice->raise();
 }
 

@@ -73,7 +73,8 @@ MainWindow::MainWindow(QWidget *parent)
     connect(m_ladder, &editor::LadderView::cursorMoved, this, [this](const editor::CellCursor &c) {
         updateStatus();
         const int line = m_document->firstLineOfRung(c.rung);
-        if (line > 0 && !m_il->hasFocus()) {
+        // Lines are counted in the canonical text; a text as typed has lines of its own.
+        if (line > 0 && !m_il->hasFocus() && m_il->text() == m_document->listingText()) {
             // The listing follows the ladder: its rung's lines come into view, selected.
             const int next = m_document->firstLineOfRung(c.rung + 1);
             m_il->setSelection(line - 1, 0, next > 0 ? next - 1 : m_il->lines() - 1, 0);
@@ -87,7 +88,8 @@ MainWindow::MainWindow(QWidget *parent)
         if (!m_il->hasFocus())
             return;
         const int rung = m_document->rungOfLine(line + 1);
-        if (rung >= 0 && rung != m_ladder->cursor().rung)
+        if (rung >= 0 && rung != m_ladder->cursor().rung &&
+            m_il->text() == m_document->listingText())
             m_ladder->setCursor({rung, 0, 0});
     });
     connect(m_problems, &editor::ProblemsView::locate, this, &MainWindow::locate);

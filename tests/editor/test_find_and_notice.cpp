@@ -70,8 +70,20 @@ TEST_F(FindFixture, WhileTheListHasErrorsTheLadderSaysItShowsTheLastValidProgram
     ASSERT_NE(label, nullptr);
     EXPECT_TRUE(label->isVisible());
     EXPECT_EQ(window.document()->ladder().rungs.size(), 4u); // the last valid ladder
+    // The notice is a band above the drawing, which moves down: no rung hides under it.
+    const QRect band = label->geometry();
+    EXPECT_GT(band.height(), 0);
+    EXPECT_LE(band.bottom(), view->viewport()->geometry().top());
+    EXPECT_EQ(band.width(), view->viewport()->width());
+    // The list as typed has lines of its own: moving on the ladder selects none of them.
+    window.ilEditor()->setSelection(0, 0, 0, 0);
+    view->setFocus();
+    view->setCursor({1, 0, 0});
+    EXPECT_FALSE(window.ilEditor()->hasSelectedText());
+
     window.ilEditor()->setText(QStringLiteral("LD X0\nOUT Y7\nEND\n"));
     window.applyListing();
     EXPECT_TRUE(view->notice().isEmpty());
     EXPECT_FALSE(label->isVisible());
+    EXPECT_EQ(view->viewport()->geometry().top(), view->contentsRect().top()); // band gone
 }
