@@ -272,8 +272,9 @@ void MainWindow::importListing() {
     const QString path =
         QFileDialog::getOpenFileName(this, tr("Import Instruction List"), QString(),
                                      tr("Instruction lists (*.il *.txt);;All files (*)"));
+    // Read for the PLC the list names on its first line, else for the project's.
     if (!path.isEmpty())
-        openFile(path, m_document->target().id);
+        openFile(path);
 }
 
 void MainWindow::exportListing() {
