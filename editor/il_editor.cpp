@@ -373,9 +373,23 @@ void IlEditor::setListing(const QString &text) {
     int line = 0;
     int index = 0;
     getCursorPosition(&line, &index);
-    setText(text);
+    if (this->text() == m_shown) {
+        setText(text); // the text we showed: its history need not be kept
+    } else {
+        // The user's own text goes: one step of the list's undo brings it back.
+        beginUndoAction();
+        selectAll();
+        replaceSelectedText(text);
+        endUndoAction();
+    }
+    m_shown = text;
     setCursorPosition(std::min(line, lines() - 1), index);
     m_settingText = false;
+}
+
+void IlEditor::dropHistory() {
+    m_shown = text();
+    SendScintilla(SCI_EMPTYUNDOBUFFER);
 }
 
 void IlEditor::showDiagnostics(const std::vector<model::Diagnostic> &diagnostics) {

@@ -42,8 +42,11 @@ public:
     explicit IlEditor(const model::Target &target, QWidget *parent = nullptr);
 
     void setTarget(const model::Target &target);
-    // Replaces the text without being taken for a user edit.
+    // Replaces the text without being taken for a user edit; text the user typed over what
+    // was shown stays in the list's undo.
     void setListing(const QString &text);
+    // Another program comes (new, open): what was typed before belongs to no undo any more.
+    void dropHistory();
     // Markers in the margin and annotations under the lines of the listing findings.
     void showDiagnostics(const std::vector<model::Diagnostic> &diagnostics);
     void setStepNumbers(const std::vector<int> &stepOfLine); // -1: no step on that line
@@ -72,6 +75,7 @@ private:
     const model::Target *m_target;
     IlLexer *m_lexer = nullptr;
     bool m_settingText = false;
+    QString m_shown; // the text setListing last showed
     std::function<QStringList()> m_devices;
 };
 

@@ -185,7 +185,7 @@ Exit status: 0 no error, 1 the program has errors, 2 usage or I/O error.</source
 <context>
     <name>rung::app::MainWindow</name>
     <message>
-        <location filename="../app/gui/main_window.cpp" line="+141"/>
+        <location filename="../app/gui/main_window.cpp" line="+143"/>
         <source>Problems</source>
         <translation type="unfinished"></translation>
     </message>
@@ -305,7 +305,7 @@ Exit status: 0 no error, 1 the program has errors, 2 usage or I/O error.</source
         <translation type="unfinished"></translation>
     </message>
     <message>
-        <location line="+370"/>
+        <location line="+374"/>
         <source>&amp;Undo</source>
         <translation type="unfinished"></translation>
     </message>
@@ -315,7 +315,7 @@ Exit status: 0 no error, 1 the program has errors, 2 usage or I/O error.</source
         <translation type="unfinished"></translation>
     </message>
     <message>
-        <location line="-343"/>
+        <location line="-347"/>
         <source>Normally Open Contact</source>
         <translation type="unfinished"></translation>
     </message>
@@ -589,14 +589,19 @@ Ladder and instruction-list editor for VPC, Vigor, CPM1 and PL110.</source>
         <translation type="unfinished"></translation>
     </message>
     <message>
-        <location line="+63"/>
+        <location line="+9"/>
+        <source>The list as typed had errors and now shows the ladder&apos;s program; Ctrl+Z in the list brings it back</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <location line="+58"/>
         <source>&lt;b&gt;%1&lt;/b&gt;&lt;br&gt;Target: %2, model %3&lt;br&gt;%4 rungs, %5 steps</source>
         <translation type="unfinished"></translation>
     </message>
     <message>
         <location line="+2"/>
         <location line="+51"/>
-        <location filename="../app/gui/main_window_files.cpp" line="+369"/>
+        <location filename="../app/gui/main_window_files.cpp" line="+374"/>
         <source>Untitled</source>
         <translation type="unfinished"></translation>
     </message>
@@ -648,7 +653,7 @@ Ladder and instruction-list editor for VPC, Vigor, CPM1 and PL110.</source>
         <translation type="unfinished"></translation>
     </message>
     <message>
-        <location filename="../app/gui/main_window_files.cpp" line="-264"/>
+        <location filename="../app/gui/main_window_files.cpp" line="-269"/>
         <source>Recover</source>
         <translation type="unfinished"></translation>
     </message>
@@ -658,7 +663,7 @@ Ladder and instruction-list editor for VPC, Vigor, CPM1 and PL110.</source>
         <translation type="unfinished"></translation>
     </message>
     <message>
-        <location line="+28"/>
+        <location line="+32"/>
         <source>Cannot open the file</source>
         <translation type="unfinished"></translation>
     </message>
@@ -669,14 +674,14 @@ Ladder and instruction-list editor for VPC, Vigor, CPM1 and PL110.</source>
     </message>
     <message>
         <location line="-9"/>
-        <location line="+136"/>
+        <location line="+137"/>
         <location filename="../app/gui/main_window_tools.cpp" line="+12"/>
         <location line="+9"/>
         <source>%1: %2</source>
         <translation type="unfinished"></translation>
     </message>
     <message>
-        <location line="-134"/>
+        <location line="-135"/>
         <source>%1 is larger than 64 MB</source>
         <translation type="unfinished"></translation>
     </message>
@@ -756,7 +761,7 @@ Ladder and instruction-list editor for VPC, Vigor, CPM1 and PL110.</source>
         <translation type="unfinished"></translation>
     </message>
     <message>
-        <location line="+7"/>
+        <location line="+8"/>
         <source>Export Instruction List</source>
         <translation type="unfinished"></translation>
     </message>

@@ -190,7 +190,7 @@ Kilépési kód: 0 nincs hiba, 1 a programban hiba van, 2 használati vagy I/O h
 <context>
     <name>rung::app::MainWindow</name>
     <message>
-        <location filename="../app/gui/main_window.cpp" line="+141"/>
+        <location filename="../app/gui/main_window.cpp" line="+143"/>
         <source>Problems</source>
         <translation>Problémák</translation>
     </message>
@@ -310,7 +310,7 @@ Kilépési kód: 0 nincs hiba, 1 a programban hiba van, 2 használati vagy I/O h
         <translation>&amp;Szerkesztés</translation>
     </message>
     <message>
-        <location line="+370"/>
+        <location line="+374"/>
         <source>&amp;Undo</source>
         <translation>&amp;Visszavonás</translation>
     </message>
@@ -320,7 +320,7 @@ Kilépési kód: 0 nincs hiba, 1 a programban hiba van, 2 használati vagy I/O h
         <translation>&amp;Mégis</translation>
     </message>
     <message>
-        <location line="-343"/>
+        <location line="-347"/>
         <source>Normally Open Contact</source>
         <translation>Záró érintkező</translation>
     </message>
@@ -602,14 +602,19 @@ Létradiagram- és utasításlista-szerkesztő VPC, Vigor, CPM1 és PL110 PLC-kh
         <translation>Utasításlista</translation>
     </message>
     <message>
-        <location line="+63"/>
+        <location line="+9"/>
+        <source>The list as typed had errors and now shows the ladder&apos;s program; Ctrl+Z in the list brings it back</source>
+        <translation>A begépelt lista hibás volt, most a létradiagram programját mutatja; a listában a Ctrl+Z visszahozza</translation>
+    </message>
+    <message>
+        <location line="+58"/>
         <source>&lt;b&gt;%1&lt;/b&gt;&lt;br&gt;Target: %2, model %3&lt;br&gt;%4 rungs, %5 steps</source>
         <translation>&lt;b&gt;%1&lt;/b&gt;&lt;br&gt;Célrendszer: %2, modell: %3&lt;br&gt;%4 létrafok, %5 lépés</translation>
     </message>
     <message>
         <location line="+2"/>
         <location line="+51"/>
-        <location filename="../app/gui/main_window_files.cpp" line="+369"/>
+        <location filename="../app/gui/main_window_files.cpp" line="+374"/>
         <source>Untitled</source>
         <translation>Névtelen</translation>
     </message>
@@ -661,7 +666,7 @@ Létradiagram- és utasításlista-szerkesztő VPC, Vigor, CPM1 és PL110 PLC-kh
         <translation>&amp;Visszavonás: %1</translation>
     </message>
     <message>
-        <location filename="../app/gui/main_window_files.cpp" line="-264"/>
+        <location filename="../app/gui/main_window_files.cpp" line="-269"/>
         <source>Recover</source>
         <translation>Helyreállítás</translation>
     </message>
@@ -671,7 +676,7 @@ Létradiagram- és utasításlista-szerkesztő VPC, Vigor, CPM1 és PL110 PLC-kh
         <translation>A Rung Studio legutóbb nem záródott be szabályosan. Helyreállítja a nem mentett programot?</translation>
     </message>
     <message>
-        <location line="+28"/>
+        <location line="+32"/>
         <source>Cannot open the file</source>
         <translation>A fájl nem nyitható meg</translation>
     </message>
@@ -682,14 +687,14 @@ Létradiagram- és utasításlista-szerkesztő VPC, Vigor, CPM1 és PL110 PLC-kh
     </message>
     <message>
         <location line="-9"/>
-        <location line="+136"/>
+        <location line="+137"/>
         <location filename="../app/gui/main_window_tools.cpp" line="+12"/>
         <location line="+9"/>
         <source>%1: %2</source>
         <translation>%1: %2</translation>
     </message>
     <message>
-        <location line="-134"/>
+        <location line="-135"/>
         <source>%1 is larger than 64 MB</source>
         <translation>%1 nagyobb 64 MB-nál</translation>
     </message>
@@ -769,7 +774,7 @@ Létradiagram- és utasításlista-szerkesztő VPC, Vigor, CPM1 és PL110 PLC-kh
         <translation>Utasításlisták (*.il *.txt);;Minden fájl (*)</translation>
     </message>
     <message>
-        <location line="+7"/>
+        <location line="+8"/>
         <source>Export Instruction List</source>
         <translation>Utasításlista exportálása</translation>
     </message>

@@ -190,7 +190,7 @@ Codice di uscita: 0 nessun errore, 1 il programma contiene errori, 2 errore di u
 <context>
     <name>rung::app::MainWindow</name>
     <message>
-        <location filename="../app/gui/main_window.cpp" line="+141"/>
+        <location filename="../app/gui/main_window.cpp" line="+143"/>
         <source>Problems</source>
         <translation>Problemi</translation>
     </message>
@@ -310,7 +310,7 @@ Codice di uscita: 0 nessun errore, 1 il programma contiene errori, 2 errore di u
         <translation>&amp;Modifica</translation>
     </message>
     <message>
-        <location line="+370"/>
+        <location line="+374"/>
         <source>&amp;Undo</source>
         <translation>&amp;Annulla</translation>
     </message>
@@ -320,7 +320,7 @@ Codice di uscita: 0 nessun errore, 1 il programma contiene errori, 2 errore di u
         <translation>&amp;Ripeti</translation>
     </message>
     <message>
-        <location line="-343"/>
+        <location line="-347"/>
         <source>Normally Open Contact</source>
         <translation>Contatto NA</translation>
     </message>
@@ -602,14 +602,19 @@ Editor di schemi ladder e liste istruzioni per VPC, Vigor, CPM1 e PL110.</transl
         <translation>Lista istruzioni</translation>
     </message>
     <message>
-        <location line="+63"/>
+        <location line="+9"/>
+        <source>The list as typed had errors and now shows the ladder&apos;s program; Ctrl+Z in the list brings it back</source>
+        <translation>La lista digitata conteneva errori e ora mostra il programma dello schema ladder; Ctrl+Z nella lista la ripristina</translation>
+    </message>
+    <message>
+        <location line="+58"/>
         <source>&lt;b&gt;%1&lt;/b&gt;&lt;br&gt;Target: %2, model %3&lt;br&gt;%4 rungs, %5 steps</source>
         <translation>&lt;b&gt;%1&lt;/b&gt;&lt;br&gt;Famiglia PLC: %2, modello %3&lt;br&gt;%4 segmenti, %5 passi</translation>
     </message>
     <message>
         <location line="+2"/>
         <location line="+51"/>
-        <location filename="../app/gui/main_window_files.cpp" line="+369"/>
+        <location filename="../app/gui/main_window_files.cpp" line="+374"/>
         <source>Untitled</source>
         <translation>Senza titolo</translation>
     </message>
@@ -661,7 +666,7 @@ Editor di schemi ladder e liste istruzioni per VPC, Vigor, CPM1 e PL110.</transl
         <translation>&amp;Annulla %1</translation>
     </message>
     <message>
-        <location filename="../app/gui/main_window_files.cpp" line="-264"/>
+        <location filename="../app/gui/main_window_files.cpp" line="-269"/>
         <source>Recover</source>
         <translation>Ripristino</translation>
     </message>
@@ -671,7 +676,7 @@ Editor di schemi ladder e liste istruzioni per VPC, Vigor, CPM1 e PL110.</transl
         <translation>Rung Studio non è stato chiuso correttamente l&apos;ultima volta. Ripristinare il programma non salvato?</translation>
     </message>
     <message>
-        <location line="+28"/>
+        <location line="+32"/>
         <source>Cannot open the file</source>
         <translation>Impossibile aprire il file</translation>
     </message>
@@ -682,14 +687,14 @@ Editor di schemi ladder e liste istruzioni per VPC, Vigor, CPM1 e PL110.</transl
     </message>
     <message>
         <location line="-9"/>
-        <location line="+136"/>
+        <location line="+137"/>
         <location filename="../app/gui/main_window_tools.cpp" line="+12"/>
         <location line="+9"/>
         <source>%1: %2</source>
         <translation>%1: %2</translation>
     </message>
     <message>
-        <location line="-134"/>
+        <location line="-135"/>
         <source>%1 is larger than 64 MB</source>
         <translation>%1 supera i 64 MB</translation>
     </message>
@@ -769,7 +774,7 @@ Editor di schemi ladder e liste istruzioni per VPC, Vigor, CPM1 e PL110.</transl
         <translation>Liste istruzioni (*.il *.txt);;Tutti i file (*)</translation>
     </message>
     <message>
-        <location line="+7"/>
+        <location line="+8"/>
         <source>Export Instruction List</source>
         <translation>Esporta lista istruzioni</translation>
     </message>

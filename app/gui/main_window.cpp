@@ -466,6 +466,10 @@ void MainWindow::setSideBySide(bool sideBySide) {
 
 void MainWindow::refreshFromDocument() {
     if (!m_editingListing) {
+        if (model::hasErrors(m_listingErrors))
+            statusBar()->showMessage(tr("The list as typed had errors and now shows the "
+                                        "ladder's program; Ctrl+Z in the list brings it back"),
+                                     10000);
         m_il->setListing(m_document->listingText());
         m_listingErrors.clear();
     }

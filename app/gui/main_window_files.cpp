@@ -122,11 +122,15 @@ void MainWindow::showProject(const model::Project &project, const QString &path)
     // The editor gets the target's lexer before the text arrives, so the text is styled
     // once, as it is shown; Document::setProject emits programChanged, which refreshes.
     m_il->setTarget(*project.target);
+    m_il->dropHistory();
+    m_listingErrors.clear();
     m_document->setProject(project, path);
 }
 
 void MainWindow::newProject(const model::Target &target, const QString &modelName) {
     m_il->setTarget(target);
+    m_il->dropHistory();
+    m_listingErrors.clear();
     m_document->reset(target, modelName);
 }
 

@@ -8,6 +8,7 @@
 #include <QClipboard>
 #include <QLineEdit>
 #include <QSignalSpy>
+#include <QStatusBar>
 #include <QTemporaryDir>
 #include <QTest>
 #include <QTreeWidget>
@@ -234,6 +235,25 @@ TEST_F(Fixture, AListingWithErrorsOpensAsTypedWithItsErrorsMarked) {
     window.applyListing();
     EXPECT_TRUE(ladder()->notice().isEmpty());
     EXPECT_EQ(listing(), QStringLiteral("; target: vigor\nLD X0\nOUT Y0\nLD X7\nOUT Y1\nEND\n"));
+}
+
+// An edit on the ladder while the list holds text with errors shows the ladder's program in
+// the list; what was typed is one Ctrl+Z away in the list, and the status bar says so.
+TEST_F(Fixture, TypedTextWithErrorsGivesWayToALadderEditButStaysInTheListsUndo) {
+    window.ilEditor()->setText(QStringLiteral("LD X0\nOUT Y0\nEND\n"));
+    window.applyListing();
+    const QString typed = QStringLiteral("LD X0\nOUT Y0\nLD X9\nEND\n");
+    window.ilEditor()->setText(typed);
+    window.applyListing();
+    ASSERT_EQ(window.ilEditor()->text(), typed);
+    ladder()->setFocus();
+    ladder()->setCursor({0, 0, 1});
+    typeIntoCell(Qt::Key_F5, "X1");
+    EXPECT_EQ(listing(), QStringLiteral("LD X0\nAND X1\nOUT Y0\nEND\n"));
+    EXPECT_EQ(window.ilEditor()->text(), listing());
+    EXPECT_TRUE(window.statusBar()->currentMessage().contains(QStringLiteral("Ctrl+Z")));
+    window.ilEditor()->undo();
+    EXPECT_EQ(window.ilEditor()->text(), typed);
 }
 
 TEST_F(Fixture, RecoveryBringsBackUnsavedWork) {
