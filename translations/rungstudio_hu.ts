@@ -992,7 +992,7 @@ Létradiagram- és utasításlista-szerkesztő VPC, Vigor, CPM1 és PL110 PLC-kh
     <message>
         <location line="+0"/>
         <source>box</source>
-        <translation>doboz</translation>
+        <translation>funkcióblokk</translation>
     </message>
     <message>
         <location line="+12"/>
@@ -1106,7 +1106,7 @@ Létradiagram- és utasításlista-szerkesztő VPC, Vigor, CPM1 és PL110 PLC-kh
     <message>
         <location line="+4"/>
         <source>Contacts go in the grid; the right-hand column holds coils and boxes</source>
-        <translation>Az érintkezők a rácsba kerülnek; a jobb oldali oszlopban tekercsek és dobozok állnak</translation>
+        <translation>Az érintkezők a rácsba kerülnek; a jobb oldali oszlopban tekercsek és funkcióblokkok állnak</translation>
     </message>
     <message>
         <location line="+24"/>
@@ -1737,7 +1737,7 @@ Létradiagram- és utasításlista-szerkesztő VPC, Vigor, CPM1 és PL110 PLC-kh
     <message>
         <location line="+135"/>
         <source>A box with several inputs must stand alone in its rung</source>
-        <translation>A több bemenetű doboznak egyedül kell állnia a létrafokán</translation>
+        <translation>A több bemenetű funkcióblokknak egyedül kell állnia a létrafokán</translation>
     </message>
     <message>
         <location line="+11"/>
@@ -1894,7 +1894,7 @@ Létradiagram- és utasításlista-szerkesztő VPC, Vigor, CPM1 és PL110 PLC-kh
     <message>
         <location line="+6"/>
         <source>(^) marks a further input of a box above it</source>
-        <translation>A (^) a fölötte álló doboz további bemenetét jelöli</translation>
+        <translation>A (^) a fölötte álló funkcióblokk további bemenetét jelöli</translation>
     </message>
     <message>
         <location line="+10"/>
@@ -2017,7 +2017,7 @@ Létradiagram- és utasításlista-szerkesztő VPC, Vigor, CPM1 és PL110 PLC-kh
     <message>
         <location line="+21"/>
         <source>%1.outputs: &quot;%2&quot; takes up to %3 input rows, one box per rung</source>
-        <translation>%1.outputs: &quot;%2&quot; legfeljebb %3 bemeneti sort fogad, létrafokonként egy dobozt</translation>
+        <translation>%1.outputs: &quot;%2&quot; legfeljebb %3 bemeneti sort fogad, létrafokonként egy funkcióblokkot</translation>
     </message>
     <message>
         <location line="+9"/>

@@ -994,7 +994,7 @@ Editor di schemi ladder e liste istruzioni per VPC, Vigor, CPM1 e PL110.</transl
     <message>
         <location line="+0"/>
         <source>box</source>
-        <translation>box</translation>
+        <translation>blocco funzione</translation>
     </message>
     <message>
         <location line="+12"/>
@@ -1109,7 +1109,7 @@ Editor di schemi ladder e liste istruzioni per VPC, Vigor, CPM1 e PL110.</transl
     <message>
         <location line="+4"/>
         <source>Contacts go in the grid; the right-hand column holds coils and boxes</source>
-        <translation>I contatti vanno nella griglia; la colonna di destra contiene bobine e box</translation>
+        <translation>I contatti vanno nella griglia; la colonna di destra contiene bobine e blocchi funzione</translation>
     </message>
     <message>
         <location line="+24"/>
@@ -2012,7 +2012,7 @@ Editor di schemi ladder e liste istruzioni per VPC, Vigor, CPM1 e PL110.</transl
     <message>
         <location line="+14"/>
         <source>%1: %2 is expected</source>
-        <translation>%1: è atteso %2</translation>
+        <translation>%1: il valore deve essere %2</translation>
     </message>
     <message>
         <location line="+100"/>
