@@ -2691,7 +2691,7 @@ Létradiagram- és utasításlista-szerkesztő VPC, Vigor, CPM1 és PL110 PLC-kh
     <message>
         <location line="+2"/>
         <source>latched auxiliary relays</source>
-        <translation>tárolt segédrelék</translation>
+        <translation>remanens segédrelék</translation>
     </message>
     <message>
         <location line="+3"/>
@@ -2706,12 +2706,12 @@ Létradiagram- és utasításlista-szerkesztő VPC, Vigor, CPM1 és PL110 PLC-kh
     <message>
         <location line="+2"/>
         <source>latched step relays</source>
-        <translation>tárolt lépésrelék</translation>
+        <translation>remanens lépésrelék</translation>
     </message>
     <message>
         <location line="+5"/>
         <source>latched counters</source>
-        <translation>tárolt számlálók</translation>
+        <translation>remanens számlálók</translation>
     </message>
     <message>
         <location line="+3"/>
@@ -2726,7 +2726,7 @@ Létradiagram- és utasításlista-szerkesztő VPC, Vigor, CPM1 és PL110 PLC-kh
     <message>
         <location line="+2"/>
         <source>latched data registers</source>
-        <translation>tárolt adatregiszterek</translation>
+        <translation>remanens adatregiszterek</translation>
     </message>
     <message>
         <location line="+3"/>
