@@ -185,7 +185,7 @@ Exit status: 0 no error, 1 the program has errors, 2 usage or I/O error.</source
 <context>
     <name>rung::app::MainWindow</name>
     <message>
-        <location filename="../app/gui/main_window.cpp" line="+143"/>
+        <location filename="../app/gui/main_window.cpp" line="+135"/>
         <source>Problems</source>
         <translation type="unfinished"></translation>
     </message>
@@ -220,7 +220,7 @@ Exit status: 0 no error, 1 the program has errors, 2 usage or I/O error.</source
         <translation type="unfinished"></translation>
     </message>
     <message>
-        <location line="+33"/>
+        <location filename="../app/gui/main_window_actions.cpp" line="+26"/>
         <source>&amp;File</source>
         <translation type="unfinished"></translation>
     </message>
@@ -305,7 +305,7 @@ Exit status: 0 no error, 1 the program has errors, 2 usage or I/O error.</source
         <translation type="unfinished"></translation>
     </message>
     <message>
-        <location line="+374"/>
+        <location line="+205"/>
         <source>&amp;Undo</source>
         <translation type="unfinished"></translation>
     </message>
@@ -315,7 +315,7 @@ Exit status: 0 no error, 1 the program has errors, 2 usage or I/O error.</source
         <translation type="unfinished"></translation>
     </message>
     <message>
-        <location line="-347"/>
+        <location line="-178"/>
         <source>Normally Open Contact</source>
         <translation type="unfinished"></translation>
     </message>
@@ -569,7 +569,7 @@ Ladder and instruction-list editor for VPC, Vigor, CPM1 and PL110.</source>
         <translation type="unfinished"></translation>
     </message>
     <message>
-        <location line="+14"/>
+        <location filename="../app/gui/main_window.cpp" line="+39"/>
         <source>Rung Comment</source>
         <translation type="unfinished"></translation>
     </message>
@@ -642,7 +642,7 @@ Ladder and instruction-list editor for VPC, Vigor, CPM1 and PL110.</source>
         <translation type="unfinished"></translation>
     </message>
     <message>
-        <location line="+37"/>
+        <location filename="../app/gui/main_window_actions.cpp" line="+18"/>
         <source>&amp;Redo %1</source>
         <extracomment>%1 is the step&apos;s label, e.g. &quot;Insert rung&quot;</extracomment>
         <translation type="unfinished"></translation>
@@ -3075,7 +3075,7 @@ Ladder and instruction-list editor for VPC, Vigor, CPM1 and PL110.</source>
 <context>
     <name>rung::simulator::Compiler</name>
     <message>
-        <location filename="../simulator/compiler.cpp" line="+66"/>
+        <location filename="../simulator/compiler_detail.h" line="+65"/>
         <source>%1 is not simulated: it does nothing in the simulator</source>
         <translation type="unfinished"></translation>
     </message>
@@ -3120,7 +3120,7 @@ Ladder and instruction-list editor for VPC, Vigor, CPM1 and PL110.</source>
         <translation type="unfinished"></translation>
     </message>
     <message>
-        <location line="+38"/>
+        <location filename="../simulator/compile_steps.cpp" line="+17"/>
         <source>more than %1 open blocks</source>
         <translation type="unfinished"></translation>
     </message>
@@ -3170,7 +3170,7 @@ Ladder and instruction-list editor for VPC, Vigor, CPM1 and PL110.</source>
         <translation type="unfinished"></translation>
     </message>
     <message>
-        <location line="+107"/>
+        <location filename="../simulator/compiler.cpp" line="+91"/>
         <source>label %1 ends more than one jump</source>
         <translation type="unfinished"></translation>
     </message>
@@ -3215,7 +3215,7 @@ Ladder and instruction-list editor for VPC, Vigor, CPM1 and PL110.</source>
         <translation type="unfinished"></translation>
     </message>
     <message>
-        <location line="+103"/>
+        <location line="+106"/>
         <source>the program has no target</source>
         <translation type="unfinished"></translation>
     </message>
@@ -3223,7 +3223,7 @@ Ladder and instruction-list editor for VPC, Vigor, CPM1 and PL110.</source>
 <context>
     <name>rung::simulator::Engine</name>
     <message>
-        <location filename="../simulator/engine.cpp" line="+240"/>
+        <location filename="../simulator/engine_execute.cpp" line="+67"/>
         <source>set value %1 is not a BCD number; the instruction is skipped</source>
         <translation type="unfinished"></translation>
     </message>

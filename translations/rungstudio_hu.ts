@@ -190,7 +190,7 @@ Kilépési kód: 0 nincs hiba, 1 a programban hiba van, 2 használati vagy I/O h
 <context>
     <name>rung::app::MainWindow</name>
     <message>
-        <location filename="../app/gui/main_window.cpp" line="+143"/>
+        <location filename="../app/gui/main_window.cpp" line="+135"/>
         <source>Problems</source>
         <translation>Problémák</translation>
     </message>
@@ -225,7 +225,7 @@ Kilépési kód: 0 nincs hiba, 1 a programban hiba van, 2 használati vagy I/O h
         <translation>Figyelőlisták</translation>
     </message>
     <message>
-        <location line="+33"/>
+        <location filename="../app/gui/main_window_actions.cpp" line="+26"/>
         <source>&amp;File</source>
         <translation>&amp;Fájl</translation>
     </message>
@@ -310,7 +310,7 @@ Kilépési kód: 0 nincs hiba, 1 a programban hiba van, 2 használati vagy I/O h
         <translation>&amp;Szerkesztés</translation>
     </message>
     <message>
-        <location line="+374"/>
+        <location line="+205"/>
         <source>&amp;Undo</source>
         <translation>&amp;Visszavonás</translation>
     </message>
@@ -320,7 +320,7 @@ Kilépési kód: 0 nincs hiba, 1 a programban hiba van, 2 használati vagy I/O h
         <translation>&amp;Mégis</translation>
     </message>
     <message>
-        <location line="-347"/>
+        <location line="-178"/>
         <source>Normally Open Contact</source>
         <translation>Záró érintkező</translation>
     </message>
@@ -582,7 +582,7 @@ Ladder and instruction-list editor for VPC, Vigor, CPM1 and PL110.</source>
 Létradiagram- és utasításlista-szerkesztő VPC, Vigor, CPM1 és PL110 PLC-khez.</translation>
     </message>
     <message>
-        <location line="+14"/>
+        <location filename="../app/gui/main_window.cpp" line="+39"/>
         <source>Rung Comment</source>
         <translation>Létrafok megjegyzése</translation>
     </message>
@@ -655,7 +655,7 @@ Létradiagram- és utasításlista-szerkesztő VPC, Vigor, CPM1 és PL110 PLC-kh
         <translation>%1. létrafok, %2. sor, %3. oszlop</translation>
     </message>
     <message>
-        <location line="+37"/>
+        <location filename="../app/gui/main_window_actions.cpp" line="+18"/>
         <source>&amp;Redo %1</source>
         <extracomment>%1 is the step&apos;s label, e.g. &quot;Insert rung&quot;</extracomment>
         <translation>&amp;Mégis: %1</translation>
@@ -3078,7 +3078,7 @@ Létradiagram- és utasításlista-szerkesztő VPC, Vigor, CPM1 és PL110 PLC-kh
 <context>
     <name>rung::simulator::Compiler</name>
     <message>
-        <location filename="../simulator/compiler.cpp" line="+66"/>
+        <location filename="../simulator/compiler_detail.h" line="+65"/>
         <source>%1 is not simulated: it does nothing in the simulator</source>
         <translation>%1 nincs szimulálva: a szimulátorban nem csinál semmit</translation>
     </message>
@@ -3123,7 +3123,7 @@ Létradiagram- és utasításlista-szerkesztő VPC, Vigor, CPM1 és PL110 PLC-kh
         <translation>%1 előtt %2 nyitott blokk kell</translation>
     </message>
     <message>
-        <location line="+38"/>
+        <location filename="../simulator/compile_steps.cpp" line="+17"/>
         <source>more than %1 open blocks</source>
         <translation>több mint %1 nyitott blokk</translation>
     </message>
@@ -3173,7 +3173,7 @@ Létradiagram- és utasításlista-szerkesztő VPC, Vigor, CPM1 és PL110 PLC-kh
         <translation>a(z) %1 szavas blokk túlnyúlik a terület végén</translation>
     </message>
     <message>
-        <location line="+107"/>
+        <location filename="../simulator/compiler.cpp" line="+91"/>
         <source>label %1 ends more than one jump</source>
         <translation>a(z) %1 címke több ugrást is lezár</translation>
     </message>
@@ -3218,7 +3218,7 @@ Létradiagram- és utasításlista-szerkesztő VPC, Vigor, CPM1 és PL110 PLC-kh
         <translation>%1 nem operandus</translation>
     </message>
     <message>
-        <location line="+103"/>
+        <location line="+106"/>
         <source>the program has no target</source>
         <translation>a programnak nincs célrendszere</translation>
     </message>
@@ -3226,7 +3226,7 @@ Létradiagram- és utasításlista-szerkesztő VPC, Vigor, CPM1 és PL110 PLC-kh
 <context>
     <name>rung::simulator::Engine</name>
     <message>
-        <location filename="../simulator/engine.cpp" line="+240"/>
+        <location filename="../simulator/engine_execute.cpp" line="+67"/>
         <source>set value %1 is not a BCD number; the instruction is skipped</source>
         <translation>a(z) %1 beállított érték nem BCD szám; az utasítás kimarad</translation>
     </message>

@@ -190,7 +190,7 @@ Codice di uscita: 0 nessun errore, 1 il programma contiene errori, 2 errore di u
 <context>
     <name>rung::app::MainWindow</name>
     <message>
-        <location filename="../app/gui/main_window.cpp" line="+143"/>
+        <location filename="../app/gui/main_window.cpp" line="+135"/>
         <source>Problems</source>
         <translation>Problemi</translation>
     </message>
@@ -225,7 +225,7 @@ Codice di uscita: 0 nessun errore, 1 il programma contiene errori, 2 errore di u
         <translation>Liste di osservazione</translation>
     </message>
     <message>
-        <location line="+33"/>
+        <location filename="../app/gui/main_window_actions.cpp" line="+26"/>
         <source>&amp;File</source>
         <translation>&amp;File</translation>
     </message>
@@ -310,7 +310,7 @@ Codice di uscita: 0 nessun errore, 1 il programma contiene errori, 2 errore di u
         <translation>&amp;Modifica</translation>
     </message>
     <message>
-        <location line="+374"/>
+        <location line="+205"/>
         <source>&amp;Undo</source>
         <translation>&amp;Annulla</translation>
     </message>
@@ -320,7 +320,7 @@ Codice di uscita: 0 nessun errore, 1 il programma contiene errori, 2 errore di u
         <translation>&amp;Ripeti</translation>
     </message>
     <message>
-        <location line="-347"/>
+        <location line="-178"/>
         <source>Normally Open Contact</source>
         <translation>Contatto NA</translation>
     </message>
@@ -582,7 +582,7 @@ Ladder and instruction-list editor for VPC, Vigor, CPM1 and PL110.</source>
 Editor di schemi ladder e liste istruzioni per VPC, Vigor, CPM1 e PL110.</translation>
     </message>
     <message>
-        <location line="+14"/>
+        <location filename="../app/gui/main_window.cpp" line="+39"/>
         <source>Rung Comment</source>
         <translation>Commento del segmento</translation>
     </message>
@@ -655,7 +655,7 @@ Editor di schemi ladder e liste istruzioni per VPC, Vigor, CPM1 e PL110.</transl
         <translation>Segmento %1, riga %2, colonna %3</translation>
     </message>
     <message>
-        <location line="+37"/>
+        <location filename="../app/gui/main_window_actions.cpp" line="+18"/>
         <source>&amp;Redo %1</source>
         <extracomment>%1 is the step&apos;s label, e.g. &quot;Insert rung&quot;</extracomment>
         <translation>&amp;Ripeti %1</translation>
@@ -3088,7 +3088,7 @@ Editor di schemi ladder e liste istruzioni per VPC, Vigor, CPM1 e PL110.</transl
 <context>
     <name>rung::simulator::Compiler</name>
     <message>
-        <location filename="../simulator/compiler.cpp" line="+66"/>
+        <location filename="../simulator/compiler_detail.h" line="+65"/>
         <source>%1 is not simulated: it does nothing in the simulator</source>
         <translation>%1 non è simulato: nel simulatore non fa nulla</translation>
     </message>
@@ -3133,7 +3133,7 @@ Editor di schemi ladder e liste istruzioni per VPC, Vigor, CPM1 e PL110.</transl
         <translation>%1 richiede %2 blocchi aperti prima di sé</translation>
     </message>
     <message>
-        <location line="+38"/>
+        <location filename="../simulator/compile_steps.cpp" line="+17"/>
         <source>more than %1 open blocks</source>
         <translation>più di %1 blocchi aperti</translation>
     </message>
@@ -3183,7 +3183,7 @@ Editor di schemi ladder e liste istruzioni per VPC, Vigor, CPM1 e PL110.</transl
         <translation>il blocco di %1 word va oltre la fine della sua area</translation>
     </message>
     <message>
-        <location line="+107"/>
+        <location filename="../simulator/compiler.cpp" line="+91"/>
         <source>label %1 ends more than one jump</source>
         <translation>l&apos;etichetta %1 chiude più di un salto</translation>
     </message>
@@ -3228,7 +3228,7 @@ Editor di schemi ladder e liste istruzioni per VPC, Vigor, CPM1 e PL110.</transl
         <translation>%1 non è un operando</translation>
     </message>
     <message>
-        <location line="+103"/>
+        <location line="+106"/>
         <source>the program has no target</source>
         <translation>il programma non ha una famiglia PLC</translation>
     </message>
@@ -3236,7 +3236,7 @@ Editor di schemi ladder e liste istruzioni per VPC, Vigor, CPM1 e PL110.</transl
 <context>
     <name>rung::simulator::Engine</name>
     <message>
-        <location filename="../simulator/engine.cpp" line="+240"/>
+        <location filename="../simulator/engine_execute.cpp" line="+67"/>
         <source>set value %1 is not a BCD number; the instruction is skipped</source>
         <translation>il valore di preset %1 non è un numero BCD; l&apos;istruzione viene saltata</translation>
     </message>

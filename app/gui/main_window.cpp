@@ -4,30 +4,22 @@
 #include "editor/ladder_view.h"
 #include "editor/listing_lines_command.h"
 #include "editor/problems_view.h"
-#include "editor/tool_icons.h"
 #include "editor/watch_list_view.h"
 
 #include <QAction>
-#include <QActionGroup>
 #include <QApplication>
 #include <QCloseEvent>
 #include <QDockWidget>
 #include <QFile>
-#include <QFileDialog>
-#include <QFormLayout>
 #include <QHeaderView>
 #include <QInputDialog>
-#include <QKeyEvent>
 #include <QLabel>
-#include <QMenuBar>
-#include <QMessageBox>
 #include <QSettings>
 #include <QSplitter>
 #include <QStatusBar>
 #include <QTabWidget>
 #include <QTableWidget>
 #include <QTimer>
-#include <QToolBar>
 #include <QVBoxLayout>
 
 namespace rung::app {
@@ -192,241 +184,6 @@ void MainWindow::buildDocks() {
         }
         m_document->setSymbols(symbols);
     });
-}
-
-void MainWindow::buildActions() {
-    QMenu *file = menuBar()->addMenu(tr("&File"));
-    QToolBar *bar = addToolBar(tr("Main"));
-    bar->setObjectName(QStringLiteral("mainToolBar"));
-    bar->setIconSize(QSize(24, 24));
-    bar->setToolButtonStyle(Qt::ToolButtonIconOnly); // the names and keys are in the tooltips
-    QAction *newAction = file->addAction(editor::toolIcon(editor::ToolIcon::NewFile),
-                                         tr("&New Project..."), this, &MainWindow::fileNew);
-    newAction->setShortcut(QKeySequence::New);
-    QAction *open = file->addAction(editor::toolIcon(editor::ToolIcon::OpenFile), tr("&Open..."),
-                                    this, &MainWindow::fileOpen);
-    open->setShortcut(QKeySequence::Open);
-    m_recentMenu = file->addMenu(tr("Open &Recent"));
-    m_examplesMenu = file->addMenu(tr("E&xamples"));
-    QAction *save = file->addAction(editor::toolIcon(editor::ToolIcon::SaveFile), tr("&Save"), this,
-                                    &MainWindow::fileSave);
-    save->setShortcut(QKeySequence::Save);
-    file->addAction(tr("Save &As..."), this, &MainWindow::fileSaveAs)
-        ->setShortcut(QKeySequence::SaveAs);
-    file->addSeparator();
-    file->addAction(tr("&Import Instruction List..."), this, &MainWindow::importListing);
-    file->addAction(tr("&Export Instruction List..."), this, &MainWindow::exportListing);
-    QMenu *exportMenu = file->addMenu(tr("Export &Ladder"));
-    exportMenu->addAction(tr("As &PDF..."), this, [this] { exportImage(QStringLiteral("pdf")); });
-    exportMenu->addAction(tr("As &SVG..."), this, [this] { exportImage(QStringLiteral("svg")); });
-    exportMenu->addAction(tr("As P&NG..."), this, [this] { exportImage(QStringLiteral("png")); });
-    file->addAction(tr("Print Pre&view..."), this, &MainWindow::printPreview)
-        ->setShortcut(QKeySequence::Print);
-    file->addSeparator();
-    file->addAction(tr("&Quit"), this, &QWidget::close)->setShortcut(QKeySequence::Quit);
-    bar->addAction(newAction);
-    bar->addAction(open);
-    bar->addAction(save);
-    for (QAction *a : {newAction, open, save})
-        a->setToolTip(QStringLiteral("%1 (%2)").arg(
-            a->text().remove(QLatin1Char('&')).remove(QStringLiteral("...")),
-            a->shortcut().toString(QKeySequence::NativeText)));
-    bar->addSeparator();
-
-    QMenu *edit = menuBar()->addMenu(tr("&Edit"));
-    QAction *undo = undoAction(false);
-    undo->setShortcut(QKeySequence::Undo);
-    QAction *redo = undoAction(true);
-    redo->setShortcuts({QKeySequence::Redo, QKeySequence(Qt::CTRL | Qt::Key_Y)});
-    undo->setIcon(editor::toolIcon(editor::ToolIcon::Undo));
-    redo->setIcon(editor::toolIcon(editor::ToolIcon::Redo));
-    edit->addAction(undo);
-    edit->addAction(redo);
-    bar->addAction(undo);
-    bar->addAction(redo);
-    bar->addSeparator();
-    edit->addSeparator();
-    // The palette: what F5..F9 do, as the vendor tools have it.
-    auto pressKey = [this](Qt::Key key, Qt::KeyboardModifiers mods = Qt::NoModifier) {
-        return [this, key, mods] {
-            m_ladder->setFocus();
-            QApplication::postEvent(m_ladder, new QKeyEvent(QEvent::KeyPress, key, mods));
-        };
-    };
-    struct Tool {
-        QString text;
-        editor::ToolIcon icon;
-        QKeySequence key;
-        std::function<void()> run;
-    };
-    const std::vector<Tool> tools = {
-        {tr("Normally Open Contact"), editor::ToolIcon::OpenContact, QKeySequence(Qt::Key_F5),
-         pressKey(Qt::Key_F5)},
-        {tr("Normally Closed Contact"), editor::ToolIcon::ClosedContact, QKeySequence(Qt::Key_F6),
-         pressKey(Qt::Key_F6)},
-        {tr("Parallel Contact"), editor::ToolIcon::ParallelContact,
-         QKeySequence(Qt::SHIFT | Qt::Key_F5), pressKey(Qt::Key_F5, Qt::ShiftModifier)},
-        {tr("Rising-Edge Contact"), editor::ToolIcon::RisingContact,
-         QKeySequence(Qt::SHIFT | Qt::Key_F7), pressKey(Qt::Key_F7, Qt::ShiftModifier)},
-        {tr("Falling-Edge Contact"), editor::ToolIcon::FallingContact,
-         QKeySequence(Qt::SHIFT | Qt::Key_F8), pressKey(Qt::Key_F8, Qt::ShiftModifier)},
-        {tr("Coil"), editor::ToolIcon::Coil, QKeySequence(Qt::Key_F7), pressKey(Qt::Key_F7)},
-        {tr("Instruction"), editor::ToolIcon::Instruction, QKeySequence(Qt::Key_F8),
-         pressKey(Qt::Key_F8)},
-        {tr("Horizontal Wire"), editor::ToolIcon::HorizontalWire, QKeySequence(Qt::Key_F9),
-         [this] { m_ladder->placeWire(); }},
-        {tr("Vertical Link"), editor::ToolIcon::VerticalLink, QKeySequence(Qt::SHIFT | Qt::Key_F9),
-         [this] { m_ladder->toggleLink(); }},
-    };
-    // The menu acts at the cursor, as the keys do. The toolbar's palette is a set of tools: pick
-    // one, then each click on a cell places its element there, until Esc, a right click or the
-    // select tool (CX-Programmer and drawing programs work this way).
-    auto *palette = new QActionGroup(this);
-    QAction *pointer = bar->addAction(editor::toolIcon(editor::ToolIcon::Pointer), tr("Select"));
-    pointer->setToolTip(tr("Select (Esc)"));
-    pointer->setCheckable(true);
-    pointer->setChecked(true);
-    palette->addAction(pointer);
-    connect(pointer, &QAction::triggered, this, [this] { m_ladder->armTool({}); });
-    for (const Tool &t : tools) {
-        QAction *a = edit->addAction(editor::toolIcon(t.icon), t.text, this, t.run);
-        a->setToolTip(
-            QStringLiteral("%1 (%2)").arg(t.text, t.key.toString(QKeySequence::NativeText)));
-        QAction *tool = bar->addAction(editor::toolIcon(t.icon), t.text);
-        tool->setToolTip(tr("%1 (%2): click the cells to place it")
-                             .arg(t.text, t.key.toString(QKeySequence::NativeText)));
-        tool->setCheckable(true);
-        tool->setData(t.key);
-        palette->addAction(tool);
-        connect(tool, &QAction::triggered, this, [this, key = t.key, text = t.text] {
-            m_ladder->armTool(key);
-            m_ladder->setFocus();
-            statusBar()->showMessage(
-                tr("%1: click a cell to place it; Esc or a right click ends").arg(text));
-        });
-    }
-    connect(m_ladder, &editor::LadderView::toolArmed, this,
-            [palette, pointer](const QKeySequence &key) {
-                if (key.isEmpty()) {
-                    pointer->setChecked(true);
-                    return;
-                }
-                for (QAction *a : palette->actions())
-                    if (a->data().value<QKeySequence>() == key)
-                        a->setChecked(true);
-            });
-    edit->addSeparator();
-    // Ctrl+X/C/V act on rungs in the ladder; the listing keeps its own text clipboard keys.
-    for (QAction *a : {edit->addAction(tr("Cu&t Rung"), this, [this] { copyRung(true); }),
-                       edit->addAction(tr("&Copy Rung"), this, [this] { copyRung(false); }),
-                       edit->addAction(tr("&Paste Rungs"), this, &MainWindow::pasteRungs)}) {
-        a->setShortcutContext(Qt::WidgetWithChildrenShortcut);
-        m_ladder->addAction(a);
-    }
-    edit->actions().at(edit->actions().size() - 3)->setShortcut(QKeySequence::Cut);
-    edit->actions().at(edit->actions().size() - 2)->setShortcut(QKeySequence::Copy);
-    edit->actions().at(edit->actions().size() - 1)->setShortcut(QKeySequence::Paste);
-    edit->addAction(tr("&Find Device..."), this, &MainWindow::findDeviceDialog)
-        ->setShortcut(QKeySequence(Qt::CTRL | Qt::Key_F));
-    edit->addAction(tr("Find &Next"), this, [this] { findDevice(m_findText, false); })
-        ->setShortcut(QKeySequence(Qt::Key_F3));
-    edit->addAction(tr("Find Pre&vious"), this, [this] { findDevice(m_findText, true); })
-        ->setShortcut(QKeySequence(Qt::SHIFT | Qt::Key_F3));
-    edit->addAction(tr("Replace &Device..."), this, &MainWindow::replaceDevice)
-        ->setShortcut(QKeySequence::Replace);
-    edit->addSeparator();
-    edit->addAction(tr("Import Symbols (CSV)..."), this, [this] {
-        const QString path = QFileDialog::getOpenFileName(this, tr("Import Symbols"), QString(),
-                                                          tr("CSV files (*.csv)"));
-        QString error;
-        if (!path.isEmpty() && !importSymbols(path, &error))
-            QMessageBox::critical(this, tr("Cannot import"), error);
-    });
-    edit->addAction(tr("Export Symbols (CSV)..."), this, &MainWindow::exportSymbols);
-    edit->addSeparator();
-    edit->addAction(tr("Add to &Watch List"), this,
-                    [this] { m_watch->addDevice(m_ladder->deviceAtCursor()); })
-        ->setShortcut(QKeySequence(Qt::CTRL | Qt::SHIFT | Qt::Key_W));
-    edit->addAction(tr("Rung Co&mment..."), this, &MainWindow::editRungComment)
-        ->setShortcut(QKeySequence(Qt::CTRL | Qt::SHIFT | Qt::Key_M));
-    edit->addAction(tr("Insert Rung"), this, [this] { m_ladder->insertRung(); });
-    edit->addAction(tr("Delete Rung"), this, [this] { m_ladder->deleteRung(); });
-    edit->addAction(tr("Insert Row"), this, [this] { m_ladder->insertRow(); });
-    edit->addAction(tr("Delete Row"), this, [this] { m_ladder->deleteRow(); });
-
-    QMenu *view = menuBar()->addMenu(tr("&View"));
-    QAction *side = view->addAction(tr("Ladder and List &Side by Side"));
-    side->setCheckable(true);
-    side->setChecked(QSettings().value(QStringLiteral("view/sideBySide"), false).toBool());
-    connect(side, &QAction::toggled, this, &MainWindow::setSideBySide);
-    QAction *names = view->addAction(tr("Show Symbol &Names"));
-    names->setCheckable(true);
-    names->setToolTip(tr("Names from the symbol table in place of the addresses"));
-    connect(names, &QAction::toggled, this, [this](bool on) {
-        m_ladder->setNamesFirst(on);
-        QSettings().setValue(QStringLiteral("view/namesFirst"), on);
-    });
-    names->setChecked(QSettings().value(QStringLiteral("view/namesFirst"), false).toBool());
-    QAction *fit = view->addAction(tr("&Fit Ladder to Width"));
-    fit->setCheckable(true);
-    fit->setShortcut(QKeySequence(Qt::CTRL | Qt::Key_0));
-    connect(fit, &QAction::toggled, m_ladder, &editor::LadderView::setFitWidth);
-    connect(m_ladder, &editor::LadderView::fitWidthChanged, this, [fit](bool on) {
-        fit->setChecked(on);
-        QSettings().setValue(QStringLiteral("view/fitWidth"), on);
-    });
-    fit->setChecked(QSettings().value(QStringLiteral("view/fitWidth"), true).toBool());
-    view->addAction(tr("Zoom &In"), this, [this] { m_ladder->setZoom(m_ladder->zoom() * 1.15); })
-        ->setShortcut(QKeySequence::ZoomIn);
-    view->addAction(tr("Zoom &Out"), this, [this] { m_ladder->setZoom(m_ladder->zoom() / 1.15); })
-        ->setShortcut(QKeySequence::ZoomOut);
-    view->addAction(tr("&Check Program"), this, [this] { refreshFromDocument(); })
-        ->setShortcut(Qt::Key_F4);
-
-    QMenu *language = menuBar()->addMenu(tr("&Language"));
-    auto *group = new QActionGroup(this);
-    const QString current = QSettings().value(QStringLiteral("ui/language")).toString();
-    for (const auto &[code, name] :
-         {std::pair{"en", "English"}, {"hu", "Magyar"}, {"it", "Italiano"}}) {
-        QAction *a = language->addAction(QString::fromUtf8(name));
-        a->setCheckable(true);
-        a->setChecked(current == QLatin1String(code) ||
-                      (current.isEmpty() && QLatin1String(code) == QLatin1String("en")));
-        group->addAction(a);
-        const QString c = QString::fromLatin1(code);
-        connect(a, &QAction::triggered, this, [this, c] {
-            QSettings().setValue(QStringLiteral("ui/language"), c);
-            // Window-modal, not a nested event loop: the work in the window goes on.
-            auto *box =
-                new QMessageBox(QMessageBox::Information, tr("Language"),
-                                tr("The new language applies when Rung Studio starts again."),
-                                QMessageBox::Ok, this);
-            box->setObjectName(QStringLiteral("languageNotice"));
-            box->setAttribute(Qt::WA_DeleteOnClose);
-            box->open();
-        });
-    }
-    QMenu *help = menuBar()->addMenu(tr("&Help"));
-    help->addAction(tr("&Keyboard..."), this, [this] {
-        QMessageBox::information(
-            this, tr("Keyboard"),
-            tr("F5 normally open contact, F6 normally closed contact, F7 coil, F8 instruction\n"
-               "Shift+F5 / Shift+F6 the same contacts in parallel with the row above\n"
-               "Shift+F7 / Shift+F8 rising / falling edge contact (Alt: in parallel)\n"
-               "F9 horizontal wire, Shift+F9 vertical link, Ctrl+F9 / Ctrl+F10 delete them\n"
-               "Type an instruction into the cell: LD X0, ANI X2, OUT Y1, TMR T0 K10\n"
-               "Insert: insert a cell, Ctrl+Insert: insert a row, Shift+Insert: insert a rung\n"
-               "Delete: clear, Ctrl+Delete: delete the row, Shift+Delete: delete the rung\n"
-               "Ctrl+Z / Ctrl+Y: undo / redo, Ctrl+wheel: zoom, F4: check the program"));
-    });
-    help->addAction(tr("&About Rung Studio"), this, [this] {
-        QMessageBox::about(
-            this, tr("About Rung Studio"),
-            tr("Rung Studio %1\nLadder and instruction-list editor for VPC, Vigor, CPM1 and PL110.")
-                .arg(QApplication::applicationVersion()));
-    });
-    rebuildRecentMenu();
-    rebuildExamplesMenu();
 }
 
 void MainWindow::editRungComment() {
@@ -596,44 +353,6 @@ void MainWindow::locate(const model::Diagnostic &d) {
             m_tabs->setCurrentWidget(m_il);
         m_il->goToLine(d.location.line);
     }
-}
-
-QAction *MainWindow::undoAction(bool redo) {
-    // As QUndoStack's own actions, but the list's pending edit (typed, not yet applied)
-    // becomes a step first: Undo then takes back what was just typed, and no step of the
-    // stack runs on a text the program has not caught up with.
-    QUndoStack *stack = m_document->undoStack();
-    auto *action = new QAction(this);
-    const auto label = [redo, stack] {
-        const QString what = redo ? stack->redoText() : stack->undoText();
-        if (what.isEmpty())
-            return redo ? tr("&Redo") : tr("&Undo");
-        //: %1 is the step's label, e.g. "Insert rung"
-        return redo ? tr("&Redo %1").arg(what) : tr("&Undo %1").arg(what);
-    };
-    const auto update = [this, action, label, redo, stack] {
-        action->setText(label());
-        action->setEnabled((redo ? stack->canRedo() : stack->canUndo()) ||
-                           (!redo && (m_ilTimer.isActive() || model::hasErrors(m_listingErrors))));
-    };
-    update();
-    // `this` as the context: ~MainWindow cuts these before the stack and the list go.
-    connect(stack, &QUndoStack::indexChanged, this, update);
-    connect(stack, &QUndoStack::cleanChanged, this, update);
-    connect(m_il, &editor::IlEditor::listingEdited, this, update);
-    connect(action, &QAction::triggered, this, [this, redo, stack] {
-        if (m_ilTimer.isActive())
-            applyListing();
-        // Text the program cannot follow (it has errors) is the list's own business: the
-        // stack's step would overwrite it with the last valid program's listing.
-        if (!redo && model::hasErrors(m_listingErrors) && m_il->isUndoAvailable()) {
-            m_il->undo();
-            applyListing();
-            return;
-        }
-        redo ? stack->redo() : stack->undo();
-    });
-    return action;
 }
 
 void MainWindow::applyFix(const model::Diagnostic &d) {

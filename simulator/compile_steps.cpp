@@ -1,0 +1,301 @@
+#include "compiler_detail.h"
+
+#include <algorithm>
+
+namespace rung::simulator::detail {
+
+void Compiler::compileContact(const model::Instruction &ins, Step &s) {
+    const model::InstructionSpec &spec = *ins.spec;
+    const int which = spec.op == Op::Load ? 0 : spec.op == Op::And ? 1 : 2;
+    const bool negated = spec.negated || spec.mode == model::ContactMode::Negated;
+    if (spec.op == Op::Load) {
+        if (m_rungStart) {
+            s.flags |= kRungStart;
+            m_depth = 0;
+            m_push = 0;
+        } else if (++m_depth > kMaxBlockDepth) {
+            error(ins, Tr::tr("more than %1 open blocks").arg(kMaxBlockDepth));
+            m_depth = kMaxBlockDepth;
+        }
+    }
+    m_rungStart = false;
+    m_program->maxBlockDepth = std::max(m_program->maxBlockDepth, m_depth);
+    if (negated)
+        s.flags |= kNegated;
+    if (spec.compare != model::CompareOp::None) {
+        s.code = static_cast<Code>(static_cast<int>(Code::LoadCompare) + which);
+        s.op = static_cast<std::uint8_t>(spec.compare);
+        s.x = sourceOf(ins, 0);
+        s.y = sourceOf(ins, 1);
+        return;
+    }
+    s.bit = bitOf(ins, 0);
+    if (spec.mode == model::ContactMode::Rising || spec.mode == model::ContactMode::Falling) {
+        s.code = static_cast<Code>(static_cast<int>(Code::LoadEdge) + which);
+        if (spec.mode == model::ContactMode::Falling)
+            s.flags |= kFalling;
+        s.slot = m_program->edgeSlots++;
+        return;
+    }
+    s.code = static_cast<Code>(static_cast<int>(Code::Load) + which);
+}
+
+// The timer/counter element and its set value: the first operand that names a timer/counter
+// area, and the operand after it (VPC keeps set values in memory: no operand).
+void Compiler::compileTimer(const model::Instruction &ins, Step &s) {
+    s.code = Code::Timer;
+    const model::Operand *t = operand(ins, 0);
+    if (!t)
+        return;
+    if (!isDevice(*t) || kindOf(*t) != AreaKind::Timer) {
+        error(ins, Tr::tr("%1 is not a timer").arg(describe(*t)));
+        return;
+    }
+    s.bit = m_layout->bit(t->address);
+    s.dest = m_layout->word(t->address);
+    s.slot = m_layout->elementState(t->address);
+    s.y.index = m_layout->setValueWord(t->address); // shows the set value in use
+    if (ins.operands.size() > 1) {
+        s.x = sourceOf(ins, 1);
+        if (m_sem.bcdSetValues && s.x.index >= 0)
+            s.flags |= kBcd;
+    } else {
+        s.x.index = s.y.index;
+    }
+    if (t->address.index < m_sem.downTimersBelow)
+        s.flags |= kDown;
+    double base = m_sem.timerBaseMs > 0 ? m_sem.timerBaseMs : m_target.defaultTimerBaseMs;
+    if (m_sem.fastTimerFunctionCode >= 0 && ins.spec->functionCode == m_sem.fastTimerFunctionCode)
+        base = m_sem.fastTimerBaseMs;
+    if (m_target.family == model::Family::Pl110) {
+        // TON / TOFF / TONR T PT [base]: the time base is the third operand (10, 100 or
+        // 1000 ms, seed 003 4.2.4); the current value lives in the T word so that
+        // MOV(Tx = #0) resets a TONR as the manual says.
+        s.code = Code::PlTimer;
+        s.op = static_cast<std::uint8_t>(
+            ins.spec->timerMode == model::TimerMode::OffDelay       ? PlTimerMode::OffDelay
+            : ins.spec->timerMode == model::TimerMode::Accumulating ? PlTimerMode::Accumulating
+                                                                    : PlTimerMode::OnDelay);
+        if (const model::Operand *b = ins.operands.size() > 2 ? &ins.operands[2] : nullptr) {
+            const qint64 v = b->kind == model::Operand::Kind::Constant ? b->constant.value : -1;
+            if (v != 10 && v != 100 && v != 1000) {
+                error(ins, Tr::tr("the time base of %1 must be 10, 100 or 1000 ms, not %2")
+                               .arg(ins.spec->mnemonic, describe(*b)));
+                return;
+            }
+            base = static_cast<double>(v);
+        }
+    }
+    s.count = std::max(1, static_cast<int>(base));
+    outputDone();
+}
+
+void Compiler::compileCounter(const model::Instruction &ins, Step &s) {
+    const bool upDown = ins.spec->op == Op::UpDownCounter;
+    s.code = upDown ? Code::UpDownCounter : Code::Counter;
+    if (upDown && m_target.family == model::Family::Pl110) {
+        s.code = Code::PlCounter;
+        if (ins.spec->counterMode == model::CounterMode::Down)
+            s.flags |= kDown;
+    }
+    const model::Operand *c = operand(ins, 0);
+    if (!c)
+        return;
+    if (!isDevice(*c) || kindOf(*c) != AreaKind::Counter) {
+        error(ins, Tr::tr("%1 is not a counter").arg(describe(*c)));
+        return;
+    }
+    s.bit = m_layout->bit(c->address);
+    s.dest = m_layout->word(c->address);
+    s.slot = m_layout->elementState(c->address);
+    s.width = static_cast<std::uint8_t>(m_layout->wordBits(c->address));
+    s.y.index = m_layout->setValueWord(c->address);
+    if (ins.operands.size() > 1) {
+        s.x = sourceOf(ins, 1);
+        if (m_sem.bcdSetValues && s.x.index >= 0)
+            s.flags |= kBcd;
+    } else {
+        s.x.index = s.y.index;
+    }
+    if (!upDown && c->address.index < m_sem.downCountersBelow)
+        s.flags |= kDown;
+    const int inputs = upDown ? 3 : std::max(1, ins.spec->inputs);
+    if (inputs == 1)
+        s.flags |= kOneInput;
+    popBlocks(ins, inputs - 1);
+    outputDone();
+}
+
+void Compiler::compileApply(const model::Instruction &ins, Step &s) {
+    using model::ApplyFunction;
+    switch (ins.spec->function) {
+    case ApplyFunction::Mov:
+        s.code = Code::Move;
+        s.x = sourceOf(ins, 0);
+        s.dest = destOf(ins, 1, false, &s.width);
+        break;
+    case ApplyFunction::Compare: {
+        s.code = Code::Compare;
+        s.x = sourceOf(ins, 0);
+        s.y = sourceOf(ins, 1);
+        const model::Operand *d = operand(ins, 2);
+        if (!d)
+            break;
+        s.slot = static_cast<int>(m_program->bitLists.size());
+        s.count = 3;
+        for (int k = 0; k < 3; ++k) {
+            model::Address a = d->address;
+            a.index += k;
+            const BitRef r = isDevice(*d) ? m_layout->bit(a) : BitRef{};
+            if (!r.valid()) {
+                error(ins, Tr::tr("%1 needs three bit devices from %2")
+                               .arg(ins.spec->mnemonic, describe(*d)));
+                break;
+            }
+            m_program->bitLists.push_back(r);
+        }
+        break;
+    }
+    case ApplyFunction::ZoneReset: {
+        s.code = Code::Reset;
+        const model::Operand *a = operand(ins, 0);
+        const model::Operand *b = operand(ins, 1);
+        if (!a || !b)
+            break;
+        if (!isDevice(*a) || !isDevice(*b) || a->address.area != b->address.area ||
+            b->address.index < a->address.index ||
+            b->address.index - a->address.index >= kMaxZoneElements) {
+            error(ins, Tr::tr("%1 needs two devices of one kind, the first not after the "
+                              "second")
+                           .arg(ins.spec->mnemonic));
+            break;
+        }
+        s.slot = static_cast<int>(m_program->resets.size());
+        for (model::Address x = a->address; x.index <= b->address.index; ++x.index)
+            m_program->resets.push_back(resetTargetOf(x));
+        s.count = static_cast<int>(m_program->resets.size()) - s.slot;
+        break;
+    }
+    case ApplyFunction::Add:
+    case ApplyFunction::Sub:
+    case ApplyFunction::Mul:
+    case ApplyFunction::Div:
+        s.code = ins.spec->function == ApplyFunction::Add   ? Code::Add
+                 : ins.spec->function == ApplyFunction::Sub ? Code::Sub
+                 : ins.spec->function == ApplyFunction::Mul ? Code::Mul
+                                                            : Code::Div;
+        s.x = sourceOf(ins, 0);
+        s.y = sourceOf(ins, 1);
+        s.dest = destOf(ins, 2, false, &s.width);
+        if (s.code == Code::Mul || s.code == Code::Div)
+            s.slot = s.width >= 32 && s.code == Code::Mul ? -1 : nextWord(ins, 2);
+        break;
+    case ApplyFunction::Inc:
+    case ApplyFunction::Dec:
+        s.code = ins.spec->function == ApplyFunction::Inc ? Code::Inc : Code::Dec;
+        s.dest = destOf(ins, 0, false, &s.width);
+        break;
+    case ApplyFunction::Math: {
+        // FM S1 OP S2 D (the operator is kept as text by the parser)
+        s.code = Code::Math;
+        s.x = sourceOf(ins, 0);
+        const model::Operand *op = operand(ins, 1);
+        s.y = sourceOf(ins, 2);
+        s.dest = destOf(ins, 3, false, &s.width);
+        static const std::pair<const char *, MathOp> ops[] = {
+            {"+", MathOp::Add}, {"-", MathOp::Sub},  {"*", MathOp::Mul},
+            {"/", MathOp::Div}, {"|", MathOp::Or},   {"&", MathOp::And},
+            {"^", MathOp::Xor}, {"<<", MathOp::Shl}, {">>", MathOp::Shr}};
+        bool found = false;
+        for (const auto &[text, value] : ops)
+            if (op && op->text.trimmed() == QLatin1String(text)) {
+                s.op = static_cast<std::uint8_t>(value);
+                found = true;
+            }
+        if (op && !found)
+            error(ins, Tr::tr("unknown operator %1 (use + - * / | & ^ << >>)").arg(op->text));
+        break;
+    }
+    case ApplyFunction::SetBit:
+    case ApplyFunction::ResetBit: {
+        // SBIT / RBIT: a bit address, or a word and the bit number 0..15
+        BitRef r;
+        const model::Operand *o = operand(ins, 0);
+        if (o && isDevice(*o) && ins.operands.size() > 1 &&
+            ins.operands[1].kind == model::Operand::Kind::Constant) {
+            model::Address a = o->address;
+            a.bit = static_cast<int>(ins.operands[1].constant.value);
+            r = a.bit >= 0 && a.bit < 16 ? m_layout->bit(a) : BitRef{};
+        } else if (o && isDevice(*o)) {
+            r = m_layout->bit(o->address);
+        }
+        if (o && !r.valid()) {
+            error(ins, Tr::tr("%1 needs a bit: a bit device, or a word and a bit number 0..15")
+                           .arg(ins.spec->mnemonic));
+            break;
+        }
+        if (ins.spec->function == ApplyFunction::SetBit) {
+            s.code = Code::Set;
+            s.bit = r;
+        } else {
+            s.code = Code::Reset;
+            s.slot = static_cast<int>(m_program->resets.size());
+            s.count = 1;
+            ResetTarget t;
+            t.bit = r;
+            m_program->resets.push_back(t);
+        }
+        break;
+    }
+    case ApplyFunction::BlockMove: {
+        // BLKMOV S D n: n words from S (or the constant S n times) to D
+        s.code = Code::BlockMove;
+        s.x = sourceOf(ins, 0);
+        s.dest = destOf(ins, 1, false, &s.width);
+        const model::Operand *n = operand(ins, 2);
+        if (!n || m_failed)
+            break;
+        if (n->kind != model::Operand::Kind::Constant || n->constant.value < 1 ||
+            n->constant.value > kMaxZoneElements) {
+            error(ins, Tr::tr("%1 needs a count from 1 to %2")
+                           .arg(ins.spec->mnemonic)
+                           .arg(kMaxZoneElements));
+            break;
+        }
+        s.count = static_cast<int>(n->constant.value);
+        // Both blocks must lie inside their areas.
+        auto fits = [&](const model::Operand &o) {
+            model::Address last = o.address;
+            last.index += s.count - 1;
+            return m_layout->word(last) == m_layout->word(o.address) + s.count - 1 &&
+                   m_layout->word(last) >= 0;
+        };
+        if (!fits(ins.operands[1]) || (s.x.index >= 0 && !fits(ins.operands[0])))
+            error(ins, Tr::tr("the block of %1 words runs past the end of its area").arg(s.count));
+        break;
+    }
+    case ApplyFunction::IndirectMove: {
+        // MOVIND S D INDEX: the area from D on is a vector; element INDEX (0-based) := S.
+        s.code = Code::IndirectMove;
+        s.x = sourceOf(ins, 0);
+        s.dest = destOf(ins, 1, false, &s.width);
+        s.y = sourceOf(ins, 2);
+        if (m_failed)
+            break;
+        // How many words the vector has: from D to the end of D's area (a bit area read
+        // as words has one word per 16 bits).
+        const model::Address base = ins.operands[1].address;
+        const model::Area &area = m_target.area(base.area);
+        const int span = area.last - base.index;
+        s.count = 1 + (area.kind == AreaKind::Bit ? span / 16 : span);
+        break;
+    }
+    default:
+        notSimulated(ins);
+        s.code = Code::Nop;
+        break;
+    }
+    outputDone();
+}
+
+} // namespace rung::simulator::detail

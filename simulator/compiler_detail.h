@@ -1,0 +1,204 @@
+#pragma once
+
+// The compiler's working state, shared by compiler.cpp (the pass over the list, jumps and
+// system devices) and compile_steps.cpp (one instruction to one step). Not part of the
+// simulator's interface: include compiler.h instead.
+
+#include "compiler.h"
+#include "family.h"
+
+#include "model/address.h"
+
+#include <QCoreApplication>
+
+namespace rung::simulator::detail {
+
+using model::AreaKind;
+using model::Op;
+
+struct Tr {
+    Q_DECLARE_TR_FUNCTIONS(rung::simulator::Compiler)
+};
+
+// lupdate loses the scope of Tr::tr after some comparisons in inline member functions and
+// files those texts under a context "Tr" that the program never asks for; the explicit
+// context keeps them translatable.
+inline QString trCompiler(const char *text) {
+    return QCoreApplication::translate("rung::simulator::Compiler", text);
+}
+
+constexpr int kMaxBlockDepth = 63; // Engine keeps a 64-entry block stack
+constexpr int kMaxPushDepth = 32;
+constexpr int kMaxZoneElements = 65536;
+
+class Compiler {
+public:
+    explicit Compiler(const model::InstructionList &list)
+        : m_list(list)
+        , m_target(*list.target)
+        , m_sem(familySemantics(m_target.family)) {
+        auto program = std::make_shared<Program>();
+        program->layout = std::make_shared<MemoryLayout>(m_target);
+        m_program = program;
+        m_layout = program->layout.get();
+    }
+
+    CompileResult run();
+
+private:
+    void error(const model::Instruction &ins, const QString &message) {
+        model::Diagnostic d;
+        d.code = QStringLiteral("SIM001");
+        d.severity = model::Severity::Error;
+        d.location.line = ins.line;
+        d.location.column = ins.column;
+        d.message = message;
+        m_diagnostics.push_back(std::move(d));
+        m_failed = true;
+    }
+    void notSimulated(const model::Instruction &ins) {
+        model::Diagnostic d;
+        d.code = QStringLiteral("SIM100");
+        d.severity = model::Severity::Warning;
+        d.location.line = ins.line;
+        d.location.column = ins.column;
+        d.message = Tr::tr("%1 is not simulated: it does nothing in the simulator")
+                        .arg(ins.spec ? ins.spec->mnemonic : QString());
+        m_diagnostics.push_back(std::move(d));
+    }
+    QString describe(const model::Operand &o) const {
+        if (o.kind == model::Operand::Kind::Device)
+            return model::formatAddress(m_target, o.address);
+        if (o.kind == model::Operand::Kind::Constant)
+            return model::formatConstant(m_target, o.constant);
+        return o.text;
+    }
+
+    const model::Operand *operand(const model::Instruction &ins, std::size_t i) {
+        if (i < ins.operands.size())
+            return &ins.operands[i];
+        error(ins, trCompiler(QT_TRANSLATE_NOOP("rung::simulator::Compiler", "%1 needs operand %2"))
+                       .arg(ins.spec->mnemonic)
+                       .arg(i + 1));
+        return nullptr;
+    }
+    bool isDevice(const model::Operand &o) const {
+        return o.kind == model::Operand::Kind::Device && o.address.valid() &&
+               o.address.area < m_layout->areaCount();
+    }
+    AreaKind kindOf(const model::Operand &o) const { return m_layout->area(o.address.area).kind; }
+
+    BitRef bitOf(const model::Instruction &ins, std::size_t i) {
+        const model::Operand *o = operand(ins, i);
+        if (!o)
+            return {};
+        BitRef r = isDevice(*o) ? m_layout->bit(o->address) : BitRef{};
+        if (!r.valid())
+            error(ins, Tr::tr("%1 is not a bit device").arg(describe(*o)));
+        return r;
+    }
+    // A readable word: timers and counters give their current value.
+    WordOperand sourceOf(const model::Instruction &ins, std::size_t i) {
+        const model::Operand *o = operand(ins, i);
+        WordOperand w;
+        if (!o)
+            return w;
+        if (o->kind == model::Operand::Kind::Constant) {
+            w.constant = static_cast<std::int32_t>(o->constant.value);
+            if (o->constant.value != w.constant)
+                error(ins, Tr::tr("constant %1 is out of range").arg(describe(*o)));
+            return w;
+        }
+        w.index = isDevice(*o) ? m_layout->word(o->address) : -1;
+        if (w.index < 0)
+            error(ins, Tr::tr("%1 is not a word device or a constant").arg(describe(*o)));
+        return w;
+    }
+    // A writable word; setValue: timers/counters mean their set value (VPC transfers).
+    std::int32_t destOf(const model::Instruction &ins, std::size_t i, bool setValue,
+                        std::uint8_t *width) {
+        const model::Operand *o = operand(ins, i);
+        if (!o)
+            return -1;
+        int index = -1;
+        if (isDevice(*o)) {
+            const bool tc = kindOf(*o) == AreaKind::Timer || kindOf(*o) == AreaKind::Counter;
+            index =
+                tc && setValue ? m_layout->setValueWord(o->address) : m_layout->word(o->address);
+            if (index >= 0 && !m_target.area(o->address.area).writable && !tc)
+                index = -2;
+            *width = static_cast<std::uint8_t>(m_layout->wordBits(o->address));
+        }
+        if (index == -2)
+            error(ins,
+                  trCompiler(QT_TRANSLATE_NOOP("rung::simulator::Compiler", "%1 cannot be written"))
+                      .arg(describe(*o)));
+        else if (index < 0)
+            error(ins, trCompiler(QT_TRANSLATE_NOOP("rung::simulator::Compiler",
+                                                    "%1 is not a word device"))
+                           .arg(describe(*o)));
+        return index;
+    }
+    // The word after a destination (MUL high word, DIV remainder).
+    std::int32_t nextWord(const model::Instruction &ins, std::size_t i) {
+        const model::Operand *o = operand(ins, i);
+        if (!o || !isDevice(*o))
+            return -1;
+        model::Address a = o->address;
+        ++a.index;
+        const int w = m_layout->word(a);
+        if (w < 0)
+            error(ins,
+                  trCompiler(QT_TRANSLATE_NOOP("rung::simulator::Compiler",
+                                               "%1 needs the next word too, which does not exist"))
+                      .arg(describe(*o)));
+        return w;
+    }
+    ResetTarget resetTargetOf(const model::Address &a) {
+        ResetTarget t;
+        const AreaKind k = m_layout->area(a.area).kind;
+        if (k == AreaKind::Timer || k == AreaKind::Counter) {
+            t.bit = m_layout->bit(a);
+            t.word = m_layout->word(a);
+            t.state = m_layout->elementState(a);
+        } else if (k == AreaKind::Bit || a.bit >= 0) {
+            t.bit = m_layout->bit(a);
+        } else {
+            t.word = m_layout->word(a);
+        }
+        return t;
+    }
+
+    void outputDone() { m_rungStart = true; }
+    void popBlocks(const model::Instruction &ins, int n) {
+        if (m_depth < n) {
+            error(ins,
+                  Tr::tr("%1 needs %2 open blocks before it").arg(ins.spec->mnemonic).arg(n + 1));
+            m_depth = 0;
+            return;
+        }
+        m_depth -= n;
+    }
+
+    void compileContact(const model::Instruction &ins, Step &s);
+    void compileTimer(const model::Instruction &ins, Step &s);
+    void compileCounter(const model::Instruction &ins, Step &s);
+    void compileApply(const model::Instruction &ins, Step &s);
+    void compileSystem();
+    void resolveJumps();
+
+    const model::InstructionList &m_list;
+    const model::Target &m_target;
+    FamilySemantics m_sem;
+    std::shared_ptr<Program> m_program;
+    const MemoryLayout *m_layout = nullptr;
+    std::vector<model::Diagnostic> m_diagnostics;
+    bool m_failed = false;
+    bool m_rungStart = true;
+    int m_depth = 0;
+    int m_push = 0;
+    int m_stlArea = -1;
+    BitRef m_stlBit;
+};
+
+} // namespace rung::simulator::detail

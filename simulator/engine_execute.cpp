@@ -1,0 +1,543 @@
+#include "engine.h"
+
+#include <QCoreApplication>
+
+#include <algorithm>
+#include <cstring>
+
+// The interpreter of the compiled program: one pass over the flat step array per scan. It
+// lives apart from the engine's control and access so the hot loop reads as one piece.
+
+namespace rung::simulator {
+
+namespace {
+
+struct Tr {
+    Q_DECLARE_TR_FUNCTIONS(rung::simulator::Engine)
+};
+
+constexpr int kBlockStack = 64;
+constexpr int kPushStack = 33;
+constexpr std::int64_t kMaxTimerValue = 32767;
+
+bool compare(std::uint8_t op, std::int32_t a, std::int32_t b) {
+    switch (static_cast<model::CompareOp>(op)) {
+    case model::CompareOp::Eq:
+        return a == b;
+    case model::CompareOp::Ne:
+        return a != b;
+    case model::CompareOp::Lt:
+        return a < b;
+    case model::CompareOp::Le:
+        return a <= b;
+    case model::CompareOp::Gt:
+        return a > b;
+    case model::CompareOp::Ge:
+        return a >= b;
+    case model::CompareOp::None:
+        break;
+    }
+    return false;
+}
+
+// BCD digits -> number; -1 when a nibble is above 9 (or the value is negative).
+std::int32_t fromBcd(std::int32_t raw) {
+    if (raw < 0)
+        return -1;
+    std::int32_t result = 0;
+    std::int32_t scale = 1;
+    for (std::uint32_t v = static_cast<std::uint32_t>(raw); v != 0; v >>= 4) {
+        const std::uint32_t digit = v & 0xF;
+        if (digit > 9)
+            return -1;
+        result += static_cast<std::int32_t>(digit) * scale;
+        scale *= 10;
+    }
+    return result;
+}
+
+} // namespace
+
+std::int32_t Engine::readSet(const Step &s, std::size_t step) {
+    std::int32_t set = s.x.index >= 0 ? m_words[static_cast<std::size_t>(s.x.index)] : s.x.constant;
+    if (s.flags & kBcd) {
+        const std::int32_t decoded = fromBcd(set);
+        if (decoded < 0) {
+            runtimeError(step,
+                         Tr::tr("set value %1 is not a BCD number; the instruction is "
+                                "skipped")
+                             .arg(QString::number(static_cast<std::uint32_t>(set) & 0xFFFFu, 16)));
+            return -1;
+        }
+        set = decoded;
+    }
+    set = std::max<std::int32_t>(0, set);
+    if (s.y.index >= 0)
+        m_words[static_cast<std::size_t>(s.y.index)] = set;
+    return set;
+}
+
+template <bool Record> void Engine::execute() {
+    const Program &p = *m_program;
+    const Step *steps = p.steps.data();
+    const std::size_t n = p.steps.size();
+    std::int32_t *R = m_words.data();
+    std::int32_t *W = p.deferredBitWrites ? m_write.data() : R;
+    const std::int64_t period = m_stats.periodMs;
+    auto rd = [R](const BitRef &b) {
+        return (static_cast<std::uint32_t>(R[b.word]) & b.mask) != 0;
+    };
+    auto rdw = [R](const WordOperand &o) { return o.index >= 0 ? R[o.index] : o.constant; };
+    auto wrw = [&](std::int32_t index, std::int64_t v, int width) {
+        const auto i = static_cast<std::size_t>(index);
+        const auto value = static_cast<std::uint32_t>(wrapToWidth(v, width));
+        R[index] = static_cast<std::int32_t>((value & ~m_forceMask[i]) |
+                                             (m_forceValue[i] & m_forceMask[i]));
+    };
+
+    bool blocks[kBlockStack];
+    bool pushed[kPushStack];
+    int bsp = 0;
+    int psp = 0;
+    bool acc = false;
+    bool interlock = true;
+    bool stepActive = true;
+    bool gate = true;
+
+    for (std::size_t i = 0; i < n; ++i) {
+        const Step &s = steps[i];
+        switch (s.code) {
+        case Code::Load:
+        case Code::LoadEdge:
+        case Code::LoadCompare: {
+            bool v;
+            if (s.code == Code::Load) {
+                v = rd(s.bit) != ((s.flags & kNegated) != 0);
+            } else if (s.code == Code::LoadEdge) {
+                const bool now = rd(s.bit);
+                std::uint8_t &prev = m_edges[static_cast<std::size_t>(s.slot)];
+                v = (s.flags & kFalling) ? (prev && !now) : (now && !prev);
+                prev = now;
+            } else {
+                v = compare(s.op, rdw(s.x), rdw(s.y)) != ((s.flags & kNegated) != 0);
+            }
+            if (s.flags & kRungStart) {
+                bsp = 0;
+                psp = 0;
+            } else if (bsp < kBlockStack) {
+                blocks[bsp++] = acc;
+            }
+            acc = v && gate;
+            break;
+        }
+        case Code::And:
+            acc = acc && (rd(s.bit) != ((s.flags & kNegated) != 0));
+            break;
+        case Code::Or:
+            acc = acc || (rd(s.bit) != ((s.flags & kNegated) != 0) && gate);
+            break;
+        case Code::AndEdge:
+        case Code::OrEdge: {
+            const bool now = rd(s.bit);
+            std::uint8_t &prev = m_edges[static_cast<std::size_t>(s.slot)];
+            const bool v = (s.flags & kFalling) ? (prev && !now) : (now && !prev);
+            prev = now;
+            acc = s.code == Code::AndEdge ? acc && v : acc || (v && gate);
+            break;
+        }
+        case Code::AndCompare:
+        case Code::OrCompare: {
+            const bool v = compare(s.op, rdw(s.x), rdw(s.y)) != ((s.flags & kNegated) != 0);
+            acc = s.code == Code::AndCompare ? acc && v : acc || (v && gate);
+            break;
+        }
+        case Code::AndBlock:
+            if (bsp > 0)
+                acc = blocks[--bsp] && acc;
+            break;
+        case Code::OrBlock:
+            if (bsp > 0)
+                acc = blocks[--bsp] || acc;
+            break;
+        case Code::Push:
+            if (psp < kPushStack)
+                pushed[psp++] = acc;
+            break;
+        case Code::ReadStack:
+            if (psp > 0)
+                acc = pushed[psp - 1];
+            break;
+        case Code::Pop:
+            if (psp > 0)
+                acc = pushed[--psp];
+            break;
+        case Code::Invert:
+            acc = !acc;
+            break;
+        case Code::Out:
+            put(W, s.bit, acc != ((s.flags & kNegated) != 0));
+            break;
+        case Code::Set:
+            if (acc)
+                put(W, s.bit, true);
+            break;
+        case Code::SetStep:
+            if (acc) {
+                put(W, s.bit, true);
+                put(W, p.bitLists[static_cast<std::size_t>(s.slot)], false);
+            }
+            break;
+        case Code::Reset:
+            if (acc) {
+                for (int k = 0; k < s.count; ++k) {
+                    const ResetTarget &t = p.resets[static_cast<std::size_t>(s.slot + k)];
+                    if (t.bit.valid())
+                        put(W, t.bit, false);
+                    if (t.word >= 0)
+                        wrw(t.word, 0, 32);
+                    if (t.state >= 0) { // the input edge memory stays: no count on release
+                        ElementState &st = m_states[static_cast<std::size_t>(t.state)];
+                        st.accumulated = 0;
+                        st.running = 0;
+                    }
+                }
+            }
+            break;
+        case Code::Pulse: {
+            std::uint8_t &prev = m_edges[static_cast<std::size_t>(s.slot)];
+            const bool out = (s.flags & kFalling) ? (prev && !acc) : (acc && !prev);
+            prev = acc;
+            put(W, s.bit, out);
+            break;
+        }
+        case Code::Keep: {
+            const bool set = bsp > 0 ? blocks[--bsp] : false;
+            if (acc)
+                put(W, s.bit, false);
+            else if (set)
+                put(W, s.bit, true);
+            break;
+        }
+        case Code::Timer: {
+            ElementState &st = m_states[static_cast<std::size_t>(s.slot)];
+            const std::int32_t set = readSet(s, i);
+            if (set < 0)
+                break;
+            std::int64_t units = 0;
+            if (!acc) {
+                st.accumulated = 0;
+                st.running = 0;
+            } else {
+                if (st.running)
+                    st.accumulated = std::min<std::int64_t>(st.accumulated + period,
+                                                            std::int64_t{set} * s.count);
+                st.running = 1;
+                units = st.accumulated / s.count;
+            }
+            put(W, s.bit, acc && units >= set);
+            R[s.dest] = static_cast<std::int32_t>(
+                (s.flags & kDown) ? set - units : std::min<std::int64_t>(units, kMaxTimerValue));
+            break;
+        }
+        case Code::Counter: {
+            ElementState &st = m_states[static_cast<std::size_t>(s.slot)];
+            bool input = acc;
+            bool reset = false;
+            if (!(s.flags & kOneInput)) {
+                input = bsp > 0 ? blocks[--bsp] : false;
+                reset = acc;
+            }
+            const std::int32_t set = readSet(s, i);
+            if (set < 0)
+                break;
+            if (reset) {
+                st.accumulated = 0;
+            } else if (input && !st.previous && st.accumulated < set) {
+                ++st.accumulated;
+            }
+            st.previous = input;
+            put(W, s.bit, !reset && st.accumulated >= set);
+            R[s.dest] =
+                wrapToWidth((s.flags & kDown) ? set - st.accumulated : st.accumulated, s.width);
+            break;
+        }
+        case Code::UpDownCounter: {
+            ElementState &st = m_states[static_cast<std::size_t>(s.slot)];
+            const bool reset = acc;
+            const bool down = bsp > 0 ? blocks[--bsp] : false;
+            const bool up = bsp > 0 ? blocks[--bsp] : false;
+            const std::int32_t set = readSet(s, i);
+            if (set < 0)
+                break;
+            const bool upEdge = up && !(st.previous & 1);
+            const bool downEdge = down && !(st.previous & 2);
+            st.previous = static_cast<std::uint8_t>((up ? 1 : 0) | (down ? 2 : 0));
+            if (reset) {
+                st.accumulated = 0;
+                st.running = 0; // completion flag
+            } else if (upEdge != downEdge) {
+                if (upEdge) {
+                    st.running = st.accumulated >= set;
+                    st.accumulated = st.running ? 0 : st.accumulated + 1;
+                } else {
+                    st.running = st.accumulated <= 0;
+                    st.accumulated = st.running ? set : st.accumulated - 1;
+                }
+            }
+            put(W, s.bit, st.running != 0);
+            R[s.dest] = static_cast<std::int32_t>(st.accumulated);
+            break;
+        }
+        case Code::PlTimer: {
+            // PL110 (seed 003 4.2.4): the current value counts time-base units in the T word
+            // and saturates at 32767; st.accumulated holds the ms not yet a whole unit.
+            ElementState &st = m_states[static_cast<std::size_t>(s.slot)];
+            const std::int32_t set = readSet(s, i);
+            if (set < 0)
+                break;
+            std::int32_t &current = R[s.dest];
+            auto advance = [&] {
+                st.accumulated += period;
+                const std::int64_t units = std::int64_t{current} + st.accumulated / s.count;
+                st.accumulated %= s.count;
+                current = static_cast<std::int32_t>(std::min(units, kMaxTimerValue));
+            };
+            bool out = false;
+            switch (static_cast<PlTimerMode>(s.op)) {
+            case PlTimerMode::OnDelay:
+                if (acc) {
+                    if (st.running)
+                        advance();
+                } else {
+                    current = 0;
+                    st.accumulated = 0;
+                }
+                st.running = acc;
+                out = acc && current >= set;
+                break;
+            case PlTimerMode::Accumulating:
+                if (acc && st.running)
+                    advance();
+                st.running = acc;
+                out = current >= set;
+                break;
+            case PlTimerMode::OffDelay:
+                // running: 0 idle, 1 input ON, 2 timing after an ON -> OFF transition
+                if (acc) {
+                    current = 0;
+                    st.accumulated = 0;
+                    st.running = 1;
+                } else if (st.running == 1) {
+                    st.running = 2;
+                } else if (st.running == 2) {
+                    advance();
+                    if (current >= set) {
+                        current = std::min(current, set);
+                        st.running = 0;
+                    }
+                }
+                out = st.running != 0;
+                break;
+            }
+            put(W, s.bit, out);
+            break;
+        }
+        case Code::PlCounter: {
+            // PL110 MUP / MDOWN (seed 003 4.2.5): counts rising edges of UP and DOWN in the
+            // C word, which saturates at -32768..32767 (MDOWN stops at 0); RESET clears MUP
+            // and loads PV into MDOWN. MUP is ON at >= PV, MDOWN at 0.
+            ElementState &st = m_states[static_cast<std::size_t>(s.slot)];
+            const bool reset = acc;
+            const bool down = bsp > 0 ? blocks[--bsp] : false;
+            const bool up = bsp > 0 ? blocks[--bsp] : false;
+            const std::int32_t set = readSet(s, i);
+            if (set < 0)
+                break;
+            const bool upEdge = up && !(st.previous & 1);
+            const bool downEdge = down && !(st.previous & 2);
+            st.previous = static_cast<std::uint8_t>((up ? 1 : 0) | (down ? 2 : 0));
+            std::int32_t &current = R[s.dest];
+            const bool countsDown = (s.flags & kDown) != 0;
+            if (reset) {
+                current = countsDown ? set : 0;
+            } else {
+                if (upEdge && current < 32767)
+                    ++current;
+                if (downEdge && current > (countsDown ? 0 : -32768))
+                    --current;
+            }
+            put(W, s.bit, countsDown ? !reset && current == 0 : current >= set);
+            break;
+        }
+        case Code::Transfer:
+            if (acc != ((s.flags & kNegated) != 0)) {
+                const std::int64_t v = rdw(s.x);
+                const std::int64_t d = R[s.dest];
+                const auto kind = static_cast<TransferKind>(s.op);
+                wrw(s.dest,
+                    kind == TransferKind::Assign ? v
+                    : kind == TransferKind::Add  ? d + v
+                                                 : d - v,
+                    s.width);
+            }
+            break;
+        case Code::Move:
+            if (acc)
+                wrw(s.dest, rdw(s.x), s.width);
+            break;
+        case Code::Compare:
+            if (acc) {
+                const std::int32_t a = rdw(s.x);
+                const std::int32_t b = rdw(s.y);
+                const BitRef *bits = &p.bitLists[static_cast<std::size_t>(s.slot)];
+                put(W, bits[0], a > b);
+                put(W, bits[1], a == b);
+                put(W, bits[2], a < b);
+            }
+            break;
+        case Code::Add:
+            if (acc)
+                wrw(s.dest, std::int64_t{rdw(s.x)} + rdw(s.y), s.width);
+            break;
+        case Code::Sub:
+            if (acc)
+                wrw(s.dest, std::int64_t{rdw(s.x)} - rdw(s.y), s.width);
+            break;
+        case Code::Mul:
+            if (acc) {
+                const std::int64_t product = std::int64_t{rdw(s.x)} * rdw(s.y);
+                if (s.slot >= 0 && s.width < 32) {
+                    wrw(s.dest, product & 0xFFFF, 16);
+                    wrw(s.slot, product >> 16, 16);
+                } else {
+                    wrw(s.dest, product, 32);
+                    if (s.slot >= 0)
+                        wrw(s.slot, product >> 32, 32);
+                }
+            }
+            break;
+        case Code::Div:
+            if (acc) {
+                const std::int64_t a = rdw(s.x);
+                const std::int64_t b = rdw(s.y);
+                if (b == 0) {
+                    runtimeError(i, Tr::tr("division by zero; the destination is unchanged"));
+                    break;
+                }
+                wrw(s.dest, a / b, s.width);
+                if (s.slot >= 0)
+                    wrw(s.slot, a % b, s.width);
+            }
+            break;
+        case Code::Inc:
+        case Code::Dec:
+            if (acc)
+                wrw(s.dest, std::int64_t{R[s.dest]} + (s.code == Code::Inc ? 1 : -1), s.width);
+            break;
+        case Code::Math:
+            if (acc) {
+                const std::int64_t a = rdw(s.x);
+                const std::int64_t b = rdw(s.y);
+                std::int64_t r = 0;
+                switch (static_cast<MathOp>(s.op)) {
+                case MathOp::Add:
+                    r = a + b;
+                    break;
+                case MathOp::Sub:
+                    r = a - b;
+                    break;
+                case MathOp::Mul:
+                    r = a * b;
+                    break;
+                case MathOp::Div:
+                    r = b == 0 ? 0 : a / b;
+                    break;
+                case MathOp::Or:
+                    r = a | b;
+                    break;
+                case MathOp::And:
+                    r = a & b;
+                    break;
+                case MathOp::Xor:
+                    r = a ^ b;
+                    break;
+                case MathOp::Shl:
+                    r = b < 0 || b > 31
+                            ? 0
+                            : static_cast<std::int64_t>(static_cast<std::uint64_t>(a) << b);
+                    break;
+                case MathOp::Shr:
+                    r = b < 0 || b > 31
+                            ? 0
+                            : static_cast<std::int64_t>(static_cast<std::uint32_t>(a) >> b);
+                    break;
+                }
+                if (static_cast<MathOp>(s.op) == MathOp::Div && b == 0)
+                    runtimeError(i, Tr::tr("division by zero; the destination is unchanged"));
+                else
+                    wrw(s.dest, r, s.width);
+            }
+            break;
+        case Code::BlockMove:
+            if (acc) {
+                // memmove order: an overlapping block copies as if through a buffer
+                if (s.x.index >= 0 && s.x.index < s.dest) {
+                    for (int k = s.count - 1; k >= 0; --k)
+                        wrw(s.dest + k, R[s.x.index + k], s.width);
+                } else {
+                    for (int k = 0; k < s.count; ++k)
+                        wrw(s.dest + k, s.x.index >= 0 ? R[s.x.index + k] : s.x.constant, s.width);
+                }
+            }
+            break;
+        case Code::IndirectMove:
+            if (acc) {
+                const std::int32_t index = rdw(s.y);
+                if (index < 0 || index >= s.count) {
+                    runtimeError(i, Tr::tr("MOVIND index %1 is outside 0..%2; nothing is written")
+                                        .arg(index)
+                                        .arg(s.count - 1));
+                    break;
+                }
+                wrw(s.dest + index, rdw(s.x), s.width);
+            }
+            break;
+        case Code::Interlock:
+            interlock = acc;
+            gate = interlock && stepActive;
+            break;
+        case Code::InterlockClear:
+            interlock = true;
+            gate = stepActive;
+            break;
+        case Code::Jump:
+            if (!acc && s.slot > static_cast<int>(i))
+                i = static_cast<std::size_t>(s.slot); // the JPE/JME itself does nothing
+            break;
+        case Code::JumpEnd:
+        case Code::Nop:
+            break;
+        case Code::StepLadder:
+            stepActive = rd(s.bit);
+            gate = interlock && stepActive;
+            acc = gate;
+            break;
+        case Code::Return:
+            stepActive = true;
+            gate = interlock;
+            acc = gate;
+            break;
+        case Code::End:
+            if constexpr (Record)
+                m_flow[i] = acc;
+            return;
+        }
+        if constexpr (Record)
+            m_flow[i] = acc;
+    }
+}
+
+template void Engine::execute<false>();
+template void Engine::execute<true>();
+
+} // namespace rung::simulator
