@@ -20,26 +20,6 @@ double boxInset(const LadderMetrics &m) {
     return m.rowHeight * 0.27;
 }
 
-const char *compareText(model::CompareOp op) {
-    switch (op) {
-    case model::CompareOp::Eq:
-        return "=";
-    case model::CompareOp::Ne:
-        return "<>";
-    case model::CompareOp::Lt:
-        return "<";
-    case model::CompareOp::Le:
-        return "<=";
-    case model::CompareOp::Gt:
-        return ">";
-    case model::CompareOp::Ge:
-        return ">=";
-    case model::CompareOp::None:
-        break;
-    }
-    return "";
-}
-
 } // namespace
 
 double LadderMetrics::commentBlock(const model::Rung &rung) const {
@@ -145,7 +125,7 @@ void LadderPainter::paintContact(QPainter &p, const QRectF &cell, const model::C
         p.drawLine(QPointF(box.right(), y), QPointF(cell.right(), y));
         p.drawRect(box);
         p.setFont(m_small);
-        QString text = deviceLabel(c.operands[0]) + QLatin1String(compareText(c.compare)) +
+        QString text = deviceLabel(c.operands[0]) + QLatin1String(model::compareSymbol(c.compare)) +
                        deviceLabel(c.operands[1]);
         if (c.mode == model::ContactMode::Negated)
             text = QStringLiteral("NOT ") + text;

@@ -8,26 +8,6 @@ namespace rung::model {
 
 namespace {
 
-const char *compareSymbol(CompareOp op) {
-    switch (op) {
-    case CompareOp::Eq:
-        return "=";
-    case CompareOp::Ne:
-        return "<>";
-    case CompareOp::Lt:
-        return "<";
-    case CompareOp::Le:
-        return "<=";
-    case CompareOp::Gt:
-        return ">";
-    case CompareOp::Ge:
-        return ">=";
-    case CompareOp::None:
-        break;
-    }
-    return "";
-}
-
 bool mnemonicHasSymbol(const QString &mnemonic) {
     return mnemonic.contains(QLatin1Char('<')) || mnemonic.contains(QLatin1Char('>')) ||
            mnemonic.contains(QLatin1Char('='));

@@ -23,26 +23,6 @@ struct Tr {
     Q_DECLARE_TR_FUNCTIONS(rung::model::LadderText)
 };
 
-const char *symbolOf(CompareOp op) {
-    switch (op) {
-    case CompareOp::Eq:
-        return "=";
-    case CompareOp::Ne:
-        return "<>";
-    case CompareOp::Lt:
-        return "<";
-    case CompareOp::Le:
-        return "<=";
-    case CompareOp::Gt:
-        return ">";
-    case CompareOp::Ge:
-        return ">=";
-    case CompareOp::None:
-        break;
-    }
-    return "";
-}
-
 QString operandText(const Target &t, const Operand &o) {
     switch (o.kind) {
     case Operand::Kind::Device:
@@ -75,7 +55,7 @@ QString contactText(const Target &t, const Contact &c) {
     if (c.invert || c.operands.empty())
         return {};
     if (c.compare != CompareOp::None && c.operands.size() >= 2)
-        return operandText(t, c.operands[0]) + QLatin1String(symbolOf(c.compare)) +
+        return operandText(t, c.operands[0]) + QLatin1String(compareSymbol(c.compare)) +
                operandText(t, c.operands[1]);
     return operandText(t, c.operands[0]);
 }

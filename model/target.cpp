@@ -47,6 +47,26 @@ QString normalizeSpaces(const QString &text) {
 
 } // namespace
 
+const char *compareSymbol(CompareOp op) {
+    switch (op) {
+    case CompareOp::Eq:
+        return "=";
+    case CompareOp::Ne:
+        return "<>";
+    case CompareOp::Lt:
+        return "<";
+    case CompareOp::Le:
+        return "<=";
+    case CompareOp::Gt:
+        return ">";
+    case CompareOp::Ge:
+        return ">=";
+    case CompareOp::None:
+        break;
+    }
+    return "";
+}
+
 const Target &Target::get(Family family) {
     const Registry &r = registry();
     switch (family) {

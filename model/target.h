@@ -125,6 +125,9 @@ enum class ContactMode : std::uint8_t { Normal, Negated, Rising, Falling };
 
 enum class CompareOp : std::uint8_t { None, Eq, Ne, Lt, Le, Gt, Ge };
 
+// The operator as listings and the ladder write it: "=", "<>", "<", "<=", ">", ">=".
+const char *compareSymbol(CompareOp op);
+
 enum class TransferOp : std::uint8_t { None, Assign, Add, Subtract };
 
 // What may stand in an operand slot.
