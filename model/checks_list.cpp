@@ -7,6 +7,7 @@
 
 #include <algorithm>
 #include <map>
+#include <optional>
 
 // The listing checks (docs/diagnostics.md). Each finding remembers the instruction it is
 // about, so the ladder checks can show it on the rung that instruction came from.
@@ -36,8 +37,9 @@ bool isCoil(Op op) {
 
 class ListChecker {
 public:
-    ListChecker(const InstructionList &list, const CheckOptions &options)
-        : m_list(list)
+    ListChecker(const InstructionList &list, const CheckOptions &options, bool verifyMoves = true)
+        : m_verifyMoves(verifyMoves)
+        , m_list(list)
         , m_t(*list.target)
         , m_model(options.model ? options.model : &list.target->defaultModel())
         , m_formOnly(options.formOnly) {}
@@ -118,41 +120,171 @@ private:
         return {index, index + 1};
     }
 
-    // The canonical rewrite of the rung holding `index`, as a fix.
-    // The canonical rewrite of the rung holding `index`, as a fix. The whole listing is
-    // converted once; each rung's rewrite is cut from that.
-    void offerCanonical(Finding &f, int index) {
-        const auto [first, last] = spanOf(index);
-        const int line = at(first).line;
-        if (line <= 0)
-            return;
-        if (!m_canonical) {
-            m_canonical = true;
-            if (!m_ladder.ok())
-                return;
-            m_back = ladderToList(m_ladder.ladder);
+    // The rung holding `index` as the converter writes it back. A form is fuzzy only where
+    // its text differs from that: the canonical listing never gets a fuzzy-form warning.
+    struct RungForm {
+        int first = 0;
+        int last = 0;
+        bool known = false;     // the rung converts on its own
+        bool canonical = false; // its instructions are the converter's
+        std::vector<Instruction> rewrite;
+    };
+
+    const RungForm &rungForm(int index) {
+        const auto span = spanOf(index);
+        auto it = m_forms.find(span.first);
+        if (it != m_forms.end())
+            return it->second;
+        RungForm form;
+        form.first = span.first;
+        form.last = span.second;
+        InstructionList part;
+        part.target = m_list.target;
+        part.instructions.assign(m_list.instructions.begin() + span.first,
+                                 m_list.instructions.begin() + span.second);
+        const ToLadderResult drawn = listToLadder(part);
+        if (drawn.ok()) {
+            ToListingResult back = ladderToList(drawn.ladder);
+            if (back.ok()) {
+                form.known = true;
+                form.rewrite = std::move(back.list.instructions);
+                form.canonical = std::equal(
+                    form.rewrite.begin(), form.rewrite.end(), part.instructions.begin(),
+                    part.instructions.end(),
+                    [](const Instruction &a, const Instruction &b) { return a.sameAs(b); });
+            }
         }
-        if (!m_back.ok())
-            return;
-        const auto &lines = m_ladder.rungLine;
-        const auto it = std::lower_bound(lines.begin(), lines.end(), line);
-        if (it == lines.end() || *it != line)
-            return;
-        const std::size_t r = static_cast<std::size_t>(it - lines.begin());
-        if (r + 1 >= m_back.rungFirst.size())
+        return m_forms.emplace(span.first, std::move(form)).first->second;
+    }
+
+    bool isFuzzy(int index) {
+        const RungForm &form = rungForm(index);
+        return form.known && !form.canonical;
+    }
+
+    // A fix replacing the lines of the rung [first, last) with these instructions.
+    void offer(Finding &f, int first, int last, const std::vector<Instruction> &instructions,
+               const QString &label) {
+        const int line = at(first).line;
+        if (line <= 0 || instructions.empty())
             return;
         InstructionList part;
         part.target = m_list.target;
-        part.instructions.assign(m_back.list.instructions.begin() + m_back.rungFirst[r],
-                                 m_back.list.instructions.begin() + m_back.rungFirst[r + 1]);
+        part.instructions = instructions;
         Fix fix;
-        fix.label = Tr::tr("Rewrite the rung in the canonical form");
+        fix.label = label;
         fix.firstLine = line;
         fix.lastLine = at(last - 1).line;
         PrintOptions o;
         o.comments = false;
         fix.listing = printInstructionList(part, o);
         f.diagnostic.fix = fix;
+    }
+
+    void offerCanonical(Finding &f, int index) {
+        const RungForm &form = rungForm(index);
+        if (form.known && !form.canonical)
+            offer(f, form.first, form.last, form.rewrite,
+                  Tr::tr("Rewrite the rung in the canonical form"));
+    }
+
+    // Whether the rung [first, last) rewritten as `rewrite` has the form `code` less often: in a
+    // rung of stacked blocks, moving one single contact may only give the next join the same
+    // form, and that is no fix.
+    bool betterForm(int first, int last, const std::vector<Instruction> &rewrite,
+                    const char *code) const {
+        if (!m_verifyMoves)
+            return true;
+        const auto count = [&](std::vector<Instruction> instructions) {
+            InstructionList part;
+            part.target = m_list.target;
+            part.instructions = std::move(instructions);
+            CheckOptions o;
+            o.model = m_model;
+            o.formOnly = true;
+            const auto found = ListChecker(part, o, false).run();
+            return std::count_if(found.begin(), found.end(), [&](const Finding &f) {
+                return f.diagnostic.code == QLatin1String(code);
+            });
+        };
+        return count(rewrite) <
+               count({m_list.instructions.begin() + first, m_list.instructions.begin() + last});
+    }
+
+    bool stackBetween(int first, int last) const {
+        for (int k = first; k <= last; ++k) {
+            const Op op = at(k).op();
+            if (op == Op::Push || op == Op::ReadStack || op == Op::Pop)
+                return true;
+        }
+        return false;
+    }
+
+    // FZ004/FZ005: the single contact `single` (a load) joined at `join` with the block that
+    // follows it moves behind that block as an AND/OR, and the ANB/ORB goes.
+    std::optional<std::vector<Instruction>> moveBehind(int single, int join, Op as) const {
+        const InstructionSpec *spec = at(single).spec;
+        const InstructionSpec *to =
+            spec ? m_t.findInstruction(as, spec->mode, spec->compare, spec->negated) : nullptr;
+        if (!to)
+            return std::nullopt;
+        const auto [first, last] = spanOf(join);
+        std::vector<Instruction> out;
+        for (int k = first; k < last; ++k) {
+            if (k == single)
+                continue;
+            if (k == join) {
+                Instruction moved = at(single);
+                moved.spec = to;
+                out.push_back(moved);
+                continue;
+            }
+            out.push_back(at(k));
+        }
+        return out;
+    }
+
+    // FZ006: the output right after MRD/MPP at `read` goes before the MPS it reads, and the stack
+    // instructions it needed go. Only where that output is the branch's whole content.
+    std::optional<std::vector<Instruction>> liftOutput(int read) const {
+        const auto [first, last] = spanOf(read);
+        const int output = read + 1;
+        const bool lastBranch = at(read).op() == Op::Pop;
+        const int next = output + 1;
+        const bool alone =
+            next >= last || at(next).op() == Op::ReadStack || at(next).op() == Op::Pop;
+        if (!alone || (!lastBranch && next >= last))
+            return std::nullopt;
+        int push = -1;
+        int sibling = -1; // the last MRD of the same MPS before `read`
+        int depth = 0;
+        for (int k = read - 1; k >= first && push < 0; --k) {
+            const Op op = at(k).op();
+            if (op == Op::Pop)
+                ++depth;
+            else if (op == Op::Push && depth-- == 0)
+                push = k;
+            else if (op == Op::ReadStack && depth == 0 && sibling < 0)
+                sibling = k;
+        }
+        const InstructionSpec *pop = m_t.findInstruction(Op::Pop);
+        if (push < 0 || !pop)
+            return std::nullopt;
+        std::vector<Instruction> out;
+        for (int k = first; k < last; ++k) {
+            if (k == push) {
+                out.push_back(at(output));
+                if (lastBranch && sibling < 0)
+                    continue; // the MPS guarded only this output
+            }
+            if (k == read || k == output)
+                continue;
+            Instruction ins = at(k);
+            if (lastBranch && k == sibling)
+                ins.spec = pop; // the branch before is now the last one
+            out.push_back(ins);
+        }
+        return out;
     }
 
     // Fuzzy forms (ladder-rules.md), block limits, and the branch stack.
@@ -198,7 +330,8 @@ private:
                     break; // the conversion reports the missing block
                 const Block second = blocks.back();
                 const Block first = blocks[blocks.size() - 2];
-                if (blocks.size() > 2) {
+                const bool fuzzy = isFuzzy(i);
+                if (blocks.size() > 2 && fuzzy) {
                     Finding &f = add(
                         op == Op::AndBlock ? "FZ001" : "FZ002", Severity::Warning, i,
                         op == Op::AndBlock
@@ -208,6 +341,8 @@ private:
                                   "Stacked ORB: %n blocks are open; an OR chain needs less stack",
                                   nullptr, static_cast<int>(blocks.size())));
                     offerCanonical(f, i);
+                } else if (blocks.size() > 2 || !fuzzy) {
+                    // The nesting the drawing needs, written as the converter writes it.
                 } else if (op == Op::OrBlock && second.single) {
                     Finding &f = add("FZ002", Severity::Warning, i,
                                      Tr::tr("A single contact joined with %1 is simpler as %2")
@@ -215,20 +350,31 @@ private:
                                                            ? m_t.findInstruction(Op::Or)->mnemonic
                                                            : QString()));
                     offerCanonical(f, i);
-                } else if (op == Op::OrBlock && first.single) {
+                } else if (first.single && first.first + 1 == second.first &&
+                           !stackBetween(first.first, i)) {
+                    const bool orBlock = op == Op::OrBlock;
                     Finding &f = add(
-                        "FZ005", Severity::Warning, i,
-                        Tr::tr("A single device in parallel with a block belongs on the lower row: "
-                               "the block first, then an OR, drops the %1")
-                            .arg(name(i)));
-                    offerCanonical(f, i);
-                } else if (op == Op::AndBlock && first.single) {
-                    Finding &f = add(
-                        "FZ004", Severity::Warning, i,
-                        Tr::tr("The block after a single contact can move to the front and drop "
-                               "the %1")
-                            .arg(name(i)));
-                    offerCanonical(f, i);
+                        orBlock ? "FZ005" : "FZ004", Severity::Warning, i,
+                        orBlock
+                            ? Tr::tr("A single device in parallel with a block belongs on the "
+                                     "lower row: the block first, then an OR, drops the %1")
+                                  .arg(name(i))
+                            : Tr::tr("The block after a single contact can move to the front and "
+                                     "drop the %1")
+                                  .arg(name(i)));
+                    const auto [rungFirst, rungLast] = spanOf(i);
+                    const auto moved = moveBehind(first.first, i, orBlock ? Op::Or : Op::And);
+                    if (!moved ||
+                        !betterForm(rungFirst, rungLast, *moved, orBlock ? "FZ005" : "FZ004")) {
+                        m_found.pop_back(); // moving it would only make the next join the same
+                    } else {
+                        offer(f, rungFirst, rungLast, *moved,
+                              orBlock ? Tr::tr("Put the single device below the block and drop "
+                                               "the %1")
+                                            .arg(name(i))
+                                      : Tr::tr("Move the block to the front and drop the %1")
+                                            .arg(name(i)));
+                    }
                 }
                 blocks.pop_back();
                 blocks.back().single = false;
@@ -248,13 +394,17 @@ private:
                 else if (op == Op::Pop)
                     --mps;
                 if (i + 1 < size() && isOutputOp(at(i + 1).op()) &&
-                    !isUnconditional(at(i + 1).op()) && mps >= 0) {
-                    Finding &f = add(
-                        "FZ006", Severity::Warning, i + 1,
-                        Tr::tr("An output with no contacts of its own belongs on top of the branch "
-                               "and needs no %1")
-                            .arg(name(i)));
-                    offerCanonical(f, i + 1);
+                    !isUnconditional(at(i + 1).op()) && at(i + 1).op() != Op::Push) {
+                    if (auto lifted = liftOutput(i); lifted && isFuzzy(i)) {
+                        Finding &f = add(
+                            "FZ006", Severity::Warning, i + 1,
+                            Tr::tr("An output with no contacts of its own belongs on top of the "
+                                   "branch and needs no %1")
+                                .arg(name(i)));
+                        const auto [rungFirst, rungLast] = spanOf(i);
+                        offer(f, rungFirst, rungLast, *lifted,
+                              Tr::tr("Put the output on top and drop the %1").arg(name(i)));
+                    }
                 }
                 break;
             default:
@@ -489,12 +639,27 @@ private:
                     .arg(limit));
     }
 
-    // Outputs with no condition and blocks left open, as the conversion finds them.
+    // What keeps the listing from being drawn, as the conversion finds it, by the documented
+    // codes: an output with no condition (OC001), blocks left open or missing (BL001). MRD/MPP
+    // without MPS and MPS left open are ST002/ST003, which blocksAndStack() has reported.
     void structure() {
+        const auto reported = [this](const char *code, const Location &at) {
+            return std::any_of(m_found.begin(), m_found.end(), [&](const Finding &f) {
+                return f.diagnostic.code == QLatin1String(code) &&
+                       (f.diagnostic.location.line == at.line ||
+                        QLatin1String(code) == QLatin1String("ST003"));
+            });
+        };
         for (const Diagnostic &d : m_ladder.problems) {
+            const bool stack = d.code == QLatin1String("CV004");
+            const bool open = d.code == QLatin1String("CV008");
+            if ((stack && reported("ST002", d.location)) || (open && reported("ST003", d.location)))
+                continue;
             Finding f;
             f.diagnostic = d;
             f.diagnostic.code = d.code == QLatin1String("CV006") ? QStringLiteral("OC001")
+                                : stack                          ? QStringLiteral("ST002")
+                                : open                           ? QStringLiteral("ST003")
                                                                  : QStringLiteral("BL001");
             for (int i = 0; i < size(); ++i)
                 if (at(i).line == d.location.line && at(i).column == d.location.column)
@@ -503,14 +668,14 @@ private:
         }
     }
 
+    bool m_verifyMoves = true;
     const InstructionList &m_list;
     const Target &m_t;
     const ModelVariant *m_model;
     bool m_formOnly = false;
     std::vector<std::pair<int, int>> m_spans;
     ToLadderResult m_ladder;
-    ToListingResult m_back;
-    bool m_canonical = false;
+    std::map<int, RungForm> m_forms; // by the rung's first instruction
     std::vector<Finding> m_found;
 };
 
