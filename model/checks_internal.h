@@ -18,6 +18,8 @@ struct Finding {
     QString ladderMessage;
 };
 
-std::vector<Finding> checkListFindings(const InstructionList &list, const CheckOptions &options);
+// forms == false: no fuzzy-form findings (the ladder's own listing), and none of their work.
+std::vector<Finding> checkListFindings(const InstructionList &list, const CheckOptions &options,
+                                       bool forms = true);
 
 } // namespace rung::model::detail

@@ -137,7 +137,7 @@ std::vector<Diagnostic> checkLadder(const LadderProgram &ladder, const ToListing
         out.push_back(std::move(d));
     }
     // The listing checks, on the rungs the instructions came from.
-    for (detail::Finding &f : detail::checkListFindings(list.list, options)) {
+    for (detail::Finding &f : detail::checkListFindings(list.list, options, false)) {
         if (f.diagnostic.code == QLatin1String("OC001") ||
             f.diagnostic.code == QLatin1String("BL001"))
             continue; // the drawing-level findings above say it better

@@ -42,7 +42,10 @@ public:
         , m_list(list)
         , m_t(*list.target)
         , m_model(options.model ? options.model : &list.target->defaultModel())
-        , m_formOnly(options.formOnly) {}
+        , m_formOnly(options.formOnly)
+        , m_source(options.source) {}
+
+    void setForms(bool on) { m_withForms = on; }
 
     std::vector<Finding> run() {
         m_ladder = listToLadder(m_list);
@@ -158,6 +161,8 @@ private:
     }
 
     bool isFuzzy(int index) {
+        if (!m_withForms)
+            return false;
         const RungForm &form = rungForm(index);
         return form.known && !form.canonical;
     }
@@ -540,6 +545,44 @@ private:
         return l;
     }
 
+    // The system devices the PLC itself drives (always-on, clocks, first scan, scan times):
+    // every role but Other, which names devices the program may write (seed 001: M9100).
+    const SystemDevice *driveBySystem(const Address &a) {
+        if (!m_systemParsed) {
+            m_systemParsed = true;
+            for (const SystemDevice &d : m_t.systemDevices) {
+                if (d.role == SystemRole::Other)
+                    continue;
+                const auto parsed = parseAddress(m_t, d.device, nullptr);
+                if (const Address *at = std::get_if<Address>(&parsed))
+                    m_systemDriven.emplace(*at, &d);
+            }
+        }
+        const auto it = m_systemDriven.find(a);
+        return it == m_systemDriven.end() ? nullptr : it->second;
+    }
+
+    // The instructions that drive a relay (a bit); RST and the zone reset also clear timers,
+    // counters and registers.
+    static bool drivesABit(Op op) {
+        return op == Op::Out || op == Op::Set || op == Op::Keep || op == Op::PulseRise ||
+               op == Op::PulseFall;
+    }
+
+    // Moves the finding to the column of `device` on the instruction's line, when the source
+    // text is at hand.
+    void atOperand(Finding &f, int i, const QString &device) {
+        if (!m_source || at(i).line <= 0)
+            return;
+        if (m_sourceLines.isEmpty())
+            m_sourceLines = m_source->split(QLatin1Char('\n'));
+        const QString line = m_sourceLines.value(at(i).line - 1);
+        const qsizetype found =
+            line.indexOf(device, std::max(0, at(i).column), Qt::CaseInsensitive);
+        if (found >= 0)
+            f.diagnostic.location.column = static_cast<int>(found) + 1;
+    }
+
     void operands() {
         std::map<int, std::pair<int, int>> bankUse; // number -> (timer use, counter use)
         for (int i = 0; i < size(); ++i) {
@@ -569,12 +612,30 @@ private:
                 }
                 const bool destination =
                     kind == OperandKind::BitDest || kind == OperandKind::WordDest;
-                if (destination && !area.writable && ins.op() != Op::Reset)
-                    add("OP002", Severity::Error, i,
-                        Tr::tr("%1 cannot be written: %2 are read-only")
-                            .arg(formatAddress(m_t, o.address),
-                                 QCoreApplication::translate("rung::model::Target",
-                                                             area.description)));
+                const QString device = formatAddress(m_t, o.address);
+                if (destination && !area.writable && ins.op() != Op::Reset) {
+                    atOperand(add("OP002", Severity::Error, i,
+                                  Tr::tr("%1 cannot be written: %2 are read-only")
+                                      .arg(device, QCoreApplication::translate(
+                                                       "rung::model::Target", area.description))),
+                              i, device);
+                } else if (destination && driveBySystem(o.address)) {
+                    atOperand(add("OP002", Severity::Error, i,
+                                  Tr::tr("%1 cannot be written: the PLC drives it (%2)")
+                                      .arg(device, QCoreApplication::translate(
+                                                       "rung::model::Target",
+                                                       driveBySystem(o.address)->description))),
+                              i, device);
+                } else if (kind == OperandKind::BitDest && drivesABit(ins.op()) &&
+                           (area.kind == AreaKind::Timer || area.kind == AreaKind::Counter ||
+                            (area.kind == AreaKind::Word && o.address.bit < 0))) {
+                    atOperand(add("OP002", Severity::Error, i,
+                                  Tr::tr("%1 cannot drive %2: %3 are not relays")
+                                      .arg(name(i), device,
+                                           QCoreApplication::translate("rung::model::Target",
+                                                                       area.description))),
+                              i, device);
+                }
                 if (area.bank >= 0 &&
                     (area.kind == AreaKind::Timer || area.kind == AreaKind::Counter)) {
                     auto &use = bankUse[o.address.index];
@@ -669,22 +730,30 @@ private:
     }
 
     bool m_verifyMoves = true;
+    bool m_withForms = true;
     const InstructionList &m_list;
     const Target &m_t;
     const ModelVariant *m_model;
     bool m_formOnly = false;
+    const QString *m_source = nullptr;
+    QStringList m_sourceLines; // split on the first operand finding
     std::vector<std::pair<int, int>> m_spans;
     ToLadderResult m_ladder;
+    bool m_systemParsed = false;
+    std::map<Address, const SystemDevice *> m_systemDriven;
     std::map<int, RungForm> m_forms; // by the rung's first instruction
     std::vector<Finding> m_found;
 };
 
 } // namespace
 
-std::vector<Finding> checkListFindings(const InstructionList &list, const CheckOptions &options) {
+std::vector<Finding> checkListFindings(const InstructionList &list, const CheckOptions &options,
+                                       bool forms) {
     if (!list.target)
         return {};
-    return ListChecker(list, options).run();
+    ListChecker checker(list, options);
+    checker.setForms(forms);
+    return checker.run();
 }
 
 } // namespace rung::model::detail

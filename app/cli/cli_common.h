@@ -15,6 +15,7 @@ enum class InputKind { Listing, Ladder, Project };
 
 struct Input {
     QString file;
+    QString text; // the listing or ladder text as read (empty for a project)
     InputKind kind = InputKind::Listing;
     const model::Target *target = nullptr;
     const model::ModelVariant *model = nullptr;

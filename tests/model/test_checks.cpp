@@ -438,3 +438,88 @@ TEST(FuzzyForms, ALadderHasNoFuzzyFormWarnings) {
     for (const Diagnostic &d : checkLadder(lad.ladder))
         EXPECT_FALSE(d.code.startsWith(QLatin1String("FZ"))) << d.code.toStdString();
 }
+
+// ---- operands the instruction cannot write --------------------------------------------------
+
+TEST(Checks, TheDevicesThePlcDrivesCannotBeWritten) {
+    const struct {
+        Family family;
+        const char *program;
+        const char *device;
+    } driven[] = {
+        {Family::Vigor, "LD X0;OUT M9000;END", "M9000"},
+        {Family::Vigor, "LD X0;OUT M9002;END", "M9002"},
+        {Family::Vigor, "LD X0;SET M9013;END", "M9013"},
+        {Family::Vigor, "LD X0;MOV K5 D9010;END", "D9010"},
+        {Family::Vpc, "LD i00;OUT r88;END", "r88"},
+        {Family::Cpm1, "LD 000.00;OUT 253.13;END(01)", "253.13"},
+    };
+    for (const auto &c : driven) {
+        const auto ds = check(c.family, nullptr, text(c.program));
+        const Diagnostic *d = find(ds, "OP002");
+        ASSERT_NE(d, nullptr) << c.program << "\n" << all(ds).toStdString();
+        EXPECT_TRUE(d->message.startsWith(QString::fromLatin1(c.device))) << c.program;
+        EXPECT_EQ(d->location.line, 2);
+    }
+    // Read, or written where the program may (seed 001 drives M9100 to start dialing).
+    for (const char *program :
+         {"LD M9000;OUT Y0;END", "LD X0;OUT M9100;END", "LD M9013;MOV D9010 D0;END"})
+        EXPECT_EQ(find(check(Family::Vigor, nullptr, text(program)), "OP002"), nullptr) << program;
+}
+
+TEST(Checks, ACoilDrivesRelaysNotTimersCountersOrRegisters) {
+    for (const char *program :
+         {"LD X0;OUT T0;END", "LD X0;SET C0;END", "LD X0;OUT D0;END", "LD X0;PLS T1;END"}) {
+        const auto ds = check(Family::Vigor, nullptr, text(program));
+        ASSERT_NE(find(ds, "OP002"), nullptr) << program << "\n" << all(ds).toStdString();
+    }
+    EXPECT_NE(find(check(Family::Cpm1, nullptr, text("LD 000.00;OUT TIM 001;END(01)")), "OP002"),
+              nullptr);
+    // Resets clear timers, counters and registers.
+    for (const char *program : {"LD X0;RST T0;END", "LD X0;RST C0;END", "LD X0;RST D0;END",
+                                "LD X0;ZRST T0 T5;END", "LD X0;OUT S1;END"})
+        EXPECT_EQ(find(check(Family::Vigor, nullptr, text(program)), "OP002"), nullptr) << program;
+}
+
+TEST(Checks, AnOperandFindingPointsAtTheOperandWhenTheSourceIsAtHand) {
+    const Target &t = Target::get(Family::Vpc);
+    const QString source = QStringLiteral("LD i00\n  OUT   a01 ; no\nEND\n");
+    const ParseResult p = parseInstructionList(t, source);
+    ASSERT_TRUE(p.ok());
+    CheckOptions o;
+    o.source = &source;
+    const Diagnostic *d = find(checkList(p.list, o), "OP002");
+    ASSERT_NE(d, nullptr);
+    EXPECT_EQ(d->location.line, 2);
+    EXPECT_EQ(d->location.column, 9);
+    // Without the text, the instruction's column.
+    const auto plain = checkList(p.list);
+    ASSERT_NE(find(plain, "OP002"), nullptr);
+    EXPECT_EQ(find(plain, "OP002")->location.column, 3);
+}
+
+TEST(Checks, ProblemsThatKeepALadderFromItsListingAreLD003) {
+    // A box with several inputs must stand alone in its rung.
+    const Target &t = Target::get(Family::Vpc);
+    const ToLadderResult box =
+        listToLadder(parseInstructionList(t, text("LD i00;LD i01;LR r00;END")).list);
+    ASSERT_TRUE(box.ok()) << (box.problems.empty() ? "" : box.problems[0].message.toStdString());
+    LadderProgram bad = box.ladder;
+    const ToLadderResult coil = listToLadder(parseInstructionList(t, text("LD i02;OUT o00")).list);
+    ASSERT_TRUE(coil.ok());
+    // Give the box's rung one more row driving a coil.
+    Rung &r = bad.rungs[0];
+    const Rung &extra = coil.ladder.rungs[0];
+    ASSERT_EQ(extra.rows, 1);
+    const int row = r.rows;
+    r.resize(r.rows + 1, std::max(r.columns, extra.columns));
+    r.cell(row, 0) = extra.cell(0, 0);
+    r.outputs[static_cast<std::size_t>(row)] = extra.outputs[0];
+    const auto ds = checkLadder(bad);
+    const Diagnostic *d = find(ds, "LD003");
+    ASSERT_NE(d, nullptr) << all(ds).toStdString();
+    EXPECT_EQ(d->location.rung, 0);
+    for (const Diagnostic &e : ds)
+        EXPECT_FALSE(e.code.startsWith(QLatin1String("CV"))) << e.code.toStdString();
+    EXPECT_EQ(find(checkLadder(box.ladder), "LD003"), nullptr);
+}
