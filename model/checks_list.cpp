@@ -57,7 +57,7 @@ public:
             });
             return std::move(m_found);
         }
-        endAndNesting();
+        endAndNesting(m_list, m_found);
         operands();
         duplicates();
         length();
@@ -67,18 +67,7 @@ public:
 
 private:
     Finding &add(const char *code, Severity severity, int index, const QString &message) {
-        Finding f;
-        f.diagnostic.code = QString::fromLatin1(code);
-        f.diagnostic.severity = severity;
-        f.diagnostic.message = message;
-        f.instruction = index;
-        if (index >= 0 && index < static_cast<int>(m_list.instructions.size())) {
-            const Instruction &ins = m_list.instructions[static_cast<std::size_t>(index)];
-            f.diagnostic.location.line = ins.line;
-            f.diagnostic.location.column = ins.column;
-        }
-        m_found.push_back(std::move(f));
-        return m_found.back();
+        return addFinding(m_found, m_list, code, severity, index, message);
     }
 
     const Instruction &at(int i) const { return m_list.instructions[static_cast<std::size_t>(i)]; }
@@ -123,47 +112,28 @@ private:
         return {index, index + 1};
     }
 
-    // The rung holding `index` as the converter writes it back. A form is fuzzy only where
-    // its text differs from that: the canonical listing never gets a fuzzy-form warning.
-    struct RungForm {
+    // The rung holding `index` as the converter writes it back (cached by its span).
+    struct SpanForm {
         int first = 0;
         int last = 0;
-        bool known = false;     // the rung converts on its own
-        bool canonical = false; // its instructions are the converter's
-        std::vector<Instruction> rewrite;
+        RungForm form;
     };
 
-    const RungForm &rungForm(int index) {
+    const SpanForm &rungForm(int index) {
         const auto span = spanOf(index);
         auto it = m_forms.find(span.first);
-        if (it != m_forms.end())
-            return it->second;
-        RungForm form;
-        form.first = span.first;
-        form.last = span.second;
-        InstructionList part;
-        part.target = m_list.target;
-        part.instructions.assign(m_list.instructions.begin() + span.first,
-                                 m_list.instructions.begin() + span.second);
-        const ToLadderResult drawn = listToLadder(part);
-        if (drawn.ok()) {
-            ToListingResult back = ladderToList(drawn.ladder);
-            if (back.ok()) {
-                form.known = true;
-                form.rewrite = std::move(back.list.instructions);
-                form.canonical = std::equal(
-                    form.rewrite.begin(), form.rewrite.end(), part.instructions.begin(),
-                    part.instructions.end(),
-                    [](const Instruction &a, const Instruction &b) { return a.sameAs(b); });
-            }
-        }
-        return m_forms.emplace(span.first, std::move(form)).first->second;
+        if (it == m_forms.end())
+            it = m_forms
+                     .emplace(span.first, SpanForm{span.first, span.second,
+                                                   canonicalForm(m_list, span.first, span.second)})
+                     .first;
+        return it->second;
     }
 
     bool isFuzzy(int index) {
         if (!m_withForms)
             return false;
-        const RungForm &form = rungForm(index);
+        const RungForm &form = rungForm(index).form;
         return form.known && !form.canonical;
     }
 
@@ -187,9 +157,9 @@ private:
     }
 
     void offerCanonical(Finding &f, int index) {
-        const RungForm &form = rungForm(index);
-        if (form.known && !form.canonical)
-            offer(f, form.first, form.last, form.rewrite,
+        const SpanForm &span = rungForm(index);
+        if (span.form.known && !span.form.canonical)
+            offer(f, span.first, span.last, span.form.rewrite,
                   Tr::tr("Rewrite the rung in the canonical form"));
     }
 
@@ -214,82 +184,6 @@ private:
         };
         return count(rewrite) <
                count({m_list.instructions.begin() + first, m_list.instructions.begin() + last});
-    }
-
-    bool stackBetween(int first, int last) const {
-        for (int k = first; k <= last; ++k) {
-            const Op op = at(k).op();
-            if (op == Op::Push || op == Op::ReadStack || op == Op::Pop)
-                return true;
-        }
-        return false;
-    }
-
-    // FZ004/FZ005: the single contact `single` (a load) joined at `join` with the block that
-    // follows it moves behind that block as an AND/OR, and the ANB/ORB goes.
-    std::optional<std::vector<Instruction>> moveBehind(int single, int join, Op as) const {
-        const InstructionSpec *spec = at(single).spec;
-        const InstructionSpec *to =
-            spec ? m_t.findInstruction(as, spec->mode, spec->compare, spec->negated) : nullptr;
-        if (!to)
-            return std::nullopt;
-        const auto [first, last] = spanOf(join);
-        std::vector<Instruction> out;
-        for (int k = first; k < last; ++k) {
-            if (k == single)
-                continue;
-            if (k == join) {
-                Instruction moved = at(single);
-                moved.spec = to;
-                out.push_back(moved);
-                continue;
-            }
-            out.push_back(at(k));
-        }
-        return out;
-    }
-
-    // FZ006: the output right after MRD/MPP at `read` goes before the MPS it reads, and the stack
-    // instructions it needed go. Only where that output is the branch's whole content.
-    std::optional<std::vector<Instruction>> liftOutput(int read) const {
-        const auto [first, last] = spanOf(read);
-        const int output = read + 1;
-        const bool lastBranch = at(read).op() == Op::Pop;
-        const int next = output + 1;
-        const bool alone =
-            next >= last || at(next).op() == Op::ReadStack || at(next).op() == Op::Pop;
-        if (!alone || (!lastBranch && next >= last))
-            return std::nullopt;
-        int push = -1;
-        int sibling = -1; // the last MRD of the same MPS before `read`
-        int depth = 0;
-        for (int k = read - 1; k >= first && push < 0; --k) {
-            const Op op = at(k).op();
-            if (op == Op::Pop)
-                ++depth;
-            else if (op == Op::Push && depth-- == 0)
-                push = k;
-            else if (op == Op::ReadStack && depth == 0 && sibling < 0)
-                sibling = k;
-        }
-        const InstructionSpec *pop = m_t.findInstruction(Op::Pop);
-        if (push < 0 || !pop)
-            return std::nullopt;
-        std::vector<Instruction> out;
-        for (int k = first; k < last; ++k) {
-            if (k == push) {
-                out.push_back(at(output));
-                if (lastBranch && sibling < 0)
-                    continue; // the MPS guarded only this output
-            }
-            if (k == read || k == output)
-                continue;
-            Instruction ins = at(k);
-            if (lastBranch && k == sibling)
-                ins.spec = pop; // the branch before is now the last one
-            out.push_back(ins);
-        }
-        return out;
     }
 
     // Fuzzy forms (ladder-rules.md), block limits, and the branch stack.
@@ -356,7 +250,7 @@ private:
                                                            : QString()));
                     offerCanonical(f, i);
                 } else if (first.single && first.first + 1 == second.first &&
-                           !stackBetween(first.first, i)) {
+                           !stackBetween(m_list, first.first, i)) {
                     const bool orBlock = op == Op::OrBlock;
                     Finding &f = add(
                         orBlock ? "FZ005" : "FZ004", Severity::Warning, i,
@@ -368,7 +262,8 @@ private:
                                      "drop the %1")
                                   .arg(name(i)));
                     const auto [rungFirst, rungLast] = spanOf(i);
-                    const auto moved = moveBehind(first.first, i, orBlock ? Op::Or : Op::And);
+                    const auto moved =
+                        moveBehind(m_list, spanOf(i), first.first, i, orBlock ? Op::Or : Op::And);
                     if (!moved ||
                         !betterForm(rungFirst, rungLast, *moved, orBlock ? "FZ005" : "FZ004")) {
                         m_found.pop_back(); // moving it would only make the next join the same
@@ -400,7 +295,7 @@ private:
                     --mps;
                 if (i + 1 < size() && isOutputOp(at(i + 1).op()) &&
                     !isUnconditional(at(i + 1).op()) && at(i + 1).op() != Op::Push) {
-                    if (auto lifted = liftOutput(i); lifted && isFuzzy(i)) {
+                    if (auto lifted = liftOutput(m_list, spanOf(i), i); lifted && isFuzzy(i)) {
                         Finding &f = add(
                             "FZ006", Severity::Warning, i + 1,
                             Tr::tr("An output with no contacts of its own belongs on top of the "
@@ -426,116 +321,6 @@ private:
                 }
             }
         }
-    }
-
-    void endAndNesting() {
-        const bool needsEnd = m_t.findInstruction(Op::End) != nullptr;
-        int end = -1;
-        for (int i = 0; i < size(); ++i)
-            if (at(i).op() == Op::End) {
-                end = i;
-                break;
-            }
-        if (needsEnd && end < 0) {
-            Finding &f = add("EN001", Severity::Error, size() - 1, Tr::tr("END is missing"));
-            if (size() == 0)
-                f.diagnostic.location.line = 1;
-        }
-        if (end >= 0 && end + 1 < size())
-            add("EN002", Severity::Warning, end + 1,
-                Tr::tr("Instructions after END are never executed"));
-
-        int il = -1;
-        int jmp = -1;
-        int stl = -1;
-        std::map<qint64, int> jmpLabels;
-        std::map<qint64, int> jmeLabels;
-        const bool labels = m_t.limits.jumpLabels > 0;
-        for (int i = 0; i < (end >= 0 ? end : size()); ++i) {
-            const Op op = at(i).op();
-            switch (op) {
-            case Op::Interlock:
-                if (il >= 0)
-                    add("NE001", Severity::Error, i,
-                        Tr::tr("IL inside IL: close the first with ILC"));
-                il = i;
-                break;
-            case Op::InterlockClear:
-                if (il < 0)
-                    add("NE002", Severity::Error, i,
-                        Tr::tr("ILC without IL (\"IL (JMP) missing\")"));
-                else if (jmp > il)
-                    add("NE005", Severity::Error, i,
-                        Tr::tr("IL-JMP interlace: the jump opened inside the interlock is still "
-                               "open"));
-                il = -1;
-                break;
-            case Op::Jump:
-                if (labels) {
-                    const qint64 n = at(i).operands.empty() ? -1 : at(i).operands[0].constant.value;
-                    if (n >= m_t.limits.jumpLabels)
-                        add("NE006", Severity::Error, i,
-                            Tr::tr("Jump number %1 is beyond 00..%2")
-                                .arg(n)
-                                .arg(m_t.limits.jumpLabels - 1));
-                    jmpLabels.emplace(n, i);
-                    break;
-                }
-                if (jmp >= 0)
-                    add("NE003", Severity::Error, i,
-                        Tr::tr("JMP inside JMP: close the first jump"));
-                jmp = i;
-                break;
-            case Op::JumpEnd:
-                if (labels) {
-                    const qint64 n = at(i).operands.empty() ? -1 : at(i).operands[0].constant.value;
-                    if (jmeLabels.count(n)) {
-                        Finding &f =
-                            add("NE007", Severity::Error, i,
-                                Tr::tr("A second %1 %2: several JMP may share a number, only one "
-                                       "JME")
-                                    .arg(name(i))
-                                    .arg(n));
-                        f.diagnostic.related.push_back(location(jmeLabels[n]));
-                    }
-                    if (!jmpLabels.count(n))
-                        add("NE004", Severity::Error, i,
-                            Tr::tr("%1 %2 without a JMP before it").arg(name(i)).arg(n));
-                    jmeLabels.emplace(n, i);
-                    break;
-                }
-                if (jmp < 0)
-                    add("NE004", Severity::Error, i,
-                        Tr::tr("%1 without JMP (\"IL (JMP) missing\")").arg(name(i)));
-                else if (il > jmp)
-                    add("NE005", Severity::Error, i,
-                        Tr::tr("IL-JMP interlace: the interlock opened inside the jump is still "
-                               "open"));
-                jmp = -1;
-                break;
-            case Op::StepLadder:
-                stl = i;
-                break;
-            case Op::Return:
-                stl = -1;
-                break;
-            default:
-                break;
-            }
-        }
-        if (il >= 0)
-            add("NE002", Severity::Error, il, Tr::tr("IL without ILC"));
-        if (jmp >= 0)
-            add("NE004", Severity::Error, jmp,
-                Tr::tr("JMP without its end (%1)")
-                    .arg(m_t.findInstruction(Op::JumpEnd)
-                             ? m_t.findInstruction(Op::JumpEnd)->mnemonic
-                             : QString()));
-        for (const auto &[n, i] : jmpLabels)
-            if (!jmeLabels.count(n))
-                add("NE004", Severity::Error, i, Tr::tr("JMP %1 has no JME %1").arg(n));
-        if (stl >= 0)
-            add("SL001", Severity::Error, stl, Tr::tr("The step ladder is not closed with RET"));
     }
 
     Location location(int i) const {
@@ -741,7 +526,7 @@ private:
     ToLadderResult m_ladder;
     bool m_systemParsed = false;
     std::map<Address, const SystemDevice *> m_systemDriven;
-    std::map<int, RungForm> m_forms; // by the rung's first instruction
+    std::map<int, SpanForm> m_forms; // by the rung's first instruction
     std::vector<Finding> m_found;
 };
 

@@ -368,6 +368,10 @@ TEST(CliCheck, TheLadderOfAProgramGetsNoListingFormWarnings) {
              QStringLiteral(RUNG_SOURCE_DIR "/tests/data/il/vigor_seed_execution_order.il"),
              QStringLiteral("--target"), QStringLiteral("vigor")});
     EXPECT_FALSE(order.out.contains(QStringLiteral("[FZ"))) << order.out.toStdString();
+    const CliRun bridge =
+        cli({QStringLiteral("check"),
+             QStringLiteral(RUNG_SOURCE_DIR "/tests/data/ladder/bridge_corrected.ladder")});
+    EXPECT_EQ(codes(bridge.out), QStringList{QStringLiteral("EN001")}) << bridge.out.toStdString();
 }
 
 TEST(CliCheck, AFindingAboutTheWholeFileHasAPlaceToo) {
@@ -426,6 +430,12 @@ TEST(CliInput, AnEndlessDeviceIsRefused) {
         EXPECT_EQ(r.code, 2) << command;
         EXPECT_TRUE(r.err.contains(QStringLiteral("8 MB"))) << r.err.toStdString();
     }
+    const CliRun simulated =
+        cli({QStringLiteral("simulate"), QStringLiteral("/dev/zero"), QStringLiteral("--target"),
+             QStringLiteral("vigor"), QStringLiteral("--scans"), QStringLiteral("1"),
+             QStringLiteral("--trace"), QStringLiteral("Y0")});
+    EXPECT_EQ(simulated.code, 2);
+    EXPECT_TRUE(simulated.err.contains(QStringLiteral("8 MB"))) << simulated.err.toStdString();
 }
 
 TEST(CliInput, RandomBytesAreASyntaxErrorNotACrash) {
