@@ -17,6 +17,9 @@ struct CheckOptions {
     // Only the fuzzy-syntax findings (FZ*) on the form of the text: for an editor that keeps
     // the user's listing as typed and has the program's other findings from the ladder.
     bool formOnly = false;
+    // The text the listing was parsed from, if at hand: operand findings then point at the
+    // operand's column instead of the instruction's.
+    const QString *source = nullptr;
 };
 
 // Checks on a parsed listing (fuzzy forms, END, nesting, stack, operands, duplicates, length).

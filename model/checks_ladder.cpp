@@ -115,11 +115,37 @@ std::vector<Diagnostic> checkLadder(const LadderProgram &ladder, const ToListing
                 out.push_back(d);
             }
     }
+    // What keeps a rung from being written as this target's listing: open branches and reverse
+    // current are reported above from the drawing; the rest (a box that does not stand alone,
+    // an element the target lacks) is LD003, an output with no condition OC001.
+    for (const Diagnostic &p : list.problems) {
+        if (p.code == QLatin1String("CV012") || p.code == QLatin1String("RC001"))
+            continue;
+        const bool noCondition = std::any_of(out.begin(), out.end(), [&](const Diagnostic &d) {
+            return d.code == QLatin1String("OC001") && d.location.rung == p.location.rung;
+        });
+        if (noCondition)
+            continue;
+        Diagnostic d = p;
+        d.code = QStringLiteral("LD003");
+        if (d.location.row < 0)
+            d.location.row = 0;
+        d.location.cell =
+            ladder.rungs.empty()
+                ? 0
+                : ladder.rungs[static_cast<std::size_t>(std::max(0, p.location.rung))].columns;
+        out.push_back(std::move(d));
+    }
     // The listing checks, on the rungs the instructions came from.
-    for (detail::Finding &f : detail::checkListFindings(list.list, options)) {
+    for (detail::Finding &f : detail::checkListFindings(list.list, options, false)) {
         if (f.diagnostic.code == QLatin1String("OC001") ||
             f.diagnostic.code == QLatin1String("BL001"))
             continue; // the drawing-level findings above say it better
+        // The form of a listing nobody wrote: the ladder's own listing is canonical. Only the
+        // limit on ANB/ORB in a row (FZ003) binds it, as the PLC rejects it.
+        if (f.diagnostic.code.startsWith(QLatin1String("FZ")) &&
+            f.diagnostic.code != QLatin1String("FZ003"))
+            continue;
         Diagnostic d = std::move(f.diagnostic);
         d.location.line = 0;
         d.location.column = 0;

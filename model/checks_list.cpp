@@ -7,6 +7,7 @@
 
 #include <algorithm>
 #include <map>
+#include <optional>
 
 // The listing checks (docs/diagnostics.md). Each finding remembers the instruction it is
 // about, so the ladder checks can show it on the rung that instruction came from.
@@ -36,11 +37,15 @@ bool isCoil(Op op) {
 
 class ListChecker {
 public:
-    ListChecker(const InstructionList &list, const CheckOptions &options)
-        : m_list(list)
+    ListChecker(const InstructionList &list, const CheckOptions &options, bool verifyMoves = true)
+        : m_verifyMoves(verifyMoves)
+        , m_list(list)
         , m_t(*list.target)
         , m_model(options.model ? options.model : &list.target->defaultModel())
-        , m_formOnly(options.formOnly) {}
+        , m_formOnly(options.formOnly)
+        , m_source(options.source) {}
+
+    void setForms(bool on) { m_withForms = on; }
 
     std::vector<Finding> run() {
         m_ladder = listToLadder(m_list);
@@ -52,7 +57,7 @@ public:
             });
             return std::move(m_found);
         }
-        endAndNesting();
+        endAndNesting(m_list, m_found);
         operands();
         duplicates();
         length();
@@ -62,18 +67,7 @@ public:
 
 private:
     Finding &add(const char *code, Severity severity, int index, const QString &message) {
-        Finding f;
-        f.diagnostic.code = QString::fromLatin1(code);
-        f.diagnostic.severity = severity;
-        f.diagnostic.message = message;
-        f.instruction = index;
-        if (index >= 0 && index < static_cast<int>(m_list.instructions.size())) {
-            const Instruction &ins = m_list.instructions[static_cast<std::size_t>(index)];
-            f.diagnostic.location.line = ins.line;
-            f.diagnostic.location.column = ins.column;
-        }
-        m_found.push_back(std::move(f));
-        return m_found.back();
+        return addFinding(m_found, m_list, code, severity, index, message);
     }
 
     const Instruction &at(int i) const { return m_list.instructions[static_cast<std::size_t>(i)]; }
@@ -118,41 +112,78 @@ private:
         return {index, index + 1};
     }
 
-    // The canonical rewrite of the rung holding `index`, as a fix.
-    // The canonical rewrite of the rung holding `index`, as a fix. The whole listing is
-    // converted once; each rung's rewrite is cut from that.
-    void offerCanonical(Finding &f, int index) {
-        const auto [first, last] = spanOf(index);
+    // The rung holding `index` as the converter writes it back (cached by its span).
+    struct SpanForm {
+        int first = 0;
+        int last = 0;
+        RungForm form;
+    };
+
+    const SpanForm &rungForm(int index) {
+        const auto span = spanOf(index);
+        auto it = m_forms.find(span.first);
+        if (it == m_forms.end())
+            it = m_forms
+                     .emplace(span.first, SpanForm{span.first, span.second,
+                                                   canonicalForm(m_list, span.first, span.second)})
+                     .first;
+        return it->second;
+    }
+
+    bool isFuzzy(int index) {
+        if (!m_withForms)
+            return false;
+        const RungForm &form = rungForm(index).form;
+        return form.known && !form.canonical;
+    }
+
+    // A fix replacing the lines of the rung [first, last) with these instructions.
+    void offer(Finding &f, int first, int last, const std::vector<Instruction> &instructions,
+               const QString &label) {
         const int line = at(first).line;
-        if (line <= 0)
-            return;
-        if (!m_canonical) {
-            m_canonical = true;
-            if (!m_ladder.ok())
-                return;
-            m_back = ladderToList(m_ladder.ladder);
-        }
-        if (!m_back.ok())
-            return;
-        const auto &lines = m_ladder.rungLine;
-        const auto it = std::lower_bound(lines.begin(), lines.end(), line);
-        if (it == lines.end() || *it != line)
-            return;
-        const std::size_t r = static_cast<std::size_t>(it - lines.begin());
-        if (r + 1 >= m_back.rungFirst.size())
+        if (line <= 0 || instructions.empty())
             return;
         InstructionList part;
         part.target = m_list.target;
-        part.instructions.assign(m_back.list.instructions.begin() + m_back.rungFirst[r],
-                                 m_back.list.instructions.begin() + m_back.rungFirst[r + 1]);
+        part.instructions = instructions;
         Fix fix;
-        fix.label = Tr::tr("Rewrite the rung in the canonical form");
+        fix.label = label;
         fix.firstLine = line;
         fix.lastLine = at(last - 1).line;
         PrintOptions o;
         o.comments = false;
         fix.listing = printInstructionList(part, o);
         f.diagnostic.fix = fix;
+    }
+
+    void offerCanonical(Finding &f, int index) {
+        const SpanForm &span = rungForm(index);
+        if (span.form.known && !span.form.canonical)
+            offer(f, span.first, span.last, span.form.rewrite,
+                  Tr::tr("Rewrite the rung in the canonical form"));
+    }
+
+    // Whether the rung [first, last) rewritten as `rewrite` has the form `code` less often: in a
+    // rung of stacked blocks, moving one single contact may only give the next join the same
+    // form, and that is no fix.
+    bool betterForm(int first, int last, const std::vector<Instruction> &rewrite,
+                    const char *code) const {
+        if (!m_verifyMoves)
+            return true;
+        const auto count = [&](std::vector<Instruction> instructions) {
+            InstructionList part;
+            part.target = m_list.target;
+            part.instructions = std::move(instructions);
+            CheckOptions o;
+            o.model = m_model;
+            o.formOnly = true;
+            const auto found = ListChecker(part, o, false).run();
+            return std::count_if(found.begin(), found.end(), [&](const Finding &f) {
+                return f.diagnostic.code == QLatin1String(code);
+            });
+        };
+        return count(rewrite) <
+               count({m_list.instructions.begin() + first, m_list.instructions.begin() + last});
     }
 
     // Fuzzy forms (ladder-rules.md), block limits, and the branch stack.
@@ -198,7 +229,8 @@ private:
                     break; // the conversion reports the missing block
                 const Block second = blocks.back();
                 const Block first = blocks[blocks.size() - 2];
-                if (blocks.size() > 2) {
+                const bool fuzzy = isFuzzy(i);
+                if (blocks.size() > 2 && fuzzy) {
                     Finding &f = add(
                         op == Op::AndBlock ? "FZ001" : "FZ002", Severity::Warning, i,
                         op == Op::AndBlock
@@ -208,6 +240,8 @@ private:
                                   "Stacked ORB: %n blocks are open; an OR chain needs less stack",
                                   nullptr, static_cast<int>(blocks.size())));
                     offerCanonical(f, i);
+                } else if (blocks.size() > 2 || !fuzzy) {
+                    // The nesting the drawing needs, written as the converter writes it.
                 } else if (op == Op::OrBlock && second.single) {
                     Finding &f = add("FZ002", Severity::Warning, i,
                                      Tr::tr("A single contact joined with %1 is simpler as %2")
@@ -215,20 +249,32 @@ private:
                                                            ? m_t.findInstruction(Op::Or)->mnemonic
                                                            : QString()));
                     offerCanonical(f, i);
-                } else if (op == Op::OrBlock && first.single) {
+                } else if (first.single && first.first + 1 == second.first &&
+                           !stackBetween(m_list, first.first, i)) {
+                    const bool orBlock = op == Op::OrBlock;
                     Finding &f = add(
-                        "FZ005", Severity::Warning, i,
-                        Tr::tr("A single device in parallel with a block belongs on the lower row: "
-                               "the block first, then an OR, drops the %1")
-                            .arg(name(i)));
-                    offerCanonical(f, i);
-                } else if (op == Op::AndBlock && first.single) {
-                    Finding &f = add(
-                        "FZ004", Severity::Warning, i,
-                        Tr::tr("The block after a single contact can move to the front and drop "
-                               "the %1")
-                            .arg(name(i)));
-                    offerCanonical(f, i);
+                        orBlock ? "FZ005" : "FZ004", Severity::Warning, i,
+                        orBlock
+                            ? Tr::tr("A single device in parallel with a block belongs on the "
+                                     "lower row: the block first, then an OR, drops the %1")
+                                  .arg(name(i))
+                            : Tr::tr("The block after a single contact can move to the front and "
+                                     "drop the %1")
+                                  .arg(name(i)));
+                    const auto [rungFirst, rungLast] = spanOf(i);
+                    const auto moved =
+                        moveBehind(m_list, spanOf(i), first.first, i, orBlock ? Op::Or : Op::And);
+                    if (!moved ||
+                        !betterForm(rungFirst, rungLast, *moved, orBlock ? "FZ005" : "FZ004")) {
+                        m_found.pop_back(); // moving it would only make the next join the same
+                    } else {
+                        offer(f, rungFirst, rungLast, *moved,
+                              orBlock ? Tr::tr("Put the single device below the block and drop "
+                                               "the %1")
+                                            .arg(name(i))
+                                      : Tr::tr("Move the block to the front and drop the %1")
+                                            .arg(name(i)));
+                    }
                 }
                 blocks.pop_back();
                 blocks.back().single = false;
@@ -248,13 +294,17 @@ private:
                 else if (op == Op::Pop)
                     --mps;
                 if (i + 1 < size() && isOutputOp(at(i + 1).op()) &&
-                    !isUnconditional(at(i + 1).op()) && mps >= 0) {
-                    Finding &f = add(
-                        "FZ006", Severity::Warning, i + 1,
-                        Tr::tr("An output with no contacts of its own belongs on top of the branch "
-                               "and needs no %1")
-                            .arg(name(i)));
-                    offerCanonical(f, i + 1);
+                    !isUnconditional(at(i + 1).op()) && at(i + 1).op() != Op::Push) {
+                    if (auto lifted = liftOutput(m_list, spanOf(i), i); lifted && isFuzzy(i)) {
+                        Finding &f = add(
+                            "FZ006", Severity::Warning, i + 1,
+                            Tr::tr("An output with no contacts of its own belongs on top of the "
+                                   "branch and needs no %1")
+                                .arg(name(i)));
+                        const auto [rungFirst, rungLast] = spanOf(i);
+                        offer(f, rungFirst, rungLast, *lifted,
+                              Tr::tr("Put the output on top and drop the %1").arg(name(i)));
+                    }
                 }
                 break;
             default:
@@ -273,121 +323,49 @@ private:
         }
     }
 
-    void endAndNesting() {
-        const bool needsEnd = m_t.findInstruction(Op::End) != nullptr;
-        int end = -1;
-        for (int i = 0; i < size(); ++i)
-            if (at(i).op() == Op::End) {
-                end = i;
-                break;
-            }
-        if (needsEnd && end < 0) {
-            Finding &f = add("EN001", Severity::Error, size() - 1, Tr::tr("END is missing"));
-            if (size() == 0)
-                f.diagnostic.location.line = 1;
-        }
-        if (end >= 0 && end + 1 < size())
-            add("EN002", Severity::Warning, end + 1,
-                Tr::tr("Instructions after END are never executed"));
-
-        int il = -1;
-        int jmp = -1;
-        int stl = -1;
-        std::map<qint64, int> jmpLabels;
-        std::map<qint64, int> jmeLabels;
-        const bool labels = m_t.limits.jumpLabels > 0;
-        for (int i = 0; i < (end >= 0 ? end : size()); ++i) {
-            const Op op = at(i).op();
-            switch (op) {
-            case Op::Interlock:
-                if (il >= 0)
-                    add("NE001", Severity::Error, i,
-                        Tr::tr("IL inside IL: close the first with ILC"));
-                il = i;
-                break;
-            case Op::InterlockClear:
-                if (il < 0)
-                    add("NE002", Severity::Error, i,
-                        Tr::tr("ILC without IL (\"IL (JMP) missing\")"));
-                else if (jmp > il)
-                    add("NE005", Severity::Error, i,
-                        Tr::tr("IL-JMP interlace: the jump opened inside the interlock is still "
-                               "open"));
-                il = -1;
-                break;
-            case Op::Jump:
-                if (labels) {
-                    const qint64 n = at(i).operands.empty() ? -1 : at(i).operands[0].constant.value;
-                    if (n >= m_t.limits.jumpLabels)
-                        add("NE006", Severity::Error, i,
-                            Tr::tr("Jump number %1 is beyond 00..%2")
-                                .arg(n)
-                                .arg(m_t.limits.jumpLabels - 1));
-                    jmpLabels.emplace(n, i);
-                    break;
-                }
-                if (jmp >= 0)
-                    add("NE003", Severity::Error, i,
-                        Tr::tr("JMP inside JMP: close the first jump"));
-                jmp = i;
-                break;
-            case Op::JumpEnd:
-                if (labels) {
-                    const qint64 n = at(i).operands.empty() ? -1 : at(i).operands[0].constant.value;
-                    if (jmeLabels.count(n)) {
-                        Finding &f =
-                            add("NE007", Severity::Error, i,
-                                Tr::tr("A second %1 %2: several JMP may share a number, only one "
-                                       "JME")
-                                    .arg(name(i))
-                                    .arg(n));
-                        f.diagnostic.related.push_back(location(jmeLabels[n]));
-                    }
-                    if (!jmpLabels.count(n))
-                        add("NE004", Severity::Error, i,
-                            Tr::tr("%1 %2 without a JMP before it").arg(name(i)).arg(n));
-                    jmeLabels.emplace(n, i);
-                    break;
-                }
-                if (jmp < 0)
-                    add("NE004", Severity::Error, i,
-                        Tr::tr("%1 without JMP (\"IL (JMP) missing\")").arg(name(i)));
-                else if (il > jmp)
-                    add("NE005", Severity::Error, i,
-                        Tr::tr("IL-JMP interlace: the interlock opened inside the jump is still "
-                               "open"));
-                jmp = -1;
-                break;
-            case Op::StepLadder:
-                stl = i;
-                break;
-            case Op::Return:
-                stl = -1;
-                break;
-            default:
-                break;
-            }
-        }
-        if (il >= 0)
-            add("NE002", Severity::Error, il, Tr::tr("IL without ILC"));
-        if (jmp >= 0)
-            add("NE004", Severity::Error, jmp,
-                Tr::tr("JMP without its end (%1)")
-                    .arg(m_t.findInstruction(Op::JumpEnd)
-                             ? m_t.findInstruction(Op::JumpEnd)->mnemonic
-                             : QString()));
-        for (const auto &[n, i] : jmpLabels)
-            if (!jmeLabels.count(n))
-                add("NE004", Severity::Error, i, Tr::tr("JMP %1 has no JME %1").arg(n));
-        if (stl >= 0)
-            add("SL001", Severity::Error, stl, Tr::tr("The step ladder is not closed with RET"));
-    }
-
     Location location(int i) const {
         Location l;
         l.line = at(i).line;
         l.column = at(i).column;
         return l;
+    }
+
+    // The system devices the PLC itself drives (always-on, clocks, first scan, scan times):
+    // every role but Other, which names devices the program may write (seed 001: M9100).
+    const SystemDevice *driveBySystem(const Address &a) {
+        if (!m_systemParsed) {
+            m_systemParsed = true;
+            for (const SystemDevice &d : m_t.systemDevices) {
+                if (d.role == SystemRole::Other)
+                    continue;
+                const auto parsed = parseAddress(m_t, d.device, nullptr);
+                if (const Address *at = std::get_if<Address>(&parsed))
+                    m_systemDriven.emplace(*at, &d);
+            }
+        }
+        const auto it = m_systemDriven.find(a);
+        return it == m_systemDriven.end() ? nullptr : it->second;
+    }
+
+    // The instructions that drive a relay (a bit); RST and the zone reset also clear timers,
+    // counters and registers.
+    static bool drivesABit(Op op) {
+        return op == Op::Out || op == Op::Set || op == Op::Keep || op == Op::PulseRise ||
+               op == Op::PulseFall;
+    }
+
+    // Moves the finding to the column of `device` on the instruction's line, when the source
+    // text is at hand.
+    void atOperand(Finding &f, int i, const QString &device) {
+        if (!m_source || at(i).line <= 0)
+            return;
+        if (m_sourceLines.isEmpty())
+            m_sourceLines = m_source->split(QLatin1Char('\n'));
+        const QString line = m_sourceLines.value(at(i).line - 1);
+        const qsizetype found =
+            line.indexOf(device, std::max(0, at(i).column), Qt::CaseInsensitive);
+        if (found >= 0)
+            f.diagnostic.location.column = static_cast<int>(found) + 1;
     }
 
     void operands() {
@@ -419,12 +397,30 @@ private:
                 }
                 const bool destination =
                     kind == OperandKind::BitDest || kind == OperandKind::WordDest;
-                if (destination && !area.writable && ins.op() != Op::Reset)
-                    add("OP002", Severity::Error, i,
-                        Tr::tr("%1 cannot be written: %2 are read-only")
-                            .arg(formatAddress(m_t, o.address),
-                                 QCoreApplication::translate("rung::model::Target",
-                                                             area.description)));
+                const QString device = formatAddress(m_t, o.address);
+                if (destination && !area.writable && ins.op() != Op::Reset) {
+                    atOperand(add("OP002", Severity::Error, i,
+                                  Tr::tr("%1 cannot be written: %2 are read-only")
+                                      .arg(device, QCoreApplication::translate(
+                                                       "rung::model::Target", area.description))),
+                              i, device);
+                } else if (destination && driveBySystem(o.address)) {
+                    atOperand(add("OP002", Severity::Error, i,
+                                  Tr::tr("%1 cannot be written: the PLC drives it (%2)")
+                                      .arg(device, QCoreApplication::translate(
+                                                       "rung::model::Target",
+                                                       driveBySystem(o.address)->description))),
+                              i, device);
+                } else if (kind == OperandKind::BitDest && drivesABit(ins.op()) &&
+                           (area.kind == AreaKind::Timer || area.kind == AreaKind::Counter ||
+                            (area.kind == AreaKind::Word && o.address.bit < 0))) {
+                    atOperand(add("OP002", Severity::Error, i,
+                                  Tr::tr("%1 cannot drive %2: %3 are not relays")
+                                      .arg(name(i), device,
+                                           QCoreApplication::translate("rung::model::Target",
+                                                                       area.description))),
+                              i, device);
+                }
                 if (area.bank >= 0 &&
                     (area.kind == AreaKind::Timer || area.kind == AreaKind::Counter)) {
                     auto &use = bankUse[o.address.index];
@@ -489,12 +485,27 @@ private:
                     .arg(limit));
     }
 
-    // Outputs with no condition and blocks left open, as the conversion finds them.
+    // What keeps the listing from being drawn, as the conversion finds it, by the documented
+    // codes: an output with no condition (OC001), blocks left open or missing (BL001). MRD/MPP
+    // without MPS and MPS left open are ST002/ST003, which blocksAndStack() has reported.
     void structure() {
+        const auto reported = [this](const char *code, const Location &at) {
+            return std::any_of(m_found.begin(), m_found.end(), [&](const Finding &f) {
+                return f.diagnostic.code == QLatin1String(code) &&
+                       (f.diagnostic.location.line == at.line ||
+                        QLatin1String(code) == QLatin1String("ST003"));
+            });
+        };
         for (const Diagnostic &d : m_ladder.problems) {
+            const bool stack = d.code == QLatin1String("CV004");
+            const bool open = d.code == QLatin1String("CV008");
+            if ((stack && reported("ST002", d.location)) || (open && reported("ST003", d.location)))
+                continue;
             Finding f;
             f.diagnostic = d;
             f.diagnostic.code = d.code == QLatin1String("CV006") ? QStringLiteral("OC001")
+                                : stack                          ? QStringLiteral("ST002")
+                                : open                           ? QStringLiteral("ST003")
                                                                  : QStringLiteral("BL001");
             for (int i = 0; i < size(); ++i)
                 if (at(i).line == d.location.line && at(i).column == d.location.column)
@@ -503,23 +514,31 @@ private:
         }
     }
 
+    bool m_verifyMoves = true;
+    bool m_withForms = true;
     const InstructionList &m_list;
     const Target &m_t;
     const ModelVariant *m_model;
     bool m_formOnly = false;
+    const QString *m_source = nullptr;
+    QStringList m_sourceLines; // split on the first operand finding
     std::vector<std::pair<int, int>> m_spans;
     ToLadderResult m_ladder;
-    ToListingResult m_back;
-    bool m_canonical = false;
+    bool m_systemParsed = false;
+    std::map<Address, const SystemDevice *> m_systemDriven;
+    std::map<int, SpanForm> m_forms; // by the rung's first instruction
     std::vector<Finding> m_found;
 };
 
 } // namespace
 
-std::vector<Finding> checkListFindings(const InstructionList &list, const CheckOptions &options) {
+std::vector<Finding> checkListFindings(const InstructionList &list, const CheckOptions &options,
+                                       bool forms) {
     if (!list.target)
         return {};
-    return ListChecker(list, options).run();
+    ListChecker checker(list, options);
+    checker.setForms(forms);
+    return checker.run();
 }
 
 } // namespace rung::model::detail

@@ -46,16 +46,7 @@ int check(const QStringList &args, QTextStream &out, QTextStream &err) {
         err << error << '\n';
         return 2;
     }
-    std::vector<model::Diagnostic> all = input.problems;
-    model::CheckOptions checkOptions;
-    checkOptions.model = input.model;
-    if (!model::hasErrors(input.problems)) {
-        const auto found = input.kind == InputKind::Listing
-                               ? model::checkList(input.list, checkOptions)
-                               : model::checkLadder(input.ladder, checkOptions);
-        all.insert(all.end(), found.begin(), found.end());
-    }
-    model::sortDiagnostics(all);
+    const std::vector<model::Diagnostic> all = findings(input);
     for (const model::Diagnostic &d : all)
         out << formatDiagnostic(input.file, d) << '\n';
     return model::hasErrors(all) ? 1 : 0;
@@ -91,15 +82,20 @@ int convert(const QStringList &args, QTextStream &out, QTextStream &err) {
         err << error << '\n';
         return 2;
     }
-    for (const model::Diagnostic &d : input.problems)
-        err << formatDiagnostic(input.file, d) << '\n';
     if (model::hasErrors(input.problems)) {
+        // The reasons by the documented codes of `check`, not the conversion's own.
+        for (const model::Diagnostic &d : findings(input))
+            if (d.severity == model::Severity::Error)
+                err << formatDiagnostic(input.file, d) << '\n';
         err << Tr::tr("nothing written: the input has errors") << '\n';
         return 1;
     }
     QByteArray bytes;
     if (to == QLatin1String("il")) {
-        bytes = model::printInstructionList(input.list).toUtf8();
+        // A listing is written in the canonical form, through its ladder, as the IDE writes it.
+        const model::InstructionList canonical =
+            input.kind == InputKind::Listing ? model::ladderToList(input.ladder).list : input.list;
+        bytes = model::printInstructionList(canonical).toUtf8();
     } else if (to == QLatin1String("ladder")) {
         input.ladder.target = input.target;
         bytes = model::printLadderText(input.ladder).toUtf8();

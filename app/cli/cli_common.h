@@ -15,6 +15,7 @@ enum class InputKind { Listing, Ladder, Project };
 
 struct Input {
     QString file;
+    QString text; // the listing or ladder text as read (empty for a project)
     InputKind kind = InputKind::Listing;
     const model::Target *target = nullptr;
     const model::ModelVariant *model = nullptr;
@@ -37,6 +38,12 @@ bool parseCommonOptions(const QStringList &args, CommonOptions *options, QString
                         QString *error);
 // Loads the input; false with *error set (translated) for usage and I/O errors.
 bool loadInput(const CommonOptions &options, Input *input, QString *error);
+
+// Reads at most the size limit (and one byte more to tell it is over), so that a pipe or a
+// device that never ends is refused too; false with *error set (translated).
+bool readInputFile(const QString &path, QByteArray *bytes, QString *error);
+// What `check` prints: the syntax errors, or when the text parses every check's findings.
+std::vector<model::Diagnostic> findings(const Input &input);
 
 // "FILE:LINE:COL: error: message [CODE]" or "FILE:rung R:row:col: ..." (1-based).
 QString formatDiagnostic(const QString &file, const model::Diagnostic &d);

@@ -1,5 +1,7 @@
 #include "cli_simulate.h"
 
+#include "cli_common.h"
+
 #include "model/il.h"
 #include "simulator/compiler.h"
 #include "simulator/trace.h"
@@ -53,12 +55,14 @@ int runSimulateCommand(const QStringList &args, QTextStream &out, QTextStream &e
         err << usage() << '\n';
         return 2;
     }
-    QFile f(file);
-    if (!f.open(QIODevice::ReadOnly | QIODevice::Text)) {
-        err << Tr::tr("cannot read %1: %2").arg(file, f.errorString()) << '\n';
+    QByteArray bytes;
+    QString readError;
+    if (!readInputFile(file, &bytes, &readError)) {
+        err << readError << '\n';
         return 2;
     }
-    const QString text = QString::fromUtf8(f.readAll());
+    const QString text =
+        QString::fromUtf8(bytes).replace(QLatin1String("\r\n"), QLatin1String("\n"));
     if (targetId.isEmpty())
         targetId = targetFromListing(text);
     if (targetId.isEmpty()) {

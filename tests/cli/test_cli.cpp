@@ -268,3 +268,211 @@ TEST(CliCheck, BrokenProjectIsAnIoErrorWithTheReason) {
                                                 "is not valid JSON")))
         << r.err.toStdString();
 }
+
+// ---- check: every finding by its documented code --------------------------------------------
+
+namespace {
+
+CliRun checkText(const QTemporaryDir &dir, const char *name, const QByteArray &content,
+                 const char *target = nullptr) {
+    QStringList args{QStringLiteral("check"), write(dir, QString::fromLatin1(name), content)};
+    if (target)
+        args << QStringLiteral("--target") << QString::fromLatin1(target);
+    return cli(args);
+}
+
+// The codes of the printed findings, in order.
+QStringList codes(const QString &out) {
+    static const QRegularExpression re(QStringLiteral("\\[(\\w+)\\]$"),
+                                       QRegularExpression::MultilineOption);
+    QStringList found;
+    for (auto it = re.globalMatch(out); it.hasNext();)
+        found << it.next().captured(1);
+    return found;
+}
+
+} // namespace
+
+TEST(CliCheck, AListingThatCannotBeDrawnGetsEveryFindingByItsDocumentedCode) {
+    QTemporaryDir dir;
+    const CliRun r =
+        checkText(dir, "bl.il", "LD X0\nLD X1\nOUT Y0\nLD X2\nOUT X3\nLD X4\nOUT Y0\n", "vigor");
+    EXPECT_EQ(r.code, 1);
+    EXPECT_EQ(codes(r.out), (QStringList{QStringLiteral("BL001"), QStringLiteral("OP002"),
+                                         QStringLiteral("EN001"), QStringLiteral("DC001")}))
+        << r.out.toStdString();
+    EXPECT_TRUE(r.out.contains(QStringLiteral("bl.il:3:1: error: ")));
+    EXPECT_FALSE(r.out.contains(QStringLiteral("[CV"))) << r.out.toStdString();
+}
+
+TEST(CliCheck, StackAndConditionProblemsHaveTheirOwnCodes) {
+    QTemporaryDir dir;
+    QByteArray deep = "LD X0\n";
+    for (int i = 1; i <= 9; ++i)
+        deep += "MPS\nAND X" + QByteArray::number(i, 8) + "\n";
+    deep += "OUT Y0\n";
+    for (int i = 1; i <= 9; ++i)
+        deep += "MPP\nOUT Y" + QByteArray::number(i, 8) + "\n";
+    deep += "END\n";
+    const struct {
+        const char *program;
+        QStringList codes;
+    } cases[] = {
+        {deep.constData(), {QStringLiteral("ST001")}},
+        {"LD X0\nMPP\nOUT Y0\nEND\n", {QStringLiteral("ST002")}},
+        {"OUT Y0\nEND\n", {QStringLiteral("OC001")}},
+        {"LD X0\nMPS\nAND X1\nOUT Y0\nEND\n", {QStringLiteral("ST003")}},
+    };
+    for (const auto &c : cases) {
+        const CliRun r = checkText(dir, "s.il", c.program, "vigor");
+        EXPECT_EQ(r.code, 1);
+        EXPECT_EQ(codes(r.out), c.codes) << c.program << "\n" << r.out.toStdString();
+    }
+    // and where there is nothing to find, nothing
+    const CliRun clean =
+        checkText(dir, "c.il", "LD X0\nMPS\nAND X1\nOUT Y0\nMPP\nOUT Y1\nEND\n", "vigor");
+    EXPECT_EQ(clean.code, 0);
+    EXPECT_EQ(clean.out, QString());
+}
+
+TEST(CliCheck, AnOpenBranchOfALadderIsLD001) {
+    QTemporaryDir dir;
+    const CliRun r = checkText(dir, "open.ladder",
+                               "LADDER vigor WIDTH 8\n"
+                               "RUNG 1 ROWS 2 COLUMNS 2\n"
+                               "|-[ X0 ]---[ X1 ]--(OUT Y0)\n"
+                               "|\n"
+                               "|         -[ X2 ]--(OUT Y1)\n"
+                               "RUNG 2 ROWS 1 COLUMNS 0\n"
+                               "|-(END)\n");
+    EXPECT_EQ(r.code, 1);
+    EXPECT_EQ(codes(r.out), (QStringList{QStringLiteral("LD002"), QStringLiteral("LD001")}))
+        << r.out.toStdString();
+    EXPECT_TRUE(r.out.contains(QStringLiteral("open.ladder:rung 1:2:3: error: Open branch")));
+}
+
+TEST(CliCheck, TheLadderOfAProgramGetsNoListingFormWarnings) {
+    QTemporaryDir dir;
+    const CliRun r = checkText(dir, "or.ladder",
+                               "LADDER vigor WIDTH 8\n"
+                               "RUNG 1 ROWS 2 COLUMNS 1\n"
+                               "|-[ X0 ]-+(OUT Y0)\n"
+                               "|        |\n"
+                               "|-[ X1 ]-+\n"
+                               "RUNG 2 ROWS 1 COLUMNS 0\n"
+                               "|-(END)\n");
+    EXPECT_EQ(r.code, 0);
+    EXPECT_EQ(r.out, QString());
+    const CliRun order =
+        cli({QStringLiteral("check"),
+             QStringLiteral(RUNG_SOURCE_DIR "/tests/data/il/vigor_seed_execution_order.il"),
+             QStringLiteral("--target"), QStringLiteral("vigor")});
+    EXPECT_FALSE(order.out.contains(QStringLiteral("[FZ"))) << order.out.toStdString();
+    const CliRun bridge =
+        cli({QStringLiteral("check"),
+             QStringLiteral(RUNG_SOURCE_DIR "/tests/data/ladder/bridge_corrected.ladder")});
+    EXPECT_EQ(codes(bridge.out), QStringList{QStringLiteral("EN001")}) << bridge.out.toStdString();
+}
+
+TEST(CliCheck, AFindingAboutTheWholeFileHasAPlaceToo) {
+    QTemporaryDir dir;
+    const CliRun r = checkText(dir, "e.ladder", "LADDER vigor WIDTH 8\n");
+    EXPECT_EQ(r.code, 1);
+    EXPECT_EQ(
+        r.out,
+        QStringLiteral("%1: error: END is missing [EN001]\n").arg(dir.filePath("e.ladder:1:1")));
+}
+
+TEST(CliCheck, ALadderWithoutItsHeaderIsASyntaxErrorWithOrWithoutTarget) {
+    QTemporaryDir dir;
+    const QByteArray text = "RUNG 1 ROWS 1 COLUMNS 1\n|-[ X0 ]--(OUT Y0)\n";
+    for (const char *target : {static_cast<const char *>(nullptr), "vigor"}) {
+        const CliRun r = checkText(dir, "h.ladder", text, target);
+        EXPECT_EQ(r.code, 1) << (target ? target : "no target") << r.err.toStdString();
+        EXPECT_TRUE(r.out.startsWith(dir.filePath(QStringLiteral("h.ladder:1:1: error: "))))
+            << r.out.toStdString();
+        EXPECT_TRUE(r.out.contains(QStringLiteral("[SYN001]")));
+    }
+}
+
+// ---- input size -----------------------------------------------------------------------------
+
+TEST(CliInput, AFileOverTheLimitIsRefusedWithoutReadingItAll) {
+    QTemporaryDir dir;
+    const QString path = dir.filePath(QStringLiteral("big.il"));
+    {
+        QFile f(path);
+        ASSERT_TRUE(f.open(QIODevice::WriteOnly));
+        const QByteArray rung = "LD X0\nOUT Y0\n";
+        QByteArray chunk;
+        while (chunk.size() < 1024 * 1024)
+            chunk += rung;
+        for (int i = 0; i < 9; ++i)
+            f.write(chunk);
+    }
+    const CliRun r =
+        cli({QStringLiteral("check"), path, QStringLiteral("--target"), QStringLiteral("vigor")});
+    EXPECT_EQ(r.code, 2);
+    EXPECT_TRUE(r.err.contains(path)) << r.err.toStdString();
+    EXPECT_TRUE(r.err.contains(QStringLiteral("8 MB"))) << r.err.toStdString();
+    EXPECT_EQ(r.out, QString());
+}
+
+TEST(CliInput, AnEndlessDeviceIsRefused) {
+    if (!QFile::exists(QStringLiteral("/dev/zero")))
+        GTEST_SKIP() << "no /dev/zero";
+    for (const char *command : {"check", "convert"}) {
+        QStringList args{QString::fromLatin1(command), QStringLiteral("/dev/zero"),
+                         QStringLiteral("--target"), QStringLiteral("vigor")};
+        if (QLatin1String(command) == QLatin1String("convert"))
+            args << QStringLiteral("--to") << QStringLiteral("ladder");
+        const CliRun r = cli(args);
+        EXPECT_EQ(r.code, 2) << command;
+        EXPECT_TRUE(r.err.contains(QStringLiteral("8 MB"))) << r.err.toStdString();
+    }
+    const CliRun simulated =
+        cli({QStringLiteral("simulate"), QStringLiteral("/dev/zero"), QStringLiteral("--target"),
+             QStringLiteral("vigor"), QStringLiteral("--scans"), QStringLiteral("1"),
+             QStringLiteral("--trace"), QStringLiteral("Y0")});
+    EXPECT_EQ(simulated.code, 2);
+    EXPECT_TRUE(simulated.err.contains(QStringLiteral("8 MB"))) << simulated.err.toStdString();
+}
+
+TEST(CliInput, RandomBytesAreASyntaxErrorNotACrash) {
+    QTemporaryDir dir;
+    QByteArray bytes;
+    std::uint32_t x = 12345;
+    for (int i = 0; i < 64 * 1024; ++i) {
+        x = x * 1664525u + 1013904223u;
+        bytes += static_cast<char>(x >> 24);
+    }
+    for (const char *name : {"r.il", "r.ladder"}) {
+        const CliRun r = checkText(dir, name, bytes, "vigor");
+        EXPECT_EQ(r.code, 1) << name << r.err.toStdString();
+        EXPECT_TRUE(r.out.contains(QStringLiteral("[SYN001]"))) << name;
+    }
+}
+
+// ---- convert --------------------------------------------------------------------------------
+
+TEST(CliConvert, AListingIsWrittenBackInTheCanonicalForm) {
+    QTemporaryDir dir;
+    const QString file = write(dir, QStringLiteral("v.il"), "LD X0\nLD X1\nANB\nOUT Y0\nEND\n");
+    const CliRun r = cli({QStringLiteral("convert"), file, QStringLiteral("--target"),
+                          QStringLiteral("vigor"), QStringLiteral("--to"), QStringLiteral("il")});
+    EXPECT_EQ(r.code, 0) << r.err.toStdString();
+    EXPECT_EQ(r.out, QStringLiteral("LD X0\nAND X1\nOUT Y0\nEND\n"));
+}
+
+TEST(CliConvert, TheReasonsForWritingNothingAreTheDocumentedCodes) {
+    QTemporaryDir dir;
+    const QString file = write(dir, QStringLiteral("m.il"), "LD X0\nMPP\nOUT Y0\nEND\n");
+    const CliRun r =
+        cli({QStringLiteral("convert"), file, QStringLiteral("--target"), QStringLiteral("vigor"),
+             QStringLiteral("--to"), QStringLiteral("ladder")});
+    EXPECT_EQ(r.code, 1);
+    EXPECT_TRUE(
+        r.err.contains(QStringLiteral("m.il:2:1: error: MPP without a matching MPS [ST002]")))
+        << r.err.toStdString();
+    EXPECT_FALSE(r.err.contains(QStringLiteral("[CV")));
+}

@@ -1,8 +1,11 @@
 #include "model/checks.h"
 #include "model/convert.h"
 #include "model/ladder_text.h"
+#include "random_program.h"
 
 #include <gtest/gtest.h>
+
+#include <algorithm>
 
 using namespace rung::model;
 
@@ -67,12 +70,14 @@ const Case kCases[] = {
      "X11;ANB;ANB;ANB;ANB;ANB;ANB;ANB;ANB;ANB;OUT Y0;END",
      "LD X0;LD X1;LD X2;LD X3;LD X4;LD X5;LD X6;LD X7;LD X10;ANB;ANB;ANB;ANB;ANB;ANB;ANB;ANB;OUT "
      "Y0;END"},
-    {"FZ004", Family::Vigor, nullptr, "LD X0;LD X1;OR X2;ANB;OUT Y0;END",
-     "LD X1;OR X2;AND X0;OUT Y0;END"},
-    {"FZ005", Family::Vigor, nullptr, "LD X0;LD X1;AND X2;ORB;OUT Y0;END",
-     "LD X1;AND X2;OR X0;OUT Y0;END"},
-    {"FZ006", Family::Vigor, nullptr, "LD X0;MPS;AND X1;OUT Y0;MPP;OUT Y1;END",
-     "LD X0;OUT Y1;AND X1;OUT Y0;END"},
+    // FZ004-FZ006 only where the text is not the canonical one (the canonical listing of a
+    // ladder never gets a fuzzy-form warning); the clean program is the fix applied.
+    {"FZ004", Family::Vigor, nullptr, "LD X0;LD X1;LD X2;ORB;ANB;OUT Y0;END",
+     "LD X1;LD X2;ORB;AND X0;OUT Y0;END"},
+    {"FZ005", Family::Vigor, nullptr, "LD X0;LD X1;AND X2;LD X3;ORB;ORB;OUT Y0;END",
+     "LD X1;AND X2;LD X3;ORB;OR X0;OUT Y0;END"},
+    {"FZ006", Family::Vigor, nullptr, "LD X0;MPS;LD X1;LD X2;ORB;ANB;OUT Y0;MPP;OUT Y1;END",
+     "LD X0;OUT Y1;LD X1;LD X2;ORB;ANB;OUT Y0;END"},
     // Branch stack.
     {"ST001", Family::Vigor, nullptr,
      "LD X0;MPS;AND X1;MPS;AND X2;MPS;AND X3;MPS;AND X4;MPS;AND X5;MPS;AND X6;MPS;AND X7;MPS;AND "
@@ -300,4 +305,221 @@ TEST(Checks, FormOnlyGivesTheFuzzyFormsAloneWithTheirFixes) {
     ASSERT_TRUE(stacked->fix.has_value());
     EXPECT_EQ(stacked->fix->listing,
               QStringLiteral("LD X0\nOR X1\nLD X2\nOR X3\nANB\nLD X4\nOR X5\nANB\nOUT Y0\n"));
+}
+
+// ---- fuzzy forms: only where the text is not canonical, and every fix does something ---------
+
+namespace {
+
+ParseResult parsed(Family family, const QString &listing) {
+    ParseResult p = parseInstructionList(Target::get(family), listing);
+    EXPECT_TRUE(p.ok()) << listing.toStdString();
+    return p;
+}
+
+// The listing with lines [fix.firstLine, fix.lastLine] replaced by the fix.
+QString applied(const QString &listing, const Fix &fix) {
+    QStringList lines = listing.split(QLatin1Char('\n'));
+    QStringList out = lines.mid(0, fix.firstLine - 1);
+    QString replacement = fix.listing;
+    if (replacement.endsWith(QLatin1Char('\n')))
+        replacement.chop(1);
+    out += replacement.split(QLatin1Char('\n'));
+    out += lines.mid(fix.lastLine);
+    return out.join(QLatin1Char('\n'));
+}
+
+int count(const std::vector<Diagnostic> &ds, const QString &code) {
+    return static_cast<int>(
+        std::count_if(ds.begin(), ds.end(), [&](const Diagnostic &d) { return d.code == code; }));
+}
+
+} // namespace
+
+TEST(FuzzyForms, TheCanonicalListingOfRandomProgramsHasNoFuzzyForm) {
+    for (const Family family : {Family::Vigor, Family::Vpc, Family::Cpm1, Family::Pl110})
+        for (std::uint64_t seed = 1; seed <= 40; ++seed) {
+            const QString program = rung::testing::randomProgram(Target::get(family), seed);
+            const ToLadderResult drawn = listToLadder(parsed(family, program).list);
+            ASSERT_TRUE(drawn.ok()) << program.toStdString();
+            const ToListingResult back = ladderToList(drawn.ladder);
+            ASSERT_TRUE(back.ok());
+            const QString canonical = printInstructionList(back.list);
+            for (const Diagnostic &d : checkList(parsed(family, canonical).list))
+                EXPECT_FALSE(d.code.startsWith(QLatin1String("FZ")))
+                    << d.code.toStdString() << " at line " << d.location.line << " of\n"
+                    << canonical.toStdString();
+        }
+}
+
+TEST(FuzzyForms, EveryFixChangesTheTextAndClearsItsCode) {
+    int fixes = 0;
+    for (const Family family : {Family::Vigor, Family::Vpc, Family::Cpm1, Family::Pl110})
+        for (std::uint64_t seed = 1; seed <= 40; ++seed) {
+            const QString program = rung::testing::randomProgram(Target::get(family), seed);
+            const auto found = checkList(parsed(family, program).list);
+            for (const Diagnostic &d : found) {
+                if (!d.code.startsWith(QLatin1String("FZ")) || !d.fix)
+                    continue;
+                ++fixes;
+                const QString before =
+                    program.split(QLatin1Char('\n'))
+                        .mid(d.fix->firstLine - 1, d.fix->lastLine - d.fix->firstLine + 1)
+                        .join(QLatin1Char('\n'));
+                const QString after = applied(program, *d.fix);
+                EXPECT_NE(printInstructionList(parsed(family, after).list),
+                          printInstructionList(parsed(family, program).list))
+                    << d.code.toStdString() << ": the fix changes nothing in\n"
+                    << before.toStdString();
+                // The fixed rung has that form once less (a rung may have it twice).
+                const auto inRung = [&](const std::vector<Diagnostic> &ds, int lines) {
+                    return std::count_if(ds.begin(), ds.end(), [&](const Diagnostic &e) {
+                        return e.code == d.code && e.location.line >= d.fix->firstLine &&
+                               e.location.line < d.fix->firstLine + lines;
+                    });
+                };
+                const auto again = checkList(parsed(family, after).list);
+                EXPECT_LT(inRung(again, static_cast<int>(d.fix->listing.count(QLatin1Char('\n')))),
+                          inRung(found, d.fix->lastLine - d.fix->firstLine + 1))
+                    << d.code.toStdString() << " stays after its fix of\n"
+                    << before.toStdString() << "\ninto\n"
+                    << d.fix->listing.toStdString();
+            }
+        }
+    EXPECT_GT(fixes, 20) << "the random programs have fuzzy forms to fix";
+}
+
+TEST(FuzzyForms, TheReorderingFixesAreTheManualsForms) {
+    const struct {
+        const char *code;
+        const char *program;
+        const char *fixed;
+    } cases[] = {
+        {"FZ004", "LD X0;LD X1;LD X2;ORB;ANB;OUT Y0;END", "LD X1;LD X2;ORB;AND X0;OUT Y0"},
+        {"FZ005", "LD X0;LD X1;AND X2;LD X3;ORB;ORB;OUT Y0;END",
+         "LD X1;AND X2;LD X3;ORB;OR X0;OUT Y0"},
+        {"FZ006", "LD X0;MPS;LD X1;LD X2;ORB;ANB;OUT Y0;MPP;OUT Y1;END",
+         "LD X0;OUT Y1;LD X1;LD X2;ORB;ANB;OUT Y0"},
+        {"FZ006", "LD X0;MPS;LD X1;LD X2;ORB;ANB;OUT Y0;MRD;OUT Y1;MPP;AND X3;OUT Y2;END",
+         "LD X0;OUT Y1;MPS;LD X1;LD X2;ORB;ANB;OUT Y0;MPP;AND X3;OUT Y2"},
+    };
+    for (const auto &c : cases) {
+        const auto ds = check(Family::Vigor, nullptr, text(c.program));
+        const Diagnostic *d = find(ds, c.code);
+        ASSERT_NE(d, nullptr) << c.program << "\n" << all(ds).toStdString();
+        ASSERT_TRUE(d->fix.has_value()) << c.program;
+        EXPECT_EQ(d->fix->listing, text(c.fixed) + QLatin1Char('\n')) << c.program;
+    }
+}
+
+TEST(FuzzyForms, CanonicalFormsOfTheManualGetNoWarning) {
+    // The converter's own output of the manual's execution-order example and of the forms the
+    // fuzzy-form warnings used to fire on although there is nothing else to write.
+    for (const char *program :
+         {"LD X0;OR M0;AND X1;LD X3;AND M1;ORB;LD Y1;AND X4;LD T0;AND M3;ORB;ANB;OUT Y1;TMR T0 "
+          "K10;END",
+          "LD X0;LD X1;OR X2;ANB;OUT Y0;END", "LD X0;LD X1;AND X2;ORB;OUT Y0;END",
+          "LD X0;MPS;AND X1;OUT Y0;MPP;OUT Y1;END"}) {
+        const auto ds = check(Family::Vigor, nullptr, text(program));
+        EXPECT_EQ(count(ds, QStringLiteral("FZ002")) + count(ds, QStringLiteral("FZ004")) +
+                      count(ds, QStringLiteral("FZ005")) + count(ds, QStringLiteral("FZ006")),
+                  0)
+            << program << "\n"
+            << all(ds).toStdString();
+    }
+}
+
+TEST(FuzzyForms, ALadderHasNoFuzzyFormWarnings) {
+    const Target &t = Target::get(Family::Vigor);
+    const ToLadderResult lad = listToLadder(
+        parsed(Family::Vigor, text("LD X0;LD X1;LD X2;LD X3;ORB;ORB;ORB;OUT Y0;END")).list);
+    ASSERT_TRUE(lad.ok());
+    ASSERT_EQ(lad.ladder.target, &t);
+    for (const Diagnostic &d : checkLadder(lad.ladder))
+        EXPECT_FALSE(d.code.startsWith(QLatin1String("FZ"))) << d.code.toStdString();
+}
+
+// ---- operands the instruction cannot write --------------------------------------------------
+
+TEST(Checks, TheDevicesThePlcDrivesCannotBeWritten) {
+    const struct {
+        Family family;
+        const char *program;
+        const char *device;
+    } driven[] = {
+        {Family::Vigor, "LD X0;OUT M9000;END", "M9000"},
+        {Family::Vigor, "LD X0;OUT M9002;END", "M9002"},
+        {Family::Vigor, "LD X0;SET M9013;END", "M9013"},
+        {Family::Vigor, "LD X0;MOV K5 D9010;END", "D9010"},
+        {Family::Vpc, "LD i00;OUT r88;END", "r88"},
+        {Family::Cpm1, "LD 000.00;OUT 253.13;END(01)", "253.13"},
+    };
+    for (const auto &c : driven) {
+        const auto ds = check(c.family, nullptr, text(c.program));
+        const Diagnostic *d = find(ds, "OP002");
+        ASSERT_NE(d, nullptr) << c.program << "\n" << all(ds).toStdString();
+        EXPECT_TRUE(d->message.startsWith(QString::fromLatin1(c.device))) << c.program;
+        EXPECT_EQ(d->location.line, 2);
+    }
+    // Read, or written where the program may (seed 001 drives M9100 to start dialing).
+    for (const char *program :
+         {"LD M9000;OUT Y0;END", "LD X0;OUT M9100;END", "LD M9013;MOV D9010 D0;END"})
+        EXPECT_EQ(find(check(Family::Vigor, nullptr, text(program)), "OP002"), nullptr) << program;
+}
+
+TEST(Checks, ACoilDrivesRelaysNotTimersCountersOrRegisters) {
+    for (const char *program :
+         {"LD X0;OUT T0;END", "LD X0;SET C0;END", "LD X0;OUT D0;END", "LD X0;PLS T1;END"}) {
+        const auto ds = check(Family::Vigor, nullptr, text(program));
+        ASSERT_NE(find(ds, "OP002"), nullptr) << program << "\n" << all(ds).toStdString();
+    }
+    EXPECT_NE(find(check(Family::Cpm1, nullptr, text("LD 000.00;OUT TIM 001;END(01)")), "OP002"),
+              nullptr);
+    // Resets clear timers, counters and registers.
+    for (const char *program : {"LD X0;RST T0;END", "LD X0;RST C0;END", "LD X0;RST D0;END",
+                                "LD X0;ZRST T0 T5;END", "LD X0;OUT S1;END"})
+        EXPECT_EQ(find(check(Family::Vigor, nullptr, text(program)), "OP002"), nullptr) << program;
+}
+
+TEST(Checks, AnOperandFindingPointsAtTheOperandWhenTheSourceIsAtHand) {
+    const Target &t = Target::get(Family::Vpc);
+    const QString source = QStringLiteral("LD i00\n  OUT   a01 ; no\nEND\n");
+    const ParseResult p = parseInstructionList(t, source);
+    ASSERT_TRUE(p.ok());
+    CheckOptions o;
+    o.source = &source;
+    const Diagnostic *d = find(checkList(p.list, o), "OP002");
+    ASSERT_NE(d, nullptr);
+    EXPECT_EQ(d->location.line, 2);
+    EXPECT_EQ(d->location.column, 9);
+    // Without the text, the instruction's column.
+    const auto plain = checkList(p.list);
+    ASSERT_NE(find(plain, "OP002"), nullptr);
+    EXPECT_EQ(find(plain, "OP002")->location.column, 3);
+}
+
+TEST(Checks, ProblemsThatKeepALadderFromItsListingAreLD003) {
+    // A box with several inputs must stand alone in its rung.
+    const Target &t = Target::get(Family::Vpc);
+    const ToLadderResult box =
+        listToLadder(parseInstructionList(t, text("LD i00;LD i01;LR r00;END")).list);
+    ASSERT_TRUE(box.ok()) << (box.problems.empty() ? "" : box.problems[0].message.toStdString());
+    LadderProgram bad = box.ladder;
+    const ToLadderResult coil = listToLadder(parseInstructionList(t, text("LD i02;OUT o00")).list);
+    ASSERT_TRUE(coil.ok());
+    // Give the box's rung one more row driving a coil.
+    Rung &r = bad.rungs[0];
+    const Rung &extra = coil.ladder.rungs[0];
+    ASSERT_EQ(extra.rows, 1);
+    const int row = r.rows;
+    r.resize(r.rows + 1, std::max(r.columns, extra.columns));
+    r.cell(row, 0) = extra.cell(0, 0);
+    r.outputs[static_cast<std::size_t>(row)] = extra.outputs[0];
+    const auto ds = checkLadder(bad);
+    const Diagnostic *d = find(ds, "LD003");
+    ASSERT_NE(d, nullptr) << all(ds).toStdString();
+    EXPECT_EQ(d->location.rung, 0);
+    for (const Diagnostic &e : ds)
+        EXPECT_FALSE(e.code.startsWith(QLatin1String("CV"))) << e.code.toStdString();
+    EXPECT_EQ(find(checkLadder(box.ladder), "LD003"), nullptr);
 }
