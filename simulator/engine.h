@@ -104,6 +104,8 @@ private:
     std::vector<RuntimeError> m_errors;
     ScanStatistics m_stats;
     quint64 m_scansSincePowerOn = 0;
+    qint64 m_scanMinMs = 0; // scan-time words: the shortest and longest period since power-on
+    qint64 m_scanMaxMs = 0;
     bool m_record = false;
     SnapshotChannel *m_channel = nullptr;
 };

@@ -174,6 +174,13 @@ template <bool Record> void Engine::execute() {
         case Code::Invert:
             acc = !acc;
             break;
+        case Code::EdgeFlow: {
+            std::uint8_t &prev = m_edges[static_cast<std::size_t>(s.slot)];
+            const bool now = acc;
+            acc = (s.flags & kFalling) ? (prev && !now) : (now && !prev);
+            prev = now;
+            break;
+        }
         case Code::Out:
             put(W, s.bit, acc != ((s.flags & kNegated) != 0));
             break;
@@ -208,6 +215,13 @@ template <bool Record> void Engine::execute() {
             const bool out = (s.flags & kFalling) ? (prev && !acc) : (acc && !prev);
             prev = acc;
             put(W, s.bit, out);
+            break;
+        }
+        case Code::Toggle: {
+            std::uint8_t &prev = m_edges[static_cast<std::size_t>(s.slot)];
+            if (acc && !prev)
+                put(W, s.bit, !rd(s.bit));
+            prev = acc;
             break;
         }
         case Code::Keep: {
