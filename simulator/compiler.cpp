@@ -242,6 +242,8 @@ CompileResult Compiler::run() {
                                                                : TransferKind::Assign);
             if (spec.negated)
                 s.flags |= kNegated;
+            if (m_sem.fourDigitTransfers)
+                s.flags |= kDecimal4;
             s.dest = destOf(ins, 0, true, &s.width);
             s.x = sourceOf(ins, 1);
             if (s.dest == m_program->parallelOutWord && s.dest >= 0)

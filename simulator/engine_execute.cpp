@@ -289,7 +289,8 @@ template <bool Record> void Engine::execute() {
             if (reset) {
                 st.accumulated = 0;
                 st.running = 0; // completion flag
-            } else if (upEdge != downEdge) {
+            } else if ((upEdge || downEdge) && !(up && down)) {
+                // seed 002: the value does not change while both inputs are at 1
                 if (upEdge) {
                     st.running = st.accumulated >= set;
                     st.accumulated = st.running ? 0 : st.accumulated + 1;
@@ -388,11 +389,17 @@ template <bool Record> void Engine::execute() {
                 const std::int64_t v = rdw(s.x);
                 const std::int64_t d = R[s.dest];
                 const auto kind = static_cast<TransferKind>(s.op);
-                wrw(s.dest,
-                    kind == TransferKind::Assign ? v
-                    : kind == TransferKind::Add  ? d + v
-                                                 : d - v,
-                    s.width);
+                std::int64_t r = kind == TransferKind::Assign ? v
+                                 : kind == TransferKind::Add  ? d + v
+                                                              : d - v;
+                if ((s.flags & kDecimal4) && (r < 0 || r > 9999)) [[unlikely]] {
+                    const std::int64_t wrapped = ((r % 10000) + 10000) % 10000;
+                    runtimeError(i, Tr::tr("result %1 is outside 0..9999; %2 is written")
+                                        .arg(r)
+                                        .arg(wrapped));
+                    r = wrapped;
+                }
+                wrw(s.dest, r, s.width);
             }
             break;
         case Code::Move:

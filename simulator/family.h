@@ -24,6 +24,9 @@ struct FamilySemantics {
     // but not their unit: Vigor D9010-D9012 (seed 001/004) and PL110 SM6-SM8 (seed 003,
     // "risoluzione 100 uS") count 0.1 ms. VPC and CPM1 have no such words.
     int scanTimeUnitUs = 1000;
+    // VPC decimal registers, counters and timers hold 0000..9999 (seed 000 III): a transfer
+    // whose result leaves that range wraps modulo 10000 and is a runtime diagnostic.
+    bool fourDigitTransfers = false;
 };
 
 inline FamilySemantics familySemantics(model::Family family) {
@@ -39,6 +42,7 @@ inline FamilySemantics familySemantics(model::Family family) {
         s.parallelIn = "p77";
         s.parallelInFirstBit = "i00";
         s.parallelBits = 12;
+        s.fourDigitTransfers = true;
         break;
     case model::Family::Vigor:
         s.scanTimeUnitUs = 100;

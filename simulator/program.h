@@ -75,6 +75,7 @@ enum StepFlag : std::uint8_t {
     kBcd = 8,     // set value read from a word holds BCD digits (CPM1)
     kRungStart = 16,
     kOneInput = 32, // counter reset only by RST (Vigor)
+    kDecimal4 = 64, // VPC transfer: the result is a four-digit decimal 0..9999 (seed 000)
 };
 
 enum class TransferKind : std::uint8_t { Assign, Add, Subtract };
