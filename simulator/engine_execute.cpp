@@ -394,9 +394,9 @@ template <bool Record> void Engine::execute() {
                                                               : d - v;
                 if ((s.flags & kDecimal4) && (r < 0 || r > 9999)) [[unlikely]] {
                     const std::int64_t wrapped = ((r % 10000) + 10000) % 10000;
-                    runtimeError(i, Tr::tr("result %1 is outside 0..9999; %2 is written")
-                                        .arg(r)
-                                        .arg(wrapped));
+                    runtimeError(
+                        i,
+                        Tr::tr("result %1 is outside 0..9999; %2 is written").arg(r).arg(wrapped));
                     r = wrapped;
                 }
                 wrw(s.dest, r, s.width);

@@ -98,12 +98,12 @@ TEST(GoldenTraceSet, CoversEveryFamilyExampleListedInTheIssue) {
     const std::vector<std::string> expected = {
         // Vigor, seed 004 1.9
         "vigor_stop_first_latch", "vigor_start_first_latch", "vigor_set_rst_order",
-        "vigor_interlock", "vigor_sequential_control", "vigor_oscillator",
-        "vigor_timer_oscillator", "vigor_flasher", "vigor_delay_off", "vigor_counting_extension",
+        "vigor_interlock", "vigor_sequential_control", "vigor_oscillator", "vigor_timer_oscillator",
+        "vigor_flasher", "vigor_delay_off", "vigor_counting_extension",
         // VPC, seed 000 chapter VII
         "vpc_compare_contacts", "vpc_add_compare", "vpc_set_value_arithmetic",
-        "vpc_out_not_transfer", "vpc_transfers", "vpc_analog", "vpc_interlock",
-        "vpc_counter_latch", "vpc_timers_down_up", "vpc_add_every_scan", "vpc_add_once_a_second",
+        "vpc_out_not_transfer", "vpc_transfers", "vpc_analog", "vpc_interlock", "vpc_counter_latch",
+        "vpc_timers_down_up", "vpc_add_every_scan", "vpc_add_once_a_second",
         // CPM1, seed 002
         "cpm1_and", "cpm1_or", "cpm1_out_not", "cpm1_and_ld", "cpm1_or_ld", "cpm1_keep",
         "cpm1_difu_difd", "cpm1_jmp_jme", "cpm1_tim_timh", "cpm1_cnt_cntr",
