@@ -89,6 +89,8 @@ private:
     }
     bool isStimulus(const model::Address &address) const;
     std::int32_t readSet(const Step &s, std::size_t step);
+    [[gnu::noinline, gnu::cold]] std::int64_t outOfDecimalRange(std::size_t step,
+                                                                std::int64_t value);
 
     std::shared_ptr<const Program> m_program;
     std::vector<std::int32_t> m_words;

@@ -77,6 +77,14 @@ std::int32_t Engine::readSet(const Step &s, std::size_t step) {
     return set;
 }
 
+// Kept out of the scan loop: the message's temporaries would otherwise weigh on it.
+std::int64_t Engine::outOfDecimalRange(std::size_t step, std::int64_t value) {
+    const std::int64_t wrapped = ((value % 10000) + 10000) % 10000;
+    runtimeError(step,
+                 Tr::tr("result %1 is outside 0..9999; %2 is written").arg(value).arg(wrapped));
+    return wrapped;
+}
+
 template <bool Record> void Engine::execute() {
     const Program &p = *m_program;
     const Step *steps = p.steps.data();
@@ -392,13 +400,8 @@ template <bool Record> void Engine::execute() {
                 std::int64_t r = kind == TransferKind::Assign ? v
                                  : kind == TransferKind::Add  ? d + v
                                                               : d - v;
-                if ((s.flags & kDecimal4) && (r < 0 || r > 9999)) [[unlikely]] {
-                    const std::int64_t wrapped = ((r % 10000) + 10000) % 10000;
-                    runtimeError(
-                        i,
-                        Tr::tr("result %1 is outside 0..9999; %2 is written").arg(r).arg(wrapped));
-                    r = wrapped;
-                }
+                if ((s.flags & kDecimal4) && (r < 0 || r > 9999)) [[unlikely]]
+                    r = outOfDecimalRange(i, r);
                 wrw(s.dest, r, s.width);
             }
             break;
