@@ -290,6 +290,12 @@ void Compiler::compileApply(const model::Instruction &ins, Step &s) {
         s.count = 1 + (area.kind == AreaKind::Bit ? span / 16 : span);
         break;
     }
+    case ApplyFunction::Toggle:
+        // OUTB (seed 003 4.2.3): each activation of the coil flips the bit
+        s.code = Code::Toggle;
+        s.bit = bitOf(ins, 0);
+        s.slot = m_program->edgeSlots++;
+        break;
     default:
         notSimulated(ins);
         s.code = Code::Nop;

@@ -9,6 +9,7 @@ namespace rung::simulator {
 namespace detail {
 
 void Compiler::compileSystem() {
+    m_program->scanTimeUnitUs = m_sem.scanTimeUnitUs;
     for (const model::SystemDevice &d : m_target.systemDevices) {
         const auto parsed = model::parseAddress(m_target, d.device);
         if (!std::holds_alternative<model::Address>(parsed))
@@ -165,7 +166,17 @@ CompileResult Compiler::run() {
                 --m_push;
             break;
         case Op::Invert:
-            s.code = Code::Invert;
+            // NOT, and PL110 P / N (seed 003 4.2.18), which edge-detect the power flow at
+            // their place in the rung: the mode tells them apart.
+            if (spec.mode == model::ContactMode::Rising ||
+                spec.mode == model::ContactMode::Falling) {
+                s.code = Code::EdgeFlow;
+                if (spec.mode == model::ContactMode::Falling)
+                    s.flags |= kFalling;
+                s.slot = m_program->edgeSlots++;
+            } else {
+                s.code = Code::Invert;
+            }
             break;
         case Op::Out:
             s.code = Code::Out;
@@ -231,6 +242,8 @@ CompileResult Compiler::run() {
                                                                : TransferKind::Assign);
             if (spec.negated)
                 s.flags |= kNegated;
+            if (m_sem.fourDigitTransfers)
+                s.flags |= kDecimal4;
             s.dest = destOf(ins, 0, true, &s.width);
             s.x = sourceOf(ins, 1);
             if (s.dest == m_program->parallelOutWord && s.dest >= 0)

@@ -89,6 +89,8 @@ private:
     }
     bool isStimulus(const model::Address &address) const;
     std::int32_t readSet(const Step &s, std::size_t step);
+    [[gnu::noinline, gnu::cold]] std::int64_t outOfDecimalRange(std::size_t step,
+                                                                std::int64_t value);
 
     std::shared_ptr<const Program> m_program;
     std::vector<std::int32_t> m_words;
@@ -104,6 +106,8 @@ private:
     std::vector<RuntimeError> m_errors;
     ScanStatistics m_stats;
     quint64 m_scansSincePowerOn = 0;
+    qint64 m_scanMinMs = 0; // scan-time words: the shortest and longest period since power-on
+    qint64 m_scanMaxMs = 0;
     bool m_record = false;
     SnapshotChannel *m_channel = nullptr;
 };

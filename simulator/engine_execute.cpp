@@ -77,6 +77,14 @@ std::int32_t Engine::readSet(const Step &s, std::size_t step) {
     return set;
 }
 
+// Kept out of the scan loop: the message's temporaries would otherwise weigh on it.
+std::int64_t Engine::outOfDecimalRange(std::size_t step, std::int64_t value) {
+    const std::int64_t wrapped = ((value % 10000) + 10000) % 10000;
+    runtimeError(step,
+                 Tr::tr("result %1 is outside 0..9999; %2 is written").arg(value).arg(wrapped));
+    return wrapped;
+}
+
 template <bool Record> void Engine::execute() {
     const Program &p = *m_program;
     const Step *steps = p.steps.data();
@@ -174,6 +182,13 @@ template <bool Record> void Engine::execute() {
         case Code::Invert:
             acc = !acc;
             break;
+        case Code::EdgeFlow: {
+            std::uint8_t &prev = m_edges[static_cast<std::size_t>(s.slot)];
+            const bool now = acc;
+            acc = (s.flags & kFalling) ? (prev && !now) : (now && !prev);
+            prev = now;
+            break;
+        }
         case Code::Out:
             put(W, s.bit, acc != ((s.flags & kNegated) != 0));
             break;
@@ -208,6 +223,13 @@ template <bool Record> void Engine::execute() {
             const bool out = (s.flags & kFalling) ? (prev && !acc) : (acc && !prev);
             prev = acc;
             put(W, s.bit, out);
+            break;
+        }
+        case Code::Toggle: {
+            std::uint8_t &prev = m_edges[static_cast<std::size_t>(s.slot)];
+            if (acc && !prev)
+                put(W, s.bit, !rd(s.bit));
+            prev = acc;
             break;
         }
         case Code::Keep: {
@@ -275,7 +297,8 @@ template <bool Record> void Engine::execute() {
             if (reset) {
                 st.accumulated = 0;
                 st.running = 0; // completion flag
-            } else if (upEdge != downEdge) {
+            } else if ((upEdge || downEdge) && !(up && down)) {
+                // seed 002: the value does not change while both inputs are at 1
                 if (upEdge) {
                     st.running = st.accumulated >= set;
                     st.accumulated = st.running ? 0 : st.accumulated + 1;
@@ -374,11 +397,12 @@ template <bool Record> void Engine::execute() {
                 const std::int64_t v = rdw(s.x);
                 const std::int64_t d = R[s.dest];
                 const auto kind = static_cast<TransferKind>(s.op);
-                wrw(s.dest,
-                    kind == TransferKind::Assign ? v
-                    : kind == TransferKind::Add  ? d + v
-                                                 : d - v,
-                    s.width);
+                std::int64_t r = kind == TransferKind::Assign ? v
+                                 : kind == TransferKind::Add  ? d + v
+                                                              : d - v;
+                if ((s.flags & kDecimal4) && (r < 0 || r > 9999)) [[unlikely]]
+                    r = outOfDecimalRange(i, r);
+                wrw(s.dest, r, s.width);
             }
             break;
         case Code::Move:

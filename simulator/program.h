@@ -31,12 +31,14 @@ enum class Code : std::uint8_t {
     ReadStack,
     Pop,
     Invert,
+    EdgeFlow, // PL110 P / N: the power flow for one scan on its rising (falling) edge
     // outputs
     Out,
     Set,
     SetStep, // SET of a step relay inside an STL block: the current step is reset
     Reset,   // resets a list of targets (bits, words, timer/counter elements)
     Pulse,
+    Toggle, // PL110 OUTB: each rising edge of the condition flips the bit
     Keep,
     Timer,
     Counter,
@@ -68,11 +70,12 @@ enum class Code : std::uint8_t {
 
 enum StepFlag : std::uint8_t {
     kNegated = 1, // NOT contacts, OUT NOT, OUT* transfers (run while the condition is OFF)
-    kFalling = 2, // falling-edge contacts, PLF / DIFD
+    kFalling = 2, // falling-edge contacts, PLF / DIFD, PL110 N
     kDown = 4,    // timers / counters that count down from the set value
     kBcd = 8,     // set value read from a word holds BCD digits (CPM1)
     kRungStart = 16,
     kOneInput = 32, // counter reset only by RST (Vigor)
+    kDecimal4 = 64, // VPC transfer: the result is a four-digit decimal 0..9999 (seed 000)
 };
 
 enum class TransferKind : std::uint8_t { Assign, Add, Subtract };
@@ -120,6 +123,7 @@ struct Program {
     std::vector<BitRef> bitLists;
     std::vector<ResetTarget> resets;
     std::vector<SystemBinding> system;
+    int scanTimeUnitUs = 1000; // unit of the scan-time words (FamilySemantics)
     int edgeSlots = 0;
     int maxBlockDepth = 0;
     int maxPushDepth = 0;

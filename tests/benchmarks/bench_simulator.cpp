@@ -13,6 +13,8 @@
 
 #include <benchmark/benchmark.h>
 
+#include <chrono>
+
 using namespace rung;
 using namespace rung::simulator;
 
@@ -91,6 +93,39 @@ void BM_Scan2048StepsWithPowerFlow(benchmark::State &state) {
     scanMixed(state, true);
 }
 
+// The cost of power-flow recording as one figure: blocks of plain and recording scans
+// alternate on two engines of the same program, so machine noise hits both alike.
+void BM_PowerFlowRatio(benchmark::State &state) {
+    using Clock = std::chrono::steady_clock;
+    Fixture plain(mixedProgram());
+    Fixture recording(mixedProgram());
+    if (!plain.result.ok() || !recording.result.ok()) {
+        state.SkipWithError("program did not compile");
+        return;
+    }
+    recording.engine.setPowerFlowRecording(true);
+    const model::Address input = plain.list.instructions[0].operands[0].address;
+    constexpr int kBlock = 1000;
+    double plainNs = 0;
+    double recordingNs = 0;
+    auto block = [&](Fixture &f) {
+        const auto start = Clock::now();
+        for (int k = 0; k < kBlock; ++k) {
+            f.engine.setBit(input, (k & 8) != 0);
+            f.engine.scan();
+        }
+        return std::chrono::duration<double, std::nano>(Clock::now() - start).count();
+    };
+    for (auto _ : state) {
+        plainNs += block(plain);
+        recordingNs += block(recording);
+    }
+    const double scans = static_cast<double>(state.iterations()) * kBlock;
+    state.counters["plain_ns_per_scan"] = plainNs / scans;
+    state.counters["flow_ns_per_scan"] = recordingNs / scans;
+    state.counters["ratio"] = plainNs > 0 ? recordingNs / plainNs : 0;
+}
+
 void BM_TrafficLight24Hours(benchmark::State &state) {
     for (auto _ : state) {
         Fixture f(QString::fromLatin1(kTrafficLight));
@@ -124,8 +159,13 @@ void BM_TrafficLight24HoursVigorListing(benchmark::State &state) {
 
 } // namespace
 
-BENCHMARK(BM_Scan2048Steps);
-BENCHMARK(BM_Scan2048StepsWithPowerFlow);
+// Repetitions give medians (the figures docs/simulator.md quotes).
+BENCHMARK(BM_Scan2048Steps)->Repetitions(5)->DisplayAggregatesOnly(true);
+BENCHMARK(BM_Scan2048StepsWithPowerFlow)->Repetitions(5)->DisplayAggregatesOnly(true);
+BENCHMARK(BM_PowerFlowRatio)
+    ->Unit(benchmark::kMillisecond)
+    ->Repetitions(5)
+    ->DisplayAggregatesOnly(true);
 BENCHMARK(BM_TrafficLight24Hours)->Unit(benchmark::kMillisecond)->Iterations(1)->Repetitions(3);
 BENCHMARK(BM_TrafficLight24HoursVigorListing)
     ->Unit(benchmark::kMillisecond)

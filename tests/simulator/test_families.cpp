@@ -70,9 +70,71 @@ TEST(SystemDevices, VigorM9000IsAlwaysOnAndM9002PulsesOnTheFirstScan) {
     ASSERT_TRUE(f.result.ok());
     EXPECT_EQ(f.bits("Y0", 4), "1000");
     EXPECT_TRUE(f.bit("Y1"));
+}
+
+// The scan-time words count 0.1 ms on Vigor (D9010-D9012) and PL110 (SM6-SM8, seed 003
+// "risoluzione 100 uS"); a virtual scan lasts one period. The devices come from the table.
+void expectScanTimeWordsInTenthsOfAMillisecond(model::Family family, const char *program) {
+    Family f(family, program);
+    ASSERT_TRUE(f.result.ok());
+    auto word = [&](model::SystemRole role) {
+        for (const model::SystemDevice &d : f.target.systemDevices)
+            if (d.role == role)
+                return f.value(d.device.toLatin1().constData());
+        ADD_FAILURE() << "no device for the role";
+        return -1;
+    };
+    using R = model::SystemRole;
     f.engine->setPeriodMs(20);
     f.engine->scan();
-    EXPECT_EQ(f.value("D9010"), 20); // scan time, current
+    EXPECT_EQ(word(R::ScanTimeCurrent), 200);
+    EXPECT_EQ(word(R::ScanTimeMin), 200);
+    EXPECT_EQ(word(R::ScanTimeMax), 200);
+    f.engine->setPeriodMs(5);
+    f.engine->scan();
+    f.engine->setPeriodMs(30);
+    f.engine->scan();
+    f.engine->setPeriodMs(10);
+    f.engine->scan();
+    EXPECT_EQ(word(R::ScanTimeCurrent), 100);
+    EXPECT_EQ(word(R::ScanTimeMin), 50);
+    EXPECT_EQ(word(R::ScanTimeMax), 300);
+    f.engine->powerCycle(); // min / max start again
+    f.engine->scan();
+    EXPECT_EQ(word(R::ScanTimeMin), 100);
+    EXPECT_EQ(word(R::ScanTimeMax), 100);
+}
+
+TEST(SystemDevices, VigorScanTimeCurrentMinMaxInTenthsOfAMillisecond) {
+    expectScanTimeWordsInTenthsOfAMillisecond(model::Family::Vigor, "LD M9000\nOUT Y0\nEND");
+}
+
+TEST(SystemDevices, Pl110ScanTimeCurrentMinMaxInTenthsOfAMillisecond) {
+    expectScanTimeWordsInTenthsOfAMillisecond(model::Family::Pl110, "LD SM0.0\nOUT Q1\nEND");
+}
+
+TEST(SystemDevices, ScanTimeWordsStopAt32767) {
+    Family f(model::Family::Vigor, "LD M9000\nOUT Y0\nEND");
+    ASSERT_TRUE(f.result.ok());
+    f.engine->setPeriodMs(5000);
+    f.engine->scan();
+    EXPECT_EQ(f.value("D9010"), 32767);
+}
+
+// r93 "0.01 s ON-OFF cycle" and r94 "0.1 s" (seed 000): ON for the first half of each cycle
+// of virtual time at the start of the scan. At the default 10 ms period r93 is sampled at
+// the same phase every scan and so reads ON in every scan (docs/simulator.md).
+TEST(SystemDevices, VpcR93AndR94AreTheHundredthAndTenthOfASecondClocks) {
+    Family f(model::Family::Vpc, "LD r93\nOUT o00\nLD r94\nOUT o01\nEND");
+    ASSERT_TRUE(f.result.ok());
+    EXPECT_EQ(f.bits("r94", 12), "111110000011");
+    EXPECT_TRUE(f.bit("o01")); // VPC: the coil shows r94 of the scan
+    EXPECT_EQ(f.bits("r93", 6), "111111");
+    Family g(model::Family::Vpc, "LD r93\nOUT o00\nLD r94\nOUT o01\nEND");
+    ASSERT_TRUE(g.result.ok());
+    g.engine->setPeriodMs(1);
+    EXPECT_EQ(g.bits("r93", 12), "111110000011");
+    EXPECT_EQ(g.bits("r94", 40), std::string(38, '1') + "00"); // 12 ms .. 51 ms
 }
 
 TEST(SystemDevices, Cpm1AlwaysOnFirstScanAndSecondClock) {
@@ -137,6 +199,68 @@ TEST(PowerCycle, Cpm1KeepsHoldingRelaysAndResetsTimers) {
     EXPECT_TRUE(f.bit("HR00.00"));
     EXPECT_FALSE(f.bit("200.00"));
     EXPECT_EQ(f.value("TIM 000"), 0);
+}
+
+TEST(PowerCycle, VigorLatchedRangesSurviveAndTheOthersClear) {
+    // M500+, S500+, C100+ (and the 32-bit C200+), D200+ are latched in the Vigor table.
+    Family f(model::Family::Vigor,
+             "LD X0\nOUT M0\nLD X0\nOUT M499\nLD X0\nOUT M500\nLD X0\nSET S0\nLD X0\n"
+             "SET S500\nLD X0\nCNT C0 K5\nLD X0\nCNT C100 K5\nLD X0\nCNT C200 K5\nLD X0\n"
+             "MOV K7 D199\nLD X0\nMOV K8 D200\nEND");
+    ASSERT_TRUE(f.parsed.ok());
+    ASSERT_TRUE(f.result.ok());
+    for (bool on : {true, false, true}) { // two rising edges: the counters hold 2
+        f.engine->setBit(f.at("X0"), on);
+        f.engine->scan();
+    }
+    for (const char *d : {"M0", "M499", "M500", "S0", "S500"})
+        ASSERT_TRUE(f.bit(d)) << d;
+    f.engine->setBit(f.at("X0"), false);
+    f.engine->powerCycle();
+    for (const char *d : {"M0", "M499", "S0"})
+        EXPECT_FALSE(f.bit(d)) << d;
+    EXPECT_TRUE(f.bit("M500"));
+    EXPECT_TRUE(f.bit("S500"));
+    EXPECT_EQ(f.value("C0"), 0);
+    EXPECT_EQ(f.value("C100"), 2);
+    EXPECT_EQ(f.value("C200"), 2);
+    EXPECT_EQ(f.value("D199"), 0);
+    EXPECT_EQ(f.value("D200"), 8);
+}
+
+TEST(PowerCycle, Cpm1CountersKeepTheirValue) {
+    Family f(model::Family::Cpm1, "LD 000.00\nLD 000.01\nCNT 001 #0010\nEND");
+    ASSERT_TRUE(f.result.ok());
+    f.engine->scan(); // CNT counts down from the set value
+    for (int k = 0; k < 3; ++k) {
+        f.engine->setBit(f.at("000.00"), true);
+        f.engine->scan();
+        f.engine->setBit(f.at("000.00"), false);
+        f.engine->scan();
+    }
+    ASSERT_EQ(f.value("CNT 001"), 7);
+    f.engine->powerCycle();
+    EXPECT_EQ(f.value("CNT 001"), 7);
+    f.engine->scan(); // the count goes on from there
+    f.engine->setBit(f.at("000.00"), true);
+    f.engine->scan();
+    EXPECT_EQ(f.value("CNT 001"), 6);
+}
+
+TEST(PowerCycle, VpcCountersKeepTheirCount) {
+    Family f(model::Family::Vpc, "LD i00\nLD i01\nCNT16\nEND");
+    ASSERT_TRUE(f.result.ok());
+    f.engine->writeSetValue(f.at("c16"), 10);
+    for (int k = 0; k < 4; ++k) {
+        f.engine->setBit(f.at("i00"), true);
+        f.engine->scan();
+        f.engine->setBit(f.at("i00"), false);
+        f.engine->scan();
+    }
+    ASSERT_EQ(f.value("c16"), 4);
+    f.engine->powerCycle();
+    EXPECT_EQ(f.value("c16"), 4);
+    EXPECT_EQ(f.engine->setValue(f.at("c16")), 10);
 }
 
 TEST(PowerCycle, FirstScanPulseComesAgain) {

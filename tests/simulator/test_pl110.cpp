@@ -25,6 +25,16 @@ struct Pl110 {
     model::Address at(const char *name) const {
         return std::get<model::Address>(model::parseAddress(target, QString::fromLatin1(name)));
     }
+    // Scans once per character of inputs ('1' = input ON) and collects the bit after each.
+    std::string run(const char *input, const char *inputs, const char *output) {
+        std::string out;
+        for (const char *c = inputs; *c; ++c) {
+            engine->setBit(at(input), *c == '1');
+            engine->scan();
+            out += engine->bit(at(output)) ? '1' : '0';
+        }
+        return out;
+    }
     const model::Target &target;
     model::ParseResult parsed;
     CompileResult result;
@@ -32,6 +42,108 @@ struct Pl110 {
 };
 
 } // namespace
+
+// Contacts and coils of seed 003 4.2.1 - 4.2.18 on the real PL110 table.
+TEST(Pl110Contacts, PIsOnForOneScanWhenThePowerFlowRises) {
+    Pl110 s("LD I1\nP\nOUT Q1\nEND");
+    ASSERT_TRUE(s.result.ok());
+    ASSERT_TRUE(s.result.diagnostics.empty());
+    EXPECT_EQ(s.run("I1", "0111001100", "Q1"), "0100001000");
+}
+
+TEST(Pl110Contacts, NIsOnForOneScanWhenThePowerFlowFalls) {
+    Pl110 s("LD I1\nN\nOUT Q1\nEND");
+    ASSERT_TRUE(s.result.ok());
+    EXPECT_EQ(s.run("I1", "0111001100", "Q1"), "0000100010");
+}
+
+TEST(Pl110Contacts, PActsOnThePowerFlowAtItsPlaceNotOnADevice) {
+    // I1 stays ON; the flow reaching P rises when I2 turns ON.
+    Pl110 s("LD I1\nAND I2\nP\nOUT Q1\nEND");
+    ASSERT_TRUE(s.result.ok());
+    s.engine->setBit(s.at("I1"), true);
+    EXPECT_EQ(s.run("I2", "011011", "Q1"), "010010");
+}
+
+TEST(Pl110Contacts, NotInvertsThePowerFlow) {
+    Pl110 s("LD I1\nAND I2\nNOT\nOUT Q1\nEND");
+    ASSERT_TRUE(s.result.ok());
+    s.engine->setBit(s.at("I1"), true);
+    EXPECT_EQ(s.run("I2", "0110", "Q1"), "1001");
+}
+
+TEST(Pl110Contacts, ImmediateInputContactReadsTheInput) {
+    Pl110 s("LDII I1\nOUT Q1\nLDNII I1\nOUT Q2\nEND");
+    ASSERT_TRUE(s.result.ok());
+    EXPECT_EQ(s.run("I1", "0110", "Q1"), "0110");
+    EXPECT_FALSE(s.engine->bit(s.at("Q1")));
+    EXPECT_TRUE(s.engine->bit(s.at("Q2")));
+}
+
+TEST(Pl110Contacts, BistableContactFollowsTheBBit) {
+    Pl110 s("LD B3\nOUT Q1\nLDN B3\nOUT Q2\nEND");
+    ASSERT_TRUE(s.result.ok());
+    s.engine->scan();
+    EXPECT_FALSE(s.engine->bit(s.at("Q1")));
+    EXPECT_TRUE(s.engine->bit(s.at("Q2")));
+    s.engine->setBit(s.at("B3"), true);
+    s.engine->scan();
+    EXPECT_TRUE(s.engine->bit(s.at("Q1")));
+    EXPECT_FALSE(s.engine->bit(s.at("Q2")));
+}
+
+TEST(Pl110Contacts, IfComparesTwoValues) {
+    Pl110 s("LD>= V1 V2\nOUT Q1\nLDIF<> V1 5\nOUT Q2\nEND");
+    ASSERT_TRUE(s.parsed.ok());
+    ASSERT_TRUE(s.result.ok());
+    s.engine->writeWord(s.at("V1"), 5);
+    s.engine->writeWord(s.at("V2"), 7);
+    s.engine->scan();
+    EXPECT_FALSE(s.engine->bit(s.at("Q1")));
+    EXPECT_FALSE(s.engine->bit(s.at("Q2")));
+    s.engine->writeWord(s.at("V2"), -3);
+    s.engine->writeWord(s.at("V1"), 6);
+    s.engine->scan();
+    EXPECT_TRUE(s.engine->bit(s.at("Q1")));
+    EXPECT_TRUE(s.engine->bit(s.at("Q2")));
+}
+
+TEST(Pl110Contacts, BitContactReadsOneBitOfAWord) {
+    Pl110 s("LD V3.5\nOUT Q1\nLDN V3.0\nOUT Q2\nEND");
+    ASSERT_TRUE(s.parsed.ok());
+    ASSERT_TRUE(s.result.ok());
+    s.engine->writeWord(s.at("V3"), 1 << 5 | 1);
+    s.engine->scan();
+    EXPECT_TRUE(s.engine->bit(s.at("Q1")));
+    EXPECT_FALSE(s.engine->bit(s.at("Q2")));
+    s.engine->writeWord(s.at("V3"), 1 << 4);
+    s.engine->scan();
+    EXPECT_FALSE(s.engine->bit(s.at("Q1")));
+    EXPECT_TRUE(s.engine->bit(s.at("Q2")));
+}
+
+TEST(Pl110Coils, ImmediateOutputIsSeenByTheRestOfTheScan) {
+    Pl110 s("LD I1\nOUTQI Q2\nLD Q2\nOUT M1\nEND");
+    ASSERT_TRUE(s.result.ok());
+    EXPECT_EQ(s.run("I1", "0110", "Q2"), "0110");
+    s.engine->setBit(s.at("I1"), true);
+    s.engine->scan();
+    EXPECT_TRUE(s.engine->bit(s.at("M1"))); // the same scan, not one later
+}
+
+TEST(Pl110Coils, BistableCoilFlipsOnEachActivation) {
+    Pl110 s("LD I1\nOUTB B1\nEND");
+    ASSERT_TRUE(s.result.ok());
+    ASSERT_TRUE(s.result.diagnostics.empty()); // simulated, not a SIM100 warning
+    EXPECT_EQ(s.run("I1", "0111010110", "B1"), "0111100111");
+}
+
+TEST(Pl110Coils, BistableCoilStartsFromTheBitAsWritten) {
+    Pl110 s("LD I1\nOUTB B2\nEND");
+    ASSERT_TRUE(s.result.ok());
+    s.engine->setBit(s.at("B2"), true);
+    EXPECT_EQ(s.run("I1", "0100", "B2"), "1000");
+}
 
 TEST(Pl110Timer, TimeBaseOperandSetsTheUnitOfTheCurrentValue) {
     Pl110 s("LD I1\nTON T1 5 1000\nEND");

@@ -1,0 +1,113 @@
+// Choices where a manual is ambiguous, on the real target tables (docs/simulator.md,
+// "Choices where the manuals are silent or ambiguous").
+
+#include "model/address.h"
+#include "model/il.h"
+#include "simulator/compiler.h"
+#include "simulator/engine.h"
+
+#include <gtest/gtest.h>
+
+using namespace rung;
+using namespace rung::simulator;
+
+namespace {
+
+struct Sim {
+    Sim(model::Family family, const char *text)
+        : target(model::Target::get(family))
+        , parsed(model::parseInstructionList(target, QString::fromLatin1(text))) {
+        if (parsed.ok())
+            result = compileProgram(parsed.list);
+        if (result.ok())
+            engine = std::make_unique<Engine>(result.program);
+    }
+    model::Address at(const char *name) const {
+        return std::get<model::Address>(model::parseAddress(target, QString::fromLatin1(name)));
+    }
+    void in(const char *name, bool on) { engine->setBit(at(name), on); }
+    std::int32_t value(const char *name) const { return engine->value(at(name)); }
+
+    const model::Target &target;
+    model::ParseResult parsed;
+    CompileResult result;
+    std::unique_ptr<Engine> engine;
+};
+
+} // namespace
+
+// Seed 002 CNTR(12): "Nem változik a számláló tartalma, ha mindkét bemeneten 1 szint van"
+// (the value does not change while both inputs are at 1): an edge on one input while the
+// other is held ON does not count, nor do edges arriving together.
+TEST(Cpm1ReversibleCounter, DoesNotCountWhileBothInputsAreOn) {
+    Sim s(model::Family::Cpm1, "LD 000.00\nLD 000.01\nLD 000.02\nCNTR(12) 003 #0005\nEND");
+    ASSERT_TRUE(s.parsed.ok());
+    ASSERT_TRUE(s.result.ok());
+    s.in("000.00", true);
+    s.engine->scan();
+    ASSERT_EQ(s.value("CNT 003"), 1);
+    s.in("000.01", true); // down edge while up is ON
+    s.engine->scan();
+    EXPECT_EQ(s.value("CNT 003"), 1);
+    s.in("000.00", false);
+    s.engine->scan(); // down still ON, up released: no edge, no count
+    EXPECT_EQ(s.value("CNT 003"), 1);
+    s.in("000.00", true); // up edge while down is ON
+    s.engine->scan();
+    EXPECT_EQ(s.value("CNT 003"), 1);
+    s.in("000.00", false);
+    s.in("000.01", false);
+    s.engine->scan();
+    s.in("000.00", true); // both rise together
+    s.in("000.01", true);
+    s.engine->scan();
+    EXPECT_EQ(s.value("CNT 003"), 1);
+    s.in("000.00", false);
+    s.in("000.01", false);
+    s.engine->scan();
+    s.in("000.01", true); // a lone down edge still counts
+    s.engine->scan();
+    EXPECT_EQ(s.value("CNT 003"), 0);
+}
+
+// Seed 000 III: p00..p75 hold 0000..9999, counters 0000..9999, timers 00.00..99.99 s. A
+// transfer whose result leaves 0..9999 writes it modulo 10000 (as the four-digit register
+// would show it) and is a runtime diagnostic naming the step, reported once per step.
+TEST(VpcDecimalRange, TransferPast9999WrapsAndIsReportedWithItsLine) {
+    Sim s(model::Family::Vpc, "LD r88\nOUT p00+p01\nEND");
+    ASSERT_TRUE(s.result.ok());
+    s.engine->writeWord(s.at("p00"), 9998);
+    s.engine->writeWord(s.at("p01"), 1);
+    s.engine->scan();
+    EXPECT_EQ(s.value("p00"), 9999);
+    EXPECT_TRUE(s.engine->runtimeErrors().empty());
+    s.engine->scan();
+    EXPECT_EQ(s.value("p00"), 0);
+    s.engine->scan();
+    EXPECT_EQ(s.value("p00"), 1);
+    ASSERT_EQ(s.engine->runtimeErrors().size(), 1u);
+    EXPECT_EQ(s.engine->runtimeErrors().front().line, 2);
+    EXPECT_TRUE(s.engine->runtimeErrors().front().message.contains(QStringLiteral("10000")));
+    EXPECT_TRUE(s.engine->runtimeErrors().front().message.contains(QStringLiteral("0..9999")));
+}
+
+TEST(VpcDecimalRange, SubtractionBelowZeroWrapsFrom9999) {
+    Sim s(model::Family::Vpc, "LD r88\nOUT t01-p01\nEND");
+    ASSERT_TRUE(s.result.ok());
+    s.engine->writeSetValue(s.at("t01"), 3);
+    s.engine->writeWord(s.at("p01"), 5);
+    s.engine->scan();
+    EXPECT_EQ(s.engine->setValue(s.at("t01")), 9998);
+    ASSERT_EQ(s.engine->runtimeErrors().size(), 1u);
+    EXPECT_TRUE(s.engine->runtimeErrors().front().message.contains(QStringLiteral("-2")));
+}
+
+TEST(VpcDecimalRange, OtherFamiliesKeepTheirWordWidth) {
+    Sim s(model::Family::Vigor, "LD M9000\nADD D0 D1 D2\nEND");
+    ASSERT_TRUE(s.result.ok());
+    s.engine->writeWord(s.at("D0"), 9999);
+    s.engine->writeWord(s.at("D1"), 1);
+    s.engine->scan();
+    EXPECT_EQ(s.value("D2"), 10000);
+    EXPECT_TRUE(s.engine->runtimeErrors().empty());
+}
