@@ -87,6 +87,7 @@ struct SystemDevice {
     QString device; // as written: "r88", "M9000", "253.13", "SM0.0"
     SystemRole role = SystemRole::Other;
     const char *description = nullptr; // QT_TRANSLATE_NOOP("rung::model::Target", ...)
+    int unitUs = 0; // a scan-time word's count in microseconds (100: Vigor D9010, PL110 SM6)
 };
 
 // What an instruction does, independent of its spelling.

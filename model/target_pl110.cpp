@@ -131,11 +131,11 @@ Target makePl110Target() {
         {QStringLiteral("SM0.13"), SystemRole::Other,
          QT_TRANSLATE_NOOP("rung::model::Target", "counters C1..C16 off, timers T49..T64 on")},
         {QStringLiteral("SM6"), SystemRole::ScanTimeCurrent,
-         QT_TRANSLATE_NOOP("rung::model::Target", "last scan time (0.1 ms)")},
+         QT_TRANSLATE_NOOP("rung::model::Target", "last scan time (0.1 ms)"), 100},
         {QStringLiteral("SM7"), SystemRole::ScanTimeMin,
-         QT_TRANSLATE_NOOP("rung::model::Target", "minimum scan time (0.1 ms)")},
+         QT_TRANSLATE_NOOP("rung::model::Target", "minimum scan time (0.1 ms)"), 100},
         {QStringLiteral("SM8"), SystemRole::ScanTimeMax,
-         QT_TRANSLATE_NOOP("rung::model::Target", "maximum scan time (0.1 ms)")},
+         QT_TRANSLATE_NOOP("rung::model::Target", "maximum scan time (0.1 ms)"), 100},
     };
 
     // Contacts. The plain spellings come first: Target::findInstruction(op, mode) returns the
@@ -271,7 +271,9 @@ Target makePl110Target() {
         {"StartPID", QT_TRANSLATE_NOOP("rung::model::Target", "Start a PID loop")},
         {"PID", QT_TRANSLATE_NOOP("rung::model::Target", "PID control loop")},
         {"SetOutPID", QT_TRANSLATE_NOOP("rung::model::Target", "Set the output of a PID loop")},
-        {"GENSET", QT_TRANSLATE_NOOP("rung::model::Target", "Setpoint generator with acceleration and deceleration ramps")},
+        {"GENSET",
+         QT_TRANSLATE_NOOP("rung::model::Target",
+                           "Setpoint generator with acceleration and deceleration ramps")},
         {"CONV", QT_TRANSLATE_NOOP("rung::model::Target", "Convert a value")},
         {"SetPAR", QT_TRANSLATE_NOOP("rung::model::Target", "Set a display parameter")},
         {"FormatPAR", QT_TRANSLATE_NOOP("rung::model::Target", "Format a display parameter")},

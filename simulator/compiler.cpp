@@ -9,7 +9,6 @@ namespace rung::simulator {
 namespace detail {
 
 void Compiler::compileSystem() {
-    m_program->scanTimeUnitUs = m_sem.scanTimeUnitUs;
     for (const model::SystemDevice &d : m_target.systemDevices) {
         const auto parsed = model::parseAddress(m_target, d.device);
         if (!std::holds_alternative<model::Address>(parsed))
@@ -22,6 +21,7 @@ void Compiler::compileSystem() {
         case model::SystemRole::ScanTimeMin:
         case model::SystemRole::ScanTimeMax:
             b.word = m_layout->word(a);
+            b.unitUs = d.unitUs > 0 ? d.unitUs : 1000;
             if (b.word >= 0)
                 m_program->system.push_back(b);
             break;

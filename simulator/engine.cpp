@@ -109,20 +109,20 @@ void Engine::beginScan() {
     for (const auto &[begin, end] : p.inputWordRanges)
         std::copy(m_stimulus.begin() + begin, m_stimulus.begin() + end, m_words.begin() + begin);
     const qint64 t = m_stats.timeMs;
-    // A virtual scan lasts exactly one period; the scan-time words show it in the family's
-    // unit (0.1 ms on Vigor and PL110), min / max since power-on.
+    // A virtual scan lasts exactly one period; the scan-time words show it in the unit the
+    // target table gives (0.1 ms on Vigor and PL110), min / max since power-on.
     const qint64 period = m_stats.periodMs;
     m_scanMinMs = m_scansSincePowerOn == 0 ? period : std::min(m_scanMinMs, period);
     m_scanMaxMs = m_scansSincePowerOn == 0 ? period : std::max(m_scanMaxMs, period);
-    auto scanTime = [&](qint64 ms) {
-        return static_cast<std::int32_t>(
-            std::min<qint64>(ms * 1000 / p.scanTimeUnitUs, 32767)); // 16-bit words
+    auto scanTime = [](qint64 ms, int unitUs) {
+        return static_cast<std::int32_t>(std::min<qint64>(ms * 1000 / unitUs, 32767)); // 16 bits
     };
     for (const SystemBinding &b : p.system) {
         if (b.word >= 0) {
             R[b.word] = scanTime(b.role == model::SystemRole::ScanTimeMin   ? m_scanMinMs
                                  : b.role == model::SystemRole::ScanTimeMax ? m_scanMaxMs
-                                                                            : period);
+                                                                            : period,
+                                 b.unitUs);
             continue;
         }
         bool on = false;

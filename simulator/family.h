@@ -20,10 +20,6 @@ struct FamilySemantics {
     const char *parallelIn = nullptr; // VPC i00..i11 -> p77
     const char *parallelInFirstBit = nullptr;
     int parallelBits = 0;
-    // Unit of the scan-time words (SystemRole::ScanTime*). The target tables name the devices
-    // but not their unit: Vigor D9010-D9012 (seed 001/004) and PL110 SM6-SM8 (seed 003,
-    // "risoluzione 100 uS") count 0.1 ms. VPC and CPM1 have no such words.
-    int scanTimeUnitUs = 1000;
     // VPC decimal registers, counters and timers hold 0000..9999 (seed 000 III): a transfer
     // whose result leaves that range wraps modulo 10000 and is a runtime diagnostic.
     bool fourDigitTransfers = false;
@@ -45,7 +41,6 @@ inline FamilySemantics familySemantics(model::Family family) {
         s.fourDigitTransfers = true;
         break;
     case model::Family::Vigor:
-        s.scanTimeUnitUs = 100;
         break;
     case model::Family::Cpm1:
         s.bcdSetValues = true;
@@ -57,7 +52,6 @@ inline FamilySemantics familySemantics(model::Family family) {
         break;
     case model::Family::Pl110:
         s.timerBaseMs = 100;
-        s.scanTimeUnitUs = 100;
         break;
     }
     return s;

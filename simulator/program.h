@@ -114,6 +114,7 @@ struct SystemBinding {
     model::SystemRole role = model::SystemRole::Other;
     BitRef bit;
     std::int32_t word = -1;
+    int unitUs = 1000; // scan-time words: microseconds per count, from the target table
 };
 
 struct Program {
@@ -123,7 +124,6 @@ struct Program {
     std::vector<BitRef> bitLists;
     std::vector<ResetTarget> resets;
     std::vector<SystemBinding> system;
-    int scanTimeUnitUs = 1000; // unit of the scan-time words (FamilySemantics)
     int edgeSlots = 0;
     int maxBlockDepth = 0;
     int maxPushDepth = 0;
