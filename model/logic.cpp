@@ -94,6 +94,9 @@ OutputImage evaluateList(const InstructionList &list, const BitReader &read) {
     std::vector<bool> blocks;
     std::vector<bool> stack;
     bool afterOutput = false;
+    // IL..ILC: every load (and OR) is ANDed with the interlock condition, as the simulator
+    // runs it (docs/simulator.md).
+    bool gate = true;
     for (const Instruction &ins : list.instructions) {
         if (!ins.spec)
             continue;
@@ -104,7 +107,7 @@ OutputImage evaluateList(const InstructionList &list, const BitReader &read) {
         case Op::Load:
             if (newRung)
                 blocks.clear();
-            blocks.push_back(image.contact(contactOf(ins)));
+            blocks.push_back(gate && image.contact(contactOf(ins)));
             continue;
         case Op::And:
             if (!blocks.empty())
@@ -112,7 +115,7 @@ OutputImage evaluateList(const InstructionList &list, const BitReader &read) {
             continue;
         case Op::Or:
             if (!blocks.empty())
-                blocks.back() = blocks.back() || image.contact(contactOf(ins));
+                blocks.back() = blocks.back() || (gate && image.contact(contactOf(ins)));
             continue;
         case Op::Invert:
             if (!blocks.empty())
@@ -140,6 +143,9 @@ OutputImage evaluateList(const InstructionList &list, const BitReader &read) {
             continue;
         case Op::End:
             return written;
+        case Op::InterlockClear:
+            gate = true;
+            continue;
         default:
             break;
         }
@@ -149,6 +155,8 @@ OutputImage evaluateList(const InstructionList &list, const BitReader &read) {
         if (blocks.size() < k)
             continue;
         std::vector<bool> in(blocks.end() - static_cast<std::ptrdiff_t>(k), blocks.end());
+        if (ins.op() == Op::Interlock)
+            gate = in[0];
         image.apply(ins, in);
         if (k > 1)
             blocks.resize(blocks.size() - k);
@@ -160,9 +168,12 @@ OutputImage evaluateList(const InstructionList &list, const BitReader &read) {
 OutputImage evaluateLadder(const LadderProgram &ladder, const BitReader &read) {
     OutputImage written;
     Image image(read, written);
+    bool gate = true; // IL..ILC, as in evaluateList
     for (const Rung &rung : ladder.rungs) {
         // Power flows left to right through closed contacts; wires and links conduct both
-        // ways. Contacts read the image as it stands when the rung starts.
+        // ways. The outputs act in row order, as the listing runs them, and a contact is read
+        // just before the first output it feeds: a branch point's contacts once for all its
+        // branches, a branch's own contacts after the branches above it have written.
         const int width = rung.columns + 1;
         std::vector<int> group(static_cast<std::size_t>(rung.rows * width));
         for (std::size_t i = 0; i < group.size(); ++i)
@@ -183,38 +194,63 @@ OutputImage evaluateLadder(const LadderProgram &ladder, const BitReader &read) {
                 if (rung.cell(r, c).kind == CellKind::Wire)
                     join(r * width + c, r * width + c + 1);
         }
-        std::vector<bool> closed(static_cast<std::size_t>(rung.rows * rung.columns), false);
+        const std::size_t cellCount = static_cast<std::size_t>(rung.rows * rung.columns);
+        std::vector<int> from(cellCount, -1);
+        std::vector<int> to(cellCount, -1);
         for (int r = 0; r < rung.rows; ++r)
             for (int c = 0; c < rung.columns; ++c) {
-                const Cell &cell = rung.cell(r, c);
-                closed[static_cast<std::size_t>(r * rung.columns + c)] =
-                    cell.kind == CellKind::Contact && !cell.contact.invert &&
-                    image.contact(cell.contact);
+                const std::size_t i = static_cast<std::size_t>(r * rung.columns + c);
+                if (rung.cell(r, c).kind != CellKind::Contact)
+                    continue;
+                from[i] = find(r * width + c);
+                to[i] = find(r * width + c + 1);
             }
-        std::vector<bool> powered(group.size(), false);
-        powered[static_cast<std::size_t>(find(0))] = true;
-        for (bool changed = true; changed;) {
-            changed = false;
-            for (int r = 0; r < rung.rows; ++r)
-                for (int c = 0; c < rung.columns; ++c) {
-                    if (!closed[static_cast<std::size_t>(r * rung.columns + c)])
+        // flood(start, forward, conducts): the groups reached from start.
+        auto flood = [&](int start, bool forward, const std::vector<char> &conducts) {
+            std::vector<char> reached(group.size(), 0);
+            reached[static_cast<std::size_t>(start)] = 1;
+            for (bool changed = true; changed;) {
+                changed = false;
+                for (std::size_t i = 0; i < cellCount; ++i) {
+                    if (from[i] < 0 || !conducts[i])
                         continue;
-                    const int from = find(r * width + c);
-                    const int to = find(r * width + c + 1);
-                    if (powered[static_cast<std::size_t>(from)] &&
-                        !powered[static_cast<std::size_t>(to)]) {
-                        powered[static_cast<std::size_t>(to)] = true;
+                    const int a = forward ? from[i] : to[i];
+                    const int b = forward ? to[i] : from[i];
+                    if (reached[static_cast<std::size_t>(a)] &&
+                        !reached[static_cast<std::size_t>(b)]) {
+                        reached[static_cast<std::size_t>(b)] = 1;
                         changed = true;
                     }
                 }
-        }
+            }
+            return reached;
+        };
+        const std::vector<char> all(cellCount, 1);
+        const std::vector<char> fromRail = flood(find(0), true, all);
+        std::vector<char> frozen(cellCount, 0);
+        std::vector<char> closed(cellCount, 0);
         for (int r = 0; r < rung.rows; ++r) {
             const auto &out = rung.outputs[static_cast<std::size_t>(r)];
             if (!out)
                 continue;
             std::vector<bool> in;
-            for (int row : rung.boxInputRows(r))
-                in.push_back(powered[static_cast<std::size_t>(find(row * width + rung.columns))]);
+            for (int row : rung.boxInputRows(r)) {
+                const int node = find(row * width + rung.columns);
+                const std::vector<char> toOutput = flood(node, false, all);
+                for (std::size_t i = 0; i < cellCount; ++i) {
+                    if (frozen[i] || from[i] < 0 || !fromRail[static_cast<std::size_t>(from[i])] ||
+                        !toOutput[static_cast<std::size_t>(to[i])])
+                        continue;
+                    frozen[i] = 1;
+                    const Cell &cell = rung.cells[i];
+                    closed[i] = !cell.contact.invert && image.contact(cell.contact);
+                }
+                in.push_back(gate && flood(find(0), true, closed)[static_cast<std::size_t>(node)]);
+            }
+            if (out->op() == Op::Interlock && !in.empty())
+                gate = in[0];
+            else if (out->op() == Op::InterlockClear)
+                gate = true;
             image.apply(*out, in);
         }
     }

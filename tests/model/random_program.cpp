@@ -4,6 +4,7 @@
 
 #include <QStringList>
 
+#include <algorithm>
 #include <random>
 
 namespace rung::testing {
@@ -193,10 +194,15 @@ private:
         std::vector<QString> written;
         for (int i = 0; i < coilCount; ++i)
             written.push_back(coil());
+        // A rung may read what it writes itself (a latch, a branch that reads the coil of
+        // the branch above, a shared condition that an earlier branch changes): conversion
+        // must keep the order in which the listing reads and writes.
         for (const QStringList *p : {&m_inputs, &m_relays})
             for (const QString &d : *p)
-                if (!m_written.contains(d))
-                    m_readable.push_back(d);
+                m_readable.push_back(d);
+        for (const QString &d : written)
+            if (std::find(m_readable.begin(), m_readable.end(), d) == m_readable.end())
+                m_readable.push_back(d);
         auto out = [&](const QString &d) {
             const int k = pick(10);
             if (k == 0 && !mn(Op::Set).isEmpty())
@@ -228,6 +234,22 @@ private:
             if (chance(50))
                 andOn(expr(1));
             out(written[2]);
+            return;
+        }
+        const QString il = mn(Op::Interlock);
+        const QString ilc = mn(Op::InterlockClear);
+        if (!stack && kind >= 7 && !il.isEmpty() && !ilc.isEmpty()) {
+            // VPC's and CPM1's branch form: the interlock holds the branch point.
+            line(il);
+            for (int i = 0; i < 3; ++i) {
+                if (i == 0 && chance(30)) {
+                    out(written[0]); // an output straight on the interlocked condition
+                    continue;
+                }
+                load(expr(1));
+                out(written[static_cast<std::size_t>(i)]);
+            }
+            line(ilc);
             return;
         }
         // Parallel outputs, then a continuation that adds a condition.
