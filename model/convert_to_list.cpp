@@ -62,34 +62,8 @@ public:
                 continue;
             }
             const Branch &child = item.child.front();
-            const std::size_t mark = m_out->size();
-            const std::size_t writtenMark = m_written.size();
-            m_unsafe = false;
             emitLoad(child.cond);
             emitItems(child, detail::seriesItems(child.cond));
-            if (!m_unsafe || m_failed)
-                continue;
-            // Repeating a condition would read a device an earlier branch of this rung has
-            // written: hold the branch point with an interlock instead.
-            m_out->erase(m_out->begin() + static_cast<std::ptrdiff_t>(mark), m_out->end());
-            m_written.resize(writtenMark);
-            if (!interlockUsable(child))
-                return fail(-1, Tr::tr("A branch reads a device that an earlier branch of the "
-                                       "same rung writes, and %1 cannot hold the branch point "
-                                       "here (no interlock inside an interlock); draw the "
-                                       "branches as separate rungs")
-                                    .arg(m_target.displayName));
-            m_unsafe = false;
-            emitLoad(child.cond);
-            emitBare(Op::Interlock);
-            emitInterlocked(child);
-            emitBare(Op::InterlockClear);
-            if (m_unsafe)
-                return fail(-1, Tr::tr("A branch reads a device that an earlier branch of the "
-                                       "same rung writes, and %1 cannot hold a second branch "
-                                       "point inside the interlock; draw the branches as "
-                                       "separate rungs")
-                                    .arg(m_target.displayName));
         }
     }
 
@@ -183,7 +157,7 @@ private:
     }
 
     bool interlockUsable(const Branch &b) const {
-        return !m_inInterlock && m_target.findInstruction(Op::Interlock) &&
+        return m_target.findInstruction(Op::Interlock) &&
                m_target.findInstruction(Op::InterlockClear) && alwaysOn() && !holdsFlowControl(b);
     }
 
@@ -253,7 +227,7 @@ private:
         if (m_target.limits.allowsStack)
             emitWithStack(b, path);
         else
-            emitWithoutStack(b, path);
+            emitWithoutStack(b, path, m_inInterlock);
     }
 
     void emitWithStack(const Branch &b, const std::vector<Expr> &path) {
@@ -293,14 +267,38 @@ private:
     // No branch stack: outputs at the branch point share the condition; a later branch after
     // one that added contacts repeats the condition from the rail (or from the interlock).
     // That is exact only while the repeated contacts read nothing this rung has written so
-    // far; otherwise m_unsafe asks the caller for the interlocked form.
-    void emitWithoutStack(const Branch &b, const std::vector<Expr> &path) {
+    // far; otherwise the branch point is held by IL/ILC, which do not nest.
+    void emitWithoutStack(const Branch &b, const std::vector<Expr> &path, bool inInterlock) {
+        const std::size_t mark = m_out->size();
+        const std::size_t writtenMark = m_written.size();
+        const std::size_t problemMark = m_problems->size();
+        const bool failedBefore = m_failed;
+        if (emitRepeating(b, path, inInterlock))
+            return;
+        m_out->erase(m_out->begin() + static_cast<std::ptrdiff_t>(mark), m_out->end());
+        m_written.resize(writtenMark);
+        m_problems->resize(problemMark);
+        m_failed = failedBefore;
+        if (inInterlock || !interlockUsable(b))
+            return fail(-1, Tr::tr("A branch reads a device that an earlier branch of the same "
+                                   "rung writes, and %1 cannot hold this branch point (IL does "
+                                   "not nest); draw the branches as separate rungs")
+                                .arg(m_target.displayName));
+        emitBare(Op::Interlock);
+        emitInterlocked(b);
+        emitBare(Op::InterlockClear);
+    }
+
+    // Returns false when a repeated condition could read a device written since it was first
+    // read.
+    bool emitRepeating(const Branch &b, const std::vector<Expr> &path, bool inInterlock) {
+        bool exact = true;
         bool intact = true;
         for (const Branch::Item &item : b.items) {
             if (!intact) {
                 const Expr repeated = detail::seriesOf(path);
                 if (readsWritten(repeated))
-                    m_unsafe = true;
+                    exact = false;
                 emitLoad(repeated);
                 intact = true;
             }
@@ -313,9 +311,10 @@ private:
             std::vector<Expr> deeper = path;
             for (const Expr &e : detail::seriesItems(child.cond))
                 deeper.push_back(e);
-            emitWithoutStack(child, deeper);
+            emitWithoutStack(child, deeper, inInterlock);
             intact = false;
         }
+        return exact;
     }
 
     // After IL the accumulator holds the branch point's condition, and every later load is
@@ -334,7 +333,7 @@ private:
             // LD even straight after IL, as seed 000 writes the branches of an interlock.
             const Branch &child = item.child.front();
             emitLoad(child.cond);
-            emitWithoutStack(child, detail::seriesItems(child.cond));
+            emitWithoutStack(child, detail::seriesItems(child.cond), true);
             intact = false;
         }
     }
@@ -344,7 +343,6 @@ private:
     std::vector<Instruction> *m_out;
     std::vector<Diagnostic> *m_problems;
     bool m_failed = false;
-    bool m_unsafe = false;
     bool m_inInterlock = false;
     std::vector<Address> m_written; // devices the rung's outputs have written so far
 };

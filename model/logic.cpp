@@ -1,6 +1,8 @@
 #include "logic.h"
 #include "rung_graph.h"
 
+#include <variant>
+
 // Both evaluators share the reading of contacts and the meaning of outputs, so they differ
 // only in how they combine contacts: the listing as a stack machine, the ladder as power
 // flowing left to right through the grid.
@@ -11,13 +13,23 @@ namespace {
 
 class Image {
 public:
-    Image(const BitReader &read, OutputImage &written)
+    Image(const Target *target, const BitReader &read, OutputImage &written)
         : m_read(read)
-        , m_written(written) {}
+        , m_written(written) {
+        // The always-ON relay (VPC r88, CPM1 253.13) is ON whatever the caller reads: the
+        // converter loads it inside an interlock.
+        if (const SystemDevice *d = target ? target->systemDevice(SystemRole::AlwaysOn) : nullptr) {
+            const auto a = parseAddress(*target, d->device);
+            if (std::holds_alternative<Address>(a))
+                m_alwaysOn = std::get<Address>(a);
+        }
+    }
 
     bool bit(const Operand &o) const {
         if (o.kind != Operand::Kind::Device)
             return o.kind == Operand::Kind::Constant && o.constant.value != 0;
+        if (o.address == m_alwaysOn)
+            return true;
         const auto it = m_written.find(o.address);
         return it != m_written.end() ? it->second : m_read(o.address);
     }
@@ -76,6 +88,7 @@ public:
 private:
     const BitReader &m_read;
     OutputImage &m_written;
+    Address m_alwaysOn; // invalid when the target has none
 };
 
 Contact contactOf(const Instruction &ins) {
@@ -90,23 +103,21 @@ Contact contactOf(const Instruction &ins) {
 
 OutputImage evaluateList(const InstructionList &list, const BitReader &read) {
     OutputImage written;
-    Image image(read, written);
+    Image image(list.target, read, written);
     std::vector<bool> blocks;
     std::vector<bool> stack;
-    bool afterOutput = false;
-    // IL..ILC: every load (and OR) is ANDed with the interlock condition, as the simulator
-    // runs it (docs/simulator.md).
+    // IL..ILC and STL..RET: every load (and OR) is ANDed with the interlock condition and
+    // the step's state, as the simulator runs them (docs/simulator.md).
+    bool interlock = true;
+    bool step = true;
     bool gate = true;
     for (const Instruction &ins : list.instructions) {
         if (!ins.spec)
             continue;
-        // A load right after an output, with no branch pending, starts a new rung.
-        const bool newRung = afterOutput && stack.empty();
-        afterOutput = false;
+        // As on the PLC a load pushes whatever the accumulator holds, even after an output:
+        // a later AND LD may join it ("OUT Y0 LD X1 OR X2 ANB OUT Y1").
         switch (ins.op()) {
         case Op::Load:
-            if (newRung)
-                blocks.clear();
             blocks.push_back(gate && image.contact(contactOf(ins)));
             continue;
         case Op::And:
@@ -144,7 +155,15 @@ OutputImage evaluateList(const InstructionList &list, const BitReader &read) {
         case Op::End:
             return written;
         case Op::InterlockClear:
-            gate = true;
+            interlock = true;
+            gate = step;
+            continue;
+        case Op::StepLadder:
+        case Op::Return:
+            // The step bus: outputs may hang on it straight away.
+            step = ins.op() == Op::Return || (!ins.operands.empty() && image.bit(ins.operands[0]));
+            gate = interlock && step;
+            blocks.assign(1, gate);
             continue;
         default:
             break;
@@ -155,20 +174,23 @@ OutputImage evaluateList(const InstructionList &list, const BitReader &read) {
         if (blocks.size() < k)
             continue;
         std::vector<bool> in(blocks.end() - static_cast<std::ptrdiff_t>(k), blocks.end());
-        if (ins.op() == Op::Interlock)
-            gate = in[0];
+        if (ins.op() == Op::Interlock) {
+            interlock = in[0];
+            gate = interlock && step;
+        }
         image.apply(ins, in);
         if (k > 1)
             blocks.resize(blocks.size() - k);
-        afterOutput = true;
     }
     return written;
 }
 
 OutputImage evaluateLadder(const LadderProgram &ladder, const BitReader &read) {
     OutputImage written;
-    Image image(read, written);
-    bool gate = true; // IL..ILC, as in evaluateList
+    Image image(ladder.target, read, written);
+    bool interlock = true; // IL..ILC and STL..RET, as in evaluateList
+    bool step = true;
+    bool gate = true;
     for (const Rung &rung : ladder.rungs) {
         // Power flows left to right through closed contacts; wires and links conduct both
         // ways. The outputs act in row order, as the listing runs them, and a contact is read
@@ -247,10 +269,15 @@ OutputImage evaluateLadder(const LadderProgram &ladder, const BitReader &read) {
                 }
                 in.push_back(gate && flood(find(0), true, closed)[static_cast<std::size_t>(node)]);
             }
-            if (out->op() == Op::Interlock && !in.empty())
-                gate = in[0];
-            else if (out->op() == Op::InterlockClear)
-                gate = true;
+            if (out->op() == Op::Interlock && !in.empty()) {
+                interlock = in[0];
+            } else if (out->op() == Op::InterlockClear) {
+                interlock = true;
+            } else if (out->op() == Op::StepLadder || out->op() == Op::Return) {
+                step = out->op() == Op::Return ||
+                       (!out->operands.empty() && image.bit(out->operands[0]));
+            }
+            gate = interlock && step;
             image.apply(*out, in);
         }
     }
