@@ -627,3 +627,53 @@ TEST_P(BranchingLadders, ListingMeansWhatTheLadderMeans) {
 INSTANTIATE_TEST_SUITE_P(AllTargets, BranchingLadders,
                          ::testing::Values(Family::Vpc, Family::Vigor, Family::Cpm1, Family::Pl110),
                          [](const auto &info) { return Target::get(info.param).id.toStdString(); });
+
+TEST(Conversion, ABlockJoinedToTheAccumulatorAfterAnOutputStaysInItsRung) {
+    // After OUT Y0 the accumulator still holds X0: the block (X1 | X2) is AND LD'ed to it.
+    const QString text = lines({"LD X0", "OUT Y0", "LD X1", "OR X2", "ANB", "OUT Y1"});
+    LadderProgram ladder;
+    EXPECT_EQ(roundTrip(parse(Family::Vigor, text), &ladder), text);
+    EXPECT_EQ(ladder.rungs.size(), 1u);
+    checkProgram(Target::get(Family::Vigor), text, 6);
+    // A load that nothing joins to the accumulator still starts the next rung.
+    const QString two = lines({"LD X0", "OUT Y0", "LD X1", "OR X2", "OUT Y1"});
+    EXPECT_EQ(roundTrip(parse(Family::Vigor, two), &ladder), two);
+    EXPECT_EQ(ladder.rungs.size(), 2u);
+}
+
+TEST(Conversion, ABlockOredWithABranchPointsConditionIsRefusedNotRedrawn) {
+    // Y1 = X0 & X2 | X3 & X4: the X3 & X4 path starts at the rail, beside the branch point.
+    const ToLadderResult bad = listToLadder(parse(
+        Family::Vigor, lines({"LD X0", "MPS", "AND X1", "OUT Y0", "MPP", "AND X2", "LD X3",
+                              "AND X4", "ORB", "OUT Y1"})));
+    ASSERT_EQ(bad.problems.size(), 1u);
+    EXPECT_EQ(bad.problems[0].code, QStringLiteral("CV009"));
+    EXPECT_EQ(bad.problems[0].location.line, 9);
+    const ToLadderResult orAfterOutput =
+        listToLadder(parse(Family::Vigor, lines({"LD X0", "OUT Y0", "AND X1", "OR X2", "OUT Y1"})));
+    ASSERT_EQ(orAfterOutput.problems.size(), 1u);
+    EXPECT_EQ(orAfterOutput.problems[0].code, QStringLiteral("CV009"));
+    // The same blocks AND LD'ed to the branch point draw as usual.
+    const ToLadderResult good = listToLadder(parse(
+        Family::Vigor, lines({"LD X0", "MPS", "AND X1", "OUT Y0", "MPP", "LD X3", "OR X4",
+                              "ANB", "OUT Y1"})));
+    EXPECT_TRUE(good.ok()) << problemsOf(good.problems).toStdString();
+}
+
+TEST(Conversion, VigorBranchReadingTheCoilOfTheBranchAboveKeepsItsOrder) {
+    // M0 is written by the first branch and read by the second: the ladder means the
+    // listing's order (row order), never the value from before the rung.
+    const QString text =
+        lines({"LD X0", "MPS", "AND X1", "OUT M0", "MPP", "AND M0", "OUT Y0"});
+    checkProgram(Target::get(Family::Vigor), text, 7);
+    const Target &t = Target::get(Family::Vigor);
+    const InstructionList list = parse(Family::Vigor, text);
+    const ToLadderResult lad = listToLadder(list);
+    ASSERT_TRUE(lad.ok());
+    // X0 = X1 = 1, M0 = 0 before the scan: M0 goes ON, so Y0 follows it in the same pass.
+    const std::set<Address> on = {addr(Family::Vigor, "X0"), addr(Family::Vigor, "X1")};
+    const BitReader read = [&](const Address &a) { return on.count(a) > 0; };
+    EXPECT_TRUE(evaluateLadder(lad.ladder, read).at(addr(Family::Vigor, "Y0")));
+    EXPECT_TRUE(evaluateList(list, read).at(addr(Family::Vigor, "Y0")));
+    (void)t;
+}
