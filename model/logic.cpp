@@ -129,7 +129,8 @@ OutputImage evaluateList(const InstructionList &list, const BitReader &read) {
                 blocks.back() = blocks.back() || (gate && image.contact(contactOf(ins)));
             continue;
         case Op::Invert:
-            if (!blocks.empty())
+            // PL110's P / N pass the power flow (edges read as plain bits).
+            if (!blocks.empty() && ins.spec->mode == ContactMode::Normal)
                 blocks.back() = !blocks.back();
             continue;
         case Op::AndBlock:
@@ -265,7 +266,10 @@ OutputImage evaluateLadder(const LadderProgram &ladder, const BitReader &read) {
                         continue;
                     frozen[i] = 1;
                     const Cell &cell = rung.cells[i];
-                    closed[i] = !cell.contact.invert && image.contact(cell.contact);
+                    // An INV element never conducts here (its listing form is only checked
+                    // by the simulator); PL110's P / N conduct, edges read as plain bits.
+                    closed[i] = cell.contact.invert ? cell.contact.mode != ContactMode::Normal
+                                                    : image.contact(cell.contact);
                 }
                 in.push_back(gate && flood(find(0), true, closed)[static_cast<std::size_t>(node)]);
             }

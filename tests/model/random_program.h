@@ -20,6 +20,9 @@ struct RandomProgramOptions {
     bool branches = true; // MPS/MRD/MPP (or output continuations) and parallel outputs
     bool boxes = true;    // LR / KEEP / two-input counters where the target has them
     bool end = true;
+    // Also edge contacts, compare contacts, timers (with their contacts) and a move box, as
+    // far as the target has them; for the simulator, whose equivalence covers them.
+    bool extended = false;
 };
 
 QString randomProgram(const model::Target &target, std::uint64_t seed,

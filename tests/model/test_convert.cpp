@@ -330,6 +330,18 @@ TEST_P(RandomPrograms, RoundTripIsAFixpointAndKeepsMeaning) {
     }
 }
 
+TEST_P(RandomPrograms, WithTimersEdgesComparesAndMovesTheRoundTripIsAFixpoint) {
+    const Target &target = Target::get(GetParam());
+    for (std::uint64_t seed = 1; seed <= 500; ++seed) {
+        rung::testing::RandomProgramOptions o;
+        o.rungs = 5;
+        o.extended = true;
+        checkProgram(target, rung::testing::randomProgram(target, seed, o), seed);
+        if (::testing::Test::HasFatalFailure())
+            return;
+    }
+}
+
 INSTANTIATE_TEST_SUITE_P(AllTargets, RandomPrograms,
                          ::testing::Values(Family::Vpc, Family::Vigor, Family::Cpm1, Family::Pl110),
                          [](const auto &info) { return Target::get(info.param).id.toStdString(); });
@@ -643,9 +655,9 @@ TEST(Conversion, ABlockJoinedToTheAccumulatorAfterAnOutputStaysInItsRung) {
 
 TEST(Conversion, ABlockOredWithABranchPointsConditionIsRefusedNotRedrawn) {
     // Y1 = X0 & X2 | X3 & X4: the X3 & X4 path starts at the rail, beside the branch point.
-    const ToLadderResult bad = listToLadder(parse(
-        Family::Vigor, lines({"LD X0", "MPS", "AND X1", "OUT Y0", "MPP", "AND X2", "LD X3",
-                              "AND X4", "ORB", "OUT Y1"})));
+    const ToLadderResult bad =
+        listToLadder(parse(Family::Vigor, lines({"LD X0", "MPS", "AND X1", "OUT Y0", "MPP",
+                                                 "AND X2", "LD X3", "AND X4", "ORB", "OUT Y1"})));
     ASSERT_EQ(bad.problems.size(), 1u);
     EXPECT_EQ(bad.problems[0].code, QStringLiteral("CV009"));
     EXPECT_EQ(bad.problems[0].location.line, 9);
@@ -654,17 +666,16 @@ TEST(Conversion, ABlockOredWithABranchPointsConditionIsRefusedNotRedrawn) {
     ASSERT_EQ(orAfterOutput.problems.size(), 1u);
     EXPECT_EQ(orAfterOutput.problems[0].code, QStringLiteral("CV009"));
     // The same blocks AND LD'ed to the branch point draw as usual.
-    const ToLadderResult good = listToLadder(parse(
-        Family::Vigor, lines({"LD X0", "MPS", "AND X1", "OUT Y0", "MPP", "LD X3", "OR X4",
-                              "ANB", "OUT Y1"})));
+    const ToLadderResult good =
+        listToLadder(parse(Family::Vigor, lines({"LD X0", "MPS", "AND X1", "OUT Y0", "MPP", "LD X3",
+                                                 "OR X4", "ANB", "OUT Y1"})));
     EXPECT_TRUE(good.ok()) << problemsOf(good.problems).toStdString();
 }
 
 TEST(Conversion, VigorBranchReadingTheCoilOfTheBranchAboveKeepsItsOrder) {
     // M0 is written by the first branch and read by the second: the ladder means the
     // listing's order (row order), never the value from before the rung.
-    const QString text =
-        lines({"LD X0", "MPS", "AND X1", "OUT M0", "MPP", "AND M0", "OUT Y0"});
+    const QString text = lines({"LD X0", "MPS", "AND X1", "OUT M0", "MPP", "AND M0", "OUT Y0"});
     checkProgram(Target::get(Family::Vigor), text, 7);
     const Target &t = Target::get(Family::Vigor);
     const InstructionList list = parse(Family::Vigor, text);
