@@ -189,6 +189,17 @@ private:
         std::vector<std::pair<bool, int>> items; // (isOutput, output index or node index)
     };
 
+    // The bottom block continues a branch point (after an output, MPS, MRD or MPP): joining
+    // it in parallel with another block would put contacts from the rail in parallel with
+    // the branch point's own contacts, which the branch tree cannot draw.
+    void anchoredProblem(const Instruction &at) {
+        problem(at, "CV009",
+                Tr::tr("%1 joins the condition of a branch point in parallel with another "
+                       "block; the ladder cannot draw this: repeat the shared contacts in "
+                       "this branch instead")
+                    .arg(at.spec->mnemonic));
+    }
+
     void problem(const Instruction &at, const char *code, const QString &message) {
         Diagnostic d;
         d.code = QString::fromLatin1(code);
@@ -201,6 +212,26 @@ private:
     }
 
     bool started() const { return m_first >= 0; }
+
+    // After an output the accumulator still holds the branch point's condition: a block
+    // loaded there that AND LD / OR LD joins to it ("OUT Y0 LD X1 OR X2 ANB OUT Y1")
+    // continues the rung rather than starting the next one.
+    bool joinsTheAccumulator(int index) const {
+        const auto &ins = m_list.instructions;
+        int depth = 0;
+        for (std::size_t j = static_cast<std::size_t>(index); j < ins.size(); ++j) {
+            const Op op = ins[j].op();
+            if (op == Op::Load)
+                ++depth;
+            else if (op == Op::AndBlock || op == Op::OrBlock)
+                --depth;
+            else if (op != Op::And && op != Op::Or && op != Op::Invert)
+                return false;
+            if (depth == 0)
+                return true;
+        }
+        return false;
+    }
 
     void begin(int index, const Instruction &ins) {
         if (m_first < 0) {
@@ -246,7 +277,7 @@ private:
         // starts the next rung.
         // (After MPP the popped condition is still to be used: "MPP LD X1 ANB" continues.)
         if (op == Op::Load && m_lastWasOutput && m_mps.empty() && m_blocks.size() == 1 &&
-            m_blocks[0].empty())
+            m_blocks[0].empty() && !joinsTheAccumulator(index))
             finishRung(false);
         m_lastWasOutput = detail::isOutputOp(op);
         if (m_broken) {
@@ -278,6 +309,8 @@ private:
                 return problem(
                     ins, "CV001",
                     Tr::tr("%1 has no block to join in parallel").arg(ins.spec->mnemonic));
+            if (m_blocks.size() == 1 && m_anchored)
+                return anchoredProblem(ins);
             m_blocks.back() = detail::parallel(m_blocks.back(), Expr::leafOf(contactOf(ins)));
             return;
         case Op::AndBlock:
@@ -294,6 +327,8 @@ private:
                 return problem(
                     ins, "CV001",
                     Tr::tr("%1 has no block to join in parallel").arg(ins.spec->mnemonic));
+            if (op == Op::OrBlock && m_blocks.size() == 1 && m_anchored)
+                return anchoredProblem(ins);
             m_blocks.back() = op == Op::AndBlock ? detail::series(std::move(a), std::move(b))
                                                  : detail::parallel(std::move(a), std::move(b));
             return;
@@ -307,6 +342,7 @@ private:
                 m_cur = addChild(std::move(m_blocks[0]));
             m_mps.push_back(m_cur);
             m_blocks.assign(1, Expr{});
+            m_anchored = true;
             return;
         case Op::ReadStack:
         case Op::Pop:
@@ -317,6 +353,7 @@ private:
             if (op == Op::Pop)
                 m_mps.pop_back();
             m_blocks.assign(1, Expr{});
+            m_anchored = true;
             return;
         default:
             break;
@@ -365,6 +402,7 @@ private:
         m_nodes[static_cast<std::size_t>(m_cur)].items.emplace_back(
             true, static_cast<int>(m_outputs.size()) - 1);
         m_blocks.assign(1, Expr{});
+        m_anchored = true;
         m_hadOutput = true;
     }
 
@@ -436,6 +474,7 @@ private:
         m_mps.clear();
         m_boxInputs.clear();
         m_cur = 0;
+        m_anchored = false;
         m_hadOutput = false;
         m_lastWasOutput = false;
         m_broken = false;
@@ -451,6 +490,7 @@ private:
     std::vector<Expr> m_boxInputs;
     Instruction m_box;
     int m_cur = 0;
+    bool m_anchored = false; // m_blocks[0] continues the branch point m_cur
     int m_first = -1;
     int m_firstLine = 0;
     bool m_hadOutput = false;

@@ -1,12 +1,15 @@
 #include "convert.h"
 #include "rung_graph.h"
 
+#include <algorithm>
+
 #include <QCoreApplication>
 
 // Ladder -> IL in the canonical form (docs/conversion.md): each block is combined as soon as
 // it is complete (ANB right after the block), OR chains instead of stacked ORB, outputs at a
-// branch point without stack instructions where none is needed, MPS/MRD/MPP on Vigor, and the
-// branch condition repeated on targets without a branch stack.
+// branch point without stack instructions where none is needed, MPS/MRD/MPP on Vigor. Targets
+// without a branch stack (VPC, CPM1) repeat a branch condition only where that cannot change
+// its value; elsewhere the branch point is held by IL/ILC (docs/conversion.md).
 
 namespace rung::model {
 
@@ -33,6 +36,10 @@ public:
         , m_problems(problems) {}
 
     bool failed() const { return m_failed; }
+
+    // Inside an interlock the program opened in an earlier rung: a generated IL/ILC would
+    // end it (IL does not nest on VPC or CPM1).
+    void setInInterlock(bool on) { m_inInterlock = on; }
 
     void emitRung(const detail::RungLogic &logic, bool inStep) {
         if (!logic.boxInputs.empty()) {
@@ -100,7 +107,74 @@ private:
     void emitOutput(Instruction ins) {
         ins.line = 0;
         ins.column = 0;
+        // Every device operand counts as written: an application box's source too, which is
+        // only ever more careful.
+        for (const Operand &o : ins.operands)
+            if (o.kind == Operand::Kind::Device)
+                m_written.push_back(o.address);
         m_out->push_back(std::move(ins));
+    }
+
+    // Same element (a bit of a channel and the channel count as the same).
+    static bool overlaps(const Address &a, const Address &b) {
+        return a.area == b.area && a.index == b.index && (a.bit < 0 || b.bit < 0 || a.bit == b.bit);
+    }
+
+    bool readsWritten(const Expr &e) const {
+        if (e.kind != Expr::Kind::Leaf) {
+            return std::any_of(e.items.begin(), e.items.end(),
+                               [this](const Expr &i) { return readsWritten(i); });
+        }
+        for (const Operand &o : e.leaf.operands)
+            if (o.kind == Operand::Kind::Device)
+                for (const Address &w : m_written)
+                    if (overlaps(o.address, w))
+                        return true;
+        return false;
+    }
+
+    static bool holdsFlowControl(const Branch &b) {
+        for (const Branch::Item &i : b.items) {
+            if (!i.isOutput) {
+                if (holdsFlowControl(i.child.front()))
+                    return true;
+                continue;
+            }
+            switch (i.output.op()) {
+            case Op::Interlock:
+            case Op::InterlockClear:
+            case Op::Jump:
+            case Op::JumpEnd:
+            case Op::StepLadder:
+            case Op::Return:
+            case Op::End:
+                return true;
+            default:
+                break;
+            }
+        }
+        return false;
+    }
+
+    bool interlockUsable(const Branch &b) const {
+        return m_target.findInstruction(Op::Interlock) &&
+               m_target.findInstruction(Op::InterlockClear) && alwaysOn() && !holdsFlowControl(b);
+    }
+
+    // The always-ON contact (VPC r88, CPM1 253.13): an output straight at the interlocked
+    // branch point after a branch with contacts loads it, and the interlock does the rest.
+    std::optional<Contact> alwaysOn() const {
+        const SystemDevice *d = m_target.systemDevice(SystemRole::AlwaysOn);
+        if (!d)
+            return std::nullopt;
+        const auto parsed = parseAddress(m_target, d->device);
+        if (!std::holds_alternative<Address>(parsed))
+            return std::nullopt;
+        Contact c;
+        Operand o;
+        o.address = std::get<Address>(parsed);
+        c.operands = {o};
+        return c;
     }
 
     void emitLoad(const Expr &e) {
@@ -153,7 +227,7 @@ private:
         if (m_target.limits.allowsStack)
             emitWithStack(b, path);
         else
-            emitWithoutStack(b, path);
+            emitWithoutStack(b, path, m_inInterlock);
     }
 
     void emitWithStack(const Branch &b, const std::vector<Expr> &path) {
@@ -191,12 +265,41 @@ private:
     }
 
     // No branch stack: outputs at the branch point share the condition; a later branch after
-    // one that added contacts repeats the condition from the rail.
-    void emitWithoutStack(const Branch &b, const std::vector<Expr> &path) {
+    // one that added contacts repeats the condition from the rail (or from the interlock).
+    // That is exact only while the repeated contacts read nothing this rung has written so
+    // far; otherwise the branch point is held by IL/ILC, which do not nest.
+    void emitWithoutStack(const Branch &b, const std::vector<Expr> &path, bool inInterlock) {
+        const std::size_t mark = m_out->size();
+        const std::size_t writtenMark = m_written.size();
+        const std::size_t problemMark = m_problems->size();
+        const bool failedBefore = m_failed;
+        if (emitRepeating(b, path, inInterlock))
+            return;
+        m_out->erase(m_out->begin() + static_cast<std::ptrdiff_t>(mark), m_out->end());
+        m_written.resize(writtenMark);
+        m_problems->resize(problemMark);
+        m_failed = failedBefore;
+        if (inInterlock || !interlockUsable(b))
+            return fail(-1, Tr::tr("A branch reads a device that an earlier branch of the same "
+                                   "rung writes, and %1 cannot hold this branch point (IL does "
+                                   "not nest); draw the branches as separate rungs")
+                                .arg(m_target.displayName));
+        emitBare(Op::Interlock);
+        emitInterlocked(b);
+        emitBare(Op::InterlockClear);
+    }
+
+    // Returns false when a repeated condition could read a device written since it was first
+    // read.
+    bool emitRepeating(const Branch &b, const std::vector<Expr> &path, bool inInterlock) {
+        bool exact = true;
         bool intact = true;
         for (const Branch::Item &item : b.items) {
             if (!intact) {
-                emitLoad(detail::seriesOf(path));
+                const Expr repeated = detail::seriesOf(path);
+                if (readsWritten(repeated))
+                    exact = false;
+                emitLoad(repeated);
                 intact = true;
             }
             if (item.isOutput) {
@@ -208,7 +311,29 @@ private:
             std::vector<Expr> deeper = path;
             for (const Expr &e : detail::seriesItems(child.cond))
                 deeper.push_back(e);
-            emitWithoutStack(child, deeper);
+            emitWithoutStack(child, deeper, inInterlock);
+            intact = false;
+        }
+        return exact;
+    }
+
+    // After IL the accumulator holds the branch point's condition, and every later load is
+    // ANDed with it: each branch starts with LD, an output after a branch loads always-ON.
+    void emitInterlocked(const Branch &b) {
+        bool intact = true;
+        for (const Branch::Item &item : b.items) {
+            if (item.isOutput) {
+                if (!intact) {
+                    emitContact(Op::Load, *alwaysOn());
+                    intact = true;
+                }
+                emitOutput(item.output);
+                continue;
+            }
+            // LD even straight after IL, as seed 000 writes the branches of an interlock.
+            const Branch &child = item.child.front();
+            emitLoad(child.cond);
+            emitWithoutStack(child, detail::seriesItems(child.cond), true);
             intact = false;
         }
     }
@@ -218,6 +343,8 @@ private:
     std::vector<Instruction> *m_out;
     std::vector<Diagnostic> *m_problems;
     bool m_failed = false;
+    bool m_inInterlock = false;
+    std::vector<Address> m_written; // devices the rung's outputs have written so far
 };
 
 } // namespace
@@ -229,6 +356,7 @@ ToListingResult ladderToList(const LadderProgram &ladder) {
         return result;
     const Target &target = *ladder.target;
     bool inStep = false;
+    bool inInterlock = false;
     for (std::size_t r = 0; r < ladder.rungs.size(); ++r) {
         const Rung &rung = ladder.rungs[r];
         const int rungIndex = static_cast<int>(r);
@@ -276,6 +404,7 @@ ToListingResult ladderToList(const LadderProgram &ladder) {
             continue;
         std::vector<Instruction> emitted;
         Emitter emitter(target, rungIndex, &emitted, &result.problems);
+        emitter.setInInterlock(inInterlock);
         emitter.emitRung(detail::logicOf(rung, networks, false), inStep);
         if (emitter.failed())
             continue;
@@ -284,6 +413,10 @@ ToListingResult ladderToList(const LadderProgram &ladder) {
                 inStep = true;
             else if (ins.op() == Op::Return)
                 inStep = false;
+            else if (ins.op() == Op::Interlock)
+                inInterlock = true;
+            else if (ins.op() == Op::InterlockClear)
+                inInterlock = false;
         }
         if (!rung.comment.isEmpty()) {
             const int at = static_cast<int>(result.list.instructions.size());

@@ -1,6 +1,8 @@
 #include "logic.h"
 #include "rung_graph.h"
 
+#include <variant>
+
 // Both evaluators share the reading of contacts and the meaning of outputs, so they differ
 // only in how they combine contacts: the listing as a stack machine, the ladder as power
 // flowing left to right through the grid.
@@ -11,13 +13,23 @@ namespace {
 
 class Image {
 public:
-    Image(const BitReader &read, OutputImage &written)
+    Image(const Target *target, const BitReader &read, OutputImage &written)
         : m_read(read)
-        , m_written(written) {}
+        , m_written(written) {
+        // The always-ON relay (VPC r88, CPM1 253.13) is ON whatever the caller reads: the
+        // converter loads it inside an interlock.
+        if (const SystemDevice *d = target ? target->systemDevice(SystemRole::AlwaysOn) : nullptr) {
+            const auto a = parseAddress(*target, d->device);
+            if (std::holds_alternative<Address>(a))
+                m_alwaysOn = std::get<Address>(a);
+        }
+    }
 
     bool bit(const Operand &o) const {
         if (o.kind != Operand::Kind::Device)
             return o.kind == Operand::Kind::Constant && o.constant.value != 0;
+        if (o.address == m_alwaysOn)
+            return true;
         const auto it = m_written.find(o.address);
         return it != m_written.end() ? it->second : m_read(o.address);
     }
@@ -76,6 +88,7 @@ public:
 private:
     const BitReader &m_read;
     OutputImage &m_written;
+    Address m_alwaysOn; // invalid when the target has none
 };
 
 Contact contactOf(const Instruction &ins) {
@@ -90,21 +103,22 @@ Contact contactOf(const Instruction &ins) {
 
 OutputImage evaluateList(const InstructionList &list, const BitReader &read) {
     OutputImage written;
-    Image image(read, written);
+    Image image(list.target, read, written);
     std::vector<bool> blocks;
     std::vector<bool> stack;
-    bool afterOutput = false;
+    // IL..ILC and STL..RET: every load (and OR) is ANDed with the interlock condition and
+    // the step's state, as the simulator runs them (docs/simulator.md).
+    bool interlock = true;
+    bool step = true;
+    bool gate = true;
     for (const Instruction &ins : list.instructions) {
         if (!ins.spec)
             continue;
-        // A load right after an output, with no branch pending, starts a new rung.
-        const bool newRung = afterOutput && stack.empty();
-        afterOutput = false;
+        // As on the PLC a load pushes whatever the accumulator holds, even after an output:
+        // a later AND LD may join it ("OUT Y0 LD X1 OR X2 ANB OUT Y1").
         switch (ins.op()) {
         case Op::Load:
-            if (newRung)
-                blocks.clear();
-            blocks.push_back(image.contact(contactOf(ins)));
+            blocks.push_back(gate && image.contact(contactOf(ins)));
             continue;
         case Op::And:
             if (!blocks.empty())
@@ -112,10 +126,11 @@ OutputImage evaluateList(const InstructionList &list, const BitReader &read) {
             continue;
         case Op::Or:
             if (!blocks.empty())
-                blocks.back() = blocks.back() || image.contact(contactOf(ins));
+                blocks.back() = blocks.back() || (gate && image.contact(contactOf(ins)));
             continue;
         case Op::Invert:
-            if (!blocks.empty())
+            // PL110's P / N pass the power flow (edges read as plain bits).
+            if (!blocks.empty() && ins.spec->mode == ContactMode::Normal)
                 blocks.back() = !blocks.back();
             continue;
         case Op::AndBlock:
@@ -140,6 +155,17 @@ OutputImage evaluateList(const InstructionList &list, const BitReader &read) {
             continue;
         case Op::End:
             return written;
+        case Op::InterlockClear:
+            interlock = true;
+            gate = step;
+            continue;
+        case Op::StepLadder:
+        case Op::Return:
+            // The step bus: outputs may hang on it straight away.
+            step = ins.op() == Op::Return || (!ins.operands.empty() && image.bit(ins.operands[0]));
+            gate = interlock && step;
+            blocks.assign(1, gate);
+            continue;
         default:
             break;
         }
@@ -149,20 +175,28 @@ OutputImage evaluateList(const InstructionList &list, const BitReader &read) {
         if (blocks.size() < k)
             continue;
         std::vector<bool> in(blocks.end() - static_cast<std::ptrdiff_t>(k), blocks.end());
+        if (ins.op() == Op::Interlock) {
+            interlock = in[0];
+            gate = interlock && step;
+        }
         image.apply(ins, in);
         if (k > 1)
             blocks.resize(blocks.size() - k);
-        afterOutput = true;
     }
     return written;
 }
 
 OutputImage evaluateLadder(const LadderProgram &ladder, const BitReader &read) {
     OutputImage written;
-    Image image(read, written);
+    Image image(ladder.target, read, written);
+    bool interlock = true; // IL..ILC and STL..RET, as in evaluateList
+    bool step = true;
+    bool gate = true;
     for (const Rung &rung : ladder.rungs) {
         // Power flows left to right through closed contacts; wires and links conduct both
-        // ways. Contacts read the image as it stands when the rung starts.
+        // ways. The outputs act in row order, as the listing runs them, and a contact is read
+        // just before the first output it feeds: a branch point's contacts once for all its
+        // branches, a branch's own contacts after the branches above it have written.
         const int width = rung.columns + 1;
         std::vector<int> group(static_cast<std::size_t>(rung.rows * width));
         for (std::size_t i = 0; i < group.size(); ++i)
@@ -183,38 +217,71 @@ OutputImage evaluateLadder(const LadderProgram &ladder, const BitReader &read) {
                 if (rung.cell(r, c).kind == CellKind::Wire)
                     join(r * width + c, r * width + c + 1);
         }
-        std::vector<bool> closed(static_cast<std::size_t>(rung.rows * rung.columns), false);
+        const std::size_t cellCount = static_cast<std::size_t>(rung.rows * rung.columns);
+        std::vector<int> from(cellCount, -1);
+        std::vector<int> to(cellCount, -1);
         for (int r = 0; r < rung.rows; ++r)
             for (int c = 0; c < rung.columns; ++c) {
-                const Cell &cell = rung.cell(r, c);
-                closed[static_cast<std::size_t>(r * rung.columns + c)] =
-                    cell.kind == CellKind::Contact && !cell.contact.invert &&
-                    image.contact(cell.contact);
+                const std::size_t i = static_cast<std::size_t>(r * rung.columns + c);
+                if (rung.cell(r, c).kind != CellKind::Contact)
+                    continue;
+                from[i] = find(r * width + c);
+                to[i] = find(r * width + c + 1);
             }
-        std::vector<bool> powered(group.size(), false);
-        powered[static_cast<std::size_t>(find(0))] = true;
-        for (bool changed = true; changed;) {
-            changed = false;
-            for (int r = 0; r < rung.rows; ++r)
-                for (int c = 0; c < rung.columns; ++c) {
-                    if (!closed[static_cast<std::size_t>(r * rung.columns + c)])
+        // flood(start, forward, conducts): the groups reached from start.
+        auto flood = [&](int start, bool forward, const std::vector<char> &conducts) {
+            std::vector<char> reached(group.size(), 0);
+            reached[static_cast<std::size_t>(start)] = 1;
+            for (bool changed = true; changed;) {
+                changed = false;
+                for (std::size_t i = 0; i < cellCount; ++i) {
+                    if (from[i] < 0 || !conducts[i])
                         continue;
-                    const int from = find(r * width + c);
-                    const int to = find(r * width + c + 1);
-                    if (powered[static_cast<std::size_t>(from)] &&
-                        !powered[static_cast<std::size_t>(to)]) {
-                        powered[static_cast<std::size_t>(to)] = true;
+                    const int a = forward ? from[i] : to[i];
+                    const int b = forward ? to[i] : from[i];
+                    if (reached[static_cast<std::size_t>(a)] &&
+                        !reached[static_cast<std::size_t>(b)]) {
+                        reached[static_cast<std::size_t>(b)] = 1;
                         changed = true;
                     }
                 }
-        }
+            }
+            return reached;
+        };
+        const std::vector<char> all(cellCount, 1);
+        const std::vector<char> fromRail = flood(find(0), true, all);
+        std::vector<char> frozen(cellCount, 0);
+        std::vector<char> closed(cellCount, 0);
         for (int r = 0; r < rung.rows; ++r) {
             const auto &out = rung.outputs[static_cast<std::size_t>(r)];
             if (!out)
                 continue;
             std::vector<bool> in;
-            for (int row : rung.boxInputRows(r))
-                in.push_back(powered[static_cast<std::size_t>(find(row * width + rung.columns))]);
+            for (int row : rung.boxInputRows(r)) {
+                const int node = find(row * width + rung.columns);
+                const std::vector<char> toOutput = flood(node, false, all);
+                for (std::size_t i = 0; i < cellCount; ++i) {
+                    if (frozen[i] || from[i] < 0 || !fromRail[static_cast<std::size_t>(from[i])] ||
+                        !toOutput[static_cast<std::size_t>(to[i])])
+                        continue;
+                    frozen[i] = 1;
+                    const Cell &cell = rung.cells[i];
+                    // An INV element never conducts here (its listing form is only checked
+                    // by the simulator); PL110's P / N conduct, edges read as plain bits.
+                    closed[i] = cell.contact.invert ? cell.contact.mode != ContactMode::Normal
+                                                    : image.contact(cell.contact);
+                }
+                in.push_back(gate && flood(find(0), true, closed)[static_cast<std::size_t>(node)]);
+            }
+            if (out->op() == Op::Interlock && !in.empty()) {
+                interlock = in[0];
+            } else if (out->op() == Op::InterlockClear) {
+                interlock = true;
+            } else if (out->op() == Op::StepLadder || out->op() == Op::Return) {
+                step = out->op() == Op::Return ||
+                       (!out->operands.empty() && image.bit(out->operands[0]));
+            }
+            gate = interlock && step;
             image.apply(*out, in);
         }
     }

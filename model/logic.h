@@ -17,7 +17,10 @@ using BitReader = std::function<bool(const Address &)>;
 using OutputImage = std::map<Address, bool>;
 
 // Evaluate one pass of the listing; instructions other than contacts, blocks, stack and
-// bit outputs (OUT, SET, RST, timers' and counters' enable inputs) are skipped.
+// bit outputs (OUT, SET, RST, timers' and counters' enable inputs) are skipped. IL..ILC and
+// STL..RET AND every load with their condition; the target's always-ON relay reads ON.
+// The ladder's outputs act in row order, each contact read just before the first output it
+// feeds, so both mean the same when a rung reads what it writes (docs/conversion.md).
 OutputImage evaluateList(const InstructionList &list, const BitReader &read);
 OutputImage evaluateLadder(const LadderProgram &ladder, const BitReader &read);
 

@@ -4,6 +4,7 @@
 
 #include <QStringList>
 
+#include <algorithm>
 #include <random>
 
 namespace rung::testing {
@@ -16,6 +17,8 @@ struct Node {
     enum Kind { Leaf, Series, Parallel } kind = Leaf;
     QString device;
     bool negated = false;
+    ContactMode edge = ContactMode::Normal; // Rising / Falling: an edge contact
+    QString compare;                        // a compare contact: "<" and its operands
     std::vector<Node> items;
 };
 
@@ -28,6 +31,21 @@ public:
         pool(true, false, 12, &m_inputs);
         pool(true, true, 10, &m_outputs);
         pool(false, true, 10, &m_relays);
+        switch (m_t.family) {
+        case Family::Vpc:
+            m_registers = {"p00", "p01", "p02", "p03"};
+            break;
+        case Family::Vigor:
+            m_registers = {"D0", "D1", "D2", "D3"};
+            break;
+        case Family::Cpm1:
+            m_registers = {"DM 0000", "DM 0001", "DM 0002", "DM 0003"};
+            break;
+        case Family::Pl110:
+            m_registers = {"V1", "V2", "V3", "V4"};
+            break;
+        }
+        m_compare = m_t.family != Family::Cpm1; // CPM1's table has no compare contact
     }
 
     QString run() {
@@ -77,6 +95,25 @@ private:
     void line(const QString &text) { m_lines << text; }
 
     Node leaf() {
+        if (m_o.extended && chance(20)) {
+            Node n;
+            const int k = pick(3);
+            if (k == 0 && m_t.findInstruction(Op::Load, ContactMode::Rising) &&
+                m_t.findInstruction(Op::And, ContactMode::Rising)) {
+                n.device = m_inputs[pick(static_cast<int>(m_inputs.size()))];
+                n.edge = chance(50) ? ContactMode::Rising : ContactMode::Falling;
+                return n;
+            }
+            if (k == 1 && !m_registers.isEmpty() && m_compare) {
+                n.compare = compareText();
+                return n;
+            }
+            if (!m_timerContacts.isEmpty()) {
+                n.device = m_timerContacts[pick(static_cast<int>(m_timerContacts.size()))];
+                n.negated = chance(30);
+                return n;
+            }
+        }
         Node n;
         n.device = m_readable[static_cast<std::size_t>(pick(static_cast<int>(m_readable.size())))];
         n.negated = chance(30);
@@ -100,7 +137,25 @@ private:
         return n;
     }
 
+    QString compareText() {
+        static const char *const symbols[] = {"=", "<", ">"};
+        const char *sym = symbols[pick(3)];
+        const QString a = m_registers[pick(static_cast<int>(m_registers.size()))];
+        const QString b = m_registers[pick(static_cast<int>(m_registers.size()))];
+        if (m_t.family == Family::Vpc)
+            return QStringLiteral(" %1%2%3").arg(a, QLatin1String(sym), b);
+        return QStringLiteral("%1 %2 %3").arg(QLatin1String(sym), a, b);
+    }
+
     void contact(Op op, const Node &n) {
+        if (!n.compare.isEmpty()) {
+            line(mn(op) + n.compare);
+            return;
+        }
+        if (n.edge != ContactMode::Normal) {
+            line(mn(op, n.edge) + QLatin1Char(' ') + n.device);
+            return;
+        }
         line(mn(op, n.negated ? ContactMode::Negated : ContactMode::Normal) + QLatin1Char(' ') +
              n.device);
     }
@@ -178,7 +233,67 @@ private:
         return d;
     }
 
+    // A timer or a move box with a random condition, in the target's own syntax.
+    bool extendedRung() {
+        m_readable.clear();
+        for (const QStringList *p : {&m_inputs, &m_relays})
+            for (const QString &d : *p)
+                m_readable.push_back(d);
+        const int n = m_timers++;
+        switch (m_t.family) {
+        case Family::Vpc:
+            if (chance(50) && n < 8) {
+                load(expr(2));
+                line(QStringLiteral("TIM%1").arg(n * 2 + (chance(50) ? 16 : 0), 2, 10,
+                                                 QLatin1Char('0')));
+                m_timerContacts << QStringLiteral("t%1").arg(n * 2, 2, 10, QLatin1Char('0'));
+                return true;
+            }
+            load(expr(2));
+            line(QStringLiteral("OUT %1%2%3")
+                     .arg(m_registers[pick(4)], QLatin1String(chance(50) ? "," : "+"),
+                          m_registers[pick(4)]));
+            return true;
+        case Family::Vigor:
+            load(expr(2));
+            if (chance(50)) {
+                line(QStringLiteral("TMR T%1 K%2").arg(n).arg(1 + pick(4)));
+                m_timerContacts << QStringLiteral("T%1").arg(n);
+            } else {
+                line(QStringLiteral("MOV K%1 %2").arg(pick(4)).arg(m_registers[pick(4)]));
+            }
+            return true;
+        case Family::Cpm1:
+            load(expr(2));
+            if (chance(50)) {
+                line(QStringLiteral("TIM %1 #%2")
+                         .arg(n, 3, 10, QLatin1Char('0'))
+                         .arg(1 + pick(4), 4, 10, QLatin1Char('0')));
+                m_timerContacts << QStringLiteral("TIM %1").arg(n, 3, 10, QLatin1Char('0'));
+            } else {
+                line(QStringLiteral("MOV(21) #%1 %2")
+                         .arg(pick(4), 4, 10, QLatin1Char('0'))
+                         .arg(m_registers[pick(4)]));
+            }
+            return true;
+        case Family::Pl110:
+            load(expr(2));
+            if (chance(30))
+                line(chance(50) ? QStringLiteral("P") : QStringLiteral("N"));
+            if (chance(50)) {
+                line(QStringLiteral("TON T%1 %2 100").arg(n + 1).arg(1 + pick(4)));
+                m_timerContacts << QStringLiteral("T%1").arg(n + 1);
+            } else {
+                line(QStringLiteral("MOV %1 %2").arg(pick(4)).arg(m_registers[pick(4)]));
+            }
+            return true;
+        }
+        return false;
+    }
+
     void rung() {
+        if (m_o.extended && chance(25) && extendedRung())
+            return;
         // Outputs first, so the rung's contacts can leave out what the rung writes.
         m_written.clear();
         const int kind = pick(10);
@@ -193,10 +308,15 @@ private:
         std::vector<QString> written;
         for (int i = 0; i < coilCount; ++i)
             written.push_back(coil());
+        // A rung may read what it writes itself (a latch, a branch that reads the coil of
+        // the branch above, a shared condition that an earlier branch changes): conversion
+        // must keep the order in which the listing reads and writes.
         for (const QStringList *p : {&m_inputs, &m_relays})
             for (const QString &d : *p)
-                if (!m_written.contains(d))
-                    m_readable.push_back(d);
+                m_readable.push_back(d);
+        for (const QString &d : written)
+            if (std::find(m_readable.begin(), m_readable.end(), d) == m_readable.end())
+                m_readable.push_back(d);
         auto out = [&](const QString &d) {
             const int k = pick(10);
             if (k == 0 && !mn(Op::Set).isEmpty())
@@ -230,6 +350,22 @@ private:
             out(written[2]);
             return;
         }
+        const QString il = mn(Op::Interlock);
+        const QString ilc = mn(Op::InterlockClear);
+        if (!stack && kind >= 7 && !il.isEmpty() && !ilc.isEmpty()) {
+            // VPC's and CPM1's branch form: the interlock holds the branch point.
+            line(il);
+            for (int i = 0; i < 3; ++i) {
+                if (i == 0 && chance(30)) {
+                    out(written[0]); // an output straight on the interlocked condition
+                    continue;
+                }
+                load(expr(1));
+                out(written[static_cast<std::size_t>(i)]);
+            }
+            line(ilc);
+            return;
+        }
         // Parallel outputs, then a continuation that adds a condition.
         // Without MPS a new block after an output would start the next rung: AND only.
         out(written[0]);
@@ -245,6 +381,9 @@ private:
     RandomProgramOptions m_o;
     QStringList m_inputs, m_outputs, m_relays, m_lines, m_written;
     std::vector<QString> m_readable;
+    QStringList m_registers, m_timerContacts;
+    bool m_compare = false;
+    int m_timers = 0;
 };
 
 } // namespace

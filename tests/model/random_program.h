@@ -2,8 +2,8 @@
 
 // Random valid programs for the property tests: rungs of series/parallel networks written in
 // any of the valid ("fuzzy") orders, several outputs per rung, MPS branches where the target
-// has a branch stack, two-input boxes where it has one. A rung never reads a device its own
-// outputs write, so one pass of the listing and one pass of the ladder mean the same thing.
+// has a branch stack, IL/ILC branch forms where it has none, two-input boxes where it has one.
+// A rung may read the devices its own outputs write.
 
 #include "model/target.h"
 
@@ -20,6 +20,9 @@ struct RandomProgramOptions {
     bool branches = true; // MPS/MRD/MPP (or output continuations) and parallel outputs
     bool boxes = true;    // LR / KEEP / two-input counters where the target has them
     bool end = true;
+    // Also edge contacts, compare contacts, timers (with their contacts) and a move box, as
+    // far as the target has them; for the simulator, whose equivalence covers them.
+    bool extended = false;
 };
 
 QString randomProgram(const model::Target &target, std::uint64_t seed,

@@ -24,20 +24,32 @@ std::shared_ptr<const simulator::Program> compile(const model::InstructionList &
 
 } // namespace
 
-class SimulatedEquivalence : public ::testing::TestWithParam<model::Family> {};
+class SimulatedEquivalence : public ::testing::TestWithParam<std::tuple<model::Family, bool>> {};
 
+// Plain programs, and (extended) programs with edge and compare contacts, timers and their
+// contacts, and a move box per family: what the combinational evaluators cannot judge.
 TEST_P(SimulatedEquivalence, ListingAndItsRoundTripGiveIdenticalTraces) {
-    const model::Target &t = model::Target::get(GetParam());
+    const model::Target &t = model::Target::get(std::get<0>(GetParam()));
+    std::set<model::Op> ops;
+    std::set<model::ContactMode> modes;
+    int compares = 0;
     for (std::uint64_t seed = 1; seed <= 150; ++seed) {
         rung::testing::RandomProgramOptions o;
         o.rungs = 5;
+        o.extended = std::get<1>(GetParam());
         const QString text = rung::testing::randomProgram(t, seed, o);
         SCOPED_TRACE(QStringLiteral("seed %1\n%2").arg(seed).arg(text).toStdString());
         const model::ParseResult parsed = model::parseInstructionList(t, text);
-        ASSERT_TRUE(parsed.ok());
+        ASSERT_TRUE(parsed.ok()) << parsed.errors[0].line << ": "
+                                 << parsed.errors[0].message.toStdString();
         const model::ToListingResult back =
             model::ladderToList(model::listToLadder(parsed.list).ladder);
         ASSERT_TRUE(back.ok());
+        for (const model::Instruction &ins : parsed.list.instructions) {
+            ops.insert(ins.op());
+            modes.insert(ins.spec->mode);
+            compares += ins.spec->compare != model::CompareOp::None ? 1 : 0;
+        }
         auto a = compile(parsed.list);
         auto b = compile(back.list);
         ASSERT_TRUE(a && b);
@@ -69,11 +81,25 @@ TEST_P(SimulatedEquivalence, ListingAndItsRoundTripGiveIdenticalTraces) {
             }
         }
     }
+    if (std::get<1>(GetParam())) { // the extended programs do hold what they promise
+        EXPECT_TRUE(ops.count(model::Op::Timer));
+        EXPECT_TRUE(ops.count(model::Op::Apply) || ops.count(model::Op::Transfer));
+        if (t.family == model::Family::Vigor || t.family == model::Family::Pl110) {
+            EXPECT_TRUE(modes.count(model::ContactMode::Rising) &&
+                        modes.count(model::ContactMode::Falling));
+        }
+        if (t.family != model::Family::Cpm1) {
+            EXPECT_GT(compares, 0);
+        }
+    }
 }
 
-INSTANTIATE_TEST_SUITE_P(Targets, SimulatedEquivalence,
-                         ::testing::Values(model::Family::Vpc, model::Family::Vigor,
-                                           model::Family::Cpm1, model::Family::Pl110),
-                         [](const auto &info) {
-                             return model::Target::get(info.param).id.toStdString();
-                         });
+INSTANTIATE_TEST_SUITE_P(
+    Targets, SimulatedEquivalence,
+    ::testing::Combine(::testing::Values(model::Family::Vpc, model::Family::Vigor,
+                                         model::Family::Cpm1, model::Family::Pl110),
+                       ::testing::Bool()),
+    [](const auto &info) {
+        return model::Target::get(std::get<0>(info.param)).id.toStdString() +
+               (std::get<1>(info.param) ? "_extended" : "");
+    });
