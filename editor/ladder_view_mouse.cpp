@@ -242,7 +242,9 @@ QString LadderView::elementHelp(const CellCursor &cell) const {
             if (!s->comment.isEmpty())
                 line += QStringLiteral(": ") + s->comment;
         }
-        lines << line;
+        // Under a comparison a bare address would only repeat it.
+        if (lines.isEmpty() || line != model::formatAddress(target, o.address))
+            lines << line;
     }
     return lines.join(QLatin1Char('\n'));
 }
