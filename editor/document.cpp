@@ -1,5 +1,7 @@
 #include "document.h"
 
+#include <algorithm>
+
 #include "model/ladder_text.h"
 
 #include <QUndoCommand>
@@ -93,6 +95,7 @@ void Document::reset(const model::Target &target, const QString &modelName) {
 void Document::setProject(const model::Project &project, const QString &path) {
     m_project = project;
     m_project.program.target = m_project.target;
+    m_unsaved = false;
     m_undo.clear();
     setPath(path);
     refresh();
@@ -154,6 +157,12 @@ void Document::removeRungs(int first, int count) {
 }
 
 void Document::setSymbols(const std::vector<model::Symbol> &symbols) {
+    const auto same = [](const model::Symbol &a, const model::Symbol &b) {
+        return a.address == b.address && a.name == b.name && a.comment == b.comment;
+    };
+    if (std::equal(symbols.begin(), symbols.end(), m_project.symbols.begin(),
+                   m_project.symbols.end(), same))
+        return; // an undo step that changes nothing would only be in the way
     m_undo.push(new SymbolsCommand(this, m_project.symbols, symbols));
 }
 

@@ -119,17 +119,32 @@ void LadderPainter::paintContact(QPainter &p, const QRectF &cell, const model::C
         return;
     }
     if (c.compare != model::CompareOp::None && c.operands.size() >= 2) {
-        // A compare contact: a box with the comparison in it.
+        // A compare contact: the first operand above the box, where a contact has its device,
+        // the comparison with the second operand in the box ("D100" over ">= K1000"); one line
+        // would not fit a cell. What still does not fit is elided: the tooltip has it all.
         const QRectF box(cell.left() + 4, y - h, cell.width() - 8, 2 * h);
         p.drawLine(QPointF(cell.left(), y), QPointF(box.left(), y));
         p.drawLine(QPointF(box.right(), y), QPointF(cell.right(), y));
         p.drawRect(box);
+        p.setFont(m_font);
+        p.drawText(QRectF(cell.left(), cell.top() + 1, cell.width(), y - h - cell.top() - 1),
+                   Qt::AlignHCenter | Qt::AlignBottom,
+                   QFontMetricsF(m_font).elidedText(primaryLabel(c.operands[0]), Qt::ElideRight,
+                                                    cell.width() - 2));
         p.setFont(m_small);
-        QString text = deviceLabel(c.operands[0]) + QLatin1String(model::compareSymbol(c.compare)) +
-                       deviceLabel(c.operands[1]);
+        QString text = QLatin1String(model::compareSymbol(c.compare)) + QLatin1Char(' ') +
+                       primaryLabel(c.operands[1]);
         if (c.mode == model::ContactMode::Negated)
             text = QStringLiteral("NOT ") + text;
-        p.drawText(box, Qt::AlignCenter, text);
+        p.drawText(box, Qt::AlignCenter,
+                   QFontMetricsF(m_small).elidedText(text, Qt::ElideRight, box.width() - 2));
+        const QString below = secondaryLabel(c.operands[0]);
+        if (!below.isEmpty()) {
+            p.setPen(kDim);
+            p.drawText(QRectF(cell.left(), y + h, cell.width(), cell.bottom() - y - h),
+                       Qt::AlignHCenter | Qt::AlignTop,
+                       QFontMetricsF(m_small).elidedText(below, Qt::ElideRight, cell.width() - 4));
+        }
         return;
     }
     p.drawLine(QPointF(cell.left(), y), QPointF(cx - half, y));

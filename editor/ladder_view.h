@@ -133,6 +133,8 @@ private:
     LadderMetrics metricsAt(double zoom) const;
     // The cell under a viewport position; rung -1 where there is none.
     CellCursor cellAt(QPointF position) const;
+    // Whether the mouse went past the drag distance since the press: less is a click.
+    bool draggedFarEnough(QPointF position) const;
     // Wires along a row or vertical links down a column, from one cell to another of a rung.
     void drawDrag(const CellCursor &from, const CellCursor &to);
     void applyZoom(double zoom);
@@ -154,10 +156,15 @@ private:
     bool m_namesFirst = false;
     QStringListModel *m_completions = nullptr;
     CellCursor m_dragFrom{-1, 0, 0}; // where the left button went down
-    QKeySequence m_tool;             // the armed palette tool, empty: select
-    int m_anchorRung = -1;           // where a rung selection started; -1: none
-    int m_anchorColumn = -1;         // where a cell selection in the cursor's row started
-    std::vector<double> m_top;       // y of each rung at zoom 1, plus the total height at the end
+    QPointF m_pressAt;               // the viewport position of that press
+    // How far the pressed cell moved on screen when the press moved the cursor (the spare row
+    // follows the cursor's rung): later positions of the same gesture are shifted by it so
+    // they are read in the layout the press was read in.
+    QPointF m_pressShift;
+    QKeySequence m_tool;       // the armed palette tool, empty: select
+    int m_anchorRung = -1;     // where a rung selection started; -1: none
+    int m_anchorColumn = -1;   // where a cell selection in the cursor's row started
+    std::vector<double> m_top; // y of each rung at zoom 1, plus the total height at the end
     QLineEdit *m_editor = nullptr;
     QLabel *m_notice = nullptr;
 };

@@ -8,6 +8,7 @@
 
 #include "model/address.h"
 
+#include <QApplication>
 #include <QKeyEvent>
 #include <QLineEdit>
 #include <QMouseEvent>
@@ -16,6 +17,32 @@
 #include <QWheelEvent>
 
 namespace rung::editor {
+
+namespace {
+
+// Widens a rung without breaking it: a row that reached the old right end (its last cell
+// holds something, or the rung had no cells and the row feeds an output) is wired on through
+// the new cells, so its coil keeps its condition.
+void widenKeepingWires(model::Rung &rung, int rows, int columns) {
+    const int oldColumns = rung.columns;
+    std::vector<bool> reached(static_cast<std::size_t>(rung.rows), false);
+    for (int r = 0; r < rung.rows && oldColumns > 0; ++r)
+        reached[static_cast<std::size_t>(r)] =
+            rung.cell(r, oldColumns - 1).kind != model::CellKind::Empty;
+    if (oldColumns == 0)
+        for (int r = 0; r < rung.rows; ++r)
+            if (rung.outputs[static_cast<std::size_t>(r)])
+                for (int input : rung.boxInputRows(r))
+                    if (input < rung.rows)
+                        reached[static_cast<std::size_t>(input)] = true;
+    rung.resize(rows, columns);
+    for (std::size_t r = 0; r < reached.size(); ++r)
+        if (reached[r])
+            for (int c = oldColumns; c < rung.columns; ++c)
+                rung.cell(static_cast<int>(r), c) = model::Cell{model::CellKind::Wire, {}};
+}
+
+} // namespace
 
 CellCursor LadderView::cellAt(QPointF position) const {
     const LadderMetrics m = metrics();
@@ -79,14 +106,23 @@ void LadderView::mousePressEvent(QMouseEvent *event) {
     } else {
         clearSelection();
     }
+    const QPointF before = cellRectOnScreen(cell).topLeft();
     setCursor(cell);
+    m_pressAt = event->position();
+    m_pressShift = QPointF(cellRectOnScreen(cell).topLeft()) - before;
     m_dragFrom = event->button() == Qt::LeftButton ? cell : CellCursor{-1, 0, 0};
+}
+
+bool LadderView::draggedFarEnough(QPointF position) const {
+    return (position - m_pressAt).manhattanLength() >= QApplication::startDragDistance();
 }
 
 void LadderView::mouseMoveEvent(QMouseEvent *event) {
     if (m_dragFrom.rung < 0 || !(event->buttons() & Qt::LeftButton))
         return;
-    const CellCursor cell = cellAt(event->position());
+    if (!draggedFarEnough(event->position()))
+        return;
+    const CellCursor cell = cellAt(event->position() + m_pressShift);
     if (cell.rung == m_dragFrom.rung && !(cell == m_cursor))
         setCursor(cell); // the cursor follows the drag: it shows where the wire will end
 }
@@ -94,9 +130,10 @@ void LadderView::mouseMoveEvent(QMouseEvent *event) {
 void LadderView::mouseReleaseEvent(QMouseEvent *event) {
     const CellCursor from = m_dragFrom;
     m_dragFrom = {-1, 0, 0};
-    if (from.rung < 0 || event->button() != Qt::LeftButton)
+    // A click that moved less than the drag distance is a click, whatever cell it ends on.
+    if (from.rung < 0 || event->button() != Qt::LeftButton || !draggedFarEnough(event->position()))
         return;
-    const CellCursor to = cellAt(event->position());
+    const CellCursor to = cellAt(event->position() + m_pressShift);
     if (to.rung == from.rung && !(to == from))
         drawDrag(from, to);
 }
@@ -111,15 +148,15 @@ void LadderView::drawDrag(const CellCursor &from, const CellCursor &to) {
         // column takes no wire (the row is wired to it by itself).
         const int first = std::min(from.column, to.column);
         const int last = std::min(std::max(from.column, to.column), m.gridColumns - 1);
-        rung.resize(std::max(rung.rows, from.row + 1), std::max(rung.columns, last + 1));
-        bool changed = false;
+        const model::Rung before = rung;
+        widenKeepingWires(rung, std::max(rung.rows, from.row + 1),
+                          std::max(rung.columns, last + 1));
         for (int c = first; c <= last; ++c) {
             model::Cell &cell = rung.cell(from.row, c);
-            if (cell.kind == model::CellKind::Empty) {
+            if (cell.kind == model::CellKind::Empty)
                 cell = model::Cell{model::CellKind::Wire, {}};
-                changed = true;
-            }
         }
+        const bool changed = !(rung == before);
         if (changed)
             m_document->setRung(from.rung, rung, tr("Draw a wire"));
         return;
@@ -130,7 +167,7 @@ void LadderView::drawDrag(const CellCursor &from, const CellCursor &to) {
     const int node = from.column >= m.gridColumns ? rung.columns : from.column;
     const int top = std::min(from.row, to.row);
     const int bottom = std::max(from.row, to.row);
-    rung.resize(std::max(rung.rows, bottom + 1), std::max(rung.columns, node));
+    widenKeepingWires(rung, std::max(rung.rows, bottom + 1), std::max(rung.columns, node));
     for (int r = top; r < bottom; ++r)
         rung.setLink(r, node, true);
     m_document->setRung(from.rung, rung, tr("Draw a vertical link"));
@@ -172,17 +209,42 @@ QString LadderView::elementHelp(const CellCursor &cell) const {
         operands = &rung.cell(cell.row, cell.column).contact.operands;
     }
     QStringList lines;
+    const model::Target &target = m_document->target();
+    auto operandText = [&target](const model::Operand &o) {
+        switch (o.kind) {
+        case model::Operand::Kind::Device:
+            return model::formatAddress(target, o.address);
+        case model::Operand::Kind::Constant:
+            return model::formatConstant(target, o.constant);
+        case model::Operand::Kind::Text:
+            return o.text;
+        }
+        return QString();
+    };
+    // A compare contact's cell is too narrow for the whole comparison: here it is in full.
+    if (cell.column < metrics().gridColumns && cell.column < rung.columns) {
+        const model::Contact &c = rung.cell(cell.row, cell.column).contact;
+        if (c.compare != model::CompareOp::None && c.operands.size() >= 2)
+            lines << QStringLiteral("%1%2 %3 %4")
+                         .arg(c.mode == model::ContactMode::Negated ? QStringLiteral("NOT ")
+                                                                    : QString(),
+                              operandText(c.operands[0]),
+                              QLatin1String(model::compareSymbol(c.compare)),
+                              operandText(c.operands[1]));
+    }
     for (const model::Operand &o : operands ? *operands : std::vector<model::Operand>{}) {
         if (o.kind != model::Operand::Kind::Device)
             continue;
-        QString line = model::formatAddress(m_document->target(), o.address);
+        QString line = model::formatAddress(target, o.address);
         if (const model::Symbol *s = m_document->project().symbol(o.address)) {
             if (!s->name.isEmpty())
                 line += QStringLiteral(" — ") + s->name;
             if (!s->comment.isEmpty())
                 line += QStringLiteral(": ") + s->comment;
         }
-        lines << line;
+        // Under a comparison a bare address would only repeat it.
+        if (lines.isEmpty() || line != model::formatAddress(target, o.address))
+            lines << line;
     }
     return lines.join(QLatin1Char('\n'));
 }

@@ -44,10 +44,8 @@ int runGui(int argc, char **argv) {
     if (!arguments.ok())
         QMessageBox::critical(&window, QApplication::translate("rung::app::Gui", "Rung Studio"),
                               arguments.error);
-    else if (!arguments.file.isEmpty())
-        window.openFile(arguments.file, arguments.target);
     else
-        window.offerRecovery();
+        window.start(arguments.file, arguments.target);
     if (!arguments.screenshot.isEmpty()) {
         const QString path = arguments.screenshot;
         QTimer::singleShot(1200, &window, [&window, &app, path] {

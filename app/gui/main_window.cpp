@@ -14,6 +14,7 @@
 #include <QHeaderView>
 #include <QInputDialog>
 #include <QLabel>
+#include <QLockFile>
 #include <QSettings>
 #include <QSplitter>
 #include <QStatusBar>
@@ -92,6 +93,7 @@ MainWindow::MainWindow(QWidget *parent)
     });
     connect(m_problems, &editor::ProblemsView::applyFix, this, &MainWindow::applyFix);
 
+    claimRecoveryFile();
     m_recoveryTimer.setInterval(60 * 1000);
     connect(&m_recoveryTimer, &QTimer::timeout, this, &MainWindow::writeRecovery);
     m_recoveryTimer.start();
@@ -160,29 +162,8 @@ void MainWindow::buildDocks() {
     projectDock->setWidget(panel);
     addDockWidget(Qt::LeftDockWidgetArea, projectDock);
     connect(m_symbols, &QTableWidget::cellChanged, this, [this](int row, int) {
-        if (m_updatingSymbols)
-            return;
-        // Edited in place: a new symbol list, one undo step.
-        std::vector<model::Symbol> symbols;
-        for (int r = 0; r < m_symbols->rowCount(); ++r) {
-            const QString device =
-                m_symbols->item(r, 0) ? m_symbols->item(r, 0)->text().trimmed() : QString();
-            if (device.isEmpty())
-                continue;
-            auto parsed =
-                model::parseAddress(m_document->target(), device, m_document->modelVariant());
-            if (auto *e = std::get_if<model::AddressError>(&parsed)) {
-                if (r == row)
-                    statusBar()->showMessage(e->message, 5000);
-                continue;
-            }
-            model::Symbol s;
-            s.address = std::get<model::Address>(parsed);
-            s.name = m_symbols->item(r, 1) ? m_symbols->item(r, 1)->text() : QString();
-            s.comment = m_symbols->item(r, 2) ? m_symbols->item(r, 2)->text() : QString();
-            symbols.push_back(s);
-        }
-        m_document->setSymbols(symbols);
+        if (!m_updatingSymbols)
+            symbolsEdited(row);
     });
 }
 
@@ -262,33 +243,89 @@ void MainWindow::refreshFromDocument() {
                 stepOfLine.push_back(-1);
         }
     }
-    if (!m_editingListing)
-        m_il->setStepNumbers(stepOfLine);
+    if (m_editingListing) {
+        // The text as typed (with errors, or in a form of its own): its lines that parse
+        // keep their step numbers, as the parser counts them.
+        const model::ParseResult typed = model::parseInstructionList(
+            m_document->target(), m_il->text(), m_document->modelVariant());
+        stepOfLine.assign(static_cast<std::size_t>(std::max(0, m_il->lines())), -1);
+        for (const model::Instruction &ins : typed.list.instructions)
+            if (ins.line >= 1 && ins.line <= static_cast<int>(stepOfLine.size()))
+                stepOfLine[static_cast<std::size_t>(ins.line - 1)] = ins.step;
+    }
+    m_il->setStepNumbers(stepOfLine);
     refreshSymbols();
     updateStatus();
+}
+
+void MainWindow::symbolsEdited(int row) {
+    // Edited in place: the complete rows make the new symbol list (one undo step when it
+    // changed), the others wait in the table; a row cleared of everything goes.
+    std::vector<model::Symbol> symbols;
+    m_pendingSymbols.clear();
+    auto text = [this](int r, int c) {
+        return m_symbols->item(r, c) ? m_symbols->item(r, c)->text() : QString();
+    };
+    for (int r = 0; r < m_symbols->rowCount(); ++r) {
+        const PendingSymbol typed{text(r, 0).trimmed(), text(r, 1), text(r, 2)};
+        if (typed.device.isEmpty() && typed.name.isEmpty() && typed.comment.isEmpty())
+            continue;
+        const auto parsed =
+            typed.device.isEmpty()
+                ? std::variant<model::Address, model::AddressError>(model::AddressError{})
+                : model::parseAddress(m_document->target(), typed.device,
+                                      m_document->modelVariant());
+        if (const auto *e = std::get_if<model::AddressError>(&parsed)) {
+            if (r == row && !typed.device.isEmpty())
+                statusBar()->showMessage(e->message, 5000);
+            m_pendingSymbols.push_back(typed);
+            continue;
+        }
+        symbols.push_back({std::get<model::Address>(parsed), typed.name, typed.comment});
+    }
+    m_document->setSymbols(symbols); // refreshes the table when it changed anything
+    refreshSymbols();
 }
 
 void MainWindow::refreshSymbols() {
     m_updatingSymbols = true;
     const auto &symbols = m_document->project().symbols;
-    m_symbols->setRowCount(static_cast<int>(symbols.size()) + 1); // a free row for a new symbol
-    for (int r = 0; r < static_cast<int>(symbols.size()); ++r) {
+    const int count = static_cast<int>(symbols.size());
+    const int pending = static_cast<int>(m_pendingSymbols.size());
+    m_symbols->setRowCount(count + pending + 1); // a free row for a new symbol
+    for (int r = 0; r < count; ++r) {
         const model::Symbol &s = symbols[static_cast<std::size_t>(r)];
         m_symbols->setItem(
             r, 0, new QTableWidgetItem(model::formatAddress(m_document->target(), s.address)));
         m_symbols->setItem(r, 1, new QTableWidgetItem(s.name));
         m_symbols->setItem(r, 2, new QTableWidgetItem(s.comment));
     }
+    for (int i = 0; i < pending; ++i) {
+        const PendingSymbol &p = m_pendingSymbols[static_cast<std::size_t>(i)];
+        auto *device = new QTableWidgetItem(p.device);
+        if (!p.device.isEmpty()) {
+            const auto parsed =
+                model::parseAddress(m_document->target(), p.device, m_document->modelVariant());
+            if (const auto *e = std::get_if<model::AddressError>(&parsed)) {
+                device->setForeground(QColor(0xb0, 0x00, 0x20));
+                device->setBackground(QColor(0xfd, 0xe7, 0xea));
+                device->setToolTip(e->message);
+            }
+        }
+        m_symbols->setItem(count + i, 0, device);
+        m_symbols->setItem(count + i, 1, new QTableWidgetItem(p.name));
+        m_symbols->setItem(count + i, 2, new QTableWidgetItem(p.comment));
+    }
     for (int c = 0; c < 3; ++c)
-        m_symbols->setItem(static_cast<int>(symbols.size()), c, new QTableWidgetItem);
+        m_symbols->setItem(count + pending, c, new QTableWidgetItem);
     const model::Target &t = m_document->target();
-    m_projectInfo->setText(tr("<b>%1</b><br>Target: %2, model %3<br>%4 rungs, %5 steps")
-                               .arg(m_document->path().isEmpty()
-                                        ? tr("Untitled")
-                                        : m_document->path().section(QLatin1Char('/'), -1),
-                                    t.displayName, m_document->modelVariant()->name)
-                               .arg(m_document->ladder().rungs.size())
-                               .arg(m_document->stepCount()));
+    const int rungs = static_cast<int>(m_document->ladder().rungs.size());
+    m_projectInfo->setText(
+        tr("<b>%1</b><br>Target: %2, model %3<br>%4, %5")
+            .arg(m_document->path().isEmpty() ? tr("Untitled")
+                                              : m_document->path().section(QLatin1Char('/'), -1),
+                 t.displayName, m_document->modelVariant()->name, tr("%n rung(s)", nullptr, rungs),
+                 tr("%n step(s)", nullptr, m_document->stepCount())));
     m_updatingSymbols = false;
 }
 
@@ -388,7 +425,7 @@ void MainWindow::closeEvent(QCloseEvent *event) {
     QSettings settings;
     settings.setValue(QStringLiteral("window/geometry"), saveGeometry());
     settings.setValue(QStringLiteral("window/state"), saveState());
-    QFile::remove(recoveryPath());
+    removeRecovery();
     event->accept();
 }
 

@@ -9,7 +9,10 @@
 #include <QMainWindow>
 #include <QTimer>
 
+#include <memory>
+
 class QLabel;
+class QLockFile;
 class QSplitter;
 class QTabWidget;
 class QTableWidget;
@@ -54,7 +57,10 @@ public:
     bool printLadder(QPrinter *printer);
     // Applies the IL editor's text now (the editor also does it after a short pause).
     void applyListing();
+    // This window's recovery file (one per window of each running instance, so instances
+    // never overwrite each other's) and the folder all of them live in.
     QString recoveryPath() const;
+    static void setRecoveryDirectory(const QString &directory); // tests: a folder of their own
     // Tools over the whole program (main_window_tools.cpp).
     void copyRung(bool cut);
     void pasteRungs();
@@ -69,7 +75,12 @@ public:
     QLineEdit *crossReferenceDevice() { return m_crossDevice; }
     QTreeWidget *crossReference() { return m_crossTree; }
     void writeRecovery();
+    // Offers the recovery file of an instance that is gone (crashed), newest first; true when
+    // one was recovered: it is then the open program, modified, with its original file.
     bool offerRecovery(bool ask = true);
+    // What the application shows first: work orphaned by a crash when the user recovers it,
+    // else the file of the command line (if any).
+    void start(const QString &file, const QString &targetId, bool askToRecover = true);
 
 protected:
     void closeEvent(QCloseEvent *event) override;
@@ -82,6 +93,7 @@ private:
     void refreshFromDocument();
     void showProject(const model::Project &project, const QString &path);
     void refreshSymbols();
+    void symbolsEdited(int row);
     void locate(const model::Diagnostic &diagnostic);
     void applyFix(const model::Diagnostic &diagnostic);
     QAction *undoAction(bool redo);
@@ -89,6 +101,8 @@ private:
     void addRecent(const QString &path);
     void rebuildRecentMenu();
     void rebuildExamplesMenu();
+    void claimRecoveryFile();
+    void removeRecovery();
 
     // File actions (main_window_files.cpp).
     void fileNew();
@@ -123,11 +137,19 @@ private:
     QMenu *m_examplesMenu = nullptr;
     QTimer m_ilTimer;
     QTimer m_recoveryTimer;
+    QString m_recoveryBase;                    // recovery file path without its suffix
+    std::unique_ptr<QLockFile> m_recoveryLock; // held while this window lives
     std::vector<model::Diagnostic> m_listingErrors;
     bool m_editingListing = false;
     QString m_findText; // the device of the last Find, for F3 / Shift+F3
     bool m_sideBySide = false;
     bool m_updatingSymbols = false;
+    // Symbol table rows being typed that are no symbol yet (no device, or one the target does
+    // not have): they stay in the table, after the symbols, until complete or cleared.
+    struct PendingSymbol {
+        QString device, name, comment;
+    };
+    std::vector<PendingSymbol> m_pendingSymbols;
 };
 
 } // namespace rung::app

@@ -22,6 +22,18 @@
 
 namespace rung::app {
 
+namespace {
+
+// The ladder view reads these keys itself (as it reads typing into a cell), so they work the
+// same with or without the menu; the action carries the key for the menu to show, and only
+// fires while its menu is open, never in the list editor, where the keys mean other things.
+void showKeyInMenu(QAction *action, const QKeySequence &key) {
+    action->setShortcut(key);
+    action->setShortcutContext(Qt::WidgetShortcut);
+}
+
+} // namespace
+
 void MainWindow::buildActions() {
     QMenu *file = menuBar()->addMenu(tr("&File"));
     QToolBar *bar = addToolBar(tr("Main"));
@@ -65,7 +77,11 @@ void MainWindow::buildActions() {
     QAction *undo = undoAction(false);
     undo->setShortcut(QKeySequence::Undo);
     QAction *redo = undoAction(true);
-    redo->setShortcuts({QKeySequence::Redo, QKeySequence(Qt::CTRL | Qt::Key_Y)});
+    // Ctrl+Y as well, as on Windows, once: the platform's Redo may already be it.
+    QList<QKeySequence> redoKeys = QKeySequence::keyBindings(QKeySequence::Redo);
+    if (!redoKeys.contains(QKeySequence(Qt::CTRL | Qt::Key_Y)))
+        redoKeys << QKeySequence(Qt::CTRL | Qt::Key_Y);
+    redo->setShortcuts(redoKeys);
     undo->setIcon(editor::toolIcon(editor::ToolIcon::Undo));
     redo->setIcon(editor::toolIcon(editor::ToolIcon::Redo));
     edit->addAction(undo);
@@ -88,22 +104,22 @@ void MainWindow::buildActions() {
         std::function<void()> run;
     };
     const std::vector<Tool> tools = {
-        {tr("Normally Open Contact"), editor::ToolIcon::OpenContact, QKeySequence(Qt::Key_F5),
+        {tr("Normally &Open Contact"), editor::ToolIcon::OpenContact, QKeySequence(Qt::Key_F5),
          pressKey(Qt::Key_F5)},
-        {tr("Normally Closed Contact"), editor::ToolIcon::ClosedContact, QKeySequence(Qt::Key_F6),
+        {tr("Normally &Closed Contact"), editor::ToolIcon::ClosedContact, QKeySequence(Qt::Key_F6),
          pressKey(Qt::Key_F6)},
-        {tr("Parallel Contact"), editor::ToolIcon::ParallelContact,
+        {tr("&Parallel Contact"), editor::ToolIcon::ParallelContact,
          QKeySequence(Qt::SHIFT | Qt::Key_F5), pressKey(Qt::Key_F5, Qt::ShiftModifier)},
-        {tr("Rising-Edge Contact"), editor::ToolIcon::RisingContact,
+        {tr("&Rising-Edge Contact"), editor::ToolIcon::RisingContact,
          QKeySequence(Qt::SHIFT | Qt::Key_F7), pressKey(Qt::Key_F7, Qt::ShiftModifier)},
-        {tr("Falling-Edge Contact"), editor::ToolIcon::FallingContact,
+        {tr("&Falling-Edge Contact"), editor::ToolIcon::FallingContact,
          QKeySequence(Qt::SHIFT | Qt::Key_F8), pressKey(Qt::Key_F8, Qt::ShiftModifier)},
-        {tr("Coil"), editor::ToolIcon::Coil, QKeySequence(Qt::Key_F7), pressKey(Qt::Key_F7)},
-        {tr("Instruction"), editor::ToolIcon::Instruction, QKeySequence(Qt::Key_F8),
+        {tr("Co&il"), editor::ToolIcon::Coil, QKeySequence(Qt::Key_F7), pressKey(Qt::Key_F7)},
+        {tr("I&nstruction"), editor::ToolIcon::Instruction, QKeySequence(Qt::Key_F8),
          pressKey(Qt::Key_F8)},
-        {tr("Horizontal Wire"), editor::ToolIcon::HorizontalWire, QKeySequence(Qt::Key_F9),
+        {tr("&Horizontal Wire"), editor::ToolIcon::HorizontalWire, QKeySequence(Qt::Key_F9),
          [this] { m_ladder->placeWire(); }},
-        {tr("Vertical Link"), editor::ToolIcon::VerticalLink, QKeySequence(Qt::SHIFT | Qt::Key_F9),
+        {tr("&Vertical Link"), editor::ToolIcon::VerticalLink, QKeySequence(Qt::SHIFT | Qt::Key_F9),
          [this] { m_ladder->toggleLink(); }},
     };
     // The menu acts at the cursor, as the keys do. The toolbar's palette is a set of tools: pick
@@ -116,17 +132,20 @@ void MainWindow::buildActions() {
     pointer->setChecked(true);
     palette->addAction(pointer);
     connect(pointer, &QAction::triggered, this, [this] { m_ladder->armTool({}); });
+    // The palette's entries in a submenu of their own: with them the Edit menu had more
+    // entries than letters for access keys.
+    QMenu *place = edit->addMenu(tr("Place &Element"));
     for (const Tool &t : tools) {
-        QAction *a = edit->addAction(editor::toolIcon(t.icon), t.text, this, t.run);
-        a->setToolTip(
-            QStringLiteral("%1 (%2)").arg(t.text, t.key.toString(QKeySequence::NativeText)));
-        QAction *tool = bar->addAction(editor::toolIcon(t.icon), t.text);
+        const QString name = QString(t.text).remove(QLatin1Char('&'));
+        QAction *a = place->addAction(editor::toolIcon(t.icon), t.text, this, t.run);
+        showKeyInMenu(a, t.key);
+        QAction *tool = bar->addAction(editor::toolIcon(t.icon), name);
         tool->setToolTip(tr("%1 (%2): click the cells to place it")
-                             .arg(t.text, t.key.toString(QKeySequence::NativeText)));
+                             .arg(name, t.key.toString(QKeySequence::NativeText)));
         tool->setCheckable(true);
         tool->setData(t.key);
         palette->addAction(tool);
-        connect(tool, &QAction::triggered, this, [this, key = t.key, text = t.text] {
+        connect(tool, &QAction::triggered, this, [this, key = t.key, text = name] {
             m_ladder->armTool(key);
             m_ladder->setFocus();
             statusBar()->showMessage(
@@ -161,26 +180,30 @@ void MainWindow::buildActions() {
     edit->addAction(tr("Find Pre&vious"), this, [this] { findDevice(m_findText, true); })
         ->setShortcut(QKeySequence(Qt::SHIFT | Qt::Key_F3));
     edit->addAction(tr("Replace &Device..."), this, &MainWindow::replaceDevice)
-        ->setShortcut(QKeySequence::Replace);
+        ->setShortcut(QKeySequence(Qt::CTRL | Qt::Key_H)); // QKeySequence::Replace: none on Linux
     edit->addSeparator();
-    edit->addAction(tr("Import Symbols (CSV)..."), this, [this] {
+    edit->addAction(tr("&Import Symbols (CSV)..."), this, [this] {
         const QString path = QFileDialog::getOpenFileName(this, tr("Import Symbols"), QString(),
                                                           tr("CSV files (*.csv)"));
         QString error;
         if (!path.isEmpty() && !importSymbols(path, &error))
             QMessageBox::critical(this, tr("Cannot import"), error);
     });
-    edit->addAction(tr("Export Symbols (CSV)..."), this, &MainWindow::exportSymbols);
+    edit->addAction(tr("E&xport Symbols (CSV)..."), this, &MainWindow::exportSymbols);
     edit->addSeparator();
-    edit->addAction(tr("Add to &Watch List"), this,
+    edit->addAction(tr("Add to Watc&h List"), this,
                     [this] { m_watch->addDevice(m_ladder->deviceAtCursor()); })
         ->setShortcut(QKeySequence(Qt::CTRL | Qt::SHIFT | Qt::Key_W));
     edit->addAction(tr("Rung Co&mment..."), this, &MainWindow::editRungComment)
         ->setShortcut(QKeySequence(Qt::CTRL | Qt::SHIFT | Qt::Key_M));
-    edit->addAction(tr("Insert Rung"), this, [this] { m_ladder->insertRung(); });
-    edit->addAction(tr("Delete Rung"), this, [this] { m_ladder->deleteRung(); });
-    edit->addAction(tr("Insert Row"), this, [this] { m_ladder->insertRow(); });
-    edit->addAction(tr("Delete Row"), this, [this] { m_ladder->deleteRow(); });
+    showKeyInMenu(edit->addAction(tr("In&sert Rung"), this, [this] { m_ladder->insertRung(); }),
+                  QKeySequence(Qt::SHIFT | Qt::Key_Insert));
+    showKeyInMenu(edit->addAction(tr("De&lete Rung"), this, [this] { m_ladder->deleteRung(); }),
+                  QKeySequence(Qt::SHIFT | Qt::Key_Delete));
+    showKeyInMenu(edit->addAction(tr("Insert R&ow"), this, [this] { m_ladder->insertRow(); }),
+                  QKeySequence(Qt::CTRL | Qt::Key_Insert));
+    showKeyInMenu(edit->addAction(tr("Delete Ro&w"), this, [this] { m_ladder->deleteRow(); }),
+                  QKeySequence(Qt::CTRL | Qt::Key_Delete));
 
     QMenu *view = menuBar()->addMenu(tr("&View"));
     QAction *side = view->addAction(tr("Ladder and List &Side by Side"));

@@ -7,6 +7,7 @@
 #include "model/project.h"
 
 #include <QComboBox>
+#include <QCoreApplication>
 #include <QDate>
 #include <QDialog>
 #include <QDialogButtonBox>
@@ -17,6 +18,7 @@
 #include <QFormLayout>
 #include <QImage>
 #include <QLocale>
+#include <QLockFile>
 #include <QMenu>
 #include <QMessageBox>
 #include <QPainter>
@@ -86,10 +88,72 @@ double programHeight(const model::Project &project, const editor::LadderMetrics 
 
 } // namespace
 
-QString MainWindow::recoveryPath() const {
-    const QString dir = QStandardPaths::writableLocation(QStandardPaths::AppDataLocation);
+namespace {
+
+QString &recoveryDirectoryOverride() {
+    static QString directory;
+    return directory;
+}
+
+QString recoveryDirectory() {
+    const QString dir = recoveryDirectoryOverride().isEmpty()
+                            ? QStandardPaths::writableLocation(QStandardPaths::AppDataLocation)
+                            : recoveryDirectoryOverride();
     QDir().mkpath(dir);
-    return dir + QStringLiteral("/recovery.rung");
+    return dir;
+}
+
+// Beside each recovery file: the lock its instance holds while it runs, and the path of the
+// file the recovered program came from (Save goes back there).
+QString lockPath(const QString &base) {
+    return base + QStringLiteral(".lock");
+}
+QString originPath(const QString &base) {
+    return base + QStringLiteral(".path");
+}
+
+// A readable title from an example's file name: "traffic-light" -> "Traffic light",
+// "difu-difd" -> "DIFU / DIFD"; the target's mnemonics are written as its manuals write them.
+QString exampleTitle(const model::Target *target, const QString &baseName) {
+    QStringList words = baseName.split(QLatin1Char('-'), Qt::SkipEmptyParts);
+    if (words.isEmpty())
+        return baseName;
+    int mnemonics = 0;
+    for (QString &w : words)
+        if (target && target->findInstruction(w.toUpper())) {
+            w = w.toUpper();
+            ++mnemonics;
+        }
+    if (mnemonics == words.size() && words.size() > 1)
+        return words.join(QStringLiteral(" / "));
+    words.front()[0] = words.front()[0].toUpper();
+    return words.join(QLatin1Char(' '));
+}
+
+} // namespace
+
+void MainWindow::setRecoveryDirectory(const QString &directory) {
+    recoveryDirectoryOverride() = directory;
+}
+
+void MainWindow::claimRecoveryFile() {
+    static int windows = 0;
+    m_recoveryBase = QStringLiteral("%1/recovery-%2-%3")
+                         .arg(recoveryDirectory())
+                         .arg(QCoreApplication::applicationPid())
+                         .arg(++windows);
+    m_recoveryLock = std::make_unique<QLockFile>(lockPath(m_recoveryBase));
+    m_recoveryLock->setStaleLockTime(0); // stale only when its process is gone
+    m_recoveryLock->tryLock(0);
+}
+
+QString MainWindow::recoveryPath() const {
+    return m_recoveryBase + QStringLiteral(".rung");
+}
+
+void MainWindow::removeRecovery() {
+    QFile::remove(recoveryPath());
+    QFile::remove(originPath(m_recoveryBase));
 }
 
 void MainWindow::writeRecovery() {
@@ -97,25 +161,61 @@ void MainWindow::writeRecovery() {
         return;
     model::ProjectError error;
     model::saveProject(m_document->project(), recoveryPath(), &error);
+    QSaveFile origin(originPath(m_recoveryBase));
+    if (origin.open(QIODevice::WriteOnly)) {
+        origin.write(m_document->path().toUtf8());
+        origin.commit();
+    }
 }
 
 bool MainWindow::offerRecovery(bool ask) {
-    const QString path = recoveryPath();
-    if (!QFileInfo::exists(path))
-        return false;
-    if (ask && QMessageBox::question(
-                   this, tr("Recover"),
-                   tr("Rung Studio was not closed properly last time. Recover the unsaved "
-                      "program?")) != QMessageBox::Yes) {
-        QFile::remove(path);
-        return false;
+    const QFileInfoList files =
+        QDir(recoveryDirectory())
+            .entryInfoList({QStringLiteral("recovery*.rung")}, QDir::Files, QDir::Time);
+    for (const QFileInfo &file : files) {
+        const QString base = file.absoluteFilePath().chopped(5); // without ".rung"
+        if (base == m_recoveryBase)
+            continue;
+        // A lock that can be taken belongs to no running instance: its work is orphaned.
+        QLockFile owner(lockPath(base));
+        owner.setStaleLockTime(0);
+        if (!owner.tryLock(0))
+            continue;
+        QString origin;
+        QFile originFile(originPath(base));
+        if (originFile.open(QIODevice::ReadOnly))
+            origin = QString::fromUtf8(originFile.readAll()).trimmed();
+        originFile.close();
+        const QString question =
+            origin.isEmpty()
+                ? tr("Rung Studio was not closed properly last time. Recover the unsaved "
+                     "program?")
+                : tr("Rung Studio was not closed properly last time. Recover the unsaved "
+                     "changes to %1?")
+                      .arg(QDir::toNativeSeparators(origin));
+        const bool wanted =
+            !ask || QMessageBox::question(this, tr("Recover"), question) == QMessageBox::Yes;
+        model::ProjectError error;
+        const auto project = wanted ? model::loadProject(file.absoluteFilePath(), &error)
+                                    : std::optional<model::Project>();
+        QFile::remove(file.absoluteFilePath());
+        QFile::remove(originPath(base));
+        if (!project)
+            continue;
+        showProject(*project, origin);
+        m_document->markUnsaved(); // no file has this work yet: closing asks to save it
+        updateTitle();
+        writeRecovery(); // now this instance's to keep
+        return true;
     }
-    model::ProjectError error;
-    auto project = model::loadProject(path, &error);
-    if (!project)
-        return false;
-    showProject(*project, QString());
-    return true;
+    return false;
+}
+
+void MainWindow::start(const QString &file, const QString &targetId, bool askToRecover) {
+    // Recovery comes first, or a start with a file (as scripts/start.sh does) would never
+    // offer it, and the next normal close would delete the orphan with its work.
+    if (!offerRecovery(askToRecover) && !file.isEmpty())
+        openFile(file, targetId);
 }
 
 void MainWindow::showProject(const model::Project &project, const QString &path) {
@@ -124,6 +224,7 @@ void MainWindow::showProject(const model::Project &project, const QString &path)
     m_il->setTarget(*project.target);
     m_il->dropHistory();
     m_listingErrors.clear();
+    m_pendingSymbols.clear(); // half-typed rows belong to the program that goes
     m_document->setProject(project, path);
 }
 
@@ -131,6 +232,7 @@ void MainWindow::newProject(const model::Target &target, const QString &modelNam
     m_il->setTarget(target);
     m_il->dropHistory();
     m_listingErrors.clear();
+    m_pendingSymbols.clear(); // half-typed rows belong to the program that goes
     m_document->reset(target, modelName);
 }
 
@@ -195,7 +297,7 @@ bool MainWindow::saveTo(const QString &path) {
     }
     m_document->setPath(path);
     m_document->markSaved();
-    QFile::remove(recoveryPath());
+    removeRecovery();
     addRecent(path);
     refreshSymbols();
     statusBar()->showMessage(tr("Saved %1").arg(path), 3000);
@@ -452,7 +554,7 @@ void MainWindow::rebuildExamplesMenu() {
         QMenu *sub = m_examplesMenu->addMenu(t ? t->displayName : target);
         paths.sort();
         for (const QString &path : paths)
-            sub->addAction(QFileInfo(path).baseName(), this, [this, path] {
+            sub->addAction(exampleTitle(t, QFileInfo(path).baseName()), this, [this, path] {
                 if (!maybeSave())
                     return;
                 // Examples open as untitled copies: saving asks where.

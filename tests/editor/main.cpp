@@ -1,4 +1,6 @@
 // One QApplication for every GUI test, on the offscreen platform (tests/CMakeLists.txt).
+#include "app/gui/main_window.h"
+
 #include <QApplication>
 #include <QSettings>
 #include <QStandardPaths>
@@ -17,6 +19,10 @@ int main(int argc, char **argv) {
     QSettings::setPath(QSettings::NativeFormat, QSettings::UserScope, settingsDir.path());
     QSettings::setPath(QSettings::IniFormat, QSettings::UserScope, settingsDir.path());
     QApplication app(argc, argv);
+    // Recovery files in a folder of this process: the tests of another process must not
+    // see them as work orphaned by a crash.
+    QTemporaryDir recoveryDir;
+    rung::app::MainWindow::setRecoveryDirectory(recoveryDir.path());
     QApplication::setOrganizationName(QStringLiteral("RungStudioTests"));
     QApplication::setApplicationName(QStringLiteral("Rung Studio Tests"));
     ::testing::InitGoogleTest(&argc, argv);

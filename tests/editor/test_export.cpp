@@ -112,3 +112,18 @@ TEST_F(ExportFixture, RungCommentIsOneUndoStepAndGoesIntoTheListing) {
     window.document()->undoStack()->undo();
     EXPECT_TRUE(window.document()->listingText().startsWith(QStringLiteral("LD X0")));
 }
+
+// A compare contact shows both operands in its narrow cell: the first above the box, the
+// comparison with the second in it; the tooltip has the whole comparison.
+TEST_F(ExportFixture, CompareContactsShowBothOperands) {
+    std::vector<model::Diagnostic> errors;
+    ASSERT_TRUE(window.document()->setListing(
+        QStringLiteral("LD X0\nAND>= D100 K1000\nOUT Y0\nEND\n"), &errors));
+    QString error;
+    ASSERT_TRUE(window.exportLadder(dir.filePath(QStringLiteral("compare.svg")), &error))
+        << error.toStdString();
+    const QByteArray svg = read(QStringLiteral("compare.svg"));
+    EXPECT_TRUE(svg.contains(">D100<")) << svg.toStdString();
+    EXPECT_TRUE(svg.contains("&gt;= K1000<")) << svg.toStdString();
+    EXPECT_EQ(window.ladderView()->elementHelp({0, 0, 1}), QStringLiteral("D100 >= K1000"));
+}

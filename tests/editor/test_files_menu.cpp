@@ -48,6 +48,23 @@ TEST(FilesMenu, ExamplesForEveryTargetOpenAsUntitledCopies) {
             << model::Target::get(f).displayName.toStdString();
 }
 
+// Titles to read, not file names: the resource "vigor/traffic-light.rung" is "Traffic light",
+// "cpm1/difu-difd.rung" names its two instructions as the manual writes them.
+TEST(FilesMenu, ExamplesHaveReadableTitles) {
+    app::MainWindow window;
+    QMenu *examples = fileSubmenu(window, QStringLiteral("Examples"));
+    ASSERT_NE(examples, nullptr);
+    QStringList titles;
+    for (QAction *sub : examples->actions())
+        for (QAction *example : sub->menu()->actions())
+            titles << example->text();
+    EXPECT_TRUE(titles.contains(QStringLiteral("Traffic light"))) << titles.join(',').toStdString();
+    EXPECT_TRUE(titles.contains(QStringLiteral("DIFU / DIFD"))) << titles.join(',').toStdString();
+    for (const QString &title : titles)
+        EXPECT_FALSE(title.contains(QLatin1Char('-')) && !title.contains(QLatin1Char(' ')))
+            << title.toStdString();
+}
+
 TEST(FilesMenu, RecentFilesAreRememberedNewestFirst) {
     QSettings().remove(QStringLiteral("files/recent"));
     QTemporaryDir dir;

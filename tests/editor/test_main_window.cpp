@@ -5,12 +5,18 @@
 
 #include "model/ladder_text.h"
 
+#include <QAction>
+#include <QApplication>
 #include <QClipboard>
+#include <QFileInfo>
 #include <QLineEdit>
+#include <QMessageBox>
+#include <QPushButton>
 #include <QSignalSpy>
 #include <QStatusBar>
 #include <QTemporaryDir>
 #include <QTest>
+#include <QTimer>
 #include <QTreeWidget>
 #include <QUndoStack>
 
@@ -256,15 +262,90 @@ TEST_F(Fixture, TypedTextWithErrorsGivesWayToALadderEditButStaysInTheListsUndo) 
     EXPECT_EQ(window.ilEditor()->text(), typed);
 }
 
-TEST_F(Fixture, RecoveryBringsBackUnsavedWork) {
-    window.ilEditor()->setText(QStringLiteral("LD X5\nOUT Y5\nEND\n"));
-    window.applyListing();
-    ASSERT_TRUE(window.document()->isModified());
-    window.writeRecovery();
+namespace {
+
+// The window's action with this shortcut, as the user reaches it.
+QAction *actionWithShortcut(QWidget &window, const QKeySequence &key) {
+    for (QAction *a : window.findChildren<QAction *>())
+        if (a->shortcuts().contains(key))
+            return a;
+    return nullptr;
+}
+
+// Leaves work unsaved in a window that never closes, as a crash does: its recovery file is
+// orphaned when the window goes. The program came from `original` when that is not empty.
+void crashWithUnsavedWork(const QString &original, const QString &listing) {
+    app::MainWindow crashed;
+    crashed.newProject(model::Target::get(model::Family::Vigor), QStringLiteral("VB"));
+    if (!original.isEmpty()) {
+        ASSERT_TRUE(crashed.saveTo(original));
+    }
+    crashed.ilEditor()->setText(listing);
+    crashed.applyListing();
+    ASSERT_TRUE(crashed.document()->isModified());
+    crashed.writeRecovery();
+    ASSERT_TRUE(QFileInfo::exists(crashed.recoveryPath()));
+    // While its instance runs, its work is no other window's to recover.
     app::MainWindow other;
+    EXPECT_NE(other.recoveryPath(), crashed.recoveryPath());
+    EXPECT_FALSE(other.offerRecovery(false));
+}
+
+} // namespace
+
+TEST_F(Fixture, RecoveryBringsBackUnsavedWork) {
+    QTemporaryDir dir;
+    const QString original = dir.filePath(QStringLiteral("plant.rung"));
+    crashWithUnsavedWork(original, QStringLiteral("LD X5\nOUT Y5\nEND\n"));
+    app::MainWindow other;
+    other.show();
     ASSERT_TRUE(other.offerRecovery(false));
     EXPECT_EQ(other.document()->listingText(), QStringLiteral("LD X5\nOUT Y5\nEND\n"));
-    QFile::remove(window.recoveryPath());
+    // The recovered work is in no file yet: modified, with its original file to save to.
+    EXPECT_TRUE(other.document()->isModified());
+    EXPECT_TRUE(other.isWindowModified());
+    EXPECT_EQ(other.document()->path(), original);
+    EXPECT_TRUE(QFileInfo::exists(other.recoveryPath()));
+    EXPECT_FALSE(app::MainWindow().offerRecovery(false)); // recovered once only
+    // Closing asks to save; Cancel keeps the window and the recovery file.
+    bool asked = false;
+    QTimer::singleShot(0, &other, [&asked] {
+        if (auto *box = qobject_cast<QMessageBox *>(QApplication::activeModalWidget())) {
+            asked = true;
+            box->button(QMessageBox::Cancel)->click();
+        }
+    });
+    EXPECT_FALSE(other.close());
+    EXPECT_TRUE(asked);
+    EXPECT_TRUE(QFileInfo::exists(other.recoveryPath()));
+    // Save writes the original file, and the recovery file goes.
+    QAction *save = actionWithShortcut(other, QKeySequence::Save);
+    ASSERT_NE(save, nullptr);
+    save->trigger();
+    EXPECT_FALSE(other.document()->isModified());
+    EXPECT_FALSE(QFileInfo::exists(other.recoveryPath()));
+    app::MainWindow reopened;
+    ASSERT_TRUE(reopened.openFile(original, QString(), true));
+    EXPECT_EQ(reopened.document()->listingText(), QStringLiteral("LD X5\nOUT Y5\nEND\n"));
+}
+
+TEST_F(Fixture, RecoveryIsOfferedBeforeTheCommandLinesFile) {
+    QTemporaryDir dir;
+    const QString file = dir.filePath(QStringLiteral("asked.il"));
+    {
+        QFile out(file);
+        ASSERT_TRUE(out.open(QIODevice::WriteOnly));
+        out.write("LD X1\nOUT Y1\nEND\n");
+    }
+    crashWithUnsavedWork(QString(), QStringLiteral("LD X6\nOUT Y6\nEND\n"));
+    app::MainWindow recovering;
+    recovering.start(file, QString(), false); // the user recovers: the recovered work wins
+    EXPECT_EQ(recovering.document()->listingText(), QStringLiteral("LD X6\nOUT Y6\nEND\n"));
+    EXPECT_TRUE(recovering.document()->isModified());
+    EXPECT_TRUE(recovering.document()->path().isEmpty()); // no original file: Save As
+    app::MainWindow plain;                                // nothing left to recover: the file opens
+    plain.start(file, QString(), false);
+    EXPECT_EQ(plain.document()->listingText(), QStringLiteral("LD X1\nOUT Y1\nEND\n"));
 }
 
 TEST_F(Fixture, CopyAndPasteRungsAlsoAsListingText) {

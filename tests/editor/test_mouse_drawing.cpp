@@ -74,3 +74,51 @@ TEST_F(MouseFixture, AClickIsNotADrag) {
     EXPECT_EQ(window.document()->undoStack()->count(), before);
     EXPECT_EQ(view->cursor(), (editor::CellCursor{0, 0, 2}));
 }
+
+// The press moves the cursor to the clicked rung, which moves the spare editing row and shifts
+// the layout under the mouse: the release must still be read as a click.
+TEST_F(MouseFixture, AClickInARungBelowTheCursorChangesNothing) {
+    std::vector<model::Diagnostic> errors;
+    const QString program = QStringLiteral("LD X0\nOUT Y0\nLD X1\nOUT Y1\nLD X2\nOUT Y2\nEND\n");
+    ASSERT_TRUE(window.document()->setListing(program, &errors));
+    view->setCursor({0, 0, 0});
+    const int before = window.document()->undoStack()->count();
+    const QPoint at = view->cellRectOnScreen({2, 0, 1}).center();
+    QTest::mouseClick(view->viewport(), Qt::LeftButton, Qt::NoModifier, at);
+    EXPECT_EQ(listing(), program);
+    EXPECT_EQ(window.document()->undoStack()->count(), before);
+    EXPECT_EQ(view->cursor(), (editor::CellCursor{2, 0, 1}));
+}
+
+TEST_F(MouseFixture, ADragInARungBelowTheCursorIsReadWhereItWasPressed) {
+    std::vector<model::Diagnostic> errors;
+    ASSERT_TRUE(window.document()->setListing(
+        QStringLiteral("LD X0\nOUT Y0\nLD X1\nOUT Y1\nLD X2\nOUT Y2\nEND\n"), &errors));
+    view->setCursor({0, 0, 0});
+    drag({2, 0, 1}, {2, 0, 4}); // both points in the layout the press saw
+    EXPECT_EQ(window.document()->undoStack()->undoText(), QStringLiteral("Draw a wire"));
+    const model::Rung &rung = window.document()->ladder().rungs[2];
+    EXPECT_EQ(rung.rows, 1); // no link into a new row
+    for (int c = 1; c <= 4 && c < rung.columns; ++c)
+        EXPECT_EQ(rung.cell(0, c).kind, model::CellKind::Wire) << "column " << c;
+}
+
+// A link drawn right of a row's last element widens the rung: the row's wire must go on to the
+// coil through the new cells.
+TEST_F(MouseFixture, ALinkBeyondTheLastElementKeepsTheCoilsCondition) {
+    std::vector<model::Diagnostic> errors;
+    ASSERT_TRUE(window.document()->setListing(
+        QStringLiteral("LD X0\nAND X1\nOUT Y0\nLD X2\nOUT Y1\nEND\n"), &errors));
+    const int columnsBefore = window.document()->ladder().rungs.front().columns;
+    const int node = columnsBefore + 2;
+    drag({0, 0, node}, {0, 1, node});
+    EXPECT_EQ(window.document()->undoStack()->undoText(), QStringLiteral("Draw a vertical link"));
+    const model::Rung &rung = window.document()->ladder().rungs.front();
+    ASSERT_GE(rung.columns, node);
+    for (int c = columnsBefore; c < rung.columns; ++c)
+        EXPECT_EQ(rung.cell(0, c).kind, model::CellKind::Wire) << "column " << c;
+    // Y0 keeps X0 AND X1 as its condition, and Y1 is untouched.
+    const QString il = listing();
+    EXPECT_TRUE(il.startsWith(QStringLiteral("LD X0\nAND X1\nOUT Y0\n"))) << il.toStdString();
+    EXPECT_TRUE(il.contains(QStringLiteral("LD X2\nOUT Y1\n"))) << il.toStdString();
+}

@@ -12,6 +12,7 @@
 #include <QLineEdit>
 #include <QSet>
 #include <QSignalSpy>
+#include <QTableWidget>
 #include <QTemporaryDir>
 #include <QTest>
 #include <QTreeWidget>
@@ -166,4 +167,51 @@ TEST(SymbolsCsv, ReadsWhatSpreadsheetsWrite) {
     EXPECT_EQ(bad.errorLine, 3);
     EXPECT_EQ(bad.error, QStringLiteral("X9: X is numbered in octal"));
     EXPECT_TRUE(bad.symbols.empty());
+}
+
+// The symbol table is edited in place: a row is a symbol once its device is valid; until then
+// it stays as typed, and an invalid device says why.
+TEST(SymbolsTable, EditedInPlaceKeepsIncompleteRowsAndMarksInvalidDevices) {
+    app::MainWindow window;
+    const model::Target &vigor = model::Target::get(model::Family::Vigor);
+    window.newProject(vigor, QStringLiteral("VB"));
+    auto *table = window.findChild<QTableWidget *>(QStringLiteral("symbolsTable"));
+    ASSERT_NE(table, nullptr);
+    QUndoStack *undo = window.document()->undoStack();
+    const int before = undo->count();
+    ASSERT_EQ(table->rowCount(), 1); // the free row
+    // A name before the device: no symbol yet, no undo step, and the row stays.
+    table->item(0, 1)->setText(QStringLiteral("Start"));
+    EXPECT_EQ(undo->count(), before);
+    EXPECT_TRUE(window.document()->project().symbols.empty());
+    ASSERT_EQ(table->rowCount(), 2); // the typed row and a new free row
+    EXPECT_EQ(table->item(0, 1)->text(), QStringLiteral("Start"));
+    // Its device completes it: one undo step.
+    table->item(0, 0)->setText(QStringLiteral("X0"));
+    EXPECT_EQ(undo->count(), before + 1);
+    EXPECT_EQ(undo->undoText(), QStringLiteral("Edit symbols"));
+    ASSERT_EQ(window.document()->project().symbols.size(), 1u);
+    EXPECT_EQ(window.document()->project().symbols.front().name, QStringLiteral("Start"));
+    // A device the target does not have stays, marked, with the reason as its tooltip.
+    ASSERT_EQ(table->rowCount(), 2);
+    table->item(1, 0)->setText(QStringLiteral("X9"));
+    EXPECT_EQ(undo->count(), before + 1);
+    ASSERT_EQ(table->rowCount(), 3);
+    const auto parsed =
+        model::parseAddress(vigor, QStringLiteral("X9"), vigor.model(QStringLiteral("VB")));
+    ASSERT_TRUE(std::holds_alternative<model::AddressError>(parsed));
+    EXPECT_EQ(table->item(1, 0)->text(), QStringLiteral("X9"));
+    EXPECT_EQ(table->item(1, 0)->toolTip(), std::get<model::AddressError>(parsed).message);
+    EXPECT_NE(table->item(1, 0)->background(), table->item(0, 0)->background());
+    // Corrected, it becomes a symbol.
+    table->item(1, 0)->setText(QStringLiteral("X7"));
+    EXPECT_EQ(undo->count(), before + 2);
+    EXPECT_EQ(window.document()->project().symbols.size(), 2u);
+    EXPECT_EQ(table->rowCount(), 3);
+    // A typed row cleared of everything goes.
+    table->item(2, 1)->setText(QStringLiteral("Spare"));
+    ASSERT_EQ(table->rowCount(), 4);
+    table->item(2, 1)->setText(QString());
+    EXPECT_EQ(table->rowCount(), 3);
+    EXPECT_EQ(undo->count(), before + 2);
 }

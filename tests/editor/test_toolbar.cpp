@@ -8,11 +8,15 @@
 #include <QAction>
 #include <QCoreApplication>
 #include <QLineEdit>
-#include <QTest>
+#include <QMenu>
 #include <QMenuBar>
+#include <QTest>
 #include <QToolBar>
 
 #include <gtest/gtest.h>
+
+#include <functional>
+#include <map>
 
 using namespace rung;
 
@@ -23,6 +27,24 @@ QAction *toolbarAction(app::MainWindow &window, const QString &text) {
         for (QAction *a : bar->actions())
             if (a->text().remove(QLatin1Char('&')) == text)
                 return a;
+    return nullptr;
+}
+
+// An entry of the Edit menu or of its submenus, by its text without the access key.
+QAction *editMenuEntry(QMainWindow &window, const QString &text) {
+    std::function<QAction *(QMenu *)> find = [&](QMenu *menu) -> QAction * {
+        for (QAction *e : menu->actions()) {
+            if (QString(e->text()).remove(QLatin1Char('&')) == text)
+                return e;
+            if (e->menu())
+                if (QAction *inner = find(e->menu()))
+                    return inner;
+        }
+        return nullptr;
+    };
+    for (QAction *m : window.menuBar()->actions())
+        if (m->menu() && m->text() == QStringLiteral("&Edit"))
+            return find(m->menu());
     return nullptr;
 }
 
@@ -114,12 +136,7 @@ TEST(Toolbar, TheEditMenuActsAtTheCursorAsTheKeysDo) {
     ASSERT_TRUE(QTest::qWaitForWindowExposed(&window));
     // The menu's entries post their function key to the ladder, as if the user pressed it.
     auto place = [&](const char *entry, const char *operand) {
-        QAction *a = nullptr;
-        for (QAction *m : window.menuBar()->actions())
-            if (m->menu() && m->text() == QStringLiteral("&Edit"))
-                for (QAction *e : m->menu()->actions())
-                    if (e->text() == QString::fromLatin1(entry))
-                        a = e;
+        QAction *a = editMenuEntry(window, QString::fromLatin1(entry));
         ASSERT_NE(a, nullptr) << entry;
         a->trigger();
         QCoreApplication::sendPostedEvents();
@@ -136,4 +153,40 @@ TEST(Toolbar, TheEditMenuActsAtTheCursorAsTheKeysDo) {
     place("Parallel Contact", "M1");
     EXPECT_EQ(window.document()->listingText(),
               QStringLiteral("LD X3\nOR M1\nANI X4\nOUT Y2\nEND\n"));
+}
+
+// The menu shows each entry's key, as the vendor tools' menus do, and no key means two
+// things: Qt would then run neither.
+TEST(Toolbar, TheEditMenuShowsTheKeysAndNoKeyIsAmbiguous) {
+    app::MainWindow window;
+    const std::pair<const char *, QKeySequence> entries[] = {
+        {"Normally Open Contact", QKeySequence(Qt::Key_F5)},
+        {"Normally Closed Contact", QKeySequence(Qt::Key_F6)},
+        {"Parallel Contact", QKeySequence(Qt::SHIFT | Qt::Key_F5)},
+        {"Coil", QKeySequence(Qt::Key_F7)},
+        {"Vertical Link", QKeySequence(Qt::SHIFT | Qt::Key_F9)},
+        {"Insert Rung", QKeySequence(Qt::SHIFT | Qt::Key_Insert)},
+        {"Delete Rung", QKeySequence(Qt::SHIFT | Qt::Key_Delete)},
+        {"Insert Row", QKeySequence(Qt::CTRL | Qt::Key_Insert)},
+        {"Delete Row", QKeySequence(Qt::CTRL | Qt::Key_Delete)},
+        {"Replace Device...", QKeySequence(Qt::CTRL | Qt::Key_H)}};
+    for (const auto &[text, key] : entries) {
+        QAction *a = editMenuEntry(window, QString::fromLatin1(text));
+        ASSERT_NE(a, nullptr) << text;
+        EXPECT_EQ(a->shortcut(), key) << text;
+        EXPECT_TRUE(a->text().contains(QLatin1Char('&'))) << text << ": no access key";
+    }
+    for (const char *text : {"Import Symbols (CSV)...", "Export Symbols (CSV)..."}) {
+        QAction *a = editMenuEntry(window, QString::fromLatin1(text));
+        ASSERT_NE(a, nullptr) << text;
+        EXPECT_TRUE(a->text().contains(QLatin1Char('&'))) << text << ": no access key";
+    }
+    std::map<QString, QString> seen;
+    for (QAction *a : window.findChildren<QAction *>())
+        for (const QKeySequence &key : a->shortcuts()) {
+            const auto [it, fresh] =
+                seen.emplace(key.toString(), QString(a->text()).remove(QLatin1Char('&')));
+            EXPECT_TRUE(fresh) << key.toString().toStdString() << ": " << it->second.toStdString()
+                               << " and " << a->text().toStdString();
+        }
 }

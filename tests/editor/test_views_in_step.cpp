@@ -68,6 +68,26 @@ TEST(ListMargin, EachInstructionShowsItsStepAddressMultiStepInstructionsCounted)
     EXPECT_EQ(ins[0].step, 0);
 }
 
+// While the typed list has an error, its lines that parse keep their step numbers.
+TEST(ListMargin, StepNumbersStayWhileTheListHasErrors) {
+    app::MainWindow window;
+    window.newProject(model::Target::get(model::Family::Vigor), QStringLiteral("VB"));
+    editor::IlEditor *il = window.ilEditor();
+    const QString typed = QStringLiteral("LD X0\nTMR T0 K10\nLD X8\nOUT Y0\nEND\n");
+    il->setText(typed);
+    window.applyListing();
+    const model::ParseResult parsed =
+        model::parseInstructionList(window.document()->target(), typed);
+    ASSERT_FALSE(parsed.ok()); // X8: X is octal
+    ASSERT_EQ(il->text(), typed);
+    ASSERT_GE(parsed.list.instructions.size(), 3u);
+    for (const model::Instruction &i : parsed.list.instructions)
+        EXPECT_EQ(marginText(il, i.line - 1),
+                  QStringLiteral("%1").arg(i.step, 4, 10, QLatin1Char('0')))
+            << "line " << i.line;
+    EXPECT_TRUE(marginText(il, 2).isEmpty()); // the line with the error has none
+}
+
 TEST(ViewsInStep, SelectingARungSelectsItsLinesAndTheListCursorSelectsItsRung) {
     app::MainWindow window;
     window.newProject(model::Target::get(model::Family::Vigor), QStringLiteral("VB"));
