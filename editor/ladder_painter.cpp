@@ -114,8 +114,12 @@ void LadderPainter::paintContact(QPainter &p, const QRectF &cell, const model::C
         p.drawLine(QPointF(cx + half, y), QPointF(cell.right(), y));
         p.drawLine(QPointF(cx - half, y + h), QPointF(cx + half, y - h));
         p.setFont(m_small);
+        // PL110's P and N are power-flow elements too: the label tells them from NOT.
+        const QString label = c.mode == model::ContactMode::Rising    ? QStringLiteral("P")
+                              : c.mode == model::ContactMode::Falling ? QStringLiteral("N")
+                                                                      : QStringLiteral("INV");
         p.drawText(QRectF(cell.left(), cell.top(), cell.width(), y - h - cell.top()),
-                   Qt::AlignCenter, QStringLiteral("INV"));
+                   Qt::AlignCenter, label);
         return;
     }
     if (c.compare != model::CompareOp::None && c.operands.size() >= 2) {

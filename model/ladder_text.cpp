@@ -51,8 +51,17 @@ QChar markOf(const Contact &c) {
     return QLatin1Char(' ');
 }
 
+// The power-flow elements have no device: NOT is "~" alone, PL110's P and N are "~P", "~N".
+QString invertText(const Contact &c) {
+    return c.mode == ContactMode::Rising    ? QStringLiteral("P")
+           : c.mode == ContactMode::Falling ? QStringLiteral("N")
+                                            : QString();
+}
+
 QString contactText(const Target &t, const Contact &c) {
-    if (c.invert || c.operands.empty())
+    if (c.invert)
+        return invertText(c);
+    if (c.operands.empty())
         return {};
     if (c.compare != CompareOp::None && c.operands.size() >= 2)
         return operandText(t, c.operands[0]) + QLatin1String(compareSymbol(c.compare)) +
@@ -335,6 +344,15 @@ private:
         const QString body = inside.mid(1).trimmed();
         if (mark == QLatin1Char('~')) {
             contact->invert = true;
+            if (body == QLatin1String("P"))
+                contact->mode = ContactMode::Rising;
+            else if (body == QLatin1String("N"))
+                contact->mode = ContactMode::Falling;
+            else if (!body.isEmpty()) {
+                error(m_at, column + 1,
+                      Tr::tr("'~%1': a power-flow element is ~, ~P or ~N").arg(body));
+                return false;
+            }
             return true;
         }
         if (mark == QLatin1Char('/'))
@@ -399,7 +417,7 @@ private:
 
 QString contactToText(const Target &target, const Contact &contact) {
     if (contact.invert)
-        return QStringLiteral("~");
+        return QLatin1Char('~') + invertText(contact);
     QString mark;
     switch (contact.mode) {
     case ContactMode::Normal:
@@ -421,7 +439,7 @@ std::optional<Contact> contactFromText(const Target &target, const QString &text
                                        const ModelVariant *model) {
     QString body = text.trimmed();
     QChar mark = QLatin1Char(' ');
-    if (body == QLatin1String("~"))
+    if (body == QLatin1String("~") || body == QLatin1String("~P") || body == QLatin1String("~N"))
         mark = QLatin1Char('~');
     else if (body.startsWith(QLatin1Char('/')))
         mark = QLatin1Char('/');

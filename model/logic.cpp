@@ -1,6 +1,7 @@
 #include "logic.h"
 #include "rung_graph.h"
 
+#include <algorithm>
 #include <variant>
 
 // Both evaluators share the reading of contacts and the meaning of outputs, so they differ
@@ -229,9 +230,14 @@ OutputImage evaluateLadder(const LadderProgram &ladder, const BitReader &read) {
                 to[i] = find(r * width + c + 1);
             }
         // flood(start, forward, conducts): the groups reached from start.
+        // Inverters that see no power feed their right side, as if from the rail.
+        std::vector<int> sources;
         auto flood = [&](int start, bool forward, const std::vector<char> &conducts) {
             std::vector<char> reached(group.size(), 0);
             reached[static_cast<std::size_t>(start)] = 1;
+            if (forward && start == find(0))
+                for (int source : sources)
+                    reached[static_cast<std::size_t>(source)] = 1;
             for (bool changed = true; changed;) {
                 changed = false;
                 for (std::size_t i = 0; i < cellCount; ++i) {
@@ -260,17 +266,30 @@ OutputImage evaluateLadder(const LadderProgram &ladder, const BitReader &read) {
             for (int row : rung.boxInputRows(r)) {
                 const int node = find(row * width + rung.columns);
                 const std::vector<char> toOutput = flood(node, false, all);
+                std::vector<std::size_t> inverters;
                 for (std::size_t i = 0; i < cellCount; ++i) {
                     if (frozen[i] || from[i] < 0 || !fromRail[static_cast<std::size_t>(from[i])] ||
                         !toOutput[static_cast<std::size_t>(to[i])])
                         continue;
                     frozen[i] = 1;
                     const Cell &cell = rung.cells[i];
-                    // An INV element never conducts here (its listing form is only checked
-                    // by the simulator); PL110's P / N conduct, edges read as plain bits.
-                    closed[i] = cell.contact.invert ? cell.contact.mode != ContactMode::Normal
-                                                    : image.contact(cell.contact);
+                    // PL110's P / N conduct here: edges read as plain bits.
+                    if (cell.contact.invert && cell.contact.mode == ContactMode::Normal)
+                        inverters.push_back(i);
+                    else
+                        closed[i] = cell.contact.invert || image.contact(cell.contact);
                 }
+                // An INV / NOT never passes power through; when none reaches it, it feeds its
+                // right side (the listing inverts the block so far). Left to right, so an
+                // inverter sees the ones before it.
+                std::stable_sort(inverters.begin(), inverters.end(),
+                                 [&](std::size_t x, std::size_t y) {
+                                     return x % static_cast<std::size_t>(rung.columns) <
+                                            y % static_cast<std::size_t>(rung.columns);
+                                 });
+                for (std::size_t i : inverters)
+                    if (!flood(find(0), true, closed)[static_cast<std::size_t>(from[i])])
+                        sources.push_back(to[i]);
                 in.push_back(gate && flood(find(0), true, closed)[static_cast<std::size_t>(node)]);
             }
             if (out->op() == Op::Interlock && !in.empty()) {

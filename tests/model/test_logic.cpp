@@ -140,3 +140,46 @@ TEST(Logic, PowerNeverFlowsRightToLeftThroughABridge) {
         EXPECT_EQ(evaluateList(list, in.reader()), evaluateLadder(bridge, in.reader()));
     }
 }
+
+// INV inverts the block so far: in the ladder it conducts exactly when no power reaches it,
+// and an INV after another INV sees the first one's result.
+TEST(LadderEvaluator, AnInverterConductsWhenNoPowerReachesIt) {
+    const InstructionList list =
+        parse("LD X0\nAND X1\nINV\nOUT Y0\nLD X0\nINV\nAND X2\nINV\nOUT Y1\nEND\n");
+    const ToLadderResult ladder = listToLadder(list);
+    ASSERT_TRUE(ladder.ok());
+    for (unsigned k = 0; k < 8; ++k) {
+        const Inputs in({"X0", "X1", "X2"}, k);
+        const OutputImage fromLadder = evaluateLadder(ladder.ladder, in.reader());
+        const OutputImage fromList = evaluateList(list, in.reader());
+        EXPECT_EQ(out(fromLadder, "Y0"), !(in("X0") && in("X1"))) << k;
+        EXPECT_EQ(out(fromLadder, "Y1"), !(!in("X0") && in("X2"))) << k;
+        EXPECT_EQ(fromLadder, fromList) << k;
+    }
+}
+
+// PL110's P and N are power-flow elements like NOT; the ladder text keeps them apart.
+TEST(LadderText, PowerFlowElementsKeepWhichTheyAre) {
+    const Target &pl110 = Target::get(Family::Pl110);
+    ParseResult parsed =
+        parseInstructionList(pl110, QStringLiteral("LD I1\nP\nOUT M1\nLD I1\nN\nOUT M2\nLD "
+                                                   "I1\nNOT\nOUT M3\nEND\n"));
+    ASSERT_TRUE(parsed.ok());
+    const ToLadderResult ladder = listToLadder(parsed.list);
+    ASSERT_TRUE(ladder.ok());
+    const QString text = printLadderText(ladder.ladder);
+    EXPECT_TRUE(text.contains(QStringLiteral("[~P"))) << text.toStdString();
+    EXPECT_TRUE(text.contains(QStringLiteral("[~N"))) << text.toStdString();
+    const LadderTextResult back = parseLadderText(pl110, text);
+    ASSERT_TRUE(back.ok()) << text.toStdString();
+    const ToListingResult list = ladderToList(back.ladder);
+    ASSERT_TRUE(list.ok());
+    EXPECT_EQ(printInstructionList(list.list), printInstructionList(parsed.list));
+    QString error;
+    EXPECT_FALSE(contactFromText(pl110, QStringLiteral("~Q"), &error).has_value());
+    const std::optional<Contact> n = contactFromText(pl110, QStringLiteral("~N"), &error);
+    ASSERT_TRUE(n.has_value()) << error.toStdString();
+    EXPECT_TRUE(n->invert);
+    EXPECT_EQ(n->mode, ContactMode::Falling);
+    EXPECT_EQ(contactToText(pl110, *n), QStringLiteral("~N"));
+}
