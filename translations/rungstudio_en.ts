@@ -53,7 +53,7 @@ Exit status: 0 no error, 1 the program has errors, 2 usage or I/O error.</source
     </message>
     <message>
         <location line="+17"/>
-        <location line="+41"/>
+        <location line="+32"/>
         <source>unexpected argument %1</source>
         <translation type="unfinished"></translation>
     </message>
@@ -63,12 +63,12 @@ Exit status: 0 no error, 1 the program has errors, 2 usage or I/O error.</source
         <translation type="unfinished"></translation>
     </message>
     <message>
-        <location line="+11"/>
+        <location line="+13"/>
         <source>nothing written: the input has errors</source>
         <translation type="unfinished"></translation>
     </message>
     <message>
-        <location line="+18"/>
+        <location line="+21"/>
         <source>cannot write %1: %2</source>
         <translation type="unfinished"></translation>
     </message>
@@ -83,7 +83,7 @@ Exit status: 0 no error, 1 the program has errors, 2 usage or I/O error.</source
         <translation type="unfinished"></translation>
     </message>
     <message>
-        <location filename="../app/cli/cli_common.cpp" line="+44"/>
+        <location filename="../app/cli/cli_common.cpp" line="+84"/>
         <source>%1 needs a value</source>
         <translation type="unfinished"></translation>
     </message>
@@ -103,17 +103,17 @@ Exit status: 0 no error, 1 the program has errors, 2 usage or I/O error.</source
         <translation type="unfinished"></translation>
     </message>
     <message>
-        <location line="+10"/>
+        <location line="-99"/>
         <source>cannot read %1: %2</source>
         <translation type="unfinished"></translation>
     </message>
     <message>
-        <location line="+4"/>
-        <source>%1 is %2 MB; the limit is %3 MB</source>
+        <location line="+5"/>
+        <source>%1: the file is larger than %2 MB, too large for a listing or a ladder text</source>
         <translation type="unfinished"></translation>
     </message>
     <message>
-        <location line="+13"/>
+        <location line="+118"/>
         <source>%1: which PLC? Give --target vpc|vigor|cpm1|pl110 or a &quot;; target: NAME&quot; first line</source>
         <translation type="unfinished"></translation>
     </message>
@@ -185,7 +185,7 @@ Exit status: 0 no error, 1 the program has errors, 2 usage or I/O error.</source
 <context>
     <name>rung::app::MainWindow</name>
     <message>
-        <location filename="../app/gui/main_window.cpp" line="+135"/>
+        <location filename="../app/gui/main_window.cpp" line="+137"/>
         <source>Problems</source>
         <translation type="unfinished"></translation>
     </message>
@@ -220,7 +220,7 @@ Exit status: 0 no error, 1 the program has errors, 2 usage or I/O error.</source
         <translation type="unfinished"></translation>
     </message>
     <message>
-        <location filename="../app/gui/main_window_actions.cpp" line="+26"/>
+        <location filename="../app/gui/main_window_actions.cpp" line="+38"/>
         <source>&amp;File</source>
         <translation type="unfinished"></translation>
     </message>
@@ -305,7 +305,92 @@ Exit status: 0 no error, 1 the program has errors, 2 usage or I/O error.</source
         <translation type="unfinished"></translation>
     </message>
     <message>
-        <location line="+205"/>
+        <location line="+31"/>
+        <source>Normally &amp;Open Contact</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <location line="+2"/>
+        <source>Normally &amp;Closed Contact</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <location line="+2"/>
+        <source>&amp;Parallel Contact</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <location line="+2"/>
+        <source>&amp;Rising-Edge Contact</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <location line="+2"/>
+        <source>&amp;Falling-Edge Contact</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <location line="+2"/>
+        <source>Co&amp;il</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <location line="+1"/>
+        <source>I&amp;nstruction</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <location line="+2"/>
+        <source>&amp;Horizontal Wire</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <location line="+2"/>
+        <source>&amp;Vertical Link</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <location line="+15"/>
+        <source>Place &amp;Element</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <location line="+48"/>
+        <source>&amp;Import Symbols (CSV)...</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <location line="+7"/>
+        <source>E&amp;xport Symbols (CSV)...</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <location line="+2"/>
+        <source>Add to Watc&amp;h List</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <location line="+5"/>
+        <source>In&amp;sert Rung</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <location line="+2"/>
+        <source>De&amp;lete Rung</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <location line="+2"/>
+        <source>Insert R&amp;ow</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <location line="+2"/>
+        <source>Delete Ro&amp;w</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <location line="+87"/>
         <source>&amp;Undo</source>
         <translation type="unfinished"></translation>
     </message>
@@ -315,52 +400,7 @@ Exit status: 0 no error, 1 the program has errors, 2 usage or I/O error.</source
         <translation type="unfinished"></translation>
     </message>
     <message>
-        <location line="-178"/>
-        <source>Normally Open Contact</source>
-        <translation type="unfinished"></translation>
-    </message>
-    <message>
-        <location line="+2"/>
-        <source>Normally Closed Contact</source>
-        <translation type="unfinished"></translation>
-    </message>
-    <message>
-        <location line="+2"/>
-        <source>Parallel Contact</source>
-        <translation type="unfinished"></translation>
-    </message>
-    <message>
-        <location line="+2"/>
-        <source>Rising-Edge Contact</source>
-        <translation type="unfinished"></translation>
-    </message>
-    <message>
-        <location line="+2"/>
-        <source>Falling-Edge Contact</source>
-        <translation type="unfinished"></translation>
-    </message>
-    <message>
-        <location line="+2"/>
-        <source>Coil</source>
-        <translation type="unfinished"></translation>
-    </message>
-    <message>
-        <location line="+1"/>
-        <source>Instruction</source>
-        <translation type="unfinished"></translation>
-    </message>
-    <message>
-        <location line="+2"/>
-        <source>Horizontal Wire</source>
-        <translation type="unfinished"></translation>
-    </message>
-    <message>
-        <location line="+2"/>
-        <source>Vertical Link</source>
-        <translation type="unfinished"></translation>
-    </message>
-    <message>
-        <location line="+7"/>
+        <location line="-163"/>
         <source>Select</source>
         <translation type="unfinished"></translation>
     </message>
@@ -370,7 +410,7 @@ Exit status: 0 no error, 1 the program has errors, 2 usage or I/O error.</source
         <translation type="unfinished"></translation>
     </message>
     <message>
-        <location line="+10"/>
+        <location line="+13"/>
         <source>%1 (%2): click the cells to place it</source>
         <translation type="unfinished"></translation>
     </message>
@@ -415,12 +455,7 @@ Exit status: 0 no error, 1 the program has errors, 2 usage or I/O error.</source
         <translation type="unfinished"></translation>
     </message>
     <message>
-        <location line="+3"/>
-        <source>Import Symbols (CSV)...</source>
-        <translation type="unfinished"></translation>
-    </message>
-    <message>
-        <location line="+1"/>
+        <location line="+4"/>
         <source>Import Symbols</source>
         <translation type="unfinished"></translation>
     </message>
@@ -436,42 +471,12 @@ Exit status: 0 no error, 1 the program has errors, 2 usage or I/O error.</source
         <translation type="unfinished"></translation>
     </message>
     <message>
-        <location line="+2"/>
-        <source>Export Symbols (CSV)...</source>
-        <translation type="unfinished"></translation>
-    </message>
-    <message>
-        <location line="+2"/>
-        <source>Add to &amp;Watch List</source>
-        <translation type="unfinished"></translation>
-    </message>
-    <message>
-        <location line="+3"/>
+        <location line="+7"/>
         <source>Rung Co&amp;mment...</source>
         <translation type="unfinished"></translation>
     </message>
     <message>
-        <location line="+2"/>
-        <source>Insert Rung</source>
-        <translation type="unfinished"></translation>
-    </message>
-    <message>
-        <location line="+1"/>
-        <source>Delete Rung</source>
-        <translation type="unfinished"></translation>
-    </message>
-    <message>
-        <location line="+1"/>
-        <source>Insert Row</source>
-        <translation type="unfinished"></translation>
-    </message>
-    <message>
-        <location line="+1"/>
-        <source>Delete Row</source>
-        <translation type="unfinished"></translation>
-    </message>
-    <message>
-        <location line="+2"/>
+        <location line="+11"/>
         <source>&amp;View</source>
         <translation type="unfinished"></translation>
     </message>
@@ -569,7 +574,7 @@ Ladder and instruction-list editor for VPC, Vigor, CPM1 and PL110.</source>
         <translation type="unfinished"></translation>
     </message>
     <message>
-        <location filename="../app/gui/main_window.cpp" line="+39"/>
+        <location filename="../app/gui/main_window.cpp" line="+18"/>
         <source>Rung Comment</source>
         <translation type="unfinished"></translation>
     </message>
@@ -594,19 +599,35 @@ Ladder and instruction-list editor for VPC, Vigor, CPM1 and PL110.</source>
         <translation type="unfinished"></translation>
     </message>
     <message>
-        <location line="+58"/>
-        <source>&lt;b&gt;%1&lt;/b&gt;&lt;br&gt;Target: %2, model %3&lt;br&gt;%4 rungs, %5 steps</source>
+        <location line="+116"/>
+        <source>&lt;b&gt;%1&lt;/b&gt;&lt;br&gt;Target: %2, model %3&lt;br&gt;%4, %5</source>
         <translation type="unfinished"></translation>
     </message>
     <message>
-        <location line="+2"/>
-        <location line="+51"/>
-        <location filename="../app/gui/main_window_files.cpp" line="+374"/>
+        <location line="+1"/>
+        <location line="+50"/>
+        <location filename="../app/gui/main_window_files.cpp" line="+476"/>
         <source>Untitled</source>
         <translation type="unfinished"></translation>
     </message>
+    <message numerus="yes">
+        <location line="-48"/>
+        <source>%n rung(s)</source>
+        <translation>
+            <numerusform>%n rung</numerusform>
+            <numerusform>%n rungs</numerusform>
+        </translation>
+    </message>
+    <message numerus="yes">
+        <location line="+1"/>
+        <source>%n step(s)</source>
+        <translation>
+            <numerusform>%n step</numerusform>
+            <numerusform>%n steps</numerusform>
+        </translation>
+    </message>
     <message>
-        <location line="-32"/>
+        <location line="+15"/>
         <source>The instruction list has %1: line %2: %3. The ladder shows the last valid program.</source>
         <translation type="unfinished"></translation>
     </message>
@@ -653,17 +674,22 @@ Ladder and instruction-list editor for VPC, Vigor, CPM1 and PL110.</source>
         <translation type="unfinished"></translation>
     </message>
     <message>
-        <location filename="../app/gui/main_window_files.cpp" line="-269"/>
+        <location filename="../app/gui/main_window_files.cpp" line="-281"/>
         <source>Recover</source>
         <translation type="unfinished"></translation>
     </message>
     <message>
-        <location line="+1"/>
+        <location line="-6"/>
         <source>Rung Studio was not closed properly last time. Recover the unsaved program?</source>
         <translation type="unfinished"></translation>
     </message>
     <message>
-        <location line="+32"/>
+        <location line="+2"/>
+        <source>Rung Studio was not closed properly last time. Recover the unsaved changes to %1?</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <location line="+49"/>
         <source>Cannot open the file</source>
         <translation type="unfinished"></translation>
     </message>
@@ -894,7 +920,7 @@ Ladder and instruction-list editor for VPC, Vigor, CPM1 and PL110.</source>
 <context>
     <name>rung::app::Simulate</name>
     <message>
-        <location filename="../app/cli/cli_simulate.cpp" line="+20"/>
+        <location filename="../app/cli/cli_simulate.cpp" line="+22"/>
         <source>usage: rungstudio-cli simulate FILE [--target T] --scans N [--period MS] [--set DEV=VALUE@SCAN]... --trace DEV[,DEV...]</source>
         <translation type="unfinished"></translation>
     </message>
@@ -904,12 +930,7 @@ Ladder and instruction-list editor for VPC, Vigor, CPM1 and PL110.</source>
         <translation type="unfinished"></translation>
     </message>
     <message>
-        <location line="+10"/>
-        <source>cannot read %1: %2</source>
-        <translation type="unfinished"></translation>
-    </message>
-    <message>
-        <location line="+7"/>
+        <location line="+19"/>
         <source>%1: no target; give --target or a &quot;; target: NAME&quot; first line</source>
         <translation type="unfinished"></translation>
     </message>
@@ -997,12 +1018,12 @@ Ladder and instruction-list editor for VPC, Vigor, CPM1 and PL110.</source>
 <context>
     <name>rung::editor::Document</name>
     <message>
-        <location filename="../editor/document.cpp" line="+40"/>
+        <location filename="../editor/document.cpp" line="+42"/>
         <source>Edit symbols</source>
         <translation type="unfinished"></translation>
     </message>
     <message>
-        <location line="+108"/>
+        <location line="+109"/>
         <source>Insert rung</source>
         <translation type="unfinished"></translation>
     </message>
@@ -1020,7 +1041,7 @@ Ladder and instruction-list editor for VPC, Vigor, CPM1 and PL110.</source>
         </translation>
     </message>
     <message>
-        <location line="+56"/>
+        <location line="+62"/>
         <source>Edit instruction list</source>
         <translation type="unfinished"></translation>
     </message>
@@ -1106,7 +1127,7 @@ Ladder and instruction-list editor for VPC, Vigor, CPM1 and PL110.</source>
     </message>
     <message>
         <location line="+22"/>
-        <location filename="../editor/ladder_view_mouse.cpp" line="+124"/>
+        <location filename="../editor/ladder_view_mouse.cpp" line="+161"/>
         <source>Draw a wire</source>
         <translation type="unfinished"></translation>
     </message>
@@ -1457,17 +1478,17 @@ Ladder and instruction-list editor for VPC, Vigor, CPM1 and PL110.</source>
         <translation type="unfinished"></translation>
     </message>
     <message>
-        <location filename="../model/checks_list.cpp" line="+149"/>
+        <location filename="../model/checks_list.cpp" line="+163"/>
         <source>Rewrite the rung in the canonical form</source>
         <translation type="unfinished"></translation>
     </message>
     <message>
-        <location line="+27"/>
+        <location line="+44"/>
         <source>More than %1 %2 in a row: the PLC rejects the program</source>
         <translation type="unfinished"></translation>
     </message>
     <message>
-        <location line="+29"/>
+        <location line="+30"/>
         <source>Stacked ANB: combine each block with ANB as soon as it is complete</source>
         <translation type="unfinished"></translation>
     </message>
@@ -1480,22 +1501,32 @@ Ladder and instruction-list editor for VPC, Vigor, CPM1 and PL110.</source>
         </translation>
     </message>
     <message>
-        <location line="+6"/>
+        <location line="+8"/>
         <source>A single contact joined with %1 is simpler as %2</source>
         <translation type="unfinished"></translation>
     </message>
     <message>
-        <location line="+8"/>
+        <location line="+11"/>
         <source>A single device in parallel with a block belongs on the lower row: the block first, then an OR, drops the %1</source>
         <translation type="unfinished"></translation>
     </message>
     <message>
-        <location line="+7"/>
+        <location line="+3"/>
         <source>The block after a single contact can move to the front and drop the %1</source>
         <translation type="unfinished"></translation>
     </message>
     <message>
-        <location line="+13"/>
+        <location line="+11"/>
+        <source>Put the single device below the block and drop the %1</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <location line="+3"/>
+        <source>Move the block to the front and drop the %1</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <location line="+12"/>
         <source>MPS nests more than %1 deep</source>
         <translation type="unfinished"></translation>
     </message>
@@ -1505,12 +1536,17 @@ Ladder and instruction-list editor for VPC, Vigor, CPM1 and PL110.</source>
         <translation type="unfinished"></translation>
     </message>
     <message>
-        <location line="+7"/>
+        <location line="+8"/>
         <source>An output with no contacts of its own belongs on top of the branch and needs no %1</source>
         <translation type="unfinished"></translation>
     </message>
+    <message>
+        <location line="+5"/>
+        <source>Put the output on top and drop the %1</source>
+        <translation type="unfinished"></translation>
+    </message>
     <message numerus="yes">
-        <location line="+15"/>
+        <location line="+13"/>
         <source>%n MPS left without MPP at the end of the rung</source>
         <translation>
             <numerusform>%n MPS left without MPP at the end of the rung</numerusform>
@@ -1518,7 +1554,7 @@ Ladder and instruction-list editor for VPC, Vigor, CPM1 and PL110.</source>
         </translation>
     </message>
     <message>
-        <location line="+16"/>
+        <location filename="../model/checks_nesting.cpp" line="+60"/>
         <source>END is missing</source>
         <translation type="unfinished"></translation>
     </message>
@@ -1528,12 +1564,12 @@ Ladder and instruction-list editor for VPC, Vigor, CPM1 and PL110.</source>
         <translation type="unfinished"></translation>
     </message>
     <message>
-        <location line="+14"/>
+        <location line="+13"/>
         <source>IL inside IL: close the first with ILC</source>
         <translation type="unfinished"></translation>
     </message>
     <message>
-        <location line="+6"/>
+        <location line="+5"/>
         <source>ILC without IL (&quot;IL (JMP) missing&quot;)</source>
         <translation type="unfinished"></translation>
     </message>
@@ -1548,7 +1584,7 @@ Ladder and instruction-list editor for VPC, Vigor, CPM1 and PL110.</source>
         <translation type="unfinished"></translation>
     </message>
     <message>
-        <location line="+8"/>
+        <location line="+7"/>
         <source>JMP inside JMP: close the first jump</source>
         <translation type="unfinished"></translation>
     </message>
@@ -1583,7 +1619,7 @@ Ladder and instruction-list editor for VPC, Vigor, CPM1 and PL110.</source>
         <translation type="unfinished"></translation>
     </message>
     <message>
-        <location line="+6"/>
+        <location line="+5"/>
         <source>JMP %1 has no JME %1</source>
         <translation type="unfinished"></translation>
     </message>
@@ -1593,17 +1629,27 @@ Ladder and instruction-list editor for VPC, Vigor, CPM1 and PL110.</source>
         <translation type="unfinished"></translation>
     </message>
     <message>
-        <location line="+25"/>
+        <location filename="../model/checks_list.cpp" line="+67"/>
         <source>Set value %1 is out of range</source>
         <translation type="unfinished"></translation>
     </message>
     <message>
-        <location line="+16"/>
+        <location line="+17"/>
         <source>%1 cannot be written: %2 are read-only</source>
         <translation type="unfinished"></translation>
     </message>
     <message>
-        <location line="+15"/>
+        <location line="+6"/>
+        <source>%1 cannot be written: the PLC drives it (%2)</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <location line="+9"/>
+        <source>%1 cannot drive %2: %3 are not relays</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <location line="+17"/>
         <source>Number %1 is used as a timer and as a counter; they share one bank</source>
         <translation type="unfinished"></translation>
     </message>
@@ -1636,13 +1682,18 @@ Ladder and instruction-list editor for VPC, Vigor, CPM1 and PL110.</source>
 <context>
     <name>rung::model::Convert</name>
     <message>
-        <location filename="../model/convert_to_ladder.cpp" line="+272"/>
+        <location filename="../model/convert_to_ladder.cpp" line="+197"/>
+        <source>%1 joins the condition of a branch point in parallel with another block; the ladder cannot draw this: repeat the shared contacts in this branch instead</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <location line="+106"/>
         <source>%1 has no block to continue; start the rung with a load</source>
         <translation type="unfinished"></translation>
     </message>
     <message>
         <location line="+8"/>
-        <location line="+16"/>
+        <location line="+18"/>
         <source>%1 has no block to join in parallel</source>
         <translation type="unfinished"></translation>
     </message>
@@ -1655,7 +1706,7 @@ Ladder and instruction-list editor for VPC, Vigor, CPM1 and PL110.</source>
         </translation>
     </message>
     <message numerus="yes">
-        <location line="+17"/>
+        <location line="+19"/>
         <source>MPS needs exactly one open block, but %n is open</source>
         <translation>
             <numerusform>MPS needs exactly one open block, but %n is open</numerusform>
@@ -1663,18 +1714,18 @@ Ladder and instruction-list editor for VPC, Vigor, CPM1 and PL110.</source>
         </translation>
     </message>
     <message>
-        <location line="+11"/>
+        <location line="+12"/>
         <source>%1 without a matching MPS</source>
         <translation type="unfinished"></translation>
     </message>
     <message>
-        <location line="+15"/>
+        <location line="+16"/>
         <source>%1 needs %2 input blocks, but %3 are open</source>
         <translation type="unfinished"></translation>
     </message>
     <message>
         <location line="+9"/>
-        <location filename="../model/convert_to_list.cpp" line="+43"/>
+        <location filename="../model/convert_to_list.cpp" line="+50"/>
         <source>%1 has an input with no condition</source>
         <translation type="unfinished"></translation>
     </message>
@@ -1692,7 +1743,7 @@ Ladder and instruction-list editor for VPC, Vigor, CPM1 and PL110.</source>
         <translation type="unfinished"></translation>
     </message>
     <message>
-        <location line="+39"/>
+        <location line="+40"/>
         <source>The rung starting on line %1 ends without an output</source>
         <translation type="unfinished"></translation>
     </message>
@@ -1720,7 +1771,7 @@ Ladder and instruction-list editor for VPC, Vigor, CPM1 and PL110.</source>
         <translation type="unfinished"></translation>
     </message>
     <message>
-        <location line="+16"/>
+        <location line="+83"/>
         <source>A block cannot start with INV</source>
         <translation type="unfinished"></translation>
     </message>
@@ -1730,7 +1781,12 @@ Ladder and instruction-list editor for VPC, Vigor, CPM1 and PL110.</source>
         <translation type="unfinished"></translation>
     </message>
     <message>
-        <location line="+135"/>
+        <location line="+95"/>
+        <source>A branch reads a device that an earlier branch of the same rung writes, and %1 cannot hold this branch point (IL does not nest); draw the branches as separate rungs</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <location line="+94"/>
         <source>A box with several inputs must stand alone in its rung</source>
         <translation type="unfinished"></translation>
     </message>
@@ -1848,7 +1904,7 @@ Ladder and instruction-list editor for VPC, Vigor, CPM1 and PL110.</source>
 <context>
     <name>rung::model::LadderText</name>
     <message>
-        <location filename="../model/ladder_text.cpp" line="+206"/>
+        <location filename="../model/ladder_text.cpp" line="+195"/>
         <source>A ladder text starts with &quot;LADDER &lt;target&gt; WIDTH &lt;n&gt;&quot;</source>
         <translation type="unfinished"></translation>
     </message>
@@ -1899,7 +1955,12 @@ Ladder and instruction-list editor for VPC, Vigor, CPM1 and PL110.</source>
         <translation type="unfinished"></translation>
     </message>
     <message>
-        <location line="+50"/>
+        <location line="+46"/>
+        <source>&apos;~%1&apos;: a power-flow element is ~, ~P or ~N</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <location line="+13"/>
         <source>&apos;%1&apos; is not a contact mark (&apos; &apos;, &apos;/&apos;, &apos;P&apos;, &apos;N&apos;, &apos;~&apos;)</source>
         <translation type="unfinished"></translation>
     </message>
@@ -2351,14 +2412,14 @@ Ladder and instruction-list editor for VPC, Vigor, CPM1 and PL110.</source>
     </message>
     <message>
         <location line="+3"/>
-        <location filename="../model/target_pl110.cpp" line="+90"/>
+        <location filename="../model/target_pl110.cpp" line="+92"/>
         <location filename="../model/target_vigor.cpp" line="-1"/>
         <location filename="../model/target_vpc.cpp" line="+5"/>
         <source>End of the program</source>
         <translation type="unfinished"></translation>
     </message>
     <message>
-        <location filename="../model/target_pl110.cpp" line="-244"/>
+        <location filename="../model/target_pl110.cpp" line="-246"/>
         <source>IF contact: ON while S1 ? S2 is true</source>
         <translation type="unfinished"></translation>
     </message>
@@ -2638,12 +2699,12 @@ Ladder and instruction-list editor for VPC, Vigor, CPM1 and PL110.</source>
         <translation type="unfinished"></translation>
     </message>
     <message>
-        <location line="+1"/>
+        <location line="+2"/>
         <source>Setpoint generator with acceleration and deceleration ramps</source>
         <translation type="unfinished"></translation>
     </message>
     <message>
-        <location line="+1"/>
+        <location line="+2"/>
         <source>Convert a value</source>
         <translation type="unfinished"></translation>
     </message>
@@ -3170,7 +3231,7 @@ Ladder and instruction-list editor for VPC, Vigor, CPM1 and PL110.</source>
         <translation type="unfinished"></translation>
     </message>
     <message>
-        <location filename="../simulator/compiler.cpp" line="+91"/>
+        <location filename="../simulator/compiler.cpp" line="+92"/>
         <source>label %1 ends more than one jump</source>
         <translation type="unfinished"></translation>
     </message>
@@ -3205,7 +3266,7 @@ Ladder and instruction-list editor for VPC, Vigor, CPM1 and PL110.</source>
         <translation type="unfinished"></translation>
     </message>
     <message>
-        <location line="+31"/>
+        <location line="+41"/>
         <source>%1 cannot be reset</source>
         <translation type="unfinished"></translation>
     </message>
@@ -3215,7 +3276,7 @@ Ladder and instruction-list editor for VPC, Vigor, CPM1 and PL110.</source>
         <translation type="unfinished"></translation>
     </message>
     <message>
-        <location line="+106"/>
+        <location line="+108"/>
         <source>the program has no target</source>
         <translation type="unfinished"></translation>
     </message>
@@ -3228,7 +3289,12 @@ Ladder and instruction-list editor for VPC, Vigor, CPM1 and PL110.</source>
         <translation type="unfinished"></translation>
     </message>
     <message>
-        <location line="+357"/>
+        <location line="+17"/>
+        <source>result %1 is outside 0..9999; %2 is written</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <location line="+364"/>
         <location line="+52"/>
         <source>division by zero; the destination is unchanged</source>
         <translation type="unfinished"></translation>

@@ -58,7 +58,7 @@ Kilépési kód: 0 nincs hiba, 1 a programban hiba van, 2 használati vagy I/O h
     </message>
     <message>
         <location line="+17"/>
-        <location line="+41"/>
+        <location line="+32"/>
         <source>unexpected argument %1</source>
         <translation>váratlan argumentum: %1</translation>
     </message>
@@ -68,12 +68,12 @@ Kilépési kód: 0 nincs hiba, 1 a programban hiba van, 2 használati vagy I/O h
         <translation>a --to értéke il, ladder vagy project lehet</translation>
     </message>
     <message>
-        <location line="+11"/>
+        <location line="+13"/>
         <source>nothing written: the input has errors</source>
         <translation>nem íródott semmi: a bemenet hibás</translation>
     </message>
     <message>
-        <location line="+18"/>
+        <location line="+21"/>
         <source>cannot write %1: %2</source>
         <translation>%1 nem írható: %2</translation>
     </message>
@@ -88,7 +88,7 @@ Kilépési kód: 0 nincs hiba, 1 a programban hiba van, 2 használati vagy I/O h
         <translation>ismeretlen parancs: %1</translation>
     </message>
     <message>
-        <location filename="../app/cli/cli_common.cpp" line="+44"/>
+        <location filename="../app/cli/cli_common.cpp" line="+84"/>
         <source>%1 needs a value</source>
         <translation>%1 után érték kell</translation>
     </message>
@@ -108,17 +108,17 @@ Kilépési kód: 0 nincs hiba, 1 a programban hiba van, 2 használati vagy I/O h
         <translation>%1 egy %2 projekt, nem %3</translation>
     </message>
     <message>
-        <location line="+10"/>
+        <location line="-99"/>
         <source>cannot read %1: %2</source>
         <translation>%1 nem olvasható: %2</translation>
     </message>
     <message>
-        <location line="+4"/>
-        <source>%1 is %2 MB; the limit is %3 MB</source>
-        <translation>%1 mérete %2 MB; a korlát %3 MB</translation>
+        <location line="+5"/>
+        <source>%1: the file is larger than %2 MB, too large for a listing or a ladder text</source>
+        <translation>%1: a fájl nagyobb %2 MB-nál, túl nagy egy utasításlistának vagy létraszövegnek</translation>
     </message>
     <message>
-        <location line="+13"/>
+        <location line="+118"/>
         <source>%1: which PLC? Give --target vpc|vigor|cpm1|pl110 or a &quot;; target: NAME&quot; first line</source>
         <translation>%1: melyik PLC? Adja meg: --target vpc|vigor|cpm1|pl110, vagy egy &quot;; target: NAME&quot; első sort</translation>
     </message>
@@ -190,7 +190,7 @@ Kilépési kód: 0 nincs hiba, 1 a programban hiba van, 2 használati vagy I/O h
 <context>
     <name>rung::app::MainWindow</name>
     <message>
-        <location filename="../app/gui/main_window.cpp" line="+135"/>
+        <location filename="../app/gui/main_window.cpp" line="+137"/>
         <source>Problems</source>
         <translation>Problémák</translation>
     </message>
@@ -225,7 +225,7 @@ Kilépési kód: 0 nincs hiba, 1 a programban hiba van, 2 használati vagy I/O h
         <translation>Figyelőlisták</translation>
     </message>
     <message>
-        <location filename="../app/gui/main_window_actions.cpp" line="+26"/>
+        <location filename="../app/gui/main_window_actions.cpp" line="+38"/>
         <source>&amp;File</source>
         <translation>&amp;Fájl</translation>
     </message>
@@ -310,7 +310,92 @@ Kilépési kód: 0 nincs hiba, 1 a programban hiba van, 2 használati vagy I/O h
         <translation>&amp;Szerkesztés</translation>
     </message>
     <message>
-        <location line="+205"/>
+        <location line="+31"/>
+        <source>Normally &amp;Open Contact</source>
+        <translation>&amp;Záró érintkező</translation>
+    </message>
+    <message>
+        <location line="+2"/>
+        <source>Normally &amp;Closed Contact</source>
+        <translation>&amp;Nyitó érintkező</translation>
+    </message>
+    <message>
+        <location line="+2"/>
+        <source>&amp;Parallel Contact</source>
+        <translation>&amp;Párhuzamos érintkező</translation>
+    </message>
+    <message>
+        <location line="+2"/>
+        <source>&amp;Rising-Edge Contact</source>
+        <translation>&amp;Felfutó él érintkező</translation>
+    </message>
+    <message>
+        <location line="+2"/>
+        <source>&amp;Falling-Edge Contact</source>
+        <translation>&amp;Lefutó él érintkező</translation>
+    </message>
+    <message>
+        <location line="+2"/>
+        <source>Co&amp;il</source>
+        <translation>&amp;Tekercs</translation>
+    </message>
+    <message>
+        <location line="+1"/>
+        <source>I&amp;nstruction</source>
+        <translation>&amp;Utasítás</translation>
+    </message>
+    <message>
+        <location line="+2"/>
+        <source>&amp;Horizontal Wire</source>
+        <translation>&amp;Vízszintes vezeték</translation>
+    </message>
+    <message>
+        <location line="+2"/>
+        <source>&amp;Vertical Link</source>
+        <translation>Függőleges ö&amp;sszekötés</translation>
+    </message>
+    <message>
+        <location line="+15"/>
+        <source>Place &amp;Element</source>
+        <translation>Elem el&amp;helyezése</translation>
+    </message>
+    <message>
+        <location line="+48"/>
+        <source>&amp;Import Symbols (CSV)...</source>
+        <translation>Szimbólumok im&amp;portálása (CSV)...</translation>
+    </message>
+    <message>
+        <location line="+7"/>
+        <source>E&amp;xport Symbols (CSV)...</source>
+        <translation>Szimbólumok e&amp;xportálása (CSV)...</translation>
+    </message>
+    <message>
+        <location line="+2"/>
+        <source>Add to Watc&amp;h List</source>
+        <translation>Hozzá&amp;adás a figyelőlistához</translation>
+    </message>
+    <message>
+        <location line="+5"/>
+        <source>In&amp;sert Rung</source>
+        <translation>Létra&amp;fok beszúrása</translation>
+    </message>
+    <message>
+        <location line="+2"/>
+        <source>De&amp;lete Rung</source>
+        <translation>Létrafok tör&amp;lése</translation>
+    </message>
+    <message>
+        <location line="+2"/>
+        <source>Insert R&amp;ow</source>
+        <translation>Sor beszú&amp;rása</translation>
+    </message>
+    <message>
+        <location line="+2"/>
+        <source>Delete Ro&amp;w</source>
+        <translation>S&amp;or törlése</translation>
+    </message>
+    <message>
+        <location line="+87"/>
         <source>&amp;Undo</source>
         <translation>&amp;Visszavonás</translation>
     </message>
@@ -320,52 +405,7 @@ Kilépési kód: 0 nincs hiba, 1 a programban hiba van, 2 használati vagy I/O h
         <translation>&amp;Mégis</translation>
     </message>
     <message>
-        <location line="-178"/>
-        <source>Normally Open Contact</source>
-        <translation>Záró érintkező</translation>
-    </message>
-    <message>
-        <location line="+2"/>
-        <source>Normally Closed Contact</source>
-        <translation>Nyitó érintkező</translation>
-    </message>
-    <message>
-        <location line="+2"/>
-        <source>Parallel Contact</source>
-        <translation>Párhuzamos érintkező</translation>
-    </message>
-    <message>
-        <location line="+2"/>
-        <source>Rising-Edge Contact</source>
-        <translation>Felfutó él érintkező</translation>
-    </message>
-    <message>
-        <location line="+2"/>
-        <source>Falling-Edge Contact</source>
-        <translation>Lefutó él érintkező</translation>
-    </message>
-    <message>
-        <location line="+2"/>
-        <source>Coil</source>
-        <translation>Tekercs</translation>
-    </message>
-    <message>
-        <location line="+1"/>
-        <source>Instruction</source>
-        <translation>Utasítás</translation>
-    </message>
-    <message>
-        <location line="+2"/>
-        <source>Horizontal Wire</source>
-        <translation>Vízszintes vezeték</translation>
-    </message>
-    <message>
-        <location line="+2"/>
-        <source>Vertical Link</source>
-        <translation>Függőleges összekötés</translation>
-    </message>
-    <message>
-        <location line="+7"/>
+        <location line="-163"/>
         <source>Select</source>
         <translation>Kijelölés</translation>
     </message>
@@ -375,7 +415,7 @@ Kilépési kód: 0 nincs hiba, 1 a programban hiba van, 2 használati vagy I/O h
         <translation>Kijelölés (Esc)</translation>
     </message>
     <message>
-        <location line="+10"/>
+        <location line="+13"/>
         <source>%1 (%2): click the cells to place it</source>
         <translation>%1 (%2): kattintson a cellákra az elhelyezéshez</translation>
     </message>
@@ -420,12 +460,7 @@ Kilépési kód: 0 nincs hiba, 1 a programban hiba van, 2 használati vagy I/O h
         <translation>Operandus &amp;cseréje...</translation>
     </message>
     <message>
-        <location line="+3"/>
-        <source>Import Symbols (CSV)...</source>
-        <translation>Szimbólumok importálása (CSV)...</translation>
-    </message>
-    <message>
-        <location line="+1"/>
+        <location line="+4"/>
         <source>Import Symbols</source>
         <translation>Szimbólumok importálása</translation>
     </message>
@@ -441,42 +476,12 @@ Kilépési kód: 0 nincs hiba, 1 a programban hiba van, 2 használati vagy I/O h
         <translation>Az importálás nem sikerült</translation>
     </message>
     <message>
-        <location line="+2"/>
-        <source>Export Symbols (CSV)...</source>
-        <translation>Szimbólumok exportálása (CSV)...</translation>
-    </message>
-    <message>
-        <location line="+2"/>
-        <source>Add to &amp;Watch List</source>
-        <translation>Hozzáadás a &amp;figyelőlistához</translation>
-    </message>
-    <message>
-        <location line="+3"/>
+        <location line="+7"/>
         <source>Rung Co&amp;mment...</source>
         <translation>Létrafok megje&amp;gyzése...</translation>
     </message>
     <message>
-        <location line="+2"/>
-        <source>Insert Rung</source>
-        <translation>Létrafok beszúrása</translation>
-    </message>
-    <message>
-        <location line="+1"/>
-        <source>Delete Rung</source>
-        <translation>Létrafok törlése</translation>
-    </message>
-    <message>
-        <location line="+1"/>
-        <source>Insert Row</source>
-        <translation>Sor beszúrása</translation>
-    </message>
-    <message>
-        <location line="+1"/>
-        <source>Delete Row</source>
-        <translation>Sor törlése</translation>
-    </message>
-    <message>
-        <location line="+2"/>
+        <location line="+11"/>
         <source>&amp;View</source>
         <translation>&amp;Nézet</translation>
     </message>
@@ -582,7 +587,7 @@ Ladder and instruction-list editor for VPC, Vigor, CPM1 and PL110.</source>
 Létradiagram- és utasításlista-szerkesztő VPC, Vigor, CPM1 és PL110 PLC-khez.</translation>
     </message>
     <message>
-        <location filename="../app/gui/main_window.cpp" line="+39"/>
+        <location filename="../app/gui/main_window.cpp" line="+18"/>
         <source>Rung Comment</source>
         <translation>Létrafok megjegyzése</translation>
     </message>
@@ -607,19 +612,33 @@ Létradiagram- és utasításlista-szerkesztő VPC, Vigor, CPM1 és PL110 PLC-kh
         <translation>A begépelt lista hibás volt, most a létradiagram programját mutatja; a listában a Ctrl+Z visszahozza</translation>
     </message>
     <message>
-        <location line="+58"/>
-        <source>&lt;b&gt;%1&lt;/b&gt;&lt;br&gt;Target: %2, model %3&lt;br&gt;%4 rungs, %5 steps</source>
-        <translation>&lt;b&gt;%1&lt;/b&gt;&lt;br&gt;Célrendszer: %2, modell: %3&lt;br&gt;%4 létrafok, %5 lépés</translation>
+        <location line="+116"/>
+        <source>&lt;b&gt;%1&lt;/b&gt;&lt;br&gt;Target: %2, model %3&lt;br&gt;%4, %5</source>
+        <translation>&lt;b&gt;%1&lt;/b&gt;&lt;br&gt;PLC-család: %2, modell: %3&lt;br&gt;%4, %5</translation>
     </message>
     <message>
-        <location line="+2"/>
-        <location line="+51"/>
-        <location filename="../app/gui/main_window_files.cpp" line="+374"/>
+        <location line="+1"/>
+        <location line="+50"/>
+        <location filename="../app/gui/main_window_files.cpp" line="+476"/>
         <source>Untitled</source>
         <translation>Névtelen</translation>
     </message>
+    <message numerus="yes">
+        <location line="-48"/>
+        <source>%n rung(s)</source>
+        <translation>
+            <numerusform>%n létrafok</numerusform>
+        </translation>
+    </message>
+    <message numerus="yes">
+        <location line="+1"/>
+        <source>%n step(s)</source>
+        <translation>
+            <numerusform>%n lépés</numerusform>
+        </translation>
+    </message>
     <message>
-        <location line="-32"/>
+        <location line="+15"/>
         <source>The instruction list has %1: line %2: %3. The ladder shows the last valid program.</source>
         <translation>Az utasításlistában %1 van: %2. sor: %3. A létradiagram az utolsó érvényes programot mutatja.</translation>
     </message>
@@ -666,17 +685,22 @@ Létradiagram- és utasításlista-szerkesztő VPC, Vigor, CPM1 és PL110 PLC-kh
         <translation>&amp;Visszavonás: %1</translation>
     </message>
     <message>
-        <location filename="../app/gui/main_window_files.cpp" line="-269"/>
+        <location filename="../app/gui/main_window_files.cpp" line="-281"/>
         <source>Recover</source>
         <translation>Helyreállítás</translation>
     </message>
     <message>
-        <location line="+1"/>
+        <location line="-6"/>
         <source>Rung Studio was not closed properly last time. Recover the unsaved program?</source>
         <translation>A Rung Studio legutóbb nem záródott be szabályosan. Helyreállítja a nem mentett programot?</translation>
     </message>
     <message>
-        <location line="+32"/>
+        <location line="+2"/>
+        <source>Rung Studio was not closed properly last time. Recover the unsaved changes to %1?</source>
+        <translation>A Rung Studio legutóbb nem záródott be szabályosan. Helyreállítja a(z) %1 nem mentett módosításait?</translation>
+    </message>
+    <message>
+        <location line="+49"/>
         <source>Cannot open the file</source>
         <translation>A fájl nem nyitható meg</translation>
     </message>
@@ -905,7 +929,7 @@ Létradiagram- és utasításlista-szerkesztő VPC, Vigor, CPM1 és PL110 PLC-kh
 <context>
     <name>rung::app::Simulate</name>
     <message>
-        <location filename="../app/cli/cli_simulate.cpp" line="+20"/>
+        <location filename="../app/cli/cli_simulate.cpp" line="+22"/>
         <source>usage: rungstudio-cli simulate FILE [--target T] --scans N [--period MS] [--set DEV=VALUE@SCAN]... --trace DEV[,DEV...]</source>
         <translation>használat: rungstudio-cli simulate FILE [--target T] --scans N [--period MS] [--set DEV=VALUE@SCAN]... --trace DEV[,DEV...]</translation>
     </message>
@@ -915,12 +939,7 @@ Létradiagram- és utasításlista-szerkesztő VPC, Vigor, CPM1 és PL110 PLC-kh
         <translation>váratlan argumentum: %1</translation>
     </message>
     <message>
-        <location line="+10"/>
-        <source>cannot read %1: %2</source>
-        <translation>%1 nem olvasható: %2</translation>
-    </message>
-    <message>
-        <location line="+7"/>
+        <location line="+19"/>
         <source>%1: no target; give --target or a &quot;; target: NAME&quot; first line</source>
         <translation>%1: nincs célrendszer; adja meg a --target kapcsolót vagy egy &quot;; target: NAME&quot; első sort</translation>
     </message>
@@ -1008,12 +1027,12 @@ Létradiagram- és utasításlista-szerkesztő VPC, Vigor, CPM1 és PL110 PLC-kh
 <context>
     <name>rung::editor::Document</name>
     <message>
-        <location filename="../editor/document.cpp" line="+40"/>
+        <location filename="../editor/document.cpp" line="+42"/>
         <source>Edit symbols</source>
         <translation>Szimbólumok szerkesztése</translation>
     </message>
     <message>
-        <location line="+108"/>
+        <location line="+109"/>
         <source>Insert rung</source>
         <translation>Létrafok beszúrása</translation>
     </message>
@@ -1030,7 +1049,7 @@ Létradiagram- és utasításlista-szerkesztő VPC, Vigor, CPM1 és PL110 PLC-kh
         </translation>
     </message>
     <message>
-        <location line="+56"/>
+        <location line="+62"/>
         <source>Edit instruction list</source>
         <translation>Utasításlista szerkesztése</translation>
     </message>
@@ -1116,7 +1135,7 @@ Létradiagram- és utasításlista-szerkesztő VPC, Vigor, CPM1 és PL110 PLC-kh
     </message>
     <message>
         <location line="+22"/>
-        <location filename="../editor/ladder_view_mouse.cpp" line="+124"/>
+        <location filename="../editor/ladder_view_mouse.cpp" line="+161"/>
         <source>Draw a wire</source>
         <translation>Vezeték rajzolása</translation>
     </message>
@@ -1467,17 +1486,17 @@ Létradiagram- és utasításlista-szerkesztő VPC, Vigor, CPM1 és PL110 PLC-kh
         <translation>Ez az érintkező nincs rajta egyetlen áramúton sem a bal oldali gyűjtősíntől egy kimenetig</translation>
     </message>
     <message>
-        <location filename="../model/checks_list.cpp" line="+149"/>
+        <location filename="../model/checks_list.cpp" line="+163"/>
         <source>Rewrite the rung in the canonical form</source>
         <translation>A létrafok átírása kanonikus formára</translation>
     </message>
     <message>
-        <location line="+27"/>
+        <location line="+44"/>
         <source>More than %1 %2 in a row: the PLC rejects the program</source>
         <translation>Több mint %1 %2 egymás után: a PLC elutasítja a programot</translation>
     </message>
     <message>
-        <location line="+29"/>
+        <location line="+30"/>
         <source>Stacked ANB: combine each block with ANB as soon as it is complete</source>
         <translation>Halmozott ANB: minden blokkot kapcsoljon ANB-vel, amint elkészült</translation>
     </message>
@@ -1489,22 +1508,32 @@ Létradiagram- és utasításlista-szerkesztő VPC, Vigor, CPM1 és PL110 PLC-kh
         </translation>
     </message>
     <message>
-        <location line="+6"/>
+        <location line="+8"/>
         <source>A single contact joined with %1 is simpler as %2</source>
         <translation>Egyetlen érintkező %1 kapcsolással egyszerűbb %2 formában</translation>
     </message>
     <message>
-        <location line="+8"/>
+        <location line="+11"/>
         <source>A single device in parallel with a block belongs on the lower row: the block first, then an OR, drops the %1</source>
         <translation>Egy blokkal párhuzamos egyetlen operandus az alsó sorba való: előbb a blokk, majd egy OR, így elmarad a(z) %1</translation>
     </message>
     <message>
-        <location line="+7"/>
+        <location line="+3"/>
         <source>The block after a single contact can move to the front and drop the %1</source>
         <translation>Az egyetlen érintkező utáni blokk előre kerülhet, így elmarad a(z) %1</translation>
     </message>
     <message>
-        <location line="+13"/>
+        <location line="+11"/>
+        <source>Put the single device below the block and drop the %1</source>
+        <translation>Az egyetlen operandus kerüljön a blokk alá, így elmarad a(z) %1</translation>
+    </message>
+    <message>
+        <location line="+3"/>
+        <source>Move the block to the front and drop the %1</source>
+        <translation>A blokk kerüljön előre, így elmarad a(z) %1</translation>
+    </message>
+    <message>
+        <location line="+12"/>
         <source>MPS nests more than %1 deep</source>
         <translation>Az MPS-ek egymásba ágyazása %1 szintnél mélyebb</translation>
     </message>
@@ -1514,19 +1543,24 @@ Létradiagram- és utasításlista-szerkesztő VPC, Vigor, CPM1 és PL110 PLC-kh
         <translation>%1 hozzá tartozó MPS nélkül</translation>
     </message>
     <message>
-        <location line="+7"/>
+        <location line="+8"/>
         <source>An output with no contacts of its own belongs on top of the branch and needs no %1</source>
         <translation>A saját érintkező nélküli kimenet az ág tetejére való, és nem kell hozzá %1</translation>
     </message>
+    <message>
+        <location line="+5"/>
+        <source>Put the output on top and drop the %1</source>
+        <translation>A kimenet kerüljön felülre, így elmarad a(z) %1</translation>
+    </message>
     <message numerus="yes">
-        <location line="+15"/>
+        <location line="+13"/>
         <source>%n MPS left without MPP at the end of the rung</source>
         <translation>
             <numerusform>%n MPS maradt MPP nélkül a létrafok végén</numerusform>
         </translation>
     </message>
     <message>
-        <location line="+16"/>
+        <location filename="../model/checks_nesting.cpp" line="+60"/>
         <source>END is missing</source>
         <translation>Hiányzik az END</translation>
     </message>
@@ -1536,12 +1570,12 @@ Létradiagram- és utasításlista-szerkesztő VPC, Vigor, CPM1 és PL110 PLC-kh
         <translation>Az END utáni utasítások sosem hajtódnak végre</translation>
     </message>
     <message>
-        <location line="+14"/>
+        <location line="+13"/>
         <source>IL inside IL: close the first with ILC</source>
         <translation>IL az IL-en belül: az elsőt zárja le ILC-vel</translation>
     </message>
     <message>
-        <location line="+6"/>
+        <location line="+5"/>
         <source>ILC without IL (&quot;IL (JMP) missing&quot;)</source>
         <translation>ILC IL nélkül (&quot;IL (JMP) missing&quot;)</translation>
     </message>
@@ -1556,7 +1590,7 @@ Létradiagram- és utasításlista-szerkesztő VPC, Vigor, CPM1 és PL110 PLC-kh
         <translation>A(z) %1 ugrásszám kívül esik a 00..%2 tartományon</translation>
     </message>
     <message>
-        <location line="+8"/>
+        <location line="+7"/>
         <source>JMP inside JMP: close the first jump</source>
         <translation>JMP a JMP-n belül: zárja le az első ugrást</translation>
     </message>
@@ -1591,7 +1625,7 @@ Létradiagram- és utasításlista-szerkesztő VPC, Vigor, CPM1 és PL110 PLC-kh
         <translation>JMP lezárás nélkül (%1)</translation>
     </message>
     <message>
-        <location line="+6"/>
+        <location line="+5"/>
         <source>JMP %1 has no JME %1</source>
         <translation>A JMP %1 utasításnak nincs JME %1 párja</translation>
     </message>
@@ -1601,17 +1635,27 @@ Létradiagram- és utasításlista-szerkesztő VPC, Vigor, CPM1 és PL110 PLC-kh
         <translation>A léptetőlánc nincs RET-tel lezárva</translation>
     </message>
     <message>
-        <location line="+25"/>
+        <location filename="../model/checks_list.cpp" line="+67"/>
         <source>Set value %1 is out of range</source>
         <translation>A(z) %1 beállított érték tartományon kívül esik</translation>
     </message>
     <message>
-        <location line="+16"/>
+        <location line="+17"/>
         <source>%1 cannot be written: %2 are read-only</source>
         <translation>%1 nem írható (%2: csak olvasható)</translation>
     </message>
     <message>
-        <location line="+15"/>
+        <location line="+6"/>
+        <source>%1 cannot be written: the PLC drives it (%2)</source>
+        <translation>%1 nem írható: a PLC vezérli (%2)</translation>
+    </message>
+    <message>
+        <location line="+9"/>
+        <source>%1 cannot drive %2: %3 are not relays</source>
+        <translation>%1 nem vezérelheti ezt: %2 (a(z) %3 nem relék)</translation>
+    </message>
+    <message>
+        <location line="+17"/>
         <source>Number %1 is used as a timer and as a counter; they share one bank</source>
         <translation>A(z) %1 szám időzítőként és számlálóként is használatban van; közös tartományuk van</translation>
     </message>
@@ -1644,13 +1688,18 @@ Létradiagram- és utasításlista-szerkesztő VPC, Vigor, CPM1 és PL110 PLC-kh
 <context>
     <name>rung::model::Convert</name>
     <message>
-        <location filename="../model/convert_to_ladder.cpp" line="+272"/>
+        <location filename="../model/convert_to_ladder.cpp" line="+197"/>
+        <source>%1 joins the condition of a branch point in parallel with another block; the ladder cannot draw this: repeat the shared contacts in this branch instead</source>
+        <translation>%1 egy elágazási pont feltételét párhuzamosan köti egy másik blokkal; ezt a létradiagram nem tudja megrajzolni: ismételje meg a közös érintkezőket ebben az ágban</translation>
+    </message>
+    <message>
+        <location line="+106"/>
         <source>%1 has no block to continue; start the rung with a load</source>
         <translation>%1 előtt nincs folytatható blokk; a létrafokot töltő (LD) utasítással kezdje</translation>
     </message>
     <message>
         <location line="+8"/>
-        <location line="+16"/>
+        <location line="+18"/>
         <source>%1 has no block to join in parallel</source>
         <translation>%1 előtt nincs párhuzamosan kapcsolható blokk</translation>
     </message>
@@ -1662,25 +1711,25 @@ Létradiagram- és utasításlista-szerkesztő VPC, Vigor, CPM1 és PL110 PLC-kh
         </translation>
     </message>
     <message numerus="yes">
-        <location line="+17"/>
+        <location line="+19"/>
         <source>MPS needs exactly one open block, but %n is open</source>
         <translation>
             <numerusform>Az MPS pontosan egy nyitott blokkot igényel, de %n nyitott</numerusform>
         </translation>
     </message>
     <message>
-        <location line="+11"/>
+        <location line="+12"/>
         <source>%1 without a matching MPS</source>
         <translation>%1 hozzá tartozó MPS nélkül</translation>
     </message>
     <message>
-        <location line="+15"/>
+        <location line="+16"/>
         <source>%1 needs %2 input blocks, but %3 are open</source>
         <translation>%1 %2 bemeneti blokkot igényel, de %3 nyitott</translation>
     </message>
     <message>
         <location line="+9"/>
-        <location filename="../model/convert_to_list.cpp" line="+43"/>
+        <location filename="../model/convert_to_list.cpp" line="+50"/>
         <source>%1 has an input with no condition</source>
         <translation>%1 egyik bemenetének nincs feltétele</translation>
     </message>
@@ -1698,7 +1747,7 @@ Létradiagram- és utasításlista-szerkesztő VPC, Vigor, CPM1 és PL110 PLC-kh
         <translation>%1 egy blokkot igényel, de %2 nyitott</translation>
     </message>
     <message>
-        <location line="+39"/>
+        <location line="+40"/>
         <source>The rung starting on line %1 ends without an output</source>
         <translation>A(z) %1. sorban kezdődő létrafok kimenet nélkül ér véget</translation>
     </message>
@@ -1725,7 +1774,7 @@ Létradiagram- és utasításlista-szerkesztő VPC, Vigor, CPM1 és PL110 PLC-kh
         <translation>%1 nem rendelkezik elágazási veremmel</translation>
     </message>
     <message>
-        <location line="+16"/>
+        <location line="+83"/>
         <source>A block cannot start with INV</source>
         <translation>Blokk nem kezdődhet INV-vel</translation>
     </message>
@@ -1735,7 +1784,12 @@ Létradiagram- és utasításlista-szerkesztő VPC, Vigor, CPM1 és PL110 PLC-kh
         <translation>Egy kimenetnek nincs feltétele</translation>
     </message>
     <message>
-        <location line="+135"/>
+        <location line="+95"/>
+        <source>A branch reads a device that an earlier branch of the same rung writes, and %1 cannot hold this branch point (IL does not nest); draw the branches as separate rungs</source>
+        <translation>Egy ág olyan operandust olvas, amelyet ugyanennek a létrafoknak egy korábbi ága ír, és a(z) %1 nem tudja megtartani ezt az elágazási pontot (az IL nem ágyazható egymásba); rajzolja az ágakat külön létrafokokként</translation>
+    </message>
+    <message>
+        <location line="+94"/>
         <source>A box with several inputs must stand alone in its rung</source>
         <translation>A több bemenetű funkcióblokknak egyedül kell állnia a létrafokán</translation>
     </message>
@@ -1851,7 +1905,7 @@ Létradiagram- és utasításlista-szerkesztő VPC, Vigor, CPM1 és PL110 PLC-kh
 <context>
     <name>rung::model::LadderText</name>
     <message>
-        <location filename="../model/ladder_text.cpp" line="+206"/>
+        <location filename="../model/ladder_text.cpp" line="+195"/>
         <source>A ladder text starts with &quot;LADDER &lt;target&gt; WIDTH &lt;n&gt;&quot;</source>
         <translation>A létra-szöveg így kezdődik: &quot;LADDER &lt;target&gt; WIDTH &lt;n&gt;&quot;</translation>
     </message>
@@ -1902,7 +1956,12 @@ Létradiagram- és utasításlista-szerkesztő VPC, Vigor, CPM1 és PL110 PLC-kh
         <translation>Egy kimeneti utasítás a várt</translation>
     </message>
     <message>
-        <location line="+50"/>
+        <location line="+46"/>
+        <source>&apos;~%1&apos;: a power-flow element is ~, ~P or ~N</source>
+        <translation>&apos;~%1&apos;: az áramútelem jele ~, ~P vagy ~N</translation>
+    </message>
+    <message>
+        <location line="+13"/>
         <source>&apos;%1&apos; is not a contact mark (&apos; &apos;, &apos;/&apos;, &apos;P&apos;, &apos;N&apos;, &apos;~&apos;)</source>
         <translation>A(z) &apos;%1&apos; nem érintkezőjel (&apos; &apos;, &apos;/&apos;, &apos;P&apos;, &apos;N&apos;, &apos;~&apos;)</translation>
     </message>
@@ -2354,14 +2413,14 @@ Létradiagram- és utasításlista-szerkesztő VPC, Vigor, CPM1 és PL110 PLC-kh
     </message>
     <message>
         <location line="+3"/>
-        <location filename="../model/target_pl110.cpp" line="+90"/>
+        <location filename="../model/target_pl110.cpp" line="+92"/>
         <location filename="../model/target_vigor.cpp" line="-1"/>
         <location filename="../model/target_vpc.cpp" line="+5"/>
         <source>End of the program</source>
         <translation>A program vége</translation>
     </message>
     <message>
-        <location filename="../model/target_pl110.cpp" line="-244"/>
+        <location filename="../model/target_pl110.cpp" line="-246"/>
         <source>IF contact: ON while S1 ? S2 is true</source>
         <translation>IF érintkező: BE, amíg S1 ? S2 igaz</translation>
     </message>
@@ -2641,12 +2700,12 @@ Létradiagram- és utasításlista-szerkesztő VPC, Vigor, CPM1 és PL110 PLC-kh
         <translation>PID-szabályozókör kimenetének beállítása</translation>
     </message>
     <message>
-        <location line="+1"/>
+        <location line="+2"/>
         <source>Setpoint generator with acceleration and deceleration ramps</source>
         <translation>Alapjel-generátor gyorsító és lassító rámpával</translation>
     </message>
     <message>
-        <location line="+1"/>
+        <location line="+2"/>
         <source>Convert a value</source>
         <translation>Érték konvertálása</translation>
     </message>
@@ -3173,7 +3232,7 @@ Létradiagram- és utasításlista-szerkesztő VPC, Vigor, CPM1 és PL110 PLC-kh
         <translation>a(z) %1 szavas blokk túlnyúlik a terület végén</translation>
     </message>
     <message>
-        <location filename="../simulator/compiler.cpp" line="+91"/>
+        <location filename="../simulator/compiler.cpp" line="+92"/>
         <source>label %1 ends more than one jump</source>
         <translation>a(z) %1 címke több ugrást is lezár</translation>
     </message>
@@ -3208,7 +3267,7 @@ Létradiagram- és utasításlista-szerkesztő VPC, Vigor, CPM1 és PL110 PLC-kh
         <translation>%1 előtte lévő MPS nélkül</translation>
     </message>
     <message>
-        <location line="+31"/>
+        <location line="+41"/>
         <source>%1 cannot be reset</source>
         <translation>%1 nem törölhető</translation>
     </message>
@@ -3218,7 +3277,7 @@ Létradiagram- és utasításlista-szerkesztő VPC, Vigor, CPM1 és PL110 PLC-kh
         <translation>%1 nem operandus</translation>
     </message>
     <message>
-        <location line="+106"/>
+        <location line="+108"/>
         <source>the program has no target</source>
         <translation>a programnak nincs célrendszere</translation>
     </message>
@@ -3231,7 +3290,12 @@ Létradiagram- és utasításlista-szerkesztő VPC, Vigor, CPM1 és PL110 PLC-kh
         <translation>a(z) %1 beállított érték nem BCD szám; az utasítás kimarad</translation>
     </message>
     <message>
-        <location line="+357"/>
+        <location line="+17"/>
+        <source>result %1 is outside 0..9999; %2 is written</source>
+        <translation>a(z) %1 eredmény kívül esik a 0..9999 tartományon; %2 íródik be</translation>
+    </message>
+    <message>
+        <location line="+364"/>
         <location line="+52"/>
         <source>division by zero; the destination is unchanged</source>
         <translation>osztás nullával; a cél változatlan marad</translation>

@@ -58,7 +58,7 @@ Codice di uscita: 0 nessun errore, 1 il programma contiene errori, 2 errore di u
     </message>
     <message>
         <location line="+17"/>
-        <location line="+41"/>
+        <location line="+32"/>
         <source>unexpected argument %1</source>
         <translation>argomento non previsto: %1</translation>
     </message>
@@ -68,12 +68,12 @@ Codice di uscita: 0 nessun errore, 1 il programma contiene errori, 2 errore di u
         <translation>--to deve essere il, ladder o project</translation>
     </message>
     <message>
-        <location line="+11"/>
+        <location line="+13"/>
         <source>nothing written: the input has errors</source>
         <translation>nessun file scritto: l&apos;ingresso contiene errori</translation>
     </message>
     <message>
-        <location line="+18"/>
+        <location line="+21"/>
         <source>cannot write %1: %2</source>
         <translation>impossibile scrivere %1: %2</translation>
     </message>
@@ -88,7 +88,7 @@ Codice di uscita: 0 nessun errore, 1 il programma contiene errori, 2 errore di u
         <translation>comando sconosciuto: %1</translation>
     </message>
     <message>
-        <location filename="../app/cli/cli_common.cpp" line="+44"/>
+        <location filename="../app/cli/cli_common.cpp" line="+84"/>
         <source>%1 needs a value</source>
         <translation>%1 richiede un valore</translation>
     </message>
@@ -108,17 +108,17 @@ Codice di uscita: 0 nessun errore, 1 il programma contiene errori, 2 errore di u
         <translation>%1 è un progetto %2, non %3</translation>
     </message>
     <message>
-        <location line="+10"/>
+        <location line="-99"/>
         <source>cannot read %1: %2</source>
         <translation>impossibile leggere %1: %2</translation>
     </message>
     <message>
-        <location line="+4"/>
-        <source>%1 is %2 MB; the limit is %3 MB</source>
-        <translation>%1 è di %2 MB; il limite è %3 MB</translation>
+        <location line="+5"/>
+        <source>%1: the file is larger than %2 MB, too large for a listing or a ladder text</source>
+        <translation>%1: il file supera %2 MB, troppo grande per una lista istruzioni o un testo ladder</translation>
     </message>
     <message>
-        <location line="+13"/>
+        <location line="+118"/>
         <source>%1: which PLC? Give --target vpc|vigor|cpm1|pl110 or a &quot;; target: NAME&quot; first line</source>
         <translation>%1: quale PLC? Specificare --target vpc|vigor|cpm1|pl110 oppure una prima riga &quot;; target: NAME&quot;</translation>
     </message>
@@ -190,7 +190,7 @@ Codice di uscita: 0 nessun errore, 1 il programma contiene errori, 2 errore di u
 <context>
     <name>rung::app::MainWindow</name>
     <message>
-        <location filename="../app/gui/main_window.cpp" line="+135"/>
+        <location filename="../app/gui/main_window.cpp" line="+137"/>
         <source>Problems</source>
         <translation>Problemi</translation>
     </message>
@@ -225,7 +225,7 @@ Codice di uscita: 0 nessun errore, 1 il programma contiene errori, 2 errore di u
         <translation>Liste di osservazione</translation>
     </message>
     <message>
-        <location filename="../app/gui/main_window_actions.cpp" line="+26"/>
+        <location filename="../app/gui/main_window_actions.cpp" line="+38"/>
         <source>&amp;File</source>
         <translation>&amp;File</translation>
     </message>
@@ -310,7 +310,92 @@ Codice di uscita: 0 nessun errore, 1 il programma contiene errori, 2 errore di u
         <translation>&amp;Modifica</translation>
     </message>
     <message>
-        <location line="+205"/>
+        <location line="+31"/>
+        <source>Normally &amp;Open Contact</source>
+        <translation>Contatto normalmente &amp;aperto</translation>
+    </message>
+    <message>
+        <location line="+2"/>
+        <source>Normally &amp;Closed Contact</source>
+        <translation>Contatto normalmente &amp;chiuso</translation>
+    </message>
+    <message>
+        <location line="+2"/>
+        <source>&amp;Parallel Contact</source>
+        <translation>Contatto in &amp;parallelo</translation>
+    </message>
+    <message>
+        <location line="+2"/>
+        <source>&amp;Rising-Edge Contact</source>
+        <translation>Contatto sul fronte di &amp;salita</translation>
+    </message>
+    <message>
+        <location line="+2"/>
+        <source>&amp;Falling-Edge Contact</source>
+        <translation>Contatto sul fronte di &amp;discesa</translation>
+    </message>
+    <message>
+        <location line="+2"/>
+        <source>Co&amp;il</source>
+        <translation>&amp;Bobina</translation>
+    </message>
+    <message>
+        <location line="+1"/>
+        <source>I&amp;nstruction</source>
+        <translation>&amp;Istruzione</translation>
+    </message>
+    <message>
+        <location line="+2"/>
+        <source>&amp;Horizontal Wire</source>
+        <translation>Collegamento &amp;orizzontale</translation>
+    </message>
+    <message>
+        <location line="+2"/>
+        <source>&amp;Vertical Link</source>
+        <translation>Collegamento &amp;verticale</translation>
+    </message>
+    <message>
+        <location line="+15"/>
+        <source>Place &amp;Element</source>
+        <translation>Posi&amp;ziona elemento</translation>
+    </message>
+    <message>
+        <location line="+48"/>
+        <source>&amp;Import Symbols (CSV)...</source>
+        <translation>Importa sim&amp;boli (CSV)...</translation>
+    </message>
+    <message>
+        <location line="+7"/>
+        <source>E&amp;xport Symbols (CSV)...</source>
+        <translation>Esporta simboli (CS&amp;V)...</translation>
+    </message>
+    <message>
+        <location line="+2"/>
+        <source>Add to Watc&amp;h List</source>
+        <translation>Aggiungi alla lista &amp;di osservazione</translation>
+    </message>
+    <message>
+        <location line="+5"/>
+        <source>In&amp;sert Rung</source>
+        <translation>I&amp;nserisci segmento</translation>
+    </message>
+    <message>
+        <location line="+2"/>
+        <source>De&amp;lete Rung</source>
+        <translation>Elimina se&amp;gmento</translation>
+    </message>
+    <message>
+        <location line="+2"/>
+        <source>Insert R&amp;ow</source>
+        <translation>Aggi&amp;ungi riga</translation>
+    </message>
+    <message>
+        <location line="+2"/>
+        <source>Delete Ro&amp;w</source>
+        <translation>E&amp;limina riga</translation>
+    </message>
+    <message>
+        <location line="+87"/>
         <source>&amp;Undo</source>
         <translation>&amp;Annulla</translation>
     </message>
@@ -320,52 +405,7 @@ Codice di uscita: 0 nessun errore, 1 il programma contiene errori, 2 errore di u
         <translation>&amp;Ripeti</translation>
     </message>
     <message>
-        <location line="-178"/>
-        <source>Normally Open Contact</source>
-        <translation>Contatto NA</translation>
-    </message>
-    <message>
-        <location line="+2"/>
-        <source>Normally Closed Contact</source>
-        <translation>Contatto NC</translation>
-    </message>
-    <message>
-        <location line="+2"/>
-        <source>Parallel Contact</source>
-        <translation>Contatto in parallelo</translation>
-    </message>
-    <message>
-        <location line="+2"/>
-        <source>Rising-Edge Contact</source>
-        <translation>Contatto su fronte di salita</translation>
-    </message>
-    <message>
-        <location line="+2"/>
-        <source>Falling-Edge Contact</source>
-        <translation>Contatto su fronte di discesa</translation>
-    </message>
-    <message>
-        <location line="+2"/>
-        <source>Coil</source>
-        <translation>Bobina</translation>
-    </message>
-    <message>
-        <location line="+1"/>
-        <source>Instruction</source>
-        <translation>Istruzione</translation>
-    </message>
-    <message>
-        <location line="+2"/>
-        <source>Horizontal Wire</source>
-        <translation>Collegamento orizzontale</translation>
-    </message>
-    <message>
-        <location line="+2"/>
-        <source>Vertical Link</source>
-        <translation>Collegamento verticale</translation>
-    </message>
-    <message>
-        <location line="+7"/>
+        <location line="-163"/>
         <source>Select</source>
         <translation>Seleziona</translation>
     </message>
@@ -375,7 +415,7 @@ Codice di uscita: 0 nessun errore, 1 il programma contiene errori, 2 errore di u
         <translation>Seleziona (Esc)</translation>
     </message>
     <message>
-        <location line="+10"/>
+        <location line="+13"/>
         <source>%1 (%2): click the cells to place it</source>
         <translation>%1 (%2): fare clic sulle celle per posizionare l&apos;elemento</translation>
     </message>
@@ -420,12 +460,7 @@ Codice di uscita: 0 nessun errore, 1 il programma contiene errori, 2 errore di u
         <translation>S&amp;ostituisci operando...</translation>
     </message>
     <message>
-        <location line="+3"/>
-        <source>Import Symbols (CSV)...</source>
-        <translation>Importa simboli (CSV)...</translation>
-    </message>
-    <message>
-        <location line="+1"/>
+        <location line="+4"/>
         <source>Import Symbols</source>
         <translation>Importa simboli</translation>
     </message>
@@ -441,42 +476,12 @@ Codice di uscita: 0 nessun errore, 1 il programma contiene errori, 2 errore di u
         <translation>Impossibile importare</translation>
     </message>
     <message>
-        <location line="+2"/>
-        <source>Export Symbols (CSV)...</source>
-        <translation>Esporta simboli (CSV)...</translation>
-    </message>
-    <message>
-        <location line="+2"/>
-        <source>Add to &amp;Watch List</source>
-        <translation>Aggiungi alla lista di osser&amp;vazione</translation>
-    </message>
-    <message>
-        <location line="+3"/>
+        <location line="+7"/>
         <source>Rung Co&amp;mment...</source>
         <translation>Co&amp;mmento del segmento...</translation>
     </message>
     <message>
-        <location line="+2"/>
-        <source>Insert Rung</source>
-        <translation>Inserisci segmento</translation>
-    </message>
-    <message>
-        <location line="+1"/>
-        <source>Delete Rung</source>
-        <translation>Elimina segmento</translation>
-    </message>
-    <message>
-        <location line="+1"/>
-        <source>Insert Row</source>
-        <translation>Inserisci riga</translation>
-    </message>
-    <message>
-        <location line="+1"/>
-        <source>Delete Row</source>
-        <translation>Elimina riga</translation>
-    </message>
-    <message>
-        <location line="+2"/>
+        <location line="+11"/>
         <source>&amp;View</source>
         <translation>&amp;Visualizza</translation>
     </message>
@@ -582,7 +587,7 @@ Ladder and instruction-list editor for VPC, Vigor, CPM1 and PL110.</source>
 Editor di schemi ladder e liste istruzioni per VPC, Vigor, CPM1 e PL110.</translation>
     </message>
     <message>
-        <location filename="../app/gui/main_window.cpp" line="+39"/>
+        <location filename="../app/gui/main_window.cpp" line="+18"/>
         <source>Rung Comment</source>
         <translation>Commento del segmento</translation>
     </message>
@@ -607,19 +612,35 @@ Editor di schemi ladder e liste istruzioni per VPC, Vigor, CPM1 e PL110.</transl
         <translation>La lista digitata conteneva errori e ora mostra il programma dello schema ladder; Ctrl+Z nella lista la ripristina</translation>
     </message>
     <message>
-        <location line="+58"/>
-        <source>&lt;b&gt;%1&lt;/b&gt;&lt;br&gt;Target: %2, model %3&lt;br&gt;%4 rungs, %5 steps</source>
-        <translation>&lt;b&gt;%1&lt;/b&gt;&lt;br&gt;Famiglia PLC: %2, modello %3&lt;br&gt;%4 segmenti, %5 passi</translation>
+        <location line="+116"/>
+        <source>&lt;b&gt;%1&lt;/b&gt;&lt;br&gt;Target: %2, model %3&lt;br&gt;%4, %5</source>
+        <translation>&lt;b&gt;%1&lt;/b&gt;&lt;br&gt;Famiglia PLC: %2, modello %3&lt;br&gt;%4, %5</translation>
     </message>
     <message>
-        <location line="+2"/>
-        <location line="+51"/>
-        <location filename="../app/gui/main_window_files.cpp" line="+374"/>
+        <location line="+1"/>
+        <location line="+50"/>
+        <location filename="../app/gui/main_window_files.cpp" line="+476"/>
         <source>Untitled</source>
         <translation>Senza titolo</translation>
     </message>
+    <message numerus="yes">
+        <location line="-48"/>
+        <source>%n rung(s)</source>
+        <translation>
+            <numerusform>%n segmento</numerusform>
+            <numerusform>%n segmenti</numerusform>
+        </translation>
+    </message>
+    <message numerus="yes">
+        <location line="+1"/>
+        <source>%n step(s)</source>
+        <translation>
+            <numerusform>%n passo</numerusform>
+            <numerusform>%n passi</numerusform>
+        </translation>
+    </message>
     <message>
-        <location line="-32"/>
+        <location line="+15"/>
         <source>The instruction list has %1: line %2: %3. The ladder shows the last valid program.</source>
         <translation>La lista istruzioni contiene %1: riga %2: %3. Lo schema ladder mostra l&apos;ultimo programma valido.</translation>
     </message>
@@ -666,17 +687,22 @@ Editor di schemi ladder e liste istruzioni per VPC, Vigor, CPM1 e PL110.</transl
         <translation>&amp;Annulla %1</translation>
     </message>
     <message>
-        <location filename="../app/gui/main_window_files.cpp" line="-269"/>
+        <location filename="../app/gui/main_window_files.cpp" line="-281"/>
         <source>Recover</source>
         <translation>Ripristino</translation>
     </message>
     <message>
-        <location line="+1"/>
+        <location line="-6"/>
         <source>Rung Studio was not closed properly last time. Recover the unsaved program?</source>
         <translation>Rung Studio non è stato chiuso correttamente l&apos;ultima volta. Ripristinare il programma non salvato?</translation>
     </message>
     <message>
-        <location line="+32"/>
+        <location line="+2"/>
+        <source>Rung Studio was not closed properly last time. Recover the unsaved changes to %1?</source>
+        <translation>Rung Studio non è stato chiuso correttamente l&apos;ultima volta. Ripristinare le modifiche non salvate di %1?</translation>
+    </message>
+    <message>
+        <location line="+49"/>
         <source>Cannot open the file</source>
         <translation>Impossibile aprire il file</translation>
     </message>
@@ -907,7 +933,7 @@ Editor di schemi ladder e liste istruzioni per VPC, Vigor, CPM1 e PL110.</transl
 <context>
     <name>rung::app::Simulate</name>
     <message>
-        <location filename="../app/cli/cli_simulate.cpp" line="+20"/>
+        <location filename="../app/cli/cli_simulate.cpp" line="+22"/>
         <source>usage: rungstudio-cli simulate FILE [--target T] --scans N [--period MS] [--set DEV=VALUE@SCAN]... --trace DEV[,DEV...]</source>
         <translation>uso: rungstudio-cli simulate FILE [--target T] --scans N [--period MS] [--set DEV=VALUE@SCAN]... --trace DEV[,DEV...]</translation>
     </message>
@@ -917,12 +943,7 @@ Editor di schemi ladder e liste istruzioni per VPC, Vigor, CPM1 e PL110.</transl
         <translation>argomento non previsto: %1</translation>
     </message>
     <message>
-        <location line="+10"/>
-        <source>cannot read %1: %2</source>
-        <translation>impossibile leggere %1: %2</translation>
-    </message>
-    <message>
-        <location line="+7"/>
+        <location line="+19"/>
         <source>%1: no target; give --target or a &quot;; target: NAME&quot; first line</source>
         <translation>%1: famiglia PLC non specificata; usare --target oppure una prima riga &quot;; target: NAME&quot;</translation>
     </message>
@@ -1010,12 +1031,12 @@ Editor di schemi ladder e liste istruzioni per VPC, Vigor, CPM1 e PL110.</transl
 <context>
     <name>rung::editor::Document</name>
     <message>
-        <location filename="../editor/document.cpp" line="+40"/>
+        <location filename="../editor/document.cpp" line="+42"/>
         <source>Edit symbols</source>
         <translation>Modifica simboli</translation>
     </message>
     <message>
-        <location line="+108"/>
+        <location line="+109"/>
         <source>Insert rung</source>
         <translation>Inserisci segmento</translation>
     </message>
@@ -1033,7 +1054,7 @@ Editor di schemi ladder e liste istruzioni per VPC, Vigor, CPM1 e PL110.</transl
         </translation>
     </message>
     <message>
-        <location line="+56"/>
+        <location line="+62"/>
         <source>Edit instruction list</source>
         <translation>Modifica lista istruzioni</translation>
     </message>
@@ -1119,7 +1140,7 @@ Editor di schemi ladder e liste istruzioni per VPC, Vigor, CPM1 e PL110.</transl
     </message>
     <message>
         <location line="+22"/>
-        <location filename="../editor/ladder_view_mouse.cpp" line="+124"/>
+        <location filename="../editor/ladder_view_mouse.cpp" line="+161"/>
         <source>Draw a wire</source>
         <translation>Disegna collegamento orizzontale</translation>
     </message>
@@ -1470,17 +1491,17 @@ Editor di schemi ladder e liste istruzioni per VPC, Vigor, CPM1 e PL110.</transl
         <translation>Questo contatto non si trova su alcun percorso dalla barra sinistra a un&apos;uscita</translation>
     </message>
     <message>
-        <location filename="../model/checks_list.cpp" line="+149"/>
+        <location filename="../model/checks_list.cpp" line="+163"/>
         <source>Rewrite the rung in the canonical form</source>
         <translation>Riscrivi il segmento nella forma canonica</translation>
     </message>
     <message>
-        <location line="+27"/>
+        <location line="+44"/>
         <source>More than %1 %2 in a row: the PLC rejects the program</source>
         <translation>Più di %1 %2 consecutivi: il PLC rifiuta il programma</translation>
     </message>
     <message>
-        <location line="+29"/>
+        <location line="+30"/>
         <source>Stacked ANB: combine each block with ANB as soon as it is complete</source>
         <translation>ANB impilati: combinare ogni blocco con ANB appena è completo</translation>
     </message>
@@ -1493,22 +1514,32 @@ Editor di schemi ladder e liste istruzioni per VPC, Vigor, CPM1 e PL110.</transl
         </translation>
     </message>
     <message>
-        <location line="+6"/>
+        <location line="+8"/>
         <source>A single contact joined with %1 is simpler as %2</source>
         <translation>Un singolo contatto unito con %1 è più semplice come %2</translation>
     </message>
     <message>
-        <location line="+8"/>
+        <location line="+11"/>
         <source>A single device in parallel with a block belongs on the lower row: the block first, then an OR, drops the %1</source>
         <translation>Un singolo operando in parallelo a un blocco va sulla riga inferiore: prima il blocco, poi un OR, senza %1</translation>
     </message>
     <message>
-        <location line="+7"/>
+        <location line="+3"/>
         <source>The block after a single contact can move to the front and drop the %1</source>
         <translation>Il blocco dopo un singolo contatto può essere spostato in testa, senza %1</translation>
     </message>
     <message>
-        <location line="+13"/>
+        <location line="+11"/>
+        <source>Put the single device below the block and drop the %1</source>
+        <translation>Metti il singolo operando sotto il blocco ed elimina %1</translation>
+    </message>
+    <message>
+        <location line="+3"/>
+        <source>Move the block to the front and drop the %1</source>
+        <translation>Sposta il blocco in testa ed elimina %1</translation>
+    </message>
+    <message>
+        <location line="+12"/>
         <source>MPS nests more than %1 deep</source>
         <translation>MPS annidati oltre %1 livelli</translation>
     </message>
@@ -1518,12 +1549,17 @@ Editor di schemi ladder e liste istruzioni per VPC, Vigor, CPM1 e PL110.</transl
         <translation>%1 senza un MPS corrispondente</translation>
     </message>
     <message>
-        <location line="+7"/>
+        <location line="+8"/>
         <source>An output with no contacts of its own belongs on top of the branch and needs no %1</source>
         <translation>Un&apos;uscita senza contatti propri va in cima alla diramazione e non richiede %1</translation>
     </message>
+    <message>
+        <location line="+5"/>
+        <source>Put the output on top and drop the %1</source>
+        <translation>Metti l&apos;uscita in cima ed elimina %1</translation>
+    </message>
     <message numerus="yes">
-        <location line="+15"/>
+        <location line="+13"/>
         <source>%n MPS left without MPP at the end of the rung</source>
         <translation>
             <numerusform>%n MPS senza MPP alla fine del segmento</numerusform>
@@ -1531,7 +1567,7 @@ Editor di schemi ladder e liste istruzioni per VPC, Vigor, CPM1 e PL110.</transl
         </translation>
     </message>
     <message>
-        <location line="+16"/>
+        <location filename="../model/checks_nesting.cpp" line="+60"/>
         <source>END is missing</source>
         <translation>Manca END</translation>
     </message>
@@ -1541,12 +1577,12 @@ Editor di schemi ladder e liste istruzioni per VPC, Vigor, CPM1 e PL110.</transl
         <translation>Le istruzioni dopo END non vengono mai eseguite</translation>
     </message>
     <message>
-        <location line="+14"/>
+        <location line="+13"/>
         <source>IL inside IL: close the first with ILC</source>
         <translation>IL dentro IL: chiudere il primo con ILC</translation>
     </message>
     <message>
-        <location line="+6"/>
+        <location line="+5"/>
         <source>ILC without IL (&quot;IL (JMP) missing&quot;)</source>
         <translation>ILC senza IL (&quot;IL (JMP) missing&quot;)</translation>
     </message>
@@ -1561,7 +1597,7 @@ Editor di schemi ladder e liste istruzioni per VPC, Vigor, CPM1 e PL110.</transl
         <translation>Il numero di salto %1 è oltre 00..%2</translation>
     </message>
     <message>
-        <location line="+8"/>
+        <location line="+7"/>
         <source>JMP inside JMP: close the first jump</source>
         <translation>JMP dentro JMP: chiudere il primo salto</translation>
     </message>
@@ -1596,7 +1632,7 @@ Editor di schemi ladder e liste istruzioni per VPC, Vigor, CPM1 e PL110.</transl
         <translation>JMP senza la sua fine (%1)</translation>
     </message>
     <message>
-        <location line="+6"/>
+        <location line="+5"/>
         <source>JMP %1 has no JME %1</source>
         <translation>JMP %1 non ha JME %1</translation>
     </message>
@@ -1606,17 +1642,27 @@ Editor di schemi ladder e liste istruzioni per VPC, Vigor, CPM1 e PL110.</transl
         <translation>Lo step ladder non è chiuso con RET</translation>
     </message>
     <message>
-        <location line="+25"/>
+        <location filename="../model/checks_list.cpp" line="+67"/>
         <source>Set value %1 is out of range</source>
         <translation>Il valore di preset %1 è fuori campo</translation>
     </message>
     <message>
-        <location line="+16"/>
+        <location line="+17"/>
         <source>%1 cannot be written: %2 are read-only</source>
         <translation>%1 non può essere scritto: area di sola lettura (%2)</translation>
     </message>
     <message>
-        <location line="+15"/>
+        <location line="+6"/>
+        <source>%1 cannot be written: the PLC drives it (%2)</source>
+        <translation>%1 non è scrivibile: lo gestisce il PLC (%2)</translation>
+    </message>
+    <message>
+        <location line="+9"/>
+        <source>%1 cannot drive %2: %3 are not relays</source>
+        <translation>%1 non può comandare %2: %3 non sono relè</translation>
+    </message>
+    <message>
+        <location line="+17"/>
         <source>Number %1 is used as a timer and as a counter; they share one bank</source>
         <translation>Il numero %1 è usato come temporizzatore e come contatore; condividono un banco</translation>
     </message>
@@ -1649,13 +1695,18 @@ Editor di schemi ladder e liste istruzioni per VPC, Vigor, CPM1 e PL110.</transl
 <context>
     <name>rung::model::Convert</name>
     <message>
-        <location filename="../model/convert_to_ladder.cpp" line="+272"/>
+        <location filename="../model/convert_to_ladder.cpp" line="+197"/>
+        <source>%1 joins the condition of a branch point in parallel with another block; the ladder cannot draw this: repeat the shared contacts in this branch instead</source>
+        <translation>%1 collega la condizione di un punto di diramazione in parallelo a un altro blocco; lo schema ladder non può disegnarlo: ripeti invece i contatti comuni in questo ramo</translation>
+    </message>
+    <message>
+        <location line="+106"/>
         <source>%1 has no block to continue; start the rung with a load</source>
         <translation>%1 non ha un blocco da continuare; iniziare il segmento con un caricamento</translation>
     </message>
     <message>
         <location line="+8"/>
-        <location line="+16"/>
+        <location line="+18"/>
         <source>%1 has no block to join in parallel</source>
         <translation>%1 non ha un blocco da collegare in parallelo</translation>
     </message>
@@ -1668,7 +1719,7 @@ Editor di schemi ladder e liste istruzioni per VPC, Vigor, CPM1 e PL110.</transl
         </translation>
     </message>
     <message numerus="yes">
-        <location line="+17"/>
+        <location line="+19"/>
         <source>MPS needs exactly one open block, but %n is open</source>
         <translation>
             <numerusform>MPS richiede esattamente un blocco aperto, ma %n è aperto</numerusform>
@@ -1676,18 +1727,18 @@ Editor di schemi ladder e liste istruzioni per VPC, Vigor, CPM1 e PL110.</transl
         </translation>
     </message>
     <message>
-        <location line="+11"/>
+        <location line="+12"/>
         <source>%1 without a matching MPS</source>
         <translation>%1 senza un MPS corrispondente</translation>
     </message>
     <message>
-        <location line="+15"/>
+        <location line="+16"/>
         <source>%1 needs %2 input blocks, but %3 are open</source>
         <translation>%1 richiede %2 blocchi di ingresso, ma %3 sono aperti</translation>
     </message>
     <message>
         <location line="+9"/>
-        <location filename="../model/convert_to_list.cpp" line="+43"/>
+        <location filename="../model/convert_to_list.cpp" line="+50"/>
         <source>%1 has an input with no condition</source>
         <translation>%1 ha un ingresso senza condizione</translation>
     </message>
@@ -1705,7 +1756,7 @@ Editor di schemi ladder e liste istruzioni per VPC, Vigor, CPM1 e PL110.</transl
         <translation>%1 richiede un blocco, ma %2 sono aperti</translation>
     </message>
     <message>
-        <location line="+39"/>
+        <location line="+40"/>
         <source>The rung starting on line %1 ends without an output</source>
         <translation>Il segmento che inizia alla riga %1 termina senza un&apos;uscita</translation>
     </message>
@@ -1733,7 +1784,7 @@ Editor di schemi ladder e liste istruzioni per VPC, Vigor, CPM1 e PL110.</transl
         <translation>%1 non ha uno stack delle diramazioni</translation>
     </message>
     <message>
-        <location line="+16"/>
+        <location line="+83"/>
         <source>A block cannot start with INV</source>
         <translation>Un blocco non può iniziare con INV</translation>
     </message>
@@ -1743,7 +1794,12 @@ Editor di schemi ladder e liste istruzioni per VPC, Vigor, CPM1 e PL110.</transl
         <translation>Un&apos;uscita non ha condizione</translation>
     </message>
     <message>
-        <location line="+135"/>
+        <location line="+95"/>
+        <source>A branch reads a device that an earlier branch of the same rung writes, and %1 cannot hold this branch point (IL does not nest); draw the branches as separate rungs</source>
+        <translation>Un ramo legge un operando che un ramo precedente dello stesso segmento scrive, e %1 non può mantenere questo punto di diramazione (IL non si annida); disegna i rami come segmenti separati</translation>
+    </message>
+    <message>
+        <location line="+94"/>
         <source>A box with several inputs must stand alone in its rung</source>
         <translation>Un blocco funzione con più ingressi deve stare da solo nel suo segmento</translation>
     </message>
@@ -1861,7 +1917,7 @@ Editor di schemi ladder e liste istruzioni per VPC, Vigor, CPM1 e PL110.</transl
 <context>
     <name>rung::model::LadderText</name>
     <message>
-        <location filename="../model/ladder_text.cpp" line="+206"/>
+        <location filename="../model/ladder_text.cpp" line="+195"/>
         <source>A ladder text starts with &quot;LADDER &lt;target&gt; WIDTH &lt;n&gt;&quot;</source>
         <translation>Un testo ladder inizia con &quot;LADDER &lt;target&gt; WIDTH &lt;n&gt;&quot;</translation>
     </message>
@@ -1912,7 +1968,12 @@ Editor di schemi ladder e liste istruzioni per VPC, Vigor, CPM1 e PL110.</transl
         <translation>È attesa un&apos;istruzione di uscita</translation>
     </message>
     <message>
-        <location line="+50"/>
+        <location line="+46"/>
+        <source>&apos;~%1&apos;: a power-flow element is ~, ~P or ~N</source>
+        <translation>&apos;~%1&apos;: un elemento sul flusso di corrente è ~, ~P o ~N</translation>
+    </message>
+    <message>
+        <location line="+13"/>
         <source>&apos;%1&apos; is not a contact mark (&apos; &apos;, &apos;/&apos;, &apos;P&apos;, &apos;N&apos;, &apos;~&apos;)</source>
         <translation>&apos;%1&apos; non è un segno di contatto (&apos; &apos;, &apos;/&apos;, &apos;P&apos;, &apos;N&apos;, &apos;~&apos;)</translation>
     </message>
@@ -2364,14 +2425,14 @@ Editor di schemi ladder e liste istruzioni per VPC, Vigor, CPM1 e PL110.</transl
     </message>
     <message>
         <location line="+3"/>
-        <location filename="../model/target_pl110.cpp" line="+90"/>
+        <location filename="../model/target_pl110.cpp" line="+92"/>
         <location filename="../model/target_vigor.cpp" line="-1"/>
         <location filename="../model/target_vpc.cpp" line="+5"/>
         <source>End of the program</source>
         <translation>Fine del programma</translation>
     </message>
     <message>
-        <location filename="../model/target_pl110.cpp" line="-244"/>
+        <location filename="../model/target_pl110.cpp" line="-246"/>
         <source>IF contact: ON while S1 ? S2 is true</source>
         <translation>Contatto IF: ON mentre S1 ? S2 è vero</translation>
     </message>
@@ -2651,12 +2712,12 @@ Editor di schemi ladder e liste istruzioni per VPC, Vigor, CPM1 e PL110.</transl
         <translation>Imposta l&apos;uscita di un regolatore PID</translation>
     </message>
     <message>
-        <location line="+1"/>
+        <location line="+2"/>
         <source>Setpoint generator with acceleration and deceleration ramps</source>
         <translation>Generatore di setpoint con rampe di accelerazione e decelerazione</translation>
     </message>
     <message>
-        <location line="+1"/>
+        <location line="+2"/>
         <source>Convert a value</source>
         <translation>Converte un valore</translation>
     </message>
@@ -3183,7 +3244,7 @@ Editor di schemi ladder e liste istruzioni per VPC, Vigor, CPM1 e PL110.</transl
         <translation>il blocco di %1 word va oltre la fine della sua area</translation>
     </message>
     <message>
-        <location filename="../simulator/compiler.cpp" line="+91"/>
+        <location filename="../simulator/compiler.cpp" line="+92"/>
         <source>label %1 ends more than one jump</source>
         <translation>l&apos;etichetta %1 chiude più di un salto</translation>
     </message>
@@ -3218,7 +3279,7 @@ Editor di schemi ladder e liste istruzioni per VPC, Vigor, CPM1 e PL110.</transl
         <translation>%1 senza MPS prima</translation>
     </message>
     <message>
-        <location line="+31"/>
+        <location line="+41"/>
         <source>%1 cannot be reset</source>
         <translation>%1 non può essere resettato</translation>
     </message>
@@ -3228,7 +3289,7 @@ Editor di schemi ladder e liste istruzioni per VPC, Vigor, CPM1 e PL110.</transl
         <translation>%1 non è un operando</translation>
     </message>
     <message>
-        <location line="+106"/>
+        <location line="+108"/>
         <source>the program has no target</source>
         <translation>il programma non ha una famiglia PLC</translation>
     </message>
@@ -3241,7 +3302,12 @@ Editor di schemi ladder e liste istruzioni per VPC, Vigor, CPM1 e PL110.</transl
         <translation>il valore di preset %1 non è un numero BCD; l&apos;istruzione viene saltata</translation>
     </message>
     <message>
-        <location line="+357"/>
+        <location line="+17"/>
+        <source>result %1 is outside 0..9999; %2 is written</source>
+        <translation>il risultato %1 è fuori da 0..9999; viene scritto %2</translation>
+    </message>
+    <message>
+        <location line="+364"/>
         <location line="+52"/>
         <source>division by zero; the destination is unchanged</source>
         <translation>divisione per zero; la destinazione resta invariata</translation>
