@@ -28,7 +28,10 @@ int runGui(int argc, char **argv) {
         language = QLocale::system().name().left(2);
     QTranslator translator;
     QTranslator qtTranslator;
-    if (translator.load(QStringLiteral(":/i18n/rungstudio_%1").arg(language)))
+    // English has a catalogue too: its plural forms ("1 rung", "2 rungs"). It is the
+    // fallback for a language we do not have, and for the C locale.
+    if (translator.load(QStringLiteral(":/i18n/rungstudio_%1").arg(language)) ||
+        translator.load(QStringLiteral(":/i18n/rungstudio_en")))
         QApplication::installTranslator(&translator);
     if (qtTranslator.load(QStringLiteral("qtbase_%1").arg(language),
                           QLibraryInfo::path(QLibraryInfo::TranslationsPath)))

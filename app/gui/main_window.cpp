@@ -100,6 +100,7 @@ MainWindow::MainWindow(QWidget *parent)
 
     QSettings settings;
     setSideBySide(settings.value(QStringLiteral("view/sideBySide"), false).toBool());
+    m_split->restoreState(settings.value(QStringLiteral("view/split")).toByteArray());
     resize(1400, 900);
     resizeDocks({findChild<QDockWidget *>(QStringLiteral("problemsDock"))}, {150}, Qt::Vertical);
     resizeDocks({findChild<QDockWidget *>(QStringLiteral("projectDock"))}, {230}, Qt::Horizontal);
@@ -187,8 +188,9 @@ void MainWindow::setSideBySide(bool sideBySide) {
     if (sideBySide) {
         m_split->addWidget(m_ladder);
         m_split->addWidget(m_il);
+        // The list's comment lines want about 60 characters; the ladder keeps the larger part.
         m_split->setStretchFactor(0, 3);
-        m_split->setStretchFactor(1, 1);
+        m_split->setStretchFactor(1, 2);
         // Out of the tabs the pages come hidden (a tab widget hides all but its current one).
         m_ladder->show();
         m_il->show();
@@ -425,6 +427,8 @@ void MainWindow::closeEvent(QCloseEvent *event) {
     QSettings settings;
     settings.setValue(QStringLiteral("window/geometry"), saveGeometry());
     settings.setValue(QStringLiteral("window/state"), saveState());
+    if (m_sideBySide)
+        settings.setValue(QStringLiteral("view/split"), m_split->saveState());
     removeRecovery();
     event->accept();
 }

@@ -228,6 +228,24 @@ TEST(CliBinary, SpeaksTheLanguageOfTheLocale) {
                   expected.toStdString());
     }
 }
+
+// The C locale gets English with its plural forms, not the "(s)" of the source text.
+TEST(CliBinary, EnglishInTheCLocaleHasItsPluralForms) {
+    QTemporaryDir dir;
+    const QString file = write(dir, QStringLiteral("p.il"), "LD X0\nOUT\nEND\n");
+    QProcessEnvironment env = QProcessEnvironment::systemEnvironment();
+    for (const char *name : {"LC_ALL", "LC_MESSAGES", "LANGUAGE"})
+        env.remove(QString::fromLatin1(name));
+    env.insert(QStringLiteral("LANG"), QStringLiteral("C"));
+    QProcess p;
+    p.setProcessEnvironment(env);
+    p.start(QStringLiteral(RUNG_CLI_PATH),
+            {QStringLiteral("check"), file, QStringLiteral("--target"), QStringLiteral("vigor")});
+    ASSERT_TRUE(p.waitForFinished(30000));
+    const QString out = QString::fromUtf8(p.readAllStandardOutput());
+    EXPECT_TRUE(out.contains(QStringLiteral("needs 1 operand:"))) << out.toStdString();
+    EXPECT_FALSE(out.contains(QStringLiteral("operand(s)"))) << out.toStdString();
+}
 #endif
 
 TEST(Examples, EveryExampleProjectLoadsAndHasNoError) {

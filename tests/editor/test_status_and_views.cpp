@@ -147,3 +147,29 @@ TEST(ViewLayout, SideBySideOrTabsIsTheUsersChoiceRememberedForTheNextStart) {
     EXPECT_EQ(qobject_cast<QSplitter *>(last.ladderView()->parentWidget()), nullptr);
     QSettings().remove(QStringLiteral("view/sideBySide"));
 }
+
+// Side by side, the list gets room for its comment lines, and the user's split is kept.
+TEST(ViewLayout, TheSplitBetweenLadderAndListIsRemembered) {
+    QSettings().setValue(QStringLiteral("view/sideBySide"), true);
+    QSettings().remove(QStringLiteral("view/split"));
+    QList<int> chosen;
+    {
+        app::MainWindow window;
+        window.show();
+        auto *split = qobject_cast<QSplitter *>(window.ladderView()->parentWidget());
+        ASSERT_NE(split, nullptr);
+        const QList<int> sizes = split->sizes();
+        ASSERT_EQ(sizes.size(), 2);
+        EXPECT_GE(sizes[1] * 3, sizes[0]) << sizes[0] << " " << sizes[1]; // not a sliver
+        split->setSizes({sizes[0] + sizes[1] - 300, 300});
+        chosen = split->sizes();
+        window.close();
+    }
+    app::MainWindow next;
+    next.show();
+    auto *split = qobject_cast<QSplitter *>(next.ladderView()->parentWidget());
+    ASSERT_NE(split, nullptr);
+    EXPECT_EQ(split->sizes(), chosen);
+    QSettings().remove(QStringLiteral("view/sideBySide"));
+    QSettings().remove(QStringLiteral("view/split"));
+}
