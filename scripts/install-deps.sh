@@ -7,7 +7,7 @@ packages=(
     qt6-base-dev qt6-tools-dev qt6-tools-dev-tools qt6-l10n-tools qt6-svg-dev libgl-dev
     libqscintilla2-qt6-dev libserialport-dev
     libgtest-dev libbenchmark-dev
-    xvfb xauth
+    xvfb xauth poppler-utils
 )
 missing=()
 for p in "${packages[@]}"; do

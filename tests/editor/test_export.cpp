@@ -5,8 +5,11 @@
 #include "editor/ladder_view.h"
 #include "model/address.h"
 
+#include <QDate>
 #include <QFile>
 #include <QImage>
+#include <QLocale>
+#include <QProcess>
 #include <QSignalSpy>
 #include <QTemporaryDir>
 #include <QUndoStack>
@@ -70,6 +73,34 @@ TEST_F(ExportFixture, PdfIsThePrintoutOnSeveralPages) {
                   pdf.count("/Type /Page "),
               3)
         << "60 rungs do not fit one A4 page";
+}
+
+// Every printed page carries its header: the project, the PLC, the date and "page N of M".
+// pdftotext (poppler-utils, installed by scripts/install-deps.sh) reads the text back.
+TEST_F(ExportFixture, EveryPrintedPageHasTheHeader) {
+    ASSERT_TRUE(window.saveTo(dir.filePath(QStringLiteral("pump-station.rung"))));
+    QString error;
+    const QString pdf = dir.filePath(QStringLiteral("ladder.pdf"));
+    ASSERT_TRUE(window.exportLadder(pdf, &error)) << error.toStdString();
+    QProcess pdftotext;
+    pdftotext.start(QStringLiteral("pdftotext"),
+                    {QStringLiteral("-layout"), pdf, QStringLiteral("-")});
+    ASSERT_TRUE(pdftotext.waitForFinished(30000)) << "pdftotext is missing";
+    ASSERT_EQ(pdftotext.exitCode(), 0);
+    const QStringList pages = QString::fromUtf8(pdftotext.readAllStandardOutput())
+                                  .split(QLatin1Char('\f'), Qt::SkipEmptyParts);
+    ASSERT_GE(pages.size(), 3);
+    const QString date = QLocale().toString(QDate::currentDate(), QLocale::ShortFormat);
+    for (int i = 0; i < pages.size(); ++i) {
+        const QString header = pages[i].trimmed().section(QLatin1Char('\n'), 0, 0);
+        EXPECT_TRUE(header.contains(QStringLiteral("pump-station.rung"))) << header.toStdString();
+        EXPECT_TRUE(header.contains(QStringLiteral("Vigor VB"))) << header.toStdString();
+        EXPECT_TRUE(header.contains(date)) << header.toStdString();
+        EXPECT_TRUE(header.contains(QStringLiteral("page %1 of %2").arg(i + 1).arg(pages.size())))
+            << header.toStdString();
+    }
+    EXPECT_TRUE(pages.front().contains(QStringLiteral("X0")));
+    EXPECT_TRUE(pages.back().contains(QStringLiteral("END")));
 }
 
 TEST_F(ExportFixture, AnUnwritablePlaceOrAnUnknownFormatSaysWhy) {
