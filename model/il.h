@@ -64,6 +64,10 @@ ParseResult parseInstructionList(const Target &target, const QString &text,
 // empty when it names none; the command-line tool and the IDE both read it.
 QString declaredTarget(const QString &text);
 
+// The target to open a listing for: the one it declares, else `fallback` when it reads the
+// text without an error, else the first family that does, else `fallback`.
+QString listingTarget(const QString &text, const QString &fallback);
+
 // Print in the target's canonical listing form, one instruction a line.
 struct PrintOptions {
     bool stepNumbers = false; // "0002 LD  p01<p00" as the VPC console shows

@@ -594,11 +594,4 @@ ParseResult parseInstructionList(const Target &target, const QString &text,
     return Parser(target, model).run(text);
 }
 
-QString declaredTarget(const QString &text) {
-    static const QRegularExpression re(QStringLiteral("^\\s*(?:;|//)\\s*target\\s*:\\s*(\\w+)"),
-                                       QRegularExpression::CaseInsensitiveOption);
-    const auto m = re.match(text.section(QLatin1Char('\n'), 0, 0));
-    return m.hasMatch() ? m.captured(1) : QString();
-}
-
 } // namespace rung::model

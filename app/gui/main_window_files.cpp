@@ -259,9 +259,8 @@ bool MainWindow::openFile(const QString &path, const QString &targetId, bool qui
         if (file.size() > 64 * 1024 * 1024)
             return fail(tr("%1 is larger than 64 MB").arg(path));
         const QString text = QString::fromUtf8(file.readAll());
-        QString id = targetId.isEmpty() ? model::declaredTarget(text) : targetId;
-        if (id.isEmpty())
-            id = m_document->target().id;
+        const QString id =
+            targetId.isEmpty() ? model::listingTarget(text, m_document->target().id) : targetId;
         const model::Target *target = model::Target::byId(id.toLower());
         if (!target)
             return fail(tr("Unknown target %1").arg(id));

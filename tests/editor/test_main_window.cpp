@@ -216,6 +216,21 @@ TEST_F(Fixture, AListingOpensForTheTargetItsFirstLineNames) {
     EXPECT_EQ(window.document()->ladder().rungs.size(), 2u);
 }
 
+// A listing that names no PLC opens for the one whose syntax it is written in: an exported
+// CPM1 listing reopened in a window set for Vigor is a CPM1 program, not a page of errors.
+TEST_F(Fixture, AListingWithoutItsTargetOpensForThePlcWhoseSyntaxItIs) {
+    QTemporaryDir dir;
+    const QString path = dir.filePath(QStringLiteral("keep.il"));
+    QFile f(path);
+    ASSERT_TRUE(f.open(QIODevice::WriteOnly));
+    f.write("LD 000.00\nOR 010.00\nAND NOT 000.01\nOUT 010.00\nEND(01)\n");
+    f.close();
+    ASSERT_EQ(window.document()->target().family, model::Family::Vigor);
+    ASSERT_TRUE(window.openFile(path, QString(), true));
+    EXPECT_EQ(window.document()->target().family, model::Family::Cpm1);
+    EXPECT_EQ(window.document()->ladder().rungs.size(), 2u);
+}
+
 // A listing with errors is not refused: it opens as typed, its errors marked, so that the
 // user can fix it where it is shown; the ladder follows once it is valid.
 TEST_F(Fixture, AListingWithErrorsOpensAsTypedWithItsErrorsMarked) {

@@ -9,7 +9,6 @@
 
 #include <gtest/gtest.h>
 
-
 using namespace rung::model;
 
 namespace {
@@ -456,3 +455,23 @@ TEST(IlVigor, PrintsTheCanonicalSpelling) {
 }
 
 } // namespace
+
+// Which PLC a listing is for when it does not say: the one that reads it, the caller's
+// choice first; what nobody reads stays with the caller's choice.
+TEST(ListingTarget, TheDeclarationElseTheSyntaxElseTheFallback) {
+    EXPECT_EQ(listingTarget(QStringLiteral("; target: pl110\nLD X0\n"), QStringLiteral("vigor")),
+              QStringLiteral("pl110"));
+    EXPECT_EQ(
+        listingTarget(QStringLiteral("LD 000.00\nOUT 010.00\nEND(01)\n"), QStringLiteral("vigor")),
+        QStringLiteral("cpm1"));
+    EXPECT_EQ(listingTarget(QStringLiteral("0000 LD i00\n0001 OUT o01\n0002 END\n"),
+                            QStringLiteral("vigor")),
+              QStringLiteral("vpc"));
+    EXPECT_EQ(
+        listingTarget(QStringLiteral("LDI X1\nOUT Y0\nTMR T0 K10\nEND\n"), QStringLiteral("cpm1")),
+        QStringLiteral("vigor"));
+    EXPECT_EQ(listingTarget(QStringLiteral("LD X0\nOUT Y0\nEND\n"), QStringLiteral("vigor")),
+              QStringLiteral("vigor"));
+    EXPECT_EQ(listingTarget(QStringLiteral("FROB 12\n"), QStringLiteral("vpc")),
+              QStringLiteral("vpc"));
+}
