@@ -1,10 +1,7 @@
 // Choices where a manual is ambiguous, on the real target tables (docs/simulator.md,
 // "Choices where the manuals are silent or ambiguous").
 
-#include "model/address.h"
-#include "model/il.h"
-#include "simulator/compiler.h"
-#include "simulator/engine.h"
+#include "real_target_sim.h"
 
 #include <gtest/gtest.h>
 
@@ -13,26 +10,7 @@ using namespace rung::simulator;
 
 namespace {
 
-struct Sim {
-    Sim(model::Family family, const char *text)
-        : target(model::Target::get(family))
-        , parsed(model::parseInstructionList(target, QString::fromLatin1(text))) {
-        if (parsed.ok())
-            result = compileProgram(parsed.list);
-        if (result.ok())
-            engine = std::make_unique<Engine>(result.program);
-    }
-    model::Address at(const char *name) const {
-        return std::get<model::Address>(model::parseAddress(target, QString::fromLatin1(name)));
-    }
-    void in(const char *name, bool on) { engine->setBit(at(name), on); }
-    std::int32_t value(const char *name) const { return engine->value(at(name)); }
-
-    const model::Target &target;
-    model::ParseResult parsed;
-    CompileResult result;
-    std::unique_ptr<Engine> engine;
-};
+using Sim = test::RealTargetSim;
 
 } // namespace
 

@@ -1,10 +1,7 @@
 // System devices and power-cycle retention of each family, on the real target tables (the
 // engine tests run on a synthetic target; these pin what the manuals name).
 
-#include "model/address.h"
-#include "model/il.h"
-#include "simulator/compiler.h"
-#include "simulator/engine.h"
+#include "real_target_sim.h"
 
 #include <gtest/gtest.h>
 
@@ -13,37 +10,7 @@ using namespace rung::simulator;
 
 namespace {
 
-struct Family {
-    Family(model::Family family, const char *text)
-        : target(model::Target::get(family))
-        , parsed(model::parseInstructionList(target, QString::fromLatin1(text))) {
-        if (parsed.ok())
-            result = compileProgram(parsed.list);
-        if (result.ok())
-            engine = std::make_unique<Engine>(result.program);
-    }
-    model::Address at(const char *name) const {
-        const auto parsedAddress = model::parseAddress(target, QString::fromLatin1(name));
-        EXPECT_TRUE(std::holds_alternative<model::Address>(parsedAddress)) << name;
-        return std::get<model::Address>(parsedAddress);
-    }
-    bool bit(const char *name) const { return engine->bit(at(name)); }
-    std::int32_t value(const char *name) const { return engine->value(at(name)); }
-    // The value of a bit device after each of n scans, as a 0/1 string.
-    std::string bits(const char *name, int n) {
-        std::string s;
-        for (int i = 0; i < n; ++i) {
-            engine->scan();
-            s += bit(name) ? '1' : '0';
-        }
-        return s;
-    }
-
-    const model::Target &target;
-    model::ParseResult parsed;
-    CompileResult result;
-    std::unique_ptr<Engine> engine;
-};
+using Family = test::RealTargetSim;
 
 } // namespace
 

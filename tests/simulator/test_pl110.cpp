@@ -1,10 +1,7 @@
 // PL110 boxes on the real target table and listing (seed 003 4.2.4 - 4.2.9): what the golden
 // traces in tests/data/sim/pl110_*.il do not pin.
 
-#include "model/address.h"
-#include "model/il.h"
-#include "simulator/compiler.h"
-#include "simulator/engine.h"
+#include "real_target_sim.h"
 
 #include <gtest/gtest.h>
 
@@ -13,32 +10,9 @@ using namespace rung::simulator;
 
 namespace {
 
-struct Pl110 {
+struct Pl110 : test::RealTargetSim {
     explicit Pl110(const char *text)
-        : target(model::Target::get(model::Family::Pl110))
-        , parsed(model::parseInstructionList(target, QString::fromLatin1(text))) {
-        if (parsed.ok())
-            result = compileProgram(parsed.list);
-        if (result.ok())
-            engine = std::make_unique<Engine>(result.program);
-    }
-    model::Address at(const char *name) const {
-        return std::get<model::Address>(model::parseAddress(target, QString::fromLatin1(name)));
-    }
-    // Scans once per character of inputs ('1' = input ON) and collects the bit after each.
-    std::string run(const char *input, const char *inputs, const char *output) {
-        std::string out;
-        for (const char *c = inputs; *c; ++c) {
-            engine->setBit(at(input), *c == '1');
-            engine->scan();
-            out += engine->bit(at(output)) ? '1' : '0';
-        }
-        return out;
-    }
-    const model::Target &target;
-    model::ParseResult parsed;
-    CompileResult result;
-    std::unique_ptr<Engine> engine;
+        : RealTargetSim(model::Family::Pl110, text) {}
 };
 
 } // namespace
