@@ -488,7 +488,8 @@ TEST(Checks, AnOperandFindingPointsAtTheOperandWhenTheSourceIsAtHand) {
     ASSERT_TRUE(p.ok());
     CheckOptions o;
     o.source = &source;
-    const Diagnostic *d = find(checkList(p.list, o), "OP002");
+    const std::vector<Diagnostic> found = checkList(p.list, o);
+    const Diagnostic *d = find(found, "OP002");
     ASSERT_NE(d, nullptr);
     EXPECT_EQ(d->location.line, 2);
     EXPECT_EQ(d->location.column, 9);
