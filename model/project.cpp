@@ -452,16 +452,17 @@ std::optional<Project> loadProject(const QString &path, ProjectError *error) {
             error->message = Tr::tr("%1: cannot open the file (%2)").arg(path, file.errorString());
         return std::nullopt;
     }
-    if (file.size() > kMaxProjectBytes) {
+    // Read at most one byte past the limit: a device or a pipe has no size to ask first.
+    const QByteArray data = file.read(kMaxProjectBytes + 1);
+    if (data.size() > kMaxProjectBytes) {
         if (error)
-            error->message = Tr::tr("%1: the file is %2 MB; a project is at most %3 MB")
+            error->message = Tr::tr("%1: the file is larger than %2 MB, the most a project can be")
                                  .arg(path)
-                                 .arg(file.size() / (1024 * 1024))
                                  .arg(kMaxProjectBytes / (1024 * 1024));
         return std::nullopt;
     }
     ProjectError inner;
-    auto project = projectFromJson(file.readAll(), &inner);
+    auto project = projectFromJson(data, &inner);
     if (!project && error)
         error->message = QStringLiteral("%1: %2").arg(QFileInfo(path).fileName(), inner.message);
     return project;

@@ -185,3 +185,13 @@ TEST(ProjectFile, EveryExampleReadsBackToTheSameBytes) {
     }
     EXPECT_GE(count, 12);
 }
+
+// A device or a pipe has no size to check first: the loader reads no more than the limit.
+TEST(ProjectFile, AnEndlessDeviceIsRefusedAtTheLimit) {
+    if (!QFile::exists(QStringLiteral("/dev/zero")))
+        GTEST_SKIP() << "no /dev/zero";
+    ProjectError error;
+    EXPECT_FALSE(loadProject(QStringLiteral("/dev/zero"), &error).has_value());
+    EXPECT_TRUE(error.message.contains(QStringLiteral("larger than 64 MB")))
+        << error.message.toStdString();
+}
