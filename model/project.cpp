@@ -452,6 +452,14 @@ std::optional<Project> loadProject(const QString &path, ProjectError *error) {
             error->message = Tr::tr("%1: cannot open the file (%2)").arg(path, file.errorString());
         return std::nullopt;
     }
+    if (file.size() > kMaxProjectBytes) {
+        if (error)
+            error->message = Tr::tr("%1: the file is %2 MB; a project is at most %3 MB")
+                                 .arg(path)
+                                 .arg(file.size() / (1024 * 1024))
+                                 .arg(kMaxProjectBytes / (1024 * 1024));
+        return std::nullopt;
+    }
     // Read at most one byte past the limit: a device or a pipe has no size to ask first.
     const QByteArray data = file.read(kMaxProjectBytes + 1);
     if (data.size() > kMaxProjectBytes) {
