@@ -180,7 +180,8 @@ void Document::applySymbols(const std::vector<model::Symbol> &symbols) {
     emit programChanged();
 }
 
-bool Document::setListing(const QString &text, std::vector<model::Diagnostic> *errors) {
+bool Document::setListing(const QString &text, std::vector<model::Diagnostic> *errors,
+                          ListingStep step) {
     const model::ParseResult parsed =
         model::parseInstructionList(*m_project.target, text, modelVariant());
     std::vector<model::Diagnostic> problems;
@@ -192,30 +193,35 @@ bool Document::setListing(const QString &text, std::vector<model::Diagnostic> *e
         d.message = e.message;
         problems.push_back(d);
     }
-    model::ToLadderResult ladder;
-    if (parsed.ok()) {
-        ladder = model::listToLadder(parsed.list);
-        for (const model::Diagnostic &d : ladder.problems)
-            problems.push_back(d);
-    }
-    const bool blocked = model::hasErrors(problems);
-    if (!blocked) {
-        // The text stays as typed until the ladder is edited: its fuzzy forms are worth a
-        // warning with the canonical rewrite as a fix, and never stop the ladder following.
-        model::CheckOptions form;
-        form.model = modelVariant();
-        form.formOnly = true;
-        for (model::Diagnostic &d : model::checkList(parsed.list, form))
-            problems.push_back(std::move(d));
-    }
-    if (errors)
-        *errors = problems;
-    if (blocked)
+    if (!parsed.ok()) {
+        if (errors)
+            *errors = problems;
         return false;
+    }
+    const model::ToLadderResult ladder = model::listToLadder(parsed.list);
+    model::CheckOptions options;
+    options.model = modelVariant();
+    options.source = &text;
+    if (model::hasErrors(ladder.problems)) {
+        // A text that parses but cannot be drawn is checked whole, as `check` does: why it
+        // cannot be drawn by the documented codes (BL001, OC001, ST002, ...), next to every
+        // other finding, which the ladder (the last valid program) cannot give for this text.
+        if (errors)
+            *errors = model::checkList(parsed.list, options);
+        return false;
+    }
+    // The text stays as typed until the ladder is edited: its fuzzy forms are worth a warning
+    // with the canonical rewrite as a fix, and never stop the ladder following.
+    options.formOnly = true;
+    if (errors)
+        *errors = model::checkList(parsed.list, options);
     if (ladder.ladder.rungs == m_project.program.rungs)
         return true;
-    replaceRungs(0, static_cast<int>(m_project.program.rungs.size()), ladder.ladder.rungs,
-                 tr("Edit instruction list"));
+    if (step == ListingStep::InPlace)
+        applyRungs(0, static_cast<int>(m_project.program.rungs.size()), ladder.ladder.rungs);
+    else
+        replaceRungs(0, static_cast<int>(m_project.program.rungs.size()), ladder.ladder.rungs,
+                     tr("Edit instruction list"));
     return true;
 }
 
@@ -252,11 +258,9 @@ void Document::refresh() {
     }
     model::CheckOptions options;
     options.model = modelVariant();
+    // The checks report what keeps a rung from being listed (the listing's own problems) by
+    // the documented codes, RC001 with its fix: those problems are not added a second time.
     m_diagnostics = model::checkLadder(m_project.program, m_listing, options);
-    for (const model::Diagnostic &d : m_listing.problems)
-        if (d.code != QLatin1String("RC001")) // the checks report it with its fix
-            m_diagnostics.push_back(d);
-    model::sortDiagnostics(m_diagnostics);
     emit programChanged();
 }
 

@@ -61,10 +61,16 @@ public:
     void removeRungs(int first, int count);
     void setSymbols(const std::vector<model::Symbol> &symbols);
     void setWatchLists(const std::vector<model::WatchList> &lists, const QString &label);
+    // How setListing changes the program: as an undo step of its own, or in place for an undo
+    // step that holds the change itself (a fix of the typed list, ListingLinesCommand).
+    enum class ListingStep { Own, InPlace };
     // Rebuilds the ladder from listing text; false (nothing changed) when the text has errors,
-    // which land in *errors. On success *errors holds the fuzzy forms of the text as typed
-    // (FZ*, with the canonical rewrite as a fix).
-    bool setListing(const QString &text, std::vector<model::Diagnostic> *errors);
+    // which land in *errors: the syntax errors, or when the text parses but cannot be drawn
+    // every finding of the listing checks by its documented code (as `rungstudio-cli check`).
+    // On success *errors holds the fuzzy forms of the text as typed (FZ*, with the canonical
+    // rewrite as a fix); the program's other findings come from the ladder (diagnostics()).
+    bool setListing(const QString &text, std::vector<model::Diagnostic> *errors,
+                    ListingStep step = ListingStep::Own);
 
     // Used by the undo commands only.
     void applyRungs(int first, int count, const std::vector<model::Rung> &rungs);

@@ -1,8 +1,8 @@
 #pragma once
 
-// A fix of the instruction list as typed (a fuzzy form rewritten canonically) as a step of the
-// project's undo: the program does not change, only lines of the text, so the step holds those
-// lines before and after and replaces them in the list's editor.
+// A fix of the instruction list as typed (a fuzzy form rewritten) as a step of the project's
+// undo: the step holds the lines before and after and replaces them in the list's editor; the
+// program follows the text in place (applied), so that the fix stays one step.
 
 #include <QPointer>
 #include <QStringList>

@@ -402,9 +402,12 @@ void MainWindow::applyFix(const model::Diagnostic &d) {
                                  d.fix->rungs, d.fix->label);
         return;
     }
-    // A listing fix rewrites the lines of the text as typed, the rest of it untouched. The
-    // program is the same (a fuzzy form and its canonical rewrite draw one ladder); the step
-    // is still one of the project's undo (Edit > Undo) and of the list's own (Ctrl+Z there).
+    // A listing fix rewrites the lines of the text as typed, the rest of it untouched, as one
+    // step of the project's undo (Edit > Undo) and of the list's own (Ctrl+Z there). FZ001/FZ002
+    // keep the program, FZ004-FZ006 reorder it: the step's redo and undo bring the program along
+    // with the text in place, so that no second step ("Edit instruction list") is pushed.
+    if (m_ilTimer.isActive())
+        applyListing(); // what was typed before the fix is a step of its own
     const int first = d.fix->firstLine - 1;
     const int last = d.fix->lastLine - 1;
     if (first < 0 || last >= m_il->lines() || first > last)
@@ -415,8 +418,18 @@ void MainWindow::applyFix(const model::Diagnostic &d) {
     QStringList after = d.fix->listing.split(QLatin1Char('\n'));
     if (after.size() > 1 && after.back().isEmpty())
         after.removeLast();
-    m_document->undoStack()->push(new editor::ListingLinesCommand(
-        m_il, first, before, after, [this] { applyListing(); }, d.fix->label));
+    const auto follow = [this] {
+        m_ilTimer.stop(); // the replaced lines count as typed; they are applied here
+        std::vector<model::Diagnostic> errors;
+        m_editingListing = true;
+        if (m_document->setListing(m_il->text(), &errors, editor::Document::ListingStep::InPlace))
+            m_ladder->setNotice(QString());
+        m_listingErrors = errors;
+        refreshFromDocument();
+        m_editingListing = false;
+    };
+    m_document->undoStack()->push(
+        new editor::ListingLinesCommand(m_il, first, before, after, follow, d.fix->label));
 }
 
 void MainWindow::closeEvent(QCloseEvent *event) {
