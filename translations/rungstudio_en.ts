@@ -177,7 +177,7 @@ Exit status: 0 no error, 1 the program has errors, 2 usage or I/O error.</source
         <translation type="unfinished"></translation>
     </message>
     <message>
-        <location filename="../app/gui/application.cpp" line="+45"/>
+        <location filename="../app/gui/application.cpp" line="+48"/>
         <source>Rung Studio</source>
         <translation type="unfinished"></translation>
     </message>
@@ -185,7 +185,7 @@ Exit status: 0 no error, 1 the program has errors, 2 usage or I/O error.</source
 <context>
     <name>rung::app::MainWindow</name>
     <message>
-        <location filename="../app/gui/main_window.cpp" line="+137"/>
+        <location filename="../app/gui/main_window.cpp" line="+138"/>
         <source>Problems</source>
         <translation type="unfinished"></translation>
     </message>
@@ -584,7 +584,7 @@ Ladder and instruction-list editor for VPC, Vigor, CPM1 and PL110.</source>
         <translation type="unfinished"></translation>
     </message>
     <message>
-        <location line="+21"/>
+        <location line="+22"/>
         <source>Ladder</source>
         <translation type="unfinished"></translation>
     </message>
@@ -606,7 +606,7 @@ Ladder and instruction-list editor for VPC, Vigor, CPM1 and PL110.</source>
     <message>
         <location line="+1"/>
         <location line="+50"/>
-        <location filename="../app/gui/main_window_files.cpp" line="+476"/>
+        <location filename="../app/gui/main_window_files.cpp" line="+475"/>
         <source>Untitled</source>
         <translation type="unfinished"></translation>
     </message>
@@ -674,7 +674,7 @@ Ladder and instruction-list editor for VPC, Vigor, CPM1 and PL110.</source>
         <translation type="unfinished"></translation>
     </message>
     <message>
-        <location filename="../app/gui/main_window_files.cpp" line="-281"/>
+        <location filename="../app/gui/main_window_files.cpp" line="-280"/>
         <source>Recover</source>
         <translation type="unfinished"></translation>
     </message>
@@ -694,20 +694,20 @@ Ladder and instruction-list editor for VPC, Vigor, CPM1 and PL110.</source>
         <translation type="unfinished"></translation>
     </message>
     <message>
-        <location line="+25"/>
+        <location line="+24"/>
         <source>Unknown target %1</source>
         <translation type="unfinished"></translation>
     </message>
     <message>
-        <location line="-9"/>
-        <location line="+137"/>
+        <location line="-8"/>
+        <location line="+136"/>
         <location filename="../app/gui/main_window_tools.cpp" line="+12"/>
         <location line="+9"/>
         <source>%1: %2</source>
         <translation type="unfinished"></translation>
     </message>
     <message>
-        <location line="-135"/>
+        <location line="-134"/>
         <source>%1 is larger than 64 MB</source>
         <translation type="unfinished"></translation>
     </message>
@@ -717,7 +717,7 @@ Ladder and instruction-list editor for VPC, Vigor, CPM1 and PL110.</source>
         <translation type="unfinished"></translation>
     </message>
     <message>
-        <location filename="../app/gui/main_window_files.cpp" line="+17"/>
+        <location filename="../app/gui/main_window_files.cpp" line="+16"/>
         <source>%1 has errors; the ladder follows once they are fixed</source>
         <translation type="unfinished"></translation>
     </message>
@@ -1041,7 +1041,7 @@ Ladder and instruction-list editor for VPC, Vigor, CPM1 and PL110.</source>
         </translation>
     </message>
     <message>
-        <location line="+62"/>
+        <location line="+68"/>
         <source>Edit instruction list</source>
         <translation type="unfinished"></translation>
     </message>
@@ -2133,7 +2133,12 @@ Ladder and instruction-list editor for VPC, Vigor, CPM1 and PL110.</source>
         <translation type="unfinished"></translation>
     </message>
     <message>
-        <location line="+19"/>
+        <location line="+10"/>
+        <source>%1: the file is larger than %2 MB, the most a project can be</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <location line="+18"/>
         <source>%1: cannot write the file (%2)</source>
         <translation type="unfinished"></translation>
     </message>

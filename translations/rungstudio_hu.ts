@@ -182,7 +182,7 @@ Kilépési kód: 0 nincs hiba, 1 a programban hiba van, 2 használati vagy I/O h
         <translation>Ismeretlen célrendszer: %1; használható: vpc, vigor, cpm1 vagy pl110</translation>
     </message>
     <message>
-        <location filename="../app/gui/application.cpp" line="+45"/>
+        <location filename="../app/gui/application.cpp" line="+48"/>
         <source>Rung Studio</source>
         <translation>Rung Studio</translation>
     </message>
@@ -190,7 +190,7 @@ Kilépési kód: 0 nincs hiba, 1 a programban hiba van, 2 használati vagy I/O h
 <context>
     <name>rung::app::MainWindow</name>
     <message>
-        <location filename="../app/gui/main_window.cpp" line="+137"/>
+        <location filename="../app/gui/main_window.cpp" line="+138"/>
         <source>Problems</source>
         <translation>Problémák</translation>
     </message>
@@ -597,7 +597,7 @@ Létradiagram- és utasításlista-szerkesztő VPC, Vigor, CPM1 és PL110 PLC-kh
         <translation>Megjegyzés a(z) %1. létrafok fölött:</translation>
     </message>
     <message>
-        <location line="+21"/>
+        <location line="+22"/>
         <source>Ladder</source>
         <translation>Létradiagram</translation>
     </message>
@@ -619,7 +619,7 @@ Létradiagram- és utasításlista-szerkesztő VPC, Vigor, CPM1 és PL110 PLC-kh
     <message>
         <location line="+1"/>
         <location line="+50"/>
-        <location filename="../app/gui/main_window_files.cpp" line="+476"/>
+        <location filename="../app/gui/main_window_files.cpp" line="+475"/>
         <source>Untitled</source>
         <translation>Névtelen</translation>
     </message>
@@ -685,7 +685,7 @@ Létradiagram- és utasításlista-szerkesztő VPC, Vigor, CPM1 és PL110 PLC-kh
         <translation>&amp;Visszavonás: %1</translation>
     </message>
     <message>
-        <location filename="../app/gui/main_window_files.cpp" line="-281"/>
+        <location filename="../app/gui/main_window_files.cpp" line="-280"/>
         <source>Recover</source>
         <translation>Helyreállítás</translation>
     </message>
@@ -705,20 +705,20 @@ Létradiagram- és utasításlista-szerkesztő VPC, Vigor, CPM1 és PL110 PLC-kh
         <translation>A fájl nem nyitható meg</translation>
     </message>
     <message>
-        <location line="+25"/>
+        <location line="+24"/>
         <source>Unknown target %1</source>
         <translation>Ismeretlen célrendszer: %1</translation>
     </message>
     <message>
-        <location line="-9"/>
-        <location line="+137"/>
+        <location line="-8"/>
+        <location line="+136"/>
         <location filename="../app/gui/main_window_tools.cpp" line="+12"/>
         <location line="+9"/>
         <source>%1: %2</source>
         <translation>%1: %2</translation>
     </message>
     <message>
-        <location line="-135"/>
+        <location line="-134"/>
         <source>%1 is larger than 64 MB</source>
         <translation>%1 nagyobb 64 MB-nál</translation>
     </message>
@@ -728,7 +728,7 @@ Létradiagram- és utasításlista-szerkesztő VPC, Vigor, CPM1 és PL110 PLC-kh
         <translation>%1, %2. sor: %3</translation>
     </message>
     <message>
-        <location filename="../app/gui/main_window_files.cpp" line="+17"/>
+        <location filename="../app/gui/main_window_files.cpp" line="+16"/>
         <source>%1 has errors; the ladder follows once they are fixed</source>
         <translation>%1 hibás; a létradiagram a hibák javítása után követi</translation>
     </message>
@@ -1049,7 +1049,7 @@ Létradiagram- és utasításlista-szerkesztő VPC, Vigor, CPM1 és PL110 PLC-kh
         </translation>
     </message>
     <message>
-        <location line="+62"/>
+        <location line="+68"/>
         <source>Edit instruction list</source>
         <translation>Utasításlista szerkesztése</translation>
     </message>
@@ -2134,7 +2134,12 @@ Létradiagram- és utasításlista-szerkesztő VPC, Vigor, CPM1 és PL110 PLC-kh
         <translation>%1: a fájl %2 MB; egy projekt legfeljebb %3 MB lehet</translation>
     </message>
     <message>
-        <location line="+19"/>
+        <location line="+10"/>
+        <source>%1: the file is larger than %2 MB, the most a project can be</source>
+        <translation>%1: a fájl nagyobb %2 MB-nál, ekkora projekt nem lehet</translation>
+    </message>
+    <message>
+        <location line="+18"/>
         <source>%1: cannot write the file (%2)</source>
         <translation>%1: a fájl nem írható (%2)</translation>
     </message>

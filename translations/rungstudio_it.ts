@@ -182,7 +182,7 @@ Codice di uscita: 0 nessun errore, 1 il programma contiene errori, 2 errore di u
         <translation>Famiglia PLC sconosciuta: %1; usare vpc, vigor, cpm1 o pl110</translation>
     </message>
     <message>
-        <location filename="../app/gui/application.cpp" line="+45"/>
+        <location filename="../app/gui/application.cpp" line="+48"/>
         <source>Rung Studio</source>
         <translation>Rung Studio</translation>
     </message>
@@ -190,7 +190,7 @@ Codice di uscita: 0 nessun errore, 1 il programma contiene errori, 2 errore di u
 <context>
     <name>rung::app::MainWindow</name>
     <message>
-        <location filename="../app/gui/main_window.cpp" line="+137"/>
+        <location filename="../app/gui/main_window.cpp" line="+138"/>
         <source>Problems</source>
         <translation>Problemi</translation>
     </message>
@@ -597,7 +597,7 @@ Editor di schemi ladder e liste istruzioni per VPC, Vigor, CPM1 e PL110.</transl
         <translation>Commento sopra il segmento %1:</translation>
     </message>
     <message>
-        <location line="+21"/>
+        <location line="+22"/>
         <source>Ladder</source>
         <translation>Ladder</translation>
     </message>
@@ -619,7 +619,7 @@ Editor di schemi ladder e liste istruzioni per VPC, Vigor, CPM1 e PL110.</transl
     <message>
         <location line="+1"/>
         <location line="+50"/>
-        <location filename="../app/gui/main_window_files.cpp" line="+476"/>
+        <location filename="../app/gui/main_window_files.cpp" line="+475"/>
         <source>Untitled</source>
         <translation>Senza titolo</translation>
     </message>
@@ -687,7 +687,7 @@ Editor di schemi ladder e liste istruzioni per VPC, Vigor, CPM1 e PL110.</transl
         <translation>&amp;Annulla %1</translation>
     </message>
     <message>
-        <location filename="../app/gui/main_window_files.cpp" line="-281"/>
+        <location filename="../app/gui/main_window_files.cpp" line="-280"/>
         <source>Recover</source>
         <translation>Ripristino</translation>
     </message>
@@ -707,20 +707,20 @@ Editor di schemi ladder e liste istruzioni per VPC, Vigor, CPM1 e PL110.</transl
         <translation>Impossibile aprire il file</translation>
     </message>
     <message>
-        <location line="+25"/>
+        <location line="+24"/>
         <source>Unknown target %1</source>
         <translation>Famiglia PLC sconosciuta: %1</translation>
     </message>
     <message>
-        <location line="-9"/>
-        <location line="+137"/>
+        <location line="-8"/>
+        <location line="+136"/>
         <location filename="../app/gui/main_window_tools.cpp" line="+12"/>
         <location line="+9"/>
         <source>%1: %2</source>
         <translation>%1: %2</translation>
     </message>
     <message>
-        <location line="-135"/>
+        <location line="-134"/>
         <source>%1 is larger than 64 MB</source>
         <translation>%1 supera i 64 MB</translation>
     </message>
@@ -730,7 +730,7 @@ Editor di schemi ladder e liste istruzioni per VPC, Vigor, CPM1 e PL110.</transl
         <translation>%1, riga %2: %3</translation>
     </message>
     <message>
-        <location filename="../app/gui/main_window_files.cpp" line="+17"/>
+        <location filename="../app/gui/main_window_files.cpp" line="+16"/>
         <source>%1 has errors; the ladder follows once they are fixed</source>
         <translation>%1 contiene errori; lo schema ladder si aggiorna quando sono corretti</translation>
     </message>
@@ -1054,7 +1054,7 @@ Editor di schemi ladder e liste istruzioni per VPC, Vigor, CPM1 e PL110.</transl
         </translation>
     </message>
     <message>
-        <location line="+62"/>
+        <location line="+68"/>
         <source>Edit instruction list</source>
         <translation>Modifica lista istruzioni</translation>
     </message>
@@ -2146,7 +2146,12 @@ Editor di schemi ladder e liste istruzioni per VPC, Vigor, CPM1 e PL110.</transl
         <translation>%1: il file è di %2 MB; un progetto è al massimo di %3 MB</translation>
     </message>
     <message>
-        <location line="+19"/>
+        <location line="+10"/>
+        <source>%1: the file is larger than %2 MB, the most a project can be</source>
+        <translation>%1: il file supera %2 MB, il massimo per un progetto</translation>
+    </message>
+    <message>
+        <location line="+18"/>
         <source>%1: cannot write the file (%2)</source>
         <translation>%1: impossibile scrivere il file (%2)</translation>
     </message>

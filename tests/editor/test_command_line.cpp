@@ -52,10 +52,17 @@ TEST(CommandLine, AnInstructionListOpensForTheTargetGiven) {
     EXPECT_EQ(window.document()->target().id, QStringLiteral("cpm1"));
     EXPECT_EQ(window.document()->listingText(), QStringLiteral("LD 000.01\nOUT 010.00\nEND(01)\n"));
     EXPECT_TRUE(window.document()->path().isEmpty()); // saving asks where: it is no project
-    // Without the target the default (Vigor) cannot read CPM1 addresses: the text opens as
-    // written, with the errors marked, and the ladder waits for a valid program.
+    // Without a target the listing opens for the family whose syntax reads it (only the
+    // CPM1 writes 000.01).
+    app::MainWindow guessed;
+    ASSERT_TRUE(guessed.openFile(path, QString(), true));
+    EXPECT_EQ(guessed.document()->target().id, QStringLiteral("cpm1"));
+    EXPECT_EQ(guessed.document()->listingText(),
+              QStringLiteral("LD 000.01\nOUT 010.00\nEND(01)\n"));
+    // A target given that cannot read CPM1 addresses wins: the text opens as written, with
+    // the errors marked, and the ladder waits for a valid program.
     app::MainWindow other;
-    ASSERT_TRUE(other.openFile(path, QString(), true));
+    ASSERT_TRUE(other.openFile(path, QStringLiteral("vigor"), true));
     EXPECT_EQ(other.document()->target().id, QStringLiteral("vigor"));
     EXPECT_EQ(other.ilEditor()->text(), QStringLiteral("LD 000.01\nOUT 010.00\nEND(01)\n"));
     EXPECT_EQ(other.document()->listingText(), QStringLiteral("END\n"));
