@@ -40,6 +40,9 @@ LadderPainter::LadderPainter(const model::Project &project, const LadderMetrics 
     m_font.setPixelSize(static_cast<int>(metrics.rowHeight * 0.24));
     m_small = m_font;
     m_small.setPixelSize(static_cast<int>(metrics.rowHeight * 0.2));
+    m_mark = m_font;
+    m_mark.setBold(true);
+    m_mark.setPixelSize(std::max(1, static_cast<int>(metrics.rowHeight * 0.26)));
 }
 
 double LadderPainter::snap(double v, double width) {
@@ -217,7 +220,7 @@ void LadderPainter::paintOutput(QPainter &p, const QRectF &area,
             mark = QStringLiteral("F");
         else if (ins.spec && ins.spec->negated)
             mark = QStringLiteral("/");
-        p.setFont(m_small);
+        p.setFont(m_mark);
         p.drawText(QRectF(cx - r, y - r, 2 * r, 2 * r), Qt::AlignCenter, mark);
         p.setFont(m_font);
         p.drawText(QRectF(area.left(), area.top() + 1, area.width() * 0.8, y - r - area.top() - 1),

@@ -92,6 +92,7 @@ private:
     LadderMetrics m_m;
     QFont m_font;
     QFont m_small;
+    QFont m_mark; // the letter inside a coil (S, R, P, F, /): bold, to read at a glance
     bool m_namesFirst = false;
     double m_pen = 2; // wire width: 1.6 at 100 %, rounded to whole pixels
 };

@@ -10,6 +10,7 @@
 #include <QImage>
 #include <QLocale>
 #include <QProcess>
+#include <QRegularExpression>
 #include <QSignalSpy>
 #include <QTemporaryDir>
 #include <QUndoStack>
@@ -157,4 +158,24 @@ TEST_F(ExportFixture, CompareContactsShowBothOperands) {
     EXPECT_TRUE(svg.contains(">D100<")) << svg.toStdString();
     EXPECT_TRUE(svg.contains("&gt;= K1000<")) << svg.toStdString();
     EXPECT_EQ(window.ladderView()->elementHelp({0, 0, 1}), QStringLiteral("D100 >= K1000"));
+}
+
+// The letter inside a coil tells SET from RST and PLS from PLF at a glance: it is drawn bold,
+// not in the small font of the comments.
+TEST_F(ExportFixture, CoilLettersAreBold) {
+    std::vector<model::Diagnostic> errors;
+    ASSERT_TRUE(window.document()->setListing(
+        QStringLiteral("LD X0\nSET Y0\nLD X1\nRST Y0\nLD X2\nPLS M0\nLD X3\nPLF M1\nEND\n"),
+        &errors));
+    QString error;
+    ASSERT_TRUE(window.exportLadder(dir.filePath(QStringLiteral("coils.svg")), &error))
+        << error.toStdString();
+    const QString svg = QString::fromUtf8(read(QStringLiteral("coils.svg")));
+    for (const char *mark : {"S", "R", "P", "F"}) {
+        // QSvgGenerator writes each text into a group that carries its font.
+        const QRegularExpression bold(
+            QStringLiteral("<g [^>]*font-weight=\"(700|bold)\"[^>]*>\\s*<text[^>]*>%1</text>")
+                .arg(QLatin1String(mark)));
+        EXPECT_TRUE(bold.match(svg).hasMatch()) << mark;
+    }
 }
