@@ -48,7 +48,6 @@ public:
     void setForms(bool on) { m_withForms = on; }
 
     std::vector<Finding> run() {
-        m_ladder = listToLadder(m_list);
         spans();
         blocksAndStack();
         if (m_formOnly) {
@@ -61,6 +60,8 @@ public:
         operands();
         duplicates();
         length();
+        // Drawn only here: a form-only check (betterForm) needs no drawing of the whole list.
+        m_ladder = listToLadder(m_list);
         structure();
         return std::move(m_found);
     }
@@ -117,6 +118,10 @@ private:
         int first = 0;
         int last = 0;
         RungForm form;
+        // Several findings of one rung offer the same rewrite: printed once.
+        std::optional<QString> printed;
+        // How often each fuzzy form occurs in the rung as written (betterForm), by code.
+        std::map<QString, qsizetype> formCounts;
     };
 
     const SpanForm &rungForm(int index) {
@@ -137,37 +142,44 @@ private:
         return form.known && !form.canonical;
     }
 
-    // A fix replacing the lines of the rung [first, last) with these instructions.
-    void offer(Finding &f, int first, int last, const std::vector<Instruction> &instructions,
-               const QString &label) {
-        const int line = at(first).line;
-        if (line <= 0 || instructions.empty())
-            return;
+    QString printed(const std::vector<Instruction> &instructions) const {
         InstructionList part;
         part.target = m_list.target;
         part.instructions = instructions;
+        PrintOptions o;
+        o.comments = false;
+        return printInstructionList(part, o);
+    }
+
+    // A fix replacing the lines of the rung [first, last) with this listing text.
+    void offer(Finding &f, int first, int last, const QString &listing, const QString &label) {
+        const int line = at(first).line;
+        if (line <= 0 || listing.isEmpty())
+            return;
         Fix fix;
         fix.label = label;
         fix.firstLine = line;
         fix.lastLine = at(last - 1).line;
-        PrintOptions o;
-        o.comments = false;
-        fix.listing = printInstructionList(part, o);
-        f.diagnostic.fix = fix;
+        fix.listing = listing;
+        f.diagnostic.fix = std::move(fix);
     }
 
     void offerCanonical(Finding &f, int index) {
-        const SpanForm &span = rungForm(index);
-        if (span.form.known && !span.form.canonical)
-            offer(f, span.first, span.last, span.form.rewrite,
-                  Tr::tr("Rewrite the rung in the canonical form"));
+        const SpanForm &cached = rungForm(index);
+        if (!cached.form.known || cached.form.canonical || cached.form.rewrite.empty())
+            return;
+        SpanForm &span = m_forms.at(cached.first);
+        if (!span.printed)
+            span.printed = printed(span.form.rewrite);
+        offer(f, span.first, span.last, *span.printed,
+              Tr::tr("Rewrite the rung in the canonical form"));
     }
 
     // Whether the rung [first, last) rewritten as `rewrite` has the form `code` less often: in a
     // rung of stacked blocks, moving one single contact may only give the next join the same
     // form, and that is no fix.
     bool betterForm(int first, int last, const std::vector<Instruction> &rewrite,
-                    const char *code) const {
+                    const char *code) {
         if (!m_verifyMoves)
             return true;
         const auto count = [&](std::vector<Instruction> instructions) {
@@ -182,8 +194,14 @@ private:
                 return f.diagnostic.code == QLatin1String(code);
             });
         };
-        return count(rewrite) <
-               count({m_list.instructions.begin() + first, m_list.instructions.begin() + last});
+        SpanForm &span = m_forms.at(rungForm(first).first);
+        const auto known = span.formCounts.find(QLatin1String(code));
+        const qsizetype before =
+            known != span.formCounts.end()
+                ? known->second
+                : span.formCounts[QLatin1String(code)] = count(
+                      {m_list.instructions.begin() + first, m_list.instructions.begin() + last});
+        return count(rewrite) < before;
     }
 
     // Fuzzy forms (ladder-rules.md), block limits, and the branch stack.
@@ -229,8 +247,15 @@ private:
                     break; // the conversion reports the missing block
                 const Block second = blocks.back();
                 const Block first = blocks[blocks.size() - 2];
-                const bool fuzzy = isFuzzy(i);
-                if (blocks.size() > 2 && fuzzy) {
+                // Whether the rung is written in a fuzzy form costs a round trip through the
+                // ladder: asked only where one of the forms below could be reported.
+                const bool stacked = blocks.size() > 2;
+                const bool singleOr = op == Op::OrBlock && second.single;
+                const bool singleFirst = first.single && first.first + 1 == second.first &&
+                                         !stackBetween(m_list, first.first, i);
+                if (!(stacked || singleOr || singleFirst) || !isFuzzy(i)) {
+                    // The nesting the drawing needs, written as the converter writes it.
+                } else if (stacked) {
                     Finding &f = add(
                         op == Op::AndBlock ? "FZ001" : "FZ002", Severity::Warning, i,
                         op == Op::AndBlock
@@ -240,17 +265,14 @@ private:
                                   "Stacked ORB: %n blocks are open; an OR chain needs less stack",
                                   nullptr, static_cast<int>(blocks.size())));
                     offerCanonical(f, i);
-                } else if (blocks.size() > 2 || !fuzzy) {
-                    // The nesting the drawing needs, written as the converter writes it.
-                } else if (op == Op::OrBlock && second.single) {
+                } else if (singleOr) {
                     Finding &f = add("FZ002", Severity::Warning, i,
                                      Tr::tr("A single contact joined with %1 is simpler as %2")
                                          .arg(name(i), m_t.findInstruction(Op::Or)
                                                            ? m_t.findInstruction(Op::Or)->mnemonic
                                                            : QString()));
                     offerCanonical(f, i);
-                } else if (first.single && first.first + 1 == second.first &&
-                           !stackBetween(m_list, first.first, i)) {
+                } else {
                     const bool orBlock = op == Op::OrBlock;
                     Finding &f = add(
                         orBlock ? "FZ005" : "FZ004", Severity::Warning, i,
@@ -268,7 +290,7 @@ private:
                         !betterForm(rungFirst, rungLast, *moved, orBlock ? "FZ005" : "FZ004")) {
                         m_found.pop_back(); // moving it would only make the next join the same
                     } else {
-                        offer(f, rungFirst, rungLast, *moved,
+                        offer(f, rungFirst, rungLast, printed(*moved),
                               orBlock ? Tr::tr("Put the single device below the block and drop "
                                                "the %1")
                                             .arg(name(i))
@@ -302,7 +324,7 @@ private:
                                    "branch and needs no %1")
                                 .arg(name(i)));
                         const auto [rungFirst, rungLast] = spanOf(i);
-                        offer(f, rungFirst, rungLast, *lifted,
+                        offer(f, rungFirst, rungLast, printed(*lifted),
                               Tr::tr("Put the output on top and drop the %1").arg(name(i)));
                     }
                 }

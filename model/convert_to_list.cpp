@@ -361,7 +361,7 @@ ToListingResult ladderToList(const LadderProgram &ladder) {
         const Rung &rung = ladder.rungs[r];
         const int rungIndex = static_cast<int>(r);
         result.rungFirst.push_back(static_cast<int>(result.list.instructions.size()));
-        const auto networks = detail::analyzeRung(rung);
+        auto networks = detail::analyzeRung(rung);
         bool bad = false;
         int boxes = 0;
         int coils = 0;
@@ -405,7 +405,7 @@ ToListingResult ladderToList(const LadderProgram &ladder) {
         std::vector<Instruction> emitted;
         Emitter emitter(target, rungIndex, &emitted, &result.problems);
         emitter.setInInterlock(inInterlock);
-        emitter.emitRung(detail::logicOf(rung, networks, false), inStep);
+        emitter.emitRung(detail::logicOf(rung, std::move(networks), false), inStep);
         if (emitter.failed())
             continue;
         for (const Instruction &ins : emitted) {

@@ -9,14 +9,19 @@ Expr combine(Expr::Kind kind, Expr a, Expr b) {
         return b;
     if (b.empty())
         return a;
+    // Chains grow one element at a time: the left operand's list is reused, not copied.
     Expr out;
     out.kind = kind;
-    for (Expr *e : {&a, &b}) {
-        if (e->kind == kind)
-            for (Expr &item : e->items)
-                out.items.push_back(std::move(item));
-        else
-            out.items.push_back(std::move(*e));
+    if (a.kind == kind)
+        out.items = std::move(a.items);
+    else
+        out.items.push_back(std::move(a));
+    if (b.kind == kind) {
+        out.items.reserve(out.items.size() + b.items.size());
+        for (Expr &item : b.items)
+            out.items.push_back(std::move(item));
+    } else {
+        out.items.push_back(std::move(b));
     }
     return out;
 }
@@ -48,6 +53,14 @@ std::vector<Expr> seriesItems(const Expr &e) {
     if (e.kind == Expr::Kind::Series)
         return e.items;
     return {e};
+}
+
+std::vector<Expr> seriesItems(Expr &&e) {
+    if (e.kind == Expr::Kind::Series)
+        return std::move(e.items);
+    std::vector<Expr> one;
+    one.push_back(std::move(e));
+    return one;
 }
 
 Expr seriesOf(std::vector<Expr> items) {

@@ -34,6 +34,7 @@ bool sameExpr(const Expr &a, const Expr &b, bool byCell);
 
 // The top-level series elements (a non-series expression is a list of one).
 std::vector<Expr> seriesItems(const Expr &e);
+std::vector<Expr> seriesItems(Expr &&e);
 Expr seriesOf(std::vector<Expr> items);
 
 // One rung as a tree of branch points: a condition, then outputs and sub-branches in row

@@ -5,6 +5,7 @@
 #include <limits>
 #include <map>
 #include <numeric>
+#include <type_traits>
 
 namespace rung::model::detail {
 
@@ -239,7 +240,8 @@ void collectPaths(const std::vector<const Edge *> &edges, int at, int sink, std:
     visiting.pop_back();
 }
 
-InputNetwork analyze(const Graph &g, int row) {
+// `consume`: the graph's last use, so the relevant edges are moved out of it, not copied.
+InputNetwork analyze(const Rung &rung, Graph &g, int row, bool consume) {
     InputNetwork net;
     net.row = row;
     const int sink = g.outputNode[static_cast<std::size_t>(row)];
@@ -271,20 +273,25 @@ InputNetwork analyze(const Graph &g, int row) {
             }
     }
     std::vector<Edge> relevant;
-    for (const Edge &e : g.edges)
+    for (Edge &e : g.edges)
         if (e.from != e.to && forward[static_cast<std::size_t>(e.from)] &&
             backward[static_cast<std::size_t>(e.to)]) {
-            relevant.push_back(e);
             net.cells.push_back(e.expr.cell);
+            relevant.push_back(consume ? std::move(e) : e);
         }
     net.connected = forward[static_cast<std::size_t>(sink)] != 0;
     if (!net.connected)
         return net;
-    std::vector<const Edge *> pointers;
-    for (const Edge &e : relevant)
-        pointers.push_back(&e);
-    net.seriesParallel = reduce(relevant, g.rail, sink, &net.expr);
+    net.seriesParallel = reduce(std::move(relevant), g.rail, sink, &net.expr);
     if (!net.seriesParallel) {
+        // Not series-parallel (a bridge): rare, so the edges are looked up again here rather
+        // than copied for every network.
+        const Graph fresh = consume ? buildGraph(rung) : Graph{};
+        std::vector<const Edge *> pointers;
+        for (const Edge &e : consume ? fresh.edges : g.edges)
+            if (e.from != e.to && forward[static_cast<std::size_t>(e.from)] &&
+                backward[static_cast<std::size_t>(e.to)])
+                pointers.push_back(&e);
         std::vector<Expr> path;
         std::vector<std::vector<Expr>> paths;
         std::vector<int> visiting;
@@ -340,21 +347,28 @@ void insert(Branch &node, const std::vector<Expr> &list, std::size_t pos,
 } // namespace
 
 std::vector<InputNetwork> analyzeRung(const Rung &rung) {
-    const Graph g = buildGraph(rung);
+    Graph g = buildGraph(rung);
+    std::vector<int> inputs;
+    for (int r = 0; r < rung.rows; ++r)
+        if (rung.outputs[static_cast<std::size_t>(r)])
+            for (int input : rung.boxInputRows(r))
+                inputs.push_back(input);
     std::vector<InputNetwork> result;
-    for (int r = 0; r < rung.rows; ++r) {
-        const auto &out = rung.outputs[static_cast<std::size_t>(r)];
-        if (!out)
-            continue;
-        for (int input : rung.boxInputRows(r))
-            result.push_back(analyze(g, input));
-    }
+    result.reserve(inputs.size());
+    for (std::size_t k = 0; k < inputs.size(); ++k)
+        result.push_back(analyze(rung, g, inputs[k], k + 1 == inputs.size()));
     return result;
 }
 
-RungLogic logicOf(const Rung &rung, const std::vector<InputNetwork> &networks, bool useFixes) {
+namespace {
+
+// Networks is a const vector when the caller keeps it, a mutable one whose expressions may be
+// moved when it does not.
+template <typename Networks>
+RungLogic logicOfNetworks(const Rung &rung, Networks &networks, bool useFixes) {
+    constexpr bool take = !std::is_const_v<Networks>;
     RungLogic logic;
-    auto exprOf = [useFixes](const InputNetwork &n) {
+    auto exprOf = [useFixes](auto &n) -> auto & {
         return (!n.seriesParallel && useFixes) ? n.paths : n.expr;
     };
     std::size_t next = 0;
@@ -365,16 +379,37 @@ RungLogic logicOf(const Rung &rung, const std::vector<InputNetwork> &networks, b
         const std::vector<int> inputs = rung.boxInputRows(r);
         if (inputs.size() > 1) {
             logic.box = *out;
-            for (std::size_t k = 0; k < inputs.size() && next < networks.size(); ++k)
-                logic.boxInputs.push_back(exprOf(networks[next++]));
+            for (std::size_t k = 0; k < inputs.size() && next < networks.size(); ++k) {
+                if constexpr (take)
+                    logic.boxInputs.push_back(std::move(exprOf(networks[next++])));
+                else
+                    logic.boxInputs.push_back(exprOf(networks[next++]));
+            }
             continue;
         }
         if (next >= networks.size())
             break;
-        const Expr e = exprOf(networks[next++]);
-        insert(logic.root, e.empty() ? std::vector<Expr>{} : seriesItems(e), 0, *out);
+        auto &e = exprOf(networks[next++]);
+        std::vector<Expr> items;
+        if (!e.empty()) {
+            if constexpr (take)
+                items = seriesItems(std::move(e));
+            else
+                items = seriesItems(e);
+        }
+        insert(logic.root, items, 0, *out);
     }
     return logic;
+}
+
+} // namespace
+
+RungLogic logicOf(const Rung &rung, const std::vector<InputNetwork> &networks, bool useFixes) {
+    return logicOfNetworks(rung, networks, useFixes);
+}
+
+RungLogic logicOf(const Rung &rung, std::vector<InputNetwork> &&networks, bool useFixes) {
+    return logicOfNetworks(rung, networks, useFixes);
 }
 
 } // namespace rung::model::detail
