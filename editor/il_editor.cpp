@@ -11,6 +11,7 @@
 #include <QCoreApplication>
 #include <QFontDatabase>
 #include <QRegularExpression>
+#include <QResizeEvent>
 
 namespace rung::editor {
 
@@ -395,17 +396,58 @@ void IlEditor::dropHistory() {
 void IlEditor::showDiagnostics(const std::vector<model::Diagnostic> &diagnostics) {
     markerDeleteAll(kErrorMarker);
     markerDeleteAll(kWarningMarker);
-    clearAnnotations();
-    std::map<int, QStringList> notes;
+    m_notes.clear();
     for (const model::Diagnostic &d : diagnostics) {
         if (!d.location.onListing())
             continue;
         const int line = d.location.line - 1;
         markerAdd(line, d.severity == model::Severity::Error ? kErrorMarker : kWarningMarker);
-        notes[line] << QStringLiteral("%1 [%2]").arg(d.message, d.code);
+        m_notes[line] << QStringLiteral("%1 [%2]").arg(d.message, d.code);
     }
-    for (const auto &[line, list] : notes)
-        annotate(line, list.join(QLatin1Char('\n')), IlLexer::Comment);
+    showNotes();
+}
+
+QString IlEditor::wrapNote(const QString &text, int columns) {
+    columns = std::max(1, columns);
+    QStringList lines;
+    QString current;
+    for (const QString &word : text.split(QLatin1Char(' '), Qt::SkipEmptyParts)) {
+        if (!current.isEmpty() && current.size() + 1 + word.size() > columns) {
+            lines << current;
+            current.clear();
+        }
+        current += (current.isEmpty() ? QString() : QStringLiteral(" ")) + word;
+    }
+    if (!current.isEmpty())
+        lines << current;
+    return lines.join(QLatin1Char('\n'));
+}
+
+int IlEditor::noteColumns() const {
+    const QFontMetrics fm(m_lexer ? m_lexer->font(IlLexer::Comment) : font());
+    // The text area starts after the margins; keep a character's room for the caret.
+    int margins = 0;
+    for (int m = 0; m < this->margins(); ++m)
+        margins += marginWidth(m);
+    const int width = viewport()->width() - margins - fm.averageCharWidth();
+    return std::max(20, width / std::max(1, fm.averageCharWidth()));
+}
+
+void IlEditor::showNotes() {
+    clearAnnotations();
+    m_notesWrappedAt = noteColumns();
+    for (const auto &[line, list] : m_notes) {
+        QStringList wrapped;
+        for (const QString &note : list)
+            wrapped << wrapNote(note, m_notesWrappedAt);
+        annotate(line, wrapped.join(QLatin1Char('\n')), IlLexer::Comment);
+    }
+}
+
+void IlEditor::resizeEvent(QResizeEvent *event) {
+    QsciScintilla::resizeEvent(event);
+    if (!m_notes.empty() && noteColumns() != m_notesWrappedAt)
+        showNotes();
 }
 
 void IlEditor::setStepNumbers(const std::vector<int> &stepOfLine) {

@@ -11,6 +11,7 @@
 #include <Qsci/qsciscintilla.h>
 
 #include <functional>
+#include <map>
 
 namespace rung::editor {
 
@@ -50,7 +51,12 @@ public:
     // Markers in the margin and annotations under the lines of the listing findings.
     void showDiagnostics(const std::vector<model::Diagnostic> &diagnostics);
     void setStepNumbers(const std::vector<int> &stepOfLine); // -1: no step on that line
-    void goToLine(int line);                                 // 1-based
+    // A message broken at spaces into lines of at most `columns` characters (a word longer
+    // than that stands alone): annotations do not wrap by themselves.
+    static QString wrapNote(const QString &text, int columns);
+    // How many characters of the annotations' font fit across the view.
+    int noteColumns() const;
+    void goToLine(int line); // 1-based
     // The text of a line without its line break (0-based, as QScintilla counts).
     QString lineText(int line) const;
     // Replaces lines first.. (0-based) when they still read `expected`, as one step of the
@@ -68,8 +74,12 @@ public:
 signals:
     void listingEdited();
 
+protected:
+    void resizeEvent(QResizeEvent *event) override;
+
 private:
     void updateCallTip();
+    void showNotes();
     void insertDevice(int id, const QString &item);
 
     const model::Target *m_target;
@@ -77,6 +87,8 @@ private:
     bool m_settingText = false;
     QString m_shown; // the text setListing last showed
     std::function<QStringList()> m_devices;
+    std::map<int, QStringList> m_notes; // the diagnostics' messages by line, unwrapped
+    int m_notesWrappedAt = 0;           // the columns they were last wrapped to
 };
 
 } // namespace rung::editor

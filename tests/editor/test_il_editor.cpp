@@ -82,3 +82,49 @@ TEST(IlEditorHelp, ASpaceAfterAMnemonicShowsItsOperandFormAsACallTip) {
     QTest::keyClicks(&editor, QStringLiteral("FOO "));
     EXPECT_FALSE(editor.operandTipShown()); // not a mnemonic of the target
 }
+
+TEST(IlEditorNotes, AMessageIsBrokenAtSpacesIntoLinesThatFit) {
+    const QString message =
+        QStringLiteral("X8: X is numbered in octal; the digits 8 and 9 do not occur [OP001]");
+    const QString wrapped = editor::IlEditor::wrapNote(message, 20);
+    for (const QString &line : wrapped.split(QLatin1Char('\n'))) {
+        EXPECT_LE(line.size(), 20) << line.toStdString();
+        EXPECT_FALSE(line.isEmpty());
+    }
+    EXPECT_EQ(QString(wrapped).replace(QLatin1Char('\n'), QLatin1Char(' ')), message);
+    EXPECT_EQ(editor::IlEditor::wrapNote(message, 200), message);
+    // A word longer than the line stands alone rather than being cut.
+    EXPECT_EQ(editor::IlEditor::wrapNote(QStringLiteral("a 0123456789 b"), 4),
+              QStringLiteral("a\n0123456789\nb"));
+}
+
+// A diagnostic's annotation under its line fits the view: narrowing the view wraps it onto
+// more lines, widening it joins them again; nothing of the message is lost.
+TEST(IlEditorNotes, AnnotationsWrapToTheWidthOfTheView) {
+    editor::IlEditor editor(model::Target::get(model::Family::Vigor));
+    editor.setListing(QStringLiteral("LD X8\nOUT Y0\nEND\n"));
+    editor.resize(900, 300);
+    editor.show();
+    ASSERT_TRUE(QTest::qWaitForWindowExposed(&editor));
+    model::Diagnostic d;
+    d.code = QStringLiteral("OP001");
+    d.location.line = 1;
+    d.location.column = 4;
+    d.message = QStringLiteral("X8: X is numbered in octal, so the digits 8 and 9 never occur in "
+                               "an address of the inputs of this PLC");
+    editor.showDiagnostics({d});
+    const QString full = d.message + QStringLiteral(" [OP001]");
+    const auto lineCount = [&] { return editor.annotation(0).count(QLatin1Char('\n')) + 1; };
+    const auto joined = [&] { return editor.annotation(0).replace(QLatin1Char('\n'), ' '); };
+    EXPECT_EQ(joined(), full);
+    const qsizetype wide = lineCount();
+    editor.resize(260, 300);
+    QCoreApplication::processEvents();
+    EXPECT_GT(lineCount(), wide);
+    EXPECT_EQ(joined(), full);
+    for (const QString &line : editor.annotation(0).split(QLatin1Char('\n')))
+        EXPECT_LE(line.size(), editor.noteColumns()) << line.toStdString();
+    editor.resize(900, 300);
+    QCoreApplication::processEvents();
+    EXPECT_EQ(lineCount(), wide);
+}
