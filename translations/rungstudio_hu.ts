@@ -1057,7 +1057,7 @@ Létradiagram- és utasításlista-szerkesztő VPC, Vigor, CPM1 és PL110 PLC-kh
 <context>
     <name>rung::editor::IlEditor</name>
     <message>
-        <location filename="../editor/il_editor.cpp" line="+231"/>
+        <location filename="../editor/il_editor.cpp" line="+232"/>
         <source>Instruction list</source>
         <translation>Utasításlista</translation>
     </message>
@@ -1486,17 +1486,17 @@ Létradiagram- és utasításlista-szerkesztő VPC, Vigor, CPM1 és PL110 PLC-kh
         <translation>Ez az érintkező nincs rajta egyetlen áramúton sem a bal oldali gyűjtősíntől egy kimenetig</translation>
     </message>
     <message>
-        <location filename="../model/checks_list.cpp" line="+163"/>
+        <location filename="../model/checks_list.cpp" line="+175"/>
         <source>Rewrite the rung in the canonical form</source>
         <translation>A létrafok átírása kanonikus formára</translation>
     </message>
     <message>
-        <location line="+44"/>
+        <location line="+50"/>
         <source>More than %1 %2 in a row: the PLC rejects the program</source>
         <translation>Több mint %1 %2 egymás után: a PLC elutasítja a programot</translation>
     </message>
     <message>
-        <location line="+30"/>
+        <location line="+37"/>
         <source>Stacked ANB: combine each block with ANB as soon as it is complete</source>
         <translation>Halmozott ANB: minden blokkot kapcsoljon ANB-vel, amint elkészült</translation>
     </message>
@@ -1508,12 +1508,12 @@ Létradiagram- és utasításlista-szerkesztő VPC, Vigor, CPM1 és PL110 PLC-kh
         </translation>
     </message>
     <message>
-        <location line="+8"/>
+        <location line="+6"/>
         <source>A single contact joined with %1 is simpler as %2</source>
         <translation>Egyetlen érintkező %1 kapcsolással egyszerűbb %2 formában</translation>
     </message>
     <message>
-        <location line="+11"/>
+        <location line="+10"/>
         <source>A single device in parallel with a block belongs on the lower row: the block first, then an OR, drops the %1</source>
         <translation>Egy blokkal párhuzamos egyetlen operandus az alsó sorba való: előbb a blokk, majd egy OR, így elmarad a(z) %1</translation>
     </message>

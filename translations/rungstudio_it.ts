@@ -1062,7 +1062,7 @@ Editor di schemi ladder e liste istruzioni per VPC, Vigor, CPM1 e PL110.</transl
 <context>
     <name>rung::editor::IlEditor</name>
     <message>
-        <location filename="../editor/il_editor.cpp" line="+231"/>
+        <location filename="../editor/il_editor.cpp" line="+232"/>
         <source>Instruction list</source>
         <translation>Lista istruzioni</translation>
     </message>
@@ -1491,17 +1491,17 @@ Editor di schemi ladder e liste istruzioni per VPC, Vigor, CPM1 e PL110.</transl
         <translation>Questo contatto non si trova su alcun percorso dalla barra sinistra a un&apos;uscita</translation>
     </message>
     <message>
-        <location filename="../model/checks_list.cpp" line="+163"/>
+        <location filename="../model/checks_list.cpp" line="+175"/>
         <source>Rewrite the rung in the canonical form</source>
         <translation>Riscrivi il segmento nella forma canonica</translation>
     </message>
     <message>
-        <location line="+44"/>
+        <location line="+50"/>
         <source>More than %1 %2 in a row: the PLC rejects the program</source>
         <translation>Più di %1 %2 consecutivi: il PLC rifiuta il programma</translation>
     </message>
     <message>
-        <location line="+30"/>
+        <location line="+37"/>
         <source>Stacked ANB: combine each block with ANB as soon as it is complete</source>
         <translation>ANB impilati: combinare ogni blocco con ANB appena è completo</translation>
     </message>
@@ -1514,12 +1514,12 @@ Editor di schemi ladder e liste istruzioni per VPC, Vigor, CPM1 e PL110.</transl
         </translation>
     </message>
     <message>
-        <location line="+8"/>
+        <location line="+6"/>
         <source>A single contact joined with %1 is simpler as %2</source>
         <translation>Un singolo contatto unito con %1 è più semplice come %2</translation>
     </message>
     <message>
-        <location line="+11"/>
+        <location line="+10"/>
         <source>A single device in parallel with a block belongs on the lower row: the block first, then an OR, drops the %1</source>
         <translation>Un singolo operando in parallelo a un blocco va sulla riga inferiore: prima il blocco, poi un OR, senza %1</translation>
     </message>

@@ -238,3 +238,28 @@ TEST(Translations, EnglishSaysOneRungAndTwoRungs) {
     EXPECT_EQ(QCoreApplication::translate("rung::editor::Document", "Delete %n rungs", nullptr, 2),
               QStringLiteral("Delete 2 rungs"));
 }
+
+// The source texts are English: the English catalogue holds exactly the plural texts, each
+// with its singular and plural form, and none is missing beside the other catalogues.
+TEST(Translations, TheEnglishCatalogueHoldsEveryPluralTextAndNothingElse) {
+    const auto english =
+        readCatalogue(QStringLiteral(RUNG_SOURCE_DIR "/translations/rungstudio_en.ts"));
+    std::set<std::pair<QString, QString>> plurals;
+    for (const auto &m : english) {
+        const std::string where = (m.context + QLatin1String(": ") + m.source).toStdString();
+        EXPECT_TRUE(m.numerus) << "not a plural text: " << where;
+        EXPECT_TRUE(m.finished) << "unfinished: " << where;
+        ASSERT_EQ(m.forms.size(), 2) << where;
+        for (const QString &form : m.forms) // "1 MPS", "2 MPS": the forms may be alike
+            EXPECT_EQ(placeholders(form, true), placeholders(m.source, true)) << where;
+        EXPECT_TRUE(m.forms[1].contains(QLatin1String("%n"))) << where;
+        plurals.emplace(m.context, m.source);
+    }
+    std::set<std::pair<QString, QString>> expected;
+    for (const auto &m :
+         readCatalogue(QStringLiteral(RUNG_SOURCE_DIR "/translations/rungstudio_hu.ts")))
+        if (m.numerus)
+            expected.emplace(m.context, m.source);
+    EXPECT_FALSE(expected.empty());
+    EXPECT_EQ(plurals, expected);
+}
