@@ -124,7 +124,7 @@ private:
         std::map<QString, qsizetype> formCounts;
     };
 
-    const SpanForm &rungForm(int index) {
+    SpanForm &rungForm(int index) {
         const auto span = spanOf(index);
         auto it = m_forms.find(span.first);
         if (it == m_forms.end())
@@ -165,10 +165,9 @@ private:
     }
 
     void offerCanonical(Finding &f, int index) {
-        const SpanForm &cached = rungForm(index);
-        if (!cached.form.known || cached.form.canonical || cached.form.rewrite.empty())
+        SpanForm &span = rungForm(index);
+        if (!span.form.known || span.form.canonical || span.form.rewrite.empty())
             return;
-        SpanForm &span = m_forms.at(cached.first);
         if (!span.printed)
             span.printed = printed(span.form.rewrite);
         offer(f, span.first, span.last, *span.printed,
@@ -194,14 +193,12 @@ private:
                 return f.diagnostic.code == QLatin1String(code);
             });
         };
-        SpanForm &span = m_forms.at(rungForm(first).first);
-        const auto known = span.formCounts.find(QLatin1String(code));
-        const qsizetype before =
-            known != span.formCounts.end()
-                ? known->second
-                : span.formCounts[QLatin1String(code)] = count(
-                      {m_list.instructions.begin() + first, m_list.instructions.begin() + last});
-        return count(rewrite) < before;
+        SpanForm &span = rungForm(first);
+        auto [before, fresh] = span.formCounts.try_emplace(QString::fromLatin1(code), 0);
+        if (fresh)
+            before->second =
+                count({m_list.instructions.begin() + first, m_list.instructions.begin() + last});
+        return count(rewrite) < before->second;
     }
 
     // Fuzzy forms (ladder-rules.md), block limits, and the branch stack.

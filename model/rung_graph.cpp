@@ -5,7 +5,6 @@
 #include <limits>
 #include <map>
 #include <numeric>
-#include <type_traits>
 
 namespace rung::model::detail {
 
@@ -360,16 +359,11 @@ std::vector<InputNetwork> analyzeRung(const Rung &rung) {
     return result;
 }
 
-namespace {
-
-// Networks is a const vector when the caller keeps it, a mutable one whose expressions may be
-// moved when it does not.
-template <typename Networks>
-RungLogic logicOfNetworks(const Rung &rung, Networks &networks, bool useFixes) {
-    constexpr bool take = !std::is_const_v<Networks>;
+RungLogic logicOf(const Rung &rung, std::vector<InputNetwork> networks, bool useFixes) {
     RungLogic logic;
-    auto exprOf = [useFixes](auto &n) -> auto & {
-        return (!n.seriesParallel && useFixes) ? n.paths : n.expr;
+    // The networks are the caller's copy: their expressions move into the branch tree.
+    auto take = [useFixes](InputNetwork &n) {
+        return std::move((!n.seriesParallel && useFixes) ? n.paths : n.expr);
     };
     std::size_t next = 0;
     for (int r = 0; r < rung.rows; ++r) {
@@ -379,37 +373,16 @@ RungLogic logicOfNetworks(const Rung &rung, Networks &networks, bool useFixes) {
         const std::vector<int> inputs = rung.boxInputRows(r);
         if (inputs.size() > 1) {
             logic.box = *out;
-            for (std::size_t k = 0; k < inputs.size() && next < networks.size(); ++k) {
-                if constexpr (take)
-                    logic.boxInputs.push_back(std::move(exprOf(networks[next++])));
-                else
-                    logic.boxInputs.push_back(exprOf(networks[next++]));
-            }
+            for (std::size_t k = 0; k < inputs.size() && next < networks.size(); ++k)
+                logic.boxInputs.push_back(take(networks[next++]));
             continue;
         }
         if (next >= networks.size())
             break;
-        auto &e = exprOf(networks[next++]);
-        std::vector<Expr> items;
-        if (!e.empty()) {
-            if constexpr (take)
-                items = seriesItems(std::move(e));
-            else
-                items = seriesItems(e);
-        }
-        insert(logic.root, items, 0, *out);
+        Expr e = take(networks[next++]);
+        insert(logic.root, e.empty() ? std::vector<Expr>{} : seriesItems(std::move(e)), 0, *out);
     }
     return logic;
-}
-
-} // namespace
-
-RungLogic logicOf(const Rung &rung, const std::vector<InputNetwork> &networks, bool useFixes) {
-    return logicOfNetworks(rung, networks, useFixes);
-}
-
-RungLogic logicOf(const Rung &rung, std::vector<InputNetwork> &&networks, bool useFixes) {
-    return logicOfNetworks(rung, networks, useFixes);
 }
 
 } // namespace rung::model::detail
@@ -424,6 +397,7 @@ std::vector<ReverseCurrentFinding> findReverseCurrent(const Rung &rung) {
         any = any || (n.connected && !n.seriesParallel);
     if (!any)
         return findings;
+    // logicOf takes a copy: the networks' rows and cells are read below.
     Rung corrected = detail::layoutRung(detail::logicOf(rung, networks, true));
     corrected.comment = rung.comment;
     for (const auto &n : networks) {

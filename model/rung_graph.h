@@ -23,8 +23,8 @@ std::vector<InputNetwork> analyzeRung(const Rung &rung);
 
 // The branch tree of a rung's single-input outputs from their networks (row order kept;
 // adjacent outputs that share leading elements of the same cells share a branch point).
-RungLogic logicOf(const Rung &rung, const std::vector<InputNetwork> &networks, bool useFixes);
-// The same, taking the networks' expressions rather than copying them.
-RungLogic logicOf(const Rung &rung, std::vector<InputNetwork> &&networks, bool useFixes);
+// Pass the networks with std::move where they are not needed afterwards: their expressions
+// move into the tree.
+RungLogic logicOf(const Rung &rung, std::vector<InputNetwork> networks, bool useFixes);
 
 } // namespace rung::model::detail
