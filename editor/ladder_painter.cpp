@@ -1,5 +1,7 @@
 #include "ladder_painter.h"
 
+#include "model/ladder_text.h"
+
 #include <QPainterPath>
 
 #include <cmath>
@@ -78,15 +80,7 @@ QRectF LadderPainter::outputRect(const model::Rung &rung, int row) const {
 }
 
 QString LadderPainter::deviceLabel(const model::Operand &o) const {
-    switch (o.kind) {
-    case model::Operand::Kind::Device:
-        return model::formatAddress(*m_project.target, o.address);
-    case model::Operand::Kind::Constant:
-        return model::formatConstant(*m_project.target, o.constant);
-    case model::Operand::Kind::Text:
-        return o.text;
-    }
-    return {};
+    return model::formatOperand(*m_project.target, o);
 }
 
 QString LadderPainter::symbolLabel(const model::Operand &o) const {
@@ -118,9 +112,8 @@ void LadderPainter::paintContact(QPainter &p, const QRectF &cell, const model::C
         p.drawLine(QPointF(cx - half, y + h), QPointF(cx + half, y - h));
         p.setFont(m_small);
         // PL110's P and N are power-flow elements too: the label tells them from NOT.
-        const QString label = c.mode == model::ContactMode::Rising    ? QStringLiteral("P")
-                              : c.mode == model::ContactMode::Falling ? QStringLiteral("N")
-                                                                      : QStringLiteral("INV");
+        const QString edge = model::invertText(c);
+        const QString label = edge.isEmpty() ? QStringLiteral("INV") : edge;
         p.drawText(QRectF(cell.left(), cell.top(), cell.width(), y - h - cell.top()),
                    Qt::AlignCenter, label);
         return;

@@ -7,6 +7,7 @@
 #include "document.h"
 
 #include "model/address.h"
+#include "model/il.h"
 
 #include <QApplication>
 #include <QKeyEvent>
@@ -210,27 +211,18 @@ QString LadderView::elementHelp(const CellCursor &cell) const {
     }
     QStringList lines;
     const model::Target &target = m_document->target();
-    auto operandText = [&target](const model::Operand &o) {
-        switch (o.kind) {
-        case model::Operand::Kind::Device:
-            return model::formatAddress(target, o.address);
-        case model::Operand::Kind::Constant:
-            return model::formatConstant(target, o.constant);
-        case model::Operand::Kind::Text:
-            return o.text;
-        }
-        return QString();
-    };
     // A compare contact's cell is too narrow for the whole comparison: here it is in full.
+    bool compare = false;
     if (cell.column < metrics().gridColumns && cell.column < rung.columns) {
         const model::Contact &c = rung.cell(cell.row, cell.column).contact;
-        if (c.compare != model::CompareOp::None && c.operands.size() >= 2)
+        compare = c.compare != model::CompareOp::None && c.operands.size() >= 2;
+        if (compare)
             lines << QStringLiteral("%1%2 %3 %4")
                          .arg(c.mode == model::ContactMode::Negated ? QStringLiteral("NOT ")
                                                                     : QString(),
-                              operandText(c.operands[0]),
+                              model::formatOperand(target, c.operands[0]),
                               QLatin1String(model::compareSymbol(c.compare)),
-                              operandText(c.operands[1]));
+                              model::formatOperand(target, c.operands[1]));
     }
     for (const model::Operand &o : operands ? *operands : std::vector<model::Operand>{}) {
         if (o.kind != model::Operand::Kind::Device)
@@ -243,7 +235,7 @@ QString LadderView::elementHelp(const CellCursor &cell) const {
                 line += QStringLiteral(": ") + s->comment;
         }
         // Under a comparison a bare address would only repeat it.
-        if (lines.isEmpty() || line != model::formatAddress(target, o.address))
+        if (!compare || line != model::formatAddress(target, o.address))
             lines << line;
     }
     return lines.join(QLatin1Char('\n'));

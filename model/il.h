@@ -75,6 +75,8 @@ struct PrintOptions {
 };
 QString printInstructionList(const InstructionList &list, const PrintOptions &options = {});
 QString printInstruction(const Target &target, const Instruction &instruction);
+// One operand alone, as the drawing and its tooltips show it (X0, K10, #0150, a PL110 text).
+QString formatOperand(const Target &target, const Operand &operand);
 
 // Steps an instruction occupies in the PLC's program memory (1 for most).
 int instructionSteps(const Target &target, const Instruction &instruction);

@@ -41,6 +41,18 @@ QString operandText(const Target &target, const InstructionSpec &spec, std::size
 
 } // namespace
 
+QString formatOperand(const Target &target, const Operand &operand) {
+    switch (operand.kind) {
+    case Operand::Kind::Device:
+        return formatAddress(target, operand.address);
+    case Operand::Kind::Constant:
+        return formatConstant(target, operand.constant);
+    case Operand::Kind::Text:
+        return operand.text;
+    }
+    return {};
+}
+
 QString printInstruction(const Target &target, const Instruction &instruction) {
     const InstructionSpec *spec = instruction.spec;
     if (!spec)

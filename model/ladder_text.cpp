@@ -23,18 +23,6 @@ struct Tr {
     Q_DECLARE_TR_FUNCTIONS(rung::model::LadderText)
 };
 
-QString operandText(const Target &t, const Operand &o) {
-    switch (o.kind) {
-    case Operand::Kind::Device:
-        return formatAddress(t, o.address);
-    case Operand::Kind::Constant:
-        return formatConstant(t, o.constant);
-    case Operand::Kind::Text:
-        return o.text;
-    }
-    return {};
-}
-
 QChar markOf(const Contact &c) {
     if (c.invert)
         return QLatin1Char('~');
@@ -51,25 +39,24 @@ QChar markOf(const Contact &c) {
     return QLatin1Char(' ');
 }
 
-// The power-flow elements have no device: NOT is "~" alone, PL110's P and N are "~P", "~N".
-QString invertText(const Contact &c) {
-    return c.mode == ContactMode::Rising    ? QStringLiteral("P")
-           : c.mode == ContactMode::Falling ? QStringLiteral("N")
-                                            : QString();
-}
-
 QString contactText(const Target &t, const Contact &c) {
     if (c.invert)
         return invertText(c);
     if (c.operands.empty())
         return {};
     if (c.compare != CompareOp::None && c.operands.size() >= 2)
-        return operandText(t, c.operands[0]) + QLatin1String(compareSymbol(c.compare)) +
-               operandText(t, c.operands[1]);
-    return operandText(t, c.operands[0]);
+        return formatOperand(t, c.operands[0]) + QLatin1String(compareSymbol(c.compare)) +
+               formatOperand(t, c.operands[1]);
+    return formatOperand(t, c.operands[0]);
 }
 
 } // namespace
+
+QString invertText(const Contact &c) {
+    return c.mode == ContactMode::Rising    ? QStringLiteral("P")
+           : c.mode == ContactMode::Falling ? QStringLiteral("N")
+                                            : QString();
+}
 
 QString printLadderText(const LadderProgram &ladder) {
     if (!ladder.target)

@@ -19,6 +19,9 @@ QString printLadderText(const LadderProgram &ladder);
 // One contact as a short text, as project files store cells: "X0", "/X0" (NC), "^X0"
 // (rising), "_X0" (falling), "D0>=K10" (compare), "~" (INV).
 QString contactToText(const Target &target, const Contact &contact);
+// The power-flow elements have no device: NOT is empty, PL110's P and N are "P", "N" (in the
+// ladder text "~", "~P", "~N").
+QString invertText(const Contact &contact);
 // nullopt with *error set (translated) when the text is not a contact of the target.
 std::optional<Contact> contactFromText(const Target &target, const QString &text, QString *error,
                                        const ModelVariant *model = nullptr);

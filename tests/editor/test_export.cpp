@@ -160,6 +160,14 @@ TEST_F(ExportFixture, CompareContactsShowBothOperands) {
     EXPECT_EQ(window.ladderView()->elementHelp({0, 0, 1}), QStringLiteral("D100 >= K1000"));
 }
 
+// A box's tooltip lists every device it uses, each with its name where it has one.
+TEST_F(ExportFixture, ABoxsTooltipListsEveryDevice) {
+    std::vector<model::Diagnostic> errors;
+    ASSERT_TRUE(window.document()->setListing(QStringLiteral("LD X0\nMOV D0 D1\nEND\n"), &errors));
+    const int output = window.ladderView()->metrics().gridColumns;
+    EXPECT_EQ(window.ladderView()->elementHelp({0, 0, output}), QStringLiteral("D0\nD1"));
+}
+
 // The letter inside a coil tells SET from RST and PLS from PLF at a glance: it is drawn bold,
 // not in the small font of the comments.
 TEST_F(ExportFixture, CoilLettersAreBold) {
