@@ -137,14 +137,20 @@ void MainWindow::setRecoveryDirectory(const QString &directory) {
 }
 
 void MainWindow::claimRecoveryFile() {
+    // Process ids repeat (containers start every program with a low one): a name whose lock is
+    // taken, or whose recovery file waits to be offered, belongs to another instance. A
+    // directory where no lock can be made ends the search after a few tries.
     static int windows = 0;
-    m_recoveryBase = QStringLiteral("%1/recovery-%2-%3")
-                         .arg(recoveryDirectory())
-                         .arg(QCoreApplication::applicationPid())
-                         .arg(++windows);
-    m_recoveryLock = std::make_unique<QLockFile>(lockPath(m_recoveryBase));
-    m_recoveryLock->setStaleLockTime(0); // stale only when its process is gone
-    m_recoveryLock->tryLock(0);
+    for (int tries = 0; tries < 64; ++tries) {
+        m_recoveryBase = QStringLiteral("%1/recovery-%2-%3")
+                             .arg(recoveryDirectory())
+                             .arg(QCoreApplication::applicationPid())
+                             .arg(++windows);
+        m_recoveryLock = std::make_unique<QLockFile>(lockPath(m_recoveryBase));
+        m_recoveryLock->setStaleLockTime(0); // stale only when its process is gone
+        if (!QFile::exists(m_recoveryBase + QStringLiteral(".rung")) && m_recoveryLock->tryLock(0))
+            return;
+    }
 }
 
 QString MainWindow::recoveryPath() const {

@@ -363,6 +363,31 @@ TEST_F(Fixture, RecoveryIsOfferedBeforeTheCommandLinesFile) {
     EXPECT_EQ(plain.document()->listingText(), QStringLiteral("LD X1\nOUT Y1\nEND\n"));
 }
 
+// Process ids repeat between runs (in containers the program often gets the same one): work
+// left under this process's id by an earlier run is neither taken over nor lost.
+TEST_F(Fixture, AnEarlierRunsRecoveryUnderTheSamePidIsOfferedNotOverwritten) {
+    QTemporaryDir dir;
+    const QString saved = dir.filePath(QStringLiteral("earlier.rung"));
+    QString next; // the name the next window would take: one number further on
+    {
+        app::MainWindow earlier;
+        earlier.newProject(model::Target::get(model::Family::Vigor), QStringLiteral("VB"));
+        earlier.ilEditor()->setText(QStringLiteral("LD X7\nOUT Y7\nEND\n"));
+        earlier.applyListing();
+        ASSERT_TRUE(earlier.saveTo(saved));
+        const QString base = earlier.recoveryPath().chopped(5);
+        const qsizetype dash = base.lastIndexOf(QLatin1Char('-'));
+        next = base.left(dash + 1) + QString::number(base.mid(dash + 1).toInt() + 1) +
+               QStringLiteral(".rung");
+    }
+    ASSERT_TRUE(QFile::copy(saved, next)); // left by an earlier run with this process id
+    app::MainWindow window;
+    EXPECT_NE(window.recoveryPath(), next);
+    window.writeRecovery();
+    ASSERT_TRUE(window.offerRecovery(false));
+    EXPECT_EQ(window.document()->listingText(), QStringLiteral("LD X7\nOUT Y7\nEND\n"));
+}
+
 TEST_F(Fixture, CopyAndPasteRungsAlsoAsListingText) {
     window.ilEditor()->setText(QStringLiteral("LD X0\nOUT Y0\nEND\n"));
     window.applyListing();
