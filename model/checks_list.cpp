@@ -349,13 +349,12 @@ private:
         return l;
     }
 
-    // The system devices the PLC itself drives (always-on, clocks, first scan, scan times):
-    // every role but Other, which names devices the program may write (seed 001: M9100).
+    // The system devices the PLC itself drives (always-on, clocks, first scan, scan times).
     const SystemDevice *driveBySystem(const Address &a) {
         if (!m_systemParsed) {
             m_systemParsed = true;
             for (const SystemDevice &d : m_t.systemDevices) {
-                if (d.role == SystemRole::Other)
+                if (!drivenByPlc(d))
                     continue;
                 const auto parsed = parseAddress(m_t, d.device, nullptr);
                 if (const Address *at = std::get_if<Address>(&parsed))

@@ -187,4 +187,15 @@ const SystemDevice *Target::systemDevice(SystemRole role) const {
     return nullptr;
 }
 
+bool drivenByPlc(const SystemDevice &device) {
+    switch (device.role) {
+    case SystemRole::Other:
+    case SystemRole::Error:
+    case SystemRole::Connected:
+        return false;
+    default:
+        return !device.programWrites;
+    }
+}
+
 } // namespace rung::model

@@ -88,7 +88,14 @@ struct SystemDevice {
     SystemRole role = SystemRole::Other;
     const char *description = nullptr; // QT_TRANSLATE_NOOP("rung::model::Target", ...)
     int unitUs = 0; // a scan-time word's count in microseconds (100: Vigor D9010, PL110 SM6)
+    // The manual lets the program write it as well (VPC: drop r88 RUN to stop, raise r89 ERR).
+    bool programWrites = false;
 };
+
+// Whether the PLC drives the device so that the program cannot write it (OP002): every role
+// but Other (seed 001: the program drives M9100), the status flags Error and Connected, and
+// what the manual lets the program write.
+bool drivenByPlc(const SystemDevice &device);
 
 // What an instruction does, independent of its spelling.
 enum class Op : std::uint8_t {

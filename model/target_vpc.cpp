@@ -108,9 +108,9 @@ Target makeVpcTarget() {
 
     t.systemDevices = {
         {QStringLiteral("r88"), SystemRole::AlwaysOn,
-         QT_TRANSLATE_NOOP("rung::model::Target", "RUN: always ON")},
+         QT_TRANSLATE_NOOP("rung::model::Target", "RUN: always ON"), 0, true},
         {QStringLiteral("r89"), SystemRole::Error,
-         QT_TRANSLATE_NOOP("rung::model::Target", "ERR: program error")},
+         QT_TRANSLATE_NOOP("rung::model::Target", "ERR: program error"), 0, true},
         {QStringLiteral("r90"), SystemRole::Connected,
          QT_TRANSLATE_NOOP("rung::model::Target", "CON: PC connected")},
         {QStringLiteral("r91"), SystemRole::Other,

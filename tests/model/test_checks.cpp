@@ -451,8 +451,8 @@ TEST(Checks, TheDevicesThePlcDrivesCannotBeWritten) {
         {Family::Vigor, "LD X0;OUT M9002;END", "M9002"},
         {Family::Vigor, "LD X0;SET M9013;END", "M9013"},
         {Family::Vigor, "LD X0;MOV K5 D9010;END", "D9010"},
-        {Family::Vpc, "LD i00;OUT r88;END", "r88"},
         {Family::Cpm1, "LD 000.00;OUT 253.13;END(01)", "253.13"},
+        {Family::Pl110, "LD I1;OUT SM0.1;END", "SM0.1"}, // in a writable area: the table says
     };
     for (const auto &c : driven) {
         const auto ds = check(c.family, nullptr, text(c.program));
@@ -465,6 +465,9 @@ TEST(Checks, TheDevicesThePlcDrivesCannotBeWritten) {
     for (const char *program :
          {"LD M9000;OUT Y0;END", "LD X0;OUT M9100;END", "LD M9013;MOV D9010 D0;END"})
         EXPECT_EQ(find(check(Family::Vigor, nullptr, text(program)), "OP002"), nullptr) << program;
+    // VPC: the program may drop r88 (RUN) to stop and raise r89 (ERR), as targets.md says.
+    for (const char *program : {"LD i00;OUT r88;END", "LD i00;OUT r89;END"})
+        EXPECT_EQ(find(check(Family::Vpc, nullptr, text(program)), "OP002"), nullptr) << program;
 }
 
 TEST(Checks, ACoilDrivesRelaysNotTimersCountersOrRegisters) {
