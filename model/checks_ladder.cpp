@@ -136,16 +136,13 @@ std::vector<Diagnostic> checkLadder(const LadderProgram &ladder, const ToListing
                 : ladder.rungs[static_cast<std::size_t>(std::max(0, p.location.rung))].columns;
         out.push_back(std::move(d));
     }
-    // The listing checks, on the rungs the instructions came from.
+    // The listing checks, on the rungs the instructions came from; without the fuzzy forms (the
+    // ladder's own listing is canonical), so of the FZ codes only FZ003 (the PLC's limit on
+    // ANB/ORB in a row) can come.
     for (detail::Finding &f : detail::checkListFindings(list.list, options, false)) {
         if (f.diagnostic.code == QLatin1String("OC001") ||
             f.diagnostic.code == QLatin1String("BL001"))
             continue; // the drawing-level findings above say it better
-        // The form of a listing nobody wrote: the ladder's own listing is canonical. Only the
-        // limit on ANB/ORB in a row (FZ003) binds it, as the PLC rejects it.
-        if (f.diagnostic.code.startsWith(QLatin1String("FZ")) &&
-            f.diagnostic.code != QLatin1String("FZ003"))
-            continue;
         Diagnostic d = std::move(f.diagnostic);
         d.location.line = 0;
         d.location.column = 0;

@@ -250,9 +250,9 @@ private:
                 const bool singleOr = op == Op::OrBlock && second.single;
                 const bool singleFirst = first.single && first.first + 1 == second.first &&
                                          !stackBetween(m_list, first.first, i);
-                if (!(stacked || singleOr || singleFirst) || !isFuzzy(i)) {
-                    // The nesting the drawing needs, written as the converter writes it.
-                } else if (stacked) {
+                // Otherwise: the nesting the drawing needs, written as the converter writes it.
+                const bool fuzzy = (stacked || singleOr || singleFirst) && isFuzzy(i);
+                if (fuzzy && stacked) {
                     Finding &f = add(
                         op == Op::AndBlock ? "FZ001" : "FZ002", Severity::Warning, i,
                         op == Op::AndBlock
@@ -262,14 +262,14 @@ private:
                                   "Stacked ORB: %n blocks are open; an OR chain needs less stack",
                                   nullptr, static_cast<int>(blocks.size())));
                     offerCanonical(f, i);
-                } else if (singleOr) {
+                } else if (fuzzy && singleOr) {
                     Finding &f = add("FZ002", Severity::Warning, i,
                                      Tr::tr("A single contact joined with %1 is simpler as %2")
                                          .arg(name(i), m_t.findInstruction(Op::Or)
                                                            ? m_t.findInstruction(Op::Or)->mnemonic
                                                            : QString()));
                     offerCanonical(f, i);
-                } else {
+                } else if (fuzzy) {
                     const bool orBlock = op == Op::OrBlock;
                     Finding &f = add(
                         orBlock ? "FZ005" : "FZ004", Severity::Warning, i,

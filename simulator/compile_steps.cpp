@@ -31,10 +31,8 @@ void Compiler::compileContact(const model::Instruction &ins, Step &s) {
     }
     s.bit = bitOf(ins, 0);
     if (spec.mode == model::ContactMode::Rising || spec.mode == model::ContactMode::Falling) {
-        s.code = static_cast<Code>(static_cast<int>(Code::LoadEdge) + which);
-        if (spec.mode == model::ContactMode::Falling)
-            s.flags |= kFalling;
-        s.slot = m_program->edgeSlots++;
+        edgeStep(s, static_cast<Code>(static_cast<int>(Code::LoadEdge) + which),
+                 spec.mode == model::ContactMode::Falling);
         return;
     }
     s.code = static_cast<Code>(static_cast<int>(Code::Load) + which);
@@ -292,9 +290,8 @@ void Compiler::compileApply(const model::Instruction &ins, Step &s) {
     }
     case ApplyFunction::Toggle:
         // OUTB (seed 003 4.2.3): each activation of the coil flips the bit
-        s.code = Code::Toggle;
         s.bit = bitOf(ins, 0);
-        s.slot = m_program->edgeSlots++;
+        edgeStep(s, Code::Toggle, false);
         break;
     default:
         notSimulated(ins);

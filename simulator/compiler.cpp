@@ -170,10 +170,7 @@ CompileResult Compiler::run() {
             // their place in the rung: the mode tells them apart.
             if (spec.mode == model::ContactMode::Rising ||
                 spec.mode == model::ContactMode::Falling) {
-                s.code = Code::EdgeFlow;
-                if (spec.mode == model::ContactMode::Falling)
-                    s.flags |= kFalling;
-                s.slot = m_program->edgeSlots++;
+                edgeStep(s, Code::EdgeFlow, spec.mode == model::ContactMode::Falling);
             } else {
                 s.code = Code::Invert;
             }
@@ -214,11 +211,8 @@ CompileResult Compiler::run() {
         }
         case Op::PulseRise:
         case Op::PulseFall:
-            s.code = Code::Pulse;
             s.bit = bitOf(ins, 0);
-            if (spec.op == Op::PulseFall)
-                s.flags |= kFalling;
-            s.slot = m_program->edgeSlots++;
+            edgeStep(s, Code::Pulse, spec.op == Op::PulseFall);
             outputDone();
             break;
         case Op::Keep:

@@ -170,6 +170,13 @@ private:
     }
 
     void outputDone() { m_rungStart = true; }
+    // A step that compares a value with the one it kept from the last scan (an edge slot).
+    void edgeStep(Step &s, Code code, bool falling) {
+        s.code = code;
+        if (falling)
+            s.flags |= kFalling;
+        s.slot = m_program->edgeSlots++;
+    }
     void popBlocks(const model::Instruction &ins, int n) {
         if (m_depth < n) {
             error(ins,

@@ -138,8 +138,8 @@ void Engine::beginScan() {
             on = (m_scansSincePowerOn & 1u) != 0;
             break;
         default:
-            if (const qint64 period = clockPeriodMs(b.role); period > 0)
-                on = (t % period) < period / 2;
+            if (const qint64 clock = clockPeriodMs(b.role); clock > 0)
+                on = (t % clock) < clock / 2;
             break;
         }
         auto &w = reinterpret_cast<std::uint32_t &>(R[b.bit.word]);

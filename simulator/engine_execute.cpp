@@ -41,6 +41,13 @@ bool compare(std::uint8_t op, std::int32_t a, std::int32_t b) {
 }
 
 // BCD digits -> number; -1 when a nibble is above 9 (or the value is negative).
+// A rising (or falling) edge of `now` against the value the slot kept from the last scan.
+inline bool edge(std::uint8_t &prev, bool now, bool falling) {
+    const bool v = falling ? (prev && !now) : (now && !prev);
+    prev = now;
+    return v;
+}
+
 std::int32_t fromBcd(std::int32_t raw) {
     if (raw < 0)
         return -1;
@@ -122,10 +129,8 @@ template <bool Record> void Engine::execute() {
             if (s.code == Code::Load) {
                 v = rd(s.bit) != ((s.flags & kNegated) != 0);
             } else if (s.code == Code::LoadEdge) {
-                const bool now = rd(s.bit);
-                std::uint8_t &prev = m_edges[static_cast<std::size_t>(s.slot)];
-                v = (s.flags & kFalling) ? (prev && !now) : (now && !prev);
-                prev = now;
+                v = edge(m_edges[static_cast<std::size_t>(s.slot)], rd(s.bit),
+                         (s.flags & kFalling) != 0);
             } else {
                 v = compare(s.op, rdw(s.x), rdw(s.y)) != ((s.flags & kNegated) != 0);
             }
@@ -146,10 +151,8 @@ template <bool Record> void Engine::execute() {
             break;
         case Code::AndEdge:
         case Code::OrEdge: {
-            const bool now = rd(s.bit);
-            std::uint8_t &prev = m_edges[static_cast<std::size_t>(s.slot)];
-            const bool v = (s.flags & kFalling) ? (prev && !now) : (now && !prev);
-            prev = now;
+            const bool v = edge(m_edges[static_cast<std::size_t>(s.slot)], rd(s.bit),
+                                (s.flags & kFalling) != 0);
             acc = s.code == Code::AndEdge ? acc && v : acc || (v && gate);
             break;
         }
@@ -182,13 +185,9 @@ template <bool Record> void Engine::execute() {
         case Code::Invert:
             acc = !acc;
             break;
-        case Code::EdgeFlow: {
-            std::uint8_t &prev = m_edges[static_cast<std::size_t>(s.slot)];
-            const bool now = acc;
-            acc = (s.flags & kFalling) ? (prev && !now) : (now && !prev);
-            prev = now;
+        case Code::EdgeFlow:
+            acc = edge(m_edges[static_cast<std::size_t>(s.slot)], acc, (s.flags & kFalling) != 0);
             break;
-        }
         case Code::Out:
             put(W, s.bit, acc != ((s.flags & kNegated) != 0));
             break;
@@ -218,20 +217,14 @@ template <bool Record> void Engine::execute() {
                 }
             }
             break;
-        case Code::Pulse: {
-            std::uint8_t &prev = m_edges[static_cast<std::size_t>(s.slot)];
-            const bool out = (s.flags & kFalling) ? (prev && !acc) : (acc && !prev);
-            prev = acc;
-            put(W, s.bit, out);
+        case Code::Pulse:
+            put(W, s.bit,
+                edge(m_edges[static_cast<std::size_t>(s.slot)], acc, (s.flags & kFalling) != 0));
             break;
-        }
-        case Code::Toggle: {
-            std::uint8_t &prev = m_edges[static_cast<std::size_t>(s.slot)];
-            if (acc && !prev)
+        case Code::Toggle:
+            if (edge(m_edges[static_cast<std::size_t>(s.slot)], acc, false))
                 put(W, s.bit, !rd(s.bit));
-            prev = acc;
             break;
-        }
         case Code::Keep: {
             const bool set = bsp > 0 ? blocks[--bsp] : false;
             if (acc)

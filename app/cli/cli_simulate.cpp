@@ -8,7 +8,6 @@
 
 #include <QCoreApplication>
 #include <QFile>
-#include <QRegularExpression>
 
 namespace rung::app {
 
@@ -21,14 +20,6 @@ struct Tr {
 QString usage() {
     return Tr::tr("usage: rungstudio-cli simulate FILE [--target T] --scans N [--period MS] "
                   "[--set DEV=VALUE@SCAN]... --trace DEV[,DEV...]");
-}
-
-// "; target: vigor" on the first line names the target of a listing.
-QString targetFromListing(const QString &text) {
-    static const QRegularExpression re(QStringLiteral("^\\s*(?:;|//)\\s*target\\s*:\\s*(\\w+)"),
-                                       QRegularExpression::CaseInsensitiveOption);
-    const auto m = re.match(text.section(QLatin1Char('\n'), 0, 0));
-    return m.hasMatch() ? m.captured(1) : QString();
 }
 
 } // namespace
@@ -64,7 +55,7 @@ int runSimulateCommand(const QStringList &args, QTextStream &out, QTextStream &e
     const QString text =
         QString::fromUtf8(bytes).replace(QLatin1String("\r\n"), QLatin1String("\n"));
     if (targetId.isEmpty())
-        targetId = targetFromListing(text);
+        targetId = model::declaredTarget(text);
     if (targetId.isEmpty()) {
         err << Tr::tr("%1: no target; give --target or a \"; target: NAME\" first line").arg(file)
             << '\n';

@@ -79,13 +79,3 @@ TEST(VpcDecimalRange, SubtractionBelowZeroWrapsFrom9999) {
     ASSERT_EQ(s.engine->runtimeErrors().size(), 1u);
     EXPECT_TRUE(s.engine->runtimeErrors().front().message.contains(QStringLiteral("-2")));
 }
-
-TEST(VpcDecimalRange, OtherFamiliesKeepTheirWordWidth) {
-    Sim s(model::Family::Vigor, "LD M9000\nADD D0 D1 D2\nEND");
-    ASSERT_TRUE(s.result.ok());
-    s.engine->writeWord(s.at("D0"), 9999);
-    s.engine->writeWord(s.at("D1"), 1);
-    s.engine->scan();
-    EXPECT_EQ(s.value("D2"), 10000);
-    EXPECT_TRUE(s.engine->runtimeErrors().empty());
-}
