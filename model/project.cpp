@@ -1,5 +1,6 @@
 #include "project.h"
 
+#include "file_read.h"
 #include "ladder_text.h"
 
 #include <QCoreApplication>
@@ -446,28 +447,27 @@ std::optional<Project> projectFromJson(const QByteArray &json, ProjectError *err
 }
 
 std::optional<Project> loadProject(const QString &path, ProjectError *error) {
-    QFile file(path);
-    if (!file.open(QIODevice::ReadOnly)) {
+    QByteArray data;
+    QString ioError;
+    switch (readAtMost(path, kMaxProjectBytes, &data, &ioError)) {
+    case ReadStatus::CannotOpen:
         if (error)
-            error->message = Tr::tr("%1: cannot open the file (%2)").arg(path, file.errorString());
+            error->message = Tr::tr("%1: cannot open the file (%2)").arg(path, ioError);
         return std::nullopt;
-    }
-    if (file.size() > kMaxProjectBytes) {
-        if (error)
+    case ReadStatus::TooLarge:
+        // A regular file says how large it is; a device or a pipe only that it goes on.
+        if (const qint64 size = QFileInfo(path).size(); error && size > kMaxProjectBytes)
             error->message = Tr::tr("%1: the file is %2 MB; a project is at most %3 MB")
                                  .arg(path)
-                                 .arg(file.size() / (1024 * 1024))
+                                 .arg(size / (1024 * 1024))
                                  .arg(kMaxProjectBytes / (1024 * 1024));
-        return std::nullopt;
-    }
-    // Read at most one byte past the limit: a device or a pipe has no size to ask first.
-    const QByteArray data = file.read(kMaxProjectBytes + 1);
-    if (data.size() > kMaxProjectBytes) {
-        if (error)
+        else if (error)
             error->message = Tr::tr("%1: the file is larger than %2 MB, the most a project can be")
                                  .arg(path)
                                  .arg(kMaxProjectBytes / (1024 * 1024));
         return std::nullopt;
+    case ReadStatus::Ok:
+        break;
     }
     ProjectError inner;
     auto project = projectFromJson(data, &inner);

@@ -20,7 +20,7 @@
         </translation>
     </message>
     <message numerus="yes">
-        <location filename="../app/gui/main_window_tools.cpp" line="+123"/>
+        <location filename="../app/gui/main_window_tools.cpp" line="+124"/>
         <source>Paste %n rungs</source>
         <translation>
             <numerusform>Paste %n rung</numerusform>
@@ -50,7 +50,7 @@
 <context>
     <name>rung::model::Checks</name>
     <message numerus="yes">
-        <location filename="../model/checks_list.cpp" line="+264"/>
+        <location filename="../model/checks_list.cpp" line="+261"/>
         <source>Stacked ORB: %n blocks are open; an OR chain needs less stack</source>
         <translation>
             <numerusform>Stacked ORB: %n block is open; an OR chain needs less stack</numerusform>

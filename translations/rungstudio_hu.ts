@@ -88,7 +88,7 @@ Kilépési kód: 0 nincs hiba, 1 a programban hiba van, 2 használati vagy I/O h
         <translation>ismeretlen parancs: %1</translation>
     </message>
     <message>
-        <location filename="../app/cli/cli_common.cpp" line="+84"/>
+        <location filename="../app/cli/cli_common.cpp" line="+86"/>
         <source>%1 needs a value</source>
         <translation>%1 után érték kell</translation>
     </message>
@@ -113,12 +113,12 @@ Kilépési kód: 0 nincs hiba, 1 a programban hiba van, 2 használati vagy I/O h
         <translation>%1 nem olvasható: %2</translation>
     </message>
     <message>
-        <location line="+5"/>
+        <location line="+3"/>
         <source>%1: the file is larger than %2 MB, too large for a listing or a ladder text</source>
         <translation>%1: a fájl nagyobb %2 MB-nál, túl nagy egy utasításlistának vagy létraszövegnek</translation>
     </message>
     <message>
-        <location line="+118"/>
+        <location line="+120"/>
         <source>%1: which PLC? Give --target vpc|vigor|cpm1|pl110 or a &quot;; target: NAME&quot; first line</source>
         <translation>%1: melyik PLC? Adja meg: --target vpc|vigor|cpm1|pl110, vagy egy &quot;; target: NAME&quot; első sort</translation>
     </message>
@@ -466,7 +466,7 @@ Kilépési kód: 0 nincs hiba, 1 a programban hiba van, 2 használati vagy I/O h
     </message>
     <message>
         <location line="+1"/>
-        <location filename="../app/gui/main_window_tools.cpp" line="+234"/>
+        <location filename="../app/gui/main_window_tools.cpp" line="+235"/>
         <source>CSV files (*.csv)</source>
         <translation>CSV-fájlok (*.csv)</translation>
     </message>
@@ -619,7 +619,7 @@ Létradiagram- és utasításlista-szerkesztő VPC, Vigor, CPM1 és PL110 PLC-kh
     <message>
         <location line="+1"/>
         <location line="+50"/>
-        <location filename="../app/gui/main_window_files.cpp" line="+475"/>
+        <location filename="../app/gui/main_window_files.cpp" line="+487"/>
         <source>Untitled</source>
         <translation>Névtelen</translation>
     </message>
@@ -685,7 +685,7 @@ Létradiagram- és utasításlista-szerkesztő VPC, Vigor, CPM1 és PL110 PLC-kh
         <translation>&amp;Visszavonás: %1</translation>
     </message>
     <message>
-        <location filename="../app/gui/main_window_files.cpp" line="-280"/>
+        <location filename="../app/gui/main_window_files.cpp" line="-285"/>
         <source>Recover</source>
         <translation>Helyreállítás</translation>
     </message>
@@ -705,30 +705,31 @@ Létradiagram- és utasításlista-szerkesztő VPC, Vigor, CPM1 és PL110 PLC-kh
         <translation>A fájl nem nyitható meg</translation>
     </message>
     <message>
-        <location line="+24"/>
+        <location line="+29"/>
         <source>Unknown target %1</source>
         <translation>Ismeretlen célrendszer: %1</translation>
     </message>
     <message>
-        <location line="-8"/>
-        <location line="+136"/>
+        <location line="-11"/>
+        <location line="+139"/>
         <location filename="../app/gui/main_window_tools.cpp" line="+12"/>
-        <location line="+9"/>
+        <location line="+11"/>
         <source>%1: %2</source>
         <translation>%1: %2</translation>
     </message>
     <message>
-        <location line="-134"/>
+        <location line="-137"/>
+        <location filename="../app/gui/main_window_tools.cpp" line="+3"/>
         <source>%1 is larger than 64 MB</source>
         <translation>%1 nagyobb 64 MB-nál</translation>
     </message>
     <message>
-        <location filename="../app/gui/main_window_tools.cpp" line="+6"/>
+        <location filename="../app/gui/main_window_tools.cpp" line="+8"/>
         <source>%1, line %2: %3</source>
         <translation>%1, %2. sor: %3</translation>
     </message>
     <message>
-        <location filename="../app/gui/main_window_files.cpp" line="+16"/>
+        <location filename="../app/gui/main_window_files.cpp" line="+19"/>
         <source>%1 has errors; the ladder follows once they are fixed</source>
         <translation>%1 hibás; a létradiagram a hibák javítása után követi</translation>
     </message>
@@ -810,7 +811,7 @@ Létradiagram- és utasításlista-szerkesztő VPC, Vigor, CPM1 és PL110 PLC-kh
     <message>
         <location line="+6"/>
         <location line="+14"/>
-        <location filename="../app/gui/main_window_tools.cpp" line="-24"/>
+        <location filename="../app/gui/main_window_tools.cpp" line="-31"/>
         <source>Cannot export</source>
         <translation>Az exportálás nem sikerült</translation>
     </message>
@@ -929,12 +930,12 @@ Létradiagram- és utasításlista-szerkesztő VPC, Vigor, CPM1 és PL110 PLC-kh
 <context>
     <name>rung::app::Simulate</name>
     <message>
-        <location filename="../app/cli/cli_simulate.cpp" line="+22"/>
+        <location filename="../app/cli/cli_simulate.cpp" line="+21"/>
         <source>usage: rungstudio-cli simulate FILE [--target T] --scans N [--period MS] [--set DEV=VALUE@SCAN]... --trace DEV[,DEV...]</source>
         <translation>használat: rungstudio-cli simulate FILE [--target T] --scans N [--period MS] [--set DEV=VALUE@SCAN]... --trace DEV[,DEV...]</translation>
     </message>
     <message>
-        <location line="+28"/>
+        <location line="+20"/>
         <source>unexpected argument %1</source>
         <translation>váratlan argumentum: %1</translation>
     </message>
@@ -1135,7 +1136,7 @@ Létradiagram- és utasításlista-szerkesztő VPC, Vigor, CPM1 és PL110 PLC-kh
     </message>
     <message>
         <location line="+22"/>
-        <location filename="../editor/ladder_view_mouse.cpp" line="+161"/>
+        <location filename="../editor/ladder_view_mouse.cpp" line="+162"/>
         <source>Draw a wire</source>
         <translation>Vezeték rajzolása</translation>
     </message>
@@ -1486,12 +1487,12 @@ Létradiagram- és utasításlista-szerkesztő VPC, Vigor, CPM1 és PL110 PLC-kh
         <translation>Ez az érintkező nincs rajta egyetlen áramúton sem a bal oldali gyűjtősíntől egy kimenetig</translation>
     </message>
     <message>
-        <location filename="../model/checks_list.cpp" line="+175"/>
+        <location filename="../model/checks_list.cpp" line="+174"/>
         <source>Rewrite the rung in the canonical form</source>
         <translation>A létrafok átírása kanonikus formára</translation>
     </message>
     <message>
-        <location line="+50"/>
+        <location line="+48"/>
         <source>More than %1 %2 in a row: the PLC rejects the program</source>
         <translation>Több mint %1 %2 egymás után: a PLC elutasítja a programot</translation>
     </message>
@@ -1635,7 +1636,7 @@ Létradiagram- és utasításlista-szerkesztő VPC, Vigor, CPM1 és PL110 PLC-kh
         <translation>A léptetőlánc nincs RET-tel lezárva</translation>
     </message>
     <message>
-        <location filename="../model/checks_list.cpp" line="+67"/>
+        <location filename="../model/checks_list.cpp" line="+66"/>
         <source>Set value %1 is out of range</source>
         <translation>A(z) %1 beállított érték tartományon kívül esik</translation>
     </message>
@@ -1905,7 +1906,7 @@ Létradiagram- és utasításlista-szerkesztő VPC, Vigor, CPM1 és PL110 PLC-kh
 <context>
     <name>rung::model::LadderText</name>
     <message>
-        <location filename="../model/ladder_text.cpp" line="+195"/>
+        <location filename="../model/ladder_text.cpp" line="+182"/>
         <source>A ladder text starts with &quot;LADDER &lt;target&gt; WIDTH &lt;n&gt;&quot;</source>
         <translation>A létra-szöveg így kezdődik: &quot;LADDER &lt;target&gt; WIDTH &lt;n&gt;&quot;</translation>
     </message>
@@ -1979,7 +1980,7 @@ Létradiagram- és utasításlista-szerkesztő VPC, Vigor, CPM1 és PL110 PLC-kh
 <context>
     <name>rung::model::Project</name>
     <message>
-        <location filename="../model/project.cpp" line="+109"/>
+        <location filename="../model/project.cpp" line="+110"/>
         <source>Line %1, column %2 (byte %3): the file is not valid JSON (%4)</source>
         <translation>%1. sor, %2. oszlop (%3. bájt): a fájl nem érvényes JSON (%4)</translation>
     </message>
@@ -2124,7 +2125,7 @@ Létradiagram- és utasításlista-szerkesztő VPC, Vigor, CPM1 és PL110 PLC-kh
         <translation>egyetlen utasítás a várt</translation>
     </message>
     <message>
-        <location line="+91"/>
+        <location line="+93"/>
         <source>%1: cannot open the file (%2)</source>
         <translation>%1: a fájl nem nyitható meg (%2)</translation>
     </message>
@@ -2134,12 +2135,12 @@ Létradiagram- és utasításlista-szerkesztő VPC, Vigor, CPM1 és PL110 PLC-kh
         <translation>%1: a fájl %2 MB; egy projekt legfeljebb %3 MB lehet</translation>
     </message>
     <message>
-        <location line="+10"/>
+        <location line="+5"/>
         <source>%1: the file is larger than %2 MB, the most a project can be</source>
         <translation>%1: a fájl nagyobb %2 MB-nál, ekkora projekt nem lehet</translation>
     </message>
     <message>
-        <location line="+18"/>
+        <location line="+20"/>
         <source>%1: cannot write the file (%2)</source>
         <translation>%1: a fájl nem írható (%2)</translation>
     </message>
@@ -3182,7 +3183,7 @@ Létradiagram- és utasításlista-szerkesztő VPC, Vigor, CPM1 és PL110 PLC-kh
         <translation>%1 a következő szót is igényli, de az nem létezik</translation>
     </message>
     <message>
-        <location line="+24"/>
+        <location line="+31"/>
         <source>%1 needs %2 open blocks before it</source>
         <translation>%1 előtt %2 nyitott blokk kell</translation>
     </message>
@@ -3192,7 +3193,7 @@ Létradiagram- és utasításlista-szerkesztő VPC, Vigor, CPM1 és PL110 PLC-kh
         <translation>több mint %1 nyitott blokk</translation>
     </message>
     <message>
-        <location line="+34"/>
+        <location line="+32"/>
         <source>%1 is not a timer</source>
         <translation>%1 nem időzítő</translation>
     </message>
@@ -3272,7 +3273,7 @@ Létradiagram- és utasításlista-szerkesztő VPC, Vigor, CPM1 és PL110 PLC-kh
         <translation>%1 előtte lévő MPS nélkül</translation>
     </message>
     <message>
-        <location line="+41"/>
+        <location line="+38"/>
         <source>%1 cannot be reset</source>
         <translation>%1 nem törölhető</translation>
     </message>
@@ -3282,7 +3283,7 @@ Létradiagram- és utasításlista-szerkesztő VPC, Vigor, CPM1 és PL110 PLC-kh
         <translation>%1 nem operandus</translation>
     </message>
     <message>
-        <location line="+108"/>
+        <location line="+105"/>
         <source>the program has no target</source>
         <translation>a programnak nincs célrendszere</translation>
     </message>
@@ -3290,7 +3291,7 @@ Létradiagram- és utasításlista-szerkesztő VPC, Vigor, CPM1 és PL110 PLC-kh
 <context>
     <name>rung::simulator::Engine</name>
     <message>
-        <location filename="../simulator/engine_execute.cpp" line="+67"/>
+        <location filename="../simulator/engine_execute.cpp" line="+74"/>
         <source>set value %1 is not a BCD number; the instruction is skipped</source>
         <translation>a(z) %1 beállított érték nem BCD szám; az utasítás kimarad</translation>
     </message>
@@ -3300,7 +3301,7 @@ Létradiagram- és utasításlista-szerkesztő VPC, Vigor, CPM1 és PL110 PLC-kh
         <translation>a(z) %1 eredmény kívül esik a 0..9999 tartományon; %2 íródik be</translation>
     </message>
     <message>
-        <location line="+364"/>
+        <location line="+350"/>
         <location line="+52"/>
         <source>division by zero; the destination is unchanged</source>
         <translation>osztás nullával; a cél változatlan marad</translation>

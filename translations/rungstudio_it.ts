@@ -88,7 +88,7 @@ Codice di uscita: 0 nessun errore, 1 il programma contiene errori, 2 errore di u
         <translation>comando sconosciuto: %1</translation>
     </message>
     <message>
-        <location filename="../app/cli/cli_common.cpp" line="+84"/>
+        <location filename="../app/cli/cli_common.cpp" line="+86"/>
         <source>%1 needs a value</source>
         <translation>%1 richiede un valore</translation>
     </message>
@@ -113,12 +113,12 @@ Codice di uscita: 0 nessun errore, 1 il programma contiene errori, 2 errore di u
         <translation>impossibile leggere %1: %2</translation>
     </message>
     <message>
-        <location line="+5"/>
+        <location line="+3"/>
         <source>%1: the file is larger than %2 MB, too large for a listing or a ladder text</source>
         <translation>%1: il file supera %2 MB, troppo grande per una lista istruzioni o un testo ladder</translation>
     </message>
     <message>
-        <location line="+118"/>
+        <location line="+120"/>
         <source>%1: which PLC? Give --target vpc|vigor|cpm1|pl110 or a &quot;; target: NAME&quot; first line</source>
         <translation>%1: quale PLC? Specificare --target vpc|vigor|cpm1|pl110 oppure una prima riga &quot;; target: NAME&quot;</translation>
     </message>
@@ -466,7 +466,7 @@ Codice di uscita: 0 nessun errore, 1 il programma contiene errori, 2 errore di u
     </message>
     <message>
         <location line="+1"/>
-        <location filename="../app/gui/main_window_tools.cpp" line="+234"/>
+        <location filename="../app/gui/main_window_tools.cpp" line="+235"/>
         <source>CSV files (*.csv)</source>
         <translation>File CSV (*.csv)</translation>
     </message>
@@ -619,7 +619,7 @@ Editor di schemi ladder e liste istruzioni per VPC, Vigor, CPM1 e PL110.</transl
     <message>
         <location line="+1"/>
         <location line="+50"/>
-        <location filename="../app/gui/main_window_files.cpp" line="+475"/>
+        <location filename="../app/gui/main_window_files.cpp" line="+487"/>
         <source>Untitled</source>
         <translation>Senza titolo</translation>
     </message>
@@ -687,7 +687,7 @@ Editor di schemi ladder e liste istruzioni per VPC, Vigor, CPM1 e PL110.</transl
         <translation>&amp;Annulla %1</translation>
     </message>
     <message>
-        <location filename="../app/gui/main_window_files.cpp" line="-280"/>
+        <location filename="../app/gui/main_window_files.cpp" line="-285"/>
         <source>Recover</source>
         <translation>Ripristino</translation>
     </message>
@@ -707,30 +707,31 @@ Editor di schemi ladder e liste istruzioni per VPC, Vigor, CPM1 e PL110.</transl
         <translation>Impossibile aprire il file</translation>
     </message>
     <message>
-        <location line="+24"/>
+        <location line="+29"/>
         <source>Unknown target %1</source>
         <translation>Famiglia PLC sconosciuta: %1</translation>
     </message>
     <message>
-        <location line="-8"/>
-        <location line="+136"/>
+        <location line="-11"/>
+        <location line="+139"/>
         <location filename="../app/gui/main_window_tools.cpp" line="+12"/>
-        <location line="+9"/>
+        <location line="+11"/>
         <source>%1: %2</source>
         <translation>%1: %2</translation>
     </message>
     <message>
-        <location line="-134"/>
+        <location line="-137"/>
+        <location filename="../app/gui/main_window_tools.cpp" line="+3"/>
         <source>%1 is larger than 64 MB</source>
         <translation>%1 supera i 64 MB</translation>
     </message>
     <message>
-        <location filename="../app/gui/main_window_tools.cpp" line="+6"/>
+        <location filename="../app/gui/main_window_tools.cpp" line="+8"/>
         <source>%1, line %2: %3</source>
         <translation>%1, riga %2: %3</translation>
     </message>
     <message>
-        <location filename="../app/gui/main_window_files.cpp" line="+16"/>
+        <location filename="../app/gui/main_window_files.cpp" line="+19"/>
         <source>%1 has errors; the ladder follows once they are fixed</source>
         <translation>%1 contiene errori; lo schema ladder si aggiorna quando sono corretti</translation>
     </message>
@@ -812,7 +813,7 @@ Editor di schemi ladder e liste istruzioni per VPC, Vigor, CPM1 e PL110.</transl
     <message>
         <location line="+6"/>
         <location line="+14"/>
-        <location filename="../app/gui/main_window_tools.cpp" line="-24"/>
+        <location filename="../app/gui/main_window_tools.cpp" line="-31"/>
         <source>Cannot export</source>
         <translation>Impossibile esportare</translation>
     </message>
@@ -933,12 +934,12 @@ Editor di schemi ladder e liste istruzioni per VPC, Vigor, CPM1 e PL110.</transl
 <context>
     <name>rung::app::Simulate</name>
     <message>
-        <location filename="../app/cli/cli_simulate.cpp" line="+22"/>
+        <location filename="../app/cli/cli_simulate.cpp" line="+21"/>
         <source>usage: rungstudio-cli simulate FILE [--target T] --scans N [--period MS] [--set DEV=VALUE@SCAN]... --trace DEV[,DEV...]</source>
         <translation>uso: rungstudio-cli simulate FILE [--target T] --scans N [--period MS] [--set DEV=VALUE@SCAN]... --trace DEV[,DEV...]</translation>
     </message>
     <message>
-        <location line="+28"/>
+        <location line="+20"/>
         <source>unexpected argument %1</source>
         <translation>argomento non previsto: %1</translation>
     </message>
@@ -1140,7 +1141,7 @@ Editor di schemi ladder e liste istruzioni per VPC, Vigor, CPM1 e PL110.</transl
     </message>
     <message>
         <location line="+22"/>
-        <location filename="../editor/ladder_view_mouse.cpp" line="+161"/>
+        <location filename="../editor/ladder_view_mouse.cpp" line="+162"/>
         <source>Draw a wire</source>
         <translation>Disegna collegamento orizzontale</translation>
     </message>
@@ -1491,12 +1492,12 @@ Editor di schemi ladder e liste istruzioni per VPC, Vigor, CPM1 e PL110.</transl
         <translation>Questo contatto non si trova su alcun percorso dalla barra sinistra a un&apos;uscita</translation>
     </message>
     <message>
-        <location filename="../model/checks_list.cpp" line="+175"/>
+        <location filename="../model/checks_list.cpp" line="+174"/>
         <source>Rewrite the rung in the canonical form</source>
         <translation>Riscrivi il segmento nella forma canonica</translation>
     </message>
     <message>
-        <location line="+50"/>
+        <location line="+48"/>
         <source>More than %1 %2 in a row: the PLC rejects the program</source>
         <translation>Più di %1 %2 consecutivi: il PLC rifiuta il programma</translation>
     </message>
@@ -1642,7 +1643,7 @@ Editor di schemi ladder e liste istruzioni per VPC, Vigor, CPM1 e PL110.</transl
         <translation>Lo step ladder non è chiuso con RET</translation>
     </message>
     <message>
-        <location filename="../model/checks_list.cpp" line="+67"/>
+        <location filename="../model/checks_list.cpp" line="+66"/>
         <source>Set value %1 is out of range</source>
         <translation>Il valore di preset %1 è fuori campo</translation>
     </message>
@@ -1917,7 +1918,7 @@ Editor di schemi ladder e liste istruzioni per VPC, Vigor, CPM1 e PL110.</transl
 <context>
     <name>rung::model::LadderText</name>
     <message>
-        <location filename="../model/ladder_text.cpp" line="+195"/>
+        <location filename="../model/ladder_text.cpp" line="+182"/>
         <source>A ladder text starts with &quot;LADDER &lt;target&gt; WIDTH &lt;n&gt;&quot;</source>
         <translation>Un testo ladder inizia con &quot;LADDER &lt;target&gt; WIDTH &lt;n&gt;&quot;</translation>
     </message>
@@ -1991,7 +1992,7 @@ Editor di schemi ladder e liste istruzioni per VPC, Vigor, CPM1 e PL110.</transl
 <context>
     <name>rung::model::Project</name>
     <message>
-        <location filename="../model/project.cpp" line="+109"/>
+        <location filename="../model/project.cpp" line="+110"/>
         <source>Line %1, column %2 (byte %3): the file is not valid JSON (%4)</source>
         <translation>Riga %1, colonna %2 (byte %3): il file non è JSON valido (%4)</translation>
     </message>
@@ -2136,7 +2137,7 @@ Editor di schemi ladder e liste istruzioni per VPC, Vigor, CPM1 e PL110.</transl
         <translation>è attesa una sola istruzione</translation>
     </message>
     <message>
-        <location line="+91"/>
+        <location line="+93"/>
         <source>%1: cannot open the file (%2)</source>
         <translation>%1: impossibile aprire il file (%2)</translation>
     </message>
@@ -2146,12 +2147,12 @@ Editor di schemi ladder e liste istruzioni per VPC, Vigor, CPM1 e PL110.</transl
         <translation>%1: il file è di %2 MB; un progetto è al massimo di %3 MB</translation>
     </message>
     <message>
-        <location line="+10"/>
+        <location line="+5"/>
         <source>%1: the file is larger than %2 MB, the most a project can be</source>
         <translation>%1: il file supera %2 MB, il massimo per un progetto</translation>
     </message>
     <message>
-        <location line="+18"/>
+        <location line="+20"/>
         <source>%1: cannot write the file (%2)</source>
         <translation>%1: impossibile scrivere il file (%2)</translation>
     </message>
@@ -3194,7 +3195,7 @@ Editor di schemi ladder e liste istruzioni per VPC, Vigor, CPM1 e PL110.</transl
         <translation>%1 richiede anche la word successiva, che non esiste</translation>
     </message>
     <message>
-        <location line="+24"/>
+        <location line="+31"/>
         <source>%1 needs %2 open blocks before it</source>
         <translation>%1 richiede %2 blocchi aperti prima di sé</translation>
     </message>
@@ -3204,7 +3205,7 @@ Editor di schemi ladder e liste istruzioni per VPC, Vigor, CPM1 e PL110.</transl
         <translation>più di %1 blocchi aperti</translation>
     </message>
     <message>
-        <location line="+34"/>
+        <location line="+32"/>
         <source>%1 is not a timer</source>
         <translation>%1 non è un temporizzatore</translation>
     </message>
@@ -3284,7 +3285,7 @@ Editor di schemi ladder e liste istruzioni per VPC, Vigor, CPM1 e PL110.</transl
         <translation>%1 senza MPS prima</translation>
     </message>
     <message>
-        <location line="+41"/>
+        <location line="+38"/>
         <source>%1 cannot be reset</source>
         <translation>%1 non può essere resettato</translation>
     </message>
@@ -3294,7 +3295,7 @@ Editor di schemi ladder e liste istruzioni per VPC, Vigor, CPM1 e PL110.</transl
         <translation>%1 non è un operando</translation>
     </message>
     <message>
-        <location line="+108"/>
+        <location line="+105"/>
         <source>the program has no target</source>
         <translation>il programma non ha una famiglia PLC</translation>
     </message>
@@ -3302,7 +3303,7 @@ Editor di schemi ladder e liste istruzioni per VPC, Vigor, CPM1 e PL110.</transl
 <context>
     <name>rung::simulator::Engine</name>
     <message>
-        <location filename="../simulator/engine_execute.cpp" line="+67"/>
+        <location filename="../simulator/engine_execute.cpp" line="+74"/>
         <source>set value %1 is not a BCD number; the instruction is skipped</source>
         <translation>il valore di preset %1 non è un numero BCD; l&apos;istruzione viene saltata</translation>
     </message>
@@ -3312,7 +3313,7 @@ Editor di schemi ladder e liste istruzioni per VPC, Vigor, CPM1 e PL110.</transl
         <translation>il risultato %1 è fuori da 0..9999; viene scritto %2</translation>
     </message>
     <message>
-        <location line="+364"/>
+        <location line="+350"/>
         <location line="+52"/>
         <source>division by zero; the destination is unchanged</source>
         <translation>divisione per zero; la destinazione resta invariata</translation>

@@ -2,6 +2,7 @@
 
 #include "model/checks.h"
 #include "model/convert.h"
+#include "model/file_read.h"
 #include "model/ladder_text.h"
 
 #include <QCoreApplication>
@@ -40,18 +41,19 @@ model::Diagnostic syntaxError(int line, int column, const QString &message) {
 } // namespace
 
 bool readInputFile(const QString &path, QByteArray *bytes, QString *error) {
-    QFile f(path);
-    if (!f.open(QIODevice::ReadOnly)) {
-        *error = Tr::tr("cannot read %1: %2").arg(path, f.errorString());
+    QString ioError;
+    switch (model::readAtMost(path, kMaxInputBytes, bytes, &ioError)) {
+    case model::ReadStatus::CannotOpen:
+        *error = Tr::tr("cannot read %1: %2").arg(path, ioError);
         return false;
-    }
-    *bytes = f.read(kMaxInputBytes + 1);
-    if (bytes->size() > kMaxInputBytes) {
+    case model::ReadStatus::TooLarge:
         *error = Tr::tr("%1: the file is larger than %2 MB, too large for a listing or a ladder "
                         "text")
                      .arg(path)
                      .arg(kMaxInputBytes / (1024 * 1024));
         return false;
+    case model::ReadStatus::Ok:
+        break;
     }
     return true;
 }

@@ -86,6 +86,8 @@ protected:
     void closeEvent(QCloseEvent *event) override;
 
 private:
+    // An instruction list or a symbol table opened, imported: read no further than this.
+    static constexpr qint64 kMaxTextFileBytes = 64 * 1024 * 1024;
     void buildActions();
     void buildDocks();
     void updateTitle();

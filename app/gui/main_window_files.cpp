@@ -4,6 +4,7 @@
 #include "editor/ladder_painter.h"
 #include "editor/ladder_view.h"
 
+#include "model/file_read.h"
 #include "model/project.h"
 
 #include <QComboBox>
@@ -259,12 +260,17 @@ bool MainWindow::openFile(const QString &path, const QString &targetId, bool qui
         project = *loaded;
     } else {
         // The target: as asked, else as the listing's first line names it, else the current.
-        QFile file(path);
-        if (!file.open(QIODevice::ReadOnly))
-            return fail(tr("%1: %2").arg(path, file.errorString()));
-        if (file.size() > 64 * 1024 * 1024)
+        QByteArray bytes;
+        QString ioError;
+        switch (model::readAtMost(path, kMaxTextFileBytes, &bytes, &ioError)) {
+        case model::ReadStatus::CannotOpen:
+            return fail(tr("%1: %2").arg(path, ioError));
+        case model::ReadStatus::TooLarge:
             return fail(tr("%1 is larger than 64 MB").arg(path));
-        const QString text = QString::fromUtf8(file.readAll());
+        case model::ReadStatus::Ok:
+            break;
+        }
+        const QString text = QString::fromUtf8(bytes);
         const QString id =
             targetId.isEmpty() ? model::listingTarget(text, m_document->target().id) : targetId;
         const model::Target *target = model::Target::byId(id.toLower());

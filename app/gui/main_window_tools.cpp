@@ -5,6 +5,7 @@
 #include "editor/symbols_csv.h"
 
 #include "model/convert.h"
+#include "model/file_read.h"
 #include "model/ladder_text.h"
 
 #include <QApplication>
@@ -250,13 +251,20 @@ bool MainWindow::exportSymbolsTo(const QString &path, QString *error) {
 }
 
 bool MainWindow::importSymbols(const QString &path, QString *error) {
-    QFile file(path);
-    if (!file.open(QIODevice::ReadOnly)) {
-        *error = tr("%1: %2").arg(path, file.errorString());
+    QByteArray bytes;
+    QString ioError;
+    switch (model::readAtMost(path, kMaxTextFileBytes, &bytes, &ioError)) {
+    case model::ReadStatus::CannotOpen:
+        *error = tr("%1: %2").arg(path, ioError);
         return false;
+    case model::ReadStatus::TooLarge:
+        *error = tr("%1 is larger than 64 MB").arg(path);
+        return false;
+    case model::ReadStatus::Ok:
+        break;
     }
     const editor::SymbolsCsv csv = editor::symbolsFromCsv(
-        m_document->target(), m_document->modelVariant(), QString::fromUtf8(file.readAll()));
+        m_document->target(), m_document->modelVariant(), QString::fromUtf8(bytes));
     if (!csv.ok()) {
         *error = tr("%1, line %2: %3").arg(path).arg(csv.errorLine).arg(csv.error);
         return false;

@@ -202,6 +202,20 @@ TEST_F(Fixture, UnreadableFileLeavesTheProgramAlone) {
     EXPECT_EQ(listing(), QStringLiteral("LD X0\nOUT Y0\nEND\n"));
 }
 
+// A device or a pipe has no size to ask: opening a listing or importing symbols from one
+// stops at the limit instead of reading forever, and the program stays as it was.
+TEST_F(Fixture, AnEndlessDeviceIsRefusedAtTheLimit) {
+    if (!QFile::exists(QStringLiteral("/dev/zero")))
+        GTEST_SKIP() << "no /dev/zero";
+    window.ilEditor()->setText(QStringLiteral("LD X0\nOUT Y0\nEND\n"));
+    window.applyListing();
+    EXPECT_FALSE(window.openFile(QStringLiteral("/dev/zero"), QStringLiteral("vigor"), true));
+    QString error;
+    EXPECT_FALSE(window.importSymbols(QStringLiteral("/dev/zero"), &error));
+    EXPECT_TRUE(error.contains(QStringLiteral("larger than 64 MB"))) << error.toStdString();
+    EXPECT_EQ(listing(), QStringLiteral("LD X0\nOUT Y0\nEND\n"));
+}
+
 // A listing names its PLC on the first line, as the command-line tool reads it too.
 TEST_F(Fixture, AListingOpensForTheTargetItsFirstLineNames) {
     QTemporaryDir dir;
