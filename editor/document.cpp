@@ -95,7 +95,6 @@ void Document::reset(const model::Target &target, const QString &modelName) {
 void Document::setProject(const model::Project &project, const QString &path) {
     m_project = project;
     m_project.program.target = m_project.target;
-    m_unsaved = false;
     m_undo.clear();
     setPath(path);
     refresh();
@@ -157,11 +156,7 @@ void Document::removeRungs(int first, int count) {
 }
 
 void Document::setSymbols(const std::vector<model::Symbol> &symbols) {
-    const auto same = [](const model::Symbol &a, const model::Symbol &b) {
-        return a.address == b.address && a.name == b.name && a.comment == b.comment;
-    };
-    if (std::equal(symbols.begin(), symbols.end(), m_project.symbols.begin(),
-                   m_project.symbols.end(), same))
+    if (symbols == m_project.symbols)
         return; // an undo step that changes nothing would only be in the way
     m_undo.push(new SymbolsCommand(this, m_project.symbols, symbols));
 }

@@ -30,14 +30,11 @@ public:
 
     QString path() const { return m_path; }
     void setPath(const QString &path);
-    bool isModified() const { return m_unsaved || !m_undo.isClean(); }
-    void markSaved() {
-        m_unsaved = false;
-        m_undo.setClean();
-    }
-    // The program holds work that no file has (recovered after a crash): it stays modified,
-    // whatever undo does, until it is saved.
-    void markUnsaved() { m_unsaved = true; }
+    bool isModified() const { return !m_undo.isClean(); }
+    void markSaved() { m_undo.setClean(); }
+    // The program holds work that no file has (recovered after a crash): no undo step is
+    // clean, so it stays modified, whatever undo does, until it is saved.
+    void markUnsaved() { m_undo.resetClean(); }
 
     // The canonical listing of the ladder and where each rung starts in it.
     const model::ToListingResult &listing() const { return m_listing; }
@@ -86,7 +83,6 @@ private:
 
     model::Project m_project;
     QString m_path;
-    bool m_unsaved = false;
     QUndoStack m_undo;
     model::ToListingResult m_listing;
     QString m_listingText;

@@ -17,6 +17,7 @@ struct Symbol {
     Address address;
     QString name;
     QString comment;
+    friend bool operator==(const Symbol &, const Symbol &) = default;
 };
 
 struct WatchList {

@@ -332,10 +332,14 @@ void MainWindow::refreshSymbols() {
 }
 
 void MainWindow::applyListing() {
-    m_ilTimer.stop();
+    applyListingAs(editor::Document::ListingStep::Own);
+}
+
+void MainWindow::applyListingAs(editor::Document::ListingStep step) {
+    m_ilTimer.stop(); // what is typed is applied now
     std::vector<model::Diagnostic> errors;
     m_editingListing = true;
-    const bool ok = m_document->setListing(m_il->text(), &errors);
+    const bool ok = m_document->setListing(m_il->text(), &errors, step);
     m_listingErrors = errors; // when ok: the fuzzy forms of the text as typed
     if (ok || errors.empty()) {
         m_ladder->setNotice(QString());
@@ -418,16 +422,8 @@ void MainWindow::applyFix(const model::Diagnostic &d) {
     QStringList after = d.fix->listing.split(QLatin1Char('\n'));
     if (after.size() > 1 && after.back().isEmpty())
         after.removeLast();
-    const auto follow = [this] {
-        m_ilTimer.stop(); // the replaced lines count as typed; they are applied here
-        std::vector<model::Diagnostic> errors;
-        m_editingListing = true;
-        if (m_document->setListing(m_il->text(), &errors, editor::Document::ListingStep::InPlace))
-            m_ladder->setNotice(QString());
-        m_listingErrors = errors;
-        refreshFromDocument();
-        m_editingListing = false;
-    };
+    // The replaced lines count as typed: they are applied into the fix's own undo step.
+    const auto follow = [this] { applyListingAs(editor::Document::ListingStep::InPlace); };
     m_document->undoStack()->push(
         new editor::ListingLinesCommand(m_il, first, before, after, follow, d.fix->label));
 }

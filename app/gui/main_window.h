@@ -86,6 +86,8 @@ protected:
     void closeEvent(QCloseEvent *event) override;
 
 private:
+    // applyListing(), as a step of its own or into the undo step already under way (a fix).
+    void applyListingAs(editor::Document::ListingStep step);
     // An instruction list or a symbol table opened, imported: read no further than this.
     static constexpr qint64 kMaxTextFileBytes = 64 * 1024 * 1024;
     void buildActions();

@@ -211,8 +211,7 @@ bool MainWindow::offerRecovery(bool ask) {
             continue;
         showProject(*project, origin);
         m_document->markUnsaved(); // no file has this work yet: closing asks to save it
-        updateTitle();
-        writeRecovery(); // now this instance's to keep
+        writeRecovery();           // now this instance's to keep
         return true;
     }
     return false;

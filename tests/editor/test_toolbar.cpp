@@ -174,6 +174,11 @@ TEST(Toolbar, TheEditMenuShowsTheKeysAndNoKeyIsAmbiguous) {
         QAction *a = editMenuEntry(window, QString::fromLatin1(text));
         ASSERT_NE(a, nullptr) << text;
         EXPECT_EQ(a->shortcut(), key) << text;
+        // The ladder's own keys: shown in the menu, handled by the ladder only, so F5 or
+        // Shift+Delete typed in the list is the list's.
+        if (key != QKeySequence(Qt::CTRL | Qt::Key_H)) {
+            EXPECT_EQ(a->shortcutContext(), Qt::WidgetShortcut) << text;
+        }
         EXPECT_TRUE(a->text().contains(QLatin1Char('&'))) << text << ": no access key";
     }
     for (const char *text : {"Import Symbols (CSV)...", "Export Symbols (CSV)..."}) {
