@@ -427,9 +427,15 @@ private:
         if (c.style == Constant::Style::Hex) {
             low = 0;
             high = wide ? 0xFFFFFFFFLL : 0xFFFF;
-        } else if (c.style == Constant::Style::Bcd || m_target.family == Family::Vpc) {
+        } else if (c.style == Constant::Style::Bcd) {
             low = 0;
-            high = 9999; // four BCD digits; VPC registers hold 0000..9999
+            high = 9999; // four BCD digits
+        } else if (const int digits = m_target.limits.decimalDigits; digits > 0) {
+            low = 0;
+            high = 1;
+            for (int k = 0; k < digits; ++k)
+                high *= 10;
+            --high; // VPC: 0000..9999
         }
         if (c.value < low || c.value > high) {
             error(lineNumber, token.column,

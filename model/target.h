@@ -214,6 +214,9 @@ struct Limits {
     bool allowsStack = false;         // MPS/MRD/MPP exist
     bool duplicateCoilIsError = true; // VPC/CPM1 error, Vigor warning
     bool outputNeedsCondition = true;
+    // Word values are decimal numbers of this many digits (VPC registers, timers and counters
+    // hold 0000..9999, seed 000 III); 0: binary words of Area::wordBits.
+    int decimalDigits = 0;
 };
 
 // A model (hardware variant) narrows the areas: I/O counts, analog channels.

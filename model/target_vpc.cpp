@@ -200,6 +200,7 @@ Target makeVpcTarget() {
     t.limits.maxBlocksInRow = 8;
     t.limits.allowsStack = false;
     t.limits.duplicateCoilIsError = true;
+    t.limits.decimalDigits = 4;
 
     // Discrete in / out / analog in / analog out per model (seed 000).
     struct Io {

@@ -236,7 +236,9 @@ CompileResult Compiler::run() {
                                                                : TransferKind::Assign);
             if (spec.negated)
                 s.flags |= kNegated;
-            if (m_sem.fourDigitTransfers)
+            // Four-digit decimal words (VPC, seed 000 III): a result outside 0..9999 wraps
+            // modulo 10000 and is a runtime diagnostic.
+            if (m_target.limits.decimalDigits == 4)
                 s.flags |= kDecimal4;
             s.dest = destOf(ins, 0, true, &s.width);
             s.x = sourceOf(ins, 1);

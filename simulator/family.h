@@ -20,9 +20,6 @@ struct FamilySemantics {
     const char *parallelIn = nullptr; // VPC i00..i11 -> p77
     const char *parallelInFirstBit = nullptr;
     int parallelBits = 0;
-    // VPC decimal registers, counters and timers hold 0000..9999 (seed 000 III): a transfer
-    // whose result leaves that range wraps modulo 10000 and is a runtime diagnostic.
-    bool fourDigitTransfers = false;
 };
 
 inline FamilySemantics familySemantics(model::Family family) {
@@ -38,7 +35,6 @@ inline FamilySemantics familySemantics(model::Family family) {
         s.parallelIn = "p77";
         s.parallelInFirstBit = "i00";
         s.parallelBits = 12;
-        s.fourDigitTransfers = true;
         break;
     case model::Family::Vigor:
         break;
