@@ -372,4 +372,13 @@ QString formatConstant(const Target &target, const Constant &constant) {
     return QString::number(constant.value);
 }
 
+Address systemAddress(const Target &target, SystemRole role) {
+    const SystemDevice *d = target.systemDevice(role);
+    if (!d)
+        return {};
+    const auto parsed = parseAddress(target, d->device);
+    const Address *a = std::get_if<Address>(&parsed);
+    return a ? *a : Address{};
+}
+
 } // namespace rung::model

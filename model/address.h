@@ -25,6 +25,10 @@ struct AddressError {
 std::variant<Address, AddressError> parseAddress(const Target &target, QStringView text,
                                                  const ModelVariant *model = nullptr);
 
+// The address of the target's system device with this role (VPC r88, CPM1 253.13 for
+// AlwaysOn); an invalid Address when the target has none.
+Address systemAddress(const Target &target, SystemRole role);
+
 // Print an address in the target's canonical listing form.
 QString formatAddress(const Target &target, const Address &address);
 

@@ -164,15 +164,12 @@ private:
     // The always-ON contact (VPC r88, CPM1 253.13): an output straight at the interlocked
     // branch point after a branch with contacts loads it, and the interlock does the rest.
     std::optional<Contact> alwaysOn() const {
-        const SystemDevice *d = m_target.systemDevice(SystemRole::AlwaysOn);
-        if (!d)
-            return std::nullopt;
-        const auto parsed = parseAddress(m_target, d->device);
-        if (!std::holds_alternative<Address>(parsed))
+        const Address on = systemAddress(m_target, SystemRole::AlwaysOn);
+        if (!on.valid())
             return std::nullopt;
         Contact c;
         Operand o;
-        o.address = std::get<Address>(parsed);
+        o.address = on;
         c.operands = {o};
         return c;
     }

@@ -19,11 +19,8 @@ public:
         , m_written(written) {
         // The always-ON relay (VPC r88, CPM1 253.13) is ON whatever the caller reads: the
         // converter loads it inside an interlock.
-        if (const SystemDevice *d = target ? target->systemDevice(SystemRole::AlwaysOn) : nullptr) {
-            const auto a = parseAddress(*target, d->device);
-            if (std::holds_alternative<Address>(a))
-                m_alwaysOn = std::get<Address>(a);
-        }
+        if (target)
+            m_alwaysOn = systemAddress(*target, SystemRole::AlwaysOn);
     }
 
     bool bit(const Operand &o) const {
