@@ -233,7 +233,22 @@ void MainWindow::refreshFromDocument() {
         m_il->showDiagnostics(m_listingErrors);
     }
     std::vector<int> stepOfLine;
-    {
+    if (m_editingListing) {
+        // The text as typed (with errors, or in a form of its own): its lines that parse
+        // keep their step numbers, as the parser counts them. A typing pause refreshes twice
+        // (the document's change, then the apply): the text is parsed for this once.
+        const QString typed = m_il->text();
+        if (typed != m_typedSteps.text || m_document->modelVariant() != m_typedSteps.model) {
+            const model::ParseResult parsed = model::parseInstructionList(
+                m_document->target(), typed, m_document->modelVariant());
+            std::vector<int> steps(static_cast<std::size_t>(std::max(0, m_il->lines())), -1);
+            for (const model::Instruction &ins : parsed.list.instructions)
+                if (ins.line >= 1 && ins.line <= static_cast<int>(steps.size()))
+                    steps[static_cast<std::size_t>(ins.line - 1)] = ins.step;
+            m_typedSteps = {m_document->modelVariant(), typed, std::move(steps)};
+        }
+        stepOfLine = m_typedSteps.steps;
+    } else {
         const auto &list = m_document->listing().list;
         const QStringList lines = m_document->listingText().split(QLatin1Char('\n'));
         std::size_t next = 0;
@@ -244,16 +259,6 @@ void MainWindow::refreshFromDocument() {
             else
                 stepOfLine.push_back(-1);
         }
-    }
-    if (m_editingListing) {
-        // The text as typed (with errors, or in a form of its own): its lines that parse
-        // keep their step numbers, as the parser counts them.
-        const model::ParseResult typed = model::parseInstructionList(
-            m_document->target(), m_il->text(), m_document->modelVariant());
-        stepOfLine.assign(static_cast<std::size_t>(std::max(0, m_il->lines())), -1);
-        for (const model::Instruction &ins : typed.list.instructions)
-            if (ins.line >= 1 && ins.line <= static_cast<int>(stepOfLine.size()))
-                stepOfLine[static_cast<std::size_t>(ins.line - 1)] = ins.step;
     }
     m_il->setStepNumbers(stepOfLine);
     refreshSymbols();

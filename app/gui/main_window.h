@@ -144,6 +144,11 @@ private:
     QString m_recoveryBase;                    // recovery file path without its suffix
     std::unique_ptr<QLockFile> m_recoveryLock; // held while this window lives
     std::vector<model::Diagnostic> m_listingErrors;
+    struct TypedSteps { // the step of each line of the text as typed, for the text it was read from
+        const model::ModelVariant *model = nullptr;
+        QString text;
+        std::vector<int> steps;
+    } m_typedSteps;
     bool m_editingListing = false;
     QString m_findText; // the device of the last Find, for F3 / Shift+F3
     bool m_sideBySide = false;
