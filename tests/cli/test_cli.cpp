@@ -415,7 +415,7 @@ TEST(CliCheck, ALadderWithoutItsHeaderIsASyntaxErrorWithOrWithoutTarget) {
 
 // ---- input size -----------------------------------------------------------------------------
 
-TEST(CliInput, AFileOverTheLimitIsRefusedWithoutReadingItAll) {
+TEST(CliInput, AFileOverTheLimitIsRefused) {
     QTemporaryDir dir;
     const QString path = dir.filePath(QStringLiteral("big.il"));
     {

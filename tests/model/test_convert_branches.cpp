@@ -250,9 +250,14 @@ TEST_P(BranchingLadders, ListingMeansWhatTheLadderMeans) {
     if (!target.limits.allowsStack && target.findInstruction(Op::Interlock)) {
         EXPECT_GT(interlocked, 50); // the interesting case does occur
     }
-    // Every contact here reads a coil of the rung, so refusals are frequent; they stay a
-    // minority where IL/ILC exist.
-    EXPECT_LT(refused, target.findInstruction(Op::Interlock) ? 250 : 500);
+    // Every contact here reads a coil of the rung, so refusals are frequent where the listing
+    // cannot hold a branch point: none with MPS, a minority with IL/ILC, and even on the PL110
+    // (neither) a good share converts (409 of 500 refused when this was written).
+    if (target.limits.allowsStack) {
+        EXPECT_EQ(refused, 0);
+    } else {
+        EXPECT_LT(refused, target.findInstruction(Op::Interlock) ? 250 : 450);
+    }
 }
 
 INSTANTIATE_TEST_SUITE_P(AllTargets, BranchingLadders,
