@@ -43,6 +43,15 @@ struct RealTargetSim {
         }
         return s;
     }
+    // n pulses on an input: one scan ON, one scan OFF, n times.
+    void pulses(const char *input, int n) {
+        for (int k = 0; k < n; ++k) {
+            in(input, true);
+            engine->scan();
+            in(input, false);
+            engine->scan();
+        }
+    }
     // Scans once per character of inputs ('1' = input ON) and collects the bit after each.
     std::string run(const char *input, const char *inputs, const char *output) {
         std::string out;

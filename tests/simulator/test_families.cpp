@@ -137,13 +137,13 @@ TEST(PowerCycle, VpcKeepsTimersCountersRegistersAndR72ToR87) {
     ASSERT_TRUE(f.result.ok()) << f.result.diagnostics.front().message.toStdString();
     f.engine->writeWord(f.at("p06"), 1234);
     f.engine->writeSetValue(f.at("t16"), 1000);
-    f.engine->setBit(f.at("i00"), true);
+    f.in("i00", true);
     f.engine->runScans(20);
     ASSERT_TRUE(f.bit("r71"));
     ASSERT_TRUE(f.bit("r72"));
     const std::int32_t timer = f.value("t16");
     ASSERT_GT(timer, 0);
-    f.engine->setBit(f.at("i00"), false);
+    f.in("i00", false);
     f.engine->powerCycle();
     EXPECT_FALSE(f.bit("r71"));
     EXPECT_TRUE(f.bit("r72"));
@@ -156,12 +156,12 @@ TEST(PowerCycle, Cpm1KeepsHoldingRelaysAndResetsTimers) {
     Family f(model::Family::Cpm1,
              "LD 000.00\nOUT HR00.00\nLD 000.00\nOUT 200.00\nLD 000.00\nTIM 000 #0100\nEND");
     ASSERT_TRUE(f.result.ok());
-    f.engine->setBit(f.at("000.00"), true);
+    f.in("000.00", true);
     f.engine->runScans(20);
     ASSERT_TRUE(f.bit("HR00.00"));
     ASSERT_TRUE(f.bit("200.00"));
     ASSERT_NE(f.value("TIM 000"), 0);
-    f.engine->setBit(f.at("000.00"), false);
+    f.in("000.00", false);
     f.engine->powerCycle();
     EXPECT_TRUE(f.bit("HR00.00"));
     EXPECT_FALSE(f.bit("200.00"));
@@ -176,13 +176,10 @@ TEST(PowerCycle, VigorLatchedRangesSurviveAndTheOthersClear) {
              "MOV K7 D199\nLD X0\nMOV K8 D200\nEND");
     ASSERT_TRUE(f.parsed.ok());
     ASSERT_TRUE(f.result.ok());
-    for (bool on : {true, false, true}) { // two rising edges: the counters hold 2
-        f.engine->setBit(f.at("X0"), on);
-        f.engine->scan();
-    }
+    f.run("X0", "101", "X0"); // two rising edges: the counters hold 2
     for (const char *d : {"M0", "M499", "M500", "S0", "S500"})
         ASSERT_TRUE(f.bit(d)) << d;
-    f.engine->setBit(f.at("X0"), false);
+    f.in("X0", false);
     f.engine->powerCycle();
     for (const char *d : {"M0", "M499", "S0"})
         EXPECT_FALSE(f.bit(d)) << d;
@@ -199,17 +196,12 @@ TEST(PowerCycle, Cpm1CountersKeepTheirValue) {
     Family f(model::Family::Cpm1, "LD 000.00\nLD 000.01\nCNT 001 #0010\nEND");
     ASSERT_TRUE(f.result.ok());
     f.engine->scan(); // CNT counts down from the set value
-    for (int k = 0; k < 3; ++k) {
-        f.engine->setBit(f.at("000.00"), true);
-        f.engine->scan();
-        f.engine->setBit(f.at("000.00"), false);
-        f.engine->scan();
-    }
+    f.pulses("000.00", 3);
     ASSERT_EQ(f.value("CNT 001"), 7);
     f.engine->powerCycle();
     EXPECT_EQ(f.value("CNT 001"), 7);
     f.engine->scan(); // the count goes on from there
-    f.engine->setBit(f.at("000.00"), true);
+    f.in("000.00", true);
     f.engine->scan();
     EXPECT_EQ(f.value("CNT 001"), 6);
 }
@@ -218,12 +210,7 @@ TEST(PowerCycle, VpcCountersKeepTheirCount) {
     Family f(model::Family::Vpc, "LD i00\nLD i01\nCNT16\nEND");
     ASSERT_TRUE(f.result.ok());
     f.engine->writeSetValue(f.at("c16"), 10);
-    for (int k = 0; k < 4; ++k) {
-        f.engine->setBit(f.at("i00"), true);
-        f.engine->scan();
-        f.engine->setBit(f.at("i00"), false);
-        f.engine->scan();
-    }
+    f.pulses("i00", 4);
     ASSERT_EQ(f.value("c16"), 4);
     f.engine->powerCycle();
     EXPECT_EQ(f.value("c16"), 4);
@@ -242,7 +229,7 @@ TEST(ParallelIo, VpcP77ReadsI00ToI11AsANumberWithI11TheMostSignificantBit) {
     Family f(model::Family::Vpc, "LD r88\nOUT p00,p77\nEND");
     ASSERT_TRUE(f.result.ok());
     for (const char *in : {"i00", "i03", "i11", "i12"})
-        f.engine->setBit(f.at(in), true);
+        f.in(in, true);
     f.engine->scan();
     EXPECT_EQ(f.value("p77"), 1 + 8 + 2048); // i12 is not part of it
     EXPECT_EQ(f.value("p00"), 2057);

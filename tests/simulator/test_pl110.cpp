@@ -35,14 +35,14 @@ TEST(Pl110Contacts, PActsOnThePowerFlowAtItsPlaceNotOnADevice) {
     // I1 stays ON; the flow reaching P rises when I2 turns ON.
     Pl110 s("LD I1\nAND I2\nP\nOUT Q1\nEND");
     ASSERT_TRUE(s.result.ok());
-    s.engine->setBit(s.at("I1"), true);
+    s.in("I1", true);
     EXPECT_EQ(s.run("I2", "011011", "Q1"), "010010");
 }
 
 TEST(Pl110Contacts, NotInvertsThePowerFlow) {
     Pl110 s("LD I1\nAND I2\nNOT\nOUT Q1\nEND");
     ASSERT_TRUE(s.result.ok());
-    s.engine->setBit(s.at("I1"), true);
+    s.in("I1", true);
     EXPECT_EQ(s.run("I2", "0110", "Q1"), "1001");
 }
 
@@ -50,20 +50,20 @@ TEST(Pl110Contacts, ImmediateInputContactReadsTheInput) {
     Pl110 s("LDII I1\nOUT Q1\nLDNII I1\nOUT Q2\nEND");
     ASSERT_TRUE(s.result.ok());
     EXPECT_EQ(s.run("I1", "0110", "Q1"), "0110");
-    EXPECT_FALSE(s.engine->bit(s.at("Q1")));
-    EXPECT_TRUE(s.engine->bit(s.at("Q2")));
+    EXPECT_FALSE(s.bit("Q1"));
+    EXPECT_TRUE(s.bit("Q2"));
 }
 
 TEST(Pl110Contacts, BistableContactFollowsTheBBit) {
     Pl110 s("LD B3\nOUT Q1\nLDN B3\nOUT Q2\nEND");
     ASSERT_TRUE(s.result.ok());
     s.engine->scan();
-    EXPECT_FALSE(s.engine->bit(s.at("Q1")));
-    EXPECT_TRUE(s.engine->bit(s.at("Q2")));
-    s.engine->setBit(s.at("B3"), true);
+    EXPECT_FALSE(s.bit("Q1"));
+    EXPECT_TRUE(s.bit("Q2"));
+    s.in("B3", true);
     s.engine->scan();
-    EXPECT_TRUE(s.engine->bit(s.at("Q1")));
-    EXPECT_FALSE(s.engine->bit(s.at("Q2")));
+    EXPECT_TRUE(s.bit("Q1"));
+    EXPECT_FALSE(s.bit("Q2"));
 }
 
 TEST(Pl110Contacts, IfComparesTwoValues) {
@@ -73,13 +73,13 @@ TEST(Pl110Contacts, IfComparesTwoValues) {
     s.engine->writeWord(s.at("V1"), 5);
     s.engine->writeWord(s.at("V2"), 7);
     s.engine->scan();
-    EXPECT_FALSE(s.engine->bit(s.at("Q1")));
-    EXPECT_FALSE(s.engine->bit(s.at("Q2")));
+    EXPECT_FALSE(s.bit("Q1"));
+    EXPECT_FALSE(s.bit("Q2"));
     s.engine->writeWord(s.at("V2"), -3);
     s.engine->writeWord(s.at("V1"), 6);
     s.engine->scan();
-    EXPECT_TRUE(s.engine->bit(s.at("Q1")));
-    EXPECT_TRUE(s.engine->bit(s.at("Q2")));
+    EXPECT_TRUE(s.bit("Q1"));
+    EXPECT_TRUE(s.bit("Q2"));
 }
 
 TEST(Pl110Contacts, BitContactReadsOneBitOfAWord) {
@@ -88,21 +88,21 @@ TEST(Pl110Contacts, BitContactReadsOneBitOfAWord) {
     ASSERT_TRUE(s.result.ok());
     s.engine->writeWord(s.at("V3"), 1 << 5 | 1);
     s.engine->scan();
-    EXPECT_TRUE(s.engine->bit(s.at("Q1")));
-    EXPECT_FALSE(s.engine->bit(s.at("Q2")));
+    EXPECT_TRUE(s.bit("Q1"));
+    EXPECT_FALSE(s.bit("Q2"));
     s.engine->writeWord(s.at("V3"), 1 << 4);
     s.engine->scan();
-    EXPECT_FALSE(s.engine->bit(s.at("Q1")));
-    EXPECT_TRUE(s.engine->bit(s.at("Q2")));
+    EXPECT_FALSE(s.bit("Q1"));
+    EXPECT_TRUE(s.bit("Q2"));
 }
 
 TEST(Pl110Coils, ImmediateOutputIsSeenByTheRestOfTheScan) {
     Pl110 s("LD I1\nOUTQI Q2\nLD Q2\nOUT M1\nEND");
     ASSERT_TRUE(s.result.ok());
     EXPECT_EQ(s.run("I1", "0110", "Q2"), "0110");
-    s.engine->setBit(s.at("I1"), true);
+    s.in("I1", true);
     s.engine->scan();
-    EXPECT_TRUE(s.engine->bit(s.at("M1"))); // the same scan, not one later
+    EXPECT_TRUE(s.bit("M1")); // OUTQI is simulated as a coil the rest of the scan reads
 }
 
 TEST(Pl110Coils, BistableCoilFlipsOnEachActivation) {
@@ -115,7 +115,7 @@ TEST(Pl110Coils, BistableCoilFlipsOnEachActivation) {
 TEST(Pl110Coils, BistableCoilStartsFromTheBitAsWritten) {
     Pl110 s("LD I1\nOUTB B2\nEND");
     ASSERT_TRUE(s.result.ok());
-    s.engine->setBit(s.at("B2"), true);
+    s.in("B2", true);
     EXPECT_EQ(s.run("I1", "0100", "B2"), "1000");
 }
 
@@ -124,13 +124,13 @@ TEST(Pl110Timer, TimeBaseOperandSetsTheUnitOfTheCurrentValue) {
     ASSERT_TRUE(s.parsed.ok());
     ASSERT_TRUE(s.result.ok());
     s.engine->setPeriodMs(100);
-    s.engine->setBit(s.at("I1"), true);
+    s.in("I1", true);
     s.engine->runScans(50); // the first scan starts the timer, 49 more are 4.9 s
-    EXPECT_EQ(s.engine->value(s.at("T1")), 4);
-    EXPECT_FALSE(s.engine->bit(s.at("T1")));
+    EXPECT_EQ(s.value("T1"), 4);
+    EXPECT_FALSE(s.bit("T1"));
     s.engine->scan();
-    EXPECT_EQ(s.engine->value(s.at("T1")), 5);
-    EXPECT_TRUE(s.engine->bit(s.at("T1")));
+    EXPECT_EQ(s.value("T1"), 5);
+    EXPECT_TRUE(s.bit("T1"));
 }
 
 TEST(Pl110Timer, OnlyTheThreeTimeBasesOfTheManualAreAccepted) {
@@ -145,10 +145,10 @@ TEST(Pl110Timer, OnlyTheThreeTimeBasesOfTheManualAreAccepted) {
 TEST(Pl110Timer, CurrentValueStopsAt32767) {
     Pl110 s("LD I1\nTON T1 100 10\nEND");
     ASSERT_TRUE(s.result.ok());
-    s.engine->setBit(s.at("I1"), true);
+    s.in("I1", true);
     s.engine->runScans(40000);
-    EXPECT_EQ(s.engine->value(s.at("T1")), 32767);
-    EXPECT_TRUE(s.engine->bit(s.at("T1")));
+    EXPECT_EQ(s.value("T1"), 32767);
+    EXPECT_TRUE(s.bit("T1"));
 }
 
 TEST(Pl110Counter, UpCountStaysAtTheMaximum) {
@@ -156,19 +156,19 @@ TEST(Pl110Counter, UpCountStaysAtTheMaximum) {
     ASSERT_TRUE(s.result.ok());
     ASSERT_TRUE(s.result.diagnostics.empty()); // MUP is simulated, not a SIM100 warning
     s.engine->writeWord(s.at("C1"), 32767);
-    s.engine->setBit(s.at("I1"), true);
+    s.in("I1", true);
     s.engine->scan();
-    EXPECT_EQ(s.engine->value(s.at("C1")), 32767);
-    EXPECT_TRUE(s.engine->bit(s.at("C1")));
+    EXPECT_EQ(s.value("C1"), 32767);
+    EXPECT_TRUE(s.bit("C1"));
 }
 
 TEST(Pl110Counter, DownCountOfMupStaysAtTheMinimum) {
     Pl110 s("LD I1\nLD I2\nLD I3\nMUP C1 10\nEND");
     ASSERT_TRUE(s.result.ok());
     s.engine->writeWord(s.at("C1"), -32768);
-    s.engine->setBit(s.at("I2"), true);
+    s.in("I2", true);
     s.engine->scan();
-    EXPECT_EQ(s.engine->value(s.at("C1")), -32768);
+    EXPECT_EQ(s.value("C1"), -32768);
 }
 
 TEST(Pl110IndirectMove, IndexOutsideTheAreaIsARuntimeErrorWithItsLine) {
@@ -177,7 +177,7 @@ TEST(Pl110IndirectMove, IndexOutsideTheAreaIsARuntimeErrorWithItsLine) {
     ASSERT_TRUE(s.result.ok());
     s.engine->writeWord(s.at("V0"), 9);
     s.engine->scan();
-    EXPECT_EQ(s.engine->value(s.at("V349")), 5);
+    EXPECT_EQ(s.value("V349"), 5);
     s.engine->writeWord(s.at("V0"), 10);
     s.engine->scan();
     s.engine->writeWord(s.at("V0"), -1);
@@ -185,7 +185,7 @@ TEST(Pl110IndirectMove, IndexOutsideTheAreaIsARuntimeErrorWithItsLine) {
     ASSERT_EQ(s.engine->runtimeErrors().size(), 1u); // reported once per step
     EXPECT_EQ(s.engine->runtimeErrors().front().line, 2);
     EXPECT_TRUE(s.engine->runtimeErrors().front().message.contains(QStringLiteral("0..9")));
-    EXPECT_EQ(s.engine->value(s.at("V339")), 0); // nothing written outside the vector
+    EXPECT_EQ(s.value("V339"), 0); // nothing written outside the vector
 }
 
 TEST(Pl110Boxes, UnmodelledBoxesAreReportedWhenTheSimulationStarts) {
@@ -200,15 +200,15 @@ TEST(Pl110Boxes, UnmodelledBoxesAreReportedWhenTheSimulationStarts) {
 TEST(Pl110Power, VariablesSurviveAPowerCycleMarkersAndTimersClear) {
     Pl110 s("LD I1\nOUT M1\nLD I1\nTONR T1 100 10\nLD I1\nMOV 42 V5\nEND");
     ASSERT_TRUE(s.result.ok());
-    s.engine->setBit(s.at("I1"), true);
+    s.in("I1", true);
     s.engine->runScans(10);
-    ASSERT_TRUE(s.engine->bit(s.at("M1")));
-    ASSERT_EQ(s.engine->value(s.at("T1")), 9);
-    s.engine->setBit(s.at("I1"), false);
+    ASSERT_TRUE(s.bit("M1"));
+    ASSERT_EQ(s.value("T1"), 9);
+    s.in("I1", false);
     s.engine->powerCycle();
-    EXPECT_EQ(s.engine->value(s.at("V5")), 42);
-    EXPECT_FALSE(s.engine->bit(s.at("M1")));
-    EXPECT_EQ(s.engine->value(s.at("T1")), 0);
+    EXPECT_EQ(s.value("V5"), 42);
+    EXPECT_FALSE(s.bit("M1"));
+    EXPECT_EQ(s.value("T1"), 0);
 }
 
 TEST(SimulationStart, ProgramWithACheckErrorDoesNotStart) {

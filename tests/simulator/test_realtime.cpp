@@ -1,11 +1,6 @@
 // Real-time mode: scans paced by the wall clock at a speed factor (Engine::runRealTime).
 
-#include "model/address.h"
-#include "model/il.h"
-#include "simulator/compiler.h"
-#include "simulator/engine.h"
-
-#include <gtest/gtest.h>
+#include "real_target_sim.h"
 
 #include <atomic>
 #include <chrono>
@@ -18,13 +13,9 @@ using namespace rung::simulator;
 // still beat the x1 run (that would take a stall of about 170 ms to break).
 TEST(EngineRealTime, ScansArePacedByTheWallClockAtTheSpeedFactor) {
     using Clock = std::chrono::steady_clock;
-    const model::Target &t = model::Target::get(model::Family::Vigor);
-    const model::ParseResult parsed =
-        model::parseInstructionList(t, QStringLiteral("LD M9000\nINC D0\nEND"));
-    ASSERT_TRUE(parsed.ok());
-    const CompileResult compiled = compileProgram(parsed.list);
-    ASSERT_TRUE(compiled.ok());
-    Engine engine(compiled.program);
+    test::RealTargetSim s(model::Family::Vigor, "LD M9000\nINC D0\nEND");
+    ASSERT_TRUE(s.result.ok());
+    Engine &engine = *s.engine;
     std::atomic<bool> stop{false};
     auto elapsedMs = [&](double factor) {
         const auto start = Clock::now();
@@ -37,6 +28,5 @@ TEST(EngineRealTime, ScansArePacedByTheWallClockAtTheSpeedFactor) {
     EXPECT_GE(fast, 15.0);
     EXPECT_LT(fast, slow);
     EXPECT_EQ(engine.statistics().timeMs, 400); // virtual time is exact either way
-    const auto d0 = std::get<model::Address>(model::parseAddress(t, QStringLiteral("D0")));
-    EXPECT_EQ(engine.value(d0), 40);
+    EXPECT_EQ(s.value("D0"), 40);
 }

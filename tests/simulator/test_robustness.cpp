@@ -15,8 +15,7 @@ using namespace rung::simulator;
 
 namespace {
 
-QString randomOperand(std::mt19937 &rng, const model::InstructionSpec &spec)
-{
+QString randomOperand(std::mt19937 &rng, const model::InstructionSpec &spec) {
     static const char *bits[] = {"X0", "X1", "Y0", "M3", "S1", "T0", "C1", "SM9000"};
     static const char *words[] = {"D0", "D1", "D99", "K0", "K3", "K-2", "T1", "C0"};
     auto pick = [&](const auto &table) {
@@ -45,8 +44,7 @@ QString randomOperand(std::mt19937 &rng, const model::InstructionSpec &spec)
 
 } // namespace
 
-TEST(Robustness, RandomInstructionSequencesCompileCleanlyOrReportALine)
-{
+TEST(Robustness, RandomInstructionSequencesCompileCleanlyOrReportALine) {
     auto target = test::makeTestTarget();
     std::mt19937 rng(20261122);
     int started = 0;
