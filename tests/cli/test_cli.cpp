@@ -10,6 +10,8 @@
 #include <QTemporaryDir>
 #include <QTranslator>
 
+#include "tests/test_files.h"
+
 #include <gtest/gtest.h>
 
 #include <memory>
@@ -34,11 +36,7 @@ CliRun cli(QStringList args) {
 }
 
 QString write(const QTemporaryDir &dir, const QString &name, const QByteArray &content) {
-    const QString path = dir.filePath(name);
-    QFile f(path);
-    f.open(QIODevice::WriteOnly);
-    f.write(content);
-    return path;
+    return rung::test::writeFile(dir, name, content);
 }
 
 } // namespace

@@ -9,6 +9,8 @@
 #include <QFile>
 #include <QTemporaryDir>
 
+#include "tests/test_files.h"
+
 #include <gtest/gtest.h>
 
 using namespace rung;
@@ -39,11 +41,8 @@ TEST(CommandLine, WhatCannotBeUsedSaysWhy) {
 
 TEST(CommandLine, AnInstructionListOpensForTheTargetGiven) {
     QTemporaryDir dir;
-    const QString path = dir.filePath(QStringLiteral("prog.il"));
-    QFile f(path);
-    ASSERT_TRUE(f.open(QIODevice::WriteOnly));
-    f.write("LD 000.01\nOUT 010.00\nEND(01)\n");
-    f.close();
+    const QString path =
+        test::writeFile(dir, QStringLiteral("prog.il"), "LD 000.01\nOUT 010.00\nEND(01)\n");
     const app::GuiArguments a = app::parseGuiArguments(
         {QStringLiteral("rungstudio"), path, QStringLiteral("--target"), QStringLiteral("cpm1")});
     ASSERT_TRUE(a.ok());
@@ -52,13 +51,6 @@ TEST(CommandLine, AnInstructionListOpensForTheTargetGiven) {
     EXPECT_EQ(window.document()->target().id, QStringLiteral("cpm1"));
     EXPECT_EQ(window.document()->listingText(), QStringLiteral("LD 000.01\nOUT 010.00\nEND(01)\n"));
     EXPECT_TRUE(window.document()->path().isEmpty()); // saving asks where: it is no project
-    // Without a target the listing opens for the family whose syntax reads it (only the
-    // CPM1 writes 000.01).
-    app::MainWindow guessed;
-    ASSERT_TRUE(guessed.openFile(path, QString(), true));
-    EXPECT_EQ(guessed.document()->target().id, QStringLiteral("cpm1"));
-    EXPECT_EQ(guessed.document()->listingText(),
-              QStringLiteral("LD 000.01\nOUT 010.00\nEND(01)\n"));
     // A target given that cannot read CPM1 addresses wins: the text opens as written, with
     // the errors marked, and the ladder waits for a valid program.
     app::MainWindow other;

@@ -20,6 +20,8 @@
 #include <QTreeWidget>
 #include <QUndoStack>
 
+#include "tests/test_files.h"
+
 #include <gtest/gtest.h>
 
 using namespace rung;
@@ -192,12 +194,9 @@ TEST_F(Fixture, UnreadableFileLeavesTheProgramAlone) {
     window.ilEditor()->setText(QStringLiteral("LD X0\nOUT Y0\nEND\n"));
     window.applyListing();
     QTemporaryDir dir;
-    const QString path = dir.filePath(QStringLiteral("broken.rung"));
-    QFile f(path);
-    ASSERT_TRUE(f.open(QIODevice::WriteOnly));
-    f.write(
+    const QString path = test::writeFile(
+        dir, QStringLiteral("broken.rung"),
         "{\"format\": \"rungstudio-project\", \"schema\": 1, \"target\": \"vigor\", \"rungs\": [");
-    f.close();
     EXPECT_FALSE(window.openFile(path, QString(), true));
     EXPECT_EQ(listing(), QStringLiteral("LD X0\nOUT Y0\nEND\n"));
 }
@@ -216,45 +215,28 @@ TEST_F(Fixture, AnEndlessDeviceIsRefusedAtTheLimit) {
     EXPECT_EQ(listing(), QStringLiteral("LD X0\nOUT Y0\nEND\n"));
 }
 
-// A listing names its PLC on the first line, as the command-line tool reads it too.
-TEST_F(Fixture, AListingOpensForTheTargetItsFirstLineNames) {
-    QTemporaryDir dir;
-    const QString path = dir.filePath(QStringLiteral("keep.il"));
-    QFile f(path);
-    ASSERT_TRUE(f.open(QIODevice::WriteOnly));
-    f.write("; target: cpm1\nLD 000.00\nOR 010.00\nAND NOT 000.01\nOUT 010.00\nEND(01)\n");
-    f.close();
-    ASSERT_EQ(window.document()->target().family, model::Family::Vigor);
-    ASSERT_TRUE(window.openFile(path, QString(), true));
-    EXPECT_EQ(window.document()->target().family, model::Family::Cpm1);
-    EXPECT_EQ(window.document()->ladder().rungs.size(), 2u);
-}
-
-// A listing that names no PLC opens for the one whose syntax it is written in: an exported
-// CPM1 listing reopened in a window set for Vigor is a CPM1 program, not a page of errors.
-TEST_F(Fixture, AListingWithoutItsTargetOpensForThePlcWhoseSyntaxItIs) {
-    QTemporaryDir dir;
-    const QString path = dir.filePath(QStringLiteral("keep.il"));
-    QFile f(path);
-    ASSERT_TRUE(f.open(QIODevice::WriteOnly));
-    f.write("LD 000.00\nOR 010.00\nAND NOT 000.01\nOUT 010.00\nEND(01)\n");
-    f.close();
-    ASSERT_EQ(window.document()->target().family, model::Family::Vigor);
-    ASSERT_TRUE(window.openFile(path, QString(), true));
-    EXPECT_EQ(window.document()->target().family, model::Family::Cpm1);
-    EXPECT_EQ(window.document()->ladder().rungs.size(), 2u);
+// A listing names its PLC on the first line, as the command-line tool reads it too; one that
+// names none opens for the PLC whose syntax it is written in: an exported CPM1 listing
+// reopened in a window set for Vigor is a CPM1 program, not a page of errors.
+TEST_F(Fixture, AListingOpensForTheTargetItNamesOrWhoseSyntaxItIs) {
+    const QByteArray program = "LD 000.00\nOR 010.00\nAND NOT 000.01\nOUT 010.00\nEND(01)\n";
+    for (const QByteArray &text : {"; target: cpm1\n" + program, program}) {
+        app::MainWindow window;
+        QTemporaryDir dir;
+        const QString path = test::writeFile(dir, QStringLiteral("keep.il"), text);
+        ASSERT_EQ(window.document()->target().family, model::Family::Vigor);
+        ASSERT_TRUE(window.openFile(path, QString(), true));
+        EXPECT_EQ(window.document()->target().family, model::Family::Cpm1) << text.constData();
+        EXPECT_EQ(window.document()->ladder().rungs.size(), 2u);
+    }
 }
 
 // A listing with errors is not refused: it opens as typed, its errors marked, so that the
 // user can fix it where it is shown; the ladder follows once it is valid.
 TEST_F(Fixture, AListingWithErrorsOpensAsTypedWithItsErrorsMarked) {
     QTemporaryDir dir;
-    const QString path = dir.filePath(QStringLiteral("broken.il"));
     const QString text = QStringLiteral("; target: vigor\nLD X0\nOUT Y0\nLD X8\nOUT Y1\nEND\n");
-    QFile f(path);
-    ASSERT_TRUE(f.open(QIODevice::WriteOnly));
-    f.write(text.toUtf8());
-    f.close();
+    const QString path = test::writeFile(dir, QStringLiteral("broken.il"), text.toUtf8());
     ASSERT_TRUE(window.openFile(path, QString(), true));
     EXPECT_EQ(window.ilEditor()->text(), text);
     EXPECT_EQ(listing(), QStringLiteral("END\n")); // the ladder: a new, empty program
@@ -450,11 +432,9 @@ TEST_F(Fixture, CrossReferenceListsEveryUse) {
 
 TEST_F(Fixture, SymbolsImportFromCsvAndShowByName) {
     QTemporaryDir dir;
-    const QString path = dir.filePath(QStringLiteral("symbols.csv"));
-    QFile f(path);
-    ASSERT_TRUE(f.open(QIODevice::WriteOnly));
-    f.write("device,name,comment\nX0,Start,\"green, big\"\nY0,Pump,\n");
-    f.close();
+    const QString path =
+        test::writeFile(dir, QStringLiteral("symbols.csv"),
+                        "device,name,comment\nX0,Start,\"green, big\"\nY0,Pump,\n");
     QString error;
     ASSERT_TRUE(window.importSymbols(path, &error)) << error.toStdString();
     const auto &symbols = window.document()->project().symbols;
