@@ -19,32 +19,6 @@
 
 namespace rung::editor {
 
-namespace {
-
-// Widens a rung without breaking it: a row that reached the old right end (its last cell
-// holds something, or the rung had no cells and the row feeds an output) is wired on through
-// the new cells, so its coil keeps its condition.
-void widenKeepingWires(model::Rung &rung, int rows, int columns) {
-    const int oldColumns = rung.columns;
-    std::vector<bool> reached(static_cast<std::size_t>(rung.rows), false);
-    for (int r = 0; r < rung.rows && oldColumns > 0; ++r)
-        reached[static_cast<std::size_t>(r)] =
-            rung.cell(r, oldColumns - 1).kind != model::CellKind::Empty;
-    if (oldColumns == 0)
-        for (int r = 0; r < rung.rows; ++r)
-            if (rung.outputs[static_cast<std::size_t>(r)])
-                for (int input : rung.boxInputRows(r))
-                    if (input < rung.rows)
-                        reached[static_cast<std::size_t>(input)] = true;
-    rung.resize(rows, columns);
-    for (std::size_t r = 0; r < reached.size(); ++r)
-        if (reached[r])
-            for (int c = oldColumns; c < rung.columns; ++c)
-                rung.cell(static_cast<int>(r), c) = model::Cell{model::CellKind::Wire, {}};
-}
-
-} // namespace
-
 CellCursor LadderView::cellAt(QPointF position) const {
     const LadderMetrics m = metrics();
     const double y = position.y() + verticalScrollBar()->value();
@@ -150,8 +124,7 @@ void LadderView::drawDrag(const CellCursor &from, const CellCursor &to) {
         const int first = std::min(from.column, to.column);
         const int last = std::min(std::max(from.column, to.column), m.gridColumns - 1);
         const model::Rung before = rung;
-        widenKeepingWires(rung, std::max(rung.rows, from.row + 1),
-                          std::max(rung.columns, last + 1));
+        rung.widenKeepingWires(std::max(rung.rows, from.row + 1), std::max(rung.columns, last + 1));
         for (int c = first; c <= last; ++c) {
             model::Cell &cell = rung.cell(from.row, c);
             if (cell.kind == model::CellKind::Empty)
@@ -168,7 +141,7 @@ void LadderView::drawDrag(const CellCursor &from, const CellCursor &to) {
     const int node = from.column >= m.gridColumns ? rung.columns : from.column;
     const int top = std::min(from.row, to.row);
     const int bottom = std::max(from.row, to.row);
-    widenKeepingWires(rung, std::max(rung.rows, bottom + 1), std::max(rung.columns, node));
+    rung.widenKeepingWires(std::max(rung.rows, bottom + 1), std::max(rung.columns, node));
     for (int r = top; r < bottom; ++r)
         rung.setLink(r, node, true);
     m_document->setRung(from.rung, rung, tr("Draw a vertical link"));

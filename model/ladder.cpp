@@ -8,6 +8,24 @@ Rung::Rung(int rowCount, int columnCount) {
     resize(rowCount, columnCount);
 }
 
+void Rung::widenKeepingWires(int newRows, int newColumns) {
+    const int oldColumns = columns;
+    std::vector<bool> reached(static_cast<std::size_t>(rows), false);
+    for (int r = 0; r < rows && oldColumns > 0; ++r)
+        reached[static_cast<std::size_t>(r)] = cell(r, oldColumns - 1).kind != CellKind::Empty;
+    if (oldColumns == 0)
+        for (int r = 0; r < rows; ++r)
+            if (outputs[static_cast<std::size_t>(r)])
+                for (int input : boxInputRows(r))
+                    if (input < rows)
+                        reached[static_cast<std::size_t>(input)] = true;
+    resize(newRows, newColumns);
+    for (std::size_t r = 0; r < reached.size(); ++r)
+        if (reached[r])
+            for (int c = oldColumns; c < columns; ++c)
+                cell(static_cast<int>(r), c) = Cell{CellKind::Wire, {}};
+}
+
 void Rung::resize(int newRows, int newColumns) {
     newRows = std::max(1, newRows);
     newColumns = std::max(0, newColumns);

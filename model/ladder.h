@@ -61,6 +61,10 @@ struct Rung {
         links[static_cast<std::size_t>(row * (columns + 1) + nodeColumn)] = on ? 1 : 0;
     }
     void resize(int newRows, int newColumns); // keeps what fits
+    // Grows the rung without breaking it: a row that reached the old right end (its last cell
+    // holds something, or the rung had no cells and the row feeds an output) is wired on
+    // through the new cells, so its coil keeps its condition.
+    void widenKeepingWires(int newRows, int newColumns);
     void insertRow(int row);
     void removeRow(int row);
     void insertColumn(int column);

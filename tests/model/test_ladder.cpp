@@ -105,6 +105,20 @@ TEST(LadderGrid, ResizeKeepsWhatFits) {
     EXPECT_EQ(r.links.size(), 1u);
 }
 
+// Widening a rung wires on the rows that reached its right end: their coils keep their
+// condition; a row that stopped short stays open; a new row is empty.
+TEST(LadderGrid, WideningKeepsTheWiresToTheCoils) {
+    Rung r = twoRowRung();
+    r.cell(1, 1) = Cell{}; // row 1 now stops short of the end
+    r.widenKeepingWires(3, 4);
+    EXPECT_EQ(r.columns, 4);
+    EXPECT_EQ(r.cell(0, 2).kind, CellKind::Wire);
+    EXPECT_EQ(r.cell(0, 3).kind, CellKind::Wire);
+    EXPECT_EQ(r.cell(1, 2).kind, CellKind::Empty);
+    EXPECT_EQ(r.cell(2, 3).kind, CellKind::Empty);
+    EXPECT_EQ(deviceAt(r, 0, 1), QStringLiteral("X1"));
+}
+
 TEST(LadderGrid, InsertRowShiftsRowsBelowAndKeepsLinksThrough) {
     Rung r = twoRowRung();
     r.insertRow(1);
