@@ -1,6 +1,6 @@
 #include "cross_reference_view.h"
 
-#include "model/address.h"
+#include "model/target/address.h"
 
 #include <QHeaderView>
 #include <QLineEdit>

@@ -2,7 +2,7 @@
 
 #include <algorithm>
 
-#include "model/ladder_text.h"
+#include "model/ladder/ladder_text.h"
 
 #include <QUndoCommand>
 

@@ -3,9 +3,9 @@
 // The open project as both views see it: the ladder is the program, the listing is derived
 // from it (canonical form), every change goes through the undo stack as one step.
 
-#include "model/checks.h"
-#include "model/convert.h"
-#include "model/project.h"
+#include "model/checks/checks.h"
+#include "model/convert/convert.h"
+#include "model/project/project.h"
 
 #include <QObject>
 #include <QUndoStack>

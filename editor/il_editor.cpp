@@ -1,6 +1,6 @@
 #include "il_editor.h"
 
-#include "model/address.h"
+#include "model/target/address.h"
 
 #include <Qsci/qsciapis.h>
 

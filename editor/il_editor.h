@@ -4,8 +4,8 @@
 // constants, comments in their own styles), step numbers in the margin, auto-completion and
 // call tips from the target's instruction table, and diagnostics as markers and annotations.
 
-#include "model/diagnostic.h"
-#include "model/target.h"
+#include "model/checks/diagnostic.h"
+#include "model/target/target.h"
 
 #include <Qsci/qscilexercustom.h>
 #include <Qsci/qsciscintilla.h>

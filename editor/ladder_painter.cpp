@@ -1,6 +1,6 @@
 #include "ladder_painter.h"
 
-#include "model/ladder_text.h"
+#include "model/ladder/ladder_text.h"
 
 #include <QPainterPath>
 

@@ -3,8 +3,8 @@
 // Draws rungs with QPainter: the screen, print, PDF, SVG and PNG export share it, so every
 // output looks the same and stays crisp at any scale.
 
-#include "model/diagnostic.h"
-#include "model/project.h"
+#include "model/checks/diagnostic.h"
+#include "model/project/project.h"
 
 #include <QFont>
 #include <QPainter>

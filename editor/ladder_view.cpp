@@ -1,6 +1,6 @@
 #include "ladder_view.h"
 
-#include "model/address.h"
+#include "model/target/address.h"
 
 #include <QCompleter>
 #include <QKeyEvent>

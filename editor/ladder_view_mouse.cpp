@@ -6,8 +6,8 @@
 
 #include "document.h"
 
-#include "model/address.h"
-#include "model/il.h"
+#include "model/target/address.h"
+#include "model/listing/il.h"
 
 #include <QApplication>
 #include <QKeyEvent>

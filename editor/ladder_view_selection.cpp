@@ -5,7 +5,7 @@
 
 #include "document.h"
 
-#include "model/address.h"
+#include "model/target/address.h"
 
 #include <QStringListModel>
 

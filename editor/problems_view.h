@@ -3,7 +3,7 @@
 // The problems panel: every finding of the checks, sorted by place, with its code and
 // severity. Activating one asks to show its place; a finding with a fix offers it.
 
-#include "model/diagnostic.h"
+#include "model/checks/diagnostic.h"
 
 #include <QTreeWidget>
 

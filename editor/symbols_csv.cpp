@@ -1,6 +1,6 @@
 #include "symbols_csv.h"
 
-#include "model/address.h"
+#include "model/target/address.h"
 
 #include <QCoreApplication>
 

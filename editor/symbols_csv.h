@@ -5,7 +5,7 @@
 // Reading also takes ';' as the separator (spreadsheets in many locales write it), a UTF-8
 // byte-order mark, CRLF line ends and an optional header row.
 
-#include "model/project.h"
+#include "model/project/project.h"
 
 #include <QString>
 

@@ -2,8 +2,8 @@
 
 #include "program.h"
 
-#include "model/checks.h"
-#include "model/il.h"
+#include "model/checks/checks.h"
+#include "model/listing/il.h"
 
 namespace rung::simulator {
 

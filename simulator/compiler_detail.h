@@ -7,7 +7,7 @@
 #include "compiler.h"
 #include "family.h"
 
-#include "model/address.h"
+#include "model/target/address.h"
 
 #include <QCoreApplication>
 

@@ -3,7 +3,7 @@
 // Per-family execution semantics the target tables do not carry (docs/simulator.md).
 // Device names here are parsed with the target's own address rules.
 
-#include "model/target.h"
+#include "model/target/target.h"
 
 namespace rung::simulator {
 

@@ -5,7 +5,7 @@
 // word per element. The layout is a pure function of the Target, so the simulator and the
 // online monitor build the same one and snapshots can be read without the engine.
 
-#include "model/target.h"
+#include "model/target/target.h"
 
 #include <cstdint>
 #include <vector>

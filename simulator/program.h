@@ -6,7 +6,7 @@
 
 #include "memory.h"
 
-#include "model/diagnostic.h"
+#include "model/checks/diagnostic.h"
 
 #include <cstdint>
 #include <memory>

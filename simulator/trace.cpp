@@ -1,6 +1,6 @@
 #include "trace.h"
 
-#include "model/address.h"
+#include "model/target/address.h"
 
 #include <QCoreApplication>
 #include <QRegularExpression>

@@ -612,19 +612,19 @@ Létradiagram- és utasításlista-szerkesztő VPC, Vigor, CPM1 és PL110 PLC-kh
         <translation>A begépelt lista hibás volt, most a létradiagram programját mutatja; a listában a Ctrl+Z visszahozza</translation>
     </message>
     <message>
-        <location line="+116"/>
+        <location line="+121"/>
         <source>&lt;b&gt;%1&lt;/b&gt;&lt;br&gt;Target: %2, model %3&lt;br&gt;%4, %5</source>
         <translation>&lt;b&gt;%1&lt;/b&gt;&lt;br&gt;PLC-család: %2, modell: %3&lt;br&gt;%4, %5</translation>
     </message>
     <message>
         <location line="+1"/>
-        <location line="+50"/>
-        <location filename="../app/gui/main_window_files.cpp" line="+487"/>
+        <location line="+54"/>
+        <location filename="../app/gui/main_window_files.cpp" line="+486"/>
         <source>Untitled</source>
         <translation>Névtelen</translation>
     </message>
     <message numerus="yes">
-        <location line="-48"/>
+        <location line="-52"/>
         <source>%n rung(s)</source>
         <translation>
             <numerusform>%n létrafok</numerusform>
@@ -638,7 +638,7 @@ Létradiagram- és utasításlista-szerkesztő VPC, Vigor, CPM1 és PL110 PLC-kh
         </translation>
     </message>
     <message>
-        <location line="+15"/>
+        <location line="+19"/>
         <source>The instruction list has %1: line %2: %3. The ladder shows the last valid program.</source>
         <translation>Az utasításlistában %1 van: %2. sor: %3. A létradiagram az utolsó érvényes programot mutatja.</translation>
     </message>
@@ -685,7 +685,7 @@ Létradiagram- és utasításlista-szerkesztő VPC, Vigor, CPM1 és PL110 PLC-kh
         <translation>&amp;Visszavonás: %1</translation>
     </message>
     <message>
-        <location filename="../app/gui/main_window_files.cpp" line="-285"/>
+        <location filename="../app/gui/main_window_files.cpp" line="-284"/>
         <source>Recover</source>
         <translation>Helyreállítás</translation>
     </message>
@@ -700,7 +700,7 @@ Létradiagram- és utasításlista-szerkesztő VPC, Vigor, CPM1 és PL110 PLC-kh
         <translation>A Rung Studio legutóbb nem záródott be szabályosan. Helyreállítja a(z) %1 nem mentett módosításait?</translation>
     </message>
     <message>
-        <location line="+49"/>
+        <location line="+48"/>
         <source>Cannot open the file</source>
         <translation>A fájl nem nyitható meg</translation>
     </message>
@@ -1033,7 +1033,7 @@ Létradiagram- és utasításlista-szerkesztő VPC, Vigor, CPM1 és PL110 PLC-kh
         <translation>Szimbólumok szerkesztése</translation>
     </message>
     <message>
-        <location line="+109"/>
+        <location line="+108"/>
         <source>Insert rung</source>
         <translation>Létrafok beszúrása</translation>
     </message>
@@ -1050,7 +1050,7 @@ Létradiagram- és utasításlista-szerkesztő VPC, Vigor, CPM1 és PL110 PLC-kh
         </translation>
     </message>
     <message>
-        <location line="+68"/>
+        <location line="+64"/>
         <source>Edit instruction list</source>
         <translation>Utasításlista szerkesztése</translation>
     </message>
@@ -1136,7 +1136,7 @@ Létradiagram- és utasításlista-szerkesztő VPC, Vigor, CPM1 és PL110 PLC-kh
     </message>
     <message>
         <location line="+22"/>
-        <location filename="../editor/ladder_view_mouse.cpp" line="+162"/>
+        <location filename="../editor/ladder_view_mouse.cpp" line="+135"/>
         <source>Draw a wire</source>
         <translation>Vezeték rajzolása</translation>
     </message>
@@ -1356,7 +1356,7 @@ Létradiagram- és utasításlista-szerkesztő VPC, Vigor, CPM1 és PL110 PLC-kh
 <context>
     <name>rung::model::Address</name>
     <message>
-        <location filename="../model/address.cpp" line="+124"/>
+        <location filename="../model/target/address.cpp" line="+124"/>
         <source>A device is missing</source>
         <translation>Hiányzik egy operandus</translation>
     </message>
@@ -1462,7 +1462,7 @@ Létradiagram- és utasításlista-szerkesztő VPC, Vigor, CPM1 és PL110 PLC-kh
 <context>
     <name>rung::model::Checks</name>
     <message>
-        <location filename="../model/checks_ladder.cpp" line="+70"/>
+        <location filename="../model/checks/checks_ladder.cpp" line="+70"/>
         <source>Reverse current: power would cross an element right to left to reach row %1</source>
         <translation>Visszáram: az áram jobbról balra haladna át egy elemen, hogy elérje a(z) %1. sort</translation>
     </message>
@@ -1487,7 +1487,7 @@ Létradiagram- és utasításlista-szerkesztő VPC, Vigor, CPM1 és PL110 PLC-kh
         <translation>Ez az érintkező nincs rajta egyetlen áramúton sem a bal oldali gyűjtősíntől egy kimenetig</translation>
     </message>
     <message>
-        <location filename="../model/checks_list.cpp" line="+174"/>
+        <location filename="../model/checks/checks_list.cpp" line="+174"/>
         <source>Rewrite the rung in the canonical form</source>
         <translation>A létrafok átírása kanonikus formára</translation>
     </message>
@@ -1561,7 +1561,7 @@ Létradiagram- és utasításlista-szerkesztő VPC, Vigor, CPM1 és PL110 PLC-kh
         </translation>
     </message>
     <message>
-        <location filename="../model/checks_nesting.cpp" line="+60"/>
+        <location filename="../model/checks/checks_nesting.cpp" line="+60"/>
         <source>END is missing</source>
         <translation>Hiányzik az END</translation>
     </message>
@@ -1636,7 +1636,7 @@ Létradiagram- és utasításlista-szerkesztő VPC, Vigor, CPM1 és PL110 PLC-kh
         <translation>A léptetőlánc nincs RET-tel lezárva</translation>
     </message>
     <message>
-        <location filename="../model/checks_list.cpp" line="+66"/>
+        <location filename="../model/checks/checks_list.cpp" line="+66"/>
         <source>Set value %1 is out of range</source>
         <translation>A(z) %1 beállított érték tartományon kívül esik</translation>
     </message>
@@ -1689,7 +1689,7 @@ Létradiagram- és utasításlista-szerkesztő VPC, Vigor, CPM1 és PL110 PLC-kh
 <context>
     <name>rung::model::Convert</name>
     <message>
-        <location filename="../model/convert_to_ladder.cpp" line="+197"/>
+        <location filename="../model/convert/convert_to_ladder.cpp" line="+197"/>
         <source>%1 joins the condition of a branch point in parallel with another block; the ladder cannot draw this: repeat the shared contacts in this branch instead</source>
         <translation>%1 egy elágazási pont feltételét párhuzamosan köti egy másik blokkal; ezt a létradiagram nem tudja megrajzolni: ismételje meg a közös érintkezőket ebben az ágban</translation>
     </message>
@@ -1730,7 +1730,7 @@ Létradiagram- és utasításlista-szerkesztő VPC, Vigor, CPM1 és PL110 PLC-kh
     </message>
     <message>
         <location line="+9"/>
-        <location filename="../model/convert_to_list.cpp" line="+50"/>
+        <location filename="../model/convert/convert_to_list.cpp" line="+50"/>
         <source>%1 has an input with no condition</source>
         <translation>%1 egyik bemenetének nincs feltétele</translation>
     </message>
@@ -1738,7 +1738,7 @@ Létradiagram- és utasításlista-szerkesztő VPC, Vigor, CPM1 és PL110 PLC-kh
         <location line="+14"/>
         <location line="+3"/>
         <location line="+5"/>
-        <location filename="../model/convert_to_list.cpp" line="+10"/>
+        <location filename="../model/convert/convert_to_list.cpp" line="+10"/>
         <source>%1 has no condition</source>
         <translation>%1 feltétel nélküli</translation>
     </message>
@@ -1760,7 +1760,7 @@ Létradiagram- és utasításlista-szerkesztő VPC, Vigor, CPM1 és PL110 PLC-kh
         </translation>
     </message>
     <message>
-        <location filename="../model/convert_to_list.cpp" line="+26"/>
+        <location filename="../model/convert/convert_to_list.cpp" line="+26"/>
         <source>%1 has no INV element</source>
         <translation>%1 nem tartalmaz INV elemet</translation>
     </message>
@@ -1775,7 +1775,7 @@ Létradiagram- és utasításlista-szerkesztő VPC, Vigor, CPM1 és PL110 PLC-kh
         <translation>%1 nem rendelkezik elágazási veremmel</translation>
     </message>
     <message>
-        <location line="+83"/>
+        <location line="+80"/>
         <source>A block cannot start with INV</source>
         <translation>Blokk nem kezdődhet INV-vel</translation>
     </message>
@@ -1808,7 +1808,7 @@ Létradiagram- és utasításlista-szerkesztő VPC, Vigor, CPM1 és PL110 PLC-kh
 <context>
     <name>rung::model::InstructionList</name>
     <message>
-        <location filename="../model/il_parse.cpp" line="+121"/>
+        <location filename="../model/listing/il_parse.cpp" line="+121"/>
         <source>Too many errors; the rest of the listing was not read</source>
         <translation>Túl sok hiba; a lista többi része nem lett beolvasva</translation>
     </message>
@@ -1834,12 +1834,12 @@ Létradiagram- és utasításlista-szerkesztő VPC, Vigor, CPM1 és PL110 PLC-kh
     </message>
     <message>
         <location line="+19"/>
-        <location line="+169"/>
+        <location line="+175"/>
         <source>&apos;%1...&apos; is too long for an operand</source>
         <translation>A(z) &apos;%1...&apos; túl hosszú egy operandushoz</translation>
     </message>
     <message numerus="yes">
-        <location line="-110"/>
+        <location line="-116"/>
         <source>%1 needs %n operand(s): %2</source>
         <translation>
             <numerusform>%1 %n operandust igényel: %2</numerusform>
@@ -1863,7 +1863,7 @@ Létradiagram- és utasításlista-szerkesztő VPC, Vigor, CPM1 és PL110 PLC-kh
         <translation>%1: a beállított érték BCD konstans (#0000..#9999) vagy csatorna</translation>
     </message>
     <message>
-        <location line="+23"/>
+        <location line="+29"/>
         <source>%1 is out of range: %2..%3 fit here</source>
         <translation>%1 tartományon kívül esik: itt %2..%3 lehet</translation>
     </message>
@@ -1906,7 +1906,7 @@ Létradiagram- és utasításlista-szerkesztő VPC, Vigor, CPM1 és PL110 PLC-kh
 <context>
     <name>rung::model::LadderText</name>
     <message>
-        <location filename="../model/ladder_text.cpp" line="+182"/>
+        <location filename="../model/ladder/ladder_text.cpp" line="+182"/>
         <source>A ladder text starts with &quot;LADDER &lt;target&gt; WIDTH &lt;n&gt;&quot;</source>
         <translation>A létra-szöveg így kezdődik: &quot;LADDER &lt;target&gt; WIDTH &lt;n&gt;&quot;</translation>
     </message>
@@ -1980,7 +1980,7 @@ Létradiagram- és utasításlista-szerkesztő VPC, Vigor, CPM1 és PL110 PLC-kh
 <context>
     <name>rung::model::Project</name>
     <message>
-        <location filename="../model/project.cpp" line="+110"/>
+        <location filename="../model/project/project.cpp" line="+110"/>
         <source>Line %1, column %2 (byte %3): the file is not valid JSON (%4)</source>
         <translation>%1. sor, %2. oszlop (%3. bájt): a fájl nem érvényes JSON (%4)</translation>
     </message>
@@ -2153,7 +2153,7 @@ Létradiagram- és utasításlista-szerkesztő VPC, Vigor, CPM1 és PL110 PLC-kh
 <context>
     <name>rung::model::Target</name>
     <message>
-        <location filename="../model/target_cpm1.cpp" line="+36"/>
+        <location filename="../model/target/target_cpm1.cpp" line="+36"/>
         <source>input channels</source>
         <translation>bemeneti csatornák</translation>
     </message>
@@ -2179,17 +2179,17 @@ Létradiagram- és utasításlista-szerkesztő VPC, Vigor, CPM1 és PL110 PLC-kh
     </message>
     <message>
         <location line="+5"/>
-        <location filename="../model/target_pl110.cpp" line="+79"/>
-        <location filename="../model/target_vigor.cpp" line="+115"/>
-        <location filename="../model/target_vpc.cpp" line="+61"/>
+        <location filename="../model/target/target_pl110.cpp" line="+79"/>
+        <location filename="../model/target/target_vigor.cpp" line="+115"/>
+        <location filename="../model/target/target_vpc.cpp" line="+61"/>
         <source>timers</source>
         <translation>időzítők</translation>
     </message>
     <message>
         <location line="+4"/>
-        <location filename="../model/target_pl110.cpp" line="+2"/>
-        <location filename="../model/target_vigor.cpp" line="+1"/>
-        <location filename="../model/target_vpc.cpp" line="+5"/>
+        <location filename="../model/target/target_pl110.cpp" line="+2"/>
+        <location filename="../model/target/target_vigor.cpp" line="+1"/>
+        <location filename="../model/target/target_vpc.cpp" line="+5"/>
         <source>counters</source>
         <translation>számlálók</translation>
     </message>
@@ -2215,14 +2215,14 @@ Létradiagram- és utasításlista-szerkesztő VPC, Vigor, CPM1 és PL110 PLC-kh
     </message>
     <message>
         <location line="+2"/>
-        <location filename="../model/target_pl110.cpp" line="+41"/>
-        <location filename="../model/target_vigor.cpp" line="+21"/>
+        <location filename="../model/target/target_pl110.cpp" line="+41"/>
+        <location filename="../model/target/target_vigor.cpp" line="+21"/>
         <source>ON for the first scan</source>
         <translation>az első ciklusban BE</translation>
     </message>
     <message>
         <location line="+2"/>
-        <location filename="../model/target_vigor.cpp" line="+8"/>
+        <location filename="../model/target/target_vigor.cpp" line="+8"/>
         <source>1 min clock</source>
         <translation>1 perces órajel</translation>
     </message>
@@ -2233,7 +2233,7 @@ Létradiagram- és utasításlista-szerkesztő VPC, Vigor, CPM1 és PL110 PLC-kh
     </message>
     <message>
         <location line="+2"/>
-        <location filename="../model/target_vpc.cpp" line="+57"/>
+        <location filename="../model/target/target_vpc.cpp" line="+57"/>
         <source>0.1 s clock</source>
         <translation>0,1 s-os órajel</translation>
     </message>
@@ -2244,8 +2244,8 @@ Létradiagram- és utasításlista-szerkesztő VPC, Vigor, CPM1 és PL110 PLC-kh
     </message>
     <message>
         <location line="+2"/>
-        <location filename="../model/target_vigor.cpp" line="-2"/>
-        <location filename="../model/target_vpc.cpp" line="+2"/>
+        <location filename="../model/target/target_vigor.cpp" line="-2"/>
+        <location filename="../model/target/target_vpc.cpp" line="+2"/>
         <source>1 s clock</source>
         <translation>1 s-os órajel</translation>
     </message>
@@ -2261,79 +2261,79 @@ Létradiagram- és utasításlista-szerkesztő VPC, Vigor, CPM1 és PL110 PLC-kh
     </message>
     <message>
         <location line="+5"/>
-        <location filename="../model/target_pl110.cpp" line="+23"/>
-        <location filename="../model/target_vigor.cpp" line="+56"/>
-        <location filename="../model/target_vpc.cpp" line="+5"/>
+        <location filename="../model/target/target_pl110.cpp" line="+23"/>
+        <location filename="../model/target/target_vigor.cpp" line="+56"/>
+        <location filename="../model/target/target_vpc.cpp" line="+5"/>
         <source>Start a block with a normally open contact</source>
         <translation>Blokk kezdése záró érintkezővel</translation>
     </message>
     <message>
         <location line="+3"/>
-        <location filename="../model/target_pl110.cpp" line="+1"/>
-        <location filename="../model/target_vigor.cpp" line="+3"/>
-        <location filename="../model/target_vpc.cpp" line="+1"/>
+        <location filename="../model/target/target_pl110.cpp" line="+1"/>
+        <location filename="../model/target/target_vigor.cpp" line="+3"/>
+        <location filename="../model/target/target_vpc.cpp" line="+1"/>
         <source>Start a block with a normally closed contact</source>
         <translation>Blokk kezdése nyitó érintkezővel</translation>
     </message>
     <message>
         <location line="+3"/>
-        <location filename="../model/target_pl110.cpp" line="+2"/>
-        <location filename="../model/target_vigor.cpp" line="+9"/>
-        <location filename="../model/target_vpc.cpp" line="+2"/>
+        <location filename="../model/target/target_pl110.cpp" line="+2"/>
+        <location filename="../model/target/target_vigor.cpp" line="+9"/>
+        <location filename="../model/target/target_vpc.cpp" line="+2"/>
         <source>Normally open contact in series</source>
         <translation>Záró érintkező sorosan</translation>
     </message>
     <message>
         <location line="+2"/>
-        <location filename="../model/target_pl110.cpp" line="+1"/>
-        <location filename="../model/target_vigor.cpp" line="+3"/>
-        <location filename="../model/target_vpc.cpp" line="+1"/>
+        <location filename="../model/target/target_pl110.cpp" line="+1"/>
+        <location filename="../model/target/target_vigor.cpp" line="+3"/>
+        <location filename="../model/target/target_vpc.cpp" line="+1"/>
         <source>Normally closed contact in series</source>
         <translation>Nyitó érintkező sorosan</translation>
     </message>
     <message>
         <location line="+2"/>
-        <location filename="../model/target_pl110.cpp" line="+3"/>
-        <location filename="../model/target_vigor.cpp" line="+9"/>
-        <location filename="../model/target_vpc.cpp" line="+2"/>
+        <location filename="../model/target/target_pl110.cpp" line="+3"/>
+        <location filename="../model/target/target_vigor.cpp" line="+9"/>
+        <location filename="../model/target/target_vpc.cpp" line="+2"/>
         <source>Normally open contact in parallel</source>
         <translation>Záró érintkező párhuzamosan</translation>
     </message>
     <message>
         <location line="+2"/>
-        <location filename="../model/target_pl110.cpp" line="+1"/>
-        <location filename="../model/target_vigor.cpp" line="+3"/>
-        <location filename="../model/target_vpc.cpp" line="+1"/>
+        <location filename="../model/target/target_pl110.cpp" line="+1"/>
+        <location filename="../model/target/target_vigor.cpp" line="+3"/>
+        <location filename="../model/target/target_vpc.cpp" line="+1"/>
         <source>Normally closed contact in parallel</source>
         <translation>Nyitó érintkező párhuzamosan</translation>
     </message>
     <message>
         <location line="+4"/>
-        <location filename="../model/target_pl110.cpp" line="+5"/>
-        <location filename="../model/target_vigor.cpp" line="+21"/>
-        <location filename="../model/target_vpc.cpp" line="+2"/>
+        <location filename="../model/target/target_pl110.cpp" line="+5"/>
+        <location filename="../model/target/target_vigor.cpp" line="+21"/>
+        <location filename="../model/target/target_vpc.cpp" line="+2"/>
         <source>Connect the last two blocks in series</source>
         <translation>Az utolsó két blokk soros kapcsolása</translation>
     </message>
     <message>
         <location line="+2"/>
-        <location filename="../model/target_pl110.cpp" line="+2"/>
-        <location filename="../model/target_vigor.cpp" line="+3"/>
-        <location filename="../model/target_vpc.cpp" line="+2"/>
+        <location filename="../model/target/target_pl110.cpp" line="+2"/>
+        <location filename="../model/target/target_vigor.cpp" line="+3"/>
+        <location filename="../model/target/target_vpc.cpp" line="+2"/>
         <source>Connect the last two blocks in parallel</source>
         <translation>Az utolsó két blokk párhuzamos kapcsolása</translation>
     </message>
     <message>
         <location line="+2"/>
-        <location filename="../model/target_pl110.cpp" line="+33"/>
-        <location filename="../model/target_vigor.cpp" line="+12"/>
-        <location filename="../model/target_vpc.cpp" line="+2"/>
+        <location filename="../model/target/target_pl110.cpp" line="+33"/>
+        <location filename="../model/target/target_vigor.cpp" line="+12"/>
+        <location filename="../model/target/target_vpc.cpp" line="+2"/>
         <source>Output coil</source>
         <translation>Kimeneti tekercs</translation>
     </message>
     <message>
         <location line="+2"/>
-        <location filename="../model/target_vpc.cpp" line="+3"/>
+        <location filename="../model/target/target_vpc.cpp" line="+3"/>
         <source>Inverted output coil</source>
         <translation>Negált kimeneti tekercs</translation>
     </message>
@@ -2354,13 +2354,13 @@ Létradiagram- és utasításlista-szerkesztő VPC, Vigor, CPM1 és PL110 PLC-kh
     </message>
     <message>
         <location line="+6"/>
-        <location filename="../model/target_vigor.cpp" line="+9"/>
+        <location filename="../model/target/target_vigor.cpp" line="+9"/>
         <source>ON for one scan on a rising edge</source>
         <translation>Egy ciklusig BE felfutó élre</translation>
     </message>
     <message>
         <location line="+4"/>
-        <location filename="../model/target_vigor.cpp" line="+3"/>
+        <location filename="../model/target/target_vigor.cpp" line="+3"/>
         <source>ON for one scan on a falling edge</source>
         <translation>Egy ciklusig BE lefutó élre</translation>
     </message>
@@ -2386,13 +2386,13 @@ Létradiagram- és utasításlista-szerkesztő VPC, Vigor, CPM1 és PL110 PLC-kh
     </message>
     <message>
         <location line="+7"/>
-        <location filename="../model/target_vpc.cpp" line="+41"/>
+        <location filename="../model/target/target_vpc.cpp" line="+41"/>
         <source>Interlock: what follows runs under this condition</source>
         <translation>Reteszelés: ami követi, ezzel a feltétellel fut</translation>
     </message>
     <message>
         <location line="+4"/>
-        <location filename="../model/target_vpc.cpp" line="+3"/>
+        <location filename="../model/target/target_vpc.cpp" line="+3"/>
         <source>Clear the interlock</source>
         <translation>A reteszelés feloldása</translation>
     </message>
@@ -2413,20 +2413,20 @@ Létradiagram- és utasításlista-szerkesztő VPC, Vigor, CPM1 és PL110 PLC-kh
     </message>
     <message>
         <location line="+5"/>
-        <location filename="../model/target_vigor.cpp" line="+23"/>
+        <location filename="../model/target/target_vigor.cpp" line="+23"/>
         <source>No operation</source>
         <translation>Nincs művelet</translation>
     </message>
     <message>
         <location line="+3"/>
-        <location filename="../model/target_pl110.cpp" line="+92"/>
-        <location filename="../model/target_vigor.cpp" line="-1"/>
-        <location filename="../model/target_vpc.cpp" line="+5"/>
+        <location filename="../model/target/target_pl110.cpp" line="+92"/>
+        <location filename="../model/target/target_vigor.cpp" line="-1"/>
+        <location filename="../model/target/target_vpc.cpp" line="+5"/>
         <source>End of the program</source>
         <translation>A program vége</translation>
     </message>
     <message>
-        <location filename="../model/target_pl110.cpp" line="-246"/>
+        <location filename="../model/target/target_pl110.cpp" line="-246"/>
         <source>IF contact: ON while S1 ? S2 is true</source>
         <translation>IF érintkező: BE, amíg S1 ? S2 igaz</translation>
     </message>
@@ -2462,13 +2462,13 @@ Létradiagram- és utasításlista-szerkesztő VPC, Vigor, CPM1 és PL110 PLC-kh
     </message>
     <message>
         <location line="+6"/>
-        <location filename="../model/target_vpc.cpp" line="-106"/>
+        <location filename="../model/target/target_vpc.cpp" line="-106"/>
         <source>analog inputs</source>
         <translation>analóg bemenetek</translation>
     </message>
     <message>
         <location line="+4"/>
-        <location filename="../model/target_vpc.cpp" line="+5"/>
+        <location filename="../model/target/target_vpc.cpp" line="+5"/>
         <source>analog outputs</source>
         <translation>analóg kimenetek</translation>
     </message>
@@ -2514,7 +2514,7 @@ Létradiagram- és utasításlista-szerkesztő VPC, Vigor, CPM1 és PL110 PLC-kh
     </message>
     <message>
         <location line="+2"/>
-        <location filename="../model/target_vpc.cpp" line="+25"/>
+        <location filename="../model/target/target_vpc.cpp" line="+25"/>
         <source>toggles every scan</source>
         <translation>minden ciklusban átvált</translation>
     </message>
@@ -2535,13 +2535,13 @@ Létradiagram- és utasításlista-szerkesztő VPC, Vigor, CPM1 és PL110 PLC-kh
     </message>
     <message>
         <location line="+2"/>
-        <location filename="../model/target_vigor.cpp" line="-145"/>
+        <location filename="../model/target/target_vigor.cpp" line="-145"/>
         <source>minimum scan time (0.1 ms)</source>
         <translation>legkisebb ciklusidő (0,1 ms)</translation>
     </message>
     <message>
         <location line="+2"/>
-        <location filename="../model/target_vigor.cpp" line="+2"/>
+        <location filename="../model/target/target_vigor.cpp" line="+2"/>
         <source>maximum scan time (0.1 ms)</source>
         <translation>legnagyobb ciklusidő (0,1 ms)</translation>
     </message>
@@ -2731,25 +2731,25 @@ Létradiagram- és utasításlista-szerkesztő VPC, Vigor, CPM1 és PL110 PLC-kh
         <translation>Kijelzőparaméter elhelyezése</translation>
     </message>
     <message>
-        <location filename="../model/target_vigor.cpp" line="-120"/>
+        <location filename="../model/target/target_vigor.cpp" line="-120"/>
         <source>Compare contact: ON while S1 ? S2</source>
         <translation>Összehasonlító érintkező: BE, amíg S1 ? S2</translation>
     </message>
     <message>
         <location line="+60"/>
-        <location filename="../model/target_vpc.cpp" line="-67"/>
+        <location filename="../model/target/target_vpc.cpp" line="-67"/>
         <source>inputs</source>
         <translation>bemenetek</translation>
     </message>
     <message>
         <location line="+5"/>
-        <location filename="../model/target_vpc.cpp" line="+5"/>
+        <location filename="../model/target/target_vpc.cpp" line="+5"/>
         <source>outputs</source>
         <translation>kimenetek</translation>
     </message>
     <message>
         <location line="+4"/>
-        <location filename="../model/target_vpc.cpp" line="+14"/>
+        <location filename="../model/target/target_vpc.cpp" line="+14"/>
         <source>auxiliary relays</source>
         <translation>segédrelék</translation>
     </message>
@@ -3049,7 +3049,7 @@ Létradiagram- és utasításlista-szerkesztő VPC, Vigor, CPM1 és PL110 PLC-kh
         <translation>Kommunikációs vagy konverziós utasítás</translation>
     </message>
     <message>
-        <location filename="../model/target_vpc.cpp" line="-41"/>
+        <location filename="../model/target/target_vpc.cpp" line="-41"/>
         <source>Compare contact between two decimal operands</source>
         <translation>Összehasonlító érintkező két decimális operandus között</translation>
     </message>
@@ -3283,7 +3283,7 @@ Létradiagram- és utasításlista-szerkesztő VPC, Vigor, CPM1 és PL110 PLC-kh
         <translation>%1 nem operandus</translation>
     </message>
     <message>
-        <location line="+105"/>
+        <location line="+107"/>
         <source>the program has no target</source>
         <translation>a programnak nincs célrendszere</translation>
     </message>

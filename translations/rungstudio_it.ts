@@ -612,19 +612,19 @@ Editor di schemi ladder e liste istruzioni per VPC, Vigor, CPM1 e PL110.</transl
         <translation>La lista digitata conteneva errori e ora mostra il programma dello schema ladder; Ctrl+Z nella lista la ripristina</translation>
     </message>
     <message>
-        <location line="+116"/>
+        <location line="+121"/>
         <source>&lt;b&gt;%1&lt;/b&gt;&lt;br&gt;Target: %2, model %3&lt;br&gt;%4, %5</source>
         <translation>&lt;b&gt;%1&lt;/b&gt;&lt;br&gt;Famiglia PLC: %2, modello %3&lt;br&gt;%4, %5</translation>
     </message>
     <message>
         <location line="+1"/>
-        <location line="+50"/>
-        <location filename="../app/gui/main_window_files.cpp" line="+487"/>
+        <location line="+54"/>
+        <location filename="../app/gui/main_window_files.cpp" line="+486"/>
         <source>Untitled</source>
         <translation>Senza titolo</translation>
     </message>
     <message numerus="yes">
-        <location line="-48"/>
+        <location line="-52"/>
         <source>%n rung(s)</source>
         <translation>
             <numerusform>%n segmento</numerusform>
@@ -640,7 +640,7 @@ Editor di schemi ladder e liste istruzioni per VPC, Vigor, CPM1 e PL110.</transl
         </translation>
     </message>
     <message>
-        <location line="+15"/>
+        <location line="+19"/>
         <source>The instruction list has %1: line %2: %3. The ladder shows the last valid program.</source>
         <translation>La lista istruzioni contiene %1: riga %2: %3. Lo schema ladder mostra l&apos;ultimo programma valido.</translation>
     </message>
@@ -687,7 +687,7 @@ Editor di schemi ladder e liste istruzioni per VPC, Vigor, CPM1 e PL110.</transl
         <translation>&amp;Annulla %1</translation>
     </message>
     <message>
-        <location filename="../app/gui/main_window_files.cpp" line="-285"/>
+        <location filename="../app/gui/main_window_files.cpp" line="-284"/>
         <source>Recover</source>
         <translation>Ripristino</translation>
     </message>
@@ -702,7 +702,7 @@ Editor di schemi ladder e liste istruzioni per VPC, Vigor, CPM1 e PL110.</transl
         <translation>Rung Studio non è stato chiuso correttamente l&apos;ultima volta. Ripristinare le modifiche non salvate di %1?</translation>
     </message>
     <message>
-        <location line="+49"/>
+        <location line="+48"/>
         <source>Cannot open the file</source>
         <translation>Impossibile aprire il file</translation>
     </message>
@@ -1037,7 +1037,7 @@ Editor di schemi ladder e liste istruzioni per VPC, Vigor, CPM1 e PL110.</transl
         <translation>Modifica simboli</translation>
     </message>
     <message>
-        <location line="+109"/>
+        <location line="+108"/>
         <source>Insert rung</source>
         <translation>Inserisci segmento</translation>
     </message>
@@ -1055,7 +1055,7 @@ Editor di schemi ladder e liste istruzioni per VPC, Vigor, CPM1 e PL110.</transl
         </translation>
     </message>
     <message>
-        <location line="+68"/>
+        <location line="+64"/>
         <source>Edit instruction list</source>
         <translation>Modifica lista istruzioni</translation>
     </message>
@@ -1141,7 +1141,7 @@ Editor di schemi ladder e liste istruzioni per VPC, Vigor, CPM1 e PL110.</transl
     </message>
     <message>
         <location line="+22"/>
-        <location filename="../editor/ladder_view_mouse.cpp" line="+162"/>
+        <location filename="../editor/ladder_view_mouse.cpp" line="+135"/>
         <source>Draw a wire</source>
         <translation>Disegna collegamento orizzontale</translation>
     </message>
@@ -1361,7 +1361,7 @@ Editor di schemi ladder e liste istruzioni per VPC, Vigor, CPM1 e PL110.</transl
 <context>
     <name>rung::model::Address</name>
     <message>
-        <location filename="../model/address.cpp" line="+124"/>
+        <location filename="../model/target/address.cpp" line="+124"/>
         <source>A device is missing</source>
         <translation>Manca un operando</translation>
     </message>
@@ -1467,7 +1467,7 @@ Editor di schemi ladder e liste istruzioni per VPC, Vigor, CPM1 e PL110.</transl
 <context>
     <name>rung::model::Checks</name>
     <message>
-        <location filename="../model/checks_ladder.cpp" line="+70"/>
+        <location filename="../model/checks/checks_ladder.cpp" line="+70"/>
         <source>Reverse current: power would cross an element right to left to reach row %1</source>
         <translation>Corrente inversa: la corrente attraverserebbe un elemento da destra a sinistra per raggiungere la riga %1</translation>
     </message>
@@ -1492,7 +1492,7 @@ Editor di schemi ladder e liste istruzioni per VPC, Vigor, CPM1 e PL110.</transl
         <translation>Questo contatto non si trova su alcun percorso dalla barra sinistra a un&apos;uscita</translation>
     </message>
     <message>
-        <location filename="../model/checks_list.cpp" line="+174"/>
+        <location filename="../model/checks/checks_list.cpp" line="+174"/>
         <source>Rewrite the rung in the canonical form</source>
         <translation>Riscrivi il segmento nella forma canonica</translation>
     </message>
@@ -1568,7 +1568,7 @@ Editor di schemi ladder e liste istruzioni per VPC, Vigor, CPM1 e PL110.</transl
         </translation>
     </message>
     <message>
-        <location filename="../model/checks_nesting.cpp" line="+60"/>
+        <location filename="../model/checks/checks_nesting.cpp" line="+60"/>
         <source>END is missing</source>
         <translation>Manca END</translation>
     </message>
@@ -1643,7 +1643,7 @@ Editor di schemi ladder e liste istruzioni per VPC, Vigor, CPM1 e PL110.</transl
         <translation>Lo step ladder non è chiuso con RET</translation>
     </message>
     <message>
-        <location filename="../model/checks_list.cpp" line="+66"/>
+        <location filename="../model/checks/checks_list.cpp" line="+66"/>
         <source>Set value %1 is out of range</source>
         <translation>Il valore di preset %1 è fuori campo</translation>
     </message>
@@ -1696,7 +1696,7 @@ Editor di schemi ladder e liste istruzioni per VPC, Vigor, CPM1 e PL110.</transl
 <context>
     <name>rung::model::Convert</name>
     <message>
-        <location filename="../model/convert_to_ladder.cpp" line="+197"/>
+        <location filename="../model/convert/convert_to_ladder.cpp" line="+197"/>
         <source>%1 joins the condition of a branch point in parallel with another block; the ladder cannot draw this: repeat the shared contacts in this branch instead</source>
         <translation>%1 collega la condizione di un punto di diramazione in parallelo a un altro blocco; lo schema ladder non può disegnarlo: ripeti invece i contatti comuni in questo ramo</translation>
     </message>
@@ -1739,7 +1739,7 @@ Editor di schemi ladder e liste istruzioni per VPC, Vigor, CPM1 e PL110.</transl
     </message>
     <message>
         <location line="+9"/>
-        <location filename="../model/convert_to_list.cpp" line="+50"/>
+        <location filename="../model/convert/convert_to_list.cpp" line="+50"/>
         <source>%1 has an input with no condition</source>
         <translation>%1 ha un ingresso senza condizione</translation>
     </message>
@@ -1747,7 +1747,7 @@ Editor di schemi ladder e liste istruzioni per VPC, Vigor, CPM1 e PL110.</transl
         <location line="+14"/>
         <location line="+3"/>
         <location line="+5"/>
-        <location filename="../model/convert_to_list.cpp" line="+10"/>
+        <location filename="../model/convert/convert_to_list.cpp" line="+10"/>
         <source>%1 has no condition</source>
         <translation>%1 non ha condizione</translation>
     </message>
@@ -1770,7 +1770,7 @@ Editor di schemi ladder e liste istruzioni per VPC, Vigor, CPM1 e PL110.</transl
         </translation>
     </message>
     <message>
-        <location filename="../model/convert_to_list.cpp" line="+26"/>
+        <location filename="../model/convert/convert_to_list.cpp" line="+26"/>
         <source>%1 has no INV element</source>
         <translation>%1 non ha un elemento INV</translation>
     </message>
@@ -1785,7 +1785,7 @@ Editor di schemi ladder e liste istruzioni per VPC, Vigor, CPM1 e PL110.</transl
         <translation>%1 non ha uno stack delle diramazioni</translation>
     </message>
     <message>
-        <location line="+83"/>
+        <location line="+80"/>
         <source>A block cannot start with INV</source>
         <translation>Un blocco non può iniziare con INV</translation>
     </message>
@@ -1818,7 +1818,7 @@ Editor di schemi ladder e liste istruzioni per VPC, Vigor, CPM1 e PL110.</transl
 <context>
     <name>rung::model::InstructionList</name>
     <message>
-        <location filename="../model/il_parse.cpp" line="+121"/>
+        <location filename="../model/listing/il_parse.cpp" line="+121"/>
         <source>Too many errors; the rest of the listing was not read</source>
         <translation>Troppi errori; il resto della lista non è stato letto</translation>
     </message>
@@ -1844,12 +1844,12 @@ Editor di schemi ladder e liste istruzioni per VPC, Vigor, CPM1 e PL110.</transl
     </message>
     <message>
         <location line="+19"/>
-        <location line="+169"/>
+        <location line="+175"/>
         <source>&apos;%1...&apos; is too long for an operand</source>
         <translation>&apos;%1...&apos; è troppo lungo per un operando</translation>
     </message>
     <message numerus="yes">
-        <location line="-110"/>
+        <location line="-116"/>
         <source>%1 needs %n operand(s): %2</source>
         <translation>
             <numerusform>%1 richiede %n operando: %2</numerusform>
@@ -1875,7 +1875,7 @@ Editor di schemi ladder e liste istruzioni per VPC, Vigor, CPM1 e PL110.</transl
         <translation>%1: un valore di preset è una costante BCD #0000..#9999 o un canale</translation>
     </message>
     <message>
-        <location line="+23"/>
+        <location line="+29"/>
         <source>%1 is out of range: %2..%3 fit here</source>
         <translation>%1 è fuori campo: qui sono ammessi %2..%3</translation>
     </message>
@@ -1918,7 +1918,7 @@ Editor di schemi ladder e liste istruzioni per VPC, Vigor, CPM1 e PL110.</transl
 <context>
     <name>rung::model::LadderText</name>
     <message>
-        <location filename="../model/ladder_text.cpp" line="+182"/>
+        <location filename="../model/ladder/ladder_text.cpp" line="+182"/>
         <source>A ladder text starts with &quot;LADDER &lt;target&gt; WIDTH &lt;n&gt;&quot;</source>
         <translation>Un testo ladder inizia con &quot;LADDER &lt;target&gt; WIDTH &lt;n&gt;&quot;</translation>
     </message>
@@ -1992,7 +1992,7 @@ Editor di schemi ladder e liste istruzioni per VPC, Vigor, CPM1 e PL110.</transl
 <context>
     <name>rung::model::Project</name>
     <message>
-        <location filename="../model/project.cpp" line="+110"/>
+        <location filename="../model/project/project.cpp" line="+110"/>
         <source>Line %1, column %2 (byte %3): the file is not valid JSON (%4)</source>
         <translation>Riga %1, colonna %2 (byte %3): il file non è JSON valido (%4)</translation>
     </message>
@@ -2165,7 +2165,7 @@ Editor di schemi ladder e liste istruzioni per VPC, Vigor, CPM1 e PL110.</transl
 <context>
     <name>rung::model::Target</name>
     <message>
-        <location filename="../model/target_cpm1.cpp" line="+36"/>
+        <location filename="../model/target/target_cpm1.cpp" line="+36"/>
         <source>input channels</source>
         <translation>canali di ingresso</translation>
     </message>
@@ -2191,17 +2191,17 @@ Editor di schemi ladder e liste istruzioni per VPC, Vigor, CPM1 e PL110.</transl
     </message>
     <message>
         <location line="+5"/>
-        <location filename="../model/target_pl110.cpp" line="+79"/>
-        <location filename="../model/target_vigor.cpp" line="+115"/>
-        <location filename="../model/target_vpc.cpp" line="+61"/>
+        <location filename="../model/target/target_pl110.cpp" line="+79"/>
+        <location filename="../model/target/target_vigor.cpp" line="+115"/>
+        <location filename="../model/target/target_vpc.cpp" line="+61"/>
         <source>timers</source>
         <translation>temporizzatori</translation>
     </message>
     <message>
         <location line="+4"/>
-        <location filename="../model/target_pl110.cpp" line="+2"/>
-        <location filename="../model/target_vigor.cpp" line="+1"/>
-        <location filename="../model/target_vpc.cpp" line="+5"/>
+        <location filename="../model/target/target_pl110.cpp" line="+2"/>
+        <location filename="../model/target/target_vigor.cpp" line="+1"/>
+        <location filename="../model/target/target_vpc.cpp" line="+5"/>
         <source>counters</source>
         <translation>contatori</translation>
     </message>
@@ -2227,14 +2227,14 @@ Editor di schemi ladder e liste istruzioni per VPC, Vigor, CPM1 e PL110.</transl
     </message>
     <message>
         <location line="+2"/>
-        <location filename="../model/target_pl110.cpp" line="+41"/>
-        <location filename="../model/target_vigor.cpp" line="+21"/>
+        <location filename="../model/target/target_pl110.cpp" line="+41"/>
+        <location filename="../model/target/target_vigor.cpp" line="+21"/>
         <source>ON for the first scan</source>
         <translation>ON per la prima scansione</translation>
     </message>
     <message>
         <location line="+2"/>
-        <location filename="../model/target_vigor.cpp" line="+8"/>
+        <location filename="../model/target/target_vigor.cpp" line="+8"/>
         <source>1 min clock</source>
         <translation>clock da 1 min</translation>
     </message>
@@ -2245,7 +2245,7 @@ Editor di schemi ladder e liste istruzioni per VPC, Vigor, CPM1 e PL110.</transl
     </message>
     <message>
         <location line="+2"/>
-        <location filename="../model/target_vpc.cpp" line="+57"/>
+        <location filename="../model/target/target_vpc.cpp" line="+57"/>
         <source>0.1 s clock</source>
         <translation>clock da 0,1 s</translation>
     </message>
@@ -2256,8 +2256,8 @@ Editor di schemi ladder e liste istruzioni per VPC, Vigor, CPM1 e PL110.</transl
     </message>
     <message>
         <location line="+2"/>
-        <location filename="../model/target_vigor.cpp" line="-2"/>
-        <location filename="../model/target_vpc.cpp" line="+2"/>
+        <location filename="../model/target/target_vigor.cpp" line="-2"/>
+        <location filename="../model/target/target_vpc.cpp" line="+2"/>
         <source>1 s clock</source>
         <translation>clock da 1 s</translation>
     </message>
@@ -2273,79 +2273,79 @@ Editor di schemi ladder e liste istruzioni per VPC, Vigor, CPM1 e PL110.</transl
     </message>
     <message>
         <location line="+5"/>
-        <location filename="../model/target_pl110.cpp" line="+23"/>
-        <location filename="../model/target_vigor.cpp" line="+56"/>
-        <location filename="../model/target_vpc.cpp" line="+5"/>
+        <location filename="../model/target/target_pl110.cpp" line="+23"/>
+        <location filename="../model/target/target_vigor.cpp" line="+56"/>
+        <location filename="../model/target/target_vpc.cpp" line="+5"/>
         <source>Start a block with a normally open contact</source>
         <translation>Inizia un blocco con un contatto normalmente aperto</translation>
     </message>
     <message>
         <location line="+3"/>
-        <location filename="../model/target_pl110.cpp" line="+1"/>
-        <location filename="../model/target_vigor.cpp" line="+3"/>
-        <location filename="../model/target_vpc.cpp" line="+1"/>
+        <location filename="../model/target/target_pl110.cpp" line="+1"/>
+        <location filename="../model/target/target_vigor.cpp" line="+3"/>
+        <location filename="../model/target/target_vpc.cpp" line="+1"/>
         <source>Start a block with a normally closed contact</source>
         <translation>Inizia un blocco con un contatto normalmente chiuso</translation>
     </message>
     <message>
         <location line="+3"/>
-        <location filename="../model/target_pl110.cpp" line="+2"/>
-        <location filename="../model/target_vigor.cpp" line="+9"/>
-        <location filename="../model/target_vpc.cpp" line="+2"/>
+        <location filename="../model/target/target_pl110.cpp" line="+2"/>
+        <location filename="../model/target/target_vigor.cpp" line="+9"/>
+        <location filename="../model/target/target_vpc.cpp" line="+2"/>
         <source>Normally open contact in series</source>
         <translation>Contatto normalmente aperto in serie</translation>
     </message>
     <message>
         <location line="+2"/>
-        <location filename="../model/target_pl110.cpp" line="+1"/>
-        <location filename="../model/target_vigor.cpp" line="+3"/>
-        <location filename="../model/target_vpc.cpp" line="+1"/>
+        <location filename="../model/target/target_pl110.cpp" line="+1"/>
+        <location filename="../model/target/target_vigor.cpp" line="+3"/>
+        <location filename="../model/target/target_vpc.cpp" line="+1"/>
         <source>Normally closed contact in series</source>
         <translation>Contatto normalmente chiuso in serie</translation>
     </message>
     <message>
         <location line="+2"/>
-        <location filename="../model/target_pl110.cpp" line="+3"/>
-        <location filename="../model/target_vigor.cpp" line="+9"/>
-        <location filename="../model/target_vpc.cpp" line="+2"/>
+        <location filename="../model/target/target_pl110.cpp" line="+3"/>
+        <location filename="../model/target/target_vigor.cpp" line="+9"/>
+        <location filename="../model/target/target_vpc.cpp" line="+2"/>
         <source>Normally open contact in parallel</source>
         <translation>Contatto normalmente aperto in parallelo</translation>
     </message>
     <message>
         <location line="+2"/>
-        <location filename="../model/target_pl110.cpp" line="+1"/>
-        <location filename="../model/target_vigor.cpp" line="+3"/>
-        <location filename="../model/target_vpc.cpp" line="+1"/>
+        <location filename="../model/target/target_pl110.cpp" line="+1"/>
+        <location filename="../model/target/target_vigor.cpp" line="+3"/>
+        <location filename="../model/target/target_vpc.cpp" line="+1"/>
         <source>Normally closed contact in parallel</source>
         <translation>Contatto normalmente chiuso in parallelo</translation>
     </message>
     <message>
         <location line="+4"/>
-        <location filename="../model/target_pl110.cpp" line="+5"/>
-        <location filename="../model/target_vigor.cpp" line="+21"/>
-        <location filename="../model/target_vpc.cpp" line="+2"/>
+        <location filename="../model/target/target_pl110.cpp" line="+5"/>
+        <location filename="../model/target/target_vigor.cpp" line="+21"/>
+        <location filename="../model/target/target_vpc.cpp" line="+2"/>
         <source>Connect the last two blocks in series</source>
         <translation>Collega in serie gli ultimi due blocchi</translation>
     </message>
     <message>
         <location line="+2"/>
-        <location filename="../model/target_pl110.cpp" line="+2"/>
-        <location filename="../model/target_vigor.cpp" line="+3"/>
-        <location filename="../model/target_vpc.cpp" line="+2"/>
+        <location filename="../model/target/target_pl110.cpp" line="+2"/>
+        <location filename="../model/target/target_vigor.cpp" line="+3"/>
+        <location filename="../model/target/target_vpc.cpp" line="+2"/>
         <source>Connect the last two blocks in parallel</source>
         <translation>Collega in parallelo gli ultimi due blocchi</translation>
     </message>
     <message>
         <location line="+2"/>
-        <location filename="../model/target_pl110.cpp" line="+33"/>
-        <location filename="../model/target_vigor.cpp" line="+12"/>
-        <location filename="../model/target_vpc.cpp" line="+2"/>
+        <location filename="../model/target/target_pl110.cpp" line="+33"/>
+        <location filename="../model/target/target_vigor.cpp" line="+12"/>
+        <location filename="../model/target/target_vpc.cpp" line="+2"/>
         <source>Output coil</source>
         <translation>Bobina di uscita</translation>
     </message>
     <message>
         <location line="+2"/>
-        <location filename="../model/target_vpc.cpp" line="+3"/>
+        <location filename="../model/target/target_vpc.cpp" line="+3"/>
         <source>Inverted output coil</source>
         <translation>Bobina di uscita negata</translation>
     </message>
@@ -2366,13 +2366,13 @@ Editor di schemi ladder e liste istruzioni per VPC, Vigor, CPM1 e PL110.</transl
     </message>
     <message>
         <location line="+6"/>
-        <location filename="../model/target_vigor.cpp" line="+9"/>
+        <location filename="../model/target/target_vigor.cpp" line="+9"/>
         <source>ON for one scan on a rising edge</source>
         <translation>ON per una scansione su un fronte di salita</translation>
     </message>
     <message>
         <location line="+4"/>
-        <location filename="../model/target_vigor.cpp" line="+3"/>
+        <location filename="../model/target/target_vigor.cpp" line="+3"/>
         <source>ON for one scan on a falling edge</source>
         <translation>ON per una scansione su un fronte di discesa</translation>
     </message>
@@ -2398,13 +2398,13 @@ Editor di schemi ladder e liste istruzioni per VPC, Vigor, CPM1 e PL110.</transl
     </message>
     <message>
         <location line="+7"/>
-        <location filename="../model/target_vpc.cpp" line="+41"/>
+        <location filename="../model/target/target_vpc.cpp" line="+41"/>
         <source>Interlock: what follows runs under this condition</source>
         <translation>Interblocco: ciò che segue viene eseguito sotto questa condizione</translation>
     </message>
     <message>
         <location line="+4"/>
-        <location filename="../model/target_vpc.cpp" line="+3"/>
+        <location filename="../model/target/target_vpc.cpp" line="+3"/>
         <source>Clear the interlock</source>
         <translation>Chiude l&apos;interblocco</translation>
     </message>
@@ -2425,20 +2425,20 @@ Editor di schemi ladder e liste istruzioni per VPC, Vigor, CPM1 e PL110.</transl
     </message>
     <message>
         <location line="+5"/>
-        <location filename="../model/target_vigor.cpp" line="+23"/>
+        <location filename="../model/target/target_vigor.cpp" line="+23"/>
         <source>No operation</source>
         <translation>Nessuna operazione</translation>
     </message>
     <message>
         <location line="+3"/>
-        <location filename="../model/target_pl110.cpp" line="+92"/>
-        <location filename="../model/target_vigor.cpp" line="-1"/>
-        <location filename="../model/target_vpc.cpp" line="+5"/>
+        <location filename="../model/target/target_pl110.cpp" line="+92"/>
+        <location filename="../model/target/target_vigor.cpp" line="-1"/>
+        <location filename="../model/target/target_vpc.cpp" line="+5"/>
         <source>End of the program</source>
         <translation>Fine del programma</translation>
     </message>
     <message>
-        <location filename="../model/target_pl110.cpp" line="-246"/>
+        <location filename="../model/target/target_pl110.cpp" line="-246"/>
         <source>IF contact: ON while S1 ? S2 is true</source>
         <translation>Contatto IF: ON mentre S1 ? S2 è vero</translation>
     </message>
@@ -2474,13 +2474,13 @@ Editor di schemi ladder e liste istruzioni per VPC, Vigor, CPM1 e PL110.</transl
     </message>
     <message>
         <location line="+6"/>
-        <location filename="../model/target_vpc.cpp" line="-106"/>
+        <location filename="../model/target/target_vpc.cpp" line="-106"/>
         <source>analog inputs</source>
         <translation>ingressi analogici</translation>
     </message>
     <message>
         <location line="+4"/>
-        <location filename="../model/target_vpc.cpp" line="+5"/>
+        <location filename="../model/target/target_vpc.cpp" line="+5"/>
         <source>analog outputs</source>
         <translation>uscite analogiche</translation>
     </message>
@@ -2526,7 +2526,7 @@ Editor di schemi ladder e liste istruzioni per VPC, Vigor, CPM1 e PL110.</transl
     </message>
     <message>
         <location line="+2"/>
-        <location filename="../model/target_vpc.cpp" line="+25"/>
+        <location filename="../model/target/target_vpc.cpp" line="+25"/>
         <source>toggles every scan</source>
         <translation>commuta a ogni scansione</translation>
     </message>
@@ -2547,13 +2547,13 @@ Editor di schemi ladder e liste istruzioni per VPC, Vigor, CPM1 e PL110.</transl
     </message>
     <message>
         <location line="+2"/>
-        <location filename="../model/target_vigor.cpp" line="-145"/>
+        <location filename="../model/target/target_vigor.cpp" line="-145"/>
         <source>minimum scan time (0.1 ms)</source>
         <translation>tempo di scansione minimo (0,1 ms)</translation>
     </message>
     <message>
         <location line="+2"/>
-        <location filename="../model/target_vigor.cpp" line="+2"/>
+        <location filename="../model/target/target_vigor.cpp" line="+2"/>
         <source>maximum scan time (0.1 ms)</source>
         <translation>tempo di scansione massimo (0,1 ms)</translation>
     </message>
@@ -2743,25 +2743,25 @@ Editor di schemi ladder e liste istruzioni per VPC, Vigor, CPM1 e PL110.</transl
         <translation>Posiziona un parametro del display</translation>
     </message>
     <message>
-        <location filename="../model/target_vigor.cpp" line="-120"/>
+        <location filename="../model/target/target_vigor.cpp" line="-120"/>
         <source>Compare contact: ON while S1 ? S2</source>
         <translation>Contatto di confronto: ON mentre S1 ? S2</translation>
     </message>
     <message>
         <location line="+60"/>
-        <location filename="../model/target_vpc.cpp" line="-67"/>
+        <location filename="../model/target/target_vpc.cpp" line="-67"/>
         <source>inputs</source>
         <translation>ingressi</translation>
     </message>
     <message>
         <location line="+5"/>
-        <location filename="../model/target_vpc.cpp" line="+5"/>
+        <location filename="../model/target/target_vpc.cpp" line="+5"/>
         <source>outputs</source>
         <translation>uscite</translation>
     </message>
     <message>
         <location line="+4"/>
-        <location filename="../model/target_vpc.cpp" line="+14"/>
+        <location filename="../model/target/target_vpc.cpp" line="+14"/>
         <source>auxiliary relays</source>
         <translation>relè ausiliari</translation>
     </message>
@@ -3061,7 +3061,7 @@ Editor di schemi ladder e liste istruzioni per VPC, Vigor, CPM1 e PL110.</transl
         <translation>Istruzione di comunicazione o di conversione</translation>
     </message>
     <message>
-        <location filename="../model/target_vpc.cpp" line="-41"/>
+        <location filename="../model/target/target_vpc.cpp" line="-41"/>
         <source>Compare contact between two decimal operands</source>
         <translation>Contatto di confronto tra due operandi decimali</translation>
     </message>
@@ -3295,7 +3295,7 @@ Editor di schemi ladder e liste istruzioni per VPC, Vigor, CPM1 e PL110.</transl
         <translation>%1 non è un operando</translation>
     </message>
     <message>
-        <location line="+105"/>
+        <location line="+107"/>
         <source>the program has no target</source>
         <translation>il programma non ha una famiglia PLC</translation>
     </message>

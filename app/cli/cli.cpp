@@ -3,9 +3,9 @@
 #include "cli_common.h"
 #include "cli_simulate.h"
 
-#include "model/checks.h"
-#include "model/convert.h"
-#include "model/ladder_text.h"
+#include "model/checks/checks.h"
+#include "model/convert/convert.h"
+#include "model/ladder/ladder_text.h"
 
 #include <QCoreApplication>
 #include <QSaveFile>

@@ -1,9 +1,9 @@
 #include "cli_common.h"
 
-#include "model/checks.h"
-#include "model/convert.h"
-#include "model/file_read.h"
-#include "model/ladder_text.h"
+#include "model/checks/checks.h"
+#include "model/convert/convert.h"
+#include "model/project/file_read.h"
+#include "model/ladder/ladder_text.h"
 
 #include <QCoreApplication>
 #include <QFile>

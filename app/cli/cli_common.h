@@ -3,8 +3,8 @@
 // What every command does first: read FILE as a listing, a ladder text or a project, for the
 // target named by --target, by the file itself, or by a "; target: NAME" first line.
 
-#include "model/diagnostic.h"
-#include "model/project.h"
+#include "model/checks/diagnostic.h"
+#include "model/project/project.h"
 
 #include <QStringList>
 #include <QTextStream>

@@ -2,7 +2,7 @@
 
 #include "cli_common.h"
 
-#include "model/il.h"
+#include "model/listing/il.h"
 #include "simulator/compiler.h"
 #include "simulator/trace.h"
 

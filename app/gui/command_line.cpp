@@ -1,6 +1,6 @@
 #include "command_line.h"
 
-#include "model/target.h"
+#include "model/target/target.h"
 
 #include <QCoreApplication>
 

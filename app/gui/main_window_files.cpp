@@ -4,8 +4,8 @@
 #include "editor/ladder_painter.h"
 #include "editor/ladder_view.h"
 
-#include "model/file_read.h"
-#include "model/project.h"
+#include "model/project/file_read.h"
+#include "model/project/project.h"
 
 #include <QComboBox>
 #include <QCoreApplication>

@@ -4,9 +4,9 @@
 #include "editor/ladder_view.h"
 #include "editor/symbols_csv.h"
 
-#include "model/convert.h"
-#include "model/file_read.h"
-#include "model/ladder_text.h"
+#include "model/convert/convert.h"
+#include "model/project/file_read.h"
+#include "model/ladder/ladder_text.h"
 
 #include <QApplication>
 #include <QClipboard>

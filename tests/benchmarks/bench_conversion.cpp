@@ -5,8 +5,8 @@
 
 #include "tests/model/random_program.cpp"
 
-#include "model/convert.h"
-#include "model/ladder_text.h"
+#include "model/convert/convert.h"
+#include "model/ladder/ladder_text.h"
 
 #include <benchmark/benchmark.h>
 

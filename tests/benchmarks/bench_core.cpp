@@ -5,8 +5,8 @@
 
 #include "tests/model/random_program.cpp"
 
-#include "model/checks.h"
-#include "model/convert.h"
+#include "model/checks/checks.h"
+#include "model/convert/convert.h"
 
 #include <benchmark/benchmark.h>
 

@@ -5,7 +5,7 @@
 #include "app/gui/main_window.h"
 #include "editor/ladder_view.h"
 
-#include "model/convert.h"
+#include "model/convert/convert.h"
 
 #include <QApplication>
 #include <QFile>

@@ -5,7 +5,7 @@
 
 #include "tests/simulator/sim_test_target.h"
 
-#include "model/il.h"
+#include "model/listing/il.h"
 #include "simulator/compiler.h"
 #include "simulator/engine.h"
 

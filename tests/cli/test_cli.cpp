@@ -1,6 +1,6 @@
 #include "app/cli/cli.h"
 
-#include "model/project.h"
+#include "model/project/project.h"
 
 #include <QCoreApplication>
 #include <QDir>

@@ -5,7 +5,7 @@
 #include "editor/document.h"
 #include "editor/il_editor.h"
 #include "editor/ladder_view.h"
-#include "model/address.h"
+#include "model/target/address.h"
 
 #include <QLineEdit>
 #include <QTest>

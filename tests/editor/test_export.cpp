@@ -3,7 +3,7 @@
 
 #include "app/gui/main_window.h"
 #include "editor/ladder_view.h"
-#include "model/address.h"
+#include "model/target/address.h"
 
 #include <QDate>
 #include <QFile>

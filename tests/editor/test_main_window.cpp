@@ -3,7 +3,7 @@
 #include "editor/ladder_view.h"
 #include "editor/problems_view.h"
 
-#include "model/ladder_text.h"
+#include "model/ladder/ladder_text.h"
 
 #include <QAction>
 #include <QApplication>

@@ -7,7 +7,7 @@
 #include "editor/il_editor.h"
 #include "editor/problems_view.h"
 
-#include "model/ladder_text.h"
+#include "model/ladder/ladder_text.h"
 
 #include <QUndoStack>
 

@@ -5,7 +5,7 @@
 #include "app/gui/main_window.h"
 #include "editor/ladder_view.h"
 #include "editor/symbols_csv.h"
-#include "model/address.h"
+#include "model/target/address.h"
 
 #include <QDockWidget>
 #include <QFile>

@@ -2,9 +2,9 @@
 // program, and reaching every room (menus, diagnostics of the model, QScintilla's own menu).
 #include "app/gui/main_window.h"
 #include "editor/il_editor.h"
-#include "model/checks.h"
-#include "model/il.h"
-#include "model/target.h"
+#include "model/checks/checks.h"
+#include "model/listing/il.h"
+#include "model/target/target.h"
 
 #include <QApplication>
 #include <QFile>

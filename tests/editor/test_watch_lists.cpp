@@ -4,7 +4,7 @@
 #include "app/gui/main_window.h"
 #include "editor/ladder_view.h"
 #include "editor/watch_list_view.h"
-#include "model/address.h"
+#include "model/target/address.h"
 
 #include <QTemporaryDir>
 #include <QTest>

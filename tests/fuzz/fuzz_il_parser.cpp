@@ -1,7 +1,7 @@
 // Any bytes as a listing of any target: parse, and when it parses, draw it as a ladder and
 // write it back. Nothing may crash, hang or trip a sanitizer.
-#include "model/convert.h"
-#include "model/il.h"
+#include "model/convert/convert.h"
+#include "model/listing/il.h"
 
 #include <cstdint>
 

@@ -1,7 +1,7 @@
 // Any bytes as a project file: load, and when it loads, save it to JSON, load that again and
 // check the second save writes the same bytes.
-#include "model/checks.h"
-#include "model/project.h"
+#include "model/checks/checks.h"
+#include "model/project/project.h"
 
 #include <cstdint>
 

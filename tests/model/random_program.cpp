@@ -1,6 +1,6 @@
 #include "random_program.h"
 
-#include "model/address.h"
+#include "model/target/address.h"
 
 #include <QStringList>
 

@@ -5,7 +5,7 @@
 // has a branch stack, IL/ILC branch forms where it has none, two-input boxes where it has one.
 // A rung may read the devices its own outputs write.
 
-#include "model/target.h"
+#include "model/target/target.h"
 
 #include <QString>
 

@@ -1,4 +1,4 @@
-#include "model/address.h"
+#include "model/target/address.h"
 
 #include <gtest/gtest.h>
 

@@ -1,6 +1,6 @@
-#include "model/checks.h"
-#include "model/convert.h"
-#include "model/ladder_text.h"
+#include "model/checks/checks.h"
+#include "model/convert/convert.h"
+#include "model/ladder/ladder_text.h"
 #include "random_program.h"
 
 #include <gtest/gtest.h>

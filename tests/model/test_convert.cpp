@@ -1,10 +1,10 @@
 #include "convert_test_util.h"
 #include "random_program.h"
 
-#include "model/convert.h"
-#include "model/ladder_text.h"
-#include "model/logic.h"
-#include "model/network.h"
+#include "model/convert/convert.h"
+#include "model/ladder/ladder_text.h"
+#include "model/ladder/logic.h"
+#include "model/ladder/network.h"
 
 #include <gtest/gtest.h>
 

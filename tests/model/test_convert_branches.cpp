@@ -4,7 +4,7 @@
 #include "convert_test_util.h"
 #include "random_program.h"
 
-#include "model/network.h"
+#include "model/ladder/network.h"
 
 #include <gtest/gtest.h>
 

@@ -1,7 +1,7 @@
 // The listing parser and printer on every target's listing: the seed listings verbatim,
 // parse -> print -> parse identity, aliases, step numbers, and every error with its place.
 
-#include "model/il.h"
+#include "model/listing/il.h"
 
 #include <QDir>
 #include <QFile>

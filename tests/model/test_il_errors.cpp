@@ -1,6 +1,6 @@
 // Listing parser errors (each with its line and column) and robustness against bad input.
 
-#include "model/il.h"
+#include "model/listing/il.h"
 
 #include <gtest/gtest.h>
 

@@ -1,11 +1,11 @@
-// The ladder grid (model/ladder.h), its plain-text drawing (docs/ladder-text.md) and the
-// reverse-current analysis (model/reverse_current.h).
+// The ladder grid (model/ladder/ladder.h), its plain-text drawing (docs/ladder-text.md) and the
+// reverse-current analysis (model/ladder/reverse_current.h).
 
 #include "random_program.h"
 
-#include "model/convert.h"
-#include "model/ladder_text.h"
-#include "model/reverse_current.h"
+#include "model/convert/convert.h"
+#include "model/ladder/ladder_text.h"
+#include "model/ladder/reverse_current.h"
 
 #include <gtest/gtest.h>
 

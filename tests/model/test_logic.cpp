@@ -1,10 +1,10 @@
-// The combinational evaluators (model/logic.h) that the conversion property tests rely on:
+// The combinational evaluators (model/ladder/logic.h) that the conversion property tests rely on:
 // each is checked here against logic written out by hand.
 
-#include "model/convert.h"
-#include "model/ladder_text.h"
-#include "model/logic.h"
-#include "model/reverse_current.h"
+#include "model/convert/convert.h"
+#include "model/ladder/ladder_text.h"
+#include "model/ladder/logic.h"
+#include "model/ladder/reverse_current.h"
 
 #include <gtest/gtest.h>
 

@@ -1,5 +1,5 @@
-#include "model/convert.h"
-#include "model/project.h"
+#include "model/convert/convert.h"
+#include "model/project/project.h"
 
 #include <QDir>
 #include <QDirIterator>

@@ -1,4 +1,4 @@
-#include "model/target.h"
+#include "model/target/target.h"
 
 #include <gtest/gtest.h>
 

@@ -1,6 +1,6 @@
-#include "model/address.h"
-#include "model/il.h"
-#include "model/target.h"
+#include "model/target/address.h"
+#include "model/listing/il.h"
+#include "model/target/target.h"
 
 #include <gtest/gtest.h>
 

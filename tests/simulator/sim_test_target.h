@@ -4,7 +4,7 @@
 // Vigor-like areas (decimal numbering) and instruction specs, plus a minimal assembler that
 // turns "MNEMONIC OPERAND..." lines into an InstructionList against it.
 
-#include "model/il.h"
+#include "model/listing/il.h"
 
 #include <QStringList>
 

@@ -3,7 +3,7 @@
 
 #include "tests/model/random_program.h"
 
-#include "model/convert.h"
+#include "model/convert/convert.h"
 #include "simulator/compiler.h"
 #include "simulator/engine.h"
 

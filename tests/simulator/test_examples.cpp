@@ -2,8 +2,8 @@
 // ladder -> canonical listing -> checks -> compile, the project's set values loaded, inputs
 // switched; no check error, no runtime error, and the outputs do something.
 
-#include "model/convert.h"
-#include "model/project.h"
+#include "model/convert/convert.h"
+#include "model/project/project.h"
 #include "simulator/compiler.h"
 #include "simulator/engine.h"
 

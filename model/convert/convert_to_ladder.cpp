@@ -1,0 +1,516 @@
+#include "model/convert/convert.h"
+#include "model/ladder/network.h"
+
+#include <QCoreApplication>
+
+// IL -> ladder. The listing is read as a stack machine whose values are networks: LD pushes a
+// block, AND/OR/ANB/ORB combine blocks, MPS/MRD/MPP mark branch points, an output attaches
+// to the branch point it is evaluated at. Any valid order of blocks ("fuzzy syntax") gives the
+// same networks; the layout then draws them on the grid (docs/conversion.md).
+
+namespace rung::model {
+
+using detail::Branch;
+using detail::Expr;
+using detail::RungLogic;
+
+bool ToLadderResult::ok() const {
+    return !hasErrors(problems);
+}
+
+namespace {
+
+struct Tr {
+    Q_DECLARE_TR_FUNCTIONS(rung::model::Convert)
+};
+
+// ---- layout ------------------------------------------------------------------------------
+
+int widthOf(const Expr &e) {
+    switch (e.kind) {
+    case Expr::Kind::Leaf:
+        return 1;
+    case Expr::Kind::Series: {
+        int w = 0;
+        for (const Expr &i : e.items)
+            w += widthOf(i);
+        return w;
+    }
+    case Expr::Kind::Parallel: {
+        int w = 0;
+        for (const Expr &i : e.items)
+            w = std::max(w, widthOf(i));
+        return w;
+    }
+    }
+    return 0;
+}
+
+int heightOf(const Expr &e) {
+    switch (e.kind) {
+    case Expr::Kind::Leaf:
+        return 1;
+    case Expr::Kind::Series: {
+        int h = 1;
+        for (const Expr &i : e.items)
+            h = std::max(h, heightOf(i));
+        return h;
+    }
+    case Expr::Kind::Parallel: {
+        int h = 0;
+        for (const Expr &i : e.items)
+            h += heightOf(i);
+        return h;
+    }
+    }
+    return 1;
+}
+
+void wire(Rung &rung, int row, int from, int to) {
+    for (int c = from; c < to; ++c)
+        rung.cell(row, c).kind = CellKind::Wire;
+}
+
+void link(Rung &rung, int nodeColumn, int fromRow, int toRow) {
+    for (int r = fromRow; r < toRow; ++r)
+        rung.setLink(r, nodeColumn, true);
+}
+
+void place(const Expr &e, Rung &rung, int row, int col) {
+    switch (e.kind) {
+    case Expr::Kind::Leaf:
+        rung.cell(row, col).kind = CellKind::Contact;
+        rung.cell(row, col).contact = e.leaf;
+        return;
+    case Expr::Kind::Series:
+        for (const Expr &i : e.items) {
+            place(i, rung, row, col);
+            col += widthOf(i);
+        }
+        return;
+    case Expr::Kind::Parallel: {
+        const int w = widthOf(e);
+        int r = row;
+        int lastTop = row;
+        for (const Expr &i : e.items) {
+            place(i, rung, r, col);
+            wire(rung, r, col + widthOf(i), col + w);
+            lastTop = r;
+            r += heightOf(i);
+        }
+        // At the rail the rows are already joined: a link there would be a second spelling
+        // of the same ladder, which the text form and the grid equality could not tell apart.
+        if (col > 0)
+            link(rung, col, row, lastTop);
+        link(rung, col + w, row, lastTop);
+        return;
+    }
+    }
+}
+
+int branchWidth(const Branch &b) {
+    int w = 0;
+    for (const Branch::Item &i : b.items)
+        if (!i.isOutput)
+            w = std::max(w, branchWidth(i.child.front()));
+    return widthOf(b.cond) + w;
+}
+
+int branchHeight(const Branch &b) {
+    int h = 0;
+    for (const Branch::Item &i : b.items)
+        h += i.isOutput ? 1 : branchHeight(i.child.front());
+    return std::max({1, h, heightOf(b.cond)});
+}
+
+void placeBranch(const Branch &b, Rung &rung, int row, int col) {
+    place(b.cond, rung, row, col);
+    const int x = col + widthOf(b.cond);
+    int r = row;
+    int lastTop = row;
+    for (const Branch::Item &i : b.items) {
+        lastTop = r;
+        if (i.isOutput) {
+            wire(rung, r, x, rung.columns);
+            rung.outputs[static_cast<std::size_t>(r)] = i.output;
+            r += 1;
+        } else {
+            placeBranch(i.child.front(), rung, r, x);
+            r += branchHeight(i.child.front());
+        }
+    }
+    link(rung, x, row, lastTop);
+}
+
+Rung layout(const RungLogic &logic) {
+    if (!logic.boxInputs.empty()) {
+        int w = 1;
+        int h = 0;
+        for (const Expr &e : logic.boxInputs) {
+            w = std::max(w, widthOf(e));
+            h += heightOf(e);
+        }
+        Rung rung(h, w);
+        int r = 0;
+        for (const Expr &e : logic.boxInputs) {
+            place(e, rung, r, 0);
+            wire(rung, r, widthOf(e), w);
+            rung.inputRows.push_back(r);
+            r += heightOf(e);
+        }
+        rung.outputs[0] = logic.box;
+        return rung;
+    }
+    Rung rung(branchHeight(logic.root), branchWidth(logic.root));
+    placeBranch(logic.root, rung, 0, 0);
+    return rung;
+}
+
+// ---- reading the listing -----------------------------------------------------------------
+
+class Reader {
+public:
+    explicit Reader(const InstructionList &list)
+        : m_list(list) {
+        m_result.ladder.target = list.target;
+    }
+
+    ToLadderResult run() {
+        const auto &ins = m_list.instructions;
+        for (std::size_t i = 0; i < ins.size(); ++i)
+            step(ins[i], static_cast<int>(i));
+        finishRung(true);
+        return std::move(m_result);
+    }
+
+private:
+    struct Node {
+        Expr cond;
+        std::vector<std::pair<bool, int>> items; // (isOutput, output index or node index)
+    };
+
+    // The bottom block continues a branch point (after an output, MPS, MRD or MPP): joining
+    // it in parallel with another block would put contacts from the rail in parallel with
+    // the branch point's own contacts, which the branch tree cannot draw.
+    void anchoredProblem(const Instruction &at) {
+        problem(at, "CV009",
+                Tr::tr("%1 joins the condition of a branch point in parallel with another "
+                       "block; the ladder cannot draw this: repeat the shared contacts in "
+                       "this branch instead")
+                    .arg(at.spec->mnemonic));
+    }
+
+    void problem(const Instruction &at, const char *code, const QString &message) {
+        Diagnostic d;
+        d.code = QString::fromLatin1(code);
+        d.severity = Severity::Error;
+        d.location.line = at.line;
+        d.location.column = at.column;
+        d.message = message;
+        m_result.problems.push_back(d);
+        m_broken = true;
+    }
+
+    bool started() const { return m_first >= 0; }
+
+    // After an output the accumulator still holds the branch point's condition: a block
+    // loaded there that AND LD / OR LD joins to it ("OUT Y0 LD X1 OR X2 ANB OUT Y1")
+    // continues the rung rather than starting the next one.
+    bool joinsTheAccumulator(int index) const {
+        const auto &ins = m_list.instructions;
+        int depth = 0;
+        for (std::size_t j = static_cast<std::size_t>(index); j < ins.size(); ++j) {
+            const Op op = ins[j].op();
+            if (op == Op::Load)
+                ++depth;
+            else if (op == Op::AndBlock || op == Op::OrBlock)
+                --depth;
+            else if (op != Op::And && op != Op::Or && op != Op::Invert)
+                return false;
+            if (depth == 0)
+                return true;
+        }
+        return false;
+    }
+
+    void begin(int index, const Instruction &ins) {
+        if (m_first < 0) {
+            m_first = index;
+            m_firstLine = ins.line;
+            m_nodes.assign(1, Node{});
+            m_cur = 0;
+        }
+    }
+
+    Contact contactOf(const Instruction &ins) const {
+        Contact c;
+        c.mode = ins.spec->mode;
+        c.compare = ins.spec->compare;
+        c.operands = ins.operands;
+        c.invert = ins.op() == Op::Invert;
+        return c;
+    }
+
+    int addChild(Expr cond) {
+        m_nodes.push_back(Node{std::move(cond), {}});
+        const int child = static_cast<int>(m_nodes.size()) - 1;
+        m_nodes[static_cast<std::size_t>(m_cur)].items.emplace_back(false, child);
+        return child;
+    }
+
+    void step(const Instruction &ins, int index) {
+        const Op op = ins.op();
+        if (op == Op::StepLadder)
+            m_inStep = true;
+        else if (op == Op::Return)
+            m_inStep = false;
+        if (detail::isUnconditional(op)) {
+            finishRung(false);
+            begin(index, ins);
+            m_outputs.push_back(ins);
+            m_nodes[0].items.emplace_back(true, 0);
+            m_hadOutput = true;
+            finishRung(false);
+            return;
+        }
+        // A contact that opens a block after the rung's outputs, with no branch pending,
+        // starts the next rung.
+        // (After MPP the popped condition is still to be used: "MPP LD X1 ANB" continues.)
+        if (op == Op::Load && m_lastWasOutput && m_mps.empty() && m_blocks.size() == 1 &&
+            m_blocks[0].empty() && !joinsTheAccumulator(index))
+            finishRung(false);
+        m_lastWasOutput = detail::isOutputOp(op);
+        if (m_broken) {
+            // Skip to the next rung after an error in this one: the first load after an
+            // output.
+            if (detail::isOutputOp(op)) {
+                m_brokenSawOutput = true;
+                return;
+            }
+            if (op != Op::Load || !m_brokenSawOutput)
+                return;
+            finishRung(false);
+        }
+        begin(index, ins);
+        switch (op) {
+        case Op::Load:
+            m_blocks.push_back(Expr::leafOf(contactOf(ins)));
+            return;
+        case Op::And:
+        case Op::Invert:
+            if (m_blocks.empty())
+                return problem(ins, "CV001",
+                               Tr::tr("%1 has no block to continue; start the rung with a load")
+                                   .arg(ins.spec->mnemonic));
+            m_blocks.back() = detail::series(m_blocks.back(), Expr::leafOf(contactOf(ins)));
+            return;
+        case Op::Or:
+            if (m_blocks.empty() || m_blocks.back().empty())
+                return problem(
+                    ins, "CV001",
+                    Tr::tr("%1 has no block to join in parallel").arg(ins.spec->mnemonic));
+            if (m_blocks.size() == 1 && m_anchored)
+                return anchoredProblem(ins);
+            m_blocks.back() = detail::parallel(m_blocks.back(), Expr::leafOf(contactOf(ins)));
+            return;
+        case Op::AndBlock:
+        case Op::OrBlock: {
+            if (m_blocks.size() < 2)
+                return problem(ins, "CV002",
+                               Tr::tr("%1 needs two blocks, but %n is open", nullptr,
+                                      static_cast<int>(m_blocks.size()))
+                                   .arg(ins.spec->mnemonic));
+            Expr b = std::move(m_blocks.back());
+            m_blocks.pop_back();
+            Expr a = std::move(m_blocks.back());
+            if (op == Op::OrBlock && (a.empty() || b.empty()))
+                return problem(
+                    ins, "CV001",
+                    Tr::tr("%1 has no block to join in parallel").arg(ins.spec->mnemonic));
+            if (op == Op::OrBlock && m_blocks.size() == 1 && m_anchored)
+                return anchoredProblem(ins);
+            m_blocks.back() = op == Op::AndBlock ? detail::series(std::move(a), std::move(b))
+                                                 : detail::parallel(std::move(a), std::move(b));
+            return;
+        }
+        case Op::Push:
+            if (m_blocks.size() != 1)
+                return problem(ins, "CV003",
+                               Tr::tr("MPS needs exactly one open block, but %n is open", nullptr,
+                                      static_cast<int>(m_blocks.size())));
+            if (!m_blocks[0].empty())
+                m_cur = addChild(std::move(m_blocks[0]));
+            m_mps.push_back(m_cur);
+            m_blocks.assign(1, Expr{});
+            m_anchored = true;
+            return;
+        case Op::ReadStack:
+        case Op::Pop:
+            if (m_mps.empty())
+                return problem(ins, "CV004",
+                               Tr::tr("%1 without a matching MPS").arg(ins.spec->mnemonic));
+            m_cur = m_mps.back();
+            if (op == Op::Pop)
+                m_mps.pop_back();
+            m_blocks.assign(1, Expr{});
+            m_anchored = true;
+            return;
+        default:
+            break;
+        }
+        // An output instruction.
+        const int inputs = std::max(1, ins.spec->inputs);
+        if (inputs > 1) {
+            if (m_hadOutput || !m_mps.empty() ||
+                m_blocks.size() != static_cast<std::size_t>(inputs)) {
+                return problem(ins, "CV005",
+                               Tr::tr("%1 needs %2 input blocks, but %3 are open")
+                                   .arg(ins.spec->mnemonic)
+                                   .arg(inputs)
+                                   .arg(m_blocks.size()));
+            }
+            for (const Expr &e : m_blocks)
+                if (e.empty())
+                    return problem(
+                        ins, "CV006",
+                        Tr::tr("%1 has an input with no condition").arg(ins.spec->mnemonic));
+            m_box = ins;
+            m_boxInputs = std::move(m_blocks);
+            m_blocks.clear();
+            m_hadOutput = true;
+            finishRung(false);
+            return;
+        }
+        if (m_blocks.empty() && m_inStep && !m_hadOutput) {
+            // Inside a step (STL .. RET) an output may hang on the step bus itself.
+            begin(index, ins);
+            m_blocks.assign(1, Expr{});
+        }
+        if (m_blocks.empty())
+            return problem(ins, "CV006", Tr::tr("%1 has no condition").arg(ins.spec->mnemonic));
+        if (m_blocks.size() != 1)
+            return problem(ins, "CV005",
+                           m_blocks.empty() ? Tr::tr("%1 has no condition").arg(ins.spec->mnemonic)
+                                            : Tr::tr("%1 needs one block, but %2 are open")
+                                                  .arg(ins.spec->mnemonic)
+                                                  .arg(m_blocks.size()));
+        if (m_blocks[0].empty() && m_cur == 0 && !m_inStep)
+            return problem(ins, "CV006", Tr::tr("%1 has no condition").arg(ins.spec->mnemonic));
+        if (!m_blocks[0].empty())
+            m_cur = addChild(std::move(m_blocks[0]));
+        m_outputs.push_back(ins);
+        m_nodes[static_cast<std::size_t>(m_cur)].items.emplace_back(
+            true, static_cast<int>(m_outputs.size()) - 1);
+        m_blocks.assign(1, Expr{});
+        m_anchored = true;
+        m_hadOutput = true;
+    }
+
+    Branch build(int node) const {
+        Branch b;
+        b.cond = m_nodes[static_cast<std::size_t>(node)].cond;
+        for (const auto &[isOutput, index] : m_nodes[static_cast<std::size_t>(node)].items) {
+            Branch::Item item;
+            item.isOutput = isOutput;
+            if (isOutput)
+                item.output = m_outputs[static_cast<std::size_t>(index)];
+            else
+                item.child.push_back(build(index));
+            b.items.push_back(std::move(item));
+        }
+        return b;
+    }
+
+    void finishRung(bool atEnd) {
+        if (m_first < 0) {
+            reset();
+            return;
+        }
+        const Instruction &firstIns = m_list.instructions[static_cast<std::size_t>(m_first)];
+        if (!m_broken) {
+            const bool open = !(m_blocks.empty() || (m_blocks.size() == 1 && m_blocks[0].empty()));
+            if (open || !m_hadOutput) {
+                problem(atEnd ? m_list.instructions.back() : firstIns, "CV007",
+                        Tr::tr("The rung starting on line %1 ends without an output")
+                            .arg(firstIns.line));
+            } else if (!m_mps.empty()) {
+                problem(firstIns, "CV008",
+                        Tr::tr("The rung starting on line %1 leaves %n MPS without MPP", nullptr,
+                               static_cast<int>(m_mps.size()))
+                            .arg(firstIns.line));
+            }
+        }
+        if (!m_broken) {
+            RungLogic logic;
+            if (!m_boxInputs.empty()) {
+                logic.boxInputs = m_boxInputs;
+                logic.box = m_box;
+            } else {
+                logic.root = build(0);
+            }
+            Rung rung = layout(logic);
+            rung.comment = commentsFor(m_first);
+            m_result.ladder.rungs.push_back(std::move(rung));
+            m_result.rungLine.push_back(m_firstLine);
+        }
+        reset();
+    }
+
+    QString commentsFor(int firstIndex) {
+        QStringList lines;
+        const auto &comments = m_list.comments;
+        while (m_comment < comments.size() && comments[m_comment].first <= firstIndex) {
+            lines << comments[m_comment].second;
+            ++m_comment;
+        }
+        return lines.join(QLatin1Char('\n'));
+    }
+
+    void reset() {
+        m_first = -1;
+        m_nodes.clear();
+        m_outputs.clear();
+        m_blocks.clear();
+        m_mps.clear();
+        m_boxInputs.clear();
+        m_cur = 0;
+        m_anchored = false;
+        m_hadOutput = false;
+        m_lastWasOutput = false;
+        m_broken = false;
+        m_brokenSawOutput = false;
+    }
+
+    const InstructionList &m_list;
+    ToLadderResult m_result;
+    std::vector<Node> m_nodes;
+    std::vector<Instruction> m_outputs;
+    std::vector<Expr> m_blocks;
+    std::vector<int> m_mps;
+    std::vector<Expr> m_boxInputs;
+    Instruction m_box;
+    int m_cur = 0;
+    bool m_anchored = false; // m_blocks[0] continues the branch point m_cur
+    int m_first = -1;
+    int m_firstLine = 0;
+    bool m_hadOutput = false;
+    bool m_inStep = false; // between STL and RET
+    bool m_lastWasOutput = false;
+    bool m_broken = false;
+    bool m_brokenSawOutput = false;
+    std::size_t m_comment = 0;
+};
+
+} // namespace
+
+namespace detail {
+Rung layoutRung(const RungLogic &logic) {
+    return layout(logic);
+}
+} // namespace detail
+
+ToLadderResult listToLadder(const InstructionList &list) {
+    return Reader(list).run();
+}
+
+} // namespace rung::model

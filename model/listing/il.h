@@ -1,0 +1,84 @@
+#pragma once
+
+// An instruction list: the parsed form of a target's listing. Instructions refer to the
+// target's instruction table; operands are resolved addresses or constants.
+
+#include "model/target/address.h"
+#include "model/target/target.h"
+
+#include <QString>
+
+#include <vector>
+
+namespace rung::model {
+
+struct Operand {
+    enum class Kind : std::uint8_t { Device, Constant, Text } kind = Kind::Device;
+    Address address;   // Kind::Device
+    Constant constant; // Kind::Constant
+    QString text;      // Kind::Text: PL110 FM operator, labels kept verbatim
+    friend bool operator==(const Operand &, const Operand &) = default;
+};
+
+struct Instruction {
+    const InstructionSpec *spec = nullptr; // entry of the target's instruction table
+    std::vector<Operand> operands;
+    int line = 0;    // 1-based source line, 0 when generated
+    int column = 0;  // 1-based source column of the mnemonic
+    int step = 0;    // step address (0-based), assigned by the printer / parser
+    QString comment; // comment after the instruction on its line ("LD X0 ; start"), no marker
+
+    Op op() const { return spec ? spec->op : Op::Nop; }
+    bool sameAs(const Instruction &other) const // equal ignoring the source position
+    {
+        return spec == other.spec && operands == other.operands;
+    }
+};
+
+struct InstructionList {
+    const Target *target = nullptr;
+    std::vector<Instruction> instructions;
+    // Comments in the source keyed by the index of the instruction they precede; kept so a
+    // rung comment can travel IL -> ladder -> IL.
+    std::vector<std::pair<int, QString>> comments;
+};
+
+struct ParseError {
+    int line = 0;    // 1-based
+    int column = 0;  // 1-based
+    QString message; // translated
+};
+
+struct ParseResult {
+    InstructionList list;
+    std::vector<ParseError> errors; // the list holds every line that parsed
+    bool ok() const { return errors.empty(); }
+};
+
+// Parse a listing: comments (';' or '//' to end of line), blank lines and optional step
+// numbers ("0002 LD p01<p00") are accepted. Every error has a line and a column.
+ParseResult parseInstructionList(const Target &target, const QString &text,
+                                 const ModelVariant *model = nullptr);
+
+// The target a listing names on its first line ("; target: vigor", also "// target: cpm1"),
+// empty when it names none; the command-line tool and the IDE both read it.
+QString declaredTarget(const QString &text);
+
+// The target to open a listing for: the one it declares, else `fallback` when it reads the
+// text without an error, else the first family that does, else `fallback`.
+QString listingTarget(const QString &text, const QString &fallback);
+
+// Print in the target's canonical listing form, one instruction a line.
+struct PrintOptions {
+    bool stepNumbers = false; // "0002 LD  p01<p00" as the VPC console shows
+    bool comments = true;
+};
+QString printInstructionList(const InstructionList &list, const PrintOptions &options = {});
+QString printInstruction(const Target &target, const Instruction &instruction);
+// One operand alone, as the drawing and its tooltips show it (X0, K10, #0150, a PL110 text).
+QString formatOperand(const Target &target, const Operand &operand);
+
+// Steps an instruction occupies in the PLC's program memory (1 for most).
+int instructionSteps(const Target &target, const Instruction &instruction);
+
+} // namespace rung::model

@@ -1,0 +1,128 @@
+#include "model/listing/il.h"
+
+// The canonical printer: one instruction a line, the table's canonical mnemonic, operands as
+// formatAddress / formatConstant write them. Infix forms (VPC compares and transfers) and
+// fused element numbers (VPC TIM00) are read off the instruction table.
+
+namespace rung::model {
+
+namespace {
+
+bool mnemonicHasSymbol(const QString &mnemonic) {
+    return mnemonic.contains(QLatin1Char('<')) || mnemonic.contains(QLatin1Char('>')) ||
+           mnemonic.contains(QLatin1Char('='));
+}
+
+QString operandText(const Target &target, const InstructionSpec &spec, std::size_t index,
+                    const Operand &operand) {
+    switch (operand.kind) {
+    case Operand::Kind::Text:
+        return operand.text;
+    case Operand::Kind::Constant:
+        if (index < spec.operands.size() && spec.operands[index].kind == OperandKind::Label)
+            return QStringLiteral("%1").arg(operand.constant.value, 2, 10, QLatin1Char('0'));
+        return formatConstant(target, operand.constant);
+    case Operand::Kind::Device:
+        break;
+    }
+    QString text = formatAddress(target, operand.address);
+    const OperandKind kind =
+        index < spec.operands.size() ? spec.operands[index].kind : OperandKind::BitSource;
+    if (kind == OperandKind::TimerNumber || kind == OperandKind::CounterNumber) {
+        // CPM1 "TIM 000 #0150": the mnemonic names the kind, the operand is the number.
+        const QString prefix = target.area(operand.address.area).prefix;
+        // Only multi-letter prefixes: Vigor's "TMR T0" keeps its T.
+        if (prefix.trimmed().size() > 1 &&
+            spec.mnemonic.startsWith(prefix.trimmed(), Qt::CaseInsensitive))
+            return text.mid(prefix.size()).trimmed();
+    }
+    return text;
+}
+
+} // namespace
+
+QString formatOperand(const Target &target, const Operand &operand) {
+    switch (operand.kind) {
+    case Operand::Kind::Device:
+        return formatAddress(target, operand.address);
+    case Operand::Kind::Constant:
+        return formatConstant(target, operand.constant);
+    case Operand::Kind::Text:
+        return operand.text;
+    }
+    return {};
+}
+
+QString printInstruction(const Target &target, const Instruction &instruction) {
+    const InstructionSpec *spec = instruction.spec;
+    if (!spec)
+        return QStringLiteral("NOP");
+    const auto &ops = instruction.operands;
+    if (spec->fusedOperand && !ops.empty() && ops[0].kind == Operand::Kind::Device) {
+        // VPC "TIM00": the element number is part of the mnemonic.
+        const Area &a = target.area(ops[0].address.area);
+        QString number = formatAddress(target, ops[0].address).mid(a.prefix.size());
+        QString out = spec->mnemonic + number;
+        for (std::size_t i = 1; i < ops.size(); ++i)
+            out += QLatin1Char(' ') + operandText(target, *spec, i, ops[i]);
+        return out;
+    }
+    if (spec->op == Op::Transfer && ops.size() == 2) {
+        const char *symbol = spec->transfer == TransferOp::Add        ? "+"
+                             : spec->transfer == TransferOp::Subtract ? "-"
+                                                                      : ",";
+        return spec->mnemonic + QLatin1Char(' ') + operandText(target, *spec, 0, ops[0]) +
+               QLatin1String(symbol) + operandText(target, *spec, 1, ops[1]);
+    }
+    if (spec->compare != CompareOp::None && !mnemonicHasSymbol(spec->mnemonic) && ops.size() == 2) {
+        return spec->mnemonic + QLatin1Char(' ') + operandText(target, *spec, 0, ops[0]) +
+               QLatin1String(compareSymbol(spec->compare)) + operandText(target, *spec, 1, ops[1]);
+    }
+    QString out = spec->mnemonic;
+    for (std::size_t i = 0; i < ops.size(); ++i)
+        out += QLatin1Char(' ') + operandText(target, *spec, i, ops[i]);
+    return out;
+}
+
+QString printInstructionList(const InstructionList &list, const PrintOptions &options) {
+    QString out;
+    if (!list.target)
+        return out;
+    const Target &target = *list.target;
+    std::size_t comment = 0;
+    int step = 0;
+    const int count = static_cast<int>(list.instructions.size());
+    for (int i = 0; i <= count; ++i) {
+        while (options.comments && comment < list.comments.size() &&
+               list.comments[comment].first <= i) {
+            out += QLatin1String("; ") + list.comments[comment].second + QLatin1Char('\n');
+            ++comment;
+        }
+        if (i == count)
+            break;
+        const Instruction &ins = list.instructions[static_cast<std::size_t>(i)];
+        if (options.stepNumbers)
+            out += QStringLiteral("%1 ").arg(step, 4, 10, QLatin1Char('0'));
+        out += printInstruction(target, ins);
+        if (options.comments && !ins.comment.isEmpty())
+            out += QLatin1String(" ; ") + ins.comment;
+        out += QLatin1Char('\n');
+        step += instructionSteps(target, ins);
+    }
+    return out;
+}
+
+int instructionSteps(const Target &target, const Instruction &instruction) {
+    if (!instruction.spec)
+        return 1;
+    int steps = instruction.spec->steps;
+    // 32-bit counters take two more steps than the table's 16-bit form (FX family rule).
+    if (instruction.spec->op == Op::Counter && !instruction.operands.empty() &&
+        instruction.operands[0].kind == Operand::Kind::Device &&
+        instruction.operands[0].address.area >= 0 &&
+        target.area(instruction.operands[0].address.area).wordBits == 32)
+        steps += 2;
+    return steps;
+}
+
+} // namespace rung::model

@@ -1,0 +1,499 @@
+#include "model/project/project.h"
+
+#include "model/project/file_read.h"
+#include "model/ladder/ladder_text.h"
+
+#include <QCoreApplication>
+#include <QFile>
+#include <QFileInfo>
+#include <QJsonArray>
+#include <QJsonDocument>
+#include <QJsonObject>
+#include <QSaveFile>
+
+#include <cmath>
+
+// The project file (docs/project-format.md): one JSON object, keys in a fixed order, one rung
+// per object with its cells as short strings, so a change to one contact is a one-line diff.
+
+namespace rung::model {
+
+namespace {
+
+struct Tr {
+    Q_DECLARE_TR_FUNCTIONS(rung::model::Project)
+};
+
+constexpr qint64 kMaxProjectBytes = 64 * 1024 * 1024;
+constexpr double kMaxSetValue = 2147483647.0; // the widest set value is a 32-bit register
+const char *const kFormat = "rungstudio-project";
+
+QString deviceText(const Target &t, const Address &a) {
+    return formatAddress(t, a);
+}
+
+// ---- writing ----------------------------------------------------------------------------
+
+QJsonObject rungToJson(const Target &t, const Rung &rung) {
+    QJsonObject o;
+    if (!rung.comment.isEmpty())
+        o.insert(QStringLiteral("comment"), rung.comment);
+    o.insert(QStringLiteral("rows"), rung.rows);
+    o.insert(QStringLiteral("columns"), rung.columns);
+    QJsonArray cells;
+    for (int r = 0; r < rung.rows; ++r) {
+        QJsonArray row;
+        for (int c = 0; c < rung.columns; ++c) {
+            const Cell &cell = rung.cell(r, c);
+            switch (cell.kind) {
+            case CellKind::Empty:
+                row.append(QString());
+                break;
+            case CellKind::Wire:
+                row.append(QStringLiteral("-"));
+                break;
+            case CellKind::Contact:
+                row.append(contactToText(t, cell.contact));
+                break;
+            }
+        }
+        cells.append(row);
+    }
+    o.insert(QStringLiteral("cells"), cells);
+    QJsonArray links;
+    for (int r = 0; r + 1 < rung.rows; ++r)
+        for (int c = 0; c <= rung.columns; ++c)
+            if (rung.link(r, c))
+                links.append(QJsonArray{r, c});
+    o.insert(QStringLiteral("links"), links);
+    QJsonArray outputs;
+    for (int r = 0; r < rung.rows; ++r) {
+        const auto &out = rung.outputs[static_cast<std::size_t>(r)];
+        if (!out)
+            continue;
+        QJsonArray entry{r, printInstruction(t, *out)};
+        // Only rows the rung names explicitly: a box without them takes r..r+k-1 on reading.
+        const int k = out->spec ? out->spec->inputs : 1;
+        if (k > 1 && !rung.inputRows.empty() && rung.inputRows.front() == r) {
+            QJsonArray rows;
+            for (int i : rung.inputRows)
+                rows.append(i);
+            entry.append(rows);
+        }
+        outputs.append(entry);
+    }
+    o.insert(QStringLiteral("outputs"), outputs);
+    return o;
+}
+
+// ---- reading ----------------------------------------------------------------------------
+
+class Reader {
+public:
+    explicit Reader(ProjectError *error)
+        : m_error(error) {}
+
+    std::optional<Project> read(const QByteArray &json) {
+        QJsonParseError parseError;
+        const QJsonDocument doc = QJsonDocument::fromJson(json, &parseError);
+        if (parseError.error != QJsonParseError::NoError) {
+            int line = 1;
+            int column = 1;
+            for (qsizetype i = 0; i < std::min<qsizetype>(parseError.offset, json.size()); ++i) {
+                if (json[i] == '\n') {
+                    ++line;
+                    column = 1;
+                } else {
+                    ++column;
+                }
+            }
+            return fail(Tr::tr("Line %1, column %2 (byte %3): the file is not valid JSON (%4)")
+                            .arg(line)
+                            .arg(column)
+                            .arg(parseError.offset)
+                            .arg(parseError.errorString()));
+        }
+        if (!doc.isObject())
+            return fail(
+                Tr::tr("The file is JSON but not a Rung Studio project (no top-level object)"));
+        const QJsonObject root = doc.object();
+        if (root.value(QStringLiteral("format")).toString() != QLatin1String(kFormat))
+            return fail(
+                Tr::tr("The file is JSON but not a Rung Studio project (\"format\" is not \"%1\")")
+                    .arg(QLatin1String(kFormat)));
+        const int schema = root.value(QStringLiteral("schema")).toInt(-1);
+        if (schema > kProjectSchemaVersion)
+            return fail(
+                Tr::tr("The project was written by a newer Rung Studio (schema %1); this version "
+                       "reads schema %2 and older")
+                    .arg(schema)
+                    .arg(kProjectSchemaVersion));
+        if (schema < 1)
+            return fail(Tr::tr("\"schema\" must be a positive number"));
+        if (!expect(root, "target", QJsonValue::String, QString()) ||
+            !expect(root, "model", QJsonValue::String, QString()) ||
+            !expect(root, "rungs", QJsonValue::Array, QString()) ||
+            !expect(root, "symbols", QJsonValue::Array, QString()) ||
+            !expect(root, "setValues", QJsonValue::Object, QString()) ||
+            !expect(root, "watchLists", QJsonValue::Array, QString()))
+            return std::nullopt;
+        Project p;
+        const QString targetId = root.value(QStringLiteral("target")).toString();
+        p.target = Target::byId(targetId);
+        if (!p.target)
+            return fail(Tr::tr("\"target\": unknown PLC family \"%1\"").arg(targetId));
+        p.model = root.value(QStringLiteral("model")).toString();
+        const ModelVariant *model = p.target->model(p.model);
+        if (!p.model.isEmpty() && !model)
+            return fail(
+                Tr::tr("\"model\": %1 has no model \"%2\"").arg(p.target->displayName, p.model));
+        if (p.model.isEmpty())
+            p.model = p.target->defaultModel().name;
+        p.program.target = p.target;
+        const QJsonArray rungs = root.value(QStringLiteral("rungs")).toArray();
+        for (qsizetype i = 0; i < rungs.size(); ++i) {
+            Rung rung;
+            if (!readRung(*p.target, model, rungs[i], QStringLiteral("rungs[%1]").arg(i), &rung))
+                return std::nullopt;
+            p.program.rungs.push_back(std::move(rung));
+        }
+        const QJsonArray symbols = root.value(QStringLiteral("symbols")).toArray();
+        for (qsizetype i = 0; i < symbols.size(); ++i) {
+            const QString where = QStringLiteral("symbols[%1]").arg(i);
+            if (!symbols[i].isObject())
+                return fail(
+                    Tr::tr("%1: an object with \"device\" and \"name\" is expected").arg(where));
+            const QJsonObject s = symbols[i].toObject();
+            if (!expect(s, "device", QJsonValue::String, where) ||
+                !expect(s, "name", QJsonValue::String, where) ||
+                !expect(s, "comment", QJsonValue::String, where))
+                return std::nullopt;
+            Symbol symbol;
+            if (!device(*p.target, s.value(QStringLiteral("device")).toString(), where,
+                        &symbol.address))
+                return std::nullopt;
+            symbol.name = s.value(QStringLiteral("name")).toString();
+            symbol.comment = s.value(QStringLiteral("comment")).toString();
+            p.symbols.push_back(symbol);
+        }
+        const QJsonObject setValues = root.value(QStringLiteral("setValues")).toObject();
+        for (auto it = setValues.begin(); it != setValues.end(); ++it) {
+            Address a;
+            if (!device(*p.target, it.key(), QStringLiteral("setValues"), &a))
+                return std::nullopt;
+            // Range-checked before the cast: converting an out-of-range double is undefined.
+            const double v = it.value().toDouble();
+            if (!it.value().isDouble() || v != std::floor(v) || std::fabs(v) > kMaxSetValue)
+                return fail(Tr::tr("setValues.%1: a whole number between -%2 and %2 is expected")
+                                .arg(it.key())
+                                .arg(kMaxSetValue, 0, 'f', 0));
+            p.setValues[a] = static_cast<qint64>(v);
+        }
+        const QJsonArray watch = root.value(QStringLiteral("watchLists")).toArray();
+        for (qsizetype i = 0; i < watch.size(); ++i) {
+            const QString where = QStringLiteral("watchLists[%1]").arg(i);
+            if (!watch[i].isObject())
+                return fail(
+                    Tr::tr("%1: an object with \"name\" and \"devices\" is expected").arg(where));
+            const QJsonObject w = watch[i].toObject();
+            if (!expect(w, "name", QJsonValue::String, where) ||
+                !expect(w, "devices", QJsonValue::Array, where))
+                return std::nullopt;
+            WatchList list;
+            list.name = w.value(QStringLiteral("name")).toString();
+            const QJsonArray devices = w.value(QStringLiteral("devices")).toArray();
+            for (qsizetype d = 0; d < devices.size(); ++d) {
+                if (!devices[d].isString())
+                    return fail(
+                        Tr::tr("%1.devices[%2]: a device name is expected").arg(where).arg(d));
+                list.devices << devices[d].toString();
+            }
+            p.watchLists.push_back(list);
+        }
+        return p;
+    }
+
+private:
+    std::nullopt_t fail(const QString &message) {
+        if (m_error)
+            m_error->message = message;
+        return std::nullopt;
+    }
+
+    static QString typeName(QJsonValue::Type type) {
+        switch (type) {
+        case QJsonValue::String:
+            return Tr::tr("a string");
+        case QJsonValue::Array:
+            return Tr::tr("an array");
+        case QJsonValue::Object:
+            return Tr::tr("an object");
+        case QJsonValue::Double:
+            return Tr::tr("a number");
+        default:
+            return Tr::tr("another value");
+        }
+    }
+
+    // A key that is absent is allowed (it takes its default); one of the wrong type is an
+    // error, so a hand-edited file never loads as silently empty.
+    bool expect(const QJsonObject &o, const char *key, QJsonValue::Type type,
+                const QString &where) {
+        const QJsonValue v = o.value(QLatin1String(key));
+        if (v.isUndefined() || v.type() == type)
+            return true;
+        const QString path = where.isEmpty()
+                                 ? QLatin1String(key)
+                                 : QStringLiteral("%1.%2").arg(where, QLatin1String(key));
+        fail(Tr::tr("%1: %2 is expected").arg(path, typeName(type)));
+        return false;
+    }
+
+    bool device(const Target &t, const QString &text, const QString &where, Address *out) {
+        auto a = parseAddress(t, text);
+        if (auto *e = std::get_if<AddressError>(&a)) {
+            fail(QStringLiteral("%1: %2").arg(where, e->message));
+            return false;
+        }
+        *out = std::get<Address>(a);
+        return true;
+    }
+
+    bool readRung(const Target &t, const ModelVariant *model, const QJsonValue &value,
+                  const QString &where, Rung *rung) {
+        if (!value.isObject()) {
+            fail(Tr::tr("%1: a rung object is expected").arg(where));
+            return false;
+        }
+        const QJsonObject o = value.toObject();
+        if (!expect(o, "comment", QJsonValue::String, where) ||
+            !expect(o, "cells", QJsonValue::Array, where) ||
+            !expect(o, "links", QJsonValue::Array, where) ||
+            !expect(o, "outputs", QJsonValue::Array, where))
+            return false;
+        const int rows = o.value(QStringLiteral("rows")).toInt(-1);
+        const int columns = o.value(QStringLiteral("columns")).toInt(-1);
+        if (rows < 1 || rows > 1000 || columns < 0 || columns > 1000) {
+            fail(Tr::tr("%1: \"rows\" must be 1..1000 and \"columns\" 0..1000").arg(where));
+            return false;
+        }
+        *rung = Rung(rows, columns);
+        rung->comment = o.value(QStringLiteral("comment")).toString();
+        const QJsonArray cells = o.value(QStringLiteral("cells")).toArray();
+        if (cells.size() != rows) {
+            fail(Tr::tr("%1.cells: %2 rows are expected, the file has %3")
+                     .arg(where)
+                     .arg(rows)
+                     .arg(cells.size()));
+            return false;
+        }
+        for (int r = 0; r < rows; ++r) {
+            if (!cells[r].isArray()) {
+                fail(Tr::tr("%1.cells[%2]: an array of cells is expected").arg(where).arg(r));
+                return false;
+            }
+            const QJsonArray row = cells[r].toArray();
+            if (row.size() != columns) {
+                fail(Tr::tr("%1.cells[%2]: %3 cells are expected, the file has %4")
+                         .arg(where)
+                         .arg(r)
+                         .arg(columns)
+                         .arg(row.size()));
+                return false;
+            }
+            for (int c = 0; c < columns; ++c) {
+                if (!row[c].isString()) {
+                    fail(Tr::tr("%1.cells[%2][%3]: a cell is a string (\"\", \"-\" or a "
+                                "contact)")
+                             .arg(where)
+                             .arg(r)
+                             .arg(c));
+                    return false;
+                }
+                const QString text = row[c].toString();
+                if (text.isEmpty())
+                    continue;
+                if (text == QLatin1String("-")) {
+                    rung->cell(r, c).kind = CellKind::Wire;
+                    continue;
+                }
+                QString message;
+                const auto contact = contactFromText(t, text, &message, model);
+                if (!contact) {
+                    fail(QStringLiteral("%1.cells[%2][%3]: %4")
+                             .arg(where)
+                             .arg(r)
+                             .arg(c)
+                             .arg(message));
+                    return false;
+                }
+                rung->cell(r, c).kind = CellKind::Contact;
+                rung->cell(r, c).contact = *contact;
+            }
+        }
+        for (const QJsonValue &l : o.value(QStringLiteral("links")).toArray()) {
+            const QJsonArray pair = l.toArray();
+            const int r = pair.size() == 2 ? pair[0].toInt(-1) : -1;
+            const int c = pair.size() == 2 ? pair[1].toInt(-1) : -1;
+            if (r < 0 || r + 1 >= rows || c < 0 || c > columns) {
+                fail(Tr::tr("%1.links: [%2, %3] is outside the rung").arg(where).arg(r).arg(c));
+                return false;
+            }
+            rung->setLink(r, c, true);
+        }
+        for (const QJsonValue &v : o.value(QStringLiteral("outputs")).toArray()) {
+            const QJsonArray entry = v.toArray();
+            const int r = entry.size() >= 2 ? entry[0].toInt(-1) : -1;
+            if (r < 0 || r >= rows || !entry[1].isString()) {
+                fail(Tr::tr("%1.outputs: [row, \"instruction\"] with a row inside the rung is "
+                            "expected")
+                         .arg(where));
+                return false;
+            }
+            if (rung->outputs[static_cast<std::size_t>(r)]) {
+                fail(Tr::tr("%1.outputs: row %2 has two outputs").arg(where).arg(r));
+                return false;
+            }
+            const QString text = entry[1].toString();
+            ParseResult parsed = parseInstructionList(t, text, model);
+            if (!parsed.ok() || parsed.list.instructions.size() != 1) {
+                fail(QStringLiteral("%1.outputs: \"%2\": %3")
+                         .arg(where, text,
+                              parsed.errors.empty() ? Tr::tr("one instruction is expected")
+                                                    : parsed.errors.front().message));
+                return false;
+            }
+            Instruction ins = parsed.list.instructions.front();
+            ins.line = ins.column = ins.step = 0;
+            rung->outputs[static_cast<std::size_t>(r)] = ins;
+            if (entry.size() >= 3) {
+                // The grid keeps one box's input rows per rung (a box with several inputs
+                // stands alone in its rung): first = the box's row, rows going down.
+                const QJsonArray inputs = entry[2].toArray();
+                const int k = std::max(1, ins.spec->inputs);
+                if (!rung->inputRows.empty() || k < 2 || inputs.size() < 1 || inputs.size() > k) {
+                    fail(Tr::tr("%1.outputs: \"%2\" takes up to %3 input rows, one box per rung")
+                             .arg(where, text)
+                             .arg(k));
+                    return false;
+                }
+                for (qsizetype i = 0; i < inputs.size(); ++i) {
+                    const int row = inputs[i].toInt(-1);
+                    const int previous = i == 0 ? r - 1 : rung->inputRows.back();
+                    if (row <= previous || row >= rows || (i == 0 && row != r)) {
+                        fail(Tr::tr("%1.outputs: the input rows of \"%2\" start at its own row "
+                                    "and go down inside the rung")
+                                 .arg(where, text));
+                        return false;
+                    }
+                    rung->inputRows.push_back(row);
+                }
+            }
+        }
+        return true;
+    }
+
+    ProjectError *m_error;
+};
+
+} // namespace
+
+const Symbol *Project::symbol(const Address &address) const {
+    for (const Symbol &s : symbols)
+        if (s.address == address)
+            return &s;
+    return nullptr;
+}
+
+QByteArray projectToJson(const Project &project) {
+    const Target &t = *project.target;
+    QJsonObject root;
+    root.insert(QStringLiteral("format"), QLatin1String(kFormat));
+    root.insert(QStringLiteral("schema"), kProjectSchemaVersion);
+    root.insert(QStringLiteral("target"), t.id);
+    root.insert(QStringLiteral("model"), project.model);
+    QJsonArray rungs;
+    for (const Rung &r : project.program.rungs)
+        rungs.append(rungToJson(t, r));
+    root.insert(QStringLiteral("rungs"), rungs);
+    QJsonArray symbols;
+    for (const Symbol &s : project.symbols) {
+        QJsonObject o;
+        o.insert(QStringLiteral("device"), deviceText(t, s.address));
+        o.insert(QStringLiteral("name"), s.name);
+        if (!s.comment.isEmpty())
+            o.insert(QStringLiteral("comment"), s.comment);
+        symbols.append(o);
+    }
+    root.insert(QStringLiteral("symbols"), symbols);
+    QJsonObject setValues;
+    for (const auto &[a, v] : project.setValues)
+        setValues.insert(deviceText(t, a), static_cast<double>(v));
+    root.insert(QStringLiteral("setValues"), setValues);
+    QJsonArray watch;
+    for (const WatchList &w : project.watchLists) {
+        QJsonObject o;
+        o.insert(QStringLiteral("name"), w.name);
+        o.insert(QStringLiteral("devices"), QJsonArray::fromStringList(w.devices));
+        watch.append(o);
+    }
+    root.insert(QStringLiteral("watchLists"), watch);
+    // Indented output: one rung's change stays within its own lines in a diff.
+    return QJsonDocument(root).toJson(QJsonDocument::Indented);
+}
+
+std::optional<Project> projectFromJson(const QByteArray &json, ProjectError *error) {
+    return Reader(error).read(json);
+}
+
+std::optional<Project> loadProject(const QString &path, ProjectError *error) {
+    QByteArray data;
+    QString ioError;
+    switch (readAtMost(path, kMaxProjectBytes, &data, &ioError)) {
+    case ReadStatus::CannotOpen:
+        if (error)
+            error->message = Tr::tr("%1: cannot open the file (%2)").arg(path, ioError);
+        return std::nullopt;
+    case ReadStatus::TooLarge:
+        // A regular file says how large it is; a device or a pipe only that it goes on.
+        if (const qint64 size = QFileInfo(path).size(); error && size > kMaxProjectBytes)
+            error->message = Tr::tr("%1: the file is %2 MB; a project is at most %3 MB")
+                                 .arg(path)
+                                 .arg(size / (1024 * 1024))
+                                 .arg(kMaxProjectBytes / (1024 * 1024));
+        else if (error)
+            error->message = Tr::tr("%1: the file is larger than %2 MB, the most a project can be")
+                                 .arg(path)
+                                 .arg(kMaxProjectBytes / (1024 * 1024));
+        return std::nullopt;
+    case ReadStatus::Ok:
+        break;
+    }
+    ProjectError inner;
+    auto project = projectFromJson(data, &inner);
+    if (!project && error)
+        error->message = QStringLiteral("%1: %2").arg(QFileInfo(path).fileName(), inner.message);
+    return project;
+}
+
+bool saveProject(const Project &project, const QString &path, ProjectError *error) {
+    // QSaveFile writes a temporary file and renames it over the old one only when every
+    // byte is written: a failed save leaves the previous file as it was.
+    QSaveFile file(path);
+    if (!file.open(QIODevice::WriteOnly)) {
+        if (error)
+            error->message = Tr::tr("%1: cannot write the file (%2)").arg(path, file.errorString());
+        return false;
+    }
+    const QByteArray data = projectToJson(project);
+    if (file.write(data) != data.size() || !file.commit()) {
+        if (error)
+            error->message = Tr::tr("%1: saving failed (%2); the previous file is unchanged")
+                                 .arg(path, file.errorString());
+        file.cancelWriting();
+        return false;
+    }
+    return true;
+}
+
+} // namespace rung::model

@@ -1,0 +1,51 @@
+#pragma once
+
+// A project file: JSON, human-readable and diff-friendly, with a schema version
+// (docs/project-format.md). Saved atomically.
+
+#include "model/ladder/ladder.h"
+
+#include <QString>
+
+#include <map>
+#include <optional>
+#include <vector>
+
+namespace rung::model {
+
+struct Symbol {
+    Address address;
+    QString name;
+    QString comment;
+    friend bool operator==(const Symbol &, const Symbol &) = default;
+};
+
+struct WatchList {
+    QString name;
+    QStringList devices; // as the target writes them
+};
+
+struct Project {
+    const Target *target = nullptr;
+    QString model; // ModelVariant::name
+    LadderProgram program;
+    std::vector<Symbol> symbols;
+    std::map<Address, qint64> setValues; // VPC timer/counter set values kept in the PLC
+    std::vector<WatchList> watchLists;
+
+    const Symbol *symbol(const Address &address) const;
+};
+
+constexpr int kProjectSchemaVersion = 1;
+constexpr const char *kProjectExtension = "rung";
+
+struct ProjectError {
+    QString message; // translated: what, where (line/column or JSON path) and why
+};
+
+std::optional<Project> loadProject(const QString &path, ProjectError *error);
+std::optional<Project> projectFromJson(const QByteArray &json, ProjectError *error);
+QByteArray projectToJson(const Project &project);
+bool saveProject(const Project &project, const QString &path, ProjectError *error);
+
+} // namespace rung::model

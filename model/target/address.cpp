@@ -1,0 +1,384 @@
+#include "model/target/address.h"
+
+#include <QCoreApplication>
+
+#include <algorithm>
+#include <limits>
+#include <vector>
+
+namespace rung::model {
+
+namespace {
+
+struct Tr {
+    Q_DECLARE_TR_FUNCTIONS(rung::model::Address)
+};
+
+// Prefixes are compared without spaces and case: "TIM 000", "TIM000" and "tim000" are one
+// device, and VPC's lower-case "i00" may be typed as "I00".
+QString squeeze(QStringView text) {
+    QString out;
+    out.reserve(text.size());
+    for (QChar c : text)
+        if (!c.isSpace())
+            out.append(c.toUpper());
+    return out;
+}
+
+// Length of the longest spelling of the area's prefix that starts s and is followed by a
+// digit, or -1.
+// Compares without building the squeezed prefix: this runs for every area on every operand.
+qsizetype prefixMatch(const Area &area, const QString &s) {
+    qsizetype best = -1;
+    auto tryOne = [&](const QString &spelling) {
+        qsizetype n = 0;
+        for (QChar c : spelling) {
+            if (c.isSpace())
+                continue;
+            if (n >= s.size() || s[n] != c.toUpper())
+                return;
+            ++n;
+        }
+        if (s.size() > n && s[n].isDigit())
+            best = std::max(best, n);
+    };
+    tryOne(area.prefix);
+    for (const QString &alias : area.prefixAliases)
+        tryOne(alias);
+    return best;
+}
+
+int radixOf(Numbering n) {
+    return n == Numbering::Octal ? 8 : 10;
+}
+
+QString formatNumber(const Area &area, int value) {
+    QString digits = QString::number(value, radixOf(area.numbering));
+    if (digits.size() < area.digits)
+        digits.prepend(QString(area.digits - digits.size(), QLatin1Char('0')));
+    return digits;
+}
+
+QString areaName(const Area &area) {
+    return area.description ? QCoreApplication::translate("rung::model::Target", area.description)
+                            : area.key;
+}
+
+struct Candidate {
+    int area = -1;
+    qsizetype prefixLength = 0; // in squeezed characters
+};
+
+// Reads digits in the given radix; stops at the first non-digit. Returns -1 digits read on
+// overflow so a 100-digit number is an error, not a wrap-around.
+struct Number {
+    qint64 value = 0;
+    qsizetype length = 0;
+    bool overflow = false;
+    qsizetype badDigit = -1; // position of a decimal digit not valid in the radix
+};
+
+Number readNumber(QStringView text, qsizetype from, int radix) {
+    Number n;
+    for (qsizetype i = from; i < text.size(); ++i) {
+        const QChar c = text[i];
+        if (!c.isDigit() || c.unicode() > '9')
+            break;
+        const int d = c.unicode() - '0';
+        if (d >= radix && n.badDigit < 0)
+            n.badDigit = i;
+        if (n.value > (std::numeric_limits<int>::max() - d) / 10)
+            n.overflow = true;
+        else
+            n.value = n.value * radix + d;
+        ++n.length;
+    }
+    return n;
+}
+
+// Map a position in the squeezed text back to the original text (for the column).
+int originalColumn(QStringView text, qsizetype squeezedPos) {
+    qsizetype seen = 0;
+    for (qsizetype i = 0; i < text.size(); ++i) {
+        if (text[i].isSpace())
+            continue;
+        if (seen == squeezedPos)
+            return static_cast<int>(i);
+        ++seen;
+    }
+    return static_cast<int>(text.size());
+}
+
+} // namespace
+
+std::variant<Address, AddressError> parseAddress(const Target &target, QStringView text,
+                                                 const ModelVariant *model) {
+    const QStringView trimmed = text.trimmed();
+    const int lead = static_cast<int>(text.indexOf(trimmed.isEmpty() ? text : trimmed));
+    const QString s = squeeze(trimmed);
+    const QString shown = trimmed.toString();
+    auto error = [&](const QString &message, qsizetype squeezedPos) {
+        return AddressError{message, lead + originalColumn(trimmed, squeezedPos)};
+    };
+    if (s.isEmpty())
+        return AddressError{Tr::tr("A device is missing"), 0};
+
+    // The longest prefix followed by a digit wins: "HR00" is HR, not an unprefixed channel.
+    qsizetype bestLength = -1;
+    for (const Area &a : target.areas)
+        bestLength = std::max(bestLength, prefixMatch(a, s));
+    if (bestLength < 0) {
+        // Name the prefix the user wrote, if any, for a clearer message.
+        qsizetype letters = 0;
+        while (letters < s.size() && !s[letters].isDigit())
+            ++letters;
+        if (letters == s.size()) {
+            for (const Area &a : target.areas)
+                if (squeeze(a.prefix) == s)
+                    return error(Tr::tr("%1: a number is expected after %2").arg(shown, a.prefix),
+                                 s.size());
+        }
+        return error(Tr::tr("%1 is not a device of %2").arg(shown, target.displayName), 0);
+    }
+
+    // Areas sharing the prefix differ by numbering only in theory; read with the first one's
+    // rules, then pick the area whose range holds the number.
+    int firstArea = -1;
+    for (int i = 0; i < static_cast<int>(target.areas.size()); ++i)
+        if (prefixMatch(target.area(i), s) == bestLength) {
+            firstArea = i;
+            break;
+        }
+    const Area &rules = target.area(firstArea);
+    const Number number = readNumber(s, bestLength, radixOf(rules.numbering));
+    if (number.overflow)
+        return error(Tr::tr("%1: the number is too large").arg(shown), bestLength);
+    if (number.badDigit >= 0)
+        return error(Tr::tr("%1: %2 is numbered in octal").arg(shown, rules.prefix),
+                     number.badDigit);
+
+    int bit = -1;
+    qsizetype pos = bestLength + number.length;
+    if (pos < s.size() && s[pos] == QLatin1Char('.')) {
+        const Number b = readNumber(s, pos + 1, 10);
+        if (b.length == 0)
+            return error(Tr::tr("%1: a bit number is expected after the point").arg(shown),
+                         pos + 1);
+        if (b.overflow || b.value > 15)
+            return error(Tr::tr("%1: bit %2 is beyond 00..15").arg(shown).arg(b.value), pos + 1);
+        bit = static_cast<int>(b.value);
+        pos += 1 + b.length;
+    }
+    if (pos < s.size())
+        return error(Tr::tr("%1: unexpected '%2' after the device").arg(shown, s.mid(pos)), pos);
+
+    qint64 value = number.value;
+    // Seed 002 writes a CPM1 bit as channel digits + two bit digits without the point:
+    // 25313 is 253.13, HR0005 is HR00.05.
+    if (bit < 0 && rules.numbering == Numbering::ChannelBit && rules.digits > 0 &&
+        number.length == rules.digits + 2) {
+        const int b = static_cast<int>(value % 100);
+        if (b > 15)
+            return error(Tr::tr("%1: bit %2 is beyond 00..15").arg(shown).arg(b),
+                         bestLength + number.length - 2);
+        bit = b;
+        value /= 100;
+    }
+    const int index = static_cast<int>(value);
+    const QString who = model ? model->name : target.displayName;
+    int matched = -1;
+    int anyArea = -1;
+    for (int i = 0; i < static_cast<int>(target.areas.size()); ++i) {
+        const Area &a = target.area(i);
+        if (prefixMatch(a, s) != bestLength)
+            continue;
+        if (anyArea < 0)
+            anyArea = i;
+        if (index < a.first || index > a.last)
+            continue;
+        const bool bitForm = bit >= 0;
+        const bool wantsBit = a.numbering == Numbering::ChannelBit;
+        if (bitForm && !wantsBit)
+            continue;
+        matched = i;
+        break;
+    }
+    if (matched < 0) {
+        // Out of every area's range: name the spans the prefix covers (on the model, if one
+        // is given), merged where areas follow each other: "r96 is beyond VPC's auxiliary
+        // relays r00..r95", "M9300 is beyond Vigor's M0..M5119, M9000..M9255".
+        bool bitAllowed = false;
+        std::vector<std::pair<int, int>> spans;
+        for (int i = 0; i < static_cast<int>(target.areas.size()); ++i) {
+            const Area &a = target.area(i);
+            if (prefixMatch(a, s) != bestLength)
+                continue;
+            bitAllowed = bitAllowed || a.numbering == Numbering::ChannelBit;
+            if (const auto r = target.range(i, model))
+                spans.push_back(*r);
+        }
+        if (bit >= 0 && !bitAllowed)
+            return error(Tr::tr("%1: %2 has no bit numbers").arg(shown, rules.prefix), bestLength);
+        const Area &a = target.area(anyArea);
+        if (spans.empty())
+            return error(Tr::tr("%1: %2 has no %3").arg(shown, who, areaName(a)), 0);
+        std::sort(spans.begin(), spans.end());
+        std::vector<std::pair<int, int>> merged{spans.front()};
+        for (const auto &span : spans) {
+            if (span.first <= merged.back().second + 1)
+                merged.back().second = std::max(merged.back().second, span.second);
+            else
+                merged.push_back(span);
+        }
+        QStringList ranges;
+        for (const auto &[lo, hi] : merged)
+            ranges << a.prefix + formatNumber(a, lo) + QStringLiteral("..") + a.prefix +
+                          formatNumber(a, hi);
+        // One span reads best with the area's name; several spans cross areas of different
+        // kinds (CPM1 input and work channels), so only the ranges are named.
+        if (merged.size() == 1)
+            return error(Tr::tr("%1 is beyond %2's %3 %4").arg(shown, who, areaName(a), ranges[0]),
+                         bestLength);
+        return error(
+            Tr::tr("%1 is beyond %2's %3").arg(shown, who, ranges.join(QStringLiteral(", "))),
+            bestLength);
+    }
+
+    const Area &a = target.area(matched);
+    if (model) {
+        const auto r = target.range(matched, model);
+        if (!r)
+            return error(Tr::tr("%1: %2 has no %3").arg(shown, who, areaName(a)), 0);
+        if (index < r->first || index > r->second) {
+            // The model narrows the area: name the model's range, as the user sees it.
+            return error(Tr::tr("%1 is beyond %2's %3 %4")
+                             .arg(shown, who, areaName(a),
+                                  a.prefix + formatNumber(a, r->first) + QStringLiteral("..") +
+                                      a.prefix + formatNumber(a, r->second)),
+                         bestLength);
+        }
+    }
+    return Address{matched, index, bit};
+}
+
+QString formatAddress(const Target &target, const Address &address) {
+    if (address.area < 0 || address.area >= static_cast<int>(target.areas.size()))
+        return QStringLiteral("?");
+    const Area &a = target.area(address.area);
+    QString out = a.prefix + formatNumber(a, address.index);
+    // CPM1 pads the bit like its channel (010.00); PL110 writes SM0.1 as the manual does.
+    if (address.bit >= 0)
+        out += QLatin1Char('.') +
+               QStringLiteral("%1").arg(address.bit, a.digits > 0 ? 2 : 1, 10, QLatin1Char('0'));
+    return out;
+}
+
+std::variant<Constant, AddressError> parseConstant(const Target &target, QStringView text) {
+    const QStringView t = text.trimmed();
+    const int lead = static_cast<int>(text.indexOf(t.isEmpty() ? text : t));
+    if (t.isEmpty())
+        return AddressError{Tr::tr("A constant is missing"), 0};
+    Constant c;
+    qsizetype pos = 0;
+    int radix = 10;
+    const QChar first = t[0].toUpper();
+    if (first == QLatin1Char('K')) {
+        c.style = Constant::Style::Decimal;
+        pos = 1;
+    } else if (first == QLatin1Char('H')) {
+        c.style = Constant::Style::Hex;
+        radix = 16;
+        pos = 1;
+    } else if (first == QLatin1Char('#')) {
+        c.style = Constant::Style::Bcd;
+        pos = 1;
+    } else {
+        c.style = Constant::Style::Plain;
+    }
+    // Each family writes constants its own way; a foreign style is a clear error.
+    const bool vigor = target.family == Family::Vigor;
+    const bool cpm1 = target.family == Family::Cpm1;
+    if ((c.style == Constant::Style::Decimal || c.style == Constant::Style::Hex) && !vigor)
+        return AddressError{
+            Tr::tr("%1: %2 writes constants without K or H").arg(t.toString(), target.displayName),
+            lead};
+    if (c.style == Constant::Style::Bcd && target.family == Family::Pl110) {
+        // PLProg writes "MOV(Tx = #0)": on PL110 '#' only marks a plain number.
+        c.style = Constant::Style::Plain;
+    } else if (c.style == Constant::Style::Bcd && !cpm1)
+        return AddressError{Tr::tr("%1: # constants belong to CPM1 listings").arg(t.toString()),
+                            lead};
+    if (c.style == Constant::Style::Plain && (vigor || cpm1))
+        return AddressError{
+            vigor
+                ? Tr::tr("%1: write a constant as K (decimal) or H (hexadecimal)").arg(t.toString())
+                : Tr::tr("%1: write a constant with # (e.g. #0150)").arg(t.toString()),
+            lead};
+    bool negative = false;
+    if (pos < t.size() && (t[pos] == QLatin1Char('-') || t[pos] == QLatin1Char('+')) &&
+        c.style != Constant::Style::Bcd && c.style != Constant::Style::Hex) {
+        negative = t[pos] == QLatin1Char('-');
+        ++pos;
+    }
+    if (pos >= t.size())
+        return AddressError{Tr::tr("%1: digits are expected").arg(t.toString()),
+                            lead + static_cast<int>(pos)};
+    qint64 value = 0;
+    bool hexDigitInBcd = false;
+    for (qsizetype i = pos; i < t.size(); ++i) {
+        const QChar ch = t[i].toUpper();
+        int d = -1;
+        if (ch.isDigit() && ch.unicode() <= '9')
+            d = ch.unicode() - '0';
+        else if ((radix == 16 || c.style == Constant::Style::Bcd) && ch >= QLatin1Char('A') &&
+                 ch <= QLatin1Char('F'))
+            d = ch.unicode() - 'A' + 10;
+        if (d < 0)
+            return AddressError{Tr::tr("%1: '%2' is not a digit").arg(t.toString(), QString(t[i])),
+                                lead + static_cast<int>(i)};
+        if (c.style == Constant::Style::Bcd && d > 9)
+            hexDigitInBcd = true;
+        const int base = (c.style == Constant::Style::Bcd && hexDigitInBcd) ? 16 : radix;
+        value = value * base + d;
+        if (value > 0xFFFFFFFFLL)
+            return AddressError{Tr::tr("%1: the constant is too large").arg(t.toString()), lead};
+    }
+    if (hexDigitInBcd) {
+        // "#00FF" is a hexadecimal word, not BCD: re-read all digits in base 16.
+        value = t.mid(pos).toString().toLongLong(nullptr, 16);
+        c.style = Constant::Style::Hex;
+    }
+    c.value = negative ? -value : value;
+    return c;
+}
+
+QString formatConstant(const Target &target, const Constant &constant) {
+    switch (constant.style) {
+    case Constant::Style::Decimal:
+        return QStringLiteral("K%1").arg(constant.value);
+    case Constant::Style::Hex:
+        if (target.family == Family::Cpm1)
+            return QStringLiteral("#%1").arg(constant.value, 4, 16, QLatin1Char('0')).toUpper();
+        return QStringLiteral("H%1").arg(constant.value, 0, 16).toUpper();
+    case Constant::Style::Bcd:
+        return QStringLiteral("#%1").arg(constant.value, 4, 10, QLatin1Char('0'));
+    case Constant::Style::Plain:
+        break;
+    }
+    if (target.family == Family::Vigor)
+        return QStringLiteral("K%1").arg(constant.value);
+    if (target.family == Family::Cpm1)
+        return QStringLiteral("#%1").arg(constant.value, 4, 10, QLatin1Char('0'));
+    return QString::number(constant.value);
+}
+
+Address systemAddress(const Target &target, SystemRole role) {
+    const SystemDevice *d = target.systemDevice(role);
+    if (!d)
+        return {};
+    const auto parsed = parseAddress(target, d->device);
+    const Address *a = std::get_if<Address>(&parsed);
+    return a ? *a : Address{};
+}
+
+} // namespace rung::model

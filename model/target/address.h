@@ -1,0 +1,46 @@
+#pragma once
+
+// Parsing and printing device addresses and constants per target. The rules come from the
+// target's area table (target.h); this file holds the only code that reads them.
+
+#include "model/target/target.h"
+
+#include <QString>
+#include <QStringView>
+
+#include <variant>
+
+namespace rung::model {
+
+// Why an address could not be parsed, with the column (0-based, within the text given)
+// where the problem starts. The message is already translated.
+struct AddressError {
+    QString message;
+    int column = 0;
+};
+
+// Parse a device address as the target writes it: "X10", "i00", "010.00", "HR00.05",
+// "TIM 000" (CPM1 timer number), "I20", "SM0.0". With a model the model's ranges apply
+// ("o31 is beyond VPC2416's outputs o00..o15"); without one, the family's full ranges.
+std::variant<Address, AddressError> parseAddress(const Target &target, QStringView text,
+                                                 const ModelVariant *model = nullptr);
+
+// The address of the target's system device with this role (VPC r88, CPM1 253.13 for
+// AlwaysOn); an invalid Address when the target has none.
+Address systemAddress(const Target &target, SystemRole role);
+
+// Print an address in the target's canonical listing form.
+QString formatAddress(const Target &target, const Address &address);
+
+// A constant operand as written: Vigor K10 / H1F, CPM1 #0150 (BCD digits), VPC and PL110 plain
+// numbers. value is the numeric value (for #0150: 150, the digits read as decimal).
+struct Constant {
+    qint64 value = 0;
+    enum class Style : std::uint8_t { Decimal, Hex, Bcd, Plain } style = Style::Plain;
+    friend bool operator==(const Constant &, const Constant &) = default;
+};
+
+std::variant<Constant, AddressError> parseConstant(const Target &target, QStringView text);
+QString formatConstant(const Target &target, const Constant &constant);
+
+} // namespace rung::model

@@ -1,0 +1,216 @@
+#include "model/target/target_data.h"
+
+#include <QCoreApplication>
+
+// Omron SYSMAC CPM1 (seed 002): 16-bit channels written CCC.BB, BCD constants with '#',
+// instructions with Omron's function codes. The canonical spelling carries the function code
+// as SYSWIN prints it ("KEEP(11)"); the bare name is an alias.
+
+namespace rung::model::detail {
+
+namespace {
+
+using K = OperandKind;
+
+InstructionSpec &withCode(InstructionSpec &s, const char *bare, int code) {
+    s.functionCode = code;
+    s.aliases.append(QString::fromLatin1(bare));
+    return s;
+}
+
+} // namespace
+
+Target makeCpm1Target() {
+    Target t;
+    t.family = Family::Cpm1;
+    t.id = QStringLiteral("cpm1");
+    t.displayName = QStringLiteral("CPM1");
+    t.defaultTimerBaseMs = 100.0;
+
+    auto channels = [&t](const char *key, int first, int last, const char *description) -> Area & {
+        Area &a = addArea(t, key, "", AreaKind::Channel, first, last, description);
+        a.numbering = Numbering::ChannelBit;
+        a.digits = 3;
+        return a;
+    };
+    Area &in = channels("IN", 0, 9, QT_TRANSLATE_NOOP("rung::model::Target", "input channels"));
+    in.writable = false;
+    in.physical = true;
+    channels("OUT", 10, 19, QT_TRANSLATE_NOOP("rung::model::Target", "output channels")).physical =
+        true;
+    channels("WR", 200, 231, QT_TRANSLATE_NOOP("rung::model::Target", "work channels"));
+    Area &sr =
+        channels("SR", 232, 255, QT_TRANSLATE_NOOP("rung::model::Target", "special channels"));
+    sr.system = true;
+    sr.writable = false;
+    Area &hr = addArea(t, "HR", "HR", AreaKind::Channel, 0, 19,
+                       QT_TRANSLATE_NOOP("rung::model::Target", "holding relays"));
+    hr.numbering = Numbering::ChannelBit;
+    hr.digits = 2;
+    hr.retentive = true;
+    Area &tim = addArea(t, "TIM", "TIM ", AreaKind::Timer, 0, 127,
+                        QT_TRANSLATE_NOOP("rung::model::Target", "timers"));
+    tim.digits = 3;
+    tim.bank = 0;
+    Area &cnt = addArea(t, "CNT", "CNT ", AreaKind::Counter, 0, 127,
+                        QT_TRANSLATE_NOOP("rung::model::Target", "counters"));
+    cnt.digits = 3;
+    cnt.bank = 0;
+    cnt.retentive = true;
+    Area &dm = addArea(t, "DM", "DM ", AreaKind::Word, 0, 1023,
+                       QT_TRANSLATE_NOOP("rung::model::Target", "data memory"));
+    dm.digits = 4;
+    dm.retentive = true;
+    Area &dmr = addArea(t, "DMR", "DM ", AreaKind::Word, 6144, 6667,
+                        QT_TRANSLATE_NOOP("rung::model::Target", "read-only data memory"));
+    dmr.digits = 4;
+    dmr.writable = false;
+    dmr.retentive = true;
+
+    t.systemDevices = {
+        {QStringLiteral("253.13"), SystemRole::AlwaysOn,
+         QT_TRANSLATE_NOOP("rung::model::Target", "always ON")},
+        {QStringLiteral("253.14"), SystemRole::Other,
+         QT_TRANSLATE_NOOP("rung::model::Target", "always OFF")},
+        {QStringLiteral("253.15"), SystemRole::FirstScan,
+         QT_TRANSLATE_NOOP("rung::model::Target", "ON for the first scan")},
+        {QStringLiteral("254.00"), SystemRole::Clock1min,
+         QT_TRANSLATE_NOOP("rung::model::Target", "1 min clock")},
+        {QStringLiteral("254.01"), SystemRole::Other,
+         QT_TRANSLATE_NOOP("rung::model::Target", "0.02 s clock")},
+        {QStringLiteral("255.00"), SystemRole::Clock100ms,
+         QT_TRANSLATE_NOOP("rung::model::Target", "0.1 s clock")},
+        {QStringLiteral("255.01"), SystemRole::Other,
+         QT_TRANSLATE_NOOP("rung::model::Target", "0.2 s clock")},
+        {QStringLiteral("255.02"), SystemRole::Clock1s,
+         QT_TRANSLATE_NOOP("rung::model::Target", "1 s clock")},
+        {QStringLiteral("250"), SystemRole::Other,
+         QT_TRANSLATE_NOOP("rung::model::Target", "analog setting 0 (BCD 0..200)")},
+        {QStringLiteral("251"), SystemRole::Other,
+         QT_TRANSLATE_NOOP("rung::model::Target", "analog setting 1 (BCD 0..200)")},
+    };
+
+    for (auto [mnemonic, op, mode, summary] :
+         {std::tuple{"LD", Op::Load, ContactMode::Normal,
+                     QT_TRANSLATE_NOOP("rung::model::Target",
+                                       "Start a block with a normally open contact")},
+          {"LD NOT", Op::Load, ContactMode::Negated,
+           QT_TRANSLATE_NOOP("rung::model::Target",
+                             "Start a block with a normally closed contact")},
+          {"AND", Op::And, ContactMode::Normal,
+           QT_TRANSLATE_NOOP("rung::model::Target", "Normally open contact in series")},
+          {"AND NOT", Op::And, ContactMode::Negated,
+           QT_TRANSLATE_NOOP("rung::model::Target", "Normally closed contact in series")},
+          {"OR", Op::Or, ContactMode::Normal,
+           QT_TRANSLATE_NOOP("rung::model::Target", "Normally open contact in parallel")},
+          {"OR NOT", Op::Or, ContactMode::Negated,
+           QT_TRANSLATE_NOOP("rung::model::Target", "Normally closed contact in parallel")}}) {
+        addSpec(t, mnemonic, op, {{K::BitSource}}, summary, "CCC.BB / TIM n / CNT n").mode = mode;
+    }
+    addSpec(t, "AND LD", Op::AndBlock, {},
+            QT_TRANSLATE_NOOP("rung::model::Target", "Connect the last two blocks in series"));
+    addSpec(t, "OR LD", Op::OrBlock, {},
+            QT_TRANSLATE_NOOP("rung::model::Target", "Connect the last two blocks in parallel"));
+    addSpec(t, "OUT", Op::Out, {{K::BitDest}},
+            QT_TRANSLATE_NOOP("rung::model::Target", "Output coil"), "CCC.BB");
+    addSpec(t, "OUT NOT", Op::Out, {{K::BitDest}},
+            QT_TRANSLATE_NOOP("rung::model::Target", "Inverted output coil"), "CCC.BB")
+        .negated = true;
+    addSpec(t, "SET", Op::Set, {{K::BitDest}},
+            QT_TRANSLATE_NOOP("rung::model::Target", "Set (latch) a bit"), "CCC.BB");
+    addSpec(t, "RESET", Op::Reset, {{K::BitDest}},
+            QT_TRANSLATE_NOOP("rung::model::Target", "Reset a bit"), "CCC.BB");
+    withCode(
+        addSpec(t, "KEEP(11)", Op::Keep, {{K::BitDest}},
+                QT_TRANSLATE_NOOP("rung::model::Target",
+                                  "Keep: set = last but one block, reset = last block; reset wins"),
+                "CCC.BB"),
+        "KEEP", 11)
+        .inputs = 2;
+    withCode(addSpec(t, "DIFU(13)", Op::PulseRise, {{K::BitDest}},
+                     QT_TRANSLATE_NOOP("rung::model::Target", "ON for one scan on a rising edge"),
+                     "CCC.BB"),
+             "DIFU", 13);
+    withCode(addSpec(t, "DIFD(14)", Op::PulseFall, {{K::BitDest}},
+                     QT_TRANSLATE_NOOP("rung::model::Target", "ON for one scan on a falling edge"),
+                     "CCC.BB"),
+             "DIFD", 14);
+    addSpec(t, "TIM", Op::Timer, {{K::TimerNumber}, {K::SetValue}},
+            QT_TRANSLATE_NOOP("rung::model::Target",
+                              "Timer, 0.1 s, counts down from the BCD set value"),
+            "000..127 #0000..#9999");
+    withCode(
+        addSpec(t, "TIMH(15)", Op::Timer, {{K::TimerNumber}, {K::SetValue}},
+                QT_TRANSLATE_NOOP("rung::model::Target",
+                                  "High-speed timer, 0.01 s, counts down from the BCD set value"),
+                "000..127 #0000..#9999"),
+        "TIMH", 15);
+    addSpec(t, "CNT", Op::Counter, {{K::CounterNumber}, {K::SetValue}},
+            QT_TRANSLATE_NOOP("rung::model::Target",
+                              "Down counter: count = last but one block, reset = last block"),
+            "000..127 #0000..#9999")
+        .inputs = 2;
+    withCode(addSpec(t, "CNTR(12)", Op::UpDownCounter, {{K::CounterNumber}, {K::SetValue}},
+                     QT_TRANSLATE_NOOP(
+                         "rung::model::Target",
+                         "Reversible counter: up, down and reset inputs; wraps at the limits"),
+                     "000..127 #0000..#9999"),
+             "CNTR", 12)
+        .inputs = 3;
+    withCode(addSpec(t, "IL(02)", Op::Interlock, {},
+                     QT_TRANSLATE_NOOP("rung::model::Target",
+                                       "Interlock: what follows runs under this condition")),
+             "IL", 2);
+    withCode(addSpec(t, "ILC(03)", Op::InterlockClear, {},
+                     QT_TRANSLATE_NOOP("rung::model::Target", "Clear the interlock")),
+             "ILC", 3);
+    withCode(addSpec(t, "JMP(04)", Op::Jump, {{K::Label}},
+                     QT_TRANSLATE_NOOP("rung::model::Target",
+                                       "Jump: while OFF, skip to the JME with the same number"),
+                     "00..49"),
+             "JMP", 4);
+    withCode(addSpec(t, "JME(05)", Op::JumpEnd, {{K::Label}},
+                     QT_TRANSLATE_NOOP("rung::model::Target", "End of the jump with this number"),
+                     "00..49"),
+             "JME", 5);
+    withCode(addSpec(t, "MOV(21)", Op::Apply, {{K::WordSource}, {K::WordDest}},
+                     QT_TRANSLATE_NOOP("rung::model::Target", "Move a channel or a constant"),
+                     "S D"),
+             "MOV", 21)
+        .function = ApplyFunction::Mov;
+    withCode(addSpec(t, "NOP(00)", Op::Nop, {},
+                     QT_TRANSLATE_NOOP("rung::model::Target", "No operation")),
+             "NOP", 0);
+    withCode(addSpec(t, "END(01)", Op::End, {},
+                     QT_TRANSLATE_NOOP("rung::model::Target", "End of the program")),
+             "END", 1);
+
+    t.limits.programSteps = 2048;
+    t.limits.stackDepth = 8;
+    t.limits.contactsPerRow = 10;
+    t.limits.maxBlocksInRow = 0; // "AND LD / OR LD: no limit on count" (seed 002)
+    t.limits.jumpLabels = 50;
+    t.limits.allowsStack = false;
+    t.limits.duplicateCoilIsError = true;
+
+    // CPU units by I/O points; inputs from channel 000, outputs from 010 (seed 002).
+    struct Io {
+        const char *name;
+        int inChannels, outChannels;
+    };
+    const Io models[] = {{"CPM1-10CDR", 1, 1}, {"CPM1-20CDR", 1, 1}, {"CPM1-30CDR", 2, 2}};
+    for (const Io &m : models) {
+        ModelVariant v;
+        v.name = QString::fromLatin1(m.name);
+        v.overrides = {{QStringLiteral("IN"), 0, m.inChannels - 1},
+                       {QStringLiteral("OUT"), 10, 10 + m.outChannels - 1}};
+        v.programSteps = 2048;
+        t.models.push_back(v);
+    }
+    ModelVariant expanded;
+    expanded.name = QStringLiteral("CPM1-30CDR+expansion");
+    t.models.push_back(expanded);
+    return t;
+}
+
+} // namespace rung::model::detail

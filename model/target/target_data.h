@@ -1,0 +1,44 @@
+#pragma once
+
+// The builders of the four families' tables (target_vpc.cpp, target_vigor.cpp,
+// target_cpm1.cpp, target_pl110.cpp) and the small helpers they share. Only target.cpp
+// calls the builders.
+
+#include "model/target/target.h"
+
+namespace rung::model::detail {
+
+Target makeVpcTarget();
+Target makeVigorTarget();
+Target makeCpm1Target();
+Target makePl110Target();
+
+// Appends an area and returns it for the fields that differ from the defaults.
+inline Area &addArea(Target &t, const char *key, const char *prefix, AreaKind kind, int first,
+                     int last, const char *description) {
+    Area a;
+    a.key = QString::fromLatin1(key);
+    a.prefix = QString::fromLatin1(prefix);
+    a.kind = kind;
+    a.first = first;
+    a.last = last;
+    a.description = description;
+    t.areas.push_back(a);
+    return t.areas.back();
+}
+
+// Appends an instruction and returns it for the fields that differ from the defaults.
+inline InstructionSpec &addSpec(Target &t, const char *mnemonic, Op op,
+                                std::vector<OperandSpec> operands, const char *summary,
+                                const char *operandHelp = nullptr) {
+    InstructionSpec s;
+    s.mnemonic = QString::fromLatin1(mnemonic);
+    s.op = op;
+    s.operands = std::move(operands);
+    s.summary = summary;
+    s.operandHelp = operandHelp;
+    t.instructions.push_back(std::move(s));
+    return t.instructions.back();
+}
+
+} // namespace rung::model::detail

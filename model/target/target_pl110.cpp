@@ -1,0 +1,305 @@
+#include "model/target/target_data.h"
+
+#include <QCoreApplication>
+
+// PL110 (seed 003, Italian). The vendor tool PLProg is graphical only, so the listing is the
+// product's own design (docs/targets.md): IEC-style contact mnemonics (LD, LDN, AND, ANDN,
+// OR, ORN), ANB / ORB for blocks, and the PLProg element names for everything else (NOT, P, N,
+// TON, MUP, FM, ...). Bit devices are numbered from 1, sixteen to a word (I20 is bit 3 of
+// word 2); word areas V and SM are numbered from 0 and take a bit as V3.5 / SM0.1.
+
+namespace rung::model::detail {
+
+namespace {
+
+using K = OperandKind;
+
+void addContactFamily(Target &t, const char *mnemonic, const char *negatedMnemonic,
+                      const char *negatedAlias, Op op, const char *summary,
+                      const char *negatedSummary) {
+    addSpec(t, mnemonic, op, {{K::BitSource}}, summary, "I/Q/B/M/T/C, V3.5, SM0.1");
+    InstructionSpec &n =
+        addSpec(t, negatedMnemonic, op, {{K::BitSource}}, negatedSummary, "I/Q/B/M/T/C");
+    n.mode = ContactMode::Negated;
+    n.aliases = {QString::fromLatin1(negatedAlias)};
+}
+
+void addImmediate(Target &t, const char *mnemonic, Op op, ContactMode mode, const char *summary) {
+    addSpec(t, mnemonic, op, {{K::BitSource}}, summary, "I1..I8").mode = mode;
+}
+
+void addCompares(Target &t, const char *prefix, Op op) {
+    const std::pair<const char *, CompareOp> compares[] = {
+        {"=", CompareOp::Eq},  {"<>", CompareOp::Ne}, {"<", CompareOp::Lt},
+        {"<=", CompareOp::Le}, {">", CompareOp::Gt},  {">=", CompareOp::Ge}};
+    for (const auto &[symbol, cmp] : compares) {
+        const QByteArray name = QByteArray(prefix) + symbol;
+        InstructionSpec &s = addSpec(
+            t, "", op, {{K::WordSource}, {K::WordSource}},
+            QT_TRANSLATE_NOOP("rung::model::Target", "IF contact: ON while S1 ? S2 is true"),
+            "S1 S2");
+        s.mnemonic = QString::fromLatin1(name);
+        // "LDIF=" names the PLProg element; the short form is canonical.
+        s.aliases = {QString::fromLatin1(QByteArray(prefix) + "IF" + symbol)};
+        s.compare = cmp;
+    }
+}
+
+InstructionSpec &addBox(Target &t, const char *mnemonic, ApplyFunction function,
+                        std::vector<OperandSpec> operands, const char *summary, const char *help) {
+    InstructionSpec &s = addSpec(t, mnemonic, Op::Apply, std::move(operands), summary, help);
+    s.function = function;
+    return s;
+}
+
+} // namespace
+
+Target makePl110Target() {
+    Target t;
+    t.family = Family::Pl110;
+    t.id = QStringLiteral("pl110");
+    t.displayName = QStringLiteral("PL110");
+    t.defaultTimerBaseMs = 100.0;
+
+    // Bit areas (seed 003 sections 2.1.3..2.1.5, 4.2.1..4.2.5 and the Modbus map).
+    Area &in = addArea(t, "I", "I", AreaKind::Bit, 1, 256,
+                       QT_TRANSLATE_NOOP("rung::model::Target", "digital inputs"));
+    in.writable = false;
+    in.physical = true;
+    addArea(t, "Q", "Q", AreaKind::Bit, 1, 256,
+            QT_TRANSLATE_NOOP("rung::model::Target", "digital outputs"))
+        .physical = true;
+    addArea(t, "B", "B", AreaKind::Bit, 1, 32,
+            QT_TRANSLATE_NOOP("rung::model::Target", "bistable relays"));
+    addArea(t, "M", "M", AreaKind::Bit, 1, 128,
+            QT_TRANSLATE_NOOP("rung::model::Target", "markers"));
+    // T49..T64 exist only while SM0.13 trades the counters for timers; the table keeps them so
+    // a program that sets SM0.13 can be written.
+    addArea(t, "T", "T", AreaKind::Timer, 1, 64,
+            QT_TRANSLATE_NOOP("rung::model::Target", "timers"));
+    addArea(t, "C", "C", AreaKind::Counter, 1, 16,
+            QT_TRANSLATE_NOOP("rung::model::Target", "counters"));
+
+    // Word areas. V and SM are retained by the backup battery (2.1.1, 2.1.2).
+    Area &v = addArea(t, "V", "V", AreaKind::Word, 0, 349,
+                      QT_TRANSLATE_NOOP("rung::model::Target", "variables"));
+    v.numbering = Numbering::ChannelBit;
+    v.retentive = true;
+    v.prefixAliases = {QStringLiteral("VW")}; // the seed writes word access as VW30, SMW4
+
+    Area &sm = addArea(t, "SM", "SM", AreaKind::Word, 0, 99,
+                       QT_TRANSLATE_NOOP("rung::model::Target", "special markers"));
+    sm.numbering = Numbering::ChannelBit;
+    sm.prefixAliases = {QStringLiteral("SMW")};
+    sm.retentive = true;
+    sm.system = true;
+    Area &ai = addArea(t, "AI", "AI", AreaKind::Word, 1, 4,
+                       QT_TRANSLATE_NOOP("rung::model::Target", "analog inputs"));
+    ai.writable = false;
+    ai.physical = true;
+    addArea(t, "AQ", "AQ", AreaKind::Word, 1, 2,
+            QT_TRANSLATE_NOOP("rung::model::Target", "analog outputs"))
+        .physical = true;
+    addArea(t, "PT", "PT", AreaKind::Word, 1, 64,
+            QT_TRANSLATE_NOOP("rung::model::Target", "timer presets"));
+    addArea(t, "PV", "PV", AreaKind::Word, 1, 16,
+            QT_TRANSLATE_NOOP("rung::model::Target", "counter presets"));
+    addArea(t, "EEP", "EEP", AreaKind::Word, 0, 999,
+            QT_TRANSLATE_NOOP("rung::model::Target", "EEPROM words"))
+        .retentive = true;
+    addArea(t, "MMC", "MMC", AreaKind::Word, 0, 12999,
+            QT_TRANSLATE_NOOP("rung::model::Target", "MMC words"))
+        .retentive = true;
+    Area &disp = addArea(t, "DISP", "DISP", AreaKind::Word, 0, 167,
+                         QT_TRANSLATE_NOOP("rung::model::Target", "display characters"));
+    disp.wordBits = 8; // one character per byte, 8 rows x 21 (2.1.16)
+
+    // SM0 bits and the scan-time words SM6..SM8 (section 2.1.2).
+    t.systemDevices = {
+        {QStringLiteral("SM0.0"), SystemRole::Run,
+         QT_TRANSLATE_NOOP("rung::model::Target", "RUN/STOP (1 = RUN)")},
+        {QStringLiteral("SM0.1"), SystemRole::FirstScan,
+         QT_TRANSLATE_NOOP("rung::model::Target", "ON for the first scan")},
+        {QStringLiteral("SM0.2"), SystemRole::Clock1min,
+         QT_TRANSLATE_NOOP("rung::model::Target", "60 s clock (30 s ON, 30 s OFF)")},
+        {QStringLiteral("SM0.3"), SystemRole::Clock1s,
+         QT_TRANSLATE_NOOP("rung::model::Target", "1 s clock (0.5 s ON, 0.5 s OFF)")},
+        {QStringLiteral("SM0.4"), SystemRole::ScanToggle,
+         QT_TRANSLATE_NOOP("rung::model::Target", "toggles every scan")},
+        {QStringLiteral("SM0.5"), SystemRole::Other,
+         QT_TRANSLATE_NOOP("rung::model::Target", "TEST: inputs are taken from SM37")},
+        {QStringLiteral("SM0.13"), SystemRole::Other,
+         QT_TRANSLATE_NOOP("rung::model::Target", "counters C1..C16 off, timers T49..T64 on")},
+        {QStringLiteral("SM6"), SystemRole::ScanTimeCurrent,
+         QT_TRANSLATE_NOOP("rung::model::Target", "last scan time (0.1 ms)"), 100},
+        {QStringLiteral("SM7"), SystemRole::ScanTimeMin,
+         QT_TRANSLATE_NOOP("rung::model::Target", "minimum scan time (0.1 ms)"), 100},
+        {QStringLiteral("SM8"), SystemRole::ScanTimeMax,
+         QT_TRANSLATE_NOOP("rung::model::Target", "maximum scan time (0.1 ms)"), 100},
+    };
+
+    // Contacts. The plain spellings come first: Target::findInstruction(op, mode) returns the
+    // first match, and that is what the converter writes.
+    addContactFamily(
+        t, "LD", "LDN", "LD NOT", Op::Load,
+        QT_TRANSLATE_NOOP("rung::model::Target", "Start a block with a normally open contact"),
+        QT_TRANSLATE_NOOP("rung::model::Target", "Start a block with a normally closed contact"));
+    addContactFamily(t, "AND", "ANDN", "AND NOT", Op::And,
+                     QT_TRANSLATE_NOOP("rung::model::Target", "Normally open contact in series"),
+                     QT_TRANSLATE_NOOP("rung::model::Target", "Normally closed contact in series"));
+    addContactFamily(
+        t, "OR", "ORN", "OR NOT", Op::Or,
+        QT_TRANSLATE_NOOP("rung::model::Target", "Normally open contact in parallel"),
+        QT_TRANSLATE_NOOP("rung::model::Target", "Normally closed contact in parallel"));
+    addCompares(t, "LD", Op::Load);
+    addCompares(t, "AND", Op::And);
+    addCompares(t, "OR", Op::Or);
+    addSpec(t, "ANB", Op::AndBlock, {},
+            QT_TRANSLATE_NOOP("rung::model::Target", "Connect the last two blocks in series"));
+    addSpec(t, "ORB", Op::OrBlock, {},
+            QT_TRANSLATE_NOOP("rung::model::Target", "Connect the last two blocks in parallel"));
+    addSpec(t, "NOT", Op::Invert, {},
+            QT_TRANSLATE_NOOP("rung::model::Target", "NOT contact: invert the power flow"));
+    // P / N act on the power flow, not on a device: an operand-less element like NOT, told
+    // apart by its mode.
+    addSpec(t, "P", Op::Invert, {},
+            QT_TRANSLATE_NOOP("rung::model::Target",
+                              "P contact: power flows for one scan when it turns ON"))
+        .mode = ContactMode::Rising;
+    addSpec(t, "N", Op::Invert, {},
+            QT_TRANSLATE_NOOP("rung::model::Target",
+                              "N contact: power flows for one scan when it turns OFF"))
+        .mode = ContactMode::Falling;
+    // Immediate input contacts (II, 4.2.11): read the terminal, not the input image.
+    addImmediate(
+        t, "LDII", Op::Load, ContactMode::Normal,
+        QT_TRANSLATE_NOOP("rung::model::Target", "Start a block with an immediate input contact"));
+    addImmediate(t, "LDNII", Op::Load, ContactMode::Negated,
+                 QT_TRANSLATE_NOOP("rung::model::Target",
+                                   "Start a block with a normally closed immediate input contact"));
+    addImmediate(t, "ANDII", Op::And, ContactMode::Normal,
+                 QT_TRANSLATE_NOOP("rung::model::Target", "Immediate input contact in series"));
+    addImmediate(t, "ANDNII", Op::And, ContactMode::Negated,
+                 QT_TRANSLATE_NOOP("rung::model::Target",
+                                   "Normally closed immediate input contact in series"));
+    addImmediate(t, "ORII", Op::Or, ContactMode::Normal,
+                 QT_TRANSLATE_NOOP("rung::model::Target", "Immediate input contact in parallel"));
+    addImmediate(t, "ORNII", Op::Or, ContactMode::Negated,
+                 QT_TRANSLATE_NOOP("rung::model::Target",
+                                   "Normally closed immediate input contact in parallel"));
+
+    // Coils.
+    addSpec(t, "OUT", Op::Out, {{K::BitDest}},
+            QT_TRANSLATE_NOOP("rung::model::Target", "Output coil"), "Q/M");
+    addSpec(t, "OUTQI", Op::Out, {{K::BitDest}},
+            QT_TRANSLATE_NOOP("rung::model::Target",
+                              "Immediate output coil: writes the terminal at once"),
+            "Q1..Q8")
+        .aliases = {QStringLiteral("QI")};
+    addBox(t, "OUTB", ApplyFunction::Toggle, {{K::BitDest}},
+           QT_TRANSLATE_NOOP("rung::model::Target",
+                             "Bistable relay coil: each activation toggles the relay"),
+           "B1..B32")
+        .steps = 1;
+    addBox(t, "SBIT", ApplyFunction::SetBit, {{K::WordDest}, {K::Constant, true}},
+           QT_TRANSLATE_NOOP("rung::model::Target", "Set a bit (0..15) of a word to 1"),
+           "V3 5 | V3.5 | Q1");
+    addBox(t, "RBIT", ApplyFunction::ResetBit, {{K::WordDest}, {K::Constant, true}},
+           QT_TRANSLATE_NOOP("rung::model::Target", "Reset a bit (0..15) of a word to 0"),
+           "V3 5 | V3.5 | Q1");
+
+    // Timers: T, preset (constant or VW/SMW/AI), optional time base in ms (10, 100, 1000).
+    const char *timerHelp = "T1..T64 PT [10|100|1000]";
+    addSpec(t, "TON", Op::Timer, {{K::TimerNumber}, {K::SetValue}, {K::Constant, true}},
+            QT_TRANSLATE_NOOP("rung::model::Target",
+                              "On-delay timer: T ON once the time reaches PT; OFF resets"),
+            timerHelp);
+    addSpec(t, "TOFF", Op::Timer, {{K::TimerNumber}, {K::SetValue}, {K::Constant, true}},
+            QT_TRANSLATE_NOOP("rung::model::Target",
+                              "Off-delay timer: T ON at once, OFF when PT has elapsed after OFF"),
+            timerHelp)
+        .timerMode = TimerMode::OffDelay;
+    InstructionSpec &tonr =
+        addSpec(t, "TONR", Op::Timer, {{K::TimerNumber}, {K::SetValue}, {K::Constant, true}},
+                QT_TRANSLATE_NOOP("rung::model::Target",
+                                  "Accumulating on-delay timer: keeps its time while OFF"),
+                timerHelp);
+    tonr.timerMode = TimerMode::Accumulating;
+
+    // Counters: UP = first block, DOWN = second, RESET = last (4.2.5).
+    InstructionSpec &mup = addSpec(
+        t, "MUP", Op::UpDownCounter, {{K::CounterNumber}, {K::SetValue}},
+        QT_TRANSLATE_NOOP("rung::model::Target",
+                          "Up counter: UP, DOWN and RESET inputs; C ON while the count >= PV"),
+        "C1..C16 PV");
+    mup.inputs = 3;
+    InstructionSpec &mdown = addSpec(
+        t, "MDOWN", Op::UpDownCounter, {{K::CounterNumber}, {K::SetValue}},
+        QT_TRANSLATE_NOOP("rung::model::Target",
+                          "Down counter from PV: UP, DOWN and RESET (load PV) inputs; C ON at 0"),
+        "C1..C16 PV");
+    mdown.inputs = 3;
+    mdown.counterMode = CounterMode::Down;
+
+    // Functions.
+    const OperandSpec src{K::WordSource};
+    const OperandSpec dst{K::WordDest};
+    addBox(t, "FM", ApplyFunction::Math, {src, {K::Constant}, src, dst},
+           QT_TRANSLATE_NOOP("rung::model::Target",
+                             "Math formula: D = S1 op S2, op one of + - * / | & ^ << >>"),
+           "S1 OP S2 D");
+    addBox(t, "MOV", ApplyFunction::Mov, {src, dst},
+           QT_TRANSLATE_NOOP("rung::model::Target", "Move a value or a word to D"), "S D");
+    addBox(t, "BLKMOV", ApplyFunction::BlockMove, {src, dst, {K::Count}},
+           QT_TRANSLATE_NOOP("rung::model::Target", "Move n words from S (or the value S) to D"),
+           "S D n");
+    addBox(t, "MOVIND", ApplyFunction::IndirectMove, {src, dst, src},
+           QT_TRANSLATE_NOOP("rung::model::Target",
+                             "Indexed move: D[index] = S, the area used as a vector"),
+           "S D INDEX");
+    // Known to the editor, not simulated (communication, positioning, PID, display).
+    const OperandSpec any{K::Constant, true};
+    const std::pair<const char *, const char *> boxes[] = {
+        {"MOVTXT", QT_TRANSLATE_NOOP("rung::model::Target", "Store a text string in words")},
+        {"RANGE",
+         QT_TRANSLATE_NOOP("rung::model::Target", "Set the range of an AI, TR, AQ or PID output")},
+        {"SEND", QT_TRANSLATE_NOOP("rung::model::Target", "Send data on a serial port")},
+        {"COM", QT_TRANSLATE_NOOP("rung::model::Target", "Serial communication on COM1/COM2")},
+        {"EXP", QT_TRANSLATE_NOOP("rung::model::Target", "Communication with an expansion")},
+        {"TunePOS", QT_TRANSLATE_NOOP("rung::model::Target", "Tune an on/off positioner")},
+        {"POS", QT_TRANSLATE_NOOP("rung::model::Target", "On/off positioner")},
+        {"StartPID", QT_TRANSLATE_NOOP("rung::model::Target", "Start a PID loop")},
+        {"PID", QT_TRANSLATE_NOOP("rung::model::Target", "PID control loop")},
+        {"SetOutPID", QT_TRANSLATE_NOOP("rung::model::Target", "Set the output of a PID loop")},
+        {"GENSET",
+         QT_TRANSLATE_NOOP("rung::model::Target",
+                           "Setpoint generator with acceleration and deceleration ramps")},
+        {"CONV", QT_TRANSLATE_NOOP("rung::model::Target", "Convert a value")},
+        {"SetPAR", QT_TRANSLATE_NOOP("rung::model::Target", "Set a display parameter")},
+        {"FormatPAR", QT_TRANSLATE_NOOP("rung::model::Target", "Format a display parameter")},
+        {"PosPAR", QT_TRANSLATE_NOOP("rung::model::Target", "Place a display parameter")},
+    };
+    for (const auto &[name, summary] : boxes)
+        addBox(t, name, ApplyFunction::NotSimulated, {any, any, any, any, any, any}, summary,
+               "...");
+    addSpec(t, "END", Op::End, {}, QT_TRANSLATE_NOOP("rung::model::Target", "End of the program"));
+
+    // The seed gives no program size; 4096 elements is the product's choice (docs/targets.md).
+    t.limits.programSteps = 4096;
+    t.limits.stackDepth = 8;
+    t.limits.contactsPerRow = 10;
+    t.limits.maxBlocksInRow = 0;
+    t.limits.jumpLabels = 0;
+    t.limits.allowsStack = false;
+    t.limits.duplicateCoilIsError = true;
+    t.limits.outputNeedsCondition = false; // PLProg coils may hang on the left rail
+
+    // Same I/O on both; only PL110-2A has the OLED terminal and its DISP area (1.2, 2.1.16).
+    t.models = {
+        ModelVariant{QStringLiteral("PL110-1A"), {{QStringLiteral("DISP"), 0, -1}}, 0},
+        ModelVariant{QStringLiteral("PL110-2A"), {}, 0},
+    };
+    return t;
+}
+
+} // namespace rung::model::detail

@@ -1,0 +1,352 @@
+#include "model/target/target_data.h"
+
+#include <QCoreApplication>
+
+// Vigor M / VB / VH: devices from seed 001's communication address map, instructions of the
+// FX-style family described in seed 004. Where the seeds are silent (latched ranges, clock
+// relays, step counts) the values follow the FX family the Vigor PLCs copy; docs/targets.md
+// lists each such choice.
+
+namespace rung::model::detail {
+
+namespace {
+
+using K = OperandKind;
+
+InstructionSpec contact(const char *mnemonic, Op op, ContactMode mode, const char *summary) {
+    InstructionSpec s;
+    s.mnemonic = QString::fromLatin1(mnemonic);
+    s.op = op;
+    s.mode = mode;
+    s.operands = {{K::BitSource}};
+    s.summary = summary;
+    s.operandHelp = "X/Y/M/S/T/C";
+    return s;
+}
+
+InstructionSpec compareContact(const char *mnemonic, Op op, CompareOp compare) {
+    InstructionSpec s;
+    s.mnemonic = QString::fromLatin1(mnemonic);
+    s.op = op;
+    s.compare = compare;
+    s.operands = {{K::WordSource}, {K::WordSource}};
+    s.summary = QT_TRANSLATE_NOOP("rung::model::Target", "Compare contact: ON while S1 ? S2");
+    s.operandHelp = "S1 S2";
+    s.steps = 5;
+    return s;
+}
+
+InstructionSpec bare(const char *mnemonic, Op op, const char *summary) {
+    InstructionSpec s;
+    s.mnemonic = QString::fromLatin1(mnemonic);
+    s.op = op;
+    s.summary = summary;
+    return s;
+}
+
+InstructionSpec coil(const char *mnemonic, Op op, K kind, const char *summary, const char *help) {
+    InstructionSpec s;
+    s.mnemonic = QString::fromLatin1(mnemonic);
+    s.op = op;
+    s.operands = {{kind}};
+    s.summary = summary;
+    s.operandHelp = help;
+    return s;
+}
+
+InstructionSpec apply(const char *mnemonic, ApplyFunction function,
+                      std::vector<OperandSpec> operands, int steps, const char *summary,
+                      const char *help) {
+    InstructionSpec s;
+    s.mnemonic = QString::fromLatin1(mnemonic);
+    s.op = Op::Apply;
+    s.function = function;
+    s.operands = std::move(operands);
+    s.steps = steps;
+    s.summary = summary;
+    s.operandHelp = help;
+    return s;
+}
+
+} // namespace
+
+Target makeVigorTarget() {
+    Target t;
+    t.family = Family::Vigor;
+    t.id = QStringLiteral("vigor");
+    t.displayName = QStringLiteral("Vigor");
+    t.defaultTimerBaseMs = 100.0;
+
+    auto area = [&t](const char *key, const char *prefix, AreaKind kind, int first, int last,
+                     const char *description) -> Area & {
+        Area a;
+        a.key = QString::fromLatin1(key);
+        a.prefix = QString::fromLatin1(prefix);
+        a.kind = kind;
+        a.first = first;
+        a.last = last;
+        a.description = description;
+        t.areas.push_back(a);
+        return t.areas.back();
+    };
+    Area &x =
+        area("X", "X", AreaKind::Bit, 0, 0777, QT_TRANSLATE_NOOP("rung::model::Target", "inputs"));
+    x.numbering = Numbering::Octal;
+    x.writable = false;
+    x.physical = true;
+    Area &y =
+        area("Y", "Y", AreaKind::Bit, 0, 0777, QT_TRANSLATE_NOOP("rung::model::Target", "outputs"));
+    y.numbering = Numbering::Octal;
+    y.physical = true;
+    area("M", "M", AreaKind::Bit, 0, 499,
+         QT_TRANSLATE_NOOP("rung::model::Target", "auxiliary relays"));
+    area("ML", "M", AreaKind::Bit, 500, 5119,
+         QT_TRANSLATE_NOOP("rung::model::Target", "latched auxiliary relays"))
+        .retentive = true;
+    Area &sm = area("SM", "M", AreaKind::Bit, 9000, 9255,
+                    QT_TRANSLATE_NOOP("rung::model::Target", "special relays"));
+    // Writable as a whole: seed 001's programs drive M9100 (start dialing) and M9122 (RS send);
+    // the read-only ones are known by name in systemDevices.
+    sm.system = true;
+    area("S", "S", AreaKind::Bit, 0, 499, QT_TRANSLATE_NOOP("rung::model::Target", "step relays"));
+    area("SL", "S", AreaKind::Bit, 500, 999,
+         QT_TRANSLATE_NOOP("rung::model::Target", "latched step relays"))
+        .retentive = true;
+    area("T", "T", AreaKind::Timer, 0, 255, QT_TRANSLATE_NOOP("rung::model::Target", "timers"));
+    area("C", "C", AreaKind::Counter, 0, 99, QT_TRANSLATE_NOOP("rung::model::Target", "counters"));
+    area("CL", "C", AreaKind::Counter, 100, 199,
+         QT_TRANSLATE_NOOP("rung::model::Target", "latched counters"))
+        .retentive = true;
+    Area &c32 = area("C32", "C", AreaKind::Counter, 200, 255,
+                     QT_TRANSLATE_NOOP("rung::model::Target", "32-bit counters"));
+    c32.wordBits = 32;
+    c32.retentive = true;
+    area("D", "D", AreaKind::Word, 0, 199,
+         QT_TRANSLATE_NOOP("rung::model::Target", "data registers"));
+    area("DL", "D", AreaKind::Word, 200, 8191,
+         QT_TRANSLATE_NOOP("rung::model::Target", "latched data registers"))
+        .retentive = true;
+    Area &sd = area("SD", "D", AreaKind::Word, 9000, 9255,
+                    QT_TRANSLATE_NOOP("rung::model::Target", "special registers"));
+    sd.system = true;
+
+    t.systemDevices = {
+        {QStringLiteral("M9000"), SystemRole::AlwaysOn,
+         QT_TRANSLATE_NOOP("rung::model::Target", "ON while the PLC runs")},
+        {QStringLiteral("M9002"), SystemRole::FirstScan,
+         QT_TRANSLATE_NOOP("rung::model::Target", "ON for the first scan")},
+        {QStringLiteral("M9011"), SystemRole::Clock10ms,
+         QT_TRANSLATE_NOOP("rung::model::Target", "10 ms clock")},
+        {QStringLiteral("M9012"), SystemRole::Clock100ms,
+         QT_TRANSLATE_NOOP("rung::model::Target", "100 ms clock")},
+        {QStringLiteral("M9013"), SystemRole::Clock1s,
+         QT_TRANSLATE_NOOP("rung::model::Target", "1 s clock")},
+        {QStringLiteral("M9014"), SystemRole::Clock1min,
+         QT_TRANSLATE_NOOP("rung::model::Target", "1 min clock")},
+        {QStringLiteral("M9199"), SystemRole::Other,
+         QT_TRANSLATE_NOOP("rung::model::Target", "ON for one scan when an MBUS cycle completes")},
+        {QStringLiteral("D9010"), SystemRole::ScanTimeCurrent,
+         QT_TRANSLATE_NOOP("rung::model::Target", "current scan time (0.1 ms)"), 100},
+        {QStringLiteral("D9011"), SystemRole::ScanTimeMin,
+         QT_TRANSLATE_NOOP("rung::model::Target", "minimum scan time (0.1 ms)"), 100},
+        {QStringLiteral("D9012"), SystemRole::ScanTimeMax,
+         QT_TRANSLATE_NOOP("rung::model::Target", "maximum scan time (0.1 ms)"), 100},
+        // Named in seed 001's communication chapters; the simulator leaves them alone.
+        {QStringLiteral("M9063"), SystemRole::Other,
+         QT_TRANSLATE_NOOP("rung::model::Target",
+                           "parallel operation or RS communication error, PLC keeps running")},
+        {QStringLiteral("M9070"), SystemRole::Other,
+         QT_TRANSLATE_NOOP("rung::model::Target", "parallel link: this unit is the master")},
+        {QStringLiteral("M9071"), SystemRole::Other,
+         QT_TRANSLATE_NOOP("rung::model::Target", "parallel link: this unit is a slave")},
+        {QStringLiteral("M9072"), SystemRole::Other,
+         QT_TRANSLATE_NOOP("rung::model::Target", "parallel operation normal")},
+        {QStringLiteral("M9100"), SystemRole::Other,
+         QT_TRANSLATE_NOOP("rung::model::Target", "CP2 modem: start dialing (OFF to ON)")},
+        {QStringLiteral("M9101"), SystemRole::Other,
+         QT_TRANSLATE_NOOP("rung::model::Target", "CP2 modem: dialing failed")},
+        {QStringLiteral("M9122"), SystemRole::Other,
+         QT_TRANSLATE_NOOP("rung::model::Target", "RS instruction send flag")},
+        {QStringLiteral("M9123"), SystemRole::Other,
+         QT_TRANSLATE_NOOP("rung::model::Target", "RS instruction receive done")},
+        {QStringLiteral("M9124"), SystemRole::Other,
+         QT_TRANSLATE_NOOP("rung::model::Target", "CP2 modem CD signal")},
+        {QStringLiteral("M9129"), SystemRole::Other,
+         QT_TRANSLATE_NOOP("rung::model::Target", "time-out during RS")},
+        {QStringLiteral("M9162"), SystemRole::Other,
+         QT_TRANSLATE_NOOP("rung::model::Target", "parallel operation high-speed transfer")},
+        {QStringLiteral("M9183"), SystemRole::Other,
+         QT_TRANSLATE_NOOP("rung::model::Target",
+                           "CPU link communication failed (master); M9184..M9190 slaves 1..7")},
+        {QStringLiteral("D9063"), SystemRole::Other,
+         QT_TRANSLATE_NOOP("rung::model::Target", "RS communication error code")},
+        {QStringLiteral("D9080"), SystemRole::Other,
+         QT_TRANSLATE_NOOP("rung::model::Target", "display mode of the display screen")},
+        {QStringLiteral("D9081"), SystemRole::Other,
+         QT_TRANSLATE_NOOP("rung::model::Target", "number of the D register shown in mode 3")},
+        {QStringLiteral("D9121"), SystemRole::Other,
+         QT_TRANSLATE_NOOP("rung::model::Target", "computer link station number")},
+        {QStringLiteral("D9201"), SystemRole::Other,
+         QT_TRANSLATE_NOOP("rung::model::Target", "current network scan time")},
+        {QStringLiteral("D9202"), SystemRole::Other,
+         QT_TRANSLATE_NOOP("rung::model::Target", "maximum network scan time")},
+    };
+
+    auto &in = t.instructions;
+    using M = ContactMode;
+    in.push_back(contact(
+        "LD", Op::Load, M::Normal,
+        QT_TRANSLATE_NOOP("rung::model::Target", "Start a block with a normally open contact")));
+    in.push_back(contact(
+        "LDI", Op::Load, M::Negated,
+        QT_TRANSLATE_NOOP("rung::model::Target", "Start a block with a normally closed contact")));
+    in.push_back(contact(
+        "LDP", Op::Load, M::Rising,
+        QT_TRANSLATE_NOOP("rung::model::Target", "Start a block with a rising-edge contact")));
+    in.push_back(contact(
+        "LDF", Op::Load, M::Falling,
+        QT_TRANSLATE_NOOP("rung::model::Target", "Start a block with a falling-edge contact")));
+    in.push_back(
+        contact("AND", Op::And, M::Normal,
+                QT_TRANSLATE_NOOP("rung::model::Target", "Normally open contact in series")));
+    in.push_back(
+        contact("ANI", Op::And, M::Negated,
+                QT_TRANSLATE_NOOP("rung::model::Target", "Normally closed contact in series")));
+    in.push_back(
+        contact("ANDP", Op::And, M::Rising,
+                QT_TRANSLATE_NOOP("rung::model::Target", "Rising-edge contact in series")));
+    in.push_back(
+        contact("ANDF", Op::And, M::Falling,
+                QT_TRANSLATE_NOOP("rung::model::Target", "Falling-edge contact in series")));
+    in.push_back(
+        contact("OR", Op::Or, M::Normal,
+                QT_TRANSLATE_NOOP("rung::model::Target", "Normally open contact in parallel")));
+    in.push_back(
+        contact("ORI", Op::Or, M::Negated,
+                QT_TRANSLATE_NOOP("rung::model::Target", "Normally closed contact in parallel")));
+    in.push_back(
+        contact("ORP", Op::Or, M::Rising,
+                QT_TRANSLATE_NOOP("rung::model::Target", "Rising-edge contact in parallel")));
+    in.push_back(
+        contact("ORF", Op::Or, M::Falling,
+                QT_TRANSLATE_NOOP("rung::model::Target", "Falling-edge contact in parallel")));
+    const std::pair<const char *, CompareOp> compares[] = {
+        {"=", CompareOp::Eq},  {"<>", CompareOp::Ne}, {"<", CompareOp::Lt},
+        {"<=", CompareOp::Le}, {">", CompareOp::Gt},  {">=", CompareOp::Ge}};
+    for (const auto &[symbol, cmp] : compares) {
+        for (const auto &[prefix, op] :
+             {std::pair{"LD", Op::Load}, {"AND", Op::And}, {"OR", Op::Or}}) {
+            const QByteArray name = QByteArray(prefix) + symbol;
+            InstructionSpec s = compareContact("", op, cmp);
+            s.mnemonic = QString::fromLatin1(name);
+            in.push_back(s);
+        }
+    }
+    in.push_back(
+        bare("ANB", Op::AndBlock,
+             QT_TRANSLATE_NOOP("rung::model::Target", "Connect the last two blocks in series")));
+    in.push_back(
+        bare("ORB", Op::OrBlock,
+             QT_TRANSLATE_NOOP("rung::model::Target", "Connect the last two blocks in parallel")));
+    in.push_back(
+        bare("MPS", Op::Push,
+             QT_TRANSLATE_NOOP("rung::model::Target", "Push the result onto the branch stack")));
+    in.push_back(
+        bare("MRD", Op::ReadStack,
+             QT_TRANSLATE_NOOP("rung::model::Target", "Read the top of the branch stack")));
+    in.push_back(
+        bare("MPP", Op::Pop, QT_TRANSLATE_NOOP("rung::model::Target", "Pop the branch stack")));
+    in.push_back(
+        bare("INV", Op::Invert, QT_TRANSLATE_NOOP("rung::model::Target", "Invert the result")));
+    in.push_back(coil("OUT", Op::Out, K::BitDest,
+                      QT_TRANSLATE_NOOP("rung::model::Target", "Output coil"), "Y/M/S"));
+    in.push_back(coil("SET", Op::Set, K::BitDest,
+                      QT_TRANSLATE_NOOP("rung::model::Target", "Set (latch) a device"), "Y/M/S"));
+    InstructionSpec rst =
+        coil("RST", Op::Reset, K::BitDest,
+             QT_TRANSLATE_NOOP("rung::model::Target", "Reset a device, a timer or a counter"),
+             "Y/M/S/T/C/D");
+    in.push_back(rst);
+    in.push_back(coil("PLS", Op::PulseRise, K::BitDest,
+                      QT_TRANSLATE_NOOP("rung::model::Target", "ON for one scan on a rising edge"),
+                      "Y/M"));
+    in.push_back(coil("PLF", Op::PulseFall, K::BitDest,
+                      QT_TRANSLATE_NOOP("rung::model::Target", "ON for one scan on a falling edge"),
+                      "Y/M"));
+    InstructionSpec tmr =
+        coil("TMR", Op::Timer, K::TimerNumber,
+             QT_TRANSLATE_NOOP("rung::model::Target", "On-delay timer, 100 ms units"),
+             "T0..T255 K1..K32767");
+    tmr.operands.push_back({K::SetValue});
+    tmr.steps = 3;
+    in.push_back(tmr);
+    InstructionSpec cnt = coil(
+        "CNT", Op::Counter, K::CounterNumber,
+        QT_TRANSLATE_NOOP("rung::model::Target", "Counter: counts rising edges, reset with RST"),
+        "C0..C255 K1..K32767");
+    cnt.operands.push_back({K::SetValue});
+    cnt.steps = 3;
+    in.push_back(cnt);
+    in.push_back(coil("STL", Op::StepLadder, K::StepRelay,
+                      QT_TRANSLATE_NOOP("rung::model::Target", "Step ladder: start of step S"),
+                      "S0..S999"));
+    in.push_back(bare("RET", Op::Return,
+                      QT_TRANSLATE_NOOP("rung::model::Target", "End of the step ladder")));
+    in.push_back(
+        bare("END", Op::End, QT_TRANSLATE_NOOP("rung::model::Target", "End of the program")));
+    in.push_back(bare("NOP", Op::Nop, QT_TRANSLATE_NOOP("rung::model::Target", "No operation")));
+
+    const OperandSpec src{K::WordSource};
+    const OperandSpec dst{K::WordDest};
+    const OperandSpec opt{K::WordSource, true};
+    in.push_back(apply("MOV", ApplyFunction::Mov, {src, dst}, 5,
+                       QT_TRANSLATE_NOOP("rung::model::Target", "Move S to D"), "S D"));
+    in.push_back(apply("BMOV", ApplyFunction::BlockMove, {src, dst, {K::Count}}, 7,
+                       QT_TRANSLATE_NOOP("rung::model::Target", "Move n words from S to D"),
+                       "S D n"));
+    in.push_back(
+        apply("CMP", ApplyFunction::Compare, {src, src, {K::BitDest}}, 7,
+              QT_TRANSLATE_NOOP("rung::model::Target", "Compare S1 with S2: D, D+1, D+2 = >, =, <"),
+              "S1 S2 D"));
+    in.push_back(apply("ZRST", ApplyFunction::ZoneReset, {{K::BitDest}, {K::BitDest}}, 5,
+                       QT_TRANSLATE_NOOP("rung::model::Target", "Reset every device from D1 to D2"),
+                       "D1 D2"));
+    in.push_back(apply("ADD", ApplyFunction::Add, {src, src, dst}, 7,
+                       QT_TRANSLATE_NOOP("rung::model::Target", "D = S1 + S2"), "S1 S2 D"));
+    in.push_back(apply("SUB", ApplyFunction::Sub, {src, src, dst}, 7,
+                       QT_TRANSLATE_NOOP("rung::model::Target", "D = S1 - S2"), "S1 S2 D"));
+    in.push_back(apply(
+        "MUL", ApplyFunction::Mul, {src, src, dst}, 7,
+        QT_TRANSLATE_NOOP("rung::model::Target", "D, D+1 = S1 x S2 (32-bit product)"), "S1 S2 D"));
+    in.push_back(apply("DIV", ApplyFunction::Div, {src, src, dst}, 7,
+                       QT_TRANSLATE_NOOP("rung::model::Target", "D = S1 / S2, D+1 = remainder"),
+                       "S1 S2 D"));
+    in.push_back(apply("INC", ApplyFunction::Inc, {dst}, 3,
+                       QT_TRANSLATE_NOOP("rung::model::Target", "D = D + 1"), "D"));
+    in.push_back(apply("DEC", ApplyFunction::Dec, {dst}, 3,
+                       QT_TRANSLATE_NOOP("rung::model::Target", "D = D - 1"), "D"));
+    // Communication instructions of seed 001: known to the editor, not simulated.
+    for (const char *name : {"SWAP", "ASCI", "HEX", "RS", "LINK", "MBUS", "VRRD"})
+        in.push_back(apply(
+            name, ApplyFunction::NotSimulated, {opt, opt, opt, opt}, 7,
+            QT_TRANSLATE_NOOP("rung::model::Target", "Communication or conversion instruction"),
+            "S D n"));
+
+    t.limits.programSteps = 16000;
+    t.limits.stackDepth = 8;
+    t.limits.contactsPerRow = 11;
+    t.limits.maxBlocksInRow = 8;
+    t.limits.allowsStack = true;
+    t.limits.duplicateCoilIsError = false;
+    t.limits.outputNeedsCondition = true;
+
+    // The seeds give one device map for the whole family; the models differ in program size.
+    t.models = {
+        ModelVariant{QStringLiteral("M"), {}, 8000},
+        ModelVariant{QStringLiteral("VB"), {}, 16000},
+        ModelVariant{QStringLiteral("VH"), {}, 16000},
+    };
+    return t;
+}
+
+} // namespace rung::model::detail

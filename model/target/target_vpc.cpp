@@ -1,0 +1,226 @@
+#include "model/target/target_data.h"
+
+#include <QCoreApplication>
+
+// VPC (seed 000): two-digit decimal operands, compares and transfers written infix
+// ("LD p01<p00", "OUT p21,p12"), timers and counters with the element number fused into the
+// mnemonic ("TIM00"). The infix forms share their mnemonic with the plain instruction; the
+// plain one comes first so a lookup by spelling finds it.
+
+namespace rung::model::detail {
+
+namespace {
+
+using K = OperandKind;
+
+void addContacts(Target &t, const char *mnemonic, const char *negatedMnemonic, Op op,
+                 const char *summary, const char *negatedSummary) {
+    addSpec(t, mnemonic, op, {{K::BitSource}}, summary, "i/o/r/t/c");
+    InstructionSpec &n =
+        addSpec(t, negatedMnemonic, op, {{K::BitSource}}, negatedSummary, "i/o/r/t/c");
+    n.mode = ContactMode::Negated;
+    n.aliases = {QString::fromLatin1(mnemonic) + QLatin1Char('*')};
+}
+
+void addCompares(Target &t, const char *mnemonic, const char *negatedMnemonic, Op op) {
+    for (CompareOp cmp : {CompareOp::Eq, CompareOp::Lt, CompareOp::Gt}) {
+        for (bool negated : {false, true}) {
+            InstructionSpec &s = addSpec(
+                t, negated ? negatedMnemonic : mnemonic, op, {{K::WordSource}, {K::WordSource}},
+                QT_TRANSLATE_NOOP("rung::model::Target",
+                                  "Compare contact between two decimal operands"),
+                "p01<p00");
+            s.compare = cmp;
+            if (negated) {
+                s.mode = ContactMode::Negated;
+                s.aliases = {QString::fromLatin1(mnemonic) + QLatin1Char('*')};
+            }
+        }
+    }
+}
+
+} // namespace
+
+Target makeVpcTarget() {
+    Target t;
+    t.family = Family::Vpc;
+    t.id = QStringLiteral("vpc");
+    t.displayName = QStringLiteral("VPC");
+    t.defaultTimerBaseMs = 10.0;
+
+    Area &i = addArea(t, "i", "i", AreaKind::Bit, 0, 39,
+                      QT_TRANSLATE_NOOP("rung::model::Target", "inputs"));
+    i.digits = 2;
+    i.writable = false;
+    i.physical = true;
+    Area &o = addArea(t, "o", "o", AreaKind::Bit, 0, 29,
+                      QT_TRANSLATE_NOOP("rung::model::Target", "outputs"));
+    o.digits = 2;
+    o.physical = true;
+    Area &tm = addArea(t, "t", "t", AreaKind::Timer, 0, 31,
+                       QT_TRANSLATE_NOOP("rung::model::Target", "timers"));
+    tm.digits = 2;
+    tm.bank = 0;
+    tm.retentive = true;
+    Area &c = addArea(t, "c", "c", AreaKind::Counter, 0, 31,
+                      QT_TRANSLATE_NOOP("rung::model::Target", "counters"));
+    c.digits = 2;
+    c.bank = 0;
+    c.retentive = true;
+    addArea(t, "r", "r", AreaKind::Bit, 0, 71,
+            QT_TRANSLATE_NOOP("rung::model::Target", "auxiliary relays"))
+        .digits = 2;
+    Area &rl = addArea(t, "rl", "r", AreaKind::Bit, 72, 87,
+                       QT_TRANSLATE_NOOP("rung::model::Target", "retentive auxiliary relays"));
+    rl.digits = 2;
+    rl.retentive = true;
+    // The seed lists r88..r95 as system registers, yet lets OUT/LR drive r00..r89: the program
+    // may drop r88 (RUN) to stop and raise r89 (ERR) to signal an alarm. r90..r95 are read-only.
+    Area &rsw = addArea(t, "rsw", "r", AreaKind::Bit, 88, 89,
+                        QT_TRANSLATE_NOOP("rung::model::Target", "system relays"));
+    rsw.digits = 2;
+    rsw.system = true;
+    Area &rs = addArea(t, "rs", "r", AreaKind::Bit, 90, 95,
+                       QT_TRANSLATE_NOOP("rung::model::Target", "system relays"));
+    rs.digits = 2;
+    rs.system = true;
+    rs.writable = false;
+    Area &a = addArea(t, "a", "a", AreaKind::Word, 0, 7,
+                      QT_TRANSLATE_NOOP("rung::model::Target", "analog inputs"));
+    a.digits = 2;
+    a.writable = false;
+    a.physical = true;
+    Area &d = addArea(t, "d", "d", AreaKind::Word, 0, 3,
+                      QT_TRANSLATE_NOOP("rung::model::Target", "analog outputs"));
+    d.digits = 2;
+    d.physical = true;
+    Area &p = addArea(t, "p", "p", AreaKind::Word, 0, 75,
+                      QT_TRANSLATE_NOOP("rung::model::Target", "registers"));
+    p.digits = 2;
+    p.retentive = true;
+    addArea(t, "p76", "p", AreaKind::Word, 76, 76,
+            QT_TRANSLATE_NOOP("rung::model::Target", "parallel output (o00..o11)"))
+        .digits = 2;
+    Area &p77 = addArea(t, "p77", "p", AreaKind::Word, 77, 77,
+                        QT_TRANSLATE_NOOP("rung::model::Target", "parallel input (i00..i11)"));
+    p77.digits = 2;
+    p77.writable = false;
+
+    t.systemDevices = {
+        {QStringLiteral("r88"), SystemRole::AlwaysOn,
+         QT_TRANSLATE_NOOP("rung::model::Target", "RUN: always ON"), 0, true},
+        {QStringLiteral("r89"), SystemRole::Error,
+         QT_TRANSLATE_NOOP("rung::model::Target", "ERR: program error"), 0, true},
+        {QStringLiteral("r90"), SystemRole::Connected,
+         QT_TRANSLATE_NOOP("rung::model::Target", "CON: PC connected")},
+        {QStringLiteral("r91"), SystemRole::Other,
+         QT_TRANSLATE_NOOP("rung::model::Target", "VPCIO connected")},
+        {QStringLiteral("r92"), SystemRole::ScanToggle,
+         QT_TRANSLATE_NOOP("rung::model::Target", "toggles every scan")},
+        {QStringLiteral("r93"), SystemRole::Clock10ms,
+         QT_TRANSLATE_NOOP("rung::model::Target", "0.01 s clock")},
+        {QStringLiteral("r94"), SystemRole::Clock100ms,
+         QT_TRANSLATE_NOOP("rung::model::Target", "0.1 s clock")},
+        {QStringLiteral("r95"), SystemRole::Clock1s,
+         QT_TRANSLATE_NOOP("rung::model::Target", "1 s clock")},
+    };
+
+    addContacts(
+        t, "LD", "LD NOT", Op::Load,
+        QT_TRANSLATE_NOOP("rung::model::Target", "Start a block with a normally open contact"),
+        QT_TRANSLATE_NOOP("rung::model::Target", "Start a block with a normally closed contact"));
+    addContacts(t, "AND", "AND NOT", Op::And,
+                QT_TRANSLATE_NOOP("rung::model::Target", "Normally open contact in series"),
+                QT_TRANSLATE_NOOP("rung::model::Target", "Normally closed contact in series"));
+    addContacts(t, "OR", "OR NOT", Op::Or,
+                QT_TRANSLATE_NOOP("rung::model::Target", "Normally open contact in parallel"),
+                QT_TRANSLATE_NOOP("rung::model::Target", "Normally closed contact in parallel"));
+    addSpec(t, "AND LD", Op::AndBlock, {},
+            QT_TRANSLATE_NOOP("rung::model::Target", "Connect the last two blocks in series"));
+    addSpec(t, "OR LD", Op::OrBlock, {},
+            QT_TRANSLATE_NOOP("rung::model::Target", "Connect the last two blocks in parallel"));
+    addSpec(t, "OUT", Op::Out, {{K::BitDest}},
+            QT_TRANSLATE_NOOP("rung::model::Target", "Output coil"), "o/r");
+    InstructionSpec &outNot =
+        addSpec(t, "OUT NOT", Op::Out, {{K::BitDest}},
+                QT_TRANSLATE_NOOP("rung::model::Target", "Inverted output coil"), "o/r");
+    outNot.negated = true;
+    outNot.aliases = {QStringLiteral("OUT*")};
+    addCompares(t, "LD", "LD NOT", Op::Load);
+    addCompares(t, "AND", "AND NOT", Op::And);
+    addCompares(t, "OR", "OR NOT", Op::Or);
+    for (bool negated : {false, true}) {
+        for (TransferOp op : {TransferOp::Assign, TransferOp::Add, TransferOp::Subtract}) {
+            InstructionSpec &s = addSpec(
+                t, negated ? "OUT NOT" : "OUT", Op::Transfer, {{K::WordDest}, {K::WordSource}},
+                negated ? QT_TRANSLATE_NOOP("rung::model::Target",
+                                            "Transfer while the condition is OFF: d,s  d+s  d-s")
+                        : QT_TRANSLATE_NOOP("rung::model::Target",
+                                            "Transfer while the condition is ON: d,s  d+s  d-s"),
+                "p21,p12");
+            s.transfer = op;
+            s.negated = negated;
+            if (negated)
+                s.aliases = {QStringLiteral("OUT*")};
+        }
+    }
+    InstructionSpec &lr =
+        addSpec(t, "LR", Op::Keep, {{K::BitDest}},
+                QT_TRANSLATE_NOOP("rung::model::Target",
+                                  "Latching relay: set = last but one block, reset = last block"),
+                "o/r");
+    lr.inputs = 2;
+    InstructionSpec &tim =
+        addSpec(t, "TIM", Op::Timer, {{K::TimerNumber}},
+                QT_TRANSLATE_NOOP("rung::model::Target",
+                                  "Timer: 00..15 count down, 16..31 count up, 0.01 s"),
+                "TIM00..TIM31");
+    tim.fusedOperand = true;
+    InstructionSpec &cnt =
+        addSpec(t, "CNT", Op::Counter, {{K::CounterNumber}},
+                QT_TRANSLATE_NOOP("rung::model::Target",
+                                  "Counter: count = last but one block, reset = last block"),
+                "CNT00..CNT31");
+    cnt.fusedOperand = true;
+    cnt.inputs = 2;
+    addSpec(t, "IL", Op::Interlock, {},
+            QT_TRANSLATE_NOOP("rung::model::Target",
+                              "Interlock: what follows runs under this condition"));
+    addSpec(t, "ILC", Op::InterlockClear, {},
+            QT_TRANSLATE_NOOP("rung::model::Target", "Clear the interlock"));
+    addSpec(t, "JMP", Op::Jump, {},
+            QT_TRANSLATE_NOOP("rung::model::Target",
+                              "Jump: skip up to JPE while the condition is OFF"));
+    addSpec(t, "JPE", Op::JumpEnd, {}, QT_TRANSLATE_NOOP("rung::model::Target", "End of a jump"));
+    addSpec(t, "END", Op::End, {}, QT_TRANSLATE_NOOP("rung::model::Target", "End of the program"));
+
+    t.limits.programSteps = 2048;
+    t.limits.stackDepth = 8;
+    t.limits.contactsPerRow = 10;
+    t.limits.maxBlocksInRow = 8;
+    t.limits.allowsStack = false;
+    t.limits.duplicateCoilIsError = true;
+    t.limits.decimalDigits = 4;
+
+    // Discrete in / out / analog in / analog out per model (seed 000).
+    struct Io {
+        const char *name;
+        int in, out, ain, aout;
+    };
+    const Io models[] = {
+        {"VPC106", 10, 6, 0, 0},      {"VPC108A4", 10, 8, 4, 0}, {"VPC1410", 14, 10, 0, 0},
+        {"VPC1812", 18, 12, 0, 0},    {"VPC2416", 24, 16, 0, 0}, {"VPC3224L", 32, 24, 0, 0},
+        {"VPC3224A63", 32, 24, 6, 3}, {"VPC4030", 40, 30, 0, 0}, {"VPC4030A84", 40, 30, 8, 4}};
+    for (const Io &m : models) {
+        ModelVariant v;
+        v.name = QString::fromLatin1(m.name);
+        v.overrides = {{QStringLiteral("i"), 0, m.in - 1},
+                       {QStringLiteral("o"), 0, m.out - 1},
+                       {QStringLiteral("a"), 0, m.ain - 1},
+                       {QStringLiteral("d"), 0, m.aout - 1}};
+        t.models.push_back(v);
+    }
+    return t;
+}
+
+} // namespace rung::model::detail
