@@ -6,8 +6,8 @@
 
 #include "document.h"
 
-#include "model/target/address.h"
 #include "model/listing/il.h"
+#include "model/target/address.h"
 
 #include <QApplication>
 #include <QKeyEvent>

@@ -2,8 +2,8 @@
 
 #include "model/checks/checks.h"
 #include "model/convert/convert.h"
-#include "model/project/file_read.h"
 #include "model/ladder/ladder_text.h"
+#include "model/project/file_read.h"
 
 #include <QCoreApplication>
 #include <QFile>

@@ -5,8 +5,8 @@
 #include "editor/symbols_csv.h"
 
 #include "model/convert/convert.h"
-#include "model/project/file_read.h"
 #include "model/ladder/ladder_text.h"
+#include "model/project/file_read.h"
 
 #include <QApplication>
 #include <QClipboard>

@@ -3,10 +3,10 @@
 // The checks the vendor tools make, on the listing and on the ladder. Every code is listed
 // in docs/diagnostics.md and has a test that triggers it and one that does not.
 
-#include "model/convert/convert.h"
 #include "model/checks/diagnostic.h"
-#include "model/listing/il.h"
+#include "model/convert/convert.h"
 #include "model/ladder/ladder.h"
+#include "model/listing/il.h"
 
 #include <vector>
 

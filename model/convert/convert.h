@@ -5,8 +5,8 @@
 // valid ("fuzzy") form and lays it out on the grid.
 
 #include "model/checks/diagnostic.h"
-#include "model/listing/il.h"
 #include "model/ladder/ladder.h"
+#include "model/listing/il.h"
 
 #include <vector>
 

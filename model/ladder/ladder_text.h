@@ -4,8 +4,8 @@
 // --to ladder` writes and reads back exactly. Tests use it to write ladders that no
 // instruction list can express, such as a reverse-current bridge.
 
-#include "model/listing/il.h"
 #include "model/ladder/ladder.h"
+#include "model/listing/il.h"
 
 #include <QString>
 

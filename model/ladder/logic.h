@@ -4,8 +4,8 @@
 // meaning: every output is a boolean function of the contacts' devices. Edges, timers and
 // counters are read as plain bits; the simulator is the full oracle.
 
-#include "model/listing/il.h"
 #include "model/ladder/ladder.h"
+#include "model/listing/il.h"
 
 #include <functional>
 #include <map>

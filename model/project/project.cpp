@@ -1,7 +1,7 @@
 #include "model/project/project.h"
 
-#include "model/project/file_read.h"
 #include "model/ladder/ladder_text.h"
+#include "model/project/file_read.h"
 
 #include <QCoreApplication>
 #include <QFile>

@@ -5,8 +5,8 @@
 #include "app/gui/main_window.h"
 #include "editor/il_editor.h"
 #include "editor/ladder_view.h"
-#include "model/listing/il.h"
 #include "model/ladder/ladder_text.h"
+#include "model/listing/il.h"
 
 #include <QDockWidget>
 #include <QMenuBar>

@@ -1,5 +1,5 @@
-#include "model/target/address.h"
 #include "model/listing/il.h"
+#include "model/target/address.h"
 #include "model/target/target.h"
 
 #include <gtest/gtest.h>

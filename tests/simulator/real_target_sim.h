@@ -4,8 +4,8 @@
 // the tests that pin what the manuals name (system devices, retention, PL110 elements, the
 // choices where a manual is ambiguous). The engine tests use sim_test_target.h instead.
 
-#include "model/target/address.h"
 #include "model/listing/il.h"
+#include "model/target/address.h"
 #include "simulator/compiler.h"
 #include "simulator/engine.h"
 

@@ -2,8 +2,8 @@
 // "; simulate: OPTIONS" as the command line takes them) must print exactly NAME.csv.
 // The expected traces are derived by hand from the manuals' examples (see each .il).
 
-#include "model/target/address.h"
 #include "model/listing/il.h"
+#include "model/target/address.h"
 #include "simulator/compiler.h"
 #include "simulator/engine.h"
 #include "simulator/trace.h"
