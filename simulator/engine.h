@@ -6,7 +6,8 @@
 // Not thread-safe: one thread drives an Engine; other threads read SnapshotChannel.
 
 #include "program.h"
-#include "snapshot.h"
+
+#include "model/image/snapshot.h"
 
 #include <QString>
 
@@ -16,6 +17,10 @@
 #include <vector>
 
 namespace rung::simulator {
+
+using model::ScanStatistics;
+using model::Snapshot;
+using model::SnapshotChannel;
 
 struct RuntimeError {
     int instruction = 0; // index in the instruction list

@@ -4,15 +4,21 @@
 // resolved to an index into the flat memory of a MemoryLayout. Built once by compileProgram()
 // (compiler.h) and scanned by the Engine (engine.h) without looking at text or the target.
 
-#include "memory.h"
-
 #include "model/checks/diagnostic.h"
+#include "model/image/memory_layout.h"
 
 #include <cstdint>
 #include <memory>
 #include <vector>
 
 namespace rung::simulator {
+
+// The memory image belongs to the model (comms fills the same one from a real PLC); the
+// simulator names its parts without the prefix.
+using model::AreaLayout;
+using model::BitRef;
+using model::MemoryLayout;
+using model::wrapToWidth;
 
 enum class Code : std::uint8_t {
     // contacts; Load* at a rung start do not push (Step::flags & kRungStart)

@@ -1,13 +1,11 @@
-#include "memory.h"
+#include "model/image/memory_layout.h"
 
-namespace rung::simulator {
+namespace rung::model {
 
-using model::AreaKind;
-
-MemoryLayout::MemoryLayout(const model::Target &target)
+MemoryLayout::MemoryLayout(const Target &target)
     : m_target(&target) {
     m_areas.reserve(target.areas.size());
-    for (const model::Area &a : target.areas) {
+    for (const Area &a : target.areas) {
         AreaLayout l;
         l.kind = a.kind;
         l.first = a.first;
@@ -40,14 +38,14 @@ MemoryLayout::MemoryLayout(const model::Target &target)
     }
 }
 
-bool MemoryLayout::inRange(const model::Address &address) const {
+bool MemoryLayout::inRange(const Address &address) const {
     if (address.area < 0 || address.area >= areaCount())
         return false;
     const AreaLayout &l = area(address.area);
     return address.index >= l.first && address.index - l.first < l.count;
 }
 
-BitRef MemoryLayout::bit(const model::Address &address) const {
+BitRef MemoryLayout::bit(const Address &address) const {
     if (!inRange(address))
         return {};
     const AreaLayout &l = area(address.area);
@@ -68,7 +66,7 @@ BitRef MemoryLayout::bit(const model::Address &address) const {
     return {};
 }
 
-int MemoryLayout::word(const model::Address &address) const {
+int MemoryLayout::word(const Address &address) const {
     if (!inRange(address))
         return -1;
     const AreaLayout &l = area(address.area);
@@ -80,25 +78,25 @@ int MemoryLayout::word(const model::Address &address) const {
     return l.wordBase + (address.index - l.first);
 }
 
-int MemoryLayout::setValueWord(const model::Address &address) const {
+int MemoryLayout::setValueWord(const Address &address) const {
     if (!inRange(address) || area(address.area).setBase < 0)
         return -1;
     const AreaLayout &l = area(address.area);
     return l.setBase + (address.index - l.first);
 }
 
-int MemoryLayout::elementState(const model::Address &address) const {
+int MemoryLayout::elementState(const Address &address) const {
     if (!inRange(address) || area(address.area).stateBase < 0)
         return -1;
     const AreaLayout &l = area(address.area);
     return l.stateBase + (address.index - l.first);
 }
 
-int MemoryLayout::wordBits(const model::Address &address) const {
+int MemoryLayout::wordBits(const Address &address) const {
     if (address.area < 0 || address.area >= areaCount())
         return 16;
     const AreaLayout &l = area(address.area);
     return l.kind == AreaKind::Bit ? 16 : l.wordBits;
 }
 
-} // namespace rung::simulator
+} // namespace rung::model

@@ -10,7 +10,7 @@
 #include <cstdint>
 #include <vector>
 
-namespace rung::simulator {
+namespace rung::model {
 
 // A bit as a word index plus a mask (a bit device, a channel bit, a timer's done bit).
 struct BitRef {
@@ -20,7 +20,7 @@ struct BitRef {
 };
 
 struct AreaLayout {
-    model::AreaKind kind = model::AreaKind::Bit;
+    AreaKind kind = AreaKind::Bit;
     int first = 0;
     int count = 0;      // elements
     int bitBase = -1;   // packed bits: bit areas, the done bits of timers/counters
@@ -33,25 +33,25 @@ struct AreaLayout {
 
 class MemoryLayout {
 public:
-    explicit MemoryLayout(const model::Target &target);
+    explicit MemoryLayout(const Target &target);
 
-    const model::Target &target() const { return *m_target; }
+    const Target &target() const { return *m_target; }
     int wordCount() const { return m_words; }
     int elementStateCount() const { return m_states; }
     const AreaLayout &area(int index) const { return m_areas[static_cast<std::size_t>(index)]; }
     int areaCount() const { return static_cast<int>(m_areas.size()); }
 
     // -1 / invalid when the address does not name such a thing in this layout.
-    BitRef bit(const model::Address &address) const;
-    int word(const model::Address &address) const;         // value (timer/counter: current value)
-    int setValueWord(const model::Address &address) const; // timer/counter set value
-    int elementState(const model::Address &address) const; // timer/counter state slot
-    int wordBits(const model::Address &address) const;
+    BitRef bit(const Address &address) const;
+    int word(const Address &address) const;         // value (timer/counter: current value)
+    int setValueWord(const Address &address) const; // timer/counter set value
+    int elementState(const Address &address) const; // timer/counter state slot
+    int wordBits(const Address &address) const;
 
 private:
-    bool inRange(const model::Address &address) const;
+    bool inRange(const Address &address) const;
 
-    const model::Target *m_target;
+    const Target *m_target;
     std::vector<AreaLayout> m_areas;
     int m_words = 0;
     int m_states = 0;
@@ -64,4 +64,4 @@ inline std::int32_t wrapToWidth(std::int64_t value, int bits) {
     return static_cast<std::int16_t>(static_cast<std::uint16_t>(value));
 }
 
-} // namespace rung::simulator
+} // namespace rung::model

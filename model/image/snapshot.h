@@ -4,7 +4,7 @@
 // of the last scan. A plain value: the simulator fills it, and so will the online monitor,
 // from the same MemoryLayout.
 
-#include "memory.h"
+#include "model/image/memory_layout.h"
 
 #include <QtGlobal>
 
@@ -13,7 +13,7 @@
 #include <mutex>
 #include <vector>
 
-namespace rung::simulator {
+namespace rung::model {
 
 struct ScanStatistics {
     quint64 scans = 0;        // completed scans since start
@@ -34,18 +34,18 @@ struct Snapshot {
     // empty when power-flow recording is off.
     std::vector<bool> powerFlow;
 
-    bool bit(const model::Address &address) const {
+    bool bit(const Address &address) const {
         const BitRef r = layout ? layout->bit(address) : BitRef{};
         return r.valid() && (static_cast<std::uint32_t>(word(r.word)) & r.mask) != 0;
     }
     // Word value; a timer/counter gives its current value.
-    std::int32_t value(const model::Address &address) const {
+    std::int32_t value(const Address &address) const {
         return layout ? word(layout->word(address)) : 0;
     }
-    std::int32_t setValue(const model::Address &address) const {
+    std::int32_t setValue(const Address &address) const {
         return layout ? word(layout->setValueWord(address)) : 0;
     }
-    bool forced(const model::Address &address) const {
+    bool forced(const Address &address) const {
         const BitRef r = layout ? layout->bit(address) : BitRef{};
         return r.valid() && static_cast<std::size_t>(r.word) < forceMask.size() &&
                (forceMask[static_cast<std::size_t>(r.word)] & r.mask) != 0;
@@ -82,4 +82,4 @@ private:
     std::shared_ptr<const Snapshot> m_latest;
 };
 
-} // namespace rung::simulator
+} // namespace rung::model
