@@ -18,14 +18,9 @@ namespace rung::editor {
 
 namespace {
 
+// A contact cell: the contacts and INV / NOT.
 bool isContactOp(model::Op op) {
-    return op == model::Op::Load || op == model::Op::And || op == model::Op::Or ||
-           op == model::Op::Invert;
-}
-
-bool isUnconditional(model::Op op) {
-    return op == model::Op::End || op == model::Op::InterlockClear || op == model::Op::JumpEnd ||
-           op == model::Op::Return || op == model::Op::StepLadder || op == model::Op::Nop;
+    return model::isContact(op) || op == model::Op::Invert;
 }
 
 } // namespace
@@ -302,14 +297,13 @@ bool LadderView::enterInstruction(const QString &text, QString *error) {
     int rungIndex = m_cursor.rung;
     bool insertBefore = false;
     // Typing on the END rung adds a rung in front of it: END stays last.
-    const bool onEnd = rung.outputs[0] && isUnconditional(rung.outputs[0]->op()) &&
-                       rung.columns == 0 && !isUnconditional(op);
+    const bool onEnd = rung.outputs[0] && model::isUnconditional(rung.outputs[0]->op()) &&
+                       rung.columns == 0 && !model::isUnconditional(op);
     if (onEnd) {
         rung = model::Rung(1, 1);
         insertBefore = true;
     }
-    if (op == model::Op::AndBlock || op == model::Op::OrBlock || op == model::Op::Push ||
-        op == model::Op::ReadStack || op == model::Op::Pop)
+    if (model::joinsBlocks(op) || model::isStackOp(op))
         return fail(
             tr("%1 is drawn with vertical links, not typed into a cell").arg(ins.spec->mnemonic));
     QString label;

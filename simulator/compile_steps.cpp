@@ -14,11 +14,10 @@ void Compiler::compileContact(const model::Instruction &ins, Step &s) {
             m_depth = 0;
             m_push = 0;
         } else if (++m_depth > kMaxBlockDepth) {
-            error(ins, Tr::tr("more than %1 open blocks").arg(kMaxBlockDepth));
+            error(ins, Tr::tr("more than %1 open blocks").arg(model::kMaxOpenBlocks));
             m_depth = kMaxBlockDepth;
         }
     }
-    m_rungStart = false;
     m_program->maxBlockDepth = std::max(m_program->maxBlockDepth, m_depth);
     if (negated)
         s.flags |= kNegated;
@@ -85,7 +84,6 @@ void Compiler::compileTimer(const model::Instruction &ins, Step &s) {
         }
     }
     s.count = std::max(1, static_cast<int>(base));
-    outputDone();
 }
 
 void Compiler::compileCounter(const model::Instruction &ins, Step &s) {
@@ -121,7 +119,6 @@ void Compiler::compileCounter(const model::Instruction &ins, Step &s) {
     if (inputs == 1)
         s.flags |= kOneInput;
     popBlocks(ins, inputs - 1);
-    outputDone();
 }
 
 void Compiler::compileApply(const model::Instruction &ins, Step &s) {
@@ -298,7 +295,6 @@ void Compiler::compileApply(const model::Instruction &ins, Step &s) {
         s.code = Code::Nop;
         break;
     }
-    outputDone();
 }
 
 } // namespace rung::simulator::detail

@@ -1,8 +1,8 @@
 #include "compiler_detail.h"
 
 #include <algorithm>
-#include <map>
 #include <variant>
+#include <vector>
 
 namespace rung::simulator {
 
@@ -74,49 +74,20 @@ void Compiler::compileSystem() {
     }
 }
 
-// Jumps go to their JPE/JME: VPC pairs JMP..JPE by nesting, CPM1 by label number.
+// Jumps go to their JPE / JME as model::pairBlocks pairs them (the checks' NE* rules): a
+// program whose jumps do not pair cannot run.
 void Compiler::resolveJumps() {
-    std::map<QString, int> labels;
-    const auto &ins = m_list.instructions;
-    auto labelOf = [&](const model::Instruction &i) -> QString {
-        if (i.operands.empty())
-            return {};
-        const model::Operand &o = i.operands.front();
-        return o.kind == model::Operand::Kind::Constant ? QString::number(o.constant.value)
-                                                        : o.text;
-    };
-    for (std::size_t k = 0; k < ins.size(); ++k)
-        if (ins[k].op() == Op::JumpEnd && !ins[k].operands.empty()) {
-            const QString l = labelOf(ins[k]);
-            if (labels.contains(l))
-                error(ins[k], Tr::tr("label %1 ends more than one jump").arg(l));
-            labels[l] = static_cast<int>(k);
-        }
-    std::vector<int> open;
-    for (std::size_t k = 0; k < ins.size(); ++k) {
-        Step &s = m_program->steps[k];
-        if (ins[k].op() == Op::Jump) {
-            if (ins[k].operands.empty()) {
-                open.push_back(static_cast<int>(k));
-            } else {
-                const auto it = labels.find(labelOf(ins[k]));
-                if (it == labels.end() || it->second < static_cast<int>(k))
-                    error(ins[k], Tr::tr("jump %1 has no end after it").arg(labelOf(ins[k])));
-                else
-                    s.slot = it->second;
-            }
-        } else if (ins[k].op() == Op::JumpEnd && ins[k].operands.empty()) {
-            if (open.empty()) {
-                error(ins[k], Tr::tr("%1 without a jump before it").arg(ins[k].spec->mnemonic));
-                continue;
-            }
-            m_program->steps[static_cast<std::size_t>(open.back())].slot = static_cast<int>(k);
-            open.pop_back();
-        }
+    const model::BlockPairs pairs = model::pairBlocks(m_list);
+    for (const model::BlockProblem &p : pairs.problems) {
+        if (!p.aboutJump)
+            continue;
+        const model::Instruction &ins =
+            m_list.instructions[static_cast<std::size_t>(p.instruction)];
+        error(ins, p.message, QString::fromLatin1(p.code));
     }
-    for (int k : open)
-        error(ins[static_cast<std::size_t>(k)],
-              Tr::tr("%1 has no end").arg(ins[static_cast<std::size_t>(k)].spec->mnemonic));
+    for (std::size_t k = 0; k < m_list.instructions.size(); ++k)
+        if (m_list.instructions[k].op() == Op::Jump && pairs.partner[k] > static_cast<int>(k))
+            m_program->steps[k].slot = pairs.partner[k];
 }
 
 CompileResult Compiler::run() {
@@ -125,11 +96,19 @@ CompileResult Compiler::run() {
     m_program->steps.resize(m_list.instructions.size());
     m_program->lines.resize(m_list.instructions.size());
     compileSystem();
-    const int pushLimit = std::min(kMaxPushDepth, std::max(1, m_target.limits.stackDepth));
+    // MPS levels are the PLC's (Limits::stackDepth, ST001); the engine's stack holds any
+    // target's (kMaxStackDepthOfAnyTarget).
+    const int pushLimit =
+        std::clamp(m_target.limits.stackDepth, 1, model::kMaxStackDepthOfAnyTarget);
+    // The load that starts a rung starts the block stack afresh (model::rungSpans).
+    std::vector<bool> rungStart(m_list.instructions.size(), false);
+    for (const model::RungSpan &span : model::rungSpans(m_list.instructions))
+        rungStart[static_cast<std::size_t>(span.first)] = true;
     for (std::size_t k = 0; k < m_list.instructions.size(); ++k) {
         const model::Instruction &ins = m_list.instructions[k];
         Step &s = m_program->steps[k];
         m_program->lines[k] = ins.line;
+        m_rungStart = rungStart[k];
         if (!ins.spec) {
             error(ins, Tr::tr("unknown instruction"));
             continue;
@@ -145,11 +124,9 @@ CompileResult Compiler::run() {
         case Op::OrBlock:
             s.code = spec.op == Op::AndBlock ? Code::AndBlock : Code::OrBlock;
             popBlocks(ins, 1);
-            m_rungStart = false;
             break;
         case Op::Push:
             s.code = Code::Push;
-            m_rungStart = false; // "MPS LD X1 ANB": the load opens a block on the branch
             if (++m_push > pushLimit) {
                 error(ins, Tr::tr("more than %1 nested %2").arg(pushLimit).arg(spec.mnemonic));
                 m_push = pushLimit;
@@ -159,7 +136,6 @@ CompileResult Compiler::run() {
         case Op::ReadStack:
         case Op::Pop:
             s.code = spec.op == Op::ReadStack ? Code::ReadStack : Code::Pop;
-            m_rungStart = false; // "MPP LD X1 ANB" continues the branch
             if (m_push == 0)
                 error(ins, Tr::tr("%1 without MPS before it").arg(spec.mnemonic));
             else if (spec.op == Op::Pop)
@@ -180,7 +156,6 @@ CompileResult Compiler::run() {
             s.bit = bitOf(ins, 0);
             if (spec.negated)
                 s.flags |= kNegated;
-            outputDone();
             break;
         case Op::Set:
             s.code = Code::Set;
@@ -191,7 +166,6 @@ CompileResult Compiler::run() {
                 s.slot = static_cast<int>(m_program->bitLists.size());
                 m_program->bitLists.push_back(m_stlBit);
             }
-            outputDone();
             break;
         case Op::Reset: {
             s.code = Code::Reset;
@@ -206,20 +180,17 @@ CompileResult Compiler::run() {
             } else if (o) {
                 error(ins, Tr::tr("%1 is not a device").arg(describe(*o)));
             }
-            outputDone();
             break;
         }
         case Op::PulseRise:
         case Op::PulseFall:
             s.bit = bitOf(ins, 0);
             edgeStep(s, Code::Pulse, spec.op == Op::PulseFall);
-            outputDone();
             break;
         case Op::Keep:
             s.code = Code::Keep;
             s.bit = bitOf(ins, 0);
             popBlocks(ins, 1);
-            outputDone();
             break;
         case Op::Timer:
             compileTimer(ins, s);
@@ -244,7 +215,6 @@ CompileResult Compiler::run() {
             s.x = sourceOf(ins, 1);
             if (s.dest == m_program->parallelOutWord && s.dest >= 0)
                 m_program->writesParallelOut = true;
-            outputDone();
             break;
         case Op::Apply:
             compileApply(ins, s);
@@ -253,36 +223,29 @@ CompileResult Compiler::run() {
             break;
         case Op::Interlock:
             s.code = Code::Interlock;
-            outputDone();
             break;
         case Op::InterlockClear:
             s.code = Code::InterlockClear;
-            outputDone();
             break;
         case Op::Jump:
             s.code = Code::Jump;
-            outputDone();
             break;
         case Op::JumpEnd:
             s.code = Code::JumpEnd;
-            outputDone();
             break;
         case Op::StepLadder: {
             s.code = Code::StepLadder;
             s.bit = bitOf(ins, 0);
             m_stlBit = s.bit;
             m_stlArea = ins.operands.empty() ? -1 : ins.operands[0].address.area;
-            outputDone();
             break;
         }
         case Op::Return:
             s.code = Code::Return;
             m_stlArea = -1;
-            outputDone();
             break;
         case Op::End:
             s.code = Code::End;
-            outputDone();
             break;
         case Op::Nop:
             s.code = Code::Nop;

@@ -7,6 +7,7 @@
 #include "compiler.h"
 #include "family.h"
 
+#include "model/listing/structure.h"
 #include "model/target/address.h"
 
 #include <QCoreApplication>
@@ -27,8 +28,8 @@ inline QString trCompiler(const char *text) {
     return QCoreApplication::translate("rung::simulator::Compiler", text);
 }
 
-constexpr int kMaxBlockDepth = 63; // Engine keeps a 64-entry block stack
-constexpr int kMaxPushDepth = 32;
+// Blocks saved under the accumulator: every open block but the one in the accumulator.
+constexpr int kMaxBlockDepth = model::kMaxOpenBlocks - 1;
 constexpr int kMaxZoneElements = 65536;
 
 class Compiler {
@@ -46,9 +47,10 @@ public:
     CompileResult run();
 
 private:
-    void error(const model::Instruction &ins, const QString &message) {
+    void error(const model::Instruction &ins, const QString &message,
+               const QString &code = QStringLiteral("SIM001")) {
         model::Diagnostic d;
-        d.code = QStringLiteral("SIM001");
+        d.code = code;
         d.severity = model::Severity::Error;
         d.location.line = ins.line;
         d.location.column = ins.column;
@@ -169,7 +171,6 @@ private:
         return t;
     }
 
-    void outputDone() { m_rungStart = true; }
     // A step that compares a value with the one it kept from the last scan (an edge slot).
     void edgeStep(Step &s, Code code, bool falling) {
         s.code = code;
@@ -201,7 +202,7 @@ private:
     const MemoryLayout *m_layout = nullptr;
     std::vector<model::Diagnostic> m_diagnostics;
     bool m_failed = false;
-    bool m_rungStart = true;
+    bool m_rungStart = false; // the instruction being compiled starts a rung
     int m_depth = 0;
     int m_push = 0;
     int m_stlArea = -1;

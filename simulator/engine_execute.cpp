@@ -1,5 +1,7 @@
 #include "engine.h"
 
+#include "model/listing/structure.h"
+
 #include <QCoreApplication>
 
 #include <algorithm>
@@ -16,8 +18,9 @@ struct Tr {
     Q_DECLARE_TR_FUNCTIONS(rung::simulator::Engine)
 };
 
-constexpr int kBlockStack = 64;
-constexpr int kPushStack = 33;
+// The compiler holds a program to these (model/listing/structure.h).
+constexpr int kBlockStack = model::kMaxOpenBlocks;
+constexpr int kPushStack = model::kMaxStackDepthOfAnyTarget;
 constexpr std::int64_t kMaxTimerValue = 32767;
 
 bool compare(std::uint8_t op, std::int32_t a, std::int32_t b) {

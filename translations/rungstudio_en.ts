@@ -4,7 +4,7 @@
 <context>
     <name>rung::app::MainWindow</name>
     <message numerus="yes">
-        <location filename="../app/gui/main_window.cpp" line="+334"/>
+        <location filename="../app/gui/main_window.cpp" line="+328"/>
         <source>%n rung(s)</source>
         <translation>
             <numerusform>%n rung</numerusform>
@@ -50,7 +50,7 @@
 <context>
     <name>rung::model::Checks</name>
     <message numerus="yes">
-        <location filename="../model/checks/checks_list.cpp" line="+261"/>
+        <location filename="../model/checks/checks_list.cpp" line="+216"/>
         <source>Stacked ORB: %n blocks are open; an OR chain needs less stack</source>
         <translation>
             <numerusform>Stacked ORB: %n block is open; an OR chain needs less stack</numerusform>
@@ -69,7 +69,7 @@
 <context>
     <name>rung::model::Convert</name>
     <message numerus="yes">
-        <location filename="../model/convert/convert_to_ladder.cpp" line="+320"/>
+        <location filename="../model/convert/convert_to_ladder.cpp" line="+286"/>
         <source>%1 needs two blocks, but %n is open</source>
         <translation>
             <numerusform>%1 needs two blocks, but %n is open</numerusform>
@@ -96,7 +96,7 @@
 <context>
     <name>rung::model::InstructionList</name>
     <message numerus="yes">
-        <location filename="../model/listing/il_parse.cpp" line="+375"/>
+        <location filename="../model/listing/il_parse.cpp" line="+374"/>
         <source>%1 needs %n operand(s): %2</source>
         <translation>
             <numerusform>%1 needs %n operand: %2</numerusform>

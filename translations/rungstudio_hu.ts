@@ -612,7 +612,7 @@ Létradiagram- és utasításlista-szerkesztő VPC, Vigor, CPM1 és PL110 PLC-kh
         <translation>A begépelt lista hibás volt, most a létradiagram programját mutatja; a listában a Ctrl+Z visszahozza</translation>
     </message>
     <message>
-        <location line="+121"/>
+        <location line="+115"/>
         <source>&lt;b&gt;%1&lt;/b&gt;&lt;br&gt;Target: %2, model %3&lt;br&gt;%4, %5</source>
         <translation>&lt;b&gt;%1&lt;/b&gt;&lt;br&gt;PLC-család: %2, modell: %3&lt;br&gt;%4, %5</translation>
     </message>
@@ -1104,7 +1104,7 @@ Létradiagram- és utasításlista-szerkesztő VPC, Vigor, CPM1 és PL110 PLC-kh
 <context>
     <name>rung::editor::LadderView</name>
     <message>
-        <location filename="../editor/ladder_view.cpp" line="+42"/>
+        <location filename="../editor/ladder_view.cpp" line="+37"/>
         <source>Ladder diagram</source>
         <translation>Létradiagram</translation>
     </message>
@@ -1119,7 +1119,7 @@ Létradiagram- és utasításlista-szerkesztő VPC, Vigor, CPM1 és PL110 PLC-kh
         <translation>Egy utasítást írjon be, például: &quot;%1 X0&quot;</translation>
     </message>
     <message>
-        <location line="+18"/>
+        <location line="+17"/>
         <source>%1 is drawn with vertical links, not typed into a cell</source>
         <translation>%1 függőleges összekötésekkel rajzolható, cellába nem írható</translation>
     </message>
@@ -1487,12 +1487,12 @@ Létradiagram- és utasításlista-szerkesztő VPC, Vigor, CPM1 és PL110 PLC-kh
         <translation>Ez az érintkező nincs rajta egyetlen áramúton sem a bal oldali gyűjtősíntől egy kimenetig</translation>
     </message>
     <message>
-        <location filename="../model/checks/checks_list.cpp" line="+174"/>
+        <location filename="../model/checks/checks_list.cpp" line="+130"/>
         <source>Rewrite the rung in the canonical form</source>
         <translation>A létrafok átírása kanonikus formára</translation>
     </message>
     <message>
-        <location line="+48"/>
+        <location line="+47"/>
         <source>More than %1 %2 in a row: the PLC rejects the program</source>
         <translation>Több mint %1 %2 egymás után: a PLC elutasítja a programot</translation>
     </message>
@@ -1561,7 +1561,7 @@ Létradiagram- és utasításlista-szerkesztő VPC, Vigor, CPM1 és PL110 PLC-kh
         </translation>
     </message>
     <message>
-        <location filename="../model/checks/checks_nesting.cpp" line="+60"/>
+        <location filename="../model/checks/checks_nesting.cpp" line="+58"/>
         <source>END is missing</source>
         <translation>Hiányzik az END</translation>
     </message>
@@ -1571,7 +1571,7 @@ Létradiagram- és utasításlista-szerkesztő VPC, Vigor, CPM1 és PL110 PLC-kh
         <translation>Az END utáni utasítások sosem hajtódnak végre</translation>
     </message>
     <message>
-        <location line="+13"/>
+        <location filename="../model/listing/structure.cpp" line="+117"/>
         <source>IL inside IL: close the first with ILC</source>
         <translation>IL az IL-en belül: az elsőt zárja le ILC-vel</translation>
     </message>
@@ -1581,42 +1581,42 @@ Létradiagram- és utasításlista-szerkesztő VPC, Vigor, CPM1 és PL110 PLC-kh
         <translation>ILC IL nélkül (&quot;IL (JMP) missing&quot;)</translation>
     </message>
     <message>
-        <location line="+3"/>
+        <location line="+4"/>
         <source>IL-JMP interlace: the jump opened inside the interlock is still open</source>
         <translation>IL-JMP átfedés: a reteszelésen belül nyitott ugrás még nyitva van</translation>
     </message>
     <message>
-        <location line="+9"/>
+        <location line="+12"/>
         <source>Jump number %1 is beyond 00..%2</source>
         <translation>A(z) %1 ugrásszám kívül esik a 00..%2 tartományon</translation>
     </message>
     <message>
-        <location line="+7"/>
+        <location line="+9"/>
         <source>JMP inside JMP: close the first jump</source>
         <translation>JMP a JMP-n belül: zárja le az első ugrást</translation>
     </message>
     <message>
-        <location line="+9"/>
+        <location line="+8"/>
         <source>A second %1 %2: several JMP may share a number, only one JME</source>
         <translation>Második %1 %2: több JMP osztozhat egy számon, de csak egy JME lehet</translation>
     </message>
     <message>
-        <location line="+8"/>
+        <location line="+7"/>
         <source>%1 %2 without a JMP before it</source>
         <translation>%1 %2 előtte lévő JMP nélkül</translation>
     </message>
     <message>
-        <location line="+6"/>
+        <location line="+7"/>
         <source>%1 without JMP (&quot;IL (JMP) missing&quot;)</source>
         <translation>%1 JMP nélkül (&quot;IL (JMP) missing&quot;)</translation>
     </message>
     <message>
-        <location line="+3"/>
+        <location line="+5"/>
         <source>IL-JMP interlace: the interlock opened inside the jump is still open</source>
         <translation>IL-JMP átfedés: az ugráson belül nyitott reteszelés még nyitva van</translation>
     </message>
     <message>
-        <location line="+15"/>
+        <location line="+17"/>
         <source>IL without ILC</source>
         <translation>IL ILC nélkül</translation>
     </message>
@@ -1626,12 +1626,17 @@ Létradiagram- és utasításlista-szerkesztő VPC, Vigor, CPM1 és PL110 PLC-kh
         <translation>JMP lezárás nélkül (%1)</translation>
     </message>
     <message>
-        <location line="+5"/>
+        <location line="+9"/>
         <source>JMP %1 has no JME %1</source>
         <translation>A JMP %1 utasításnak nincs JME %1 párja</translation>
     </message>
     <message>
         <location line="+2"/>
+        <source>JMP %1 has no JME %1 after it</source>
+        <translation>A JMP %1 utasítás után nincs JME %1 pár</translation>
+    </message>
+    <message>
+        <location line="+5"/>
         <source>The step ladder is not closed with RET</source>
         <translation>A léptetőlánc nincs RET-tel lezárva</translation>
     </message>
@@ -1689,12 +1694,12 @@ Létradiagram- és utasításlista-szerkesztő VPC, Vigor, CPM1 és PL110 PLC-kh
 <context>
     <name>rung::model::Convert</name>
     <message>
-        <location filename="../model/convert/convert_to_ladder.cpp" line="+197"/>
+        <location filename="../model/convert/convert_to_ladder.cpp" line="+201"/>
         <source>%1 joins the condition of a branch point in parallel with another block; the ladder cannot draw this: repeat the shared contacts in this branch instead</source>
         <translation>%1 egy elágazási pont feltételét párhuzamosan köti egy másik blokkal; ezt a létradiagram nem tudja megrajzolni: ismételje meg a közös érintkezőket ebben az ágban</translation>
     </message>
     <message>
-        <location line="+106"/>
+        <location line="+68"/>
         <source>%1 has no block to continue; start the rung with a load</source>
         <translation>%1 előtt nincs folytatható blokk; a létrafokot töltő (LD) utasítással kezdje</translation>
     </message>
@@ -1730,7 +1735,7 @@ Létradiagram- és utasításlista-szerkesztő VPC, Vigor, CPM1 és PL110 PLC-kh
     </message>
     <message>
         <location line="+9"/>
-        <location filename="../model/convert/convert_to_list.cpp" line="+50"/>
+        <location filename="../model/convert/convert_to_list.cpp" line="+53"/>
         <source>%1 has an input with no condition</source>
         <translation>%1 egyik bemenetének nincs feltétele</translation>
     </message>
@@ -1760,7 +1765,7 @@ Létradiagram- és utasításlista-szerkesztő VPC, Vigor, CPM1 és PL110 PLC-kh
         </translation>
     </message>
     <message>
-        <location filename="../model/convert/convert_to_list.cpp" line="+26"/>
+        <location filename="../model/convert/convert_to_list.cpp" line="+33"/>
         <source>%1 has no INV element</source>
         <translation>%1 nem tartalmaz INV elemet</translation>
     </message>
@@ -1770,7 +1775,7 @@ Létradiagram- és utasításlista-szerkesztő VPC, Vigor, CPM1 és PL110 PLC-kh
         <translation>%1 nem rendelkezik ilyen érintkezővel</translation>
     </message>
     <message>
-        <location line="+14"/>
+        <location line="+17"/>
         <source>%1 has no branch stack</source>
         <translation>%1 nem rendelkezik elágazási veremmel</translation>
     </message>
@@ -1785,12 +1790,12 @@ Létradiagram- és utasításlista-szerkesztő VPC, Vigor, CPM1 és PL110 PLC-kh
         <translation>Egy kimenetnek nincs feltétele</translation>
     </message>
     <message>
-        <location line="+95"/>
+        <location line="+96"/>
         <source>A branch reads a device that an earlier branch of the same rung writes, and %1 cannot hold this branch point (IL does not nest); draw the branches as separate rungs</source>
         <translation>Egy ág olyan operandust olvas, amelyet ugyanennek a létrafoknak egy korábbi ága ír, és a(z) %1 nem tudja megtartani ezt az elágazási pontot (az IL nem ágyazható egymásba); rajzolja az ágakat külön létrafokokként</translation>
     </message>
     <message>
-        <location line="+94"/>
+        <location line="+97"/>
         <source>A box with several inputs must stand alone in its rung</source>
         <translation>A több bemenetű funkcióblokknak egyedül kell állnia a létrafokán</translation>
     </message>
@@ -1834,7 +1839,7 @@ Létradiagram- és utasításlista-szerkesztő VPC, Vigor, CPM1 és PL110 PLC-kh
     </message>
     <message>
         <location line="+19"/>
-        <location line="+175"/>
+        <location line="+174"/>
         <source>&apos;%1...&apos; is too long for an operand</source>
         <translation>A(z) &apos;%1...&apos; túl hosszú egy operandushoz</translation>
     </message>
@@ -3143,7 +3148,7 @@ Létradiagram- és utasításlista-szerkesztő VPC, Vigor, CPM1 és PL110 PLC-kh
 <context>
     <name>rung::simulator::Compiler</name>
     <message>
-        <location filename="../simulator/compiler_detail.h" line="+65"/>
+        <location filename="../simulator/compiler_detail.h" line="+67"/>
         <source>%1 is not simulated: it does nothing in the simulator</source>
         <translation>%1 nincs szimulálva: a szimulátorban nem csinál semmit</translation>
     </message>
@@ -3183,7 +3188,7 @@ Létradiagram- és utasításlista-szerkesztő VPC, Vigor, CPM1 és PL110 PLC-kh
         <translation>%1 a következő szót is igényli, de az nem létezik</translation>
     </message>
     <message>
-        <location line="+31"/>
+        <location line="+30"/>
         <source>%1 needs %2 open blocks before it</source>
         <translation>%1 előtt %2 nyitott blokk kell</translation>
     </message>
@@ -3193,7 +3198,7 @@ Létradiagram- és utasításlista-szerkesztő VPC, Vigor, CPM1 és PL110 PLC-kh
         <translation>több mint %1 nyitott blokk</translation>
     </message>
     <message>
-        <location line="+32"/>
+        <location line="+31"/>
         <source>%1 is not a timer</source>
         <translation>%1 nem időzítő</translation>
     </message>
@@ -3203,12 +3208,12 @@ Létradiagram- és utasításlista-szerkesztő VPC, Vigor, CPM1 és PL110 PLC-kh
         <translation>%1 időalapja 10, 100 vagy 1000 ms lehet, nem %2</translation>
     </message>
     <message>
-        <location line="+23"/>
+        <location line="+22"/>
         <source>%1 is not a counter</source>
         <translation>%1 nem számláló</translation>
     </message>
     <message>
-        <location line="+46"/>
+        <location line="+45"/>
         <source>%1 needs three bit devices from %2</source>
         <translation>%1 három bit típusú operandust igényel %2-tól</translation>
     </message>
@@ -3238,42 +3243,22 @@ Létradiagram- és utasításlista-szerkesztő VPC, Vigor, CPM1 és PL110 PLC-kh
         <translation>a(z) %1 szavas blokk túlnyúlik a terület végén</translation>
     </message>
     <message>
-        <location filename="../simulator/compiler.cpp" line="+92"/>
-        <source>label %1 ends more than one jump</source>
-        <translation>a(z) %1 címke több ugrást is lezár</translation>
-    </message>
-    <message>
-        <location line="+12"/>
-        <source>jump %1 has no end after it</source>
-        <translation>a(z) %1 ugrásnak nincs vége utána</translation>
-    </message>
-    <message>
-        <location line="+6"/>
-        <source>%1 without a jump before it</source>
-        <translation>%1 előtte lévő ugrás nélkül</translation>
-    </message>
-    <message>
-        <location line="+9"/>
-        <source>%1 has no end</source>
-        <translation>%1 nincs lezárva</translation>
-    </message>
-    <message>
-        <location line="+15"/>
+        <location filename="../simulator/compiler.cpp" line="+113"/>
         <source>unknown instruction</source>
         <translation>ismeretlen utasítás</translation>
     </message>
     <message>
-        <location line="+20"/>
+        <location line="+18"/>
         <source>more than %1 nested %2</source>
         <translation>több mint %1 egymásba ágyazott %2</translation>
     </message>
     <message>
-        <location line="+10"/>
+        <location line="+9"/>
         <source>%1 without MPS before it</source>
         <translation>%1 előtte lévő MPS nélkül</translation>
     </message>
     <message>
-        <location line="+38"/>
+        <location line="+36"/>
         <source>%1 cannot be reset</source>
         <translation>%1 nem törölhető</translation>
     </message>
@@ -3283,7 +3268,7 @@ Létradiagram- és utasításlista-szerkesztő VPC, Vigor, CPM1 és PL110 PLC-kh
         <translation>%1 nem operandus</translation>
     </message>
     <message>
-        <location line="+107"/>
+        <location line="+96"/>
         <source>the program has no target</source>
         <translation>a programnak nincs célrendszere</translation>
     </message>
@@ -3291,7 +3276,7 @@ Létradiagram- és utasításlista-szerkesztő VPC, Vigor, CPM1 és PL110 PLC-kh
 <context>
     <name>rung::simulator::Engine</name>
     <message>
-        <location filename="../simulator/engine_execute.cpp" line="+74"/>
+        <location filename="../simulator/engine_execute.cpp" line="+77"/>
         <source>set value %1 is not a BCD number; the instruction is skipped</source>
         <translation>a(z) %1 beállított érték nem BCD szám; az utasítás kimarad</translation>
     </message>

@@ -612,7 +612,7 @@ Editor di schemi ladder e liste istruzioni per VPC, Vigor, CPM1 e PL110.</transl
         <translation>La lista digitata conteneva errori e ora mostra il programma dello schema ladder; Ctrl+Z nella lista la ripristina</translation>
     </message>
     <message>
-        <location line="+121"/>
+        <location line="+115"/>
         <source>&lt;b&gt;%1&lt;/b&gt;&lt;br&gt;Target: %2, model %3&lt;br&gt;%4, %5</source>
         <translation>&lt;b&gt;%1&lt;/b&gt;&lt;br&gt;Famiglia PLC: %2, modello %3&lt;br&gt;%4, %5</translation>
     </message>
@@ -1109,7 +1109,7 @@ Editor di schemi ladder e liste istruzioni per VPC, Vigor, CPM1 e PL110.</transl
 <context>
     <name>rung::editor::LadderView</name>
     <message>
-        <location filename="../editor/ladder_view.cpp" line="+42"/>
+        <location filename="../editor/ladder_view.cpp" line="+37"/>
         <source>Ladder diagram</source>
         <translation>Schema ladder</translation>
     </message>
@@ -1124,7 +1124,7 @@ Editor di schemi ladder e liste istruzioni per VPC, Vigor, CPM1 e PL110.</transl
         <translation>Digitare una sola istruzione, ad esempio &quot;%1 X0&quot;</translation>
     </message>
     <message>
-        <location line="+18"/>
+        <location line="+17"/>
         <source>%1 is drawn with vertical links, not typed into a cell</source>
         <translation>%1 si disegna con i collegamenti verticali, non si digita in una cella</translation>
     </message>
@@ -1492,12 +1492,12 @@ Editor di schemi ladder e liste istruzioni per VPC, Vigor, CPM1 e PL110.</transl
         <translation>Questo contatto non si trova su alcun percorso dalla barra sinistra a un&apos;uscita</translation>
     </message>
     <message>
-        <location filename="../model/checks/checks_list.cpp" line="+174"/>
+        <location filename="../model/checks/checks_list.cpp" line="+130"/>
         <source>Rewrite the rung in the canonical form</source>
         <translation>Riscrivi il segmento nella forma canonica</translation>
     </message>
     <message>
-        <location line="+48"/>
+        <location line="+47"/>
         <source>More than %1 %2 in a row: the PLC rejects the program</source>
         <translation>Più di %1 %2 consecutivi: il PLC rifiuta il programma</translation>
     </message>
@@ -1568,7 +1568,7 @@ Editor di schemi ladder e liste istruzioni per VPC, Vigor, CPM1 e PL110.</transl
         </translation>
     </message>
     <message>
-        <location filename="../model/checks/checks_nesting.cpp" line="+60"/>
+        <location filename="../model/checks/checks_nesting.cpp" line="+58"/>
         <source>END is missing</source>
         <translation>Manca END</translation>
     </message>
@@ -1578,7 +1578,7 @@ Editor di schemi ladder e liste istruzioni per VPC, Vigor, CPM1 e PL110.</transl
         <translation>Le istruzioni dopo END non vengono mai eseguite</translation>
     </message>
     <message>
-        <location line="+13"/>
+        <location filename="../model/listing/structure.cpp" line="+117"/>
         <source>IL inside IL: close the first with ILC</source>
         <translation>IL dentro IL: chiudere il primo con ILC</translation>
     </message>
@@ -1588,42 +1588,42 @@ Editor di schemi ladder e liste istruzioni per VPC, Vigor, CPM1 e PL110.</transl
         <translation>ILC senza IL (&quot;IL (JMP) missing&quot;)</translation>
     </message>
     <message>
-        <location line="+3"/>
+        <location line="+4"/>
         <source>IL-JMP interlace: the jump opened inside the interlock is still open</source>
         <translation>Intreccio IL-JMP: il salto aperto dentro l&apos;interblocco è ancora aperto</translation>
     </message>
     <message>
-        <location line="+9"/>
+        <location line="+12"/>
         <source>Jump number %1 is beyond 00..%2</source>
         <translation>Il numero di salto %1 è oltre 00..%2</translation>
     </message>
     <message>
-        <location line="+7"/>
+        <location line="+9"/>
         <source>JMP inside JMP: close the first jump</source>
         <translation>JMP dentro JMP: chiudere il primo salto</translation>
     </message>
     <message>
-        <location line="+9"/>
+        <location line="+8"/>
         <source>A second %1 %2: several JMP may share a number, only one JME</source>
         <translation>Un secondo %1 %2: più JMP possono condividere un numero, un solo JME</translation>
     </message>
     <message>
-        <location line="+8"/>
+        <location line="+7"/>
         <source>%1 %2 without a JMP before it</source>
         <translation>%1 %2 senza un JMP prima</translation>
     </message>
     <message>
-        <location line="+6"/>
+        <location line="+7"/>
         <source>%1 without JMP (&quot;IL (JMP) missing&quot;)</source>
         <translation>%1 senza JMP (&quot;IL (JMP) missing&quot;)</translation>
     </message>
     <message>
-        <location line="+3"/>
+        <location line="+5"/>
         <source>IL-JMP interlace: the interlock opened inside the jump is still open</source>
         <translation>Intreccio IL-JMP: l&apos;interblocco aperto dentro il salto è ancora aperto</translation>
     </message>
     <message>
-        <location line="+15"/>
+        <location line="+17"/>
         <source>IL without ILC</source>
         <translation>IL senza ILC</translation>
     </message>
@@ -1633,12 +1633,17 @@ Editor di schemi ladder e liste istruzioni per VPC, Vigor, CPM1 e PL110.</transl
         <translation>JMP senza la sua fine (%1)</translation>
     </message>
     <message>
-        <location line="+5"/>
+        <location line="+9"/>
         <source>JMP %1 has no JME %1</source>
         <translation>JMP %1 non ha JME %1</translation>
     </message>
     <message>
         <location line="+2"/>
+        <source>JMP %1 has no JME %1 after it</source>
+        <translation>JMP %1 non ha JME %1 dopo di sé</translation>
+    </message>
+    <message>
+        <location line="+5"/>
         <source>The step ladder is not closed with RET</source>
         <translation>Lo step ladder non è chiuso con RET</translation>
     </message>
@@ -1696,12 +1701,12 @@ Editor di schemi ladder e liste istruzioni per VPC, Vigor, CPM1 e PL110.</transl
 <context>
     <name>rung::model::Convert</name>
     <message>
-        <location filename="../model/convert/convert_to_ladder.cpp" line="+197"/>
+        <location filename="../model/convert/convert_to_ladder.cpp" line="+201"/>
         <source>%1 joins the condition of a branch point in parallel with another block; the ladder cannot draw this: repeat the shared contacts in this branch instead</source>
         <translation>%1 collega la condizione di un punto di diramazione in parallelo a un altro blocco; lo schema ladder non può disegnarlo: ripeti invece i contatti comuni in questo ramo</translation>
     </message>
     <message>
-        <location line="+106"/>
+        <location line="+68"/>
         <source>%1 has no block to continue; start the rung with a load</source>
         <translation>%1 non ha un blocco da continuare; iniziare il segmento con un caricamento</translation>
     </message>
@@ -1739,7 +1744,7 @@ Editor di schemi ladder e liste istruzioni per VPC, Vigor, CPM1 e PL110.</transl
     </message>
     <message>
         <location line="+9"/>
-        <location filename="../model/convert/convert_to_list.cpp" line="+50"/>
+        <location filename="../model/convert/convert_to_list.cpp" line="+53"/>
         <source>%1 has an input with no condition</source>
         <translation>%1 ha un ingresso senza condizione</translation>
     </message>
@@ -1770,7 +1775,7 @@ Editor di schemi ladder e liste istruzioni per VPC, Vigor, CPM1 e PL110.</transl
         </translation>
     </message>
     <message>
-        <location filename="../model/convert/convert_to_list.cpp" line="+26"/>
+        <location filename="../model/convert/convert_to_list.cpp" line="+33"/>
         <source>%1 has no INV element</source>
         <translation>%1 non ha un elemento INV</translation>
     </message>
@@ -1780,7 +1785,7 @@ Editor di schemi ladder e liste istruzioni per VPC, Vigor, CPM1 e PL110.</transl
         <translation>%1 non ha un contatto di questo tipo</translation>
     </message>
     <message>
-        <location line="+14"/>
+        <location line="+17"/>
         <source>%1 has no branch stack</source>
         <translation>%1 non ha uno stack delle diramazioni</translation>
     </message>
@@ -1795,12 +1800,12 @@ Editor di schemi ladder e liste istruzioni per VPC, Vigor, CPM1 e PL110.</transl
         <translation>Un&apos;uscita non ha condizione</translation>
     </message>
     <message>
-        <location line="+95"/>
+        <location line="+96"/>
         <source>A branch reads a device that an earlier branch of the same rung writes, and %1 cannot hold this branch point (IL does not nest); draw the branches as separate rungs</source>
         <translation>Un ramo legge un operando che un ramo precedente dello stesso segmento scrive, e %1 non può mantenere questo punto di diramazione (IL non si annida); disegna i rami come segmenti separati</translation>
     </message>
     <message>
-        <location line="+94"/>
+        <location line="+97"/>
         <source>A box with several inputs must stand alone in its rung</source>
         <translation>Un blocco funzione con più ingressi deve stare da solo nel suo segmento</translation>
     </message>
@@ -1844,7 +1849,7 @@ Editor di schemi ladder e liste istruzioni per VPC, Vigor, CPM1 e PL110.</transl
     </message>
     <message>
         <location line="+19"/>
-        <location line="+175"/>
+        <location line="+174"/>
         <source>&apos;%1...&apos; is too long for an operand</source>
         <translation>&apos;%1...&apos; è troppo lungo per un operando</translation>
     </message>
@@ -3155,7 +3160,7 @@ Editor di schemi ladder e liste istruzioni per VPC, Vigor, CPM1 e PL110.</transl
 <context>
     <name>rung::simulator::Compiler</name>
     <message>
-        <location filename="../simulator/compiler_detail.h" line="+65"/>
+        <location filename="../simulator/compiler_detail.h" line="+67"/>
         <source>%1 is not simulated: it does nothing in the simulator</source>
         <translation>%1 non è simulato: nel simulatore non fa nulla</translation>
     </message>
@@ -3195,7 +3200,7 @@ Editor di schemi ladder e liste istruzioni per VPC, Vigor, CPM1 e PL110.</transl
         <translation>%1 richiede anche la word successiva, che non esiste</translation>
     </message>
     <message>
-        <location line="+31"/>
+        <location line="+30"/>
         <source>%1 needs %2 open blocks before it</source>
         <translation>%1 richiede %2 blocchi aperti prima di sé</translation>
     </message>
@@ -3205,7 +3210,7 @@ Editor di schemi ladder e liste istruzioni per VPC, Vigor, CPM1 e PL110.</transl
         <translation>più di %1 blocchi aperti</translation>
     </message>
     <message>
-        <location line="+32"/>
+        <location line="+31"/>
         <source>%1 is not a timer</source>
         <translation>%1 non è un temporizzatore</translation>
     </message>
@@ -3215,12 +3220,12 @@ Editor di schemi ladder e liste istruzioni per VPC, Vigor, CPM1 e PL110.</transl
         <translation>la base dei tempi di %1 deve essere 10, 100 o 1000 ms, non %2</translation>
     </message>
     <message>
-        <location line="+23"/>
+        <location line="+22"/>
         <source>%1 is not a counter</source>
         <translation>%1 non è un contatore</translation>
     </message>
     <message>
-        <location line="+46"/>
+        <location line="+45"/>
         <source>%1 needs three bit devices from %2</source>
         <translation>%1 richiede tre operandi a bit a partire da %2</translation>
     </message>
@@ -3250,42 +3255,22 @@ Editor di schemi ladder e liste istruzioni per VPC, Vigor, CPM1 e PL110.</transl
         <translation>il blocco di %1 word va oltre la fine della sua area</translation>
     </message>
     <message>
-        <location filename="../simulator/compiler.cpp" line="+92"/>
-        <source>label %1 ends more than one jump</source>
-        <translation>l&apos;etichetta %1 chiude più di un salto</translation>
-    </message>
-    <message>
-        <location line="+12"/>
-        <source>jump %1 has no end after it</source>
-        <translation>il salto %1 non ha una fine dopo di sé</translation>
-    </message>
-    <message>
-        <location line="+6"/>
-        <source>%1 without a jump before it</source>
-        <translation>%1 senza un salto prima</translation>
-    </message>
-    <message>
-        <location line="+9"/>
-        <source>%1 has no end</source>
-        <translation>%1 non ha una fine</translation>
-    </message>
-    <message>
-        <location line="+15"/>
+        <location filename="../simulator/compiler.cpp" line="+113"/>
         <source>unknown instruction</source>
         <translation>istruzione sconosciuta</translation>
     </message>
     <message>
-        <location line="+20"/>
+        <location line="+18"/>
         <source>more than %1 nested %2</source>
         <translation>più di %1 %2 annidati</translation>
     </message>
     <message>
-        <location line="+10"/>
+        <location line="+9"/>
         <source>%1 without MPS before it</source>
         <translation>%1 senza MPS prima</translation>
     </message>
     <message>
-        <location line="+38"/>
+        <location line="+36"/>
         <source>%1 cannot be reset</source>
         <translation>%1 non può essere resettato</translation>
     </message>
@@ -3295,7 +3280,7 @@ Editor di schemi ladder e liste istruzioni per VPC, Vigor, CPM1 e PL110.</transl
         <translation>%1 non è un operando</translation>
     </message>
     <message>
-        <location line="+107"/>
+        <location line="+96"/>
         <source>the program has no target</source>
         <translation>il programma non ha una famiglia PLC</translation>
     </message>
@@ -3303,7 +3288,7 @@ Editor di schemi ladder e liste istruzioni per VPC, Vigor, CPM1 e PL110.</transl
 <context>
     <name>rung::simulator::Engine</name>
     <message>
-        <location filename="../simulator/engine_execute.cpp" line="+74"/>
+        <location filename="../simulator/engine_execute.cpp" line="+77"/>
         <source>set value %1 is not a BCD number; the instruction is skipped</source>
         <translation>il valore di preset %1 non è un numero BCD; l&apos;istruzione viene saltata</translation>
     </message>

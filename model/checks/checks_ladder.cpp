@@ -89,7 +89,7 @@ std::vector<Diagnostic> checkLadder(const LadderProgram &ladder, const ToListing
         }
         for (int row = 0; row < rung.rows; ++row) {
             const auto &o = rung.outputs[static_cast<std::size_t>(row)];
-            if (!o || !o->spec || detail::isUnconditional(o->op()) || inStep)
+            if (!o || !o->spec || isUnconditional(o->op()) || inStep)
                 continue;
             for (const auto &n : networks)
                 if (n.row == row && n.connected && n.seriesParallel && n.expr.empty()) {

@@ -2,6 +2,7 @@
 #include "model/checks/checks_internal.h"
 #include "model/convert/convert.h"
 #include "model/ladder/network.h"
+#include "model/listing/structure.h"
 
 #include <QCoreApplication>
 
@@ -19,21 +20,6 @@ namespace {
 struct Tr {
     Q_DECLARE_TR_FUNCTIONS(rung::model::Checks)
 };
-
-bool isCoil(Op op) {
-    switch (op) {
-    case Op::Out:
-    case Op::Keep:
-    case Op::PulseRise:
-    case Op::PulseFall:
-    case Op::Timer:
-    case Op::Counter:
-    case Op::UpDownCounter:
-        return true;
-    default:
-        return false;
-    }
-}
 
 class ListChecker {
 public:
@@ -75,42 +61,12 @@ private:
     int size() const { return static_cast<int>(m_list.instructions.size()); }
     QString name(int i) const { return at(i).spec ? at(i).spec->mnemonic : QString(); }
 
-    // Rung spans: a rung starts at a load that follows an output with no branch pending.
-    void spans() {
-        int start = 0;
-        int depth = 0;
-        bool afterOutput = false;
-        for (int i = 0; i < size(); ++i) {
-            const Op op = at(i).op();
-            if (op == Op::Load && afterOutput && depth == 0) {
-                m_spans.emplace_back(start, i);
-                start = i;
-            }
-            if (op == Op::Push)
-                ++depth;
-            if (op == Op::Pop && depth > 0)
-                --depth;
-            afterOutput = isOutputOp(op);
-            if (isUnconditional(op)) {
-                if (start < i)
-                    m_spans.emplace_back(start, i);
-                m_spans.emplace_back(i, i + 1);
-                start = i + 1;
-                afterOutput = false;
-                depth = 0;
-            }
-        }
-        if (start < size())
-            m_spans.emplace_back(start, size());
-    }
+    // The rungs as the converter reads them (model::rungSpans).
+    void spans() { m_spans = rungSpans(m_list.instructions); }
 
     std::pair<int, int> spanOf(int index) const {
-        // Spans are in order and do not overlap.
-        auto it = std::upper_bound(m_spans.begin(), m_spans.end(), index,
-                                   [](int i, const std::pair<int, int> &s) { return i < s.first; });
-        if (it != m_spans.begin() && index < std::prev(it)->second)
-            return *std::prev(it);
-        return {index, index + 1};
+        const RungSpan span = model::spanOf(m_spans, index);
+        return {span.first, span.last};
     }
 
     // The rung holding `index` as the converter writes it back (cached by its span).
@@ -211,10 +167,9 @@ private:
         int mps = 0;
         int run = 0;
         Op runOp = Op::Nop;
-        bool afterOutput = false;
         for (int i = 0; i < size(); ++i) {
             const Op op = at(i).op();
-            if (op == Op::AndBlock || op == Op::OrBlock) {
+            if (joinsBlocks(op)) {
                 run = op == runOp ? run + 1 : 1;
                 runOp = op;
                 if (m_t.limits.maxBlocksInRow > 0 && run == m_t.limits.maxBlocksInRow + 1)
@@ -228,8 +183,8 @@ private:
             }
             switch (op) {
             case Op::Load:
-                if (afterOutput && mps == 0)
-                    blocks.clear();
+                if (spanOf(i).first == i)
+                    blocks.clear(); // a new rung
                 blocks.push_back({i, true});
                 break;
             case Op::And:
@@ -312,7 +267,7 @@ private:
                         Tr::tr("%1 without a matching MPS").arg(name(i)));
                 else if (op == Op::Pop)
                     --mps;
-                if (i + 1 < size() && isOutputOp(at(i + 1).op()) &&
+                if (i + 1 < size() && isOutput(at(i + 1).op()) &&
                     !isUnconditional(at(i + 1).op()) && at(i + 1).op() != Op::Push) {
                     if (auto lifted = liftOutput(m_list, spanOf(i), i); lifted && isFuzzy(i)) {
                         Finding &f = add(
@@ -329,9 +284,9 @@ private:
             default:
                 break;
             }
-            afterOutput = isOutputOp(op);
-            if (afterOutput && op != Op::Push) {
-                const bool rungEnds = i + 1 >= size() || at(i + 1).op() == Op::Load ||
+            if (isOutput(op)) {
+                const bool rungEnds = i + 1 >= size() ||
+                                      loadsAfterOutput(m_list.instructions, i + 1) ||
                                       isUnconditional(at(i + 1).op());
                 if (rungEnds && mps > 0) {
                     add("ST003", Severity::Error, i,
@@ -460,7 +415,7 @@ private:
         std::map<Address, int> driven;
         for (int i = 0; i < size(); ++i) {
             const Instruction &ins = at(i);
-            if (!isCoil(ins.op()) || ins.operands.empty() ||
+            if (!drivesCoil(ins.op()) || ins.operands.empty() ||
                 ins.operands[0].kind != Operand::Kind::Device)
                 continue;
             const Address a = ins.operands[0].address;
@@ -540,7 +495,7 @@ private:
     bool m_formOnly = false;
     const QString *m_source = nullptr;
     QStringList m_sourceLines; // split on the first operand finding
-    std::vector<std::pair<int, int>> m_spans;
+    std::vector<RungSpan> m_spans;
     ToLadderResult m_ladder;
     bool m_systemParsed = false;
     std::map<Address, const SystemDevice *> m_systemDriven;

@@ -1,8 +1,7 @@
 #include "model/checks/checks_internal.h"
+#include "model/listing/structure.h"
 
 #include <QCoreApplication>
-
-#include <map>
 
 // END and the nesting of IL/ILC, JMP/JPE (JME) and STL/RET (docs/diagnostics.md EN*, NE*, SL*).
 
@@ -38,7 +37,6 @@ void endAndNesting(const InstructionList &list, std::vector<Finding> &found) {
     const auto at = [&](int i) -> const Instruction & {
         return list.instructions[static_cast<std::size_t>(i)];
     };
-    const auto name = [&](int i) { return at(i).spec ? at(i).spec->mnemonic : QString(); };
     const auto location = [&](int i) {
         Location l;
         l.line = at(i).line;
@@ -65,93 +63,12 @@ void endAndNesting(const InstructionList &list, std::vector<Finding> &found) {
         add("EN002", Severity::Warning, end + 1,
             Tr::tr("Instructions after END are never executed"));
 
-    int il = -1;
-    int jmp = -1;
-    int stl = -1;
-    std::map<qint64, int> jmpLabels;
-    std::map<qint64, int> jmeLabels;
-    const bool labels = t.limits.jumpLabels > 0;
-    for (int i = 0; i < (end >= 0 ? end : count); ++i) {
-        const Op op = at(i).op();
-        switch (op) {
-        case Op::Interlock:
-            if (il >= 0)
-                add("NE001", Severity::Error, i, Tr::tr("IL inside IL: close the first with ILC"));
-            il = i;
-            break;
-        case Op::InterlockClear:
-            if (il < 0)
-                add("NE002", Severity::Error, i, Tr::tr("ILC without IL (\"IL (JMP) missing\")"));
-            else if (jmp > il)
-                add("NE005", Severity::Error, i,
-                    Tr::tr("IL-JMP interlace: the jump opened inside the interlock is still "
-                           "open"));
-            il = -1;
-            break;
-        case Op::Jump:
-            if (labels) {
-                const qint64 n = at(i).operands.empty() ? -1 : at(i).operands[0].constant.value;
-                if (n >= t.limits.jumpLabels)
-                    add("NE006", Severity::Error, i,
-                        Tr::tr("Jump number %1 is beyond 00..%2")
-                            .arg(n)
-                            .arg(t.limits.jumpLabels - 1));
-                jmpLabels.emplace(n, i);
-                break;
-            }
-            if (jmp >= 0)
-                add("NE003", Severity::Error, i, Tr::tr("JMP inside JMP: close the first jump"));
-            jmp = i;
-            break;
-        case Op::JumpEnd:
-            if (labels) {
-                const qint64 n = at(i).operands.empty() ? -1 : at(i).operands[0].constant.value;
-                if (jmeLabels.count(n)) {
-                    Finding &f =
-                        add("NE007", Severity::Error, i,
-                            Tr::tr("A second %1 %2: several JMP may share a number, only one "
-                                   "JME")
-                                .arg(name(i))
-                                .arg(n));
-                    f.diagnostic.related.push_back(location(jmeLabels[n]));
-                }
-                if (!jmpLabels.count(n))
-                    add("NE004", Severity::Error, i,
-                        Tr::tr("%1 %2 without a JMP before it").arg(name(i)).arg(n));
-                jmeLabels.emplace(n, i);
-                break;
-            }
-            if (jmp < 0)
-                add("NE004", Severity::Error, i,
-                    Tr::tr("%1 without JMP (\"IL (JMP) missing\")").arg(name(i)));
-            else if (il > jmp)
-                add("NE005", Severity::Error, i,
-                    Tr::tr("IL-JMP interlace: the interlock opened inside the jump is still "
-                           "open"));
-            jmp = -1;
-            break;
-        case Op::StepLadder:
-            stl = i;
-            break;
-        case Op::Return:
-            stl = -1;
-            break;
-        default:
-            break;
-        }
+    // IL / ILC, JMP / JPE (JME), STL / RET: the one pairing the compiler uses too.
+    for (const BlockProblem &p : pairBlocks(list).problems) {
+        Finding &f = add(p.code, Severity::Error, p.instruction, p.message);
+        if (p.related >= 0)
+            f.diagnostic.related.push_back(location(p.related));
     }
-    if (il >= 0)
-        add("NE002", Severity::Error, il, Tr::tr("IL without ILC"));
-    if (jmp >= 0)
-        add("NE004", Severity::Error, jmp,
-            Tr::tr("JMP without its end (%1)")
-                .arg(t.findInstruction(Op::JumpEnd) ? t.findInstruction(Op::JumpEnd)->mnemonic
-                                                    : QString()));
-    for (const auto &[n, i] : jmpLabels)
-        if (!jmeLabels.count(n))
-            add("NE004", Severity::Error, i, Tr::tr("JMP %1 has no JME %1").arg(n));
-    if (stl >= 0)
-        add("SL001", Severity::Error, stl, Tr::tr("The step ladder is not closed with RET"));
 }
 
 } // namespace rung::model::detail

@@ -1,5 +1,6 @@
 #include "model/convert/convert.h"
 #include "model/ladder/network.h"
+#include "model/listing/structure.h"
 
 #include <QCoreApplication>
 
@@ -175,11 +176,14 @@ public:
         m_result.ladder.target = list.target;
     }
 
+    // One rung per span of model::rungSpans; after an error the rest of its rung is skipped.
     ToLadderResult run() {
         const auto &ins = m_list.instructions;
-        for (std::size_t i = 0; i < ins.size(); ++i)
-            step(ins[i], static_cast<int>(i));
-        finishRung(true);
+        for (const RungSpan &span : rungSpans(ins)) {
+            for (int i = span.first; i < span.last && !m_broken; ++i)
+                step(ins[static_cast<std::size_t>(i)], i);
+            finishRung(span.last == static_cast<int>(ins.size()));
+        }
         return std::move(m_result);
     }
 
@@ -213,26 +217,6 @@ private:
 
     bool started() const { return m_first >= 0; }
 
-    // After an output the accumulator still holds the branch point's condition: a block
-    // loaded there that AND LD / OR LD joins to it ("OUT Y0 LD X1 OR X2 ANB OUT Y1")
-    // continues the rung rather than starting the next one.
-    bool joinsTheAccumulator(int index) const {
-        const auto &ins = m_list.instructions;
-        int depth = 0;
-        for (std::size_t j = static_cast<std::size_t>(index); j < ins.size(); ++j) {
-            const Op op = ins[j].op();
-            if (op == Op::Load)
-                ++depth;
-            else if (op == Op::AndBlock || op == Op::OrBlock)
-                --depth;
-            else if (op != Op::And && op != Op::Or && op != Op::Invert)
-                return false;
-            if (depth == 0)
-                return true;
-        }
-        return false;
-    }
-
     void begin(int index, const Instruction &ins) {
         if (m_first < 0) {
             m_first = index;
@@ -264,7 +248,7 @@ private:
             m_inStep = true;
         else if (op == Op::Return)
             m_inStep = false;
-        if (detail::isUnconditional(op)) {
+        if (isUnconditional(op)) {
             finishRung(false);
             begin(index, ins);
             m_outputs.push_back(ins);
@@ -272,24 +256,6 @@ private:
             m_hadOutput = true;
             finishRung(false);
             return;
-        }
-        // A contact that opens a block after the rung's outputs, with no branch pending,
-        // starts the next rung.
-        // (After MPP the popped condition is still to be used: "MPP LD X1 ANB" continues.)
-        if (op == Op::Load && m_lastWasOutput && m_mps.empty() && m_blocks.size() == 1 &&
-            m_blocks[0].empty() && !joinsTheAccumulator(index))
-            finishRung(false);
-        m_lastWasOutput = detail::isOutputOp(op);
-        if (m_broken) {
-            // Skip to the next rung after an error in this one: the first load after an
-            // output.
-            if (detail::isOutputOp(op)) {
-                m_brokenSawOutput = true;
-                return;
-            }
-            if (op != Op::Load || !m_brokenSawOutput)
-                return;
-            finishRung(false);
         }
         begin(index, ins);
         switch (op) {
@@ -476,9 +442,7 @@ private:
         m_cur = 0;
         m_anchored = false;
         m_hadOutput = false;
-        m_lastWasOutput = false;
         m_broken = false;
-        m_brokenSawOutput = false;
     }
 
     const InstructionList &m_list;
@@ -495,9 +459,7 @@ private:
     int m_firstLine = 0;
     bool m_hadOutput = false;
     bool m_inStep = false; // between STL and RET
-    bool m_lastWasOutput = false;
     bool m_broken = false;
-    bool m_brokenSawOutput = false;
     std::size_t m_comment = 0;
 };
 

@@ -56,7 +56,7 @@ public:
         for (const Branch::Item &item : logic.root.items) {
             if (item.isOutput) {
                 // Inside a step (STL .. RET) an output may hang on the step bus itself.
-                if (!detail::isUnconditional(item.output.op()) && !inStep)
+                if (!isUnconditional(item.output.op()) && !inStep)
                     return fail(-1, Tr::tr("%1 has no condition").arg(item.output.spec->mnemonic));
                 emitOutput(item.output);
                 continue;

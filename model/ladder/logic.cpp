@@ -167,7 +167,7 @@ OutputImage evaluateList(const InstructionList &list, const BitReader &read) {
         default:
             break;
         }
-        if (detail::isUnconditional(ins.op()))
+        if (isUnconditional(ins.op()))
             continue;
         const std::size_t k = static_cast<std::size_t>(std::max(1, ins.spec->inputs));
         if (blocks.size() < k)

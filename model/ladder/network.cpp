@@ -72,35 +72,4 @@ Expr seriesOf(std::vector<Expr> items) {
     return e;
 }
 
-bool isUnconditional(Op op) {
-    switch (op) {
-    case Op::End:
-    case Op::InterlockClear:
-    case Op::JumpEnd:
-    case Op::Return:
-    case Op::StepLadder:
-    case Op::Nop:
-        return true;
-    default:
-        return false;
-    }
-}
-
-bool isOutputOp(Op op) {
-    switch (op) {
-    case Op::Load:
-    case Op::And:
-    case Op::Or:
-    case Op::AndBlock:
-    case Op::OrBlock:
-    case Op::Push:
-    case Op::ReadStack:
-    case Op::Pop:
-    case Op::Invert:
-        return false;
-    default:
-        return true;
-    }
-}
-
 } // namespace rung::model::detail

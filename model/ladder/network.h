@@ -58,8 +58,4 @@ struct RungLogic {
 // Draws a rung's logic on the grid (convert_to_ladder.cpp).
 Rung layoutRung(const RungLogic &logic);
 
-// Ops that draw with no condition from the left rail (END, ILC, JPE, JME, RET, STL, NOP).
-bool isUnconditional(Op op);
-bool isOutputOp(Op op);
-
 } // namespace rung::model::detail

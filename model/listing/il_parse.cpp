@@ -318,8 +318,7 @@ private:
             }
         // An infix operand is one token holding two operands.
         if (tokens.size() == 1) {
-            const bool contact =
-                ins->spec->op == Op::Load || ins->spec->op == Op::And || ins->spec->op == Op::Or;
+            const bool contact = isContact(ins->spec->op);
             const bool output = ins->spec->op == Op::Out;
             const QString &t = tokens[0].text;
             const bool looksInfix =

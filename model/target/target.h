@@ -4,6 +4,8 @@
 // table and the limits. Every room reads these tables; no address or mnemonic rule is
 // written anywhere else.
 
+#include "model/target/op.h"
+
 #include <QMultiHash>
 #include <QString>
 #include <QStringList>
@@ -96,38 +98,6 @@ struct SystemDevice {
 // but Other (seed 001: the program drives M9100), the status flags Error and Connected, and
 // what the manual lets the program write.
 bool drivenByPlc(const SystemDevice &device);
-
-// What an instruction does, independent of its spelling.
-enum class Op : std::uint8_t {
-    Load,      // start a block with a contact
-    And,       // contact in series
-    Or,        // contact in parallel
-    AndBlock,  // ANB / AND LD
-    OrBlock,   // ORB / OR LD
-    Push,      // MPS
-    ReadStack, // MRD
-    Pop,       // MPP
-    Invert,    // INV (Vigor), NOT (PL110)
-    Out,       // coil; Instruction::negated for OUT NOT
-    Set,
-    Reset,
-    PulseRise,      // PLS / DIFU
-    PulseFall,      // PLF / DIFD
-    Keep,           // two inputs (set, reset), reset wins: VPC LR, CPM1 KEEP
-    Timer,          // one input
-    Counter,        // Vigor: one input (reset by RST); VPC/CPM1: two inputs (count, reset)
-    UpDownCounter,  // three inputs (up, down, reset): CPM1 CNTR, PL110 MUP/MDOWN
-    Transfer,       // VPC OUT d,s / OUT d+s / OUT d-s (and OUT* forms)
-    Apply,          // application instruction box (MOV, ADD, CMP, FM, ...)
-    Interlock,      // IL
-    InterlockClear, // ILC
-    Jump,           // JMP
-    JumpEnd,        // JPE / JME
-    StepLadder,     // STL
-    Return,         // RET
-    End,
-    Nop,
-};
 
 enum class ContactMode : std::uint8_t { Normal, Negated, Rising, Falling };
 
