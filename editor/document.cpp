@@ -229,28 +229,13 @@ void Document::applyRungs(int first, int count, const std::vector<model::Rung> &
 
 void Document::refresh() {
     m_listing = model::ladderToList(m_project.program);
-    m_listingText = model::printInstructionList(m_listing.list);
-    // Lines of the printed listing: comments come before their rung's first instruction.
+    m_printed = model::printListing(m_listing.list);
+    m_listingText = m_printed.text;
+    // A rung's first line is its comment's, or its first instruction's (the printer's map).
     m_rungLine.assign(m_project.program.rungs.size(), -1);
-    {
-        int line = 1;
-        std::size_t comment = 0;
-        const auto &ins = m_listing.list.instructions;
-        const auto &comments = m_listing.list.comments;
-        std::vector<int> lineOfInstruction(ins.size() + 1, 0);
-        for (std::size_t i = 0; i <= ins.size(); ++i) {
-            const int firstLine = line;
-            while (comment < comments.size() && comments[comment].first <= static_cast<int>(i)) {
-                ++line;
-                ++comment;
-            }
-            lineOfInstruction[i] = firstLine;
-            ++line;
-        }
-        for (std::size_t r = 0; r + 1 < m_listing.rungFirst.size() && r < m_rungLine.size(); ++r)
-            if (m_listing.rungFirst[r] < m_listing.rungFirst[r + 1])
-                m_rungLine[r] = lineOfInstruction[static_cast<std::size_t>(m_listing.rungFirst[r])];
-    }
+    for (std::size_t r = 0; r + 1 < m_listing.rungFirst.size() && r < m_rungLine.size(); ++r)
+        if (m_listing.rungFirst[r] < m_listing.rungFirst[r + 1])
+            m_rungLine[r] = m_printed.firstLine[static_cast<std::size_t>(m_listing.rungFirst[r])];
     model::CheckOptions options;
     options.model = modelVariant();
     // The checks report what keeps a rung from being listed (the listing's own problems) by

@@ -39,6 +39,8 @@ public:
     // The canonical listing of the ladder and where each rung starts in it.
     const model::ToListingResult &listing() const { return m_listing; }
     QString listingText() const { return m_listingText; }
+    // Its line map: the line of each instruction, the instruction of each line.
+    const model::PrintedListing &printedListing() const { return m_printed; }
     int rungOfLine(int line) const; // 1-based line of the listing text -> rung, -1 if none
     int firstLineOfRung(int rung) const;
     int stepCount() const;
@@ -86,6 +88,7 @@ private:
     QUndoStack m_undo;
     model::ToListingResult m_listing;
     QString m_listingText;
+    model::PrintedListing m_printed;
     std::vector<int> m_rungLine; // first line of each rung in m_listingText (1-based)
     std::vector<model::Diagnostic> m_diagnostics;
 };

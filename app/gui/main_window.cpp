@@ -249,16 +249,10 @@ void MainWindow::refreshFromDocument() {
         }
         stepOfLine = m_typedSteps.steps;
     } else {
+        // The printer's line map: comment lines have no step.
         const auto &list = m_document->listing().list;
-        const QStringList lines = m_document->listingText().split(QLatin1Char('\n'));
-        std::size_t next = 0;
-        for (const QString &line : lines) {
-            const QString code = line.section(QLatin1Char(';'), 0, 0).trimmed();
-            if (!code.isEmpty() && next < list.instructions.size())
-                stepOfLine.push_back(list.instructions[next++].step);
-            else
-                stepOfLine.push_back(-1);
-        }
+        for (const int i : m_document->printedListing().instructionOfLine)
+            stepOfLine.push_back(i < 0 ? -1 : list.instructions[static_cast<std::size_t>(i)].step);
     }
     m_il->setStepNumbers(stepOfLine);
     refreshSymbols();

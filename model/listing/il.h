@@ -74,6 +74,20 @@ struct PrintOptions {
     bool comments = true;
 };
 QString printInstructionList(const InstructionList &list, const PrintOptions &options = {});
+
+// The printed text with its line map, so nothing has to count comment lines to find an
+// instruction: lines are 1-based, as the editor and the diagnostics number them.
+struct PrintedListing {
+    QString text;
+    std::vector<int> instructionLine; // the line of each instruction
+    // The first line of each instruction with the comment lines printed before it (a rung's
+    // first line is its first instruction's), and one more entry for the comments after the
+    // last instruction (the line after the text when there are none).
+    std::vector<int> firstLine;
+    std::vector<int> instructionOfLine; // line - 1 -> instruction index, -1 for a comment line
+    int instructionAt(int line) const;  // -1 for a comment line or beyond the text
+};
+PrintedListing printListing(const InstructionList &list, const PrintOptions &options = {});
 QString printInstruction(const Target &target, const Instruction &instruction);
 // One operand alone, as the drawing and its tooltips show it (X0, K10, #0150, a PL110 text).
 QString formatOperand(const Target &target, const Operand &operand);

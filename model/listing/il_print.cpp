@@ -1,5 +1,7 @@
 #include "model/listing/il.h"
 
+#include <QRegularExpression>
+
 // The canonical printer: one instruction a line, the table's canonical mnemonic, operands as
 // formatAddress / formatConstant write them. Infix forms (VPC compares and transfers) and
 // fused element numbers (VPC TIM00) are read off the instruction table.
@@ -84,18 +86,34 @@ QString printInstruction(const Target &target, const Instruction &instruction) {
     return out;
 }
 
-QString printInstructionList(const InstructionList &list, const PrintOptions &options) {
-    QString out;
+PrintedListing printListing(const InstructionList &list, const PrintOptions &options) {
+    PrintedListing printed;
     if (!list.target)
-        return out;
+        return printed;
     const Target &target = *list.target;
+    QString &out = printed.text;
+    const int count = static_cast<int>(list.instructions.size());
+    printed.instructionLine.reserve(static_cast<std::size_t>(count));
+    printed.firstLine.reserve(static_cast<std::size_t>(count) + 1);
+    int line = 1;
+    const auto endLine = [&](int instruction) {
+        out += QLatin1Char('\n');
+        printed.instructionOfLine.push_back(instruction);
+        ++line;
+    };
+    // A comment is one line of text: a line break inside one (any of \n, \r\n, \r, which
+    // the editor shows as breaks) prints as a comment line of its own, never as code.
+    static const QRegularExpression lineBreak(QStringLiteral("\r\n|\r|\n"));
     std::size_t comment = 0;
     int step = 0;
-    const int count = static_cast<int>(list.instructions.size());
     for (int i = 0; i <= count; ++i) {
+        printed.firstLine.push_back(line);
         while (options.comments && comment < list.comments.size() &&
                list.comments[comment].first <= i) {
-            out += QLatin1String("; ") + list.comments[comment].second + QLatin1Char('\n');
+            for (const QString &part : list.comments[comment].second.split(lineBreak)) {
+                out += QLatin1String("; ") + part;
+                endLine(-1);
+            }
             ++comment;
         }
         if (i == count)
@@ -105,11 +123,23 @@ QString printInstructionList(const InstructionList &list, const PrintOptions &op
             out += QStringLiteral("%1 ").arg(step, 4, 10, QLatin1Char('0'));
         out += printInstruction(target, ins);
         if (options.comments && !ins.comment.isEmpty())
-            out += QLatin1String(" ; ") + ins.comment;
-        out += QLatin1Char('\n');
+            out +=
+                QLatin1String(" ; ") + QString(ins.comment).replace(lineBreak, QStringLiteral(" "));
+        printed.instructionLine.push_back(line);
+        endLine(i);
         step += instructionSteps(target, ins);
     }
-    return out;
+    return printed;
+}
+
+int PrintedListing::instructionAt(int line) const {
+    if (line < 1 || line > static_cast<int>(instructionOfLine.size()))
+        return -1;
+    return instructionOfLine[static_cast<std::size_t>(line - 1)];
+}
+
+QString printInstructionList(const InstructionList &list, const PrintOptions &options) {
+    return printListing(list, options).text;
 }
 
 int instructionSteps(const Target &target, const Instruction &instruction) {
