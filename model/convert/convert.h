@@ -12,8 +12,21 @@
 
 namespace rung::model {
 
+// Where an instruction written from a ladder came from, so the power flow of each instruction
+// can be drawn on its cell (docs/conversion.md "Origin map").
+struct CellOrigin {
+    int rung = -1;
+    // A contact (INV included): its cell. An output: its row and the output column
+    // (Rung::columns). ANB, ORB, MPS, MRD, MPP, IL, ILC and the always-ON load an interlock
+    // writes: the rung only (row and column -1).
+    int row = -1;
+    int column = -1;
+    friend bool operator==(const CellOrigin &, const CellOrigin &) = default;
+};
+
 struct ToListingResult {
     InstructionList list;
+    std::vector<CellOrigin> origin; // parallel to list.instructions
     // rungFirst[r] = index of the first instruction of rung r; rungFirst.back() = size.
     std::vector<int> rungFirst;
     // Rungs that cannot be expressed (reverse current, open branches, a box without inputs):

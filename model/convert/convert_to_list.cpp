@@ -28,11 +28,14 @@ struct Tr {
 
 class Emitter {
 public:
-    Emitter(const Target &target, int rungIndex, std::vector<Instruction> *out,
-            std::vector<Diagnostic> *problems)
+    Emitter(const Target &target, int rungIndex, int columns, std::vector<Instruction> *out,
+            std::vector<CellOrigin> *origin, std::vector<Diagnostic> *problems)
         : m_target(target)
         , m_rung(rungIndex)
+        , m_columns(std::max(1, columns))
+        , m_outputColumn(columns)
         , m_out(out)
+        , m_origin(origin)
         , m_problems(problems) {}
 
     bool failed() const { return m_failed; }
@@ -50,7 +53,7 @@ public:
                         Tr::tr("%1 has an input with no condition").arg(logic.box.spec->mnemonic));
                 emitLoad(e);
             }
-            emitOutput(logic.box);
+            emitOutput(logic.box, logic.boxRow);
             return;
         }
         for (const Branch::Item &item : logic.root.items) {
@@ -58,7 +61,7 @@ public:
                 // Inside a step (STL .. RET) an output may hang on the step bus itself.
                 if (!isUnconditional(item.output.op()) && !inStep)
                     return fail(-1, Tr::tr("%1 has no condition").arg(item.output.spec->mnemonic));
-                emitOutput(item.output);
+                emitOutput(item.output, item.row);
                 continue;
             }
             const Branch &child = item.child.front();
@@ -78,7 +81,14 @@ private:
         m_failed = true;
     }
 
-    void emitContact(Op op, const Contact &c) {
+    // Every instruction goes out with its origin: a cell id (row * columns + column) for a
+    // contact, an output row, or neither for what belongs to the rung as a whole.
+    void push(Instruction ins, int row, int column) {
+        m_out->push_back(std::move(ins));
+        m_origin->push_back(CellOrigin{m_rung, row, column});
+    }
+
+    void emitContact(Op op, const Contact &c, int cell) {
         const InstructionSpec *spec = c.invert
                                           ? m_target.findInstruction(Op::Invert, c.mode)
                                           : m_target.findInstruction(op, c.mode, c.compare, false);
@@ -91,7 +101,10 @@ private:
         ins.spec = spec;
         if (!c.invert)
             ins.operands = c.operands;
-        m_out->push_back(std::move(ins));
+        if (cell < 0)
+            push(std::move(ins), -1, -1);
+        else
+            push(std::move(ins), cell / m_columns, cell % m_columns);
     }
 
     void emitBare(Op op) {
@@ -101,10 +114,10 @@ private:
             fail(-1, Tr::tr("%1 has no branch stack").arg(m_target.displayName));
             return;
         }
-        m_out->push_back(std::move(ins));
+        push(std::move(ins), -1, -1);
     }
 
-    void emitOutput(Instruction ins) {
+    void emitOutput(Instruction ins, int row) {
         ins.line = 0;
         ins.column = 0;
         // Every device operand counts as written: an application box's source too, which is
@@ -112,7 +125,7 @@ private:
         for (const Operand &o : ins.operands)
             if (o.kind == Operand::Kind::Device)
                 m_written.push_back(o.address);
-        m_out->push_back(std::move(ins));
+        push(std::move(ins), row, row < 0 ? -1 : m_outputColumn);
     }
 
     // Same element (a bit of a channel and the channel count as the same).
@@ -179,7 +192,7 @@ private:
         case Expr::Kind::Leaf:
             if (e.leaf.invert)
                 return fail(-1, Tr::tr("A block cannot start with INV"));
-            return emitContact(Op::Load, e.leaf);
+            return emitContact(Op::Load, e.leaf, e.cell);
         case Expr::Kind::Series:
             if (e.items.empty())
                 return fail(-1, Tr::tr("An output has no condition"));
@@ -197,7 +210,7 @@ private:
 
     void emitAnd(const Expr &e) {
         if (e.kind == Expr::Kind::Leaf)
-            return emitContact(Op::And, e.leaf);
+            return emitContact(Op::And, e.leaf, e.cell);
         if (e.kind == Expr::Kind::Series) {
             for (const Expr &i : e.items)
                 emitAnd(i);
@@ -209,7 +222,7 @@ private:
 
     void emitOr(const Expr &e) {
         if (e.kind == Expr::Kind::Leaf && !e.leaf.invert)
-            return emitContact(Op::Or, e.leaf);
+            return emitContact(Op::Or, e.leaf, e.cell);
         emitLoad(e);
         emitBare(Op::OrBlock);
     }
@@ -244,7 +257,7 @@ private:
             modified = false;
             const Branch::Item &item = b.items[i];
             if (item.isOutput) {
-                emitOutput(item.output);
+                emitOutput(item.output, item.row);
                 continue;
             }
             if (!last && !pushed) {
@@ -273,6 +286,7 @@ private:
         if (emitRepeating(b, path, inInterlock))
             return;
         m_out->erase(m_out->begin() + static_cast<std::ptrdiff_t>(mark), m_out->end());
+        m_origin->resize(mark);
         m_written.resize(writtenMark);
         m_problems->resize(problemMark);
         m_failed = failedBefore;
@@ -300,7 +314,7 @@ private:
                 intact = true;
             }
             if (item.isOutput) {
-                emitOutput(item.output);
+                emitOutput(item.output, item.row);
                 continue;
             }
             const Branch &child = item.child.front();
@@ -321,10 +335,10 @@ private:
         for (const Branch::Item &item : b.items) {
             if (item.isOutput) {
                 if (!intact) {
-                    emitContact(Op::Load, *alwaysOn());
+                    emitContact(Op::Load, *alwaysOn(), -1);
                     intact = true;
                 }
-                emitOutput(item.output);
+                emitOutput(item.output, item.row);
                 continue;
             }
             // LD even straight after IL, as seed 000 writes the branches of an interlock.
@@ -337,7 +351,10 @@ private:
 
     const Target &m_target;
     int m_rung;
+    int m_columns; // for cell ids
+    int m_outputColumn;
     std::vector<Instruction> *m_out;
+    std::vector<CellOrigin> *m_origin;
     std::vector<Diagnostic> *m_problems;
     bool m_failed = false;
     bool m_inInterlock = false;
@@ -400,7 +417,8 @@ ToListingResult ladderToList(const LadderProgram &ladder) {
         if (bad)
             continue;
         std::vector<Instruction> emitted;
-        Emitter emitter(target, rungIndex, &emitted, &result.problems);
+        std::vector<CellOrigin> origin;
+        Emitter emitter(target, rungIndex, rung.columns, &emitted, &origin, &result.problems);
         emitter.setInInterlock(inInterlock);
         emitter.emitRung(detail::logicOf(rung, std::move(networks), false), inStep);
         if (emitter.failed())
@@ -429,6 +447,7 @@ ToListingResult ladderToList(const LadderProgram &ladder) {
             step += instructionSteps(target, ins);
             result.list.instructions.push_back(std::move(ins));
         }
+        result.origin.insert(result.origin.end(), origin.begin(), origin.end());
     }
     result.rungFirst.push_back(static_cast<int>(result.list.instructions.size()));
     return result;

@@ -44,6 +44,7 @@ struct Branch {
     struct Item {
         bool isOutput = true;
         Instruction output;
+        int row = -1;              // the output's row on the ladder (-1: read from a listing)
         std::vector<Branch> child; // one element when !isOutput
     };
     std::vector<Item> items;
@@ -53,6 +54,7 @@ struct RungLogic {
     Branch root;
     std::vector<Expr> boxInputs; // non-empty: a multi-input box rung
     Instruction box;
+    int boxRow = -1; // the box's row on the ladder
 };
 
 // Draws a rung's logic on the grid (convert_to_ladder.cpp).

@@ -300,8 +300,8 @@ InputNetwork analyze(const Rung &rung, Graph &g, int row, bool consume) {
     return net;
 }
 
-void insert(Branch &node, const std::vector<Expr> &list, std::size_t pos,
-            const Instruction &output) {
+void insert(Branch &node, const std::vector<Expr> &list, std::size_t pos, const Instruction &output,
+            int row) {
     if (pos < list.size() && !node.items.empty() && !node.items.back().isOutput) {
         Branch &child = node.items.back().child.front();
         const std::vector<Expr> childList = seriesItems(child.cond);
@@ -323,13 +323,14 @@ void insert(Branch &node, const std::vector<Expr> &list, std::size_t pos,
                 item.child.push_back(std::move(lower));
                 child.items.push_back(std::move(item));
             }
-            insert(child, list, pos + p, output);
+            insert(child, list, pos + p, output, row);
             return;
         }
     }
     Branch::Item item;
     if (pos == list.size()) {
         item.output = output;
+        item.row = row;
         node.items.push_back(std::move(item));
         return;
     }
@@ -337,6 +338,7 @@ void insert(Branch &node, const std::vector<Expr> &list, std::size_t pos,
     leaf.cond = seriesOf({list.begin() + static_cast<std::ptrdiff_t>(pos), list.end()});
     Branch::Item out;
     out.output = output;
+    out.row = row;
     leaf.items.push_back(std::move(out));
     item.isOutput = false;
     item.child.push_back(std::move(leaf));
@@ -373,6 +375,7 @@ RungLogic logicOf(const Rung &rung, std::vector<InputNetwork> networks, bool use
         const std::vector<int> inputs = rung.boxInputRows(r);
         if (inputs.size() > 1) {
             logic.box = *out;
+            logic.boxRow = r;
             for (std::size_t k = 0; k < inputs.size() && next < networks.size(); ++k)
                 logic.boxInputs.push_back(take(networks[next++]));
             continue;
@@ -380,7 +383,7 @@ RungLogic logicOf(const Rung &rung, std::vector<InputNetwork> networks, bool use
         if (next >= networks.size())
             break;
         Expr e = take(networks[next++]);
-        insert(logic.root, e.empty() ? std::vector<Expr>{} : seriesItems(std::move(e)), 0, *out);
+        insert(logic.root, e.empty() ? std::vector<Expr>{} : seriesItems(std::move(e)), 0, *out, r);
     }
     return logic;
 }
