@@ -29,19 +29,7 @@ struct UnionFind {
     void join(int a, int b) { parent[static_cast<std::size_t>(find(a))] = find(b); }
 };
 
-struct Edge {
-    int from = 0;
-    int to = 0;
-    Expr expr;
-    int key = 0; // drawing order: first row, then column, of the edge's top-left leaf
-};
-
-struct Graph {
-    int rail = 0;
-    int nodes = 0;
-    std::vector<Edge> edges;     // one per contact
-    std::vector<int> outputNode; // per row: the node at the output column
-};
+} // namespace
 
 Graph buildGraph(const Rung &rung) {
     const int width = rung.columns + 1;
@@ -73,6 +61,8 @@ Graph buildGraph(const Rung &rung) {
     }
     return g;
 }
+
+namespace {
 
 int firstCell(const Expr &e) {
     if (e.kind == Expr::Kind::Leaf)

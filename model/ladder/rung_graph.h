@@ -9,6 +9,24 @@
 
 namespace rung::model::detail {
 
+// A contact: an edge between the nodes on its left and right, conducting left to right.
+struct Edge {
+    int from = 0;
+    int to = 0;
+    Expr expr;   // the contact as a leaf (Expr::cell: row * columns + column)
+    int key = 0; // drawing order: first row, then column, of the edge's top-left leaf
+};
+
+struct Graph {
+    int rail = 0;                // the left rail's node
+    int nodes = 0;               // node ids are below this
+    std::vector<Edge> edges;     // one per contact, in row then column order
+    std::vector<int> outputNode; // per row: the node at the output column
+};
+
+// The grid as a graph: wires and vertical links join node points into nodes.
+Graph buildGraph(const Rung &rung);
+
 struct InputNetwork {
     int row = 0;            // the output row (or box input row) this network feeds
     bool connected = false; // some left-to-right path reaches it from the rail

@@ -4,9 +4,9 @@
 // keep (IL -> ladder -> IL is a fixpoint after the first pass; listing, ladder and
 // canonical listing compute the same outputs).
 
+#include "logic_oracle.h"
 #include "model/convert/convert.h"
 #include "model/ladder/ladder_text.h"
-#include "model/ladder/logic.h"
 
 #include <gtest/gtest.h>
 

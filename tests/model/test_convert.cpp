@@ -1,9 +1,9 @@
 #include "convert_test_util.h"
 #include "random_program.h"
 
+#include "logic_oracle.h"
 #include "model/convert/convert.h"
 #include "model/ladder/ladder_text.h"
-#include "model/ladder/logic.h"
 #include "model/ladder/network.h"
 
 #include <gtest/gtest.h>

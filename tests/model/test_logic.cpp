@@ -1,9 +1,9 @@
-// The combinational evaluators (model/ladder/logic.h) that the conversion property tests rely on:
-// each is checked here against logic written out by hand.
+// The combinational evaluators (tests/model/logic_oracle.h) that the conversion property tests rely
+// on: each is checked here against logic written out by hand.
 
+#include "logic_oracle.h"
 #include "model/convert/convert.h"
 #include "model/ladder/ladder_text.h"
-#include "model/ladder/logic.h"
 #include "model/ladder/reverse_current.h"
 
 #include <gtest/gtest.h>

@@ -1,4 +1,5 @@
-#include "model/ladder/logic.h"
+#include "logic_oracle.h"
+
 #include "model/ladder/rung_graph.h"
 
 #include <algorithm>
@@ -6,7 +7,8 @@
 
 // Both evaluators share the reading of contacts and the meaning of outputs, so they differ
 // only in how they combine contacts: the listing as a stack machine, the ladder as power
-// flowing left to right through the grid.
+// flowing left to right through the model's graph of the grid (detail::buildGraph). A test
+// oracle: the program itself runs listings in the simulator.
 
 namespace rung::model {
 
@@ -195,44 +197,24 @@ OutputImage evaluateLadder(const LadderProgram &ladder, const BitReader &read) {
         // ways. The outputs act in row order, as the listing runs them, and a contact is read
         // just before the first output it feeds: a branch point's contacts once for all its
         // branches, a branch's own contacts after the branches above it have written.
-        const int width = rung.columns + 1;
-        std::vector<int> group(static_cast<std::size_t>(rung.rows * width));
-        for (std::size_t i = 0; i < group.size(); ++i)
-            group[i] = static_cast<int>(i);
-        auto find = [&group](int x) {
-            while (group[static_cast<std::size_t>(x)] != x)
-                x = group[static_cast<std::size_t>(x)] =
-                    group[static_cast<std::size_t>(group[static_cast<std::size_t>(x)])];
-            return x;
-        };
-        auto join = [&](int a, int b) { group[static_cast<std::size_t>(find(a))] = find(b); };
-        for (int r = 0; r < rung.rows; ++r) {
-            join(r * width, 0);
-            for (int c = 0; c <= rung.columns; ++c)
-                if (r + 1 < rung.rows && rung.link(r, c))
-                    join(r * width + c, (r + 1) * width + c);
-            for (int c = 0; c < rung.columns; ++c)
-                if (rung.cell(r, c).kind == CellKind::Wire)
-                    join(r * width + c, r * width + c + 1);
-        }
+        // The model's own graph of the grid (the converter reads the same one): nodes
+        // joined by wires and links, one edge per contact.
+        const detail::Graph g = detail::buildGraph(rung);
         const std::size_t cellCount = static_cast<std::size_t>(rung.rows * rung.columns);
         std::vector<int> from(cellCount, -1);
         std::vector<int> to(cellCount, -1);
-        for (int r = 0; r < rung.rows; ++r)
-            for (int c = 0; c < rung.columns; ++c) {
-                const std::size_t i = static_cast<std::size_t>(r * rung.columns + c);
-                if (rung.cell(r, c).kind != CellKind::Contact)
-                    continue;
-                from[i] = find(r * width + c);
-                to[i] = find(r * width + c + 1);
-            }
+        for (const detail::Edge &e : g.edges) {
+            from[static_cast<std::size_t>(e.expr.cell)] = e.from;
+            to[static_cast<std::size_t>(e.expr.cell)] = e.to;
+        }
+        const int rail = g.rail;
         // flood(start, forward, conducts): the groups reached from start.
         // Inverters that see no power feed their right side, as if from the rail.
         std::vector<int> sources;
         auto flood = [&](int start, bool forward, const std::vector<char> &conducts) {
-            std::vector<char> reached(group.size(), 0);
+            std::vector<char> reached(static_cast<std::size_t>(g.nodes), 0);
             reached[static_cast<std::size_t>(start)] = 1;
-            if (forward && start == find(0))
+            if (forward && start == rail)
                 for (int source : sources)
                     reached[static_cast<std::size_t>(source)] = 1;
             for (bool changed = true; changed;) {
@@ -252,7 +234,7 @@ OutputImage evaluateLadder(const LadderProgram &ladder, const BitReader &read) {
             return reached;
         };
         const std::vector<char> all(cellCount, 1);
-        const std::vector<char> fromRail = flood(find(0), true, all);
+        const std::vector<char> fromRail = flood(rail, true, all);
         std::vector<char> frozen(cellCount, 0);
         std::vector<char> closed(cellCount, 0);
         for (int r = 0; r < rung.rows; ++r) {
@@ -261,7 +243,7 @@ OutputImage evaluateLadder(const LadderProgram &ladder, const BitReader &read) {
                 continue;
             std::vector<bool> in;
             for (int row : rung.boxInputRows(r)) {
-                const int node = find(row * width + rung.columns);
+                const int node = g.outputNode[static_cast<std::size_t>(row)];
                 const std::vector<char> toOutput = flood(node, false, all);
                 std::vector<std::size_t> inverters;
                 for (std::size_t i = 0; i < cellCount; ++i) {
@@ -285,9 +267,9 @@ OutputImage evaluateLadder(const LadderProgram &ladder, const BitReader &read) {
                                             y % static_cast<std::size_t>(rung.columns);
                                  });
                 for (std::size_t i : inverters)
-                    if (!flood(find(0), true, closed)[static_cast<std::size_t>(from[i])])
+                    if (!flood(rail, true, closed)[static_cast<std::size_t>(from[i])])
                         sources.push_back(to[i]);
-                in.push_back(gate && flood(find(0), true, closed)[static_cast<std::size_t>(node)]);
+                in.push_back(gate && flood(rail, true, closed)[static_cast<std::size_t>(node)]);
             }
             if (out->op() == Op::Interlock && !in.empty()) {
                 interlock = in[0];

@@ -1,8 +1,8 @@
 #pragma once
 
-// Combinational meaning of a listing and of a ladder, used to prove that conversion keeps
-// meaning: every output is a boolean function of the contacts' devices. Edges, timers and
-// counters are read as plain bits; the simulator is the full oracle.
+// Test oracle: the combinational meaning of a listing and of a ladder, used to prove that
+// conversion keeps meaning: every output is a boolean function of the contacts' devices. Edges,
+// timers and counters are read as plain bits; the simulator is the full oracle.
 
 #include "model/ladder/ladder.h"
 #include "model/listing/il.h"
