@@ -1,0 +1,48 @@
+// The document's rung lines come from the printer's line map (model::PrintedListing): they
+// are the lines the list editor shows, whatever the rung comments hold.
+
+#include "editor/document.h"
+
+#include <QRegularExpression>
+
+#include <gtest/gtest.h>
+
+using namespace rung;
+
+namespace {
+
+// The listing's lines as the list editor shows them: \r\n, \r and \n all end a line.
+QStringList shownLines(const QString &text) {
+    return text.split(QRegularExpression(QStringLiteral("\\r\\n|\\r|\\n")));
+}
+
+} // namespace
+
+// The editor used to count one line per rung comment entry: a comment with a bare CR (a
+// project written elsewhere) shows as two lines, and every rung after it was placed one line
+// too early.
+TEST(DocumentLines, RungLinesAreTheLinesTheListShows) {
+    editor::Document document;
+    document.reset(model::Target::get(model::Family::Vigor), QStringLiteral("VB"));
+    std::vector<model::Diagnostic> errors;
+    ASSERT_TRUE(document.setListing(
+        QStringLiteral("; start\nLD X0\nOUT Y0\n; stop\nLD X1\nOUT Y1\nLD X2\nOUT Y2\nEND\n"),
+        &errors));
+    ASSERT_EQ(document.ladder().rungs.size(), 4u);
+    model::Rung first = document.ladder().rungs[0];
+    first.comment = QStringLiteral("start\rwith a second line");
+    document.setRung(0, first, QStringLiteral("Comment"));
+    const QStringList lines = shownLines(document.listingText());
+    const auto lineOf = [&](const QString &text) { return lines.indexOf(text) + 1; };
+    EXPECT_EQ(document.firstLineOfRung(0), lineOf(QStringLiteral("; start")));
+    EXPECT_EQ(document.firstLineOfRung(1), lineOf(QStringLiteral("; stop")));
+    EXPECT_EQ(document.firstLineOfRung(2), lineOf(QStringLiteral("LD X2")));
+    EXPECT_EQ(document.firstLineOfRung(3), lineOf(QStringLiteral("END")));
+    EXPECT_EQ(document.rungOfLine(lineOf(QStringLiteral("OUT Y1"))), 1);
+    EXPECT_EQ(document.rungOfLine(lineOf(QStringLiteral("; with a second line"))), 0);
+    // Every line of code is an instruction of the map, every other line a comment.
+    const auto &map = document.printedListing();
+    for (int line = 1; line < static_cast<int>(lines.size()); ++line)
+        EXPECT_EQ(map.instructionAt(line) >= 0, !lines[line - 1].startsWith(QLatin1Char(';')))
+            << line;
+}
