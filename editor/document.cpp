@@ -73,7 +73,7 @@ private:
 
 Document::Document(QObject *parent)
     : QObject(parent) {
-    reset(model::Target::get(model::Family::Vigor), QString());
+    reset(model::Target::defaultTarget(), QString());
 }
 
 void Document::reset(const model::Target &target, const QString &modelName) {

@@ -54,18 +54,16 @@ void Compiler::compileTimer(const model::Instruction &ins, Step &s) {
     s.y.index = m_layout->setValueWord(t->address); // shows the set value in use
     if (ins.operands.size() > 1) {
         s.x = sourceOf(ins, 1);
-        if (m_sem.bcdSetValues && s.x.index >= 0)
+        if (m_target.constants.bcdSetValues && s.x.index >= 0)
             s.flags |= kBcd;
     } else {
         s.x.index = s.y.index;
     }
     if (t->address.index < m_sem.downTimersBelow)
         s.flags |= kDown;
-    double base = m_sem.timerBaseMs > 0 ? m_sem.timerBaseMs : m_target.defaultTimerBaseMs;
-    if (m_sem.fastTimerFunctionCode >= 0 && ins.spec->functionCode == m_sem.fastTimerFunctionCode)
-        base = m_sem.fastTimerBaseMs;
-    if (m_target.family == model::Family::Pl110) {
-        // TON / TOFF / TONR T PT [base]: the time base is the third operand (10, 100 or
+    double base = ins.spec->timerBaseMs > 0 ? ins.spec->timerBaseMs : m_target.defaultTimerBaseMs;
+    if (m_sem.timerCountsInWord) {
+        // PL110 TON / TOFF / TONR T PT [base]: the time base is the third operand (10, 100 or
         // 1000 ms, seed 003 4.2.4); the current value lives in the T word so that
         // MOV(Tx = #0) resets a TONR as the manual says.
         s.code = Code::PlTimer;
@@ -75,7 +73,8 @@ void Compiler::compileTimer(const model::Instruction &ins, Step &s) {
                                                                     : PlTimerMode::OnDelay);
         if (const model::Operand *b = ins.operands.size() > 2 ? &ins.operands[2] : nullptr) {
             const qint64 v = b->kind == model::Operand::Kind::Constant ? b->constant.value : -1;
-            if (v != 10 && v != 100 && v != 1000) {
+            if (std::find(m_sem.timerBasesMs.begin(), m_sem.timerBasesMs.end(), v) ==
+                m_sem.timerBasesMs.end()) {
                 error(ins, Tr::tr("the time base of %1 must be 10, 100 or 1000 ms, not %2")
                                .arg(ins.spec->mnemonic, describe(*b)));
                 return;
@@ -89,7 +88,7 @@ void Compiler::compileTimer(const model::Instruction &ins, Step &s) {
 void Compiler::compileCounter(const model::Instruction &ins, Step &s) {
     const bool upDown = ins.spec->op == Op::UpDownCounter;
     s.code = upDown ? Code::UpDownCounter : Code::Counter;
-    if (upDown && m_target.family == model::Family::Pl110) {
+    if (upDown && m_sem.upDownCountersSaturate) {
         s.code = Code::PlCounter;
         if (ins.spec->counterMode == model::CounterMode::Down)
             s.flags |= kDown;
@@ -108,7 +107,7 @@ void Compiler::compileCounter(const model::Instruction &ins, Step &s) {
     s.y.index = m_layout->setValueWord(c->address);
     if (ins.operands.size() > 1) {
         s.x = sourceOf(ins, 1);
-        if (m_sem.bcdSetValues && s.x.index >= 0)
+        if (m_target.constants.bcdSetValues && s.x.index >= 0)
             s.flags |= kBcd;
     } else {
         s.x.index = s.y.index;

@@ -21,7 +21,7 @@ void Compiler::compileSystem() {
         case model::SystemRole::ScanTimeMin:
         case model::SystemRole::ScanTimeMax:
             b.word = m_layout->word(a);
-            b.unitUs = d.unitUs > 0 ? d.unitUs : 1000;
+            b.unitUs = d.unitUs;
             if (b.word >= 0)
                 m_program->system.push_back(b);
             break;
@@ -36,29 +36,31 @@ void Compiler::compileSystem() {
             break;
         }
     }
-    auto addr = [&](const char *text) -> model::Address {
-        if (!text)
+    auto addr = [&](const QString &text) -> model::Address {
+        if (text.isEmpty())
             return {};
-        const auto parsed = model::parseAddress(m_target, QString::fromLatin1(text));
+        const auto parsed = model::parseAddress(m_target, text);
         return std::holds_alternative<model::Address>(parsed) ? std::get<model::Address>(parsed)
                                                               : model::Address{};
     };
-    auto bits = [&](const char *first, std::vector<BitRef> &into) {
-        model::Address a = addr(first);
-        for (int k = 0; a.valid() && k < m_sem.parallelBits; ++k, ++a.index) {
+    // The port's bits, LSB first; a model with fewer bit devices shows fewer bits. Only
+    // port.bits bits exist, so the word's value shows modulo 2^bits.
+    auto bits = [&](const model::ParallelPort &port, std::vector<BitRef> &into) {
+        model::Address a = addr(port.firstBit);
+        for (int k = 0; a.valid() && k < port.bits; ++k, ++a.index) {
             const BitRef r = m_layout->bit(a);
             if (!r.valid())
                 return;
             into.push_back(r);
         }
     };
-    if (const model::Address o = addr(m_sem.parallelOut); o.valid()) {
+    if (const model::Address o = addr(m_sem.parallelOut.word); o.valid()) {
         m_program->parallelOutWord = m_layout->word(o);
-        bits(m_sem.parallelOutFirstBit, m_program->parallelOutBits);
+        bits(m_sem.parallelOut, m_program->parallelOutBits);
     }
-    if (const model::Address i = addr(m_sem.parallelIn); i.valid()) {
+    if (const model::Address i = addr(m_sem.parallelIn.word); i.valid()) {
         m_program->parallelInWord = m_layout->word(i);
-        bits(m_sem.parallelInFirstBit, m_program->parallelInBits);
+        bits(m_sem.parallelIn, m_program->parallelInBits);
     }
     for (int k = 0; k < m_layout->areaCount(); ++k) {
         const AreaLayout &l = m_layout->area(k);
@@ -91,8 +93,8 @@ void Compiler::resolveJumps() {
 }
 
 CompileResult Compiler::run() {
-    const FamilySemantics &sem = m_sem;
-    m_program->deferredBitWrites = sem.deferredBitWrites;
+    m_program->deferredBitWrites = m_sem.deferredBitWrites;
+    m_program->timerMax = m_target.limits.timerMax;
     m_program->steps.resize(m_list.instructions.size());
     m_program->lines.resize(m_list.instructions.size());
     compileSystem();

@@ -5,7 +5,6 @@
 // simulator's interface: include compiler.h instead.
 
 #include "compiler.h"
-#include "family.h"
 
 #include "model/listing/structure.h"
 #include "model/target/address.h"
@@ -37,7 +36,7 @@ public:
     explicit Compiler(const model::InstructionList &list)
         : m_list(list)
         , m_target(*list.target)
-        , m_sem(familySemantics(m_target.family)) {
+        , m_sem(m_target.semantics) {
         auto program = std::make_shared<Program>();
         program->layout = std::make_shared<MemoryLayout>(m_target);
         m_program = program;
@@ -197,7 +196,7 @@ private:
 
     const model::InstructionList &m_list;
     const model::Target &m_target;
-    FamilySemantics m_sem;
+    const model::Semantics &m_sem; // the target's execution facts (target.h)
     std::shared_ptr<Program> m_program;
     const MemoryLayout *m_layout = nullptr;
     std::vector<model::Diagnostic> m_diagnostics;

@@ -162,9 +162,9 @@ void Engine::endScan() {
     const Program &p = *m_program;
     std::int32_t *W = p.deferredBitWrites ? m_write.data() : m_words.data();
     if (p.writesParallelOut) {
+        // Only the port's bits exist (Semantics::parallelOut.bits): the value shows modulo 2^bits.
         const auto v =
-            static_cast<std::uint32_t>(m_words[static_cast<std::size_t>(p.parallelOutWord)]) %
-            4096u;
+            static_cast<std::uint32_t>(m_words[static_cast<std::size_t>(p.parallelOutWord)]);
         for (std::size_t k = 0; k < p.parallelOutBits.size(); ++k)
             put(W, p.parallelOutBits[k], (v >> k) & 1u);
     }

@@ -21,7 +21,6 @@ struct Tr {
 // The compiler holds a program to these (model/listing/structure.h).
 constexpr int kBlockStack = model::kMaxOpenBlocks;
 constexpr int kPushStack = model::kMaxStackDepthOfAnyTarget;
-constexpr std::int64_t kMaxTimerValue = 32767;
 
 bool compare(std::uint8_t op, std::int32_t a, std::int32_t b) {
     switch (static_cast<model::CompareOp>(op)) {
@@ -102,6 +101,7 @@ template <bool Record> void Engine::execute() {
     std::int32_t *R = m_words.data();
     std::int32_t *W = p.deferredBitWrites ? m_write.data() : R;
     const std::int64_t period = m_stats.periodMs;
+    const std::int64_t timerMax = p.timerMax; // Limits::timerMax
     auto rd = [R](const BitRef &b) {
         return (static_cast<std::uint32_t>(R[b.word]) & b.mask) != 0;
     };
@@ -254,7 +254,7 @@ template <bool Record> void Engine::execute() {
             }
             put(W, s.bit, acc && units >= set);
             R[s.dest] = static_cast<std::int32_t>(
-                (s.flags & kDown) ? set - units : std::min<std::int64_t>(units, kMaxTimerValue));
+                (s.flags & kDown) ? set - units : std::min<std::int64_t>(units, timerMax));
             break;
         }
         case Code::Counter: {
@@ -309,7 +309,7 @@ template <bool Record> void Engine::execute() {
         }
         case Code::PlTimer: {
             // PL110 (seed 003 4.2.4): the current value counts time-base units in the T word
-            // and saturates at 32767; st.accumulated holds the ms not yet a whole unit.
+            // and saturates at Limits::timerMax; st.accumulated holds the ms not yet a whole unit.
             ElementState &st = m_states[static_cast<std::size_t>(s.slot)];
             const std::int32_t set = readSet(s, i);
             if (set < 0)
@@ -319,7 +319,7 @@ template <bool Record> void Engine::execute() {
                 st.accumulated += period;
                 const std::int64_t units = std::int64_t{current} + st.accumulated / s.count;
                 st.accumulated %= s.count;
-                current = static_cast<std::int32_t>(std::min(units, kMaxTimerValue));
+                current = static_cast<std::int32_t>(std::min(units, timerMax));
             };
             bool out = false;
             switch (static_cast<PlTimerMode>(s.op)) {

@@ -120,7 +120,7 @@ struct SystemBinding {
     model::SystemRole role = model::SystemRole::Other;
     BitRef bit;
     std::int32_t word = -1;
-    int unitUs = 1000; // scan-time words: microseconds per count, from the target table
+    int unitUs = 0; // scan-time words: microseconds per count, SystemDevice::unitUs
 };
 
 struct Program {
@@ -135,8 +135,9 @@ struct Program {
     int maxPushDepth = 0;
     // VPC: bit writes land in a write image that becomes visible at END (docs/simulator.md).
     bool deferredBitWrites = false;
+    std::int64_t timerMax = 0; // a timer's current value saturates here (Limits::timerMax)
     std::vector<std::pair<int, int>> bitWordRanges; // [begin, end) words holding bits
-    // VPC p76 / p77 parallel output / input.
+    // Semantics::parallelOut / parallelIn (VPC p76 / p77); -1: none.
     std::int32_t parallelOutWord = -1;
     bool writesParallelOut = false;
     std::int32_t parallelInWord = -1;

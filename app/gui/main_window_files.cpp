@@ -343,7 +343,7 @@ void MainWindow::fileNew() {
         modelBox->setCurrentIndex(modelBox->count() - 1);
     };
     connect(family, &QComboBox::currentIndexChanged, &dialog, fillModels);
-    family->setCurrentIndex(1);
+    family->setCurrentIndex(family->findData(model::Target::defaultTarget().id));
     fillModels();
     form->addRow(tr("PLC family:"), family);
     form->addRow(tr("Model:"), modelBox);

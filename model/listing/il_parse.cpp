@@ -406,7 +406,7 @@ private:
         if (o.kind != Operand::Kind::Constant || kind == OperandKind::Label)
             return true;
         const Constant &c = o.constant;
-        if (m_target.family == Family::Cpm1 && kind == OperandKind::SetValue &&
+        if (m_target.constants.bcdSetValues && kind == OperandKind::SetValue &&
             c.style != Constant::Style::Bcd) {
             error(lineNumber, token.column,
                   tr("%1: a set value is a BCD constant #0000..#9999 or a channel")
@@ -450,22 +450,20 @@ private:
         if (t.isEmpty())
             return false;
         const QChar c = t[0].toUpper();
-        switch (m_target.family) {
-        case Family::Vigor:
-            return (c == QLatin1Char('K') || c == QLatin1Char('H')) && t.size() > 1 &&
-                   (t[1].isDigit() || t[1] == QLatin1Char('-') ||
-                    (c == QLatin1Char('H') && t[1].isLetterOrNumber()));
-        case Family::Cpm1:
-            return c == QLatin1Char('#');
-        case Family::Vpc:
-        case Family::Pl110: {
+        const ConstantNotation &rules = m_target.constants;
+        if (rules.prefixed && (c == QLatin1Char('K') || c == QLatin1Char('H')) && t.size() > 1 &&
+            (t[1].isDigit() || t[1] == QLatin1Char('-') ||
+             (c == QLatin1Char('H') && t[1].isLetterOrNumber())))
+            return true;
+        if (rules.bcd && c == QLatin1Char('#'))
+            return true;
+        if (rules.plain) {
             // A sign alone is an FM operator, not a number; PL110 also writes "#0".
             const qsizetype digit = (c == QLatin1Char('-') || c == QLatin1Char('+') ||
-                                     (m_target.family == Family::Pl110 && c == QLatin1Char('#')))
+                                     (rules.hashPlain && c == QLatin1Char('#')))
                                         ? 1
                                         : 0;
             return t.size() > digit && t[digit].isDigit();
-        }
         }
         return false;
     }
@@ -509,7 +507,7 @@ private:
         }
         case OperandKind::Constant:
         case OperandKind::Count: {
-            if (m_target.family == Family::Pl110 && !looksConstant(t)) {
+            if (m_target.constants.wordsInConstantSlots && !looksConstant(t)) {
                 // PL110 FM operators and time bases are words, kept verbatim.
                 out->kind = Operand::Kind::Text;
                 out->text = t;

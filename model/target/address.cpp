@@ -295,22 +295,21 @@ std::variant<Constant, AddressError> parseConstant(const Target &target, QString
     } else {
         c.style = Constant::Style::Plain;
     }
-    // Each family writes constants its own way; a foreign style is a clear error.
-    const bool vigor = target.family == Family::Vigor;
-    const bool cpm1 = target.family == Family::Cpm1;
-    if ((c.style == Constant::Style::Decimal || c.style == Constant::Style::Hex) && !vigor)
+    // Each target writes constants its own way (ConstantNotation); a foreign style is a clear
+    // error that names the target's own.
+    const ConstantNotation &rules = target.constants;
+    if ((c.style == Constant::Style::Decimal || c.style == Constant::Style::Hex) && !rules.prefixed)
         return AddressError{
             Tr::tr("%1: %2 writes constants without K or H").arg(t.toString(), target.displayName),
             lead};
-    if (c.style == Constant::Style::Bcd && target.family == Family::Pl110) {
-        // PLProg writes "MOV(Tx = #0)": on PL110 '#' only marks a plain number.
+    if (c.style == Constant::Style::Bcd && rules.hashPlain) {
         c.style = Constant::Style::Plain;
-    } else if (c.style == Constant::Style::Bcd && !cpm1)
+    } else if (c.style == Constant::Style::Bcd && !rules.bcd)
         return AddressError{Tr::tr("%1: # constants belong to CPM1 listings").arg(t.toString()),
                             lead};
-    if (c.style == Constant::Style::Plain && (vigor || cpm1))
+    if (c.style == Constant::Style::Plain && !rules.plain)
         return AddressError{
-            vigor
+            rules.prefixed
                 ? Tr::tr("%1: write a constant as K (decimal) or H (hexadecimal)").arg(t.toString())
                 : Tr::tr("%1: write a constant with # (e.g. #0150)").arg(t.toString()),
             lead};
@@ -357,7 +356,8 @@ QString formatConstant(const Target &target, const Constant &constant) {
     case Constant::Style::Decimal:
         return QStringLiteral("K%1").arg(constant.value);
     case Constant::Style::Hex:
-        if (target.family == Family::Cpm1)
+        // Without an H prefix a hexadecimal word is a #-constant with a letter digit (CPM1).
+        if (target.constants.bcd && !target.constants.prefixed)
             return QStringLiteral("#%1").arg(constant.value, 4, 16, QLatin1Char('0')).toUpper();
         return QStringLiteral("H%1").arg(constant.value, 0, 16).toUpper();
     case Constant::Style::Bcd:
@@ -365,9 +365,12 @@ QString formatConstant(const Target &target, const Constant &constant) {
     case Constant::Style::Plain:
         break;
     }
-    if (target.family == Family::Vigor)
+    // A plain value in the target's own notation: plain where it has one, else K, else #.
+    if (target.constants.plain)
+        return QString::number(constant.value);
+    if (target.constants.prefixed)
         return QStringLiteral("K%1").arg(constant.value);
-    if (target.family == Family::Cpm1)
+    if (target.constants.bcd)
         return QStringLiteral("#%1").arg(constant.value, 4, 10, QLatin1Char('0'));
     return QString::number(constant.value);
 }

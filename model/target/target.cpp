@@ -9,6 +9,8 @@ namespace rung::model {
 namespace {
 
 constexpr std::array kFamilies{Family::Vpc, Family::Vigor, Family::Cpm1, Family::Pl110};
+// The family a new, empty document and the new-project dialog start with.
+constexpr Family kDefaultFamily = Family::Vigor;
 
 struct Registry {
     Target vpc = detail::makeVpcTarget();
@@ -80,6 +82,10 @@ const Target &Target::get(Family family) {
         return r.pl110;
     }
     return r.vpc;
+}
+
+const Target &Target::defaultTarget() {
+    return get(kDefaultFamily);
 }
 
 const Target *Target::byId(const QString &id) {

@@ -89,7 +89,9 @@ struct SystemDevice {
     QString device; // as written: "r88", "M9000", "253.13", "SM0.0"
     SystemRole role = SystemRole::Other;
     const char *description = nullptr; // QT_TRANSLATE_NOOP("rung::model::Target", ...)
-    int unitUs = 0; // a scan-time word's count in microseconds (100: Vigor D9010, PL110 SM6)
+    // A scan-time word counts in this many microseconds (100: Vigor D9010, PL110 SM6); the
+    // one default of the scan-time unit, 1 ms, is here.
+    int unitUs = 1000;
     // The manual lets the program write it as well (VPC: drop r88 RUN to stop, raise r89 ERR).
     bool programWrites = false;
 };
@@ -171,6 +173,7 @@ struct InstructionSpec {
     const char *summary = nullptr; // QT_TRANSLATE_NOOP("rung::model::Target", ...) for call tips
     const char *operandHelp = nullptr; // e.g. "T0..T255 K1..K32767"; untranslated syntax
     int steps = 1;                     // program memory the instruction occupies (words / steps)
+    double timerBaseMs = 0; // Op::Timer: its own time base (CPM1 TIMH(15): 10 ms); 0: the target's
     TimerMode timerMode = TimerMode::OnDelay;  // Op::Timer
     CounterMode counterMode = CounterMode::Up; // Op::UpDownCounter
 };
@@ -187,7 +190,59 @@ struct Limits {
     // Word values are decimal numbers of this many digits (VPC registers, timers and counters
     // hold 0000..9999, seed 000 III); 0: binary words of Area::wordBits.
     int decimalDigits = 0;
+    // A timer's current value stops here (PL110 seed 003 4.2.4: saturates at 32767).
+    std::int64_t timerMax = 32767;
 };
+
+// How a target writes constants; parseConstant / formatConstant (address.cpp) and the listing
+// parser read these rules and nothing else. A target accepts every form it sets.
+struct ConstantNotation {
+    bool prefixed = false;  // K10 decimal, H1F hexadecimal (Vigor, seed 004)
+    bool bcd = false;       // #0150 four BCD digits, #00FF a hexadecimal word (CPM1, seed 002)
+    bool plain = false;     // a bare number: 150, -3 (VPC, PL110)
+    bool hashPlain = false; // '#' only marks a plain number (PL110: PLProg writes "MOV(Tx = #0)")
+    // Timer/counter set values are BCD: a # constant or a channel holding BCD digits (CPM1
+    // TIM/CNT, seed 002); the simulator decodes the channel, the parser refuses other forms.
+    bool bcdSetValues = false;
+    // A constant slot that holds no number keeps the word verbatim (PL110 FM operators and
+    // time bases); otherwise it is a constant error.
+    bool wordsInConstantSlots = false;
+};
+
+// A register whose value appears bit by bit on a run of bit devices, or the other way round
+// (VPC p76 -> o00..o11, i00..i11 -> p77, seed 000). Device texts are parsed with the target's
+// own address rules.
+struct ParallelPort {
+    QString word;     // "p76"; empty: the target has no such port
+    QString firstBit; // the least significant bit: "o00"
+    int bits = 0;     // how many bits follow it (12); the word's value is taken modulo 2^bits
+};
+
+// Execution facts the simulator reads (docs/simulator.md), one field per difference a
+// manual describes.
+struct Semantics {
+    // Coils write an image that contacts see from the next scan on (VPC, seed 000).
+    bool deferredBitWrites = false;
+    // Timers / counters with a lower element number count down from the set value
+    // (VPC TIM00..15 / CNT00..15; every CPM1 TIM / CNT).
+    int downTimersBelow = 0;
+    int downCountersBelow = 0;
+    // The timer's current value is the count of time-base units kept in its word, so a write
+    // to the word changes the timing (PL110 TON / TOFF / TONR, seed 003 4.2.4: MOV(Tx = #0)
+    // resets a TONR); the time base may be named as the timer's third operand, one of
+    // timerBasesMs. Otherwise the elapsed time is the timer's own state.
+    bool timerCountsInWord = false;
+    std::vector<int> timerBasesMs;
+    // Up/down counters saturate at the limits of their word (PL110 MUP / MDOWN, seed 003
+    // 4.2.5) instead of wrapping around (CPM1 CNTR(12)).
+    bool upDownCountersSaturate = false;
+    ParallelPort parallelOut; // VPC p76
+    ParallelPort parallelIn;  // VPC p77
+};
+
+// The protocol address maps of a target (Vigor link byte addresses, Vigor and PL110 Modbus
+// maps, Host Link areas): target data like the rest, filled by the comms tables. Empty for now.
+struct ProtocolMaps {};
 
 // A model (hardware variant) narrows the areas: I/O counts, analog channels.
 struct ModelVariant {
@@ -212,9 +267,14 @@ public:
     std::vector<ModelVariant> models;
     Limits limits;
     double defaultTimerBaseMs = 100.0; // Vigor TMR default resolution
+    ConstantNotation constants;
+    Semantics semantics;
+    ProtocolMaps protocols;
 
     // The four families, built once.
     static const Target &get(Family family);
+    // The target a new, empty document starts with.
+    static const Target &defaultTarget();
     static const Target *byId(const QString &id); // nullptr when unknown
     static std::span<const Family> families();
 

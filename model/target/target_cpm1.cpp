@@ -144,7 +144,8 @@ Target makeCpm1Target() {
                 QT_TRANSLATE_NOOP("rung::model::Target",
                                   "High-speed timer, 0.01 s, counts down from the BCD set value"),
                 "000..127 #0000..#9999"),
-        "TIMH", 15);
+        "TIMH", 15)
+        .timerBaseMs = 10.0;
     addSpec(t, "CNT", Op::Counter, {{K::CounterNumber}, {K::SetValue}},
             QT_TRANSLATE_NOOP("rung::model::Target",
                               "Down counter: count = last but one block, reset = last block"),
@@ -192,6 +193,13 @@ Target makeCpm1Target() {
     t.limits.jumpLabels = 50;
     t.limits.allowsStack = false;
     t.limits.duplicateCoilIsError = true;
+
+    // Seed 002: constants are BCD with '#' (without it a number is an address), and so are
+    // the set values of TIM / CNT; every timer and counter counts down from its set value.
+    t.constants.bcd = true;
+    t.constants.bcdSetValues = true;
+    t.semantics.downTimersBelow = 1 << 30;
+    t.semantics.downCountersBelow = 1 << 30;
 
     // CPU units by I/O points; inputs from channel 000, outputs from 010 (seed 002).
     struct Io {

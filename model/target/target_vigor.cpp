@@ -340,6 +340,9 @@ Target makeVigorTarget() {
     t.limits.duplicateCoilIsError = false;
     t.limits.outputNeedsCondition = true;
 
+    // Seed 004: K10 decimal, H1F hexadecimal; a bare number is no constant.
+    t.constants.prefixed = true;
+
     // The seeds give one device map for the whole family; the models differ in program size.
     t.models = {
         ModelVariant{QStringLiteral("M"), {}, 8000},

@@ -202,6 +202,16 @@ Target makeVpcTarget() {
     t.limits.duplicateCoilIsError = true;
     t.limits.decimalDigits = 4;
 
+    // Seed 000: operands are plain decimal numbers; coils take effect from the next scan;
+    // TIM00..15 / CNT00..15 count down, TIM16..31 / CNT16..31 up; p76 appears binary on
+    // o00..o11 (value mod 4096, o11 = MSB) and i00..i11 read as a number into p77.
+    t.constants.plain = true;
+    t.semantics.deferredBitWrites = true;
+    t.semantics.downTimersBelow = 16;
+    t.semantics.downCountersBelow = 16;
+    t.semantics.parallelOut = {QStringLiteral("p76"), QStringLiteral("o00"), 12};
+    t.semantics.parallelIn = {QStringLiteral("p77"), QStringLiteral("i00"), 12};
+
     // Discrete in / out / analog in / analog out per model (seed 000).
     struct Io {
         const char *name;

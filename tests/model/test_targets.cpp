@@ -352,6 +352,123 @@ TEST(Targets, DefaultTimerBases) {
     EXPECT_EQ(pl110().defaultTimerBaseMs, 100.0);
 }
 
+TEST(Targets, DefaultTargetIsOneOfTheFamilies) {
+    const Target &d = Target::defaultTarget();
+    EXPECT_EQ(&d, &vigor()); // the new-project dialog and an empty document start here
+    EXPECT_EQ(Target::byId(d.id), &d);
+}
+
+TEST(Targets, ScanTimeWordsCountInTheirTablesUnit) {
+    EXPECT_EQ(SystemDevice{}.unitUs, 1000); // 1 ms unless the table says otherwise
+    for (const Target *t : {&vigor(), &pl110()}) {
+        const SystemDevice *d = t->systemDevice(SystemRole::ScanTimeCurrent);
+        ASSERT_NE(d, nullptr) << t->id.toStdString();
+        EXPECT_EQ(d->unitUs, 100) << t->id.toStdString(); // 0.1 ms: Vigor D9010, PL110 SM6
+    }
+}
+
+// Semantics and constant rules: what family.h and the Family switches used to say ----------
+
+TEST(Semantics, VpcParallelPortsAreTwelveBitsOfP76AndP77) {
+    // Seed 000: p76 appears binary on o00..o11 (o11 = MSB); i00..i11 read into p77.
+    const ParallelPort &out = vpc().semantics.parallelOut;
+    const ParallelPort &in = vpc().semantics.parallelIn;
+    EXPECT_EQ(out.word, QStringLiteral("p76"));
+    EXPECT_EQ(out.firstBit, QStringLiteral("o00"));
+    EXPECT_EQ(out.bits, 12);
+    EXPECT_EQ(in.word, QStringLiteral("p77"));
+    EXPECT_EQ(in.firstBit, QStringLiteral("i00"));
+    EXPECT_EQ(in.bits, 12);
+    // Written with the target's own rules: the port words are registers, the bits I/O.
+    EXPECT_EQ(areaOf(vpc(), "p76").kind, AreaKind::Word);
+    EXPECT_EQ(areaOf(vpc(), "p77").kind, AreaKind::Word);
+    EXPECT_FALSE(areaOf(vpc(), "p77").writable); // read-only, the inputs drive it
+    EXPECT_EQ(areaOf(vpc(), "o00").key, QStringLiteral("o"));
+    EXPECT_EQ(areaOf(vpc(), "i00").key, QStringLiteral("i"));
+    EXPECT_EQ(areaOf(vpc(), "o11").key, QStringLiteral("o")); // the last bit exists too
+    for (const Target *t : {&vigor(), &cpm1(), &pl110()}) {
+        EXPECT_TRUE(t->semantics.parallelOut.word.isEmpty()) << t->id.toStdString();
+        EXPECT_TRUE(t->semantics.parallelIn.word.isEmpty()) << t->id.toStdString();
+    }
+}
+
+TEST(Semantics, OnlyVpcDefersBitWrites) {
+    EXPECT_TRUE(vpc().semantics.deferredBitWrites);
+    for (const Target *t : {&vigor(), &cpm1(), &pl110()})
+        EXPECT_FALSE(t->semantics.deferredBitWrites) << t->id.toStdString();
+}
+
+TEST(Semantics, DownCountingTimersAndCountersPerFamily) {
+    // VPC TIM00..15 / CNT00..15 count down, 16..31 up; every CPM1 TIM / CNT counts down.
+    EXPECT_EQ(vpc().semantics.downTimersBelow, 16);
+    EXPECT_EQ(vpc().semantics.downCountersBelow, 16);
+    const int cpm1Last = areaOf(cpm1(), "TIM127").last;
+    EXPECT_GT(cpm1().semantics.downTimersBelow, cpm1Last);
+    EXPECT_GT(cpm1().semantics.downCountersBelow, cpm1Last);
+    for (const Target *t : {&vigor(), &pl110()}) {
+        EXPECT_EQ(t->semantics.downTimersBelow, 0) << t->id.toStdString();
+        EXPECT_EQ(t->semantics.downCountersBelow, 0) << t->id.toStdString();
+    }
+}
+
+TEST(Semantics, Cpm1TimhCarriesItsOwnTimeBase) {
+    EXPECT_EQ(spec(cpm1(), "TIMH(15)").timerBaseMs, 10.0); // 0.01 s
+    EXPECT_EQ(&spec(cpm1(), "TIMH"), &spec(cpm1(), "TIMH(15)"));
+    EXPECT_EQ(spec(cpm1(), "TIM").timerBaseMs, 0.0); // the target's 0.1 s
+    for (const Target *t : {&vpc(), &vigor(), &pl110()})
+        for (const InstructionSpec &s : t->instructions)
+            EXPECT_EQ(s.timerBaseMs, 0.0) << t->id.toStdString() << " " << s.mnemonic.toStdString();
+}
+
+TEST(Semantics, Pl110TimersCountInTheirWordAndCountersSaturate) {
+    const Semantics &s = pl110().semantics;
+    EXPECT_TRUE(s.timerCountsInWord);
+    EXPECT_EQ(s.timerBasesMs, (std::vector<int>{10, 100, 1000})); // seed 003 4.2.4
+    EXPECT_TRUE(s.upDownCountersSaturate);                        // MUP / MDOWN
+    EXPECT_EQ(pl110().limits.timerMax, 32767);
+    for (const Target *t : {&vpc(), &vigor(), &cpm1()}) {
+        EXPECT_FALSE(t->semantics.timerCountsInWord) << t->id.toStdString();
+        EXPECT_TRUE(t->semantics.timerBasesMs.empty()) << t->id.toStdString();
+        EXPECT_FALSE(t->semantics.upDownCountersSaturate) << t->id.toStdString(); // CNTR wraps
+    }
+}
+
+TEST(Semantics, ConstantNotationPerFamily) {
+    EXPECT_TRUE(vigor().constants.prefixed);
+    EXPECT_FALSE(vigor().constants.plain);
+    EXPECT_TRUE(cpm1().constants.bcd);
+    EXPECT_TRUE(cpm1().constants.bcdSetValues);
+    EXPECT_FALSE(cpm1().constants.plain);
+    EXPECT_TRUE(vpc().constants.plain);
+    EXPECT_FALSE(vpc().constants.hashPlain);
+    EXPECT_TRUE(pl110().constants.plain);
+    EXPECT_TRUE(pl110().constants.hashPlain);
+    EXPECT_TRUE(pl110().constants.wordsInConstantSlots);
+    for (const Target *t : {&vpc(), &vigor(), &pl110()})
+        EXPECT_FALSE(t->constants.bcdSetValues) << t->id.toStdString();
+}
+
+TEST(Semantics, ConstantRulesAreReadFromTheTableNotTheFamily) {
+    // A table with K/H and plain numbers both: the parser follows the rules, whatever the
+    // family field says, so a fifth PLC needs only its table.
+    Target t = vpc();
+    t.constants.prefixed = true;
+    const auto k = parseConstant(t, u"K10");
+    ASSERT_TRUE(std::holds_alternative<Constant>(k));
+    EXPECT_EQ(std::get<Constant>(k).value, 10);
+    const auto plain = parseConstant(t, u"10");
+    ASSERT_TRUE(std::holds_alternative<Constant>(plain));
+    EXPECT_EQ(std::get<Constant>(plain).style, Constant::Style::Plain);
+    t.constants.plain = false;
+    EXPECT_TRUE(std::holds_alternative<AddressError>(parseConstant(t, u"10")));
+    EXPECT_EQ(formatConstant(t, Constant{7, Constant::Style::Plain}), QStringLiteral("K7"));
+    t.constants.hashPlain = true;
+    t.constants.plain = true;
+    const auto hash = parseConstant(t, u"#5");
+    ASSERT_TRUE(std::holds_alternative<Constant>(hash));
+    EXPECT_EQ(std::get<Constant>(hash).style, Constant::Style::Plain);
+}
+
 // Instructions ------------------------------------------------------------------------------
 
 TEST(Instructions, VpcNegatedContactsHaveStarAliases) {

@@ -43,9 +43,14 @@ inline std::unique_ptr<model::Target> makeTestTarget(model::Family family = mode
     using model::ContactMode;
     using model::Op;
     auto t = std::make_unique<model::Target>();
+    // The family's execution facts and constant rules, on the synthetic areas.
+    const model::Target &real = model::Target::get(family);
     t->family = family;
     t->id = QStringLiteral("test");
-    t->defaultTimerBaseMs = 100;
+    t->defaultTimerBaseMs = real.defaultTimerBaseMs;
+    t->constants = real.constants;
+    t->semantics = real.semantics;
+    t->limits.timerMax = real.limits.timerMax;
     t->limits.stackDepth = 8;
     t->areas = {area("X", AreaKind::Bit, 0, 31, false, true),
                 area("Y", AreaKind::Bit, 0, 31, true, true),
