@@ -1,5 +1,7 @@
 #include "cross_reference_view.h"
 
+#include <QEvent>
+
 #include "model/target/address.h"
 
 #include <QHeaderView>
@@ -42,17 +44,28 @@ Use useOf(model::Op op) {
 
 } // namespace
 
+void CrossReferenceView::retranslate() {
+    m_filter->setPlaceholderText(tr("Device or prefix (X0, X); empty: every device"));
+    m_tree->setHeaderLabels({tr("Device / rung"), tr("Step"), tr("Use"), tr("Instruction")});
+}
+
+void CrossReferenceView::changeEvent(QEvent *event) {
+    // The rows follow the program's change that a new language brings (Document::recheck).
+    if (event->type() == QEvent::LanguageChange)
+        retranslate();
+    QWidget::changeEvent(event);
+}
+
 CrossReferenceView::CrossReferenceView(Document *document, QWidget *parent)
     : QWidget(parent)
     , m_document(document) {
     auto *layout = new QVBoxLayout(this);
     m_filter = new QLineEdit(this);
     m_filter->setObjectName(QStringLiteral("crossReferenceFilter"));
-    m_filter->setPlaceholderText(tr("Device or prefix (X0, X); empty: every device"));
     m_filter->setClearButtonEnabled(true);
     m_tree = new QTreeWidget(this);
     m_tree->setObjectName(QStringLiteral("crossReferenceTree"));
-    m_tree->setHeaderLabels({tr("Device / rung"), tr("Step"), tr("Use"), tr("Instruction")});
+    retranslate();
     m_tree->setUniformRowHeights(true);
     m_tree->setAlternatingRowColors(true);
     m_tree->header()->setStretchLastSection(true);

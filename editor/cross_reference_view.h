@@ -32,7 +32,11 @@ public:
 signals:
     void rungActivated(int rung);
 
+protected:
+    void changeEvent(QEvent *event) override; // LanguageChange: the headers and the hint
+
 private:
+    void retranslate();
     Document *m_document;
     QLineEdit *m_filter;
     QTreeWidget *m_tree;

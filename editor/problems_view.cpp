@@ -1,6 +1,7 @@
 #include "problems_view.h"
 
 #include <QContextMenuEvent>
+#include <QEvent>
 #include <QHeaderView>
 #include <QMenu>
 #include <QPainter>
@@ -13,16 +14,27 @@ namespace rung::editor {
 ProblemsView::ProblemsView(QWidget *parent)
     : QTreeWidget(parent) {
     setColumnCount(4);
-    setHeaderLabels({tr("Severity"), tr("Code"), tr("Place"), tr("Message")});
+    retranslate();
     setRootIsDecorated(false);
     setUniformRowHeights(true);
     setAlternatingRowColors(true);
     header()->setStretchLastSection(true);
-    setAccessibleName(tr("Problems"));
     connect(this, &QTreeWidget::itemActivated, this, [this](QTreeWidgetItem *item) {
         if (const model::Diagnostic *d = diagnosticAt(indexOfTopLevelItem(item)))
             emit locate(*d);
     });
+}
+
+void ProblemsView::retranslate() {
+    setHeaderLabels({tr("Severity"), tr("Code"), tr("Place"), tr("Message")});
+    setAccessibleName(tr("Problems"));
+}
+
+void ProblemsView::changeEvent(QEvent *event) {
+    // The rows come again from whoever found them (in the new language); the headers are ours.
+    if (event->type() == QEvent::LanguageChange)
+        retranslate();
+    QTreeWidget::changeEvent(event);
 }
 
 void ProblemsView::setDiagnostics(const std::vector<model::Diagnostic> &diagnostics) {

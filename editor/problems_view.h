@@ -26,10 +26,12 @@ signals:
     void applyFix(const rung::model::Diagnostic &diagnostic);
 
 protected:
+    void changeEvent(QEvent *event) override;
     void contextMenuEvent(QContextMenuEvent *event) override;
     void paintEvent(QPaintEvent *event) override;
 
 private:
+    void retranslate();
     std::vector<model::Diagnostic> m_diagnostics;
 };
 

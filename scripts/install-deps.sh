@@ -6,6 +6,7 @@ packages=(
     build-essential cmake ninja-build pkg-config clang
     qt6-base-dev qt6-tools-dev qt6-tools-dev-tools qt6-l10n-tools qt6-svg-dev libgl-dev
     libqscintilla2-qt6-dev libserialport-dev
+    qt6-translations-l10n
     libgtest-dev libbenchmark-dev
     xvfb xauth poppler-utils
 )

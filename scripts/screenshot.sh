@@ -1,7 +1,9 @@
 #!/usr/bin/env bash
 # Starts the IDE under Xvfb on a project (default: the Vigor traffic light) and saves a
-# picture of the window: bash scripts/screenshot.sh [FILE] [OUT.png] [tabs|side]
-# (side: ladder and instruction list side by side, the README's picture).
+# picture of the window: bash scripts/screenshot.sh [FILE] [OUT.png] [tabs|side] [en|hu|it]
+# [new|save|open] (side: ladder and instruction list side by side, the README's picture; the
+# language of the interface; a dialog pictured over the window: the whole screen is saved).
+# RUNG_SCREEN=1366x768 sets the screen's size (default 1600x1000).
 set -euo pipefail
 cd "$(dirname "$0")/.."
 file="${1:-resources/examples/vigor/traffic-light.rung}"
@@ -13,9 +15,14 @@ if [ ! -x "$build/app/rungstudio" ]; then
 fi
 # A throw-away settings directory: the picture shows the defaults a new user sees.
 export XDG_CONFIG_HOME="$(mktemp -d)" XDG_DATA_HOME="$(mktemp -d)"
+mkdir -p "$XDG_CONFIG_HOME/RungStudio"
+conf="$XDG_CONFIG_HOME/RungStudio/Rung Studio.conf"
 if [ "${3:-tabs}" = side ]; then
-    mkdir -p "$XDG_CONFIG_HOME/RungStudio"
-    printf '[view]\nsideBySide=true\n' >"$XDG_CONFIG_HOME/RungStudio/Rung Studio.conf"
+    printf '[view]\nsideBySide=true\n' >>"$conf"
 fi
-xvfb-run -a -s "-screen 0 1600x1000x24" "$build/app/rungstudio" "$file" --screenshot "$out"
+if [ -n "${4:-}" ]; then
+    printf '[ui]\nlanguage=%s\n' "$4" >>"$conf"
+fi
+export RUNG_SCREENSHOT_DIALOG="${5:-}"
+xvfb-run -a -s "-screen 0 ${RUNG_SCREEN:-1600x1000}x24" "$build/app/rungstudio" "$file" --screenshot "$out"
 echo "Saved $out"

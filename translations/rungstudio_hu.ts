@@ -48,16 +48,18 @@
   rungstudio-cli convert FILE [--target T] [--from il|ladder|project] --to il|ladder|project [-o OUT]
   rungstudio-cli simulate FILE [--target T] --scans N [--period MS] [--set DEV=VALUE@SCAN]... --trace DEV[,DEV...]
 FILE is a listing (.il), a ladder text (.ladder) or a project (.rung).
+--lang en|hu|it: the language of the messages (else the locale&apos;s, LANG).
 Exit status: 0 no error, 1 the program has errors, 2 usage or I/O error.</source>
         <translation>használat:
   rungstudio-cli check FILE [--target vpc|vigor|cpm1|pl110] [--model M]
   rungstudio-cli convert FILE [--target T] [--from il|ladder|project] --to il|ladder|project [-o OUT]
   rungstudio-cli simulate FILE [--target T] --scans N [--period MS] [--set DEV=VALUE@SCAN]... --trace DEV[,DEV...]
 A FILE utasításlista (.il), létra-szöveg (.ladder) vagy projekt (.rung).
+--lang en|hu|it: az üzenetek nyelve (különben a területi beállításé, LANG).
 Kilépési kód: 0 nincs hiba, 1 a programban hiba van, 2 használati vagy I/O hiba.</translation>
     </message>
     <message>
-        <location line="+17"/>
+        <location line="+18"/>
         <location line="+32"/>
         <source>unexpected argument %1</source>
         <translation>váratlan argumentum: %1</translation>
@@ -148,6 +150,11 @@ Kilépési kód: 0 nincs hiba, 1 a programban hiba van, 2 használati vagy I/O h
         <source>note</source>
         <translation>megjegyzés</translation>
     </message>
+    <message>
+        <location filename="../app/cli/cli_language.cpp" line="+29"/>
+        <source>--lang must be en, hu or it</source>
+        <translation>--lang értéke en, hu vagy it lehet</translation>
+    </message>
 </context>
 <context>
     <name>rung::app::Gui</name>
@@ -182,7 +189,7 @@ Kilépési kód: 0 nincs hiba, 1 a programban hiba van, 2 használati vagy I/O h
         <translation>Ismeretlen célrendszer: %1; használható: vpc, vigor, cpm1 vagy pl110</translation>
     </message>
     <message>
-        <location filename="../app/gui/application.cpp" line="+48"/>
+        <location filename="../app/gui/application.cpp" line="+35"/>
         <source>Rung Studio</source>
         <translation>Rung Studio</translation>
     </message>
@@ -190,42 +197,30 @@ Kilépési kód: 0 nincs hiba, 1 a programban hiba van, 2 használati vagy I/O h
 <context>
     <name>rung::app::MainWindow</name>
     <message>
-        <location filename="../app/gui/main_window.cpp" line="+138"/>
+        <location filename="../app/gui/main_window.cpp" line="+153"/>
         <source>Problems</source>
         <translation>Problémák</translation>
     </message>
     <message>
         <location line="+5"/>
+        <location line="+249"/>
         <source>Project</source>
         <translation>Projekt</translation>
     </message>
     <message>
-        <location line="+7"/>
+        <location line="-242"/>
+        <location line="+245"/>
         <source>Symbols</source>
         <translation>Szimbólumok</translation>
     </message>
     <message>
-        <location line="+3"/>
-        <source>Device</source>
-        <translation>Operandus</translation>
-    </message>
-    <message>
-        <location line="+0"/>
-        <source>Name</source>
-        <translation>Név</translation>
-    </message>
-    <message>
-        <location line="+0"/>
-        <source>Comment</source>
-        <translation>Megjegyzés</translation>
-    </message>
-    <message>
-        <location line="+7"/>
+        <location line="-241"/>
+        <location line="+242"/>
         <source>Watch lists</source>
         <translation>Figyelőlisták</translation>
     </message>
     <message>
-        <location filename="../app/gui/main_window_actions.cpp" line="+38"/>
+        <location filename="../app/gui/main_window_actions.cpp" line="+44"/>
         <source>&amp;File</source>
         <translation>&amp;Fájl</translation>
     </message>
@@ -235,7 +230,7 @@ Kilépési kód: 0 nincs hiba, 1 a programban hiba van, 2 használati vagy I/O h
         <translation>Fő</translation>
     </message>
     <message>
-        <location line="+5"/>
+        <location line="+13"/>
         <source>&amp;New Project...</source>
         <translation>Ú&amp;j projekt...</translation>
     </message>
@@ -395,7 +390,7 @@ Kilépési kód: 0 nincs hiba, 1 a programban hiba van, 2 használati vagy I/O h
         <translation>S&amp;or törlése</translation>
     </message>
     <message>
-        <location line="+87"/>
+        <location line="+80"/>
         <source>&amp;Undo</source>
         <translation>&amp;Visszavonás</translation>
     </message>
@@ -405,7 +400,7 @@ Kilépési kód: 0 nincs hiba, 1 a programban hiba van, 2 használati vagy I/O h
         <translation>&amp;Mégis</translation>
     </message>
     <message>
-        <location line="-163"/>
+        <location line="-156"/>
         <source>Select</source>
         <translation>Kijelölés</translation>
     </message>
@@ -466,7 +461,7 @@ Kilépési kód: 0 nincs hiba, 1 a programban hiba van, 2 használati vagy I/O h
     </message>
     <message>
         <location line="+1"/>
-        <location filename="../app/gui/main_window_tools.cpp" line="+235"/>
+        <location filename="../app/gui/main_window_tools.cpp" line="+210"/>
         <source>CSV files (*.csv)</source>
         <translation>CSV-fájlok (*.csv)</translation>
     </message>
@@ -526,17 +521,7 @@ Kilépési kód: 0 nincs hiba, 1 a programban hiba van, 2 használati vagy I/O h
         <translation>N&amp;yelv</translation>
     </message>
     <message>
-        <location line="+15"/>
-        <source>Language</source>
-        <translation>Nyelv</translation>
-    </message>
-    <message>
-        <location line="+1"/>
-        <source>The new language applies when Rung Studio starts again.</source>
-        <translation>Az új nyelv a Rung Studio következő indításakor lép életbe.</translation>
-    </message>
-    <message>
-        <location line="+7"/>
+        <location line="+16"/>
         <source>&amp;Help</source>
         <translation>Sú&amp;gó</translation>
     </message>
@@ -587,7 +572,7 @@ Ladder and instruction-list editor for VPC, Vigor, CPM1 and PL110.</source>
 Létradiagram- és utasításlista-szerkesztő VPC, Vigor, CPM1 és PL110 PLC-khez.</translation>
     </message>
     <message>
-        <location filename="../app/gui/main_window.cpp" line="+18"/>
+        <location filename="../app/gui/main_window.cpp" line="-225"/>
         <source>Rung Comment</source>
         <translation>Létrafok megjegyzése</translation>
     </message>
@@ -598,33 +583,34 @@ Létradiagram- és utasításlista-szerkesztő VPC, Vigor, CPM1 és PL110 PLC-kh
     </message>
     <message>
         <location line="+22"/>
+        <location line="+205"/>
         <source>Ladder</source>
         <translation>Létradiagram</translation>
     </message>
     <message>
-        <location line="+1"/>
+        <location line="-204"/>
+        <location line="+205"/>
         <source>Instruction List</source>
         <translation>Utasításlista</translation>
     </message>
     <message>
-        <location line="+9"/>
+        <location line="-196"/>
         <source>The list as typed had errors and now shows the ladder&apos;s program; Ctrl+Z in the list brings it back</source>
         <translation>A begépelt lista hibás volt, most a létradiagram programját mutatja; a listában a Ctrl+Z visszahozza</translation>
     </message>
     <message>
-        <location line="+115"/>
+        <location line="+58"/>
         <source>&lt;b&gt;%1&lt;/b&gt;&lt;br&gt;Target: %2, model %3&lt;br&gt;%4, %5</source>
         <translation>&lt;b&gt;%1&lt;/b&gt;&lt;br&gt;PLC-család: %2, modell: %3&lt;br&gt;%4, %5</translation>
     </message>
     <message>
         <location line="+1"/>
-        <location line="+54"/>
-        <location filename="../app/gui/main_window_files.cpp" line="+486"/>
+        <location line="+53"/>
         <source>Untitled</source>
         <translation>Névtelen</translation>
     </message>
     <message numerus="yes">
-        <location line="-52"/>
+        <location line="-51"/>
         <source>%n rung(s)</source>
         <translation>
             <numerusform>%n létrafok</numerusform>
@@ -638,7 +624,7 @@ Létradiagram- és utasításlista-szerkesztő VPC, Vigor, CPM1 és PL110 PLC-kh
         </translation>
     </message>
     <message>
-        <location line="+19"/>
+        <location line="+18"/>
         <source>The instruction list has %1: line %2: %3. The ladder shows the last valid program.</source>
         <translation>Az utasításlistában %1 van: %2. sor: %3. A létradiagram az utolsó érvényes programot mutatja.</translation>
     </message>
@@ -654,7 +640,6 @@ Létradiagram- és utasításlista-szerkesztő VPC, Vigor, CPM1 és PL110 PLC-kh
     </message>
     <message>
         <location line="+13"/>
-        <location filename="../app/gui/main_window_files.cpp" line="+2"/>
         <source>%1 %2</source>
         <translation>%1 %2</translation>
     </message>
@@ -685,12 +670,12 @@ Létradiagram- és utasításlista-szerkesztő VPC, Vigor, CPM1 és PL110 PLC-kh
         <translation>&amp;Visszavonás: %1</translation>
     </message>
     <message>
-        <location filename="../app/gui/main_window_files.cpp" line="-284"/>
+        <location filename="../app/gui/main_window_files.cpp" line="+74"/>
         <source>Recover</source>
         <translation>Helyreállítás</translation>
     </message>
     <message>
-        <location line="-6"/>
+        <location line="-5"/>
         <source>Rung Studio was not closed properly last time. Recover the unsaved program?</source>
         <translation>A Rung Studio legutóbb nem záródott be szabályosan. Helyreállítja a nem mentett programot?</translation>
     </message>
@@ -700,7 +685,7 @@ Létradiagram- és utasításlista-szerkesztő VPC, Vigor, CPM1 és PL110 PLC-kh
         <translation>A Rung Studio legutóbb nem záródott be szabályosan. Helyreállítja a(z) %1 nem mentett módosításait?</translation>
     </message>
     <message>
-        <location line="+48"/>
+        <location line="+49"/>
         <source>Cannot open the file</source>
         <translation>A fájl nem nyitható meg</translation>
     </message>
@@ -711,40 +696,36 @@ Létradiagram- és utasításlista-szerkesztő VPC, Vigor, CPM1 és PL110 PLC-kh
     </message>
     <message>
         <location line="-11"/>
-        <location line="+139"/>
-        <location filename="../app/gui/main_window_tools.cpp" line="+12"/>
-        <location line="+11"/>
         <source>%1: %2</source>
         <translation>%1: %2</translation>
     </message>
     <message>
-        <location line="-137"/>
-        <location filename="../app/gui/main_window_tools.cpp" line="+3"/>
+        <location line="+2"/>
         <source>%1 is larger than 64 MB</source>
         <translation>%1 nagyobb 64 MB-nál</translation>
     </message>
     <message>
-        <location filename="../app/gui/main_window_tools.cpp" line="+8"/>
-        <source>%1, line %2: %3</source>
-        <translation>%1, %2. sor: %3</translation>
-    </message>
-    <message>
-        <location filename="../app/gui/main_window_files.cpp" line="+19"/>
+        <location line="+19"/>
         <source>%1 has errors; the ladder follows once they are fixed</source>
         <translation>%1 hibás; a létradiagram a hibák javítása után követi</translation>
     </message>
     <message>
-        <location line="+18"/>
+        <location line="+21"/>
         <source>Cannot save</source>
         <translation>A mentés nem sikerült</translation>
     </message>
     <message>
-        <location line="+8"/>
+        <location line="+11"/>
         <source>Saved %1</source>
         <translation>Mentve: %1</translation>
     </message>
     <message>
-        <location line="+8"/>
+        <location line="+3"/>
+        <source>Saved %1 with the instruction list as typed; it has errors, so the ladder holds the last valid program until they are fixed</source>
+        <translation>Mentve: %1, az utasításlistával úgy, ahogy begépelte; hibás, ezért a létradiagram az utolsó érvényes programot mutatja, amíg a hibákat ki nem javítja</translation>
+    </message>
+    <message>
+        <location line="+13"/>
         <source>Unsaved changes</source>
         <translation>Nem mentett változások</translation>
     </message>
@@ -779,7 +760,17 @@ Létradiagram- és utasításlista-szerkesztő VPC, Vigor, CPM1 és PL110 PLC-kh
         <translation>Rung Studio projektek (*.rung);;Utasításlisták (*.il *.txt)</translation>
     </message>
     <message>
-        <location line="+12"/>
+        <location line="+19"/>
+        <source>Replace File</source>
+        <translation>Fájl cseréje</translation>
+    </message>
+    <message>
+        <location line="+1"/>
+        <source>%1 already exists. Replace it?</source>
+        <translation>%1 már létezik. Lecseréli?</translation>
+    </message>
+    <message>
+        <location line="+18"/>
         <source>Save As</source>
         <translation>Mentés másként</translation>
     </message>
@@ -789,7 +780,7 @@ Létradiagram- és utasításlista-szerkesztő VPC, Vigor, CPM1 és PL110 PLC-kh
         <translation>Rung Studio projektek (*.rung)</translation>
     </message>
     <message>
-        <location line="+12"/>
+        <location line="+11"/>
         <source>Import Instruction List</source>
         <translation>Utasításlista importálása</translation>
     </message>
@@ -809,39 +800,24 @@ Létradiagram- és utasításlista-szerkesztő VPC, Vigor, CPM1 és PL110 PLC-kh
         <translation>Utasításlisták (*.il *.txt)</translation>
     </message>
     <message>
-        <location line="+6"/>
-        <location line="+14"/>
-        <location filename="../app/gui/main_window_tools.cpp" line="-31"/>
+        <location line="+7"/>
+        <location line="+10"/>
+        <location filename="../app/gui/main_window_tools.cpp" line="+3"/>
         <source>Cannot export</source>
         <translation>Az exportálás nem sikerült</translation>
     </message>
     <message>
-        <location line="-9"/>
+        <location line="-5"/>
         <source>Export Ladder</source>
         <translation>Létradiagram exportálása</translation>
     </message>
     <message>
-        <location line="+19"/>
-        <source>%1 could not be written</source>
-        <translation>%1 nem írható</translation>
-    </message>
-    <message>
-        <location line="+37"/>
-        <source>%1: the ladder can be exported as PDF, SVG or PNG</source>
-        <translation>%1: a létradiagram PDF, SVG vagy PNG formátumba exportálható</translation>
-    </message>
-    <message>
-        <location line="+39"/>
-        <source>%1    page %2 of %3</source>
-        <translation>%1    %2. oldal / %3</translation>
-    </message>
-    <message>
-        <location line="+70"/>
+        <location line="+65"/>
         <source>Cannot open the example</source>
         <translation>A példa nem nyitható meg</translation>
     </message>
     <message>
-        <location filename="../app/gui/main_window_tools.cpp" line="-167"/>
+        <location filename="../app/gui/main_window_tools.cpp" line="-147"/>
         <source>Cut rungs</source>
         <translation>Létrafokok kivágása</translation>
     </message>
@@ -888,7 +864,7 @@ Létradiagram- és utasításlista-szerkesztő VPC, Vigor, CPM1 és PL110 PLC-kh
         <translation>Operandus:</translation>
     </message>
     <message>
-        <location line="+28"/>
+        <location line="+27"/>
         <location line="+3"/>
         <location line="+7"/>
         <source>Replace Device</source>
@@ -912,19 +888,70 @@ Létradiagram- és utasításlista-szerkesztő VPC, Vigor, CPM1 és PL110 PLC-kh
         </translation>
     </message>
     <message>
-        <location line="+39"/>
+        <location line="+20"/>
         <source>Replace %1 with %2</source>
         <translation>%1 cseréje erre: %2</translation>
     </message>
     <message>
-        <location line="+6"/>
+        <location filename="../app/gui/main_window.cpp" line="+85"/>
+        <location filename="../app/gui/main_window_tools.cpp" line="+6"/>
         <source>Cross Reference</source>
         <translation>Kereszthivatkozás</translation>
     </message>
     <message>
-        <location line="+18"/>
+        <location filename="../app/gui/main_window_tools.cpp" line="+19"/>
         <source>Export Symbols</source>
         <translation>Szimbólumok exportálása</translation>
+    </message>
+</context>
+<context>
+    <name>rung::app::ProgramExport</name>
+    <message>
+        <location filename="../app/gui/ladder_export.cpp" line="+80"/>
+        <source>%1 could not be written</source>
+        <translation>%1 nem írható</translation>
+    </message>
+    <message>
+        <location line="+37"/>
+        <source>%1: the ladder can be exported as PDF, SVG or PNG</source>
+        <translation>%1: a létradiagram PDF, SVG vagy PNG formátumba exportálható</translation>
+    </message>
+    <message>
+        <location line="+21"/>
+        <source>Untitled</source>
+        <translation>Névtelen</translation>
+    </message>
+    <message>
+        <location line="+2"/>
+        <source>%1 %2</source>
+        <translation>%1 %2</translation>
+    </message>
+    <message>
+        <location line="+16"/>
+        <source>%1    page %2 of %3</source>
+        <translation>%1    %2. oldal / %3</translation>
+    </message>
+    <message>
+        <location line="+20"/>
+        <source>Instruction list, line %1: %2</source>
+        <translation>Utasításlista, %1. sor: %2</translation>
+    </message>
+    <message>
+        <location line="+3"/>
+        <source>Rung %1: %2</source>
+        <translation>%1. létrafok: %2</translation>
+    </message>
+    <message>
+        <location line="+4"/>
+        <source>Nothing was written: the program has errors.
+%1</source>
+        <translation>Semmi sem íródott ki: a program hibás.
+%1</translation>
+    </message>
+    <message>
+        <location line="+7"/>
+        <source>%1: %2</source>
+        <translation>%1: %2</translation>
     </message>
 </context>
 <context>
@@ -973,14 +1000,48 @@ Létradiagram- és utasításlista-szerkesztő VPC, Vigor, CPM1 és PL110 PLC-kh
     </message>
 </context>
 <context>
+    <name>rung::app::SymbolTable</name>
+    <message>
+        <location filename="../app/gui/symbol_table.cpp" line="+37"/>
+        <source>Device</source>
+        <translation>Operandus</translation>
+    </message>
+    <message>
+        <location line="+0"/>
+        <source>Name</source>
+        <translation>Név</translation>
+    </message>
+    <message>
+        <location line="+0"/>
+        <source>Comment</source>
+        <translation>Megjegyzés</translation>
+    </message>
+    <message>
+        <location line="+79"/>
+        <location line="+11"/>
+        <source>%1: %2</source>
+        <translation>%1: %2</translation>
+    </message>
+    <message>
+        <location line="+3"/>
+        <source>%1 is larger than 64 MB</source>
+        <translation>%1 nagyobb 64 MB-nál</translation>
+    </message>
+    <message>
+        <location line="+8"/>
+        <source>%1, line %2: %3</source>
+        <translation>%1, %2. sor: %3</translation>
+    </message>
+</context>
+<context>
     <name>rung::editor::CrossReferenceView</name>
     <message>
-        <location filename="../editor/cross_reference_view.cpp" line="+51"/>
+        <location filename="../editor/cross_reference_view.cpp" line="+48"/>
         <source>Device or prefix (X0, X); empty: every device</source>
         <translation>Operandus vagy előtag (X0, X); üresen: minden operandus</translation>
     </message>
     <message>
-        <location line="+4"/>
+        <location line="+1"/>
         <source>Device / rung</source>
         <translation>Operandus / létrafok</translation>
     </message>
@@ -1000,7 +1061,7 @@ Létradiagram- és utasításlista-szerkesztő VPC, Vigor, CPM1 és PL110 PLC-kh
         <translation>Utasítás</translation>
     </message>
     <message>
-        <location line="+59"/>
+        <location line="+78"/>
         <source>contact</source>
         <translation>érintkező</translation>
     </message>
@@ -1114,7 +1175,7 @@ Létradiagram- és utasításlista-szerkesztő VPC, Vigor, CPM1 és PL110 PLC-kh
         <translation>Létrafok megjegyzésének szerkesztése</translation>
     </message>
     <message>
-        <location line="+160"/>
+        <location line="+167"/>
         <source>Type one instruction, for example &quot;%1 X0&quot;</source>
         <translation>Egy utasítást írjon be, például: &quot;%1 X0&quot;</translation>
     </message>
@@ -1214,7 +1275,7 @@ Létradiagram- és utasításlista-szerkesztő VPC, Vigor, CPM1 és PL110 PLC-kh
 <context>
     <name>rung::editor::ProblemsView</name>
     <message>
-        <location filename="../editor/problems_view.cpp" line="+16"/>
+        <location filename="../editor/problems_view.cpp" line="+29"/>
         <source>Severity</source>
         <translation>Súlyosság</translation>
     </message>
@@ -1234,8 +1295,8 @@ Létradiagram- és utasításlista-szerkesztő VPC, Vigor, CPM1 és PL110 PLC-kh
         <translation>Üzenet</translation>
     </message>
     <message>
-        <location line="+5"/>
-        <location line="+58"/>
+        <location line="+1"/>
+        <location line="+61"/>
         <source>Problems</source>
         <translation>Problémák</translation>
     </message>
@@ -2010,7 +2071,7 @@ Létradiagram- és utasításlista-szerkesztő VPC, Vigor, CPM1 és PL110 PLC-kh
         <translation>A &quot;schema&quot; pozitív szám kell legyen</translation>
     </message>
     <message>
-        <location line="+12"/>
+        <location line="+13"/>
         <source>&quot;target&quot;: unknown PLC family &quot;%1&quot;</source>
         <translation>&quot;target&quot;: ismeretlen PLC-család: &quot;%1&quot;</translation>
     </message>
@@ -2040,7 +2101,7 @@ Létradiagram- és utasításlista-szerkesztő VPC, Vigor, CPM1 és PL110 PLC-kh
         <translation>%1.devices[%2]: operandusnév a várt</translation>
     </message>
     <message>
-        <location line="+18"/>
+        <location line="+19"/>
         <source>a string</source>
         <translation>karakterlánc</translation>
     </message>
@@ -2130,7 +2191,7 @@ Létradiagram- és utasításlista-szerkesztő VPC, Vigor, CPM1 és PL110 PLC-kh
         <translation>egyetlen utasítás a várt</translation>
     </message>
     <message>
-        <location line="+93"/>
+        <location line="+95"/>
         <source>%1: cannot open the file (%2)</source>
         <translation>%1: a fájl nem nyitható meg (%2)</translation>
     </message>

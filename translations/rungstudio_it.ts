@@ -48,16 +48,18 @@
   rungstudio-cli convert FILE [--target T] [--from il|ladder|project] --to il|ladder|project [-o OUT]
   rungstudio-cli simulate FILE [--target T] --scans N [--period MS] [--set DEV=VALUE@SCAN]... --trace DEV[,DEV...]
 FILE is a listing (.il), a ladder text (.ladder) or a project (.rung).
+--lang en|hu|it: the language of the messages (else the locale&apos;s, LANG).
 Exit status: 0 no error, 1 the program has errors, 2 usage or I/O error.</source>
         <translation>uso:
   rungstudio-cli check FILE [--target vpc|vigor|cpm1|pl110] [--model M]
   rungstudio-cli convert FILE [--target T] [--from il|ladder|project] --to il|ladder|project [-o OUT]
   rungstudio-cli simulate FILE [--target T] --scans N [--period MS] [--set DEV=VALUE@SCAN]... --trace DEV[,DEV...]
 FILE è una lista istruzioni (.il), un testo ladder (.ladder) o un progetto (.rung).
+--lang en|hu|it: la lingua dei messaggi (altrimenti quella della localizzazione, LANG).
 Codice di uscita: 0 nessun errore, 1 il programma contiene errori, 2 errore di utilizzo o di I/O.</translation>
     </message>
     <message>
-        <location line="+17"/>
+        <location line="+18"/>
         <location line="+32"/>
         <source>unexpected argument %1</source>
         <translation>argomento non previsto: %1</translation>
@@ -148,6 +150,11 @@ Codice di uscita: 0 nessun errore, 1 il programma contiene errori, 2 errore di u
         <source>note</source>
         <translation>nota</translation>
     </message>
+    <message>
+        <location filename="../app/cli/cli_language.cpp" line="+29"/>
+        <source>--lang must be en, hu or it</source>
+        <translation>--lang deve essere en, hu o it</translation>
+    </message>
 </context>
 <context>
     <name>rung::app::Gui</name>
@@ -182,7 +189,7 @@ Codice di uscita: 0 nessun errore, 1 il programma contiene errori, 2 errore di u
         <translation>Famiglia PLC sconosciuta: %1; usare vpc, vigor, cpm1 o pl110</translation>
     </message>
     <message>
-        <location filename="../app/gui/application.cpp" line="+48"/>
+        <location filename="../app/gui/application.cpp" line="+35"/>
         <source>Rung Studio</source>
         <translation>Rung Studio</translation>
     </message>
@@ -190,42 +197,30 @@ Codice di uscita: 0 nessun errore, 1 il programma contiene errori, 2 errore di u
 <context>
     <name>rung::app::MainWindow</name>
     <message>
-        <location filename="../app/gui/main_window.cpp" line="+138"/>
+        <location filename="../app/gui/main_window.cpp" line="+153"/>
         <source>Problems</source>
         <translation>Problemi</translation>
     </message>
     <message>
         <location line="+5"/>
+        <location line="+249"/>
         <source>Project</source>
         <translation>Progetto</translation>
     </message>
     <message>
-        <location line="+7"/>
+        <location line="-242"/>
+        <location line="+245"/>
         <source>Symbols</source>
         <translation>Simboli</translation>
     </message>
     <message>
-        <location line="+3"/>
-        <source>Device</source>
-        <translation>Operando</translation>
-    </message>
-    <message>
-        <location line="+0"/>
-        <source>Name</source>
-        <translation>Nome</translation>
-    </message>
-    <message>
-        <location line="+0"/>
-        <source>Comment</source>
-        <translation>Commento</translation>
-    </message>
-    <message>
-        <location line="+7"/>
+        <location line="-241"/>
+        <location line="+242"/>
         <source>Watch lists</source>
         <translation>Liste di osservazione</translation>
     </message>
     <message>
-        <location filename="../app/gui/main_window_actions.cpp" line="+38"/>
+        <location filename="../app/gui/main_window_actions.cpp" line="+44"/>
         <source>&amp;File</source>
         <translation>&amp;File</translation>
     </message>
@@ -235,7 +230,7 @@ Codice di uscita: 0 nessun errore, 1 il programma contiene errori, 2 errore di u
         <translation>Principale</translation>
     </message>
     <message>
-        <location line="+5"/>
+        <location line="+13"/>
         <source>&amp;New Project...</source>
         <translation>&amp;Nuovo progetto...</translation>
     </message>
@@ -395,7 +390,7 @@ Codice di uscita: 0 nessun errore, 1 il programma contiene errori, 2 errore di u
         <translation>E&amp;limina riga</translation>
     </message>
     <message>
-        <location line="+87"/>
+        <location line="+80"/>
         <source>&amp;Undo</source>
         <translation>&amp;Annulla</translation>
     </message>
@@ -405,7 +400,7 @@ Codice di uscita: 0 nessun errore, 1 il programma contiene errori, 2 errore di u
         <translation>&amp;Ripeti</translation>
     </message>
     <message>
-        <location line="-163"/>
+        <location line="-156"/>
         <source>Select</source>
         <translation>Seleziona</translation>
     </message>
@@ -466,7 +461,7 @@ Codice di uscita: 0 nessun errore, 1 il programma contiene errori, 2 errore di u
     </message>
     <message>
         <location line="+1"/>
-        <location filename="../app/gui/main_window_tools.cpp" line="+235"/>
+        <location filename="../app/gui/main_window_tools.cpp" line="+210"/>
         <source>CSV files (*.csv)</source>
         <translation>File CSV (*.csv)</translation>
     </message>
@@ -526,17 +521,7 @@ Codice di uscita: 0 nessun errore, 1 il programma contiene errori, 2 errore di u
         <translation>&amp;Lingua</translation>
     </message>
     <message>
-        <location line="+15"/>
-        <source>Language</source>
-        <translation>Lingua</translation>
-    </message>
-    <message>
-        <location line="+1"/>
-        <source>The new language applies when Rung Studio starts again.</source>
-        <translation>La nuova lingua verrà applicata al prossimo avvio di Rung Studio.</translation>
-    </message>
-    <message>
-        <location line="+7"/>
+        <location line="+16"/>
         <source>&amp;Help</source>
         <translation>&amp;Aiuto</translation>
     </message>
@@ -587,7 +572,7 @@ Ladder and instruction-list editor for VPC, Vigor, CPM1 and PL110.</source>
 Editor di schemi ladder e liste istruzioni per VPC, Vigor, CPM1 e PL110.</translation>
     </message>
     <message>
-        <location filename="../app/gui/main_window.cpp" line="+18"/>
+        <location filename="../app/gui/main_window.cpp" line="-225"/>
         <source>Rung Comment</source>
         <translation>Commento del segmento</translation>
     </message>
@@ -598,33 +583,34 @@ Editor di schemi ladder e liste istruzioni per VPC, Vigor, CPM1 e PL110.</transl
     </message>
     <message>
         <location line="+22"/>
+        <location line="+205"/>
         <source>Ladder</source>
         <translation>Ladder</translation>
     </message>
     <message>
-        <location line="+1"/>
+        <location line="-204"/>
+        <location line="+205"/>
         <source>Instruction List</source>
         <translation>Lista istruzioni</translation>
     </message>
     <message>
-        <location line="+9"/>
+        <location line="-196"/>
         <source>The list as typed had errors and now shows the ladder&apos;s program; Ctrl+Z in the list brings it back</source>
         <translation>La lista digitata conteneva errori e ora mostra il programma dello schema ladder; Ctrl+Z nella lista la ripristina</translation>
     </message>
     <message>
-        <location line="+115"/>
+        <location line="+58"/>
         <source>&lt;b&gt;%1&lt;/b&gt;&lt;br&gt;Target: %2, model %3&lt;br&gt;%4, %5</source>
         <translation>&lt;b&gt;%1&lt;/b&gt;&lt;br&gt;Famiglia PLC: %2, modello %3&lt;br&gt;%4, %5</translation>
     </message>
     <message>
         <location line="+1"/>
-        <location line="+54"/>
-        <location filename="../app/gui/main_window_files.cpp" line="+486"/>
+        <location line="+53"/>
         <source>Untitled</source>
         <translation>Senza titolo</translation>
     </message>
     <message numerus="yes">
-        <location line="-52"/>
+        <location line="-51"/>
         <source>%n rung(s)</source>
         <translation>
             <numerusform>%n segmento</numerusform>
@@ -640,7 +626,7 @@ Editor di schemi ladder e liste istruzioni per VPC, Vigor, CPM1 e PL110.</transl
         </translation>
     </message>
     <message>
-        <location line="+19"/>
+        <location line="+18"/>
         <source>The instruction list has %1: line %2: %3. The ladder shows the last valid program.</source>
         <translation>La lista istruzioni contiene %1: riga %2: %3. Lo schema ladder mostra l&apos;ultimo programma valido.</translation>
     </message>
@@ -656,7 +642,6 @@ Editor di schemi ladder e liste istruzioni per VPC, Vigor, CPM1 e PL110.</transl
     </message>
     <message>
         <location line="+13"/>
-        <location filename="../app/gui/main_window_files.cpp" line="+2"/>
         <source>%1 %2</source>
         <translation>%1 %2</translation>
     </message>
@@ -687,12 +672,12 @@ Editor di schemi ladder e liste istruzioni per VPC, Vigor, CPM1 e PL110.</transl
         <translation>&amp;Annulla %1</translation>
     </message>
     <message>
-        <location filename="../app/gui/main_window_files.cpp" line="-284"/>
+        <location filename="../app/gui/main_window_files.cpp" line="+74"/>
         <source>Recover</source>
         <translation>Ripristino</translation>
     </message>
     <message>
-        <location line="-6"/>
+        <location line="-5"/>
         <source>Rung Studio was not closed properly last time. Recover the unsaved program?</source>
         <translation>Rung Studio non è stato chiuso correttamente l&apos;ultima volta. Ripristinare il programma non salvato?</translation>
     </message>
@@ -702,7 +687,7 @@ Editor di schemi ladder e liste istruzioni per VPC, Vigor, CPM1 e PL110.</transl
         <translation>Rung Studio non è stato chiuso correttamente l&apos;ultima volta. Ripristinare le modifiche non salvate di %1?</translation>
     </message>
     <message>
-        <location line="+48"/>
+        <location line="+49"/>
         <source>Cannot open the file</source>
         <translation>Impossibile aprire il file</translation>
     </message>
@@ -713,40 +698,36 @@ Editor di schemi ladder e liste istruzioni per VPC, Vigor, CPM1 e PL110.</transl
     </message>
     <message>
         <location line="-11"/>
-        <location line="+139"/>
-        <location filename="../app/gui/main_window_tools.cpp" line="+12"/>
-        <location line="+11"/>
         <source>%1: %2</source>
         <translation>%1: %2</translation>
     </message>
     <message>
-        <location line="-137"/>
-        <location filename="../app/gui/main_window_tools.cpp" line="+3"/>
+        <location line="+2"/>
         <source>%1 is larger than 64 MB</source>
         <translation>%1 supera i 64 MB</translation>
     </message>
     <message>
-        <location filename="../app/gui/main_window_tools.cpp" line="+8"/>
-        <source>%1, line %2: %3</source>
-        <translation>%1, riga %2: %3</translation>
-    </message>
-    <message>
-        <location filename="../app/gui/main_window_files.cpp" line="+19"/>
+        <location line="+19"/>
         <source>%1 has errors; the ladder follows once they are fixed</source>
         <translation>%1 contiene errori; lo schema ladder si aggiorna quando sono corretti</translation>
     </message>
     <message>
-        <location line="+18"/>
+        <location line="+21"/>
         <source>Cannot save</source>
         <translation>Impossibile salvare</translation>
     </message>
     <message>
-        <location line="+8"/>
+        <location line="+11"/>
         <source>Saved %1</source>
         <translation>%1 salvato</translation>
     </message>
     <message>
-        <location line="+8"/>
+        <location line="+3"/>
+        <source>Saved %1 with the instruction list as typed; it has errors, so the ladder holds the last valid program until they are fixed</source>
+        <translation>%1 salvato con la lista istruzioni così come è stata scritta; contiene errori, quindi lo schema ladder mantiene l'ultimo programma valido finché non vengono corretti</translation>
+    </message>
+    <message>
+        <location line="+13"/>
         <source>Unsaved changes</source>
         <translation>Modifiche non salvate</translation>
     </message>
@@ -781,7 +762,17 @@ Editor di schemi ladder e liste istruzioni per VPC, Vigor, CPM1 e PL110.</transl
         <translation>Progetti Rung Studio (*.rung);;Liste istruzioni (*.il *.txt)</translation>
     </message>
     <message>
-        <location line="+12"/>
+        <location line="+19"/>
+        <source>Replace File</source>
+        <translation>Sostituisci file</translation>
+    </message>
+    <message>
+        <location line="+1"/>
+        <source>%1 already exists. Replace it?</source>
+        <translation>%1 esiste già. Sostituirlo?</translation>
+    </message>
+    <message>
+        <location line="+18"/>
         <source>Save As</source>
         <translation>Salva con nome</translation>
     </message>
@@ -791,7 +782,7 @@ Editor di schemi ladder e liste istruzioni per VPC, Vigor, CPM1 e PL110.</transl
         <translation>Progetti Rung Studio (*.rung)</translation>
     </message>
     <message>
-        <location line="+12"/>
+        <location line="+11"/>
         <source>Import Instruction List</source>
         <translation>Importa lista istruzioni</translation>
     </message>
@@ -811,39 +802,24 @@ Editor di schemi ladder e liste istruzioni per VPC, Vigor, CPM1 e PL110.</transl
         <translation>Liste istruzioni (*.il *.txt)</translation>
     </message>
     <message>
-        <location line="+6"/>
-        <location line="+14"/>
-        <location filename="../app/gui/main_window_tools.cpp" line="-31"/>
+        <location line="+7"/>
+        <location line="+10"/>
+        <location filename="../app/gui/main_window_tools.cpp" line="+3"/>
         <source>Cannot export</source>
         <translation>Impossibile esportare</translation>
     </message>
     <message>
-        <location line="-9"/>
+        <location line="-5"/>
         <source>Export Ladder</source>
         <translation>Esporta schema ladder</translation>
     </message>
     <message>
-        <location line="+19"/>
-        <source>%1 could not be written</source>
-        <translation>Impossibile scrivere %1</translation>
-    </message>
-    <message>
-        <location line="+37"/>
-        <source>%1: the ladder can be exported as PDF, SVG or PNG</source>
-        <translation>%1: lo schema ladder può essere esportato in PDF, SVG o PNG</translation>
-    </message>
-    <message>
-        <location line="+39"/>
-        <source>%1    page %2 of %3</source>
-        <translation>%1    pagina %2 di %3</translation>
-    </message>
-    <message>
-        <location line="+70"/>
+        <location line="+65"/>
         <source>Cannot open the example</source>
         <translation>Impossibile aprire l&apos;esempio</translation>
     </message>
     <message>
-        <location filename="../app/gui/main_window_tools.cpp" line="-167"/>
+        <location filename="../app/gui/main_window_tools.cpp" line="-147"/>
         <source>Cut rungs</source>
         <translation>Taglia segmenti</translation>
     </message>
@@ -891,7 +867,7 @@ Editor di schemi ladder e liste istruzioni per VPC, Vigor, CPM1 e PL110.</transl
         <translation>Operando:</translation>
     </message>
     <message>
-        <location line="+28"/>
+        <location line="+27"/>
         <location line="+3"/>
         <location line="+7"/>
         <source>Replace Device</source>
@@ -916,19 +892,70 @@ Editor di schemi ladder e liste istruzioni per VPC, Vigor, CPM1 e PL110.</transl
         </translation>
     </message>
     <message>
-        <location line="+39"/>
+        <location line="+20"/>
         <source>Replace %1 with %2</source>
         <translation>Sostituisci %1 con %2</translation>
     </message>
     <message>
-        <location line="+6"/>
+        <location filename="../app/gui/main_window.cpp" line="+85"/>
+        <location filename="../app/gui/main_window_tools.cpp" line="+6"/>
         <source>Cross Reference</source>
         <translation>Riferimenti incrociati</translation>
     </message>
     <message>
-        <location line="+18"/>
+        <location filename="../app/gui/main_window_tools.cpp" line="+19"/>
         <source>Export Symbols</source>
         <translation>Esporta simboli</translation>
+    </message>
+</context>
+<context>
+    <name>rung::app::ProgramExport</name>
+    <message>
+        <location filename="../app/gui/ladder_export.cpp" line="+80"/>
+        <source>%1 could not be written</source>
+        <translation>Impossibile scrivere %1</translation>
+    </message>
+    <message>
+        <location line="+37"/>
+        <source>%1: the ladder can be exported as PDF, SVG or PNG</source>
+        <translation>%1: lo schema ladder può essere esportato in PDF, SVG o PNG</translation>
+    </message>
+    <message>
+        <location line="+21"/>
+        <source>Untitled</source>
+        <translation>Senza titolo</translation>
+    </message>
+    <message>
+        <location line="+2"/>
+        <source>%1 %2</source>
+        <translation>%1 %2</translation>
+    </message>
+    <message>
+        <location line="+16"/>
+        <source>%1    page %2 of %3</source>
+        <translation>%1    pagina %2 di %3</translation>
+    </message>
+    <message>
+        <location line="+20"/>
+        <source>Instruction list, line %1: %2</source>
+        <translation>Lista istruzioni, riga %1: %2</translation>
+    </message>
+    <message>
+        <location line="+3"/>
+        <source>Rung %1: %2</source>
+        <translation>Segmento %1: %2</translation>
+    </message>
+    <message>
+        <location line="+4"/>
+        <source>Nothing was written: the program has errors.
+%1</source>
+        <translation>Non è stato scritto nulla: il programma contiene errori.
+%1</translation>
+    </message>
+    <message>
+        <location line="+7"/>
+        <source>%1: %2</source>
+        <translation>%1: %2</translation>
     </message>
 </context>
 <context>
@@ -977,14 +1004,48 @@ Editor di schemi ladder e liste istruzioni per VPC, Vigor, CPM1 e PL110.</transl
     </message>
 </context>
 <context>
+    <name>rung::app::SymbolTable</name>
+    <message>
+        <location filename="../app/gui/symbol_table.cpp" line="+37"/>
+        <source>Device</source>
+        <translation>Operando</translation>
+    </message>
+    <message>
+        <location line="+0"/>
+        <source>Name</source>
+        <translation>Nome</translation>
+    </message>
+    <message>
+        <location line="+0"/>
+        <source>Comment</source>
+        <translation>Commento</translation>
+    </message>
+    <message>
+        <location line="+79"/>
+        <location line="+11"/>
+        <source>%1: %2</source>
+        <translation>%1: %2</translation>
+    </message>
+    <message>
+        <location line="+3"/>
+        <source>%1 is larger than 64 MB</source>
+        <translation>%1 supera i 64 MB</translation>
+    </message>
+    <message>
+        <location line="+8"/>
+        <source>%1, line %2: %3</source>
+        <translation>%1, riga %2: %3</translation>
+    </message>
+</context>
+<context>
     <name>rung::editor::CrossReferenceView</name>
     <message>
-        <location filename="../editor/cross_reference_view.cpp" line="+51"/>
+        <location filename="../editor/cross_reference_view.cpp" line="+48"/>
         <source>Device or prefix (X0, X); empty: every device</source>
         <translation>Operando o prefisso (X0, X); vuoto: tutti gli operandi</translation>
     </message>
     <message>
-        <location line="+4"/>
+        <location line="+1"/>
         <source>Device / rung</source>
         <translation>Operando / segmento</translation>
     </message>
@@ -1004,7 +1065,7 @@ Editor di schemi ladder e liste istruzioni per VPC, Vigor, CPM1 e PL110.</transl
         <translation>Istruzione</translation>
     </message>
     <message>
-        <location line="+59"/>
+        <location line="+78"/>
         <source>contact</source>
         <translation>contatto</translation>
     </message>
@@ -1119,7 +1180,7 @@ Editor di schemi ladder e liste istruzioni per VPC, Vigor, CPM1 e PL110.</transl
         <translation>Modifica commento del segmento</translation>
     </message>
     <message>
-        <location line="+160"/>
+        <location line="+167"/>
         <source>Type one instruction, for example &quot;%1 X0&quot;</source>
         <translation>Digitare una sola istruzione, ad esempio &quot;%1 X0&quot;</translation>
     </message>
@@ -1219,7 +1280,7 @@ Editor di schemi ladder e liste istruzioni per VPC, Vigor, CPM1 e PL110.</transl
 <context>
     <name>rung::editor::ProblemsView</name>
     <message>
-        <location filename="../editor/problems_view.cpp" line="+16"/>
+        <location filename="../editor/problems_view.cpp" line="+29"/>
         <source>Severity</source>
         <translation>Gravità</translation>
     </message>
@@ -1239,8 +1300,8 @@ Editor di schemi ladder e liste istruzioni per VPC, Vigor, CPM1 e PL110.</transl
         <translation>Messaggio</translation>
     </message>
     <message>
-        <location line="+5"/>
-        <location line="+58"/>
+        <location line="+1"/>
+        <location line="+61"/>
         <source>Problems</source>
         <translation>Problemi</translation>
     </message>
@@ -2022,7 +2083,7 @@ Editor di schemi ladder e liste istruzioni per VPC, Vigor, CPM1 e PL110.</transl
         <translation>&quot;schema&quot; deve essere un numero positivo</translation>
     </message>
     <message>
-        <location line="+12"/>
+        <location line="+13"/>
         <source>&quot;target&quot;: unknown PLC family &quot;%1&quot;</source>
         <translation>&quot;target&quot;: famiglia PLC sconosciuta &quot;%1&quot;</translation>
     </message>
@@ -2052,7 +2113,7 @@ Editor di schemi ladder e liste istruzioni per VPC, Vigor, CPM1 e PL110.</transl
         <translation>%1.devices[%2]: è atteso il nome di un operando</translation>
     </message>
     <message>
-        <location line="+18"/>
+        <location line="+19"/>
         <source>a string</source>
         <translation>una stringa</translation>
     </message>
@@ -2142,7 +2203,7 @@ Editor di schemi ladder e liste istruzioni per VPC, Vigor, CPM1 e PL110.</transl
         <translation>è attesa una sola istruzione</translation>
     </message>
     <message>
-        <location line="+93"/>
+        <location line="+95"/>
         <source>%1: cannot open the file (%2)</source>
         <translation>%1: impossibile aprire il file (%2)</translation>
     </message>

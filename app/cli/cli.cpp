@@ -28,6 +28,7 @@ QString usage() {
                   "DEV=VALUE@SCAN]... "
                   "--trace DEV[,DEV...]\n"
                   "FILE is a listing (.il), a ladder text (.ladder) or a project (.rung).\n"
+                  "--lang en|hu|it: the language of the messages (else the locale's, LANG).\n"
                   "Exit status: 0 no error, 1 the program has errors, 2 usage or I/O error.");
 }
 

@@ -1,18 +1,17 @@
 #include "application.h"
 
 #include "command_line.h"
+#include "language.h"
 #include "main_window.h"
 
 #include "editor/ladder_view.h"
 
+#include <QAction>
 #include <QApplication>
 #include <QCommandLineParser>
-#include <QLibraryInfo>
-#include <QLocale>
 #include <QMessageBox>
-#include <QSettings>
+#include <QScreen>
 #include <QTimer>
-#include <QTranslator>
 
 namespace rung::app {
 
@@ -23,19 +22,7 @@ int runGui(int argc, char **argv) {
     QApplication::setApplicationVersion(QStringLiteral(RUNG_VERSION));
 
     // The language chosen in the Language menu, else the system's when we have it.
-    QString language = QSettings().value(QStringLiteral("ui/language")).toString();
-    if (language.isEmpty())
-        language = QLocale::system().name().left(2);
-    QTranslator translator;
-    QTranslator qtTranslator;
-    // English has a catalogue too: its plural forms ("1 rung", "2 rungs"). It is the
-    // fallback for a language we do not have, and for the C locale.
-    if (translator.load(QStringLiteral(":/i18n/rungstudio_%1").arg(language)) ||
-        translator.load(QStringLiteral(":/i18n/rungstudio_en")))
-        QApplication::installTranslator(&translator);
-    if (qtTranslator.load(QStringLiteral("qtbase_%1").arg(language),
-                          QLibraryInfo::path(QLibraryInfo::TranslationsPath)))
-        QApplication::installTranslator(&qtTranslator);
+    setLanguage(startLanguage(), false);
 
     QCommandLineParser parser;
     describeGuiArguments(parser);
@@ -51,13 +38,38 @@ int runGui(int argc, char **argv) {
         window.start(arguments.file, arguments.target);
     if (!arguments.screenshot.isEmpty()) {
         const QString path = arguments.screenshot;
-        QTimer::singleShot(1200, &window, [&window, &app, path] {
+        // scripts/screenshot.sh: RUNG_SCREENSHOT_DIALOG=new|save|open pictures that dialog
+        // over the window (the whole screen), as the user meets it.
+        const QString dialog = qEnvironmentVariable("RUNG_SCREENSHOT_DIALOG");
+        QTimer::singleShot(1200, &window, [&window, &app, path, dialog] {
             window.ladderView()->setFocus();
             window.ladderView()->setCursor({1, 0, 1});
-            QTimer::singleShot(300, &window, [&window, &app, path] {
-                window.grab().save(path);
-                app.quit();
+            if (dialog.isEmpty()) {
+                QTimer::singleShot(300, &window, [&window, &app, path] {
+                    window.grab().save(path);
+                    app.quit();
+                });
+                return;
+            }
+            // The dialog runs its own event loop: the picture is taken from inside it, and
+            // exit() ends that loop and the application's.
+            QTimer::singleShot(1000, &app, [path] {
+                QGuiApplication::primaryScreen()->grabWindow(0).save(path);
+                QCoreApplication::exit(0);
             });
+            const auto byKey = [&window](QKeySequence::StandardKey key) -> QAction * {
+                for (QAction *a : window.findChildren<QAction *>())
+                    if (a->shortcut() == QKeySequence(key))
+                        return a;
+                return nullptr;
+            };
+            if (dialog == QLatin1String("save")) {
+                window.document()->markUnsaved();
+                window.close();
+            } else if (QAction *a = byKey(dialog == QLatin1String("open") ? QKeySequence::Open
+                                                                          : QKeySequence::New)) {
+                a->trigger();
+            }
         });
     }
     return app.exec();

@@ -1,5 +1,8 @@
 #include "main_window.h"
 
+#include "recovery.h"
+#include "symbol_table.h"
+
 #include "editor/il_editor.h"
 #include "editor/ladder_view.h"
 #include "editor/listing_lines_command.h"
@@ -7,19 +10,18 @@
 #include "editor/watch_list_view.h"
 
 #include <QAction>
+#include <QActionGroup>
 #include <QApplication>
 #include <QCloseEvent>
 #include <QDockWidget>
-#include <QFile>
-#include <QHeaderView>
 #include <QInputDialog>
 #include <QLabel>
-#include <QLockFile>
+#include <QMenuBar>
+#include <QScreen>
 #include <QSettings>
 #include <QSplitter>
 #include <QStatusBar>
 #include <QTabWidget>
-#include <QTableWidget>
 #include <QTimer>
 #include <QVBoxLayout>
 
@@ -93,7 +95,7 @@ MainWindow::MainWindow(QWidget *parent)
     });
     connect(m_problems, &editor::ProblemsView::applyFix, this, &MainWindow::applyFix);
 
-    claimRecoveryFile();
+    m_recovery = std::make_unique<RecoveryFile>();
     m_recoveryTimer.setInterval(60 * 1000);
     connect(&m_recoveryTimer, &QTimer::timeout, this, &MainWindow::writeRecovery);
     m_recoveryTimer.start();
@@ -101,7 +103,10 @@ MainWindow::MainWindow(QWidget *parent)
     QSettings settings;
     setSideBySide(settings.value(QStringLiteral("view/sideBySide"), false).toBool());
     m_split->restoreState(settings.value(QStringLiteral("view/split")).toByteArray());
-    resize(1400, 900);
+    // Roomy where the screen allows, never larger than it: on a 1366x768 laptop a 1400x900
+    // window would hide the problems and the status bar below the screen's edge.
+    const QSize available = screen()->availableGeometry().size();
+    resize(QSize(1400, 900).boundedTo(available - QSize(16, 32)));
     resizeDocks({findChild<QDockWidget *>(QStringLiteral("problemsDock"))}, {150}, Qt::Vertical);
     resizeDocks({findChild<QDockWidget *>(QStringLiteral("projectDock"))}, {230}, Qt::Horizontal);
     restoreGeometry(settings.value(QStringLiteral("window/geometry")).toByteArray());
@@ -131,6 +136,16 @@ MainWindow::~MainWindow() {
     m_ladder->disconnect(this);
     m_document->disconnect(this);
     m_problems->disconnect(this);
+    m_symbols->disconnect(this);
+    // The menus' actions answer the stack, the list and the ladder too (undoAction, the
+    // palette): they go after the members they read.
+    for (QObject *o : findChildren<QObject *>()) {
+        if (!qobject_cast<QAction *>(o) && !qobject_cast<QActionGroup *>(o))
+            continue;
+        m_document->undoStack()->disconnect(o);
+        m_il->disconnect(o);
+        m_ladder->disconnect(o);
+    }
     m_document->undoStack()->disconnect(this);
 }
 
@@ -147,25 +162,18 @@ void MainWindow::buildDocks() {
     m_projectInfo = new QLabel;
     m_projectInfo->setWordWrap(true);
     layout->addWidget(m_projectInfo);
-    layout->addWidget(new QLabel(tr("Symbols")));
-    m_symbols = new QTableWidget(0, 3);
-    m_symbols->setObjectName(QStringLiteral("symbolsTable"));
-    m_symbols->setHorizontalHeaderLabels({tr("Device"), tr("Name"), tr("Comment")});
-    m_symbols->horizontalHeader()->setStretchLastSection(true);
-    m_symbols->setColumnWidth(0, 70);
-    m_symbols->setColumnWidth(1, 90);
-    m_symbols->verticalHeader()->hide();
-    m_symbols->verticalHeader()->setDefaultSectionSize(m_symbols->fontMetrics().height() + 8);
+    m_symbolsLabel = new QLabel(tr("Symbols"));
+    layout->addWidget(m_symbolsLabel);
+    m_symbols = new SymbolTable(m_document);
     layout->addWidget(m_symbols, 1);
-    layout->addWidget(new QLabel(tr("Watch lists")));
+    m_watchLabel = new QLabel(tr("Watch lists"));
+    layout->addWidget(m_watchLabel);
     m_watch = new editor::WatchListView(m_document);
     layout->addWidget(m_watch);
     projectDock->setWidget(panel);
     addDockWidget(Qt::LeftDockWidgetArea, projectDock);
-    connect(m_symbols, &QTableWidget::cellChanged, this, [this](int row, int) {
-        if (!m_updatingSymbols)
-            symbolsEdited(row);
-    });
+    connect(m_symbols, &SymbolTable::message, this,
+            [this](const QString &text) { statusBar()->showMessage(text, 5000); });
 }
 
 void MainWindow::editRungComment() {
@@ -255,70 +263,13 @@ void MainWindow::refreshFromDocument() {
             stepOfLine.push_back(i < 0 ? -1 : list.instructions[static_cast<std::size_t>(i)].step);
     }
     m_il->setStepNumbers(stepOfLine);
-    refreshSymbols();
+    m_symbols->refresh();
+    refreshProjectInfo();
     updateStatus();
+    updateTitle(); // the list as typed counts as unsaved work
 }
 
-void MainWindow::symbolsEdited(int row) {
-    // Edited in place: the complete rows make the new symbol list (one undo step when it
-    // changed), the others wait in the table; a row cleared of everything goes.
-    std::vector<model::Symbol> symbols;
-    m_pendingSymbols.clear();
-    auto text = [this](int r, int c) {
-        return m_symbols->item(r, c) ? m_symbols->item(r, c)->text() : QString();
-    };
-    for (int r = 0; r < m_symbols->rowCount(); ++r) {
-        const PendingSymbol typed{text(r, 0).trimmed(), text(r, 1), text(r, 2)};
-        if (typed.device.isEmpty() && typed.name.isEmpty() && typed.comment.isEmpty())
-            continue;
-        const auto parsed =
-            typed.device.isEmpty()
-                ? std::variant<model::Address, model::AddressError>(model::AddressError{})
-                : model::parseAddress(m_document->target(), typed.device,
-                                      m_document->modelVariant());
-        if (const auto *e = std::get_if<model::AddressError>(&parsed)) {
-            if (r == row && !typed.device.isEmpty())
-                statusBar()->showMessage(e->message, 5000);
-            m_pendingSymbols.push_back(typed);
-            continue;
-        }
-        symbols.push_back({std::get<model::Address>(parsed), typed.name, typed.comment});
-    }
-    m_document->setSymbols(symbols); // refreshes the table when it changed anything
-    refreshSymbols();
-}
-
-void MainWindow::refreshSymbols() {
-    m_updatingSymbols = true;
-    const auto &symbols = m_document->project().symbols;
-    const int count = static_cast<int>(symbols.size());
-    const int pending = static_cast<int>(m_pendingSymbols.size());
-    m_symbols->setRowCount(count + pending + 1); // a free row for a new symbol
-    for (int r = 0; r < count; ++r) {
-        const model::Symbol &s = symbols[static_cast<std::size_t>(r)];
-        m_symbols->setItem(
-            r, 0, new QTableWidgetItem(model::formatAddress(m_document->target(), s.address)));
-        m_symbols->setItem(r, 1, new QTableWidgetItem(s.name));
-        m_symbols->setItem(r, 2, new QTableWidgetItem(s.comment));
-    }
-    for (int i = 0; i < pending; ++i) {
-        const PendingSymbol &p = m_pendingSymbols[static_cast<std::size_t>(i)];
-        auto *device = new QTableWidgetItem(p.device);
-        if (!p.device.isEmpty()) {
-            const auto parsed =
-                model::parseAddress(m_document->target(), p.device, m_document->modelVariant());
-            if (const auto *e = std::get_if<model::AddressError>(&parsed)) {
-                device->setForeground(QColor(0xb0, 0x00, 0x20));
-                device->setBackground(QColor(0xfd, 0xe7, 0xea));
-                device->setToolTip(e->message);
-            }
-        }
-        m_symbols->setItem(count + i, 0, device);
-        m_symbols->setItem(count + i, 1, new QTableWidgetItem(p.name));
-        m_symbols->setItem(count + i, 2, new QTableWidgetItem(p.comment));
-    }
-    for (int c = 0; c < 3; ++c)
-        m_symbols->setItem(count + pending, c, new QTableWidgetItem);
+void MainWindow::refreshProjectInfo() {
     const model::Target &t = m_document->target();
     const int rungs = static_cast<int>(m_document->ladder().rungs.size());
     m_projectInfo->setText(
@@ -327,7 +278,6 @@ void MainWindow::refreshSymbols() {
                                               : m_document->path().section(QLatin1Char('/'), -1),
                  t.displayName, m_document->modelVariant()->name, tr("%n rung(s)", nullptr, rungs),
                  tr("%n step(s)", nullptr, m_document->stepCount())));
-    m_updatingSymbols = false;
 }
 
 void MainWindow::applyListing() {
@@ -380,7 +330,21 @@ void MainWindow::updateTitle() {
                              ? tr("Untitled")
                              : m_document->path().section(QLatin1Char('/'), -1);
     setWindowTitle(QStringLiteral("%1[*] — Rung Studio").arg(name));
-    setWindowModified(m_document->isModified());
+    setWindowModified(isModified());
+}
+
+QString MainWindow::pendingListing() const {
+    return model::hasErrors(m_listingErrors) ? m_il->text() : QString();
+}
+
+bool MainWindow::isModified() const {
+    return m_document->isModified() || pendingListing() != m_savedPending;
+}
+
+model::Project MainWindow::projectToKeep() const {
+    model::Project project = m_document->project();
+    project.pendingListing = pendingListing();
+    return project;
 }
 
 void MainWindow::locate(const model::Diagnostic &d) {
@@ -427,6 +391,42 @@ void MainWindow::applyFix(const model::Diagnostic &d) {
         new editor::ListingLinesCommand(m_il, first, before, after, follow, d.fix->label));
 }
 
+void MainWindow::changeEvent(QEvent *event) {
+    if (event->type() == QEvent::LanguageChange && m_toolBar)
+        retranslate();
+    QMainWindow::changeEvent(event);
+}
+
+void MainWindow::retranslate() {
+    const QList<QAction *> menus = menuBar()->actions();
+    menuBar()->clear();
+    for (QAction *a : menus)
+        delete a->menu(); // with its actions and submenus
+    buildActions();
+    if (auto *dock = findChild<QDockWidget *>(QStringLiteral("projectDock")))
+        dock->setWindowTitle(tr("Project"));
+    if (auto *dock = findChild<QDockWidget *>(QStringLiteral("crossReferenceDock")))
+        dock->setWindowTitle(tr("Cross Reference"));
+    m_symbolsLabel->setText(tr("Symbols"));
+    m_watchLabel->setText(tr("Watch lists"));
+    if (m_tabs->count() == 2) {
+        m_tabs->setTabText(0, tr("Ladder"));
+        m_tabs->setTabText(1, tr("Instruction List"));
+    }
+    // The findings again, now in this language; the list as typed (errors or forms of its own)
+    // stays, and its own findings are read again from it.
+    const bool typed = !m_listingErrors.empty();
+    m_editingListing = typed;
+    // An edit that changes nothing: the document converts and checks the program again.
+    m_document->applyRungs(0, 0, {});
+    m_editingListing = false;
+    if (typed)
+        applyListing();
+    statusBar()->clearMessage(); // a message of the old language would stay in it
+    updateStatus();
+    updateTitle();
+}
+
 void MainWindow::closeEvent(QCloseEvent *event) {
     if (!maybeSave()) {
         event->ignore();
@@ -437,7 +437,7 @@ void MainWindow::closeEvent(QCloseEvent *event) {
     settings.setValue(QStringLiteral("window/state"), saveState());
     if (m_sideBySide)
         settings.setValue(QStringLiteral("view/split"), m_split->saveState());
-    removeRecovery();
+    m_recovery->remove();
     event->accept();
 }
 

@@ -2,7 +2,9 @@
 
 // The main window: the ladder and the instruction list of one program (tabs or side by side),
 // the problems panel, the project dock (target, model, symbols), menus, toolbar and status
-// bar. File handling (open, save, recovery, export) lives in main_window_files.cpp.
+// bar. File handling (open, save) lives in main_window_files.cpp; the recovery file, the
+// exports and the symbol table are parts of their own (recovery.h, ladder_export.h,
+// symbol_table.h).
 
 #include "editor/document.h"
 
@@ -12,15 +14,12 @@
 #include <memory>
 
 class QLabel;
-class QLockFile;
 class QSplitter;
 class QTabWidget;
-class QTableWidget;
 class QTreeWidget;
 class QLineEdit;
 class QMenu;
-
-class QPrinter;
+class QToolBar;
 
 namespace rung::editor {
 class CrossReferenceView;
@@ -31,6 +30,9 @@ class WatchListView;
 } // namespace rung::editor
 
 namespace rung::app {
+
+class RecoveryFile;
+class SymbolTable;
 
 class MainWindow : public QMainWindow {
     Q_OBJECT
@@ -48,29 +50,29 @@ public:
     // the user why when the file cannot be read.
     bool openFile(const QString &path, const QString &targetId = QString(), bool quiet = false);
     bool saveTo(const QString &path);
+    // A file name chosen in a save dialog, with the first of `suffixes` added when it has none
+    // of them (typing "latch" for a PDF writes latch.pdf); when that names a file that exists,
+    // asks before it is replaced (the dialog asked about the name as typed). Empty: cancelled.
+    QString completeSavePath(const QString &chosen, const QStringList &suffixes);
+    // Unsaved work: the program, or a list as typed (with errors) that the last save or open
+    // did not hold.
+    bool isModified() const;
     void newProject(const model::Target &target, const QString &modelName);
     void setSideBySide(bool sideBySide);
     void editRungComment(); // asks for the comment of the rung under the cursor
-    // The ladder as PNG, SVG or PDF (by the file's suffix; the PDF is the printout, with
-    // the page header); false with the reason when it cannot be written.
-    bool exportLadder(const QString &path, QString *error);
-    bool printLadder(QPrinter *printer);
     // Applies the IL editor's text now (the editor also does it after a short pause).
     void applyListing();
-    // This window's recovery file (one per window of each running instance, so instances
-    // never overwrite each other's) and the folder all of them live in.
-    QString recoveryPath() const;
-    static void setRecoveryDirectory(const QString &directory); // tests: a folder of their own
+    QString recoveryPath() const; // this window's (recovery.h)
     // Tools over the whole program (main_window_tools.cpp).
     void copyRung(bool cut);
     void pasteRungs();
-    int replaceDeviceEverywhere(const QString &from, const QString &to,
-                                QString *error); // -1: error
+    // Edit > Replace Device without its dialogs: the number of places changed (one undo
+    // step), -1 with the reason when either text is no device.
+    int replaceDeviceEverywhere(const QString &from, const QString &to, QString *error);
     // Moves the ladder's cursor to the next (previous) use of a device, remembered for F3;
     // false with a message in the status bar when the text is no device or nothing uses it.
     bool findDevice(const QString &device, bool backwards);
-    bool importSymbols(const QString &path, QString *error);
-    bool exportSymbolsTo(const QString &path, QString *error);
+    SymbolTable *symbolTable() const { return m_symbols; }
     editor::WatchListView *watchListView() const { return m_watch; }
     QLineEdit *crossReferenceDevice() { return m_crossDevice; }
     QTreeWidget *crossReference() { return m_crossTree; }
@@ -84,6 +86,7 @@ public:
 
 protected:
     void closeEvent(QCloseEvent *event) override;
+    void changeEvent(QEvent *event) override; // LanguageChange: retranslate()
 
 private:
     // applyListing(), as a step of its own or into the undo step already under way (a fix).
@@ -91,22 +94,27 @@ private:
     // An instruction list or a symbol table opened, imported: read no further than this.
     static constexpr qint64 kMaxTextFileBytes = 64 * 1024 * 1024;
     void buildActions();
+    // Every text of the window in the language now installed: menus and toolbar built again,
+    // docks, tabs, status bar, and the problems found again (their messages are translated
+    // when found). The list as typed stays as it is.
+    void retranslate();
     void buildDocks();
     void updateTitle();
     void updateStatus();
     void refreshFromDocument();
     void showProject(const model::Project &project, const QString &path);
-    void refreshSymbols();
-    void symbolsEdited(int row);
+    void refreshProjectInfo();
+    // The list as typed when it has errors the program could not take; empty when it agrees.
+    QString pendingListing() const;
+    // The project as Save and recovery keep it: the program and the list as typed.
+    model::Project projectToKeep() const;
     void locate(const model::Diagnostic &diagnostic);
     void applyFix(const model::Diagnostic &diagnostic);
-    QAction *undoAction(bool redo);
+    QAction *undoAction(bool redo, QObject *owner);
     bool maybeSave();
     void addRecent(const QString &path);
     void rebuildRecentMenu();
     void rebuildExamplesMenu();
-    void claimRecoveryFile();
-    void removeRecovery();
 
     // File actions (main_window_files.cpp).
     void fileNew();
@@ -120,6 +128,8 @@ private:
     void replaceDevice();
     void findDeviceDialog();
     void exportSymbols();
+    // A save dialog, then completeSavePath.
+    QString askSavePath(const QString &title, const QString &filter, const QStringList &suffixes);
     void buildCrossReference();
 
     editor::Document *m_document;
@@ -129,11 +139,14 @@ private:
     editor::WatchListView *m_watch = nullptr;
     QTabWidget *m_tabs;
     QSplitter *m_split;
-    QTableWidget *m_symbols = nullptr;
+    SymbolTable *m_symbols = nullptr;
     editor::CrossReferenceView *m_crossReference = nullptr;
     QLineEdit *m_crossDevice = nullptr;
     QTreeWidget *m_crossTree = nullptr;
     QLabel *m_projectInfo = nullptr;
+    QLabel *m_symbolsLabel = nullptr;
+    QLabel *m_watchLabel = nullptr;
+    QToolBar *m_toolBar = nullptr;
     QLabel *m_statusTarget;
     QLabel *m_statusSteps;
     QLabel *m_statusCursor;
@@ -141,8 +154,7 @@ private:
     QMenu *m_examplesMenu = nullptr;
     QTimer m_ilTimer;
     QTimer m_recoveryTimer;
-    QString m_recoveryBase;                    // recovery file path without its suffix
-    std::unique_ptr<QLockFile> m_recoveryLock; // held while this window lives
+    std::unique_ptr<RecoveryFile> m_recovery;
     std::vector<model::Diagnostic> m_listingErrors;
     struct TypedSteps { // the step of each line of the text as typed, for the text it was read from
         const model::ModelVariant *model = nullptr;
@@ -150,15 +162,9 @@ private:
         std::vector<int> steps;
     } m_typedSteps;
     bool m_editingListing = false;
-    QString m_findText; // the device of the last Find, for F3 / Shift+F3
+    QString m_savedPending; // the list as typed that the file holds (pendingListing)
+    QString m_findText;     // the device of the last Find, for F3 / Shift+F3
     bool m_sideBySide = false;
-    bool m_updatingSymbols = false;
-    // Symbol table rows being typed that are no symbol yet (no device, or one the target does
-    // not have): they stay in the table, after the symbols, until complete or cleared.
-    struct PendingSymbol {
-        QString device, name, comment;
-    };
-    std::vector<PendingSymbol> m_pendingSymbols;
 };
 
 } // namespace rung::app

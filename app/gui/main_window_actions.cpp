@@ -1,5 +1,8 @@
 #include "main_window.h"
 
+#include "language.h"
+#include "symbol_table.h"
+
 #include "editor/il_editor.h"
 #include "editor/ladder_view.h"
 #include "editor/tool_icons.h"
@@ -35,8 +38,19 @@ void showKeyInMenu(QAction *action, const QKeySequence &key) {
 } // namespace
 
 void MainWindow::buildActions() {
+    // Built again, whole, when the language changes (retranslate()): every object made here is
+    // owned by a menu or the toolbar, and every connection's context is one of them, so that
+    // what the old menus held goes with them.
     QMenu *file = menuBar()->addMenu(tr("&File"));
-    QToolBar *bar = addToolBar(tr("Main"));
+    QToolBar *bar = new QToolBar(tr("Main"), this);
+    m_toolBar = bar;
+    if (QToolBar *old = findChild<QToolBar *>(QStringLiteral("mainToolBar"))) {
+        insertToolBar(old, bar);
+        removeToolBar(old);
+        delete old;
+    } else {
+        addToolBar(bar);
+    }
     bar->setObjectName(QStringLiteral("mainToolBar"));
     bar->setIconSize(QSize(24, 24));
     bar->setToolButtonStyle(Qt::ToolButtonIconOnly); // the names and keys are in the tooltips
@@ -74,9 +88,9 @@ void MainWindow::buildActions() {
     bar->addSeparator();
 
     QMenu *edit = menuBar()->addMenu(tr("&Edit"));
-    QAction *undo = undoAction(false);
+    QAction *undo = undoAction(false, edit);
     undo->setShortcut(QKeySequence::Undo);
-    QAction *redo = undoAction(true);
+    QAction *redo = undoAction(true, edit);
     // Ctrl+Y as well, as on Windows, once: the platform's Redo may already be it.
     QList<QKeySequence> redoKeys = QKeySequence::keyBindings(QKeySequence::Redo);
     if (!redoKeys.contains(QKeySequence(Qt::CTRL | Qt::Key_Y)))
@@ -125,7 +139,7 @@ void MainWindow::buildActions() {
     // The menu acts at the cursor, as the keys do. The toolbar's palette is a set of tools: pick
     // one, then each click on a cell places its element there, until Esc, a right click or the
     // select tool (CX-Programmer and drawing programs work this way).
-    auto *palette = new QActionGroup(this);
+    auto *palette = new QActionGroup(bar);
     QAction *pointer = bar->addAction(editor::toolIcon(editor::ToolIcon::Pointer), tr("Select"));
     pointer->setToolTip(tr("Select (Esc)"));
     pointer->setCheckable(true);
@@ -152,7 +166,7 @@ void MainWindow::buildActions() {
                 tr("%1: click a cell to place it; Esc or a right click ends").arg(text));
         });
     }
-    connect(m_ladder, &editor::LadderView::toolArmed, this,
+    connect(m_ladder, &editor::LadderView::toolArmed, palette,
             [palette, pointer](const QKeySequence &key) {
                 if (key.isEmpty()) {
                     pointer->setChecked(true);
@@ -186,7 +200,7 @@ void MainWindow::buildActions() {
         const QString path = QFileDialog::getOpenFileName(this, tr("Import Symbols"), QString(),
                                                           tr("CSV files (*.csv)"));
         QString error;
-        if (!path.isEmpty() && !importSymbols(path, &error))
+        if (!path.isEmpty() && !m_symbols->importCsv(path, &error))
             QMessageBox::critical(this, tr("Cannot import"), error);
     });
     edit->addAction(tr("E&xport Symbols (CSV)..."), this, &MainWindow::exportSymbols);
@@ -222,7 +236,7 @@ void MainWindow::buildActions() {
     fit->setCheckable(true);
     fit->setShortcut(QKeySequence(Qt::CTRL | Qt::Key_0));
     connect(fit, &QAction::toggled, m_ladder, &editor::LadderView::setFitWidth);
-    connect(m_ladder, &editor::LadderView::fitWidthChanged, this, [fit](bool on) {
+    connect(m_ladder, &editor::LadderView::fitWidthChanged, fit, [fit](bool on) {
         fit->setChecked(on);
         QSettings().setValue(QStringLiteral("view/fitWidth"), on);
     });
@@ -235,27 +249,20 @@ void MainWindow::buildActions() {
         ->setShortcut(Qt::Key_F4);
 
     QMenu *language = menuBar()->addMenu(tr("&Language"));
-    auto *group = new QActionGroup(this);
-    const QString current = QSettings().value(QStringLiteral("ui/language")).toString();
+    auto *group = new QActionGroup(language);
+    const QString current = currentLanguage();
+    // Each language by its own name, whatever the interface speaks now.
     for (const auto &[code, name] :
          {std::pair{"en", "English"}, {"hu", "Magyar"}, {"it", "Italiano"}}) {
         QAction *a = language->addAction(QString::fromUtf8(name));
         a->setCheckable(true);
-        a->setChecked(current == QLatin1String(code) ||
-                      (current.isEmpty() && QLatin1String(code) == QLatin1String("en")));
+        a->setChecked(current == QLatin1String(code));
+        a->setData(QString::fromLatin1(code));
         group->addAction(a);
         const QString c = QString::fromLatin1(code);
-        connect(a, &QAction::triggered, this, [this, c] {
-            QSettings().setValue(QStringLiteral("ui/language"), c);
-            // Window-modal, not a nested event loop: the work in the window goes on.
-            auto *box =
-                new QMessageBox(QMessageBox::Information, tr("Language"),
-                                tr("The new language applies when Rung Studio starts again."),
-                                QMessageBox::Ok, this);
-            box->setObjectName(QStringLiteral("languageNotice"));
-            box->setAttribute(Qt::WA_DeleteOnClose);
-            box->open();
-        });
+        // Queued: the switch rebuilds the menus, this action's among them.
+        connect(
+            a, &QAction::triggered, this, [c] { setLanguage(c); }, Qt::QueuedConnection);
     }
     QMenu *help = menuBar()->addMenu(tr("&Help"));
     help->addAction(tr("&Keyboard..."), this, [this] {
@@ -280,12 +287,12 @@ void MainWindow::buildActions() {
     rebuildExamplesMenu();
 }
 
-QAction *MainWindow::undoAction(bool redo) {
+QAction *MainWindow::undoAction(bool redo, QObject *owner) {
     // As QUndoStack's own actions, but the list's pending edit (typed, not yet applied)
     // becomes a step first: Undo then takes back what was just typed, and no step of the
     // stack runs on a text the program has not caught up with.
     QUndoStack *stack = m_document->undoStack();
-    auto *action = new QAction(this);
+    auto *action = new QAction(owner);
     const auto label = [redo, stack] {
         const QString what = redo ? stack->redoText() : stack->undoText();
         if (what.isEmpty())
@@ -299,10 +306,11 @@ QAction *MainWindow::undoAction(bool redo) {
                            (!redo && (m_ilTimer.isActive() || model::hasErrors(m_listingErrors))));
     };
     update();
-    // `this` as the context: ~MainWindow cuts these before the stack and the list go.
-    connect(stack, &QUndoStack::indexChanged, this, update);
-    connect(stack, &QUndoStack::cleanChanged, this, update);
-    connect(m_il, &editor::IlEditor::listingEdited, this, update);
+    // The action as the context: they go with it (a new language builds new ones), and
+    // ~MainWindow disconnects the stack and the list from every action before they go.
+    connect(stack, &QUndoStack::indexChanged, action, update);
+    connect(stack, &QUndoStack::cleanChanged, action, update);
+    connect(m_il, &editor::IlEditor::listingEdited, action, update);
     connect(action, &QAction::triggered, this, [this, redo, stack] {
         if (m_ilTimer.isActive())
             applyListing();

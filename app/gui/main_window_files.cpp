@@ -1,15 +1,16 @@
 #include "main_window.h"
 
+#include "ladder_export.h"
+#include "recovery.h"
+#include "symbol_table.h"
+
 #include "editor/il_editor.h"
-#include "editor/ladder_painter.h"
 #include "editor/ladder_view.h"
 
 #include "model/project/file_read.h"
 #include "model/project/project.h"
 
 #include <QComboBox>
-#include <QCoreApplication>
-#include <QDate>
 #include <QDialog>
 #include <QDialogButtonBox>
 #include <QDir>
@@ -17,101 +18,18 @@
 #include <QFileDialog>
 #include <QFileInfo>
 #include <QFormLayout>
-#include <QImage>
-#include <QLocale>
-#include <QLockFile>
 #include <QMenu>
 #include <QMessageBox>
-#include <QPainter>
 #include <QPrintPreviewDialog>
 #include <QPrinter>
-#include <QSaveFile>
 #include <QSettings>
-#include <QStandardPaths>
 #include <QStatusBar>
-#include <QSvgGenerator>
 
 namespace rung::app {
 
 namespace {
 
 constexpr int kMaxRecent = 8;
-
-// Paints every rung, one below the other, starting at `top`; a new page when needed.
-// With `paint` false it only lays the rungs out on pages (to count them for the header).
-template <typename NewPage>
-void paintProgram(QPainter &p, const editor::Document &document, const editor::LadderMetrics &m,
-                  bool namesFirst, double pageHeight, double top, NewPage newPage,
-                  bool paint = true) {
-    const model::Project &project = document.project();
-    editor::LadderPainter painter(project, m);
-    painter.setNamesFirst(namesFirst); // as the view shows it
-    const model::ToListingResult &listing = document.listing();
-    double y = top;
-    for (int i = 0; i < static_cast<int>(project.program.rungs.size()); ++i) {
-        const double h = m.rungHeight(project.program.rungs[static_cast<std::size_t>(i)]);
-        if (pageHeight > 0 && y + h > pageHeight && y > top) {
-            newPage();
-            y = top;
-        }
-        if (!paint) {
-            y += h;
-            continue;
-        }
-        editor::RungDecorations d; // step addresses, as on screen
-        const auto first =
-            static_cast<std::size_t>(i) < listing.rungFirst.size()
-                ? static_cast<std::size_t>(listing.rungFirst[static_cast<std::size_t>(i)])
-                : listing.list.instructions.size();
-        if (first < listing.list.instructions.size())
-            d.firstStep = listing.list.instructions[first].step;
-        painter.paintRung(p, QPointF(0, y), i, d);
-        y += h;
-    }
-}
-
-editor::LadderMetrics exportMetrics(const model::Project &project) {
-    editor::LadderMetrics m;
-    int widest = std::max(1, project.target->limits.contactsPerRow);
-    for (const model::Rung &r : project.program.rungs)
-        widest = std::max(widest, r.columns);
-    m.gridColumns = widest;
-    m.foldColumns = std::max(0, project.target->limits.contactsPerRow); // as on screen
-    return m;
-}
-
-double programHeight(const model::Project &project, const editor::LadderMetrics &m) {
-    double h = 0;
-    for (const model::Rung &r : project.program.rungs)
-        h += m.rungHeight(r);
-    return h;
-}
-
-} // namespace
-
-namespace {
-
-QString &recoveryDirectoryOverride() {
-    static QString directory;
-    return directory;
-}
-
-QString recoveryDirectory() {
-    const QString dir = recoveryDirectoryOverride().isEmpty()
-                            ? QStandardPaths::writableLocation(QStandardPaths::AppDataLocation)
-                            : recoveryDirectoryOverride();
-    QDir().mkpath(dir);
-    return dir;
-}
-
-// Beside each recovery file: the lock its instance holds while it runs, and the path of the
-// file the recovered program came from (Save goes back there).
-QString lockPath(const QString &base) {
-    return base + QStringLiteral(".lock");
-}
-QString originPath(const QString &base) {
-    return base + QStringLiteral(".path");
-}
 
 // A readable title from an example's file name: "traffic-light" -> "Traffic light",
 // "difu-difd" -> "DIFU / DIFD"; the target's mnemonics are written as its manuals write them.
@@ -133,66 +51,19 @@ QString exampleTitle(const model::Target *target, const QString &baseName) {
 
 } // namespace
 
-void MainWindow::setRecoveryDirectory(const QString &directory) {
-    recoveryDirectoryOverride() = directory;
-}
-
-void MainWindow::claimRecoveryFile() {
-    // Process ids repeat (containers start every program with a low one): a name whose lock is
-    // taken, or whose recovery file waits to be offered, belongs to another instance. A
-    // directory where no lock can be made ends the search after a few tries.
-    static int windows = 0;
-    for (int tries = 0; tries < 64; ++tries) {
-        m_recoveryBase = QStringLiteral("%1/recovery-%2-%3")
-                             .arg(recoveryDirectory())
-                             .arg(QCoreApplication::applicationPid())
-                             .arg(++windows);
-        m_recoveryLock = std::make_unique<QLockFile>(lockPath(m_recoveryBase));
-        m_recoveryLock->setStaleLockTime(0); // stale only when its process is gone
-        if (!QFile::exists(m_recoveryBase + QStringLiteral(".rung")) && m_recoveryLock->tryLock(0))
-            return;
-    }
-}
-
 QString MainWindow::recoveryPath() const {
-    return m_recoveryBase + QStringLiteral(".rung");
-}
-
-void MainWindow::removeRecovery() {
-    QFile::remove(recoveryPath());
-    QFile::remove(originPath(m_recoveryBase));
+    return m_recovery->path();
 }
 
 void MainWindow::writeRecovery() {
-    if (!m_document->isModified())
-        return;
-    model::ProjectError error;
-    model::saveProject(m_document->project(), recoveryPath(), &error);
-    QSaveFile origin(originPath(m_recoveryBase));
-    if (origin.open(QIODevice::WriteOnly)) {
-        origin.write(m_document->path().toUtf8());
-        origin.commit();
-    }
+    if (m_ilTimer.isActive())
+        applyListing(); // what was typed last is work too
+    if (isModified())
+        m_recovery->write(projectToKeep(), m_document->path());
 }
 
 bool MainWindow::offerRecovery(bool ask) {
-    const QFileInfoList files =
-        QDir(recoveryDirectory())
-            .entryInfoList({QStringLiteral("recovery*.rung")}, QDir::Files, QDir::Time);
-    for (const QFileInfo &file : files) {
-        const QString base = file.absoluteFilePath().chopped(5); // without ".rung"
-        if (base == m_recoveryBase)
-            continue;
-        // A lock that can be taken belongs to no running instance: its work is orphaned.
-        QLockFile owner(lockPath(base));
-        owner.setStaleLockTime(0);
-        if (!owner.tryLock(0))
-            continue;
-        QString origin;
-        QFile originFile(originPath(base));
-        if (originFile.open(QIODevice::ReadOnly))
-            origin = QString::fromUtf8(originFile.readAll()).trimmed();
-        originFile.close();
+    auto recovered = m_recovery->takeOrphan([this, ask](const QString &origin) {
         const QString question =
             origin.isEmpty()
                 ? tr("Rung Studio was not closed properly last time. Recover the unsaved "
@@ -200,21 +71,14 @@ bool MainWindow::offerRecovery(bool ask) {
                 : tr("Rung Studio was not closed properly last time. Recover the unsaved "
                      "changes to %1?")
                       .arg(QDir::toNativeSeparators(origin));
-        const bool wanted =
-            !ask || QMessageBox::question(this, tr("Recover"), question) == QMessageBox::Yes;
-        model::ProjectError error;
-        const auto project = wanted ? model::loadProject(file.absoluteFilePath(), &error)
-                                    : std::optional<model::Project>();
-        QFile::remove(file.absoluteFilePath());
-        QFile::remove(originPath(base));
-        if (!project)
-            continue;
-        showProject(*project, origin);
-        m_document->markUnsaved(); // no file has this work yet: closing asks to save it
-        writeRecovery();           // now this instance's to keep
-        return true;
-    }
-    return false;
+        return !ask || QMessageBox::question(this, tr("Recover"), question) == QMessageBox::Yes;
+    });
+    if (!recovered)
+        return false;
+    showProject(recovered->project, recovered->origin);
+    m_document->markUnsaved(); // no file has this work yet: closing asks to save it
+    writeRecovery();           // now this instance's to keep
+    return true;
 }
 
 void MainWindow::start(const QString &file, const QString &targetId, bool askToRecover) {
@@ -230,15 +94,23 @@ void MainWindow::showProject(const model::Project &project, const QString &path)
     m_il->setTarget(*project.target);
     m_il->dropHistory();
     m_listingErrors.clear();
-    m_pendingSymbols.clear(); // half-typed rows belong to the program that goes
+    m_symbols->dropPending(); // half-typed rows belong to the program that goes
     m_document->setProject(project, path);
+    m_savedPending = project.pendingListing;
+    if (!project.pendingListing.isEmpty()) {
+        // Saved while the list had errors: it shows as it was typed, errors marked, the
+        // ladder showing the last valid program.
+        m_il->setText(project.pendingListing);
+        applyListing();
+    }
 }
 
 void MainWindow::newProject(const model::Target &target, const QString &modelName) {
     m_il->setTarget(target);
     m_il->dropHistory();
     m_listingErrors.clear();
-    m_pendingSymbols.clear(); // half-typed rows belong to the program that goes
+    m_symbols->dropPending(); // half-typed rows belong to the program that goes
+    m_savedPending.clear();
     m_document->reset(target, modelName);
 }
 
@@ -300,22 +172,36 @@ bool MainWindow::openFile(const QString &path, const QString &targetId, bool qui
 }
 
 bool MainWindow::saveTo(const QString &path) {
+    if (m_ilTimer.isActive())
+        applyListing(); // what was typed last is saved too
+    const model::Project project = projectToKeep();
     model::ProjectError error;
-    if (!model::saveProject(m_document->project(), path, &error)) {
+    if (!model::saveProject(project, path, &error)) {
         QMessageBox::critical(this, tr("Cannot save"), error.message);
         return false;
     }
+    m_savedPending = project.pendingListing;
     m_document->setPath(path);
     m_document->markSaved();
-    removeRecovery();
+    m_recovery->remove();
     addRecent(path);
-    refreshSymbols();
-    statusBar()->showMessage(tr("Saved %1").arg(path), 3000);
+    refreshProjectInfo();
+    updateTitle();
+    if (project.pendingListing.isEmpty())
+        statusBar()->showMessage(tr("Saved %1").arg(path), 3000);
+    else
+        statusBar()->showMessage(
+            tr("Saved %1 with the instruction list as typed; it has errors, so the ladder "
+               "holds the last valid program until they are fixed")
+                .arg(path),
+            10000);
     return true;
 }
 
 bool MainWindow::maybeSave() {
-    if (!m_document->isModified())
+    if (m_ilTimer.isActive())
+        applyListing();
+    if (!isModified())
         return true;
     const auto answer =
         QMessageBox::warning(this, tr("Unsaved changes"), tr("Save the changes to the program?"),
@@ -372,13 +258,38 @@ bool MainWindow::fileSave() {
     return saveTo(m_document->path());
 }
 
+QString MainWindow::completeSavePath(const QString &chosen, const QStringList &suffixes) {
+    if (chosen.isEmpty() || suffixes.isEmpty())
+        return chosen;
+    if (suffixes.contains(QFileInfo(chosen).suffix(), Qt::CaseInsensitive))
+        return chosen;
+    const QString path = chosen + QLatin1Char('.') + suffixes.front();
+    if (QFileInfo::exists(path) &&
+        QMessageBox::question(
+            this, tr("Replace File"),
+            tr("%1 already exists. Replace it?").arg(QDir::toNativeSeparators(path))) !=
+            QMessageBox::Yes)
+        return QString();
+    return path;
+}
+
+QString MainWindow::askSavePath(const QString &title, const QString &filter,
+                                const QStringList &suffixes) {
+    return completeSavePath(
+        QFileDialog::getSaveFileName(
+            this, title,
+            m_document->path().isEmpty() ? QString() : QFileInfo(m_document->path()).absolutePath(),
+            filter),
+        suffixes);
+}
+
 bool MainWindow::fileSaveAs() {
-    QString path = QFileDialog::getSaveFileName(this, tr("Save As"), m_document->path(),
-                                                tr("Rung Studio projects (*.rung)"));
+    const QString path =
+        completeSavePath(QFileDialog::getSaveFileName(this, tr("Save As"), m_document->path(),
+                                                      tr("Rung Studio projects (*.rung)")),
+                         {QString::fromLatin1(model::kProjectExtension)});
     if (path.isEmpty())
         return false;
-    if (!path.endsWith(QLatin1String(".rung")))
-        path += QLatin1String(".rung");
     return saveTo(path);
 }
 
@@ -394,124 +305,25 @@ void MainWindow::importListing() {
 }
 
 void MainWindow::exportListing() {
-    const QString path = QFileDialog::getSaveFileName(
-        this, tr("Export Instruction List"), QString(), tr("Instruction lists (*.il *.txt)"));
-    if (path.isEmpty())
-        return;
-    QSaveFile file(path);
-    const QByteArray bytes = m_document->listingText().toUtf8();
-    if (!file.open(QIODevice::WriteOnly) || file.write(bytes) != bytes.size() || !file.commit())
-        QMessageBox::critical(this, tr("Cannot export"),
-                              tr("%1: %2").arg(path, file.errorString()));
-}
-
-void MainWindow::exportImage(const QString &format) {
-    const QString path = QFileDialog::getSaveFileName(this, tr("Export Ladder"), QString(),
-                                                      QStringLiteral("*.%1").arg(format));
-    if (path.isEmpty())
-        return;
+    const QString path =
+        askSavePath(tr("Export Instruction List"), tr("Instruction lists (*.il *.txt)"),
+                    {QStringLiteral("il"), QStringLiteral("txt")});
     QString error;
-    if (!exportLadder(path.endsWith(QLatin1Char('.') + format, Qt::CaseInsensitive)
-                          ? path
-                          : path + QLatin1Char('.') + format,
-                      &error))
+    if (m_ilTimer.isActive())
+        applyListing();
+    if (!path.isEmpty() &&
+        !ProgramExport(*m_document, m_ladder->namesFirst()).listing(path, &error, m_listingErrors))
         QMessageBox::critical(this, tr("Cannot export"), error);
 }
 
-bool MainWindow::exportLadder(const QString &path, QString *error) {
-    const QString format = QFileInfo(path).suffix().toLower();
-    const model::Project &project = m_document->project();
-    const editor::LadderMetrics m = exportMetrics(project);
-    const QSize size(static_cast<int>(m.width()), static_cast<int>(programHeight(project, m)) + 20);
-    auto fail = [&] {
-        if (error)
-            *error = tr("%1 could not be written").arg(QDir::toNativeSeparators(path));
-        return false;
-    };
-    if (format == QLatin1String("png")) {
-        QImage image(size, QImage::Format_ARGB32);
-        image.fill(Qt::white);
-        QPainter p(&image);
-        paintProgram(p, *m_document, m, m_ladder->namesFirst(), 0, 10, [] {});
-        p.end();
-        return image.save(path) || fail();
-    }
-    if (format == QLatin1String("svg")) {
-        QFile probe(path); // QSvgGenerator does not say when it cannot write
-        if (!probe.open(QIODevice::WriteOnly))
-            return fail();
-        probe.close();
-        QSvgGenerator svg;
-        svg.setFileName(path);
-        svg.setSize(size);
-        svg.setViewBox(QRect(QPoint(0, 0), size));
-        svg.setTitle(QFileInfo(m_document->path()).baseName());
-        QPainter p(&svg);
-        paintProgram(p, *m_document, m, m_ladder->namesFirst(), 0, 10, [] {});
-        return true;
-    }
-    if (format == QLatin1String("pdf")) {
-        // A PDF is the printout: pages with the header, rung numbers and comments.
-        QPrinter printer(QPrinter::HighResolution);
-        printer.setOutputFormat(QPrinter::PdfFormat);
-        printer.setOutputFileName(path);
-        printer.setPageSize(QPageSize(QPageSize::A4));
-        printer.setPageOrientation(QPageLayout::Landscape);
-        printer.setPageMargins(QMarginsF(12, 10, 12, 10), QPageLayout::Millimeter);
-        printer.setDocName(QFileInfo(m_document->path()).baseName());
-        return printLadder(&printer) || fail();
-    }
-    if (error)
-        *error = tr("%1: the ladder can be exported as PDF, SVG or PNG").arg(path);
-    return false;
-}
-
-bool MainWindow::printLadder(QPrinter *printer) {
-    const model::Project &project = m_document->project();
-    const editor::LadderMetrics m = exportMetrics(project);
-    QPainter p;
-    if (!p.begin(printer))
-        return false;
-    // The ladder fills the page's width between the margins; the page header is drawn in the
-    // same units, so it scales with it.
-    const QRect page = printer->pageLayout().paintRectPixels(printer->resolution());
-    const double scale = page.width() / m.width();
-    p.scale(scale, scale);
-    const double pageHeight = page.height() / scale;
-    constexpr double kTop = 40; // below the header and its rule
-    int pages = 1;
-    paintProgram(
-        p, *m_document, m, m_ladder->namesFirst(), pageHeight, kTop, [&] { ++pages; }, false);
-    const QString projectName =
-        m_document->path().isEmpty() ? tr("Untitled") : QFileInfo(m_document->path()).fileName();
-    const QString target =
-        tr("%1 %2").arg(project.target->displayName, m_document->modelVariant()->name);
-    const QString date = QLocale().toString(QDate::currentDate(), QLocale::ShortFormat);
-    int pageNumber = 1;
-    QFont headerFont(QStringLiteral("DejaVu Sans"));
-    headerFont.setPixelSize(13); // in the drawing's units, like the ladder's own text
-    QFont bold = headerFont;
-    bold.setBold(true);
-    auto drawHeader = [&] {
-        // Project on the left, PLC in the middle, date and page on the right, a rule below.
-        const QRectF line(0, 0, m.width(), 24);
-        p.setPen(Qt::black);
-        p.setFont(bold);
-        p.drawText(line, Qt::AlignLeft | Qt::AlignVCenter, projectName);
-        p.setFont(headerFont);
-        p.drawText(line, Qt::AlignHCenter | Qt::AlignVCenter, target);
-        p.drawText(line, Qt::AlignRight | Qt::AlignVCenter,
-                   tr("%1    page %2 of %3").arg(date).arg(pageNumber).arg(pages));
-        p.setPen(QPen(Qt::darkGray, 1));
-        p.drawLine(QPointF(0, 28), QPointF(m.width(), 28));
-    };
-    drawHeader();
-    paintProgram(p, *m_document, m, m_ladder->namesFirst(), pageHeight, kTop, [&] {
-        printer->newPage();
-        ++pageNumber;
-        drawHeader();
-    });
-    return p.end();
+void MainWindow::exportImage(const QString &format) {
+    const QString path =
+        askSavePath(tr("Export Ladder"), QStringLiteral("*.%1").arg(format), {format});
+    if (path.isEmpty())
+        return;
+    QString error;
+    if (!ProgramExport(*m_document, m_ladder->namesFirst()).ladder(path, &error))
+        QMessageBox::critical(this, tr("Cannot export"), error);
 }
 
 void MainWindow::printPreview() {
@@ -520,7 +332,7 @@ void MainWindow::printPreview() {
     printer.setPageMargins(QMarginsF(12, 10, 12, 10), QPageLayout::Millimeter);
     QPrintPreviewDialog dialog(&printer, this);
     connect(&dialog, &QPrintPreviewDialog::paintRequested, this,
-            [this](QPrinter *pr) { printLadder(pr); });
+            [this](QPrinter *pr) { ProgramExport(*m_document, m_ladder->namesFirst()).print(pr); });
     dialog.exec();
 }
 

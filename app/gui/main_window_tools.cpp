@@ -1,29 +1,28 @@
 #include "main_window.h"
 
+#include "symbol_table.h"
+
 #include "editor/cross_reference_view.h"
 #include "editor/ladder_view.h"
-#include "editor/symbols_csv.h"
 
 #include "model/convert/convert.h"
 #include "model/ladder/ladder_text.h"
-#include "model/project/file_read.h"
+#include "model/ladder/replace_device.h"
 
 #include <QApplication>
 #include <QClipboard>
-#include <QDir>
 #include <QDockWidget>
 #include <QFileDialog>
 #include <QInputDialog>
 #include <QLineEdit>
 #include <QMessageBox>
 #include <QMimeData>
-#include <QSaveFile>
 #include <QStatusBar>
 #include <QTreeWidget>
 #include <QVBoxLayout>
 
-// Clipboard, find and replace, cross reference and the symbol table's CSV: the tools that
-// work on the whole program rather than one cell.
+// Clipboard, find and replace, cross reference: the tools that work on the whole program
+// rather than one cell.
 
 namespace rung::app {
 
@@ -31,10 +30,6 @@ namespace {
 
 const char *const kLadderMime = "application/x-rungstudio-ladder";
 const char *const kCellsMime = "application/x-rungstudio-cells";
-
-bool sameDevice(const model::Operand &o, const model::Address &a) {
-    return o.kind == model::Operand::Kind::Device && o.address == a;
-}
 
 } // namespace
 
@@ -153,7 +148,6 @@ bool MainWindow::findDevice(const QString &text, bool backwards) {
 }
 
 void MainWindow::replaceDevice() {
-    const model::Target &t = m_document->target();
     bool ok = false;
     const QString from = QInputDialog::getText(
         this, tr("Replace Device"), tr("Replace the device:"), QLineEdit::Normal, QString(), &ok);
@@ -169,7 +163,6 @@ void MainWindow::replaceDevice() {
         QMessageBox::warning(this, tr("Replace Device"), error);
     else
         statusBar()->showMessage(tr("%n place(s) changed", nullptr, count), 5000);
-    Q_UNUSED(t);
 }
 
 int MainWindow::replaceDeviceEverywhere(const QString &fromText, const QString &toText,
@@ -177,33 +170,15 @@ int MainWindow::replaceDeviceEverywhere(const QString &fromText, const QString &
     const model::Target &t = m_document->target();
     auto a = model::parseAddress(t, fromText, m_document->modelVariant());
     auto b = model::parseAddress(t, toText, m_document->modelVariant());
-    if (auto *e = std::get_if<model::AddressError>(&a)) {
-        *error = e->message;
-        return -1;
-    }
-    if (auto *e = std::get_if<model::AddressError>(&b)) {
-        *error = e->message;
-        return -1;
-    }
+    for (const auto *parsed : {&a, &b})
+        if (const auto *e = std::get_if<model::AddressError>(parsed)) {
+            *error = e->message;
+            return -1;
+        }
     const model::Address from = std::get<model::Address>(a);
     const model::Address to = std::get<model::Address>(b);
     std::vector<model::Rung> rungs = m_document->ladder().rungs;
-    int count = 0;
-    for (model::Rung &r : rungs) {
-        for (model::Cell &c : r.cells)
-            for (model::Operand &o : c.contact.operands)
-                if (sameDevice(o, from)) {
-                    o.address = to;
-                    ++count;
-                }
-        for (auto &out : r.outputs)
-            if (out)
-                for (model::Operand &o : out->operands)
-                    if (sameDevice(o, from)) {
-                        o.address = to;
-                        ++count;
-                    }
-    }
+    const int count = model::replaceDevice(rungs, from, to);
     if (count > 0)
         m_document->replaceRungs(
             0, static_cast<int>(rungs.size()), rungs,
@@ -231,46 +206,11 @@ void MainWindow::buildCrossReference() {
 }
 
 void MainWindow::exportSymbols() {
-    const QString path = QFileDialog::getSaveFileName(this, tr("Export Symbols"), QString(),
-                                                      tr("CSV files (*.csv)"));
+    const QString path =
+        askSavePath(tr("Export Symbols"), tr("CSV files (*.csv)"), {QStringLiteral("csv")});
     QString error;
-    if (!path.isEmpty() && !exportSymbolsTo(path, &error))
+    if (!path.isEmpty() && !m_symbols->exportCsv(path, &error))
         QMessageBox::critical(this, tr("Cannot export"), error);
-}
-
-bool MainWindow::exportSymbolsTo(const QString &path, QString *error) {
-    QSaveFile file(path);
-    const QByteArray bytes =
-        editor::symbolsToCsv(m_document->target(), m_document->project().symbols).toUtf8();
-    if (!file.open(QIODevice::WriteOnly) || file.write(bytes) != bytes.size() || !file.commit()) {
-        if (error)
-            *error = tr("%1: %2").arg(QDir::toNativeSeparators(path), file.errorString());
-        return false;
-    }
-    return true;
-}
-
-bool MainWindow::importSymbols(const QString &path, QString *error) {
-    QByteArray bytes;
-    QString ioError;
-    switch (model::readAtMost(path, kMaxTextFileBytes, &bytes, &ioError)) {
-    case model::ReadStatus::CannotOpen:
-        *error = tr("%1: %2").arg(path, ioError);
-        return false;
-    case model::ReadStatus::TooLarge:
-        *error = tr("%1 is larger than 64 MB").arg(path);
-        return false;
-    case model::ReadStatus::Ok:
-        break;
-    }
-    const editor::SymbolsCsv csv = editor::symbolsFromCsv(
-        m_document->target(), m_document->modelVariant(), QString::fromUtf8(bytes));
-    if (!csv.ok()) {
-        *error = tr("%1, line %2: %3").arg(path).arg(csv.errorLine).arg(csv.error);
-        return false;
-    }
-    m_document->setSymbols(csv.symbols);
-    return true;
 }
 
 } // namespace rung::app

@@ -135,7 +135,8 @@ public:
             !expect(root, "rungs", QJsonValue::Array, QString()) ||
             !expect(root, "symbols", QJsonValue::Array, QString()) ||
             !expect(root, "setValues", QJsonValue::Object, QString()) ||
-            !expect(root, "watchLists", QJsonValue::Array, QString()))
+            !expect(root, "watchLists", QJsonValue::Array, QString()) ||
+            !expect(root, "pendingListing", QJsonValue::String, QString()))
             return std::nullopt;
         Project p;
         const QString targetId = root.value(QStringLiteral("target")).toString();
@@ -210,6 +211,7 @@ public:
             }
             p.watchLists.push_back(list);
         }
+        p.pendingListing = root.value(QStringLiteral("pendingListing")).toString();
         return p;
     }
 
@@ -438,6 +440,8 @@ QByteArray projectToJson(const Project &project) {
         watch.append(o);
     }
     root.insert(QStringLiteral("watchLists"), watch);
+    if (!project.pendingListing.isEmpty())
+        root.insert(QStringLiteral("pendingListing"), project.pendingListing);
     // Indented output: one rung's change stays within its own lines in a diff.
     return QJsonDocument(root).toJson(QJsonDocument::Indented);
 }

@@ -32,6 +32,10 @@ struct Project {
     std::vector<Symbol> symbols;
     std::map<Address, qint64> setValues; // VPC timer/counter set values kept in the PLC
     std::vector<WatchList> watchLists;
+    // The instruction list as the user typed it when it had errors the program could not take
+    // (the program above is then the last valid one): saved so that reopening shows what was
+    // typed, errors and all. Empty when the list and the program agree.
+    QString pendingListing;
 
     const Symbol *symbol(const Address &address) const;
 };

@@ -1,4 +1,5 @@
 #include "app/cli/cli.h"
+#include "app/cli/cli_language.h"
 
 #include "model/project/project.h"
 
@@ -225,6 +226,56 @@ TEST(CliBinary, SpeaksTheLanguageOfTheLocale) {
                       .toStdString(),
                   expected.toStdString());
     }
+}
+
+// --lang picks the language whatever the locale says; what it should print is again what the
+// same command prints with that catalogue loaded.
+TEST(CliBinary, LangPicksTheLanguageOverTheLocale) {
+    QTemporaryDir dir;
+    const QString file = write(dir, QStringLiteral("g.il"), "LD X0\nOUT X1\n");
+    const QStringList args{QStringLiteral("check"), file, QStringLiteral("--target"),
+                           QStringLiteral("vigor")};
+    const auto runBinary = [&](const QStringList &options, const QString &lang, int *code) {
+        QProcessEnvironment env = QProcessEnvironment::systemEnvironment();
+        for (const char *name : {"LC_ALL", "LC_MESSAGES", "LANGUAGE"})
+            env.remove(QString::fromLatin1(name));
+        env.insert(QStringLiteral("LANG"), lang);
+        QProcess p;
+        p.setProcessEnvironment(env);
+        p.start(QStringLiteral(RUNG_CLI_PATH), options);
+        EXPECT_TRUE(p.waitForFinished(30000));
+        *code = p.exitCode();
+        return QString::fromUtf8(p.readAllStandardOutput() + p.readAllStandardError());
+    };
+    std::unique_ptr<QCoreApplication> app;
+    int argc = 1;
+    char arg0[] = "test_cli";
+    char *argv[] = {arg0, nullptr};
+    if (!QCoreApplication::instance())
+        app = std::make_unique<QCoreApplication>(argc, argv);
+    QTranslator translator;
+    ASSERT_TRUE(translator.load(QStringLiteral(RUNG_QM_DIR "/rungstudio_hu")));
+    QCoreApplication::installTranslator(&translator);
+    const QString hungarian = cli(args).out;
+    QCoreApplication::removeTranslator(&translator);
+    const QString english = cli(args).out;
+    ASSERT_NE(hungarian, english);
+    int code = 0;
+    EXPECT_EQ(runBinary(QStringList{QStringLiteral("--lang"), QStringLiteral("hu")} + args,
+                        QStringLiteral("C"), &code)
+                  .toStdString(),
+              hungarian.toStdString());
+    EXPECT_EQ(code, 1);
+    EXPECT_EQ(runBinary(args + QStringList{QStringLiteral("--lang=en")},
+                        QStringLiteral("it_IT.UTF-8"), &code)
+                  .toStdString(),
+              english.toStdString());
+    const QString wrong =
+        runBinary(QStringList{QStringLiteral("--lang"), QStringLiteral("de")} + args,
+                  QStringLiteral("C"), &code);
+    EXPECT_EQ(code, 2);
+    EXPECT_TRUE(wrong.contains(QStringLiteral("--lang must be en, hu or it")))
+        << wrong.toStdString();
 }
 
 // The C locale gets English with its plural forms, not the "(s)" of the source text.
@@ -491,4 +542,28 @@ TEST(CliConvert, TheReasonsForWritingNothingAreTheDocumentedCodes) {
         r.err.contains(QStringLiteral("m.il:2:1: error: MPP without a matching MPS [ST002]")))
         << r.err.toStdString();
     EXPECT_FALSE(r.err.contains(QStringLiteral("[CV")));
+}
+
+TEST(CliLanguage, TheOptionIsTakenOutOfTheArgumentsWhereverItIs) {
+    QStringList args{QStringLiteral("rungstudio-cli"), QStringLiteral("check"),
+                     QStringLiteral("--lang"), QStringLiteral("it"), QStringLiteral("a.il")};
+    QString language;
+    QString error;
+    ASSERT_TRUE(rung::app::takeLanguageOption(&args, &language, &error));
+    EXPECT_EQ(language, QStringLiteral("it"));
+    EXPECT_EQ(args, (QStringList{QStringLiteral("rungstudio-cli"), QStringLiteral("check"),
+                                 QStringLiteral("a.il")}));
+    args = {QStringLiteral("rungstudio-cli"), QStringLiteral("--lang=hu"), QStringLiteral("check")};
+    ASSERT_TRUE(rung::app::takeLanguageOption(&args, &language, &error));
+    EXPECT_EQ(language, QStringLiteral("hu"));
+    EXPECT_EQ(args, (QStringList{QStringLiteral("rungstudio-cli"), QStringLiteral("check")}));
+    args = {QStringLiteral("rungstudio-cli"), QStringLiteral("check")};
+    ASSERT_TRUE(rung::app::takeLanguageOption(&args, &language, &error));
+    EXPECT_TRUE(language.isEmpty()); // the locale decides
+    for (const QStringList &bad : {QStringList{QStringLiteral("x"), QStringLiteral("--lang")},
+                                   QStringList{QStringLiteral("x"), QStringLiteral("--lang=fr")}}) {
+        args = bad;
+        EXPECT_FALSE(rung::app::takeLanguageOption(&args, &language, &error));
+        EXPECT_EQ(error, QStringLiteral("--lang must be en, hu or it"));
+    }
 }

@@ -1,5 +1,5 @@
 // One QApplication for every GUI test, on the offscreen platform (tests/CMakeLists.txt).
-#include "app/gui/main_window.h"
+#include "app/gui/recovery.h"
 
 #include <QApplication>
 #include <QSettings>
@@ -22,7 +22,7 @@ int main(int argc, char **argv) {
     // Recovery files in a folder of this process: the tests of another process must not
     // see them as work orphaned by a crash.
     QTemporaryDir recoveryDir;
-    rung::app::MainWindow::setRecoveryDirectory(recoveryDir.path());
+    rung::app::RecoveryFile::setDirectory(recoveryDir.path());
     QApplication::setOrganizationName(QStringLiteral("RungStudioTests"));
     QApplication::setApplicationName(QStringLiteral("Rung Studio Tests"));
     ::testing::InitGoogleTest(&argc, argv);

@@ -10,25 +10,20 @@
 #include <QTest>
 #include <QUndoStack>
 
+#include "tests/editor/window_fixture.h"
+
 #include <gtest/gtest.h>
 
 using namespace rung;
 
 namespace {
 
-struct CellFixture : ::testing::Test {
-    app::MainWindow window;
-    editor::LadderView *view = nullptr;
+struct CellFixture : test::WindowFixture {
     void SetUp() override {
-        window.newProject(model::Target::get(model::Family::Vigor), QStringLiteral("VB"));
-        std::vector<model::Diagnostic> errors;
-        ASSERT_TRUE(window.document()->setListing(
-            QStringLiteral("LD X0\nAND X1\nANI X2\nOUT Y0\nLD X3\nOUT Y1\nEND\n"), &errors));
-        view = window.ladderView();
-        window.show();
-        view->setFocus();
+        WindowFixture::SetUp();
+        load("LD X0\nAND X1\nANI X2\nOUT Y0\nLD X3\nOUT Y1\nEND\n");
+        showWithLadderFocused();
     }
-    QString listing() { return window.document()->listingText(); }
 };
 
 } // namespace

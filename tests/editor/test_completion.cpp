@@ -10,13 +10,15 @@
 #include <QLineEdit>
 #include <QTest>
 
+#include "tests/editor/window_fixture.h"
+
 #include <gtest/gtest.h>
 
 using namespace rung;
 
-TEST(CellCompletion, MnemonicsFirstThenTheDevicesInUse) {
-    app::MainWindow window;
-    window.newProject(model::Target::get(model::Family::Vigor), QStringLiteral("VB"));
+using CellCompletion = test::WindowFixture;
+
+TEST_F(CellCompletion, MnemonicsFirstThenTheDevicesInUse) {
     std::vector<model::Diagnostic> errors;
     ASSERT_TRUE(window.document()->setListing(
         QStringLiteral("LD X0\nAND X1\nOUT Y0\nLD M7\nOUT Y1\nEND\n"), &errors));
@@ -38,9 +40,7 @@ TEST(CellCompletion, MnemonicsFirstThenTheDevicesInUse) {
         EXPECT_TRUE(devices.contains(QString::fromLatin1(d))) << d;
 }
 
-TEST(CellCompletion, FollowsTheTargetOfTheOpenedProject) {
-    app::MainWindow window;
-    window.newProject(model::Target::get(model::Family::Vigor), QStringLiteral("VB"));
+TEST_F(CellCompletion, FollowsTheTargetOfTheOpenedProject) {
     window.newProject(model::Target::get(model::Family::Cpm1), QString());
     window.show();
     editor::LadderView *view = window.ladderView();

@@ -1,6 +1,7 @@
 // Export of the ladder (PNG, SVG, PDF = the printout), symbol names in place of addresses,
 // and rung comments, through the main window as the menus call them.
 
+#include "app/gui/ladder_export.h"
 #include "app/gui/main_window.h"
 #include "editor/ladder_view.h"
 #include "model/target/address.h"
@@ -15,22 +16,25 @@
 #include <QTemporaryDir>
 #include <QUndoStack>
 
+#include "tests/editor/window_fixture.h"
+
 #include <gtest/gtest.h>
 
 using namespace rung;
 
 namespace {
 
-struct ExportFixture : ::testing::Test {
-    app::MainWindow window;
+struct ExportFixture : test::WindowFixture {
     QTemporaryDir dir;
     void SetUp() override {
-        window.newProject(model::Target::get(model::Family::Vigor), QStringLiteral("VB"));
+        WindowFixture::SetUp();
         QString listing;
         for (int i = 0; i < 60; ++i) // several printed pages
             listing += QStringLiteral("LD X%1\nOUT Y%1\n").arg(QString::number(i % 8, 8));
-        std::vector<model::Diagnostic> errors;
-        ASSERT_TRUE(window.document()->setListing(listing + QStringLiteral("END\n"), &errors));
+        load(listing + QStringLiteral("END\n"));
+    }
+    bool exportLadder(const QString &path, QString *error) {
+        return app::ProgramExport(*window.document(), view->namesFirst()).ladder(path, error);
     }
     QByteArray read(const QString &name) {
         QFile f(dir.filePath(name));
@@ -42,7 +46,7 @@ struct ExportFixture : ::testing::Test {
 
 TEST_F(ExportFixture, PngShowsTheWholeLadder) {
     QString error;
-    ASSERT_TRUE(window.exportLadder(dir.filePath(QStringLiteral("ladder.png")), &error))
+    ASSERT_TRUE(exportLadder(dir.filePath(QStringLiteral("ladder.png")), &error))
         << error.toStdString();
     const QImage image(dir.filePath(QStringLiteral("ladder.png")));
     ASSERT_FALSE(image.isNull());
@@ -56,7 +60,7 @@ TEST_F(ExportFixture, PngShowsTheWholeLadder) {
 
 TEST_F(ExportFixture, SvgIsVectorTextWithTheDevices) {
     QString error;
-    ASSERT_TRUE(window.exportLadder(dir.filePath(QStringLiteral("ladder.svg")), &error))
+    ASSERT_TRUE(exportLadder(dir.filePath(QStringLiteral("ladder.svg")), &error))
         << error.toStdString();
     const QByteArray svg = read(QStringLiteral("ladder.svg"));
     EXPECT_TRUE(svg.contains("<svg"));
@@ -66,7 +70,7 @@ TEST_F(ExportFixture, SvgIsVectorTextWithTheDevices) {
 
 TEST_F(ExportFixture, PdfIsThePrintoutOnSeveralPages) {
     QString error;
-    ASSERT_TRUE(window.exportLadder(dir.filePath(QStringLiteral("ladder.pdf")), &error))
+    ASSERT_TRUE(exportLadder(dir.filePath(QStringLiteral("ladder.pdf")), &error))
         << error.toStdString();
     const QByteArray pdf = read(QStringLiteral("ladder.pdf"));
     ASSERT_TRUE(pdf.startsWith("%PDF"));
@@ -82,7 +86,7 @@ TEST_F(ExportFixture, EveryPrintedPageHasTheHeader) {
     ASSERT_TRUE(window.saveTo(dir.filePath(QStringLiteral("pump-station.rung"))));
     QString error;
     const QString pdf = dir.filePath(QStringLiteral("ladder.pdf"));
-    ASSERT_TRUE(window.exportLadder(pdf, &error)) << error.toStdString();
+    ASSERT_TRUE(exportLadder(pdf, &error)) << error.toStdString();
     QProcess pdftotext;
     pdftotext.start(QStringLiteral("pdftotext"),
                     {QStringLiteral("-layout"), pdf, QStringLiteral("-")});
@@ -106,10 +110,10 @@ TEST_F(ExportFixture, EveryPrintedPageHasTheHeader) {
 
 TEST_F(ExportFixture, AnUnwritablePlaceOrAnUnknownFormatSaysWhy) {
     QString error;
-    EXPECT_FALSE(window.exportLadder(QStringLiteral("/nonexistent-dir/ladder.png"), &error));
+    EXPECT_FALSE(exportLadder(QStringLiteral("/nonexistent-dir/ladder.png"), &error));
     EXPECT_TRUE(error.contains(QStringLiteral("could not be written"))) << error.toStdString();
-    EXPECT_FALSE(window.exportLadder(QStringLiteral("/nonexistent-dir/ladder.svg"), &error));
-    EXPECT_FALSE(window.exportLadder(dir.filePath(QStringLiteral("ladder.bmp")), &error));
+    EXPECT_FALSE(exportLadder(QStringLiteral("/nonexistent-dir/ladder.svg"), &error));
+    EXPECT_FALSE(exportLadder(dir.filePath(QStringLiteral("ladder.bmp")), &error));
     EXPECT_TRUE(error.contains(QStringLiteral("PDF, SVG or PNG"))) << error.toStdString();
 }
 
@@ -119,9 +123,9 @@ TEST_F(ExportFixture, NamesInPlaceOfAddressesReachTheExport) {
                            model::parseAddress(window.document()->target(), QStringLiteral("X0"))),
                        QStringLiteral("Start"), QString()}});
     QString error;
-    ASSERT_TRUE(window.exportLadder(dir.filePath(QStringLiteral("plain.svg")), &error));
+    ASSERT_TRUE(exportLadder(dir.filePath(QStringLiteral("plain.svg")), &error));
     window.ladderView()->setNamesFirst(true);
-    ASSERT_TRUE(window.exportLadder(dir.filePath(QStringLiteral("names.svg")), &error));
+    ASSERT_TRUE(exportLadder(dir.filePath(QStringLiteral("names.svg")), &error));
     const QByteArray plain = read(QStringLiteral("plain.svg"));
     const QByteArray names = read(QStringLiteral("names.svg"));
     // Both show the name and the address; with names first the name is the large label,
@@ -152,7 +156,7 @@ TEST_F(ExportFixture, CompareContactsShowBothOperands) {
     ASSERT_TRUE(window.document()->setListing(
         QStringLiteral("LD X0\nAND>= D100 K1000\nOUT Y0\nEND\n"), &errors));
     QString error;
-    ASSERT_TRUE(window.exportLadder(dir.filePath(QStringLiteral("compare.svg")), &error))
+    ASSERT_TRUE(exportLadder(dir.filePath(QStringLiteral("compare.svg")), &error))
         << error.toStdString();
     const QByteArray svg = read(QStringLiteral("compare.svg"));
     EXPECT_TRUE(svg.contains(">D100<")) << svg.toStdString();
@@ -176,7 +180,7 @@ TEST_F(ExportFixture, CoilLettersAreBold) {
         QStringLiteral("LD X0\nSET Y0\nLD X1\nRST Y0\nLD X2\nPLS M0\nLD X3\nPLF M1\nEND\n"),
         &errors));
     QString error;
-    ASSERT_TRUE(window.exportLadder(dir.filePath(QStringLiteral("coils.svg")), &error))
+    ASSERT_TRUE(exportLadder(dir.filePath(QStringLiteral("coils.svg")), &error))
         << error.toStdString();
     const QString svg = QString::fromUtf8(read(QStringLiteral("coils.svg")));
     for (const char *mark : {"S", "R", "P", "F"}) {

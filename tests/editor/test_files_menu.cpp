@@ -8,26 +8,15 @@
 #include <QSettings>
 #include <QTemporaryDir>
 
+#include "tests/editor/window_fixture.h"
+
 #include <gtest/gtest.h>
 
 using namespace rung;
 
-namespace {
-
-QMenu *fileSubmenu(app::MainWindow &window, const QString &title) {
-    for (QAction *top : window.menuBar()->actions())
-        if (top->menu())
-            for (QAction *a : top->menu()->actions())
-                if (a->menu() && a->text().remove(QLatin1Char('&')) == title)
-                    return a->menu();
-    return nullptr;
-}
-
-} // namespace
-
 TEST(FilesMenu, ExamplesForEveryTargetOpenAsUntitledCopies) {
     app::MainWindow window;
-    QMenu *examples = fileSubmenu(window, QStringLiteral("Examples"));
+    QMenu *examples = test::submenu(window, QStringLiteral("Examples"));
     ASSERT_NE(examples, nullptr);
     QStringList targets;
     for (QAction *sub : examples->actions()) {
@@ -52,7 +41,7 @@ TEST(FilesMenu, ExamplesForEveryTargetOpenAsUntitledCopies) {
 // "cpm1/difu-difd.rung" names its two instructions as the manual writes them.
 TEST(FilesMenu, ExamplesHaveReadableTitles) {
     app::MainWindow window;
-    QMenu *examples = fileSubmenu(window, QStringLiteral("Examples"));
+    QMenu *examples = test::submenu(window, QStringLiteral("Examples"));
     ASSERT_NE(examples, nullptr);
     QStringList titles;
     for (QAction *sub : examples->actions())
@@ -78,7 +67,7 @@ TEST(FilesMenu, RecentFilesAreRememberedNewestFirst) {
         ASSERT_TRUE(window.openFile(a, QString(), true));
     }
     app::MainWindow next; // the next start
-    QMenu *recent = fileSubmenu(next, QStringLiteral("Open Recent"));
+    QMenu *recent = test::submenu(next, QStringLiteral("Open Recent"));
     ASSERT_NE(recent, nullptr);
     ASSERT_GE(recent->actions().size(), 2);
     EXPECT_EQ(recent->actions().at(0)->text(), QStringLiteral("a.rung"));

@@ -9,22 +9,19 @@
 #include <QStatusBar>
 #include <QTest>
 
+#include "tests/editor/window_fixture.h"
+
 #include <gtest/gtest.h>
 
 using namespace rung;
 
 namespace {
 
-struct FindFixture : ::testing::Test {
-    app::MainWindow window;
-    editor::LadderView *view = nullptr;
+struct FindFixture : test::WindowFixture {
     int output = 0;
     void SetUp() override {
-        window.newProject(model::Target::get(model::Family::Vigor), QStringLiteral("VB"));
-        std::vector<model::Diagnostic> errors;
-        ASSERT_TRUE(window.document()->setListing(
-            QStringLiteral("LD X0\nOUT Y0\nLD Y0\nAND X0\nOUT Y1\nLD X1\nSET Y0\nEND\n"), &errors));
-        view = window.ladderView();
+        WindowFixture::SetUp();
+        load("LD X0\nOUT Y0\nLD Y0\nAND X0\nOUT Y1\nLD X1\nSET Y0\nEND\n");
         output = view->metrics().gridColumns;
         window.show();
         ASSERT_TRUE(QTest::qWaitForWindowActive(&window));

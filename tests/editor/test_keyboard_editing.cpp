@@ -12,20 +12,18 @@
 #include <QTest>
 #include <QUndoStack>
 
+#include "tests/editor/window_fixture.h"
+
 #include <gtest/gtest.h>
 
 using namespace rung;
 
 namespace {
 
-struct KeyboardFixture : ::testing::Test {
-    app::MainWindow window;
-    editor::LadderView *view = nullptr;
+struct KeyboardFixture : test::WindowFixture {
     void SetUp() override {
-        window.newProject(model::Target::get(model::Family::Vigor), QStringLiteral("VB"));
-        view = window.ladderView();
-        window.show();
-        view->setFocus();
+        WindowFixture::SetUp();
+        showWithLadderFocused();
     }
     void start(model::Family family, const char *listing) {
         window.newProject(model::Target::get(family), QString());
@@ -34,16 +32,13 @@ struct KeyboardFixture : ::testing::Test {
         window.document()->undoStack()->clear();
     }
     // A function key (with its modifiers), then the operand into the cell editor it opens.
+    // ... and the editor closes: what was typed was taken.
     void type(Qt::Key key, Qt::KeyboardModifiers mods, const char *operand) {
-        QTest::keyClick(view, key, mods);
+        typeIntoCell(key, operand, mods);
         QLineEdit *edit = view->inlineEditor();
-        ASSERT_TRUE(edit->isVisible()) << "key " << key;
-        QTest::keyClicks(edit, QString::fromLatin1(operand));
-        QTest::keyClick(edit, Qt::Key_Return);
         ASSERT_FALSE(edit->isVisible())
             << edit->text().toStdString() << ": " << edit->toolTip().toStdString();
     }
-    QString listing() { return window.document()->listingText(); }
     const model::Rung &rung(int i) {
         return window.document()->ladder().rungs[static_cast<std::size_t>(i)];
     }

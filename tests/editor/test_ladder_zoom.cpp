@@ -6,6 +6,7 @@
 #include "editor/ladder_view.h"
 
 #include <QAction>
+#include <QScrollBar>
 #include <QSignalSpy>
 #include <QTest>
 
@@ -17,7 +18,7 @@ TEST(LadderZoom, FitToWidthShrinksTheDrawingIntoANarrowViewButNeverEnlargesIt) {
     editor::Document document;
     document.reset(model::Target::get(model::Family::Vigor), QStringLiteral("VB"));
     editor::LadderView view(&document);
-    view.resize(600, 400);
+    view.resize(850, 400); // narrower than the drawing, wide enough to fit it readably
     view.show();
     ASSERT_TRUE(QTest::qWaitForWindowExposed(&view));
     const double fullWidth = view.metrics().width();
@@ -32,9 +33,28 @@ TEST(LadderZoom, FitToWidthShrinksTheDrawingIntoANarrowViewButNeverEnlargesIt) {
     view.resize(2400, 400); // wider than the drawing: stays at 100 %
     QCoreApplication::processEvents();
     EXPECT_DOUBLE_EQ(view.zoom(), 1.0);
-    view.resize(700, 400);
+    view.resize(static_cast<int>(fullWidth * 0.95), 400);
     QCoreApplication::processEvents();
+    EXPECT_LT(view.zoom(), 1.0);
     EXPECT_LE(view.metrics().width(), view.viewport()->width());
+}
+
+// Side by side with the list on a small screen: the text stays readable (labels at 10 px or
+// more, the names below them at 8 px or more) and the drawing scrolls instead.
+TEST(LadderZoom, FitToWidthKeepsTheTextReadableAndScrollsInstead) {
+    editor::Document document;
+    document.reset(model::Target::get(model::Family::Vigor), QStringLiteral("VB"));
+    editor::LadderView view(&document);
+    view.resize(400, 400);
+    view.show();
+    ASSERT_TRUE(QTest::qWaitForWindowExposed(&view));
+    view.setFitWidth(true);
+    const editor::LadderMetrics m = view.metrics();
+    EXPECT_GE(static_cast<int>(m.rowHeight * 0.24), 10); // ladder_painter's label size
+    EXPECT_GE(static_cast<int>(m.rowHeight * 0.2), 8);   // and the names'
+    EXPECT_GT(m.width(), view.viewport()->width());
+    EXPECT_GT(view.horizontalScrollBar()->maximum(), 0); // the rest is a scroll away
+    EXPECT_TRUE(view.fitWidth());
 }
 
 TEST(LadderZoom, TheUsersZoomEndsFitToWidth) {

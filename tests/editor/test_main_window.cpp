@@ -1,4 +1,5 @@
 #include "app/gui/main_window.h"
+#include "app/gui/symbol_table.h"
 #include "editor/il_editor.h"
 #include "editor/ladder_view.h"
 #include "editor/problems_view.h"
@@ -22,28 +23,20 @@
 
 #include "tests/test_files.h"
 
+#include "tests/editor/window_fixture.h"
+
 #include <gtest/gtest.h>
 
 using namespace rung;
 
 namespace {
 
-struct Fixture : ::testing::Test {
-    app::MainWindow window;
+struct Fixture : test::WindowFixture {
     void SetUp() override {
-        window.newProject(model::Target::get(model::Family::Vigor), QStringLiteral("VB"));
-        window.show();
-        window.ladderView()->setFocus();
+        WindowFixture::SetUp();
+        showWithLadderFocused();
     }
-    QString listing() { return window.document()->listingText(); }
-    editor::LadderView *ladder() { return window.ladderView(); }
-    void typeIntoCell(Qt::Key key, const char *operand) {
-        QTest::keyClick(ladder(), key);
-        QLineEdit *edit = ladder()->inlineEditor();
-        ASSERT_TRUE(edit->isVisible());
-        QTest::keyClicks(edit, QString::fromLatin1(operand));
-        QTest::keyClick(edit, Qt::Key_Return);
-    }
+    editor::LadderView *ladder() { return view; }
 };
 
 } // namespace
@@ -210,7 +203,7 @@ TEST_F(Fixture, AnEndlessDeviceIsRefusedAtTheLimit) {
     window.applyListing();
     EXPECT_FALSE(window.openFile(QStringLiteral("/dev/zero"), QStringLiteral("vigor"), true));
     QString error;
-    EXPECT_FALSE(window.importSymbols(QStringLiteral("/dev/zero"), &error));
+    EXPECT_FALSE(window.symbolTable()->importCsv(QStringLiteral("/dev/zero"), &error));
     EXPECT_TRUE(error.contains(QStringLiteral("larger than 64 MB"))) << error.toStdString();
     EXPECT_EQ(listing(), QStringLiteral("LD X0\nOUT Y0\nEND\n"));
 }
@@ -436,7 +429,7 @@ TEST_F(Fixture, SymbolsImportFromCsvAndShowByName) {
         test::writeFile(dir, QStringLiteral("symbols.csv"),
                         "device,name,comment\nX0,Start,\"green, big\"\nY0,Pump,\n");
     QString error;
-    ASSERT_TRUE(window.importSymbols(path, &error)) << error.toStdString();
+    ASSERT_TRUE(window.symbolTable()->importCsv(path, &error)) << error.toStdString();
     const auto &symbols = window.document()->project().symbols;
     ASSERT_EQ(symbols.size(), 2u);
     EXPECT_EQ(symbols[0].comment, QStringLiteral("green, big"));
@@ -444,7 +437,7 @@ TEST_F(Fixture, SymbolsImportFromCsvAndShowByName) {
     ASSERT_TRUE(bad.open(QIODevice::WriteOnly));
     bad.write("X9,Oops,\n");
     bad.close();
-    EXPECT_FALSE(window.importSymbols(bad.fileName(), &error));
+    EXPECT_FALSE(window.symbolTable()->importCsv(bad.fileName(), &error));
     EXPECT_TRUE(error.endsWith(QStringLiteral("line 1: X9: X is numbered in octal")));
     window.document()->undoStack()->undo();
     EXPECT_TRUE(window.document()->project().symbols.empty());

@@ -7,18 +7,17 @@
 #include <QTest>
 #include <QUndoStack>
 
+#include "tests/editor/window_fixture.h"
+
 #include <gtest/gtest.h>
 
 using namespace rung;
 
 namespace {
 
-struct MouseFixture : ::testing::Test {
-    app::MainWindow window;
-    editor::LadderView *view = nullptr;
+struct MouseFixture : test::WindowFixture {
     void SetUp() override {
-        window.newProject(model::Target::get(model::Family::Vigor), QStringLiteral("VB"));
-        view = window.ladderView();
+        WindowFixture::SetUp();
         window.resize(1400, 900);
         window.show();
         ASSERT_TRUE(QTest::qWaitForWindowExposed(&window));
@@ -31,7 +30,6 @@ struct MouseFixture : ::testing::Test {
         QTest::mouseMove(view->viewport(), b);
         QTest::mouseRelease(view->viewport(), Qt::LeftButton, Qt::NoModifier, b);
     }
-    QString listing() { return window.document()->listingText(); }
 };
 
 } // namespace

@@ -11,6 +11,8 @@
 
 #include <QUndoStack>
 
+#include "tests/editor/window_fixture.h"
+
 #include <gtest/gtest.h>
 
 #include <set>
@@ -19,10 +21,9 @@ using namespace rung;
 
 namespace {
 
-struct Problems : ::testing::Test {
-    app::MainWindow window;
+struct Problems : test::WindowFixture {
     void SetUp() override {
-        window.newProject(model::Target::get(model::Family::Vigor), QStringLiteral("VB"));
+        WindowFixture::SetUp();
         window.show();
     }
     std::vector<model::Diagnostic> shown() {

@@ -9,26 +9,21 @@
 #include <QTest>
 #include <QUndoStack>
 
+#include "tests/editor/window_fixture.h"
+
 #include <gtest/gtest.h>
 
 using namespace rung;
 
 namespace {
 
-struct SelectionFixture : ::testing::Test {
-    app::MainWindow window;
-    editor::LadderView *view = nullptr;
+struct SelectionFixture : test::WindowFixture {
     void SetUp() override {
-        window.newProject(model::Target::get(model::Family::Vigor), QStringLiteral("VB"));
-        std::vector<model::Diagnostic> errors;
-        ASSERT_TRUE(window.document()->setListing(
-            QStringLiteral("LD X0\nOUT Y0\nLD X1\nOUT Y1\nLD X2\nOUT Y2\nEND\n"), &errors));
-        view = window.ladderView();
-        window.show();
-        view->setFocus();
+        WindowFixture::SetUp();
+        load("LD X0\nOUT Y0\nLD X1\nOUT Y1\nLD X2\nOUT Y2\nEND\n");
+        showWithLadderFocused();
         view->setCursor({0, 0, 0});
     }
-    QString listing() { return window.document()->listingText(); }
 };
 
 } // namespace

@@ -18,56 +18,33 @@
 #include <QTabWidget>
 #include <QTest>
 
+#include "tests/editor/window_fixture.h"
+
 #include <gtest/gtest.h>
 
 using namespace rung;
 
-namespace {
+using StatusBar = test::WindowFixture;
 
-QString statusText(app::MainWindow &window) {
-    QStringList texts;
-    for (QLabel *label : window.statusBar()->findChildren<QLabel *>())
-        texts << label->text();
-    return texts.join(QLatin1Char('|'));
-}
-
-QAction *menuAction(app::MainWindow &window, const QString &text) {
-    for (QAction *menu : window.menuBar()->actions())
-        if (menu->menu())
-            for (QAction *a : menu->menu()->actions())
-                if (a->text().remove(QLatin1Char('&')) == text)
-                    return a;
-    return nullptr;
-}
-
-void load(app::MainWindow &window, const char *listing) {
-    std::vector<model::Diagnostic> errors;
-    ASSERT_TRUE(window.document()->setListing(QString::fromLatin1(listing), &errors));
-}
-
-} // namespace
-
-TEST(StatusBar, ShowsTargetModelStepsAndTheCursor) {
-    app::MainWindow window;
-    window.newProject(model::Target::get(model::Family::Vigor), QStringLiteral("VB"));
+TEST_F(StatusBar, ShowsTargetModelStepsAndTheCursor) {
     window.show();
     ASSERT_TRUE(QTest::qWaitForWindowActive(&window));
-    load(window, "LD X0\nAND X1\nOUT Y0\nEND\n");
+    load("LD X0\nAND X1\nOUT Y0\nEND\n");
     const model::ModelVariant *vb =
         model::Target::get(model::Family::Vigor).model(QStringLiteral("VB"));
     ASSERT_NE(vb, nullptr);
     const int limit = vb->programSteps > 0
                           ? vb->programSteps
                           : model::Target::get(model::Family::Vigor).limits.programSteps;
-    EXPECT_TRUE(statusText(window).contains(QStringLiteral("Vigor VB")))
-        << statusText(window).toStdString();
-    EXPECT_TRUE(statusText(window).contains(QStringLiteral("4 / %1 steps").arg(limit)))
-        << statusText(window).toStdString();
+    EXPECT_TRUE(test::statusText(window).contains(QStringLiteral("Vigor VB")))
+        << test::statusText(window).toStdString();
+    EXPECT_TRUE(test::statusText(window).contains(QStringLiteral("4 / %1 steps").arg(limit)))
+        << test::statusText(window).toStdString();
 
     window.ladderView()->setFocus();
     window.ladderView()->setCursor({0, 0, 1});
-    EXPECT_TRUE(statusText(window).contains(QStringLiteral("Rung 1, row 1, column 2")))
-        << statusText(window).toStdString();
+    EXPECT_TRUE(test::statusText(window).contains(QStringLiteral("Rung 1, row 1, column 2")))
+        << test::statusText(window).toStdString();
 
     // In the list the cursor is a line and a column.
     auto *tabs = window.findChild<QTabWidget *>();
@@ -75,33 +52,34 @@ TEST(StatusBar, ShowsTargetModelStepsAndTheCursor) {
     tabs->setCurrentWidget(window.ilEditor());
     window.ilEditor()->setFocus();
     ASSERT_TRUE(window.ilEditor()->hasFocus());
-    EXPECT_TRUE(statusText(window).startsWith(QStringLiteral("Line ")))
-        << statusText(window).toStdString();
+    EXPECT_TRUE(test::statusText(window).startsWith(QStringLiteral("Line ")))
+        << test::statusText(window).toStdString();
     // Scintilla reports the move when it updates its view, after the call.
     QSignalSpy moved(window.ilEditor(), &QsciScintilla::cursorPositionChanged);
     window.ilEditor()->setCursorPosition(1, 3);
     if (moved.isEmpty()) {
         ASSERT_TRUE(moved.wait(3000));
     }
-    EXPECT_TRUE(statusText(window).contains(QStringLiteral("Line 2, column 4")))
-        << statusText(window).toStdString();
+    EXPECT_TRUE(test::statusText(window).contains(QStringLiteral("Line 2, column 4")))
+        << test::statusText(window).toStdString();
 
     // Another target and model: the status bar follows.
     window.newProject(model::Target::get(model::Family::Cpm1), QString());
-    EXPECT_TRUE(statusText(window).contains(model::Target::get(model::Family::Cpm1).displayName))
-        << statusText(window).toStdString();
-    EXPECT_TRUE(statusText(window).contains(QStringLiteral("1 / "))) // END
-        << statusText(window).toStdString();
+    EXPECT_TRUE(
+        test::statusText(window).contains(model::Target::get(model::Family::Cpm1).displayName))
+        << test::statusText(window).toStdString();
+    EXPECT_TRUE(test::statusText(window).contains(QStringLiteral("1 / "))) // END
+        << test::statusText(window).toStdString();
 }
 
-TEST(ProblemsPanel, TitleCountsTheFindingsAndAnEmptyListSaysSo) {
-    app::MainWindow window;
-    window.newProject(model::Target::get(model::Family::Vigor), QStringLiteral("VB"));
+using ProblemsPanel = test::WindowFixture;
+
+TEST_F(ProblemsPanel, TitleCountsTheFindingsAndAnEmptyListSaysSo) {
     auto *dock = window.findChild<QDockWidget *>(QStringLiteral("problemsDock"));
     ASSERT_NE(dock, nullptr);
     EXPECT_EQ(dock->windowTitle(), QStringLiteral("Problems"));
     // Y0 driven twice: a duplicate-coil warning at least.
-    load(window, "LD X0\nOUT Y0\nLD X1\nOUT Y0\nEND\n");
+    load("LD X0\nOUT Y0\nLD X1\nOUT Y0\nEND\n");
     const int warnings = window.problemsView()->count(model::Severity::Warning);
     const int errors = window.problemsView()->count(model::Severity::Error);
     ASSERT_GT(warnings + errors, 0);
@@ -123,7 +101,7 @@ TEST(ViewLayout, SideBySideOrTabsIsTheUsersChoiceRememberedForTheNextStart) {
         window.show();
         // Tabs by default.
         EXPECT_EQ(qobject_cast<QSplitter *>(window.ladderView()->parentWidget()), nullptr);
-        QAction *side = menuAction(window, QStringLiteral("Ladder and List Side by Side"));
+        QAction *side = test::menuAction(window, QStringLiteral("Ladder and List Side by Side"));
         ASSERT_NE(side, nullptr);
         EXPECT_FALSE(side->isChecked());
         side->trigger();
@@ -137,7 +115,7 @@ TEST(ViewLayout, SideBySideOrTabsIsTheUsersChoiceRememberedForTheNextStart) {
         app::MainWindow next; // as on the next start
         next.show();
         EXPECT_NE(qobject_cast<QSplitter *>(next.ladderView()->parentWidget()), nullptr);
-        QAction *side = menuAction(next, QStringLiteral("Ladder and List Side by Side"));
+        QAction *side = test::menuAction(next, QStringLiteral("Ladder and List Side by Side"));
         ASSERT_NE(side, nullptr);
         EXPECT_TRUE(side->isChecked());
         side->trigger(); // back to tabs

@@ -3,6 +3,7 @@
 // shows its rung.
 
 #include "app/gui/main_window.h"
+#include "app/gui/symbol_table.h"
 #include "editor/ladder_view.h"
 #include "editor/symbols_csv.h"
 #include "model/target/address.h"
@@ -17,6 +18,8 @@
 #include <QTest>
 #include <QTreeWidget>
 #include <QUndoStack>
+
+#include "tests/editor/window_fixture.h"
 
 #include <gtest/gtest.h>
 
@@ -36,14 +39,10 @@ QSet<QString> devicesListed(QTreeWidget *tree) {
     return names;
 }
 
-struct XrefFixture : ::testing::Test {
-    app::MainWindow window;
+struct XrefFixture : test::WindowFixture {
     void SetUp() override {
-        window.newProject(model::Target::get(model::Family::Vigor), QStringLiteral("VB"));
-        std::vector<model::Diagnostic> errors;
-        ASSERT_TRUE(window.document()->setListing(
-            QStringLiteral("LD X0\nOUT Y0\nLD Y0\nANI X1\nOUT Y1\nLD M0\nTMR T0 K10\nEND\n"),
-            &errors));
+        WindowFixture::SetUp();
+        load("LD X0\nOUT Y0\nLD Y0\nANI X1\nOUT Y1\nLD M0\nTMR T0 K10\nEND\n");
     }
     void filter(const QString &text) {
         window.crossReferenceDevice()->setText(QStringLiteral("#")); // a change either way
@@ -130,11 +129,11 @@ TEST(SymbolsCsv, ExportAndImportGiveTheSameTableWithCommasQuotesAndLineBreaks) {
     QTemporaryDir dir;
     const QString path = dir.filePath(QStringLiteral("symbols.csv"));
     QString error;
-    ASSERT_TRUE(window.exportSymbolsTo(path, &error)) << error.toStdString();
+    ASSERT_TRUE(window.symbolTable()->exportCsv(path, &error)) << error.toStdString();
 
     app::MainWindow other;
     other.newProject(model::Target::get(model::Family::Vigor), QStringLiteral("VB"));
-    ASSERT_TRUE(other.importSymbols(path, &error)) << error.toStdString();
+    ASSERT_TRUE(other.symbolTable()->importCsv(path, &error)) << error.toStdString();
     const auto &back = other.document()->project().symbols;
     ASSERT_EQ(back.size(), symbols.size());
     for (std::size_t i = 0; i < symbols.size(); ++i) {
@@ -144,7 +143,7 @@ TEST(SymbolsCsv, ExportAndImportGiveTheSameTableWithCommasQuotesAndLineBreaks) {
     }
     EXPECT_EQ(other.document()->undoStack()->count(), 1); // one step
 
-    EXPECT_FALSE(window.exportSymbolsTo(QStringLiteral("/nonexistent-dir/s.csv"), &error));
+    EXPECT_FALSE(window.symbolTable()->exportCsv(QStringLiteral("/nonexistent-dir/s.csv"), &error));
     EXPECT_TRUE(error.contains(QStringLiteral("nonexistent-dir"))) << error.toStdString();
 }
 

@@ -10,10 +10,11 @@
 
 #include <QDockWidget>
 #include <QMenuBar>
-#include <QMessageBox>
 #include <QSettings>
 #include <QSignalSpy>
 #include <QTest>
+
+#include "tests/editor/window_fixture.h"
 
 #include <gtest/gtest.h>
 
@@ -30,20 +31,11 @@ QString marginText(editor::IlEditor *il, int line) {
     return QString::fromUtf8(buffer.constData());
 }
 
-QAction *menuAction(app::MainWindow &window, const QString &text) {
-    for (QAction *menu : window.menuBar()->actions())
-        if (menu->menu())
-            for (QAction *a : menu->menu()->actions())
-                if (a->text().remove(QLatin1Char('&')) == text)
-                    return a;
-    return nullptr;
-}
-
 } // namespace
 
-TEST(ListMargin, EachInstructionShowsItsStepAddressMultiStepInstructionsCounted) {
-    app::MainWindow window;
-    window.newProject(model::Target::get(model::Family::Vigor), QStringLiteral("VB"));
+using ListMargin = test::WindowFixture;
+
+TEST_F(ListMargin, EachInstructionShowsItsStepAddressMultiStepInstructionsCounted) {
     std::vector<model::Diagnostic> errors;
     ASSERT_TRUE(window.document()->setListing(
         QStringLiteral("LD X0\nTMR T0 K10\nLD T0\nOUT Y0\nEND\n"), &errors));
@@ -69,9 +61,7 @@ TEST(ListMargin, EachInstructionShowsItsStepAddressMultiStepInstructionsCounted)
 }
 
 // While the typed list has an error, its lines that parse keep their step numbers.
-TEST(ListMargin, StepNumbersStayWhileTheListHasErrors) {
-    app::MainWindow window;
-    window.newProject(model::Target::get(model::Family::Vigor), QStringLiteral("VB"));
+TEST_F(ListMargin, StepNumbersStayWhileTheListHasErrors) {
     editor::IlEditor *il = window.ilEditor();
     const QString typed = QStringLiteral("LD X0\nTMR T0 K10\nLD X8\nOUT Y0\nEND\n");
     il->setText(typed);
@@ -85,9 +75,9 @@ TEST(ListMargin, StepNumbersStayWhileTheListHasErrors) {
     EXPECT_TRUE(marginText(il, 2).isEmpty()); // the line with the error has none
 }
 
-TEST(ViewsInStep, SelectingARungSelectsItsLinesAndTheListCursorSelectsItsRung) {
-    app::MainWindow window;
-    window.newProject(model::Target::get(model::Family::Vigor), QStringLiteral("VB"));
+using ViewsInStep = test::WindowFixture;
+
+TEST_F(ViewsInStep, SelectingARungSelectsItsLinesAndTheListCursorSelectsItsRung) {
     window.setSideBySide(true); // both views visible, as a user would work
     window.show();
     ASSERT_TRUE(QTest::qWaitForWindowExposed(&window));
@@ -117,9 +107,7 @@ TEST(ViewsInStep, SelectingARungSelectsItsLinesAndTheListCursorSelectsItsRung) {
     EXPECT_EQ(window.ladderView()->cursor().rung, 2);
 }
 
-TEST(ViewsInStep, ReverseCurrentCellsAreMarkedOnTheLadder) {
-    app::MainWindow window;
-    window.newProject(model::Target::get(model::Family::Vigor), QStringLiteral("VB"));
+TEST_F(ViewsInStep, ReverseCurrentCellsAreMarkedOnTheLadder) {
     window.show();
     ASSERT_TRUE(QTest::qWaitForWindowExposed(&window));
     const char *bridge = "LADDER vigor WIDTH 8\n"
@@ -188,29 +176,4 @@ TEST(NextStart, TheDockLayoutIsRemembered) {
         next.close();
     }
     QSettings().remove(QStringLiteral("window/state"));
-}
-
-TEST(NextStart, TheChosenLanguageIsRememberedAndTheUserToldWhenItApplies) {
-    QSettings().remove(QStringLiteral("ui/language"));
-    {
-        app::MainWindow window;
-        window.show();
-        QAction *hungarian = menuAction(window, QStringLiteral("Magyar"));
-        ASSERT_NE(hungarian, nullptr);
-        EXPECT_TRUE(menuAction(window, QStringLiteral("English"))->isChecked());
-        hungarian->trigger();
-        EXPECT_EQ(QSettings().value(QStringLiteral("ui/language")).toString(),
-                  QStringLiteral("hu"));
-        auto *notice = window.findChild<QMessageBox *>(QStringLiteral("languageNotice"));
-        ASSERT_NE(notice, nullptr);
-        EXPECT_TRUE(notice->isVisible());
-        EXPECT_TRUE(notice->text().contains(QStringLiteral("starts again")));
-        notice->accept();
-    }
-    {
-        app::MainWindow next;
-        EXPECT_TRUE(menuAction(next, QStringLiteral("Magyar"))->isChecked());
-        EXPECT_FALSE(menuAction(next, QStringLiteral("English"))->isChecked());
-    }
-    QSettings().remove(QStringLiteral("ui/language"));
 }

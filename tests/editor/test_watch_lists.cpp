@@ -10,13 +10,15 @@
 #include <QTest>
 #include <QUndoStack>
 
+#include "tests/editor/window_fixture.h"
+
 #include <gtest/gtest.h>
 
 using namespace rung;
 
-TEST(WatchLists, TheDeviceUnderTheCursorIsAddedOnceAndRemovedWithDelete) {
-    app::MainWindow window;
-    window.newProject(model::Target::get(model::Family::Vigor), QStringLiteral("VB"));
+using WatchLists = test::WindowFixture;
+
+TEST_F(WatchLists, TheDeviceUnderTheCursorIsAddedOnceAndRemovedWithDelete) {
     std::vector<model::Diagnostic> errors;
     ASSERT_TRUE(window.document()->setListing(QStringLiteral("LD X0\nOUT Y0\nEND\n"), &errors));
     window.show();
@@ -55,9 +57,9 @@ TEST(WatchLists, TheDeviceUnderTheCursorIsAddedOnceAndRemovedWithDelete) {
     EXPECT_EQ(again.watchListView()->topLevelItem(0)->childCount(), 2);
 }
 
-TEST(ElementHelp, HoveringAnElementNamesItsDeviceWithTheSymbolsNameAndComment) {
-    app::MainWindow window;
-    window.newProject(model::Target::get(model::Family::Vigor), QStringLiteral("VB"));
+using ElementHelp = test::WindowFixture;
+
+TEST_F(ElementHelp, HoveringAnElementNamesItsDeviceWithTheSymbolsNameAndComment) {
     std::vector<model::Diagnostic> errors;
     ASSERT_TRUE(window.document()->setListing(QStringLiteral("LD X0\nOUT Y0\nEND\n"), &errors));
     window.document()->setSymbols(

@@ -5,6 +5,7 @@
 
 #include "model/convert/convert.h"
 #include "model/ladder/ladder_text.h"
+#include "model/ladder/replace_device.h"
 #include "model/ladder/reverse_current.h"
 
 #include <gtest/gtest.h>
@@ -353,4 +354,38 @@ TEST(LadderText, LinkDrawnOnTheRailReadsBack) {
     ASSERT_TRUE(back.ok());
     EXPECT_TRUE(back.ladder.rungs[0] == r);
     EXPECT_TRUE(back.ladder.rungs[0].link(0, 0));
+}
+
+TEST(LadderGrid, ReplaceDeviceRenamesEveryUseInContactsAndOutputsOnly) {
+    Rung b(1, 1);
+    put(b, 0, 0, "X2");
+    b.outputs[0] = outputOf("OUT Y0");
+    std::vector<Rung> rungs = {twoRowRung(), b}; // X0 X1 -> Y0 over X2 -> Y1; X2 -> Y0
+    const Address x0 = std::get<Address>(parseAddress(vigor(), QStringLiteral("X0")));
+    const Address x7 = std::get<Address>(parseAddress(vigor(), QStringLiteral("X7")));
+    const Address y0 = std::get<Address>(parseAddress(vigor(), QStringLiteral("Y0")));
+    const Address m5 = std::get<Address>(parseAddress(vigor(), QStringLiteral("M5")));
+    EXPECT_EQ(replaceDevice(rungs, x0, x7), 1);
+    EXPECT_EQ(deviceAt(rungs[0], 0, 0), QStringLiteral("X7"));
+    EXPECT_EQ(deviceAt(rungs[0], 0, 1), QStringLiteral("X1")); // the others untouched
+    EXPECT_EQ(deviceAt(rungs[1], 0, 0), QStringLiteral("X2"));
+    EXPECT_EQ(replaceDevice(rungs, y0, m5), 2); // an output in each rung
+    EXPECT_EQ(rungs[0].outputs[0]->operands.front().address, m5);
+    EXPECT_EQ(rungs[1].outputs[0]->operands.front().address, m5);
+    EXPECT_EQ(formatAddress(vigor(), rungs[0].outputs[1]->operands.front().address),
+              QStringLiteral("Y1"));
+    EXPECT_EQ(replaceDevice(rungs, y0, m5), 0); // nothing left to change
+}
+
+TEST(LadderGrid, ReplaceDeviceKeepsConstants) {
+    Rung r(1, 1);
+    put(r, 0, 0, "X0");
+    r.outputs[0] = outputOf("TMR T0 K10");
+    std::vector<Rung> rungs = {r};
+    const Address t0 = std::get<Address>(parseAddress(vigor(), QStringLiteral("T0")));
+    const Address t1 = std::get<Address>(parseAddress(vigor(), QStringLiteral("T1")));
+    EXPECT_EQ(replaceDevice(rungs, t0, t1), 1);
+    ASSERT_EQ(rungs[0].outputs[0]->operands.size(), 2u);
+    EXPECT_EQ(formatOperand(vigor(), rungs[0].outputs[0]->operands[0]), QStringLiteral("T1"));
+    EXPECT_EQ(formatOperand(vigor(), rungs[0].outputs[0]->operands[1]), QStringLiteral("K10"));
 }

@@ -195,3 +195,34 @@ TEST(ProjectFile, AnEndlessDeviceIsRefusedAtTheLimit) {
     EXPECT_TRUE(error.message.contains(QStringLiteral("larger than 64 MB")))
         << error.message.toStdString();
 }
+
+// Save while the instruction list has an error: the text as typed goes into the file with the
+// last valid program, and comes back as it was.
+TEST(ProjectFile, TheListAsTypedWithItsErrorsIsKept) {
+    Project p = sample();
+    p.pendingListing = QStringLiteral("LD X8\nOUT Y1\n; not yet\n");
+    QTemporaryDir dir;
+    const QString path = dir.filePath(QStringLiteral("typed.rung"));
+    ProjectError error;
+    ASSERT_TRUE(saveProject(p, path, &error)) << error.message.toStdString();
+    EXPECT_TRUE(readAll(path).contains("\"pendingListing\": \"LD X8\\nOUT Y1\\n; not yet\\n\""));
+    const auto back = loadProject(path, &error);
+    ASSERT_TRUE(back) << error.message.toStdString();
+    EXPECT_EQ(back->pendingListing, p.pendingListing);
+    EXPECT_EQ(back->program.rungs, p.program.rungs); // the last valid program, alongside
+}
+
+TEST(ProjectFile, AFileWithoutTheListAsTypedHasNone) {
+    // As written before the key existed (and by every save with a valid list): no key at all.
+    const QByteArray old = "{\"format\": \"rungstudio-project\", \"schema\": 1, \"target\": "
+                           "\"vigor\", \"model\": \"VB\", \"rungs\": []}";
+    ProjectError error;
+    const auto p = projectFromJson(old, &error);
+    ASSERT_TRUE(p) << error.message.toStdString();
+    EXPECT_TRUE(p->pendingListing.isEmpty());
+    EXPECT_FALSE(projectToJson(sample()).contains("pendingListing"));
+    EXPECT_FALSE(projectFromJson("{\"format\": \"rungstudio-project\", \"schema\": 1, "
+                                 "\"target\": \"vigor\", \"pendingListing\": 5}",
+                                 &error));
+    EXPECT_EQ(error.message.toStdString(), "pendingListing: a string is expected");
+}

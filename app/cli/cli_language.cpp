@@ -1,0 +1,38 @@
+#include "cli_language.h"
+
+#include <QCoreApplication>
+
+namespace rung::app {
+
+namespace {
+struct Tr {
+    Q_DECLARE_TR_FUNCTIONS(rung::app::Cli)
+};
+} // namespace
+
+bool takeLanguageOption(QStringList *arguments, QString *language, QString *error) {
+    language->clear();
+    for (qsizetype i = 1; i < arguments->size(); ++i) {
+        const QString arg = arguments->at(i);
+        QString code;
+        if (arg == QLatin1String("--lang")) {
+            code = arguments->value(i + 1);
+            arguments->remove(i, std::min<qsizetype>(2, arguments->size() - i));
+        } else if (arg.startsWith(QLatin1String("--lang="))) {
+            code = arg.mid(7);
+            arguments->remove(i);
+        } else {
+            continue;
+        }
+        if (code != QLatin1String("en") && code != QLatin1String("hu") &&
+            code != QLatin1String("it")) {
+            *error = Tr::tr("--lang must be en, hu or it");
+            return false;
+        }
+        *language = code;
+        --i;
+    }
+    return true;
+}
+
+} // namespace rung::app

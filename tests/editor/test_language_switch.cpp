@@ -1,0 +1,131 @@
+// Language > Magyar / Italiano / English switches the whole interface at once, no restart:
+// menus, docks, the problems list, the status bar and Qt's own texts (standard buttons), and
+// the next start keeps the choice.
+
+#include "app/gui/language.h"
+#include "app/gui/main_window.h"
+#include "editor/il_editor.h"
+#include "editor/problems_view.h"
+
+#include <QCoreApplication>
+#include <QDockWidget>
+#include <QLocale>
+#include <QMessageBox>
+#include <QPushButton>
+#include <QSettings>
+
+#include "tests/editor/window_fixture.h"
+
+#include <gtest/gtest.h>
+
+using namespace rung;
+
+namespace {
+
+QString tr(const char *context, const char *text) {
+    return QCoreApplication::translate(context, text);
+}
+
+// The language menu's entry, as the user picks it; the switch happens once its events arrive.
+void pick(app::MainWindow &window, const char *name) {
+    QAction *entry = test::menuAction(window, QString::fromUtf8(name));
+    ASSERT_NE(entry, nullptr) << name;
+    entry->trigger();
+    QCoreApplication::processEvents(); // the queued switch
+    QCoreApplication::sendPostedEvents(nullptr, QEvent::LanguageChange);
+    QCoreApplication::processEvents();
+}
+
+struct LanguageSwitch : test::WindowFixture {
+    void SetUp() override {
+        WindowFixture::SetUp();
+        // Y0 driven twice: a finding in the problems list.
+        load("LD X0\nOUT Y0\nLD X1\nOUT Y0\nEND\n");
+        window.show();
+    }
+    void TearDown() override {
+        app::setLanguage(QStringLiteral("en"), false);
+        QCoreApplication::sendPostedEvents(nullptr, QEvent::LanguageChange);
+        QSettings().remove(QStringLiteral("ui/language"));
+    }
+    QString dockTitle(const char *name) {
+        auto *dock = window.findChild<QDockWidget *>(QString::fromLatin1(name));
+        return dock ? dock->windowTitle() : QString();
+    }
+};
+
+} // namespace
+
+TEST_F(LanguageSwitch, EverythingChangesAtOnceWithoutARestart) {
+    ASSERT_EQ(window.menuBar()->actions().first()->text(), QStringLiteral("&File"));
+    ASSERT_EQ(dockTitle("projectDock"), QStringLiteral("Project"));
+    ASSERT_NE(window.problemsView()->diagnosticAt(0), nullptr);
+    const model::Diagnostic english = *window.problemsView()->diagnosticAt(0);
+    const QString englishStatus = test::statusText(window);
+    ASSERT_TRUE(englishStatus.contains(QStringLiteral("steps"))) << englishStatus.toStdString();
+
+    pick(window, "Magyar");
+    EXPECT_EQ(app::currentLanguage(), QStringLiteral("hu"));
+    const QString file = tr("rung::app::MainWindow", "&File");
+    ASSERT_NE(file, QStringLiteral("&File")); // the catalogue is there
+    EXPECT_EQ(window.menuBar()->actions().first()->text(), file);
+    EXPECT_EQ(dockTitle("projectDock"), tr("rung::app::MainWindow", "Project"));
+    EXPECT_NE(dockTitle("projectDock"), QStringLiteral("Project"));
+    EXPECT_EQ(dockTitle("crossReferenceDock"), tr("rung::app::MainWindow", "Cross Reference"));
+    // The problems list: the same finding, its message found again in Hungarian.
+    ASSERT_NE(window.problemsView()->diagnosticAt(0), nullptr);
+    const model::Diagnostic hungarian = *window.problemsView()->diagnosticAt(0);
+    EXPECT_EQ(hungarian.code, english.code);
+    EXPECT_NE(hungarian.message, english.message);
+    EXPECT_EQ(dockTitle("problemsDock"), window.problemsView()->summary());
+    EXPECT_FALSE(dockTitle("problemsDock").startsWith(QStringLiteral("Problems")));
+    // The status bar.
+    EXPECT_NE(test::statusText(window), englishStatus);
+    EXPECT_FALSE(test::statusText(window).contains(QStringLiteral("steps")));
+    // The menu shows the choice, and the rest of the menus work on.
+    EXPECT_TRUE(test::menuAction(window, "Magyar")->isChecked());
+    EXPECT_FALSE(test::menuAction(window, "English")->isChecked());
+    // Qt's own texts: the buttons of Save / Discard / Cancel and Yes / No.
+    QMessageBox box(QMessageBox::Warning, QStringLiteral("t"), QStringLiteral("t"),
+                    QMessageBox::Save | QMessageBox::Discard | QMessageBox::Cancel |
+                        QMessageBox::Yes);
+    EXPECT_EQ(box.button(QMessageBox::Save)->text(), QStringLiteral("Mentés"));
+    EXPECT_EQ(box.button(QMessageBox::Yes)->text(), QStringLiteral("&Igen"));
+
+    pick(window, "Italiano");
+    EXPECT_EQ(window.menuBar()->actions().first()->text(), tr("rung::app::MainWindow", "&File"));
+    EXPECT_NE(window.problemsView()->diagnosticAt(0)->message, hungarian.message);
+    QMessageBox italian(QMessageBox::Warning, QStringLiteral("t"), QStringLiteral("t"),
+                        QMessageBox::Save);
+    EXPECT_EQ(italian.button(QMessageBox::Save)->text(), QStringLiteral("Salva"));
+
+    pick(window, "English");
+    EXPECT_EQ(window.menuBar()->actions().first()->text(), QStringLiteral("&File"));
+    EXPECT_EQ(window.problemsView()->diagnosticAt(0)->message, english.message);
+    EXPECT_EQ(test::statusText(window), englishStatus);
+}
+
+TEST_F(LanguageSwitch, TheListAsTypedStaysAndItsErrorsAreTranslatedToo) {
+    const QString typed = QStringLiteral("LD X8\nOUT Y1\nEND\n");
+    window.ilEditor()->setText(typed);
+    window.applyListing();
+    const QString before = window.problemsView()->diagnosticAt(0)->message;
+    pick(window, "Magyar");
+    EXPECT_EQ(window.ilEditor()->text(), typed);
+    EXPECT_NE(window.problemsView()->diagnosticAt(0)->message, before);
+    EXPECT_TRUE(window.isModified()); // still unsaved work
+}
+
+TEST_F(LanguageSwitch, TheChoiceIsRememberedForTheNextStart) {
+    QSettings().remove(QStringLiteral("ui/language"));
+    pick(window, "Italiano");
+    EXPECT_EQ(QSettings().value(QStringLiteral("ui/language")).toString(), QStringLiteral("it"));
+    EXPECT_EQ(app::startLanguage(), QStringLiteral("it"));
+    app::MainWindow next;
+    EXPECT_TRUE(test::menuAction(next, "Italiano")->isChecked());
+    // No choice made: the system's language when we have it, else English.
+    QSettings().remove(QStringLiteral("ui/language"));
+    const QString system = QLocale::system().name().left(2);
+    EXPECT_EQ(app::startLanguage(),
+              app::availableLanguages().contains(system) ? system : QStringLiteral("en"));
+}

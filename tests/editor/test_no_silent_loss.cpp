@@ -1,0 +1,148 @@
+// Never a shorter program than the user made without saying so: Save and the recovery file keep
+// the instruction list as typed when it has errors, and Export Instruction List writes the
+// whole program or nothing.
+
+#include "app/gui/ladder_export.h"
+#include "app/gui/main_window.h"
+#include "editor/il_editor.h"
+#include "editor/problems_view.h"
+
+#include "model/ladder/ladder_text.h"
+
+#include <QApplication>
+#include <QFile>
+#include <QFileInfo>
+#include <QMessageBox>
+#include <QPushButton>
+#include <QTemporaryDir>
+#include <QTimer>
+
+#include "tests/editor/window_fixture.h"
+
+#include <gtest/gtest.h>
+
+using namespace rung;
+
+namespace {
+
+// The example of the report: X is octal on a Vigor, so X8 is no device.
+const auto kTyped = QStringLiteral("LD X0\nOUT Y0\nLD X8\nOUT Y1\nEND\n");
+
+struct NoSilentLoss : test::WindowFixture {
+    QTemporaryDir dir;
+    void SetUp() override {
+        WindowFixture::SetUp();
+        load("LD X0\nOUT Y0\nEND\n");
+        window.document()->markSaved();
+    }
+    void type(const QString &text) {
+        window.ilEditor()->setText(text);
+        window.applyListing();
+    }
+    QByteArray read(const QString &path) {
+        QFile f(path);
+        return f.open(QIODevice::ReadOnly) ? f.readAll() : QByteArray();
+    }
+};
+
+} // namespace
+
+TEST_F(NoSilentLoss, SaveKeepsTheListAsTypedAndReopensItAsItWas) {
+    type(kTyped);
+    // Typed errors are unsaved work even though the program did not change.
+    EXPECT_FALSE(window.document()->isModified());
+    EXPECT_TRUE(window.isModified());
+    EXPECT_TRUE(window.isWindowModified());
+    const QString path = dir.filePath(QStringLiteral("typed.rung"));
+    ASSERT_TRUE(window.saveTo(path));
+    EXPECT_FALSE(window.isModified());
+    EXPECT_FALSE(window.isWindowModified());
+    EXPECT_TRUE(window.statusBar()->currentMessage().contains(QStringLiteral("as typed")))
+        << window.statusBar()->currentMessage().toStdString();
+    const auto saved = model::loadProject(path, nullptr);
+    ASSERT_TRUE(saved);
+    EXPECT_EQ(saved->pendingListing, kTyped);
+
+    app::MainWindow reopened;
+    ASSERT_TRUE(reopened.openFile(path, QString(), true));
+    EXPECT_EQ(reopened.ilEditor()->text(), kTyped);
+    // The ladder holds the last valid program; the error is on the list's line 3.
+    EXPECT_EQ(reopened.document()->listingText(), QStringLiteral("LD X0\nOUT Y0\nEND\n"));
+    EXPECT_GT(reopened.problemsView()->count(model::Severity::Error), 0);
+    EXPECT_FALSE(reopened.isModified()); // as saved
+    // Fixed, the list and the program agree again, and the next save leaves the key out.
+    reopened.ilEditor()->setText(QStringLiteral("LD X0\nOUT Y0\nLD X7\nOUT Y1\nEND\n"));
+    reopened.applyListing();
+    EXPECT_TRUE(reopened.isModified());
+    ASSERT_TRUE(reopened.saveTo(path));
+    EXPECT_FALSE(read(path).contains("pendingListing"));
+    EXPECT_TRUE(read(path).contains("X7"));
+}
+
+TEST_F(NoSilentLoss, ClosingWithTypedErrorsAsksToSave) {
+    type(kTyped);
+    bool asked = false;
+    QTimer::singleShot(0, &window, [&asked] {
+        if (auto *box = qobject_cast<QMessageBox *>(QApplication::activeModalWidget())) {
+            asked = true;
+            box->button(QMessageBox::Cancel)->click();
+        }
+    });
+    window.show();
+    EXPECT_FALSE(window.close());
+    EXPECT_TRUE(asked);
+}
+
+TEST_F(NoSilentLoss, TheRecoveryFileKeepsTheListAsTyped) {
+    {
+        app::MainWindow crashed;
+        crashed.newProject(model::Target::get(model::Family::Vigor), QStringLiteral("VB"));
+        crashed.ilEditor()->setText(kTyped);
+        crashed.applyListing();
+        crashed.writeRecovery();
+        ASSERT_TRUE(QFileInfo::exists(crashed.recoveryPath()));
+        const auto kept = model::loadProject(crashed.recoveryPath(), nullptr);
+        ASSERT_TRUE(kept);
+        EXPECT_EQ(kept->pendingListing, kTyped);
+    }
+    app::MainWindow other;
+    ASSERT_TRUE(other.offerRecovery(false));
+    EXPECT_EQ(other.ilEditor()->text(), kTyped);
+    EXPECT_TRUE(other.isModified());
+}
+
+TEST_F(NoSilentLoss, ExportRefusesWhileTheListAsTypedHasErrorsNamingThem) {
+    type(kTyped);
+    const QString path = dir.filePath(QStringLiteral("out.il"));
+    std::vector<model::Diagnostic> errors;
+    ASSERT_FALSE(window.document()->setListing(kTyped, &errors));
+    QString error;
+    EXPECT_FALSE(app::ProgramExport(*window.document(), false).listing(path, &error, errors));
+    EXPECT_FALSE(QFileInfo::exists(path));
+    EXPECT_TRUE(error.contains(QStringLiteral("line 3"))) << error.toStdString();
+    EXPECT_TRUE(error.contains(QStringLiteral("X8"))) << error.toStdString();
+}
+
+TEST_F(NoSilentLoss, ExportRefusesARungThatCannotBeListedNamingIt) {
+    QFile bridge(QStringLiteral(RUNG_TEST_DATA_DIR "/ladder/bridge.ladder"));
+    ASSERT_TRUE(bridge.open(QIODevice::ReadOnly));
+    const model::LadderTextResult drawn =
+        model::parseLadderText(window.document()->target(), QString::fromUtf8(bridge.readAll()));
+    ASSERT_TRUE(drawn.ok());
+    window.document()->replaceRungs(1, 0, drawn.ladder.rungs, QStringLiteral("bridge"));
+    ASSERT_FALSE(window.document()->listing().ok());
+    const QString path = dir.filePath(QStringLiteral("out.il"));
+    QString error;
+    EXPECT_FALSE(app::ProgramExport(*window.document(), false).listing(path, &error));
+    EXPECT_FALSE(QFileInfo::exists(path)); // never a file with only part of the program
+    EXPECT_TRUE(error.contains(QStringLiteral("Rung 2"))) << error.toStdString();
+}
+
+TEST_F(NoSilentLoss, ExportOfAValidProgramIsTheWholeListing) {
+    const QString path = dir.filePath(QStringLiteral("out.il"));
+    QString error;
+    ASSERT_TRUE(app::ProgramExport(*window.document(), false).listing(path, &error))
+        << error.toStdString();
+    EXPECT_EQ(QString::fromUtf8(read(path)), window.document()->listingText());
+    EXPECT_TRUE(read(path).contains("LD X0\nOUT Y0\n"));
+}

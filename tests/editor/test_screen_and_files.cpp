@@ -1,0 +1,73 @@
+// The window on a small screen, and the names export dialogs write.
+
+#include "app/gui/main_window.h"
+
+#include <QApplication>
+#include <QFile>
+#include <QMessageBox>
+#include <QPushButton>
+#include <QScreen>
+#include <QSettings>
+#include <QTemporaryDir>
+#include <QTimer>
+
+#include "tests/editor/window_fixture.h"
+
+#include <gtest/gtest.h>
+
+using namespace rung;
+
+TEST(Screen, TheFirstWindowOpensWithinTheAvailableScreen) {
+    // No remembered geometry: as on a first start (the offscreen screen is 800x600, smaller
+    // than the 1400x900 the window would like).
+    QSettings().remove(QStringLiteral("window/geometry"));
+    app::MainWindow window;
+    const QRect available = window.screen()->availableGeometry();
+    ASSERT_LT(available.width(), 1400);
+    EXPECT_LE(window.width(), available.width());
+    EXPECT_LE(window.height(), available.height());
+    EXPECT_GT(window.width(), available.width() / 2); // and still uses the room there is
+}
+
+using SavePath = test::WindowFixture;
+
+TEST_F(SavePath, TheChosenFormatsExtensionIsAddedWhenMissing) {
+    QTemporaryDir dir;
+    const QString latch = dir.filePath(QStringLiteral("latch"));
+    EXPECT_EQ(window.completeSavePath(latch, {QStringLiteral("pdf")}),
+              latch + QStringLiteral(".pdf"));
+    EXPECT_EQ(window.completeSavePath(latch + QStringLiteral(".PDF"), {QStringLiteral("pdf")}),
+              latch + QStringLiteral(".PDF"));
+    // Either of a list's extensions is kept; none gets the first.
+    EXPECT_EQ(window.completeSavePath(latch + QStringLiteral(".txt"),
+                                      {QStringLiteral("il"), QStringLiteral("txt")}),
+              latch + QStringLiteral(".txt"));
+    EXPECT_EQ(window.completeSavePath(latch, {QStringLiteral("il"), QStringLiteral("txt")}),
+              latch + QStringLiteral(".il"));
+    EXPECT_TRUE(window.completeSavePath(QString(), {QStringLiteral("il")}).isEmpty()); // cancelled
+}
+
+TEST_F(SavePath, AnAddedExtensionThatNamesAnExistingFileAsksBeforeReplacingIt) {
+    QTemporaryDir dir;
+    const QString latch = dir.filePath(QStringLiteral("latch"));
+    QFile existing(latch + QStringLiteral(".csv"));
+    ASSERT_TRUE(existing.open(QIODevice::WriteOnly));
+    existing.close();
+    auto answer = [](QMessageBox::StandardButton button, bool *asked) {
+        QTimer::singleShot(0, [button, asked] {
+            if (auto *box = qobject_cast<QMessageBox *>(QApplication::activeModalWidget())) {
+                *asked = box->text().contains(QStringLiteral("latch.csv"));
+                box->button(button)->click();
+            }
+        });
+    };
+    bool asked = false;
+    answer(QMessageBox::No, &asked);
+    EXPECT_TRUE(window.completeSavePath(latch, {QStringLiteral("csv")}).isEmpty());
+    EXPECT_TRUE(asked);
+    asked = false;
+    answer(QMessageBox::Yes, &asked);
+    EXPECT_EQ(window.completeSavePath(latch, {QStringLiteral("csv")}),
+              latch + QStringLiteral(".csv"));
+    EXPECT_TRUE(asked);
+}

@@ -1,0 +1,80 @@
+#pragma once
+
+// The main window as the GUI tests meet it: a new Vigor VB program, and the few things the
+// tests do with it (load a listing, type into a cell, find a menu entry, read the status bar).
+
+#include "app/gui/main_window.h"
+#include "editor/ladder_view.h"
+
+#include <QAction>
+#include <QLabel>
+#include <QLineEdit>
+#include <QMenu>
+#include <QMenuBar>
+#include <QStatusBar>
+#include <QTest>
+
+#include <gtest/gtest.h>
+
+namespace rung::test {
+
+// An entry of one of the menu bar's menus (or one of their submenus), by its text without
+// the access-key '&'; nullptr when there is none.
+inline QAction *menuAction(const QMainWindow &window, const QString &text) {
+    for (QAction *top : window.menuBar()->actions())
+        if (top->menu())
+            for (QAction *a : top->menu()->actions()) {
+                if (a->text().remove(QLatin1Char('&')) == text)
+                    return a;
+                if (a->menu())
+                    for (QAction *inner : a->menu()->actions())
+                        if (inner->text().remove(QLatin1Char('&')) == text)
+                            return inner;
+            }
+    return nullptr;
+}
+
+inline QMenu *submenu(const QMainWindow &window, const QString &title) {
+    QAction *a = menuAction(window, title);
+    return a ? a->menu() : nullptr;
+}
+
+// The status bar's permanent texts, joined by '|'.
+inline QString statusText(const QMainWindow &window) {
+    QStringList texts;
+    for (QLabel *label : window.statusBar()->findChildren<QLabel *>())
+        texts << label->text();
+    return texts.join(QLatin1Char('|'));
+}
+
+struct WindowFixture : ::testing::Test {
+    app::MainWindow window;
+    editor::LadderView *view = window.ladderView();
+
+    void SetUp() override {
+        window.newProject(model::Target::get(model::Family::Vigor), QStringLiteral("VB"));
+    }
+    // The program from an instruction list that must be valid.
+    void load(const QString &listing) {
+        std::vector<model::Diagnostic> errors;
+        ASSERT_TRUE(window.document()->setListing(listing, &errors))
+            << listing.toStdString()
+            << (errors.empty() ? std::string() : errors.front().message.toStdString());
+    }
+    void load(const char *listing) { load(QString::fromLatin1(listing)); }
+    void showWithLadderFocused() {
+        window.show();
+        view->setFocus();
+    }
+    QString listing() { return window.document()->listingText(); }
+    // A function key (with its modifiers), then the operand into the cell editor it opens.
+    void typeIntoCell(Qt::Key key, const char *operand, Qt::KeyboardModifiers mods = {}) {
+        QTest::keyClick(view, key, mods);
+        QLineEdit *edit = view->inlineEditor();
+        ASSERT_TRUE(edit->isVisible()) << "key " << key;
+        QTest::keyClicks(edit, QString::fromLatin1(operand));
+        QTest::keyClick(edit, Qt::Key_Return);
+    }
+};
+
+} // namespace rung::test
