@@ -5,6 +5,7 @@
 // written anywhere else.
 
 #include "model/target/op.h"
+#include "model/target/protocol_map.h"
 
 #include <QMultiHash>
 #include <QString>
@@ -212,6 +213,7 @@ public:
     std::vector<ModelVariant> models;
     Limits limits;
     double defaultTimerBaseMs = 100.0; // Vigor TMR default resolution
+    std::vector<ProtocolMap> protocolMaps; // protocol_map.h: where devices sit on the wire
 
     // The four families, built once.
     static const Target &get(Family family);
