@@ -8,6 +8,7 @@ packages=(
     libqscintilla2-qt6-dev libserialport-dev
     libgtest-dev libbenchmark-dev
     xvfb xauth poppler-utils
+    mbpoll libmodbus-dev python3-pymodbus python3-serial-asyncio socat
 )
 missing=()
 for p in "${packages[@]}"; do
