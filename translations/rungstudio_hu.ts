@@ -973,6 +973,382 @@ Létradiagram- és utasításlista-szerkesztő VPC, Vigor, CPM1 és PL110 PLC-kh
     </message>
 </context>
 <context>
+    <name>rung::comms::Protocol</name>
+    <message>
+        <location filename="../comms/protocol/host_link.cpp" line="+205"/>
+        <source>normal completion (end code %1)</source>
+        <translation>normál befejezés (befejezési kód: %1)</translation>
+    </message>
+    <message>
+        <location line="+4"/>
+        <source>not executable in RUN mode (end code %1): switch the PLC to MONITOR to write</source>
+        <translation>RUN üzemmódban nem hajtható végre (befejezési kód: %1): íráshoz kapcsolja a PLC-t MONITOR módba</translation>
+    </message>
+    <message>
+        <location line="+6"/>
+        <source>not executable in MONITOR mode (end code %1)</source>
+        <translation>MONITOR üzemmódban nem hajtható végre (befejezési kód: %1)</translation>
+    </message>
+    <message>
+        <location line="+4"/>
+        <source>the PLC&apos;s memory is write-protected (end code %1)</source>
+        <translation>a PLC memóriája írásvédett (befejezési kód: %1)</translation>
+    </message>
+    <message>
+        <location line="+4"/>
+        <source>address over: the area ends before the last word asked for (end code %1)</source>
+        <translation>címtúllépés: a terület a kért utolsó szó előtt véget ér (befejezési kód: %1)</translation>
+    </message>
+    <message>
+        <location line="+6"/>
+        <source>not executable in PROGRAM mode (end code %1)</source>
+        <translation>PROGRAM üzemmódban nem hajtható végre (befejezési kód: %1)</translation>
+    </message>
+    <message>
+        <location line="+4"/>
+        <source>the PLC received the command with a wrong FCS (end code %1): noise on the line or a wrong parity setting</source>
+        <translation>a PLC hibás FCS-sel kapta a parancsot (befejezési kód: %1): zaj a vonalon vagy rossz paritásbeállítás</translation>
+    </message>
+    <message>
+        <location line="+6"/>
+        <source>the PLC found the command&apos;s format wrong (end code %1)</source>
+        <translation>a PLC szerint a parancs formátuma hibás (befejezési kód: %1)</translation>
+    </message>
+    <message>
+        <location line="+4"/>
+        <source>a number in the command is out of range (end code %1)</source>
+        <translation>a parancs egy száma tartományon kívül esik (befejezési kód: %1)</translation>
+    </message>
+    <message>
+        <location line="+4"/>
+        <source>the PLC does not support the command (end code %1)</source>
+        <translation>a PLC nem támogatja a parancsot (befejezési kód: %1)</translation>
+    </message>
+    <message>
+        <location line="+4"/>
+        <source>the command&apos;s frame is too long (end code %1)</source>
+        <translation>a parancs kerete túl hosszú (befejezési kód: %1)</translation>
+    </message>
+    <message>
+        <location line="+4"/>
+        <source>end code %1</source>
+        <translation>befejezési kód: %1</translation>
+    </message>
+    <message>
+        <location line="+24"/>
+        <source>Host Link: the reply starts with byte %1 instead of &quot;@&quot;: not a Host Link answer</source>
+        <translation>Host Link: a válasz %1 bájttal kezdődik &quot;@&quot; helyett: nem Host Link válasz</translation>
+    </message>
+    <message>
+        <location line="+10"/>
+        <source>Host Link: %1 characters without the end of a frame (CR)</source>
+        <translation>Host Link: %1 karakter keretvég (CR) nélkül</translation>
+    </message>
+    <message>
+        <location line="+17"/>
+        <source>Host Link: a frame too short to hold an FCS: %1</source>
+        <translation>Host Link: túl rövid keret, nem fér el benne FCS: %1</translation>
+    </message>
+    <message>
+        <location line="+6"/>
+        <source>Host Link: wrong FCS in the reply (received %1, computed %2): noise on the line or a wrong parity setting</source>
+        <translation>Host Link: hibás FCS a válaszban (érkezett: %1, számított: %2): zaj a vonalon vagy rossz paritásbeállítás</translation>
+    </message>
+    <message>
+        <location line="+9"/>
+        <source>Host Link: the reply has no unit number and header: %1</source>
+        <translation>Host Link: a válaszban nincs egységszám és fejléc: %1</translation>
+    </message>
+    <message>
+        <location line="+10"/>
+        <location line="+33"/>
+        <source>Host Link: unit %1 answered, unit %2 was asked</source>
+        <translation>Host Link: a(z) %1. egység válaszolt, a(z) %2. egységet kérdeztük</translation>
+    </message>
+    <message>
+        <location line="-27"/>
+        <source>Host Link: the PLC did not recognise the command %1 (IC)</source>
+        <translation>Host Link: a PLC nem ismerte fel a(z) %1 parancsot (IC)</translation>
+    </message>
+    <message>
+        <location line="+9"/>
+        <source>Host Link: the reply has no end code: %1</source>
+        <translation>Host Link: a válaszban nincs befejezési kód: %1</translation>
+    </message>
+    <message>
+        <location line="+26"/>
+        <source>Host Link: the reply is for %1, the command was %2</source>
+        <translation>Host Link: a válasz a(z) %1 parancsra szól, a parancs %2 volt</translation>
+    </message>
+    <message>
+        <location line="+6"/>
+        <source>Host Link: %1 refused: %2</source>
+        <translation>Host Link: a(z) %1 elutasítva: %2</translation>
+    </message>
+    <message>
+        <location line="+5"/>
+        <source>Host Link: the reply to %1 holds %2 characters of data that do not fit the command</source>
+        <translation>Host Link: a(z) %1 válasza %2 adatkaraktert tartalmaz, ami nem illik a parancshoz</translation>
+    </message>
+    <message>
+        <location line="+50"/>
+        <source>Host Link: no reply from unit %1 within %2 ms</source>
+        <translation>Host Link: a(z) %1. egység %2 ms alatt nem válaszolt</translation>
+    </message>
+    <message>
+        <location line="+5"/>
+        <source>Host Link: the reply stopped after %1 parts and %2 characters (%3) within %4 ms</source>
+        <translation>Host Link: a válasz %1 rész és %2 karakter (%3) után megszakadt %4 ms alatt</translation>
+    </message>
+    <message>
+        <location filename="../comms/protocol/modbus.cpp" line="+141"/>
+        <source>illegal function (exception %1h): the device does not support this function code</source>
+        <translation>érvénytelen funkció (%1h kivétel): az eszköz nem támogatja ezt a funkciókódot</translation>
+    </message>
+    <message>
+        <location line="+6"/>
+        <source>illegal data address (exception %1h): the address or the count is outside the device&apos;s map</source>
+        <translation>érvénytelen adatcím (%1h kivétel): a cím vagy a darabszám kívül esik az eszköz címtérképén</translation>
+    </message>
+    <message>
+        <location line="+6"/>
+        <source>illegal data value (exception %1h)</source>
+        <translation>érvénytelen adatérték (%1h kivétel)</translation>
+    </message>
+    <message>
+        <location line="+4"/>
+        <source>server device failure (exception %1h); the PL110 manual uses this code for an illegal data value</source>
+        <translation>a szolgáltató eszköz hibája (%1h kivétel); a PL110 kézikönyve ezt a kódot érvénytelen adatértékre használja</translation>
+    </message>
+    <message>
+        <location line="+6"/>
+        <source>acknowledge (exception %1h): the device accepted a long task</source>
+        <translation>nyugtázás (%1h kivétel): az eszköz hosszú feladatot fogadott el</translation>
+    </message>
+    <message>
+        <location line="+5"/>
+        <source>server device busy (exception %1h)</source>
+        <translation>a szolgáltató eszköz foglalt (%1h kivétel)</translation>
+    </message>
+    <message>
+        <location line="+4"/>
+        <source>memory parity error (exception %1h)</source>
+        <translation>memória-paritáshiba (%1h kivétel)</translation>
+    </message>
+    <message>
+        <location line="+4"/>
+        <source>gateway path unavailable (exception %1h)</source>
+        <translation>az átjáró útvonala nem érhető el (%1h kivétel)</translation>
+    </message>
+    <message>
+        <location line="+4"/>
+        <source>gateway target device failed to respond (exception %1h)</source>
+        <translation>az átjáró mögötti eszköz nem válaszolt (%1h kivétel)</translation>
+    </message>
+    <message>
+        <location line="+5"/>
+        <source>unknown exception code %1h</source>
+        <translation>ismeretlen kivételkód: %1h</translation>
+    </message>
+    <message>
+        <location line="+97"/>
+        <source>Modbus RTU: the reply starts %1, not an answer to function %2h</source>
+        <translation>Modbus RTU: a válasz így kezdődik: %1, ez nem a(z) %2h funkció válasza</translation>
+    </message>
+    <message>
+        <location line="+8"/>
+        <source>Modbus RTU: %1 bytes more than the %2-byte reply: %3</source>
+        <translation>Modbus RTU: %1 bájttal több a(z) %2 bájtos válasznál: %3</translation>
+    </message>
+    <message>
+        <location line="+11"/>
+        <source>Modbus RTU: wrong CRC in the reply (received %1, computed %2): noise on the line or a wrong baud rate or parity</source>
+        <translation>Modbus RTU: hibás CRC a válaszban (érkezett: %1, számított: %2): zaj a vonalon, vagy rossz átviteli sebesség vagy paritás</translation>
+    </message>
+    <message>
+        <location line="+15"/>
+        <source>Modbus TCP: not a Modbus header (protocol %1, length %2): %3</source>
+        <translation>Modbus TCP: nem Modbus fejléc (protokoll: %1, hossz: %2): %3</translation>
+    </message>
+    <message>
+        <location line="+10"/>
+        <source>Modbus TCP: %1 bytes more than the reply&apos;s length</source>
+        <translation>Modbus TCP: %1 bájttal több a válasz hosszánál</translation>
+    </message>
+    <message>
+        <location line="+5"/>
+        <source>Modbus TCP: the reply is for transaction %1, the request was %2</source>
+        <translation>Modbus TCP: a válasz a(z) %1. tranzakcióra szól, a kérés %2 volt</translation>
+    </message>
+    <message>
+        <location line="+12"/>
+        <source>Modbus: unit %1 answered, unit %2 was asked</source>
+        <translation>Modbus: a(z) %1. egység válaszolt, a(z) %2. egységet kérdeztük</translation>
+    </message>
+    <message>
+        <location line="+10"/>
+        <source>Modbus: an exception reply of %1 bytes</source>
+        <translation>Modbus: %1 bájtos kivételválasz</translation>
+    </message>
+    <message>
+        <location line="+6"/>
+        <source>Modbus: function %1h refused: %2</source>
+        <translation>Modbus: a(z) %1h funkció elutasítva: %2</translation>
+    </message>
+    <message>
+        <location line="+6"/>
+        <source>Modbus: the reply is for function %1h, the request was %2h</source>
+        <translation>Modbus: a válasz a(z) %1h funkcióra szól, a kérés %2h volt</translation>
+    </message>
+    <message>
+        <location line="+6"/>
+        <source>Modbus: the reply to function %1h does not match the request: %2</source>
+        <translation>Modbus: a(z) %1h funkció válasza nem illik a kéréshez: %2</translation>
+    </message>
+    <message>
+        <location line="+32"/>
+        <source>Modbus: no reply from unit %1 within %2 ms</source>
+        <translation>Modbus: a(z) %1. egység %2 ms alatt nem válaszolt</translation>
+    </message>
+    <message>
+        <location line="+6"/>
+        <source>Modbus: the reply stopped after %1 bytes (%2) within %3 ms</source>
+        <translation>Modbus: a válasz %1 bájt (%2) után megszakadt %3 ms alatt</translation>
+    </message>
+    <message>
+        <location filename="../comms/protocol/vigor_link.cpp" line="+94"/>
+        <source>no error (error 00h)</source>
+        <translation>nincs hiba (00h hiba)</translation>
+    </message>
+    <message>
+        <location line="+2"/>
+        <source>the PLC could not read the request&apos;s characters as hexadecimal (ASCII conversion error %1h)</source>
+        <translation>a PLC nem tudta hexadecimálisként olvasni a kérés karaktereit (%1h ASCII-konverziós hiba)</translation>
+    </message>
+    <message>
+        <location line="+6"/>
+        <source>the PLC received the request with a wrong sum (sum check error %1h): noise on the line or a wrong parity setting</source>
+        <translation>a PLC hibás összeggel kapta a kérést (%1h összegellenőrzési hiba): zaj a vonalon vagy rossz paritásbeállítás</translation>
+    </message>
+    <message>
+        <location line="+6"/>
+        <source>the PLC does not know the command (error %1h)</source>
+        <translation>a PLC nem ismeri a parancsot (%1h hiba)</translation>
+    </message>
+    <message>
+        <location line="+4"/>
+        <source>communication error (error %1h): the PLC may be in STOP or the parity does not match</source>
+        <translation>kommunikációs hiba (%1h hiba): a PLC STOP állapotban lehet, vagy nem egyezik a paritás</translation>
+    </message>
+    <message>
+        <location line="+6"/>
+        <source>address out of range (error %1h)</source>
+        <translation>tartományon kívüli cím (%1h hiba)</translation>
+    </message>
+    <message>
+        <location line="+4"/>
+        <source>unknown error code %1h</source>
+        <translation>ismeretlen hibakód: %1h</translation>
+    </message>
+    <message>
+        <location line="+21"/>
+        <source>Vigor link: the reply starts with byte %1 instead of ACK (06h): not a Computer Link answer</source>
+        <translation>Vigor link: a válasz %1 bájttal kezdődik ACK (06h) helyett: nem Computer Link válasz</translation>
+    </message>
+    <message>
+        <location line="+13"/>
+        <source>Vigor link: %1 bytes without the end of a frame (ETX)</source>
+        <translation>Vigor link: %1 bájt keretvég (ETX) nélkül</translation>
+    </message>
+    <message>
+        <location line="+16"/>
+        <source>Vigor link: wrong sum in the reply (received %1, computed %2): noise on the line or a wrong parity setting</source>
+        <translation>Vigor link: hibás összeg a válaszban (érkezett: %1, számított: %2): zaj a vonalon vagy rossz paritásbeállítás</translation>
+    </message>
+    <message>
+        <location line="+7"/>
+        <source>Vigor link: a reply of %1 bytes is too short or has an odd number of hex digits: %2</source>
+        <translation>Vigor link: a(z) %1 bájtos válasz túl rövid, vagy páratlan számú hexadecimális jegyet tartalmaz: %2</translation>
+    </message>
+    <message>
+        <location line="+10"/>
+        <location line="+9"/>
+        <source>Vigor link: the reply holds characters that are not upper-case hexadecimal: %1</source>
+        <translation>Vigor link: a válaszban nem nagybetűs hexadecimális karakterek vannak: %1</translation>
+    </message>
+    <message>
+        <location line="+8"/>
+        <source>Vigor link: station %1 answered, station %2 was asked</source>
+        <translation>Vigor link: a(z) %1. állomás válaszolt, a(z) %2. állomást kérdeztük</translation>
+    </message>
+    <message>
+        <location line="+8"/>
+        <source>Vigor link: the reply is for command %1h, the request was %2h</source>
+        <translation>Vigor link: a válasz a(z) %1h parancsra szól, a kérés %2h volt</translation>
+    </message>
+    <message>
+        <location line="+7"/>
+        <source>Vigor link: %1</source>
+        <translation>Vigor link: %1</translation>
+    </message>
+    <message>
+        <location line="+5"/>
+        <source>Vigor link: the reply carries %1 data bytes, %2 expected</source>
+        <translation>Vigor link: a válasz %1 adatbájtot hoz, %2 volt várható</translation>
+    </message>
+    <message>
+        <location line="+13"/>
+        <source>Vigor link: no reply from station %1 within %2 ms</source>
+        <translation>Vigor link: a(z) %1. állomás %2 ms alatt nem válaszolt</translation>
+    </message>
+    <message>
+        <location line="+5"/>
+        <source>Vigor link: the reply stopped after %1 bytes (%2) within %3 ms</source>
+        <translation>Vigor link: a válasz %1 bájt (%2) után megszakadt %3 ms alatt</translation>
+    </message>
+    <message>
+        <location filename="../comms/transport/pty_transport.cpp" line="+38"/>
+        <source>Cannot create a pseudo-terminal: %1</source>
+        <translation>Nem hozható létre pszeudoterminál: %1</translation>
+    </message>
+    <message>
+        <location line="+25"/>
+        <source>Cannot open %1: %2</source>
+        <translation>%1 nem nyitható meg: %2</translation>
+    </message>
+    <message>
+        <location line="+6"/>
+        <source>Cannot open %1: it is not a terminal</source>
+        <translation>%1 nem nyitható meg: nem terminál</translation>
+    </message>
+    <message>
+        <location line="+22"/>
+        <location line="+34"/>
+        <source>%1 is not open</source>
+        <translation>%1 nincs megnyitva</translation>
+    </message>
+    <message>
+        <location line="-22"/>
+        <source>Writing to %1 failed: %2</source>
+        <translation>Sikertelen írás ide: %1: %2</translation>
+    </message>
+    <message>
+        <location line="+6"/>
+        <source>Writing to %1 did not finish in time</source>
+        <translation>Az írás ide: %1 nem fejeződött be időben</translation>
+    </message>
+    <message>
+        <location line="+24"/>
+        <source>%1 was closed by the other side: %2</source>
+        <translation>%1 kapcsolatát a másik oldal lezárta: %2</translation>
+    </message>
+    <message>
+        <location line="+14"/>
+        <source>%1 was closed by the other side</source>
+        <translation>%1 kapcsolatát a másik oldal lezárta</translation>
+    </message>
+</context>
+<context>
     <name>rung::editor::CrossReferenceView</name>
     <message>
         <location filename="../editor/cross_reference_view.cpp" line="+51"/>
@@ -3143,6 +3519,26 @@ Létradiagram- és utasításlista-szerkesztő VPC, Vigor, CPM1 és PL110 PLC-kh
         <location line="+2"/>
         <source>End of a jump</source>
         <translation>Ugrás vége</translation>
+    </message>
+    <message>
+        <location filename="../model/target/target_cpm1_maps.cpp" line="+16"/>
+        <source>Omron Host Link (C-mode)</source>
+        <translation>Omron Host Link (C mód)</translation>
+    </message>
+    <message>
+        <location filename="../model/target/target_pl110_maps.cpp" line="+16"/>
+        <source>PL110 MODBUS RTU slave</source>
+        <translation>PL110 MODBUS RTU szolga</translation>
+    </message>
+    <message>
+        <location filename="../model/target/target_vigor_maps.cpp" line="+15"/>
+        <source>Vigor Computer Link</source>
+        <translation>Vigor Computer Link</translation>
+    </message>
+    <message>
+        <location line="+19"/>
+        <source>Vigor CP2 MODBUS slave</source>
+        <translation>Vigor CP2 MODBUS szolga</translation>
     </message>
 </context>
 <context>

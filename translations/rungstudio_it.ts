@@ -977,6 +977,382 @@ Editor di schemi ladder e liste istruzioni per VPC, Vigor, CPM1 e PL110.</transl
     </message>
 </context>
 <context>
+    <name>rung::comms::Protocol</name>
+    <message>
+        <location filename="../comms/protocol/host_link.cpp" line="+205"/>
+        <source>normal completion (end code %1)</source>
+        <translation>completamento normale (codice di fine %1)</translation>
+    </message>
+    <message>
+        <location line="+4"/>
+        <source>not executable in RUN mode (end code %1): switch the PLC to MONITOR to write</source>
+        <translation>non eseguibile in modo RUN (codice di fine %1): per scrivere portare il PLC in MONITOR</translation>
+    </message>
+    <message>
+        <location line="+6"/>
+        <source>not executable in MONITOR mode (end code %1)</source>
+        <translation>non eseguibile in modo MONITOR (codice di fine %1)</translation>
+    </message>
+    <message>
+        <location line="+4"/>
+        <source>the PLC&apos;s memory is write-protected (end code %1)</source>
+        <translation>la memoria del PLC è protetta da scrittura (codice di fine %1)</translation>
+    </message>
+    <message>
+        <location line="+4"/>
+        <source>address over: the area ends before the last word asked for (end code %1)</source>
+        <translation>indirizzo oltre il limite: l&apos;area finisce prima dell&apos;ultima parola richiesta (codice di fine %1)</translation>
+    </message>
+    <message>
+        <location line="+6"/>
+        <source>not executable in PROGRAM mode (end code %1)</source>
+        <translation>non eseguibile in modo PROGRAM (codice di fine %1)</translation>
+    </message>
+    <message>
+        <location line="+4"/>
+        <source>the PLC received the command with a wrong FCS (end code %1): noise on the line or a wrong parity setting</source>
+        <translation>il PLC ha ricevuto il comando con FCS errato (codice di fine %1): disturbi sulla linea o parità impostata male</translation>
+    </message>
+    <message>
+        <location line="+6"/>
+        <source>the PLC found the command&apos;s format wrong (end code %1)</source>
+        <translation>il PLC ha trovato errato il formato del comando (codice di fine %1)</translation>
+    </message>
+    <message>
+        <location line="+4"/>
+        <source>a number in the command is out of range (end code %1)</source>
+        <translation>un numero nel comando è fuori campo (codice di fine %1)</translation>
+    </message>
+    <message>
+        <location line="+4"/>
+        <source>the PLC does not support the command (end code %1)</source>
+        <translation>il PLC non supporta il comando (codice di fine %1)</translation>
+    </message>
+    <message>
+        <location line="+4"/>
+        <source>the command&apos;s frame is too long (end code %1)</source>
+        <translation>il frame del comando è troppo lungo (codice di fine %1)</translation>
+    </message>
+    <message>
+        <location line="+4"/>
+        <source>end code %1</source>
+        <translation>codice di fine %1</translation>
+    </message>
+    <message>
+        <location line="+24"/>
+        <source>Host Link: the reply starts with byte %1 instead of &quot;@&quot;: not a Host Link answer</source>
+        <translation>Host Link: la risposta inizia con il byte %1 invece di &quot;@&quot;: non è una risposta Host Link</translation>
+    </message>
+    <message>
+        <location line="+10"/>
+        <source>Host Link: %1 characters without the end of a frame (CR)</source>
+        <translation>Host Link: %1 caratteri senza fine del frame (CR)</translation>
+    </message>
+    <message>
+        <location line="+17"/>
+        <source>Host Link: a frame too short to hold an FCS: %1</source>
+        <translation>Host Link: frame troppo corto per contenere un FCS: %1</translation>
+    </message>
+    <message>
+        <location line="+6"/>
+        <source>Host Link: wrong FCS in the reply (received %1, computed %2): noise on the line or a wrong parity setting</source>
+        <translation>Host Link: FCS errato nella risposta (ricevuto %1, calcolato %2): disturbi sulla linea o parità impostata male</translation>
+    </message>
+    <message>
+        <location line="+9"/>
+        <source>Host Link: the reply has no unit number and header: %1</source>
+        <translation>Host Link: la risposta non ha numero di unità e intestazione: %1</translation>
+    </message>
+    <message>
+        <location line="+10"/>
+        <location line="+33"/>
+        <source>Host Link: unit %1 answered, unit %2 was asked</source>
+        <translation>Host Link: ha risposto l&apos;unità %1, era interrogata l&apos;unità %2</translation>
+    </message>
+    <message>
+        <location line="-27"/>
+        <source>Host Link: the PLC did not recognise the command %1 (IC)</source>
+        <translation>Host Link: il PLC non ha riconosciuto il comando %1 (IC)</translation>
+    </message>
+    <message>
+        <location line="+9"/>
+        <source>Host Link: the reply has no end code: %1</source>
+        <translation>Host Link: la risposta non ha codice di fine: %1</translation>
+    </message>
+    <message>
+        <location line="+26"/>
+        <source>Host Link: the reply is for %1, the command was %2</source>
+        <translation>Host Link: la risposta è per %1, il comando era %2</translation>
+    </message>
+    <message>
+        <location line="+6"/>
+        <source>Host Link: %1 refused: %2</source>
+        <translation>Host Link: %1 rifiutato: %2</translation>
+    </message>
+    <message>
+        <location line="+5"/>
+        <source>Host Link: the reply to %1 holds %2 characters of data that do not fit the command</source>
+        <translation>Host Link: la risposta a %1 contiene %2 caratteri di dati che non corrispondono al comando</translation>
+    </message>
+    <message>
+        <location line="+50"/>
+        <source>Host Link: no reply from unit %1 within %2 ms</source>
+        <translation>Host Link: nessuna risposta dall&apos;unità %1 entro %2 ms</translation>
+    </message>
+    <message>
+        <location line="+5"/>
+        <source>Host Link: the reply stopped after %1 parts and %2 characters (%3) within %4 ms</source>
+        <translation>Host Link: la risposta si è interrotta dopo %1 parti e %2 caratteri (%3) entro %4 ms</translation>
+    </message>
+    <message>
+        <location filename="../comms/protocol/modbus.cpp" line="+141"/>
+        <source>illegal function (exception %1h): the device does not support this function code</source>
+        <translation>funzione non valida (eccezione %1h): il dispositivo non supporta questo codice funzione</translation>
+    </message>
+    <message>
+        <location line="+6"/>
+        <source>illegal data address (exception %1h): the address or the count is outside the device&apos;s map</source>
+        <translation>indirizzo dati non valido (eccezione %1h): l&apos;indirizzo o il numero è fuori dalla mappa del dispositivo</translation>
+    </message>
+    <message>
+        <location line="+6"/>
+        <source>illegal data value (exception %1h)</source>
+        <translation>valore dati non valido (eccezione %1h)</translation>
+    </message>
+    <message>
+        <location line="+4"/>
+        <source>server device failure (exception %1h); the PL110 manual uses this code for an illegal data value</source>
+        <translation>guasto del dispositivo server (eccezione %1h); il manuale del PL110 usa questo codice per un valore dati non valido</translation>
+    </message>
+    <message>
+        <location line="+6"/>
+        <source>acknowledge (exception %1h): the device accepted a long task</source>
+        <translation>conferma (eccezione %1h): il dispositivo ha accettato un&apos;operazione lunga</translation>
+    </message>
+    <message>
+        <location line="+5"/>
+        <source>server device busy (exception %1h)</source>
+        <translation>dispositivo server occupato (eccezione %1h)</translation>
+    </message>
+    <message>
+        <location line="+4"/>
+        <source>memory parity error (exception %1h)</source>
+        <translation>errore di parità della memoria (eccezione %1h)</translation>
+    </message>
+    <message>
+        <location line="+4"/>
+        <source>gateway path unavailable (exception %1h)</source>
+        <translation>percorso del gateway non disponibile (eccezione %1h)</translation>
+    </message>
+    <message>
+        <location line="+4"/>
+        <source>gateway target device failed to respond (exception %1h)</source>
+        <translation>il dispositivo dietro il gateway non ha risposto (eccezione %1h)</translation>
+    </message>
+    <message>
+        <location line="+5"/>
+        <source>unknown exception code %1h</source>
+        <translation>codice di eccezione sconosciuto %1h</translation>
+    </message>
+    <message>
+        <location line="+97"/>
+        <source>Modbus RTU: the reply starts %1, not an answer to function %2h</source>
+        <translation>Modbus RTU: la risposta inizia con %1, non è una risposta alla funzione %2h</translation>
+    </message>
+    <message>
+        <location line="+8"/>
+        <source>Modbus RTU: %1 bytes more than the %2-byte reply: %3</source>
+        <translation>Modbus RTU: %1 byte in più della risposta di %2 byte: %3</translation>
+    </message>
+    <message>
+        <location line="+11"/>
+        <source>Modbus RTU: wrong CRC in the reply (received %1, computed %2): noise on the line or a wrong baud rate or parity</source>
+        <translation>Modbus RTU: CRC errato nella risposta (ricevuto %1, calcolato %2): disturbi sulla linea o velocità o parità impostate male</translation>
+    </message>
+    <message>
+        <location line="+15"/>
+        <source>Modbus TCP: not a Modbus header (protocol %1, length %2): %3</source>
+        <translation>Modbus TCP: non è un&apos;intestazione Modbus (protocollo %1, lunghezza %2): %3</translation>
+    </message>
+    <message>
+        <location line="+10"/>
+        <source>Modbus TCP: %1 bytes more than the reply&apos;s length</source>
+        <translation>Modbus TCP: %1 byte in più della lunghezza della risposta</translation>
+    </message>
+    <message>
+        <location line="+5"/>
+        <source>Modbus TCP: the reply is for transaction %1, the request was %2</source>
+        <translation>Modbus TCP: la risposta è per la transazione %1, la richiesta era %2</translation>
+    </message>
+    <message>
+        <location line="+12"/>
+        <source>Modbus: unit %1 answered, unit %2 was asked</source>
+        <translation>Modbus: ha risposto l&apos;unità %1, era interrogata l&apos;unità %2</translation>
+    </message>
+    <message>
+        <location line="+10"/>
+        <source>Modbus: an exception reply of %1 bytes</source>
+        <translation>Modbus: risposta di eccezione di %1 byte</translation>
+    </message>
+    <message>
+        <location line="+6"/>
+        <source>Modbus: function %1h refused: %2</source>
+        <translation>Modbus: funzione %1h rifiutata: %2</translation>
+    </message>
+    <message>
+        <location line="+6"/>
+        <source>Modbus: the reply is for function %1h, the request was %2h</source>
+        <translation>Modbus: la risposta è per la funzione %1h, la richiesta era %2h</translation>
+    </message>
+    <message>
+        <location line="+6"/>
+        <source>Modbus: the reply to function %1h does not match the request: %2</source>
+        <translation>Modbus: la risposta alla funzione %1h non corrisponde alla richiesta: %2</translation>
+    </message>
+    <message>
+        <location line="+32"/>
+        <source>Modbus: no reply from unit %1 within %2 ms</source>
+        <translation>Modbus: nessuna risposta dall&apos;unità %1 entro %2 ms</translation>
+    </message>
+    <message>
+        <location line="+6"/>
+        <source>Modbus: the reply stopped after %1 bytes (%2) within %3 ms</source>
+        <translation>Modbus: la risposta si è interrotta dopo %1 byte (%2) entro %3 ms</translation>
+    </message>
+    <message>
+        <location filename="../comms/protocol/vigor_link.cpp" line="+94"/>
+        <source>no error (error 00h)</source>
+        <translation>nessun errore (errore 00h)</translation>
+    </message>
+    <message>
+        <location line="+2"/>
+        <source>the PLC could not read the request&apos;s characters as hexadecimal (ASCII conversion error %1h)</source>
+        <translation>il PLC non ha potuto leggere i caratteri della richiesta come esadecimali (errore di conversione ASCII %1h)</translation>
+    </message>
+    <message>
+        <location line="+6"/>
+        <source>the PLC received the request with a wrong sum (sum check error %1h): noise on the line or a wrong parity setting</source>
+        <translation>il PLC ha ricevuto la richiesta con somma errata (errore di controllo somma %1h): disturbi sulla linea o parità impostata male</translation>
+    </message>
+    <message>
+        <location line="+6"/>
+        <source>the PLC does not know the command (error %1h)</source>
+        <translation>il PLC non conosce il comando (errore %1h)</translation>
+    </message>
+    <message>
+        <location line="+4"/>
+        <source>communication error (error %1h): the PLC may be in STOP or the parity does not match</source>
+        <translation>errore di comunicazione (errore %1h): il PLC potrebbe essere in STOP o la parità non corrisponde</translation>
+    </message>
+    <message>
+        <location line="+6"/>
+        <source>address out of range (error %1h)</source>
+        <translation>indirizzo fuori campo (errore %1h)</translation>
+    </message>
+    <message>
+        <location line="+4"/>
+        <source>unknown error code %1h</source>
+        <translation>codice di errore sconosciuto %1h</translation>
+    </message>
+    <message>
+        <location line="+21"/>
+        <source>Vigor link: the reply starts with byte %1 instead of ACK (06h): not a Computer Link answer</source>
+        <translation>Vigor link: la risposta inizia con il byte %1 invece di ACK (06h): non è una risposta Computer Link</translation>
+    </message>
+    <message>
+        <location line="+13"/>
+        <source>Vigor link: %1 bytes without the end of a frame (ETX)</source>
+        <translation>Vigor link: %1 byte senza fine del frame (ETX)</translation>
+    </message>
+    <message>
+        <location line="+16"/>
+        <source>Vigor link: wrong sum in the reply (received %1, computed %2): noise on the line or a wrong parity setting</source>
+        <translation>Vigor link: somma errata nella risposta (ricevuta %1, calcolata %2): disturbi sulla linea o parità impostata male</translation>
+    </message>
+    <message>
+        <location line="+7"/>
+        <source>Vigor link: a reply of %1 bytes is too short or has an odd number of hex digits: %2</source>
+        <translation>Vigor link: una risposta di %1 byte è troppo corta o ha un numero dispari di cifre esadecimali: %2</translation>
+    </message>
+    <message>
+        <location line="+10"/>
+        <location line="+9"/>
+        <source>Vigor link: the reply holds characters that are not upper-case hexadecimal: %1</source>
+        <translation>Vigor link: la risposta contiene caratteri che non sono esadecimali maiuscoli: %1</translation>
+    </message>
+    <message>
+        <location line="+8"/>
+        <source>Vigor link: station %1 answered, station %2 was asked</source>
+        <translation>Vigor link: ha risposto la stazione %1, era interrogata la stazione %2</translation>
+    </message>
+    <message>
+        <location line="+8"/>
+        <source>Vigor link: the reply is for command %1h, the request was %2h</source>
+        <translation>Vigor link: la risposta è per il comando %1h, la richiesta era %2h</translation>
+    </message>
+    <message>
+        <location line="+7"/>
+        <source>Vigor link: %1</source>
+        <translation>Vigor link: %1</translation>
+    </message>
+    <message>
+        <location line="+5"/>
+        <source>Vigor link: the reply carries %1 data bytes, %2 expected</source>
+        <translation>Vigor link: la risposta porta %1 byte di dati, ne erano attesi %2</translation>
+    </message>
+    <message>
+        <location line="+13"/>
+        <source>Vigor link: no reply from station %1 within %2 ms</source>
+        <translation>Vigor link: nessuna risposta dalla stazione %1 entro %2 ms</translation>
+    </message>
+    <message>
+        <location line="+5"/>
+        <source>Vigor link: the reply stopped after %1 bytes (%2) within %3 ms</source>
+        <translation>Vigor link: la risposta si è interrotta dopo %1 byte (%2) entro %3 ms</translation>
+    </message>
+    <message>
+        <location filename="../comms/transport/pty_transport.cpp" line="+38"/>
+        <source>Cannot create a pseudo-terminal: %1</source>
+        <translation>Impossibile creare uno pseudo-terminale: %1</translation>
+    </message>
+    <message>
+        <location line="+25"/>
+        <source>Cannot open %1: %2</source>
+        <translation>Impossibile aprire %1: %2</translation>
+    </message>
+    <message>
+        <location line="+6"/>
+        <source>Cannot open %1: it is not a terminal</source>
+        <translation>Impossibile aprire %1: non è un terminale</translation>
+    </message>
+    <message>
+        <location line="+22"/>
+        <location line="+34"/>
+        <source>%1 is not open</source>
+        <translation>%1 non è aperto</translation>
+    </message>
+    <message>
+        <location line="-22"/>
+        <source>Writing to %1 failed: %2</source>
+        <translation>Scrittura su %1 non riuscita: %2</translation>
+    </message>
+    <message>
+        <location line="+6"/>
+        <source>Writing to %1 did not finish in time</source>
+        <translation>La scrittura su %1 non è terminata in tempo</translation>
+    </message>
+    <message>
+        <location line="+24"/>
+        <source>%1 was closed by the other side: %2</source>
+        <translation>%1 è stato chiuso dall&apos;altro lato: %2</translation>
+    </message>
+    <message>
+        <location line="+14"/>
+        <source>%1 was closed by the other side</source>
+        <translation>%1 è stato chiuso dall&apos;altro lato</translation>
+    </message>
+</context>
+<context>
     <name>rung::editor::CrossReferenceView</name>
     <message>
         <location filename="../editor/cross_reference_view.cpp" line="+51"/>
@@ -3155,6 +3531,26 @@ Editor di schemi ladder e liste istruzioni per VPC, Vigor, CPM1 e PL110.</transl
         <location line="+2"/>
         <source>End of a jump</source>
         <translation>Fine di un salto</translation>
+    </message>
+    <message>
+        <location filename="../model/target/target_cpm1_maps.cpp" line="+16"/>
+        <source>Omron Host Link (C-mode)</source>
+        <translation>Omron Host Link (modo C)</translation>
+    </message>
+    <message>
+        <location filename="../model/target/target_pl110_maps.cpp" line="+16"/>
+        <source>PL110 MODBUS RTU slave</source>
+        <translation>PL110 slave MODBUS RTU</translation>
+    </message>
+    <message>
+        <location filename="../model/target/target_vigor_maps.cpp" line="+15"/>
+        <source>Vigor Computer Link</source>
+        <translation>Vigor Computer Link</translation>
+    </message>
+    <message>
+        <location line="+19"/>
+        <source>Vigor CP2 MODBUS slave</source>
+        <translation>Vigor CP2 slave MODBUS</translation>
     </message>
 </context>
 <context>

@@ -202,35 +202,57 @@ QString endCodeText(int code) {
     const QString hex = hex2(code);
     switch (code) {
     case Normal:
-        return ProtocolTr::tr("normal completion (end code %1)").arg(hex);
+        return QCoreApplication::translate("rung::comms::Protocol",
+                                           "normal completion (end code %1)")
+            .arg(hex);
     case NotInRun:
-        return ProtocolTr::tr("not executable in RUN mode (end code %1): switch the PLC to "
-                              "MONITOR to write")
+        return QCoreApplication::translate(
+                   "rung::comms::Protocol",
+                   "not executable in RUN mode (end code %1): switch the PLC to "
+                   "MONITOR to write")
             .arg(hex);
     case NotInMonitor:
-        return ProtocolTr::tr("not executable in MONITOR mode (end code %1)").arg(hex);
+        return QCoreApplication::translate("rung::comms::Protocol",
+                                           "not executable in MONITOR mode (end code %1)")
+            .arg(hex);
     case WriteProtected:
-        return ProtocolTr::tr("the PLC's memory is write-protected (end code %1)").arg(hex);
+        return QCoreApplication::translate("rung::comms::Protocol",
+                                           "the PLC's memory is write-protected (end code %1)")
+            .arg(hex);
     case AddressOver:
-        return ProtocolTr::tr("address over: the area ends before the last word asked for "
-                              "(end code %1)")
+        return QCoreApplication::translate(
+                   "rung::comms::Protocol",
+                   "address over: the area ends before the last word asked for "
+                   "(end code %1)")
             .arg(hex);
     case NotInProgram:
-        return ProtocolTr::tr("not executable in PROGRAM mode (end code %1)").arg(hex);
+        return QCoreApplication::translate("rung::comms::Protocol",
+                                           "not executable in PROGRAM mode (end code %1)")
+            .arg(hex);
     case FcsError:
-        return ProtocolTr::tr("the PLC received the command with a wrong FCS (end code %1): noise "
-                              "on the line or a wrong parity setting")
+        return QCoreApplication::translate(
+                   "rung::comms::Protocol",
+                   "the PLC received the command with a wrong FCS (end code %1): noise "
+                   "on the line or a wrong parity setting")
             .arg(hex);
     case FormatError:
-        return ProtocolTr::tr("the PLC found the command's format wrong (end code %1)").arg(hex);
+        return QCoreApplication::translate("rung::comms::Protocol",
+                                           "the PLC found the command's format wrong (end code %1)")
+            .arg(hex);
     case EntryNumberError:
-        return ProtocolTr::tr("a number in the command is out of range (end code %1)").arg(hex);
+        return QCoreApplication::translate("rung::comms::Protocol",
+                                           "a number in the command is out of range (end code %1)")
+            .arg(hex);
     case NotSupported:
-        return ProtocolTr::tr("the PLC does not support the command (end code %1)").arg(hex);
+        return QCoreApplication::translate("rung::comms::Protocol",
+                                           "the PLC does not support the command (end code %1)")
+            .arg(hex);
     case FrameLengthError:
-        return ProtocolTr::tr("the command's frame is too long (end code %1)").arg(hex);
+        return QCoreApplication::translate("rung::comms::Protocol",
+                                           "the command's frame is too long (end code %1)")
+            .arg(hex);
     }
-    return ProtocolTr::tr("end code %1").arg(hex);
+    return QCoreApplication::translate("rung::comms::Protocol", "end code %1").arg(hex);
 }
 
 // ----- master side -----
@@ -254,17 +276,20 @@ FrameStatus ReplyDecoder::feed(QByteArrayView bytes) {
             return m_status;
         if (m_parts == 0 && m_buffer.isEmpty() && c != '@') {
             m_buffer += c;
-            return fail(Kind::Garbage,
-                        ProtocolTr::tr("Host Link: the reply starts with byte %1 instead of "
-                                       "\"@\": not a Host Link answer")
-                            .arg(hexDump(m_buffer)));
+            return fail(Kind::Garbage, QCoreApplication::translate(
+                                           "rung::comms::Protocol",
+                                           "Host Link: the reply starts with byte %1 instead of "
+                                           "\"@\": not a Host Link answer")
+                                           .arg(hexDump(m_buffer)));
         }
         if (c != Cr) {
             m_buffer += c;
             if (m_buffer.size() > MaxFirstFrame)
                 return fail(Kind::Garbage,
-                            ProtocolTr::tr("Host Link: %1 characters without the end of a frame "
-                                           "(CR)")
+                            QCoreApplication::translate(
+                                "rung::comms::Protocol",
+                                "Host Link: %1 characters without the end of a frame "
+                                "(CR)")
                                 .arg(m_buffer.size()));
             continue;
         }
@@ -277,40 +302,50 @@ FrameStatus ReplyDecoder::feed(QByteArrayView bytes) {
 FrameStatus ReplyDecoder::part(QByteArrayView frame) {
     const Part p = splitPart(frame);
     if (p.received.isEmpty())
-        return fail(
-            Kind::Malformed,
-            ProtocolTr::tr("Host Link: a frame too short to hold an FCS: %1").arg(hexDump(frame)));
+        return fail(Kind::Malformed,
+                    QCoreApplication::translate("rung::comms::Protocol",
+                                                "Host Link: a frame too short to hold an FCS: %1")
+                        .arg(hexDump(frame)));
     if (!p.fcsOk)
-        return fail(Kind::BadChecksum,
-                    ProtocolTr::tr("Host Link: wrong FCS in the reply (received %1, computed "
-                                   "%2): noise on the line or a wrong parity setting")
-                        .arg(QString::fromLatin1(p.received), QString::fromLatin1(p.computed)));
+        return fail(
+            Kind::BadChecksum,
+            QCoreApplication::translate("rung::comms::Protocol",
+                                        "Host Link: wrong FCS in the reply (received %1, computed "
+                                        "%2): noise on the line or a wrong parity setting")
+                .arg(QString::fromLatin1(p.received), QString::fromLatin1(p.computed)));
     QByteArrayView text = p.content;
     if (m_parts++ == 0) {
         const auto unit = decimalValue(text, 1, 2);
         if (!unit || text.size() < 5)
             return fail(Kind::Malformed,
-                        ProtocolTr::tr("Host Link: the reply has no unit number and header: %1")
+                        QCoreApplication::translate(
+                            "rung::comms::Protocol",
+                            "Host Link: the reply has no unit number and header: %1")
                             .arg(hexDump(frame)));
         m_reply.frame.unit = *unit;
         m_reply.frame.header = text.sliced(3, 2).toByteArray();
         if (m_reply.frame.header == "IC") {
             if (*unit != m_command.unit)
-                return fail(Kind::WrongStation,
-                            ProtocolTr::tr("Host Link: unit %1 answered, unit %2 was asked")
-                                .arg(*unit)
-                                .arg(m_command.unit));
-            return fail(Kind::DeviceError,
-                        ProtocolTr::tr("Host Link: the PLC did not recognise the command %1 "
-                                       "(IC)")
-                            .arg(QString::fromLatin1(m_command.header)),
-                        NotSupported);
+                return fail(
+                    Kind::WrongStation,
+                    QCoreApplication::translate("rung::comms::Protocol",
+                                                "Host Link: unit %1 answered, unit %2 was asked")
+                        .arg(*unit)
+                        .arg(m_command.unit));
+            return fail(
+                Kind::DeviceError,
+                QCoreApplication::translate("rung::comms::Protocol",
+                                            "Host Link: the PLC did not recognise the command %1 "
+                                            "(IC)")
+                    .arg(QString::fromLatin1(m_command.header)),
+                NotSupported);
         }
         const auto endCode = hexValue(text, 5, 2);
         if (!endCode)
-            return fail(
-                Kind::Malformed,
-                ProtocolTr::tr("Host Link: the reply has no end code: %1").arg(hexDump(frame)));
+            return fail(Kind::Malformed,
+                        QCoreApplication::translate("rung::comms::Protocol",
+                                                    "Host Link: the reply has no end code: %1")
+                            .arg(hexDump(frame)));
         m_reply.frame.endCode = *endCode;
         text = text.sliced(7);
     }
@@ -325,23 +360,30 @@ FrameStatus ReplyDecoder::part(QByteArrayView frame) {
 FrameStatus ReplyDecoder::finish() {
     const Frame &f = m_reply.frame;
     if (f.unit != m_command.unit)
-        return fail(Kind::WrongStation, ProtocolTr::tr("Host Link: unit %1 answered, unit %2 was "
-                                                       "asked")
-                                            .arg(f.unit)
-                                            .arg(m_command.unit));
+        return fail(Kind::WrongStation,
+                    QCoreApplication::translate("rung::comms::Protocol",
+                                                "Host Link: unit %1 answered, unit %2 was "
+                                                "asked")
+                        .arg(f.unit)
+                        .arg(m_command.unit));
     if (f.header != m_command.header)
-        return fail(Kind::WrongReply,
-                    ProtocolTr::tr("Host Link: the reply is for %1, the command was %2")
-                        .arg(QString::fromLatin1(f.header), QString::fromLatin1(m_command.header)));
+        return fail(
+            Kind::WrongReply,
+            QCoreApplication::translate("rung::comms::Protocol",
+                                        "Host Link: the reply is for %1, the command was %2")
+                .arg(QString::fromLatin1(f.header), QString::fromLatin1(m_command.header)));
     if (f.endCode != Normal)
-        return fail(Kind::DeviceError,
-                    ProtocolTr::tr("Host Link: %1 refused: %2")
-                        .arg(QString::fromLatin1(f.header), endCodeText(f.endCode)),
-                    f.endCode);
+        return fail(
+            Kind::DeviceError,
+            QCoreApplication::translate("rung::comms::Protocol", "Host Link: %1 refused: %2")
+                .arg(QString::fromLatin1(f.header), endCodeText(f.endCode)),
+            f.endCode);
     const auto malformed = [this, &f] {
         return fail(Kind::Malformed,
-                    ProtocolTr::tr("Host Link: the reply to %1 holds %2 characters of data that "
-                                   "do not fit the command")
+                    QCoreApplication::translate(
+                        "rung::comms::Protocol",
+                        "Host Link: the reply to %1 holds %2 characters of data that "
+                        "do not fit the command")
                         .arg(QString::fromLatin1(f.header))
                         .arg(f.text.size()));
     };
@@ -388,12 +430,15 @@ FrameStatus ReplyDecoder::finish() {
 ProtocolError ReplyDecoder::deadlinePassed(int waitedMs) const {
     if (m_buffer.isEmpty() && m_parts == 0)
         return {Kind::Truncated, 0,
-                ProtocolTr::tr("Host Link: no reply from unit %1 within %2 ms")
+                QCoreApplication::translate("rung::comms::Protocol",
+                                            "Host Link: no reply from unit %1 within %2 ms")
                     .arg(m_command.unit)
                     .arg(waitedMs)};
     return {Kind::Truncated, 0,
-            ProtocolTr::tr("Host Link: the reply stopped after %1 parts and %2 characters (%3) "
-                           "within %4 ms")
+            QCoreApplication::translate(
+                "rung::comms::Protocol",
+                "Host Link: the reply stopped after %1 parts and %2 characters (%3) "
+                "within %4 ms")
                 .arg(m_parts)
                 .arg(m_buffer.size())
                 .arg(hexDump(m_buffer))

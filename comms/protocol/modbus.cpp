@@ -138,32 +138,52 @@ QString exceptionText(int code) {
     const QString hex = hex2(code);
     switch (code) {
     case IllegalFunction:
-        return ProtocolTr::tr("illegal function (exception %1h): the device does not support "
-                              "this function code")
+        return QCoreApplication::translate(
+                   "rung::comms::Protocol",
+                   "illegal function (exception %1h): the device does not support "
+                   "this function code")
             .arg(hex);
     case IllegalDataAddress:
-        return ProtocolTr::tr("illegal data address (exception %1h): the address or the count "
-                              "is outside the device's map")
+        return QCoreApplication::translate(
+                   "rung::comms::Protocol",
+                   "illegal data address (exception %1h): the address or the count "
+                   "is outside the device's map")
             .arg(hex);
     case IllegalDataValue:
-        return ProtocolTr::tr("illegal data value (exception %1h)").arg(hex);
+        return QCoreApplication::translate("rung::comms::Protocol",
+                                           "illegal data value (exception %1h)")
+            .arg(hex);
     case ServerDeviceFailure:
-        return ProtocolTr::tr("server device failure (exception %1h); the PL110 manual uses this "
-                              "code for an illegal data value")
+        return QCoreApplication::translate(
+                   "rung::comms::Protocol",
+                   "server device failure (exception %1h); the PL110 manual uses this "
+                   "code for an illegal data value")
             .arg(hex);
     case Acknowledge:
-        return ProtocolTr::tr("acknowledge (exception %1h): the device accepted a long task")
+        return QCoreApplication::translate(
+                   "rung::comms::Protocol",
+                   "acknowledge (exception %1h): the device accepted a long task")
             .arg(hex);
     case ServerDeviceBusy:
-        return ProtocolTr::tr("server device busy (exception %1h)").arg(hex);
+        return QCoreApplication::translate("rung::comms::Protocol",
+                                           "server device busy (exception %1h)")
+            .arg(hex);
     case MemoryParityError:
-        return ProtocolTr::tr("memory parity error (exception %1h)").arg(hex);
+        return QCoreApplication::translate("rung::comms::Protocol",
+                                           "memory parity error (exception %1h)")
+            .arg(hex);
     case GatewayPathUnavailable:
-        return ProtocolTr::tr("gateway path unavailable (exception %1h)").arg(hex);
+        return QCoreApplication::translate("rung::comms::Protocol",
+                                           "gateway path unavailable (exception %1h)")
+            .arg(hex);
     case GatewayTargetNoResponse:
-        return ProtocolTr::tr("gateway target device failed to respond (exception %1h)").arg(hex);
+        return QCoreApplication::translate(
+                   "rung::comms::Protocol",
+                   "gateway target device failed to respond (exception %1h)")
+            .arg(hex);
     }
-    return ProtocolTr::tr("unknown exception code %1h").arg(hex);
+    return QCoreApplication::translate("rung::comms::Protocol", "unknown exception code %1h")
+        .arg(hex);
 }
 
 ParsedRequest parseRequestPdu(QByteArrayView pdu) {
@@ -259,24 +279,29 @@ FrameStatus ReplyDecoder::feed(QByteArrayView bytes) {
         const qsizetype length = expectedRtuLength();
         if (length < 0)
             return fail(Kind::Garbage,
-                        ProtocolTr::tr("Modbus RTU: the reply starts %1, not an answer to function "
-                                       "%2h")
+                        QCoreApplication::translate(
+                            "rung::comms::Protocol",
+                            "Modbus RTU: the reply starts %1, not an answer to function "
+                            "%2h")
                             .arg(hexDump(m_buffer), hex2(m_request.function)));
         if (length == 0 || m_buffer.size() < length)
             return m_status;
         if (m_buffer.size() > length)
-            return fail(Kind::Garbage,
-                        ProtocolTr::tr("Modbus RTU: %1 bytes more than the %2-byte reply: %3")
-                            .arg(m_buffer.size() - length)
-                            .arg(length)
-                            .arg(hexDump(m_buffer)));
+            return fail(Kind::Garbage, QCoreApplication::translate(
+                                           "rung::comms::Protocol",
+                                           "Modbus RTU: %1 bytes more than the %2-byte reply: %3")
+                                           .arg(m_buffer.size() - length)
+                                           .arg(length)
+                                           .arg(hexDump(m_buffer)));
         const QByteArrayView frame(m_buffer);
         const auto crc = crc16(frame.first(length - 2));
         const int received = byte(frame, length - 2) | byte(frame, length - 1) << 8;
         if (crc != received)
             return fail(Kind::BadChecksum,
-                        ProtocolTr::tr("Modbus RTU: wrong CRC in the reply (received %1, computed "
-                                       "%2): noise on the line or a wrong baud rate or parity")
+                        QCoreApplication::translate(
+                            "rung::comms::Protocol",
+                            "Modbus RTU: wrong CRC in the reply (received %1, computed "
+                            "%2): noise on the line or a wrong baud rate or parity")
                             .arg(QString::number(received, 16).toUpper().rightJustified(4, u'0'),
                                  QString::number(crc, 16).toUpper().rightJustified(4, u'0')));
         return decodePdu(frame.sliced(1, length - 3), byte(frame, 0));
@@ -288,7 +313,9 @@ FrameStatus ReplyDecoder::feed(QByteArrayView bytes) {
     const int length = get16(m_buffer, 4);
     if (protocol != 0 || length < 3 || length > 254)
         return fail(Kind::Garbage,
-                    ProtocolTr::tr("Modbus TCP: not a Modbus header (protocol %1, length %2): %3")
+                    QCoreApplication::translate(
+                        "rung::comms::Protocol",
+                        "Modbus TCP: not a Modbus header (protocol %1, length %2): %3")
                         .arg(protocol)
                         .arg(length)
                         .arg(hexDump(m_buffer)));
@@ -296,12 +323,15 @@ FrameStatus ReplyDecoder::feed(QByteArrayView bytes) {
         return m_status;
     if (m_buffer.size() > 6 + length)
         return fail(Kind::Garbage,
-                    ProtocolTr::tr("Modbus TCP: %1 bytes more than the reply's length")
+                    QCoreApplication::translate("rung::comms::Protocol",
+                                                "Modbus TCP: %1 bytes more than the reply's length")
                         .arg(m_buffer.size() - 6 - length));
     if (transaction != (m_transaction & 0xFFFF))
         return fail(Kind::WrongReply,
-                    ProtocolTr::tr("Modbus TCP: the reply is for transaction %1, the request was "
-                                   "%2")
+                    QCoreApplication::translate(
+                        "rung::comms::Protocol",
+                        "Modbus TCP: the reply is for transaction %1, the request was "
+                        "%2")
                         .arg(transaction)
                         .arg(m_transaction));
     return decodePdu(QByteArrayView(m_buffer).sliced(7), byte(m_buffer, 6));
@@ -309,30 +339,39 @@ FrameStatus ReplyDecoder::feed(QByteArrayView bytes) {
 
 FrameStatus ReplyDecoder::decodePdu(QByteArrayView pdu, int unit) {
     if (unit != (m_unit & 0xFF))
-        return fail(
-            Kind::WrongStation,
-            ProtocolTr::tr("Modbus: unit %1 answered, unit %2 was asked").arg(unit).arg(m_unit));
+        return fail(Kind::WrongStation,
+                    QCoreApplication::translate("rung::comms::Protocol",
+                                                "Modbus: unit %1 answered, unit %2 was asked")
+                        .arg(unit)
+                        .arg(m_unit));
     Response &r = m_response;
     const int function = byte(pdu, 0);
     r.function = m_request.function;
     if (function == (m_request.function | 0x80)) {
         if (pdu.size() != 2)
             return fail(Kind::Malformed,
-                        ProtocolTr::tr("Modbus: an exception reply of %1 bytes").arg(pdu.size()));
+                        QCoreApplication::translate("rung::comms::Protocol",
+                                                    "Modbus: an exception reply of %1 bytes")
+                            .arg(pdu.size()));
         r.exception = byte(pdu, 1);
-        return fail(Kind::DeviceError,
-                    ProtocolTr::tr("Modbus: function %1h refused: %2")
-                        .arg(hex2(m_request.function), exceptionText(r.exception)),
-                    r.exception);
+        return fail(
+            Kind::DeviceError,
+            QCoreApplication::translate("rung::comms::Protocol", "Modbus: function %1h refused: %2")
+                .arg(hex2(m_request.function), exceptionText(r.exception)),
+            r.exception);
     }
     if (function != m_request.function)
         return fail(Kind::WrongReply,
-                    ProtocolTr::tr("Modbus: the reply is for function %1h, the request was %2h")
+                    QCoreApplication::translate(
+                        "rung::comms::Protocol",
+                        "Modbus: the reply is for function %1h, the request was %2h")
                         .arg(hex2(function), hex2(m_request.function)));
     const auto mismatch = [this, &pdu] {
         return fail(Kind::WrongReply,
-                    ProtocolTr::tr("Modbus: the reply to function %1h does not match the request: "
-                                   "%2")
+                    QCoreApplication::translate(
+                        "rung::comms::Protocol",
+                        "Modbus: the reply to function %1h does not match the request: "
+                        "%2")
                         .arg(hex2(m_request.function), hexDump(pdu)));
     };
     if (isRead(function)) {
@@ -360,14 +399,18 @@ FrameStatus ReplyDecoder::decodePdu(QByteArrayView pdu, int unit) {
 
 ProtocolError ReplyDecoder::deadlinePassed(int waitedMs) const {
     if (m_buffer.isEmpty())
-        return {
-            Kind::Truncated, 0,
-            ProtocolTr::tr("Modbus: no reply from unit %1 within %2 ms").arg(m_unit).arg(waitedMs)};
-    return {Kind::Truncated, 0,
-            ProtocolTr::tr("Modbus: the reply stopped after %1 bytes (%2) within %3 ms")
-                .arg(m_buffer.size())
-                .arg(hexDump(m_buffer))
-                .arg(waitedMs)};
+        return {Kind::Truncated, 0,
+                QCoreApplication::translate("rung::comms::Protocol",
+                                            "Modbus: no reply from unit %1 within %2 ms")
+                    .arg(m_unit)
+                    .arg(waitedMs)};
+    return {
+        Kind::Truncated, 0,
+        QCoreApplication::translate("rung::comms::Protocol",
+                                    "Modbus: the reply stopped after %1 bytes (%2) within %3 ms")
+            .arg(m_buffer.size())
+            .arg(hexDump(m_buffer))
+            .arg(waitedMs)};
 }
 
 // ----- slave side -----

@@ -10,6 +10,10 @@
 
 namespace rung::comms {
 
+// The translation context of every comms message. The sources call
+// QCoreApplication::translate("rung::comms::Protocol", ...) rather than ProtocolTr::tr():
+// lupdate's parser loses the class inside lambdas in nested namespaces and would file the
+// texts under a context the program never asks for.
 struct ProtocolTr {
     Q_DECLARE_TR_FUNCTIONS(rung::comms::Protocol)
 };

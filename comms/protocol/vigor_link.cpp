@@ -91,25 +91,35 @@ QString errorText(int code) {
     const QString hex = QString::number(code, 16).toUpper().rightJustified(2, QLatin1Char('0'));
     switch (ErrorCode(code)) {
     case ErrorCode::None:
-        return ProtocolTr::tr("no error (error 00h)");
+        return QCoreApplication::translate("rung::comms::Protocol", "no error (error 00h)");
     case ErrorCode::AsciiConversion:
-        return ProtocolTr::tr("the PLC could not read the request's characters as hexadecimal "
-                              "(ASCII conversion error %1h)")
+        return QCoreApplication::translate(
+                   "rung::comms::Protocol",
+                   "the PLC could not read the request's characters as hexadecimal "
+                   "(ASCII conversion error %1h)")
             .arg(hex);
     case ErrorCode::SumCheck:
-        return ProtocolTr::tr("the PLC received the request with a wrong sum (sum check error "
-                              "%1h): noise on the line or a wrong parity setting")
+        return QCoreApplication::translate(
+                   "rung::comms::Protocol",
+                   "the PLC received the request with a wrong sum (sum check error "
+                   "%1h): noise on the line or a wrong parity setting")
             .arg(hex);
     case ErrorCode::NoSuchCommand:
-        return ProtocolTr::tr("the PLC does not know the command (error %1h)").arg(hex);
+        return QCoreApplication::translate("rung::comms::Protocol",
+                                           "the PLC does not know the command (error %1h)")
+            .arg(hex);
     case ErrorCode::Communication:
-        return ProtocolTr::tr("communication error (error %1h): the PLC may be in STOP or the "
-                              "parity does not match")
+        return QCoreApplication::translate(
+                   "rung::comms::Protocol",
+                   "communication error (error %1h): the PLC may be in STOP or the "
+                   "parity does not match")
             .arg(hex);
     case ErrorCode::AddressRange:
-        return ProtocolTr::tr("address out of range (error %1h)").arg(hex);
+        return QCoreApplication::translate("rung::comms::Protocol",
+                                           "address out of range (error %1h)")
+            .arg(hex);
     }
-    return ProtocolTr::tr("unknown error code %1h").arg(hex);
+    return QCoreApplication::translate("rung::comms::Protocol", "unknown error code %1h").arg(hex);
 }
 
 // ----- master side -----
@@ -130,8 +140,10 @@ FrameStatus ReplyDecoder::feed(QByteArrayView bytes) {
         if (m_buffer.isEmpty() && c != Ack) {
             m_buffer += c;
             return fail(Kind::Garbage,
-                        ProtocolTr::tr("Vigor link: the reply starts with byte %1 instead of ACK "
-                                       "(06h): not a Computer Link answer")
+                        QCoreApplication::translate(
+                            "rung::comms::Protocol",
+                            "Vigor link: the reply starts with byte %1 instead of ACK "
+                            "(06h): not a Computer Link answer")
                             .arg(hexDump(m_buffer)));
         }
         m_buffer += c;
@@ -141,9 +153,10 @@ FrameStatus ReplyDecoder::feed(QByteArrayView bytes) {
             return decode();
         // A reply longer than the longest legal one is not going to end well.
         if (m_buffer.size() > 1 + 6 + 2 * MaxBytes + 3)
-            return fail(Kind::Garbage,
-                        ProtocolTr::tr("Vigor link: %1 bytes without the end of a frame (ETX)")
-                            .arg(m_buffer.size()));
+            return fail(Kind::Garbage, QCoreApplication::translate(
+                                           "rung::comms::Protocol",
+                                           "Vigor link: %1 bytes without the end of a frame (ETX)")
+                                           .arg(m_buffer.size()));
     }
     return m_status;
 }
@@ -154,55 +167,67 @@ FrameStatus ReplyDecoder::decode() {
     const QByteArrayView body = frame.sliced(1, etx); // station .. ETX
     const QByteArray expectedSum = sum(body);
     if (frame.sliced(etx + 1, 2) != QByteArrayView(expectedSum))
-        return fail(Kind::BadChecksum,
-                    ProtocolTr::tr("Vigor link: wrong sum in the reply (received %1, computed "
-                                   "%2): noise on the line or a wrong parity setting")
-                        .arg(QString::fromLatin1(frame.sliced(etx + 1, 2).toByteArray()),
-                             QString::fromLatin1(expectedSum)));
+        return fail(
+            Kind::BadChecksum,
+            QCoreApplication::translate("rung::comms::Protocol",
+                                        "Vigor link: wrong sum in the reply (received %1, computed "
+                                        "%2): noise on the line or a wrong parity setting")
+                .arg(QString::fromLatin1(frame.sliced(etx + 1, 2).toByteArray()),
+                     QString::fromLatin1(expectedSum)));
     if (etx < 7 || (etx - 7) % 2 != 0)
         return fail(Kind::Malformed,
-                    ProtocolTr::tr("Vigor link: a reply of %1 bytes is too short or has an odd "
-                                   "number of hex digits: %2")
+                    QCoreApplication::translate(
+                        "rung::comms::Protocol",
+                        "Vigor link: a reply of %1 bytes is too short or has an odd "
+                        "number of hex digits: %2")
                         .arg(frame.size())
                         .arg(hexDump(frame)));
     const auto station = hexValue(frame, 1, 2);
     const auto command = hexValue(frame, 3, 2);
     const auto error = hexValue(frame, 5, 2);
     if (!station || !command || !error)
-        return fail(Kind::Garbage,
-                    ProtocolTr::tr("Vigor link: the reply holds characters that are not "
-                                   "upper-case hexadecimal: %1")
-                        .arg(hexDump(frame)));
+        return fail(Kind::Garbage, QCoreApplication::translate(
+                                       "rung::comms::Protocol",
+                                       "Vigor link: the reply holds characters that are not "
+                                       "upper-case hexadecimal: %1")
+                                       .arg(hexDump(frame)));
     QByteArray data;
     for (qsizetype at = 7; at < etx; at += 2) {
         const auto byte = hexValue(frame, at, 2);
         if (!byte)
-            return fail(Kind::Garbage,
-                        ProtocolTr::tr("Vigor link: the reply holds characters that are not "
-                                       "upper-case hexadecimal: %1")
-                            .arg(hexDump(frame)));
+            return fail(Kind::Garbage, QCoreApplication::translate(
+                                           "rung::comms::Protocol",
+                                           "Vigor link: the reply holds characters that are not "
+                                           "upper-case hexadecimal: %1")
+                                           .arg(hexDump(frame)));
         data += char(*byte);
     }
     if (*station != (m_request.station & 0xFF))
-        return fail(Kind::WrongStation,
-                    ProtocolTr::tr("Vigor link: station %1 answered, station %2 was asked")
-                        .arg(*station)
-                        .arg(m_request.station));
+        return fail(Kind::WrongStation, QCoreApplication::translate(
+                                            "rung::comms::Protocol",
+                                            "Vigor link: station %1 answered, station %2 was asked")
+                                            .arg(*station)
+                                            .arg(m_request.station));
     if (*command != int(m_request.command))
-        return fail(Kind::WrongReply,
-                    ProtocolTr::tr("Vigor link: the reply is for command %1h, the request was "
-                                   "%2h")
-                        .arg(QString::number(*command, 16).toUpper(),
-                             QString::number(int(m_request.command), 16).toUpper()));
+        return fail(
+            Kind::WrongReply,
+            QCoreApplication::translate("rung::comms::Protocol",
+                                        "Vigor link: the reply is for command %1h, the request was "
+                                        "%2h")
+                .arg(QString::number(*command, 16).toUpper(),
+                     QString::number(int(m_request.command), 16).toUpper()));
     if (*error != 0)
-        return fail(Kind::DeviceError, ProtocolTr::tr("Vigor link: %1").arg(errorText(*error)),
+        return fail(Kind::DeviceError,
+                    QCoreApplication::translate("rung::comms::Protocol", "Vigor link: %1")
+                        .arg(errorText(*error)),
                     *error);
     const int expected = m_request.command == Command::Read ? m_request.length : 0;
     if (data.size() != expected)
-        return fail(Kind::Malformed,
-                    ProtocolTr::tr("Vigor link: the reply carries %1 data bytes, %2 expected")
-                        .arg(data.size())
-                        .arg(expected));
+        return fail(Kind::Malformed, QCoreApplication::translate(
+                                         "rung::comms::Protocol",
+                                         "Vigor link: the reply carries %1 data bytes, %2 expected")
+                                         .arg(data.size())
+                                         .arg(expected));
     m_reply = Reply{*station, m_request.command, 0, data};
     m_status = FrameStatus::Complete;
     return m_status;
@@ -211,11 +236,14 @@ FrameStatus ReplyDecoder::decode() {
 ProtocolError ReplyDecoder::deadlinePassed(int waitedMs) const {
     if (m_buffer.isEmpty())
         return {Kind::Truncated, 0,
-                ProtocolTr::tr("Vigor link: no reply from station %1 within %2 ms")
+                QCoreApplication::translate("rung::comms::Protocol",
+                                            "Vigor link: no reply from station %1 within %2 ms")
                     .arg(m_request.station)
                     .arg(waitedMs)};
     return {Kind::Truncated, 0,
-            ProtocolTr::tr("Vigor link: the reply stopped after %1 bytes (%2) within %3 ms")
+            QCoreApplication::translate(
+                "rung::comms::Protocol",
+                "Vigor link: the reply stopped after %1 bytes (%2) within %3 ms")
                 .arg(m_buffer.size())
                 .arg(hexDump(m_buffer))
                 .arg(waitedMs)};

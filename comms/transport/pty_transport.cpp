@@ -35,7 +35,9 @@ std::unique_ptr<PtyTransport> PtyTransport::createPair(QString *error) {
     const int master = ::posix_openpt(O_RDWR | O_NOCTTY | O_CLOEXEC | O_NONBLOCK);
     if (master < 0 || ::grantpt(master) != 0 || ::unlockpt(master) != 0) {
         if (error)
-            *error = ProtocolTr::tr("Cannot create a pseudo-terminal: %1").arg(cause());
+            *error = QCoreApplication::translate("rung::comms::Protocol",
+                                                 "Cannot create a pseudo-terminal: %1")
+                         .arg(cause());
         if (master >= 0)
             ::close(master);
         return nullptr;
@@ -58,12 +60,15 @@ bool PtyTransport::open(QString *error) {
     m_fd = ::open(m_path.toLocal8Bit().constData(), O_RDWR | O_NOCTTY | O_CLOEXEC | O_NONBLOCK);
     if (m_fd < 0) {
         if (error)
-            *error = ProtocolTr::tr("Cannot open %1: %2").arg(m_path, cause());
+            *error = QCoreApplication::translate("rung::comms::Protocol", "Cannot open %1: %2")
+                         .arg(m_path, cause());
         return false;
     }
     if (!::isatty(m_fd) || !makeRaw(m_fd)) {
         if (error)
-            *error = ProtocolTr::tr("Cannot open %1: it is not a terminal").arg(m_path);
+            *error = QCoreApplication::translate("rung::comms::Protocol",
+                                                 "Cannot open %1: it is not a terminal")
+                         .arg(m_path);
         close();
         return false;
     }
@@ -83,7 +88,8 @@ bool PtyTransport::write(QByteArrayView bytes, QDeadlineTimer deadline, QString 
     while (done < bytes.size()) {
         if (m_fd < 0) {
             if (error)
-                *error = ProtocolTr::tr("%1 is not open").arg(m_path);
+                *error = QCoreApplication::translate("rung::comms::Protocol", "%1 is not open")
+                             .arg(m_path);
             return false;
         }
         const auto n = ::write(m_fd, bytes.data() + done, size_t(bytes.size() - done));
@@ -93,12 +99,16 @@ bool PtyTransport::write(QByteArrayView bytes, QDeadlineTimer deadline, QString 
         }
         if (n < 0 && errno != EAGAIN && errno != EINTR) {
             if (error)
-                *error = ProtocolTr::tr("Writing to %1 failed: %2").arg(m_path, cause());
+                *error =
+                    QCoreApplication::translate("rung::comms::Protocol", "Writing to %1 failed: %2")
+                        .arg(m_path, cause());
             return false;
         }
         if (m_waiter.wait(m_fd, deadline, true) != detail::FdWaiter::Result::Ready) {
             if (error)
-                *error = ProtocolTr::tr("Writing to %1 did not finish in time").arg(m_path);
+                *error = QCoreApplication::translate("rung::comms::Protocol",
+                                                     "Writing to %1 did not finish in time")
+                             .arg(m_path);
             return false;
         }
     }
@@ -109,7 +119,10 @@ ReadResult PtyTransport::read(QDeadlineTimer deadline) {
     using R = ReadResult::Status;
     while (true) {
         if (m_fd < 0)
-            return {R::Failed, {}, ProtocolTr::tr("%1 is not open").arg(m_path)};
+            return {
+                R::Failed,
+                {},
+                QCoreApplication::translate("rung::comms::Protocol", "%1 is not open").arg(m_path)};
         char buffer[512];
         const auto n = ::read(m_fd, buffer, sizeof buffer);
         if (n > 0)
@@ -117,7 +130,8 @@ ReadResult PtyTransport::read(QDeadlineTimer deadline) {
         if (n == 0 || (errno != EAGAIN && errno != EINTR))
             return {R::Failed,
                     {},
-                    ProtocolTr::tr("%1 was closed by the other side: %2")
+                    QCoreApplication::translate("rung::comms::Protocol",
+                                                "%1 was closed by the other side: %2")
                         .arg(m_path, n == 0 ? QStringLiteral("EOF") : cause())};
         switch (m_waiter.wait(m_fd, deadline)) {
         case detail::FdWaiter::Result::Ready:
@@ -128,7 +142,11 @@ ReadResult PtyTransport::read(QDeadlineTimer deadline) {
             return {R::Cancelled, {}, {}};
         case detail::FdWaiter::Result::Hangup:
         case detail::FdWaiter::Result::Error:
-            return {R::Failed, {}, ProtocolTr::tr("%1 was closed by the other side").arg(m_path)};
+            return {R::Failed,
+                    {},
+                    QCoreApplication::translate("rung::comms::Protocol",
+                                                "%1 was closed by the other side")
+                        .arg(m_path)};
         }
     }
 }
