@@ -1313,6 +1313,8 @@ Létradiagram- és utasításlista-szerkesztő VPC, Vigor, CPM1 és PL110 PLC-kh
     </message>
     <message>
         <location line="+25"/>
+        <location filename="../comms/transport/serial_transport.cpp" line="+87"/>
+        <location line="+12"/>
         <source>Cannot open %1: %2</source>
         <translation>%1 nem nyitható meg: %2</translation>
     </message>
@@ -1324,16 +1326,24 @@ Létradiagram- és utasításlista-szerkesztő VPC, Vigor, CPM1 és PL110 PLC-kh
     <message>
         <location line="+22"/>
         <location line="+34"/>
+        <location filename="../comms/transport/serial_transport.cpp" line="+38"/>
+        <location line="+23"/>
+        <location filename="../comms/transport/tcp_transport.cpp" line="+78"/>
+        <location line="+30"/>
         <source>%1 is not open</source>
         <translation>%1 nincs megnyitva</translation>
     </message>
     <message>
         <location line="-22"/>
+        <location filename="../comms/transport/serial_transport.cpp" line="-13"/>
+        <location filename="../comms/transport/tcp_transport.cpp" line="-24"/>
         <source>Writing to %1 failed: %2</source>
         <translation>Sikertelen írás ide: %1: %2</translation>
     </message>
     <message>
         <location line="+6"/>
+        <location filename="../comms/transport/serial_transport.cpp" line="+2"/>
+        <location filename="../comms/transport/tcp_transport.cpp" line="+8"/>
         <source>Writing to %1 did not finish in time</source>
         <translation>Az írás ide: %1 nem fejeződött be időben</translation>
     </message>
@@ -1344,8 +1354,55 @@ Létradiagram- és utasításlista-szerkesztő VPC, Vigor, CPM1 és PL110 PLC-kh
     </message>
     <message>
         <location line="+14"/>
+        <location filename="../comms/transport/tcp_transport.cpp" line="+22"/>
         <source>%1 was closed by the other side</source>
         <translation>%1 kapcsolatát a másik oldal lezárta</translation>
+    </message>
+    <message>
+        <location filename="../comms/transport/serial_transport.cpp" line="-132"/>
+        <source>permission denied: add your user to the group that owns %1 (usually &quot;dialout&quot;: sudo usermod -aG dialout $USER, then log in again)</source>
+        <translation>hozzáférés megtagadva: vegye fel a felhasználót a(z) %1 tulajdonos csoportjába (általában &quot;dialout&quot;: sudo usermod -aG dialout $USER, majd jelentkezzen be újra)</translation>
+    </message>
+    <message>
+        <location line="+6"/>
+        <source>the port is busy: another program has it open</source>
+        <translation>a port foglalt: egy másik program használja</translation>
+    </message>
+    <message>
+        <location line="+5"/>
+        <source>no such port (unplugged?)</source>
+        <translation>nincs ilyen port (kihúzták?)</translation>
+    </message>
+    <message>
+        <location line="+87"/>
+        <source>%1 does not accept the line settings: %2</source>
+        <translation>%1 nem fogadja el a vonalbeállításokat: %2</translation>
+    </message>
+    <message>
+        <location line="+54"/>
+        <source>%1 failed while reading (unplugged?): %2</source>
+        <translation>%1 olvasás közben meghibásodott (kihúzták?): %2</translation>
+    </message>
+    <message>
+        <location line="+11"/>
+        <location line="+11"/>
+        <source>%1 is gone (unplugged?)</source>
+        <translation>%1 eltűnt (kihúzták?)</translation>
+    </message>
+    <message>
+        <location filename="../comms/transport/tcp_transport.cpp" line="-62"/>
+        <source>Cannot connect to %1: %2</source>
+        <translation>Nem sikerült kapcsolódni ide: %1: %2</translation>
+    </message>
+    <message>
+        <location line="+3"/>
+        <source>Cannot connect to %1 within %2 ms</source>
+        <translation>Nem sikerült %2 ms alatt kapcsolódni ide: %1</translation>
+    </message>
+    <message>
+        <location line="+83"/>
+        <source>Cannot listen on %1:%2: %3</source>
+        <translation>Nem lehet figyelni ezen: %1:%2: %3</translation>
     </message>
 </context>
 <context>

@@ -1317,6 +1317,8 @@ Editor di schemi ladder e liste istruzioni per VPC, Vigor, CPM1 e PL110.</transl
     </message>
     <message>
         <location line="+25"/>
+        <location filename="../comms/transport/serial_transport.cpp" line="+87"/>
+        <location line="+12"/>
         <source>Cannot open %1: %2</source>
         <translation>Impossibile aprire %1: %2</translation>
     </message>
@@ -1328,16 +1330,24 @@ Editor di schemi ladder e liste istruzioni per VPC, Vigor, CPM1 e PL110.</transl
     <message>
         <location line="+22"/>
         <location line="+34"/>
+        <location filename="../comms/transport/serial_transport.cpp" line="+38"/>
+        <location line="+23"/>
+        <location filename="../comms/transport/tcp_transport.cpp" line="+78"/>
+        <location line="+30"/>
         <source>%1 is not open</source>
         <translation>%1 non è aperto</translation>
     </message>
     <message>
         <location line="-22"/>
+        <location filename="../comms/transport/serial_transport.cpp" line="-13"/>
+        <location filename="../comms/transport/tcp_transport.cpp" line="-24"/>
         <source>Writing to %1 failed: %2</source>
         <translation>Scrittura su %1 non riuscita: %2</translation>
     </message>
     <message>
         <location line="+6"/>
+        <location filename="../comms/transport/serial_transport.cpp" line="+2"/>
+        <location filename="../comms/transport/tcp_transport.cpp" line="+8"/>
         <source>Writing to %1 did not finish in time</source>
         <translation>La scrittura su %1 non è terminata in tempo</translation>
     </message>
@@ -1348,8 +1358,55 @@ Editor di schemi ladder e liste istruzioni per VPC, Vigor, CPM1 e PL110.</transl
     </message>
     <message>
         <location line="+14"/>
+        <location filename="../comms/transport/tcp_transport.cpp" line="+22"/>
         <source>%1 was closed by the other side</source>
         <translation>%1 è stato chiuso dall&apos;altro lato</translation>
+    </message>
+    <message>
+        <location filename="../comms/transport/serial_transport.cpp" line="-132"/>
+        <source>permission denied: add your user to the group that owns %1 (usually &quot;dialout&quot;: sudo usermod -aG dialout $USER, then log in again)</source>
+        <translation>permesso negato: aggiungere l&apos;utente al gruppo proprietario di %1 (di solito &quot;dialout&quot;: sudo usermod -aG dialout $USER, poi accedere di nuovo)</translation>
+    </message>
+    <message>
+        <location line="+6"/>
+        <source>the port is busy: another program has it open</source>
+        <translation>la porta è occupata: un altro programma la tiene aperta</translation>
+    </message>
+    <message>
+        <location line="+5"/>
+        <source>no such port (unplugged?)</source>
+        <translation>porta inesistente (scollegata?)</translation>
+    </message>
+    <message>
+        <location line="+87"/>
+        <source>%1 does not accept the line settings: %2</source>
+        <translation>%1 non accetta le impostazioni di linea: %2</translation>
+    </message>
+    <message>
+        <location line="+54"/>
+        <source>%1 failed while reading (unplugged?): %2</source>
+        <translation>%1 ha dato errore durante la lettura (scollegata?): %2</translation>
+    </message>
+    <message>
+        <location line="+11"/>
+        <location line="+11"/>
+        <source>%1 is gone (unplugged?)</source>
+        <translation>%1 non c&apos;è più (scollegata?)</translation>
+    </message>
+    <message>
+        <location filename="../comms/transport/tcp_transport.cpp" line="-62"/>
+        <source>Cannot connect to %1: %2</source>
+        <translation>Impossibile connettersi a %1: %2</translation>
+    </message>
+    <message>
+        <location line="+3"/>
+        <source>Cannot connect to %1 within %2 ms</source>
+        <translation>Impossibile connettersi a %1 entro %2 ms</translation>
+    </message>
+    <message>
+        <location line="+83"/>
+        <source>Cannot listen on %1:%2: %3</source>
+        <translation>Impossibile restare in ascolto su %1:%2: %3</translation>
     </message>
 </context>
 <context>

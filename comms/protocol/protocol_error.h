@@ -10,13 +10,9 @@
 
 namespace rung::comms {
 
-// The translation context of every comms message. The sources call
-// QCoreApplication::translate("rung::comms::Protocol", ...) rather than ProtocolTr::tr():
-// lupdate's parser loses the class inside lambdas in nested namespaces and would file the
-// texts under a context the program never asks for.
-struct ProtocolTr {
-    Q_DECLARE_TR_FUNCTIONS(rung::comms::Protocol)
-};
+// Every comms message is translated in the context "rung::comms::Protocol", spelled out in
+// QCoreApplication::translate() calls: lupdate's parser loses a class's tr() context inside
+// lambdas in nested namespaces and would file the texts where the program never looks.
 
 enum class FrameStatus : std::uint8_t {
     NeedMore, // a frame has started (or not yet) and is not complete
