@@ -1,6 +1,7 @@
 #!/usr/bin/env bash
 # Builds the libFuzzer targets with clang (ASan + UBSan) and runs each for SECONDS:
-#   bash scripts/fuzz.sh [SECONDS] [fuzz_il_parser|fuzz_project_loader]
+#   bash scripts/fuzz.sh [SECONDS] [fuzz_il_parser|fuzz_project_loader|fuzz_vigor_reply|
+#                                   fuzz_modbus_reply|fuzz_hostlink_reply]
 # Corpora start from the project's own listings, ladders and projects; findings land in
 # build-fuzz/findings/.
 set -euo pipefail
@@ -10,7 +11,8 @@ only="${2:-}"
 bash scripts/install-deps.sh
 CC=clang CXX=clang++ cmake -S . -B build-fuzz -G Ninja -DCMAKE_BUILD_TYPE=RelWithDebInfo \
     -DRUNG_BUILD_FUZZERS=ON -DRUNG_BUILD_GUI=OFF -DRUNG_BUILD_BENCHMARKS=OFF >/dev/null
-cmake --build build-fuzz --target fuzz_il_parser fuzz_project_loader
+comms_fuzzers=(fuzz_vigor_reply fuzz_modbus_reply fuzz_hostlink_reply)
+cmake --build build-fuzz --target fuzz_il_parser fuzz_project_loader "${comms_fuzzers[@]}"
 mkdir -p build-fuzz/corpus/il build-fuzz/corpus/project build-fuzz/findings
 # The IL fuzzer reads the first byte as the target (Family: 0 VPC, 1 Vigor, 2 CPM1, 3 PL110);
 # each listing is seeded with its own family, named by the file's prefix.
@@ -24,12 +26,22 @@ for f in tests/data/sim/*.il; do
     { printf "$byte"; cat "$f"; } > "build-fuzz/corpus/il/$(basename "$f")"
 done
 cp resources/examples/*/*.rung build-fuzz/corpus/project/
+# The comms fuzzers start from one good reply each (Vigor: protocols.md's read of M8..M23),
+# behind the bytes that pick the request and the chunk size (tests/fuzz/fuzz_comms_common.h).
+mkdir -p build-fuzz/corpus/fuzz_vigor_reply build-fuzz/corpus/fuzz_modbus_reply \
+    build-fuzz/corpus/fuzz_hostlink_reply
+printf '\000\000\000\201\001\017\006\060\060\065\061\060\060\101\067\071\063\003\060\104' \
+    > build-fuzz/corpus/fuzz_vigor_reply/read_m8
+printf '\000\002\000\000\000\000\001\017\001\003\002\000\007\371\206' \
+    > build-fuzz/corpus/fuzz_modbus_reply/read_hr
+printf '\000\002\017@00MS0003005D*\r' > build-fuzz/corpus/fuzz_hostlink_reply/status
 export ASAN_OPTIONS=detect_leaks=0
 export UBSAN_OPTIONS=print_stacktrace=1
-for name in fuzz_il_parser fuzz_project_loader; do
+for name in fuzz_il_parser fuzz_project_loader "${comms_fuzzers[@]}"; do
     [ -n "$only" ] && [ "$only" != "$name" ] && continue
     corpus=build-fuzz/corpus/il
     [ "$name" = fuzz_project_loader ] && corpus=build-fuzz/corpus/project
+    [ -d "build-fuzz/corpus/$name" ] && corpus="build-fuzz/corpus/$name"
     echo "== $name for ${seconds}s"
     log="build-fuzz/$name.log"
     status=0

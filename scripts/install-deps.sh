@@ -9,6 +9,7 @@ packages=(
     qt6-translations-l10n
     libgtest-dev libbenchmark-dev
     xvfb xauth poppler-utils
+    mbpoll libmodbus-dev python3-pymodbus python3-serial-asyncio socat
 )
 missing=()
 for p in "${packages[@]}"; do

@@ -5,6 +5,7 @@
 // written anywhere else.
 
 #include "model/target/op.h"
+#include "model/target/protocol_map.h"
 
 #include <QMultiHash>
 #include <QString>
@@ -240,10 +241,6 @@ struct Semantics {
     ParallelPort parallelIn;  // VPC p77
 };
 
-// The protocol address maps of a target (Vigor link byte addresses, Vigor and PL110 Modbus
-// maps, Host Link areas): target data like the rest, filled by the comms tables. Empty for now.
-struct ProtocolMaps {};
-
 // A model (hardware variant) narrows the areas: I/O counts, analog channels.
 struct ModelVariant {
     QString name; // "VPC2416", "VB", "CPM1-20CDR", "PL110-1A"
@@ -269,7 +266,7 @@ public:
     double defaultTimerBaseMs = 100.0; // Vigor TMR default resolution
     ConstantNotation constants;
     Semantics semantics;
-    ProtocolMaps protocols;
+    std::vector<ProtocolMap> protocolMaps; // protocol_map.h: where devices sit on the wire
 
     // The four families, built once.
     static const Target &get(Family family);

@@ -218,6 +218,7 @@ Target makeCpm1Target() {
     ModelVariant expanded;
     expanded.name = QStringLiteral("CPM1-30CDR+expansion");
     t.models.push_back(expanded);
+    t.protocolMaps = cpm1ProtocolMaps();
     return t;
 }
 

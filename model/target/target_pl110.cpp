@@ -309,6 +309,7 @@ Target makePl110Target() {
         ModelVariant{QStringLiteral("PL110-1A"), {{QStringLiteral("DISP"), 0, -1}}, 0},
         ModelVariant{QStringLiteral("PL110-2A"), {}, 0},
     };
+    t.protocolMaps = pl110ProtocolMaps();
     return t;
 }
 

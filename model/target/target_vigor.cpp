@@ -349,6 +349,7 @@ Target makeVigorTarget() {
         ModelVariant{QStringLiteral("VB"), {}, 16000},
         ModelVariant{QStringLiteral("VH"), {}, 16000},
     };
+    t.protocolMaps = vigorProtocolMaps();
     return t;
 }
 

@@ -1,0 +1,148 @@
+#pragma once
+
+// Omron Host Link, C-mode commands (CPM1 / SRM1 manual W353, C200HS; protocols.md), both
+// sides, no I/O.
+//   command  "@" unit(2 decimal) header(2) text FCS(2 hex) "*" CR
+//   response "@" unit header end-code(2 hex) text FCS "*" CR
+// FCS = XOR of every character from "@" (or the frame's first character) to the end of the
+// text. A frame over 131 characters is split: the first holds at most 131 characters, each
+// later one at most 128; a frame that is not the last ends in FCS CR (no "*"), and the other
+// side answers a lone CR (the delimiter) before the next part comes.
+
+#include "comms/protocol/protocol_error.h"
+
+#include <QByteArray>
+#include <QList>
+
+#include <cstdint>
+#include <vector>
+
+namespace rung::comms::hostlink {
+
+inline constexpr char Cr = '\r';
+inline constexpr int MaxFirstFrame = 131;
+inline constexpr int MaxLaterFrame = 128;
+
+// The word areas the read/write commands reach, with their headers.
+enum class Area : std::uint8_t {
+    Ir,        // RR / WR: IR and SR channels
+    Hr,        // RH / WH
+    Dm,        // RD / WD
+    TimerPv,   // RC / WC: timer / counter present values (BCD)
+    Completion // RG: timer / counter completion flags (read only)
+};
+
+enum class Mode : std::uint8_t { Program = 0x00, Monitor = 0x02, Run = 0x03 };
+
+// End codes (W353, Host Link commands).
+enum EndCode : std::uint8_t {
+    Normal = 0x00,
+    NotInRun = 0x01,
+    NotInMonitor = 0x02,
+    WriteProtected = 0x03,
+    AddressOver = 0x04,
+    NotInProgram = 0x0B,
+    FcsError = 0x13,
+    FormatError = 0x14,
+    EntryNumberError = 0x15,
+    NotSupported = 0x16,
+    FrameLengthError = 0x18,
+};
+
+struct Frame {
+    int unit = 0;
+    QByteArray header; // "RD", "MS", ...
+    int endCode = -1;  // responses only; -1 for a command
+    QByteArray text;   // everything after the header (and end code), all parts joined
+};
+
+// The characters' XOR as two upper-case hex digits.
+QByteArray fcs(QByteArrayView characters);
+
+// A whole frame as it goes on the wire: one string per part (split over 131 characters;
+// word data is split on whole words, as the PLC does: 30 words, then 31 per part).
+QList<QByteArray> encode(const Frame &frame);
+
+// Commands the product sends. begin / count in words (or timers for RC / RG).
+Frame readCommand(int unit, Area area, int begin, int count);
+Frame writeCommand(int unit, Area area, int begin, const std::vector<std::uint16_t> &words);
+Frame statusCommand(int unit);                             // MS
+Frame modeCommand(int unit, Mode mode);                    // SC
+Frame forceCommand(int unit, bool set, int word, int bit); // KS / KR on "CIO "
+Frame cancelForceCommand(int unit);                        // KC
+Frame modelCommand(int unit);                              // MM
+
+// What the reply to a command holds.
+struct Reply {
+    Frame frame;
+    std::vector<std::uint16_t> words; // RR RH RD RC: raw words (RC: BCD digits as written)
+    std::vector<bool> flags;          // RG
+    int status = 0;                   // MS: the status word; mode in bits 9-8
+    int model = 0;                    // MM: model code
+};
+
+// MS status bits 9-8: 00 PROGRAM, 10 RUN, 11 MONITOR.
+Mode modeOfStatus(int status);
+QString endCodeText(int code);
+
+// Master side: the reply to one command, from bytes as they arrive, over any number of parts.
+class ReplyDecoder {
+public:
+    explicit ReplyDecoder(const Frame &command);
+    FrameStatus feed(QByteArrayView bytes);
+    // True once after each part that is not the last: the caller sends a lone CR.
+    bool takeDelimiterRequest();
+    ProtocolError deadlinePassed(int waitedMs) const;
+    FrameStatus status() const { return m_status; }
+    const Reply &reply() const { return m_reply; }
+    const ProtocolError &error() const { return m_error; }
+
+private:
+    FrameStatus fail(ProtocolError::Kind kind, QString message, int code = 0);
+    FrameStatus part(QByteArrayView frame);
+    FrameStatus finish();
+
+    Frame m_command;
+    QByteArray m_buffer;
+    int m_parts = 0;
+    bool m_delimiter = false;
+    FrameStatus m_status = FrameStatus::NeedMore;
+    Reply m_reply;
+    ProtocolError m_error;
+};
+
+// Slave side: one command over any number of parts. endCode() is the code a PLC answers a
+// broken command with (13 FCS, 14 format, 18 frame length), 0 when the command is sound.
+class CommandDecoder {
+public:
+    FrameStatus feed(QByteArrayView bytes);
+    bool takeDelimiterRequest();
+    FrameStatus status() const { return m_status; }
+    const Frame &command() const { return m_command; }
+    int endCode() const { return m_endCode; }
+    void next();
+
+private:
+    QByteArray m_buffer;
+    int m_parts = 0;
+    bool m_delimiter = false;
+    FrameStatus m_status = FrameStatus::NeedMore;
+    Frame m_command;
+    int m_endCode = 0;
+};
+
+// The text of a read / write / force command, as the slave reads it.
+struct Operands {
+    int begin = 0;
+    int count = 0;
+    std::vector<std::uint16_t> words;
+    int bit = -1;
+    bool valid = false;
+};
+Operands parseRead(QByteArrayView text);  // begin(4) count(4), decimal
+Operands parseWrite(QByteArrayView text); // begin(4) words(4 hex each)
+Operands parseForce(QByteArrayView text); // "CIO " word(4) bit(2)
+// Which area a read / write header reaches; false when it is neither.
+bool areaOfHeader(QByteArrayView header, Area &area, bool &write);
+
+} // namespace rung::comms::hostlink

@@ -1,0 +1,137 @@
+#pragma once
+
+// Modbus (Modbus Application Protocol V1.1b3; RTU over serial line V1.02; seed 001 B-3-6 and
+// seed 003 chapter 3 for the PLC maps): the PDU, RTU framing with CRC-16 and TCP framing with
+// the MBAP header, master and slave side, no I/O.
+
+#include "comms/protocol/protocol_error.h"
+
+#include <QByteArray>
+
+#include <cstdint>
+#include <vector>
+
+namespace rung::comms::modbus {
+
+enum Function : std::uint8_t {
+    ReadCoils = 0x01,
+    ReadDiscreteInputs = 0x02,
+    ReadHoldingRegisters = 0x03,
+    ReadInputRegisters = 0x04,
+    WriteSingleCoil = 0x05,
+    WriteSingleRegister = 0x06,
+    WriteMultipleCoils = 0x0F,
+    WriteMultipleRegisters = 0x10,
+};
+
+enum Exception : std::uint8_t {
+    IllegalFunction = 0x01,
+    IllegalDataAddress = 0x02,
+    IllegalDataValue = 0x03,
+    ServerDeviceFailure = 0x04,
+    Acknowledge = 0x05,
+    ServerDeviceBusy = 0x06,
+    MemoryParityError = 0x08,
+    GatewayPathUnavailable = 0x0A,
+    GatewayTargetNoResponse = 0x0B,
+};
+
+// The protocol's own limits per request (Application Protocol 6.1..6.12).
+inline constexpr int MaxReadBits = 2000;
+inline constexpr int MaxReadRegisters = 125;
+inline constexpr int MaxWriteBits = 1968;
+inline constexpr int MaxWriteRegisters = 123;
+inline constexpr int BroadcastUnit = 0;
+
+struct Request {
+    std::uint8_t function = ReadHoldingRegisters;
+    int address = 0;                      // 0-based, as on the wire
+    int count = 1;                        // bits or registers (1 for 05 / 06)
+    std::vector<std::uint16_t> registers; // 06, 10
+    std::vector<bool> bits;               // 05, 0F
+};
+
+struct Response {
+    std::uint8_t function = ReadHoldingRegisters; // without the exception bit
+    int exception = 0;                    // 0, or the exception code (function | 80h on the wire)
+    int address = 0;                      // echoed by 05, 06, 0F, 10
+    int count = 0;                        // echoed by 0F, 10; value for 06; 05: FF00h / 0000h
+    std::vector<std::uint16_t> registers; // 03, 04
+    std::vector<bool> bits;               // 01, 02 (padded to whole bytes by the wire)
+};
+
+QByteArray encodeRequestPdu(const Request &request);
+QByteArray encodeResponsePdu(const Response &response);
+
+std::uint16_t crc16(QByteArrayView bytes);
+QByteArray rtuFrame(int unit, QByteArrayView pdu);                  // unit, PDU, CRC low first
+QByteArray tcpFrame(int transaction, int unit, QByteArrayView pdu); // MBAP + PDU
+
+QString exceptionText(int code);
+
+// A request PDU as the slave reads it. Failure carries the exception to answer with.
+struct ParsedRequest {
+    Request request;
+    int exception = 0;
+};
+ParsedRequest parseRequestPdu(QByteArrayView pdu);
+
+enum class Framing : std::uint8_t { Rtu, Tcp };
+
+// Master side: the reply to one request, from bytes as they arrive. Over RTU the length comes
+// from the function code and byte count, so no silence timer is needed to end a reply.
+class ReplyDecoder {
+public:
+    ReplyDecoder(Framing framing, int unit, const Request &request, int transaction = 0);
+    FrameStatus feed(QByteArrayView bytes);
+    ProtocolError deadlinePassed(int waitedMs) const;
+    FrameStatus status() const { return m_status; }
+    const Response &response() const { return m_response; }
+    const ProtocolError &error() const { return m_error; }
+
+private:
+    FrameStatus fail(ProtocolError::Kind kind, QString message, int code = 0);
+    FrameStatus decodePdu(QByteArrayView pdu, int unit);
+    qsizetype expectedRtuLength() const; // 0 = not known yet
+
+    Framing m_framing;
+    int m_unit;
+    Request m_request;
+    int m_transaction;
+    QByteArray m_buffer;
+    FrameStatus m_status = FrameStatus::NeedMore;
+    Response m_response;
+    ProtocolError m_error;
+};
+
+// Slave side: requests, one after another, from bytes as they arrive.
+//  RTU: length from the function code; an unknown function ends at silence() (the 3.5
+//  character gap); a frame with a bad CRC is dropped, as the RTU spec says (no reply).
+//  TCP: the MBAP length field.
+class RequestDecoder {
+public:
+    explicit RequestDecoder(Framing framing)
+        : m_framing(framing) {}
+    FrameStatus feed(QByteArrayView bytes);
+    // The line was quiet for 3.5 characters: what is buffered is one whole RTU frame.
+    FrameStatus silence();
+    FrameStatus status() const { return m_status; }
+    int unit() const { return m_unit; }
+    int transaction() const { return m_transaction; }
+    const ParsedRequest &parsed() const { return m_parsed; }
+    int droppedFrames() const { return m_dropped; } // RTU frames with a wrong CRC
+    void next();
+
+private:
+    FrameStatus take(qsizetype length);
+    Framing m_framing;
+    QByteArray m_buffer;
+    qsizetype m_used = 0;
+    FrameStatus m_status = FrameStatus::NeedMore;
+    int m_unit = 0;
+    int m_transaction = 0;
+    ParsedRequest m_parsed;
+    int m_dropped = 0;
+};
+
+} // namespace rung::comms::modbus

@@ -1,0 +1,107 @@
+#pragma once
+
+// Vigor M / VB / VH "Computer Link" (seed 001, B-5; protocols.md): pure encoders and
+// incremental decoders for both sides, no I/O.
+//   request  <STX> station(2) command(2) data... <ETX> sum(2)
+//   response <ACK> station(2) command(2) error(2) data... <ETX> sum(2)
+// The sum adds the bytes from the first station digit up to and including ETX; its low byte is
+// sent as two upper-case hex digits. Payload is upper-case ASCII hex.
+
+#include "comms/protocol/protocol_error.h"
+
+#include <QByteArray>
+
+#include <cstdint>
+
+namespace rung::comms::vigor {
+
+inline constexpr char Stx = 0x02;
+inline constexpr char Etx = 0x03;
+inline constexpr char Ack = 0x06;
+inline constexpr int MaxBytes = 128; // 51h / 61h move at most 128 bytes (seed 001, B-5)
+
+enum class Command : std::uint8_t { Read = 0x51, Write = 0x61, BitOn = 0x70, BitOff = 0x71 };
+
+// The error byte of a response (seed 001, B-5).
+enum class ErrorCode : std::uint8_t {
+    None = 0x00,
+    AsciiConversion = 0x10,
+    SumCheck = 0x11,
+    NoSuchCommand = 0x12,
+    Communication = 0x14, // PLC in STOP, parity
+    AddressRange = 0x28,
+};
+
+struct Request {
+    int station = 0;
+    Command command = Command::Read;
+    int address = 0; // byte address for 51h / 61h, bit address (byte << 3 | bit) for 70h / 71h
+    int length = 0;  // bytes to read (51h); for 61h the size of data
+    QByteArray data; // bytes to write (61h)
+};
+
+struct Reply {
+    int station = 0;
+    Command command = Command::Read;
+    int error = 0;   // ErrorCode value
+    QByteArray data; // bytes read (51h)
+};
+
+// The bit address of commands 70h / 71h: byte address << 3 | bit position (S20 -> 1814h).
+constexpr int bitAddress(int byteAddress, int bit) {
+    return byteAddress << 3 | bit;
+}
+
+QByteArray encodeRequest(const Request &request);
+QByteArray encodeReply(const Reply &reply);
+
+// The sum of a frame body (from the first station digit through ETX) as two hex digits.
+QByteArray sum(QByteArrayView body);
+
+// Why the PLC refused, translated: "address out of range (error 28h)".
+QString errorText(int code);
+
+// Master side: collects the reply to one request from bytes as they arrive (in any split).
+class ReplyDecoder {
+public:
+    explicit ReplyDecoder(const Request &request);
+    // Feed the next bytes; after Complete or Failed further bytes are ignored.
+    FrameStatus feed(QByteArrayView bytes);
+    // The caller's deadline passed: a truncated frame or silence, as an error.
+    ProtocolError deadlinePassed(int waitedMs) const;
+    FrameStatus status() const { return m_status; }
+    const Reply &reply() const { return m_reply; }
+    const ProtocolError &error() const { return m_error; }
+
+private:
+    FrameStatus fail(ProtocolError::Kind kind, QString message, int code = 0);
+    FrameStatus decode();
+
+    Request m_request;
+    QByteArray m_buffer;
+    FrameStatus m_status = FrameStatus::NeedMore;
+    Reply m_reply;
+    ProtocolError m_error;
+};
+
+// Slave side: one request, parsed from bytes as they arrive. Bytes before STX are dropped
+// (line noise between frames). A frame that is complete but wrong carries the error code the
+// PLC answers with (sum 11h, ASCII 10h, command 12h); the caller still checks the station.
+class RequestDecoder {
+public:
+    FrameStatus feed(QByteArrayView bytes);
+    FrameStatus status() const { return m_status; }
+    const Request &request() const { return m_request; }
+    int errorCode() const { return m_errorCode; } // 0, or the ErrorCode to answer with
+    // Start over for the next frame, keeping bytes already received after this one.
+    void next();
+
+private:
+    QByteArray m_buffer;
+    qsizetype m_used = 0;
+    FrameStatus m_status = FrameStatus::NeedMore;
+    Request m_request;
+    int m_errorCode = 0;
+};
+
+} // namespace rung::comms::vigor

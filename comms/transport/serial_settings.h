@@ -1,0 +1,29 @@
+#pragma once
+
+// Line settings of a serial port (protocols.md: Vigor 7E1 19200, Host Link 7E2 9600, PL110
+// 8N1 19200 by default).
+
+#include <cstdint>
+
+namespace rung::comms {
+
+struct SerialSettings {
+    enum class Parity : std::uint8_t { None, Odd, Even };
+    enum class Flow : std::uint8_t { None, RtsCts, XonXoff };
+    int baud = 19200;
+    int dataBits = 8;
+    Parity parity = Parity::None;
+    int stopBits = 1;
+    Flow flow = Flow::None;
+
+    // Time one character takes on the wire (start + data + parity + stop bits), in
+    // microseconds: the Modbus RTU 3.5-character gap is 3.5 of these (at most 1750 us above
+    // 19200 bps, Modbus over serial line 2.5.1.1).
+    int characterMicroseconds() const {
+        const int bits = 1 + dataBits + (parity == Parity::None ? 0 : 1) + stopBits;
+        return int(1'000'000LL * bits / (baud > 0 ? baud : 1));
+    }
+    int rtuGapMicroseconds() const { return baud > 19200 ? 1750 : characterMicroseconds() * 7 / 2; }
+};
+
+} // namespace rung::comms

@@ -1,0 +1,105 @@
+#pragma once
+
+// Protocol address maps as target data (protocols.md): where each device of a target sits in
+// the address space of a protocol the PLC speaks. The tables live in target_*_maps.cpp and
+// are attached to the Target by its builder; the functions below are the only code that
+// reads them, in both directions (the master asks for a device, the slave answers an
+// address). target.h includes this header, so it must not include target.h.
+
+#include <QString>
+
+#include <cstdint>
+#include <optional>
+#include <vector>
+
+namespace rung::model {
+
+class Target;
+struct Address;
+
+enum class ProtocolId : std::uint8_t { VigorLink, Modbus, HostLink };
+
+// An address space of a protocol. Each has a unit width (unitBits): a Vigor link byte holds 8
+// bit devices, a Modbus register or a Host Link word 16, a coil or a completion flag 1.
+enum class ProtocolSpace : std::uint8_t {
+    LinkBytes,          // Vigor Computer Link byte address (51h / 61h; 70h / 71h: byte << 3 | bit)
+    Coils,              // Modbus 0x, 0-based (component 00001 = coil 0)
+    DiscreteInputs,     // Modbus 1x, 0-based (component 10000 of the Vigor map = input 0)
+    HoldingRegisters,   // Modbus 4x, 0-based (component 40000 of the Vigor map = register 0)
+    HostLinkIr,         // RR / WR, channel number
+    HostLinkHr,         // RH / WH
+    HostLinkDm,         // RD / WD
+    HostLinkTimerPv,    // RC / WC, timer / counter number
+    HostLinkCompletion, // RG, timer / counter number
+};
+
+int unitBits(ProtocolSpace space);
+
+// Which side of a device a range covers: a bit device, a word's bit or a timer / counter
+// contact (Bit); a word or a current value (Value); a Vigor timer / counter coil (Coil).
+enum class DevicePart : std::uint8_t { Bit, Value, Coil };
+
+// Elements first..last of the area (Area::key) sit in `space` from `start`, element `origin`
+// at `start` itself. Bit parts are packed into the space's units (bit position = element -
+// origin, times the word width when the area is a word area); Value parts take
+// Area::wordBits / unitBits units each (a Vigor C200 value: 4 link bytes or 2 registers).
+struct ProtocolRange {
+    const char *area = "";
+    DevicePart part = DevicePart::Bit;
+    ProtocolSpace space = ProtocolSpace::Coils;
+    int start = 0;
+    int origin = 0;
+};
+
+struct ProtocolMap {
+    ProtocolId protocol = ProtocolId::Modbus;
+    const char *description = nullptr; // QT_TRANSLATE_NOOP("rung::model::Target", ...)
+    std::vector<ProtocolRange> ranges;
+    // The most one request may read / write, in units of the space (bytes, registers, bits,
+    // words); 0 = the protocol's own limit.
+    int maxReadUnits = 0;
+    int maxWriteUnits = 0;
+    // PL110: functions 02 and 04 read the same tables as 01 and 03 (seed 003 chapter 3).
+    bool inputsShareSpaces = false;
+    // Registers that describe the PLC (PL110: device type 0, firmware version 1); -1 = none.
+    int modelRegister = -1;
+    int versionRegister = -1;
+};
+
+// Where a device sits: the first unit, the bit inside it (-1 when the device is whole units)
+// and how many units it takes.
+struct ProtocolAddress {
+    ProtocolSpace space = ProtocolSpace::Coils;
+    int unit = 0;
+    int bit = -1;
+    int units = 1;
+    friend bool operator==(const ProtocolAddress &, const ProtocolAddress &) = default;
+};
+
+// Which device part a protocol address holds; unitOffset counts units into a device that
+// takes more than one (the high register of a Vigor C200 value).
+struct MappedDevice {
+    int area = -1;
+    int index = 0;
+    int bit = -1;
+    DevicePart part = DevicePart::Bit;
+    int unitOffset = 0;
+};
+
+const ProtocolMap *findProtocolMap(const Target &target, ProtocolId protocol);
+
+std::optional<ProtocolAddress> toProtocol(const Target &target, const ProtocolMap &map,
+                                          const Address &address, DevicePart part);
+// bit: the bit inside the unit for bit devices in a packed space; -1 asks for the word (or
+// value) that holds the unit. Spaces of 1-bit units ignore it. Areas that share their numbers
+// (CPM1 TIM / CNT, one bank) share addresses too; the way back names the first of them.
+std::optional<MappedDevice> fromProtocol(const Target &target, const ProtocolMap &map,
+                                         ProtocolSpace space, int unit, int bit = -1);
+
+namespace detail {
+std::vector<ProtocolMap> vigorProtocolMaps();
+std::vector<ProtocolMap> pl110ProtocolMaps();
+std::vector<ProtocolMap> cpm1ProtocolMaps();
+} // namespace detail
+
+} // namespace rung::model

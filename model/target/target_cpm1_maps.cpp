@@ -1,0 +1,30 @@
+#include "model/target/protocol_map.h"
+
+#include <QCoreApplication>
+
+// Omron CPM1 Host Link areas (W353; protocols.md): IR/SR channels through RR / WR, HR
+// through RH / WH, DM through RD / WD, timer / counter present values through RC / WC and
+// their completion flags through RG. A channel's bit is that word's bit.
+
+namespace rung::model::detail {
+
+std::vector<ProtocolMap> cpm1ProtocolMaps() {
+    using P = DevicePart;
+    using S = ProtocolSpace;
+    ProtocolMap m;
+    m.protocol = ProtocolId::HostLink;
+    m.description = QT_TRANSLATE_NOOP("rung::model::Target", "Omron Host Link (C-mode)");
+    m.ranges = {
+        {"IN", P::Value, S::HostLinkIr, 0, 0},        {"IN", P::Bit, S::HostLinkIr, 0, 0},
+        {"OUT", P::Value, S::HostLinkIr, 10, 10},     {"OUT", P::Bit, S::HostLinkIr, 10, 10},
+        {"WR", P::Value, S::HostLinkIr, 200, 200},    {"WR", P::Bit, S::HostLinkIr, 200, 200},
+        {"SR", P::Value, S::HostLinkIr, 232, 232},    {"SR", P::Bit, S::HostLinkIr, 232, 232},
+        {"HR", P::Value, S::HostLinkHr, 0, 0},        {"HR", P::Bit, S::HostLinkHr, 0, 0},
+        {"DM", P::Value, S::HostLinkDm, 0, 0},        {"DMR", P::Value, S::HostLinkDm, 6144, 6144},
+        {"TIM", P::Value, S::HostLinkTimerPv, 0, 0},  {"CNT", P::Value, S::HostLinkTimerPv, 0, 0},
+        {"TIM", P::Bit, S::HostLinkCompletion, 0, 0}, {"CNT", P::Bit, S::HostLinkCompletion, 0, 0},
+    };
+    return {m};
+}
+
+} // namespace rung::model::detail

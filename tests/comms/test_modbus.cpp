@@ -1,0 +1,210 @@
+#include "comms/protocol/modbus.h"
+#include "tests/comms/hex.h"
+
+#include <gtest/gtest.h>
+
+namespace rung::comms::modbus {
+namespace {
+
+using test::bytes;
+using Kind = ProtocolError::Kind;
+
+Request read(std::uint8_t function, int address, int count) {
+    Request r;
+    r.function = function;
+    r.address = address;
+    r.count = count;
+    return r;
+}
+
+TEST(Modbus, Crc16MatchesTheSerialLineSpecExample) {
+    // Modbus Application Protocol 6.3's request "read holding registers 108..110 of slave 17"
+    // as an RTU frame: 11 03 00 6B 00 03 + CRC 76 87 (low byte first).
+    EXPECT_EQ(rtuFrame(0x11, encodeRequestPdu(read(ReadHoldingRegisters, 0x6B, 3))).toHex(' '),
+              bytes("11 03 00 6B 00 03 76 87").toHex(' '));
+    EXPECT_EQ(crc16(bytes("01 03 00 00 00 0A")), 0xCDC5);
+}
+
+TEST(Modbus, EncodesEveryFunctionsRequestPdu) {
+    EXPECT_EQ(encodeRequestPdu(read(ReadCoils, 0x13, 0x13)), bytes("01 00 13 00 13"));
+    EXPECT_EQ(encodeRequestPdu(read(ReadDiscreteInputs, 0xC4, 0x16)), bytes("02 00 C4 00 16"));
+    EXPECT_EQ(encodeRequestPdu(read(ReadInputRegisters, 0x08, 1)), bytes("04 00 08 00 01"));
+    Request coil{WriteSingleCoil, 0xAC, 1, {}, {true}};
+    EXPECT_EQ(encodeRequestPdu(coil), bytes("05 00 AC FF 00"));
+    Request reg{WriteSingleRegister, 1, 1, {3}, {}};
+    EXPECT_EQ(encodeRequestPdu(reg), bytes("06 00 01 00 03"));
+    Request coils{WriteMultipleCoils,
+                  0x13,
+                  10,
+                  {},
+                  {true, false, true, true, false, false, true, true, true, false}};
+    EXPECT_EQ(encodeRequestPdu(coils), bytes("0F 00 13 00 0A 02 CD 01"));
+    Request regs{WriteMultipleRegisters, 1, 2, {0x000A, 0x0102}, {}};
+    EXPECT_EQ(encodeRequestPdu(regs), bytes("10 00 01 00 02 04 00 0A 01 02"));
+}
+
+// Each function through both sides over RTU and TCP, the reply fed one byte at a time.
+void roundTrip(Framing framing, const Request &request, const Response &answer) {
+    const int unit = 17;
+    const QByteArray pdu = encodeRequestPdu(request);
+    const QByteArray sent = framing == Framing::Rtu ? rtuFrame(unit, pdu) : tcpFrame(9, unit, pdu);
+    RequestDecoder slave(framing);
+    ASSERT_EQ(slave.feed(sent), FrameStatus::Complete);
+    EXPECT_EQ(slave.unit(), unit);
+    EXPECT_EQ(slave.parsed().exception, 0);
+    EXPECT_EQ(slave.parsed().request.function, request.function);
+    EXPECT_EQ(slave.parsed().request.address, request.address);
+    EXPECT_EQ(slave.parsed().request.registers, request.registers);
+    EXPECT_EQ(slave.parsed().request.bits, request.bits);
+    const QByteArray replyPdu = encodeResponsePdu(answer);
+    const QByteArray reply = framing == Framing::Rtu
+                                 ? rtuFrame(unit, replyPdu)
+                                 : tcpFrame(slave.transaction(), unit, replyPdu);
+    ReplyDecoder master(framing, unit, request, 9);
+    for (qsizetype i = 0; i < reply.size(); ++i)
+        master.feed(reply.sliced(i, 1));
+    ASSERT_EQ(master.status(), FrameStatus::Complete) << master.error().message.toStdString();
+    EXPECT_EQ(master.response().registers, answer.registers);
+    EXPECT_EQ(master.response().bits, answer.bits);
+}
+
+TEST(Modbus, EveryFunctionRoundTripsOverRtuAndTcp) {
+    for (auto framing : {Framing::Rtu, Framing::Tcp}) {
+        SCOPED_TRACE(framing == Framing::Rtu ? "RTU" : "TCP");
+        const std::vector<bool> ten{true, false, true, true, false, false, true, true, true, false};
+        roundTrip(framing, read(ReadCoils, 0, 10), {ReadCoils, 0, 0, 0, {}, ten});
+        roundTrip(framing, read(ReadDiscreteInputs, 5, 10), {ReadDiscreteInputs, 0, 0, 0, {}, ten});
+        roundTrip(framing, read(ReadHoldingRegisters, 0, 3),
+                  {ReadHoldingRegisters, 0, 0, 0, {1, 0xFFFF, 0x1234}, {}});
+        roundTrip(framing, read(ReadInputRegisters, 100, 1),
+                  {ReadInputRegisters, 0, 0, 0, {7}, {}});
+        roundTrip(framing, {WriteSingleCoil, 3, 1, {}, {true}},
+                  {WriteSingleCoil, 0, 3, 0xFF00, {}, {}});
+        roundTrip(framing, {WriteSingleRegister, 2000, 1, {0xBEEF}, {}},
+                  {WriteSingleRegister, 0, 2000, 0xBEEF, {}, {}});
+        roundTrip(framing, {WriteMultipleCoils, 2400, 10, {}, ten},
+                  {WriteMultipleCoils, 0, 2400, 10, {}, {}});
+        roundTrip(framing, {WriteMultipleRegisters, 2000, 3, {1, 2, 3}, {}},
+                  {WriteMultipleRegisters, 0, 2000, 3, {}, {}});
+    }
+}
+
+TEST(Modbus, EveryExceptionCodeIsADeviceErrorWithItsOwnText) {
+    QSet<QString> texts;
+    for (int code : {1, 2, 3, 4, 5, 6, 8, 0x0A, 0x0B}) {
+        const Request request = read(ReadHoldingRegisters, 0, 1);
+        ReplyDecoder d(Framing::Rtu, 1, request);
+        Response refusal;
+        refusal.function = ReadHoldingRegisters;
+        refusal.exception = code;
+        const QByteArray frame = rtuFrame(1, encodeResponsePdu(refusal));
+        EXPECT_EQ(frame.size(), 5);
+        EXPECT_EQ(static_cast<quint8>(frame[1]), 0x83);
+        ASSERT_EQ(d.feed(frame), FrameStatus::Failed);
+        EXPECT_EQ(d.error().kind, Kind::DeviceError);
+        EXPECT_EQ(d.error().code, code);
+        texts.insert(exceptionText(code));
+    }
+    EXPECT_EQ(texts.size(), 9);
+}
+
+TEST(Modbus, ABadCrcNamesBothValues) {
+    QByteArray frame = bytes("11 03 00 6B 00 03 76 87");
+    Response r{ReadHoldingRegisters, 0, 0, 0, {1}, {}};
+    QByteArray reply = rtuFrame(0x11, encodeResponsePdu(r));
+    reply[reply.size() - 1] = char(reply[reply.size() - 1] ^ 0x40);
+    ReplyDecoder d(Framing::Rtu, 0x11, read(ReadHoldingRegisters, 0x6B, 1));
+    ASSERT_EQ(d.feed(reply), FrameStatus::Failed);
+    EXPECT_EQ(d.error().kind, Kind::BadChecksum);
+    EXPECT_TRUE(d.error().retryable());
+}
+
+TEST(Modbus, WrongUnitWrongFunctionGarbageAndMismatchedEchoes) {
+    const Request request = read(ReadHoldingRegisters, 0, 1);
+    ReplyDecoder other(Framing::Rtu, 1, request);
+    ASSERT_EQ(other.feed(rtuFrame(2, encodeResponsePdu({ReadHoldingRegisters, 0, 0, 0, {5}, {}}))),
+              FrameStatus::Failed);
+    EXPECT_EQ(other.error().kind, Kind::WrongStation);
+
+    ReplyDecoder garbage(Framing::Rtu, 1, request);
+    EXPECT_EQ(garbage.feed(bytes("01 07 00")), FrameStatus::Failed);
+    EXPECT_EQ(garbage.error().kind, Kind::Garbage);
+
+    ReplyDecoder count(Framing::Rtu, 1, read(ReadHoldingRegisters, 0, 2));
+    ASSERT_EQ(count.feed(rtuFrame(1, encodeResponsePdu({ReadHoldingRegisters, 0, 0, 0, {5}, {}}))),
+              FrameStatus::Failed);
+    EXPECT_EQ(count.error().kind, Kind::WrongReply);
+
+    // A write echoed with another value was not done as asked.
+    const Request write{WriteSingleRegister, 10, 1, {99}, {}};
+    ReplyDecoder echo(Framing::Tcp, 1, write, 4);
+    ASSERT_EQ(
+        echo.feed(tcpFrame(4, 1, encodeResponsePdu({WriteSingleRegister, 0, 10, 98, {}, {}}))),
+        FrameStatus::Failed);
+    EXPECT_EQ(echo.error().kind, Kind::WrongReply);
+
+    ReplyDecoder transaction(Framing::Tcp, 1, write, 4);
+    ASSERT_EQ(transaction.feed(
+                  tcpFrame(5, 1, encodeResponsePdu({WriteSingleRegister, 0, 10, 99, {}, {}}))),
+              FrameStatus::Failed);
+    EXPECT_EQ(transaction.error().kind, Kind::WrongReply);
+
+    ReplyDecoder notModbus(Framing::Tcp, 1, write, 4);
+    EXPECT_EQ(notModbus.feed("HTTP/1.1 200"), FrameStatus::Failed);
+    EXPECT_EQ(notModbus.error().kind, Kind::Garbage);
+}
+
+TEST(Modbus, TruncatedAndSilentRepliesSayWhatArrived) {
+    ReplyDecoder d(Framing::Rtu, 1, read(ReadHoldingRegisters, 0, 2));
+    EXPECT_TRUE(d.deadlinePassed(100).message.contains(QLatin1String("unit 1")));
+    EXPECT_EQ(d.feed(bytes("01 03 04 00")), FrameStatus::NeedMore);
+    EXPECT_TRUE(d.deadlinePassed(100).message.contains(QLatin1String("4 bytes")));
+}
+
+TEST(Modbus, SlaveDropsBadCrcFramesAndReadsTheNextOne) {
+    RequestDecoder s(Framing::Rtu);
+    QByteArray bad = bytes("11 03 00 6B 00 03 76 88");
+    EXPECT_EQ(s.feed(bad + bytes("11 03 00 6B 00 03 76 87")), FrameStatus::Complete);
+    EXPECT_EQ(s.droppedFrames(), 1);
+    EXPECT_EQ(s.parsed().request.address, 0x6B);
+}
+
+TEST(Modbus, SlaveEndsAnUnknownFunctionAtTheSilenceGapAndAnswersIllegalFunction) {
+    RequestDecoder s(Framing::Rtu);
+    const QByteArray frame = rtuFrame(1, bytes("2B 0E 01 00")); // read device identification
+    EXPECT_EQ(s.feed(frame), FrameStatus::NeedMore);
+    EXPECT_EQ(s.silence(), FrameStatus::Complete);
+    EXPECT_EQ(s.parsed().exception, IllegalFunction);
+}
+
+TEST(Modbus, SlaveRefusesCountsBeyondTheProtocolsLimits) {
+    auto exceptionOf = [](const QByteArray &pdu) {
+        RequestDecoder s(Framing::Tcp);
+        EXPECT_EQ(s.feed(tcpFrame(1, 1, pdu)), FrameStatus::Complete);
+        return s.parsed().exception;
+    };
+    EXPECT_EQ(exceptionOf(encodeRequestPdu(read(ReadHoldingRegisters, 0, 126))), IllegalDataValue);
+    EXPECT_EQ(exceptionOf(encodeRequestPdu(read(ReadCoils, 0, 2001))), IllegalDataValue);
+    EXPECT_EQ(exceptionOf(encodeRequestPdu(read(ReadCoils, 0, 0))), IllegalDataValue);
+    EXPECT_EQ(exceptionOf(bytes("05 00 01 12 34")), IllegalDataValue);
+    EXPECT_EQ(exceptionOf(bytes("10 00 01 00 02 03 00 0A 01")), IllegalDataValue);
+    EXPECT_EQ(exceptionOf(bytes("41 00")), IllegalFunction);
+}
+
+TEST(Modbus, SlaveTakesTcpRequestsSplitAndJoined) {
+    RequestDecoder s(Framing::Tcp);
+    const QByteArray a = tcpFrame(1, 1, encodeRequestPdu(read(ReadCoils, 0, 8)));
+    const QByteArray b = tcpFrame(2, 1, encodeRequestPdu(read(ReadInputRegisters, 3, 2)));
+    const QByteArray both = a + b;
+    for (qsizetype i = 0; i < a.size() - 1; ++i)
+        EXPECT_EQ(s.feed(both.sliced(i, 1)), FrameStatus::NeedMore);
+    EXPECT_EQ(s.feed(both.sliced(a.size() - 1)), FrameStatus::Complete);
+    EXPECT_EQ(s.transaction(), 1);
+    s.next();
+    ASSERT_EQ(s.status(), FrameStatus::Complete);
+    EXPECT_EQ(s.transaction(), 2);
+    EXPECT_EQ(s.parsed().request.function, ReadInputRegisters);
+}
+
+} // namespace
+} // namespace rung::comms::modbus

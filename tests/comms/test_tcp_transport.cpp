@@ -1,0 +1,128 @@
+#include "comms/protocol/modbus.h"
+#include "comms/transport/tcp_transport.h"
+
+#include <gtest/gtest.h>
+
+#include <QElapsedTimer>
+
+#include <thread>
+
+namespace rung::comms {
+namespace {
+
+using R = ReadResult::Status;
+
+struct Link {
+    TcpServer server;
+    std::unique_ptr<TcpTransport> client;
+    std::unique_ptr<TcpTransport> accepted;
+};
+
+// A server on 127.0.0.1 (any free port) and a client connected to it.
+std::unique_ptr<Link> connectLoopback() {
+    auto link = std::make_unique<Link>();
+    QString error;
+    EXPECT_TRUE(link->server.listen(QHostAddress::LocalHost, 0, &error)) << error.toStdString();
+    link->client = std::make_unique<TcpTransport>(QStringLiteral("127.0.0.1"), link->server.port());
+    EXPECT_TRUE(link->client->open(&error)) << error.toStdString();
+    link->accepted = link->server.accept(QDeadlineTimer(3000));
+    EXPECT_TRUE(link->accepted);
+    return link;
+}
+
+QByteArray readAll(Transport &t, qsizetype size) {
+    QByteArray out;
+    const QDeadlineTimer deadline(3000);
+    while (out.size() < size) {
+        const auto r = t.read(deadline);
+        if (r.status != R::Data)
+            break;
+        out += r.bytes;
+    }
+    return out;
+}
+
+TEST(TcpTransport, AModbusTcpRequestAndReplyCrossTheLoopbackByteForByte) {
+    auto link = connectLoopback();
+    ASSERT_TRUE(link->accepted);
+    modbus::Request request;
+    request.function = modbus::ReadHoldingRegisters;
+    request.count = 2;
+    const QByteArray frame = modbus::tcpFrame(1, 1, modbus::encodeRequestPdu(request));
+    QString error;
+    ASSERT_TRUE(link->client->write(frame, QDeadlineTimer(3000), &error));
+    EXPECT_EQ(readAll(*link->accepted, frame.size()), frame);
+    modbus::Response response;
+    response.function = modbus::ReadHoldingRegisters;
+    response.registers = {0x1234, 0xABCD};
+    ASSERT_TRUE(link->accepted->write(modbus::tcpFrame(1, 1, modbus::encodeResponsePdu(response)),
+                                      QDeadlineTimer(3000), &error));
+    modbus::ReplyDecoder d(modbus::Framing::Tcp, 1, request, 1);
+    const QDeadlineTimer deadline(3000);
+    while (d.status() == FrameStatus::NeedMore) {
+        const auto r = link->client->read(deadline);
+        ASSERT_EQ(r.status, R::Data);
+        d.feed(r.bytes);
+    }
+    ASSERT_EQ(d.status(), FrameStatus::Complete);
+    EXPECT_EQ(d.response().registers, response.registers);
+}
+
+TEST(TcpTransport, AQuietConnectionTimesOutAtTheDeadline) {
+    auto link = connectLoopback();
+    ASSERT_TRUE(link->accepted);
+    QElapsedTimer clock;
+    clock.start();
+    EXPECT_EQ(link->client->read(QDeadlineTimer(60)).status, R::Timeout);
+    EXPECT_GE(clock.elapsed(), 55);
+    EXPECT_LT(clock.elapsed(), 1000);
+}
+
+TEST(TcpTransport, CancelFromAnotherThreadEndsAWaitingRead) {
+    auto link = connectLoopback();
+    ASSERT_TRUE(link->accepted);
+    ReadResult result;
+    std::thread canceller([&] {
+        std::this_thread::sleep_for(std::chrono::milliseconds(30));
+        link->client->cancel();
+    });
+    result = link->client->read(QDeadlineTimer(QDeadlineTimer::Forever));
+    canceller.join();
+    EXPECT_EQ(result.status, R::Cancelled);
+}
+
+TEST(TcpTransport, ThePeerClosingFailsTheReadAndNamesTheConnection) {
+    auto link = connectLoopback();
+    ASSERT_TRUE(link->accepted);
+    link->accepted->close();
+    const auto r = link->client->read(QDeadlineTimer(3000));
+    EXPECT_EQ(r.status, R::Failed);
+    EXPECT_TRUE(r.message.contains(QLatin1String("127.0.0.1:"))) << r.message.toStdString();
+}
+
+TEST(TcpTransport, ARefusedConnectionNamesHostPortAndCause) {
+    // A port just freed by a server that listened on it: nothing listens there now.
+    quint16 port = 0;
+    {
+        TcpServer s;
+        QString error;
+        ASSERT_TRUE(s.listen(QHostAddress::LocalHost, 0, &error));
+        port = s.port();
+    }
+    TcpTransport t(QStringLiteral("127.0.0.1"), port);
+    QString error;
+    EXPECT_FALSE(t.open(&error));
+    EXPECT_TRUE(error.contains(QStringLiteral("127.0.0.1:%1").arg(port))) << error.toStdString();
+    EXPECT_TRUE(error.contains(QLatin1String("refused"), Qt::CaseInsensitive))
+        << error.toStdString();
+}
+
+TEST(TcpTransport, AcceptEndsAtItsDeadlineWithNoClient) {
+    TcpServer s;
+    QString error;
+    ASSERT_TRUE(s.listen(QHostAddress::LocalHost, 0, &error));
+    EXPECT_EQ(s.accept(QDeadlineTimer(30)), nullptr);
+}
+
+} // namespace
+} // namespace rung::comms

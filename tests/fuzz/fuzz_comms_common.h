@@ -1,0 +1,42 @@
+#pragma once
+
+// Shared by the comms fuzzers: the first bytes of the input pick the request, the rest is
+// the peer's bytes, fed in chunks whose sizes the input also picks (a reply split into many
+// reads). A decoder must end Complete, Failed or NeedMore; never crash, never grow without
+// bound, and a Failed one must say why.
+
+#include "comms/protocol/protocol_error.h"
+
+#include <QByteArray>
+
+#include <cstdint>
+#include <cstdlib>
+
+namespace rung::comms::fuzz {
+
+struct Input {
+    const std::uint8_t *data;
+    std::size_t size;
+    std::size_t at = 0;
+    int byte() { return at < size ? data[at++] : 0; }
+    int word() { return byte() << 8 | byte(); }
+    // The next chunk of the peer's bytes: 1..16 bytes, or the rest.
+    QByteArray chunk() {
+        const std::size_t n = std::min<std::size_t>(size - at, std::size_t(1 + byte() % 16));
+        QByteArray out(reinterpret_cast<const char *>(data + at), qsizetype(n));
+        at += n;
+        return out;
+    }
+    bool done() const { return at >= size; }
+};
+
+template <typename Decoder> void feedAll(Input &in, Decoder &decoder) {
+    while (!in.done() && decoder.status() == FrameStatus::NeedMore)
+        decoder.feed(in.chunk());
+    if (decoder.status() == FrameStatus::Failed && decoder.error().message.isEmpty())
+        std::abort(); // every failure names its cause
+    if (decoder.status() == FrameStatus::NeedMore && decoder.deadlinePassed(100).message.isEmpty())
+        std::abort();
+}
+
+} // namespace rung::comms::fuzz

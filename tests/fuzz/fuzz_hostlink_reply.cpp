@@ -1,0 +1,58 @@
+// Any bytes as the Omron Host Link reply to a command the input picks (over any number of
+// parts, with the delimiter taken after each), and as commands to the slave's decoder.
+#include "comms/protocol/host_link.h"
+#include "tests/fuzz/fuzz_comms_common.h"
+
+extern "C" int LLVMFuzzerTestOneInput(const std::uint8_t *data, std::size_t size) {
+    using namespace rung::comms;
+    using namespace rung::comms::hostlink;
+    fuzz::Input in{data, size};
+    const int unit = in.byte() % 32;
+    Frame command;
+    switch (in.byte() % 8) {
+    case 0:
+        command = readCommand(unit, Area(in.byte() % 5), in.word() % 10000, in.word() % 10000);
+        break;
+    case 1:
+        command = writeCommand(unit, Area(in.byte() % 4), in.word() % 10000,
+                               std::vector<std::uint16_t>(std::size_t(in.byte()), 0x1234));
+        break;
+    case 2:
+        command = statusCommand(unit);
+        break;
+    case 3:
+        command = modeCommand(unit, Mode::Monitor);
+        break;
+    case 4:
+        command = forceCommand(unit, in.byte() % 2, in.word() % 10000, in.byte() % 16);
+        break;
+    case 5:
+        command = cancelForceCommand(unit);
+        break;
+    default:
+        command = modelCommand(unit);
+        break;
+    }
+    (void)encode(command);
+    const std::size_t start = in.at;
+    ReplyDecoder master(command);
+    while (!in.done() && master.status() == FrameStatus::NeedMore) {
+        master.feed(in.chunk());
+        (void)master.takeDelimiterRequest();
+    }
+    if (master.status() == FrameStatus::Failed && master.error().message.isEmpty())
+        std::abort();
+    in.at = start;
+    CommandDecoder slave;
+    for (int frames = 0; !in.done() && frames < 64; ++frames) {
+        slave.feed(in.chunk());
+        (void)slave.takeDelimiterRequest();
+        if (slave.status() == FrameStatus::Complete) {
+            (void)parseRead(slave.command().text);
+            (void)parseWrite(slave.command().text);
+            (void)parseForce(slave.command().text);
+            slave.next();
+        }
+    }
+    return 0;
+}
