@@ -492,3 +492,69 @@ TEST(CliConvert, TheReasonsForWritingNothingAreTheDocumentedCodes) {
         << r.err.toStdString();
     EXPECT_FALSE(r.err.contains(QStringLiteral("[CV")));
 }
+
+// docs/cli.md: "an input with errors writes nothing". The errors are every finding of `check`,
+// not only the syntax: an empty file (no END) and a doubly driven output parse and convert, yet
+// `check` rejects them, so `convert` must not write them.
+TEST(CliConvert, WhatCheckRejectsIsNotWritten) {
+    QTemporaryDir dir;
+    const QString empty = write(dir, QStringLiteral("empty.il"), "");
+    const QString dup = write(dir, QStringLiteral("dup.il"),
+                              "LD 000.00\nOUT 010.00\nLD 000.01\nOUT 010.00\nEND(01)\n");
+    for (const QString &file : {empty, dup}) {
+        const CliRun check = cli(
+            {QStringLiteral("check"), file, QStringLiteral("--target"), QStringLiteral("cpm1")});
+        ASSERT_EQ(check.code, 1) << file.toStdString();
+        for (const char *to : {"il", "ladder", "project"}) {
+            const QString out = dir.filePath(QStringLiteral("out.") + QLatin1String(to));
+            const CliRun r = cli({QStringLiteral("convert"), file, QStringLiteral("--target"),
+                                  QStringLiteral("cpm1"), QStringLiteral("--to"), QLatin1String(to),
+                                  QStringLiteral("-o"), out});
+            EXPECT_EQ(r.code, 1) << file.toStdString() << " --to " << to;
+            EXPECT_FALSE(QFile::exists(out)) << file.toStdString() << " --to " << to;
+            // Every error line of `check` is on stderr, then the reason nothing was written.
+            for (const QString &line : check.out.split(u'\n', Qt::SkipEmptyParts)) {
+                if (line.contains(QStringLiteral(": error: "))) {
+                    EXPECT_TRUE(r.err.contains(line)) << line.toStdString();
+                }
+            }
+            EXPECT_TRUE(r.err.contains(QStringLiteral("nothing written")));
+        }
+        // Nothing on stdout either.
+        const CliRun toStdout =
+            cli({QStringLiteral("convert"), file, QStringLiteral("--target"),
+                 QStringLiteral("cpm1"), QStringLiteral("--to"), QStringLiteral("il")});
+        EXPECT_EQ(toStdout.code, 1);
+        EXPECT_TRUE(toStdout.out.isEmpty()) << toStdout.out.toStdString();
+    }
+}
+
+TEST(CliConvert, ForceWritesAProgramWithCheckErrorsAndStillReportsThem) {
+    QTemporaryDir dir;
+    const QString dup = write(dir, QStringLiteral("dup.il"),
+                              "LD 000.00\nOUT 010.00\nLD 000.01\nOUT 010.00\nEND(01)\n");
+    const QString out = dir.filePath(QStringLiteral("dup.rung"));
+    const CliRun r = cli({QStringLiteral("convert"), dup, QStringLiteral("--target"),
+                          QStringLiteral("cpm1"), QStringLiteral("--to"), QStringLiteral("project"),
+                          QStringLiteral("-o"), out, QStringLiteral("--force")});
+    EXPECT_EQ(r.code, 1); // the program written still has errors
+    EXPECT_TRUE(r.err.contains(QStringLiteral("dup.il:4:1: error:"))) << r.err.toStdString();
+    EXPECT_TRUE(r.err.contains(QStringLiteral("[DC001]")));
+    ASSERT_TRUE(QFile::exists(out));
+    // What was written is the program as typed: converting it back gives the same listing.
+    const CliRun back = cli({QStringLiteral("convert"), out, QStringLiteral("--to"),
+                             QStringLiteral("il"), QStringLiteral("--force")});
+    EXPECT_EQ(back.out, QStringLiteral("LD 000.00\nOUT 010.00\nLD 000.01\nOUT 010.00\nEND(01)\n"));
+}
+
+TEST(CliConvert, ForceNeverWritesATextThatDoesNotParse) {
+    QTemporaryDir dir;
+    const QString bad = write(dir, QStringLiteral("bad.il"), "LD X0\nFOO X1\nOUT Y0\nEND\n");
+    const QString out = dir.filePath(QStringLiteral("bad.ladder"));
+    const CliRun r = cli({QStringLiteral("convert"), bad, QStringLiteral("--target"),
+                          QStringLiteral("vigor"), QStringLiteral("--to"), QStringLiteral("ladder"),
+                          QStringLiteral("-o"), out, QStringLiteral("--force")});
+    EXPECT_EQ(r.code, 1);
+    EXPECT_FALSE(QFile::exists(out)); // written, the ladder would have lost FOO X1
+    EXPECT_TRUE(r.err.contains(QStringLiteral("bad.il:2:1: error:"))) << r.err.toStdString();
+}
