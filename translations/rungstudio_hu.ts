@@ -42,23 +42,8 @@
 <context>
     <name>rung::app::Cli</name>
     <message>
-        <location filename="../app/cli/cli.cpp" line="+22"/>
-        <source>usage:
-  rungstudio-cli check FILE [--target vpc|vigor|cpm1|pl110] [--model M]
-  rungstudio-cli convert FILE [--target T] [--from il|ladder|project] --to il|ladder|project [-o OUT]
-  rungstudio-cli simulate FILE [--target T] --scans N [--period MS] [--set DEV=VALUE@SCAN]... --trace DEV[,DEV...]
-FILE is a listing (.il), a ladder text (.ladder) or a project (.rung).
-Exit status: 0 no error, 1 the program has errors, 2 usage or I/O error.</source>
-        <translation>használat:
-  rungstudio-cli check FILE [--target vpc|vigor|cpm1|pl110] [--model M]
-  rungstudio-cli convert FILE [--target T] [--from il|ladder|project] --to il|ladder|project [-o OUT]
-  rungstudio-cli simulate FILE [--target T] --scans N [--period MS] [--set DEV=VALUE@SCAN]... --trace DEV[,DEV...]
-A FILE utasításlista (.il), létra-szöveg (.ladder) vagy projekt (.rung).
-Kilépési kód: 0 nincs hiba, 1 a programban hiba van, 2 használati vagy I/O hiba.</translation>
-    </message>
-    <message>
-        <location line="+17"/>
-        <location line="+32"/>
+        <location filename="../app/cli/cli.cpp" line="+39"/>
+        <location line="+35"/>
         <source>unexpected argument %1</source>
         <translation>váratlan argumentum: %1</translation>
     </message>
@@ -68,12 +53,32 @@ Kilépési kód: 0 nincs hiba, 1 a programban hiba van, 2 használati vagy I/O h
         <translation>a --to értéke il, ladder vagy project lehet</translation>
     </message>
     <message>
-        <location line="+13"/>
-        <source>nothing written: the input has errors</source>
-        <translation>nem íródott semmi: a bemenet hibás</translation>
+        <location line="-58"/>
+        <source>usage:
+  rungstudio-cli check FILE [--target vpc|vigor|cpm1|pl110] [--model M]
+  rungstudio-cli convert FILE [--target T] [--from il|ladder|project] --to il|ladder|project [-o OUT] [--force]
+  rungstudio-cli simulate FILE [--target T] --scans N [--period MS] [--set DEV=VALUE@SCAN]... --trace DEV[,DEV...]
+FILE is a listing (.il), a ladder text (.ladder) or a project (.rung).
+Exit status: 0 no error, 1 the program has errors, 2 usage or I/O error.</source>
+        <translation>használat:
+  rungstudio-cli check FILE [--target vpc|vigor|cpm1|pl110] [--model M]
+  rungstudio-cli convert FILE [--target T] [--from il|ladder|project] --to il|ladder|project [-o OUT] [--force]
+  rungstudio-cli simulate FILE [--target T] --scans N [--period MS] [--set DEV=VALUE@SCAN]... --trace DEV[,DEV...]
+A FILE utasításlista (.il), létra-szöveg (.ladder) vagy projekt (.rung).
+Kilépési kód: 0 nincs hiba, 1 a programban hiba van, 2 használati vagy I/O hiba.</translation>
     </message>
     <message>
-        <location line="+21"/>
+        <location line="+79"/>
+        <source>nothing written: the input does not parse or convert whole</source>
+        <translation>nem íródott semmi: a bemenet nem értelmezhető vagy nem alakítható át teljesen</translation>
+    </message>
+    <message>
+        <location line="+4"/>
+        <source>nothing written: the input has errors (--force writes it anyway)</source>
+        <translation>nem íródott semmi: a bemenet hibás (a --force így is kiírja)</translation>
+    </message>
+    <message>
+        <location line="+25"/>
         <source>cannot write %1: %2</source>
         <translation>%1 nem írható: %2</translation>
     </message>
@@ -1487,7 +1492,7 @@ Létradiagram- és utasításlista-szerkesztő VPC, Vigor, CPM1 és PL110 PLC-kh
         <translation>Ez az érintkező nincs rajta egyetlen áramúton sem a bal oldali gyűjtősíntől egy kimenetig</translation>
     </message>
     <message>
-        <location filename="../model/checks/checks_list.cpp" line="+130"/>
+        <location filename="../model/checks/checks_list.cpp" line="+131"/>
         <source>Rewrite the rung in the canonical form</source>
         <translation>A létrafok átírása kanonikus formára</translation>
     </message>
@@ -1497,19 +1502,19 @@ Létradiagram- és utasításlista-szerkesztő VPC, Vigor, CPM1 és PL110 PLC-kh
         <translation>Több mint %1 %2 egymás után: a PLC elutasítja a programot</translation>
     </message>
     <message>
-        <location line="+37"/>
-        <source>Stacked ANB: combine each block with ANB as soon as it is complete</source>
-        <translation>Halmozott ANB: minden blokkot kapcsoljon ANB-vel, amint elkészült</translation>
+        <location line="+38"/>
+        <source>Stacked %1: combine each block with %1 as soon as it is complete</source>
+        <translation>Halmozott %1: minden blokkot kapcsoljon %1-vel, amint elkészült</translation>
     </message>
     <message numerus="yes">
-        <location line="+2"/>
-        <source>Stacked ORB: %n blocks are open; an OR chain needs less stack</source>
+        <location line="+3"/>
+        <source>Stacked %1: %n blocks are open; an OR chain needs less stack</source>
         <translation>
-            <numerusform>Halmozott ORB: %n blokk nyitott; egy OR-lánc kevesebb vermet igényel</numerusform>
+            <numerusform>Halmozott %1: %n blokk nyitott; egy OR-lánc kevesebb vermet igényel</numerusform>
         </translation>
     </message>
     <message>
-        <location line="+6"/>
+        <location line="+7"/>
         <source>A single contact joined with %1 is simpler as %2</source>
         <translation>Egyetlen érintkező %1 kapcsolással egyszerűbb %2 formában</translation>
     </message>
@@ -1559,6 +1564,16 @@ Létradiagram- és utasításlista-szerkesztő VPC, Vigor, CPM1 és PL110 PLC-kh
         <translation>
             <numerusform>%n MPS maradt MPP nélkül a létrafok végén</numerusform>
         </translation>
+    </message>
+    <message>
+        <location line="+147"/>
+        <source>%1 is driven twice; a coil may be driven only once (the first is on line %2)</source>
+        <translation>%1 kétszer van vezérelve; egy tekercs csak egyszer vezérelhető (az első a(z) %2. sorban)</translation>
+    </message>
+    <message>
+        <location line="+12"/>
+        <source>%1 is driven twice; a coil may be driven only once (the first is in rung %2)</source>
+        <translation>%1 kétszer van vezérelve; egy tekercs csak egyszer vezérelhető (az első a(z) %2. létrafokon)</translation>
     </message>
     <message>
         <location filename="../model/checks/checks_nesting.cpp" line="+58"/>
@@ -1641,7 +1656,7 @@ Létradiagram- és utasításlista-szerkesztő VPC, Vigor, CPM1 és PL110 PLC-kh
         <translation>A léptetőlánc nincs RET-tel lezárva</translation>
     </message>
     <message>
-        <location filename="../model/checks/checks_list.cpp" line="+66"/>
+        <location filename="../model/checks/checks_list.cpp" line="-83"/>
         <source>Set value %1 is out of range</source>
         <translation>A(z) %1 beállított érték tartományon kívül esik</translation>
     </message>
@@ -1666,22 +1681,12 @@ Létradiagram- és utasításlista-szerkesztő VPC, Vigor, CPM1 és PL110 PLC-kh
         <translation>A(z) %1 szám időzítőként és számlálóként is használatban van; közös tartományuk van</translation>
     </message>
     <message>
-        <location line="+22"/>
-        <source>%1 is driven twice (&quot;Oper duplication&quot;); the first is on line %2</source>
-        <translation>%1 kétszer van vezérelve (&quot;Oper duplication&quot;); az első a(z) %2. sorban</translation>
-    </message>
-    <message>
-        <location line="+3"/>
+        <location line="+27"/>
         <source>%1 is driven twice; the later one wins (first on line %2)</source>
         <translation>%1 kétszer van vezérelve; a későbbi érvényesül (az első a(z) %2. sorban)</translation>
     </message>
     <message>
-        <location line="+7"/>
-        <source>%1 is driven twice (&quot;Oper duplication&quot;); the first is in rung %2</source>
-        <translation>%1 kétszer van vezérelve (&quot;Oper duplication&quot;); az első a(z) %2. létrafokon</translation>
-    </message>
-    <message>
-        <location line="+2"/>
+        <location line="+11"/>
         <source>%1 is driven twice; the later one wins (first in rung %2)</source>
         <translation>%1 kétszer van vezérelve; a későbbi érvényesül (az első a(z) %2. létrafokon)</translation>
     </message>
@@ -1689,6 +1694,41 @@ Létradiagram- és utasításlista-szerkesztő VPC, Vigor, CPM1 és PL110 PLC-kh
         <location line="+13"/>
         <source>The program needs %1 steps; %2 holds %3</source>
         <translation>A program %1 lépést igényel; a(z) %2 kapacitása %3</translation>
+    </message>
+    <message>
+        <location filename="../model/checks/operand_rules.cpp" line="+20"/>
+        <source>operand %1</source>
+        <translation>%1. operandus</translation>
+    </message>
+    <message>
+        <location line="+44"/>
+        <source>%1 or %2</source>
+        <translation>%1 vagy %2</translation>
+    </message>
+    <message>
+        <location line="+1"/>
+        <source>the %1 of %2 must be %3, not %4</source>
+        <translation>a(z) %2 %1 értéke %3 lehet, nem %4</translation>
+    </message>
+    <message>
+        <location line="+5"/>
+        <source>the %1 of %2 must be from %3 to %4, not %5</source>
+        <translation>a(z) %2 %1 értéke %3 és %4 között lehet, nem %5</translation>
+    </message>
+    <message>
+        <location line="+23"/>
+        <source>%1 takes only %2..%3, not %4</source>
+        <translation>a(z) %1 csak %2..%3 operandust fogad el, nem %4</translation>
+    </message>
+    <message>
+        <location line="+10"/>
+        <source>%1 cannot write %2: %3 are written only by %4</source>
+        <translation>a(z) %1 nem írhatja a(z) %2 operandust: a(z) %3 csak a(z) %4 írhatja</translation>
+    </message>
+    <message>
+        <location line="+10"/>
+        <source>%1 is not simulated: it does nothing in the simulator</source>
+        <translation>%1 nincs szimulálva: a szimulátorban nem csinál semmit</translation>
     </message>
 </context>
 <context>
@@ -1818,7 +1858,17 @@ Létradiagram- és utasításlista-szerkesztő VPC, Vigor, CPM1 és PL110 PLC-kh
         <translation>Túl sok hiba; a lista többi része nem lett beolvasva</translation>
     </message>
     <message>
-        <location line="+110"/>
+        <location line="+103"/>
+        <source>Program sections such as &apos;%1&apos; are not supported: a listing is one main program, run at every scan</source>
+        <translation>A programszakaszok (például &apos;%1&apos;) nem támogatottak: az utasításlista egyetlen főprogram, amely minden ciklusban lefut</translation>
+    </message>
+    <message>
+        <location line="+5"/>
+        <source>Program sections such as &apos;%1&apos; are not supported: a listing is one main program, run at every scan; put what runs once under LD %2 (ON in the first scan). Interrupt programs are not supported</source>
+        <translation>A programszakaszok (például &apos;%1&apos;) nem támogatottak: az utasításlista egyetlen főprogram, amely minden ciklusban lefut; ami egyszer fut, kerüljön az LD %2 alá (az első ciklusban BE). Megszakítási programok nem támogatottak</translation>
+    </message>
+    <message>
+        <location line="+22"/>
         <source>Unknown instruction &apos;%1&apos; for %2</source>
         <translation>Ismeretlen utasítás: &apos;%1&apos; (%2)</translation>
     </message>
@@ -2158,7 +2208,7 @@ Létradiagram- és utasításlista-szerkesztő VPC, Vigor, CPM1 és PL110 PLC-kh
 <context>
     <name>rung::model::Target</name>
     <message>
-        <location filename="../model/target/target_cpm1.cpp" line="+36"/>
+        <location filename="../model/target/target_cpm1.cpp" line="+38"/>
         <source>input channels</source>
         <translation>bemeneti csatornák</translation>
     </message>
@@ -2184,7 +2234,7 @@ Létradiagram- és utasításlista-szerkesztő VPC, Vigor, CPM1 és PL110 PLC-kh
     </message>
     <message>
         <location line="+5"/>
-        <location filename="../model/target/target_pl110.cpp" line="+79"/>
+        <location filename="../model/target/target_pl110.cpp" line="+86"/>
         <location filename="../model/target/target_vigor.cpp" line="+115"/>
         <location filename="../model/target/target_vpc.cpp" line="+61"/>
         <source>timers</source>
@@ -2220,7 +2270,7 @@ Létradiagram- és utasításlista-szerkesztő VPC, Vigor, CPM1 és PL110 PLC-kh
     </message>
     <message>
         <location line="+2"/>
-        <location filename="../model/target/target_pl110.cpp" line="+41"/>
+        <location filename="../model/target/target_pl110.cpp" line="+47"/>
         <location filename="../model/target/target_vigor.cpp" line="+21"/>
         <source>ON for the first scan</source>
         <translation>az első ciklusban BE</translation>
@@ -2266,7 +2316,7 @@ Létradiagram- és utasításlista-szerkesztő VPC, Vigor, CPM1 és PL110 PLC-kh
     </message>
     <message>
         <location line="+5"/>
-        <location filename="../model/target/target_pl110.cpp" line="+23"/>
+        <location filename="../model/target/target_pl110.cpp" line="+28"/>
         <location filename="../model/target/target_vigor.cpp" line="+56"/>
         <location filename="../model/target/target_vpc.cpp" line="+5"/>
         <source>Start a block with a normally open contact</source>
@@ -2417,21 +2467,51 @@ Létradiagram- és utasításlista-szerkesztő VPC, Vigor, CPM1 és PL110 PLC-kh
         <translation>Csatorna vagy konstans mozgatása</translation>
     </message>
     <message>
-        <location line="+5"/>
+        <location line="+8"/>
+        <source>R = the value of the BCD digits of S</source>
+        <translation>R = S BCD számjegyeinek értéke</translation>
+    </message>
+    <message>
+        <location line="+2"/>
+        <source>R = S as BCD digits</source>
+        <translation>R = S BCD számjegyekkel</translation>
+    </message>
+    <message>
+        <location line="+2"/>
+        <source>Invert every bit of a channel</source>
+        <translation>Egy csatorna minden bitjének negálása</translation>
+    </message>
+    <message>
+        <location line="+2"/>
+        <source>R = I1 AND I2, bit by bit</source>
+        <translation>R = I1 AND I2, bitenként</translation>
+    </message>
+    <message>
+        <location line="+2"/>
+        <source>R = I1 OR I2, bit by bit</source>
+        <translation>R = I1 OR I2, bitenként</translation>
+    </message>
+    <message>
+        <location line="+2"/>
+        <source>R = I1 XOR I2, bit by bit</source>
+        <translation>R = I1 XOR I2, bitenként</translation>
+    </message>
+    <message>
+        <location line="+11"/>
         <location filename="../model/target/target_vigor.cpp" line="+23"/>
         <source>No operation</source>
         <translation>Nincs művelet</translation>
     </message>
     <message>
         <location line="+3"/>
-        <location filename="../model/target/target_pl110.cpp" line="+92"/>
+        <location filename="../model/target/target_pl110.cpp" line="+106"/>
         <location filename="../model/target/target_vigor.cpp" line="-1"/>
         <location filename="../model/target/target_vpc.cpp" line="+5"/>
         <source>End of the program</source>
         <translation>A program vége</translation>
     </message>
     <message>
-        <location filename="../model/target/target_pl110.cpp" line="-246"/>
+        <location filename="../model/target/target_pl110.cpp" line="-273"/>
         <source>IF contact: ON while S1 ? S2 is true</source>
         <translation>IF érintkező: BE, amíg S1 ? S2 igaz</translation>
     </message>
@@ -2446,12 +2526,12 @@ Létradiagram- és utasításlista-szerkesztő VPC, Vigor, CPM1 és PL110 PLC-kh
         <translation>digitális kimenetek</translation>
     </message>
     <message>
-        <location line="+3"/>
+        <location line="+4"/>
         <source>bistable relays</source>
         <translation>bistabil relék</translation>
     </message>
     <message>
-        <location line="+2"/>
+        <location line="+3"/>
         <source>markers</source>
         <translation>markerek</translation>
     </message>
@@ -2461,7 +2541,7 @@ Létradiagram- és utasításlista-szerkesztő VPC, Vigor, CPM1 és PL110 PLC-kh
         <translation>változók</translation>
     </message>
     <message>
-        <location line="+6"/>
+        <location line="+8"/>
         <source>special markers</source>
         <translation>speciális markerek</translation>
     </message>
@@ -2478,17 +2558,17 @@ Létradiagram- és utasításlista-szerkesztő VPC, Vigor, CPM1 és PL110 PLC-kh
         <translation>analóg kimenetek</translation>
     </message>
     <message>
-        <location line="+3"/>
+        <location line="+5"/>
         <source>timer presets</source>
         <translation>időzítők beállított értékei</translation>
     </message>
     <message>
-        <location line="+2"/>
+        <location line="+3"/>
         <source>counter presets</source>
         <translation>számlálók beállított értékei</translation>
     </message>
     <message>
-        <location line="+2"/>
+        <location line="+3"/>
         <source>EEPROM words</source>
         <translation>EEPROM szavak</translation>
     </message>
@@ -2524,12 +2604,17 @@ Létradiagram- és utasításlista-szerkesztő VPC, Vigor, CPM1 és PL110 PLC-kh
         <translation>minden ciklusban átvált</translation>
     </message>
     <message>
-        <location line="+2"/>
+        <location line="+3"/>
         <source>TEST: inputs are taken from SM37</source>
         <translation>TEST: a bemenetek az SM37-ből jönnek</translation>
     </message>
     <message>
         <location line="+2"/>
+        <source>inputs I1..I8 in TEST mode (bit 0 = I1), cleared at power-on</source>
+        <translation>az I1..I8 bemenetek TEST módban (0. bit = I1), bekapcsoláskor törlődik</translation>
+    </message>
+    <message>
+        <location line="+4"/>
         <source>counters C1..C16 off, timers T49..T64 on</source>
         <translation>C1..C16 számlálók kikapcsolva, T49..T64 időzítők bekapcsolva</translation>
     </message>
@@ -2596,7 +2681,7 @@ Létradiagram- és utasításlista-szerkesztő VPC, Vigor, CPM1 és PL110 PLC-kh
         <translation>Közvetlen bemeneti nyitó érintkező párhuzamosan</translation>
     </message>
     <message>
-        <location line="+7"/>
+        <location line="+12"/>
         <source>Immediate output coil: writes the terminal at once</source>
         <translation>Közvetlen kimeneti tekercs: azonnal írja a kimeneti kapcsot</translation>
     </message>
@@ -2606,7 +2691,12 @@ Létradiagram- és utasításlista-szerkesztő VPC, Vigor, CPM1 és PL110 PLC-kh
         <translation>Bistabil relé tekercse: minden működtetés átbillenti a relét</translation>
     </message>
     <message>
-        <location line="+5"/>
+        <location line="+8"/>
+        <source>bit number</source>
+        <translation>bitszám</translation>
+    </message>
+    <message>
+        <location line="+2"/>
         <source>Set a bit (0..15) of a word to 1</source>
         <translation>Egy szó egy bitjének (0..15) 1-be állítása</translation>
     </message>
@@ -2616,7 +2706,12 @@ Létradiagram- és utasításlista-szerkesztő VPC, Vigor, CPM1 és PL110 PLC-kh
         <translation>Egy szó egy bitjének (0..15) 0-ba állítása</translation>
     </message>
     <message>
-        <location line="+6"/>
+        <location line="+8"/>
+        <source>time base (ms)</source>
+        <translation>időalap (ms)</translation>
+    </message>
+    <message>
+        <location line="+2"/>
         <source>On-delay timer: T ON once the time reaches PT; OFF resets</source>
         <translation>Bekapcsolás-késleltetésű időzítő: T BE, amint az idő eléri a PT-t; KI törli</translation>
     </message>
@@ -3049,7 +3144,57 @@ Létradiagram- és utasításlista-szerkesztő VPC, Vigor, CPM1 és PL110 PLC-kh
         <translation>D = D - 1</translation>
     </message>
     <message>
-        <location line="+5"/>
+        <location line="+3"/>
+        <source>D = S1 AND S2, bit by bit</source>
+        <translation>D = S1 AND S2, bitenként</translation>
+    </message>
+    <message>
+        <location line="+3"/>
+        <source>D = S1 OR S2, bit by bit</source>
+        <translation>D = S1 OR S2, bitenként</translation>
+    </message>
+    <message>
+        <location line="+3"/>
+        <source>D = S1 XOR S2, bit by bit</source>
+        <translation>D = S1 XOR S2, bitenként</translation>
+    </message>
+    <message>
+        <location line="+3"/>
+        <source>D = every bit of S inverted</source>
+        <translation>D = S minden bitje negálva</translation>
+    </message>
+    <message>
+        <location line="+3"/>
+        <source>D = S as BCD digits</source>
+        <translation>D = S BCD számjegyekkel</translation>
+    </message>
+    <message>
+        <location line="+3"/>
+        <source>D = the value of the BCD digits S</source>
+        <translation>D = az S BCD számjegyek értéke</translation>
+    </message>
+    <message>
+        <location line="+4"/>
+        <source>Read n words of special module m1, from m2</source>
+        <translation>n szó olvasása az m1 speciális modul m2 címétől</translation>
+    </message>
+    <message>
+        <location line="+4"/>
+        <source>Write n words to special module m1, at m2</source>
+        <translation>n szó írása az m1 speciális modul m2 címére</translation>
+    </message>
+    <message>
+        <location line="+3"/>
+        <source>Sum and parity check of n bytes</source>
+        <translation>n bájt összege és paritásellenőrzése</translation>
+    </message>
+    <message>
+        <location line="+3"/>
+        <source>Refresh n inputs or outputs now</source>
+        <translation>n bemenet vagy kimenet azonnali frissítése</translation>
+    </message>
+    <message>
+        <location line="+6"/>
         <source>Communication or conversion instruction</source>
         <translation>Kommunikációs vagy konverziós utasítás</translation>
     </message>
@@ -3148,12 +3293,7 @@ Létradiagram- és utasításlista-szerkesztő VPC, Vigor, CPM1 és PL110 PLC-kh
 <context>
     <name>rung::simulator::Compiler</name>
     <message>
-        <location filename="../simulator/compiler_detail.h" line="+67"/>
-        <source>%1 is not simulated: it does nothing in the simulator</source>
-        <translation>%1 nincs szimulálva: a szimulátorban nem csinál semmit</translation>
-    </message>
-    <message>
-        <location line="+15"/>
+        <location filename="../simulator/compiler_detail.h" line="+102"/>
         <source>%1 needs operand %2</source>
         <translation>%1: hiányzik a(z) %2. operandus</translation>
     </message>
@@ -3163,7 +3303,7 @@ Létradiagram- és utasításlista-szerkesztő VPC, Vigor, CPM1 és PL110 PLC-kh
         <translation>%1 nem bit típusú operandus</translation>
     </message>
     <message>
-        <location line="+12"/>
+        <location line="+22"/>
         <source>constant %1 is out of range</source>
         <translation>a(z) %1 konstans tartományon kívül esik</translation>
     </message>
@@ -3203,7 +3343,7 @@ Létradiagram- és utasításlista-szerkesztő VPC, Vigor, CPM1 és PL110 PLC-kh
         <translation>%1 nem időzítő</translation>
     </message>
     <message>
-        <location line="+31"/>
+        <location line="+32"/>
         <source>the time base of %1 must be 10, 100 or 1000 ms, not %2</source>
         <translation>%1 időalapja 10, 100 vagy 1000 ms lehet, nem %2</translation>
     </message>
@@ -3213,7 +3353,7 @@ Létradiagram- és utasításlista-szerkesztő VPC, Vigor, CPM1 és PL110 PLC-kh
         <translation>%1 nem számláló</translation>
     </message>
     <message>
-        <location line="+45"/>
+        <location line="+67"/>
         <source>%1 needs three bit devices from %2</source>
         <translation>%1 három bit típusú operandust igényel %2-tól</translation>
     </message>
@@ -3243,12 +3383,12 @@ Létradiagram- és utasításlista-szerkesztő VPC, Vigor, CPM1 és PL110 PLC-kh
         <translation>a(z) %1 szavas blokk túlnyúlik a terület végén</translation>
     </message>
     <message>
-        <location filename="../simulator/compiler.cpp" line="+113"/>
+        <location filename="../simulator/compiler.cpp" line="+135"/>
         <source>unknown instruction</source>
         <translation>ismeretlen utasítás</translation>
     </message>
     <message>
-        <location line="+18"/>
+        <location line="+19"/>
         <source>more than %1 nested %2</source>
         <translation>több mint %1 egymásba ágyazott %2</translation>
     </message>
@@ -3268,7 +3408,7 @@ Létradiagram- és utasításlista-szerkesztő VPC, Vigor, CPM1 és PL110 PLC-kh
         <translation>%1 nem operandus</translation>
     </message>
     <message>
-        <location line="+96"/>
+        <location line="+97"/>
         <source>the program has no target</source>
         <translation>a programnak nincs célrendszere</translation>
     </message>
@@ -3281,13 +3421,23 @@ Létradiagram- és utasításlista-szerkesztő VPC, Vigor, CPM1 és PL110 PLC-kh
         <translation>a(z) %1 beállított érték nem BCD szám; az utasítás kimarad</translation>
     </message>
     <message>
-        <location line="+17"/>
+        <location line="+43"/>
+        <source>%1 does not fit in BCD (0..%2); the destination is unchanged</source>
+        <translation>%1 nem fér el BCD-ben (0..%2); a cél nem változik</translation>
+    </message>
+    <message>
+        <location line="+13"/>
+        <source>%1 is not a BCD number; the destination is unchanged</source>
+        <translation>%1 nem BCD szám; a cél nem változik</translation>
+    </message>
+    <message>
+        <location line="+18"/>
         <source>result %1 is outside 0..9999; %2 is written</source>
         <translation>a(z) %1 eredmény kívül esik a 0..9999 tartományon; %2 íródik be</translation>
     </message>
     <message>
-        <location line="+350"/>
-        <location line="+52"/>
+        <location line="+354"/>
+        <location line="+56"/>
         <source>division by zero; the destination is unchanged</source>
         <translation>osztás nullával; a cél változatlan marad</translation>
     </message>

@@ -42,23 +42,8 @@
 <context>
     <name>rung::app::Cli</name>
     <message>
-        <location filename="../app/cli/cli.cpp" line="+22"/>
-        <source>usage:
-  rungstudio-cli check FILE [--target vpc|vigor|cpm1|pl110] [--model M]
-  rungstudio-cli convert FILE [--target T] [--from il|ladder|project] --to il|ladder|project [-o OUT]
-  rungstudio-cli simulate FILE [--target T] --scans N [--period MS] [--set DEV=VALUE@SCAN]... --trace DEV[,DEV...]
-FILE is a listing (.il), a ladder text (.ladder) or a project (.rung).
-Exit status: 0 no error, 1 the program has errors, 2 usage or I/O error.</source>
-        <translation>uso:
-  rungstudio-cli check FILE [--target vpc|vigor|cpm1|pl110] [--model M]
-  rungstudio-cli convert FILE [--target T] [--from il|ladder|project] --to il|ladder|project [-o OUT]
-  rungstudio-cli simulate FILE [--target T] --scans N [--period MS] [--set DEV=VALUE@SCAN]... --trace DEV[,DEV...]
-FILE è una lista istruzioni (.il), un testo ladder (.ladder) o un progetto (.rung).
-Codice di uscita: 0 nessun errore, 1 il programma contiene errori, 2 errore di utilizzo o di I/O.</translation>
-    </message>
-    <message>
-        <location line="+17"/>
-        <location line="+32"/>
+        <location filename="../app/cli/cli.cpp" line="+39"/>
+        <location line="+35"/>
         <source>unexpected argument %1</source>
         <translation>argomento non previsto: %1</translation>
     </message>
@@ -68,12 +53,32 @@ Codice di uscita: 0 nessun errore, 1 il programma contiene errori, 2 errore di u
         <translation>--to deve essere il, ladder o project</translation>
     </message>
     <message>
-        <location line="+13"/>
-        <source>nothing written: the input has errors</source>
-        <translation>nessun file scritto: l&apos;ingresso contiene errori</translation>
+        <location line="-58"/>
+        <source>usage:
+  rungstudio-cli check FILE [--target vpc|vigor|cpm1|pl110] [--model M]
+  rungstudio-cli convert FILE [--target T] [--from il|ladder|project] --to il|ladder|project [-o OUT] [--force]
+  rungstudio-cli simulate FILE [--target T] --scans N [--period MS] [--set DEV=VALUE@SCAN]... --trace DEV[,DEV...]
+FILE is a listing (.il), a ladder text (.ladder) or a project (.rung).
+Exit status: 0 no error, 1 the program has errors, 2 usage or I/O error.</source>
+        <translation>uso:
+  rungstudio-cli check FILE [--target vpc|vigor|cpm1|pl110] [--model M]
+  rungstudio-cli convert FILE [--target T] [--from il|ladder|project] --to il|ladder|project [-o OUT] [--force]
+  rungstudio-cli simulate FILE [--target T] --scans N [--period MS] [--set DEV=VALUE@SCAN]... --trace DEV[,DEV...]
+FILE è una lista istruzioni (.il), un testo ladder (.ladder) o un progetto (.rung).
+Codice di uscita: 0 nessun errore, 1 il programma contiene errori, 2 errore di utilizzo o di I/O.</translation>
     </message>
     <message>
-        <location line="+21"/>
+        <location line="+79"/>
+        <source>nothing written: the input does not parse or convert whole</source>
+        <translation>nessun file scritto: l&apos;ingresso non si legge o non si converte per intero</translation>
+    </message>
+    <message>
+        <location line="+4"/>
+        <source>nothing written: the input has errors (--force writes it anyway)</source>
+        <translation>nessun file scritto: l&apos;ingresso contiene errori (--force lo scrive comunque)</translation>
+    </message>
+    <message>
+        <location line="+25"/>
         <source>cannot write %1: %2</source>
         <translation>impossibile scrivere %1: %2</translation>
     </message>
@@ -1492,7 +1497,7 @@ Editor di schemi ladder e liste istruzioni per VPC, Vigor, CPM1 e PL110.</transl
         <translation>Questo contatto non si trova su alcun percorso dalla barra sinistra a un&apos;uscita</translation>
     </message>
     <message>
-        <location filename="../model/checks/checks_list.cpp" line="+130"/>
+        <location filename="../model/checks/checks_list.cpp" line="+131"/>
         <source>Rewrite the rung in the canonical form</source>
         <translation>Riscrivi il segmento nella forma canonica</translation>
     </message>
@@ -1502,20 +1507,20 @@ Editor di schemi ladder e liste istruzioni per VPC, Vigor, CPM1 e PL110.</transl
         <translation>Più di %1 %2 consecutivi: il PLC rifiuta il programma</translation>
     </message>
     <message>
-        <location line="+37"/>
-        <source>Stacked ANB: combine each block with ANB as soon as it is complete</source>
-        <translation>ANB impilati: combinare ogni blocco con ANB appena è completo</translation>
+        <location line="+38"/>
+        <source>Stacked %1: combine each block with %1 as soon as it is complete</source>
+        <translation>%1 impilati: combinare ogni blocco con %1 appena è completo</translation>
     </message>
     <message numerus="yes">
-        <location line="+2"/>
-        <source>Stacked ORB: %n blocks are open; an OR chain needs less stack</source>
+        <location line="+3"/>
+        <source>Stacked %1: %n blocks are open; an OR chain needs less stack</source>
         <translation>
-            <numerusform>ORB impilati: %n blocco è aperto; una catena OR richiede meno stack</numerusform>
-            <numerusform>ORB impilati: %n blocchi sono aperti; una catena OR richiede meno stack</numerusform>
+            <numerusform>%1 impilati: %n blocco è aperto; una catena OR richiede meno stack</numerusform>
+            <numerusform>%1 impilati: %n blocchi sono aperti; una catena OR richiede meno stack</numerusform>
         </translation>
     </message>
     <message>
-        <location line="+6"/>
+        <location line="+7"/>
         <source>A single contact joined with %1 is simpler as %2</source>
         <translation>Un singolo contatto unito con %1 è più semplice come %2</translation>
     </message>
@@ -1566,6 +1571,16 @@ Editor di schemi ladder e liste istruzioni per VPC, Vigor, CPM1 e PL110.</transl
             <numerusform>%n MPS senza MPP alla fine del segmento</numerusform>
             <numerusform>%n MPS senza MPP alla fine del segmento</numerusform>
         </translation>
+    </message>
+    <message>
+        <location line="+147"/>
+        <source>%1 is driven twice; a coil may be driven only once (the first is on line %2)</source>
+        <translation>%1 è comandato due volte; una bobina può essere comandata una volta sola (il primo è alla riga %2)</translation>
+    </message>
+    <message>
+        <location line="+12"/>
+        <source>%1 is driven twice; a coil may be driven only once (the first is in rung %2)</source>
+        <translation>%1 è comandato due volte; una bobina può essere comandata una volta sola (il primo è nel segmento %2)</translation>
     </message>
     <message>
         <location filename="../model/checks/checks_nesting.cpp" line="+58"/>
@@ -1648,7 +1663,7 @@ Editor di schemi ladder e liste istruzioni per VPC, Vigor, CPM1 e PL110.</transl
         <translation>Lo step ladder non è chiuso con RET</translation>
     </message>
     <message>
-        <location filename="../model/checks/checks_list.cpp" line="+66"/>
+        <location filename="../model/checks/checks_list.cpp" line="-83"/>
         <source>Set value %1 is out of range</source>
         <translation>Il valore di preset %1 è fuori campo</translation>
     </message>
@@ -1673,22 +1688,12 @@ Editor di schemi ladder e liste istruzioni per VPC, Vigor, CPM1 e PL110.</transl
         <translation>Il numero %1 è usato come temporizzatore e come contatore; condividono un banco</translation>
     </message>
     <message>
-        <location line="+22"/>
-        <source>%1 is driven twice (&quot;Oper duplication&quot;); the first is on line %2</source>
-        <translation>%1 è comandato due volte (&quot;Oper duplication&quot;); il primo è alla riga %2</translation>
-    </message>
-    <message>
-        <location line="+3"/>
+        <location line="+27"/>
         <source>%1 is driven twice; the later one wins (first on line %2)</source>
         <translation>%1 è comandato due volte; prevale l&apos;ultimo (il primo alla riga %2)</translation>
     </message>
     <message>
-        <location line="+7"/>
-        <source>%1 is driven twice (&quot;Oper duplication&quot;); the first is in rung %2</source>
-        <translation>%1 è comandato due volte (&quot;Oper duplication&quot;); il primo è nel segmento %2</translation>
-    </message>
-    <message>
-        <location line="+2"/>
+        <location line="+11"/>
         <source>%1 is driven twice; the later one wins (first in rung %2)</source>
         <translation>%1 è comandato due volte; prevale l&apos;ultimo (il primo nel segmento %2)</translation>
     </message>
@@ -1696,6 +1701,41 @@ Editor di schemi ladder e liste istruzioni per VPC, Vigor, CPM1 e PL110.</transl
         <location line="+13"/>
         <source>The program needs %1 steps; %2 holds %3</source>
         <translation>Il programma richiede %1 passi; %2 ne contiene %3</translation>
+    </message>
+    <message>
+        <location filename="../model/checks/operand_rules.cpp" line="+20"/>
+        <source>operand %1</source>
+        <translation>operando %1</translation>
+    </message>
+    <message>
+        <location line="+44"/>
+        <source>%1 or %2</source>
+        <translation>%1 o %2</translation>
+    </message>
+    <message>
+        <location line="+1"/>
+        <source>the %1 of %2 must be %3, not %4</source>
+        <translation>il %1 di %2 deve essere %3, non %4</translation>
+    </message>
+    <message>
+        <location line="+5"/>
+        <source>the %1 of %2 must be from %3 to %4, not %5</source>
+        <translation>il %1 di %2 deve essere da %3 a %4, non %5</translation>
+    </message>
+    <message>
+        <location line="+23"/>
+        <source>%1 takes only %2..%3, not %4</source>
+        <translation>%1 accetta solo %2..%3, non %4</translation>
+    </message>
+    <message>
+        <location line="+10"/>
+        <source>%1 cannot write %2: %3 are written only by %4</source>
+        <translation>%1 non può scrivere %2: %3 sono scritti solo da %4</translation>
+    </message>
+    <message>
+        <location line="+10"/>
+        <source>%1 is not simulated: it does nothing in the simulator</source>
+        <translation>%1 non è simulato: nel simulatore non fa nulla</translation>
     </message>
 </context>
 <context>
@@ -1828,7 +1868,17 @@ Editor di schemi ladder e liste istruzioni per VPC, Vigor, CPM1 e PL110.</transl
         <translation>Troppi errori; il resto della lista non è stato letto</translation>
     </message>
     <message>
-        <location line="+110"/>
+        <location line="+103"/>
+        <source>Program sections such as &apos;%1&apos; are not supported: a listing is one main program, run at every scan</source>
+        <translation>Le sezioni di programma come &apos;%1&apos; non sono supportate: una lista istruzioni è un solo programma principale, eseguito a ogni scansione</translation>
+    </message>
+    <message>
+        <location line="+5"/>
+        <source>Program sections such as &apos;%1&apos; are not supported: a listing is one main program, run at every scan; put what runs once under LD %2 (ON in the first scan). Interrupt programs are not supported</source>
+        <translation>Le sezioni di programma come &apos;%1&apos; non sono supportate: una lista istruzioni è un solo programma principale, eseguito a ogni scansione; mettere ciò che va eseguito una volta sotto LD %2 (ON nella prima scansione). I programmi di interrupt non sono supportati</translation>
+    </message>
+    <message>
+        <location line="+22"/>
         <source>Unknown instruction &apos;%1&apos; for %2</source>
         <translation>Istruzione sconosciuta &apos;%1&apos; per %2</translation>
     </message>
@@ -2170,7 +2220,7 @@ Editor di schemi ladder e liste istruzioni per VPC, Vigor, CPM1 e PL110.</transl
 <context>
     <name>rung::model::Target</name>
     <message>
-        <location filename="../model/target/target_cpm1.cpp" line="+36"/>
+        <location filename="../model/target/target_cpm1.cpp" line="+38"/>
         <source>input channels</source>
         <translation>canali di ingresso</translation>
     </message>
@@ -2196,7 +2246,7 @@ Editor di schemi ladder e liste istruzioni per VPC, Vigor, CPM1 e PL110.</transl
     </message>
     <message>
         <location line="+5"/>
-        <location filename="../model/target/target_pl110.cpp" line="+79"/>
+        <location filename="../model/target/target_pl110.cpp" line="+86"/>
         <location filename="../model/target/target_vigor.cpp" line="+115"/>
         <location filename="../model/target/target_vpc.cpp" line="+61"/>
         <source>timers</source>
@@ -2232,7 +2282,7 @@ Editor di schemi ladder e liste istruzioni per VPC, Vigor, CPM1 e PL110.</transl
     </message>
     <message>
         <location line="+2"/>
-        <location filename="../model/target/target_pl110.cpp" line="+41"/>
+        <location filename="../model/target/target_pl110.cpp" line="+47"/>
         <location filename="../model/target/target_vigor.cpp" line="+21"/>
         <source>ON for the first scan</source>
         <translation>ON per la prima scansione</translation>
@@ -2278,7 +2328,7 @@ Editor di schemi ladder e liste istruzioni per VPC, Vigor, CPM1 e PL110.</transl
     </message>
     <message>
         <location line="+5"/>
-        <location filename="../model/target/target_pl110.cpp" line="+23"/>
+        <location filename="../model/target/target_pl110.cpp" line="+28"/>
         <location filename="../model/target/target_vigor.cpp" line="+56"/>
         <location filename="../model/target/target_vpc.cpp" line="+5"/>
         <source>Start a block with a normally open contact</source>
@@ -2429,21 +2479,51 @@ Editor di schemi ladder e liste istruzioni per VPC, Vigor, CPM1 e PL110.</transl
         <translation>Sposta un canale o una costante</translation>
     </message>
     <message>
-        <location line="+5"/>
+        <location line="+8"/>
+        <source>R = the value of the BCD digits of S</source>
+        <translation>R = il valore delle cifre BCD di S</translation>
+    </message>
+    <message>
+        <location line="+2"/>
+        <source>R = S as BCD digits</source>
+        <translation>R = S in cifre BCD</translation>
+    </message>
+    <message>
+        <location line="+2"/>
+        <source>Invert every bit of a channel</source>
+        <translation>Inverte ogni bit di un canale</translation>
+    </message>
+    <message>
+        <location line="+2"/>
+        <source>R = I1 AND I2, bit by bit</source>
+        <translation>R = I1 AND I2, bit per bit</translation>
+    </message>
+    <message>
+        <location line="+2"/>
+        <source>R = I1 OR I2, bit by bit</source>
+        <translation>R = I1 OR I2, bit per bit</translation>
+    </message>
+    <message>
+        <location line="+2"/>
+        <source>R = I1 XOR I2, bit by bit</source>
+        <translation>R = I1 XOR I2, bit per bit</translation>
+    </message>
+    <message>
+        <location line="+11"/>
         <location filename="../model/target/target_vigor.cpp" line="+23"/>
         <source>No operation</source>
         <translation>Nessuna operazione</translation>
     </message>
     <message>
         <location line="+3"/>
-        <location filename="../model/target/target_pl110.cpp" line="+92"/>
+        <location filename="../model/target/target_pl110.cpp" line="+106"/>
         <location filename="../model/target/target_vigor.cpp" line="-1"/>
         <location filename="../model/target/target_vpc.cpp" line="+5"/>
         <source>End of the program</source>
         <translation>Fine del programma</translation>
     </message>
     <message>
-        <location filename="../model/target/target_pl110.cpp" line="-246"/>
+        <location filename="../model/target/target_pl110.cpp" line="-273"/>
         <source>IF contact: ON while S1 ? S2 is true</source>
         <translation>Contatto IF: ON mentre S1 ? S2 è vero</translation>
     </message>
@@ -2458,12 +2538,12 @@ Editor di schemi ladder e liste istruzioni per VPC, Vigor, CPM1 e PL110.</transl
         <translation>uscite digitali</translation>
     </message>
     <message>
-        <location line="+3"/>
+        <location line="+4"/>
         <source>bistable relays</source>
         <translation>relè bistabili</translation>
     </message>
     <message>
-        <location line="+2"/>
+        <location line="+3"/>
         <source>markers</source>
         <translation>marker</translation>
     </message>
@@ -2473,7 +2553,7 @@ Editor di schemi ladder e liste istruzioni per VPC, Vigor, CPM1 e PL110.</transl
         <translation>variabili</translation>
     </message>
     <message>
-        <location line="+6"/>
+        <location line="+8"/>
         <source>special markers</source>
         <translation>marker speciali</translation>
     </message>
@@ -2490,17 +2570,17 @@ Editor di schemi ladder e liste istruzioni per VPC, Vigor, CPM1 e PL110.</transl
         <translation>uscite analogiche</translation>
     </message>
     <message>
-        <location line="+3"/>
+        <location line="+5"/>
         <source>timer presets</source>
         <translation>preset dei temporizzatori</translation>
     </message>
     <message>
-        <location line="+2"/>
+        <location line="+3"/>
         <source>counter presets</source>
         <translation>preset dei contatori</translation>
     </message>
     <message>
-        <location line="+2"/>
+        <location line="+3"/>
         <source>EEPROM words</source>
         <translation>word EEPROM</translation>
     </message>
@@ -2536,12 +2616,17 @@ Editor di schemi ladder e liste istruzioni per VPC, Vigor, CPM1 e PL110.</transl
         <translation>commuta a ogni scansione</translation>
     </message>
     <message>
-        <location line="+2"/>
+        <location line="+3"/>
         <source>TEST: inputs are taken from SM37</source>
         <translation>TEST: gli ingressi sono presi da SM37</translation>
     </message>
     <message>
         <location line="+2"/>
+        <source>inputs I1..I8 in TEST mode (bit 0 = I1), cleared at power-on</source>
+        <translation>ingressi I1..I8 in modalità TEST (bit 0 = I1), azzerata all&apos;accensione</translation>
+    </message>
+    <message>
+        <location line="+4"/>
         <source>counters C1..C16 off, timers T49..T64 on</source>
         <translation>contatori C1..C16 disattivati, temporizzatori T49..T64 attivi</translation>
     </message>
@@ -2608,7 +2693,7 @@ Editor di schemi ladder e liste istruzioni per VPC, Vigor, CPM1 e PL110.</transl
         <translation>Contatto di ingresso immediato normalmente chiuso in parallelo</translation>
     </message>
     <message>
-        <location line="+7"/>
+        <location line="+12"/>
         <source>Immediate output coil: writes the terminal at once</source>
         <translation>Bobina di uscita immediata: scrive subito il morsetto</translation>
     </message>
@@ -2618,7 +2703,12 @@ Editor di schemi ladder e liste istruzioni per VPC, Vigor, CPM1 e PL110.</transl
         <translation>Bobina di relè bistabile: ogni attivazione commuta il relè</translation>
     </message>
     <message>
-        <location line="+5"/>
+        <location line="+8"/>
+        <source>bit number</source>
+        <translation>numero del bit</translation>
+    </message>
+    <message>
+        <location line="+2"/>
         <source>Set a bit (0..15) of a word to 1</source>
         <translation>Porta a 1 un bit (0..15) di una word</translation>
     </message>
@@ -2628,7 +2718,12 @@ Editor di schemi ladder e liste istruzioni per VPC, Vigor, CPM1 e PL110.</transl
         <translation>Porta a 0 un bit (0..15) di una word</translation>
     </message>
     <message>
-        <location line="+6"/>
+        <location line="+8"/>
+        <source>time base (ms)</source>
+        <translation>base tempi (ms)</translation>
+    </message>
+    <message>
+        <location line="+2"/>
         <source>On-delay timer: T ON once the time reaches PT; OFF resets</source>
         <translation>Temporizzatore all&apos;eccitazione: T ON quando il tempo raggiunge PT; OFF lo azzera</translation>
     </message>
@@ -3061,7 +3156,57 @@ Editor di schemi ladder e liste istruzioni per VPC, Vigor, CPM1 e PL110.</transl
         <translation>D = D - 1</translation>
     </message>
     <message>
-        <location line="+5"/>
+        <location line="+3"/>
+        <source>D = S1 AND S2, bit by bit</source>
+        <translation>D = S1 AND S2, bit per bit</translation>
+    </message>
+    <message>
+        <location line="+3"/>
+        <source>D = S1 OR S2, bit by bit</source>
+        <translation>D = S1 OR S2, bit per bit</translation>
+    </message>
+    <message>
+        <location line="+3"/>
+        <source>D = S1 XOR S2, bit by bit</source>
+        <translation>D = S1 XOR S2, bit per bit</translation>
+    </message>
+    <message>
+        <location line="+3"/>
+        <source>D = every bit of S inverted</source>
+        <translation>D = ogni bit di S invertito</translation>
+    </message>
+    <message>
+        <location line="+3"/>
+        <source>D = S as BCD digits</source>
+        <translation>D = S in cifre BCD</translation>
+    </message>
+    <message>
+        <location line="+3"/>
+        <source>D = the value of the BCD digits S</source>
+        <translation>D = il valore delle cifre BCD di S</translation>
+    </message>
+    <message>
+        <location line="+4"/>
+        <source>Read n words of special module m1, from m2</source>
+        <translation>Legge n word dal modulo speciale m1, da m2</translation>
+    </message>
+    <message>
+        <location line="+4"/>
+        <source>Write n words to special module m1, at m2</source>
+        <translation>Scrive n word nel modulo speciale m1, a m2</translation>
+    </message>
+    <message>
+        <location line="+3"/>
+        <source>Sum and parity check of n bytes</source>
+        <translation>Somma e controllo di parità di n byte</translation>
+    </message>
+    <message>
+        <location line="+3"/>
+        <source>Refresh n inputs or outputs now</source>
+        <translation>Aggiorna subito n ingressi o uscite</translation>
+    </message>
+    <message>
+        <location line="+6"/>
         <source>Communication or conversion instruction</source>
         <translation>Istruzione di comunicazione o di conversione</translation>
     </message>
@@ -3160,12 +3305,7 @@ Editor di schemi ladder e liste istruzioni per VPC, Vigor, CPM1 e PL110.</transl
 <context>
     <name>rung::simulator::Compiler</name>
     <message>
-        <location filename="../simulator/compiler_detail.h" line="+67"/>
-        <source>%1 is not simulated: it does nothing in the simulator</source>
-        <translation>%1 non è simulato: nel simulatore non fa nulla</translation>
-    </message>
-    <message>
-        <location line="+15"/>
+        <location filename="../simulator/compiler_detail.h" line="+102"/>
         <source>%1 needs operand %2</source>
         <translation>%1 richiede l&apos;operando %2</translation>
     </message>
@@ -3175,7 +3315,7 @@ Editor di schemi ladder e liste istruzioni per VPC, Vigor, CPM1 e PL110.</transl
         <translation>%1 non è un operando a bit</translation>
     </message>
     <message>
-        <location line="+12"/>
+        <location line="+22"/>
         <source>constant %1 is out of range</source>
         <translation>la costante %1 è fuori campo</translation>
     </message>
@@ -3215,7 +3355,7 @@ Editor di schemi ladder e liste istruzioni per VPC, Vigor, CPM1 e PL110.</transl
         <translation>%1 non è un temporizzatore</translation>
     </message>
     <message>
-        <location line="+31"/>
+        <location line="+32"/>
         <source>the time base of %1 must be 10, 100 or 1000 ms, not %2</source>
         <translation>la base dei tempi di %1 deve essere 10, 100 o 1000 ms, non %2</translation>
     </message>
@@ -3225,7 +3365,7 @@ Editor di schemi ladder e liste istruzioni per VPC, Vigor, CPM1 e PL110.</transl
         <translation>%1 non è un contatore</translation>
     </message>
     <message>
-        <location line="+45"/>
+        <location line="+67"/>
         <source>%1 needs three bit devices from %2</source>
         <translation>%1 richiede tre operandi a bit a partire da %2</translation>
     </message>
@@ -3255,12 +3395,12 @@ Editor di schemi ladder e liste istruzioni per VPC, Vigor, CPM1 e PL110.</transl
         <translation>il blocco di %1 word va oltre la fine della sua area</translation>
     </message>
     <message>
-        <location filename="../simulator/compiler.cpp" line="+113"/>
+        <location filename="../simulator/compiler.cpp" line="+135"/>
         <source>unknown instruction</source>
         <translation>istruzione sconosciuta</translation>
     </message>
     <message>
-        <location line="+18"/>
+        <location line="+19"/>
         <source>more than %1 nested %2</source>
         <translation>più di %1 %2 annidati</translation>
     </message>
@@ -3280,7 +3420,7 @@ Editor di schemi ladder e liste istruzioni per VPC, Vigor, CPM1 e PL110.</transl
         <translation>%1 non è un operando</translation>
     </message>
     <message>
-        <location line="+96"/>
+        <location line="+97"/>
         <source>the program has no target</source>
         <translation>il programma non ha una famiglia PLC</translation>
     </message>
@@ -3293,13 +3433,23 @@ Editor di schemi ladder e liste istruzioni per VPC, Vigor, CPM1 e PL110.</transl
         <translation>il valore di preset %1 non è un numero BCD; l&apos;istruzione viene saltata</translation>
     </message>
     <message>
-        <location line="+17"/>
+        <location line="+43"/>
+        <source>%1 does not fit in BCD (0..%2); the destination is unchanged</source>
+        <translation>%1 non sta in BCD (0..%2); la destinazione resta invariata</translation>
+    </message>
+    <message>
+        <location line="+13"/>
+        <source>%1 is not a BCD number; the destination is unchanged</source>
+        <translation>%1 non è un numero BCD; la destinazione resta invariata</translation>
+    </message>
+    <message>
+        <location line="+18"/>
         <source>result %1 is outside 0..9999; %2 is written</source>
         <translation>il risultato %1 è fuori da 0..9999; viene scritto %2</translation>
     </message>
     <message>
-        <location line="+350"/>
-        <location line="+52"/>
+        <location line="+354"/>
+        <location line="+56"/>
         <source>division by zero; the destination is unchanged</source>
         <translation>divisione per zero; la destinazione resta invariata</translation>
     </message>

@@ -51,8 +51,8 @@ TEST(CliCheck, PrintsOneLinePerFindingWithPlaceSeverityAndCode) {
     EXPECT_EQ(
         r.out,
         QStringLiteral(
-            "%1:4:1: error: 010.00 is driven twice (\"Oper duplication\"); the first is on line 2 "
-            "[DC001]\n")
+            "%1:4:1: error: 010.00 is driven twice; a coil may be driven only once (the first "
+            "is on line 2) [DC001]\n")
             .arg(file));
 }
 
@@ -557,4 +557,46 @@ TEST(CliConvert, ForceNeverWritesATextThatDoesNotParse) {
     EXPECT_EQ(r.code, 1);
     EXPECT_FALSE(QFile::exists(out)); // written, the ladder would have lost FOO X1
     EXPECT_TRUE(r.err.contains(QStringLiteral("bad.il:2:1: error:"))) << r.err.toStdString();
+}
+
+// Issue 14: what the simulator cannot model is named at `check` time, by the code and words
+// the simulator uses when a simulation starts, and it is a warning (exit 0).
+TEST(CliCheck, WhatTheSimulatorDoesNotModelIsAWarningOfCheck) {
+    QTemporaryDir dir;
+    const QString file = write(dir, QStringLiteral("pid.il"),
+                               "; target: pl110\nLD I1\nPID 1 2 3\nLD I1\nOUT Q1\nEND\n");
+    const CliRun r = cli({QStringLiteral("check"), file});
+    EXPECT_EQ(r.code, 0) << r.out.toStdString();
+    EXPECT_EQ(r.out, QStringLiteral("%1:3:1: warning: PID is not simulated: it does nothing in "
+                                    "the simulator [SIM100]\n")
+                         .arg(file));
+}
+
+TEST(CliCheck, AnOperandTheSimulatorRefusesIsACheckErrorAtItsPlace) {
+    QTemporaryDir dir;
+    const QString file = write(dir, QStringLiteral("qi.il"),
+                               "; target: pl110\nLD I1\nOUTQI Q9\nLD I2\nTON T1 5 50\nEND\n");
+    const CliRun r = cli({QStringLiteral("check"), file});
+    EXPECT_EQ(r.code, 1);
+    EXPECT_EQ(r.out, QStringLiteral("%1:3:7: error: OUTQI takes only Q1..Q8, not Q9 [OP005]\n"
+                                    "%1:5:1: error: the time base (ms) of TON must be 10, 100 or "
+                                    "1000, not 50 [OP005]\n")
+                         .arg(file));
+}
+
+// Issue 14: a CPM1 user reads the CPM1's words - AND LD, not ANB - and the duplicate-coil
+// message is not the VPC console's "Oper duplication".
+TEST(CliCheck, MessagesSpeakTheFamilysLanguage) {
+    QTemporaryDir dir;
+    const QString file = write(dir, QStringLiteral("st.il"),
+                               "LD 000.00\nLD 000.01\nLD 000.02\nAND LD\nAND LD\nOUT 010.00\n"
+                               "LD 000.03\nOUT 010.00\nEND(01)\n");
+    const CliRun r =
+        cli({QStringLiteral("check"), file, QStringLiteral("--target"), QStringLiteral("cpm1")});
+    EXPECT_TRUE(r.out.contains(QStringLiteral("Stacked AND LD: combine each block with AND LD")))
+        << r.out.toStdString();
+    EXPECT_FALSE(r.out.contains(QStringLiteral("ANB")));
+    EXPECT_FALSE(r.out.contains(QStringLiteral("ORB")));
+    EXPECT_FALSE(r.out.contains(QStringLiteral("Oper duplication")));
+    EXPECT_TRUE(r.out.contains(QStringLiteral("[DC001]")));
 }
