@@ -54,11 +54,12 @@ void Compiler::compileTimer(const model::Instruction &ins, Step &s) {
     s.y.index = m_layout->setValueWord(t->address); // shows the set value in use
     if (ins.operands.size() > 1) {
         s.x = sourceOf(ins, 1);
-        if (m_target.constants.bcdSetValues && s.x.index >= 0)
+        if (m_target.constants.bcdSetValues) // a channel or a # constant: BCD digits either way
             s.flags |= kBcd;
     } else {
         s.x.index = s.y.index;
     }
+    loadPresetFromMemory(t->address, s);
     if (t->address.index < m_sem.downTimersBelow)
         s.flags |= kDown;
     double base = ins.spec->timerBaseMs > 0 ? ins.spec->timerBaseMs : m_target.defaultTimerBaseMs;
@@ -107,17 +108,39 @@ void Compiler::compileCounter(const model::Instruction &ins, Step &s) {
     s.y.index = m_layout->setValueWord(c->address);
     if (ins.operands.size() > 1) {
         s.x = sourceOf(ins, 1);
-        if (m_target.constants.bcdSetValues && s.x.index >= 0)
+        if (m_target.constants.bcdSetValues) // a channel or a # constant: BCD digits either way
             s.flags |= kBcd;
     } else {
         s.x.index = s.y.index;
     }
+    loadPresetFromMemory(c->address, s);
+    if (s.code == Code::PlCounter)
+        m_program->endOfScanCounters.push_back(
+            static_cast<std::int32_t>(&s - m_program->steps.data()));
     if (!upDown && c->address.index < m_sem.downCountersBelow)
         s.flags |= kDown;
     const int inputs = upDown ? 3 : std::max(1, ins.spec->inputs);
     if (inputs == 1)
         s.flags |= kOneInput;
     popBlocks(ins, inputs - 1);
+}
+
+// D = S1 op S2 (two sources), or D = op S (one source; D = S when it is the only operand).
+void Compiler::compileWordLogic(const model::Instruction &ins, Step &s, std::size_t sources) {
+    using model::ApplyFunction;
+    s.code = Code::WordLogic;
+    const ApplyFunction f = ins.spec->function;
+    s.op = static_cast<std::uint8_t>(f == ApplyFunction::AndWord   ? WordOp::And
+                                     : f == ApplyFunction::OrWord  ? WordOp::Or
+                                     : f == ApplyFunction::XorWord ? WordOp::Xor
+                                     : f == ApplyFunction::ToBcd   ? WordOp::ToBcd
+                                     : f == ApplyFunction::FromBcd ? WordOp::FromBcd
+                                                                   : WordOp::Not);
+    s.x = sourceOf(ins, 0);
+    if (sources == 2)
+        s.y = sourceOf(ins, 1);
+    const std::size_t d = ins.operands.size() == 1 && sources == 1 ? 0 : sources;
+    s.dest = destOf(ins, d, false, &s.width);
 }
 
 void Compiler::compileApply(const model::Instruction &ins, Step &s) {
@@ -284,6 +307,17 @@ void Compiler::compileApply(const model::Instruction &ins, Step &s) {
         s.count = 1 + (area.kind == AreaKind::Bit ? span / 16 : span);
         break;
     }
+    case ApplyFunction::AndWord:
+    case ApplyFunction::OrWord:
+    case ApplyFunction::XorWord:
+        compileWordLogic(ins, s, 2);
+        break;
+    case ApplyFunction::Complement:
+    case ApplyFunction::ToBcd:
+    case ApplyFunction::FromBcd:
+        // CPM1 COM(29) D complements D in place; Vigor CML S D, BCD/BIN S D write D.
+        compileWordLogic(ins, s, 1);
+        break;
     case ApplyFunction::Toggle:
         // OUTB (seed 003 4.2.3): each activation of the coil flips the bit
         s.bit = bitOf(ins, 0);

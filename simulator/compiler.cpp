@@ -8,6 +8,20 @@ namespace rung::simulator {
 
 namespace detail {
 
+// The first `count` inputs of the physical input area, which a TEST-mode image word stands
+// for (seed 003 2.1.2: SM37.0 -> I1 ... SM37.7 -> I8).
+void Compiler::compileInputTestBits(int count) {
+    for (std::size_t k = 0; k < m_target.areas.size(); ++k) {
+        const model::Area &area = m_target.areas[k];
+        if (!area.physical || area.writable || area.kind != AreaKind::Bit)
+            continue;
+        for (int n = 0; n < count && area.first + n <= area.last; ++n)
+            m_program->inputTestBits.push_back(
+                m_layout->bit(model::Address{static_cast<int>(k), area.first + n, -1}));
+        return;
+    }
+}
+
 void Compiler::compileSystem() {
     for (const model::SystemDevice &d : m_target.systemDevices) {
         const auto parsed = model::parseAddress(m_target, d.device);
@@ -24,6 +38,13 @@ void Compiler::compileSystem() {
             b.unitUs = d.unitUs;
             if (b.word >= 0)
                 m_program->system.push_back(b);
+            break;
+        case model::SystemRole::InputTest:
+            m_program->inputTest = m_layout->bit(a);
+            break;
+        case model::SystemRole::InputTestImage:
+            m_program->inputTestWord = m_layout->word(a);
+            compileInputTestBits(d.inputs);
             break;
         case model::SystemRole::Other:
         case model::SystemRole::Error:
@@ -111,11 +132,13 @@ CompileResult Compiler::run() {
         Step &s = m_program->steps[k];
         m_program->lines[k] = ins.line;
         m_rungStart = rungStart[k];
+        m_muted = false;
         if (!ins.spec) {
             error(ins, Tr::tr("unknown instruction"));
             continue;
         }
         const model::InstructionSpec &spec = *ins.spec;
+        reportBreaches(ins);
         switch (spec.op) {
         case Op::Load:
         case Op::And:
@@ -254,6 +277,7 @@ CompileResult Compiler::run() {
             break;
         }
     }
+    m_muted = false;
     resolveJumps();
     CompileResult result;
     result.diagnostics = std::move(m_diagnostics);

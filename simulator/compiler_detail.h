@@ -6,6 +6,7 @@
 
 #include "compiler.h"
 
+#include "model/checks/operand_rules.h"
 #include "model/listing/structure.h"
 #include "model/target/address.h"
 
@@ -48,6 +49,9 @@ public:
 private:
     void error(const model::Instruction &ins, const QString &message,
                const QString &code = QStringLiteral("SIM001")) {
+        m_failed = true;
+        if (m_muted)
+            return;
         model::Diagnostic d;
         d.code = code;
         d.severity = model::Severity::Error;
@@ -55,7 +59,24 @@ private:
         d.location.column = ins.column;
         d.message = message;
         m_diagnostics.push_back(std::move(d));
-        m_failed = true;
+    }
+    // A constant preset of a timer/counter whose set value the program can address (PL110
+    // PT/PV, seed 003 2.1.9/2.1.11) is loaded into that word at start, and the element reads
+    // the word: writing PT1 changes T1's preset in force.
+    void loadPresetFromMemory(const model::Address &element, Step &s) {
+        if (s.x.index >= 0 || s.y.index < 0 || !m_layout->presetAddressable(element))
+            return;
+        m_program->presetLoads.emplace_back(s.y.index, s.x.constant);
+        s.x.index = s.y.index;
+    }
+    // The table's operand rules (model::operandBreaches, which `check` reads as OP005): an
+    // instruction that breaks one gets that message, and no second one of the compiler's own.
+    void reportBreaches(const model::Instruction &ins) {
+        m_muted = false;
+        const std::vector<model::OperandBreach> breaches = model::operandBreaches(m_target, ins);
+        for (const model::OperandBreach &b : breaches)
+            error(ins, b.message);
+        m_muted = !breaches.empty();
     }
     void notSimulated(const model::Instruction &ins) {
         model::Diagnostic d;
@@ -63,8 +84,7 @@ private:
         d.severity = model::Severity::Warning;
         d.location.line = ins.line;
         d.location.column = ins.column;
-        d.message = Tr::tr("%1 is not simulated: it does nothing in the simulator")
-                        .arg(ins.spec ? ins.spec->mnemonic : QString());
+        d.message = ins.spec ? model::notSimulatedMessage(*ins.spec) : QString();
         m_diagnostics.push_back(std::move(d));
     }
     QString describe(const model::Operand &o) const {
@@ -106,6 +126,16 @@ private:
             return w;
         if (o->kind == model::Operand::Kind::Constant) {
             w.constant = static_cast<std::int32_t>(o->constant.value);
+            // CPM1 "#0012" is the word 0012h (BCD digits, W353): MOV(21) #0012 DM 0000 stores
+            // 0012h, which a timer set value DM 0000 reads as 12 - the move and the set value
+            // read one word. Set values decode it (kBcd), as they decode a channel.
+            if (o->constant.style == model::Constant::Style::Bcd && o->constant.value >= 0) {
+                std::int64_t word = 0;
+                for (qint64 v = o->constant.value, shift = 0; v > 0; v /= 10, shift += 4)
+                    word |= (v % 10) << shift;
+                w.constant = static_cast<std::int32_t>(word);
+                return w;
+            }
             if (o->constant.value != w.constant)
                 error(ins, Tr::tr("constant %1 is out of range").arg(describe(*o)));
             return w;
@@ -191,7 +221,9 @@ private:
     void compileTimer(const model::Instruction &ins, Step &s);
     void compileCounter(const model::Instruction &ins, Step &s);
     void compileApply(const model::Instruction &ins, Step &s);
+    void compileWordLogic(const model::Instruction &ins, Step &s, std::size_t sources);
     void compileSystem();
+    void compileInputTestBits(int count);
     void resolveJumps();
 
     const model::InstructionList &m_list;
@@ -201,6 +233,7 @@ private:
     const MemoryLayout *m_layout = nullptr;
     std::vector<model::Diagnostic> m_diagnostics;
     bool m_failed = false;
+    bool m_muted = false;     // the instruction\'s operand rules already said what is wrong
     bool m_rungStart = false; // the instruction being compiled starts a rung
     int m_depth = 0;
     int m_push = 0;

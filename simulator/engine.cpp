@@ -40,6 +40,12 @@ Engine::Engine(std::shared_ptr<const Program> program)
     m_edges.assign(static_cast<std::size_t>(m_program->edgeSlots), 0);
     m_flow.assign(m_program->steps.size(), 0);
     m_reported.assign(m_program->steps.size(), 0);
+    loadPresets();
+}
+
+void Engine::loadPresets() {
+    for (const auto &[word, value] : m_program->presetLoads)
+        m_words[static_cast<std::size_t>(word)] = value;
 }
 
 void Engine::setPeriodMs(qint64 periodMs) {
@@ -108,6 +114,16 @@ void Engine::beginScan() {
     std::int32_t *R = m_words.data();
     for (const auto &[begin, end] : p.inputWordRanges)
         std::copy(m_stimulus.begin() + begin, m_stimulus.begin() + end, m_words.begin() + begin);
+    // TEST mode (seed 003 2.1.2): "la lettura degli ingressi digitali viene disabilitata. Lo
+    // stato degli ingressi viene prelevato dalle word SM37".
+    if (p.inputTest.valid() && p.inputTestWord >= 0 &&
+        (static_cast<std::uint32_t>(R[p.inputTest.word]) & p.inputTest.mask)) {
+        const auto image = static_cast<std::uint32_t>(R[p.inputTestWord]);
+        for (std::size_t k = 0; k < p.inputTestBits.size(); ++k) {
+            auto &w = reinterpret_cast<std::uint32_t &>(R[p.inputTestBits[k].word]);
+            w = (image >> k) & 1u ? (w | p.inputTestBits[k].mask) : (w & ~p.inputTestBits[k].mask);
+        }
+    }
     const qint64 t = m_stats.timeMs;
     // A virtual scan lasts exactly one period; the scan-time words show it in the unit the
     // target table gives (0.1 ms on Vigor and PL110), min / max since power-on.
@@ -167,6 +183,16 @@ void Engine::endScan() {
             static_cast<std::uint32_t>(m_words[static_cast<std::size_t>(p.parallelOutWord)]);
         for (std::size_t k = 0; k < p.parallelOutBits.size(); ++k)
             put(W, p.parallelOutBits[k], (v >> k) & 1u);
+    }
+    // PL110 (seed 003 4.2.5): "PV viene confrontato con il valore corrente al termine di
+    // ogni ciclo": the count bit follows the C word as the scan left it. MDOWN is ON at 0,
+    // OFF while its RESET is ON (the box keeps RESET in bit 2 of its state).
+    for (const std::int32_t k : p.endOfScanCounters) {
+        const Step &s = p.steps[static_cast<std::size_t>(k)];
+        const std::int32_t current = m_words[static_cast<std::size_t>(s.dest)];
+        const std::int32_t set = m_words[static_cast<std::size_t>(s.y.index)];
+        const bool resetOn = (m_states[static_cast<std::size_t>(s.slot)].previous & 4) != 0;
+        put(W, s.bit, (s.flags & kDown) ? !resetOn && current == 0 : current >= set);
     }
     if (p.deferredBitWrites)
         for (const auto &[begin, end] : p.bitWordRanges)
@@ -298,6 +324,7 @@ void Engine::powerCycle() {
     }
     std::fill(m_edges.begin(), m_edges.end(), 0);
     std::fill(m_flow.begin(), m_flow.end(), 0);
+    loadPresets();
     applyForces(m_words.data());
     m_scansSincePowerOn = 0;
 }

@@ -74,6 +74,7 @@ public:
     void attach(SnapshotChannel *channel) { m_channel = channel; }
 
 private:
+    void loadPresets(); // Program::presetLoads, at start and at each power cycle
     struct ElementState {
         std::int64_t accumulated = 0; // timers: ms with the input ON; counters: count
         std::uint8_t previous = 0;    // counters: input state at the last execution
@@ -94,6 +95,7 @@ private:
     }
     bool isStimulus(const model::Address &address) const;
     std::int32_t readSet(const Step &s, std::size_t step);
+    void wordLogic(const Step &s, std::size_t step); // Code::WordLogic, its input ON
     [[gnu::noinline, gnu::cold]] std::int64_t outOfDecimalRange(std::size_t step,
                                                                 std::int64_t value);
 

@@ -86,6 +86,63 @@ std::int32_t Engine::readSet(const Step &s, std::size_t step) {
     return set;
 }
 
+// Word logic and the BCD conversions act on the word's bits, so they read it unsigned at the
+// destination's width (a CPM1 channel 9999h is held as a negative 16-bit number).
+void Engine::wordLogic(const Step &s, std::size_t step) {
+    const std::uint32_t mask = s.width >= 32 ? 0xFFFFFFFFu : 0xFFFFu;
+    auto read = [&](const WordOperand &o) {
+        return static_cast<std::uint32_t>(o.index >= 0 ? m_words[static_cast<std::size_t>(o.index)]
+                                                       : o.constant) &
+               mask;
+    };
+    const std::uint32_t a = read(s.x);
+    std::int64_t r = 0;
+    switch (static_cast<WordOp>(s.op)) {
+    case WordOp::And:
+        r = a & read(s.y);
+        break;
+    case WordOp::Or:
+        r = a | read(s.y);
+        break;
+    case WordOp::Xor:
+        r = a ^ read(s.y);
+        break;
+    case WordOp::Not:
+        r = ~a & mask;
+        break;
+    case WordOp::ToBcd: {
+        // The value is the signed number the word holds; BCD has 4 digits a 16-bit word.
+        const std::int64_t v =
+            s.x.index >= 0 ? m_words[static_cast<std::size_t>(s.x.index)] : s.x.constant;
+        const std::int64_t max = s.width >= 32 ? 99999999 : 9999;
+        if (v < 0 || v > max) {
+            runtimeError(step, Tr::tr("%1 does not fit in BCD (0..%2); the destination is "
+                                      "unchanged")
+                                   .arg(v)
+                                   .arg(max));
+            return;
+        }
+        for (std::int64_t rest = v, shift = 0; rest > 0; rest /= 10, shift += 4)
+            r |= (rest % 10) << shift;
+        break;
+    }
+    case WordOp::FromBcd: {
+        const std::int32_t v = fromBcd(static_cast<std::int32_t>(a & 0x7FFFFFFFu));
+        if (v < 0 || (a & 0x80000000u)) {
+            runtimeError(step, Tr::tr("%1 is not a BCD number; the destination is unchanged")
+                                   .arg(QString::number(a, 16)));
+            return;
+        }
+        r = v;
+        break;
+    }
+    }
+    const auto i = static_cast<std::size_t>(s.dest);
+    const auto value = static_cast<std::uint32_t>(wrapToWidth(r, s.width));
+    m_words[i] =
+        static_cast<std::int32_t>((value & ~m_forceMask[i]) | (m_forceValue[i] & m_forceMask[i]));
+}
+
 // Kept out of the scan loop: the message's temporaries would otherwise weigh on it.
 std::int64_t Engine::outOfDecimalRange(std::size_t step, std::int64_t value) {
     const std::int64_t wrapped = ((value % 10000) + 10000) % 10000;
@@ -335,7 +392,10 @@ template <bool Record> void Engine::execute() {
                 out = acc && current >= set;
                 break;
             case PlTimerMode::Accumulating:
-                if (acc && st.running)
+                // Every scan that saw the coil ON was ON until this one (4.2.4: "accumulare
+                // il tempo per piu periodi di attivazione"): a one-scan pulse adds a period,
+                // a coil on SM0.4 half the elapsed time. Held ON, it counts as TON does.
+                if (st.running)
                     advance();
                 st.running = acc;
                 out = current >= set;
@@ -385,7 +445,8 @@ template <bool Record> void Engine::execute() {
                 if (downEdge && current > (countsDown ? 0 : -32768))
                     --current;
             }
-            put(W, s.bit, countsDown ? !reset && current == 0 : current >= set);
+            // The count bit is compared at the end of the cycle (4.2.5), by endScan.
+            st.previous = static_cast<std::uint8_t>(st.previous | (reset ? 4 : 0));
             break;
         }
         case Code::Transfer:
@@ -453,6 +514,10 @@ template <bool Record> void Engine::execute() {
         case Code::Dec:
             if (acc)
                 wrw(s.dest, std::int64_t{R[s.dest]} + (s.code == Code::Inc ? 1 : -1), s.width);
+            break;
+        case Code::WordLogic:
+            if (acc)
+                wordLogic(s, i);
             break;
         case Code::Math:
             if (acc) {

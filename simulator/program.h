@@ -50,7 +50,8 @@ enum class Code : std::uint8_t {
     Counter,
     UpDownCounter,
     PlTimer,   // PL110 TON / TOFF / TONR (op = PlTimerMode); current value = time base units
-    PlCounter, // PL110 MUP / MDOWN (kDown): UP, DOWN, RESET; current value saturates
+    PlCounter, // PL110 MUP / MDOWN (kDown): UP, DOWN, RESET; current value saturates; the
+               // bit is compared at END (Program::endOfScanCounters)
     Transfer,
     Move,
     Compare,
@@ -61,6 +62,7 @@ enum class Code : std::uint8_t {
     Inc,
     Dec,
     Math,         // PL110 FM: op = MathOp
+    WordLogic,    // dest = x op y (op = WordOp): WAND/ANDW ..., CML/COM, BCD, BIN
     BlockMove,    // x = first source word (or a constant to fill), dest = first word, count
     IndirectMove, // PL110 MOVIND: dest + value of y := x; count = words from dest to area end
     // control
@@ -87,6 +89,8 @@ enum StepFlag : std::uint8_t {
 enum class TransferKind : std::uint8_t { Assign, Add, Subtract };
 
 enum class PlTimerMode : std::uint8_t { OnDelay, OffDelay, Accumulating };
+
+enum class WordOp : std::uint8_t { And, Or, Xor, Not, ToBcd, FromBcd };
 
 enum class MathOp : std::uint8_t { Add, Sub, Mul, Div, Or, And, Xor, Shl, Shr };
 
@@ -143,6 +147,16 @@ struct Program {
     std::int32_t parallelInWord = -1;
     std::vector<BitRef> parallelOutBits; // LSB first
     std::vector<BitRef> parallelInBits;
+    // PL110 MUP / MDOWN steps whose count bit is compared at END (seed 003 4.2.5).
+    std::vector<std::int32_t> endOfScanCounters;
+    // Constant presets the program may read and write (PL110 PT/PV): (set-value word, value),
+    // loaded when the engine starts and at each power cycle.
+    std::vector<std::pair<std::int32_t, std::int32_t>> presetLoads;
+    // TEST mode (PL110 SM0.5 / SM37): while inputTest is ON the inputs inputTestBits read
+    // the bits of inputTestWord instead of the terminals.
+    BitRef inputTest;
+    std::int32_t inputTestWord = -1;
+    std::vector<BitRef> inputTestBits; // the inputs, bit 0 of the word first
     // physical inputs refreshed from the stimulus image: [begin, end) words
     std::vector<std::pair<int, int>> inputWordRanges;
 };

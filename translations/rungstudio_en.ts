@@ -50,15 +50,15 @@
 <context>
     <name>rung::model::Checks</name>
     <message numerus="yes">
-        <location filename="../model/checks/checks_list.cpp" line="+216"/>
-        <source>Stacked ORB: %n blocks are open; an OR chain needs less stack</source>
+        <location filename="../model/checks/checks_list.cpp" line="+219"/>
+        <source>Stacked %1: %n blocks are open; an OR chain needs less stack</source>
         <translation>
-            <numerusform>Stacked ORB: %n block is open; an OR chain needs less stack</numerusform>
-            <numerusform>Stacked ORB: %n blocks are open; an OR chain needs less stack</numerusform>
+            <numerusform>Stacked %1: %n block is open; an OR chain needs less stack</numerusform>
+            <numerusform>Stacked %1: %n blocks are open; an OR chain needs less stack</numerusform>
         </translation>
     </message>
     <message numerus="yes">
-        <location line="+77"/>
+        <location line="+78"/>
         <source>%n MPS left without MPP at the end of the rung</source>
         <translation>
             <numerusform>%n MPS left without MPP at the end of the rung</numerusform>
@@ -96,7 +96,7 @@
 <context>
     <name>rung::model::InstructionList</name>
     <message numerus="yes">
-        <location filename="../model/listing/il_parse.cpp" line="+374"/>
+        <location filename="../model/listing/il_parse.cpp" line="+394"/>
         <source>%1 needs %n operand(s): %2</source>
         <translation>
             <numerusform>%1 needs %n operand: %2</numerusform>

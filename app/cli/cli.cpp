@@ -23,7 +23,7 @@ QString usage() {
                   "  rungstudio-cli check FILE [--target vpc|vigor|cpm1|pl110] [--model M]\n"
                   "  rungstudio-cli convert FILE [--target T] [--from il|ladder|project] --to "
                   "il|ladder|project "
-                  "[-o OUT]\n"
+                  "[-o OUT] [--force]\n"
                   "  rungstudio-cli simulate FILE [--target T] --scans N [--period MS] [--set "
                   "DEV=VALUE@SCAN]... "
                   "--trace DEV[,DEV...]\n"
@@ -63,9 +63,12 @@ int convert(const QStringList &args, QTextStream &out, QTextStream &err) {
     }
     QString to;
     QString output;
+    bool force = false;
     for (qsizetype i = 0; i < rest.size(); ++i) {
         if (rest[i] == QLatin1String("--to") && i + 1 < rest.size())
             to = rest[++i];
+        else if (rest[i] == QLatin1String("--force"))
+            force = true;
         else if (rest[i] == QLatin1String("-o") && i + 1 < rest.size())
             output = rest[++i];
         else {
@@ -83,13 +86,27 @@ int convert(const QStringList &args, QTextStream &out, QTextStream &err) {
         err << error << '\n';
         return 2;
     }
-    if (model::hasErrors(input.problems)) {
-        // The reasons by the documented codes of `check`, not the conversion's own.
-        for (const model::Diagnostic &d : findings(input))
+    // What `check` rejects is not written (docs/cli.md): the same findings decide, so that a
+    // converted file never holds a program the tool itself calls wrong. The reasons are the
+    // documented codes of `check`, not the conversion's own.
+    // --force overrides the checks only: a text that does not parse, or does not convert,
+    // would be written with parts missing, so it is never written.
+    const std::vector<model::Diagnostic> all = findings(input);
+    const bool incomplete = model::hasErrors(input.problems);
+    const bool hasErrors = incomplete || model::hasErrors(all);
+    if (hasErrors) {
+        for (const model::Diagnostic &d : all)
             if (d.severity == model::Severity::Error)
                 err << formatDiagnostic(input.file, d) << '\n';
-        err << Tr::tr("nothing written: the input has errors") << '\n';
-        return 1;
+        if (incomplete) {
+            err << Tr::tr("nothing written: the input does not parse or convert whole") << '\n';
+            return 1;
+        }
+        if (!force) {
+            err << Tr::tr("nothing written: the input has errors (--force writes it anyway)")
+                << '\n';
+            return 1;
+        }
     }
     QByteArray bytes;
     if (to == QLatin1String("il")) {
@@ -103,16 +120,18 @@ int convert(const QStringList &args, QTextStream &out, QTextStream &err) {
     } else {
         bytes = model::projectToJson(input.project);
     }
+    // Written with --force, the program still has errors: exit 1 says so, as `check` would.
+    const int status = hasErrors ? 1 : 0;
     if (output.isEmpty()) {
         out << QString::fromUtf8(bytes);
-        return 0;
+        return status;
     }
     QSaveFile file(output);
     if (!file.open(QIODevice::WriteOnly) || file.write(bytes) != bytes.size() || !file.commit()) {
         err << Tr::tr("cannot write %1: %2").arg(output, file.errorString()) << '\n';
         return 2;
     }
-    return 0;
+    return status;
 }
 
 } // namespace

@@ -1,5 +1,6 @@
 #include "model/checks/checks.h"
 #include "model/checks/checks_internal.h"
+#include "model/checks/operand_rules.h"
 #include "model/convert/convert.h"
 #include "model/ladder/network.h"
 #include "model/listing/structure.h"
@@ -208,14 +209,17 @@ private:
                 // Otherwise: the nesting the drawing needs, written as the converter writes it.
                 const bool fuzzy = (stacked || singleOr || singleFirst) && isFuzzy(i);
                 if (fuzzy && stacked) {
-                    Finding &f = add(
-                        op == Op::AndBlock ? "FZ001" : "FZ002", Severity::Warning, i,
-                        op == Op::AndBlock
-                            ? Tr::tr("Stacked ANB: combine each block with ANB as soon as it is "
-                                     "complete")
-                            : Tr::tr(
-                                  "Stacked ORB: %n blocks are open; an OR chain needs less stack",
-                                  nullptr, static_cast<int>(blocks.size())));
+                    Finding &f =
+                        add(op == Op::AndBlock ? "FZ001" : "FZ002", Severity::Warning, i,
+                            // In the family's words: CPM1 and VPC write AND LD / OR LD.
+                            op == Op::AndBlock
+                                ? Tr::tr("Stacked %1: combine each block with %1 as soon as it is "
+                                         "complete")
+                                      .arg(name(i))
+                                : Tr::tr("Stacked %1: %n blocks are open; an OR chain needs less "
+                                         "stack",
+                                         nullptr, static_cast<int>(blocks.size()))
+                                      .arg(name(i)));
                     offerCanonical(f, i);
                 } else if (fuzzy && singleOr) {
                     Finding &f = add("FZ002", Severity::Warning, i,
@@ -347,6 +351,16 @@ private:
             const Instruction &ins = at(i);
             if (!ins.spec)
                 continue;
+            // The table's narrower rules, read by the simulator too: what it refuses, check does.
+            // What the simulator will not model is said before a simulation is tried.
+            if (ins.spec->function == ApplyFunction::NotSimulated)
+                add("SIM100", Severity::Warning, i, notSimulatedMessage(*ins.spec));
+            for (const OperandBreach &b : operandBreaches(m_t, ins)) {
+                const Operand &o = ins.operands[static_cast<std::size_t>(b.operand)];
+                Finding &f = add("OP005", Severity::Error, i, b.message);
+                if (o.kind == Operand::Kind::Device)
+                    atOperand(f, i, formatAddress(m_t, o.address));
+            }
             for (std::size_t k = 0; k < ins.operands.size(); ++k) {
                 const Operand &o = ins.operands[k];
                 const OperandKind kind = k < ins.spec->operands.size() ? ins.spec->operands[k].kind
@@ -425,19 +439,23 @@ private:
                 continue;
             }
             const bool error = m_t.limits.duplicateCoilIsError;
-            Finding &f = add(
-                "DC001", error ? Severity::Error : Severity::Warning, i,
-                error ? Tr::tr("%1 is driven twice (\"Oper duplication\"); the first is on line %2")
-                            .arg(formatAddress(m_t, a))
-                            .arg(at(it->second).line)
-                      : Tr::tr("%1 is driven twice; the later one wins (first on line %2)")
-                            .arg(formatAddress(m_t, a))
-                            .arg(at(it->second).line));
+            Finding &f =
+                add("DC001", error ? Severity::Error : Severity::Warning, i,
+                    error ? Tr::tr("%1 is driven twice; a coil may be driven only once (the first "
+                                   "is on line "
+                                   "%2)")
+                                .arg(formatAddress(m_t, a))
+                                .arg(at(it->second).line)
+                          : Tr::tr("%1 is driven twice; the later one wins (first on line %2)")
+                                .arg(formatAddress(m_t, a))
+                                .arg(at(it->second).line));
             f.diagnostic.related.push_back(location(it->second));
             f.related.push_back(it->second);
             const QString device = formatAddress(m_t, a);
             f.ladderMessage =
-                error ? Tr::tr("%1 is driven twice (\"Oper duplication\"); the first is in rung %2")
+                error ? Tr::tr("%1 is driven twice; a coil may be driven only once (the first is "
+                               "in rung "
+                               "%2)")
                             .arg(device, QStringLiteral("%1"))
                       : Tr::tr("%1 is driven twice; the later one wins (first in rung %2)")
                             .arg(device, QStringLiteral("%1"));

@@ -1,5 +1,7 @@
 #include "model/image/memory_layout.h"
 
+#include <algorithm>
+
 namespace rung::model {
 
 MemoryLayout::MemoryLayout(const Target &target)
@@ -19,6 +21,8 @@ MemoryLayout::MemoryLayout(const Target &target)
             break;
         case AreaKind::Word:
         case AreaKind::Channel:
+            if (a.presetsOf)
+                break; // the set-value words of its timer/counter area, placed below
             l.wordBase = m_words;
             m_words += l.count;
             break;
@@ -35,6 +39,24 @@ MemoryLayout::MemoryLayout(const Target &target)
             break;
         }
         m_areas.push_back(l);
+    }
+    // A preset area is a second name of the set values (PL110 PT/PV), element for element.
+    for (std::size_t k = 0; k < target.areas.size(); ++k) {
+        const Area &a = target.areas[k];
+        if (!a.presetsOf)
+            continue;
+        for (std::size_t j = 0; j < target.areas.size(); ++j) {
+            AreaLayout &of = m_areas[j];
+            if (target.areas[j].key != QLatin1String(a.presetsOf) || of.setBase < 0)
+                continue;
+            AreaLayout &l = m_areas[k];
+            const int skip = a.first - of.first;
+            if (skip < 0)
+                continue;
+            l.count = std::clamp(of.count - skip, 0, l.count);
+            l.wordBase = of.setBase + skip;
+            of.presetsAddressable = true;
+        }
     }
 }
 
@@ -90,6 +112,10 @@ int MemoryLayout::elementState(const Address &address) const {
         return -1;
     const AreaLayout &l = area(address.area);
     return l.stateBase + (address.index - l.first);
+}
+
+bool MemoryLayout::presetAddressable(const Address &address) const {
+    return inRange(address) && area(address.area).presetsAddressable;
 }
 
 int MemoryLayout::wordBits(const Address &address) const {

@@ -29,6 +29,7 @@ struct AreaLayout {
     int stateBase = -1; // timer/counter element state (engine side), one per element
     int wordBits = 16;
     bool retentive = false;
+    bool presetsAddressable = false; // timers/counters: an area of the program holds the set values
 };
 
 class MemoryLayout {
@@ -46,6 +47,9 @@ public:
     int word(const Address &address) const;         // value (timer/counter: current value)
     int setValueWord(const Address &address) const; // timer/counter set value
     int elementState(const Address &address) const; // timer/counter state slot
+    // Whether the program reads and writes this timer's/counter's set value as a word
+    // (Area::presetsOf): its constant preset is then loaded there, not read from the step.
+    bool presetAddressable(const Address &address) const;
     int wordBits(const Address &address) const;
 
 private:

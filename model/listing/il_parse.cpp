@@ -212,6 +212,26 @@ private:
     }
 
     void reportUnknown(const Token &token, int lineNumber) {
+        if (token.text.startsWith(QLatin1Char('['))) {
+            // PLProg's sections (seed 003 5.4 "[Init]", "[Main]", the timed interrupts of
+            // SM16/SM17): a listing is one main program, so say what to write instead.
+            QString firstScan;
+            for (const SystemDevice &d : m_target.systemDevices)
+                if (d.role == SystemRole::FirstScan)
+                    firstScan = d.device;
+            if (firstScan.isEmpty())
+                error(lineNumber, token.column,
+                      tr("Program sections such as '%1' are not supported: a listing is one "
+                         "main program, run at every scan")
+                          .arg(token.text.left(40)));
+            else
+                error(lineNumber, token.column,
+                      tr("Program sections such as '%1' are not supported: a listing is one "
+                         "main program, run at every scan; put what runs once under LD %2 (ON "
+                         "in the first scan). Interrupt programs are not supported")
+                          .arg(token.text.left(40), firstScan));
+            return;
+        }
         QString best;
         int bestDistance = 3;
         for (const InstructionSpec &s : m_target.instructions) {
@@ -458,11 +478,11 @@ private:
         if (rules.bcd && c == QLatin1Char('#'))
             return true;
         if (rules.plain) {
-            // A sign alone is an FM operator, not a number; PL110 also writes "#0".
-            const qsizetype digit = (c == QLatin1Char('-') || c == QLatin1Char('+') ||
-                                     (rules.hashPlain && c == QLatin1Char('#')))
-                                        ? 1
-                                        : 0;
+            // A sign alone is an FM operator, not a number; PL110 also writes "#0" and, with
+            // a sign, "#-1" (seed 003 4.2.20: IF VD8 == #-1).
+            qsizetype digit = rules.hashPlain && c == QLatin1Char('#') ? 1 : 0;
+            if (t.size() > digit && (t[digit] == QLatin1Char('-') || t[digit] == QLatin1Char('+')))
+                ++digit;
             return t.size() > digit && t[digit].isDigit();
         }
         return false;

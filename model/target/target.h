@@ -11,6 +11,7 @@
 #include <QString>
 #include <QStringList>
 
+#include <climits>
 #include <cstdint>
 #include <optional>
 #include <span>
@@ -19,6 +20,8 @@
 namespace rung::model {
 
 enum class Family : std::uint8_t { Vpc, Vigor, Cpm1, Pl110 };
+
+enum class ApplyFunction : std::uint8_t; // below, with the instructions
 
 // How the element numbers of an area are written.
 enum class Numbering : std::uint8_t {
@@ -51,6 +54,12 @@ struct Area {
     int bank = -1;         // areas with the same bank share element numbers (VPC t/c, CPM1 TIM/CNT)
     int wordBits = 16;     // value width for Word/Timer/Counter/Channel areas (Vigor C200+: 32)
     const char *description = nullptr; // QT_TRANSLATE_NOOP("rung::model::Target", ...)
+    // Only instructions of this function may write the area (PL110 B: its bistable coil OUTB,
+    // seed 003 4.2.3); None: any instruction that writes.
+    ApplyFunction onlyWrittenBy{}; // ApplyFunction::None
+    // The words of this area are the set values of the timer/counter area with this key,
+    // element for element (PL110 PT1 = preset of T1, PV1 of C1; seed 003 2.1.9, 2.1.11).
+    const char *presetsOf = nullptr;
     // Sub-ranges with other properties (read-only system bits inside a channel area,
     // retentive M ranges on Vigor) are separate Area entries; the parser picks the one that
     // contains the number.
@@ -83,6 +92,10 @@ enum class SystemRole : std::uint8_t {
     ScanTimeCurrent,
     ScanTimeMin,
     ScanTimeMax,
+    // TEST mode (PL110 SM0.5, seed 003 2.1.2): while this bit is ON the first
+    // SystemDevice::inputs physical inputs read the bits of the InputTestImage word.
+    InputTest,
+    InputTestImage, // PL110 SM37: bit 0 -> I1 ... bit 7 -> I8
     Other,
 };
 
@@ -95,6 +108,7 @@ struct SystemDevice {
     int unitUs = 1000;
     // The manual lets the program write it as well (VPC: drop r88 RUN to stop, raise r89 ERR).
     bool programWrites = false;
+    int inputs = 0; // InputTestImage: how many inputs, from the first, the word stands for
 };
 
 // Whether the PLC drives the device so that the program cannot write it (OP002): every role
@@ -129,6 +143,14 @@ enum class OperandKind : std::uint8_t {
 struct OperandSpec {
     OperandKind kind = OperandKind::BitSource;
     bool optional = false;
+    // Narrower rules the manual gives for this slot, checked by model::operandBreaches for
+    // `check` and the simulator alike. A constant's value, or a device's element number,
+    // from lowest to highest (PL110 SBIT bit 0..15, OUTQI Q1..Q8, II I1..I8).
+    int lowest = INT_MIN;
+    int highest = INT_MAX;
+    std::vector<int> allowedValues; // a constant must be one of these (PL110 time base)
+    const char *area = nullptr;     // a device must be of this Area::key ("Q" for OUTQI)
+    const char *name = nullptr;     // QT_TRANSLATE_NOOP("rung::model::Target", "time base")
 };
 
 // Application-instruction semantics the simulator implements (Op::Apply).
@@ -149,6 +171,14 @@ enum class ApplyFunction : std::uint8_t {
     SetBit,
     ResetBit,
     Toggle, // PL110 bistable relay coil B: each activation (rising edge) flips the bit
+    // Word logic, D = S1 op S2 (Vigor WAND/WOR/WXOR S1 S2 D; CPM1 ANDW/ORW/XORW) and
+    // D = NOT S (CPM1 COM D, Vigor CML S D).
+    AndWord,
+    OrWord,
+    XorWord,
+    Complement,
+    ToBcd,   // D = the BCD digits of S (Vigor BCD, CPM1 BCD)
+    FromBcd, // D = the value of the BCD digits of S (Vigor BIN, CPM1 BIN)
     NotSimulated,
 };
 

@@ -2,6 +2,8 @@
 
 #include <QCoreApplication>
 
+#include <tuple>
+
 // Omron SYSMAC CPM1 (seed 002): 16-bit channels written CCC.BB, BCD constants with '#',
 // instructions with Omron's function codes. The canonical spelling carries the function code
 // as SYSWIN prints it ("KEEP(11)"); the bare name is an alias.
@@ -179,6 +181,30 @@ Target makeCpm1Target() {
                      "S D"),
              "MOV", 21)
         .function = ApplyFunction::Mov;
+    // Conversion and logic instructions (W353 "Data conversion", "Logic instructions"): the
+    // words as bits; BCD(24)/BIN(23) convert between a binary value and its BCD digits.
+    const std::tuple<const char *, int, ApplyFunction, int, const char *, const char *> words[] = {
+        {"BIN", 23, ApplyFunction::FromBcd, 2,
+         QT_TRANSLATE_NOOP("rung::model::Target", "R = the value of the BCD digits of S"), "S R"},
+        {"BCD", 24, ApplyFunction::ToBcd, 2,
+         QT_TRANSLATE_NOOP("rung::model::Target", "R = S as BCD digits"), "S R"},
+        {"COM", 29, ApplyFunction::Complement, 1,
+         QT_TRANSLATE_NOOP("rung::model::Target", "Invert every bit of a channel"), "Wd"},
+        {"ANDW", 34, ApplyFunction::AndWord, 3,
+         QT_TRANSLATE_NOOP("rung::model::Target", "R = I1 AND I2, bit by bit"), "I1 I2 R"},
+        {"ORW", 35, ApplyFunction::OrWord, 3,
+         QT_TRANSLATE_NOOP("rung::model::Target", "R = I1 OR I2, bit by bit"), "I1 I2 R"},
+        {"XORW", 36, ApplyFunction::XorWord, 3,
+         QT_TRANSLATE_NOOP("rung::model::Target", "R = I1 XOR I2, bit by bit"), "I1 I2 R"}};
+    for (const auto &[name, code, function, count, summary, help] : words) {
+        std::vector<OperandSpec> operands(static_cast<std::size_t>(count),
+                                          OperandSpec{K::WordSource});
+        operands.back().kind = K::WordDest;
+        const QByteArray spelled = QByteArray(name) + '(' + QByteArray::number(code) + ')';
+        withCode(addSpec(t, spelled.constData(), Op::Apply, std::move(operands), summary, help),
+                 name, code)
+            .function = function;
+    }
     withCode(addSpec(t, "NOP(00)", Op::Nop, {},
                      QT_TRANSLATE_NOOP("rung::model::Target", "No operation")),
              "NOP", 0);

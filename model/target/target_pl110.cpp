@@ -24,8 +24,13 @@ void addContactFamily(Target &t, const char *mnemonic, const char *negatedMnemon
     n.aliases = {QString::fromLatin1(negatedAlias)};
 }
 
+// The immediate contacts read the terminals I1..I8 only (4.2.11).
 void addImmediate(Target &t, const char *mnemonic, Op op, ContactMode mode, const char *summary) {
-    addSpec(t, mnemonic, op, {{K::BitSource}}, summary, "I1..I8").mode = mode;
+    OperandSpec terminal{K::BitSource};
+    terminal.area = "I";
+    terminal.lowest = 1;
+    terminal.highest = 8;
+    addSpec(t, mnemonic, op, {terminal}, summary, "I1..I8").mode = mode;
 }
 
 void addCompares(Target &t, const char *prefix, Op op) {
@@ -69,8 +74,10 @@ Target makePl110Target() {
     addArea(t, "Q", "Q", AreaKind::Bit, 1, 256,
             QT_TRANSLATE_NOOP("rung::model::Target", "digital outputs"))
         .physical = true;
+    // A bistable relay changes state only on its own coil (4.2.3).
     addArea(t, "B", "B", AreaKind::Bit, 1, 32,
-            QT_TRANSLATE_NOOP("rung::model::Target", "bistable relays"));
+            QT_TRANSLATE_NOOP("rung::model::Target", "bistable relays"))
+        .onlyWrittenBy = ApplyFunction::Toggle;
     addArea(t, "M", "M", AreaKind::Bit, 1, 128,
             QT_TRANSLATE_NOOP("rung::model::Target", "markers"));
     // T49..T64 exist only while SM0.13 trades the counters for timers; the table keeps them so
@@ -87,7 +94,9 @@ Target makePl110Target() {
     v.retentive = true;
     v.prefixAliases = {QStringLiteral("VW")}; // the seed writes word access as VW30, SMW4
 
-    Area &sm = addArea(t, "SM", "SM", AreaKind::Word, 0, 99,
+    // SM0..SM185: the table of 2.1.2 runs to the display parameters SM176..SM185; the
+    // user-page program of 5.4 sets SMW103.0 and SMW103.1.
+    Area &sm = addArea(t, "SM", "SM", AreaKind::Word, 0, 185,
                        QT_TRANSLATE_NOOP("rung::model::Target", "special markers"));
     sm.numbering = Numbering::ChannelBit;
     sm.prefixAliases = {QStringLiteral("SMW")};
@@ -100,10 +109,14 @@ Target makePl110Target() {
     addArea(t, "AQ", "AQ", AreaKind::Word, 1, 2,
             QT_TRANSLATE_NOOP("rung::model::Target", "analog outputs"))
         .physical = true;
+    // The presets in force (2.1.9, 2.1.11): reading PT1 gives T1's preset, writing it
+    // changes it; a constant preset is loaded there when the program starts.
     addArea(t, "PT", "PT", AreaKind::Word, 1, 64,
-            QT_TRANSLATE_NOOP("rung::model::Target", "timer presets"));
+            QT_TRANSLATE_NOOP("rung::model::Target", "timer presets"))
+        .presetsOf = "T";
     addArea(t, "PV", "PV", AreaKind::Word, 1, 16,
-            QT_TRANSLATE_NOOP("rung::model::Target", "counter presets"));
+            QT_TRANSLATE_NOOP("rung::model::Target", "counter presets"))
+        .presetsOf = "C";
     addArea(t, "EEP", "EEP", AreaKind::Word, 0, 999,
             QT_TRANSLATE_NOOP("rung::model::Target", "EEPROM words"))
         .retentive = true;
@@ -126,8 +139,13 @@ Target makePl110Target() {
          QT_TRANSLATE_NOOP("rung::model::Target", "1 s clock (0.5 s ON, 0.5 s OFF)")},
         {QStringLiteral("SM0.4"), SystemRole::ScanToggle,
          QT_TRANSLATE_NOOP("rung::model::Target", "toggles every scan")},
-        {QStringLiteral("SM0.5"), SystemRole::Other,
-         QT_TRANSLATE_NOOP("rung::model::Target", "TEST: inputs are taken from SM37")},
+        // TEST (2.1.2): the program sets SM0.5 and SM37 (R/W); I1..I8 then read SM37.0..7.
+        {QStringLiteral("SM0.5"), SystemRole::InputTest,
+         QT_TRANSLATE_NOOP("rung::model::Target", "TEST: inputs are taken from SM37"), 0, true},
+        {QStringLiteral("SM37"), SystemRole::InputTestImage,
+         QT_TRANSLATE_NOOP("rung::model::Target",
+                           "inputs I1..I8 in TEST mode (bit 0 = I1), cleared at power-on"),
+         0, true, 8},
         {QStringLiteral("SM0.13"), SystemRole::Other,
          QT_TRANSLATE_NOOP("rung::model::Target", "counters C1..C16 off, timers T49..T64 on")},
         {QStringLiteral("SM6"), SystemRole::ScanTimeCurrent,
@@ -191,7 +209,12 @@ Target makePl110Target() {
     // Coils.
     addSpec(t, "OUT", Op::Out, {{K::BitDest}},
             QT_TRANSLATE_NOOP("rung::model::Target", "Output coil"), "Q/M");
-    addSpec(t, "OUTQI", Op::Out, {{K::BitDest}},
+    // QI writes the terminals Q1..Q8 only (4.2.12).
+    OperandSpec terminal{K::BitDest};
+    terminal.area = "Q";
+    terminal.lowest = 1;
+    terminal.highest = 8;
+    addSpec(t, "OUTQI", Op::Out, {terminal},
             QT_TRANSLATE_NOOP("rung::model::Target",
                               "Immediate output coil: writes the terminal at once"),
             "Q1..Q8")
@@ -201,26 +224,35 @@ Target makePl110Target() {
                              "Bistable relay coil: each activation toggles the relay"),
            "B1..B32")
         .steps = 1;
-    addBox(t, "SBIT", ApplyFunction::SetBit, {{K::WordDest}, {K::Constant, true}},
+    // SBIT / RBIT name a bit 0..15 of a word (4.2.14).
+    OperandSpec bitNumber{K::Constant, true};
+    bitNumber.lowest = 0;
+    bitNumber.highest = 15;
+    bitNumber.name = QT_TRANSLATE_NOOP("rung::model::Target", "bit number");
+    addBox(t, "SBIT", ApplyFunction::SetBit, {{K::WordDest}, bitNumber},
            QT_TRANSLATE_NOOP("rung::model::Target", "Set a bit (0..15) of a word to 1"),
            "V3 5 | V3.5 | Q1");
-    addBox(t, "RBIT", ApplyFunction::ResetBit, {{K::WordDest}, {K::Constant, true}},
+    addBox(t, "RBIT", ApplyFunction::ResetBit, {{K::WordDest}, bitNumber},
            QT_TRANSLATE_NOOP("rung::model::Target", "Reset a bit (0..15) of a word to 0"),
            "V3 5 | V3.5 | Q1");
 
     // Timers: T, preset (constant or VW/SMW/AI), optional time base in ms (10, 100, 1000).
+    // "base tempi di 10 ms, 100ms e 1s" (4.2.4): no other time base exists.
     const char *timerHelp = "T1..T64 PT [10|100|1000]";
-    addSpec(t, "TON", Op::Timer, {{K::TimerNumber}, {K::SetValue}, {K::Constant, true}},
+    OperandSpec timeBase{K::Constant, true};
+    timeBase.allowedValues = {10, 100, 1000};
+    timeBase.name = QT_TRANSLATE_NOOP("rung::model::Target", "time base (ms)");
+    addSpec(t, "TON", Op::Timer, {{K::TimerNumber}, {K::SetValue}, timeBase},
             QT_TRANSLATE_NOOP("rung::model::Target",
                               "On-delay timer: T ON once the time reaches PT; OFF resets"),
             timerHelp);
-    addSpec(t, "TOFF", Op::Timer, {{K::TimerNumber}, {K::SetValue}, {K::Constant, true}},
+    addSpec(t, "TOFF", Op::Timer, {{K::TimerNumber}, {K::SetValue}, timeBase},
             QT_TRANSLATE_NOOP("rung::model::Target",
                               "Off-delay timer: T ON at once, OFF when PT has elapsed after OFF"),
             timerHelp)
         .timerMode = TimerMode::OffDelay;
     InstructionSpec &tonr =
-        addSpec(t, "TONR", Op::Timer, {{K::TimerNumber}, {K::SetValue}, {K::Constant, true}},
+        addSpec(t, "TONR", Op::Timer, {{K::TimerNumber}, {K::SetValue}, timeBase},
                 QT_TRANSLATE_NOOP("rung::model::Target",
                                   "Accumulating on-delay timer: keeps its time while OFF"),
                 timerHelp);

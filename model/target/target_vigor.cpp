@@ -325,6 +325,39 @@ Target makeVigorTarget() {
                        QT_TRANSLATE_NOOP("rung::model::Target", "D = D + 1"), "D"));
     in.push_back(apply("DEC", ApplyFunction::Dec, {dst}, 3,
                        QT_TRANSLATE_NOOP("rung::model::Target", "D = D - 1"), "D"));
+    // Word logic and BCD conversion (seed 001's programs: WAND D104 HFF D104).
+    in.push_back(apply("WAND", ApplyFunction::AndWord, {src, src, dst}, 7,
+                       QT_TRANSLATE_NOOP("rung::model::Target", "D = S1 AND S2, bit by bit"),
+                       "S1 S2 D"));
+    in.push_back(apply("WOR", ApplyFunction::OrWord, {src, src, dst}, 7,
+                       QT_TRANSLATE_NOOP("rung::model::Target", "D = S1 OR S2, bit by bit"),
+                       "S1 S2 D"));
+    in.push_back(apply("WXOR", ApplyFunction::XorWord, {src, src, dst}, 7,
+                       QT_TRANSLATE_NOOP("rung::model::Target", "D = S1 XOR S2, bit by bit"),
+                       "S1 S2 D"));
+    in.push_back(apply("CML", ApplyFunction::Complement, {src, dst}, 5,
+                       QT_TRANSLATE_NOOP("rung::model::Target", "D = every bit of S inverted"),
+                       "S D"));
+    in.push_back(apply("BCD", ApplyFunction::ToBcd, {src, dst}, 5,
+                       QT_TRANSLATE_NOOP("rung::model::Target", "D = S as BCD digits"), "S D"));
+    in.push_back(apply(
+        "BIN", ApplyFunction::FromBcd, {src, dst}, 5,
+        QT_TRANSLATE_NOOP("rung::model::Target", "D = the value of the BCD digits S"), "S D"));
+    // Special modules and I/O refresh: accepted, not simulated (check warns, SIM100).
+    in.push_back(apply(
+        "FROM", ApplyFunction::NotSimulated, {src, src, dst, {K::Count}}, 9,
+        QT_TRANSLATE_NOOP("rung::model::Target", "Read n words of special module m1, from m2"),
+        "m1 m2 D n"));
+    in.push_back(
+        apply("TO", ApplyFunction::NotSimulated, {src, src, src, {K::Count}}, 9,
+              QT_TRANSLATE_NOOP("rung::model::Target", "Write n words to special module m1, at m2"),
+              "m1 m2 S n"));
+    in.push_back(apply("CCD", ApplyFunction::NotSimulated, {src, dst, {K::Count}}, 7,
+                       QT_TRANSLATE_NOOP("rung::model::Target", "Sum and parity check of n bytes"),
+                       "S D n"));
+    in.push_back(apply("REF", ApplyFunction::NotSimulated, {{K::BitSource}, {K::Count}}, 5,
+                       QT_TRANSLATE_NOOP("rung::model::Target", "Refresh n inputs or outputs now"),
+                       "D n"));
     // Communication instructions of seed 001: known to the editor, not simulated.
     for (const char *name : {"SWAP", "ASCI", "HEX", "RS", "LINK", "MBUS", "VRRD"})
         in.push_back(apply(

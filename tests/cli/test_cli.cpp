@@ -52,8 +52,8 @@ TEST(CliCheck, PrintsOneLinePerFindingWithPlaceSeverityAndCode) {
     EXPECT_EQ(
         r.out,
         QStringLiteral(
-            "%1:4:1: error: 010.00 is driven twice (\"Oper duplication\"); the first is on line 2 "
-            "[DC001]\n")
+            "%1:4:1: error: 010.00 is driven twice; a coil may be driven only once (the first "
+            "is on line 2) [DC001]\n")
             .arg(file));
 }
 
@@ -566,4 +566,112 @@ TEST(CliLanguage, TheOptionIsTakenOutOfTheArgumentsWhereverItIs) {
         EXPECT_FALSE(rung::app::takeLanguageOption(&args, &language, &error));
         EXPECT_EQ(error, QStringLiteral("--lang must be en, hu or it"));
     }
+}
+
+// docs/cli.md: "an input with errors writes nothing". The errors are every finding of `check`,
+// not only the syntax: an empty file (no END) and a doubly driven output parse and convert, yet
+// `check` rejects them, so `convert` must not write them.
+TEST(CliConvert, WhatCheckRejectsIsNotWritten) {
+    QTemporaryDir dir;
+    const QString empty = write(dir, QStringLiteral("empty.il"), "");
+    const QString dup = write(dir, QStringLiteral("dup.il"),
+                              "LD 000.00\nOUT 010.00\nLD 000.01\nOUT 010.00\nEND(01)\n");
+    for (const QString &file : {empty, dup}) {
+        const CliRun check = cli(
+            {QStringLiteral("check"), file, QStringLiteral("--target"), QStringLiteral("cpm1")});
+        ASSERT_EQ(check.code, 1) << file.toStdString();
+        for (const char *to : {"il", "ladder", "project"}) {
+            const QString out = dir.filePath(QStringLiteral("out.") + QLatin1String(to));
+            const CliRun r = cli({QStringLiteral("convert"), file, QStringLiteral("--target"),
+                                  QStringLiteral("cpm1"), QStringLiteral("--to"), QLatin1String(to),
+                                  QStringLiteral("-o"), out});
+            EXPECT_EQ(r.code, 1) << file.toStdString() << " --to " << to;
+            EXPECT_FALSE(QFile::exists(out)) << file.toStdString() << " --to " << to;
+            // Every error line of `check` is on stderr, then the reason nothing was written.
+            for (const QString &line : check.out.split(u'\n', Qt::SkipEmptyParts)) {
+                if (line.contains(QStringLiteral(": error: "))) {
+                    EXPECT_TRUE(r.err.contains(line)) << line.toStdString();
+                }
+            }
+            EXPECT_TRUE(r.err.contains(QStringLiteral("nothing written")));
+        }
+        // Nothing on stdout either.
+        const CliRun toStdout =
+            cli({QStringLiteral("convert"), file, QStringLiteral("--target"),
+                 QStringLiteral("cpm1"), QStringLiteral("--to"), QStringLiteral("il")});
+        EXPECT_EQ(toStdout.code, 1);
+        EXPECT_TRUE(toStdout.out.isEmpty()) << toStdout.out.toStdString();
+    }
+}
+
+TEST(CliConvert, ForceWritesAProgramWithCheckErrorsAndStillReportsThem) {
+    QTemporaryDir dir;
+    const QString dup = write(dir, QStringLiteral("dup.il"),
+                              "LD 000.00\nOUT 010.00\nLD 000.01\nOUT 010.00\nEND(01)\n");
+    const QString out = dir.filePath(QStringLiteral("dup.rung"));
+    const CliRun r = cli({QStringLiteral("convert"), dup, QStringLiteral("--target"),
+                          QStringLiteral("cpm1"), QStringLiteral("--to"), QStringLiteral("project"),
+                          QStringLiteral("-o"), out, QStringLiteral("--force")});
+    EXPECT_EQ(r.code, 1); // the program written still has errors
+    EXPECT_TRUE(r.err.contains(QStringLiteral("dup.il:4:1: error:"))) << r.err.toStdString();
+    EXPECT_TRUE(r.err.contains(QStringLiteral("[DC001]")));
+    ASSERT_TRUE(QFile::exists(out));
+    // What was written is the program as typed: converting it back gives the same listing.
+    const CliRun back = cli({QStringLiteral("convert"), out, QStringLiteral("--to"),
+                             QStringLiteral("il"), QStringLiteral("--force")});
+    EXPECT_EQ(back.out, QStringLiteral("LD 000.00\nOUT 010.00\nLD 000.01\nOUT 010.00\nEND(01)\n"));
+}
+
+TEST(CliConvert, ForceNeverWritesATextThatDoesNotParse) {
+    QTemporaryDir dir;
+    const QString bad = write(dir, QStringLiteral("bad.il"), "LD X0\nFOO X1\nOUT Y0\nEND\n");
+    const QString out = dir.filePath(QStringLiteral("bad.ladder"));
+    const CliRun r = cli({QStringLiteral("convert"), bad, QStringLiteral("--target"),
+                          QStringLiteral("vigor"), QStringLiteral("--to"), QStringLiteral("ladder"),
+                          QStringLiteral("-o"), out, QStringLiteral("--force")});
+    EXPECT_EQ(r.code, 1);
+    EXPECT_FALSE(QFile::exists(out)); // written, the ladder would have lost FOO X1
+    EXPECT_TRUE(r.err.contains(QStringLiteral("bad.il:2:1: error:"))) << r.err.toStdString();
+}
+
+// Issue 14: what the simulator cannot model is named at `check` time, by the code and words
+// the simulator uses when a simulation starts, and it is a warning (exit 0).
+TEST(CliCheck, WhatTheSimulatorDoesNotModelIsAWarningOfCheck) {
+    QTemporaryDir dir;
+    const QString file = write(dir, QStringLiteral("pid.il"),
+                               "; target: pl110\nLD I1\nPID 1 2 3\nLD I1\nOUT Q1\nEND\n");
+    const CliRun r = cli({QStringLiteral("check"), file});
+    EXPECT_EQ(r.code, 0) << r.out.toStdString();
+    EXPECT_EQ(r.out, QStringLiteral("%1:3:1: warning: PID is not simulated: it does nothing in "
+                                    "the simulator [SIM100]\n")
+                         .arg(file));
+}
+
+TEST(CliCheck, AnOperandTheSimulatorRefusesIsACheckErrorAtItsPlace) {
+    QTemporaryDir dir;
+    const QString file = write(dir, QStringLiteral("qi.il"),
+                               "; target: pl110\nLD I1\nOUTQI Q9\nLD I2\nTON T1 5 50\nEND\n");
+    const CliRun r = cli({QStringLiteral("check"), file});
+    EXPECT_EQ(r.code, 1);
+    EXPECT_EQ(r.out, QStringLiteral("%1:3:7: error: OUTQI takes only Q1..Q8, not Q9 [OP005]\n"
+                                    "%1:5:1: error: the time base (ms) of TON must be 10, 100 or "
+                                    "1000, not 50 [OP005]\n")
+                         .arg(file));
+}
+
+// Issue 14: a CPM1 user reads the CPM1's words - AND LD, not ANB - and the duplicate-coil
+// message is not the VPC console's "Oper duplication".
+TEST(CliCheck, MessagesSpeakTheFamilysLanguage) {
+    QTemporaryDir dir;
+    const QString file = write(dir, QStringLiteral("st.il"),
+                               "LD 000.00\nLD 000.01\nLD 000.02\nAND LD\nAND LD\nOUT 010.00\n"
+                               "LD 000.03\nOUT 010.00\nEND(01)\n");
+    const CliRun r =
+        cli({QStringLiteral("check"), file, QStringLiteral("--target"), QStringLiteral("cpm1")});
+    EXPECT_TRUE(r.out.contains(QStringLiteral("Stacked AND LD: combine each block with AND LD")))
+        << r.out.toStdString();
+    EXPECT_FALSE(r.out.contains(QStringLiteral("ANB")));
+    EXPECT_FALSE(r.out.contains(QStringLiteral("ORB")));
+    EXPECT_FALSE(r.out.contains(QStringLiteral("Oper duplication")));
+    EXPECT_TRUE(r.out.contains(QStringLiteral("[DC001]")));
 }

@@ -62,7 +62,9 @@ private:
     void pool(bool physical, bool writable, int count, QStringList *out) {
         for (int i = 0; i < static_cast<int>(m_t.areas.size()); ++i) {
             const Area &a = m_t.area(i);
-            if (a.physical != physical || a.writable != writable || a.system)
+            // B (PL110) is written only by its own coil OUTB, not by OUT (OP005).
+            if (a.physical != physical || a.writable != writable || a.system ||
+                a.onlyWrittenBy != ApplyFunction::None)
                 continue;
             if (a.kind != AreaKind::Bit && a.kind != AreaKind::Channel)
                 continue;

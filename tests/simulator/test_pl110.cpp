@@ -228,3 +228,227 @@ TEST(SimulationStart, ProgramWithACheckErrorDoesNotStart) {
     ASSERT_TRUE(good.ok());
     EXPECT_TRUE(prepareProgram(good.list).ok());
 }
+
+// seed 003 4.2.4: TONR "consente di accumulare il tempo per piu periodi di attivazione della
+// bobina" - every ON period counts whole, also one of a single scan.
+TEST(Pl110Timer, TonrAccumulatesOneScanActivations) {
+    Pl110 s("LD I1\nTONR T1 100 10\nLD I1\nTON T2 100 10\nEND");
+    ASSERT_TRUE(s.result.ok());
+    s.engine->setPeriodMs(10);
+    s.pulses("I1", 7); // seven ON periods of one 10 ms scan each
+    EXPECT_EQ(s.value("T1"), 7);
+    EXPECT_EQ(s.value("T2"), 0); // TON restarts with every activation
+}
+
+TEST(Pl110Timer, TonrCountsTheWholeOfEveryOnPeriod) {
+    Pl110 s("LD I1\nTONR T1 100 10\nEND");
+    ASSERT_TRUE(s.result.ok());
+    s.engine->setPeriodMs(10);
+    for (int period = 0; period < 3; ++period) { // three periods of 4 ON scans, 2 OFF
+        s.in("I1", true);
+        s.engine->runScans(4);
+        s.in("I1", false);
+        s.engine->runScans(2);
+    }
+    EXPECT_EQ(s.value("T1"), 12); // 3 x 40 ms in 10 ms units: no first scan lost
+}
+
+// seed 003 2.1.9 / 2.1.11: PT and PV are where the presets are kept.
+TEST(Pl110Presets, PtAndPvReadThePresetsInForce) {
+    Pl110 s("LD SM0.0\nMOV PT3 V0\nLD SM0.0\nMOV PV2 V1\nLD I1\nTON T3 25 100\n"
+            "LD I1\nLD I2\nLD I3\nMUP C2 7\nLD I1\nTON T4 V10 100\nLD SM0.0\nMOV PT4 V2\nEND");
+    ASSERT_TRUE(s.result.ok());
+    s.engine->writeWord(s.at("V10"), 12);
+    s.engine->scan();
+    // Read before the boxes run in this scan: the constant presets are there from the start.
+    EXPECT_EQ(s.value("V0"), 25);
+    EXPECT_EQ(s.value("V1"), 7);
+    EXPECT_EQ(s.value("PT3"), 25);
+    EXPECT_EQ(s.value("PV2"), 7);
+    EXPECT_EQ(s.value("V2"), 12); // an indirect preset: the value it read
+    EXPECT_EQ(s.value("PT1"), 0); // no timer T1: nothing is preset
+}
+
+TEST(Pl110Presets, WritingPvChangesTheCounterPreset) {
+    Pl110 s("LD I4\nMOV 2 PV1\nLD I1\nLD I2\nLD I3\nMUP C1 5\nEND");
+    ASSERT_TRUE(s.result.ok());
+    s.pulses("I1", 2);
+    EXPECT_EQ(s.value("C1"), 2);
+    EXPECT_FALSE(s.bit("C1")); // 2 < 5
+    s.in("I4", true);
+    s.engine->scan();
+    EXPECT_TRUE(s.bit("C1")); // 2 >= the new preset 2
+    EXPECT_EQ(s.value("PV1"), 2);
+    // A power cycle loads the program's preset again.
+    s.in("I4", false);
+    s.engine->powerCycle();
+    s.engine->scan();
+    EXPECT_EQ(s.value("PV1"), 5);
+}
+
+// `check` and the simulator read one set of operand rules (model::operandBreaches): what the
+// simulator refuses, check reports as OP005 on the same line with the same words.
+TEST(Pl110Operands, CheckAndSimulatorRefuseTheSameOperands) {
+    struct Case {
+        const char *program;
+        int line;
+        const char *says;
+    };
+    const Case cases[] = {
+        // 4.2.4: time bases of 10 ms, 100 ms and 1 s only
+        {"LD I1\nTON T1 5 100\nLD I2\nTOFF T2 5 50\nEND", 4, "10, 100 or 1000, not 50"},
+        {"LD I1\nTONR T1 5 1\nEND", 2, "10, 100 or 1000, not 1"},
+        // 4.2.14: SBIT / RBIT name bit 0..15
+        {"LD I1\nSBIT V3 16\nEND", 2, "from 0 to 15, not 16"},
+        {"LD I1\nRBIT V3 -1\nEND", 2, "from 0 to 15, not -1"},
+        // 4.2.12: QI on the terminals Q1..Q8 only
+        {"LD I1\nOUTQI Q9\nEND", 2, "OUTQI takes only Q1..Q8, not Q9"},
+        {"LD I1\nOUTQI M1\nEND", 2, "OUTQI takes only Q1..Q8, not M1"},
+        // 4.2.11: II reads the terminals I1..I8 only
+        {"LDII I9\nOUT Q1\nEND", 1, "LDII takes only I1..I8, not I9"},
+        // 4.2.3: the bistable relay changes only on its own coil
+        {"LD I1\nOUT B1\nEND", 2, "OUT cannot write B1"},
+        {"LD I1\nSBIT B2\nEND", 2, "SBIT cannot write B2"},
+        {"LD I1\nMOV 1 B1\nEND", 2, "are written only by OUTB"},
+    };
+    for (const Case &c : cases) {
+        SCOPED_TRACE(c.program);
+        Pl110 s(c.program);
+        ASSERT_TRUE(s.parsed.ok()) << s.parsed.errors.front().message.toStdString();
+        ASSERT_FALSE(s.result.ok());
+        ASSERT_EQ(s.result.diagnostics.size(), 1u) << "one message, not the compiler's too";
+        const model::Diagnostic &sim = s.result.diagnostics.front();
+        EXPECT_EQ(sim.location.line, c.line);
+        EXPECT_TRUE(sim.message.contains(QLatin1String(c.says))) << sim.message.toStdString();
+
+        std::vector<model::Diagnostic> op005;
+        for (const model::Diagnostic &d : model::checkList(s.parsed.list, {}))
+            if (d.code == QLatin1String("OP005"))
+                op005.push_back(d);
+        ASSERT_EQ(op005.size(), 1u);
+        EXPECT_EQ(op005.front().severity, model::Severity::Error);
+        EXPECT_EQ(op005.front().location.line, c.line);
+        EXPECT_EQ(op005.front().message, sim.message);
+    }
+    // What the manual allows passes both.
+    for (const char *good : {"LD I1\nTON T1 5 10\nLD I1\nTOFF T2 5 1000\nEND",
+                             "LD I1\nSBIT V3 15\nLD I1\nRBIT V3 0\nEND", "LD I1\nOUTQI Q8\nEND",
+                             "LDII I8\nOUT Q1\nEND", "LD I1\nOUTB B32\nLD B32\nOUT Q1\nEND"}) {
+        SCOPED_TRACE(good);
+        Pl110 s(good);
+        ASSERT_TRUE(s.parsed.ok());
+        EXPECT_TRUE(s.result.ok());
+        for (const model::Diagnostic &d : model::checkList(s.parsed.list, {}))
+            EXPECT_NE(d.code, QLatin1String("OP005")) << d.message.toStdString();
+    }
+}
+
+// seed 003 2.1.2 lists the special markers up to SM185; 5.4's user-page program enables
+// pages 17 and 18 with SMW103.0 and SMW103.1 in its initialisation code.
+TEST(Pl110SpecialMarkers, TheWholeDocumentedRangeIsAddressable) {
+    Pl110 s("LD SM0.1\nSBIT SMW103 0\nLD SM0.1\nSBIT SMW103 1\nLD SM0.0\nMOV SMW105 SM185\n"
+            "LD SM0.0\nMOV 7 SMW104\nEND");
+    ASSERT_TRUE(s.parsed.ok()) << s.parsed.errors.front().message.toStdString();
+    ASSERT_TRUE(s.result.ok());
+    s.engine->writeWord(s.at("SM105"), 17);
+    s.engine->scan();
+    EXPECT_EQ(s.value("SM103"), 3); // pages 17 and 18 enabled
+    EXPECT_EQ(s.value("SM104"), 7);
+    EXPECT_EQ(s.value("SM185"), 17);
+    const model::ParseResult beyond =
+        model::parseInstructionList(s.target, QStringLiteral("LD SM0.0\nMOV 1 SM186\nEND"));
+    EXPECT_FALSE(beyond.ok());
+}
+
+// PLProg's [Init] section (5.4) and the timed interrupts (SM16/SM17) are not part of a
+// listing: a clear error says so and what to write instead, not "unknown instruction".
+TEST(Pl110Sections, InitSectionIsAClearNotSupportedError) {
+    const model::Target &t = model::Target::get(model::Family::Pl110);
+    const model::ParseResult r = model::parseInstructionList(
+        t, QStringLiteral("[Init]\nLD SM0.0\nSBIT SMW103 0\n[Main]\nLD I1\nOUT Q1\nEND\n"));
+    ASSERT_EQ(r.errors.size(), 2u);
+    EXPECT_EQ(r.errors[0].line, 1);
+    EXPECT_EQ(r.errors[1].line, 4);
+    EXPECT_TRUE(r.errors[0].message.contains(QStringLiteral("'[Init]' are not supported")))
+        << r.errors[0].message.toStdString();
+    EXPECT_TRUE(r.errors[0].message.contains(QStringLiteral("LD SM0.1")));
+}
+
+// seed 003 4.2.5: PV "viene confrontato con il valore corrente al termine di ogni ciclo del
+// programma": a contact after the box sees the bit of the previous cycle, and a write to C
+// later in the cycle decides the bit.
+TEST(Pl110Counter, TheCountBitIsComparedAtTheEndOfTheCycle) {
+    Pl110 s("LD I1\nLD I2\nLD I3\nMUP C1 2\nLD C1\nOUT Q1\nLD I4\nMOV 0 C1\nEND");
+    ASSERT_TRUE(s.result.ok());
+    s.pulses("I1", 1);
+    s.in("I1", true);
+    s.engine->scan(); // the second count: C1 = 2 >= PV at the end of this cycle
+    EXPECT_EQ(s.value("C1"), 2);
+    EXPECT_TRUE(s.bit("C1"));
+    EXPECT_FALSE(s.bit("Q1")); // LD C1 ran before the compare
+    s.engine->scan();
+    EXPECT_TRUE(s.bit("Q1"));
+    s.in("I4", true); // MOV 0 C1 after the box: the compare sees 0
+    s.engine->scan();
+    EXPECT_EQ(s.value("C1"), 0);
+    EXPECT_FALSE(s.bit("C1"));
+    EXPECT_TRUE(s.bit("Q1")); // still the previous cycle's bit
+}
+
+TEST(Pl110Counter, MdownIsOffWhileResetIsOnAndOnAtZero) {
+    Pl110 s("LD I1\nLD I2\nLD I3\nMDOWN C1 2\nEND");
+    ASSERT_TRUE(s.result.ok());
+    s.in("I3", true);
+    s.engine->scan();
+    EXPECT_EQ(s.value("C1"), 2);
+    EXPECT_FALSE(s.bit("C1"));
+    s.in("I3", false);
+    s.pulses("I2", 2);
+    EXPECT_EQ(s.value("C1"), 0);
+    EXPECT_TRUE(s.bit("C1"));
+    s.in("I3", true);
+    s.engine->scan();
+    EXPECT_FALSE(s.bit("C1"));
+}
+
+// seed 003 2.1.2: SM0.5 TEST "la lettura degli ingressi digitali viene disabilitata. Lo stato
+// degli ingressi viene prelevato dalle word SM37" (SM37.0 -> I1, SM37.7 -> I8).
+TEST(Pl110TestMode, InputsComeFromSm37WhileSm05IsOn) {
+    Pl110 s("LD I1\nOUT Q1\nLD I8\nOUT Q8\nLD I9\nOUT Q9\nLD M1\nOUT SM0.5\nEND");
+    ASSERT_TRUE(s.result.ok());
+    for (const model::Diagnostic &d : model::checkList(s.parsed.list, {}))
+        EXPECT_NE(d.severity, model::Severity::Error) << d.message.toStdString(); // R/W bits
+    s.in("I1", true);
+    s.in("I9", true);
+    s.engine->writeWord(s.at("SM37"), 0x80); // I8 only
+    s.engine->scan();
+    EXPECT_TRUE(s.bit("Q1")); // SM0.5 still OFF: the terminals
+    EXPECT_FALSE(s.bit("Q8"));
+    s.in("M1", true);
+    s.engine->scan(); // SM0.5 is set at the end of this scan
+    s.engine->scan();
+    EXPECT_FALSE(s.bit("Q1")); // I1 is ON at the terminal, OFF in SM37
+    EXPECT_TRUE(s.bit("Q8"));
+    EXPECT_TRUE(s.bit("Q9")); // beyond I8 the terminals still count
+    s.in("M1", false);
+    s.engine->scan();
+    s.engine->scan();
+    EXPECT_TRUE(s.bit("Q1"));
+    EXPECT_FALSE(s.bit("Q8"));
+}
+
+// seed 003 4.2.20's positioning example compares with a signed constant, "IF VD8 == #-1"
+// (on a single word here: double words are not modelled yet, docs/targets.md).
+TEST(Pl110Contacts, IfComparesWithASignedHashConstant) {
+    Pl110 s("LD= V8 #-1\nOUT Q4\nLD= V8 1\nOUT Q3\nEND");
+    ASSERT_TRUE(s.parsed.ok()) << s.parsed.errors.front().message.toStdString();
+    ASSERT_TRUE(s.result.ok());
+    s.engine->writeWord(s.at("V8"), -1);
+    s.engine->scan();
+    EXPECT_TRUE(s.bit("Q4"));
+    EXPECT_FALSE(s.bit("Q3"));
+    s.engine->writeWord(s.at("V8"), 1);
+    s.engine->scan();
+    EXPECT_FALSE(s.bit("Q4"));
+    EXPECT_TRUE(s.bit("Q3"));
+}

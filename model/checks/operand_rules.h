@@ -1,0 +1,26 @@
+#pragma once
+
+// What `check` and the simulator's compiler must say alike. The operand rules of the
+// instruction tables beyond the area and kind of an operand
+// (OperandSpec::lowest/highest/allowedValues/area, Area::onlyWrittenBy): the one place both
+// `check` (OP005) and the simulator's compiler read them, so that they refuse the same
+// operands with the same words.
+
+#include "model/listing/il.h"
+
+#include <vector>
+
+namespace rung::model {
+
+struct OperandBreach {
+    int operand = 0; // index in Instruction::operands
+    QString message; // translated, names the instruction, the operand and the rule
+};
+
+std::vector<OperandBreach> operandBreaches(const Target &target, const Instruction &ins);
+
+// "PID is not simulated: it does nothing in the simulator" (ApplyFunction::NotSimulated): the
+// warning SIM100 that `check` gives and the simulator gives again when a simulation starts.
+QString notSimulatedMessage(const InstructionSpec &spec);
+
+} // namespace rung::model
