@@ -310,7 +310,7 @@ Kilépési kód: 0 nincs hiba, 1 a programban hiba van, 2 használati vagy I/O h
         <translation>&amp;Szerkesztés</translation>
     </message>
     <message>
-        <location line="+31"/>
+        <location line="+32"/>
         <source>Normally &amp;Open Contact</source>
         <translation>&amp;Záró érintkező</translation>
     </message>
@@ -333,6 +333,21 @@ Kilépési kód: 0 nincs hiba, 1 a programban hiba van, 2 használati vagy I/O h
         <location line="+2"/>
         <source>&amp;Falling-Edge Contact</source>
         <translation>&amp;Lefutó él érintkező</translation>
+    </message>
+    <message>
+        <location line="+2"/>
+        <source>Parall&amp;el Normally Closed Contact</source>
+        <translation>Párhuzamos n&amp;yitó érintkező</translation>
+    </message>
+    <message>
+        <location line="+2"/>
+        <source>Parallel Ri&amp;sing-Edge Contact</source>
+        <translation>Pár&amp;huzamos felfutó él érintkező</translation>
+    </message>
+    <message>
+        <location line="+2"/>
+        <source>Parallel Fallin&amp;g-Edge Contact</source>
+        <translation>Párhuzamos lefutó él érint&amp;kező</translation>
     </message>
     <message>
         <location line="+2"/>
@@ -360,7 +375,7 @@ Kilépési kód: 0 nincs hiba, 1 a programban hiba van, 2 használati vagy I/O h
         <translation>Elem el&amp;helyezése</translation>
     </message>
     <message>
-        <location line="+48"/>
+        <location line="+56"/>
         <source>&amp;Import Symbols (CSV)...</source>
         <translation>Szimbólumok im&amp;portálása (CSV)...</translation>
     </message>
@@ -405,7 +420,7 @@ Kilépési kód: 0 nincs hiba, 1 a programban hiba van, 2 használati vagy I/O h
         <translation>&amp;Mégis</translation>
     </message>
     <message>
-        <location line="-163"/>
+        <location line="-171"/>
         <source>Select</source>
         <translation>Kijelölés</translation>
     </message>
@@ -415,17 +430,18 @@ Kilépési kód: 0 nincs hiba, 1 a programban hiba van, 2 használati vagy I/O h
         <translation>Kijelölés (Esc)</translation>
     </message>
     <message>
-        <location line="+13"/>
+        <location line="+15"/>
         <source>%1 (%2): click the cells to place it</source>
         <translation>%1 (%2): kattintson a cellákra az elhelyezéshez</translation>
     </message>
     <message>
         <location line="+9"/>
+        <location line="+10"/>
         <source>%1: click a cell to place it; Esc or a right click ends</source>
         <translation>%1: kattintson egy cellára az elhelyezéshez; Esc vagy jobb kattintás befejezi</translation>
     </message>
     <message>
-        <location line="+15"/>
+        <location line="+11"/>
         <source>Cu&amp;t Rung</source>
         <translation>Létrafok k&amp;ivágása</translation>
     </message>
@@ -466,7 +482,7 @@ Kilépési kód: 0 nincs hiba, 1 a programban hiba van, 2 használati vagy I/O h
     </message>
     <message>
         <location line="+1"/>
-        <location filename="../app/gui/main_window_tools.cpp" line="+235"/>
+        <location filename="../app/gui/main_window_tools.cpp" line="+238"/>
         <source>CSV files (*.csv)</source>
         <translation>CSV-fájlok (*.csv)</translation>
     </message>
@@ -618,13 +634,13 @@ Létradiagram- és utasításlista-szerkesztő VPC, Vigor, CPM1 és PL110 PLC-kh
     </message>
     <message>
         <location line="+1"/>
-        <location line="+54"/>
+        <location line="+56"/>
         <location filename="../app/gui/main_window_files.cpp" line="+486"/>
         <source>Untitled</source>
         <translation>Névtelen</translation>
     </message>
     <message numerus="yes">
-        <location line="-52"/>
+        <location line="-54"/>
         <source>%n rung(s)</source>
         <translation>
             <numerusform>%n létrafok</numerusform>
@@ -638,7 +654,7 @@ Létradiagram- és utasításlista-szerkesztő VPC, Vigor, CPM1 és PL110 PLC-kh
         </translation>
     </message>
     <message>
-        <location line="+19"/>
+        <location line="+21"/>
         <source>The instruction list has %1: line %2: %3. The ladder shows the last valid program.</source>
         <translation>Az utasításlistában %1 van: %2. sor: %3. A létradiagram az utolsó érvényes programot mutatja.</translation>
     </message>
@@ -841,7 +857,7 @@ Létradiagram- és utasításlista-szerkesztő VPC, Vigor, CPM1 és PL110 PLC-kh
         <translation>A példa nem nyitható meg</translation>
     </message>
     <message>
-        <location filename="../app/gui/main_window_tools.cpp" line="-167"/>
+        <location filename="../app/gui/main_window_tools.cpp" line="-169"/>
         <source>Cut rungs</source>
         <translation>Létrafokok kivágása</translation>
     </message>
@@ -888,7 +904,7 @@ Létradiagram- és utasításlista-szerkesztő VPC, Vigor, CPM1 és PL110 PLC-kh
         <translation>Operandus:</translation>
     </message>
     <message>
-        <location line="+28"/>
+        <location line="+30"/>
         <location line="+3"/>
         <location line="+7"/>
         <source>Replace Device</source>
@@ -1028,12 +1044,12 @@ Létradiagram- és utasításlista-szerkesztő VPC, Vigor, CPM1 és PL110 PLC-kh
 <context>
     <name>rung::editor::Document</name>
     <message>
-        <location filename="../editor/document.cpp" line="+42"/>
+        <location filename="../editor/document.cpp" line="+44"/>
         <source>Edit symbols</source>
         <translation>Szimbólumok szerkesztése</translation>
     </message>
     <message>
-        <location line="+108"/>
+        <location line="+122"/>
         <source>Insert rung</source>
         <translation>Létrafok beszúrása</translation>
     </message>
@@ -1050,15 +1066,30 @@ Létradiagram- és utasításlista-szerkesztő VPC, Vigor, CPM1 és PL110 PLC-kh
         </translation>
     </message>
     <message>
-        <location line="+64"/>
+        <location line="+45"/>
+        <source>This line stood for a rung of another program: delete the line or undo the paste</source>
+        <translation>Ez a sor egy másik program létrafokát jelölte: törölje a sort, vagy vonja vissza a beillesztést</translation>
+    </message>
+    <message>
+        <location line="+54"/>
         <source>Edit instruction list</source>
         <translation>Utasításlista szerkesztése</translation>
+    </message>
+    <message>
+        <location line="+53"/>
+        <source>it has nothing to list yet</source>
+        <translation>még nincs benne semmi, ami a listába kerülhetne</translation>
+    </message>
+    <message>
+        <location line="+3"/>
+        <source>Rung %1 is not in the list: %2. Edit it in the ladder; this line keeps its place.</source>
+        <translation>A(z) %1. létrafok nincs a listában: %2. A létradiagramon szerkeszthető; ez a sor őrzi a helyét.</translation>
     </message>
 </context>
 <context>
     <name>rung::editor::IlEditor</name>
     <message>
-        <location filename="../editor/il_editor.cpp" line="+232"/>
+        <location filename="../editor/il_editor.cpp" line="+247"/>
         <source>Instruction list</source>
         <translation>Utasításlista</translation>
     </message>
@@ -1066,7 +1097,7 @@ Létradiagram- és utasításlista-szerkesztő VPC, Vigor, CPM1 és PL110 PLC-kh
 <context>
     <name>rung::editor::IlLexer</name>
     <message>
-        <location line="-174"/>
+        <location line="-187"/>
         <source>Default</source>
         <translation>Alapértelmezett</translation>
     </message>
@@ -1099,6 +1130,11 @@ Létradiagram- és utasításlista-szerkesztő VPC, Vigor, CPM1 és PL110 PLC-kh
         <location line="+2"/>
         <source>Unknown word</source>
         <translation>Ismeretlen szó</translation>
+    </message>
+    <message>
+        <location line="+2"/>
+        <source>Rung not in the list</source>
+        <translation>A listában nem szereplő létrafok</translation>
     </message>
 </context>
 <context>
@@ -1462,7 +1498,7 @@ Létradiagram- és utasításlista-szerkesztő VPC, Vigor, CPM1 és PL110 PLC-kh
 <context>
     <name>rung::model::Checks</name>
     <message>
-        <location filename="../model/checks/checks_ladder.cpp" line="+70"/>
+        <location filename="../model/checks/checks_ladder.cpp" line="+71"/>
         <source>Reverse current: power would cross an element right to left to reach row %1</source>
         <translation>Visszáram: az áram jobbról balra haladna át egy elemen, hogy elérje a(z) %1. sort</translation>
     </message>
@@ -1482,12 +1518,18 @@ Létradiagram- és utasításlista-szerkesztő VPC, Vigor, CPM1 és PL110 PLC-kh
         <translation>%1 feltétel nélküli: közvetlenül a bal oldali gyűjtősínre van kötve</translation>
     </message>
     <message>
-        <location line="+15"/>
-        <source>This contact is not on any path from the left rail to an output</source>
-        <translation>Ez az érintkező nincs rajta egyetlen áramúton sem a bal oldali gyűjtősíntől egy kimenetig</translation>
+        <location line="+20"/>
+        <source>%1 (row %2, column %3) is not on any path from the left rail to an output: the list leaves it out</source>
+        <translation>%1 (%2. sor, %3. oszlop) nincs rajta egyetlen áramúton sem a bal oldali gyűjtősíntől egy kimenetig: a lista kihagyja</translation>
     </message>
     <message>
-        <location filename="../model/checks/checks_list.cpp" line="+130"/>
+        <location line="+49"/>
+        <location filename="../model/checks/checks_list.cpp" line="+77"/>
+        <source>Append %1</source>
+        <translation>%1 hozzáfűzése a végére</translation>
+    </message>
+    <message>
+        <location filename="../model/checks/checks_list.cpp" line="+77"/>
         <source>Rewrite the rung in the canonical form</source>
         <translation>A létrafok átírása kanonikus formára</translation>
     </message>
@@ -1514,22 +1556,32 @@ Létradiagram- és utasításlista-szerkesztő VPC, Vigor, CPM1 és PL110 PLC-kh
         <translation>Egyetlen érintkező %1 kapcsolással egyszerűbb %2 formában</translation>
     </message>
     <message>
-        <location line="+10"/>
+        <location line="+11"/>
         <source>A single device in parallel with a block belongs on the lower row: the block first, then an OR, drops the %1</source>
         <translation>Egy blokkal párhuzamos egyetlen operandus az alsó sorba való: előbb a blokk, majd egy OR, így elmarad a(z) %1</translation>
     </message>
     <message>
         <location line="+3"/>
+        <source>Contacts in series need no %1: each can follow the one before it as %2</source>
+        <translation>Soros érintkezőkhöz nem kell %1: mindegyik %2 utasítással követheti az előzőt</translation>
+    </message>
+    <message>
+        <location line="+5"/>
         <source>The block after a single contact can move to the front and drop the %1</source>
         <translation>Az egyetlen érintkező utáni blokk előre kerülhet, így elmarad a(z) %1</translation>
     </message>
     <message>
-        <location line="+11"/>
+        <location line="+12"/>
         <source>Put the single device below the block and drop the %1</source>
         <translation>Az egyetlen operandus kerüljön a blokk alá, így elmarad a(z) %1</translation>
     </message>
     <message>
-        <location line="+3"/>
+        <location line="+4"/>
+        <source>Join the contacts in series and drop the %1</source>
+        <translation>Az érintkezők sorba kötése, így elmarad a(z) %1</translation>
+    </message>
+    <message>
+        <location line="+1"/>
         <source>Move the block to the front and drop the %1</source>
         <translation>A blokk kerüljön előre, így elmarad a(z) %1</translation>
     </message>
@@ -1818,7 +1870,7 @@ Létradiagram- és utasításlista-szerkesztő VPC, Vigor, CPM1 és PL110 PLC-kh
         <translation>Túl sok hiba; a lista többi része nem lett beolvasva</translation>
     </message>
     <message>
-        <location line="+110"/>
+        <location line="+114"/>
         <source>Unknown instruction &apos;%1&apos; for %2</source>
         <translation>Ismeretlen utasítás: &apos;%1&apos; (%2)</translation>
     </message>

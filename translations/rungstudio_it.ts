@@ -310,7 +310,7 @@ Codice di uscita: 0 nessun errore, 1 il programma contiene errori, 2 errore di u
         <translation>&amp;Modifica</translation>
     </message>
     <message>
-        <location line="+31"/>
+        <location line="+32"/>
         <source>Normally &amp;Open Contact</source>
         <translation>Contatto normalmente &amp;aperto</translation>
     </message>
@@ -333,6 +333,21 @@ Codice di uscita: 0 nessun errore, 1 il programma contiene errori, 2 errore di u
         <location line="+2"/>
         <source>&amp;Falling-Edge Contact</source>
         <translation>Contatto sul fronte di &amp;discesa</translation>
+    </message>
+    <message>
+        <location line="+2"/>
+        <source>Parall&amp;el Normally Closed Contact</source>
+        <translation>Contatto parallelo normalmente chi&amp;uso</translation>
+    </message>
+    <message>
+        <location line="+2"/>
+        <source>Parallel Ri&amp;sing-Edge Contact</source>
+        <translation>Contatto pa&amp;rallelo sul fronte di salita</translation>
+    </message>
+    <message>
+        <location line="+2"/>
+        <source>Parallel Fallin&amp;g-Edge Contact</source>
+        <translation>Contatto parall&amp;elo sul fronte di discesa</translation>
     </message>
     <message>
         <location line="+2"/>
@@ -360,7 +375,7 @@ Codice di uscita: 0 nessun errore, 1 il programma contiene errori, 2 errore di u
         <translation>Posi&amp;ziona elemento</translation>
     </message>
     <message>
-        <location line="+48"/>
+        <location line="+56"/>
         <source>&amp;Import Symbols (CSV)...</source>
         <translation>Importa sim&amp;boli (CSV)...</translation>
     </message>
@@ -405,7 +420,7 @@ Codice di uscita: 0 nessun errore, 1 il programma contiene errori, 2 errore di u
         <translation>&amp;Ripeti</translation>
     </message>
     <message>
-        <location line="-163"/>
+        <location line="-171"/>
         <source>Select</source>
         <translation>Seleziona</translation>
     </message>
@@ -415,17 +430,18 @@ Codice di uscita: 0 nessun errore, 1 il programma contiene errori, 2 errore di u
         <translation>Seleziona (Esc)</translation>
     </message>
     <message>
-        <location line="+13"/>
+        <location line="+15"/>
         <source>%1 (%2): click the cells to place it</source>
         <translation>%1 (%2): fare clic sulle celle per posizionare l&apos;elemento</translation>
     </message>
     <message>
         <location line="+9"/>
+        <location line="+10"/>
         <source>%1: click a cell to place it; Esc or a right click ends</source>
         <translation>%1: fare clic su una cella per posizionare l&apos;elemento; Esc o un clic destro per terminare</translation>
     </message>
     <message>
-        <location line="+15"/>
+        <location line="+11"/>
         <source>Cu&amp;t Rung</source>
         <translation>&amp;Taglia segmento</translation>
     </message>
@@ -466,7 +482,7 @@ Codice di uscita: 0 nessun errore, 1 il programma contiene errori, 2 errore di u
     </message>
     <message>
         <location line="+1"/>
-        <location filename="../app/gui/main_window_tools.cpp" line="+235"/>
+        <location filename="../app/gui/main_window_tools.cpp" line="+238"/>
         <source>CSV files (*.csv)</source>
         <translation>File CSV (*.csv)</translation>
     </message>
@@ -618,13 +634,13 @@ Editor di schemi ladder e liste istruzioni per VPC, Vigor, CPM1 e PL110.</transl
     </message>
     <message>
         <location line="+1"/>
-        <location line="+54"/>
+        <location line="+56"/>
         <location filename="../app/gui/main_window_files.cpp" line="+486"/>
         <source>Untitled</source>
         <translation>Senza titolo</translation>
     </message>
     <message numerus="yes">
-        <location line="-52"/>
+        <location line="-54"/>
         <source>%n rung(s)</source>
         <translation>
             <numerusform>%n segmento</numerusform>
@@ -640,7 +656,7 @@ Editor di schemi ladder e liste istruzioni per VPC, Vigor, CPM1 e PL110.</transl
         </translation>
     </message>
     <message>
-        <location line="+19"/>
+        <location line="+21"/>
         <source>The instruction list has %1: line %2: %3. The ladder shows the last valid program.</source>
         <translation>La lista istruzioni contiene %1: riga %2: %3. Lo schema ladder mostra l&apos;ultimo programma valido.</translation>
     </message>
@@ -843,7 +859,7 @@ Editor di schemi ladder e liste istruzioni per VPC, Vigor, CPM1 e PL110.</transl
         <translation>Impossibile aprire l&apos;esempio</translation>
     </message>
     <message>
-        <location filename="../app/gui/main_window_tools.cpp" line="-167"/>
+        <location filename="../app/gui/main_window_tools.cpp" line="-169"/>
         <source>Cut rungs</source>
         <translation>Taglia segmenti</translation>
     </message>
@@ -891,7 +907,7 @@ Editor di schemi ladder e liste istruzioni per VPC, Vigor, CPM1 e PL110.</transl
         <translation>Operando:</translation>
     </message>
     <message>
-        <location line="+28"/>
+        <location line="+30"/>
         <location line="+3"/>
         <location line="+7"/>
         <source>Replace Device</source>
@@ -1032,12 +1048,12 @@ Editor di schemi ladder e liste istruzioni per VPC, Vigor, CPM1 e PL110.</transl
 <context>
     <name>rung::editor::Document</name>
     <message>
-        <location filename="../editor/document.cpp" line="+42"/>
+        <location filename="../editor/document.cpp" line="+44"/>
         <source>Edit symbols</source>
         <translation>Modifica simboli</translation>
     </message>
     <message>
-        <location line="+108"/>
+        <location line="+122"/>
         <source>Insert rung</source>
         <translation>Inserisci segmento</translation>
     </message>
@@ -1055,15 +1071,30 @@ Editor di schemi ladder e liste istruzioni per VPC, Vigor, CPM1 e PL110.</transl
         </translation>
     </message>
     <message>
-        <location line="+64"/>
+        <location line="+45"/>
+        <source>This line stood for a rung of another program: delete the line or undo the paste</source>
+        <translation>Questa riga rappresentava un segmento di un altro programma: elimina la riga o annulla l&apos;incolla</translation>
+    </message>
+    <message>
+        <location line="+54"/>
         <source>Edit instruction list</source>
         <translation>Modifica lista istruzioni</translation>
+    </message>
+    <message>
+        <location line="+53"/>
+        <source>it has nothing to list yet</source>
+        <translation>non contiene ancora nulla da elencare</translation>
+    </message>
+    <message>
+        <location line="+3"/>
+        <source>Rung %1 is not in the list: %2. Edit it in the ladder; this line keeps its place.</source>
+        <translation>Il segmento %1 non è nella lista: %2. Modificalo nel ladder; questa riga ne tiene il posto.</translation>
     </message>
 </context>
 <context>
     <name>rung::editor::IlEditor</name>
     <message>
-        <location filename="../editor/il_editor.cpp" line="+232"/>
+        <location filename="../editor/il_editor.cpp" line="+247"/>
         <source>Instruction list</source>
         <translation>Lista istruzioni</translation>
     </message>
@@ -1071,7 +1102,7 @@ Editor di schemi ladder e liste istruzioni per VPC, Vigor, CPM1 e PL110.</transl
 <context>
     <name>rung::editor::IlLexer</name>
     <message>
-        <location line="-174"/>
+        <location line="-187"/>
         <source>Default</source>
         <translation>Predefinito</translation>
     </message>
@@ -1104,6 +1135,11 @@ Editor di schemi ladder e liste istruzioni per VPC, Vigor, CPM1 e PL110.</transl
         <location line="+2"/>
         <source>Unknown word</source>
         <translation>Parola sconosciuta</translation>
+    </message>
+    <message>
+        <location line="+2"/>
+        <source>Rung not in the list</source>
+        <translation>Segmento non presente nella lista</translation>
     </message>
 </context>
 <context>
@@ -1467,7 +1503,7 @@ Editor di schemi ladder e liste istruzioni per VPC, Vigor, CPM1 e PL110.</transl
 <context>
     <name>rung::model::Checks</name>
     <message>
-        <location filename="../model/checks/checks_ladder.cpp" line="+70"/>
+        <location filename="../model/checks/checks_ladder.cpp" line="+71"/>
         <source>Reverse current: power would cross an element right to left to reach row %1</source>
         <translation>Corrente inversa: la corrente attraverserebbe un elemento da destra a sinistra per raggiungere la riga %1</translation>
     </message>
@@ -1487,12 +1523,18 @@ Editor di schemi ladder e liste istruzioni per VPC, Vigor, CPM1 e PL110.</transl
         <translation>%1 non ha condizione: è collegato direttamente alla barra sinistra</translation>
     </message>
     <message>
-        <location line="+15"/>
-        <source>This contact is not on any path from the left rail to an output</source>
-        <translation>Questo contatto non si trova su alcun percorso dalla barra sinistra a un&apos;uscita</translation>
+        <location line="+20"/>
+        <source>%1 (row %2, column %3) is not on any path from the left rail to an output: the list leaves it out</source>
+        <translation>%1 (riga %2, colonna %3) non si trova su alcun percorso dalla barra sinistra a un&apos;uscita: la lista lo omette</translation>
     </message>
     <message>
-        <location filename="../model/checks/checks_list.cpp" line="+130"/>
+        <location line="+49"/>
+        <location filename="../model/checks/checks_list.cpp" line="+77"/>
+        <source>Append %1</source>
+        <translation>Aggiungi %1 in fondo</translation>
+    </message>
+    <message>
+        <location filename="../model/checks/checks_list.cpp" line="+77"/>
         <source>Rewrite the rung in the canonical form</source>
         <translation>Riscrivi il segmento nella forma canonica</translation>
     </message>
@@ -1520,22 +1562,32 @@ Editor di schemi ladder e liste istruzioni per VPC, Vigor, CPM1 e PL110.</transl
         <translation>Un singolo contatto unito con %1 è più semplice come %2</translation>
     </message>
     <message>
-        <location line="+10"/>
+        <location line="+11"/>
         <source>A single device in parallel with a block belongs on the lower row: the block first, then an OR, drops the %1</source>
         <translation>Un singolo operando in parallelo a un blocco va sulla riga inferiore: prima il blocco, poi un OR, senza %1</translation>
     </message>
     <message>
         <location line="+3"/>
+        <source>Contacts in series need no %1: each can follow the one before it as %2</source>
+        <translation>I contatti in serie non richiedono %1: ognuno può seguire il precedente come %2</translation>
+    </message>
+    <message>
+        <location line="+5"/>
         <source>The block after a single contact can move to the front and drop the %1</source>
         <translation>Il blocco dopo un singolo contatto può essere spostato in testa, senza %1</translation>
     </message>
     <message>
-        <location line="+11"/>
+        <location line="+12"/>
         <source>Put the single device below the block and drop the %1</source>
         <translation>Metti il singolo operando sotto il blocco ed elimina %1</translation>
     </message>
     <message>
-        <location line="+3"/>
+        <location line="+4"/>
+        <source>Join the contacts in series and drop the %1</source>
+        <translation>Collega i contatti in serie ed elimina %1</translation>
+    </message>
+    <message>
+        <location line="+1"/>
         <source>Move the block to the front and drop the %1</source>
         <translation>Sposta il blocco in testa ed elimina %1</translation>
     </message>
@@ -1828,7 +1880,7 @@ Editor di schemi ladder e liste istruzioni per VPC, Vigor, CPM1 e PL110.</transl
         <translation>Troppi errori; il resto della lista non è stato letto</translation>
     </message>
     <message>
-        <location line="+110"/>
+        <location line="+114"/>
         <source>Unknown instruction &apos;%1&apos; for %2</source>
         <translation>Istruzione sconosciuta &apos;%1&apos; per %2</translation>
     </message>

@@ -150,6 +150,9 @@ private:
         std::vector<int> steps;
     } m_typedSteps;
     bool m_editingListing = false;
+    // A status message about the list's errors ("... has errors"): it goes once the list
+    // applies without them, not when its time is up.
+    QString m_errorsMessage;
     QString m_findText; // the device of the last Find, for F3 / Shift+F3
     bool m_sideBySide = false;
     bool m_updatingSymbols = false;
