@@ -4,6 +4,8 @@
 
 #include "model/ladder/ladder_text.h"
 
+#include <QCryptographicHash>
+#include <QRegularExpression>
 #include <QUndoCommand>
 
 #include <map>
@@ -69,7 +71,20 @@ private:
     std::vector<model::WatchList> m_new;
 };
 
+// "; [[3:9f2c41]] ...": the marker is the same in every language, so the list's text reads back
+// whatever the UI language was when it was shown.
+const QRegularExpression &placeholderPattern() {
+    static const QRegularExpression re(
+        QStringLiteral("^\\s*(?:;|//)\\s*\\[\\[(\\d+:[0-9a-f]+)\\]\\]"));
+    return re;
+}
+
 } // namespace
+
+QString Document::placeholderKey(const QString &line) {
+    const QRegularExpressionMatch m = placeholderPattern().match(line);
+    return m.hasMatch() ? m.captured(1) : QString();
+}
 
 Document::Document(QObject *parent)
     : QObject(parent) {
@@ -96,6 +111,7 @@ void Document::setProject(const model::Project &project, const QString &path) {
     m_project = project;
     m_project.program.target = m_project.target;
     m_undo.clear();
+    m_held.clear();
     setPath(path);
     refresh();
 }
@@ -177,9 +193,34 @@ void Document::applySymbols(const std::vector<model::Symbol> &symbols) {
 
 bool Document::setListing(const QString &text, std::vector<model::Diagnostic> *errors,
                           ListingStep step) {
-    const model::ParseResult parsed =
+    model::ParseResult parsed =
         model::parseInstructionList(*m_project.target, text, modelVariant());
     std::vector<model::Diagnostic> problems;
+    // The placeholder lines: each puts back the rung it stands for, at its place; one this
+    // document never showed (pasted from elsewhere) is an error rather than a lost rung.
+    std::vector<std::pair<int, const model::Rung *>> held; // line (1-based), rung
+    {
+        const QStringList lines = text.split(QLatin1Char('\n'));
+        for (int i = 0; i < lines.size(); ++i) {
+            const QString key = placeholderKey(lines[i]);
+            if (key.isEmpty())
+                continue;
+            if (const auto it = m_held.find(key); it != m_held.end()) {
+                held.emplace_back(i + 1, &it->second);
+                continue;
+            }
+            model::Diagnostic d;
+            d.code = QStringLiteral("SYN001");
+            d.location.line = i + 1;
+            d.location.column = 1;
+            d.message = tr("This line stood for a rung of another program: delete the line or "
+                           "undo the paste");
+            problems.push_back(d);
+        }
+        std::erase_if(parsed.list.comments, [](const std::pair<int, QString> &c) {
+            return !placeholderKey(QLatin1String("; ") + c.second).isEmpty();
+        });
+    }
     for (const model::ParseError &e : parsed.errors) {
         model::Diagnostic d;
         d.code = QStringLiteral("SYN001");
@@ -188,12 +229,13 @@ bool Document::setListing(const QString &text, std::vector<model::Diagnostic> *e
         d.message = e.message;
         problems.push_back(d);
     }
-    if (!parsed.ok()) {
+    if (!parsed.ok() || !problems.empty()) {
+        model::sortDiagnostics(problems);
         if (errors)
             *errors = problems;
         return false;
     }
-    const model::ToLadderResult ladder = model::listToLadder(parsed.list);
+    model::ToLadderResult ladder = model::listToLadder(parsed.list);
     model::CheckOptions options;
     options.model = modelVariant();
     options.source = &text;
@@ -210,6 +252,15 @@ bool Document::setListing(const QString &text, std::vector<model::Diagnostic> *e
     options.formOnly = true;
     if (errors)
         *errors = model::checkList(parsed.list, options);
+    // Each held rung goes before the first rung whose instructions start below its line.
+    auto &rungs = ladder.ladder.rungs;
+    for (std::size_t h = 0; h < held.size(); ++h) {
+        const auto [line, rung] = held[h];
+        const auto before = std::count_if(ladder.rungLine.begin(), ladder.rungLine.end(),
+                                          [line](int first) { return first < line; });
+        const auto at = std::min<std::size_t>(static_cast<std::size_t>(before) + h, rungs.size());
+        rungs.insert(rungs.begin() + static_cast<std::ptrdiff_t>(at), *rung);
+    }
     if (ladder.ladder.rungs == m_project.program.rungs)
         return true;
     if (step == ListingStep::InPlace)
@@ -227,15 +278,97 @@ void Document::applyRungs(int first, int count, const std::vector<model::Rung> &
     refresh();
 }
 
+QString Document::heldRung(int index) {
+    const model::Rung &rung = m_project.program.rungs[static_cast<std::size_t>(index)];
+    model::LadderProgram one;
+    one.target = m_project.target;
+    one.rungs = {rung};
+    const QByteArray hash =
+        QCryptographicHash::hash(model::printLadderText(one).toUtf8(), QCryptographicHash::Sha1);
+    const QString key =
+        QStringLiteral("%1:%2").arg(index + 1).arg(QString::fromLatin1(hash.toHex().left(6)));
+    m_held.insert_or_assign(key, rung);
+    return key;
+}
+
 void Document::refresh() {
     m_listing = model::ladderToList(m_project.program);
-    m_printed = model::printListing(m_listing.list);
+    // The list as shown: a placeholder comment where a rung could not be listed (a rung that
+    // lists nothing and is not blank), so the two views never disagree silently.
+    model::InstructionList shown = m_listing.list;
+    std::vector<std::pair<int, std::size_t>> placeholders; // rung, its comment in `shown`
+    {
+        std::vector<std::pair<int, QString>> comments;
+        std::size_t next = 0;
+        const auto &all = m_project.program.rungs;
+        for (std::size_t r = 0; r < all.size() && r + 1 < m_listing.rungFirst.size(); ++r) {
+            const int at = m_listing.rungFirst[r];
+            if (at < m_listing.rungFirst[r + 1])
+                continue;
+            const auto problem = std::find_if(
+                m_listing.problems.begin(), m_listing.problems.end(),
+                [r](const model::Diagnostic &d) { return d.location.rung == static_cast<int>(r); });
+            const model::Rung &rung = all[r];
+            const bool blank =
+                std::none_of(rung.outputs.begin(), rung.outputs.end(),
+                             [](const auto &o) { return o.has_value(); }) &&
+                std::all_of(rung.cells.begin(), rung.cells.end(),
+                            [](const model::Cell &c) { return c.kind == model::CellKind::Empty; });
+            if (problem == m_listing.problems.end() && blank)
+                continue;
+            while (next < shown.comments.size() && shown.comments[next].first < at)
+                comments.push_back(shown.comments[next++]);
+            const QString why = problem != m_listing.problems.end()
+                                    ? problem->message
+                                    : tr("it has nothing to list yet");
+            comments.emplace_back(
+                at, QStringLiteral("[[%1]] ").arg(heldRung(static_cast<int>(r))) +
+                        tr("Rung %1 is not in the list: %2. Edit it in the ladder; this line "
+                           "keeps its place.")
+                            .arg(r + 1)
+                            .arg(why));
+            placeholders.emplace_back(static_cast<int>(r), comments.size() - 1);
+        }
+        comments.insert(comments.end(), shown.comments.begin() + static_cast<std::ptrdiff_t>(next),
+                        shown.comments.end());
+        shown.comments = std::move(comments);
+    }
+    m_printed = model::printListing(shown);
     m_listingText = m_printed.text;
-    // A rung's first line is its comment's, or its first instruction's (the printer's map).
+    // Lines of the printed listing: comments come before their rung's first instruction; a
+    // placeholder is its rung's line.
     m_rungLine.assign(m_project.program.rungs.size(), -1);
-    for (std::size_t r = 0; r + 1 < m_listing.rungFirst.size() && r < m_rungLine.size(); ++r)
-        if (m_listing.rungFirst[r] < m_listing.rungFirst[r + 1])
-            m_rungLine[r] = m_printed.firstLine[static_cast<std::size_t>(m_listing.rungFirst[r])];
+    {
+        const auto &ins = shown.instructions;
+        const auto &comments = shown.comments;
+        // The comments before instruction i fill the lines from firstLine[i] on (the printer's
+        // map), in their order.
+        std::vector<int> commentLine(comments.size(), 0);
+        for (std::size_t k = 0; k < comments.size(); ++k) {
+            const auto at = static_cast<std::size_t>(comments[k].first);
+            commentLine[k] = k > 0 && comments[k - 1].first == comments[k].first
+                                 ? commentLine[k - 1] + 1
+                                 : m_printed.firstLine[at];
+        }
+        const std::vector<int> &instructionLine = m_printed.instructionLine;
+        std::vector<bool> isPlaceholder(comments.size(), false);
+        for (const auto &[rung, comment] : placeholders) {
+            isPlaceholder[comment] = true;
+            m_rungLine[static_cast<std::size_t>(rung)] = commentLine[comment];
+        }
+        // A listed rung starts at its own first comment, else at its first instruction.
+        std::vector<int> firstOwnComment(ins.size() + 1, 0);
+        for (std::size_t k = 0; k < comments.size(); ++k) {
+            int &first = firstOwnComment[static_cast<std::size_t>(comments[k].first)];
+            if (!isPlaceholder[k] && first == 0)
+                first = commentLine[k];
+        }
+        for (std::size_t r = 0; r + 1 < m_listing.rungFirst.size() && r < m_rungLine.size(); ++r) {
+            const auto at = static_cast<std::size_t>(m_listing.rungFirst[r]);
+            if (m_listing.rungFirst[r] < m_listing.rungFirst[r + 1])
+                m_rungLine[r] = firstOwnComment[at] > 0 ? firstOwnComment[at] : instructionLine[at];
+        }
+    }
     model::CheckOptions options;
     options.model = modelVariant();
     // The checks report what keeps a rung from being listed (the listing's own problems) by

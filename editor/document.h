@@ -10,6 +10,8 @@
 #include <QObject>
 #include <QUndoStack>
 
+#include <map>
+
 namespace rung::editor {
 
 class Document : public QObject {
@@ -38,9 +40,15 @@ public:
 
     // The canonical listing of the ladder and where each rung starts in it.
     const model::ToListingResult &listing() const { return m_listing; }
+    // The listing as the list pane shows it: a rung the list cannot express (a bridge, an
+    // element the target lacks) has a placeholder comment in its place, "; [[3:9f2c41]] Rung
+    // 3 is not in the list: ...", that names it and why; setListing puts that rung back
+    // where the line stands, so editing the list never drops it.
     QString listingText() const { return m_listingText; }
     // Its line map: the line of each instruction, the instruction of each line.
     const model::PrintedListing &printedListing() const { return m_printed; }
+    // The key a placeholder line carries for a rung ("3:9f2c41"), empty if it is no placeholder.
+    static QString placeholderKey(const QString &line);
     int rungOfLine(int line) const; // 1-based line of the listing text -> rung, -1 if none
     int firstLineOfRung(int rung) const;
     int stepCount() const;
@@ -82,6 +90,8 @@ signals:
 
 private:
     void refresh();
+    // Keeps rung `index` for the placeholder line that stands for it; returns the line's key.
+    QString heldRung(int index);
 
     model::Project m_project;
     QString m_path;
@@ -90,6 +100,9 @@ private:
     QString m_listingText;
     model::PrintedListing m_printed;
     std::vector<int> m_rungLine; // first line of each rung in m_listingText (1-based)
+    // Every rung a placeholder line has stood for since the project was opened, by the key the
+    // line carries: text typed from an older list still finds its rung.
+    std::map<QString, model::Rung> m_held;
     std::vector<model::Diagnostic> m_diagnostics;
 };
 

@@ -1,5 +1,7 @@
 #include "il_editor.h"
 
+#include "document.h"
+
 #include "model/target/address.h"
 
 #include <Qsci/qsciapis.h>
@@ -68,6 +70,8 @@ QString IlLexer::description(int style) const {
         return tr("Step number");
     case Error:
         return tr("Unknown word");
+    case Placeholder:
+        return tr("Rung not in the list");
     default:
         return {};
     }
@@ -87,9 +91,16 @@ QColor IlLexer::defaultColor(int style) const {
         return QColor(0x8a, 0x8f, 0x98);
     case Error:
         return QColor(0xc6, 0x28, 0x28);
+    case Placeholder:
+        return QColor(0x8a, 0x3b, 0x00);
     default:
         return QColor(0x20, 0x24, 0x2a);
     }
+}
+
+QColor IlLexer::defaultPaper(int style) const {
+    // A placeholder stands out from the comments around it: the rung it names is missing here.
+    return style == Placeholder ? QColor(0xff, 0xf1, 0xd6) : QsciLexerCustom::defaultPaper(style);
 }
 
 QFont IlLexer::defaultFont(int style) const {
@@ -97,12 +108,16 @@ QFont IlLexer::defaultFont(int style) const {
     f.setPointSize(10);
     if (style == Mnemonic)
         f.setBold(true);
-    if (style == Comment)
+    if (style == Comment || style == Placeholder)
         f.setItalic(true);
+    if (style == Placeholder)
+        f.setBold(true);
     return f;
 }
 
 std::vector<int> IlLexer::styleLine(const QString &line) const {
+    if (!Document::placeholderKey(line).isEmpty())
+        return std::vector<int>(static_cast<std::size_t>(line.size()), Placeholder);
     std::vector<int> styles(static_cast<std::size_t>(line.size()), Default);
     qsizetype cut = line.indexOf(QLatin1Char(';'));
     const qsizetype slashes = line.indexOf(QLatin1String("//"));
@@ -490,6 +505,34 @@ bool IlEditor::replaceLines(int first, const QStringList &expected,
     endUndoAction();
     setCursorPosition(first, 0);
     return true;
+}
+
+QString IlEditor::deviceAtCaret() const {
+    int line = 0;
+    int index = 0;
+    getCursorPosition(&line, &index);
+    const QString text = lineText(line);
+    const std::vector<int> styles = m_lexer ? m_lexer->styleLine(text) : std::vector<int>{};
+    // The caret may stand just after the word (where typing left it).
+    qsizetype at = std::min<qsizetype>(index, text.size());
+    if ((at == text.size() || text[at].isSpace()) && at > 0)
+        --at;
+    if (at < 0 || at >= static_cast<qsizetype>(styles.size()) ||
+        styles[static_cast<std::size_t>(at)] != IlLexer::Device)
+        return {};
+    qsizetype first = at;
+    qsizetype last = at;
+    while (first > 0 && styles[static_cast<std::size_t>(first - 1)] == IlLexer::Device &&
+           !text[first - 1].isSpace())
+        --first;
+    while (last + 1 < text.size() &&
+           styles[static_cast<std::size_t>(last + 1)] == IlLexer::Device &&
+           !text[last + 1].isSpace())
+        ++last;
+    const auto parsed = model::parseAddress(*m_target, text.mid(first, last - first + 1));
+    if (const auto *address = std::get_if<model::Address>(&parsed))
+        return model::formatAddress(*m_target, *address);
+    return {};
 }
 
 void IlEditor::updateCallTip() {

@@ -19,7 +19,8 @@ class IlLexer : public QsciLexerCustom {
     Q_OBJECT
 
 public:
-    enum Style { Default = 0, Mnemonic, Device, Constant, Comment, StepNumber, Error };
+    // Placeholder: the line that stands for a rung the list cannot express (Document).
+    enum Style { Default = 0, Mnemonic, Device, Constant, Comment, StepNumber, Error, Placeholder };
 
     explicit IlLexer(const model::Target &target, QObject *parent = nullptr);
     ~IlLexer() override;
@@ -27,6 +28,7 @@ public:
     QString description(int style) const override;
     QColor defaultColor(int style) const override;
     QFont defaultFont(int style) const override;
+    QColor defaultPaper(int style) const override;
     void styleText(int start, int end) override;
 
     // The style of each character of one line (used by styleText, open for tests).
@@ -62,6 +64,9 @@ public:
     // Replaces lines first.. (0-based) when they still read `expected`, as one step of the
     // editor's own undo; false, and nothing changed, when they do not.
     bool replaceLines(int first, const QStringList &expected, const QStringList &replacement);
+    // The device the caret is on ("X0" in "LD X0 ; start"), as the target writes it; empty
+    // when the caret is on no device (a mnemonic, a constant, a comment).
+    QString deviceAtCaret() const;
     // The operand form of the mnemonic before the caret, as a call tip ("TMR T0..T255 ...").
     void showOperandTip();
     bool operandTipShown();

@@ -292,6 +292,8 @@ void MainWindow::applyListingAs(editor::Document::ListingStep step) {
     m_listingErrors = errors; // when ok: the fuzzy forms of the text as typed
     if (ok || errors.empty()) {
         m_ladder->setNotice(QString());
+        if (ok && !m_errorsMessage.isEmpty() && statusBar()->currentMessage() == m_errorsMessage)
+            statusBar()->clearMessage();
     } else {
         const model::Diagnostic &first = errors.front();
         m_ladder->setNotice(

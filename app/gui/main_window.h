@@ -163,7 +163,10 @@ private:
     } m_typedSteps;
     bool m_editingListing = false;
     QString m_savedPending; // the list as typed that the file holds (pendingListing)
-    QString m_findText;     // the device of the last Find, for F3 / Shift+F3
+    // A status message about the list's errors ("... has errors"): it goes once the list
+    // applies without them, not when its time is up.
+    QString m_errorsMessage;
+    QString m_findText; // the device of the last Find, for F3 / Shift+F3
     bool m_sideBySide = false;
 };
 

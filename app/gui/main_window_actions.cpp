@@ -116,6 +116,7 @@ void MainWindow::buildActions() {
         editor::ToolIcon icon;
         QKeySequence key;
         std::function<void()> run;
+        bool onToolbar = true; // the parallel NC and edge contacts: the menu and their keys
     };
     const std::vector<Tool> tools = {
         {tr("Normally &Open Contact"), editor::ToolIcon::OpenContact, QKeySequence(Qt::Key_F5),
@@ -128,6 +129,12 @@ void MainWindow::buildActions() {
          QKeySequence(Qt::SHIFT | Qt::Key_F7), pressKey(Qt::Key_F7, Qt::ShiftModifier)},
         {tr("&Falling-Edge Contact"), editor::ToolIcon::FallingContact,
          QKeySequence(Qt::SHIFT | Qt::Key_F8), pressKey(Qt::Key_F8, Qt::ShiftModifier)},
+        {tr("Parall&el Normally Closed Contact"), editor::ToolIcon::ClosedContact,
+         QKeySequence(Qt::SHIFT | Qt::Key_F6), pressKey(Qt::Key_F6, Qt::ShiftModifier), false},
+        {tr("Parallel Ri&sing-Edge Contact"), editor::ToolIcon::RisingContact,
+         QKeySequence(Qt::ALT | Qt::Key_F7), pressKey(Qt::Key_F7, Qt::AltModifier), false},
+        {tr("Parallel Fallin&g-Edge Contact"), editor::ToolIcon::FallingContact,
+         QKeySequence(Qt::ALT | Qt::Key_F8), pressKey(Qt::Key_F8, Qt::AltModifier), false},
         {tr("Co&il"), editor::ToolIcon::Coil, QKeySequence(Qt::Key_F7), pressKey(Qt::Key_F7)},
         {tr("I&nstruction"), editor::ToolIcon::Instruction, QKeySequence(Qt::Key_F8),
          pressKey(Qt::Key_F8)},
@@ -153,6 +160,8 @@ void MainWindow::buildActions() {
         const QString name = QString(t.text).remove(QLatin1Char('&'));
         QAction *a = place->addAction(editor::toolIcon(t.icon), t.text, this, t.run);
         showKeyInMenu(a, t.key);
+        if (!t.onToolbar)
+            continue;
         QAction *tool = bar->addAction(editor::toolIcon(t.icon), name);
         tool->setToolTip(tr("%1 (%2): click the cells to place it")
                              .arg(name, t.key.toString(QKeySequence::NativeText)));
@@ -167,9 +176,15 @@ void MainWindow::buildActions() {
         });
     }
     connect(m_ladder, &editor::LadderView::toolArmed, palette,
-            [palette, pointer](const QKeySequence &key) {
+            [this, palette, pointer](const QKeySequence &key) {
                 if (key.isEmpty()) {
                     pointer->setChecked(true);
+                    // The tool's hint goes with the tool; any other message stays.
+                    for (QAction *a : palette->actions())
+                        if (statusBar()->currentMessage() ==
+                            tr("%1: click a cell to place it; Esc or a right click ends")
+                                .arg(a->text()))
+                            statusBar()->clearMessage();
                     return;
                 }
                 for (QAction *a : palette->actions())

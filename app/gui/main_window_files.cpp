@@ -156,9 +156,9 @@ bool MainWindow::openFile(const QString &path, const QString &targetId, bool qui
             newProject(*target, target->defaultModel().name);
             m_il->setText(text);
             applyListing();
-            statusBar()->showMessage(tr("%1 has errors; the ladder follows once they are fixed")
-                                         .arg(QFileInfo(path).fileName()),
-                                     10000);
+            m_errorsMessage = tr("%1 has errors; the ladder follows once they are fixed")
+                                  .arg(QFileInfo(path).fileName());
+            statusBar()->showMessage(m_errorsMessage, 10000);
             return true;
         }
         project.target = target;

@@ -3,6 +3,7 @@
 #include "symbol_table.h"
 
 #include "editor/cross_reference_view.h"
+#include "editor/il_editor.h"
 #include "editor/ladder_view.h"
 
 #include "model/convert/convert.h"
@@ -149,8 +150,10 @@ bool MainWindow::findDevice(const QString &text, bool backwards) {
 
 void MainWindow::replaceDevice() {
     bool ok = false;
+    // The device under the cursor, of the list when it has the focus, else of the ladder.
+    const QString current = m_il->hasFocus() ? m_il->deviceAtCaret() : m_ladder->deviceAtCursor();
     const QString from = QInputDialog::getText(
-        this, tr("Replace Device"), tr("Replace the device:"), QLineEdit::Normal, QString(), &ok);
+        this, tr("Replace Device"), tr("Replace the device:"), QLineEdit::Normal, current, &ok);
     if (!ok || from.trimmed().isEmpty())
         return;
     const QString to = QInputDialog::getText(this, tr("Replace Device"), tr("with:"),

@@ -15,6 +15,21 @@ const Instruction &at(const InstructionList &list, int i) {
 
 } // namespace
 
+std::optional<const InstructionSpec *> inSeries(const InstructionList &list, int single, int join) {
+    const Instruction &load = at(list, single + 1);
+    if (load.op() != Op::Load || !load.spec)
+        return std::nullopt;
+    for (int k = single + 2; k < join; ++k)
+        if (at(list, k).op() != Op::And)
+            return std::nullopt;
+    const InstructionSpec *spec = load.spec;
+    const InstructionSpec *asAnd =
+        list.target->findInstruction(Op::And, spec->mode, spec->compare, spec->negated);
+    if (!asAnd)
+        return std::nullopt;
+    return asAnd;
+}
+
 RungForm canonicalForm(const InstructionList &list, int first, int last) {
     RungForm form;
     InstructionList part;
@@ -55,6 +70,18 @@ moveBehind(const InstructionList &list, std::pair<int, int> span, int single, in
         return std::nullopt;
     const auto [first, last] = span;
     std::vector<Instruction> out;
+    if (const auto series = inSeries(list, single, join); series && as == Op::And) {
+        // The block is contacts in series: it joins the single one where it stands, its load
+        // an AND, so that the contacts keep the order they were written in.
+        for (int k = first; k < last; ++k) {
+            if (k == join)
+                continue;
+            out.push_back(at(list, k));
+            if (k == single + 1)
+                out.back().spec = *series;
+        }
+        return out;
+    }
     for (int k = first; k < last; ++k) {
         if (k == single)
             continue;

@@ -37,8 +37,12 @@ RungForm canonicalForm(const InstructionList &list, int first, int last);
 
 // Whether [first, last] holds MPS, MRD or MPP.
 bool stackBetween(const InstructionList &list, int first, int last);
+// FZ004: the AND form of the load right after the single contact at `single` when the block
+// it opens, up to the ANB at `join`, is contacts in series only; nullopt otherwise.
+std::optional<const InstructionSpec *> inSeries(const InstructionList &list, int single, int join);
 // FZ004/FZ005: the rung `span` with the single contact `single` (a load) moved behind the
-// block it is joined with at `join`, as `as` (And/Or), and the ANB/ORB dropped.
+// block it is joined with at `join`, as `as` (And/Or), and the ANB/ORB dropped. A block of
+// contacts in series joined by ANB stays behind the single contact instead (inSeries).
 std::optional<std::vector<Instruction>>
 moveBehind(const InstructionList &list, std::pair<int, int> span, int single, int join, Op as);
 // FZ006: the rung `span` with the output after the MRD/MPP at `read` put before its MPS, and

@@ -1,6 +1,7 @@
 #include "model/checks/checks.h"
 #include "model/checks/checks_internal.h"
 #include "model/convert/convert.h"
+#include "model/ladder/ladder_text.h"
 #include "model/ladder/reverse_current.h"
 #include "model/ladder/rung_graph.h"
 
@@ -110,8 +111,17 @@ std::vector<Diagnostic> checkLadder(const LadderProgram &ladder, const ToListing
                 d.code = QStringLiteral("LD002");
                 d.severity = Severity::Warning;
                 d.location = Location{0, 0, rungIndex, row, col};
-                d.message =
-                    Tr::tr("This contact is not on any path from the left rail to an output");
+                // Named, with its place: in the list this lands on its rung's first line,
+                // and the list has no line of its own for a contact it leaves out.
+                const Contact &contact = rung.cell(row, col).contact;
+                const QString name = contact.operands.empty()
+                                         ? contactToText(*ladder.target, contact)
+                                         : formatOperand(*ladder.target, contact.operands.front());
+                d.message = Tr::tr("%1 (row %2, column %3) is not on any path from the left rail "
+                                   "to an output: the list leaves it out")
+                                .arg(name)
+                                .arg(row + 1)
+                                .arg(col + 1);
                 out.push_back(d);
             }
     }
@@ -148,6 +158,21 @@ std::vector<Diagnostic> checkLadder(const LadderProgram &ladder, const ToListing
         d.location.column = 0;
         d.location.rung = rungOf(list.rungFirst, f.instruction);
         d.fix.reset();
+        if (d.code == QLatin1String("EN001")) {
+            // END is missing: a rung of END alone after the last one.
+            if (const InstructionSpec *end = ladder.target->findInstruction(Op::End)) {
+                Rung endRung(1, 0);
+                Instruction ins;
+                ins.spec = end;
+                endRung.outputs[0] = ins;
+                Fix fix;
+                fix.label = Tr::tr("Append %1").arg(end->mnemonic);
+                fix.firstRung = static_cast<int>(ladder.rungs.size());
+                fix.lastRung = fix.firstRung - 1; // nothing replaced: the rung is added
+                fix.rungs = {endRung};
+                d.fix = std::move(fix);
+            }
+        }
         d.related.clear();
         for (int i : f.related)
             d.related.push_back(Location{0, 0, rungOf(list.rungFirst, i), -1, -1});

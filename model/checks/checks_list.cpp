@@ -44,6 +44,7 @@ public:
             return std::move(m_found);
         }
         endAndNesting(m_list, m_found);
+        offerEnd();
         operands();
         duplicates();
         length();
@@ -56,6 +57,29 @@ public:
 private:
     Finding &add(const char *code, Severity severity, int index, const QString &message) {
         return addFinding(m_found, m_list, code, severity, index, message);
+    }
+
+    // EN001 (END is missing): END on a line of its own after the last instruction's line, that
+    // line kept as typed.
+    void offerEnd() {
+        const InstructionSpec *end = m_t.findInstruction(Op::End);
+        if (!end || !m_source || size() == 0)
+            return;
+        for (Finding &f : m_found) {
+            const int line = f.diagnostic.location.line;
+            if (f.diagnostic.code != QLatin1String("EN001") || line <= 0)
+                continue;
+            if (m_sourceLines.isEmpty())
+                m_sourceLines = m_source->split(QLatin1Char('\n'));
+            QString last = m_sourceLines.value(line - 1);
+            if (last.endsWith(QLatin1Char('\r')))
+                last.chop(1);
+            Fix fix;
+            fix.label = Tr::tr("Append %1").arg(end->mnemonic);
+            fix.firstLine = fix.lastLine = line;
+            fix.listing = last + QLatin1Char('\n') + end->mnemonic + QLatin1Char('\n');
+            f.diagnostic.fix = std::move(fix);
+        }
     }
 
     const Instruction &at(int i) const { return m_list.instructions[static_cast<std::size_t>(i)]; }
@@ -230,15 +254,21 @@ private:
                     offerCanonical(f, i);
                 } else if (fuzzy) {
                     const bool orBlock = op == Op::OrBlock;
+                    // A block of contacts in series stays where it is written (moveBehind).
+                    const bool series = !orBlock && inSeries(m_list, first.first, i);
                     Finding &f = add(
                         orBlock ? "FZ005" : "FZ004", Severity::Warning, i,
-                        orBlock
-                            ? Tr::tr("A single device in parallel with a block belongs on the "
-                                     "lower row: the block first, then an OR, drops the %1")
-                                  .arg(name(i))
-                            : Tr::tr("The block after a single contact can move to the front and "
-                                     "drop the %1")
-                                  .arg(name(i)));
+                        orBlock ? Tr::tr("A single device in parallel with a block belongs on the "
+                                         "lower row: the block first, then an OR, drops the %1")
+                                      .arg(name(i))
+                        : series ? Tr::tr("Contacts in series need no %1: each can follow the "
+                                          "one before it as %2")
+                                       .arg(name(i), m_t.findInstruction(Op::And)
+                                                         ? m_t.findInstruction(Op::And)->mnemonic
+                                                         : QString())
+                                 : Tr::tr("The block after a single contact can move to the front "
+                                          "and drop the %1")
+                                       .arg(name(i)));
                     const auto [rungFirst, rungLast] = spanOf(i);
                     const auto moved =
                         moveBehind(m_list, spanOf(i), first.first, i, orBlock ? Op::Or : Op::And);
@@ -246,12 +276,15 @@ private:
                         !betterForm(rungFirst, rungLast, *moved, orBlock ? "FZ005" : "FZ004")) {
                         m_found.pop_back(); // moving it would only make the next join the same
                     } else {
-                        offer(f, rungFirst, rungLast, printed(*moved),
-                              orBlock ? Tr::tr("Put the single device below the block and drop "
-                                               "the %1")
-                                            .arg(name(i))
-                                      : Tr::tr("Move the block to the front and drop the %1")
-                                            .arg(name(i)));
+                        offer(
+                            f, rungFirst, rungLast, printed(*moved),
+                            orBlock ? Tr::tr("Put the single device below the block and drop "
+                                             "the %1")
+                                          .arg(name(i))
+                            : series
+                                ? Tr::tr("Join the contacts in series and drop the %1").arg(name(i))
+                                : Tr::tr("Move the block to the front and drop the %1")
+                                      .arg(name(i)));
                     }
                 }
                 blocks.pop_back();

@@ -139,6 +139,10 @@ private:
             comment = line.mid(cut + skip).trimmed().toString();
         }
         if (cut >= 0 && code.trimmed().isEmpty()) {
+            // The first line's "; target: vigor" is the file's header, read by
+            // declaredTarget(): not a comment of the program's first rung.
+            if (lineNumber == 1 && !declaredTarget(line.toString()).isEmpty())
+                return;
             m_result.list.comments.emplace_back(static_cast<int>(m_result.list.instructions.size()),
                                                 comment);
             return;

@@ -128,3 +128,20 @@ TEST(IlEditorNotes, AnnotationsWrapToTheWidthOfTheView) {
     QCoreApplication::processEvents();
     EXPECT_EQ(lineCount(), wide);
 }
+
+// Replace Device starts from the device the caret is on in the list, as from the ladder's cell.
+TEST(IlEditorDevice, TheDeviceAtTheCaretAsTheTargetWritesIt) {
+    editor::IlEditor il(model::Target::get(model::Family::Vigor));
+    il.setText(QStringLiteral("LD x1 ; start X7\nTMR T0 K10\nOUT Y0\n"));
+    const auto at = [&il](int line, int index) {
+        il.setCursorPosition(line, index);
+        return il.deviceAtCaret();
+    };
+    EXPECT_EQ(at(0, 3), QStringLiteral("X1")); // on it, written as the target writes it
+    EXPECT_EQ(at(0, 5), QStringLiteral("X1")); // just after it, where typing leaves the caret
+    EXPECT_EQ(at(0, 0), QString());            // the mnemonic
+    EXPECT_EQ(at(0, 15), QString());           // a device named in the comment is no operand
+    EXPECT_EQ(at(1, 5), QStringLiteral("T0"));
+    EXPECT_EQ(at(1, 8), QString()); // the constant K10
+    EXPECT_EQ(at(2, 5), QStringLiteral("Y0"));
+}

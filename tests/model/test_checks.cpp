@@ -262,11 +262,55 @@ TEST(LadderChecks, OpenBranchAndUnconnectedContact) {
     ASSERT_NE(find(ds, "LD002"), nullptr);
     EXPECT_EQ(find(ds, "LD002")->location.row, 1);
     EXPECT_EQ(find(ds, "LD002")->location.cell, 1);
+    // The list has no line for it: the message names it and its place.
+    EXPECT_EQ(find(ds, "LD002")->message,
+              QStringLiteral("X2 (row 2, column 2) is not on any path from the left rail to an "
+                             "output: the list leaves it out"));
     const auto clean = checkLadder(ladderOf("LADDER vigor WIDTH 8\n"
                                             "RUNG 1 ROWS 1 COLUMNS 2\n"
                                             "|-[ X0 ]---[ X1 ]-+(OUT Y0)\n"));
     EXPECT_EQ(find(clean, "LD001"), nullptr);
     EXPECT_EQ(find(clean, "LD002"), nullptr);
+}
+
+// END missing: the fix appends it, as a rung in the ladder and as a line in the list (the last
+// line kept as typed).
+TEST(LadderChecks, MissingEndOffersToAppendIt) {
+    const LadderProgram ladder = ladderOf("LADDER vigor WIDTH 8\n"
+                                          "RUNG 1 ROWS 1 COLUMNS 1\n"
+                                          "|-[ X0 ]-+(OUT Y0)\n");
+    const auto ds = checkLadder(ladder);
+    const Diagnostic *d = find(ds, "EN001");
+    ASSERT_NE(d, nullptr) << all(ds).toStdString();
+    ASSERT_TRUE(d->fix.has_value());
+    EXPECT_EQ(d->fix->label, QStringLiteral("Append END"));
+    EXPECT_EQ(d->fix->firstRung, 1);
+    EXPECT_EQ(d->fix->lastRung, 0); // nothing replaced
+    LadderProgram fixed = ladder;
+    fixed.rungs.insert(fixed.rungs.end(), d->fix->rungs.begin(), d->fix->rungs.end());
+    EXPECT_EQ(find(checkLadder(fixed), "EN001"), nullptr);
+    EXPECT_EQ(printInstructionList(ladderToList(fixed).list),
+              QStringLiteral("LD X0\nOUT Y0\nEND\n"));
+
+    const QString typed = QStringLiteral("LD  X0\nOUT Y0 ; lamp\n; the end\n");
+    const ParseResult parsed = parseInstructionList(Target::get(Family::Vigor), typed);
+    CheckOptions o;
+    o.source = &typed;
+    const auto listed = checkList(parsed.list, o);
+    const Diagnostic *l = find(listed, "EN001");
+    ASSERT_NE(l, nullptr);
+    ASSERT_TRUE(l->fix.has_value());
+    EXPECT_EQ(l->fix->firstLine, 2);
+    EXPECT_EQ(l->fix->lastLine, 2);
+    EXPECT_EQ(l->fix->listing, QStringLiteral("OUT Y0 ; lamp\nEND\n"));
+    // On CPM1 END has its function code.
+    const QString cpm1 = QStringLiteral("LD 000.00\nOUT 010.00");
+    const ParseResult p1 = parseInstructionList(Target::get(Family::Cpm1), cpm1);
+    o.source = &cpm1;
+    const auto c = checkList(p1.list, o);
+    ASSERT_NE(find(c, "EN001"), nullptr);
+    ASSERT_TRUE(find(c, "EN001")->fix.has_value());
+    EXPECT_EQ(find(c, "EN001")->fix->listing, QStringLiteral("OUT 010.00\nEND(01)\n"));
 }
 
 TEST(LadderChecks, OutputWiredStraightToTheRail) {
@@ -414,6 +458,33 @@ TEST(FuzzyForms, TheReorderingFixesAreTheManualsForms) {
         ASSERT_TRUE(d->fix.has_value()) << c.program;
         EXPECT_EQ(d->fix->listing, text(c.fixed) + QLatin1Char('\n')) << c.program;
     }
+}
+
+// `X3 X4` written with a block (LD X3 / LD X4 / ANB) is fixed as LD X3 / AND X4: a fix keeps
+// the order of the contacts it does not need to move (it used to give LD X4 / AND X3).
+TEST(FuzzyForms, AFixKeepsTheOrderOfContactsInSeries) {
+    const struct {
+        const char *program;
+        const char *fixed;
+    } cases[] = {
+        {"LD X3;LD X4;ANB;OUT Y0;END", "LD X3;AND X4;OUT Y0"},
+        {"LD X3;LDI X4;AND X5;ANB;OUT Y0;END", "LD X3;ANI X4;AND X5;OUT Y0"},
+        {"LD X0;OUT Y1;LD X3;LD X4;ANB;OUT Y0;END", "LD X3;AND X4;OUT Y0"},
+    };
+    for (const auto &c : cases) {
+        const auto ds = check(Family::Vigor, nullptr, text(c.program));
+        const Diagnostic *d = find(ds, "FZ004");
+        ASSERT_NE(d, nullptr) << c.program << "\n" << all(ds).toStdString();
+        ASSERT_TRUE(d->fix.has_value()) << c.program;
+        EXPECT_EQ(d->fix->listing, text(c.fixed) + QLatin1Char('\n')) << c.program;
+        EXPECT_EQ(d->fix->label, QStringLiteral("Join the contacts in series and drop the ANB"));
+        EXPECT_TRUE(d->message.contains(QStringLiteral("AND"))) << d->message.toStdString();
+    }
+    // A block with a branch still goes to the front: there is no other way to write it.
+    const auto ds = check(Family::Vigor, nullptr, text("LD X0;LD X1;LD X2;ORB;ANB;OUT Y0;END"));
+    const Diagnostic *d = find(ds, "FZ004");
+    ASSERT_NE(d, nullptr);
+    EXPECT_EQ(d->fix->label, QStringLiteral("Move the block to the front and drop the ANB"));
 }
 
 TEST(FuzzyForms, CanonicalFormsOfTheManualGetNoWarning) {

@@ -475,3 +475,18 @@ TEST(ListingTarget, TheDeclarationElseTheSyntaxElseTheFallback) {
     EXPECT_EQ(listingTarget(QStringLiteral("FROB 12\n"), QStringLiteral("vpc")),
               QStringLiteral("vpc"));
 }
+
+// The first line's target declaration is the file's header, read by declaredTarget(): opened
+// in the IDE it must not turn into the comment of the program's first rung. A comment that
+// follows it, or the same words further down, stay comments.
+TEST(ListingTarget, TheDeclarationIsNoCommentOfTheProgram) {
+    const Target &vigor = Target::get(Family::Vigor);
+    const ParseResult parsed = parseInstructionList(
+        vigor, QStringLiteral("; target: vigor\n; Start\nLD X0\nOUT Y0\n; target: none\nEND\n"));
+    ASSERT_TRUE(parsed.ok());
+    ASSERT_EQ(parsed.list.comments.size(), 2u);
+    EXPECT_EQ(parsed.list.comments[0], std::make_pair(0, QStringLiteral("Start")));
+    EXPECT_EQ(parsed.list.comments[1], std::make_pair(2, QStringLiteral("target: none")));
+    EXPECT_TRUE(parseInstructionList(vigor, QStringLiteral("// target: vigor\nLD X0\nEND\n"))
+                    .list.comments.empty());
+}
