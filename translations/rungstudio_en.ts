@@ -20,7 +20,7 @@
         </translation>
     </message>
     <message numerus="yes">
-        <location filename="../app/gui/main_window_tools.cpp" line="+119"/>
+        <location filename="../app/gui/main_window_tools.cpp" line="+120"/>
         <source>Paste %n rungs</source>
         <translation>
             <numerusform>Paste %n rung</numerusform>
@@ -28,7 +28,7 @@
         </translation>
     </message>
     <message numerus="yes">
-        <location line="+46"/>
+        <location line="+48"/>
         <source>%n place(s) changed</source>
         <translation>
             <numerusform>%n place changed</numerusform>
@@ -39,7 +39,7 @@
 <context>
     <name>rung::editor::Document</name>
     <message numerus="yes">
-        <location filename="../editor/document.cpp" line="+155"/>
+        <location filename="../editor/document.cpp" line="+171"/>
         <source>Delete %n rungs</source>
         <translation>
             <numerusform>Delete %n rung</numerusform>
@@ -50,7 +50,7 @@
 <context>
     <name>rung::model::Checks</name>
     <message numerus="yes">
-        <location filename="../model/checks/checks_list.cpp" line="+219"/>
+        <location filename="../model/checks/checks_list.cpp" line="+243"/>
         <source>Stacked %1: %n blocks are open; an OR chain needs less stack</source>
         <translation>
             <numerusform>Stacked %1: %n block is open; an OR chain needs less stack</numerusform>
@@ -58,7 +58,7 @@
         </translation>
     </message>
     <message numerus="yes">
-        <location line="+78"/>
+        <location line="+87"/>
         <source>%n MPS left without MPP at the end of the rung</source>
         <translation>
             <numerusform>%n MPS left without MPP at the end of the rung</numerusform>
@@ -96,7 +96,7 @@
 <context>
     <name>rung::model::InstructionList</name>
     <message numerus="yes">
-        <location filename="../model/listing/il_parse.cpp" line="+394"/>
+        <location filename="../model/listing/il_parse.cpp" line="+398"/>
         <source>%1 needs %n operand(s): %2</source>
         <translation>
             <numerusform>%1 needs %n operand: %2</numerusform>

@@ -42,25 +42,8 @@
 <context>
     <name>rung::app::Cli</name>
     <message>
-        <location filename="../app/cli/cli.cpp" line="+22"/>
-        <source>usage:
-  rungstudio-cli check FILE [--target vpc|vigor|cpm1|pl110] [--model M]
-  rungstudio-cli convert FILE [--target T] [--from il|ladder|project] --to il|ladder|project [-o OUT]
-  rungstudio-cli simulate FILE [--target T] --scans N [--period MS] [--set DEV=VALUE@SCAN]... --trace DEV[,DEV...]
-FILE is a listing (.il), a ladder text (.ladder) or a project (.rung).
---lang en|hu|it: the language of the messages (else the locale&apos;s, LANG).
-Exit status: 0 no error, 1 the program has errors, 2 usage or I/O error.</source>
-        <translation>használat:
-  rungstudio-cli check FILE [--target vpc|vigor|cpm1|pl110] [--model M]
-  rungstudio-cli convert FILE [--target T] [--from il|ladder|project] --to il|ladder|project [-o OUT]
-  rungstudio-cli simulate FILE [--target T] --scans N [--period MS] [--set DEV=VALUE@SCAN]... --trace DEV[,DEV...]
-A FILE utasításlista (.il), létra-szöveg (.ladder) vagy projekt (.rung).
---lang en|hu|it: az üzenetek nyelve (különben a területi beállításé, LANG).
-Kilépési kód: 0 nincs hiba, 1 a programban hiba van, 2 használati vagy I/O hiba.</translation>
-    </message>
-    <message>
-        <location line="+18"/>
-        <location line="+32"/>
+        <location filename="../app/cli/cli.cpp" line="+40"/>
+        <location line="+35"/>
         <source>unexpected argument %1</source>
         <translation>váratlan argumentum: %1</translation>
     </message>
@@ -70,12 +53,34 @@ Kilépési kód: 0 nincs hiba, 1 a programban hiba van, 2 használati vagy I/O h
         <translation>a --to értéke il, ladder vagy project lehet</translation>
     </message>
     <message>
-        <location line="+13"/>
-        <source>nothing written: the input has errors</source>
-        <translation>nem íródott semmi: a bemenet hibás</translation>
+        <location line="-59"/>
+        <source>usage:
+  rungstudio-cli check FILE [--target vpc|vigor|cpm1|pl110] [--model M]
+  rungstudio-cli convert FILE [--target T] [--from il|ladder|project] --to il|ladder|project [-o OUT] [--force]
+  rungstudio-cli simulate FILE [--target T] --scans N [--period MS] [--set DEV=VALUE@SCAN]... --trace DEV[,DEV...]
+FILE is a listing (.il), a ladder text (.ladder) or a project (.rung).
+--lang en|hu|it: the language of the messages (else the locale&apos;s, LANG).
+Exit status: 0 no error, 1 the program has errors, 2 usage or I/O error.</source>
+        <translation>használat:
+  rungstudio-cli check FILE [--target vpc|vigor|cpm1|pl110] [--model M]
+  rungstudio-cli convert FILE [--target T] [--from il|ladder|project] --to il|ladder|project [-o OUT] [--force]
+  rungstudio-cli simulate FILE [--target T] --scans N [--period MS] [--set DEV=VALUE@SCAN]... --trace DEV[,DEV...]
+A FILE utasításlista (.il), létra-szöveg (.ladder) vagy projekt (.rung).
+--lang en|hu|it: az üzenetek nyelve (különben a területi beállításé, LANG).
+Kilépési kód: 0 nincs hiba, 1 a programban hiba van, 2 használati vagy I/O hiba.</translation>
     </message>
     <message>
-        <location line="+21"/>
+        <location line="+80"/>
+        <source>nothing written: the input does not parse or convert whole</source>
+        <translation>nem íródott semmi: a bemenet nem értelmezhető vagy nem alakítható át teljesen</translation>
+    </message>
+    <message>
+        <location line="+4"/>
+        <source>nothing written: the input has errors (--force writes it anyway)</source>
+        <translation>nem íródott semmi: a bemenet hibás (a --force így is kiírja)</translation>
+    </message>
+    <message>
+        <location line="+25"/>
         <source>cannot write %1: %2</source>
         <translation>%1 nem írható: %2</translation>
     </message>
@@ -203,19 +208,19 @@ Kilépési kód: 0 nincs hiba, 1 a programban hiba van, 2 használati vagy I/O h
     </message>
     <message>
         <location line="+5"/>
-        <location line="+249"/>
+        <location line="+251"/>
         <source>Project</source>
         <translation>Projekt</translation>
     </message>
     <message>
-        <location line="-242"/>
-        <location line="+245"/>
+        <location line="-244"/>
+        <location line="+247"/>
         <source>Symbols</source>
         <translation>Szimbólumok</translation>
     </message>
     <message>
-        <location line="-241"/>
-        <location line="+242"/>
+        <location line="-243"/>
+        <location line="+244"/>
         <source>Watch lists</source>
         <translation>Figyelőlisták</translation>
     </message>
@@ -305,7 +310,7 @@ Kilépési kód: 0 nincs hiba, 1 a programban hiba van, 2 használati vagy I/O h
         <translation>&amp;Szerkesztés</translation>
     </message>
     <message>
-        <location line="+31"/>
+        <location line="+32"/>
         <source>Normally &amp;Open Contact</source>
         <translation>&amp;Záró érintkező</translation>
     </message>
@@ -328,6 +333,21 @@ Kilépési kód: 0 nincs hiba, 1 a programban hiba van, 2 használati vagy I/O h
         <location line="+2"/>
         <source>&amp;Falling-Edge Contact</source>
         <translation>&amp;Lefutó él érintkező</translation>
+    </message>
+    <message>
+        <location line="+2"/>
+        <source>Parall&amp;el Normally Closed Contact</source>
+        <translation>Párhuzamos n&amp;yitó érintkező</translation>
+    </message>
+    <message>
+        <location line="+2"/>
+        <source>Parallel Ri&amp;sing-Edge Contact</source>
+        <translation>Pár&amp;huzamos felfutó él érintkező</translation>
+    </message>
+    <message>
+        <location line="+2"/>
+        <source>Parallel Fallin&amp;g-Edge Contact</source>
+        <translation>Párhuzamos lefutó él érint&amp;kező</translation>
     </message>
     <message>
         <location line="+2"/>
@@ -355,7 +375,7 @@ Kilépési kód: 0 nincs hiba, 1 a programban hiba van, 2 használati vagy I/O h
         <translation>Elem el&amp;helyezése</translation>
     </message>
     <message>
-        <location line="+48"/>
+        <location line="+56"/>
         <source>&amp;Import Symbols (CSV)...</source>
         <translation>Szimbólumok im&amp;portálása (CSV)...</translation>
     </message>
@@ -400,7 +420,7 @@ Kilépési kód: 0 nincs hiba, 1 a programban hiba van, 2 használati vagy I/O h
         <translation>&amp;Mégis</translation>
     </message>
     <message>
-        <location line="-156"/>
+        <location line="-164"/>
         <source>Select</source>
         <translation>Kijelölés</translation>
     </message>
@@ -410,17 +430,18 @@ Kilépési kód: 0 nincs hiba, 1 a programban hiba van, 2 használati vagy I/O h
         <translation>Kijelölés (Esc)</translation>
     </message>
     <message>
-        <location line="+13"/>
+        <location line="+15"/>
         <source>%1 (%2): click the cells to place it</source>
         <translation>%1 (%2): kattintson a cellákra az elhelyezéshez</translation>
     </message>
     <message>
         <location line="+9"/>
+        <location line="+10"/>
         <source>%1: click a cell to place it; Esc or a right click ends</source>
         <translation>%1: kattintson egy cellára az elhelyezéshez; Esc vagy jobb kattintás befejezi</translation>
     </message>
     <message>
-        <location line="+15"/>
+        <location line="+11"/>
         <source>Cu&amp;t Rung</source>
         <translation>Létrafok k&amp;ivágása</translation>
     </message>
@@ -461,7 +482,7 @@ Kilépési kód: 0 nincs hiba, 1 a programban hiba van, 2 használati vagy I/O h
     </message>
     <message>
         <location line="+1"/>
-        <location filename="../app/gui/main_window_tools.cpp" line="+210"/>
+        <location filename="../app/gui/main_window_tools.cpp" line="+213"/>
         <source>CSV files (*.csv)</source>
         <translation>CSV-fájlok (*.csv)</translation>
     </message>
@@ -572,7 +593,7 @@ Ladder and instruction-list editor for VPC, Vigor, CPM1 and PL110.</source>
 Létradiagram- és utasításlista-szerkesztő VPC, Vigor, CPM1 és PL110 PLC-khez.</translation>
     </message>
     <message>
-        <location filename="../app/gui/main_window.cpp" line="-225"/>
+        <location filename="../app/gui/main_window.cpp" line="-227"/>
         <source>Rung Comment</source>
         <translation>Létrafok megjegyzése</translation>
     </message>
@@ -583,18 +604,18 @@ Létradiagram- és utasításlista-szerkesztő VPC, Vigor, CPM1 és PL110 PLC-kh
     </message>
     <message>
         <location line="+22"/>
-        <location line="+205"/>
+        <location line="+207"/>
         <source>Ladder</source>
         <translation>Létradiagram</translation>
     </message>
     <message>
-        <location line="-204"/>
-        <location line="+205"/>
+        <location line="-206"/>
+        <location line="+207"/>
         <source>Instruction List</source>
         <translation>Utasításlista</translation>
     </message>
     <message>
-        <location line="-196"/>
+        <location line="-198"/>
         <source>The list as typed had errors and now shows the ladder&apos;s program; Ctrl+Z in the list brings it back</source>
         <translation>A begépelt lista hibás volt, most a létradiagram programját mutatja; a listában a Ctrl+Z visszahozza</translation>
     </message>
@@ -605,12 +626,12 @@ Létradiagram- és utasításlista-szerkesztő VPC, Vigor, CPM1 és PL110 PLC-kh
     </message>
     <message>
         <location line="+1"/>
-        <location line="+53"/>
+        <location line="+55"/>
         <source>Untitled</source>
         <translation>Névtelen</translation>
     </message>
     <message numerus="yes">
-        <location line="-51"/>
+        <location line="-53"/>
         <source>%n rung(s)</source>
         <translation>
             <numerusform>%n létrafok</numerusform>
@@ -624,7 +645,7 @@ Létradiagram- és utasításlista-szerkesztő VPC, Vigor, CPM1 és PL110 PLC-kh
         </translation>
     </message>
     <message>
-        <location line="+18"/>
+        <location line="+20"/>
         <source>The instruction list has %1: line %2: %3. The ladder shows the last valid program.</source>
         <translation>Az utasításlistában %1 van: %2. sor: %3. A létradiagram az utolsó érvényes programot mutatja.</translation>
     </message>
@@ -817,7 +838,7 @@ Létradiagram- és utasításlista-szerkesztő VPC, Vigor, CPM1 és PL110 PLC-kh
         <translation>A példa nem nyitható meg</translation>
     </message>
     <message>
-        <location filename="../app/gui/main_window_tools.cpp" line="-147"/>
+        <location filename="../app/gui/main_window_tools.cpp" line="-149"/>
         <source>Cut rungs</source>
         <translation>Létrafokok kivágása</translation>
     </message>
@@ -864,7 +885,7 @@ Létradiagram- és utasításlista-szerkesztő VPC, Vigor, CPM1 és PL110 PLC-kh
         <translation>Operandus:</translation>
     </message>
     <message>
-        <location line="+27"/>
+        <location line="+29"/>
         <location line="+3"/>
         <location line="+7"/>
         <source>Replace Device</source>
@@ -1034,6 +1055,439 @@ Létradiagram- és utasításlista-szerkesztő VPC, Vigor, CPM1 és PL110 PLC-kh
     </message>
 </context>
 <context>
+    <name>rung::comms::Protocol</name>
+    <message>
+        <location filename="../comms/protocol/host_link.cpp" line="+205"/>
+        <source>normal completion (end code %1)</source>
+        <translation>normál befejezés (befejezési kód: %1)</translation>
+    </message>
+    <message>
+        <location line="+4"/>
+        <source>not executable in RUN mode (end code %1): switch the PLC to MONITOR to write</source>
+        <translation>RUN üzemmódban nem hajtható végre (befejezési kód: %1): íráshoz kapcsolja a PLC-t MONITOR módba</translation>
+    </message>
+    <message>
+        <location line="+6"/>
+        <source>not executable in MONITOR mode (end code %1)</source>
+        <translation>MONITOR üzemmódban nem hajtható végre (befejezési kód: %1)</translation>
+    </message>
+    <message>
+        <location line="+4"/>
+        <source>the PLC&apos;s memory is write-protected (end code %1)</source>
+        <translation>a PLC memóriája írásvédett (befejezési kód: %1)</translation>
+    </message>
+    <message>
+        <location line="+4"/>
+        <source>address over: the area ends before the last word asked for (end code %1)</source>
+        <translation>címtúllépés: a terület a kért utolsó szó előtt véget ér (befejezési kód: %1)</translation>
+    </message>
+    <message>
+        <location line="+6"/>
+        <source>not executable in PROGRAM mode (end code %1)</source>
+        <translation>PROGRAM üzemmódban nem hajtható végre (befejezési kód: %1)</translation>
+    </message>
+    <message>
+        <location line="+4"/>
+        <source>the PLC received the command with a wrong FCS (end code %1): noise on the line or a wrong parity setting</source>
+        <translation>a PLC hibás FCS-sel kapta a parancsot (befejezési kód: %1): zaj a vonalon vagy rossz paritásbeállítás</translation>
+    </message>
+    <message>
+        <location line="+6"/>
+        <source>the PLC found the command&apos;s format wrong (end code %1)</source>
+        <translation>a PLC szerint a parancs formátuma hibás (befejezési kód: %1)</translation>
+    </message>
+    <message>
+        <location line="+4"/>
+        <source>a number in the command is out of range (end code %1)</source>
+        <translation>a parancs egy száma tartományon kívül esik (befejezési kód: %1)</translation>
+    </message>
+    <message>
+        <location line="+4"/>
+        <source>the PLC does not support the command (end code %1)</source>
+        <translation>a PLC nem támogatja a parancsot (befejezési kód: %1)</translation>
+    </message>
+    <message>
+        <location line="+4"/>
+        <source>the command&apos;s frame is too long (end code %1)</source>
+        <translation>a parancs kerete túl hosszú (befejezési kód: %1)</translation>
+    </message>
+    <message>
+        <location line="+4"/>
+        <source>end code %1</source>
+        <translation>befejezési kód: %1</translation>
+    </message>
+    <message>
+        <location line="+24"/>
+        <source>Host Link: the reply starts with byte %1 instead of &quot;@&quot;: not a Host Link answer</source>
+        <translation>Host Link: a válasz %1 bájttal kezdődik &quot;@&quot; helyett: nem Host Link válasz</translation>
+    </message>
+    <message>
+        <location line="+10"/>
+        <source>Host Link: %1 characters without the end of a frame (CR)</source>
+        <translation>Host Link: %1 karakter keretvég (CR) nélkül</translation>
+    </message>
+    <message>
+        <location line="+17"/>
+        <source>Host Link: a frame too short to hold an FCS: %1</source>
+        <translation>Host Link: túl rövid keret, nem fér el benne FCS: %1</translation>
+    </message>
+    <message>
+        <location line="+6"/>
+        <source>Host Link: wrong FCS in the reply (received %1, computed %2): noise on the line or a wrong parity setting</source>
+        <translation>Host Link: hibás FCS a válaszban (érkezett: %1, számított: %2): zaj a vonalon vagy rossz paritásbeállítás</translation>
+    </message>
+    <message>
+        <location line="+9"/>
+        <source>Host Link: the reply has no unit number and header: %1</source>
+        <translation>Host Link: a válaszban nincs egységszám és fejléc: %1</translation>
+    </message>
+    <message>
+        <location line="+10"/>
+        <location line="+33"/>
+        <source>Host Link: unit %1 answered, unit %2 was asked</source>
+        <translation>Host Link: a(z) %1. egység válaszolt, a(z) %2. egységet kérdeztük</translation>
+    </message>
+    <message>
+        <location line="-27"/>
+        <source>Host Link: the PLC did not recognise the command %1 (IC)</source>
+        <translation>Host Link: a PLC nem ismerte fel a(z) %1 parancsot (IC)</translation>
+    </message>
+    <message>
+        <location line="+9"/>
+        <source>Host Link: the reply has no end code: %1</source>
+        <translation>Host Link: a válaszban nincs befejezési kód: %1</translation>
+    </message>
+    <message>
+        <location line="+26"/>
+        <source>Host Link: the reply is for %1, the command was %2</source>
+        <translation>Host Link: a válasz a(z) %1 parancsra szól, a parancs %2 volt</translation>
+    </message>
+    <message>
+        <location line="+6"/>
+        <source>Host Link: %1 refused: %2</source>
+        <translation>Host Link: a(z) %1 elutasítva: %2</translation>
+    </message>
+    <message>
+        <location line="+5"/>
+        <source>Host Link: the reply to %1 holds %2 characters of data that do not fit the command</source>
+        <translation>Host Link: a(z) %1 válasza %2 adatkaraktert tartalmaz, ami nem illik a parancshoz</translation>
+    </message>
+    <message>
+        <location line="+50"/>
+        <source>Host Link: no reply from unit %1 within %2 ms</source>
+        <translation>Host Link: a(z) %1. egység %2 ms alatt nem válaszolt</translation>
+    </message>
+    <message>
+        <location line="+5"/>
+        <source>Host Link: the reply stopped after %1 parts and %2 characters (%3) within %4 ms</source>
+        <translation>Host Link: a válasz %1 rész és %2 karakter (%3) után megszakadt %4 ms alatt</translation>
+    </message>
+    <message>
+        <location filename="../comms/protocol/modbus.cpp" line="+141"/>
+        <source>illegal function (exception %1h): the device does not support this function code</source>
+        <translation>érvénytelen funkció (%1h kivétel): az eszköz nem támogatja ezt a funkciókódot</translation>
+    </message>
+    <message>
+        <location line="+6"/>
+        <source>illegal data address (exception %1h): the address or the count is outside the device&apos;s map</source>
+        <translation>érvénytelen adatcím (%1h kivétel): a cím vagy a darabszám kívül esik az eszköz címtérképén</translation>
+    </message>
+    <message>
+        <location line="+6"/>
+        <source>illegal data value (exception %1h)</source>
+        <translation>érvénytelen adatérték (%1h kivétel)</translation>
+    </message>
+    <message>
+        <location line="+4"/>
+        <source>server device failure (exception %1h); the PL110 manual uses this code for an illegal data value</source>
+        <translation>a szolgáltató eszköz hibája (%1h kivétel); a PL110 kézikönyve ezt a kódot érvénytelen adatértékre használja</translation>
+    </message>
+    <message>
+        <location line="+6"/>
+        <source>acknowledge (exception %1h): the device accepted a long task</source>
+        <translation>nyugtázás (%1h kivétel): az eszköz hosszú feladatot fogadott el</translation>
+    </message>
+    <message>
+        <location line="+5"/>
+        <source>server device busy (exception %1h)</source>
+        <translation>a szolgáltató eszköz foglalt (%1h kivétel)</translation>
+    </message>
+    <message>
+        <location line="+4"/>
+        <source>memory parity error (exception %1h)</source>
+        <translation>memória-paritáshiba (%1h kivétel)</translation>
+    </message>
+    <message>
+        <location line="+4"/>
+        <source>gateway path unavailable (exception %1h)</source>
+        <translation>az átjáró útvonala nem érhető el (%1h kivétel)</translation>
+    </message>
+    <message>
+        <location line="+4"/>
+        <source>gateway target device failed to respond (exception %1h)</source>
+        <translation>az átjáró mögötti eszköz nem válaszolt (%1h kivétel)</translation>
+    </message>
+    <message>
+        <location line="+5"/>
+        <source>unknown exception code %1h</source>
+        <translation>ismeretlen kivételkód: %1h</translation>
+    </message>
+    <message>
+        <location line="+97"/>
+        <source>Modbus RTU: the reply starts %1, not an answer to function %2h</source>
+        <translation>Modbus RTU: a válasz így kezdődik: %1, ez nem a(z) %2h funkció válasza</translation>
+    </message>
+    <message>
+        <location line="+8"/>
+        <source>Modbus RTU: %1 bytes more than the %2-byte reply: %3</source>
+        <translation>Modbus RTU: %1 bájttal több a(z) %2 bájtos válasznál: %3</translation>
+    </message>
+    <message>
+        <location line="+11"/>
+        <source>Modbus RTU: wrong CRC in the reply (received %1, computed %2): noise on the line or a wrong baud rate or parity</source>
+        <translation>Modbus RTU: hibás CRC a válaszban (érkezett: %1, számított: %2): zaj a vonalon, vagy rossz átviteli sebesség vagy paritás</translation>
+    </message>
+    <message>
+        <location line="+15"/>
+        <source>Modbus TCP: not a Modbus header (protocol %1, length %2): %3</source>
+        <translation>Modbus TCP: nem Modbus fejléc (protokoll: %1, hossz: %2): %3</translation>
+    </message>
+    <message>
+        <location line="+10"/>
+        <source>Modbus TCP: %1 bytes more than the reply&apos;s length</source>
+        <translation>Modbus TCP: %1 bájttal több a válasz hosszánál</translation>
+    </message>
+    <message>
+        <location line="+5"/>
+        <source>Modbus TCP: the reply is for transaction %1, the request was %2</source>
+        <translation>Modbus TCP: a válasz a(z) %1. tranzakcióra szól, a kérés %2 volt</translation>
+    </message>
+    <message>
+        <location line="+12"/>
+        <source>Modbus: unit %1 answered, unit %2 was asked</source>
+        <translation>Modbus: a(z) %1. egység válaszolt, a(z) %2. egységet kérdeztük</translation>
+    </message>
+    <message>
+        <location line="+10"/>
+        <source>Modbus: an exception reply of %1 bytes</source>
+        <translation>Modbus: %1 bájtos kivételválasz</translation>
+    </message>
+    <message>
+        <location line="+6"/>
+        <source>Modbus: function %1h refused: %2</source>
+        <translation>Modbus: a(z) %1h funkció elutasítva: %2</translation>
+    </message>
+    <message>
+        <location line="+6"/>
+        <source>Modbus: the reply is for function %1h, the request was %2h</source>
+        <translation>Modbus: a válasz a(z) %1h funkcióra szól, a kérés %2h volt</translation>
+    </message>
+    <message>
+        <location line="+6"/>
+        <source>Modbus: the reply to function %1h does not match the request: %2</source>
+        <translation>Modbus: a(z) %1h funkció válasza nem illik a kéréshez: %2</translation>
+    </message>
+    <message>
+        <location line="+32"/>
+        <source>Modbus: no reply from unit %1 within %2 ms</source>
+        <translation>Modbus: a(z) %1. egység %2 ms alatt nem válaszolt</translation>
+    </message>
+    <message>
+        <location line="+6"/>
+        <source>Modbus: the reply stopped after %1 bytes (%2) within %3 ms</source>
+        <translation>Modbus: a válasz %1 bájt (%2) után megszakadt %3 ms alatt</translation>
+    </message>
+    <message>
+        <location filename="../comms/protocol/vigor_link.cpp" line="+94"/>
+        <source>no error (error 00h)</source>
+        <translation>nincs hiba (00h hiba)</translation>
+    </message>
+    <message>
+        <location line="+2"/>
+        <source>the PLC could not read the request&apos;s characters as hexadecimal (ASCII conversion error %1h)</source>
+        <translation>a PLC nem tudta hexadecimálisként olvasni a kérés karaktereit (%1h ASCII-konverziós hiba)</translation>
+    </message>
+    <message>
+        <location line="+6"/>
+        <source>the PLC received the request with a wrong sum (sum check error %1h): noise on the line or a wrong parity setting</source>
+        <translation>a PLC hibás összeggel kapta a kérést (%1h összegellenőrzési hiba): zaj a vonalon vagy rossz paritásbeállítás</translation>
+    </message>
+    <message>
+        <location line="+6"/>
+        <source>the PLC does not know the command (error %1h)</source>
+        <translation>a PLC nem ismeri a parancsot (%1h hiba)</translation>
+    </message>
+    <message>
+        <location line="+4"/>
+        <source>communication error (error %1h): the PLC may be in STOP or the parity does not match</source>
+        <translation>kommunikációs hiba (%1h hiba): a PLC STOP állapotban lehet, vagy nem egyezik a paritás</translation>
+    </message>
+    <message>
+        <location line="+6"/>
+        <source>address out of range (error %1h)</source>
+        <translation>tartományon kívüli cím (%1h hiba)</translation>
+    </message>
+    <message>
+        <location line="+4"/>
+        <source>unknown error code %1h</source>
+        <translation>ismeretlen hibakód: %1h</translation>
+    </message>
+    <message>
+        <location line="+21"/>
+        <source>Vigor link: the reply starts with byte %1 instead of ACK (06h): not a Computer Link answer</source>
+        <translation>Vigor link: a válasz %1 bájttal kezdődik ACK (06h) helyett: nem Computer Link válasz</translation>
+    </message>
+    <message>
+        <location line="+13"/>
+        <source>Vigor link: %1 bytes without the end of a frame (ETX)</source>
+        <translation>Vigor link: %1 bájt keretvég (ETX) nélkül</translation>
+    </message>
+    <message>
+        <location line="+16"/>
+        <source>Vigor link: wrong sum in the reply (received %1, computed %2): noise on the line or a wrong parity setting</source>
+        <translation>Vigor link: hibás összeg a válaszban (érkezett: %1, számított: %2): zaj a vonalon vagy rossz paritásbeállítás</translation>
+    </message>
+    <message>
+        <location line="+7"/>
+        <source>Vigor link: a reply of %1 bytes is too short or has an odd number of hex digits: %2</source>
+        <translation>Vigor link: a(z) %1 bájtos válasz túl rövid, vagy páratlan számú hexadecimális jegyet tartalmaz: %2</translation>
+    </message>
+    <message>
+        <location line="+10"/>
+        <location line="+9"/>
+        <source>Vigor link: the reply holds characters that are not upper-case hexadecimal: %1</source>
+        <translation>Vigor link: a válaszban nem nagybetűs hexadecimális karakterek vannak: %1</translation>
+    </message>
+    <message>
+        <location line="+8"/>
+        <source>Vigor link: station %1 answered, station %2 was asked</source>
+        <translation>Vigor link: a(z) %1. állomás válaszolt, a(z) %2. állomást kérdeztük</translation>
+    </message>
+    <message>
+        <location line="+8"/>
+        <source>Vigor link: the reply is for command %1h, the request was %2h</source>
+        <translation>Vigor link: a válasz a(z) %1h parancsra szól, a kérés %2h volt</translation>
+    </message>
+    <message>
+        <location line="+7"/>
+        <source>Vigor link: %1</source>
+        <translation>Vigor link: %1</translation>
+    </message>
+    <message>
+        <location line="+5"/>
+        <source>Vigor link: the reply carries %1 data bytes, %2 expected</source>
+        <translation>Vigor link: a válasz %1 adatbájtot hoz, %2 volt várható</translation>
+    </message>
+    <message>
+        <location line="+13"/>
+        <source>Vigor link: no reply from station %1 within %2 ms</source>
+        <translation>Vigor link: a(z) %1. állomás %2 ms alatt nem válaszolt</translation>
+    </message>
+    <message>
+        <location line="+5"/>
+        <source>Vigor link: the reply stopped after %1 bytes (%2) within %3 ms</source>
+        <translation>Vigor link: a válasz %1 bájt (%2) után megszakadt %3 ms alatt</translation>
+    </message>
+    <message>
+        <location filename="../comms/transport/pty_transport.cpp" line="+38"/>
+        <source>Cannot create a pseudo-terminal: %1</source>
+        <translation>Nem hozható létre pszeudoterminál: %1</translation>
+    </message>
+    <message>
+        <location line="+25"/>
+        <location filename="../comms/transport/serial_transport.cpp" line="+87"/>
+        <location line="+12"/>
+        <source>Cannot open %1: %2</source>
+        <translation>%1 nem nyitható meg: %2</translation>
+    </message>
+    <message>
+        <location line="+6"/>
+        <source>Cannot open %1: it is not a terminal</source>
+        <translation>%1 nem nyitható meg: nem terminál</translation>
+    </message>
+    <message>
+        <location line="+22"/>
+        <location line="+34"/>
+        <location filename="../comms/transport/serial_transport.cpp" line="+38"/>
+        <location line="+23"/>
+        <location filename="../comms/transport/tcp_transport.cpp" line="+78"/>
+        <location line="+30"/>
+        <source>%1 is not open</source>
+        <translation>%1 nincs megnyitva</translation>
+    </message>
+    <message>
+        <location line="-22"/>
+        <location filename="../comms/transport/serial_transport.cpp" line="-13"/>
+        <location filename="../comms/transport/tcp_transport.cpp" line="-24"/>
+        <source>Writing to %1 failed: %2</source>
+        <translation>Sikertelen írás ide: %1: %2</translation>
+    </message>
+    <message>
+        <location line="+6"/>
+        <location filename="../comms/transport/serial_transport.cpp" line="+2"/>
+        <location filename="../comms/transport/tcp_transport.cpp" line="+8"/>
+        <source>Writing to %1 did not finish in time</source>
+        <translation>Az írás ide: %1 nem fejeződött be időben</translation>
+    </message>
+    <message>
+        <location line="+24"/>
+        <source>%1 was closed by the other side: %2</source>
+        <translation>%1 kapcsolatát a másik oldal lezárta: %2</translation>
+    </message>
+    <message>
+        <location line="+14"/>
+        <location filename="../comms/transport/tcp_transport.cpp" line="+22"/>
+        <source>%1 was closed by the other side</source>
+        <translation>%1 kapcsolatát a másik oldal lezárta</translation>
+    </message>
+    <message>
+        <location filename="../comms/transport/serial_transport.cpp" line="-132"/>
+        <source>permission denied: add your user to the group that owns %1 (usually &quot;dialout&quot;: sudo usermod -aG dialout $USER, then log in again)</source>
+        <translation>hozzáférés megtagadva: vegye fel a felhasználót a(z) %1 tulajdonos csoportjába (általában &quot;dialout&quot;: sudo usermod -aG dialout $USER, majd jelentkezzen be újra)</translation>
+    </message>
+    <message>
+        <location line="+6"/>
+        <source>the port is busy: another program has it open</source>
+        <translation>a port foglalt: egy másik program használja</translation>
+    </message>
+    <message>
+        <location line="+5"/>
+        <source>no such port (unplugged?)</source>
+        <translation>nincs ilyen port (kihúzták?)</translation>
+    </message>
+    <message>
+        <location line="+87"/>
+        <source>%1 does not accept the line settings: %2</source>
+        <translation>%1 nem fogadja el a vonalbeállításokat: %2</translation>
+    </message>
+    <message>
+        <location line="+54"/>
+        <source>%1 failed while reading (unplugged?): %2</source>
+        <translation>%1 olvasás közben meghibásodott (kihúzták?): %2</translation>
+    </message>
+    <message>
+        <location line="+11"/>
+        <location line="+11"/>
+        <source>%1 is gone (unplugged?)</source>
+        <translation>%1 eltűnt (kihúzták?)</translation>
+    </message>
+    <message>
+        <location filename="../comms/transport/tcp_transport.cpp" line="-62"/>
+        <source>Cannot connect to %1: %2</source>
+        <translation>Nem sikerült kapcsolódni ide: %1: %2</translation>
+    </message>
+    <message>
+        <location line="+3"/>
+        <source>Cannot connect to %1 within %2 ms</source>
+        <translation>Nem sikerült %2 ms alatt kapcsolódni ide: %1</translation>
+    </message>
+    <message>
+        <location line="+83"/>
+        <source>Cannot listen on %1:%2: %3</source>
+        <translation>Nem lehet figyelni ezen: %1:%2: %3</translation>
+    </message>
+</context>
+<context>
     <name>rung::editor::CrossReferenceView</name>
     <message>
         <location filename="../editor/cross_reference_view.cpp" line="+48"/>
@@ -1089,12 +1543,12 @@ Létradiagram- és utasításlista-szerkesztő VPC, Vigor, CPM1 és PL110 PLC-kh
 <context>
     <name>rung::editor::Document</name>
     <message>
-        <location filename="../editor/document.cpp" line="+42"/>
+        <location filename="../editor/document.cpp" line="+44"/>
         <source>Edit symbols</source>
         <translation>Szimbólumok szerkesztése</translation>
     </message>
     <message>
-        <location line="+108"/>
+        <location line="+122"/>
         <source>Insert rung</source>
         <translation>Létrafok beszúrása</translation>
     </message>
@@ -1111,15 +1565,30 @@ Létradiagram- és utasításlista-szerkesztő VPC, Vigor, CPM1 és PL110 PLC-kh
         </translation>
     </message>
     <message>
-        <location line="+64"/>
+        <location line="+45"/>
+        <source>This line stood for a rung of another program: delete the line or undo the paste</source>
+        <translation>Ez a sor egy másik program létrafokát jelölte: törölje a sort, vagy vonja vissza a beillesztést</translation>
+    </message>
+    <message>
+        <location line="+54"/>
         <source>Edit instruction list</source>
         <translation>Utasításlista szerkesztése</translation>
+    </message>
+    <message>
+        <location line="+53"/>
+        <source>it has nothing to list yet</source>
+        <translation>még nincs benne semmi, ami a listába kerülhetne</translation>
+    </message>
+    <message>
+        <location line="+3"/>
+        <source>Rung %1 is not in the list: %2. Edit it in the ladder; this line keeps its place.</source>
+        <translation>A(z) %1. létrafok nincs a listában: %2. A létradiagramon szerkeszthető; ez a sor őrzi a helyét.</translation>
     </message>
 </context>
 <context>
     <name>rung::editor::IlEditor</name>
     <message>
-        <location filename="../editor/il_editor.cpp" line="+232"/>
+        <location filename="../editor/il_editor.cpp" line="+247"/>
         <source>Instruction list</source>
         <translation>Utasításlista</translation>
     </message>
@@ -1127,7 +1596,7 @@ Létradiagram- és utasításlista-szerkesztő VPC, Vigor, CPM1 és PL110 PLC-kh
 <context>
     <name>rung::editor::IlLexer</name>
     <message>
-        <location line="-174"/>
+        <location line="-187"/>
         <source>Default</source>
         <translation>Alapértelmezett</translation>
     </message>
@@ -1160,6 +1629,11 @@ Létradiagram- és utasításlista-szerkesztő VPC, Vigor, CPM1 és PL110 PLC-kh
         <location line="+2"/>
         <source>Unknown word</source>
         <translation>Ismeretlen szó</translation>
+    </message>
+    <message>
+        <location line="+2"/>
+        <source>Rung not in the list</source>
+        <translation>A listában nem szereplő létrafok</translation>
     </message>
 </context>
 <context>
@@ -1490,7 +1964,7 @@ Létradiagram- és utasításlista-szerkesztő VPC, Vigor, CPM1 és PL110 PLC-kh
         <translation>%1: a(z) %2 a konstansokat K és H nélkül írja</translation>
     </message>
     <message>
-        <location line="+6"/>
+        <location line="+5"/>
         <source>%1: # constants belong to CPM1 listings</source>
         <translation>%1: a # konstansok a CPM1 utasításlistákhoz tartoznak</translation>
     </message>
@@ -1523,7 +1997,7 @@ Létradiagram- és utasításlista-szerkesztő VPC, Vigor, CPM1 és PL110 PLC-kh
 <context>
     <name>rung::model::Checks</name>
     <message>
-        <location filename="../model/checks/checks_ladder.cpp" line="+70"/>
+        <location filename="../model/checks/checks_ladder.cpp" line="+71"/>
         <source>Reverse current: power would cross an element right to left to reach row %1</source>
         <translation>Visszáram: az áram jobbról balra haladna át egy elemen, hogy elérje a(z) %1. sort</translation>
     </message>
@@ -1543,12 +2017,18 @@ Létradiagram- és utasításlista-szerkesztő VPC, Vigor, CPM1 és PL110 PLC-kh
         <translation>%1 feltétel nélküli: közvetlenül a bal oldali gyűjtősínre van kötve</translation>
     </message>
     <message>
-        <location line="+15"/>
-        <source>This contact is not on any path from the left rail to an output</source>
-        <translation>Ez az érintkező nincs rajta egyetlen áramúton sem a bal oldali gyűjtősíntől egy kimenetig</translation>
+        <location line="+20"/>
+        <source>%1 (row %2, column %3) is not on any path from the left rail to an output: the list leaves it out</source>
+        <translation>%1 (%2. sor, %3. oszlop) nincs rajta egyetlen áramúton sem a bal oldali gyűjtősíntől egy kimenetig: a lista kihagyja</translation>
     </message>
     <message>
-        <location filename="../model/checks/checks_list.cpp" line="+130"/>
+        <location line="+49"/>
+        <location filename="../model/checks/checks_list.cpp" line="+78"/>
+        <source>Append %1</source>
+        <translation>%1 hozzáfűzése a végére</translation>
+    </message>
+    <message>
+        <location filename="../model/checks/checks_list.cpp" line="+77"/>
         <source>Rewrite the rung in the canonical form</source>
         <translation>A létrafok átírása kanonikus formára</translation>
     </message>
@@ -1558,39 +2038,49 @@ Létradiagram- és utasításlista-szerkesztő VPC, Vigor, CPM1 és PL110 PLC-kh
         <translation>Több mint %1 %2 egymás után: a PLC elutasítja a programot</translation>
     </message>
     <message>
-        <location line="+37"/>
-        <source>Stacked ANB: combine each block with ANB as soon as it is complete</source>
-        <translation>Halmozott ANB: minden blokkot kapcsoljon ANB-vel, amint elkészült</translation>
+        <location line="+38"/>
+        <source>Stacked %1: combine each block with %1 as soon as it is complete</source>
+        <translation>Halmozott %1: minden blokkot kapcsoljon %1-vel, amint elkészült</translation>
     </message>
     <message numerus="yes">
-        <location line="+2"/>
-        <source>Stacked ORB: %n blocks are open; an OR chain needs less stack</source>
+        <location line="+3"/>
+        <source>Stacked %1: %n blocks are open; an OR chain needs less stack</source>
         <translation>
-            <numerusform>Halmozott ORB: %n blokk nyitott; egy OR-lánc kevesebb vermet igényel</numerusform>
+            <numerusform>Halmozott %1: %n blokk nyitott; egy OR-lánc kevesebb vermet igényel</numerusform>
         </translation>
     </message>
     <message>
-        <location line="+6"/>
+        <location line="+7"/>
         <source>A single contact joined with %1 is simpler as %2</source>
         <translation>Egyetlen érintkező %1 kapcsolással egyszerűbb %2 formában</translation>
     </message>
     <message>
-        <location line="+10"/>
+        <location line="+11"/>
         <source>A single device in parallel with a block belongs on the lower row: the block first, then an OR, drops the %1</source>
         <translation>Egy blokkal párhuzamos egyetlen operandus az alsó sorba való: előbb a blokk, majd egy OR, így elmarad a(z) %1</translation>
     </message>
     <message>
         <location line="+3"/>
+        <source>Contacts in series need no %1: each can follow the one before it as %2</source>
+        <translation>Soros érintkezőkhöz nem kell %1: mindegyik %2 utasítással követheti az előzőt</translation>
+    </message>
+    <message>
+        <location line="+5"/>
         <source>The block after a single contact can move to the front and drop the %1</source>
         <translation>Az egyetlen érintkező utáni blokk előre kerülhet, így elmarad a(z) %1</translation>
     </message>
     <message>
-        <location line="+11"/>
+        <location line="+12"/>
         <source>Put the single device below the block and drop the %1</source>
         <translation>Az egyetlen operandus kerüljön a blokk alá, így elmarad a(z) %1</translation>
     </message>
     <message>
-        <location line="+3"/>
+        <location line="+4"/>
+        <source>Join the contacts in series and drop the %1</source>
+        <translation>Az érintkezők sorba kötése, így elmarad a(z) %1</translation>
+    </message>
+    <message>
+        <location line="+1"/>
         <source>Move the block to the front and drop the %1</source>
         <translation>A blokk kerüljön előre, így elmarad a(z) %1</translation>
     </message>
@@ -1620,6 +2110,16 @@ Létradiagram- és utasításlista-szerkesztő VPC, Vigor, CPM1 és PL110 PLC-kh
         <translation>
             <numerusform>%n MPS maradt MPP nélkül a létrafok végén</numerusform>
         </translation>
+    </message>
+    <message>
+        <location line="+147"/>
+        <source>%1 is driven twice; a coil may be driven only once (the first is on line %2)</source>
+        <translation>%1 kétszer van vezérelve; egy tekercs csak egyszer vezérelhető (az első a(z) %2. sorban)</translation>
+    </message>
+    <message>
+        <location line="+12"/>
+        <source>%1 is driven twice; a coil may be driven only once (the first is in rung %2)</source>
+        <translation>%1 kétszer van vezérelve; egy tekercs csak egyszer vezérelhető (az első a(z) %2. létrafokon)</translation>
     </message>
     <message>
         <location filename="../model/checks/checks_nesting.cpp" line="+58"/>
@@ -1702,7 +2202,7 @@ Létradiagram- és utasításlista-szerkesztő VPC, Vigor, CPM1 és PL110 PLC-kh
         <translation>A léptetőlánc nincs RET-tel lezárva</translation>
     </message>
     <message>
-        <location filename="../model/checks/checks_list.cpp" line="+66"/>
+        <location filename="../model/checks/checks_list.cpp" line="-83"/>
         <source>Set value %1 is out of range</source>
         <translation>A(z) %1 beállított érték tartományon kívül esik</translation>
     </message>
@@ -1727,22 +2227,12 @@ Létradiagram- és utasításlista-szerkesztő VPC, Vigor, CPM1 és PL110 PLC-kh
         <translation>A(z) %1 szám időzítőként és számlálóként is használatban van; közös tartományuk van</translation>
     </message>
     <message>
-        <location line="+22"/>
-        <source>%1 is driven twice (&quot;Oper duplication&quot;); the first is on line %2</source>
-        <translation>%1 kétszer van vezérelve (&quot;Oper duplication&quot;); az első a(z) %2. sorban</translation>
-    </message>
-    <message>
-        <location line="+3"/>
+        <location line="+27"/>
         <source>%1 is driven twice; the later one wins (first on line %2)</source>
         <translation>%1 kétszer van vezérelve; a későbbi érvényesül (az első a(z) %2. sorban)</translation>
     </message>
     <message>
-        <location line="+7"/>
-        <source>%1 is driven twice (&quot;Oper duplication&quot;); the first is in rung %2</source>
-        <translation>%1 kétszer van vezérelve (&quot;Oper duplication&quot;); az első a(z) %2. létrafokon</translation>
-    </message>
-    <message>
-        <location line="+2"/>
+        <location line="+11"/>
         <source>%1 is driven twice; the later one wins (first in rung %2)</source>
         <translation>%1 kétszer van vezérelve; a későbbi érvényesül (az első a(z) %2. létrafokon)</translation>
     </message>
@@ -1750,6 +2240,41 @@ Létradiagram- és utasításlista-szerkesztő VPC, Vigor, CPM1 és PL110 PLC-kh
         <location line="+13"/>
         <source>The program needs %1 steps; %2 holds %3</source>
         <translation>A program %1 lépést igényel; a(z) %2 kapacitása %3</translation>
+    </message>
+    <message>
+        <location filename="../model/checks/operand_rules.cpp" line="+20"/>
+        <source>operand %1</source>
+        <translation>%1. operandus</translation>
+    </message>
+    <message>
+        <location line="+44"/>
+        <source>%1 or %2</source>
+        <translation>%1 vagy %2</translation>
+    </message>
+    <message>
+        <location line="+1"/>
+        <source>the %1 of %2 must be %3, not %4</source>
+        <translation>a(z) %2 %1 értéke %3 lehet, nem %4</translation>
+    </message>
+    <message>
+        <location line="+5"/>
+        <source>the %1 of %2 must be from %3 to %4, not %5</source>
+        <translation>a(z) %2 %1 értéke %3 és %4 között lehet, nem %5</translation>
+    </message>
+    <message>
+        <location line="+23"/>
+        <source>%1 takes only %2..%3, not %4</source>
+        <translation>a(z) %1 csak %2..%3 operandust fogad el, nem %4</translation>
+    </message>
+    <message>
+        <location line="+10"/>
+        <source>%1 cannot write %2: %3 are written only by %4</source>
+        <translation>a(z) %1 nem írhatja a(z) %2 operandust: a(z) %3 csak a(z) %4 írhatja</translation>
+    </message>
+    <message>
+        <location line="+10"/>
+        <source>%1 is not simulated: it does nothing in the simulator</source>
+        <translation>%1 nincs szimulálva: a szimulátorban nem csinál semmit</translation>
     </message>
 </context>
 <context>
@@ -1879,7 +2404,17 @@ Létradiagram- és utasításlista-szerkesztő VPC, Vigor, CPM1 és PL110 PLC-kh
         <translation>Túl sok hiba; a lista többi része nem lett beolvasva</translation>
     </message>
     <message>
-        <location line="+110"/>
+        <location line="+107"/>
+        <source>Program sections such as &apos;%1&apos; are not supported: a listing is one main program, run at every scan</source>
+        <translation>A programszakaszok (például &apos;%1&apos;) nem támogatottak: az utasításlista egyetlen főprogram, amely minden ciklusban lefut</translation>
+    </message>
+    <message>
+        <location line="+5"/>
+        <source>Program sections such as &apos;%1&apos; are not supported: a listing is one main program, run at every scan; put what runs once under LD %2 (ON in the first scan). Interrupt programs are not supported</source>
+        <translation>A programszakaszok (például &apos;%1&apos;) nem támogatottak: az utasításlista egyetlen főprogram, amely minden ciklusban lefut; ami egyszer fut, kerüljön az LD %2 alá (az első ciklusban BE). Megszakítási programok nem támogatottak</translation>
+    </message>
+    <message>
+        <location line="+22"/>
         <source>Unknown instruction &apos;%1&apos; for %2</source>
         <translation>Ismeretlen utasítás: &apos;%1&apos; (%2)</translation>
     </message>
@@ -1900,12 +2435,12 @@ Létradiagram- és utasításlista-szerkesztő VPC, Vigor, CPM1 és PL110 PLC-kh
     </message>
     <message>
         <location line="+19"/>
-        <location line="+174"/>
+        <location line="+172"/>
         <source>&apos;%1...&apos; is too long for an operand</source>
         <translation>A(z) &apos;%1...&apos; túl hosszú egy operandushoz</translation>
     </message>
     <message numerus="yes">
-        <location line="-116"/>
+        <location line="-114"/>
         <source>%1 needs %n operand(s): %2</source>
         <translation>
             <numerusform>%1 %n operandust igényel: %2</numerusform>
@@ -1934,7 +2469,7 @@ Létradiagram- és utasításlista-szerkesztő VPC, Vigor, CPM1 és PL110 PLC-kh
         <translation>%1 tartományon kívül esik: itt %2..%3 lehet</translation>
     </message>
     <message>
-        <location line="+60"/>
+        <location line="+58"/>
         <source>%1: a label number is expected</source>
         <translation>%1: címkeszám kell</translation>
     </message>
@@ -2219,7 +2754,7 @@ Létradiagram- és utasításlista-szerkesztő VPC, Vigor, CPM1 és PL110 PLC-kh
 <context>
     <name>rung::model::Target</name>
     <message>
-        <location filename="../model/target/target_cpm1.cpp" line="+36"/>
+        <location filename="../model/target/target_cpm1.cpp" line="+38"/>
         <source>input channels</source>
         <translation>bemeneti csatornák</translation>
     </message>
@@ -2245,7 +2780,7 @@ Létradiagram- és utasításlista-szerkesztő VPC, Vigor, CPM1 és PL110 PLC-kh
     </message>
     <message>
         <location line="+5"/>
-        <location filename="../model/target/target_pl110.cpp" line="+79"/>
+        <location filename="../model/target/target_pl110.cpp" line="+86"/>
         <location filename="../model/target/target_vigor.cpp" line="+115"/>
         <location filename="../model/target/target_vpc.cpp" line="+61"/>
         <source>timers</source>
@@ -2281,7 +2816,7 @@ Létradiagram- és utasításlista-szerkesztő VPC, Vigor, CPM1 és PL110 PLC-kh
     </message>
     <message>
         <location line="+2"/>
-        <location filename="../model/target/target_pl110.cpp" line="+41"/>
+        <location filename="../model/target/target_pl110.cpp" line="+47"/>
         <location filename="../model/target/target_vigor.cpp" line="+21"/>
         <source>ON for the first scan</source>
         <translation>az első ciklusban BE</translation>
@@ -2327,7 +2862,7 @@ Létradiagram- és utasításlista-szerkesztő VPC, Vigor, CPM1 és PL110 PLC-kh
     </message>
     <message>
         <location line="+5"/>
-        <location filename="../model/target/target_pl110.cpp" line="+23"/>
+        <location filename="../model/target/target_pl110.cpp" line="+28"/>
         <location filename="../model/target/target_vigor.cpp" line="+56"/>
         <location filename="../model/target/target_vpc.cpp" line="+5"/>
         <source>Start a block with a normally open contact</source>
@@ -2441,7 +2976,7 @@ Létradiagram- és utasításlista-szerkesztő VPC, Vigor, CPM1 és PL110 PLC-kh
         <translation>Nagysebességű időzítő, 0,01 s, a BCD beállított értéktől lefelé számol</translation>
     </message>
     <message>
-        <location line="+5"/>
+        <location line="+6"/>
         <source>Down counter: count = last but one block, reset = last block</source>
         <translation>Lefelé számláló: számlálás = utolsó előtti blokk, törlés = utolsó blokk</translation>
     </message>
@@ -2478,21 +3013,51 @@ Létradiagram- és utasításlista-szerkesztő VPC, Vigor, CPM1 és PL110 PLC-kh
         <translation>Csatorna vagy konstans mozgatása</translation>
     </message>
     <message>
-        <location line="+5"/>
+        <location line="+8"/>
+        <source>R = the value of the BCD digits of S</source>
+        <translation>R = S BCD számjegyeinek értéke</translation>
+    </message>
+    <message>
+        <location line="+2"/>
+        <source>R = S as BCD digits</source>
+        <translation>R = S BCD számjegyekkel</translation>
+    </message>
+    <message>
+        <location line="+2"/>
+        <source>Invert every bit of a channel</source>
+        <translation>Egy csatorna minden bitjének negálása</translation>
+    </message>
+    <message>
+        <location line="+2"/>
+        <source>R = I1 AND I2, bit by bit</source>
+        <translation>R = I1 AND I2, bitenként</translation>
+    </message>
+    <message>
+        <location line="+2"/>
+        <source>R = I1 OR I2, bit by bit</source>
+        <translation>R = I1 OR I2, bitenként</translation>
+    </message>
+    <message>
+        <location line="+2"/>
+        <source>R = I1 XOR I2, bit by bit</source>
+        <translation>R = I1 XOR I2, bitenként</translation>
+    </message>
+    <message>
+        <location line="+11"/>
         <location filename="../model/target/target_vigor.cpp" line="+23"/>
         <source>No operation</source>
         <translation>Nincs művelet</translation>
     </message>
     <message>
         <location line="+3"/>
-        <location filename="../model/target/target_pl110.cpp" line="+92"/>
+        <location filename="../model/target/target_pl110.cpp" line="+106"/>
         <location filename="../model/target/target_vigor.cpp" line="-1"/>
         <location filename="../model/target/target_vpc.cpp" line="+5"/>
         <source>End of the program</source>
         <translation>A program vége</translation>
     </message>
     <message>
-        <location filename="../model/target/target_pl110.cpp" line="-246"/>
+        <location filename="../model/target/target_pl110.cpp" line="-273"/>
         <source>IF contact: ON while S1 ? S2 is true</source>
         <translation>IF érintkező: BE, amíg S1 ? S2 igaz</translation>
     </message>
@@ -2507,12 +3072,12 @@ Létradiagram- és utasításlista-szerkesztő VPC, Vigor, CPM1 és PL110 PLC-kh
         <translation>digitális kimenetek</translation>
     </message>
     <message>
-        <location line="+3"/>
+        <location line="+4"/>
         <source>bistable relays</source>
         <translation>bistabil relék</translation>
     </message>
     <message>
-        <location line="+2"/>
+        <location line="+3"/>
         <source>markers</source>
         <translation>markerek</translation>
     </message>
@@ -2522,7 +3087,7 @@ Létradiagram- és utasításlista-szerkesztő VPC, Vigor, CPM1 és PL110 PLC-kh
         <translation>változók</translation>
     </message>
     <message>
-        <location line="+6"/>
+        <location line="+8"/>
         <source>special markers</source>
         <translation>speciális markerek</translation>
     </message>
@@ -2539,17 +3104,17 @@ Létradiagram- és utasításlista-szerkesztő VPC, Vigor, CPM1 és PL110 PLC-kh
         <translation>analóg kimenetek</translation>
     </message>
     <message>
-        <location line="+3"/>
+        <location line="+5"/>
         <source>timer presets</source>
         <translation>időzítők beállított értékei</translation>
     </message>
     <message>
-        <location line="+2"/>
+        <location line="+3"/>
         <source>counter presets</source>
         <translation>számlálók beállított értékei</translation>
     </message>
     <message>
-        <location line="+2"/>
+        <location line="+3"/>
         <source>EEPROM words</source>
         <translation>EEPROM szavak</translation>
     </message>
@@ -2585,12 +3150,17 @@ Létradiagram- és utasításlista-szerkesztő VPC, Vigor, CPM1 és PL110 PLC-kh
         <translation>minden ciklusban átvált</translation>
     </message>
     <message>
-        <location line="+2"/>
+        <location line="+3"/>
         <source>TEST: inputs are taken from SM37</source>
         <translation>TEST: a bemenetek az SM37-ből jönnek</translation>
     </message>
     <message>
         <location line="+2"/>
+        <source>inputs I1..I8 in TEST mode (bit 0 = I1), cleared at power-on</source>
+        <translation>az I1..I8 bemenetek TEST módban (0. bit = I1), bekapcsoláskor törlődik</translation>
+    </message>
+    <message>
+        <location line="+4"/>
         <source>counters C1..C16 off, timers T49..T64 on</source>
         <translation>C1..C16 számlálók kikapcsolva, T49..T64 időzítők bekapcsolva</translation>
     </message>
@@ -2657,7 +3227,7 @@ Létradiagram- és utasításlista-szerkesztő VPC, Vigor, CPM1 és PL110 PLC-kh
         <translation>Közvetlen bemeneti nyitó érintkező párhuzamosan</translation>
     </message>
     <message>
-        <location line="+7"/>
+        <location line="+12"/>
         <source>Immediate output coil: writes the terminal at once</source>
         <translation>Közvetlen kimeneti tekercs: azonnal írja a kimeneti kapcsot</translation>
     </message>
@@ -2667,7 +3237,12 @@ Létradiagram- és utasításlista-szerkesztő VPC, Vigor, CPM1 és PL110 PLC-kh
         <translation>Bistabil relé tekercse: minden működtetés átbillenti a relét</translation>
     </message>
     <message>
-        <location line="+5"/>
+        <location line="+8"/>
+        <source>bit number</source>
+        <translation>bitszám</translation>
+    </message>
+    <message>
+        <location line="+2"/>
         <source>Set a bit (0..15) of a word to 1</source>
         <translation>Egy szó egy bitjének (0..15) 1-be állítása</translation>
     </message>
@@ -2677,7 +3252,12 @@ Létradiagram- és utasításlista-szerkesztő VPC, Vigor, CPM1 és PL110 PLC-kh
         <translation>Egy szó egy bitjének (0..15) 0-ba állítása</translation>
     </message>
     <message>
-        <location line="+6"/>
+        <location line="+8"/>
+        <source>time base (ms)</source>
+        <translation>időalap (ms)</translation>
+    </message>
+    <message>
+        <location line="+2"/>
         <source>On-delay timer: T ON once the time reaches PT; OFF resets</source>
         <translation>Bekapcsolás-késleltetésű időzítő: T BE, amint az idő eléri a PT-t; KI törli</translation>
     </message>
@@ -3110,7 +3690,57 @@ Létradiagram- és utasításlista-szerkesztő VPC, Vigor, CPM1 és PL110 PLC-kh
         <translation>D = D - 1</translation>
     </message>
     <message>
-        <location line="+5"/>
+        <location line="+3"/>
+        <source>D = S1 AND S2, bit by bit</source>
+        <translation>D = S1 AND S2, bitenként</translation>
+    </message>
+    <message>
+        <location line="+3"/>
+        <source>D = S1 OR S2, bit by bit</source>
+        <translation>D = S1 OR S2, bitenként</translation>
+    </message>
+    <message>
+        <location line="+3"/>
+        <source>D = S1 XOR S2, bit by bit</source>
+        <translation>D = S1 XOR S2, bitenként</translation>
+    </message>
+    <message>
+        <location line="+3"/>
+        <source>D = every bit of S inverted</source>
+        <translation>D = S minden bitje negálva</translation>
+    </message>
+    <message>
+        <location line="+3"/>
+        <source>D = S as BCD digits</source>
+        <translation>D = S BCD számjegyekkel</translation>
+    </message>
+    <message>
+        <location line="+3"/>
+        <source>D = the value of the BCD digits S</source>
+        <translation>D = az S BCD számjegyek értéke</translation>
+    </message>
+    <message>
+        <location line="+4"/>
+        <source>Read n words of special module m1, from m2</source>
+        <translation>n szó olvasása az m1 speciális modul m2 címétől</translation>
+    </message>
+    <message>
+        <location line="+4"/>
+        <source>Write n words to special module m1, at m2</source>
+        <translation>n szó írása az m1 speciális modul m2 címére</translation>
+    </message>
+    <message>
+        <location line="+3"/>
+        <source>Sum and parity check of n bytes</source>
+        <translation>n bájt összege és paritásellenőrzése</translation>
+    </message>
+    <message>
+        <location line="+3"/>
+        <source>Refresh n inputs or outputs now</source>
+        <translation>n bemenet vagy kimenet azonnali frissítése</translation>
+    </message>
+    <message>
+        <location line="+6"/>
         <source>Communication or conversion instruction</source>
         <translation>Kommunikációs vagy konverziós utasítás</translation>
     </message>
@@ -3205,16 +3835,31 @@ Létradiagram- és utasításlista-szerkesztő VPC, Vigor, CPM1 és PL110 PLC-kh
         <source>End of a jump</source>
         <translation>Ugrás vége</translation>
     </message>
+    <message>
+        <location filename="../model/target/target_cpm1_maps.cpp" line="+16"/>
+        <source>Omron Host Link (C-mode)</source>
+        <translation>Omron Host Link (C mód)</translation>
+    </message>
+    <message>
+        <location filename="../model/target/target_pl110_maps.cpp" line="+16"/>
+        <source>PL110 MODBUS RTU slave</source>
+        <translation>PL110 MODBUS RTU szolga</translation>
+    </message>
+    <message>
+        <location filename="../model/target/target_vigor_maps.cpp" line="+15"/>
+        <source>Vigor Computer Link</source>
+        <translation>Vigor Computer Link</translation>
+    </message>
+    <message>
+        <location line="+19"/>
+        <source>Vigor CP2 MODBUS slave</source>
+        <translation>Vigor CP2 MODBUS szolga</translation>
+    </message>
 </context>
 <context>
     <name>rung::simulator::Compiler</name>
     <message>
-        <location filename="../simulator/compiler_detail.h" line="+67"/>
-        <source>%1 is not simulated: it does nothing in the simulator</source>
-        <translation>%1 nincs szimulálva: a szimulátorban nem csinál semmit</translation>
-    </message>
-    <message>
-        <location line="+15"/>
+        <location filename="../simulator/compiler_detail.h" line="+101"/>
         <source>%1 needs operand %2</source>
         <translation>%1: hiányzik a(z) %2. operandus</translation>
     </message>
@@ -3224,7 +3869,7 @@ Létradiagram- és utasításlista-szerkesztő VPC, Vigor, CPM1 és PL110 PLC-kh
         <translation>%1 nem bit típusú operandus</translation>
     </message>
     <message>
-        <location line="+12"/>
+        <location line="+22"/>
         <source>constant %1 is out of range</source>
         <translation>a(z) %1 konstans tartományon kívül esik</translation>
     </message>
@@ -3274,7 +3919,7 @@ Létradiagram- és utasításlista-szerkesztő VPC, Vigor, CPM1 és PL110 PLC-kh
         <translation>%1 nem számláló</translation>
     </message>
     <message>
-        <location line="+45"/>
+        <location line="+67"/>
         <source>%1 needs three bit devices from %2</source>
         <translation>%1 három bit típusú operandust igényel %2-tól</translation>
     </message>
@@ -3304,12 +3949,12 @@ Létradiagram- és utasításlista-szerkesztő VPC, Vigor, CPM1 és PL110 PLC-kh
         <translation>a(z) %1 szavas blokk túlnyúlik a terület végén</translation>
     </message>
     <message>
-        <location filename="../simulator/compiler.cpp" line="+113"/>
+        <location filename="../simulator/compiler.cpp" line="+137"/>
         <source>unknown instruction</source>
         <translation>ismeretlen utasítás</translation>
     </message>
     <message>
-        <location line="+18"/>
+        <location line="+19"/>
         <source>more than %1 nested %2</source>
         <translation>több mint %1 egymásba ágyazott %2</translation>
     </message>
@@ -3329,7 +3974,7 @@ Létradiagram- és utasításlista-szerkesztő VPC, Vigor, CPM1 és PL110 PLC-kh
         <translation>%1 nem operandus</translation>
     </message>
     <message>
-        <location line="+96"/>
+        <location line="+97"/>
         <source>the program has no target</source>
         <translation>a programnak nincs célrendszere</translation>
     </message>
@@ -3337,18 +3982,28 @@ Létradiagram- és utasításlista-szerkesztő VPC, Vigor, CPM1 és PL110 PLC-kh
 <context>
     <name>rung::simulator::Engine</name>
     <message>
-        <location filename="../simulator/engine_execute.cpp" line="+77"/>
+        <location filename="../simulator/engine_execute.cpp" line="+76"/>
         <source>set value %1 is not a BCD number; the instruction is skipped</source>
         <translation>a(z) %1 beállított érték nem BCD szám; az utasítás kimarad</translation>
     </message>
     <message>
-        <location line="+17"/>
+        <location line="+43"/>
+        <source>%1 does not fit in BCD (0..%2); the destination is unchanged</source>
+        <translation>%1 nem fér el BCD-ben (0..%2); a cél nem változik</translation>
+    </message>
+    <message>
+        <location line="+13"/>
+        <source>%1 is not a BCD number; the destination is unchanged</source>
+        <translation>%1 nem BCD szám; a cél nem változik</translation>
+    </message>
+    <message>
+        <location line="+18"/>
         <source>result %1 is outside 0..9999; %2 is written</source>
         <translation>a(z) %1 eredmény kívül esik a 0..9999 tartományon; %2 íródik be</translation>
     </message>
     <message>
-        <location line="+350"/>
-        <location line="+52"/>
+        <location line="+355"/>
+        <location line="+56"/>
         <source>division by zero; the destination is unchanged</source>
         <translation>osztás nullával; a cél változatlan marad</translation>
     </message>

@@ -42,25 +42,8 @@
 <context>
     <name>rung::app::Cli</name>
     <message>
-        <location filename="../app/cli/cli.cpp" line="+22"/>
-        <source>usage:
-  rungstudio-cli check FILE [--target vpc|vigor|cpm1|pl110] [--model M]
-  rungstudio-cli convert FILE [--target T] [--from il|ladder|project] --to il|ladder|project [-o OUT]
-  rungstudio-cli simulate FILE [--target T] --scans N [--period MS] [--set DEV=VALUE@SCAN]... --trace DEV[,DEV...]
-FILE is a listing (.il), a ladder text (.ladder) or a project (.rung).
---lang en|hu|it: the language of the messages (else the locale&apos;s, LANG).
-Exit status: 0 no error, 1 the program has errors, 2 usage or I/O error.</source>
-        <translation>uso:
-  rungstudio-cli check FILE [--target vpc|vigor|cpm1|pl110] [--model M]
-  rungstudio-cli convert FILE [--target T] [--from il|ladder|project] --to il|ladder|project [-o OUT]
-  rungstudio-cli simulate FILE [--target T] --scans N [--period MS] [--set DEV=VALUE@SCAN]... --trace DEV[,DEV...]
-FILE è una lista istruzioni (.il), un testo ladder (.ladder) o un progetto (.rung).
---lang en|hu|it: la lingua dei messaggi (altrimenti quella della localizzazione, LANG).
-Codice di uscita: 0 nessun errore, 1 il programma contiene errori, 2 errore di utilizzo o di I/O.</translation>
-    </message>
-    <message>
-        <location line="+18"/>
-        <location line="+32"/>
+        <location filename="../app/cli/cli.cpp" line="+40"/>
+        <location line="+35"/>
         <source>unexpected argument %1</source>
         <translation>argomento non previsto: %1</translation>
     </message>
@@ -70,12 +53,34 @@ Codice di uscita: 0 nessun errore, 1 il programma contiene errori, 2 errore di u
         <translation>--to deve essere il, ladder o project</translation>
     </message>
     <message>
-        <location line="+13"/>
-        <source>nothing written: the input has errors</source>
-        <translation>nessun file scritto: l&apos;ingresso contiene errori</translation>
+        <location line="-59"/>
+        <source>usage:
+  rungstudio-cli check FILE [--target vpc|vigor|cpm1|pl110] [--model M]
+  rungstudio-cli convert FILE [--target T] [--from il|ladder|project] --to il|ladder|project [-o OUT] [--force]
+  rungstudio-cli simulate FILE [--target T] --scans N [--period MS] [--set DEV=VALUE@SCAN]... --trace DEV[,DEV...]
+FILE is a listing (.il), a ladder text (.ladder) or a project (.rung).
+--lang en|hu|it: the language of the messages (else the locale&apos;s, LANG).
+Exit status: 0 no error, 1 the program has errors, 2 usage or I/O error.</source>
+        <translation>uso:
+  rungstudio-cli check FILE [--target vpc|vigor|cpm1|pl110] [--model M]
+  rungstudio-cli convert FILE [--target T] [--from il|ladder|project] --to il|ladder|project [-o OUT] [--force]
+  rungstudio-cli simulate FILE [--target T] --scans N [--period MS] [--set DEV=VALUE@SCAN]... --trace DEV[,DEV...]
+FILE è una lista istruzioni (.il), un testo ladder (.ladder) o un progetto (.rung).
+--lang en|hu|it: la lingua dei messaggi (altrimenti quella della localizzazione, LANG).
+Codice di uscita: 0 nessun errore, 1 il programma contiene errori, 2 errore di utilizzo o di I/O.</translation>
     </message>
     <message>
-        <location line="+21"/>
+        <location line="+80"/>
+        <source>nothing written: the input does not parse or convert whole</source>
+        <translation>nessun file scritto: l&apos;ingresso non si legge o non si converte per intero</translation>
+    </message>
+    <message>
+        <location line="+4"/>
+        <source>nothing written: the input has errors (--force writes it anyway)</source>
+        <translation>nessun file scritto: l&apos;ingresso contiene errori (--force lo scrive comunque)</translation>
+    </message>
+    <message>
+        <location line="+25"/>
         <source>cannot write %1: %2</source>
         <translation>impossibile scrivere %1: %2</translation>
     </message>
@@ -203,19 +208,19 @@ Codice di uscita: 0 nessun errore, 1 il programma contiene errori, 2 errore di u
     </message>
     <message>
         <location line="+5"/>
-        <location line="+249"/>
+        <location line="+251"/>
         <source>Project</source>
         <translation>Progetto</translation>
     </message>
     <message>
-        <location line="-242"/>
-        <location line="+245"/>
+        <location line="-244"/>
+        <location line="+247"/>
         <source>Symbols</source>
         <translation>Simboli</translation>
     </message>
     <message>
-        <location line="-241"/>
-        <location line="+242"/>
+        <location line="-243"/>
+        <location line="+244"/>
         <source>Watch lists</source>
         <translation>Liste di osservazione</translation>
     </message>
@@ -305,7 +310,7 @@ Codice di uscita: 0 nessun errore, 1 il programma contiene errori, 2 errore di u
         <translation>&amp;Modifica</translation>
     </message>
     <message>
-        <location line="+31"/>
+        <location line="+32"/>
         <source>Normally &amp;Open Contact</source>
         <translation>Contatto normalmente &amp;aperto</translation>
     </message>
@@ -328,6 +333,21 @@ Codice di uscita: 0 nessun errore, 1 il programma contiene errori, 2 errore di u
         <location line="+2"/>
         <source>&amp;Falling-Edge Contact</source>
         <translation>Contatto sul fronte di &amp;discesa</translation>
+    </message>
+    <message>
+        <location line="+2"/>
+        <source>Parall&amp;el Normally Closed Contact</source>
+        <translation>Contatto parallelo normalmente chi&amp;uso</translation>
+    </message>
+    <message>
+        <location line="+2"/>
+        <source>Parallel Ri&amp;sing-Edge Contact</source>
+        <translation>Contatto pa&amp;rallelo sul fronte di salita</translation>
+    </message>
+    <message>
+        <location line="+2"/>
+        <source>Parallel Fallin&amp;g-Edge Contact</source>
+        <translation>Contatto parall&amp;elo sul fronte di discesa</translation>
     </message>
     <message>
         <location line="+2"/>
@@ -355,7 +375,7 @@ Codice di uscita: 0 nessun errore, 1 il programma contiene errori, 2 errore di u
         <translation>Posi&amp;ziona elemento</translation>
     </message>
     <message>
-        <location line="+48"/>
+        <location line="+56"/>
         <source>&amp;Import Symbols (CSV)...</source>
         <translation>Importa sim&amp;boli (CSV)...</translation>
     </message>
@@ -400,7 +420,7 @@ Codice di uscita: 0 nessun errore, 1 il programma contiene errori, 2 errore di u
         <translation>&amp;Ripeti</translation>
     </message>
     <message>
-        <location line="-156"/>
+        <location line="-164"/>
         <source>Select</source>
         <translation>Seleziona</translation>
     </message>
@@ -410,17 +430,18 @@ Codice di uscita: 0 nessun errore, 1 il programma contiene errori, 2 errore di u
         <translation>Seleziona (Esc)</translation>
     </message>
     <message>
-        <location line="+13"/>
+        <location line="+15"/>
         <source>%1 (%2): click the cells to place it</source>
         <translation>%1 (%2): fare clic sulle celle per posizionare l&apos;elemento</translation>
     </message>
     <message>
         <location line="+9"/>
+        <location line="+10"/>
         <source>%1: click a cell to place it; Esc or a right click ends</source>
         <translation>%1: fare clic su una cella per posizionare l&apos;elemento; Esc o un clic destro per terminare</translation>
     </message>
     <message>
-        <location line="+15"/>
+        <location line="+11"/>
         <source>Cu&amp;t Rung</source>
         <translation>&amp;Taglia segmento</translation>
     </message>
@@ -461,7 +482,7 @@ Codice di uscita: 0 nessun errore, 1 il programma contiene errori, 2 errore di u
     </message>
     <message>
         <location line="+1"/>
-        <location filename="../app/gui/main_window_tools.cpp" line="+210"/>
+        <location filename="../app/gui/main_window_tools.cpp" line="+213"/>
         <source>CSV files (*.csv)</source>
         <translation>File CSV (*.csv)</translation>
     </message>
@@ -572,7 +593,7 @@ Ladder and instruction-list editor for VPC, Vigor, CPM1 and PL110.</source>
 Editor di schemi ladder e liste istruzioni per VPC, Vigor, CPM1 e PL110.</translation>
     </message>
     <message>
-        <location filename="../app/gui/main_window.cpp" line="-225"/>
+        <location filename="../app/gui/main_window.cpp" line="-227"/>
         <source>Rung Comment</source>
         <translation>Commento del segmento</translation>
     </message>
@@ -583,18 +604,18 @@ Editor di schemi ladder e liste istruzioni per VPC, Vigor, CPM1 e PL110.</transl
     </message>
     <message>
         <location line="+22"/>
-        <location line="+205"/>
+        <location line="+207"/>
         <source>Ladder</source>
         <translation>Ladder</translation>
     </message>
     <message>
-        <location line="-204"/>
-        <location line="+205"/>
+        <location line="-206"/>
+        <location line="+207"/>
         <source>Instruction List</source>
         <translation>Lista istruzioni</translation>
     </message>
     <message>
-        <location line="-196"/>
+        <location line="-198"/>
         <source>The list as typed had errors and now shows the ladder&apos;s program; Ctrl+Z in the list brings it back</source>
         <translation>La lista digitata conteneva errori e ora mostra il programma dello schema ladder; Ctrl+Z nella lista la ripristina</translation>
     </message>
@@ -605,12 +626,12 @@ Editor di schemi ladder e liste istruzioni per VPC, Vigor, CPM1 e PL110.</transl
     </message>
     <message>
         <location line="+1"/>
-        <location line="+53"/>
+        <location line="+55"/>
         <source>Untitled</source>
         <translation>Senza titolo</translation>
     </message>
     <message numerus="yes">
-        <location line="-51"/>
+        <location line="-53"/>
         <source>%n rung(s)</source>
         <translation>
             <numerusform>%n segmento</numerusform>
@@ -626,7 +647,7 @@ Editor di schemi ladder e liste istruzioni per VPC, Vigor, CPM1 e PL110.</transl
         </translation>
     </message>
     <message>
-        <location line="+18"/>
+        <location line="+20"/>
         <source>The instruction list has %1: line %2: %3. The ladder shows the last valid program.</source>
         <translation>La lista istruzioni contiene %1: riga %2: %3. Lo schema ladder mostra l&apos;ultimo programma valido.</translation>
     </message>
@@ -724,7 +745,7 @@ Editor di schemi ladder e liste istruzioni per VPC, Vigor, CPM1 e PL110.</transl
     <message>
         <location line="+3"/>
         <source>Saved %1 with the instruction list as typed; it has errors, so the ladder holds the last valid program until they are fixed</source>
-        <translation>%1 salvato con la lista istruzioni così come è stata scritta; contiene errori, quindi lo schema ladder mantiene l'ultimo programma valido finché non vengono corretti</translation>
+        <translation>%1 salvato con la lista istruzioni così come è stata scritta; contiene errori, quindi lo schema ladder mantiene l&apos;ultimo programma valido finché non vengono corretti</translation>
     </message>
     <message>
         <location line="+13"/>
@@ -819,7 +840,7 @@ Editor di schemi ladder e liste istruzioni per VPC, Vigor, CPM1 e PL110.</transl
         <translation>Impossibile aprire l&apos;esempio</translation>
     </message>
     <message>
-        <location filename="../app/gui/main_window_tools.cpp" line="-147"/>
+        <location filename="../app/gui/main_window_tools.cpp" line="-149"/>
         <source>Cut rungs</source>
         <translation>Taglia segmenti</translation>
     </message>
@@ -867,7 +888,7 @@ Editor di schemi ladder e liste istruzioni per VPC, Vigor, CPM1 e PL110.</transl
         <translation>Operando:</translation>
     </message>
     <message>
-        <location line="+27"/>
+        <location line="+29"/>
         <location line="+3"/>
         <location line="+7"/>
         <source>Replace Device</source>
@@ -1038,6 +1059,439 @@ Editor di schemi ladder e liste istruzioni per VPC, Vigor, CPM1 e PL110.</transl
     </message>
 </context>
 <context>
+    <name>rung::comms::Protocol</name>
+    <message>
+        <location filename="../comms/protocol/host_link.cpp" line="+205"/>
+        <source>normal completion (end code %1)</source>
+        <translation>completamento normale (codice di fine %1)</translation>
+    </message>
+    <message>
+        <location line="+4"/>
+        <source>not executable in RUN mode (end code %1): switch the PLC to MONITOR to write</source>
+        <translation>non eseguibile in modo RUN (codice di fine %1): per scrivere portare il PLC in MONITOR</translation>
+    </message>
+    <message>
+        <location line="+6"/>
+        <source>not executable in MONITOR mode (end code %1)</source>
+        <translation>non eseguibile in modo MONITOR (codice di fine %1)</translation>
+    </message>
+    <message>
+        <location line="+4"/>
+        <source>the PLC&apos;s memory is write-protected (end code %1)</source>
+        <translation>la memoria del PLC è protetta da scrittura (codice di fine %1)</translation>
+    </message>
+    <message>
+        <location line="+4"/>
+        <source>address over: the area ends before the last word asked for (end code %1)</source>
+        <translation>indirizzo oltre il limite: l&apos;area finisce prima dell&apos;ultima parola richiesta (codice di fine %1)</translation>
+    </message>
+    <message>
+        <location line="+6"/>
+        <source>not executable in PROGRAM mode (end code %1)</source>
+        <translation>non eseguibile in modo PROGRAM (codice di fine %1)</translation>
+    </message>
+    <message>
+        <location line="+4"/>
+        <source>the PLC received the command with a wrong FCS (end code %1): noise on the line or a wrong parity setting</source>
+        <translation>il PLC ha ricevuto il comando con FCS errato (codice di fine %1): disturbi sulla linea o parità impostata male</translation>
+    </message>
+    <message>
+        <location line="+6"/>
+        <source>the PLC found the command&apos;s format wrong (end code %1)</source>
+        <translation>il PLC ha trovato errato il formato del comando (codice di fine %1)</translation>
+    </message>
+    <message>
+        <location line="+4"/>
+        <source>a number in the command is out of range (end code %1)</source>
+        <translation>un numero nel comando è fuori campo (codice di fine %1)</translation>
+    </message>
+    <message>
+        <location line="+4"/>
+        <source>the PLC does not support the command (end code %1)</source>
+        <translation>il PLC non supporta il comando (codice di fine %1)</translation>
+    </message>
+    <message>
+        <location line="+4"/>
+        <source>the command&apos;s frame is too long (end code %1)</source>
+        <translation>il frame del comando è troppo lungo (codice di fine %1)</translation>
+    </message>
+    <message>
+        <location line="+4"/>
+        <source>end code %1</source>
+        <translation>codice di fine %1</translation>
+    </message>
+    <message>
+        <location line="+24"/>
+        <source>Host Link: the reply starts with byte %1 instead of &quot;@&quot;: not a Host Link answer</source>
+        <translation>Host Link: la risposta inizia con il byte %1 invece di &quot;@&quot;: non è una risposta Host Link</translation>
+    </message>
+    <message>
+        <location line="+10"/>
+        <source>Host Link: %1 characters without the end of a frame (CR)</source>
+        <translation>Host Link: %1 caratteri senza fine del frame (CR)</translation>
+    </message>
+    <message>
+        <location line="+17"/>
+        <source>Host Link: a frame too short to hold an FCS: %1</source>
+        <translation>Host Link: frame troppo corto per contenere un FCS: %1</translation>
+    </message>
+    <message>
+        <location line="+6"/>
+        <source>Host Link: wrong FCS in the reply (received %1, computed %2): noise on the line or a wrong parity setting</source>
+        <translation>Host Link: FCS errato nella risposta (ricevuto %1, calcolato %2): disturbi sulla linea o parità impostata male</translation>
+    </message>
+    <message>
+        <location line="+9"/>
+        <source>Host Link: the reply has no unit number and header: %1</source>
+        <translation>Host Link: la risposta non ha numero di unità e intestazione: %1</translation>
+    </message>
+    <message>
+        <location line="+10"/>
+        <location line="+33"/>
+        <source>Host Link: unit %1 answered, unit %2 was asked</source>
+        <translation>Host Link: ha risposto l&apos;unità %1, era interrogata l&apos;unità %2</translation>
+    </message>
+    <message>
+        <location line="-27"/>
+        <source>Host Link: the PLC did not recognise the command %1 (IC)</source>
+        <translation>Host Link: il PLC non ha riconosciuto il comando %1 (IC)</translation>
+    </message>
+    <message>
+        <location line="+9"/>
+        <source>Host Link: the reply has no end code: %1</source>
+        <translation>Host Link: la risposta non ha codice di fine: %1</translation>
+    </message>
+    <message>
+        <location line="+26"/>
+        <source>Host Link: the reply is for %1, the command was %2</source>
+        <translation>Host Link: la risposta è per %1, il comando era %2</translation>
+    </message>
+    <message>
+        <location line="+6"/>
+        <source>Host Link: %1 refused: %2</source>
+        <translation>Host Link: %1 rifiutato: %2</translation>
+    </message>
+    <message>
+        <location line="+5"/>
+        <source>Host Link: the reply to %1 holds %2 characters of data that do not fit the command</source>
+        <translation>Host Link: la risposta a %1 contiene %2 caratteri di dati che non corrispondono al comando</translation>
+    </message>
+    <message>
+        <location line="+50"/>
+        <source>Host Link: no reply from unit %1 within %2 ms</source>
+        <translation>Host Link: nessuna risposta dall&apos;unità %1 entro %2 ms</translation>
+    </message>
+    <message>
+        <location line="+5"/>
+        <source>Host Link: the reply stopped after %1 parts and %2 characters (%3) within %4 ms</source>
+        <translation>Host Link: la risposta si è interrotta dopo %1 parti e %2 caratteri (%3) entro %4 ms</translation>
+    </message>
+    <message>
+        <location filename="../comms/protocol/modbus.cpp" line="+141"/>
+        <source>illegal function (exception %1h): the device does not support this function code</source>
+        <translation>funzione non valida (eccezione %1h): il dispositivo non supporta questo codice funzione</translation>
+    </message>
+    <message>
+        <location line="+6"/>
+        <source>illegal data address (exception %1h): the address or the count is outside the device&apos;s map</source>
+        <translation>indirizzo dati non valido (eccezione %1h): l&apos;indirizzo o il numero è fuori dalla mappa del dispositivo</translation>
+    </message>
+    <message>
+        <location line="+6"/>
+        <source>illegal data value (exception %1h)</source>
+        <translation>valore dati non valido (eccezione %1h)</translation>
+    </message>
+    <message>
+        <location line="+4"/>
+        <source>server device failure (exception %1h); the PL110 manual uses this code for an illegal data value</source>
+        <translation>guasto del dispositivo server (eccezione %1h); il manuale del PL110 usa questo codice per un valore dati non valido</translation>
+    </message>
+    <message>
+        <location line="+6"/>
+        <source>acknowledge (exception %1h): the device accepted a long task</source>
+        <translation>conferma (eccezione %1h): il dispositivo ha accettato un&apos;operazione lunga</translation>
+    </message>
+    <message>
+        <location line="+5"/>
+        <source>server device busy (exception %1h)</source>
+        <translation>dispositivo server occupato (eccezione %1h)</translation>
+    </message>
+    <message>
+        <location line="+4"/>
+        <source>memory parity error (exception %1h)</source>
+        <translation>errore di parità della memoria (eccezione %1h)</translation>
+    </message>
+    <message>
+        <location line="+4"/>
+        <source>gateway path unavailable (exception %1h)</source>
+        <translation>percorso del gateway non disponibile (eccezione %1h)</translation>
+    </message>
+    <message>
+        <location line="+4"/>
+        <source>gateway target device failed to respond (exception %1h)</source>
+        <translation>il dispositivo dietro il gateway non ha risposto (eccezione %1h)</translation>
+    </message>
+    <message>
+        <location line="+5"/>
+        <source>unknown exception code %1h</source>
+        <translation>codice di eccezione sconosciuto %1h</translation>
+    </message>
+    <message>
+        <location line="+97"/>
+        <source>Modbus RTU: the reply starts %1, not an answer to function %2h</source>
+        <translation>Modbus RTU: la risposta inizia con %1, non è una risposta alla funzione %2h</translation>
+    </message>
+    <message>
+        <location line="+8"/>
+        <source>Modbus RTU: %1 bytes more than the %2-byte reply: %3</source>
+        <translation>Modbus RTU: %1 byte in più della risposta di %2 byte: %3</translation>
+    </message>
+    <message>
+        <location line="+11"/>
+        <source>Modbus RTU: wrong CRC in the reply (received %1, computed %2): noise on the line or a wrong baud rate or parity</source>
+        <translation>Modbus RTU: CRC errato nella risposta (ricevuto %1, calcolato %2): disturbi sulla linea o velocità o parità impostate male</translation>
+    </message>
+    <message>
+        <location line="+15"/>
+        <source>Modbus TCP: not a Modbus header (protocol %1, length %2): %3</source>
+        <translation>Modbus TCP: non è un&apos;intestazione Modbus (protocollo %1, lunghezza %2): %3</translation>
+    </message>
+    <message>
+        <location line="+10"/>
+        <source>Modbus TCP: %1 bytes more than the reply&apos;s length</source>
+        <translation>Modbus TCP: %1 byte in più della lunghezza della risposta</translation>
+    </message>
+    <message>
+        <location line="+5"/>
+        <source>Modbus TCP: the reply is for transaction %1, the request was %2</source>
+        <translation>Modbus TCP: la risposta è per la transazione %1, la richiesta era %2</translation>
+    </message>
+    <message>
+        <location line="+12"/>
+        <source>Modbus: unit %1 answered, unit %2 was asked</source>
+        <translation>Modbus: ha risposto l&apos;unità %1, era interrogata l&apos;unità %2</translation>
+    </message>
+    <message>
+        <location line="+10"/>
+        <source>Modbus: an exception reply of %1 bytes</source>
+        <translation>Modbus: risposta di eccezione di %1 byte</translation>
+    </message>
+    <message>
+        <location line="+6"/>
+        <source>Modbus: function %1h refused: %2</source>
+        <translation>Modbus: funzione %1h rifiutata: %2</translation>
+    </message>
+    <message>
+        <location line="+6"/>
+        <source>Modbus: the reply is for function %1h, the request was %2h</source>
+        <translation>Modbus: la risposta è per la funzione %1h, la richiesta era %2h</translation>
+    </message>
+    <message>
+        <location line="+6"/>
+        <source>Modbus: the reply to function %1h does not match the request: %2</source>
+        <translation>Modbus: la risposta alla funzione %1h non corrisponde alla richiesta: %2</translation>
+    </message>
+    <message>
+        <location line="+32"/>
+        <source>Modbus: no reply from unit %1 within %2 ms</source>
+        <translation>Modbus: nessuna risposta dall&apos;unità %1 entro %2 ms</translation>
+    </message>
+    <message>
+        <location line="+6"/>
+        <source>Modbus: the reply stopped after %1 bytes (%2) within %3 ms</source>
+        <translation>Modbus: la risposta si è interrotta dopo %1 byte (%2) entro %3 ms</translation>
+    </message>
+    <message>
+        <location filename="../comms/protocol/vigor_link.cpp" line="+94"/>
+        <source>no error (error 00h)</source>
+        <translation>nessun errore (errore 00h)</translation>
+    </message>
+    <message>
+        <location line="+2"/>
+        <source>the PLC could not read the request&apos;s characters as hexadecimal (ASCII conversion error %1h)</source>
+        <translation>il PLC non ha potuto leggere i caratteri della richiesta come esadecimali (errore di conversione ASCII %1h)</translation>
+    </message>
+    <message>
+        <location line="+6"/>
+        <source>the PLC received the request with a wrong sum (sum check error %1h): noise on the line or a wrong parity setting</source>
+        <translation>il PLC ha ricevuto la richiesta con somma errata (errore di controllo somma %1h): disturbi sulla linea o parità impostata male</translation>
+    </message>
+    <message>
+        <location line="+6"/>
+        <source>the PLC does not know the command (error %1h)</source>
+        <translation>il PLC non conosce il comando (errore %1h)</translation>
+    </message>
+    <message>
+        <location line="+4"/>
+        <source>communication error (error %1h): the PLC may be in STOP or the parity does not match</source>
+        <translation>errore di comunicazione (errore %1h): il PLC potrebbe essere in STOP o la parità non corrisponde</translation>
+    </message>
+    <message>
+        <location line="+6"/>
+        <source>address out of range (error %1h)</source>
+        <translation>indirizzo fuori campo (errore %1h)</translation>
+    </message>
+    <message>
+        <location line="+4"/>
+        <source>unknown error code %1h</source>
+        <translation>codice di errore sconosciuto %1h</translation>
+    </message>
+    <message>
+        <location line="+21"/>
+        <source>Vigor link: the reply starts with byte %1 instead of ACK (06h): not a Computer Link answer</source>
+        <translation>Vigor link: la risposta inizia con il byte %1 invece di ACK (06h): non è una risposta Computer Link</translation>
+    </message>
+    <message>
+        <location line="+13"/>
+        <source>Vigor link: %1 bytes without the end of a frame (ETX)</source>
+        <translation>Vigor link: %1 byte senza fine del frame (ETX)</translation>
+    </message>
+    <message>
+        <location line="+16"/>
+        <source>Vigor link: wrong sum in the reply (received %1, computed %2): noise on the line or a wrong parity setting</source>
+        <translation>Vigor link: somma errata nella risposta (ricevuta %1, calcolata %2): disturbi sulla linea o parità impostata male</translation>
+    </message>
+    <message>
+        <location line="+7"/>
+        <source>Vigor link: a reply of %1 bytes is too short or has an odd number of hex digits: %2</source>
+        <translation>Vigor link: una risposta di %1 byte è troppo corta o ha un numero dispari di cifre esadecimali: %2</translation>
+    </message>
+    <message>
+        <location line="+10"/>
+        <location line="+9"/>
+        <source>Vigor link: the reply holds characters that are not upper-case hexadecimal: %1</source>
+        <translation>Vigor link: la risposta contiene caratteri che non sono esadecimali maiuscoli: %1</translation>
+    </message>
+    <message>
+        <location line="+8"/>
+        <source>Vigor link: station %1 answered, station %2 was asked</source>
+        <translation>Vigor link: ha risposto la stazione %1, era interrogata la stazione %2</translation>
+    </message>
+    <message>
+        <location line="+8"/>
+        <source>Vigor link: the reply is for command %1h, the request was %2h</source>
+        <translation>Vigor link: la risposta è per il comando %1h, la richiesta era %2h</translation>
+    </message>
+    <message>
+        <location line="+7"/>
+        <source>Vigor link: %1</source>
+        <translation>Vigor link: %1</translation>
+    </message>
+    <message>
+        <location line="+5"/>
+        <source>Vigor link: the reply carries %1 data bytes, %2 expected</source>
+        <translation>Vigor link: la risposta porta %1 byte di dati, ne erano attesi %2</translation>
+    </message>
+    <message>
+        <location line="+13"/>
+        <source>Vigor link: no reply from station %1 within %2 ms</source>
+        <translation>Vigor link: nessuna risposta dalla stazione %1 entro %2 ms</translation>
+    </message>
+    <message>
+        <location line="+5"/>
+        <source>Vigor link: the reply stopped after %1 bytes (%2) within %3 ms</source>
+        <translation>Vigor link: la risposta si è interrotta dopo %1 byte (%2) entro %3 ms</translation>
+    </message>
+    <message>
+        <location filename="../comms/transport/pty_transport.cpp" line="+38"/>
+        <source>Cannot create a pseudo-terminal: %1</source>
+        <translation>Impossibile creare uno pseudo-terminale: %1</translation>
+    </message>
+    <message>
+        <location line="+25"/>
+        <location filename="../comms/transport/serial_transport.cpp" line="+87"/>
+        <location line="+12"/>
+        <source>Cannot open %1: %2</source>
+        <translation>Impossibile aprire %1: %2</translation>
+    </message>
+    <message>
+        <location line="+6"/>
+        <source>Cannot open %1: it is not a terminal</source>
+        <translation>Impossibile aprire %1: non è un terminale</translation>
+    </message>
+    <message>
+        <location line="+22"/>
+        <location line="+34"/>
+        <location filename="../comms/transport/serial_transport.cpp" line="+38"/>
+        <location line="+23"/>
+        <location filename="../comms/transport/tcp_transport.cpp" line="+78"/>
+        <location line="+30"/>
+        <source>%1 is not open</source>
+        <translation>%1 non è aperto</translation>
+    </message>
+    <message>
+        <location line="-22"/>
+        <location filename="../comms/transport/serial_transport.cpp" line="-13"/>
+        <location filename="../comms/transport/tcp_transport.cpp" line="-24"/>
+        <source>Writing to %1 failed: %2</source>
+        <translation>Scrittura su %1 non riuscita: %2</translation>
+    </message>
+    <message>
+        <location line="+6"/>
+        <location filename="../comms/transport/serial_transport.cpp" line="+2"/>
+        <location filename="../comms/transport/tcp_transport.cpp" line="+8"/>
+        <source>Writing to %1 did not finish in time</source>
+        <translation>La scrittura su %1 non è terminata in tempo</translation>
+    </message>
+    <message>
+        <location line="+24"/>
+        <source>%1 was closed by the other side: %2</source>
+        <translation>%1 è stato chiuso dall&apos;altro lato: %2</translation>
+    </message>
+    <message>
+        <location line="+14"/>
+        <location filename="../comms/transport/tcp_transport.cpp" line="+22"/>
+        <source>%1 was closed by the other side</source>
+        <translation>%1 è stato chiuso dall&apos;altro lato</translation>
+    </message>
+    <message>
+        <location filename="../comms/transport/serial_transport.cpp" line="-132"/>
+        <source>permission denied: add your user to the group that owns %1 (usually &quot;dialout&quot;: sudo usermod -aG dialout $USER, then log in again)</source>
+        <translation>permesso negato: aggiungere l&apos;utente al gruppo proprietario di %1 (di solito &quot;dialout&quot;: sudo usermod -aG dialout $USER, poi accedere di nuovo)</translation>
+    </message>
+    <message>
+        <location line="+6"/>
+        <source>the port is busy: another program has it open</source>
+        <translation>la porta è occupata: un altro programma la tiene aperta</translation>
+    </message>
+    <message>
+        <location line="+5"/>
+        <source>no such port (unplugged?)</source>
+        <translation>porta inesistente (scollegata?)</translation>
+    </message>
+    <message>
+        <location line="+87"/>
+        <source>%1 does not accept the line settings: %2</source>
+        <translation>%1 non accetta le impostazioni di linea: %2</translation>
+    </message>
+    <message>
+        <location line="+54"/>
+        <source>%1 failed while reading (unplugged?): %2</source>
+        <translation>%1 ha dato errore durante la lettura (scollegata?): %2</translation>
+    </message>
+    <message>
+        <location line="+11"/>
+        <location line="+11"/>
+        <source>%1 is gone (unplugged?)</source>
+        <translation>%1 non c&apos;è più (scollegata?)</translation>
+    </message>
+    <message>
+        <location filename="../comms/transport/tcp_transport.cpp" line="-62"/>
+        <source>Cannot connect to %1: %2</source>
+        <translation>Impossibile connettersi a %1: %2</translation>
+    </message>
+    <message>
+        <location line="+3"/>
+        <source>Cannot connect to %1 within %2 ms</source>
+        <translation>Impossibile connettersi a %1 entro %2 ms</translation>
+    </message>
+    <message>
+        <location line="+83"/>
+        <source>Cannot listen on %1:%2: %3</source>
+        <translation>Impossibile restare in ascolto su %1:%2: %3</translation>
+    </message>
+</context>
+<context>
     <name>rung::editor::CrossReferenceView</name>
     <message>
         <location filename="../editor/cross_reference_view.cpp" line="+48"/>
@@ -1093,12 +1547,12 @@ Editor di schemi ladder e liste istruzioni per VPC, Vigor, CPM1 e PL110.</transl
 <context>
     <name>rung::editor::Document</name>
     <message>
-        <location filename="../editor/document.cpp" line="+42"/>
+        <location filename="../editor/document.cpp" line="+44"/>
         <source>Edit symbols</source>
         <translation>Modifica simboli</translation>
     </message>
     <message>
-        <location line="+108"/>
+        <location line="+122"/>
         <source>Insert rung</source>
         <translation>Inserisci segmento</translation>
     </message>
@@ -1116,15 +1570,30 @@ Editor di schemi ladder e liste istruzioni per VPC, Vigor, CPM1 e PL110.</transl
         </translation>
     </message>
     <message>
-        <location line="+64"/>
+        <location line="+45"/>
+        <source>This line stood for a rung of another program: delete the line or undo the paste</source>
+        <translation>Questa riga rappresentava un segmento di un altro programma: elimina la riga o annulla l&apos;incolla</translation>
+    </message>
+    <message>
+        <location line="+54"/>
         <source>Edit instruction list</source>
         <translation>Modifica lista istruzioni</translation>
+    </message>
+    <message>
+        <location line="+53"/>
+        <source>it has nothing to list yet</source>
+        <translation>non contiene ancora nulla da elencare</translation>
+    </message>
+    <message>
+        <location line="+3"/>
+        <source>Rung %1 is not in the list: %2. Edit it in the ladder; this line keeps its place.</source>
+        <translation>Il segmento %1 non è nella lista: %2. Modificalo nel ladder; questa riga ne tiene il posto.</translation>
     </message>
 </context>
 <context>
     <name>rung::editor::IlEditor</name>
     <message>
-        <location filename="../editor/il_editor.cpp" line="+232"/>
+        <location filename="../editor/il_editor.cpp" line="+247"/>
         <source>Instruction list</source>
         <translation>Lista istruzioni</translation>
     </message>
@@ -1132,7 +1601,7 @@ Editor di schemi ladder e liste istruzioni per VPC, Vigor, CPM1 e PL110.</transl
 <context>
     <name>rung::editor::IlLexer</name>
     <message>
-        <location line="-174"/>
+        <location line="-187"/>
         <source>Default</source>
         <translation>Predefinito</translation>
     </message>
@@ -1165,6 +1634,11 @@ Editor di schemi ladder e liste istruzioni per VPC, Vigor, CPM1 e PL110.</transl
         <location line="+2"/>
         <source>Unknown word</source>
         <translation>Parola sconosciuta</translation>
+    </message>
+    <message>
+        <location line="+2"/>
+        <source>Rung not in the list</source>
+        <translation>Segmento non presente nella lista</translation>
     </message>
 </context>
 <context>
@@ -1495,7 +1969,7 @@ Editor di schemi ladder e liste istruzioni per VPC, Vigor, CPM1 e PL110.</transl
         <translation>%1: %2 scrive le costanti senza K o H</translation>
     </message>
     <message>
-        <location line="+6"/>
+        <location line="+5"/>
         <source>%1: # constants belong to CPM1 listings</source>
         <translation>%1: le costanti con # appartengono alle liste CPM1</translation>
     </message>
@@ -1528,7 +2002,7 @@ Editor di schemi ladder e liste istruzioni per VPC, Vigor, CPM1 e PL110.</transl
 <context>
     <name>rung::model::Checks</name>
     <message>
-        <location filename="../model/checks/checks_ladder.cpp" line="+70"/>
+        <location filename="../model/checks/checks_ladder.cpp" line="+71"/>
         <source>Reverse current: power would cross an element right to left to reach row %1</source>
         <translation>Corrente inversa: la corrente attraverserebbe un elemento da destra a sinistra per raggiungere la riga %1</translation>
     </message>
@@ -1548,12 +2022,18 @@ Editor di schemi ladder e liste istruzioni per VPC, Vigor, CPM1 e PL110.</transl
         <translation>%1 non ha condizione: è collegato direttamente alla barra sinistra</translation>
     </message>
     <message>
-        <location line="+15"/>
-        <source>This contact is not on any path from the left rail to an output</source>
-        <translation>Questo contatto non si trova su alcun percorso dalla barra sinistra a un&apos;uscita</translation>
+        <location line="+20"/>
+        <source>%1 (row %2, column %3) is not on any path from the left rail to an output: the list leaves it out</source>
+        <translation>%1 (riga %2, colonna %3) non si trova su alcun percorso dalla barra sinistra a un&apos;uscita: la lista lo omette</translation>
     </message>
     <message>
-        <location filename="../model/checks/checks_list.cpp" line="+130"/>
+        <location line="+49"/>
+        <location filename="../model/checks/checks_list.cpp" line="+78"/>
+        <source>Append %1</source>
+        <translation>Aggiungi %1 in fondo</translation>
+    </message>
+    <message>
+        <location filename="../model/checks/checks_list.cpp" line="+77"/>
         <source>Rewrite the rung in the canonical form</source>
         <translation>Riscrivi il segmento nella forma canonica</translation>
     </message>
@@ -1563,40 +2043,50 @@ Editor di schemi ladder e liste istruzioni per VPC, Vigor, CPM1 e PL110.</transl
         <translation>Più di %1 %2 consecutivi: il PLC rifiuta il programma</translation>
     </message>
     <message>
-        <location line="+37"/>
-        <source>Stacked ANB: combine each block with ANB as soon as it is complete</source>
-        <translation>ANB impilati: combinare ogni blocco con ANB appena è completo</translation>
+        <location line="+38"/>
+        <source>Stacked %1: combine each block with %1 as soon as it is complete</source>
+        <translation>%1 impilati: combinare ogni blocco con %1 appena è completo</translation>
     </message>
     <message numerus="yes">
-        <location line="+2"/>
-        <source>Stacked ORB: %n blocks are open; an OR chain needs less stack</source>
+        <location line="+3"/>
+        <source>Stacked %1: %n blocks are open; an OR chain needs less stack</source>
         <translation>
-            <numerusform>ORB impilati: %n blocco è aperto; una catena OR richiede meno stack</numerusform>
-            <numerusform>ORB impilati: %n blocchi sono aperti; una catena OR richiede meno stack</numerusform>
+            <numerusform>%1 impilati: %n blocco è aperto; una catena OR richiede meno stack</numerusform>
+            <numerusform>%1 impilati: %n blocchi sono aperti; una catena OR richiede meno stack</numerusform>
         </translation>
     </message>
     <message>
-        <location line="+6"/>
+        <location line="+7"/>
         <source>A single contact joined with %1 is simpler as %2</source>
         <translation>Un singolo contatto unito con %1 è più semplice come %2</translation>
     </message>
     <message>
-        <location line="+10"/>
+        <location line="+11"/>
         <source>A single device in parallel with a block belongs on the lower row: the block first, then an OR, drops the %1</source>
         <translation>Un singolo operando in parallelo a un blocco va sulla riga inferiore: prima il blocco, poi un OR, senza %1</translation>
     </message>
     <message>
         <location line="+3"/>
+        <source>Contacts in series need no %1: each can follow the one before it as %2</source>
+        <translation>I contatti in serie non richiedono %1: ognuno può seguire il precedente come %2</translation>
+    </message>
+    <message>
+        <location line="+5"/>
         <source>The block after a single contact can move to the front and drop the %1</source>
         <translation>Il blocco dopo un singolo contatto può essere spostato in testa, senza %1</translation>
     </message>
     <message>
-        <location line="+11"/>
+        <location line="+12"/>
         <source>Put the single device below the block and drop the %1</source>
         <translation>Metti il singolo operando sotto il blocco ed elimina %1</translation>
     </message>
     <message>
-        <location line="+3"/>
+        <location line="+4"/>
+        <source>Join the contacts in series and drop the %1</source>
+        <translation>Collega i contatti in serie ed elimina %1</translation>
+    </message>
+    <message>
+        <location line="+1"/>
         <source>Move the block to the front and drop the %1</source>
         <translation>Sposta il blocco in testa ed elimina %1</translation>
     </message>
@@ -1627,6 +2117,16 @@ Editor di schemi ladder e liste istruzioni per VPC, Vigor, CPM1 e PL110.</transl
             <numerusform>%n MPS senza MPP alla fine del segmento</numerusform>
             <numerusform>%n MPS senza MPP alla fine del segmento</numerusform>
         </translation>
+    </message>
+    <message>
+        <location line="+147"/>
+        <source>%1 is driven twice; a coil may be driven only once (the first is on line %2)</source>
+        <translation>%1 è comandato due volte; una bobina può essere comandata una volta sola (il primo è alla riga %2)</translation>
+    </message>
+    <message>
+        <location line="+12"/>
+        <source>%1 is driven twice; a coil may be driven only once (the first is in rung %2)</source>
+        <translation>%1 è comandato due volte; una bobina può essere comandata una volta sola (il primo è nel segmento %2)</translation>
     </message>
     <message>
         <location filename="../model/checks/checks_nesting.cpp" line="+58"/>
@@ -1709,7 +2209,7 @@ Editor di schemi ladder e liste istruzioni per VPC, Vigor, CPM1 e PL110.</transl
         <translation>Lo step ladder non è chiuso con RET</translation>
     </message>
     <message>
-        <location filename="../model/checks/checks_list.cpp" line="+66"/>
+        <location filename="../model/checks/checks_list.cpp" line="-83"/>
         <source>Set value %1 is out of range</source>
         <translation>Il valore di preset %1 è fuori campo</translation>
     </message>
@@ -1734,22 +2234,12 @@ Editor di schemi ladder e liste istruzioni per VPC, Vigor, CPM1 e PL110.</transl
         <translation>Il numero %1 è usato come temporizzatore e come contatore; condividono un banco</translation>
     </message>
     <message>
-        <location line="+22"/>
-        <source>%1 is driven twice (&quot;Oper duplication&quot;); the first is on line %2</source>
-        <translation>%1 è comandato due volte (&quot;Oper duplication&quot;); il primo è alla riga %2</translation>
-    </message>
-    <message>
-        <location line="+3"/>
+        <location line="+27"/>
         <source>%1 is driven twice; the later one wins (first on line %2)</source>
         <translation>%1 è comandato due volte; prevale l&apos;ultimo (il primo alla riga %2)</translation>
     </message>
     <message>
-        <location line="+7"/>
-        <source>%1 is driven twice (&quot;Oper duplication&quot;); the first is in rung %2</source>
-        <translation>%1 è comandato due volte (&quot;Oper duplication&quot;); il primo è nel segmento %2</translation>
-    </message>
-    <message>
-        <location line="+2"/>
+        <location line="+11"/>
         <source>%1 is driven twice; the later one wins (first in rung %2)</source>
         <translation>%1 è comandato due volte; prevale l&apos;ultimo (il primo nel segmento %2)</translation>
     </message>
@@ -1757,6 +2247,41 @@ Editor di schemi ladder e liste istruzioni per VPC, Vigor, CPM1 e PL110.</transl
         <location line="+13"/>
         <source>The program needs %1 steps; %2 holds %3</source>
         <translation>Il programma richiede %1 passi; %2 ne contiene %3</translation>
+    </message>
+    <message>
+        <location filename="../model/checks/operand_rules.cpp" line="+20"/>
+        <source>operand %1</source>
+        <translation>operando %1</translation>
+    </message>
+    <message>
+        <location line="+44"/>
+        <source>%1 or %2</source>
+        <translation>%1 o %2</translation>
+    </message>
+    <message>
+        <location line="+1"/>
+        <source>the %1 of %2 must be %3, not %4</source>
+        <translation>il %1 di %2 deve essere %3, non %4</translation>
+    </message>
+    <message>
+        <location line="+5"/>
+        <source>the %1 of %2 must be from %3 to %4, not %5</source>
+        <translation>il %1 di %2 deve essere da %3 a %4, non %5</translation>
+    </message>
+    <message>
+        <location line="+23"/>
+        <source>%1 takes only %2..%3, not %4</source>
+        <translation>%1 accetta solo %2..%3, non %4</translation>
+    </message>
+    <message>
+        <location line="+10"/>
+        <source>%1 cannot write %2: %3 are written only by %4</source>
+        <translation>%1 non può scrivere %2: %3 sono scritti solo da %4</translation>
+    </message>
+    <message>
+        <location line="+10"/>
+        <source>%1 is not simulated: it does nothing in the simulator</source>
+        <translation>%1 non è simulato: nel simulatore non fa nulla</translation>
     </message>
 </context>
 <context>
@@ -1889,7 +2414,17 @@ Editor di schemi ladder e liste istruzioni per VPC, Vigor, CPM1 e PL110.</transl
         <translation>Troppi errori; il resto della lista non è stato letto</translation>
     </message>
     <message>
-        <location line="+110"/>
+        <location line="+107"/>
+        <source>Program sections such as &apos;%1&apos; are not supported: a listing is one main program, run at every scan</source>
+        <translation>Le sezioni di programma come &apos;%1&apos; non sono supportate: una lista istruzioni è un solo programma principale, eseguito a ogni scansione</translation>
+    </message>
+    <message>
+        <location line="+5"/>
+        <source>Program sections such as &apos;%1&apos; are not supported: a listing is one main program, run at every scan; put what runs once under LD %2 (ON in the first scan). Interrupt programs are not supported</source>
+        <translation>Le sezioni di programma come &apos;%1&apos; non sono supportate: una lista istruzioni è un solo programma principale, eseguito a ogni scansione; mettere ciò che va eseguito una volta sotto LD %2 (ON nella prima scansione). I programmi di interrupt non sono supportati</translation>
+    </message>
+    <message>
+        <location line="+22"/>
         <source>Unknown instruction &apos;%1&apos; for %2</source>
         <translation>Istruzione sconosciuta &apos;%1&apos; per %2</translation>
     </message>
@@ -1910,12 +2445,12 @@ Editor di schemi ladder e liste istruzioni per VPC, Vigor, CPM1 e PL110.</transl
     </message>
     <message>
         <location line="+19"/>
-        <location line="+174"/>
+        <location line="+172"/>
         <source>&apos;%1...&apos; is too long for an operand</source>
         <translation>&apos;%1...&apos; è troppo lungo per un operando</translation>
     </message>
     <message numerus="yes">
-        <location line="-116"/>
+        <location line="-114"/>
         <source>%1 needs %n operand(s): %2</source>
         <translation>
             <numerusform>%1 richiede %n operando: %2</numerusform>
@@ -1946,7 +2481,7 @@ Editor di schemi ladder e liste istruzioni per VPC, Vigor, CPM1 e PL110.</transl
         <translation>%1 è fuori campo: qui sono ammessi %2..%3</translation>
     </message>
     <message>
-        <location line="+60"/>
+        <location line="+58"/>
         <source>%1: a label number is expected</source>
         <translation>%1: è atteso un numero di etichetta</translation>
     </message>
@@ -2231,7 +2766,7 @@ Editor di schemi ladder e liste istruzioni per VPC, Vigor, CPM1 e PL110.</transl
 <context>
     <name>rung::model::Target</name>
     <message>
-        <location filename="../model/target/target_cpm1.cpp" line="+36"/>
+        <location filename="../model/target/target_cpm1.cpp" line="+38"/>
         <source>input channels</source>
         <translation>canali di ingresso</translation>
     </message>
@@ -2257,7 +2792,7 @@ Editor di schemi ladder e liste istruzioni per VPC, Vigor, CPM1 e PL110.</transl
     </message>
     <message>
         <location line="+5"/>
-        <location filename="../model/target/target_pl110.cpp" line="+79"/>
+        <location filename="../model/target/target_pl110.cpp" line="+86"/>
         <location filename="../model/target/target_vigor.cpp" line="+115"/>
         <location filename="../model/target/target_vpc.cpp" line="+61"/>
         <source>timers</source>
@@ -2293,7 +2828,7 @@ Editor di schemi ladder e liste istruzioni per VPC, Vigor, CPM1 e PL110.</transl
     </message>
     <message>
         <location line="+2"/>
-        <location filename="../model/target/target_pl110.cpp" line="+41"/>
+        <location filename="../model/target/target_pl110.cpp" line="+47"/>
         <location filename="../model/target/target_vigor.cpp" line="+21"/>
         <source>ON for the first scan</source>
         <translation>ON per la prima scansione</translation>
@@ -2339,7 +2874,7 @@ Editor di schemi ladder e liste istruzioni per VPC, Vigor, CPM1 e PL110.</transl
     </message>
     <message>
         <location line="+5"/>
-        <location filename="../model/target/target_pl110.cpp" line="+23"/>
+        <location filename="../model/target/target_pl110.cpp" line="+28"/>
         <location filename="../model/target/target_vigor.cpp" line="+56"/>
         <location filename="../model/target/target_vpc.cpp" line="+5"/>
         <source>Start a block with a normally open contact</source>
@@ -2453,7 +2988,7 @@ Editor di schemi ladder e liste istruzioni per VPC, Vigor, CPM1 e PL110.</transl
         <translation>Temporizzatore veloce, 0,01 s, conta all&apos;indietro dal valore di preset BCD</translation>
     </message>
     <message>
-        <location line="+5"/>
+        <location line="+6"/>
         <source>Down counter: count = last but one block, reset = last block</source>
         <translation>Contatore all&apos;indietro: conteggio = penultimo blocco, reset = ultimo blocco</translation>
     </message>
@@ -2490,21 +3025,51 @@ Editor di schemi ladder e liste istruzioni per VPC, Vigor, CPM1 e PL110.</transl
         <translation>Sposta un canale o una costante</translation>
     </message>
     <message>
-        <location line="+5"/>
+        <location line="+8"/>
+        <source>R = the value of the BCD digits of S</source>
+        <translation>R = il valore delle cifre BCD di S</translation>
+    </message>
+    <message>
+        <location line="+2"/>
+        <source>R = S as BCD digits</source>
+        <translation>R = S in cifre BCD</translation>
+    </message>
+    <message>
+        <location line="+2"/>
+        <source>Invert every bit of a channel</source>
+        <translation>Inverte ogni bit di un canale</translation>
+    </message>
+    <message>
+        <location line="+2"/>
+        <source>R = I1 AND I2, bit by bit</source>
+        <translation>R = I1 AND I2, bit per bit</translation>
+    </message>
+    <message>
+        <location line="+2"/>
+        <source>R = I1 OR I2, bit by bit</source>
+        <translation>R = I1 OR I2, bit per bit</translation>
+    </message>
+    <message>
+        <location line="+2"/>
+        <source>R = I1 XOR I2, bit by bit</source>
+        <translation>R = I1 XOR I2, bit per bit</translation>
+    </message>
+    <message>
+        <location line="+11"/>
         <location filename="../model/target/target_vigor.cpp" line="+23"/>
         <source>No operation</source>
         <translation>Nessuna operazione</translation>
     </message>
     <message>
         <location line="+3"/>
-        <location filename="../model/target/target_pl110.cpp" line="+92"/>
+        <location filename="../model/target/target_pl110.cpp" line="+106"/>
         <location filename="../model/target/target_vigor.cpp" line="-1"/>
         <location filename="../model/target/target_vpc.cpp" line="+5"/>
         <source>End of the program</source>
         <translation>Fine del programma</translation>
     </message>
     <message>
-        <location filename="../model/target/target_pl110.cpp" line="-246"/>
+        <location filename="../model/target/target_pl110.cpp" line="-273"/>
         <source>IF contact: ON while S1 ? S2 is true</source>
         <translation>Contatto IF: ON mentre S1 ? S2 è vero</translation>
     </message>
@@ -2519,12 +3084,12 @@ Editor di schemi ladder e liste istruzioni per VPC, Vigor, CPM1 e PL110.</transl
         <translation>uscite digitali</translation>
     </message>
     <message>
-        <location line="+3"/>
+        <location line="+4"/>
         <source>bistable relays</source>
         <translation>relè bistabili</translation>
     </message>
     <message>
-        <location line="+2"/>
+        <location line="+3"/>
         <source>markers</source>
         <translation>marker</translation>
     </message>
@@ -2534,7 +3099,7 @@ Editor di schemi ladder e liste istruzioni per VPC, Vigor, CPM1 e PL110.</transl
         <translation>variabili</translation>
     </message>
     <message>
-        <location line="+6"/>
+        <location line="+8"/>
         <source>special markers</source>
         <translation>marker speciali</translation>
     </message>
@@ -2551,17 +3116,17 @@ Editor di schemi ladder e liste istruzioni per VPC, Vigor, CPM1 e PL110.</transl
         <translation>uscite analogiche</translation>
     </message>
     <message>
-        <location line="+3"/>
+        <location line="+5"/>
         <source>timer presets</source>
         <translation>preset dei temporizzatori</translation>
     </message>
     <message>
-        <location line="+2"/>
+        <location line="+3"/>
         <source>counter presets</source>
         <translation>preset dei contatori</translation>
     </message>
     <message>
-        <location line="+2"/>
+        <location line="+3"/>
         <source>EEPROM words</source>
         <translation>word EEPROM</translation>
     </message>
@@ -2597,12 +3162,17 @@ Editor di schemi ladder e liste istruzioni per VPC, Vigor, CPM1 e PL110.</transl
         <translation>commuta a ogni scansione</translation>
     </message>
     <message>
-        <location line="+2"/>
+        <location line="+3"/>
         <source>TEST: inputs are taken from SM37</source>
         <translation>TEST: gli ingressi sono presi da SM37</translation>
     </message>
     <message>
         <location line="+2"/>
+        <source>inputs I1..I8 in TEST mode (bit 0 = I1), cleared at power-on</source>
+        <translation>ingressi I1..I8 in modalità TEST (bit 0 = I1), azzerata all&apos;accensione</translation>
+    </message>
+    <message>
+        <location line="+4"/>
         <source>counters C1..C16 off, timers T49..T64 on</source>
         <translation>contatori C1..C16 disattivati, temporizzatori T49..T64 attivi</translation>
     </message>
@@ -2669,7 +3239,7 @@ Editor di schemi ladder e liste istruzioni per VPC, Vigor, CPM1 e PL110.</transl
         <translation>Contatto di ingresso immediato normalmente chiuso in parallelo</translation>
     </message>
     <message>
-        <location line="+7"/>
+        <location line="+12"/>
         <source>Immediate output coil: writes the terminal at once</source>
         <translation>Bobina di uscita immediata: scrive subito il morsetto</translation>
     </message>
@@ -2679,7 +3249,12 @@ Editor di schemi ladder e liste istruzioni per VPC, Vigor, CPM1 e PL110.</transl
         <translation>Bobina di relè bistabile: ogni attivazione commuta il relè</translation>
     </message>
     <message>
-        <location line="+5"/>
+        <location line="+8"/>
+        <source>bit number</source>
+        <translation>numero del bit</translation>
+    </message>
+    <message>
+        <location line="+2"/>
         <source>Set a bit (0..15) of a word to 1</source>
         <translation>Porta a 1 un bit (0..15) di una word</translation>
     </message>
@@ -2689,7 +3264,12 @@ Editor di schemi ladder e liste istruzioni per VPC, Vigor, CPM1 e PL110.</transl
         <translation>Porta a 0 un bit (0..15) di una word</translation>
     </message>
     <message>
-        <location line="+6"/>
+        <location line="+8"/>
+        <source>time base (ms)</source>
+        <translation>base tempi (ms)</translation>
+    </message>
+    <message>
+        <location line="+2"/>
         <source>On-delay timer: T ON once the time reaches PT; OFF resets</source>
         <translation>Temporizzatore all&apos;eccitazione: T ON quando il tempo raggiunge PT; OFF lo azzera</translation>
     </message>
@@ -3122,7 +3702,57 @@ Editor di schemi ladder e liste istruzioni per VPC, Vigor, CPM1 e PL110.</transl
         <translation>D = D - 1</translation>
     </message>
     <message>
-        <location line="+5"/>
+        <location line="+3"/>
+        <source>D = S1 AND S2, bit by bit</source>
+        <translation>D = S1 AND S2, bit per bit</translation>
+    </message>
+    <message>
+        <location line="+3"/>
+        <source>D = S1 OR S2, bit by bit</source>
+        <translation>D = S1 OR S2, bit per bit</translation>
+    </message>
+    <message>
+        <location line="+3"/>
+        <source>D = S1 XOR S2, bit by bit</source>
+        <translation>D = S1 XOR S2, bit per bit</translation>
+    </message>
+    <message>
+        <location line="+3"/>
+        <source>D = every bit of S inverted</source>
+        <translation>D = ogni bit di S invertito</translation>
+    </message>
+    <message>
+        <location line="+3"/>
+        <source>D = S as BCD digits</source>
+        <translation>D = S in cifre BCD</translation>
+    </message>
+    <message>
+        <location line="+3"/>
+        <source>D = the value of the BCD digits S</source>
+        <translation>D = il valore delle cifre BCD di S</translation>
+    </message>
+    <message>
+        <location line="+4"/>
+        <source>Read n words of special module m1, from m2</source>
+        <translation>Legge n word dal modulo speciale m1, da m2</translation>
+    </message>
+    <message>
+        <location line="+4"/>
+        <source>Write n words to special module m1, at m2</source>
+        <translation>Scrive n word nel modulo speciale m1, a m2</translation>
+    </message>
+    <message>
+        <location line="+3"/>
+        <source>Sum and parity check of n bytes</source>
+        <translation>Somma e controllo di parità di n byte</translation>
+    </message>
+    <message>
+        <location line="+3"/>
+        <source>Refresh n inputs or outputs now</source>
+        <translation>Aggiorna subito n ingressi o uscite</translation>
+    </message>
+    <message>
+        <location line="+6"/>
         <source>Communication or conversion instruction</source>
         <translation>Istruzione di comunicazione o di conversione</translation>
     </message>
@@ -3217,16 +3847,31 @@ Editor di schemi ladder e liste istruzioni per VPC, Vigor, CPM1 e PL110.</transl
         <source>End of a jump</source>
         <translation>Fine di un salto</translation>
     </message>
+    <message>
+        <location filename="../model/target/target_cpm1_maps.cpp" line="+16"/>
+        <source>Omron Host Link (C-mode)</source>
+        <translation>Omron Host Link (modo C)</translation>
+    </message>
+    <message>
+        <location filename="../model/target/target_pl110_maps.cpp" line="+16"/>
+        <source>PL110 MODBUS RTU slave</source>
+        <translation>PL110 slave MODBUS RTU</translation>
+    </message>
+    <message>
+        <location filename="../model/target/target_vigor_maps.cpp" line="+15"/>
+        <source>Vigor Computer Link</source>
+        <translation>Vigor Computer Link</translation>
+    </message>
+    <message>
+        <location line="+19"/>
+        <source>Vigor CP2 MODBUS slave</source>
+        <translation>Vigor CP2 slave MODBUS</translation>
+    </message>
 </context>
 <context>
     <name>rung::simulator::Compiler</name>
     <message>
-        <location filename="../simulator/compiler_detail.h" line="+67"/>
-        <source>%1 is not simulated: it does nothing in the simulator</source>
-        <translation>%1 non è simulato: nel simulatore non fa nulla</translation>
-    </message>
-    <message>
-        <location line="+15"/>
+        <location filename="../simulator/compiler_detail.h" line="+101"/>
         <source>%1 needs operand %2</source>
         <translation>%1 richiede l&apos;operando %2</translation>
     </message>
@@ -3236,7 +3881,7 @@ Editor di schemi ladder e liste istruzioni per VPC, Vigor, CPM1 e PL110.</transl
         <translation>%1 non è un operando a bit</translation>
     </message>
     <message>
-        <location line="+12"/>
+        <location line="+22"/>
         <source>constant %1 is out of range</source>
         <translation>la costante %1 è fuori campo</translation>
     </message>
@@ -3286,7 +3931,7 @@ Editor di schemi ladder e liste istruzioni per VPC, Vigor, CPM1 e PL110.</transl
         <translation>%1 non è un contatore</translation>
     </message>
     <message>
-        <location line="+45"/>
+        <location line="+67"/>
         <source>%1 needs three bit devices from %2</source>
         <translation>%1 richiede tre operandi a bit a partire da %2</translation>
     </message>
@@ -3316,12 +3961,12 @@ Editor di schemi ladder e liste istruzioni per VPC, Vigor, CPM1 e PL110.</transl
         <translation>il blocco di %1 word va oltre la fine della sua area</translation>
     </message>
     <message>
-        <location filename="../simulator/compiler.cpp" line="+113"/>
+        <location filename="../simulator/compiler.cpp" line="+137"/>
         <source>unknown instruction</source>
         <translation>istruzione sconosciuta</translation>
     </message>
     <message>
-        <location line="+18"/>
+        <location line="+19"/>
         <source>more than %1 nested %2</source>
         <translation>più di %1 %2 annidati</translation>
     </message>
@@ -3341,7 +3986,7 @@ Editor di schemi ladder e liste istruzioni per VPC, Vigor, CPM1 e PL110.</transl
         <translation>%1 non è un operando</translation>
     </message>
     <message>
-        <location line="+96"/>
+        <location line="+97"/>
         <source>the program has no target</source>
         <translation>il programma non ha una famiglia PLC</translation>
     </message>
@@ -3349,18 +3994,28 @@ Editor di schemi ladder e liste istruzioni per VPC, Vigor, CPM1 e PL110.</transl
 <context>
     <name>rung::simulator::Engine</name>
     <message>
-        <location filename="../simulator/engine_execute.cpp" line="+77"/>
+        <location filename="../simulator/engine_execute.cpp" line="+76"/>
         <source>set value %1 is not a BCD number; the instruction is skipped</source>
         <translation>il valore di preset %1 non è un numero BCD; l&apos;istruzione viene saltata</translation>
     </message>
     <message>
-        <location line="+17"/>
+        <location line="+43"/>
+        <source>%1 does not fit in BCD (0..%2); the destination is unchanged</source>
+        <translation>%1 non sta in BCD (0..%2); la destinazione resta invariata</translation>
+    </message>
+    <message>
+        <location line="+13"/>
+        <source>%1 is not a BCD number; the destination is unchanged</source>
+        <translation>%1 non è un numero BCD; la destinazione resta invariata</translation>
+    </message>
+    <message>
+        <location line="+18"/>
         <source>result %1 is outside 0..9999; %2 is written</source>
         <translation>il risultato %1 è fuori da 0..9999; viene scritto %2</translation>
     </message>
     <message>
-        <location line="+350"/>
-        <location line="+52"/>
+        <location line="+355"/>
+        <location line="+56"/>
         <source>division by zero; the destination is unchanged</source>
         <translation>divisione per zero; la destinazione resta invariata</translation>
     </message>
