@@ -244,7 +244,8 @@ TEST_F(Fixture, AListingWithErrorsOpensAsTypedWithItsErrorsMarked) {
     window.ilEditor()->replaceSelectedText(QStringLiteral("7"));
     window.applyListing();
     EXPECT_TRUE(ladder()->notice().isEmpty());
-    EXPECT_EQ(listing(), QStringLiteral("; target: vigor\nLD X0\nOUT Y0\nLD X7\nOUT Y1\nEND\n"));
+    // The `; target:` line names the PLC; it is no comment of the first rung (issue 15).
+    EXPECT_EQ(listing(), QStringLiteral("LD X0\nOUT Y0\nLD X7\nOUT Y1\nEND\n"));
 }
 
 // An edit on the ladder while the list holds text with errors shows the ladder's program in
