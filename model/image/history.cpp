@@ -30,7 +30,34 @@ bool HistoryRecorder::watch(const Address &address) {
     m_last.push_back(0);
     m_rings.emplace_back();
     m_fresh.push_back(static_cast<int>(m_devices.size()) - 1);
+    rebuildWords();
     return true;
+}
+
+void HistoryRecorder::rebuildWords() {
+    std::vector<std::pair<int, int>> byWord; // (word, device)
+    byWord.reserve(m_devices.size());
+    for (std::size_t i = 0; i < m_devices.size(); ++i)
+        byWord.emplace_back(m_devices[i].word, static_cast<int>(i));
+    std::sort(byWord.begin(), byWord.end());
+    std::vector<int> oldIndex = std::move(m_wordIndex);
+    std::vector<std::int32_t> oldValue = std::move(m_wordValue);
+    m_wordIndex.clear();
+    m_wordValue.clear();
+    m_wordFirst.clear();
+    m_wordDevices.clear();
+    for (const auto &[word, device] : byWord) {
+        if (m_wordIndex.empty() || m_wordIndex.back() != word) {
+            m_wordIndex.push_back(word);
+            const auto old = std::lower_bound(oldIndex.begin(), oldIndex.end(), word);
+            m_wordValue.push_back(old != oldIndex.end() && *old == word
+                                      ? oldValue[static_cast<std::size_t>(old - oldIndex.begin())]
+                                      : 0);
+            m_wordFirst.push_back(static_cast<int>(m_wordDevices.size()));
+        }
+        m_wordDevices.push_back(device);
+    }
+    m_wordFirst.push_back(static_cast<int>(m_wordDevices.size()));
 }
 
 void HistoryRecorder::clear() {
@@ -61,11 +88,18 @@ void HistoryRecorder::record(quint64 scan, qint64 timeMs, const std::int32_t *wo
     for (int i : m_fresh)
         push(static_cast<std::size_t>(i), read(m_devices[static_cast<std::size_t>(i)]));
     m_fresh.clear();
-    const std::size_t n = m_devices.size();
-    for (std::size_t i = 0; i < n; ++i) {
-        const std::int32_t v = read(m_devices[i]);
-        if (v != m_last[i]) [[unlikely]]
-            push(i, v);
+    const std::size_t n = m_wordIndex.size();
+    for (std::size_t j = 0; j < n; ++j) {
+        const std::int32_t w = words[m_wordIndex[j]];
+        if (w == m_wordValue[j]) [[likely]]
+            continue;
+        m_wordValue[j] = w;
+        for (int k = m_wordFirst[j]; k < m_wordFirst[j + 1]; ++k) {
+            const auto i = static_cast<std::size_t>(m_wordDevices[static_cast<std::size_t>(k)]);
+            const std::int32_t v = read(m_devices[i]);
+            if (v != m_last[i])
+                push(i, v);
+        }
     }
 }
 

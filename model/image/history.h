@@ -70,13 +70,20 @@ private:
     };
 
     int find(const Address &address) const;
+    void rebuildWords();
     template <typename Key> std::optional<std::int32_t> valueAt(int device, Key key) const;
 
     std::shared_ptr<const MemoryLayout> m_layout;
     std::size_t m_capacity;
     std::vector<Device> m_devices;
     std::map<Address, int> m_index;
-    std::vector<std::int32_t> m_last; // per device, beside m_devices for a tight record loop
+    std::vector<std::int32_t> m_last; // per device
+    // The record loop compares whole image words, not devices: a bit word holds up to 16
+    // watched bits, and a word that did not change needs no look at its devices.
+    std::vector<int> m_wordIndex;          // distinct image words of the watched devices
+    std::vector<std::int32_t> m_wordValue; // their values at the last record
+    std::vector<int> m_wordFirst;          // per distinct word: first entry in m_wordDevices
+    std::vector<int> m_wordDevices;        // device indices grouped by word
     std::vector<Ring> m_rings;
     std::vector<int> m_fresh; // devices whose first value the next record() stores
 };
