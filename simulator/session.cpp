@@ -133,8 +133,7 @@ void SimulatorSession::reportErrors(const Engine &engine, std::size_t &reported)
     reported = errors.size();
     const RuntimeError &e = errors.back();
     const QString text = e.line > 0 ? Tr::tr("Line %1: %2").arg(e.line).arg(e.message) : e.message;
-    QMetaObject::invokeMethod(
-        this, [this, text] { setErrorText(text); }, Qt::QueuedConnection);
+    postToOwner([this, text] { setErrorText(text); });
 }
 
 void SimulatorSession::workerLoop() {
@@ -207,8 +206,7 @@ void SimulatorSession::workerLoop() {
                 std::lock_guard lock(m_historyMutex);
                 m_history.clear();
             }
-            QMetaObject::invokeMethod(
-                this, [this] { setErrorText({}); }, Qt::QueuedConnection);
+            postToOwner([this] { setErrorText({}); });
             publish(*engine);
             lastPublish = Clock::now();
             continue;
@@ -233,17 +231,14 @@ void SimulatorSession::workerLoop() {
             lastPublish = now;
         }
         if (stepsDone)
-            QMetaObject::invokeMethod(
-                this,
-                [this, generation] {
-                    // Only when no later control call (run, stop, ...) has changed the state.
-                    std::unique_lock lock(m_mutex);
-                    const bool current = m_generation == generation;
-                    lock.unlock();
-                    if (current && runState() == RunState::Stepping)
-                        setRunState(RunState::Paused);
-                },
-                Qt::QueuedConnection);
+            postToOwner([this, generation] {
+                // Only when no later control call (run, stop, ...) has changed the state.
+                std::unique_lock lock(m_mutex);
+                const bool current = m_generation == generation;
+                lock.unlock();
+                if (current && runState() == RunState::Stepping)
+                    setRunState(RunState::Paused);
+            });
     }
 }
 

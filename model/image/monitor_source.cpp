@@ -72,8 +72,30 @@ void MonitorSource::publishSnapshot(std::shared_ptr<const Snapshot> snapshot) {
         m_latest = std::move(snapshot);
     }
     // One notification in flight at a time; later snapshots replace the pointer it will read.
+    // By name, not by functor: the call event is then Qt's alone and carries no data.
     if (!m_notifyPending.exchange(true, std::memory_order_acq_rel))
-        QMetaObject::invokeMethod(this, &MonitorSource::scheduleNotify, Qt::QueuedConnection);
+        QMetaObject::invokeMethod(this, "scheduleNotify", Qt::QueuedConnection);
+}
+
+void MonitorSource::postToOwner(std::function<void()> function) {
+    bool first = false;
+    {
+        std::lock_guard lock(m_mutex);
+        first = m_posted.empty();
+        m_posted.push_back(std::move(function));
+    }
+    if (first)
+        QMetaObject::invokeMethod(this, "runPosted", Qt::QueuedConnection);
+}
+
+void MonitorSource::runPosted() {
+    std::vector<std::function<void()>> posted;
+    {
+        std::lock_guard lock(m_mutex);
+        posted.swap(m_posted);
+    }
+    for (const auto &function : posted)
+        function();
 }
 
 void MonitorSource::scheduleNotify() {
@@ -91,8 +113,7 @@ void MonitorSource::notify() {
 }
 
 void MonitorSource::finishCommand(CommandId id, bool ok, const QString &error) {
-    QMetaObject::invokeMethod(
-        this, [this, id, ok, error] { emit commandFinished(id, ok, error); }, Qt::QueuedConnection);
+    postToOwner([this, id, ok, error] { emit commandFinished(id, ok, error); });
 }
 
 void MonitorSource::setRunState(RunState state) {

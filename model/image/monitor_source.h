@@ -20,6 +20,7 @@
 #include <QTimer>
 
 #include <atomic>
+#include <functional>
 #include <memory>
 #include <mutex>
 #include <vector>
@@ -82,12 +83,17 @@ protected:
     void publishSnapshot(std::shared_ptr<const Snapshot> snapshot);
     // Any thread: delivered to the owner thread as commandFinished().
     void finishCommand(CommandId id, bool ok, const QString &error);
+    // Any thread: runs the function on the owner thread, in posting order. Everything the
+    // function needs travels through a mutex-guarded queue, so a ThreadSanitizer build sees
+    // the hand-over (Qt's own event queue is not instrumented).
+    void postToOwner(std::function<void()> function);
     // Owner thread.
     void setRunState(RunState state);
     void setErrorText(const QString &text);
 
 private:
-    void scheduleNotify();
+    Q_INVOKABLE void scheduleNotify();
+    Q_INVOKABLE void runPosted();
     void notify();
 
     mutable std::mutex m_mutex;
@@ -99,6 +105,7 @@ private:
     QString m_errorText;
     CommandId m_nextId = 1;
     QHash<QObject *, std::vector<Address>> m_watched;
+    std::vector<std::function<void()>> m_posted; // under m_mutex
 };
 
 } // namespace rung::model
