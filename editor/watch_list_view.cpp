@@ -2,6 +2,9 @@
 
 #include "document.h"
 
+#include "model/image/monitor_source.h"
+#include "model/target/address.h"
+
 #include <QHeaderView>
 #include <QKeyEvent>
 
@@ -17,6 +20,73 @@ WatchListView::WatchListView(Document *document, QWidget *parent)
     setAccessibleName(tr("Watch lists"));
     connect(document, &Document::programChanged, this, &WatchListView::refresh);
     refresh();
+}
+
+void WatchListView::setMonitorSource(model::MonitorSource *source) {
+    if (m_source == source)
+        return;
+    if (m_source) {
+        disconnect(m_source, nullptr, this, nullptr);
+        m_source->setWatched(this, {});
+    }
+    m_source = source;
+    setColumnCount(source ? 2 : 1);
+    setHeaderLabels(source ? QStringList{tr("Watch list"), tr("Value")}
+                           : QStringList{tr("Watch list")});
+    if (source) {
+        header()->show();
+        connect(source, &model::MonitorSource::snapshotChanged, this, &WatchListView::showValues);
+        tellWatched();
+        showValues();
+    } else {
+        header()->hide();
+    }
+}
+
+void WatchListView::tellWatched() {
+    if (!m_source)
+        return;
+    std::vector<model::Address> devices;
+    for (const model::WatchList &list : m_document->project().watchLists)
+        for (const QString &device : list.devices) {
+            const auto address = model::parseAddress(m_document->target(), device);
+            if (const auto *a = std::get_if<model::Address>(&address))
+                devices.push_back(*a);
+        }
+    m_source->setWatched(this, std::move(devices));
+}
+
+void WatchListView::showValues() {
+    if (!m_source)
+        return;
+    const std::shared_ptr<const model::Snapshot> snapshot = m_source->snapshot();
+    for (int i = 0; i < topLevelItemCount(); ++i) {
+        QTreeWidgetItem *list = topLevelItem(i);
+        for (int k = 0; k < list->childCount(); ++k) {
+            QTreeWidgetItem *item = list->child(k);
+            item->setText(1, snapshot ? valueText(*snapshot, item->text(0)) : QString());
+        }
+    }
+}
+
+QString WatchListView::valueText(const model::Snapshot &snapshot, const QString &device) const {
+    const auto parsed = model::parseAddress(m_document->target(), device);
+    const auto *address = std::get_if<model::Address>(&parsed);
+    if (!address || !snapshot.layout || &snapshot.layout->target() != &m_document->target())
+        return tr("not a device");
+    const model::AreaKind kind = snapshot.layout->area(address->area).kind;
+    QString text;
+    if (kind == model::AreaKind::Bit || address->bit >= 0)
+        text = snapshot.bit(*address) ? tr("ON") : tr("OFF");
+    else if (kind == model::AreaKind::Timer || kind == model::AreaKind::Counter)
+        // Current value against the preset, and the done bit.
+        text = tr("%1 of %2, %3")
+                   .arg(snapshot.value(*address))
+                   .arg(snapshot.setValue(*address))
+                   .arg(snapshot.bit(*address) ? tr("ON") : tr("OFF"));
+    else
+        text = QString::number(snapshot.value(*address));
+    return snapshot.forced(*address) ? tr("%1 (forced)").arg(text) : text;
 }
 
 void WatchListView::refresh() {
@@ -39,6 +109,8 @@ void WatchListView::refresh() {
             new QTreeWidgetItem(item, {device});
         item->setExpanded(true);
     }
+    tellWatched();
+    showValues();
 }
 
 int WatchListView::selectedList() const {

@@ -53,6 +53,8 @@ void Engine::setPeriodMs(qint64 periodMs) {
 }
 
 void Engine::scan() {
+    if (m_inbox && m_inbox->pending())
+        m_inbox->applyTo(*this);
     const auto start = std::chrono::steady_clock::now();
     beginScan();
     if (m_record)

@@ -5,6 +5,7 @@
 // outputs visible at END; the virtual clock advances by exactly one period per scan.
 // Not thread-safe: one thread drives an Engine; other threads read SnapshotChannel.
 
+#include "command_inbox.h"
 #include "program.h"
 
 #include "model/image/snapshot.h"
@@ -72,6 +73,10 @@ public:
     Snapshot snapshot() const;
     // After each scan, publish a snapshot when the channel asks for one (may be null).
     void attach(SnapshotChannel *channel) { m_channel = channel; }
+    // Commands from other threads, applied at the start of each scan (may be null).
+    void attach(CommandInbox *inbox) { m_inbox = inbox; }
+    // The memory image in MemoryLayout order (the history recorder reads it after a scan).
+    const std::vector<std::int32_t> &words() const { return m_words; }
 
 private:
     void loadPresets(); // Program::presetLoads, at start and at each power cycle
@@ -117,6 +122,7 @@ private:
     qint64 m_scanMaxMs = 0;
     bool m_record = false;
     SnapshotChannel *m_channel = nullptr;
+    CommandInbox *m_inbox = nullptr;
 };
 
 } // namespace rung::simulator

@@ -1863,14 +1863,48 @@ Létradiagram- és utasításlista-szerkesztő VPC, Vigor, CPM1 és PL110 PLC-kh
 <context>
     <name>rung::editor::WatchListView</name>
     <message>
-        <location filename="../editor/watch_list_view.cpp" line="+14"/>
+        <location filename="../editor/watch_list_view.cpp" line="+17"/>
+        <location line="+17"/>
+        <location line="+1"/>
         <source>Watch list</source>
         <translation>Figyelőlista</translation>
     </message>
     <message>
-        <location line="+3"/>
+        <location line="-15"/>
         <source>Watch lists</source>
         <translation>Figyelőlisták</translation>
+    </message>
+    <message>
+        <location line="+14"/>
+        <source>Value</source>
+        <translation>Érték</translation>
+    </message>
+    <message>
+        <location line="+42"/>
+        <source>not a device</source>
+        <translation>nem operandus</translation>
+    </message>
+    <message>
+        <location line="+4"/>
+        <location line="+6"/>
+        <source>ON</source>
+        <translation>BE</translation>
+    </message>
+    <message>
+        <location line="-6"/>
+        <location line="+6"/>
+        <source>OFF</source>
+        <translation>KI</translation>
+    </message>
+    <message>
+        <location line="-3"/>
+        <source>%1 of %2, %3</source>
+        <translation>%1 / %2, %3</translation>
+    </message>
+    <message>
+        <location line="+6"/>
+        <source>%1 (forced)</source>
+        <translation>%1 (kényszerített)</translation>
     </message>
     <message>
         <location line="+42"/>
@@ -3857,6 +3891,29 @@ Létradiagram- és utasításlista-szerkesztő VPC, Vigor, CPM1 és PL110 PLC-kh
     </message>
 </context>
 <context>
+    <name>rung::simulator::CommandInbox</name>
+    <message>
+        <location filename="../simulator/command_inbox.cpp" line="+18"/>
+        <source>(no device)</source>
+        <translation>(nincs operandus)</translation>
+    </message>
+    <message>
+        <location line="+50"/>
+        <source>%1 has no set value to write</source>
+        <translation>%1 operandusnak nincs írható beállított értéke</translation>
+    </message>
+    <message>
+        <location line="+14"/>
+        <source>%1 is not a word this PLC can write</source>
+        <translation>%1 nem olyan szó, amelyet ez a PLC írni tud</translation>
+    </message>
+    <message>
+        <location line="+1"/>
+        <source>%1 is not a bit this PLC can write</source>
+        <translation>%1 nem olyan bit, amelyet ez a PLC írni tud</translation>
+    </message>
+</context>
+<context>
     <name>rung::simulator::Compiler</name>
     <message>
         <location filename="../simulator/compiler_detail.h" line="+101"/>
@@ -4011,6 +4068,14 @@ Létradiagram- és utasításlista-szerkesztő VPC, Vigor, CPM1 és PL110 PLC-kh
         <location line="+21"/>
         <source>MOVIND index %1 is outside 0..%2; nothing is written</source>
         <translation>a MOVIND %1 indexe kívül esik a 0..%2 tartományon; nem íródik semmi</translation>
+    </message>
+</context>
+<context>
+    <name>rung::simulator::SimulatorSession</name>
+    <message>
+        <location filename="../simulator/session.cpp" line="+135"/>
+        <source>Line %1: %2</source>
+        <translation>%1. sor: %2</translation>
     </message>
 </context>
 <context>

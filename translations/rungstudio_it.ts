@@ -1868,14 +1868,48 @@ Editor di schemi ladder e liste istruzioni per VPC, Vigor, CPM1 e PL110.</transl
 <context>
     <name>rung::editor::WatchListView</name>
     <message>
-        <location filename="../editor/watch_list_view.cpp" line="+14"/>
+        <location filename="../editor/watch_list_view.cpp" line="+17"/>
+        <location line="+17"/>
+        <location line="+1"/>
         <source>Watch list</source>
         <translation>Lista di osservazione</translation>
     </message>
     <message>
-        <location line="+3"/>
+        <location line="-15"/>
         <source>Watch lists</source>
         <translation>Liste di osservazione</translation>
+    </message>
+    <message>
+        <location line="+14"/>
+        <source>Value</source>
+        <translation>Valore</translation>
+    </message>
+    <message>
+        <location line="+42"/>
+        <source>not a device</source>
+        <translation>non è un operando</translation>
+    </message>
+    <message>
+        <location line="+4"/>
+        <location line="+6"/>
+        <source>ON</source>
+        <translation>ON</translation>
+    </message>
+    <message>
+        <location line="-6"/>
+        <location line="+6"/>
+        <source>OFF</source>
+        <translation>OFF</translation>
+    </message>
+    <message>
+        <location line="-3"/>
+        <source>%1 of %2, %3</source>
+        <translation>%1 di %2, %3</translation>
+    </message>
+    <message>
+        <location line="+6"/>
+        <source>%1 (forced)</source>
+        <translation>%1 (forzato)</translation>
     </message>
     <message>
         <location line="+42"/>
@@ -3869,6 +3903,29 @@ Editor di schemi ladder e liste istruzioni per VPC, Vigor, CPM1 e PL110.</transl
     </message>
 </context>
 <context>
+    <name>rung::simulator::CommandInbox</name>
+    <message>
+        <location filename="../simulator/command_inbox.cpp" line="+18"/>
+        <source>(no device)</source>
+        <translation>(nessun operando)</translation>
+    </message>
+    <message>
+        <location line="+50"/>
+        <source>%1 has no set value to write</source>
+        <translation>%1 non ha un valore di preset da scrivere</translation>
+    </message>
+    <message>
+        <location line="+14"/>
+        <source>%1 is not a word this PLC can write</source>
+        <translation>%1 non è una parola che questo PLC può scrivere</translation>
+    </message>
+    <message>
+        <location line="+1"/>
+        <source>%1 is not a bit this PLC can write</source>
+        <translation>%1 non è un bit che questo PLC può scrivere</translation>
+    </message>
+</context>
+<context>
     <name>rung::simulator::Compiler</name>
     <message>
         <location filename="../simulator/compiler_detail.h" line="+101"/>
@@ -4023,6 +4080,14 @@ Editor di schemi ladder e liste istruzioni per VPC, Vigor, CPM1 e PL110.</transl
         <location line="+21"/>
         <source>MOVIND index %1 is outside 0..%2; nothing is written</source>
         <translation>l&apos;indice %1 di MOVIND è fuori da 0..%2; non viene scritto nulla</translation>
+    </message>
+</context>
+<context>
+    <name>rung::simulator::SimulatorSession</name>
+    <message>
+        <location filename="../simulator/session.cpp" line="+135"/>
+        <source>Line %1: %2</source>
+        <translation>Riga %1: %2</translation>
     </message>
 </context>
 <context>

@@ -5,6 +5,7 @@
 
 #include "tests/simulator/sim_test_target.h"
 
+#include "model/image/history.h"
 #include "model/listing/il.h"
 #include "simulator/compiler.h"
 #include "simulator/engine.h"
@@ -126,6 +127,53 @@ void BM_PowerFlowRatio(benchmark::State &state) {
     state.counters["ratio"] = plainNs > 0 ? recordingNs / plainNs : 0;
 }
 
+// The cost of the history recorder with 1,000 watched devices (issue 11: <= 10% of the plain
+// scan), side by side like BM_PowerFlowRatio: bits, words, timer and counter values of the
+// mixed program, recorded after every scan.
+void BM_HistoryRatio(benchmark::State &state) {
+    using Clock = std::chrono::steady_clock;
+    Fixture plain(mixedProgram());
+    Fixture recording(mixedProgram());
+    if (!plain.result.ok() || !recording.result.ok()) {
+        state.SkipWithError("program did not compile");
+        return;
+    }
+    model::HistoryRecorder history(recording.result.program->layout);
+    const model::Target &t = *recording.target;
+    for (std::size_t area = 0; area < t.areas.size() && history.deviceCount() < 1000; ++area)
+        for (int i = t.areas[area].first; i <= t.areas[area].last && history.deviceCount() < 1000;
+             ++i)
+            history.watch({static_cast<int>(area), i, -1});
+    if (history.deviceCount() != 1000) {
+        state.SkipWithError("the target has fewer than 1000 devices");
+        return;
+    }
+    const model::Address input = plain.list.instructions[0].operands[0].address;
+    constexpr int kBlock = 1000;
+    double plainNs = 0;
+    double recordingNs = 0;
+    auto block = [&](Fixture &f, model::HistoryRecorder *h) {
+        const auto start = Clock::now();
+        for (int k = 0; k < kBlock; ++k) {
+            f.engine.setBit(input, (k & 8) != 0);
+            f.engine.scan();
+            if (h)
+                h->record(f.engine.statistics().scans, f.engine.statistics().timeMs,
+                          f.engine.words().data());
+        }
+        return std::chrono::duration<double, std::nano>(Clock::now() - start).count();
+    };
+    for (auto _ : state) {
+        plainNs += block(plain, nullptr);
+        recordingNs += block(recording, &history);
+    }
+    const double scans = static_cast<double>(state.iterations()) * kBlock;
+    state.counters["plain_ns_per_scan"] = plainNs / scans;
+    state.counters["history_ns_per_scan"] = recordingNs / scans;
+    state.counters["ratio"] = plainNs > 0 ? recordingNs / plainNs : 0;
+    state.counters["history_MB"] = static_cast<double>(history.memoryBytes()) / 1e6;
+}
+
 void BM_TrafficLight24Hours(benchmark::State &state) {
     for (auto _ : state) {
         Fixture f(QString::fromLatin1(kTrafficLight));
@@ -163,6 +211,10 @@ void BM_TrafficLight24HoursVigorListing(benchmark::State &state) {
 BENCHMARK(BM_Scan2048Steps)->Repetitions(5)->DisplayAggregatesOnly(true);
 BENCHMARK(BM_Scan2048StepsWithPowerFlow)->Repetitions(5)->DisplayAggregatesOnly(true);
 BENCHMARK(BM_PowerFlowRatio)
+    ->Unit(benchmark::kMillisecond)
+    ->Repetitions(5)
+    ->DisplayAggregatesOnly(true);
+BENCHMARK(BM_HistoryRatio)
     ->Unit(benchmark::kMillisecond)
     ->Repetitions(5)
     ->DisplayAggregatesOnly(true);

@@ -1,0 +1,183 @@
+#include "model/image/history.h"
+
+#include <algorithm>
+
+namespace rung::model {
+
+HistoryRecorder::HistoryRecorder(std::shared_ptr<const MemoryLayout> layout,
+                                 std::size_t changesPerDevice)
+    : m_layout(std::move(layout))
+    , m_capacity(std::max<std::size_t>(2, changesPerDevice)) {}
+
+bool HistoryRecorder::watch(const Address &address) {
+    if (find(address) >= 0)
+        return true;
+    Device d{address, -1, 0};
+    // A bit of a word (D0.3) or a bit device (X0, a timer's done bit) records 0/1; a word,
+    // a channel or a timer/counter (its current value) records the value.
+    if (address.bit >= 0 || m_layout->word(address) < 0 ||
+        m_layout->target().area(address.area).kind == AreaKind::Bit) {
+        const BitRef r = m_layout->bit(address);
+        if (!r.valid())
+            return false;
+        d.word = r.word;
+        d.mask = r.mask;
+    } else {
+        d.word = m_layout->word(address);
+    }
+    m_index.emplace(address, static_cast<int>(m_devices.size()));
+    m_devices.push_back(d);
+    m_last.push_back(0);
+    m_rings.emplace_back();
+    m_fresh.push_back(static_cast<int>(m_devices.size()) - 1);
+    rebuildWords();
+    return true;
+}
+
+void HistoryRecorder::rebuildWords() {
+    std::vector<std::pair<int, int>> byWord; // (word, device)
+    byWord.reserve(m_devices.size());
+    for (std::size_t i = 0; i < m_devices.size(); ++i)
+        byWord.emplace_back(m_devices[i].word, static_cast<int>(i));
+    std::sort(byWord.begin(), byWord.end());
+    std::vector<int> oldIndex = std::move(m_wordIndex);
+    std::vector<std::int32_t> oldValue = std::move(m_wordValue);
+    m_wordIndex.clear();
+    m_wordValue.clear();
+    m_wordFirst.clear();
+    m_wordDevices.clear();
+    for (const auto &[word, device] : byWord) {
+        if (m_wordIndex.empty() || m_wordIndex.back() != word) {
+            m_wordIndex.push_back(word);
+            const auto old = std::lower_bound(oldIndex.begin(), oldIndex.end(), word);
+            m_wordValue.push_back(old != oldIndex.end() && *old == word
+                                      ? oldValue[static_cast<std::size_t>(old - oldIndex.begin())]
+                                      : 0);
+            m_wordFirst.push_back(static_cast<int>(m_wordDevices.size()));
+        }
+        m_wordDevices.push_back(device);
+    }
+    m_wordFirst.push_back(static_cast<int>(m_wordDevices.size()));
+}
+
+void HistoryRecorder::clear() {
+    m_rings.assign(m_devices.size(), Ring{});
+    m_fresh.clear();
+    for (std::size_t i = 0; i < m_devices.size(); ++i)
+        m_fresh.push_back(static_cast<int>(i));
+}
+
+void HistoryRecorder::record(quint64 scan, qint64 timeMs, const std::int32_t *words) {
+    auto push = [&](std::size_t i, std::int32_t v) {
+        m_last[i] = v;
+        Ring &r = m_rings[i];
+        if (r.changes.size() < m_capacity) {
+            if (r.changes.size() == r.changes.capacity()) // grow, but never past the bound
+                r.changes.reserve(
+                    std::min(m_capacity, std::max<std::size_t>(8, 2 * r.changes.size())));
+            r.changes.push_back({scan, timeMs, v});
+        } else {
+            r.changes[r.head] = {scan, timeMs, v};
+            r.head = (r.head + 1) % m_capacity;
+        }
+    };
+    auto read = [&](const Device &d) {
+        const std::int32_t w = words[d.word];
+        return d.mask ? std::int32_t((static_cast<std::uint32_t>(w) & d.mask) != 0) : w;
+    };
+    for (int i : m_fresh)
+        push(static_cast<std::size_t>(i), read(m_devices[static_cast<std::size_t>(i)]));
+    m_fresh.clear();
+    const std::size_t n = m_wordIndex.size();
+    for (std::size_t j = 0; j < n; ++j) {
+        const std::int32_t w = words[m_wordIndex[j]];
+        if (w == m_wordValue[j]) [[likely]]
+            continue;
+        m_wordValue[j] = w;
+        for (int k = m_wordFirst[j]; k < m_wordFirst[j + 1]; ++k) {
+            const auto i = static_cast<std::size_t>(m_wordDevices[static_cast<std::size_t>(k)]);
+            const std::int32_t v = read(m_devices[i]);
+            if (v != m_last[i])
+                push(i, v);
+        }
+    }
+}
+
+int HistoryRecorder::find(const Address &address) const {
+    const auto it = m_index.find(address);
+    return it == m_index.end() ? -1 : it->second;
+}
+
+template <typename Key>
+std::optional<std::int32_t> HistoryRecorder::valueAt(int device, Key key) const {
+    if (device < 0)
+        return std::nullopt;
+    const Ring &r = m_rings[static_cast<std::size_t>(device)];
+    const std::size_t n = r.changes.size();
+    if (n == 0 || key(r.at(0)) > 0)
+        return std::nullopt; // before the oldest change kept
+    // The last change at or before the moment (key <= 0), by bisection over the ring.
+    std::size_t lo = 0, hi = n; // answer in [lo, hi)
+    while (hi - lo > 1) {
+        const std::size_t mid = (lo + hi) / 2;
+        if (key(r.at(mid)) <= 0)
+            lo = mid;
+        else
+            hi = mid;
+    }
+    return r.at(lo).value;
+}
+
+std::optional<std::int32_t> HistoryRecorder::valueAtScan(const Address &address,
+                                                         quint64 scan) const {
+    return valueAt(find(address), [scan](const Change &c) {
+        return c.scan < scan ? -1 : c.scan > scan ? 1 : 0;
+    });
+}
+
+std::optional<std::int32_t> HistoryRecorder::valueAtTime(const Address &address,
+                                                         qint64 timeMs) const {
+    return valueAt(find(address), [timeMs](const Change &c) {
+        return c.timeMs < timeMs ? -1 : c.timeMs > timeMs ? 1 : 0;
+    });
+}
+
+std::optional<quint64> HistoryRecorder::knownFrom(const Address &address) const {
+    const int device = find(address);
+    if (device < 0 || m_rings[static_cast<std::size_t>(device)].changes.empty())
+        return std::nullopt;
+    return m_rings[static_cast<std::size_t>(device)].at(0).scan;
+}
+
+std::vector<HistoryRecorder::Change> HistoryRecorder::changes(const Address &address, qint64 fromMs,
+                                                              qint64 toMs) const {
+    std::vector<Change> out;
+    const int device = find(address);
+    if (device < 0 || toMs < fromMs)
+        return out;
+    const Ring &r = m_rings[static_cast<std::size_t>(device)];
+    for (std::size_t k = 0; k < r.changes.size(); ++k) {
+        const Change &c = r.at(k);
+        if (c.timeMs > toMs)
+            break;
+        if (c.timeMs <= fromMs) {
+            // Only the last change at or before fromMs: the value the window starts with.
+            if (out.empty())
+                out.push_back(c);
+            else
+                out.back() = c;
+        } else {
+            out.push_back(c);
+        }
+    }
+    return out;
+}
+
+std::size_t HistoryRecorder::memoryBytes() const {
+    std::size_t bytes = 0;
+    for (const Ring &r : m_rings)
+        bytes += r.changes.capacity() * sizeof(Change);
+    return bytes;
+}
+
+} // namespace rung::model

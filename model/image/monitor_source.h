@@ -1,0 +1,111 @@
+#pragma once
+
+// What the editor draws from: the latest memory image of a PLC, its run state, an error to
+// show, and commands that write, force and release devices. A simulator session and an
+// online session implement it; nothing above it knows which one feeds it.
+//
+// Threads: a source lives in the thread that made it (its owner, the UI thread in the IDE)
+// and emits every signal there. Snapshots may be published from any thread; readers share
+// one immutable copy (no copy per reader) and are told at most kMaxSnapshotsPerSecond times.
+// Commands are asynchronous: submit() returns an id at once, commandFinished() reports it
+// later (online: when the PLC acknowledged the write).
+
+#include "model/image/device_command.h"
+#include "model/image/snapshot.h"
+
+#include <QElapsedTimer>
+#include <QHash>
+#include <QObject>
+#include <QString>
+#include <QTimer>
+
+#include <atomic>
+#include <functional>
+#include <memory>
+#include <mutex>
+#include <vector>
+
+namespace rung::model {
+
+class MonitorSource : public QObject {
+    Q_OBJECT
+
+public:
+    enum class RunState {
+        Offline,  // no program loaded / not connected
+        Stopped,  // at power-on state, not scanning
+        Paused,   // image kept, not scanning
+        Running,  // scanning
+        Stepping, // scanning a counted number of scans, then Paused
+    };
+    Q_ENUM(RunState)
+
+    using CommandId = quint64;
+    static constexpr int kMaxSnapshotsPerSecond = 30;
+    static constexpr int kMinSnapshotIntervalMs = 1000 / kMaxSnapshotsPerSecond + 1;
+
+    explicit MonitorSource(QObject *parent = nullptr);
+    ~MonitorSource() override;
+
+    // Any thread. Null until the first snapshot.
+    std::shared_ptr<const Snapshot> snapshot() const;
+    RunState runState() const { return m_runState; }
+    // Translated, empty when there is nothing wrong.
+    QString errorText() const { return m_errorText; }
+
+    // Owner thread. Returns the id commandFinished() will carry.
+    CommandId submit(const DeviceCommand &command);
+    CommandId writeBit(const Address &address, bool on);
+    CommandId writeWord(const Address &address, qint64 value);
+    CommandId writeSetValue(const Address &address, qint64 value);
+    CommandId force(const Address &address, bool on);
+    CommandId release(const Address &address);
+    CommandId releaseAll();
+
+    // Readers say which devices they show (an online source polls only those); a reader's
+    // set is dropped when it is destroyed. watched() is the union, sorted, without repeats.
+    void setWatched(QObject *reader, std::vector<Address> devices);
+    std::vector<Address> watched() const;
+
+signals:
+    void snapshotChanged();
+    void runStateChanged(rung::model::MonitorSource::RunState state);
+    void errorTextChanged(const QString &text);
+    void commandFinished(rung::model::MonitorSource::CommandId id, bool ok, const QString &error);
+    void watchedChanged();
+
+protected:
+    // Starts a command; the source calls finishCommand(id, ...) once it is done.
+    virtual void startCommand(CommandId id, const DeviceCommand &command) = 0;
+
+    CommandId nextCommandId() { return m_nextId++; } // owner thread
+    // Any thread: makes the snapshot the latest and tells readers, at the bounded rate.
+    void publishSnapshot(std::shared_ptr<const Snapshot> snapshot);
+    // Any thread: delivered to the owner thread as commandFinished().
+    void finishCommand(CommandId id, bool ok, const QString &error);
+    // Any thread: runs the function on the owner thread, in posting order. Everything the
+    // function needs travels through a mutex-guarded queue, so a ThreadSanitizer build sees
+    // the hand-over (Qt's own event queue is not instrumented).
+    void postToOwner(std::function<void()> function);
+    // Owner thread.
+    void setRunState(RunState state);
+    void setErrorText(const QString &text);
+
+private:
+    Q_INVOKABLE void scheduleNotify();
+    Q_INVOKABLE void runPosted();
+    void notify();
+
+    mutable std::mutex m_mutex;
+    std::shared_ptr<const Snapshot> m_latest;
+    std::atomic<bool> m_notifyPending{false};
+    QElapsedTimer m_lastNotify;
+    QTimer m_notifyTimer;
+    RunState m_runState = RunState::Offline;
+    QString m_errorText;
+    CommandId m_nextId = 1;
+    QHash<QObject *, std::vector<Address>> m_watched;
+    std::vector<std::function<void()>> m_posted; // under m_mutex
+};
+
+} // namespace rung::model

@@ -1,0 +1,87 @@
+#include "simulator/command_inbox.h"
+
+#include "engine.h"
+#include "model/target/address.h"
+
+#include <QCoreApplication>
+
+namespace rung::simulator {
+
+namespace {
+
+struct Tr {
+    Q_DECLARE_TR_FUNCTIONS(rung::simulator::CommandInbox)
+};
+
+QString name(const Engine &engine, const model::Address &address) {
+    if (!address.valid())
+        return Tr::tr("(no device)");
+    return model::formatAddress(engine.layout().target(), address);
+}
+
+} // namespace
+
+CommandInbox::CommandInbox(Completion completion)
+    : m_completion(std::move(completion)) {}
+
+void CommandInbox::post(EngineCommand command) {
+    std::lock_guard lock(m_mutex);
+    m_queue.push_back(std::move(command));
+    m_pending.store(true, std::memory_order_release);
+}
+
+int CommandInbox::applyTo(Engine &engine) {
+    {
+        std::lock_guard lock(m_mutex);
+        m_taken.swap(m_queue);
+        m_pending.store(false, std::memory_order_release);
+    }
+    const int count = static_cast<int>(m_taken.size());
+    for (const EngineCommand &c : m_taken) {
+        QString error;
+        const bool ok = applyCommand(engine, c, &error);
+        if (m_completion)
+            m_completion(c.id, ok, error);
+    }
+    m_taken.clear();
+    return count;
+}
+
+bool applyCommand(Engine &engine, const EngineCommand &command, QString *error) {
+    if (std::holds_alternative<PowerCycle>(command.what)) {
+        engine.powerCycle();
+        return true;
+    }
+    using Kind = model::DeviceCommand::Kind;
+    const auto &c = std::get<model::DeviceCommand>(command.what);
+    bool ok = false;
+    switch (c.kind) {
+    case Kind::WriteBit:
+        ok = engine.setBit(c.address, c.value != 0);
+        break;
+    case Kind::WriteWord:
+        ok = engine.writeWord(c.address, c.value);
+        break;
+    case Kind::WriteSetValue:
+        ok = engine.writeSetValue(c.address, c.value);
+        if (!ok && error)
+            *error = Tr::tr("%1 has no set value to write").arg(name(engine, c.address));
+        return ok;
+    case Kind::Force:
+        ok = engine.force(c.address, c.value != 0);
+        break;
+    case Kind::Release:
+        ok = engine.release(c.address);
+        break;
+    case Kind::ReleaseAll:
+        engine.releaseAll();
+        return true;
+    }
+    if (!ok && error)
+        *error = c.kind == Kind::WriteWord
+                     ? Tr::tr("%1 is not a word this PLC can write").arg(name(engine, c.address))
+                     : Tr::tr("%1 is not a bit this PLC can write").arg(name(engine, c.address));
+    return ok;
+}
+
+} // namespace rung::simulator

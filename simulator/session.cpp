@@ -1,0 +1,245 @@
+#include "simulator/session.h"
+
+#include <QCoreApplication>
+
+#include <chrono>
+
+namespace rung::simulator {
+
+namespace {
+
+using Clock = std::chrono::steady_clock;
+
+struct Tr {
+    Q_DECLARE_TR_FUNCTIONS(rung::simulator::SimulatorSession)
+};
+
+} // namespace
+
+SimulatorSession::SimulatorSession(std::shared_ptr<const Program> program, QObject *parent)
+    : MonitorSource(parent)
+    , m_program(std::move(program))
+    , m_inbox([this](quint64 id, bool ok, const QString &error) { finishCommand(id, ok, error); })
+    , m_history(m_program->layout) {
+    setRunState(RunState::Stopped);
+    m_worker = std::thread([this] { workerLoop(); });
+}
+
+SimulatorSession::~SimulatorSession() {
+    control([this] { m_quit = true; });
+    m_worker.join();
+}
+
+void SimulatorSession::control(const std::function<void()> &change) {
+    {
+        std::lock_guard lock(m_mutex);
+        change();
+        ++m_generation;
+    }
+    m_wake.notify_all();
+}
+
+void SimulatorSession::wakeWorker() {
+    // Taking the lock orders the post before the worker's check of pending(): no lost wake-up.
+    { std::lock_guard lock(m_mutex); }
+    m_wake.notify_all();
+}
+
+void SimulatorSession::run() {
+    control([this] {
+        m_mode = Mode::Running;
+        m_stepsLeft = 0;
+    });
+    setRunState(RunState::Running);
+}
+
+void SimulatorSession::pause() {
+    control([this] {
+        if (m_mode == Mode::Running)
+            m_mode = Mode::Paused;
+        m_stepsLeft = 0;
+    });
+    if (runState() == RunState::Running || runState() == RunState::Stepping)
+        setRunState(RunState::Paused);
+}
+
+void SimulatorSession::stop() {
+    control([this] {
+        m_mode = Mode::Stopped;
+        m_stepsLeft = 0;
+        m_reset = true;
+    });
+    setRunState(RunState::Stopped);
+}
+
+void SimulatorSession::runScans(quint64 count) {
+    if (count == 0)
+        return;
+    control([this, count] {
+        m_mode = Mode::Paused;
+        m_stepsLeft = count;
+    });
+    setRunState(RunState::Stepping);
+}
+
+void SimulatorSession::setSpeed(double factor) {
+    control([this, factor] { m_speed = factor; });
+}
+
+double SimulatorSession::speed() const {
+    std::lock_guard lock(m_mutex);
+    return m_speed;
+}
+
+void SimulatorSession::setPeriodMs(qint64 periodMs) {
+    control([this, periodMs] { m_periodMs = std::max<qint64>(1, periodMs); });
+}
+
+void SimulatorSession::setPowerFlowRecording(bool on) {
+    control([this, on] { m_recordFlow = on; });
+}
+
+model::MonitorSource::CommandId SimulatorSession::powerCycle() {
+    const CommandId id = nextCommandId();
+    m_inbox.post({id, PowerCycle{}});
+    wakeWorker();
+    return id;
+}
+
+void SimulatorSession::startCommand(CommandId id, const model::DeviceCommand &command) {
+    m_inbox.post({id, command});
+    wakeWorker(); // a paused worker applies it at once
+}
+
+bool SimulatorSession::watchHistory(const model::Address &address) {
+    std::lock_guard lock(m_historyMutex);
+    return m_history.watch(address);
+}
+
+void SimulatorSession::readHistory(
+    const std::function<void(const model::HistoryRecorder &)> &read) const {
+    std::lock_guard lock(m_historyMutex);
+    read(m_history);
+}
+
+void SimulatorSession::publish(const Engine &engine) {
+    publishSnapshot(std::make_shared<const Snapshot>(engine.snapshot()));
+}
+
+void SimulatorSession::reportErrors(const Engine &engine, std::size_t &reported) {
+    const auto &errors = engine.runtimeErrors();
+    if (errors.size() == reported)
+        return;
+    reported = errors.size();
+    const RuntimeError &e = errors.back();
+    const QString text = e.line > 0 ? Tr::tr("Line %1: %2").arg(e.line).arg(e.message) : e.message;
+    postToOwner([this, text] { setErrorText(text); });
+}
+
+void SimulatorSession::workerLoop() {
+    auto engine = std::make_unique<Engine>(m_program);
+    engine->attach(&m_inbox);
+    std::size_t errorsReported = 0;
+    quint64 seen = ~quint64{0};
+    Clock::time_point paceWall;
+    qint64 paceVirtualMs = 0;
+    Clock::time_point lastPublish = Clock::now();
+    publish(*engine);
+    for (;;) {
+        bool reset = false, scan = false, stepsDone = false;
+        quint64 generation = 0;
+        {
+            std::unique_lock lock(m_mutex);
+            for (;;) {
+                if (m_quit)
+                    return;
+                if (m_generation != seen) {
+                    // A control change: take the new settings, pace from here.
+                    seen = m_generation;
+                    if (m_periodMs > 0)
+                        engine->setPeriodMs(m_periodMs);
+                    engine->setPowerFlowRecording(m_recordFlow);
+                    paceWall = Clock::now();
+                    paceVirtualMs = engine->statistics().timeMs;
+                }
+                if (m_reset) {
+                    m_reset = false;
+                    reset = true;
+                    break;
+                }
+                if (m_mode == Mode::Running || m_stepsLeft > 0) {
+                    if (m_speed > 0) {
+                        // A scan is due when wall time caught up with its virtual start.
+                        const double dueMs =
+                            static_cast<double>(engine->statistics().timeMs - paceVirtualMs) /
+                            m_speed;
+                        const auto due =
+                            paceWall + std::chrono::duration_cast<Clock::duration>(
+                                           std::chrono::duration<double, std::milli>(dueMs));
+                        if (Clock::now() < due) {
+                            m_wake.wait_until(lock, due);
+                            continue;
+                        }
+                    }
+                    scan = true;
+                    if (m_stepsLeft > 0 && --m_stepsLeft == 0)
+                        stepsDone = true;
+                    generation = m_generation;
+                    break;
+                }
+                if (m_inbox.pending())
+                    break; // paused or stopped: apply at once
+                m_wake.wait(lock);
+            }
+        }
+        if (reset) {
+            engine = std::make_unique<Engine>(m_program);
+            engine->attach(&m_inbox);
+            {
+                std::lock_guard lock(m_mutex);
+                if (m_periodMs > 0)
+                    engine->setPeriodMs(m_periodMs);
+                engine->setPowerFlowRecording(m_recordFlow);
+            }
+            errorsReported = 0;
+            {
+                std::lock_guard lock(m_historyMutex);
+                m_history.clear();
+            }
+            postToOwner([this] { setErrorText({}); });
+            publish(*engine);
+            lastPublish = Clock::now();
+            continue;
+        }
+        if (!scan) {
+            m_inbox.applyTo(*engine);
+            publish(*engine);
+            lastPublish = Clock::now();
+            continue;
+        }
+        engine->scan();
+        {
+            std::lock_guard lock(m_historyMutex);
+            if (m_history.deviceCount() > 0)
+                m_history.record(engine->statistics().scans, engine->statistics().timeMs,
+                                 engine->words().data());
+        }
+        reportErrors(*engine, errorsReported);
+        const auto now = Clock::now();
+        if (stepsDone || now - lastPublish >= std::chrono::milliseconds(kMinSnapshotIntervalMs)) {
+            publish(*engine);
+            lastPublish = now;
+        }
+        if (stepsDone)
+            postToOwner([this, generation] {
+                // Only when no later control call (run, stop, ...) has changed the state.
+                std::unique_lock lock(m_mutex);
+                const bool current = m_generation == generation;
+                lock.unlock();
+                if (current && runState() == RunState::Stepping)
+                    setRunState(RunState::Paused);
+            });
+    }
+}
+
+} // namespace rung::simulator

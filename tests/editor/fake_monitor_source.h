@@ -1,0 +1,46 @@
+#pragma once
+
+// A MonitorSource for tests of the layer above it: the test publishes the snapshots it wants
+// seen, and commands are recorded and answered at once (ok, or the error the test chose).
+
+#include "model/image/monitor_source.h"
+
+#include <vector>
+
+namespace rung::test {
+
+class FakeMonitorSource : public model::MonitorSource {
+public:
+    using MonitorSource::MonitorSource;
+
+    // The image of a target with every device zero.
+    std::shared_ptr<model::Snapshot> blank(const model::Target &target) {
+        m_layout = std::make_shared<const model::MemoryLayout>(target);
+        auto snapshot = std::make_shared<model::Snapshot>();
+        snapshot->layout = m_layout;
+        const auto words = static_cast<std::size_t>(m_layout->wordCount());
+        snapshot->words.assign(words, 0);
+        snapshot->forceMask.assign(words, 0);
+        snapshot->forceValue.assign(words, 0);
+        return snapshot;
+    }
+    void publish(std::shared_ptr<const model::Snapshot> snapshot) {
+        publishSnapshot(std::move(snapshot));
+    }
+    void setState(RunState state) { setRunState(state); }
+    void setError(const QString &text) { setErrorText(text); }
+
+    std::vector<model::DeviceCommand> commands;
+    QString failWith; // empty: every command succeeds
+
+protected:
+    void startCommand(CommandId id, const model::DeviceCommand &command) override {
+        commands.push_back(command);
+        finishCommand(id, failWith.isEmpty(), failWith);
+    }
+
+private:
+    std::shared_ptr<const model::MemoryLayout> m_layout;
+};
+
+} // namespace rung::test

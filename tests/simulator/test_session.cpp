@@ -1,0 +1,244 @@
+// The simulator as a MonitorSource: an engine on its worker thread, driven from the test's
+// thread (the owner) while another thread reads snapshots. Waits are QSignalSpy::wait or
+// loops that process events until a condition holds, with generous time limits; no sleep
+// is an assertion.
+
+#include "real_target_sim.h"
+
+#include "simulator/session.h"
+
+#include <QElapsedTimer>
+#include <QSignalSpy>
+
+#include <gtest/gtest.h>
+
+#include <atomic>
+#include <thread>
+
+using namespace rung;
+using namespace rung::simulator;
+using RunState = model::MonitorSource::RunState;
+
+namespace {
+
+constexpr int kPatienceMs = 10000;
+
+// Processes events until the condition holds or the patience runs out.
+template <typename Condition> bool eventually(Condition condition, int ms = kPatienceMs) {
+    QElapsedTimer t;
+    t.start();
+    while (!condition()) {
+        if (t.elapsed() > ms)
+            return false;
+        QCoreApplication::processEvents(QEventLoop::AllEvents, 10);
+    }
+    return true;
+}
+
+struct SessionFixture {
+    explicit SessionFixture(const char *program)
+        : sim(model::Family::Vigor, program) {
+        EXPECT_TRUE(sim.result.ok());
+        session = std::make_unique<SimulatorSession>(sim.result.program);
+    }
+    model::Address at(const char *name) const { return sim.at(name); }
+    // The latest snapshot; the worker publishes the first one soon after the start, so a
+    // test waits for it before reading.
+    std::shared_ptr<const model::Snapshot> latest() const {
+        EXPECT_TRUE(eventually([&] { return session->snapshot() != nullptr; }));
+        return session->snapshot();
+    }
+    // Waits for the command's completion and returns its result.
+    std::pair<bool, QString> finish(model::MonitorSource::CommandId id) {
+        std::pair<bool, QString> result{false, QStringLiteral("no answer")};
+        bool done = false;
+        QObject context;
+        QObject::connect(session.get(), &model::MonitorSource::commandFinished, &context,
+                         [&](model::MonitorSource::CommandId finished, bool ok, const QString &e) {
+                             if (finished == id) {
+                                 result = {ok, e};
+                                 done = true;
+                             }
+                         });
+        EXPECT_TRUE(eventually([&] { return done; })) << "command " << id;
+        return result;
+    }
+
+    test::RealTargetSim sim;
+    std::unique_ptr<SimulatorSession> session;
+};
+
+} // namespace
+
+TEST(SimulatorSession, StartsStoppedWithAPowerOnSnapshot) {
+    SessionFixture f("LD X0\nOUT Y0\nEND");
+    EXPECT_EQ(f.session->runState(), RunState::Stopped);
+    ASSERT_TRUE(eventually([&] { return f.latest() != nullptr; }));
+    EXPECT_EQ(f.latest()->statistics.scans, 0u);
+    EXPECT_FALSE(f.latest()->bit(f.at("Y0")));
+}
+
+TEST(SimulatorSession, ForcedInputDrivesTheOutputAfterAScan) {
+    SessionFixture f("LD X0\nOUT Y0\nEND");
+    // Commands are answered before the next scan, even though the worker finishes them.
+    const auto id = f.session->force(f.at("X0"), true);
+    EXPECT_TRUE(f.finish(id).first);
+    f.session->singleScan();
+    ASSERT_TRUE(eventually([&] {
+        auto s = f.latest();
+        return s && s->statistics.scans == 1;
+    }));
+    EXPECT_TRUE(f.latest()->bit(f.at("Y0")));
+    EXPECT_TRUE(f.latest()->forced(f.at("X0")));
+    EXPECT_TRUE(eventually([&] { return f.session->runState() == RunState::Paused; }));
+
+    EXPECT_TRUE(f.finish(f.session->release(f.at("X0"))).first);
+    f.session->singleScan();
+    ASSERT_TRUE(eventually([&] { return f.latest()->statistics.scans == 2; }));
+    EXPECT_FALSE(f.latest()->bit(f.at("Y0")));
+    EXPECT_FALSE(f.latest()->forced(f.at("X0")));
+}
+
+TEST(SimulatorSession, WrittenWordIsInTheNextSnapshot) {
+    SessionFixture f("LD X0\nOUT Y0\nEND");
+    EXPECT_TRUE(f.finish(f.session->writeWord(f.at("D5"), 1234)).first);
+    ASSERT_TRUE(eventually([&] { return f.latest()->value(f.at("D5")) == 1234; }));
+    EXPECT_TRUE(f.finish(f.session->writeSetValue(f.at("T3"), 50)).first);
+    ASSERT_TRUE(eventually([&] { return f.latest()->setValue(f.at("T3")) == 50; }));
+}
+
+TEST(SimulatorSession, CommandOnAWrongDeviceFailsWithItsName) {
+    SessionFixture f("LD X0\nOUT Y0\nEND");
+    const auto [ok, error] = f.finish(f.session->force(f.at("D0"), true)); // a word, not a bit
+    EXPECT_FALSE(ok);
+    EXPECT_TRUE(error.contains(QLatin1String("D0"))) << error.toStdString();
+    const auto [ok2, error2] = f.finish(f.session->writeSetValue(f.at("D0"), 1));
+    EXPECT_FALSE(ok2);
+    EXPECT_TRUE(error2.contains(QLatin1String("D0"))) << error2.toStdString();
+}
+
+TEST(SimulatorSession, PowerCycleKeepsRetentiveAreasOnly) {
+    SessionFixture f("LD X0\nOUT Y0\nEND");
+    f.session->writeWord(f.at("D0"), 11);   // data registers
+    f.session->writeWord(f.at("D200"), 22); // latched data registers (Vigor table: retentive)
+    EXPECT_TRUE(f.finish(f.session->powerCycle()).first);
+    ASSERT_TRUE(eventually([&] { return f.latest()->value(f.at("D200")) == 22; }));
+    EXPECT_EQ(f.latest()->value(f.at("D0")), 0);
+}
+
+TEST(SimulatorSession, StopReturnsToPowerOnAndStepsCountScans) {
+    SessionFixture f("LD X0\nOUT Y0\nEND");
+    QSignalSpy states(f.session.get(), &model::MonitorSource::runStateChanged);
+    f.session->writeWord(f.at("D200"), 7);
+    f.session->runScans(5);
+    EXPECT_EQ(f.session->runState(), RunState::Stepping);
+    ASSERT_TRUE(eventually([&] { return f.session->runState() == RunState::Paused; }));
+    ASSERT_TRUE(eventually([&] { return f.latest()->statistics.scans == 5; }));
+    EXPECT_EQ(f.latest()->value(f.at("D200")), 7);
+    f.session->stop();
+    EXPECT_EQ(f.session->runState(), RunState::Stopped);
+    // Power-on of a fresh PLC: every area at zero, the retentive ones too.
+    ASSERT_TRUE(eventually([&] { return f.latest()->statistics.scans == 0; }));
+    EXPECT_EQ(f.latest()->value(f.at("D200")), 0);
+    ASSERT_GE(states.count(), 3);
+    EXPECT_EQ(states.at(0).at(0).value<RunState>(), RunState::Stepping);
+    EXPECT_EQ(states.at(1).at(0).value<RunState>(), RunState::Paused);
+    EXPECT_EQ(states.at(2).at(0).value<RunState>(), RunState::Stopped);
+}
+
+TEST(SimulatorSession, RunningAtFullSpeedTellsReadersAtMostThirtyTimesASecond) {
+    SessionFixture f("LD X0\nOUT Y0\nEND");
+    ASSERT_TRUE(eventually([&] { return f.latest() != nullptr; }));
+    QSignalSpy changes(f.session.get(), &model::MonitorSource::snapshotChanged);
+    f.session->setSpeed(0); // as fast as the engine goes: many thousand scans a second
+    f.session->run();
+    QElapsedTimer window;
+    window.start();
+    while (window.elapsed() < 1000)
+        changes.wait(50);
+    const qint64 elapsed = window.elapsed();
+    f.session->pause();
+    const quint64 scans = f.latest()->statistics.scans;
+    // One notification per kMinSnapshotIntervalMs at most, plus the one that may be due at
+    // the start of the window.
+    EXPECT_LE(changes.count(), elapsed / model::MonitorSource::kMinSnapshotIntervalMs + 1);
+    EXPECT_GE(changes.count(), 3); // and it does keep telling
+    EXPECT_GT(scans, static_cast<quint64>(changes.count()));
+}
+
+TEST(SimulatorSession, RealTimeSpeedPacesVirtualTime) {
+    SessionFixture f("LD X0\nOUT Y0\nEND");
+    f.session->setPeriodMs(10);
+    f.session->setSpeed(1.0);
+    f.session->run();
+    QElapsedTimer t;
+    t.start();
+    ASSERT_TRUE(eventually([&] { return f.latest()->statistics.timeMs >= 300; }));
+    const qint64 wall = t.elapsed();
+    f.session->pause();
+    // 300 ms of virtual time cannot come sooner than 300 ms of wall time at x1 (less one
+    // period: the first scan is due at once).
+    EXPECT_GE(wall, 290);
+}
+
+TEST(SimulatorSession, ReadersOnAnotherThreadShareConsistentSnapshotsWhileCommandsArrive) {
+    // Y0 follows X0 and D0 counts scans; the reader checks each snapshot is whole (scans and
+    // virtual time agree) and that time never runs backwards.
+    SessionFixture f("LD M9000\nADD D0 K1 D0\nLD X0\nOUT Y0\nEND");
+    ASSERT_TRUE(f.sim.result.ok());
+    f.session->setSpeed(0);
+    f.session->run();
+    std::atomic<bool> done{false};
+    std::atomic<int> reads{0};
+    std::atomic<bool> consistent{true};
+    const model::Address d0 = f.at("D0");
+    std::thread reader([&] {
+        quint64 last = 0;
+        while (!done.load()) {
+            if (auto s = f.session->snapshot()) {
+                const auto &st = s->statistics;
+                // D0 counts scans (16 bits, wrapping): a torn copy would disagree.
+                if (st.scans < last || st.timeMs != static_cast<qint64>(st.scans) * st.periodMs ||
+                    s->value(d0) != model::wrapToWidth(static_cast<qint64>(st.scans), 16))
+                    consistent = false;
+                last = st.scans;
+                ++reads;
+            }
+            std::this_thread::yield();
+        }
+    });
+    for (int k = 0; k < 50; ++k) {
+        f.session->writeBit(f.at("X0"), k % 2 == 0);
+        f.session->force(f.at("M0"), k % 3 == 0);
+        QCoreApplication::processEvents();
+    }
+    const auto last = f.session->writeBit(f.at("X0"), true);
+    EXPECT_TRUE(f.finish(last).first);
+    EXPECT_TRUE(eventually([&] { return f.latest()->bit(f.at("Y0")) && reads.load() > 100; }));
+    f.session->pause();
+    done = true;
+    reader.join();
+    EXPECT_TRUE(consistent.load());
+    EXPECT_GT(f.latest()->statistics.scans, 0u);
+}
+
+TEST(SimulatorSession, HistoryRecordsWatchedDevicesPerScan) {
+    SessionFixture f("LD X0\nOUT Y0\nEND");
+    ASSERT_TRUE(f.session->watchHistory(f.at("Y0")));
+    EXPECT_FALSE(f.session->watchHistory(model::Address{}));
+    f.session->setPeriodMs(10);
+    f.session->runScans(3); // Y0 off after scans 1..3
+    ASSERT_TRUE(eventually([&] { return f.session->runState() == RunState::Paused; }));
+    f.session->writeBit(f.at("X0"), true);
+    f.session->runScans(2); // on after scans 4, 5
+    ASSERT_TRUE(eventually([&] { return f.latest()->statistics.scans == 5; }));
+    f.session->readHistory([&](const model::HistoryRecorder &h) {
+        EXPECT_EQ(h.valueAtScan(f.at("Y0"), 3), 0);
+        EXPECT_EQ(h.valueAtScan(f.at("Y0"), 4), 1);
+        EXPECT_EQ(h.valueAtTime(f.at("Y0"), 35), 0);
+        EXPECT_EQ(h.valueAtTime(f.at("Y0"), 40), 1);
+        const auto changes = h.changes(f.at("Y0"), 0, 100);
+        ASSERT_EQ(changes.size(), 2u);
+        EXPECT_EQ(changes[1], (model::HistoryRecorder::Change{4, 40, 1}));
+    });
+}
