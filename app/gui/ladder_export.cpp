@@ -166,8 +166,7 @@ bool ProgramExport::print(QPrinter *printer) const {
     return p.end();
 }
 
-bool ProgramExport::listing(const QString &path, QString *error,
-                            const std::vector<model::Diagnostic> &typedErrors) const {
+QString ProgramExport::listingBlockers(const std::vector<model::Diagnostic> &typedErrors) const {
     // A listing that leaves out what cannot be listed would be a shorter program than the
     // user made, without a word: refuse, and say what stands in the way.
     QStringList reasons;
@@ -177,10 +176,16 @@ bool ProgramExport::listing(const QString &path, QString *error,
     for (const model::Diagnostic &d : m_document.listing().problems)
         if (d.severity == model::Severity::Error)
             reasons << tr("Rung %1: %2").arg(d.location.rung + 1).arg(d.message);
-    if (!reasons.isEmpty()) {
+    return reasons.isEmpty()
+               ? QString()
+               : tr("Nothing was written: the program has errors.\n%1").arg(reasons.join(u'\n'));
+}
+
+bool ProgramExport::listing(const QString &path, QString *error,
+                            const std::vector<model::Diagnostic> &typedErrors) const {
+    if (const QString blockers = listingBlockers(typedErrors); !blockers.isEmpty()) {
         if (error)
-            *error =
-                tr("Nothing was written: the program has errors.\n%1").arg(reasons.join(u'\n'));
+            *error = blockers;
         return false;
     }
     QSaveFile file(path);

@@ -35,6 +35,8 @@ public:
     // as `rungstudio-cli convert` does. False with the reason, also when it cannot be written.
     bool listing(const QString &path, QString *error,
                  const std::vector<model::Diagnostic> &typedErrors = {}) const;
+    // Why listing() would refuse, empty when it would not: asked before a file is chosen.
+    QString listingBlockers(const std::vector<model::Diagnostic> &typedErrors = {}) const;
 
 private:
     const editor::Document &m_document;

@@ -17,6 +17,7 @@
 #include <QDirIterator>
 #include <QFileDialog>
 #include <QFileInfo>
+#include <QFontMetrics>
 #include <QFormLayout>
 #include <QMenu>
 #include <QMessageBox>
@@ -237,6 +238,13 @@ void MainWindow::fileNew() {
     connect(buttons, &QDialogButtonBox::accepted, &dialog, &QDialog::accept);
     connect(buttons, &QDialogButtonBox::rejected, &dialog, &QDialog::reject);
     form->addRow(buttons);
+    // A title bar shows the title beside the window manager's icon and buttons; a dialog only
+    // as wide as its two combo boxes cut "Nuovo progetto" to "Nuovo... getto". Room for the
+    // title in a bold title-bar font and about four buttons' width besides.
+    QFont titleFont = dialog.font();
+    titleFont.setBold(true);
+    dialog.setMinimumWidth(QFontMetrics(titleFont).horizontalAdvance(dialog.windowTitle()) +
+                           8 * QFontMetrics(titleFont).height());
     if (dialog.exec() != QDialog::Accepted)
         return;
     newProject(*model::Target::byId(family->currentData().toString()), modelBox->currentText());
@@ -305,12 +313,18 @@ void MainWindow::importListing() {
 }
 
 void MainWindow::exportListing() {
+    if (m_ilTimer.isActive())
+        applyListing();
+    // Say what stands in the way before the user picks a file for nothing.
+    QString error =
+        ProgramExport(*m_document, m_ladder->namesFirst()).listingBlockers(m_listingErrors);
+    if (!error.isEmpty()) {
+        QMessageBox::critical(this, tr("Cannot export"), error);
+        return;
+    }
     const QString path =
         askSavePath(tr("Export Instruction List"), tr("Instruction lists (*.il *.txt)"),
                     {QStringLiteral("il"), QStringLiteral("txt")});
-    QString error;
-    if (m_ilTimer.isActive())
-        applyListing();
     if (!path.isEmpty() &&
         !ProgramExport(*m_document, m_ladder->namesFirst()).listing(path, &error, m_listingErrors))
         QMessageBox::critical(this, tr("Cannot export"), error);

@@ -7,12 +7,16 @@
 #include "editor/il_editor.h"
 #include "editor/problems_view.h"
 
+#include <QApplication>
 #include <QCoreApplication>
+#include <QDialog>
 #include <QDockWidget>
+#include <QFontMetrics>
 #include <QLocale>
 #include <QMessageBox>
 #include <QPushButton>
 #include <QSettings>
+#include <QTimer>
 
 #include "tests/editor/window_fixture.h"
 
@@ -128,4 +132,32 @@ TEST_F(LanguageSwitch, TheChoiceIsRememberedForTheNextStart) {
     const QString system = QLocale::system().name().left(2);
     EXPECT_EQ(app::startLanguage(),
               app::availableLanguages().contains(system) ? system : QStringLiteral("en"));
+}
+
+// The New Project dialog leaves its title room in a title bar: in Italian it read
+// "Nuovo... getto" under a window manager, the dialog only as wide as its combo boxes.
+TEST_F(LanguageSwitch, TheNewProjectDialogIsWideEnoughForItsTitle) {
+    pick(window, "Italiano");
+    window.document()->markSaved(); // no "save the changes?" before the dialog
+    QAction *entry = test::menuAction(
+        window, tr("rung::app::MainWindow", "&New Project...").remove(QLatin1Char('&')));
+    ASSERT_NE(entry, nullptr);
+    QString title;
+    int width = 0;
+    int needed = 0;
+    QTimer::singleShot(0, [&] {
+        if (auto *dialog = qobject_cast<QDialog *>(QApplication::activeModalWidget())) {
+            title = dialog->windowTitle();
+            width = dialog->width();
+            QFont bold = dialog->font();
+            bold.setBold(true);
+            // The title and a title bar's icon, minimise, maximise and close buttons: under
+            // openbox these took 115 px beside the title, about seven text heights.
+            needed = QFontMetrics(bold).horizontalAdvance(title) + 7 * QFontMetrics(bold).height();
+            dialog->reject();
+        }
+    });
+    entry->trigger();
+    EXPECT_EQ(title, QStringLiteral("Nuovo progetto"));
+    EXPECT_GE(width, needed) << title.toStdString();
 }

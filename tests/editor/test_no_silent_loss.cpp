@@ -123,6 +123,27 @@ TEST_F(NoSilentLoss, ExportRefusesWhileTheListAsTypedHasErrorsNamingThem) {
     EXPECT_TRUE(error.contains(QStringLiteral("X8"))) << error.toStdString();
 }
 
+// The refusal comes before the file dialog: the user does not pick a file for nothing.
+TEST_F(NoSilentLoss, ExportFromTheMenuRefusesBeforeAskingForAFile) {
+    type(kTyped);
+    QString seen;
+    QTimer::singleShot(0, [&seen] {
+        QWidget *modal = QApplication::activeModalWidget();
+        seen = modal ? QString::fromLatin1(modal->metaObject()->className()) : QString();
+        if (auto *box = qobject_cast<QMessageBox *>(modal)) {
+            seen += u' ' + box->text();
+            box->accept();
+        } else if (modal) {
+            modal->close();
+        }
+    });
+    QAction *entry = test::menuAction(window, QStringLiteral("Export Instruction List..."));
+    ASSERT_NE(entry, nullptr);
+    entry->trigger();
+    EXPECT_TRUE(seen.startsWith(QStringLiteral("QMessageBox"))) << seen.toStdString();
+    EXPECT_TRUE(seen.contains(QStringLiteral("X8"))) << seen.toStdString();
+}
+
 TEST_F(NoSilentLoss, ExportRefusesARungThatCannotBeListedNamingIt) {
     QFile bridge(QStringLiteral(RUNG_TEST_DATA_DIR "/ladder/bridge.ladder"));
     ASSERT_TRUE(bridge.open(QIODevice::ReadOnly));
