@@ -162,6 +162,54 @@ Kilépési kód: 0 nincs hiba, 1 a programban hiba van, 2 használati vagy I/O h
     </message>
 </context>
 <context>
+    <name>rung::app::ExampleTitles</name>
+    <message>
+        <location filename="../app/gui/example_titles.cpp" line="+19"/>
+        <source>Add once a second</source>
+        <translation>Összeadás másodpercenként</translation>
+    </message>
+    <message>
+        <location line="+1"/>
+        <source>Timers counting down and up</source>
+        <translation>Lefelé és felfelé számoló időzítők</translation>
+    </message>
+    <message>
+        <location line="+1"/>
+        <source>Stairway light</source>
+        <translation>Lépcsőházi világítás</translation>
+    </message>
+    <message>
+        <location line="+2"/>
+        <source>Extending a counter&apos;s range</source>
+        <translation>Számlálási tartomány bővítése</translation>
+    </message>
+    <message>
+        <location line="+1"/>
+        <source>Off delay</source>
+        <translation>Kikapcsolási késleltetés</translation>
+    </message>
+    <message>
+        <location line="+1"/>
+        <source>Flasher</source>
+        <translation>Villogó</translation>
+    </message>
+    <message>
+        <location line="+1"/>
+        <source>Latch, START has priority</source>
+        <translation>Öntartás, a START az erősebb</translation>
+    </message>
+    <message>
+        <location line="+1"/>
+        <source>Latch, STOP has priority</source>
+        <translation>Öntartás, a STOP az erősebb</translation>
+    </message>
+    <message>
+        <location line="+1"/>
+        <source>Traffic light</source>
+        <translation>Közlekedési lámpa</translation>
+    </message>
+</context>
+<context>
     <name>rung::app::Gui</name>
     <message>
         <location filename="../app/gui/command_line.cpp" line="+21"/>
@@ -691,7 +739,7 @@ Létradiagram- és utasításlista-szerkesztő VPC, Vigor, CPM1 és PL110 PLC-kh
         <translation>&amp;Visszavonás: %1</translation>
     </message>
     <message>
-        <location filename="../app/gui/main_window_files.cpp" line="+74"/>
+        <location filename="../app/gui/main_window_files.cpp" line="+58"/>
         <source>Recover</source>
         <translation>Helyreállítás</translation>
     </message>
@@ -771,7 +819,7 @@ Létradiagram- és utasításlista-szerkesztő VPC, Vigor, CPM1 és PL110 PLC-kh
         <translation>Modell:</translation>
     </message>
     <message>
-        <location line="+14"/>
+        <location line="+21"/>
         <source>Open</source>
         <translation>Megnyitás</translation>
     </message>
@@ -811,7 +859,7 @@ Létradiagram- és utasításlista-szerkesztő VPC, Vigor, CPM1 és PL110 PLC-kh
         <translation>Utasításlisták (*.il *.txt);;Minden fájl (*)</translation>
     </message>
     <message>
-        <location line="+8"/>
+        <location line="+17"/>
         <source>Export Instruction List</source>
         <translation>Utasításlista exportálása</translation>
     </message>
@@ -821,7 +869,8 @@ Létradiagram- és utasításlista-szerkesztő VPC, Vigor, CPM1 és PL110 PLC-kh
         <translation>Utasításlisták (*.il *.txt)</translation>
     </message>
     <message>
-        <location line="+7"/>
+        <location line="-4"/>
+        <location line="+8"/>
         <location line="+10"/>
         <location filename="../app/gui/main_window_tools.cpp" line="+3"/>
         <source>Cannot export</source>
@@ -953,7 +1002,7 @@ Létradiagram- és utasításlista-szerkesztő VPC, Vigor, CPM1 és PL110 PLC-kh
         <translation>%1    %2. oldal / %3</translation>
     </message>
     <message>
-        <location line="+20"/>
+        <location line="+19"/>
         <source>Instruction list, line %1: %2</source>
         <translation>Utasításlista, %1. sor: %2</translation>
     </message>
@@ -963,14 +1012,14 @@ Létradiagram- és utasításlista-szerkesztő VPC, Vigor, CPM1 és PL110 PLC-kh
         <translation>%1. létrafok: %2</translation>
     </message>
     <message>
-        <location line="+4"/>
+        <location line="+3"/>
         <source>Nothing was written: the program has errors.
 %1</source>
         <translation>Semmi sem íródott ki: a program hibás.
 %1</translation>
     </message>
     <message>
-        <location line="+7"/>
+        <location line="+14"/>
         <source>%1: %2</source>
         <translation>%1: %2</translation>
     </message>

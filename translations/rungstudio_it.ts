@@ -162,6 +162,54 @@ Codice di uscita: 0 nessun errore, 1 il programma contiene errori, 2 errore di u
     </message>
 </context>
 <context>
+    <name>rung::app::ExampleTitles</name>
+    <message>
+        <location filename="../app/gui/example_titles.cpp" line="+19"/>
+        <source>Add once a second</source>
+        <translation>Somma una volta al secondo</translation>
+    </message>
+    <message>
+        <location line="+1"/>
+        <source>Timers counting down and up</source>
+        <translation>Temporizzatori a decremento e a incremento</translation>
+    </message>
+    <message>
+        <location line="+1"/>
+        <source>Stairway light</source>
+        <translation>Luce delle scale</translation>
+    </message>
+    <message>
+        <location line="+2"/>
+        <source>Extending a counter&apos;s range</source>
+        <translation>Estensione del campo di un contatore</translation>
+    </message>
+    <message>
+        <location line="+1"/>
+        <source>Off delay</source>
+        <translation>Ritardo alla disattivazione</translation>
+    </message>
+    <message>
+        <location line="+1"/>
+        <source>Flasher</source>
+        <translation>Lampeggiatore</translation>
+    </message>
+    <message>
+        <location line="+1"/>
+        <source>Latch, START has priority</source>
+        <translation>Autoritenuta con priorità allo START</translation>
+    </message>
+    <message>
+        <location line="+1"/>
+        <source>Latch, STOP has priority</source>
+        <translation>Autoritenuta con priorità allo STOP</translation>
+    </message>
+    <message>
+        <location line="+1"/>
+        <source>Traffic light</source>
+        <translation>Semaforo</translation>
+    </message>
+</context>
+<context>
     <name>rung::app::Gui</name>
     <message>
         <location filename="../app/gui/command_line.cpp" line="+21"/>
@@ -693,7 +741,7 @@ Editor di schemi ladder e liste istruzioni per VPC, Vigor, CPM1 e PL110.</transl
         <translation>&amp;Annulla %1</translation>
     </message>
     <message>
-        <location filename="../app/gui/main_window_files.cpp" line="+74"/>
+        <location filename="../app/gui/main_window_files.cpp" line="+58"/>
         <source>Recover</source>
         <translation>Ripristino</translation>
     </message>
@@ -773,7 +821,7 @@ Editor di schemi ladder e liste istruzioni per VPC, Vigor, CPM1 e PL110.</transl
         <translation>Modello:</translation>
     </message>
     <message>
-        <location line="+14"/>
+        <location line="+21"/>
         <source>Open</source>
         <translation>Apri</translation>
     </message>
@@ -813,7 +861,7 @@ Editor di schemi ladder e liste istruzioni per VPC, Vigor, CPM1 e PL110.</transl
         <translation>Liste istruzioni (*.il *.txt);;Tutti i file (*)</translation>
     </message>
     <message>
-        <location line="+8"/>
+        <location line="+17"/>
         <source>Export Instruction List</source>
         <translation>Esporta lista istruzioni</translation>
     </message>
@@ -823,7 +871,8 @@ Editor di schemi ladder e liste istruzioni per VPC, Vigor, CPM1 e PL110.</transl
         <translation>Liste istruzioni (*.il *.txt)</translation>
     </message>
     <message>
-        <location line="+7"/>
+        <location line="-4"/>
+        <location line="+8"/>
         <location line="+10"/>
         <location filename="../app/gui/main_window_tools.cpp" line="+3"/>
         <source>Cannot export</source>
@@ -957,7 +1006,7 @@ Editor di schemi ladder e liste istruzioni per VPC, Vigor, CPM1 e PL110.</transl
         <translation>%1    pagina %2 di %3</translation>
     </message>
     <message>
-        <location line="+20"/>
+        <location line="+19"/>
         <source>Instruction list, line %1: %2</source>
         <translation>Lista istruzioni, riga %1: %2</translation>
     </message>
@@ -967,14 +1016,14 @@ Editor di schemi ladder e liste istruzioni per VPC, Vigor, CPM1 e PL110.</transl
         <translation>Segmento %1: %2</translation>
     </message>
     <message>
-        <location line="+4"/>
+        <location line="+3"/>
         <source>Nothing was written: the program has errors.
 %1</source>
         <translation>Non è stato scritto nulla: il programma contiene errori.
 %1</translation>
     </message>
     <message>
-        <location line="+7"/>
+        <location line="+14"/>
         <source>%1: %2</source>
         <translation>%1: %2</translation>
     </message>

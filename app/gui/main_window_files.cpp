@@ -1,5 +1,6 @@
 #include "main_window.h"
 
+#include "example_titles.h"
 #include "ladder_export.h"
 #include "recovery.h"
 #include "symbol_table.h"
@@ -31,24 +32,6 @@ namespace rung::app {
 namespace {
 
 constexpr int kMaxRecent = 8;
-
-// A readable title from an example's file name: "traffic-light" -> "Traffic light",
-// "difu-difd" -> "DIFU / DIFD"; the target's mnemonics are written as its manuals write them.
-QString exampleTitle(const model::Target *target, const QString &baseName) {
-    QStringList words = baseName.split(QLatin1Char('-'), Qt::SkipEmptyParts);
-    if (words.isEmpty())
-        return baseName;
-    int mnemonics = 0;
-    for (QString &w : words)
-        if (target && target->findInstruction(w.toUpper())) {
-            w = w.toUpper();
-            ++mnemonics;
-        }
-    if (mnemonics == words.size() && words.size() > 1)
-        return words.join(QStringLiteral(" / "));
-    words.front()[0] = words.front()[0].toUpper();
-    return words.join(QLatin1Char(' '));
-}
 
 } // namespace
 

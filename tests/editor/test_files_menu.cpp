@@ -1,7 +1,14 @@
 // File > Examples (the manuals' examples of every target, opened as untitled copies) and
 // File > Open Recent (remembered in the settings for the next start).
 
+#include "app/gui/example_titles.h"
+#include "app/gui/language.h"
 #include "app/gui/main_window.h"
+#include "model/project/project.h"
+
+#include <QDirIterator>
+#include <QFileInfo>
+#include <QRegularExpression>
 
 #include <QMenu>
 #include <QMenuBar>
@@ -52,6 +59,81 @@ TEST(FilesMenu, ExamplesHaveReadableTitles) {
     for (const QString &title : titles)
         EXPECT_FALSE(title.contains(QLatin1Char('-')) && !title.contains(QLatin1Char(' ')))
             << title.toStdString();
+}
+
+// Every example named in words has a title of its own to translate (a new example without one
+// would show its file name in every language).
+TEST(FilesMenu, EveryExampleNamedInWordsHasATranslatableTitle) {
+    const QStringList titled = app::examplesWithTitles();
+    QDirIterator it(QStringLiteral(":/examples"), {QStringLiteral("*.rung")}, QDir::Files,
+                    QDirIterator::Subdirectories);
+    int examples = 0;
+    while (it.hasNext()) {
+        const QFileInfo file(it.next());
+        ++examples;
+        const model::Target *target = model::Target::byId(file.dir().dirName());
+        ASSERT_NE(target, nullptr) << file.filePath().toStdString();
+        const bool mnemonics =
+            app::exampleTitle(target, file.baseName()) ==
+            file.baseName().toUpper().replace(QLatin1Char('-'), QStringLiteral(" / "));
+        EXPECT_TRUE(mnemonics || titled.contains(file.baseName())) << file.filePath().toStdString();
+    }
+    EXPECT_GE(examples, 13);
+}
+
+// The examples speak to the user about the program, not about where they came from: no
+// "seed 004 1.9" or docs file names in their comments.
+TEST(FilesMenu, ExampleCommentsSpeakTheUsersWords) {
+    QDirIterator it(QStringLiteral(":/examples"), {QStringLiteral("*.rung")}, QDir::Files,
+                    QDirIterator::Subdirectories);
+    const QRegularExpression sources(QStringLiteral("\\bseed\\b|docs/|\\.md\\b|manual"),
+                                     QRegularExpression::CaseInsensitiveOption);
+    while (it.hasNext()) {
+        const QString path = it.next();
+        model::ProjectError error;
+        const auto project = model::loadProject(path, &error);
+        ASSERT_TRUE(project) << path.toStdString() << ": " << error.message.toStdString();
+        QStringList comments;
+        for (const model::Rung &rung : project->program.rungs)
+            comments << rung.comment;
+        for (const model::Symbol &symbol : project->symbols)
+            comments << symbol.comment;
+        for (const QString &comment : comments)
+            EXPECT_FALSE(comment.contains(sources))
+                << path.toStdString() << ": " << comment.toStdString();
+    }
+}
+
+// In Hungarian and Italian the examples read in the user's words; the mnemonics stay as the
+// manuals write them.
+TEST(FilesMenu, ExampleTitlesFollowTheLanguage) {
+    app::MainWindow window;
+    const auto titles = [&window](const char *examplesMenu) {
+        QStringList all;
+        QMenu *examples = test::submenu(window, QString::fromUtf8(examplesMenu));
+        if (examples)
+            for (QAction *sub : examples->actions())
+                for (QAction *example : sub->menu()->actions())
+                    all << example->text();
+        return all;
+    };
+    ASSERT_TRUE(titles("Examples").contains(QStringLiteral("Traffic light")));
+    struct Expected {
+        const char *code, *menu, *trafficLight;
+    };
+    for (const Expected &e :
+         {Expected{"hu", "Példák", "Közlekedési lámpa"}, Expected{"it", "Esempi", "Semaforo"}}) {
+        ASSERT_TRUE(app::setLanguage(QString::fromLatin1(e.code), false));
+        QCoreApplication::sendPostedEvents(nullptr, QEvent::LanguageChange);
+        QCoreApplication::processEvents();
+        const QStringList translated = titles(e.menu);
+        EXPECT_TRUE(translated.contains(QString::fromUtf8(e.trafficLight)))
+            << e.code << ": " << translated.join(',').toStdString();
+        EXPECT_TRUE(translated.contains(QStringLiteral("DIFU / DIFD"))) << e.code;
+        EXPECT_FALSE(translated.contains(QStringLiteral("Flasher"))) << e.code;
+    }
+    app::setLanguage(QStringLiteral("en"), false);
+    QCoreApplication::sendPostedEvents(nullptr, QEvent::LanguageChange);
 }
 
 TEST(FilesMenu, RecentFilesAreRememberedNewestFirst) {

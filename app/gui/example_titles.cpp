@@ -1,0 +1,61 @@
+#include "example_titles.h"
+
+#include "model/target/target.h"
+
+#include <QCoreApplication>
+#include <QStringList>
+
+namespace rung::app {
+
+namespace {
+
+struct ExampleTitle {
+    const char *baseName;
+    const char *title;
+};
+
+// One row per example in resources/examples whose name is words, not mnemonics.
+constexpr ExampleTitle kTitles[] = {
+    {"add-once-a-second", QT_TRANSLATE_NOOP("rung::app::ExampleTitles", "Add once a second")},
+    {"timers-down-and-up",
+     QT_TRANSLATE_NOOP("rung::app::ExampleTitles", "Timers counting down and up")},
+    {"stairway-light", QT_TRANSLATE_NOOP("rung::app::ExampleTitles", "Stairway light")},
+    {"counting-range-extension",
+     QT_TRANSLATE_NOOP("rung::app::ExampleTitles", "Extending a counter's range")},
+    {"delay-off", QT_TRANSLATE_NOOP("rung::app::ExampleTitles", "Off delay")},
+    {"flasher", QT_TRANSLATE_NOOP("rung::app::ExampleTitles", "Flasher")},
+    {"start-first-latch",
+     QT_TRANSLATE_NOOP("rung::app::ExampleTitles", "Latch, START has priority")},
+    {"stop-first-latch", QT_TRANSLATE_NOOP("rung::app::ExampleTitles", "Latch, STOP has priority")},
+    {"traffic-light", QT_TRANSLATE_NOOP("rung::app::ExampleTitles", "Traffic light")},
+};
+
+} // namespace
+
+QString exampleTitle(const model::Target *target, const QString &baseName) {
+    for (const ExampleTitle &row : kTitles)
+        if (baseName == QLatin1String(row.baseName))
+            return QCoreApplication::translate("rung::app::ExampleTitles", row.title);
+    QStringList words = baseName.split(QLatin1Char('-'), Qt::SkipEmptyParts);
+    if (words.isEmpty())
+        return baseName;
+    int mnemonics = 0;
+    for (QString &w : words)
+        if (target && target->findInstruction(w.toUpper())) {
+            w = w.toUpper();
+            ++mnemonics;
+        }
+    if (mnemonics == words.size() && words.size() > 1)
+        return words.join(QStringLiteral(" / "));
+    words.front()[0] = words.front()[0].toUpper();
+    return words.join(QLatin1Char(' '));
+}
+
+QStringList examplesWithTitles() {
+    QStringList names;
+    for (const ExampleTitle &row : kTitles)
+        names << QLatin1String(row.baseName);
+    return names;
+}
+
+} // namespace rung::app
