@@ -3,6 +3,7 @@
 #include "app/gui/main_window.h"
 
 #include <QApplication>
+#include <QDockWidget>
 #include <QFile>
 #include <QMessageBox>
 #include <QPushButton>
@@ -27,6 +28,37 @@ TEST(Screen, TheFirstWindowOpensWithinTheAvailableScreen) {
     EXPECT_LE(window.width(), available.width());
     EXPECT_LE(window.height(), available.height());
     EXPECT_GT(window.width(), available.width() / 2); // and still uses the room there is
+}
+
+// What the user arranged comes back at the next start: the window's size and the docks (a
+// closed dock stays closed, a resized one keeps its size).
+TEST(Screen, TheNextStartRestoresTheWindowAndItsDocks) {
+    QSettings().remove(QStringLiteral("window/geometry"));
+    QSettings().remove(QStringLiteral("window/state"));
+    QSize arranged;
+    {
+        app::MainWindow window;
+        window.show();
+        window.resize(700, 520);
+        auto *problems = window.findChild<QDockWidget *>(QStringLiteral("problemsDock"));
+        ASSERT_NE(problems, nullptr);
+        problems->close();
+        QApplication::processEvents();
+        arranged = window.size();
+        ASSERT_TRUE(window.close()); // nothing to save: closes, remembering the layout
+    }
+    app::MainWindow next;
+    next.show();
+    QApplication::processEvents();
+    EXPECT_EQ(next.size(), arranged);
+    auto *problems = next.findChild<QDockWidget *>(QStringLiteral("problemsDock"));
+    ASSERT_NE(problems, nullptr);
+    EXPECT_FALSE(problems->isVisible());
+    auto *project = next.findChild<QDockWidget *>(QStringLiteral("projectDock"));
+    ASSERT_NE(project, nullptr);
+    EXPECT_TRUE(project->isVisible());
+    QSettings().remove(QStringLiteral("window/geometry"));
+    QSettings().remove(QStringLiteral("window/state"));
 }
 
 using SavePath = test::WindowFixture;
