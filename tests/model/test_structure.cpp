@@ -68,7 +68,8 @@ TEST(RungSpans, SpanOfFindsTheRungOfAnInstruction) {
 }
 
 // The converter draws one rung per span, starting on the span's first line: over random
-// programs of every target.
+// programs of every target. Not only the count (the converter cuts the list with these very
+// spans): each span converted on its own gives one rung, the same rung the whole list gives.
 TEST(RungSpans, TheConverterDrawsOneRungPerSpan) {
     for (Family f : {Family::Vpc, Family::Vigor, Family::Cpm1, Family::Pl110}) {
         const Target &t = Target::get(f);
@@ -78,9 +79,21 @@ TEST(RungSpans, TheConverterDrawsOneRungPerSpan) {
             const ToLadderResult lad = listToLadder(list);
             ASSERT_TRUE(lad.ok()) << seed;
             ASSERT_EQ(lad.rungLine.size(), s.size()) << t.id.toStdString() << " seed " << seed;
-            for (std::size_t k = 0; k < s.size(); ++k)
+            ASSERT_EQ(lad.ladder.rungs.size(), s.size()) << t.id.toStdString() << " seed " << seed;
+            for (std::size_t k = 0; k < s.size(); ++k) {
                 EXPECT_EQ(lad.rungLine[k],
                           list.instructions[static_cast<std::size_t>(s[k].first)].line);
+                InstructionList alone;
+                alone.target = list.target;
+                alone.instructions.assign(list.instructions.begin() + s[k].first,
+                                          list.instructions.begin() + s[k].last);
+                const ToLadderResult one = listToLadder(alone);
+                ASSERT_TRUE(one.ok()) << t.id.toStdString() << " seed " << seed << " span " << k;
+                ASSERT_EQ(one.ladder.rungs.size(), 1u)
+                    << t.id.toStdString() << " seed " << seed << " span " << k;
+                EXPECT_TRUE(one.ladder.rungs.front() == lad.ladder.rungs[k])
+                    << t.id.toStdString() << " seed " << seed << " span " << k;
+            }
         }
     }
 }
