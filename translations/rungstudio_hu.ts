@@ -169,7 +169,7 @@ Kilépési kód: 0 nincs hiba, 1 a programban hiba van, 2 használati vagy I/O h
         <translation>Összeadás másodpercenként</translation>
     </message>
     <message>
-        <location line="+1"/>
+        <location line="+2"/>
         <source>Timers counting down and up</source>
         <translation>Lefelé és felfelé számoló időzítők</translation>
     </message>
@@ -194,7 +194,7 @@ Kilépési kód: 0 nincs hiba, 1 a programban hiba van, 2 használati vagy I/O h
         <translation>Villogó</translation>
     </message>
     <message>
-        <location line="+1"/>
+        <location line="+2"/>
         <source>Latch, START has priority</source>
         <translation>Öntartás, a START az erősebb</translation>
     </message>
@@ -2562,12 +2562,12 @@ Létradiagram- és utasításlista-szerkesztő VPC, Vigor, CPM1 és PL110 PLC-kh
         <translation>%1 konstans; ide operandus kell</translation>
     </message>
     <message>
-        <location line="+13"/>
+        <location line="+14"/>
         <source>%1: %2 is expected here</source>
         <translation>%1: itt %2 kell</translation>
     </message>
     <message>
-        <location line="+6"/>
+        <location line="+24"/>
         <source>a timer</source>
         <translation>egy időzítő</translation>
     </message>
@@ -2582,9 +2582,17 @@ Létradiagram- és utasításlista-szerkesztő VPC, Vigor, CPM1 és PL110 PLC-kh
         <translation>egy lépésrelé</translation>
     </message>
     <message>
-        <location line="+7"/>
+        <location line="+4"/>
         <source>a bit device</source>
         <translation>egy bit típusú operandus</translation>
+    </message>
+</context>
+<context>
+    <name>rung::model::Ladder</name>
+    <message>
+        <location filename="../model/ladder/replace_device.cpp" line="+22"/>
+        <source>%1 cannot replace %2 in rung %3: %4 is expected there.</source>
+        <translation>%1 nem helyettesítheti a(z) %2 eszközt a(z) %3. létrafokban: ott %4 kell.</translation>
     </message>
 </context>
 <context>

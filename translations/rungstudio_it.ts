@@ -169,7 +169,7 @@ Codice di uscita: 0 nessun errore, 1 il programma contiene errori, 2 errore di u
         <translation>Somma una volta al secondo</translation>
     </message>
     <message>
-        <location line="+1"/>
+        <location line="+2"/>
         <source>Timers counting down and up</source>
         <translation>Temporizzatori a decremento e a incremento</translation>
     </message>
@@ -194,7 +194,7 @@ Codice di uscita: 0 nessun errore, 1 il programma contiene errori, 2 errore di u
         <translation>Lampeggiatore</translation>
     </message>
     <message>
-        <location line="+1"/>
+        <location line="+2"/>
         <source>Latch, START has priority</source>
         <translation>Autoritenuta con priorità allo START</translation>
     </message>
@@ -2574,12 +2574,12 @@ Editor di schemi ladder e liste istruzioni per VPC, Vigor, CPM1 e PL110.</transl
         <translation>%1 è una costante; qui è atteso un operando</translation>
     </message>
     <message>
-        <location line="+13"/>
+        <location line="+14"/>
         <source>%1: %2 is expected here</source>
         <translation>%1: qui è atteso %2</translation>
     </message>
     <message>
-        <location line="+6"/>
+        <location line="+24"/>
         <source>a timer</source>
         <translation>un temporizzatore</translation>
     </message>
@@ -2594,9 +2594,17 @@ Editor di schemi ladder e liste istruzioni per VPC, Vigor, CPM1 e PL110.</transl
         <translation>un relè di passo</translation>
     </message>
     <message>
-        <location line="+7"/>
+        <location line="+4"/>
         <source>a bit device</source>
         <translation>un operando a bit</translation>
+    </message>
+</context>
+<context>
+    <name>rung::model::Ladder</name>
+    <message>
+        <location filename="../model/ladder/replace_device.cpp" line="+22"/>
+        <source>%1 cannot replace %2 in rung %3: %4 is expected there.</source>
+        <translation>%1 non può sostituire %2 nel segmento %3: lì serve %4.</translation>
     </message>
 </context>
 <context>

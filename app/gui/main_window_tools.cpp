@@ -181,7 +181,7 @@ int MainWindow::replaceDeviceEverywhere(const QString &fromText, const QString &
     const model::Address from = std::get<model::Address>(a);
     const model::Address to = std::get<model::Address>(b);
     std::vector<model::Rung> rungs = m_document->ladder().rungs;
-    const int count = model::replaceDevice(rungs, from, to);
+    const int count = model::replaceDevice(rungs, t, from, to, error);
     if (count > 0)
         m_document->replaceRungs(
             0, static_cast<int>(rungs.size()), rungs,

@@ -57,6 +57,10 @@ struct ParseResult {
 
 // Parse a listing: comments (';' or '//' to end of line), blank lines and optional step
 // numbers ("0002 LD p01<p00") are accepted. Every error has a line and a column.
+// What a slot of `kind` needs when `address` cannot stand in it ("a timer", "a bit device";
+// translated), empty when it can. The parser and Replace Device ask the same question.
+QString expectedDevice(const Target &target, const Address &address, OperandKind kind);
+
 ParseResult parseInstructionList(const Target &target, const QString &text,
                                  const ModelVariant *model = nullptr);
 

@@ -574,33 +574,11 @@ private:
             return fail(shifted);
         }
         const Address address = std::get<Address>(a);
-        const Area &area = m_target.area(address.area);
-        auto wrongKind = [&](const QString &what) {
-            error(lineNumber, token.column, tr("%1: %2 is expected here").arg(t.left(40), what));
+        const QString expected = expectedDevice(m_target, address, kind);
+        if (!expected.isEmpty()) {
+            error(lineNumber, token.column,
+                  tr("%1: %2 is expected here").arg(t.left(40), expected));
             return false;
-        };
-        switch (kind) {
-        case OperandKind::TimerNumber:
-            if (area.kind != AreaKind::Timer)
-                return wrongKind(tr("a timer"));
-            break;
-        case OperandKind::CounterNumber:
-            if (area.kind != AreaKind::Counter)
-                return wrongKind(tr("a counter"));
-            break;
-        case OperandKind::StepRelay:
-            if (area.prefix != QLatin1String("S"))
-                return wrongKind(tr("a step relay"));
-            break;
-        case OperandKind::BitSource:
-        case OperandKind::BitDest:
-            if ((area.kind == AreaKind::Word || area.kind == AreaKind::Channel) &&
-                address.bit < 0 && area.numbering != Numbering::ChannelBit &&
-                kind == OperandKind::BitSource)
-                return wrongKind(tr("a bit device"));
-            break;
-        default:
-            break;
         }
         out->kind = Operand::Kind::Device;
         out->address = address;
@@ -615,6 +593,32 @@ private:
 };
 
 } // namespace
+
+QString expectedDevice(const Target &target, const Address &address, OperandKind kind) {
+    const Area &area = target.area(address.area);
+    // The parser's context: the texts are its own.
+    switch (kind) {
+    case OperandKind::TimerNumber:
+        return area.kind == AreaKind::Timer
+                   ? QString()
+                   : QCoreApplication::translate("rung::model::InstructionList", "a timer");
+    case OperandKind::CounterNumber:
+        return area.kind == AreaKind::Counter
+                   ? QString()
+                   : QCoreApplication::translate("rung::model::InstructionList", "a counter");
+    case OperandKind::StepRelay:
+        return area.prefix == QLatin1String("S")
+                   ? QString()
+                   : QCoreApplication::translate("rung::model::InstructionList", "a step relay");
+    case OperandKind::BitSource:
+        if ((area.kind == AreaKind::Word || area.kind == AreaKind::Channel) && address.bit < 0 &&
+            area.numbering != Numbering::ChannelBit)
+            return QCoreApplication::translate("rung::model::InstructionList", "a bit device");
+        return {};
+    default:
+        return {};
+    }
+}
 
 ParseResult parseInstructionList(const Target &target, const QString &text,
                                  const ModelVariant *model) {

@@ -407,6 +407,14 @@ TEST_F(Fixture, ReplaceDeviceEverywhereIsOneUndoStep) {
     EXPECT_EQ(window.replaceDeviceEverywhere(QStringLiteral("X0"), QStringLiteral("X8"), &error),
               -1);
     EXPECT_EQ(error, QStringLiteral("X8: X is numbered in octal"));
+    // A word where the contacts need a bit: refused, said, nothing changed, no undo step.
+    const int steps = window.document()->undoStack()->count();
+    EXPECT_EQ(window.replaceDeviceEverywhere(QStringLiteral("X7"), QStringLiteral("D0"), &error),
+              -1);
+    EXPECT_EQ(error,
+              QStringLiteral("D0 cannot replace X7 in rung 1: a bit device is expected there."));
+    EXPECT_EQ(listing(), QStringLiteral("LD X7\nOUT Y0\nLD Y0\nAND X7\nOUT Y1\nEND\n"));
+    EXPECT_EQ(window.document()->undoStack()->count(), steps);
     window.document()->undoStack()->undo();
     EXPECT_EQ(listing(), QStringLiteral("LD X0\nOUT Y0\nLD Y0\nAND X0\nOUT Y1\nEND\n"));
 }

@@ -365,16 +365,45 @@ TEST(LadderGrid, ReplaceDeviceRenamesEveryUseInContactsAndOutputsOnly) {
     const Address x7 = std::get<Address>(parseAddress(vigor(), QStringLiteral("X7")));
     const Address y0 = std::get<Address>(parseAddress(vigor(), QStringLiteral("Y0")));
     const Address m5 = std::get<Address>(parseAddress(vigor(), QStringLiteral("M5")));
-    EXPECT_EQ(replaceDevice(rungs, x0, x7), 1);
+    EXPECT_EQ(replaceDevice(rungs, vigor(), x0, x7), 1);
     EXPECT_EQ(deviceAt(rungs[0], 0, 0), QStringLiteral("X7"));
     EXPECT_EQ(deviceAt(rungs[0], 0, 1), QStringLiteral("X1")); // the others untouched
     EXPECT_EQ(deviceAt(rungs[1], 0, 0), QStringLiteral("X2"));
-    EXPECT_EQ(replaceDevice(rungs, y0, m5), 2); // an output in each rung
+    EXPECT_EQ(replaceDevice(rungs, vigor(), y0, m5), 2); // an output in each rung
     EXPECT_EQ(rungs[0].outputs[0]->operands.front().address, m5);
     EXPECT_EQ(rungs[1].outputs[0]->operands.front().address, m5);
     EXPECT_EQ(formatAddress(vigor(), rungs[0].outputs[1]->operands.front().address),
               QStringLiteral("Y1"));
-    EXPECT_EQ(replaceDevice(rungs, y0, m5), 0); // nothing left to change
+    EXPECT_EQ(replaceDevice(rungs, vigor(), y0, m5), 0); // nothing left to change
+}
+
+// Replace Device refuses what the list would refuse (a marker where TMR needs a timer, a word
+// where a contact needs a bit) and then changes nothing, so the program never turns into one
+// that cannot be listed.
+TEST(LadderGrid, ReplaceDeviceRefusesADeviceThatCannotStandInAPlace) {
+    Rung r(1, 1);
+    put(r, 0, 0, "X0");
+    r.outputs[0] = outputOf("TMR T0 K10");
+    Rung c(1, 1);
+    put(c, 0, 0, "T0");
+    c.outputs[0] = outputOf("OUT Y0");
+    const std::vector<Rung> before = {r, c};
+    std::vector<Rung> rungs = before;
+    const auto address = [](const char *text) {
+        return std::get<Address>(parseAddress(vigor(), QString::fromLatin1(text)));
+    };
+    QString problem;
+    EXPECT_EQ(replaceDevice(rungs, vigor(), address("T0"), address("M5"), &problem), -1);
+    EXPECT_TRUE(problem.contains(QStringLiteral("M5"))) << problem.toStdString();
+    EXPECT_TRUE(problem.contains(QStringLiteral("rung 1"))) << problem.toStdString();
+    EXPECT_TRUE(problem.contains(QStringLiteral("a timer"))) << problem.toStdString();
+    EXPECT_TRUE(rungs[0] == before[0] && rungs[1] == before[1]); // nothing changed
+    problem.clear();
+    EXPECT_EQ(replaceDevice(rungs, vigor(), address("X0"), address("D0"), &problem), -1);
+    EXPECT_TRUE(problem.contains(QStringLiteral("a bit device"))) << problem.toStdString();
+    EXPECT_TRUE(rungs[0] == before[0] && rungs[1] == before[1]);
+    // A timer for a timer is fine, in the box and in the contact that reads it.
+    EXPECT_EQ(replaceDevice(rungs, vigor(), address("T0"), address("T7"), &problem), 2);
 }
 
 TEST(LadderGrid, ReplaceDeviceKeepsConstants) {
@@ -384,7 +413,7 @@ TEST(LadderGrid, ReplaceDeviceKeepsConstants) {
     std::vector<Rung> rungs = {r};
     const Address t0 = std::get<Address>(parseAddress(vigor(), QStringLiteral("T0")));
     const Address t1 = std::get<Address>(parseAddress(vigor(), QStringLiteral("T1")));
-    EXPECT_EQ(replaceDevice(rungs, t0, t1), 1);
+    EXPECT_EQ(replaceDevice(rungs, vigor(), t0, t1), 1);
     ASSERT_EQ(rungs[0].outputs[0]->operands.size(), 2u);
     EXPECT_EQ(formatOperand(vigor(), rungs[0].outputs[0]->operands[0]), QStringLiteral("T1"));
     EXPECT_EQ(formatOperand(vigor(), rungs[0].outputs[0]->operands[1]), QStringLiteral("K10"));
