@@ -1558,7 +1558,12 @@ Létradiagram- és utasításlista-szerkesztő VPC, Vigor, CPM1 és PL110 PLC-kh
 <context>
     <name>rung::editor::CrossReferenceView</name>
     <message>
-        <location filename="../editor/cross_reference_view.cpp" line="+48"/>
+        <location filename="../editor/cross_reference_view.cpp" line="+50"/>
+        <source>Device or prefix (X0, X)</source>
+        <translation>Operandus vagy előtag (X0, X)</translation>
+    </message>
+    <message>
+        <location line="+1"/>
         <source>Device or prefix (X0, X); empty: every device</source>
         <translation>Operandus vagy előtag (X0, X); üresen: minden operandus</translation>
     </message>
@@ -1583,7 +1588,7 @@ Létradiagram- és utasításlista-szerkesztő VPC, Vigor, CPM1 és PL110 PLC-kh
         <translation>Utasítás</translation>
     </message>
     <message>
-        <location line="+78"/>
+        <location line="+83"/>
         <source>contact</source>
         <translation>érintkező</translation>
     </message>

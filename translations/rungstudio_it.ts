@@ -1562,7 +1562,12 @@ Editor di schemi ladder e liste istruzioni per VPC, Vigor, CPM1 e PL110.</transl
 <context>
     <name>rung::editor::CrossReferenceView</name>
     <message>
-        <location filename="../editor/cross_reference_view.cpp" line="+48"/>
+        <location filename="../editor/cross_reference_view.cpp" line="+50"/>
+        <source>Device or prefix (X0, X)</source>
+        <translation>Operando o prefisso (X0, X)</translation>
+    </message>
+    <message>
+        <location line="+1"/>
         <source>Device or prefix (X0, X); empty: every device</source>
         <translation>Operando o prefisso (X0, X); vuoto: tutti gli operandi</translation>
     </message>
@@ -1587,7 +1592,7 @@ Editor di schemi ladder e liste istruzioni per VPC, Vigor, CPM1 e PL110.</transl
         <translation>Istruzione</translation>
     </message>
     <message>
-        <location line="+78"/>
+        <location line="+83"/>
         <source>contact</source>
         <translation>contatto</translation>
     </message>
