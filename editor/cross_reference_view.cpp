@@ -45,7 +45,10 @@ Use useOf(model::Op op) {
 } // namespace
 
 void CrossReferenceView::retranslate() {
-    m_filter->setPlaceholderText(tr("Device or prefix (X0, X); empty: every device"));
+    // The field is as narrow as the dock (about 300 px): the short text as its placeholder,
+    // the whole one as its tooltip (in Hungarian the whole one was cut off).
+    m_filter->setPlaceholderText(tr("Device or prefix (X0, X)"));
+    m_filter->setToolTip(tr("Device or prefix (X0, X); empty: every device"));
     m_tree->setHeaderLabels({tr("Device / rung"), tr("Step"), tr("Use"), tr("Instruction")});
 }
 
@@ -68,7 +71,12 @@ CrossReferenceView::CrossReferenceView(Document *document, QWidget *parent)
     retranslate();
     m_tree->setUniformRowHeights(true);
     m_tree->setAlternatingRowColors(true);
-    m_tree->header()->setStretchLastSection(true);
+    // The uses fit the dock's width, no sideways scrolling (in Hungarian the use column ran
+    // off the side): the step as wide as its digits, the other columns share the rest, and a
+    // text longer than its share ends in "..." with the whole of it as the tooltip.
+    m_tree->header()->setStretchLastSection(false);
+    m_tree->header()->setSectionResizeMode(QHeaderView::Stretch);
+    m_tree->header()->setSectionResizeMode(1, QHeaderView::ResizeToContents);
     layout->addWidget(m_filter);
     layout->addWidget(m_tree, 1);
     connect(m_filter, &QLineEdit::textChanged, this, &CrossReferenceView::refresh);
@@ -147,8 +155,11 @@ void CrossReferenceView::refresh() {
             if (counts[k] > 0)
                 summary << QStringLiteral("%1 × %2").arg(counts[k]).arg(useText[k]);
         device->setText(2, summary.join(QStringLiteral(", ")));
-        if (symbol && !symbol->comment.isEmpty())
+        device->setToolTip(2, device->text(2));
+        if (symbol && !symbol->comment.isEmpty()) {
             device->setText(3, symbol->comment);
+            device->setToolTip(3, symbol->comment);
+        }
         device->setExpanded(exact.has_value() || uses.size() <= 3);
     }
     if (count >= kMaxUses) {
@@ -157,8 +168,6 @@ void CrossReferenceView::refresh() {
             0, tr("The first %1 uses; type a device or a prefix for the rest").arg(kMaxUses));
         more->setFirstColumnSpanned(true);
     }
-    for (int c = 0; c < 3; ++c)
-        m_tree->resizeColumnToContents(c);
 }
 
 } // namespace rung::editor

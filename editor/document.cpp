@@ -113,6 +113,7 @@ void Document::setProject(const model::Project &project, const QString &path) {
     m_undo.clear();
     m_held.clear();
     setPath(path);
+    ++m_rungsRevision;
     refresh();
 }
 
@@ -275,6 +276,7 @@ void Document::applyRungs(int first, int count, const std::vector<model::Rung> &
     auto &all = m_project.program.rungs;
     all.erase(all.begin() + first, all.begin() + first + count);
     all.insert(all.begin() + first, rungs.begin(), rungs.end());
+    ++m_rungsRevision;
     refresh();
 }
 
@@ -297,6 +299,7 @@ void Document::refresh() {
     // lists nothing and is not blank), so the two views never disagree silently.
     model::InstructionList shown = m_listing.list;
     std::vector<std::pair<int, std::size_t>> placeholders; // rung, its comment in `shown`
+    m_unlisted.clear();
     {
         std::vector<std::pair<int, QString>> comments;
         std::size_t next = 0;
@@ -328,6 +331,7 @@ void Document::refresh() {
                             .arg(r + 1)
                             .arg(why));
             placeholders.emplace_back(static_cast<int>(r), comments.size() - 1);
+            m_unlisted.push_back({static_cast<int>(r), why});
         }
         comments.insert(comments.end(), shown.comments.begin() + static_cast<std::ptrdiff_t>(next),
                         shown.comments.end());

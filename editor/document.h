@@ -47,6 +47,13 @@ public:
     QString listingText() const { return m_listingText; }
     // Its line map: the line of each instruction, the instruction of each line.
     const model::PrintedListing &printedListing() const { return m_printed; }
+    // The rungs that have a placeholder line in the list, with the reason the line gives: the
+    // list (and a file written from it) holds less than the ladder while there is one.
+    struct Unlisted {
+        int rung;
+        QString reason;
+    };
+    const std::vector<Unlisted> &unlistedRungs() const { return m_unlisted; }
     // The key a placeholder line carries for a rung ("3:9f2c41"), empty if it is no placeholder.
     static QString placeholderKey(const QString &line);
     int rungOfLine(int line) const; // 1-based line of the listing text -> rung, -1 if none
@@ -79,6 +86,14 @@ public:
     bool setListing(const QString &text, std::vector<model::Diagnostic> *errors,
                     ListingStep step = ListingStep::Own);
 
+    // Converts and checks the program again, as it is (the findings in the language now
+    // installed): programChanged, with rungsRevision() as it was.
+    void recheck() { refresh(); }
+    // Counts the changes of the rungs (an edit, an undo, another project): the list pane takes
+    // the canonical listing again only when this moved, so a change of the symbols or the
+    // watch lists never replaces the list as typed.
+    quint64 rungsRevision() const { return m_rungsRevision; }
+
     // Used by the undo commands only.
     void applyRungs(int first, int count, const std::vector<model::Rung> &rungs);
     void applySymbols(const std::vector<model::Symbol> &symbols);
@@ -99,6 +114,8 @@ private:
     model::ToListingResult m_listing;
     QString m_listingText;
     model::PrintedListing m_printed;
+    std::vector<Unlisted> m_unlisted;
+    quint64 m_rungsRevision = 0;
     std::vector<int> m_rungLine; // first line of each rung in m_listingText (1-based)
     // Every rung a placeholder line has stood for since the project was opened, by the key the
     // line carries: text typed from an older list still finds its rung.

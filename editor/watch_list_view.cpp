@@ -14,10 +14,9 @@ WatchListView::WatchListView(Document *document, QWidget *parent)
     : QTreeWidget(parent)
     , m_document(document) {
     setObjectName(QStringLiteral("watchLists"));
-    setHeaderLabels({tr("Watch list")});
+    setTexts();
     header()->hide();
     setRootIsDecorated(true);
-    setAccessibleName(tr("Watch lists"));
     connect(document, &Document::programChanged, this, &WatchListView::refresh);
     refresh();
 }
@@ -31,8 +30,7 @@ void WatchListView::setMonitorSource(model::MonitorSource *source) {
     }
     m_source = source;
     setColumnCount(source ? 2 : 1);
-    setHeaderLabels(source ? QStringList{tr("Watch list"), tr("Value")}
-                           : QStringList{tr("Watch list")});
+    setTexts();
     if (source) {
         header()->show();
         connect(source, &model::MonitorSource::snapshotChanged, this, &WatchListView::showValues);
@@ -41,6 +39,20 @@ void WatchListView::setMonitorSource(model::MonitorSource *source) {
     } else {
         header()->hide();
     }
+}
+
+void WatchListView::setTexts() {
+    setHeaderLabels(m_source ? QStringList{tr("Watch list"), tr("Value")}
+                             : QStringList{tr("Watch list")});
+    setAccessibleName(tr("Watch lists"));
+}
+
+void WatchListView::changeEvent(QEvent *event) {
+    if (event->type() == QEvent::LanguageChange) {
+        setTexts();
+        showValues(); // "ON", "OFF", "(forced)" in the new language
+    }
+    QTreeWidget::changeEvent(event);
 }
 
 void WatchListView::tellWatched() {

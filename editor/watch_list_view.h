@@ -33,9 +33,11 @@ public:
 
 protected:
     void keyPressEvent(QKeyEvent *event) override;
+    void changeEvent(QEvent *event) override; // LanguageChange: headers and values again
 
 private:
     void refresh();
+    void setTexts(); // the header and the accessible name, in the language installed
     void showValues();
     void tellWatched();
     QString valueText(const model::Snapshot &snapshot, const QString &device) const;

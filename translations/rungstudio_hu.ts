@@ -42,8 +42,8 @@
 <context>
     <name>rung::app::Cli</name>
     <message>
-        <location filename="../app/cli/cli.cpp" line="+40"/>
-        <location line="+35"/>
+        <location filename="../app/cli/cli.cpp" line="+43"/>
+        <location line="+45"/>
         <source>unexpected argument %1</source>
         <translation>váratlan argumentum: %1</translation>
     </message>
@@ -53,7 +53,7 @@
         <translation>a --to értéke il, ladder vagy project lehet</translation>
     </message>
     <message>
-        <location line="-59"/>
+        <location line="-69"/>
         <source>usage:
   rungstudio-cli check FILE [--target vpc|vigor|cpm1|pl110] [--model M]
   rungstudio-cli convert FILE [--target T] [--from il|ladder|project] --to il|ladder|project [-o OUT] [--force]
@@ -70,7 +70,17 @@ A FILE utasításlista (.il), létra-szöveg (.ladder) vagy projekt (.rung).
 Kilépési kód: 0 nincs hiba, 1 a programban hiba van, 2 használati vagy I/O hiba.</translation>
     </message>
     <message>
-        <location line="+80"/>
+        <location line="+85"/>
+        <source>nothing written: the list as typed would be lost</source>
+        <translation>semmi sem íródott ki: a begépelt lista elveszne</translation>
+    </message>
+    <message>
+        <location line="+21"/>
+        <source>nothing written: the listing would leave out the contacts above</source>
+        <translation>semmi sem íródott ki: az utasításlistából kimaradnának a fenti érintkezők</translation>
+    </message>
+    <message>
+        <location line="+9"/>
         <source>nothing written: the input does not parse or convert whole</source>
         <translation>nem íródott semmi: a bemenet nem értelmezhető vagy nem alakítható át teljesen</translation>
     </message>
@@ -95,7 +105,7 @@ Kilépési kód: 0 nincs hiba, 1 a programban hiba van, 2 használati vagy I/O h
         <translation>ismeretlen parancs: %1</translation>
     </message>
     <message>
-        <location filename="../app/cli/cli_common.cpp" line="+86"/>
+        <location filename="../app/cli/cli_common.cpp" line="+97"/>
         <source>%1 needs a value</source>
         <translation>%1 után érték kell</translation>
     </message>
@@ -115,17 +125,12 @@ Kilépési kód: 0 nincs hiba, 1 a programban hiba van, 2 használati vagy I/O h
         <translation>%1 egy %2 projekt, nem %3</translation>
     </message>
     <message>
-        <location line="-99"/>
-        <source>cannot read %1: %2</source>
-        <translation>%1 nem olvasható: %2</translation>
+        <location line="-86"/>
+        <source>%1 holds an instruction list typed in Rung Studio that is not in its program: the list had errors when the project was saved, and is kept as typed under the key &quot;pendingListing&quot;; the rungs are the last valid program. Open the project in Rung Studio and fix the list.</source>
+        <translation>A(z) %1 egy Rung Studióban begépelt utasításlistát tartalmaz, amely nincs benne a programjában: a lista hibás volt a projekt mentésekor, és begépelt formájában a „pendingListing” kulcs alatt maradt meg; a létrafokok az utolsó érvényes programot tartalmazzák. Nyissa meg a projektet a Rung Studióban, és javítsa ki a listát.</translation>
     </message>
     <message>
-        <location line="+3"/>
-        <source>%1: the file is larger than %2 MB, too large for a listing or a ladder text</source>
-        <translation>%1: a fájl nagyobb %2 MB-nál, túl nagy egy utasításlistának vagy létraszövegnek</translation>
-    </message>
-    <message>
-        <location line="+120"/>
+        <location line="+110"/>
         <source>%1: which PLC? Give --target vpc|vigor|cpm1|pl110 or a &quot;; target: NAME&quot; first line</source>
         <translation>%1: melyik PLC? Adja meg: --target vpc|vigor|cpm1|pl110, vagy egy &quot;; target: NAME&quot; első sort</translation>
     </message>
@@ -156,9 +161,9 @@ Kilépési kód: 0 nincs hiba, 1 a programban hiba van, 2 használati vagy I/O h
         <translation>megjegyzés</translation>
     </message>
     <message>
-        <location filename="../app/cli/cli_language.cpp" line="+29"/>
-        <source>--lang must be en, hu or it</source>
-        <translation>--lang értéke en, hu vagy it lehet</translation>
+        <location filename="../app/cli/cli_language.cpp" line="+31"/>
+        <source>--lang must be one of %1</source>
+        <translation>a --lang értéke csak ezek egyike lehet: %1</translation>
     </message>
 </context>
 <context>
@@ -256,24 +261,24 @@ Kilépési kód: 0 nincs hiba, 1 a programban hiba van, 2 használati vagy I/O h
     </message>
     <message>
         <location line="+5"/>
-        <location line="+251"/>
+        <location line="+263"/>
         <source>Project</source>
         <translation>Projekt</translation>
     </message>
     <message>
-        <location line="-244"/>
-        <location line="+247"/>
+        <location line="-256"/>
+        <location line="+259"/>
         <source>Symbols</source>
         <translation>Szimbólumok</translation>
     </message>
     <message>
-        <location line="-243"/>
-        <location line="+244"/>
+        <location line="-255"/>
+        <location line="+256"/>
         <source>Watch lists</source>
         <translation>Figyelőlisták</translation>
     </message>
     <message>
-        <location filename="../app/gui/main_window_actions.cpp" line="+44"/>
+        <location filename="../app/gui/main_window_actions.cpp" line="+46"/>
         <source>&amp;File</source>
         <translation>&amp;Fájl</translation>
     </message>
@@ -458,7 +463,7 @@ Kilépési kód: 0 nincs hiba, 1 a programban hiba van, 2 használati vagy I/O h
         <translation>S&amp;or törlése</translation>
     </message>
     <message>
-        <location line="+80"/>
+        <location line="+79"/>
         <source>&amp;Undo</source>
         <translation>&amp;Visszavonás</translation>
     </message>
@@ -468,7 +473,7 @@ Kilépési kód: 0 nincs hiba, 1 a programban hiba van, 2 használati vagy I/O h
         <translation>&amp;Mégis</translation>
     </message>
     <message>
-        <location line="-164"/>
+        <location line="-163"/>
         <source>Select</source>
         <translation>Kijelölés</translation>
     </message>
@@ -590,7 +595,7 @@ Kilépési kód: 0 nincs hiba, 1 a programban hiba van, 2 használati vagy I/O h
         <translation>N&amp;yelv</translation>
     </message>
     <message>
-        <location line="+16"/>
+        <location line="+15"/>
         <source>&amp;Help</source>
         <translation>Sú&amp;gó</translation>
     </message>
@@ -641,7 +646,7 @@ Ladder and instruction-list editor for VPC, Vigor, CPM1 and PL110.</source>
 Létradiagram- és utasításlista-szerkesztő VPC, Vigor, CPM1 és PL110 PLC-khez.</translation>
     </message>
     <message>
-        <location filename="../app/gui/main_window.cpp" line="-227"/>
+        <location filename="../app/gui/main_window.cpp" line="-238"/>
         <source>Rung Comment</source>
         <translation>Létrafok megjegyzése</translation>
     </message>
@@ -652,23 +657,23 @@ Létradiagram- és utasításlista-szerkesztő VPC, Vigor, CPM1 és PL110 PLC-kh
     </message>
     <message>
         <location line="+22"/>
-        <location line="+207"/>
+        <location line="+218"/>
         <source>Ladder</source>
         <translation>Létradiagram</translation>
     </message>
     <message>
-        <location line="-206"/>
-        <location line="+207"/>
+        <location line="-217"/>
+        <location line="+218"/>
         <source>Instruction List</source>
         <translation>Utasításlista</translation>
     </message>
     <message>
-        <location line="-198"/>
+        <location line="-205"/>
         <source>The list as typed had errors and now shows the ladder&apos;s program; Ctrl+Z in the list brings it back</source>
         <translation>A begépelt lista hibás volt, most a létradiagram programját mutatja; a listában a Ctrl+Z visszahozza</translation>
     </message>
     <message>
-        <location line="+58"/>
+        <location line="+63"/>
         <source>&lt;b&gt;%1&lt;/b&gt;&lt;br&gt;Target: %2, model %3&lt;br&gt;%4, %5</source>
         <translation>&lt;b&gt;%1&lt;/b&gt;&lt;br&gt;PLC-család: %2, modell: %3&lt;br&gt;%4, %5</translation>
     </message>
@@ -739,12 +744,13 @@ Létradiagram- és utasításlista-szerkesztő VPC, Vigor, CPM1 és PL110 PLC-kh
         <translation>&amp;Visszavonás: %1</translation>
     </message>
     <message>
-        <location filename="../app/gui/main_window_files.cpp" line="+58"/>
+        <location filename="../app/gui/main_window_files.cpp" line="+62"/>
+        <location line="+6"/>
         <source>Recover</source>
         <translation>Helyreállítás</translation>
     </message>
     <message>
-        <location line="-5"/>
+        <location line="-11"/>
         <source>Rung Studio was not closed properly last time. Recover the unsaved program?</source>
         <translation>A Rung Studio legutóbb nem záródott be szabályosan. Helyreállítja a nem mentett programot?</translation>
     </message>
@@ -754,27 +760,17 @@ Létradiagram- és utasításlista-szerkesztő VPC, Vigor, CPM1 és PL110 PLC-kh
         <translation>A Rung Studio legutóbb nem záródott be szabályosan. Helyreállítja a(z) %1 nem mentett módosításait?</translation>
     </message>
     <message>
-        <location line="+49"/>
+        <location line="+57"/>
         <source>Cannot open the file</source>
         <translation>A fájl nem nyitható meg</translation>
     </message>
     <message>
-        <location line="+29"/>
+        <location line="+30"/>
         <source>Unknown target %1</source>
         <translation>Ismeretlen célrendszer: %1</translation>
     </message>
     <message>
-        <location line="-11"/>
-        <source>%1: %2</source>
-        <translation>%1: %2</translation>
-    </message>
-    <message>
-        <location line="+2"/>
-        <source>%1 is larger than 64 MB</source>
-        <translation>%1 nagyobb 64 MB-nál</translation>
-    </message>
-    <message>
-        <location line="+19"/>
+        <location line="+28"/>
         <source>%1 has errors; the ladder follows once they are fixed</source>
         <translation>%1 hibás; a létradiagram a hibák javítása után követi</translation>
     </message>
@@ -784,7 +780,7 @@ Létradiagram- és utasításlista-szerkesztő VPC, Vigor, CPM1 és PL110 PLC-kh
         <translation>A mentés nem sikerült</translation>
     </message>
     <message>
-        <location line="+11"/>
+        <location line="+12"/>
         <source>Saved %1</source>
         <translation>Mentve: %1</translation>
     </message>
@@ -824,12 +820,7 @@ Létradiagram- és utasításlista-szerkesztő VPC, Vigor, CPM1 és PL110 PLC-kh
         <translation>Megnyitás</translation>
     </message>
     <message>
-        <location line="+1"/>
-        <source>Rung Studio projects (*.rung);;Instruction lists (*.il *.txt)</source>
-        <translation>Rung Studio projektek (*.rung);;Utasításlisták (*.il *.txt)</translation>
-    </message>
-    <message>
-        <location line="+19"/>
+        <location line="+21"/>
         <source>Replace File</source>
         <translation>Fájl cseréje</translation>
     </message>
@@ -877,7 +868,17 @@ Létradiagram- és utasításlista-szerkesztő VPC, Vigor, CPM1 és PL110 PLC-kh
         <translation>Az exportálás nem sikerült</translation>
     </message>
     <message>
-        <location line="-5"/>
+        <location line="-203"/>
+        <source>%1, line %2, column %3: %4</source>
+        <translation>%1, %2. sor, %3. oszlop: %4</translation>
+    </message>
+    <message>
+        <location line="+120"/>
+        <source>Rung Studio projects (*.rung);;Instruction lists (*.il *.txt);;Ladder texts (*.ladder)</source>
+        <translation>Rung Studio projektek (*.rung);;Utasításlisták (*.il *.txt);;Létraszövegek (*.ladder)</translation>
+    </message>
+    <message>
+        <location line="+78"/>
         <source>Export Ladder</source>
         <translation>Létradiagram exportálása</translation>
     </message>
@@ -963,7 +964,7 @@ Létradiagram- és utasításlista-szerkesztő VPC, Vigor, CPM1 és PL110 PLC-kh
         <translation>%1 cseréje erre: %2</translation>
     </message>
     <message>
-        <location filename="../app/gui/main_window.cpp" line="+85"/>
+        <location filename="../app/gui/main_window.cpp" line="+87"/>
         <location filename="../app/gui/main_window_tools.cpp" line="+6"/>
         <source>Cross Reference</source>
         <translation>Kereszthivatkozás</translation>
@@ -977,7 +978,7 @@ Létradiagram- és utasításlista-szerkesztő VPC, Vigor, CPM1 és PL110 PLC-kh
 <context>
     <name>rung::app::ProgramExport</name>
     <message>
-        <location filename="../app/gui/ladder_export.cpp" line="+80"/>
+        <location filename="../app/gui/ladder_export.cpp" line="+82"/>
         <source>%1 could not be written</source>
         <translation>%1 nem írható</translation>
     </message>
@@ -1007,21 +1008,45 @@ Létradiagram- és utasításlista-szerkesztő VPC, Vigor, CPM1 és PL110 PLC-kh
         <translation>Utasításlista, %1. sor: %2</translation>
     </message>
     <message>
-        <location line="+3"/>
+        <location line="+4"/>
+        <location line="+7"/>
         <source>Rung %1: %2</source>
         <translation>%1. létrafok: %2</translation>
     </message>
     <message>
-        <location line="+3"/>
-        <source>Nothing was written: the program has errors.
+        <location line="+6"/>
+        <source>Rung %1 is not in the list: %2</source>
+        <translation>A(z) %1. létrafok nincs a listában: %2</translation>
+    </message>
+    <message>
+        <location line="+2"/>
+        <source>Nothing was written: the instruction list would not hold the whole program.
 %1</source>
-        <translation>Semmi sem íródott ki: a program hibás.
+        <translation>Semmi sem íródott ki: az utasításlista nem tartalmazná a teljes programot.
 %1</translation>
     </message>
     <message>
-        <location line="+14"/>
+        <location line="+17"/>
         <source>%1: %2</source>
         <translation>%1: %2</translation>
+    </message>
+</context>
+<context>
+    <name>rung::app::RecoveryFile</name>
+    <message>
+        <location filename="../app/gui/recovery.cpp" line="+80"/>
+        <source>The recovery file could not be written: %1</source>
+        <translation>A helyreállítási fájl nem írható: %1</translation>
+    </message>
+    <message>
+        <location line="+7"/>
+        <source>The recovery file could not be written: %1: %2</source>
+        <translation>A helyreállítási fájl nem írható: %1: %2</translation>
+    </message>
+    <message>
+        <location line="+27"/>
+        <source>%1 could not be read and is kept: %2</source>
+        <translation>A(z) %1 nem olvasható, ezért megmaradt: %2</translation>
     </message>
 </context>
 <context>
@@ -1087,18 +1112,12 @@ Létradiagram- és utasításlista-szerkesztő VPC, Vigor, CPM1 és PL110 PLC-kh
         <translation>Megjegyzés</translation>
     </message>
     <message>
-        <location line="+79"/>
-        <location line="+11"/>
+        <location line="+82"/>
         <source>%1: %2</source>
         <translation>%1: %2</translation>
     </message>
     <message>
-        <location line="+3"/>
-        <source>%1 is larger than 64 MB</source>
-        <translation>%1 nagyobb 64 MB-nál</translation>
-    </message>
-    <message>
-        <location line="+8"/>
+        <location line="+17"/>
         <source>%1, line %2: %3</source>
         <translation>%1, %2. sor: %3</translation>
     </message>
@@ -1539,7 +1558,12 @@ Létradiagram- és utasításlista-szerkesztő VPC, Vigor, CPM1 és PL110 PLC-kh
 <context>
     <name>rung::editor::CrossReferenceView</name>
     <message>
-        <location filename="../editor/cross_reference_view.cpp" line="+48"/>
+        <location filename="../editor/cross_reference_view.cpp" line="+50"/>
+        <source>Device or prefix (X0, X)</source>
+        <translation>Operandus vagy előtag (X0, X)</translation>
+    </message>
+    <message>
+        <location line="+1"/>
         <source>Device or prefix (X0, X); empty: every device</source>
         <translation>Operandus vagy előtag (X0, X); üresen: minden operandus</translation>
     </message>
@@ -1564,7 +1588,7 @@ Létradiagram- és utasításlista-szerkesztő VPC, Vigor, CPM1 és PL110 PLC-kh
         <translation>Utasítás</translation>
     </message>
     <message>
-        <location line="+78"/>
+        <location line="+83"/>
         <source>contact</source>
         <translation>érintkező</translation>
     </message>
@@ -1597,7 +1621,7 @@ Létradiagram- és utasításlista-szerkesztő VPC, Vigor, CPM1 és PL110 PLC-kh
         <translation>Szimbólumok szerkesztése</translation>
     </message>
     <message>
-        <location line="+122"/>
+        <location line="+123"/>
         <source>Insert rung</source>
         <translation>Létrafok beszúrása</translation>
     </message>
@@ -1624,7 +1648,7 @@ Létradiagram- és utasításlista-szerkesztő VPC, Vigor, CPM1 és PL110 PLC-kh
         <translation>Utasításlista szerkesztése</translation>
     </message>
     <message>
-        <location line="+53"/>
+        <location line="+55"/>
         <source>it has nothing to list yet</source>
         <translation>még nincs benne semmi, ami a listába kerülhetne</translation>
     </message>
@@ -1912,24 +1936,23 @@ Létradiagram- és utasításlista-szerkesztő VPC, Vigor, CPM1 és PL110 PLC-kh
 <context>
     <name>rung::editor::WatchListView</name>
     <message>
-        <location filename="../editor/watch_list_view.cpp" line="+17"/>
-        <location line="+17"/>
+        <location filename="../editor/watch_list_view.cpp" line="+45"/>
         <location line="+1"/>
         <source>Watch list</source>
         <translation>Figyelőlista</translation>
     </message>
     <message>
-        <location line="-15"/>
+        <location line="+1"/>
         <source>Watch lists</source>
         <translation>Figyelőlisták</translation>
     </message>
     <message>
-        <location line="+14"/>
+        <location line="-2"/>
         <source>Value</source>
         <translation>Érték</translation>
     </message>
     <message>
-        <location line="+42"/>
+        <location line="+43"/>
         <source>not a device</source>
         <translation>nem operandus</translation>
     </message>
@@ -2598,7 +2621,7 @@ Létradiagram- és utasításlista-szerkesztő VPC, Vigor, CPM1 és PL110 PLC-kh
 <context>
     <name>rung::model::LadderText</name>
     <message>
-        <location filename="../model/ladder/ladder_text.cpp" line="+182"/>
+        <location filename="../model/ladder/ladder_text.cpp" line="+183"/>
         <source>A ladder text starts with &quot;LADDER &lt;target&gt; WIDTH &lt;n&gt;&quot;</source>
         <translation>A létra-szöveg így kezdődik: &quot;LADDER &lt;target&gt; WIDTH &lt;n&gt;&quot;</translation>
     </message>
@@ -2697,7 +2720,7 @@ Létradiagram- és utasításlista-szerkesztő VPC, Vigor, CPM1 és PL110 PLC-kh
         <translation>A &quot;schema&quot; pozitív szám kell legyen</translation>
     </message>
     <message>
-        <location line="+13"/>
+        <location line="+14"/>
         <source>&quot;target&quot;: unknown PLC family &quot;%1&quot;</source>
         <translation>&quot;target&quot;: ismeretlen PLC-család: &quot;%1&quot;</translation>
     </message>
@@ -2708,11 +2731,12 @@ Létradiagram- és utasításlista-szerkesztő VPC, Vigor, CPM1 és PL110 PLC-kh
     </message>
     <message>
         <location line="+16"/>
+        <location line="+54"/>
         <source>%1: an object with &quot;device&quot; and &quot;name&quot; is expected</source>
         <translation>%1: &quot;device&quot; és &quot;name&quot; mezőket tartalmazó objektum a várt</translation>
     </message>
     <message>
-        <location line="+22"/>
+        <location line="-32"/>
         <source>setValues.%1: a whole number between -%2 and %2 is expected</source>
         <translation>setValues.%1: -%2 és %2 közötti egész szám a várt</translation>
     </message>
@@ -2727,7 +2751,7 @@ Létradiagram- és utasításlista-szerkesztő VPC, Vigor, CPM1 és PL110 PLC-kh
         <translation>%1.devices[%2]: operandusnév a várt</translation>
     </message>
     <message>
-        <location line="+19"/>
+        <location line="+35"/>
         <source>a string</source>
         <translation>karakterlánc</translation>
     </message>
@@ -2817,22 +2841,22 @@ Létradiagram- és utasításlista-szerkesztő VPC, Vigor, CPM1 és PL110 PLC-kh
         <translation>egyetlen utasítás a várt</translation>
     </message>
     <message>
-        <location line="+95"/>
+        <location filename="../model/project/file_read.cpp" line="+18"/>
         <source>%1: cannot open the file (%2)</source>
         <translation>%1: a fájl nem nyitható meg (%2)</translation>
     </message>
     <message>
-        <location line="+5"/>
-        <source>%1: the file is %2 MB; a project is at most %3 MB</source>
-        <translation>%1: a fájl %2 MB; egy projekt legfeljebb %3 MB lehet</translation>
+        <location line="+4"/>
+        <source>%1: the file is %2 MB; the most Rung Studio reads is %3 MB</source>
+        <translation>%1: a fájl %2 MB; a Rung Studio legfeljebb %3 MB-ot olvas be</translation>
     </message>
     <message>
-        <location line="+5"/>
-        <source>%1: the file is larger than %2 MB, the most a project can be</source>
-        <translation>%1: a fájl nagyobb %2 MB-nál, ekkora projekt nem lehet</translation>
+        <location line="+4"/>
+        <source>%1: the file is larger than %2 MB, the most Rung Studio reads</source>
+        <translation>%1: a fájl nagyobb %2 MB-nál, ennél többet a Rung Studio nem olvas be</translation>
     </message>
     <message>
-        <location line="+20"/>
+        <location filename="../model/project/project.cpp" line="+123"/>
         <source>%1: cannot write the file (%2)</source>
         <translation>%1: a fájl nem írható (%2)</translation>
     </message>

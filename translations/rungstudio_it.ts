@@ -42,8 +42,8 @@
 <context>
     <name>rung::app::Cli</name>
     <message>
-        <location filename="../app/cli/cli.cpp" line="+40"/>
-        <location line="+35"/>
+        <location filename="../app/cli/cli.cpp" line="+43"/>
+        <location line="+45"/>
         <source>unexpected argument %1</source>
         <translation>argomento non previsto: %1</translation>
     </message>
@@ -53,7 +53,7 @@
         <translation>--to deve essere il, ladder o project</translation>
     </message>
     <message>
-        <location line="-59"/>
+        <location line="-69"/>
         <source>usage:
   rungstudio-cli check FILE [--target vpc|vigor|cpm1|pl110] [--model M]
   rungstudio-cli convert FILE [--target T] [--from il|ladder|project] --to il|ladder|project [-o OUT] [--force]
@@ -70,7 +70,17 @@ FILE è una lista istruzioni (.il), un testo ladder (.ladder) o un progetto (.ru
 Codice di uscita: 0 nessun errore, 1 il programma contiene errori, 2 errore di utilizzo o di I/O.</translation>
     </message>
     <message>
-        <location line="+80"/>
+        <location line="+85"/>
+        <source>nothing written: the list as typed would be lost</source>
+        <translation>non è stato scritto nulla: la lista digitata andrebbe persa</translation>
+    </message>
+    <message>
+        <location line="+21"/>
+        <source>nothing written: the listing would leave out the contacts above</source>
+        <translation>non è stato scritto nulla: la lista istruzioni tralascerebbe i contatti sopra indicati</translation>
+    </message>
+    <message>
+        <location line="+9"/>
         <source>nothing written: the input does not parse or convert whole</source>
         <translation>nessun file scritto: l&apos;ingresso non si legge o non si converte per intero</translation>
     </message>
@@ -95,7 +105,7 @@ Codice di uscita: 0 nessun errore, 1 il programma contiene errori, 2 errore di u
         <translation>comando sconosciuto: %1</translation>
     </message>
     <message>
-        <location filename="../app/cli/cli_common.cpp" line="+86"/>
+        <location filename="../app/cli/cli_common.cpp" line="+97"/>
         <source>%1 needs a value</source>
         <translation>%1 richiede un valore</translation>
     </message>
@@ -115,17 +125,12 @@ Codice di uscita: 0 nessun errore, 1 il programma contiene errori, 2 errore di u
         <translation>%1 è un progetto %2, non %3</translation>
     </message>
     <message>
-        <location line="-99"/>
-        <source>cannot read %1: %2</source>
-        <translation>impossibile leggere %1: %2</translation>
+        <location line="-86"/>
+        <source>%1 holds an instruction list typed in Rung Studio that is not in its program: the list had errors when the project was saved, and is kept as typed under the key &quot;pendingListing&quot;; the rungs are the last valid program. Open the project in Rung Studio and fix the list.</source>
+        <translation>%1 contiene una lista istruzioni digitata in Rung Studio che non è nel suo programma: la lista conteneva errori quando il progetto è stato salvato, ed è conservata così come digitata sotto la chiave &quot;pendingListing&quot;; i segmenti sono l&apos;ultimo programma valido. Aprire il progetto in Rung Studio e correggere la lista.</translation>
     </message>
     <message>
-        <location line="+3"/>
-        <source>%1: the file is larger than %2 MB, too large for a listing or a ladder text</source>
-        <translation>%1: il file supera %2 MB, troppo grande per una lista istruzioni o un testo ladder</translation>
-    </message>
-    <message>
-        <location line="+120"/>
+        <location line="+110"/>
         <source>%1: which PLC? Give --target vpc|vigor|cpm1|pl110 or a &quot;; target: NAME&quot; first line</source>
         <translation>%1: quale PLC? Specificare --target vpc|vigor|cpm1|pl110 oppure una prima riga &quot;; target: NAME&quot;</translation>
     </message>
@@ -156,9 +161,9 @@ Codice di uscita: 0 nessun errore, 1 il programma contiene errori, 2 errore di u
         <translation>nota</translation>
     </message>
     <message>
-        <location filename="../app/cli/cli_language.cpp" line="+29"/>
-        <source>--lang must be en, hu or it</source>
-        <translation>--lang deve essere en, hu o it</translation>
+        <location filename="../app/cli/cli_language.cpp" line="+31"/>
+        <source>--lang must be one of %1</source>
+        <translation>--lang deve essere uno tra %1</translation>
     </message>
 </context>
 <context>
@@ -256,24 +261,24 @@ Codice di uscita: 0 nessun errore, 1 il programma contiene errori, 2 errore di u
     </message>
     <message>
         <location line="+5"/>
-        <location line="+251"/>
+        <location line="+263"/>
         <source>Project</source>
         <translation>Progetto</translation>
     </message>
     <message>
-        <location line="-244"/>
-        <location line="+247"/>
+        <location line="-256"/>
+        <location line="+259"/>
         <source>Symbols</source>
         <translation>Simboli</translation>
     </message>
     <message>
-        <location line="-243"/>
-        <location line="+244"/>
+        <location line="-255"/>
+        <location line="+256"/>
         <source>Watch lists</source>
         <translation>Liste di osservazione</translation>
     </message>
     <message>
-        <location filename="../app/gui/main_window_actions.cpp" line="+44"/>
+        <location filename="../app/gui/main_window_actions.cpp" line="+46"/>
         <source>&amp;File</source>
         <translation>&amp;File</translation>
     </message>
@@ -458,7 +463,7 @@ Codice di uscita: 0 nessun errore, 1 il programma contiene errori, 2 errore di u
         <translation>E&amp;limina riga</translation>
     </message>
     <message>
-        <location line="+80"/>
+        <location line="+79"/>
         <source>&amp;Undo</source>
         <translation>&amp;Annulla</translation>
     </message>
@@ -468,7 +473,7 @@ Codice di uscita: 0 nessun errore, 1 il programma contiene errori, 2 errore di u
         <translation>&amp;Ripeti</translation>
     </message>
     <message>
-        <location line="-164"/>
+        <location line="-163"/>
         <source>Select</source>
         <translation>Seleziona</translation>
     </message>
@@ -590,7 +595,7 @@ Codice di uscita: 0 nessun errore, 1 il programma contiene errori, 2 errore di u
         <translation>&amp;Lingua</translation>
     </message>
     <message>
-        <location line="+16"/>
+        <location line="+15"/>
         <source>&amp;Help</source>
         <translation>&amp;Aiuto</translation>
     </message>
@@ -641,7 +646,7 @@ Ladder and instruction-list editor for VPC, Vigor, CPM1 and PL110.</source>
 Editor di schemi ladder e liste istruzioni per VPC, Vigor, CPM1 e PL110.</translation>
     </message>
     <message>
-        <location filename="../app/gui/main_window.cpp" line="-227"/>
+        <location filename="../app/gui/main_window.cpp" line="-238"/>
         <source>Rung Comment</source>
         <translation>Commento del segmento</translation>
     </message>
@@ -652,23 +657,23 @@ Editor di schemi ladder e liste istruzioni per VPC, Vigor, CPM1 e PL110.</transl
     </message>
     <message>
         <location line="+22"/>
-        <location line="+207"/>
+        <location line="+218"/>
         <source>Ladder</source>
         <translation>Ladder</translation>
     </message>
     <message>
-        <location line="-206"/>
-        <location line="+207"/>
+        <location line="-217"/>
+        <location line="+218"/>
         <source>Instruction List</source>
         <translation>Lista istruzioni</translation>
     </message>
     <message>
-        <location line="-198"/>
+        <location line="-205"/>
         <source>The list as typed had errors and now shows the ladder&apos;s program; Ctrl+Z in the list brings it back</source>
         <translation>La lista digitata conteneva errori e ora mostra il programma dello schema ladder; Ctrl+Z nella lista la ripristina</translation>
     </message>
     <message>
-        <location line="+58"/>
+        <location line="+63"/>
         <source>&lt;b&gt;%1&lt;/b&gt;&lt;br&gt;Target: %2, model %3&lt;br&gt;%4, %5</source>
         <translation>&lt;b&gt;%1&lt;/b&gt;&lt;br&gt;Famiglia PLC: %2, modello %3&lt;br&gt;%4, %5</translation>
     </message>
@@ -741,12 +746,13 @@ Editor di schemi ladder e liste istruzioni per VPC, Vigor, CPM1 e PL110.</transl
         <translation>&amp;Annulla %1</translation>
     </message>
     <message>
-        <location filename="../app/gui/main_window_files.cpp" line="+58"/>
+        <location filename="../app/gui/main_window_files.cpp" line="+62"/>
+        <location line="+6"/>
         <source>Recover</source>
         <translation>Ripristino</translation>
     </message>
     <message>
-        <location line="-5"/>
+        <location line="-11"/>
         <source>Rung Studio was not closed properly last time. Recover the unsaved program?</source>
         <translation>Rung Studio non è stato chiuso correttamente l&apos;ultima volta. Ripristinare il programma non salvato?</translation>
     </message>
@@ -756,27 +762,17 @@ Editor di schemi ladder e liste istruzioni per VPC, Vigor, CPM1 e PL110.</transl
         <translation>Rung Studio non è stato chiuso correttamente l&apos;ultima volta. Ripristinare le modifiche non salvate di %1?</translation>
     </message>
     <message>
-        <location line="+49"/>
+        <location line="+57"/>
         <source>Cannot open the file</source>
         <translation>Impossibile aprire il file</translation>
     </message>
     <message>
-        <location line="+29"/>
+        <location line="+30"/>
         <source>Unknown target %1</source>
         <translation>Famiglia PLC sconosciuta: %1</translation>
     </message>
     <message>
-        <location line="-11"/>
-        <source>%1: %2</source>
-        <translation>%1: %2</translation>
-    </message>
-    <message>
-        <location line="+2"/>
-        <source>%1 is larger than 64 MB</source>
-        <translation>%1 supera i 64 MB</translation>
-    </message>
-    <message>
-        <location line="+19"/>
+        <location line="+28"/>
         <source>%1 has errors; the ladder follows once they are fixed</source>
         <translation>%1 contiene errori; lo schema ladder si aggiorna quando sono corretti</translation>
     </message>
@@ -786,7 +782,7 @@ Editor di schemi ladder e liste istruzioni per VPC, Vigor, CPM1 e PL110.</transl
         <translation>Impossibile salvare</translation>
     </message>
     <message>
-        <location line="+11"/>
+        <location line="+12"/>
         <source>Saved %1</source>
         <translation>%1 salvato</translation>
     </message>
@@ -826,12 +822,7 @@ Editor di schemi ladder e liste istruzioni per VPC, Vigor, CPM1 e PL110.</transl
         <translation>Apri</translation>
     </message>
     <message>
-        <location line="+1"/>
-        <source>Rung Studio projects (*.rung);;Instruction lists (*.il *.txt)</source>
-        <translation>Progetti Rung Studio (*.rung);;Liste istruzioni (*.il *.txt)</translation>
-    </message>
-    <message>
-        <location line="+19"/>
+        <location line="+21"/>
         <source>Replace File</source>
         <translation>Sostituisci file</translation>
     </message>
@@ -879,7 +870,17 @@ Editor di schemi ladder e liste istruzioni per VPC, Vigor, CPM1 e PL110.</transl
         <translation>Impossibile esportare</translation>
     </message>
     <message>
-        <location line="-5"/>
+        <location line="-203"/>
+        <source>%1, line %2, column %3: %4</source>
+        <translation>%1, riga %2, colonna %3: %4</translation>
+    </message>
+    <message>
+        <location line="+120"/>
+        <source>Rung Studio projects (*.rung);;Instruction lists (*.il *.txt);;Ladder texts (*.ladder)</source>
+        <translation>Progetti Rung Studio (*.rung);;Liste istruzioni (*.il *.txt);;Testi ladder (*.ladder)</translation>
+    </message>
+    <message>
+        <location line="+78"/>
         <source>Export Ladder</source>
         <translation>Esporta schema ladder</translation>
     </message>
@@ -967,7 +968,7 @@ Editor di schemi ladder e liste istruzioni per VPC, Vigor, CPM1 e PL110.</transl
         <translation>Sostituisci %1 con %2</translation>
     </message>
     <message>
-        <location filename="../app/gui/main_window.cpp" line="+85"/>
+        <location filename="../app/gui/main_window.cpp" line="+87"/>
         <location filename="../app/gui/main_window_tools.cpp" line="+6"/>
         <source>Cross Reference</source>
         <translation>Riferimenti incrociati</translation>
@@ -981,7 +982,7 @@ Editor di schemi ladder e liste istruzioni per VPC, Vigor, CPM1 e PL110.</transl
 <context>
     <name>rung::app::ProgramExport</name>
     <message>
-        <location filename="../app/gui/ladder_export.cpp" line="+80"/>
+        <location filename="../app/gui/ladder_export.cpp" line="+82"/>
         <source>%1 could not be written</source>
         <translation>Impossibile scrivere %1</translation>
     </message>
@@ -1011,21 +1012,45 @@ Editor di schemi ladder e liste istruzioni per VPC, Vigor, CPM1 e PL110.</transl
         <translation>Lista istruzioni, riga %1: %2</translation>
     </message>
     <message>
-        <location line="+3"/>
+        <location line="+4"/>
+        <location line="+7"/>
         <source>Rung %1: %2</source>
         <translation>Segmento %1: %2</translation>
     </message>
     <message>
-        <location line="+3"/>
-        <source>Nothing was written: the program has errors.
+        <location line="+6"/>
+        <source>Rung %1 is not in the list: %2</source>
+        <translation>Il segmento %1 non è nella lista: %2</translation>
+    </message>
+    <message>
+        <location line="+2"/>
+        <source>Nothing was written: the instruction list would not hold the whole program.
 %1</source>
-        <translation>Non è stato scritto nulla: il programma contiene errori.
+        <translation>Non è stato scritto nulla: la lista istruzioni non conterrebbe l&apos;intero programma.
 %1</translation>
     </message>
     <message>
-        <location line="+14"/>
+        <location line="+17"/>
         <source>%1: %2</source>
         <translation>%1: %2</translation>
+    </message>
+</context>
+<context>
+    <name>rung::app::RecoveryFile</name>
+    <message>
+        <location filename="../app/gui/recovery.cpp" line="+80"/>
+        <source>The recovery file could not be written: %1</source>
+        <translation>Impossibile scrivere il file di recupero: %1</translation>
+    </message>
+    <message>
+        <location line="+7"/>
+        <source>The recovery file could not be written: %1: %2</source>
+        <translation>Impossibile scrivere il file di recupero: %1: %2</translation>
+    </message>
+    <message>
+        <location line="+27"/>
+        <source>%1 could not be read and is kept: %2</source>
+        <translation>%1 non è leggibile ed è stato conservato: %2</translation>
     </message>
 </context>
 <context>
@@ -1091,18 +1116,12 @@ Editor di schemi ladder e liste istruzioni per VPC, Vigor, CPM1 e PL110.</transl
         <translation>Commento</translation>
     </message>
     <message>
-        <location line="+79"/>
-        <location line="+11"/>
+        <location line="+82"/>
         <source>%1: %2</source>
         <translation>%1: %2</translation>
     </message>
     <message>
-        <location line="+3"/>
-        <source>%1 is larger than 64 MB</source>
-        <translation>%1 supera i 64 MB</translation>
-    </message>
-    <message>
-        <location line="+8"/>
+        <location line="+17"/>
         <source>%1, line %2: %3</source>
         <translation>%1, riga %2: %3</translation>
     </message>
@@ -1543,7 +1562,12 @@ Editor di schemi ladder e liste istruzioni per VPC, Vigor, CPM1 e PL110.</transl
 <context>
     <name>rung::editor::CrossReferenceView</name>
     <message>
-        <location filename="../editor/cross_reference_view.cpp" line="+48"/>
+        <location filename="../editor/cross_reference_view.cpp" line="+50"/>
+        <source>Device or prefix (X0, X)</source>
+        <translation>Operando o prefisso (X0, X)</translation>
+    </message>
+    <message>
+        <location line="+1"/>
         <source>Device or prefix (X0, X); empty: every device</source>
         <translation>Operando o prefisso (X0, X); vuoto: tutti gli operandi</translation>
     </message>
@@ -1568,7 +1592,7 @@ Editor di schemi ladder e liste istruzioni per VPC, Vigor, CPM1 e PL110.</transl
         <translation>Istruzione</translation>
     </message>
     <message>
-        <location line="+78"/>
+        <location line="+83"/>
         <source>contact</source>
         <translation>contatto</translation>
     </message>
@@ -1601,7 +1625,7 @@ Editor di schemi ladder e liste istruzioni per VPC, Vigor, CPM1 e PL110.</transl
         <translation>Modifica simboli</translation>
     </message>
     <message>
-        <location line="+122"/>
+        <location line="+123"/>
         <source>Insert rung</source>
         <translation>Inserisci segmento</translation>
     </message>
@@ -1629,7 +1653,7 @@ Editor di schemi ladder e liste istruzioni per VPC, Vigor, CPM1 e PL110.</transl
         <translation>Modifica lista istruzioni</translation>
     </message>
     <message>
-        <location line="+53"/>
+        <location line="+55"/>
         <source>it has nothing to list yet</source>
         <translation>non contiene ancora nulla da elencare</translation>
     </message>
@@ -1917,24 +1941,23 @@ Editor di schemi ladder e liste istruzioni per VPC, Vigor, CPM1 e PL110.</transl
 <context>
     <name>rung::editor::WatchListView</name>
     <message>
-        <location filename="../editor/watch_list_view.cpp" line="+17"/>
-        <location line="+17"/>
+        <location filename="../editor/watch_list_view.cpp" line="+45"/>
         <location line="+1"/>
         <source>Watch list</source>
         <translation>Lista di osservazione</translation>
     </message>
     <message>
-        <location line="-15"/>
+        <location line="+1"/>
         <source>Watch lists</source>
         <translation>Liste di osservazione</translation>
     </message>
     <message>
-        <location line="+14"/>
+        <location line="-2"/>
         <source>Value</source>
         <translation>Valore</translation>
     </message>
     <message>
-        <location line="+42"/>
+        <location line="+43"/>
         <source>not a device</source>
         <translation>non è un operando</translation>
     </message>
@@ -2610,7 +2633,7 @@ Editor di schemi ladder e liste istruzioni per VPC, Vigor, CPM1 e PL110.</transl
 <context>
     <name>rung::model::LadderText</name>
     <message>
-        <location filename="../model/ladder/ladder_text.cpp" line="+182"/>
+        <location filename="../model/ladder/ladder_text.cpp" line="+183"/>
         <source>A ladder text starts with &quot;LADDER &lt;target&gt; WIDTH &lt;n&gt;&quot;</source>
         <translation>Un testo ladder inizia con &quot;LADDER &lt;target&gt; WIDTH &lt;n&gt;&quot;</translation>
     </message>
@@ -2709,7 +2732,7 @@ Editor di schemi ladder e liste istruzioni per VPC, Vigor, CPM1 e PL110.</transl
         <translation>&quot;schema&quot; deve essere un numero positivo</translation>
     </message>
     <message>
-        <location line="+13"/>
+        <location line="+14"/>
         <source>&quot;target&quot;: unknown PLC family &quot;%1&quot;</source>
         <translation>&quot;target&quot;: famiglia PLC sconosciuta &quot;%1&quot;</translation>
     </message>
@@ -2720,11 +2743,12 @@ Editor di schemi ladder e liste istruzioni per VPC, Vigor, CPM1 e PL110.</transl
     </message>
     <message>
         <location line="+16"/>
+        <location line="+54"/>
         <source>%1: an object with &quot;device&quot; and &quot;name&quot; is expected</source>
         <translation>%1: è atteso un oggetto con &quot;device&quot; e &quot;name&quot;</translation>
     </message>
     <message>
-        <location line="+22"/>
+        <location line="-32"/>
         <source>setValues.%1: a whole number between -%2 and %2 is expected</source>
         <translation>setValues.%1: è atteso un numero intero tra -%2 e %2</translation>
     </message>
@@ -2739,7 +2763,7 @@ Editor di schemi ladder e liste istruzioni per VPC, Vigor, CPM1 e PL110.</transl
         <translation>%1.devices[%2]: è atteso il nome di un operando</translation>
     </message>
     <message>
-        <location line="+19"/>
+        <location line="+35"/>
         <source>a string</source>
         <translation>una stringa</translation>
     </message>
@@ -2829,22 +2853,22 @@ Editor di schemi ladder e liste istruzioni per VPC, Vigor, CPM1 e PL110.</transl
         <translation>è attesa una sola istruzione</translation>
     </message>
     <message>
-        <location line="+95"/>
+        <location filename="../model/project/file_read.cpp" line="+18"/>
         <source>%1: cannot open the file (%2)</source>
         <translation>%1: impossibile aprire il file (%2)</translation>
     </message>
     <message>
-        <location line="+5"/>
-        <source>%1: the file is %2 MB; a project is at most %3 MB</source>
-        <translation>%1: il file è di %2 MB; un progetto è al massimo di %3 MB</translation>
+        <location line="+4"/>
+        <source>%1: the file is %2 MB; the most Rung Studio reads is %3 MB</source>
+        <translation>%1: il file è di %2 MB; Rung Studio legge al massimo %3 MB</translation>
     </message>
     <message>
-        <location line="+5"/>
-        <source>%1: the file is larger than %2 MB, the most a project can be</source>
-        <translation>%1: il file supera %2 MB, il massimo per un progetto</translation>
+        <location line="+4"/>
+        <source>%1: the file is larger than %2 MB, the most Rung Studio reads</source>
+        <translation>%1: il file supera %2 MB, il massimo che Rung Studio legge</translation>
     </message>
     <message>
-        <location line="+20"/>
+        <location filename="../model/project/project.cpp" line="+123"/>
         <source>%1: cannot write the file (%2)</source>
         <translation>%1: impossibile scrivere il file (%2)</translation>
     </message>

@@ -10,6 +10,9 @@
 #include <QCoreApplication>
 #include <QSaveFile>
 
+#include <algorithm>
+#include <iterator>
+
 namespace rung::app {
 
 namespace {
@@ -50,6 +53,16 @@ int check(const QStringList &args, QTextStream &out, QTextStream &err) {
     const std::vector<model::Diagnostic> all = findings(input);
     for (const model::Diagnostic &d : all)
         out << formatDiagnostic(input.file, d) << '\n';
+    // The rungs may check clean while the user's newest work, a list with errors, waits beside
+    // them: that is no success.
+    QString notice;
+    std::vector<model::Diagnostic> typed;
+    if (pendingListing(input, &notice, &typed)) {
+        for (const model::Diagnostic &d : typed)
+            out << formatDiagnostic(pendingLocation(input.file), d) << '\n';
+        err << notice << '\n';
+        return 1;
+    }
     return model::hasErrors(all) ? 1 : 0;
 }
 
@@ -86,6 +99,17 @@ int convert(const QStringList &args, QTextStream &out, QTextStream &err) {
         err << error << '\n';
         return 2;
     }
+    // A project that holds a list as typed with errors (pendingListing): converted to a list or
+    // a ladder, the file would hold the last valid program without the user's newest work. A
+    // project keeps the text, so --to project may go on.
+    QString notice;
+    std::vector<model::Diagnostic> typed;
+    if (to != QLatin1String("project") && pendingListing(input, &notice, &typed)) {
+        for (const model::Diagnostic &d : typed)
+            err << formatDiagnostic(pendingLocation(input.file), d) << '\n';
+        err << notice << '\n' << Tr::tr("nothing written: the list as typed would be lost") << '\n';
+        return 1;
+    }
     // What `check` rejects is not written (docs/cli.md): the same findings decide, so that a
     // converted file never holds a program the tool itself calls wrong. The reasons are the
     // documented codes of `check`, not the conversion's own.
@@ -93,6 +117,20 @@ int convert(const QStringList &args, QTextStream &out, QTextStream &err) {
     // would be written with parts missing, so it is never written.
     const std::vector<model::Diagnostic> all = findings(input);
     const bool incomplete = model::hasErrors(input.problems);
+    // A contact on no path to an output is left out of a listing (LD002): written as a list,
+    // the program would be shorter than the drawing, so it is never written, as the IDE's
+    // Export Instruction List refuses it.
+    std::vector<model::Diagnostic> leftOut;
+    if (to == QLatin1String("il"))
+        std::copy_if(all.begin(), all.end(), std::back_inserter(leftOut),
+                     [](const model::Diagnostic &d) { return d.code == QLatin1String("LD002"); });
+    if (!leftOut.empty() && !incomplete) {
+        for (const model::Diagnostic &d : all)
+            if (d.severity == model::Severity::Error || d.code == QLatin1String("LD002"))
+                err << formatDiagnostic(input.file, d) << '\n';
+        err << Tr::tr("nothing written: the listing would leave out the contacts above") << '\n';
+        return 1;
+    }
     const bool hasErrors = incomplete || model::hasErrors(all);
     if (hasErrors) {
         for (const model::Diagnostic &d : all)

@@ -8,7 +8,6 @@
 #include <QCoreApplication>
 #include <QFile>
 #include <QFileInfo>
-#include <QRegularExpression>
 
 namespace rung::app {
 
@@ -23,12 +22,6 @@ struct Tr {
 // pipe that never ends (/dev/zero) is refused too.
 constexpr qint64 kMaxInputBytes = 8 * 1024 * 1024;
 
-QString targetFromLadder(const QString &text) {
-    static const QRegularExpression re(QStringLiteral("^\\s*LADDER\\s+(\\w+)"));
-    const auto m = re.match(text);
-    return m.hasMatch() ? m.captured(1) : QString();
-}
-
 model::Diagnostic syntaxError(int line, int column, const QString &message) {
     model::Diagnostic d;
     d.code = QStringLiteral("SYN001");
@@ -42,20 +35,10 @@ model::Diagnostic syntaxError(int line, int column, const QString &message) {
 
 bool readInputFile(const QString &path, QByteArray *bytes, QString *error) {
     QString ioError;
-    switch (model::readAtMost(path, kMaxInputBytes, bytes, &ioError)) {
-    case model::ReadStatus::CannotOpen:
-        *error = Tr::tr("cannot read %1: %2").arg(path, ioError);
-        return false;
-    case model::ReadStatus::TooLarge:
-        *error = Tr::tr("%1: the file is larger than %2 MB, too large for a listing or a ladder "
-                        "text")
-                     .arg(path)
-                     .arg(kMaxInputBytes / (1024 * 1024));
-        return false;
-    case model::ReadStatus::Ok:
-        break;
-    }
-    return true;
+    const model::ReadStatus status = model::readAtMost(path, kMaxInputBytes, bytes, &ioError);
+    if (status != model::ReadStatus::Ok)
+        *error = model::readFailure(status, path, kMaxInputBytes, ioError);
+    return status == model::ReadStatus::Ok;
 }
 
 std::vector<model::Diagnostic> findings(const Input &input) {
@@ -75,6 +58,34 @@ std::vector<model::Diagnostic> findings(const Input &input) {
     }
     model::sortDiagnostics(all);
     return all;
+}
+
+QString pendingLocation(const QString &file) {
+    return file + QStringLiteral(":pendingListing");
+}
+
+bool pendingListing(const Input &input, QString *notice, std::vector<model::Diagnostic> *errors) {
+    const QString &text = input.project.pendingListing;
+    if (input.kind != InputKind::Project || text.isEmpty())
+        return false;
+    *notice = Tr::tr("%1 holds an instruction list typed in Rung Studio that is not in its "
+                     "program: the list had errors when the project was saved, and is kept as "
+                     "typed under the key \"pendingListing\"; the rungs are the last valid "
+                     "program. Open the project in Rung Studio and fix the list.")
+                  .arg(input.file);
+    errors->clear();
+    const model::ParseResult parsed = model::parseInstructionList(*input.target, text, input.model);
+    for (const model::ParseError &e : parsed.errors)
+        errors->push_back(syntaxError(e.line, e.column, e.message));
+    if (parsed.ok()) {
+        model::CheckOptions options;
+        options.model = input.model;
+        options.source = &text;
+        for (const model::Diagnostic &d : model::checkList(parsed.list, options))
+            if (d.severity == model::Severity::Error)
+                errors->push_back(d);
+    }
+    return true;
 }
 
 bool parseCommonOptions(const QStringList &args, CommonOptions *options, QStringList *rest,
@@ -158,7 +169,7 @@ bool loadInput(const CommonOptions &options, Input *input, QString *error) {
         const QString &text = input->text;
         QString targetId = options.target;
         if (targetId.isEmpty())
-            targetId = input->kind == InputKind::Ladder ? targetFromLadder(text)
+            targetId = input->kind == InputKind::Ladder ? model::ladderTextTarget(text)
                                                         : model::declaredTarget(text);
         if (targetId.isEmpty() && input->kind == InputKind::Ladder) {
             // No LADDER header names the PLC: the text is no ladder text, and the parser says so

@@ -45,6 +45,14 @@ bool readInputFile(const QString &path, QByteArray *bytes, QString *error);
 // What `check` prints: the syntax errors, or when the text parses every check's findings.
 std::vector<model::Diagnostic> findings(const Input &input);
 
+// A project saved while the instruction list as typed in the IDE had errors keeps that text
+// (pendingListing) beside its rungs, the last valid program: the text is the user's newest
+// work and not in the rungs. False when the input holds no such text; else *notice says so
+// plainly and *errors holds the errors of the text, located in it (see pendingLocation).
+bool pendingListing(const Input &input, QString *notice, std::vector<model::Diagnostic> *errors);
+// Where pendingListing's errors are: "FILE:pendingListing", for formatDiagnostic.
+QString pendingLocation(const QString &file);
+
 // "FILE:LINE:COL: error: message [CODE]" or "FILE:rung R:row:col: ..." (1-based).
 QString formatDiagnostic(const QString &file, const model::Diagnostic &d);
 

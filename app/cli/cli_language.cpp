@@ -1,5 +1,7 @@
 #include "cli_language.h"
 
+#include "app/languages.h"
+
 #include <QCoreApplication>
 
 namespace rung::app {
@@ -24,9 +26,9 @@ bool takeLanguageOption(QStringList *arguments, QString *language, QString *erro
         } else {
             continue;
         }
-        if (code != QLatin1String("en") && code != QLatin1String("hu") &&
-            code != QLatin1String("it")) {
-            *error = Tr::tr("--lang must be en, hu or it");
+        if (!languageCodes().contains(code)) {
+            *error =
+                Tr::tr("--lang must be one of %1").arg(languageCodes().join(QLatin1String(", ")));
             return false;
         }
         *language = code;

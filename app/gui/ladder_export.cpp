@@ -14,6 +14,8 @@
 #include <QSaveFile>
 #include <QSvgGenerator>
 
+#include <set>
+
 namespace rung::app {
 
 namespace {
@@ -173,12 +175,27 @@ QString ProgramExport::listingBlockers(const std::vector<model::Diagnostic> &typ
     for (const model::Diagnostic &d : typedErrors)
         if (d.severity == model::Severity::Error)
             reasons << tr("Instruction list, line %1: %2").arg(d.location.line).arg(d.message);
+    std::set<int> named; // rungs with a reason already
     for (const model::Diagnostic &d : m_document.listing().problems)
-        if (d.severity == model::Severity::Error)
+        if (d.severity == model::Severity::Error) {
             reasons << tr("Rung %1: %2").arg(d.location.rung + 1).arg(d.message);
-    return reasons.isEmpty()
-               ? QString()
-               : tr("Nothing was written: the program has errors.\n%1").arg(reasons.join(u'\n'));
+            named.insert(d.location.rung);
+        }
+    // A contact on no path to an output is left out of the list (LD002): a warning while
+    // drawing, a loss in a file that is the program.
+    for (const model::Diagnostic &d : m_document.diagnostics())
+        if (d.code == QLatin1String("LD002")) {
+            reasons << tr("Rung %1: %2").arg(d.location.rung + 1).arg(d.message);
+            named.insert(d.location.rung);
+        }
+    // Every other rung the list pane shows as a placeholder line (one with nothing to list).
+    for (const editor::Document::Unlisted &u : m_document.unlistedRungs())
+        if (!named.count(u.rung))
+            reasons << tr("Rung %1 is not in the list: %2").arg(u.rung + 1).arg(u.reason);
+    return reasons.isEmpty() ? QString()
+                             : tr("Nothing was written: the instruction list would not hold the "
+                                  "whole program.\n%1")
+                                   .arg(reasons.join(u'\n'));
 }
 
 bool ProgramExport::listing(const QString &path, QString *error,
@@ -189,7 +206,8 @@ bool ProgramExport::listing(const QString &path, QString *error,
         return false;
     }
     QSaveFile file(path);
-    const QByteArray bytes = m_document.listingText().toUtf8();
+    // The listing itself, never the text of the list pane: that one has placeholder lines.
+    const QByteArray bytes = model::printListing(m_document.listing().list).text.toUtf8();
     if (!file.open(QIODevice::WriteOnly) || file.write(bytes) != bytes.size() || !file.commit()) {
         if (error)
             *error = tr("%1: %2").arg(path, file.errorString());

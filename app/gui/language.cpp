@@ -1,5 +1,7 @@
 #include "language.h"
 
+#include "app/languages.h"
+
 #include <QCoreApplication>
 #include <QLibraryInfo>
 #include <QLocale>
@@ -28,7 +30,7 @@ Installed &installed() {
 } // namespace
 
 QStringList availableLanguages() {
-    return {QStringLiteral("en"), QStringLiteral("hu"), QStringLiteral("it")};
+    return languageCodes();
 }
 
 QString startLanguage() {

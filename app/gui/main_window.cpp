@@ -174,6 +174,7 @@ void MainWindow::buildDocks() {
     addDockWidget(Qt::LeftDockWidgetArea, projectDock);
     connect(m_symbols, &SymbolTable::message, this,
             [this](const QString &text) { statusBar()->showMessage(text, 5000); });
+    connect(m_symbols, &SymbolTable::pendingChanged, this, &MainWindow::updateTitle);
 }
 
 void MainWindow::editRungComment() {
@@ -213,20 +214,29 @@ void MainWindow::setSideBySide(bool sideBySide) {
 }
 
 void MainWindow::refreshFromDocument() {
-    if (!m_editingListing) {
+    // The list pane takes the ladder's listing when the rungs changed, or when it shows the
+    // listing it was given (in another language, say); a change of the symbols or the watch
+    // lists leaves the list as typed as it is.
+    const bool rungsChanged = m_document->rungsRevision() != m_shownRevision;
+    if (!m_editingListing && (rungsChanged || m_il->text() == m_shownListing)) {
         if (model::hasErrors(m_listingErrors))
             statusBar()->showMessage(tr("The list as typed had errors and now shows the "
                                         "ladder's program; Ctrl+Z in the list brings it back"),
                                      10000);
         m_il->setListing(m_document->listingText());
+        m_shownListing = m_document->listingText();
         m_listingErrors.clear();
     }
+    m_shownRevision = m_document->rungsRevision();
+    // The list pane shows the text as typed (with errors or forms of its own), or the listing.
+    const bool typed =
+        m_editingListing || !m_listingErrors.empty() || m_il->text() != m_document->listingText();
     std::vector<model::Diagnostic> all = m_document->diagnostics();
     all.insert(all.end(), m_listingErrors.begin(), m_listingErrors.end());
     m_problems->setDiagnostics(all);
     if (auto *dock = findChild<QDockWidget *>(QStringLiteral("problemsDock")))
         dock->setWindowTitle(m_problems->summary());
-    if (!m_editingListing) {
+    if (!typed) {
         // Listing findings of the canonical text: map each rung's findings to its lines.
         std::vector<model::Diagnostic> onLines;
         for (model::Diagnostic d : m_document->diagnostics()) {
@@ -241,7 +251,7 @@ void MainWindow::refreshFromDocument() {
         m_il->showDiagnostics(m_listingErrors);
     }
     std::vector<int> stepOfLine;
-    if (m_editingListing) {
+    if (typed) {
         // The text as typed (with errors, or in a form of its own): its lines that parse
         // keep their step numbers, as the parser counts them. A typing pause refreshes twice
         // (the document's change, then the apply): the text is parsed for this once.
@@ -340,12 +350,14 @@ QString MainWindow::pendingListing() const {
 }
 
 bool MainWindow::isModified() const {
-    return m_document->isModified() || pendingListing() != m_savedPending;
+    return m_document->isModified() || pendingListing() != m_savedPending ||
+           m_symbols->pending() != m_savedPendingSymbols;
 }
 
 model::Project MainWindow::projectToKeep() const {
     model::Project project = m_document->project();
     project.pendingListing = pendingListing();
+    project.pendingSymbols = m_symbols->pending();
     return project;
 }
 
@@ -419,8 +431,7 @@ void MainWindow::retranslate() {
     // stays, and its own findings are read again from it.
     const bool typed = !m_listingErrors.empty();
     m_editingListing = typed;
-    // An edit that changes nothing: the document converts and checks the program again.
-    m_document->applyRungs(0, 0, {});
+    m_document->recheck();
     m_editingListing = false;
     if (typed)
         applyListing();

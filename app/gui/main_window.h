@@ -54,8 +54,8 @@ public:
     // of them (typing "latch" for a PDF writes latch.pdf); when that names a file that exists,
     // asks before it is replaced (the dialog asked about the name as typed). Empty: cancelled.
     QString completeSavePath(const QString &chosen, const QStringList &suffixes);
-    // Unsaved work: the program, or a list as typed (with errors) that the last save or open
-    // did not hold.
+    // Unsaved work: the program, or a list as typed (with errors) or symbol rows that are no
+    // symbol yet that the last save or open did not hold.
     bool isModified() const;
     void newProject(const model::Target &target, const QString &modelName);
     void setSideBySide(bool sideBySide);
@@ -162,7 +162,11 @@ private:
         std::vector<int> steps;
     } m_typedSteps;
     bool m_editingListing = false;
+    // The rungs revision and the listing the list pane last took from the document.
+    quint64 m_shownRevision = 0;
+    QString m_shownListing;
     QString m_savedPending; // the list as typed that the file holds (pendingListing)
+    std::vector<model::PendingSymbol> m_savedPendingSymbols; // and the symbol rows it holds
     // A status message about the list's errors ("... has errors"): it goes once the list
     // applies without them, not when its time is up.
     QString m_errorsMessage;

@@ -3,6 +3,8 @@
 #include "language.h"
 #include "symbol_table.h"
 
+#include "app/languages.h"
+
 #include "editor/il_editor.h"
 #include "editor/ladder_view.h"
 #include "editor/tool_icons.h"
@@ -267,8 +269,7 @@ void MainWindow::buildActions() {
     auto *group = new QActionGroup(language);
     const QString current = currentLanguage();
     // Each language by its own name, whatever the interface speaks now.
-    for (const auto &[code, name] :
-         {std::pair{"en", "English"}, {"hu", "Magyar"}, {"it", "Italiano"}}) {
+    for (const auto &[code, name] : kLanguages) {
         QAction *a = language->addAction(QString::fromUtf8(name));
         a->setCheckable(true);
         a->setChecked(current == QLatin1String(code));

@@ -8,6 +8,7 @@
 #include "editor/il_editor.h"
 #include "editor/ladder_view.h"
 
+#include "model/ladder/ladder_text.h"
 #include "model/project/file_read.h"
 #include "model/project/project.h"
 
@@ -42,21 +43,30 @@ QString MainWindow::recoveryPath() const {
 void MainWindow::writeRecovery() {
     if (m_ilTimer.isActive())
         applyListing(); // what was typed last is work too
-    if (isModified())
-        m_recovery->write(projectToKeep(), m_document->path());
+    QString error;
+    if (isModified() && !m_recovery->write(projectToKeep(), m_document->path(), &error))
+        statusBar()->showMessage(error, 10000);
 }
 
 bool MainWindow::offerRecovery(bool ask) {
-    auto recovered = m_recovery->takeOrphan([this, ask](const QString &origin) {
-        const QString question =
-            origin.isEmpty()
-                ? tr("Rung Studio was not closed properly last time. Recover the unsaved "
-                     "program?")
-                : tr("Rung Studio was not closed properly last time. Recover the unsaved "
-                     "changes to %1?")
-                      .arg(QDir::toNativeSeparators(origin));
-        return !ask || QMessageBox::question(this, tr("Recover"), question) == QMessageBox::Yes;
-    });
+    QStringList unreadable;
+    auto recovered = m_recovery->takeOrphan(
+        [this, ask](const QString &origin) {
+            const QString question =
+                origin.isEmpty()
+                    ? tr("Rung Studio was not closed properly last time. Recover the unsaved "
+                         "program?")
+                    : tr("Rung Studio was not closed properly last time. Recover the unsaved "
+                         "changes to %1?")
+                          .arg(QDir::toNativeSeparators(origin));
+            return !ask || QMessageBox::question(this, tr("Recover"), question) == QMessageBox::Yes;
+        },
+        &unreadable);
+    if (!unreadable.isEmpty()) {
+        statusBar()->showMessage(unreadable.join(u' '), 15000);
+        if (ask)
+            QMessageBox::warning(this, tr("Recover"), unreadable.join(u'\n'));
+    }
     if (!recovered)
         return false;
     showProject(recovered->project, recovered->origin);
@@ -78,7 +88,8 @@ void MainWindow::showProject(const model::Project &project, const QString &path)
     m_il->setTarget(*project.target);
     m_il->dropHistory();
     m_listingErrors.clear();
-    m_symbols->dropPending(); // half-typed rows belong to the program that goes
+    m_symbols->setPending(project.pendingSymbols); // the rows typed that are no symbol yet
+    m_savedPendingSymbols = project.pendingSymbols;
     m_document->setProject(project, path);
     m_savedPending = project.pendingListing;
     if (!project.pendingListing.isEmpty()) {
@@ -93,7 +104,8 @@ void MainWindow::newProject(const model::Target &target, const QString &modelNam
     m_il->setTarget(target);
     m_il->dropHistory();
     m_listingErrors.clear();
-    m_symbols->dropPending(); // half-typed rows belong to the program that goes
+    m_symbols->setPending({}); // half-typed rows belong to the program that goes
+    m_savedPendingSymbols.clear();
     m_savedPending.clear();
     m_document->reset(target, modelName);
 }
@@ -117,20 +129,39 @@ bool MainWindow::openFile(const QString &path, const QString &targetId, bool qui
         // The target: as asked, else as the listing's first line names it, else the current.
         QByteArray bytes;
         QString ioError;
-        switch (model::readAtMost(path, kMaxTextFileBytes, &bytes, &ioError)) {
-        case model::ReadStatus::CannotOpen:
-            return fail(tr("%1: %2").arg(path, ioError));
-        case model::ReadStatus::TooLarge:
-            return fail(tr("%1 is larger than 64 MB").arg(path));
-        case model::ReadStatus::Ok:
-            break;
-        }
+        if (const model::ReadStatus status =
+                model::readAtMost(path, kMaxTextFileBytes, &bytes, &ioError);
+            status != model::ReadStatus::Ok)
+            return fail(model::readFailure(status, path, kMaxTextFileBytes, ioError));
         const QString text = QString::fromUtf8(bytes);
-        const QString id =
-            targetId.isEmpty() ? model::listingTarget(text, m_document->target().id) : targetId;
+        const bool drawn = suffix == QLatin1String("ladder"); // a ladder text, not a listing
+        QString id = targetId;
+        if (id.isEmpty())
+            id = drawn ? model::ladderTextTarget(text)
+                       : model::listingTarget(text, m_document->target().id);
+        if (id.isEmpty())
+            id = m_document->target().id;
         const model::Target *target = model::Target::byId(id.toLower());
         if (!target)
             return fail(tr("Unknown target %1").arg(id));
+        if (drawn) {
+            // The drawing has no text of its own in the window: one that does not read opens
+            // nothing, and says where it stops.
+            const model::LadderTextResult ladder = model::parseLadderText(*target, text);
+            if (!ladder.ok()) {
+                const model::ParseError &e = ladder.errors.front();
+                return fail(tr("%1, line %2, column %3: %4")
+                                .arg(QDir::toNativeSeparators(path))
+                                .arg(e.line)
+                                .arg(e.column)
+                                .arg(e.message));
+            }
+            project.target = target;
+            project.model = target->defaultModel().name;
+            project.program = ladder.ladder;
+            showProject(project, QString());
+            return true;
+        }
         const model::ParseResult parsed = model::parseInstructionList(*target, text);
         const model::ToLadderResult ladder =
             parsed.ok() ? model::listToLadder(parsed.list) : model::ToLadderResult{};
@@ -165,6 +196,7 @@ bool MainWindow::saveTo(const QString &path) {
         return false;
     }
     m_savedPending = project.pendingListing;
+    m_savedPendingSymbols = project.pendingSymbols;
     m_document->setPath(path);
     m_document->markSaved();
     m_recovery->remove();
@@ -238,7 +270,8 @@ void MainWindow::fileOpen() {
         return;
     const QString path = QFileDialog::getOpenFileName(
         this, tr("Open"), QString(),
-        tr("Rung Studio projects (*.rung);;Instruction lists (*.il *.txt)"));
+        tr("Rung Studio projects (*.rung);;Instruction lists (*.il *.txt);;Ladder texts "
+           "(*.ladder)"));
     if (!path.isEmpty())
         openFile(path);
 }

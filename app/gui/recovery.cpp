@@ -1,5 +1,7 @@
 #include "recovery.h"
 
+#include "model/project/file_read.h"
+
 #include <QCoreApplication>
 #include <QDir>
 #include <QFile>
@@ -11,6 +13,9 @@
 namespace rung::app {
 
 namespace {
+
+// The companion holds one path: a few hundred bytes; no file system has paths this long.
+constexpr qint64 kMaxOriginBytes = 64 * 1024;
 
 QString &directoryOverride() {
     static QString directory;
@@ -68,18 +73,27 @@ void RecoveryFile::remove() {
     QFile::remove(originPath(m_base));
 }
 
-void RecoveryFile::write(const model::Project &project, const QString &origin) {
-    model::ProjectError error;
-    model::saveProject(project, path(), &error);
-    QSaveFile file(originPath(m_base));
-    if (file.open(QIODevice::WriteOnly)) {
-        file.write(origin.toUtf8());
-        file.commit();
+bool RecoveryFile::write(const model::Project &project, const QString &origin, QString *error) {
+    model::ProjectError projectError;
+    if (!model::saveProject(project, path(), &projectError)) {
+        if (error)
+            *error = tr("The recovery file could not be written: %1").arg(projectError.message);
+        return false;
     }
+    QSaveFile file(originPath(m_base));
+    const QByteArray bytes = origin.toUtf8();
+    if (!file.open(QIODevice::WriteOnly) || file.write(bytes) != bytes.size() || !file.commit()) {
+        if (error)
+            *error = tr("The recovery file could not be written: %1: %2")
+                         .arg(QDir::toNativeSeparators(originPath(m_base)), file.errorString());
+        return false;
+    }
+    return true;
 }
 
 std::optional<RecoveryFile::Recovered>
-RecoveryFile::takeOrphan(const std::function<bool(const QString &origin)> &accept) {
+RecoveryFile::takeOrphan(const std::function<bool(const QString &origin)> &accept,
+                         QStringList *unreadable) {
     const QFileInfoList files =
         QDir(recoveryDirectory())
             .entryInfoList({QStringLiteral("recovery*.rung")}, QDir::Files, QDir::Time);
@@ -92,18 +106,27 @@ RecoveryFile::takeOrphan(const std::function<bool(const QString &origin)> &accep
         owner.setStaleLockTime(0);
         if (!owner.tryLock(0))
             continue;
-        QString origin;
-        QFile originFile(originPath(base));
-        if (originFile.open(QIODevice::ReadOnly))
-            origin = QString::fromUtf8(originFile.readAll()).trimmed();
-        originFile.close();
-        const bool wanted = accept(origin);
+        // Work that cannot be read now may be read by a later version, or by hand: it stays.
         model::ProjectError error;
-        auto project = wanted ? model::loadProject(file.absoluteFilePath(), &error)
-                              : std::optional<model::Project>();
+        auto project = model::loadProject(file.absoluteFilePath(), &error);
+        if (!project) {
+            if (unreadable)
+                *unreadable << tr("%1 could not be read and is kept: %2")
+                                   .arg(QDir::toNativeSeparators(file.absoluteFilePath()),
+                                        error.message);
+            continue;
+        }
+        // The path of a file: a companion larger than any path is no path, and the program comes
+        // back untitled (Save asks where).
+        QString origin;
+        QByteArray bytes;
+        if (model::readAtMost(originPath(base), kMaxOriginBytes, &bytes, nullptr) ==
+            model::ReadStatus::Ok)
+            origin = QString::fromUtf8(bytes).trimmed();
+        const bool wanted = accept(origin);
         QFile::remove(file.absoluteFilePath());
         QFile::remove(originPath(base));
-        if (project)
+        if (wanted)
             return Recovered{std::move(*project), origin};
     }
     return std::nullopt;

@@ -7,7 +7,9 @@
 
 #include "model/project/project.h"
 
+#include <QCoreApplication>
 #include <QString>
+#include <QStringList>
 
 #include <functional>
 #include <memory>
@@ -18,6 +20,8 @@ class QLockFile;
 namespace rung::app {
 
 class RecoveryFile {
+    Q_DECLARE_TR_FUNCTIONS(rung::app::RecoveryFile)
+
 public:
     RecoveryFile(); // claims a name no other instance or window holds
     ~RecoveryFile();
@@ -26,17 +30,20 @@ public:
 
     QString path() const;
     // The program and the file it came from (empty: never saved), for Save to go back there.
-    void write(const model::Project &project, const QString &origin);
+    // False with the reason (translated) when either file cannot be written.
+    bool write(const model::Project &project, const QString &origin, QString *error);
     void remove();
 
     struct Recovered {
         model::Project project;
         QString origin;
     };
-    // Walks the orphaned recovery files, newest first: `accept` is asked for each (with the file
-    // its program came from); a file offered goes, whatever the answer. The first one accepted
-    // that loads is returned.
-    std::optional<Recovered> takeOrphan(const std::function<bool(const QString &origin)> &accept);
+    // Walks the orphaned recovery files, newest first: `accept` is asked for each that loads
+    // (with the file its program came from); a file offered goes, whatever the answer, and the
+    // first one accepted is returned. A file that does not load is never offered nor deleted:
+    // it stays where it is, and *unreadable gets why, with its path.
+    std::optional<Recovered> takeOrphan(const std::function<bool(const QString &origin)> &accept,
+                                        QStringList *unreadable = nullptr);
 
     static void setDirectory(const QString &directory); // tests: a folder of their own
 

@@ -43,18 +43,19 @@ void SymbolTable::changeEvent(QEvent *event) {
     QTableWidget::changeEvent(event);
 }
 
-void SymbolTable::dropPending() {
-    m_pending.clear();
+void SymbolTable::setPending(const std::vector<model::PendingSymbol> &rows) {
+    m_pending = rows;
 }
 
 void SymbolTable::edited(int row) {
     // Edited in place: the complete rows make the new symbol list (one undo step when it
     // changed), the others wait in the table; a row cleared of everything goes.
     std::vector<model::Symbol> symbols;
+    const std::vector<model::PendingSymbol> before = std::move(m_pending);
     m_pending.clear();
     auto text = [this](int r, int c) { return item(r, c) ? item(r, c)->text() : QString(); };
     for (int r = 0; r < rowCount(); ++r) {
-        const PendingSymbol typed{text(r, 0).trimmed(), text(r, 1), text(r, 2)};
+        const model::PendingSymbol typed{text(r, 0).trimmed(), text(r, 1), text(r, 2)};
         if (typed.device.isEmpty() && typed.name.isEmpty() && typed.comment.isEmpty())
             continue;
         const auto parsed =
@@ -72,6 +73,8 @@ void SymbolTable::edited(int row) {
     }
     m_document->setSymbols(symbols); // refreshes the table when it changed anything
     refresh();
+    if (m_pending != before)
+        emit pendingChanged();
 }
 
 void SymbolTable::refresh() {
@@ -87,7 +90,7 @@ void SymbolTable::refresh() {
         setItem(r, 2, new QTableWidgetItem(s.comment));
     }
     for (int i = 0; i < pending; ++i) {
-        const PendingSymbol &p = m_pending[static_cast<std::size_t>(i)];
+        const model::PendingSymbol &p = m_pending[static_cast<std::size_t>(i)];
         auto *device = new QTableWidgetItem(p.device);
         if (!p.device.isEmpty()) {
             const auto parsed =
@@ -122,15 +125,10 @@ bool SymbolTable::exportCsv(const QString &path, QString *error) const {
 bool SymbolTable::importCsv(const QString &path, QString *error) {
     QByteArray bytes;
     QString ioError;
-    switch (model::readAtMost(path, kMaxCsvBytes, &bytes, &ioError)) {
-    case model::ReadStatus::CannotOpen:
-        *error = tr("%1: %2").arg(path, ioError);
+    if (const model::ReadStatus status = model::readAtMost(path, kMaxCsvBytes, &bytes, &ioError);
+        status != model::ReadStatus::Ok) {
+        *error = model::readFailure(status, path, kMaxCsvBytes, ioError);
         return false;
-    case model::ReadStatus::TooLarge:
-        *error = tr("%1 is larger than 64 MB").arg(path);
-        return false;
-    case model::ReadStatus::Ok:
-        break;
     }
     const editor::SymbolsCsv csv = editor::symbolsFromCsv(
         m_document->target(), m_document->modelVariant(), QString::fromUtf8(bytes));

@@ -4,6 +4,8 @@
 // typed that are no symbol yet (no device, or one the target does not have) stay in the table,
 // after the symbols, marked, until complete or cleared. CSV import and export.
 
+#include "model/project/project.h"
+
 #include <QTableWidget>
 
 #include <vector>
@@ -20,13 +22,16 @@ class SymbolTable : public QTableWidget {
 public:
     explicit SymbolTable(editor::Document *document, QWidget *parent = nullptr);
 
-    void refresh();     // from the document's symbols and the rows being typed
-    void dropPending(); // the half-typed rows belong to a program that goes
+    void refresh(); // from the document's symbols and the rows being typed
+    // The rows typed that are no symbol yet (marked in the table): a project keeps them.
+    const std::vector<model::PendingSymbol> &pending() const { return m_pending; }
+    void setPending(const std::vector<model::PendingSymbol> &rows); // those of another project
     bool importCsv(const QString &path, QString *error);
     bool exportCsv(const QString &path, QString *error) const;
 
 signals:
     void message(const QString &text); // why a typed device is no device
+    void pendingChanged();             // the rows that are no symbol yet, unsaved work
 
 protected:
     void changeEvent(QEvent *event) override;
@@ -37,10 +42,7 @@ private:
 
     editor::Document *m_document;
     bool m_updating = false;
-    struct PendingSymbol {
-        QString device, name, comment;
-    };
-    std::vector<PendingSymbol> m_pending;
+    std::vector<model::PendingSymbol> m_pending;
 };
 
 } // namespace rung::app

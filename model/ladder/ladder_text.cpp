@@ -1,6 +1,7 @@
 #include "model/ladder/ladder_text.h"
 
 #include <QCoreApplication>
+#include <QRegularExpression>
 #include <QStringList>
 
 // The plain-text ladder (docs/ladder-text.md):
@@ -452,6 +453,12 @@ std::optional<Contact> contactFromText(const Target &target, const QString &text
         return std::nullopt;
     }
     return r.ladder.rungs[0].cell(0, 0).contact;
+}
+
+QString ladderTextTarget(const QString &text) {
+    static const QRegularExpression re(QStringLiteral("^\\s*LADDER\\s+(\\w+)"));
+    const QRegularExpressionMatch m = re.match(text);
+    return m.hasMatch() ? m.captured(1) : QString();
 }
 
 LadderTextResult parseLadderText(const Target &target, const QString &text,

@@ -31,6 +31,8 @@ struct LadderTextResult {
     std::vector<ParseError> errors;
     bool ok() const { return errors.empty(); }
 };
+// The target id the "LADDER <target> WIDTH <n>" header names; empty when the text has none.
+QString ladderTextTarget(const QString &text);
 LadderTextResult parseLadderText(const Target &target, const QString &text,
                                  const ModelVariant *model = nullptr);
 

@@ -136,7 +136,8 @@ public:
             !expect(root, "symbols", QJsonValue::Array, QString()) ||
             !expect(root, "setValues", QJsonValue::Object, QString()) ||
             !expect(root, "watchLists", QJsonValue::Array, QString()) ||
-            !expect(root, "pendingListing", QJsonValue::String, QString()))
+            !expect(root, "pendingListing", QJsonValue::String, QString()) ||
+            !expect(root, "pendingSymbols", QJsonValue::Array, QString()))
             return std::nullopt;
         Project p;
         const QString targetId = root.value(QStringLiteral("target")).toString();
@@ -212,6 +213,22 @@ public:
             p.watchLists.push_back(list);
         }
         p.pendingListing = root.value(QStringLiteral("pendingListing")).toString();
+        const QJsonArray pending = root.value(QStringLiteral("pendingSymbols")).toArray();
+        for (qsizetype i = 0; i < pending.size(); ++i) {
+            const QString where = QStringLiteral("pendingSymbols[%1]").arg(i);
+            if (!pending[i].isObject())
+                return fail(
+                    Tr::tr("%1: an object with \"device\" and \"name\" is expected").arg(where));
+            const QJsonObject s = pending[i].toObject();
+            if (!expect(s, "device", QJsonValue::String, where) ||
+                !expect(s, "name", QJsonValue::String, where) ||
+                !expect(s, "comment", QJsonValue::String, where))
+                return std::nullopt;
+            // As typed: the device is whatever the user wrote, checked again when shown.
+            p.pendingSymbols.push_back({s.value(QStringLiteral("device")).toString(),
+                                        s.value(QStringLiteral("name")).toString(),
+                                        s.value(QStringLiteral("comment")).toString()});
+        }
         return p;
     }
 
@@ -442,6 +459,18 @@ QByteArray projectToJson(const Project &project) {
     root.insert(QStringLiteral("watchLists"), watch);
     if (!project.pendingListing.isEmpty())
         root.insert(QStringLiteral("pendingListing"), project.pendingListing);
+    if (!project.pendingSymbols.empty()) {
+        QJsonArray pending;
+        for (const PendingSymbol &s : project.pendingSymbols) {
+            QJsonObject o;
+            o.insert(QStringLiteral("device"), s.device);
+            o.insert(QStringLiteral("name"), s.name);
+            if (!s.comment.isEmpty())
+                o.insert(QStringLiteral("comment"), s.comment);
+            pending.append(o);
+        }
+        root.insert(QStringLiteral("pendingSymbols"), pending);
+    }
     // Indented output: one rung's change stays within its own lines in a diff.
     return QJsonDocument(root).toJson(QJsonDocument::Indented);
 }
@@ -453,25 +482,11 @@ std::optional<Project> projectFromJson(const QByteArray &json, ProjectError *err
 std::optional<Project> loadProject(const QString &path, ProjectError *error) {
     QByteArray data;
     QString ioError;
-    switch (readAtMost(path, kMaxProjectBytes, &data, &ioError)) {
-    case ReadStatus::CannotOpen:
+    if (const ReadStatus status = readAtMost(path, kMaxProjectBytes, &data, &ioError);
+        status != ReadStatus::Ok) {
         if (error)
-            error->message = Tr::tr("%1: cannot open the file (%2)").arg(path, ioError);
+            error->message = readFailure(status, path, kMaxProjectBytes, ioError);
         return std::nullopt;
-    case ReadStatus::TooLarge:
-        // A regular file says how large it is; a device or a pipe only that it goes on.
-        if (const qint64 size = QFileInfo(path).size(); error && size > kMaxProjectBytes)
-            error->message = Tr::tr("%1: the file is %2 MB; a project is at most %3 MB")
-                                 .arg(path)
-                                 .arg(size / (1024 * 1024))
-                                 .arg(kMaxProjectBytes / (1024 * 1024));
-        else if (error)
-            error->message = Tr::tr("%1: the file is larger than %2 MB, the most a project can be")
-                                 .arg(path)
-                                 .arg(kMaxProjectBytes / (1024 * 1024));
-        return std::nullopt;
-    case ReadStatus::Ok:
-        break;
     }
     ProjectError inner;
     auto project = projectFromJson(data, &inner);

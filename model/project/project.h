@@ -20,6 +20,13 @@ struct Symbol {
     friend bool operator==(const Symbol &, const Symbol &) = default;
 };
 
+// A row of the symbol table that is no symbol yet, as typed: no device, or one the target does
+// not have (X9 on a Vigor). Kept in the project so that Save never drops what was typed.
+struct PendingSymbol {
+    QString device, name, comment;
+    friend bool operator==(const PendingSymbol &, const PendingSymbol &) = default;
+};
+
 struct WatchList {
     QString name;
     QStringList devices; // as the target writes them
@@ -36,6 +43,7 @@ struct Project {
     // (the program above is then the last valid one): saved so that reopening shows what was
     // typed, errors and all. Empty when the list and the program agree.
     QString pendingListing;
+    std::vector<PendingSymbol> pendingSymbols; // after the symbols in the table, marked
 
     const Symbol *symbol(const Address &address) const;
 };

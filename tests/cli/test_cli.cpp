@@ -11,6 +11,7 @@
 #include <QTemporaryDir>
 #include <QTranslator>
 
+#include "tests/cli/cli_run.h"
 #include "tests/test_files.h"
 
 #include <gtest/gtest.h>
@@ -19,22 +20,8 @@
 
 namespace {
 
-struct CliRun {
-    int code = 0;
-    QString out;
-    QString err;
-};
-
-CliRun cli(QStringList args) {
-    CliRun r;
-    QTextStream out(&r.out);
-    QTextStream err(&r.err);
-    args.prepend(QStringLiteral("rungstudio-cli"));
-    r.code = rung::app::runCli(args, out, err);
-    out.flush();
-    err.flush();
-    return r;
-}
+using rung::test::cli;
+using rung::test::CliRun;
 
 QString write(const QTemporaryDir &dir, const QString &name, const QByteArray &content) {
     return rung::test::writeFile(dir, name, content);
@@ -274,7 +261,7 @@ TEST(CliBinary, LangPicksTheLanguageOverTheLocale) {
         runBinary(QStringList{QStringLiteral("--lang"), QStringLiteral("de")} + args,
                   QStringLiteral("C"), &code);
     EXPECT_EQ(code, 2);
-    EXPECT_TRUE(wrong.contains(QStringLiteral("--lang must be en, hu or it")))
+    EXPECT_TRUE(wrong.contains(QStringLiteral("--lang must be one of en, hu, it")))
         << wrong.toStdString();
 }
 
@@ -564,7 +551,7 @@ TEST(CliLanguage, TheOptionIsTakenOutOfTheArgumentsWhereverItIs) {
                                    QStringList{QStringLiteral("x"), QStringLiteral("--lang=fr")}}) {
         args = bad;
         EXPECT_FALSE(rung::app::takeLanguageOption(&args, &language, &error));
-        EXPECT_EQ(error, QStringLiteral("--lang must be en, hu or it"));
+        EXPECT_EQ(error, QStringLiteral("--lang must be one of en, hu, it"));
     }
 }
 

@@ -4,16 +4,23 @@
 #include "app/gui/example_titles.h"
 #include "app/gui/language.h"
 #include "app/gui/main_window.h"
+#include "editor/il_editor.h"
+
+#include "model/ladder/ladder_text.h"
 #include "model/project/project.h"
 
+#include <QApplication>
 #include <QDirIterator>
+#include <QFile>
+#include <QFileDialog>
 #include <QFileInfo>
-#include <QRegularExpression>
-
 #include <QMenu>
 #include <QMenuBar>
+#include <QRegularExpression>
 #include <QSettings>
+#include <QStatusBar>
 #include <QTemporaryDir>
+#include <QTimer>
 
 #include "tests/editor/window_fixture.h"
 
@@ -157,4 +164,58 @@ TEST(FilesMenu, RecentFilesAreRememberedNewestFirst) {
     recent->actions().at(1)->trigger();
     EXPECT_EQ(next.document()->path(), b);
     QSettings().remove(QStringLiteral("files/recent"));
+}
+
+// A ladder text (docs/ladder-text.md, what `rungstudio-cli convert --to ladder` writes) opens
+// as its drawing, for the PLC its header names, not as an instruction list full of errors.
+TEST(FilesMenu, ALadderTextOpensAsItsDrawing) {
+    app::MainWindow window;
+    window.newProject(model::Target::get(model::Family::Cpm1), QString());
+    for (const char *name : {"bridge_corrected.ladder", "bridge.ladder"}) {
+        const QString path = QStringLiteral(RUNG_TEST_DATA_DIR "/ladder/") + QLatin1String(name);
+        QFile file(path);
+        ASSERT_TRUE(file.open(QIODevice::ReadOnly)) << name;
+        const model::LadderTextResult drawn = model::parseLadderText(
+            model::Target::get(model::Family::Vigor), QString::fromUtf8(file.readAll()));
+        ASSERT_TRUE(drawn.ok()) << name;
+        ASSERT_TRUE(window.openFile(path, QString(), true)) << name;
+        EXPECT_EQ(window.document()->target().id, QStringLiteral("vigor")) << name;
+        EXPECT_EQ(window.document()->ladder().rungs, drawn.ladder.rungs) << name;
+        // The list shows the program's own listing: no text as typed with syntax errors.
+        EXPECT_EQ(window.ilEditor()->text(), window.document()->listingText()) << name;
+        EXPECT_FALSE(window.ilEditor()->text().contains(QStringLiteral("LADDER"))) << name;
+        EXPECT_TRUE(window.document()->path().isEmpty()) << name; // Save asks where
+    }
+}
+
+TEST(FilesMenu, ALadderTextThatDoesNotReadSaysWhere) {
+    QTemporaryDir dir;
+    const QString path = dir.filePath(QStringLiteral("bad.ladder"));
+    {
+        QFile out(path);
+        ASSERT_TRUE(out.open(QIODevice::WriteOnly));
+        out.write("LADDER vigor WIDTH 8\nRUNG 1 ROWS 1 COLUMNS 1\n|-[ X9 ]--(OUT Y0)\n");
+    }
+    app::MainWindow window;
+    const auto before = window.document()->ladder().rungs;
+    EXPECT_FALSE(window.openFile(path, QString(), true));
+    EXPECT_EQ(window.document()->ladder().rungs, before);
+    const QString message = window.statusBar()->currentMessage();
+    EXPECT_TRUE(message.contains(QStringLiteral("line 3"))) << message.toStdString();
+}
+
+TEST(FilesMenu, OpenOffersLadderTexts) {
+    app::MainWindow window;
+    QStringList filters;
+    QTimer::singleShot(0, &window, [&filters] {
+        if (auto *dialog = qobject_cast<QFileDialog *>(QApplication::activeModalWidget())) {
+            filters = dialog->nameFilters();
+            dialog->reject();
+        }
+    });
+    QAction *open = test::menuAction(window, QStringLiteral("Open..."));
+    ASSERT_NE(open, nullptr);
+    open->trigger();
+    EXPECT_TRUE(filters.join(u';').contains(QStringLiteral("*.ladder")))
+        << filters.join(u';').toStdString();
 }

@@ -14,6 +14,7 @@
 #include <QFileInfo>
 #include <QMessageBox>
 #include <QPushButton>
+#include <QSignalSpy>
 #include <QTemporaryDir>
 #include <QTimer>
 
@@ -166,4 +167,91 @@ TEST_F(NoSilentLoss, ExportOfAValidProgramIsTheWholeListing) {
         << error.toStdString();
     EXPECT_EQ(QString::fromUtf8(read(path)), window.document()->listingText());
     EXPECT_TRUE(read(path).contains("LD X0\nOUT Y0\n"));
+}
+
+// A rung of contacts with no output lists nothing: the list pane shows a placeholder line for
+// it, and neither that line nor a listing without the rung may reach the file.
+TEST_F(NoSilentLoss, ExportRefusesARungOfContactsWithoutAnOutput) {
+    model::Rung contacts(1, 2);
+    for (int c = 0; c < 2; ++c) {
+        QString why;
+        const auto contact =
+            model::contactFromText(window.document()->target(),
+                                   c == 0 ? QStringLiteral("X1") : QStringLiteral("X2"), &why);
+        ASSERT_TRUE(contact) << why.toStdString();
+        contacts.cell(0, c).kind = model::CellKind::Contact;
+        contacts.cell(0, c).contact = *contact;
+    }
+    window.document()->replaceRungs(1, 0, {contacts}, QStringLiteral("contacts"));
+    ASSERT_EQ(window.document()->unlistedRungs().size(), 1u);
+    ASSERT_FALSE(window.document()->listingText().contains(QStringLiteral("LD X1")));
+    const QString path = dir.filePath(QStringLiteral("out.il"));
+    QString error;
+    const app::ProgramExport exporter(*window.document(), false);
+    EXPECT_FALSE(exporter.listingBlockers().isEmpty());
+    EXPECT_FALSE(exporter.listing(path, &error));
+    EXPECT_FALSE(QFileInfo::exists(path));
+    EXPECT_TRUE(error.contains(QStringLiteral("Rung 2"))) << error.toStdString();
+    EXPECT_TRUE(error.contains(QStringLiteral("X1"))) << error.toStdString();
+}
+
+// A contact beside the path to the output is left out of the list (LD002): the rung is
+// listed, but not whole.
+TEST_F(NoSilentLoss, ExportRefusesARungListedOnlyInPart) {
+    model::Rung rung = window.document()->ladder().rungs.front();
+    ASSERT_GE(rung.columns, 1);
+    QString why;
+    const auto stray =
+        model::contactFromText(window.document()->target(), QStringLiteral("X5"), &why);
+    ASSERT_TRUE(stray) << why.toStdString();
+    rung.resize(2, rung.columns);
+    rung.cell(1, 0).kind = model::CellKind::Contact;
+    rung.cell(1, 0).contact = *stray;
+    window.document()->setRung(0, rung, QStringLiteral("stray"));
+    ASSERT_TRUE(window.document()->unlistedRungs().empty()); // the rung itself is listed
+    const QString path = dir.filePath(QStringLiteral("out.il"));
+    QString error;
+    EXPECT_FALSE(app::ProgramExport(*window.document(), false).listing(path, &error));
+    EXPECT_FALSE(QFileInfo::exists(path));
+    EXPECT_TRUE(error.contains(QStringLiteral("Rung 1"))) << error.toStdString();
+    EXPECT_TRUE(error.contains(QStringLiteral("X5"))) << error.toStdString();
+}
+
+// A symbol or a watch list edited while the list as typed has errors: the list stays as typed
+// (the rungs did not change), and Save keeps it.
+TEST_F(NoSilentLoss, EditingSymbolsOrWatchListsKeepsTheListAsTyped) {
+    type(kTyped);
+    ASSERT_EQ(window.ilEditor()->text(), kTyped);
+    const auto x0 = model::parseAddress(window.document()->target(), QStringLiteral("X0"));
+    ASSERT_TRUE(std::holds_alternative<model::Address>(x0));
+    window.document()->setSymbols({{std::get<model::Address>(x0), QStringLiteral("Start"), {}}});
+    EXPECT_EQ(window.ilEditor()->text(), kTyped);
+    EXPECT_GT(window.problemsView()->count(model::Severity::Error), 0);
+    window.document()->setWatchLists({{QStringLiteral("Main"), {QStringLiteral("X0")}}},
+                                     QStringLiteral("watch"));
+    EXPECT_EQ(window.ilEditor()->text(), kTyped);
+    window.document()->undoStack()->undo(); // the watch list
+    window.document()->undoStack()->undo(); // the symbol
+    EXPECT_EQ(window.ilEditor()->text(), kTyped);
+    const QString path = dir.filePath(QStringLiteral("typed.rung"));
+    ASSERT_TRUE(window.saveTo(path));
+    const auto saved = model::loadProject(path, nullptr);
+    ASSERT_TRUE(saved);
+    EXPECT_EQ(saved->pendingListing, kTyped);
+    // An edit of the rungs still brings the ladder's listing into the list, as before.
+    window.document()->insertRung(0, window.document()->ladder().rungs.front());
+    EXPECT_EQ(window.ilEditor()->text(), window.document()->listingText());
+}
+
+// recheck() converts and checks again without a change of the rungs: no undo step, the same
+// revision, programChanged once.
+TEST_F(NoSilentLoss, RecheckChangesNothing) {
+    const quint64 revision = window.document()->rungsRevision();
+    const int steps = window.document()->undoStack()->count();
+    QSignalSpy changed(window.document(), &editor::Document::programChanged);
+    window.document()->recheck();
+    EXPECT_EQ(changed.count(), 1);
+    EXPECT_EQ(window.document()->rungsRevision(), revision);
+    EXPECT_EQ(window.document()->undoStack()->count(), steps);
+    EXPECT_FALSE(window.document()->isModified());
 }

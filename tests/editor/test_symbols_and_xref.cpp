@@ -214,3 +214,53 @@ TEST(SymbolsTable, EditedInPlaceKeepsIncompleteRowsAndMarksInvalidDevices) {
     EXPECT_EQ(table->rowCount(), 3);
     EXPECT_EQ(undo->count(), before + 2);
 }
+
+// A row that is no symbol yet (X9 on a Vigor) is the user's work too: Save keeps it, reopening
+// shows it marked as before, and it counts as unsaved until saved.
+TEST(SymbolsTable, AnInvalidRowIsSavedAndReopensMarked) {
+    QTemporaryDir dir;
+    const QString path = dir.filePath(QStringLiteral("symbols.rung"));
+    app::MainWindow window;
+    const model::Target &vigor = model::Target::get(model::Family::Vigor);
+    window.newProject(vigor, QStringLiteral("VB"));
+    ASSERT_TRUE(window.saveTo(path));
+    auto *table = window.findChild<QTableWidget *>(QStringLiteral("symbolsTable"));
+    ASSERT_NE(table, nullptr);
+    table->item(0, 0)->setText(QStringLiteral("X9"));
+    table->item(0, 1)->setText(QStringLiteral("Spare"));
+    table->item(0, 2)->setText(QStringLiteral("wired later"));
+    EXPECT_TRUE(window.isModified());
+    EXPECT_TRUE(window.isWindowModified());
+    ASSERT_TRUE(window.saveTo(path));
+    EXPECT_FALSE(window.isModified());
+    const auto saved = model::loadProject(path, nullptr);
+    ASSERT_TRUE(saved);
+    EXPECT_TRUE(saved->symbols.empty());
+    ASSERT_EQ(saved->pendingSymbols.size(), 1u);
+    EXPECT_EQ(saved->pendingSymbols.front(),
+              (model::PendingSymbol{QStringLiteral("X9"), QStringLiteral("Spare"),
+                                    QStringLiteral("wired later")}));
+
+    app::MainWindow reopened;
+    ASSERT_TRUE(reopened.openFile(path, QString(), true));
+    auto *back = reopened.findChild<QTableWidget *>(QStringLiteral("symbolsTable"));
+    ASSERT_NE(back, nullptr);
+    ASSERT_EQ(back->rowCount(), 2); // the row and the free row
+    EXPECT_EQ(back->item(0, 0)->text(), QStringLiteral("X9"));
+    EXPECT_EQ(back->item(0, 1)->text(), QStringLiteral("Spare"));
+    EXPECT_EQ(back->item(0, 2)->text(), QStringLiteral("wired later"));
+    const auto parsed =
+        model::parseAddress(vigor, QStringLiteral("X9"), vigor.model(QStringLiteral("VB")));
+    ASSERT_TRUE(std::holds_alternative<model::AddressError>(parsed));
+    EXPECT_EQ(back->item(0, 0)->toolTip(), std::get<model::AddressError>(parsed).message);
+    EXPECT_NE(back->item(0, 0)->background(), back->item(1, 0)->background());
+    EXPECT_FALSE(reopened.isModified());
+    // Corrected, it is a symbol, and the next save leaves the key out.
+    back->item(0, 0)->setText(QStringLiteral("X7"));
+    ASSERT_EQ(reopened.document()->project().symbols.size(), 1u);
+    ASSERT_TRUE(reopened.saveTo(path));
+    const auto fixed = model::loadProject(path, nullptr);
+    ASSERT_TRUE(fixed);
+    EXPECT_TRUE(fixed->pendingSymbols.empty());
+    EXPECT_EQ(fixed->symbols.front().name, QStringLiteral("Spare"));
+}

@@ -13,42 +13,14 @@
 #include <QTest>
 #include <QToolBar>
 
+#include "tests/editor/window_fixture.h"
+
 #include <gtest/gtest.h>
 
 #include <functional>
 #include <map>
 
 using namespace rung;
-
-namespace {
-
-QAction *toolbarAction(app::MainWindow &window, const QString &text) {
-    for (QToolBar *bar : window.findChildren<QToolBar *>())
-        for (QAction *a : bar->actions())
-            if (a->text().remove(QLatin1Char('&')) == text)
-                return a;
-    return nullptr;
-}
-
-// An entry of the Edit menu or of its submenus, by its text without the access key.
-QAction *editMenuEntry(QMainWindow &window, const QString &text) {
-    std::function<QAction *(QMenu *)> find = [&](QMenu *menu) -> QAction * {
-        for (QAction *e : menu->actions()) {
-            if (QString(e->text()).remove(QLatin1Char('&')) == text)
-                return e;
-            if (e->menu())
-                if (QAction *inner = find(e->menu()))
-                    return inner;
-        }
-        return nullptr;
-    };
-    for (QAction *m : window.menuBar()->actions())
-        if (m->menu() && m->text() == QStringLiteral("&Edit"))
-            return find(m->menu());
-    return nullptr;
-}
-
-} // namespace
 
 TEST(Toolbar, EveryButtonHasADrawnIconAndItsKeyInTheTooltip) {
     app::MainWindow window;
@@ -66,7 +38,7 @@ TEST(Toolbar, EveryButtonHasADrawnIconAndItsKeyInTheTooltip) {
                                                            {"Open...", "Ctrl+O"},
                                                            {"Save", "Ctrl+S"}};
     for (const auto &[text, key] : tools) {
-        QAction *a = toolbarAction(window, QString::fromLatin1(text));
+        QAction *a = test::toolbarAction(window, QString::fromLatin1(text));
         ASSERT_NE(a, nullptr) << text;
         EXPECT_FALSE(a->icon().isNull()) << text;
         EXPECT_FALSE(a->icon().pixmap(24, 24).isNull()) << text;
@@ -80,12 +52,12 @@ TEST(Toolbar, APickedToolPlacesItsElementInEveryCellClickedUntilEsc) {
     window.show();
     ASSERT_TRUE(QTest::qWaitForWindowExposed(&window));
     editor::LadderView *view = window.ladderView();
-    QAction *select = toolbarAction(window, QStringLiteral("Select"));
+    QAction *select = test::toolbarAction(window, QStringLiteral("Select"));
     ASSERT_NE(select, nullptr);
     EXPECT_TRUE(select->isChecked());
     // Pick a tool, click a cell, type the operand: the element is there.
     auto pick = [&](const char *button) {
-        QAction *a = toolbarAction(window, QString::fromLatin1(button));
+        QAction *a = test::toolbarAction(window, QString::fromLatin1(button));
         ASSERT_NE(a, nullptr) << button;
         a->trigger();
         EXPECT_TRUE(a->isChecked()) << button;
@@ -136,7 +108,7 @@ TEST(Toolbar, TheEditMenuActsAtTheCursorAsTheKeysDo) {
     ASSERT_TRUE(QTest::qWaitForWindowExposed(&window));
     // The menu's entries post their function key to the ladder, as if the user pressed it.
     auto place = [&](const char *entry, const char *operand) {
-        QAction *a = editMenuEntry(window, QString::fromLatin1(entry));
+        QAction *a = test::editMenuEntry(window, QString::fromLatin1(entry));
         ASSERT_NE(a, nullptr) << entry;
         a->trigger();
         QCoreApplication::sendPostedEvents();
@@ -171,7 +143,7 @@ TEST(Toolbar, TheEditMenuShowsTheKeysAndNoKeyIsAmbiguous) {
         {"Delete Row", QKeySequence(Qt::CTRL | Qt::Key_Delete)},
         {"Replace Device...", QKeySequence(Qt::CTRL | Qt::Key_H)}};
     for (const auto &[text, key] : entries) {
-        QAction *a = editMenuEntry(window, QString::fromLatin1(text));
+        QAction *a = test::editMenuEntry(window, QString::fromLatin1(text));
         ASSERT_NE(a, nullptr) << text;
         EXPECT_EQ(a->shortcut(), key) << text;
         // The ladder's own keys: shown in the menu, handled by the ladder only, so F5 or
@@ -182,7 +154,7 @@ TEST(Toolbar, TheEditMenuShowsTheKeysAndNoKeyIsAmbiguous) {
         EXPECT_TRUE(a->text().contains(QLatin1Char('&'))) << text << ": no access key";
     }
     for (const char *text : {"Import Symbols (CSV)...", "Export Symbols (CSV)..."}) {
-        QAction *a = editMenuEntry(window, QString::fromLatin1(text));
+        QAction *a = test::editMenuEntry(window, QString::fromLatin1(text));
         ASSERT_NE(a, nullptr) << text;
         EXPECT_TRUE(a->text().contains(QLatin1Char('&'))) << text << ": no access key";
     }

@@ -3,10 +3,12 @@
 
 #include "fake_monitor_source.h"
 
+#include "app/gui/language.h"
 #include "editor/document.h"
 #include "editor/watch_list_view.h"
 #include "model/target/address.h"
 
+#include <QCoreApplication>
 #include <QSignalSpy>
 
 #include <gtest/gtest.h>
@@ -102,4 +104,38 @@ TEST(WatchValues, CommandsCarryAnIdAndTheirAnswerArrivesLater) {
     ASSERT_EQ(source.commands.size(), 2u);
     EXPECT_EQ(source.commands[0].kind, model::DeviceCommand::Kind::WriteWord);
     EXPECT_EQ(source.commands[0].value, 7);
+}
+
+// A language switched while the program runs reaches the watch list at once: its headers and
+// the values' words ("ON", "forced").
+TEST(WatchValues, HeadersAndValuesFollowALanguageSwitch) {
+    const model::Target &target = model::Target::get(model::Family::Vigor);
+    editor::Document document;
+    document.reset(target, QStringLiteral("VB"));
+    document.setWatchLists({{QStringLiteral("W"), {QStringLiteral("X0")}}},
+                           QStringLiteral("watch"));
+    editor::WatchListView view(&document);
+    test::FakeMonitorSource source;
+    view.setMonitorSource(&source);
+    auto snapshot = source.blank(target);
+    const model::BitRef x0 = snapshot->layout->bit(at(target, "X0"));
+    snapshot->words[static_cast<std::size_t>(x0.word)] |= static_cast<std::int32_t>(x0.mask);
+    QSignalSpy changed(&source, &model::MonitorSource::snapshotChanged);
+    source.publish(snapshot);
+    ASSERT_TRUE(changed.wait(5000));
+    ASSERT_EQ(view.headerItem()->text(1), QStringLiteral("Value"));
+    ASSERT_EQ(view.topLevelItem(0)->child(0)->text(1), QStringLiteral("ON"));
+
+    ASSERT_TRUE(app::setLanguage(QStringLiteral("hu"), false));
+    QCoreApplication::sendPostedEvents(nullptr, QEvent::LanguageChange);
+    const auto hu = [](const char *text) {
+        return QCoreApplication::translate("rung::editor::WatchListView", text);
+    };
+    ASSERT_NE(hu("Value"), QStringLiteral("Value")); // the catalogue is there
+    EXPECT_EQ(view.headerItem()->text(0), hu("Watch list"));
+    EXPECT_EQ(view.headerItem()->text(1), hu("Value"));
+    EXPECT_EQ(view.topLevelItem(0)->child(0)->text(1), hu("ON"));
+    app::setLanguage(QStringLiteral("en"), false);
+    QCoreApplication::sendPostedEvents(nullptr, QEvent::LanguageChange);
+    EXPECT_EQ(view.headerItem()->text(1), QStringLiteral("Value"));
 }

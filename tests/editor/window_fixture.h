@@ -13,8 +13,11 @@
 #include <QMenuBar>
 #include <QStatusBar>
 #include <QTest>
+#include <QToolBar>
 
 #include <gtest/gtest.h>
+
+#include <functional>
 
 namespace rung::test {
 
@@ -31,6 +34,33 @@ inline QAction *menuAction(const QMainWindow &window, const QString &text) {
                         if (inner->text().remove(QLatin1Char('&')) == text)
                             return inner;
             }
+    return nullptr;
+}
+
+// A button of the toolbars, by its text without the access-key '&'; nullptr when there is none.
+inline QAction *toolbarAction(const QMainWindow &window, const QString &text) {
+    for (QToolBar *bar : window.findChildren<QToolBar *>())
+        for (QAction *a : bar->actions())
+            if (QString(a->text()).remove(QLatin1Char('&')) == text)
+                return a;
+    return nullptr;
+}
+
+// An entry of the Edit menu or of its submenus (at any depth), by its text without the '&'.
+inline QAction *editMenuEntry(const QMainWindow &window, const QString &text) {
+    std::function<QAction *(QMenu *)> find = [&](QMenu *menu) -> QAction * {
+        for (QAction *e : menu->actions()) {
+            if (QString(e->text()).remove(QLatin1Char('&')) == text)
+                return e;
+            if (e->menu())
+                if (QAction *inner = find(e->menu()))
+                    return inner;
+        }
+        return nullptr;
+    };
+    for (QAction *m : window.menuBar()->actions())
+        if (m->menu() && m->text() == QStringLiteral("&Edit"))
+            return find(m->menu());
     return nullptr;
 }
 
@@ -67,6 +97,12 @@ struct WindowFixture : ::testing::Test {
         view->setFocus();
     }
     QString listing() { return window.document()->listingText(); }
+    // On screen and active, as a user meets it: focus, dialogs and key presses behave so.
+    void showActive() {
+        window.show();
+        window.activateWindow();
+        EXPECT_TRUE(QTest::qWaitForWindowActive(&window));
+    }
     // A function key (with its modifiers), then the operand into the cell editor it opens.
     void typeIntoCell(Qt::Key key, const char *operand, Qt::KeyboardModifiers mods = {}) {
         QTest::keyClick(view, key, mods);
