@@ -169,7 +169,7 @@ Kilépési kód: 0 nincs hiba, 1 a programban hiba van, 2 használati vagy I/O h
         <translation>Összeadás másodpercenként</translation>
     </message>
     <message>
-        <location line="+1"/>
+        <location line="+2"/>
         <source>Timers counting down and up</source>
         <translation>Lefelé és felfelé számoló időzítők</translation>
     </message>
@@ -194,7 +194,7 @@ Kilépési kód: 0 nincs hiba, 1 a programban hiba van, 2 használati vagy I/O h
         <translation>Villogó</translation>
     </message>
     <message>
-        <location line="+1"/>
+        <location line="+2"/>
         <source>Latch, START has priority</source>
         <translation>Öntartás, a START az erősebb</translation>
     </message>
@@ -250,7 +250,7 @@ Kilépési kód: 0 nincs hiba, 1 a programban hiba van, 2 használati vagy I/O h
 <context>
     <name>rung::app::MainWindow</name>
     <message>
-        <location filename="../app/gui/main_window.cpp" line="+153"/>
+        <location filename="../app/gui/main_window.cpp" line="+154"/>
         <source>Problems</source>
         <translation>Problémák</translation>
     </message>
@@ -458,7 +458,12 @@ Kilépési kód: 0 nincs hiba, 1 a programban hiba van, 2 használati vagy I/O h
         <translation>S&amp;or törlése</translation>
     </message>
     <message>
-        <location line="+80"/>
+        <location line="+62"/>
+        <source>Simulation: F10 run, F11 pause, Shift+F11 stop, F12 single scan, Ctrl+Shift+F12 power cycle</source>
+        <translation>Szimuláció: F10 futtatás, F11 szünet, Shift+F11 leállítás, F12 egy ciklus, Ctrl+Shift+F12 ki-bekapcsolás</translation>
+    </message>
+    <message>
+        <location line="+22"/>
         <source>&amp;Undo</source>
         <translation>&amp;Visszavonás</translation>
     </message>
@@ -468,7 +473,7 @@ Kilépési kód: 0 nincs hiba, 1 a programban hiba van, 2 használati vagy I/O h
         <translation>&amp;Mégis</translation>
     </message>
     <message>
-        <location line="-164"/>
+        <location line="-168"/>
         <source>Select</source>
         <translation>Kijelölés</translation>
     </message>
@@ -585,7 +590,7 @@ Kilépési kód: 0 nincs hiba, 1 a programban hiba van, 2 használati vagy I/O h
         <translation>Program ellen&amp;őrzése</translation>
     </message>
     <message>
-        <location line="+3"/>
+        <location line="+4"/>
         <source>&amp;Language</source>
         <translation>N&amp;yelv</translation>
     </message>
@@ -624,7 +629,7 @@ Delete: törlés, Ctrl+Delete: a sor törlése, Shift+Delete: a létrafok törl�
 Ctrl+Z / Ctrl+Y: visszavonás / mégis, Ctrl+görgő: nagyítás, F4: a program ellenőrzése</translation>
     </message>
     <message>
-        <location line="+9"/>
+        <location line="+12"/>
         <source>&amp;About Rung Studio</source>
         <translation>A Rung Studio &amp;névjegye</translation>
     </message>
@@ -973,6 +978,56 @@ Létradiagram- és utasításlista-szerkesztő VPC, Vigor, CPM1 és PL110 PLC-kh
         <source>Export Symbols</source>
         <translation>Szimbólumok exportálása</translation>
     </message>
+    <message>
+        <location filename="../app/gui/main_window_simulation.cpp" line="+33"/>
+        <source>The instruction list has errors, so the ladder still shows the last program without them: correct the list (or undo) before simulating</source>
+        <translation>Az utasításlistában hibák vannak, ezért a létra még az utolsó hibátlan programot mutatja: a szimuláció előtt javítsa a listát (vagy vonja vissza a módosítást)</translation>
+    </message>
+    <message>
+        <location line="+34"/>
+        <source>&amp;Simulation</source>
+        <translation>Szi&amp;muláció</translation>
+    </message>
+    <message>
+        <location line="+10"/>
+        <source>&amp;Run</source>
+        <translation>&amp;Futtatás</translation>
+    </message>
+    <message>
+        <location line="+2"/>
+        <source>&amp;Pause</source>
+        <translation>&amp;Szünet</translation>
+    </message>
+    <message>
+        <location line="+2"/>
+        <source>&amp;Stop (Back to Power-On)</source>
+        <translation>&amp;Leállítás (bekapcsolási állapot)</translation>
+    </message>
+    <message>
+        <location line="+2"/>
+        <source>Single S&amp;can</source>
+        <translation>Egy &amp;ciklus</translation>
+    </message>
+    <message>
+        <location line="+3"/>
+        <source>Po&amp;wer Cycle</source>
+        <translation>&amp;Ki-bekapcsolás</translation>
+    </message>
+    <message>
+        <location line="+2"/>
+        <source>Spee&amp;d</source>
+        <translation>S&amp;ebesség</translation>
+    </message>
+    <message>
+        <location line="+4"/>
+        <source>x%1 Real Time</source>
+        <translation>x%1 valós idő</translation>
+    </message>
+    <message>
+        <location line="+1"/>
+        <source>As &amp;Fast as Possible</source>
+        <translation>A lehető &amp;leggyorsabban</translation>
+    </message>
 </context>
 <context>
     <name>rung::app::ProgramExport</name>
@@ -1067,6 +1122,57 @@ Létradiagram- és utasításlista-szerkesztő VPC, Vigor, CPM1 és PL110 PLC-kh
         <location line="+11"/>
         <source>runtime error at step %1: %2</source>
         <translation>futási hiba a(z) %1. lépésnél: %2</translation>
+    </message>
+</context>
+<context>
+    <name>rung::app::SimulationController</name>
+    <message numerus="yes">
+        <location filename="../app/gui/simulation_controller.cpp" line="+82"/>
+        <source>The program has %n error(s): the simulation does not start; the Problems list shows them</source>
+        <translation>
+            <numerusform>A programban %n hiba van: a szimuláció nem indul el; a Problémák lista mutatja őket</numerusform>
+        </translation>
+    </message>
+    <message>
+        <location line="+44"/>
+        <source>The program was edited: the simulation stopped. Run starts the edited program from power-on</source>
+        <translation>A program megváltozott: a szimuláció leállt. A Futtatás a módosított programot indítja, a bekapcsolási állapotból</translation>
+    </message>
+    <message>
+        <location line="+56"/>
+        <source>Simulation off</source>
+        <translation>Szimuláció kikapcsolva</translation>
+    </message>
+    <message>
+        <location line="+2"/>
+        <source>Stopped</source>
+        <translation>Leállítva</translation>
+    </message>
+    <message>
+        <location line="+3"/>
+        <source>Paused</source>
+        <translation>Szüneteltetve</translation>
+    </message>
+    <message>
+        <location line="+3"/>
+        <source>Running x%1</source>
+        <translation>Fut x%1</translation>
+    </message>
+    <message>
+        <location line="+1"/>
+        <source>Running at full speed</source>
+        <translation>Fut, teljes sebességgel</translation>
+    </message>
+    <message>
+        <location line="+3"/>
+        <source>Stepping</source>
+        <translation>Léptetés</translation>
+    </message>
+    <message>
+        <location line="+8"/>
+        <source>%1 | %2 | %3 scans | scan %4 ms | evaluation %5 µs (%6..%7)</source>
+        <extracomment>%1 run state, %2 simulated time h:mm:ss.cc, %3 scans, %4 scan period in ms, %5 %6 %7 time the last scan took to evaluate: current, minimum, maximum, in µs</extracomment>
+        <translation>%1 | %2 | %3 ciklus | ciklusidő %4 ms | kiértékelés %5 µs (%6..%7)</translation>
     </message>
 </context>
 <context>
@@ -1912,41 +2018,83 @@ Létradiagram- és utasításlista-szerkesztő VPC, Vigor, CPM1 és PL110 PLC-kh
 <context>
     <name>rung::editor::WatchListView</name>
     <message>
-        <location filename="../editor/watch_list_view.cpp" line="+17"/>
-        <location line="+17"/>
+        <location filename="../editor/watch_list_view.cpp" line="+20"/>
+        <location line="+28"/>
         <location line="+1"/>
         <source>Watch list</source>
         <translation>Figyelőlista</translation>
     </message>
     <message>
-        <location line="-15"/>
+        <location line="-26"/>
         <source>Watch lists</source>
         <translation>Figyelőlisták</translation>
     </message>
     <message>
-        <location line="+14"/>
+        <location line="+25"/>
         <source>Value</source>
         <translation>Érték</translation>
     </message>
     <message>
-        <location line="+42"/>
+        <location line="+160"/>
         <source>not a device</source>
         <translation>nem operandus</translation>
     </message>
     <message>
-        <location line="+4"/>
+        <location line="-80"/>
+        <location line="+84"/>
         <location line="+6"/>
         <source>ON</source>
         <translation>BE</translation>
     </message>
     <message>
-        <location line="-6"/>
+        <location line="-87"/>
+        <location line="+81"/>
         <location line="+6"/>
         <source>OFF</source>
         <translation>KI</translation>
     </message>
     <message>
-        <location line="-3"/>
+        <location line="-84"/>
+        <source>&quot;%1&quot; is no value for %2: type ON or OFF (1 or 0)</source>
+        <translation>„%1” nem érték ehhez: %2; írjon BE vagy KI értéket (1 vagy 0)</translation>
+    </message>
+    <message>
+        <location line="+10"/>
+        <source>&quot;%1&quot; is no value for %2: type a whole number (0x before a hexadecimal one)</source>
+        <translation>„%1” nem érték ehhez: %2; írjon egész számot (hexadecimális elé 0x)</translation>
+    </message>
+    <message>
+        <location line="+22"/>
+        <source>Set ON</source>
+        <translation>BE-kapcsolás</translation>
+    </message>
+    <message>
+        <location line="+4"/>
+        <source>Set OFF</source>
+        <translation>KI-kapcsolás</translation>
+    </message>
+    <message>
+        <location line="+4"/>
+        <source>Force ON</source>
+        <translation>Kényszerítés BE</translation>
+    </message>
+    <message>
+        <location line="+4"/>
+        <source>Force OFF</source>
+        <translation>Kényszerítés KI</translation>
+    </message>
+    <message>
+        <location line="+4"/>
+        <source>Release</source>
+        <translation>Kényszerítés feloldása</translation>
+    </message>
+    <message>
+        <location line="+5"/>
+        <source>Write Value...</source>
+        <translation>Érték írása...</translation>
+    </message>
+    <message>
+        <location line="+28"/>
         <source>%1 of %2, %3</source>
         <translation>%1 / %2, %3</translation>
     </message>

@@ -169,7 +169,7 @@ Codice di uscita: 0 nessun errore, 1 il programma contiene errori, 2 errore di u
         <translation>Somma una volta al secondo</translation>
     </message>
     <message>
-        <location line="+1"/>
+        <location line="+2"/>
         <source>Timers counting down and up</source>
         <translation>Temporizzatori a decremento e a incremento</translation>
     </message>
@@ -194,7 +194,7 @@ Codice di uscita: 0 nessun errore, 1 il programma contiene errori, 2 errore di u
         <translation>Lampeggiatore</translation>
     </message>
     <message>
-        <location line="+1"/>
+        <location line="+2"/>
         <source>Latch, START has priority</source>
         <translation>Autoritenuta con priorità allo START</translation>
     </message>
@@ -250,7 +250,7 @@ Codice di uscita: 0 nessun errore, 1 il programma contiene errori, 2 errore di u
 <context>
     <name>rung::app::MainWindow</name>
     <message>
-        <location filename="../app/gui/main_window.cpp" line="+153"/>
+        <location filename="../app/gui/main_window.cpp" line="+154"/>
         <source>Problems</source>
         <translation>Problemi</translation>
     </message>
@@ -458,7 +458,12 @@ Codice di uscita: 0 nessun errore, 1 il programma contiene errori, 2 errore di u
         <translation>E&amp;limina riga</translation>
     </message>
     <message>
-        <location line="+80"/>
+        <location line="+62"/>
+        <source>Simulation: F10 run, F11 pause, Shift+F11 stop, F12 single scan, Ctrl+Shift+F12 power cycle</source>
+        <translation>Simulazione: F10 esegui, F11 pausa, Shift+F11 stop, F12 singola scansione, Ctrl+Shift+F12 spegni e riaccendi</translation>
+    </message>
+    <message>
+        <location line="+22"/>
         <source>&amp;Undo</source>
         <translation>&amp;Annulla</translation>
     </message>
@@ -468,7 +473,7 @@ Codice di uscita: 0 nessun errore, 1 il programma contiene errori, 2 errore di u
         <translation>&amp;Ripeti</translation>
     </message>
     <message>
-        <location line="-164"/>
+        <location line="-168"/>
         <source>Select</source>
         <translation>Seleziona</translation>
     </message>
@@ -585,7 +590,7 @@ Codice di uscita: 0 nessun errore, 1 il programma contiene errori, 2 errore di u
         <translation>&amp;Verifica programma</translation>
     </message>
     <message>
-        <location line="+3"/>
+        <location line="+4"/>
         <source>&amp;Language</source>
         <translation>&amp;Lingua</translation>
     </message>
@@ -624,7 +629,7 @@ Delete: cancella, Ctrl+Delete: elimina la riga, Shift+Delete: elimina il segment
 Ctrl+Z / Ctrl+Y: annulla / ripeti, Ctrl+rotellina: zoom, F4: verifica il programma</translation>
     </message>
     <message>
-        <location line="+9"/>
+        <location line="+12"/>
         <source>&amp;About Rung Studio</source>
         <translation>&amp;Informazioni su Rung Studio</translation>
     </message>
@@ -977,6 +982,56 @@ Editor di schemi ladder e liste istruzioni per VPC, Vigor, CPM1 e PL110.</transl
         <source>Export Symbols</source>
         <translation>Esporta simboli</translation>
     </message>
+    <message>
+        <location filename="../app/gui/main_window_simulation.cpp" line="+33"/>
+        <source>The instruction list has errors, so the ladder still shows the last program without them: correct the list (or undo) before simulating</source>
+        <translation>La lista istruzioni contiene errori, quindi il ladder mostra ancora l&apos;ultimo programma senza errori: correggere la lista (o annullare) prima di simulare</translation>
+    </message>
+    <message>
+        <location line="+34"/>
+        <source>&amp;Simulation</source>
+        <translation>&amp;Simulazione</translation>
+    </message>
+    <message>
+        <location line="+10"/>
+        <source>&amp;Run</source>
+        <translation>&amp;Esegui</translation>
+    </message>
+    <message>
+        <location line="+2"/>
+        <source>&amp;Pause</source>
+        <translation>&amp;Pausa</translation>
+    </message>
+    <message>
+        <location line="+2"/>
+        <source>&amp;Stop (Back to Power-On)</source>
+        <translation>&amp;Stop (stato di accensione)</translation>
+    </message>
+    <message>
+        <location line="+2"/>
+        <source>Single S&amp;can</source>
+        <translation>Singola s&amp;cansione</translation>
+    </message>
+    <message>
+        <location line="+3"/>
+        <source>Po&amp;wer Cycle</source>
+        <translation>Spegni e &amp;riaccendi</translation>
+    </message>
+    <message>
+        <location line="+2"/>
+        <source>Spee&amp;d</source>
+        <translation>&amp;Velocità</translation>
+    </message>
+    <message>
+        <location line="+4"/>
+        <source>x%1 Real Time</source>
+        <translation>x%1 tempo reale</translation>
+    </message>
+    <message>
+        <location line="+1"/>
+        <source>As &amp;Fast as Possible</source>
+        <translation>Il più &amp;veloce possibile</translation>
+    </message>
 </context>
 <context>
     <name>rung::app::ProgramExport</name>
@@ -1071,6 +1126,58 @@ Editor di schemi ladder e liste istruzioni per VPC, Vigor, CPM1 e PL110.</transl
         <location line="+11"/>
         <source>runtime error at step %1: %2</source>
         <translation>errore di esecuzione al passo %1: %2</translation>
+    </message>
+</context>
+<context>
+    <name>rung::app::SimulationController</name>
+    <message numerus="yes">
+        <location filename="../app/gui/simulation_controller.cpp" line="+82"/>
+        <source>The program has %n error(s): the simulation does not start; the Problems list shows them</source>
+        <translation>
+            <numerusform>Il programma ha %n errore: la simulazione non parte; l&apos;elenco Problemi lo mostra</numerusform>
+            <numerusform>Il programma ha %n errori: la simulazione non parte; l&apos;elenco Problemi li mostra</numerusform>
+        </translation>
+    </message>
+    <message>
+        <location line="+44"/>
+        <source>The program was edited: the simulation stopped. Run starts the edited program from power-on</source>
+        <translation>Il programma è stato modificato: la simulazione si è fermata. Esegui avvia il programma modificato dallo stato di accensione</translation>
+    </message>
+    <message>
+        <location line="+56"/>
+        <source>Simulation off</source>
+        <translation>Simulazione spenta</translation>
+    </message>
+    <message>
+        <location line="+2"/>
+        <source>Stopped</source>
+        <translation>Fermata</translation>
+    </message>
+    <message>
+        <location line="+3"/>
+        <source>Paused</source>
+        <translation>In pausa</translation>
+    </message>
+    <message>
+        <location line="+3"/>
+        <source>Running x%1</source>
+        <translation>In esecuzione x%1</translation>
+    </message>
+    <message>
+        <location line="+1"/>
+        <source>Running at full speed</source>
+        <translation>In esecuzione alla massima velocità</translation>
+    </message>
+    <message>
+        <location line="+3"/>
+        <source>Stepping</source>
+        <translation>Passo passo</translation>
+    </message>
+    <message>
+        <location line="+8"/>
+        <source>%1 | %2 | %3 scans | scan %4 ms | evaluation %5 µs (%6..%7)</source>
+        <extracomment>%1 run state, %2 simulated time h:mm:ss.cc, %3 scans, %4 scan period in ms, %5 %6 %7 time the last scan took to evaluate: current, minimum, maximum, in µs</extracomment>
+        <translation>%1 | %2 | %3 scansioni | scansione %4 ms | valutazione %5 µs (%6..%7)</translation>
     </message>
 </context>
 <context>
@@ -1917,41 +2024,83 @@ Editor di schemi ladder e liste istruzioni per VPC, Vigor, CPM1 e PL110.</transl
 <context>
     <name>rung::editor::WatchListView</name>
     <message>
-        <location filename="../editor/watch_list_view.cpp" line="+17"/>
-        <location line="+17"/>
+        <location filename="../editor/watch_list_view.cpp" line="+20"/>
+        <location line="+28"/>
         <location line="+1"/>
         <source>Watch list</source>
         <translation>Lista di osservazione</translation>
     </message>
     <message>
-        <location line="-15"/>
+        <location line="-26"/>
         <source>Watch lists</source>
         <translation>Liste di osservazione</translation>
     </message>
     <message>
-        <location line="+14"/>
+        <location line="+25"/>
         <source>Value</source>
         <translation>Valore</translation>
     </message>
     <message>
-        <location line="+42"/>
+        <location line="+160"/>
         <source>not a device</source>
         <translation>non è un operando</translation>
     </message>
     <message>
-        <location line="+4"/>
+        <location line="-80"/>
+        <location line="+84"/>
         <location line="+6"/>
         <source>ON</source>
         <translation>ON</translation>
     </message>
     <message>
-        <location line="-6"/>
+        <location line="-87"/>
+        <location line="+81"/>
         <location line="+6"/>
         <source>OFF</source>
         <translation>OFF</translation>
     </message>
     <message>
-        <location line="-3"/>
+        <location line="-84"/>
+        <source>&quot;%1&quot; is no value for %2: type ON or OFF (1 or 0)</source>
+        <translation>&quot;%1&quot; non è un valore per %2: scrivere ON o OFF (1 o 0)</translation>
+    </message>
+    <message>
+        <location line="+10"/>
+        <source>&quot;%1&quot; is no value for %2: type a whole number (0x before a hexadecimal one)</source>
+        <translation>&quot;%1&quot; non è un valore per %2: scrivere un numero intero (0x davanti a uno esadecimale)</translation>
+    </message>
+    <message>
+        <location line="+22"/>
+        <source>Set ON</source>
+        <translation>Imposta ON</translation>
+    </message>
+    <message>
+        <location line="+4"/>
+        <source>Set OFF</source>
+        <translation>Imposta OFF</translation>
+    </message>
+    <message>
+        <location line="+4"/>
+        <source>Force ON</source>
+        <translation>Forza ON</translation>
+    </message>
+    <message>
+        <location line="+4"/>
+        <source>Force OFF</source>
+        <translation>Forza OFF</translation>
+    </message>
+    <message>
+        <location line="+4"/>
+        <source>Release</source>
+        <translation>Rilascia</translation>
+    </message>
+    <message>
+        <location line="+5"/>
+        <source>Write Value...</source>
+        <translation>Scrivi valore...</translation>
+    </message>
+    <message>
+        <location line="+28"/>
         <source>%1 of %2, %3</source>
         <translation>%1 di %2, %3</translation>
     </message>
