@@ -11,7 +11,6 @@
 
 #include <QDockWidget>
 #include <QLabel>
-#include <QLocale>
 #include <QMenuBar>
 #include <QStatusBar>
 #include <QStyle>
@@ -88,9 +87,8 @@ void MainWindow::buildSimulationMenu(QToolBar *bar) {
     QMenu *speed = menu->addMenu(tr("Spee&d"));
     auto *speeds = new QActionGroup(speed);
     for (const double factor : {0.1, 0.5, 1.0, 2.0, 5.0, 10.0, 100.0, 1000.0, 0.0}) {
-        QAction *a =
-            speed->addAction(factor > 0 ? tr("x%1 Real Time").arg(QLocale().toString(factor))
-                                        : tr("As &Fast as Possible"));
+        QAction *a = speed->addAction(factor > 0 ? tr("x%1 Real Time").arg(factor)
+                                                 : tr("As &Fast as Possible"));
         a->setCheckable(true);
         a->setChecked(qFuzzyCompare(factor + 1, m_simulation->speed() + 1));
         speeds->addAction(a);

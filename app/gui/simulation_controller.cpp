@@ -4,7 +4,6 @@
 #include "simulator/compiler.h"
 #include "simulator/session.h"
 
-#include <QLocale>
 #include <QSettings>
 
 #include <algorithm>
@@ -30,8 +29,10 @@ QString clockText(qint64 ms) {
         .arg(hundredths % 100, 2, 10, QLatin1Char('0'));
 }
 
+// Numbers as the rest of the window writes them (step counts, times): no group separators,
+// whatever the system's locale, so the status reads the same in every language.
 QString microseconds(qint64 ns) {
-    return QLocale().toString(static_cast<double>(ns) / 1000.0, 'f', 1);
+    return QString::number(static_cast<double>(ns) / 1000.0, 'f', 1);
 }
 
 std::vector<model::Diagnostic> onlyErrors(std::vector<model::Diagnostic> all) {
@@ -187,8 +188,7 @@ QString SimulationController::statusText(model::MonitorSource::RunState state, d
         what = tr("Paused");
         break;
     case State::Running:
-        what = speed > 0 ? tr("Running x%1").arg(QLocale().toString(speed))
-                         : tr("Running at full speed");
+        what = speed > 0 ? tr("Running x%1").arg(speed) : tr("Running at full speed");
         break;
     case State::Stepping:
         what = tr("Stepping");
@@ -200,7 +200,7 @@ QString SimulationController::statusText(model::MonitorSource::RunState state, d
     //: %1 run state, %2 simulated time h:mm:ss.cc, %3 scans, %4 scan period in ms,
     //: %5 %6 %7 time the last scan took to evaluate: current, minimum, maximum, in µs
     return tr("%1 | %2 | %3 scans | scan %4 ms | evaluation %5 µs (%6..%7)")
-        .arg(what, clockText(s.timeMs), QLocale().toString(s.scans))
+        .arg(what, clockText(s.timeMs), QString::number(s.scans))
         .arg(s.periodMs)
         .arg(microseconds(s.execNsCurrent), microseconds(s.execNsMin), microseconds(s.execNsMax));
 }

@@ -60,6 +60,32 @@ struct Simulation : test::WindowFixture {
     }
 };
 
+TEST(SimulationStatus, SaysStateTimeScansAndScanTimesInOneLine) {
+    model::Snapshot snapshot;
+    snapshot.statistics.scans = 372345;
+    snapshot.statistics.timeMs = 3723450; // 1 h 2 min 3.45 s
+    snapshot.statistics.periodMs = 10;
+    snapshot.statistics.execNsCurrent = 2500;
+    snapshot.statistics.execNsMin = 1000;
+    snapshot.statistics.execNsMax = 9950;
+    EXPECT_EQ(app::SimulationController::statusText(State::Running, 1000, &snapshot),
+              QStringLiteral("Running x1000 | 1:02:03.45 | 372345 scans | scan 10 ms | "
+                             "evaluation 2.5 µs (1.0..9.9)"));
+    EXPECT_EQ(app::SimulationController::statusText(State::Running, 0.1, &snapshot)
+                  .section(QLatin1Char('|'), 0, 0),
+              QStringLiteral("Running x0.1 "));
+    EXPECT_TRUE(app::SimulationController::statusText(State::Running, 0, &snapshot)
+                    .startsWith(QStringLiteral("Running at full speed | ")));
+    EXPECT_TRUE(app::SimulationController::statusText(State::Paused, 1, &snapshot)
+                    .startsWith(QStringLiteral("Paused | ")));
+    EXPECT_TRUE(app::SimulationController::statusText(State::Stepping, 1, &snapshot)
+                    .startsWith(QStringLiteral("Stepping | ")));
+    EXPECT_EQ(app::SimulationController::statusText(State::Offline, 1, &snapshot),
+              QStringLiteral("Simulation off"));
+    EXPECT_EQ(app::SimulationController::statusText(State::Stopped, 1, nullptr),
+              QStringLiteral("Stopped"));
+}
+
 TEST_F(Simulation, TheMenuHasEveryControlWithAKeyThatNothingElseUses) {
     std::map<QString, QKeySequence> keys;
     for (const char *name :
