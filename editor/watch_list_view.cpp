@@ -84,6 +84,9 @@ void WatchListView::showValues() {
         QTreeWidgetItem *list = topLevelItem(i);
         for (int k = 0; k < list->childCount(); ++k) {
             QTreeWidgetItem *item = list->child(k);
+            // The value being typed stays as typed: a snapshot would overwrite the editor.
+            if (item == m_editing && state() == QAbstractItemView::EditingState)
+                continue;
             item->setFlags(item->flags() | Qt::ItemIsEditable);
             item->setText(1, snapshot ? valueText(*snapshot, item->text(0)) : QString());
         }
@@ -114,6 +117,13 @@ void WatchListView::editValue(QTreeWidgetItem *item) {
         m_source->writeBit(*address, !(snapshot && snapshot->bit(*address)));
         return;
     }
+    // The editor opens on the number alone, not on "12 of 50, OFF".
+    const auto snapshot = m_source->snapshot();
+    m_showing = true;
+    item->setText(1, snapshot ? QString::number(snapshot->value(*address)) : QString());
+    m_showing = false;
+    m_editing = item;
+    setCurrentItem(item, 1);
     editItem(item, 1);
 }
 
@@ -184,7 +194,7 @@ QList<QAction *> WatchListView::deviceActions(QTreeWidgetItem *item, QObject *pa
                 source->release(device);
         });
     } else {
-        add(tr("Write Value..."), [this, item] { editItem(item, 1); });
+        add(tr("Write Value..."), [this, item] { editValue(item); });
     }
     return actions;
 }
@@ -234,6 +244,7 @@ void WatchListView::refresh() {
     }
     if (same)
         return;
+    m_editing = nullptr;
     clear();
     for (const model::WatchList &list : lists) {
         auto *item = new QTreeWidgetItem(this, {list.name});

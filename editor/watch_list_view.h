@@ -64,7 +64,8 @@ private:
 
     Document *m_document;
     QPointer<model::MonitorSource> m_source;
-    bool m_showing = false; // the view writes the value column itself: not an edit
+    bool m_showing = false;               // the view writes the value column itself: not an edit
+    QTreeWidgetItem *m_editing = nullptr; // whose value is being typed (editValue)
 };
 
 } // namespace rung::editor

@@ -10,6 +10,7 @@
 #include "model/target/address.h"
 
 #include <QAction>
+#include <QLineEdit>
 #include <QSignalSpy>
 #include <QTest>
 
@@ -134,6 +135,42 @@ TEST_F(WatchCommands, ADoubleClickFlipsABitAndARefusedCommandIsSaid) {
     EXPECT_EQ(source.commands[0].value, 0); // it was ON
     ASSERT_TRUE(messages.size() == 1 || messages.wait(2000));
     EXPECT_EQ(messages.back()[0].toString(), QStringLiteral("X0 cannot be written"));
+}
+
+TEST_F(WatchCommands, TheValueEditorOpensOnTheNumberAndSnapshotsDoNotOverwriteWhatIsTyped) {
+    view->show();
+    ASSERT_TRUE(QTest::qWaitForWindowExposed(view.get()));
+    auto snapshot = source.blank(target);
+    const auto t3 = static_cast<std::size_t>(snapshot->layout->word(at("T3")));
+    snapshot->words[t3] = 12;
+    snapshot->words[static_cast<std::size_t>(snapshot->layout->setValueWord(at("T3")))] = 50;
+    source.publish(snapshot);
+    QTest::qWait(50);
+    EXPECT_EQ(row(2)->text(1), QStringLiteral("12 of 50, OFF"));
+    QObject owner;
+    const QList<QAction *> actions = view->deviceActions(row(2), &owner);
+    ASSERT_EQ(actions.size(), 1);
+    actions[0]->trigger(); // Write Value...
+    auto *editor = view->viewport()->findChild<QLineEdit *>();
+    ASSERT_NE(editor, nullptr);
+    EXPECT_EQ(editor->text(), QStringLiteral("12"));
+    editor->setText(QStringLiteral("30"));
+    // The timer goes on meanwhile: the editor keeps what the user typed.
+    auto later = source.blank(target);
+    later->words[t3] = 13;
+    source.publish(later);
+    QTest::qWait(100);
+    EXPECT_EQ(editor->text(), QStringLiteral("30"));
+    QTest::keyClick(editor, Qt::Key_Return);
+    QTest::qWait(50); // the delegate commits queued
+    ASSERT_EQ(source.commands.size(), 1u);
+    EXPECT_EQ(source.commands[0].kind, Kind::WriteWord);
+    EXPECT_EQ(source.commands[0].address, at("T3"));
+    EXPECT_EQ(source.commands[0].value, 30);
+    // Closed, the column follows the snapshots again.
+    source.publish(later);
+    QTest::qWait(100);
+    EXPECT_EQ(row(2)->text(1), QStringLiteral("13 of 0, OFF"));
 }
 
 } // namespace
