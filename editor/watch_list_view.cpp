@@ -108,9 +108,21 @@ bool WatchListView::isBit(const model::Address &address) const {
                                                        model::AreaKind::Bit);
 }
 
+bool WatchListView::refuseElement(const model::Address &address, const QString &device) {
+    const model::AreaKind kind = m_document->target().area(address.area).kind;
+    if (address.bit >= 0 || (kind != model::AreaKind::Timer && kind != model::AreaKind::Counter))
+        return false;
+    // The scan engine computes a timer's or counter's current value from the element's own
+    // state every scan, so a written value would be gone at the next scan: say so instead.
+    emit message(tr("%1 is a timer or counter: its current value follows the program and "
+                    "cannot be written here")
+                     .arg(device));
+    return true;
+}
+
 void WatchListView::editValue(QTreeWidgetItem *item) {
     const auto address = addressOf(item);
-    if (!m_source || !address)
+    if (!m_source || !address || refuseElement(*address, item->text(0)))
         return;
     if (isBit(*address)) {
         const auto snapshot = m_source->snapshot();
@@ -130,6 +142,8 @@ void WatchListView::editValue(QTreeWidgetItem *item) {
 bool WatchListView::writeValue(QTreeWidgetItem *item, const QString &text) {
     const auto address = addressOf(item);
     if (!m_source || !address)
+        return false;
+    if (refuseElement(*address, item->text(0)))
         return false;
     const QString typed = text.trimmed();
     if (isBit(*address)) {
@@ -194,7 +208,9 @@ QList<QAction *> WatchListView::deviceActions(QTreeWidgetItem *item, QObject *pa
                 source->release(device);
         });
     } else {
-        add(tr("Write Value..."), [this, item] { editValue(item); });
+        const model::AreaKind kind = m_document->target().area(device.area).kind;
+        if (kind != model::AreaKind::Timer && kind != model::AreaKind::Counter)
+            add(tr("Write Value..."), [this, item] { editValue(item); });
     }
     return actions;
 }

@@ -38,7 +38,8 @@ public:
 
     // What the context menu offers for a device row while a source is set: a bit can be set,
     // reset, forced ON or OFF and released; a word, timer or counter takes a value typed in
-    // the value column (Write Value..., F2 or a double-click). Empty for anything else.
+    // the value column (Write Value..., F2 or a double-click); a timer or counter offers
+    // nothing (the engine computes its current value). Empty for anything else.
     QList<QAction *> deviceActions(QTreeWidgetItem *item, QObject *parent);
     // Writes what the value column's text says to the row's device: ON/OFF or 1/0 for a
     // bit, a whole number for a word (decimal, or hexadecimal after 0x); false, with
@@ -61,6 +62,8 @@ private:
     std::optional<model::Address> addressOf(const QTreeWidgetItem *item) const;
     bool isBit(const model::Address &address) const;
     void editValue(QTreeWidgetItem *item); // a bit flips, a word opens the value cell
+    // True, with message(), for a timer or counter (its current value cannot be written).
+    bool refuseElement(const model::Address &address, const QString &device);
 
     Document *m_document;
     QPointer<model::MonitorSource> m_source;

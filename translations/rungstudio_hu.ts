@@ -979,7 +979,7 @@ Létradiagram- és utasításlista-szerkesztő VPC, Vigor, CPM1 és PL110 PLC-kh
         <translation>Szimbólumok exportálása</translation>
     </message>
     <message>
-        <location filename="../app/gui/main_window_simulation.cpp" line="+33"/>
+        <location filename="../app/gui/main_window_simulation.cpp" line="+32"/>
         <source>The instruction list has errors, so the ladder still shows the last program without them: correct the list (or undo) before simulating</source>
         <translation>Az utasításlistában hibák vannak, ezért a létra még az utolsó hibátlan programot mutatja: a szimuláció előtt javítsa a listát (vagy vonja vissza a módosítást)</translation>
     </message>
@@ -1019,7 +1019,7 @@ Létradiagram- és utasításlista-szerkesztő VPC, Vigor, CPM1 és PL110 PLC-kh
         <translation>S&amp;ebesség</translation>
     </message>
     <message>
-        <location line="+4"/>
+        <location line="+3"/>
         <source>x%1 Real Time</source>
         <translation>x%1 valós idő</translation>
     </message>
@@ -1127,7 +1127,7 @@ Létradiagram- és utasításlista-szerkesztő VPC, Vigor, CPM1 és PL110 PLC-kh
 <context>
     <name>rung::app::SimulationController</name>
     <message numerus="yes">
-        <location filename="../app/gui/simulation_controller.cpp" line="+82"/>
+        <location filename="../app/gui/simulation_controller.cpp" line="+83"/>
         <source>The program has %n error(s): the simulation does not start; the Problems list shows them</source>
         <translation>
             <numerusform>A programban %n hiba van: a szimuláció nem indul el; a Problémák lista mutatja őket</numerusform>
@@ -1159,7 +1159,7 @@ Létradiagram- és utasításlista-szerkesztő VPC, Vigor, CPM1 és PL110 PLC-kh
         <translation>Fut x%1</translation>
     </message>
     <message>
-        <location line="+1"/>
+        <location line="+0"/>
         <source>Running at full speed</source>
         <translation>Fut, teljes sebességgel</translation>
     </message>
@@ -2035,26 +2035,31 @@ Létradiagram- és utasításlista-szerkesztő VPC, Vigor, CPM1 és PL110 PLC-kh
         <translation>Érték</translation>
     </message>
     <message>
-        <location line="+160"/>
+        <location line="+186"/>
         <source>not a device</source>
         <translation>nem operandus</translation>
     </message>
     <message>
-        <location line="-80"/>
-        <location line="+84"/>
+        <location line="-82"/>
+        <location line="+86"/>
         <location line="+6"/>
         <source>ON</source>
         <translation>BE</translation>
     </message>
     <message>
-        <location line="-87"/>
-        <location line="+81"/>
+        <location line="-127"/>
+        <source>%1 is a timer or counter: its current value follows the program and cannot be written here</source>
+        <translation>%1 időzítő vagy számláló: aktuális értékét a program határozza meg, itt nem írható</translation>
+    </message>
+    <message>
+        <location line="+38"/>
+        <location line="+83"/>
         <location line="+6"/>
         <source>OFF</source>
         <translation>KI</translation>
     </message>
     <message>
-        <location line="-84"/>
+        <location line="-86"/>
         <source>&quot;%1&quot; is no value for %2: type ON or OFF (1 or 0)</source>
         <translation>„%1” nem érték ehhez: %2; írjon BE vagy KI értéket (1 vagy 0)</translation>
     </message>
@@ -2089,7 +2094,7 @@ Létradiagram- és utasításlista-szerkesztő VPC, Vigor, CPM1 és PL110 PLC-kh
         <translation>Kényszerítés feloldása</translation>
     </message>
     <message>
-        <location line="+5"/>
+        <location line="+7"/>
         <source>Write Value...</source>
         <translation>Érték írása...</translation>
     </message>
@@ -2104,7 +2109,7 @@ Létradiagram- és utasításlista-szerkesztő VPC, Vigor, CPM1 és PL110 PLC-kh
         <translation>%1 (kényszerített)</translation>
     </message>
     <message>
-        <location line="+42"/>
+        <location line="+43"/>
         <source>Watch 1</source>
         <translation>Figyelés 1</translation>
     </message>

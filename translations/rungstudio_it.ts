@@ -983,7 +983,7 @@ Editor di schemi ladder e liste istruzioni per VPC, Vigor, CPM1 e PL110.</transl
         <translation>Esporta simboli</translation>
     </message>
     <message>
-        <location filename="../app/gui/main_window_simulation.cpp" line="+33"/>
+        <location filename="../app/gui/main_window_simulation.cpp" line="+32"/>
         <source>The instruction list has errors, so the ladder still shows the last program without them: correct the list (or undo) before simulating</source>
         <translation>La lista istruzioni contiene errori, quindi il ladder mostra ancora l&apos;ultimo programma senza errori: correggere la lista (o annullare) prima di simulare</translation>
     </message>
@@ -1023,7 +1023,7 @@ Editor di schemi ladder e liste istruzioni per VPC, Vigor, CPM1 e PL110.</transl
         <translation>&amp;Velocità</translation>
     </message>
     <message>
-        <location line="+4"/>
+        <location line="+3"/>
         <source>x%1 Real Time</source>
         <translation>x%1 tempo reale</translation>
     </message>
@@ -1131,7 +1131,7 @@ Editor di schemi ladder e liste istruzioni per VPC, Vigor, CPM1 e PL110.</transl
 <context>
     <name>rung::app::SimulationController</name>
     <message numerus="yes">
-        <location filename="../app/gui/simulation_controller.cpp" line="+82"/>
+        <location filename="../app/gui/simulation_controller.cpp" line="+83"/>
         <source>The program has %n error(s): the simulation does not start; the Problems list shows them</source>
         <translation>
             <numerusform>Il programma ha %n errore: la simulazione non parte; l&apos;elenco Problemi lo mostra</numerusform>
@@ -1164,7 +1164,7 @@ Editor di schemi ladder e liste istruzioni per VPC, Vigor, CPM1 e PL110.</transl
         <translation>In esecuzione x%1</translation>
     </message>
     <message>
-        <location line="+1"/>
+        <location line="+0"/>
         <source>Running at full speed</source>
         <translation>In esecuzione alla massima velocità</translation>
     </message>
@@ -2041,26 +2041,31 @@ Editor di schemi ladder e liste istruzioni per VPC, Vigor, CPM1 e PL110.</transl
         <translation>Valore</translation>
     </message>
     <message>
-        <location line="+160"/>
+        <location line="+186"/>
         <source>not a device</source>
         <translation>non è un operando</translation>
     </message>
     <message>
-        <location line="-80"/>
-        <location line="+84"/>
+        <location line="-82"/>
+        <location line="+86"/>
         <location line="+6"/>
         <source>ON</source>
         <translation>ON</translation>
     </message>
     <message>
-        <location line="-87"/>
-        <location line="+81"/>
+        <location line="-127"/>
+        <source>%1 is a timer or counter: its current value follows the program and cannot be written here</source>
+        <translation>%1 è un temporizzatore o un contatore: il suo valore corrente segue il programma e qui non si può scrivere</translation>
+    </message>
+    <message>
+        <location line="+38"/>
+        <location line="+83"/>
         <location line="+6"/>
         <source>OFF</source>
         <translation>OFF</translation>
     </message>
     <message>
-        <location line="-84"/>
+        <location line="-86"/>
         <source>&quot;%1&quot; is no value for %2: type ON or OFF (1 or 0)</source>
         <translation>&quot;%1&quot; non è un valore per %2: scrivere ON o OFF (1 o 0)</translation>
     </message>
@@ -2095,7 +2100,7 @@ Editor di schemi ladder e liste istruzioni per VPC, Vigor, CPM1 e PL110.</transl
         <translation>Rilascia</translation>
     </message>
     <message>
-        <location line="+5"/>
+        <location line="+7"/>
         <source>Write Value...</source>
         <translation>Scrivi valore...</translation>
     </message>
@@ -2110,7 +2115,7 @@ Editor di schemi ladder e liste istruzioni per VPC, Vigor, CPM1 e PL110.</transl
         <translation>%1 (forzato)</translation>
     </message>
     <message>
-        <location line="+42"/>
+        <location line="+43"/>
         <source>Watch 1</source>
         <translation>Osservazione 1</translation>
     </message>

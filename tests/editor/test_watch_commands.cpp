@@ -91,10 +91,16 @@ TEST_F(WatchCommands, AWordOffersToWriteAValueAndTheValueColumnWritesIt) {
     EXPECT_EQ(source.commands.back().value, -7);
     EXPECT_TRUE(view->writeValue(row(1), QStringLiteral("0x1F")));
     EXPECT_EQ(source.commands.back().value, 31);
-    // A timer's value is its current value.
-    EXPECT_TRUE(view->writeValue(row(2), QStringLiteral("25")));
-    EXPECT_EQ(source.commands.back().kind, Kind::WriteWord);
-    EXPECT_EQ(source.commands.back().address, at("T3"));
+    // A timer's current value is the engine's: refused with the reason, nothing offered.
+    const std::size_t before = source.commands.size();
+    QSignalSpy messages(view.get(), &editor::WatchListView::message);
+    EXPECT_FALSE(view->writeValue(row(2), QStringLiteral("25")));
+    EXPECT_EQ(source.commands.size(), before);
+    ASSERT_EQ(messages.size(), 1);
+    EXPECT_EQ(messages[0][0].toString(),
+              QStringLiteral("T3 is a timer or counter: its current value follows the program "
+                             "and cannot be written here"));
+    EXPECT_TRUE(view->deviceActions(row(2), &owner).isEmpty());
     // A bit takes ON/OFF or 1/0.
     EXPECT_TRUE(view->writeValue(row(0), QStringLiteral("on")));
     EXPECT_EQ(source.commands.back().kind, Kind::WriteBit);
@@ -141,23 +147,22 @@ TEST_F(WatchCommands, TheValueEditorOpensOnTheNumberAndSnapshotsDoNotOverwriteWh
     view->show();
     ASSERT_TRUE(QTest::qWaitForWindowExposed(view.get()));
     auto snapshot = source.blank(target);
-    const auto t3 = static_cast<std::size_t>(snapshot->layout->word(at("T3")));
-    snapshot->words[t3] = 12;
-    snapshot->words[static_cast<std::size_t>(snapshot->layout->setValueWord(at("T3")))] = 50;
+    const auto d5 = static_cast<std::size_t>(snapshot->layout->word(at("D5")));
+    snapshot->words[d5] = 12;
     source.publish(snapshot);
     QTest::qWait(50);
-    EXPECT_EQ(row(2)->text(1), QStringLiteral("12 of 50, OFF"));
+    EXPECT_EQ(row(1)->text(1), QStringLiteral("12"));
     QObject owner;
-    const QList<QAction *> actions = view->deviceActions(row(2), &owner);
+    const QList<QAction *> actions = view->deviceActions(row(1), &owner);
     ASSERT_EQ(actions.size(), 1);
     actions[0]->trigger(); // Write Value...
     auto *editor = view->viewport()->findChild<QLineEdit *>();
     ASSERT_NE(editor, nullptr);
     EXPECT_EQ(editor->text(), QStringLiteral("12"));
     editor->setText(QStringLiteral("30"));
-    // The timer goes on meanwhile: the editor keeps what the user typed.
+    // The program changes D5 meanwhile: the editor keeps what the user typed.
     auto later = source.blank(target);
-    later->words[t3] = 13;
+    later->words[d5] = 13;
     source.publish(later);
     QTest::qWait(100);
     EXPECT_EQ(editor->text(), QStringLiteral("30"));
@@ -165,12 +170,12 @@ TEST_F(WatchCommands, TheValueEditorOpensOnTheNumberAndSnapshotsDoNotOverwriteWh
     QTest::qWait(50); // the delegate commits queued
     ASSERT_EQ(source.commands.size(), 1u);
     EXPECT_EQ(source.commands[0].kind, Kind::WriteWord);
-    EXPECT_EQ(source.commands[0].address, at("T3"));
+    EXPECT_EQ(source.commands[0].address, at("D5"));
     EXPECT_EQ(source.commands[0].value, 30);
     // Closed, the column follows the snapshots again.
     source.publish(later);
     QTest::qWait(100);
-    EXPECT_EQ(row(2)->text(1), QStringLiteral("13 of 0, OFF"));
+    EXPECT_EQ(row(1)->text(1), QStringLiteral("13"));
 }
 
 } // namespace
