@@ -49,6 +49,9 @@ void WatchListView::setMonitorSource(model::MonitorSource *source) {
                            : QStringList{tr("Watch list")});
     if (source) {
         header()->show();
+        // The device column as wide as its texts (Italian "Lista di osservazione" was cut at
+        // the default width); the value takes the rest.
+        header()->setSectionResizeMode(0, QHeaderView::ResizeToContents);
         connect(source, &model::MonitorSource::snapshotChanged, this, &WatchListView::showValues);
         connect(source, &model::MonitorSource::commandFinished, this,
                 [this](model::MonitorSource::CommandId, bool ok, const QString &error) {
