@@ -1028,6 +1028,22 @@ Létradiagram- és utasításlista-szerkesztő VPC, Vigor, CPM1 és PL110 PLC-kh
         <source>As &amp;Fast as Possible</source>
         <translation>A lehető &amp;leggyorsabban</translation>
     </message>
+    <message>
+        <location line="+7"/>
+        <source>Scan Peri&amp;od</source>
+        <translation>Cikl&amp;usidő</translation>
+    </message>
+    <message>
+        <location line="+4"/>
+        <source>%1 ms</source>
+        <extracomment>the virtual scan period, e.g. &quot;10 ms&quot;</extracomment>
+        <translation>%1 ms</translation>
+    </message>
+    <message>
+        <location line="+8"/>
+        <source>Release All &amp;Forces</source>
+        <translation>&amp;Minden kényszerítés feloldása</translation>
+    </message>
 </context>
 <context>
     <name>rung::app::ProgramExport</name>
@@ -1127,19 +1143,19 @@ Létradiagram- és utasításlista-szerkesztő VPC, Vigor, CPM1 és PL110 PLC-kh
 <context>
     <name>rung::app::SimulationController</name>
     <message numerus="yes">
-        <location filename="../app/gui/simulation_controller.cpp" line="+83"/>
+        <location filename="../app/gui/simulation_controller.cpp" line="+85"/>
         <source>The program has %n error(s): the simulation does not start; the Problems list shows them</source>
         <translation>
             <numerusform>A programban %n hiba van: a szimuláció nem indul el; a Problémák lista mutatja őket</numerusform>
         </translation>
     </message>
     <message>
-        <location line="+44"/>
+        <location line="+45"/>
         <source>The program was edited: the simulation stopped. Run starts the edited program from power-on</source>
         <translation>A program megváltozott: a szimuláció leállt. A Futtatás a módosított programot indítja, a bekapcsolási állapotból</translation>
     </message>
     <message>
-        <location line="+56"/>
+        <location line="+70"/>
         <source>Simulation off</source>
         <translation>Szimuláció kikapcsolva</translation>
     </message>
@@ -2035,7 +2051,7 @@ Létradiagram- és utasításlista-szerkesztő VPC, Vigor, CPM1 és PL110 PLC-kh
         <translation>Érték</translation>
     </message>
     <message>
-        <location line="+186"/>
+        <location line="+189"/>
         <source>not a device</source>
         <translation>nem operandus</translation>
     </message>

@@ -1032,6 +1032,22 @@ Editor di schemi ladder e liste istruzioni per VPC, Vigor, CPM1 e PL110.</transl
         <source>As &amp;Fast as Possible</source>
         <translation>Il più &amp;veloce possibile</translation>
     </message>
+    <message>
+        <location line="+7"/>
+        <source>Scan Peri&amp;od</source>
+        <translation>Peri&amp;odo di scansione</translation>
+    </message>
+    <message>
+        <location line="+4"/>
+        <source>%1 ms</source>
+        <extracomment>the virtual scan period, e.g. &quot;10 ms&quot;</extracomment>
+        <translation>%1 ms</translation>
+    </message>
+    <message>
+        <location line="+8"/>
+        <source>Release All &amp;Forces</source>
+        <translation>Rilascia tutte le &amp;forzature</translation>
+    </message>
 </context>
 <context>
     <name>rung::app::ProgramExport</name>
@@ -1131,7 +1147,7 @@ Editor di schemi ladder e liste istruzioni per VPC, Vigor, CPM1 e PL110.</transl
 <context>
     <name>rung::app::SimulationController</name>
     <message numerus="yes">
-        <location filename="../app/gui/simulation_controller.cpp" line="+83"/>
+        <location filename="../app/gui/simulation_controller.cpp" line="+85"/>
         <source>The program has %n error(s): the simulation does not start; the Problems list shows them</source>
         <translation>
             <numerusform>Il programma ha %n errore: la simulazione non parte; l&apos;elenco Problemi lo mostra</numerusform>
@@ -1139,12 +1155,12 @@ Editor di schemi ladder e liste istruzioni per VPC, Vigor, CPM1 e PL110.</transl
         </translation>
     </message>
     <message>
-        <location line="+44"/>
+        <location line="+45"/>
         <source>The program was edited: the simulation stopped. Run starts the edited program from power-on</source>
         <translation>Il programma è stato modificato: la simulazione si è fermata. Esegui avvia il programma modificato dallo stato di accensione</translation>
     </message>
     <message>
-        <location line="+56"/>
+        <location line="+70"/>
         <source>Simulation off</source>
         <translation>Simulazione spenta</translation>
     </message>
@@ -2041,7 +2057,7 @@ Editor di schemi ladder e liste istruzioni per VPC, Vigor, CPM1 e PL110.</transl
         <translation>Valore</translation>
     </message>
     <message>
-        <location line="+186"/>
+        <location line="+189"/>
         <source>not a device</source>
         <translation>non è un operando</translation>
     </message>

@@ -95,6 +95,19 @@ void MainWindow::buildSimulationMenu(QToolBar *bar) {
         connect(a, &QAction::triggered, m_simulation,
                 [this, factor] { m_simulation->setSpeed(factor); });
     }
+    QMenu *period = menu->addMenu(tr("Scan Peri&od"));
+    auto *periods = new QActionGroup(period);
+    for (const qint64 ms : {1, 2, 5, 10, 20, 50, 100}) {
+        //: the virtual scan period, e.g. "10 ms"
+        QAction *a = period->addAction(tr("%1 ms").arg(ms));
+        a->setCheckable(true);
+        a->setChecked(ms == m_simulation->periodMs());
+        periods->addAction(a);
+        connect(a, &QAction::triggered, m_simulation,
+                [this, ms] { m_simulation->setPeriodMs(ms); });
+    }
+    menu->addSeparator();
+    menu->addAction(tr("Release All &Forces"), m_simulation, &SimulationController::releaseAll);
     bar->addSeparator();
     for (QAction *a : {run, pause, stop, scan})
         bar->addAction(a);

@@ -46,7 +46,9 @@ std::vector<model::Diagnostic> onlyErrors(std::vector<model::Diagnostic> all) {
 SimulationController::SimulationController(editor::Document *document, QObject *parent)
     : QObject(parent)
     , m_document(document)
-    , m_speed(QSettings().value(QStringLiteral("simulation/speed"), 1.0).toDouble()) {
+    , m_speed(QSettings().value(QStringLiteral("simulation/speed"), 1.0).toDouble())
+    , m_periodMs(std::max<qint64>(
+          1, QSettings().value(QStringLiteral("simulation/periodMs"), 10).toLongLong())) {
     connect(document, &editor::Document::programChanged, this,
             &SimulationController::programChanged);
 }
@@ -88,6 +90,7 @@ bool SimulationController::ensureSession() {
     m_session = std::make_unique<simulator::SimulatorSession>(compiled.program);
     m_running = list.instructions;
     m_session->setSpeed(m_speed);
+    m_session->setPeriodMs(m_periodMs);
     connect(m_session.get(), &model::MonitorSource::snapshotChanged, this,
             &SimulationController::statusChanged);
     connect(m_session.get(), &model::MonitorSource::runStateChanged, this,
@@ -165,6 +168,19 @@ void SimulationController::setSpeed(double factor) {
     if (m_session)
         m_session->setSpeed(m_speed);
     emit statusChanged();
+}
+
+void SimulationController::setPeriodMs(qint64 periodMs) {
+    m_periodMs = std::max<qint64>(1, periodMs);
+    QSettings().setValue(QStringLiteral("simulation/periodMs"), m_periodMs);
+    if (m_session)
+        m_session->setPeriodMs(m_periodMs);
+    emit statusChanged();
+}
+
+void SimulationController::releaseAll() {
+    if (m_session)
+        m_session->releaseAll();
 }
 
 QString SimulationController::statusText() const {

@@ -50,6 +50,10 @@ public:
     // Times real time; 0: as fast as the engine goes. Kept for the next session too.
     void setSpeed(double factor);
     double speed() const { return m_speed; }
+    // The virtual scan period (>= 1 ms; the engine's default is 10), kept like the speed.
+    void setPeriodMs(qint64 periodMs);
+    qint64 periodMs() const { return m_periodMs; }
+    void releaseAll(); // every forced device
 
     // The status line: run state, simulated time, scans, scan time (the virtual period) and
     // the evaluation time current/min/max.
@@ -74,6 +78,7 @@ private:
     std::unique_ptr<simulator::SimulatorSession> m_session;
     std::vector<model::Instruction> m_running; // the instructions the session was built from
     double m_speed = 1.0;
+    qint64 m_periodMs = 10;
 };
 
 } // namespace rung::app

@@ -195,6 +195,41 @@ TEST_F(Simulation, TheSpeedChosenInTheMenuGoesToTheSession) {
     sim()->setSpeed(1.0); // what the next test starts with (QSettings)
 }
 
+TEST_F(Simulation, TheScanPeriodChosenInTheMenuIsTheVirtualTimeOfAScan) {
+    load(kFlipFlop);
+    QAction *five = test::menuAction(window, QStringLiteral("5 ms"));
+    ASSERT_NE(five, nullptr);
+    five->trigger();
+    ASSERT_TRUE(sim()->singleScan());
+    ASSERT_NE(waitFor([](const model::Snapshot &s) { return s.statistics.scans == 1; }), nullptr);
+    ASSERT_TRUE(sim()->singleScan());
+    const auto s = waitFor([](const model::Snapshot &s) { return s.statistics.scans == 2; });
+    ASSERT_NE(s, nullptr);
+    EXPECT_EQ(s->statistics.periodMs, 5);
+    EXPECT_EQ(s->statistics.timeMs, 10);
+    QTest::qWait(100);
+    EXPECT_TRUE(status().contains(QStringLiteral("| scan 5 ms |"))) << status().toStdString();
+    test::menuAction(window, QStringLiteral("10 ms"))->trigger(); // the next test's (QSettings)
+}
+
+TEST_F(Simulation, ReleaseAllForcesEndsEveryForce) {
+    load(kFlipFlop);
+    ASSERT_TRUE(sim()->singleScan());
+    sim()->session()->force(at("X0"), true);
+    sim()->session()->force(at("M5"), true);
+    ASSERT_NE(waitFor([this](const model::Snapshot &s) {
+                  return s.forced(at("X0")) && s.forced(at("M5"));
+              }),
+              nullptr);
+    QAction *release = test::menuAction(window, QStringLiteral("Release All Forces"));
+    ASSERT_NE(release, nullptr);
+    release->trigger();
+    ASSERT_NE(waitFor([this](const model::Snapshot &s) {
+                  return !s.forced(at("X0")) && !s.forced(at("M5"));
+              }),
+              nullptr);
+}
+
 TEST_F(Simulation, TheWatchListShowsTheRunningValues) {
     load(kFlipFlop);
     window.document()->setWatchLists({{QStringLiteral("W"), {QStringLiteral("Y1")}}},
