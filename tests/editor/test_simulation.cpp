@@ -163,6 +163,22 @@ TEST_F(Simulation, TheKeysRunPauseScanAndStopFromTheLadder) {
         << status().toStdString();
 }
 
+TEST_F(Simulation, TheKeysWorkFromTheInstructionListToo) {
+    load(kFlipFlop);
+    window.setSideBySide(true);
+    showActive();
+    window.ilEditor()->setFocus();
+    ASSERT_TRUE(window.ilEditor()->hasFocus());
+    QTest::keyClick(window.ilEditor(), Qt::Key_F12);
+    EXPECT_NE(sim()->session(), nullptr);
+    QTest::keyClick(window.ilEditor(), Qt::Key_F10);
+    EXPECT_EQ(sim()->runState(), State::Running);
+    QTest::keyClick(window.ilEditor(), Qt::Key_F11);
+    EXPECT_EQ(sim()->runState(), State::Paused);
+    EXPECT_EQ(window.ilEditor()->text(), listing()); // nothing typed into the list
+    window.setSideBySide(false);                     // the next test's (QSettings)
+}
+
 TEST_F(Simulation, SingleScansFromPowerOnCountOneEach) {
     load(kFlipFlop);
     ASSERT_TRUE(sim()->singleScan());
