@@ -4,7 +4,7 @@
 <context>
     <name>rung::app::MainWindow</name>
     <message numerus="yes">
-        <location filename="../app/gui/main_window.cpp" line="+289"/>
+        <location filename="../app/gui/main_window.cpp" line="+290"/>
         <source>%n rung(s)</source>
         <translation>
             <numerusform>%n rung</numerusform>
@@ -33,6 +33,17 @@
         <translation>
             <numerusform>%n place changed</numerusform>
             <numerusform>%n places changed</numerusform>
+        </translation>
+    </message>
+</context>
+<context>
+    <name>rung::app::SimulationController</name>
+    <message numerus="yes">
+        <location filename="../app/gui/simulation_controller.cpp" line="+85"/>
+        <source>The program has %n error(s): the simulation does not start; the Problems list shows them</source>
+        <translation>
+            <numerusform>The program has %n error: the simulation does not start; the Problems list shows it</numerusform>
+            <numerusform>The program has %n errors: the simulation does not start; the Problems list shows them</numerusform>
         </translation>
     </message>
 </context>

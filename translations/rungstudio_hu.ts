@@ -255,7 +255,7 @@ Kilépési kód: 0 nincs hiba, 1 a programban hiba van, 2 használati vagy I/O h
 <context>
     <name>rung::app::MainWindow</name>
     <message>
-        <location filename="../app/gui/main_window.cpp" line="+153"/>
+        <location filename="../app/gui/main_window.cpp" line="+154"/>
         <source>Problems</source>
         <translation>Problémák</translation>
     </message>
@@ -463,7 +463,12 @@ Kilépési kód: 0 nincs hiba, 1 a programban hiba van, 2 használati vagy I/O h
         <translation>S&amp;or törlése</translation>
     </message>
     <message>
-        <location line="+79"/>
+        <location line="+61"/>
+        <source>Simulation: F10 run, F11 pause, Shift+F11 stop, F12 single scan, Ctrl+Shift+F12 power cycle</source>
+        <translation>Szimuláció: F10 futtatás, F11 szünet, Shift+F11 leállítás, F12 egy ciklus, Ctrl+Shift+F12 ki-bekapcsolás</translation>
+    </message>
+    <message>
+        <location line="+22"/>
         <source>&amp;Undo</source>
         <translation>&amp;Visszavonás</translation>
     </message>
@@ -473,7 +478,7 @@ Kilépési kód: 0 nincs hiba, 1 a programban hiba van, 2 használati vagy I/O h
         <translation>&amp;Mégis</translation>
     </message>
     <message>
-        <location line="-163"/>
+        <location line="-167"/>
         <source>Select</source>
         <translation>Kijelölés</translation>
     </message>
@@ -590,7 +595,7 @@ Kilépési kód: 0 nincs hiba, 1 a programban hiba van, 2 használati vagy I/O h
         <translation>Program ellen&amp;őrzése</translation>
     </message>
     <message>
-        <location line="+3"/>
+        <location line="+4"/>
         <source>&amp;Language</source>
         <translation>N&amp;yelv</translation>
     </message>
@@ -629,7 +634,7 @@ Delete: törlés, Ctrl+Delete: a sor törlése, Shift+Delete: a létrafok törl�
 Ctrl+Z / Ctrl+Y: visszavonás / mégis, Ctrl+görgő: nagyítás, F4: a program ellenőrzése</translation>
     </message>
     <message>
-        <location line="+9"/>
+        <location line="+12"/>
         <source>&amp;About Rung Studio</source>
         <translation>A Rung Studio &amp;névjegye</translation>
     </message>
@@ -974,6 +979,72 @@ Létradiagram- és utasításlista-szerkesztő VPC, Vigor, CPM1 és PL110 PLC-kh
         <source>Export Symbols</source>
         <translation>Szimbólumok exportálása</translation>
     </message>
+    <message>
+        <location filename="../app/gui/main_window_simulation.cpp" line="+32"/>
+        <source>The instruction list has errors, so the ladder still shows the last program without them: correct the list (or undo) before simulating</source>
+        <translation>Az utasításlistában hibák vannak, ezért a létra még az utolsó hibátlan programot mutatja: a szimuláció előtt javítsa a listát (vagy vonja vissza a módosítást)</translation>
+    </message>
+    <message>
+        <location line="+34"/>
+        <source>&amp;Simulation</source>
+        <translation>Szi&amp;muláció</translation>
+    </message>
+    <message>
+        <location line="+10"/>
+        <source>&amp;Run</source>
+        <translation>&amp;Futtatás</translation>
+    </message>
+    <message>
+        <location line="+2"/>
+        <source>&amp;Pause</source>
+        <translation>&amp;Szünet</translation>
+    </message>
+    <message>
+        <location line="+2"/>
+        <source>&amp;Stop (Back to Power-On)</source>
+        <translation>&amp;Leállítás (bekapcsolási állapot)</translation>
+    </message>
+    <message>
+        <location line="+2"/>
+        <source>Single S&amp;can</source>
+        <translation>Egy &amp;ciklus</translation>
+    </message>
+    <message>
+        <location line="+3"/>
+        <source>Po&amp;wer Cycle</source>
+        <translation>&amp;Ki-bekapcsolás</translation>
+    </message>
+    <message>
+        <location line="+2"/>
+        <source>Spee&amp;d</source>
+        <translation>S&amp;ebesség</translation>
+    </message>
+    <message>
+        <location line="+3"/>
+        <source>x%1 Real Time</source>
+        <translation>x%1 valós idő</translation>
+    </message>
+    <message>
+        <location line="+1"/>
+        <source>As &amp;Fast as Possible</source>
+        <translation>A lehető &amp;leggyorsabban</translation>
+    </message>
+    <message>
+        <location line="+7"/>
+        <source>Scan Peri&amp;od</source>
+        <translation>Cikl&amp;usidő</translation>
+    </message>
+    <message>
+        <location line="+4"/>
+        <source>%1 ms</source>
+        <extracomment>the virtual scan period, e.g. &quot;10 ms&quot;</extracomment>
+        <translation>%1 ms</translation>
+    </message>
+    <message>
+        <location line="+8"/>
+        <source>Release All &amp;Forces</source>
+        <translation>&amp;Minden kényszerítés feloldása</translation>
+    </message>
 </context>
 <context>
     <name>rung::app::ProgramExport</name>
@@ -1092,6 +1163,57 @@ Létradiagram- és utasításlista-szerkesztő VPC, Vigor, CPM1 és PL110 PLC-kh
         <location line="+11"/>
         <source>runtime error at step %1: %2</source>
         <translation>futási hiba a(z) %1. lépésnél: %2</translation>
+    </message>
+</context>
+<context>
+    <name>rung::app::SimulationController</name>
+    <message numerus="yes">
+        <location filename="../app/gui/simulation_controller.cpp" line="+85"/>
+        <source>The program has %n error(s): the simulation does not start; the Problems list shows them</source>
+        <translation>
+            <numerusform>A programban %n hiba van: a szimuláció nem indul el; a Problémák lista mutatja őket</numerusform>
+        </translation>
+    </message>
+    <message>
+        <location line="+45"/>
+        <source>The program was edited: the simulation stopped. Run starts the edited program from power-on</source>
+        <translation>A program megváltozott: a szimuláció leállt. A Futtatás a módosított programot indítja, a bekapcsolási állapotból</translation>
+    </message>
+    <message>
+        <location line="+69"/>
+        <source>Simulation off</source>
+        <translation>Szimuláció kikapcsolva</translation>
+    </message>
+    <message>
+        <location line="+2"/>
+        <source>Stopped</source>
+        <translation>Leállítva</translation>
+    </message>
+    <message>
+        <location line="+3"/>
+        <source>Paused</source>
+        <translation>Szüneteltetve</translation>
+    </message>
+    <message>
+        <location line="+3"/>
+        <source>Running x%1</source>
+        <translation>Fut x%1</translation>
+    </message>
+    <message>
+        <location line="+0"/>
+        <source>Running at full speed</source>
+        <translation>Fut, teljes sebességgel</translation>
+    </message>
+    <message>
+        <location line="+3"/>
+        <source>Stepping</source>
+        <translation>Léptetés</translation>
+    </message>
+    <message>
+        <location line="+8"/>
+        <source>%1 | %2 | %3 scans | scan %4 ms | evaluation %5 µs (%6..%7)</source>
+        <extracomment>%1 run state, %2 simulated time h:mm:ss.cc, %3 scans, %4 scan period in ms, %5 %6 %7 time the last scan took to evaluate: current, minimum, maximum, in µs</extracomment>
+        <translation>%1 | %2 | %3 ciklus | ciklusidő %4 ms | kiértékelés %5 µs (%6..%7)</translation>
     </message>
 </context>
 <context>
@@ -1608,7 +1730,7 @@ Létradiagram- és utasításlista-szerkesztő VPC, Vigor, CPM1 és PL110 PLC-kh
         <translation>%1. létrafok</translation>
     </message>
     <message>
-        <location line="+18"/>
+        <location line="+21"/>
         <source>The first %1 uses; type a device or a prefix for the rest</source>
         <translation>Az első %1 előfordulás; a többihez írjon be egy operandust vagy előtagot</translation>
     </message>
@@ -1936,7 +2058,7 @@ Létradiagram- és utasításlista-szerkesztő VPC, Vigor, CPM1 és PL110 PLC-kh
 <context>
     <name>rung::editor::WatchListView</name>
     <message>
-        <location filename="../editor/watch_list_view.cpp" line="+45"/>
+        <location filename="../editor/watch_list_view.cpp" line="+67"/>
         <location line="+1"/>
         <source>Watch list</source>
         <translation>Figyelőlista</translation>
@@ -1952,24 +2074,71 @@ Létradiagram- és utasításlista-szerkesztő VPC, Vigor, CPM1 és PL110 PLC-kh
         <translation>Érték</translation>
     </message>
     <message>
-        <location line="+43"/>
+        <location line="+182"/>
         <source>not a device</source>
         <translation>nem operandus</translation>
     </message>
     <message>
-        <location line="+4"/>
+        <location line="-82"/>
+        <location line="+86"/>
         <location line="+6"/>
         <source>ON</source>
         <translation>BE</translation>
     </message>
     <message>
-        <location line="-6"/>
+        <location line="-127"/>
+        <source>%1 is a timer or counter: its current value follows the program and cannot be written here</source>
+        <translation>%1 időzítő vagy számláló: aktuális értékét a program határozza meg, itt nem írható</translation>
+    </message>
+    <message>
+        <location line="+38"/>
+        <location line="+83"/>
         <location line="+6"/>
         <source>OFF</source>
         <translation>KI</translation>
     </message>
     <message>
-        <location line="-3"/>
+        <location line="-86"/>
+        <source>&quot;%1&quot; is no value for %2: type ON or OFF (1 or 0)</source>
+        <translation>„%1” nem érték ehhez: %2; írjon BE vagy KI értéket (1 vagy 0)</translation>
+    </message>
+    <message>
+        <location line="+10"/>
+        <source>&quot;%1&quot; is no value for %2: type a whole number (0x before a hexadecimal one)</source>
+        <translation>„%1” nem érték ehhez: %2; írjon egész számot (hexadecimális elé 0x)</translation>
+    </message>
+    <message>
+        <location line="+22"/>
+        <source>Set ON</source>
+        <translation>BE-kapcsolás</translation>
+    </message>
+    <message>
+        <location line="+4"/>
+        <source>Set OFF</source>
+        <translation>KI-kapcsolás</translation>
+    </message>
+    <message>
+        <location line="+4"/>
+        <source>Force ON</source>
+        <translation>Kényszerítés BE</translation>
+    </message>
+    <message>
+        <location line="+4"/>
+        <source>Force OFF</source>
+        <translation>Kényszerítés KI</translation>
+    </message>
+    <message>
+        <location line="+4"/>
+        <source>Release</source>
+        <translation>Kényszerítés feloldása</translation>
+    </message>
+    <message>
+        <location line="+7"/>
+        <source>Write Value...</source>
+        <translation>Érték írása...</translation>
+    </message>
+    <message>
+        <location line="+28"/>
         <source>%1 of %2, %3</source>
         <translation>%1 / %2, %3</translation>
     </message>
@@ -1979,7 +2148,7 @@ Létradiagram- és utasításlista-szerkesztő VPC, Vigor, CPM1 és PL110 PLC-kh
         <translation>%1 (kényszerített)</translation>
     </message>
     <message>
-        <location line="+42"/>
+        <location line="+43"/>
         <source>Watch 1</source>
         <translation>Figyelés 1</translation>
     </message>

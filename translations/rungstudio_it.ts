@@ -255,7 +255,7 @@ Codice di uscita: 0 nessun errore, 1 il programma contiene errori, 2 errore di u
 <context>
     <name>rung::app::MainWindow</name>
     <message>
-        <location filename="../app/gui/main_window.cpp" line="+153"/>
+        <location filename="../app/gui/main_window.cpp" line="+154"/>
         <source>Problems</source>
         <translation>Problemi</translation>
     </message>
@@ -463,7 +463,12 @@ Codice di uscita: 0 nessun errore, 1 il programma contiene errori, 2 errore di u
         <translation>E&amp;limina riga</translation>
     </message>
     <message>
-        <location line="+79"/>
+        <location line="+61"/>
+        <source>Simulation: F10 run, F11 pause, Shift+F11 stop, F12 single scan, Ctrl+Shift+F12 power cycle</source>
+        <translation>Simulazione: F10 esegui, F11 pausa, Shift+F11 stop, F12 singola scansione, Ctrl+Shift+F12 spegni e riaccendi</translation>
+    </message>
+    <message>
+        <location line="+22"/>
         <source>&amp;Undo</source>
         <translation>&amp;Annulla</translation>
     </message>
@@ -473,7 +478,7 @@ Codice di uscita: 0 nessun errore, 1 il programma contiene errori, 2 errore di u
         <translation>&amp;Ripeti</translation>
     </message>
     <message>
-        <location line="-163"/>
+        <location line="-167"/>
         <source>Select</source>
         <translation>Seleziona</translation>
     </message>
@@ -590,7 +595,7 @@ Codice di uscita: 0 nessun errore, 1 il programma contiene errori, 2 errore di u
         <translation>&amp;Verifica programma</translation>
     </message>
     <message>
-        <location line="+3"/>
+        <location line="+4"/>
         <source>&amp;Language</source>
         <translation>&amp;Lingua</translation>
     </message>
@@ -629,7 +634,7 @@ Delete: cancella, Ctrl+Delete: elimina la riga, Shift+Delete: elimina il segment
 Ctrl+Z / Ctrl+Y: annulla / ripeti, Ctrl+rotellina: zoom, F4: verifica il programma</translation>
     </message>
     <message>
-        <location line="+9"/>
+        <location line="+12"/>
         <source>&amp;About Rung Studio</source>
         <translation>&amp;Informazioni su Rung Studio</translation>
     </message>
@@ -978,6 +983,72 @@ Editor di schemi ladder e liste istruzioni per VPC, Vigor, CPM1 e PL110.</transl
         <source>Export Symbols</source>
         <translation>Esporta simboli</translation>
     </message>
+    <message>
+        <location filename="../app/gui/main_window_simulation.cpp" line="+32"/>
+        <source>The instruction list has errors, so the ladder still shows the last program without them: correct the list (or undo) before simulating</source>
+        <translation>La lista istruzioni contiene errori, quindi il ladder mostra ancora l&apos;ultimo programma senza errori: correggere la lista (o annullare) prima di simulare</translation>
+    </message>
+    <message>
+        <location line="+34"/>
+        <source>&amp;Simulation</source>
+        <translation>&amp;Simulazione</translation>
+    </message>
+    <message>
+        <location line="+10"/>
+        <source>&amp;Run</source>
+        <translation>&amp;Esegui</translation>
+    </message>
+    <message>
+        <location line="+2"/>
+        <source>&amp;Pause</source>
+        <translation>&amp;Pausa</translation>
+    </message>
+    <message>
+        <location line="+2"/>
+        <source>&amp;Stop (Back to Power-On)</source>
+        <translation>&amp;Stop (stato di accensione)</translation>
+    </message>
+    <message>
+        <location line="+2"/>
+        <source>Single S&amp;can</source>
+        <translation>Singola s&amp;cansione</translation>
+    </message>
+    <message>
+        <location line="+3"/>
+        <source>Po&amp;wer Cycle</source>
+        <translation>Spegni e &amp;riaccendi</translation>
+    </message>
+    <message>
+        <location line="+2"/>
+        <source>Spee&amp;d</source>
+        <translation>&amp;Velocità</translation>
+    </message>
+    <message>
+        <location line="+3"/>
+        <source>x%1 Real Time</source>
+        <translation>x%1 tempo reale</translation>
+    </message>
+    <message>
+        <location line="+1"/>
+        <source>As &amp;Fast as Possible</source>
+        <translation>Il più &amp;veloce possibile</translation>
+    </message>
+    <message>
+        <location line="+7"/>
+        <source>Scan Peri&amp;od</source>
+        <translation>Peri&amp;odo di scansione</translation>
+    </message>
+    <message>
+        <location line="+4"/>
+        <source>%1 ms</source>
+        <extracomment>the virtual scan period, e.g. &quot;10 ms&quot;</extracomment>
+        <translation>%1 ms</translation>
+    </message>
+    <message>
+        <location line="+8"/>
+        <source>Release All &amp;Forces</source>
+        <translation>Rilascia tutte le &amp;forzature</translation>
+    </message>
 </context>
 <context>
     <name>rung::app::ProgramExport</name>
@@ -1096,6 +1167,58 @@ Editor di schemi ladder e liste istruzioni per VPC, Vigor, CPM1 e PL110.</transl
         <location line="+11"/>
         <source>runtime error at step %1: %2</source>
         <translation>errore di esecuzione al passo %1: %2</translation>
+    </message>
+</context>
+<context>
+    <name>rung::app::SimulationController</name>
+    <message numerus="yes">
+        <location filename="../app/gui/simulation_controller.cpp" line="+85"/>
+        <source>The program has %n error(s): the simulation does not start; the Problems list shows them</source>
+        <translation>
+            <numerusform>Il programma ha %n errore: la simulazione non parte; l&apos;elenco Problemi lo mostra</numerusform>
+            <numerusform>Il programma ha %n errori: la simulazione non parte; l&apos;elenco Problemi li mostra</numerusform>
+        </translation>
+    </message>
+    <message>
+        <location line="+45"/>
+        <source>The program was edited: the simulation stopped. Run starts the edited program from power-on</source>
+        <translation>Il programma è stato modificato: la simulazione si è fermata. Esegui avvia il programma modificato dallo stato di accensione</translation>
+    </message>
+    <message>
+        <location line="+69"/>
+        <source>Simulation off</source>
+        <translation>Simulazione spenta</translation>
+    </message>
+    <message>
+        <location line="+2"/>
+        <source>Stopped</source>
+        <translation>Fermata</translation>
+    </message>
+    <message>
+        <location line="+3"/>
+        <source>Paused</source>
+        <translation>In pausa</translation>
+    </message>
+    <message>
+        <location line="+3"/>
+        <source>Running x%1</source>
+        <translation>In esecuzione x%1</translation>
+    </message>
+    <message>
+        <location line="+0"/>
+        <source>Running at full speed</source>
+        <translation>In esecuzione alla massima velocità</translation>
+    </message>
+    <message>
+        <location line="+3"/>
+        <source>Stepping</source>
+        <translation>Passo passo</translation>
+    </message>
+    <message>
+        <location line="+8"/>
+        <source>%1 | %2 | %3 scans | scan %4 ms | evaluation %5 µs (%6..%7)</source>
+        <extracomment>%1 run state, %2 simulated time h:mm:ss.cc, %3 scans, %4 scan period in ms, %5 %6 %7 time the last scan took to evaluate: current, minimum, maximum, in µs</extracomment>
+        <translation>%1 | %2 | %3 scansioni | scansione %4 ms | valutazione %5 µs (%6..%7)</translation>
     </message>
 </context>
 <context>
@@ -1612,7 +1735,7 @@ Editor di schemi ladder e liste istruzioni per VPC, Vigor, CPM1 e PL110.</transl
         <translation>segmento %1</translation>
     </message>
     <message>
-        <location line="+18"/>
+        <location line="+21"/>
         <source>The first %1 uses; type a device or a prefix for the rest</source>
         <translation>Primi %1 utilizzi; digitare un operando o un prefisso per vedere gli altri</translation>
     </message>
@@ -1941,7 +2064,7 @@ Editor di schemi ladder e liste istruzioni per VPC, Vigor, CPM1 e PL110.</transl
 <context>
     <name>rung::editor::WatchListView</name>
     <message>
-        <location filename="../editor/watch_list_view.cpp" line="+45"/>
+        <location filename="../editor/watch_list_view.cpp" line="+67"/>
         <location line="+1"/>
         <source>Watch list</source>
         <translation>Lista di osservazione</translation>
@@ -1957,24 +2080,71 @@ Editor di schemi ladder e liste istruzioni per VPC, Vigor, CPM1 e PL110.</transl
         <translation>Valore</translation>
     </message>
     <message>
-        <location line="+43"/>
+        <location line="+182"/>
         <source>not a device</source>
         <translation>non è un operando</translation>
     </message>
     <message>
-        <location line="+4"/>
+        <location line="-82"/>
+        <location line="+86"/>
         <location line="+6"/>
         <source>ON</source>
         <translation>ON</translation>
     </message>
     <message>
-        <location line="-6"/>
+        <location line="-127"/>
+        <source>%1 is a timer or counter: its current value follows the program and cannot be written here</source>
+        <translation>%1 è un temporizzatore o un contatore: il suo valore corrente segue il programma e qui non si può scrivere</translation>
+    </message>
+    <message>
+        <location line="+38"/>
+        <location line="+83"/>
         <location line="+6"/>
         <source>OFF</source>
         <translation>OFF</translation>
     </message>
     <message>
-        <location line="-3"/>
+        <location line="-86"/>
+        <source>&quot;%1&quot; is no value for %2: type ON or OFF (1 or 0)</source>
+        <translation>&quot;%1&quot; non è un valore per %2: scrivere ON o OFF (1 o 0)</translation>
+    </message>
+    <message>
+        <location line="+10"/>
+        <source>&quot;%1&quot; is no value for %2: type a whole number (0x before a hexadecimal one)</source>
+        <translation>&quot;%1&quot; non è un valore per %2: scrivere un numero intero (0x davanti a uno esadecimale)</translation>
+    </message>
+    <message>
+        <location line="+22"/>
+        <source>Set ON</source>
+        <translation>Imposta ON</translation>
+    </message>
+    <message>
+        <location line="+4"/>
+        <source>Set OFF</source>
+        <translation>Imposta OFF</translation>
+    </message>
+    <message>
+        <location line="+4"/>
+        <source>Force ON</source>
+        <translation>Forza ON</translation>
+    </message>
+    <message>
+        <location line="+4"/>
+        <source>Force OFF</source>
+        <translation>Forza OFF</translation>
+    </message>
+    <message>
+        <location line="+4"/>
+        <source>Release</source>
+        <translation>Rilascia</translation>
+    </message>
+    <message>
+        <location line="+7"/>
+        <source>Write Value...</source>
+        <translation>Scrivi valore...</translation>
+    </message>
+    <message>
+        <location line="+28"/>
         <source>%1 of %2, %3</source>
         <translation>%1 di %2, %3</translation>
     </message>
@@ -1984,7 +2154,7 @@ Editor di schemi ladder e liste istruzioni per VPC, Vigor, CPM1 e PL110.</transl
         <translation>%1 (forzato)</translation>
     </message>
     <message>
-        <location line="+42"/>
+        <location line="+43"/>
         <source>Watch 1</source>
         <translation>Osservazione 1</translation>
     </message>

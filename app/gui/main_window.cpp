@@ -56,6 +56,7 @@ MainWindow::MainWindow(QWidget *parent)
 
     buildDocks();
     buildCrossReference();
+    setupSimulation();
     buildActions();
 
     m_ilTimer.setSingleShot(true);

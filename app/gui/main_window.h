@@ -32,6 +32,7 @@ class WatchListView;
 namespace rung::app {
 
 class RecoveryFile;
+class SimulationController;
 class SymbolTable;
 
 class MainWindow : public QMainWindow {
@@ -74,6 +75,7 @@ public:
     bool findDevice(const QString &device, bool backwards);
     SymbolTable *symbolTable() const { return m_symbols; }
     editor::WatchListView *watchListView() const { return m_watch; }
+    SimulationController *simulation() const { return m_simulation; }
     QLineEdit *crossReferenceDevice() { return m_crossDevice; }
     QTreeWidget *crossReference() { return m_crossTree; }
     void writeRecovery();
@@ -131,6 +133,10 @@ private:
     // A save dialog, then completeSavePath.
     QString askSavePath(const QString &title, const QString &filter, const QStringList &suffixes);
     void buildCrossReference();
+    // The simulation (main_window_simulation.cpp).
+    void setupSimulation();
+    void buildSimulationMenu(QToolBar *bar);
+    void updateSimulationStatus();
 
     editor::Document *m_document;
     editor::LadderView *m_ladder;
@@ -150,6 +156,8 @@ private:
     QLabel *m_statusTarget;
     QLabel *m_statusSteps;
     QLabel *m_statusCursor;
+    SimulationController *m_simulation = nullptr;
+    QLabel *m_statusSimulation = nullptr;
     QMenu *m_recentMenu = nullptr;
     QMenu *m_examplesMenu = nullptr;
     QTimer m_ilTimer;

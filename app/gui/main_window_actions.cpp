@@ -264,6 +264,7 @@ void MainWindow::buildActions() {
         ->setShortcut(QKeySequence::ZoomOut);
     view->addAction(tr("&Check Program"), this, [this] { refreshFromDocument(); })
         ->setShortcut(Qt::Key_F4);
+    buildSimulationMenu(bar); // main_window_simulation.cpp
 
     QMenu *language = menuBar()->addMenu(tr("&Language"));
     auto *group = new QActionGroup(language);
@@ -291,7 +292,10 @@ void MainWindow::buildActions() {
                "Type an instruction into the cell: LD X0, ANI X2, OUT Y1, TMR T0 K10\n"
                "Insert: insert a cell, Ctrl+Insert: insert a row, Shift+Insert: insert a rung\n"
                "Delete: clear, Ctrl+Delete: delete the row, Shift+Delete: delete the rung\n"
-               "Ctrl+Z / Ctrl+Y: undo / redo, Ctrl+wheel: zoom, F4: check the program"));
+               "Ctrl+Z / Ctrl+Y: undo / redo, Ctrl+wheel: zoom, F4: check the program") +
+                QLatin1Char('\n') +
+                tr("Simulation: F10 run, F11 pause, Shift+F11 stop, F12 single scan, "
+                   "Ctrl+Shift+F12 power cycle"));
     });
     help->addAction(tr("&About Rung Studio"), this, [this] {
         QMessageBox::about(
