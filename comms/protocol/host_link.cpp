@@ -284,7 +284,7 @@ FrameStatus ReplyDecoder::feed(QByteArrayView bytes) {
         }
         if (c != Cr) {
             m_buffer += c;
-            if (m_buffer.size() > MaxFirstFrame)
+            if (m_buffer.size() >= MaxFirstFrame) // a part is at most 130 before its CR
                 return fail(Kind::Garbage,
                             QCoreApplication::translate(
                                 "rung::comms::Protocol",
@@ -349,12 +349,33 @@ FrameStatus ReplyDecoder::part(QByteArrayView frame) {
         m_reply.frame.endCode = *endCode;
         text = text.sliced(7);
     }
+    if (m_reply.frame.text.size() + text.size() > maxReplyText())
+        return fail(Kind::Malformed,
+                    QCoreApplication::translate(
+                        "rung::comms::Protocol",
+                        "Host Link: the reply to %1 goes on past the %2 characters of data the "
+                        "command asks for (part %3): not the answer to this command")
+                        .arg(QString::fromLatin1(m_command.header))
+                        .arg(maxReplyText())
+                        .arg(m_parts));
     m_reply.frame.text += text;
     if (!p.last) {
         m_delimiter = true;
         return m_status;
     }
     return finish();
+}
+
+// The most data characters the reply to this command can hold, so that a stream of parts
+// that never ends fails instead of growing: a read's words or flags; one frame for the rest.
+qsizetype ReplyDecoder::maxReplyText() const {
+    Area area;
+    bool write = false;
+    if (areaOfHeader(m_command.header, area, write) && !write) {
+        const int count = decimalValue(m_command.text, 4, 4).value_or(0);
+        return area == Area::Completion ? count : 4 * count;
+    }
+    return MaxFirstFrame;
 }
 
 FrameStatus ReplyDecoder::finish() {
@@ -460,6 +481,22 @@ void CommandDecoder::next() {
     feed({});
 }
 
+// While a command waits for next(), what follows it is the next command's start at most (a
+// master waits for the answer); more than a part's worth is a stream gone wrong: dropped.
+void CommandDecoder::keepPending() {
+    if (m_buffer.size() <= MaxPartBuffer)
+        return;
+    m_discarded = {Kind::Garbage, 0,
+                   QCoreApplication::translate(
+                       "rung::comms::Protocol",
+                       "Host Link: %1 characters arrived before the command was answered; "
+                       "the %2 beyond the first %3 were dropped")
+                       .arg(m_buffer.size())
+                       .arg(m_buffer.size() - MaxPartBuffer)
+                       .arg(MaxPartBuffer)};
+    m_buffer.truncate(MaxPartBuffer);
+}
+
 FrameStatus CommandDecoder::feed(QByteArrayView bytes) {
     m_buffer += bytes;
     while (m_status == FrameStatus::NeedMore) {
@@ -468,10 +505,24 @@ FrameStatus CommandDecoder::feed(QByteArrayView bytes) {
             m_buffer.remove(0, at < 0 ? m_buffer.size() : at); // noise between commands
         }
         const qsizetype cr = m_buffer.indexOf(Cr);
-        if (cr < 0) {
-            if (m_buffer.size() > 4 * MaxFirstFrame) // no CR in sight: resynchronise
-                m_buffer.clear();
-            return m_status;
+        if (cr < 0 || cr > MaxPartBuffer) {
+            if (m_buffer.size() <= MaxPartBuffer)
+                return m_status;
+            // No CR in sight: neither a part nor one the PLC would answer 18 to. Resynchronise
+            // at the next "@" (the command so far is dropped with it).
+            m_discarded = {Kind::Garbage, 0,
+                           QCoreApplication::translate(
+                               "rung::comms::Protocol",
+                               "Host Link: %1 characters without a CR (a part holds at most "
+                               "%2): dropped, waiting for the next \"@\"")
+                               .arg(cr < 0 ? m_buffer.size() : cr)
+                               .arg(MaxFirstFrame)};
+            const qsizetype again = m_buffer.indexOf('@', 1);
+            m_buffer.remove(0, again < 0 ? m_buffer.size() : again);
+            m_parts = 0;
+            m_command = {};
+            m_endCode = 0;
+            continue;
         }
         const QByteArray frame = m_buffer.left(cr);
         m_buffer.remove(0, cr + 1);
@@ -488,18 +539,33 @@ FrameStatus CommandDecoder::feed(QByteArrayView bytes) {
             m_command.header = text.sliced(3, 2).toByteArray();
             text = text.sliced(5);
         }
+        if (m_command.text.size() + text.size() > MaxText) {
+            // Longer than any command can be (a count has four digits): answer 18 now and
+            // take what follows as noise until the next "@".
+            m_discarded = {Kind::Malformed, FrameLengthError,
+                           QCoreApplication::translate(
+                               "rung::comms::Protocol",
+                               "Host Link: the %1 command goes on past %2 characters in %3 "
+                               "parts, longer than any command; answered with end code 18")
+                               .arg(QString::fromLatin1(m_command.header))
+                               .arg(MaxText)
+                               .arg(m_parts)};
+            m_command.text.clear();
+            m_endCode = FrameLengthError;
+            m_status = FrameStatus::Complete;
+            break;
+        }
         m_command.text += text;
         if (!p.fcsOk && !m_endCode)
             m_endCode = FcsError;
         if (frame.size() + 1 > (first ? MaxFirstFrame : MaxLaterFrame) && !m_endCode)
             m_endCode = FrameLengthError;
-        if (p.last) {
+        if (p.last)
             m_status = FrameStatus::Complete;
-        } else {
-            m_delimiter = true;
-            return m_status;
-        }
+        else
+            m_delimiter = true; // a master waits for it; parts already here are read on
     }
+    keepPending();
     return m_status;
 }
 

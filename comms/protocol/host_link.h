@@ -22,6 +22,13 @@ namespace rung::comms::hostlink {
 inline constexpr char Cr = '\r';
 inline constexpr int MaxFirstFrame = 131;
 inline constexpr int MaxLaterFrame = 128;
+// The longest legal text of a command or reply, all parts joined: a count is four decimal
+// digits, so a write carries at most a begin word and 9999 words of four hex digits.
+inline constexpr int MaxWords = 9999;
+inline constexpr int MaxText = 4 + 4 * MaxWords;
+// Characters the slave holds while looking for a part's CR: a part too long for the PLC
+// (over 131) still gets its end code 18 up to this length; beyond it the bytes are noise.
+inline constexpr int MaxPartBuffer = 4 * MaxFirstFrame;
 
 // The word areas the read/write commands reach, with their headers.
 enum class Area : std::uint8_t {
@@ -96,11 +103,16 @@ public:
     FrameStatus status() const { return m_status; }
     const Reply &reply() const { return m_reply; }
     const ProtocolError &error() const { return m_error; }
+    // Characters held: the part being received and the text of the parts before it. Never
+    // more than MaxBuffered: a reply longer than its command asks for fails.
+    qsizetype buffered() const { return m_buffer.size() + m_reply.frame.text.size(); }
+    static constexpr qsizetype MaxBuffered = MaxFirstFrame + MaxText;
 
 private:
     FrameStatus fail(ProtocolError::Kind kind, QString message, int code = 0);
     FrameStatus part(QByteArrayView frame);
     FrameStatus finish();
+    qsizetype maxReplyText() const;
 
     Frame m_command;
     QByteArray m_buffer;
@@ -113,6 +125,10 @@ private:
 
 // Slave side: one command over any number of parts. endCode() is the code a PLC answers a
 // broken command with (13 FCS, 14 format, 18 frame length), 0 when the command is sound.
+// Memory stays bounded whatever arrives: a command whose parts go on past MaxText ends
+// Complete with end code 18 (its text dropped) and the decoder looks for the next "@"; bytes
+// that arrive while a command waits for next() are kept up to MaxPartBuffer, the rest dropped.
+// discarded() says what was thrown away last and why.
 class CommandDecoder {
 public:
     FrameStatus feed(QByteArrayView bytes);
@@ -120,15 +136,20 @@ public:
     FrameStatus status() const { return m_status; }
     const Frame &command() const { return m_command; }
     int endCode() const { return m_endCode; }
+    const ProtocolError &discarded() const { return m_discarded; }
+    qsizetype buffered() const { return m_buffer.size() + m_command.text.size(); }
+    static constexpr qsizetype MaxBuffered = MaxPartBuffer + MaxText;
     void next();
 
 private:
+    void keepPending();
     QByteArray m_buffer;
     int m_parts = 0;
     bool m_delimiter = false;
     FrameStatus m_status = FrameStatus::NeedMore;
     Frame m_command;
     int m_endCode = 0;
+    ProtocolError m_discarded;
 };
 
 // The text of a read / write / force command, as the slave reads it.

@@ -151,8 +151,8 @@ FrameStatus ReplyDecoder::feed(QByteArrayView bytes) {
         const qsizetype etx = m_buffer.indexOf(Etx);
         if (etx >= 0 && m_buffer.size() == etx + 3)
             return decode();
-        // A reply longer than the longest legal one is not going to end well.
-        if (m_buffer.size() > 1 + 6 + 2 * MaxBytes + 3)
+        // A reply as long as the longest legal one and still not ended is not going to end well.
+        if (m_buffer.size() >= MaxReplyFrame)
             return fail(Kind::Garbage, QCoreApplication::translate(
                                            "rung::comms::Protocol",
                                            "Vigor link: %1 bytes without the end of a frame (ETX)")
@@ -261,28 +261,60 @@ void RequestDecoder::next() {
 }
 
 FrameStatus RequestDecoder::feed(QByteArrayView bytes) {
-    if (m_status != FrameStatus::NeedMore) {
-        m_buffer += bytes; // kept for next()
-        return m_status;
-    }
     m_buffer += bytes;
-    const qsizetype stx = m_buffer.indexOf(Stx);
-    if (stx < 0) {
-        m_buffer.clear();
-        return m_status;
+    if (m_status == FrameStatus::NeedMore)
+        parse();
+    // While a request waits for next(), a master waits for its answer: more than one frame
+    // after it is a stream gone wrong, and the excess is dropped.
+    const qsizetype pending = m_buffer.size() - m_used;
+    if (m_status == FrameStatus::Complete && pending > MaxRequestFrame) {
+        m_discarded = {ProtocolError::Kind::Garbage, 0,
+                       QCoreApplication::translate(
+                           "rung::comms::Protocol",
+                           "Vigor link: %1 bytes arrived before the request was answered; the "
+                           "%2 beyond the first %3 were dropped")
+                           .arg(pending)
+                           .arg(pending - MaxRequestFrame)
+                           .arg(MaxRequestFrame)};
+        m_buffer.truncate(m_used + MaxRequestFrame);
     }
-    m_buffer.remove(0, stx);
-    const qsizetype etx = m_buffer.indexOf(Etx);
-    if (etx < 0) {
-        // A request is at most 1 + 10 + 256 + 3 bytes; more without ETX is noise: resync.
-        if (m_buffer.size() > 1 + 10 + 2 * MaxBytes + 3) {
-            const qsizetype again = m_buffer.indexOf(Stx, 1);
-            m_buffer.remove(0, again < 0 ? m_buffer.size() : again);
+    return m_status;
+}
+
+void RequestDecoder::parse() {
+    qsizetype etx = -1;
+    while (true) {
+        const qsizetype stx = m_buffer.indexOf(Stx);
+        if (stx < 0) {
+            m_buffer.clear(); // noise between frames
+            return;
         }
-        return m_status;
+        m_buffer.remove(0, stx);
+        etx = m_buffer.indexOf(Etx);
+        // STX cannot occur inside a frame (the payload is hex): a later one starts over.
+        const qsizetype restart =
+            etx < 0 ? m_buffer.lastIndexOf(Stx) : m_buffer.lastIndexOf(Stx, etx);
+        if (restart > 0) {
+            m_buffer.remove(0, restart);
+            etx = m_buffer.indexOf(Etx);
+        }
+        if (etx >= 0 && etx + 3 <= MaxRequestFrame)
+            break;
+        if (etx < 0 && m_buffer.size() <= MaxRequestFrame)
+            return; // the rest of the frame is on its way
+        // Longer than any request without its ETX: noise, or a frame that lost its ETX.
+        m_discarded = {ProtocolError::Kind::Garbage, 0,
+                       QCoreApplication::translate(
+                           "rung::comms::Protocol",
+                           "Vigor link: %1 bytes from STX without ETX (a request holds at most "
+                           "%2): dropped up to the next STX")
+                           .arg(etx < 0 ? m_buffer.size() : etx + 1)
+                           .arg(MaxRequestFrame)};
+        const qsizetype again = m_buffer.indexOf(Stx, 1);
+        m_buffer.remove(0, again < 0 ? m_buffer.size() : again);
     }
     if (m_buffer.size() < etx + 3)
-        return m_status;
+        return;
     m_used = etx + 3;
     m_status = FrameStatus::Complete;
     const QByteArrayView frame = QByteArrayView(m_buffer).first(m_used);
@@ -293,16 +325,16 @@ FrameStatus RequestDecoder::feed(QByteArrayView bytes) {
     m_request.command = Command(command.value_or(0));
     if (frame.sliced(etx + 1, 2) != QByteArrayView(sum(body))) {
         m_errorCode = int(ErrorCode::SumCheck);
-        return m_status;
+        return;
     }
     for (qsizetype i = 1; i < etx; ++i)
         if (!hexDigit(frame[i])) {
             m_errorCode = int(ErrorCode::AsciiConversion);
-            return m_status;
+            return;
         }
     if (etx < 5 || !knownCommand(*command)) {
         m_errorCode = int(ErrorCode::NoSuchCommand);
-        return m_status;
+        return;
     }
     const auto address = hexValue(frame, 5, 4);
     m_request.address = address.value_or(0);
@@ -330,7 +362,6 @@ FrameStatus RequestDecoder::feed(QByteArrayView bytes) {
     else if ((m_request.command == Command::Read || m_request.command == Command::Write) &&
              (m_request.length < 1 || m_request.length > MaxBytes))
         m_errorCode = int(ErrorCode::AddressRange);
-    return m_status;
 }
 
 } // namespace rung::comms::vigor
