@@ -1567,6 +1567,14 @@ Létradiagram- és utasításlista-szerkesztő VPC, Vigor, CPM1 és PL110 PLC-kh
         <source>Vigor link: %1 bytes from STX without ETX (a request holds at most %2): dropped up to the next STX</source>
         <translation>Vigor link: %1 bájt STX-től ETX nélkül (egy kérés legfeljebb %2 bájt): eldobva a következő STX-ig</translation>
     </message>
+    <message>
+        <source>no wake-up pipe for cancelling a read: %1</source>
+        <translation>nincs ébresztő cső az olvasás megszakításához: %1</translation>
+    </message>
+    <message>
+        <source>Cannot open %1 again: the pseudo-terminal this program made ended when it was closed; make a new one and give its path to the peer</source>
+        <translation>%1 nem nyitható meg újra: a program által létrehozott pszeudoterminál a bezárásakor megszűnt; hozzon létre újat, és adja meg az útvonalát a másik félnek</translation>
+    </message>
 </context>
 <context>
     <name>rung::editor::CrossReferenceView</name>

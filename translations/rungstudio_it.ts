@@ -1571,6 +1571,14 @@ Editor di schemi ladder e liste istruzioni per VPC, Vigor, CPM1 e PL110.</transl
         <source>Vigor link: %1 bytes from STX without ETX (a request holds at most %2): dropped up to the next STX</source>
         <translation>Vigor link: %1 byte da STX senza ETX (una richiesta ne contiene al massimo %2): scartati fino al prossimo STX</translation>
     </message>
+    <message>
+        <source>no wake-up pipe for cancelling a read: %1</source>
+        <translation>nessuna pipe di risveglio per annullare una lettura: %1</translation>
+    </message>
+    <message>
+        <source>Cannot open %1 again: the pseudo-terminal this program made ended when it was closed; make a new one and give its path to the peer</source>
+        <translation>Impossibile aprire di nuovo %1: lo pseudo-terminale creato da questo programma è terminato alla chiusura; crearne uno nuovo e darne il percorso all&apos;altra parte</translation>
+    </message>
 </context>
 <context>
     <name>rung::editor::CrossReferenceView</name>
