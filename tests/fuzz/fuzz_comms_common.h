@@ -29,7 +29,10 @@ struct Input {
     }
     // The next chunk of the peer's bytes: 1..16 bytes, or the rest.
     QByteArray chunk() {
-        const std::size_t n = std::min<std::size_t>(size - at, std::size_t(1 + byte() % 16));
+        // The size byte first, on its own: `min(size - at, byte())` may read `at` before
+        // byte() moves it, and then copy one byte past the input (found by libFuzzer + ASan).
+        const auto wanted = std::size_t(1 + byte() % 16);
+        const std::size_t n = std::min(size - at, wanted);
         QByteArray out(reinterpret_cast<const char *>(data + at), qsizetype(n));
         at += n;
         return out;
