@@ -8,6 +8,7 @@
 // sent as two upper-case hex digits. Payload is upper-case ASCII hex.
 
 #include "comms/protocol/protocol_error.h"
+#include "model/target/protocol_map.h"
 
 #include <QByteArray>
 
@@ -18,7 +19,8 @@ namespace rung::comms::vigor {
 inline constexpr char Stx = 0x02;
 inline constexpr char Etx = 0x03;
 inline constexpr char Ack = 0x06;
-inline constexpr int MaxBytes = 128; // 51h / 61h move at most 128 bytes (seed 001, B-5)
+// 51h / 61h move at most 128 bytes (seed 001, B-5): the model's, which the link map reads too.
+inline constexpr int MaxBytes = model::VigorLinkMaxBytes;
 // The longest frames: a 61h request of MaxBytes (STX, station, command, address, length, the
 // bytes, ETX, sum) and a 51h reply of MaxBytes (ACK, station, command, error, the bytes, ETX,
 // sum).
