@@ -1,5 +1,7 @@
 #include "comms/protocol/host_link.h"
 
+#include "comms/protocol/ascii_hex.h"
+
 #include <optional>
 
 namespace rung::comms::hostlink {
@@ -7,6 +9,11 @@ namespace rung::comms::hostlink {
 namespace {
 
 using Kind = ProtocolError::Kind;
+using detail::appendDecimal;
+using detail::appendHex;
+using detail::decimalValue;
+using detail::hex2;
+using detail::hexValue;
 
 struct AreaHeaders {
     Area area;
@@ -29,47 +36,6 @@ const AreaHeaders &headersOf(Area area) {
     return areaHeaders[0];
 }
 
-void appendHex(QByteArray &out, int value, int digits) {
-    static const char table[] = "0123456789ABCDEF";
-    for (int i = digits - 1; i >= 0; --i)
-        out += table[(value >> (4 * i)) & 0xF];
-}
-
-void appendDecimal(QByteArray &out, int value, int digits) {
-    out += QByteArray::number(value).rightJustified(digits, '0', true);
-}
-
-std::optional<int> hexValue(QByteArrayView text, qsizetype at, int digits) {
-    if (at < 0 || at + digits > text.size())
-        return std::nullopt;
-    int value = 0;
-    for (int i = 0; i < digits; ++i) {
-        const char c = text[at + i];
-        int d = 0;
-        if (c >= '0' && c <= '9')
-            d = c - '0';
-        else if (c >= 'A' && c <= 'F')
-            d = c - 'A' + 10;
-        else
-            return std::nullopt;
-        value = value << 4 | d;
-    }
-    return value;
-}
-
-std::optional<int> decimalValue(QByteArrayView text, qsizetype at, int digits) {
-    if (at < 0 || at + digits > text.size())
-        return std::nullopt;
-    int value = 0;
-    for (int i = 0; i < digits; ++i) {
-        const char c = text[at + i];
-        if (c < '0' || c > '9')
-            return std::nullopt;
-        value = value * 10 + (c - '0');
-    }
-    return value;
-}
-
 bool isWordHeader(QByteArrayView header) {
     for (const auto &h : areaHeaders)
         if (header == QByteArrayView(h.read) && h.area != Area::Completion)
@@ -77,10 +43,6 @@ bool isWordHeader(QByteArrayView header) {
         else if (h.write && header == QByteArrayView(h.write))
             return true;
     return false;
-}
-
-QString hex2(int value) {
-    return QString::number(value, 16).toUpper().rightJustified(2, QLatin1Char('0'));
 }
 
 // One received part (without its CR): checks the FCS, returns the text before it and whether

@@ -1,10 +1,13 @@
 #include "comms/protocol/modbus.h"
 
+#include "comms/protocol/ascii_hex.h"
+
 namespace rung::comms::modbus {
 
 namespace {
 
 using Kind = ProtocolError::Kind;
+using detail::hex2;
 
 void put16(QByteArray &out, int value) {
     out += char((value >> 8) & 0xFF);
@@ -49,10 +52,6 @@ bool isBitRead(int function) {
 bool known(int function) {
     return isRead(function) || function == WriteSingleCoil || function == WriteSingleRegister ||
            function == WriteMultipleCoils || function == WriteMultipleRegisters;
-}
-
-QString hex2(int value) {
-    return QString::number(value, 16).toUpper().rightJustified(2, QLatin1Char('0'));
 }
 
 } // namespace

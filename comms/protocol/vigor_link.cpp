@@ -1,5 +1,7 @@
 #include "comms/protocol/vigor_link.h"
 
+#include "comms/protocol/ascii_hex.h"
+
 #include <optional>
 
 namespace rung::comms::vigor {
@@ -7,34 +9,10 @@ namespace rung::comms::vigor {
 namespace {
 
 using Kind = ProtocolError::Kind;
-
-std::optional<int> hexDigit(char c) {
-    if (c >= '0' && c <= '9')
-        return c - '0';
-    if (c >= 'A' && c <= 'F')
-        return c - 'A' + 10;
-    return std::nullopt; // the seed sends upper case only
-}
-
-// The value of `digits` hex characters at `at`, or nullopt when one is not a hex digit.
-std::optional<int> hexValue(QByteArrayView text, qsizetype at, int digits) {
-    if (at + digits > text.size())
-        return std::nullopt;
-    int value = 0;
-    for (int i = 0; i < digits; ++i) {
-        const auto d = hexDigit(text[at + i]);
-        if (!d)
-            return std::nullopt;
-        value = value << 4 | *d;
-    }
-    return value;
-}
-
-void appendHex(QByteArray &out, int value, int digits) {
-    static const char digitsTable[] = "0123456789ABCDEF";
-    for (int i = digits - 1; i >= 0; --i)
-        out += digitsTable[(value >> (4 * i)) & 0xF];
-}
+using detail::appendHex;
+using detail::hex2;
+using detail::hexDigit;
+using detail::hexValue;
 
 // Body (station .. ETX) + sum; the caller puts the start byte in front.
 QByteArray closeFrame(char start, QByteArray body) {
@@ -88,7 +66,7 @@ QByteArray encodeReply(const Reply &reply) {
 }
 
 QString errorText(int code) {
-    const QString hex = QString::number(code, 16).toUpper().rightJustified(2, QLatin1Char('0'));
+    const QString hex = hex2(code);
     switch (ErrorCode(code)) {
     case ErrorCode::None:
         return QCoreApplication::translate("rung::comms::Protocol", "no error (error 00h)");
@@ -214,8 +192,7 @@ FrameStatus ReplyDecoder::decode() {
             QCoreApplication::translate("rung::comms::Protocol",
                                         "Vigor link: the reply is for command %1h, the request was "
                                         "%2h")
-                .arg(QString::number(*command, 16).toUpper(),
-                     QString::number(int(m_request.command), 16).toUpper()));
+                .arg(hex2(*command), hex2(int(m_request.command))));
     if (*error != 0)
         return fail(Kind::DeviceError,
                     QCoreApplication::translate("rung::comms::Protocol", "Vigor link: %1")
