@@ -16,29 +16,29 @@ using detail::hex2;
 using detail::hexValue;
 
 struct AreaHeaders {
-    Area area;
+    ProtocolSpace space;
     const char *read;
     const char *write; // nullptr: read only
 };
 
 constexpr AreaHeaders areaHeaders[] = {
-    {Area::Ir, "RR", "WR"},
-    {Area::Hr, "RH", "WH"},
-    {Area::Dm, "RD", "WD"},
-    {Area::TimerPv, "RC", "WC"},
-    {Area::Completion, "RG", nullptr},
+    {ProtocolSpace::HostLinkIr, "RR", "WR"},
+    {ProtocolSpace::HostLinkHr, "RH", "WH"},
+    {ProtocolSpace::HostLinkDm, "RD", "WD"},
+    {ProtocolSpace::HostLinkTimerPv, "RC", "WC"},
+    {ProtocolSpace::HostLinkCompletion, "RG", nullptr},
 };
 
-const AreaHeaders &headersOf(Area area) {
+const AreaHeaders *headersOf(ProtocolSpace space) {
     for (const auto &h : areaHeaders)
-        if (h.area == area)
-            return h;
-    return areaHeaders[0];
+        if (h.space == space)
+            return &h;
+    return nullptr;
 }
 
 bool isWordHeader(QByteArrayView header) {
     for (const auto &h : areaHeaders)
-        if (header == QByteArrayView(h.read) && h.area != Area::Completion)
+        if (header == QByteArrayView(h.read) && h.space != ProtocolSpace::HostLinkCompletion)
             return true;
         else if (h.write && header == QByteArrayView(h.write))
             return true;
@@ -109,15 +109,18 @@ QList<QByteArray> encode(const Frame &frame) {
     }
 }
 
-Frame readCommand(int unit, Area area, int begin, int count) {
-    Frame f{unit, headersOf(area).read, -1, {}};
+Frame readCommand(int unit, ProtocolSpace space, int begin, int count) {
+    const AreaHeaders *h = headersOf(space);
+    Frame f{unit, h ? h->read : "", -1, {}};
     appendDecimal(f.text, begin, 4);
     appendDecimal(f.text, count, 4);
     return f;
 }
 
-Frame writeCommand(int unit, Area area, int begin, const std::vector<std::uint16_t> &words) {
-    const char *header = headersOf(area).write;
+Frame writeCommand(int unit, ProtocolSpace space, int begin,
+                   const std::vector<std::uint16_t> &words) {
+    const AreaHeaders *h = headersOf(space);
+    const char *header = h ? h->write : nullptr;
     Frame f{unit, header ? header : "", -1, {}};
     appendDecimal(f.text, begin, 4);
     for (auto w : words)
@@ -331,11 +334,11 @@ FrameStatus ReplyDecoder::part(QByteArrayView frame) {
 // The most data characters the reply to this command can hold, so that a stream of parts
 // that never ends fails instead of growing: a read's words or flags; one frame for the rest.
 qsizetype ReplyDecoder::maxReplyText() const {
-    Area area;
+    ProtocolSpace space;
     bool write = false;
-    if (areaOfHeader(m_command.header, area, write) && !write) {
+    if (spaceOfHeader(m_command.header, space, write) && !write) {
         const int count = decimalValue(m_command.text, 4, 4).value_or(0);
-        return area == Area::Completion ? count : 4 * count;
+        return space == ProtocolSpace::HostLinkCompletion ? count : 4 * count;
     }
     return MaxFirstFrame;
 }
@@ -371,11 +374,11 @@ FrameStatus ReplyDecoder::finish() {
                         .arg(f.text.size()));
     };
     const QByteArrayView h(f.header);
-    Area area;
+    ProtocolSpace space;
     bool write = false;
-    if (areaOfHeader(h, area, write) && !write) {
+    if (spaceOfHeader(h, space, write) && !write) {
         const int count = decimalValue(m_command.text, 4, 4).value_or(0);
-        if (area == Area::Completion) {
+        if (space == ProtocolSpace::HostLinkCompletion) {
             if (f.text.size() != count)
                 return malformed();
             for (char c : f.text) {
@@ -575,15 +578,15 @@ Operands parseForce(QByteArrayView text) {
     return o;
 }
 
-bool areaOfHeader(QByteArrayView header, Area &area, bool &write) {
+bool spaceOfHeader(QByteArrayView header, ProtocolSpace &space, bool &write) {
     for (const auto &h : areaHeaders) {
         if (header == QByteArrayView(h.read)) {
-            area = h.area;
+            space = h.space;
             write = false;
             return true;
         }
         if (h.write && header == QByteArrayView(h.write)) {
-            area = h.area;
+            space = h.space;
             write = true;
             return true;
         }

@@ -10,6 +10,7 @@
 // side answers a lone CR (the delimiter) before the next part comes.
 
 #include "comms/protocol/protocol_error.h"
+#include "model/target/protocol_map.h"
 
 #include <QByteArray>
 #include <QList>
@@ -30,14 +31,10 @@ inline constexpr int MaxText = 4 + 4 * MaxWords;
 // (over 131) still gets its end code 18 up to this length; beyond it the bytes are noise.
 inline constexpr int MaxPartBuffer = 4 * MaxFirstFrame;
 
-// The word areas the read/write commands reach, with their headers.
-enum class Area : std::uint8_t {
-    Ir,        // RR / WR: IR and SR channels
-    Hr,        // RH / WH
-    Dm,        // RD / WD
-    TimerPv,   // RC / WC: timer / counter present values (BCD)
-    Completion // RG: timer / counter completion flags (read only)
-};
+// The word areas the read / write commands reach are the Host Link spaces of the protocol
+// maps (model::ProtocolSpace::HostLinkIr .. HostLinkCompletion: RR/WR, RH/WH, RD/WD, RC/WC,
+// RG), so a driver passes what the CPM1 map gives without a translation table of its own.
+using model::ProtocolSpace;
 
 enum class Mode : std::uint8_t { Program = 0x00, Monitor = 0x02, Run = 0x03 };
 
@@ -70,9 +67,11 @@ QByteArray fcs(QByteArrayView characters);
 // word data is split on whole words, as the PLC does: 30 words, then 31 per part).
 QList<QByteArray> encode(const Frame &frame);
 
-// Commands the product sends. begin / count in words (or timers for RC / RG).
-Frame readCommand(int unit, Area area, int begin, int count);
-Frame writeCommand(int unit, Area area, int begin, const std::vector<std::uint16_t> &words);
+// Commands the product sends. begin / count in words (or timers for RC / RG). A space that is
+// not a Host Link one gives a frame without a header, which the PLC refuses (IC).
+Frame readCommand(int unit, ProtocolSpace space, int begin, int count);
+Frame writeCommand(int unit, ProtocolSpace space, int begin,
+                   const std::vector<std::uint16_t> &words);
 Frame statusCommand(int unit);                             // MS
 Frame modeCommand(int unit, Mode mode);                    // SC
 Frame forceCommand(int unit, bool set, int word, int bit); // KS / KR on "CIO "
@@ -163,7 +162,7 @@ struct Operands {
 Operands parseRead(QByteArrayView text);  // begin(4) count(4), decimal
 Operands parseWrite(QByteArrayView text); // begin(4) words(4 hex each)
 Operands parseForce(QByteArrayView text); // "CIO " word(4) bit(2)
-// Which area a read / write header reaches; false when it is neither.
-bool areaOfHeader(QByteArrayView header, Area &area, bool &write);
+// Which space a read / write header reaches; false when it is neither.
+bool spaceOfHeader(QByteArrayView header, ProtocolSpace &space, bool &write);
 
 } // namespace rung::comms::hostlink

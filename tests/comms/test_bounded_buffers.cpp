@@ -94,7 +94,7 @@ TEST(BoundedBuffers, HostLinkSlaveKeepsOneFrameWhileACommandWaitsForItsAnswer) {
 
 TEST(BoundedBuffers, HostLinkMasterFailsAReplyLongerThanItsCommandAsks) {
     // RD of 2 words: 8 characters of data. A peer that sends part after part never ends.
-    hostlink::ReplyDecoder d(hostlink::readCommand(0, hostlink::Area::Dm, 0, 2));
+    hostlink::ReplyDecoder d(hostlink::readCommand(0, hostlink::ProtocolSpace::HostLinkDm, 0, 2));
     QByteArray first = "@00RD00";
     first += hostlink::fcs(first) + "\r";
     d.feed(first);
@@ -114,7 +114,8 @@ TEST(BoundedBuffers, HostLinkMasterFailsAReplyLongerThanItsCommandAsks) {
     EXPECT_TRUE(d.error().message.contains(QLatin1String("8 characters")));
 
     // A read of the most words the count allows is bounded the same way.
-    hostlink::ReplyDecoder big(hostlink::readCommand(0, hostlink::Area::Dm, 0, 9999));
+    hostlink::ReplyDecoder big(
+        hostlink::readCommand(0, hostlink::ProtocolSpace::HostLinkDm, 0, 9999));
     big.feed(first);
     QByteArray word = QByteArray(120, 'A');
     word += hostlink::fcs(word) + "\r";

@@ -7,22 +7,25 @@ extern "C" int LLVMFuzzerTestOneInput(const std::uint8_t *data, std::size_t size
     using namespace rung::comms;
     using namespace rung::comms::hostlink;
     fuzz::Input in{data, size};
+    constexpr ProtocolSpace spaces[] = {ProtocolSpace::HostLinkIr, ProtocolSpace::HostLinkHr,
+                                        ProtocolSpace::HostLinkDm, ProtocolSpace::HostLinkTimerPv,
+                                        ProtocolSpace::HostLinkCompletion};
     const int unit = in.byte() % 32;
     Frame command;
     // One read per statement: the order of reads inside one call's arguments is unspecified.
     switch (in.byte() % 8) {
     case 0: {
-        const auto area = Area(in.byte() % 5);
+        const auto space = spaces[in.byte() % 5];
         const int begin = in.word() % 10000;
         const int count = in.word() % 10000;
-        command = readCommand(unit, area, begin, count);
+        command = readCommand(unit, space, begin, count);
         break;
     }
     case 1: {
-        const auto area = Area(in.byte() % 4);
+        const auto space = spaces[in.byte() % 4];
         const int begin = in.word() % 10000;
         const auto words = std::size_t(in.byte());
-        command = writeCommand(unit, area, begin, std::vector<std::uint16_t>(words, 0x1234));
+        command = writeCommand(unit, space, begin, std::vector<std::uint16_t>(words, 0x1234));
         break;
     }
     case 2:
