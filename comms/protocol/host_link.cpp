@@ -225,12 +225,6 @@ QString endCodeText(int code) {
 ReplyDecoder::ReplyDecoder(const Frame &command)
     : m_command(command) {}
 
-FrameStatus ReplyDecoder::fail(ProtocolError::Kind kind, QString message, int code) {
-    m_error = ProtocolError{kind, code, std::move(message)};
-    m_status = FrameStatus::Failed;
-    return m_status;
-}
-
 bool ReplyDecoder::takeDelimiterRequest() {
     return std::exchange(m_delimiter, false);
 }
@@ -409,26 +403,23 @@ FrameStatus ReplyDecoder::finish() {
     } else if (!f.text.isEmpty()) {
         return malformed();
     }
-    m_status = FrameStatus::Complete;
-    return m_status;
+    return complete();
 }
 
 ProtocolError ReplyDecoder::deadlinePassed(int waitedMs) const {
-    if (m_buffer.isEmpty() && m_parts == 0)
-        return {Kind::Truncated, 0,
-                QCoreApplication::translate("rung::comms::Protocol",
-                                            "Host Link: no reply from unit %1 within %2 ms")
-                    .arg(m_command.unit)
-                    .arg(waitedMs)};
-    return {Kind::Truncated, 0,
-            QCoreApplication::translate(
-                "rung::comms::Protocol",
-                "Host Link: the reply stopped after %1 parts and %2 characters (%3) "
-                "within %4 ms")
-                .arg(m_parts)
-                .arg(m_buffer.size())
-                .arg(hexDump(m_buffer))
-                .arg(waitedMs)};
+    return truncated(m_buffer.isEmpty() && m_parts == 0,
+                     QCoreApplication::translate("rung::comms::Protocol",
+                                                 "Host Link: no reply from unit %1 within %2 ms")
+                         .arg(m_command.unit)
+                         .arg(waitedMs),
+                     QCoreApplication::translate(
+                         "rung::comms::Protocol",
+                         "Host Link: the reply stopped after %1 parts and %2 characters (%3) "
+                         "within %4 ms")
+                         .arg(m_parts)
+                         .arg(m_buffer.size())
+                         .arg(hexDump(m_buffer))
+                         .arg(waitedMs));
 }
 
 // ----- slave side -----

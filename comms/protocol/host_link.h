@@ -92,23 +92,20 @@ Mode modeOfStatus(int status);
 QString endCodeText(int code);
 
 // Master side: the reply to one command, from bytes as they arrive, over any number of parts.
-class ReplyDecoder {
+class ReplyDecoder : public ReplyDecoderBase {
 public:
     explicit ReplyDecoder(const Frame &command);
     FrameStatus feed(QByteArrayView bytes);
     // True once after each part that is not the last: the caller sends a lone CR.
     bool takeDelimiterRequest();
     ProtocolError deadlinePassed(int waitedMs) const;
-    FrameStatus status() const { return m_status; }
     const Reply &reply() const { return m_reply; }
-    const ProtocolError &error() const { return m_error; }
     // Characters held: the part being received and the text of the parts before it. Never
     // more than MaxBuffered: a reply longer than its command asks for fails.
     qsizetype buffered() const { return m_buffer.size() + m_reply.frame.text.size(); }
     static constexpr qsizetype MaxBuffered = MaxFirstFrame + MaxText;
 
 private:
-    FrameStatus fail(ProtocolError::Kind kind, QString message, int code = 0);
     FrameStatus part(QByteArrayView frame);
     FrameStatus finish();
     qsizetype maxReplyText() const;
@@ -117,9 +114,7 @@ private:
     QByteArray m_buffer;
     int m_parts = 0;
     bool m_delimiter = false;
-    FrameStatus m_status = FrameStatus::NeedMore;
     Reply m_reply;
-    ProtocolError m_error;
 };
 
 // Slave side: one command over any number of parts. endCode() is the code a PLC answers a

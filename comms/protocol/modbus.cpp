@@ -251,12 +251,6 @@ ReplyDecoder::ReplyDecoder(Framing framing, int unit, const Request &request, in
     , m_request(request)
     , m_transaction(transaction) {}
 
-FrameStatus ReplyDecoder::fail(ProtocolError::Kind kind, QString message, int code) {
-    m_error = ProtocolError{kind, code, std::move(message)};
-    m_status = FrameStatus::Failed;
-    return m_status;
-}
-
 qsizetype ReplyDecoder::expectedRtuLength() const {
     if (m_buffer.size() < 2)
         return 0;
@@ -394,24 +388,21 @@ FrameStatus ReplyDecoder::decodePdu(QByteArrayView pdu, int unit) {
         if (r.address != m_request.address || QByteArrayView(sent).sliced(3, 2) != pdu.sliced(3, 2))
             return mismatch();
     }
-    m_status = FrameStatus::Complete;
-    return m_status;
+    return complete();
 }
 
 ProtocolError ReplyDecoder::deadlinePassed(int waitedMs) const {
-    if (m_buffer.isEmpty())
-        return {Kind::Truncated, 0,
-                QCoreApplication::translate("rung::comms::Protocol",
-                                            "Modbus: no reply from unit %1 within %2 ms")
-                    .arg(m_unit)
-                    .arg(waitedMs)};
-    return {
-        Kind::Truncated, 0,
+    return truncated(
+        m_buffer.isEmpty(),
+        QCoreApplication::translate("rung::comms::Protocol",
+                                    "Modbus: no reply from unit %1 within %2 ms")
+            .arg(m_unit)
+            .arg(waitedMs),
         QCoreApplication::translate("rung::comms::Protocol",
                                     "Modbus: the reply stopped after %1 bytes (%2) within %3 ms")
             .arg(m_buffer.size())
             .arg(hexDump(m_buffer))
-            .arg(waitedMs)};
+            .arg(waitedMs));
 }
 
 // ----- slave side -----

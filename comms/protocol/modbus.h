@@ -84,20 +84,17 @@ enum class Framing : std::uint8_t { Rtu, Tcp };
 
 // Master side: the reply to one request, from bytes as they arrive. Over RTU the length comes
 // from the function code and byte count, so no silence timer is needed to end a reply.
-class ReplyDecoder {
+class ReplyDecoder : public ReplyDecoderBase {
 public:
     ReplyDecoder(Framing framing, int unit, const Request &request, int transaction = 0);
     FrameStatus feed(QByteArrayView bytes);
     ProtocolError deadlinePassed(int waitedMs) const;
-    FrameStatus status() const { return m_status; }
     const Response &response() const { return m_response; }
-    const ProtocolError &error() const { return m_error; }
     // Bytes held: never more than one byte past the longest reply a header can announce.
     qsizetype buffered() const { return m_buffer.size(); }
     static constexpr qsizetype MaxBuffered = 3 + 255 + 2 + 1;
 
 private:
-    FrameStatus fail(ProtocolError::Kind kind, QString message, int code = 0);
     FrameStatus decodePdu(QByteArrayView pdu, int unit);
     qsizetype expectedRtuLength() const; // 0 = not known yet
 
@@ -107,9 +104,7 @@ private:
     int m_transaction;
     QByteArray m_buffer;
     qsizetype m_received = 0;
-    FrameStatus m_status = FrameStatus::NeedMore;
     Response m_response;
-    ProtocolError m_error;
 };
 
 // Slave side: requests, one after another, from bytes as they arrive.

@@ -105,12 +105,6 @@ QString errorText(int code) {
 ReplyDecoder::ReplyDecoder(const Request &request)
     : m_request(request) {}
 
-FrameStatus ReplyDecoder::fail(ProtocolError::Kind kind, QString message, int code) {
-    m_error = ProtocolError{kind, code, std::move(message)};
-    m_status = FrameStatus::Failed;
-    return m_status;
-}
-
 FrameStatus ReplyDecoder::feed(QByteArrayView bytes) {
     if (m_status != FrameStatus::NeedMore)
         return m_status;
@@ -206,24 +200,22 @@ FrameStatus ReplyDecoder::decode() {
                                          .arg(data.size())
                                          .arg(expected));
     m_reply = Reply{*station, m_request.command, 0, data};
-    m_status = FrameStatus::Complete;
-    return m_status;
+    return complete();
 }
 
 ProtocolError ReplyDecoder::deadlinePassed(int waitedMs) const {
-    if (m_buffer.isEmpty())
-        return {Kind::Truncated, 0,
-                QCoreApplication::translate("rung::comms::Protocol",
-                                            "Vigor link: no reply from station %1 within %2 ms")
-                    .arg(m_request.station)
-                    .arg(waitedMs)};
-    return {Kind::Truncated, 0,
-            QCoreApplication::translate(
-                "rung::comms::Protocol",
-                "Vigor link: the reply stopped after %1 bytes (%2) within %3 ms")
-                .arg(m_buffer.size())
-                .arg(hexDump(m_buffer))
-                .arg(waitedMs)};
+    return truncated(
+        m_buffer.isEmpty(),
+        QCoreApplication::translate("rung::comms::Protocol",
+                                    "Vigor link: no reply from station %1 within %2 ms")
+            .arg(m_request.station)
+            .arg(waitedMs),
+        QCoreApplication::translate(
+            "rung::comms::Protocol",
+            "Vigor link: the reply stopped after %1 bytes (%2) within %3 ms")
+            .arg(m_buffer.size())
+            .arg(hexDump(m_buffer))
+            .arg(waitedMs));
 }
 
 // ----- slave side -----

@@ -69,28 +69,23 @@ QByteArray sum(QByteArrayView body);
 QString errorText(int code);
 
 // Master side: collects the reply to one request from bytes as they arrive (in any split).
-class ReplyDecoder {
+class ReplyDecoder : public ReplyDecoderBase {
 public:
     explicit ReplyDecoder(const Request &request);
     // Feed the next bytes; after Complete or Failed further bytes are ignored.
     FrameStatus feed(QByteArrayView bytes);
     // The caller's deadline passed: a truncated frame or silence, as an error.
     ProtocolError deadlinePassed(int waitedMs) const;
-    FrameStatus status() const { return m_status; }
     const Reply &reply() const { return m_reply; }
-    const ProtocolError &error() const { return m_error; }
     qsizetype buffered() const { return m_buffer.size(); }
     static constexpr qsizetype MaxBuffered = MaxReplyFrame; // longer fails
 
 private:
-    FrameStatus fail(ProtocolError::Kind kind, QString message, int code = 0);
     FrameStatus decode();
 
     Request m_request;
     QByteArray m_buffer;
-    FrameStatus m_status = FrameStatus::NeedMore;
     Reply m_reply;
-    ProtocolError m_error;
 };
 
 // Slave side: one request, parsed from bytes as they arrive. Bytes before STX are dropped
