@@ -26,15 +26,12 @@ for f in tests/data/sim/*.il; do
     { printf "$byte"; cat "$f"; } > "build-fuzz/corpus/il/$(basename "$f")"
 done
 cp resources/examples/*/*.rung build-fuzz/corpus/project/
-# The comms fuzzers start from one good reply each (Vigor: protocols.md's read of M8..M23),
-# behind the bytes that pick the request and the chunk size (tests/fuzz/fuzz_comms_common.h).
-mkdir -p build-fuzz/corpus/fuzz_vigor_reply build-fuzz/corpus/fuzz_modbus_reply \
-    build-fuzz/corpus/fuzz_hostlink_reply
-printf '\000\000\000\201\001\017\006\060\060\065\061\060\060\101\067\071\063\003\060\104' \
-    > build-fuzz/corpus/fuzz_vigor_reply/read_m8
-printf '\000\002\000\000\000\000\001\017\001\003\002\000\007\371\206' \
-    > build-fuzz/corpus/fuzz_modbus_reply/read_hr
-printf '\000\002\017@00MS0003005D*\r' > build-fuzz/corpus/fuzz_hostlink_reply/status
+# The comms fuzzers start from the frames of protocols.md and the Modbus spec's examples,
+# behind the bytes that pick the request and the chunk size (tests/fuzz/make_corpus.py).
+for name in "${comms_fuzzers[@]}"; do
+    mkdir -p "build-fuzz/corpus/$name"
+    cp tests/fuzz/corpus/"$name"/* "build-fuzz/corpus/$name/"
+done
 export ASAN_OPTIONS=detect_leaks=0
 export UBSAN_OPTIONS=print_stacktrace=1
 for name in fuzz_il_parser fuzz_project_loader "${comms_fuzzers[@]}"; do

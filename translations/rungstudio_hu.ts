@@ -1676,6 +1676,46 @@ Létradiagram- és utasításlista-szerkesztő VPC, Vigor, CPM1 és PL110 PLC-kh
         <source>Cannot listen on %1:%2: %3</source>
         <translation>Nem lehet figyelni ezen: %1:%2: %3</translation>
     </message>
+    <message>
+        <source>Host Link: the reply to %1 goes on past the %2 characters of data the command asks for (part %3): not the answer to this command</source>
+        <translation>Host Link: a(z) %1 válasza túlmegy a parancs által kért %2 adatkarakteren (%3. rész): nem erre a parancsra érkezett válasz</translation>
+    </message>
+    <message>
+        <source>Host Link: %1 characters arrived before the command was answered; the %2 beyond the first %3 were dropped</source>
+        <translation>Host Link: %1 karakter érkezett, mielőtt a parancs választ kapott volna; az első %3 utáni %2 karakter eldobva</translation>
+    </message>
+    <message>
+        <source>Host Link: %1 characters without a CR (a part holds at most %2): dropped, waiting for the next &quot;@&quot;</source>
+        <translation>Host Link: %1 karakter CR nélkül (egy rész legfeljebb %2 karakter): eldobva, várakozás a következő &quot;@&quot; jelre</translation>
+    </message>
+    <message>
+        <source>Host Link: the %1 command goes on past %2 characters in %3 parts, longer than any command; answered with end code 18</source>
+        <translation>Host Link: a(z) %1 parancs %3 részben túlmegy %2 karakteren, hosszabb bármely parancsnál; válasz: 18-as végkód</translation>
+    </message>
+    <message>
+        <source>Modbus: %1 bytes arrived before the request was answered; the %2 beyond the first %3 were dropped</source>
+        <translation>Modbus: %1 bájt érkezett, mielőtt a kérés választ kapott volna; az első %3 utáni %2 bájt eldobva</translation>
+    </message>
+    <message>
+        <source>Modbus RTU: a frame of function %1h runs past %2 bytes, the longest an RTU frame can be: dropped with what follows until the line is quiet</source>
+        <translation>Modbus RTU: a(z) %1h funkció kerete túlmegy %2 bájton, ami egy RTU keret legnagyobb hossza: eldobva a vonal elcsendesedéséig érkezőkkel együtt</translation>
+    </message>
+    <message>
+        <source>Vigor link: %1 bytes arrived before the request was answered; the %2 beyond the first %3 were dropped</source>
+        <translation>Vigor link: %1 bájt érkezett, mielőtt a kérés választ kapott volna; az első %3 utáni %2 bájt eldobva</translation>
+    </message>
+    <message>
+        <source>Vigor link: %1 bytes from STX without ETX (a request holds at most %2): dropped up to the next STX</source>
+        <translation>Vigor link: %1 bájt STX-től ETX nélkül (egy kérés legfeljebb %2 bájt): eldobva a következő STX-ig</translation>
+    </message>
+    <message>
+        <source>no wake-up pipe for cancelling a read: %1</source>
+        <translation>nincs ébresztő cső az olvasás megszakításához: %1</translation>
+    </message>
+    <message>
+        <source>Cannot open %1 again: the pseudo-terminal this program made ended when it was closed; make a new one and give its path to the peer</source>
+        <translation>%1 nem nyitható meg újra: a program által létrehozott pszeudoterminál a bezárásakor megszűnt; hozzon létre újat, és adja meg az útvonalát a másik félnek</translation>
+    </message>
 </context>
 <context>
     <name>rung::editor::CrossReferenceView</name>

@@ -1681,6 +1681,46 @@ Editor di schemi ladder e liste istruzioni per VPC, Vigor, CPM1 e PL110.</transl
         <source>Cannot listen on %1:%2: %3</source>
         <translation>Impossibile restare in ascolto su %1:%2: %3</translation>
     </message>
+    <message>
+        <source>Host Link: the reply to %1 goes on past the %2 characters of data the command asks for (part %3): not the answer to this command</source>
+        <translation>Host Link: la risposta a %1 va oltre i %2 caratteri di dati chiesti dal comando (parte %3): non è la risposta a questo comando</translation>
+    </message>
+    <message>
+        <source>Host Link: %1 characters arrived before the command was answered; the %2 beyond the first %3 were dropped</source>
+        <translation>Host Link: sono arrivati %1 caratteri prima della risposta al comando; i %2 oltre i primi %3 sono stati scartati</translation>
+    </message>
+    <message>
+        <source>Host Link: %1 characters without a CR (a part holds at most %2): dropped, waiting for the next &quot;@&quot;</source>
+        <translation>Host Link: %1 caratteri senza CR (una parte ne contiene al massimo %2): scartati, in attesa del prossimo &quot;@&quot;</translation>
+    </message>
+    <message>
+        <source>Host Link: the %1 command goes on past %2 characters in %3 parts, longer than any command; answered with end code 18</source>
+        <translation>Host Link: il comando %1 va oltre %2 caratteri in %3 parti, più lungo di qualsiasi comando; risposto con codice di fine 18</translation>
+    </message>
+    <message>
+        <source>Modbus: %1 bytes arrived before the request was answered; the %2 beyond the first %3 were dropped</source>
+        <translation>Modbus: sono arrivati %1 byte prima della risposta alla richiesta; i %2 oltre i primi %3 sono stati scartati</translation>
+    </message>
+    <message>
+        <source>Modbus RTU: a frame of function %1h runs past %2 bytes, the longest an RTU frame can be: dropped with what follows until the line is quiet</source>
+        <translation>Modbus RTU: un frame della funzione %1h supera %2 byte, la lunghezza massima di un frame RTU: scartato con ciò che segue finché la linea tace</translation>
+    </message>
+    <message>
+        <source>Vigor link: %1 bytes arrived before the request was answered; the %2 beyond the first %3 were dropped</source>
+        <translation>Vigor link: sono arrivati %1 byte prima della risposta alla richiesta; i %2 oltre i primi %3 sono stati scartati</translation>
+    </message>
+    <message>
+        <source>Vigor link: %1 bytes from STX without ETX (a request holds at most %2): dropped up to the next STX</source>
+        <translation>Vigor link: %1 byte da STX senza ETX (una richiesta ne contiene al massimo %2): scartati fino al prossimo STX</translation>
+    </message>
+    <message>
+        <source>no wake-up pipe for cancelling a read: %1</source>
+        <translation>nessuna pipe di risveglio per annullare una lettura: %1</translation>
+    </message>
+    <message>
+        <source>Cannot open %1 again: the pseudo-terminal this program made ended when it was closed; make a new one and give its path to the peer</source>
+        <translation>Impossibile aprire di nuovo %1: lo pseudo-terminale creato da questo programma è terminato alla chiusura; crearne uno nuovo e darne il percorso all&apos;altra parte</translation>
+    </message>
 </context>
 <context>
     <name>rung::editor::CrossReferenceView</name>

@@ -1,5 +1,7 @@
 #include "comms/protocol/host_link.h"
 
+#include "comms/protocol/ascii_hex.h"
+
 #include <optional>
 
 namespace rung::comms::hostlink {
@@ -7,80 +9,40 @@ namespace rung::comms::hostlink {
 namespace {
 
 using Kind = ProtocolError::Kind;
+using detail::appendDecimal;
+using detail::appendHex;
+using detail::decimalValue;
+using detail::hex2;
+using detail::hexValue;
 
 struct AreaHeaders {
-    Area area;
+    ProtocolSpace space;
     const char *read;
     const char *write; // nullptr: read only
 };
 
 constexpr AreaHeaders areaHeaders[] = {
-    {Area::Ir, "RR", "WR"},
-    {Area::Hr, "RH", "WH"},
-    {Area::Dm, "RD", "WD"},
-    {Area::TimerPv, "RC", "WC"},
-    {Area::Completion, "RG", nullptr},
+    {ProtocolSpace::HostLinkIr, "RR", "WR"},
+    {ProtocolSpace::HostLinkHr, "RH", "WH"},
+    {ProtocolSpace::HostLinkDm, "RD", "WD"},
+    {ProtocolSpace::HostLinkTimerPv, "RC", "WC"},
+    {ProtocolSpace::HostLinkCompletion, "RG", nullptr},
 };
 
-const AreaHeaders &headersOf(Area area) {
+const AreaHeaders *headersOf(ProtocolSpace space) {
     for (const auto &h : areaHeaders)
-        if (h.area == area)
-            return h;
-    return areaHeaders[0];
-}
-
-void appendHex(QByteArray &out, int value, int digits) {
-    static const char table[] = "0123456789ABCDEF";
-    for (int i = digits - 1; i >= 0; --i)
-        out += table[(value >> (4 * i)) & 0xF];
-}
-
-void appendDecimal(QByteArray &out, int value, int digits) {
-    out += QByteArray::number(value).rightJustified(digits, '0', true);
-}
-
-std::optional<int> hexValue(QByteArrayView text, qsizetype at, int digits) {
-    if (at < 0 || at + digits > text.size())
-        return std::nullopt;
-    int value = 0;
-    for (int i = 0; i < digits; ++i) {
-        const char c = text[at + i];
-        int d = 0;
-        if (c >= '0' && c <= '9')
-            d = c - '0';
-        else if (c >= 'A' && c <= 'F')
-            d = c - 'A' + 10;
-        else
-            return std::nullopt;
-        value = value << 4 | d;
-    }
-    return value;
-}
-
-std::optional<int> decimalValue(QByteArrayView text, qsizetype at, int digits) {
-    if (at < 0 || at + digits > text.size())
-        return std::nullopt;
-    int value = 0;
-    for (int i = 0; i < digits; ++i) {
-        const char c = text[at + i];
-        if (c < '0' || c > '9')
-            return std::nullopt;
-        value = value * 10 + (c - '0');
-    }
-    return value;
+        if (h.space == space)
+            return &h;
+    return nullptr;
 }
 
 bool isWordHeader(QByteArrayView header) {
     for (const auto &h : areaHeaders)
-        if (header == QByteArrayView(h.read) && h.area != Area::Completion)
+        if (header == QByteArrayView(h.read) && h.space != ProtocolSpace::HostLinkCompletion)
             return true;
         else if (h.write && header == QByteArrayView(h.write))
             return true;
     return false;
-}
-
-QString hex2(int value) {
-    return QString::number(value, 16).toUpper().rightJustified(2, QLatin1Char('0'));
 }
 
 // One received part (without its CR): checks the FCS, returns the text before it and whether
@@ -147,15 +109,18 @@ QList<QByteArray> encode(const Frame &frame) {
     }
 }
 
-Frame readCommand(int unit, Area area, int begin, int count) {
-    Frame f{unit, headersOf(area).read, -1, {}};
+Frame readCommand(int unit, ProtocolSpace space, int begin, int count) {
+    const AreaHeaders *h = headersOf(space);
+    Frame f{unit, h ? h->read : "", -1, {}};
     appendDecimal(f.text, begin, 4);
     appendDecimal(f.text, count, 4);
     return f;
 }
 
-Frame writeCommand(int unit, Area area, int begin, const std::vector<std::uint16_t> &words) {
-    const char *header = headersOf(area).write;
+Frame writeCommand(int unit, ProtocolSpace space, int begin,
+                   const std::vector<std::uint16_t> &words) {
+    const AreaHeaders *h = headersOf(space);
+    const char *header = h ? h->write : nullptr;
     Frame f{unit, header ? header : "", -1, {}};
     appendDecimal(f.text, begin, 4);
     for (auto w : words)
@@ -260,12 +225,6 @@ QString endCodeText(int code) {
 ReplyDecoder::ReplyDecoder(const Frame &command)
     : m_command(command) {}
 
-FrameStatus ReplyDecoder::fail(ProtocolError::Kind kind, QString message, int code) {
-    m_error = ProtocolError{kind, code, std::move(message)};
-    m_status = FrameStatus::Failed;
-    return m_status;
-}
-
 bool ReplyDecoder::takeDelimiterRequest() {
     return std::exchange(m_delimiter, false);
 }
@@ -284,7 +243,7 @@ FrameStatus ReplyDecoder::feed(QByteArrayView bytes) {
         }
         if (c != Cr) {
             m_buffer += c;
-            if (m_buffer.size() > MaxFirstFrame)
+            if (m_buffer.size() >= MaxFirstFrame) // a part is at most 130 before its CR
                 return fail(Kind::Garbage,
                             QCoreApplication::translate(
                                 "rung::comms::Protocol",
@@ -349,12 +308,33 @@ FrameStatus ReplyDecoder::part(QByteArrayView frame) {
         m_reply.frame.endCode = *endCode;
         text = text.sliced(7);
     }
+    if (m_reply.frame.text.size() + text.size() > maxReplyText())
+        return fail(Kind::Malformed,
+                    QCoreApplication::translate(
+                        "rung::comms::Protocol",
+                        "Host Link: the reply to %1 goes on past the %2 characters of data the "
+                        "command asks for (part %3): not the answer to this command")
+                        .arg(QString::fromLatin1(m_command.header))
+                        .arg(maxReplyText())
+                        .arg(m_parts));
     m_reply.frame.text += text;
     if (!p.last) {
         m_delimiter = true;
         return m_status;
     }
     return finish();
+}
+
+// The most data characters the reply to this command can hold, so that a stream of parts
+// that never ends fails instead of growing: a read's words or flags; one frame for the rest.
+qsizetype ReplyDecoder::maxReplyText() const {
+    ProtocolSpace space;
+    bool write = false;
+    if (spaceOfHeader(m_command.header, space, write) && !write) {
+        const int count = decimalValue(m_command.text, 4, 4).value_or(0);
+        return space == ProtocolSpace::HostLinkCompletion ? count : 4 * count;
+    }
+    return MaxFirstFrame;
 }
 
 FrameStatus ReplyDecoder::finish() {
@@ -388,11 +368,11 @@ FrameStatus ReplyDecoder::finish() {
                         .arg(f.text.size()));
     };
     const QByteArrayView h(f.header);
-    Area area;
+    ProtocolSpace space;
     bool write = false;
-    if (areaOfHeader(h, area, write) && !write) {
+    if (spaceOfHeader(h, space, write) && !write) {
         const int count = decimalValue(m_command.text, 4, 4).value_or(0);
-        if (area == Area::Completion) {
+        if (space == ProtocolSpace::HostLinkCompletion) {
             if (f.text.size() != count)
                 return malformed();
             for (char c : f.text) {
@@ -423,26 +403,23 @@ FrameStatus ReplyDecoder::finish() {
     } else if (!f.text.isEmpty()) {
         return malformed();
     }
-    m_status = FrameStatus::Complete;
-    return m_status;
+    return complete();
 }
 
 ProtocolError ReplyDecoder::deadlinePassed(int waitedMs) const {
-    if (m_buffer.isEmpty() && m_parts == 0)
-        return {Kind::Truncated, 0,
-                QCoreApplication::translate("rung::comms::Protocol",
-                                            "Host Link: no reply from unit %1 within %2 ms")
-                    .arg(m_command.unit)
-                    .arg(waitedMs)};
-    return {Kind::Truncated, 0,
-            QCoreApplication::translate(
-                "rung::comms::Protocol",
-                "Host Link: the reply stopped after %1 parts and %2 characters (%3) "
-                "within %4 ms")
-                .arg(m_parts)
-                .arg(m_buffer.size())
-                .arg(hexDump(m_buffer))
-                .arg(waitedMs)};
+    return truncated(m_buffer.isEmpty() && m_parts == 0,
+                     QCoreApplication::translate("rung::comms::Protocol",
+                                                 "Host Link: no reply from unit %1 within %2 ms")
+                         .arg(m_command.unit)
+                         .arg(waitedMs),
+                     QCoreApplication::translate(
+                         "rung::comms::Protocol",
+                         "Host Link: the reply stopped after %1 parts and %2 characters (%3) "
+                         "within %4 ms")
+                         .arg(m_parts)
+                         .arg(m_buffer.size())
+                         .arg(hexDump(m_buffer))
+                         .arg(waitedMs));
 }
 
 // ----- slave side -----
@@ -460,6 +437,22 @@ void CommandDecoder::next() {
     feed({});
 }
 
+// While a command waits for next(), what follows it is the next command's start at most (a
+// master waits for the answer); more than a part's worth is a stream gone wrong: dropped.
+void CommandDecoder::keepPending() {
+    if (m_buffer.size() <= MaxPartBuffer)
+        return;
+    m_discarded = {Kind::Garbage, 0,
+                   QCoreApplication::translate(
+                       "rung::comms::Protocol",
+                       "Host Link: %1 characters arrived before the command was answered; "
+                       "the %2 beyond the first %3 were dropped")
+                       .arg(m_buffer.size())
+                       .arg(m_buffer.size() - MaxPartBuffer)
+                       .arg(MaxPartBuffer)};
+    m_buffer.truncate(MaxPartBuffer);
+}
+
 FrameStatus CommandDecoder::feed(QByteArrayView bytes) {
     m_buffer += bytes;
     while (m_status == FrameStatus::NeedMore) {
@@ -468,10 +461,24 @@ FrameStatus CommandDecoder::feed(QByteArrayView bytes) {
             m_buffer.remove(0, at < 0 ? m_buffer.size() : at); // noise between commands
         }
         const qsizetype cr = m_buffer.indexOf(Cr);
-        if (cr < 0) {
-            if (m_buffer.size() > 4 * MaxFirstFrame) // no CR in sight: resynchronise
-                m_buffer.clear();
-            return m_status;
+        if (cr < 0 || cr > MaxPartBuffer) {
+            if (m_buffer.size() <= MaxPartBuffer)
+                return m_status;
+            // No CR in sight: neither a part nor one the PLC would answer 18 to. Resynchronise
+            // at the next "@" (the command so far is dropped with it).
+            m_discarded = {Kind::Garbage, 0,
+                           QCoreApplication::translate(
+                               "rung::comms::Protocol",
+                               "Host Link: %1 characters without a CR (a part holds at most "
+                               "%2): dropped, waiting for the next \"@\"")
+                               .arg(cr < 0 ? m_buffer.size() : cr)
+                               .arg(MaxFirstFrame)};
+            const qsizetype again = m_buffer.indexOf('@', 1);
+            m_buffer.remove(0, again < 0 ? m_buffer.size() : again);
+            m_parts = 0;
+            m_command = {};
+            m_endCode = 0;
+            continue;
         }
         const QByteArray frame = m_buffer.left(cr);
         m_buffer.remove(0, cr + 1);
@@ -488,18 +495,33 @@ FrameStatus CommandDecoder::feed(QByteArrayView bytes) {
             m_command.header = text.sliced(3, 2).toByteArray();
             text = text.sliced(5);
         }
+        if (m_command.text.size() + text.size() > MaxText) {
+            // Longer than any command can be (a count has four digits): answer 18 now and
+            // take what follows as noise until the next "@".
+            m_discarded = {Kind::Malformed, FrameLengthError,
+                           QCoreApplication::translate(
+                               "rung::comms::Protocol",
+                               "Host Link: the %1 command goes on past %2 characters in %3 "
+                               "parts, longer than any command; answered with end code 18")
+                               .arg(QString::fromLatin1(m_command.header))
+                               .arg(MaxText)
+                               .arg(m_parts)};
+            m_command.text.clear();
+            m_endCode = FrameLengthError;
+            m_status = FrameStatus::Complete;
+            break;
+        }
         m_command.text += text;
         if (!p.fcsOk && !m_endCode)
             m_endCode = FcsError;
         if (frame.size() + 1 > (first ? MaxFirstFrame : MaxLaterFrame) && !m_endCode)
             m_endCode = FrameLengthError;
-        if (p.last) {
+        if (p.last)
             m_status = FrameStatus::Complete;
-        } else {
-            m_delimiter = true;
-            return m_status;
-        }
+        else
+            m_delimiter = true; // a master waits for it; parts already here are read on
     }
+    keepPending();
     return m_status;
 }
 
@@ -547,15 +569,15 @@ Operands parseForce(QByteArrayView text) {
     return o;
 }
 
-bool areaOfHeader(QByteArrayView header, Area &area, bool &write) {
+bool spaceOfHeader(QByteArrayView header, ProtocolSpace &space, bool &write) {
     for (const auto &h : areaHeaders) {
         if (header == QByteArrayView(h.read)) {
-            area = h.area;
+            space = h.space;
             write = false;
             return true;
         }
         if (h.write && header == QByteArrayView(h.write)) {
-            area = h.area;
+            space = h.space;
             write = true;
             return true;
         }

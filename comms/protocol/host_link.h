@@ -10,6 +10,7 @@
 // side answers a lone CR (the delimiter) before the next part comes.
 
 #include "comms/protocol/protocol_error.h"
+#include "model/target/protocol_map.h"
 
 #include <QByteArray>
 #include <QList>
@@ -22,15 +23,18 @@ namespace rung::comms::hostlink {
 inline constexpr char Cr = '\r';
 inline constexpr int MaxFirstFrame = 131;
 inline constexpr int MaxLaterFrame = 128;
+// The longest legal text of a command or reply, all parts joined: a count is four decimal
+// digits, so a write carries at most a begin word and 9999 words of four hex digits.
+inline constexpr int MaxWords = 9999;
+inline constexpr int MaxText = 4 + 4 * MaxWords;
+// Characters the slave holds while looking for a part's CR: a part too long for the PLC
+// (over 131) still gets its end code 18 up to this length; beyond it the bytes are noise.
+inline constexpr int MaxPartBuffer = 4 * MaxFirstFrame;
 
-// The word areas the read/write commands reach, with their headers.
-enum class Area : std::uint8_t {
-    Ir,        // RR / WR: IR and SR channels
-    Hr,        // RH / WH
-    Dm,        // RD / WD
-    TimerPv,   // RC / WC: timer / counter present values (BCD)
-    Completion // RG: timer / counter completion flags (read only)
-};
+// The word areas the read / write commands reach are the Host Link spaces of the protocol
+// maps (model::ProtocolSpace::HostLinkIr .. HostLinkCompletion: RR/WR, RH/WH, RD/WD, RC/WC,
+// RG), so a driver passes what the CPM1 map gives without a translation table of its own.
+using model::ProtocolSpace;
 
 enum class Mode : std::uint8_t { Program = 0x00, Monitor = 0x02, Run = 0x03 };
 
@@ -63,9 +67,11 @@ QByteArray fcs(QByteArrayView characters);
 // word data is split on whole words, as the PLC does: 30 words, then 31 per part).
 QList<QByteArray> encode(const Frame &frame);
 
-// Commands the product sends. begin / count in words (or timers for RC / RG).
-Frame readCommand(int unit, Area area, int begin, int count);
-Frame writeCommand(int unit, Area area, int begin, const std::vector<std::uint16_t> &words);
+// Commands the product sends. begin / count in words (or timers for RC / RG). A space that is
+// not a Host Link one gives a frame without a header, which the PLC refuses (IC).
+Frame readCommand(int unit, ProtocolSpace space, int begin, int count);
+Frame writeCommand(int unit, ProtocolSpace space, int begin,
+                   const std::vector<std::uint16_t> &words);
 Frame statusCommand(int unit);                             // MS
 Frame modeCommand(int unit, Mode mode);                    // SC
 Frame forceCommand(int unit, bool set, int word, int bit); // KS / KR on "CIO "
@@ -86,33 +92,37 @@ Mode modeOfStatus(int status);
 QString endCodeText(int code);
 
 // Master side: the reply to one command, from bytes as they arrive, over any number of parts.
-class ReplyDecoder {
+class ReplyDecoder : public ReplyDecoderBase {
 public:
     explicit ReplyDecoder(const Frame &command);
     FrameStatus feed(QByteArrayView bytes);
     // True once after each part that is not the last: the caller sends a lone CR.
     bool takeDelimiterRequest();
     ProtocolError deadlinePassed(int waitedMs) const;
-    FrameStatus status() const { return m_status; }
     const Reply &reply() const { return m_reply; }
-    const ProtocolError &error() const { return m_error; }
+    // Characters held: the part being received and the text of the parts before it. Never
+    // more than MaxBuffered: a reply longer than its command asks for fails.
+    qsizetype buffered() const { return m_buffer.size() + m_reply.frame.text.size(); }
+    static constexpr qsizetype MaxBuffered = MaxFirstFrame + MaxText;
 
 private:
-    FrameStatus fail(ProtocolError::Kind kind, QString message, int code = 0);
     FrameStatus part(QByteArrayView frame);
     FrameStatus finish();
+    qsizetype maxReplyText() const;
 
     Frame m_command;
     QByteArray m_buffer;
     int m_parts = 0;
     bool m_delimiter = false;
-    FrameStatus m_status = FrameStatus::NeedMore;
     Reply m_reply;
-    ProtocolError m_error;
 };
 
 // Slave side: one command over any number of parts. endCode() is the code a PLC answers a
 // broken command with (13 FCS, 14 format, 18 frame length), 0 when the command is sound.
+// Memory stays bounded whatever arrives: a command whose parts go on past MaxText ends
+// Complete with end code 18 (its text dropped) and the decoder looks for the next "@"; bytes
+// that arrive while a command waits for next() are kept up to MaxPartBuffer, the rest dropped.
+// discarded() says what was thrown away last and why.
 class CommandDecoder {
 public:
     FrameStatus feed(QByteArrayView bytes);
@@ -120,15 +130,20 @@ public:
     FrameStatus status() const { return m_status; }
     const Frame &command() const { return m_command; }
     int endCode() const { return m_endCode; }
+    const ProtocolError &discarded() const { return m_discarded; }
+    qsizetype buffered() const { return m_buffer.size() + m_command.text.size(); }
+    static constexpr qsizetype MaxBuffered = MaxPartBuffer + MaxText;
     void next();
 
 private:
+    void keepPending();
     QByteArray m_buffer;
     int m_parts = 0;
     bool m_delimiter = false;
     FrameStatus m_status = FrameStatus::NeedMore;
     Frame m_command;
     int m_endCode = 0;
+    ProtocolError m_discarded;
 };
 
 // The text of a read / write / force command, as the slave reads it.
@@ -142,7 +157,7 @@ struct Operands {
 Operands parseRead(QByteArrayView text);  // begin(4) count(4), decimal
 Operands parseWrite(QByteArrayView text); // begin(4) words(4 hex each)
 Operands parseForce(QByteArrayView text); // "CIO " word(4) bit(2)
-// Which area a read / write header reaches; false when it is neither.
-bool areaOfHeader(QByteArrayView header, Area &area, bool &write);
+// Which space a read / write header reaches; false when it is neither.
+bool spaceOfHeader(QByteArrayView header, ProtocolSpace &space, bool &write);
 
 } // namespace rung::comms::hostlink

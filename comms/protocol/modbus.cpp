@@ -1,10 +1,13 @@
 #include "comms/protocol/modbus.h"
 
+#include "comms/protocol/ascii_hex.h"
+
 namespace rung::comms::modbus {
 
 namespace {
 
 using Kind = ProtocolError::Kind;
+using detail::hex2;
 
 void put16(QByteArray &out, int value) {
     out += char((value >> 8) & 0xFF);
@@ -49,10 +52,6 @@ bool isBitRead(int function) {
 bool known(int function) {
     return isRead(function) || function == WriteSingleCoil || function == WriteSingleRegister ||
            function == WriteMultipleCoils || function == WriteMultipleRegisters;
-}
-
-QString hex2(int value) {
-    return QString::number(value, 16).toUpper().rightJustified(2, QLatin1Char('0'));
 }
 
 } // namespace
@@ -252,12 +251,6 @@ ReplyDecoder::ReplyDecoder(Framing framing, int unit, const Request &request, in
     , m_request(request)
     , m_transaction(transaction) {}
 
-FrameStatus ReplyDecoder::fail(ProtocolError::Kind kind, QString message, int code) {
-    m_error = ProtocolError{kind, code, std::move(message)};
-    m_status = FrameStatus::Failed;
-    return m_status;
-}
-
 qsizetype ReplyDecoder::expectedRtuLength() const {
     if (m_buffer.size() < 2)
         return 0;
@@ -274,7 +267,9 @@ qsizetype ReplyDecoder::expectedRtuLength() const {
 FrameStatus ReplyDecoder::feed(QByteArrayView bytes) {
     if (m_status != FrameStatus::NeedMore)
         return m_status;
-    m_buffer += bytes;
+    // Whatever the peer sends, one byte past the longest reply is enough to know it is wrong.
+    m_received += bytes.size();
+    m_buffer += bytes.first(std::min(bytes.size(), MaxBuffered - m_buffer.size()));
     if (m_framing == Framing::Rtu) {
         const qsizetype length = expectedRtuLength();
         if (length < 0)
@@ -290,7 +285,7 @@ FrameStatus ReplyDecoder::feed(QByteArrayView bytes) {
             return fail(Kind::Garbage, QCoreApplication::translate(
                                            "rung::comms::Protocol",
                                            "Modbus RTU: %1 bytes more than the %2-byte reply: %3")
-                                           .arg(m_buffer.size() - length)
+                                           .arg(m_received - length)
                                            .arg(length)
                                            .arg(hexDump(m_buffer)));
         const QByteArrayView frame(m_buffer);
@@ -325,7 +320,7 @@ FrameStatus ReplyDecoder::feed(QByteArrayView bytes) {
         return fail(Kind::Garbage,
                     QCoreApplication::translate("rung::comms::Protocol",
                                                 "Modbus TCP: %1 bytes more than the reply's length")
-                        .arg(m_buffer.size() - 6 - length));
+                        .arg(m_received - 6 - length));
     if (transaction != (m_transaction & 0xFFFF))
         return fail(Kind::WrongReply,
                     QCoreApplication::translate(
@@ -393,24 +388,21 @@ FrameStatus ReplyDecoder::decodePdu(QByteArrayView pdu, int unit) {
         if (r.address != m_request.address || QByteArrayView(sent).sliced(3, 2) != pdu.sliced(3, 2))
             return mismatch();
     }
-    m_status = FrameStatus::Complete;
-    return m_status;
+    return complete();
 }
 
 ProtocolError ReplyDecoder::deadlinePassed(int waitedMs) const {
-    if (m_buffer.isEmpty())
-        return {Kind::Truncated, 0,
-                QCoreApplication::translate("rung::comms::Protocol",
-                                            "Modbus: no reply from unit %1 within %2 ms")
-                    .arg(m_unit)
-                    .arg(waitedMs)};
-    return {
-        Kind::Truncated, 0,
+    return truncated(
+        m_buffer.isEmpty(),
+        QCoreApplication::translate("rung::comms::Protocol",
+                                    "Modbus: no reply from unit %1 within %2 ms")
+            .arg(m_unit)
+            .arg(waitedMs),
         QCoreApplication::translate("rung::comms::Protocol",
                                     "Modbus: the reply stopped after %1 bytes (%2) within %3 ms")
             .arg(m_buffer.size())
             .arg(hexDump(m_buffer))
-            .arg(waitedMs)};
+            .arg(waitedMs));
 }
 
 // ----- slave side -----
@@ -427,8 +419,8 @@ FrameStatus RequestDecoder::take(qsizetype length) {
     const QByteArrayView frame = QByteArrayView(m_buffer).first(length);
     m_used = length;
     if (m_framing == Framing::Rtu) {
-        const int received = byte(frame, length - 2) | byte(frame, length - 1) << 8;
-        if (length < 4 || crc16(frame.first(length - 2)) != received) {
+        if (length < 4 || crc16(frame.first(length - 2)) !=
+                              (byte(frame, length - 2) | byte(frame, length - 1) << 8)) {
             ++m_dropped; // Serial line V1.02 2.5.1.1: a frame with a bad CRC gets no answer
             m_buffer.remove(0, length);
             m_used = 0;
@@ -445,49 +437,93 @@ FrameStatus RequestDecoder::take(qsizetype length) {
     return m_status;
 }
 
+void RequestDecoder::drop(QString why) {
+    m_discarded = {Kind::Garbage, 0, std::move(why)};
+    ++m_dropped;
+    m_buffer.clear();
+}
+
+// While a request waits for next(), a master waits for its answer: more than one frame
+// after it is a stream gone wrong, and the excess is dropped.
+void RequestDecoder::keepPending() {
+    if (m_status != FrameStatus::Complete || m_buffer.size() - m_used <= MaxTcpFrame)
+        return;
+    m_discarded = {Kind::Garbage, 0,
+                   QCoreApplication::translate(
+                       "rung::comms::Protocol",
+                       "Modbus: %1 bytes arrived before the request was answered; the %2 "
+                       "beyond the first %3 were dropped")
+                       .arg(m_buffer.size() - m_used)
+                       .arg(m_buffer.size() - m_used - MaxTcpFrame)
+                       .arg(MaxTcpFrame)};
+    m_buffer.truncate(m_used + MaxTcpFrame);
+}
+
 FrameStatus RequestDecoder::feed(QByteArrayView bytes) {
+    if (m_skipToSilence)
+        bytes = {}; // the rest of a frame already dropped: nothing in it can be trusted
     m_buffer += bytes;
-    if (m_status != FrameStatus::NeedMore)
-        return m_status;
     while (m_status == FrameStatus::NeedMore) {
         if (m_framing == Framing::Tcp) {
             if (m_buffer.size() < 7)
-                return m_status;
+                break;
             const int protocol = get16(m_buffer, 2);
             const int length = get16(m_buffer, 4);
             if (protocol != 0 || length < 2 || length > 254) {
-                m_buffer.clear(); // not Modbus: nothing after it can be trusted either
-                ++m_dropped;
-                return m_status;
+                // Not Modbus: nothing after it can be trusted either.
+                drop(QCoreApplication::translate(
+                         "rung::comms::Protocol",
+                         "Modbus TCP: not a Modbus header (protocol %1, length %2): %3")
+                         .arg(protocol)
+                         .arg(length)
+                         .arg(hexDump(m_buffer)));
+                break;
             }
             if (m_buffer.size() < 6 + length)
-                return m_status;
-            return take(6 + length);
+                break;
+            take(6 + length);
+            break;
         }
         if (m_buffer.size() < 2)
-            return m_status;
+            break;
         const int function = byte(m_buffer, 1);
         qsizetype length = 0;
         if (function == WriteMultipleCoils || function == WriteMultipleRegisters) {
             if (m_buffer.size() < 7)
-                return m_status;
+                break;
             length = 7 + byte(m_buffer, 6) + 2;
         } else if (known(function)) {
             length = 8;
+        } else if (m_buffer.size() <= MaxRtuFrame) {
+            break; // unknown length: wait for silence()
         } else {
-            return m_status; // unknown length: wait for silence()
+            length = m_buffer.size();
+        }
+        if (length > MaxRtuFrame) {
+            // No RTU frame is this long: the line carries no gaps or no Modbus. Per serial
+            // line V1.02 2.5.1.1 a frame ends at a silence, so everything up to it is dropped.
+            drop(QCoreApplication::translate(
+                     "rung::comms::Protocol",
+                     "Modbus RTU: a frame of function %1h runs past %2 bytes, the longest an "
+                     "RTU frame can be: dropped with what follows until the line is quiet")
+                     .arg(hex2(function))
+                     .arg(MaxRtuFrame));
+            m_skipToSilence = true;
+            break;
         }
         if (m_buffer.size() < length)
-            return m_status;
+            break;
         const int before = m_dropped;
         take(length);
         if (m_dropped == before)
-            return m_status;
+            break;
     }
+    keepPending();
     return m_status;
 }
 
 FrameStatus RequestDecoder::silence() {
+    m_skipToSilence = false;
     if (m_framing != Framing::Rtu || m_status != FrameStatus::NeedMore || m_buffer.isEmpty())
         return m_status;
     if (m_buffer.size() < 4) {

@@ -42,6 +42,10 @@ inline constexpr int MaxReadRegisters = 125;
 inline constexpr int MaxWriteBits = 1968;
 inline constexpr int MaxWriteRegisters = 123;
 inline constexpr int BroadcastUnit = 0;
+// The longest frames: an RTU frame holds at most 256 bytes (serial line V1.02, 2.5.1.1); a
+// TCP frame the 7-byte MBAP header and a PDU of at most 253 (Application Protocol 4.1).
+inline constexpr int MaxRtuFrame = 256;
+inline constexpr int MaxTcpFrame = 7 + 253;
 
 struct Request {
     std::uint8_t function = ReadHoldingRegisters;
@@ -80,17 +84,17 @@ enum class Framing : std::uint8_t { Rtu, Tcp };
 
 // Master side: the reply to one request, from bytes as they arrive. Over RTU the length comes
 // from the function code and byte count, so no silence timer is needed to end a reply.
-class ReplyDecoder {
+class ReplyDecoder : public ReplyDecoderBase {
 public:
     ReplyDecoder(Framing framing, int unit, const Request &request, int transaction = 0);
     FrameStatus feed(QByteArrayView bytes);
     ProtocolError deadlinePassed(int waitedMs) const;
-    FrameStatus status() const { return m_status; }
     const Response &response() const { return m_response; }
-    const ProtocolError &error() const { return m_error; }
+    // Bytes held: never more than one byte past the longest reply a header can announce.
+    qsizetype buffered() const { return m_buffer.size(); }
+    static constexpr qsizetype MaxBuffered = 3 + 255 + 2 + 1;
 
 private:
-    FrameStatus fail(ProtocolError::Kind kind, QString message, int code = 0);
     FrameStatus decodePdu(QByteArrayView pdu, int unit);
     qsizetype expectedRtuLength() const; // 0 = not known yet
 
@@ -99,15 +103,18 @@ private:
     Request m_request;
     int m_transaction;
     QByteArray m_buffer;
-    FrameStatus m_status = FrameStatus::NeedMore;
+    qsizetype m_received = 0;
     Response m_response;
-    ProtocolError m_error;
 };
 
 // Slave side: requests, one after another, from bytes as they arrive.
 //  RTU: length from the function code; an unknown function ends at silence() (the 3.5
 //  character gap); a frame with a bad CRC is dropped, as the RTU spec says (no reply).
 //  TCP: the MBAP length field.
+// Memory stays bounded whatever arrives: an RTU frame that grows past 256 bytes (an unknown
+// function on a line without gaps, or a byte count no request can have) is dropped with all
+// that follows until silence(); bytes that arrive while a request waits for next() are kept
+// up to one frame, the rest dropped. discarded() says what was thrown away last and why.
 class RequestDecoder {
 public:
     explicit RequestDecoder(Framing framing)
@@ -119,11 +126,16 @@ public:
     int unit() const { return m_unit; }
     int transaction() const { return m_transaction; }
     const ParsedRequest &parsed() const { return m_parsed; }
-    int droppedFrames() const { return m_dropped; } // RTU frames with a wrong CRC
+    int droppedFrames() const { return m_dropped; } // wrong CRC, too long, not Modbus
+    const ProtocolError &discarded() const { return m_discarded; }
+    qsizetype buffered() const { return m_buffer.size(); }
+    static constexpr qsizetype MaxBuffered = 2 * MaxTcpFrame; // a request and the next one
     void next();
 
 private:
     FrameStatus take(qsizetype length);
+    void drop(QString why);
+    void keepPending();
     Framing m_framing;
     QByteArray m_buffer;
     qsizetype m_used = 0;
@@ -132,6 +144,8 @@ private:
     int m_transaction = 0;
     ParsedRequest m_parsed;
     int m_dropped = 0;
+    bool m_skipToSilence = false;
+    ProtocolError m_discarded;
 };
 
 } // namespace rung::comms::modbus

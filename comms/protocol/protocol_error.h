@@ -45,4 +45,32 @@ struct ProtocolError {
 // The bytes as a reader would quote them in a message: "06 30 41 ..." (at most 32 bytes).
 QString hexDump(QByteArrayView bytes);
 
+// What the three master-side reply decoders share: the status, the error, and the one way to
+// fail (the error is kept, later bytes are ignored). Each decoder's deadlinePassed() says in
+// its protocol's words whether nothing came or the reply stopped; truncated() makes it.
+class ReplyDecoderBase {
+public:
+    FrameStatus status() const { return m_status; }
+    const ProtocolError &error() const { return m_error; }
+
+protected:
+    FrameStatus fail(ProtocolError::Kind kind, QString message, int code = 0) {
+        m_error = ProtocolError{kind, code, std::move(message)};
+        m_status = FrameStatus::Failed;
+        return m_status;
+    }
+    FrameStatus complete() {
+        m_status = FrameStatus::Complete;
+        return m_status;
+    }
+    // The caller's deadline passed: silence when nothing arrived, else what did.
+    static ProtocolError truncated(bool nothingArrived, QString silence, QString stopped) {
+        return {ProtocolError::Kind::Truncated, 0,
+                nothingArrived ? std::move(silence) : std::move(stopped)};
+    }
+
+    FrameStatus m_status = FrameStatus::NeedMore;
+    ProtocolError m_error;
+};
+
 } // namespace rung::comms

@@ -1,5 +1,7 @@
 #include "comms/protocol/vigor_link.h"
 
+#include "comms/protocol/ascii_hex.h"
+
 #include <optional>
 
 namespace rung::comms::vigor {
@@ -7,34 +9,10 @@ namespace rung::comms::vigor {
 namespace {
 
 using Kind = ProtocolError::Kind;
-
-std::optional<int> hexDigit(char c) {
-    if (c >= '0' && c <= '9')
-        return c - '0';
-    if (c >= 'A' && c <= 'F')
-        return c - 'A' + 10;
-    return std::nullopt; // the seed sends upper case only
-}
-
-// The value of `digits` hex characters at `at`, or nullopt when one is not a hex digit.
-std::optional<int> hexValue(QByteArrayView text, qsizetype at, int digits) {
-    if (at + digits > text.size())
-        return std::nullopt;
-    int value = 0;
-    for (int i = 0; i < digits; ++i) {
-        const auto d = hexDigit(text[at + i]);
-        if (!d)
-            return std::nullopt;
-        value = value << 4 | *d;
-    }
-    return value;
-}
-
-void appendHex(QByteArray &out, int value, int digits) {
-    static const char digitsTable[] = "0123456789ABCDEF";
-    for (int i = digits - 1; i >= 0; --i)
-        out += digitsTable[(value >> (4 * i)) & 0xF];
-}
+using detail::appendHex;
+using detail::hex2;
+using detail::hexDigit;
+using detail::hexValue;
 
 // Body (station .. ETX) + sum; the caller puts the start byte in front.
 QByteArray closeFrame(char start, QByteArray body) {
@@ -88,7 +66,7 @@ QByteArray encodeReply(const Reply &reply) {
 }
 
 QString errorText(int code) {
-    const QString hex = QString::number(code, 16).toUpper().rightJustified(2, QLatin1Char('0'));
+    const QString hex = hex2(code);
     switch (ErrorCode(code)) {
     case ErrorCode::None:
         return QCoreApplication::translate("rung::comms::Protocol", "no error (error 00h)");
@@ -127,12 +105,6 @@ QString errorText(int code) {
 ReplyDecoder::ReplyDecoder(const Request &request)
     : m_request(request) {}
 
-FrameStatus ReplyDecoder::fail(ProtocolError::Kind kind, QString message, int code) {
-    m_error = ProtocolError{kind, code, std::move(message)};
-    m_status = FrameStatus::Failed;
-    return m_status;
-}
-
 FrameStatus ReplyDecoder::feed(QByteArrayView bytes) {
     if (m_status != FrameStatus::NeedMore)
         return m_status;
@@ -151,8 +123,8 @@ FrameStatus ReplyDecoder::feed(QByteArrayView bytes) {
         const qsizetype etx = m_buffer.indexOf(Etx);
         if (etx >= 0 && m_buffer.size() == etx + 3)
             return decode();
-        // A reply longer than the longest legal one is not going to end well.
-        if (m_buffer.size() > 1 + 6 + 2 * MaxBytes + 3)
+        // A reply as long as the longest legal one and still not ended is not going to end well.
+        if (m_buffer.size() >= MaxReplyFrame)
             return fail(Kind::Garbage, QCoreApplication::translate(
                                            "rung::comms::Protocol",
                                            "Vigor link: %1 bytes without the end of a frame (ETX)")
@@ -214,8 +186,7 @@ FrameStatus ReplyDecoder::decode() {
             QCoreApplication::translate("rung::comms::Protocol",
                                         "Vigor link: the reply is for command %1h, the request was "
                                         "%2h")
-                .arg(QString::number(*command, 16).toUpper(),
-                     QString::number(int(m_request.command), 16).toUpper()));
+                .arg(hex2(*command), hex2(int(m_request.command))));
     if (*error != 0)
         return fail(Kind::DeviceError,
                     QCoreApplication::translate("rung::comms::Protocol", "Vigor link: %1")
@@ -229,24 +200,22 @@ FrameStatus ReplyDecoder::decode() {
                                          .arg(data.size())
                                          .arg(expected));
     m_reply = Reply{*station, m_request.command, 0, data};
-    m_status = FrameStatus::Complete;
-    return m_status;
+    return complete();
 }
 
 ProtocolError ReplyDecoder::deadlinePassed(int waitedMs) const {
-    if (m_buffer.isEmpty())
-        return {Kind::Truncated, 0,
-                QCoreApplication::translate("rung::comms::Protocol",
-                                            "Vigor link: no reply from station %1 within %2 ms")
-                    .arg(m_request.station)
-                    .arg(waitedMs)};
-    return {Kind::Truncated, 0,
-            QCoreApplication::translate(
-                "rung::comms::Protocol",
-                "Vigor link: the reply stopped after %1 bytes (%2) within %3 ms")
-                .arg(m_buffer.size())
-                .arg(hexDump(m_buffer))
-                .arg(waitedMs)};
+    return truncated(
+        m_buffer.isEmpty(),
+        QCoreApplication::translate("rung::comms::Protocol",
+                                    "Vigor link: no reply from station %1 within %2 ms")
+            .arg(m_request.station)
+            .arg(waitedMs),
+        QCoreApplication::translate(
+            "rung::comms::Protocol",
+            "Vigor link: the reply stopped after %1 bytes (%2) within %3 ms")
+            .arg(m_buffer.size())
+            .arg(hexDump(m_buffer))
+            .arg(waitedMs));
 }
 
 // ----- slave side -----
@@ -261,28 +230,60 @@ void RequestDecoder::next() {
 }
 
 FrameStatus RequestDecoder::feed(QByteArrayView bytes) {
-    if (m_status != FrameStatus::NeedMore) {
-        m_buffer += bytes; // kept for next()
-        return m_status;
-    }
     m_buffer += bytes;
-    const qsizetype stx = m_buffer.indexOf(Stx);
-    if (stx < 0) {
-        m_buffer.clear();
-        return m_status;
+    if (m_status == FrameStatus::NeedMore)
+        parse();
+    // While a request waits for next(), a master waits for its answer: more than one frame
+    // after it is a stream gone wrong, and the excess is dropped.
+    const qsizetype pending = m_buffer.size() - m_used;
+    if (m_status == FrameStatus::Complete && pending > MaxRequestFrame) {
+        m_discarded = {ProtocolError::Kind::Garbage, 0,
+                       QCoreApplication::translate(
+                           "rung::comms::Protocol",
+                           "Vigor link: %1 bytes arrived before the request was answered; the "
+                           "%2 beyond the first %3 were dropped")
+                           .arg(pending)
+                           .arg(pending - MaxRequestFrame)
+                           .arg(MaxRequestFrame)};
+        m_buffer.truncate(m_used + MaxRequestFrame);
     }
-    m_buffer.remove(0, stx);
-    const qsizetype etx = m_buffer.indexOf(Etx);
-    if (etx < 0) {
-        // A request is at most 1 + 10 + 256 + 3 bytes; more without ETX is noise: resync.
-        if (m_buffer.size() > 1 + 10 + 2 * MaxBytes + 3) {
-            const qsizetype again = m_buffer.indexOf(Stx, 1);
-            m_buffer.remove(0, again < 0 ? m_buffer.size() : again);
+    return m_status;
+}
+
+void RequestDecoder::parse() {
+    qsizetype etx = -1;
+    while (true) {
+        const qsizetype stx = m_buffer.indexOf(Stx);
+        if (stx < 0) {
+            m_buffer.clear(); // noise between frames
+            return;
         }
-        return m_status;
+        m_buffer.remove(0, stx);
+        etx = m_buffer.indexOf(Etx);
+        // STX cannot occur inside a frame (the payload is hex): a later one starts over.
+        const qsizetype restart =
+            etx < 0 ? m_buffer.lastIndexOf(Stx) : m_buffer.lastIndexOf(Stx, etx);
+        if (restart > 0) {
+            m_buffer.remove(0, restart);
+            etx = m_buffer.indexOf(Etx);
+        }
+        if (etx >= 0 && etx + 3 <= MaxRequestFrame)
+            break;
+        if (etx < 0 && m_buffer.size() <= MaxRequestFrame)
+            return; // the rest of the frame is on its way
+        // Longer than any request without its ETX: noise, or a frame that lost its ETX.
+        m_discarded = {ProtocolError::Kind::Garbage, 0,
+                       QCoreApplication::translate(
+                           "rung::comms::Protocol",
+                           "Vigor link: %1 bytes from STX without ETX (a request holds at most "
+                           "%2): dropped up to the next STX")
+                           .arg(etx < 0 ? m_buffer.size() : etx + 1)
+                           .arg(MaxRequestFrame)};
+        const qsizetype again = m_buffer.indexOf(Stx, 1);
+        m_buffer.remove(0, again < 0 ? m_buffer.size() : again);
     }
     if (m_buffer.size() < etx + 3)
-        return m_status;
+        return;
     m_used = etx + 3;
     m_status = FrameStatus::Complete;
     const QByteArrayView frame = QByteArrayView(m_buffer).first(m_used);
@@ -293,16 +294,16 @@ FrameStatus RequestDecoder::feed(QByteArrayView bytes) {
     m_request.command = Command(command.value_or(0));
     if (frame.sliced(etx + 1, 2) != QByteArrayView(sum(body))) {
         m_errorCode = int(ErrorCode::SumCheck);
-        return m_status;
+        return;
     }
     for (qsizetype i = 1; i < etx; ++i)
         if (!hexDigit(frame[i])) {
             m_errorCode = int(ErrorCode::AsciiConversion);
-            return m_status;
+            return;
         }
     if (etx < 5 || !knownCommand(*command)) {
         m_errorCode = int(ErrorCode::NoSuchCommand);
-        return m_status;
+        return;
     }
     const auto address = hexValue(frame, 5, 4);
     m_request.address = address.value_or(0);
@@ -330,7 +331,6 @@ FrameStatus RequestDecoder::feed(QByteArrayView bytes) {
     else if ((m_request.command == Command::Read || m_request.command == Command::Write) &&
              (m_request.length < 1 || m_request.length > MaxBytes))
         m_errorCode = int(ErrorCode::AddressRange);
-    return m_status;
 }
 
 } // namespace rung::comms::vigor

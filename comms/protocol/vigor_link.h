@@ -8,6 +8,7 @@
 // sent as two upper-case hex digits. Payload is upper-case ASCII hex.
 
 #include "comms/protocol/protocol_error.h"
+#include "model/target/protocol_map.h"
 
 #include <QByteArray>
 
@@ -18,7 +19,13 @@ namespace rung::comms::vigor {
 inline constexpr char Stx = 0x02;
 inline constexpr char Etx = 0x03;
 inline constexpr char Ack = 0x06;
-inline constexpr int MaxBytes = 128; // 51h / 61h move at most 128 bytes (seed 001, B-5)
+// 51h / 61h move at most 128 bytes (seed 001, B-5): the model's, which the link map reads too.
+inline constexpr int MaxBytes = model::VigorLinkMaxBytes;
+// The longest frames: a 61h request of MaxBytes (STX, station, command, address, length, the
+// bytes, ETX, sum) and a 51h reply of MaxBytes (ACK, station, command, error, the bytes, ETX,
+// sum).
+inline constexpr int MaxRequestFrame = 1 + 10 + 2 * MaxBytes + 3;
+inline constexpr int MaxReplyFrame = 1 + 6 + 2 * MaxBytes + 3;
 
 enum class Command : std::uint8_t { Read = 0x51, Write = 0x61, BitOn = 0x70, BitOff = 0x71 };
 
@@ -62,41 +69,46 @@ QByteArray sum(QByteArrayView body);
 QString errorText(int code);
 
 // Master side: collects the reply to one request from bytes as they arrive (in any split).
-class ReplyDecoder {
+class ReplyDecoder : public ReplyDecoderBase {
 public:
     explicit ReplyDecoder(const Request &request);
     // Feed the next bytes; after Complete or Failed further bytes are ignored.
     FrameStatus feed(QByteArrayView bytes);
     // The caller's deadline passed: a truncated frame or silence, as an error.
     ProtocolError deadlinePassed(int waitedMs) const;
-    FrameStatus status() const { return m_status; }
     const Reply &reply() const { return m_reply; }
-    const ProtocolError &error() const { return m_error; }
+    qsizetype buffered() const { return m_buffer.size(); }
+    static constexpr qsizetype MaxBuffered = MaxReplyFrame; // longer fails
 
 private:
-    FrameStatus fail(ProtocolError::Kind kind, QString message, int code = 0);
     FrameStatus decode();
 
     Request m_request;
     QByteArray m_buffer;
-    FrameStatus m_status = FrameStatus::NeedMore;
     Reply m_reply;
-    ProtocolError m_error;
 };
 
 // Slave side: one request, parsed from bytes as they arrive. Bytes before STX are dropped
 // (line noise between frames). A frame that is complete but wrong carries the error code the
 // PLC answers with (sum 11h, ASCII 10h, command 12h); the caller still checks the station.
+// Memory stays bounded whatever arrives: a frame that runs past MaxRequestFrame without its
+// ETX is dropped up to the next STX; bytes that arrive while a request waits for next() are
+// kept up to one frame, the rest dropped. discarded() says what was thrown away last and why.
 class RequestDecoder {
 public:
     FrameStatus feed(QByteArrayView bytes);
     FrameStatus status() const { return m_status; }
     const Request &request() const { return m_request; }
     int errorCode() const { return m_errorCode; } // 0, or the ErrorCode to answer with
+    const ProtocolError &discarded() const { return m_discarded; }
+    qsizetype buffered() const { return m_buffer.size(); }
+    static constexpr qsizetype MaxBuffered = 2 * MaxRequestFrame; // a request and the next
     // Start over for the next frame, keeping bytes already received after this one.
     void next();
 
 private:
+    void parse();
+    ProtocolError m_discarded;
     QByteArray m_buffer;
     qsizetype m_used = 0;
     FrameStatus m_status = FrameStatus::NeedMore;

@@ -1,6 +1,9 @@
 #include "comms/transport/fd_waiter.h"
 
+#include <QCoreApplication>
+
 #include <cerrno>
+#include <cstring>
 #include <fcntl.h>
 #include <poll.h>
 #include <unistd.h>
@@ -8,8 +11,12 @@
 namespace rung::comms::detail {
 
 FdWaiter::FdWaiter() {
-    if (::pipe2(m_pipe, O_CLOEXEC | O_NONBLOCK) != 0)
+    if (::pipe2(m_pipe, O_CLOEXEC | O_NONBLOCK) != 0) {
+        m_error = QCoreApplication::translate("rung::comms::Protocol",
+                                              "no wake-up pipe for cancelling a read: %1")
+                      .arg(QString::fromLocal8Bit(std::strerror(errno)));
         m_pipe[0] = m_pipe[1] = -1;
+    }
 }
 
 FdWaiter::~FdWaiter() {

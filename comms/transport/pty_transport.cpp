@@ -32,31 +32,59 @@ PtyTransport::~PtyTransport() {
 }
 
 std::unique_ptr<PtyTransport> PtyTransport::createPair(QString *error) {
-    const int master = ::posix_openpt(O_RDWR | O_NOCTTY | O_CLOEXEC | O_NONBLOCK);
-    if (master < 0 || ::grantpt(master) != 0 || ::unlockpt(master) != 0) {
+    // Every step can fail (no pseudo-terminal left, no file descriptor left): each failure is
+    // reported, and nothing made so far is left open.
+    const auto refuse = [error](const QString &cause) {
         if (error)
             *error = QCoreApplication::translate("rung::comms::Protocol",
                                                  "Cannot create a pseudo-terminal: %1")
-                         .arg(cause());
-        if (master >= 0)
-            ::close(master);
+                         .arg(cause);
         return nullptr;
-    }
+    };
+    const int master = ::posix_openpt(O_RDWR | O_NOCTTY | O_CLOEXEC | O_NONBLOCK);
+    if (master < 0)
+        return refuse(cause());
+    auto t = std::make_unique<PtyTransport>(QString());
+    t->m_fd = master; // closed by t from here on
+    t->m_pair = true;
     char name[128] = {};
-    ::ptsname_r(master, name, sizeof name);
-    auto t = std::make_unique<PtyTransport>(QStringLiteral("pty master"));
-    t->m_fd = master;
+    if (::grantpt(master) != 0 || ::unlockpt(master) != 0)
+        return refuse(cause());
+    if (const int failed = ::ptsname_r(master, name, sizeof name); failed != 0)
+        return refuse(
+            QStringLiteral("ptsname: %1").arg(QString::fromLocal8Bit(std::strerror(failed))));
+    if (!t->m_waiter.ok())
+        return refuse(t->m_waiter.error());
     t->m_peerPath = QString::fromLocal8Bit(name);
     t->m_path = t->m_peerPath;
     t->m_keepPeer = ::open(name, O_RDWR | O_NOCTTY | O_CLOEXEC | O_NONBLOCK);
-    if (t->m_keepPeer >= 0)
-        makeRaw(t->m_keepPeer); // no echo, no line editing: bytes pass as they are
+    if (t->m_keepPeer < 0)
+        return refuse(QStringLiteral("%1: %2").arg(t->m_peerPath, cause()));
+    if (!makeRaw(t->m_keepPeer)) // no echo, no line editing: bytes pass as they are
+        return refuse(QStringLiteral("%1: %2").arg(t->m_peerPath, cause()));
     return t;
 }
 
 bool PtyTransport::open(QString *error) {
     if (m_fd >= 0)
         return true;
+    if (m_pair) {
+        // The pseudo-terminal went with close(): its path may already name another one, and
+        // opening it would make this master a peer. A peer has to be told a new path.
+        if (error)
+            *error = QCoreApplication::translate(
+                         "rung::comms::Protocol",
+                         "Cannot open %1 again: the pseudo-terminal this program made ended "
+                         "when it was closed; make a new one and give its path to the peer")
+                         .arg(m_peerPath);
+        return false;
+    }
+    if (!m_waiter.ok()) {
+        if (error)
+            *error = QCoreApplication::translate("rung::comms::Protocol", "Cannot open %1: %2")
+                         .arg(m_path, m_waiter.error());
+        return false;
+    }
     m_fd = ::open(m_path.toLocal8Bit().constData(), O_RDWR | O_NOCTTY | O_CLOEXEC | O_NONBLOCK);
     if (m_fd < 0) {
         if (error)

@@ -18,7 +18,8 @@ public:
     ~PtyTransport() override;
 
     // A new pseudo-terminal; this transport is its master, open already. nullptr with a
-    // message when the system has none to give.
+    // message when the system has none to give (or no file descriptor for it). Once closed,
+    // a pair cannot be opened again: open() says so (the path would name another terminal).
     static std::unique_ptr<PtyTransport> createPair(QString *error);
     // The path a peer opens (the slave side of a pair made by createPair()).
     QString peerPath() const { return m_peerPath; }
@@ -37,6 +38,7 @@ private:
     QString m_peerPath;
     int m_fd = -1;
     int m_keepPeer = -1; // the master keeps the slave side open so a peer's close is no hang-up
+    bool m_pair = false; // made by createPair(): m_fd is the master side
     detail::FdWaiter m_waiter;
 };
 

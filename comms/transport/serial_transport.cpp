@@ -80,6 +80,12 @@ QString SerialTransport::failure(int spResult) const {
 bool SerialTransport::open(QString *error) {
     if (m_port)
         return true;
+    if (!m_waiter.ok()) {
+        if (error)
+            *error = QCoreApplication::translate("rung::comms::Protocol", "Cannot open %1: %2")
+                         .arg(m_name, m_waiter.error());
+        return false;
+    }
     const int errnoBefore = errno;
     if (sp_get_port_by_name(m_name.toUtf8().constData(), &m_port) != SP_OK) {
         m_port = nullptr;

@@ -6,7 +6,8 @@
 //
 // Threading: every call but cancel() blocks, up to its deadline, so a transport lives on a
 // worker thread (the driver's or the slave's), never on the UI thread. cancel() may be
-// called from any thread and wakes a read that is waiting.
+// called from any thread: it ends the read that is waiting or, when none is, the next read
+// that would have to wait (a cancel that comes between two reads is not lost).
 
 #include "comms/protocol/protocol_error.h"
 
@@ -49,7 +50,10 @@ public:
     virtual ReadResult read(QDeadlineTimer deadline) = 0;
     // Drops what arrived and was not read (before sending a request again).
     virtual void discardInput() = 0;
-    // Thread-safe: wakes a waiting read, which returns Cancelled. Later reads are not affected.
+    // Thread-safe: the read that is waiting returns Cancelled; with no read waiting, the next
+    // read that finds nothing to read returns Cancelled at once instead of waiting (bytes
+    // already there are returned first). However many cancel() calls came before it, one
+    // read returns Cancelled; the read after it waits as usual.
     virtual void cancel() = 0;
 };
 

@@ -22,6 +22,11 @@ int unitsOf(const Area &area, ProtocolSpace space) {
     return std::max(1, area.wordBits / unitBits(space));
 }
 
+// The last element of the area the range reaches.
+int lastOf(const ProtocolRange &r, const Area &area) {
+    return r.last < 0 ? area.last : std::min(r.last, area.last);
+}
+
 } // namespace
 
 int unitBits(ProtocolSpace space) {
@@ -55,7 +60,8 @@ std::optional<ProtocolAddress> toProtocol(const Target &target, const ProtocolMa
     if (address.bit >= 0 && part != DevicePart::Bit)
         return std::nullopt;
     for (const auto &r : map.ranges) {
-        if (r.part != part || areaIndex(target, r.area) != address.area)
+        if (r.part != part || areaIndex(target, r.area) != address.area ||
+            address.index > lastOf(r, area))
             continue;
         const int element = address.index - r.origin;
         const int width = unitBits(r.space);
@@ -78,6 +84,8 @@ std::optional<ProtocolAddress> toProtocol(const Target &target, const ProtocolMa
 std::optional<MappedDevice> fromProtocol(const Target &target, const ProtocolMap &map,
                                          ProtocolSpace space, int unit, int bit) {
     const int width = unitBits(space);
+    if (width > 1 && (bit < -1 || bit >= width))
+        return std::nullopt; // no such bit in the unit: it would reach into the next one
     const bool wantBit = width == 1 || bit >= 0;
     for (const auto &r : map.ranges) {
         if (r.space != space || (r.part == DevicePart::Value) == wantBit || unit < r.start)
@@ -100,7 +108,7 @@ std::optional<MappedDevice> fromProtocol(const Target &target, const ProtocolMap
                 d.index = r.origin + position;
             }
         }
-        if (d.index >= area.first && d.index <= area.last)
+        if (d.index >= area.first && d.index <= lastOf(r, area))
             return d;
     }
     return std::nullopt;

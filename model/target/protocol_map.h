@@ -43,13 +43,20 @@ enum class DevicePart : std::uint8_t { Bit, Value, Coil };
 // at `start` itself. Bit parts are packed into the space's units (bit position = element -
 // origin, times the word width when the area is a word area); Value parts take
 // Area::wordBits / unitBits units each (a Vigor C200 value: 4 link bytes or 2 registers).
+// `last` ends the range where the protocol's documented reach ends before the area does
+// (CPM1 Host Link: IR/SR to 252, DM to 6655, protocols.md); -1 = the area's last element.
 struct ProtocolRange {
     const char *area = "";
     DevicePart part = DevicePart::Bit;
     ProtocolSpace space = ProtocolSpace::Coils;
     int start = 0;
     int origin = 0;
+    int last = -1;
 };
+
+// Vigor Computer Link: 51h / 61h move at most 128 bytes (seed 001, B-5). The Vigor link
+// map's limit and the codec's frame bounds (comms/protocol/vigor_link.h) both read it.
+inline constexpr int VigorLinkMaxBytes = 128;
 
 struct ProtocolMap {
     ProtocolId protocol = ProtocolId::Modbus;
@@ -91,7 +98,8 @@ const ProtocolMap *findProtocolMap(const Target &target, ProtocolId protocol);
 std::optional<ProtocolAddress> toProtocol(const Target &target, const ProtocolMap &map,
                                           const Address &address, DevicePart part);
 // bit: the bit inside the unit for bit devices in a packed space; -1 asks for the word (or
-// value) that holds the unit. Spaces of 1-bit units ignore it. Areas that share their numbers
+// value) that holds the unit; a bit the unit does not have (16 of a register, 8 of a link
+// byte) maps to nothing. Spaces of 1-bit units ignore it. Areas that share their numbers
 // (CPM1 TIM / CNT, one bank) share addresses too; the way back names the first of them.
 std::optional<MappedDevice> fromProtocol(const Target &target, const ProtocolMap &map,
                                          ProtocolSpace space, int unit, int bit = -1);

@@ -4,7 +4,9 @@
 
 // Omron CPM1 Host Link areas (W353; protocols.md): IR/SR channels through RR / WR, HR
 // through RH / WH, DM through RD / WD, timer / counter present values through RC / WC and
-// their completion flags through RG. A channel's bit is that word's bit.
+// their completion flags through RG. A channel's bit is that word's bit. The reach of RR / WR
+// (IR and SR to channel 252) and RD / WD (DM 0000..1023, 6144..6655) is protocols.md's; the
+// channels and DM words past it are the PLC's but not the protocol's.
 
 namespace rung::model::detail {
 
@@ -15,14 +17,22 @@ std::vector<ProtocolMap> cpm1ProtocolMaps() {
     m.protocol = ProtocolId::HostLink;
     m.description = QT_TRANSLATE_NOOP("rung::model::Target", "Omron Host Link (C-mode)");
     m.ranges = {
-        {"IN", P::Value, S::HostLinkIr, 0, 0},        {"IN", P::Bit, S::HostLinkIr, 0, 0},
-        {"OUT", P::Value, S::HostLinkIr, 10, 10},     {"OUT", P::Bit, S::HostLinkIr, 10, 10},
-        {"WR", P::Value, S::HostLinkIr, 200, 200},    {"WR", P::Bit, S::HostLinkIr, 200, 200},
-        {"SR", P::Value, S::HostLinkIr, 232, 232},    {"SR", P::Bit, S::HostLinkIr, 232, 232},
-        {"HR", P::Value, S::HostLinkHr, 0, 0},        {"HR", P::Bit, S::HostLinkHr, 0, 0},
-        {"DM", P::Value, S::HostLinkDm, 0, 0},        {"DMR", P::Value, S::HostLinkDm, 6144, 6144},
-        {"TIM", P::Value, S::HostLinkTimerPv, 0, 0},  {"CNT", P::Value, S::HostLinkTimerPv, 0, 0},
-        {"TIM", P::Bit, S::HostLinkCompletion, 0, 0}, {"CNT", P::Bit, S::HostLinkCompletion, 0, 0},
+        {"IN", P::Value, S::HostLinkIr, 0, 0},
+        {"IN", P::Bit, S::HostLinkIr, 0, 0},
+        {"OUT", P::Value, S::HostLinkIr, 10, 10},
+        {"OUT", P::Bit, S::HostLinkIr, 10, 10},
+        {"WR", P::Value, S::HostLinkIr, 200, 200},
+        {"WR", P::Bit, S::HostLinkIr, 200, 200},
+        {"SR", P::Value, S::HostLinkIr, 232, 232, 252},
+        {"SR", P::Bit, S::HostLinkIr, 232, 232, 252},
+        {"HR", P::Value, S::HostLinkHr, 0, 0},
+        {"HR", P::Bit, S::HostLinkHr, 0, 0},
+        {"DM", P::Value, S::HostLinkDm, 0, 0},
+        {"DMR", P::Value, S::HostLinkDm, 6144, 6144, 6655},
+        {"TIM", P::Value, S::HostLinkTimerPv, 0, 0},
+        {"CNT", P::Value, S::HostLinkTimerPv, 0, 0},
+        {"TIM", P::Bit, S::HostLinkCompletion, 0, 0},
+        {"CNT", P::Bit, S::HostLinkCompletion, 0, 0},
     };
     return {m};
 }

@@ -13,8 +13,8 @@ std::vector<ProtocolMap> vigorProtocolMaps() {
     ProtocolMap link;
     link.protocol = ProtocolId::VigorLink;
     link.description = QT_TRANSLATE_NOOP("rung::model::Target", "Vigor Computer Link");
-    link.maxReadUnits = 128; // bytes per 51h / 61h
-    link.maxWriteUnits = 128;
+    link.maxReadUnits = VigorLinkMaxBytes; // bytes per 51h / 61h
+    link.maxWriteUnits = VigorLinkMaxBytes;
     link.ranges = {
         {"X", P::Bit, S::LinkBytes, 0x0000, 0},       {"Y", P::Bit, S::LinkBytes, 0x0040, 0},
         {"M", P::Bit, S::LinkBytes, 0x0080, 0},       {"ML", P::Bit, S::LinkBytes, 0x0080, 0},

@@ -1,4 +1,5 @@
 #include "comms/protocol/host_link.h"
+#include "model/target/target.h"
 
 #include <gtest/gtest.h>
 
@@ -20,11 +21,16 @@ QByteArray reply(int unit, const char *header, int endCode, const QByteArray &te
 
 TEST(HostLink, EncodesEveryCommandOfTheSpecByteForByte) {
     // protocols.md, "Omron CPM1 Host Link", test vectors (unit 00), each ending in CR.
-    EXPECT_EQ(wire(readCommand(0, Area::Dm, 0, 1)), QByteArray("@00RD0000000157*\r"));
-    EXPECT_EQ(wire(writeCommand(0, Area::Dm, 100, {0x1234})), QByteArray("@00WD0100123456*\r"));
-    EXPECT_EQ(wire(readCommand(0, Area::Ir, 0, 2)), QByteArray("@00RR0000000242*\r"));
-    EXPECT_EQ(wire(writeCommand(0, Area::Ir, 10, {0x00FF})), QByteArray("@00WR001000FF44*\r"));
-    EXPECT_EQ(wire(readCommand(0, Area::TimerPv, 0, 2)), QByteArray("@00RC0000000253*\r"));
+    EXPECT_EQ(wire(readCommand(0, ProtocolSpace::HostLinkDm, 0, 1)),
+              QByteArray("@00RD0000000157*\r"));
+    EXPECT_EQ(wire(writeCommand(0, ProtocolSpace::HostLinkDm, 100, {0x1234})),
+              QByteArray("@00WD0100123456*\r"));
+    EXPECT_EQ(wire(readCommand(0, ProtocolSpace::HostLinkIr, 0, 2)),
+              QByteArray("@00RR0000000242*\r"));
+    EXPECT_EQ(wire(writeCommand(0, ProtocolSpace::HostLinkIr, 10, {0x00FF})),
+              QByteArray("@00WR001000FF44*\r"));
+    EXPECT_EQ(wire(readCommand(0, ProtocolSpace::HostLinkTimerPv, 0, 2)),
+              QByteArray("@00RC0000000253*\r"));
     EXPECT_EQ(wire(statusCommand(0)), QByteArray("@00MS5E*\r"));
     EXPECT_EQ(wire(modeCommand(0, Mode::Program)), QByteArray("@00SC0050*\r"));
     EXPECT_EQ(wire(modeCommand(0, Mode::Monitor)), QByteArray("@00SC0252*\r"));
@@ -56,11 +62,11 @@ TEST(HostLink, SlaveReadsEveryCommandOfTheSpec) {
 }
 
 TEST(HostLink, DecodesReadStatusModelAndWriteReplies) {
-    ReplyDecoder rd(readCommand(0, Area::Dm, 0, 2));
+    ReplyDecoder rd(readCommand(0, ProtocolSpace::HostLinkDm, 0, 2));
     ASSERT_EQ(rd.feed(reply(0, "RD", 0, "1234ABCD")), FrameStatus::Complete);
     EXPECT_EQ(rd.reply().words, (std::vector<std::uint16_t>{0x1234, 0xABCD}));
 
-    ReplyDecoder rg(readCommand(0, Area::Completion, 0, 3));
+    ReplyDecoder rg(readCommand(0, ProtocolSpace::HostLinkCompletion, 0, 3));
     ASSERT_EQ(rg.feed(reply(0, "RG", 0, "101")), FrameStatus::Complete);
     EXPECT_EQ(rg.reply().flags, (std::vector<bool>{true, false, true}));
 
@@ -94,7 +100,7 @@ TEST(HostLink, ALongReplyIsSplitThirtyThenThirtyOneWordsAndNeedsADelimiterPerPar
     EXPECT_TRUE(parts[3].endsWith("*\r"));
     EXPECT_FALSE(parts[0].endsWith("*\r"));
 
-    ReplyDecoder d(readCommand(5, Area::Dm, 0, 100));
+    ReplyDecoder d(readCommand(5, ProtocolSpace::HostLinkDm, 0, 100));
     int delimiters = 0;
     for (const auto &p : parts) {
         for (char c : p)
@@ -107,7 +113,7 @@ TEST(HostLink, ALongReplyIsSplitThirtyThenThirtyOneWordsAndNeedsADelimiterPerPar
     EXPECT_EQ(d.reply().words, words);
 
     // The slave side joins a long write the same way.
-    const auto command = encode(writeCommand(5, Area::Dm, 0, words));
+    const auto command = encode(writeCommand(5, ProtocolSpace::HostLinkDm, 0, words));
     ASSERT_GT(command.size(), 1);
     CommandDecoder s;
     for (const auto &p : command)
@@ -120,7 +126,7 @@ TEST(HostLink, ALongReplyIsSplitThirtyThenThirtyOneWordsAndNeedsADelimiterPerPar
 TEST(HostLink, EveryEndCodeIsADeviceErrorWithItsOwnText) {
     QSet<QString> texts;
     for (int code : {0x01, 0x02, 0x03, 0x04, 0x0B, 0x13, 0x14, 0x15, 0x16, 0x18}) {
-        ReplyDecoder d(writeCommand(0, Area::Dm, 100, {0x1234}));
+        ReplyDecoder d(writeCommand(0, ProtocolSpace::HostLinkDm, 100, {0x1234}));
         ASSERT_EQ(d.feed(reply(0, "WD", code)), FrameStatus::Failed);
         EXPECT_EQ(d.error().kind, Kind::DeviceError);
         EXPECT_EQ(d.error().code, code);
@@ -155,16 +161,16 @@ TEST(HostLink, FaultsAreNamed) {
     EXPECT_EQ(header.feed(reply(0, "MM", 0, "12")), FrameStatus::Failed);
     EXPECT_EQ(header.error().kind, Kind::WrongReply);
 
-    ReplyDecoder shortRead(readCommand(0, Area::Dm, 0, 2));
+    ReplyDecoder shortRead(readCommand(0, ProtocolSpace::HostLinkDm, 0, 2));
     EXPECT_EQ(shortRead.feed(reply(0, "RD", 0, "1234")), FrameStatus::Failed);
     EXPECT_EQ(shortRead.error().kind, Kind::Malformed);
 
-    ReplyDecoder cut(readCommand(0, Area::Dm, 0, 2));
+    ReplyDecoder cut(readCommand(0, ProtocolSpace::HostLinkDm, 0, 2));
     EXPECT_EQ(cut.feed("@00RD0012"), FrameStatus::NeedMore);
     EXPECT_EQ(cut.deadlinePassed(500).kind, Kind::Truncated);
     EXPECT_TRUE(cut.deadlinePassed(500).message.contains(QLatin1String("500 ms")));
 
-    ReplyDecoder endless(readCommand(0, Area::Dm, 0, 2));
+    ReplyDecoder endless(readCommand(0, ProtocolSpace::HostLinkDm, 0, 2));
     EXPECT_EQ(endless.feed("@" + QByteArray(200, '0')), FrameStatus::Failed);
 }
 
@@ -178,6 +184,25 @@ TEST(HostLink, SlaveAnswersFcsAndFrameLengthErrorsAndSkipsNoise) {
     overlong += fcs(overlong) + "*\r";
     ASSERT_EQ(s.feed(overlong), FrameStatus::Complete);
     EXPECT_EQ(s.endCode(), FrameLengthError);
+}
+
+TEST(HostLink, CommandsReachTheSpacesOfTheCpm1ProtocolMap) {
+    // The driver passes the space the CPM1 map gives; every one has its command and back.
+    const auto &target = model::Target::get(model::Family::Cpm1);
+    const model::ProtocolMap *map = model::findProtocolMap(target, model::ProtocolId::HostLink);
+    ASSERT_NE(map, nullptr);
+    for (const auto &range : map->ranges) {
+        const Frame read = readCommand(0, range.space, 0, 1);
+        ASSERT_EQ(read.header.size(), 2) << range.area;
+        ProtocolSpace back = ProtocolSpace::Coils;
+        bool write = true;
+        ASSERT_TRUE(spaceOfHeader(read.header, back, write)) << range.area;
+        EXPECT_EQ(back, range.space) << range.area;
+        EXPECT_FALSE(write);
+    }
+    // Not a Host Link space: no header, so nothing the PLC would take for another command.
+    EXPECT_TRUE(readCommand(0, ProtocolSpace::Coils, 0, 1).header.isEmpty());
+    EXPECT_TRUE(writeCommand(0, ProtocolSpace::HostLinkCompletion, 0, {1}).header.isEmpty());
 }
 
 } // namespace

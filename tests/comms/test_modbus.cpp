@@ -109,14 +109,97 @@ TEST(Modbus, EveryExceptionCodeIsADeviceErrorWithItsOwnText) {
 }
 
 TEST(Modbus, ABadCrcNamesBothValues) {
-    QByteArray frame = bytes("11 03 00 6B 00 03 76 87");
     Response r{ReadHoldingRegisters, 0, 0, 0, {1}, {}};
-    QByteArray reply = rtuFrame(0x11, encodeResponsePdu(r));
-    reply[reply.size() - 1] = char(reply[reply.size() - 1] ^ 0x40);
+    QByteArray reply = rtuFrame(0x11, encodeResponsePdu(r)); // CRC 47B8h, low byte first
+    ASSERT_EQ(reply, bytes("11 03 02 00 01 B8 47"));
+    reply[reply.size() - 1] = char(reply[reply.size() - 1] ^ 0x40); // 07B8h arrives
     ReplyDecoder d(Framing::Rtu, 0x11, read(ReadHoldingRegisters, 0x6B, 1));
     ASSERT_EQ(d.feed(reply), FrameStatus::Failed);
     EXPECT_EQ(d.error().kind, Kind::BadChecksum);
     EXPECT_TRUE(d.error().retryable());
+    const QString message = d.error().message;
+    EXPECT_TRUE(message.contains(QLatin1String("received 07B8"))) << message.toStdString();
+    EXPECT_TRUE(message.contains(QLatin1String("computed 47B8"))) << message.toStdString();
+}
+
+// MODBUS Application Protocol Specification V1.1b3, the example of each function, request
+// and response PDU verbatim: 6.1 (01 Read Coils, coils 20-38), 6.2 (02 Read Discrete Inputs,
+// inputs 197-218), 6.3 (03 Read Holding Registers 108-110), 6.4 (04 Read Input Register 9),
+// 6.5 (05 Write Single Coil 173 ON), 6.6 (06 Write Single Register 2 = 3), 6.11 (0F Write
+// Multiple Coils 20-29), 6.12 (10 Write Multiple Registers 2-3). Each request is read by the
+// slave and each response decoded by the master against it, over TCP.
+TEST(Modbus, TheApplicationProtocolsOwnExamplesOfEveryFunctionBothWays) {
+    const auto bits = [](std::initializer_list<int> values) {
+        std::vector<bool> out;
+        for (int v : values)
+            out.push_back(v != 0);
+        return out;
+    };
+    struct Example {
+        const char *section;
+        const char *request;
+        const char *response;
+        Request expected;
+        std::vector<std::uint16_t> registers; // read back (03, 04)
+        std::vector<bool> bits;               // read back (01, 02), as many as asked for
+    };
+    const std::vector<Example> examples = {
+        {"6.1",
+         "01 00 13 00 13",
+         "01 03 CD 6B 05",
+         read(ReadCoils, 0x13, 19),
+         {},
+         // CD: outputs 27..20, 6B: 35..28, 05: 38..36 (LSB first)
+         bits({1, 0, 1, 1, 0, 0, 1, 1, 1, 1, 0, 1, 0, 1, 1, 0, 1, 0, 1})},
+        {"6.2",
+         "02 00 C4 00 16",
+         "02 03 AC DB 35",
+         read(ReadDiscreteInputs, 0xC4, 22),
+         {},
+         bits({0, 0, 1, 1, 0, 1, 0, 1, 1, 1, 0, 1, 1, 0, 1, 1, 1, 0, 1, 0, 1, 1})},
+        {"6.3",
+         "03 00 6B 00 03",
+         "03 06 02 2B 00 00 00 64",
+         read(ReadHoldingRegisters, 0x6B, 3),
+         {555, 0, 100},
+         {}},
+        {"6.4", "04 00 08 00 01", "04 02 00 0A", read(ReadInputRegisters, 0x08, 1), {10}, {}},
+        {"6.5", "05 00 AC FF 00", "05 00 AC FF 00", {WriteSingleCoil, 0xAC, 1, {}, {true}}, {}, {}},
+        {"6.6", "06 00 01 00 03", "06 00 01 00 03", {WriteSingleRegister, 1, 1, {3}, {}}, {}, {}},
+        {"6.11",
+         "0F 00 13 00 0A 02 CD 01",
+         "0F 00 13 00 0A",
+         {WriteMultipleCoils, 0x13, 10, {}, bits({1, 0, 1, 1, 0, 0, 1, 1, 1, 0})},
+         {},
+         {}},
+        {"6.12",
+         "10 00 01 00 02 04 00 0A 01 02",
+         "10 00 01 00 02",
+         {WriteMultipleRegisters, 1, 2, {0x000A, 0x0102}, {}},
+         {},
+         {}},
+    };
+    for (const auto &e : examples) {
+        SCOPED_TRACE(e.section);
+        const ParsedRequest parsed = parseRequestPdu(bytes(e.request));
+        EXPECT_EQ(parsed.exception, 0);
+        EXPECT_EQ(parsed.request.function, e.expected.function);
+        EXPECT_EQ(parsed.request.address, e.expected.address);
+        EXPECT_EQ(parsed.request.count, e.expected.count);
+        EXPECT_EQ(parsed.request.registers, e.expected.registers);
+        EXPECT_EQ(parsed.request.bits, e.expected.bits);
+        EXPECT_EQ(encodeRequestPdu(e.expected), bytes(e.request));
+
+        ReplyDecoder master(Framing::Tcp, 1, e.expected, 7);
+        ASSERT_EQ(master.feed(tcpFrame(7, 1, bytes(e.response))), FrameStatus::Complete)
+            << master.error().message.toStdString();
+        const Response &got = master.response();
+        EXPECT_EQ(got.registers, e.registers);
+        EXPECT_EQ(got.bits, e.bits);
+        // The slave answers with the same bytes.
+        Response answer{e.expected.function, 0, got.address, got.count, got.registers, got.bits};
+        EXPECT_EQ(encodeResponsePdu(answer), bytes(e.response));
+    }
 }
 
 TEST(Modbus, WrongUnitWrongFunctionGarbageAndMismatchedEchoes) {

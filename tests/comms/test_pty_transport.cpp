@@ -4,9 +4,15 @@
 
 #include <gtest/gtest.h>
 
+#include <QDir>
 #include <QElapsedTimer>
 
+#include <fcntl.h>
+#include <sys/resource.h>
+#include <unistd.h>
+
 #include <thread>
+#include <vector>
 
 namespace rung::comms {
 namespace {
@@ -119,6 +125,116 @@ TEST(PtyTransport, AReplySplitAcrossWritesIsDecodedWhole) {
     }
     ASSERT_EQ(d.status(), FrameStatus::Complete);
     EXPECT_EQ(d.reply().data, test::bytes("A7 93"));
+}
+
+TEST(PtyTransport, ACancelWithNoReadWaitingEndsTheNextReadOnceAndIsNotLost) {
+    // transport.h: a cancel() between two reads ends the next read that would wait, once,
+    // however many came; data already there comes first.
+    Pair p = makePair();
+    ASSERT_TRUE(p.peer);
+    p.peer->cancel();
+    p.peer->cancel();
+    QElapsedTimer clock;
+    clock.start();
+    EXPECT_EQ(p.peer->read(QDeadlineTimer(5000)).status, R::Cancelled);
+    EXPECT_LT(clock.elapsed(), 1000);
+    EXPECT_EQ(p.peer->read(QDeadlineTimer(50)).status, R::Timeout);
+
+    QString error;
+    ASSERT_TRUE(p.master->write("x", QDeadlineTimer(1000), &error));
+    std::this_thread::sleep_for(std::chrono::milliseconds(50)); // the byte reaches the peer
+    p.peer->cancel();
+    const auto first = p.peer->read(QDeadlineTimer(1000));
+    EXPECT_EQ(first.status, R::Data);
+    EXPECT_EQ(first.bytes, QByteArray("x"));
+    EXPECT_EQ(p.peer->read(QDeadlineTimer(1000)).status, R::Cancelled);
+}
+
+TEST(PtyTransport, AClosedPairIsNotOpenedAgainAsItsOwnPeer) {
+    QString error;
+    auto master = PtyTransport::createPair(&error);
+    ASSERT_TRUE(master) << error.toStdString();
+    const QString path = master->peerPath();
+    master->close();
+    EXPECT_FALSE(master->isOpen());
+    EXPECT_FALSE(master->open(&error));
+    EXPECT_FALSE(master->isOpen());
+    EXPECT_TRUE(error.contains(path)) << error.toStdString();
+    EXPECT_TRUE(error.contains(QLatin1String("make a new one"))) << error.toStdString();
+}
+
+int openDescriptors() {
+    return int(QDir(QStringLiteral("/proc/self/fd")).entryList(QDir::Files | QDir::System).size());
+}
+
+// Leaves exactly `free` file descriptors to the process while it lives.
+class DescriptorsLeft {
+public:
+    explicit DescriptorsLeft(int free) {
+        ::getrlimit(RLIMIT_NOFILE, &m_old);
+        int highest = 0;
+        for (const QString &fd :
+             QDir(QStringLiteral("/proc/self/fd")).entryList(QDir::Files | QDir::System))
+            highest = std::max(highest, fd.toInt());
+        rlimit low = m_old;
+        low.rlim_cur = rlim_t(highest + 64);
+        ::setrlimit(RLIMIT_NOFILE, &low);
+        for (int fd; (fd = ::open("/dev/null", O_RDONLY | O_CLOEXEC)) >= 0;)
+            m_fillers.push_back(fd);
+        for (int i = 0; i < free && !m_fillers.empty(); ++i) {
+            ::close(m_fillers.back());
+            m_fillers.pop_back();
+        }
+    }
+    ~DescriptorsLeft() {
+        for (int fd : m_fillers)
+            ::close(fd);
+        ::setrlimit(RLIMIT_NOFILE, &m_old);
+    }
+
+private:
+    rlimit m_old{};
+    std::vector<int> m_fillers;
+};
+
+TEST(PtyTransport, RunningOutOfDescriptorsIsAClearErrorAndLeaksNothing) {
+    Pair p = makePair(); // a terminal to open while descriptors are short
+    ASSERT_TRUE(p.peer);
+    const int before = openDescriptors();
+    bool refusedAll = false, madeOne = false;
+    for (int free = 0; free <= 6; ++free) {
+        QString error;
+        std::unique_ptr<PtyTransport> pair;
+        std::unique_ptr<PtyTransport> peer;
+        bool peerOpened = false;
+        {
+            const DescriptorsLeft left(free);
+            pair = PtyTransport::createPair(&error);
+            if (!pair) {
+                EXPECT_TRUE(error.startsWith(QLatin1String("Cannot create a pseudo-terminal: ")))
+                    << error.toStdString();
+                EXPECT_GT(error.size(), 35) << "no cause given";
+            }
+            if (free == 0)
+                refusedAll = !pair;
+            madeOne = madeOne || pair;
+            QString peerError;
+            peer = std::make_unique<PtyTransport>(p.master->peerPath());
+            peerOpened = peer->open(&peerError);
+            if (!peerOpened) {
+                EXPECT_TRUE(peerError.contains(p.master->peerPath())) << peerError.toStdString();
+                EXPECT_FALSE(peerError.isEmpty());
+            }
+        }
+        if (free <= 1) { // the wake-up pipe needs two: the peer reports it cannot have one
+            EXPECT_FALSE(peerOpened) << free;
+        }
+        pair.reset();
+        peer.reset();
+    }
+    EXPECT_TRUE(refusedAll);
+    EXPECT_TRUE(madeOne);
+    EXPECT_EQ(openDescriptors(), before);
 }
 
 } // namespace

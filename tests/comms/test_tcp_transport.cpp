@@ -91,6 +91,18 @@ TEST(TcpTransport, CancelFromAnotherThreadEndsAWaitingRead) {
     EXPECT_EQ(result.status, R::Cancelled);
 }
 
+TEST(TcpTransport, ACancelWithNoReadWaitingEndsTheNextReadOnceAndIsNotLost) {
+    auto link = connectLoopback();
+    ASSERT_TRUE(link->accepted);
+    link->client->cancel();
+    link->client->cancel();
+    QElapsedTimer clock;
+    clock.start();
+    EXPECT_EQ(link->client->read(QDeadlineTimer(5000)).status, R::Cancelled);
+    EXPECT_LT(clock.elapsed(), 1000);
+    EXPECT_EQ(link->client->read(QDeadlineTimer(50)).status, R::Timeout);
+}
+
 TEST(TcpTransport, ThePeerClosingFailsTheReadAndNamesTheConnection) {
     auto link = connectLoopback();
     ASSERT_TRUE(link->accepted);

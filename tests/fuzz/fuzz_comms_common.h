@@ -9,7 +9,9 @@
 
 #include <QByteArray>
 
+#include <algorithm>
 #include <cstdint>
+#include <cstdio>
 #include <cstdlib>
 
 namespace rung::comms::fuzz {
@@ -19,10 +21,18 @@ struct Input {
     std::size_t size;
     std::size_t at = 0;
     int byte() { return at < size ? data[at++] : 0; }
-    int word() { return byte() << 8 | byte(); }
+    // Two statements: in `byte() << 8 | byte()` the order of the two reads is unspecified,
+    // so a finding would not replay the same on another compiler.
+    int word() {
+        const int high = byte();
+        return high << 8 | byte();
+    }
     // The next chunk of the peer's bytes: 1..16 bytes, or the rest.
     QByteArray chunk() {
-        const std::size_t n = std::min<std::size_t>(size - at, std::size_t(1 + byte() % 16));
+        // The size byte first, on its own: `min(size - at, byte())` may read `at` before
+        // byte() moves it, and then copy one byte past the input (found by libFuzzer + ASan).
+        const auto wanted = std::size_t(1 + byte() % 16);
+        const std::size_t n = std::min(size - at, wanted);
         QByteArray out(reinterpret_cast<const char *>(data + at), qsizetype(n));
         at += n;
         return out;
@@ -30,9 +40,21 @@ struct Input {
     bool done() const { return at >= size; }
 };
 
+// The decoder's memory stays within its protocol's bound after every feed (issue 12).
+template <typename Decoder> void checkBound(const Decoder &decoder) {
+    if (decoder.buffered() > Decoder::MaxBuffered) {
+        std::fprintf(stderr, "decoder holds %lld bytes, its bound is %lld\n",
+                     static_cast<long long>(decoder.buffered()),
+                     static_cast<long long>(Decoder::MaxBuffered));
+        std::abort();
+    }
+}
+
 template <typename Decoder> void feedAll(Input &in, Decoder &decoder) {
-    while (!in.done() && decoder.status() == FrameStatus::NeedMore)
+    while (!in.done() && decoder.status() == FrameStatus::NeedMore) {
         decoder.feed(in.chunk());
+        checkBound(decoder);
+    }
     if (decoder.status() == FrameStatus::Failed && decoder.error().message.isEmpty())
         std::abort(); // every failure names its cause
     if (decoder.status() == FrameStatus::NeedMore && decoder.deadlinePassed(100).message.isEmpty())

@@ -28,8 +28,10 @@ extern "C" int LLVMFuzzerTestOneInput(const std::uint8_t *data, std::size_t size
     modbus::RequestDecoder slave(framing);
     for (int frames = 0; !in.done() && frames < 64; ++frames) {
         slave.feed(in.chunk());
+        fuzz::checkBound(slave);
         if (in.byte() % 4 == 0)
             slave.silence();
+        fuzz::checkBound(slave);
         if (slave.status() == FrameStatus::Complete)
             slave.next();
     }

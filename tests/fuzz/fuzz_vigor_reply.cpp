@@ -8,7 +8,11 @@ extern "C" int LLVMFuzzerTestOneInput(const std::uint8_t *data, std::size_t size
     fuzz::Input in{data, size};
     const vigor::Command commands[] = {vigor::Command::Read, vigor::Command::Write,
                                        vigor::Command::BitOn, vigor::Command::BitOff};
-    vigor::Request request{in.byte(), commands[in.byte() % 4], in.word(), 1 + in.byte() % 128, {}};
+    vigor::Request request;
+    request.station = in.byte();
+    request.command = commands[in.byte() % 4];
+    request.address = in.word();
+    request.length = 1 + in.byte() % 128;
     const std::size_t start = in.at;
     vigor::ReplyDecoder master(request);
     fuzz::feedAll(in, master);
@@ -16,6 +20,7 @@ extern "C" int LLVMFuzzerTestOneInput(const std::uint8_t *data, std::size_t size
     vigor::RequestDecoder slave;
     for (int frames = 0; !in.done() && frames < 64; ++frames) {
         slave.feed(in.chunk());
+        fuzz::checkBound(slave);
         if (slave.status() == FrameStatus::Complete)
             slave.next();
     }

@@ -171,6 +171,44 @@ TEST(ProtocolMap, Cpm1HostLinkAreas) {
               (ProtocolAddress{S::HostLinkCompletion, 127, -1, 1}));
 }
 
+TEST(ProtocolMap, Cpm1HostLinkReachesWhatProtocolsMdGivesAndNoFurther) {
+    // protocols.md: RR / WR reach IR and SR to channel 0252, RD / WD DM 0000..1023 and
+    // 6144..6655. The PLC has SR 253..255 and DM past 6655; the protocol map does not.
+    const Target &t = Target::get(Family::Cpm1);
+    const ProtocolMap &m = *findProtocolMap(t, ProtocolId::HostLink);
+    EXPECT_EQ(map(t, ProtocolId::HostLink, "252", P::Value),
+              (ProtocolAddress{S::HostLinkIr, 252, -1, 1}));
+    EXPECT_EQ(map(t, ProtocolId::HostLink, "DM 6655", P::Value),
+              (ProtocolAddress{S::HostLinkDm, 6655, -1, 1}));
+    for (const char *beyond : {"253", "255"}) {
+        EXPECT_FALSE(toProtocol(t, m, parse(t, beyond), P::Value).has_value()) << beyond;
+        EXPECT_FALSE(toProtocol(t, m, parse(t, (QByteArray(beyond) + ".00").constData()), P::Bit))
+            << beyond;
+    }
+    EXPECT_FALSE(toProtocol(t, m, parse(t, "DM 6656"), P::Value).has_value());
+    EXPECT_FALSE(fromProtocol(t, m, S::HostLinkIr, 253).has_value());
+    EXPECT_FALSE(fromProtocol(t, m, S::HostLinkIr, 255, 0).has_value());
+    EXPECT_FALSE(fromProtocol(t, m, S::HostLinkDm, 6656).has_value());
+    EXPECT_TRUE(fromProtocol(t, m, S::HostLinkDm, 6655).has_value());
+}
+
+TEST(ProtocolMap, ABitTheUnitDoesNotHaveMapsToNothing) {
+    // Bit 16 of register 150 (Q1..Q16) would be Q17, bit 0 of the next register: refused.
+    const Target &pl = Target::get(Family::Pl110);
+    const ProtocolMap &modbus = *findProtocolMap(pl, ProtocolId::Modbus);
+    EXPECT_TRUE(fromProtocol(pl, modbus, S::HoldingRegisters, 150, 15).has_value());
+    EXPECT_FALSE(fromProtocol(pl, modbus, S::HoldingRegisters, 150, 16).has_value());
+    EXPECT_FALSE(fromProtocol(pl, modbus, S::HoldingRegisters, 150, -2).has_value());
+    // A Vigor link byte holds 8 bits: bit 8 of M8..M15's byte is not M16.
+    const Target &vigor = Target::get(Family::Vigor);
+    const ProtocolMap &link = *findProtocolMap(vigor, ProtocolId::VigorLink);
+    EXPECT_TRUE(fromProtocol(vigor, link, S::LinkBytes, 0x0081, 7).has_value());
+    EXPECT_FALSE(fromProtocol(vigor, link, S::LinkBytes, 0x0081, 8).has_value());
+    EXPECT_EQ(link.maxReadUnits, 128); // seed 001, B-5
+    // Coils are 1-bit units: the bit is ignored, as documented.
+    EXPECT_TRUE(fromProtocol(pl, modbus, S::Coils, 2400, 99).has_value());
+}
+
 TEST(ProtocolMap, DevicesOutsideAMapHaveNoProtocolAddress) {
     const Target &t = Target::get(Family::Vigor);
     const ProtocolMap &m = *findProtocolMap(t, ProtocolId::Modbus);
