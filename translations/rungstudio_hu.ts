@@ -1247,7 +1247,7 @@ Létradiagram- és utasításlista-szerkesztő VPC, Vigor, CPM1 és PL110 PLC-kh
 <context>
     <name>rung::comms::Protocol</name>
     <message>
-        <location filename="../comms/protocol/host_link.cpp" line="+205"/>
+        <location filename="../comms/protocol/host_link.cpp" line="+170"/>
         <source>normal completion (end code %1)</source>
         <translation>normál befejezés (befejezési kód: %1)</translation>
     </message>
@@ -1307,7 +1307,7 @@ Létradiagram- és utasításlista-szerkesztő VPC, Vigor, CPM1 és PL110 PLC-kh
         <translation>befejezési kód: %1</translation>
     </message>
     <message>
-        <location line="+24"/>
+        <location line="+18"/>
         <source>Host Link: the reply starts with byte %1 instead of &quot;@&quot;: not a Host Link answer</source>
         <translation>Host Link: a válasz %1 bájttal kezdődik &quot;@&quot; helyett: nem Host Link válasz</translation>
     </message>
@@ -1333,12 +1333,12 @@ Létradiagram- és utasításlista-szerkesztő VPC, Vigor, CPM1 és PL110 PLC-kh
     </message>
     <message>
         <location line="+10"/>
-        <location line="+33"/>
+        <location line="+54"/>
         <source>Host Link: unit %1 answered, unit %2 was asked</source>
         <translation>Host Link: a(z) %1. egység válaszolt, a(z) %2. egységet kérdeztük</translation>
     </message>
     <message>
-        <location line="-27"/>
+        <location line="-48"/>
         <source>Host Link: the PLC did not recognise the command %1 (IC)</source>
         <translation>Host Link: a PLC nem ismerte fel a(z) %1 parancsot (IC)</translation>
     </message>
@@ -1348,7 +1348,7 @@ Létradiagram- és utasításlista-szerkesztő VPC, Vigor, CPM1 és PL110 PLC-kh
         <translation>Host Link: a válaszban nincs befejezési kód: %1</translation>
     </message>
     <message>
-        <location line="+26"/>
+        <location line="+47"/>
         <source>Host Link: the reply is for %1, the command was %2</source>
         <translation>Host Link: a válasz a(z) %1 parancsra szól, a parancs %2 volt</translation>
     </message>
@@ -1363,17 +1363,17 @@ Létradiagram- és utasításlista-szerkesztő VPC, Vigor, CPM1 és PL110 PLC-kh
         <translation>Host Link: a(z) %1 válasza %2 adatkaraktert tartalmaz, ami nem illik a parancshoz</translation>
     </message>
     <message>
-        <location line="+50"/>
+        <location line="+48"/>
         <source>Host Link: no reply from unit %1 within %2 ms</source>
         <translation>Host Link: a(z) %1. egység %2 ms alatt nem válaszolt</translation>
     </message>
     <message>
-        <location line="+5"/>
+        <location line="+4"/>
         <source>Host Link: the reply stopped after %1 parts and %2 characters (%3) within %4 ms</source>
         <translation>Host Link: a válasz %1 rész és %2 karakter (%3) után megszakadt %4 ms alatt</translation>
     </message>
     <message>
-        <location filename="../comms/protocol/modbus.cpp" line="+141"/>
+        <location filename="../comms/protocol/modbus.cpp" line="+140"/>
         <source>illegal function (exception %1h): the device does not support this function code</source>
         <translation>érvénytelen funkció (%1h kivétel): az eszköz nem támogatja ezt a funkciókódot</translation>
     </message>
@@ -1423,7 +1423,7 @@ Létradiagram- és utasításlista-szerkesztő VPC, Vigor, CPM1 és PL110 PLC-kh
         <translation>ismeretlen kivételkód: %1h</translation>
     </message>
     <message>
-        <location line="+97"/>
+        <location line="+93"/>
         <source>Modbus RTU: the reply starts %1, not an answer to function %2h</source>
         <translation>Modbus RTU: a válasz így kezdődik: %1, ez nem a(z) %2h funkció válasza</translation>
     </message>
@@ -1439,11 +1439,12 @@ Létradiagram- és utasításlista-szerkesztő VPC, Vigor, CPM1 és PL110 PLC-kh
     </message>
     <message>
         <location line="+15"/>
+        <location line="+163"/>
         <source>Modbus TCP: not a Modbus header (protocol %1, length %2): %3</source>
         <translation>Modbus TCP: nem Modbus fejléc (protokoll: %1, hossz: %2): %3</translation>
     </message>
     <message>
-        <location line="+10"/>
+        <location line="-153"/>
         <source>Modbus TCP: %1 bytes more than the reply&apos;s length</source>
         <translation>Modbus TCP: %1 bájttal több a válasz hosszánál</translation>
     </message>
@@ -1478,17 +1479,17 @@ Létradiagram- és utasításlista-szerkesztő VPC, Vigor, CPM1 és PL110 PLC-kh
         <translation>Modbus: a(z) %1h funkció válasza nem illik a kéréshez: %2</translation>
     </message>
     <message>
-        <location line="+32"/>
+        <location line="+31"/>
         <source>Modbus: no reply from unit %1 within %2 ms</source>
         <translation>Modbus: a(z) %1. egység %2 ms alatt nem válaszolt</translation>
     </message>
     <message>
-        <location line="+6"/>
+        <location line="+4"/>
         <source>Modbus: the reply stopped after %1 bytes (%2) within %3 ms</source>
         <translation>Modbus: a válasz %1 bájt (%2) után megszakadt %3 ms alatt</translation>
     </message>
     <message>
-        <location filename="../comms/protocol/vigor_link.cpp" line="+94"/>
+        <location filename="../comms/protocol/vigor_link.cpp" line="+72"/>
         <source>no error (error 00h)</source>
         <translation>nincs hiba (00h hiba)</translation>
     </message>
@@ -1523,7 +1524,7 @@ Létradiagram- és utasításlista-szerkesztő VPC, Vigor, CPM1 és PL110 PLC-kh
         <translation>ismeretlen hibakód: %1h</translation>
     </message>
     <message>
-        <location line="+21"/>
+        <location line="+15"/>
         <source>Vigor link: the reply starts with byte %1 instead of ACK (06h): not a Computer Link answer</source>
         <translation>Vigor link: a válasz %1 bájttal kezdődik ACK (06h) helyett: nem Computer Link válasz</translation>
     </message>
@@ -1559,7 +1560,7 @@ Létradiagram- és utasításlista-szerkesztő VPC, Vigor, CPM1 és PL110 PLC-kh
         <translation>Vigor link: a válasz a(z) %1h parancsra szól, a kérés %2h volt</translation>
     </message>
     <message>
-        <location line="+7"/>
+        <location line="+6"/>
         <source>Vigor link: %1</source>
         <translation>Vigor link: %1</translation>
     </message>
@@ -1569,23 +1570,25 @@ Létradiagram- és utasításlista-szerkesztő VPC, Vigor, CPM1 és PL110 PLC-kh
         <translation>Vigor link: a válasz %1 adatbájtot hoz, %2 volt várható</translation>
     </message>
     <message>
-        <location line="+13"/>
+        <location line="+12"/>
         <source>Vigor link: no reply from station %1 within %2 ms</source>
         <translation>Vigor link: a(z) %1. állomás %2 ms alatt nem válaszolt</translation>
     </message>
     <message>
-        <location line="+5"/>
+        <location line="+4"/>
         <source>Vigor link: the reply stopped after %1 bytes (%2) within %3 ms</source>
         <translation>Vigor link: a válasz %1 bájt (%2) után megszakadt %3 ms alatt</translation>
     </message>
     <message>
-        <location filename="../comms/transport/pty_transport.cpp" line="+38"/>
+        <location filename="../comms/transport/pty_transport.cpp" line="+39"/>
         <source>Cannot create a pseudo-terminal: %1</source>
         <translation>Nem hozható létre pszeudoterminál: %1</translation>
     </message>
     <message>
-        <location line="+25"/>
-        <location filename="../comms/transport/serial_transport.cpp" line="+87"/>
+        <location line="+45"/>
+        <location line="+7"/>
+        <location filename="../comms/transport/serial_transport.cpp" line="+85"/>
+        <location line="+8"/>
         <location line="+12"/>
         <source>Cannot open %1: %2</source>
         <translation>%1 nem nyitható meg: %2</translation>
@@ -1631,7 +1634,7 @@ Létradiagram- és utasításlista-szerkesztő VPC, Vigor, CPM1 és PL110 PLC-kh
         <translation>%1 kapcsolatát a másik oldal lezárta</translation>
     </message>
     <message>
-        <location filename="../comms/transport/serial_transport.cpp" line="-132"/>
+        <location filename="../comms/transport/serial_transport.cpp" line="-138"/>
         <source>permission denied: add your user to the group that owns %1 (usually &quot;dialout&quot;: sudo usermod -aG dialout $USER, then log in again)</source>
         <translation>hozzáférés megtagadva: vegye fel a felhasználót a(z) %1 tulajdonos csoportjába (általában &quot;dialout&quot;: sudo usermod -aG dialout $USER, majd jelentkezzen be újra)</translation>
     </message>
@@ -1646,7 +1649,7 @@ Létradiagram- és utasításlista-szerkesztő VPC, Vigor, CPM1 és PL110 PLC-kh
         <translation>nincs ilyen port (kihúzták?)</translation>
     </message>
     <message>
-        <location line="+87"/>
+        <location line="+93"/>
         <source>%1 does not accept the line settings: %2</source>
         <translation>%1 nem fogadja el a vonalbeállításokat: %2</translation>
     </message>
@@ -1677,42 +1680,52 @@ Létradiagram- és utasításlista-szerkesztő VPC, Vigor, CPM1 és PL110 PLC-kh
         <translation>Nem lehet figyelni ezen: %1:%2: %3</translation>
     </message>
     <message>
+        <location filename="../comms/protocol/host_link.cpp" line="-102"/>
         <source>Host Link: the reply to %1 goes on past the %2 characters of data the command asks for (part %3): not the answer to this command</source>
         <translation>Host Link: a(z) %1 válasza túlmegy a parancs által kért %2 adatkarakteren (%3. rész): nem erre a parancsra érkezett válasz</translation>
     </message>
     <message>
+        <location line="+133"/>
         <source>Host Link: %1 characters arrived before the command was answered; the %2 beyond the first %3 were dropped</source>
         <translation>Host Link: %1 karakter érkezett, mielőtt a parancs választ kapott volna; az első %3 utáni %2 karakter eldobva</translation>
     </message>
     <message>
+        <location line="+24"/>
         <source>Host Link: %1 characters without a CR (a part holds at most %2): dropped, waiting for the next &quot;@&quot;</source>
         <translation>Host Link: %1 karakter CR nélkül (egy rész legfeljebb %2 karakter): eldobva, várakozás a következő &quot;@&quot; jelre</translation>
     </message>
     <message>
+        <location line="+32"/>
         <source>Host Link: the %1 command goes on past %2 characters in %3 parts, longer than any command; answered with end code 18</source>
         <translation>Host Link: a(z) %1 parancs %3 részben túlmegy %2 karakteren, hosszabb bármely parancsnál; válasz: 18-as végkód</translation>
     </message>
     <message>
+        <location filename="../comms/protocol/modbus.cpp" line="+51"/>
         <source>Modbus: %1 bytes arrived before the request was answered; the %2 beyond the first %3 were dropped</source>
         <translation>Modbus: %1 bájt érkezett, mielőtt a kérés választ kapott volna; az első %3 utáni %2 bájt eldobva</translation>
     </message>
     <message>
+        <location line="+53"/>
         <source>Modbus RTU: a frame of function %1h runs past %2 bytes, the longest an RTU frame can be: dropped with what follows until the line is quiet</source>
         <translation>Modbus RTU: a(z) %1h funkció kerete túlmegy %2 bájton, ami egy RTU keret legnagyobb hossza: eldobva a vonal elcsendesedéséig érkezőkkel együtt</translation>
     </message>
     <message>
+        <location filename="../comms/protocol/vigor_link.cpp" line="+28"/>
         <source>Vigor link: %1 bytes arrived before the request was answered; the %2 beyond the first %3 were dropped</source>
         <translation>Vigor link: %1 bájt érkezett, mielőtt a kérés választ kapott volna; az első %3 utáni %2 bájt eldobva</translation>
     </message>
     <message>
+        <location line="+35"/>
         <source>Vigor link: %1 bytes from STX without ETX (a request holds at most %2): dropped up to the next STX</source>
         <translation>Vigor link: %1 bájt STX-től ETX nélkül (egy kérés legfeljebb %2 bájt): eldobva a következő STX-ig</translation>
     </message>
     <message>
+        <location filename="../comms/transport/fd_waiter.cpp" line="+15"/>
         <source>no wake-up pipe for cancelling a read: %1</source>
         <translation>nincs ébresztő cső az olvasás megszakításához: %1</translation>
     </message>
     <message>
+        <location filename="../comms/transport/pty_transport.cpp" line="-100"/>
         <source>Cannot open %1 again: the pseudo-terminal this program made ended when it was closed; make a new one and give its path to the peer</source>
         <translation>%1 nem nyitható meg újra: a program által létrehozott pszeudoterminál a bezárásakor megszűnt; hozzon létre újat, és adja meg az útvonalát a másik félnek</translation>
     </message>
@@ -4160,7 +4173,7 @@ Létradiagram- és utasításlista-szerkesztő VPC, Vigor, CPM1 és PL110 PLC-kh
         <translation>Ugrás vége</translation>
     </message>
     <message>
-        <location filename="../model/target/target_cpm1_maps.cpp" line="+16"/>
+        <location filename="../model/target/target_cpm1_maps.cpp" line="+18"/>
         <source>Omron Host Link (C-mode)</source>
         <translation>Omron Host Link (C mód)</translation>
     </message>

@@ -1252,7 +1252,7 @@ Editor di schemi ladder e liste istruzioni per VPC, Vigor, CPM1 e PL110.</transl
 <context>
     <name>rung::comms::Protocol</name>
     <message>
-        <location filename="../comms/protocol/host_link.cpp" line="+205"/>
+        <location filename="../comms/protocol/host_link.cpp" line="+170"/>
         <source>normal completion (end code %1)</source>
         <translation>completamento normale (codice di fine %1)</translation>
     </message>
@@ -1312,7 +1312,7 @@ Editor di schemi ladder e liste istruzioni per VPC, Vigor, CPM1 e PL110.</transl
         <translation>codice di fine %1</translation>
     </message>
     <message>
-        <location line="+24"/>
+        <location line="+18"/>
         <source>Host Link: the reply starts with byte %1 instead of &quot;@&quot;: not a Host Link answer</source>
         <translation>Host Link: la risposta inizia con il byte %1 invece di &quot;@&quot;: non è una risposta Host Link</translation>
     </message>
@@ -1338,12 +1338,12 @@ Editor di schemi ladder e liste istruzioni per VPC, Vigor, CPM1 e PL110.</transl
     </message>
     <message>
         <location line="+10"/>
-        <location line="+33"/>
+        <location line="+54"/>
         <source>Host Link: unit %1 answered, unit %2 was asked</source>
         <translation>Host Link: ha risposto l&apos;unità %1, era interrogata l&apos;unità %2</translation>
     </message>
     <message>
-        <location line="-27"/>
+        <location line="-48"/>
         <source>Host Link: the PLC did not recognise the command %1 (IC)</source>
         <translation>Host Link: il PLC non ha riconosciuto il comando %1 (IC)</translation>
     </message>
@@ -1353,7 +1353,7 @@ Editor di schemi ladder e liste istruzioni per VPC, Vigor, CPM1 e PL110.</transl
         <translation>Host Link: la risposta non ha codice di fine: %1</translation>
     </message>
     <message>
-        <location line="+26"/>
+        <location line="+47"/>
         <source>Host Link: the reply is for %1, the command was %2</source>
         <translation>Host Link: la risposta è per %1, il comando era %2</translation>
     </message>
@@ -1368,17 +1368,17 @@ Editor di schemi ladder e liste istruzioni per VPC, Vigor, CPM1 e PL110.</transl
         <translation>Host Link: la risposta a %1 contiene %2 caratteri di dati che non corrispondono al comando</translation>
     </message>
     <message>
-        <location line="+50"/>
+        <location line="+48"/>
         <source>Host Link: no reply from unit %1 within %2 ms</source>
         <translation>Host Link: nessuna risposta dall&apos;unità %1 entro %2 ms</translation>
     </message>
     <message>
-        <location line="+5"/>
+        <location line="+4"/>
         <source>Host Link: the reply stopped after %1 parts and %2 characters (%3) within %4 ms</source>
         <translation>Host Link: la risposta si è interrotta dopo %1 parti e %2 caratteri (%3) entro %4 ms</translation>
     </message>
     <message>
-        <location filename="../comms/protocol/modbus.cpp" line="+141"/>
+        <location filename="../comms/protocol/modbus.cpp" line="+140"/>
         <source>illegal function (exception %1h): the device does not support this function code</source>
         <translation>funzione non valida (eccezione %1h): il dispositivo non supporta questo codice funzione</translation>
     </message>
@@ -1428,7 +1428,7 @@ Editor di schemi ladder e liste istruzioni per VPC, Vigor, CPM1 e PL110.</transl
         <translation>codice di eccezione sconosciuto %1h</translation>
     </message>
     <message>
-        <location line="+97"/>
+        <location line="+93"/>
         <source>Modbus RTU: the reply starts %1, not an answer to function %2h</source>
         <translation>Modbus RTU: la risposta inizia con %1, non è una risposta alla funzione %2h</translation>
     </message>
@@ -1444,11 +1444,12 @@ Editor di schemi ladder e liste istruzioni per VPC, Vigor, CPM1 e PL110.</transl
     </message>
     <message>
         <location line="+15"/>
+        <location line="+163"/>
         <source>Modbus TCP: not a Modbus header (protocol %1, length %2): %3</source>
         <translation>Modbus TCP: non è un&apos;intestazione Modbus (protocollo %1, lunghezza %2): %3</translation>
     </message>
     <message>
-        <location line="+10"/>
+        <location line="-153"/>
         <source>Modbus TCP: %1 bytes more than the reply&apos;s length</source>
         <translation>Modbus TCP: %1 byte in più della lunghezza della risposta</translation>
     </message>
@@ -1483,17 +1484,17 @@ Editor di schemi ladder e liste istruzioni per VPC, Vigor, CPM1 e PL110.</transl
         <translation>Modbus: la risposta alla funzione %1h non corrisponde alla richiesta: %2</translation>
     </message>
     <message>
-        <location line="+32"/>
+        <location line="+31"/>
         <source>Modbus: no reply from unit %1 within %2 ms</source>
         <translation>Modbus: nessuna risposta dall&apos;unità %1 entro %2 ms</translation>
     </message>
     <message>
-        <location line="+6"/>
+        <location line="+4"/>
         <source>Modbus: the reply stopped after %1 bytes (%2) within %3 ms</source>
         <translation>Modbus: la risposta si è interrotta dopo %1 byte (%2) entro %3 ms</translation>
     </message>
     <message>
-        <location filename="../comms/protocol/vigor_link.cpp" line="+94"/>
+        <location filename="../comms/protocol/vigor_link.cpp" line="+72"/>
         <source>no error (error 00h)</source>
         <translation>nessun errore (errore 00h)</translation>
     </message>
@@ -1528,7 +1529,7 @@ Editor di schemi ladder e liste istruzioni per VPC, Vigor, CPM1 e PL110.</transl
         <translation>codice di errore sconosciuto %1h</translation>
     </message>
     <message>
-        <location line="+21"/>
+        <location line="+15"/>
         <source>Vigor link: the reply starts with byte %1 instead of ACK (06h): not a Computer Link answer</source>
         <translation>Vigor link: la risposta inizia con il byte %1 invece di ACK (06h): non è una risposta Computer Link</translation>
     </message>
@@ -1564,7 +1565,7 @@ Editor di schemi ladder e liste istruzioni per VPC, Vigor, CPM1 e PL110.</transl
         <translation>Vigor link: la risposta è per il comando %1h, la richiesta era %2h</translation>
     </message>
     <message>
-        <location line="+7"/>
+        <location line="+6"/>
         <source>Vigor link: %1</source>
         <translation>Vigor link: %1</translation>
     </message>
@@ -1574,23 +1575,25 @@ Editor di schemi ladder e liste istruzioni per VPC, Vigor, CPM1 e PL110.</transl
         <translation>Vigor link: la risposta porta %1 byte di dati, ne erano attesi %2</translation>
     </message>
     <message>
-        <location line="+13"/>
+        <location line="+12"/>
         <source>Vigor link: no reply from station %1 within %2 ms</source>
         <translation>Vigor link: nessuna risposta dalla stazione %1 entro %2 ms</translation>
     </message>
     <message>
-        <location line="+5"/>
+        <location line="+4"/>
         <source>Vigor link: the reply stopped after %1 bytes (%2) within %3 ms</source>
         <translation>Vigor link: la risposta si è interrotta dopo %1 byte (%2) entro %3 ms</translation>
     </message>
     <message>
-        <location filename="../comms/transport/pty_transport.cpp" line="+38"/>
+        <location filename="../comms/transport/pty_transport.cpp" line="+39"/>
         <source>Cannot create a pseudo-terminal: %1</source>
         <translation>Impossibile creare uno pseudo-terminale: %1</translation>
     </message>
     <message>
-        <location line="+25"/>
-        <location filename="../comms/transport/serial_transport.cpp" line="+87"/>
+        <location line="+45"/>
+        <location line="+7"/>
+        <location filename="../comms/transport/serial_transport.cpp" line="+85"/>
+        <location line="+8"/>
         <location line="+12"/>
         <source>Cannot open %1: %2</source>
         <translation>Impossibile aprire %1: %2</translation>
@@ -1636,7 +1639,7 @@ Editor di schemi ladder e liste istruzioni per VPC, Vigor, CPM1 e PL110.</transl
         <translation>%1 è stato chiuso dall&apos;altro lato</translation>
     </message>
     <message>
-        <location filename="../comms/transport/serial_transport.cpp" line="-132"/>
+        <location filename="../comms/transport/serial_transport.cpp" line="-138"/>
         <source>permission denied: add your user to the group that owns %1 (usually &quot;dialout&quot;: sudo usermod -aG dialout $USER, then log in again)</source>
         <translation>permesso negato: aggiungere l&apos;utente al gruppo proprietario di %1 (di solito &quot;dialout&quot;: sudo usermod -aG dialout $USER, poi accedere di nuovo)</translation>
     </message>
@@ -1651,7 +1654,7 @@ Editor di schemi ladder e liste istruzioni per VPC, Vigor, CPM1 e PL110.</transl
         <translation>porta inesistente (scollegata?)</translation>
     </message>
     <message>
-        <location line="+87"/>
+        <location line="+93"/>
         <source>%1 does not accept the line settings: %2</source>
         <translation>%1 non accetta le impostazioni di linea: %2</translation>
     </message>
@@ -1682,42 +1685,52 @@ Editor di schemi ladder e liste istruzioni per VPC, Vigor, CPM1 e PL110.</transl
         <translation>Impossibile restare in ascolto su %1:%2: %3</translation>
     </message>
     <message>
+        <location filename="../comms/protocol/host_link.cpp" line="-102"/>
         <source>Host Link: the reply to %1 goes on past the %2 characters of data the command asks for (part %3): not the answer to this command</source>
         <translation>Host Link: la risposta a %1 va oltre i %2 caratteri di dati chiesti dal comando (parte %3): non è la risposta a questo comando</translation>
     </message>
     <message>
+        <location line="+133"/>
         <source>Host Link: %1 characters arrived before the command was answered; the %2 beyond the first %3 were dropped</source>
         <translation>Host Link: sono arrivati %1 caratteri prima della risposta al comando; i %2 oltre i primi %3 sono stati scartati</translation>
     </message>
     <message>
+        <location line="+24"/>
         <source>Host Link: %1 characters without a CR (a part holds at most %2): dropped, waiting for the next &quot;@&quot;</source>
         <translation>Host Link: %1 caratteri senza CR (una parte ne contiene al massimo %2): scartati, in attesa del prossimo &quot;@&quot;</translation>
     </message>
     <message>
+        <location line="+32"/>
         <source>Host Link: the %1 command goes on past %2 characters in %3 parts, longer than any command; answered with end code 18</source>
         <translation>Host Link: il comando %1 va oltre %2 caratteri in %3 parti, più lungo di qualsiasi comando; risposto con codice di fine 18</translation>
     </message>
     <message>
+        <location filename="../comms/protocol/modbus.cpp" line="+51"/>
         <source>Modbus: %1 bytes arrived before the request was answered; the %2 beyond the first %3 were dropped</source>
         <translation>Modbus: sono arrivati %1 byte prima della risposta alla richiesta; i %2 oltre i primi %3 sono stati scartati</translation>
     </message>
     <message>
+        <location line="+53"/>
         <source>Modbus RTU: a frame of function %1h runs past %2 bytes, the longest an RTU frame can be: dropped with what follows until the line is quiet</source>
         <translation>Modbus RTU: un frame della funzione %1h supera %2 byte, la lunghezza massima di un frame RTU: scartato con ciò che segue finché la linea tace</translation>
     </message>
     <message>
+        <location filename="../comms/protocol/vigor_link.cpp" line="+28"/>
         <source>Vigor link: %1 bytes arrived before the request was answered; the %2 beyond the first %3 were dropped</source>
         <translation>Vigor link: sono arrivati %1 byte prima della risposta alla richiesta; i %2 oltre i primi %3 sono stati scartati</translation>
     </message>
     <message>
+        <location line="+35"/>
         <source>Vigor link: %1 bytes from STX without ETX (a request holds at most %2): dropped up to the next STX</source>
         <translation>Vigor link: %1 byte da STX senza ETX (una richiesta ne contiene al massimo %2): scartati fino al prossimo STX</translation>
     </message>
     <message>
+        <location filename="../comms/transport/fd_waiter.cpp" line="+15"/>
         <source>no wake-up pipe for cancelling a read: %1</source>
         <translation>nessuna pipe di risveglio per annullare una lettura: %1</translation>
     </message>
     <message>
+        <location filename="../comms/transport/pty_transport.cpp" line="-100"/>
         <source>Cannot open %1 again: the pseudo-terminal this program made ended when it was closed; make a new one and give its path to the peer</source>
         <translation>Impossibile aprire di nuovo %1: lo pseudo-terminale creato da questo programma è terminato alla chiusura; crearne uno nuovo e darne il percorso all&apos;altra parte</translation>
     </message>
@@ -4173,7 +4186,7 @@ Editor di schemi ladder e liste istruzioni per VPC, Vigor, CPM1 e PL110.</transl
         <translation>Fine di un salto</translation>
     </message>
     <message>
-        <location filename="../model/target/target_cpm1_maps.cpp" line="+16"/>
+        <location filename="../model/target/target_cpm1_maps.cpp" line="+18"/>
         <source>Omron Host Link (C-mode)</source>
         <translation>Omron Host Link (modo C)</translation>
     </message>
