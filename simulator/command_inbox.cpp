@@ -30,26 +30,39 @@ void CommandInbox::post(EngineCommand command) {
     m_pending.store(true, std::memory_order_release);
 }
 
-int CommandInbox::applyTo(Engine &engine) {
+CommandInbox::Applied CommandInbox::apply(Engine &engine) {
     {
         std::lock_guard lock(m_mutex);
         m_taken.swap(m_queue);
         m_pending.store(false, std::memory_order_release);
     }
-    const int count = static_cast<int>(m_taken.size());
+    Applied applied;
+    applied.commands = static_cast<int>(m_taken.size());
     for (const EngineCommand &c : m_taken) {
         QString error;
         const bool ok = applyCommand(engine, c, &error);
-        if (m_completion)
-            m_completion(c.id, ok, error);
+        applied.reset = applied.reset || std::holds_alternative<Reset>(c.what);
+        if (c.id != 0)
+            m_results.push_back({c.id, ok, std::move(error)});
     }
     m_taken.clear();
-    return count;
+    return applied;
+}
+
+void CommandInbox::complete() {
+    if (m_completion)
+        for (const Result &r : m_results)
+            m_completion(r.id, r.ok, r.error);
+    m_results.clear();
 }
 
 bool applyCommand(Engine &engine, const EngineCommand &command, QString *error) {
     if (std::holds_alternative<PowerCycle>(command.what)) {
         engine.powerCycle();
+        return true;
+    }
+    if (std::holds_alternative<Reset>(command.what)) {
+        engine.reset();
         return true;
     }
     using Kind = model::DeviceCommand::Kind;

@@ -1,9 +1,11 @@
 #pragma once
 
 // Commands for an Engine from other threads. Any thread posts; the engine's thread applies
-// them all at the start of the next scan (Engine::attach), so no other thread touches engine
-// state and the engine itself stays single-threaded. Each command's result goes to the
-// completion callback, on the engine's thread, in the order the commands were posted.
+// them all before its next scan (apply), so no other thread touches engine state and the
+// engine itself stays single-threaded. Each command's result goes to the completion callback,
+// on the engine's thread, in the order the commands were posted, when the engine's thread
+// calls complete(): a driver that publishes snapshots publishes first, so a reader told of a
+// completion finds its effect in the latest snapshot.
 
 #include "model/image/device_command.h"
 
@@ -20,10 +22,11 @@ namespace rung::simulator {
 class Engine;
 
 struct PowerCycle {}; // power off and on: non-retentive areas clear
+struct Reset {};      // a fresh PLC's power-on state: every area clear, forces released
 
 struct EngineCommand {
-    quint64 id = 0;
-    std::variant<model::DeviceCommand, PowerCycle> what;
+    quint64 id = 0; // 0: nobody waits for it, no completion
+    std::variant<model::DeviceCommand, PowerCycle, Reset> what;
 };
 
 class CommandInbox {
@@ -36,14 +39,28 @@ public:
     void post(EngineCommand command); // any thread
     // Cheap enough to ask every scan.
     bool pending() const { return m_pending.load(std::memory_order_acquire); }
-    // Engine thread: applies and completes every posted command; returns how many.
-    int applyTo(Engine &engine);
+    struct Applied {
+        int commands = 0;
+        bool reset = false; // a Reset was among them
+    };
+    // Engine thread: applies every posted command, in posting order; their results wait for
+    // complete().
+    Applied apply(Engine &engine);
+    // Engine thread: hands the results of the commands applied so far to the completion.
+    void complete();
 
 private:
+    struct Result {
+        quint64 id;
+        bool ok;
+        QString error;
+    };
+
     std::atomic<bool> m_pending{false};
     std::mutex m_mutex;
     std::vector<EngineCommand> m_queue;
     std::vector<EngineCommand> m_taken; // reused between calls
+    std::vector<Result> m_results;      // engine thread only
     Completion m_completion;
 };
 

@@ -48,13 +48,19 @@ void Engine::loadPresets() {
         m_words[static_cast<std::size_t>(word)] = value;
 }
 
+void Engine::reset() {
+    const qint64 period = m_stats.periodMs;
+    const bool record = m_record;
+    *this = Engine(m_program);
+    m_stats.periodMs = period;
+    m_record = record;
+}
+
 void Engine::setPeriodMs(qint64 periodMs) {
     m_stats.periodMs = std::max<qint64>(1, periodMs);
 }
 
 void Engine::scan() {
-    if (m_inbox && m_inbox->pending())
-        m_inbox->applyTo(*this);
     const auto start = std::chrono::steady_clock::now();
     beginScan();
     if (m_record)

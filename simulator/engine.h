@@ -5,7 +5,6 @@
 // outputs visible at END; the virtual clock advances by exactly one period per scan.
 // Not thread-safe: one thread drives an Engine; other threads read SnapshotChannel.
 
-#include "command_inbox.h"
 #include "program.h"
 
 #include "model/image/snapshot.h"
@@ -49,6 +48,9 @@ public:
     quint64 runRealTime(double speedFactor, const std::atomic<bool> &stop, quint64 maxScans);
     // Power off and on: non-retentive areas clear, retentive ones (Area::retentive) survive.
     void powerCycle();
+    // A fresh PLC's power-on state (every area clear, forces released, statistics and errors
+    // gone); the scan period and power-flow recording stay.
+    void reset();
 
     // Devices. Bits of physical input areas are stimulus: the input image takes them at the
     // start of each scan. Every other write changes the memory image at once.
@@ -73,8 +75,6 @@ public:
     Snapshot snapshot() const;
     // After each scan, publish a snapshot when the channel asks for one (may be null).
     void attach(SnapshotChannel *channel) { m_channel = channel; }
-    // Commands from other threads, applied at the start of each scan (may be null).
-    void attach(CommandInbox *inbox) { m_inbox = inbox; }
     // The memory image in MemoryLayout order (the history recorder reads it after a scan).
     const std::vector<std::int32_t> &words() const { return m_words; }
 
@@ -122,7 +122,6 @@ private:
     qint64 m_scanMaxMs = 0;
     bool m_record = false;
     SnapshotChannel *m_channel = nullptr;
-    CommandInbox *m_inbox = nullptr;
 };
 
 } // namespace rung::simulator

@@ -10,6 +10,9 @@ namespace {
 
 using Clock = std::chrono::steady_clock;
 
+// The most real-time pacing catches up in a burst after falling behind (see workerLoop).
+constexpr auto kMaxCatchUp = std::chrono::milliseconds(50);
+
 struct Tr {
     Q_DECLARE_TR_FUNCTIONS(rung::simulator::SimulatorSession)
 };
@@ -67,7 +70,10 @@ void SimulatorSession::stop() {
     control([this] {
         m_mode = Mode::Stopped;
         m_stepsLeft = 0;
-        m_reset = true;
+        // Through the inbox, so a command submitted before stop() is applied before the reset
+        // (a force is then released by it) and one submitted after it applies to the fresh
+        // image.
+        m_inbox.post({0, Reset{}});
     });
     setRunState(RunState::Stopped);
 }
@@ -137,16 +143,26 @@ void SimulatorSession::reportErrors(const Engine &engine, std::size_t &reported)
 }
 
 void SimulatorSession::workerLoop() {
-    auto engine = std::make_unique<Engine>(m_program);
-    engine->attach(&m_inbox);
+    Engine engine(m_program);
     std::size_t errorsReported = 0;
     quint64 seen = ~quint64{0};
+    // Real-time pacing: scan k is due when the wall clock has moved (virtual time - anchor's
+    // virtual time) / speed past the anchor. Anchored again on every control change and every
+    // reset, so a new mode never paces from an old engine clock.
     Clock::time_point paceWall;
     qint64 paceVirtualMs = 0;
-    Clock::time_point lastPublish = Clock::now();
-    publish(*engine);
+    auto anchor = [&] {
+        paceWall = Clock::now();
+        paceVirtualMs = engine.statistics().timeMs;
+    };
+    Clock::time_point lastPublish;
+    auto publishNow = [&] {
+        publish(engine);
+        lastPublish = Clock::now();
+    };
+    publishNow();
     for (;;) {
-        bool reset = false, scan = false, stepsDone = false;
+        bool scan = false, stepsDone = false;
         quint64 generation = 0;
         {
             std::unique_lock lock(m_mutex);
@@ -157,29 +173,32 @@ void SimulatorSession::workerLoop() {
                     // A control change: take the new settings, pace from here.
                     seen = m_generation;
                     if (m_periodMs > 0)
-                        engine->setPeriodMs(m_periodMs);
-                    engine->setPowerFlowRecording(m_recordFlow);
-                    paceWall = Clock::now();
-                    paceVirtualMs = engine->statistics().timeMs;
+                        engine.setPeriodMs(m_periodMs);
+                    engine.setPowerFlowRecording(m_recordFlow);
+                    anchor();
                 }
-                if (m_reset) {
-                    m_reset = false;
-                    reset = true;
-                    break;
-                }
+                if (m_inbox.pending())
+                    break; // commands (stop's reset among them) before any scan, in every mode
                 if (m_mode == Mode::Running || m_stepsLeft > 0) {
                     if (m_speed > 0) {
-                        // A scan is due when wall time caught up with its virtual start.
                         const double dueMs =
-                            static_cast<double>(engine->statistics().timeMs - paceVirtualMs) /
+                            static_cast<double>(engine.statistics().timeMs - paceVirtualMs) /
                             m_speed;
                         const auto due =
                             paceWall + std::chrono::duration_cast<Clock::duration>(
                                            std::chrono::duration<double, std::milli>(dueMs));
-                        if (Clock::now() < due) {
+                        const auto now = Clock::now();
+                        if (now < due) {
                             m_wake.wait_until(lock, due);
                             continue;
                         }
+                        // Behind by more than kMaxCatchUp (the machine stalled, or the engine
+                        // cannot keep up with the speed factor): virtual time goes on from
+                        // now instead of catching up in a burst of scans that would leave
+                        // snapshots and history stale and peg a core. The burst is thus at
+                        // most kMaxCatchUp's worth of scans.
+                        if (now - due > kMaxCatchUp)
+                            anchor();
                     }
                     scan = true;
                     if (m_stepsLeft > 0 && --m_stepsLeft == 0)
@@ -187,49 +206,36 @@ void SimulatorSession::workerLoop() {
                     generation = m_generation;
                     break;
                 }
-                if (m_inbox.pending())
-                    break; // paused or stopped: apply at once
                 m_wake.wait(lock);
             }
         }
-        if (reset) {
-            engine = std::make_unique<Engine>(m_program);
-            engine->attach(&m_inbox);
-            {
-                std::lock_guard lock(m_mutex);
-                if (m_periodMs > 0)
-                    engine->setPeriodMs(m_periodMs);
-                engine->setPowerFlowRecording(m_recordFlow);
-            }
-            errorsReported = 0;
-            {
-                std::lock_guard lock(m_historyMutex);
-                m_history.clear();
-            }
-            postToOwner([this] { setErrorText({}); });
-            publish(*engine);
-            lastPublish = Clock::now();
-            continue;
-        }
         if (!scan) {
-            m_inbox.applyTo(*engine);
-            publish(*engine);
-            lastPublish = Clock::now();
+            // Applied, published, then answered: a reader told that a command finished finds
+            // its effect in the latest snapshot.
+            if (m_inbox.apply(engine).reset) {
+                errorsReported = 0;
+                {
+                    std::lock_guard lock(m_historyMutex);
+                    m_history.clear();
+                }
+                postToOwner([this] { setErrorText({}); });
+                anchor(); // the fresh engine's clock starts at 0
+            }
+            publishNow();
+            m_inbox.complete();
             continue;
         }
-        engine->scan();
+        engine.scan();
         {
             std::lock_guard lock(m_historyMutex);
             if (m_history.deviceCount() > 0)
-                m_history.record(engine->statistics().scans, engine->statistics().timeMs,
-                                 engine->words().data());
+                m_history.record(engine.statistics().scans, engine.statistics().timeMs,
+                                 engine.words().data());
         }
-        reportErrors(*engine, errorsReported);
+        reportErrors(engine, errorsReported);
         const auto now = Clock::now();
-        if (stepsDone || now - lastPublish >= std::chrono::milliseconds(kMinSnapshotIntervalMs)) {
-            publish(*engine);
-            lastPublish = now;
-        }
+        if (stepsDone || now - lastPublish >= std::chrono::milliseconds(kMinSnapshotIntervalMs))
+            publishNow();
         if (stepsDone)
             postToOwner([this, generation] {
                 // Only when no later control call (run, stop, ...) has changed the state.

@@ -43,7 +43,8 @@ public:
 
     // History: devices recorded from the next scan on; false for a device not in the image.
     bool watchHistory(const model::Address &address);
-    // Reads the history under its lock (the worker records between reads).
+    // Calls read with the history under its lock: the worker waits for that lock after every
+    // scan, so read must be quick (copy out what it needs; no dialog, no waiting).
     void readHistory(const std::function<void(const model::HistoryRecorder &)> &read) const;
 
 protected:
@@ -69,7 +70,6 @@ private:
     double m_speed = 1.0;
     qint64 m_periodMs = 0; // 0: the program's default
     bool m_recordFlow = false;
-    bool m_reset = false;
     bool m_quit = false;
     quint64 m_generation = 0; // bumped by every control change
 

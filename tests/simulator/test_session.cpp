@@ -13,7 +13,10 @@
 #include <gtest/gtest.h>
 
 #include <atomic>
+#include <chrono>
+#include <optional>
 #include <thread>
+#include <vector>
 
 using namespace rung;
 using namespace rung::simulator;
@@ -62,6 +65,15 @@ struct SessionFixture {
                          });
         EXPECT_TRUE(eventually([&] { return done; })) << "command " << id;
         return result;
+    }
+    // Runs change on this thread while the worker is held: it waits for the history lock
+    // after every scan, and readHistory holds that lock. The pause first lets a scanning
+    // worker reach the lock, so everything change submits is seen by the worker at once.
+    template <typename Change> void whileWorkerHeld(Change change) {
+        session->readHistory([&](const model::HistoryRecorder &) {
+            std::this_thread::sleep_for(std::chrono::milliseconds(50));
+            change();
+        });
     }
 
     test::RealTargetSim sim;
@@ -122,8 +134,11 @@ TEST(SimulatorSession, PowerCycleKeepsRetentiveAreasOnly) {
     f.session->writeWord(f.at("D0"), 11);   // data registers
     f.session->writeWord(f.at("D200"), 22); // latched data registers (Vigor table: retentive)
     EXPECT_TRUE(f.finish(f.session->powerCycle()).first);
-    ASSERT_TRUE(eventually([&] { return f.latest()->value(f.at("D200")) == 22; }));
-    EXPECT_EQ(f.latest()->value(f.at("D0")), 0);
+    // The worker publishes before it reports a completion: no waiting for the snapshot.
+    const auto after = f.session->snapshot();
+    ASSERT_NE(after, nullptr);
+    EXPECT_EQ(after->value(f.at("D200")), 22);
+    EXPECT_EQ(after->value(f.at("D0")), 0);
 }
 
 TEST(SimulatorSession, StopReturnsToPowerOnAndStepsCountScans) {
@@ -170,15 +185,127 @@ TEST(SimulatorSession, RealTimeSpeedPacesVirtualTime) {
     SessionFixture f("LD X0\nOUT Y0\nEND");
     f.session->setPeriodMs(10);
     f.session->setSpeed(1.0);
-    f.session->run();
+    // The clock starts before run(): the worker anchors its pacing after run(), so a test
+    // thread descheduled between the two cannot shorten what it measures.
     QElapsedTimer t;
     t.start();
+    f.session->run();
     ASSERT_TRUE(eventually([&] { return f.latest()->statistics.timeMs >= 300; }));
     const qint64 wall = t.elapsed();
     f.session->pause();
-    // 300 ms of virtual time cannot come sooner than 300 ms of wall time at x1 (less one
-    // period: the first scan is due at once).
+    // 300 ms of virtual time cannot come sooner than 290 ms of wall time at x1 (the first
+    // scan is due at once). A loaded machine only makes it later, so no upper bound: the
+    // speed factor's other side is below, x10 against x1.
     EXPECT_GE(wall, 290);
+
+    // x10 from here: 300 ms more virtual time in no less than 29 ms of wall time, and sooner
+    // than at x1 unless this thread is starved for a quarter of a second.
+    const qint64 from = f.latest()->statistics.timeMs;
+    QElapsedTimer t10;
+    t10.start();
+    f.session->setSpeed(10.0);
+    f.session->run();
+    ASSERT_TRUE(eventually([&] { return f.latest()->statistics.timeMs >= from + 300; }));
+    const qint64 wall10 = t10.elapsed();
+    f.session->pause();
+    EXPECT_GE(wall10, 29);
+    EXPECT_LT(wall10, wall);
+}
+
+TEST(SimulatorSession, RunAfterStopPacesFromTheFreshEngineClock) {
+    // Stop then run with the worker held: it sees both at once. Pacing from the old engine's
+    // clock would owe it the 200 ms already run and catch up in a burst.
+    SessionFixture f("LD X0\nOUT Y0\nEND");
+    f.session->setPeriodMs(10);
+    f.session->run();
+    ASSERT_TRUE(eventually([&] { return f.latest()->statistics.timeMs >= 200; }));
+    QElapsedTimer t;
+    model::MonitorSource::CommandId marker = 0;
+    f.whileWorkerHeld([&] {
+        f.session->stop();
+        t.start();
+        f.session->run();
+        marker = f.session->writeWord(f.at("D0"), 1); // finished once the reset is published
+    });
+    EXPECT_TRUE(f.finish(marker).first);
+    EXPECT_LT(f.session->snapshot()->statistics.timeMs, 150);
+    ASSERT_TRUE(eventually([&] { return f.latest()->statistics.timeMs >= 150; }));
+    EXPECT_GE(t.elapsed(), 140);
+    f.session->pause();
+}
+
+TEST(SimulatorSession, AfterAStallPacingGoesOnFromNowWithoutABurst) {
+    // The worker is held for a second at x1: it does not then run a second's worth of scans
+    // at once. Wall time after the stall bounds virtual time (plus the catch-up allowance,
+    // a period and the age of the snapshot read before); a loaded machine only loosens it.
+    SessionFixture f("LD X0\nOUT Y0\nEND");
+    f.session->setPeriodMs(10);
+    f.session->run();
+    ASSERT_TRUE(eventually([&] { return f.latest()->statistics.scans >= 3; }));
+    f.session->readHistory([](const model::HistoryRecorder &) {
+        std::this_thread::sleep_for(std::chrono::milliseconds(1000));
+    });
+    QElapsedTimer t;
+    t.start();
+    const qint64 from = f.latest()->statistics.timeMs;
+    ASSERT_TRUE(eventually([&] { return f.latest()->statistics.timeMs >= from + 400; }));
+    const qint64 wall = t.elapsed();
+    f.session->pause();
+    // A burst would bring the 400 ms at once (measured: about 55 ms, the snapshot rate).
+    EXPECT_GE(wall, 400 - 50 - 10 - model::MonitorSource::kMinSnapshotIntervalMs - 10);
+}
+
+TEST(SimulatorSession, StopReleasesAForceSubmittedBeforeIt) {
+    SessionFixture f("LD X0\nOUT Y0\nEND");
+    ASSERT_TRUE(f.session->watchHistory(f.at("Y0")));
+    f.session->setSpeed(0);
+    f.session->run();
+    ASSERT_TRUE(eventually([&] { return f.latest()->statistics.scans >= 3; }));
+    // Both completions may arrive in one delivery: collect them all.
+    std::vector<model::MonitorSource::CommandId> finished;
+    QObject context;
+    QObject::connect(f.session.get(), &model::MonitorSource::commandFinished, &context,
+                     [&](model::MonitorSource::CommandId id, bool ok, const QString &) {
+                         if (ok)
+                             finished.push_back(id);
+                     });
+    model::MonitorSource::CommandId before = 0, after = 0;
+    f.whileWorkerHeld([&] {
+        before = f.session->force(f.at("X0"), true);
+        f.session->stop();
+        after = f.session->force(f.at("X1"), true);
+    });
+    ASSERT_TRUE(eventually([&] { return finished.size() >= 2; }));
+    EXPECT_EQ(finished, (std::vector<model::MonitorSource::CommandId>{before, after}));
+    const auto s = f.session->snapshot();
+    EXPECT_EQ(s->statistics.scans, 0u);
+    EXPECT_FALSE(s->forced(f.at("X0")));
+    EXPECT_TRUE(s->forced(f.at("X1")));
+    f.session->singleScan();
+    ASSERT_TRUE(eventually([&] { return f.latest()->statistics.scans == 1; }));
+    EXPECT_FALSE(f.latest()->bit(f.at("Y0")));
+}
+
+TEST(SimulatorSession, StopClearsTheHistory) {
+    SessionFixture f("LD X0\nOUT Y0\nEND");
+    ASSERT_TRUE(f.session->watchHistory(f.at("Y0")));
+    f.session->runScans(3);
+    ASSERT_TRUE(eventually([&] { return f.session->runState() == RunState::Paused; }));
+    ASSERT_TRUE(eventually([&] { return f.latest()->statistics.scans == 3; }));
+    f.session->readHistory([&](const model::HistoryRecorder &h) {
+        EXPECT_EQ(h.knownFrom(f.at("Y0")), std::optional<quint64>(1));
+    });
+    f.session->stop();
+    ASSERT_TRUE(eventually([&] { return f.latest()->statistics.scans == 0; }));
+    f.session->readHistory([&](const model::HistoryRecorder &h) {
+        EXPECT_FALSE(h.knownFrom(f.at("Y0")).has_value());
+        EXPECT_EQ(h.deviceCount(), 1); // still watched
+    });
+    f.session->runScans(2);
+    ASSERT_TRUE(eventually([&] { return f.latest()->statistics.scans == 2; }));
+    f.session->readHistory([&](const model::HistoryRecorder &h) {
+        EXPECT_EQ(h.knownFrom(f.at("Y0")), std::optional<quint64>(1));
+    });
 }
 
 TEST(SimulatorSession, ReadersOnAnotherThreadShareConsistentSnapshotsWhileCommandsArrive) {
