@@ -156,9 +156,11 @@ void SimulatorSession::workerLoop() {
         paceVirtualMs = engine.statistics().timeMs;
     };
     Clock::time_point lastPublish;
+    bool unpublished = false; // scans since the last snapshot
     auto publishNow = [&] {
         publish(engine);
         lastPublish = Clock::now();
+        unpublished = false;
     };
     publishNow();
     for (;;) {
@@ -206,8 +208,14 @@ void SimulatorSession::workerLoop() {
                     generation = m_generation;
                     break;
                 }
+                if (unpublished)
+                    break; // going idle: readers see the last scan
                 m_wake.wait(lock);
             }
+        }
+        if (!scan && !m_inbox.pending()) {
+            publishNow();
+            continue;
         }
         if (!scan) {
             // Applied, published, then answered: a reader told that a command finished finds
@@ -233,6 +241,7 @@ void SimulatorSession::workerLoop() {
                                  engine.words().data());
         }
         reportErrors(engine, errorsReported);
+        unpublished = true;
         const auto now = Clock::now();
         if (stepsDone || now - lastPublish >= std::chrono::milliseconds(kMinSnapshotIntervalMs))
             publishNow();

@@ -200,7 +200,9 @@ TEST(SimulatorSession, RealTimeSpeedPacesVirtualTime) {
 
     // x10 from here: 300 ms more virtual time in no less than 29 ms of wall time, and sooner
     // than at x1 unless this thread is starved for a quarter of a second.
-    const qint64 from = f.latest()->statistics.timeMs;
+    // A command's completion comes after a snapshot of the paused engine: the exact start.
+    EXPECT_TRUE(f.finish(f.session->writeWord(f.at("D1"), 0)).first);
+    const qint64 from = f.session->snapshot()->statistics.timeMs;
     QElapsedTimer t10;
     t10.start();
     f.session->setSpeed(10.0);
@@ -368,4 +370,24 @@ TEST(SimulatorSession, HistoryRecordsWatchedDevicesPerScan) {
         ASSERT_EQ(changes.size(), 2u);
         EXPECT_EQ(changes[1], (model::HistoryRecorder::Change{4, 40, 1}));
     });
+}
+
+TEST(SimulatorSession, APausedSessionPublishesItsLastScan) {
+    // At full speed most scans are not published (one snapshot every 34 ms); when the worker
+    // goes idle it publishes the last one, so a paused view is not one interval behind. The
+    // worker is woken by pause() and has a second to get there; a command's completion then
+    // comes with a snapshot of the same, unchanged engine.
+    SessionFixture f("LD M9000\nADD D0 K1 D0\nEND");
+    f.session->setSpeed(0);
+    f.session->run();
+    ASSERT_TRUE(eventually([&] { return f.latest()->statistics.scans > 1000; }));
+    f.session->pause();
+    QElapsedTimer idle;
+    idle.start();
+    while (idle.elapsed() < 1000)
+        QCoreApplication::processEvents(QEventLoop::AllEvents, 50);
+    const auto paused = f.session->snapshot();
+    EXPECT_TRUE(f.finish(f.session->writeWord(f.at("D1"), 0)).first);
+    EXPECT_EQ(paused->statistics.scans, f.session->snapshot()->statistics.scans);
+    EXPECT_EQ(paused->value(f.at("D0")), f.session->snapshot()->value(f.at("D0")));
 }
