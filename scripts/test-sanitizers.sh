@@ -1,7 +1,7 @@
 #!/usr/bin/env bash
 # Builds with AddressSanitizer + UndefinedBehaviorSanitizer and runs every test; then builds
 # the simulator tests with ThreadSanitizer and runs them (the session, the command inbox and
-# the snapshot channel run on several threads). Any report fails the script.
+# the history recorder run on several threads). Any report fails the script.
 set -euo pipefail
 cd "$(dirname "$0")/.."
 bash scripts/install-deps.sh

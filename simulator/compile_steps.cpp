@@ -72,16 +72,10 @@ void Compiler::compileTimer(const model::Instruction &ins, Step &s) {
             ins.spec->timerMode == model::TimerMode::OffDelay       ? PlTimerMode::OffDelay
             : ins.spec->timerMode == model::TimerMode::Accumulating ? PlTimerMode::Accumulating
                                                                     : PlTimerMode::OnDelay);
-        if (const model::Operand *b = ins.operands.size() > 2 ? &ins.operands[2] : nullptr) {
-            const qint64 v = b->kind == model::Operand::Kind::Constant ? b->constant.value : -1;
-            if (std::find(m_sem.timerBasesMs.begin(), m_sem.timerBasesMs.end(), v) ==
-                m_sem.timerBasesMs.end()) {
-                error(ins, Tr::tr("the time base of %1 must be 10, 100 or 1000 ms, not %2")
-                               .arg(ins.spec->mnemonic, describe(*b)));
-                return;
-            }
-            base = static_cast<double>(v);
-        }
+        // Which bases are allowed is the operand's allowedValues in the table, checked by
+        // reportBreaches before this runs.
+        if (ins.operands.size() > 2 && ins.operands[2].kind == model::Operand::Kind::Constant)
+            base = static_cast<double>(ins.operands[2].constant.value);
     }
     s.count = std::max(1, static_cast<int>(base));
 }

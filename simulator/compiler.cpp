@@ -116,6 +116,9 @@ void Compiler::resolveJumps() {
 CompileResult Compiler::run() {
     m_program->deferredBitWrites = m_sem.deferredBitWrites;
     m_program->timerMax = m_target.limits.timerMax;
+    m_program->counterMin = static_cast<std::int32_t>(m_target.limits.counterMin);
+    m_program->counterMax = static_cast<std::int32_t>(m_target.limits.counterMax);
+    m_program->scanTimeMax = m_target.limits.scanTimeMax;
     m_program->steps.resize(m_list.instructions.size());
     m_program->lines.resize(m_list.instructions.size());
     compileSystem();

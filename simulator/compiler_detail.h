@@ -130,10 +130,7 @@ private:
             // 0012h, which a timer set value DM 0000 reads as 12 - the move and the set value
             // read one word. Set values decode it (kBcd), as they decode a channel.
             if (o->constant.style == model::Constant::Style::Bcd && o->constant.value >= 0) {
-                std::int64_t word = 0;
-                for (qint64 v = o->constant.value, shift = 0; v > 0; v /= 10, shift += 4)
-                    word |= (v % 10) << shift;
-                w.constant = static_cast<std::int32_t>(word);
+                w.constant = static_cast<std::int32_t>(toBcd(o->constant.value));
                 return w;
             }
             if (o->constant.value != w.constant)

@@ -5,7 +5,6 @@
 #include <algorithm>
 #include <chrono>
 #include <cstring>
-#include <thread>
 
 namespace rung::simulator {
 
@@ -74,8 +73,6 @@ void Engine::scan() {
     m_stats.execNsCurrent = ns;
     m_stats.execNsMin = m_stats.scans == 1 ? ns : std::min(m_stats.execNsMin, ns);
     m_stats.execNsMax = std::max(m_stats.execNsMax, ns);
-    if (m_channel && m_channel->wanted())
-        m_channel->publish(std::make_shared<const Snapshot>(snapshot()));
 }
 
 void Engine::runScans(quint64 count) {
@@ -90,24 +87,6 @@ bool Engine::runUntil(const std::function<bool(const Engine &)> &condition, quin
             return true;
     }
     return false;
-}
-
-quint64 Engine::runRealTime(double speedFactor, const std::atomic<bool> &stop, quint64 maxScans) {
-    using Clock = std::chrono::steady_clock;
-    const double factor = speedFactor > 0 ? speedFactor : 1.0;
-    const auto start = Clock::now();
-    const qint64 startMs = m_stats.timeMs;
-    quint64 done = 0;
-    while (done < maxScans && !stop.load(std::memory_order_acquire)) {
-        // Scan k is due when wall time has caught up with its virtual start time.
-        const double dueMs = static_cast<double>(m_stats.timeMs - startMs) / factor;
-        std::this_thread::sleep_until(start +
-                                      std::chrono::duration_cast<Clock::duration>(
-                                          std::chrono::duration<double, std::milli>(dueMs)));
-        scan();
-        ++done;
-    }
-    return done;
 }
 
 void Engine::runFor(qint64 durationMs) {
@@ -138,8 +117,8 @@ void Engine::beginScan() {
     const qint64 period = m_stats.periodMs;
     m_scanMinMs = m_scansSincePowerOn == 0 ? period : std::min(m_scanMinMs, period);
     m_scanMaxMs = m_scansSincePowerOn == 0 ? period : std::max(m_scanMaxMs, period);
-    auto scanTime = [](qint64 ms, int unitUs) {
-        return static_cast<std::int32_t>(std::min<qint64>(ms * 1000 / unitUs, 32767)); // 16 bits
+    auto scanTime = [&p](qint64 ms, int unitUs) {
+        return static_cast<std::int32_t>(std::min<qint64>(ms * 1000 / unitUs, p.scanTimeMax));
     };
     for (const SystemBinding &b : p.system) {
         if (b.word >= 0) {
@@ -272,8 +251,7 @@ bool Engine::writeWord(const model::Address &address, qint64 value) {
     const std::int32_t v = wrapToWidth(value, layout().wordBits(address));
     if (isStimulus(address))
         m_stimulus[i] = v;
-    m_words[i] = static_cast<std::int32_t>((static_cast<std::uint32_t>(v) & ~m_forceMask[i]) |
-                                           (m_forceValue[i] & m_forceMask[i]));
+    storeWord(i, v, layout().wordBits(address));
     return true;
 }
 

@@ -3,7 +3,8 @@
 // The scan engine: runs a compiled Program on deterministic virtual time. Every scan reads
 // the input image (stimulus + forcing), evaluates the steps top to bottom, then makes the
 // outputs visible at END; the virtual clock advances by exactly one period per scan.
-// Not thread-safe: one thread drives an Engine; other threads read SnapshotChannel.
+// Not thread-safe: one thread drives an Engine (SimulatorSession: its worker; other threads
+// post to a CommandInbox and read the snapshots the worker publishes).
 
 #include "program.h"
 
@@ -11,7 +12,6 @@
 
 #include <QString>
 
-#include <atomic>
 #include <functional>
 #include <memory>
 #include <vector>
@@ -20,7 +20,6 @@ namespace rung::simulator {
 
 using model::ScanStatistics;
 using model::Snapshot;
-using model::SnapshotChannel;
 
 struct RuntimeError {
     int instruction = 0; // index in the instruction list
@@ -43,9 +42,6 @@ public:
     // Scans until the condition holds after a scan; false when maxScans ran out first.
     bool runUntil(const std::function<bool(const Engine &)> &condition, quint64 maxScans);
     void runFor(qint64 durationMs); // as many whole periods as fit (at least one if > 0)
-    // Real-time mode: paces scans by the wall clock, speedFactor times faster than real
-    // (2.0 = twice as fast); returns the scans run when stop is set or maxScans ran.
-    quint64 runRealTime(double speedFactor, const std::atomic<bool> &stop, quint64 maxScans);
     // Power off and on: non-retentive areas clear, retentive ones (Area::retentive) survive.
     void powerCycle();
     // A fresh PLC's power-on state (every area clear, forces released, statistics and errors
@@ -73,8 +69,6 @@ public:
     const std::vector<RuntimeError> &runtimeErrors() const { return m_errors; }
 
     Snapshot snapshot() const;
-    // After each scan, publish a snapshot when the channel asks for one (may be null).
-    void attach(SnapshotChannel *channel) { m_channel = channel; }
     // The memory image in MemoryLayout order (the history recorder reads it after a scan).
     const std::vector<std::int32_t> &words() const { return m_words; }
 
@@ -97,6 +91,12 @@ private:
             return;
         auto &w = reinterpret_cast<std::uint32_t &>(words[bit.word]);
         w = on ? (w | bit.mask) : (w & ~bit.mask);
+    }
+    // Every word write of the engine: wrapped to the word's width, forced bits kept.
+    void storeWord(std::size_t i, std::int64_t value, int width) {
+        const auto v = static_cast<std::uint32_t>(model::wrapToWidth(value, width));
+        m_words[i] =
+            static_cast<std::int32_t>((v & ~m_forceMask[i]) | (m_forceValue[i] & m_forceMask[i]));
     }
     bool isStimulus(const model::Address &address) const;
     std::int32_t readSet(const Step &s, std::size_t step);
@@ -121,7 +121,6 @@ private:
     qint64 m_scanMinMs = 0; // scan-time words: the shortest and longest period since power-on
     qint64 m_scanMaxMs = 0;
     bool m_record = false;
-    SnapshotChannel *m_channel = nullptr;
 };
 
 } // namespace rung::simulator

@@ -42,7 +42,6 @@ bool compare(std::uint8_t op, std::int32_t a, std::int32_t b) {
     return false;
 }
 
-// BCD digits -> number; -1 when a nibble is above 9 (or the value is negative).
 // A rising (or falling) edge of `now` against the value the slot kept from the last scan.
 inline bool edge(std::uint8_t &prev, bool now, bool falling) {
     const bool v = falling ? (prev && !now) : (now && !prev);
@@ -50,6 +49,7 @@ inline bool edge(std::uint8_t &prev, bool now, bool falling) {
     return v;
 }
 
+// BCD digits -> number; -1 when a nibble is above 9 (or the value is negative).
 std::int32_t fromBcd(std::int32_t raw) {
     if (raw < 0)
         return -1;
@@ -122,8 +122,7 @@ void Engine::wordLogic(const Step &s, std::size_t step) {
                                    .arg(max));
             return;
         }
-        for (std::int64_t rest = v, shift = 0; rest > 0; rest /= 10, shift += 4)
-            r |= (rest % 10) << shift;
+        r = toBcd(v);
         break;
     }
     case WordOp::FromBcd: {
@@ -137,10 +136,7 @@ void Engine::wordLogic(const Step &s, std::size_t step) {
         break;
     }
     }
-    const auto i = static_cast<std::size_t>(s.dest);
-    const auto value = static_cast<std::uint32_t>(wrapToWidth(r, s.width));
-    m_words[i] =
-        static_cast<std::int32_t>((value & ~m_forceMask[i]) | (m_forceValue[i] & m_forceMask[i]));
+    storeWord(static_cast<std::size_t>(s.dest), r, s.width);
 }
 
 // Kept out of the scan loop: the message's temporaries would otherwise weigh on it.
@@ -164,10 +160,7 @@ template <bool Record> void Engine::execute() {
     };
     auto rdw = [R](const WordOperand &o) { return o.index >= 0 ? R[o.index] : o.constant; };
     auto wrw = [&](std::int32_t index, std::int64_t v, int width) {
-        const auto i = static_cast<std::size_t>(index);
-        const auto value = static_cast<std::uint32_t>(wrapToWidth(v, width));
-        R[index] = static_cast<std::int32_t>((value & ~m_forceMask[i]) |
-                                             (m_forceValue[i] & m_forceMask[i]));
+        storeWord(static_cast<std::size_t>(index), v, width);
     };
 
     bool blocks[kBlockStack];
@@ -423,7 +416,8 @@ template <bool Record> void Engine::execute() {
         }
         case Code::PlCounter: {
             // PL110 MUP / MDOWN (seed 003 4.2.5): counts rising edges of UP and DOWN in the
-            // C word, which saturates at -32768..32767 (MDOWN stops at 0); RESET clears MUP
+            // C word, which saturates at Limits::counterMin..counterMax (-32768..32767; MDOWN
+            // stops at 0); RESET clears MUP
             // and loads PV into MDOWN. MUP is ON at >= PV, MDOWN at 0.
             ElementState &st = m_states[static_cast<std::size_t>(s.slot)];
             const bool reset = acc;
@@ -440,9 +434,9 @@ template <bool Record> void Engine::execute() {
             if (reset) {
                 current = countsDown ? set : 0;
             } else {
-                if (upEdge && current < 32767)
+                if (upEdge && current < p.counterMax)
                     ++current;
-                if (downEdge && current > (countsDown ? 0 : -32768))
+                if (downEdge && current > (countsDown ? std::max(0, p.counterMin) : p.counterMin))
                     --current;
             }
             // The count bit is compared at the end of the cycle (4.2.5), by endScan.

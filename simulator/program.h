@@ -92,6 +92,15 @@ enum class PlTimerMode : std::uint8_t { OnDelay, OffDelay, Accumulating };
 
 enum class WordOp : std::uint8_t { And, Or, Xor, Not, ToBcd, FromBcd };
 
+// The BCD word of a decimal number >= 0, a digit a nibble (CPM1 #0150 constants, Vigor /
+// CPM1 BCD); the caller checks the digits fit the word.
+constexpr std::int64_t toBcd(std::int64_t value) {
+    std::int64_t word = 0;
+    for (std::int64_t shift = 0; value > 0; value /= 10, shift += 4)
+        word |= (value % 10) << shift;
+    return word;
+}
+
 enum class MathOp : std::uint8_t { Add, Sub, Mul, Div, Or, And, Xor, Shl, Shr };
 
 // A word operand: a memory word, or a constant when index < 0.
@@ -139,7 +148,10 @@ struct Program {
     int maxPushDepth = 0;
     // VPC: bit writes land in a write image that becomes visible at END (docs/simulator.md).
     bool deferredBitWrites = false;
-    std::int64_t timerMax = 0; // a timer's current value saturates here (Limits::timerMax)
+    std::int64_t timerMax = 0;   // a timer's current value saturates here (Limits::timerMax)
+    std::int32_t counterMin = 0; // saturating up/down counters (Limits::counterMin / Max)
+    std::int32_t counterMax = 0;
+    std::int64_t scanTimeMax = 0; // the scan-time words stop here (Limits::scanTimeMax)
     std::vector<std::pair<int, int>> bitWordRanges; // [begin, end) words holding bits
     // Semantics::parallelOut / parallelIn (VPC p76 / p77); -1: none.
     std::int32_t parallelOutWord = -1;

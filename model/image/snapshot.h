@@ -8,9 +8,7 @@
 
 #include <QtGlobal>
 
-#include <atomic>
 #include <memory>
-#include <mutex>
 #include <vector>
 
 namespace rung::model {
@@ -57,29 +55,6 @@ private:
                    ? words[static_cast<std::size_t>(index)]
                    : 0;
     }
-};
-
-// Hands snapshots from the scan thread to a reader. The reader asks (request()); the scan
-// loop copies its state only when asked, after END, and swaps a pointer under a mutex held
-// for the swap alone, so a slow reader never stalls a scan.
-class SnapshotChannel {
-public:
-    void request() { m_wanted.store(true, std::memory_order_release); }
-    bool wanted() const { return m_wanted.load(std::memory_order_acquire); }
-    void publish(std::shared_ptr<const Snapshot> snapshot) {
-        m_wanted.store(false, std::memory_order_release);
-        std::lock_guard lock(m_mutex);
-        m_latest = std::move(snapshot);
-    }
-    std::shared_ptr<const Snapshot> latest() const {
-        std::lock_guard lock(m_mutex);
-        return m_latest;
-    }
-
-private:
-    std::atomic<bool> m_wanted{false};
-    mutable std::mutex m_mutex;
-    std::shared_ptr<const Snapshot> m_latest;
 };
 
 } // namespace rung::model

@@ -223,6 +223,12 @@ struct Limits {
     int decimalDigits = 0;
     // A timer's current value stops here (PL110 seed 003 4.2.4: saturates at 32767).
     std::int64_t timerMax = 32767;
+    // Where saturating up/down counters stop (Semantics::upDownCountersSaturate; PL110 MUP /
+    // MDOWN, seed 003 4.2.5: the C word's -32768..32767; MDOWN stops at 0 besides).
+    std::int64_t counterMin = -32768;
+    std::int64_t counterMax = 32767;
+    // The scan-time system words (SystemRole::ScanTime*) stop here: one 16-bit word.
+    std::int64_t scanTimeMax = 32767;
 };
 
 // How a target writes constants; parseConstant / formatConstant (address.cpp) and the listing
@@ -260,10 +266,9 @@ struct Semantics {
     int downCountersBelow = 0;
     // The timer's current value is the count of time-base units kept in its word, so a write
     // to the word changes the timing (PL110 TON / TOFF / TONR, seed 003 4.2.4: MOV(Tx = #0)
-    // resets a TONR); the time base may be named as the timer's third operand, one of
-    // timerBasesMs. Otherwise the elapsed time is the timer's own state.
+    // resets a TONR); the time base may be named as the timer's third operand (its
+    // OperandSpec::allowedValues). Otherwise the elapsed time is the timer's own state.
     bool timerCountsInWord = false;
-    std::vector<int> timerBasesMs;
     // Up/down counters saturate at the limits of their word (PL110 MUP / MDOWN, seed 003
     // 4.2.5) instead of wrapping around (CPM1 CNTR(12)).
     bool upDownCountersSaturate = false;

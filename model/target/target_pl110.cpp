@@ -326,6 +326,8 @@ Target makePl110Target() {
     t.limits.duplicateCoilIsError = true;
     t.limits.outputNeedsCondition = false; // PLProg coils may hang on the left rail
     t.limits.timerMax = 32767;             // seed 003 4.2.4
+    t.limits.counterMin = -32768;          // seed 003 4.2.5: the C word saturates
+    t.limits.counterMax = 32767;
 
     // The listing is the product's design: plain numbers, '#' accepted before them as PLProg
     // writes "MOV(Tx = #0)"; FM operators and time bases are words in constant slots.
@@ -333,8 +335,7 @@ Target makePl110Target() {
     t.constants.hashPlain = true;
     t.constants.wordsInConstantSlots = true;
     t.semantics.timerCountsInWord = true;
-    t.semantics.timerBasesMs = {10, 100, 1000}; // seed 003 4.2.4
-    t.semantics.upDownCountersSaturate = true;  // MUP / MDOWN, seed 003 4.2.5
+    t.semantics.upDownCountersSaturate = true; // MUP / MDOWN, seed 003 4.2.5
 
     // Same I/O on both; only PL110-2A has the OLED terminal and its DISP area (1.2, 2.1.16).
     t.models = {

@@ -15,6 +15,7 @@
 #include <benchmark/benchmark.h>
 
 #include <chrono>
+#include <string>
 
 using namespace rung;
 using namespace rung::simulator;
@@ -94,10 +95,40 @@ void BM_Scan2048StepsWithPowerFlow(benchmark::State &state) {
     scanMixed(state, true);
 }
 
-// The cost of power-flow recording as one figure: blocks of plain and recording scans
-// alternate on two engines of the same program, so machine noise hits both alike.
-void BM_PowerFlowRatio(benchmark::State &state) {
+// A feature's cost as one figure: blocks of scans alternate on two engines of the same
+// program, plain and with the feature (afterScan: the feature's own work after each of its
+// scans), so machine noise hits both alike. Sets <name>_ns_per_scan, plain_ns_per_scan and
+// their ratio.
+template <typename AfterScan>
+void sideBySide(benchmark::State &state, Fixture &plain, Fixture &with, const char *name,
+                AfterScan afterScan) {
     using Clock = std::chrono::steady_clock;
+    const model::Address input = plain.list.instructions[0].operands[0].address;
+    constexpr int kBlock = 1000;
+    double plainNs = 0;
+    double withNs = 0;
+    auto block = [&](Fixture &f, bool feature) {
+        const auto start = Clock::now();
+        for (int k = 0; k < kBlock; ++k) {
+            f.engine.setBit(input, (k & 8) != 0);
+            f.engine.scan();
+            if (feature)
+                afterScan(f);
+        }
+        return std::chrono::duration<double, std::nano>(Clock::now() - start).count();
+    };
+    for (auto _ : state) {
+        plainNs += block(plain, false);
+        withNs += block(with, true);
+    }
+    const double scans = static_cast<double>(state.iterations()) * kBlock;
+    state.counters["plain_ns_per_scan"] = plainNs / scans;
+    state.counters[std::string(name) + "_ns_per_scan"] = withNs / scans;
+    state.counters["ratio"] = plainNs > 0 ? withNs / plainNs : 0;
+}
+
+// The cost of power-flow recording.
+void BM_PowerFlowRatio(benchmark::State &state) {
     Fixture plain(mixedProgram());
     Fixture recording(mixedProgram());
     if (!plain.result.ok() || !recording.result.ok()) {
@@ -105,33 +136,13 @@ void BM_PowerFlowRatio(benchmark::State &state) {
         return;
     }
     recording.engine.setPowerFlowRecording(true);
-    const model::Address input = plain.list.instructions[0].operands[0].address;
-    constexpr int kBlock = 1000;
-    double plainNs = 0;
-    double recordingNs = 0;
-    auto block = [&](Fixture &f) {
-        const auto start = Clock::now();
-        for (int k = 0; k < kBlock; ++k) {
-            f.engine.setBit(input, (k & 8) != 0);
-            f.engine.scan();
-        }
-        return std::chrono::duration<double, std::nano>(Clock::now() - start).count();
-    };
-    for (auto _ : state) {
-        plainNs += block(plain);
-        recordingNs += block(recording);
-    }
-    const double scans = static_cast<double>(state.iterations()) * kBlock;
-    state.counters["plain_ns_per_scan"] = plainNs / scans;
-    state.counters["flow_ns_per_scan"] = recordingNs / scans;
-    state.counters["ratio"] = plainNs > 0 ? recordingNs / plainNs : 0;
+    sideBySide(state, plain, recording, "flow", [](Fixture &) {});
 }
 
 // The cost of the history recorder with 1,000 watched devices (issue 11: <= 10% of the plain
-// scan), side by side like BM_PowerFlowRatio: bits, words, timer and counter values of the
-// mixed program, recorded after every scan.
+// scan): bits, words, timer and counter values of the mixed program, recorded after every
+// scan.
 void BM_HistoryRatio(benchmark::State &state) {
-    using Clock = std::chrono::steady_clock;
     Fixture plain(mixedProgram());
     Fixture recording(mixedProgram());
     if (!plain.result.ok() || !recording.result.ok()) {
@@ -148,29 +159,10 @@ void BM_HistoryRatio(benchmark::State &state) {
         state.SkipWithError("the target has fewer than 1000 devices");
         return;
     }
-    const model::Address input = plain.list.instructions[0].operands[0].address;
-    constexpr int kBlock = 1000;
-    double plainNs = 0;
-    double recordingNs = 0;
-    auto block = [&](Fixture &f, model::HistoryRecorder *h) {
-        const auto start = Clock::now();
-        for (int k = 0; k < kBlock; ++k) {
-            f.engine.setBit(input, (k & 8) != 0);
-            f.engine.scan();
-            if (h)
-                h->record(f.engine.statistics().scans, f.engine.statistics().timeMs,
-                          f.engine.words().data());
-        }
-        return std::chrono::duration<double, std::nano>(Clock::now() - start).count();
-    };
-    for (auto _ : state) {
-        plainNs += block(plain, nullptr);
-        recordingNs += block(recording, &history);
-    }
-    const double scans = static_cast<double>(state.iterations()) * kBlock;
-    state.counters["plain_ns_per_scan"] = plainNs / scans;
-    state.counters["history_ns_per_scan"] = recordingNs / scans;
-    state.counters["ratio"] = plainNs > 0 ? recordingNs / plainNs : 0;
+    sideBySide(state, plain, recording, "history", [&](Fixture &f) {
+        history.record(f.engine.statistics().scans, f.engine.statistics().timeMs,
+                       f.engine.words().data());
+    });
     state.counters["history_MB"] = static_cast<double>(history.memoryBytes()) / 1e6;
 }
 

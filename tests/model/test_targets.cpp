@@ -423,12 +423,18 @@ TEST(Semantics, Cpm1TimhCarriesItsOwnTimeBase) {
 TEST(Semantics, Pl110TimersCountInTheirWordAndCountersSaturate) {
     const Semantics &s = pl110().semantics;
     EXPECT_TRUE(s.timerCountsInWord);
-    EXPECT_EQ(s.timerBasesMs, (std::vector<int>{10, 100, 1000})); // seed 003 4.2.4
-    EXPECT_TRUE(s.upDownCountersSaturate);                        // MUP / MDOWN
+    for (const char *timer : {"TON", "TOFF", "TONR"}) // seed 003 4.2.4: the time base
+        EXPECT_EQ(spec(pl110(), timer).operands.at(2).allowedValues,
+                  (std::vector<int>{10, 100, 1000}))
+            << timer;
+    EXPECT_TRUE(s.upDownCountersSaturate); // MUP / MDOWN
     EXPECT_EQ(pl110().limits.timerMax, 32767);
+    EXPECT_EQ(pl110().limits.counterMin, -32768); // seed 003 4.2.5
+    EXPECT_EQ(pl110().limits.counterMax, 32767);
+    for (const Target *t : {&vpc(), &vigor(), &cpm1(), &pl110()})
+        EXPECT_EQ(t->limits.scanTimeMax, 32767) << t->id.toStdString(); // one 16-bit word
     for (const Target *t : {&vpc(), &vigor(), &cpm1()}) {
         EXPECT_FALSE(t->semantics.timerCountsInWord) << t->id.toStdString();
-        EXPECT_TRUE(t->semantics.timerBasesMs.empty()) << t->id.toStdString();
         EXPECT_FALSE(t->semantics.upDownCountersSaturate) << t->id.toStdString(); // CNTR wraps
     }
 }

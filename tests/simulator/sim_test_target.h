@@ -5,6 +5,8 @@
 // turns "MNEMONIC OPERAND..." lines into an InstructionList against it.
 
 #include "model/listing/il.h"
+#include "simulator/compiler.h"
+#include "simulator/engine.h"
 
 #include <QStringList>
 
@@ -51,6 +53,9 @@ inline std::unique_ptr<model::Target> makeTestTarget(model::Family family = mode
     t->constants = real.constants;
     t->semantics = real.semantics;
     t->limits.timerMax = real.limits.timerMax;
+    t->limits.counterMin = real.limits.counterMin;
+    t->limits.counterMax = real.limits.counterMax;
+    t->limits.scanTimeMax = real.limits.scanTimeMax;
     t->limits.stackDepth = 8;
     t->areas = {area("X", AreaKind::Bit, 0, 31, false, true),
                 area("Y", AreaKind::Bit, 0, 31, true, true),
@@ -184,5 +189,34 @@ inline model::InstructionList assemble(const model::Target &t, const QString &te
     }
     return list;
 }
+
+// A program of the synthetic target, compiled and ready to scan: the fixture of the engine
+// tests and of the table-semantics tests (which change the target before compile()).
+struct TableSim {
+    explicit TableSim(std::unique_ptr<model::Target> t)
+        : target(std::move(t)) {}
+    explicit TableSim(const char *program, model::Family family = model::Family::Vigor)
+        : TableSim(makeTestTarget(family)) {
+        compile(program);
+    }
+    bool compile(const char *program) {
+        list = assemble(*target, QString::fromLatin1(program));
+        result = compileProgram(list);
+        engine = result.ok() ? std::make_unique<Engine>(result.program) : nullptr;
+        return result.ok();
+    }
+    model::Address at(const char *name) const {
+        return operandOf(*target, QString::fromLatin1(name)).address;
+    }
+    void in(const char *name, bool on) { engine->setBit(at(name), on); }
+    bool bit(const char *name) const { return engine->bit(at(name)); }
+    int value(const char *name) const { return engine->value(at(name)); }
+    void scan(quint64 n = 1) { engine->runScans(n); }
+
+    std::unique_ptr<model::Target> target;
+    model::InstructionList list;
+    CompileResult result;
+    std::unique_ptr<Engine> engine;
+};
 
 } // namespace rung::simulator::test

@@ -3,42 +3,12 @@
 
 #include "sim_test_target.h"
 
-#include "simulator/compiler.h"
-#include "simulator/engine.h"
-
 #include <gtest/gtest.h>
-
-#include <atomic>
-#include <thread>
 
 using namespace rung;
 using namespace rung::simulator;
 
-namespace {
-
-struct Sim {
-    explicit Sim(const char *program, model::Family family = model::Family::Vigor)
-        : target(test::makeTestTarget(family))
-        , list(test::assemble(*target, QString::fromLatin1(program)))
-        , result(compileProgram(list)) {
-        if (result.ok())
-            engine = std::make_unique<Engine>(result.program);
-    }
-    model::Address at(const char *name) const {
-        return test::operandOf(*target, QString::fromLatin1(name)).address;
-    }
-    void in(const char *name, bool on) { engine->setBit(at(name), on); }
-    bool bit(const char *name) const { return engine->bit(at(name)); }
-    int value(const char *name) const { return engine->value(at(name)); }
-    void scan(quint64 n = 1) { engine->runScans(n); }
-
-    std::unique_ptr<model::Target> target;
-    model::InstructionList list;
-    CompileResult result;
-    std::unique_ptr<Engine> engine;
-};
-
-} // namespace
+using Sim = test::TableSim;
 
 TEST(EngineLatch, StopFirstLatchHoldsAfterStartReleaseAndStopWins) {
     Sim s("LD X0\nOR Y0\nANI X1\nOUT Y0\nEND");
@@ -492,39 +462,6 @@ TEST(EngineMonitor, PowerFlowRecordsTheResultAfterEveryInstruction) {
     EXPECT_EQ(snap.statistics.scans, 1u);
 }
 
-TEST(EngineMonitor, SnapshotsTakenFromAnotherThreadAreConsistentScanEnds) {
-    // D0 and D1 are equal at every END, so a torn copy would show them differ.
-    Sim s("LD SM9000\nINC D0\nMOV D0 D1\nEND");
-    SnapshotChannel channel;
-    s.engine->attach(&channel);
-    std::atomic<bool> done{false};
-    std::atomic<int> seen{0};
-    bool consistent = true;
-    quint64 lastScan = 0;
-    bool monotonic = true;
-    std::thread reader([&] {
-        while (!done.load()) {
-            channel.request();
-            if (auto snap = channel.latest()) {
-                ++seen;
-                consistent = consistent && snap->value(s.at("D0")) == snap->value(s.at("D1"));
-                monotonic = monotonic && snap->statistics.scans >= lastScan;
-                lastScan = snap->statistics.scans;
-            }
-            std::this_thread::yield();
-        }
-    });
-    // Scan until the reader has taken a good number of snapshots (bounded, so a broken
-    // channel fails the test instead of hanging it).
-    for (int round = 0; round < 2000 && seen.load() < 50; ++round)
-        s.scan(1000);
-    done = true;
-    reader.join();
-    EXPECT_GE(seen.load(), 50);
-    EXPECT_TRUE(consistent);
-    EXPECT_TRUE(monotonic);
-}
-
 TEST(EngineTimer, Cpm1SetValueFromAWordIsBcdAndABadDigitIsARuntimeError) {
     Sim s("LD X0\nTMR T0 D0\nEND", model::Family::Cpm1);
     ASSERT_TRUE(s.result.ok());
@@ -576,15 +513,6 @@ TEST(EngineApply, TransferAddsEveryScanWhileTheConditionHolds) {
     s.in("X0", true);
     s.scan(3);
     EXPECT_EQ(s.value("D0"), 12);
-}
-
-TEST(EngineRun, RealTimeModeStopsAtMaxScansOrWhenAsked) {
-    Sim s("LD SM9000\nINC D0\nEND");
-    std::atomic<bool> stop{false};
-    EXPECT_EQ(s.engine->runRealTime(1000.0, stop, 20), 20u); // 200 ms virtual at 1000x
-    EXPECT_EQ(s.value("D0"), 20);
-    stop = true;
-    EXPECT_EQ(s.engine->runRealTime(1.0, stop, 1000), 0u);
 }
 
 TEST(EngineMonitor, SnapshotShowsTheSetValueInUseForInstructionConstants) {

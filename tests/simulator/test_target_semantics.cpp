@@ -4,39 +4,12 @@
 
 #include "sim_test_target.h"
 
-#include "simulator/compiler.h"
-#include "simulator/engine.h"
-
 #include <gtest/gtest.h>
 
 using namespace rung;
 using namespace rung::simulator;
 
-namespace {
-
-struct TableSim {
-    explicit TableSim(std::unique_ptr<model::Target> t)
-        : target(std::move(t)) {}
-    bool compile(const char *program) {
-        list = test::assemble(*target, QString::fromLatin1(program));
-        result = compileProgram(list);
-        if (result.ok())
-            engine = std::make_unique<Engine>(result.program);
-        return result.ok();
-    }
-    model::Address at(const char *name) const {
-        return test::operandOf(*target, QString::fromLatin1(name)).address;
-    }
-    bool bit(const char *name) const { return engine->bit(at(name)); }
-    int value(const char *name) const { return engine->value(at(name)); }
-
-    std::unique_ptr<model::Target> target;
-    model::InstructionList list;
-    CompileResult result;
-    std::unique_ptr<Engine> engine;
-};
-
-} // namespace
+using test::TableSim;
 
 TEST(TableSemantics, ParallelOutputShowsTheWordOnTheBitsTheTableNames) {
     TableSim s(test::makeTestTarget(model::Family::Vigor));
@@ -116,4 +89,40 @@ TEST(TableSemantics, TimerCurrentValueStopsAtTheTablesLimit) {
     s.engine->setBit(s.at("X0"), true);
     s.engine->runScans(100); // 990 ms: 9 units of 100 ms
     EXPECT_EQ(s.value("T0"), 3);
+}
+
+TEST(TableSemantics, SaturatingCountersStopAtTheTablesLimits) {
+    // PL110 semantics (MUP: up/down counters saturate) with narrower limits in the table.
+    auto t = test::makeTestTarget(model::Family::Pl110);
+    t->limits.counterMin = -2;
+    t->limits.counterMax = 3;
+    TableSim s(std::move(t));
+    ASSERT_TRUE(s.compile("LD X0\nLD X1\nLD X2\nCNTR C0 K10\nEND"));
+    auto pulses = [&](const char *input, int n) {
+        for (int k = 0; k < n; ++k) {
+            s.in(input, true);
+            s.scan();
+            s.in(input, false);
+            s.scan();
+        }
+    };
+    pulses("X0", 5); // up
+    EXPECT_EQ(s.value("C0"), 3);
+    pulses("X1", 9); // down
+    EXPECT_EQ(s.value("C0"), -2);
+}
+
+TEST(TableSemantics, ScanTimeWordsStopAtTheTablesLimit) {
+    auto t = test::makeTestTarget(model::Family::Vigor);
+    t->systemDevices.push_back(
+        {QStringLiteral("D99"), model::SystemRole::ScanTimeCurrent, nullptr, 100});
+    t->limits.scanTimeMax = 250;
+    TableSim s(std::move(t));
+    ASSERT_TRUE(s.compile("LD X0\nOUT Y0\nEND"));
+    s.engine->setPeriodMs(20); // 200 units of 0.1 ms
+    s.scan();
+    EXPECT_EQ(s.value("D99"), 200);
+    s.engine->setPeriodMs(30); // 300: over the limit
+    s.scan();
+    EXPECT_EQ(s.value("D99"), 250);
 }
