@@ -4201,7 +4201,7 @@ Létradiagram- és utasításlista-szerkesztő VPC, Vigor, CPM1 és PL110 PLC-kh
         <translation>(nincs operandus)</translation>
     </message>
     <message>
-        <location line="+50"/>
+        <location line="+63"/>
         <source>%1 has no set value to write</source>
         <translation>%1 operandusnak nincs írható beállított értéke</translation>
     </message>
@@ -4229,7 +4229,7 @@ Létradiagram- és utasításlista-szerkesztő VPC, Vigor, CPM1 és PL110 PLC-kh
         <translation>%1 nem bit típusú operandus</translation>
     </message>
     <message>
-        <location line="+22"/>
+        <location line="+19"/>
         <source>constant %1 is out of range</source>
         <translation>a(z) %1 konstans tartományon kívül esik</translation>
     </message>
@@ -4269,12 +4269,7 @@ Létradiagram- és utasításlista-szerkesztő VPC, Vigor, CPM1 és PL110 PLC-kh
         <translation>%1 nem időzítő</translation>
     </message>
     <message>
-        <location line="+31"/>
-        <source>the time base of %1 must be 10, 100 or 1000 ms, not %2</source>
-        <translation>%1 időalapja 10, 100 vagy 1000 ms lehet, nem %2</translation>
-    </message>
-    <message>
-        <location line="+22"/>
+        <location line="+47"/>
         <source>%1 is not a counter</source>
         <translation>%1 nem számláló</translation>
     </message>
@@ -4309,7 +4304,7 @@ Létradiagram- és utasításlista-szerkesztő VPC, Vigor, CPM1 és PL110 PLC-kh
         <translation>a(z) %1 szavas blokk túlnyúlik a terület végén</translation>
     </message>
     <message>
-        <location filename="../simulator/compiler.cpp" line="+137"/>
+        <location filename="../simulator/compiler.cpp" line="+140"/>
         <source>unknown instruction</source>
         <translation>ismeretlen utasítás</translation>
     </message>
@@ -4352,17 +4347,17 @@ Létradiagram- és utasításlista-szerkesztő VPC, Vigor, CPM1 és PL110 PLC-kh
         <translation>%1 nem fér el BCD-ben (0..%2); a cél nem változik</translation>
     </message>
     <message>
-        <location line="+13"/>
+        <location line="+12"/>
         <source>%1 is not a BCD number; the destination is unchanged</source>
         <translation>%1 nem BCD szám; a cél nem változik</translation>
     </message>
     <message>
-        <location line="+18"/>
+        <location line="+15"/>
         <source>result %1 is outside 0..9999; %2 is written</source>
         <translation>a(z) %1 eredmény kívül esik a 0..9999 tartományon; %2 íródik be</translation>
     </message>
     <message>
-        <location line="+355"/>
+        <location line="+353"/>
         <location line="+56"/>
         <source>division by zero; the destination is unchanged</source>
         <translation>osztás nullával; a cél változatlan marad</translation>
@@ -4376,7 +4371,7 @@ Létradiagram- és utasításlista-szerkesztő VPC, Vigor, CPM1 és PL110 PLC-kh
 <context>
     <name>rung::simulator::SimulatorSession</name>
     <message>
-        <location filename="../simulator/session.cpp" line="+135"/>
+        <location filename="../simulator/session.cpp" line="+141"/>
         <source>Line %1: %2</source>
         <translation>%1. sor: %2</translation>
     </message>

@@ -4214,7 +4214,7 @@ Editor di schemi ladder e liste istruzioni per VPC, Vigor, CPM1 e PL110.</transl
         <translation>(nessun operando)</translation>
     </message>
     <message>
-        <location line="+50"/>
+        <location line="+63"/>
         <source>%1 has no set value to write</source>
         <translation>%1 non ha un valore di preset da scrivere</translation>
     </message>
@@ -4242,7 +4242,7 @@ Editor di schemi ladder e liste istruzioni per VPC, Vigor, CPM1 e PL110.</transl
         <translation>%1 non è un operando a bit</translation>
     </message>
     <message>
-        <location line="+22"/>
+        <location line="+19"/>
         <source>constant %1 is out of range</source>
         <translation>la costante %1 è fuori campo</translation>
     </message>
@@ -4282,12 +4282,7 @@ Editor di schemi ladder e liste istruzioni per VPC, Vigor, CPM1 e PL110.</transl
         <translation>%1 non è un temporizzatore</translation>
     </message>
     <message>
-        <location line="+31"/>
-        <source>the time base of %1 must be 10, 100 or 1000 ms, not %2</source>
-        <translation>la base dei tempi di %1 deve essere 10, 100 o 1000 ms, non %2</translation>
-    </message>
-    <message>
-        <location line="+22"/>
+        <location line="+47"/>
         <source>%1 is not a counter</source>
         <translation>%1 non è un contatore</translation>
     </message>
@@ -4322,7 +4317,7 @@ Editor di schemi ladder e liste istruzioni per VPC, Vigor, CPM1 e PL110.</transl
         <translation>il blocco di %1 word va oltre la fine della sua area</translation>
     </message>
     <message>
-        <location filename="../simulator/compiler.cpp" line="+137"/>
+        <location filename="../simulator/compiler.cpp" line="+140"/>
         <source>unknown instruction</source>
         <translation>istruzione sconosciuta</translation>
     </message>
@@ -4365,17 +4360,17 @@ Editor di schemi ladder e liste istruzioni per VPC, Vigor, CPM1 e PL110.</transl
         <translation>%1 non sta in BCD (0..%2); la destinazione resta invariata</translation>
     </message>
     <message>
-        <location line="+13"/>
+        <location line="+12"/>
         <source>%1 is not a BCD number; the destination is unchanged</source>
         <translation>%1 non è un numero BCD; la destinazione resta invariata</translation>
     </message>
     <message>
-        <location line="+18"/>
+        <location line="+15"/>
         <source>result %1 is outside 0..9999; %2 is written</source>
         <translation>il risultato %1 è fuori da 0..9999; viene scritto %2</translation>
     </message>
     <message>
-        <location line="+355"/>
+        <location line="+353"/>
         <location line="+56"/>
         <source>division by zero; the destination is unchanged</source>
         <translation>divisione per zero; la destinazione resta invariata</translation>
@@ -4389,7 +4384,7 @@ Editor di schemi ladder e liste istruzioni per VPC, Vigor, CPM1 e PL110.</transl
 <context>
     <name>rung::simulator::SimulatorSession</name>
     <message>
-        <location filename="../simulator/session.cpp" line="+135"/>
+        <location filename="../simulator/session.cpp" line="+141"/>
         <source>Line %1: %2</source>
         <translation>Riga %1: %2</translation>
     </message>
