@@ -1,12 +1,14 @@
 #include "logic_oracle.h"
 
+#include "model/ladder/rung_graph.h"
+
 #include <algorithm>
 #include <variant>
 
 // Both evaluators share the reading of contacts and the meaning of outputs, so they differ
 // only in how they combine contacts: the listing as a stack machine, the ladder as power
-// flowing left to right through a graph of the grid built here, independently of the
-// converter's. A test oracle: the program itself runs listings in the simulator.
+// flowing left to right through the model's graph of the grid (detail::buildGraph). A test
+// oracle: the program itself runs listings in the simulator.
 
 namespace rung::model {
 
@@ -184,60 +186,6 @@ OutputImage evaluateList(const InstructionList &list, const BitReader &read) {
     return written;
 }
 
-namespace {
-
-// Node points: each row has columns + 1 of them (left of column 0 .. right of the last);
-// every row's first point is the rail. Wires join a cell's two points, links a point with
-// the one below; a contact is an edge between its cell's points.
-struct OracleGraph {
-    int rail = 0;
-    int nodes = 0;
-    std::vector<int> from, to;   // per cell: the contact's nodes, -1 for no contact
-    std::vector<int> outputNode; // per row: the node at the output column
-};
-
-OracleGraph oracleGraph(const Rung &rung) {
-    const int width = rung.columns + 1;
-    std::vector<int> group(static_cast<std::size_t>(rung.rows * width));
-    for (std::size_t i = 0; i < group.size(); ++i)
-        group[i] = static_cast<int>(i);
-    const auto find = [&group](int x) {
-        while (group[static_cast<std::size_t>(x)] != x)
-            x = group[static_cast<std::size_t>(x)] =
-                group[static_cast<std::size_t>(group[static_cast<std::size_t>(x)])];
-        return x;
-    };
-    const auto join = [&](int a, int b) { group[static_cast<std::size_t>(find(a))] = find(b); };
-    for (int r = 0; r < rung.rows; ++r) {
-        join(r * width, 0);
-        for (int c = 0; c <= rung.columns; ++c)
-            if (r + 1 < rung.rows && rung.link(r, c))
-                join(r * width + c, (r + 1) * width + c);
-        for (int c = 0; c < rung.columns; ++c)
-            if (rung.cell(r, c).kind == CellKind::Wire)
-                join(r * width + c, r * width + c + 1);
-    }
-    OracleGraph g;
-    g.nodes = static_cast<int>(group.size());
-    g.rail = find(0);
-    const std::size_t cellCount = static_cast<std::size_t>(rung.rows * rung.columns);
-    g.from.assign(cellCount, -1);
-    g.to.assign(cellCount, -1);
-    for (int r = 0; r < rung.rows; ++r) {
-        g.outputNode.push_back(find(r * width + rung.columns));
-        for (int c = 0; c < rung.columns; ++c) {
-            if (rung.cell(r, c).kind != CellKind::Contact)
-                continue;
-            const std::size_t i = static_cast<std::size_t>(r * rung.columns + c);
-            g.from[i] = find(r * width + c);
-            g.to[i] = find(r * width + c + 1);
-        }
-    }
-    return g;
-}
-
-} // namespace
-
 OutputImage evaluateLadder(const LadderProgram &ladder, const BitReader &read) {
     OutputImage written;
     Image image(ladder.target, read, written);
@@ -249,12 +197,16 @@ OutputImage evaluateLadder(const LadderProgram &ladder, const BitReader &read) {
         // ways. The outputs act in row order, as the listing runs them, and a contact is read
         // just before the first output it feeds: a branch point's contacts once for all its
         // branches, a branch's own contacts after the branches above it have written.
-        // A graph of the grid of its own, not the converter's (an oracle that shared the
-        // code it checks would agree with its bugs): node points joined by wires and links.
-        const OracleGraph g = oracleGraph(rung);
+        // The model's own graph of the grid (the converter reads the same one): nodes
+        // joined by wires and links, one edge per contact.
+        const detail::Graph g = detail::buildGraph(rung);
         const std::size_t cellCount = static_cast<std::size_t>(rung.rows * rung.columns);
-        const std::vector<int> &from = g.from;
-        const std::vector<int> &to = g.to;
+        std::vector<int> from(cellCount, -1);
+        std::vector<int> to(cellCount, -1);
+        for (const detail::Edge &e : g.edges) {
+            from[static_cast<std::size_t>(e.expr.cell)] = e.from;
+            to[static_cast<std::size_t>(e.expr.cell)] = e.to;
+        }
         const int rail = g.rail;
         // flood(start, forward, conducts): the groups reached from start.
         // Inverters that see no power feed their right side, as if from the rail.
