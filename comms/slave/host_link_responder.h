@@ -24,6 +24,12 @@ public:
 
     QByteArrayList feed(QByteArrayView bytes) override;
     QByteArray breakChecksum(QByteArray frame) const override;
+    qsizetype buffered() const override {
+        qsizetype later = 0;
+        for (const QByteArray &part : m_laterParts)
+            later += part.size();
+        return m_decoder.buffered() + later;
+    }
 
 private:
     hostlink::Frame respond(const hostlink::Frame &command);

@@ -29,6 +29,7 @@ public:
     QByteArrayList silence() override;
     int silenceMicroseconds() const override;
     QByteArray breakChecksum(QByteArray frame) const override;
+    qsizetype buffered() const override { return m_decoder.buffered(); }
 
 private:
     QByteArrayList take();

@@ -33,6 +33,9 @@ public:
     // ends there); 0 when the protocol needs no such timer.
     virtual QByteArrayList silence() { return {}; }
     virtual int silenceMicroseconds() const { return 0; }
+    // Bytes held for frames not complete yet: never more than the protocol's decoder keeps
+    // (docs/comms.md, "Bounded memory"), whatever arrives.
+    virtual qsizetype buffered() const = 0;
 
     const SlaveStatistics &statistics() const { return m_statistics; }
     // The last request not done as asked, or bytes thrown away, and why (translated).

@@ -217,7 +217,9 @@ void SlaveServer::record(Stream &stream) {
 
 void SlaveServer::run(Stream &stream, std::promise<QString> *opened) {
     QString error;
-    const bool ok = m_quit ? false : stream.transport->open(&error);
+    if (m_quit)
+        error = QCoreApplication::translate("rung::comms::Protocol", "The slave has been stopped");
+    const bool ok = !m_quit && stream.transport->open(&error);
     if (opened)
         opened->set_value(ok ? QString() : error);
     if (ok) {
@@ -248,13 +250,20 @@ void SlaveServer::serve(Stream &stream) {
         const ReadResult got =
             t.read(QDeadlineTimer(unsettled && silenceMs > 0 ? silenceMs : kPollMs));
         switch (got.status) {
-        case ReadResult::Status::Data:
-            send(stream, r.feed(got.bytes));
+        case ReadResult::Status::Data: {
+            // Counted before it is sent: a master that has the answer finds it counted.
+            const QByteArrayList answers = r.feed(got.bytes);
+            record(stream);
+            send(stream, answers);
             unsettled = true;
             break;
+        }
         case ReadResult::Status::Timeout:
-            if (unsettled && silenceMs > 0)
-                send(stream, r.silence());
+            if (unsettled && silenceMs > 0) {
+                const QByteArrayList answers = r.silence();
+                record(stream);
+                send(stream, answers);
+            }
             unsettled = false;
             break;
         case ReadResult::Status::Cancelled:
@@ -269,7 +278,6 @@ void SlaveServer::serve(Stream &stream) {
                 m_options.onFailure(got.message);
             return;
         }
-        record(stream);
     }
 }
 

@@ -18,6 +18,7 @@ public:
 
     QByteArrayList feed(QByteArrayView bytes) override;
     QByteArray breakChecksum(QByteArray frame) const override;
+    qsizetype buffered() const override { return m_decoder.buffered(); }
 
 private:
     QByteArray answer(const vigor::Request &request, int errorCode);

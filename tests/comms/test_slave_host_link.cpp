@@ -202,6 +202,20 @@ TEST(HostLinkSlave, ANewCommandInsteadOfTheDelimiterDropsTheRestOfAnAnswer) {
     EXPECT_TRUE(f.slave.feed(QByteArray(1, Cr)).isEmpty());
 }
 
+TEST(HostLinkSlave, ACommandBegunAfreshInPlaceOfALaterPartIsServed) {
+    Fixture f(OperatingMode::Monitor);
+    std::vector<std::uint16_t> words(100, 0x1111);
+    const QList<QByteArray> parts =
+        encode(writeCommand(0, model::ProtocolSpace::HostLinkDm, 0, words));
+    QByteArrayList out = f.slave.feed(parts.front());
+    ASSERT_EQ(out, QByteArrayList{QByteArray(1, Cr)});
+    // The master gave the write up and asks for the status: answered, nothing written.
+    out = f.slave.feed(encode(statusCommand(0)).front());
+    ASSERT_EQ(out.size(), 1);
+    EXPECT_TRUE(out.front().startsWith("@00MS00")) << out.front().toStdString();
+    EXPECT_EQ(f.plc.value("DM 0000"), 0);
+}
+
 TEST(HostLinkSlave, TestCommandEchoes) {
     Fixture f;
     const QByteArrayList out = f.slave.feed(encode({0, "TS", -1, "HELLO 123"}).front());
