@@ -1807,7 +1807,12 @@ Létradiagram- és utasításlista-szerkesztő VPC, Vigor, CPM1 és PL110 PLC-kh
         <translation>Host Link: %1 karakter érkezett, mielőtt a parancs választ kapott volna; az első %3 utáni %2 karakter eldobva</translation>
     </message>
     <message>
-        <location line="+24"/>
+        <location line="+17"/>
+        <source>Host Link: a new command began where part %1 of the %2 command was due; the unfinished command was dropped</source>
+        <translation>Host Link: a(z) %2 parancs %1. része helyett új parancs kezdődött; a befejezetlen parancs eldobva</translation>
+    </message>
+    <message>
+        <location line="+21"/>
         <source>Host Link: %1 characters without a CR (a part holds at most %2): dropped, waiting for the next &quot;@&quot;</source>
         <translation>Host Link: %1 karakter CR nélkül (egy rész legfeljebb %2 karakter): eldobva, várakozás a következő &quot;@&quot; jelre</translation>
     </message>
@@ -1868,7 +1873,7 @@ Létradiagram- és utasításlista-szerkesztő VPC, Vigor, CPM1 és PL110 PLC-kh
         <translation>A slave le van állítva</translation>
     </message>
     <message>
-        <location line="+118"/>
+        <location line="+124"/>
         <source>A TCP client was refused: %1 clients are served already</source>
         <translation>Egy TCP-kliens elutasítva: már %1 kliens kiszolgálása folyik</translation>
     </message>

@@ -1812,7 +1812,12 @@ Editor di schemi ladder e liste istruzioni per VPC, Vigor, CPM1 e PL110.</transl
         <translation>Host Link: sono arrivati %1 caratteri prima della risposta al comando; i %2 oltre i primi %3 sono stati scartati</translation>
     </message>
     <message>
-        <location line="+24"/>
+        <location line="+17"/>
+        <source>Host Link: a new command began where part %1 of the %2 command was due; the unfinished command was dropped</source>
+        <translation>Host Link: è iniziato un nuovo comando al posto della parte %1 del comando %2; il comando incompleto è stato scartato</translation>
+    </message>
+    <message>
+        <location line="+21"/>
         <source>Host Link: %1 characters without a CR (a part holds at most %2): dropped, waiting for the next &quot;@&quot;</source>
         <translation>Host Link: %1 caratteri senza CR (una parte ne contiene al massimo %2): scartati, in attesa del prossimo &quot;@&quot;</translation>
     </message>
@@ -1873,7 +1878,7 @@ Editor di schemi ladder e liste istruzioni per VPC, Vigor, CPM1 e PL110.</transl
         <translation>Lo slave è stato arrestato</translation>
     </message>
     <message>
-        <location line="+118"/>
+        <location line="+124"/>
         <source>A TCP client was refused: %1 clients are served already</source>
         <translation>Un client TCP è stato rifiutato: sono già serviti %1 client</translation>
     </message>
