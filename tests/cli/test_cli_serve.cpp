@@ -1,7 +1,10 @@
 // `rungstudio-cli serve`: what it refuses before it serves, and why (run in-process; the
 // serving itself is run as a user runs it in test_virtual_plc_peers.cpp).
 
+#include "app/cli/cli_load_program.h"
 #include "tests/cli/cli_run.h"
+
+#include <QDirIterator>
 
 #include <QFile>
 #include <QTcpServer>
@@ -102,6 +105,41 @@ TEST(CliServe, ABusyTcpPortIsSaidAndNothingIsServed) {
     EXPECT_EQ(r.code, 2);
     EXPECT_TRUE(r.err.contains(where)) << r.err.toStdString();
     EXPECT_TRUE(r.out.isEmpty());
+}
+
+// serve takes what simulate takes and more: a listing, a ladder text or a project, through
+// the one loader (app/cli/cli_load_program.h).
+TEST(CliServe, EveryExampleProjectLoadsAsAProgramToServe) {
+    QDirIterator it(QStringLiteral(RUNG_SOURCE_DIR "/resources/examples"),
+                    {QStringLiteral("*.rung")}, QDir::Files, QDirIterator::Subdirectories);
+    int projects = 0;
+    while (it.hasNext()) {
+        const QString file = it.next();
+        QString errText;
+        QTextStream err(&errText);
+        app::LoadedProgram loaded;
+        EXPECT_EQ(app::loadProgram({file, {}, {}}, &loaded, err), 0)
+            << file.toStdString() << errText.toStdString();
+        EXPECT_TRUE(loaded.program) << file.toStdString();
+        ++projects;
+    }
+    EXPECT_GE(projects, 10);
+}
+
+TEST(CliServe, ALadderTextLoadsAsTheSameProgramAsItsListing) {
+    QTemporaryDir dir;
+    const QString il = program(dir, "p.il", "; target: pl110\nLD I1\nOUT Q1\nEND\n");
+    const QString ladder = dir.filePath(QStringLiteral("p.ladder"));
+    const CliRun converted = cli({QStringLiteral("convert"), il, QStringLiteral("--to"),
+                                  QStringLiteral("ladder"), QStringLiteral("-o"), ladder});
+    ASSERT_EQ(converted.code, 0) << converted.err.toStdString();
+    QString errText;
+    QTextStream err(&errText);
+    app::LoadedProgram fromIl, fromLadder;
+    ASSERT_EQ(app::loadProgram({il, {}, {}}, &fromIl, err), 0) << errText.toStdString();
+    ASSERT_EQ(app::loadProgram({ladder, {}, {}}, &fromLadder, err), 0) << errText.toStdString();
+    EXPECT_EQ(fromLadder.target, fromIl.target);
+    EXPECT_EQ(fromLadder.program->steps.size(), fromIl.program->steps.size());
 }
 
 } // namespace
