@@ -140,11 +140,25 @@ void OnlineSession::failPending(const QString &why) {
         finishCommand(p.id, false, why);
 }
 
-void OnlineSession::publish(const std::vector<std::int32_t> &words, bool stale) {
+void OnlineSession::publish(const std::vector<std::int32_t> &words, bool stale,
+                            const std::map<model::Address, bool> &forced) {
     auto s = std::make_shared<model::Snapshot>();
     s->layout = m_layout;
     s->words = words;
     s->stale = stale;
+    // The bits this session forced (Host Link has no command that lists them).
+    if (!forced.empty()) {
+        s->forceMask.assign(words.size(), 0);
+        s->forceValue.assign(words.size(), 0);
+        for (const auto &[address, on] : forced) {
+            const model::BitRef ref = m_layout->bit(address);
+            if (!ref.valid() || std::size_t(ref.word) >= words.size())
+                continue;
+            s->forceMask[std::size_t(ref.word)] |= ref.mask;
+            if (on)
+                s->forceValue[std::size_t(ref.word)] |= ref.mask;
+        }
+    }
     publishSnapshot(std::move(s));
 }
 
@@ -219,7 +233,7 @@ void OnlineSession::workerLoop() {
             driver->link().close(); // opened again on the next try
         up = false;
         if (haveValues)
-            publish(words, true);
+            publish(words, true, driver->forced());
         const QString text =
             everUp ? QCoreApplication::translate("rung::comms::Driver",
                                                  "Connection to %1 lost: %2. Trying again.")
@@ -257,10 +271,10 @@ void OnlineSession::workerLoop() {
                     std::lock_guard lock(m_mutex);
                     m_activeLink = nullptr;
                 }
+                if (haveValues)
+                    publish(words, true, driver->forced());
                 driver->link().close();
                 driver.reset();
-                if (haveValues)
-                    publish(words, true);
                 postState(ConnectionState::Disconnected, {});
             }
             up = everUp = false;
@@ -410,7 +424,7 @@ void OnlineSession::workerLoop() {
             now = image.bit(driver->runStateDevice()) ? PlcMode::Run : PlcMode::Stop;
         }
         haveValues = true;
-        publish(words, false);
+        publish(words, false, driver->forced());
         if (now != mode || !up)
             postMode(now);
         mode = now;

@@ -27,6 +27,7 @@
 #include <condition_variable>
 #include <deque>
 #include <functional>
+#include <map>
 #include <memory>
 #include <mutex>
 #include <thread>
@@ -102,7 +103,8 @@ private:
     void control(const std::function<void()> &change);
     bool waitFor(std::unique_lock<std::mutex> &lock, int ms); // false: quit
     void failPending(const QString &why);
-    void publish(const std::vector<std::int32_t> &words, bool stale);
+    void publish(const std::vector<std::int32_t> &words, bool stale,
+                 const std::map<model::Address, bool> &forced);
     void postState(ConnectionState state, const QString &error);
     void postMode(PlcMode mode);
     void postStatistics(bool force);
