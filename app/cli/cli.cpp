@@ -1,6 +1,7 @@
 #include "cli.h"
 
 #include "cli_common.h"
+#include "cli_online.h"
 #include "cli_simulate.h"
 
 #include "model/checks/checks.h"
@@ -30,6 +31,9 @@ QString usage() {
                   "  rungstudio-cli simulate FILE [--target T] --scans N [--period MS] [--set "
                   "DEV=VALUE@SCAN]... "
                   "--trace DEV[,DEV...]\n"
+                  "  rungstudio-cli read --target T --protocol P (--port NAME | --tcp HOST:PORT | "
+                  "--pty PATH) [--station N] DEVICE...\n"
+                  "  rungstudio-cli write (the same options) DEVICE=VALUE...\n"
                   "FILE is a listing (.il), a ladder text (.ladder) or a project (.rung).\n"
                   "--lang en|hu|it: the language of the messages (else the locale's, LANG).\n"
                   "Exit status: 0 no error, 1 the program has errors, 2 usage or I/O error.");
@@ -183,6 +187,10 @@ int runCli(const QStringList &arguments, QTextStream &out, QTextStream &err) {
         return convert(args, out, err);
     if (command == QLatin1String("simulate"))
         return runSimulateCommand(args, out, err);
+    if (command == QLatin1String("read"))
+        return runReadCommand(args, out, err);
+    if (command == QLatin1String("write"))
+        return runWriteCommand(args, out, err);
     if (command == QLatin1String("--help") || command == QLatin1String("-h") ||
         command == QLatin1String("help")) {
         out << usage() << '\n';

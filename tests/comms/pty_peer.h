@@ -1,0 +1,73 @@
+#pragma once
+
+// A peer on a real pseudo-terminal: a thread holds the pty's master side (PtyTransport::
+// createPair) and answers each request with a responder (a FakeModbusPlc, a FakeHostLinkPlc).
+// A request is what arrived before the line went quiet for a moment, as a Modbus RTU slave
+// frames by silence. For tests of whole programs (the command-line tool, the session over a
+// real pty) and the comms benchmark.
+
+#include "comms/transport/pty_transport.h"
+#include "tests/comms/fake_transport.h"
+
+#include <atomic>
+#include <thread>
+
+namespace rung::comms::test {
+
+class PtyPeer {
+public:
+    explicit PtyPeer(FakeTransport::Responder responder)
+        : m_responder(std::move(responder)) {
+        QString error;
+        m_master = PtyTransport::createPair(&error);
+        if (!m_master) {
+            m_error = error;
+            return;
+        }
+        m_thread = std::thread([this] { loop(); });
+    }
+    ~PtyPeer() {
+        m_stop = true;
+        if (m_master)
+            m_master->cancel();
+        if (m_thread.joinable())
+            m_thread.join();
+    }
+    bool ok() const { return m_master != nullptr; }
+    QString error() const { return m_error; }
+    QString path() const { return m_master ? m_master->peerPath() : QString(); }
+    int answered() const { return m_answered; }
+
+private:
+    void loop() {
+        QByteArray request;
+        while (!m_stop) {
+            // Quiet for 3 ms after bytes: the request is whole.
+            const ReadResult r = m_master->read(QDeadlineTimer(request.isEmpty() ? 200 : 3));
+            if (r.status == ReadResult::Status::Data) {
+                request += r.bytes;
+                continue;
+            }
+            if (r.status != ReadResult::Status::Timeout)
+                continue;                               // cancelled: m_stop is set
+            if (request.isEmpty() || request == "\r") { // a Host Link delimiter: parts are sent
+                request.clear();
+                continue;
+            }
+            QString error;
+            for (const QByteArray &chunk : m_responder(request))
+                m_master->write(chunk, QDeadlineTimer(1000), &error);
+            ++m_answered;
+            request.clear();
+        }
+    }
+
+    FakeTransport::Responder m_responder;
+    std::unique_ptr<PtyTransport> m_master;
+    QString m_error;
+    std::atomic<bool> m_stop{false};
+    std::atomic<int> m_answered{0};
+    std::thread m_thread;
+};
+
+} // namespace rung::comms::test
