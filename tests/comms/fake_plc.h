@@ -6,6 +6,7 @@
 
 #include "comms/protocol/host_link.h"
 #include "comms/protocol/modbus.h"
+#include "comms/protocol/vigor_link.h"
 #include "tests/comms/fake_transport.h"
 
 #include <map>
@@ -121,6 +122,57 @@ private:
     std::vector<std::tuple<int, int, int>> m_requests;
 };
 
+// A Vigor on the Computer Link: a byte image, 51h / 61h / 70h / 71h.
+class FakeVigorPlc {
+public:
+    void setByte(int address, std::uint8_t value) {
+        std::lock_guard lock(m_mutex);
+        m_bytes[address] = value;
+    }
+    std::uint8_t byte(int address) const {
+        std::lock_guard lock(m_mutex);
+        const auto it = m_bytes.find(address);
+        return it == m_bytes.end() ? 0 : it->second;
+    }
+    FakeTransport::Responder responder() {
+        return [this](const QByteArray &bytes) { return respond(bytes); };
+    }
+
+private:
+    QList<QByteArray> respond(const QByteArray &bytes) {
+        std::lock_guard lock(m_mutex);
+        vigor::RequestDecoder decoder;
+        if (decoder.feed(bytes) != FrameStatus::Complete)
+            return {};
+        const vigor::Request &r = decoder.request();
+        vigor::Reply reply{r.station, r.command, decoder.errorCode(), {}};
+        if (reply.error == 0) {
+            switch (r.command) {
+            case vigor::Command::Read:
+                for (int i = 0; i < r.length; ++i)
+                    reply.data += char(m_bytes[r.address + i]);
+                break;
+            case vigor::Command::Write:
+                for (int i = 0; i < int(r.data.size()); ++i)
+                    m_bytes[r.address + i] = std::uint8_t(r.data[i]);
+                break;
+            case vigor::Command::BitOn:
+            case vigor::Command::BitOff: {
+                std::uint8_t &b = m_bytes[r.address >> 3];
+                const std::uint8_t mask = std::uint8_t(1u << (r.address & 7));
+                b = r.command == vigor::Command::BitOn ? std::uint8_t(b | mask)
+                                                       : std::uint8_t(b & ~mask);
+                break;
+            }
+            }
+        }
+        return {vigor::encodeReply(reply)};
+    }
+
+    mutable std::mutex m_mutex;
+    std::map<int, std::uint8_t> m_bytes;
+};
+
 // A CPM1 on Host Link: IR and DM words, the mode (MS / SC), forcing (KS / KR / KC), MM;
 // writes in RUN answer end code 01, as the PLC does.
 class FakeHostLinkPlc {
@@ -170,10 +222,12 @@ private:
                         m_words[{int(space), w.begin + int(i)}] = w.words[i];
             } else {
                 const auto r = hostlink::parseRead(c.text);
-                for (int i = 0; i < r.count; ++i)
-                    reply.text += QByteArray::number(m_words[{int(space), r.begin + i}], 16)
-                                      .toUpper()
-                                      .rightJustified(4, '0');
+                for (int i = 0; i < r.count; ++i) {
+                    const std::uint16_t w = m_words[{int(space), r.begin + i}];
+                    reply.text += space == model::ProtocolSpace::HostLinkCompletion
+                                      ? QByteArray(w ? "1" : "0")
+                                      : QByteArray::number(w, 16).toUpper().rightJustified(4, '0');
+                }
             }
         } else if (c.header == "MS") {
             const int bits = m_mode == hostlink::Mode::Run       ? 2
