@@ -31,12 +31,10 @@ QString usage() {
                   "  rungstudio-cli simulate FILE [--target T] --scans N [--period MS] [--set "
                   "DEV=VALUE@SCAN]... "
                   "--trace DEV[,DEV...]\n"
-                  "  rungstudio-cli read --target T --protocol P (--port NAME | --tcp HOST:PORT | "
-                  "--pty PATH) [--station N] DEVICE...\n"
-                  "  rungstudio-cli write (the same options) DEVICE=VALUE...\n"
                   "FILE is a listing (.il), a ladder text (.ladder) or a project (.rung).\n"
                   "--lang en|hu|it: the language of the messages (else the locale's, LANG).\n"
-                  "Exit status: 0 no error, 1 the program has errors, 2 usage or I/O error.");
+                  "Exit status: 0 no error, 1 the program has errors, 2 usage or I/O error.") +
+           QLatin1Char('\n') + onlineUsage();
 }
 
 int check(const QStringList &args, QTextStream &out, QTextStream &err) {

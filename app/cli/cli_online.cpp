@@ -18,11 +18,7 @@ struct Tr {
 };
 
 QString usage() {
-    return Tr::tr("usage:\n"
-                  "  rungstudio-cli read  --target T --protocol vigor|modbus|modbus-tcp|hostlink\n"
-                  "        (--port NAME | --tcp HOST:PORT | --pty PATH) [--station N] [--baud B]\n"
-                  "        [--frame 8N1] [--timeout MS] [--retries N] DEVICE...\n"
-                  "  rungstudio-cli write (the same options) DEVICE=VALUE...");
+    return Tr::tr("usage:") + QLatin1Char('\n') + onlineUsage();
 }
 
 struct Options {
@@ -204,6 +200,15 @@ bool isBit(const model::Target &target, const model::Address &a) {
 }
 
 } // namespace
+
+QString onlineUsage() {
+    return Tr::tr("  rungstudio-cli read  --target T --protocol vigor|modbus|modbus-tcp|hostlink\n"
+                  "        (--port NAME | --tcp HOST:PORT | --pty PATH) [--station N] [--baud B]\n"
+                  "        [--frame 8N1] [--timeout MS] [--retries N] DEVICE...\n"
+                  "  rungstudio-cli write (the same options) DEVICE=VALUE...\n"
+                  "Exit status of read and write: 0 done, 1 the PLC did not answer or refused, "
+                  "2 usage, device, value or port error.");
+}
 
 int runReadCommand(const QStringList &args, QTextStream &out, QTextStream &err) {
     Options o;

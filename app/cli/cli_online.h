@@ -11,6 +11,8 @@ namespace rung::app {
 // first the PLC does not acknowledge. args = everything after "read" / "write". Exit codes:
 // 0 done, 1 the PLC did not answer or refused (what was not done is named), 2 usage error
 // or a port that cannot be opened (docs/cli.md).
+// The lines `rungstudio-cli --help` prints for read and write.
+QString onlineUsage();
 int runReadCommand(const QStringList &args, QTextStream &out, QTextStream &err);
 int runWriteCommand(const QStringList &args, QTextStream &out, QTextStream &err);
 

@@ -141,11 +141,13 @@ void OnlineSession::failPending(const QString &why) {
 }
 
 void OnlineSession::publish(const std::vector<std::int32_t> &words, bool stale,
-                            const std::map<model::Address, bool> &forced) {
+                            const std::map<model::Address, bool> &forced,
+                            const model::ScanStatistics &statistics) {
     auto s = std::make_shared<model::Snapshot>();
     s->layout = m_layout;
     s->words = words;
     s->stale = stale;
+    s->statistics = statistics;
     // The bits this session forced (Host Link has no command that lists them).
     if (!forced.empty()) {
         s->forceMask.assign(words.size(), 0);
@@ -187,8 +189,7 @@ void OnlineSession::postMode(PlcMode mode) {
     });
 }
 
-void OnlineSession::postStatistics(bool force) {
-    static_cast<void>(force);
+void OnlineSession::postStatistics() {
     postToOwner([this] { emit statisticsChanged(); });
 }
 
@@ -202,7 +203,9 @@ void OnlineSession::workerLoop() {
     bool everUp = false;
     bool up = false;
     int backoff = m_settings.reconnectMinMs;
-    QElapsedTimer modeClock, signalClock;
+    QElapsedTimer modeClock, signalClock, connectedClock;
+    model::ScanStatistics figures;
+    figures.periodMs = 0;
     quint64 trafficSeen = 0;
     PlcMode mode = PlcMode::Unknown;
 
@@ -218,7 +221,7 @@ void OnlineSession::workerLoop() {
             std::lock_guard lock(m_mutex);
             m_statistics = driver->link().statistics();
         }
-        postStatistics(force);
+        postStatistics();
         quint64 next = 0;
         m_traffic.records(~quint64{0}, &next);
         if (next != trafficSeen) {
@@ -233,7 +236,7 @@ void OnlineSession::workerLoop() {
             driver->link().close(); // opened again on the next try
         up = false;
         if (haveValues)
-            publish(words, true, driver->forced());
+            publish(words, true, driver->forced(), figures);
         const QString text =
             everUp ? QCoreApplication::translate("rung::comms::Driver",
                                                  "Connection to %1 lost: %2. Trying again.")
@@ -272,7 +275,7 @@ void OnlineSession::workerLoop() {
                     m_activeLink = nullptr;
                 }
                 if (haveValues)
-                    publish(words, true, driver->forced());
+                    publish(words, true, driver->forced(), figures);
                 driver->link().close();
                 driver.reset();
                 postState(ConnectionState::Disconnected, {});
@@ -299,6 +302,9 @@ void OnlineSession::workerLoop() {
                 continue;
             }
             driver->link().setTap(&m_traffic);
+            figures = {};
+            figures.periodMs = 0;
+            connectedClock.invalidate();
             {
                 std::lock_guard lock(m_mutex);
                 m_activeLink = &driver->link();
@@ -424,7 +430,12 @@ void OnlineSession::workerLoop() {
             now = image.bit(driver->runStateDevice()) ? PlcMode::Run : PlcMode::Stop;
         }
         haveValues = true;
-        publish(words, false, driver->forced());
+        if (!connectedClock.isValid())
+            connectedClock.start();
+        ++figures.scans;
+        figures.timeMs = connectedClock.elapsed();
+        figures.periodMs = clock.elapsed();
+        publish(words, false, driver->forced(), figures);
         if (now != mode || !up)
             postMode(now);
         mode = now;

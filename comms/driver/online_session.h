@@ -103,11 +103,14 @@ private:
     void control(const std::function<void()> &change);
     bool waitFor(std::unique_lock<std::mutex> &lock, int ms); // false: quit
     void failPending(const QString &why);
+    // statistics: scans = refreshes so far, timeMs = since the connection, periodMs = the
+    // last refresh's time (the online counterparts of the simulator's scan figures).
     void publish(const std::vector<std::int32_t> &words, bool stale,
-                 const std::map<model::Address, bool> &forced);
+                 const std::map<model::Address, bool> &forced,
+                 const model::ScanStatistics &statistics);
     void postState(ConnectionState state, const QString &error);
     void postMode(PlcMode mode);
-    void postStatistics(bool force);
+    void postStatistics();
     QString notConnected() const;
 
     const model::Target &m_target;

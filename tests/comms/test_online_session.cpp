@@ -114,6 +114,7 @@ TEST(OnlineSession, PollsOnlyTheWatchedDevicesIntoTheSimulatorsSnapshotShape) {
     EXPECT_TRUE(eventually([&] { return h.session->connectionState() == State::Online; }));
     EXPECT_EQ(h.session->runState(), RunState::Running);
     EXPECT_FALSE(h.snapshot()->stale);
+    EXPECT_GT(h.snapshot()->statistics.scans, 0u); // refreshes, the online "scans"
     EXPECT_EQ(h.snapshot()->words.size(), std::size_t(h.session->layout()->wordCount()));
     EXPECT_EQ(h.value("V100"), 0); // not watched, not read
     EXPECT_TRUE(h.session->errorText().isEmpty()) << h.session->errorText().toStdString();
