@@ -50,7 +50,11 @@ private:
             const ReadResult r = m_master->read(QDeadlineTimer(request.isEmpty() ? 200 : 3));
             if (r.status == ReadResult::Status::Data) {
                 request += r.bytes;
-                if (m_eager && request != "\r") {
+                // A Host Link delimiter (a lone CR asking for the next part, which the
+                // responder sent already) is no request.
+                while (request.startsWith('\r'))
+                    request.remove(0, 1);
+                if (m_eager && !request.isEmpty()) {
                     const QList<QByteArray> reply = m_responder(request);
                     if (!reply.isEmpty()) {
                         QString error;
@@ -63,11 +67,9 @@ private:
                 continue;
             }
             if (r.status != ReadResult::Status::Timeout)
-                continue;                               // cancelled: m_stop is set
-            if (request.isEmpty() || request == "\r") { // a Host Link delimiter: parts are sent
-                request.clear();
+                continue; // cancelled: m_stop is set
+            if (request.isEmpty())
                 continue;
-            }
             QString error;
             for (const QByteArray &chunk : m_responder(request))
                 m_master->write(chunk, QDeadlineTimer(1000), &error);
