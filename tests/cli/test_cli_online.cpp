@@ -150,3 +150,122 @@ TEST(CliOnline, UsageErrorsExitTwoBeforeAnyPortIsOpened) {
 }
 
 } // namespace
+
+// The real tool, as a user runs it, against Debian's libmodbus as the slave: over Modbus TCP,
+// and over a pair of pseudo-terminals that socat links (as a null-modem cable would).
+#ifdef RUNG_MODBUS_PEER
+#include "tests/comms/peers/peer_values.h"
+
+#include <QCoreApplication>
+#include <QProcess>
+#include <QStandardPaths>
+#include <QTcpServer>
+#include <QTemporaryDir>
+
+namespace {
+
+namespace peer = rung::comms::test::peer;
+
+struct Process {
+    QProcess p;
+    ~Process() {
+        if (p.state() != QProcess::NotRunning) {
+            p.kill();
+            p.waitForFinished(5000);
+        }
+    }
+    // Starts and waits for `ready` on stdout (the peer), or for the path to exist (socat).
+    bool start(const QString &program, const QStringList &args, const QString &waitFor = {}) {
+        p.start(program, args);
+        QElapsedTimer clock;
+        clock.start();
+        QByteArray out;
+        while (clock.elapsed() < 15000 && p.state() != QProcess::NotRunning) {
+            if (waitFor.isEmpty() ? out.contains("ready") : QFile::exists(waitFor))
+                return true;
+            p.waitForReadyRead(50);
+            out += p.readAllStandardOutput();
+        }
+        return false;
+    }
+};
+
+struct CliResult {
+    int code = -1;
+    QString out, err;
+};
+
+CliResult runTool(const QStringList &args) {
+    QProcess p;
+    p.start(QStringLiteral(RUNG_CLI_PATH), args);
+    CliResult r;
+    if (!p.waitForFinished(30000))
+        return r;
+    r.code = p.exitCode();
+    r.out = QString::fromUtf8(p.readAllStandardOutput());
+    r.err = QString::fromUtf8(p.readAllStandardError());
+    return r;
+}
+
+void readWriteRead(const QStringList &where) {
+    const QStringList common = QStringList{QStringLiteral("--target"), QStringLiteral("pl110")} +
+                               where +
+                               QStringList{QStringLiteral("--station"), QStringLiteral("1")};
+    auto r =
+        runTool(QStringList{QStringLiteral("read")} + common +
+                QStringList{QStringLiteral("V10"), QStringLiteral("Q1"), QStringLiteral("Q2")});
+    EXPECT_EQ(r.code, 0) << r.err.toStdString();
+    EXPECT_EQ(r.out, QStringLiteral("V10=%1\nQ1=%2\nQ2=%3\n")
+                         .arg(std::int16_t(peer::reg(2010)))
+                         .arg(int(peer::coil(2400)))
+                         .arg(int(peer::coil(2401))));
+    r = runTool(QStringList{QStringLiteral("write")} + common +
+                QStringList{QStringLiteral("V10=-321"), QStringLiteral("Q2=ON")});
+    EXPECT_EQ(r.code, 0) << r.err.toStdString();
+    r = runTool(QStringList{QStringLiteral("read")} + common +
+                QStringList{QStringLiteral("V10"), QStringLiteral("Q2")});
+    EXPECT_EQ(r.out, QStringLiteral("V10=-321\nQ2=1\n")) << r.err.toStdString();
+}
+
+TEST(CliBinaryOnline, ReadsAndWritesALibmodbusSlaveOverModbusTcp) {
+    quint16 port = 0;
+    {
+        QTcpServer probe;
+        probe.listen(QHostAddress::LocalHost, 0);
+        port = probe.serverPort();
+    }
+    Process slave;
+    ASSERT_TRUE(slave.start(QStringLiteral(RUNG_MODBUS_PEER),
+                            {QStringLiteral("tcp"), QString::number(port), QStringLiteral("1")}))
+        << slave.p.readAllStandardError().toStdString();
+    readWriteRead({QStringLiteral("--protocol"), QStringLiteral("modbus-tcp"),
+                   QStringLiteral("--tcp"), QStringLiteral("127.0.0.1:%1").arg(port)});
+}
+
+TEST(CliBinaryOnline, ReadsAndWritesALibmodbusSlaveOverPtysLinkedBySocat) {
+    const QString socat = QStandardPaths::findExecutable(QStringLiteral("socat"));
+    if (socat.isEmpty())
+        GTEST_SKIP() << "socat is not installed (scripts/install-deps.sh)";
+    QTemporaryDir dir;
+    const QString a = dir.filePath(QStringLiteral("plc-side")),
+                  b = dir.filePath(QStringLiteral("pc-side"));
+    Process link;
+    ASSERT_TRUE(link.start(socat,
+                           {QStringLiteral("pty,raw,echo=0,link=%1").arg(a),
+                            QStringLiteral("pty,raw,echo=0,link=%1").arg(b)},
+                           b));
+    QElapsedTimer clock;
+    clock.start();
+    while (!QFile::exists(a) && clock.elapsed() < 5000)
+        link.p.waitForFinished(20);
+    ASSERT_TRUE(QFile::exists(a));
+    Process slave;
+    ASSERT_TRUE(slave.start(QStringLiteral(RUNG_MODBUS_PEER),
+                            {QStringLiteral("rtu"), a, QStringLiteral("1")}))
+        << slave.p.readAllStandardError().toStdString();
+    readWriteRead(
+        {QStringLiteral("--protocol"), QStringLiteral("modbus"), QStringLiteral("--pty"), b});
+}
+
+} // namespace
+#endif

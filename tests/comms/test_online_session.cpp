@@ -313,6 +313,34 @@ TEST(OnlineSession, HostLinkSwitchesToMonitorToWriteSaysSoAndShowsItsForces) {
     EXPECT_TRUE(eventually([&] { return h.session->runState() == RunState::Stopped; }));
 }
 
+TEST(OnlineSession, AVigorOnTheComputerLinkShowsItsBitsWordsAndRunState) {
+    FakeVigorPlc plc;
+    plc.setByte(0x03E0, 0x01); // M9000: ON while the PLC runs
+    plc.setByte(0x0081, 0x04); // M10
+    plc.setByte(0x1C0A, 0x39); // D5 = 3039h, low byte first
+    plc.setByte(0x1C0B, 0x30);
+    ConnectionSettings s = defaultSettings(ProtocolKind::VigorLink);
+    s.link = {50, 1, 5};
+    s.pollIntervalMs = 5;
+    Harness h(model::Family::Vigor, s, [&](FakeTransport &t) { t.setResponder(plc.responder()); });
+    h.watch({"M10", "D5", "Y0"});
+    QSignalSpy finished(h.session.get(), &model::MonitorSource::commandFinished);
+    h.session->connectToPlc();
+    ASSERT_TRUE(eventually([&] { return h.bit("M10") && h.value("D5") == 0x3039; }));
+    EXPECT_TRUE(eventually([&] { return h.session->runState() == RunState::Running; }));
+    // Y0 ON with 70h; the refresh shows it.
+    const auto on = h.finish(h.session->writeBit(address(h.target, "Y0"), true), finished);
+    EXPECT_TRUE(on.first) << on.second.toStdString();
+    EXPECT_EQ(plc.byte(0x0040), 0x01);
+    EXPECT_TRUE(eventually([&] { return h.bit("Y0"); }));
+    // The PLC goes to STOP (M9000 off): Stopped. RUN / STOP cannot be commanded over the link.
+    plc.setByte(0x03E0, 0x00);
+    EXPECT_TRUE(eventually([&] { return h.session->runState() == RunState::Stopped; }));
+    const auto run = h.finish(h.session->setPlcMode(PlcMode::Run), finished);
+    EXPECT_FALSE(run.first);
+    EXPECT_TRUE(run.second.contains(QLatin1String("RUN / STOP"))) << run.second.toStdString();
+}
+
 TEST(OnlineSession, StatisticsAndTheTrafficTapReachTheOwner) {
     FakeModbusPlc plc;
     plc.setCoil(16000, true);
