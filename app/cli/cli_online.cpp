@@ -151,7 +151,7 @@ int connect(const Options &o, std::unique_ptr<comms::Driver> *driver, QTextStrea
     QString error;
     *driver =
         comms::Driver::create(*o.target, o.settings.protocol, comms::makeTransport(o.settings),
-                              o.settings.station, o.settings.link, &error);
+                              o.settings.station, comms::lineTiming(o.settings), &error);
     if (!*driver) {
         err << error << '\n';
         return 2;

@@ -31,6 +31,17 @@ ConnectionSettings defaultSettings(ProtocolKind protocol) {
     return s;
 }
 
+LinkSettings lineTiming(const ConnectionSettings &settings) {
+    LinkSettings link = settings.link;
+    if (settings.via == ConnectionSettings::Via::Serial)
+        link.characterUs = settings.serial.characterMicroseconds();
+    // A pseudo-terminal or a serial device server still ends at a real line somewhere; the
+    // gap costs at most 1.75 ms above 19200 bps (less than a character below it).
+    if (settings.protocol == ProtocolKind::ModbusRtu)
+        link.gapUs = settings.serial.rtuGapMicroseconds();
+    return link;
+}
+
 std::unique_ptr<Transport> makeTransport(const ConnectionSettings &settings) {
     switch (settings.via) {
     case ConnectionSettings::Via::Serial:

@@ -39,6 +39,10 @@ struct ConnectionSettings {
 // Each protocol's usual line settings and station (see above), on the given port.
 ConnectionSettings defaultSettings(ProtocolKind protocol);
 
+// The link settings with the line's timing: on a serial port the time per character, and
+// for Modbus RTU the 3.5-character silence before each request.
+LinkSettings lineTiming(const ConnectionSettings &settings);
+
 // A transport for the settings, not yet open. A TCP transport must be made and used on one
 // thread (QTcpSocket): the session calls this on its worker.
 std::unique_ptr<Transport> makeTransport(const ConnectionSettings &settings);

@@ -3,6 +3,9 @@
 #include <QCoreApplication>
 #include <QElapsedTimer>
 
+#include <chrono>
+#include <thread>
+
 namespace rung::comms {
 
 namespace {
@@ -34,12 +37,20 @@ void Link::cancel() {
 }
 
 bool Link::send(QByteArrayView bytes, QString *error) {
+    if (m_settings.gapUs > 0 && m_lastTraffic.isValid()) {
+        const qint64 quietUs = m_lastTraffic.nsecsElapsed() / 1000;
+        if (quietUs < m_settings.gapUs)
+            std::this_thread::sleep_for(std::chrono::microseconds(m_settings.gapUs - quietUs));
+    }
     m_tap->append(TrafficRecord::Direction::Sent, bytes);
     {
         std::lock_guard lock(m_statsMutex);
         m_stats.bytesSent += quint64(bytes.size());
     }
-    return m_transport->write(bytes, QDeadlineTimer(std::max(m_settings.timeoutMs, 100)), error);
+    const bool ok =
+        m_transport->write(bytes, QDeadlineTimer(std::max(m_settings.timeoutMs, 100)), error);
+    m_lastTraffic.start();
+    return ok;
 }
 
 void Link::drain() {
@@ -83,11 +94,17 @@ DriverError Link::exchange(QByteArrayView request, ReplySink &sink, const QStrin
         }
         if (!expectReply)
             return {};
-        const QDeadlineTimer deadline(m_settings.timeoutMs);
+        // The request takes its wire time to leave a serial port after write() returns.
+        const qint64 sendingMs =
+            (qint64(request.size()) * m_settings.characterUs + 999) / 1000;
+        QDeadlineTimer deadline(m_settings.timeoutMs + sendingMs);
         FrameStatus status = FrameStatus::NeedMore;
         while (status == FrameStatus::NeedMore) {
             ReadResult r = m_transport->read(deadline);
             if (r.status == R::Data) {
+                m_lastTraffic.start();
+                if (m_settings.characterUs > 0)
+                    deadline = QDeadlineTimer(m_settings.timeoutMs); // the next byte's wait
                 m_tap->append(TrafficRecord::Direction::Received, r.bytes);
                 {
                     std::lock_guard lock(m_statsMutex);

@@ -14,6 +14,7 @@
 #include "comms/protocol/protocol_error.h"
 #include "comms/transport/transport.h"
 
+#include <QElapsedTimer>
 #include <QList>
 
 #include <functional>
@@ -29,6 +30,14 @@ struct LinkSettings {
     // How long the line must stay quiet after a broken reply before the request goes again,
     // so that the rest of the broken reply is not taken for the next one.
     int drainMs = 20;
+    // A serial line's time per character (0: a pseudo-terminal or TCP, no baud rate). The
+    // first byte of a reply is awaited timeoutMs after the request has left the wire, and
+    // each next byte timeoutMs after the one before, so a long reply at a slow baud rate is
+    // not cut off by a timeout sized for a short one.
+    int characterUs = 0;
+    // The least silence between the end of one frame on the line and the next request
+    // (Modbus RTU: 3.5 characters, serial line V1.02 2.5.1.1); 0: none.
+    int gapUs = 0;
 };
 
 // Why an exchange, a read or a write did not succeed. The message is translated and complete:
@@ -130,6 +139,7 @@ private:
     mutable std::mutex m_statsMutex;
     LinkStatistics m_stats;
     quint64 m_goodExchanges = 0;
+    QElapsedTimer m_lastTraffic; // the last byte sent or received, for gapUs
 };
 
 } // namespace rung::comms

@@ -290,7 +290,7 @@ void OnlineSession::workerLoop() {
             QString error;
             auto transport = m_factory ? m_factory() : makeTransport(m_settings);
             driver = Driver::create(m_target, m_settings.protocol, std::move(transport),
-                                    m_settings.station, m_settings.link, &error);
+                                    m_settings.station, lineTiming(m_settings), &error);
             if (!driver) {
                 const QString text =
                     QCoreApplication::translate("rung::comms::Driver", "Cannot connect to %1: %2")

@@ -9,6 +9,7 @@
 
 #include "comms/transport/transport.h"
 
+#include <QElapsedTimer>
 #include <QList>
 
 #include <condition_variable>
@@ -68,6 +69,11 @@ public:
         std::lock_guard lock(m_mutex);
         return m_written;
     }
+    // When each write came, in ms since the transport was made.
+    QList<double> writeTimes() const {
+        std::lock_guard lock(m_mutex);
+        return m_writeTimes;
+    }
     int writes() const {
         std::lock_guard lock(m_mutex);
         return int(m_written.size());
@@ -105,6 +111,7 @@ public:
         std::lock_guard lock(m_mutex);
         m_open = false;
         m_pending.clear();
+        m_releaseAt.clear();
     }
     bool isOpen() const override {
         std::lock_guard lock(m_mutex);
@@ -118,6 +125,7 @@ public:
             return false;
         }
         m_written << bytes.toByteArray();
+        m_writeTimes << double(m_clock.nsecsElapsed()) / 1e6;
         // A lone CR is the Host Link delimiter that asks for a reply's next part: the part is
         // already queued.
         if (bytes == QByteArrayView("\r", 1) && m_delimiterParts)
@@ -137,8 +145,12 @@ public:
         } else {
             step.action = Step::Action::Silence;
         }
-        for (const QByteArray &c : step.chunks)
+        double at = double(m_clock.nsecsElapsed()) / 1e6;
+        for (const QByteArray &c : step.chunks) {
+            at += m_chunkDelayMs;
             m_pending.push_back(c);
+            m_releaseAt.push_back(at);
+        }
         m_vanishAfter = step.action == Step::Action::Vanish;
         m_wake.notify_all();
         return true;
@@ -150,12 +162,14 @@ public:
                 return {ReadResult::Status::Failed,
                         {},
                         QStringLiteral("%1 is gone (unplugged)").arg(m_name)};
-            if (!m_pending.empty()) {
+            const double now = double(m_clock.nsecsElapsed()) / 1e6;
+            if (!m_pending.empty() && m_releaseAt.front() <= now) {
                 ReadResult r{ReadResult::Status::Data, m_pending.front(), {}};
                 m_pending.pop_front();
+                m_releaseAt.pop_front();
                 return r;
             }
-            if (m_vanishAfter) {
+            if (m_vanishAfter && m_pending.empty()) {
                 m_vanishAfter = false;
                 m_gone = true;
                 m_open = false;
@@ -174,11 +188,17 @@ public:
     void discardInput() override {
         std::lock_guard lock(m_mutex);
         m_pending.clear();
+        m_releaseAt.clear();
     }
     void cancel() override {
         std::lock_guard lock(m_mutex);
         m_cancel = true;
         m_wake.notify_all();
+    }
+    // Each chunk of a reply comes this long after the one before (a slow line); 0: at once.
+    void setChunkDelayMs(int ms) {
+        std::lock_guard lock(m_mutex);
+        m_chunkDelayMs = ms;
     }
     // Host Link replies in parts: the chunks after a part that ends in CR without "*" are
     // released by the host's delimiter. Tests of split replies queue them all at once.
@@ -199,7 +219,15 @@ private:
     std::deque<Step> m_script;
     Responder m_responder;
     std::deque<QByteArray> m_pending;
+    std::deque<double> m_releaseAt; // ms on m_clock when each pending chunk may be read
+    int m_chunkDelayMs = 0;
     QList<QByteArray> m_written;
+    QList<double> m_writeTimes;
+    QElapsedTimer m_clock = [] {
+        QElapsedTimer t;
+        t.start();
+        return t;
+    }();
     QString m_mismatch;
     QString m_openError;
     int m_failOpens = 0;

@@ -5,6 +5,7 @@
 #include "comms/protocol/host_link.h"
 #include "comms/protocol/modbus.h"
 #include "comms/protocol/vigor_link.h"
+#include "comms/driver/connection.h"
 #include "tests/comms/driver_fixture.h"
 #include "tests/comms/hex.h"
 
@@ -283,6 +284,54 @@ TEST(DriverFaults, ASetValueInTheProgramCannotBeWrittenAndSaysWhy) {
     EXPECT_TRUE(e.message.contains(QLatin1String("constant of the program")))
         << e.message.toStdString();
     EXPECT_EQ(f.port->writes(), 0);
+}
+
+TEST(DriverFaults, ModbusRtuLeavesTheLineQuietBeforeEachRequest) {
+    // 3.5 characters at 1200 bps 8N1 (8.3 ms a character): 29 ms between the end of a reply
+    // and the next request, so a slave sees where the frame starts.
+    ConnectionSettings s = defaultSettings(ProtocolKind::ModbusRtu);
+    s.serial.baud = 1200;
+    const LinkSettings timing = lineTiming(s);
+    EXPECT_EQ(timing.gapUs, s.serial.rtuGapMicroseconds());
+    EXPECT_GT(timing.gapUs, 28000);
+    FakeDriver f(Family::Pl110, ProtocolKind::ModbusRtu, 1, timing);
+    f.port->reply(modbus::rtuFrame(1, bytes("03 07 D1 00 01")),
+                  modbus::rtuFrame(1, bytes("03 02 00 01")));
+    f.port->reply(modbus::rtuFrame(1, bytes("03 07 D1 00 01")),
+                  modbus::rtuFrame(1, bytes("03 02 00 02")));
+    DriverError e;
+    EXPECT_EQ(f.read({"V1"}, &e), std::vector<qint64>{1});
+    EXPECT_EQ(f.read({"V1"}, &e), std::vector<qint64>{2});
+    const auto times = f.port->writeTimes();
+    ASSERT_EQ(times.size(), 2);
+    EXPECT_GE(times[1] - times[0], timing.gapUs / 1000.0);
+}
+
+TEST(DriverFaults, ALongReplyOnASlowLineIsNotCutOffByTheTimeout) {
+    // On a serial line (characterUs set) each byte of a reply is awaited timeoutMs after the
+    // one before: a reply that trickles in 6 pieces 25 ms apart (150 ms in all) is read whole
+    // with a 40 ms timeout.
+    LinkSettings slow{40, 0, 5};
+    slow.characterUs = 33333; // 300 bps
+    FakeDriver f(Family::Vigor, ProtocolKind::VigorLink, 0, slow);
+    f.port->setChunkDelayMs(25);
+    const vigor::Request r{0, vigor::Command::Read, 0x1C00, 4, {}};
+    const QByteArray reply = vigor::encodeReply({0, vigor::Command::Read, 0, QByteArray(4, 7)});
+    QList<QByteArray> chunks;
+    for (qsizetype at = 0; at < reply.size(); at += 3)
+        chunks << reply.mid(at, 3);
+    ASSERT_EQ(chunks.size(), 6);
+    f.port->reply(vigor::encodeRequest(r), chunks);
+    DriverError e;
+    EXPECT_EQ(f.read({"D0", "D1"}, &e), (std::vector<qint64>{0x0707, 0x0707}));
+    EXPECT_TRUE(e.ok()) << e.message.toStdString();
+    // Without a baud rate (a pty, TCP) the timeout is for the whole reply: it stops.
+    FakeDriver g(Family::Vigor, ProtocolKind::VigorLink, 0, {40, 0, 5});
+    g.port->setChunkDelayMs(25);
+    g.port->reply(vigor::encodeRequest(r), chunks);
+    g.read({"D0", "D1"}, &e);
+    EXPECT_EQ(e.kind, EK::NoReply);
+    EXPECT_TRUE(e.message.contains(QLatin1String("the reply stopped"))) << e.message.toStdString();
 }
 
 TEST(DriverFaults, TheTrafficTapSeesEveryByteBothWaysInOrder) {
