@@ -1,6 +1,7 @@
 #include "cli.h"
 
 #include "cli_common.h"
+#include "cli_online.h"
 #include "cli_serve.h"
 #include "cli_simulate.h"
 
@@ -36,7 +37,8 @@ QString usage() {
                   "[--station N] [--baud B] [--period MS]\n"
                   "FILE is a listing (.il), a ladder text (.ladder) or a project (.rung).\n"
                   "--lang en|hu|it: the language of the messages (else the locale's, LANG).\n"
-                  "Exit status: 0 no error, 1 the program has errors, 2 usage or I/O error.");
+                  "Exit status: 0 no error, 1 the program has errors, 2 usage or I/O error.") +
+           QLatin1Char('\n') + onlineUsage();
 }
 
 int check(const QStringList &args, QTextStream &out, QTextStream &err) {
@@ -189,6 +191,10 @@ int runCli(const QStringList &arguments, QTextStream &out, QTextStream &err) {
         return runSimulateCommand(args, out, err);
     if (command == QLatin1String("serve"))
         return runServeCommand(args, out, err);
+    if (command == QLatin1String("read"))
+        return runReadCommand(args, out, err);
+    if (command == QLatin1String("write"))
+        return runWriteCommand(args, out, err);
     if (command == QLatin1String("--help") || command == QLatin1String("-h") ||
         command == QLatin1String("help")) {
         out << usage() << '\n';
