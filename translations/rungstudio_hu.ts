@@ -42,7 +42,7 @@
 <context>
     <name>rung::app::Cli</name>
     <message>
-        <location filename="../app/cli/cli.cpp" line="+49"/>
+        <location filename="../app/cli/cli.cpp" line="+52"/>
         <location line="+45"/>
         <source>unexpected argument %1</source>
         <translation>váratlan argumentum: %1</translation>
@@ -53,7 +53,7 @@
         <translation>a --to értéke il, ladder vagy project lehet</translation>
     </message>
     <message>
-        <location line="-73"/>
+        <location line="-74"/>
         <source>usage:
   rungstudio-cli check FILE [--target vpc|vigor|cpm1|pl110] [--model M]
   rungstudio-cli convert FILE [--target T] [--from il|ladder|project] --to il|ladder|project [-o OUT] [--force]
@@ -72,7 +72,7 @@ A FILE utasításlista (.il), létra-szöveg (.ladder) vagy projekt (.rung).
 Kilépési kód: 0 nincs hiba, 1 a programban hiba van, 2 használati vagy I/O hiba.</translation>
     </message>
     <message>
-        <location line="+89"/>
+        <location line="+90"/>
         <source>nothing written: the list as typed would be lost</source>
         <translation>semmi sem íródott ki: a begépelt lista elveszne</translation>
     </message>
@@ -97,7 +97,7 @@ Kilépési kód: 0 nincs hiba, 1 a programban hiba van, 2 használati vagy I/O h
         <translation>%1 nem írható: %2</translation>
     </message>
     <message>
-        <location line="+32"/>
+        <location line="+38"/>
         <source>no command given</source>
         <translation>nincs megadva parancs</translation>
     </message>
@@ -1051,12 +1051,12 @@ Létradiagram- és utasításlista-szerkesztő VPC, Vigor, CPM1 és PL110 PLC-kh
 <context>
     <name>rung::app::Online</name>
     <message>
-        <location filename="../app/cli/cli_online.cpp" line="+21"/>
+        <location filename="../app/cli/cli_online.cpp" line="+20"/>
         <source>usage:</source>
         <translation>használat:</translation>
     </message>
     <message>
-        <location line="+40"/>
+        <location line="+24"/>
         <source>%1 needs a value</source>
         <translation>%1 után érték kell</translation>
     </message>
@@ -1201,6 +1201,81 @@ A read és a write kilépési kódja: 0 kész, 1 a PLC nem válaszolt vagy eluta
     </message>
 </context>
 <context>
+    <name>rung::app::Record</name>
+    <message>
+        <location filename="../app/cli/cli_record.cpp" line="+41"/>
+        <source>  rungstudio-cli record --pc PORT --plc PORT [--baud B] [--frame 8N1] [-o FILE]
+        [--seconds S]   (PORT: a serial port, a /dev/pts path, or pty for a new one)</source>
+        <translation>  rungstudio-cli record --pc PORT --plc PORT [--baud B] [--frame 8N1] [-o FILE]
+        [--seconds S]   (PORT: soros port, /dev/pts útvonal, vagy pty egy újhoz)</translation>
+    </message>
+    <message>
+        <location line="+8"/>
+        <source>usage:</source>
+        <translation>használat:</translation>
+    </message>
+    <message>
+        <location line="+14"/>
+        <source>%1 needs a value</source>
+        <translation>%1 után érték kell</translation>
+    </message>
+    <message>
+        <location line="+5"/>
+        <source>unexpected argument %1</source>
+        <translation>váratlan argumentum: %1</translation>
+    </message>
+    <message>
+        <location line="+3"/>
+        <source>--pc and --plc are needed: the two ports to join</source>
+        <translation>a --pc és a --plc kell: az összekötendő két port</translation>
+    </message>
+    <message>
+        <location line="+6"/>
+        <source>--baud must be a number from 50 to 4000000; got %1</source>
+        <translation>a --baud 50 és 4000000 közötti szám legyen; kapott érték: %1</translation>
+    </message>
+    <message>
+        <location line="+4"/>
+        <source>--frame must be data bits, parity and stop bits, e.g. 8N1 or 7E2; got %1</source>
+        <translation>a --frame adatbitek, paritás és stopbitek megadása, pl. 8N1 vagy 7E2; kapott érték: %1</translation>
+    </message>
+    <message>
+        <location line="+7"/>
+        <source>--seconds must be a positive number; got %1</source>
+        <translation>a --seconds pozitív szám legyen; kapott érték: %1</translation>
+    </message>
+    <message>
+        <location line="+6"/>
+        <source>the PC&apos;s side: %1</source>
+        <translation>a PC oldala: %1</translation>
+    </message>
+    <message>
+        <location line="+5"/>
+        <source>the PLC&apos;s side: %1</source>
+        <translation>a PLC oldala: %1</translation>
+    </message>
+    <message>
+        <location line="+10"/>
+        <source>cannot write %1: %2</source>
+        <translation>%1 nem írható: %2</translation>
+    </message>
+    <message>
+        <location line="+30"/>
+        <source>Passing bytes between %1 (PC) and %2 (PLC); stop with Ctrl+C</source>
+        <translation>Bájtok továbbítása %1 (PC) és %2 (PLC) között; leállítás: Ctrl+C</translation>
+    </message>
+    <message>
+        <location line="+34"/>
+        <source>%1 bytes from the PC, %2 bytes from the PLC, in %3 records</source>
+        <translation>%1 bájt a PC-től, %2 bájt a PLC-től, %3 bejegyzésben</translation>
+    </message>
+    <message>
+        <location line="+6"/>
+        <source>%1 records were lost: the capture was not written as fast as they came</source>
+        <translation>%1 bejegyzés elveszett: a felvétel írása nem tartott lépést az érkezésükkel</translation>
+    </message>
+</context>
+<context>
     <name>rung::app::RecoveryFile</name>
     <message>
         <location filename="../app/gui/recovery.cpp" line="+80"/>
@@ -1222,11 +1297,11 @@ A read és a write kilépési kódja: 0 kész, 1 a PLC nem válaszolt vagy eluta
     <name>rung::app::Serve</name>
     <message>
         <location filename="../app/cli/cli_serve.cpp" line="+28"/>
-        <source>usage: rungstudio-cli serve FILE [--target T] [--model M] --protocol vigor|modbus|modbus-tcp|hostlink (--pty | --port NAME | --tcp HOST:PORT) [--station N] [--baud B] [--format 8N1|7E1|7E2|...] [--period MS] [--fault bad-checksum|silent|wrong-station|garbage|truncated|split]</source>
-        <translation>használat: rungstudio-cli serve FILE [--target T] [--model M] --protocol vigor|modbus|modbus-tcp|hostlink (--pty | --port NAME | --tcp HOST:PORT) [--station N] [--baud B] [--format 8N1|7E1|7E2|...] [--period MS] [--fault bad-checksum|silent|wrong-station|garbage|truncated|split]</translation>
+        <source>usage: rungstudio-cli serve FILE [--target T] [--model M] --protocol vigor|modbus|modbus-tcp|hostlink (--pty | --port NAME | --tcp HOST:PORT) [--station N] [--baud B] [--frame 8N1|7E1|7E2|...] [--period MS] [--fault bad-checksum|silent|wrong-station|garbage|truncated|split]</source>
+        <translation>használat: rungstudio-cli serve FILE [--target T] [--model M] --protocol vigor|modbus|modbus-tcp|hostlink (--pty | --port NAME | --tcp HOST:PORT) [--station N] [--baud B] [--frame 8N1|7E1|7E2|...] [--period MS] [--fault bad-checksum|silent|wrong-station|garbage|truncated|split]</translation>
     </message>
     <message>
-        <location line="+133"/>
+        <location line="+111"/>
         <source>unexpected argument %1</source>
         <translation>váratlan argumentum: %1</translation>
     </message>
@@ -1267,8 +1342,8 @@ A read és a write kilépési kódja: 0 kész, 1 a PLC nem válaszolt vagy eluta
     </message>
     <message>
         <location line="+12"/>
-        <source>--format needs data bits, parity and stop bits, e.g. 8N1 or 7E2, not %1</source>
-        <translation>a --format adatbitet, paritást és stopbitet vár, pl. 8N1 vagy 7E2, nem ezt: %1</translation>
+        <source>--frame needs data bits, parity and stop bits, e.g. 8N1 or 7E2, not %1</source>
+        <translation>a --frame adatbitet, paritást és stopbitet vár, pl. 8N1 vagy 7E2, nem ezt: %1</translation>
     </message>
     <message>
         <location line="+5"/>
@@ -1431,6 +1506,56 @@ A read és a write kilépési kódja: 0 kész, 1 a PLC nem válaszolt vagy eluta
         <location line="+17"/>
         <source>%1, line %2: %3</source>
         <translation>%1, %2. sor: %3</translation>
+    </message>
+</context>
+<context>
+    <name>rung::app::Terminal</name>
+    <message>
+        <location filename="../app/cli/cli_terminal.cpp" line="+93"/>
+        <source>  rungstudio-cli terminal --port PORT [--baud B] [--frame 8N1] [--wait MS]
+        (each line of stdin: hex bytes, &quot;text\r&quot;, or a capture line)</source>
+        <translation>  rungstudio-cli terminal --port PORT [--baud B] [--frame 8N1] [--wait MS]
+        (a szabványos bemenet minden sora: hexa bájtok, &quot;szöveg\r&quot; vagy egy felvétel sora)</translation>
+    </message>
+    <message>
+        <location line="+8"/>
+        <source>usage:</source>
+        <translation>használat:</translation>
+    </message>
+    <message>
+        <location line="+14"/>
+        <source>%1 needs a value</source>
+        <translation>%1 után érték kell</translation>
+    </message>
+    <message>
+        <location line="+5"/>
+        <source>unexpected argument %1</source>
+        <translation>váratlan argumentum: %1</translation>
+    </message>
+    <message>
+        <location line="+3"/>
+        <source>--port is needed</source>
+        <translation>a --port kell</translation>
+    </message>
+    <message>
+        <location line="+6"/>
+        <source>--baud must be a number from 50 to 4000000; got %1</source>
+        <translation>a --baud 50 és 4000000 közötti szám legyen; kapott érték: %1</translation>
+    </message>
+    <message>
+        <location line="+4"/>
+        <source>--frame must be data bits, parity and stop bits, e.g. 8N1 or 7E2; got %1</source>
+        <translation>a --frame adatbitek, paritás és stopbitek megadása, pl. 8N1 vagy 7E2; kapott érték: %1</translation>
+    </message>
+    <message>
+        <location line="+7"/>
+        <source>--wait must be a number from 1 to 60000; got %1</source>
+        <translation>a --wait 1 és 60000 közötti szám legyen; kapott érték: %1</translation>
+    </message>
+    <message>
+        <location line="+38"/>
+        <source>line %1: &quot;%2&quot; is neither hex bytes (02 30 31), a quoted text (&quot;@00RD\r&quot;) nor a capture line</source>
+        <translation>%1. sor: „%2” nem hexa bájtok (02 30 31), nem idézőjeles szöveg (&quot;@00RD\r&quot;) és nem is egy felvétel sora</translation>
     </message>
 </context>
 <context>
@@ -2237,6 +2362,38 @@ A read és a write kilépési kódja: 0 kész, 1 a PLC nem válaszolt vagy eluta
         <location line="+124"/>
         <source>A TCP client was refused: %1 clients are served already</source>
         <translation>Egy TCP-kliens elutasítva: már %1 kliens kiszolgálása folyik</translation>
+    </message>
+</context>
+<context>
+    <name>rung::comms::Relay</name>
+    <message>
+        <location filename="../comms/driver/relay.cpp" line="+35"/>
+        <location line="+13"/>
+        <location line="+5"/>
+        <source>the PC&apos;s side</source>
+        <translation>a PC oldala</translation>
+    </message>
+    <message>
+        <location line="-18"/>
+        <location line="+14"/>
+        <location line="+3"/>
+        <source>the PLC&apos;s side</source>
+        <translation>a PLC oldala</translation>
+    </message>
+    <message>
+        <location line="-13"/>
+        <source>%1 (%2) cannot be opened: %3</source>
+        <translation>%1 (%2) nem nyitható meg: %3</translation>
+    </message>
+    <message>
+        <location line="+61"/>
+        <source>%1 (%2) stopped taking bytes: %3</source>
+        <translation>%1 (%2) nem fogad több bájtot: %3</translation>
+    </message>
+    <message>
+        <location line="+6"/>
+        <source>%1 (%2) failed: %3</source>
+        <translation>%1 (%2) hibára futott: %3</translation>
     </message>
 </context>
 <context>

@@ -42,7 +42,7 @@
 <context>
     <name>rung::app::Cli</name>
     <message>
-        <location filename="../app/cli/cli.cpp" line="+49"/>
+        <location filename="../app/cli/cli.cpp" line="+52"/>
         <location line="+45"/>
         <source>unexpected argument %1</source>
         <translation>argomento non previsto: %1</translation>
@@ -53,7 +53,7 @@
         <translation>--to deve essere il, ladder o project</translation>
     </message>
     <message>
-        <location line="-73"/>
+        <location line="-74"/>
         <source>usage:
   rungstudio-cli check FILE [--target vpc|vigor|cpm1|pl110] [--model M]
   rungstudio-cli convert FILE [--target T] [--from il|ladder|project] --to il|ladder|project [-o OUT] [--force]
@@ -72,7 +72,7 @@ FILE è una lista istruzioni (.il), un testo ladder (.ladder) o un progetto (.ru
 Codice di uscita: 0 nessun errore, 1 il programma contiene errori, 2 errore di utilizzo o di I/O.</translation>
     </message>
     <message>
-        <location line="+89"/>
+        <location line="+90"/>
         <source>nothing written: the list as typed would be lost</source>
         <translation>non è stato scritto nulla: la lista digitata andrebbe persa</translation>
     </message>
@@ -97,7 +97,7 @@ Codice di uscita: 0 nessun errore, 1 il programma contiene errori, 2 errore di u
         <translation>impossibile scrivere %1: %2</translation>
     </message>
     <message>
-        <location line="+32"/>
+        <location line="+38"/>
         <source>no command given</source>
         <translation>nessun comando specificato</translation>
     </message>
@@ -1055,12 +1055,12 @@ Editor di schemi ladder e liste istruzioni per VPC, Vigor, CPM1 e PL110.</transl
 <context>
     <name>rung::app::Online</name>
     <message>
-        <location filename="../app/cli/cli_online.cpp" line="+21"/>
+        <location filename="../app/cli/cli_online.cpp" line="+20"/>
         <source>usage:</source>
         <translation>uso:</translation>
     </message>
     <message>
-        <location line="+40"/>
+        <location line="+24"/>
         <source>%1 needs a value</source>
         <translation>%1 richiede un valore</translation>
     </message>
@@ -1205,6 +1205,81 @@ Codice di uscita di read e write: 0 fatto, 1 il PLC non ha risposto o ha rifiuta
     </message>
 </context>
 <context>
+    <name>rung::app::Record</name>
+    <message>
+        <location filename="../app/cli/cli_record.cpp" line="+41"/>
+        <source>  rungstudio-cli record --pc PORT --plc PORT [--baud B] [--frame 8N1] [-o FILE]
+        [--seconds S]   (PORT: a serial port, a /dev/pts path, or pty for a new one)</source>
+        <translation>  rungstudio-cli record --pc PORT --plc PORT [--baud B] [--frame 8N1] [-o FILE]
+        [--seconds S]   (PORT: una porta seriale, un percorso /dev/pts, o pty per uno nuovo)</translation>
+    </message>
+    <message>
+        <location line="+8"/>
+        <source>usage:</source>
+        <translation>uso:</translation>
+    </message>
+    <message>
+        <location line="+14"/>
+        <source>%1 needs a value</source>
+        <translation>%1 richiede un valore</translation>
+    </message>
+    <message>
+        <location line="+5"/>
+        <source>unexpected argument %1</source>
+        <translation>argomento inatteso %1</translation>
+    </message>
+    <message>
+        <location line="+3"/>
+        <source>--pc and --plc are needed: the two ports to join</source>
+        <translation>servono --pc e --plc: le due porte da collegare</translation>
+    </message>
+    <message>
+        <location line="+6"/>
+        <source>--baud must be a number from 50 to 4000000; got %1</source>
+        <translation>--baud deve essere un numero da 50 a 4000000; ricevuto %1</translation>
+    </message>
+    <message>
+        <location line="+4"/>
+        <source>--frame must be data bits, parity and stop bits, e.g. 8N1 or 7E2; got %1</source>
+        <translation>--frame indica bit di dati, parità e bit di stop, ad es. 8N1 o 7E2; ricevuto %1</translation>
+    </message>
+    <message>
+        <location line="+7"/>
+        <source>--seconds must be a positive number; got %1</source>
+        <translation>--seconds deve essere un numero positivo; ricevuto %1</translation>
+    </message>
+    <message>
+        <location line="+6"/>
+        <source>the PC&apos;s side: %1</source>
+        <translation>lato PC: %1</translation>
+    </message>
+    <message>
+        <location line="+5"/>
+        <source>the PLC&apos;s side: %1</source>
+        <translation>lato PLC: %1</translation>
+    </message>
+    <message>
+        <location line="+10"/>
+        <source>cannot write %1: %2</source>
+        <translation>impossibile scrivere %1: %2</translation>
+    </message>
+    <message>
+        <location line="+30"/>
+        <source>Passing bytes between %1 (PC) and %2 (PLC); stop with Ctrl+C</source>
+        <translation>Inoltro dei byte tra %1 (PC) e %2 (PLC); fermare con Ctrl+C</translation>
+    </message>
+    <message>
+        <location line="+34"/>
+        <source>%1 bytes from the PC, %2 bytes from the PLC, in %3 records</source>
+        <translation>%1 byte dal PC, %2 byte dal PLC, in %3 registrazioni</translation>
+    </message>
+    <message>
+        <location line="+6"/>
+        <source>%1 records were lost: the capture was not written as fast as they came</source>
+        <translation>%1 registrazioni perse: la cattura non è stata scritta alla velocità con cui arrivavano</translation>
+    </message>
+</context>
+<context>
     <name>rung::app::RecoveryFile</name>
     <message>
         <location filename="../app/gui/recovery.cpp" line="+80"/>
@@ -1226,11 +1301,11 @@ Codice di uscita di read e write: 0 fatto, 1 il PLC non ha risposto o ha rifiuta
     <name>rung::app::Serve</name>
     <message>
         <location filename="../app/cli/cli_serve.cpp" line="+28"/>
-        <source>usage: rungstudio-cli serve FILE [--target T] [--model M] --protocol vigor|modbus|modbus-tcp|hostlink (--pty | --port NAME | --tcp HOST:PORT) [--station N] [--baud B] [--format 8N1|7E1|7E2|...] [--period MS] [--fault bad-checksum|silent|wrong-station|garbage|truncated|split]</source>
-        <translation>uso: rungstudio-cli serve FILE [--target T] [--model M] --protocol vigor|modbus|modbus-tcp|hostlink (--pty | --port NAME | --tcp HOST:PORT) [--station N] [--baud B] [--format 8N1|7E1|7E2|...] [--period MS] [--fault bad-checksum|silent|wrong-station|garbage|truncated|split]</translation>
+        <source>usage: rungstudio-cli serve FILE [--target T] [--model M] --protocol vigor|modbus|modbus-tcp|hostlink (--pty | --port NAME | --tcp HOST:PORT) [--station N] [--baud B] [--frame 8N1|7E1|7E2|...] [--period MS] [--fault bad-checksum|silent|wrong-station|garbage|truncated|split]</source>
+        <translation>uso: rungstudio-cli serve FILE [--target T] [--model M] --protocol vigor|modbus|modbus-tcp|hostlink (--pty | --port NAME | --tcp HOST:PORT) [--station N] [--baud B] [--frame 8N1|7E1|7E2|...] [--period MS] [--fault bad-checksum|silent|wrong-station|garbage|truncated|split]</translation>
     </message>
     <message>
-        <location line="+133"/>
+        <location line="+111"/>
         <source>unexpected argument %1</source>
         <translation>argomento inatteso %1</translation>
     </message>
@@ -1271,8 +1346,8 @@ Codice di uscita di read e write: 0 fatto, 1 il PLC non ha risposto o ha rifiuta
     </message>
     <message>
         <location line="+12"/>
-        <source>--format needs data bits, parity and stop bits, e.g. 8N1 or 7E2, not %1</source>
-        <translation>--format richiede bit di dati, parità e bit di stop, ad es. 8N1 o 7E2, non %1</translation>
+        <source>--frame needs data bits, parity and stop bits, e.g. 8N1 or 7E2, not %1</source>
+        <translation>--frame richiede bit di dati, parità e bit di stop, ad es. 8N1 o 7E2, non %1</translation>
     </message>
     <message>
         <location line="+5"/>
@@ -1436,6 +1511,56 @@ Codice di uscita di read e write: 0 fatto, 1 il PLC non ha risposto o ha rifiuta
         <location line="+17"/>
         <source>%1, line %2: %3</source>
         <translation>%1, riga %2: %3</translation>
+    </message>
+</context>
+<context>
+    <name>rung::app::Terminal</name>
+    <message>
+        <location filename="../app/cli/cli_terminal.cpp" line="+93"/>
+        <source>  rungstudio-cli terminal --port PORT [--baud B] [--frame 8N1] [--wait MS]
+        (each line of stdin: hex bytes, &quot;text\r&quot;, or a capture line)</source>
+        <translation>  rungstudio-cli terminal --port PORT [--baud B] [--frame 8N1] [--wait MS]
+        (ogni riga dello standard input: byte esadecimali, &quot;testo\r&quot; o una riga di una cattura)</translation>
+    </message>
+    <message>
+        <location line="+8"/>
+        <source>usage:</source>
+        <translation>uso:</translation>
+    </message>
+    <message>
+        <location line="+14"/>
+        <source>%1 needs a value</source>
+        <translation>%1 richiede un valore</translation>
+    </message>
+    <message>
+        <location line="+5"/>
+        <source>unexpected argument %1</source>
+        <translation>argomento inatteso %1</translation>
+    </message>
+    <message>
+        <location line="+3"/>
+        <source>--port is needed</source>
+        <translation>serve --port</translation>
+    </message>
+    <message>
+        <location line="+6"/>
+        <source>--baud must be a number from 50 to 4000000; got %1</source>
+        <translation>--baud deve essere un numero da 50 a 4000000; ricevuto %1</translation>
+    </message>
+    <message>
+        <location line="+4"/>
+        <source>--frame must be data bits, parity and stop bits, e.g. 8N1 or 7E2; got %1</source>
+        <translation>--frame indica bit di dati, parità e bit di stop, ad es. 8N1 o 7E2; ricevuto %1</translation>
+    </message>
+    <message>
+        <location line="+7"/>
+        <source>--wait must be a number from 1 to 60000; got %1</source>
+        <translation>--wait deve essere un numero da 1 a 60000; ricevuto %1</translation>
+    </message>
+    <message>
+        <location line="+38"/>
+        <source>line %1: &quot;%2&quot; is neither hex bytes (02 30 31), a quoted text (&quot;@00RD\r&quot;) nor a capture line</source>
+        <translation>riga %1: &quot;%2&quot; non è né byte esadecimali (02 30 31), né un testo tra virgolette (&quot;@00RD\r&quot;), né una riga di una cattura</translation>
     </message>
 </context>
 <context>
@@ -2242,6 +2367,38 @@ Codice di uscita di read e write: 0 fatto, 1 il PLC non ha risposto o ha rifiuta
         <location line="+124"/>
         <source>A TCP client was refused: %1 clients are served already</source>
         <translation>Un client TCP è stato rifiutato: sono già serviti %1 client</translation>
+    </message>
+</context>
+<context>
+    <name>rung::comms::Relay</name>
+    <message>
+        <location filename="../comms/driver/relay.cpp" line="+35"/>
+        <location line="+13"/>
+        <location line="+5"/>
+        <source>the PC&apos;s side</source>
+        <translation>il lato PC</translation>
+    </message>
+    <message>
+        <location line="-18"/>
+        <location line="+14"/>
+        <location line="+3"/>
+        <source>the PLC&apos;s side</source>
+        <translation>il lato PLC</translation>
+    </message>
+    <message>
+        <location line="-13"/>
+        <source>%1 (%2) cannot be opened: %3</source>
+        <translation>impossibile aprire %1 (%2): %3</translation>
+    </message>
+    <message>
+        <location line="+61"/>
+        <source>%1 (%2) stopped taking bytes: %3</source>
+        <translation>%1 (%2) non accetta più byte: %3</translation>
+    </message>
+    <message>
+        <location line="+6"/>
+        <source>%1 (%2) failed: %3</source>
+        <translation>%1 (%2) non funziona più: %3</translation>
     </message>
 </context>
 <context>

@@ -2,8 +2,10 @@
 
 #include "cli_common.h"
 #include "cli_online.h"
+#include "cli_record.h"
 #include "cli_serve.h"
 #include "cli_simulate.h"
+#include "cli_terminal.h"
 
 #include "model/checks/checks.h"
 #include "model/convert/convert.h"
@@ -38,7 +40,8 @@ QString usage() {
                   "FILE is a listing (.il), a ladder text (.ladder) or a project (.rung).\n"
                   "--lang en|hu|it: the language of the messages (else the locale's, LANG).\n"
                   "Exit status: 0 no error, 1 the program has errors, 2 usage or I/O error.") +
-           QLatin1Char('\n') + onlineUsage();
+           QLatin1Char('\n') + onlineUsage() + QLatin1Char('\n') + recordUsage() +
+           QLatin1Char('\n') + terminalUsage();
 }
 
 int check(const QStringList &args, QTextStream &out, QTextStream &err) {
@@ -191,6 +194,12 @@ int runCli(const QStringList &arguments, QTextStream &out, QTextStream &err) {
         return runSimulateCommand(args, out, err);
     if (command == QLatin1String("serve"))
         return runServeCommand(args, out, err);
+    if (command == QLatin1String("record"))
+        return runRecordCommand(args, out, err);
+    if (command == QLatin1String("terminal")) {
+        QTextStream in(stdin);
+        return runTerminalCommand(args, in, out, err);
+    }
     if (command == QLatin1String("read"))
         return runReadCommand(args, out, err);
     if (command == QLatin1String("write"))

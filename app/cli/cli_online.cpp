@@ -7,7 +7,6 @@
 #include "model/target/target.h"
 
 #include <QCoreApplication>
-#include <QRegularExpression>
 
 namespace rung::app {
 
@@ -26,22 +25,6 @@ struct Options {
     comms::ConnectionSettings settings;
     QStringList items; // devices, or DEVICE=VALUE
 };
-
-// "8N1", "7E2": data bits, parity, stop bits, as the PL110 manual lists the frame formats.
-bool parseFrame(const QString &text, comms::SerialSettings *serial) {
-    static const QRegularExpression re(QStringLiteral("^([78])([NOE])([12])$"),
-                                       QRegularExpression::CaseInsensitiveOption);
-    const auto m = re.match(text);
-    if (!m.hasMatch())
-        return false;
-    serial->dataBits = m.captured(1).toInt();
-    const QChar p = m.captured(2).toUpper().at(0);
-    serial->parity = p == u'N'   ? comms::SerialSettings::Parity::None
-                     : p == u'O' ? comms::SerialSettings::Parity::Odd
-                                 : comms::SerialSettings::Parity::Even;
-    serial->stopBits = m.captured(3).toInt();
-    return true;
-}
 
 bool parseOptions(const QStringList &args, Options *o, QString *error) {
     QString targetId, protocol, port, tcp, pty, station, baud, frame, timeout, retries;
@@ -134,7 +117,7 @@ bool parseOptions(const QStringList &args, Options *o, QString *error) {
         !number(timeout, "--timeout", 10, 60000, &o->settings.link.timeoutMs) ||
         !number(retries, "--retries", 0, 10, &o->settings.link.retries))
         return false;
-    if (!frame.isEmpty() && !parseFrame(frame, &o->settings.serial)) {
+    if (!frame.isEmpty() && !comms::parseFrameFormat(frame, &o->settings.serial)) {
         *error = Tr::tr("--frame must be data bits, parity and stop bits, e.g. 8N1 or 7E2; got %1")
                      .arg(frame);
         return false;

@@ -27,7 +27,7 @@ using comms::slave::Fault;
 QString usage() {
     return Tr::tr("usage: rungstudio-cli serve FILE [--target T] [--model M] --protocol "
                   "vigor|modbus|modbus-tcp|hostlink (--pty | --port NAME | --tcp HOST:PORT) "
-                  "[--station N] [--baud B] [--format 8N1|7E1|7E2|...] [--period MS] "
+                  "[--station N] [--baud B] [--frame 8N1|7E1|7E2|...] [--period MS] "
                   "[--fault bad-checksum|silent|wrong-station|garbage|truncated|split]");
 }
 
@@ -73,28 +73,6 @@ const ProtocolChoice kProtocols[] = {
      31,
      {9600, 7, SerialSettings::Parity::Even, 2, SerialSettings::Flow::None}},
 };
-
-// "8N1", "7E2": data bits, parity (N, E, O), stop bits.
-bool parseFormat(const QString &text, SerialSettings *line) {
-    if (text.size() != 3)
-        return false;
-    const int data = text[0].digitValue();
-    const QChar parity = text[1].toUpper();
-    const int stop = text[2].digitValue();
-    if (data < 5 || data > 8 || (stop != 1 && stop != 2))
-        return false;
-    if (parity == u'N')
-        line->parity = SerialSettings::Parity::None;
-    else if (parity == u'E')
-        line->parity = SerialSettings::Parity::Even;
-    else if (parity == u'O')
-        line->parity = SerialSettings::Parity::Odd;
-    else
-        return false;
-    line->dataBits = data;
-    line->stopBits = stop;
-    return true;
-}
 
 // What ended the serving: a signal, or the line failing.
 struct Ending {
@@ -149,7 +127,7 @@ int runServeCommand(const QStringList &args, QTextStream &out, QTextStream &err)
             ok = number(&station, 0, 255);
         else if (a == QLatin1String("--baud"))
             ok = number(&baud, 50, 4'000'000);
-        else if (a == QLatin1String("--format"))
+        else if (a == QLatin1String("--frame") || a == QLatin1String("--format"))
             ok = value(&format);
         else if (a == QLatin1String("--period"))
             ok = number(&period, 1, 60'000);
@@ -198,8 +176,8 @@ int runServeCommand(const QStringList &args, QTextStream &out, QTextStream &err)
     slave.line = choice->line;
     if (baud > 0)
         slave.line.baud = baud;
-    if (!format.isEmpty() && !parseFormat(format, &slave.line))
-        return fail(Tr::tr("--format needs data bits, parity and stop bits, e.g. 8N1 or 7E2, "
+    if (!format.isEmpty() && !comms::parseFrameFormat(format, &slave.line))
+        return fail(Tr::tr("--frame needs data bits, parity and stop bits, e.g. 8N1 or 7E2, "
                            "not %1")
                         .arg(format));
     slave.station = station >= 0 ? station : choice->station;

@@ -4,6 +4,8 @@
 #include "comms/transport/serial_transport.h"
 #include "comms/transport/tcp_transport.h"
 
+#include <QFileInfo>
+
 namespace rung::comms {
 
 QString ConnectionSettings::where() const {
@@ -55,6 +57,14 @@ std::unique_ptr<Transport> makeTransport(const ConnectionSettings &settings) {
     }
     }
     return nullptr;
+}
+
+std::unique_ptr<Transport> makePortTransport(const QString &port, const SerialSettings &line) {
+    // A socat link names its pseudo-terminal through a symbolic link.
+    const QString real = QFileInfo(port).canonicalFilePath();
+    if ((real.isEmpty() ? port : real).startsWith(QLatin1String("/dev/pts/")))
+        return std::make_unique<PtyTransport>(port);
+    return std::make_unique<SerialTransport>(port, line);
 }
 
 bool parseProtocolKind(QStringView name, ProtocolKind *kind) {

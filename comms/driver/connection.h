@@ -46,6 +46,9 @@ LinkSettings lineTiming(const ConnectionSettings &settings);
 // A transport for the settings, not yet open. A TCP transport must be made and used on one
 // thread (QTcpSocket): the session calls this on its worker.
 std::unique_ptr<Transport> makeTransport(const ConnectionSettings &settings);
+// A transport for a port the user names: a pseudo-terminal (a /dev/pts path, or a link to
+// one) through termios, anything else through libserialport with the line settings.
+std::unique_ptr<Transport> makePortTransport(const QString &port, const SerialSettings &line);
 
 // "vigor", "modbus", "modbus-tcp", "hostlink" (the command line's names); false when unknown.
 bool parseProtocolKind(QStringView name, ProtocolKind *kind);

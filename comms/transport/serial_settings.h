@@ -3,6 +3,8 @@
 // Line settings of a serial port (protocols.md: Vigor 7E1 19200, Host Link 7E2 9600, PL110
 // 8N1 19200 by default).
 
+#include <QString>
+
 #include <cstdint>
 
 namespace rung::comms {
@@ -25,5 +27,10 @@ struct SerialSettings {
     }
     int rtuGapMicroseconds() const { return baud > 19200 ? 1750 : characterMicroseconds() * 7 / 2; }
 };
+
+// "8N1", "7E2": data bits (7 or 8), parity (N, E, O), stop bits (1 or 2), as the manuals write
+// a frame format; false, and the settings untouched, for anything else.
+bool parseFrameFormat(QStringView text, SerialSettings *line);
+QString frameFormatText(const SerialSettings &line);
 
 } // namespace rung::comms

@@ -58,7 +58,7 @@ TEST(CliServe, UsageErrorsSayWhatIsWrong) {
     EXPECT_EQ(r.code, 2);
     EXPECT_TRUE(r.err.contains(QStringLiteral("bad-checksum"))) << r.err.toStdString();
     r = serve({file, QStringLiteral("--protocol"), QStringLiteral("modbus"),
-               QStringLiteral("--pty"), QStringLiteral("--format"), QStringLiteral("9X3")});
+               QStringLiteral("--pty"), QStringLiteral("--frame"), QStringLiteral("9X3")});
     EXPECT_EQ(r.code, 2);
     EXPECT_TRUE(r.err.contains(QStringLiteral("9X3")));
 }

@@ -1,0 +1,190 @@
+#include "cli_record.h"
+
+#include "comms/driver/connection.h"
+#include "comms/driver/relay.h"
+#include "comms/transport/pty_transport.h"
+
+#include <QCoreApplication>
+#include <QElapsedTimer>
+#include <QFile>
+
+#include <csignal>
+#include <ctime>
+
+namespace rung::app {
+
+namespace {
+
+struct Tr {
+    Q_DECLARE_TR_FUNCTIONS(rung::app::Record)
+};
+
+// The capture is data a user keeps and compares: its labels are not translated.
+const QString kToPlc = QStringLiteral("PC>PLC");
+const QString kToPc = QStringLiteral("PLC>PC");
+
+// A side of the relay: a new pseudo-terminal, an existing one, or a serial port.
+std::unique_ptr<comms::Transport> makeSide(const QString &port, const comms::SerialSettings &line,
+                                           QString *createdPath, QString *error) {
+    if (port == QLatin1String("pty")) {
+        auto pair = comms::PtyTransport::createPair(error);
+        if (pair)
+            *createdPath = pair->peerPath();
+        return pair;
+    }
+    return comms::makePortTransport(port, line);
+}
+
+} // namespace
+
+QString recordUsage() {
+    return Tr::tr(
+        "  rungstudio-cli record --pc PORT --plc PORT [--baud B] [--frame 8N1] [-o FILE]\n"
+        "        [--seconds S]   (PORT: a serial port, a /dev/pts path, or pty for a new "
+        "one)");
+}
+
+int runRecordCommand(const QStringList &args, QTextStream &out, QTextStream &err) {
+    QString pcPort, plcPort, output, baudText, frame, secondsText;
+    const auto fail = [&err](const QString &message) {
+        err << message << '\n' << Tr::tr("usage:") << '\n' << recordUsage() << '\n';
+        return 2;
+    };
+    const struct {
+        const char *name;
+        QString *value;
+    } valued[] = {{"--pc", &pcPort},   {"--plc", &plcPort},         {"--baud", &baudText},
+                  {"--frame", &frame}, {"--seconds", &secondsText}, {"-o", &output}};
+    for (qsizetype i = 0; i < args.size(); ++i) {
+        bool taken = false;
+        for (const auto &v : valued) {
+            if (args[i] != QLatin1String(v.name))
+                continue;
+            if (i + 1 >= args.size())
+                return fail(Tr::tr("%1 needs a value").arg(args[i]));
+            *v.value = args[++i];
+            taken = true;
+        }
+        if (!taken)
+            return fail(Tr::tr("unexpected argument %1").arg(args[i]));
+    }
+    if (pcPort.isEmpty() || plcPort.isEmpty())
+        return fail(Tr::tr("--pc and --plc are needed: the two ports to join"));
+    comms::SerialSettings line;
+    if (!baudText.isEmpty()) {
+        bool ok = false;
+        line.baud = baudText.toInt(&ok);
+        if (!ok || line.baud < 50 || line.baud > 4'000'000)
+            return fail(Tr::tr("--baud must be a number from 50 to 4000000; got %1").arg(baudText));
+    }
+    if (!frame.isEmpty() && !comms::parseFrameFormat(frame, &line))
+        return fail(
+            Tr::tr("--frame must be data bits, parity and stop bits, e.g. 8N1 or 7E2; got %1")
+                .arg(frame));
+    double seconds = 0;
+    if (!secondsText.isEmpty()) {
+        bool ok = false;
+        seconds = secondsText.toDouble(&ok);
+        if (!ok || seconds <= 0)
+            return fail(Tr::tr("--seconds must be a positive number; got %1").arg(secondsText));
+    }
+
+    QString error, pcCreated, plcCreated;
+    auto pc = makeSide(pcPort, line, &pcCreated, &error);
+    if (!pc) {
+        err << Tr::tr("the PC's side: %1").arg(error) << '\n';
+        return 2;
+    }
+    auto plc = makeSide(plcPort, line, &plcCreated, &error);
+    if (!plc) {
+        err << Tr::tr("the PLC's side: %1").arg(error) << '\n';
+        return 2;
+    }
+    const QString pcName = pcCreated.isEmpty() ? pcPort : pcCreated;
+    const QString plcName = plcCreated.isEmpty() ? plcPort : plcCreated;
+
+    QFile file(output);
+    QTextStream toFile(&file);
+    QTextStream &capture = output.isEmpty() ? out : toFile;
+    if (!output.isEmpty() && !file.open(QIODevice::WriteOnly | QIODevice::Text)) {
+        err << Tr::tr("cannot write %1: %2").arg(output, file.errorString()) << '\n';
+        return 2;
+    }
+
+    // SIGINT and SIGTERM are taken by this thread alone (sigtimedwait below), blocked before
+    // the relay's threads start so that they inherit the mask.
+    sigset_t stopSignals, previous;
+    sigemptyset(&stopSignals);
+    sigaddset(&stopSignals, SIGINT);
+    sigaddset(&stopSignals, SIGTERM);
+    pthread_sigmask(SIG_BLOCK, &stopSignals, &previous);
+    struct RestoreMask {
+        sigset_t mask;
+        ~RestoreMask() { pthread_sigmask(SIG_SETMASK, &mask, nullptr); }
+    } restore{previous};
+
+    comms::Relay relay(std::move(pc), std::move(plc));
+    if (!relay.start(&error)) {
+        err << error << '\n';
+        return 2;
+    }
+    // A script reads where to connect before anything else.
+    if (!pcCreated.isEmpty())
+        out << "pc " << pcCreated << Qt::endl;
+    if (!plcCreated.isEmpty())
+        out << "plc " << plcCreated << Qt::endl;
+    const QDateTime start = relay.tap().start();
+    capture << "# rungstudio-cli record: PC " << pcName << ", PLC " << plcName << ", " << line.baud
+            << ' ' << comms::frameFormatText(line) << ", started "
+            << start.toString(Qt::ISODateWithMs) << Qt::endl;
+    err << Tr::tr("Passing bytes between %1 (PC) and %2 (PLC); stop with Ctrl+C")
+               .arg(pcName, plcName)
+        << Qt::endl;
+
+    quint64 next = 0, lost = 0, records = 0, toPlc = 0, toPc = 0;
+    const auto drain = [&] {
+        const quint64 from = next;
+        const std::vector<comms::TrafficRecord> batch = relay.tap().records(from, &next);
+        // The tap keeps its last records only: a capture that fell behind says where.
+        if (!batch.empty() && batch.front().sequence > from) {
+            lost += batch.front().sequence - from;
+            capture << "# " << (batch.front().sequence - from) << " records lost here" << '\n';
+        }
+        for (const comms::TrafficRecord &r : batch) {
+            capture << comms::formatTrafficRecord(r, start, kToPlc, kToPc) << '\n';
+            ++records;
+            (r.direction == comms::TrafficRecord::Direction::Sent ? toPlc : toPc) +=
+                quint64(r.bytes.size());
+        }
+        capture.flush();
+    };
+    QElapsedTimer clock;
+    clock.start();
+    while (relay.running()) {
+        const timespec poll{0, 100'000'000};
+        if (sigtimedwait(&stopSignals, nullptr, &poll) > 0)
+            break;
+        drain();
+        if (seconds > 0 && double(clock.elapsed()) >= seconds * 1000)
+            break;
+    }
+    const QString failure = relay.failure();
+    relay.stop();
+    drain();
+    err << Tr::tr("%1 bytes from the PC, %2 bytes from the PLC, in %3 records")
+               .arg(toPlc)
+               .arg(toPc)
+               .arg(records)
+        << '\n';
+    if (lost > 0)
+        err << Tr::tr("%1 records were lost: the capture was not written as fast as they came")
+                   .arg(lost)
+            << '\n';
+    if (!failure.isEmpty()) {
+        err << failure << '\n';
+        return 2;
+    }
+    return 0;
+}
+
+} // namespace rung::app
