@@ -2440,7 +2440,7 @@ Létradiagram- és utasításlista-szerkesztő VPC, Vigor, CPM1 és PL110 PLC-kh
         </translation>
     </message>
     <message>
-        <location line="+147"/>
+        <location line="+151"/>
         <source>%1 is driven twice; a coil may be driven only once (the first is on line %2)</source>
         <translation>%1 kétszer van vezérelve; egy tekercs csak egyszer vezérelhető (az első a(z) %2. sorban)</translation>
     </message>
@@ -2530,22 +2530,22 @@ Létradiagram- és utasításlista-szerkesztő VPC, Vigor, CPM1 és PL110 PLC-kh
         <translation>A léptetőlánc nincs RET-tel lezárva</translation>
     </message>
     <message>
-        <location filename="../model/checks/checks_list.cpp" line="-83"/>
+        <location filename="../model/checks/checks_list.cpp" line="-87"/>
         <source>Set value %1 is out of range</source>
         <translation>A(z) %1 beállított érték tartományon kívül esik</translation>
     </message>
     <message>
-        <location line="+17"/>
+        <location line="+21"/>
         <source>%1 cannot be written: %2 are read-only</source>
         <translation>%1 nem írható (%2: csak olvasható)</translation>
     </message>
     <message>
-        <location line="+6"/>
+        <location line="+7"/>
         <source>%1 cannot be written: the PLC drives it (%2)</source>
         <translation>%1 nem írható: a PLC vezérli (%2)</translation>
     </message>
     <message>
-        <location line="+9"/>
+        <location line="+8"/>
         <source>%1 cannot drive %2: %3 are not relays</source>
         <translation>%1 nem vezérelheti ezt: %2 (a(z) %3 nem relék)</translation>
     </message>
@@ -2590,7 +2590,17 @@ Létradiagram- és utasításlista-szerkesztő VPC, Vigor, CPM1 és PL110 PLC-kh
         <translation>a(z) %2 %1 értéke %3 és %4 között lehet, nem %5</translation>
     </message>
     <message>
-        <location line="+23"/>
+        <location line="+15"/>
+        <source>%1 moves whole words: %2 cannot be its %3</source>
+        <translation>%1 egész szavakat mozgat: %2 nem lehet a(z) %3</translation>
+    </message>
+    <message>
+        <location line="+12"/>
+        <source>%1 takes its %2 from a constant or from %3, not %4</source>
+        <translation>%1 a(z) %2 értékét konstansból vagy ebből veszi: %3, nem ebből: %4</translation>
+    </message>
+    <message>
+        <location line="+16"/>
         <source>%1 takes only %2..%3, not %4</source>
         <translation>a(z) %1 csak %2..%3 operandust fogad el, nem %4</translation>
     </message>
@@ -2763,12 +2773,12 @@ Létradiagram- és utasításlista-szerkesztő VPC, Vigor, CPM1 és PL110 PLC-kh
     </message>
     <message>
         <location line="+19"/>
-        <location line="+172"/>
+        <location line="+175"/>
         <source>&apos;%1...&apos; is too long for an operand</source>
         <translation>A(z) &apos;%1...&apos; túl hosszú egy operandushoz</translation>
     </message>
     <message numerus="yes">
-        <location line="-114"/>
+        <location line="-117"/>
         <source>%1 needs %n operand(s): %2</source>
         <translation>
             <numerusform>%1 %n operandust igényel: %2</numerusform>
@@ -2787,7 +2797,7 @@ Létradiagram- és utasításlista-szerkesztő VPC, Vigor, CPM1 és PL110 PLC-kh
         </translation>
     </message>
     <message>
-        <location line="+28"/>
+        <location line="+31"/>
         <source>%1: a set value is a BCD constant #0000..#9999 or a channel</source>
         <translation>%1: a beállított érték BCD konstans (#0000..#9999) vagy csatorna</translation>
     </message>
@@ -2797,22 +2807,33 @@ Létradiagram- és utasításlista-szerkesztő VPC, Vigor, CPM1 és PL110 PLC-kh
         <translation>%1 tartományon kívül esik: itt %2..%3 lehet</translation>
     </message>
     <message>
-        <location line="+58"/>
+        <location line="+60"/>
         <source>%1: a label number is expected</source>
         <translation>%1: címkeszám kell</translation>
     </message>
     <message>
         <location line="+43"/>
+        <location line="+46"/>
         <source>%1 is a constant; a device is expected here</source>
         <translation>%1 konstans; ide operandus kell</translation>
     </message>
     <message>
-        <location line="+14"/>
+        <location line="-32"/>
         <source>%1: %2 is expected here</source>
         <translation>%1: itt %2 kell</translation>
     </message>
     <message>
-        <location line="+24"/>
+        <location line="+22"/>
+        <source>%1 is a word (%2 bits); a single device is expected here</source>
+        <translation>%1 egy szó (%2 bit); ide egyetlen operandus kell</translation>
+    </message>
+    <message>
+        <location line="+3"/>
+        <source>%1: an index register modifies only the word operands of application instructions and set values</source>
+        <translation>%1: indexregiszter csak az alkalmazói utasítások szó operandusait és a beállított értékeket módosítja</translation>
+    </message>
+    <message>
+        <location line="+30"/>
         <source>a timer</source>
         <translation>egy időzítő</translation>
     </message>
@@ -2830,6 +2851,41 @@ Létradiagram- és utasításlista-szerkesztő VPC, Vigor, CPM1 és PL110 PLC-kh
         <location line="+4"/>
         <source>a bit device</source>
         <translation>egy bit típusú operandus</translation>
+    </message>
+    <message>
+        <location filename="../model/listing/operand_text.cpp" line="+160"/>
+        <source>%1: K%2 is no digit count here; K1..K%3 (groups of 4 bits) fit a word</source>
+        <translation>%1: a K%2 itt nem számjegyszám; egy szóba K1..K%3 (4 bites csoportok) fér</translation>
+    </message>
+    <message>
+        <location line="+12"/>
+        <source>%1: K%2 takes a bit device (the first of its bits), not %3</source>
+        <translation>%1: a K%2 bit típusú operandust vár (az első bitjét), nem ezt: %3</translation>
+    </message>
+    <message>
+        <location line="+13"/>
+        <source>%1 takes the %2 bits %3..%4, but %5 does not exist</source>
+        <translation>%1 a(z) %3..%4 %2 bitet foglalja, de %5 nem létezik</translation>
+    </message>
+    <message>
+        <location line="+14"/>
+        <source>%1: an index register cannot be indexed</source>
+        <translation>%1: indexregiszter nem indexelhető</translation>
+    </message>
+    <message>
+        <location line="+4"/>
+        <source>%1: index registers modify words (D0E0, K4M0E0) and K constants, not the bit %2</source>
+        <translation>%1: indexregiszter szót (D0E0, K4M0E0) és K konstanst módosít, nem a(z) %2 bitet</translation>
+    </message>
+    <message>
+        <location line="+12"/>
+        <source>%1: index registers modify K constants, not %2</source>
+        <translation>%1: indexregiszter K konstanst módosít, nem ezt: %2</translation>
+    </message>
+    <message>
+        <location line="+14"/>
+        <source>%1: %2 is not an index register (%3)</source>
+        <translation>%1: %2 nem indexregiszter (%3)</translation>
     </message>
 </context>
 <context>
@@ -2894,7 +2950,7 @@ Létradiagram- és utasításlista-szerkesztő VPC, Vigor, CPM1 és PL110 PLC-kh
         <translation>Egy kimeneti utasítás a várt</translation>
     </message>
     <message>
-        <location line="+46"/>
+        <location line="+39"/>
         <source>&apos;~%1&apos;: a power-flow element is ~, ~P or ~N</source>
         <translation>&apos;~%1&apos;: az áramútelem jele ~, ~P vagy ~N</translation>
     </message>
@@ -2909,7 +2965,12 @@ Létradiagram- és utasításlista-szerkesztő VPC, Vigor, CPM1 és PL110 PLC-kh
         <translation>Az érintkezőnek nincs operandusa</translation>
     </message>
     <message>
-        <location line="+93"/>
+        <location line="+24"/>
+        <source>%1 is a word; a contact takes a bit device</source>
+        <translation>%1 egy szó; az érintkező bit típusú operandust vár</translation>
+    </message>
+    <message>
+        <location line="+74"/>
         <source>&apos;%1&apos; is not a contact</source>
         <translation>A(z) &apos;%1&apos; nem érintkező</translation>
     </message>
@@ -3118,15 +3179,14 @@ Létradiagram- és utasításlista-szerkesztő VPC, Vigor, CPM1 és PL110 PLC-kh
     <message>
         <location line="+5"/>
         <location filename="../model/target/target_pl110.cpp" line="+86"/>
-        <location filename="../model/target/target_vigor.cpp" line="+115"/>
         <location filename="../model/target/target_vpc.cpp" line="+61"/>
         <source>timers</source>
         <translation>időzítők</translation>
     </message>
     <message>
         <location line="+4"/>
-        <location filename="../model/target/target_pl110.cpp" line="+2"/>
-        <location filename="../model/target/target_vigor.cpp" line="+1"/>
+        <location filename="../model/target/target_pl110.cpp" line="+5"/>
+        <location filename="../model/target/target_vigor.cpp" line="+135"/>
         <location filename="../model/target/target_vpc.cpp" line="+5"/>
         <source>counters</source>
         <translation>számlálók</translation>
@@ -3153,8 +3213,8 @@ Létradiagram- és utasításlista-szerkesztő VPC, Vigor, CPM1 és PL110 PLC-kh
     </message>
     <message>
         <location line="+2"/>
-        <location filename="../model/target/target_pl110.cpp" line="+47"/>
-        <location filename="../model/target/target_vigor.cpp" line="+21"/>
+        <location filename="../model/target/target_pl110.cpp" line="+72"/>
+        <location filename="../model/target/target_vigor.cpp" line="+34"/>
         <source>ON for the first scan</source>
         <translation>az első ciklusban BE</translation>
     </message>
@@ -3200,7 +3260,7 @@ Létradiagram- és utasításlista-szerkesztő VPC, Vigor, CPM1 és PL110 PLC-kh
     <message>
         <location line="+5"/>
         <location filename="../model/target/target_pl110.cpp" line="+28"/>
-        <location filename="../model/target/target_vigor.cpp" line="+56"/>
+        <location filename="../model/target/target_vigor.cpp" line="+60"/>
         <location filename="../model/target/target_vpc.cpp" line="+5"/>
         <source>Start a block with a normally open contact</source>
         <translation>Blokk kezdése záró érintkezővel</translation>
@@ -3381,20 +3441,20 @@ Létradiagram- és utasításlista-szerkesztő VPC, Vigor, CPM1 és PL110 PLC-kh
     </message>
     <message>
         <location line="+11"/>
-        <location filename="../model/target/target_vigor.cpp" line="+23"/>
+        <location filename="../model/target/target_vigor.cpp" line="+25"/>
         <source>No operation</source>
         <translation>Nincs művelet</translation>
     </message>
     <message>
         <location line="+3"/>
-        <location filename="../model/target/target_pl110.cpp" line="+106"/>
+        <location filename="../model/target/target_pl110.cpp" line="+116"/>
         <location filename="../model/target/target_vigor.cpp" line="-1"/>
         <location filename="../model/target/target_vpc.cpp" line="+5"/>
         <source>End of the program</source>
         <translation>A program vége</translation>
     </message>
     <message>
-        <location filename="../model/target/target_pl110.cpp" line="-273"/>
+        <location filename="../model/target/target_pl110.cpp" line="-311"/>
         <source>IF contact: ON while S1 ? S2 is true</source>
         <translation>IF érintkező: BE, amíg S1 ? S2 igaz</translation>
     </message>
@@ -3419,7 +3479,12 @@ Létradiagram- és utasításlista-szerkesztő VPC, Vigor, CPM1 és PL110 PLC-kh
         <translation>markerek</translation>
     </message>
     <message>
-        <location line="+10"/>
+        <location line="+6"/>
+        <source>timers (with SM0.13 ON)</source>
+        <translation>időzítők (SM0.13 bekapcsolva)</translation>
+    </message>
+    <message>
+        <location line="+9"/>
         <source>variables</source>
         <translation>változók</translation>
     </message>
@@ -3429,10 +3494,25 @@ Létradiagram- és utasításlista-szerkesztő VPC, Vigor, CPM1 és PL110 PLC-kh
         <translation>speciális markerek</translation>
     </message>
     <message>
+        <location line="+8"/>
+        <source>variables, double words</source>
+        <translation>változók, duplaszavak</translation>
+    </message>
+    <message>
+        <location line="+5"/>
+        <source>special markers, double words</source>
+        <translation>speciális markerek, duplaszavak</translation>
+    </message>
+    <message>
         <location line="+6"/>
         <location filename="../model/target/target_vpc.cpp" line="-106"/>
         <source>analog inputs</source>
         <translation>analóg bemenetek</translation>
+    </message>
+    <message>
+        <location line="+7"/>
+        <source>trimmers</source>
+        <translation>trimmerek</translation>
     </message>
     <message>
         <location line="+4"/>
@@ -3442,6 +3522,7 @@ Létradiagram- és utasításlista-szerkesztő VPC, Vigor, CPM1 és PL110 PLC-kh
     </message>
     <message>
         <location line="+5"/>
+        <location line="+3"/>
         <source>timer presets</source>
         <translation>időzítők beállított értékei</translation>
     </message>
@@ -3508,7 +3589,7 @@ Létradiagram- és utasításlista-szerkesztő VPC, Vigor, CPM1 és PL110 PLC-kh
     </message>
     <message>
         <location line="+2"/>
-        <location filename="../model/target/target_vigor.cpp" line="-145"/>
+        <location filename="../model/target/target_vigor.cpp" line="-147"/>
         <source>minimum scan time (0.1 ms)</source>
         <translation>legkisebb ciklusidő (0,1 ms)</translation>
     </message>
@@ -3579,7 +3660,7 @@ Létradiagram- és utasításlista-szerkesztő VPC, Vigor, CPM1 és PL110 PLC-kh
         <translation>bitszám</translation>
     </message>
     <message>
-        <location line="+2"/>
+        <location line="+5"/>
         <source>Set a bit (0..15) of a word to 1</source>
         <translation>Egy szó egy bitjének (0..15) 1-be állítása</translation>
     </message>
@@ -3590,6 +3671,11 @@ Létradiagram- és utasításlista-szerkesztő VPC, Vigor, CPM1 és PL110 PLC-kh
     </message>
     <message>
         <location line="+8"/>
+        <source>preset</source>
+        <translation>előre beállított érték</translation>
+    </message>
+    <message>
+        <location line="+3"/>
         <source>time base (ms)</source>
         <translation>időalap (ms)</translation>
     </message>
@@ -3629,7 +3715,7 @@ Létradiagram- és utasításlista-szerkesztő VPC, Vigor, CPM1 és PL110 PLC-kh
         <translation>Érték vagy szó mozgatása D-be</translation>
     </message>
     <message>
-        <location line="+2"/>
+        <location line="+6"/>
         <source>Move n words from S (or the value S) to D</source>
         <translation>n szó mozgatása S-ből (vagy az S érték) D-be</translation>
     </message>
@@ -3714,7 +3800,7 @@ Létradiagram- és utasításlista-szerkesztő VPC, Vigor, CPM1 és PL110 PLC-kh
         <translation>Kijelzőparaméter elhelyezése</translation>
     </message>
     <message>
-        <location filename="../model/target/target_vigor.cpp" line="-120"/>
+        <location filename="../model/target/target_vigor.cpp" line="-156"/>
         <source>Compare contact: ON while S1 ? S2</source>
         <translation>Összehasonlító érintkező: BE, amíg S1 ? S2</translation>
     </message>
@@ -3757,6 +3843,26 @@ Létradiagram- és utasításlista-szerkesztő VPC, Vigor, CPM1 és PL110 PLC-kh
         <translation>remanens lépésrelék</translation>
     </message>
     <message>
+        <location line="+9"/>
+        <source>timers (100 ms)</source>
+        <translation>időzítők (100 ms)</translation>
+    </message>
+    <message>
+        <location line="+2"/>
+        <source>timers (10 ms)</source>
+        <translation>időzítők (10 ms)</translation>
+    </message>
+    <message>
+        <location line="+3"/>
+        <source>accumulating timers (1 ms)</source>
+        <translation>összegző időzítők (1 ms)</translation>
+    </message>
+    <message>
+        <location line="+5"/>
+        <source>accumulating timers (100 ms)</source>
+        <translation>összegző időzítők (100 ms)</translation>
+    </message>
+    <message>
         <location line="+5"/>
         <source>latched counters</source>
         <translation>remanens számlálók</translation>
@@ -3782,7 +3888,13 @@ Létradiagram- és utasításlista-szerkesztő VPC, Vigor, CPM1 és PL110 PLC-kh
         <translation>speciális regiszterek</translation>
     </message>
     <message>
-        <location line="+5"/>
+        <location line="+8"/>
+        <location line="+4"/>
+        <source>index registers</source>
+        <translation>indexregiszterek</translation>
+    </message>
+    <message>
+        <location line="+6"/>
         <source>ON while the PLC runs</source>
         <translation>BE, amíg a PLC fut</translation>
     </message>
@@ -3798,6 +3910,16 @@ Létradiagram- és utasításlista-szerkesztő VPC, Vigor, CPM1 és PL110 PLC-kh
     </message>
     <message>
         <location line="+6"/>
+        <source>RS instruction: 8-bit mode (OFF: 16-bit)</source>
+        <translation>RS utasítás: 8 bites mód (kikapcsolva: 16 bites)</translation>
+    </message>
+    <message>
+        <location line="+2"/>
+        <source>SMOV works on hexadecimal digits</source>
+        <translation>Az SMOV hexadecimális számjegyekkel dolgozik</translation>
+    </message>
+    <message>
+        <location line="+2"/>
         <source>ON for one scan when an MBUS cycle completes</source>
         <translation>egy ciklusig BE, amikor egy MBUS-ciklus befejeződik</translation>
     </message>
@@ -3958,11 +4080,51 @@ Létradiagram- és utasításlista-szerkesztő VPC, Vigor, CPM1 és PL110 PLC-kh
     </message>
     <message>
         <location line="+11"/>
-        <source>On-delay timer, 100 ms units</source>
-        <translation>Bekapcsolás-késleltetésű időzítő, 100 ms-os egységben</translation>
+        <source>On-delay timer: T0..T199 100 ms, T200..T245 10 ms units; T246..T249 1 ms, T250..T255 100 ms accumulating (reset with RST)</source>
+        <translation>Bekapcsolás-késleltető időzítő: T0..T199 100 ms-os, T200..T245 10 ms-os egységekben; T246..T249 1 ms-os, T250..T255 100 ms-os összegző (RST nullázza)</translation>
+    </message>
+    <message>
+        <location line="+94"/>
+        <source>Convert n ASCII characters from S to hexadecimal in D</source>
+        <translation>n ASCII karakter átalakítása S-től hexadecimálissá D-be</translation>
+    </message>
+    <message>
+        <location line="+4"/>
+        <source>Convert n hexadecimal digits from S to ASCII in D</source>
+        <translation>n hexadecimális számjegy átalakítása S-től ASCII-vé D-be</translation>
+    </message>
+    <message>
+        <location line="+5"/>
+        <source>Serial communication on CP2: send m words from S, receive n words into D</source>
+        <translation>Soros kommunikáció a CP2-n: m szó küldése S-től, n szó fogadása D-be</translation>
     </message>
     <message>
         <location line="+7"/>
+        <source>Easy Link between PLCs: table from S1, working area S2</source>
+        <translation>Easy Link PLC-k között: táblázat S1-től, munkaterület S2</translation>
+    </message>
+    <message>
+        <location line="+5"/>
+        <source>MODBUS master: table from S1, working area S2</source>
+        <translation>MODBUS master: táblázat S1-től, munkaterület S2</translation>
+    </message>
+    <message>
+        <location line="+5"/>
+        <source>Read the variable resistor (volume) VRn into D</source>
+        <translation>A VRn változtatható ellenállás (potenciométer) értékének beolvasása D-be</translation>
+    </message>
+    <message>
+        <location line="+3"/>
+        <source>Swap the high and low bytes of D</source>
+        <translation>D felső és alsó bájtjának felcserélése</translation>
+    </message>
+    <message>
+        <location line="+5"/>
+        <source>Move m2 digits of S from digit m1 to D from digit n</source>
+        <translation>S m2 számjegyének mozgatása az m1. számjegytől D-be az n. számjegytől</translation>
+    </message>
+    <message>
+        <location line="-119"/>
         <source>Counter: counts rising edges, reset with RST</source>
         <translation>Számláló: a felfutó éleket számolja, törlés RST-vel</translation>
     </message>
@@ -3977,12 +4139,12 @@ Létradiagram- és utasításlista-szerkesztő VPC, Vigor, CPM1 és PL110 PLC-kh
         <translation>A léptetőlánc vége</translation>
     </message>
     <message>
-        <location line="+9"/>
+        <location line="+8"/>
         <source>Move S to D</source>
         <translation>S mozgatása D-be</translation>
     </message>
     <message>
-        <location line="+2"/>
+        <location line="+6"/>
         <source>Move n words from S to D</source>
         <translation>n szó mozgatása S-ből D-be</translation>
     </message>
@@ -4057,7 +4219,7 @@ Létradiagram- és utasításlista-szerkesztő VPC, Vigor, CPM1 és PL110 PLC-kh
         <translation>D = az S BCD számjegyek értéke</translation>
     </message>
     <message>
-        <location line="+4"/>
+        <location line="+8"/>
         <source>Read n words of special module m1, from m2</source>
         <translation>n szó olvasása az m1 speciális modul m2 címétől</translation>
     </message>
@@ -4075,11 +4237,6 @@ Létradiagram- és utasításlista-szerkesztő VPC, Vigor, CPM1 és PL110 PLC-kh
         <location line="+3"/>
         <source>Refresh n inputs or outputs now</source>
         <translation>n bemenet vagy kimenet azonnali frissítése</translation>
-    </message>
-    <message>
-        <location line="+6"/>
-        <source>Communication or conversion instruction</source>
-        <translation>Kommunikációs vagy konverziós utasítás</translation>
     </message>
     <message>
         <location filename="../model/target/target_vpc.cpp" line="-41"/>
@@ -4178,7 +4335,7 @@ Létradiagram- és utasításlista-szerkesztő VPC, Vigor, CPM1 és PL110 PLC-kh
         <translation>Omron Host Link (C mód)</translation>
     </message>
     <message>
-        <location filename="../model/target/target_pl110_maps.cpp" line="+16"/>
+        <location filename="../model/target/target_pl110_maps.cpp" line="+20"/>
         <source>PL110 MODBUS RTU slave</source>
         <translation>PL110 MODBUS RTU szolga</translation>
     </message>
@@ -4188,7 +4345,7 @@ Létradiagram- és utasításlista-szerkesztő VPC, Vigor, CPM1 és PL110 PLC-kh
         <translation>Vigor Computer Link</translation>
     </message>
     <message>
-        <location line="+19"/>
+        <location line="+25"/>
         <source>Vigor CP2 MODBUS slave</source>
         <translation>Vigor CP2 MODBUS szolga</translation>
     </message>
@@ -4219,7 +4376,7 @@ Létradiagram- és utasításlista-szerkesztő VPC, Vigor, CPM1 és PL110 PLC-kh
 <context>
     <name>rung::simulator::Compiler</name>
     <message>
-        <location filename="../simulator/compiler_detail.h" line="+101"/>
+        <location filename="../simulator/compiler_detail.h" line="+103"/>
         <source>%1 needs operand %2</source>
         <translation>%1: hiányzik a(z) %2. operandus</translation>
     </message>
@@ -4229,27 +4386,39 @@ Létradiagram- és utasításlista-szerkesztő VPC, Vigor, CPM1 és PL110 PLC-kh
         <translation>%1 nem bit típusú operandus</translation>
     </message>
     <message>
-        <location line="+19"/>
+        <location line="+23"/>
         <source>constant %1 is out of range</source>
         <translation>a(z) %1 konstans tartományon kívül esik</translation>
     </message>
     <message>
-        <location line="+5"/>
+        <location filename="../simulator/compile_operands.cpp" line="+25"/>
+        <source>%1 is not an index register</source>
+        <translation>%1 nem indexregiszter</translation>
+    </message>
+    <message>
+        <location line="+6"/>
+        <source>%1 is a constant; a device is expected here</source>
+        <translation>%1 konstans; ide operandus kell</translation>
+    </message>
+    <message>
+        <location line="+2"/>
+        <location filename="../simulator/compiler_detail.h" line="+5"/>
         <source>%1 is not a word device or a constant</source>
         <translation>%1 nem szó típusú operandus és nem konstans</translation>
     </message>
     <message>
-        <location line="+20"/>
+        <location line="+16"/>
+        <location filename="../simulator/compiler_detail.h" line="+24"/>
         <source>%1 cannot be written</source>
         <translation>%1 nem írható</translation>
     </message>
     <message>
-        <location line="+3"/>
+        <location filename="../simulator/compiler_detail.h" line="+3"/>
         <source>%1 is not a word device</source>
         <translation>%1 nem szó típusú operandus</translation>
     </message>
     <message>
-        <location line="+15"/>
+        <location line="+17"/>
         <source>%1 needs the next word too, which does not exist</source>
         <translation>%1 a következő szót is igényli, de az nem létezik</translation>
     </message>
@@ -4269,7 +4438,7 @@ Létradiagram- és utasításlista-szerkesztő VPC, Vigor, CPM1 és PL110 PLC-kh
         <translation>%1 nem időzítő</translation>
     </message>
     <message>
-        <location line="+47"/>
+        <location line="+54"/>
         <source>%1 is not a counter</source>
         <translation>%1 nem számláló</translation>
     </message>
@@ -4299,12 +4468,12 @@ Létradiagram- és utasításlista-szerkesztő VPC, Vigor, CPM1 és PL110 PLC-kh
         <translation>%1 darabszáma 1 és %2 között lehet</translation>
     </message>
     <message>
-        <location line="+14"/>
+        <location line="+15"/>
         <source>the block of %1 words runs past the end of its area</source>
         <translation>a(z) %1 szavas blokk túlnyúlik a terület végén</translation>
     </message>
     <message>
-        <location filename="../simulator/compiler.cpp" line="+140"/>
+        <location filename="../simulator/compiler.cpp" line="+153"/>
         <source>unknown instruction</source>
         <translation>ismeretlen utasítás</translation>
     </message>
@@ -4329,7 +4498,7 @@ Létradiagram- és utasításlista-szerkesztő VPC, Vigor, CPM1 és PL110 PLC-kh
         <translation>%1 nem operandus</translation>
     </message>
     <message>
-        <location line="+97"/>
+        <location line="+100"/>
         <source>the program has no target</source>
         <translation>a programnak nincs célrendszere</translation>
     </message>
@@ -4357,7 +4526,7 @@ Létradiagram- és utasításlista-szerkesztő VPC, Vigor, CPM1 és PL110 PLC-kh
         <translation>a(z) %1 eredmény kívül esik a 0..9999 tartományon; %2 íródik be</translation>
     </message>
     <message>
-        <location line="+353"/>
+        <location line="+382"/>
         <location line="+56"/>
         <source>division by zero; the destination is unchanged</source>
         <translation>osztás nullával; a cél változatlan marad</translation>
@@ -4366,6 +4535,16 @@ Létradiagram- és utasításlista-szerkesztő VPC, Vigor, CPM1 és PL110 PLC-kh
         <location line="+21"/>
         <source>MOVIND index %1 is outside 0..%2; nothing is written</source>
         <translation>a MOVIND %1 indexe kívül esik a 0..%2 tartományon; nem íródik semmi</translation>
+    </message>
+    <message>
+        <location filename="../simulator/engine_operands.cpp" line="+87"/>
+        <source>operation error: %1 with %2 = %3 reaches %4, which does not exist; the instruction is not executed</source>
+        <translation>műveleti hiba: %1, ahol %2 = %3, a nem létező %4 operandusra mutat; az utasítás nem hajtódik végre</translation>
+    </message>
+    <message>
+        <location line="+7"/>
+        <source>operation error: %1 reaches %2, which does not exist; the instruction is not executed</source>
+        <translation>műveleti hiba: %1 a nem létező %2 operandusra mutat; az utasítás nem hajtódik végre</translation>
     </message>
 </context>
 <context>

@@ -2448,7 +2448,7 @@ Editor di schemi ladder e liste istruzioni per VPC, Vigor, CPM1 e PL110.</transl
         </translation>
     </message>
     <message>
-        <location line="+147"/>
+        <location line="+151"/>
         <source>%1 is driven twice; a coil may be driven only once (the first is on line %2)</source>
         <translation>%1 è comandato due volte; una bobina può essere comandata una volta sola (il primo è alla riga %2)</translation>
     </message>
@@ -2538,22 +2538,22 @@ Editor di schemi ladder e liste istruzioni per VPC, Vigor, CPM1 e PL110.</transl
         <translation>Lo step ladder non è chiuso con RET</translation>
     </message>
     <message>
-        <location filename="../model/checks/checks_list.cpp" line="-83"/>
+        <location filename="../model/checks/checks_list.cpp" line="-87"/>
         <source>Set value %1 is out of range</source>
         <translation>Il valore di preset %1 è fuori campo</translation>
     </message>
     <message>
-        <location line="+17"/>
+        <location line="+21"/>
         <source>%1 cannot be written: %2 are read-only</source>
         <translation>%1 non può essere scritto: area di sola lettura (%2)</translation>
     </message>
     <message>
-        <location line="+6"/>
+        <location line="+7"/>
         <source>%1 cannot be written: the PLC drives it (%2)</source>
         <translation>%1 non è scrivibile: lo gestisce il PLC (%2)</translation>
     </message>
     <message>
-        <location line="+9"/>
+        <location line="+8"/>
         <source>%1 cannot drive %2: %3 are not relays</source>
         <translation>%1 non può comandare %2: %3 non sono relè</translation>
     </message>
@@ -2598,7 +2598,17 @@ Editor di schemi ladder e liste istruzioni per VPC, Vigor, CPM1 e PL110.</transl
         <translation>il %1 di %2 deve essere da %3 a %4, non %5</translation>
     </message>
     <message>
-        <location line="+23"/>
+        <location line="+15"/>
+        <source>%1 moves whole words: %2 cannot be its %3</source>
+        <translation>%1 sposta word intere: %2 non può essere il suo %3</translation>
+    </message>
+    <message>
+        <location line="+12"/>
+        <source>%1 takes its %2 from a constant or from %3, not %4</source>
+        <translation>%1 prende il suo %2 da una costante o da %3, non da %4</translation>
+    </message>
+    <message>
+        <location line="+16"/>
         <source>%1 takes only %2..%3, not %4</source>
         <translation>%1 accetta solo %2..%3, non %4</translation>
     </message>
@@ -2774,12 +2784,12 @@ Editor di schemi ladder e liste istruzioni per VPC, Vigor, CPM1 e PL110.</transl
     </message>
     <message>
         <location line="+19"/>
-        <location line="+172"/>
+        <location line="+175"/>
         <source>&apos;%1...&apos; is too long for an operand</source>
         <translation>&apos;%1...&apos; è troppo lungo per un operando</translation>
     </message>
     <message numerus="yes">
-        <location line="-114"/>
+        <location line="-117"/>
         <source>%1 needs %n operand(s): %2</source>
         <translation>
             <numerusform>%1 richiede %n operando: %2</numerusform>
@@ -2800,7 +2810,7 @@ Editor di schemi ladder e liste istruzioni per VPC, Vigor, CPM1 e PL110.</transl
         </translation>
     </message>
     <message>
-        <location line="+28"/>
+        <location line="+31"/>
         <source>%1: a set value is a BCD constant #0000..#9999 or a channel</source>
         <translation>%1: un valore di preset è una costante BCD #0000..#9999 o un canale</translation>
     </message>
@@ -2810,22 +2820,33 @@ Editor di schemi ladder e liste istruzioni per VPC, Vigor, CPM1 e PL110.</transl
         <translation>%1 è fuori campo: qui sono ammessi %2..%3</translation>
     </message>
     <message>
-        <location line="+58"/>
+        <location line="+60"/>
         <source>%1: a label number is expected</source>
         <translation>%1: è atteso un numero di etichetta</translation>
     </message>
     <message>
         <location line="+43"/>
+        <location line="+46"/>
         <source>%1 is a constant; a device is expected here</source>
         <translation>%1 è una costante; qui è atteso un operando</translation>
     </message>
     <message>
-        <location line="+14"/>
+        <location line="-32"/>
         <source>%1: %2 is expected here</source>
         <translation>%1: qui è atteso %2</translation>
     </message>
     <message>
-        <location line="+24"/>
+        <location line="+22"/>
+        <source>%1 is a word (%2 bits); a single device is expected here</source>
+        <translation>%1 è una word (%2 bit); qui è atteso un singolo operando</translation>
+    </message>
+    <message>
+        <location line="+3"/>
+        <source>%1: an index register modifies only the word operands of application instructions and set values</source>
+        <translation>%1: un registro indice modifica solo gli operandi word delle istruzioni applicative e i valori di preset</translation>
+    </message>
+    <message>
+        <location line="+30"/>
         <source>a timer</source>
         <translation>un temporizzatore</translation>
     </message>
@@ -2843,6 +2864,41 @@ Editor di schemi ladder e liste istruzioni per VPC, Vigor, CPM1 e PL110.</transl
         <location line="+4"/>
         <source>a bit device</source>
         <translation>un operando a bit</translation>
+    </message>
+    <message>
+        <location filename="../model/listing/operand_text.cpp" line="+160"/>
+        <source>%1: K%2 is no digit count here; K1..K%3 (groups of 4 bits) fit a word</source>
+        <translation>%1: K%2 non è un numero di cifre valido; in una word stanno K1..K%3 (gruppi di 4 bit)</translation>
+    </message>
+    <message>
+        <location line="+12"/>
+        <source>%1: K%2 takes a bit device (the first of its bits), not %3</source>
+        <translation>%1: K%2 richiede un operando a bit (il primo dei suoi bit), non %3</translation>
+    </message>
+    <message>
+        <location line="+13"/>
+        <source>%1 takes the %2 bits %3..%4, but %5 does not exist</source>
+        <translation>%1 occupa i %2 bit %3..%4, ma %5 non esiste</translation>
+    </message>
+    <message>
+        <location line="+14"/>
+        <source>%1: an index register cannot be indexed</source>
+        <translation>%1: un registro indice non può essere indicizzato</translation>
+    </message>
+    <message>
+        <location line="+4"/>
+        <source>%1: index registers modify words (D0E0, K4M0E0) and K constants, not the bit %2</source>
+        <translation>%1: i registri indice modificano word (D0E0, K4M0E0) e costanti K, non il bit %2</translation>
+    </message>
+    <message>
+        <location line="+12"/>
+        <source>%1: index registers modify K constants, not %2</source>
+        <translation>%1: i registri indice modificano costanti K, non %2</translation>
+    </message>
+    <message>
+        <location line="+14"/>
+        <source>%1: %2 is not an index register (%3)</source>
+        <translation>%1: %2 non è un registro indice (%3)</translation>
     </message>
 </context>
 <context>
@@ -2907,7 +2963,7 @@ Editor di schemi ladder e liste istruzioni per VPC, Vigor, CPM1 e PL110.</transl
         <translation>È attesa un&apos;istruzione di uscita</translation>
     </message>
     <message>
-        <location line="+46"/>
+        <location line="+39"/>
         <source>&apos;~%1&apos;: a power-flow element is ~, ~P or ~N</source>
         <translation>&apos;~%1&apos;: un elemento sul flusso di corrente è ~, ~P o ~N</translation>
     </message>
@@ -2922,7 +2978,12 @@ Editor di schemi ladder e liste istruzioni per VPC, Vigor, CPM1 e PL110.</transl
         <translation>Il contatto non ha un operando</translation>
     </message>
     <message>
-        <location line="+93"/>
+        <location line="+24"/>
+        <source>%1 is a word; a contact takes a bit device</source>
+        <translation>%1 è una word; un contatto richiede un operando a bit</translation>
+    </message>
+    <message>
+        <location line="+74"/>
         <source>&apos;%1&apos; is not a contact</source>
         <translation>&apos;%1&apos; non è un contatto</translation>
     </message>
@@ -3131,15 +3192,14 @@ Editor di schemi ladder e liste istruzioni per VPC, Vigor, CPM1 e PL110.</transl
     <message>
         <location line="+5"/>
         <location filename="../model/target/target_pl110.cpp" line="+86"/>
-        <location filename="../model/target/target_vigor.cpp" line="+115"/>
         <location filename="../model/target/target_vpc.cpp" line="+61"/>
         <source>timers</source>
         <translation>temporizzatori</translation>
     </message>
     <message>
         <location line="+4"/>
-        <location filename="../model/target/target_pl110.cpp" line="+2"/>
-        <location filename="../model/target/target_vigor.cpp" line="+1"/>
+        <location filename="../model/target/target_pl110.cpp" line="+5"/>
+        <location filename="../model/target/target_vigor.cpp" line="+135"/>
         <location filename="../model/target/target_vpc.cpp" line="+5"/>
         <source>counters</source>
         <translation>contatori</translation>
@@ -3166,8 +3226,8 @@ Editor di schemi ladder e liste istruzioni per VPC, Vigor, CPM1 e PL110.</transl
     </message>
     <message>
         <location line="+2"/>
-        <location filename="../model/target/target_pl110.cpp" line="+47"/>
-        <location filename="../model/target/target_vigor.cpp" line="+21"/>
+        <location filename="../model/target/target_pl110.cpp" line="+72"/>
+        <location filename="../model/target/target_vigor.cpp" line="+34"/>
         <source>ON for the first scan</source>
         <translation>ON per la prima scansione</translation>
     </message>
@@ -3213,7 +3273,7 @@ Editor di schemi ladder e liste istruzioni per VPC, Vigor, CPM1 e PL110.</transl
     <message>
         <location line="+5"/>
         <location filename="../model/target/target_pl110.cpp" line="+28"/>
-        <location filename="../model/target/target_vigor.cpp" line="+56"/>
+        <location filename="../model/target/target_vigor.cpp" line="+60"/>
         <location filename="../model/target/target_vpc.cpp" line="+5"/>
         <source>Start a block with a normally open contact</source>
         <translation>Inizia un blocco con un contatto normalmente aperto</translation>
@@ -3394,20 +3454,20 @@ Editor di schemi ladder e liste istruzioni per VPC, Vigor, CPM1 e PL110.</transl
     </message>
     <message>
         <location line="+11"/>
-        <location filename="../model/target/target_vigor.cpp" line="+23"/>
+        <location filename="../model/target/target_vigor.cpp" line="+25"/>
         <source>No operation</source>
         <translation>Nessuna operazione</translation>
     </message>
     <message>
         <location line="+3"/>
-        <location filename="../model/target/target_pl110.cpp" line="+106"/>
+        <location filename="../model/target/target_pl110.cpp" line="+116"/>
         <location filename="../model/target/target_vigor.cpp" line="-1"/>
         <location filename="../model/target/target_vpc.cpp" line="+5"/>
         <source>End of the program</source>
         <translation>Fine del programma</translation>
     </message>
     <message>
-        <location filename="../model/target/target_pl110.cpp" line="-273"/>
+        <location filename="../model/target/target_pl110.cpp" line="-311"/>
         <source>IF contact: ON while S1 ? S2 is true</source>
         <translation>Contatto IF: ON mentre S1 ? S2 è vero</translation>
     </message>
@@ -3432,7 +3492,12 @@ Editor di schemi ladder e liste istruzioni per VPC, Vigor, CPM1 e PL110.</transl
         <translation>marker</translation>
     </message>
     <message>
-        <location line="+10"/>
+        <location line="+6"/>
+        <source>timers (with SM0.13 ON)</source>
+        <translation>temporizzatori (con SM0.13 ON)</translation>
+    </message>
+    <message>
+        <location line="+9"/>
         <source>variables</source>
         <translation>variabili</translation>
     </message>
@@ -3442,10 +3507,25 @@ Editor di schemi ladder e liste istruzioni per VPC, Vigor, CPM1 e PL110.</transl
         <translation>marker speciali</translation>
     </message>
     <message>
+        <location line="+8"/>
+        <source>variables, double words</source>
+        <translation>variabili, doppie word</translation>
+    </message>
+    <message>
+        <location line="+5"/>
+        <source>special markers, double words</source>
+        <translation>special marker, doppie word</translation>
+    </message>
+    <message>
         <location line="+6"/>
         <location filename="../model/target/target_vpc.cpp" line="-106"/>
         <source>analog inputs</source>
         <translation>ingressi analogici</translation>
+    </message>
+    <message>
+        <location line="+7"/>
+        <source>trimmers</source>
+        <translation>trimmer</translation>
     </message>
     <message>
         <location line="+4"/>
@@ -3455,6 +3535,7 @@ Editor di schemi ladder e liste istruzioni per VPC, Vigor, CPM1 e PL110.</transl
     </message>
     <message>
         <location line="+5"/>
+        <location line="+3"/>
         <source>timer presets</source>
         <translation>preset dei temporizzatori</translation>
     </message>
@@ -3521,7 +3602,7 @@ Editor di schemi ladder e liste istruzioni per VPC, Vigor, CPM1 e PL110.</transl
     </message>
     <message>
         <location line="+2"/>
-        <location filename="../model/target/target_vigor.cpp" line="-145"/>
+        <location filename="../model/target/target_vigor.cpp" line="-147"/>
         <source>minimum scan time (0.1 ms)</source>
         <translation>tempo di scansione minimo (0,1 ms)</translation>
     </message>
@@ -3592,7 +3673,7 @@ Editor di schemi ladder e liste istruzioni per VPC, Vigor, CPM1 e PL110.</transl
         <translation>numero del bit</translation>
     </message>
     <message>
-        <location line="+2"/>
+        <location line="+5"/>
         <source>Set a bit (0..15) of a word to 1</source>
         <translation>Porta a 1 un bit (0..15) di una word</translation>
     </message>
@@ -3603,6 +3684,11 @@ Editor di schemi ladder e liste istruzioni per VPC, Vigor, CPM1 e PL110.</transl
     </message>
     <message>
         <location line="+8"/>
+        <source>preset</source>
+        <translation>preset</translation>
+    </message>
+    <message>
+        <location line="+3"/>
         <source>time base (ms)</source>
         <translation>base tempi (ms)</translation>
     </message>
@@ -3642,7 +3728,7 @@ Editor di schemi ladder e liste istruzioni per VPC, Vigor, CPM1 e PL110.</transl
         <translation>Sposta un valore o una word in D</translation>
     </message>
     <message>
-        <location line="+2"/>
+        <location line="+6"/>
         <source>Move n words from S (or the value S) to D</source>
         <translation>Sposta n word da S (o il valore S) a D</translation>
     </message>
@@ -3727,7 +3813,7 @@ Editor di schemi ladder e liste istruzioni per VPC, Vigor, CPM1 e PL110.</transl
         <translation>Posiziona un parametro del display</translation>
     </message>
     <message>
-        <location filename="../model/target/target_vigor.cpp" line="-120"/>
+        <location filename="../model/target/target_vigor.cpp" line="-156"/>
         <source>Compare contact: ON while S1 ? S2</source>
         <translation>Contatto di confronto: ON mentre S1 ? S2</translation>
     </message>
@@ -3770,6 +3856,26 @@ Editor di schemi ladder e liste istruzioni per VPC, Vigor, CPM1 e PL110.</transl
         <translation>relè di passo ritentivi</translation>
     </message>
     <message>
+        <location line="+9"/>
+        <source>timers (100 ms)</source>
+        <translation>temporizzatori (100 ms)</translation>
+    </message>
+    <message>
+        <location line="+2"/>
+        <source>timers (10 ms)</source>
+        <translation>temporizzatori (10 ms)</translation>
+    </message>
+    <message>
+        <location line="+3"/>
+        <source>accumulating timers (1 ms)</source>
+        <translation>temporizzatori a ritenzione (1 ms)</translation>
+    </message>
+    <message>
+        <location line="+5"/>
+        <source>accumulating timers (100 ms)</source>
+        <translation>temporizzatori a ritenzione (100 ms)</translation>
+    </message>
+    <message>
         <location line="+5"/>
         <source>latched counters</source>
         <translation>contatori ritentivi</translation>
@@ -3795,7 +3901,13 @@ Editor di schemi ladder e liste istruzioni per VPC, Vigor, CPM1 e PL110.</transl
         <translation>registri speciali</translation>
     </message>
     <message>
-        <location line="+5"/>
+        <location line="+8"/>
+        <location line="+4"/>
+        <source>index registers</source>
+        <translation>registri indice</translation>
+    </message>
+    <message>
+        <location line="+6"/>
         <source>ON while the PLC runs</source>
         <translation>ON mentre il PLC è in RUN</translation>
     </message>
@@ -3811,6 +3923,16 @@ Editor di schemi ladder e liste istruzioni per VPC, Vigor, CPM1 e PL110.</transl
     </message>
     <message>
         <location line="+6"/>
+        <source>RS instruction: 8-bit mode (OFF: 16-bit)</source>
+        <translation>Istruzione RS: modalità 8 bit (OFF: 16 bit)</translation>
+    </message>
+    <message>
+        <location line="+2"/>
+        <source>SMOV works on hexadecimal digits</source>
+        <translation>SMOV opera su cifre esadecimali</translation>
+    </message>
+    <message>
+        <location line="+2"/>
         <source>ON for one scan when an MBUS cycle completes</source>
         <translation>ON per una scansione al termine di un ciclo MBUS</translation>
     </message>
@@ -3971,11 +4093,51 @@ Editor di schemi ladder e liste istruzioni per VPC, Vigor, CPM1 e PL110.</transl
     </message>
     <message>
         <location line="+11"/>
-        <source>On-delay timer, 100 ms units</source>
-        <translation>Temporizzatore all&apos;eccitazione, unità di 100 ms</translation>
+        <source>On-delay timer: T0..T199 100 ms, T200..T245 10 ms units; T246..T249 1 ms, T250..T255 100 ms accumulating (reset with RST)</source>
+        <translation>Temporizzatore di ritardo all&apos;inserzione: T0..T199 in unità di 100 ms, T200..T245 di 10 ms; T246..T249 1 ms, T250..T255 100 ms a ritenzione (azzerati con RST)</translation>
+    </message>
+    <message>
+        <location line="+94"/>
+        <source>Convert n ASCII characters from S to hexadecimal in D</source>
+        <translation>Converte n caratteri ASCII da S in esadecimale in D</translation>
+    </message>
+    <message>
+        <location line="+4"/>
+        <source>Convert n hexadecimal digits from S to ASCII in D</source>
+        <translation>Converte n cifre esadecimali da S in ASCII in D</translation>
+    </message>
+    <message>
+        <location line="+5"/>
+        <source>Serial communication on CP2: send m words from S, receive n words into D</source>
+        <translation>Comunicazione seriale su CP2: invia m word da S, riceve n word in D</translation>
     </message>
     <message>
         <location line="+7"/>
+        <source>Easy Link between PLCs: table from S1, working area S2</source>
+        <translation>Easy Link tra PLC: tabella da S1, area di lavoro S2</translation>
+    </message>
+    <message>
+        <location line="+5"/>
+        <source>MODBUS master: table from S1, working area S2</source>
+        <translation>Master MODBUS: tabella da S1, area di lavoro S2</translation>
+    </message>
+    <message>
+        <location line="+5"/>
+        <source>Read the variable resistor (volume) VRn into D</source>
+        <translation>Legge il potenziometro VRn in D</translation>
+    </message>
+    <message>
+        <location line="+3"/>
+        <source>Swap the high and low bytes of D</source>
+        <translation>Scambia il byte alto e il byte basso di D</translation>
+    </message>
+    <message>
+        <location line="+5"/>
+        <source>Move m2 digits of S from digit m1 to D from digit n</source>
+        <translation>Sposta m2 cifre di S dalla cifra m1 in D dalla cifra n</translation>
+    </message>
+    <message>
+        <location line="-119"/>
         <source>Counter: counts rising edges, reset with RST</source>
         <translation>Contatore: conta i fronti di salita, reset con RST</translation>
     </message>
@@ -3990,12 +4152,12 @@ Editor di schemi ladder e liste istruzioni per VPC, Vigor, CPM1 e PL110.</transl
         <translation>Fine dello step ladder</translation>
     </message>
     <message>
-        <location line="+9"/>
+        <location line="+8"/>
         <source>Move S to D</source>
         <translation>Sposta S in D</translation>
     </message>
     <message>
-        <location line="+2"/>
+        <location line="+6"/>
         <source>Move n words from S to D</source>
         <translation>Sposta n word da S a D</translation>
     </message>
@@ -4070,7 +4232,7 @@ Editor di schemi ladder e liste istruzioni per VPC, Vigor, CPM1 e PL110.</transl
         <translation>D = il valore delle cifre BCD di S</translation>
     </message>
     <message>
-        <location line="+4"/>
+        <location line="+8"/>
         <source>Read n words of special module m1, from m2</source>
         <translation>Legge n word dal modulo speciale m1, da m2</translation>
     </message>
@@ -4088,11 +4250,6 @@ Editor di schemi ladder e liste istruzioni per VPC, Vigor, CPM1 e PL110.</transl
         <location line="+3"/>
         <source>Refresh n inputs or outputs now</source>
         <translation>Aggiorna subito n ingressi o uscite</translation>
-    </message>
-    <message>
-        <location line="+6"/>
-        <source>Communication or conversion instruction</source>
-        <translation>Istruzione di comunicazione o di conversione</translation>
     </message>
     <message>
         <location filename="../model/target/target_vpc.cpp" line="-41"/>
@@ -4191,7 +4348,7 @@ Editor di schemi ladder e liste istruzioni per VPC, Vigor, CPM1 e PL110.</transl
         <translation>Omron Host Link (modo C)</translation>
     </message>
     <message>
-        <location filename="../model/target/target_pl110_maps.cpp" line="+16"/>
+        <location filename="../model/target/target_pl110_maps.cpp" line="+20"/>
         <source>PL110 MODBUS RTU slave</source>
         <translation>PL110 slave MODBUS RTU</translation>
     </message>
@@ -4201,7 +4358,7 @@ Editor di schemi ladder e liste istruzioni per VPC, Vigor, CPM1 e PL110.</transl
         <translation>Vigor Computer Link</translation>
     </message>
     <message>
-        <location line="+19"/>
+        <location line="+25"/>
         <source>Vigor CP2 MODBUS slave</source>
         <translation>Vigor CP2 slave MODBUS</translation>
     </message>
@@ -4232,7 +4389,7 @@ Editor di schemi ladder e liste istruzioni per VPC, Vigor, CPM1 e PL110.</transl
 <context>
     <name>rung::simulator::Compiler</name>
     <message>
-        <location filename="../simulator/compiler_detail.h" line="+101"/>
+        <location filename="../simulator/compiler_detail.h" line="+103"/>
         <source>%1 needs operand %2</source>
         <translation>%1 richiede l&apos;operando %2</translation>
     </message>
@@ -4242,27 +4399,39 @@ Editor di schemi ladder e liste istruzioni per VPC, Vigor, CPM1 e PL110.</transl
         <translation>%1 non è un operando a bit</translation>
     </message>
     <message>
-        <location line="+19"/>
+        <location line="+23"/>
         <source>constant %1 is out of range</source>
         <translation>la costante %1 è fuori campo</translation>
     </message>
     <message>
-        <location line="+5"/>
+        <location filename="../simulator/compile_operands.cpp" line="+25"/>
+        <source>%1 is not an index register</source>
+        <translation>%1 non è un registro indice</translation>
+    </message>
+    <message>
+        <location line="+6"/>
+        <source>%1 is a constant; a device is expected here</source>
+        <translation>%1 è una costante; qui è atteso un operando</translation>
+    </message>
+    <message>
+        <location line="+2"/>
+        <location filename="../simulator/compiler_detail.h" line="+5"/>
         <source>%1 is not a word device or a constant</source>
         <translation>%1 non è un operando word né una costante</translation>
     </message>
     <message>
-        <location line="+20"/>
+        <location line="+16"/>
+        <location filename="../simulator/compiler_detail.h" line="+24"/>
         <source>%1 cannot be written</source>
         <translation>%1 non può essere scritto</translation>
     </message>
     <message>
-        <location line="+3"/>
+        <location filename="../simulator/compiler_detail.h" line="+3"/>
         <source>%1 is not a word device</source>
         <translation>%1 non è un operando word</translation>
     </message>
     <message>
-        <location line="+15"/>
+        <location line="+17"/>
         <source>%1 needs the next word too, which does not exist</source>
         <translation>%1 richiede anche la word successiva, che non esiste</translation>
     </message>
@@ -4282,7 +4451,7 @@ Editor di schemi ladder e liste istruzioni per VPC, Vigor, CPM1 e PL110.</transl
         <translation>%1 non è un temporizzatore</translation>
     </message>
     <message>
-        <location line="+47"/>
+        <location line="+54"/>
         <source>%1 is not a counter</source>
         <translation>%1 non è un contatore</translation>
     </message>
@@ -4312,12 +4481,12 @@ Editor di schemi ladder e liste istruzioni per VPC, Vigor, CPM1 e PL110.</transl
         <translation>%1 richiede un numero da 1 a %2</translation>
     </message>
     <message>
-        <location line="+14"/>
+        <location line="+15"/>
         <source>the block of %1 words runs past the end of its area</source>
         <translation>il blocco di %1 word va oltre la fine della sua area</translation>
     </message>
     <message>
-        <location filename="../simulator/compiler.cpp" line="+140"/>
+        <location filename="../simulator/compiler.cpp" line="+153"/>
         <source>unknown instruction</source>
         <translation>istruzione sconosciuta</translation>
     </message>
@@ -4342,7 +4511,7 @@ Editor di schemi ladder e liste istruzioni per VPC, Vigor, CPM1 e PL110.</transl
         <translation>%1 non è un operando</translation>
     </message>
     <message>
-        <location line="+97"/>
+        <location line="+100"/>
         <source>the program has no target</source>
         <translation>il programma non ha una famiglia PLC</translation>
     </message>
@@ -4370,7 +4539,7 @@ Editor di schemi ladder e liste istruzioni per VPC, Vigor, CPM1 e PL110.</transl
         <translation>il risultato %1 è fuori da 0..9999; viene scritto %2</translation>
     </message>
     <message>
-        <location line="+353"/>
+        <location line="+382"/>
         <location line="+56"/>
         <source>division by zero; the destination is unchanged</source>
         <translation>divisione per zero; la destinazione resta invariata</translation>
@@ -4379,6 +4548,16 @@ Editor di schemi ladder e liste istruzioni per VPC, Vigor, CPM1 e PL110.</transl
         <location line="+21"/>
         <source>MOVIND index %1 is outside 0..%2; nothing is written</source>
         <translation>l&apos;indice %1 di MOVIND è fuori da 0..%2; non viene scritto nulla</translation>
+    </message>
+    <message>
+        <location filename="../simulator/engine_operands.cpp" line="+87"/>
+        <source>operation error: %1 with %2 = %3 reaches %4, which does not exist; the instruction is not executed</source>
+        <translation>errore operativo: %1 con %2 = %3 raggiunge %4, che non esiste; l&apos;istruzione non viene eseguita</translation>
+    </message>
+    <message>
+        <location line="+7"/>
+        <source>operation error: %1 reaches %2, which does not exist; the instruction is not executed</source>
+        <translation>errore operativo: %1 raggiunge %2, che non esiste; l&apos;istruzione non viene eseguita</translation>
     </message>
 </context>
 <context>

@@ -52,6 +52,10 @@ struct ProtocolRange {
     int start = 0;
     int origin = 0;
     int last = -1;
+    // The manual marks the range R (read only) for the protocol. The protocol's access, not
+    // the program's: PL110 inputs are R/W as bits 1600.. over MODBUS, R as words 100..
+    // (seed 003 3.2), while no instruction may write them (Area::writable).
+    bool readOnly = false;
 };
 
 // Vigor Computer Link: 51h / 61h move at most 128 bytes (seed 001, B-5). The Vigor link
@@ -91,6 +95,7 @@ struct MappedDevice {
     int bit = -1;
     DevicePart part = DevicePart::Bit;
     int unitOffset = 0;
+    bool readOnly = false; // ProtocolRange::readOnly: a write to it is refused
 };
 
 const ProtocolMap *findProtocolMap(const Target &target, ProtocolId protocol);
