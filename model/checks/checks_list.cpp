@@ -46,6 +46,7 @@ public:
         endAndNesting(m_list, m_found);
         offerEnd();
         operands();
+        switchedElements(m_list, m_found);
         duplicates();
         length();
         // Drawn only here: a form-only check (betterForm) needs no drawing of the whole list.

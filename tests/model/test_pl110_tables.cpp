@@ -142,3 +142,34 @@ TEST(Pl110Sm013, TimersFrom49AreTheirOwnAreaGatedBySm013) {
     // T49's preset is PT49, as T1's is PT1.
     EXPECT_STREQ(pl110().area(at("PT49").area).presetsOf, "T49");
 }
+
+// OP006 (2.1.2): T49..T64 run only with SM0.13 ON, C1..C16 only with it OFF.
+TEST(Pl110Sm013, ATimerThatNothingSwitchesOnIsAWarning) {
+    std::vector<Diagnostic> found = check("LD I1\nTON T49 5\nEND");
+    ASSERT_EQ(count(found, "OP006"), 1);
+    for (const Diagnostic &d : found)
+        if (d.code == QLatin1String("OP006")) {
+            EXPECT_EQ(d.severity, Severity::Warning);
+            EXPECT_EQ(d.location.line, 2);
+            EXPECT_EQ(d.message, QStringLiteral("T49 runs only while SM0.13 is ON, and no "
+                                                "instruction sets SM0.13"));
+        }
+    EXPECT_EQ(count(check("LD I2\nOUT SM0.13\nLD I1\nTON T49 5\nEND"), "OP006"), 0);
+    EXPECT_EQ(count(check("LD I2\nSBIT SM0 13\nLD I1\nTON T64 5\nEND"), "OP006"), 0);
+    EXPECT_EQ(count(check("LD I1\nTON T48 5\nEND"), "OP006"), 0);
+}
+
+TEST(Pl110Sm013, ACounterBesideAWriteOfSm013IsAWarning) {
+    std::vector<Diagnostic> found =
+        check("LD I2\nSBIT SM0 13\nLD I1\nLD I2\nLD I3\nMUP C1 5\nEND");
+    ASSERT_EQ(count(found, "OP006"), 1);
+    for (const Diagnostic &d : found)
+        if (d.code == QLatin1String("OP006")) {
+            EXPECT_EQ(d.location.line, 6);
+            EXPECT_TRUE(d.message.contains(QLatin1String("C1 stops while SM0.13 is ON, and line 2")))
+                << d.message.toStdString();
+            ASSERT_EQ(d.related.size(), 1u);
+            EXPECT_EQ(d.related[0].line, 2);
+        }
+    EXPECT_EQ(count(check("LD I1\nLD I2\nLD I3\nMUP C1 5\nLD I1\nTON T1 5\nEND"), "OP006"), 0);
+}

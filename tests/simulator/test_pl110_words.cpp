@@ -127,3 +127,15 @@ TEST(VigorTimers, TenMillisecondTimersCountHundredthsAtEveryScanPeriod) {
     EXPECT_EQ(s.value("T249"), 1000);
     EXPECT_TRUE(s.bit("T249"));
 }
+
+// docs/targets.md "Scan time": seed 004's D1010..D1012 (Delta's WPLSoft family) are data on the
+// Vigor - seed 001's LINK / MBUS tables use D1000.. as data - and the scan time is D9010..D9012.
+TEST(VigorScanTime, D9010HoldsTheScanTimeAndD1010IsAPlainRegister) {
+    Vigor s("LD M9000\nMOV K1234 D1010\nEND");
+    ASSERT_TRUE(s.result.ok());
+    s.engine->setPeriodMs(10);
+    s.engine->runScans(2);
+    EXPECT_EQ(s.value("D9010"), 100); // 10 ms in 0.1 ms
+    EXPECT_EQ(s.value("D1010"), 1234);
+    EXPECT_EQ(s.value("D1011"), 0);
+}

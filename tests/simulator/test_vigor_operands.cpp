@@ -197,3 +197,16 @@ TEST(VigorIndexRegisters, ForcedBitsOfAGroupKeepTheirValue) {
     s.engine->scan();
     EXPECT_EQ(s.bitsOf({"Y0", "Y1", "Y2"}), "010");
 }
+
+// On the octal areas an index counts elements: K1X0Z0 with Z0 = 8 starts at X10 (the FX
+// family's X0Z with Z = 8).
+TEST(VigorIndexRegisters, AnIndexCountsElementsOnOctalAreas) {
+    Vigor s("LD M9000\nMOV K1X0Z0 D0\nLD M9000\nMOV K15 K1Y0Z0\nEND");
+    ASSERT_TRUE(s.result.ok());
+    s.engine->writeWord(s.at("Z0"), 8);
+    s.in("X10", true);
+    s.in("X12", true);
+    s.engine->scan();
+    EXPECT_EQ(s.value("D0"), 5);
+    EXPECT_EQ(s.bitsOf({"Y7", "Y10", "Y11", "Y12", "Y13", "Y14"}), "011110");
+}
