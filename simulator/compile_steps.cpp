@@ -62,7 +62,14 @@ void Compiler::compileTimer(const model::Instruction &ins, Step &s) {
     loadPresetFromMemory(t->address, s);
     if (t->address.index < m_sem.downTimersBelow)
         s.flags |= kDown;
-    double base = ins.spec->timerBaseMs > 0 ? ins.spec->timerBaseMs : m_target.defaultTimerBaseMs;
+    // The instruction's own base (CPM1 TIMH), else the timer area's (Vigor T200.. 10 ms),
+    // else the target's.
+    const model::Area &area = m_target.area(t->address.area);
+    double base = ins.spec->timerBaseMs > 0 ? ins.spec->timerBaseMs
+                  : area.timerBaseMs > 0    ? area.timerBaseMs
+                                            : m_target.defaultTimerBaseMs;
+    if (area.timerMode == model::TimerMode::Accumulating)
+        s.op = kTimerAccumulates; // Vigor T246..T255: the time stays while the coil is OFF
     if (m_sem.timerCountsInWord) {
         // PL110 TON / TOFF / TONR T PT [base]: the time base is the third operand (10, 100 or
         // 1000 ms, seed 003 4.2.4); the current value lives in the T word so that
@@ -281,7 +288,8 @@ void Compiler::compileApply(const model::Instruction &ins, Step &s) {
             return m_layout->word(last) == m_layout->word(o.address) + s.count - 1 &&
                    m_layout->word(last) >= 0;
         };
-        if (!fits(ins.operands[1]) || (s.x.index >= 0 && !fits(ins.operands[0])))
+        // An indexed block is checked where it lands, each time it runs.
+        if ((s.dest >= 0 && !fits(ins.operands[1])) || (s.x.index >= 0 && !fits(ins.operands[0])))
             error(ins, Tr::tr("the block of %1 words runs past the end of its area").arg(s.count));
         break;
     }

@@ -83,6 +83,19 @@ void Compiler::compileSystem() {
         m_program->parallelInWord = m_layout->word(i);
         bits(m_sem.parallelIn, m_program->parallelInBits);
     }
+    // Timers / counters that run only while a system bit allows (Area::enabledBy).
+    for (int k = 0; k < m_layout->areaCount(); ++k) {
+        const AreaLayout &l = m_layout->area(k);
+        const model::Area &area = m_target.area(k);
+        if (!area.enabledBy || l.stateBase < 0)
+            continue;
+        const model::Address gate = addr(QString::fromLatin1(area.enabledBy));
+        if (m_program->gates.empty())
+            m_program->gates.resize(static_cast<std::size_t>(m_layout->elementStateCount()));
+        for (int e = 0; e < l.count; ++e)
+            m_program->gates[static_cast<std::size_t>(l.stateBase + e)] =
+                ElementGate{m_layout->bit(gate), area.enabledWhenOn};
+    }
     for (int k = 0; k < m_layout->areaCount(); ++k) {
         const AreaLayout &l = m_layout->area(k);
         const model::Area &area = m_target.area(k);
@@ -279,6 +292,9 @@ CompileResult Compiler::run() {
             s.code = Code::Nop;
             break;
         }
+        if (m_resolve)
+            s.flags |= kResolve;
+        m_resolve = false;
     }
     m_muted = false;
     resolveJumps();

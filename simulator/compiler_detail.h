@@ -88,6 +88,8 @@ private:
         m_diagnostics.push_back(std::move(d));
     }
     QString describe(const model::Operand &o) const {
+        if (o.modified())
+            return model::formatOperand(m_target, o);
         if (o.kind == model::Operand::Kind::Device)
             return model::formatAddress(m_target, o.address);
         if (o.kind == model::Operand::Kind::Constant)
@@ -124,6 +126,10 @@ private:
         WordOperand w;
         if (!o)
             return w;
+        if (resolvedAtRunTime(*o)) {
+            w.index = refFor(ins, *o, i, false);
+            return w;
+        }
         if (o->kind == model::Operand::Kind::Constant) {
             w.constant = static_cast<std::int32_t>(o->constant.value);
             // CPM1 "#0012" is the word 0012h (BCD digits, W353): MOV(21) #0012 DM 0000 stores
@@ -148,6 +154,10 @@ private:
         const model::Operand *o = operand(ins, i);
         if (!o)
             return -1;
+        if (resolvedAtRunTime(*o) && !(setValue && isTimerOrCounter(*o))) {
+            *width = 16; // the engine gives the resolved word's own width
+            return refFor(ins, *o, i, true);
+        }
         int index = -1;
         if (isDevice(*o)) {
             const bool tc = kindOf(*o) == AreaKind::Timer || kindOf(*o) == AreaKind::Counter;
@@ -172,6 +182,8 @@ private:
         const model::Operand *o = operand(ins, i);
         if (!o || !isDevice(*o))
             return -1;
+        if (resolvedAtRunTime(*o))
+            return nextRef(ins, *o, i);
         model::Address a = o->address;
         ++a.index;
         const int w = m_layout->word(a);
@@ -214,6 +226,15 @@ private:
         m_depth -= n;
     }
 
+    // compile_operands.cpp: operands the engine resolves before the step runs (OperandRef).
+    bool resolvedAtRunTime(const model::Operand &o) const;
+    bool isTimerOrCounter(const model::Operand &o) const {
+        return isDevice(o) && (kindOf(o) == AreaKind::Timer || kindOf(o) == AreaKind::Counter);
+    }
+    std::int32_t refFor(const model::Instruction &ins, const model::Operand &o, std::size_t i,
+                        bool dest, int offset = 0);
+    std::int32_t nextRef(const model::Instruction &ins, const model::Operand &o, std::size_t i);
+
     void compileContact(const model::Instruction &ins, Step &s);
     void compileTimer(const model::Instruction &ins, Step &s);
     void compileCounter(const model::Instruction &ins, Step &s);
@@ -232,6 +253,7 @@ private:
     bool m_failed = false;
     bool m_muted = false;     // the instruction\'s operand rules already said what is wrong
     bool m_rungStart = false; // the instruction being compiled starts a rung
+    bool m_resolve = false;   // the instruction has an OperandRef: its step gets kResolve
     int m_depth = 0;
     int m_push = 0;
     int m_stlArea = -1;

@@ -29,7 +29,8 @@ qint64 clockPeriodMs(model::SystemRole role) {
 
 Engine::Engine(std::shared_ptr<const Program> program)
     : m_program(std::move(program)) {
-    const auto words = static_cast<std::size_t>(m_program->layout->wordCount());
+    m_scratch = static_cast<std::size_t>(m_program->layout->wordCount());
+    const std::size_t words = m_scratch + kScratchWords;
     m_words.assign(words, 0);
     m_write.assign(words, 0);
     m_stimulus.assign(words, 0);
@@ -176,6 +177,13 @@ void Engine::endScan() {
     // OFF while its RESET is ON (the box keeps RESET in bit 2 of its state).
     for (const std::int32_t k : p.endOfScanCounters) {
         const Step &s = p.steps[static_cast<std::size_t>(k)];
+        if (!p.gates.empty() && s.slot >= 0) { // a counter off by SM0.13 keeps its bit
+            const ElementGate &g = p.gates[static_cast<std::size_t>(s.slot)];
+            if (g.bit.valid() &&
+                ((static_cast<std::uint32_t>(m_words[static_cast<std::size_t>(g.bit.word)]) &
+                  g.bit.mask) != 0) != g.whenOn)
+                continue;
+        }
         const std::int32_t current = m_words[static_cast<std::size_t>(s.dest)];
         const std::int32_t set = m_words[static_cast<std::size_t>(s.y.index)];
         const bool resetOn = (m_states[static_cast<std::size_t>(s.slot)].previous & 4) != 0;
@@ -223,8 +231,7 @@ bool Engine::bit(const model::Address &address) const {
 }
 
 std::int32_t Engine::value(const model::Address &address) const {
-    const int w = layout().word(address);
-    return w >= 0 ? m_words[static_cast<std::size_t>(w)] : 0;
+    return layout().value(m_words, address);
 }
 
 std::int32_t Engine::setValue(const model::Address &address) const {
@@ -249,6 +256,11 @@ bool Engine::writeWord(const model::Address &address, qint64 value) {
         return false;
     const auto i = static_cast<std::size_t>(w);
     const std::int32_t v = wrapToWidth(value, layout().wordBits(address));
+    if (layout().area(address.area).doubleWords) { // PL110 VD: high word, then low word
+        storeWord(i, static_cast<std::uint32_t>(v) >> 16, 16);
+        storeWord(i + 1, v, 16);
+        return true;
+    }
     if (isStimulus(address))
         m_stimulus[i] = v;
     storeWord(i, v, layout().wordBits(address));
@@ -318,9 +330,11 @@ void Engine::powerCycle() {
 Snapshot Engine::snapshot() const {
     Snapshot s;
     s.layout = m_program->layout;
-    s.words = m_words;
-    s.forceMask = m_forceMask;
-    s.forceValue = m_forceValue;
+    s.words.assign(m_words.begin(), m_words.begin() + static_cast<std::ptrdiff_t>(m_scratch));
+    s.forceMask.assign(m_forceMask.begin(),
+                       m_forceMask.begin() + static_cast<std::ptrdiff_t>(m_scratch));
+    s.forceValue.assign(m_forceValue.begin(),
+                        m_forceValue.begin() + static_cast<std::ptrdiff_t>(m_scratch));
     s.statistics = m_stats;
     if (m_record)
         s.powerFlow.assign(m_flow.begin(), m_flow.end());

@@ -82,6 +82,14 @@ private:
 
     void beginScan();
     template <bool Record> void execute();
+    // engine_operands.cpp: a step with kResolve runs as a copy whose OperandRefs are words of
+    // the image or constants; false when an indexed operand lands outside its areas (the
+    // PLC's operation error: the instruction does nothing).
+    bool resolveStep(const Step &s, std::size_t step, Step &resolved);
+    void writeBack(const Step &s, const Step &resolved, std::int32_t *bits);
+    std::int64_t resolveElement(const OperandRef &ref, std::size_t step, int extent, bool *ok);
+    std::int32_t readBits(const OperandRef &ref, std::int64_t element) const;
+    QString refText(const OperandRef &ref) const;
     void endScan();
     void applyForces(std::int32_t *words) const;
     void rebuildForcedWords();
@@ -105,6 +113,11 @@ private:
                                                                 std::int64_t value);
 
     std::shared_ptr<const Program> m_program;
+    // The layout's words, then kScratchWords: a bit group or double word written by a step
+    // is computed there and spread afterwards (writeBack).
+    static constexpr std::size_t kScratchWords = 1;
+    std::size_t m_scratch = 0;      // index of the scratch word
+    std::int64_t m_destElement = 0; // the element a resolved bit-group destination starts at
     std::vector<std::int32_t> m_words;
     std::vector<std::int32_t> m_write; // VPC: the bit image written during the scan
     std::vector<std::int32_t> m_stimulus;

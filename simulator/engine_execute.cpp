@@ -159,6 +159,12 @@ template <bool Record> void Engine::execute() {
         return (static_cast<std::uint32_t>(R[b.word]) & b.mask) != 0;
     };
     auto rdw = [R](const WordOperand &o) { return o.index >= 0 ? R[o.index] : o.constant; };
+    auto gateOpen = [&](std::int32_t slot) {
+        if (p.gates.empty() || slot < 0)
+            return true;
+        const ElementGate &g = p.gates[static_cast<std::size_t>(slot)];
+        return !g.bit.valid() || rd(g.bit) == g.whenOn;
+    };
     auto wrw = [&](std::int32_t index, std::int64_t v, int width) {
         storeWord(static_cast<std::size_t>(index), v, width);
     };
@@ -172,8 +178,18 @@ template <bool Record> void Engine::execute() {
     bool stepActive = true;
     bool gate = true;
 
+    Step resolved;
     for (std::size_t i = 0; i < n; ++i) {
-        const Step &s = steps[i];
+        const Step *step = &steps[i];
+        if (step->flags & kResolve) [[unlikely]] {
+            if (!resolveStep(*step, i, resolved)) {
+                if constexpr (Record)
+                    m_flow[i] = acc;
+                continue;
+            }
+            step = &resolved;
+        }
+        const Step &s = *step;
         switch (s.code) {
         case Code::Load:
         case Code::LoadEdge:
@@ -288,21 +304,26 @@ template <bool Record> void Engine::execute() {
         }
         case Code::Timer: {
             ElementState &st = m_states[static_cast<std::size_t>(s.slot)];
+            if (!gateOpen(s.slot)) // Area::enabledBy (PL110 SM0.13): the box does nothing
+                break;
             const std::int32_t set = readSet(s, i);
             if (set < 0)
                 break;
             std::int64_t units = 0;
+            const bool keeps = s.op == kTimerAccumulates; // only RST clears it
             if (!acc) {
-                st.accumulated = 0;
+                if (!keeps)
+                    st.accumulated = 0;
                 st.running = 0;
             } else {
                 if (st.running)
                     st.accumulated = std::min<std::int64_t>(st.accumulated + period,
                                                             std::int64_t{set} * s.count);
                 st.running = 1;
-                units = st.accumulated / s.count;
             }
-            put(W, s.bit, acc && units >= set);
+            if (acc || keeps)
+                units = st.accumulated / s.count;
+            put(W, s.bit, (acc || keeps) && units >= set);
             R[s.dest] = static_cast<std::int32_t>(
                 (s.flags & kDown) ? set - units : std::min<std::int64_t>(units, timerMax));
             break;
@@ -315,6 +336,8 @@ template <bool Record> void Engine::execute() {
                 input = bsp > 0 ? blocks[--bsp] : false;
                 reset = acc;
             }
+            if (!gateOpen(s.slot)) // Area::enabledBy (PL110 SM0.13): the box does nothing
+                break;
             const std::int32_t set = readSet(s, i);
             if (set < 0)
                 break;
@@ -334,6 +357,8 @@ template <bool Record> void Engine::execute() {
             const bool reset = acc;
             const bool down = bsp > 0 ? blocks[--bsp] : false;
             const bool up = bsp > 0 ? blocks[--bsp] : false;
+            if (!gateOpen(s.slot)) // Area::enabledBy (PL110 SM0.13): the box does nothing
+                break;
             const std::int32_t set = readSet(s, i);
             if (set < 0)
                 break;
@@ -361,6 +386,8 @@ template <bool Record> void Engine::execute() {
             // PL110 (seed 003 4.2.4): the current value counts time-base units in the T word
             // and saturates at Limits::timerMax; st.accumulated holds the ms not yet a whole unit.
             ElementState &st = m_states[static_cast<std::size_t>(s.slot)];
+            if (!gateOpen(s.slot)) // Area::enabledBy (PL110 SM0.13): the box does nothing
+                break;
             const std::int32_t set = readSet(s, i);
             if (set < 0)
                 break;
@@ -423,6 +450,8 @@ template <bool Record> void Engine::execute() {
             const bool reset = acc;
             const bool down = bsp > 0 ? blocks[--bsp] : false;
             const bool up = bsp > 0 ? blocks[--bsp] : false;
+            if (!gateOpen(s.slot)) // Area::enabledBy (PL110 SM0.13): the box does nothing
+                break;
             const std::int32_t set = readSet(s, i);
             if (set < 0)
                 break;
@@ -611,6 +640,8 @@ template <bool Record> void Engine::execute() {
                 m_flow[i] = acc;
             return;
         }
+        if (step == &resolved) [[unlikely]]
+            writeBack(steps[i], resolved, W);
         if constexpr (Record)
             m_flow[i] = acc;
     }

@@ -84,11 +84,15 @@ enum StepFlag : std::uint8_t {
     kRungStart = 16,
     kOneInput = 32, // counter reset only by RST (Vigor)
     kDecimal4 = 64, // VPC transfer: the result is a four-digit decimal 0..9999 (seed 000)
+    kResolve = 128, // an operand is an OperandRef (x, y, dest or slot <= kRefBase): see below
 };
 
 enum class TransferKind : std::uint8_t { Assign, Add, Subtract };
 
 enum class PlTimerMode : std::uint8_t { OnDelay, OffDelay, Accumulating };
+
+// Code::Timer's op: the timer keeps its time while its coil is OFF (Vigor T246..T255).
+constexpr std::uint8_t kTimerAccumulates = 1;
 
 enum class WordOp : std::uint8_t { And, Or, Xor, Not, ToBcd, FromBcd };
 
@@ -102,6 +106,45 @@ constexpr std::int64_t toBcd(std::int64_t value) {
 }
 
 enum class MathOp : std::uint8_t { Add, Sub, Mul, Div, Or, And, Xor, Shl, Shr };
+
+// An operand the compiler cannot reduce to one word of the image (docs/simulator.md,
+// "Operands resolved at run time"): a digit-designated group of bits (Vigor K4Y0), an operand
+// modified by an index register (D0E0, K4M0E1, K10F0), a double word (PL110 VD0 = V0 high,
+// V1 low). A step holding one has kResolve; the engine resolves its operands into a copy of
+// the step before running it (engine_operands.cpp).
+struct OperandRef {
+    enum class Kind : std::uint8_t { Word, Bits, Constant, DoubleWord };
+    Kind kind = Kind::Word;
+    std::int32_t area = -1;      // model area of the base (names it in a runtime error)
+    std::int32_t element = 0;    // element number of the base; Constant: the value
+    std::int32_t index = -1;     // the index register's word, -1: none
+    std::int32_t indexArea = -1; // the index register's model area and element (messages)
+    std::int32_t indexElement = 0;
+    std::int32_t bits = 0;         // Bits: how many, from the element on
+    std::int32_t word = -1;        // DoubleWord: the high word (the low word follows it)
+    std::int32_t firstSegment = 0; // Program::segments of the areas sharing the base's prefix
+    std::int32_t segmentCount = 0;
+    std::int32_t operand = 0; // index of the operand in its instruction (for messages)
+};
+
+// The elements first..last of an area and where they sit in the image: packed bits from
+// word `base` (bits) or one word each from `base`.
+struct Segment {
+    std::int32_t first = 0;
+    std::int32_t last = -1;
+    std::int32_t base = -1;
+    std::uint8_t wordBits = 16;
+    bool bits = false;
+};
+
+// x.index, y.index, dest and (MUL / DIV) slot hold -2 - k for OperandRef k.
+constexpr std::int32_t kRefBase = -2;
+constexpr std::int32_t refCode(std::size_t ref) {
+    return kRefBase - static_cast<std::int32_t>(ref);
+}
+constexpr std::size_t refOf(std::int32_t code) {
+    return static_cast<std::size_t>(kRefBase - code);
+}
 
 // A word operand: a memory word, or a constant when index < 0.
 struct WordOperand {
@@ -136,12 +179,21 @@ struct SystemBinding {
     int unitUs = 0; // scan-time words: microseconds per count, SystemDevice::unitUs
 };
 
+// A timer / counter element that runs only while a bit is ON (whenOn) or OFF
+// (Area::enabledBy; PL110 SM0.13 for T49..T64 and C1..C16).
+struct ElementGate {
+    BitRef bit; // invalid: always runs
+    bool whenOn = true;
+};
+
 struct Program {
     std::shared_ptr<const MemoryLayout> layout;
     std::vector<Step> steps; // index = instruction index in the list
     std::vector<int> lines;  // source line of each step
     std::vector<BitRef> bitLists;
     std::vector<ResetTarget> resets;
+    std::vector<OperandRef> refs; // operands resolved at run time (kResolve)
+    std::vector<Segment> segments;
     std::vector<SystemBinding> system;
     int edgeSlots = 0;
     int maxBlockDepth = 0;
@@ -161,6 +213,8 @@ struct Program {
     std::vector<BitRef> parallelInBits;
     // PL110 MUP / MDOWN steps whose count bit is compared at END (seed 003 4.2.5).
     std::vector<std::int32_t> endOfScanCounters;
+    // Per timer / counter element state slot; empty when no area has Area::enabledBy.
+    std::vector<ElementGate> gates;
     // Constant presets the program may read and write (PL110 PT/PV): (set-value word, value),
     // loaded when the engine starts and at each power cycle.
     std::vector<std::pair<std::int32_t, std::int32_t>> presetLoads;

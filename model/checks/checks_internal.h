@@ -25,6 +25,8 @@ Finding &addFinding(std::vector<Finding> &found, const InstructionList &list, co
                     Severity severity, int index, const QString &message);
 // END missing or not last, IL/ILC, JMP/JPE (JME) and STL/RET nesting.
 void endAndNesting(const InstructionList &list, std::vector<Finding> &found);
+// OP006: timers / counters a system bit switches (Area::enabledBy) left off by the program.
+void switchedElements(const InstructionList &list, std::vector<Finding> &found);
 
 // A rung of a listing as the converter writes it back. A form is fuzzy only where its text
 // differs from that: the canonical listing never gets a fuzzy-form warning.

@@ -46,6 +46,7 @@ public:
         endAndNesting(m_list, m_found);
         offerEnd();
         operands();
+        switchedElements(m_list, m_found);
         duplicates();
         length();
         // Drawn only here: a form-only check (betterForm) needs no drawing of the whole list.
@@ -392,7 +393,7 @@ private:
                 const Operand &o = ins.operands[static_cast<std::size_t>(b.operand)];
                 Finding &f = add("OP005", Severity::Error, i, b.message);
                 if (o.kind == Operand::Kind::Device)
-                    atOperand(f, i, formatAddress(m_t, o.address));
+                    atOperand(f, i, formatOperand(m_t, o));
             }
             for (std::size_t k = 0; k < ins.operands.size(); ++k) {
                 const Operand &o = ins.operands[k];
@@ -417,20 +418,24 @@ private:
                 }
                 const bool destination =
                     kind == OperandKind::BitDest || kind == OperandKind::WordDest;
-                const QString device = formatAddress(m_t, o.address);
+                const QString device = formatOperand(m_t, o);
+                // A digit-designated destination writes each of its bits (K4M9000: M9000..).
+                const SystemDevice *driven = driveBySystem(o.address);
+                for (int b = 1; destination && !driven && b < o.digits * 4; ++b)
+                    driven = driveBySystem(offsetAddress(m_t, o.address, b, m_model));
                 if (destination && !area.writable && ins.op() != Op::Reset) {
                     atOperand(add("OP002", Severity::Error, i,
                                   Tr::tr("%1 cannot be written: %2 are read-only")
                                       .arg(device, QCoreApplication::translate(
                                                        "rung::model::Target", area.description))),
                               i, device);
-                } else if (destination && driveBySystem(o.address)) {
-                    atOperand(add("OP002", Severity::Error, i,
-                                  Tr::tr("%1 cannot be written: the PLC drives it (%2)")
-                                      .arg(device, QCoreApplication::translate(
-                                                       "rung::model::Target",
-                                                       driveBySystem(o.address)->description))),
-                              i, device);
+                } else if (destination && driven) {
+                    atOperand(
+                        add("OP002", Severity::Error, i,
+                            Tr::tr("%1 cannot be written: the PLC drives it (%2)")
+                                .arg(device, QCoreApplication::translate("rung::model::Target",
+                                                                         driven->description))),
+                        i, device);
                 } else if (kind == OperandKind::BitDest && drivesABit(ins.op()) &&
                            (area.kind == AreaKind::Timer || area.kind == AreaKind::Counter ||
                             (area.kind == AreaKind::Word && o.address.bit < 0))) {

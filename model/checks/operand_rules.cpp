@@ -79,6 +79,26 @@ std::vector<OperandBreach> operandBreaches(const Target &target, const Instructi
             o.address.area >= static_cast<int>(target.areas.size()))
             continue;
         const Area &area = target.area(o.address.area);
+        if (rule.wholeWords && (o.digits > 0 || area.doubleWordsOf)) {
+            // A block counts words: K4M0 or VD0 would make its length mean something else.
+            found.push_back(
+                {at, Tr::tr("%1 moves whole words: %2 cannot be its %3")
+                         .arg(spec.mnemonic, formatOperand(target, o), slotName(rule, k))});
+            continue;
+        }
+        if (!rule.sourceAreas.empty() &&
+            std::none_of(rule.sourceAreas.begin(), rule.sourceAreas.end(),
+                         [&](const char *key) { return area.key == QLatin1String(key); })) {
+            QStringList prefixes;
+            for (const char *key : rule.sourceAreas)
+                if (const int a = areaByKey(target, key); a >= 0)
+                    prefixes << target.area(a).prefix;
+            found.push_back(
+                {at, Tr::tr("%1 takes its %2 from a constant or from %3, not %4")
+                         .arg(spec.mnemonic, slotName(rule, k), prefixes.join(QStringLiteral(", ")),
+                              formatOperand(target, o))});
+            continue;
+        }
         const bool wrongArea = rule.area && area.key != QLatin1String(rule.area);
         if (wrongArea || o.address.index < rule.lowest || o.address.index > rule.highest) {
             // "OUTQI writes only Q1..Q8, not Q9": the range as the listing writes it.

@@ -12,6 +12,10 @@ HistoryRecorder::HistoryRecorder(std::shared_ptr<const MemoryLayout> layout,
 bool HistoryRecorder::watch(const Address &address) {
     if (find(address) >= 0)
         return true;
+    // A double word (PL110 VD) is two words: the recorder follows one word per device.
+    if (address.area >= 0 && address.area < m_layout->areaCount() &&
+        m_layout->area(address.area).doubleWords)
+        return false;
     Device d{address, -1, 0};
     // A bit of a word (D0.3) or a bit device (X0, a timer's done bit) records 0/1; a word,
     // a channel or a timer/counter (its current value) records the value.

@@ -21,8 +21,8 @@ MemoryLayout::MemoryLayout(const Target &target)
             break;
         case AreaKind::Word:
         case AreaKind::Channel:
-            if (a.presetsOf)
-                break; // the set-value words of its timer/counter area, placed below
+            if (a.presetsOf || a.doubleWordsOf)
+                break; // the words of another area, placed below
             l.wordBase = m_words;
             m_words += l.count;
             break;
@@ -58,6 +58,39 @@ MemoryLayout::MemoryLayout(const Target &target)
             of.presetsAddressable = true;
         }
     }
+    // A double-word area is a second name of two words of a word area (PL110 VD0 = V0:V1).
+    for (std::size_t k = 0; k < target.areas.size(); ++k) {
+        const Area &a = target.areas[k];
+        if (!a.doubleWordsOf)
+            continue;
+        for (std::size_t j = 0; j < target.areas.size(); ++j) {
+            const AreaLayout &of = m_areas[j];
+            if (target.areas[j].key != QLatin1String(a.doubleWordsOf) || of.wordBase < 0)
+                continue;
+            AreaLayout &l = m_areas[k];
+            const int skip = a.first - of.first;
+            if (skip < 0)
+                continue;
+            l.count = std::clamp(of.count - 1 - skip, 0, l.count);
+            l.wordBase = of.wordBase + skip;
+            l.doubleWords = true;
+            l.wordBits = 32;
+        }
+    }
+}
+
+std::int32_t MemoryLayout::value(const std::vector<std::int32_t> &words,
+                                 const Address &address) const {
+    const int w = word(address);
+    auto at = [&words](int i) {
+        return i >= 0 && static_cast<std::size_t>(i) < words.size()
+                   ? words[static_cast<std::size_t>(i)]
+                   : 0;
+    };
+    if (w >= 0 && area(address.area).doubleWords)
+        return static_cast<std::int32_t>((static_cast<std::uint32_t>(at(w)) << 16) |
+                                         (static_cast<std::uint32_t>(at(w + 1)) & 0xFFFFu));
+    return at(w);
 }
 
 bool MemoryLayout::inRange(const Address &address) const {

@@ -30,6 +30,9 @@ struct AreaLayout {
     int wordBits = 16;
     bool retentive = false;
     bool presetsAddressable = false; // timers/counters: an area of the program holds the set values
+    // Area::doubleWordsOf (PL110 VD, SMD): element n is the words wordBase + n - first (high)
+    // and the one after it (low) of another area; it has no words of its own.
+    bool doubleWords = false;
 };
 
 class MemoryLayout {
@@ -51,6 +54,9 @@ public:
     // (Area::presetsOf): its constant preset is then loaded there, not read from the step.
     bool presetAddressable(const Address &address) const;
     int wordBits(const Address &address) const;
+    // The value of a word device in `words` (an image in this layout's order): a double word
+    // (doubleWords) joins its two words, high first; -1 words read 0.
+    std::int32_t value(const std::vector<std::int32_t> &words, const Address &address) const;
 
 private:
     bool inRange(const Address &address) const;

@@ -41,7 +41,7 @@ struct Snapshot {
     }
     // Word value; a timer/counter gives its current value.
     std::int32_t value(const Address &address) const {
-        return layout ? word(layout->word(address)) : 0;
+        return layout ? layout->value(words, address) : 0;
     }
     std::int32_t setValue(const Address &address) const {
         return layout ? word(layout->setValueWord(address)) : 0;

@@ -310,19 +310,12 @@ private:
     }
 
     bool readOperand(const QString &text, int column, Operand *out) {
-        auto a = parseAddress(m_target, text, m_model);
-        if (auto *address = std::get_if<Address>(&a)) {
-            out->kind = Operand::Kind::Device;
-            out->address = *address;
+        auto o = parseOperand(m_target, text, m_model);
+        if (auto *operand = std::get_if<Operand>(&o)) {
+            *out = *operand;
             return true;
         }
-        auto c = parseConstant(m_target, text);
-        if (auto *constant = std::get_if<Constant>(&c)) {
-            out->kind = Operand::Kind::Constant;
-            out->constant = *constant;
-            return true;
-        }
-        const AddressError &e = std::get<AddressError>(a);
+        const AddressError &e = std::get<AddressError>(o);
         error(m_at, column + e.column, e.message);
         return false;
     }
@@ -377,6 +370,11 @@ private:
         Operand o;
         if (!readOperand(body, column + 1, &o))
             return false;
+        if (o.modified()) {
+            // A contact reads one bit: K4M0 is a word, an index modifies words only.
+            error(m_at, column + 1, Tr::tr("%1 is a word; a contact takes a bit device").arg(body));
+            return false;
+        }
         contact->operands = {o};
         return true;
     }

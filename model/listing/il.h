@@ -17,6 +17,13 @@ struct Operand {
     Address address;   // Kind::Device
     Constant constant; // Kind::Constant
     QString text;      // Kind::Text: PL110 FM operator, labels kept verbatim
+    // Vigor (seed 004, the WPLSoft family): a Device with digits n > 0 is the word of the n x 4
+    // bits from `address` (K4Y0 = Y0..Y17, K1M20 = M20..M23, ConstantNotation::digitGroups).
+    int digits = 0;
+    // An index register (Area::indexRegister) that modifies a Device or a decimal Constant:
+    // D0E0 = D(0 + E0), K10F0 = 10 + F0, K4M0E1 = K4M(0 + E1). Invalid when none.
+    Address index;
+    bool modified() const { return digits > 0 || index.valid(); }
     friend bool operator==(const Operand &, const Operand &) = default;
 };
 
@@ -95,6 +102,14 @@ PrintedListing printListing(const InstructionList &list, const PrintOptions &opt
 QString printInstruction(const Target &target, const Instruction &instruction);
 // One operand alone, as the drawing and its tooltips show it (X0, K10, #0150, a PL110 text).
 QString formatOperand(const Target &target, const Operand &operand);
+// One operand alone as written in a listing or a ladder cell: a device, a constant, and on
+// targets that have them digit-designated operands (K4M0) and index registers (D0E0, K10F0).
+// The column of an error is 0-based within `text`. The listing parser adds what the slot
+// allows (operand_text.cpp).
+std::variant<Operand, AddressError> parseOperand(const Target &target, QStringView text,
+                                                 const ModelVariant *model = nullptr);
+// Whether `text` carries a digit designation or an index register on this target.
+bool hasOperandModifiers(const Target &target, QStringView text);
 
 // Steps an instruction occupies in the PLC's program memory (1 for most).
 int instructionSteps(const Target &target, const Instruction &instruction);

@@ -413,12 +413,15 @@ private:
         bool ok = true;
         for (std::size_t i = 0; i < tokens.size(); ++i) {
             Operand o;
-            if (readOperand(specs[i].kind, tokens[i], lineNumber, &o) &&
-                constantFits(*ins, specs[i].kind, o, tokens[i], lineNumber))
+            if (readOperand(specs[i].kind, tokens[i], lineNumber, &o))
                 ins->operands.push_back(o);
             else
                 ok = false;
         }
+        // A constant fits the width of the instruction's devices, wherever they stand: MOV
+        // 100000 VD0 is 32-bit (the constant is read before the double word).
+        for (std::size_t i = 0; ok && i < tokens.size(); ++i)
+            ok = constantFits(*ins, specs[i].kind, ins->operands[i], tokens[i], lineNumber);
         return ok;
     }
 
@@ -516,6 +519,8 @@ private:
             error(lineNumber, token.column + e.column, e.message);
             return false;
         };
+        if (hasOperandModifiers(m_target, t))
+            return readModified(kind, token, lineNumber, out);
         switch (kind) {
         case OperandKind::Label: {
             if (!allDigits(t) || t.size() > 4) {
@@ -582,6 +587,37 @@ private:
         }
         out->kind = Operand::Kind::Device;
         out->address = address;
+        return true;
+    }
+
+    // K4Y0, D0E0, K10F0 (seed 004, the WPLSoft family): words, in the word slots of
+    // application instructions and set values only.
+    bool readModified(OperandKind kind, const Token &token, int lineNumber, Operand *out) {
+        const QString &t = token.text;
+        auto parsed = parseOperand(m_target, t, m_model);
+        if (const AddressError *e = std::get_if<AddressError>(&parsed)) {
+            error(lineNumber, token.column + e->column, e->message);
+            return false;
+        }
+        const Operand o = std::get<Operand>(parsed);
+        const bool wordSlot = kind == OperandKind::WordSource || kind == OperandKind::WordDest ||
+                              kind == OperandKind::SetValue;
+        if (!wordSlot) {
+            error(lineNumber, token.column,
+                  o.digits > 0 ? tr("%1 is a word (%2 bits); a single device is expected here")
+                                     .arg(t.left(40))
+                                     .arg(o.digits * 4)
+                               : tr("%1: an index register modifies only the word operands of "
+                                    "application instructions and set values")
+                                     .arg(t.left(40)));
+            return false;
+        }
+        if (kind == OperandKind::WordDest && o.kind == Operand::Kind::Constant) {
+            error(lineNumber, token.column,
+                  tr("%1 is a constant; a device is expected here").arg(t.left(40)));
+            return false;
+        }
+        *out = o;
         return true;
     }
 

@@ -15,8 +15,19 @@ bool mnemonicHasSymbol(const QString &mnemonic) {
            mnemonic.contains(QLatin1Char('='));
 }
 
+// K4M0, D0E0, K10F0: the digit count before, the index register after (operand_text.cpp).
+QString withModifiers(const Target &target, const Operand &operand, QString text) {
+    if (operand.digits > 0)
+        text.prepend(QStringLiteral("K%1").arg(operand.digits));
+    if (operand.index.valid())
+        text += formatAddress(target, operand.index);
+    return text;
+}
+
 QString operandText(const Target &target, const InstructionSpec &spec, std::size_t index,
                     const Operand &operand) {
+    if (operand.modified())
+        return formatOperand(target, operand);
     switch (operand.kind) {
     case Operand::Kind::Text:
         return operand.text;
@@ -46,9 +57,9 @@ QString operandText(const Target &target, const InstructionSpec &spec, std::size
 QString formatOperand(const Target &target, const Operand &operand) {
     switch (operand.kind) {
     case Operand::Kind::Device:
-        return formatAddress(target, operand.address);
+        return withModifiers(target, operand, formatAddress(target, operand.address));
     case Operand::Kind::Constant:
-        return formatConstant(target, operand.constant);
+        return withModifiers(target, operand, formatConstant(target, operand.constant));
     case Operand::Kind::Text:
         return operand.text;
     }

@@ -375,6 +375,23 @@ QString formatConstant(const Target &target, const Constant &constant) {
     return QString::number(constant.value);
 }
 
+Address offsetAddress(const Target &target, const Address &address, qint64 offset,
+                      const ModelVariant *model) {
+    if (!address.valid() || address.area >= static_cast<int>(target.areas.size()))
+        return {};
+    const Area &base = target.area(address.area);
+    const qint64 element = qint64{address.index} + offset;
+    for (int i = 0; i < static_cast<int>(target.areas.size()); ++i) {
+        const Area &a = target.area(i);
+        if (a.prefix != base.prefix || a.kind != base.kind)
+            continue;
+        const auto range = target.range(i, model);
+        if (range && element >= range->first && element <= range->second)
+            return Address{i, static_cast<int>(element), address.bit};
+    }
+    return {};
+}
+
 Address systemAddress(const Target &target, SystemRole role) {
     const SystemDevice *d = target.systemDevice(role);
     if (!d)

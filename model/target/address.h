@@ -25,6 +25,12 @@ struct AddressError {
 std::variant<Address, AddressError> parseAddress(const Target &target, QStringView text,
                                                  const ModelVariant *model = nullptr);
 
+// The element `offset` places after `address` (before it when negative) among the areas that
+// share its prefix: D199 + 1 = D200 (the latched D area), X7 + 1 = X10 on an octal area.
+// Invalid when no area of that prefix (on the model, if one is given) holds it.
+Address offsetAddress(const Target &target, const Address &address, qint64 offset,
+                      const ModelVariant *model = nullptr);
+
 // The address of the target's system device with this role (VPC r88, CPM1 253.13 for
 // AlwaysOn); an invalid Address when the target has none.
 Address systemAddress(const Target &target, SystemRole role);

@@ -54,6 +54,9 @@ struct ProtocolRange {
     int start = 0;
     int origin = 0;
     int last = -1;
+    // The manual marks the range R (read only) for the protocol. The protocol's access, not
+    // the program's: PL110 inputs are R/W as bits 1600.. over MODBUS, R as words 100..
+    // (seed 003 3.2), while no instruction may write them (Area::writable).
     bool readOnly = false;
 };
 

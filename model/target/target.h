@@ -22,6 +22,7 @@ namespace rung::model {
 enum class Family : std::uint8_t { Vpc, Vigor, Cpm1, Pl110 };
 
 enum class ApplyFunction : std::uint8_t; // below, with the instructions
+enum class TimerMode : std::uint8_t;     // below, with the instructions
 
 // How the element numbers of an area are written.
 enum class Numbering : std::uint8_t {
@@ -60,6 +61,25 @@ struct Area {
     // The words of this area are the set values of the timer/counter area with this key,
     // element for element (PL110 PT1 = preset of T1, PV1 of C1; seed 003 2.1.9, 2.1.11).
     const char *presetsOf = nullptr;
+    // Timer areas: the time base of their timers (Vigor T200..T245 10 ms, T246..T249 1 ms),
+    // 0: the instruction's or the target's; and how they time (Vigor T246..T255 accumulate:
+    // the time is kept while the coil is OFF, RST clears it).
+    double timerBaseMs = 0;
+    TimerMode timerMode{}; // TimerMode::OnDelay
+    // An index register (Vigor Z / V, seed 004's E / F): a word that, written after an
+    // operand of an application instruction, adds its value to the element number
+    // (D0E0 = D(0 + E0)) or to a constant (K10F0 = 10 + F0); a plain word otherwise.
+    bool indexRegister = false;
+    // Element n of this area is the double word of words n (high) and n + 1 (low) of the
+    // word area with this key (PL110 VD / SMD, seed 003 2.1.1: "il numero della doppia word
+    // fa sempre riferimento all'organizzazione in word"; SMD20 = SM20 high, SM21 low).
+    const char *doubleWordsOf = nullptr;
+    // Timer / counter areas that run only while a system bit is ON (enabledWhenOn) or OFF:
+    // PL110 SM0.13 "disabilita la gestione dei contatori C[1..16] ed abilita invece la
+    // gestione dei timer T[49..64]" (seed 003 2.1.2). A box that does not run keeps its value
+    // and its bit. nullptr: always runs.
+    const char *enabledBy = nullptr;
+    bool enabledWhenOn = true;
     // Sub-ranges with other properties (read-only system bits inside a channel area,
     // retentive M ranges on Vigor) are separate Area entries; the parser picks the one that
     // contains the number.
@@ -151,6 +171,12 @@ struct OperandSpec {
     std::vector<int> allowedValues; // a constant must be one of these (PL110 time base)
     const char *area = nullptr;     // a device must be of this Area::key ("Q" for OUTQI)
     const char *name = nullptr;     // QT_TRANSLATE_NOOP("rung::model::Target", "time base")
+    // A device in this slot must be of one of these areas (Area::key); constants are free
+    // (PL110 presets PT / PV: "da una variabile dell'area VW, SMW, AI e TR", 4.2.4, 4.2.5).
+    std::vector<const char *> sourceAreas;
+    // The slot takes plain words only: no digit-designated bits (K4M0) and no double words
+    // (VD0) - block moves count words (Vigor BMOV, PL110 BLKMOV / MOVIND).
+    bool wholeWords = false;
 };
 
 // Application-instruction semantics the simulator implements (Op::Apply).
@@ -244,6 +270,10 @@ struct ConstantNotation {
     // A constant slot that holds no number keeps the word verbatim (PL110 FM operators and
     // time bases); otherwise it is a constant error.
     bool wordsInConstantSlots = false;
+    // Kn before a bit device is a word of n groups of 4 bits from it (K4Y0 = Y0..Y17 on an
+    // octal area, K1M20 = M20..M23), n = 1..digitGroups in word operands (Vigor 4: its
+    // instructions are 16-bit; seed 004's WPLSoft family). 0: the target has none.
+    int digitGroups = 0;
 };
 
 // A register whose value appears bit by bit on a run of bit devices, or the other way round

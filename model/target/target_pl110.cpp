@@ -80,12 +80,17 @@ Target makePl110Target() {
         .onlyWrittenBy = ApplyFunction::Toggle;
     addArea(t, "M", "M", AreaKind::Bit, 1, 128,
             QT_TRANSLATE_NOOP("rung::model::Target", "markers"));
-    // T49..T64 exist only while SM0.13 trades the counters for timers; the table keeps them so
-    // a program that sets SM0.13 can be written.
-    addArea(t, "T", "T", AreaKind::Timer, 1, 64,
+    // SM0.13 (2.1.2) trades the counters C1..C16 for the timers T49..T64, "normalmente
+    // disabilitati": those run only while it is ON, the counters only while it is OFF.
+    addArea(t, "T", "T", AreaKind::Timer, 1, 48,
             QT_TRANSLATE_NOOP("rung::model::Target", "timers"));
-    addArea(t, "C", "C", AreaKind::Counter, 1, 16,
-            QT_TRANSLATE_NOOP("rung::model::Target", "counters"));
+    Area &t49 = addArea(t, "T49", "T", AreaKind::Timer, 49, 64,
+                        QT_TRANSLATE_NOOP("rung::model::Target", "timers (with SM0.13 ON)"));
+    t49.enabledBy = "SM0.13";
+    Area &counters = addArea(t, "C", "C", AreaKind::Counter, 1, 16,
+                             QT_TRANSLATE_NOOP("rung::model::Target", "counters"));
+    counters.enabledBy = "SM0.13";
+    counters.enabledWhenOn = false;
 
     // Word areas. V and SM are retained by the backup battery (2.1.1, 2.1.2).
     Area &v = addArea(t, "V", "V", AreaKind::Word, 0, 349,
@@ -102,18 +107,41 @@ Target makePl110Target() {
     sm.prefixAliases = {QStringLiteral("SMW")};
     sm.retentive = true;
     sm.system = true;
+    // Double words (2.1.1): VD n is V n (high word) and V n+1 (low word), so consecutive
+    // double words are VD0, VD2, ...; SMD20 is the encoder count SM20 (high) : SM21 (low).
+    Area &vd = addArea(t, "VD", "VD", AreaKind::Word, 0, 348,
+                       QT_TRANSLATE_NOOP("rung::model::Target", "variables, double words"));
+    vd.doubleWordsOf = "V";
+    vd.wordBits = 32;
+    vd.retentive = true;
+    Area &smd = addArea(t, "SMD", "SMD", AreaKind::Word, 0, 184,
+                        QT_TRANSLATE_NOOP("rung::model::Target", "special markers, double words"));
+    smd.doubleWordsOf = "SM";
+    smd.wordBits = 32;
+    smd.retentive = true;
+    smd.system = true;
     Area &ai = addArea(t, "AI", "AI", AreaKind::Word, 1, 4,
                        QT_TRANSLATE_NOOP("rung::model::Target", "analog inputs"));
     ai.writable = false;
     ai.physical = true;
+    // The trimmers TR: a source of presets (4.2.4, 4.2.5), scaled by RANGE like the analog
+    // inputs (4.2.16), an area of its own in SM107's list. The manual gives no count: four,
+    // as AI1..AI4, is the product's choice.
+    Area &tr = addArea(t, "TR", "TR", AreaKind::Word, 1, 4,
+                       QT_TRANSLATE_NOOP("rung::model::Target", "trimmers"));
+    tr.writable = false;
+    tr.physical = true;
     addArea(t, "AQ", "AQ", AreaKind::Word, 1, 2,
             QT_TRANSLATE_NOOP("rung::model::Target", "analog outputs"))
         .physical = true;
     // The presets in force (2.1.9, 2.1.11): reading PT1 gives T1's preset, writing it
     // changes it; a constant preset is loaded there when the program starts.
-    addArea(t, "PT", "PT", AreaKind::Word, 1, 64,
+    addArea(t, "PT", "PT", AreaKind::Word, 1, 48,
             QT_TRANSLATE_NOOP("rung::model::Target", "timer presets"))
         .presetsOf = "T";
+    addArea(t, "PT49", "PT", AreaKind::Word, 49, 64,
+            QT_TRANSLATE_NOOP("rung::model::Target", "timer presets"))
+        .presetsOf = "T49";
     addArea(t, "PV", "PV", AreaKind::Word, 1, 16,
             QT_TRANSLATE_NOOP("rung::model::Target", "counter presets"))
         .presetsOf = "C";
@@ -229,30 +257,36 @@ Target makePl110Target() {
     bitNumber.lowest = 0;
     bitNumber.highest = 15;
     bitNumber.name = QT_TRANSLATE_NOOP("rung::model::Target", "bit number");
-    addBox(t, "SBIT", ApplyFunction::SetBit, {{K::WordDest}, bitNumber},
+    // A word's bit 0..15: no double words (OperandSpec::wholeWords).
+    OperandSpec bitWord{K::WordDest};
+    bitWord.wholeWords = true;
+    addBox(t, "SBIT", ApplyFunction::SetBit, {bitWord, bitNumber},
            QT_TRANSLATE_NOOP("rung::model::Target", "Set a bit (0..15) of a word to 1"),
            "V3 5 | V3.5 | Q1");
-    addBox(t, "RBIT", ApplyFunction::ResetBit, {{K::WordDest}, bitNumber},
+    addBox(t, "RBIT", ApplyFunction::ResetBit, {bitWord, bitNumber},
            QT_TRANSLATE_NOOP("rung::model::Target", "Reset a bit (0..15) of a word to 0"),
            "V3 5 | V3.5 | Q1");
 
-    // Timers: T, preset (constant or VW/SMW/AI), optional time base in ms (10, 100, 1000).
+    // Timers: T, preset (constant or VW/SMW/AI/TR), optional time base in ms (10, 100, 1000).
     // "base tempi di 10 ms, 100ms e 1s" (4.2.4): no other time base exists.
     const char *timerHelp = "T1..T64 PT [10|100|1000]";
+    OperandSpec preset{K::SetValue};
+    preset.sourceAreas = {"V", "SM", "AI", "TR"};
+    preset.name = QT_TRANSLATE_NOOP("rung::model::Target", "preset");
     OperandSpec timeBase{K::Constant, true};
     timeBase.allowedValues = {10, 100, 1000};
     timeBase.name = QT_TRANSLATE_NOOP("rung::model::Target", "time base (ms)");
-    addSpec(t, "TON", Op::Timer, {{K::TimerNumber}, {K::SetValue}, timeBase},
+    addSpec(t, "TON", Op::Timer, {{K::TimerNumber}, preset, timeBase},
             QT_TRANSLATE_NOOP("rung::model::Target",
                               "On-delay timer: T ON once the time reaches PT; OFF resets"),
             timerHelp);
-    addSpec(t, "TOFF", Op::Timer, {{K::TimerNumber}, {K::SetValue}, timeBase},
+    addSpec(t, "TOFF", Op::Timer, {{K::TimerNumber}, preset, timeBase},
             QT_TRANSLATE_NOOP("rung::model::Target",
                               "Off-delay timer: T ON at once, OFF when PT has elapsed after OFF"),
             timerHelp)
         .timerMode = TimerMode::OffDelay;
     InstructionSpec &tonr =
-        addSpec(t, "TONR", Op::Timer, {{K::TimerNumber}, {K::SetValue}, timeBase},
+        addSpec(t, "TONR", Op::Timer, {{K::TimerNumber}, preset, timeBase},
                 QT_TRANSLATE_NOOP("rung::model::Target",
                                   "Accumulating on-delay timer: keeps its time while OFF"),
                 timerHelp);
@@ -260,13 +294,13 @@ Target makePl110Target() {
 
     // Counters: UP = first block, DOWN = second, RESET = last (4.2.5).
     InstructionSpec &mup = addSpec(
-        t, "MUP", Op::UpDownCounter, {{K::CounterNumber}, {K::SetValue}},
+        t, "MUP", Op::UpDownCounter, {{K::CounterNumber}, preset},
         QT_TRANSLATE_NOOP("rung::model::Target",
                           "Up counter: UP, DOWN and RESET inputs; C ON while the count >= PV"),
         "C1..C16 PV");
     mup.inputs = 3;
     InstructionSpec &mdown = addSpec(
-        t, "MDOWN", Op::UpDownCounter, {{K::CounterNumber}, {K::SetValue}},
+        t, "MDOWN", Op::UpDownCounter, {{K::CounterNumber}, preset},
         QT_TRANSLATE_NOOP("rung::model::Target",
                           "Down counter from PV: UP, DOWN and RESET (load PV) inputs; C ON at 0"),
         "C1..C16 PV");
@@ -282,10 +316,14 @@ Target makePl110Target() {
            "S1 OP S2 D");
     addBox(t, "MOV", ApplyFunction::Mov, {src, dst},
            QT_TRANSLATE_NOOP("rung::model::Target", "Move a value or a word to D"), "S D");
-    addBox(t, "BLKMOV", ApplyFunction::BlockMove, {src, dst, {K::Count}},
+    OperandSpec blockSrc = src;
+    blockSrc.wholeWords = true;
+    OperandSpec blockDst = dst;
+    blockDst.wholeWords = true;
+    addBox(t, "BLKMOV", ApplyFunction::BlockMove, {blockSrc, blockDst, {K::Count}},
            QT_TRANSLATE_NOOP("rung::model::Target", "Move n words from S (or the value S) to D"),
            "S D n");
-    addBox(t, "MOVIND", ApplyFunction::IndirectMove, {src, dst, src},
+    addBox(t, "MOVIND", ApplyFunction::IndirectMove, {src, blockDst, src},
            QT_TRANSLATE_NOOP("rung::model::Target",
                              "Indexed move: D[index] = S, the area used as a vector"),
            "S D INDEX");

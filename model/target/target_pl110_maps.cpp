@@ -4,8 +4,13 @@
 
 // PL110 MODBUS RTU slave map (seed 003 chapter 3; protocols.md). Bit addresses serve
 // functions 01 / 02 / 05 / 0F, word addresses 03 / 04 / 06 / 10; bit areas appear in both,
-// 16 to a word. At most 30 words per request. SM0 bit 0 is RUN (SM0.0 = bit 16000). What the
-// manual marks R (read only) is readOnly here: inputs as words, timer and counter bits, AI.
+// 16 to a word. At most 30 words per request. SM0 bit 0 is RUN (SM0.0 = bit 16000).
+// The ranges and their access are the tables of 3.2: the timers reach T48 only (bits
+// 4800..4847, words 300..302, values 12000..12047, presets 13000..13047: T49..T64, which run
+// only with SM0.13, have no address), the special-marker bits SM129.15 (18079), and the
+// inputs are R/W as bits but R as words.
+// What the manual marks R (read only) is readOnly here: inputs as words, timer and counter
+// bits, AI.
 
 namespace rung::model::detail {
 
@@ -24,28 +29,29 @@ std::vector<ProtocolMap> pl110ProtocolMaps() {
     m.anyStationUnit = 0xFF;
     m.runBitStartsStops = true;
     m.illegalValueException = 0x04;
+    constexpr bool R = true; // "R" in the manual's READ/WRITE column
     m.ranges = {
         {"I", P::Bit, S::Coils, 1600, 1},
         {"Q", P::Bit, S::Coils, 2400, 1},
         {"B", P::Bit, S::Coils, 3200, 1},
         {"M", P::Bit, S::Coils, 4000, 1},
-        {"T", P::Bit, S::Coils, 4800, 1, -1, true},
-        {"C", P::Bit, S::Coils, 5600, 1, -1, true},
-        {"SM", P::Bit, S::Coils, 16000, 0},
+        {"T", P::Bit, S::Coils, 4800, 1, 48, R},
+        {"C", P::Bit, S::Coils, 5600, 1, -1, R},
+        {"SM", P::Bit, S::Coils, 16000, 0, 129},
         {"V", P::Bit, S::Coils, 32000, 0},
-        {"I", P::Bit, S::HoldingRegisters, 100, 1, -1, true},
+        {"I", P::Bit, S::HoldingRegisters, 100, 1, -1, R},
         {"Q", P::Bit, S::HoldingRegisters, 150, 1},
         {"B", P::Bit, S::HoldingRegisters, 200, 1},
         {"M", P::Bit, S::HoldingRegisters, 250, 1},
-        {"T", P::Bit, S::HoldingRegisters, 300, 1, -1, true},
-        {"C", P::Bit, S::HoldingRegisters, 350, 1, -1, true},
+        {"T", P::Bit, S::HoldingRegisters, 300, 1, 48, R},
+        {"C", P::Bit, S::HoldingRegisters, 350, 1, -1, R},
         {"SM", P::Value, S::HoldingRegisters, 1000, 0},
         {"V", P::Value, S::HoldingRegisters, 2000, 0},
-        {"T", P::Value, S::HoldingRegisters, 12000, 1},
-        {"PT", P::Value, S::HoldingRegisters, 13000, 1},
+        {"T", P::Value, S::HoldingRegisters, 12000, 1, 48},
+        {"PT", P::Value, S::HoldingRegisters, 13000, 1, 48},
         {"C", P::Value, S::HoldingRegisters, 14000, 1},
         {"PV", P::Value, S::HoldingRegisters, 15000, 1},
-        {"AI", P::Value, S::HoldingRegisters, 19000, 1, -1, true},
+        {"AI", P::Value, S::HoldingRegisters, 19000, 1, -1, R},
         {"AQ", P::Value, S::HoldingRegisters, 19400, 1},
         {"EEP", P::Value, S::HoldingRegisters, 20000, 0},
         {"MMC", P::Value, S::HoldingRegisters, 30000, 0},

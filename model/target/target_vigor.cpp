@@ -112,7 +112,26 @@ Target makeVigorTarget() {
     area("SL", "S", AreaKind::Bit, 500, 999,
          QT_TRANSLATE_NOOP("rung::model::Target", "latched step relays"))
         .retentive = true;
-    area("T", "T", AreaKind::Timer, 0, 255, QT_TRANSLATE_NOOP("rung::model::Target", "timers"));
+    // Seed 004: "Every timer has its resolution (unit: 1ms/10ms/100ms)"; neither seed gives the
+    // ranges. The Vigor numbers its special devices as the FX family does, 1000 higher (FX
+    // M8000 RUN, M8002, D8010..D8012, M8122, M8161, M8168 are the Vigor's M9000, M9002,
+    // D9010..D9012, M9122, M9161, M9168 of seed 001), so its timers follow the FX ranges:
+    // T0..T199 100 ms, T200..T245 10 ms, T246..T249 1 ms and T250..T255 100 ms accumulating
+    // and retained. The same on M, VB and VH (a model with other ranges gets overrides).
+    area("T", "T", AreaKind::Timer, 0, 199,
+         QT_TRANSLATE_NOOP("rung::model::Target", "timers (100 ms)"));
+    area("T10", "T", AreaKind::Timer, 200, 245,
+         QT_TRANSLATE_NOOP("rung::model::Target", "timers (10 ms)"))
+        .timerBaseMs = 10;
+    Area &t1 = area("T1R", "T", AreaKind::Timer, 246, 249,
+                    QT_TRANSLATE_NOOP("rung::model::Target", "accumulating timers (1 ms)"));
+    t1.timerBaseMs = 1;
+    t1.timerMode = TimerMode::Accumulating;
+    t1.retentive = true;
+    Area &t100 = area("TR", "T", AreaKind::Timer, 250, 255,
+                      QT_TRANSLATE_NOOP("rung::model::Target", "accumulating timers (100 ms)"));
+    t100.timerMode = TimerMode::Accumulating;
+    t100.retentive = true;
     area("C", "C", AreaKind::Counter, 0, 99, QT_TRANSLATE_NOOP("rung::model::Target", "counters"));
     area("CL", "C", AreaKind::Counter, 100, 199,
          QT_TRANSLATE_NOOP("rung::model::Target", "latched counters"))
@@ -129,6 +148,19 @@ Target makeVigorTarget() {
     Area &sd = area("SD", "D", AreaKind::Word, 9000, 9255,
                     QT_TRANSLATE_NOOP("rung::model::Target", "special registers"));
     sd.system = true;
+    // Index registers. Seed 001's operand tables (LINK, RS, MBUS: "V,Z ... VZ index") name
+    // the Vigor's V and Z, as in the FX family; seed 004's WPLSoft family calls them E0..E7
+    // and F0..F7 (E the low word like Z, F the high one like V). Both spellings are read;
+    // the Vigor's own is printed. D0Z0 = D(0 + Z0), K10V0 = 10 + V0. Not in seed 001's link
+    // map, so no protocol reaches them.
+    Area &z = area("Z", "Z", AreaKind::Word, 0, 7,
+                   QT_TRANSLATE_NOOP("rung::model::Target", "index registers"));
+    z.indexRegister = true;
+    z.prefixAliases = {QStringLiteral("E")};
+    Area &v = area("V", "V", AreaKind::Word, 0, 7,
+                   QT_TRANSLATE_NOOP("rung::model::Target", "index registers"));
+    v.indexRegister = true;
+    v.prefixAliases = {QStringLiteral("F")};
 
     t.systemDevices = {
         {QStringLiteral("M9000"), SystemRole::AlwaysOn,
@@ -143,6 +175,10 @@ Target makeVigorTarget() {
          QT_TRANSLATE_NOOP("rung::model::Target", "1 s clock")},
         {QStringLiteral("M9014"), SystemRole::Clock1min,
          QT_TRANSLATE_NOOP("rung::model::Target", "1 min clock")},
+        {QStringLiteral("M9161"), SystemRole::Other,
+         QT_TRANSLATE_NOOP("rung::model::Target", "RS instruction: 8-bit mode (OFF: 16-bit)")},
+        {QStringLiteral("M9168"), SystemRole::Other,
+         QT_TRANSLATE_NOOP("rung::model::Target", "SMOV works on hexadecimal digits")},
         {QStringLiteral("M9199"), SystemRole::Other,
          QT_TRANSLATE_NOOP("rung::model::Target", "ON for one scan when an MBUS cycle completes")},
         {QStringLiteral("D9010"), SystemRole::ScanTimeCurrent,
@@ -273,10 +309,12 @@ Target makeVigorTarget() {
     in.push_back(coil("PLF", Op::PulseFall, K::BitDest,
                       QT_TRANSLATE_NOOP("rung::model::Target", "ON for one scan on a falling edge"),
                       "Y/M"));
-    InstructionSpec tmr =
-        coil("TMR", Op::Timer, K::TimerNumber,
-             QT_TRANSLATE_NOOP("rung::model::Target", "On-delay timer, 100 ms units"),
-             "T0..T255 K1..K32767");
+    InstructionSpec tmr = coil(
+        "TMR", Op::Timer, K::TimerNumber,
+        QT_TRANSLATE_NOOP("rung::model::Target",
+                          "On-delay timer: T0..T199 100 ms, T200..T245 10 ms units; T246..T249 "
+                          "1 ms, T250..T255 100 ms accumulating (reset with RST)"),
+        "T0..T255 K1..K32767");
     tmr.operands.push_back({K::SetValue});
     tmr.steps = 3;
     in.push_back(tmr);
@@ -298,10 +336,13 @@ Target makeVigorTarget() {
 
     const OperandSpec src{K::WordSource};
     const OperandSpec dst{K::WordDest};
-    const OperandSpec opt{K::WordSource, true};
     in.push_back(apply("MOV", ApplyFunction::Mov, {src, dst}, 5,
                        QT_TRANSLATE_NOOP("rung::model::Target", "Move S to D"), "S D"));
-    in.push_back(apply("BMOV", ApplyFunction::BlockMove, {src, dst, {K::Count}}, 7,
+    OperandSpec blockSrc = src;
+    blockSrc.wholeWords = true;
+    OperandSpec blockDst = dst;
+    blockDst.wholeWords = true;
+    in.push_back(apply("BMOV", ApplyFunction::BlockMove, {blockSrc, blockDst, {K::Count}}, 7,
                        QT_TRANSLATE_NOOP("rung::model::Target", "Move n words from S to D"),
                        "S D n"));
     in.push_back(
@@ -343,7 +384,11 @@ Target makeVigorTarget() {
     in.push_back(apply(
         "BIN", ApplyFunction::FromBcd, {src, dst}, 5,
         QT_TRANSLATE_NOOP("rung::model::Target", "D = the value of the BCD digits S"), "S D"));
-    // Special modules and I/O refresh: accepted, not simulated (check warns, SIM100).
+    // Special modules, I/O refresh and communication: accepted, not simulated (check warns,
+    // SIM100). Neither seed gives step counts: each is the FX family's 16-bit size, one step
+    // for the instruction and two for each operand (Delta's tables, which seed 004 belongs
+    // to, give FROM/TO 9, CCD 7, REF 5 the same way). Operands as seed 001's pages and
+    // example programs write them.
     in.push_back(apply(
         "FROM", ApplyFunction::NotSimulated, {src, src, dst, {K::Count}}, 9,
         QT_TRANSLATE_NOOP("rung::model::Target", "Read n words of special module m1, from m2"),
@@ -358,12 +403,45 @@ Target makeVigorTarget() {
     in.push_back(apply("REF", ApplyFunction::NotSimulated, {{K::BitSource}, {K::Count}}, 5,
                        QT_TRANSLATE_NOOP("rung::model::Target", "Refresh n inputs or outputs now"),
                        "D n"));
-    // Communication instructions of seed 001: known to the editor, not simulated.
-    for (const char *name : {"SWAP", "ASCI", "HEX", "RS", "LINK", "MBUS", "VRRD"})
-        in.push_back(apply(
-            name, ApplyFunction::NotSimulated, {opt, opt, opt, opt}, 7,
-            QT_TRANSLATE_NOOP("rung::model::Target", "Communication or conversion instruction"),
-            "S D n"));
+    // HEX D59 D106 K2, ASCI D111 D12 K4 (seed 001's VB-1COM programs).
+    in.push_back(apply("HEX", ApplyFunction::NotSimulated, {src, dst, {K::Count}}, 7,
+                       QT_TRANSLATE_NOOP("rung::model::Target",
+                                         "Convert n ASCII characters from S to hexadecimal in D"),
+                       "S D n"));
+    in.push_back(apply("ASCI", ApplyFunction::NotSimulated, {src, dst, {K::Count}}, 7,
+                       QT_TRANSLATE_NOOP("rung::model::Target",
+                                         "Convert n hexadecimal digits from S to ASCII in D"),
+                       "S D n"));
+    // RS D0 D200 D100 D201 (FNC 80): send m words from S, receive n words into D.
+    in.push_back(apply("RS", ApplyFunction::NotSimulated, {src, src, dst, src}, 9,
+                       QT_TRANSLATE_NOOP("rung::model::Target",
+                                         "Serial communication on CP2: send m words from S, "
+                                         "receive n words into D"),
+                       "S m D n"));
+    // LINK D1000 D100 (FNC 89), MBUS D1000 D100 (FNC 149): a table from S1, 4 working words
+    // from S2.
+    in.push_back(apply("LINK", ApplyFunction::NotSimulated, {src, dst}, 5,
+                       QT_TRANSLATE_NOOP("rung::model::Target",
+                                         "Easy Link between PLCs: table from S1, working area S2"),
+                       "S1 S2"));
+    in.push_back(apply(
+        "MBUS", ApplyFunction::NotSimulated, {src, dst}, 5,
+        QT_TRANSLATE_NOOP("rung::model::Target", "MODBUS master: table from S1, working area S2"),
+        "S1 S2"));
+    // VRRD K1 D0: the value of the volume VR1 into D0.
+    in.push_back(apply(
+        "VRRD", ApplyFunction::NotSimulated, {src, dst}, 5,
+        QT_TRANSLATE_NOOP("rung::model::Target", "Read the variable resistor (volume) VRn into D"),
+        "K D"));
+    in.push_back(apply("SWAP", ApplyFunction::NotSimulated, {dst}, 3,
+                       QT_TRANSLATE_NOOP("rung::model::Target", "Swap the high and low bytes of D"),
+                       "D"));
+    // SMOV D55 K2 K2 D110 K4 (seed 001, with M9168 choosing hexadecimal digits).
+    in.push_back(apply("SMOV", ApplyFunction::NotSimulated,
+                       {src, {K::Count}, {K::Count}, dst, {K::Count}}, 11,
+                       QT_TRANSLATE_NOOP("rung::model::Target",
+                                         "Move m2 digits of S from digit m1 to D from digit n"),
+                       "S m1 m2 D n"));
 
     t.limits.programSteps = 16000;
     t.limits.stackDepth = 8;
@@ -373,8 +451,10 @@ Target makeVigorTarget() {
     t.limits.duplicateCoilIsError = false;
     t.limits.outputNeedsCondition = true;
 
-    // Seed 004: K10 decimal, H1F hexadecimal; a bare number is no constant.
+    // Seed 004: K10 decimal, H1F hexadecimal; a bare number is no constant. K1..K4 before a
+    // bit device: 4 to 16 bits as a word (K4Y0, seed 001's TO K1 K1 K1M20 K1).
     t.constants.prefixed = true;
+    t.constants.digitGroups = 4;
 
     // The seeds give one device map for the whole family; the models differ in program size.
     t.models = {

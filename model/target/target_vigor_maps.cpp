@@ -28,6 +28,12 @@ std::vector<ProtocolMap> vigorProtocolMaps() {
         {"CL", P::Value, S::LinkBytes, 0x1800, 0},    {"C32", P::Value, S::LinkBytes, 0x1A00, 200},
         {"D", P::Value, S::LinkBytes, 0x1C00, 0},     {"DL", P::Value, S::LinkBytes, 0x1C00, 0},
     };
+    // The timers of every resolution share T0..T255's places (T10, T1R, TR: target_vigor.cpp).
+    for (const char *t : {"T10", "T1R", "TR"}) {
+        link.ranges.push_back({t, P::Bit, S::LinkBytes, 0x0380, 0});
+        link.ranges.push_back({t, P::Coil, S::LinkBytes, 0x0780, 0});
+        link.ranges.push_back({t, P::Value, S::LinkBytes, 0x1400, 0});
+    }
 
     ProtocolMap modbus;
     modbus.protocol = ProtocolId::Modbus;
@@ -52,6 +58,10 @@ std::vector<ProtocolMap> vigorProtocolMaps() {
         {"C32", P::Value, S::HoldingRegisters, 8648, 200},
         {"SD", P::Value, S::HoldingRegisters, 8760, 9000},
     };
+    for (const char *t : {"T10", "T1R", "TR"}) {
+        modbus.ranges.push_back({t, P::Bit, S::Coils, 6656, 0});
+        modbus.ranges.push_back({t, P::Value, S::HoldingRegisters, 8192, 0});
+    }
     return {link, modbus};
 }
 

@@ -166,6 +166,52 @@ void BM_HistoryRatio(benchmark::State &state) {
     state.counters["history_MB"] = static_cast<double>(history.memoryBytes()) / 1e6;
 }
 
+// The cost of operands resolved at run time (Vigor digit groups and index registers,
+// docs/simulator.md): 1,024 moves on the real Vigor table, plain words (MOV D10 D1010) against
+// the same moves from a digit group into an indexed word (MOV K4M16 D1010Z0), blocks of scans
+// alternated as sideBySide does. Both programs scan the same number of steps; the plain
+// program also pays the one flag test every step now has.
+void BM_ResolvedOperandsRatio(benchmark::State &state) {
+    const model::Target &vigor = model::Target::get(model::Family::Vigor);
+    QString plainText;
+    QString resolvedText;
+    for (int k = 0; k < 1024; ++k) {
+        plainText += QStringLiteral("LD M9000\nMOV D%1 D%2\n").arg(k % 200).arg(1000 + k);
+        resolvedText +=
+            QStringLiteral("LD M9000\nMOV K4M%1 D%2Z0\n").arg(16 * (k % 250)).arg(1000 + k);
+    }
+    auto compile = [&](const QString &text) {
+        const model::ParseResult parsed = model::parseInstructionList(vigor, text);
+        return parsed.ok() ? compileProgram(parsed.list) : CompileResult{};
+    };
+    const CompileResult plainProgram = compile(plainText);
+    const CompileResult resolvedProgram = compile(resolvedText);
+    if (!plainProgram.ok() || !resolvedProgram.ok()) {
+        state.SkipWithError("the programs did not compile");
+        return;
+    }
+    Engine plain(plainProgram.program);
+    Engine resolved(resolvedProgram.program);
+    using Clock = std::chrono::steady_clock;
+    constexpr int kBlock = 200;
+    double plainNs = 0;
+    double resolvedNs = 0;
+    auto block = [&](Engine &e) {
+        const auto start = Clock::now();
+        for (int k = 0; k < kBlock; ++k)
+            e.scan();
+        return std::chrono::duration<double, std::nano>(Clock::now() - start).count();
+    };
+    for (auto _ : state) {
+        plainNs += block(plain);
+        resolvedNs += block(resolved);
+    }
+    const double scans = static_cast<double>(state.iterations()) * kBlock;
+    state.counters["plain_ns_per_scan"] = plainNs / scans;
+    state.counters["resolved_ns_per_scan"] = resolvedNs / scans;
+    state.counters["ratio"] = plainNs > 0 ? resolvedNs / plainNs : 0;
+}
+
 void BM_TrafficLight24Hours(benchmark::State &state) {
     for (auto _ : state) {
         Fixture f(QString::fromLatin1(kTrafficLight));
@@ -207,6 +253,10 @@ BENCHMARK(BM_PowerFlowRatio)
     ->Repetitions(5)
     ->DisplayAggregatesOnly(true);
 BENCHMARK(BM_HistoryRatio)
+    ->Unit(benchmark::kMillisecond)
+    ->Repetitions(5)
+    ->DisplayAggregatesOnly(true);
+BENCHMARK(BM_ResolvedOperandsRatio)
     ->Unit(benchmark::kMillisecond)
     ->Repetitions(5)
     ->DisplayAggregatesOnly(true);

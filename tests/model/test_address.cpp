@@ -102,7 +102,12 @@ const Device kDevices[] = {
     {Family::Vigor, "S0", "S", 0, -1},
     {Family::Vigor, "S999", "SL", 999, -1},
     {Family::Vigor, "T0", "T", 0, -1},
-    {Family::Vigor, "T255", "T", 255, -1},
+    {Family::Vigor, "T199", "T", 199, -1},
+    {Family::Vigor, "T200", "T10", 200, -1},
+    {Family::Vigor, "T249", "T1R", 249, -1},
+    {Family::Vigor, "T255", "TR", 255, -1},
+    {Family::Vigor, "Z7", "Z", 7, -1},
+    {Family::Vigor, "V0", "V", 0, -1},
     {Family::Vigor, "C0", "C", 0, -1},
     {Family::Vigor, "C199", "CL", 199, -1},
     {Family::Vigor, "C200", "C32", 200, -1},
@@ -139,7 +144,8 @@ const Device kDevices[] = {
     {Family::Pl110, "M1", "M", 1, -1},
     {Family::Pl110, "M128", "M", 128, -1},
     {Family::Pl110, "T1", "T", 1, -1},
-    {Family::Pl110, "T64", "T", 64, -1},
+    {Family::Pl110, "T48", "T", 48, -1},
+    {Family::Pl110, "T64", "T49", 64, -1},
     {Family::Pl110, "C1", "C", 1, -1},
     {Family::Pl110, "C16", "C", 16, -1},
     {Family::Pl110, "V0", "V", 0, -1},
@@ -151,7 +157,11 @@ const Device kDevices[] = {
     {Family::Pl110, "AI1", "AI", 1, -1},
     {Family::Pl110, "AI4", "AI", 4, -1},
     {Family::Pl110, "AQ1", "AQ", 1, -1},
-    {Family::Pl110, "PT64", "PT", 64, -1},
+    {Family::Pl110, "PT48", "PT", 48, -1},
+    {Family::Pl110, "PT64", "PT49", 64, -1},
+    {Family::Pl110, "VD348", "VD", 348, -1},
+    {Family::Pl110, "SMD20", "SMD", 20, -1},
+    {Family::Pl110, "TR4", "TR", 4, -1},
     {Family::Pl110, "PV16", "PV", 16, -1},
     {Family::Pl110, "EEP999", "EEP", 999, -1},
     {Family::Pl110, "MMC12999", "MMC", 12999, -1},
@@ -390,8 +400,8 @@ TEST(Address, Cpm1TimerNumberIsWrittenWithOrWithoutTheSpace) {
 }
 
 TEST(Address, UnknownPrefixNamesTheTarget) {
-    EXPECT_EQ(failure(vigor(), QStringLiteral("Z5")).message,
-              QStringLiteral("Z5 is not a device of Vigor"));
+    EXPECT_EQ(failure(vigor(), QStringLiteral("W5")).message,
+              QStringLiteral("W5 is not a device of Vigor"));
     EXPECT_EQ(failure(vpc(), QStringLiteral("X10")).message,
               QStringLiteral("X10 is not a device of VPC"));
     EXPECT_EQ(failure(pl110(), QStringLiteral("QI1")).message,

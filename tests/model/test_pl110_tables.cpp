@@ -1,0 +1,175 @@
+// PL110 table facts of issue 14 (seed 003): the MODBUS map as chapter 3.2 prints it (T1..T48
+// only, inputs R/W as bits and R as words, special-marker bits to SM129.15), the double
+// words VD / SMD (2.1.1), the trimmers TR as a preset source (4.2.4, 4.2.5) and the timers
+// T49..T64 that SM0.13 enables (2.1.2).
+
+#include "model/checks/checks.h"
+#include "model/listing/il.h"
+#include "model/target/address.h"
+#include "model/target/protocol_map.h"
+
+#include <gtest/gtest.h>
+
+using namespace rung::model;
+
+namespace {
+
+const Target &pl110() {
+    return Target::get(Family::Pl110);
+}
+
+Address at(const char *text) {
+    const auto a = parseAddress(pl110(), QString::fromLatin1(text));
+    EXPECT_TRUE(std::holds_alternative<Address>(a)) << text;
+    return std::holds_alternative<Address>(a) ? std::get<Address>(a) : Address{};
+}
+
+QString addressError(const char *text) {
+    const auto a = parseAddress(pl110(), QString::fromLatin1(text));
+    return std::holds_alternative<AddressError>(a) ? std::get<AddressError>(a).message : QString();
+}
+
+std::vector<Diagnostic> check(const char *text) {
+    const ParseResult r = parseInstructionList(pl110(), QString::fromLatin1(text));
+    EXPECT_TRUE(r.ok()) << (r.ok() ? "" : r.errors.front().message.toStdString());
+    return checkList(r.list);
+}
+
+int count(const std::vector<Diagnostic> &found, const char *code) {
+    return static_cast<int>(std::count_if(found.begin(), found.end(), [&](const Diagnostic &d) {
+        return d.code == QLatin1String(code);
+    }));
+}
+
+const ProtocolMap &modbus() {
+    return *findProtocolMap(pl110(), ProtocolId::Modbus);
+}
+
+} // namespace
+
+// 3.2: "4800 Contatto n.a. timer T1 ... 4847 Contatto n.a. timer T48", words 300..302 and
+// 12000..12047 / 13000..13047: the manual gives T49..T64 no MODBUS address.
+TEST(Pl110Modbus, TimersEndAtT48AsTheManualsMapDoes) {
+    const ProtocolMap &m = modbus();
+    EXPECT_EQ(toProtocol(pl110(), m, at("T48"), DevicePart::Bit)->unit, 4847);
+    EXPECT_FALSE(toProtocol(pl110(), m, at("T49"), DevicePart::Bit));
+    EXPECT_FALSE(toProtocol(pl110(), m, at("T64"), DevicePart::Value));
+    EXPECT_FALSE(toProtocol(pl110(), m, at("PT49"), DevicePart::Value));
+    EXPECT_EQ(toProtocol(pl110(), m, at("PT48"), DevicePart::Value)->unit, 13047);
+    EXPECT_FALSE(fromProtocol(pl110(), m, ProtocolSpace::Coils, 4848));
+    EXPECT_FALSE(fromProtocol(pl110(), m, ProtocolSpace::HoldingRegisters, 303, 0));
+    EXPECT_FALSE(fromProtocol(pl110(), m, ProtocolSpace::HoldingRegisters, 12048));
+    // The counters follow at 5600 as before.
+    EXPECT_EQ(fromProtocol(pl110(), m, ProtocolSpace::Coils, 5600)->index, 1);
+}
+
+// 3.2: bits 1600..1855 "Contatto n.a. ingresso digitale I1..I256  R/W", words 100..115 "R";
+// timer and counter contacts and the analog inputs are R; SM bits end at 18079 (SM129.15).
+TEST(Pl110Modbus, AccessIsTheManualsReadWriteColumn) {
+    const ProtocolMap &m = modbus();
+    const auto inputBit = fromProtocol(pl110(), m, ProtocolSpace::Coils, 1600);
+    ASSERT_TRUE(inputBit);
+    EXPECT_FALSE(inputBit->readOnly);
+    EXPECT_FALSE(pl110().area(inputBit->area).writable); // the program still cannot write I
+    const auto inputWord = fromProtocol(pl110(), m, ProtocolSpace::HoldingRegisters, 100, 0);
+    ASSERT_TRUE(inputWord);
+    EXPECT_TRUE(inputWord->readOnly);
+    EXPECT_TRUE(fromProtocol(pl110(), m, ProtocolSpace::Coils, 4800)->readOnly);
+    EXPECT_TRUE(fromProtocol(pl110(), m, ProtocolSpace::Coils, 5615)->readOnly);
+    EXPECT_TRUE(fromProtocol(pl110(), m, ProtocolSpace::HoldingRegisters, 300, 3)->readOnly);
+    EXPECT_TRUE(fromProtocol(pl110(), m, ProtocolSpace::HoldingRegisters, 19000)->readOnly);
+    EXPECT_FALSE(fromProtocol(pl110(), m, ProtocolSpace::HoldingRegisters, 19400)->readOnly);
+    EXPECT_FALSE(fromProtocol(pl110(), m, ProtocolSpace::Coils, 2400)->readOnly);
+    EXPECT_FALSE(fromProtocol(pl110(), m, ProtocolSpace::HoldingRegisters, 12000)->readOnly);
+    EXPECT_EQ(toProtocol(pl110(), m, at("SM129.15"), DevicePart::Bit)->unit, 18079);
+    EXPECT_FALSE(toProtocol(pl110(), m, at("SM130.0"), DevicePart::Bit));
+    EXPECT_EQ(toProtocol(pl110(), m, at("SM130"), DevicePart::Value)->unit, 1130);
+}
+
+TEST(Pl110DoubleWords, VdAndSmdAreDoubleWordsNumberedByWord) {
+    const Address vd = at("VD8");
+    EXPECT_EQ(pl110().area(vd.area).key, QStringLiteral("VD"));
+    EXPECT_EQ(pl110().area(vd.area).wordBits, 32);
+    EXPECT_EQ(formatAddress(pl110(), at("smd20")), QStringLiteral("SMD20"));
+    EXPECT_EQ(formatAddress(pl110(), at("V8")), QStringLiteral("V8")); // V stays the word
+    // The last double word is VD348 (V348 : V349).
+    EXPECT_TRUE(addressError("VD349").contains(QLatin1String("VD0..VD348")))
+        << addressError("VD349").toStdString();
+    EXPECT_FALSE(addressError("VD2.1").isEmpty()); // a double word has no bit form
+    // A 32-bit constant fits a double word, not a word.
+    EXPECT_TRUE(parseInstructionList(pl110(), QStringLiteral("LD I1\nMOV 100000 VD0\nEND")).ok());
+    EXPECT_FALSE(parseInstructionList(pl110(), QStringLiteral("LD I1\nMOV 100000 V0\nEND")).ok());
+}
+
+TEST(Pl110DoubleWords, BlockMovesCountWordsAndRefuseThem) {
+    const std::vector<Diagnostic> found = check("LD I1\nBLKMOV VD0 V10 2\nLD I1\nMOVIND 5 VD0 V1\n"
+                                                "LD I1\nBLKMOV V0 V10 2\nEND");
+    EXPECT_EQ(count(found, "OP005"), 2);
+}
+
+// 4.2.4 / 4.2.5: PT and PV come "da una variabile dell'area VW, SMW, AI e TR".
+TEST(Pl110Presets, PresetsComeFromVSmAiTrOrAConstant) {
+    EXPECT_EQ(count(check("LD I1\nTON T1 TR1 100\nLD I2\nTON T2 AI1\nLD I3\nTOFF T3 V5\n"
+                          "LD I4\nTONR T4 SMW30\nLD I1\nLD I2\nLD I3\nMUP C1 TR2\nEND"),
+                    "OP005"),
+              0);
+    const std::vector<Diagnostic> found = check("LD I1\nTON T1 C1 100\nLD I1\nLD I2\nLD I3\n"
+                                                "MUP C2 T5\nEND");
+    ASSERT_EQ(count(found, "OP005"), 2);
+    bool named = false;
+    for (const Diagnostic &d : found)
+        named = named || d.message.contains(QLatin1String("from V, SM, AI, TR, not C1"));
+    EXPECT_TRUE(named);
+}
+
+TEST(Pl110Trimmers, TrIsAReadOnlyWordArea) {
+    const Address tr = at("TR1");
+    EXPECT_FALSE(pl110().area(tr.area).writable);
+    EXPECT_TRUE(addressError("TR5").contains(QLatin1String("TR1..TR4")));
+    EXPECT_EQ(count(check("LD I1\nMOV 5 TR1\nEND"), "OP002"), 1);
+    EXPECT_EQ(count(check("LD I1\nMOV TR1 V0\nEND"), "OP002"), 0);
+}
+
+TEST(Pl110Sm013, TimersFrom49AreTheirOwnAreaGatedBySm013) {
+    const Area &t49 = pl110().area(at("T49").area);
+    ASSERT_NE(t49.enabledBy, nullptr);
+    EXPECT_EQ(QString::fromLatin1(t49.enabledBy), QStringLiteral("SM0.13"));
+    EXPECT_TRUE(t49.enabledWhenOn);
+    const Area &c = pl110().area(at("C1").area);
+    ASSERT_NE(c.enabledBy, nullptr);
+    EXPECT_FALSE(c.enabledWhenOn);
+    EXPECT_EQ(pl110().area(at("T48").area).enabledBy, nullptr);
+    // T49's preset is PT49, as T1's is PT1.
+    EXPECT_STREQ(pl110().area(at("PT49").area).presetsOf, "T49");
+}
+
+// OP006 (2.1.2): T49..T64 run only with SM0.13 ON, C1..C16 only with it OFF.
+TEST(Pl110Sm013, ATimerThatNothingSwitchesOnIsAWarning) {
+    std::vector<Diagnostic> found = check("LD I1\nTON T49 5\nEND");
+    ASSERT_EQ(count(found, "OP006"), 1);
+    for (const Diagnostic &d : found)
+        if (d.code == QLatin1String("OP006")) {
+            EXPECT_EQ(d.severity, Severity::Warning);
+            EXPECT_EQ(d.location.line, 2);
+            EXPECT_EQ(d.message, QStringLiteral("T49 runs only while SM0.13 is ON, and no "
+                                                "instruction sets SM0.13"));
+        }
+    EXPECT_EQ(count(check("LD I2\nOUT SM0.13\nLD I1\nTON T49 5\nEND"), "OP006"), 0);
+    EXPECT_EQ(count(check("LD I2\nSBIT SM0 13\nLD I1\nTON T64 5\nEND"), "OP006"), 0);
+    EXPECT_EQ(count(check("LD I1\nTON T48 5\nEND"), "OP006"), 0);
+}
+
+TEST(Pl110Sm013, ACounterBesideAWriteOfSm013IsAWarning) {
+    std::vector<Diagnostic> found =
+        check("LD I2\nSBIT SM0 13\nLD I1\nLD I2\nLD I3\nMUP C1 5\nEND");
+    ASSERT_EQ(count(found, "OP006"), 1);
+    for (const Diagnostic &d : found)
+        if (d.code == QLatin1String("OP006")) {
+            EXPECT_EQ(d.location.line, 6);
+            EXPECT_TRUE(d.message.contains(QLatin1String("C1 stops while SM0.13 is ON, and line 2")))
+                << d.message.toStdString();
+            ASSERT_EQ(d.related.size(), 1u);
+            EXPECT_EQ(d.related[0].line, 2);
+        }
+    EXPECT_EQ(count(check("LD I1\nLD I2\nLD I3\nMUP C1 5\nLD I1\nTON T1 5\nEND"), "OP006"), 0);
+}
