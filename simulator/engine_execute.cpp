@@ -72,6 +72,7 @@ std::int32_t Engine::readSet(const Step &s, std::size_t step) {
     if (s.flags & kBcd) {
         const std::int32_t decoded = fromBcd(set);
         if (decoded < 0) {
+            setFlag(m_program->flags.error, true); // W353 TIM / CNT: "ER: SV is not in BCD"
             runtimeError(step,
                          Tr::tr("set value %1 is not a BCD number; the instruction is "
                                 "skipped")
@@ -116,6 +117,7 @@ void Engine::wordLogic(const Step &s, std::size_t step) {
             s.x.index >= 0 ? m_words[static_cast<std::size_t>(s.x.index)] : s.x.constant;
         const std::int64_t max = s.width >= 32 ? 99999999 : 9999;
         if (v < 0 || v > max) {
+            setFlag(m_program->flags.error, true); // W353 BCD(24): "ER: S is greater than 270F"
             runtimeError(step, Tr::tr("%1 does not fit in BCD (0..%2); the destination is "
                                       "unchanged")
                                    .arg(v)
@@ -128,6 +130,7 @@ void Engine::wordLogic(const Step &s, std::size_t step) {
     case WordOp::FromBcd: {
         const std::int32_t v = fromBcd(static_cast<std::int32_t>(a & 0x7FFFFFFFu));
         if (v < 0 || (a & 0x80000000u)) {
+            setFlag(m_program->flags.error, true); // W353 BIN(23): "ER: S is not BCD"
             runtimeError(step, Tr::tr("%1 is not a BCD number; the destination is unchanged")
                                    .arg(QString::number(a, 16)));
             return;
@@ -137,6 +140,8 @@ void Engine::wordLogic(const Step &s, std::size_t step) {
     }
     }
     storeWord(static_cast<std::size_t>(s.dest), r, s.width);
+    if (m_program->flags.any())
+        resultFlags(r); // W353: "EQ: ON when the result is 0"
 }
 
 // Kept out of the scan loop: the message's temporaries would otherwise weigh on it.
@@ -172,8 +177,18 @@ template <bool Record> void Engine::execute() {
     bool stepActive = true;
     bool gate = true;
 
+    const bool flags = p.flags.any(); // the W353 flags: MOV(21) sets EQ
+    int depth = 0;                    // SBS(91) nesting
+    std::size_t returns[kSubroutineDepth] = {};
+    bool held[kSubroutineDepth] = {};
+
     for (std::size_t i = 0; i < n; ++i) {
         const Step &s = steps[i];
+        // "@MOV(21)" runs on the rising edge of its condition; the rung's condition goes on
+        // to the instructions after it.
+        const bool level = acc;
+        if (s.flags & kDifferentiated) [[unlikely]]
+            acc = edge(m_edges[static_cast<std::size_t>(s.slot)], acc, false);
         switch (s.code) {
         case Code::Load:
         case Code::LoadEdge:
@@ -457,8 +472,77 @@ template <bool Record> void Engine::execute() {
             }
             break;
         case Code::Move:
-            if (acc)
+            if (acc) {
                 wrw(s.dest, rdw(s.x), s.width);
+                if (flags) [[unlikely]]
+                    resultFlags(rdw(s.x));
+            }
+            break;
+        case Code::Arithmetic:
+            if (acc)
+                arithmetic(s, i); // engine_cpm1.cpp
+            break;
+        case Code::ShiftRegister: {
+            const bool pulse = bsp > 0 ? blocks[--bsp] : false;
+            const bool data = bsp > 0 ? blocks[--bsp] : false;
+            shiftRegister(s, data, pulse, acc);
+            break;
+        }
+        case Code::SubroutineCall:
+            // SBS(91): run the subroutine from its SBN(92), come back after the SBS.
+            if (acc && s.count >= 0) {
+                if (depth == kSubroutineDepth) {
+                    runtimeError(i, Tr::tr("subroutines nest deeper than %1 levels; the call "
+                                           "is skipped")
+                                        .arg(kSubroutineDepth));
+                    break;
+                }
+                returns[depth] = i;
+                held[depth++] = level;
+                if constexpr (Record)
+                    m_flow[i] = acc;
+                i = static_cast<std::size_t>(s.count);
+                acc = true;
+                continue;
+            }
+            break;
+        case Code::SubroutineReturn:
+            if constexpr (Record)
+                m_flow[i] = acc;
+            if (depth == 0) { // reached without a call: the main program is over
+                i = n;
+                continue;
+            }
+            i = returns[--depth];
+            acc = held[depth];
+            continue;
+        case Code::SubroutineStart:
+            // The first SBN(92) ends the main program: on to END.
+            if constexpr (Record)
+                m_flow[i] = acc;
+            i = static_cast<std::size_t>(s.slot) - 1;
+            continue;
+        case Code::StepDefine: {
+            // STEP(08) B: what follows runs as in an interlock whose condition is B, up to the
+            // next STEP(08); STEP(08) alone ends the steps. 254.07 is ON in the cycle a step
+            // starts (W353).
+            stepActive = !s.bit.valid() || rd(s.bit);
+            gate = interlock && stepActive;
+            acc = gate;
+            const bool started =
+                edge(m_edges[static_cast<std::size_t>(s.slot)], s.bit.valid() && stepActive, false);
+            if (s.bit.valid() && p.flags.stepStart.valid())
+                put(R, p.flags.stepStart, started);
+            break;
+        }
+        case Code::StepNext:
+            // SNXT(09) B: the step it stands in ends (its bit OFF, so from the next cycle on
+            // its outputs are OFF and its timers reset) and the step of B starts.
+            if (acc) {
+                if (s.slot >= 0)
+                    put(W, p.bitLists[static_cast<std::size_t>(s.slot)], false);
+                put(W, s.bit, true);
+            }
             break;
         case Code::Compare:
             if (acc) {
@@ -611,6 +695,8 @@ template <bool Record> void Engine::execute() {
                 m_flow[i] = acc;
             return;
         }
+        if (s.flags & kDifferentiated) [[unlikely]]
+            acc = level;
         if constexpr (Record)
             m_flow[i] = acc;
     }

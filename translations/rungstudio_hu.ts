@@ -180,6 +180,11 @@ Kilépési kód: 0 nincs hiba, 1 a programban hiba van, 2 használati vagy I/O h
     </message>
     <message>
         <location line="+1"/>
+        <source>Parts counter and reject tracking</source>
+        <translation>Darabszámláló és selejtkövetés</translation>
+    </message>
+    <message>
+        <location line="+2"/>
         <source>Stairway light</source>
         <translation>Lépcsőházi világítás</translation>
     </message>
@@ -2440,12 +2445,18 @@ Létradiagram- és utasításlista-szerkesztő VPC, Vigor, CPM1 és PL110 PLC-kh
         </translation>
     </message>
     <message>
-        <location line="+147"/>
+        <location line="+149"/>
         <source>%1 is driven twice; a coil may be driven only once (the first is on line %2)</source>
         <translation>%1 kétszer van vezérelve; egy tekercs csak egyszer vezérelhető (az első a(z) %2. sorban)</translation>
     </message>
     <message>
-        <location line="+12"/>
+        <location line="+9"/>
+        <location filename="../model/listing/structure.cpp" line="+20"/>
+        <source>%1 (the PLC says &quot;%2&quot;)</source>
+        <translation>%1 (a PLC üzenete: &quot;%2&quot;)</translation>
+    </message>
+    <message>
+        <location line="+7"/>
         <source>%1 is driven twice; a coil may be driven only once (the first is in rung %2)</source>
         <translation>%1 kétszer van vezérelve; egy tekercs csak egyszer vezérelhető (az első a(z) %2. létrafokon)</translation>
     </message>
@@ -2460,22 +2471,12 @@ Létradiagram- és utasításlista-szerkesztő VPC, Vigor, CPM1 és PL110 PLC-kh
         <translation>Az END utáni utasítások sosem hajtódnak végre</translation>
     </message>
     <message>
-        <location filename="../model/listing/structure.cpp" line="+117"/>
+        <location filename="../model/listing/structure.cpp" line="+219"/>
         <source>IL inside IL: close the first with ILC</source>
         <translation>IL az IL-en belül: az elsőt zárja le ILC-vel</translation>
     </message>
     <message>
-        <location line="+5"/>
-        <source>ILC without IL (&quot;IL (JMP) missing&quot;)</source>
-        <translation>ILC IL nélkül (&quot;IL (JMP) missing&quot;)</translation>
-    </message>
-    <message>
-        <location line="+4"/>
-        <source>IL-JMP interlace: the jump opened inside the interlock is still open</source>
-        <translation>IL-JMP átfedés: a reteszelésen belül nyitott ugrás még nyitva van</translation>
-    </message>
-    <message>
-        <location line="+12"/>
+        <location line="+24"/>
         <source>Jump number %1 is beyond 00..%2</source>
         <translation>A(z) %1 ugrásszám kívül esik a 00..%2 tartományon</translation>
     </message>
@@ -2495,17 +2496,68 @@ Létradiagram- és utasításlista-szerkesztő VPC, Vigor, CPM1 és PL110 PLC-kh
         <translation>%1 %2 előtte lévő JMP nélkül</translation>
     </message>
     <message>
+        <location line="-217"/>
+        <source>%1 cannot stand inside a step (STEP(08) .. STEP(08))</source>
+        <translation>%1 nem állhat lépésen belül (STEP(08) .. STEP(08))</translation>
+    </message>
+    <message>
+        <location line="+8"/>
+        <source>%1 %2 inside subroutine %3: close that one with %4 first</source>
+        <translation>%1 %2 a(z) %3. szubrutinon belül: előbb azt zárja le %4 utasítással</translation>
+    </message>
+    <message>
+        <location line="+9"/>
+        <source>A second %1 %2: each subroutine number is defined once</source>
+        <translation>Második %1 %2: minden szubrutinszám csak egyszer definiálható</translation>
+    </message>
+    <message>
+        <location line="+10"/>
+        <source>%1 without %2 before it</source>
+        <translation>%1 előtte álló %2 nélkül</translation>
+    </message>
+    <message>
+        <location line="+13"/>
+        <source>%1 without a control bit ends the steps, but no step is open</source>
+        <translation>A vezérlőbit nélküli %1 lezárja a lépéseket, de nincs nyitott lépés</translation>
+    </message>
+    <message>
+        <location line="+16"/>
+        <source>%1 is after the main program and outside the subroutines: it never runs</source>
+        <translation>%1 a főprogram után és a szubrutinokon kívül áll: soha nem fut le</translation>
+    </message>
+    <message>
         <location line="+7"/>
-        <source>%1 without JMP (&quot;IL (JMP) missing&quot;)</source>
-        <translation>%1 JMP nélkül (&quot;IL (JMP) missing&quot;)</translation>
+        <source>%1 %2 is not closed with %3</source>
+        <translation>%1 %2 nincs lezárva %3 utasítással</translation>
+    </message>
+    <message>
+        <location line="+6"/>
+        <source>The steps are not closed with %1 without a control bit</source>
+        <translation>A lépések nincsenek lezárva vezérlőbit nélküli %1 utasítással</translation>
     </message>
     <message>
         <location line="+5"/>
-        <source>IL-JMP interlace: the interlock opened inside the jump is still open</source>
-        <translation>IL-JMP átfedés: az ugráson belül nyitott reteszelés még nyitva van</translation>
+        <source>%1 %2: there is no %3 %2 before END</source>
+        <translation>%1 %2: az END előtt nincs %3 %2</translation>
     </message>
     <message>
-        <location line="+17"/>
+        <location line="+100"/>
+        <location line="+51"/>
+        <source>%1 without %2</source>
+        <translation>%1 %2 nélkül</translation>
+    </message>
+    <message>
+        <location line="-45"/>
+        <source>IL and JMP overlap: the jump opened inside the interlock is still open</source>
+        <translation>Az IL és a JMP átfedi egymást: a reteszelésen belül nyitott ugrás még nyitva van</translation>
+    </message>
+    <message>
+        <location line="+52"/>
+        <source>IL and JMP overlap: the interlock opened inside the jump is still open</source>
+        <translation>Az IL és a JMP átfedi egymást: az ugráson belül nyitott reteszelés még nyitva van</translation>
+    </message>
+    <message>
+        <location line="+18"/>
         <source>IL without ILC</source>
         <translation>IL ILC nélkül</translation>
     </message>
@@ -2530,7 +2582,7 @@ Létradiagram- és utasításlista-szerkesztő VPC, Vigor, CPM1 és PL110 PLC-kh
         <translation>A léptetőlánc nincs RET-tel lezárva</translation>
     </message>
     <message>
-        <location filename="../model/checks/checks_list.cpp" line="-83"/>
+        <location filename="../model/checks/checks_list.cpp" line="-89"/>
         <source>Set value %1 is out of range</source>
         <translation>A(z) %1 beállított érték tartományon kívül esik</translation>
     </message>
@@ -2555,12 +2607,12 @@ Létradiagram- és utasításlista-szerkesztő VPC, Vigor, CPM1 és PL110 PLC-kh
         <translation>A(z) %1 szám időzítőként és számlálóként is használatban van; közös tartományuk van</translation>
     </message>
     <message>
-        <location line="+27"/>
+        <location line="+29"/>
         <source>%1 is driven twice; the later one wins (first on line %2)</source>
         <translation>%1 kétszer van vezérelve; a későbbi érvényesül (az első a(z) %2. sorban)</translation>
     </message>
     <message>
-        <location line="+11"/>
+        <location line="+15"/>
         <source>%1 is driven twice; the later one wins (first in rung %2)</source>
         <translation>%1 kétszer van vezérelve; a későbbi érvényesül (az első a(z) %2. létrafokon)</translation>
     </message>
@@ -2575,7 +2627,22 @@ Létradiagram- és utasításlista-szerkesztő VPC, Vigor, CPM1 és PL110 PLC-kh
         <translation>%1. operandus</translation>
     </message>
     <message>
-        <location line="+44"/>
+        <location line="+53"/>
+        <source>the %1 of %2 must be #DDSS with bits DD and SS from 00 to 15, not %3</source>
+        <translation>a(z) %2 %1 értéke #DDSS legyen, DD és SS bit 00 és 15 között, nem %3</translation>
+    </message>
+    <message>
+        <location line="+2"/>
+        <source>the %1 of %2 must be #0DNS with digits D, N and S from 0 to 3, not %3</source>
+        <translation>a(z) %2 %1 értéke #0DNS legyen, D, N és S számjegy 0 és 3 között, nem %3</translation>
+    </message>
+    <message>
+        <location line="+18"/>
+        <source>the %1 of %2 must be BCD (#0000..#9999), not %3</source>
+        <translation>a(z) %2 %1 értéke BCD legyen (#0000..#9999), nem %3</translation>
+    </message>
+    <message>
+        <location line="+21"/>
         <source>%1 or %2</source>
         <translation>%1 vagy %2</translation>
     </message>
@@ -2595,7 +2662,22 @@ Létradiagram- és utasításlista-szerkesztő VPC, Vigor, CPM1 és PL110 PLC-kh
         <translation>a(z) %1 csak %2..%3 operandust fogad el, nem %4</translation>
     </message>
     <message>
+        <location line="+6"/>
+        <source>the %1 of %2 must be a channel with bits (IR, HR, LR), not %3</source>
+        <translation>a(z) %2 %1 bitcímezhető csatorna legyen (IR, HR, LR), nem %3</translation>
+    </message>
+    <message>
         <location line="+10"/>
+        <source>%1 %2 %3: the end word must be in the area of the start word and not before it</source>
+        <translation>%1 %2 %3: a záró szó a kezdő szó területén legyen, és ne előtte</translation>
+    </message>
+    <message>
+        <location line="+11"/>
+        <source>%1 writes %2 words from %3, past the end of %4</source>
+        <translation>%1 %2 szót ír %3-tól, túl a(z) %4 végén</translation>
+    </message>
+    <message>
+        <location line="+14"/>
         <source>%1 cannot write %2: %3 are written only by %4</source>
         <translation>a(z) %1 nem írhatja a(z) %2 operandust: a(z) %3 csak a(z) %4 írhatja</translation>
     </message>
@@ -2727,12 +2809,12 @@ Létradiagram- és utasításlista-szerkesztő VPC, Vigor, CPM1 és PL110 PLC-kh
 <context>
     <name>rung::model::InstructionList</name>
     <message>
-        <location filename="../model/listing/il_parse.cpp" line="+121"/>
+        <location filename="../model/listing/il_parse.cpp" line="+123"/>
         <source>Too many errors; the rest of the listing was not read</source>
         <translation>Túl sok hiba; a lista többi része nem lett beolvasva</translation>
     </message>
     <message>
-        <location line="+107"/>
+        <location line="+152"/>
         <source>Program sections such as &apos;%1&apos; are not supported: a listing is one main program, run at every scan</source>
         <translation>A programszakaszok (például &apos;%1&apos;) nem támogatottak: az utasításlista egyetlen főprogram, amely minden ciklusban lefut</translation>
     </message>
@@ -2763,12 +2845,12 @@ Létradiagram- és utasításlista-szerkesztő VPC, Vigor, CPM1 és PL110 PLC-kh
     </message>
     <message>
         <location line="+19"/>
-        <location line="+172"/>
+        <location line="+179"/>
         <source>&apos;%1...&apos; is too long for an operand</source>
         <translation>A(z) &apos;%1...&apos; túl hosszú egy operandushoz</translation>
     </message>
     <message numerus="yes">
-        <location line="-114"/>
+        <location line="-117"/>
         <source>%1 needs %n operand(s): %2</source>
         <translation>
             <numerusform>%1 %n operandust igényel: %2</numerusform>
@@ -2787,7 +2869,7 @@ Létradiagram- és utasításlista-szerkesztő VPC, Vigor, CPM1 és PL110 PLC-kh
         </translation>
     </message>
     <message>
-        <location line="+28"/>
+        <location line="+31"/>
         <source>%1: a set value is a BCD constant #0000..#9999 or a channel</source>
         <translation>%1: a beállított érték BCD konstans (#0000..#9999) vagy csatorna</translation>
     </message>
@@ -2812,7 +2894,7 @@ Létradiagram- és utasításlista-szerkesztő VPC, Vigor, CPM1 és PL110 PLC-kh
         <translation>%1: itt %2 kell</translation>
     </message>
     <message>
-        <location line="+24"/>
+        <location line="+26"/>
         <source>a timer</source>
         <translation>egy időzítő</translation>
     </message>
@@ -3116,7 +3198,17 @@ Létradiagram- és utasításlista-szerkesztő VPC, Vigor, CPM1 és PL110 PLC-kh
         <translation>tartórelék</translation>
     </message>
     <message>
-        <location line="+5"/>
+        <location line="+8"/>
+        <source>link relays</source>
+        <translation>link relék</translation>
+    </message>
+    <message>
+        <location line="+7"/>
+        <source>temporary relays</source>
+        <translation>átmeneti relék</translation>
+    </message>
+    <message>
+        <location line="+4"/>
         <location filename="../model/target/target_pl110.cpp" line="+86"/>
         <location filename="../model/target/target_vigor.cpp" line="+115"/>
         <location filename="../model/target/target_vpc.cpp" line="+61"/>
@@ -3124,7 +3216,7 @@ Létradiagram- és utasításlista-szerkesztő VPC, Vigor, CPM1 és PL110 PLC-kh
         <translation>időzítők</translation>
     </message>
     <message>
-        <location line="+4"/>
+        <location line="+8"/>
         <location filename="../model/target/target_pl110.cpp" line="+2"/>
         <location filename="../model/target/target_vigor.cpp" line="+1"/>
         <location filename="../model/target/target_vpc.cpp" line="+5"/>
@@ -3132,7 +3224,7 @@ Létradiagram- és utasításlista-szerkesztő VPC, Vigor, CPM1 és PL110 PLC-kh
         <translation>számlálók</translation>
     </message>
     <message>
-        <location line="+5"/>
+        <location line="+7"/>
         <source>data memory</source>
         <translation>adatmemória</translation>
     </message>
@@ -3186,6 +3278,36 @@ Létradiagram- és utasításlista-szerkesztő VPC, Vigor, CPM1 és PL110 PLC-kh
         <location filename="../model/target/target_vpc.cpp" line="+2"/>
         <source>1 s clock</source>
         <translation>1 s-os órajel</translation>
+    </message>
+    <message>
+        <location line="+4"/>
+        <source>ER: instruction execution error</source>
+        <translation>ER: utasítás-végrehajtási hiba</translation>
+    </message>
+    <message>
+        <location line="+2"/>
+        <source>CY: carry</source>
+        <translation>CY: átvitel</translation>
+    </message>
+    <message>
+        <location line="+2"/>
+        <source>GR: greater than</source>
+        <translation>GR: nagyobb</translation>
+    </message>
+    <message>
+        <location line="+2"/>
+        <source>EQ: equal</source>
+        <translation>EQ: egyenlő</translation>
+    </message>
+    <message>
+        <location line="+2"/>
+        <source>LE: less than</source>
+        <translation>LE: kisebb</translation>
+    </message>
+    <message>
+        <location line="+2"/>
+        <source>ON for one cycle when a step starts</source>
+        <translation>Egy ciklusig BE, amikor egy lépés elindul</translation>
     </message>
     <message>
         <location line="+2"/>
@@ -3345,12 +3467,78 @@ Létradiagram- és utasításlista-szerkesztő VPC, Vigor, CPM1 és PL110 PLC-kh
         <translation>Az ilyen számú ugrás vége</translation>
     </message>
     <message>
-        <location line="+4"/>
+        <location filename="../model/target/target_cpm1_instructions.cpp" line="+70"/>
+        <source>subroutine number</source>
+        <translation>szubrutin száma</translation>
+    </message>
+    <message>
+        <location line="+2"/>
+        <source>start word</source>
+        <translation>kezdő szó</translation>
+    </message>
+    <message>
+        <location line="+1"/>
+        <source>end word</source>
+        <translation>záró szó</translation>
+    </message>
+    <message>
+        <location line="+7"/>
+        <source>result</source>
+        <translation>eredmény</translation>
+    </message>
+    <message>
+        <location line="+2"/>
+        <source>bit designator</source>
+        <translation>bitkijelölő szó</translation>
+    </message>
+    <message>
+        <location line="+2"/>
+        <source>digit designator</source>
+        <translation>számjegykijelölő szó</translation>
+    </message>
+    <message>
+        <location line="+2"/>
+        <location line="+1"/>
+        <source>control bit</source>
+        <translation>vezérlőbit</translation>
+    </message>
+    <message>
+        <location line="+8"/>
         <source>Move a channel or a constant</source>
         <translation>Csatorna vagy konstans mozgatása</translation>
     </message>
     <message>
-        <location line="+8"/>
+        <location line="+2"/>
+        <source>Move the inverse of S to D</source>
+        <translation>S inverzének mozgatása D-be</translation>
+    </message>
+    <message>
+        <location line="+2"/>
+        <source>Move one bit: Bi = #DDSS, destination bit DD, source bit SS</source>
+        <translation>Egy bit mozgatása: Bi = #DDSS, DD a célbit, SS a forrásbit</translation>
+    </message>
+    <message>
+        <location line="+4"/>
+        <source>Move digits: Di = #0DNS, first destination digit D, N+1 digits, first source digit S</source>
+        <translation>Számjegyek mozgatása: Di = #0DNS, D az első célszámjegy, N+1 számjegy, S az első forrásszámjegy</translation>
+    </message>
+    <message>
+        <location line="+6"/>
+        <source>Shift register: data, shift pulse and reset inputs; St..E</source>
+        <translation>Léptetőregiszter: adat-, léptető- és törlőbemenet; St..E</translation>
+    </message>
+    <message>
+        <location line="+4"/>
+        <source>Shift the words St..E up by one word, #0000 into St</source>
+        <translation>Az St..E szavak léptetése egy szóval feljebb, St-be #0000 kerül</translation>
+    </message>
+    <message>
+        <location line="+5"/>
+        <source>Compare two words: GR 255.05, EQ 255.06, LE 255.07</source>
+        <translation>Két szó összehasonlítása: GR 255.05, EQ 255.06, LE 255.07</translation>
+    </message>
+    <message>
+        <location line="+5"/>
         <source>R = the value of the BCD digits of S</source>
         <translation>R = S BCD számjegyeinek értéke</translation>
     </message>
@@ -3380,7 +3568,82 @@ Létradiagram- és utasításlista-szerkesztő VPC, Vigor, CPM1 és PL110 PLC-kh
         <translation>R = I1 XOR I2, bitenként</translation>
     </message>
     <message>
-        <location line="+11"/>
+        <location line="+3"/>
+        <source>Add 1 to a BCD channel (9999 -&gt; 0000)</source>
+        <translation>BCD csatorna növelése 1-gyel (9999 -&gt; 0000)</translation>
+    </message>
+    <message>
+        <location line="+2"/>
+        <source>Subtract 1 from a BCD channel (0000 -&gt; 9999)</source>
+        <translation>BCD csatorna csökkentése 1-gyel (0000 -&gt; 9999)</translation>
+    </message>
+    <message>
+        <location line="+4"/>
+        <source>Set the carry flag CY (255.04)</source>
+        <translation>Az átvitel jelző (CY, 255.04) beállítása</translation>
+    </message>
+    <message>
+        <location line="+2"/>
+        <source>Clear the carry flag CY (255.04)</source>
+        <translation>Az átvitel jelző (CY, 255.04) törlése</translation>
+    </message>
+    <message>
+        <location line="+2"/>
+        <source>R = Au + Ad + CY in BCD; CY on a carry</source>
+        <translation>R = Au + Ad + CY BCD-ben; átvitelnél CY</translation>
+    </message>
+    <message>
+        <location line="+3"/>
+        <source>R = Mi - Su - CY in BCD; below zero: the 10&apos;s complement and CY</source>
+        <translation>R = Mi - Su - CY BCD-ben; nulla alatt: a 10-es komplemens és CY</translation>
+    </message>
+    <message>
+        <location line="+4"/>
+        <source>R+1, R = Md x Mr in BCD (8 digits)</source>
+        <translation>R+1, R = Md x Mr BCD-ben (8 számjegy)</translation>
+    </message>
+    <message>
+        <location line="+3"/>
+        <source>R = Dd / Dr in BCD, R+1 = the remainder</source>
+        <translation>R = Dd / Dr BCD-ben, R+1 = a maradék</translation>
+    </message>
+    <message>
+        <location line="+4"/>
+        <source>R = Au + Ad + CY in binary; CY above FFFF</source>
+        <translation>R = Au + Ad + CY binárisan; FFFF felett CY</translation>
+    </message>
+    <message>
+        <location line="+3"/>
+        <source>R = Mi - Su - CY in binary; below zero: the 2&apos;s complement and CY</source>
+        <translation>R = Mi - Su - CY binárisan; nulla alatt: a kettes komplemens és CY</translation>
+    </message>
+    <message>
+        <location line="+5"/>
+        <source>Run subroutine N, then go on after SBS</source>
+        <translation>Az N. szubrutin futtatása, majd folytatás az SBS után</translation>
+    </message>
+    <message>
+        <location line="+3"/>
+        <source>Start of subroutine N (after the main program; ends the main program)</source>
+        <translation>Az N. szubrutin kezdete (a főprogram után; itt ér véget a főprogram)</translation>
+    </message>
+    <message>
+        <location line="+4"/>
+        <source>End of the subroutine: back after its SBS</source>
+        <translation>A szubrutin vége: vissza a hívó SBS utánra</translation>
+    </message>
+    <message>
+        <location line="+4"/>
+        <source>Start of the step of control bit B; without B: end of the steps</source>
+        <translation>A B vezérlőbitű lépés kezdete; B nélkül: a lépések vége</translation>
+    </message>
+    <message>
+        <location line="+4"/>
+        <source>End the current step and start the step of control bit B</source>
+        <translation>Az aktuális lépés lezárása és a B vezérlőbitű lépés indítása</translation>
+    </message>
+    <message>
+        <location filename="../model/target/target_cpm1.cpp" line="+5"/>
         <location filename="../model/target/target_vigor.cpp" line="+23"/>
         <source>No operation</source>
         <translation>Nincs művelet</translation>
@@ -4304,7 +4567,7 @@ Létradiagram- és utasításlista-szerkesztő VPC, Vigor, CPM1 és PL110 PLC-kh
         <translation>a(z) %1 szavas blokk túlnyúlik a terület végén</translation>
     </message>
     <message>
-        <location filename="../simulator/compiler.cpp" line="+140"/>
+        <location filename="../simulator/compiler.cpp" line="+149"/>
         <source>unknown instruction</source>
         <translation>ismeretlen utasítás</translation>
     </message>
@@ -4329,7 +4592,7 @@ Létradiagram- és utasításlista-szerkesztő VPC, Vigor, CPM1 és PL110 PLC-kh
         <translation>%1 nem operandus</translation>
     </message>
     <message>
-        <location line="+97"/>
+        <location line="+107"/>
         <source>the program has no target</source>
         <translation>a programnak nincs célrendszere</translation>
     </message>
@@ -4337,27 +4600,32 @@ Létradiagram- és utasításlista-szerkesztő VPC, Vigor, CPM1 és PL110 PLC-kh
 <context>
     <name>rung::simulator::Engine</name>
     <message>
-        <location filename="../simulator/engine_execute.cpp" line="+76"/>
+        <location filename="../simulator/engine_execute.cpp" line="+77"/>
         <source>set value %1 is not a BCD number; the instruction is skipped</source>
         <translation>a(z) %1 beállított érték nem BCD szám; az utasítás kimarad</translation>
     </message>
     <message>
-        <location line="+43"/>
+        <location line="+44"/>
         <source>%1 does not fit in BCD (0..%2); the destination is unchanged</source>
         <translation>%1 nem fér el BCD-ben (0..%2); a cél nem változik</translation>
     </message>
     <message>
-        <location line="+12"/>
+        <location line="+13"/>
         <source>%1 is not a BCD number; the destination is unchanged</source>
         <translation>%1 nem BCD szám; a cél nem változik</translation>
     </message>
     <message>
-        <location line="+15"/>
+        <location line="+17"/>
         <source>result %1 is outside 0..9999; %2 is written</source>
         <translation>a(z) %1 eredmény kívül esik a 0..9999 tartományon; %2 íródik be</translation>
     </message>
     <message>
-        <location line="+353"/>
+        <location line="+344"/>
+        <source>subroutines nest deeper than %1 levels; the call is skipped</source>
+        <translation>a szubrutinok %1 szintnél mélyebben ágyazódnak egymásba; a hívás elmarad</translation>
+    </message>
+    <message>
+        <location line="+88"/>
         <location line="+56"/>
         <source>division by zero; the destination is unchanged</source>
         <translation>osztás nullával; a cél változatlan marad</translation>
@@ -4366,6 +4634,36 @@ Létradiagram- és utasításlista-szerkesztő VPC, Vigor, CPM1 és PL110 PLC-kh
         <location line="+21"/>
         <source>MOVIND index %1 is outside 0..%2; nothing is written</source>
         <translation>a MOVIND %1 indexe kívül esik a 0..%2 tartományon; nem íródik semmi</translation>
+    </message>
+    <message>
+        <location filename="../simulator/engine_cpm1.cpp" line="+44"/>
+        <source>%1; the instruction is skipped and ER %2 is ON</source>
+        <translation>%1; az utasítás nem fut le, és az ER %2 BE</translation>
+    </message>
+    <message>
+        <location line="+2"/>
+        <source>%1; the instruction is skipped</source>
+        <translation>%1; az utasítás nem fut le</translation>
+    </message>
+    <message>
+        <location line="+31"/>
+        <source>%1 is not a BCD number</source>
+        <translation>%1 nem BCD szám</translation>
+    </message>
+    <message>
+        <location line="+27"/>
+        <source>bit designator %1 is not #DDSS with bits 00 to 15</source>
+        <translation>a(z) %1 bitkijelölő szó nem #DDSS alakú, 00 és 15 közötti bitekkel</translation>
+    </message>
+    <message>
+        <location line="+17"/>
+        <source>digit designator %1 is not #0DNS with digits 0 to 3</source>
+        <translation>a(z) %1 számjegykijelölő szó nem #0DNS alakú, 0 és 3 közötti számjegyekkel</translation>
+    </message>
+    <message>
+        <location line="+74"/>
+        <source>division by zero</source>
+        <translation>osztás nullával</translation>
     </message>
 </context>
 <context>
@@ -4384,7 +4682,7 @@ Létradiagram- és utasításlista-szerkesztő VPC, Vigor, CPM1 és PL110 PLC-kh
         <translation>ismeretlen operandus: %1: %2</translation>
     </message>
     <message>
-        <location line="+26"/>
+        <location line="+29"/>
         <source>%1 needs a value</source>
         <translation>%1 után érték kell</translation>
     </message>
@@ -4404,7 +4702,7 @@ Létradiagram- és utasításlista-szerkesztő VPC, Vigor, CPM1 és PL110 PLC-kh
         <translation>--set formája DEV=VALUE@SCAN, nem &quot;%1&quot;</translation>
     </message>
     <message>
-        <location line="+29"/>
+        <location line="+34"/>
         <source>unknown option %1</source>
         <translation>ismeretlen kapcsoló: %1</translation>
     </message>

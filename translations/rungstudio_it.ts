@@ -180,6 +180,11 @@ Codice di uscita: 0 nessun errore, 1 il programma contiene errori, 2 errore di u
     </message>
     <message>
         <location line="+1"/>
+        <source>Parts counter and reject tracking</source>
+        <translation>Contapezzi e tracciamento degli scarti</translation>
+    </message>
+    <message>
+        <location line="+2"/>
         <source>Stairway light</source>
         <translation>Luce delle scale</translation>
     </message>
@@ -2448,12 +2453,18 @@ Editor di schemi ladder e liste istruzioni per VPC, Vigor, CPM1 e PL110.</transl
         </translation>
     </message>
     <message>
-        <location line="+147"/>
+        <location line="+149"/>
         <source>%1 is driven twice; a coil may be driven only once (the first is on line %2)</source>
         <translation>%1 è comandato due volte; una bobina può essere comandata una volta sola (il primo è alla riga %2)</translation>
     </message>
     <message>
-        <location line="+12"/>
+        <location line="+9"/>
+        <location filename="../model/listing/structure.cpp" line="+20"/>
+        <source>%1 (the PLC says &quot;%2&quot;)</source>
+        <translation>%1 (il PLC segnala &quot;%2&quot;)</translation>
+    </message>
+    <message>
+        <location line="+7"/>
         <source>%1 is driven twice; a coil may be driven only once (the first is in rung %2)</source>
         <translation>%1 è comandato due volte; una bobina può essere comandata una volta sola (il primo è nel segmento %2)</translation>
     </message>
@@ -2468,22 +2479,12 @@ Editor di schemi ladder e liste istruzioni per VPC, Vigor, CPM1 e PL110.</transl
         <translation>Le istruzioni dopo END non vengono mai eseguite</translation>
     </message>
     <message>
-        <location filename="../model/listing/structure.cpp" line="+117"/>
+        <location filename="../model/listing/structure.cpp" line="+219"/>
         <source>IL inside IL: close the first with ILC</source>
         <translation>IL dentro IL: chiudere il primo con ILC</translation>
     </message>
     <message>
-        <location line="+5"/>
-        <source>ILC without IL (&quot;IL (JMP) missing&quot;)</source>
-        <translation>ILC senza IL (&quot;IL (JMP) missing&quot;)</translation>
-    </message>
-    <message>
-        <location line="+4"/>
-        <source>IL-JMP interlace: the jump opened inside the interlock is still open</source>
-        <translation>Intreccio IL-JMP: il salto aperto dentro l&apos;interblocco è ancora aperto</translation>
-    </message>
-    <message>
-        <location line="+12"/>
+        <location line="+24"/>
         <source>Jump number %1 is beyond 00..%2</source>
         <translation>Il numero di salto %1 è oltre 00..%2</translation>
     </message>
@@ -2503,17 +2504,68 @@ Editor di schemi ladder e liste istruzioni per VPC, Vigor, CPM1 e PL110.</transl
         <translation>%1 %2 senza un JMP prima</translation>
     </message>
     <message>
+        <location line="-217"/>
+        <source>%1 cannot stand inside a step (STEP(08) .. STEP(08))</source>
+        <translation>%1 non può stare dentro una fase (STEP(08) .. STEP(08))</translation>
+    </message>
+    <message>
+        <location line="+8"/>
+        <source>%1 %2 inside subroutine %3: close that one with %4 first</source>
+        <translation>%1 %2 dentro la subroutine %3: chiudere prima quella con %4</translation>
+    </message>
+    <message>
+        <location line="+9"/>
+        <source>A second %1 %2: each subroutine number is defined once</source>
+        <translation>Una seconda %1 %2: ogni numero di subroutine si definisce una volta sola</translation>
+    </message>
+    <message>
+        <location line="+10"/>
+        <source>%1 without %2 before it</source>
+        <translation>%1 senza %2 prima</translation>
+    </message>
+    <message>
+        <location line="+13"/>
+        <source>%1 without a control bit ends the steps, but no step is open</source>
+        <translation>%1 senza bit di controllo chiude le fasi, ma nessuna fase è aperta</translation>
+    </message>
+    <message>
+        <location line="+16"/>
+        <source>%1 is after the main program and outside the subroutines: it never runs</source>
+        <translation>%1 è dopo il programma principale e fuori dalle subroutine: non viene mai eseguita</translation>
+    </message>
+    <message>
         <location line="+7"/>
-        <source>%1 without JMP (&quot;IL (JMP) missing&quot;)</source>
-        <translation>%1 senza JMP (&quot;IL (JMP) missing&quot;)</translation>
+        <source>%1 %2 is not closed with %3</source>
+        <translation>%1 %2 non è chiusa con %3</translation>
+    </message>
+    <message>
+        <location line="+6"/>
+        <source>The steps are not closed with %1 without a control bit</source>
+        <translation>Le fasi non sono chiuse con %1 senza bit di controllo</translation>
     </message>
     <message>
         <location line="+5"/>
-        <source>IL-JMP interlace: the interlock opened inside the jump is still open</source>
-        <translation>Intreccio IL-JMP: l&apos;interblocco aperto dentro il salto è ancora aperto</translation>
+        <source>%1 %2: there is no %3 %2 before END</source>
+        <translation>%1 %2: prima di END non c&apos;è %3 %2</translation>
     </message>
     <message>
-        <location line="+17"/>
+        <location line="+100"/>
+        <location line="+51"/>
+        <source>%1 without %2</source>
+        <translation>%1 senza %2</translation>
+    </message>
+    <message>
+        <location line="-45"/>
+        <source>IL and JMP overlap: the jump opened inside the interlock is still open</source>
+        <translation>IL e JMP si sovrappongono: il salto aperto dentro l&apos;interblocco è ancora aperto</translation>
+    </message>
+    <message>
+        <location line="+52"/>
+        <source>IL and JMP overlap: the interlock opened inside the jump is still open</source>
+        <translation>IL e JMP si sovrappongono: l&apos;interblocco aperto dentro il salto è ancora aperto</translation>
+    </message>
+    <message>
+        <location line="+18"/>
         <source>IL without ILC</source>
         <translation>IL senza ILC</translation>
     </message>
@@ -2538,7 +2590,7 @@ Editor di schemi ladder e liste istruzioni per VPC, Vigor, CPM1 e PL110.</transl
         <translation>Lo step ladder non è chiuso con RET</translation>
     </message>
     <message>
-        <location filename="../model/checks/checks_list.cpp" line="-83"/>
+        <location filename="../model/checks/checks_list.cpp" line="-89"/>
         <source>Set value %1 is out of range</source>
         <translation>Il valore di preset %1 è fuori campo</translation>
     </message>
@@ -2563,12 +2615,12 @@ Editor di schemi ladder e liste istruzioni per VPC, Vigor, CPM1 e PL110.</transl
         <translation>Il numero %1 è usato come temporizzatore e come contatore; condividono un banco</translation>
     </message>
     <message>
-        <location line="+27"/>
+        <location line="+29"/>
         <source>%1 is driven twice; the later one wins (first on line %2)</source>
         <translation>%1 è comandato due volte; prevale l&apos;ultimo (il primo alla riga %2)</translation>
     </message>
     <message>
-        <location line="+11"/>
+        <location line="+15"/>
         <source>%1 is driven twice; the later one wins (first in rung %2)</source>
         <translation>%1 è comandato due volte; prevale l&apos;ultimo (il primo nel segmento %2)</translation>
     </message>
@@ -2583,7 +2635,22 @@ Editor di schemi ladder e liste istruzioni per VPC, Vigor, CPM1 e PL110.</transl
         <translation>operando %1</translation>
     </message>
     <message>
-        <location line="+44"/>
+        <location line="+53"/>
+        <source>the %1 of %2 must be #DDSS with bits DD and SS from 00 to 15, not %3</source>
+        <translation>il %1 di %2 deve essere #DDSS con i bit DD e SS da 00 a 15, non %3</translation>
+    </message>
+    <message>
+        <location line="+2"/>
+        <source>the %1 of %2 must be #0DNS with digits D, N and S from 0 to 3, not %3</source>
+        <translation>il %1 di %2 deve essere #0DNS con le cifre D, N e S da 0 a 3, non %3</translation>
+    </message>
+    <message>
+        <location line="+18"/>
+        <source>the %1 of %2 must be BCD (#0000..#9999), not %3</source>
+        <translation>il %1 di %2 deve essere BCD (#0000..#9999), non %3</translation>
+    </message>
+    <message>
+        <location line="+21"/>
         <source>%1 or %2</source>
         <translation>%1 o %2</translation>
     </message>
@@ -2603,7 +2670,22 @@ Editor di schemi ladder e liste istruzioni per VPC, Vigor, CPM1 e PL110.</transl
         <translation>%1 accetta solo %2..%3, non %4</translation>
     </message>
     <message>
+        <location line="+6"/>
+        <source>the %1 of %2 must be a channel with bits (IR, HR, LR), not %3</source>
+        <translation>il %1 di %2 deve essere un canale con bit (IR, HR, LR), non %3</translation>
+    </message>
+    <message>
         <location line="+10"/>
+        <source>%1 %2 %3: the end word must be in the area of the start word and not before it</source>
+        <translation>%1 %2 %3: la word finale deve stare nell&apos;area della word iniziale e non prima di essa</translation>
+    </message>
+    <message>
+        <location line="+11"/>
+        <source>%1 writes %2 words from %3, past the end of %4</source>
+        <translation>%1 scrive %2 word da %3, oltre la fine di %4</translation>
+    </message>
+    <message>
+        <location line="+14"/>
         <source>%1 cannot write %2: %3 are written only by %4</source>
         <translation>%1 non può scrivere %2: %3 sono scritti solo da %4</translation>
     </message>
@@ -2738,12 +2820,12 @@ Editor di schemi ladder e liste istruzioni per VPC, Vigor, CPM1 e PL110.</transl
 <context>
     <name>rung::model::InstructionList</name>
     <message>
-        <location filename="../model/listing/il_parse.cpp" line="+121"/>
+        <location filename="../model/listing/il_parse.cpp" line="+123"/>
         <source>Too many errors; the rest of the listing was not read</source>
         <translation>Troppi errori; il resto della lista non è stato letto</translation>
     </message>
     <message>
-        <location line="+107"/>
+        <location line="+152"/>
         <source>Program sections such as &apos;%1&apos; are not supported: a listing is one main program, run at every scan</source>
         <translation>Le sezioni di programma come &apos;%1&apos; non sono supportate: una lista istruzioni è un solo programma principale, eseguito a ogni scansione</translation>
     </message>
@@ -2774,12 +2856,12 @@ Editor di schemi ladder e liste istruzioni per VPC, Vigor, CPM1 e PL110.</transl
     </message>
     <message>
         <location line="+19"/>
-        <location line="+172"/>
+        <location line="+179"/>
         <source>&apos;%1...&apos; is too long for an operand</source>
         <translation>&apos;%1...&apos; è troppo lungo per un operando</translation>
     </message>
     <message numerus="yes">
-        <location line="-114"/>
+        <location line="-117"/>
         <source>%1 needs %n operand(s): %2</source>
         <translation>
             <numerusform>%1 richiede %n operando: %2</numerusform>
@@ -2800,7 +2882,7 @@ Editor di schemi ladder e liste istruzioni per VPC, Vigor, CPM1 e PL110.</transl
         </translation>
     </message>
     <message>
-        <location line="+28"/>
+        <location line="+31"/>
         <source>%1: a set value is a BCD constant #0000..#9999 or a channel</source>
         <translation>%1: un valore di preset è una costante BCD #0000..#9999 o un canale</translation>
     </message>
@@ -2825,7 +2907,7 @@ Editor di schemi ladder e liste istruzioni per VPC, Vigor, CPM1 e PL110.</transl
         <translation>%1: qui è atteso %2</translation>
     </message>
     <message>
-        <location line="+24"/>
+        <location line="+26"/>
         <source>a timer</source>
         <translation>un temporizzatore</translation>
     </message>
@@ -3129,7 +3211,17 @@ Editor di schemi ladder e liste istruzioni per VPC, Vigor, CPM1 e PL110.</transl
         <translation>relè di mantenimento</translation>
     </message>
     <message>
-        <location line="+5"/>
+        <location line="+8"/>
+        <source>link relays</source>
+        <translation>relè di collegamento</translation>
+    </message>
+    <message>
+        <location line="+7"/>
+        <source>temporary relays</source>
+        <translation>relè temporanei</translation>
+    </message>
+    <message>
+        <location line="+4"/>
         <location filename="../model/target/target_pl110.cpp" line="+86"/>
         <location filename="../model/target/target_vigor.cpp" line="+115"/>
         <location filename="../model/target/target_vpc.cpp" line="+61"/>
@@ -3137,7 +3229,7 @@ Editor di schemi ladder e liste istruzioni per VPC, Vigor, CPM1 e PL110.</transl
         <translation>temporizzatori</translation>
     </message>
     <message>
-        <location line="+4"/>
+        <location line="+8"/>
         <location filename="../model/target/target_pl110.cpp" line="+2"/>
         <location filename="../model/target/target_vigor.cpp" line="+1"/>
         <location filename="../model/target/target_vpc.cpp" line="+5"/>
@@ -3145,7 +3237,7 @@ Editor di schemi ladder e liste istruzioni per VPC, Vigor, CPM1 e PL110.</transl
         <translation>contatori</translation>
     </message>
     <message>
-        <location line="+5"/>
+        <location line="+7"/>
         <source>data memory</source>
         <translation>memoria dati</translation>
     </message>
@@ -3199,6 +3291,36 @@ Editor di schemi ladder e liste istruzioni per VPC, Vigor, CPM1 e PL110.</transl
         <location filename="../model/target/target_vpc.cpp" line="+2"/>
         <source>1 s clock</source>
         <translation>clock da 1 s</translation>
+    </message>
+    <message>
+        <location line="+4"/>
+        <source>ER: instruction execution error</source>
+        <translation>ER: errore di esecuzione dell&apos;istruzione</translation>
+    </message>
+    <message>
+        <location line="+2"/>
+        <source>CY: carry</source>
+        <translation>CY: riporto</translation>
+    </message>
+    <message>
+        <location line="+2"/>
+        <source>GR: greater than</source>
+        <translation>GR: maggiore</translation>
+    </message>
+    <message>
+        <location line="+2"/>
+        <source>EQ: equal</source>
+        <translation>EQ: uguale</translation>
+    </message>
+    <message>
+        <location line="+2"/>
+        <source>LE: less than</source>
+        <translation>LE: minore</translation>
+    </message>
+    <message>
+        <location line="+2"/>
+        <source>ON for one cycle when a step starts</source>
+        <translation>ON per un ciclo quando una fase inizia</translation>
     </message>
     <message>
         <location line="+2"/>
@@ -3358,12 +3480,78 @@ Editor di schemi ladder e liste istruzioni per VPC, Vigor, CPM1 e PL110.</transl
         <translation>Fine del salto con questo numero</translation>
     </message>
     <message>
-        <location line="+4"/>
+        <location filename="../model/target/target_cpm1_instructions.cpp" line="+70"/>
+        <source>subroutine number</source>
+        <translation>numero di subroutine</translation>
+    </message>
+    <message>
+        <location line="+2"/>
+        <source>start word</source>
+        <translation>word iniziale</translation>
+    </message>
+    <message>
+        <location line="+1"/>
+        <source>end word</source>
+        <translation>word finale</translation>
+    </message>
+    <message>
+        <location line="+7"/>
+        <source>result</source>
+        <translation>risultato</translation>
+    </message>
+    <message>
+        <location line="+2"/>
+        <source>bit designator</source>
+        <translation>selettore di bit</translation>
+    </message>
+    <message>
+        <location line="+2"/>
+        <source>digit designator</source>
+        <translation>selettore di cifre</translation>
+    </message>
+    <message>
+        <location line="+2"/>
+        <location line="+1"/>
+        <source>control bit</source>
+        <translation>bit di controllo</translation>
+    </message>
+    <message>
+        <location line="+8"/>
         <source>Move a channel or a constant</source>
         <translation>Sposta un canale o una costante</translation>
     </message>
     <message>
-        <location line="+8"/>
+        <location line="+2"/>
+        <source>Move the inverse of S to D</source>
+        <translation>Copia l&apos;inverso di S in D</translation>
+    </message>
+    <message>
+        <location line="+2"/>
+        <source>Move one bit: Bi = #DDSS, destination bit DD, source bit SS</source>
+        <translation>Copia un bit: Bi = #DDSS, bit di destinazione DD, bit sorgente SS</translation>
+    </message>
+    <message>
+        <location line="+4"/>
+        <source>Move digits: Di = #0DNS, first destination digit D, N+1 digits, first source digit S</source>
+        <translation>Copia cifre: Di = #0DNS, prima cifra di destinazione D, N+1 cifre, prima cifra sorgente S</translation>
+    </message>
+    <message>
+        <location line="+6"/>
+        <source>Shift register: data, shift pulse and reset inputs; St..E</source>
+        <translation>Registro a scorrimento: ingressi dato, impulso di scorrimento e reset; St..E</translation>
+    </message>
+    <message>
+        <location line="+4"/>
+        <source>Shift the words St..E up by one word, #0000 into St</source>
+        <translation>Sposta le word St..E di una word verso l&apos;alto, #0000 in St</translation>
+    </message>
+    <message>
+        <location line="+5"/>
+        <source>Compare two words: GR 255.05, EQ 255.06, LE 255.07</source>
+        <translation>Confronta due word: GR 255.05, EQ 255.06, LE 255.07</translation>
+    </message>
+    <message>
+        <location line="+5"/>
         <source>R = the value of the BCD digits of S</source>
         <translation>R = il valore delle cifre BCD di S</translation>
     </message>
@@ -3393,7 +3581,82 @@ Editor di schemi ladder e liste istruzioni per VPC, Vigor, CPM1 e PL110.</transl
         <translation>R = I1 XOR I2, bit per bit</translation>
     </message>
     <message>
-        <location line="+11"/>
+        <location line="+3"/>
+        <source>Add 1 to a BCD channel (9999 -&gt; 0000)</source>
+        <translation>Aggiunge 1 a un canale BCD (9999 -&gt; 0000)</translation>
+    </message>
+    <message>
+        <location line="+2"/>
+        <source>Subtract 1 from a BCD channel (0000 -&gt; 9999)</source>
+        <translation>Sottrae 1 da un canale BCD (0000 -&gt; 9999)</translation>
+    </message>
+    <message>
+        <location line="+4"/>
+        <source>Set the carry flag CY (255.04)</source>
+        <translation>Imposta il flag di riporto CY (255.04)</translation>
+    </message>
+    <message>
+        <location line="+2"/>
+        <source>Clear the carry flag CY (255.04)</source>
+        <translation>Azzera il flag di riporto CY (255.04)</translation>
+    </message>
+    <message>
+        <location line="+2"/>
+        <source>R = Au + Ad + CY in BCD; CY on a carry</source>
+        <translation>R = Au + Ad + CY in BCD; CY in caso di riporto</translation>
+    </message>
+    <message>
+        <location line="+3"/>
+        <source>R = Mi - Su - CY in BCD; below zero: the 10&apos;s complement and CY</source>
+        <translation>R = Mi - Su - CY in BCD; sotto zero: il complemento a 10 e CY</translation>
+    </message>
+    <message>
+        <location line="+4"/>
+        <source>R+1, R = Md x Mr in BCD (8 digits)</source>
+        <translation>R+1, R = Md x Mr in BCD (8 cifre)</translation>
+    </message>
+    <message>
+        <location line="+3"/>
+        <source>R = Dd / Dr in BCD, R+1 = the remainder</source>
+        <translation>R = Dd / Dr in BCD, R+1 = il resto</translation>
+    </message>
+    <message>
+        <location line="+4"/>
+        <source>R = Au + Ad + CY in binary; CY above FFFF</source>
+        <translation>R = Au + Ad + CY in binario; CY oltre FFFF</translation>
+    </message>
+    <message>
+        <location line="+3"/>
+        <source>R = Mi - Su - CY in binary; below zero: the 2&apos;s complement and CY</source>
+        <translation>R = Mi - Su - CY in binario; sotto zero: il complemento a 2 e CY</translation>
+    </message>
+    <message>
+        <location line="+5"/>
+        <source>Run subroutine N, then go on after SBS</source>
+        <translation>Esegue la subroutine N, poi prosegue dopo SBS</translation>
+    </message>
+    <message>
+        <location line="+3"/>
+        <source>Start of subroutine N (after the main program; ends the main program)</source>
+        <translation>Inizio della subroutine N (dopo il programma principale, che termina qui)</translation>
+    </message>
+    <message>
+        <location line="+4"/>
+        <source>End of the subroutine: back after its SBS</source>
+        <translation>Fine della subroutine: ritorno dopo la sua SBS</translation>
+    </message>
+    <message>
+        <location line="+4"/>
+        <source>Start of the step of control bit B; without B: end of the steps</source>
+        <translation>Inizio della fase con bit di controllo B; senza B: fine delle fasi</translation>
+    </message>
+    <message>
+        <location line="+4"/>
+        <source>End the current step and start the step of control bit B</source>
+        <translation>Termina la fase corrente e avvia la fase con bit di controllo B</translation>
+    </message>
+    <message>
+        <location filename="../model/target/target_cpm1.cpp" line="+5"/>
         <location filename="../model/target/target_vigor.cpp" line="+23"/>
         <source>No operation</source>
         <translation>Nessuna operazione</translation>
@@ -4317,7 +4580,7 @@ Editor di schemi ladder e liste istruzioni per VPC, Vigor, CPM1 e PL110.</transl
         <translation>il blocco di %1 word va oltre la fine della sua area</translation>
     </message>
     <message>
-        <location filename="../simulator/compiler.cpp" line="+140"/>
+        <location filename="../simulator/compiler.cpp" line="+149"/>
         <source>unknown instruction</source>
         <translation>istruzione sconosciuta</translation>
     </message>
@@ -4342,7 +4605,7 @@ Editor di schemi ladder e liste istruzioni per VPC, Vigor, CPM1 e PL110.</transl
         <translation>%1 non è un operando</translation>
     </message>
     <message>
-        <location line="+97"/>
+        <location line="+107"/>
         <source>the program has no target</source>
         <translation>il programma non ha una famiglia PLC</translation>
     </message>
@@ -4350,27 +4613,32 @@ Editor di schemi ladder e liste istruzioni per VPC, Vigor, CPM1 e PL110.</transl
 <context>
     <name>rung::simulator::Engine</name>
     <message>
-        <location filename="../simulator/engine_execute.cpp" line="+76"/>
+        <location filename="../simulator/engine_execute.cpp" line="+77"/>
         <source>set value %1 is not a BCD number; the instruction is skipped</source>
         <translation>il valore di preset %1 non è un numero BCD; l&apos;istruzione viene saltata</translation>
     </message>
     <message>
-        <location line="+43"/>
+        <location line="+44"/>
         <source>%1 does not fit in BCD (0..%2); the destination is unchanged</source>
         <translation>%1 non sta in BCD (0..%2); la destinazione resta invariata</translation>
     </message>
     <message>
-        <location line="+12"/>
+        <location line="+13"/>
         <source>%1 is not a BCD number; the destination is unchanged</source>
         <translation>%1 non è un numero BCD; la destinazione resta invariata</translation>
     </message>
     <message>
-        <location line="+15"/>
+        <location line="+17"/>
         <source>result %1 is outside 0..9999; %2 is written</source>
         <translation>il risultato %1 è fuori da 0..9999; viene scritto %2</translation>
     </message>
     <message>
-        <location line="+353"/>
+        <location line="+344"/>
+        <source>subroutines nest deeper than %1 levels; the call is skipped</source>
+        <translation>le subroutine sono annidate oltre %1 livelli; la chiamata non viene eseguita</translation>
+    </message>
+    <message>
+        <location line="+88"/>
         <location line="+56"/>
         <source>division by zero; the destination is unchanged</source>
         <translation>divisione per zero; la destinazione resta invariata</translation>
@@ -4379,6 +4647,36 @@ Editor di schemi ladder e liste istruzioni per VPC, Vigor, CPM1 e PL110.</transl
         <location line="+21"/>
         <source>MOVIND index %1 is outside 0..%2; nothing is written</source>
         <translation>l&apos;indice %1 di MOVIND è fuori da 0..%2; non viene scritto nulla</translation>
+    </message>
+    <message>
+        <location filename="../simulator/engine_cpm1.cpp" line="+44"/>
+        <source>%1; the instruction is skipped and ER %2 is ON</source>
+        <translation>%1; l&apos;istruzione non viene eseguita e ER %2 è ON</translation>
+    </message>
+    <message>
+        <location line="+2"/>
+        <source>%1; the instruction is skipped</source>
+        <translation>%1; l&apos;istruzione non viene eseguita</translation>
+    </message>
+    <message>
+        <location line="+31"/>
+        <source>%1 is not a BCD number</source>
+        <translation>%1 non è un numero BCD</translation>
+    </message>
+    <message>
+        <location line="+27"/>
+        <source>bit designator %1 is not #DDSS with bits 00 to 15</source>
+        <translation>il selettore di bit %1 non è #DDSS con bit da 00 a 15</translation>
+    </message>
+    <message>
+        <location line="+17"/>
+        <source>digit designator %1 is not #0DNS with digits 0 to 3</source>
+        <translation>il selettore di cifre %1 non è #0DNS con cifre da 0 a 3</translation>
+    </message>
+    <message>
+        <location line="+74"/>
+        <source>division by zero</source>
+        <translation>divisione per zero</translation>
     </message>
 </context>
 <context>
@@ -4397,7 +4695,7 @@ Editor di schemi ladder e liste istruzioni per VPC, Vigor, CPM1 e PL110.</transl
         <translation>operando sconosciuto %1: %2</translation>
     </message>
     <message>
-        <location line="+26"/>
+        <location line="+29"/>
         <source>%1 needs a value</source>
         <translation>%1 richiede un valore</translation>
     </message>
@@ -4417,7 +4715,7 @@ Editor di schemi ladder e liste istruzioni per VPC, Vigor, CPM1 e PL110.</transl
         <translation>--set richiede DEV=VALUE@SCAN, non &quot;%1&quot;</translation>
     </message>
     <message>
-        <location line="+29"/>
+        <location line="+34"/>
         <source>unknown option %1</source>
         <translation>opzione sconosciuta %1</translation>
     </message>
