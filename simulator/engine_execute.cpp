@@ -69,6 +69,7 @@ std::int32_t fromBcd(std::int32_t raw) {
 
 std::int32_t Engine::readSet(const Step &s, std::size_t step) {
     std::int32_t set = s.x.index >= 0 ? m_words[static_cast<std::size_t>(s.x.index)] : s.x.constant;
+    const std::int32_t raw = set;
     if (s.flags & kBcd) {
         const std::int32_t decoded = fromBcd(set);
         if (decoded < 0) {
@@ -82,8 +83,11 @@ std::int32_t Engine::readSet(const Step &s, std::size_t step) {
         set = decoded;
     }
     set = std::max<std::int32_t>(0, set);
+    // The set value in use, as the PLC holds it: BCD digits on the CPM1 (W353: timer and
+    // counter SVs and PVs are BCD), so the watch list shows the word a Host Link read gives.
     if (s.y.index >= 0)
-        m_words[static_cast<std::size_t>(s.y.index)] = set;
+        m_words[static_cast<std::size_t>(s.y.index)] =
+            (s.flags & kBcd) ? wrapToWidth(raw, 16) : set;
     return set;
 }
 
@@ -318,8 +322,12 @@ template <bool Record> void Engine::execute() {
                 units = st.accumulated / s.count;
             }
             put(W, s.bit, acc && units >= set);
-            R[s.dest] = static_cast<std::int32_t>(
-                (s.flags & kDown) ? set - units : std::min<std::int64_t>(units, timerMax));
+            const std::int64_t present =
+                (s.flags & kDown) ? set - units : std::min<std::int64_t>(units, timerMax);
+            // CPM1 (W353): the present value is BCD too: CMP(20) TIM 000 #0100 compares
+            // digits, and a Host Link RC reads the same word.
+            R[s.dest] = (s.flags & kBcd) ? wrapToWidth(toBcd(present), 16)
+                                         : static_cast<std::int32_t>(present);
             break;
         }
         case Code::Counter: {
@@ -340,8 +348,8 @@ template <bool Record> void Engine::execute() {
             }
             st.previous = input;
             put(W, s.bit, !reset && st.accumulated >= set);
-            R[s.dest] =
-                wrapToWidth((s.flags & kDown) ? set - st.accumulated : st.accumulated, s.width);
+            const std::int64_t present = (s.flags & kDown) ? set - st.accumulated : st.accumulated;
+            R[s.dest] = wrapToWidth((s.flags & kBcd) ? toBcd(present) : present, s.width);
             break;
         }
         case Code::UpDownCounter: {
@@ -369,7 +377,8 @@ template <bool Record> void Engine::execute() {
                 }
             }
             put(W, s.bit, st.running != 0);
-            R[s.dest] = static_cast<std::int32_t>(st.accumulated);
+            R[s.dest] = (s.flags & kBcd) ? wrapToWidth(toBcd(st.accumulated), 16)
+                                         : static_cast<std::int32_t>(st.accumulated);
             break;
         }
         case Code::PlTimer: {

@@ -8,6 +8,7 @@
 #include "model/ladder/ladder_text.h"
 #include "model/listing/il.h"
 #include "model/listing/structure.h"
+#include "model/target/word_text.h"
 
 #include <gtest/gtest.h>
 
@@ -267,4 +268,20 @@ TEST(Cpm1Instructions, TemporaryRelaysMayBeDrivenInEveryRung) {
     EXPECT_TRUE(check(listing).empty()) << all(check(listing)).toStdString();
     EXPECT_NE(find(check("LD 000.00;OUT 010.00;LD 000.01;OUT 010.00;END(01)"), "DC001"), nullptr);
     EXPECT_FALSE(parse("LD TR 8;OUT 010.00;END(01)").ok()); // TR 0..7
+}
+
+// The CPM1's words are BCD digits (its # constants, its timers' values, W353): the watch list
+// shows and takes them as #0012; the other families keep numbers.
+TEST(Cpm1Instructions, WordsAreShownAndTypedAsTheirDigits) {
+    EXPECT_EQ(formatWord(cpm1(), 0x0012), QStringLiteral("#0012"));
+    EXPECT_EQ(formatWord(cpm1(), static_cast<std::int16_t>(0x9999)), QStringLiteral("#9999"));
+    EXPECT_EQ(parseWordValue(cpm1(), QStringLiteral("#0012")), 0x12);
+    EXPECT_EQ(parseWordValue(cpm1(), QStringLiteral("18")), 18);
+    EXPECT_EQ(parseWordValue(cpm1(), QStringLiteral("0x1F")), 0x1F);
+    EXPECT_FALSE(parseWordValue(cpm1(), QStringLiteral("#12345")));
+    EXPECT_FALSE(parseWordValue(cpm1(), QStringLiteral("#")));
+    const Target &vigor = Target::get(Family::Vigor);
+    EXPECT_EQ(formatWord(vigor, 18), QStringLiteral("18"));
+    EXPECT_EQ(formatWord(vigor, -3), QStringLiteral("-3"));
+    EXPECT_FALSE(parseWordValue(vigor, QStringLiteral("#0012")));
 }

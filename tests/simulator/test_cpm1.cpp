@@ -7,6 +7,9 @@
 #include "real_target_sim.h"
 
 #include "model/checks/checks.h"
+#include "simulator/trace.h"
+
+#include <QTextStream>
 
 #include <gtest/gtest.h>
 
@@ -348,4 +351,31 @@ TEST(Cpm1Operands, TheSimulatorRefusesWhatCheckReports) {
             EXPECT_TRUE(same) << listing << ": " << d.message.toStdString();
         }
     }
+}
+
+// A trace speaks the CPM1's words: --set "DM 0000=#0012@0" writes the word 0012h and a column
+// hex:DM 0001 prints a word as its four digits.
+TEST(Cpm1Trace, WordsAreSetAndPrintedAsTheirDigits) {
+    Cpm1 s("LD 253.13;ADD(30) DM 0000 #0001 DM 0001;END(01)");
+    ASSERT_TRUE(s.result.ok());
+    TraceRequest request;
+    QString error;
+    ASSERT_TRUE(
+        parseTraceOptions(s.target,
+                          {QStringLiteral("--scans"), QStringLiteral("2"), QStringLiteral("--set"),
+                           QStringLiteral("DM 0000=#0099@1"), QStringLiteral("--trace"),
+                           QStringLiteral("DM 0000,hex:DM 0001")},
+                          &request, &error))
+        << error.toStdString();
+    QString out;
+    QTextStream stream(&out);
+    runTrace(s.result.program, request, stream);
+    stream.flush();
+    EXPECT_EQ(out,
+              QStringLiteral("scan,time_ms,DM 0000,hex:DM 0001\n0,0,0,#0001\n1,10,153,#0100\n"));
+    EXPECT_FALSE(parseTraceOptions(s.target,
+                                   {QStringLiteral("--scans"), QStringLiteral("1"),
+                                    QStringLiteral("--set"), QStringLiteral("DM 0000=#12G4@1"),
+                                    QStringLiteral("--trace"), QStringLiteral("DM 0000")},
+                                   &request, &error));
 }
