@@ -10,6 +10,19 @@ namespace rung::editor {
 
 namespace {
 
+// The letters on a box's inputs, as the manuals name them: SFT(10)'s data, shift and reset
+// inputs (Omron W353: I, P, R), a counter's count and reset (CP, R), KEEP / LR set and reset,
+// CNTR / MUP / MDOWN up, down and reset.
+QStringList boxPins(const model::InstructionSpec &spec, std::size_t inputs) {
+    if (spec.function == model::ApplyFunction::ShiftRegister)
+        return {QStringLiteral("I"), QStringLiteral("P"), QStringLiteral("R")};
+    if (spec.op == model::Op::Counter)
+        return {QStringLiteral("CP"), QStringLiteral("R")};
+    if (inputs == 2)
+        return {QStringLiteral("S"), QStringLiteral("R")};
+    return {QStringLiteral("U"), QStringLiteral("D"), QStringLiteral("R")};
+}
+
 const QColor kInk(0x20, 0x24, 0x2a);
 const QColor kRail(0x3a, 0x5a, 0x8c);
 const QColor kDim(0x6b, 0x72, 0x80);
@@ -413,10 +426,7 @@ void LadderPainter::paintRung(QPainter &p, QPointF origin, int index,
             if (inputs.size() > 1) {
                 p.setFont(m_small);
                 p.setPen(kDim);
-                const QStringList pins = inputs.size() == 2
-                                             ? QStringList{QStringLiteral("S"), QStringLiteral("R")}
-                                             : QStringList{QStringLiteral("U"), QStringLiteral("D"),
-                                                           QStringLiteral("R")};
+                const QStringList pins = boxPins(*out->spec, inputs.size());
                 for (std::size_t k = 0;
                      k < inputs.size() && k < static_cast<std::size_t>(pins.size()); ++k) {
                     const QRectF pin = outputRect(rung, inputs[k]);

@@ -4,6 +4,7 @@
 
 #include "model/image/monitor_source.h"
 #include "model/target/address.h"
+#include "model/target/word_text.h"
 
 #include <QAction>
 #include <QContextMenuEvent>
@@ -147,7 +148,8 @@ void WatchListView::editValue(QTreeWidgetItem *item) {
     // The editor opens on the number alone, not on "12 of 50, OFF".
     const auto snapshot = m_source->snapshot();
     m_showing = true;
-    item->setText(1, snapshot ? QString::number(snapshot->value(*address)) : QString());
+    item->setText(1, snapshot ? model::formatWord(m_document->target(), snapshot->value(*address))
+                              : QString());
     m_showing = false;
     m_editing = item;
     setCurrentItem(item, 1);
@@ -176,16 +178,15 @@ bool WatchListView::writeValue(QTreeWidgetItem *item, const QString &text) {
         m_source->writeBit(*address, on);
         return true;
     }
-    bool ok = false;
-    const bool hex = typed.startsWith(QLatin1String("0x"), Qt::CaseInsensitive);
-    const qint64 value = hex ? typed.mid(2).toLongLong(&ok, 16) : typed.toLongLong(&ok, 10);
-    if (!ok) {
+    // A number, 0x... and, on the CPM1, #0012 as its listing writes a word (word_text.h).
+    const std::optional<qint64> value = model::parseWordValue(m_document->target(), typed);
+    if (!value) {
         emit message(tr("\"%1\" is no value for %2: type a whole number (0x before a "
                         "hexadecimal one)")
                          .arg(typed, item->text(0)));
         return false;
     }
-    m_source->writeWord(*address, value);
+    m_source->writeWord(*address, *value);
     return true;
 }
 
@@ -254,11 +255,11 @@ QString WatchListView::valueText(const model::Snapshot &snapshot, const QString 
     else if (kind == model::AreaKind::Timer || kind == model::AreaKind::Counter)
         // Current value against the preset, and the done bit.
         text = tr("%1 of %2, %3")
-                   .arg(snapshot.value(*address))
-                   .arg(snapshot.setValue(*address))
-                   .arg(snapshot.bit(*address) ? tr("ON") : tr("OFF"));
+                   .arg(model::formatWord(m_document->target(), snapshot.value(*address)),
+                        model::formatWord(m_document->target(), snapshot.setValue(*address)),
+                        snapshot.bit(*address) ? tr("ON") : tr("OFF"));
     else
-        text = QString::number(snapshot.value(*address));
+        text = model::formatWord(m_document->target(), snapshot.value(*address));
     return snapshot.forced(*address) ? tr("%1 (forced)").arg(text) : text;
 }
 

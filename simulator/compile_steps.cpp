@@ -325,6 +325,26 @@ void Compiler::compileApply(const model::Instruction &ins, Step &s) {
         s.bit = bitOf(ins, 0);
         edgeStep(s, Code::Toggle, false);
         break;
+    case ApplyFunction::CompareToFlags:
+    case ApplyFunction::ShiftRegister:
+    case ApplyFunction::WordShift:
+    case ApplyFunction::MoveNot:
+    case ApplyFunction::MoveBit:
+    case ApplyFunction::MoveDigit:
+    case ApplyFunction::BcdIncrement:
+    case ApplyFunction::BcdDecrement:
+    case ApplyFunction::BcdAdd:
+    case ApplyFunction::BcdSubtract:
+    case ApplyFunction::BcdMultiply:
+    case ApplyFunction::BcdDivide:
+    case ApplyFunction::BinaryAdd:
+    case ApplyFunction::BinarySubtract:
+    case ApplyFunction::SetCarry:
+    case ApplyFunction::ClearCarry:
+    case ApplyFunction::SubroutineCall:
+    case ApplyFunction::StepNext:
+        compileArithmetic(ins, s); // compile_cpm1.cpp
+        break;
     default:
         notSimulated(ins);
         s.code = Code::Nop;

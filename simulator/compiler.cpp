@@ -46,6 +46,14 @@ void Compiler::compileSystem() {
             m_program->inputTestWord = m_layout->word(a);
             compileInputTestBits(d.inputs);
             break;
+        case model::SystemRole::InstructionError:
+        case model::SystemRole::Carry:
+        case model::SystemRole::Greater:
+        case model::SystemRole::Equal:
+        case model::SystemRole::Less:
+        case model::SystemRole::StepStart:
+            bindFlag(d.role, m_layout->bit(a)); // compile_cpm1.cpp
+            break;
         case model::SystemRole::Other:
         case model::SystemRole::Error:
         case model::SystemRole::Connected:
@@ -124,6 +132,7 @@ void Compiler::resolveJumps() {
     for (std::size_t k = 0; k < m_list.instructions.size(); ++k)
         if (m_list.instructions[k].op() == Op::Jump && pairs.partner[k] > static_cast<int>(k))
             m_program->steps[k].slot = pairs.partner[k];
+    resolveSubroutines(pairs); // compile_cpm1.cpp
 }
 
 CompileResult Compiler::run() {
@@ -291,6 +300,16 @@ CompileResult Compiler::run() {
         case Op::Nop:
             s.code = Code::Nop;
             break;
+        case Op::SubroutineStart:
+        case Op::SubroutineReturn:
+        case Op::StepDefine:
+            compileControl(ins, s); // compile_cpm1.cpp
+            break;
+        }
+        if (spec.differentiated) {
+            // "@MOV(21)": once on the rising edge of its condition (kDifferentiated).
+            s.flags |= kDifferentiated;
+            s.slot = m_program->edgeSlots++;
         }
         if (m_resolve)
             s.flags |= kResolve;

@@ -241,6 +241,12 @@ private:
     void compileApply(const model::Instruction &ins, Step &s);
     void compileWordLogic(const model::Instruction &ins, Step &s, std::size_t sources);
     void compileSystem();
+    // Omron CPM1 (compile_cpm1.cpp): the W353 application instructions, SBN / RET / STEP,
+    // the arithmetic flags, and the subroutines' targets.
+    void compileArithmetic(const model::Instruction &ins, Step &s);
+    void compileControl(const model::Instruction &ins, Step &s);
+    void bindFlag(model::SystemRole role, BitRef bit);
+    void resolveSubroutines(const model::BlockPairs &pairs);
     void compileInputTestBits(int count);
     void resolveJumps();
 
@@ -258,6 +264,7 @@ private:
     int m_push = 0;
     int m_stlArea = -1;
     BitRef m_stlBit;
+    BitRef m_stepBit; // the control bit of the STEP(08) step being compiled
 };
 
 } // namespace rung::simulator::detail

@@ -164,6 +164,10 @@ void Engine::beginScan() {
 
 void Engine::endScan() {
     const Program &p = *m_program;
+    // W353 appendix B: "The ER, CY, GT, LT and EQ Flags are turned OFF when END(01) is
+    // executed".
+    if (p.flags.any())
+        clearArithmeticFlags();
     std::int32_t *W = p.deferredBitWrites ? m_write.data() : m_words.data();
     if (p.writesParallelOut) {
         // Only the port's bits exist (Semantics::parallelOut.bits): the value shows modulo 2^bits.

@@ -109,6 +109,21 @@ private:
     bool isStimulus(const model::Address &address) const;
     std::int32_t readSet(const Step &s, std::size_t step);
     void wordLogic(const Step &s, std::size_t step); // Code::WordLogic, its input ON
+    // Omron CPM1 (engine_cpm1.cpp): Code::Arithmetic with its input ON, SFT(10), the flags.
+    void arithmetic(const Step &s, std::size_t step);
+    void shiftRegister(const Step &s, bool data, bool pulse, bool reset);
+    void setFlag(const BitRef &flag, bool on) {
+        if (flag.valid())
+            put(m_words.data(), flag, on);
+    }
+    // After an instruction that ran (ER OFF) with this result: EQ, if the target has it.
+    void resultFlags(std::int64_t result) {
+        setFlag(m_program->flags.error, false);
+        setFlag(m_program->flags.equal, (result & 0xFFFF) == 0);
+    }
+    // An operand that is not what the instruction reads: ER ON and nothing written (W353).
+    void operandError(std::size_t step, const QString &message);
+    void clearArithmeticFlags();
     [[gnu::noinline, gnu::cold]] std::int64_t outOfDecimalRange(std::size_t step,
                                                                 std::int64_t value);
 
@@ -135,5 +150,8 @@ private:
     qint64 m_scanMaxMs = 0;
     bool m_record = false;
 };
+
+// W353 "Subroutines": SBS(91) nests up to 16 levels.
+inline constexpr int kSubroutineDepth = 16;
 
 } // namespace rung::simulator

@@ -69,9 +69,11 @@ std::int32_t fromBcd(std::int32_t raw) {
 
 std::int32_t Engine::readSet(const Step &s, std::size_t step) {
     std::int32_t set = s.x.index >= 0 ? m_words[static_cast<std::size_t>(s.x.index)] : s.x.constant;
+    const std::int32_t raw = set;
     if (s.flags & kBcd) {
         const std::int32_t decoded = fromBcd(set);
         if (decoded < 0) {
+            setFlag(m_program->flags.error, true); // W353 TIM / CNT: "ER: SV is not in BCD"
             runtimeError(step,
                          Tr::tr("set value %1 is not a BCD number; the instruction is "
                                 "skipped")
@@ -81,8 +83,11 @@ std::int32_t Engine::readSet(const Step &s, std::size_t step) {
         set = decoded;
     }
     set = std::max<std::int32_t>(0, set);
+    // The set value in use, as the PLC holds it: BCD digits on the CPM1 (W353: timer and
+    // counter SVs and PVs are BCD), so the watch list shows the word a Host Link read gives.
     if (s.y.index >= 0)
-        m_words[static_cast<std::size_t>(s.y.index)] = set;
+        m_words[static_cast<std::size_t>(s.y.index)] =
+            (s.flags & kBcd) ? wrapToWidth(raw, 16) : set;
     return set;
 }
 
@@ -116,6 +121,7 @@ void Engine::wordLogic(const Step &s, std::size_t step) {
             s.x.index >= 0 ? m_words[static_cast<std::size_t>(s.x.index)] : s.x.constant;
         const std::int64_t max = s.width >= 32 ? 99999999 : 9999;
         if (v < 0 || v > max) {
+            setFlag(m_program->flags.error, true); // W353 BCD(24): "ER: S is greater than 270F"
             runtimeError(step, Tr::tr("%1 does not fit in BCD (0..%2); the destination is "
                                       "unchanged")
                                    .arg(v)
@@ -128,6 +134,7 @@ void Engine::wordLogic(const Step &s, std::size_t step) {
     case WordOp::FromBcd: {
         const std::int32_t v = fromBcd(static_cast<std::int32_t>(a & 0x7FFFFFFFu));
         if (v < 0 || (a & 0x80000000u)) {
+            setFlag(m_program->flags.error, true); // W353 BIN(23): "ER: S is not BCD"
             runtimeError(step, Tr::tr("%1 is not a BCD number; the destination is unchanged")
                                    .arg(QString::number(a, 16)));
             return;
@@ -137,6 +144,8 @@ void Engine::wordLogic(const Step &s, std::size_t step) {
     }
     }
     storeWord(static_cast<std::size_t>(s.dest), r, s.width);
+    if (m_program->flags.any())
+        resultFlags(r); // W353: "EQ: ON when the result is 0"
 }
 
 // Kept out of the scan loop: the message's temporaries would otherwise weigh on it.
@@ -178,6 +187,11 @@ template <bool Record> void Engine::execute() {
     bool stepActive = true;
     bool gate = true;
 
+    const bool flags = p.flags.any(); // the W353 flags: MOV(21) sets EQ
+    int depth = 0;                    // SBS(91) nesting
+    std::size_t returns[kSubroutineDepth] = {};
+    bool held[kSubroutineDepth] = {};
+
     Step resolved;
     for (std::size_t i = 0; i < n; ++i) {
         const Step *step = &steps[i];
@@ -190,6 +204,11 @@ template <bool Record> void Engine::execute() {
             step = &resolved;
         }
         const Step &s = *step;
+        // "@MOV(21)" runs on the rising edge of its condition; the rung's condition goes on
+        // to the instructions after it.
+        const bool level = acc;
+        if (s.flags & kDifferentiated) [[unlikely]]
+            acc = edge(m_edges[static_cast<std::size_t>(s.slot)], acc, false);
         switch (s.code) {
         case Code::Load:
         case Code::LoadEdge:
@@ -324,8 +343,12 @@ template <bool Record> void Engine::execute() {
             if (acc || keeps)
                 units = st.accumulated / s.count;
             put(W, s.bit, (acc || keeps) && units >= set);
-            R[s.dest] = static_cast<std::int32_t>(
-                (s.flags & kDown) ? set - units : std::min<std::int64_t>(units, timerMax));
+            const std::int64_t present =
+                (s.flags & kDown) ? set - units : std::min<std::int64_t>(units, timerMax);
+            // CPM1 (W353): the present value is BCD too: CMP(20) TIM 000 #0100 compares
+            // digits, and a Host Link RC reads the same word.
+            R[s.dest] = (s.flags & kBcd) ? wrapToWidth(toBcd(present), 16)
+                                         : static_cast<std::int32_t>(present);
             break;
         }
         case Code::Counter: {
@@ -348,8 +371,8 @@ template <bool Record> void Engine::execute() {
             }
             st.previous = input;
             put(W, s.bit, !reset && st.accumulated >= set);
-            R[s.dest] =
-                wrapToWidth((s.flags & kDown) ? set - st.accumulated : st.accumulated, s.width);
+            const std::int64_t present = (s.flags & kDown) ? set - st.accumulated : st.accumulated;
+            R[s.dest] = wrapToWidth((s.flags & kBcd) ? toBcd(present) : present, s.width);
             break;
         }
         case Code::UpDownCounter: {
@@ -379,7 +402,8 @@ template <bool Record> void Engine::execute() {
                 }
             }
             put(W, s.bit, st.running != 0);
-            R[s.dest] = static_cast<std::int32_t>(st.accumulated);
+            R[s.dest] = (s.flags & kBcd) ? wrapToWidth(toBcd(st.accumulated), 16)
+                                         : static_cast<std::int32_t>(st.accumulated);
             break;
         }
         case Code::PlTimer: {
@@ -486,8 +510,77 @@ template <bool Record> void Engine::execute() {
             }
             break;
         case Code::Move:
-            if (acc)
+            if (acc) {
                 wrw(s.dest, rdw(s.x), s.width);
+                if (flags) [[unlikely]]
+                    resultFlags(rdw(s.x));
+            }
+            break;
+        case Code::Arithmetic:
+            if (acc)
+                arithmetic(s, i); // engine_cpm1.cpp
+            break;
+        case Code::ShiftRegister: {
+            const bool pulse = bsp > 0 ? blocks[--bsp] : false;
+            const bool data = bsp > 0 ? blocks[--bsp] : false;
+            shiftRegister(s, data, pulse, acc);
+            break;
+        }
+        case Code::SubroutineCall:
+            // SBS(91): run the subroutine from its SBN(92), come back after the SBS.
+            if (acc && s.count >= 0) {
+                if (depth == kSubroutineDepth) {
+                    runtimeError(i, Tr::tr("subroutines nest deeper than %1 levels; the call "
+                                           "is skipped")
+                                        .arg(kSubroutineDepth));
+                    break;
+                }
+                returns[depth] = i;
+                held[depth++] = level;
+                if constexpr (Record)
+                    m_flow[i] = acc;
+                i = static_cast<std::size_t>(s.count);
+                acc = true;
+                continue;
+            }
+            break;
+        case Code::SubroutineReturn:
+            if constexpr (Record)
+                m_flow[i] = acc;
+            if (depth == 0) { // reached without a call: the main program is over
+                i = n;
+                continue;
+            }
+            i = returns[--depth];
+            acc = held[depth];
+            continue;
+        case Code::SubroutineStart:
+            // The first SBN(92) ends the main program: on to END.
+            if constexpr (Record)
+                m_flow[i] = acc;
+            i = static_cast<std::size_t>(s.slot) - 1;
+            continue;
+        case Code::StepDefine: {
+            // STEP(08) B: what follows runs as in an interlock whose condition is B, up to the
+            // next STEP(08); STEP(08) alone ends the steps. 254.07 is ON in the cycle a step
+            // starts (W353).
+            stepActive = !s.bit.valid() || rd(s.bit);
+            gate = interlock && stepActive;
+            acc = gate;
+            const bool started =
+                edge(m_edges[static_cast<std::size_t>(s.slot)], s.bit.valid() && stepActive, false);
+            if (s.bit.valid() && p.flags.stepStart.valid())
+                put(R, p.flags.stepStart, started);
+            break;
+        }
+        case Code::StepNext:
+            // SNXT(09) B: the step it stands in ends (its bit OFF, so from the next cycle on
+            // its outputs are OFF and its timers reset) and the step of B starts.
+            if (acc) {
+                if (s.slot >= 0)
+                    put(W, p.bitLists[static_cast<std::size_t>(s.slot)], false);
+                put(W, s.bit, true);
+            }
             break;
         case Code::Compare:
             if (acc) {
@@ -642,6 +735,8 @@ template <bool Record> void Engine::execute() {
         }
         if (step == &resolved) [[unlikely]]
             writeBack(steps[i], resolved, W);
+        if (s.flags & kDifferentiated) [[unlikely]]
+            acc = level;
         if constexpr (Record)
             m_flow[i] = acc;
     }

@@ -65,7 +65,15 @@ enum class Code : std::uint8_t {
     WordLogic,    // dest = x op y (op = WordOp): WAND/ANDW ..., CML/COM, BCD, BIN
     BlockMove,    // x = first source word (or a constant to fill), dest = first word, count
     IndirectMove, // PL110 MOVIND: dest + value of y := x; count = words from dest to area end
+    // Omron CPM1 (W353), with the arithmetic flags (Program::flags): op = ArithOp; engine_cpm1.cpp
+    Arithmetic,
+    ShiftRegister, // SFT(10): data, shift pulse (edge slot), reset; dest = St, count = words
     // control
+    SubroutineCall,   // SBS(91): count = the SBN(92) to run
+    SubroutineStart,  // SBN(92): the main program ends here; slot = END (or the list's end)
+    SubroutineReturn, // RET(93): back after the SBS(91) that called
+    StepDefine,       // STEP(08) B: bit = B (invalid: the end of the steps); slot = edge slot
+    StepNext,         // SNXT(09) B: bit = B; slot = bitLists index of the current step's bit
     Interlock,
     InterlockClear,
     Jump,
@@ -76,7 +84,7 @@ enum class Code : std::uint8_t {
     Nop,
 };
 
-enum StepFlag : std::uint8_t {
+enum StepFlag : std::uint16_t {
     kNegated = 1, // NOT contacts, OUT NOT, OUT* transfers (run while the condition is OFF)
     kFalling = 2, // falling-edge contacts, PLF / DIFD, PL110 N
     kDown = 4,    // timers / counters that count down from the set value
@@ -85,6 +93,36 @@ enum StepFlag : std::uint8_t {
     kOneInput = 32, // counter reset only by RST (Vigor)
     kDecimal4 = 64, // VPC transfer: the result is a four-digit decimal 0..9999 (seed 000)
     kResolve = 128, // an operand is an OperandRef (x, y, dest or slot <= kRefBase): see below
+    // The differentiated form (W353 "@MOV(21)"): runs once when its condition turns ON; the
+    // edge memory is `slot`, which no code that can be differentiated uses otherwise.
+    kDifferentiated = 256,
+};
+
+// Code::Arithmetic (W353): what the step does. x, y: sources; dest: result; count: the
+// result's second word (MUL / DIV) or the words of a range (WSFT).
+enum class ArithOp : std::uint8_t {
+    Compare,   // CMP(20): GR / EQ / LE from x, y unsigned
+    MoveNot,   // MVN(22)
+    MoveBit,   // MOVB(82): y = control word
+    MoveDigit, // MOVD(83): y = control word
+    WordShift, // WSFT(16): dest .. dest + count - 1
+    BcdIncrement,
+    BcdDecrement,
+    BcdAdd,
+    BcdSubtract,
+    BcdMultiply,
+    BcdDivide,
+    BinaryAdd,
+    BinarySubtract,
+    SetCarry,
+    ClearCarry,
+};
+
+// The bits the application instructions set (model::SystemRole::InstructionError ...); an
+// invalid BitRef where the target has none.
+struct ArithmeticFlags {
+    BitRef error, carry, greater, equal, less, stepStart;
+    bool any() const { return error.valid() || carry.valid() || equal.valid(); }
 };
 
 enum class TransferKind : std::uint8_t { Assign, Add, Subtract };
@@ -161,7 +199,7 @@ struct ResetTarget {
 
 struct Step {
     Code code = Code::Nop;
-    std::uint8_t flags = 0;
+    std::uint16_t flags = 0;
     std::uint8_t op = 0;     // CompareOp / TransferKind
     std::uint8_t width = 16; // destination width in bits
     BitRef bit;              // contact, coil, done bit
@@ -223,6 +261,7 @@ struct Program {
     BitRef inputTest;
     std::int32_t inputTestWord = -1;
     std::vector<BitRef> inputTestBits; // the inputs, bit 0 of the word first
+    ArithmeticFlags flags;             // turned OFF at END (W353 appendix B)
     // physical inputs refreshed from the stimulus image: [begin, end) words
     std::vector<std::pair<int, int>> inputWordRanges;
 };

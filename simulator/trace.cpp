@@ -41,7 +41,10 @@ bool isTimerOrCounter(const model::Target &target, const model::Address &a) {
 
 bool parseTraceOptions(const model::Target &target, const QStringList &args, TraceRequest *request,
                        QString *error) {
-    static const QRegularExpression setRe(QStringLiteral("^(.+)=(-?\\d+)@(\\d+)$"));
+    // A value is a number, or a word written in hexadecimal digits as CPM1 listings write
+    // their # constants (--set "200=#6103@1": the word 6103h).
+    static const QRegularExpression setRe(
+        QStringLiteral("^(.+)=(-?\\d+|#[0-9A-Fa-f]{1,8})@(\\d+)$"));
     bool haveScans = false;
     for (qsizetype i = 0; i < args.size(); ++i) {
         const QString &a = args[i];
@@ -75,7 +78,9 @@ bool parseTraceOptions(const model::Target &target, const QStringList &args, Tra
             if (!device(target, m.captured(1), &s.address, error))
                 return false;
             bool ok = false;
-            s.value = m.captured(2).toLongLong(&ok);
+            const QString value = m.captured(2);
+            s.value = value.startsWith(QLatin1Char('#')) ? value.mid(1).toLongLong(&ok, 16)
+                                                         : value.toLongLong(&ok);
             s.scan = m.captured(3).toULongLong(&ok);
             request->stimuli.push_back(s);
         } else if (a == QLatin1String("--trace")) {
@@ -89,6 +94,9 @@ bool parseTraceOptions(const model::Target &target, const QStringList &args, Tra
                 } else if (dev.startsWith(QLatin1String("sv:"), Qt::CaseInsensitive)) {
                     c.kind = TraceColumn::Kind::SetValue;
                     dev = dev.mid(3);
+                } else if (dev.startsWith(QLatin1String("hex:"), Qt::CaseInsensitive)) {
+                    c.kind = TraceColumn::Kind::Hex; // BCD words read as their digits
+                    dev = dev.mid(4);
                 }
                 if (!device(target, dev, &c.address, error))
                     return false;
@@ -144,6 +152,13 @@ void runTrace(const std::shared_ptr<const Program> &program, const TraceRequest 
                 break;
             case TraceColumn::Kind::SetValue:
                 out << engine.setValue(c.address);
+                break;
+            case TraceColumn::Kind::Hex:
+                out << '#'
+                    << QStringLiteral("%1")
+                           .arg(static_cast<std::uint32_t>(engine.value(c.address)) & 0xFFFFu, 4,
+                                16, QLatin1Char('0'))
+                           .toUpper();
                 break;
             }
         }

@@ -18,7 +18,7 @@ struct TraceStimulus {
 };
 
 struct TraceColumn {
-    enum class Kind : std::uint8_t { Bit, Word, SetValue };
+    enum class Kind : std::uint8_t { Bit, Word, SetValue, Hex };
     QString name; // as given
     model::Address address;
     Kind kind = Kind::Bit;
@@ -32,8 +32,10 @@ struct TraceRequest {
 };
 
 // Reads --scans N, --period MS, --set DEV=VALUE@SCAN (repeatable) and --trace DEV[,DEV...].
-// A trace column "cv:T0" / "sv:T0" is a timer/counter's current / set value; a bare timer or
-// counter is its done bit; a word device its value. Unknown options are errors.
+// A trace column "cv:T0" / "sv:T0" is a timer/counter's current / set value; "hex:DM 0100" a
+// word as four hexadecimal digits (a CPM1 BCD word reads as its digits); a bare timer or
+// counter is its done bit; a word device its value. A --set value "#6103" is a word in
+// hexadecimal digits. Unknown options are errors.
 bool parseTraceOptions(const model::Target &target, const QStringList &args, TraceRequest *request,
                        QString *error);
 

@@ -19,6 +19,8 @@ constexpr ExampleTitle kTitles[] = {
     {"add-once-a-second", QT_TRANSLATE_NOOP("rung::app::ExampleTitles", "Add once a second")},
     {"timers-down-and-up",
      QT_TRANSLATE_NOOP("rung::app::ExampleTitles", "Timers counting down and up")},
+    {"parts-counter",
+     QT_TRANSLATE_NOOP("rung::app::ExampleTitles", "Parts counter and reject tracking")},
     {"stairway-light", QT_TRANSLATE_NOOP("rung::app::ExampleTitles", "Stairway light")},
     {"counting-range-extension",
      QT_TRANSLATE_NOOP("rung::app::ExampleTitles", "Extending a counter's range")},

@@ -471,6 +471,8 @@ private:
                 ins.operands[0].kind != Operand::Kind::Device)
                 continue;
             const Address a = ins.operands[0].address;
+            if (a.valid() && m_t.area(a.area).branchMemory)
+                continue; // OUT TR 0 in every rung that branches (W353)
             const auto it = driven.find(a);
             if (it == driven.end()) {
                 driven.emplace(a, i);
@@ -487,6 +489,10 @@ private:
                           : Tr::tr("%1 is driven twice; the later one wins (first on line %2)")
                                 .arg(formatAddress(m_t, a))
                                 .arg(at(it->second).line));
+            if (m_t.console.duplicate) // the VPC console's "Oper duplication"
+                f.diagnostic.message =
+                    Tr::tr("%1 (the PLC says \"%2\")")
+                        .arg(f.diagnostic.message, QString::fromLatin1(m_t.console.duplicate));
             f.diagnostic.related.push_back(location(it->second));
             f.related.push_back(it->second);
             const QString device = formatAddress(m_t, a);

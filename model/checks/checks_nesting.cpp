@@ -65,7 +65,8 @@ void endAndNesting(const InstructionList &list, std::vector<Finding> &found) {
 
     // IL / ILC, JMP / JPE (JME), STL / RET: the one pairing the compiler uses too.
     for (const BlockProblem &p : pairBlocks(list).problems) {
-        Finding &f = add(p.code, Severity::Error, p.instruction, p.message);
+        Finding &f =
+            add(p.code, p.warning ? Severity::Warning : Severity::Error, p.instruction, p.message);
         if (p.related >= 0)
             f.diagnostic.related.push_back(location(p.related));
     }

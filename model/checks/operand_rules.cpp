@@ -34,8 +34,46 @@ int areaByKey(const Target &target, const char *key) {
     return -1;
 }
 
+qint64 bcdWord(qint64 value) {
+    qint64 word = 0;
+    for (int shift = 0; value > 0; value /= 10, shift += 4)
+        word |= (value % 10) << shift;
+    return word;
+}
+
 bool isDestination(OperandKind kind) {
     return kind == OperandKind::BitDest || kind == OperandKind::WordDest;
+}
+
+} // namespace
+
+bool controlWordFits(ControlWord control, qint64 word) {
+    const auto digit = [word](int n) { return (word >> (4 * n)) & 0xF; };
+    switch (control) {
+    case ControlWord::None:
+        return true;
+    case ControlWord::BitPair:
+        // W353 MOVB(82): "Bi must be BCD and specify bits 00 to 15".
+        return word >= 0 && word <= 0xFFFF && digit(0) <= 9 && digit(1) <= 9 && digit(2) <= 9 &&
+               digit(3) <= 9 && digit(1) * 10 + digit(0) <= 15 && digit(3) * 10 + digit(2) <= 15;
+    case ControlWord::Digits:
+        // W353 MOVD(83): "the rightmost three digits of Di must each be 0 to 3".
+        return word >= 0 && word <= 0xFFFF && digit(0) <= 3 && digit(1) <= 3 && digit(2) <= 3 &&
+               digit(3) == 0;
+    }
+    return true;
+}
+
+namespace {
+
+QString controlWordMessage(const Target &target, const OperandSpec &rule, std::size_t k,
+                           const InstructionSpec &spec, const Constant &value) {
+    const QString shown = formatConstant(target, value);
+    if (rule.control == ControlWord::BitPair)
+        return Tr::tr("the %1 of %2 must be #DDSS with bits DD and SS from 00 to 15, not %3")
+            .arg(slotName(rule, k), spec.mnemonic, shown);
+    return Tr::tr("the %1 of %2 must be #0DNS with digits D, N and S from 0 to 3, not %3")
+        .arg(slotName(rule, k), spec.mnemonic, shown);
 }
 
 } // namespace
@@ -51,6 +89,17 @@ std::vector<OperandBreach> operandBreaches(const Target &target, const Instructi
         const int at = static_cast<int>(k);
         if (o.kind == Operand::Kind::Constant) {
             const qint64 v = o.constant.value;
+            if (rule.bcd && o.constant.style != Constant::Style::Bcd) {
+                found.push_back({at, Tr::tr("the %1 of %2 must be BCD (#0000..#9999), not %3")
+                                         .arg(slotName(rule, k), spec.mnemonic,
+                                              formatConstant(target, o.constant))});
+                continue;
+            }
+            // A # constant is the word its digits spell (#1503 = 1503h).
+            if (rule.control != ControlWord::None && !controlWordFits(rule.control, bcdWord(v))) {
+                found.push_back({at, controlWordMessage(target, rule, k, spec, o.constant)});
+                continue;
+            }
             if (!rule.allowedValues.empty() &&
                 std::find(rule.allowedValues.begin(), rule.allowedValues.end(), v) ==
                     rule.allowedValues.end()) {
@@ -114,6 +163,37 @@ std::vector<OperandBreach> operandBreaches(const Target &target, const Instructi
                              .arg(spec.mnemonic, first, last, formatAddress(target, o.address))});
             }
             continue;
+        }
+        if (rule.bitWords && (area.numbering != Numbering::ChannelBit || o.address.bit >= 0)) {
+            found.push_back(
+                {at, Tr::tr("the %1 of %2 must be a channel with bits (IR, HR, LR), "
+                            "not %3")
+                         .arg(slotName(rule, k), spec.mnemonic, formatAddress(target, o.address))});
+            continue;
+        }
+        if (rule.rangeFrom >= 0 && static_cast<std::size_t>(rule.rangeFrom) < ins.operands.size()) {
+            const Operand &first = ins.operands[static_cast<std::size_t>(rule.rangeFrom)];
+            if (first.kind == Operand::Kind::Device &&
+                (first.address.area != o.address.area || first.address.index > o.address.index)) {
+                found.push_back({at, Tr::tr("%1 %2 %3: the end word must be in the area of the "
+                                            "start word and not before it")
+                                         .arg(spec.mnemonic, formatAddress(target, first.address),
+                                              formatAddress(target, o.address))});
+                continue;
+            }
+        }
+        if (rule.words > 1 && o.address.bit < 0) {
+            Address last = o.address;
+            last.index += rule.words - 1;
+            if (last.index > area.last) {
+                found.push_back({at, Tr::tr("%1 writes %2 words from %3, past the end of %4")
+                                         .arg(spec.mnemonic)
+                                         .arg(rule.words)
+                                         .arg(formatAddress(target, o.address),
+                                              QCoreApplication::translate("rung::model::Target",
+                                                                          area.description))});
+                continue;
+            }
         }
         // seed 003 4.2.3: a bistable relay changes only on its own coil.
         if (isDestination(rule.kind) && area.onlyWrittenBy != ApplyFunction::None &&

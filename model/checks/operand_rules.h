@@ -19,6 +19,10 @@ struct OperandBreach {
 
 std::vector<OperandBreach> operandBreaches(const Target &target, const Instruction &ins);
 
+// Whether a control word's digits say something the instruction can do (W353 MOVB(82) Bi,
+// MOVD(83) Di); `check` asks it of a constant, the simulator of a channel's value.
+bool controlWordFits(ControlWord control, qint64 word);
+
 // "PID is not simulated: it does nothing in the simulator" (ApplyFunction::NotSimulated): the
 // warning SIM100 that `check` gives and the simulator gives again when a simulation starts.
 QString notSimulatedMessage(const InstructionSpec &spec);

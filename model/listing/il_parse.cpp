@@ -4,6 +4,7 @@
 #include <QRegularExpression>
 
 #include <algorithm>
+#include <map>
 
 // The listing parser. Every family's listing goes through the same steps: strip comments,
 // read an optional step number, match the longest mnemonic the target's table knows, then
@@ -110,6 +111,7 @@ public:
                 break;
             pos = end + 1;
         }
+        resolveBankAliases();
         return std::move(m_result);
     }
 
@@ -173,11 +175,56 @@ private:
                                     tokens.end());
         if (!fusedNumber.isEmpty())
             operands.insert(operands.begin(), Token{fusedNumber, tokens[0].column + 3});
+        m_lineAliases.clear();
         if (!readOperands(&ins, operands, lineNumber, tokens[0]))
             return;
         ins.step = m_step;
         m_step += instructionSteps(m_target, ins);
+        for (std::size_t k : m_lineAliases)
+            m_bankAliases.emplace_back(m_result.list.instructions.size(), k);
         m_result.list.instructions.push_back(std::move(ins));
+    }
+
+    // Whether `text` names its device by a prefix alias of the whole bank (CPM1 "TC 005",
+    // Area::bankAlias) rather than by the area's own prefix.
+    bool writtenAsBank(const Operand &o, const QString &text) const {
+        if (o.kind != Operand::Kind::Device || !o.address.valid())
+            return false;
+        const Area &area = m_target.area(o.address.area);
+        if (!area.bankAlias)
+            return false;
+        const QString written = QString(text).remove(QLatin1Char(' ')).toUpper();
+        const auto startsWith = [&](const QString &prefix) {
+            const QString p = QString(prefix).remove(QLatin1Char(' ')).toUpper();
+            return !p.isEmpty() && written.startsWith(p) && written.size() > p.size() &&
+                   written[p.size()].isDigit();
+        };
+        if (startsWith(area.prefix))
+            return false;
+        return std::any_of(area.prefixAliases.begin(), area.prefixAliases.end(), startsWith);
+    }
+
+    // A bank alias is the timer or the counter the program defines with that number (TC 005
+    // is CNT 005 when a CNT 005 instruction counts); with no definition it stays the first
+    // area of the bank, which the parser picked.
+    void resolveBankAliases() {
+        std::vector<Instruction> &list = m_result.list.instructions;
+        std::map<std::pair<int, int>, int> defined; // (bank, number) -> area
+        for (const Instruction &ins : list) {
+            const Op op = ins.op();
+            if ((op != Op::Timer && op != Op::Counter && op != Op::UpDownCounter) ||
+                ins.operands.empty() || ins.operands[0].kind != Operand::Kind::Device ||
+                !ins.operands[0].address.valid())
+                continue;
+            const Address &a = ins.operands[0].address;
+            defined.emplace(std::pair{m_target.area(a.area).bank, a.index}, a.area);
+        }
+        for (const auto &[i, k] : m_bankAliases) {
+            Address &a = list[i].operands[k].address;
+            const auto it = defined.find({m_target.area(a.area).bank, a.index});
+            if (it != defined.end())
+                a.area = it->second;
+        }
     }
 
     bool matchMnemonic(const std::vector<Token> &tokens, const InstructionSpec **spec,
@@ -364,8 +411,12 @@ private:
             if (isLetters(tokens[i].text) && allDigits(QStringView(tokens[i + 1].text).left(1))) {
                 const bool isPrefix =
                     std::any_of(m_target.areas.begin(), m_target.areas.end(), [&](const Area &a) {
-                        return !a.prefix.isEmpty() &&
-                               a.prefix.trimmed().compare(tokens[i].text, Qt::CaseInsensitive) == 0;
+                        const auto same = [&](const QString &p) {
+                            return !p.isEmpty() &&
+                                   p.trimmed().compare(tokens[i].text, Qt::CaseInsensitive) == 0;
+                        };
+                        return same(a.prefix) ||
+                               std::any_of(a.prefixAliases.begin(), a.prefixAliases.end(), same);
                     });
                 if (isPrefix) {
                     tokens[i].text += QLatin1Char(' ') + tokens[i + 1].text;
@@ -413,10 +464,13 @@ private:
         bool ok = true;
         for (std::size_t i = 0; i < tokens.size(); ++i) {
             Operand o;
-            if (readOperand(specs[i].kind, tokens[i], lineNumber, &o))
+            if (readOperand(specs[i].kind, tokens[i], lineNumber, &o)) {
+                if (writtenAsBank(o, tokens[i].text))
+                    m_lineAliases.push_back(ins->operands.size());
                 ins->operands.push_back(o);
-            else
+            } else {
                 ok = false;
+            }
         }
         // A constant fits the width of the instruction's devices, wherever they stand: MOV
         // 100000 VD0 is 32-bit (the constant is read before the double word).
@@ -626,6 +680,8 @@ private:
     ParseResult m_result;
     int m_step = 0;
     bool m_tooMany = false;
+    std::vector<std::size_t> m_lineAliases; // operands of this line written as a bank
+    std::vector<std::pair<std::size_t, std::size_t>> m_bankAliases; // (instruction, operand)
 };
 
 } // namespace

@@ -14,6 +14,13 @@ struct Tr {
     Q_DECLARE_TR_FUNCTIONS(rung::model::Checks)
 };
 
+// The message, and the PLC console's own text for it where the target's manual gives one
+// (VPC "IL (JMP) missing"): a CPM1 user reads no VPC console text.
+QString withConsole(const QString &message, const char *console) {
+    return console ? Tr::tr("%1 (the PLC says \"%2\")").arg(message, QString::fromLatin1(console))
+                   : message;
+}
+
 // After an output the accumulator still holds the branch point's condition: a block loaded
 // there that a later ANB / ORB joins to it continues the rung.
 bool joinsTheAccumulator(const std::vector<Instruction> &ins, std::size_t index) {
@@ -30,6 +37,117 @@ bool joinsTheAccumulator(const std::vector<Instruction> &ins, std::size_t index)
             return true;
     }
     return false;
+}
+
+// W353 "Subroutines": SBN(92) N .. RET(93) after the main program and before END(01), one
+// SBN per number, each SBS(91) N with its SBN; "Step Instructions": STEP(08) B opens the step
+// of control bit B up to the next STEP(08), STEP(08) without a bit ends the steps, and IL,
+// JMP and SBN cannot stand inside a step.
+void pairSubroutinesAndSteps(const InstructionList &list, int last, BlockPairs &pairs) {
+    const auto &ins = list.instructions;
+    const auto at = [&](int i) -> const Instruction & { return ins[static_cast<std::size_t>(i)]; };
+    const auto name = [&](int i) { return at(i).spec ? at(i).spec->mnemonic : QString(); };
+    const auto number = [&](int i) -> qint64 {
+        return at(i).operands.empty() ? -1 : at(i).operands[0].constant.value;
+    };
+    const auto add = [&](const char *code, int index, const QString &message, int related = -1,
+                         bool warning = false) {
+        pairs.problems.push_back({code, index, related, message, !warning, warning});
+    };
+    const auto specOf = [&](Op op) {
+        const InstructionSpec *spec = list.target->findInstruction(op);
+        return spec ? spec->mnemonic : QString();
+    };
+    std::map<qint64, int> defined; // a number's SBN
+    std::vector<int> calls;
+    int open = -1;         // the SBN whose RET is still to come
+    bool mainDone = false; // the first SBN ends the main program
+    bool outside = false;  // an instruction between subroutines was reported
+    int steps = -1;        // the first STEP(08) B of the open step area
+    for (int i = 0; i < last; ++i) {
+        const Op op = at(i).op();
+        if (steps >= 0 && (op == Op::Interlock || op == Op::Jump || op == Op::SubroutineStart))
+            add("SP003", i,
+                Tr::tr("%1 cannot stand inside a step (STEP(08) .. STEP(08))").arg(name(i)));
+        switch (op) {
+        case Op::SubroutineStart: {
+            mainDone = true;
+            outside = false;
+            if (open >= 0)
+                add("SB003", i,
+                    Tr::tr("%1 %2 inside subroutine %3: close that one with %4 first")
+                        .arg(name(i))
+                        .arg(number(i))
+                        .arg(number(open))
+                        .arg(specOf(Op::SubroutineReturn)),
+                    open);
+            const auto [first, fresh] = defined.emplace(number(i), i);
+            if (!fresh)
+                add("SB002", i,
+                    Tr::tr("A second %1 %2: each subroutine number is defined once")
+                        .arg(name(i))
+                        .arg(number(i)),
+                    first->second);
+            open = i;
+            break;
+        }
+        case Op::SubroutineReturn:
+            if (open < 0) {
+                add("SB003", i,
+                    Tr::tr("%1 without %2 before it").arg(name(i), specOf(Op::SubroutineStart)));
+            } else {
+                pairs.partner[static_cast<std::size_t>(open)] = i;
+                pairs.partner[static_cast<std::size_t>(i)] = open;
+            }
+            open = -1;
+            break;
+        case Op::StepDefine:
+            if (!at(i).operands.empty()) {
+                if (steps < 0)
+                    steps = i;
+            } else if (steps < 0) {
+                add("SP002", i,
+                    Tr::tr("%1 without a control bit ends the steps, but no step is open")
+                        .arg(name(i)));
+            } else {
+                steps = -1;
+            }
+            break;
+        default:
+            if (op == Op::Apply && at(i).spec->function == ApplyFunction::SubroutineCall)
+                calls.push_back(i);
+            break;
+        }
+        // After the main program only subroutines run (W353): the rest never does.
+        if (mainDone && open < 0 && op != Op::SubroutineReturn && op != Op::SubroutineStart &&
+            !outside) {
+            outside = true;
+            add("SB004", i,
+                Tr::tr("%1 is after the main program and outside the subroutines: it never runs")
+                    .arg(name(i)),
+                -1, true);
+        }
+    }
+    if (open >= 0)
+        add("SB003", open,
+            Tr::tr("%1 %2 is not closed with %3")
+                .arg(name(open))
+                .arg(number(open))
+                .arg(specOf(Op::SubroutineReturn)));
+    if (steps >= 0)
+        add("SP001", steps,
+            Tr::tr("The steps are not closed with %1 without a control bit").arg(name(steps)));
+    for (int c : calls) {
+        const auto it = defined.find(number(c));
+        if (it == defined.end())
+            add("SB001", c,
+                Tr::tr("%1 %2: there is no %3 %2 before END")
+                    .arg(name(c))
+                    .arg(number(c))
+                    .arg(specOf(Op::SubroutineStart)));
+        else
+            pairs.partner[static_cast<std::size_t>(c)] = it->second;
+    }
 }
 
 } // namespace
@@ -91,6 +209,10 @@ BlockPairs pairBlocks(const InstructionList &list) {
                          int related = -1) {
         pairs.problems.push_back({code, index, related, message, jump});
     };
+    const auto opName = [&](Op op) {
+        const InstructionSpec *spec = t.findInstruction(op);
+        return spec ? spec->mnemonic : QString();
+    };
     const auto pair = [&](int a, int b) {
         pairs.partner[static_cast<std::size_t>(a)] = b;
         pairs.partner[static_cast<std::size_t>(b)] = a;
@@ -119,12 +241,16 @@ BlockPairs pairBlocks(const InstructionList &list) {
             break;
         case Op::InterlockClear:
             if (il < 0) {
-                add("NE002", i, Tr::tr("ILC without IL (\"IL (JMP) missing\")"), false);
+                add("NE002", i,
+                    withConsole(Tr::tr("%1 without %2").arg(name(i), opName(Op::Interlock)),
+                                t.console.blockMissing),
+                    false);
             } else {
                 if (!jumps.empty() && jumps.back() > il)
                     add("NE005", i,
-                        Tr::tr("IL-JMP interlace: the jump opened inside the interlock is still "
-                               "open"),
+                        withConsole(Tr::tr("IL and JMP overlap: the jump opened inside the "
+                                           "interlock is still open"),
+                                    t.console.interlace),
                         false);
                 pair(il, i);
             }
@@ -166,13 +292,17 @@ BlockPairs pairBlocks(const InstructionList &list) {
                 break;
             }
             if (jumps.empty()) {
-                add("NE004", i, Tr::tr("%1 without JMP (\"IL (JMP) missing\")").arg(name(i)), true);
+                add("NE004", i,
+                    withConsole(Tr::tr("%1 without %2").arg(name(i), opName(Op::Jump)),
+                                t.console.blockMissing),
+                    true);
                 break;
             }
             if (il > jumps.back())
                 add("NE005", i,
-                    Tr::tr("IL-JMP interlace: the interlock opened inside the jump is still "
-                           "open"),
+                    withConsole(Tr::tr("IL and JMP overlap: the interlock opened inside the "
+                                       "jump is still open"),
+                                t.console.interlace),
                     true);
             pair(jumps.back(), i);
             jumps.pop_back();
@@ -208,6 +338,7 @@ BlockPairs pairBlocks(const InstructionList &list) {
     }
     if (stl >= 0)
         add("SL001", stl, Tr::tr("The step ladder is not closed with RET"), false);
+    pairSubroutinesAndSteps(list, last, pairs);
     return pairs;
 }
 

@@ -49,11 +49,13 @@ struct BlockProblem {
     int related = -1;           // another instruction the message is about, or -1
     QString message;            // translated
     bool aboutJump = false;     // the jump targets are wrong: a program cannot run
+    bool warning = false;       // a warning, not an error (SB004)
 };
 
 struct BlockPairs {
     // Per instruction: an IL's ILC and back, a JMP's JPE / JME (the one with its number), a
-    // JPE's JMP (a JME's first JMP); -1 when it has none or is no block instruction.
+    // JPE's JMP (a JME's first JMP), an SBN(92)'s RET(93) and back, an SBS(91)'s SBN(92); -1
+    // when it has none or is no block instruction.
     std::vector<int> partner;
     std::vector<BlockProblem> problems; // in the order of the listing's walk
     int end = -1;                       // the first END, or -1 (nothing after it is paired)
@@ -63,6 +65,8 @@ struct BlockPairs {
 // (Limits::jumpLabels, CPM1 JMP(04) 00..49) pair a JMP with the JME of its number after it;
 // several JMP may share a number, one JME ends it. The others nest JMP .. JPE and allow no
 // jump inside a jump. IL inside IL, and an IL and a JMP that close out of order, are errors.
+// CPM1 subroutines and steps (W353) are paired too: SBN(92) N .. RET(93) after the main
+// program (SB001-SB004), STEP(08) B .. STEP(08) (SP001-SP003).
 BlockPairs pairBlocks(const InstructionList &list);
 
 // ---- stacks ------------------------------------------------------------------------------

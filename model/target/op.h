@@ -37,6 +37,12 @@ enum class Op : std::uint8_t {
     Return,         // RET
     End,
     Nop,
+    // Omron CPM1 (W353): SBN(92) N starts subroutine N, RET(93) ends it (both stand alone,
+    // after the main program); STEP(08) B starts the step of control bit B, STEP(08) alone
+    // ends the step area. SBS(91) and SNXT(09) are application boxes (Op::Apply).
+    SubroutineStart,
+    SubroutineReturn,
+    StepDefine,
 };
 
 // A contact: opens a block (LD) or extends the open one (AND, OR).
@@ -69,7 +75,7 @@ constexpr bool isOutput(Op op) {
 }
 
 // Takes no condition: stands alone in its rung, drawn with no contacts from the left rail
-// (END, ILC, JPE / JME, RET, STL, NOP).
+// (END, ILC, JPE / JME, RET, STL, NOP; CPM1 SBN(92), RET(93), STEP(08)).
 constexpr bool isUnconditional(Op op) {
     switch (op) {
     case Op::End:
@@ -78,6 +84,9 @@ constexpr bool isUnconditional(Op op) {
     case Op::Return:
     case Op::StepLadder:
     case Op::Nop:
+    case Op::SubroutineStart:
+    case Op::SubroutineReturn:
+    case Op::StepDefine:
         return true;
     default:
         return false;

@@ -80,6 +80,12 @@ struct Area {
     // and its bit. nullptr: always runs.
     const char *enabledBy = nullptr;
     bool enabledWhenOn = true;
+    // Its prefixAliases name the whole bank (CPM1 "TC 005", seed 002): the parser makes such
+    // an operand the timer or the counter, whichever the program defines with that number.
+    bool bankAlias = false;
+    // Holds a branch point's condition within a rung (CPM1 TR, W353): driven in many rungs,
+    // so a second OUT is no duplicate coil.
+    bool branchMemory = false;
     // Sub-ranges with other properties (read-only system bits inside a channel area,
     // retentive M ranges on Vigor) are separate Area entries; the parser picks the one that
     // contains the number.
@@ -116,6 +122,15 @@ enum class SystemRole : std::uint8_t {
     // SystemDevice::inputs physical inputs read the bits of the InputTestImage word.
     InputTest,
     InputTestImage, // PL110 SM37: bit 0 -> I1 ... bit 7 -> I8
+    // The flags the application instructions set (Omron W353 appendix B: ER 25503, CY 25504,
+    // GR 25505, EQ 25506, LE 25507); all five go OFF at END. A target that lists them gets
+    // them set by every instruction the manual gives an arrow in their column.
+    InstructionError,
+    Carry,
+    Greater,
+    Equal,
+    Less,
+    StepStart, // ON for one cycle when a STEP(08) step starts (W353: SR 25407)
     Other,
 };
 
@@ -160,6 +175,15 @@ enum class OperandKind : std::uint8_t {
     Count,     // a repetition count n (ZRST range end is a device, so this is for n only)
 };
 
+// A control word whose digits say what an instruction does (W353): checked when it is a
+// constant, decoded at run time when it is a channel.
+enum class ControlWord : std::uint8_t {
+    None,
+    BitPair, // MOVB(82) Bi: BCD, digits 1-0 the source bit, digits 3-2 the destination bit, 00..15
+    Digits,  // MOVD(83) Di: BCD, digit 0 first source digit, 1 digits - 1, 2 first destination
+             // digit (each 0..3), digit 3 zero
+};
+
 struct OperandSpec {
     OperandKind kind = OperandKind::BitSource;
     bool optional = false;
@@ -177,6 +201,16 @@ struct OperandSpec {
     // The slot takes plain words only: no digit-designated bits (K4M0) and no double words
     // (VD0) - block moves count words (Vigor BMOV, PL110 BLKMOV / MOVIND).
     bool wholeWords = false;
+    // A constant must be BCD (#0000..#9999): W353 instructions that read BCD (ADD(30) ...).
+    bool bcd = false;
+    // The last word of a range that starts at operand `rangeFrom`: the same area, not before
+    // it (SFT(10) / WSFT(16) St E); -1: none.
+    int rangeFrom = -1;
+    // A word whose bits are devices (CPM1 IR, HR, LR channels; not DM): SFT(10).
+    bool bitWords = false;
+    // Words from this one the instruction writes, all in its area (MUL(32) / DIV(33): R, R+1).
+    int words = 1;
+    ControlWord control = ControlWord::None;
 };
 
 // Application-instruction semantics the simulator implements (Op::Apply).
@@ -206,6 +240,25 @@ enum class ApplyFunction : std::uint8_t {
     ToBcd,   // D = the BCD digits of S (Vigor BCD, CPM1 BCD)
     FromBcd, // D = the value of the BCD digits of S (Vigor BIN, CPM1 BIN)
     NotSimulated,
+    // Omron CPM1 (W353), with the arithmetic flags (SystemRole::Carry ...):
+    CompareToFlags, // CMP(20) Cp1 Cp2: GR / EQ / LE, unsigned
+    ShiftRegister,  // SFT(10) St E: inputs data, shift pulse, reset
+    WordShift,      // WSFT(16) St E: St..E one word up, 0000 into St
+    MoveNot,        // MVN(22) S D: D = NOT S
+    MoveBit,        // MOVB(82) S Bi D: one bit, Bi = BCD dest bit / source bit
+    MoveDigit,      // MOVD(83) S Di D: digits, Di = BCD dest digit / count / source digit
+    BcdIncrement,   // INC(38) Wd: BCD + 1, 9999 -> 0000
+    BcdDecrement,   // DEC(39) Wd: BCD - 1, 0000 -> 9999
+    BcdAdd,         // ADD(30) Au Ad R: R = Au + Ad + CY in BCD, CY on a carry
+    BcdSubtract,    // SUB(31) Mi Su R: R = Mi - Su - CY, the 10's complement and CY if < 0
+    BcdMultiply,    // MUL(32) Md Mr R: R, R+1 = the 8-digit product
+    BcdDivide,      // DIV(33) Dd Dr R: R = quotient, R+1 = remainder
+    BinaryAdd,      // ADB(50) Au Ad R: R = Au + Ad + CY, CY above FFFF
+    BinarySubtract, // SBB(51) Mi Su R: R = Mi - Su - CY, the 2's complement and CY if < 0
+    SetCarry,       // STC(40)
+    ClearCarry,     // CLC(41)
+    SubroutineCall, // SBS(91) N: run subroutine N (SBN(92) N .. RET(93)) and come back
+    StepNext,       // SNXT(09) B: end the current step, start the step of control bit B
 };
 
 // Timer behaviours beyond the plain on-delay (PL110 TOFF / TONR).
@@ -233,6 +286,8 @@ struct InstructionSpec {
     double timerBaseMs = 0; // Op::Timer: its own time base (CPM1 TIMH(15): 10 ms); 0: the target's
     TimerMode timerMode = TimerMode::OnDelay;  // Op::Timer
     CounterMode counterMode = CounterMode::Up; // Op::UpDownCounter
+    // The differentiated form ("@MOV(21)", W353): runs once when its condition turns ON.
+    bool differentiated = false;
 };
 
 struct Limits {
@@ -318,6 +373,15 @@ struct ModelVariant {
     int programSteps = 0; // 0 = the family's limit
 };
 
+// The PLC's own words for a class of program error (seed 000, the VPC console: "IL (JMP)
+// missing", "IL-JMP interlace", "Oper duplication"), quoted after the product's message so
+// the user recognises the console's text; nullptr where the family's manual gives none.
+struct ConsoleTexts {
+    const char *blockMissing = nullptr; // ILC / JPE without IL / JMP
+    const char *interlace = nullptr;    // IL and JMP closed out of order
+    const char *duplicate = nullptr;    // a coil driven twice
+};
+
 class Target {
 public:
     Family family;
@@ -332,6 +396,7 @@ public:
     ConstantNotation constants;
     Semantics semantics;
     std::vector<ProtocolMap> protocolMaps; // protocol_map.h: where devices sit on the wire
+    ConsoleTexts console;
 
     // The four families, built once.
     static const Target &get(Family family);

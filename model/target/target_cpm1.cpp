@@ -50,14 +50,34 @@ Target makeCpm1Target() {
     hr.numbering = Numbering::ChannelBit;
     hr.digits = 2;
     hr.retentive = true;
+    // Link relays LR00..LR15 (seed 002 names LR among the channels a set value may come from;
+    // W353: LR 00..15, bits LR 00.00..LR 15.15, work bits when no 1:1 link is used, cleared
+    // at power-on).
+    Area &lr = addArea(t, "LR", "LR", AreaKind::Channel, 0, 15,
+                       QT_TRANSLATE_NOOP("rung::model::Target", "link relays"));
+    lr.numbering = Numbering::ChannelBit;
+    lr.digits = 2;
+    // Temporary relays TR 0..7 (W353): OUT TR 0 keeps a branch point's condition for a later
+    // LD TR 0 in the same rung, as W353's own examples write branching rungs; every rung may
+    // use them again.
+    Area &tr = addArea(t, "TR", "TR ", AreaKind::Bit, 0, 7,
+                       QT_TRANSLATE_NOOP("rung::model::Target", "temporary relays"));
+    tr.digits = 1;
+    tr.branchMemory = true;
     Area &tim = addArea(t, "TIM", "TIM ", AreaKind::Timer, 0, 127,
                         QT_TRANSLATE_NOOP("rung::model::Target", "timers"));
     tim.digits = 3;
     tim.bank = 0;
+    // Seed 002 calls the shared bank the "TC - terület TC000-TC127": TC 005 is TIM 005 or
+    // CNT 005, whichever the program makes of it (the parser decides, bankAlias).
+    tim.prefixAliases = {QStringLiteral("TC ")};
+    tim.bankAlias = true;
     Area &cnt = addArea(t, "CNT", "CNT ", AreaKind::Counter, 0, 127,
                         QT_TRANSLATE_NOOP("rung::model::Target", "counters"));
     cnt.digits = 3;
     cnt.bank = 0;
+    cnt.prefixAliases = {QStringLiteral("TC ")};
+    cnt.bankAlias = true;
     cnt.retentive = true;
     Area &dm = addArea(t, "DM", "DM ", AreaKind::Word, 0, 1023,
                        QT_TRANSLATE_NOOP("rung::model::Target", "data memory"));
@@ -86,6 +106,20 @@ Target makeCpm1Target() {
          QT_TRANSLATE_NOOP("rung::model::Target", "0.2 s clock")},
         {QStringLiteral("255.02"), SystemRole::Clock1s,
          QT_TRANSLATE_NOOP("rung::model::Target", "1 s clock")},
+        // The arithmetic flags (W353 appendix B), set by the application instructions and
+        // turned OFF at END(01), and the step flag (W353 STEP(08)).
+        {QStringLiteral("255.03"), SystemRole::InstructionError,
+         QT_TRANSLATE_NOOP("rung::model::Target", "ER: instruction execution error")},
+        {QStringLiteral("255.04"), SystemRole::Carry,
+         QT_TRANSLATE_NOOP("rung::model::Target", "CY: carry")},
+        {QStringLiteral("255.05"), SystemRole::Greater,
+         QT_TRANSLATE_NOOP("rung::model::Target", "GR: greater than")},
+        {QStringLiteral("255.06"), SystemRole::Equal,
+         QT_TRANSLATE_NOOP("rung::model::Target", "EQ: equal")},
+        {QStringLiteral("255.07"), SystemRole::Less,
+         QT_TRANSLATE_NOOP("rung::model::Target", "LE: less than")},
+        {QStringLiteral("254.07"), SystemRole::StepStart,
+         QT_TRANSLATE_NOOP("rung::model::Target", "ON for one cycle when a step starts")},
         {QStringLiteral("250"), SystemRole::Other,
          QT_TRANSLATE_NOOP("rung::model::Target", "analog setting 0 (BCD 0..200)")},
         {QStringLiteral("251"), SystemRole::Other,
@@ -176,35 +210,7 @@ Target makeCpm1Target() {
                      QT_TRANSLATE_NOOP("rung::model::Target", "End of the jump with this number"),
                      "00..49"),
              "JME", 5);
-    withCode(addSpec(t, "MOV(21)", Op::Apply, {{K::WordSource}, {K::WordDest}},
-                     QT_TRANSLATE_NOOP("rung::model::Target", "Move a channel or a constant"),
-                     "S D"),
-             "MOV", 21)
-        .function = ApplyFunction::Mov;
-    // Conversion and logic instructions (W353 "Data conversion", "Logic instructions"): the
-    // words as bits; BCD(24)/BIN(23) convert between a binary value and its BCD digits.
-    const std::tuple<const char *, int, ApplyFunction, int, const char *, const char *> words[] = {
-        {"BIN", 23, ApplyFunction::FromBcd, 2,
-         QT_TRANSLATE_NOOP("rung::model::Target", "R = the value of the BCD digits of S"), "S R"},
-        {"BCD", 24, ApplyFunction::ToBcd, 2,
-         QT_TRANSLATE_NOOP("rung::model::Target", "R = S as BCD digits"), "S R"},
-        {"COM", 29, ApplyFunction::Complement, 1,
-         QT_TRANSLATE_NOOP("rung::model::Target", "Invert every bit of a channel"), "Wd"},
-        {"ANDW", 34, ApplyFunction::AndWord, 3,
-         QT_TRANSLATE_NOOP("rung::model::Target", "R = I1 AND I2, bit by bit"), "I1 I2 R"},
-        {"ORW", 35, ApplyFunction::OrWord, 3,
-         QT_TRANSLATE_NOOP("rung::model::Target", "R = I1 OR I2, bit by bit"), "I1 I2 R"},
-        {"XORW", 36, ApplyFunction::XorWord, 3,
-         QT_TRANSLATE_NOOP("rung::model::Target", "R = I1 XOR I2, bit by bit"), "I1 I2 R"}};
-    for (const auto &[name, code, function, count, summary, help] : words) {
-        std::vector<OperandSpec> operands(static_cast<std::size_t>(count),
-                                          OperandSpec{K::WordSource});
-        operands.back().kind = K::WordDest;
-        const QByteArray spelled = QByteArray(name) + '(' + QByteArray::number(code) + ')';
-        withCode(addSpec(t, spelled.constData(), Op::Apply, std::move(operands), summary, help),
-                 name, code)
-            .function = function;
-    }
+    addCpm1ApplicationInstructions(t); // target_cpm1_instructions.cpp
     withCode(addSpec(t, "NOP(00)", Op::Nop, {},
                      QT_TRANSLATE_NOOP("rung::model::Target", "No operation")),
              "NOP", 0);

@@ -13,6 +13,9 @@ Target makeVigorTarget();
 Target makeCpm1Target();
 Target makePl110Target();
 
+// The CPM1's application instructions (target_cpm1_instructions.cpp).
+void addCpm1ApplicationInstructions(Target &t);
+
 // Appends an area and returns it for the fields that differ from the defaults.
 inline Area &addArea(Target &t, const char *key, const char *prefix, AreaKind kind, int first,
                      int last, const char *description) {

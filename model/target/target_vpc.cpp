@@ -230,6 +230,10 @@ Target makeVpcTarget() {
                        {QStringLiteral("d"), 0, m.aout - 1}};
         t.models.push_back(v);
     }
+    // The console's error texts (seed 000 "Program errors"), quoted in the checks' messages.
+    t.console.blockMissing = "IL (JMP) missing";
+    t.console.interlace = "IL-JMP interlace";
+    t.console.duplicate = "Oper duplication";
     return t;
 }
 

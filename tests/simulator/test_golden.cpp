@@ -107,6 +107,8 @@ TEST(GoldenTraceSet, CoversEveryFamilyExampleListedInTheIssue) {
         // CPM1, seed 002
         "cpm1_and", "cpm1_or", "cpm1_out_not", "cpm1_and_ld", "cpm1_or_ld", "cpm1_keep",
         "cpm1_difu_difd", "cpm1_jmp_jme", "cpm1_tim_timh", "cpm1_cnt_cntr",
+        // CPM1, Omron W353 (issue 14): application instructions, subroutines, steps
+        "cpm1_add_carry", "cpm1_sft", "cpm1_cmp_timer", "cpm1_step_snxt", "cpm1_subroutine",
         // PL110, seed 003 4.2
         "pl110_contacts", "pl110_timers", "pl110_counters", "pl110_movind"};
     const std::vector<std::string> names = goldenNames();
