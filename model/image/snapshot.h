@@ -9,6 +9,7 @@
 #include <QtGlobal>
 
 #include <memory>
+#include <optional>
 #include <vector>
 
 namespace rung::model {
@@ -22,6 +23,19 @@ struct ScanStatistics {
     qint64 execNsMax = 0;
 };
 
+// A scan stopped between two instructions (a breakpoint, or stepping one instruction at a
+// time): what the interpreter holds before `instruction` runs.
+struct ScanPause {
+    int instruction = -1;          // the next instruction to run (index in the list)
+    bool result = false;           // the logic result (accumulator) so far
+    std::vector<bool> blockStack;  // ANB/ORB, AND LD/OR LD operands, bottom first
+    std::vector<bool> memoryStack; // MPS/MRD/MPP, bottom first
+    bool interlock = true;         // false inside an open IL/MC whose condition is OFF
+    bool stepActive = true;        // false inside an STL block whose step is OFF
+    int breakpoint = -1;           // the breakpoint's instruction that stopped it; -1 a step
+    friend bool operator==(const ScanPause &, const ScanPause &) = default;
+};
+
 struct Snapshot {
     std::shared_ptr<const MemoryLayout> layout;
     std::vector<std::int32_t> words;       // MemoryLayout order
@@ -31,6 +45,8 @@ struct Snapshot {
     // Logic result after each instruction of the last scan (index = instruction index);
     // empty when power-flow recording is off.
     std::vector<bool> powerFlow;
+    // Set while the scan is stopped inside (the words then hold what the scan wrote so far).
+    std::optional<ScanPause> pause;
 
     bool bit(const Address &address) const {
         const BitRef r = layout ? layout->bit(address) : BitRef{};
