@@ -40,6 +40,84 @@
     </message>
 </context>
 <context>
+    <name>rung::app::BreakpointDialog</name>
+    <message>
+        <location filename="../app/gui/breakpoint_dialog.cpp" line="+38"/>
+        <source>Breakpoint Condition</source>
+        <translation>Töréspont feltétele</translation>
+    </message>
+    <message>
+        <location line="+7"/>
+        <source>Always</source>
+        <translation>Mindig</translation>
+    </message>
+    <message>
+        <location line="+1"/>
+        <source>When the bit rises</source>
+        <translation>Amikor a bit felfut</translation>
+    </message>
+    <message>
+        <location line="+1"/>
+        <source>When the bit falls</source>
+        <translation>Amikor a bit lefut</translation>
+    </message>
+    <message>
+        <location line="+1"/>
+        <source>While the bit is ON</source>
+        <translation>Amíg a bit BE</translation>
+    </message>
+    <message>
+        <location line="+1"/>
+        <source>While the bit is OFF</source>
+        <translation>Amíg a bit KI</translation>
+    </message>
+    <message>
+        <location line="+1"/>
+        <source>When the word compares</source>
+        <translation>Amikor a szó összehasonlítása teljesül</translation>
+    </message>
+    <message>
+        <location line="+1"/>
+        <source>&amp;Stop</source>
+        <translation>&amp;Megállás</translation>
+    </message>
+    <message>
+        <location line="+2"/>
+        <source>a device, e.g. Y0 or D10</source>
+        <translation>operandus, pl. Y0 vagy D10</translation>
+    </message>
+    <message>
+        <location line="+1"/>
+        <source>&amp;Device</source>
+        <translation>&amp;Operandus</translation>
+    </message>
+    <message>
+        <location line="+9"/>
+        <source>&amp;Compare</source>
+        <translation>Össze&amp;hasonlítás</translation>
+    </message>
+    <message>
+        <location line="+37"/>
+        <source>Type the device the condition watches</source>
+        <translation>Írja be a feltétel által figyelt operandust</translation>
+    </message>
+    <message>
+        <location line="+2"/>
+        <source>%1 is no device of this PLC: %2</source>
+        <translation>%1 nem operandusa ennek a PLC-nek: %2</translation>
+    </message>
+    <message>
+        <location line="+5"/>
+        <source>%1 is a bit: compare a word (D, a timer&apos;s or counter&apos;s value)</source>
+        <translation>%1 egy bit: szót hasonlítson össze (D, időzítő vagy számláló értéke)</translation>
+    </message>
+    <message>
+        <location line="+4"/>
+        <source>%1 is a word: watch a bit, or compare the word</source>
+        <translation>%1 egy szó: bitet figyeljen, vagy hasonlítsa össze a szót</translation>
+    </message>
+</context>
+<context>
     <name>rung::app::Cli</name>
     <message>
         <location filename="../app/cli/cli.cpp" line="+43"/>
@@ -164,6 +242,11 @@ Kilépési kód: 0 nincs hiba, 1 a programban hiba van, 2 használati vagy I/O h
         <location filename="../app/cli/cli_language.cpp" line="+31"/>
         <source>--lang must be one of %1</source>
         <translation>a --lang értéke csak ezek egyike lehet: %1</translation>
+    </message>
+    <message>
+        <location filename="../app/cli/cli_load_program.cpp" line="+50"/>
+        <source>%1: the program cannot be listed whole</source>
+        <translation>%1: a program nem írható ki teljes utasításlistaként</translation>
     </message>
 </context>
 <context>
@@ -662,18 +745,18 @@ Létradiagram- és utasításlista-szerkesztő VPC, Vigor, CPM1 és PL110 PLC-kh
     </message>
     <message>
         <location line="+22"/>
-        <location line="+218"/>
+        <location line="+219"/>
         <source>Ladder</source>
         <translation>Létradiagram</translation>
     </message>
     <message>
-        <location line="-217"/>
-        <location line="+218"/>
+        <location line="-218"/>
+        <location line="+219"/>
         <source>Instruction List</source>
         <translation>Utasításlista</translation>
     </message>
     <message>
-        <location line="-205"/>
+        <location line="-206"/>
         <source>The list as typed had errors and now shows the ladder&apos;s program; Ctrl+Z in the list brings it back</source>
         <translation>A begépelt lista hibás volt, most a létradiagram programját mutatja; a listában a Ctrl+Z visszahozza</translation>
     </message>
@@ -980,12 +1063,12 @@ Létradiagram- és utasításlista-szerkesztő VPC, Vigor, CPM1 és PL110 PLC-kh
         <translation>Szimbólumok exportálása</translation>
     </message>
     <message>
-        <location filename="../app/gui/main_window_simulation.cpp" line="+32"/>
+        <location filename="../app/gui/main_window_simulation.cpp" line="+36"/>
         <source>The instruction list has errors, so the ladder still shows the last program without them: correct the list (or undo) before simulating</source>
         <translation>Az utasításlistában hibák vannak, ezért a létra még az utolsó hibátlan programot mutatja: a szimuláció előtt javítsa a listát (vagy vonja vissza a módosítást)</translation>
     </message>
     <message>
-        <location line="+34"/>
+        <location line="+48"/>
         <source>&amp;Simulation</source>
         <translation>Szi&amp;muláció</translation>
     </message>
@@ -1016,6 +1099,36 @@ Létradiagram- és utasításlista-szerkesztő VPC, Vigor, CPM1 és PL110 PLC-kh
     </message>
     <message>
         <location line="+2"/>
+        <source>Run Sc&amp;ans...</source>
+        <translation>Ciklus&amp;ok futtatása...</translation>
+    </message>
+    <message>
+        <location line="+4"/>
+        <source>Run Scans</source>
+        <translation>Ciklusok futtatása</translation>
+    </message>
+    <message>
+        <location line="+0"/>
+        <source>Scans to run:</source>
+        <translation>Futtatandó ciklusok:</translation>
+    </message>
+    <message>
+        <location line="+7"/>
+        <source>R&amp;un For...</source>
+        <translation>Futtatás enn&amp;yi ideig...</translation>
+    </message>
+    <message>
+        <location line="+4"/>
+        <source>Run For</source>
+        <translation>Futtatás ennyi ideig</translation>
+    </message>
+    <message>
+        <location line="+0"/>
+        <source>Simulated time to run, in seconds:</source>
+        <translation>Szimulált futási idő másodpercben:</translation>
+    </message>
+    <message>
+        <location line="+7"/>
         <source>Spee&amp;d</source>
         <translation>S&amp;ebesség</translation>
     </message>
@@ -1030,7 +1143,7 @@ Létradiagram- és utasításlista-szerkesztő VPC, Vigor, CPM1 és PL110 PLC-kh
         <translation>A lehető &amp;leggyorsabban</translation>
     </message>
     <message>
-        <location line="+7"/>
+        <location line="+9"/>
         <source>Scan Peri&amp;od</source>
         <translation>Cikl&amp;usidő</translation>
     </message>
@@ -1041,9 +1154,122 @@ Létradiagram- és utasításlista-szerkesztő VPC, Vigor, CPM1 és PL110 PLC-kh
         <translation>%1 ms</translation>
     </message>
     <message>
-        <location line="+8"/>
+        <location line="+10"/>
         <source>Release All &amp;Forces</source>
         <translation>&amp;Minden kényszerítés feloldása</translation>
+    </message>
+    <message>
+        <location line="+17"/>
+        <source> (read-only)</source>
+        <translation> (csak olvasható)</translation>
+    </message>
+    <message>
+        <location filename="../app/gui/main_window_debug.cpp" line="+38"/>
+        <location line="+130"/>
+        <source>Simulation</source>
+        <translation>Szimuláció</translation>
+    </message>
+    <message>
+        <location line="-123"/>
+        <location line="+125"/>
+        <source>Scan Debugger</source>
+        <translation>Ciklushibakereső</translation>
+    </message>
+    <message>
+        <location line="-105"/>
+        <source>No instruction on line %1 to stop at</source>
+        <translation>A(z) %1. sorban nincs utasítás, amelynél meg lehetne állni</translation>
+    </message>
+    <message>
+        <location line="+12"/>
+        <source>Rung %1 is not in the instruction list: no breakpoint there</source>
+        <translation>A(z) %1. létrafok nincs az utasításlistában: ott nem lehet töréspont</translation>
+    </message>
+    <message>
+        <location line="+24"/>
+        <source>Online Edit</source>
+        <translation>Online szerkesztés</translation>
+    </message>
+    <message>
+        <location line="+3"/>
+        <source>Apply Keeping the Memory</source>
+        <translation>Alkalmazás a memória megtartásával</translation>
+    </message>
+    <message>
+        <location line="+2"/>
+        <source>Restart from Power-On</source>
+        <translation>Újraindítás a bekapcsolási állapotból</translation>
+    </message>
+    <message>
+        <location line="+1"/>
+        <source>Stop the Simulation</source>
+        <translation>A szimuláció leállítása</translation>
+    </message>
+    <message>
+        <location line="+23"/>
+        <source>S&amp;tep Instruction</source>
+        <translation>Lé&amp;pés egy utasítással</translation>
+    </message>
+    <message>
+        <location line="+3"/>
+        <source>F&amp;inish Scan</source>
+        <translation>Ciklus &amp;befejezése</translation>
+    </message>
+    <message>
+        <location line="+2"/>
+        <source>Toggle &amp;Breakpoint</source>
+        <translation>&amp;Töréspont be/ki</translation>
+    </message>
+    <message>
+        <location line="+2"/>
+        <source>Breakpoint Co&amp;ndition...</source>
+        <translation>Tö&amp;réspont feltétele...</translation>
+    </message>
+    <message>
+        <location line="+14"/>
+        <source>No instruction here to stop at</source>
+        <translation>Itt nincs utasítás, amelynél meg lehetne állni</translation>
+    </message>
+    <message>
+        <location line="+4"/>
+        <source>Remove All Brea&amp;kpoints</source>
+        <translation>Minden töréspont eltá&amp;volítása</translation>
+    </message>
+    <message>
+        <location line="+3"/>
+        <source>Return to &amp;Live</source>
+        <translation>Vissza az élő állapot&amp;hoz</translation>
+    </message>
+    <message>
+        <location line="+32"/>
+        <source>line %1</source>
+        <translation>%1. sor</translation>
+    </message>
+    <message>
+        <location line="+7"/>
+        <source>rung %1</source>
+        <translation>%1. létrafok</translation>
+    </message>
+    <message>
+        <location line="+3"/>
+        <source>No instruction at %1 to stop at</source>
+        <translation>Itt (%1) nincs utasítás, amelynél meg lehetne állni</translation>
+    </message>
+    <message>
+        <location line="+4"/>
+        <source>Breakpoint set at %1</source>
+        <translation>Töréspont beállítva: %1</translation>
+    </message>
+    <message>
+        <location line="+1"/>
+        <source>Breakpoint at %1 removed</source>
+        <translation>Töréspont eltávolítva: %1</translation>
+    </message>
+    <message>
+        <location line="+13"/>
+        <source>Stop before line %1: %2</source>
+        <extracomment>where the breakpoint is: %1 line, %2 the instruction</extracomment>
+        <translation>Megállás a(z) %1. sor előtt: %2</translation>
     </message>
 </context>
 <context>
@@ -1121,46 +1347,173 @@ Létradiagram- és utasításlista-szerkesztő VPC, Vigor, CPM1 és PL110 PLC-kh
     </message>
 </context>
 <context>
-    <name>rung::app::Simulate</name>
+    <name>rung::app::ScanDebuggerView</name>
     <message>
-        <location filename="../app/cli/cli_simulate.cpp" line="+21"/>
-        <source>usage: rungstudio-cli simulate FILE [--target T] --scans N [--period MS] [--set DEV=VALUE@SCAN]... --trace DEV[,DEV...]</source>
-        <translation>használat: rungstudio-cli simulate FILE [--target T] --scans N [--period MS] [--set DEV=VALUE@SCAN]... --trace DEV[,DEV...]</translation>
+        <location filename="../app/gui/scan_debugger_view.cpp" line="+22"/>
+        <source>ON</source>
+        <translation>BE</translation>
     </message>
     <message>
-        <location line="+20"/>
+        <location line="+0"/>
+        <source>OFF</source>
+        <translation>KI</translation>
+    </message>
+    <message>
+        <location line="+10"/>
+        <source>%1: %2 (top)</source>
+        <extracomment>a stack entry: %1 depth (1 = bottom), %2 ON/OFF</extracomment>
+        <translation>%1: %2 (teteje)</translation>
+    </message>
+    <message>
+        <location line="+1"/>
+        <source>%1: %2</source>
+        <translation>%1: %2</translation>
+    </message>
+    <message>
+        <location line="+4"/>
+        <source>(empty)</source>
+        <translation>(üres)</translation>
+    </message>
+    <message>
+        <location line="+100"/>
+        <source>Logic result:</source>
+        <translation>Logikai eredmény:</translation>
+    </message>
+    <message>
+        <location line="+1"/>
+        <source>Block stack (ANB/ORB):</source>
+        <translation>Blokkverem (ANB/ORB):</translation>
+    </message>
+    <message>
+        <location line="+1"/>
+        <source>MPS stack:</source>
+        <translation>MPS-verem:</translation>
+    </message>
+    <message>
+        <location line="+1"/>
+        <source>Step Instruction</source>
+        <translation>Lépés egy utasítással</translation>
+    </message>
+    <message>
+        <location line="+1"/>
+        <source>Finish Scan</source>
+        <translation>Ciklus befejezése</translation>
+    </message>
+    <message>
+        <location line="+1"/>
+        <source>Continue</source>
+        <translation>Folytatás</translation>
+    </message>
+    <message>
+        <location line="+1"/>
+        <source>Breakpoints:</source>
+        <translation>Töréspontok:</translation>
+    </message>
+    <message>
+        <location line="+1"/>
+        <source>Where</source>
+        <translation>Hol</translation>
+    </message>
+    <message>
+        <location line="+0"/>
+        <source>Stops</source>
+        <translation>Megáll</translation>
+    </message>
+    <message>
+        <location line="+1"/>
+        <source>Condition...</source>
+        <translation>Feltétel...</translation>
+    </message>
+    <message>
+        <location line="+1"/>
+        <source>Remove</source>
+        <translation>Eltávolítás</translation>
+    </message>
+    <message>
+        <location line="+1"/>
+        <source>Remove All</source>
+        <translation>Mindet eltávolítja</translation>
+    </message>
+    <message>
+        <location line="+30"/>
+        <source>Not stopped inside a scan. Step Instruction starts a scan and stops before its first instruction; a breakpoint stops a running scan.</source>
+        <translation>Nincs megállítva ciklus közben. A Lépés egy utasítással ciklust indít, és az első utasítása előtt megáll; a töréspont a futó ciklust állítja meg.</translation>
+    </message>
+    <message>
+        <location line="+3"/>
+        <source>The simulation is off.</source>
+        <translation>A szimuláció ki van kapcsolva.</translation>
+    </message>
+    <message>
+        <location line="+18"/>
+        <source>Stopped before step %1 (line %2, rung %3): %4</source>
+        <extracomment>%1 step, %2 line, %3 rung, %4 the instruction, e.g. &quot;OUT Y0&quot;</extracomment>
+        <translation>Megállva a(z) %1. lépés előtt (%2. sor, %3. létrafok): %4</translation>
+    </message>
+    <message>
+        <location line="+6"/>
+        <source>Stopped at the end of the program</source>
+        <translation>Megállva a program végén</translation>
+    </message>
+    <message>
+        <location line="+2"/>
+        <source>A breakpoint stopped the scan.</source>
+        <translation>Töréspont állította meg a ciklust.</translation>
+    </message>
+    <message>
+        <location line="+1"/>
+        <source>Stepping one instruction at a time.</source>
+        <translation>Léptetés utasításonként.</translation>
+    </message>
+    <message>
+        <location line="+5"/>
+        <source>Inside an interlock (IL/MC) whose condition is OFF</source>
+        <translation>Olyan reteszelésen (IL/MC) belül, amelynek feltétele KI</translation>
+    </message>
+    <message>
+        <location line="+2"/>
+        <source>Inside a step (STL) that is not active</source>
+        <translation>Nem aktív lépésen (STL) belül</translation>
+    </message>
+    <message>
+        <location line="+15"/>
+        <source>Rung %1 (no longer there)</source>
+        <translation>%1. létrafok (már nincs meg)</translation>
+    </message>
+    <message>
+        <location line="+5"/>
+        <source>Rung %1, line %2: %3</source>
+        <extracomment>%1 rung, %2 line, %3 the instruction</extracomment>
+        <translation>%1. létrafok, %2. sor: %3</translation>
+    </message>
+</context>
+<context>
+    <name>rung::app::Simulate</name>
+    <message>
+        <location filename="../app/cli/cli_simulate.cpp" line="+22"/>
+        <source>usage: rungstudio-cli simulate FILE [--target T] [--model M] --scans N [--period MS] [--set DEV=VALUE@SCAN]... --trace DEV[,DEV...]
+FILE is a listing (.il), a ladder text (.ladder) or a project (.rung).</source>
+        <translation>használat: rungstudio-cli simulate FÁJL [--target T] [--model M] --scans N [--period MS] [--set OPERANDUS=ÉRTÉK@CIKLUS]... --trace OPERANDUS[,OPERANDUS...]
+A FÁJL utasításlista (.il), létradiagram-szöveg (.ladder) vagy projekt (.rung).</translation>
+    </message>
+    <message>
+        <location line="+30"/>
+        <source>%1 needs a value</source>
+        <translation>%1 után érték kell</translation>
+    </message>
+    <message>
+        <location line="+13"/>
         <source>unexpected argument %1</source>
         <translation>váratlan argumentum: %1</translation>
     </message>
     <message>
-        <location line="+19"/>
-        <source>%1: no target; give --target or a &quot;; target: NAME&quot; first line</source>
-        <translation>%1: nincs célrendszer; adja meg a --target kapcsolót vagy egy &quot;; target: NAME&quot; első sort</translation>
-    </message>
-    <message>
-        <location line="+6"/>
-        <source>unknown target %1</source>
-        <translation>ismeretlen célrendszer: %1</translation>
-    </message>
-    <message>
-        <location line="+14"/>
-        <location line="+7"/>
-        <source>error: %1</source>
-        <translation>hiba: %1</translation>
-    </message>
-    <message>
-        <location line="-6"/>
-        <location line="+10"/>
+        <location line="+17"/>
+        <location line="+37"/>
         <source>the program does not start</source>
         <translation>a program nem indul el</translation>
     </message>
     <message>
-        <location line="-3"/>
-        <source>warning: %1</source>
-        <translation>figyelmeztetés: %1</translation>
-    </message>
-    <message>
-        <location line="+11"/>
+        <location line="+14"/>
         <source>runtime error at step %1: %2</source>
         <translation>futási hiba a(z) %1. lépésnél: %2</translation>
     </message>
@@ -1168,19 +1521,65 @@ Létradiagram- és utasításlista-szerkesztő VPC, Vigor, CPM1 és PL110 PLC-kh
 <context>
     <name>rung::app::SimulationController</name>
     <message numerus="yes">
-        <location filename="../app/gui/simulation_controller.cpp" line="+85"/>
+        <location filename="../app/gui/simulation_controller.cpp" line="+101"/>
         <source>The program has %n error(s): the simulation does not start; the Problems list shows them</source>
         <translation>
             <numerusform>A programban %n hiba van: a szimuláció nem indul el; a Problémák lista mutatja őket</numerusform>
         </translation>
     </message>
     <message>
-        <location line="+45"/>
+        <location line="+83"/>
+        <source>The edited program has errors: the simulation goes on with the program before the edit (stop it to simulate what is shown)</source>
+        <translation>A módosított programban hibák vannak: a szimuláció a módosítás előtti programmal folytatódik (állítsa le, hogy a látható programot szimulálja)</translation>
+    </message>
+    <message>
+        <location line="+17"/>
         <source>The program was edited: the simulation stopped. Run starts the edited program from power-on</source>
         <translation>A program megváltozott: a szimuláció leállt. A Futtatás a módosított programot indítja, a bekapcsolási állapotból</translation>
     </message>
     <message>
-        <location line="+69"/>
+        <location line="+8"/>
+        <source>Online edit: the edited program restarted from power-on</source>
+        <translation>Online szerkesztés: a módosított program a bekapcsolási állapotból indult újra</translation>
+    </message>
+    <message>
+        <location line="+13"/>
+        <source>Online edit: the edited program takes over when the stopped scan ends; the memory is kept</source>
+        <translation>Online szerkesztés: a módosított program a megállított ciklus végén lép életbe; a memória megmarad</translation>
+    </message>
+    <message>
+        <location line="+2"/>
+        <source>Online edit: the edited program runs from the next scan on; the memory is kept</source>
+        <translation>Online szerkesztés: a módosított program a következő ciklustól fut; a memória megmarad</translation>
+    </message>
+    <message>
+        <location line="+7"/>
+        <source>The edited program is for another memory layout: the running memory cannot be kept. Restart it from power-on, or stop the simulation?</source>
+        <translation>A módosított program más memóriafelosztású: a futó memória nem tartható meg. Újraindítja a bekapcsolási állapotból, vagy leállítja a szimulációt?</translation>
+    </message>
+    <message>
+        <location line="+11"/>
+        <source>no longer uses %1 (their values stay as they are)</source>
+        <translation>már nem használja: %1 (értékük változatlan marad)</translation>
+    </message>
+    <message>
+        <location line="+3"/>
+        <source>now uses %1 (they start from the values the memory holds)</source>
+        <translation>most használja: %1 (a memóriában lévő értékekről indulnak)</translation>
+    </message>
+    <message>
+        <location line="+3"/>
+        <source>The edited program %1. Apply it keeping the memory, restart it from power-on, or stop the simulation?</source>
+        <extracomment>%1 what changed, e.g. &quot;no longer uses T0 (...); now uses T5 (...)&quot;</extracomment>
+        <translation>A módosított program %1. Alkalmazza a memória megtartásával, újraindítja a bekapcsolási állapotból, vagy leállítja a szimulációt?</translation>
+    </message>
+    <message>
+        <location line="+82"/>
+        <source> | the program before the edit</source>
+        <translation> | a módosítás előtti program</translation>
+    </message>
+    <message>
+        <location line="+10"/>
         <source>Simulation off</source>
         <translation>Szimuláció kikapcsolva</translation>
     </message>
@@ -1214,6 +1613,160 @@ Létradiagram- és utasításlista-szerkesztő VPC, Vigor, CPM1 és PL110 PLC-kh
         <source>%1 | %2 | %3 scans | scan %4 ms | evaluation %5 µs (%6..%7)</source>
         <extracomment>%1 run state, %2 simulated time h:mm:ss.cc, %3 scans, %4 scan period in ms, %5 %6 %7 time the last scan took to evaluate: current, minimum, maximum, in µs</extracomment>
         <translation>%1 | %2 | %3 ciklus | ciklusidő %4 ms | kiértékelés %5 µs (%6..%7)</translation>
+    </message>
+    <message>
+        <location filename="../app/gui/simulation_debug.cpp" line="+96"/>
+        <source>always</source>
+        <translation>mindig</translation>
+    </message>
+    <message>
+        <location line="+2"/>
+        <source>when %1 rises</source>
+        <translation>amikor %1 felfut</translation>
+    </message>
+    <message>
+        <location line="+2"/>
+        <source>when %1 falls</source>
+        <translation>amikor %1 lefut</translation>
+    </message>
+    <message>
+        <location line="+2"/>
+        <source>while %1 is ON</source>
+        <translation>amíg %1 BE</translation>
+    </message>
+    <message>
+        <location line="+2"/>
+        <source>while %1 is OFF</source>
+        <translation>amíg %1 KI</translation>
+    </message>
+    <message>
+        <location line="+3"/>
+        <source>when %1 %2 %3</source>
+        <extracomment>a breakpoint&apos;s condition, e.g. &quot;when D10 &gt; 100&quot;</extracomment>
+        <translation>amikor %1 %2 %3</translation>
+    </message>
+    <message>
+        <location filename="../app/gui/simulation_history.cpp" line="+64"/>
+        <source>History: rebuilding...</source>
+        <translation>Előzmények: újraépítés...</translation>
+    </message>
+    <message>
+        <location line="+6"/>
+        <source>No history: the simulation is off</source>
+        <translation>Nincsenek előzmények: a szimuláció ki van kapcsolva</translation>
+    </message>
+    <message>
+        <location line="+3"/>
+        <source>No history yet: run the simulation</source>
+        <translation>Még nincsenek előzmények: futtassa a szimulációt</translation>
+    </message>
+    <message>
+        <location line="+2"/>
+        <source>Recorded: the last %1 of simulated time (scans %2..%3, %4 MB); at most the last hour is kept</source>
+        <extracomment>%1 h:mm:ss of simulated time, %2 %3 first and last scan, %4 memory in MB</extracomment>
+        <translation>Rögzítve: a szimulált idő utolsó %1 része (%2..%3. ciklus, %4 MB); legfeljebb az utolsó óra marad meg</translation>
+    </message>
+</context>
+<context>
+    <name>rung::app::SimulationPanel</name>
+    <message>
+        <location filename="../app/gui/simulation_panel.cpp" line="+154"/>
+        <source>Run</source>
+        <translation>Futtatás</translation>
+    </message>
+    <message>
+        <location line="+1"/>
+        <source>Scans:</source>
+        <translation>Ciklusok:</translation>
+    </message>
+    <message>
+        <location line="+1"/>
+        <source>Run Scans</source>
+        <translation>Ciklusok futtatása</translation>
+    </message>
+    <message>
+        <location line="+1"/>
+        <source>Simulated time:</source>
+        <translation>Szimulált idő:</translation>
+    </message>
+    <message>
+        <location line="+2"/>
+        <source> s</source>
+        <extracomment>seconds of simulated time</extracomment>
+        <translation> s</translation>
+    </message>
+    <message>
+        <location line="+1"/>
+        <source>Run For</source>
+        <translation>Futtatás ennyi ideig</translation>
+    </message>
+    <message>
+        <location line="+1"/>
+        <source>Speed:</source>
+        <translation>Sebesség:</translation>
+    </message>
+    <message>
+        <location line="+3"/>
+        <source>x%1 real time</source>
+        <translation>x%1 valós idő</translation>
+    </message>
+    <message>
+        <location line="+0"/>
+        <source>As fast as possible</source>
+        <translation>A lehető leggyorsabban</translation>
+    </message>
+    <message>
+        <location line="+2"/>
+        <source>Scan period:</source>
+        <translation>Ciklusidő:</translation>
+    </message>
+    <message>
+        <location line="+2"/>
+        <source> ms</source>
+        <extracomment>milliseconds</extracomment>
+        <translation> ms</translation>
+    </message>
+    <message>
+        <location line="+1"/>
+        <source>Power Cycle (retentive areas kept)</source>
+        <translation>Ki-bekapcsolás (a remanens területek megmaradnak)</translation>
+    </message>
+    <message>
+        <location line="+1"/>
+        <source>Statistics</source>
+        <translation>Statisztika</translation>
+    </message>
+    <message>
+        <location line="+1"/>
+        <source>History</source>
+        <translation>Előzmények</translation>
+    </message>
+    <message>
+        <location line="+1"/>
+        <source>Show scan:</source>
+        <translation>Ciklus megjelenítése:</translation>
+    </message>
+    <message>
+        <location line="+1"/>
+        <source>Return to Live</source>
+        <translation>Vissza az élő állapothoz</translation>
+    </message>
+    <message>
+        <location line="+23"/>
+        <source>The simulation is off: Run, Single Scan or Run Scans starts it.</source>
+        <translation>A szimuláció ki van kapcsolva: a Futtatás, az Egy ciklus vagy a Ciklusok futtatása indítja.</translation>
+    </message>
+    <message>
+        <location line="+5"/>
+        <source>Simulated time: %1
+Scans: %2
+Scan period: %3 ms
+Evaluation: %4 µs (%5..%6)</source>
+        <extracomment>the statistics block: simulated time, scans, the scan period, the evaluation time of the last scan on this computer (current, minimum..maximum)</extracomment>
+        <translation>Szimulált idő: %1
+Ciklusok: %2
+Ciklusidő: %3 ms
+Kiértékelés: %4 µs (%5..%6)</translation>
     </message>
 </context>
 <context>
@@ -1836,7 +2389,7 @@ Létradiagram- és utasításlista-szerkesztő VPC, Vigor, CPM1 és PL110 PLC-kh
 <context>
     <name>rung::editor::IlEditor</name>
     <message>
-        <location filename="../editor/il_editor.cpp" line="+247"/>
+        <location filename="../editor/il_editor.cpp" line="+272"/>
         <source>Instruction list</source>
         <translation>Utasításlista</translation>
     </message>
@@ -1844,7 +2397,7 @@ Létradiagram- és utasításlista-szerkesztő VPC, Vigor, CPM1 és PL110 PLC-kh
 <context>
     <name>rung::editor::IlLexer</name>
     <message>
-        <location line="-187"/>
+        <location line="-206"/>
         <source>Default</source>
         <translation>Alapértelmezett</translation>
     </message>
@@ -1897,7 +2450,7 @@ Létradiagram- és utasításlista-szerkesztő VPC, Vigor, CPM1 és PL110 PLC-kh
         <translation>Létrafok megjegyzésének szerkesztése</translation>
     </message>
     <message>
-        <location line="+167"/>
+        <location line="+206"/>
         <source>Type one instruction, for example &quot;%1 X0&quot;</source>
         <translation>Egy utasítást írjon be, például: &quot;%1 X0&quot;</translation>
     </message>
@@ -1919,7 +2472,7 @@ Létradiagram- és utasításlista-szerkesztő VPC, Vigor, CPM1 és PL110 PLC-kh
     </message>
     <message>
         <location line="+22"/>
-        <location filename="../editor/ladder_view_mouse.cpp" line="+135"/>
+        <location filename="../editor/ladder_view_mouse.cpp" line="+143"/>
         <source>Draw a wire</source>
         <translation>Vezeték rajzolása</translation>
     </message>
@@ -4201,7 +4754,12 @@ Létradiagram- és utasításlista-szerkesztő VPC, Vigor, CPM1 és PL110 PLC-kh
         <translation>(nincs operandus)</translation>
     </message>
     <message>
-        <location line="+63"/>
+        <location line="+56"/>
+        <source>the edited program is for another memory layout (another PLC): it cannot take over the running image</source>
+        <translation>a módosított program más memóriafelosztású (másik PLC): nem veheti át a futó memóriaképet</translation>
+    </message>
+    <message>
+        <location line="+17"/>
         <source>%1 has no set value to write</source>
         <translation>%1 operandusnak nincs írható beállított értéke</translation>
     </message>
@@ -4357,7 +4915,7 @@ Létradiagram- és utasításlista-szerkesztő VPC, Vigor, CPM1 és PL110 PLC-kh
         <translation>a(z) %1 eredmény kívül esik a 0..9999 tartományon; %2 íródik be</translation>
     </message>
     <message>
-        <location line="+353"/>
+        <location line="+383"/>
         <location line="+56"/>
         <source>division by zero; the destination is unchanged</source>
         <translation>osztás nullával; a cél változatlan marad</translation>
@@ -4367,11 +4925,58 @@ Létradiagram- és utasításlista-szerkesztő VPC, Vigor, CPM1 és PL110 PLC-kh
         <source>MOVIND index %1 is outside 0..%2; nothing is written</source>
         <translation>a MOVIND %1 indexe kívül esik a 0..%2 tartományon; nem íródik semmi</translation>
     </message>
+    <message>
+        <location filename="../simulator/engine_debug.cpp" line="+60"/>
+        <location line="+11"/>
+        <source>the program has no instruction %1 to stop at</source>
+        <translation>a programnak nincs %1. utasítása, amelynél meg lehetne állni</translation>
+    </message>
+    <message>
+        <location line="+8"/>
+        <source>%1 is no word to compare</source>
+        <translation>%1 nem összehasonlítható szó</translation>
+    </message>
+    <message>
+        <location line="+3"/>
+        <location line="+10"/>
+        <source>(no device)</source>
+        <translation>(nincs operandus)</translation>
+    </message>
+    <message>
+        <location line="-3"/>
+        <source>%1 is no bit to watch</source>
+        <translation>%1 nem figyelhető bit</translation>
+    </message>
+</context>
+<context>
+    <name>rung::simulator::HistorySource</name>
+    <message>
+        <location filename="../simulator/history_source.cpp" line="+43"/>
+        <source>History: scan %1 (%2)</source>
+        <extracomment>the window&apos;s mark while it shows a past scan; %1 the scan, %2 its time h:mm:ss.cc</extracomment>
+        <translation>Előzmények: %1. ciklus (%2)</translation>
+    </message>
+    <message>
+        <location line="+15"/>
+        <location line="+27"/>
+        <source>nothing is recorded yet: run the simulation first</source>
+        <translation>még nincs semmi rögzítve: előbb futtassa a szimulációt</translation>
+    </message>
+    <message>
+        <location line="-17"/>
+        <source>history is read-only: return to live to write, force or release</source>
+        <translation>az előzmények csak olvashatók: íráshoz, kényszerítéshez vagy feloldáshoz térjen vissza az élő állapothoz</translation>
+    </message>
+    <message>
+        <location line="+24"/>
+        <source>that scan is no longer recorded</source>
+        <translation>az a ciklus már nincs rögzítve</translation>
+    </message>
 </context>
 <context>
     <name>rung::simulator::SimulatorSession</name>
     <message>
-        <location filename="../simulator/session.cpp" line="+141"/>
+        <location filename="../simulator/session.cpp" line="+202"/>
         <source>Line %1: %2</source>
         <translation>%1. sor: %2</translation>
     </message>
@@ -4394,12 +4999,27 @@ Létradiagram- és utasításlista-szerkesztő VPC, Vigor, CPM1 és PL110 PLC-kh
         <translation>váratlan argumentum: %1</translation>
     </message>
     <message>
-        <location line="+9"/>
-        <source>%1 needs a positive number, not &quot;%2&quot;</source>
-        <translation>%1 után pozitív szám kell, nem &quot;%2&quot;</translation>
+        <location line="+10"/>
+        <source>%1 needs a whole number from 1 to %2, not &quot;%3&quot;</source>
+        <translation>%1 után 1 és %2 közötti egész szám kell, nem „%3”</translation>
     </message>
     <message>
-        <location line="+12"/>
+        <location line="+8"/>
+        <source>--scans %1 is more than the %2 scans one trace runs (a row each); run it in parts</source>
+        <translation>a --scans %1 több, mint az egy nyomkövetésben futtatható %2 ciklus (mindegyik egy sor); futtassa részletekben</translation>
+    </message>
+    <message>
+        <location line="+4"/>
+        <source>--period %1 is more than %2 ms</source>
+        <translation>a --period %1 több mint %2 ms</translation>
+    </message>
+    <message>
+        <location line="+54"/>
+        <source>--set %1 comes after the last scan: %2 scans run, numbered 0 to %3, so it would never apply</source>
+        <translation>a --set %1 az utolsó ciklus után jönne: %2 ciklus fut, 0-tól %3-ig számozva, így sosem lépne életbe</translation>
+    </message>
+    <message>
+        <location line="-42"/>
         <source>--set needs DEV=VALUE@SCAN, not &quot;%1&quot;</source>
         <translation>--set formája DEV=VALUE@SCAN, nem &quot;%1&quot;</translation>
     </message>

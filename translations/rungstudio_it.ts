@@ -40,6 +40,84 @@
     </message>
 </context>
 <context>
+    <name>rung::app::BreakpointDialog</name>
+    <message>
+        <location filename="../app/gui/breakpoint_dialog.cpp" line="+38"/>
+        <source>Breakpoint Condition</source>
+        <translation>Condizione del punto di interruzione</translation>
+    </message>
+    <message>
+        <location line="+7"/>
+        <source>Always</source>
+        <translation>Sempre</translation>
+    </message>
+    <message>
+        <location line="+1"/>
+        <source>When the bit rises</source>
+        <translation>Quando il bit sale</translation>
+    </message>
+    <message>
+        <location line="+1"/>
+        <source>When the bit falls</source>
+        <translation>Quando il bit scende</translation>
+    </message>
+    <message>
+        <location line="+1"/>
+        <source>While the bit is ON</source>
+        <translation>Finché il bit è ON</translation>
+    </message>
+    <message>
+        <location line="+1"/>
+        <source>While the bit is OFF</source>
+        <translation>Finché il bit è OFF</translation>
+    </message>
+    <message>
+        <location line="+1"/>
+        <source>When the word compares</source>
+        <translation>Quando il confronto della word è vero</translation>
+    </message>
+    <message>
+        <location line="+1"/>
+        <source>&amp;Stop</source>
+        <translation>&amp;Fermati</translation>
+    </message>
+    <message>
+        <location line="+2"/>
+        <source>a device, e.g. Y0 or D10</source>
+        <translation>un operando, p. es. Y0 o D10</translation>
+    </message>
+    <message>
+        <location line="+1"/>
+        <source>&amp;Device</source>
+        <translation>&amp;Operando</translation>
+    </message>
+    <message>
+        <location line="+9"/>
+        <source>&amp;Compare</source>
+        <translation>&amp;Confronto</translation>
+    </message>
+    <message>
+        <location line="+37"/>
+        <source>Type the device the condition watches</source>
+        <translation>Scrivere l&apos;operando che la condizione osserva</translation>
+    </message>
+    <message>
+        <location line="+2"/>
+        <source>%1 is no device of this PLC: %2</source>
+        <translation>%1 non è un operando di questo PLC: %2</translation>
+    </message>
+    <message>
+        <location line="+5"/>
+        <source>%1 is a bit: compare a word (D, a timer&apos;s or counter&apos;s value)</source>
+        <translation>%1 è un bit: confrontare una word (D, il valore di un temporizzatore o di un contatore)</translation>
+    </message>
+    <message>
+        <location line="+4"/>
+        <source>%1 is a word: watch a bit, or compare the word</source>
+        <translation>%1 è una word: osservare un bit, o confrontare la word</translation>
+    </message>
+</context>
+<context>
     <name>rung::app::Cli</name>
     <message>
         <location filename="../app/cli/cli.cpp" line="+43"/>
@@ -164,6 +242,11 @@ Codice di uscita: 0 nessun errore, 1 il programma contiene errori, 2 errore di u
         <location filename="../app/cli/cli_language.cpp" line="+31"/>
         <source>--lang must be one of %1</source>
         <translation>--lang deve essere uno tra %1</translation>
+    </message>
+    <message>
+        <location filename="../app/cli/cli_load_program.cpp" line="+50"/>
+        <source>%1: the program cannot be listed whole</source>
+        <translation>%1: il programma non si può scrivere per intero come lista istruzioni</translation>
     </message>
 </context>
 <context>
@@ -662,18 +745,18 @@ Editor di schemi ladder e liste istruzioni per VPC, Vigor, CPM1 e PL110.</transl
     </message>
     <message>
         <location line="+22"/>
-        <location line="+218"/>
+        <location line="+219"/>
         <source>Ladder</source>
         <translation>Ladder</translation>
     </message>
     <message>
-        <location line="-217"/>
-        <location line="+218"/>
+        <location line="-218"/>
+        <location line="+219"/>
         <source>Instruction List</source>
         <translation>Lista istruzioni</translation>
     </message>
     <message>
-        <location line="-205"/>
+        <location line="-206"/>
         <source>The list as typed had errors and now shows the ladder&apos;s program; Ctrl+Z in the list brings it back</source>
         <translation>La lista digitata conteneva errori e ora mostra il programma dello schema ladder; Ctrl+Z nella lista la ripristina</translation>
     </message>
@@ -984,12 +1067,12 @@ Editor di schemi ladder e liste istruzioni per VPC, Vigor, CPM1 e PL110.</transl
         <translation>Esporta simboli</translation>
     </message>
     <message>
-        <location filename="../app/gui/main_window_simulation.cpp" line="+32"/>
+        <location filename="../app/gui/main_window_simulation.cpp" line="+36"/>
         <source>The instruction list has errors, so the ladder still shows the last program without them: correct the list (or undo) before simulating</source>
         <translation>La lista istruzioni contiene errori, quindi il ladder mostra ancora l&apos;ultimo programma senza errori: correggere la lista (o annullare) prima di simulare</translation>
     </message>
     <message>
-        <location line="+34"/>
+        <location line="+48"/>
         <source>&amp;Simulation</source>
         <translation>&amp;Simulazione</translation>
     </message>
@@ -1020,6 +1103,36 @@ Editor di schemi ladder e liste istruzioni per VPC, Vigor, CPM1 e PL110.</transl
     </message>
     <message>
         <location line="+2"/>
+        <source>Run Sc&amp;ans...</source>
+        <translation>Esegui scansio&amp;ni...</translation>
+    </message>
+    <message>
+        <location line="+4"/>
+        <source>Run Scans</source>
+        <translation>Esegui scansioni</translation>
+    </message>
+    <message>
+        <location line="+0"/>
+        <source>Scans to run:</source>
+        <translation>Scansioni da eseguire:</translation>
+    </message>
+    <message>
+        <location line="+7"/>
+        <source>R&amp;un For...</source>
+        <translation>Esegu&amp;i per...</translation>
+    </message>
+    <message>
+        <location line="+4"/>
+        <source>Run For</source>
+        <translation>Esegui per</translation>
+    </message>
+    <message>
+        <location line="+0"/>
+        <source>Simulated time to run, in seconds:</source>
+        <translation>Tempo simulato da eseguire, in secondi:</translation>
+    </message>
+    <message>
+        <location line="+7"/>
         <source>Spee&amp;d</source>
         <translation>&amp;Velocità</translation>
     </message>
@@ -1034,7 +1147,7 @@ Editor di schemi ladder e liste istruzioni per VPC, Vigor, CPM1 e PL110.</transl
         <translation>Il più &amp;veloce possibile</translation>
     </message>
     <message>
-        <location line="+7"/>
+        <location line="+9"/>
         <source>Scan Peri&amp;od</source>
         <translation>Peri&amp;odo di scansione</translation>
     </message>
@@ -1045,9 +1158,122 @@ Editor di schemi ladder e liste istruzioni per VPC, Vigor, CPM1 e PL110.</transl
         <translation>%1 ms</translation>
     </message>
     <message>
-        <location line="+8"/>
+        <location line="+10"/>
         <source>Release All &amp;Forces</source>
         <translation>Rilascia tutte le &amp;forzature</translation>
+    </message>
+    <message>
+        <location line="+17"/>
+        <source> (read-only)</source>
+        <translation> (sola lettura)</translation>
+    </message>
+    <message>
+        <location filename="../app/gui/main_window_debug.cpp" line="+38"/>
+        <location line="+130"/>
+        <source>Simulation</source>
+        <translation>Simulazione</translation>
+    </message>
+    <message>
+        <location line="-123"/>
+        <location line="+125"/>
+        <source>Scan Debugger</source>
+        <translation>Debugger della scansione</translation>
+    </message>
+    <message>
+        <location line="-105"/>
+        <source>No instruction on line %1 to stop at</source>
+        <translation>Nessuna istruzione alla riga %1 dove fermarsi</translation>
+    </message>
+    <message>
+        <location line="+12"/>
+        <source>Rung %1 is not in the instruction list: no breakpoint there</source>
+        <translation>Il segmento %1 non è nella lista istruzioni: lì non c&apos;è punto di interruzione</translation>
+    </message>
+    <message>
+        <location line="+24"/>
+        <source>Online Edit</source>
+        <translation>Modifica online</translation>
+    </message>
+    <message>
+        <location line="+3"/>
+        <source>Apply Keeping the Memory</source>
+        <translation>Applica mantenendo la memoria</translation>
+    </message>
+    <message>
+        <location line="+2"/>
+        <source>Restart from Power-On</source>
+        <translation>Riavvia dallo stato di accensione</translation>
+    </message>
+    <message>
+        <location line="+1"/>
+        <source>Stop the Simulation</source>
+        <translation>Ferma la simulazione</translation>
+    </message>
+    <message>
+        <location line="+23"/>
+        <source>S&amp;tep Instruction</source>
+        <translation>P&amp;asso di una istruzione</translation>
+    </message>
+    <message>
+        <location line="+3"/>
+        <source>F&amp;inish Scan</source>
+        <translation>Co&amp;mpleta la scansione</translation>
+    </message>
+    <message>
+        <location line="+2"/>
+        <source>Toggle &amp;Breakpoint</source>
+        <translation>Punto di interr&amp;uzione sì/no</translation>
+    </message>
+    <message>
+        <location line="+2"/>
+        <source>Breakpoint Co&amp;ndition...</source>
+        <translation>Con&amp;dizione del punto di interruzione...</translation>
+    </message>
+    <message>
+        <location line="+14"/>
+        <source>No instruction here to stop at</source>
+        <translation>Nessuna istruzione qui dove fermarsi</translation>
+    </message>
+    <message>
+        <location line="+4"/>
+        <source>Remove All Brea&amp;kpoints</source>
+        <translation>Rimuovi &amp;tutti i punti di interruzione</translation>
+    </message>
+    <message>
+        <location line="+3"/>
+        <source>Return to &amp;Live</source>
+        <translation>Torna a&amp;l vivo</translation>
+    </message>
+    <message>
+        <location line="+32"/>
+        <source>line %1</source>
+        <translation>riga %1</translation>
+    </message>
+    <message>
+        <location line="+7"/>
+        <source>rung %1</source>
+        <translation>segmento %1</translation>
+    </message>
+    <message>
+        <location line="+3"/>
+        <source>No instruction at %1 to stop at</source>
+        <translation>Nessuna istruzione in %1 dove fermarsi</translation>
+    </message>
+    <message>
+        <location line="+4"/>
+        <source>Breakpoint set at %1</source>
+        <translation>Punto di interruzione impostato: %1</translation>
+    </message>
+    <message>
+        <location line="+1"/>
+        <source>Breakpoint at %1 removed</source>
+        <translation>Punto di interruzione rimosso: %1</translation>
+    </message>
+    <message>
+        <location line="+13"/>
+        <source>Stop before line %1: %2</source>
+        <extracomment>where the breakpoint is: %1 line, %2 the instruction</extracomment>
+        <translation>Fermati prima della riga %1: %2</translation>
     </message>
 </context>
 <context>
@@ -1125,46 +1351,173 @@ Editor di schemi ladder e liste istruzioni per VPC, Vigor, CPM1 e PL110.</transl
     </message>
 </context>
 <context>
-    <name>rung::app::Simulate</name>
+    <name>rung::app::ScanDebuggerView</name>
     <message>
-        <location filename="../app/cli/cli_simulate.cpp" line="+21"/>
-        <source>usage: rungstudio-cli simulate FILE [--target T] --scans N [--period MS] [--set DEV=VALUE@SCAN]... --trace DEV[,DEV...]</source>
-        <translation>uso: rungstudio-cli simulate FILE [--target T] --scans N [--period MS] [--set DEV=VALUE@SCAN]... --trace DEV[,DEV...]</translation>
+        <location filename="../app/gui/scan_debugger_view.cpp" line="+22"/>
+        <source>ON</source>
+        <translation>ON</translation>
     </message>
     <message>
-        <location line="+20"/>
+        <location line="+0"/>
+        <source>OFF</source>
+        <translation>OFF</translation>
+    </message>
+    <message>
+        <location line="+10"/>
+        <source>%1: %2 (top)</source>
+        <extracomment>a stack entry: %1 depth (1 = bottom), %2 ON/OFF</extracomment>
+        <translation>%1: %2 (cima)</translation>
+    </message>
+    <message>
+        <location line="+1"/>
+        <source>%1: %2</source>
+        <translation>%1: %2</translation>
+    </message>
+    <message>
+        <location line="+4"/>
+        <source>(empty)</source>
+        <translation>(vuoto)</translation>
+    </message>
+    <message>
+        <location line="+100"/>
+        <source>Logic result:</source>
+        <translation>Risultato logico:</translation>
+    </message>
+    <message>
+        <location line="+1"/>
+        <source>Block stack (ANB/ORB):</source>
+        <translation>Stack dei blocchi (ANB/ORB):</translation>
+    </message>
+    <message>
+        <location line="+1"/>
+        <source>MPS stack:</source>
+        <translation>Stack MPS:</translation>
+    </message>
+    <message>
+        <location line="+1"/>
+        <source>Step Instruction</source>
+        <translation>Passo di una istruzione</translation>
+    </message>
+    <message>
+        <location line="+1"/>
+        <source>Finish Scan</source>
+        <translation>Completa la scansione</translation>
+    </message>
+    <message>
+        <location line="+1"/>
+        <source>Continue</source>
+        <translation>Continua</translation>
+    </message>
+    <message>
+        <location line="+1"/>
+        <source>Breakpoints:</source>
+        <translation>Punti di interruzione:</translation>
+    </message>
+    <message>
+        <location line="+1"/>
+        <source>Where</source>
+        <translation>Dove</translation>
+    </message>
+    <message>
+        <location line="+0"/>
+        <source>Stops</source>
+        <translation>Si ferma</translation>
+    </message>
+    <message>
+        <location line="+1"/>
+        <source>Condition...</source>
+        <translation>Condizione...</translation>
+    </message>
+    <message>
+        <location line="+1"/>
+        <source>Remove</source>
+        <translation>Rimuovi</translation>
+    </message>
+    <message>
+        <location line="+1"/>
+        <source>Remove All</source>
+        <translation>Rimuovi tutti</translation>
+    </message>
+    <message>
+        <location line="+30"/>
+        <source>Not stopped inside a scan. Step Instruction starts a scan and stops before its first instruction; a breakpoint stops a running scan.</source>
+        <translation>Non fermo dentro una scansione. Passo di una istruzione avvia una scansione e si ferma prima della sua prima istruzione; un punto di interruzione ferma una scansione in corso.</translation>
+    </message>
+    <message>
+        <location line="+3"/>
+        <source>The simulation is off.</source>
+        <translation>La simulazione è spenta.</translation>
+    </message>
+    <message>
+        <location line="+18"/>
+        <source>Stopped before step %1 (line %2, rung %3): %4</source>
+        <extracomment>%1 step, %2 line, %3 rung, %4 the instruction, e.g. &quot;OUT Y0&quot;</extracomment>
+        <translation>Fermo prima del passo %1 (riga %2, segmento %3): %4</translation>
+    </message>
+    <message>
+        <location line="+6"/>
+        <source>Stopped at the end of the program</source>
+        <translation>Fermo alla fine del programma</translation>
+    </message>
+    <message>
+        <location line="+2"/>
+        <source>A breakpoint stopped the scan.</source>
+        <translation>Un punto di interruzione ha fermato la scansione.</translation>
+    </message>
+    <message>
+        <location line="+1"/>
+        <source>Stepping one instruction at a time.</source>
+        <translation>Avanzamento di una istruzione alla volta.</translation>
+    </message>
+    <message>
+        <location line="+5"/>
+        <source>Inside an interlock (IL/MC) whose condition is OFF</source>
+        <translation>Dentro un interblocco (IL/MC) la cui condizione è OFF</translation>
+    </message>
+    <message>
+        <location line="+2"/>
+        <source>Inside a step (STL) that is not active</source>
+        <translation>Dentro un passo (STL) non attivo</translation>
+    </message>
+    <message>
+        <location line="+15"/>
+        <source>Rung %1 (no longer there)</source>
+        <translation>Segmento %1 (non esiste più)</translation>
+    </message>
+    <message>
+        <location line="+5"/>
+        <source>Rung %1, line %2: %3</source>
+        <extracomment>%1 rung, %2 line, %3 the instruction</extracomment>
+        <translation>Segmento %1, riga %2: %3</translation>
+    </message>
+</context>
+<context>
+    <name>rung::app::Simulate</name>
+    <message>
+        <location filename="../app/cli/cli_simulate.cpp" line="+22"/>
+        <source>usage: rungstudio-cli simulate FILE [--target T] [--model M] --scans N [--period MS] [--set DEV=VALUE@SCAN]... --trace DEV[,DEV...]
+FILE is a listing (.il), a ladder text (.ladder) or a project (.rung).</source>
+        <translation>uso: rungstudio-cli simulate FILE [--target T] [--model M] --scans N [--period MS] [--set OPERANDO=VALORE@SCANSIONE]... --trace OPERANDO[,OPERANDO...]
+FILE è una lista istruzioni (.il), un testo ladder (.ladder) o un progetto (.rung).</translation>
+    </message>
+    <message>
+        <location line="+30"/>
+        <source>%1 needs a value</source>
+        <translation>%1 richiede un valore</translation>
+    </message>
+    <message>
+        <location line="+13"/>
         <source>unexpected argument %1</source>
         <translation>argomento non previsto: %1</translation>
     </message>
     <message>
-        <location line="+19"/>
-        <source>%1: no target; give --target or a &quot;; target: NAME&quot; first line</source>
-        <translation>%1: famiglia PLC non specificata; usare --target oppure una prima riga &quot;; target: NAME&quot;</translation>
-    </message>
-    <message>
-        <location line="+6"/>
-        <source>unknown target %1</source>
-        <translation>famiglia PLC sconosciuta: %1</translation>
-    </message>
-    <message>
-        <location line="+14"/>
-        <location line="+7"/>
-        <source>error: %1</source>
-        <translation>errore: %1</translation>
-    </message>
-    <message>
-        <location line="-6"/>
-        <location line="+10"/>
+        <location line="+17"/>
+        <location line="+37"/>
         <source>the program does not start</source>
         <translation>il programma non si avvia</translation>
     </message>
     <message>
-        <location line="-3"/>
-        <source>warning: %1</source>
-        <translation>avviso: %1</translation>
-    </message>
-    <message>
-        <location line="+11"/>
+        <location line="+14"/>
         <source>runtime error at step %1: %2</source>
         <translation>errore di esecuzione al passo %1: %2</translation>
     </message>
@@ -1172,7 +1525,7 @@ Editor di schemi ladder e liste istruzioni per VPC, Vigor, CPM1 e PL110.</transl
 <context>
     <name>rung::app::SimulationController</name>
     <message numerus="yes">
-        <location filename="../app/gui/simulation_controller.cpp" line="+85"/>
+        <location filename="../app/gui/simulation_controller.cpp" line="+101"/>
         <source>The program has %n error(s): the simulation does not start; the Problems list shows them</source>
         <translation>
             <numerusform>Il programma ha %n errore: la simulazione non parte; l&apos;elenco Problemi lo mostra</numerusform>
@@ -1180,12 +1533,58 @@ Editor di schemi ladder e liste istruzioni per VPC, Vigor, CPM1 e PL110.</transl
         </translation>
     </message>
     <message>
-        <location line="+45"/>
+        <location line="+83"/>
+        <source>The edited program has errors: the simulation goes on with the program before the edit (stop it to simulate what is shown)</source>
+        <translation>Il programma modificato ha errori: la simulazione continua con il programma di prima della modifica (fermarla per simulare quello mostrato)</translation>
+    </message>
+    <message>
+        <location line="+17"/>
         <source>The program was edited: the simulation stopped. Run starts the edited program from power-on</source>
         <translation>Il programma è stato modificato: la simulazione si è fermata. Esegui avvia il programma modificato dallo stato di accensione</translation>
     </message>
     <message>
-        <location line="+69"/>
+        <location line="+8"/>
+        <source>Online edit: the edited program restarted from power-on</source>
+        <translation>Modifica online: il programma modificato è ripartito dallo stato di accensione</translation>
+    </message>
+    <message>
+        <location line="+13"/>
+        <source>Online edit: the edited program takes over when the stopped scan ends; the memory is kept</source>
+        <translation>Modifica online: il programma modificato subentra alla fine della scansione fermata; la memoria è mantenuta</translation>
+    </message>
+    <message>
+        <location line="+2"/>
+        <source>Online edit: the edited program runs from the next scan on; the memory is kept</source>
+        <translation>Modifica online: il programma modificato gira dalla prossima scansione; la memoria è mantenuta</translation>
+    </message>
+    <message>
+        <location line="+7"/>
+        <source>The edited program is for another memory layout: the running memory cannot be kept. Restart it from power-on, or stop the simulation?</source>
+        <translation>Il programma modificato ha un&apos;altra disposizione della memoria: la memoria in uso non si può mantenere. Riavviarlo dallo stato di accensione o fermare la simulazione?</translation>
+    </message>
+    <message>
+        <location line="+11"/>
+        <source>no longer uses %1 (their values stay as they are)</source>
+        <translation>non usa più %1 (i loro valori restano come sono)</translation>
+    </message>
+    <message>
+        <location line="+3"/>
+        <source>now uses %1 (they start from the values the memory holds)</source>
+        <translation>ora usa %1 (partono dai valori che la memoria contiene)</translation>
+    </message>
+    <message>
+        <location line="+3"/>
+        <source>The edited program %1. Apply it keeping the memory, restart it from power-on, or stop the simulation?</source>
+        <extracomment>%1 what changed, e.g. &quot;no longer uses T0 (...); now uses T5 (...)&quot;</extracomment>
+        <translation>Il programma modificato %1. Applicarlo mantenendo la memoria, riavviarlo dallo stato di accensione o fermare la simulazione?</translation>
+    </message>
+    <message>
+        <location line="+82"/>
+        <source> | the program before the edit</source>
+        <translation> | il programma di prima della modifica</translation>
+    </message>
+    <message>
+        <location line="+10"/>
         <source>Simulation off</source>
         <translation>Simulazione spenta</translation>
     </message>
@@ -1219,6 +1618,160 @@ Editor di schemi ladder e liste istruzioni per VPC, Vigor, CPM1 e PL110.</transl
         <source>%1 | %2 | %3 scans | scan %4 ms | evaluation %5 µs (%6..%7)</source>
         <extracomment>%1 run state, %2 simulated time h:mm:ss.cc, %3 scans, %4 scan period in ms, %5 %6 %7 time the last scan took to evaluate: current, minimum, maximum, in µs</extracomment>
         <translation>%1 | %2 | %3 scansioni | scansione %4 ms | valutazione %5 µs (%6..%7)</translation>
+    </message>
+    <message>
+        <location filename="../app/gui/simulation_debug.cpp" line="+96"/>
+        <source>always</source>
+        <translation>sempre</translation>
+    </message>
+    <message>
+        <location line="+2"/>
+        <source>when %1 rises</source>
+        <translation>quando %1 sale</translation>
+    </message>
+    <message>
+        <location line="+2"/>
+        <source>when %1 falls</source>
+        <translation>quando %1 scende</translation>
+    </message>
+    <message>
+        <location line="+2"/>
+        <source>while %1 is ON</source>
+        <translation>finché %1 è ON</translation>
+    </message>
+    <message>
+        <location line="+2"/>
+        <source>while %1 is OFF</source>
+        <translation>finché %1 è OFF</translation>
+    </message>
+    <message>
+        <location line="+3"/>
+        <source>when %1 %2 %3</source>
+        <extracomment>a breakpoint&apos;s condition, e.g. &quot;when D10 &gt; 100&quot;</extracomment>
+        <translation>quando %1 %2 %3</translation>
+    </message>
+    <message>
+        <location filename="../app/gui/simulation_history.cpp" line="+64"/>
+        <source>History: rebuilding...</source>
+        <translation>Cronologia: ricostruzione...</translation>
+    </message>
+    <message>
+        <location line="+6"/>
+        <source>No history: the simulation is off</source>
+        <translation>Nessuna cronologia: la simulazione è spenta</translation>
+    </message>
+    <message>
+        <location line="+3"/>
+        <source>No history yet: run the simulation</source>
+        <translation>Ancora nessuna cronologia: eseguire la simulazione</translation>
+    </message>
+    <message>
+        <location line="+2"/>
+        <source>Recorded: the last %1 of simulated time (scans %2..%3, %4 MB); at most the last hour is kept</source>
+        <extracomment>%1 h:mm:ss of simulated time, %2 %3 first and last scan, %4 memory in MB</extracomment>
+        <translation>Registrato: gli ultimi %1 di tempo simulato (scansioni %2..%3, %4 MB); si conserva al più l&apos;ultima ora</translation>
+    </message>
+</context>
+<context>
+    <name>rung::app::SimulationPanel</name>
+    <message>
+        <location filename="../app/gui/simulation_panel.cpp" line="+154"/>
+        <source>Run</source>
+        <translation>Esecuzione</translation>
+    </message>
+    <message>
+        <location line="+1"/>
+        <source>Scans:</source>
+        <translation>Scansioni:</translation>
+    </message>
+    <message>
+        <location line="+1"/>
+        <source>Run Scans</source>
+        <translation>Esegui scansioni</translation>
+    </message>
+    <message>
+        <location line="+1"/>
+        <source>Simulated time:</source>
+        <translation>Tempo simulato:</translation>
+    </message>
+    <message>
+        <location line="+2"/>
+        <source> s</source>
+        <extracomment>seconds of simulated time</extracomment>
+        <translation> s</translation>
+    </message>
+    <message>
+        <location line="+1"/>
+        <source>Run For</source>
+        <translation>Esegui per</translation>
+    </message>
+    <message>
+        <location line="+1"/>
+        <source>Speed:</source>
+        <translation>Velocità:</translation>
+    </message>
+    <message>
+        <location line="+3"/>
+        <source>x%1 real time</source>
+        <translation>x%1 tempo reale</translation>
+    </message>
+    <message>
+        <location line="+0"/>
+        <source>As fast as possible</source>
+        <translation>Il più veloce possibile</translation>
+    </message>
+    <message>
+        <location line="+2"/>
+        <source>Scan period:</source>
+        <translation>Periodo di scansione:</translation>
+    </message>
+    <message>
+        <location line="+2"/>
+        <source> ms</source>
+        <extracomment>milliseconds</extracomment>
+        <translation> ms</translation>
+    </message>
+    <message>
+        <location line="+1"/>
+        <source>Power Cycle (retentive areas kept)</source>
+        <translation>Spegni e riaccendi (le aree ritentive restano)</translation>
+    </message>
+    <message>
+        <location line="+1"/>
+        <source>Statistics</source>
+        <translation>Statistiche</translation>
+    </message>
+    <message>
+        <location line="+1"/>
+        <source>History</source>
+        <translation>Cronologia</translation>
+    </message>
+    <message>
+        <location line="+1"/>
+        <source>Show scan:</source>
+        <translation>Mostra scansione:</translation>
+    </message>
+    <message>
+        <location line="+1"/>
+        <source>Return to Live</source>
+        <translation>Torna al vivo</translation>
+    </message>
+    <message>
+        <location line="+23"/>
+        <source>The simulation is off: Run, Single Scan or Run Scans starts it.</source>
+        <translation>La simulazione è spenta: Esegui, Singola scansione o Esegui scansioni la avviano.</translation>
+    </message>
+    <message>
+        <location line="+5"/>
+        <source>Simulated time: %1
+Scans: %2
+Scan period: %3 ms
+Evaluation: %4 µs (%5..%6)</source>
+        <extracomment>the statistics block: simulated time, scans, the scan period, the evaluation time of the last scan on this computer (current, minimum..maximum)</extracomment>
+        <translation>Tempo simulato: %1
+Scansioni: %2
+Periodo di scansione: %3 ms
+Valutazione: %4 µs (%5..%6)</translation>
     </message>
 </context>
 <context>
@@ -1842,7 +2395,7 @@ Editor di schemi ladder e liste istruzioni per VPC, Vigor, CPM1 e PL110.</transl
 <context>
     <name>rung::editor::IlEditor</name>
     <message>
-        <location filename="../editor/il_editor.cpp" line="+247"/>
+        <location filename="../editor/il_editor.cpp" line="+272"/>
         <source>Instruction list</source>
         <translation>Lista istruzioni</translation>
     </message>
@@ -1850,7 +2403,7 @@ Editor di schemi ladder e liste istruzioni per VPC, Vigor, CPM1 e PL110.</transl
 <context>
     <name>rung::editor::IlLexer</name>
     <message>
-        <location line="-187"/>
+        <location line="-206"/>
         <source>Default</source>
         <translation>Predefinito</translation>
     </message>
@@ -1903,7 +2456,7 @@ Editor di schemi ladder e liste istruzioni per VPC, Vigor, CPM1 e PL110.</transl
         <translation>Modifica commento del segmento</translation>
     </message>
     <message>
-        <location line="+167"/>
+        <location line="+206"/>
         <source>Type one instruction, for example &quot;%1 X0&quot;</source>
         <translation>Digitare una sola istruzione, ad esempio &quot;%1 X0&quot;</translation>
     </message>
@@ -1925,7 +2478,7 @@ Editor di schemi ladder e liste istruzioni per VPC, Vigor, CPM1 e PL110.</transl
     </message>
     <message>
         <location line="+22"/>
-        <location filename="../editor/ladder_view_mouse.cpp" line="+135"/>
+        <location filename="../editor/ladder_view_mouse.cpp" line="+143"/>
         <source>Draw a wire</source>
         <translation>Disegna collegamento orizzontale</translation>
     </message>
@@ -4214,7 +4767,12 @@ Editor di schemi ladder e liste istruzioni per VPC, Vigor, CPM1 e PL110.</transl
         <translation>(nessun operando)</translation>
     </message>
     <message>
-        <location line="+63"/>
+        <location line="+56"/>
+        <source>the edited program is for another memory layout (another PLC): it cannot take over the running image</source>
+        <translation>il programma modificato ha un&apos;altra disposizione della memoria (un altro PLC): non può subentrare all&apos;immagine in uso</translation>
+    </message>
+    <message>
+        <location line="+17"/>
         <source>%1 has no set value to write</source>
         <translation>%1 non ha un valore di preset da scrivere</translation>
     </message>
@@ -4370,7 +4928,7 @@ Editor di schemi ladder e liste istruzioni per VPC, Vigor, CPM1 e PL110.</transl
         <translation>il risultato %1 è fuori da 0..9999; viene scritto %2</translation>
     </message>
     <message>
-        <location line="+353"/>
+        <location line="+383"/>
         <location line="+56"/>
         <source>division by zero; the destination is unchanged</source>
         <translation>divisione per zero; la destinazione resta invariata</translation>
@@ -4380,11 +4938,58 @@ Editor di schemi ladder e liste istruzioni per VPC, Vigor, CPM1 e PL110.</transl
         <source>MOVIND index %1 is outside 0..%2; nothing is written</source>
         <translation>l&apos;indice %1 di MOVIND è fuori da 0..%2; non viene scritto nulla</translation>
     </message>
+    <message>
+        <location filename="../simulator/engine_debug.cpp" line="+60"/>
+        <location line="+11"/>
+        <source>the program has no instruction %1 to stop at</source>
+        <translation>il programma non ha un&apos;istruzione %1 dove fermarsi</translation>
+    </message>
+    <message>
+        <location line="+8"/>
+        <source>%1 is no word to compare</source>
+        <translation>%1 non è una word da confrontare</translation>
+    </message>
+    <message>
+        <location line="+3"/>
+        <location line="+10"/>
+        <source>(no device)</source>
+        <translation>(nessun operando)</translation>
+    </message>
+    <message>
+        <location line="-3"/>
+        <source>%1 is no bit to watch</source>
+        <translation>%1 non è un bit da osservare</translation>
+    </message>
+</context>
+<context>
+    <name>rung::simulator::HistorySource</name>
+    <message>
+        <location filename="../simulator/history_source.cpp" line="+43"/>
+        <source>History: scan %1 (%2)</source>
+        <extracomment>the window&apos;s mark while it shows a past scan; %1 the scan, %2 its time h:mm:ss.cc</extracomment>
+        <translation>Cronologia: scansione %1 (%2)</translation>
+    </message>
+    <message>
+        <location line="+15"/>
+        <location line="+27"/>
+        <source>nothing is recorded yet: run the simulation first</source>
+        <translation>non è ancora registrato nulla: eseguire prima la simulazione</translation>
+    </message>
+    <message>
+        <location line="-17"/>
+        <source>history is read-only: return to live to write, force or release</source>
+        <translation>la cronologia è di sola lettura: tornare al vivo per scrivere, forzare o rilasciare</translation>
+    </message>
+    <message>
+        <location line="+24"/>
+        <source>that scan is no longer recorded</source>
+        <translation>quella scansione non è più registrata</translation>
+    </message>
 </context>
 <context>
     <name>rung::simulator::SimulatorSession</name>
     <message>
-        <location filename="../simulator/session.cpp" line="+141"/>
+        <location filename="../simulator/session.cpp" line="+202"/>
         <source>Line %1: %2</source>
         <translation>Riga %1: %2</translation>
     </message>
@@ -4407,12 +5012,27 @@ Editor di schemi ladder e liste istruzioni per VPC, Vigor, CPM1 e PL110.</transl
         <translation>argomento inatteso %1</translation>
     </message>
     <message>
-        <location line="+9"/>
-        <source>%1 needs a positive number, not &quot;%2&quot;</source>
-        <translation>%1 richiede un numero positivo, non &quot;%2&quot;</translation>
+        <location line="+10"/>
+        <source>%1 needs a whole number from 1 to %2, not &quot;%3&quot;</source>
+        <translation>%1 richiede un numero intero da 1 a %2, non &quot;%3&quot;</translation>
     </message>
     <message>
-        <location line="+12"/>
+        <location line="+8"/>
+        <source>--scans %1 is more than the %2 scans one trace runs (a row each); run it in parts</source>
+        <translation>--scans %1 supera le %2 scansioni che una traccia esegue (una riga ciascuna); eseguirla a parti</translation>
+    </message>
+    <message>
+        <location line="+4"/>
+        <source>--period %1 is more than %2 ms</source>
+        <translation>--period %1 supera %2 ms</translation>
+    </message>
+    <message>
+        <location line="+54"/>
+        <source>--set %1 comes after the last scan: %2 scans run, numbered 0 to %3, so it would never apply</source>
+        <translation>--set %1 viene dopo l&apos;ultima scansione: si eseguono %2 scansioni, numerate da 0 a %3, quindi non si applicherebbe mai</translation>
+    </message>
+    <message>
+        <location line="-42"/>
         <source>--set needs DEV=VALUE@SCAN, not &quot;%1&quot;</source>
         <translation>--set richiede DEV=VALUE@SCAN, non &quot;%1&quot;</translation>
     </message>
