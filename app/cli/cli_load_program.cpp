@@ -1,5 +1,8 @@
 #include "cli_load_program.h"
 
+#include "model/checks/checks.h"
+#include "simulator/compiler.h"
+
 #include <QCoreApplication>
 
 namespace rung::app {
@@ -7,50 +10,91 @@ namespace rung::app {
 namespace {
 
 struct Tr {
-    Q_DECLARE_TR_FUNCTIONS(rung::app::Cli)
+    Q_DECLARE_TR_FUNCTIONS(rung::app::Simulate)
 };
+
+// The compiler's findings about a drawing's instructions (numbered by their index + 1 below)
+// name the rung, row and cell, as `check` does.
+model::Diagnostic onLadder(model::Diagnostic d, const std::vector<model::CellOrigin> &origin) {
+    const int k = d.location.line - 1;
+    if (k < 0 || static_cast<std::size_t>(k) >= origin.size())
+        return d;
+    const model::CellOrigin &o = origin[static_cast<std::size_t>(k)];
+    d.location = {};
+    d.location.rung = o.rung;
+    d.location.row = std::max(0, o.row);
+    d.location.cell = std::max(0, o.column);
+    return d;
+}
 
 } // namespace
 
-LoadStatus loadProgram(const QString &file, const QString &target, const QString &model,
-                       LoadedProgram *program, QStringList *errors) {
-    errors->clear();
-    CommonOptions options;
-    options.file = file;
-    options.target = target;
-    options.model = model;
+int loadProgram(const ProgramOptions &options, LoadedProgram *loaded, QTextStream &err) {
+    CommonOptions common;
+    common.file = options.file;
+    common.target = options.target;
+    common.model = options.model;
     Input input;
     QString error;
-    if (!loadInput(options, &input, &error)) {
-        errors->append(error);
-        return LoadStatus::IoError;
+    if (!loadInput(common, &input, &error)) {
+        err << error << '\n';
+        return 2;
     }
-    program->file = file;
-    program->kind = input.kind;
-    program->target = input.target;
-    program->model = input.model;
-    program->list = input.list;
-    program->ladder = input.ladder;
-    if (input.kind != InputKind::Listing)
-        program->origin = model::ladderToList(input.ladder).origin;
-    // What does not read, or what a ladder holds that its listing cannot (a rung that would
-    // then not run): the same lines `check` prints.
-    for (const model::Diagnostic &d : input.problems)
-        if (d.severity == model::Severity::Error)
-            errors->append(formatDiagnostic(file, d));
+    // A project whose newest work is an instruction list with errors would run its older
+    // rungs without saying so: it does not start.
     QString notice;
     std::vector<model::Diagnostic> typed;
     if (pendingListing(input, &notice, &typed)) {
         for (const model::Diagnostic &d : typed)
-            errors->append(formatDiagnostic(pendingLocation(file), d));
-        errors->append(notice);
+            err << formatDiagnostic(pendingLocation(input.file), d) << '\n';
+        err << notice << '\n' << Tr::tr("the program does not start") << '\n';
+        return 1;
     }
-    if (!errors->isEmpty() || !input.listValid) {
-        if (errors->isEmpty()) // nothing said why: say it plainly rather than run less
-            errors->append(Tr::tr("%1: the program cannot be listed whole").arg(file));
-        return LoadStatus::ProgramErrors;
+    if (!input.listValid) {
+        for (const model::Diagnostic &d : input.problems)
+            if (d.severity == model::Severity::Error)
+                err << formatDiagnostic(input.file, d) << '\n';
+        err << Tr::tr("the program does not start") << '\n';
+        return 1;
     }
-    return LoadStatus::Ok;
+    model::CheckOptions checks;
+    checks.model = input.model;
+    simulator::CompileResult compiled;
+    std::vector<model::CellOrigin> origin;
+    if (input.kind == InputKind::Listing) {
+        checks.source = &input.text;
+        compiled = simulator::prepareProgram(input.list, checks);
+        for (const model::Diagnostic &d : compiled.diagnostics)
+            err << formatDiagnostic(input.file, d) << '\n';
+    } else {
+        // The drawing's checks (they name rungs and cells), then the compiler with each
+        // instruction's index as its line, so that its findings find their cells too.
+        const model::ToListingResult listing = model::ladderToList(input.project.program);
+        origin = listing.origin;
+        for (const model::Diagnostic &d :
+             model::checkLadder(input.project.program, listing, checks))
+            if (d.severity == model::Severity::Error)
+                compiled.diagnostics.push_back(d);
+        if (compiled.diagnostics.empty()) {
+            model::InstructionList numbered = listing.list;
+            for (std::size_t k = 0; k < numbered.instructions.size(); ++k) {
+                numbered.instructions[k].line = static_cast<int>(k) + 1;
+                numbered.instructions[k].column = 1;
+            }
+            compiled = simulator::compileProgram(numbered);
+        }
+        for (const model::Diagnostic &d : compiled.diagnostics)
+            err << formatDiagnostic(input.file, onLadder(d, origin)) << '\n';
+    }
+    if (!compiled.ok()) {
+        err << Tr::tr("the program does not start") << '\n';
+        return 1;
+    }
+    loaded->program = compiled.program;
+    loaded->target = input.target;
+    loaded->kind = input.kind;
+    loaded->origin = std::move(origin);
+    return 0;
 }
 
 } // namespace rung::app

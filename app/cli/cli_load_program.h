@@ -1,44 +1,42 @@
 #pragma once
 
-// A program to run, from what the IDE saves and draws: a listing (.il, any other extension),
-// a ladder text (.ladder) or a project (.rung), read as `check` reads them (cli_common.h).
-// The `simulate` command runs what this loads; the virtual PLC (`serve`) can load the same.
+// A program ready to run, from FILE as a listing (.il), a ladder text (.ladder) or a project
+// (.rung): what a command that runs a program (serve, and simulate) does first. The file is
+// read as every command reads it (cli_common.h: loadInput), then prepared as starting a
+// simulation does (the PLC's checks, then the compiler). A ladder text or a project is
+// checked as `check` checks it (model::checkLadder): a finding names its rung and cell.
 
 #include "cli_common.h"
 
 #include "model/convert/convert.h"
-#include "model/listing/il.h"
+#include "simulator/program.h"
 
 #include <QString>
-#include <QStringList>
+#include <QTextStream>
+
+#include <memory>
 
 namespace rung::app {
 
-struct LoadedProgram {
+struct ProgramOptions {
     QString file;
-    InputKind kind = InputKind::Listing;
+    QString target; // --target; empty: from the file
+    QString model;  // --model; empty: the file's or the family's default
+};
+
+struct LoadedProgram {
+    std::shared_ptr<const simulator::Program> program;
     const model::Target *target = nullptr;
-    const model::ModelVariant *model = nullptr;
-    model::InstructionList list; // the listing (a ladder or a project: its canonical listing)
-    model::LadderProgram ladder; // a ladder text's or project's rungs (a listing: drawn from it)
-    // A ladder or a project: the cell of each instruction of `list`, so a finding about an
-    // instruction can say its rung (the file has no listing lines).
+    InputKind kind = InputKind::Listing;
+    // A ladder text or a project: the cell of each instruction the program runs (parallel to
+    // its steps' instruction indices), so a runtime error can name its rung. Empty for a
+    // listing, whose instructions carry their lines.
     std::vector<model::CellOrigin> origin;
 };
 
-enum class LoadStatus {
-    Ok,
-    ProgramErrors, // the file reads, but what it holds cannot run: exit 1
-    IoError,       // usage or I/O: exit 2
-};
-
-// Loads FILE for the target (`--target`, else the file's own: a "; target:" line, the
-// LADDER line, the project's) and model. On ProgramErrors `errors` holds one line per
-// problem as `check` prints them (FILE:LINE:COL or FILE:rung R:row:col, the code): the
-// syntax errors of a listing or a ladder text, the rungs a ladder cannot list (they would
-// not run), and a project's list typed with errors (pendingListing: its newest work is not in
-// its program). On IoError `errors` holds the one reason.
-LoadStatus loadProgram(const QString &file, const QString &target, const QString &model,
-                       LoadedProgram *program, QStringList *errors);
+// 0 with *loaded set; 1 when the program does not start (its errors, and why, are written to
+// err as "FILE:LINE:COL: error: ...", or "FILE:rung R:ROW:COL: error: ..." for a ladder text or
+// a project); 2 for a usage or I/O error (said on err).
+int loadProgram(const ProgramOptions &options, LoadedProgram *loaded, QTextStream &err);
 
 } // namespace rung::app
