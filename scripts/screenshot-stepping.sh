@@ -1,7 +1,8 @@
 #!/usr/bin/env bash
 # Pictures stepping inside a scan, as a user gets there with the keys: the traffic light side
-# by side, run for a few seconds, a breakpoint on the last rung (Ctrl+B), stopped there, two
-# instructions stepped (Ctrl+F12), the Scan Debugger showing the logic result and the stacks.
+# by side, run for a few seconds, a breakpoint on the ladder cursor's rung (rung 1, Ctrl+B),
+# stopped there, two instructions stepped (Ctrl+F12), the Scan Debugger showing the logic
+# result and the stacks.
 #   bash scripts/screenshot-stepping.sh [en|hu|it] [OUT.png]
 # Needs Xvfb, xdotool and ImageMagick's import (scripts/install-deps.sh).
 set -euo pipefail
@@ -33,12 +34,9 @@ xdotool windowfocus --sync "$window" 2>/dev/null || xdotool windowfocus "$window
 key() { xdotool key --window "$window" --delay 120 "$@"; sleep 0.4; }
 key F10            # Run: the lights start
 sleep 3
-xdotool key --window "$window" --repeat 60 --delay 20 Down # the ladder's last rung (END) ...
-sleep 0.5
-key Up             # ... the rung before it: LD M2 / OR M3 / OUT Y2
-key ctrl+b         # a breakpoint there: the next scan stops before LD M2
+key ctrl+b         # a breakpoint on rung 1: the next scan stops before its LD M9002
 sleep 1
-key ctrl+F12 ctrl+F12 # LD M2, OR M3 run: stopped before OUT Y2
+key ctrl+F12 ctrl+F12 # LD M9002, SET S0 run: stopped before STL S0
 sleep 1.5
 import -window root "$out"
 echo "Saved $out"
