@@ -21,6 +21,12 @@ namespace {
 
 constexpr int kErrorMarker = 1;
 constexpr int kWarningMarker = 2;
+// Simulation: a breakpoint (a conditional one), the line a stopped scan is at (an arrow in
+// the margin and the line's background).
+constexpr int kBreakpointMarker = 3;
+constexpr int kConditionalMarker = 4;
+constexpr int kStoppedMarker = 5;
+constexpr int kStoppedLineMarker = 6;
 constexpr int kDeviceList = 1;
 
 bool isNumber(const QString &word) {
@@ -227,7 +233,26 @@ IlEditor::IlEditor(const model::Target &target, QWidget *parent)
     setMarginWidth(0, QStringLiteral("00000"));
     setMarginType(1, QsciScintilla::SymbolMargin);
     setMarginWidth(1, 14);
-    setMarginMarkerMask(1, (1 << kErrorMarker) | (1 << kWarningMarker));
+    setMarginMarkerMask(1, (1 << kErrorMarker) | (1 << kWarningMarker) | (1 << kBreakpointMarker) |
+                               (1 << kConditionalMarker) | (1 << kStoppedMarker));
+    // A click in this margin sets or clears a breakpoint on the line (as in CODESYS).
+    setMarginSensitivity(1, true);
+    connect(this, &QsciScintilla::marginClicked, this,
+            [this](int margin, int line, Qt::KeyboardModifiers) {
+                if (margin == 1)
+                    emit breakpointToggleRequested(line + 1);
+            });
+    markerDefine(QsciScintilla::Circle, kBreakpointMarker);
+    setMarkerBackgroundColor(QColor(0xc6, 0x28, 0x28), kBreakpointMarker);
+    setMarkerForegroundColor(QColor(0xc6, 0x28, 0x28), kBreakpointMarker);
+    markerDefine(QsciScintilla::CircledPlus, kConditionalMarker);
+    setMarkerBackgroundColor(QColor(0xc6, 0x28, 0x28), kConditionalMarker);
+    setMarkerForegroundColor(Qt::white, kConditionalMarker);
+    markerDefine(QsciScintilla::RightArrow, kStoppedMarker);
+    setMarkerBackgroundColor(QColor(0xe6, 0x8a, 0x00), kStoppedMarker);
+    setMarkerForegroundColor(QColor(0x80, 0x4c, 0x00), kStoppedMarker);
+    markerDefine(QsciScintilla::Background, kStoppedLineMarker);
+    setMarkerBackgroundColor(QColor(0xff, 0xe8, 0xb0), kStoppedLineMarker);
     markerDefine(QsciScintilla::Circle, kErrorMarker);
     setMarkerBackgroundColor(QColor(0xd9, 0x3f, 0x3f), kErrorMarker);
     markerDefine(QsciScintilla::Circle, kWarningMarker);
@@ -474,6 +499,33 @@ void IlEditor::setStepNumbers(const std::vector<int> &stepOfLine) {
             line, step >= 0 ? QStringLiteral("%1").arg(step, 4, 10, QLatin1Char('0')) : QString(),
             IlLexer::StepNumber);
     }
+}
+
+void IlEditor::setBreakpointLines(const std::map<int, bool> &lines) {
+    markerDeleteAll(kBreakpointMarker);
+    markerDeleteAll(kConditionalMarker);
+    for (const auto &[line, conditional] : lines)
+        if (line >= 1 && line <= this->lines())
+            markerAdd(line - 1, conditional ? kConditionalMarker : kBreakpointMarker);
+}
+
+std::vector<int> IlEditor::breakpointLines() const {
+    std::vector<int> lines;
+    const unsigned mask = (1u << kBreakpointMarker) | (1u << kConditionalMarker);
+    for (int line = markerFindNext(0, mask); line >= 0; line = markerFindNext(line + 1, mask))
+        lines.push_back(line + 1);
+    return lines;
+}
+
+void IlEditor::setStoppedLine(int line) {
+    markerDeleteAll(kStoppedMarker);
+    markerDeleteAll(kStoppedLineMarker);
+    m_stoppedLine = line >= 1 && line <= lines() ? line : 0;
+    if (m_stoppedLine == 0)
+        return;
+    markerAdd(line - 1, kStoppedMarker);
+    markerAdd(line - 1, kStoppedLineMarker);
+    ensureLineVisible(line - 1);
 }
 
 void IlEditor::goToLine(int line) {

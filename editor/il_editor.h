@@ -12,6 +12,7 @@
 
 #include <functional>
 #include <map>
+#include <vector>
 
 namespace rung::editor {
 
@@ -59,6 +60,12 @@ public:
     // How many characters of the annotations' font fit across the view.
     int noteColumns() const;
     void goToLine(int line); // 1-based
+    // Simulation: breakpoint dots in the margin (line 1-based -> conditional), and the line
+    // a stopped scan is at (0: none), with an arrow and a highlighted line.
+    void setBreakpointLines(const std::map<int, bool> &lines);
+    std::vector<int> breakpointLines() const;
+    void setStoppedLine(int line);
+    int stoppedLine() const { return m_stoppedLine; }
     // The text of a line without its line break (0-based, as QScintilla counts).
     QString lineText(int line) const;
     // Replaces lines first.. (0-based) when they still read `expected`, as one step of the
@@ -78,6 +85,8 @@ public:
 
 signals:
     void listingEdited();
+    // A click in the markers' margin (1-based line).
+    void breakpointToggleRequested(int line);
 
 protected:
     void resizeEvent(QResizeEvent *event) override;
@@ -94,6 +103,7 @@ private:
     std::function<QStringList()> m_devices;
     std::map<int, QStringList> m_notes; // the diagnostics' messages by line, unwrapped
     int m_notesWrappedAt = 0;           // the columns they were last wrapped to
+    int m_stoppedLine = 0;
 };
 
 } // namespace rung::editor

@@ -29,6 +29,8 @@ const QColor kDim(0x6b, 0x72, 0x80);
 const QColor kCursor(0x2f, 0x7d, 0xe1);
 const QColor kError(0xd9, 0x3f, 0x3f);
 const QColor kWarning(0xe0, 0x9b, 0x1a);
+const QColor kBreakpoint(0xc6, 0x28, 0x28);
+const QColor kStopped(0xe6, 0x8a, 0x00);
 
 // How far a box stands in from the output column's left edge (its input stubs).
 double boxInset(const LadderMetrics &m) {
@@ -449,7 +451,44 @@ void LadderPainter::paintRung(QPainter &p, QPointF origin, int index,
         p.setBrush(Qt::NoBrush);
         p.drawRect(cellRect(rung, d.cursorRow, d.cursorColumn).adjusted(1, 1, -1, -1));
     }
+    paintDebug(p, rung, d, commentH);
     p.restore();
+}
+
+// A breakpoint is a dot left of the rung number (a ring when conditional); a stopped scan an
+// arrow there and a thick dashed frame round the element it stops before: shape, not colour
+// alone, so it reads in print and for colour-blind users.
+void LadderPainter::paintDebug(QPainter &p, const model::Rung &rung, const RungDecorations &d,
+                               double commentH) const {
+    const double r = std::max(3.0, m_m.rowHeight * 0.1);
+    const QPointF dot(r + 8, commentH + m_m.rowHeight * 0.25); // clear of the error bar
+    if (d.breakpoint != RungDecorations::Breakpoint::None) {
+        p.setPen(QPen(kBreakpoint, 1.5));
+        p.setBrush(d.breakpoint == RungDecorations::Breakpoint::Plain ? QBrush(kBreakpoint)
+                                                                      : QBrush(Qt::white));
+        p.drawEllipse(dot, r, r);
+        if (d.breakpoint == RungDecorations::Breakpoint::Conditional)
+            p.drawEllipse(dot, r * 0.35, r * 0.35);
+    }
+    if (!d.stopped)
+        return;
+    // Below the breakpoint's dot, left of the step address.
+    const double y = commentH + m_m.rowHeight * 0.62;
+    const QPointF tip(2 * r + 8, y);
+    const QPointF arrow[3] = {tip + QPointF(-2 * r, -r), tip, tip + QPointF(-2 * r, r)};
+    p.setPen(QPen(kStopped.darker(130), 1));
+    p.setBrush(kStopped);
+    p.drawPolygon(arrow, 3);
+    QPen frame(kStopped.darker(120), 3, Qt::DashLine);
+    p.setPen(frame);
+    p.setBrush(Qt::NoBrush);
+    if (d.stoppedAt.first >= 0)
+        p.drawRect(cellRect(rung, d.stoppedAt.first, d.stoppedAt.second).adjusted(2, 2, -2, -2));
+    else
+        p.drawRect(QRectF(m_m.gutter, commentH,
+                          m_m.width() - m_m.gutter - LadderMetrics::kRightMargin,
+                          rung.rows * m_m.rowHeight)
+                       .adjusted(2, 2, -2, -2));
 }
 
 } // namespace rung::editor

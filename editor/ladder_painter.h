@@ -56,6 +56,13 @@ struct RungDecorations {
     bool hasError = false;
     bool hasWarning = false;
     int firstStep = -1;
+    // Simulation: a breakpoint on the rung (a filled dot in the gutter; conditional: a ring),
+    // and where a stopped scan is: the element (row, column) it stops before, or the rung
+    // only (-1, -1) for ANB, ORB, MPS..., drawn with an arrow in the gutter.
+    enum class Breakpoint : std::uint8_t { None, Plain, Conditional };
+    Breakpoint breakpoint = Breakpoint::None;
+    bool stopped = false;
+    std::pair<int, int> stoppedAt{-1, -1};
 };
 
 class LadderPainter {
@@ -78,6 +85,8 @@ private:
     void paintContact(QPainter &p, const QRectF &cell, const model::Contact &contact) const;
     void paintContinuation(QPainter &p, QPointF at, int mark, int row) const;
     void paintOutput(QPainter &p, const QRectF &area, const model::Instruction &ins) const;
+    void paintDebug(QPainter &p, const model::Rung &rung, const RungDecorations &d,
+                    double commentH) const;
     QString deviceLabel(const model::Operand &operand) const;
     QString symbolLabel(const model::Operand &operand) const;
     QString primaryLabel(const model::Operand &operand) const;

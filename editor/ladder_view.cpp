@@ -262,6 +262,13 @@ void LadderView::paintEvent(QPaintEvent *) {
                 first < listing.rungFirst[static_cast<std::size_t>(i) + 1])
                 d.firstStep = listing.list.instructions[static_cast<std::size_t>(first)].step;
         }
+        if (const auto b = m_breakpoints.find(i); b != m_breakpoints.end())
+            d.breakpoint = b->second ? RungDecorations::Breakpoint::Conditional
+                                     : RungDecorations::Breakpoint::Plain;
+        if (m_stoppedAt.rung == i) {
+            d.stopped = true;
+            d.stoppedAt = {m_stoppedAt.row, m_stoppedAt.column};
+        }
         for (auto [at, end] = findings.equal_range(i); at != end; ++at) {
             const model::Diagnostic &diag = *at->second;
             if (diag.severity == model::Severity::Error)
@@ -274,6 +281,38 @@ void LadderView::paintEvent(QPaintEvent *) {
         }
         painter.paintRung(p, QPointF(-horizontalScrollBar()->value(), y - top), i, d);
     }
+}
+
+void LadderView::setBreakpointRungs(const std::map<int, bool> &rungs) {
+    if (rungs == m_breakpoints)
+        return;
+    m_breakpoints = rungs;
+    viewport()->update();
+}
+
+void LadderView::setStoppedAt(const CellCursor &at) {
+    if (at == m_stoppedAt)
+        return;
+    m_stoppedAt = at;
+    if (at.rung >= 0 && at.rung < static_cast<int>(m_top.size()) - 1) {
+        // Bring the stopped rung into view, as a debugger shows the current line, and the
+        // element it stops before (an output may stand right of a narrow view).
+        const double top = m_top[static_cast<std::size_t>(at.rung)];
+        const double bottom = m_top[static_cast<std::size_t>(at.rung) + 1];
+        const int view = verticalScrollBar()->value();
+        if (top < view || bottom > view + viewport()->height())
+            verticalScrollBar()->setValue(static_cast<int>(top));
+        if (at.row >= 0) {
+            const QRect cell = cellRectOnScreen({at.rung, at.row, at.column});
+            if (cell.right() > viewport()->width() || cell.left() < 0)
+                horizontalScrollBar()->setValue(horizontalScrollBar()->value() + cell.left() -
+                                                std::max(0, viewport()->width() - cell.width()) /
+                                                    2);
+        } else {
+            horizontalScrollBar()->setValue(0);
+        }
+    }
+    viewport()->update();
 }
 
 QString LadderView::mnemonicFor(model::Op op, model::ContactMode mode) const {

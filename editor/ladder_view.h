@@ -14,6 +14,8 @@
 #include <QKeySequence>
 #include <QPointer>
 
+#include <map>
+
 class QLabel;
 class QLineEdit;
 
@@ -104,6 +106,13 @@ public:
     void armTool(const QKeySequence &key);
     QKeySequence armedTool() const { return m_tool; }
 
+    // Simulation: the rungs with a breakpoint (-> conditional), and where a stopped scan is
+    // (rung -1: nowhere; row -1: the rung as a whole).
+    void setBreakpointRungs(const std::map<int, bool> &rungs);
+    const std::map<int, bool> &breakpointRungs() const { return m_breakpoints; }
+    void setStoppedAt(const CellCursor &at);
+    CellCursor stoppedAt() const { return m_stoppedAt; }
+
     // The rung geometry, for navigation and tests.
     QRect cellRectOnScreen(const CellCursor &cell) const;
 
@@ -112,6 +121,8 @@ signals:
     void message(const QString &text);
     void fitWidthChanged(bool on);
     void toolArmed(const QKeySequence &key); // empty: the select tool
+    // A click on the left of a rung's gutter: set or clear a breakpoint there.
+    void breakpointToggleRequested(int rung);
 
 protected:
     void paintEvent(QPaintEvent *event) override;
@@ -167,6 +178,8 @@ private:
     std::vector<double> m_top; // y of each rung at zoom 1, plus the total height at the end
     QLineEdit *m_editor = nullptr;
     QLabel *m_notice = nullptr;
+    std::map<int, bool> m_breakpoints;
+    CellCursor m_stoppedAt{-1, -1, -1};
 };
 
 } // namespace rung::editor

@@ -67,6 +67,14 @@ void LadderView::mousePressEvent(QMouseEvent *event) {
     if (cell.rung < 0)
         return;
     m_editor->hide();
+    // The left of the gutter, where the breakpoint dot is drawn, sets or clears one on the
+    // rung (as a click beside a line does in CODESYS and the list pane).
+    if (event->button() == Qt::LeftButton && m_tool.isEmpty() &&
+        event->position().x() + horizontalScrollBar()->value() < metrics().gutter * 0.4) {
+        setCursor({cell.rung, 0, 0});
+        emit breakpointToggleRequested(cell.rung);
+        return;
+    }
     if (!m_tool.isEmpty() && event->button() == Qt::LeftButton) {
         clearSelection();
         m_dragFrom = {-1, 0, 0};

@@ -30,7 +30,8 @@ void CommandInbox::post(EngineCommand command) {
     m_pending.store(true, std::memory_order_release);
 }
 
-CommandInbox::Applied CommandInbox::apply(Engine &engine) {
+CommandInbox::Applied
+CommandInbox::apply(Engine &engine, const std::function<void(const EngineCommand &)> &before) {
     {
         std::lock_guard lock(m_mutex);
         m_taken.swap(m_queue);
@@ -39,6 +40,8 @@ CommandInbox::Applied CommandInbox::apply(Engine &engine) {
     Applied applied;
     applied.commands = static_cast<int>(m_taken.size());
     for (const EngineCommand &c : m_taken) {
+        if (before)
+            before(c);
         QString error;
         const bool ok = applyCommand(engine, c, &error);
         applied.reset = applied.reset || std::holds_alternative<Reset>(c.what);
@@ -64,6 +67,13 @@ bool applyCommand(Engine &engine, const EngineCommand &command, QString *error) 
     if (std::holds_alternative<Reset>(command.what)) {
         engine.reset();
         return true;
+    }
+    if (const auto *edit = std::get_if<ReplaceProgram>(&command.what)) {
+        const EditApplied applied = engine.replaceProgram(edit->program, edit->breakpoints);
+        if (applied == EditApplied::LayoutDiffers && error)
+            *error = Tr::tr("the edited program is for another memory layout (another PLC): it "
+                            "cannot take over the running image");
+        return applied != EditApplied::LayoutDiffers;
     }
     using Kind = model::DeviceCommand::Kind;
     const auto &c = std::get<model::DeviceCommand>(command.what);

@@ -7,6 +7,8 @@
 // calls complete(): a driver that publishes snapshots publishes first, so a reader told of a
 // completion finds its effect in the latest snapshot.
 
+#include "engine.h"
+
 #include "model/image/device_command.h"
 
 #include <QString>
@@ -19,14 +21,18 @@
 
 namespace rung::simulator {
 
-class Engine;
-
 struct PowerCycle {}; // power off and on: non-retentive areas clear
 struct Reset {};      // a fresh PLC's power-on state: every area clear, forces released
+// An online edit: the program runs from the next scan boundary on with the image kept
+// (Engine::replaceProgram), then stops at these breakpoints of its own.
+struct ReplaceProgram {
+    std::shared_ptr<const Program> program;
+    std::vector<Breakpoint> breakpoints;
+};
 
 struct EngineCommand {
     quint64 id = 0; // 0: nobody waits for it, no completion
-    std::variant<model::DeviceCommand, PowerCycle, Reset> what;
+    std::variant<model::DeviceCommand, PowerCycle, Reset, ReplaceProgram> what;
 };
 
 class CommandInbox {
@@ -44,8 +50,9 @@ public:
         bool reset = false; // a Reset was among them
     };
     // Engine thread: applies every posted command, in posting order; their results wait for
-    // complete().
-    Applied apply(Engine &engine);
+    // complete(). `before` (when given) sees each command just before it is applied (the
+    // session's history records it there).
+    Applied apply(Engine &engine, const std::function<void(const EngineCommand &)> &before = {});
     // Engine thread: hands the results of the commands applied so far to the completion.
     void complete();
 

@@ -5,6 +5,7 @@
 #include <algorithm>
 #include <chrono>
 #include <cstring>
+#include <utility>
 
 namespace rung::simulator {
 
@@ -32,7 +33,8 @@ Engine::Engine(std::shared_ptr<const Program> program)
     m_scratch = static_cast<std::size_t>(m_program->layout->wordCount());
     const std::size_t words = m_scratch + kScratchWords;
     m_words.assign(words, 0);
-    m_write.assign(words, 0);
+    if (m_program->deferredBitWrites) // the VPC's bit image written during the scan
+        m_write.assign(words, 0);
     m_stimulus.assign(words, 0);
     m_forceMask.assign(words, 0);
     m_forceValue.assign(words, 0);
@@ -51,9 +53,13 @@ void Engine::loadPresets() {
 void Engine::reset() {
     const qint64 period = m_stats.periodMs;
     const bool record = m_record;
-    *this = Engine(m_program);
+    const std::vector<Breakpoint> breakpoints =
+        m_pendingProgram ? m_pendingBreakpoints : m_breakpointList;
+    std::shared_ptr<const Program> program = m_pendingProgram ? m_pendingProgram : m_program;
+    *this = Engine(std::move(program));
     m_stats.periodMs = period;
     m_record = record;
+    setBreakpoints(breakpoints);
 }
 
 void Engine::setPeriodMs(qint64 periodMs) {
@@ -61,16 +67,29 @@ void Engine::setPeriodMs(qint64 periodMs) {
 }
 
 void Engine::scan() {
-    const auto start = std::chrono::steady_clock::now();
-    beginScan();
-    if (m_record)
-        execute<true>();
-    else
-        execute<false>();
-    endScan();
-    const qint64 ns = std::chrono::duration_cast<std::chrono::nanoseconds>(
+    if (m_inside) {
+        const auto start = std::chrono::steady_clock::now();
+        runSegment(m_regs.next, m_program->steps.size());
+        m_insideNs += std::chrono::duration_cast<std::chrono::nanoseconds>(
                           std::chrono::steady_clock::now() - start)
                           .count();
+        completeInsideScan();
+        return;
+    }
+    const auto start = std::chrono::steady_clock::now();
+    const std::size_t n = m_program->steps.size();
+    beginScan();
+    if (m_record)
+        execute<true, false>(0, n);
+    else
+        execute<false, false>(0, n);
+    endScan();
+    recordExecTime(std::chrono::duration_cast<std::chrono::nanoseconds>(
+                       std::chrono::steady_clock::now() - start)
+                       .count());
+}
+
+void Engine::recordExecTime(qint64 ns) {
     m_stats.execNsCurrent = ns;
     m_stats.execNsMin = m_stats.scans == 1 ? ns : std::min(m_stats.execNsMin, ns);
     m_stats.execNsMax = std::max(m_stats.execNsMax, ns);
@@ -324,6 +343,15 @@ void Engine::powerCycle() {
         if (a.stateBase >= 0)
             std::fill_n(m_states.begin() + a.stateBase, a.count, ElementState{});
     }
+    // A scan stopped inside is cut off by the power going (an edit waiting for its END
+    // takes over now).
+    if (m_inside) {
+        m_inside = false;
+        m_stoppedBy = -1;
+        if (m_pendingProgram)
+            replaceProgram(std::exchange(m_pendingProgram, nullptr),
+                           std::exchange(m_pendingBreakpoints, {}));
+    }
     std::fill(m_edges.begin(), m_edges.end(), 0);
     std::fill(m_flow.begin(), m_flow.end(), 0);
     loadPresets();
@@ -342,6 +370,7 @@ Snapshot Engine::snapshot() const {
     s.statistics = m_stats;
     if (m_record)
         s.powerFlow.assign(m_flow.begin(), m_flow.end());
+    s.pause = pausePosition();
     return s;
 }
 

@@ -14,6 +14,7 @@
 
 #include <functional>
 #include <memory>
+#include <optional>
 #include <vector>
 
 namespace rung::simulator {
@@ -21,14 +22,50 @@ namespace rung::simulator {
 using model::ScanStatistics;
 using model::Snapshot;
 
+using model::ScanPause;
+
+// Stops the engine before an instruction, optionally only when a condition holds then
+// ("when Y0 rises", "when D10 > 100"). A rise or fall is against the value the device had the
+// last time the engine reached that instruction (at first: when the breakpoint was set).
+struct Breakpoint {
+    enum class When : std::uint8_t { Always, Rises, Falls, IsOn, IsOff, Compare };
+    int instruction = 0;
+    When when = When::Always;
+    model::Address device;                      // the condition's bit or word
+    model::CompareOp op = model::CompareOp::Gt; // Compare
+    qint64 value = 0;                           // Compare: the constant
+    friend bool operator==(const Breakpoint &, const Breakpoint &) = default;
+};
+
+// How a scan that may stop inside ended.
+enum class ScanStop : std::uint8_t {
+    Completed,  // the scan reached its END (the engine is at a scan boundary)
+    Breakpoint, // stopped before a breakpoint's instruction
+    Stepped,    // stopped after one instruction (stepInstruction)
+};
+
+// What an online edit did (replaceProgram).
+enum class EditApplied : std::uint8_t {
+    Now,          // at a scan boundary: the next scan runs the new program
+    AtScanEnd,    // the engine is inside a scan: the new program takes over at its END
+    LayoutDiffers // the new program has another memory layout: nothing changed
+};
+
 struct RuntimeError {
     int instruction = 0; // index in the instruction list
     int line = 0;        // source line (0 when generated)
     QString message;     // translated
 };
 
+// W353 "Subroutines": SBS(91) nests up to 16 levels.
+inline constexpr int kSubroutineDepth = 16;
+
 class Engine {
 public:
+    // The interpreter's stacks (engine_execute.cpp checks them against the listing's limits).
+    static constexpr int kBlockStack = 64; // model::kMaxOpenBlocks
+    static constexpr int kPushStack = 32;  // model::kMaxStackDepthOfAnyTarget
+
     explicit Engine(std::shared_ptr<const Program> program);
 
     const Program &program() const { return *m_program; }
@@ -37,6 +74,7 @@ public:
     void setPeriodMs(qint64 periodMs); // >= 1
     qint64 periodMs() const { return m_stats.periodMs; }
 
+    // One whole scan (inside a stopped scan: the rest of it), breakpoints ignored.
     void scan();
     void runScans(quint64 count);
     // Scans until the condition holds after a scan; false when maxScans ran out first.
@@ -48,6 +86,37 @@ public:
     // gone); the scan period and power-flow recording stay.
     void reset();
 
+    // Breakpoints and stepping inside a scan (docs/simulator.md "Breakpoints"). The plain
+    // scan() never looks at breakpoints: a scan without any costs what it did.
+    // False with a translated reason (nothing changed) when an instruction or device is not
+    // in the program's image.
+    bool setBreakpoints(const std::vector<Breakpoint> &breakpoints, QString *error = nullptr);
+    const std::vector<Breakpoint> &breakpoints() const { return m_breakpointList; }
+    // Runs a scan (or the rest of the stopped one) until a breakpoint holds or the scan ends.
+    // Resuming never stops again before the instruction it stopped at.
+    ScanStop scanToBreakpoint();
+    // One instruction. At a scan boundary it starts a scan (inputs read) and stops before
+    // the first instruction; Completed when the instruction ended the scan.
+    ScanStop stepInstruction();
+    // Inside a scan: runs until the next instruction to run is `instruction` (or the scan
+    // ends: false). Replays a stop of the past (history).
+    bool advanceTo(int instruction);
+    bool insideScan() const { return m_inside; }
+    // The next instruction of a stopped scan; -1 at a scan boundary.
+    int stoppedAt() const { return m_inside ? static_cast<int>(m_regs.next) : -1; }
+    std::optional<ScanPause> pausePosition() const;
+
+    // Online edit: runs `program` from the next scan boundary on with the memory image as it
+    // is (values, timers, counters, forces). Edge memories follow their instruction (the
+    // k-th rising contact of X1 keeps the k-th one's memory); a new edge instruction starts
+    // from its device's present value, so it does not fire on the edit. Constant presets that
+    // changed are loaded. The breakpoints become `breakpoints` (instructions of the new
+    // program) when it takes over; until then setBreakpoints() sets those of the new program.
+    EditApplied replaceProgram(std::shared_ptr<const Program> program,
+                               const std::vector<Breakpoint> &breakpoints = {});
+
+    // Bytes this engine's state holds (a history checkpoint is a copy of it).
+    std::size_t memoryBytes() const;
     // Devices. Bits of physical input areas are stimulus: the input image takes them at the
     // start of each scan. Every other write changes the memory image at once.
     bool bit(const model::Address &address) const;
@@ -80,8 +149,37 @@ private:
         std::uint8_t running = 0;     // timers: input was ON at the last execution
     };
 
+    // The interpreter's registers, kept while a scan is stopped inside.
+    struct Registers {
+        std::size_t next = 0;
+        bool acc = false;
+        bool interlock = true;
+        bool stepActive = true;
+        bool gate = true;
+        int bsp = 0;
+        int psp = 0;
+        bool blocks[kBlockStack] = {};
+        bool pushed[kPushStack] = {};
+        int depth = 0; // SBS(91) calls not yet returned from
+        std::size_t returns[kSubroutineDepth] = {};
+        bool held[kSubroutineDepth] = {};
+    };
+    struct ArmedBreakpoint {
+        Breakpoint spec;
+        BitRef bit;
+        int word = -1;
+        bool previous = false;
+    };
+
     void beginScan();
-    template <bool Record> void execute();
+    // Steps [from, to) (jumps may leave it early or late); returns the next step to run,
+    // >= steps.size() once END ran. Resumable: the registers come from and go back to
+    // m_regs; else they start empty (a whole scan) and stay in the function.
+    template <bool Record, bool Resumable> std::size_t execute(std::size_t from, std::size_t to);
+    std::size_t runSegment(std::size_t from, std::size_t to);
+    void startInsideScan();
+    void completeInsideScan();
+    bool breakpointHolds(std::size_t instruction);
     // engine_operands.cpp: a step with kResolve runs as a copy whose OperandRefs are words of
     // the image or constants; false when an indexed operand lands outside its areas (the
     // PLC's operation error: the instruction does nothing).
@@ -91,6 +189,7 @@ private:
     std::int32_t readBits(const OperandRef &ref, std::int64_t element) const;
     QString refText(const OperandRef &ref) const;
     void endScan();
+    void recordExecTime(qint64 ns);
     void applyForces(std::int32_t *words) const;
     void rebuildForcedWords();
     void runtimeError(std::size_t step, const QString &message);
@@ -149,9 +248,16 @@ private:
     qint64 m_scanMinMs = 0; // scan-time words: the shortest and longest period since power-on
     qint64 m_scanMaxMs = 0;
     bool m_record = false;
+    // Stopped inside a scan (breakpoints, stepping).
+    bool m_inside = false;
+    Registers m_regs;
+    qint64 m_insideNs = 0; // evaluation time of the stopped scan so far
+    int m_stoppedBy = -1;  // the breakpoint's instruction that stopped it, -1 a step
+    std::vector<Breakpoint> m_breakpointList;
+    std::vector<ArmedBreakpoint> m_armed; // sorted by instruction
+    std::vector<int> m_nextBreak;         // per step (and one past): first armed index at or after
+    std::shared_ptr<const Program> m_pendingProgram; // an edit waiting for the scan's END
+    std::vector<Breakpoint> m_pendingBreakpoints;    // and its breakpoints
 };
-
-// W353 "Subroutines": SBS(91) nests up to 16 levels.
-inline constexpr int kSubroutineDepth = 16;
 
 } // namespace rung::simulator

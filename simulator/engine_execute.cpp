@@ -19,8 +19,8 @@ struct Tr {
 };
 
 // The compiler holds a program to these (model/listing/structure.h).
-constexpr int kBlockStack = model::kMaxOpenBlocks;
-constexpr int kPushStack = model::kMaxStackDepthOfAnyTarget;
+static_assert(Engine::kBlockStack == model::kMaxOpenBlocks);
+static_assert(Engine::kPushStack == model::kMaxStackDepthOfAnyTarget);
 
 bool compare(std::uint8_t op, std::int32_t a, std::int32_t b) {
     switch (static_cast<model::CompareOp>(op)) {
@@ -156,7 +156,8 @@ std::int64_t Engine::outOfDecimalRange(std::size_t step, std::int64_t value) {
     return wrapped;
 }
 
-template <bool Record> void Engine::execute() {
+template <bool Record, bool Resumable>
+std::size_t Engine::execute(std::size_t from, std::size_t to) {
     const Program &p = *m_program;
     const Step *steps = p.steps.data();
     const std::size_t n = p.steps.size();
@@ -186,14 +187,48 @@ template <bool Record> void Engine::execute() {
     bool interlock = true;
     bool stepActive = true;
     bool gate = true;
-
     const bool flags = p.flags.any(); // the W353 flags: MOV(21) sets EQ
     int depth = 0;                    // SBS(91) nesting
     std::size_t returns[kSubroutineDepth] = {};
     bool held[kSubroutineDepth] = {};
+    // A stopped scan's registers come in and go back; the whole scan keeps them local, so
+    // the plain scan's loop is the one it always was.
+    if constexpr (Resumable) {
+        const Registers &r = m_regs;
+        depth = r.depth;
+        std::copy_n(r.returns, depth, returns);
+        std::copy_n(r.held, depth, held);
+        bsp = r.bsp;
+        psp = r.psp;
+        acc = r.acc;
+        interlock = r.interlock;
+        stepActive = r.stepActive;
+        gate = r.gate;
+        std::copy_n(r.blocks, bsp, blocks);
+        std::copy_n(r.pushed, psp, pushed);
+    }
+    auto leave = [&](std::size_t next) {
+        if constexpr (Resumable) {
+            Registers &r = m_regs;
+            r.next = next;
+            r.bsp = bsp;
+            r.psp = psp;
+            r.acc = acc;
+            r.interlock = interlock;
+            r.stepActive = stepActive;
+            r.gate = gate;
+            std::copy_n(blocks, bsp, r.blocks);
+            std::copy_n(pushed, psp, r.pushed);
+            r.depth = depth;
+            std::copy_n(returns, depth, r.returns);
+            std::copy_n(held, depth, r.held);
+        }
+        return next;
+    };
 
     Step resolved;
-    for (std::size_t i = 0; i < n; ++i) {
+    std::size_t i = from;
+    for (; i < to; ++i) {
         const Step *step = &steps[i];
         if (step->flags & kResolve) [[unlikely]] {
             if (!resolveStep(*step, i, resolved)) {
@@ -731,7 +766,7 @@ template <bool Record> void Engine::execute() {
         case Code::End:
             if constexpr (Record)
                 m_flow[i] = acc;
-            return;
+            return leave(n);
         }
         if (step == &resolved) [[unlikely]]
             writeBack(steps[i], resolved, W);
@@ -740,9 +775,12 @@ template <bool Record> void Engine::execute() {
         if constexpr (Record)
             m_flow[i] = acc;
     }
+    return leave(i);
 }
 
-template void Engine::execute<false>();
-template void Engine::execute<true>();
+template std::size_t Engine::execute<false, false>(std::size_t, std::size_t);
+template std::size_t Engine::execute<true, false>(std::size_t, std::size_t);
+template std::size_t Engine::execute<false, true>(std::size_t, std::size_t);
+template std::size_t Engine::execute<true, true>(std::size_t, std::size_t);
 
 } // namespace rung::simulator

@@ -52,6 +52,8 @@ void SimulatorSession::run() {
     control([this] {
         m_mode = Mode::Running;
         m_stepsLeft = 0;
+        m_instructionSteps = 0;
+        m_finishScan = false;
     });
     setRunState(RunState::Running);
 }
@@ -61,6 +63,8 @@ void SimulatorSession::pause() {
         if (m_mode == Mode::Running)
             m_mode = Mode::Paused;
         m_stepsLeft = 0;
+        m_instructionSteps = 0;
+        m_finishScan = false;
     });
     if (runState() == RunState::Running || runState() == RunState::Stepping)
         setRunState(RunState::Paused);
@@ -70,6 +74,8 @@ void SimulatorSession::stop() {
     control([this] {
         m_mode = Mode::Stopped;
         m_stepsLeft = 0;
+        m_instructionSteps = 0;
+        m_finishScan = false;
         // Through the inbox, so a command submitted before stop() is applied before the reset
         // (a force is then released by it) and one submitted after it applies to the fresh
         // image.
@@ -84,8 +90,63 @@ void SimulatorSession::runScans(quint64 count) {
     control([this, count] {
         m_mode = Mode::Paused;
         m_stepsLeft = count;
+        m_instructionSteps = 0;
+        m_finishScan = false;
     });
     setRunState(RunState::Stepping);
+}
+
+void SimulatorSession::runFor(qint64 durationMs) {
+    if (durationMs <= 0)
+        return;
+    control([this, durationMs] {
+        const qint64 period = m_periodMs > 0 ? m_periodMs : 10;
+        m_mode = Mode::Paused;
+        m_stepsLeft = static_cast<quint64>(std::max<qint64>(1, durationMs / period));
+    });
+    setRunState(RunState::Stepping);
+}
+
+void SimulatorSession::stepInstruction() {
+    control([this] {
+        if (m_mode == Mode::Running || m_mode == Mode::Stopped)
+            m_mode = Mode::Paused;
+        m_stepsLeft = 0;
+        ++m_instructionSteps;
+    });
+    setRunState(RunState::Stepping);
+}
+
+void SimulatorSession::finishScan() {
+    control([this] {
+        m_mode = Mode::Paused;
+        m_stepsLeft = 0;
+        m_instructionSteps = 0;
+        m_finishScan = true;
+    });
+    setRunState(RunState::Stepping);
+}
+
+void SimulatorSession::setBreakpoints(std::vector<Breakpoint> breakpoints) {
+    control([this, &breakpoints] {
+        m_breakpoints = std::move(breakpoints);
+        m_breakpointsChanged = true;
+    });
+}
+
+model::MonitorSource::CommandId
+SimulatorSession::replaceProgram(std::shared_ptr<const Program> program,
+                                 std::vector<Breakpoint> breakpoints) {
+    const CommandId id = nextCommandId();
+    {
+        // The breakpoints the worker sets from now on are the new program's.
+        std::lock_guard lock(m_mutex);
+        m_breakpoints = breakpoints;
+        m_breakpointsChanged = false;
+    }
+    m_inbox.post({id, ReplaceProgram{std::move(program), std::move(breakpoints)}});
+    wakeWorker();
+    return id;
 }
 
 void SimulatorSession::setSpeed(double factor) {
@@ -142,8 +203,39 @@ void SimulatorSession::reportErrors(const Engine &engine, std::size_t &reported)
     postToOwner([this, text] { setErrorText(text); });
 }
 
+void SimulatorSession::afterScan(const Engine &engine) {
+    m_scanHistory->afterScan(engine, engine.statistics().execNsCurrent);
+    std::lock_guard lock(m_historyMutex);
+    if (m_history.deviceCount() > 0)
+        m_history.record(engine.statistics().scans, engine.statistics().timeMs,
+                         engine.words().data());
+}
+
+void SimulatorSession::pauseFromWorker(int breakpoint) {
+    quint64 generation = 0;
+    {
+        std::lock_guard lock(m_mutex);
+        m_mode = Mode::Paused;
+        m_stepsLeft = 0;
+        m_instructionSteps = 0;
+        generation = ++m_generation;
+    }
+    postToOwner([this, generation, breakpoint] {
+        // Only when no later control call (run, stop, ...) has changed the state.
+        std::unique_lock lock(m_mutex);
+        const bool current = m_generation == generation;
+        lock.unlock();
+        if (!current)
+            return;
+        setRunState(RunState::Paused);
+        if (breakpoint >= 0)
+            emit breakpointHit(breakpoint);
+    });
+}
+
 void SimulatorSession::workerLoop() {
     Engine engine(m_program);
+    m_scanHistory->start(engine);
     std::size_t errorsReported = 0;
     quint64 seen = ~quint64{0};
     // Real-time pacing: scan k is due when the wall clock has moved (virtual time - anchor's
@@ -164,8 +256,10 @@ void SimulatorSession::workerLoop() {
     };
     publishNow();
     for (;;) {
-        bool scan = false, stepsDone = false;
+        Work work = Work::None;
+        bool stepsDone = false;
         quint64 generation = 0;
+        QString breakpointError;
         {
             std::unique_lock lock(m_mutex);
             for (;;) {
@@ -174,13 +268,35 @@ void SimulatorSession::workerLoop() {
                 if (m_generation != seen) {
                     // A control change: take the new settings, pace from here.
                     seen = m_generation;
-                    if (m_periodMs > 0)
+                    if (m_periodMs > 0 && engine.periodMs() != m_periodMs) {
+                        m_scanHistory->record(engine, ScanHistory::SetPeriod{m_periodMs});
                         engine.setPeriodMs(m_periodMs);
+                    }
                     engine.setPowerFlowRecording(m_recordFlow);
+                    if (m_breakpointsChanged) {
+                        m_breakpointsChanged = false;
+                        if (!engine.setBreakpoints(m_breakpoints, &breakpointError))
+                            break;
+                    }
                     anchor();
                 }
-                if (m_inbox.pending())
-                    break; // commands (stop's reset among them) before any scan, in every mode
+                if (m_inbox.pending()) {
+                    work = Work::Commands; // stop's reset among them, before any scan
+                    break;
+                }
+                if (m_instructionSteps > 0) {
+                    --m_instructionSteps;
+                    work = Work::Step;
+                    stepsDone = m_instructionSteps == 0;
+                    generation = m_generation;
+                    break;
+                }
+                if (m_finishScan) {
+                    m_finishScan = false;
+                    work = Work::Finish;
+                    generation = m_generation;
+                    break;
+                }
                 if (m_mode == Mode::Running || m_stepsLeft > 0) {
                     if (m_speed > 0) {
                         const double dueMs =
@@ -202,7 +318,7 @@ void SimulatorSession::workerLoop() {
                         if (now - due > kMaxCatchUp)
                             anchor();
                     }
-                    scan = true;
+                    work = Work::Scan;
                     if (m_stepsLeft > 0 && --m_stepsLeft == 0)
                         stepsDone = true;
                     generation = m_generation;
@@ -213,14 +329,29 @@ void SimulatorSession::workerLoop() {
                 m_wake.wait(lock);
             }
         }
-        if (!scan && !m_inbox.pending()) {
-            publishNow();
+        if (!breakpointError.isEmpty()) {
+            postToOwner([this, breakpointError] { setErrorText(breakpointError); });
             continue;
         }
-        if (!scan) {
+        switch (work) {
+        case Work::None:
+            publishNow();
+            continue;
+        case Work::Commands: {
             // Applied, published, then answered: a reader told that a command finished finds
-            // its effect in the latest snapshot.
-            if (m_inbox.apply(engine).reset) {
+            // its effect in the latest snapshot. The history records each as it comes (a
+            // stop's reset starts it again: the past before it is another run).
+            bool restart = false;
+            const auto applied = m_inbox.apply(engine, [&](const EngineCommand &c) {
+                if (restart)
+                    m_scanHistory->start(engine);
+                restart = std::holds_alternative<Reset>(c.what);
+                if (!restart)
+                    m_scanHistory->record(engine, c);
+            });
+            if (restart)
+                m_scanHistory->start(engine);
+            if (applied.reset) {
                 errorsReported = 0;
                 {
                     std::lock_guard lock(m_historyMutex);
@@ -233,13 +364,34 @@ void SimulatorSession::workerLoop() {
             m_inbox.complete();
             continue;
         }
-        engine.scan();
-        {
-            std::lock_guard lock(m_historyMutex);
-            if (m_history.deviceCount() > 0)
-                m_history.record(engine.statistics().scans, engine.statistics().timeMs,
-                                 engine.words().data());
+        case Work::Step:
+        case Work::Finish: {
+            const bool completed = work == Work::Step
+                                       ? engine.stepInstruction() == ScanStop::Completed
+                                       : engine.insideScan() && (engine.scan(), true);
+            if (completed)
+                afterScan(engine);
+            reportErrors(engine, errorsReported);
+            publishNow();
+            if (work == Work::Finish || stepsDone)
+                postToOwner([this, generation] {
+                    std::unique_lock lock(m_mutex);
+                    const bool current = m_generation == generation;
+                    lock.unlock();
+                    if (current && runState() == RunState::Stepping)
+                        setRunState(RunState::Paused);
+                });
+            continue;
         }
+        case Work::Scan:
+            break;
+        }
+        if (engine.scanToBreakpoint() == ScanStop::Breakpoint) {
+            publishNow();
+            pauseFromWorker(engine.stoppedAt());
+            continue;
+        }
+        afterScan(engine);
         reportErrors(engine, errorsReported);
         unpublished = true;
         const auto now = Clock::now();

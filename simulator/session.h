@@ -9,6 +9,7 @@
 
 #include "command_inbox.h"
 #include "engine.h"
+#include "scan_history.h"
 
 #include "model/image/history.h"
 #include "model/image/monitor_source.h"
@@ -33,6 +34,20 @@ public:
     void stop();  // back to the power-on state, not scanning, forces released
     void singleScan() { runScans(1); }
     void runScans(quint64 count); // Stepping, then Paused
+    // As many scans as fit in the virtual duration at the period then in force (at least one).
+    void runFor(qint64 durationMs);
+    // Inside a scan (docs/simulator.md "Breakpoints"): one instruction (at a scan boundary:
+    // start a scan and stop before its first instruction), Stepping then Paused.
+    void stepInstruction();
+    // The rest of a stopped scan, breakpoints ignored; then Paused.
+    void finishScan();
+    // Replaces the breakpoints; a scan running on stops at them (Paused, breakpointHit). A
+    // breakpoint the program cannot take is said by errorText and changes nothing.
+    void setBreakpoints(std::vector<Breakpoint> breakpoints);
+    // Online edit: the program runs from the next scan boundary (of a stopped scan: its END)
+    // on, with the image kept and these breakpoints (its own instructions).
+    CommandId replaceProgram(std::shared_ptr<const Program> program,
+                             std::vector<Breakpoint> breakpoints = {});
     // Times real time (2.0 = twice as fast); 0 or less: as fast as the engine goes.
     void setSpeed(double factor);
     double speed() const;
@@ -46,17 +61,27 @@ public:
     // Calls read with the history under its lock: the worker waits for that lock after every
     // scan, so read must be quick (copy out what it needs; no dialog, no waiting).
     void readHistory(const std::function<void(const model::HistoryRecorder &)> &read) const;
+    // The record from which any scan of the recent past is rebuilt (HistorySource).
+    std::shared_ptr<const ScanHistory> scanHistory() const { return m_scanHistory; }
+
+signals:
+    // A breakpoint stopped the scan before `instruction` (the run state is Paused).
+    void breakpointHit(int instruction);
 
 protected:
     void startCommand(CommandId id, const model::DeviceCommand &command) override;
 
 private:
     enum class Mode { Stopped, Paused, Running };
+    enum class Work { None, Commands, Scan, Step, Finish };
 
     void control(const std::function<void()> &change); // under the lock, wakes the worker
     void wakeWorker();
     void workerLoop();
     void publish(const Engine &engine);
+    void afterScan(const Engine &engine); // history and the recorder, after a completed scan
+    // Worker: Paused now, told to the owner unless a control call came after this.
+    void pauseFromWorker(int breakpoint);
     void reportErrors(const Engine &engine, std::size_t &reported);
 
     std::shared_ptr<const Program> m_program;
@@ -67,6 +92,10 @@ private:
     std::condition_variable m_wake;
     Mode m_mode = Mode::Stopped;
     quint64 m_stepsLeft = 0;
+    quint64 m_instructionSteps = 0;
+    bool m_finishScan = false;
+    std::vector<Breakpoint> m_breakpoints;
+    bool m_breakpointsChanged = false;
     double m_speed = 1.0;
     qint64 m_periodMs = 0; // 0: the program's default
     bool m_recordFlow = false;
@@ -75,6 +104,7 @@ private:
 
     mutable std::mutex m_historyMutex;
     model::HistoryRecorder m_history;
+    std::shared_ptr<ScanHistory> m_scanHistory = std::make_shared<ScanHistory>();
 
     std::thread m_worker; // last: starts after everything it reads exists
 };

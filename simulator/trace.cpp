@@ -58,8 +58,21 @@ bool parseTraceOptions(const model::Target &target, const QStringList &args, Tra
             bool ok = false;
             const qint64 n = v.toLongLong(&ok);
             const bool scans = a == QLatin1String("--scans");
-            if (!ok || n < (scans ? 0 : 1) || n > 1000000000) {
-                *error = Tr::tr("%1 needs a positive number, not \"%2\"").arg(a, v);
+            const qint64 most = scans ? kMaxTraceScans : 1000000000;
+            if (!ok || n < 1) {
+                *error = Tr::tr("%1 needs a whole number from 1 to %2, not \"%3\"")
+                             .arg(a)
+                             .arg(most)
+                             .arg(v);
+                return false;
+            }
+            if (n > most) {
+                // A trace prints a row per scan: an unbounded run would never end.
+                *error = scans ? Tr::tr("--scans %1 is more than the %2 scans one trace runs "
+                                        "(a row each); run it in parts")
+                                     .arg(v)
+                                     .arg(most)
+                               : Tr::tr("--period %1 is more than %2 ms").arg(v).arg(most);
                 return false;
             }
             if (scans) {
@@ -113,6 +126,19 @@ bool parseTraceOptions(const model::Target &target, const QStringList &args, Tra
         *error = Tr::tr("--scans and --trace are required");
         return false;
     }
+    // A stimulus after the last scan would never apply: said, not dropped.
+    for (qsizetype i = 0; i + 1 < args.size(); i += 2)
+        if (args[i] == QLatin1String("--set")) {
+            const auto m = setRe.match(args[i + 1]);
+            if (m.captured(3).toULongLong() >= request->scans) {
+                *error = Tr::tr("--set %1 comes after the last scan: %2 scans run, numbered 0 "
+                                "to %3, so it would never apply")
+                             .arg(args[i + 1])
+                             .arg(request->scans)
+                             .arg(request->scans - 1);
+                return false;
+            }
+        }
     std::stable_sort(
         request->stimuli.begin(), request->stimuli.end(),
         [](const TraceStimulus &x, const TraceStimulus &y) { return x.scan < y.scan; });

@@ -31,11 +31,15 @@ struct TraceRequest {
     std::vector<TraceColumn> columns;
 };
 
-// Reads --scans N, --period MS, --set DEV=VALUE@SCAN (repeatable) and --trace DEV[,DEV...].
-// A trace column "cv:T0" / "sv:T0" is a timer/counter's current / set value; "hex:DM 0100" a
-// word as four hexadecimal digits (a CPM1 BCD word reads as its digits); a bare timer or
-// counter is its done bit; a word device its value. A --set value "#6103" is a word in
-// hexadecimal digits. Unknown options are errors.
+// A trace prints a row per scan: at most this many (27 h 46 min at 10 ms).
+constexpr qint64 kMaxTraceScans = 10000000;
+
+// Reads --scans N (1..kMaxTraceScans), --period MS, --set DEV=VALUE@SCAN (repeatable) and
+// --trace DEV[,DEV...]. A trace column "cv:T0" / "sv:T0" is a timer/counter's current / set
+// value; "hex:DM 0100" a word as four hexadecimal digits (a CPM1 BCD word reads as its
+// digits); a bare timer or counter is its done bit; a word device its value. A --set value
+// "#6103" is a word in hexadecimal digits. Unknown options are errors, and so is a --set at
+// or after scan N (it would never apply).
 bool parseTraceOptions(const model::Target &target, const QStringList &args, TraceRequest *request,
                        QString *error);
 

@@ -39,7 +39,7 @@
 <context>
     <name>rung::app::SimulationController</name>
     <message numerus="yes">
-        <location filename="../app/gui/simulation_controller.cpp" line="+85"/>
+        <location filename="../app/gui/simulation_controller.cpp" line="+101"/>
         <source>The program has %n error(s): the simulation does not start; the Problems list shows them</source>
         <translation>
             <numerusform>The program has %n error: the simulation does not start; the Problems list shows it</numerusform>

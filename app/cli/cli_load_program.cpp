@@ -1,7 +1,6 @@
 #include "cli_load_program.h"
 
-#include "cli_common.h"
-
+#include "model/checks/checks.h"
 #include "simulator/compiler.h"
 
 #include <QCoreApplication>
@@ -13,6 +12,20 @@ namespace {
 struct Tr {
     Q_DECLARE_TR_FUNCTIONS(rung::app::Simulate)
 };
+
+// The compiler's findings about a drawing's instructions (numbered by their index + 1 below)
+// name the rung, row and cell, as `check` does.
+model::Diagnostic onLadder(model::Diagnostic d, const std::vector<model::CellOrigin> &origin) {
+    const int k = d.location.line - 1;
+    if (k < 0 || static_cast<std::size_t>(k) >= origin.size())
+        return d;
+    const model::CellOrigin &o = origin[static_cast<std::size_t>(k)];
+    d.location = {};
+    d.location.rung = o.rung;
+    d.location.row = std::max(0, o.row);
+    d.location.cell = std::max(0, o.column);
+    return d;
+}
 
 } // namespace
 
@@ -46,22 +59,41 @@ int loadProgram(const ProgramOptions &options, LoadedProgram *loaded, QTextStrea
     }
     model::CheckOptions checks;
     checks.model = input.model;
-    if (input.kind == InputKind::Listing)
+    simulator::CompileResult compiled;
+    std::vector<model::CellOrigin> origin;
+    if (input.kind == InputKind::Listing) {
         checks.source = &input.text;
-    const simulator::CompileResult compiled = simulator::prepareProgram(input.list, checks);
-    // A ladder or a project runs as its instruction list: a finding there names the
-    // instruction's line in that list.
-    const QString where = input.kind == InputKind::Listing
-                              ? input.file
-                              : Tr::tr("%1 (as instruction list)").arg(input.file);
-    for (const model::Diagnostic &d : compiled.diagnostics)
-        err << formatDiagnostic(where, d) << '\n';
+        compiled = simulator::prepareProgram(input.list, checks);
+        for (const model::Diagnostic &d : compiled.diagnostics)
+            err << formatDiagnostic(input.file, d) << '\n';
+    } else {
+        // The drawing's checks (they name rungs and cells), then the compiler with each
+        // instruction's index as its line, so that its findings find their cells too.
+        const model::ToListingResult listing = model::ladderToList(input.project.program);
+        origin = listing.origin;
+        for (const model::Diagnostic &d :
+             model::checkLadder(input.project.program, listing, checks))
+            if (d.severity == model::Severity::Error)
+                compiled.diagnostics.push_back(d);
+        if (compiled.diagnostics.empty()) {
+            model::InstructionList numbered = listing.list;
+            for (std::size_t k = 0; k < numbered.instructions.size(); ++k) {
+                numbered.instructions[k].line = static_cast<int>(k) + 1;
+                numbered.instructions[k].column = 1;
+            }
+            compiled = simulator::compileProgram(numbered);
+        }
+        for (const model::Diagnostic &d : compiled.diagnostics)
+            err << formatDiagnostic(input.file, onLadder(d, origin)) << '\n';
+    }
     if (!compiled.ok()) {
         err << Tr::tr("the program does not start") << '\n';
         return 1;
     }
     loaded->program = compiled.program;
     loaded->target = input.target;
+    loaded->kind = input.kind;
+    loaded->origin = std::move(origin);
     return 0;
 }
 

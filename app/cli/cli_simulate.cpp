@@ -1,13 +1,11 @@
 #include "cli_simulate.h"
 
 #include "cli_common.h"
+#include "cli_load_program.h"
 
-#include "model/listing/il.h"
-#include "simulator/compiler.h"
 #include "simulator/trace.h"
 
 #include <QCoreApplication>
-#include <QFile>
 
 namespace rung::app {
 
@@ -18,85 +16,64 @@ struct Tr {
 };
 
 QString usage() {
-    return Tr::tr("usage: rungstudio-cli simulate FILE [--target T] --scans N [--period MS] "
-                  "[--set DEV=VALUE@SCAN]... --trace DEV[,DEV...]");
+    return Tr::tr("usage: rungstudio-cli simulate FILE [--target T] [--model M] --scans N "
+                  "[--period MS] [--set DEV=VALUE@SCAN]... --trace DEV[,DEV...]\n"
+                  "FILE is a listing (.il), a ladder text (.ladder) or a project (.rung).");
 }
 
 } // namespace
 
 int runSimulateCommand(const QStringList &args, QTextStream &out, QTextStream &err) {
-    QString file;
-    QString targetId;
-    QStringList options;
+    ProgramOptions common;
+    QStringList options; // the trace's: each with its value
+    QString error;
     for (qsizetype i = 0; i < args.size(); ++i) {
-        if (args[i] == QLatin1String("--target") && i + 1 < args.size()) {
-            targetId = args[++i];
-        } else if (args[i].startsWith(QLatin1String("--"))) {
-            options << args[i];
-            if (i + 1 < args.size())
-                options << args[++i];
-        } else if (file.isEmpty()) {
-            file = args[i];
+        const QString &a = args[i];
+        if (a.startsWith(QLatin1String("--"))) {
+            if (i + 1 >= args.size()) {
+                err << Tr::tr("%1 needs a value").arg(a) << '\n' << usage() << '\n';
+                return 2;
+            }
+            const QString value = args[++i];
+            if (a == QLatin1String("--target"))
+                common.target = value;
+            else if (a == QLatin1String("--model"))
+                common.model = value;
+            else
+                options << a << value;
+        } else if (common.file.isEmpty()) {
+            common.file = a;
         } else {
-            err << Tr::tr("unexpected argument %1").arg(args[i]) << '\n' << usage() << '\n';
+            err << Tr::tr("unexpected argument %1").arg(a) << '\n' << usage() << '\n';
             return 2;
         }
     }
-    if (file.isEmpty()) {
+    if (common.file.isEmpty()) {
         err << usage() << '\n';
         return 2;
     }
-    QByteArray bytes;
-    QString readError;
-    if (!readInputFile(file, &bytes, &readError)) {
-        err << readError << '\n';
-        return 2;
-    }
-    const QString text =
-        QString::fromUtf8(bytes).replace(QLatin1String("\r\n"), QLatin1String("\n"));
-    if (targetId.isEmpty())
-        targetId = model::declaredTarget(text);
-    if (targetId.isEmpty()) {
-        err << Tr::tr("%1: no target; give --target or a \"; target: NAME\" first line").arg(file)
-            << '\n';
-        return 2;
-    }
-    const model::Target *target = model::Target::byId(targetId);
-    if (!target) {
-        err << Tr::tr("unknown target %1").arg(targetId) << '\n';
-        return 2;
-    }
+    LoadedProgram program;
+    if (const int status = loadProgram(common, &program, err); status != 0)
+        return status;
     simulator::TraceRequest request;
-    QString error;
-    if (!simulator::parseTraceOptions(*target, options, &request, &error)) {
+    if (!simulator::parseTraceOptions(*program.target, options, &request, &error)) {
         err << error << '\n' << usage() << '\n';
         return 2;
     }
 
-    const model::ParseResult parsed = model::parseInstructionList(*target, text);
-    if (!parsed.ok()) {
-        for (const model::ParseError &e : parsed.errors)
-            err << QStringLiteral("%1:%2:%3: ").arg(file).arg(e.line).arg(e.column)
-                << Tr::tr("error: %1").arg(e.message) << '\n';
-        err << Tr::tr("the program does not start") << '\n';
-        return 1;
-    }
-    const simulator::CompileResult compiled = simulator::prepareProgram(parsed.list);
-    for (const model::Diagnostic &d : compiled.diagnostics)
-        err << QStringLiteral("%1:%2:%3: ").arg(file).arg(d.location.line).arg(d.location.column)
-            << (d.severity == model::Severity::Error ? Tr::tr("error: %1").arg(d.message)
-                                                     : Tr::tr("warning: %1").arg(d.message))
-            << QStringLiteral(" [%1]").arg(d.code) << '\n';
-    if (!compiled.ok()) {
-        err << Tr::tr("the program does not start") << '\n';
-        return 1;
-    }
     std::vector<simulator::RuntimeError> runtimeErrors;
-    simulator::runTrace(compiled.program, request, out, &runtimeErrors);
+    simulator::runTrace(program.program, request, out, &runtimeErrors);
     out.flush();
-    for (const simulator::RuntimeError &e : runtimeErrors)
-        err << QStringLiteral("%1:%2: ").arg(file).arg(e.line)
-            << Tr::tr("runtime error at step %1: %2").arg(e.instruction).arg(e.message) << '\n';
+    for (const simulator::RuntimeError &e : runtimeErrors) {
+        if (program.kind == InputKind::Listing) {
+            err << QStringLiteral("%1:%2: ").arg(common.file).arg(e.line);
+        } else if (static_cast<std::size_t>(e.instruction) < program.origin.size()) {
+            err << QStringLiteral("%1:rung %2: ")
+                       .arg(common.file)
+                       .arg(program.origin[static_cast<std::size_t>(e.instruction)].rung + 1);
+        }
+        err << Tr::tr("runtime error at step %1: %2").arg(e.instruction).arg(e.message) << '\n';
+    }
     return 0;
 }
 

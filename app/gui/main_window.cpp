@@ -424,6 +424,7 @@ void MainWindow::retranslate() {
         dock->setWindowTitle(tr("Cross Reference"));
     m_symbolsLabel->setText(tr("Symbols"));
     m_watchLabel->setText(tr("Watch lists"));
+    retranslateSimulation();
     if (m_tabs->count() == 2) {
         m_tabs->setTabText(0, tr("Ladder"));
         m_tabs->setTabText(1, tr("Instruction List"));

@@ -29,10 +29,16 @@ class ProblemsView;
 class WatchListView;
 } // namespace rung::editor
 
+namespace rung::model {
+class MonitorSource;
+}
+
 namespace rung::app {
 
 class RecoveryFile;
+class ScanDebuggerView;
 class SimulationController;
+class SimulationPanel;
 class SymbolTable;
 
 class MainWindow : public QMainWindow {
@@ -76,6 +82,16 @@ public:
     SymbolTable *symbolTable() const { return m_symbols; }
     editor::WatchListView *watchListView() const { return m_watch; }
     SimulationController *simulation() const { return m_simulation; }
+    SimulationPanel *simulationPanel() const { return m_simulationPanel; }
+    ScanDebuggerView *scanDebugger() const { return m_scanDebugger; }
+    // Hands the source every monitoring view draws from: the live session, a past scan
+    // (history), or none.
+    void setMonitorSource(model::MonitorSource *source);
+    // Sets or clears a breakpoint where the user is: the instruction list's line when it has
+    // the focus, else the ladder cursor's rung (its first instruction).
+    void toggleBreakpointHere();
+    // Opens the condition of the breakpoint on an instruction (setting one if none).
+    void editBreakpointCondition(int instruction);
     QLineEdit *crossReferenceDevice() { return m_crossDevice; }
     QTreeWidget *crossReference() { return m_crossTree; }
     void writeRecovery();
@@ -136,7 +152,14 @@ private:
     // The simulation (main_window_simulation.cpp).
     void setupSimulation();
     void buildSimulationMenu(QToolBar *bar);
+    void buildDebugMenu(QMenu *menu); // main_window_debug.cpp
+    void setupDebugging();
     void updateSimulationStatus();
+    void retranslateSimulation();
+    void updateBreakpointMarks();
+    void showStoppedAt(int instruction);
+    // The instruction at the instruction list's caret (or a 1-based line), -1 for none.
+    int instructionAtLine(int line) const;
 
     editor::Document *m_document;
     editor::LadderView *m_ladder;
@@ -158,6 +181,10 @@ private:
     QLabel *m_statusCursor;
     SimulationController *m_simulation = nullptr;
     QLabel *m_statusSimulation = nullptr;
+    QLabel *m_statusHistory = nullptr;
+    SimulationPanel *m_simulationPanel = nullptr;
+    ScanDebuggerView *m_scanDebugger = nullptr;
+    bool m_simulationDocksShown = false; // shown once, when a simulation first starts
     QMenu *m_recentMenu = nullptr;
     QMenu *m_examplesMenu = nullptr;
     QTimer m_ilTimer;

@@ -1,6 +1,7 @@
 #include "main_window.h"
 
 #include "simulation_controller.h"
+#include "simulation_panel.h"
 
 #include "editor/problems_view.h"
 #include "editor/watch_list_view.h"
@@ -10,8 +11,11 @@
 #include <QActionGroup>
 
 #include <QDockWidget>
+#include <QDoubleSpinBox>
+#include <QInputDialog>
 #include <QLabel>
 #include <QMenuBar>
+#include <QSpinBox>
 #include <QStatusBar>
 #include <QStyle>
 #include <QToolBar>
@@ -33,6 +37,13 @@ void MainWindow::setupSimulation() {
                       "program without them: correct the list (or undo) before simulating");
         return {};
     });
+    m_statusHistory = new QLabel;
+    m_statusHistory->setObjectName(QStringLiteral("historyStatus"));
+    // A past scan is never taken for the live state: bold on amber, beside the run state.
+    m_statusHistory->setStyleSheet(QStringLiteral(
+        "QLabel { background: #ffd54f; color: #3e2700; font-weight: bold; padding: 0 6px; }"));
+    m_statusHistory->hide();
+    statusBar()->addPermanentWidget(m_statusHistory);
     m_statusSimulation = new QLabel;
     m_statusSimulation->setObjectName(QStringLiteral("simulationStatus"));
     statusBar()->addPermanentWidget(m_statusSimulation);
@@ -42,8 +53,9 @@ void MainWindow::setupSimulation() {
             [this](const QString &text) { statusBar()->showMessage(text, 10000); });
     connect(m_watch, &editor::WatchListView::message, this,
             [this](const QString &text) { statusBar()->showMessage(text, 10000); });
-    connect(m_simulation, &SimulationController::sessionChanged, this,
-            [this](simulator::SimulatorSession *session) { m_watch->setMonitorSource(session); });
+    connect(m_simulation, &SimulationController::monitorSourceChanged, this,
+            &MainWindow::setMonitorSource);
+
     connect(m_simulation, &SimulationController::problems, this,
             [this](const std::vector<model::Diagnostic> &errors) {
                 std::vector<model::Diagnostic> all = m_document->diagnostics();
@@ -59,6 +71,12 @@ void MainWindow::setupSimulation() {
                     dock->raise();
                 }
             });
+    setupDebugging(); // main_window_debug.cpp
+    updateSimulationStatus();
+}
+
+void MainWindow::setMonitorSource(model::MonitorSource *source) {
+    m_watch->setMonitorSource(source);
     updateSimulationStatus();
 }
 
@@ -84,11 +102,35 @@ void MainWindow::buildSimulationMenu(QToolBar *bar) {
     menu->addSeparator();
     add("simulationPowerCycle", tr("Po&wer Cycle"), QStyle::SP_BrowserReload,
         QKeySequence(Qt::CTRL | Qt::SHIFT | Qt::Key_F12), &SimulationController::powerCycle);
+    add("simulationRunScans", tr("Run Sc&ans..."), QStyle::SP_MediaSeekForward,
+        QKeySequence(Qt::CTRL | Qt::SHIFT | Qt::Key_F10), [this] {
+            bool ok = false;
+            const int count =
+                QInputDialog::getInt(this, tr("Run Scans"), tr("Scans to run:"),
+                                     m_simulationPanel->scansBox()->value(), 1, 100000000, 1, &ok);
+            if (ok) {
+                m_simulationPanel->scansBox()->setValue(count);
+                m_simulation->runScans(static_cast<quint64>(count));
+            }
+        });
+    add("simulationRunFor", tr("R&un For..."), QStyle::SP_MediaSeekForward,
+        QKeySequence(Qt::CTRL | Qt::SHIFT | Qt::Key_F11), [this] {
+            bool ok = false;
+            const double seconds = QInputDialog::getDouble(
+                this, tr("Run For"), tr("Simulated time to run, in seconds:"),
+                m_simulationPanel->durationBox()->value(), 0.01, 24.0 * 3600.0, 2, &ok);
+            if (ok) {
+                m_simulationPanel->durationBox()->setValue(seconds);
+                m_simulation->runFor(static_cast<qint64>(seconds * 1000.0 + 0.5));
+            }
+        });
     QMenu *speed = menu->addMenu(tr("Spee&d"));
     auto *speeds = new QActionGroup(speed);
     for (const double factor : {0.1, 0.5, 1.0, 2.0, 5.0, 10.0, 100.0, 1000.0, 0.0}) {
         QAction *a = speed->addAction(factor > 0 ? tr("x%1 Real Time").arg(factor)
                                                  : tr("As &Fast as Possible"));
+        a->setObjectName(QStringLiteral("simulationSpeedChoice"));
+        a->setData(factor);
         a->setCheckable(true);
         a->setChecked(qFuzzyCompare(factor + 1, m_simulation->speed() + 1));
         speeds->addAction(a);
@@ -100,6 +142,8 @@ void MainWindow::buildSimulationMenu(QToolBar *bar) {
     for (const qint64 ms : {1, 2, 5, 10, 20, 50, 100}) {
         //: the virtual scan period, e.g. "10 ms"
         QAction *a = period->addAction(tr("%1 ms").arg(ms));
+        a->setObjectName(QStringLiteral("simulationPeriodChoice"));
+        a->setData(ms);
         a->setCheckable(true);
         a->setChecked(ms == m_simulation->periodMs());
         periods->addAction(a);
@@ -108,9 +152,12 @@ void MainWindow::buildSimulationMenu(QToolBar *bar) {
     }
     menu->addSeparator();
     menu->addAction(tr("Release All &Forces"), m_simulation, &SimulationController::releaseAll);
+    buildDebugMenu(menu); // main_window_debug.cpp
     bar->addSeparator();
     for (QAction *a : {run, pause, stop, scan})
         bar->addAction(a);
+    if (QAction *step = findChild<QAction *>(QStringLiteral("simulationStepInstruction")))
+        bar->addAction(step);
     updateSimulationStatus();
 }
 
@@ -118,14 +165,30 @@ void MainWindow::updateSimulationStatus() {
     using State = model::MonitorSource::RunState;
     const State state = m_simulation->runState();
     m_statusSimulation->setText(m_simulation->statusText());
+    const bool history = m_simulation->historyShown();
+    if (m_statusHistory) {
+        m_statusHistory->setVisible(history);
+        m_statusHistory->setText(m_simulation->historyText() + tr(" (read-only)"));
+    }
     const bool scanning = state == State::Running || state == State::Stepping;
     for (QAction *a : findChildren<QAction *>()) {
-        if (a->objectName() == QLatin1String("simulationRun"))
+        const QString name = a->objectName();
+        if (name == QLatin1String("simulationRun"))
             a->setEnabled(state != State::Running);
-        else if (a->objectName() == QLatin1String("simulationPause"))
+        else if (name == QLatin1String("simulationPause"))
             a->setEnabled(scanning);
-        else if (a->objectName() == QLatin1String("simulationStop"))
+        else if (name == QLatin1String("simulationStop"))
             a->setEnabled(state != State::Offline && state != State::Stopped);
+        else if (name == QLatin1String("simulationReturnToLive"))
+            a->setEnabled(history);
+        else if (name == QLatin1String("simulationFinishScan"))
+            a->setEnabled(m_simulation->session() && m_simulation->session()->snapshot() &&
+                          m_simulation->session()->snapshot()->pause.has_value());
+        // The speed and period chosen in the dock check the menu's entry too.
+        else if (name == QLatin1String("simulationSpeedChoice"))
+            a->setChecked(qFuzzyCompare(a->data().toDouble() + 1, m_simulation->speed() + 1));
+        else if (name == QLatin1String("simulationPeriodChoice"))
+            a->setChecked(a->data().toLongLong() == m_simulation->periodMs());
     }
 }
 

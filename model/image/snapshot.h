@@ -9,6 +9,7 @@
 #include <QtGlobal>
 
 #include <memory>
+#include <optional>
 #include <vector>
 
 namespace rung::model {
@@ -20,6 +21,19 @@ struct ScanStatistics {
     qint64 execNsCurrent = 0; // wall-clock time the last scan took to evaluate
     qint64 execNsMin = 0;
     qint64 execNsMax = 0;
+};
+
+// A scan stopped between two instructions (a breakpoint, or stepping one instruction at a
+// time): what the interpreter holds before `instruction` runs.
+struct ScanPause {
+    int instruction = -1;          // the next instruction to run (index in the list)
+    bool result = false;           // the logic result (accumulator) so far
+    std::vector<bool> blockStack;  // ANB/ORB, AND LD/OR LD operands, bottom first
+    std::vector<bool> memoryStack; // MPS/MRD/MPP, bottom first
+    bool interlock = true;         // false inside an open IL/MC whose condition is OFF
+    bool stepActive = true;        // false inside an STL block whose step is OFF
+    int breakpoint = -1;           // the breakpoint's instruction that stopped it; -1 a step
+    friend bool operator==(const ScanPause &, const ScanPause &) = default;
 };
 
 struct Snapshot {
@@ -34,6 +48,8 @@ struct Snapshot {
     // An online source lost its link to the PLC: the words are the last values read, kept so
     // the user still sees them, and no longer the PLC's. A simulation is never stale.
     bool stale = false;
+    // Set while the scan is stopped inside (the words then hold what the scan wrote so far).
+    std::optional<ScanPause> pause;
 
     bool bit(const Address &address) const {
         const BitRef r = layout ? layout->bit(address) : BitRef{};

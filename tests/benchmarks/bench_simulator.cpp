@@ -3,50 +3,33 @@
 // Runs on the synthetic Vigor-like target of the engine tests so it does not depend on the
 // device tables; the instruction mix is what a real program holds.
 
+#include "tests/benchmarks/compiled_scan.h"
+#include "tests/benchmarks/mixed_program.h"
 #include "tests/simulator/sim_test_target.h"
 
 #include "model/image/history.h"
 #include "model/listing/il.h"
 #include "simulator/compiler.h"
 #include "simulator/engine.h"
+#include "simulator/scan_history.h"
+
+#include "model/target/address.h"
 
 #include <QFile>
 
 #include <benchmark/benchmark.h>
 
+#include <algorithm>
 #include <chrono>
+#include <random>
 #include <string>
+#include <vector>
 
 using namespace rung;
 using namespace rung::simulator;
+using rung::bench::mixedProgram;
 
 namespace {
-
-// 128 rungs of 16 steps: contacts, a block, a stack branch, a timer, a counter, moves and
-// arithmetic.
-QString mixedProgram() {
-    QString p;
-    for (int r = 0; r < 128; ++r) {
-        const int a = r % 32;
-        const int b = (r * 7) % 32;
-        p += QStringLiteral("LD X%1\nAND M%2\nOR Y%3\nLD X%4\nORI M%5\nANB\nMPS\nAND X%6\n"
-                            "OUT M%7\nMPP\nTMR T%8 K50\nLD M%9\nCNT C%8 K10\nLD SM9000\n"
-                            "MOV D%10 D%11\nADD D%11 K3 D%12\n")
-                 .arg(a)
-                 .arg(r + 100)
-                 .arg(b)
-                 .arg((a + 5) % 32)
-                 .arg(r + 200)
-                 .arg((a + 9) % 32)
-                 .arg(r)
-                 .arg(r % 32)
-                 .arg((r + 1) % 128)
-                 .arg(r % 90)
-                 .arg((r + 3) % 90)
-                 .arg((r + 6) % 90);
-    }
-    return p;
-}
 
 // Traffic light (seed 004, 1.9 example 16): red 35 s, yellow 5 s, green 25 s, green blinking
 // 5 s; the same program as tests/data/sim/vigor_traffic_light.il.
@@ -125,6 +108,203 @@ void sideBySide(benchmark::State &state, Fixture &plain, Fixture &with, const ch
     state.counters["plain_ns_per_scan"] = plainNs / scans;
     state.counters[std::string(name) + "_ns_per_scan"] = withNs / scans;
     state.counters["ratio"] = plainNs > 0 ? withNs / plainNs : 0;
+}
+
+// Two ways of scanning alternated in blocks of 1000 scans, so machine noise hits both alike:
+// each block function runs its block and returns nothing; sets <a>_ns_per_scan,
+// <b>_ns_per_scan and ratio = b / a.
+template <typename A, typename B>
+void alternate(benchmark::State &state, const char *nameA, A blockA, const char *nameB, B blockB) {
+    using Clock = std::chrono::steady_clock;
+    constexpr int kBlock = 1000;
+    double aNs = 0;
+    double bNs = 0;
+    for (auto _ : state) {
+        auto start = Clock::now();
+        blockA(kBlock);
+        aNs += std::chrono::duration<double, std::nano>(Clock::now() - start).count();
+        start = Clock::now();
+        blockB(kBlock);
+        bNs += std::chrono::duration<double, std::nano>(Clock::now() - start).count();
+    }
+    const double scans = static_cast<double>(state.iterations()) * kBlock;
+    state.counters[std::string(nameA) + "_ns_per_scan"] = aNs / scans;
+    state.counters[std::string(nameB) + "_ns_per_scan"] = bNs / scans;
+    state.counters["ratio"] = aNs > 0 ? bNs / aNs : 0;
+}
+
+// The interpreter against compiled C++ of the same 2048 steps (issue 11: "the limit for an
+// interpreter is compiled code"): the generated code (generator/gen_compiled_scan.cpp) is
+// first checked to leave the engine's image scan after scan; ratio = engine / compiled.
+void BM_CompiledRatio(benchmark::State &state) {
+    Fixture f(mixedProgram());
+    if (!f.result.ok() || bench::kCompiledSteps != 2048 ||
+        bench::kCompiledWords != f.result.program->layout->wordCount()) {
+        state.SkipWithError("the generated program is not the benchmark's");
+        return;
+    }
+    const model::Address input = f.list.instructions[0].operands[0].address;
+    const model::BitRef inputBit = f.result.program->layout->bit(input);
+    std::vector<std::int32_t> words(static_cast<std::size_t>(bench::kCompiledWords), 0);
+    std::vector<std::int32_t> stimulus(words.size(), 0);
+    bench::CompiledState compiledState;
+    int k = 0;
+    auto stimulate = [&](int n) {
+        const bool on = (n & 8) != 0;
+        auto &w =
+            reinterpret_cast<std::uint32_t &>(stimulus[static_cast<std::size_t>(inputBit.word)]);
+        w = on ? (w | inputBit.mask) : (w & ~inputBit.mask);
+        f.engine.setBit(input, on);
+    };
+    for (; k < 2000; ++k) { // the same logic: the same image after every scan
+        stimulate(k);
+        f.engine.scan();
+        bench::compiledScan(words.data(), stimulus.data(), compiledState, 10);
+        if (words != f.engine.words()) {
+            state.SkipWithError("the compiled program and the engine differ");
+            return;
+        }
+    }
+    int a = k;
+    int b = k;
+    alternate(
+        state, "compiled",
+        [&](int n) {
+            for (int i = 0; i < n; ++i, ++a) {
+                const bool on = (a & 8) != 0;
+                auto &w = reinterpret_cast<std::uint32_t &>(
+                    stimulus[static_cast<std::size_t>(inputBit.word)]);
+                w = on ? (w | inputBit.mask) : (w & ~inputBit.mask);
+                bench::compiledScan(words.data(), stimulus.data(), compiledState, 10);
+            }
+        },
+        "engine",
+        [&](int n) {
+            for (int i = 0; i < n; ++i, ++b) {
+                f.engine.setBit(input, (b & 8) != 0);
+                f.engine.scan();
+            }
+        });
+    benchmark::DoNotOptimize(words.data());
+}
+
+// Breakpoints set (ten, on instructions spread over the program, with conditions that never
+// hold) against none: scanToBreakpoint runs the scan in segments between them, so the scan
+// should cost about the same (ratio = with breakpoints / plain).
+void BM_BreakpointRatio(benchmark::State &state) {
+    Fixture plain(mixedProgram());
+    Fixture armed(mixedProgram());
+    std::vector<Breakpoint> breakpoints;
+    for (int k = 0; k < 10; ++k) {
+        Breakpoint b;
+        b.instruction = 100 + k * 190;
+        b.when = Breakpoint::When::Compare;
+        b.device = armed.list.instructions[14].operands[0].address; // a D word
+        b.op = model::CompareOp::Eq;
+        b.value = 99999; // never
+        breakpoints.push_back(b);
+    }
+    if (!plain.result.ok() || !armed.engine.setBreakpoints(breakpoints)) {
+        state.SkipWithError("breakpoints not set");
+        return;
+    }
+    const model::Address input = plain.list.instructions[0].operands[0].address;
+    int a = 0;
+    int b = 0;
+    alternate(
+        state, "plain",
+        [&](int n) {
+            for (int i = 0; i < n; ++i, ++a) {
+                plain.engine.setBit(input, (a & 8) != 0);
+                plain.engine.scan();
+            }
+        },
+        "breakpoints",
+        [&](int n) {
+            for (int i = 0; i < n; ++i, ++b) {
+                armed.engine.setBit(input, (b & 8) != 0);
+                if (armed.engine.scanToBreakpoint() != ScanStop::Completed)
+                    state.SkipWithError("a breakpoint that never holds stopped the scan");
+            }
+        });
+}
+
+// What the session's history adds to every scan (ScanHistory::afterScan: a sum and a compare,
+// and a checkpoint each 10 ms of evaluation): ratio = recording / plain.
+void BM_ScanHistoryRatio(benchmark::State &state) {
+    Fixture plain(mixedProgram());
+    Fixture recording(mixedProgram());
+    ScanHistory history;
+    history.start(recording.engine);
+    sideBySide(state, plain, recording, "scan_history", [&](Fixture &f) {
+        history.afterScan(f.engine, f.engine.statistics().execNsCurrent);
+    });
+    state.counters["history_MB"] = static_cast<double>(history.window().bytes) / 1e6;
+}
+
+// Jumping the history to any scan of the last hour of the traffic light at 10 ms scans (issue
+// 11: <= 100 ms): an hour of the real Vigor listing recorded as a session records it (a lamp
+// forced once a minute, checkpoints each 10 ms of evaluation), then rebuilds of scans spread
+// over the hour. Reports the mean and the slowest jump and the history's memory.
+void BM_HistoryJumpTrafficLightHour(benchmark::State &state) {
+    QFile file(QStringLiteral(RUNG_TEST_DATA_DIR "/sim/vigor_traffic_light.il"));
+    if (!file.open(QIODevice::ReadOnly)) {
+        state.SkipWithError("vigor_traffic_light.il not found");
+        return;
+    }
+    const model::Target &vigor = model::Target::get(model::Family::Vigor);
+    const model::ParseResult parsed =
+        model::parseInstructionList(vigor, QString::fromUtf8(file.readAll()));
+    const CompileResult compiled = parsed.ok() ? compileProgram(parsed.list) : CompileResult{};
+    if (!compiled.ok()) {
+        state.SkipWithError("the traffic light did not compile");
+        return;
+    }
+    Engine engine(compiled.program);
+    engine.setPeriodMs(10);
+    ScanHistory history;
+    history.start(engine);
+    const auto x0 = std::get<model::Address>(model::parseAddress(vigor, QStringLiteral("X0")));
+    constexpr quint64 kHour = 360000;
+    for (quint64 k = 0; k < kHour; ++k) {
+        if (k % 6000 == 0) { // a stimulus once a minute, as a user's click
+            const EngineCommand c{0, model::DeviceCommand{model::DeviceCommand::Kind::WriteBit, x0,
+                                                          static_cast<qint64>((k / 6000) & 1)}};
+            history.record(engine, c);
+            applyCommand(engine, c, nullptr);
+        }
+        engine.scan();
+        history.afterScan(engine, engine.statistics().execNsCurrent);
+    }
+    const ScanHistory::Window window = history.window();
+    if (window.firstScan != 0 || window.lastScan != kHour) {
+        state.SkipWithError("the hour is not all in the window");
+        return;
+    }
+    std::mt19937_64 rng(42);
+    double slowest = 0;
+    double total = 0;
+    int jumps = 0;
+    for (auto _ : state) {
+        const quint64 scan = rng() % (kHour + 1);
+        const auto start = std::chrono::steady_clock::now();
+        const auto snapshot = history.rebuild(scan);
+        const double ms =
+            std::chrono::duration<double, std::milli>(std::chrono::steady_clock::now() - start)
+                .count();
+        benchmark::DoNotOptimize(snapshot);
+        if (!snapshot || snapshot->statistics.scans != scan) {
+            state.SkipWithError("a scan was not rebuilt");
+            return;
+        }
+        slowest = std::max(slowest, ms);
+        total += ms;
+        ++jumps;
+    }
+    state.counters["jump_mean_ms"] = jumps ? total / jumps : 0;
+    state.counters["jump_max_ms"] = slowest;
+    state.counters["checkpoints"] = static_cast<double>(window.checkpoints);
+    state.counters["history_MB"] = static_cast<double>(window.bytes) / 1e6;
 }
 
 // The cost of power-flow recording.
@@ -260,6 +440,19 @@ BENCHMARK(BM_ResolvedOperandsRatio)
     ->Unit(benchmark::kMillisecond)
     ->Repetitions(5)
     ->DisplayAggregatesOnly(true);
+BENCHMARK(BM_CompiledRatio)
+    ->Unit(benchmark::kMillisecond)
+    ->Repetitions(5)
+    ->DisplayAggregatesOnly(true);
+BENCHMARK(BM_BreakpointRatio)
+    ->Unit(benchmark::kMillisecond)
+    ->Repetitions(5)
+    ->DisplayAggregatesOnly(true);
+BENCHMARK(BM_ScanHistoryRatio)
+    ->Unit(benchmark::kMillisecond)
+    ->Repetitions(5)
+    ->DisplayAggregatesOnly(true);
+BENCHMARK(BM_HistoryJumpTrafficLightHour)->Unit(benchmark::kMillisecond)->Iterations(200);
 BENCHMARK(BM_TrafficLight24Hours)->Unit(benchmark::kMillisecond)->Iterations(1)->Repetitions(3);
 BENCHMARK(BM_TrafficLight24HoursVigorListing)
     ->Unit(benchmark::kMillisecond)

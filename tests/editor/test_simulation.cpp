@@ -1,7 +1,8 @@
 // Simulation in the IDE (issue 11, first slice): the Simulation menu and its keys, the
 // status section, the watch list fed by the running session, a program with errors that does
-// not start, and an edit that stops the simulation. The session is the real one: its engine
-// scans on its own thread, so the tests wait for its snapshots with the event loop running.
+// not start, and an edit while running (an online edit) or stopped. The session is the real one:
+// its engine scans on its own thread, so the tests wait for its snapshots with the event loop
+// running.
 
 #include "app/gui/simulation_controller.h"
 #include "editor/il_editor.h"
@@ -259,21 +260,28 @@ TEST_F(Simulation, TheWatchListShowsTheRunningValues) {
     EXPECT_EQ(watch->topLevelItem(0)->child(0)->text(1), QStringLiteral("ON"));
 }
 
-TEST_F(Simulation, EditingTheProgramStopsTheSimulationAndSaysSo) {
+// An edit while it runs is an online edit (test_simulation_debug.cpp has the rest); while
+// stopped, an edit drops the simulation and Run starts the edited program.
+TEST_F(Simulation, EditingWhileRunningIsAnOnlineEditAndWhileStoppedDropsTheSimulation) {
     load(kFlipFlop);
     ASSERT_TRUE(sim()->run());
     // A watch list is no part of what runs: the simulation goes on.
     window.document()->setWatchLists({{QStringLiteral("W"), {QStringLiteral("Y1")}}},
                                      QStringLiteral("watch"));
     EXPECT_EQ(sim()->runState(), State::Running);
-    load("LD X1\nOUT Y0\nEND\n");
+    simulator::SimulatorSession *session = sim()->session();
+    load("LD X1\nOUT Y0\nLDI Y1\nOUT Y1\nEND\n");
+    EXPECT_EQ(sim()->session(), session);
+    EXPECT_EQ(sim()->runState(), State::Running);
+    EXPECT_TRUE(window.statusBar()->currentMessage().startsWith(
+        QStringLiteral("Online edit: the edited program runs from the next scan on")))
+        << window.statusBar()->currentMessage().toStdString();
+    sim()->stop();
+    load("LD X2\nOUT Y0\nEND\n");
     EXPECT_EQ(sim()->session(), nullptr);
     EXPECT_EQ(sim()->runState(), State::Offline);
     EXPECT_EQ(window.watchListView()->monitorSource(), nullptr);
-    EXPECT_TRUE(window.statusBar()->currentMessage().contains(
-        QStringLiteral("The program was edited: the simulation stopped")))
-        << window.statusBar()->currentMessage().toStdString();
-    // Run starts the edited program: X1 is read now, not X0.
+    // Run starts the edited program.
     ASSERT_TRUE(sim()->run());
     ASSERT_NE(sim()->session(), nullptr);
 }

@@ -1,0 +1,270 @@
+#include "main_window.h"
+
+#include "breakpoint_dialog.h"
+#include "scan_debugger_view.h"
+#include "simulation_controller.h"
+#include "simulation_panel.h"
+
+#include "editor/il_editor.h"
+#include "editor/ladder_view.h"
+#include "simulator/session.h"
+
+#include <QAction>
+#include <QDockWidget>
+#include <QMenu>
+#include <QMessageBox>
+#include <QPushButton>
+#include <QScrollArea>
+#include <QStatusBar>
+#include <QStyle>
+
+// The simulation's docks (Simulation: run N scans, run for, speed, period, statistics,
+// history; Scan Debugger: the stopped scan and the breakpoints), breakpoints in the list's
+// margin and on the ladder's rungs, the stopped instruction shown in both views, and the
+// question an online edit asks. Keys (docs/user-guide.md): Ctrl+B toggles a breakpoint,
+// Ctrl+Shift+B its condition, Ctrl+F12 steps one instruction, Shift+F12 finishes the scan,
+// Ctrl+Shift+L returns from the history to live; all clear of the ladder's F5..F9 and
+// Ctrl+F9/F10 and of the other menus.
+
+namespace rung::app {
+
+void MainWindow::setupDebugging() {
+    m_simulationPanel = new SimulationPanel(m_simulation);
+    m_simulationPanel->setObjectName(QStringLiteral("simulationPanel"));
+    auto *scroll = new QScrollArea;
+    scroll->setWidgetResizable(true);
+    scroll->setFrameShape(QFrame::NoFrame);
+    scroll->setWidget(m_simulationPanel);
+    auto *panelDock = new QDockWidget(tr("Simulation"), this);
+    panelDock->setObjectName(QStringLiteral("simulationDock"));
+    panelDock->setWidget(scroll);
+    addDockWidget(Qt::RightDockWidgetArea, panelDock);
+
+    m_scanDebugger = new ScanDebuggerView(m_simulation, m_document);
+    m_scanDebugger->setObjectName(QStringLiteral("scanDebugger"));
+    auto *debugDock = new QDockWidget(tr("Scan Debugger"), this);
+    debugDock->setObjectName(QStringLiteral("scanDebuggerDock"));
+    debugDock->setWidget(m_scanDebugger);
+    addDockWidget(Qt::RightDockWidgetArea, debugDock);
+    tabifyDockWidget(panelDock, debugDock);
+    // Out of the way until a simulation starts: the ladder keeps its width for drawing.
+    panelDock->hide();
+    debugDock->hide();
+
+    connect(m_simulation, &SimulationController::sessionChanged, this,
+            [this, panelDock](simulator::SimulatorSession *session) {
+                if (session && !m_simulationDocksShown) {
+                    m_simulationDocksShown = true;
+                    panelDock->show();
+                    panelDock->raise();
+                }
+            });
+    connect(m_il, &editor::IlEditor::breakpointToggleRequested, this, [this](int line) {
+        const int instruction = instructionAtLine(line);
+        if (instruction < 0) {
+            statusBar()->showMessage(tr("No instruction on line %1 to stop at").arg(line), 5000);
+            return;
+        }
+        m_simulation->toggleBreakpoint(instruction);
+    });
+    connect(m_ladder, &editor::LadderView::breakpointToggleRequested, this, [this](int rung) {
+        const auto &first = m_document->listing().rungFirst;
+        if (rung >= 0 && static_cast<std::size_t>(rung) + 1 < first.size() &&
+            first[static_cast<std::size_t>(rung)] < first[static_cast<std::size_t>(rung) + 1])
+            m_simulation->toggleBreakpoint(first[static_cast<std::size_t>(rung)]);
+        else
+            statusBar()->showMessage(
+                tr("Rung %1 is not in the instruction list: no breakpoint there").arg(rung + 1),
+                5000);
+    });
+    connect(m_simulation, &SimulationController::breakpointsChanged, this,
+            &MainWindow::updateBreakpointMarks);
+    connect(m_document, &editor::Document::programChanged, this,
+            &MainWindow::updateBreakpointMarks);
+    connect(m_simulation, &SimulationController::stoppedAtChanged, this,
+            [this, debugDock](int instruction) {
+                showStoppedAt(instruction);
+                if (instruction >= 0) {
+                    debugDock->show();
+                    debugDock->raise();
+                }
+                updateSimulationStatus();
+            });
+    connect(m_scanDebugger, &ScanDebuggerView::editConditionRequested, this,
+            &MainWindow::editBreakpointCondition);
+    connect(m_scanDebugger, &ScanDebuggerView::goToInstruction, this, [this](int instruction) {
+        const auto &origin = m_document->listing().origin;
+        if (instruction >= 0 && static_cast<std::size_t>(instruction) < origin.size())
+            m_ladder->setCursor({origin[static_cast<std::size_t>(instruction)].rung, 0, 0});
+    });
+    m_simulation->setAsker([this](const QString &question, bool canKeep) {
+        QMessageBox box(QMessageBox::Question, tr("Online Edit"), question, QMessageBox::NoButton,
+                        this);
+        QPushButton *keep =
+            canKeep ? box.addButton(tr("Apply Keeping the Memory"), QMessageBox::AcceptRole)
+                    : nullptr;
+        QPushButton *restart = box.addButton(tr("Restart from Power-On"), QMessageBox::ActionRole);
+        QPushButton *stop = box.addButton(tr("Stop the Simulation"), QMessageBox::RejectRole);
+        box.setDefaultButton(keep ? keep : restart);
+        box.exec();
+        if (box.clickedButton() == keep && keep)
+            return SimulationController::EditChoice::KeepImage;
+        if (box.clickedButton() == restart)
+            return SimulationController::EditChoice::Restart;
+        Q_UNUSED(stop);
+        return SimulationController::EditChoice::StopSimulation;
+    });
+}
+
+void MainWindow::buildDebugMenu(QMenu *menu) {
+    const auto add = [this, menu](const char *name, const QString &text, const QKeySequence &key,
+                                  auto slot) {
+        QAction *a = menu->addAction(text, this, slot);
+        a->setObjectName(QString::fromLatin1(name));
+        a->setShortcut(key);
+        a->setToolTip(QStringLiteral("%1 (%2)").arg(QString(text).remove(QLatin1Char('&')),
+                                                    key.toString(QKeySequence::NativeText)));
+        return a;
+    };
+    menu->addSeparator();
+    add("simulationStepInstruction", tr("S&tep Instruction"), QKeySequence(Qt::CTRL | Qt::Key_F12),
+        [this] { m_simulation->stepInstruction(); })
+        ->setIcon(style()->standardIcon(QStyle::SP_ArrowRight));
+    add("simulationFinishScan", tr("F&inish Scan"), QKeySequence(Qt::SHIFT | Qt::Key_F12),
+        [this] { m_simulation->finishScan(); });
+    add("simulationToggleBreakpoint", tr("Toggle &Breakpoint"), QKeySequence(Qt::CTRL | Qt::Key_B),
+        [this] { toggleBreakpointHere(); });
+    add("simulationBreakpointCondition", tr("Breakpoint Co&ndition..."),
+        QKeySequence(Qt::CTRL | Qt::SHIFT | Qt::Key_B), [this] {
+            int instruction = -1;
+            if (m_il->hasFocus()) {
+                int line = 0, index = 0;
+                m_il->getCursorPosition(&line, &index);
+                instruction = instructionAtLine(line + 1);
+            } else {
+                const auto &first = m_document->listing().rungFirst;
+                const int rung = m_ladder->cursor().rung;
+                if (rung >= 0 && static_cast<std::size_t>(rung) + 1 < first.size())
+                    instruction = first[static_cast<std::size_t>(rung)];
+            }
+            if (instruction < 0)
+                statusBar()->showMessage(tr("No instruction here to stop at"), 5000);
+            else
+                editBreakpointCondition(instruction);
+        });
+    menu->addAction(tr("Remove All Brea&kpoints"), m_simulation,
+                    &SimulationController::clearBreakpoints);
+    menu->addSeparator();
+    add("simulationReturnToLive", tr("Return to &Live"),
+        QKeySequence(Qt::CTRL | Qt::SHIFT | Qt::Key_L), [this] { m_simulation->returnToLive(); });
+    menu->addSeparator();
+    for (const char *dock : {"simulationDock", "scanDebuggerDock"})
+        if (auto *d = findChild<QDockWidget *>(QString::fromLatin1(dock)))
+            menu->addAction(d->toggleViewAction());
+}
+
+void MainWindow::retranslateSimulation() {
+    if (auto *dock = findChild<QDockWidget *>(QStringLiteral("simulationDock")))
+        dock->setWindowTitle(tr("Simulation"));
+    if (auto *dock = findChild<QDockWidget *>(QStringLiteral("scanDebuggerDock")))
+        dock->setWindowTitle(tr("Scan Debugger"));
+    m_simulationPanel->retranslate();
+    m_scanDebugger->retranslate();
+    updateSimulationStatus();
+}
+
+int MainWindow::instructionAtLine(int line) const {
+    // Lines are counted in the canonical text; a text as typed has lines of its own.
+    if (m_il->text() != m_document->listingText())
+        return -1;
+    return m_document->printedListing().instructionAt(line);
+}
+
+void MainWindow::toggleBreakpointHere() {
+    int instruction = -1;
+    QString where;
+    if (m_il->hasFocus()) {
+        int line = 0, index = 0;
+        m_il->getCursorPosition(&line, &index);
+        instruction = instructionAtLine(line + 1);
+        where = tr("line %1").arg(line + 1);
+    } else {
+        const auto &first = m_document->listing().rungFirst;
+        const int rung = m_ladder->cursor().rung;
+        if (rung >= 0 && static_cast<std::size_t>(rung) + 1 < first.size() &&
+            first[static_cast<std::size_t>(rung)] < first[static_cast<std::size_t>(rung) + 1])
+            instruction = first[static_cast<std::size_t>(rung)];
+        where = tr("rung %1").arg(rung + 1);
+    }
+    if (instruction < 0) {
+        statusBar()->showMessage(tr("No instruction at %1 to stop at").arg(where), 5000);
+        return;
+    }
+    statusBar()->showMessage(m_simulation->toggleBreakpoint(instruction)
+                                 ? tr("Breakpoint set at %1").arg(where)
+                                 : tr("Breakpoint at %1 removed").arg(where),
+                             5000);
+}
+
+void MainWindow::editBreakpointCondition(int instruction) {
+    const auto &list = m_document->listing().list.instructions;
+    if (instruction < 0 || static_cast<std::size_t>(instruction) >= list.size())
+        return;
+    const SimulationController::BreakpointSpec *existing = m_simulation->breakpointAt(instruction);
+    const auto &printed = m_document->printedListing();
+    const auto i = static_cast<std::size_t>(instruction);
+    //: where the breakpoint is: %1 line, %2 the instruction
+    const QString place =
+        tr("Stop before line %1: %2")
+            .arg(i < printed.instructionLine.size() ? printed.instructionLine[i] : 0)
+            .arg(model::printInstruction(m_document->target(), list[i]));
+    BreakpointDialog dialog(m_document->target(), place,
+                            existing ? *existing : SimulationController::BreakpointSpec{}, this);
+    if (dialog.exec() == QDialog::Accepted)
+        m_simulation->setBreakpoint(instruction, dialog.breakpoint());
+}
+
+void MainWindow::updateBreakpointMarks() {
+    std::map<int, bool> lines;
+    std::map<int, bool> rungs;
+    const auto &printed = m_document->printedListing();
+    for (const SimulationController::BreakpointSpec &b : m_simulation->breakpoints()) {
+        const int at = m_simulation->instructionOf(b);
+        if (at < 0)
+            continue;
+        const bool conditional = b.when != simulator::Breakpoint::When::Always;
+        rungs[b.rung] = rungs[b.rung] || conditional;
+        if (static_cast<std::size_t>(at) < printed.instructionLine.size())
+            lines[printed.instructionLine[static_cast<std::size_t>(at)]] = conditional;
+    }
+    m_ladder->setBreakpointRungs(rungs);
+    m_il->setBreakpointLines(m_il->text() == m_document->listingText() ? lines
+                                                                       : std::map<int, bool>{});
+}
+
+void MainWindow::showStoppedAt(int instruction) {
+    const auto &origin = m_document->listing().origin;
+    const auto &printed = m_document->printedListing();
+    if (instruction < 0 || static_cast<std::size_t>(instruction) >= origin.size()) {
+        m_ladder->setStoppedAt({-1, -1, -1});
+        m_il->setStoppedLine(0);
+        return;
+    }
+    const auto i = static_cast<std::size_t>(instruction);
+    const model::CellOrigin &o = origin[i];
+    editor::CellCursor at{o.rung, -1, -1};
+    const auto &rungs = m_document->ladder().rungs;
+    if (o.row >= 0 && o.rung >= 0 && static_cast<std::size_t>(o.rung) < rungs.size()) {
+        // An output stands in the output column, which every rung draws at gridColumns.
+        const bool output = o.column >= rungs[static_cast<std::size_t>(o.rung)].columns;
+        at.row = o.row;
+        at.column = output ? m_ladder->metrics().gridColumns : o.column;
+    }
+    m_ladder->setStoppedAt(at);
+    m_il->setStoppedLine(m_il->text() == m_document->listingText() &&
+                                 i < printed.instructionLine.size()
+                             ? printed.instructionLine[i]
+                             : 0);
+}
+
+} // namespace rung::app

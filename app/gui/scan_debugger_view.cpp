@@ -1,0 +1,252 @@
+#include "scan_debugger_view.h"
+
+#include "simulation_controller.h"
+
+#include "editor/document.h"
+#include "simulator/session.h"
+
+#include <QGridLayout>
+#include <QHBoxLayout>
+#include <QHeaderView>
+#include <QLabel>
+#include <QListWidget>
+#include <QPushButton>
+#include <QTreeWidget>
+#include <QVBoxLayout>
+
+namespace rung::app {
+
+namespace {
+
+QString onOff(bool on) {
+    return on ? ScanDebuggerView::tr("ON") : ScanDebuggerView::tr("OFF");
+}
+
+// A stack as list rows, top first (as a debugger shows a call stack), each with its depth.
+void fillStack(QListWidget *list, const std::vector<bool> &stack) {
+    list->clear();
+    for (std::size_t k = stack.size(); k-- > 0;) {
+        const QString text =
+            k + 1 == stack.size()
+                //: a stack entry: %1 depth (1 = bottom), %2 ON/OFF
+                ? ScanDebuggerView::tr("%1: %2 (top)").arg(k + 1).arg(onOff(stack[k]))
+                : ScanDebuggerView::tr("%1: %2").arg(k + 1).arg(onOff(stack[k]));
+        list->addItem(text);
+    }
+    if (stack.empty())
+        list->addItem(ScanDebuggerView::tr("(empty)"));
+}
+
+QStringList items(const QListWidget *list) {
+    QStringList all;
+    for (int k = list->count(); k-- > 0;) // bottom first
+        all << list->item(k)->text();
+    return all;
+}
+
+} // namespace
+
+ScanDebuggerView::ScanDebuggerView(SimulationController *simulation, editor::Document *document,
+                                   QWidget *parent)
+    : QWidget(parent)
+    , m_simulation(simulation)
+    , m_document(document) {
+    auto *layout = new QVBoxLayout(this);
+    m_position = new QLabel;
+    m_position->setObjectName(QStringLiteral("debuggerPosition"));
+    m_position->setWordWrap(true);
+    m_position->setTextInteractionFlags(Qt::TextSelectableByMouse);
+    layout->addWidget(m_position);
+    auto *grid = new QGridLayout;
+    m_resultCaption = new QLabel;
+    m_result = new QLabel;
+    m_result->setObjectName(QStringLiteral("debuggerResult"));
+    QFont bold = m_result->font();
+    bold.setBold(true);
+    m_result->setFont(bold);
+    grid->addWidget(m_resultCaption, 0, 0);
+    grid->addWidget(m_result, 0, 1);
+    m_gates = new QLabel;
+    m_gates->setWordWrap(true);
+    grid->addWidget(m_gates, 1, 0, 1, 2);
+    m_blocksCaption = new QLabel;
+    m_blocks = new QListWidget;
+    m_blocks->setObjectName(QStringLiteral("debuggerBlockStack"));
+    m_stackCaption = new QLabel;
+    m_stack = new QListWidget;
+    m_stack->setObjectName(QStringLiteral("debuggerMpsStack"));
+    for (QListWidget *l : {m_blocks, m_stack})
+        l->setMaximumHeight(fontMetrics().height() * 5);
+    grid->addWidget(m_blocksCaption, 2, 0);
+    grid->addWidget(m_stackCaption, 2, 1);
+    grid->addWidget(m_blocks, 3, 0);
+    grid->addWidget(m_stack, 3, 1);
+    layout->addLayout(grid);
+    auto *buttons = new QHBoxLayout;
+    m_step = new QPushButton;
+    m_finish = new QPushButton;
+    m_continue = new QPushButton;
+    for (QPushButton *b : {m_step, m_finish, m_continue})
+        buttons->addWidget(b);
+    layout->addLayout(buttons);
+    m_breakpointsCaption = new QLabel;
+    layout->addWidget(m_breakpointsCaption);
+    m_breakpoints = new QTreeWidget;
+    m_breakpoints->setObjectName(QStringLiteral("breakpointList"));
+    m_breakpoints->setColumnCount(2);
+    m_breakpoints->setRootIsDecorated(false);
+    m_breakpoints->header()->setStretchLastSection(true);
+    m_breakpoints->setWordWrap(true);
+    layout->addWidget(m_breakpoints, 1);
+    auto *bpButtons = new QHBoxLayout;
+    m_condition = new QPushButton;
+    m_remove = new QPushButton;
+    m_removeAll = new QPushButton;
+    for (QPushButton *b : {m_condition, m_remove, m_removeAll})
+        bpButtons->addWidget(b);
+    layout->addLayout(bpButtons);
+
+    connect(m_step, &QPushButton::clicked, simulation, &SimulationController::stepInstruction);
+    connect(m_finish, &QPushButton::clicked, simulation, &SimulationController::finishScan);
+    connect(m_continue, &QPushButton::clicked, simulation, &SimulationController::run);
+    auto selected = [this]() -> int {
+        const QTreeWidgetItem *item = m_breakpoints->currentItem();
+        return item ? item->data(0, Qt::UserRole).toInt() : -1;
+    };
+    connect(m_condition, &QPushButton::clicked, this, [this, selected] {
+        if (selected() >= 0)
+            emit editConditionRequested(selected());
+    });
+    connect(m_remove, &QPushButton::clicked, this, [this, selected] {
+        if (selected() >= 0)
+            m_simulation->removeBreakpoint(selected());
+    });
+    connect(m_removeAll, &QPushButton::clicked, simulation,
+            &SimulationController::clearBreakpoints);
+    connect(m_breakpoints, &QTreeWidget::itemDoubleClicked, this, [this](QTreeWidgetItem *item) {
+        emit goToInstruction(item->data(0, Qt::UserRole).toInt());
+    });
+    connect(simulation, &SimulationController::breakpointsChanged, this,
+            &ScanDebuggerView::refreshBreakpoints);
+    connect(simulation, &SimulationController::statusChanged, this, &ScanDebuggerView::refresh);
+    connect(simulation, &SimulationController::stoppedAtChanged, this, &ScanDebuggerView::refresh);
+    retranslate();
+}
+
+void ScanDebuggerView::retranslate() {
+    m_resultCaption->setText(tr("Logic result:"));
+    m_blocksCaption->setText(tr("Block stack (ANB/ORB):"));
+    m_stackCaption->setText(tr("MPS stack:"));
+    m_step->setText(tr("Step Instruction"));
+    m_finish->setText(tr("Finish Scan"));
+    m_continue->setText(tr("Continue"));
+    m_breakpointsCaption->setText(tr("Breakpoints:"));
+    m_breakpoints->setHeaderLabels({tr("Where"), tr("Stops")});
+    m_condition->setText(tr("Condition..."));
+    m_remove->setText(tr("Remove"));
+    m_removeAll->setText(tr("Remove All"));
+    refresh();
+    refreshBreakpoints();
+}
+
+QString ScanDebuggerView::positionText() const {
+    return m_position->text();
+}
+
+QString ScanDebuggerView::resultText() const {
+    return m_result->text();
+}
+
+QStringList ScanDebuggerView::blockStack() const {
+    return items(m_blocks);
+}
+
+QStringList ScanDebuggerView::memoryStack() const {
+    return items(m_stack);
+}
+
+void ScanDebuggerView::refresh() {
+    simulator::SimulatorSession *session = m_simulation->session();
+    const auto snapshot = session ? session->snapshot() : nullptr;
+    const bool inside = snapshot && snapshot->pause.has_value();
+    const bool live = !m_simulation->historyShown();
+    m_step->setEnabled(live);
+    m_finish->setEnabled(live && inside);
+    m_continue->setEnabled(live && session);
+    if (!inside) {
+        m_position->setText(session ? tr("Not stopped inside a scan. Step Instruction starts a "
+                                         "scan and stops before its first instruction; a "
+                                         "breakpoint stops a running scan.")
+                                    : tr("The simulation is off."));
+        m_result->clear();
+        m_gates->clear();
+        fillStack(m_blocks, {});
+        fillStack(m_stack, {});
+        return;
+    }
+    const model::ScanPause &p = *snapshot->pause;
+    const auto &list = m_document->listing().list.instructions;
+    const auto &printed = m_document->printedListing();
+    const auto &first = m_document->listing().rungFirst;
+    QString what;
+    if (p.instruction >= 0 && static_cast<std::size_t>(p.instruction) < list.size()) {
+        const auto i = static_cast<std::size_t>(p.instruction);
+        const int line = i < printed.instructionLine.size() ? printed.instructionLine[i] : 0;
+        const auto rung =
+            std::upper_bound(first.begin(), first.end(), p.instruction) - first.begin();
+        //: %1 step, %2 line, %3 rung, %4 the instruction, e.g. "OUT Y0"
+        what = tr("Stopped before step %1 (line %2, rung %3): %4")
+                   .arg(list[i].step)
+                   .arg(line)
+                   .arg(rung)
+                   .arg(model::printInstruction(m_document->target(), list[i]));
+    } else {
+        what = tr("Stopped at the end of the program");
+    }
+    what += QLatin1Char('\n') + (p.breakpoint >= 0 ? tr("A breakpoint stopped the scan.")
+                                                   : tr("Stepping one instruction at a time."));
+    m_position->setText(what);
+    m_result->setText(onOff(p.result));
+    QStringList gates;
+    if (!p.interlock)
+        gates << tr("Inside an interlock (IL/MC) whose condition is OFF");
+    if (!p.stepActive)
+        gates << tr("Inside a step (STL) that is not active");
+    m_gates->setText(gates.join(QLatin1Char('\n')));
+    fillStack(m_blocks, p.blockStack);
+    fillStack(m_stack, p.memoryStack);
+}
+
+void ScanDebuggerView::refreshBreakpoints() {
+    m_breakpoints->clear();
+    const auto &list = m_document->listing().list.instructions;
+    const auto &printed = m_document->printedListing();
+    for (const SimulationController::BreakpointSpec &b : m_simulation->breakpoints()) {
+        const int at = m_simulation->instructionOf(b);
+        auto *item = new QTreeWidgetItem(m_breakpoints);
+        item->setData(0, Qt::UserRole, at);
+        if (at < 0) {
+            item->setText(0, tr("Rung %1 (no longer there)").arg(b.rung + 1));
+        } else {
+            const auto i = static_cast<std::size_t>(at);
+            const int line = i < printed.instructionLine.size() ? printed.instructionLine[i] : 0;
+            //: %1 rung, %2 line, %3 the instruction
+            item->setText(0, tr("Rung %1, line %2: %3")
+                                 .arg(b.rung + 1)
+                                 .arg(line)
+                                 .arg(i < list.size()
+                                          ? model::printInstruction(m_document->target(), list[i])
+                                          : QString()));
+        }
+        item->setText(1, m_simulation->conditionText(b));
+    }
+    // The place is the longer text: it takes what the condition leaves.
+    m_breakpoints->resizeColumnToContents(0);
+    m_breakpoints->setColumnWidth(
+        0, std::min(m_breakpoints->columnWidth(0), m_breakpoints->viewport()->width() * 2 / 3));
+    m_condition->setEnabled(!m_simulation->breakpoints().empty());
+    m_remove->setEnabled(!m_simulation->breakpoints().empty());
+    m_removeAll->setEnabled(!m_simulation->breakpoints().empty());
+}
+
+} // namespace rung::app

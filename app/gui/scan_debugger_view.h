@@ -1,0 +1,69 @@
+#pragma once
+
+// The Scan Debugger dock: where a stopped scan is (the instruction it stops before, its line
+// and rung, and whether a breakpoint or a step stopped it), the logic result, the block stack
+// (ANB/ORB, AND LD/OR LD) and the MPS stack as the interpreter holds them, the interlock and
+// step state; buttons to step one instruction, finish the scan and continue; and the list of
+// breakpoints with their conditions.
+
+#include <QWidget>
+
+class QLabel;
+class QListWidget;
+class QPushButton;
+class QTreeWidget;
+
+namespace rung::editor {
+class Document;
+}
+
+namespace rung::app {
+
+class SimulationController;
+
+class ScanDebuggerView : public QWidget {
+    Q_OBJECT
+
+public:
+    ScanDebuggerView(SimulationController *simulation, editor::Document *document,
+                     QWidget *parent = nullptr);
+
+    void refresh();
+    void retranslate();
+
+    // For tests: what the view shows.
+    QString positionText() const;
+    QString resultText() const;
+    QStringList blockStack() const; // bottom first
+    QStringList memoryStack() const;
+    QTreeWidget *breakpointList() const { return m_breakpoints; }
+
+signals:
+    // The user asks to edit the condition of the breakpoint on this instruction.
+    void editConditionRequested(int instruction);
+    void goToInstruction(int instruction);
+
+private:
+    void refreshBreakpoints();
+
+    SimulationController *m_simulation;
+    editor::Document *m_document;
+    QLabel *m_position;
+    QLabel *m_resultCaption;
+    QLabel *m_result;
+    QLabel *m_blocksCaption;
+    QListWidget *m_blocks;
+    QLabel *m_stackCaption;
+    QListWidget *m_stack;
+    QLabel *m_gates;
+    QPushButton *m_step;
+    QPushButton *m_finish;
+    QPushButton *m_continue;
+    QLabel *m_breakpointsCaption;
+    QTreeWidget *m_breakpoints;
+    QPushButton *m_condition;
+    QPushButton *m_remove;
+    QPushButton *m_removeAll;
+};
+
+} // namespace rung::app
