@@ -60,9 +60,10 @@ void Compiler::compileTimer(const model::Instruction &ins, Step &s) {
         s.x.index = s.y.index;
     }
     loadPresetFromMemory(t->address, s);
-    if (t->address.index < m_sem.downTimersBelow)
+    if (model::timerCountsDown(m_target, t->address))
         s.flags |= kDown;
-    double base = ins.spec->timerBaseMs > 0 ? ins.spec->timerBaseMs : m_target.defaultTimerBaseMs;
+    // The time base: the instruction's own, a PL110 timer's third operand, else the target's.
+    const double base = model::timerBaseMs(m_target, ins);
     if (m_sem.timerCountsInWord) {
         // PL110 TON / TOFF / TONR T PT [base]: the time base is the third operand (10, 100 or
         // 1000 ms, seed 003 4.2.4); the current value lives in the T word so that
@@ -72,10 +73,6 @@ void Compiler::compileTimer(const model::Instruction &ins, Step &s) {
             ins.spec->timerMode == model::TimerMode::OffDelay       ? PlTimerMode::OffDelay
             : ins.spec->timerMode == model::TimerMode::Accumulating ? PlTimerMode::Accumulating
                                                                     : PlTimerMode::OnDelay);
-        // Which bases are allowed is the operand's allowedValues in the table, checked by
-        // reportBreaches before this runs.
-        if (ins.operands.size() > 2 && ins.operands[2].kind == model::Operand::Kind::Constant)
-            base = static_cast<double>(ins.operands[2].constant.value);
     }
     s.count = std::max(1, static_cast<int>(base));
 }

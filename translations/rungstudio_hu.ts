@@ -255,25 +255,25 @@ Kilépési kód: 0 nincs hiba, 1 a programban hiba van, 2 használati vagy I/O h
 <context>
     <name>rung::app::MainWindow</name>
     <message>
-        <location filename="../app/gui/main_window.cpp" line="+154"/>
+        <location filename="../app/gui/main_window.cpp" line="+156"/>
         <source>Problems</source>
         <translation>Problémák</translation>
     </message>
     <message>
         <location line="+5"/>
-        <location line="+263"/>
+        <location line="+284"/>
         <source>Project</source>
         <translation>Projekt</translation>
     </message>
     <message>
-        <location line="-256"/>
-        <location line="+259"/>
+        <location line="-277"/>
+        <location line="+280"/>
         <source>Symbols</source>
         <translation>Szimbólumok</translation>
     </message>
     <message>
-        <location line="-255"/>
-        <location line="+256"/>
+        <location line="-276"/>
+        <location line="+277"/>
         <source>Watch lists</source>
         <translation>Figyelőlisták</translation>
     </message>
@@ -651,7 +651,7 @@ Ladder and instruction-list editor for VPC, Vigor, CPM1 and PL110.</source>
 Létradiagram- és utasításlista-szerkesztő VPC, Vigor, CPM1 és PL110 PLC-khez.</translation>
     </message>
     <message>
-        <location filename="../app/gui/main_window.cpp" line="-238"/>
+        <location filename="../app/gui/main_window.cpp" line="-259"/>
         <source>Rung Comment</source>
         <translation>Létrafok megjegyzése</translation>
     </message>
@@ -662,23 +662,23 @@ Létradiagram- és utasításlista-szerkesztő VPC, Vigor, CPM1 és PL110 PLC-kh
     </message>
     <message>
         <location line="+22"/>
-        <location line="+218"/>
+        <location line="+239"/>
         <source>Ladder</source>
         <translation>Létradiagram</translation>
     </message>
     <message>
-        <location line="-217"/>
-        <location line="+218"/>
+        <location line="-238"/>
+        <location line="+239"/>
         <source>Instruction List</source>
         <translation>Utasításlista</translation>
     </message>
     <message>
-        <location line="-205"/>
+        <location line="-226"/>
         <source>The list as typed had errors and now shows the ladder&apos;s program; Ctrl+Z in the list brings it back</source>
         <translation>A begépelt lista hibás volt, most a létradiagram programját mutatja; a listában a Ctrl+Z visszahozza</translation>
     </message>
     <message>
-        <location line="+63"/>
+        <location line="+79"/>
         <source>&lt;b&gt;%1&lt;/b&gt;&lt;br&gt;Target: %2, model %3&lt;br&gt;%4, %5</source>
         <translation>&lt;b&gt;%1&lt;/b&gt;&lt;br&gt;PLC-család: %2, modell: %3&lt;br&gt;%4, %5</translation>
     </message>
@@ -969,7 +969,7 @@ Létradiagram- és utasításlista-szerkesztő VPC, Vigor, CPM1 és PL110 PLC-kh
         <translation>%1 cseréje erre: %2</translation>
     </message>
     <message>
-        <location filename="../app/gui/main_window.cpp" line="+87"/>
+        <location filename="../app/gui/main_window.cpp" line="+92"/>
         <location filename="../app/gui/main_window_tools.cpp" line="+6"/>
         <source>Cross Reference</source>
         <translation>Kereszthivatkozás</translation>
@@ -985,7 +985,7 @@ Létradiagram- és utasításlista-szerkesztő VPC, Vigor, CPM1 és PL110 PLC-kh
         <translation>Az utasításlistában hibák vannak, ezért a létra még az utolsó hibátlan programot mutatja: a szimuláció előtt javítsa a listát (vagy vonja vissza a módosítást)</translation>
     </message>
     <message>
-        <location line="+34"/>
+        <location line="+38"/>
         <source>&amp;Simulation</source>
         <translation>Szi&amp;muláció</translation>
     </message>
@@ -1044,6 +1044,26 @@ Létradiagram- és utasításlista-szerkesztő VPC, Vigor, CPM1 és PL110 PLC-kh
         <location line="+8"/>
         <source>Release All &amp;Forces</source>
         <translation>&amp;Minden kényszerítés feloldása</translation>
+    </message>
+    <message>
+        <location filename="../app/gui/main_window_monitor.cpp" line="+32"/>
+        <source>Simulation</source>
+        <translation>Szimuláció</translation>
+    </message>
+    <message>
+        <location line="+2"/>
+        <source>Online PLC</source>
+        <translation>Online PLC</translation>
+    </message>
+    <message>
+        <location line="+2"/>
+        <source>History (read-only)</source>
+        <translation>Előzmények (csak olvasható)</translation>
+    </message>
+    <message>
+        <location line="+18"/>
+        <source>The ladder, the instruction list and the watch lists show the values of: %1</source>
+        <translation>A létradiagram, az utasításlista és a figyelőlisták értékeinek forrása: %1</translation>
     </message>
 </context>
 <context>
@@ -1836,7 +1856,7 @@ Létradiagram- és utasításlista-szerkesztő VPC, Vigor, CPM1 és PL110 PLC-kh
 <context>
     <name>rung::editor::IlEditor</name>
     <message>
-        <location filename="../editor/il_editor.cpp" line="+247"/>
+        <location filename="../editor/il_editor.cpp" line="+248"/>
         <source>Instruction list</source>
         <translation>Utasításlista</translation>
     </message>
@@ -1887,17 +1907,17 @@ Létradiagram- és utasításlista-szerkesztő VPC, Vigor, CPM1 és PL110 PLC-kh
 <context>
     <name>rung::editor::LadderView</name>
     <message>
-        <location filename="../editor/ladder_view.cpp" line="+37"/>
+        <location filename="../editor/ladder_view.cpp" line="+40"/>
         <source>Ladder diagram</source>
         <translation>Létradiagram</translation>
     </message>
     <message>
-        <location line="+94"/>
+        <location line="+98"/>
         <source>Edit rung comment</source>
         <translation>Létrafok megjegyzésének szerkesztése</translation>
     </message>
     <message>
-        <location line="+167"/>
+        <location line="+181"/>
         <source>Type one instruction, for example &quot;%1 X0&quot;</source>
         <translation>Egy utasítást írjon be, például: &quot;%1 X0&quot;</translation>
     </message>
@@ -1954,7 +1974,7 @@ Létradiagram- és utasításlista-szerkesztő VPC, Vigor, CPM1 és PL110 PLC-kh
         <translation>Függőleges összekötés rajzolása</translation>
     </message>
     <message>
-        <location filename="../editor/ladder_view_keys.cpp" line="+32"/>
+        <location filename="../editor/ladder_view_keys.cpp" line="+154"/>
         <source>%1 has no such contact</source>
         <translation>%1 nem rendelkezik ilyen érintkezővel</translation>
     </message>
@@ -1992,6 +2012,176 @@ Létradiagram- és utasításlista-szerkesztő VPC, Vigor, CPM1 és PL110 PLC-kh
         <location filename="../editor/ladder_view_find.cpp" line="+45"/>
         <source>%1 is not used in the program</source>
         <translation>%1 nincs használatban a programban</translation>
+    </message>
+    <message>
+        <location filename="../editor/ladder_view_monitor.cpp" line="+227"/>
+        <source>current %1, set %2, %3</source>
+        <extracomment>a timer&apos;s or counter&apos;s live state in a tooltip: current value, set value, done bit</extracomment>
+        <translation>aktuális %1, beállított %2, %3</translation>
+    </message>
+    <message>
+        <location line="+3"/>
+        <source>ON</source>
+        <translation>BE</translation>
+    </message>
+    <message>
+        <location line="+0"/>
+        <source>OFF</source>
+        <translation>KI</translation>
+    </message>
+    <message>
+        <location line="+7"/>
+        <source>%1 (forced)</source>
+        <translation>%1 (kényszerített)</translation>
+    </message>
+    <message>
+        <location line="+4"/>
+        <source>The last values known: the source is offline</source>
+        <translation>Az utolsó ismert értékek: a forrás nem elérhető</translation>
+    </message>
+</context>
+<context>
+    <name>rung::editor::MonitorCommands</name>
+    <message>
+        <location filename="../editor/monitor_commands.cpp" line="+129"/>
+        <source>Force %1 O&amp;N</source>
+        <translation>%1 kényszerítése &amp;BE</translation>
+    </message>
+    <message>
+        <location line="+4"/>
+        <source>Force %1 O&amp;FF</source>
+        <translation>%1 kényszerítése &amp;KI</translation>
+    </message>
+    <message>
+        <location line="+4"/>
+        <source>&amp;Release %1</source>
+        <translation>%1 kényszerítésének &amp;feloldása</translation>
+    </message>
+    <message>
+        <location line="+4"/>
+        <source>Set %1 &amp;ON</source>
+        <translation>%1 BE-kapcso&amp;lása</translation>
+    </message>
+    <message>
+        <location line="+4"/>
+        <source>Set %1 OFF</source>
+        <translation>%1 KI-kapcsolása</translation>
+    </message>
+    <message>
+        <location line="+7"/>
+        <source>&amp;Write %1...</source>
+        <translation>%1 &amp;írása...</translation>
+    </message>
+    <message>
+        <location line="+5"/>
+        <source>Write &amp;Preset of %1...</source>
+        <translation>%1 beállított értékének í&amp;rása...</translation>
+    </message>
+    <message>
+        <location line="+7"/>
+        <location line="+96"/>
+        <source>The preset of %1 is the constant %2 of the program: change it in the program</source>
+        <translation>%1 beállított értéke a program %2 konstansa: a programban változtassa meg</translation>
+    </message>
+    <message>
+        <location line="-83"/>
+        <source>%1 forced ON</source>
+        <translation>%1 kényszerítve BE</translation>
+    </message>
+    <message>
+        <location line="+0"/>
+        <source>%1 forced OFF</source>
+        <translation>%1 kényszerítve KI</translation>
+    </message>
+    <message>
+        <location line="+6"/>
+        <source>%1 released</source>
+        <translation>%1 kényszerítése feloldva</translation>
+    </message>
+    <message>
+        <location line="+7"/>
+        <source>%1 set ON</source>
+        <translation>%1 BE-kapcsolva</translation>
+    </message>
+    <message>
+        <location line="+0"/>
+        <source>%1 set OFF</source>
+        <translation>%1 KI-kapcsolva</translation>
+    </message>
+    <message>
+        <location line="+33"/>
+        <source>Write %1</source>
+        <translation>%1 írása</translation>
+    </message>
+    <message>
+        <location line="+1"/>
+        <source>New value of %1 (a whole number, 0x before a hexadecimal one):</source>
+        <translation>%1 új értéke (egész szám, hexadecimális elé 0x):</translation>
+    </message>
+    <message>
+        <location line="+12"/>
+        <source>&quot;%1&quot; is no value for %2: type a whole number (0x before a hexadecimal one)</source>
+        <translation>„%1” nem érték ehhez: %2; írjon egész számot (hexadecimális elé 0x)</translation>
+    </message>
+    <message>
+        <location line="+5"/>
+        <source>%1 written: %2</source>
+        <translation>%1 írva: %2</translation>
+    </message>
+    <message>
+        <location line="+9"/>
+        <source>Write Preset of %1</source>
+        <translation>%1 beállított értékének írása</translation>
+    </message>
+    <message>
+        <location line="+1"/>
+        <source>New preset of %1:</source>
+        <translation>%1 új beállított értéke:</translation>
+    </message>
+    <message>
+        <location line="+16"/>
+        <source>&quot;%1&quot; is no preset for %2: type a whole number from 0</source>
+        <translation>„%1” nem beállított érték ehhez: %2; írjon 0-tól kezdődő egész számot</translation>
+    </message>
+    <message>
+        <location line="+6"/>
+        <source>Preset of %1 written: %2</source>
+        <translation>%1 beállított értéke írva: %2</translation>
+    </message>
+    <message>
+        <location line="+8"/>
+        <source>&quot;%1&quot; is no preset for %2: the preset is 0..9999 (BCD)</source>
+        <translation>„%1” nem beállított érték ehhez: %2; a beállított érték 0..9999 (BCD)</translation>
+    </message>
+    <message>
+        <location line="+7"/>
+        <source>Preset of %1 written: %2 (in %3)</source>
+        <translation>%1 beállított értéke írva: %2 (itt: %3)</translation>
+    </message>
+</context>
+<context>
+    <name>rung::editor::PowerFlow</name>
+    <message>
+        <location filename="../editor/power_flow.cpp" line="+318"/>
+        <source>ON</source>
+        <translation>BE</translation>
+    </message>
+    <message>
+        <location line="+0"/>
+        <source>OFF</source>
+        <translation>KI</translation>
+    </message>
+    <message>
+        <location line="+16"/>
+        <source>%1/%2 ×%3 s</source>
+        <extracomment>a timer&apos;s time elapsed / set value in its units, then the unit: &quot;23/50 ×0.1 s&quot;</extracomment>
+        <translation>%1/%2 ×%3 s</translation>
+    </message>
+    <message>
+        <location line="+25"/>
+        <source>%1 = %2</source>
+        <extracomment>a device and its value under a box: &quot;D0 = 12&quot;</extracomment>
+        <translation>%1 = %2</translation>
     </message>
 </context>
 <context>
@@ -4269,7 +4459,7 @@ Létradiagram- és utasításlista-szerkesztő VPC, Vigor, CPM1 és PL110 PLC-kh
         <translation>%1 nem időzítő</translation>
     </message>
     <message>
-        <location line="+47"/>
+        <location line="+44"/>
         <source>%1 is not a counter</source>
         <translation>%1 nem számláló</translation>
     </message>

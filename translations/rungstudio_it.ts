@@ -255,25 +255,25 @@ Codice di uscita: 0 nessun errore, 1 il programma contiene errori, 2 errore di u
 <context>
     <name>rung::app::MainWindow</name>
     <message>
-        <location filename="../app/gui/main_window.cpp" line="+154"/>
+        <location filename="../app/gui/main_window.cpp" line="+156"/>
         <source>Problems</source>
         <translation>Problemi</translation>
     </message>
     <message>
         <location line="+5"/>
-        <location line="+263"/>
+        <location line="+284"/>
         <source>Project</source>
         <translation>Progetto</translation>
     </message>
     <message>
-        <location line="-256"/>
-        <location line="+259"/>
+        <location line="-277"/>
+        <location line="+280"/>
         <source>Symbols</source>
         <translation>Simboli</translation>
     </message>
     <message>
-        <location line="-255"/>
-        <location line="+256"/>
+        <location line="-276"/>
+        <location line="+277"/>
         <source>Watch lists</source>
         <translation>Liste di osservazione</translation>
     </message>
@@ -651,7 +651,7 @@ Ladder and instruction-list editor for VPC, Vigor, CPM1 and PL110.</source>
 Editor di schemi ladder e liste istruzioni per VPC, Vigor, CPM1 e PL110.</translation>
     </message>
     <message>
-        <location filename="../app/gui/main_window.cpp" line="-238"/>
+        <location filename="../app/gui/main_window.cpp" line="-259"/>
         <source>Rung Comment</source>
         <translation>Commento del segmento</translation>
     </message>
@@ -662,23 +662,23 @@ Editor di schemi ladder e liste istruzioni per VPC, Vigor, CPM1 e PL110.</transl
     </message>
     <message>
         <location line="+22"/>
-        <location line="+218"/>
+        <location line="+239"/>
         <source>Ladder</source>
         <translation>Ladder</translation>
     </message>
     <message>
-        <location line="-217"/>
-        <location line="+218"/>
+        <location line="-238"/>
+        <location line="+239"/>
         <source>Instruction List</source>
         <translation>Lista istruzioni</translation>
     </message>
     <message>
-        <location line="-205"/>
+        <location line="-226"/>
         <source>The list as typed had errors and now shows the ladder&apos;s program; Ctrl+Z in the list brings it back</source>
         <translation>La lista digitata conteneva errori e ora mostra il programma dello schema ladder; Ctrl+Z nella lista la ripristina</translation>
     </message>
     <message>
-        <location line="+63"/>
+        <location line="+79"/>
         <source>&lt;b&gt;%1&lt;/b&gt;&lt;br&gt;Target: %2, model %3&lt;br&gt;%4, %5</source>
         <translation>&lt;b&gt;%1&lt;/b&gt;&lt;br&gt;Famiglia PLC: %2, modello %3&lt;br&gt;%4, %5</translation>
     </message>
@@ -973,7 +973,7 @@ Editor di schemi ladder e liste istruzioni per VPC, Vigor, CPM1 e PL110.</transl
         <translation>Sostituisci %1 con %2</translation>
     </message>
     <message>
-        <location filename="../app/gui/main_window.cpp" line="+87"/>
+        <location filename="../app/gui/main_window.cpp" line="+92"/>
         <location filename="../app/gui/main_window_tools.cpp" line="+6"/>
         <source>Cross Reference</source>
         <translation>Riferimenti incrociati</translation>
@@ -989,7 +989,7 @@ Editor di schemi ladder e liste istruzioni per VPC, Vigor, CPM1 e PL110.</transl
         <translation>La lista istruzioni contiene errori, quindi il ladder mostra ancora l&apos;ultimo programma senza errori: correggere la lista (o annullare) prima di simulare</translation>
     </message>
     <message>
-        <location line="+34"/>
+        <location line="+38"/>
         <source>&amp;Simulation</source>
         <translation>&amp;Simulazione</translation>
     </message>
@@ -1048,6 +1048,26 @@ Editor di schemi ladder e liste istruzioni per VPC, Vigor, CPM1 e PL110.</transl
         <location line="+8"/>
         <source>Release All &amp;Forces</source>
         <translation>Rilascia tutte le &amp;forzature</translation>
+    </message>
+    <message>
+        <location filename="../app/gui/main_window_monitor.cpp" line="+32"/>
+        <source>Simulation</source>
+        <translation>Simulazione</translation>
+    </message>
+    <message>
+        <location line="+2"/>
+        <source>Online PLC</source>
+        <translation>PLC online</translation>
+    </message>
+    <message>
+        <location line="+2"/>
+        <source>History (read-only)</source>
+        <translation>Cronologia (sola lettura)</translation>
+    </message>
+    <message>
+        <location line="+18"/>
+        <source>The ladder, the instruction list and the watch lists show the values of: %1</source>
+        <translation>Lo schema ladder, la lista istruzioni e le liste di osservazione mostrano i valori di: %1</translation>
     </message>
 </context>
 <context>
@@ -1842,7 +1862,7 @@ Editor di schemi ladder e liste istruzioni per VPC, Vigor, CPM1 e PL110.</transl
 <context>
     <name>rung::editor::IlEditor</name>
     <message>
-        <location filename="../editor/il_editor.cpp" line="+247"/>
+        <location filename="../editor/il_editor.cpp" line="+248"/>
         <source>Instruction list</source>
         <translation>Lista istruzioni</translation>
     </message>
@@ -1893,17 +1913,17 @@ Editor di schemi ladder e liste istruzioni per VPC, Vigor, CPM1 e PL110.</transl
 <context>
     <name>rung::editor::LadderView</name>
     <message>
-        <location filename="../editor/ladder_view.cpp" line="+37"/>
+        <location filename="../editor/ladder_view.cpp" line="+40"/>
         <source>Ladder diagram</source>
         <translation>Schema ladder</translation>
     </message>
     <message>
-        <location line="+94"/>
+        <location line="+98"/>
         <source>Edit rung comment</source>
         <translation>Modifica commento del segmento</translation>
     </message>
     <message>
-        <location line="+167"/>
+        <location line="+181"/>
         <source>Type one instruction, for example &quot;%1 X0&quot;</source>
         <translation>Digitare una sola istruzione, ad esempio &quot;%1 X0&quot;</translation>
     </message>
@@ -1960,7 +1980,7 @@ Editor di schemi ladder e liste istruzioni per VPC, Vigor, CPM1 e PL110.</transl
         <translation>Traccia un collegamento verticale</translation>
     </message>
     <message>
-        <location filename="../editor/ladder_view_keys.cpp" line="+32"/>
+        <location filename="../editor/ladder_view_keys.cpp" line="+154"/>
         <source>%1 has no such contact</source>
         <translation>%1 non ha un contatto di questo tipo</translation>
     </message>
@@ -1998,6 +2018,176 @@ Editor di schemi ladder e liste istruzioni per VPC, Vigor, CPM1 e PL110.</transl
         <location filename="../editor/ladder_view_find.cpp" line="+45"/>
         <source>%1 is not used in the program</source>
         <translation>%1 non è usato nel programma</translation>
+    </message>
+    <message>
+        <location filename="../editor/ladder_view_monitor.cpp" line="+227"/>
+        <source>current %1, set %2, %3</source>
+        <extracomment>a timer&apos;s or counter&apos;s live state in a tooltip: current value, set value, done bit</extracomment>
+        <translation>corrente %1, preset %2, %3</translation>
+    </message>
+    <message>
+        <location line="+3"/>
+        <source>ON</source>
+        <translation>ON</translation>
+    </message>
+    <message>
+        <location line="+0"/>
+        <source>OFF</source>
+        <translation>OFF</translation>
+    </message>
+    <message>
+        <location line="+7"/>
+        <source>%1 (forced)</source>
+        <translation>%1 (forzato)</translation>
+    </message>
+    <message>
+        <location line="+4"/>
+        <source>The last values known: the source is offline</source>
+        <translation>Gli ultimi valori noti: la sorgente è offline</translation>
+    </message>
+</context>
+<context>
+    <name>rung::editor::MonitorCommands</name>
+    <message>
+        <location filename="../editor/monitor_commands.cpp" line="+129"/>
+        <source>Force %1 O&amp;N</source>
+        <translation>Forza %1 O&amp;N</translation>
+    </message>
+    <message>
+        <location line="+4"/>
+        <source>Force %1 O&amp;FF</source>
+        <translation>Forza %1 O&amp;FF</translation>
+    </message>
+    <message>
+        <location line="+4"/>
+        <source>&amp;Release %1</source>
+        <translation>&amp;Rilascia %1</translation>
+    </message>
+    <message>
+        <location line="+4"/>
+        <source>Set %1 &amp;ON</source>
+        <translation>Imposta %1 &amp;ON</translation>
+    </message>
+    <message>
+        <location line="+4"/>
+        <source>Set %1 OFF</source>
+        <translation>Imposta %1 OFF</translation>
+    </message>
+    <message>
+        <location line="+7"/>
+        <source>&amp;Write %1...</source>
+        <translation>&amp;Scrivi %1...</translation>
+    </message>
+    <message>
+        <location line="+5"/>
+        <source>Write &amp;Preset of %1...</source>
+        <translation>Scrivi il valore di &amp;preset di %1...</translation>
+    </message>
+    <message>
+        <location line="+7"/>
+        <location line="+96"/>
+        <source>The preset of %1 is the constant %2 of the program: change it in the program</source>
+        <translation>Il valore di preset di %1 è la costante %2 del programma: modificarlo nel programma</translation>
+    </message>
+    <message>
+        <location line="-83"/>
+        <source>%1 forced ON</source>
+        <translation>%1 forzato ON</translation>
+    </message>
+    <message>
+        <location line="+0"/>
+        <source>%1 forced OFF</source>
+        <translation>%1 forzato OFF</translation>
+    </message>
+    <message>
+        <location line="+6"/>
+        <source>%1 released</source>
+        <translation>%1 rilasciato</translation>
+    </message>
+    <message>
+        <location line="+7"/>
+        <source>%1 set ON</source>
+        <translation>%1 impostato ON</translation>
+    </message>
+    <message>
+        <location line="+0"/>
+        <source>%1 set OFF</source>
+        <translation>%1 impostato OFF</translation>
+    </message>
+    <message>
+        <location line="+33"/>
+        <source>Write %1</source>
+        <translation>Scrivi %1</translation>
+    </message>
+    <message>
+        <location line="+1"/>
+        <source>New value of %1 (a whole number, 0x before a hexadecimal one):</source>
+        <translation>Nuovo valore di %1 (un numero intero, 0x davanti a uno esadecimale):</translation>
+    </message>
+    <message>
+        <location line="+12"/>
+        <source>&quot;%1&quot; is no value for %2: type a whole number (0x before a hexadecimal one)</source>
+        <translation>&quot;%1&quot; non è un valore per %2: scrivere un numero intero (0x davanti a uno esadecimale)</translation>
+    </message>
+    <message>
+        <location line="+5"/>
+        <source>%1 written: %2</source>
+        <translation>%1 scritto: %2</translation>
+    </message>
+    <message>
+        <location line="+9"/>
+        <source>Write Preset of %1</source>
+        <translation>Scrivi il valore di preset di %1</translation>
+    </message>
+    <message>
+        <location line="+1"/>
+        <source>New preset of %1:</source>
+        <translation>Nuovo valore di preset di %1:</translation>
+    </message>
+    <message>
+        <location line="+16"/>
+        <source>&quot;%1&quot; is no preset for %2: type a whole number from 0</source>
+        <translation>&quot;%1&quot; non è un valore di preset per %2: scrivere un numero intero da 0</translation>
+    </message>
+    <message>
+        <location line="+6"/>
+        <source>Preset of %1 written: %2</source>
+        <translation>Valore di preset di %1 scritto: %2</translation>
+    </message>
+    <message>
+        <location line="+8"/>
+        <source>&quot;%1&quot; is no preset for %2: the preset is 0..9999 (BCD)</source>
+        <translation>&quot;%1&quot; non è un valore di preset per %2: il valore di preset è 0..9999 (BCD)</translation>
+    </message>
+    <message>
+        <location line="+7"/>
+        <source>Preset of %1 written: %2 (in %3)</source>
+        <translation>Valore di preset di %1 scritto: %2 (in %3)</translation>
+    </message>
+</context>
+<context>
+    <name>rung::editor::PowerFlow</name>
+    <message>
+        <location filename="../editor/power_flow.cpp" line="+318"/>
+        <source>ON</source>
+        <translation>ON</translation>
+    </message>
+    <message>
+        <location line="+0"/>
+        <source>OFF</source>
+        <translation>OFF</translation>
+    </message>
+    <message>
+        <location line="+16"/>
+        <source>%1/%2 ×%3 s</source>
+        <extracomment>a timer&apos;s time elapsed / set value in its units, then the unit: &quot;23/50 ×0.1 s&quot;</extracomment>
+        <translation>%1/%2 ×%3 s</translation>
+    </message>
+    <message>
+        <location line="+25"/>
+        <source>%1 = %2</source>
+        <extracomment>a device and its value under a box: &quot;D0 = 12&quot;</extracomment>
+        <translation>%1 = %2</translation>
     </message>
 </context>
 <context>
@@ -4282,7 +4472,7 @@ Editor di schemi ladder e liste istruzioni per VPC, Vigor, CPM1 e PL110.</transl
         <translation>%1 non è un temporizzatore</translation>
     </message>
     <message>
-        <location line="+47"/>
+        <location line="+44"/>
         <source>%1 is not a counter</source>
         <translation>%1 non è un contatore</translation>
     </message>

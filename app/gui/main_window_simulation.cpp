@@ -33,6 +33,7 @@ void MainWindow::setupSimulation() {
                       "program without them: correct the list (or undo) before simulating");
         return {};
     });
+    updateMonitorLabel(); // the origin's label, left of the simulation's, hidden until values show
     m_statusSimulation = new QLabel;
     m_statusSimulation->setObjectName(QStringLiteral("simulationStatus"));
     statusBar()->addPermanentWidget(m_statusSimulation);
@@ -43,7 +44,11 @@ void MainWindow::setupSimulation() {
     connect(m_watch, &editor::WatchListView::message, this,
             [this](const QString &text) { statusBar()->showMessage(text, 10000); });
     connect(m_simulation, &SimulationController::sessionChanged, this,
-            [this](simulator::SimulatorSession *session) { m_watch->setMonitorSource(session); });
+            [this](simulator::SimulatorSession *session) {
+                if (session)
+                    session->setPowerFlowRecording(true); // the overlay draws it
+                setMonitorSource(session, MonitorOrigin::Simulation);
+            });
     connect(m_simulation, &SimulationController::problems, this,
             [this](const std::vector<model::Diagnostic> &errors) {
                 std::vector<model::Diagnostic> all = m_document->diagnostics();
