@@ -1,6 +1,7 @@
 #include "il_editor.h"
 
 #include "document.h"
+#include "monitor_commands.h"
 
 #include "model/target/address.h"
 
@@ -270,8 +271,17 @@ IlEditor::IlEditor(const model::Target &target, QWidget *parent)
     setAutoCompletionCaseSensitivity(false);
     setCallTipsStyle(QsciScintilla::CallTipsNoContext);
     setAccessibleName(tr("Instruction list"));
+    m_commands = new MonitorCommands(&target, this);
+    connect(m_commands, &MonitorCommands::message, this, &IlEditor::message);
     setTarget(target);
     connect(this, &QsciScintilla::textChanged, this, [this] {
+        // The lines no longer hold the instructions they held: no values until the owner
+        // maps them again (setMonitorLines).
+        if (!m_lineInstruction.empty()) {
+            m_lineInstruction.clear();
+            m_painted.clear();
+            viewport()->update();
+        }
         if (!m_settingText)
             emit listingEdited();
     });
@@ -381,6 +391,8 @@ void IlEditor::setTarget(const model::Target &target) {
     if (m_lexer && m_target == &target)
         return; // a new lexer restyles the whole text
     m_target = &target;
+    if (m_commands)
+        m_commands->setTarget(&target);
     auto *lexer = new IlLexer(target, this);
     auto *apis = new QsciAPIs(lexer);
     for (const model::InstructionSpec &s : target.instructions) {

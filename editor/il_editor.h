@@ -5,16 +5,24 @@
 // call tips from the target's instruction table, and diagnostics as markers and annotations.
 
 #include "model/checks/diagnostic.h"
+#include "model/image/monitor_source.h"
+#include "model/listing/il.h"
 #include "model/target/target.h"
 
 #include <Qsci/qscilexercustom.h>
 #include <Qsci/qsciscintilla.h>
 
+#include <QPointer>
+
 #include <functional>
 #include <map>
 #include <vector>
+#include <memory>
+#include <optional>
 
 namespace rung::editor {
+
+class MonitorCommands;
 
 class IlLexer : public QsciLexerCustom {
     Q_OBJECT
@@ -83,15 +91,48 @@ public:
     // Opens the list that fits the caret: mnemonics at the start of a line, devices after one.
     void showCompletions();
 
+    // The live values (il_editor_monitor.cpp): while a source is set, each line of the running
+    // program shows after its text the logic result after its instruction (a filled square
+    // for ON, a hollow one for OFF) and the values of its devices ("X0 = ON", "T0 23/50 ×0.1
+    // s"), painted over the view: the text and its undo stay untouched. The context menu
+    // (right button, the Menu key or Shift+F10) forces and writes the line's devices.
+    void setMonitorSource(model::MonitorSource *source);
+    model::MonitorSource *monitorSource() const { return m_source; }
+    // Which instruction of the running program each line (0-based) holds, -1 for none, and
+    // the instructions; empty when the text shown is not the running program's.
+    void setMonitorLines(std::vector<int> instructionOfLine,
+                         std::vector<model::Instruction> instructions);
+    struct LineValue {
+        std::optional<bool> result; // the logic result after the instruction, when known
+        QString text;               // the devices' values
+        bool forced = false;
+        friend bool operator==(const LineValue &, const LineValue &) = default;
+    };
+    // What a line (0-based) shows now; nullopt for a line without an instruction or while
+    // nothing is monitored.
+    std::optional<LineValue> monitoredLine(int line) const;
+    // The context menu's device entries for a line (0-based); nullptr where it has none.
+    QMenu *monitorMenu(int line, QWidget *parent);
+
 signals:
     void listingEdited();
     // A click in the markers' margin (1-based line).
     void breakpointToggleRequested(int line);
+    void message(const QString &text); // a device command's result, for the status bar
 
 protected:
     void resizeEvent(QResizeEvent *event) override;
+    void paintEvent(QPaintEvent *event) override;
+    void contextMenuEvent(QContextMenuEvent *event) override;
+    void keyPressEvent(QKeyEvent *event) override;
 
 private:
+    void snapshotArrived();
+    void paintValues();
+    std::pair<int, int> visibleLines() const; // [first, last)
+    QRect valueRect(int line) const;          // where a line's values are painted
+    int valuesX() const;                      // the column the values start at
+    void showMonitorMenu(int line, QPoint globalPos);
     void updateCallTip();
     void showNotes();
     void insertDevice(int id, const QString &item);
@@ -104,6 +145,11 @@ private:
     std::map<int, QStringList> m_notes; // the diagnostics' messages by line, unwrapped
     int m_notesWrappedAt = 0;           // the columns they were last wrapped to
     int m_stoppedLine = 0;
+    QPointer<model::MonitorSource> m_source;
+    MonitorCommands *m_commands = nullptr;
+    std::vector<int> m_lineInstruction;
+    std::vector<model::Instruction> m_instructions;
+    std::map<int, LineValue> m_painted; // what the lines on screen show, by line
 };
 
 } // namespace rung::editor

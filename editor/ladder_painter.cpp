@@ -115,7 +115,8 @@ QString LadderPainter::secondaryLabel(const model::Operand &o) const {
     return m_namesFirst && !name.isEmpty() ? deviceLabel(o) : name;
 }
 
-void LadderPainter::paintContact(QPainter &p, const QRectF &cell, const model::Contact &c) const {
+void LadderPainter::paintContact(QPainter &p, const QRectF &cell, const model::Contact &c,
+                                 const QString &live) const {
     const double y = wireY(cell.top());
     const double cx = cell.center().x();
     const double half = snap(cx + m_m.cellWidth * 0.12, m_pen) - cx;
@@ -153,12 +154,20 @@ void LadderPainter::paintContact(QPainter &p, const QRectF &cell, const model::C
             text = QStringLiteral("NOT ") + text;
         p.drawText(box, Qt::AlignCenter,
                    QFontMetricsF(m_small).elidedText(text, Qt::ElideRight, box.width() - 2));
-        const QString below = secondaryLabel(c.operands[0]);
-        if (!below.isEmpty()) {
+        // Under the box: the monitored values first (bold, in ink), then the name.
+        const QString name = secondaryLabel(c.operands[0]);
+        const QRectF under(cell.left(), y + h, cell.width(), cell.bottom() - y - h);
+        if (!live.isEmpty()) {
+            QFont bold = m_small;
+            bold.setBold(true);
+            p.setFont(bold);
+            p.setPen(kInk);
+            p.drawText(under, Qt::AlignHCenter | Qt::AlignTop,
+                       QFontMetricsF(bold).elidedText(live, Qt::ElideRight, cell.width() - 4));
+        } else if (!name.isEmpty()) {
             p.setPen(kDim);
-            p.drawText(QRectF(cell.left(), y + h, cell.width(), cell.bottom() - y - h),
-                       Qt::AlignHCenter | Qt::AlignTop,
-                       QFontMetricsF(m_small).elidedText(below, Qt::ElideRight, cell.width() - 4));
+            p.drawText(under, Qt::AlignHCenter | Qt::AlignTop,
+                       QFontMetricsF(m_small).elidedText(name, Qt::ElideRight, cell.width() - 4));
         }
         return;
     }
@@ -201,17 +210,29 @@ void LadderPainter::paintContact(QPainter &p, const QRectF &cell, const model::C
     }
 }
 
-void LadderPainter::paintOutput(QPainter &p, const QRectF &area,
-                                const model::Instruction &ins) const {
+bool LadderPainter::isCoil(const model::Instruction &ins) const {
+    const model::Op op = ins.op();
+    return (op == model::Op::Out || op == model::Op::Set || op == model::Op::Reset ||
+            op == model::Op::PulseRise || op == model::Op::PulseFall) &&
+           ins.operands.size() == 1;
+}
+
+QRectF LadderPainter::boxRect(const QRectF &area) const {
+    const double y = wireY(area.top());
+    const double rowH = m_m.rowHeight;
+    return QRectF(QPointF(snap(area.left() + boxInset(m_m), m_pen), snap(y - rowH * 0.3, m_pen)),
+                  QPointF(snap(area.right() - 6 - boxInset(m_m) * 0.45, m_pen),
+                          snap(area.bottom() - rowH * 0.15, m_pen)));
+}
+
+void LadderPainter::paintOutput(QPainter &p, const QRectF &area, const model::Instruction &ins,
+                                const QString &live) const {
     const double y = wireY(area.top());
     const double h = m_m.rowHeight * 0.2;
     p.setPen(inkPen());
     const model::Op op = ins.op();
-    const bool coil = (op == model::Op::Out || op == model::Op::Set || op == model::Op::Reset ||
-                       op == model::Op::PulseRise || op == model::Op::PulseFall) &&
-                      ins.operands.size() == 1;
-    if (coil) {
-        const double cx = area.left() + area.width() * 0.4;
+    if (isCoil(ins)) {
+        const double cx = coilCenterX(area);
         const double r = h * 1.1;
         p.drawLine(QPointF(area.left(), y), QPointF(cx - r, y));
         p.drawLine(QPointF(cx + r, y), QPointF(area.right() - 6, y));
@@ -249,9 +270,7 @@ void LadderPainter::paintOutput(QPainter &p, const QRectF &area,
     // rows, each input wired to its left edge.
     const double rowH = m_m.rowHeight;
     const bool tall = area.height() > rowH * 1.5;
-    const QRectF box(QPointF(snap(area.left() + boxInset(m_m), m_pen), snap(y - rowH * 0.3, m_pen)),
-                     QPointF(snap(area.right() - 6 - boxInset(m_m) * 0.45, m_pen),
-                             snap(area.bottom() - rowH * 0.15, m_pen)));
+    const QRectF box = boxRect(area);
     p.drawLine(QPointF(area.left(), y), QPointF(box.left(), y));
     p.drawLine(QPointF(box.right(), y), QPointF(area.right() - 6, y));
     p.setBrush(QColor(0xf4, 0xf6, 0xfa));
@@ -261,6 +280,22 @@ void LadderPainter::paintOutput(QPainter &p, const QRectF &area,
     // Pin letters (U, D, R) sit inside the left edge of a tall box: its text keeps clear.
     const QRectF inner = box.adjusted(tall ? rowH * 0.3 : 3, 1, -3, -1);
     const QFontMetricsF fm(m_font);
+    if (!live.isEmpty()) {
+        // Monitored: the instruction on the first line, its values (bold) on the second.
+        QFont bold = m_small;
+        bold.setBold(true);
+        const QFontMetricsF fs(m_small);
+        const QFontMetricsF fb(bold);
+        const double lines = fs.height() + fb.height();
+        const double top = tall ? inner.top() + 2 : inner.center().y() - lines / 2;
+        p.setFont(m_small);
+        p.drawText(QRectF(inner.left(), top, inner.width(), fs.height()), Qt::AlignCenter,
+                   fs.elidedText(text, Qt::ElideRight, inner.width()));
+        p.setFont(bold);
+        p.drawText(QRectF(inner.left(), top + fs.height(), inner.width(), fb.height()),
+                   Qt::AlignCenter, fb.elidedText(live, Qt::ElideRight, inner.width()));
+        return;
+    }
     if (!tall && fm.horizontalAdvance(text) <= inner.width()) {
         p.setFont(m_font);
         p.drawText(inner, Qt::AlignCenter, text);
@@ -380,7 +415,8 @@ void LadderPainter::paintRung(QPainter &p, QPointF origin, int index,
                 const double y = wireY(rect.top());
                 p.drawLine(QPointF(rect.left(), y), QPointF(rect.right(), y));
             } else if (cell.kind == model::CellKind::Contact) {
-                paintContact(p, rect, cell.contact);
+                paintContact(p, rect, cell.contact,
+                             d.overlay ? d.overlay->valueAt(r, c) : QString());
             }
         }
         // Vertical links between this row and the next; a link on a block boundary shows at
@@ -424,7 +460,8 @@ void LadderPainter::paintRung(QPainter &p, QPointF origin, int index,
             const std::vector<int> inputs = rung.boxInputRows(r);
             if (inputs.size() > 1)
                 area.setBottom(outputRect(rung, inputs.back()).bottom());
-            paintOutput(p, area, *out);
+            const RungOverlay::Output *live = d.overlay ? d.overlay->output(r) : nullptr;
+            paintOutput(p, area, *out, live ? live->value : QString());
             if (inputs.size() > 1) {
                 p.setFont(m_small);
                 p.setPen(kDim);
@@ -446,6 +483,8 @@ void LadderPainter::paintRung(QPainter &p, QPointF origin, int index,
             }
         }
     }
+    if (d.overlay && d.overlay->rows == rung.rows && d.overlay->columns == rung.columns)
+        paintOverlay(p, rung, *d.overlay);
     if (d.cursorRow >= 0 && d.cursorRow <= rung.rows) { // rows: the spare row for a branch
         p.setPen(QPen(kCursor, 2));
         p.setBrush(Qt::NoBrush);

@@ -3,6 +3,8 @@
 // Draws rungs with QPainter: the screen, print, PDF, SVG and PNG export share it, so every
 // output looks the same and stays crisp at any scale.
 
+#include "power_flow.h"
+
 #include "model/checks/diagnostic.h"
 #include "model/project/project.h"
 
@@ -63,6 +65,9 @@ struct RungDecorations {
     Breakpoint breakpoint = Breakpoint::None;
     bool stopped = false;
     std::pair<int, int> stoppedAt{-1, -1};
+    // The live overlay (a running simulation, an online PLC): power flow, states, values and
+    // forced devices drawn over the rung; null when nothing is monitored.
+    const RungOverlay *overlay = nullptr;
 };
 
 class LadderPainter {
@@ -81,12 +86,33 @@ public:
     // has a name), instead of the other way round.
     void setNamesFirst(bool on) { m_namesFirst = on; }
 
+    // Where the overlay's colours and weights come from, for the legend and the tests.
+    static QColor energisedColor();
+    static QColor forcedColor();
+    static QColor staleColor();
+
 private:
-    void paintContact(QPainter &p, const QRectF &cell, const model::Contact &contact) const;
+    // `live`: the monitored value to show under the element (compare contacts).
+    void paintContact(QPainter &p, const QRectF &cell, const model::Contact &contact,
+                      const QString &live = QString()) const;
     void paintContinuation(QPainter &p, QPointF at, int mark, int row) const;
-    void paintOutput(QPainter &p, const QRectF &area, const model::Instruction &ins) const;
     void paintDebug(QPainter &p, const model::Rung &rung, const RungDecorations &d,
                     double commentH) const;
+    // `live`: the monitored value to show in the box under its instruction.
+    void paintOutput(QPainter &p, const QRectF &area, const model::Instruction &ins,
+                     const QString &live = QString()) const;
+    // The overlay over a painted rung (ladder_painter_overlay.cpp).
+    void paintOverlay(QPainter &p, const model::Rung &rung, const RungOverlay &overlay) const;
+    void paintContactState(QPainter &p, const QRectF &cell, const model::Contact &contact,
+                           const RungOverlay &o, int row, int column) const;
+    void paintOutputState(QPainter &p, const QRectF &area, const model::Instruction &ins,
+                          const RungOverlay::Output &out, bool stale) const;
+    void paintForced(QPainter &p, const QRectF &element, bool stale) const;
+    QPen livePen(bool stale) const;
+    // Shared geometry of the drawing and its overlay.
+    bool isCoil(const model::Instruction &ins) const;
+    QRectF boxRect(const QRectF &area) const;
+    double coilCenterX(const QRectF &area) const { return area.left() + area.width() * 0.4; }
     QString deviceLabel(const model::Operand &operand) const;
     QString symbolLabel(const model::Operand &operand) const;
     QString primaryLabel(const model::Operand &operand) const;

@@ -1,5 +1,7 @@
 #include "ladder_view.h"
 
+#include "monitor_commands.h"
+
 #include "model/target/address.h"
 
 #include <QCompleter>
@@ -12,6 +14,7 @@
 #include <algorithm>
 #include <cmath>
 #include <map>
+#include <optional>
 #include <set>
 
 namespace rung::editor {
@@ -40,8 +43,12 @@ LadderView::LadderView(Document *document, QWidget *parent)
             m_anchorRung = -1;
         relayout();
         setCursor(m_cursor);
+        m_overlays.clear(); // the rungs the overlays were computed for are gone
+        tellWatched();
         viewport()->update();
     });
+    m_commands = new MonitorCommands(&document->target(), this);
+    connect(m_commands, &MonitorCommands::message, this, &LadderView::message);
     m_editor = new QLineEdit(viewport());
     m_editor->hide();
     m_editor->setObjectName(QStringLiteral("cellEditor"));
@@ -232,6 +239,11 @@ void LadderView::paintEvent(QPaintEvent *) {
     // Only the visible rungs are painted: a 10,000-rung program scrolls as fast as a small one.
     // Their findings are gathered in one pass over the diagnostics.
     const int firstVisible = std::max(0, rungAt(top));
+    // The overlay of each rung on screen, computed here for a rung snapshotArrived has not
+    // seen (scrolled into view since).
+    std::optional<ProgramFlow> flow;
+    if (!m_source || (m_shown && &m_shown->layout->target() != &m_document->target()))
+        m_shown.reset();
     std::multimap<int, const model::Diagnostic *> findings;
     for (const model::Diagnostic &diag : m_document->diagnostics()) {
         const int rung = diag.location.rung;
@@ -278,6 +290,15 @@ void LadderView::paintEvent(QPaintEvent *) {
             if (diag.code == QLatin1String("RC001"))
                 for (const model::Location &l : diag.related)
                     d.marked.insert({l.row, l.cell});
+        }
+        if (m_shown) {
+            auto it = m_overlays.find(i);
+            if (it == m_overlays.end()) {
+                if (!flow)
+                    flow.emplace(m_document->ladder(), listing, *m_shown);
+                it = m_overlays.emplace(i, flow->rung(i, staleValues())).first;
+            }
+            d.overlay = &it->second;
         }
         painter.paintRung(p, QPointF(-horizontalScrollBar()->value(), y - top), i, d);
     }
@@ -513,120 +534,6 @@ void LadderView::commitEditor() {
     }
 }
 
-void LadderView::keyPressEvent(QKeyEvent *event) {
-    if (event->key() == Qt::Key_Escape && !m_tool.isEmpty()) {
-        armTool({});
-        return;
-    }
-    const LadderMetrics m = metrics();
-    const auto mods = event->modifiers();
-    // Shift with Up/Down/PgUp/PgDn selects whole rungs from where it started (as in GX and
-    // WPLSoft); moving without Shift drops the selection.
-    // Shift with Left/Right selects a run of cells in the row.
-    const int key = event->key();
-    if (key == Qt::Key_Up || key == Qt::Key_Down || key == Qt::Key_PageUp ||
-        key == Qt::Key_PageDown) {
-        m_anchorColumn = -1;
-        if (mods & Qt::ShiftModifier) {
-            if (m_anchorRung < 0)
-                m_anchorRung = m_cursor.rung;
-        } else if (m_anchorRung >= 0) {
-            m_anchorRung = -1;
-        }
-        viewport()->update();
-    } else if (key == Qt::Key_Left || key == Qt::Key_Right || key == Qt::Key_Home ||
-               key == Qt::Key_End) {
-        m_anchorRung = -1;
-        if ((mods & Qt::ShiftModifier) && m_cursor.column < m.gridColumns) {
-            if (m_anchorColumn < 0)
-                m_anchorColumn = m_cursor.column;
-        } else {
-            m_anchorColumn = -1;
-        }
-        viewport()->update();
-    }
-    const auto &rungs = m_document->ladder().rungs;
-    CellCursor c = m_cursor;
-    const int rows = rungs.empty() ? 1 : rungs[static_cast<std::size_t>(c.rung)].rows;
-    switch (event->key()) {
-    case Qt::Key_Escape:
-        m_editor->hide();
-        return;
-    case Qt::Key_Left:
-        c.column = c.column >= m.gridColumns ? lastColumn(c.rung) : std::max(0, c.column - 1);
-        return setCursor(c);
-    case Qt::Key_Right:
-        if (m_anchorColumn >= 0 && c.column >= lastColumn(c.rung))
-            return; // a cell selection stays among the contacts
-        c.column = c.column >= lastColumn(c.rung) ? m.gridColumns : c.column + 1;
-        return setCursor(c);
-    case Qt::Key_Home:
-        c.column = 0;
-        return setCursor(c);
-    case Qt::Key_End:
-        c.column = m.gridColumns;
-        return setCursor(c);
-    case Qt::Key_Up:
-        if (c.row > 0) {
-            --c.row;
-        } else if (c.rung > 0) {
-            --c.rung;
-            c.row = rungs[static_cast<std::size_t>(c.rung)].rows - 1;
-        }
-        return setCursor(c);
-    case Qt::Key_Down:
-        if (c.row < rows) {
-            ++c.row;
-        } else if (c.rung + 1 < static_cast<int>(rungs.size())) {
-            ++c.rung;
-            c.row = 0;
-        }
-        return setCursor(c);
-    case Qt::Key_PageDown:
-        c.rung = std::min(static_cast<int>(rungs.size()) - 1, c.rung + 10);
-        c.row = 0;
-        return setCursor(c);
-    case Qt::Key_PageUp:
-        c.rung = std::max(0, c.rung - 10);
-        c.row = 0;
-        return setCursor(c);
-    case Qt::Key_F5:
-    case Qt::Key_F6:
-    case Qt::Key_F7:
-    case Qt::Key_F8:
-    case Qt::Key_F9:
-    case Qt::Key_F10:
-        if (functionKey(event)) // ladder_view_keys.cpp
-            return;
-        break;
-    case Qt::Key_Delete:
-        if (selectedCells().valid() && !(mods & (Qt::ShiftModifier | Qt::ControlModifier)))
-            return clearCells();
-        if (mods & Qt::ShiftModifier)
-            return deleteRung();
-        if (mods & Qt::ControlModifier)
-            return deleteRow();
-        return clearCell();
-    case Qt::Key_Insert:
-        if (mods & Qt::ShiftModifier)
-            return insertRung();
-        if (mods & Qt::ControlModifier)
-            return insertRow();
-        return insertColumn();
-    case Qt::Key_Return:
-    case Qt::Key_Enter:
-        return openEditor(QString());
-    default:
-        break;
-    }
-    const QString text = event->text();
-    if (!text.isEmpty() && text[0].isPrint() && !(mods & (Qt::ControlModifier | Qt::AltModifier))) {
-        openEditor(text);
-        return;
-    }
-    QAbstractScrollArea::keyPressEvent(event);
-}
-
 void LadderView::resizeEvent(QResizeEvent *event) {
     QAbstractScrollArea::resizeEvent(event);
     placeNotice();
@@ -634,6 +541,7 @@ void LadderView::resizeEvent(QResizeEvent *event) {
         fitZoomToWidth();
     else
         relayout();
+    tellWatched();
 }
 
 } // namespace rung::editor

@@ -10,18 +10,24 @@
 #include "document.h"
 #include "ladder_painter.h"
 
+#include "model/image/monitor_source.h"
+
 #include <QAbstractScrollArea>
 #include <QKeySequence>
 #include <QPointer>
 
 #include <map>
+#include <memory>
 
 class QLabel;
 class QLineEdit;
+class QMenu;
 
 class QStringListModel;
 
 namespace rung::editor {
+
+class MonitorCommands;
 
 struct CellCursor {
     int rung = 0;
@@ -116,6 +122,19 @@ public:
     // The rung geometry, for navigation and tests.
     QRect cellRectOnScreen(const CellCursor &cell) const;
 
+    // The live overlay (ladder_view_monitor.cpp): while a source is set, its snapshots are
+    // drawn over the rungs (power flow, states, values, forced devices) and the context menu
+    // (right button, the Menu key or Shift+F10) forces and writes the devices of an element.
+    // Each snapshot repaints only the rungs on screen whose overlay changed. Null: none.
+    void setMonitorSource(model::MonitorSource *source);
+    model::MonitorSource *monitorSource() const { return m_source; }
+    // The overlay of a rung as the view draws it now; empty (no rows) while nothing is
+    // monitored or the snapshot is of another target.
+    RungOverlay overlay(int rung) const;
+    // The context menu's entries for the element at a cell (the device commands); nullptr
+    // where the cell holds no device. Enabled only while a source is set.
+    QMenu *monitorMenu(const CellCursor &cell, QWidget *parent);
+
 signals:
     void cursorMoved(const rung::editor::CellCursor &cursor);
     void message(const QString &text);
@@ -135,6 +154,8 @@ protected:
     void wheelEvent(QWheelEvent *event) override;
     bool viewportEvent(QEvent *event) override;
     void resizeEvent(QResizeEvent *event) override;
+    void contextMenuEvent(QContextMenuEvent *event) override;
+    void scrollContentsBy(int dx, int dy) override;
 
 private:
     void relayout();
@@ -159,6 +180,16 @@ private:
     model::Rung currentRung() const;
     void commitEditor();
     QString mnemonicFor(model::Op op, model::ContactMode mode = model::ContactMode::Normal) const;
+    // The overlay (ladder_view_monitor.cpp).
+    void snapshotArrived();
+    // The snapshot drawn now, when it is of the document's target.
+    std::shared_ptr<const model::Snapshot> monitoredSnapshot() const;
+    bool staleValues() const;
+    std::pair<int, int> visibleRungs() const; // [first, last)
+    void showMonitorMenu(const CellCursor &cell, QPoint globalPos);
+    QString liveHelp(const CellCursor &cell) const; // the tooltip's values
+    // Tells the source the devices of the rungs on screen (an online source polls only those).
+    void tellWatched();
 
     Document *m_document;
     CellCursor m_cursor;
@@ -180,6 +211,12 @@ private:
     QLabel *m_notice = nullptr;
     std::map<int, bool> m_breakpoints;
     CellCursor m_stoppedAt{-1, -1, -1};
+    QPointer<model::MonitorSource> m_source;
+    MonitorCommands *m_commands = nullptr;
+    // The overlays of the rungs on screen, from m_shown; a rung absent is computed when drawn.
+    std::shared_ptr<const model::Snapshot> m_shown;
+    std::map<int, RungOverlay> m_overlays;
+    std::vector<model::Address> m_watched; // what tellWatched last told
 };
 
 } // namespace rung::editor

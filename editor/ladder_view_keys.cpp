@@ -6,6 +6,7 @@
 //   F7 / F8            coil / any instruction in the output column
 //   F9 / Shift+F9      horizontal wire / vertical link
 //   Ctrl+F9 / Ctrl+F10 delete the wire / the vertical link at the cursor
+// and the keys that move the cursor, edit cells, rows and rungs, and open the context menu.
 // A contact key opens the cell editor with the target's mnemonic, so the user types only the
 // operand; the mnemonic decides the contact's kind and OR its link to the row above.
 
@@ -13,8 +14,129 @@
 
 #include <QKeyEvent>
 #include <QLineEdit>
+#include <QScrollBar>
 
 namespace rung::editor {
+
+void LadderView::keyPressEvent(QKeyEvent *event) {
+    if (event->key() == Qt::Key_Escape && !m_tool.isEmpty()) {
+        armTool({});
+        return;
+    }
+    const LadderMetrics m = metrics();
+    const auto mods = event->modifiers();
+    // Shift with Up/Down/PgUp/PgDn selects whole rungs from where it started (as in GX and
+    // WPLSoft); moving without Shift drops the selection.
+    // Shift with Left/Right selects a run of cells in the row.
+    const int key = event->key();
+    if (key == Qt::Key_Up || key == Qt::Key_Down || key == Qt::Key_PageUp ||
+        key == Qt::Key_PageDown) {
+        m_anchorColumn = -1;
+        if (mods & Qt::ShiftModifier) {
+            if (m_anchorRung < 0)
+                m_anchorRung = m_cursor.rung;
+        } else if (m_anchorRung >= 0) {
+            m_anchorRung = -1;
+        }
+        viewport()->update();
+    } else if (key == Qt::Key_Left || key == Qt::Key_Right || key == Qt::Key_Home ||
+               key == Qt::Key_End) {
+        m_anchorRung = -1;
+        if ((mods & Qt::ShiftModifier) && m_cursor.column < m.gridColumns) {
+            if (m_anchorColumn < 0)
+                m_anchorColumn = m_cursor.column;
+        } else {
+            m_anchorColumn = -1;
+        }
+        viewport()->update();
+    }
+    // The context menu at the cursor (the device commands while monitored): the Menu key, or
+    // Shift+F10 as on Windows; F10 alone is the Simulation menu's Run.
+    if (key == Qt::Key_Menu || (key == Qt::Key_F10 && mods == Qt::ShiftModifier)) {
+        showMonitorMenu(m_cursor, viewport()->mapToGlobal(cellRectOnScreen(m_cursor).center()));
+        return;
+    }
+    const auto &rungs = m_document->ladder().rungs;
+    CellCursor c = m_cursor;
+    const int rows = rungs.empty() ? 1 : rungs[static_cast<std::size_t>(c.rung)].rows;
+    switch (event->key()) {
+    case Qt::Key_Escape:
+        m_editor->hide();
+        return;
+    case Qt::Key_Left:
+        c.column = c.column >= m.gridColumns ? lastColumn(c.rung) : std::max(0, c.column - 1);
+        return setCursor(c);
+    case Qt::Key_Right:
+        if (m_anchorColumn >= 0 && c.column >= lastColumn(c.rung))
+            return; // a cell selection stays among the contacts
+        c.column = c.column >= lastColumn(c.rung) ? m.gridColumns : c.column + 1;
+        return setCursor(c);
+    case Qt::Key_Home:
+        c.column = 0;
+        return setCursor(c);
+    case Qt::Key_End:
+        c.column = m.gridColumns;
+        return setCursor(c);
+    case Qt::Key_Up:
+        if (c.row > 0) {
+            --c.row;
+        } else if (c.rung > 0) {
+            --c.rung;
+            c.row = rungs[static_cast<std::size_t>(c.rung)].rows - 1;
+        }
+        return setCursor(c);
+    case Qt::Key_Down:
+        if (c.row < rows) {
+            ++c.row;
+        } else if (c.rung + 1 < static_cast<int>(rungs.size())) {
+            ++c.rung;
+            c.row = 0;
+        }
+        return setCursor(c);
+    case Qt::Key_PageDown:
+        c.rung = std::min(static_cast<int>(rungs.size()) - 1, c.rung + 10);
+        c.row = 0;
+        return setCursor(c);
+    case Qt::Key_PageUp:
+        c.rung = std::max(0, c.rung - 10);
+        c.row = 0;
+        return setCursor(c);
+    case Qt::Key_F5:
+    case Qt::Key_F6:
+    case Qt::Key_F7:
+    case Qt::Key_F8:
+    case Qt::Key_F9:
+    case Qt::Key_F10:
+        if (functionKey(event)) // ladder_view_keys.cpp
+            return;
+        break;
+    case Qt::Key_Delete:
+        if (selectedCells().valid() && !(mods & (Qt::ShiftModifier | Qt::ControlModifier)))
+            return clearCells();
+        if (mods & Qt::ShiftModifier)
+            return deleteRung();
+        if (mods & Qt::ControlModifier)
+            return deleteRow();
+        return clearCell();
+    case Qt::Key_Insert:
+        if (mods & Qt::ShiftModifier)
+            return insertRung();
+        if (mods & Qt::ControlModifier)
+            return insertRow();
+        return insertColumn();
+    case Qt::Key_Return:
+    case Qt::Key_Enter:
+        return openEditor(QString());
+    default:
+        break;
+    }
+    const QString text = event->text();
+    if (!text.isEmpty() && text[0].isPrint() && !(mods & (Qt::ControlModifier | Qt::AltModifier))) {
+        openEditor(text);
+        return;
+    }
+    QAbstractScrollArea::keyPressEvent(event);
+}
 
 bool LadderView::functionKey(QKeyEvent *event) {
     const Qt::KeyboardModifiers mods =

@@ -168,7 +168,10 @@ bool LadderView::viewportEvent(QEvent *event) {
         return QAbstractScrollArea::viewportEvent(event);
     // Hovering an element shows its device with the symbol's name and comment.
     const auto *help = static_cast<QHelpEvent *>(event);
-    const QString text = elementHelp(cellAt(help->pos()));
+    const CellCursor cell = cellAt(help->pos());
+    QString text = elementHelp(cell);
+    if (const QString live = liveHelp(cell); !live.isEmpty())
+        text += (text.isEmpty() ? QString() : QStringLiteral("\n")) + live;
     if (text.isEmpty())
         QToolTip::hideText();
     else

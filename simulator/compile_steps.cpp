@@ -60,15 +60,12 @@ void Compiler::compileTimer(const model::Instruction &ins, Step &s) {
         s.x.index = s.y.index;
     }
     loadPresetFromMemory(t->address, s);
-    if (t->address.index < m_sem.downTimersBelow)
+    if (model::timerCountsDown(m_target, t->address))
         s.flags |= kDown;
-    // The instruction's own base (CPM1 TIMH), else the timer area's (Vigor T200.. 10 ms),
-    // else the target's.
-    const model::Area &area = m_target.area(t->address.area);
-    double base = ins.spec->timerBaseMs > 0 ? ins.spec->timerBaseMs
-                  : area.timerBaseMs > 0    ? area.timerBaseMs
-                                            : m_target.defaultTimerBaseMs;
-    if (area.timerMode == model::TimerMode::Accumulating)
+    // The time base: the instruction's own (CPM1 TIMH), a PL110 timer's third operand, the
+    // timer area's (Vigor T200.. 10 ms), else the target's.
+    const double base = model::timerBaseMs(m_target, ins);
+    if (m_target.area(t->address.area).timerMode == model::TimerMode::Accumulating)
         s.op = kTimerAccumulates; // Vigor T246..T255: the time stays while the coil is OFF
     if (m_sem.timerCountsInWord) {
         // PL110 TON / TOFF / TONR T PT [base]: the time base is the third operand (10, 100 or
@@ -79,10 +76,6 @@ void Compiler::compileTimer(const model::Instruction &ins, Step &s) {
             ins.spec->timerMode == model::TimerMode::OffDelay       ? PlTimerMode::OffDelay
             : ins.spec->timerMode == model::TimerMode::Accumulating ? PlTimerMode::Accumulating
                                                                     : PlTimerMode::OnDelay);
-        // Which bases are allowed is the operand's allowedValues in the table, checked by
-        // reportBreaches before this runs.
-        if (ins.operands.size() > 2 && ins.operands[2].kind == model::Operand::Kind::Constant)
-            base = static_cast<double>(ins.operands[2].constant.value);
     }
     s.count = std::max(1, static_cast<int>(base));
 }

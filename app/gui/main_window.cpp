@@ -79,6 +79,8 @@ MainWindow::MainWindow(QWidget *parent)
     });
     connect(m_ladder, &editor::LadderView::message, this,
             [this](const QString &text) { statusBar()->showMessage(text, 5000); });
+    connect(m_il, &editor::IlEditor::message, this,
+            [this](const QString &text) { statusBar()->showMessage(text, 5000); });
     connect(m_il, &QsciScintilla::cursorPositionChanged, this, [this](int line, int) {
         updateStatus();
         if (!m_il->hasFocus())
@@ -264,7 +266,22 @@ void MainWindow::refreshFromDocument() {
             for (const model::Instruction &ins : parsed.list.instructions)
                 if (ins.line >= 1 && ins.line <= static_cast<int>(steps.size()))
                     steps[static_cast<std::size_t>(ins.line - 1)] = ins.step;
-            m_typedSteps = {m_document->modelVariant(), typed, std::move(steps)};
+            // A text of the program's own instructions, written its own way (spacing,
+            // comments, aliases): its lines can show the running program's values.
+            std::vector<int> lineOf;
+            const auto &program = m_document->listing().list.instructions;
+            const auto &read = parsed.list.instructions;
+            if (parsed.ok() && read.size() == program.size() &&
+                std::equal(read.begin(), read.end(), program.begin(),
+                           [](const model::Instruction &a, const model::Instruction &b) {
+                               return a.sameAs(b);
+                           })) {
+                lineOf.assign(steps.size(), -1);
+                for (std::size_t i = 0; i < read.size(); ++i)
+                    if (read[i].line >= 1 && read[i].line <= static_cast<int>(lineOf.size()))
+                        lineOf[static_cast<std::size_t>(read[i].line - 1)] = static_cast<int>(i);
+            }
+            m_typedSteps = {m_document->modelVariant(), typed, std::move(steps), std::move(lineOf)};
         }
         stepOfLine = m_typedSteps.steps;
     } else {
@@ -274,6 +291,7 @@ void MainWindow::refreshFromDocument() {
             stepOfLine.push_back(i < 0 ? -1 : list.instructions[static_cast<std::size_t>(i)].step);
     }
     m_il->setStepNumbers(stepOfLine);
+    updateMonitorLines(typed);
     m_symbols->refresh();
     refreshProjectInfo();
     updateStatus();
@@ -342,7 +360,12 @@ void MainWindow::updateTitle() {
     const QString name = m_document->path().isEmpty()
                              ? tr("Untitled")
                              : m_document->path().section(QLatin1Char('/'), -1);
-    setWindowTitle(QStringLiteral("%1[*] — Rung Studio").arg(name));
+    // While values are shown, the title says whose (simulation, online PLC, history).
+    if (m_monitorSource)
+        setWindowTitle(
+            QStringLiteral("%1[*] — %2 — Rung Studio").arg(name, originText(m_monitorOrigin)));
+    else
+        setWindowTitle(QStringLiteral("%1[*] — Rung Studio").arg(name));
     setWindowModified(isModified());
 }
 
@@ -439,6 +462,7 @@ void MainWindow::retranslate() {
         applyListing();
     statusBar()->clearMessage(); // a message of the old language would stay in it
     updateStatus();
+    updateMonitorLabel();
     updateTitle();
 }
 

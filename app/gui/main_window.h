@@ -9,6 +9,7 @@
 #include "editor/document.h"
 
 #include <QMainWindow>
+#include <QPointer>
 #include <QTimer>
 
 #include <memory>
@@ -21,6 +22,9 @@ class QLineEdit;
 class QMenu;
 class QToolBar;
 
+namespace rung::model {
+class MonitorSource;
+}
 namespace rung::editor {
 class CrossReferenceView;
 class IlEditor;
@@ -84,9 +88,6 @@ public:
     SimulationController *simulation() const { return m_simulation; }
     SimulationPanel *simulationPanel() const { return m_simulationPanel; }
     ScanDebuggerView *scanDebugger() const { return m_scanDebugger; }
-    // Hands the source every monitoring view draws from: the live session, a past scan
-    // (history), or none.
-    void setMonitorSource(model::MonitorSource *source);
     // Sets or clears a breakpoint where the user is: the instruction list's line when it has
     // the focus, else the ladder cursor's rung (its first instruction).
     void toggleBreakpointHere();
@@ -101,6 +102,17 @@ public:
     // What the application shows first: work orphaned by a crash when the user recovers it,
     // else the file of the command line (if any).
     void start(const QString &file, const QString &targetId, bool askToRecover = true);
+
+    // Where the live values come from (main_window_monitor.cpp).
+    enum class MonitorOrigin { Simulation, Online, History };
+    // The one place that hands the active source to every monitoring view (the ladder's
+    // overlay, the instruction list's values, the watch lists; null: none) and says in the
+    // title and the status bar which origin the window shows.
+    void setMonitorSource(model::MonitorSource *source,
+                          MonitorOrigin origin = MonitorOrigin::Simulation);
+    model::MonitorSource *monitorSource() const { return m_monitorSource; }
+    // The name of an origin as the window shows it ("Simulation"): its one place.
+    static QString originText(MonitorOrigin origin);
 
 protected:
     void closeEvent(QCloseEvent *event) override;
@@ -160,6 +172,10 @@ private:
     void showStoppedAt(int instruction);
     // The instruction at the instruction list's caret (or a 1-based line), -1 for none.
     int instructionAtLine(int line) const;
+    // The origin's label in the status bar and the title (main_window_monitor.cpp).
+    void updateMonitorLabel();
+    // Which instruction of the program each line of the list shows, for its live values.
+    void updateMonitorLines(bool typed);
 
     editor::Document *m_document;
     editor::LadderView *m_ladder;
@@ -185,6 +201,9 @@ private:
     SimulationPanel *m_simulationPanel = nullptr;
     ScanDebuggerView *m_scanDebugger = nullptr;
     bool m_simulationDocksShown = false; // shown once, when a simulation first starts
+    QPointer<model::MonitorSource> m_monitorSource;
+    MonitorOrigin m_monitorOrigin = MonitorOrigin::Simulation;
+    QLabel *m_statusOrigin = nullptr;
     QMenu *m_recentMenu = nullptr;
     QMenu *m_examplesMenu = nullptr;
     QTimer m_ilTimer;
@@ -195,6 +214,9 @@ private:
         const model::ModelVariant *model = nullptr;
         QString text;
         std::vector<int> steps;
+        // The instruction of the program on each line (0-based), when the text as typed holds
+        // the program's instructions one for one; empty when it does not.
+        std::vector<int> instructionOfLine;
     } m_typedSteps;
     bool m_editingListing = false;
     // The rungs revision and the listing the list pane last took from the document.

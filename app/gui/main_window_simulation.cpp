@@ -44,6 +44,7 @@ void MainWindow::setupSimulation() {
         "QLabel { background: #ffd54f; color: #3e2700; font-weight: bold; padding: 0 6px; }"));
     m_statusHistory->hide();
     statusBar()->addPermanentWidget(m_statusHistory);
+    updateMonitorLabel(); // the origin's label, left of the simulation's, hidden until values show
     m_statusSimulation = new QLabel;
     m_statusSimulation->setObjectName(QStringLiteral("simulationStatus"));
     statusBar()->addPermanentWidget(m_statusSimulation);
@@ -53,8 +54,17 @@ void MainWindow::setupSimulation() {
             [this](const QString &text) { statusBar()->showMessage(text, 10000); });
     connect(m_watch, &editor::WatchListView::message, this,
             [this](const QString &text) { statusBar()->showMessage(text, 10000); });
+    // The live session, or a past scan while the history is shown (simulation_history.cpp).
     connect(m_simulation, &SimulationController::monitorSourceChanged, this,
-            &MainWindow::setMonitorSource);
+            [this](model::MonitorSource *source) {
+                setMonitorSource(source, m_simulation->historyShown() ? MonitorOrigin::History
+                                                                      : MonitorOrigin::Simulation);
+            });
+    connect(m_simulation, &SimulationController::sessionChanged, this,
+            [](simulator::SimulatorSession *session) {
+                if (session)
+                    session->setPowerFlowRecording(true); // the overlay draws it
+            });
 
     connect(m_simulation, &SimulationController::problems, this,
             [this](const std::vector<model::Diagnostic> &errors) {
@@ -72,11 +82,6 @@ void MainWindow::setupSimulation() {
                 }
             });
     setupDebugging(); // main_window_debug.cpp
-    updateSimulationStatus();
-}
-
-void MainWindow::setMonitorSource(model::MonitorSource *source) {
-    m_watch->setMonitorSource(source);
     updateSimulationStatus();
 }
 

@@ -32,7 +32,10 @@ class MonitorSource : public QObject {
 
 public:
     enum class RunState {
-        Offline,  // no program loaded / not connected
+        // No program loaded / not connected. A source that goes Offline keeping its last
+        // snapshot (an online PLC that stopped answering) shows the last values known:
+        // readers draw them as stale until the source is back.
+        Offline,
         Stopped,  // at power-on state, not scanning
         Paused,   // image kept, not scanning
         Running,  // scanning

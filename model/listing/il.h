@@ -114,4 +114,13 @@ bool hasOperandModifiers(const Target &target, QStringView text);
 // Steps an instruction occupies in the PLC's program memory (1 for most).
 int instructionSteps(const Target &target, const Instruction &instruction);
 
+// A timer instruction's time base in ms: its own (CPM1 TIMH(15): 10 ms), the one a PL110 timer
+// names as its third operand (TON T1 50 10), its timer area's (Vigor T200.. 10 ms), else the
+// target's default; 0 for no timer. The simulator times with it and the monitor shows a
+// timer's units with it.
+double timerBaseMs(const Target &target, const Instruction &instruction);
+// Whether a timer's current value counts down from the set value (VPC t00..t15, every CPM1
+// TIM: Semantics::downTimersBelow), so that the time elapsed is set value - current value.
+bool timerCountsDown(const Target &target, const Address &timer);
+
 } // namespace rung::model

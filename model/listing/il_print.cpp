@@ -166,4 +166,30 @@ int instructionSteps(const Target &target, const Instruction &instruction) {
     return steps;
 }
 
+double timerBaseMs(const Target &target, const Instruction &instruction) {
+    if (!instruction.spec || instruction.spec->op != Op::Timer)
+        return 0;
+    // The instruction's own base (CPM1 TIMH), else the timer area's (Vigor T200.. 10 ms),
+    // else the target's.
+    const Operand *timer = instruction.operands.empty() ? nullptr : &instruction.operands[0];
+    const double areaBase = timer && timer->kind == Operand::Kind::Device &&
+                                    timer->address.valid()
+                                ? target.area(timer->address.area).timerBaseMs
+                                : 0;
+    double base = instruction.spec->timerBaseMs > 0 ? instruction.spec->timerBaseMs
+                  : areaBase > 0                    ? areaBase
+                                                    : target.defaultTimerBaseMs;
+    // PL110 TON / TOFF / TONR T PT [BASE] (seed 003 4.2.4): the allowed bases are the operand's
+    // allowedValues in the table, checked before anything runs.
+    if (target.semantics.timerCountsInWord && instruction.operands.size() > 2 &&
+        instruction.operands[2].kind == Operand::Kind::Constant)
+        base = static_cast<double>(instruction.operands[2].constant.value);
+    return base;
+}
+
+bool timerCountsDown(const Target &target, const Address &timer) {
+    return timer.valid() && target.area(timer.area).kind == AreaKind::Timer &&
+           timer.index < target.semantics.downTimersBelow;
+}
+
 } // namespace rung::model

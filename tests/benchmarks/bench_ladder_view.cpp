@@ -1,17 +1,30 @@
 // The ladder view's speed (issue 4): a 10,000-rung project opens and paints its first page,
-// scrolling repaints one frame, and the memory the process holds with it open.
+// scrolling repaints one frame, and the memory the process holds with it open. The live
+// overlay (issue 11): how often it repaints with a 2,000-rung program simulated as fast as
+// possible, what one overlay frame costs, and the time from toggling an input to the frame
+// that shows its coil changed, at real-time speed.
 #include "tests/model/random_program.cpp"
 
 #include "app/gui/main_window.h"
+#include "app/gui/simulation_controller.h"
+#include "editor/il_editor.h"
+#include "editor/ladder_painter.h"
 #include "editor/ladder_view.h"
+#include "simulator/session.h"
 
 #include "model/convert/convert.h"
+#include "model/target/address.h"
 
 #include <QApplication>
+#include <QElapsedTimer>
 #include <QFile>
+#include <QPaintEvent>
 #include <QScrollBar>
 #include <QStandardPaths>
 #include <QTemporaryDir>
+#include <QThread>
+
+#include <algorithm>
 
 #include <benchmark/benchmark.h>
 
@@ -96,8 +109,193 @@ void openFileInTheMainWindow(benchmark::State &state) {
     state.counters["rss_MB"] = residentMegabytes();
 }
 
+// A 2,000-rung Vigor program whose first rung is LD X20 / OUT Y20 (devices the random rungs
+// do not use) and whose second counts the scans in D100 (so that every snapshot changes what
+// the first page shows), saved as a project the main window opens.
+QString overlayProjectFile(QTemporaryDir &dir) {
+    const model::Target &t = model::Target::get(model::Family::Vigor);
+    rung::testing::RandomProgramOptions o;
+    o.rungs = 2000;
+    o.extended = true; // timers, compares, moves: values under the boxes
+    const QString text = QStringLiteral("LD X20\nOUT Y20\nLD M9000\nINC D100\n") +
+                         rung::testing::randomProgram(t, 11, o);
+    const model::ParseResult parsed = model::parseInstructionList(t, text);
+    model::Project p;
+    p.target = &t;
+    p.model = t.defaultModel().name;
+    p.program = model::listToLadder(parsed.list).ladder;
+    const QString path = dir.filePath(QStringLiteral("overlay.rung"));
+    model::ProjectError error;
+    return parsed.ok() && model::saveProject(p, path, &error) ? path : QString();
+}
+
+// Counts the paint events of a widget and when the last one ended.
+struct PaintCounter : QObject {
+    int paints = 0;
+    bool eventFilter(QObject *, QEvent *event) override {
+        if (event->type() == QEvent::Paint)
+            ++paints;
+        return false;
+    }
+};
+
+// The window as a user has it: ladder and list side by side, 1366x768, the program running.
+struct RunningWindow {
+    QTemporaryDir dir;
+    app::MainWindow window;
+    bool ok = false;
+    explicit RunningWindow(double speed) {
+        const QString path = overlayProjectFile(dir);
+        window.resize(1366, 768);
+        window.setSideBySide(true);
+        window.show();
+        if (path.isEmpty() || !window.openFile(path, QString(), true))
+            return;
+        window.simulation()->setSpeed(speed);
+        ok = window.simulation()->run();
+        QApplication::processEvents();
+    }
+    ~RunningWindow() { window.simulation()->stop(); }
+};
+
+// The overlay's frame rate with the program scanning as fast as the engine goes: every
+// snapshotChanged (at most 30 a second) repaints the rungs on screen that changed. Counters:
+// frames (ladder repaints) and snapshots per second, scans per second.
+void overlayFramesAtFullSpeed(benchmark::State &state) {
+    RunningWindow w(0.0);
+    if (!w.ok) {
+        state.SkipWithError("the program did not run");
+        return;
+    }
+    editor::LadderView *view = w.window.ladderView();
+    PaintCounter frames;
+    view->viewport()->installEventFilter(&frames);
+    int snapshots = 0;
+    QObject::connect(w.window.simulation()->session(), &model::MonitorSource::snapshotChanged, view,
+                     [&snapshots] { ++snapshots; });
+    QApplication::processEvents();
+    const quint64 scansBefore = w.window.simulation()->session()->snapshot()->statistics.scans;
+    QElapsedTimer clock;
+    clock.start();
+    frames.paints = 0;
+    snapshots = 0;
+    for (auto _ : state) {
+        // One second of the event loop, as the user's screen has it.
+        QElapsedTimer second;
+        second.start();
+        while (second.elapsed() < 1000)
+            QApplication::processEvents(QEventLoop::AllEvents, 5);
+    }
+    const double seconds = static_cast<double>(clock.elapsed()) / 1000.0;
+    const quint64 scans =
+        w.window.simulation()->session()->snapshot()->statistics.scans - scansBefore;
+    state.counters["overlay_fps"] = frames.paints / seconds;
+    state.counters["snapshots_per_s"] = snapshots / seconds;
+    state.counters["scans_per_s"] = static_cast<double>(scans) / seconds;
+    state.counters["rungs"] = static_cast<double>(w.window.document()->ladder().rungs.size());
+    view->viewport()->removeEventFilter(&frames);
+}
+
+// What one overlay frame costs the UI thread: the snapshot's power flow mapped to the rungs on
+// screen and those rungs repainted (the ladder at 1366x768), the program paused between
+// frames so that each frame has its own scan.
+void overlayFrameCost(benchmark::State &state) {
+    RunningWindow w(0.0);
+    if (!w.ok) {
+        state.SkipWithError("the program did not run");
+        return;
+    }
+    app::SimulationController *sim = w.window.simulation();
+    sim->pause();
+    editor::LadderView *view = w.window.ladderView();
+    const model::Address x20 = std::get<model::Address>(
+        model::parseAddress(w.window.document()->target(), QStringLiteral("X20")));
+    bool on = false;
+    for (auto _ : state) {
+        state.PauseTiming();
+        on = !on;
+        sim->session()->writeBit(x20, on);
+        sim->singleScan();
+        // The scan's snapshot, not yet told to the view.
+        QElapsedTimer wait;
+        wait.start();
+        while (sim->session()->snapshot()->statistics.scans == 0 ||
+               sim->session()->snapshot()->bit(x20) != on) {
+            if (wait.elapsed() > 2000)
+                break;
+            QThread::msleep(1);
+        }
+        state.ResumeTiming();
+        // snapshotChanged as the source emits it, then the repaint it asks for.
+        emit sim->session()->snapshotChanged();
+        view->viewport()->repaint();
+    }
+}
+
+// Input to screen at real-time speed (x1, 10 ms scans): X20 written through the source, then
+// the event loop runs until a repaint of the ladder shows Y20's coil changed (its fill, read
+// from the screen). The time includes the wait for the next scan, the snapshot and
+// notification rate limit (34 ms) and the repaint.
+void inputToScreenLatency(benchmark::State &state) {
+    RunningWindow w(1.0);
+    if (!w.ok) {
+        state.SkipWithError("the program did not run");
+        return;
+    }
+    app::SimulationController *sim = w.window.simulation();
+    editor::LadderView *view = w.window.ladderView();
+    view->verticalScrollBar()->setValue(0);
+    const model::Address x20 = std::get<model::Address>(
+        model::parseAddress(w.window.document()->target(), QStringLiteral("X20")));
+    const QRect out = view->cellRectOnScreen({0, 0, view->metrics().gridColumns});
+    const QPoint coil(static_cast<int>(out.left() + out.width() * 0.4),
+                      static_cast<int>(out.top() + view->metrics().rowHeight * 0.55));
+    PaintCounter frames;
+    view->viewport()->installEventFilter(&frames);
+    const QColor lit = editor::LadderPainter::energisedColor();
+    std::vector<double> latencies;
+    bool on = false;
+    for (auto _ : state) {
+        on = !on;
+        QElapsedTimer clock;
+        clock.start();
+        sim->session()->writeBit(x20, on);
+        bool shown = false;
+        while (!shown && clock.elapsed() < 2000) {
+            const int before = frames.paints;
+            QApplication::processEvents(QEventLoop::AllEvents, 1);
+            if (frames.paints == before)
+                continue;
+            const double at = static_cast<double>(clock.nsecsElapsed()) / 1e6;
+            shown = (view->viewport()->grab().toImage().pixelColor(coil) == lit) == on;
+            if (shown)
+                latencies.push_back(at);
+        }
+        if (!shown) {
+            state.SkipWithError("the coil did not change on screen within 2 s");
+            break;
+        }
+        state.SetIterationTime(latencies.back() / 1000.0);
+        // Next toggle at a random phase of the scan and of the notification timer.
+        QElapsedTimer pause;
+        pause.start();
+        while (pause.elapsed() < 60 + static_cast<int>(latencies.size() * 7 % 40))
+            QApplication::processEvents(QEventLoop::AllEvents, 5);
+    }
+    view->viewport()->removeEventFilter(&frames);
+    if (latencies.empty())
+        return;
+    std::sort(latencies.begin(), latencies.end());
+    state.counters["median_ms"] = latencies[latencies.size() / 2];
+    state.counters["p90_ms"] = latencies[latencies.size() * 9 / 10];
+    state.counters["max_ms"] = latencies.back();
+}
+
 } // namespace
 
+BENCHMARK(overlayFramesAtFullSpeed)->Unit(benchmark::kMillisecond)->Iterations(3);
+BENCHMARK(overlayFrameCost)->Unit(benchmark::kMillisecond)->Iterations(40);
+BENCHMARK(inputToScreenLatency)->Unit(benchmark::kMillisecond)->UseManualTime()->Iterations(40);
 BENCHMARK(openAndPaintFirstPage)->Unit(benchmark::kMillisecond)->Iterations(3);
 BENCHMARK(scrollOnePage)->Unit(benchmark::kMillisecond);
 BENCHMARK(openFileInTheMainWindow)->Unit(benchmark::kMillisecond)->Iterations(3);

@@ -1,0 +1,75 @@
+// Live values in the window: the one function that hands the active MonitorSource to every
+// monitoring view, the label that says which origin is shown, and the instruction list's
+// line map for its values. A view added later (I/O panel, timing chart, online dock) is one
+// more line in setMonitorSource.
+
+#include "main_window.h"
+
+#include "editor/il_editor.h"
+#include "editor/ladder_view.h"
+#include "editor/watch_list_view.h"
+
+#include "model/image/monitor_source.h"
+
+#include <QLabel>
+#include <QStatusBar>
+
+namespace rung::app {
+
+void MainWindow::setMonitorSource(model::MonitorSource *source, MonitorOrigin origin) {
+    m_monitorSource = source;
+    m_monitorOrigin = origin;
+    m_ladder->setMonitorSource(source);
+    m_il->setMonitorSource(source);
+    m_watch->setMonitorSource(source);
+    updateMonitorLabel();
+    updateTitle();
+    updateSimulationStatus();
+}
+
+QString MainWindow::originText(MonitorOrigin origin) {
+    switch (origin) {
+    case MonitorOrigin::Simulation:
+        return tr("Simulation");
+    case MonitorOrigin::Online:
+        return tr("Online PLC");
+    case MonitorOrigin::History:
+        return tr("History (read-only)");
+    }
+    return {};
+}
+
+void MainWindow::updateMonitorLabel() {
+    if (!m_statusOrigin) {
+        m_statusOrigin = new QLabel;
+        m_statusOrigin->setObjectName(QStringLiteral("monitorOrigin"));
+        // Framed and bold: which values these are must not be missed.
+        m_statusOrigin->setFrameShape(QFrame::Box);
+        m_statusOrigin->setStyleSheet(
+            QStringLiteral("QLabel { font-weight: bold; padding: 0 6px; }"));
+        statusBar()->addPermanentWidget(m_statusOrigin);
+    }
+    m_statusOrigin->setVisible(m_monitorSource != nullptr);
+    m_statusOrigin->setText(m_monitorSource ? originText(m_monitorOrigin) : QString());
+    m_statusOrigin->setToolTip(m_monitorSource
+                                   ? tr("The ladder, the instruction list and the watch lists "
+                                        "show the values of: %1")
+                                         .arg(originText(m_monitorOrigin))
+                                   : QString());
+}
+
+void MainWindow::updateMonitorLines(bool typed) {
+    const auto &instructions = m_document->listing().list.instructions;
+    if (!typed) {
+        m_il->setMonitorLines(m_document->printedListing().instructionOfLine, instructions);
+        return;
+    }
+    // The text as typed: its own lines when it holds the program's instructions one for one,
+    // else no values (they would stand on the wrong lines).
+    if (m_typedSteps.text == m_il->text() && !m_typedSteps.instructionOfLine.empty())
+        m_il->setMonitorLines(m_typedSteps.instructionOfLine, instructions);
+    else
+        m_il->setMonitorLines({}, {});
+}
+
+} // namespace rung::app

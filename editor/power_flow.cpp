@@ -1,0 +1,374 @@
+#include "power_flow.h"
+
+#include "model/listing/il.h"
+
+#include <QCoreApplication>
+
+namespace rung::editor {
+
+namespace {
+
+struct Tr {
+    Q_DECLARE_TR_FUNCTIONS(rung::editor::PowerFlow)
+};
+
+bool isDevice(const model::Operand &o) {
+    return o.kind == model::Operand::Kind::Device && o.address.valid();
+}
+
+// A bit the snapshot can say ON or OFF: a bit device, a channel's bit, a timer's or
+// counter's done bit.
+bool hasBit(const model::Snapshot &s, const model::Address &a) {
+    return s.layout && s.layout->bit(a).valid();
+}
+
+model::AreaKind kindOf(const model::Snapshot &s, const model::Address &a) {
+    return s.layout->target().area(a.area).kind;
+}
+
+bool compare(model::CompareOp op, qint64 a, qint64 b) {
+    switch (op) {
+    case model::CompareOp::Eq:
+        return a == b;
+    case model::CompareOp::Ne:
+        return a != b;
+    case model::CompareOp::Lt:
+        return a < b;
+    case model::CompareOp::Le:
+        return a <= b;
+    case model::CompareOp::Gt:
+        return a > b;
+    case model::CompareOp::Ge:
+        return a >= b;
+    case model::CompareOp::None:
+        break;
+    }
+    return false;
+}
+
+// Time base in seconds as the overlay writes it: "0.1", "0.01", "1".
+QString seconds(double baseMs) {
+    return QString::number(baseMs / 1000.0, 'g', 6);
+}
+
+bool isCoil(model::Op op) {
+    return op == model::Op::Out || op == model::Op::Set || op == model::Op::Reset ||
+           op == model::Op::PulseRise || op == model::Op::PulseFall || op == model::Op::Keep;
+}
+
+} // namespace
+
+ProgramFlow::ProgramFlow(const model::LadderProgram &ladder, const model::ToListingResult &listing,
+                         const model::Snapshot &snapshot)
+    : m_ladder(ladder)
+    , m_listing(listing)
+    , m_snapshot(snapshot) {
+    const auto &instructions = listing.list.instructions;
+    const std::size_t n = instructions.size();
+    const std::vector<bool> &flow = snapshot.powerFlow;
+    m_hasFlow = n > 0 && flow.size() == n && listing.origin.size() == n && snapshot.layout;
+    if (!snapshot.layout || listing.origin.size() != n)
+        return;
+    m_conducts.assign(n, kUnknown);
+    m_gate.assign(n, 1);
+    // The engine's gate (docs/simulator.md): every LD is ANDed with interlock && step. Without
+    // power flow (an online PLC) the step relays still tell the steps; an interlock is then
+    // taken as ON.
+    bool interlock = true;
+    bool step = true;
+    const auto known = [](bool v) { return static_cast<std::int8_t>(v ? 1 : 0); };
+    for (std::size_t i = 0; i < n; ++i) {
+        const model::Instruction &ins = instructions[i];
+        const bool gate = interlock && step;
+        m_gate[i] = gate ? 1 : 0;
+        const bool result = m_hasFlow && flow[i];
+        const bool before = m_hasFlow && i > 0 && flow[i - 1];
+        switch (ins.op()) {
+        case model::Op::Load: // result = gate AND contact
+            if (m_hasFlow && gate)
+                m_conducts[i] = known(result);
+            break;
+        case model::Op::And: // result = before AND contact
+            if (m_hasFlow && before)
+                m_conducts[i] = known(result);
+            break;
+        case model::Op::Or: // result = before OR contact
+            if (m_hasFlow && !before)
+                m_conducts[i] = known(result);
+            break;
+        case model::Op::Invert: // INV / NOT, PL110 P / N: what the element passes on
+            if (m_hasFlow)
+                m_conducts[i] = known(result);
+            break;
+        case model::Op::Interlock:
+            interlock = m_hasFlow ? result : true;
+            break;
+        case model::Op::InterlockClear:
+            interlock = true;
+            break;
+        case model::Op::StepLadder:
+            // The result is interlock AND step: it tells the step only while the interlock is
+            // ON; otherwise the step relay's bit does.
+            if (m_hasFlow && interlock)
+                step = result;
+            else
+                step = !ins.operands.empty() && isDevice(ins.operands[0]) &&
+                       snapshot.bit(ins.operands[0].address);
+            break;
+        case model::Op::Return:
+            step = true;
+            break;
+        default:
+            break;
+        }
+    }
+}
+
+std::int8_t ProgramFlow::fromDevices(const model::Contact &c) const {
+    if (c.invert || c.operands.empty() || !m_snapshot.layout)
+        return kUnknown;
+    if (c.compare != model::CompareOp::None) {
+        if (c.operands.size() < 2)
+            return kUnknown;
+        qint64 v[2] = {0, 0};
+        for (int k = 0; k < 2; ++k) {
+            const model::Operand &o = c.operands[static_cast<std::size_t>(k)];
+            if (isDevice(o))
+                v[k] = m_snapshot.value(o.address);
+            else if (o.kind == model::Operand::Kind::Constant)
+                v[k] = o.constant.value;
+            else
+                return kUnknown;
+        }
+        const bool holds = compare(c.compare, v[0], v[1]);
+        return (c.mode == model::ContactMode::Negated ? !holds : holds) ? 1 : 0;
+    }
+    const model::Operand &o = c.operands.front();
+    if (!isDevice(o) || !hasBit(m_snapshot, o.address))
+        return kUnknown;
+    const bool on = m_snapshot.bit(o.address);
+    switch (c.mode) {
+    case model::ContactMode::Normal:
+        return on ? 1 : 0;
+    case model::ContactMode::Negated:
+        return on ? 0 : 1;
+    case model::ContactMode::Rising:
+    case model::ContactMode::Falling:
+        break; // an edge lasts one scan: only the power flow knows it
+    }
+    return kUnknown;
+}
+
+RungOverlay ProgramFlow::rung(int index, bool stale) const {
+    RungOverlay o;
+    if (index < 0 || index >= static_cast<int>(m_ladder.rungs.size()) || !m_snapshot.layout)
+        return o;
+    const model::Rung &r = m_ladder.rungs[static_cast<std::size_t>(index)];
+    const int rows = r.rows;
+    const int columns = r.columns;
+    const int nodes = columns + 1;
+    const auto cell = [columns](int row, int column) {
+        return static_cast<std::size_t>(row * columns + column);
+    };
+    o.rows = rows;
+    o.columns = columns;
+    o.stale = stale;
+    o.node.assign(static_cast<std::size_t>(rows * nodes), 0);
+    o.closed.assign(static_cast<std::size_t>(rows * columns), 0);
+    o.passing.assign(static_cast<std::size_t>(rows * columns), 0);
+    o.forced.assign(static_cast<std::size_t>(rows * columns), 0);
+    o.value.assign(static_cast<std::size_t>(rows * columns), QString());
+    o.outputs.resize(static_cast<std::size_t>(rows));
+
+    // What the scan found, by cell: the first instruction written from a cell that tells.
+    std::vector<std::int8_t> scanned(static_cast<std::size_t>(rows * columns), kUnknown);
+    bool rail = true;
+    const auto &first = m_listing.rungFirst;
+    if (!m_gate.empty() && static_cast<std::size_t>(index) + 1 < first.size()) {
+        const int begin = first[static_cast<std::size_t>(index)];
+        const int end = first[static_cast<std::size_t>(index) + 1];
+        if (begin < end && begin >= 0 && static_cast<std::size_t>(begin) < m_gate.size())
+            rail = m_gate[static_cast<std::size_t>(begin)] != 0;
+        for (int i = std::max(0, begin); i < end && static_cast<std::size_t>(i) < m_conducts.size();
+             ++i) {
+            const model::CellOrigin &at = m_listing.origin[static_cast<std::size_t>(i)];
+            if (at.rung != index || at.row < 0 || at.row >= rows || at.column < 0 ||
+                at.column >= columns)
+                continue;
+            std::int8_t &s = scanned[cell(at.row, at.column)];
+            if (s == kUnknown)
+                s = m_conducts[static_cast<std::size_t>(i)];
+        }
+    }
+    o.rail = rail;
+
+    // Each cell's conduction: the drawing's (the device, or the scan where the device cannot
+    // tell) and the one power follows (the scan's, else the device's).
+    enum class Pass : std::uint8_t { None, Wire, Contact, Invert, Scanned };
+    std::vector<Pass> pass(static_cast<std::size_t>(rows * columns), Pass::None);
+    std::vector<std::uint8_t> follows(static_cast<std::size_t>(rows * columns), 0);
+    for (int row = 0; row < rows; ++row)
+        for (int column = 0; column < columns; ++column) {
+            const model::Cell &c = r.cell(row, column);
+            const std::size_t k = cell(row, column);
+            if (c.kind == model::CellKind::Wire) {
+                pass[k] = Pass::Wire;
+                o.closed[k] = 1;
+                continue;
+            }
+            if (c.kind != model::CellKind::Contact)
+                continue;
+            const model::Contact &contact = c.contact;
+            if (contact.invert) {
+                // NOT inverts what reaches it; P / N pass one scan's edge of it.
+                const bool edge = contact.mode != model::ContactMode::Normal;
+                pass[k] = edge ? Pass::Scanned : Pass::Invert;
+                follows[k] = scanned[k] == 1 ? 1 : 0;
+                continue;
+            }
+            pass[k] = Pass::Contact;
+            const std::int8_t device = fromDevices(contact);
+            const std::int8_t shown = device != kUnknown ? device : scanned[k];
+            const std::int8_t power = scanned[k] != kUnknown ? scanned[k] : device;
+            o.closed[k] = shown == 1 ? 1 : 0;
+            follows[k] = power == 1 ? 1 : 0;
+            QStringList values;
+            for (const model::Operand &operand : contact.operands) {
+                if (!isDevice(operand))
+                    continue;
+                if (m_snapshot.forced(operand.address))
+                    o.forced[k] = 1;
+                if (contact.compare != model::CompareOp::None)
+                    values << wordText(m_snapshot, operand.address);
+            }
+            o.value[k] = values.join(QStringLiteral(", "));
+        }
+
+    // Left to right: a cell passes what reaches its left node; the vertical links join the
+    // nodes of a column into one.
+    for (int row = 0; row < rows; ++row)
+        o.node[static_cast<std::size_t>(row * nodes)] = rail ? 1 : 0;
+    for (int column = 0; column < columns; ++column) {
+        for (int row = 0; row < rows; ++row) {
+            const std::size_t k = cell(row, column);
+            const bool left = o.node[static_cast<std::size_t>(row * nodes + column)] != 0;
+            bool passes = false;
+            switch (pass[k]) {
+            case Pass::None:
+                break;
+            case Pass::Wire:
+                passes = left;
+                break;
+            case Pass::Contact:
+                passes = left && follows[k];
+                break;
+            case Pass::Invert:
+                passes = !left;
+                o.closed[k] = passes ? 1 : 0;
+                break;
+            case Pass::Scanned:
+                passes = follows[k] != 0;
+                o.closed[k] = passes ? 1 : 0;
+                break;
+            }
+            o.passing[k] = passes ? 1 : 0;
+            o.node[static_cast<std::size_t>(row * nodes + column + 1)] = passes ? 1 : 0;
+        }
+        for (int top = 0; top < rows;) {
+            int bottom = top;
+            while (bottom + 1 < rows && r.link(bottom, column + 1))
+                ++bottom;
+            bool any = false;
+            for (int row = top; row <= bottom; ++row)
+                any = any || o.node[static_cast<std::size_t>(row * nodes + column + 1)];
+            for (int row = top; row <= bottom; ++row)
+                o.node[static_cast<std::size_t>(row * nodes + column + 1)] = any ? 1 : 0;
+            top = bottom + 1;
+        }
+    }
+
+    for (int row = 0; row < rows; ++row) {
+        const auto &ins = r.outputs[static_cast<std::size_t>(row)];
+        if (!ins || !ins->spec)
+            continue;
+        RungOverlay::Output &out = o.outputs[static_cast<std::size_t>(row)];
+        out.present = true;
+        const model::Op op = ins->op();
+        // END, STL, RET, ILC, JPE take no condition: no power flows to them.
+        if (model::isUnconditional(op))
+            o.node[static_cast<std::size_t>(row * nodes + columns)] = 0;
+        out.powered = o.node[static_cast<std::size_t>(row * nodes + columns)] != 0;
+        const model::Operand *device = !ins->operands.empty() && isDevice(ins->operands.front())
+                                           ? &ins->operands.front()
+                                           : nullptr;
+        // A coil's device, a timer's or counter's done bit, the step relay of an STL.
+        if (device &&
+            (isCoil(op) || op == model::Op::Timer || op == model::Op::Counter ||
+             op == model::Op::UpDownCounter || op == model::Op::StepLadder) &&
+            hasBit(m_snapshot, device->address)) {
+            out.hasBit = true;
+            out.on = m_snapshot.bit(device->address);
+        }
+        for (const model::Operand &operand : ins->operands)
+            if (isDevice(operand) && m_snapshot.forced(operand.address))
+                out.forced = true;
+        if (!isCoil(op) && op != model::Op::StepLadder)
+            out.value = valuesText(m_ladder.target ? *m_ladder.target : m_snapshot.layout->target(),
+                                   *ins, m_snapshot);
+    }
+    return o;
+}
+
+QString ProgramFlow::wordText(const model::Snapshot &snapshot, const model::Address &address) {
+    if (!snapshot.layout)
+        return {};
+    if (address.bit >= 0 || kindOf(snapshot, address) == model::AreaKind::Bit)
+        return snapshot.bit(address) ? Tr::tr("ON") : Tr::tr("OFF");
+    return QString::number(snapshot.value(address));
+}
+
+QString ProgramFlow::timerText(const model::Target &target, const model::Instruction &timer,
+                               const model::Snapshot &snapshot) {
+    if (timer.operands.empty() || !isDevice(timer.operands.front()))
+        return {};
+    const model::Address &t = timer.operands.front().address;
+    const qint64 current = snapshot.value(t);
+    const qint64 set = snapshot.setValue(t);
+    const qint64 elapsed = model::timerCountsDown(target, t) ? set - current : current;
+    const double base = model::timerBaseMs(target, timer);
+    if (base <= 0)
+        return QStringLiteral("%1/%2").arg(elapsed).arg(set);
+    //: a timer's time elapsed / set value in its units, then the unit: "23/50 ×0.1 s"
+    return Tr::tr("%1/%2 ×%3 s").arg(elapsed).arg(set).arg(seconds(base));
+}
+
+QString ProgramFlow::counterText(const model::Operand &counter, const model::Snapshot &snapshot) {
+    if (!isDevice(counter))
+        return {};
+    return QStringLiteral("%1/%2")
+        .arg(snapshot.value(counter.address))
+        .arg(snapshot.setValue(counter.address));
+}
+
+QString ProgramFlow::valuesText(const model::Target &target, const model::Instruction &ins,
+                                const model::Snapshot &snapshot) {
+    if (!snapshot.layout)
+        return {};
+    const model::Op op = ins.op();
+    if (op == model::Op::Timer)
+        return timerText(target, ins, snapshot);
+    if ((op == model::Op::Counter || op == model::Op::UpDownCounter) && !ins.operands.empty())
+        return counterText(ins.operands.front(), snapshot);
+    QStringList parts;
+    for (const model::Operand &o : ins.operands) {
+        if (!isDevice(o) || o.address.bit >= 0 ||
+            kindOf(snapshot, o.address) == model::AreaKind::Bit)
+            continue;
+        //: a device and its value under a box: "D0 = 12"
+        parts << Tr::tr("%1 = %2").arg(model::formatOperand(target, o),
+                                       wordText(snapshot, o.address));
+    }
+    return parts.join(QStringLiteral("  "));
+}
+
+} // namespace rung::editor
