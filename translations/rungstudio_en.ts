@@ -4,7 +4,7 @@
 <context>
     <name>rung::app::MainWindow</name>
     <message numerus="yes">
-        <location filename="../app/gui/main_window.cpp" line="+290"/>
+        <location filename="../app/gui/main_window.cpp" line="+289"/>
         <source>%n rung(s)</source>
         <translation>
             <numerusform>%n rung</numerusform>
@@ -55,6 +55,18 @@
         <translation>
             <numerusform>Delete %n rung</numerusform>
             <numerusform>Delete %n rungs</numerusform>
+        </translation>
+    </message>
+</context>
+<context>
+    <name>rung::editor::TimingChart</name>
+    <message numerus="yes">
+        <location filename="../editor/timing_chart.cpp" line="+390"/>
+        <source>B − A: %1 (%n scan(s))</source>
+        <extracomment>the time between the cursors, and how many scans that is</extracomment>
+        <translation>
+            <numerusform>B − A: %1 (%n scan)</numerusform>
+            <numerusform>B − A: %1 (%n scans)</numerusform>
         </translation>
     </message>
 </context>

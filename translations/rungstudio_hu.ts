@@ -247,7 +247,7 @@ Kilépési kód: 0 nincs hiba, 1 a programban hiba van, 2 használati vagy I/O h
         <translation>Ismeretlen célrendszer: %1; használható: vpc, vigor, cpm1 vagy pl110</translation>
     </message>
     <message>
-        <location filename="../app/gui/application.cpp" line="+35"/>
+        <location filename="../app/gui/application.cpp" line="+40"/>
         <source>Rung Studio</source>
         <translation>Rung Studio</translation>
     </message>
@@ -255,27 +255,21 @@ Kilépési kód: 0 nincs hiba, 1 a programban hiba van, 2 használati vagy I/O h
 <context>
     <name>rung::app::MainWindow</name>
     <message>
-        <location filename="../app/gui/main_window.cpp" line="+154"/>
+        <location filename="../app/gui/main_window.cpp" line="+157"/>
         <source>Problems</source>
         <translation>Problémák</translation>
     </message>
     <message>
         <location line="+5"/>
-        <location line="+263"/>
+        <location line="+259"/>
         <source>Project</source>
         <translation>Projekt</translation>
     </message>
     <message>
-        <location line="-256"/>
-        <location line="+259"/>
+        <location line="-252"/>
+        <location line="+255"/>
         <source>Symbols</source>
         <translation>Szimbólumok</translation>
-    </message>
-    <message>
-        <location line="-255"/>
-        <location line="+256"/>
-        <source>Watch lists</source>
-        <translation>Figyelőlisták</translation>
     </message>
     <message>
         <location filename="../app/gui/main_window_actions.cpp" line="+46"/>
@@ -463,7 +457,7 @@ Kilépési kód: 0 nincs hiba, 1 a programban hiba van, 2 használati vagy I/O h
         <translation>S&amp;or törlése</translation>
     </message>
     <message>
-        <location line="+61"/>
+        <location line="+62"/>
         <source>Simulation: F10 run, F11 pause, Shift+F11 stop, F12 single scan, Ctrl+Shift+F12 power cycle</source>
         <translation>Szimuláció: F10 futtatás, F11 szünet, Shift+F11 leállítás, F12 egy ciklus, Ctrl+Shift+F12 ki-bekapcsolás</translation>
     </message>
@@ -478,7 +472,7 @@ Kilépési kód: 0 nincs hiba, 1 a programban hiba van, 2 használati vagy I/O h
         <translation>&amp;Mégis</translation>
     </message>
     <message>
-        <location line="-167"/>
+        <location line="-168"/>
         <source>Select</source>
         <translation>Kijelölés</translation>
     </message>
@@ -595,7 +589,7 @@ Kilépési kód: 0 nincs hiba, 1 a programban hiba van, 2 használati vagy I/O h
         <translation>Program ellen&amp;őrzése</translation>
     </message>
     <message>
-        <location line="+4"/>
+        <location line="+5"/>
         <source>&amp;Language</source>
         <translation>N&amp;yelv</translation>
     </message>
@@ -651,7 +645,7 @@ Ladder and instruction-list editor for VPC, Vigor, CPM1 and PL110.</source>
 Létradiagram- és utasításlista-szerkesztő VPC, Vigor, CPM1 és PL110 PLC-khez.</translation>
     </message>
     <message>
-        <location filename="../app/gui/main_window.cpp" line="-238"/>
+        <location filename="../app/gui/main_window.cpp" line="-237"/>
         <source>Rung Comment</source>
         <translation>Létrafok megjegyzése</translation>
     </message>
@@ -868,6 +862,7 @@ Létradiagram- és utasításlista-szerkesztő VPC, Vigor, CPM1 és PL110 PLC-kh
         <location line="-4"/>
         <location line="+8"/>
         <location line="+10"/>
+        <location filename="../app/gui/main_window_panels.cpp" line="+50"/>
         <location filename="../app/gui/main_window_tools.cpp" line="+3"/>
         <source>Cannot export</source>
         <translation>Az exportálás nem sikerült</translation>
@@ -985,7 +980,7 @@ Létradiagram- és utasításlista-szerkesztő VPC, Vigor, CPM1 és PL110 PLC-kh
         <translation>Az utasításlistában hibák vannak, ezért a létra még az utolsó hibátlan programot mutatja: a szimuláció előtt javítsa a listát (vagy vonja vissza a módosítást)</translation>
     </message>
     <message>
-        <location line="+34"/>
+        <location line="+32"/>
         <source>&amp;Simulation</source>
         <translation>Szi&amp;muláció</translation>
     </message>
@@ -1044,6 +1039,26 @@ Létradiagram- és utasításlista-szerkesztő VPC, Vigor, CPM1 és PL110 PLC-kh
         <location line="+8"/>
         <source>Release All &amp;Forces</source>
         <translation>&amp;Minden kényszerítés feloldása</translation>
+    </message>
+    <message>
+        <location filename="../app/gui/main_window_panels.cpp" line="-3"/>
+        <source>Export Timing Chart</source>
+        <translation>Idődiagram exportálása</translation>
+    </message>
+    <message>
+        <location line="+13"/>
+        <source>Watch</source>
+        <translation>Figyelés</translation>
+    </message>
+    <message>
+        <location line="+1"/>
+        <source>Inputs and Outputs</source>
+        <translation>Be- és kimenetek</translation>
+    </message>
+    <message>
+        <location line="+1"/>
+        <source>Timing Chart</source>
+        <translation>Idődiagram</translation>
     </message>
 </context>
 <context>
@@ -1733,7 +1748,7 @@ Létradiagram- és utasításlista-szerkesztő VPC, Vigor, CPM1 és PL110 PLC-kh
 <context>
     <name>rung::editor::CrossReferenceView</name>
     <message>
-        <location filename="../editor/cross_reference_view.cpp" line="+50"/>
+        <location filename="../editor/cross_reference_view.cpp" line="+73"/>
         <source>Device or prefix (X0, X)</source>
         <translation>Operandus vagy előtag (X0, X)</translation>
     </message>
@@ -1763,7 +1778,7 @@ Létradiagram- és utasításlista-szerkesztő VPC, Vigor, CPM1 és PL110 PLC-kh
         <translation>Utasítás</translation>
     </message>
     <message>
-        <location line="+83"/>
+        <location line="+85"/>
         <source>contact</source>
         <translation>érintkező</translation>
     </message>
@@ -1778,7 +1793,7 @@ Létradiagram- és utasításlista-szerkesztő VPC, Vigor, CPM1 és PL110 PLC-kh
         <translation>funkcióblokk</translation>
     </message>
     <message>
-        <location line="+12"/>
+        <location line="+13"/>
         <source>rung %1</source>
         <translation>%1. létrafok</translation>
     </message>
@@ -1885,6 +1900,96 @@ Létradiagram- és utasításlista-szerkesztő VPC, Vigor, CPM1 és PL110 PLC-kh
     </message>
 </context>
 <context>
+    <name>rung::editor::IoPanel</name>
+    <message>
+        <location filename="../editor/io_panel.cpp" line="+90"/>
+        <source>Inputs are switches</source>
+        <translation>A bemenetek kapcsolók</translation>
+    </message>
+    <message>
+        <location line="+1"/>
+        <source>Inputs are push buttons</source>
+        <translation>A bemenetek nyomógombok</translation>
+    </message>
+    <message>
+        <location line="+1"/>
+        <source>A switch stays where it is put; a push button is ON only while held (mouse, or Space on the focused button). The right button sets one input on its own</source>
+        <translation>A kapcsoló ott marad, ahová állították; a nyomógomb csak lenyomva tartva BE (egérrel, vagy a kijelölt gombon a Szóközzel). A jobb egérgomb egyetlen bemenetet állít be külön</translation>
+    </message>
+    <message>
+        <location line="+3"/>
+        <location line="+230"/>
+        <source>Inputs take effect at the next scan</source>
+        <translation>A bemenetek a következő ciklusban hatnak</translation>
+    </message>
+    <message>
+        <location line="-229"/>
+        <location line="+230"/>
+        <source>Run the simulation (F10) to work the inputs</source>
+        <translation>A bemenetek kezeléséhez indítsa a szimulációt (F10)</translation>
+    </message>
+    <message>
+        <location line="-147"/>
+        <source>Further inputs the program uses</source>
+        <translation>A program további bemenetei</translation>
+    </message>
+    <message>
+        <location line="+1"/>
+        <source>Further outputs the program uses</source>
+        <translation>A program további kimenetei</translation>
+    </message>
+    <message>
+        <location line="+19"/>
+        <source>Inputs</source>
+        <translation>Bemenetek</translation>
+    </message>
+    <message>
+        <location line="+0"/>
+        <source>Outputs</source>
+        <translation>Kimenetek</translation>
+    </message>
+    <message>
+        <location line="+0"/>
+        <source>Analog inputs</source>
+        <translation>Analóg bemenetek</translation>
+    </message>
+    <message>
+        <location line="+1"/>
+        <source>Analog outputs</source>
+        <translation>Analóg kimenetek</translation>
+    </message>
+    <message>
+        <location line="+14"/>
+        <source>This model has no terminals to show</source>
+        <translation>Ennek a modellnek nincs megjeleníthető kapcsa</translation>
+    </message>
+    <message>
+        <location line="+51"/>
+        <source>Switch</source>
+        <translation>Kapcsoló</translation>
+    </message>
+    <message>
+        <location line="+1"/>
+        <source>Push Button</source>
+        <translation>Nyomógomb</translation>
+    </message>
+    <message>
+        <location line="+6"/>
+        <source>Force ON</source>
+        <translation>Kényszerítés BE</translation>
+    </message>
+    <message>
+        <location line="+1"/>
+        <source>Force OFF</source>
+        <translation>Kényszerítés KI</translation>
+    </message>
+    <message>
+        <location line="+1"/>
+        <source>Release</source>
+        <translation>Feloldás</translation>
+    </message>
+</context>
+<context>
     <name>rung::editor::LadderView</name>
     <message>
         <location filename="../editor/ladder_view.cpp" line="+37"/>
@@ -1919,7 +2024,7 @@ Létradiagram- és utasításlista-szerkesztő VPC, Vigor, CPM1 és PL110 PLC-kh
     </message>
     <message>
         <location line="+22"/>
-        <location filename="../editor/ladder_view_mouse.cpp" line="+135"/>
+        <location filename="../editor/ladder_view_mouse.cpp" line="+148"/>
         <source>Draw a wire</source>
         <translation>Vezeték rajzolása</translation>
     </message>
@@ -2109,64 +2214,259 @@ Létradiagram- és utasításlista-szerkesztő VPC, Vigor, CPM1 és PL110 PLC-kh
     </message>
 </context>
 <context>
-    <name>rung::editor::WatchListView</name>
+    <name>rung::editor::TimingCanvas</name>
     <message>
-        <location filename="../editor/watch_list_view.cpp" line="+67"/>
-        <location line="+1"/>
-        <source>Watch list</source>
-        <translation>Figyelőlista</translation>
+        <location filename="../editor/timing_canvas.cpp" line="+154"/>
+        <source>Type devices above (Y0, D0..D3) or drag them here from the ladder or the watch table</source>
+        <translation>Írjon be fent operandusokat (Y0, D0..D3), vagy húzza ide őket a létradiagramról vagy a figyelőtáblából</translation>
+    </message>
+</context>
+<context>
+    <name>rung::editor::TimingChart</name>
+    <message>
+        <location filename="../editor/timing_chart.cpp" line="+157"/>
+        <source>Add: Y0, D0..D3, then Enter</source>
+        <translation>Hozzáadás: Y0, D0..D3, majd Enter</translation>
     </message>
     <message>
         <location line="+1"/>
+        <source>Devices and ranges to draw, with commas; they can also be dragged here from the ladder or the watch table</source>
+        <translation>Kirajzolandó operandusok és tartományok, vesszővel elválasztva; a létradiagramról vagy a figyelőtáblából ide is húzhatók</translation>
+    </message>
+    <message>
+        <location line="+2"/>
+        <source>Zoom in (+, Ctrl+wheel)</source>
+        <translation>Nagyítás (+, Ctrl+görgő)</translation>
+    </message>
+    <message>
+        <location line="+1"/>
+        <source>Zoom out (-, Ctrl+wheel)</source>
+        <translation>Kicsinyítés (-, Ctrl+görgő)</translation>
+    </message>
+    <message>
+        <location line="+1"/>
+        <source>Whole History</source>
+        <translation>Teljes előzmény</translation>
+    </message>
+    <message>
+        <location line="+1"/>
+        <source>Show everything recorded</source>
+        <translation>Minden rögzített adat megjelenítése</translation>
+    </message>
+    <message>
+        <location line="+1"/>
+        <source>Follow</source>
+        <translation>Követés</translation>
+    </message>
+    <message>
+        <location line="+1"/>
+        <source>Keep the newest scan at the right edge</source>
+        <translation>A legutóbbi ciklus a jobb szélen marad</translation>
+    </message>
+    <message>
+        <location line="+1"/>
+        <source>Trigger: Y0 rises, D10 &gt; 100</source>
+        <translation>Trigger: Y0 rises, D10 &gt; 100</translation>
+    </message>
+    <message>
+        <location line="+1"/>
+        <source>A condition checked after every scan: DEVICE rises, DEVICE falls, or DEVICE = &lt;&gt; &lt; &lt;= &gt; &gt;= VALUE</source>
+        <translation>Minden ciklus után vizsgált feltétel: OPERANDUS rises (felfutó él), OPERANDUS falls (lefutó él), vagy OPERANDUS = &lt;&gt; &lt; &lt;= &gt; &gt;= ÉRTÉK</translation>
+    </message>
+    <message>
+        <location line="+2"/>
+        <source>Stop the simulation</source>
+        <translation>A szimuláció leállítása</translation>
+    </message>
+    <message>
+        <location line="+1"/>
+        <source>Only mark</source>
+        <translation>Csak jelölés</translation>
+    </message>
+    <message>
+        <location line="+1"/>
+        <source>Arm</source>
+        <translation>Élesítés</translation>
+    </message>
+    <message>
+        <location line="+1"/>
+        <source>Watch for the trigger (Enter in its field does the same)</source>
+        <translation>A trigger figyelése (a mezőben az Enter ugyanezt teszi)</translation>
+    </message>
+    <message>
+        <location line="+1"/>
+        <source>Export</source>
+        <translation>Exportálás</translation>
+    </message>
+    <message>
+        <location line="+1"/>
+        <source>Save the chart as CSV (every change), PNG or SVG</source>
+        <translation>A diagram mentése CSV (minden változás), PNG vagy SVG formában</translation>
+    </message>
+    <message>
+        <location line="+1"/>
+        <source>Click: cursor A; Shift+click or right click: cursor B; wheel: scroll; Ctrl+wheel: zoom; right click on a name: its format</source>
+        <translation>Kattintás: A kurzor; Shift+kattintás vagy jobb kattintás: B kurzor; görgő: görgetés; Ctrl+görgő: nagyítás; jobb kattintás egy néven: a formátuma</translation>
+    </message>
+    <message>
+        <location line="+27"/>
+        <source>The trigger could not be armed on this source</source>
+        <translation>A trigger ezen a forráson nem élesíthető</translation>
+    </message>
+    <message>
+        <location line="+17"/>
+        <source>This source keeps no history of some devices: the chart cannot draw them</source>
+        <translation>Ez a forrás néhány operandusnak nem őrzi az előzményét: a diagram nem tudja kirajzolni őket</translation>
+    </message>
+    <message>
+        <location line="+10"/>
+        <source>Not added to the timing chart: %1</source>
+        <translation>Nem került az idődiagramra: %1</translation>
+    </message>
+    <message>
+        <location line="+11"/>
+        <source>The timing chart draws at most %1 devices</source>
+        <translation>Az idődiagram legfeljebb %1 operandust rajzol</translation>
+    </message>
+    <message>
+        <location line="+32"/>
+        <source>Show As</source>
+        <translation>Megjelenítés</translation>
+    </message>
+    <message>
+        <location line="+11"/>
+        <source>Remove</source>
+        <translation>Eltávolítás</translation>
+    </message>
+    <message>
+        <location line="+102"/>
+        <source>A: %1</source>
+        <translation>A: %1</translation>
+    </message>
+    <message>
+        <location line="+2"/>
+        <source>B: %1</source>
+        <translation>B: %1</translation>
+    </message>
+    <message numerus="yes">
+        <location line="+3"/>
+        <source>B − A: %1 (%n scan(s))</source>
+        <extracomment>the time between the cursors, and how many scans that is</extracomment>
+        <translation>
+            <numerusform>B − A: %1 (%n ciklus)</numerusform>
+        </translation>
+    </message>
+    <message>
+        <location line="+3"/>
+        <source>Click the chart for cursor A, Shift+click for cursor B</source>
+        <translation>Kattintson a diagramra az A kurzorhoz, Shift+kattintás a B kurzorhoz</translation>
+    </message>
+    <message>
+        <location line="+9"/>
+        <source>Trigger not armed: %1</source>
+        <translation>A trigger nincs élesítve: %1</translation>
+    </message>
+    <message>
+        <location line="+6"/>
+        <source>Trigger not armed: this source cannot watch %1</source>
+        <translation>A trigger nincs élesítve: ez a forrás nem tudja figyelni: %1</translation>
+    </message>
+    <message>
+        <location line="+22"/>
+        <source>Armed: stops when %1</source>
+        <translation>Élesítve: megáll, ha %1</translation>
+    </message>
+    <message>
+        <location line="+1"/>
+        <source>Armed: marks when %1</source>
+        <translation>Élesítve: jelöl, ha %1</translation>
+    </message>
+    <message>
+        <location line="+20"/>
+        <source>%1 at %2 (scan %3)</source>
+        <translation>%1: %2 (%3. ciklus)</translation>
+    </message>
+    <message>
+        <location line="+8"/>
+        <source>Trigger: %1 at %2 (scan %3); the simulation is paused there</source>
+        <translation>Trigger: %1: %2 (%3. ciklus); a szimuláció ott szünetel</translation>
+    </message>
+    <message>
+        <location line="+12"/>
+        <location line="+8"/>
+        <source>Cannot write %1: %2</source>
+        <translation>Nem írható: %1: %2</translation>
+    </message>
+    <message>
+        <location line="+15"/>
+        <location line="+13"/>
+        <location line="+7"/>
+        <source>Cannot write %1</source>
+        <translation>Nem írható: %1</translation>
+    </message>
+    <message>
+        <location line="-10"/>
+        <source>Timing chart</source>
+        <translation>Idődiagram</translation>
+    </message>
+    <message>
+        <location line="+15"/>
+        <source>%1 is no export format (CSV, PNG, SVG)</source>
+        <translation>%1 nem exportálási formátum (CSV, PNG, SVG)</translation>
+    </message>
+</context>
+<context>
+    <name>rung::editor::WatchListView</name>
+    <message>
+        <location filename="../editor/watch_list_view.cpp" line="+102"/>
         <source>Watch lists</source>
         <translation>Figyelőlisták</translation>
     </message>
     <message>
-        <location line="-2"/>
+        <location line="-5"/>
         <source>Value</source>
         <translation>Érték</translation>
     </message>
     <message>
-        <location line="+182"/>
+        <location line="+75"/>
         <source>not a device</source>
         <translation>nem operandus</translation>
     </message>
     <message>
-        <location line="-82"/>
-        <location line="+86"/>
+        <location line="+21"/>
         <location line="+6"/>
+        <location line="+6"/>
+        <location line="+50"/>
         <source>ON</source>
         <translation>BE</translation>
     </message>
     <message>
-        <location line="-127"/>
+        <location line="-37"/>
         <source>%1 is a timer or counter: its current value follows the program and cannot be written here</source>
         <translation>%1 időzítő vagy számláló: aktuális értékét a program határozza meg, itt nem írható</translation>
     </message>
     <message>
-        <location line="+38"/>
-        <location line="+83"/>
+        <location line="-25"/>
         <location line="+6"/>
+        <location line="+6"/>
+        <location line="+53"/>
         <source>OFF</source>
         <translation>KI</translation>
     </message>
     <message>
-        <location line="-86"/>
+        <location line="+3"/>
         <source>&quot;%1&quot; is no value for %2: type ON or OFF (1 or 0)</source>
         <translation>„%1” nem érték ehhez: %2; írjon BE vagy KI értéket (1 vagy 0)</translation>
     </message>
     <message>
-        <location line="+10"/>
-        <source>&quot;%1&quot; is no value for %2: type a whole number (0x before a hexadecimal one)</source>
-        <translation>„%1” nem érték ehhez: %2; írjon egész számot (hexadecimális elé 0x)</translation>
-    </message>
-    <message>
-        <location line="+22"/>
+        <location line="+60"/>
+        <location line="+33"/>
         <source>Set ON</source>
         <translation>BE-kapcsolás</translation>
     </message>
     <message>
-        <location line="+4"/>
+        <location line="-33"/>
+        <location line="+37"/>
         <source>Set OFF</source>
         <translation>KI-kapcsolás</translation>
     </message>
@@ -2191,29 +2491,127 @@ Létradiagram- és utasításlista-szerkesztő VPC, Vigor, CPM1 és PL110 PLC-kh
         <translation>Érték írása...</translation>
     </message>
     <message>
-        <location line="+28"/>
+        <location line="-181"/>
         <source>%1 of %2, %3</source>
         <translation>%1 / %2, %3</translation>
     </message>
     <message>
-        <location line="+6"/>
+        <location line="-99"/>
+        <source>Device</source>
+        <translation>Operandus</translation>
+    </message>
+    <message>
+        <location line="+0"/>
+        <source>Symbol</source>
+        <translation>Szimbólum</translation>
+    </message>
+    <message>
+        <location line="+0"/>
+        <source>Format</source>
+        <translation>Formátum</translation>
+    </message>
+    <message>
+        <location line="+0"/>
+        <source>Forced</source>
+        <translation>Kényszerítve</translation>
+    </message>
+    <message>
+        <location line="+1"/>
+        <source>Double-click or F2: write a value; a bit flips</source>
+        <translation>Dupla kattintás vagy F2: érték írása; egy bit átvált</translation>
+    </message>
+    <message>
+        <location line="+1"/>
+        <source>Double-click: show the word in decimal, signed, hexadecimal, binary or BCD</source>
+        <translation>Dupla kattintás: a szó decimális, előjeles, hexadecimális, bináris vagy BCD alakban</translation>
+    </message>
+    <message>
+        <location line="+2"/>
+        <source>Double-click: force a bit ON or OFF, or release it</source>
+        <translation>Dupla kattintás: egy bit kényszerítése BE vagy KI, vagy feloldása</translation>
+    </message>
+    <message>
+        <location line="+102"/>
         <source>%1 (forced)</source>
         <translation>%1 (kényszerített)</translation>
     </message>
     <message>
-        <location line="+43"/>
+        <location line="+75"/>
+        <source>type a whole number (0x before a hexadecimal one)</source>
+        <translation>írjon be egy egész számot (hexadecimális előtt 0x)</translation>
+    </message>
+    <message>
+        <location line="+3"/>
+        <source>type up to %1 hexadecimal digits</source>
+        <translation>írjon be legfeljebb %1 hexadecimális számjegyet</translation>
+    </message>
+    <message>
+        <location line="+3"/>
+        <source>type up to %1 binary digits (0 and 1)</source>
+        <translation>írjon be legfeljebb %1 bináris számjegyet (0 és 1)</translation>
+    </message>
+    <message>
+        <location line="+3"/>
+        <source>type up to %1 decimal digits (BCD)</source>
+        <translation>írjon be legfeljebb %1 decimális számjegyet (BCD)</translation>
+    </message>
+    <message>
+        <location line="+6"/>
+        <source>a %1-bit word holds %2..%3</source>
+        <translation>egy %1 bites szó értéke %2..%3</translation>
+    </message>
+    <message>
+        <location line="+4"/>
+        <source>&quot;%1&quot; is no value for %2: %3</source>
+        <translation>„%1” nem érték ehhez: %2: %3</translation>
+    </message>
+    <message>
+        <location line="+41"/>
+        <source>Show %1 as %2</source>
+        <translation>%1 megjelenítése: %2</translation>
+    </message>
+    <message>
+        <location line="+50"/>
+        <source>Show As</source>
+        <translation>Megjelenítés</translation>
+    </message>
+    <message>
+        <location line="+10"/>
+        <source>Remove</source>
+        <translation>Eltávolítás</translation>
+    </message>
+    <message>
+        <location line="+72"/>
+        <source>Not added to the watch list: %1</source>
+        <translation>Nem került a figyelőlistára: %1</translation>
+    </message>
+    <message>
+        <location line="+9"/>
         <source>Watch 1</source>
         <translation>Figyelés 1</translation>
     </message>
     <message>
-        <location line="+6"/>
+        <location line="+13"/>
         <source>Add %1 to the watch list</source>
         <translation>%1 hozzáadása a figyelőlistához</translation>
     </message>
     <message>
-        <location line="+14"/>
+        <location line="+36"/>
         <source>Remove %1 from the watch list</source>
         <translation>%1 eltávolítása a figyelőlistáról</translation>
+    </message>
+</context>
+<context>
+    <name>rung::editor::WatchPanel</name>
+    <message>
+        <location filename="../editor/watch_panel.cpp" line="+30"/>
+        <source>Add: a device or a range (D0..D15), then Enter</source>
+        <translation>Hozzáadás: operandus vagy tartomány (D0..D15), majd Enter</translation>
+    </message>
+    <message>
+        <location line="+1"/>
+        <source>Several at once with commas: X0, Y0, D0..D15. Devices can also be dragged here from the ladder or the cross reference</source>
+        <translation>Egyszerre több, vesszővel: X0, Y0, D0..D15. Operandusok a létradiagramról vagy a kereszthivatkozásból ide is húzhatók</translation>
     </message>
 </context>
 <context>
@@ -2320,6 +2718,26 @@ Létradiagram- és utasításlista-szerkesztő VPC, Vigor, CPM1 és PL110 PLC-kh
         <location line="+7"/>
         <source>%1: the constant is too large</source>
         <translation>%1: a konstans túl nagy</translation>
+    </message>
+    <message>
+        <location line="+59"/>
+        <source>%1: both ends of a range must be devices of one kind (D0..D15)</source>
+        <translation>%1: a tartomány mindkét vége azonos fajta operandus kell legyen (D0..D15)</translation>
+    </message>
+    <message>
+        <location line="+6"/>
+        <source>%1: the range runs backwards</source>
+        <translation>%1: a tartomány visszafelé halad</translation>
+    </message>
+    <message>
+        <location line="+2"/>
+        <source>%1: %2 devices; a range holds at most %3</source>
+        <translation>%1: %2 operandus; egy tartomány legfeljebb %3 lehet</translation>
+    </message>
+    <message>
+        <location line="+22"/>
+        <source>%1: the PLC has no %2 inside this range</source>
+        <translation>%1: a PLC-nek nincs %2 operandusa ebben a tartományban</translation>
     </message>
 </context>
 <context>
@@ -2953,12 +3371,12 @@ Létradiagram- és utasításlista-szerkesztő VPC, Vigor, CPM1 és PL110 PLC-kh
     </message>
     <message>
         <location line="+16"/>
-        <location line="+54"/>
+        <location line="+64"/>
         <source>%1: an object with &quot;device&quot; and &quot;name&quot; is expected</source>
         <translation>%1: &quot;device&quot; és &quot;name&quot; mezőket tartalmazó objektum a várt</translation>
     </message>
     <message>
-        <location line="-32"/>
+        <location line="-42"/>
         <source>setValues.%1: a whole number between -%2 and %2 is expected</source>
         <translation>setValues.%1: -%2 és %2 közötti egész szám a várt</translation>
     </message>
@@ -2968,12 +3386,17 @@ Létradiagram- és utasításlista-szerkesztő VPC, Vigor, CPM1 és PL110 PLC-kh
         <translation>%1: &quot;name&quot; és &quot;devices&quot; mezőket tartalmazó objektum a várt</translation>
     </message>
     <message>
-        <location line="+11"/>
+        <location line="+12"/>
         <source>%1.devices[%2]: a device name is expected</source>
         <translation>%1.devices[%2]: operandusnév a várt</translation>
     </message>
     <message>
-        <location line="+35"/>
+        <location line="+7"/>
+        <source>%1.formats.%2: &quot;%3&quot; is no format (dec, signed, hex, bin, bcd)</source>
+        <translation>%1.formats.%2: „%3” nem formátum (dec, signed, hex, bin, bcd)</translation>
+    </message>
+    <message>
+        <location line="+37"/>
         <source>a string</source>
         <translation>karakterlánc</translation>
     </message>
@@ -3078,7 +3501,7 @@ Létradiagram- és utasításlista-szerkesztő VPC, Vigor, CPM1 és PL110 PLC-kh
         <translation>%1: a fájl nagyobb %2 MB-nál, ennél többet a Rung Studio nem olvas be</translation>
     </message>
     <message>
-        <location filename="../model/project/project.cpp" line="+123"/>
+        <location filename="../model/project/project.cpp" line="+131"/>
         <source>%1: cannot write the file (%2)</source>
         <translation>%1: a fájl nem írható (%2)</translation>
     </message>
@@ -3392,6 +3815,11 @@ Létradiagram- és utasításlista-szerkesztő VPC, Vigor, CPM1 és PL110 PLC-kh
         <location filename="../model/target/target_vpc.cpp" line="+5"/>
         <source>End of the program</source>
         <translation>A program vége</translation>
+    </message>
+    <message>
+        <location line="+34"/>
+        <source>analog settings</source>
+        <translation>analóg beállítások</translation>
     </message>
     <message>
         <location filename="../model/target/target_pl110.cpp" line="-273"/>
@@ -4194,6 +4622,93 @@ Létradiagram- és utasításlista-szerkesztő VPC, Vigor, CPM1 és PL110 PLC-kh
     </message>
 </context>
 <context>
+    <name>rung::model::Trigger</name>
+    <message>
+        <location filename="../model/image/trigger.cpp" line="+59"/>
+        <source>Type a condition: &quot;Y0 rises&quot;, &quot;Y0 falls&quot; or &quot;D10 &gt; 100&quot;</source>
+        <translation>Írjon be egy feltételt: &quot;Y0 rises&quot;, &quot;Y0 falls&quot; vagy &quot;D10 &gt; 100&quot;</translation>
+    </message>
+    <message>
+        <location line="+25"/>
+        <source>&quot;%1&quot; is not a whole number (0x before a hexadecimal one)</source>
+        <translation>„%1” nem egész szám (hexadecimális előtt 0x)</translation>
+    </message>
+    <message>
+        <location line="+2"/>
+        <source>&quot;%1&quot; is no condition: write &quot;Y0 rises&quot;, &quot;Y0 falls&quot; or &quot;D10 &gt; 100&quot;</source>
+        <translation>„%1” nem feltétel: írja így: &quot;Y0 rises&quot;, &quot;Y0 falls&quot; vagy &quot;D10 &gt; 100&quot;</translation>
+    </message>
+    <message>
+        <location line="+10"/>
+        <source>%1 is a word: compare it with a value (&quot;%1 &gt; 100&quot;)</source>
+        <translation>%1 szó: hasonlítsa össze egy értékkel (&quot;%1 &gt; 100&quot;)</translation>
+    </message>
+</context>
+<context>
+    <name>rung::model::ValueFormat</name>
+    <message>
+        <location filename="../model/image/value_format.cpp" line="+45"/>
+        <source>Decimal</source>
+        <translation>Decimális</translation>
+    </message>
+    <message>
+        <location line="+2"/>
+        <source>Signed</source>
+        <translation>Előjeles</translation>
+    </message>
+    <message>
+        <location line="+2"/>
+        <source>Hexadecimal</source>
+        <translation>Hexadecimális</translation>
+    </message>
+    <message>
+        <location line="+2"/>
+        <source>Binary</source>
+        <translation>Bináris</translation>
+    </message>
+    <message>
+        <location line="+2"/>
+        <source>BCD</source>
+        <translation>BCD</translation>
+    </message>
+    <message>
+        <location line="+32"/>
+        <source>%1 (not BCD)</source>
+        <translation>%1 (nem BCD)</translation>
+    </message>
+    <message>
+        <location line="+13"/>
+        <location line="+61"/>
+        <source>Type a value</source>
+        <translation>Írjon be egy értéket</translation>
+    </message>
+    <message>
+        <location line="-56"/>
+        <source>%1 does not fit a %2-bit word (%3..%4)</source>
+        <translation>%1 nem fér el egy %2 bites szóban (%3..%4)</translation>
+    </message>
+    <message>
+        <location line="+14"/>
+        <source>&quot;%1&quot; is not a whole number (0x before a hexadecimal one)</source>
+        <translation>„%1” nem egész szám (hexadecimális előtt 0x)</translation>
+    </message>
+    <message>
+        <location line="+12"/>
+        <source>&quot;%1&quot; is not a hexadecimal value of at most %2 digits</source>
+        <translation>„%1” nem legfeljebb %2 jegyű hexadecimális érték</translation>
+    </message>
+    <message>
+        <location line="+10"/>
+        <source>&quot;%1&quot; is not a binary value of at most %2 digits</source>
+        <translation>„%1” nem legfeljebb %2 jegyű bináris érték</translation>
+    </message>
+    <message>
+        <location line="+14"/>
+        <source>&quot;%1&quot; is not a BCD value: at most %2 decimal digits</source>
+        <translation>„%1” nem BCD érték: legfeljebb %2 decimális számjegy</translation>
+    </message>
+</context>
+<context>
     <name>rung::simulator::CommandInbox</name>
     <message>
         <location filename="../simulator/command_inbox.cpp" line="+18"/>
@@ -4371,7 +4886,7 @@ Létradiagram- és utasításlista-szerkesztő VPC, Vigor, CPM1 és PL110 PLC-kh
 <context>
     <name>rung::simulator::SimulatorSession</name>
     <message>
-        <location filename="../simulator/session.cpp" line="+141"/>
+        <location filename="../simulator/session.cpp" line="+183"/>
         <source>Line %1: %2</source>
         <translation>%1. sor: %2</translation>
     </message>

@@ -247,7 +247,7 @@ Codice di uscita: 0 nessun errore, 1 il programma contiene errori, 2 errore di u
         <translation>Famiglia PLC sconosciuta: %1; usare vpc, vigor, cpm1 o pl110</translation>
     </message>
     <message>
-        <location filename="../app/gui/application.cpp" line="+35"/>
+        <location filename="../app/gui/application.cpp" line="+40"/>
         <source>Rung Studio</source>
         <translation>Rung Studio</translation>
     </message>
@@ -255,27 +255,21 @@ Codice di uscita: 0 nessun errore, 1 il programma contiene errori, 2 errore di u
 <context>
     <name>rung::app::MainWindow</name>
     <message>
-        <location filename="../app/gui/main_window.cpp" line="+154"/>
+        <location filename="../app/gui/main_window.cpp" line="+157"/>
         <source>Problems</source>
         <translation>Problemi</translation>
     </message>
     <message>
         <location line="+5"/>
-        <location line="+263"/>
+        <location line="+259"/>
         <source>Project</source>
         <translation>Progetto</translation>
     </message>
     <message>
-        <location line="-256"/>
-        <location line="+259"/>
+        <location line="-252"/>
+        <location line="+255"/>
         <source>Symbols</source>
         <translation>Simboli</translation>
-    </message>
-    <message>
-        <location line="-255"/>
-        <location line="+256"/>
-        <source>Watch lists</source>
-        <translation>Liste di osservazione</translation>
     </message>
     <message>
         <location filename="../app/gui/main_window_actions.cpp" line="+46"/>
@@ -463,7 +457,7 @@ Codice di uscita: 0 nessun errore, 1 il programma contiene errori, 2 errore di u
         <translation>E&amp;limina riga</translation>
     </message>
     <message>
-        <location line="+61"/>
+        <location line="+62"/>
         <source>Simulation: F10 run, F11 pause, Shift+F11 stop, F12 single scan, Ctrl+Shift+F12 power cycle</source>
         <translation>Simulazione: F10 esegui, F11 pausa, Shift+F11 stop, F12 singola scansione, Ctrl+Shift+F12 spegni e riaccendi</translation>
     </message>
@@ -478,7 +472,7 @@ Codice di uscita: 0 nessun errore, 1 il programma contiene errori, 2 errore di u
         <translation>&amp;Ripeti</translation>
     </message>
     <message>
-        <location line="-167"/>
+        <location line="-168"/>
         <source>Select</source>
         <translation>Seleziona</translation>
     </message>
@@ -595,7 +589,7 @@ Codice di uscita: 0 nessun errore, 1 il programma contiene errori, 2 errore di u
         <translation>&amp;Verifica programma</translation>
     </message>
     <message>
-        <location line="+4"/>
+        <location line="+5"/>
         <source>&amp;Language</source>
         <translation>&amp;Lingua</translation>
     </message>
@@ -651,7 +645,7 @@ Ladder and instruction-list editor for VPC, Vigor, CPM1 and PL110.</source>
 Editor di schemi ladder e liste istruzioni per VPC, Vigor, CPM1 e PL110.</translation>
     </message>
     <message>
-        <location filename="../app/gui/main_window.cpp" line="-238"/>
+        <location filename="../app/gui/main_window.cpp" line="-237"/>
         <source>Rung Comment</source>
         <translation>Commento del segmento</translation>
     </message>
@@ -870,6 +864,7 @@ Editor di schemi ladder e liste istruzioni per VPC, Vigor, CPM1 e PL110.</transl
         <location line="-4"/>
         <location line="+8"/>
         <location line="+10"/>
+        <location filename="../app/gui/main_window_panels.cpp" line="+50"/>
         <location filename="../app/gui/main_window_tools.cpp" line="+3"/>
         <source>Cannot export</source>
         <translation>Impossibile esportare</translation>
@@ -989,7 +984,7 @@ Editor di schemi ladder e liste istruzioni per VPC, Vigor, CPM1 e PL110.</transl
         <translation>La lista istruzioni contiene errori, quindi il ladder mostra ancora l&apos;ultimo programma senza errori: correggere la lista (o annullare) prima di simulare</translation>
     </message>
     <message>
-        <location line="+34"/>
+        <location line="+32"/>
         <source>&amp;Simulation</source>
         <translation>&amp;Simulazione</translation>
     </message>
@@ -1048,6 +1043,26 @@ Editor di schemi ladder e liste istruzioni per VPC, Vigor, CPM1 e PL110.</transl
         <location line="+8"/>
         <source>Release All &amp;Forces</source>
         <translation>Rilascia tutte le &amp;forzature</translation>
+    </message>
+    <message>
+        <location filename="../app/gui/main_window_panels.cpp" line="-3"/>
+        <source>Export Timing Chart</source>
+        <translation>Esporta diagramma temporale</translation>
+    </message>
+    <message>
+        <location line="+13"/>
+        <source>Watch</source>
+        <translation>Osservazione</translation>
+    </message>
+    <message>
+        <location line="+1"/>
+        <source>Inputs and Outputs</source>
+        <translation>Ingressi e uscite</translation>
+    </message>
+    <message>
+        <location line="+1"/>
+        <source>Timing Chart</source>
+        <translation>Diagramma temporale</translation>
     </message>
 </context>
 <context>
@@ -1738,7 +1753,7 @@ Editor di schemi ladder e liste istruzioni per VPC, Vigor, CPM1 e PL110.</transl
 <context>
     <name>rung::editor::CrossReferenceView</name>
     <message>
-        <location filename="../editor/cross_reference_view.cpp" line="+50"/>
+        <location filename="../editor/cross_reference_view.cpp" line="+73"/>
         <source>Device or prefix (X0, X)</source>
         <translation>Operando o prefisso (X0, X)</translation>
     </message>
@@ -1768,7 +1783,7 @@ Editor di schemi ladder e liste istruzioni per VPC, Vigor, CPM1 e PL110.</transl
         <translation>Istruzione</translation>
     </message>
     <message>
-        <location line="+83"/>
+        <location line="+85"/>
         <source>contact</source>
         <translation>contatto</translation>
     </message>
@@ -1783,7 +1798,7 @@ Editor di schemi ladder e liste istruzioni per VPC, Vigor, CPM1 e PL110.</transl
         <translation>blocco funzione</translation>
     </message>
     <message>
-        <location line="+12"/>
+        <location line="+13"/>
         <source>rung %1</source>
         <translation>segmento %1</translation>
     </message>
@@ -1891,6 +1906,96 @@ Editor di schemi ladder e liste istruzioni per VPC, Vigor, CPM1 e PL110.</transl
     </message>
 </context>
 <context>
+    <name>rung::editor::IoPanel</name>
+    <message>
+        <location filename="../editor/io_panel.cpp" line="+90"/>
+        <source>Inputs are switches</source>
+        <translation>Ingressi come interruttori</translation>
+    </message>
+    <message>
+        <location line="+1"/>
+        <source>Inputs are push buttons</source>
+        <translation>Ingressi come pulsanti</translation>
+    </message>
+    <message>
+        <location line="+1"/>
+        <source>A switch stays where it is put; a push button is ON only while held (mouse, or Space on the focused button). The right button sets one input on its own</source>
+        <translation>Un interruttore resta dove lo si mette; un pulsante è ON solo finché è premuto (mouse, o Spazio sul pulsante selezionato). Il tasto destro imposta un solo ingresso</translation>
+    </message>
+    <message>
+        <location line="+3"/>
+        <location line="+230"/>
+        <source>Inputs take effect at the next scan</source>
+        <translation>Gli ingressi valgono dalla scansione successiva</translation>
+    </message>
+    <message>
+        <location line="-229"/>
+        <location line="+230"/>
+        <source>Run the simulation (F10) to work the inputs</source>
+        <translation>Avviare la simulazione (F10) per agire sugli ingressi</translation>
+    </message>
+    <message>
+        <location line="-147"/>
+        <source>Further inputs the program uses</source>
+        <translation>Altri ingressi usati dal programma</translation>
+    </message>
+    <message>
+        <location line="+1"/>
+        <source>Further outputs the program uses</source>
+        <translation>Altre uscite usate dal programma</translation>
+    </message>
+    <message>
+        <location line="+19"/>
+        <source>Inputs</source>
+        <translation>Ingressi</translation>
+    </message>
+    <message>
+        <location line="+0"/>
+        <source>Outputs</source>
+        <translation>Uscite</translation>
+    </message>
+    <message>
+        <location line="+0"/>
+        <source>Analog inputs</source>
+        <translation>Ingressi analogici</translation>
+    </message>
+    <message>
+        <location line="+1"/>
+        <source>Analog outputs</source>
+        <translation>Uscite analogiche</translation>
+    </message>
+    <message>
+        <location line="+14"/>
+        <source>This model has no terminals to show</source>
+        <translation>Questo modello non ha morsetti da mostrare</translation>
+    </message>
+    <message>
+        <location line="+51"/>
+        <source>Switch</source>
+        <translation>Interruttore</translation>
+    </message>
+    <message>
+        <location line="+1"/>
+        <source>Push Button</source>
+        <translation>Pulsante</translation>
+    </message>
+    <message>
+        <location line="+6"/>
+        <source>Force ON</source>
+        <translation>Forza ON</translation>
+    </message>
+    <message>
+        <location line="+1"/>
+        <source>Force OFF</source>
+        <translation>Forza OFF</translation>
+    </message>
+    <message>
+        <location line="+1"/>
+        <source>Release</source>
+        <translation>Rilascia</translation>
+    </message>
+</context>
+<context>
     <name>rung::editor::LadderView</name>
     <message>
         <location filename="../editor/ladder_view.cpp" line="+37"/>
@@ -1925,7 +2030,7 @@ Editor di schemi ladder e liste istruzioni per VPC, Vigor, CPM1 e PL110.</transl
     </message>
     <message>
         <location line="+22"/>
-        <location filename="../editor/ladder_view_mouse.cpp" line="+135"/>
+        <location filename="../editor/ladder_view_mouse.cpp" line="+148"/>
         <source>Draw a wire</source>
         <translation>Disegna collegamento orizzontale</translation>
     </message>
@@ -2115,64 +2220,260 @@ Editor di schemi ladder e liste istruzioni per VPC, Vigor, CPM1 e PL110.</transl
     </message>
 </context>
 <context>
-    <name>rung::editor::WatchListView</name>
+    <name>rung::editor::TimingCanvas</name>
     <message>
-        <location filename="../editor/watch_list_view.cpp" line="+67"/>
-        <location line="+1"/>
-        <source>Watch list</source>
-        <translation>Lista di osservazione</translation>
+        <location filename="../editor/timing_canvas.cpp" line="+154"/>
+        <source>Type devices above (Y0, D0..D3) or drag them here from the ladder or the watch table</source>
+        <translation>Digitare sopra gli operandi (Y0, D0..D3) o trascinarli qui dal ladder o dalla tabella di osservazione</translation>
+    </message>
+</context>
+<context>
+    <name>rung::editor::TimingChart</name>
+    <message>
+        <location filename="../editor/timing_chart.cpp" line="+157"/>
+        <source>Add: Y0, D0..D3, then Enter</source>
+        <translation>Aggiungi: Y0, D0..D3, poi Invio</translation>
     </message>
     <message>
         <location line="+1"/>
+        <source>Devices and ranges to draw, with commas; they can also be dragged here from the ladder or the watch table</source>
+        <translation>Operandi e intervalli da tracciare, separati da virgole; si possono anche trascinare qui dal ladder o dalla tabella di osservazione</translation>
+    </message>
+    <message>
+        <location line="+2"/>
+        <source>Zoom in (+, Ctrl+wheel)</source>
+        <translation>Ingrandisci (+, Ctrl+rotellina)</translation>
+    </message>
+    <message>
+        <location line="+1"/>
+        <source>Zoom out (-, Ctrl+wheel)</source>
+        <translation>Riduci (-, Ctrl+rotellina)</translation>
+    </message>
+    <message>
+        <location line="+1"/>
+        <source>Whole History</source>
+        <translation>Tutta la cronologia</translation>
+    </message>
+    <message>
+        <location line="+1"/>
+        <source>Show everything recorded</source>
+        <translation>Mostra tutto ciò che è registrato</translation>
+    </message>
+    <message>
+        <location line="+1"/>
+        <source>Follow</source>
+        <translation>Segui</translation>
+    </message>
+    <message>
+        <location line="+1"/>
+        <source>Keep the newest scan at the right edge</source>
+        <translation>L&apos;ultima scansione resta sul bordo destro</translation>
+    </message>
+    <message>
+        <location line="+1"/>
+        <source>Trigger: Y0 rises, D10 &gt; 100</source>
+        <translation>Trigger: Y0 rises, D10 &gt; 100</translation>
+    </message>
+    <message>
+        <location line="+1"/>
+        <source>A condition checked after every scan: DEVICE rises, DEVICE falls, or DEVICE = &lt;&gt; &lt; &lt;= &gt; &gt;= VALUE</source>
+        <translation>Una condizione verificata dopo ogni scansione: OPERANDO rises (fronte di salita), OPERANDO falls (fronte di discesa), oppure OPERANDO = &lt;&gt; &lt; &lt;= &gt; &gt;= VALORE</translation>
+    </message>
+    <message>
+        <location line="+2"/>
+        <source>Stop the simulation</source>
+        <translation>Ferma la simulazione</translation>
+    </message>
+    <message>
+        <location line="+1"/>
+        <source>Only mark</source>
+        <translation>Solo segna</translation>
+    </message>
+    <message>
+        <location line="+1"/>
+        <source>Arm</source>
+        <translation>Arma</translation>
+    </message>
+    <message>
+        <location line="+1"/>
+        <source>Watch for the trigger (Enter in its field does the same)</source>
+        <translation>Attende il trigger (Invio nel suo campo fa lo stesso)</translation>
+    </message>
+    <message>
+        <location line="+1"/>
+        <source>Export</source>
+        <translation>Esporta</translation>
+    </message>
+    <message>
+        <location line="+1"/>
+        <source>Save the chart as CSV (every change), PNG or SVG</source>
+        <translation>Salva il diagramma come CSV (ogni cambiamento), PNG o SVG</translation>
+    </message>
+    <message>
+        <location line="+1"/>
+        <source>Click: cursor A; Shift+click or right click: cursor B; wheel: scroll; Ctrl+wheel: zoom; right click on a name: its format</source>
+        <translation>Clic: cursore A; Maiusc+clic o clic destro: cursore B; rotellina: scorrimento; Ctrl+rotellina: zoom; clic destro su un nome: il suo formato</translation>
+    </message>
+    <message>
+        <location line="+27"/>
+        <source>The trigger could not be armed on this source</source>
+        <translation>Il trigger non può essere armato su questa sorgente</translation>
+    </message>
+    <message>
+        <location line="+17"/>
+        <source>This source keeps no history of some devices: the chart cannot draw them</source>
+        <translation>Questa sorgente non conserva la cronologia di alcuni operandi: il diagramma non può tracciarli</translation>
+    </message>
+    <message>
+        <location line="+10"/>
+        <source>Not added to the timing chart: %1</source>
+        <translation>Non aggiunto al diagramma temporale: %1</translation>
+    </message>
+    <message>
+        <location line="+11"/>
+        <source>The timing chart draws at most %1 devices</source>
+        <translation>Il diagramma temporale traccia al massimo %1 operandi</translation>
+    </message>
+    <message>
+        <location line="+32"/>
+        <source>Show As</source>
+        <translation>Mostra come</translation>
+    </message>
+    <message>
+        <location line="+11"/>
+        <source>Remove</source>
+        <translation>Rimuovi</translation>
+    </message>
+    <message>
+        <location line="+102"/>
+        <source>A: %1</source>
+        <translation>A: %1</translation>
+    </message>
+    <message>
+        <location line="+2"/>
+        <source>B: %1</source>
+        <translation>B: %1</translation>
+    </message>
+    <message numerus="yes">
+        <location line="+3"/>
+        <source>B − A: %1 (%n scan(s))</source>
+        <extracomment>the time between the cursors, and how many scans that is</extracomment>
+        <translation>
+            <numerusform>B − A: %1 (%n scansione)</numerusform>
+            <numerusform>B − A: %1 (%n scansioni)</numerusform>
+        </translation>
+    </message>
+    <message>
+        <location line="+3"/>
+        <source>Click the chart for cursor A, Shift+click for cursor B</source>
+        <translation>Clic sul diagramma per il cursore A, Maiusc+clic per il cursore B</translation>
+    </message>
+    <message>
+        <location line="+9"/>
+        <source>Trigger not armed: %1</source>
+        <translation>Trigger non armato: %1</translation>
+    </message>
+    <message>
+        <location line="+6"/>
+        <source>Trigger not armed: this source cannot watch %1</source>
+        <translation>Trigger non armato: questa sorgente non può osservare %1</translation>
+    </message>
+    <message>
+        <location line="+22"/>
+        <source>Armed: stops when %1</source>
+        <translation>Armato: si ferma quando %1</translation>
+    </message>
+    <message>
+        <location line="+1"/>
+        <source>Armed: marks when %1</source>
+        <translation>Armato: segna quando %1</translation>
+    </message>
+    <message>
+        <location line="+20"/>
+        <source>%1 at %2 (scan %3)</source>
+        <translation>%1 a %2 (scansione %3)</translation>
+    </message>
+    <message>
+        <location line="+8"/>
+        <source>Trigger: %1 at %2 (scan %3); the simulation is paused there</source>
+        <translation>Trigger: %1 a %2 (scansione %3); la simulazione è in pausa lì</translation>
+    </message>
+    <message>
+        <location line="+12"/>
+        <location line="+8"/>
+        <source>Cannot write %1: %2</source>
+        <translation>Impossibile scrivere %1: %2</translation>
+    </message>
+    <message>
+        <location line="+15"/>
+        <location line="+13"/>
+        <location line="+7"/>
+        <source>Cannot write %1</source>
+        <translation>Impossibile scrivere %1</translation>
+    </message>
+    <message>
+        <location line="-10"/>
+        <source>Timing chart</source>
+        <translation>Diagramma temporale</translation>
+    </message>
+    <message>
+        <location line="+15"/>
+        <source>%1 is no export format (CSV, PNG, SVG)</source>
+        <translation>%1 non è un formato di esportazione (CSV, PNG, SVG)</translation>
+    </message>
+</context>
+<context>
+    <name>rung::editor::WatchListView</name>
+    <message>
+        <location filename="../editor/watch_list_view.cpp" line="+102"/>
         <source>Watch lists</source>
         <translation>Liste di osservazione</translation>
     </message>
     <message>
-        <location line="-2"/>
+        <location line="-5"/>
         <source>Value</source>
         <translation>Valore</translation>
     </message>
     <message>
-        <location line="+182"/>
+        <location line="+75"/>
         <source>not a device</source>
         <translation>non è un operando</translation>
     </message>
     <message>
-        <location line="-82"/>
-        <location line="+86"/>
+        <location line="+21"/>
         <location line="+6"/>
+        <location line="+6"/>
+        <location line="+50"/>
         <source>ON</source>
         <translation>ON</translation>
     </message>
     <message>
-        <location line="-127"/>
+        <location line="-37"/>
         <source>%1 is a timer or counter: its current value follows the program and cannot be written here</source>
         <translation>%1 è un temporizzatore o un contatore: il suo valore corrente segue il programma e qui non si può scrivere</translation>
     </message>
     <message>
-        <location line="+38"/>
-        <location line="+83"/>
+        <location line="-25"/>
         <location line="+6"/>
+        <location line="+6"/>
+        <location line="+53"/>
         <source>OFF</source>
         <translation>OFF</translation>
     </message>
     <message>
-        <location line="-86"/>
+        <location line="+3"/>
         <source>&quot;%1&quot; is no value for %2: type ON or OFF (1 or 0)</source>
         <translation>&quot;%1&quot; non è un valore per %2: scrivere ON o OFF (1 o 0)</translation>
     </message>
     <message>
-        <location line="+10"/>
-        <source>&quot;%1&quot; is no value for %2: type a whole number (0x before a hexadecimal one)</source>
-        <translation>&quot;%1&quot; non è un valore per %2: scrivere un numero intero (0x davanti a uno esadecimale)</translation>
-    </message>
-    <message>
-        <location line="+22"/>
+        <location line="+60"/>
+        <location line="+33"/>
         <source>Set ON</source>
         <translation>Imposta ON</translation>
     </message>
     <message>
-        <location line="+4"/>
+        <location line="-33"/>
+        <location line="+37"/>
         <source>Set OFF</source>
         <translation>Imposta OFF</translation>
     </message>
@@ -2197,29 +2498,127 @@ Editor di schemi ladder e liste istruzioni per VPC, Vigor, CPM1 e PL110.</transl
         <translation>Scrivi valore...</translation>
     </message>
     <message>
-        <location line="+28"/>
+        <location line="-181"/>
         <source>%1 of %2, %3</source>
         <translation>%1 di %2, %3</translation>
     </message>
     <message>
-        <location line="+6"/>
+        <location line="-99"/>
+        <source>Device</source>
+        <translation>Operando</translation>
+    </message>
+    <message>
+        <location line="+0"/>
+        <source>Symbol</source>
+        <translation>Simbolo</translation>
+    </message>
+    <message>
+        <location line="+0"/>
+        <source>Format</source>
+        <translation>Formato</translation>
+    </message>
+    <message>
+        <location line="+0"/>
+        <source>Forced</source>
+        <translation>Forzato</translation>
+    </message>
+    <message>
+        <location line="+1"/>
+        <source>Double-click or F2: write a value; a bit flips</source>
+        <translation>Doppio clic o F2: scrive un valore; un bit si inverte</translation>
+    </message>
+    <message>
+        <location line="+1"/>
+        <source>Double-click: show the word in decimal, signed, hexadecimal, binary or BCD</source>
+        <translation>Doppio clic: mostra la word in decimale, con segno, esadecimale, binario o BCD</translation>
+    </message>
+    <message>
+        <location line="+2"/>
+        <source>Double-click: force a bit ON or OFF, or release it</source>
+        <translation>Doppio clic: forza un bit ON o OFF, o lo rilascia</translation>
+    </message>
+    <message>
+        <location line="+102"/>
         <source>%1 (forced)</source>
         <translation>%1 (forzato)</translation>
     </message>
     <message>
-        <location line="+43"/>
+        <location line="+75"/>
+        <source>type a whole number (0x before a hexadecimal one)</source>
+        <translation>digitare un numero intero (0x prima di uno esadecimale)</translation>
+    </message>
+    <message>
+        <location line="+3"/>
+        <source>type up to %1 hexadecimal digits</source>
+        <translation>digitare al massimo %1 cifre esadecimali</translation>
+    </message>
+    <message>
+        <location line="+3"/>
+        <source>type up to %1 binary digits (0 and 1)</source>
+        <translation>digitare al massimo %1 cifre binarie (0 e 1)</translation>
+    </message>
+    <message>
+        <location line="+3"/>
+        <source>type up to %1 decimal digits (BCD)</source>
+        <translation>digitare al massimo %1 cifre decimali (BCD)</translation>
+    </message>
+    <message>
+        <location line="+6"/>
+        <source>a %1-bit word holds %2..%3</source>
+        <translation>una word a %1 bit contiene %2..%3</translation>
+    </message>
+    <message>
+        <location line="+4"/>
+        <source>&quot;%1&quot; is no value for %2: %3</source>
+        <translation>&quot;%1&quot; non è un valore per %2: %3</translation>
+    </message>
+    <message>
+        <location line="+41"/>
+        <source>Show %1 as %2</source>
+        <translation>Mostra %1 come %2</translation>
+    </message>
+    <message>
+        <location line="+50"/>
+        <source>Show As</source>
+        <translation>Mostra come</translation>
+    </message>
+    <message>
+        <location line="+10"/>
+        <source>Remove</source>
+        <translation>Rimuovi</translation>
+    </message>
+    <message>
+        <location line="+72"/>
+        <source>Not added to the watch list: %1</source>
+        <translation>Non aggiunto alla lista di osservazione: %1</translation>
+    </message>
+    <message>
+        <location line="+9"/>
         <source>Watch 1</source>
         <translation>Osservazione 1</translation>
     </message>
     <message>
-        <location line="+6"/>
+        <location line="+13"/>
         <source>Add %1 to the watch list</source>
         <translation>Aggiungi %1 alla lista di osservazione</translation>
     </message>
     <message>
-        <location line="+14"/>
+        <location line="+36"/>
         <source>Remove %1 from the watch list</source>
         <translation>Rimuovi %1 dalla lista di osservazione</translation>
+    </message>
+</context>
+<context>
+    <name>rung::editor::WatchPanel</name>
+    <message>
+        <location filename="../editor/watch_panel.cpp" line="+30"/>
+        <source>Add: a device or a range (D0..D15), then Enter</source>
+        <translation>Aggiungi: un operando o un intervallo (D0..D15), poi Invio</translation>
+    </message>
+    <message>
+        <location line="+1"/>
+        <source>Several at once with commas: X0, Y0, D0..D15. Devices can also be dragged here from the ladder or the cross reference</source>
+        <translation>Più di uno con le virgole: X0, Y0, D0..D15. Gli operandi si possono anche trascinare qui dal ladder o dai riferimenti incrociati</translation>
     </message>
 </context>
 <context>
@@ -2326,6 +2725,26 @@ Editor di schemi ladder e liste istruzioni per VPC, Vigor, CPM1 e PL110.</transl
         <location line="+7"/>
         <source>%1: the constant is too large</source>
         <translation>%1: la costante è troppo grande</translation>
+    </message>
+    <message>
+        <location line="+59"/>
+        <source>%1: both ends of a range must be devices of one kind (D0..D15)</source>
+        <translation>%1: entrambi gli estremi di un intervallo devono essere operandi dello stesso tipo (D0..D15)</translation>
+    </message>
+    <message>
+        <location line="+6"/>
+        <source>%1: the range runs backwards</source>
+        <translation>%1: l&apos;intervallo va all&apos;indietro</translation>
+    </message>
+    <message>
+        <location line="+2"/>
+        <source>%1: %2 devices; a range holds at most %3</source>
+        <translation>%1: %2 operandi; un intervallo ne contiene al massimo %3</translation>
+    </message>
+    <message>
+        <location line="+22"/>
+        <source>%1: the PLC has no %2 inside this range</source>
+        <translation>%1: il PLC non ha %2 in questo intervallo</translation>
     </message>
 </context>
 <context>
@@ -2966,12 +3385,12 @@ Editor di schemi ladder e liste istruzioni per VPC, Vigor, CPM1 e PL110.</transl
     </message>
     <message>
         <location line="+16"/>
-        <location line="+54"/>
+        <location line="+64"/>
         <source>%1: an object with &quot;device&quot; and &quot;name&quot; is expected</source>
         <translation>%1: è atteso un oggetto con &quot;device&quot; e &quot;name&quot;</translation>
     </message>
     <message>
-        <location line="-32"/>
+        <location line="-42"/>
         <source>setValues.%1: a whole number between -%2 and %2 is expected</source>
         <translation>setValues.%1: è atteso un numero intero tra -%2 e %2</translation>
     </message>
@@ -2981,12 +3400,17 @@ Editor di schemi ladder e liste istruzioni per VPC, Vigor, CPM1 e PL110.</transl
         <translation>%1: è atteso un oggetto con &quot;name&quot; e &quot;devices&quot;</translation>
     </message>
     <message>
-        <location line="+11"/>
+        <location line="+12"/>
         <source>%1.devices[%2]: a device name is expected</source>
         <translation>%1.devices[%2]: è atteso il nome di un operando</translation>
     </message>
     <message>
-        <location line="+35"/>
+        <location line="+7"/>
+        <source>%1.formats.%2: &quot;%3&quot; is no format (dec, signed, hex, bin, bcd)</source>
+        <translation>%1.formats.%2: &quot;%3&quot; non è un formato (dec, signed, hex, bin, bcd)</translation>
+    </message>
+    <message>
+        <location line="+37"/>
         <source>a string</source>
         <translation>una stringa</translation>
     </message>
@@ -3091,7 +3515,7 @@ Editor di schemi ladder e liste istruzioni per VPC, Vigor, CPM1 e PL110.</transl
         <translation>%1: il file supera %2 MB, il massimo che Rung Studio legge</translation>
     </message>
     <message>
-        <location filename="../model/project/project.cpp" line="+123"/>
+        <location filename="../model/project/project.cpp" line="+131"/>
         <source>%1: cannot write the file (%2)</source>
         <translation>%1: impossibile scrivere il file (%2)</translation>
     </message>
@@ -3405,6 +3829,11 @@ Editor di schemi ladder e liste istruzioni per VPC, Vigor, CPM1 e PL110.</transl
         <location filename="../model/target/target_vpc.cpp" line="+5"/>
         <source>End of the program</source>
         <translation>Fine del programma</translation>
+    </message>
+    <message>
+        <location line="+34"/>
+        <source>analog settings</source>
+        <translation>regolazioni analogiche</translation>
     </message>
     <message>
         <location filename="../model/target/target_pl110.cpp" line="-273"/>
@@ -4207,6 +4636,93 @@ Editor di schemi ladder e liste istruzioni per VPC, Vigor, CPM1 e PL110.</transl
     </message>
 </context>
 <context>
+    <name>rung::model::Trigger</name>
+    <message>
+        <location filename="../model/image/trigger.cpp" line="+59"/>
+        <source>Type a condition: &quot;Y0 rises&quot;, &quot;Y0 falls&quot; or &quot;D10 &gt; 100&quot;</source>
+        <translation>Digitare una condizione: &quot;Y0 rises&quot;, &quot;Y0 falls&quot; o &quot;D10 &gt; 100&quot;</translation>
+    </message>
+    <message>
+        <location line="+25"/>
+        <source>&quot;%1&quot; is not a whole number (0x before a hexadecimal one)</source>
+        <translation>&quot;%1&quot; non è un numero intero (0x prima di uno esadecimale)</translation>
+    </message>
+    <message>
+        <location line="+2"/>
+        <source>&quot;%1&quot; is no condition: write &quot;Y0 rises&quot;, &quot;Y0 falls&quot; or &quot;D10 &gt; 100&quot;</source>
+        <translation>&quot;%1&quot; non è una condizione: scrivere &quot;Y0 rises&quot;, &quot;Y0 falls&quot; o &quot;D10 &gt; 100&quot;</translation>
+    </message>
+    <message>
+        <location line="+10"/>
+        <source>%1 is a word: compare it with a value (&quot;%1 &gt; 100&quot;)</source>
+        <translation>%1 è una word: confrontarla con un valore (&quot;%1 &gt; 100&quot;)</translation>
+    </message>
+</context>
+<context>
+    <name>rung::model::ValueFormat</name>
+    <message>
+        <location filename="../model/image/value_format.cpp" line="+45"/>
+        <source>Decimal</source>
+        <translation>Decimale</translation>
+    </message>
+    <message>
+        <location line="+2"/>
+        <source>Signed</source>
+        <translation>Con segno</translation>
+    </message>
+    <message>
+        <location line="+2"/>
+        <source>Hexadecimal</source>
+        <translation>Esadecimale</translation>
+    </message>
+    <message>
+        <location line="+2"/>
+        <source>Binary</source>
+        <translation>Binario</translation>
+    </message>
+    <message>
+        <location line="+2"/>
+        <source>BCD</source>
+        <translation>BCD</translation>
+    </message>
+    <message>
+        <location line="+32"/>
+        <source>%1 (not BCD)</source>
+        <translation>%1 (non BCD)</translation>
+    </message>
+    <message>
+        <location line="+13"/>
+        <location line="+61"/>
+        <source>Type a value</source>
+        <translation>Digitare un valore</translation>
+    </message>
+    <message>
+        <location line="-56"/>
+        <source>%1 does not fit a %2-bit word (%3..%4)</source>
+        <translation>%1 non sta in una word a %2 bit (%3..%4)</translation>
+    </message>
+    <message>
+        <location line="+14"/>
+        <source>&quot;%1&quot; is not a whole number (0x before a hexadecimal one)</source>
+        <translation>&quot;%1&quot; non è un numero intero (0x prima di uno esadecimale)</translation>
+    </message>
+    <message>
+        <location line="+12"/>
+        <source>&quot;%1&quot; is not a hexadecimal value of at most %2 digits</source>
+        <translation>&quot;%1&quot; non è un valore esadecimale di al massimo %2 cifre</translation>
+    </message>
+    <message>
+        <location line="+10"/>
+        <source>&quot;%1&quot; is not a binary value of at most %2 digits</source>
+        <translation>&quot;%1&quot; non è un valore binario di al massimo %2 cifre</translation>
+    </message>
+    <message>
+        <location line="+14"/>
+        <source>&quot;%1&quot; is not a BCD value: at most %2 decimal digits</source>
+        <translation>&quot;%1&quot; non è un valore BCD: al massimo %2 cifre decimali</translation>
+    </message>
+</context>
+<context>
     <name>rung::simulator::CommandInbox</name>
     <message>
         <location filename="../simulator/command_inbox.cpp" line="+18"/>
@@ -4384,7 +4900,7 @@ Editor di schemi ladder e liste istruzioni per VPC, Vigor, CPM1 e PL110.</transl
 <context>
     <name>rung::simulator::SimulatorSession</name>
     <message>
-        <location filename="../simulator/session.cpp" line="+141"/>
+        <location filename="../simulator/session.cpp" line="+183"/>
         <source>Line %1: %2</source>
         <translation>Riga %1: %2</translation>
     </message>

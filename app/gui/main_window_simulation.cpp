@@ -40,10 +40,8 @@ void MainWindow::setupSimulation() {
             &MainWindow::updateSimulationStatus);
     connect(m_simulation, &SimulationController::message, this,
             [this](const QString &text) { statusBar()->showMessage(text, 10000); });
-    connect(m_watch, &editor::WatchListView::message, this,
-            [this](const QString &text) { statusBar()->showMessage(text, 10000); });
     connect(m_simulation, &SimulationController::sessionChanged, this,
-            [this](simulator::SimulatorSession *session) { m_watch->setMonitorSource(session); });
+            [this](simulator::SimulatorSession *session) { setPanelsSource(session); });
     connect(m_simulation, &SimulationController::problems, this,
             [this](const std::vector<model::Diagnostic> &errors) {
                 std::vector<model::Diagnostic> all = m_document->diagnostics();

@@ -5,7 +5,9 @@
 
 #include "app/gui/simulation_controller.h"
 #include "editor/il_editor.h"
+#include "editor/io_panel.h"
 #include "editor/problems_view.h"
+#include "editor/timing_chart.h"
 #include "editor/watch_list_view.h"
 #include "simulator/session.h"
 
@@ -256,7 +258,11 @@ TEST_F(Simulation, TheWatchListShowsTheRunningValues) {
     EXPECT_EQ(watch->monitorSource(), sim()->session());
     ASSERT_NE(waitFor([](const model::Snapshot &s) { return s.statistics.scans == 1; }), nullptr);
     QTest::qWait(100);
-    EXPECT_EQ(watch->topLevelItem(0)->child(0)->text(1), QStringLiteral("ON"));
+    EXPECT_EQ(watch->topLevelItem(0)->child(0)->text(editor::WatchListView::ValueColumn),
+              QStringLiteral("ON"));
+    // Every monitoring view was handed the same source.
+    EXPECT_EQ(window.ioPanel()->monitorSource(), sim()->session());
+    EXPECT_EQ(window.timingChart()->monitorSource(), sim()->session());
 }
 
 TEST_F(Simulation, EditingTheProgramStopsTheSimulationAndSaysSo) {
@@ -270,6 +276,8 @@ TEST_F(Simulation, EditingTheProgramStopsTheSimulationAndSaysSo) {
     EXPECT_EQ(sim()->session(), nullptr);
     EXPECT_EQ(sim()->runState(), State::Offline);
     EXPECT_EQ(window.watchListView()->monitorSource(), nullptr);
+    EXPECT_EQ(window.ioPanel()->monitorSource(), nullptr);
+    EXPECT_EQ(window.timingChart()->monitorSource(), nullptr);
     EXPECT_TRUE(window.statusBar()->currentMessage().contains(
         QStringLiteral("The program was edited: the simulation stopped")))
         << window.statusBar()->currentMessage().toStdString();
