@@ -1,5 +1,7 @@
 #include "cross_reference_view.h"
 
+#include "device_mime.h"
+
 #include <QEvent>
 
 #include "model/target/address.h"
@@ -15,6 +17,27 @@
 namespace rung::editor {
 
 namespace {
+
+constexpr int kDeviceRole = Qt::UserRole + 1;
+
+// The uses' tree: a device row drags its device to the watch table or the timing chart.
+class DeviceTree : public QTreeWidget {
+public:
+    using QTreeWidget::QTreeWidget;
+
+protected:
+    QMimeData *mimeData(const QList<QTreeWidgetItem *> &items) const override {
+        QStringList devices;
+        for (const QTreeWidgetItem *item : items) {
+            const QTreeWidgetItem *device = item->parent() ? item->parent() : item;
+            const QString text = device->data(0, kDeviceRole).toString();
+            if (!text.isEmpty() && !devices.contains(text))
+                devices << text;
+        }
+        return devices.isEmpty() ? nullptr : deviceMimeData(devices);
+    }
+    QStringList mimeTypes() const override { return {deviceMimeType()}; }
+};
 
 enum class Use { Contact, Coil, Box };
 
@@ -66,7 +89,9 @@ CrossReferenceView::CrossReferenceView(Document *document, QWidget *parent)
     m_filter = new QLineEdit(this);
     m_filter->setObjectName(QStringLiteral("crossReferenceFilter"));
     m_filter->setClearButtonEnabled(true);
-    m_tree = new QTreeWidget(this);
+    m_tree = new DeviceTree(this);
+    m_tree->setDragEnabled(true);
+    m_tree->setDragDropMode(QAbstractItemView::DragOnly);
     m_tree->setObjectName(QStringLiteral("crossReferenceTree"));
     retranslate();
     m_tree->setUniformRowHeights(true);
@@ -137,6 +162,7 @@ void CrossReferenceView::refresh() {
         auto *device = new QTreeWidgetItem(m_tree);
         const model::Symbol *symbol = m_document->project().symbol(address);
         const QString name = model::formatAddress(t, address);
+        device->setData(0, kDeviceRole, name);
         device->setText(0, symbol && !symbol->name.isEmpty()
                                ? QStringLiteral("%1  %2").arg(name, symbol->name)
                                : name);

@@ -199,6 +199,7 @@ private:
     QStringListModel *m_completions = nullptr;
     CellCursor m_dragFrom{-1, 0, 0}; // where the left button went down
     QPointF m_pressAt;               // the viewport position of that press
+    QString m_pressDevice; // the device of the pressed cell: a drag out of the view carries it
     // How far the pressed cell moved on screen when the press moved the cursor (the spare row
     // follows the cursor's rung): later positions of the same gesture are shifted by it so
     // they are read in the layout the press was read in.

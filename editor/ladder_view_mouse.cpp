@@ -4,12 +4,14 @@
 
 #include "ladder_view.h"
 
+#include "device_mime.h"
 #include "document.h"
 
 #include "model/listing/il.h"
 #include "model/target/address.h"
 
 #include <QApplication>
+#include <QDrag>
 #include <QKeyEvent>
 #include <QLineEdit>
 #include <QMouseEvent>
@@ -94,6 +96,7 @@ void LadderView::mousePressEvent(QMouseEvent *event) {
     m_pressAt = event->position();
     m_pressShift = QPointF(cellRectOnScreen(cell).topLeft()) - before;
     m_dragFrom = event->button() == Qt::LeftButton ? cell : CellCursor{-1, 0, 0};
+    m_pressDevice = event->button() == Qt::LeftButton ? deviceAtCursor() : QString();
 }
 
 bool LadderView::draggedFarEnough(QPointF position) const {
@@ -105,6 +108,16 @@ void LadderView::mouseMoveEvent(QMouseEvent *event) {
         return;
     if (!draggedFarEnough(event->position()))
         return;
+    // Inside the view a drag draws wires; out of it, a drag from an element carries its
+    // device to the watch table or the timing chart.
+    if (!m_pressDevice.isEmpty() && !viewport()->rect().contains(event->position().toPoint())) {
+        m_dragFrom = {-1, 0, 0};
+        auto *drag = new QDrag(this);
+        drag->setMimeData(deviceMimeData({m_pressDevice}));
+        m_pressDevice.clear();
+        drag->exec(Qt::CopyAction);
+        return;
+    }
     const CellCursor cell = cellAt(event->position() + m_pressShift);
     if (cell.rung == m_dragFrom.rung && !(cell == m_cursor))
         setCursor(cell); // the cursor follows the drag: it shows where the wire will end

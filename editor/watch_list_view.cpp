@@ -1,36 +1,73 @@
 #include "watch_list_view.h"
 
+#include "device_mime.h"
 #include "document.h"
 
 #include "model/image/monitor_source.h"
 #include "model/target/address.h"
-#include "model/target/word_text.h"
 
 #include <QAction>
 #include <QContextMenuEvent>
+#include <QDragEnterEvent>
+#include <QDropEvent>
 #include <QHeaderView>
 #include <QKeyEvent>
 #include <QMenu>
 
+#include <algorithm>
+#include <set>
+
 namespace rung::editor {
+
+namespace {
+
+constexpr int kAddressRole = Qt::UserRole + 1;
+
+QVariant addressData(const model::Address &a) {
+    return QVariantList{a.area, a.index, a.bit};
+}
+
+} // namespace
 
 WatchListView::WatchListView(Document *document, QWidget *parent)
     : QTreeWidget(parent)
     , m_document(document) {
     setObjectName(QStringLiteral("watchLists"));
+    setColumnCount(Columns);
     setTexts();
-    header()->hide();
     setRootIsDecorated(true);
+    setUniformRowHeights(true);
+    setAlternatingRowColors(true);
+    setSelectionMode(QAbstractItemView::ExtendedSelection);
     // Only the value column is edited, and only on purpose (editValue): the device column is
     // the list's content, changed by add and remove.
     setEditTriggers(QAbstractItemView::NoEditTriggers);
+    // Rows are dragged out (to the timing chart) and devices dropped in; nothing moves.
+    setDragEnabled(true);
+    setAcceptDrops(true);
+    setDropIndicatorShown(false);
+    setDragDropMode(QAbstractItemView::DragDrop);
+    setDefaultDropAction(Qt::CopyAction);
+    // The format and the force beside the value, not at the far edge of a wide dock.
+    header()->setStretchLastSection(true);
+    header()->setSectionResizeMode(QHeaderView::Interactive);
+    header()->resizeSection(DeviceColumn, 110);
+    header()->resizeSection(SymbolColumn, 130);
+    header()->resizeSection(ValueColumn, 300);
+    header()->resizeSection(FormatColumn, 110);
     connect(document, &Document::programChanged, this, &WatchListView::refresh);
-    connect(this, &QTreeWidget::itemDoubleClicked, this,
-            [this](QTreeWidgetItem *item, int) { editValue(item); });
+    connect(this, &QTreeWidget::itemDoubleClicked, this, [this](QTreeWidgetItem *item, int column) {
+        if (column == FormatColumn)
+            chooseFormat(item);
+        else if (column == ForceColumn)
+            chooseForce(item);
+        else
+            editValue(item);
+    });
     connect(this, &QTreeWidget::itemChanged, this, [this](QTreeWidgetItem *item, int column) {
-        if (m_showing || column != 1)
+        if (m_showing || column != ValueColumn)
             return;
-        writeValue(item, item->text(1));
+        writeValue(item, item->text(ValueColumn));
         showValues(); // the value as the source has it, until the next snapshot
     });
     refresh();
@@ -44,13 +81,7 @@ void WatchListView::setMonitorSource(model::MonitorSource *source) {
         m_source->setWatched(this, {});
     }
     m_source = source;
-    setColumnCount(source ? 2 : 1);
-    setTexts();
     if (source) {
-        header()->show();
-        // The device column as wide as its texts (Italian "Lista di osservazione" was cut at
-        // the default width); the value takes the rest.
-        header()->setSectionResizeMode(0, QHeaderView::ResizeToContents);
         connect(source, &model::MonitorSource::snapshotChanged, this, &WatchListView::showValues);
         connect(source, &model::MonitorSource::commandFinished, this,
                 [this](model::MonitorSource::CommandId, bool ok, const QString &error) {
@@ -58,22 +89,23 @@ void WatchListView::setMonitorSource(model::MonitorSource *source) {
                         emit message(error);
                 });
         tellWatched();
-        showValues();
-    } else {
-        header()->hide();
     }
+    showValues();
 }
 
 void WatchListView::setTexts() {
-    setHeaderLabels(m_source ? QStringList{tr("Watch list"), tr("Value")}
-                             : QStringList{tr("Watch list")});
+    setHeaderLabels({tr("Device"), tr("Symbol"), tr("Value"), tr("Format"), tr("Forced")});
+    headerItem()->setToolTip(ValueColumn, tr("Double-click or F2: write a value; a bit flips"));
+    headerItem()->setToolTip(FormatColumn, tr("Double-click: show the word in decimal, signed, "
+                                              "hexadecimal, binary or BCD"));
+    headerItem()->setToolTip(ForceColumn, tr("Double-click: force a bit ON or OFF, or release it"));
     setAccessibleName(tr("Watch lists"));
 }
 
 void WatchListView::changeEvent(QEvent *event) {
     if (event->type() == QEvent::LanguageChange) {
         setTexts();
-        showValues(); // "ON", "OFF", "(forced)" in the new language
+        showValues(); // "ON", "OFF", the format names in the new language
     }
     QTreeWidget::changeEvent(event);
 }
@@ -82,46 +114,105 @@ void WatchListView::tellWatched() {
     if (!m_source)
         return;
     std::vector<model::Address> devices;
-    for (const model::WatchList &list : m_document->project().watchLists)
-        for (const QString &device : list.devices) {
-            const auto address = model::parseAddress(m_document->target(), device);
-            if (const auto *a = std::get_if<model::Address>(&address))
+    for (int i = 0; i < topLevelItemCount(); ++i)
+        for (int k = 0; k < topLevelItem(i)->childCount(); ++k)
+            if (const auto a = addressOf(topLevelItem(i)->child(k)))
                 devices.push_back(*a);
-        }
     m_source->setWatched(this, std::move(devices));
-}
-
-void WatchListView::showValues() {
-    if (!m_source)
-        return;
-    const std::shared_ptr<const model::Snapshot> snapshot = m_source->snapshot();
-    m_showing = true;
-    for (int i = 0; i < topLevelItemCount(); ++i) {
-        QTreeWidgetItem *list = topLevelItem(i);
-        for (int k = 0; k < list->childCount(); ++k) {
-            QTreeWidgetItem *item = list->child(k);
-            // The value being typed stays as typed: a snapshot would overwrite the editor.
-            if (item == m_editing && state() == QAbstractItemView::EditingState)
-                continue;
-            item->setFlags(item->flags() | Qt::ItemIsEditable);
-            item->setText(1, snapshot ? valueText(*snapshot, item->text(0)) : QString());
-        }
-    }
-    m_showing = false;
 }
 
 std::optional<model::Address> WatchListView::addressOf(const QTreeWidgetItem *item) const {
     if (!item || !item->parent())
         return std::nullopt;
-    const auto parsed = model::parseAddress(m_document->target(), item->text(0));
-    if (const auto *a = std::get_if<model::Address>(&parsed))
-        return *a;
-    return std::nullopt;
+    const QVariantList a = item->data(DeviceColumn, kAddressRole).toList();
+    if (a.size() != 3)
+        return std::nullopt;
+    return model::Address{a[0].toInt(), a[1].toInt(), a[2].toInt()};
 }
 
 bool WatchListView::isBit(const model::Address &address) const {
     return address.bit >= 0 || (address.valid() && m_document->target().area(address.area).kind ==
                                                        model::AreaKind::Bit);
+}
+
+int WatchListView::bitsOf(const model::Address &address) const {
+    return m_document->target().area(address.area).wordBits;
+}
+
+model::ValueFormat WatchListView::format(const QTreeWidgetItem *item) const {
+    if (!item || !item->parent())
+        return model::ValueFormat::Decimal;
+    const int list = indexOfTopLevelItem(item->parent());
+    const auto &lists = m_document->project().watchLists;
+    if (list < 0 || list >= static_cast<int>(lists.size()))
+        return model::ValueFormat::Decimal;
+    const model::WatchList &watch = lists[static_cast<std::size_t>(list)];
+    const QString device = item->text(DeviceColumn);
+    // A CPM1's timers, counters and most channels hold BCD digits (W353): shown as digits
+    // until the user picks another format, as Omron's tools monitor a channel.
+    if (!watch.formats.contains(device) && m_document->target().constants.bcdSetValues)
+        return model::ValueFormat::Bcd;
+    return watch.format(device);
+}
+
+void WatchListView::showValues() {
+    const std::shared_ptr<const model::Snapshot> snapshot =
+        m_source ? m_source->snapshot() : nullptr;
+    const model::Snapshot *ours =
+        snapshot && snapshot->layout && &snapshot->layout->target() == &m_document->target()
+            ? snapshot.get()
+            : nullptr;
+    m_showing = true;
+    for (int i = 0; i < topLevelItemCount(); ++i) {
+        QTreeWidgetItem *list = topLevelItem(i);
+        for (int k = 0; k < list->childCount(); ++k)
+            showRow(list->child(k), m_source ? ours : nullptr);
+    }
+    m_showing = false;
+}
+
+void WatchListView::showRow(QTreeWidgetItem *item, const model::Snapshot *snapshot) {
+    const auto address = addressOf(item);
+    const model::Target &t = m_document->target();
+    if (!address) {
+        item->setText(ValueColumn, tr("not a device"));
+        return;
+    }
+    const model::AreaKind kind = t.area(address->area).kind;
+    const bool bit = isBit(*address);
+    const bool element =
+        !bit && (kind == model::AreaKind::Timer || kind == model::AreaKind::Counter);
+    const model::ValueFormat f = format(item);
+    item->setText(FormatColumn, bit ? QString() : model::valueFormatName(f));
+    // The value being typed stays as typed: a snapshot would overwrite the editor.
+    if (item == m_editing && state() == QAbstractItemView::EditingState)
+        return;
+    item->setFlags(item->flags() | Qt::ItemIsEditable);
+    if (!snapshot) {
+        item->setText(ValueColumn, QString());
+        item->setText(ForceColumn, QString());
+        return;
+    }
+    const int bits = bitsOf(*address);
+    QString text;
+    if (bit)
+        text = snapshot->bit(*address) ? tr("ON") : tr("OFF");
+    else if (element)
+        // Current value against the preset, and the done bit.
+        text = tr("%1 of %2, %3")
+                   .arg(model::formatValue(snapshot->value(*address), bits, f),
+                        model::formatValue(snapshot->setValue(*address), bits, f),
+                        snapshot->bit(*address) ? tr("ON") : tr("OFF"));
+    else
+        text = model::formatValue(snapshot->value(*address), bits, f);
+    const bool forced = snapshot->forced(*address);
+    item->setText(ValueColumn, forced ? tr("%1 (forced)").arg(text) : text);
+    item->setText(ForceColumn,
+                  forced && bit ? (snapshot->bit(*address) ? tr("ON") : tr("OFF")) : QString());
+    QFont font = item->font(ValueColumn);
+    font.setBold(forced);
+    item->setFont(ValueColumn, font);
+    item->setFont(ForceColumn, font);
 }
 
 bool WatchListView::refuseElement(const model::Address &address, const QString &device) {
@@ -138,29 +229,30 @@ bool WatchListView::refuseElement(const model::Address &address, const QString &
 
 void WatchListView::editValue(QTreeWidgetItem *item) {
     const auto address = addressOf(item);
-    if (!m_source || !address || refuseElement(*address, item->text(0)))
+    if (!m_source || !address || refuseElement(*address, item->text(DeviceColumn)))
         return;
+    const auto snapshot = m_source->snapshot();
     if (isBit(*address)) {
-        const auto snapshot = m_source->snapshot();
         m_source->writeBit(*address, !(snapshot && snapshot->bit(*address)));
         return;
     }
-    // The editor opens on the number alone, not on "12 of 50, OFF".
-    const auto snapshot = m_source->snapshot();
+    // The editor opens on the value alone, in the row's format, not on "12 (forced)".
     m_showing = true;
-    item->setText(1, snapshot ? model::formatWord(m_document->target(), snapshot->value(*address))
-                              : QString());
+    item->setText(ValueColumn, snapshot ? model::formatValue(snapshot->value(*address),
+                                                             bitsOf(*address), format(item))
+                                        : QString());
     m_showing = false;
     m_editing = item;
-    setCurrentItem(item, 1);
-    editItem(item, 1);
+    setCurrentItem(item, ValueColumn);
+    editItem(item, ValueColumn);
 }
 
 bool WatchListView::writeValue(QTreeWidgetItem *item, const QString &text) {
     const auto address = addressOf(item);
     if (!m_source || !address)
         return false;
-    if (refuseElement(*address, item->text(0)))
+    const QString device = item->text(DeviceColumn);
+    if (refuseElement(*address, device))
         return false;
     const QString typed = text.trimmed();
     if (isBit(*address)) {
@@ -172,22 +264,84 @@ bool WatchListView::writeValue(QTreeWidgetItem *item, const QString &text) {
                          typed.compare(tr("OFF"), Qt::CaseInsensitive) == 0;
         if (!on && !off) {
             emit message(
-                tr("\"%1\" is no value for %2: type ON or OFF (1 or 0)").arg(typed, item->text(0)));
+                tr("\"%1\" is no value for %2: type ON or OFF (1 or 0)").arg(typed, device));
             return false;
         }
         m_source->writeBit(*address, on);
         return true;
     }
-    // A number, 0x... and, on the CPM1, #0012 as its listing writes a word (word_text.h).
-    const std::optional<qint64> value = model::parseWordValue(m_document->target(), typed);
-    if (!value) {
-        emit message(tr("\"%1\" is no value for %2: type a whole number (0x before a "
-                        "hexadecimal one)")
-                         .arg(typed, item->text(0)));
-        return false;
+    const int bits = bitsOf(*address);
+    const model::ValueFormat f = format(item);
+    const auto value = model::parseValue(typed, bits, f);
+    if (const auto *v = std::get_if<std::int64_t>(&value)) {
+        m_source->writeWord(*address, *v);
+        return true;
     }
-    m_source->writeWord(*address, *value);
-    return true;
+    QString hint;
+    switch (f) {
+    case model::ValueFormat::Decimal:
+    case model::ValueFormat::Signed:
+        hint = tr("type a whole number (0x before a hexadecimal one)");
+        break;
+    case model::ValueFormat::Hex:
+        hint = tr("type up to %1 hexadecimal digits").arg(bits / 4);
+        break;
+    case model::ValueFormat::Binary:
+        hint = tr("type up to %1 binary digits (0 and 1)").arg(bits);
+        break;
+    case model::ValueFormat::Bcd:
+        hint = tr("type up to %1 decimal digits (BCD)").arg(bits / 4);
+        break;
+    }
+    bool number = false;
+    typed.toLongLong(&number);
+    if (number && (f == model::ValueFormat::Decimal || f == model::ValueFormat::Signed))
+        hint = tr("a %1-bit word holds %2..%3")
+                   .arg(bits)
+                   .arg(-(qint64{1} << (bits - 1)))
+                   .arg((qint64{1} << bits) - 1);
+    emit message(tr("\"%1\" is no value for %2: %3").arg(typed, device, hint));
+    return false;
+}
+
+void WatchListView::chooseFormat(QTreeWidgetItem *item) {
+    const auto address = addressOf(item);
+    if (!address || isBit(*address))
+        return;
+    QMenu menu;
+    for (const model::ValueFormat f : model::kValueFormats) {
+        QAction *a = menu.addAction(model::valueFormatName(f));
+        a->setCheckable(true);
+        a->setChecked(f == format(item));
+        connect(a, &QAction::triggered, this, [this, item, f] { setFormat(item, f); });
+    }
+    menu.exec(viewport()->mapToGlobal(visualItemRect(item).bottomLeft() +
+                                      QPoint(header()->sectionPosition(FormatColumn), 0)));
+}
+
+void WatchListView::chooseForce(QTreeWidgetItem *item) {
+    QMenu menu;
+    const QList<QAction *> actions = deviceActions(item, &menu);
+    // The force actions only: Set ON / Set OFF write once.
+    for (QAction *a : actions)
+        if (a->text() != tr("Set ON") && a->text() != tr("Set OFF"))
+            menu.addAction(a);
+    if (menu.isEmpty())
+        return;
+    menu.exec(viewport()->mapToGlobal(visualItemRect(item).bottomLeft() +
+                                      QPoint(header()->sectionPosition(ForceColumn), 0)));
+}
+
+void WatchListView::setFormat(QTreeWidgetItem *item, model::ValueFormat f) {
+    if (!item || !item->parent() || f == format(item))
+        return;
+    std::vector<model::WatchList> lists = m_document->project().watchLists;
+    const int list = indexOfTopLevelItem(item->parent());
+    if (list < 0 || list >= static_cast<int>(lists.size()))
+        return;
+    const QString device = item->text(DeviceColumn);
+    lists[static_cast<std::size_t>(list)].formats[device] = f;
+    m_document->setWatchLists(lists, tr("Show %1 as %2").arg(device, model::valueFormatName(f)));
 }
 
 QList<QAction *> WatchListView::deviceActions(QTreeWidgetItem *item, QObject *parent) {
@@ -234,33 +388,26 @@ QList<QAction *> WatchListView::deviceActions(QTreeWidgetItem *item, QObject *pa
 void WatchListView::contextMenuEvent(QContextMenuEvent *event) {
     QTreeWidgetItem *item = itemAt(viewport()->mapFromGlobal(event->globalPos()));
     QMenu menu;
-    const QList<QAction *> actions = deviceActions(item, &menu);
-    if (actions.isEmpty()) {
+    menu.addActions(deviceActions(item, &menu));
+    const auto address = addressOf(item);
+    if (address && !isBit(*address)) {
+        QMenu *show = menu.addMenu(tr("Show As"));
+        for (const model::ValueFormat f : model::kValueFormats) {
+            QAction *a = show->addAction(model::valueFormatName(f));
+            a->setCheckable(true);
+            a->setChecked(f == format(item));
+            connect(a, &QAction::triggered, this, [this, item, f] { setFormat(item, f); });
+        }
+    }
+    if (item && item->parent()) {
+        menu.addSeparator();
+        menu.addAction(tr("Remove"), this, &WatchListView::removeSelected);
+    }
+    if (menu.isEmpty()) {
         QTreeWidget::contextMenuEvent(event);
         return;
     }
-    menu.addActions(actions);
     menu.exec(event->globalPos());
-}
-
-QString WatchListView::valueText(const model::Snapshot &snapshot, const QString &device) const {
-    const auto parsed = model::parseAddress(m_document->target(), device);
-    const auto *address = std::get_if<model::Address>(&parsed);
-    if (!address || !snapshot.layout || &snapshot.layout->target() != &m_document->target())
-        return tr("not a device");
-    const model::AreaKind kind = snapshot.layout->area(address->area).kind;
-    QString text;
-    if (kind == model::AreaKind::Bit || address->bit >= 0)
-        text = snapshot.bit(*address) ? tr("ON") : tr("OFF");
-    else if (kind == model::AreaKind::Timer || kind == model::AreaKind::Counter)
-        // Current value against the preset, and the done bit.
-        text = tr("%1 of %2, %3")
-                   .arg(model::formatWord(m_document->target(), snapshot.value(*address)),
-                        model::formatWord(m_document->target(), snapshot.setValue(*address)),
-                        snapshot.bit(*address) ? tr("ON") : tr("OFF"));
-    else
-        text = model::formatWord(m_document->target(), snapshot.value(*address));
-    return snapshot.forced(*address) ? tr("%1 (forced)").arg(text) : text;
 }
 
 void WatchListView::refresh() {
@@ -270,21 +417,39 @@ void WatchListView::refresh() {
     for (int i = 0; same && i < topLevelItemCount(); ++i) {
         const QTreeWidgetItem *item = topLevelItem(i);
         const auto &list = lists[static_cast<std::size_t>(i)];
-        same = item->text(0) == list.name && item->childCount() == list.devices.size();
+        same = item->text(DeviceColumn) == list.name && item->childCount() == list.devices.size();
         for (int k = 0; same && k < item->childCount(); ++k)
-            same = item->child(k)->text(0) == list.devices[k];
+            same = item->child(k)->text(DeviceColumn) == list.devices[k];
     }
-    if (same)
-        return;
-    m_editing = nullptr;
-    clear();
-    for (const model::WatchList &list : lists) {
-        auto *item = new QTreeWidgetItem(this, {list.name});
-        for (const QString &device : list.devices)
-            new QTreeWidgetItem(item, {device});
-        item->setExpanded(true);
+    const model::Target &t = m_document->target();
+    if (!same) {
+        m_editing = nullptr;
+        clear();
+        for (const model::WatchList &list : lists) {
+            auto *item = new QTreeWidgetItem(this, {list.name});
+            item->setFirstColumnSpanned(true);
+            QFont bold = item->font(DeviceColumn);
+            bold.setBold(true);
+            item->setFont(DeviceColumn, bold);
+            for (const QString &device : list.devices) {
+                auto *row = new QTreeWidgetItem(item, {device});
+                const auto parsed = model::parseAddress(t, device);
+                if (const auto *a = std::get_if<model::Address>(&parsed))
+                    row->setData(DeviceColumn, kAddressRole, addressData(*a));
+            }
+            item->setExpanded(true);
+        }
+        tellWatched();
     }
-    tellWatched();
+    // Symbols and formats change without the rows changing.
+    for (int i = 0; i < topLevelItemCount(); ++i)
+        for (int k = 0; k < topLevelItem(i)->childCount(); ++k) {
+            QTreeWidgetItem *row = topLevelItem(i)->child(k);
+            const auto a = addressOf(row);
+            const model::Symbol *symbol = a ? m_document->project().symbol(*a) : nullptr;
+            row->setText(SymbolColumn, symbol ? symbol->name : QString());
+            row->setToolTip(SymbolColumn, symbol ? symbol->comment : QString());
+        }
     showValues();
 }
 
@@ -298,32 +463,76 @@ int WatchListView::selectedList() const {
 }
 
 void WatchListView::addDevice(const QString &device) {
-    if (device.isEmpty())
-        return;
+    if (!device.isEmpty())
+        addDevices({device});
+}
+
+bool WatchListView::addDevices(const QStringList &texts) {
+    const model::Target &t = m_document->target();
+    QStringList devices;
+    for (const QString &text : texts) {
+        const auto parsed = model::parseAddressRange(t, text, m_document->modelVariant());
+        if (const auto *error = std::get_if<model::AddressError>(&parsed)) {
+            emit message(tr("Not added to the watch list: %1").arg(error->message));
+            return false;
+        }
+        for (const model::Address &a : std::get<std::vector<model::Address>>(parsed))
+            devices << model::formatAddress(t, a);
+    }
     std::vector<model::WatchList> lists = m_document->project().watchLists;
     const int index = std::max(0, selectedList());
     if (lists.empty())
-        lists.push_back(model::WatchList{tr("Watch 1"), {}});
+        lists.push_back(model::WatchList{tr("Watch 1"), {}, {}});
     model::WatchList &list =
         lists[static_cast<std::size_t>(std::min<int>(index, static_cast<int>(lists.size()) - 1))];
-    if (list.devices.contains(device))
-        return;
-    list.devices << device;
-    m_document->setWatchLists(lists, tr("Add %1 to the watch list").arg(device));
+    QStringList added;
+    for (const QString &device : devices)
+        if (!list.devices.contains(device) && !added.contains(device))
+            added << device;
+    if (added.isEmpty())
+        return true;
+    list.devices << added;
+    const QString what = added.size() == 1
+                             ? added.front()
+                             : QStringLiteral("%1..%2").arg(added.front(), added.back());
+    m_document->setWatchLists(lists, tr("Add %1 to the watch list").arg(what));
+    return true;
+}
+
+QStringList WatchListView::selectedDevices() const {
+    QStringList out;
+    for (const QTreeWidgetItem *item : selectedItems())
+        if (item->parent())
+            out << item->text(DeviceColumn);
+    return out;
 }
 
 void WatchListView::removeSelected() {
-    const QTreeWidgetItem *item = currentItem();
-    if (!item || !item->parent())
-        return;
     std::vector<model::WatchList> lists = m_document->project().watchLists;
-    const int list = indexOfTopLevelItem(item->parent());
-    const int row = item->parent()->indexOfChild(const_cast<QTreeWidgetItem *>(item));
-    if (list < 0 || list >= static_cast<int>(lists.size()))
+    std::set<std::pair<int, int>> rows; // (list, row)
+    for (const QTreeWidgetItem *item : selectedItems())
+        if (item->parent())
+            rows.insert({indexOfTopLevelItem(item->parent()),
+                         item->parent()->indexOfChild(const_cast<QTreeWidgetItem *>(item))});
+    if (rows.empty() && currentItem() && currentItem()->parent())
+        rows.insert({indexOfTopLevelItem(currentItem()->parent()),
+                     currentItem()->parent()->indexOfChild(currentItem())});
+    if (rows.empty())
         return;
-    const QString device = item->text(0);
-    lists[static_cast<std::size_t>(list)].devices.removeAt(row);
-    m_document->setWatchLists(lists, tr("Remove %1 from the watch list").arg(device));
+    QStringList removed;
+    for (auto it = rows.rbegin(); it != rows.rend(); ++it) {
+        const auto [list, row] = *it;
+        if (list < 0 || list >= static_cast<int>(lists.size()))
+            continue;
+        model::WatchList &l = lists[static_cast<std::size_t>(list)];
+        removed.prepend(l.devices[row]);
+        l.formats.erase(l.devices[row]);
+        l.devices.removeAt(row);
+    }
+    m_document->setWatchLists(
+        lists,
+        tr("Remove %1 from the watch list")
+            .arg(removed.size() == 1 ? removed.front() : removed.join(QStringLiteral(", "))));
 }
 
 void WatchListView::keyPressEvent(QKeyEvent *event) {
@@ -336,6 +545,61 @@ void WatchListView::keyPressEvent(QKeyEvent *event) {
         return;
     }
     QTreeWidget::keyPressEvent(event);
+}
+
+QStringList WatchListView::mimeTypes() const {
+    return {deviceMimeType(), QStringLiteral("text/plain")};
+}
+
+QMimeData *WatchListView::mimeData(const QList<QTreeWidgetItem *> &items) const {
+    // In the table's order, whatever order the selection was made in.
+    std::vector<std::pair<std::pair<int, int>, QString>> rows;
+    for (const QTreeWidgetItem *item : items)
+        if (item->parent())
+            rows.push_back({{indexOfTopLevelItem(item->parent()),
+                             item->parent()->indexOfChild(const_cast<QTreeWidgetItem *>(item))},
+                            item->text(DeviceColumn)});
+    std::sort(rows.begin(), rows.end());
+    QStringList devices;
+    for (const auto &row : rows)
+        if (!devices.contains(row.second))
+            devices << row.second;
+    return devices.isEmpty() ? nullptr : deviceMimeData(devices);
+}
+
+void WatchListView::dragEnterEvent(QDragEnterEvent *event) {
+    if (event->source() == this || devicesFromMime(event->mimeData()).isEmpty()) {
+        event->ignore();
+        return;
+    }
+    event->setDropAction(Qt::CopyAction);
+    event->accept();
+}
+
+void WatchListView::dragMoveEvent(QDragMoveEvent *event) {
+    if (event->source() == this) {
+        event->ignore();
+        return;
+    }
+    event->setDropAction(Qt::CopyAction);
+    event->accept();
+}
+
+bool WatchListView::dropDevices(const QMimeData *data, const QPoint &at) {
+    // Into the list under the drop, else the selected one.
+    if (QTreeWidgetItem *target = itemAt(at))
+        setCurrentItem(target->parent() ? target->parent() : target);
+    const QStringList devices = devicesFromMime(data);
+    return !devices.isEmpty() && addDevices(devices);
+}
+
+void WatchListView::dropEvent(QDropEvent *event) {
+    if (event->source() == this || !dropDevices(event->mimeData(), event->position().toPoint())) {
+        event->ignore();
+        return;
+    }
+    event->setDropAction(Qt::CopyAction);
+    event->accept();
 }
 
 } // namespace rung::editor

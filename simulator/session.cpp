@@ -189,6 +189,48 @@ void SimulatorSession::readHistory(
     read(m_history);
 }
 
+bool SimulatorSession::setTrigger(std::optional<model::Trigger> trigger) {
+    std::lock_guard lock(m_historyMutex);
+    return m_history.setTrigger(std::move(trigger));
+}
+
+std::optional<SimulatorSession::Fired> SimulatorSession::recordHistory(const Engine &engine) {
+    Fired fired;
+    {
+        std::lock_guard lock(m_historyMutex);
+        if (m_history.deviceCount() == 0 ||
+            !m_history.record(engine.statistics().scans, engine.statistics().timeMs,
+                              engine.words().data()))
+            return std::nullopt;
+        fired.stop = m_history.trigger()->action == model::Trigger::Action::Stop;
+    }
+    fired.scan = engine.statistics().scans;
+    fired.timeMs = engine.statistics().timeMs;
+    if (fired.stop) {
+        // Paused here, at the scan where the condition became true: the worker scans no
+        // further, as a breakpoint would stop it. A control call made since (run again) wins.
+        std::lock_guard lock(m_mutex);
+        if (m_mode == Mode::Running)
+            m_mode = Mode::Paused;
+        m_stepsLeft = 0;
+        fired.generation = ++m_generation;
+    }
+    return fired;
+}
+
+void SimulatorSession::reportTrigger(const Fired &fired) {
+    postToOwner([this, fired] {
+        if (fired.stop) {
+            std::unique_lock lock(m_mutex);
+            const bool current = m_generation == fired.generation;
+            lock.unlock();
+            if (current && (runState() == RunState::Running || runState() == RunState::Stepping))
+                setRunState(RunState::Paused);
+        }
+        emit triggered(fired.scan, fired.timeMs);
+    });
+}
+
 void SimulatorSession::publish(const Engine &engine) {
     publishSnapshot(std::make_shared<const Snapshot>(engine.snapshot()));
 }
@@ -203,12 +245,9 @@ void SimulatorSession::reportErrors(const Engine &engine, std::size_t &reported)
     postToOwner([this, text] { setErrorText(text); });
 }
 
-void SimulatorSession::afterScan(const Engine &engine) {
+std::optional<SimulatorSession::Fired> SimulatorSession::afterScan(const Engine &engine) {
     m_scanHistory->afterScan(engine, engine.statistics().execNsCurrent);
-    std::lock_guard lock(m_historyMutex);
-    if (m_history.deviceCount() > 0)
-        m_history.record(engine.statistics().scans, engine.statistics().timeMs,
-                         engine.words().data());
+    return recordHistory(engine);
 }
 
 void SimulatorSession::pauseFromWorker(int breakpoint) {
@@ -369,10 +408,12 @@ void SimulatorSession::workerLoop() {
             const bool completed = work == Work::Step
                                        ? engine.stepInstruction() == ScanStop::Completed
                                        : engine.insideScan() && (engine.scan(), true);
-            if (completed)
-                afterScan(engine);
+            const std::optional<Fired> fired =
+                completed ? afterScan(engine) : std::optional<Fired>{};
             reportErrors(engine, errorsReported);
             publishNow();
+            if (fired)
+                reportTrigger(*fired);
             if (work == Work::Finish || stepsDone)
                 postToOwner([this, generation] {
                     std::unique_lock lock(m_mutex);
@@ -391,12 +432,15 @@ void SimulatorSession::workerLoop() {
             pauseFromWorker(engine.stoppedAt());
             continue;
         }
-        afterScan(engine);
+        const std::optional<Fired> fired = afterScan(engine);
         reportErrors(engine, errorsReported);
         unpublished = true;
         const auto now = Clock::now();
-        if (stepsDone || now - lastPublish >= std::chrono::milliseconds(kMinSnapshotIntervalMs))
+        if (fired || stepsDone ||
+            now - lastPublish >= std::chrono::milliseconds(kMinSnapshotIntervalMs))
             publishNow();
+        if (fired) // after the snapshot: a reader told finds that scan in it
+            reportTrigger(*fired);
         if (stepsDone)
             postToOwner([this, generation] {
                 // Only when no later control call (run, stop, ...) has changed the state.

@@ -56,11 +56,13 @@ public:
     // Power off and on at the next scan boundary: retentive areas survive.
     CommandId powerCycle();
 
-    // History: devices recorded from the next scan on; false for a device not in the image.
-    bool watchHistory(const model::Address &address);
-    // Calls read with the history under its lock: the worker waits for that lock after every
-    // scan, so read must be quick (copy out what it needs; no dialog, no waiting).
-    void readHistory(const std::function<void(const model::HistoryRecorder &)> &read) const;
+    // History (MonitorSource): the worker records after every scan under m_historyMutex, so
+    // read must be quick. A trigger with Action::Stop pauses the worker right after the scan
+    // where it fired, publishes that scan and reports triggered().
+    bool watchHistory(const model::Address &address) override;
+    void
+    readHistory(const std::function<void(const model::HistoryRecorder &)> &read) const override;
+    bool setTrigger(std::optional<model::Trigger> trigger) override;
     // The record from which any scan of the recent past is rebuilt (HistorySource).
     std::shared_ptr<const ScanHistory> scanHistory() const { return m_scanHistory; }
 
@@ -79,10 +81,20 @@ private:
     void wakeWorker();
     void workerLoop();
     void publish(const Engine &engine);
-    void afterScan(const Engine &engine); // history and the recorder, after a completed scan
     // Worker: Paused now, told to the owner unless a control call came after this.
     void pauseFromWorker(int breakpoint);
     void reportErrors(const Engine &engine, std::size_t &reported);
+    struct Fired { // a trigger that fired after a scan
+        bool stop = false;
+        quint64 generation = 0; // the control generation its pause made
+        quint64 scan = 0;
+        qint64 timeMs = 0;
+    };
+    // After a scan: records the history; a stopping trigger pauses the worker here.
+    std::optional<Fired> recordHistory(const Engine &engine);
+    // After a completed scan: the scan record (ScanHistory) and the history above.
+    std::optional<Fired> afterScan(const Engine &engine);
+    void reportTrigger(const Fired &fired); // on the owner thread, after the snapshot
 
     std::shared_ptr<const Program> m_program;
     CommandInbox m_inbox;

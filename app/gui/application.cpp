@@ -4,11 +4,18 @@
 #include "language.h"
 #include "main_window.h"
 
+#include "simulation_controller.h"
+
+#include "editor/document.h"
 #include "editor/ladder_view.h"
+#include "editor/timing_chart.h"
+#include "editor/watch_list_view.h"
+#include "model/target/address.h"
 
 #include <QAction>
 #include <QApplication>
 #include <QCommandLineParser>
+#include <QDockWidget>
 #include <QMessageBox>
 #include <QScreen>
 #include <QTimer>
@@ -44,6 +51,58 @@ int runGui(int argc, char **argv) {
         QTimer::singleShot(1200, &window, [&window, &app, path, dialog] {
             window.ladderView()->setFocus();
             window.ladderView()->setCursor({1, 0, 1});
+            if (dialog == QLatin1String("panels") || dialog == QLatin1String("chart")) {
+                // A running simulation with the monitoring docks in use: the watch table in
+                // several formats, or the timing chart with a trigger armed.
+                const bool chart = dialog == QLatin1String("chart");
+                window.simulation()->setSpeed(chart ? 10.0 : 1.0);
+                window.simulation()->run();
+                // The project's own devices (no device names here: they belong to the
+                // target tables): the named ones, then the words the program uses.
+                const editor::Document &doc = *window.document();
+                const model::Target &t = doc.target();
+                QStringList named, words;
+                for (const model::Symbol &s : doc.project().symbols)
+                    named << model::formatAddress(t, s.address);
+                for (const model::Instruction &ins : doc.listing().list.instructions)
+                    for (const model::Operand &o : ins.operands) {
+                        const QString name = model::formatAddress(t, o.address);
+                        if (o.kind == model::Operand::Kind::Device && o.address.valid() &&
+                            o.address.bit < 0 &&
+                            t.area(o.address.area).kind != model::AreaKind::Bit &&
+                            !words.contains(name) && words.size() < 4)
+                            words << name;
+                    }
+                editor::WatchListView *watch = window.watchListView();
+                watch->addDevices(named + words);
+                const model::ValueFormat formats[] = {
+                    model::ValueFormat::Decimal, model::ValueFormat::Hex,
+                    model::ValueFormat::Binary, model::ValueFormat::Bcd};
+                for (int k = 0;
+                     k < static_cast<int>(words.size()) && watch->topLevelItemCount() > 0; ++k)
+                    if (QTreeWidgetItem *row =
+                            watch->topLevelItem(0)->child(static_cast<int>(named.size()) + k))
+                        watch->setFormat(row, formats[k]);
+                editor::TimingChart *timing = window.timingChart();
+                timing->addDevices(named);
+                if (named.size() >= 3)
+                    timing->armTrigger(named[2] + QStringLiteral(" rises"),
+                                       model::Trigger::Action::Mark);
+                timing->setMsPerPixel(80);
+                const char *raise = chart ? "timingChartDock" : "watchDock";
+                if (auto *d = window.findChild<QDockWidget *>(QString::fromLatin1(raise))) {
+                    d->show();
+                    d->raise();
+                    window.resizeDocks({d}, {chart ? 330 : 220}, Qt::Vertical);
+                }
+                QTimer::singleShot(chart ? 8000 : 4000, &window, [&window, &app, path, chart] {
+                    if (chart)
+                        window.timingChart()->placeCursor(0, 35000);
+                    window.grab().save(path);
+                    app.quit();
+                });
+                return;
+            }
             if (dialog.isEmpty()) {
                 QTimer::singleShot(300, &window, [&window, &app, path] {
                     window.grab().save(path);

@@ -56,6 +56,7 @@ MainWindow::MainWindow(QWidget *parent)
 
     buildDocks();
     buildCrossReference();
+    buildMonitorDocks(); // main_window_panels.cpp
     setupSimulation();
     buildActions();
 
@@ -119,8 +120,10 @@ MainWindow::MainWindow(QWidget *parent)
         QTimer::singleShot(0, this, [this] {
             if (auto *project = findChild<QDockWidget *>(QStringLiteral("projectDock")))
                 resizeDocks({project}, {300}, Qt::Horizontal);
+            // The problems, the watch table and the timing chart share the bottom: tall
+            // enough for a few signals of the chart.
             if (auto *problems = findChild<QDockWidget *>(QStringLiteral("problemsDock")))
-                resizeDocks({problems}, {140}, Qt::Vertical);
+                resizeDocks({problems}, {190}, Qt::Vertical);
         });
     }
     refreshFromDocument();
@@ -169,10 +172,6 @@ void MainWindow::buildDocks() {
     layout->addWidget(m_symbolsLabel);
     m_symbols = new SymbolTable(m_document);
     layout->addWidget(m_symbols, 1);
-    m_watchLabel = new QLabel(tr("Watch lists"));
-    layout->addWidget(m_watchLabel);
-    m_watch = new editor::WatchListView(m_document);
-    layout->addWidget(m_watch);
     projectDock->setWidget(panel);
     addDockWidget(Qt::LeftDockWidgetArea, projectDock);
     connect(m_symbols, &SymbolTable::message, this,
@@ -446,8 +445,8 @@ void MainWindow::retranslate() {
     if (auto *dock = findChild<QDockWidget *>(QStringLiteral("crossReferenceDock")))
         dock->setWindowTitle(tr("Cross Reference"));
     m_symbolsLabel->setText(tr("Symbols"));
-    m_watchLabel->setText(tr("Watch lists"));
     retranslateSimulation();
+    retranslatePanels();
     if (m_tabs->count() == 2) {
         m_tabs->setTabText(0, tr("Ladder"));
         m_tabs->setTabText(1, tr("Instruction List"));

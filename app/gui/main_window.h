@@ -7,6 +7,7 @@
 // symbol_table.h).
 
 #include "editor/document.h"
+#include "model/image/monitor_source.h"
 
 #include <QMainWindow>
 #include <QPointer>
@@ -28,6 +29,9 @@ class MonitorSource;
 namespace rung::editor {
 class CrossReferenceView;
 class IlEditor;
+class IoPanel;
+class TimingChart;
+class WatchPanel;
 class LadderView;
 class ProblemsView;
 class WatchListView;
@@ -85,6 +89,9 @@ public:
     bool findDevice(const QString &device, bool backwards);
     SymbolTable *symbolTable() const { return m_symbols; }
     editor::WatchListView *watchListView() const { return m_watch; }
+    editor::WatchPanel *watchPanel() const { return m_watchPanel; }
+    editor::IoPanel *ioPanel() const { return m_ioPanel; }
+    editor::TimingChart *timingChart() const { return m_chart; }
     SimulationController *simulation() const { return m_simulation; }
     SimulationPanel *simulationPanel() const { return m_simulationPanel; }
     ScanDebuggerView *scanDebugger() const { return m_scanDebugger; }
@@ -161,6 +168,12 @@ private:
     // A save dialog, then completeSavePath.
     QString askSavePath(const QString &title, const QString &filter, const QStringList &suffixes);
     void buildCrossReference();
+    // The monitoring docks: watch table, inputs and outputs, timing chart
+    // (main_window_panels.cpp).
+    void buildMonitorDocks();
+    void retranslatePanels();
+    void addPanelActions(QMenu *menu);
+    void setPanelsSource(model::MonitorSource *source);
     // The simulation (main_window_simulation.cpp).
     void setupSimulation();
     void buildSimulationMenu(QToolBar *bar);
@@ -182,6 +195,10 @@ private:
     editor::IlEditor *m_il;
     editor::ProblemsView *m_problems;
     editor::WatchListView *m_watch = nullptr;
+    editor::WatchPanel *m_watchPanel = nullptr;
+    editor::IoPanel *m_ioPanel = nullptr;
+    editor::TimingChart *m_chart = nullptr;
+    bool m_panelsShown = false; // the first simulation showed the inputs and outputs
     QTabWidget *m_tabs;
     QSplitter *m_split;
     SymbolTable *m_symbols = nullptr;
@@ -190,7 +207,6 @@ private:
     QTreeWidget *m_crossTree = nullptr;
     QLabel *m_projectInfo = nullptr;
     QLabel *m_symbolsLabel = nullptr;
-    QLabel *m_watchLabel = nullptr;
     QToolBar *m_toolBar = nullptr;
     QLabel *m_statusTarget;
     QLabel *m_statusSteps;

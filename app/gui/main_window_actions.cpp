@@ -264,6 +264,7 @@ void MainWindow::buildActions() {
         ->setShortcut(QKeySequence::ZoomOut);
     view->addAction(tr("&Check Program"), this, [this] { refreshFromDocument(); })
         ->setShortcut(Qt::Key_F4);
+    addPanelActions(view);    // main_window_panels.cpp
     buildSimulationMenu(bar); // main_window_simulation.cpp
 
     QMenu *language = menuBar()->addMenu(tr("&Language"));

@@ -52,8 +52,6 @@ void MainWindow::setupSimulation() {
             &MainWindow::updateSimulationStatus);
     connect(m_simulation, &SimulationController::message, this,
             [this](const QString &text) { statusBar()->showMessage(text, 10000); });
-    connect(m_watch, &editor::WatchListView::message, this,
-            [this](const QString &text) { statusBar()->showMessage(text, 10000); });
     // The live session, or a past scan while the history is shown (simulation_history.cpp).
     connect(m_simulation, &SimulationController::monitorSourceChanged, this,
             [this](model::MonitorSource *source) {
@@ -65,6 +63,8 @@ void MainWindow::setupSimulation() {
                 if (session)
                     session->setPowerFlowRecording(true); // the overlay draws it
             });
+    connect(m_simulation, &SimulationController::sessionChanged, this,
+            [this](simulator::SimulatorSession *session) { setPanelsSource(session); });
 
     connect(m_simulation, &SimulationController::problems, this,
             [this](const std::vector<model::Diagnostic> &errors) {

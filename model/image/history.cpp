@@ -65,13 +65,41 @@ void HistoryRecorder::rebuildWords() {
 }
 
 void HistoryRecorder::clear() {
+    m_recorded = false;
+    m_marks.clear();
+    m_marksHead = 0;
+    m_triggerBefore = 0; // power-on: every device is 0
     m_rings.assign(m_devices.size(), Ring{});
     m_fresh.clear();
     for (std::size_t i = 0; i < m_devices.size(); ++i)
         m_fresh.push_back(static_cast<int>(i));
 }
 
-void HistoryRecorder::record(quint64 scan, qint64 timeMs, const std::int32_t *words) {
+bool HistoryRecorder::setTrigger(std::optional<Trigger> trigger) {
+    if (trigger && !watch(trigger->device))
+        return false;
+    m_trigger = std::move(trigger);
+    m_triggerDevice = m_trigger ? find(m_trigger->device) : -1;
+    m_triggerBefore.reset();
+    if (m_triggerDevice >= 0) {
+        const Ring &r = m_rings[static_cast<std::size_t>(m_triggerDevice)];
+        if (!r.changes.empty())
+            m_triggerBefore = m_last[static_cast<std::size_t>(m_triggerDevice)];
+        else if (!m_recorded)
+            m_triggerBefore = 0; // nothing scanned since power-on
+    }
+    return true;
+}
+
+std::vector<HistoryRecorder::Mark> HistoryRecorder::marks() const {
+    std::vector<Mark> out;
+    out.reserve(m_marks.size());
+    for (std::size_t k = 0; k < m_marks.size(); ++k)
+        out.push_back(m_marks[(m_marksHead + k) % m_marks.size()]);
+    return out;
+}
+
+bool HistoryRecorder::record(quint64 scan, qint64 timeMs, const std::int32_t *words) {
     auto push = [&](std::size_t i, std::int32_t v) {
         m_last[i] = v;
         Ring &r = m_rings[i];
@@ -105,6 +133,21 @@ void HistoryRecorder::record(quint64 scan, qint64 timeMs, const std::int32_t *wo
                 push(i, v);
         }
     }
+    m_recorded = true;
+    if (m_triggerDevice < 0) [[likely]]
+        return false;
+    const std::int32_t now = m_last[static_cast<std::size_t>(m_triggerDevice)];
+    const std::int32_t before = m_triggerBefore.value_or(now);
+    m_triggerBefore = now;
+    if (!m_trigger->fires(before, now))
+        return false;
+    if (m_marks.size() < kMaxMarks) {
+        m_marks.push_back({scan, timeMs});
+    } else {
+        m_marks[m_marksHead] = {scan, timeMs};
+        m_marksHead = (m_marksHead + 1) % kMaxMarks;
+    }
+    return true;
 }
 
 int HistoryRecorder::find(const Address &address) const {
@@ -151,6 +194,13 @@ std::optional<quint64> HistoryRecorder::knownFrom(const Address &address) const 
     if (device < 0 || m_rings[static_cast<std::size_t>(device)].changes.empty())
         return std::nullopt;
     return m_rings[static_cast<std::size_t>(device)].at(0).scan;
+}
+
+std::optional<HistoryRecorder::Change> HistoryRecorder::oldest(const Address &address) const {
+    const int device = find(address);
+    if (device < 0 || m_rings[static_cast<std::size_t>(device)].changes.empty())
+        return std::nullopt;
+    return m_rings[static_cast<std::size_t>(device)].at(0);
 }
 
 std::vector<HistoryRecorder::Change> HistoryRecorder::changes(const Address &address, qint64 fromMs,

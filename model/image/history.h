@@ -10,6 +10,7 @@
 // Not thread-safe: the thread that records reads (or copies out under its own lock).
 
 #include "model/image/memory_layout.h"
+#include "model/image/trigger.h"
 
 #include <QtGlobal>
 
@@ -42,8 +43,24 @@ public:
     std::size_t changesPerDevice() const { return m_capacity; }
     void clear(); // forgets the past, keeps the watched devices
 
-    // After a scan: words is the image in MemoryLayout order.
-    void record(quint64 scan, qint64 timeMs, const std::int32_t *words);
+    // After a scan: words is the image in MemoryLayout order. True when the trigger fired in
+    // this scan (the moment is then the newest of marks()).
+    bool record(quint64 scan, qint64 timeMs, const std::int32_t *words);
+
+    // The trigger, evaluated on every record() (its device is watched from then on); empty:
+    // none. False when the layout has no such device. Armed on a running recorder it fires on
+    // the next change into the condition, not because the condition already holds; after
+    // clear() (power-on, every device 0) a condition that holds at the first record fires.
+    bool setTrigger(std::optional<Trigger> trigger);
+    const std::optional<Trigger> &trigger() const { return m_trigger; }
+    struct Mark {
+        quint64 scan = 0;
+        qint64 timeMs = 0;
+        friend bool operator==(const Mark &, const Mark &) = default;
+    };
+    static constexpr std::size_t kMaxMarks = 1000;
+    // When the trigger fired, oldest first: the last kMaxMarks; clear() forgets them.
+    std::vector<Mark> marks() const;
 
     // The device's value after the given scan (at the given virtual time); empty when the
     // device is not watched or the moment is outside what is kept.
@@ -51,6 +68,8 @@ public:
     std::optional<std::int32_t> valueAtTime(const Address &address, qint64 timeMs) const;
     // The first scan from which the device's values are known (empty before any record).
     std::optional<quint64> knownFrom(const Address &address) const;
+    // The oldest change kept: where the device's window starts, in scans and time.
+    std::optional<Change> oldest(const Address &address) const;
     // The value at fromMs (when known) followed by every change up to toMs, oldest first.
     std::vector<Change> changes(const Address &address, qint64 fromMs, qint64 toMs) const;
 
@@ -86,6 +105,14 @@ private:
     std::vector<int> m_wordDevices;        // device indices grouped by word
     std::vector<Ring> m_rings;
     std::vector<int> m_fresh; // devices whose first value the next record() stores
+    bool m_recorded = false;  // a record() since construction or clear()
+
+    std::optional<Trigger> m_trigger;
+    int m_triggerDevice = -1;
+    // The condition's input before this scan; empty: take the first recorded value as it.
+    std::optional<std::int32_t> m_triggerBefore;
+    std::vector<Mark> m_marks; // ring of kMaxMarks
+    std::size_t m_marksHead = 0;
 };
 
 } // namespace rung::model

@@ -66,6 +66,16 @@ std::vector<Address> MonitorSource::watched() const {
     return all;
 }
 
+bool MonitorSource::watchHistory(const Address &) {
+    return false;
+}
+
+void MonitorSource::readHistory(const std::function<void(const HistoryRecorder &)> &) const {}
+
+bool MonitorSource::setTrigger(std::optional<Trigger>) {
+    return false;
+}
+
 void MonitorSource::publishSnapshot(std::shared_ptr<const Snapshot> snapshot) {
     {
         std::lock_guard lock(m_mutex);

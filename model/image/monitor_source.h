@@ -11,7 +11,9 @@
 // later (online: when the PLC acknowledged the write).
 
 #include "model/image/device_command.h"
+#include "model/image/history.h"
 #include "model/image/snapshot.h"
+#include "model/image/trigger.h"
 
 #include <QElapsedTimer>
 #include <QHash>
@@ -23,6 +25,7 @@
 #include <functional>
 #include <memory>
 #include <mutex>
+#include <optional>
 #include <vector>
 
 namespace rung::model {
@@ -70,12 +73,28 @@ public:
     void setWatched(QObject *reader, std::vector<Address> devices);
     std::vector<Address> watched() const;
 
+    // History, for the timing chart: the source records chosen devices scan by scan (or poll
+    // by poll) in a HistoryRecorder. A source that keeps none answers false and never calls
+    // read. Owner thread.
+    // Records the device from the next scan on; false for a device not in the image.
+    virtual bool watchHistory(const Address &address);
+    // Calls read with the history under the lock its recording takes after every scan: read
+    // must be quick (copy out what it draws; no dialog, no waiting).
+    virtual void readHistory(const std::function<void(const HistoryRecorder &)> &read) const;
+    // A condition evaluated on the recorded values of every scan (HistoryRecorder::setTrigger):
+    // each time it becomes true the moment is marked and triggered() follows; with
+    // Trigger::Action::Stop a simulation also pauses at that scan. Empty: none. False when the
+    // source keeps no history or has no such device.
+    virtual bool setTrigger(std::optional<Trigger> trigger);
+
 signals:
     void snapshotChanged();
     void runStateChanged(rung::model::MonitorSource::RunState state);
     void errorTextChanged(const QString &text);
     void commandFinished(rung::model::MonitorSource::CommandId id, bool ok, const QString &error);
     void watchedChanged();
+    // The trigger fired after this scan, at this virtual time (owner thread).
+    void triggered(quint64 scan, qint64 timeMs);
 
 protected:
     // Starts a command; the source calls finishCommand(id, ...) once it is done.

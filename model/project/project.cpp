@@ -199,7 +199,8 @@ public:
                     Tr::tr("%1: an object with \"name\" and \"devices\" is expected").arg(where));
             const QJsonObject w = watch[i].toObject();
             if (!expect(w, "name", QJsonValue::String, where) ||
-                !expect(w, "devices", QJsonValue::Array, where))
+                !expect(w, "devices", QJsonValue::Array, where) ||
+                !expect(w, "formats", QJsonValue::Object, where))
                 return std::nullopt;
             WatchList list;
             list.name = w.value(QStringLiteral("name")).toString();
@@ -209,6 +210,15 @@ public:
                     return fail(
                         Tr::tr("%1.devices[%2]: a device name is expected").arg(where).arg(d));
                 list.devices << devices[d].toString();
+            }
+            const QJsonObject formats = w.value(QStringLiteral("formats")).toObject();
+            for (auto it = formats.begin(); it != formats.end(); ++it) {
+                const auto format = valueFormatFromKey(it.value().toString());
+                if (!format)
+                    return fail(Tr::tr("%1.formats.%2: \"%3\" is no format (dec, signed, hex, "
+                                       "bin, bcd)")
+                                    .arg(where, it.key(), it.value().toString()));
+                list.formats[it.key()] = *format;
             }
             p.watchLists.push_back(list);
         }
@@ -454,6 +464,14 @@ QByteArray projectToJson(const Project &project) {
         QJsonObject o;
         o.insert(QStringLiteral("name"), w.name);
         o.insert(QStringLiteral("devices"), QJsonArray::fromStringList(w.devices));
+        // Only the rows shown otherwise than in decimal, and only rows of the list: a file
+        // without the key opens with every row in decimal.
+        QJsonObject formats;
+        for (const auto &[device, format] : w.formats)
+            if (format != ValueFormat::Decimal && w.devices.contains(device))
+                formats.insert(device, valueFormatKey(format));
+        if (!formats.isEmpty())
+            o.insert(QStringLiteral("formats"), formats);
         watch.append(o);
     }
     root.insert(QStringLiteral("watchLists"), watch);

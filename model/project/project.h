@@ -3,6 +3,7 @@
 // A project file: JSON, human-readable and diff-friendly, with a schema version
 // (docs/project-format.md). Saved atomically.
 
+#include "model/image/value_format.h"
 #include "model/ladder/ladder.h"
 
 #include <QString>
@@ -30,6 +31,13 @@ struct PendingSymbol {
 struct WatchList {
     QString name;
     QStringList devices; // as the target writes them
+    // How a row's word value is shown, by device; a device not here shows as Decimal.
+    std::map<QString, ValueFormat> formats;
+    ValueFormat format(const QString &device) const {
+        const auto it = formats.find(device);
+        return it == formats.end() ? ValueFormat::Decimal : it->second;
+    }
+    friend bool operator==(const WatchList &, const WatchList &) = default;
 };
 
 struct Project {

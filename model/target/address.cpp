@@ -390,6 +390,66 @@ Address offsetAddress(const Target &target, const Address &address, qint64 offse
             return Address{i, static_cast<int>(element), address.bit};
     }
     return {};
+std::variant<std::vector<Address>, AddressError>
+parseAddressRange(const Target &target, QStringView text, const ModelVariant *model) {
+    const qsizetype dots = text.indexOf(QLatin1String(".."));
+    if (dots < 0) {
+        auto one = parseAddress(target, text, model);
+        if (auto *e = std::get_if<AddressError>(&one))
+            return *e;
+        return std::vector<Address>{std::get<Address>(one)};
+    }
+    auto first = parseAddress(target, text.left(dots), model);
+    if (auto *e = std::get_if<AddressError>(&first))
+        return *e;
+    auto last = parseAddress(target, text.mid(dots + 2), model);
+    if (auto *e = std::get_if<AddressError>(&last)) {
+        e->column += static_cast<int>(dots + 2);
+        return *e;
+    }
+    const Address a = std::get<Address>(first);
+    const Address b = std::get<Address>(last);
+    const Area &areaA = target.area(a.area);
+    const Area &areaB = target.area(b.area);
+    const QString shown = text.trimmed().toString();
+    if (areaA.prefix != areaB.prefix || areaA.kind != areaB.kind || (a.bit >= 0) != (b.bit >= 0))
+        return AddressError{
+            Tr::tr("%1: both ends of a range must be devices of one kind (D0..D15)").arg(shown), 0};
+    // Bits of channels count on across channels: 000.15 is followed by 001.00.
+    const bool bits = a.bit >= 0;
+    const qint64 from = bits ? qint64{a.index} * 16 + a.bit : a.index;
+    const qint64 to = bits ? qint64{b.index} * 16 + b.bit : b.index;
+    if (to < from)
+        return AddressError{Tr::tr("%1: the range runs backwards").arg(shown), 0};
+    if (to - from + 1 > kMaxRange)
+        return AddressError{Tr::tr("%1: %2 devices; a range holds at most %3")
+                                .arg(shown)
+                                .arg(to - from + 1)
+                                .arg(kMaxRange),
+                            0};
+    std::vector<Address> out;
+    out.reserve(static_cast<std::size_t>(to - from + 1));
+    for (qint64 n = from; n <= to; ++n) {
+        const int index = static_cast<int>(bits ? n / 16 : n);
+        // The area of this number among those written with the same prefix (M / ML).
+        int area = -1;
+        for (int k = 0; k < static_cast<int>(target.areas.size()) && area < 0; ++k) {
+            const Area &c = target.area(k);
+            if (c.prefix == areaA.prefix && c.kind == areaA.kind &&
+                c.numbering == areaA.numbering) {
+                const auto range = target.range(k, model);
+                if (range && index >= range->first && index <= range->second)
+                    area = k;
+            }
+        }
+        if (area < 0)
+            return AddressError{
+                Tr::tr("%1: the PLC has no %2 inside this range")
+                    .arg(shown, formatAddress(target, {a.area, index, bits ? int(n % 16) : -1})),
+                0};
+        out.push_back({area, index, bits ? static_cast<int>(n % 16) : -1});
+    }
+    return out;
 }
 
 Address systemAddress(const Target &target, SystemRole role) {

@@ -9,6 +9,7 @@
 #include <QStringView>
 
 #include <variant>
+#include <vector>
 
 namespace rung::model {
 
@@ -30,6 +31,13 @@ std::variant<Address, AddressError> parseAddress(const Target &target, QStringVi
 // Invalid when no area of that prefix (on the model, if one is given) holds it.
 Address offsetAddress(const Target &target, const Address &address, qint64 offset,
                       const ModelVariant *model = nullptr);
+// A range of devices as a user types it into a watch table: "D0..D15", "X0..X17" (Vigor X
+// is octal: 16 inputs), "000.00..000.11" (CPM1 bits, across channels too), "M490..M510" (one
+// prefix, though the table splits it in areas). Every device from the first to the last in
+// the target's numbering, at most kMaxRange of them; a single device is a range of one.
+constexpr int kMaxRange = 1024;
+std::variant<std::vector<Address>, AddressError>
+parseAddressRange(const Target &target, QStringView text, const ModelVariant *model = nullptr);
 
 // The address of the target's system device with this role (VPC r88, CPM1 253.13 for
 // AlwaysOn); an invalid Address when the target has none.

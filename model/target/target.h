@@ -361,6 +361,26 @@ struct Semantics {
     ParallelPort parallelIn;  // VPC p77
 };
 
+// A block of a model's terminals as its terminal strip groups them (Vigor X0..X7, CPM1
+// channel 000 bits 00..11, PL110 I1..I8, VPC a00..a03): the simulator's I/O panel draws one
+// group per block. An area the program cannot write (Area::writable false) is an input,
+// else an output.
+struct TerminalBlock {
+    QString area;  // Area::key
+    int first = 0; // first element; a channel area with bit terminals: the channel
+    int count = 0; // elements; a channel area with bit terminals: its bits from bit 0
+    // Word terminals (analog inputs and outputs, the CPM1's analog setting pots): the values
+    // a terminal takes, and whether the word holds them as BCD digits (CPM1 0..200). Bit
+    // terminals leave both 0.
+    int lowest = 0;
+    int highest = 0;
+    bool bcd = false;
+    // QT_TRANSLATE_NOOP("rung::model::Target", ...): what the block is when its devices do
+    // not say it ("analog settings"); null: the devices' range names it.
+    const char *label = nullptr;
+    bool words() const { return highest > lowest; }
+};
+
 // A model (hardware variant) narrows the areas: I/O counts, analog channels.
 struct ModelVariant {
     QString name; // "VPC2416", "VB", "CPM1-20CDR", "PL110-1A"
@@ -371,6 +391,9 @@ struct ModelVariant {
     };
     std::vector<Override> overrides;
     int programSteps = 0; // 0 = the family's limit
+    // The base unit's terminals, in strip order (inputs, outputs, analog), as the manual
+    // lists them for this model.
+    std::vector<TerminalBlock> terminals;
 };
 
 // The PLC's own words for a class of program error (seed 000, the VPC console: "IL (JMP)

@@ -233,22 +233,40 @@ Target makeCpm1Target() {
     t.semantics.downTimersBelow = 1 << 30;
     t.semantics.downCountersBelow = 1 << 30;
 
-    // CPU units by I/O points; inputs from channel 000, outputs from 010 (seed 002).
+    // CPU units by I/O points; inputs from channel 000, outputs from 010 (seed 002). The
+    // terminals: seed 002 gives the 20-point unit's 12 inputs / 8 outputs; the 10- and
+    // 30-point units (6/4, 18/12) split their points the same way, 12 inputs to a channel
+    // (000.00..000.11, then 001.00..) and 8 outputs (010.00..010.07, then 011.00..).
+    // The two analog setting pots write 0..200 as BCD into channels 250 and 251 (seed 002
+    // 3.4); the panel offers them as analog values.
     struct Io {
         const char *name;
-        int inChannels, outChannels;
+        int inChannels, outChannels, inputs, outputs;
     };
-    const Io models[] = {{"CPM1-10CDR", 1, 1}, {"CPM1-20CDR", 1, 1}, {"CPM1-30CDR", 2, 2}};
+    const auto strip = [](ModelVariant &v, int inputs, int outputs) {
+        for (int channel = 0; inputs > 0; ++channel, inputs -= 12)
+            addTerminals(v, "IN", channel, std::min(12, inputs), 16);
+        for (int channel = 10; outputs > 0; ++channel, outputs -= 8)
+            addTerminals(v, "OUT", channel, std::min(8, outputs), 16);
+        addWordTerminals(v, "SR", 250, 2, 0, 200, true,
+                         QT_TRANSLATE_NOOP("rung::model::Target", "analog settings"));
+    };
+    const Io models[] = {
+        {"CPM1-10CDR", 1, 1, 6, 4}, {"CPM1-20CDR", 1, 1, 12, 8}, {"CPM1-30CDR", 2, 2, 18, 12}};
     for (const Io &m : models) {
         ModelVariant v;
         v.name = QString::fromLatin1(m.name);
         v.overrides = {{QStringLiteral("IN"), 0, m.inChannels - 1},
                        {QStringLiteral("OUT"), 10, 10 + m.outChannels - 1}};
         v.programSteps = 2048;
+        strip(v, m.inputs, m.outputs);
         t.models.push_back(v);
     }
+    // Expansion units add channels the program names; the panel shows the CPU's strip and
+    // the further channels the program uses.
     ModelVariant expanded;
     expanded.name = QStringLiteral("CPM1-30CDR+expansion");
+    strip(expanded, 18, 12);
     t.models.push_back(expanded);
     t.protocolMaps = cpm1ProtocolMaps();
     return t;

@@ -6,6 +6,8 @@
 
 #include "model/target/target.h"
 
+#include <algorithm>
+
 namespace rung::model::detail {
 
 Target makeVpcTarget();
@@ -42,6 +44,22 @@ inline InstructionSpec &addSpec(Target &t, const char *mnemonic, Op op,
     s.operandHelp = operandHelp;
     t.instructions.push_back(std::move(s));
     return t.instructions.back();
+}
+
+// Bit terminals first..first+count-1 of an area, in blocks of `per` (a terminal strip's
+// groups: 8 on the Vigor's octal X/Y, 8 on the VPC and PL110).
+inline void addTerminals(ModelVariant &m, const char *area, int first, int count, int per = 8) {
+    for (int k = 0; k < count; k += per)
+        m.terminals.push_back(
+            {QString::fromLatin1(area), first + k, std::min(per, count - k), 0, 0, false, nullptr});
+}
+
+// Word terminals (analog values) lowest..highest, one block.
+inline void addWordTerminals(ModelVariant &m, const char *area, int first, int count, int lowest,
+                             int highest, bool bcd = false, const char *label = nullptr) {
+    if (count > 0)
+        m.terminals.push_back(
+            {QString::fromLatin1(area), first, count, lowest, highest, bcd, label});
 }
 
 } // namespace rung::model::detail

@@ -377,9 +377,18 @@ Target makePl110Target() {
 
     // Same I/O on both; only PL110-2A has the OLED terminal and its DISP area (1.2, 2.1.16).
     t.models = {
-        ModelVariant{QStringLiteral("PL110-1A"), {{QStringLiteral("DISP"), 0, -1}}, 0},
-        ModelVariant{QStringLiteral("PL110-2A"), {}, 0},
+        ModelVariant{QStringLiteral("PL110-1A"), {{QStringLiteral("DISP"), 0, -1}}, 0, {}},
+        ModelVariant{QStringLiteral("PL110-2A"), {}, 0, {}},
     };
+    // The terminals (1.1, 1.3): 8 digital inputs I.1..I.8, 8 relay outputs, 4 analog inputs
+    // of 10 bits (0..1023) and the analog output AQ.1 (8 bits: 0..255 after RANGE scales it;
+    // the panel shows its word).
+    for (ModelVariant &v : t.models) {
+        addTerminals(v, "I", 1, 8);
+        addTerminals(v, "Q", 1, 8);
+        addWordTerminals(v, "AI", 1, 4, 0, 1023);
+        addWordTerminals(v, "AQ", 1, 1, -32768, 32767);
+    }
     t.protocolMaps = pl110ProtocolMaps();
     return t;
 }

@@ -458,10 +458,16 @@ Target makeVigorTarget() {
 
     // The seeds give one device map for the whole family; the models differ in program size.
     t.models = {
-        ModelVariant{QStringLiteral("M"), {}, 8000},
-        ModelVariant{QStringLiteral("VB"), {}, 16000},
-        ModelVariant{QStringLiteral("VH"), {}, 16000},
+        ModelVariant{QStringLiteral("M"), {}, 8000, {}},
+        ModelVariant{QStringLiteral("VB"), {}, 16000, {}},
+        ModelVariant{QStringLiteral("VH"), {}, 16000, {}},
     };
+    // The seeds give no model's I/O count: the panel's strip is 16 inputs X0..X17 and 16
+    // outputs Y0..Y17 in eights (octal), and it adds the further X / Y the program uses.
+    for (ModelVariant &v : t.models) {
+        addTerminals(v, "X", 0, 16);
+        addTerminals(v, "Y", 0, 16);
+    }
     t.protocolMaps = vigorProtocolMaps();
     return t;
 }

@@ -228,6 +228,13 @@ Target makeVpcTarget() {
                        {QStringLiteral("o"), 0, m.out - 1},
                        {QStringLiteral("a"), 0, m.ain - 1},
                        {QStringLiteral("d"), 0, m.aout - 1}};
+        // The terminal strip: inputs and outputs in eights; the analog values are register
+        // values 0000..9999 (seed 000 III: decimal registers; the seed gives no converter
+        // resolution).
+        addTerminals(v, "i", 0, m.in);
+        addTerminals(v, "o", 0, m.out);
+        addWordTerminals(v, "a", 0, m.ain, 0, 9999);
+        addWordTerminals(v, "d", 0, m.aout, 0, 9999);
         t.models.push_back(v);
     }
     // The console's error texts (seed 000 "Program errors"), quoted in the checks' messages.

@@ -14,7 +14,10 @@
 #include "simulator/scan_history.h"
 
 #include "model/target/address.h"
+#include "simulator/session.h"
 
+#include <QCoreApplication>
+#include <QElapsedTimer>
 #include <QFile>
 
 #include <benchmark/benchmark.h>
@@ -22,6 +25,7 @@
 #include <algorithm>
 #include <chrono>
 #include <random>
+#include <limits>
 #include <string>
 #include <vector>
 
@@ -339,6 +343,11 @@ void BM_HistoryRatio(benchmark::State &state) {
         state.SkipWithError("the target has fewer than 1000 devices");
         return;
     }
+    // The timing chart's trigger is armed too: evaluated after every recorded scan.
+    model::Trigger trigger;
+    trigger.device = recording.list.instructions[0].operands[0].address;
+    trigger.action = model::Trigger::Action::Mark;
+    history.setTrigger(trigger);
     sideBySide(state, plain, recording, "history", [&](Fixture &f) {
         history.record(f.engine.statistics().scans, f.engine.statistics().timeMs,
                        f.engine.words().data());
@@ -390,6 +399,81 @@ void BM_ResolvedOperandsRatio(benchmark::State &state) {
     state.counters["plain_ns_per_scan"] = plainNs / scans;
     state.counters["resolved_ns_per_scan"] = resolvedNs / scans;
     state.counters["ratio"] = plainNs > 0 ? resolvedNs / plainNs : 0;
+// The same cost as a user meets it: two SimulatorSessions of the mixed program run as fast as
+// possible on their worker threads, in turns of 150 ms, one plain and one with 1,000 devices
+// recorded, a trigger armed and a reader copying the chart's window out of the history 30
+// times a second (the timing chart's refresh) while it runs. Scans per second of each; the
+// ratio is plain / recording (issue 11: <= 1.10).
+void BM_SessionHistoryRatio(benchmark::State &state) {
+    static int argc = 1;
+    static char name[] = "bench_simulator";
+    static char *argv[] = {name, nullptr};
+    static QCoreApplication *app =
+        QCoreApplication::instance() ? nullptr : new QCoreApplication(argc, argv);
+    Q_UNUSED(app);
+    Fixture plainF(mixedProgram());
+    Fixture withF(mixedProgram());
+    if (!plainF.result.ok() || !withF.result.ok()) {
+        state.SkipWithError("program did not compile");
+        return;
+    }
+    SimulatorSession plain(plainF.result.program);
+    SimulatorSession with(withF.result.program);
+    model::MonitorSource &source = with;
+    const model::Target &t = *withF.target;
+    std::vector<model::Address> watched;
+    for (std::size_t area = 0; area < t.areas.size() && watched.size() < 1000; ++area)
+        for (int i = t.areas[area].first; i <= t.areas[area].last && watched.size() < 1000; ++i)
+            if (source.watchHistory({static_cast<int>(area), i, -1}))
+                watched.push_back({static_cast<int>(area), i, -1});
+    model::Trigger trigger;
+    trigger.device = withF.list.instructions[0].operands[0].address;
+    trigger.action = model::Trigger::Action::Mark;
+    source.setTrigger(trigger);
+    const std::vector<model::Address> chart(watched.begin(), watched.begin() + 64);
+    const auto turn = [&](SimulatorSession &s, bool read) {
+        const quint64 before = s.snapshot() ? s.snapshot()->statistics.scans : 0;
+        QElapsedTimer wall;
+        wall.start();
+        s.setSpeed(0);
+        s.run();
+        qint64 nextRead = 0;
+        std::size_t copied = 0;
+        while (wall.elapsed() < 150) {
+            if (read && wall.elapsed() >= nextRead) {
+                nextRead += 33;
+                s.readHistory([&](const model::HistoryRecorder &h) {
+                    for (const model::Address &a : chart)
+                        copied += h.changes(a, 0, std::numeric_limits<qint64>::max() / 2).size();
+                });
+            }
+            QCoreApplication::processEvents(QEventLoop::AllEvents, 5);
+        }
+        s.pause();
+        const qint64 ms = wall.elapsed();
+        // The paused worker publishes its last scan.
+        QElapsedTimer settle;
+        settle.start();
+        while (settle.elapsed() < 50)
+            QCoreApplication::processEvents(QEventLoop::AllEvents, 5);
+        benchmark::DoNotOptimize(copied);
+        return std::pair{static_cast<double>(s.snapshot()->statistics.scans - before),
+                         static_cast<double>(ms)};
+    };
+    double plainScans = 0, plainMs = 0, withScans = 0, withMs = 0;
+    for (auto _ : state) {
+        const auto [ps, pm] = turn(plain, false);
+        const auto [ws, wm] = turn(with, true);
+        plainScans += ps;
+        plainMs += pm;
+        withScans += ws;
+        withMs += wm;
+    }
+    const double plainRate = plainScans / plainMs * 1000;
+    const double withRate = withScans / withMs * 1000;
+    state.counters["plain_scans_per_s"] = plainRate;
+    state.counters["history_scans_per_s"] = withRate;
+    state.counters["ratio"] = withRate > 0 ? plainRate / withRate : 0;
 }
 
 void BM_TrafficLight24Hours(benchmark::State &state) {
@@ -453,6 +537,11 @@ BENCHMARK(BM_ScanHistoryRatio)
     ->Repetitions(5)
     ->DisplayAggregatesOnly(true);
 BENCHMARK(BM_HistoryJumpTrafficLightHour)->Unit(benchmark::kMillisecond)->Iterations(200);
+BENCHMARK(BM_SessionHistoryRatio)
+    ->Unit(benchmark::kMillisecond)
+    ->Iterations(4)
+    ->Repetitions(3)
+    ->DisplayAggregatesOnly(true);
 BENCHMARK(BM_TrafficLight24Hours)->Unit(benchmark::kMillisecond)->Iterations(1)->Repetitions(3);
 BENCHMARK(BM_TrafficLight24HoursVigorListing)
     ->Unit(benchmark::kMillisecond)

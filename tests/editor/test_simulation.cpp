@@ -6,7 +6,9 @@
 
 #include "app/gui/simulation_controller.h"
 #include "editor/il_editor.h"
+#include "editor/io_panel.h"
 #include "editor/problems_view.h"
+#include "editor/timing_chart.h"
 #include "editor/watch_list_view.h"
 #include "simulator/session.h"
 
@@ -257,7 +259,11 @@ TEST_F(Simulation, TheWatchListShowsTheRunningValues) {
     EXPECT_EQ(watch->monitorSource(), sim()->session());
     ASSERT_NE(waitFor([](const model::Snapshot &s) { return s.statistics.scans == 1; }), nullptr);
     QTest::qWait(100);
-    EXPECT_EQ(watch->topLevelItem(0)->child(0)->text(1), QStringLiteral("ON"));
+    EXPECT_EQ(watch->topLevelItem(0)->child(0)->text(editor::WatchListView::ValueColumn),
+              QStringLiteral("ON"));
+    // Every monitoring view was handed the same source.
+    EXPECT_EQ(window.ioPanel()->monitorSource(), sim()->session());
+    EXPECT_EQ(window.timingChart()->monitorSource(), sim()->session());
 }
 
 // An edit while it runs is an online edit (test_simulation_debug.cpp has the rest); while
@@ -281,6 +287,8 @@ TEST_F(Simulation, EditingWhileRunningIsAnOnlineEditAndWhileStoppedDropsTheSimul
     EXPECT_EQ(sim()->session(), nullptr);
     EXPECT_EQ(sim()->runState(), State::Offline);
     EXPECT_EQ(window.watchListView()->monitorSource(), nullptr);
+    EXPECT_EQ(window.ioPanel()->monitorSource(), nullptr);
+    EXPECT_EQ(window.timingChart()->monitorSource(), nullptr);
     // Run starts the edited program.
     ASSERT_TRUE(sim()->run());
     ASSERT_NE(sim()->session(), nullptr);

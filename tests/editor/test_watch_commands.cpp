@@ -18,6 +18,7 @@
 
 using namespace rung;
 using Kind = model::DeviceCommand::Kind;
+constexpr int kValue = editor::WatchListView::ValueColumn;
 
 namespace {
 
@@ -82,7 +83,7 @@ TEST_F(WatchCommands, AWordOffersToWriteAValueAndTheValueColumnWritesIt) {
     EXPECT_EQ(actions[0]->text(), QStringLiteral("Write Value..."));
 
     // Typed into the value column, as the cell editor commits it.
-    row(1)->setText(1, QStringLiteral("1234"));
+    row(1)->setText(kValue, QStringLiteral("1234"));
     ASSERT_EQ(source.commands.size(), 1u);
     EXPECT_EQ(source.commands[0].kind, Kind::WriteWord);
     EXPECT_EQ(source.commands[0].address, at("D5"));
@@ -124,8 +125,8 @@ TEST_F(WatchCommands, TextThatIsNoValueIsRefusedWithTheReason) {
     auto snapshot = source.blank(target);
     snapshot->words[static_cast<std::size_t>(snapshot->layout->word(at("D5")))] = 42;
     source.publish(snapshot);
-    row(1)->setText(1, QStringLiteral("junk"));
-    EXPECT_EQ(row(1)->text(1), QStringLiteral("42"));
+    row(1)->setText(kValue, QStringLiteral("junk"));
+    EXPECT_EQ(row(1)->text(kValue), QStringLiteral("42"));
 }
 
 TEST_F(WatchCommands, ADoubleClickFlipsABitAndARefusedCommandIsSaid) {
@@ -135,7 +136,7 @@ TEST_F(WatchCommands, ADoubleClickFlipsABitAndARefusedCommandIsSaid) {
     source.publish(snapshot);
     QSignalSpy messages(view.get(), &editor::WatchListView::message);
     source.failWith = QStringLiteral("X0 cannot be written");
-    emit view->itemDoubleClicked(row(0), 1);
+    emit view->itemDoubleClicked(row(0), kValue);
     ASSERT_EQ(source.commands.size(), 1u);
     EXPECT_EQ(source.commands[0].kind, Kind::WriteBit);
     EXPECT_EQ(source.commands[0].value, 0); // it was ON
@@ -151,7 +152,7 @@ TEST_F(WatchCommands, TheValueEditorOpensOnTheNumberAndSnapshotsDoNotOverwriteWh
     snapshot->words[d5] = 12;
     source.publish(snapshot);
     QTest::qWait(50);
-    EXPECT_EQ(row(1)->text(1), QStringLiteral("12"));
+    EXPECT_EQ(row(1)->text(kValue), QStringLiteral("12"));
     QObject owner;
     const QList<QAction *> actions = view->deviceActions(row(1), &owner);
     ASSERT_EQ(actions.size(), 1);
@@ -175,7 +176,7 @@ TEST_F(WatchCommands, TheValueEditorOpensOnTheNumberAndSnapshotsDoNotOverwriteWh
     // Closed, the column follows the snapshots again.
     source.publish(later);
     QTest::qWait(100);
-    EXPECT_EQ(row(1)->text(1), QStringLiteral("13"));
+    EXPECT_EQ(row(1)->text(kValue), QStringLiteral("13"));
 }
 
 } // namespace

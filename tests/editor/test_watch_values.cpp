@@ -14,6 +14,7 @@
 #include <gtest/gtest.h>
 
 using namespace rung;
+constexpr int kValue = editor::WatchListView::ValueColumn;
 
 namespace {
 
@@ -32,9 +33,10 @@ TEST(WatchValues, TheValueColumnShowsEachSnapshotAndTheSourceLearnsWhatIsWatched
         QStringLiteral("watch"));
     editor::WatchListView view(&document);
     test::FakeMonitorSource source;
-    EXPECT_EQ(view.columnCount(), 1);
+    // Device, symbol, value, format, forced: the value column is empty without a source.
+    EXPECT_EQ(view.columnCount(), 5);
     view.setMonitorSource(&source);
-    EXPECT_EQ(view.columnCount(), 2);
+    EXPECT_EQ(view.columnCount(), 5);
     std::vector<model::Address> expected{at(target, "X0"), at(target, "D5"), at(target, "T3")};
     std::sort(expected.begin(), expected.end());
     EXPECT_EQ(source.watched(), expected);
@@ -52,19 +54,19 @@ TEST(WatchValues, TheValueColumnShowsEachSnapshotAndTheSourceLearnsWhatIsWatched
     ASSERT_TRUE(changed.wait(5000));
     const QTreeWidgetItem *list = view.topLevelItem(0);
     ASSERT_EQ(list->childCount(), 3);
-    EXPECT_EQ(list->child(0)->text(1), QStringLiteral("ON (forced)"));
-    EXPECT_EQ(list->child(1)->text(1), QStringLiteral("1234"));
-    EXPECT_EQ(list->child(2)->text(1), QStringLiteral("12 of 50, OFF"));
+    EXPECT_EQ(list->child(0)->text(kValue), QStringLiteral("ON (forced)"));
+    EXPECT_EQ(list->child(1)->text(kValue), QStringLiteral("1234"));
+    EXPECT_EQ(list->child(2)->text(kValue), QStringLiteral("12 of 50, OFF"));
 
     // A device added to the list is watched and shown at once.
     view.setCurrentItem(view.topLevelItem(0));
     view.addDevice(QStringLiteral("Y1"));
     EXPECT_EQ(source.watched().size(), 4u);
     ASSERT_EQ(view.topLevelItem(0)->childCount(), 4);
-    EXPECT_EQ(view.topLevelItem(0)->child(3)->text(1), QStringLiteral("OFF"));
+    EXPECT_EQ(view.topLevelItem(0)->child(3)->text(kValue), QStringLiteral("OFF"));
 
     view.setMonitorSource(nullptr);
-    EXPECT_EQ(view.columnCount(), 1);
+    EXPECT_TRUE(view.topLevelItem(0)->child(0)->text(kValue).isEmpty());
     EXPECT_TRUE(source.watched().empty());
 }
 
@@ -123,8 +125,8 @@ TEST(WatchValues, HeadersAndValuesFollowALanguageSwitch) {
     QSignalSpy changed(&source, &model::MonitorSource::snapshotChanged);
     source.publish(snapshot);
     ASSERT_TRUE(changed.wait(5000));
-    ASSERT_EQ(view.headerItem()->text(1), QStringLiteral("Value"));
-    ASSERT_EQ(view.topLevelItem(0)->child(0)->text(1), QStringLiteral("ON"));
+    ASSERT_EQ(view.headerItem()->text(kValue), QStringLiteral("Value"));
+    ASSERT_EQ(view.topLevelItem(0)->child(0)->text(kValue), QStringLiteral("ON"));
 
     ASSERT_TRUE(app::setLanguage(QStringLiteral("hu"), false));
     QCoreApplication::sendPostedEvents(nullptr, QEvent::LanguageChange);
@@ -132,10 +134,10 @@ TEST(WatchValues, HeadersAndValuesFollowALanguageSwitch) {
         return QCoreApplication::translate("rung::editor::WatchListView", text);
     };
     ASSERT_NE(hu("Value"), QStringLiteral("Value")); // the catalogue is there
-    EXPECT_EQ(view.headerItem()->text(0), hu("Watch list"));
-    EXPECT_EQ(view.headerItem()->text(1), hu("Value"));
-    EXPECT_EQ(view.topLevelItem(0)->child(0)->text(1), hu("ON"));
+    EXPECT_EQ(view.headerItem()->text(0), hu("Device"));
+    EXPECT_EQ(view.headerItem()->text(kValue), hu("Value"));
+    EXPECT_EQ(view.topLevelItem(0)->child(0)->text(kValue), hu("ON"));
     app::setLanguage(QStringLiteral("en"), false);
     QCoreApplication::sendPostedEvents(nullptr, QEvent::LanguageChange);
-    EXPECT_EQ(view.headerItem()->text(1), QStringLiteral("Value"));
+    EXPECT_EQ(view.headerItem()->text(kValue), QStringLiteral("Value"));
 }

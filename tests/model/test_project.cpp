@@ -26,7 +26,9 @@ Project sample() {
     p.symbols = {{std::get<Address>(parseAddress(t, u"X0")), QStringLiteral("Start"),
                   QStringLiteral("green button")}};
     p.setValues[std::get<Address>(parseAddress(t, u"T0"))] = 10;
-    p.watchLists = {{QStringLiteral("Main"), {QStringLiteral("X0"), QStringLiteral("Y0")}}};
+    p.watchLists = {{QStringLiteral("Main"),
+                     {QStringLiteral("X0"), QStringLiteral("Y0"), QStringLiteral("D0")},
+                     {{QStringLiteral("D0"), ValueFormat::Hex}}}};
     return p;
 }
 
@@ -60,6 +62,9 @@ TEST(ProjectFile, SaveAndLoadKeepEverything) {
     EXPECT_EQ(loaded->setValues, p.setValues);
     ASSERT_EQ(loaded->watchLists.size(), 1u);
     EXPECT_EQ(loaded->watchLists[0].devices, p.watchLists[0].devices);
+    EXPECT_EQ(loaded->watchLists[0], p.watchLists[0]); // the row formats too
+    EXPECT_EQ(loaded->watchLists[0].format(QStringLiteral("D0")), ValueFormat::Hex);
+    EXPECT_EQ(loaded->watchLists[0].format(QStringLiteral("X0")), ValueFormat::Decimal);
     // Writing it again gives the same bytes: the format is stable for diffs.
     EXPECT_EQ(projectToJson(*loaded), readAll(path));
 }
@@ -144,6 +149,31 @@ TEST(ProjectFile, WrongTypesAreErrorsNotSilentlyEmpty) {
     EXPECT_EQ(why("{\"format\": \"rungstudio-project\", \"schema\": 1, \"target\": \"vigor\", "
                   "\"watchLists\": [{\"name\": \"a\", \"devices\": [1]}]}"),
               "watchLists[0].devices[0]: a device name is expected");
+    EXPECT_EQ(why("{\"format\": \"rungstudio-project\", \"schema\": 1, \"target\": \"vigor\", "
+                  "\"watchLists\": [{\"name\": \"a\", \"devices\": [\"D0\"], "
+                  "\"formats\": {\"D0\": \"roman\"}}]}"),
+              "watchLists[0].formats.D0: \"roman\" is no format (dec, signed, hex, bin, bcd)");
+}
+
+TEST(ProjectFile, WatchRowFormatsAreSavedOnlyWhereNotDecimal) {
+    // A project written before the formats existed opens with every row in decimal, and one
+    // without other formats is written as it was (no "formats" key).
+    ProjectError e;
+    const auto old = projectFromJson(
+        "{\"format\": \"rungstudio-project\", \"schema\": 1, \"target\": \"vigor\", "
+        "\"watchLists\": [{\"name\": \"Main\", \"devices\": [\"X0\", \"D0\"]}]}",
+        &e);
+    ASSERT_TRUE(old.has_value()) << e.message.toStdString();
+    EXPECT_TRUE(old->watchLists[0].formats.empty());
+    EXPECT_FALSE(projectToJson(*old).contains("formats"));
+    Project p = *old;
+    p.watchLists[0].formats[QStringLiteral("D0")] = ValueFormat::Bcd;
+    p.watchLists[0].formats[QStringLiteral("X0")] = ValueFormat::Decimal;
+    p.watchLists[0].formats[QStringLiteral("D9")] = ValueFormat::Hex; // no such row
+    const QByteArray json = projectToJson(p);
+    EXPECT_TRUE(json.contains("\"formats\": {\n                \"D0\": \"bcd\"\n            }"))
+        << json.toStdString();
+    EXPECT_FALSE(json.contains("D9"));
 }
 
 TEST(ProjectFile, SetValuesMustBeWholeNumbersInRange) {

@@ -100,3 +100,60 @@ TEST(HistoryRecorder, DeviceWatchedLaterStartsAtItsFirstRecord) {
     s.scan(1);
     EXPECT_EQ(s.history.knownFrom(s.at("Y0")), 7u);
 }
+
+TEST(HistoryTrigger, FiresInTheScanWhereTheConditionBecomesTrue) {
+    HistorySim s; // Y0 follows X0; D0 counts one a scan
+    model::Trigger rises{s.at("Y0"), model::Trigger::Kind::Rises};
+    ASSERT_TRUE(s.history.setTrigger(rises));
+    std::vector<quint64> fired;
+    const auto scanAndNote = [&](int n) {
+        for (int k = 0; k < n; ++k) {
+            s.engine->scan();
+            if (s.history.record(s.engine->statistics().scans, s.engine->statistics().timeMs,
+                                 s.engine->words().data()))
+                fired.push_back(s.engine->statistics().scans);
+        }
+    };
+    scanAndNote(3);
+    s.in("X0", true);
+    scanAndNote(3); // rises after scan 4
+    s.in("X0", false);
+    scanAndNote(2);
+    s.in("X0", true);
+    scanAndNote(1); // again after scan 9
+    EXPECT_EQ(fired, (std::vector<quint64>{4, 9}));
+    EXPECT_EQ(s.history.marks(), (std::vector<model::HistoryRecorder::Mark>{{4, 40}, {9, 90}}));
+    // The trigger's device is recorded like any watched one.
+    EXPECT_EQ(s.history.valueAtScan(s.at("Y0"), 4), 1);
+}
+
+TEST(HistoryTrigger, ArmedWhileTheConditionHoldsItWaitsForTheNextChangeIntoIt) {
+    HistorySim s;
+    s.history.watch(s.at("D0"));
+    s.scan(20); // D0 = 20
+    model::Trigger above{s.at("D0"), model::Trigger::Kind::Compare, model::CompareOp::Gt, 10};
+    ASSERT_TRUE(s.history.setTrigger(above));
+    s.scan(5);
+    EXPECT_TRUE(s.history.marks().empty());
+    // A falling condition: D0 = 5 while still counting: "D0 = 30" fires once, at scan 30.
+    model::Trigger equal{s.at("D0"), model::Trigger::Kind::Compare, model::CompareOp::Eq, 30};
+    ASSERT_TRUE(s.history.setTrigger(equal));
+    s.scan(10);
+    EXPECT_EQ(s.history.marks(), (std::vector<model::HistoryRecorder::Mark>{{30, 300}}));
+}
+
+TEST(HistoryTrigger, AfterAResetAConditionThatHoldsAtTheFirstScanFires) {
+    // Power-on: every device 0. "Y0 falls" does not fire at the first scan (Y0 was never
+    // ON); "D0 >= 1" does (D0 was 0 before the first scan).
+    HistorySim s;
+    s.history.clear();
+    ASSERT_TRUE(s.history.setTrigger(model::Trigger{s.at("Y0"), model::Trigger::Kind::Falls}));
+    s.scan(1);
+    EXPECT_TRUE(s.history.marks().empty());
+    s.history.clear();
+    ASSERT_TRUE(s.history.setTrigger(
+        model::Trigger{s.at("D0"), model::Trigger::Kind::Compare, model::CompareOp::Ge, 1}));
+    s.scan(1);
+    EXPECT_EQ(s.history.marks().size(), 1u);
+    EXPECT_FALSE(s.history.setTrigger(model::Trigger{model::Address{}}));
+}

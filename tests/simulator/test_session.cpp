@@ -293,15 +293,17 @@ TEST(SimulatorSession, ReadersOnAnotherThreadShareConsistentSnapshotsWhileComman
 
 TEST(SimulatorSession, HistoryRecordsWatchedDevicesPerScan) {
     SessionFixture f("LD X0\nOUT Y0\nEND");
-    ASSERT_TRUE(f.session->watchHistory(f.at("Y0")));
-    EXPECT_FALSE(f.session->watchHistory(model::Address{}));
+    // Through the interface, as the timing chart reads any origin.
+    model::MonitorSource &source = *f.session;
+    ASSERT_TRUE(source.watchHistory(f.at("Y0")));
+    EXPECT_FALSE(source.watchHistory(model::Address{}));
     f.session->setPeriodMs(10);
     f.session->runScans(3); // Y0 off after scans 1..3
     ASSERT_TRUE(eventually([&] { return f.session->runState() == RunState::Paused; }));
     f.session->writeBit(f.at("X0"), true);
     f.session->runScans(2); // on after scans 4, 5
     ASSERT_TRUE(eventually([&] { return f.latest()->statistics.scans == 5; }));
-    f.session->readHistory([&](const model::HistoryRecorder &h) {
+    source.readHistory([&](const model::HistoryRecorder &h) {
         EXPECT_EQ(h.valueAtScan(f.at("Y0"), 3), 0);
         EXPECT_EQ(h.valueAtScan(f.at("Y0"), 4), 1);
         EXPECT_EQ(h.valueAtTime(f.at("Y0"), 35), 0);
@@ -330,4 +332,61 @@ TEST(SimulatorSession, APausedSessionPublishesItsLastScan) {
     EXPECT_TRUE(f.finish(f.session->writeWord(f.at("D1"), 0)).first);
     EXPECT_EQ(paused->statistics.scans, f.session->snapshot()->statistics.scans);
     EXPECT_EQ(paused->value(f.at("D0")), f.session->snapshot()->value(f.at("D0")));
+}
+
+TEST(SimulatorSession, AStoppingTriggerPausesAtTheScanWhereItBecameTrue) {
+    // As fast as possible: thousands of scans between two snapshots, yet the trigger is
+    // evaluated on every recorded scan, so the session stops at exactly scan 501 (D0 counts
+    // one a scan from the first: D0 > 500 first holds after scan 501).
+    SessionFixture f("LD M9000\nADD D0 K1 D0\nEND");
+    model::MonitorSource &source = *f.session;
+    model::Trigger trigger;
+    trigger.device = f.at("D0");
+    trigger.kind = model::Trigger::Kind::Compare;
+    trigger.op = model::CompareOp::Gt;
+    trigger.value = 500;
+    ASSERT_TRUE(source.setTrigger(trigger));
+    QSignalSpy fired(&source, &model::MonitorSource::triggered);
+    f.session->setSpeed(0);
+    f.session->run();
+    ASSERT_TRUE(eventually([&] { return fired.count() == 1; }));
+    EXPECT_EQ(fired.at(0).at(0).toULongLong(), 501u);
+    EXPECT_EQ(fired.at(0).at(1).toLongLong(), 5010);
+    EXPECT_EQ(source.runState(), RunState::Paused);
+    // The snapshot the reader finds when told is that scan's.
+    EXPECT_EQ(source.snapshot()->statistics.scans, 501u);
+    EXPECT_EQ(source.snapshot()->value(f.at("D0")), 501);
+    source.readHistory([&](const model::HistoryRecorder &h) {
+        EXPECT_EQ(h.marks(), (std::vector<model::HistoryRecorder::Mark>{{501, 5010}}));
+    });
+    // Run goes on from there; the condition stays true, so it does not fire again.
+    f.session->run();
+    ASSERT_TRUE(eventually([&] { return f.latest()->statistics.scans > 1000; }));
+    f.session->pause();
+    EXPECT_EQ(fired.count(), 1);
+}
+
+TEST(SimulatorSession, AMarkingTriggerNotesEveryRiseAndKeepsRunning) {
+    // Y0 follows X0; X0 pulsed twice by single scans: two marks, never paused by them.
+    SessionFixture f("LD X0\nOUT Y0\nEND");
+    model::MonitorSource &source = *f.session;
+    auto parsed = model::parseTrigger(f.sim.target, QStringLiteral("Y0 rises"));
+    ASSERT_TRUE(std::holds_alternative<model::Trigger>(parsed));
+    auto trigger = std::get<model::Trigger>(parsed);
+    trigger.action = model::Trigger::Action::Mark;
+    ASSERT_TRUE(source.setTrigger(trigger));
+    QSignalSpy fired(&source, &model::MonitorSource::triggered);
+    for (const bool on : {false, true, false, false, true, true}) {
+        EXPECT_TRUE(f.finish(source.writeBit(f.at("X0"), on)).first);
+        const quint64 before = f.latest()->statistics.scans;
+        f.session->singleScan();
+        ASSERT_TRUE(eventually([&] { return f.latest()->statistics.scans == before + 1; }));
+    }
+    ASSERT_TRUE(eventually([&] { return fired.count() == 2; }));
+    EXPECT_EQ(fired.at(0).at(0).toULongLong(), 2u);
+    EXPECT_EQ(fired.at(1).at(0).toULongLong(), 5u);
+    source.readHistory([&](const model::HistoryRecorder &h) {
+        EXPECT_EQ(h.marks(), (std::vector<model::HistoryRecorder::Mark>{{2, 20}, {5, 50}}));
+    });
+    EXPECT_TRUE(source.setTrigger(std::nullopt));
 }

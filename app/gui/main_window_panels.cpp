@@ -1,0 +1,86 @@
+#include "main_window.h"
+
+#include "editor/io_panel.h"
+#include "editor/timing_chart.h"
+#include "editor/watch_list_view.h"
+#include "editor/watch_panel.h"
+
+#include <QDockWidget>
+#include <QMenu>
+#include <QMessageBox>
+#include <QStatusBar>
+
+// The monitoring docks: the watch table, the inputs and outputs panel and the timing chart.
+// Each reads a model::MonitorSource only (setPanelsSource): the simulation now, an online PLC
+// later.
+
+namespace rung::app {
+
+void MainWindow::buildMonitorDocks() {
+    const auto dock = [this](const char *name, QWidget *content, Qt::DockWidgetArea area) {
+        auto *d = new QDockWidget(this);
+        d->setObjectName(QString::fromLatin1(name));
+        d->setWidget(content);
+        addDockWidget(area, d);
+        return d;
+    };
+    m_watchPanel = new editor::WatchPanel(m_document);
+    m_watch = m_watchPanel->view();
+    m_ioPanel = new editor::IoPanel(m_document);
+    m_chart = new editor::TimingChart(m_document);
+    QDockWidget *problems = findChild<QDockWidget *>(QStringLiteral("problemsDock"));
+    QDockWidget *watch = dock("watchDock", m_watchPanel, Qt::BottomDockWidgetArea);
+    QDockWidget *chart = dock("timingChartDock", m_chart, Qt::BottomDockWidgetArea);
+    // The terminals beside the ladder (toggle an input, see the rung), the table and the
+    // chart below it with the problems.
+    // Hidden until a simulation starts (or View shows it): the ladder keeps the width.
+    dock("ioDock", m_ioPanel, Qt::RightDockWidgetArea)->hide();
+    tabifyDockWidget(problems, watch);
+    tabifyDockWidget(watch, chart);
+    problems->raise();
+    const auto say = [this](const QString &text) { statusBar()->showMessage(text, 10000); };
+    connect(m_watchPanel, &editor::WatchPanel::message, this, say);
+    connect(m_ioPanel, &editor::IoPanel::message, this, say);
+    connect(m_chart, &editor::TimingChart::message, this, say);
+    connect(m_chart, &editor::TimingChart::exportRequested, this, [this](const QString &format) {
+        const QString path =
+            askSavePath(tr("Export Timing Chart"), QStringLiteral("*.%1").arg(format), {format});
+        QString error;
+        if (!path.isEmpty() && !m_chart->exportTo(path, format, &error))
+            QMessageBox::critical(this, tr("Cannot export"), error);
+    });
+    retranslatePanels();
+}
+
+void MainWindow::retranslatePanels() {
+    const auto title = [this](const char *name, const QString &text) {
+        if (auto *d = findChild<QDockWidget *>(QString::fromLatin1(name)))
+            d->setWindowTitle(text);
+    };
+    title("watchDock", tr("Watch"));
+    title("ioDock", tr("Inputs and Outputs"));
+    title("timingChartDock", tr("Timing Chart"));
+}
+
+void MainWindow::addPanelActions(QMenu *menu) {
+    menu->addSeparator();
+    for (const char *name : {"watchDock", "ioDock", "timingChartDock"})
+        if (auto *d = findChild<QDockWidget *>(QString::fromLatin1(name)))
+            menu->addAction(d->toggleViewAction());
+}
+
+void MainWindow::setPanelsSource(model::MonitorSource *source) {
+    m_watchPanel->setMonitorSource(source);
+    m_ioPanel->setMonitorSource(source);
+    m_chart->setMonitorSource(source);
+    // The first simulation of the window shows its terminals (closed again, they stay so).
+    if (source && !m_panelsShown) {
+        m_panelsShown = true;
+        if (auto *d = findChild<QDockWidget *>(QStringLiteral("ioDock")); d && !d->isVisible()) {
+            d->show();
+            resizeDocks({d}, {330}, Qt::Horizontal);
+        }
+    }
+}
+
+} // namespace rung::app

@@ -1,0 +1,116 @@
+#include "model/image/trigger.h"
+
+#include "model/target/address.h"
+
+#include <QCoreApplication>
+#include <QRegularExpression>
+
+namespace rung::model {
+
+namespace {
+
+struct Tr {
+    Q_DECLARE_TR_FUNCTIONS(rung::model::Trigger)
+};
+
+bool isBitDevice(const Target &target, const Address &a) {
+    return a.bit >= 0 || target.area(a.area).kind == AreaKind::Bit;
+}
+
+} // namespace
+
+bool Trigger::holds(qint64 v) const {
+    switch (kind) {
+    case Kind::Rises:
+        return v != 0;
+    case Kind::Falls:
+        return v == 0;
+    case Kind::Compare:
+        break;
+    }
+    switch (op) {
+    case CompareOp::Eq:
+        return v == value;
+    case CompareOp::Ne:
+        return v != value;
+    case CompareOp::Lt:
+        return v < value;
+    case CompareOp::Le:
+        return v <= value;
+    case CompareOp::Gt:
+        return v > value;
+    case CompareOp::Ge:
+        return v >= value;
+    case CompareOp::None:
+        break;
+    }
+    return false;
+}
+
+std::variant<Trigger, QString> parseTrigger(const Target &target, const QString &text,
+                                            const ModelVariant *model) {
+    // The device is everything before the condition: CPM1 writes "TIM 000" with a space.
+    static const QRegularExpression edge(QStringLiteral("^(.+?)\\s*(rises|falls|↑|↓)$"),
+                                         QRegularExpression::CaseInsensitiveOption);
+    static const QRegularExpression compare(
+        QStringLiteral("^(.+?)\\s*(<>|<=|>=|=|<|>)\\s*(\\S+)$"));
+    const QString typed = text.trimmed();
+    if (typed.isEmpty())
+        return Tr::tr("Type a condition: \"Y0 rises\", \"Y0 falls\" or \"D10 > 100\"");
+    Trigger trigger;
+    QString device;
+    if (const auto m = edge.match(typed); m.hasMatch()) {
+        device = m.captured(1);
+        const QString word = m.captured(2).toLower();
+        trigger.kind = word == QLatin1String("rises") || word == QStringLiteral("↑")
+                           ? Trigger::Kind::Rises
+                           : Trigger::Kind::Falls;
+    } else if (const auto c = compare.match(typed); c.hasMatch()) {
+        device = c.captured(1);
+        trigger.kind = Trigger::Kind::Compare;
+        const QString op = c.captured(2);
+        trigger.op = op == QLatin1String("=")    ? CompareOp::Eq
+                     : op == QLatin1String("<>") ? CompareOp::Ne
+                     : op == QLatin1String("<")  ? CompareOp::Lt
+                     : op == QLatin1String("<=") ? CompareOp::Le
+                     : op == QLatin1String(">")  ? CompareOp::Gt
+                                                 : CompareOp::Ge;
+        const QString number = c.captured(3);
+        bool ok = false;
+        trigger.value = number.startsWith(QLatin1String("0x"), Qt::CaseInsensitive)
+                            ? number.mid(2).toLongLong(&ok, 16)
+                            : number.toLongLong(&ok, 10);
+        if (!ok)
+            return Tr::tr("\"%1\" is not a whole number (0x before a hexadecimal one)").arg(number);
+    } else {
+        return Tr::tr("\"%1\" is no condition: write \"Y0 rises\", \"Y0 falls\" or "
+                      "\"D10 > 100\"")
+            .arg(typed);
+    }
+    const auto parsed = parseAddress(target, device.trimmed(), model);
+    if (const auto *error = std::get_if<AddressError>(&parsed))
+        return error->message;
+    trigger.device = std::get<Address>(parsed);
+    const bool bit = isBitDevice(target, trigger.device);
+    if (trigger.kind != Trigger::Kind::Compare && !bit)
+        return Tr::tr("%1 is a word: compare it with a value (\"%1 > 100\")")
+            .arg(formatAddress(target, trigger.device));
+    return trigger;
+}
+
+QString formatTrigger(const Target &target, const Trigger &trigger) {
+    const QString device = formatAddress(target, trigger.device);
+    switch (trigger.kind) {
+    case Trigger::Kind::Rises:
+        return device + QLatin1String(" rises");
+    case Trigger::Kind::Falls:
+        return device + QLatin1String(" falls");
+    case Trigger::Kind::Compare:
+        break;
+    }
+    return QStringLiteral("%1 %2 %3")
+        .arg(device, QString::fromLatin1(compareSymbol(trigger.op)))
+        .arg(trigger.value);
+}
+
+} // namespace rung::model
