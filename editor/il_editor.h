@@ -81,6 +81,7 @@ signals:
 
 protected:
     void resizeEvent(QResizeEvent *event) override;
+    void changeEvent(QEvent *event) override; // LanguageChange: its own texts again
 
 private:
     void updateCallTip();

@@ -124,6 +124,7 @@ protected:
     void wheelEvent(QWheelEvent *event) override;
     bool viewportEvent(QEvent *event) override;
     void resizeEvent(QResizeEvent *event) override;
+    void changeEvent(QEvent *event) override; // LanguageChange: its own texts again
 
 private:
     void relayout();

@@ -42,7 +42,7 @@
 <context>
     <name>rung::app::Cli</name>
     <message>
-        <location filename="../app/cli/cli.cpp" line="+43"/>
+        <location filename="../app/cli/cli.cpp" line="+45"/>
         <location line="+45"/>
         <source>unexpected argument %1</source>
         <translation>váratlan argumentum: %1</translation>
@@ -53,16 +53,16 @@
         <translation>a --to értéke il, ladder vagy project lehet</translation>
     </message>
     <message>
-        <location line="-69"/>
+        <location line="-70"/>
         <source>usage:
-  rungstudio-cli check FILE [--target vpc|vigor|cpm1|pl110] [--model M]
+  rungstudio-cli check FILE [--target %1] [--model M]
   rungstudio-cli convert FILE [--target T] [--from il|ladder|project] --to il|ladder|project [-o OUT] [--force]
   rungstudio-cli simulate FILE [--target T] --scans N [--period MS] [--set DEV=VALUE@SCAN]... --trace DEV[,DEV...]
 FILE is a listing (.il), a ladder text (.ladder) or a project (.rung).
 --lang en|hu|it: the language of the messages (else the locale&apos;s, LANG).
 Exit status: 0 no error, 1 the program has errors, 2 usage or I/O error.</source>
         <translation>használat:
-  rungstudio-cli check FILE [--target vpc|vigor|cpm1|pl110] [--model M]
+  rungstudio-cli check FILE [--target %1] [--model M]
   rungstudio-cli convert FILE [--target T] [--from il|ladder|project] --to il|ladder|project [-o OUT] [--force]
   rungstudio-cli simulate FILE [--target T] --scans N [--period MS] [--set DEV=VALUE@SCAN]... --trace DEV[,DEV...]
 A FILE utasításlista (.il), létra-szöveg (.ladder) vagy projekt (.rung).
@@ -70,7 +70,7 @@ A FILE utasításlista (.il), létra-szöveg (.ladder) vagy projekt (.rung).
 Kilépési kód: 0 nincs hiba, 1 a programban hiba van, 2 használati vagy I/O hiba.</translation>
     </message>
     <message>
-        <location line="+85"/>
+        <location line="+86"/>
         <source>nothing written: the list as typed would be lost</source>
         <translation>semmi sem íródott ki: a begépelt lista elveszne</translation>
     </message>
@@ -105,7 +105,7 @@ Kilépési kód: 0 nincs hiba, 1 a programban hiba van, 2 használati vagy I/O h
         <translation>ismeretlen parancs: %1</translation>
     </message>
     <message>
-        <location filename="../app/cli/cli_common.cpp" line="+97"/>
+        <location filename="../app/cli/cli_common.cpp" line="+98"/>
         <source>%1 needs a value</source>
         <translation>%1 után érték kell</translation>
     </message>
@@ -125,22 +125,22 @@ Kilépési kód: 0 nincs hiba, 1 a programban hiba van, 2 használati vagy I/O h
         <translation>%1 egy %2 projekt, nem %3</translation>
     </message>
     <message>
-        <location line="-86"/>
+        <location line="+23"/>
+        <source>%1: which PLC? Give --target %2 or a &quot;; target: NAME&quot; first line</source>
+        <translation>%1: melyik PLC? Adja meg: --target %2, vagy egy &quot;; target: NAME&quot; első sort</translation>
+    </message>
+    <message>
+        <location line="+6"/>
+        <source>unknown target %1 (%2)</source>
+        <translation>ismeretlen célrendszer: %1 (%2)</translation>
+    </message>
+    <message>
+        <location line="-115"/>
         <source>%1 holds an instruction list typed in Rung Studio that is not in its program: the list had errors when the project was saved, and is kept as typed under the key &quot;pendingListing&quot;; the rungs are the last valid program. Open the project in Rung Studio and fix the list.</source>
         <translation>A(z) %1 egy Rung Studióban begépelt utasításlistát tartalmaz, amely nincs benne a programjában: a lista hibás volt a projekt mentésekor, és begépelt formájában a „pendingListing” kulcs alatt maradt meg; a létrafokok az utolsó érvényes programot tartalmazzák. Nyissa meg a projektet a Rung Studióban, és javítsa ki a listát.</translation>
     </message>
     <message>
-        <location line="+110"/>
-        <source>%1: which PLC? Give --target vpc|vigor|cpm1|pl110 or a &quot;; target: NAME&quot; first line</source>
-        <translation>%1: melyik PLC? Adja meg: --target vpc|vigor|cpm1|pl110, vagy egy &quot;; target: NAME&quot; első sort</translation>
-    </message>
-    <message>
-        <location line="+7"/>
-        <source>unknown target %1 (vpc, vigor, cpm1, pl110)</source>
-        <translation>ismeretlen célrendszer: %1 (vpc, vigor, cpm1, pl110)</translation>
-    </message>
-    <message>
-        <location line="+7"/>
+        <location line="+123"/>
         <location line="+27"/>
         <source>%1 has no model %2</source>
         <translation>a(z) %1 rendszernek nincs %2 modellje</translation>
@@ -217,7 +217,7 @@ Kilépési kód: 0 nincs hiba, 1 a programban hiba van, 2 használati vagy I/O h
 <context>
     <name>rung::app::Gui</name>
     <message>
-        <location filename="../app/gui/command_line.cpp" line="+21"/>
+        <location filename="../app/gui/command_line.cpp" line="+22"/>
         <source>Ladder and instruction-list IDE for small PLCs</source>
         <translation>Létradiagram- és utasításlista-fejlesztőkörnyezet kis PLC-khez</translation>
     </message>
@@ -228,11 +228,16 @@ Kilépési kód: 0 nincs hiba, 1 a programban hiba van, 2 használati vagy I/O h
     </message>
     <message>
         <location line="+4"/>
-        <source>Target of an instruction list: vpc, vigor, cpm1, pl110</source>
-        <translation>Az utasításlista célrendszere: vpc, vigor, cpm1, pl110</translation>
+        <source>Target of an instruction list: %1</source>
+        <translation>Az utasításlista célrendszere: %1</translation>
     </message>
     <message>
-        <location line="+5"/>
+        <location line="+18"/>
+        <source>Unknown target %1: use %2</source>
+        <translation>Ismeretlen célrendszer: %1; használható: %2</translation>
+    </message>
+    <message>
+        <location line="-13"/>
         <source>Save a picture of the window and quit</source>
         <translation>Kép mentése az ablakról, majd kilépés</translation>
     </message>
@@ -242,12 +247,7 @@ Kilépési kód: 0 nincs hiba, 1 a programban hiba van, 2 használati vagy I/O h
         <translation>Egyszerre egy fájl nyitható meg</translation>
     </message>
     <message>
-        <location line="+2"/>
-        <source>Unknown target %1: use vpc, vigor, cpm1 or pl110</source>
-        <translation>Ismeretlen célrendszer: %1; használható: vpc, vigor, cpm1 vagy pl110</translation>
-    </message>
-    <message>
-        <location filename="../app/gui/application.cpp" line="+35"/>
+        <location filename="../app/gui/application.cpp" line="+37"/>
         <source>Rung Studio</source>
         <translation>Rung Studio</translation>
     </message>
@@ -278,7 +278,7 @@ Kilépési kód: 0 nincs hiba, 1 a programban hiba van, 2 használati vagy I/O h
         <translation>Figyelőlisták</translation>
     </message>
     <message>
-        <location filename="../app/gui/main_window_actions.cpp" line="+46"/>
+        <location filename="../app/gui/main_window_actions.cpp" line="+48"/>
         <source>&amp;File</source>
         <translation>&amp;Fájl</translation>
     </message>
@@ -463,12 +463,38 @@ Kilépési kód: 0 nincs hiba, 1 a programban hiba van, 2 használati vagy I/O h
         <translation>S&amp;or törlése</translation>
     </message>
     <message>
-        <location line="+61"/>
+        <location line="+59"/>
+        <source>F5 normally open contact, F6 normally closed contact, F7 coil, F8 instruction
+Shift+F5 / Shift+F6 the same contacts in parallel with the row above
+Shift+F7 / Shift+F8 rising / falling edge contact (Alt: in parallel)
+F9 horizontal wire, Shift+F9 vertical link, Ctrl+F9 / Ctrl+F10 delete them
+Type an instruction into the cell: %1
+Insert: insert a cell, Ctrl+Insert: insert a row, Shift+Insert: insert a rung
+Delete: clear, Ctrl+Delete: delete the row, Shift+Delete: delete the rung
+Ctrl+Z / Ctrl+Y: undo / redo, Ctrl+wheel: zoom, F4: check the program</source>
+        <translation>F5 záró érintkező, F6 nyitó érintkező, F7 tekercs, F8 utasítás
+Shift+F5 / Shift+F6 ugyanezek az érintkezők a fölötte lévő sorral párhuzamosan
+Shift+F7 / Shift+F8 felfutó / lefutó él érintkező (Alt: párhuzamosan)
+F9 vízszintes vezeték, Shift+F9 függőleges összekötés, Ctrl+F9 / Ctrl+F10 ezek törlése
+Utasítás beírása a cellába: %1
+Insert: cella beszúrása, Ctrl+Insert: sor beszúrása, Shift+Insert: létrafok beszúrása
+Delete: törlés, Ctrl+Delete: a sor törlése, Shift+Delete: a létrafok törlése
+Ctrl+Z / Ctrl+Y: visszavonás / mégis, Ctrl+görgő: nagyítás, F4: a program ellenőrzése</translation>
+    </message>
+    <message>
+        <location line="+10"/>
         <source>Simulation: F10 run, F11 pause, Shift+F11 stop, F12 single scan, Ctrl+Shift+F12 power cycle</source>
         <translation>Szimuláció: F10 futtatás, F11 szünet, Shift+F11 leállítás, F12 egy ciklus, Ctrl+Shift+F12 ki-bekapcsolás</translation>
     </message>
     <message>
-        <location line="+22"/>
+        <location line="+5"/>
+        <source>Rung Studio %1
+Ladder and instruction-list editor for %2.</source>
+        <translation>Rung Studio %1
+Létradiagram- és utasításlista-szerkesztő a következő PLC-khez: %2.</translation>
+    </message>
+    <message>
+        <location line="+17"/>
         <source>&amp;Undo</source>
         <translation>&amp;Visszavonás</translation>
     </message>
@@ -478,7 +504,7 @@ Kilépési kód: 0 nincs hiba, 1 a programban hiba van, 2 használati vagy I/O h
         <translation>&amp;Mégis</translation>
     </message>
     <message>
-        <location line="-167"/>
+        <location line="-175"/>
         <source>Select</source>
         <translation>Kijelölés</translation>
     </message>
@@ -540,7 +566,7 @@ Kilépési kód: 0 nincs hiba, 1 a programban hiba van, 2 használati vagy I/O h
     </message>
     <message>
         <location line="+1"/>
-        <location filename="../app/gui/main_window_tools.cpp" line="+213"/>
+        <location filename="../app/gui/main_window_tools.cpp" line="+225"/>
         <source>CSV files (*.csv)</source>
         <translation>CSV-fájlok (*.csv)</translation>
     </message>
@@ -610,45 +636,19 @@ Kilépési kód: 0 nincs hiba, 1 a programban hiba van, 2 használati vagy I/O h
         <translation>&amp;Billentyűzet...</translation>
     </message>
     <message>
-        <location line="+2"/>
+        <location line="+9"/>
         <source>Keyboard</source>
         <translation>Billentyűzet</translation>
     </message>
     <message>
-        <location line="+1"/>
-        <source>F5 normally open contact, F6 normally closed contact, F7 coil, F8 instruction
-Shift+F5 / Shift+F6 the same contacts in parallel with the row above
-Shift+F7 / Shift+F8 rising / falling edge contact (Alt: in parallel)
-F9 horizontal wire, Shift+F9 vertical link, Ctrl+F9 / Ctrl+F10 delete them
-Type an instruction into the cell: LD X0, ANI X2, OUT Y1, TMR T0 K10
-Insert: insert a cell, Ctrl+Insert: insert a row, Shift+Insert: insert a rung
-Delete: clear, Ctrl+Delete: delete the row, Shift+Delete: delete the rung
-Ctrl+Z / Ctrl+Y: undo / redo, Ctrl+wheel: zoom, F4: check the program</source>
-        <translation>F5 záró érintkező, F6 nyitó érintkező, F7 tekercs, F8 utasítás
-Shift+F5 / Shift+F6 ugyanezek az érintkezők a fölötte lévő sorral párhuzamosan
-Shift+F7 / Shift+F8 felfutó / lefutó él érintkező (Alt: párhuzamosan)
-F9 vízszintes vezeték, Shift+F9 függőleges összekötés, Ctrl+F9 / Ctrl+F10 ezek törlése
-Utasítás beírása a cellába: LD X0, ANI X2, OUT Y1, TMR T0 K10
-Insert: cella beszúrása, Ctrl+Insert: sor beszúrása, Shift+Insert: létrafok beszúrása
-Delete: törlés, Ctrl+Delete: a sor törlése, Shift+Delete: a létrafok törlése
-Ctrl+Z / Ctrl+Y: visszavonás / mégis, Ctrl+görgő: nagyítás, F4: a program ellenőrzése</translation>
-    </message>
-    <message>
-        <location line="+12"/>
+        <location line="+14"/>
         <source>&amp;About Rung Studio</source>
         <translation>A Rung Studio &amp;névjegye</translation>
     </message>
     <message>
-        <location line="+2"/>
+        <location line="+1"/>
         <source>About Rung Studio</source>
         <translation>A Rung Studio névjegye</translation>
-    </message>
-    <message>
-        <location line="+1"/>
-        <source>Rung Studio %1
-Ladder and instruction-list editor for VPC, Vigor, CPM1 and PL110.</source>
-        <translation>Rung Studio %1
-Létradiagram- és utasításlista-szerkesztő VPC, Vigor, CPM1 és PL110 PLC-khez.</translation>
     </message>
     <message>
         <location filename="../app/gui/main_window.cpp" line="-238"/>
@@ -738,7 +738,7 @@ Létradiagram- és utasításlista-szerkesztő VPC, Vigor, CPM1 és PL110 PLC-kh
         <translation>%1. létrafok, %2. sor, %3. oszlop</translation>
     </message>
     <message>
-        <location filename="../app/gui/main_window_actions.cpp" line="+18"/>
+        <location filename="../app/gui/main_window_actions.cpp" line="+20"/>
         <source>&amp;Redo %1</source>
         <extracomment>%1 is the step&apos;s label, e.g. &quot;Insert rung&quot;</extracomment>
         <translation>&amp;Mégis: %1</translation>
@@ -749,13 +749,13 @@ Létradiagram- és utasításlista-szerkesztő VPC, Vigor, CPM1 és PL110 PLC-kh
         <translation>&amp;Visszavonás: %1</translation>
     </message>
     <message>
-        <location filename="../app/gui/main_window_files.cpp" line="+62"/>
-        <location line="+6"/>
+        <location filename="../app/gui/main_window_files.cpp" line="+63"/>
+        <location line="+7"/>
         <source>Recover</source>
         <translation>Helyreállítás</translation>
     </message>
     <message>
-        <location line="-11"/>
+        <location line="-12"/>
         <source>Rung Studio was not closed properly last time. Recover the unsaved program?</source>
         <translation>A Rung Studio legutóbb nem záródott be szabályosan. Helyreállítja a nem mentett programot?</translation>
     </message>
@@ -765,7 +765,7 @@ Létradiagram- és utasításlista-szerkesztő VPC, Vigor, CPM1 és PL110 PLC-kh
         <translation>A Rung Studio legutóbb nem záródott be szabályosan. Helyreállítja a(z) %1 nem mentett módosításait?</translation>
     </message>
     <message>
-        <location line="+57"/>
+        <location line="+58"/>
         <source>Cannot open the file</source>
         <translation>A fájl nem nyitható meg</translation>
     </message>
@@ -795,12 +795,12 @@ Létradiagram- és utasításlista-szerkesztő VPC, Vigor, CPM1 és PL110 PLC-kh
         <translation>Mentve: %1, az utasításlistával úgy, ahogy begépelte; hibás, ezért a létradiagram az utolsó érvényes programot mutatja, amíg a hibákat ki nem javítja</translation>
     </message>
     <message>
-        <location line="+13"/>
+        <location line="+12"/>
         <source>Unsaved changes</source>
         <translation>Nem mentett változások</translation>
     </message>
     <message>
-        <location line="+0"/>
+        <location line="+1"/>
         <source>Save the changes to the program?</source>
         <translation>Menti a program változásait?</translation>
     </message>
@@ -820,12 +820,12 @@ Létradiagram- és utasításlista-szerkesztő VPC, Vigor, CPM1 és PL110 PLC-kh
         <translation>Modell:</translation>
     </message>
     <message>
-        <location line="+21"/>
+        <location line="+16"/>
         <source>Open</source>
         <translation>Megnyitás</translation>
     </message>
     <message>
-        <location line="+21"/>
+        <location line="+20"/>
         <source>Replace File</source>
         <translation>Fájl cseréje</translation>
     </message>
@@ -873,17 +873,17 @@ Létradiagram- és utasításlista-szerkesztő VPC, Vigor, CPM1 és PL110 PLC-kh
         <translation>Az exportálás nem sikerült</translation>
     </message>
     <message>
-        <location line="-203"/>
+        <location line="-197"/>
         <source>%1, line %2, column %3: %4</source>
         <translation>%1, %2. sor, %3. oszlop: %4</translation>
     </message>
     <message>
-        <location line="+120"/>
+        <location line="+115"/>
         <source>Rung Studio projects (*.rung);;Instruction lists (*.il *.txt);;Ladder texts (*.ladder)</source>
         <translation>Rung Studio projektek (*.rung);;Utasításlisták (*.il *.txt);;Létraszövegek (*.ladder)</translation>
     </message>
     <message>
-        <location line="+78"/>
+        <location line="+77"/>
         <source>Export Ladder</source>
         <translation>Létradiagram exportálása</translation>
     </message>
@@ -893,7 +893,7 @@ Létradiagram- és utasításlista-szerkesztő VPC, Vigor, CPM1 és PL110 PLC-kh
         <translation>A példa nem nyitható meg</translation>
     </message>
     <message>
-        <location filename="../app/gui/main_window_tools.cpp" line="-149"/>
+        <location filename="../app/gui/main_window_tools.cpp" line="-161"/>
         <source>Cut rungs</source>
         <translation>Létrafokok kivágása</translation>
     </message>
@@ -940,14 +940,14 @@ Létradiagram- és utasításlista-szerkesztő VPC, Vigor, CPM1 és PL110 PLC-kh
         <translation>Operandus:</translation>
     </message>
     <message>
-        <location line="+29"/>
+        <location line="+28"/>
         <location line="+3"/>
-        <location line="+7"/>
+        <location line="+6"/>
         <source>Replace Device</source>
         <translation>Operandus cseréje</translation>
     </message>
     <message>
-        <location line="-10"/>
+        <location line="-9"/>
         <source>Replace the device:</source>
         <translation>A cserélendő operandus:</translation>
     </message>
@@ -957,7 +957,7 @@ Létradiagram- és utasításlista-szerkesztő VPC, Vigor, CPM1 és PL110 PLC-kh
         <translation>erre:</translation>
     </message>
     <message numerus="yes">
-        <location line="+9"/>
+        <location line="+8"/>
         <source>%n place(s) changed</source>
         <translation>
             <numerusform>%n helyen történt módosítás</numerusform>
@@ -969,13 +969,26 @@ Létradiagram- és utasításlista-szerkesztő VPC, Vigor, CPM1 és PL110 PLC-kh
         <translation>%1 cseréje erre: %2</translation>
     </message>
     <message>
+        <location line="+29"/>
+        <source>(no device) %1</source>
+        <translation>(nincs operandus) %1</translation>
+    </message>
+    <message numerus="yes">
+        <location line="+3"/>
+        <source>%n row(s) of the symbol table name no device of this PLC and are left out of the file: %1. Export the other symbols?</source>
+        <translation>
+            <numerusform>A szimbólumtábla %n sora nem ennek a PLC-nek az operandusát adja meg, ezért kimarad a fájlból: %1. Exportálja a többi szimbólumot?</numerusform>
+        </translation>
+    </message>
+    <message>
         <location filename="../app/gui/main_window.cpp" line="+87"/>
-        <location filename="../app/gui/main_window_tools.cpp" line="+6"/>
+        <location filename="../app/gui/main_window_tools.cpp" line="-26"/>
         <source>Cross Reference</source>
         <translation>Kereszthivatkozás</translation>
     </message>
     <message>
-        <location filename="../app/gui/main_window_tools.cpp" line="+19"/>
+        <location filename="../app/gui/main_window_tools.cpp" line="+25"/>
+        <location line="+8"/>
         <source>Export Symbols</source>
         <translation>Szimbólumok exportálása</translation>
     </message>
@@ -1219,7 +1232,7 @@ Létradiagram- és utasításlista-szerkesztő VPC, Vigor, CPM1 és PL110 PLC-kh
 <context>
     <name>rung::app::SymbolTable</name>
     <message>
-        <location filename="../app/gui/symbol_table.cpp" line="+37"/>
+        <location filename="../app/gui/symbol_table.cpp" line="+36"/>
         <source>Device</source>
         <translation>Operandus</translation>
     </message>
@@ -1234,7 +1247,7 @@ Létradiagram- és utasításlista-szerkesztő VPC, Vigor, CPM1 és PL110 PLC-kh
         <translation>Megjegyzés</translation>
     </message>
     <message>
-        <location line="+82"/>
+        <location line="+89"/>
         <source>%1: %2</source>
         <translation>%1: %2</translation>
     </message>
@@ -1733,22 +1746,17 @@ Létradiagram- és utasításlista-szerkesztő VPC, Vigor, CPM1 és PL110 PLC-kh
 <context>
     <name>rung::editor::CrossReferenceView</name>
     <message>
-        <location filename="../editor/cross_reference_view.cpp" line="+50"/>
-        <source>Device or prefix (X0, X)</source>
-        <translation>Operandus vagy előtag (X0, X)</translation>
+        <location filename="../editor/cross_reference_view.cpp" line="+61"/>
+        <source>Device or prefix (%1, %2)</source>
+        <translation>Operandus vagy előtag (%1, %2)</translation>
     </message>
     <message>
         <location line="+1"/>
-        <source>Device or prefix (X0, X); empty: every device</source>
-        <translation>Operandus vagy előtag (X0, X); üresen: minden operandus</translation>
+        <source>Device or prefix (%1, %2); empty: every device</source>
+        <translation>Operandus vagy előtag (%1, %2); üresen: minden operandus</translation>
     </message>
     <message>
-        <location line="+1"/>
-        <source>Device / rung</source>
-        <translation>Operandus / létrafok</translation>
-    </message>
-    <message>
-        <location line="+0"/>
+        <location line="+3"/>
         <source>Step</source>
         <translation>Lépés</translation>
     </message>
@@ -1763,7 +1771,12 @@ Létradiagram- és utasításlista-szerkesztő VPC, Vigor, CPM1 és PL110 PLC-kh
         <translation>Utasítás</translation>
     </message>
     <message>
-        <location line="+83"/>
+        <location line="+0"/>
+        <source>Device</source>
+        <translation>Operandus</translation>
+    </message>
+    <message>
+        <location line="+117"/>
         <source>contact</source>
         <translation>érintkező</translation>
     </message>
@@ -1796,7 +1809,7 @@ Létradiagram- és utasításlista-szerkesztő VPC, Vigor, CPM1 és PL110 PLC-kh
         <translation>Szimbólumok szerkesztése</translation>
     </message>
     <message>
-        <location line="+123"/>
+        <location line="+190"/>
         <source>Insert rung</source>
         <translation>Létrafok beszúrása</translation>
     </message>
@@ -1813,17 +1826,32 @@ Létradiagram- és utasításlista-szerkesztő VPC, Vigor, CPM1 és PL110 PLC-kh
         </translation>
     </message>
     <message>
-        <location line="+45"/>
+        <location line="+59"/>
         <source>This line stood for a rung of another program: delete the line or undo the paste</source>
         <translation>Ez a sor egy másik program létrafokát jelölte: törölje a sort, vagy vonja vissza a beillesztést</translation>
     </message>
     <message>
-        <location line="+54"/>
+        <location line="+59"/>
         <source>Edit instruction list</source>
         <translation>Utasításlista szerkesztése</translation>
     </message>
     <message>
-        <location line="+55"/>
+        <location line="+29"/>
+        <source>This line keeps %1 (row %2, column %3) of rung %4, but no rung follows it: delete the line to let the contact go, or undo</source>
+        <translation>Ez a sor a(z) %4. létrafok %1 érintkezőjét (%2. sor, %3. oszlop) őrzi, de nem követi létrafok: törölje a sort, és az érintkező elmarad, vagy vonja vissza a szerkesztést</translation>
+    </message>
+    <message>
+        <location line="+46"/>
+        <source>%1 (row %2, column %3) of rung %4 finds no place in the rung typed below this line: delete the line to let it go, or undo</source>
+        <translation>A(z) %4. létrafok %1 érintkezője (%2. sor, %3. oszlop) nem fér el a sor alatt beírt létrafokban: törölje a sort, és az érintkező elmarad, vagy vonja vissza a szerkesztést</translation>
+    </message>
+    <message>
+        <location line="+60"/>
+        <source>Rung %1: %2 (row %3, column %4) is on no path to an output, so the list leaves it out; the ladder keeps it while this line stays.</source>
+        <translation>A(z) %1. létrafok: %2 (%3. sor, %4. oszlop) nincs rajta egyetlen kimenethez vezető áramúton sem, ezért a lista kihagyja; a létradiagram megtartja, amíg ez a sor megvan.</translation>
+    </message>
+    <message>
+        <location line="+26"/>
         <source>it has nothing to list yet</source>
         <translation>még nincs benne semmi, ami a listába kerülhetne</translation>
     </message>
@@ -1837,6 +1865,7 @@ Létradiagram- és utasításlista-szerkesztő VPC, Vigor, CPM1 és PL110 PLC-kh
     <name>rung::editor::IlEditor</name>
     <message>
         <location filename="../editor/il_editor.cpp" line="+247"/>
+        <location line="+311"/>
         <source>Instruction list</source>
         <translation>Utasításlista</translation>
     </message>
@@ -1844,7 +1873,7 @@ Létradiagram- és utasításlista-szerkesztő VPC, Vigor, CPM1 és PL110 PLC-kh
 <context>
     <name>rung::editor::IlLexer</name>
     <message>
-        <location line="-187"/>
+        <location line="-498"/>
         <source>Default</source>
         <translation>Alapértelmezett</translation>
     </message>
@@ -1887,22 +1916,23 @@ Létradiagram- és utasításlista-szerkesztő VPC, Vigor, CPM1 és PL110 PLC-kh
 <context>
     <name>rung::editor::LadderView</name>
     <message>
-        <location filename="../editor/ladder_view.cpp" line="+37"/>
+        <location filename="../editor/ladder_view.cpp" line="+38"/>
+        <location line="+566"/>
         <source>Ladder diagram</source>
         <translation>Létradiagram</translation>
     </message>
     <message>
-        <location line="+94"/>
+        <location line="-472"/>
         <source>Edit rung comment</source>
         <translation>Létrafok megjegyzésének szerkesztése</translation>
     </message>
     <message>
         <location line="+167"/>
-        <source>Type one instruction, for example &quot;%1 X0&quot;</source>
-        <translation>Egy utasítást írjon be, például: &quot;%1 X0&quot;</translation>
+        <source>Type one instruction, for example &quot;%1 %2&quot;</source>
+        <translation>Egy utasítást írjon be, például: &quot;%1 %2&quot;</translation>
     </message>
     <message>
-        <location line="+17"/>
+        <location line="+18"/>
         <source>%1 is drawn with vertical links, not typed into a cell</source>
         <translation>%1 függőleges összekötésekkel rajzolható, cellába nem írható</translation>
     </message>
@@ -2293,21 +2323,31 @@ Létradiagram- és utasításlista-szerkesztő VPC, Vigor, CPM1 és PL110 PLC-kh
     </message>
     <message>
         <location line="+5"/>
-        <source>%1: # constants belong to CPM1 listings</source>
-        <translation>%1: a # konstansok a CPM1 utasításlistákhoz tartoznak</translation>
+        <source>write a constant as K (decimal) or H (hexadecimal)</source>
+        <translation>a konstanst K (decimális) vagy H (hexadecimális) előtaggal kell írni</translation>
     </message>
     <message>
-        <location line="+5"/>
-        <source>%1: write a constant as K (decimal) or H (hexadecimal)</source>
-        <translation>%1: a konstanst K (decimális) vagy H (hexadecimális) előtaggal kell írni</translation>
+        <location line="+2"/>
+        <source>write a constant with # (e.g. #0150)</source>
+        <translation>a konstanst # jellel kell írni (pl. #0150)</translation>
     </message>
     <message>
         <location line="+1"/>
-        <source>%1: write a constant with # (e.g. #0150)</source>
-        <translation>%1: a konstanst # jellel kell írni (pl. #0150)</translation>
+        <source>write a constant as a plain number (e.g. 150)</source>
+        <translation>a konstanst egyszerű számként kell írni (pl. 150)</translation>
     </message>
     <message>
-        <location line="+9"/>
+        <location line="+6"/>
+        <source>%1: %2 has no # constants; %3</source>
+        <translation>%1: a(z) %2 nem ismer # konstanst; %3</translation>
+    </message>
+    <message>
+        <location line="+3"/>
+        <source>%1: %2</source>
+        <translation>%1: %2</translation>
+    </message>
+    <message>
+        <location line="+8"/>
         <source>%1: digits are expected</source>
         <translation>%1: számjegyek kellenek</translation>
     </message>
@@ -2843,7 +2883,7 @@ Létradiagram- és utasításlista-szerkesztő VPC, Vigor, CPM1 és PL110 PLC-kh
 <context>
     <name>rung::model::LadderText</name>
     <message>
-        <location filename="../model/ladder/ladder_text.cpp" line="+183"/>
+        <location filename="../model/ladder/ladder_text.cpp" line="+186"/>
         <source>A ladder text starts with &quot;LADDER &lt;target&gt; WIDTH &lt;n&gt;&quot;</source>
         <translation>A létra-szöveg így kezdődik: &quot;LADDER &lt;target&gt; WIDTH &lt;n&gt;&quot;</translation>
     </message>
@@ -2874,17 +2914,17 @@ Létradiagram- és utasításlista-szerkesztő VPC, Vigor, CPM1 és PL110 PLC-kh
         <translation>A sor a bal oldali &apos;|&apos; gyűjtősínnel kezdődik</translation>
     </message>
     <message>
-        <location line="+14"/>
-        <source>A cell is empty, a wire, or a contact &quot;-[ X0 ]-&quot;</source>
-        <translation>A cella üres, vezeték, vagy egy &quot;-[ X0 ]-&quot; érintkező</translation>
+        <location line="+15"/>
+        <source>A cell is empty, a wire, or a contact &quot;-[ %1 ]-&quot;</source>
+        <translation>A cella üres, vezeték, vagy egy &quot;-[ %1 ]-&quot; érintkező</translation>
     </message>
     <message>
-        <location line="+16"/>
-        <source>An output is written in parentheses: (OUT Y0)</source>
-        <translation>A kimenetet zárójelben kell írni: (OUT Y0)</translation>
+        <location line="+19"/>
+        <source>An output is written in parentheses: (%1 %2)</source>
+        <translation>A kimenetet zárójelben kell írni: (%1 %2)</translation>
     </message>
     <message>
-        <location line="+6"/>
+        <location line="+7"/>
         <source>(^) marks a further input of a box above it</source>
         <translation>A (^) a fölötte álló funkcióblokk további bemenetét jelöli</translation>
     </message>

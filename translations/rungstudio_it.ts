@@ -42,7 +42,7 @@
 <context>
     <name>rung::app::Cli</name>
     <message>
-        <location filename="../app/cli/cli.cpp" line="+43"/>
+        <location filename="../app/cli/cli.cpp" line="+45"/>
         <location line="+45"/>
         <source>unexpected argument %1</source>
         <translation>argomento non previsto: %1</translation>
@@ -53,16 +53,16 @@
         <translation>--to deve essere il, ladder o project</translation>
     </message>
     <message>
-        <location line="-69"/>
+        <location line="-70"/>
         <source>usage:
-  rungstudio-cli check FILE [--target vpc|vigor|cpm1|pl110] [--model M]
+  rungstudio-cli check FILE [--target %1] [--model M]
   rungstudio-cli convert FILE [--target T] [--from il|ladder|project] --to il|ladder|project [-o OUT] [--force]
   rungstudio-cli simulate FILE [--target T] --scans N [--period MS] [--set DEV=VALUE@SCAN]... --trace DEV[,DEV...]
 FILE is a listing (.il), a ladder text (.ladder) or a project (.rung).
 --lang en|hu|it: the language of the messages (else the locale&apos;s, LANG).
 Exit status: 0 no error, 1 the program has errors, 2 usage or I/O error.</source>
         <translation>uso:
-  rungstudio-cli check FILE [--target vpc|vigor|cpm1|pl110] [--model M]
+  rungstudio-cli check FILE [--target %1] [--model M]
   rungstudio-cli convert FILE [--target T] [--from il|ladder|project] --to il|ladder|project [-o OUT] [--force]
   rungstudio-cli simulate FILE [--target T] --scans N [--period MS] [--set DEV=VALUE@SCAN]... --trace DEV[,DEV...]
 FILE è una lista istruzioni (.il), un testo ladder (.ladder) o un progetto (.rung).
@@ -70,7 +70,7 @@ FILE è una lista istruzioni (.il), un testo ladder (.ladder) o un progetto (.ru
 Codice di uscita: 0 nessun errore, 1 il programma contiene errori, 2 errore di utilizzo o di I/O.</translation>
     </message>
     <message>
-        <location line="+85"/>
+        <location line="+86"/>
         <source>nothing written: the list as typed would be lost</source>
         <translation>non è stato scritto nulla: la lista digitata andrebbe persa</translation>
     </message>
@@ -105,7 +105,7 @@ Codice di uscita: 0 nessun errore, 1 il programma contiene errori, 2 errore di u
         <translation>comando sconosciuto: %1</translation>
     </message>
     <message>
-        <location filename="../app/cli/cli_common.cpp" line="+97"/>
+        <location filename="../app/cli/cli_common.cpp" line="+98"/>
         <source>%1 needs a value</source>
         <translation>%1 richiede un valore</translation>
     </message>
@@ -125,22 +125,22 @@ Codice di uscita: 0 nessun errore, 1 il programma contiene errori, 2 errore di u
         <translation>%1 è un progetto %2, non %3</translation>
     </message>
     <message>
-        <location line="-86"/>
+        <location line="+23"/>
+        <source>%1: which PLC? Give --target %2 or a &quot;; target: NAME&quot; first line</source>
+        <translation>%1: quale PLC? Specificare --target %2 oppure una prima riga &quot;; target: NAME&quot;</translation>
+    </message>
+    <message>
+        <location line="+6"/>
+        <source>unknown target %1 (%2)</source>
+        <translation>famiglia PLC sconosciuta: %1 (%2)</translation>
+    </message>
+    <message>
+        <location line="-115"/>
         <source>%1 holds an instruction list typed in Rung Studio that is not in its program: the list had errors when the project was saved, and is kept as typed under the key &quot;pendingListing&quot;; the rungs are the last valid program. Open the project in Rung Studio and fix the list.</source>
         <translation>%1 contiene una lista istruzioni digitata in Rung Studio che non è nel suo programma: la lista conteneva errori quando il progetto è stato salvato, ed è conservata così come digitata sotto la chiave &quot;pendingListing&quot;; i segmenti sono l&apos;ultimo programma valido. Aprire il progetto in Rung Studio e correggere la lista.</translation>
     </message>
     <message>
-        <location line="+110"/>
-        <source>%1: which PLC? Give --target vpc|vigor|cpm1|pl110 or a &quot;; target: NAME&quot; first line</source>
-        <translation>%1: quale PLC? Specificare --target vpc|vigor|cpm1|pl110 oppure una prima riga &quot;; target: NAME&quot;</translation>
-    </message>
-    <message>
-        <location line="+7"/>
-        <source>unknown target %1 (vpc, vigor, cpm1, pl110)</source>
-        <translation>famiglia PLC sconosciuta: %1 (vpc, vigor, cpm1, pl110)</translation>
-    </message>
-    <message>
-        <location line="+7"/>
+        <location line="+123"/>
         <location line="+27"/>
         <source>%1 has no model %2</source>
         <translation>%1 non ha il modello %2</translation>
@@ -217,7 +217,7 @@ Codice di uscita: 0 nessun errore, 1 il programma contiene errori, 2 errore di u
 <context>
     <name>rung::app::Gui</name>
     <message>
-        <location filename="../app/gui/command_line.cpp" line="+21"/>
+        <location filename="../app/gui/command_line.cpp" line="+22"/>
         <source>Ladder and instruction-list IDE for small PLCs</source>
         <translation>IDE ladder e lista istruzioni per PLC compatti</translation>
     </message>
@@ -228,11 +228,16 @@ Codice di uscita: 0 nessun errore, 1 il programma contiene errori, 2 errore di u
     </message>
     <message>
         <location line="+4"/>
-        <source>Target of an instruction list: vpc, vigor, cpm1, pl110</source>
-        <translation>Famiglia PLC della lista istruzioni: vpc, vigor, cpm1, pl110</translation>
+        <source>Target of an instruction list: %1</source>
+        <translation>Famiglia PLC della lista istruzioni: %1</translation>
     </message>
     <message>
-        <location line="+5"/>
+        <location line="+18"/>
+        <source>Unknown target %1: use %2</source>
+        <translation>Famiglia PLC sconosciuta: %1; usare %2</translation>
+    </message>
+    <message>
+        <location line="-13"/>
         <source>Save a picture of the window and quit</source>
         <translation>Salva un&apos;immagine della finestra ed esce</translation>
     </message>
@@ -242,12 +247,7 @@ Codice di uscita: 0 nessun errore, 1 il programma contiene errori, 2 errore di u
         <translation>Aprire un solo file alla volta</translation>
     </message>
     <message>
-        <location line="+2"/>
-        <source>Unknown target %1: use vpc, vigor, cpm1 or pl110</source>
-        <translation>Famiglia PLC sconosciuta: %1; usare vpc, vigor, cpm1 o pl110</translation>
-    </message>
-    <message>
-        <location filename="../app/gui/application.cpp" line="+35"/>
+        <location filename="../app/gui/application.cpp" line="+37"/>
         <source>Rung Studio</source>
         <translation>Rung Studio</translation>
     </message>
@@ -278,7 +278,7 @@ Codice di uscita: 0 nessun errore, 1 il programma contiene errori, 2 errore di u
         <translation>Liste di osservazione</translation>
     </message>
     <message>
-        <location filename="../app/gui/main_window_actions.cpp" line="+46"/>
+        <location filename="../app/gui/main_window_actions.cpp" line="+48"/>
         <source>&amp;File</source>
         <translation>&amp;File</translation>
     </message>
@@ -463,12 +463,38 @@ Codice di uscita: 0 nessun errore, 1 il programma contiene errori, 2 errore di u
         <translation>E&amp;limina riga</translation>
     </message>
     <message>
-        <location line="+61"/>
+        <location line="+59"/>
+        <source>F5 normally open contact, F6 normally closed contact, F7 coil, F8 instruction
+Shift+F5 / Shift+F6 the same contacts in parallel with the row above
+Shift+F7 / Shift+F8 rising / falling edge contact (Alt: in parallel)
+F9 horizontal wire, Shift+F9 vertical link, Ctrl+F9 / Ctrl+F10 delete them
+Type an instruction into the cell: %1
+Insert: insert a cell, Ctrl+Insert: insert a row, Shift+Insert: insert a rung
+Delete: clear, Ctrl+Delete: delete the row, Shift+Delete: delete the rung
+Ctrl+Z / Ctrl+Y: undo / redo, Ctrl+wheel: zoom, F4: check the program</source>
+        <translation>F5 contatto NA, F6 contatto NC, F7 bobina, F8 istruzione
+Shift+F5 / Shift+F6 gli stessi contatti in parallelo alla riga superiore
+Shift+F7 / Shift+F8 contatto su fronte di salita / di discesa (Alt: in parallelo)
+F9 collegamento orizzontale, Shift+F9 collegamento verticale, Ctrl+F9 / Ctrl+F10 li eliminano
+Digitare un&apos;istruzione nella cella: %1
+Insert: inserisce una cella, Ctrl+Insert: inserisce una riga, Shift+Insert: inserisce un segmento
+Delete: cancella, Ctrl+Delete: elimina la riga, Shift+Delete: elimina il segmento
+Ctrl+Z / Ctrl+Y: annulla / ripeti, Ctrl+rotellina: zoom, F4: verifica il programma</translation>
+    </message>
+    <message>
+        <location line="+10"/>
         <source>Simulation: F10 run, F11 pause, Shift+F11 stop, F12 single scan, Ctrl+Shift+F12 power cycle</source>
         <translation>Simulazione: F10 esegui, F11 pausa, Shift+F11 stop, F12 singola scansione, Ctrl+Shift+F12 spegni e riaccendi</translation>
     </message>
     <message>
-        <location line="+22"/>
+        <location line="+5"/>
+        <source>Rung Studio %1
+Ladder and instruction-list editor for %2.</source>
+        <translation>Rung Studio %1
+Editor di schemi ladder e liste istruzioni per %2.</translation>
+    </message>
+    <message>
+        <location line="+17"/>
         <source>&amp;Undo</source>
         <translation>&amp;Annulla</translation>
     </message>
@@ -478,7 +504,7 @@ Codice di uscita: 0 nessun errore, 1 il programma contiene errori, 2 errore di u
         <translation>&amp;Ripeti</translation>
     </message>
     <message>
-        <location line="-167"/>
+        <location line="-175"/>
         <source>Select</source>
         <translation>Seleziona</translation>
     </message>
@@ -540,7 +566,7 @@ Codice di uscita: 0 nessun errore, 1 il programma contiene errori, 2 errore di u
     </message>
     <message>
         <location line="+1"/>
-        <location filename="../app/gui/main_window_tools.cpp" line="+213"/>
+        <location filename="../app/gui/main_window_tools.cpp" line="+225"/>
         <source>CSV files (*.csv)</source>
         <translation>File CSV (*.csv)</translation>
     </message>
@@ -610,45 +636,19 @@ Codice di uscita: 0 nessun errore, 1 il programma contiene errori, 2 errore di u
         <translation>&amp;Tastiera...</translation>
     </message>
     <message>
-        <location line="+2"/>
+        <location line="+9"/>
         <source>Keyboard</source>
         <translation>Tastiera</translation>
     </message>
     <message>
-        <location line="+1"/>
-        <source>F5 normally open contact, F6 normally closed contact, F7 coil, F8 instruction
-Shift+F5 / Shift+F6 the same contacts in parallel with the row above
-Shift+F7 / Shift+F8 rising / falling edge contact (Alt: in parallel)
-F9 horizontal wire, Shift+F9 vertical link, Ctrl+F9 / Ctrl+F10 delete them
-Type an instruction into the cell: LD X0, ANI X2, OUT Y1, TMR T0 K10
-Insert: insert a cell, Ctrl+Insert: insert a row, Shift+Insert: insert a rung
-Delete: clear, Ctrl+Delete: delete the row, Shift+Delete: delete the rung
-Ctrl+Z / Ctrl+Y: undo / redo, Ctrl+wheel: zoom, F4: check the program</source>
-        <translation>F5 contatto NA, F6 contatto NC, F7 bobina, F8 istruzione
-Shift+F5 / Shift+F6 gli stessi contatti in parallelo alla riga superiore
-Shift+F7 / Shift+F8 contatto su fronte di salita / di discesa (Alt: in parallelo)
-F9 collegamento orizzontale, Shift+F9 collegamento verticale, Ctrl+F9 / Ctrl+F10 li eliminano
-Digitare un&apos;istruzione nella cella: LD X0, ANI X2, OUT Y1, TMR T0 K10
-Insert: inserisce una cella, Ctrl+Insert: inserisce una riga, Shift+Insert: inserisce un segmento
-Delete: cancella, Ctrl+Delete: elimina la riga, Shift+Delete: elimina il segmento
-Ctrl+Z / Ctrl+Y: annulla / ripeti, Ctrl+rotellina: zoom, F4: verifica il programma</translation>
-    </message>
-    <message>
-        <location line="+12"/>
+        <location line="+14"/>
         <source>&amp;About Rung Studio</source>
         <translation>&amp;Informazioni su Rung Studio</translation>
     </message>
     <message>
-        <location line="+2"/>
+        <location line="+1"/>
         <source>About Rung Studio</source>
         <translation>Informazioni su Rung Studio</translation>
-    </message>
-    <message>
-        <location line="+1"/>
-        <source>Rung Studio %1
-Ladder and instruction-list editor for VPC, Vigor, CPM1 and PL110.</source>
-        <translation>Rung Studio %1
-Editor di schemi ladder e liste istruzioni per VPC, Vigor, CPM1 e PL110.</translation>
     </message>
     <message>
         <location filename="../app/gui/main_window.cpp" line="-238"/>
@@ -740,7 +740,7 @@ Editor di schemi ladder e liste istruzioni per VPC, Vigor, CPM1 e PL110.</transl
         <translation>Segmento %1, riga %2, colonna %3</translation>
     </message>
     <message>
-        <location filename="../app/gui/main_window_actions.cpp" line="+18"/>
+        <location filename="../app/gui/main_window_actions.cpp" line="+20"/>
         <source>&amp;Redo %1</source>
         <extracomment>%1 is the step&apos;s label, e.g. &quot;Insert rung&quot;</extracomment>
         <translation>&amp;Ripeti %1</translation>
@@ -751,13 +751,13 @@ Editor di schemi ladder e liste istruzioni per VPC, Vigor, CPM1 e PL110.</transl
         <translation>&amp;Annulla %1</translation>
     </message>
     <message>
-        <location filename="../app/gui/main_window_files.cpp" line="+62"/>
-        <location line="+6"/>
+        <location filename="../app/gui/main_window_files.cpp" line="+63"/>
+        <location line="+7"/>
         <source>Recover</source>
         <translation>Ripristino</translation>
     </message>
     <message>
-        <location line="-11"/>
+        <location line="-12"/>
         <source>Rung Studio was not closed properly last time. Recover the unsaved program?</source>
         <translation>Rung Studio non è stato chiuso correttamente l&apos;ultima volta. Ripristinare il programma non salvato?</translation>
     </message>
@@ -767,7 +767,7 @@ Editor di schemi ladder e liste istruzioni per VPC, Vigor, CPM1 e PL110.</transl
         <translation>Rung Studio non è stato chiuso correttamente l&apos;ultima volta. Ripristinare le modifiche non salvate di %1?</translation>
     </message>
     <message>
-        <location line="+57"/>
+        <location line="+58"/>
         <source>Cannot open the file</source>
         <translation>Impossibile aprire il file</translation>
     </message>
@@ -797,12 +797,12 @@ Editor di schemi ladder e liste istruzioni per VPC, Vigor, CPM1 e PL110.</transl
         <translation>%1 salvato con la lista istruzioni così come è stata scritta; contiene errori, quindi lo schema ladder mantiene l&apos;ultimo programma valido finché non vengono corretti</translation>
     </message>
     <message>
-        <location line="+13"/>
+        <location line="+12"/>
         <source>Unsaved changes</source>
         <translation>Modifiche non salvate</translation>
     </message>
     <message>
-        <location line="+0"/>
+        <location line="+1"/>
         <source>Save the changes to the program?</source>
         <translation>Salvare le modifiche al programma?</translation>
     </message>
@@ -822,12 +822,12 @@ Editor di schemi ladder e liste istruzioni per VPC, Vigor, CPM1 e PL110.</transl
         <translation>Modello:</translation>
     </message>
     <message>
-        <location line="+21"/>
+        <location line="+16"/>
         <source>Open</source>
         <translation>Apri</translation>
     </message>
     <message>
-        <location line="+21"/>
+        <location line="+20"/>
         <source>Replace File</source>
         <translation>Sostituisci file</translation>
     </message>
@@ -875,17 +875,17 @@ Editor di schemi ladder e liste istruzioni per VPC, Vigor, CPM1 e PL110.</transl
         <translation>Impossibile esportare</translation>
     </message>
     <message>
-        <location line="-203"/>
+        <location line="-197"/>
         <source>%1, line %2, column %3: %4</source>
         <translation>%1, riga %2, colonna %3: %4</translation>
     </message>
     <message>
-        <location line="+120"/>
+        <location line="+115"/>
         <source>Rung Studio projects (*.rung);;Instruction lists (*.il *.txt);;Ladder texts (*.ladder)</source>
         <translation>Progetti Rung Studio (*.rung);;Liste istruzioni (*.il *.txt);;Testi ladder (*.ladder)</translation>
     </message>
     <message>
-        <location line="+78"/>
+        <location line="+77"/>
         <source>Export Ladder</source>
         <translation>Esporta schema ladder</translation>
     </message>
@@ -895,7 +895,7 @@ Editor di schemi ladder e liste istruzioni per VPC, Vigor, CPM1 e PL110.</transl
         <translation>Impossibile aprire l&apos;esempio</translation>
     </message>
     <message>
-        <location filename="../app/gui/main_window_tools.cpp" line="-149"/>
+        <location filename="../app/gui/main_window_tools.cpp" line="-161"/>
         <source>Cut rungs</source>
         <translation>Taglia segmenti</translation>
     </message>
@@ -943,14 +943,14 @@ Editor di schemi ladder e liste istruzioni per VPC, Vigor, CPM1 e PL110.</transl
         <translation>Operando:</translation>
     </message>
     <message>
-        <location line="+29"/>
+        <location line="+28"/>
         <location line="+3"/>
-        <location line="+7"/>
+        <location line="+6"/>
         <source>Replace Device</source>
         <translation>Sostituisci operando</translation>
     </message>
     <message>
-        <location line="-10"/>
+        <location line="-9"/>
         <source>Replace the device:</source>
         <translation>Sostituisci l&apos;operando:</translation>
     </message>
@@ -960,7 +960,7 @@ Editor di schemi ladder e liste istruzioni per VPC, Vigor, CPM1 e PL110.</transl
         <translation>con:</translation>
     </message>
     <message numerus="yes">
-        <location line="+9"/>
+        <location line="+8"/>
         <source>%n place(s) changed</source>
         <translation>
             <numerusform>%n occorrenza modificata</numerusform>
@@ -973,13 +973,27 @@ Editor di schemi ladder e liste istruzioni per VPC, Vigor, CPM1 e PL110.</transl
         <translation>Sostituisci %1 con %2</translation>
     </message>
     <message>
+        <location line="+29"/>
+        <source>(no device) %1</source>
+        <translation>(nessun operando) %1</translation>
+    </message>
+    <message numerus="yes">
+        <location line="+3"/>
+        <source>%n row(s) of the symbol table name no device of this PLC and are left out of the file: %1. Export the other symbols?</source>
+        <translation>
+            <numerusform>%n riga della tabella dei simboli non indica un operando di questo PLC e resta fuori dal file: %1. Esportare gli altri simboli?</numerusform>
+            <numerusform>%n righe della tabella dei simboli non indicano un operando di questo PLC e restano fuori dal file: %1. Esportare gli altri simboli?</numerusform>
+        </translation>
+    </message>
+    <message>
         <location filename="../app/gui/main_window.cpp" line="+87"/>
-        <location filename="../app/gui/main_window_tools.cpp" line="+6"/>
+        <location filename="../app/gui/main_window_tools.cpp" line="-26"/>
         <source>Cross Reference</source>
         <translation>Riferimenti incrociati</translation>
     </message>
     <message>
-        <location filename="../app/gui/main_window_tools.cpp" line="+19"/>
+        <location filename="../app/gui/main_window_tools.cpp" line="+25"/>
+        <location line="+8"/>
         <source>Export Symbols</source>
         <translation>Esporta simboli</translation>
     </message>
@@ -1224,7 +1238,7 @@ Editor di schemi ladder e liste istruzioni per VPC, Vigor, CPM1 e PL110.</transl
 <context>
     <name>rung::app::SymbolTable</name>
     <message>
-        <location filename="../app/gui/symbol_table.cpp" line="+37"/>
+        <location filename="../app/gui/symbol_table.cpp" line="+36"/>
         <source>Device</source>
         <translation>Operando</translation>
     </message>
@@ -1239,7 +1253,7 @@ Editor di schemi ladder e liste istruzioni per VPC, Vigor, CPM1 e PL110.</transl
         <translation>Commento</translation>
     </message>
     <message>
-        <location line="+82"/>
+        <location line="+89"/>
         <source>%1: %2</source>
         <translation>%1: %2</translation>
     </message>
@@ -1738,22 +1752,17 @@ Editor di schemi ladder e liste istruzioni per VPC, Vigor, CPM1 e PL110.</transl
 <context>
     <name>rung::editor::CrossReferenceView</name>
     <message>
-        <location filename="../editor/cross_reference_view.cpp" line="+50"/>
-        <source>Device or prefix (X0, X)</source>
-        <translation>Operando o prefisso (X0, X)</translation>
+        <location filename="../editor/cross_reference_view.cpp" line="+61"/>
+        <source>Device or prefix (%1, %2)</source>
+        <translation>Operando o prefisso (%1, %2)</translation>
     </message>
     <message>
         <location line="+1"/>
-        <source>Device or prefix (X0, X); empty: every device</source>
-        <translation>Operando o prefisso (X0, X); vuoto: tutti gli operandi</translation>
+        <source>Device or prefix (%1, %2); empty: every device</source>
+        <translation>Operando o prefisso (%1, %2); vuoto: tutti gli operandi</translation>
     </message>
     <message>
-        <location line="+1"/>
-        <source>Device / rung</source>
-        <translation>Operando / segmento</translation>
-    </message>
-    <message>
-        <location line="+0"/>
+        <location line="+3"/>
         <source>Step</source>
         <translation>Passo</translation>
     </message>
@@ -1768,7 +1777,12 @@ Editor di schemi ladder e liste istruzioni per VPC, Vigor, CPM1 e PL110.</transl
         <translation>Istruzione</translation>
     </message>
     <message>
-        <location line="+83"/>
+        <location line="+0"/>
+        <source>Device</source>
+        <translation>Operando</translation>
+    </message>
+    <message>
+        <location line="+117"/>
         <source>contact</source>
         <translation>contatto</translation>
     </message>
@@ -1801,7 +1815,7 @@ Editor di schemi ladder e liste istruzioni per VPC, Vigor, CPM1 e PL110.</transl
         <translation>Modifica simboli</translation>
     </message>
     <message>
-        <location line="+123"/>
+        <location line="+190"/>
         <source>Insert rung</source>
         <translation>Inserisci segmento</translation>
     </message>
@@ -1819,17 +1833,32 @@ Editor di schemi ladder e liste istruzioni per VPC, Vigor, CPM1 e PL110.</transl
         </translation>
     </message>
     <message>
-        <location line="+45"/>
+        <location line="+59"/>
         <source>This line stood for a rung of another program: delete the line or undo the paste</source>
         <translation>Questa riga rappresentava un segmento di un altro programma: elimina la riga o annulla l&apos;incolla</translation>
     </message>
     <message>
-        <location line="+54"/>
+        <location line="+59"/>
         <source>Edit instruction list</source>
         <translation>Modifica lista istruzioni</translation>
     </message>
     <message>
-        <location line="+55"/>
+        <location line="+29"/>
+        <source>This line keeps %1 (row %2, column %3) of rung %4, but no rung follows it: delete the line to let the contact go, or undo</source>
+        <translation>Questa riga conserva %1 (riga %2, colonna %3) del segmento %4, ma nessun segmento la segue: elimina la riga per lasciar andare il contatto, oppure annulla</translation>
+    </message>
+    <message>
+        <location line="+46"/>
+        <source>%1 (row %2, column %3) of rung %4 finds no place in the rung typed below this line: delete the line to let it go, or undo</source>
+        <translation>%1 (riga %2, colonna %3) del segmento %4 non trova posto nel segmento scritto sotto questa riga: elimina la riga per lasciarlo andare, oppure annulla</translation>
+    </message>
+    <message>
+        <location line="+60"/>
+        <source>Rung %1: %2 (row %3, column %4) is on no path to an output, so the list leaves it out; the ladder keeps it while this line stays.</source>
+        <translation>Segmento %1: %2 (riga %3, colonna %4) non è su alcun percorso verso un&apos;uscita, quindi la lista lo omette; il ladder lo conserva finché resta questa riga.</translation>
+    </message>
+    <message>
+        <location line="+26"/>
         <source>it has nothing to list yet</source>
         <translation>non contiene ancora nulla da elencare</translation>
     </message>
@@ -1843,6 +1872,7 @@ Editor di schemi ladder e liste istruzioni per VPC, Vigor, CPM1 e PL110.</transl
     <name>rung::editor::IlEditor</name>
     <message>
         <location filename="../editor/il_editor.cpp" line="+247"/>
+        <location line="+311"/>
         <source>Instruction list</source>
         <translation>Lista istruzioni</translation>
     </message>
@@ -1850,7 +1880,7 @@ Editor di schemi ladder e liste istruzioni per VPC, Vigor, CPM1 e PL110.</transl
 <context>
     <name>rung::editor::IlLexer</name>
     <message>
-        <location line="-187"/>
+        <location line="-498"/>
         <source>Default</source>
         <translation>Predefinito</translation>
     </message>
@@ -1893,22 +1923,23 @@ Editor di schemi ladder e liste istruzioni per VPC, Vigor, CPM1 e PL110.</transl
 <context>
     <name>rung::editor::LadderView</name>
     <message>
-        <location filename="../editor/ladder_view.cpp" line="+37"/>
+        <location filename="../editor/ladder_view.cpp" line="+38"/>
+        <location line="+566"/>
         <source>Ladder diagram</source>
         <translation>Schema ladder</translation>
     </message>
     <message>
-        <location line="+94"/>
+        <location line="-472"/>
         <source>Edit rung comment</source>
         <translation>Modifica commento del segmento</translation>
     </message>
     <message>
         <location line="+167"/>
-        <source>Type one instruction, for example &quot;%1 X0&quot;</source>
-        <translation>Digitare una sola istruzione, ad esempio &quot;%1 X0&quot;</translation>
+        <source>Type one instruction, for example &quot;%1 %2&quot;</source>
+        <translation>Digitare una sola istruzione, ad esempio &quot;%1 %2&quot;</translation>
     </message>
     <message>
-        <location line="+17"/>
+        <location line="+18"/>
         <source>%1 is drawn with vertical links, not typed into a cell</source>
         <translation>%1 si disegna con i collegamenti verticali, non si digita in una cella</translation>
     </message>
@@ -2299,21 +2330,31 @@ Editor di schemi ladder e liste istruzioni per VPC, Vigor, CPM1 e PL110.</transl
     </message>
     <message>
         <location line="+5"/>
-        <source>%1: # constants belong to CPM1 listings</source>
-        <translation>%1: le costanti con # appartengono alle liste CPM1</translation>
+        <source>write a constant as K (decimal) or H (hexadecimal)</source>
+        <translation>scrivere una costante come K (decimale) o H (esadecimale)</translation>
     </message>
     <message>
-        <location line="+5"/>
-        <source>%1: write a constant as K (decimal) or H (hexadecimal)</source>
-        <translation>%1: scrivere una costante come K (decimale) o H (esadecimale)</translation>
+        <location line="+2"/>
+        <source>write a constant with # (e.g. #0150)</source>
+        <translation>scrivere una costante con # (ad es. #0150)</translation>
     </message>
     <message>
         <location line="+1"/>
-        <source>%1: write a constant with # (e.g. #0150)</source>
-        <translation>%1: scrivere una costante con # (ad es. #0150)</translation>
+        <source>write a constant as a plain number (e.g. 150)</source>
+        <translation>scrivere una costante come numero semplice (ad es. 150)</translation>
     </message>
     <message>
-        <location line="+9"/>
+        <location line="+6"/>
+        <source>%1: %2 has no # constants; %3</source>
+        <translation>%1: %2 non ha costanti con #; %3</translation>
+    </message>
+    <message>
+        <location line="+3"/>
+        <source>%1: %2</source>
+        <translation>%1: %2</translation>
+    </message>
+    <message>
+        <location line="+8"/>
         <source>%1: digits are expected</source>
         <translation>%1: sono attese delle cifre</translation>
     </message>
@@ -2856,7 +2897,7 @@ Editor di schemi ladder e liste istruzioni per VPC, Vigor, CPM1 e PL110.</transl
 <context>
     <name>rung::model::LadderText</name>
     <message>
-        <location filename="../model/ladder/ladder_text.cpp" line="+183"/>
+        <location filename="../model/ladder/ladder_text.cpp" line="+186"/>
         <source>A ladder text starts with &quot;LADDER &lt;target&gt; WIDTH &lt;n&gt;&quot;</source>
         <translation>Un testo ladder inizia con &quot;LADDER &lt;target&gt; WIDTH &lt;n&gt;&quot;</translation>
     </message>
@@ -2887,17 +2928,17 @@ Editor di schemi ladder e liste istruzioni per VPC, Vigor, CPM1 e PL110.</transl
         <translation>Una riga inizia con la barra sinistra &apos;|&apos;</translation>
     </message>
     <message>
-        <location line="+14"/>
-        <source>A cell is empty, a wire, or a contact &quot;-[ X0 ]-&quot;</source>
-        <translation>Una cella è vuota, un collegamento o un contatto &quot;-[ X0 ]-&quot;</translation>
+        <location line="+15"/>
+        <source>A cell is empty, a wire, or a contact &quot;-[ %1 ]-&quot;</source>
+        <translation>Una cella è vuota, un collegamento o un contatto &quot;-[ %1 ]-&quot;</translation>
     </message>
     <message>
-        <location line="+16"/>
-        <source>An output is written in parentheses: (OUT Y0)</source>
-        <translation>Un&apos;uscita si scrive tra parentesi: (OUT Y0)</translation>
+        <location line="+19"/>
+        <source>An output is written in parentheses: (%1 %2)</source>
+        <translation>Un&apos;uscita si scrive tra parentesi: (%1 %2)</translation>
     </message>
     <message>
-        <location line="+6"/>
+        <location line="+7"/>
         <source>(^) marks a further input of a box above it</source>
         <translation>(^) indica un ulteriore ingresso del blocco funzione soprastante</translation>
     </message>
