@@ -42,7 +42,7 @@
 <context>
     <name>rung::app::Cli</name>
     <message>
-        <location filename="../app/cli/cli.cpp" line="+45"/>
+        <location filename="../app/cli/cli.cpp" line="+49"/>
         <location line="+45"/>
         <source>unexpected argument %1</source>
         <translation>váratlan argumentum: %1</translation>
@@ -53,11 +53,12 @@
         <translation>a --to értéke il, ladder vagy project lehet</translation>
     </message>
     <message>
-        <location line="-70"/>
+        <location line="-73"/>
         <source>usage:
   rungstudio-cli check FILE [--target %1] [--model M]
   rungstudio-cli convert FILE [--target T] [--from il|ladder|project] --to il|ladder|project [-o OUT] [--force]
   rungstudio-cli simulate FILE [--target T] --scans N [--period MS] [--set DEV=VALUE@SCAN]... --trace DEV[,DEV...]
+  rungstudio-cli serve FILE [--target T] --protocol vigor|modbus|modbus-tcp|hostlink (--pty | --port NAME | --tcp HOST:PORT) [--station N] [--baud B] [--period MS]
 FILE is a listing (.il), a ladder text (.ladder) or a project (.rung).
 --lang en|hu|it: the language of the messages (else the locale&apos;s, LANG).
 Exit status: 0 no error, 1 the program has errors, 2 usage or I/O error.</source>
@@ -65,12 +66,13 @@ Exit status: 0 no error, 1 the program has errors, 2 usage or I/O error.</source
   rungstudio-cli check FILE [--target %1] [--model M]
   rungstudio-cli convert FILE [--target T] [--from il|ladder|project] --to il|ladder|project [-o OUT] [--force]
   rungstudio-cli simulate FILE [--target T] --scans N [--period MS] [--set DEV=VALUE@SCAN]... --trace DEV[,DEV...]
+  rungstudio-cli serve FILE [--target T] --protocol vigor|modbus|modbus-tcp|hostlink (--pty | --port NAME | --tcp HOST:PORT) [--station N] [--baud B] [--period MS]
 A FILE utasításlista (.il), létra-szöveg (.ladder) vagy projekt (.rung).
 --lang en|hu|it: az üzenetek nyelve (különben a területi beállításé, LANG).
 Kilépési kód: 0 nincs hiba, 1 a programban hiba van, 2 használati vagy I/O hiba.</translation>
     </message>
     <message>
-        <location line="+86"/>
+        <location line="+89"/>
         <source>nothing written: the list as typed would be lost</source>
         <translation>semmi sem íródott ki: a begépelt lista elveszne</translation>
     </message>
@@ -95,7 +97,7 @@ Kilépési kód: 0 nincs hiba, 1 a programban hiba van, 2 használati vagy I/O h
         <translation>%1 nem írható: %2</translation>
     </message>
     <message>
-        <location line="+26"/>
+        <location line="+28"/>
         <source>no command given</source>
         <translation>nincs megadva parancs</translation>
     </message>
@@ -1134,6 +1136,89 @@ Létradiagram- és utasításlista-szerkesztő a következő PLC-khez: %2.</tran
     </message>
 </context>
 <context>
+    <name>rung::app::Serve</name>
+    <message>
+        <location filename="../app/cli/cli_serve.cpp" line="+28"/>
+        <source>usage: rungstudio-cli serve FILE [--target T] [--model M] --protocol vigor|modbus|modbus-tcp|hostlink (--pty | --port NAME | --tcp HOST:PORT) [--station N] [--baud B] [--format 8N1|7E1|7E2|...] [--period MS] [--fault bad-checksum|silent|wrong-station|garbage|truncated|split]</source>
+        <translation>használat: rungstudio-cli serve FILE [--target T] [--model M] --protocol vigor|modbus|modbus-tcp|hostlink (--pty | --port NAME | --tcp HOST:PORT) [--station N] [--baud B] [--format 8N1|7E1|7E2|...] [--period MS] [--fault bad-checksum|silent|wrong-station|garbage|truncated|split]</translation>
+    </message>
+    <message>
+        <location line="+133"/>
+        <source>unexpected argument %1</source>
+        <translation>váratlan argumentum: %1</translation>
+    </message>
+    <message>
+        <location line="+2"/>
+        <source>%1 needs a valid value</source>
+        <translation>a(z) %1 kapcsolóhoz érvényes érték kell</translation>
+    </message>
+    <message>
+        <location line="+3"/>
+        <source>no FILE given</source>
+        <translation>nincs megadva FILE</translation>
+    </message>
+    <message>
+        <location line="+7"/>
+        <source>--protocol is required</source>
+        <translation>a --protocol megadása kötelező</translation>
+    </message>
+    <message>
+        <location line="+1"/>
+        <source>unknown protocol %1 (vigor, modbus, modbus-tcp, hostlink)</source>
+        <translation>ismeretlen protokoll: %1 (vigor, modbus, modbus-tcp, hostlink)</translation>
+    </message>
+    <message>
+        <location line="+3"/>
+        <source>give one of --pty, --port NAME and --tcp HOST:PORT</source>
+        <translation>adja meg a --pty, a --port NAME és a --tcp HOST:PORT közül pontosan egyet</translation>
+    </message>
+    <message>
+        <location line="+2"/>
+        <source>--protocol modbus-tcp is served over --tcp HOST:PORT</source>
+        <translation>a --protocol modbus-tcp a --tcp HOST:PORT kapcsolón szolgál ki</translation>
+    </message>
+    <message>
+        <location line="+11"/>
+        <source>--tcp needs HOST:PORT with a numeric address, e.g. 127.0.0.1:1502, not %1</source>
+        <translation>a --tcp numerikus címet és portot vár (HOST:PORT), pl. 127.0.0.1:1502, nem ezt: %1</translation>
+    </message>
+    <message>
+        <location line="+12"/>
+        <source>--format needs data bits, parity and stop bits, e.g. 8N1 or 7E2, not %1</source>
+        <translation>a --format adatbitet, paritást és stopbitet vár, pl. 8N1 vagy 7E2, nem ezt: %1</translation>
+    </message>
+    <message>
+        <location line="+5"/>
+        <source>--station %1 is outside %2..%3, the stations of %4</source>
+        <translation>a(z) %1. állomás kívül esik a(z) %4 állomásszámain (%2..%3)</translation>
+    </message>
+    <message>
+        <location line="+8"/>
+        <source>unknown fault %1 (%2)</source>
+        <translation>ismeretlen hibamód: %1 (%2)</translation>
+    </message>
+    <message>
+        <location line="+14"/>
+        <source>%1 has no published protocol to serve (protocols.md)</source>
+        <translation>a(z) %1 PLC-nek nincs nyilvános protokollja, amelyen kiszolgálható lenne (protocols.md)</translation>
+    </message>
+    <message>
+        <location line="+2"/>
+        <source>%1 does not speak %2; it speaks %3</source>
+        <translation>a(z) %1 nem ismeri ezt: %2; ezeket ismeri: %3</translation>
+    </message>
+    <message>
+        <location line="+49"/>
+        <source>%1 serves %2 (%3, %4, station %5) on %6; stop it with Ctrl+C</source>
+        <translation>a(z) %1 kiszolgálja: %2 (%3, %4, %5. állomás), itt: %6; leállítás: Ctrl+C</translation>
+    </message>
+    <message>
+        <location line="+21"/>
+        <source>%1 requests answered, %2 refused with an error, %3 for other stations or broadcast, %4 frames dropped; %5 writes</source>
+        <translation>%1 kérés megválaszolva, %2 hibakóddal elutasítva, %3 más állomásnak szólt vagy körözvény volt, %4 keret eldobva; %5 írás</translation>
+    </message>
+</context>
+<context>
     <name>rung::app::Simulate</name>
     <message>
         <location filename="../app/cli/cli_simulate.cpp" line="+21"/>
@@ -1162,13 +1247,21 @@ Létradiagram- és utasításlista-szerkesztő a következő PLC-khez: %2.</tran
         <translation>hiba: %1</translation>
     </message>
     <message>
-        <location line="-6"/>
+        <location filename="../app/cli/cli_load_program.cpp" line="+37"/>
+        <location line="+7"/>
+        <location line="+16"/>
+        <location filename="../app/cli/cli_simulate.cpp" line="-6"/>
         <location line="+10"/>
         <source>the program does not start</source>
         <translation>a program nem indul el</translation>
     </message>
     <message>
-        <location line="-3"/>
+        <location line="-4"/>
+        <source>%1 (as instruction list)</source>
+        <translation>%1 (utasításlistaként)</translation>
+    </message>
+    <message>
+        <location filename="../app/cli/cli_simulate.cpp" line="-3"/>
         <source>warning: %1</source>
         <translation>figyelmeztetés: %1</translation>
     </message>
@@ -1255,6 +1348,25 @@ Létradiagram- és utasításlista-szerkesztő a következő PLC-khez: %2.</tran
         <location line="+17"/>
         <source>%1, line %2: %3</source>
         <translation>%1, %2. sor: %3</translation>
+    </message>
+</context>
+<context>
+    <name>rung::app::VirtualPlc</name>
+    <message>
+        <location filename="../app/virtual_plc/virtual_plc.cpp" line="+100"/>
+        <location line="+10"/>
+        <source>the virtual PLC is stopping</source>
+        <translation>a virtuális PLC leáll</translation>
+    </message>
+    <message>
+        <location line="+35"/>
+        <source>the simulation did not take the write within the time allowed</source>
+        <translation>a szimuláció a megengedett időn belül nem hajtotta végre az írást</translation>
+    </message>
+    <message>
+        <location line="+70"/>
+        <source>The virtual PLC needs a QCoreApplication for its simulation thread</source>
+        <translation>A virtuális PLC szimulációs szálához QCoreApplication kell</translation>
     </message>
 </context>
 <context>
@@ -1616,7 +1728,7 @@ Létradiagram- és utasításlista-szerkesztő a következő PLC-khez: %2.</tran
         <location line="+34"/>
         <location filename="../comms/transport/serial_transport.cpp" line="+38"/>
         <location line="+23"/>
-        <location filename="../comms/transport/tcp_transport.cpp" line="+78"/>
+        <location filename="../comms/transport/tcp_transport.cpp" line="+116"/>
         <location line="+30"/>
         <source>%1 is not open</source>
         <translation>%1 nincs megnyitva</translation>
@@ -1678,7 +1790,12 @@ Létradiagram- és utasításlista-szerkesztő a következő PLC-khez: %2.</tran
         <translation>%1 eltűnt (kihúzták?)</translation>
     </message>
     <message>
-        <location filename="../comms/transport/tcp_transport.cpp" line="-62"/>
+        <location filename="../comms/transport/tcp_transport.cpp" line="-83"/>
+        <source>Cannot take the TCP connection: %1</source>
+        <translation>A TCP-kapcsolat nem vehető át: %1</translation>
+    </message>
+    <message>
+        <location line="+21"/>
         <source>Cannot connect to %1: %2</source>
         <translation>Nem sikerült kapcsolódni ide: %1: %2</translation>
     </message>
@@ -1688,7 +1805,7 @@ Létradiagram- és utasításlista-szerkesztő a következő PLC-khez: %2.</tran
         <translation>Nem sikerült %2 ms alatt kapcsolódni ide: %1</translation>
     </message>
     <message>
-        <location line="+83"/>
+        <location line="+87"/>
         <source>Cannot listen on %1:%2: %3</source>
         <translation>Nem lehet figyelni ezen: %1:%2: %3</translation>
     </message>
@@ -1703,7 +1820,12 @@ Létradiagram- és utasításlista-szerkesztő a következő PLC-khez: %2.</tran
         <translation>Host Link: %1 karakter érkezett, mielőtt a parancs választ kapott volna; az első %3 utáni %2 karakter eldobva</translation>
     </message>
     <message>
-        <location line="+24"/>
+        <location line="+17"/>
+        <source>Host Link: a new command began where part %1 of the %2 command was due; the unfinished command was dropped</source>
+        <translation>Host Link: a(z) %2 parancs %1. része helyett új parancs kezdődött; a befejezetlen parancs eldobva</translation>
+    </message>
+    <message>
+        <location line="+21"/>
         <source>Host Link: %1 characters without a CR (a part holds at most %2): dropped, waiting for the next &quot;@&quot;</source>
         <translation>Host Link: %1 karakter CR nélkül (egy rész legfeljebb %2 karakter): eldobva, várakozás a következő &quot;@&quot; jelre</translation>
     </message>
@@ -1741,6 +1863,32 @@ Létradiagram- és utasításlista-szerkesztő a következő PLC-khez: %2.</tran
         <location filename="../comms/transport/pty_transport.cpp" line="-100"/>
         <source>Cannot open %1 again: the pseudo-terminal this program made ended when it was closed; make a new one and give its path to the peer</source>
         <translation>%1 nem nyitható meg újra: a program által létrehozott pszeudoterminál a bezárásakor megszűnt; hozzon létre újat, és adja meg az útvonalát a másik félnek</translation>
+    </message>
+    <message>
+        <location filename="../comms/slave/memory_image.cpp" line="+85"/>
+        <source>%1 cannot be written in this PLC&apos;s memory</source>
+        <translation>a(z) %1 nem írható ennek a PLC-nek a memóriájában</translation>
+    </message>
+    <message>
+        <location filename="../comms/slave/slave_server.cpp" line="+101"/>
+        <location line="+29"/>
+        <source>%1 does not speak this protocol</source>
+        <translation>a(z) %1 nem ismeri ezt a protokollt</translation>
+    </message>
+    <message>
+        <location line="+3"/>
+        <source>The slave listens already</source>
+        <translation>A slave már figyel</translation>
+    </message>
+    <message>
+        <location line="+88"/>
+        <source>The slave has been stopped</source>
+        <translation>A slave le van állítva</translation>
+    </message>
+    <message>
+        <location line="+124"/>
+        <source>A TCP client was refused: %1 clients are served already</source>
+        <translation>Egy TCP-kliens elutasítva: már %1 kliens kiszolgálása folyik</translation>
     </message>
 </context>
 <context>
@@ -4218,7 +4366,7 @@ Létradiagram- és utasításlista-szerkesztő a következő PLC-khez: %2.</tran
         <translation>Omron Host Link (C mód)</translation>
     </message>
     <message>
-        <location filename="../model/target/target_pl110_maps.cpp" line="+16"/>
+        <location filename="../model/target/target_pl110_maps.cpp" line="+17"/>
         <source>PL110 MODBUS RTU slave</source>
         <translation>PL110 MODBUS RTU szolga</translation>
     </message>

@@ -42,7 +42,7 @@
 <context>
     <name>rung::app::Cli</name>
     <message>
-        <location filename="../app/cli/cli.cpp" line="+45"/>
+        <location filename="../app/cli/cli.cpp" line="+49"/>
         <location line="+45"/>
         <source>unexpected argument %1</source>
         <translation>argomento non previsto: %1</translation>
@@ -53,11 +53,12 @@
         <translation>--to deve essere il, ladder o project</translation>
     </message>
     <message>
-        <location line="-70"/>
+        <location line="-73"/>
         <source>usage:
   rungstudio-cli check FILE [--target %1] [--model M]
   rungstudio-cli convert FILE [--target T] [--from il|ladder|project] --to il|ladder|project [-o OUT] [--force]
   rungstudio-cli simulate FILE [--target T] --scans N [--period MS] [--set DEV=VALUE@SCAN]... --trace DEV[,DEV...]
+  rungstudio-cli serve FILE [--target T] --protocol vigor|modbus|modbus-tcp|hostlink (--pty | --port NAME | --tcp HOST:PORT) [--station N] [--baud B] [--period MS]
 FILE is a listing (.il), a ladder text (.ladder) or a project (.rung).
 --lang en|hu|it: the language of the messages (else the locale&apos;s, LANG).
 Exit status: 0 no error, 1 the program has errors, 2 usage or I/O error.</source>
@@ -65,12 +66,13 @@ Exit status: 0 no error, 1 the program has errors, 2 usage or I/O error.</source
   rungstudio-cli check FILE [--target %1] [--model M]
   rungstudio-cli convert FILE [--target T] [--from il|ladder|project] --to il|ladder|project [-o OUT] [--force]
   rungstudio-cli simulate FILE [--target T] --scans N [--period MS] [--set DEV=VALUE@SCAN]... --trace DEV[,DEV...]
+  rungstudio-cli serve FILE [--target T] --protocol vigor|modbus|modbus-tcp|hostlink (--pty | --port NAME | --tcp HOST:PORT) [--station N] [--baud B] [--period MS]
 FILE è una lista istruzioni (.il), un testo ladder (.ladder) o un progetto (.rung).
 --lang en|hu|it: la lingua dei messaggi (altrimenti quella della localizzazione, LANG).
 Codice di uscita: 0 nessun errore, 1 il programma contiene errori, 2 errore di utilizzo o di I/O.</translation>
     </message>
     <message>
-        <location line="+86"/>
+        <location line="+89"/>
         <source>nothing written: the list as typed would be lost</source>
         <translation>non è stato scritto nulla: la lista digitata andrebbe persa</translation>
     </message>
@@ -95,7 +97,7 @@ Codice di uscita: 0 nessun errore, 1 il programma contiene errori, 2 errore di u
         <translation>impossibile scrivere %1: %2</translation>
     </message>
     <message>
-        <location line="+26"/>
+        <location line="+28"/>
         <source>no command given</source>
         <translation>nessun comando specificato</translation>
     </message>
@@ -1139,6 +1141,89 @@ Editor di schemi ladder e liste istruzioni per %2.</translation>
     </message>
 </context>
 <context>
+    <name>rung::app::Serve</name>
+    <message>
+        <location filename="../app/cli/cli_serve.cpp" line="+28"/>
+        <source>usage: rungstudio-cli serve FILE [--target T] [--model M] --protocol vigor|modbus|modbus-tcp|hostlink (--pty | --port NAME | --tcp HOST:PORT) [--station N] [--baud B] [--format 8N1|7E1|7E2|...] [--period MS] [--fault bad-checksum|silent|wrong-station|garbage|truncated|split]</source>
+        <translation>uso: rungstudio-cli serve FILE [--target T] [--model M] --protocol vigor|modbus|modbus-tcp|hostlink (--pty | --port NAME | --tcp HOST:PORT) [--station N] [--baud B] [--format 8N1|7E1|7E2|...] [--period MS] [--fault bad-checksum|silent|wrong-station|garbage|truncated|split]</translation>
+    </message>
+    <message>
+        <location line="+133"/>
+        <source>unexpected argument %1</source>
+        <translation>argomento inatteso %1</translation>
+    </message>
+    <message>
+        <location line="+2"/>
+        <source>%1 needs a valid value</source>
+        <translation>%1 richiede un valore valido</translation>
+    </message>
+    <message>
+        <location line="+3"/>
+        <source>no FILE given</source>
+        <translation>nessun FILE indicato</translation>
+    </message>
+    <message>
+        <location line="+7"/>
+        <source>--protocol is required</source>
+        <translation>--protocol è obbligatorio</translation>
+    </message>
+    <message>
+        <location line="+1"/>
+        <source>unknown protocol %1 (vigor, modbus, modbus-tcp, hostlink)</source>
+        <translation>protocollo sconosciuto %1 (vigor, modbus, modbus-tcp, hostlink)</translation>
+    </message>
+    <message>
+        <location line="+3"/>
+        <source>give one of --pty, --port NAME and --tcp HOST:PORT</source>
+        <translation>indicare uno solo tra --pty, --port NAME e --tcp HOST:PORT</translation>
+    </message>
+    <message>
+        <location line="+2"/>
+        <source>--protocol modbus-tcp is served over --tcp HOST:PORT</source>
+        <translation>--protocol modbus-tcp si serve con --tcp HOST:PORT</translation>
+    </message>
+    <message>
+        <location line="+11"/>
+        <source>--tcp needs HOST:PORT with a numeric address, e.g. 127.0.0.1:1502, not %1</source>
+        <translation>--tcp richiede HOST:PORT con un indirizzo numerico, ad es. 127.0.0.1:1502, non %1</translation>
+    </message>
+    <message>
+        <location line="+12"/>
+        <source>--format needs data bits, parity and stop bits, e.g. 8N1 or 7E2, not %1</source>
+        <translation>--format richiede bit di dati, parità e bit di stop, ad es. 8N1 o 7E2, non %1</translation>
+    </message>
+    <message>
+        <location line="+5"/>
+        <source>--station %1 is outside %2..%3, the stations of %4</source>
+        <translation>--station %1 è fuori da %2..%3, le stazioni di %4</translation>
+    </message>
+    <message>
+        <location line="+8"/>
+        <source>unknown fault %1 (%2)</source>
+        <translation>guasto sconosciuto %1 (%2)</translation>
+    </message>
+    <message>
+        <location line="+14"/>
+        <source>%1 has no published protocol to serve (protocols.md)</source>
+        <translation>%1 non ha un protocollo pubblicato da servire (protocols.md)</translation>
+    </message>
+    <message>
+        <location line="+2"/>
+        <source>%1 does not speak %2; it speaks %3</source>
+        <translation>%1 non parla %2; parla %3</translation>
+    </message>
+    <message>
+        <location line="+49"/>
+        <source>%1 serves %2 (%3, %4, station %5) on %6; stop it with Ctrl+C</source>
+        <translation>%1 serve %2 (%3, %4, stazione %5) su %6; per fermarlo Ctrl+C</translation>
+    </message>
+    <message>
+        <location line="+21"/>
+        <source>%1 requests answered, %2 refused with an error, %3 for other stations or broadcast, %4 frames dropped; %5 writes</source>
+        <translation>%1 richieste con risposta, %2 rifiutate con un errore, %3 per altre stazioni o broadcast, %4 frame scartati; %5 scritture</translation>
+    </message>
+</context>
+<context>
     <name>rung::app::Simulate</name>
     <message>
         <location filename="../app/cli/cli_simulate.cpp" line="+21"/>
@@ -1167,13 +1252,21 @@ Editor di schemi ladder e liste istruzioni per %2.</translation>
         <translation>errore: %1</translation>
     </message>
     <message>
-        <location line="-6"/>
+        <location filename="../app/cli/cli_load_program.cpp" line="+37"/>
+        <location line="+7"/>
+        <location line="+16"/>
+        <location filename="../app/cli/cli_simulate.cpp" line="-6"/>
         <location line="+10"/>
         <source>the program does not start</source>
         <translation>il programma non si avvia</translation>
     </message>
     <message>
-        <location line="-3"/>
+        <location line="-4"/>
+        <source>%1 (as instruction list)</source>
+        <translation>%1 (come lista istruzioni)</translation>
+    </message>
+    <message>
+        <location filename="../app/cli/cli_simulate.cpp" line="-3"/>
         <source>warning: %1</source>
         <translation>avviso: %1</translation>
     </message>
@@ -1261,6 +1354,25 @@ Editor di schemi ladder e liste istruzioni per %2.</translation>
         <location line="+17"/>
         <source>%1, line %2: %3</source>
         <translation>%1, riga %2: %3</translation>
+    </message>
+</context>
+<context>
+    <name>rung::app::VirtualPlc</name>
+    <message>
+        <location filename="../app/virtual_plc/virtual_plc.cpp" line="+100"/>
+        <location line="+10"/>
+        <source>the virtual PLC is stopping</source>
+        <translation>il PLC virtuale si sta arrestando</translation>
+    </message>
+    <message>
+        <location line="+35"/>
+        <source>the simulation did not take the write within the time allowed</source>
+        <translation>la simulazione non ha eseguito la scrittura entro il tempo consentito</translation>
+    </message>
+    <message>
+        <location line="+70"/>
+        <source>The virtual PLC needs a QCoreApplication for its simulation thread</source>
+        <translation>Il PLC virtuale richiede una QCoreApplication per il thread di simulazione</translation>
     </message>
 </context>
 <context>
@@ -1622,7 +1734,7 @@ Editor di schemi ladder e liste istruzioni per %2.</translation>
         <location line="+34"/>
         <location filename="../comms/transport/serial_transport.cpp" line="+38"/>
         <location line="+23"/>
-        <location filename="../comms/transport/tcp_transport.cpp" line="+78"/>
+        <location filename="../comms/transport/tcp_transport.cpp" line="+116"/>
         <location line="+30"/>
         <source>%1 is not open</source>
         <translation>%1 non è aperto</translation>
@@ -1684,7 +1796,12 @@ Editor di schemi ladder e liste istruzioni per %2.</translation>
         <translation>%1 non c&apos;è più (scollegata?)</translation>
     </message>
     <message>
-        <location filename="../comms/transport/tcp_transport.cpp" line="-62"/>
+        <location filename="../comms/transport/tcp_transport.cpp" line="-83"/>
+        <source>Cannot take the TCP connection: %1</source>
+        <translation>Impossibile prendere in carico la connessione TCP: %1</translation>
+    </message>
+    <message>
+        <location line="+21"/>
         <source>Cannot connect to %1: %2</source>
         <translation>Impossibile connettersi a %1: %2</translation>
     </message>
@@ -1694,7 +1811,7 @@ Editor di schemi ladder e liste istruzioni per %2.</translation>
         <translation>Impossibile connettersi a %1 entro %2 ms</translation>
     </message>
     <message>
-        <location line="+83"/>
+        <location line="+87"/>
         <source>Cannot listen on %1:%2: %3</source>
         <translation>Impossibile restare in ascolto su %1:%2: %3</translation>
     </message>
@@ -1709,7 +1826,12 @@ Editor di schemi ladder e liste istruzioni per %2.</translation>
         <translation>Host Link: sono arrivati %1 caratteri prima della risposta al comando; i %2 oltre i primi %3 sono stati scartati</translation>
     </message>
     <message>
-        <location line="+24"/>
+        <location line="+17"/>
+        <source>Host Link: a new command began where part %1 of the %2 command was due; the unfinished command was dropped</source>
+        <translation>Host Link: è iniziato un nuovo comando al posto della parte %1 del comando %2; il comando incompleto è stato scartato</translation>
+    </message>
+    <message>
+        <location line="+21"/>
         <source>Host Link: %1 characters without a CR (a part holds at most %2): dropped, waiting for the next &quot;@&quot;</source>
         <translation>Host Link: %1 caratteri senza CR (una parte ne contiene al massimo %2): scartati, in attesa del prossimo &quot;@&quot;</translation>
     </message>
@@ -1747,6 +1869,32 @@ Editor di schemi ladder e liste istruzioni per %2.</translation>
         <location filename="../comms/transport/pty_transport.cpp" line="-100"/>
         <source>Cannot open %1 again: the pseudo-terminal this program made ended when it was closed; make a new one and give its path to the peer</source>
         <translation>Impossibile aprire di nuovo %1: lo pseudo-terminale creato da questo programma è terminato alla chiusura; crearne uno nuovo e darne il percorso all&apos;altra parte</translation>
+    </message>
+    <message>
+        <location filename="../comms/slave/memory_image.cpp" line="+85"/>
+        <source>%1 cannot be written in this PLC&apos;s memory</source>
+        <translation>%1 non si può scrivere nella memoria di questo PLC</translation>
+    </message>
+    <message>
+        <location filename="../comms/slave/slave_server.cpp" line="+101"/>
+        <location line="+29"/>
+        <source>%1 does not speak this protocol</source>
+        <translation>%1 non parla questo protocollo</translation>
+    </message>
+    <message>
+        <location line="+3"/>
+        <source>The slave listens already</source>
+        <translation>Lo slave è già in ascolto</translation>
+    </message>
+    <message>
+        <location line="+88"/>
+        <source>The slave has been stopped</source>
+        <translation>Lo slave è stato arrestato</translation>
+    </message>
+    <message>
+        <location line="+124"/>
+        <source>A TCP client was refused: %1 clients are served already</source>
+        <translation>Un client TCP è stato rifiutato: sono già serviti %1 client</translation>
     </message>
 </context>
 <context>
@@ -4232,7 +4380,7 @@ Editor di schemi ladder e liste istruzioni per %2.</translation>
         <translation>Omron Host Link (modo C)</translation>
     </message>
     <message>
-        <location filename="../model/target/target_pl110_maps.cpp" line="+16"/>
+        <location filename="../model/target/target_pl110_maps.cpp" line="+17"/>
         <source>PL110 MODBUS RTU slave</source>
         <translation>PL110 slave MODBUS RTU</translation>
     </message>

@@ -1,6 +1,7 @@
 #include "cli.h"
 
 #include "cli_common.h"
+#include "cli_serve.h"
 #include "cli_simulate.h"
 
 #include "model/checks/checks.h"
@@ -31,6 +32,9 @@ QString usage() {
                   "  rungstudio-cli simulate FILE [--target T] --scans N [--period MS] [--set "
                   "DEV=VALUE@SCAN]... "
                   "--trace DEV[,DEV...]\n"
+                  "  rungstudio-cli serve FILE [--target T] --protocol "
+                  "vigor|modbus|modbus-tcp|hostlink (--pty | --port NAME | --tcp HOST:PORT) "
+                  "[--station N] [--baud B] [--period MS]\n"
                   "FILE is a listing (.il), a ladder text (.ladder) or a project (.rung).\n"
                   "--lang en|hu|it: the language of the messages (else the locale's, LANG).\n"
                   "Exit status: 0 no error, 1 the program has errors, 2 usage or I/O error.")
@@ -185,6 +189,8 @@ int runCli(const QStringList &arguments, QTextStream &out, QTextStream &err) {
         return convert(args, out, err);
     if (command == QLatin1String("simulate"))
         return runSimulateCommand(args, out, err);
+    if (command == QLatin1String("serve"))
+        return runServeCommand(args, out, err);
     if (command == QLatin1String("--help") || command == QLatin1String("-h") ||
         command == QLatin1String("help")) {
         out << usage() << '\n';

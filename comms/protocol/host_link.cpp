@@ -456,6 +456,20 @@ void CommandDecoder::keepPending() {
 FrameStatus CommandDecoder::feed(QByteArrayView bytes) {
     m_buffer += bytes;
     while (m_status == FrameStatus::NeedMore) {
+        if (m_parts > 0 && m_buffer.startsWith('@')) {
+            // A later part holds data, never "@": a master that starts a command afresh
+            // (after a time-out, or noise that looked like a first part) is served from here.
+            m_discarded = {Kind::Garbage, 0,
+                           QCoreApplication::translate(
+                               "rung::comms::Protocol",
+                               "Host Link: a new command began where part %1 of the %2 command "
+                               "was due; the unfinished command was dropped")
+                               .arg(m_parts + 1)
+                               .arg(QString::fromLatin1(m_command.header))};
+            m_parts = 0;
+            m_command = {};
+            m_endCode = 0;
+        }
         if (m_parts == 0) {
             const qsizetype at = m_buffer.indexOf('@');
             m_buffer.remove(0, at < 0 ? m_buffer.size() : at); // noise between commands

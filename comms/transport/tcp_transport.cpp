@@ -3,6 +3,9 @@
 #include <QTcpServer>
 #include <QTcpSocket>
 
+#include <deque>
+#include <unistd.h>
+
 namespace rung::comms {
 
 namespace {
@@ -16,6 +19,16 @@ int slice(const QDeadlineTimer &deadline) {
 
 } // namespace
 
+// Keeps the descriptors of incoming connections instead of making sockets of them, so that a
+// socket is made in the thread that will use it (QTcpSocket is not to be shared by threads).
+class TcpServer::Listener : public QTcpServer {
+public:
+    std::deque<qintptr> pending;
+
+protected:
+    void incomingConnection(qintptr descriptor) override { pending.push_back(descriptor); }
+};
+
 TcpTransport::TcpTransport(QString host, quint16 port)
     : m_host(std::move(host))
     , m_port(port) {}
@@ -25,8 +38,16 @@ TcpTransport::TcpTransport(std::unique_ptr<QTcpSocket> connected)
     , m_port(connected->peerPort())
     , m_socket(std::move(connected)) {}
 
+std::unique_ptr<TcpTransport> TcpTransport::fromDescriptor(qintptr descriptor) {
+    auto t = std::make_unique<TcpTransport>(QString(), quint16(0));
+    t->m_descriptor = descriptor;
+    return t;
+}
+
 TcpTransport::~TcpTransport() {
     close();
+    if (m_descriptor >= 0)
+        ::close(int(m_descriptor)); // never opened: the connection is still ours to end
 }
 
 QString TcpTransport::name() const {
@@ -40,6 +61,23 @@ bool TcpTransport::isOpen() const {
 bool TcpTransport::open(QString *error) {
     if (isOpen())
         return true;
+    if (m_descriptor >= 0) {
+        m_socket = std::make_unique<QTcpSocket>();
+        const qintptr descriptor = std::exchange(m_descriptor, -1);
+        if (!m_socket->setSocketDescriptor(descriptor)) {
+            if (error)
+                *error = QCoreApplication::translate("rung::comms::Protocol",
+                                                     "Cannot take the TCP connection: %1")
+                             .arg(m_socket->errorString());
+            ::close(int(descriptor));
+            m_socket.reset();
+            return false;
+        }
+        m_host = m_socket->peerAddress().toString();
+        m_port = m_socket->peerPort();
+        m_socket->setSocketOption(QAbstractSocket::LowDelayOption, 1);
+        return true;
+    }
     m_socket = std::make_unique<QTcpSocket>();
     m_socket->connectToHost(m_host, m_port);
     const QDeadlineTimer deadline(m_openTimeoutMs);
@@ -128,10 +166,14 @@ void TcpTransport::discardInput() {
 }
 
 TcpServer::TcpServer() = default;
-TcpServer::~TcpServer() = default;
+TcpServer::~TcpServer() {
+    if (m_server)
+        for (const qintptr descriptor : m_server->pending)
+            ::close(int(descriptor)); // accepted by the system, never taken: ended here
+}
 
 bool TcpServer::listen(const QHostAddress &host, quint16 port, QString *error) {
-    m_server = std::make_unique<QTcpServer>();
+    m_server = std::make_unique<Listener>();
     if (m_server->listen(host, port))
         return true;
     if (error)
@@ -148,17 +190,26 @@ quint16 TcpServer::port() const {
 }
 
 std::unique_ptr<TcpTransport> TcpServer::accept(QDeadlineTimer deadline) {
-    if (!m_server)
+    const qintptr descriptor = acceptDescriptor(deadline);
+    if (descriptor < 0)
         return nullptr;
-    while (!m_server->hasPendingConnections()) {
+    auto transport = TcpTransport::fromDescriptor(descriptor);
+    if (!transport->open(nullptr))
+        return nullptr;
+    return transport;
+}
+
+qintptr TcpServer::acceptDescriptor(QDeadlineTimer deadline) {
+    if (!m_server)
+        return -1;
+    while (m_server->pending.empty()) {
         if (m_cancel.exchange(false) || deadline.hasExpired())
-            return nullptr;
+            return -1;
         m_server->waitForNewConnection(slice(deadline));
     }
-    QTcpSocket *socket = m_server->nextPendingConnection();
-    socket->setParent(nullptr); // the transport owns it from here
-    socket->setSocketOption(QAbstractSocket::LowDelayOption, 1);
-    return std::make_unique<TcpTransport>(std::unique_ptr<QTcpSocket>(socket));
+    const qintptr descriptor = m_server->pending.front();
+    m_server->pending.pop_front();
+    return descriptor;
 }
 
 } // namespace rung::comms

@@ -22,6 +22,9 @@ class TcpTransport final : public Transport {
 public:
     TcpTransport(QString host, quint16 port);
     explicit TcpTransport(std::unique_ptr<QTcpSocket> connected); // from TcpServer::accept
+    // A connection TcpServer::acceptDescriptor() took: open() makes its socket in the thread
+    // that calls it, which is then the one thread that may use it (a slave's client thread).
+    static std::unique_ptr<TcpTransport> fromDescriptor(qintptr descriptor);
     ~TcpTransport() override;
 
     QString name() const override;
@@ -39,6 +42,7 @@ private:
     QString m_host;
     quint16 m_port = 0;
     std::unique_ptr<QTcpSocket> m_socket;
+    qintptr m_descriptor = -1; // fromDescriptor(), until open()
     std::atomic<bool> m_cancel{false};
     int m_openTimeoutMs = 3000;
 };
@@ -50,12 +54,17 @@ public:
     // Listens on host:port (port 0: any free port, see port()).
     bool listen(const QHostAddress &host, quint16 port, QString *error);
     quint16 port() const;
-    // Waits for the next connection until the deadline or cancel(); nullptr then.
+    // Waits for the next connection until the deadline or cancel(); nullptr then. The
+    // transport is open and belongs to this thread.
     std::unique_ptr<TcpTransport> accept(QDeadlineTimer deadline);
+    // The same, as the connection's descriptor (-1 at the deadline or on cancel()), for a
+    // server that serves each client on a thread of its own (TcpTransport::fromDescriptor).
+    qintptr acceptDescriptor(QDeadlineTimer deadline);
     void cancel() { m_cancel = true; }
 
 private:
-    std::unique_ptr<QTcpServer> m_server;
+    class Listener;
+    std::unique_ptr<Listener> m_server;
     std::atomic<bool> m_cancel{false};
 };
 

@@ -94,7 +94,7 @@ std::optional<MappedDevice> fromProtocol(const Target &target, const ProtocolMap
         if (ai < 0)
             continue;
         const Area &area = target.area(ai);
-        MappedDevice d{ai, 0, -1, r.part, 0};
+        MappedDevice d{ai, 0, -1, r.part, 0, r.readOnly};
         if (r.part == DevicePart::Value) {
             const int units = unitsOf(area, space);
             d.index = r.origin + (unit - r.start) / units;

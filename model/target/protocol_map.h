@@ -45,6 +45,8 @@ enum class DevicePart : std::uint8_t { Bit, Value, Coil };
 // Area::wordBits / unitBits units each (a Vigor C200 value: 4 link bytes or 2 registers).
 // `last` ends the range where the protocol's documented reach ends before the area does
 // (CPM1 Host Link: IR/SR to 252, DM to 6655, protocols.md); -1 = the area's last element.
+// `readOnly`: the protocol reads the range but refuses writes to it (PL110: inputs as words,
+// timer and counter bits, analog inputs; seed 003 chapter 3, the R column).
 struct ProtocolRange {
     const char *area = "";
     DevicePart part = DevicePart::Bit;
@@ -52,6 +54,7 @@ struct ProtocolRange {
     int start = 0;
     int origin = 0;
     int last = -1;
+    bool readOnly = false;
 };
 
 // Vigor Computer Link: 51h / 61h move at most 128 bytes (seed 001, B-5). The Vigor link
@@ -68,9 +71,22 @@ struct ProtocolMap {
     int maxWriteUnits = 0;
     // PL110: functions 02 and 04 read the same tables as 01 and 03 (seed 003 chapter 3).
     bool inputsShareSpaces = false;
-    // Registers that describe the PLC (PL110: device type 0, firmware version 1); -1 = none.
+    // Registers that describe the PLC (PL110: device type 0, firmware version 1, protocol
+    // address 5); -1 = none. A slave answers the station it serves in stationRegister.
     int modelRegister = -1;
     int versionRegister = -1;
+    int stationRegister = -1;
+    // The model code the PLC reports (Host Link MM: 11h for CPM1 / CPM1A / SRM1, W353 6-3-28);
+    // -1 = the manual gives none.
+    int modelCode = -1;
+    // A unit address every slave answers besides its own (PL110: FFh, seed 003 3.1); -1 = none.
+    int anyStationUnit = -1;
+    // Writing the target's SystemRole::Run bit starts (1) and stops (0) the PLC (PL110 SM0 bit 0,
+    // seed 003 chapter 3); elsewhere the run bit is the PLC's to drive.
+    bool runBitStartsStops = false;
+    // The exception code for an illegal data value (Modbus: 03; the PL110 manual lists 04 as
+    // ILLEGAL DATA VALUE, seed 003 3.1).
+    int illegalValueException = 0x03;
 };
 
 // Where a device sits: the first unit, the bit inside it (-1 when the device is whole units)
@@ -91,6 +107,7 @@ struct MappedDevice {
     int bit = -1;
     DevicePart part = DevicePart::Bit;
     int unitOffset = 0;
+    bool readOnly = false; // the range's: the protocol refuses writes here
 };
 
 const ProtocolMap *findProtocolMap(const Target &target, ProtocolId protocol);

@@ -16,6 +16,7 @@ std::vector<ProtocolMap> cpm1ProtocolMaps() {
     ProtocolMap m;
     m.protocol = ProtocolId::HostLink;
     m.description = QT_TRANSLATE_NOOP("rung::model::Target", "Omron Host Link (C-mode)");
+    m.modelCode = 0x11; // MM: "C2000H/CQM1/CPM1/CPM1A/SRM1" (W353 6-3-28)
     m.ranges = {
         {"IN", P::Value, S::HostLinkIr, 0, 0},
         {"IN", P::Bit, S::HostLinkIr, 0, 0},

@@ -152,6 +152,44 @@ TEST(ProtocolMap, Pl110ModbusBitsAndWordsOfProtocolsMd) {
     EXPECT_EQ(i256->index, 256);
 }
 
+TEST(ProtocolMap, Pl110SlaveFactsOfSeed003Chapter3) {
+    const Target &t = Target::get(Family::Pl110);
+    const ProtocolMap &m = *findProtocolMap(t, ProtocolId::Modbus);
+    EXPECT_EQ(m.stationRegister, 5);       // "Indirizzo di protocollo"
+    EXPECT_EQ(m.anyStationUnit, 0xFF);     // "indirizzo 0xFF a cui risponde qualsiasi slave"
+    EXPECT_TRUE(m.runBitStartsStops);      // SM0 bit 0
+    EXPECT_EQ(m.illegalValueException, 4); // "ILLEGAL DATA VALUE (0x04)"
+    // The R column: inputs as words, timer / counter bits, analog inputs are read only; the
+    // inputs as bits, outputs and analog outputs are R/W.
+    const auto readOnly = [&](S space, int unit, int bit = -1) {
+        const auto d = fromProtocol(t, m, space, unit, bit);
+        EXPECT_TRUE(d.has_value()) << unit;
+        return d && d->readOnly;
+    };
+    EXPECT_TRUE(readOnly(S::HoldingRegisters, 100, 0));
+    EXPECT_TRUE(readOnly(S::HoldingRegisters, 300, 0));
+    EXPECT_TRUE(readOnly(S::HoldingRegisters, 350, 15));
+    EXPECT_TRUE(readOnly(S::HoldingRegisters, 19000));
+    EXPECT_TRUE(readOnly(S::Coils, 4800));
+    EXPECT_TRUE(readOnly(S::Coils, 5615));
+    EXPECT_FALSE(readOnly(S::Coils, 1600));
+    EXPECT_FALSE(readOnly(S::Coils, 2400));
+    EXPECT_FALSE(readOnly(S::HoldingRegisters, 150, 0));
+    EXPECT_FALSE(readOnly(S::HoldingRegisters, 19400));
+    EXPECT_FALSE(readOnly(S::HoldingRegisters, 2000));
+}
+
+TEST(ProtocolMap, Cpm1HostLinkModelCodeOfW353) {
+    EXPECT_EQ(findProtocolMap(Target::get(Family::Cpm1), ProtocolId::HostLink)->modelCode, 0x11);
+    // The Vigor maps have no run bit, model code or any-station address.
+    for (const ProtocolMap &m : Target::get(Family::Vigor).protocolMaps) {
+        EXPECT_FALSE(m.runBitStartsStops);
+        EXPECT_EQ(m.modelCode, -1);
+        EXPECT_EQ(m.anyStationUnit, -1);
+        EXPECT_EQ(m.illegalValueException, 3);
+    }
+}
+
 TEST(ProtocolMap, Cpm1HostLinkAreas) {
     const Target &t = Target::get(Family::Cpm1);
     const auto H = ProtocolId::HostLink;

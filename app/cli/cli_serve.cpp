@@ -1,0 +1,316 @@
+#include "cli_serve.h"
+
+#include "cli_load_program.h"
+
+#include "app/virtual_plc/virtual_plc.h"
+#include "comms/transport/pty_transport.h"
+#include "comms/transport/serial_transport.h"
+
+#include <QCoreApplication>
+
+#include <csignal>
+#include <ctime>
+#include <mutex>
+#include <pthread.h>
+
+namespace rung::app {
+
+namespace {
+
+struct Tr {
+    Q_DECLARE_TR_FUNCTIONS(rung::app::Serve)
+};
+
+using comms::SerialSettings;
+using comms::slave::Fault;
+
+QString usage() {
+    return Tr::tr("usage: rungstudio-cli serve FILE [--target T] [--model M] --protocol "
+                  "vigor|modbus|modbus-tcp|hostlink (--pty | --port NAME | --tcp HOST:PORT) "
+                  "[--station N] [--baud B] [--format 8N1|7E1|7E2|...] [--period MS] "
+                  "[--fault bad-checksum|silent|wrong-station|garbage|truncated|split]");
+}
+
+struct ProtocolChoice {
+    const char *name;
+    model::ProtocolId id;
+    comms::modbus::Framing framing;
+    int station;      // the default station / unit
+    int firstStation; // the range the protocol numbers stations in
+    int lastStation;
+    SerialSettings line; // the PLC's default line (protocols.md)
+};
+
+// protocols.md: Vigor CP1 19200 7E1, station 0..255 (CP2); Modbus 1..247, PL110 19200 8N1;
+// Host Link 9600 7E2, units 00..31.
+const ProtocolChoice kProtocols[] = {
+    {"vigor",
+     model::ProtocolId::VigorLink,
+     comms::modbus::Framing::Rtu,
+     0,
+     0,
+     255,
+     {19200, 7, SerialSettings::Parity::Even, 1, SerialSettings::Flow::None}},
+    {"modbus",
+     model::ProtocolId::Modbus,
+     comms::modbus::Framing::Rtu,
+     1,
+     1,
+     247,
+     {19200, 8, SerialSettings::Parity::None, 1, SerialSettings::Flow::None}},
+    {"modbus-tcp",
+     model::ProtocolId::Modbus,
+     comms::modbus::Framing::Tcp,
+     1,
+     1,
+     247,
+     {19200, 8, SerialSettings::Parity::None, 1, SerialSettings::Flow::None}},
+    {"hostlink",
+     model::ProtocolId::HostLink,
+     comms::modbus::Framing::Rtu,
+     0,
+     0,
+     31,
+     {9600, 7, SerialSettings::Parity::Even, 2, SerialSettings::Flow::None}},
+};
+
+// "8N1", "7E2": data bits, parity (N, E, O), stop bits.
+bool parseFormat(const QString &text, SerialSettings *line) {
+    if (text.size() != 3)
+        return false;
+    const int data = text[0].digitValue();
+    const QChar parity = text[1].toUpper();
+    const int stop = text[2].digitValue();
+    if (data < 5 || data > 8 || (stop != 1 && stop != 2))
+        return false;
+    if (parity == u'N')
+        line->parity = SerialSettings::Parity::None;
+    else if (parity == u'E')
+        line->parity = SerialSettings::Parity::Even;
+    else if (parity == u'O')
+        line->parity = SerialSettings::Parity::Odd;
+    else
+        return false;
+    line->dataBits = data;
+    line->stopBits = stop;
+    return true;
+}
+
+// What ended the serving: a signal, or the line failing.
+struct Ending {
+    std::mutex mutex;
+    QString failure;
+};
+
+} // namespace
+
+int runServeCommand(const QStringList &args, QTextStream &out, QTextStream &err) {
+    ProgramOptions program;
+    QString protocolName, portName, tcp, faultName;
+    bool pty = false;
+    int station = -1, baud = 0;
+    qint64 period = 0;
+    QString format;
+    auto fail = [&err](const QString &message) {
+        err << message << '\n' << usage() << '\n';
+        return 2;
+    };
+    for (qsizetype i = 0; i < args.size(); ++i) {
+        const QString &a = args[i];
+        const auto value = [&](QString *into) {
+            if (i + 1 >= args.size())
+                return false;
+            *into = args[++i];
+            return true;
+        };
+        const auto number = [&](auto *into, qint64 low, qint64 high) {
+            QString text;
+            bool ok = value(&text);
+            const qint64 n = text.toLongLong(&ok);
+            if (!ok || n < low || n > high)
+                return false;
+            *into = static_cast<std::remove_pointer_t<decltype(into)>>(n);
+            return true;
+        };
+        bool ok = true;
+        if (a == QLatin1String("--target"))
+            ok = value(&program.target);
+        else if (a == QLatin1String("--model"))
+            ok = value(&program.model);
+        else if (a == QLatin1String("--protocol"))
+            ok = value(&protocolName);
+        else if (a == QLatin1String("--pty"))
+            pty = true;
+        else if (a == QLatin1String("--port"))
+            ok = value(&portName);
+        else if (a == QLatin1String("--tcp"))
+            ok = value(&tcp);
+        else if (a == QLatin1String("--station"))
+            ok = number(&station, 0, 255);
+        else if (a == QLatin1String("--baud"))
+            ok = number(&baud, 50, 4'000'000);
+        else if (a == QLatin1String("--format"))
+            ok = value(&format);
+        else if (a == QLatin1String("--period"))
+            ok = number(&period, 1, 60'000);
+        else if (a == QLatin1String("--fault"))
+            ok = value(&faultName);
+        else if (!a.startsWith(QLatin1String("--")) && program.file.isEmpty())
+            program.file = a;
+        else
+            return fail(Tr::tr("unexpected argument %1").arg(a));
+        if (!ok)
+            return fail(Tr::tr("%1 needs a valid value").arg(a));
+    }
+    if (program.file.isEmpty())
+        return fail(Tr::tr("no FILE given"));
+    const ProtocolChoice *choice = nullptr;
+    for (const ProtocolChoice &p : kProtocols)
+        if (protocolName == QLatin1String(p.name))
+            choice = &p;
+    if (!choice)
+        return fail(protocolName.isEmpty()
+                        ? Tr::tr("--protocol is required")
+                        : Tr::tr("unknown protocol %1 (vigor, modbus, modbus-tcp, hostlink)")
+                              .arg(protocolName));
+    if (int(pty) + int(!portName.isEmpty()) + int(!tcp.isEmpty()) != 1)
+        return fail(Tr::tr("give one of --pty, --port NAME and --tcp HOST:PORT"));
+    if (choice->framing == comms::modbus::Framing::Tcp && tcp.isEmpty())
+        return fail(Tr::tr("--protocol modbus-tcp is served over --tcp HOST:PORT"));
+    QHostAddress host;
+    quint16 tcpPort = 0;
+    if (!tcp.isEmpty()) {
+        const qsizetype colon = tcp.lastIndexOf(u':');
+        bool ok = colon > 0;
+        const uint port = ok ? tcp.mid(colon + 1).toUInt(&ok) : 0;
+        const QString name = tcp.left(colon);
+        host = name == QLatin1String("localhost") ? QHostAddress(QHostAddress::LocalHost)
+                                                  : QHostAddress(name);
+        if (!ok || port > 65535 || host.isNull())
+            return fail(Tr::tr("--tcp needs HOST:PORT with a numeric address, e.g. "
+                               "127.0.0.1:1502, not %1")
+                            .arg(tcp));
+        tcpPort = quint16(port);
+    }
+    comms::slave::SlaveOptions slave;
+    slave.protocol = choice->id;
+    slave.framing = choice->framing;
+    slave.line = choice->line;
+    if (baud > 0)
+        slave.line.baud = baud;
+    if (!format.isEmpty() && !parseFormat(format, &slave.line))
+        return fail(Tr::tr("--format needs data bits, parity and stop bits, e.g. 8N1 or 7E2, "
+                           "not %1")
+                        .arg(format));
+    slave.station = station >= 0 ? station : choice->station;
+    if (slave.station < choice->firstStation || slave.station > choice->lastStation)
+        return fail(Tr::tr("--station %1 is outside %2..%3, the stations of %4")
+                        .arg(slave.station)
+                        .arg(choice->firstStation)
+                        .arg(choice->lastStation)
+                        .arg(protocolName));
+    if (!faultName.isEmpty()) {
+        const auto fault = comms::slave::faultFromName(faultName);
+        if (!fault)
+            return fail(Tr::tr("unknown fault %1 (%2)")
+                            .arg(faultName, comms::slave::faultNames().join(QLatin1String(", "))));
+        slave.fault = *fault;
+    }
+
+    LoadedProgram loaded;
+    if (const int status = loadProgram(program, &loaded, err); status != 0)
+        return status;
+    const model::ProtocolMap *map = model::findProtocolMap(*loaded.target, choice->id);
+    if (!map) {
+        QStringList spoken;
+        for (const ProtocolChoice &p : kProtocols)
+            if (model::findProtocolMap(*loaded.target, p.id))
+                spoken << QLatin1String(p.name);
+        err << (spoken.isEmpty() ? Tr::tr("%1 has no published protocol to serve (protocols.md)")
+                                       .arg(loaded.target->displayName)
+                                 : Tr::tr("%1 does not speak %2; it speaks %3")
+                                       .arg(loaded.target->displayName, protocolName,
+                                            spoken.join(QLatin1String(", "))))
+            << '\n';
+        return 2;
+    }
+
+    // SIGINT and SIGTERM are taken by this thread alone (sigtimedwait below): blocked here
+    // before any thread starts, so every thread the virtual PLC makes inherits the mask.
+    sigset_t stopSignals, previous;
+    sigemptyset(&stopSignals);
+    sigaddset(&stopSignals, SIGINT);
+    sigaddset(&stopSignals, SIGTERM);
+    pthread_sigmask(SIG_BLOCK, &stopSignals, &previous);
+    struct RestoreMask {
+        sigset_t mask;
+        ~RestoreMask() { pthread_sigmask(SIG_SETMASK, &mask, nullptr); }
+    } restore{previous};
+
+    auto ending = std::make_shared<Ending>();
+    slave.onFailure = [ending](const QString &message) {
+        std::lock_guard lock(ending->mutex);
+        ending->failure = message;
+    };
+    VirtualPlc::Options options;
+    options.slave = slave;
+    options.periodMs = period;
+    VirtualPlc plc(loaded.program, options);
+    QString error;
+    QString where;
+    if (pty) {
+        auto transport = comms::PtyTransport::createPair(&error);
+        if (transport) {
+            where = transport->peerPath();
+            if (!plc.serve(std::move(transport), &error))
+                where.clear();
+        }
+    } else if (!portName.isEmpty()) {
+        if (plc.serve(std::make_unique<comms::SerialTransport>(portName, slave.line), &error))
+            where = portName;
+    } else if (plc.listen(host, tcpPort, &error)) {
+        where = QStringLiteral("%1:%2").arg(host.toString()).arg(plc.port());
+    }
+    if (where.isEmpty()) {
+        err << error << '\n';
+        return 2;
+    }
+    // The first line says where the PLC is reached; a script reads it before anything else.
+    out << where << Qt::endl;
+    err << Tr::tr("%1 serves %2 (%3, %4, station %5) on %6; stop it with Ctrl+C")
+               .arg(loaded.target->displayName, program.file,
+                    QCoreApplication::translate("rung::model::Target", map->description),
+                    protocolName)
+               .arg(slave.station)
+               .arg(where)
+        << Qt::endl;
+
+    QString failure;
+    while (true) {
+        const timespec poll{0, 200'000'000};
+        if (sigtimedwait(&stopSignals, nullptr, &poll) > 0)
+            break;
+        std::lock_guard lock(ending->mutex);
+        if (!ending->failure.isEmpty()) {
+            failure = ending->failure;
+            break;
+        }
+    }
+    plc.stop();
+    const comms::slave::SlaveStatistics s = plc.statistics();
+    err << Tr::tr("%1 requests answered, %2 refused with an error, %3 for other stations or "
+                  "broadcast, %4 frames dropped; %5 writes")
+               .arg(s.answered)
+               .arg(s.refused)
+               .arg(s.ignored)
+               .arg(s.dropped)
+               .arg(s.writes)
+        << '\n';
+    if (!failure.isEmpty()) {
+        err << failure << '\n';
+        return 2;
+    }
+    return 0;
+}
+
+} // namespace rung::app

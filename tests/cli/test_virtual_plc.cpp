@@ -1,0 +1,199 @@
+// The virtual PLC (app/virtual_plc): a simulated program served by a comms slave. A master's
+// write reaches the program at a scan boundary and is answered after it took effect; reads
+// show what the program made of it. Masters here are our own codecs over a real pty or TCP.
+
+#include "comms/protocol/host_link.h"
+#include "comms/protocol/modbus.h"
+#include "comms/protocol/vigor_link.h"
+#include "comms/transport/tcp_transport.h"
+#include "tests/cli/virtual_plc_fixture.h"
+
+#include <gtest/gtest.h>
+
+namespace rung::test {
+namespace {
+
+using namespace comms;
+using model::ProtocolId;
+
+// V1 follows V0, Q1 follows I1 and Q2 follows M1.
+constexpr const char *kPl110 = "; target: pl110\n"
+                               "LD I1\nOUT Q1\nLD M1\nOUT Q2\nLD SM0.0\nMOV V0 V1\nEND\n";
+// Y0 follows M0; D1 = D0 + 1.
+constexpr const char *kVigor = "; target: vigor\n"
+                               "LD M0\nOUT Y0\nLD M9000\nADD D0 K1 D1\nEND\n";
+// 010.00 follows HR 00.00 (IR 000 is an input: the program's own); DM 0001 = DM 0000.
+constexpr const char *kCpm1 = "; target: cpm1\n"
+                              "LD HR 00.00\nOUT 010.00\nLD 253.13\nMOV(21) DM 0000 DM 0001\n"
+                              "END(01)\n";
+
+template <typename Decoder>
+FrameStatus exchange(Transport &t, const QByteArray &request, Decoder &d) {
+    QString error;
+    EXPECT_TRUE(t.write(request, QDeadlineTimer(1000), &error)) << error.toStdString();
+    const QDeadlineTimer deadline(2000);
+    while (d.status() == FrameStatus::NeedMore) {
+        const ReadResult r = t.read(deadline);
+        if (r.status != ReadResult::Status::Data)
+            break;
+        d.feed(r.bytes);
+        if constexpr (std::is_same_v<Decoder, hostlink::ReplyDecoder>)
+            if (d.takeDelimiterRequest())
+                t.write("\r", QDeadlineTimer(1000), &error);
+    }
+    return d.status();
+}
+
+struct ModbusMaster {
+    Transport &t;
+    modbus::Framing framing;
+    int transaction = 0;
+
+    modbus::ReplyDecoder ask(const modbus::Request &r) {
+        ++transaction;
+        modbus::ReplyDecoder d(framing, 1, r, transaction);
+        const QByteArray pdu = modbus::encodeRequestPdu(r);
+        exchange(t,
+                 framing == modbus::Framing::Rtu ? modbus::rtuFrame(1, pdu)
+                                                 : modbus::tcpFrame(transaction, 1, pdu),
+                 d);
+        return d;
+    }
+    bool write(const modbus::Request &r) { return ask(r).status() == FrameStatus::Complete; }
+    int reg(int address) {
+        const auto d = ask({modbus::ReadHoldingRegisters, address, 1, {}, {}});
+        return d.status() == FrameStatus::Complete ? d.response().registers.front() : -1;
+    }
+    int coil(int address) {
+        const auto d = ask({modbus::ReadCoils, address, 1, {}, {}});
+        return d.status() == FrameStatus::Complete ? int(d.response().bits.front()) : -1;
+    }
+};
+
+TEST(VirtualPlc, Pl110OverModbusRtuOnAPtyRunsWhatTheMasterWrites) {
+    VirtualPlcUnderTest v(kPl110, {ProtocolId::Modbus, modbus::Framing::Rtu, 1}, false);
+    ASSERT_TRUE(v.ready());
+    PtyTransport pty(v.path);
+    QString error;
+    ASSERT_TRUE(pty.open(&error)) << error.toStdString();
+    ModbusMaster m{pty, modbus::Framing::Rtu};
+    // I1 (bit 1600) ON: Q1 (bit 2400) follows within scans.
+    ASSERT_TRUE(m.write({modbus::WriteSingleCoil, 1600, 1, {}, {true}}));
+    EXPECT_TRUE(eventually([&] { return m.coil(2400) == 1; }));
+    // V0 (register 2000) = 4321: V1 follows.
+    ASSERT_TRUE(m.write({modbus::WriteSingleRegister, 2000, 1, {4321}, {}}));
+    EXPECT_EQ(m.reg(2000), 4321); // acknowledged after it took effect: read back at once
+    EXPECT_TRUE(eventually([&] { return m.reg(2001) == 4321; }));
+    // Q1 as a word bit (register 150, bit 0), I1 as a read-only word (100).
+    EXPECT_EQ(m.reg(150) & 1, 1);
+    EXPECT_EQ(m.reg(100) & 1, 1);
+}
+
+TEST(VirtualPlc, Pl110RunBitStopsAndStartsTheScan) {
+    VirtualPlcUnderTest v(kPl110, {ProtocolId::Modbus, modbus::Framing::Tcp, 1}, true);
+    ASSERT_TRUE(v.ready());
+    TcpTransport tcp(QStringLiteral("127.0.0.1"), v.port);
+    QString error;
+    ASSERT_TRUE(tcp.open(&error)) << error.toStdString();
+    ModbusMaster m{tcp, modbus::Framing::Tcp};
+    EXPECT_EQ(m.coil(16000), 1); // SM0.0: RUN
+    ASSERT_TRUE(m.write({modbus::WriteSingleCoil, 16000, 1, {}, {false}}));
+    EXPECT_EQ(m.coil(16000), 0);
+    EXPECT_EQ(v.plc->image()->mode(), slave::OperatingMode::Program);
+    // Stopped: the write is taken, the program does not run on it.
+    ASSERT_TRUE(m.write({modbus::WriteSingleRegister, 2000, 1, {77}, {}}));
+    EXPECT_EQ(m.reg(2000), 77);
+    std::this_thread::sleep_for(std::chrono::milliseconds(60)); // six scan periods
+    EXPECT_NE(m.reg(2001), 77);
+    ASSERT_TRUE(m.write({modbus::WriteSingleCoil, 16000, 1, {}, {true}}));
+    EXPECT_TRUE(eventually([&] { return m.reg(2001) == 77; }));
+}
+
+TEST(VirtualPlc, VigorCp2ModbusTcpAndTheLinkOnAPty) {
+    {
+        VirtualPlcUnderTest v(kVigor, {ProtocolId::Modbus, modbus::Framing::Tcp, 1}, true);
+        ASSERT_TRUE(v.ready());
+        TcpTransport tcp(QStringLiteral("127.0.0.1"), v.port);
+        QString error;
+        ASSERT_TRUE(tcp.open(&error));
+        ModbusMaster m{tcp, modbus::Framing::Tcp};
+        ASSERT_TRUE(m.write({modbus::WriteSingleCoil, 512, 1, {}, {true}})); // M0
+        EXPECT_TRUE(eventually([&] { return m.coil(0) == 1; }));             // Y0
+        ASSERT_TRUE(m.write({modbus::WriteSingleRegister, 0, 1, {41}, {}})); // D0
+        EXPECT_TRUE(eventually([&] { return m.reg(1) == 42; }));             // D1
+    }
+    VirtualPlcUnderTest v(kVigor, {ProtocolId::VigorLink, {}, 0}, false);
+    ASSERT_TRUE(v.ready());
+    PtyTransport pty(v.path);
+    QString error;
+    ASSERT_TRUE(pty.open(&error));
+    // M0 ON (70h, bit address 0080h << 3), then Y0 (0040h) reads 1; D0 = 9 (61h at 1C00h).
+    const vigor::Request on{0, vigor::Command::BitOn, vigor::bitAddress(0x80, 0), 0, {}};
+    vigor::ReplyDecoder onReply(on);
+    ASSERT_EQ(exchange(pty, vigor::encodeRequest(on), onReply), FrameStatus::Complete);
+    const vigor::Request write{0, vigor::Command::Write, 0x1C00, 2, QByteArray("\x09\x00", 2)};
+    vigor::ReplyDecoder writeReply(write);
+    ASSERT_EQ(exchange(pty, vigor::encodeRequest(write), writeReply), FrameStatus::Complete);
+    EXPECT_TRUE(eventually([&] {
+        const vigor::Request read{0, vigor::Command::Read, 0x0040, 1, {}};
+        vigor::ReplyDecoder d(read);
+        return exchange(pty, vigor::encodeRequest(read), d) == FrameStatus::Complete &&
+               d.reply().data == QByteArray(1, '\x01');
+    }));
+    EXPECT_TRUE(eventually([&] {
+        const vigor::Request read{0, vigor::Command::Read, 0x1C02, 2, {}};
+        vigor::ReplyDecoder d(read);
+        return exchange(pty, vigor::encodeRequest(read), d) == FrameStatus::Complete &&
+               d.reply().data == QByteArray("\x0A\x00", 2);
+    }));
+}
+
+TEST(VirtualPlc, HostLinkRefusesWritesInRunUntilMonitor) {
+    VirtualPlcUnderTest v(kCpm1, {ProtocolId::HostLink, {}, 0}, false);
+    ASSERT_TRUE(v.ready());
+    PtyTransport pty(v.path);
+    QString error;
+    ASSERT_TRUE(pty.open(&error));
+    auto ask = [&pty](const hostlink::Frame &command) {
+        hostlink::ReplyDecoder d(command);
+        exchange(pty, hostlink::encode(command).front(), d);
+        return d;
+    };
+    const auto dm = model::ProtocolSpace::HostLinkDm;
+    hostlink::ReplyDecoder refused = ask(hostlink::writeCommand(0, dm, 0, {0x1234}));
+    ASSERT_EQ(refused.status(), FrameStatus::Failed);
+    EXPECT_EQ(refused.error().code, hostlink::NotInRun);
+    ASSERT_EQ(ask(hostlink::modeCommand(0, hostlink::Mode::Monitor)).status(),
+              FrameStatus::Complete);
+    EXPECT_EQ(hostlink::modeOfStatus(ask(hostlink::statusCommand(0)).reply().status),
+              hostlink::Mode::Monitor);
+    ASSERT_EQ(ask(hostlink::writeCommand(0, dm, 0, {0x1234})).status(), FrameStatus::Complete);
+    EXPECT_TRUE(eventually([&] {
+        const auto d = ask(hostlink::readCommand(0, dm, 1, 1));
+        return d.status() == FrameStatus::Complete && d.reply().words.front() == 0x1234;
+    }));
+    // HR 00.00 ON by WH: 010.00 follows (IR 010 read by RR).
+    ASSERT_EQ(ask(hostlink::writeCommand(0, model::ProtocolSpace::HostLinkHr, 0, {1})).status(),
+              FrameStatus::Complete);
+    EXPECT_TRUE(eventually([&] {
+        const auto d = ask(hostlink::readCommand(0, model::ProtocolSpace::HostLinkIr, 10, 1));
+        return d.status() == FrameStatus::Complete && (d.reply().words.front() & 1);
+    }));
+    // PROGRAM stops the scan: a forced output stays as forced... and KS is taken there too.
+    ASSERT_EQ(ask(hostlink::modeCommand(0, hostlink::Mode::Program)).status(),
+              FrameStatus::Complete);
+    EXPECT_EQ(hostlink::modeOfStatus(ask(hostlink::statusCommand(0)).reply().status),
+              hostlink::Mode::Program);
+}
+
+TEST(VirtualPlc, StopEndsAWaitingWriteAndTheWorkers) {
+    VirtualPlcUnderTest v(kPl110, {ProtocolId::Modbus, modbus::Framing::Tcp, 1}, true);
+    ASSERT_TRUE(v.ready());
+    const auto started = std::chrono::steady_clock::now();
+    v.plc->stop();
+    v.plc.reset();
+    EXPECT_LT(std::chrono::steady_clock::now() - started, std::chrono::seconds(2));
+}
+
+} // namespace
+} // namespace rung::test

@@ -1,0 +1,73 @@
+#pragma once
+
+// A virtual PLC in the test's own process: a program file loaded as `serve` loads it, served
+// by VirtualPlc over a new pseudo-terminal or TCP loopback.
+
+#include "app/cli/cli_load_program.h"
+#include "app/virtual_plc/virtual_plc.h"
+#include "comms/transport/pty_transport.h"
+
+#include <QFile>
+#include <QTemporaryDir>
+
+#include <gtest/gtest.h>
+
+#include <chrono>
+#include <functional>
+#include <memory>
+#include <thread>
+
+namespace rung::test {
+
+struct VirtualPlcUnderTest {
+    QTemporaryDir dir;
+    std::unique_ptr<app::VirtualPlc> plc;
+    QString path; // the pty a master opens, or empty over TCP
+    quint16 port = 0;
+
+    // `listing` is the program; over TCP when tcp, else over a pty.
+    VirtualPlcUnderTest(const char *listing, comms::slave::SlaveOptions options, bool tcp,
+                        const char *suffix = "il") {
+        const QString file = dir.filePath(QStringLiteral("plc.") + QLatin1String(suffix));
+        QFile f(file);
+        EXPECT_TRUE(f.open(QIODevice::WriteOnly));
+        f.write(listing);
+        f.close();
+        QString errText;
+        QTextStream err(&errText);
+        app::LoadedProgram loaded;
+        EXPECT_EQ(app::loadProgram({file, {}, {}}, &loaded, err), 0) << errText.toStdString();
+        if (!loaded.program)
+            return;
+        app::VirtualPlc::Options o;
+        o.slave = std::move(options);
+        o.periodMs = 10;
+        plc = std::make_unique<app::VirtualPlc>(loaded.program, o);
+        QString error;
+        if (tcp) {
+            EXPECT_TRUE(plc->listen(QHostAddress::LocalHost, 0, &error)) << error.toStdString();
+            port = plc->port();
+            return;
+        }
+        auto pty = comms::PtyTransport::createPair(&error);
+        EXPECT_TRUE(pty) << error.toStdString();
+        if (!pty)
+            return;
+        path = pty->peerPath();
+        EXPECT_TRUE(plc->serve(std::move(pty), &error)) << error.toStdString();
+    }
+    bool ready() const { return plc && (!path.isEmpty() || port != 0); }
+};
+
+// Polls until the condition holds or the deadline passes (the program runs in real time).
+inline bool eventually(const std::function<bool()> &condition, int ms = 3000) {
+    const auto end = std::chrono::steady_clock::now() + std::chrono::milliseconds(ms);
+    while (!condition()) {
+        if (std::chrono::steady_clock::now() > end)
+            return false;
+        std::this_thread::sleep_for(std::chrono::milliseconds(10));
+    }
+    return true;
+}
+
+} // namespace rung::test

@@ -1,0 +1,172 @@
+// The Vigor Computer Link slave (seed 001 B-5): protocols.md's vectors from the PLC's side,
+// byte for byte, and the error codes it answers with.
+
+#include "comms/slave/vigor_responder.h"
+#include "tests/comms/hex.h"
+#include "tests/comms/slave_fixture.h"
+
+#include <gtest/gtest.h>
+
+namespace rung::comms::slave {
+namespace {
+
+using test::bytes;
+using test::Image;
+
+const model::Target &vigor() {
+    return model::Target::get(model::Family::Vigor);
+}
+
+struct Fixture {
+    Image plc{vigor()};
+    VigorResponder slave{vigor(), *model::findProtocolMap(vigor(), model::ProtocolId::VigorLink), 0,
+                         plc.image};
+
+    QByteArray ask(const QByteArray &request) {
+        const QByteArrayList out = slave.feed(request);
+        EXPECT_LE(out.size(), 1);
+        return out.value(0);
+    }
+};
+
+TEST(VigorSlave, Vector1ReadM8ToM23) {
+    Fixture f;
+    // M8..M15 = A7h, M16..M23 = 93h (bit 0 = the lowest device number).
+    for (int i = 0; i < 8; ++i) {
+        f.plc.set(qPrintable(QStringLiteral("M%1").arg(8 + i)), (0xA7 >> i) & 1);
+        f.plc.set(qPrintable(QStringLiteral("M%1").arg(16 + i)), (0x93 >> i) & 1);
+    }
+    EXPECT_EQ(f.ask(bytes("02 30 30 35 31 30 30 38 31 30 32 03 46 34")),
+              bytes("06 30 30 35 31 30 30 41 37 39 33 03 30 44"));
+}
+
+TEST(VigorSlave, Vector2ReadD1D2LowByteFirst) {
+    Fixture f;
+    f.plc.set("D1", 0x1234);
+    f.plc.set("D2", 0xABCD);
+    EXPECT_EQ(f.ask(bytes("02 30 30 35 31 31 43 30 32 30 34 03 30 33")),
+              bytes("06 30 30 35 31 30 30 33 34 31 32 43 44 41 42 03 46 44"));
+}
+
+TEST(VigorSlave, Vector3WriteY30ToY47) {
+    Fixture f;
+    EXPECT_EQ(f.ask(bytes("02 30 30 36 31 30 30 34 33 30 32 43 36 33 45 03 45 34")),
+              bytes("06 30 30 36 31 30 30 03 32 41"));
+    // C6h on Y30..Y37 (octal), 3Eh on Y40..Y47.
+    const char *on[] = {"Y31", "Y32", "Y36", "Y37", "Y41", "Y42", "Y43", "Y44", "Y45"};
+    const char *off[] = {"Y30", "Y33", "Y34", "Y35", "Y40", "Y46", "Y47"};
+    for (const char *d : on)
+        EXPECT_TRUE(f.plc.bit(d)) << d;
+    for (const char *d : off)
+        EXPECT_FALSE(f.plc.bit(d)) << d;
+}
+
+TEST(VigorSlave, Vector4WriteD1) {
+    Fixture f;
+    EXPECT_EQ(f.ask(bytes("02 30 30 36 31 31 43 30 32 30 32 32 35 41 33 03 44 44")),
+              bytes("06 30 30 36 31 30 30 03 32 41"));
+    EXPECT_EQ(f.plc.value("D1") & 0xFFFF, 0xA325);
+}
+
+TEST(VigorSlave, Vectors5And6BitOnAndOff) {
+    Fixture f;
+    f.plc.set("M100", 1);
+    EXPECT_EQ(f.ask(bytes("02 30 30 37 30 30 34 30 41 03 39 46")),
+              bytes("06 30 30 37 30 30 30 03 32 41"));
+    EXPECT_TRUE(f.plc.bit("M10"));
+    EXPECT_EQ(f.ask(bytes("02 30 30 37 31 30 34 36 34 03 39 39")),
+              bytes("06 30 30 37 31 30 30 03 32 42"));
+    EXPECT_FALSE(f.plc.bit("M100"));
+    EXPECT_EQ(f.slave.statistics().writes, 2u);
+}
+
+TEST(VigorSlave, ARequestInPiecesAndNoiseBeforeItIsAnsweredOnce) {
+    Fixture f;
+    f.plc.set("D1", 0x1234);
+    f.plc.set("D2", 0xABCD);
+    const QByteArray request = bytes("02 30 30 35 31 31 43 30 32 30 34 03 30 33");
+    QByteArrayList out = f.slave.feed(QByteArray("\xFF\x00zz", 4));
+    for (qsizetype i = 0; i < request.size(); ++i)
+        out += f.slave.feed(request.sliced(i, 1));
+    ASSERT_EQ(out.size(), 1);
+    EXPECT_EQ(out.front(), bytes("06 30 30 35 31 30 30 33 34 31 32 43 44 41 42 03 46 44"));
+}
+
+TEST(VigorSlave, AnotherStationsRequestIsNotAnswered) {
+    Fixture f;
+    vigor::Request r{5, vigor::Command::Read, 0x1C02, 4, {}};
+    EXPECT_TRUE(f.slave.feed(vigor::encodeRequest(r)).isEmpty());
+    EXPECT_EQ(f.slave.statistics().ignored, 1u);
+    // Nor a broken one for another station: its sum error is not ours to report.
+    QByteArray broken = vigor::encodeRequest(r);
+    broken[broken.size() - 1] = broken.back() == '0' ? '1' : '0';
+    EXPECT_TRUE(f.slave.feed(broken).isEmpty());
+}
+
+// The reply's error code for a request to this station.
+int errorOf(Fixture &f, const QByteArray &request) {
+    const QByteArray reply = f.ask(request);
+    if (reply.size() < 7)
+        return -1;
+    return reply.mid(5, 2).toInt(nullptr, 16);
+}
+
+TEST(VigorSlave, ErrorCodesOfB5) {
+    Fixture f;
+    // 11h: the sum does not match.
+    QByteArray badSum = bytes("02 30 30 35 31 31 43 30 32 30 34 03 30 33");
+    badSum[badSum.size() - 1] = '4';
+    EXPECT_EQ(errorOf(f, badSum), 0x11);
+    // 10h: a character that is not hexadecimal, with a correct sum.
+    QByteArray body("00511C0G04\x03");
+    EXPECT_EQ(errorOf(f, "\x02" + body + vigor::sum(body)), 0x10);
+    // 12h: no such command.
+    body = QByteArray("00521C0204\x03");
+    EXPECT_EQ(errorOf(f, "\x02" + body + vigor::sum(body)), 0x12);
+    // 28h: more than 128 bytes, an address past the map, a read that runs off its end.
+    EXPECT_EQ(errorOf(f, vigor::encodeRequest({0, vigor::Command::Read, 0x1C00, 129, {}})), 0x28);
+    EXPECT_EQ(errorOf(f, vigor::encodeRequest({0, vigor::Command::Read, 0x6000, 2, {}})), 0x28);
+    EXPECT_EQ(errorOf(f, vigor::encodeRequest({0, vigor::Command::Read, 0x5BFE, 4, {}})), 0x28);
+    EXPECT_EQ(errorOf(f, vigor::encodeRequest({0, vigor::Command::Write, 0x0400, 1, "\x01"})),
+              0x28);
+    EXPECT_EQ(f.slave.statistics().refused, 7u);
+    EXPECT_EQ(f.slave.statistics().answered, 0u);
+}
+
+TEST(VigorSlave, BitCommandsActOnBitDevicesOnly) {
+    Fixture f;
+    // S20: byte 0302h, bit 4 -> 1814h (protocols.md).
+    EXPECT_EQ(errorOf(f, vigor::encodeRequest({0, vigor::Command::BitOn, 0x1814, 0, {}})), 0);
+    EXPECT_TRUE(f.plc.bit("S20"));
+    // T0's contact (0380h) is no X, Y, M or S: 28h, and nothing changes.
+    EXPECT_EQ(errorOf(f, vigor::encodeRequest({0, vigor::Command::BitOn, 0x0380 << 3, 0, {}})),
+              0x28);
+    EXPECT_FALSE(f.plc.bit("T0"));
+}
+
+TEST(VigorSlave, AWordWrittenAsTwoBytesIsOneWriteOfTheWholeWord) {
+    Fixture f;
+    f.plc.set("D5", 0x1111);
+    const int before = f.plc.image->changes();
+    // D5 low byte only (1C0Ah): the high byte stays.
+    EXPECT_EQ(errorOf(f, vigor::encodeRequest({0, vigor::Command::Write, 0x1C0A, 1, "\x22"})), 0);
+    EXPECT_EQ(f.plc.value("D5"), 0x1122);
+    EXPECT_EQ(f.plc.image->changes(), before + 1);
+}
+
+TEST(VigorSlave, A32BitCounterValueReadsLowByteFirst) {
+    Fixture f;
+    f.plc.set("C200", 0x01020304);
+    const QByteArray reply = f.ask(vigor::encodeRequest({0, vigor::Command::Read, 0x1A00, 4, {}}));
+    vigor::ReplyDecoder d({0, vigor::Command::Read, 0x1A00, 4, {}});
+    ASSERT_EQ(d.feed(reply), FrameStatus::Complete);
+    EXPECT_EQ(d.reply().data, bytes("04 03 02 01"));
+}
+
+TEST(VigorSlave, TimerCoilsAreNotServedAndSaySo) {
+    Fixture f;
+    EXPECT_EQ(errorOf(f, vigor::encodeRequest({0, vigor::Command::Read, 0x0780, 1, {}})), 0x28);
+}
+
+} // namespace
+} // namespace rung::comms::slave
