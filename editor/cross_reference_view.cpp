@@ -187,6 +187,7 @@ void CrossReferenceView::refresh() {
         device->setText(0, symbol && !symbol->name.isEmpty()
                                ? QStringLiteral("%1  %2").arg(name, symbol->name)
                                : name);
+        device->setToolTip(0, device->text(0)); // a long name ends in "..." in a narrow dock
         int counts[3] = {0, 0, 0};
         for (const Place &p : places) {
             ++counts[static_cast<int>(p.use)];

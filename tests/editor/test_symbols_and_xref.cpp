@@ -80,6 +80,7 @@ TEST_F(XrefFixture, ADeviceShowsItsNameAndEachUseLeadsToItsRung) {
     ASSERT_EQ(tree->topLevelItemCount(), 1);
     QTreeWidgetItem *y0 = tree->topLevelItem(0);
     EXPECT_EQ(y0->text(0), QStringLiteral("Y0  Pump"));
+    EXPECT_EQ(y0->toolTip(0), y0->text(0)); // whole, when the column cuts a long name
     EXPECT_EQ(y0->text(3), QStringLiteral("main"));
     EXPECT_TRUE(y0->isExpanded());
     ASSERT_EQ(y0->childCount(), 2);
