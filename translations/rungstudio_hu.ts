@@ -42,7 +42,7 @@
 <context>
     <name>rung::app::Cli</name>
     <message>
-        <location filename="../app/cli/cli.cpp" line="+49"/>
+        <location filename="../app/cli/cli.cpp" line="+51"/>
         <location line="+45"/>
         <source>unexpected argument %1</source>
         <translation>váratlan argumentum: %1</translation>
@@ -53,7 +53,7 @@
         <translation>a --to értéke il, ladder vagy project lehet</translation>
     </message>
     <message>
-        <location line="-73"/>
+        <location line="-74"/>
         <source>usage:
   rungstudio-cli check FILE [--target %1] [--model M]
   rungstudio-cli convert FILE [--target T] [--from il|ladder|project] --to il|ladder|project [-o OUT] [--force]
@@ -72,7 +72,7 @@ A FILE utasításlista (.il), létra-szöveg (.ladder) vagy projekt (.rung).
 Kilépési kód: 0 nincs hiba, 1 a programban hiba van, 2 használati vagy I/O hiba.</translation>
     </message>
     <message>
-        <location line="+89"/>
+        <location line="+90"/>
         <source>nothing written: the list as typed would be lost</source>
         <translation>semmi sem íródott ki: a begépelt lista elveszne</translation>
     </message>
@@ -97,7 +97,7 @@ Kilépési kód: 0 nincs hiba, 1 a programban hiba van, 2 használati vagy I/O h
         <translation>%1 nem írható: %2</translation>
     </message>
     <message>
-        <location line="+28"/>
+        <location line="+32"/>
         <source>no command given</source>
         <translation>nincs megadva parancs</translation>
     </message>
@@ -1062,6 +1062,102 @@ Létradiagram- és utasításlista-szerkesztő a következő PLC-khez: %2.</tran
     </message>
 </context>
 <context>
+    <name>rung::app::Online</name>
+    <message>
+        <location filename="../app/cli/cli_online.cpp" line="+21"/>
+        <source>usage:</source>
+        <translation>használat:</translation>
+    </message>
+    <message>
+        <location line="+40"/>
+        <source>%1 needs a value</source>
+        <translation>%1 után érték kell</translation>
+    </message>
+    <message>
+        <location line="+9"/>
+        <source>unknown option %1</source>
+        <translation>ismeretlen kapcsoló: %1</translation>
+    </message>
+    <message>
+        <location line="+6"/>
+        <source>--target and --protocol are needed</source>
+        <translation>a --target és a --protocol megadása kötelező</translation>
+    </message>
+    <message>
+        <location line="+5"/>
+        <source>unknown target %1</source>
+        <translation>ismeretlen célrendszer: %1</translation>
+    </message>
+    <message>
+        <location line="+5"/>
+        <source>unknown protocol %1: vigor, modbus, modbus-tcp or hostlink</source>
+        <translation>ismeretlen protokoll: %1; lehet vigor, modbus, modbus-tcp vagy hostlink</translation>
+    </message>
+    <message>
+        <location line="+6"/>
+        <source>give exactly one of --port, --tcp and --pty</source>
+        <translation>a --port, a --tcp és a --pty közül pontosan egyet adjon meg</translation>
+    </message>
+    <message>
+        <location line="+4"/>
+        <source>modbus-tcp needs --tcp HOST:PORT (for RTU frames on a port: modbus)</source>
+        <translation>a modbus-tcp a --tcp HOST:PORT kapcsolót igényli (RTU keretekhez porton: modbus)</translation>
+    </message>
+    <message>
+        <location line="+8"/>
+        <source>--tcp needs HOST:PORT, e.g. 127.0.0.1:502; got %1</source>
+        <translation>a --tcp HOST:PORT alakú értéket vár, pl. 127.0.0.1:502; kapott érték: %1</translation>
+    </message>
+    <message>
+        <location line="+18"/>
+        <source>%1 must be a number from %2 to %3; got %4</source>
+        <translation>%1 értéke %2 és %3 közötti szám legyen; kapott érték: %4</translation>
+    </message>
+    <message>
+        <location line="+16"/>
+        <source>--frame must be data bits, parity and stop bits, e.g. 8N1 or 7E2; got %1</source>
+        <translation>a --frame adatbitek, paritás és stopbitek megadása, pl. 8N1 vagy 7E2; kapott érték: %1</translation>
+    </message>
+    <message>
+        <location line="+5"/>
+        <source>no device given</source>
+        <translation>nincs megadva operandus</translation>
+    </message>
+    <message>
+        <location line="+62"/>
+        <source>  rungstudio-cli read  --target T --protocol vigor|modbus|modbus-tcp|hostlink
+        (--port NAME | --tcp HOST:PORT | --pty PATH) [--station N] [--baud B]
+        [--frame 8N1] [--timeout MS] [--retries N] DEVICE...
+  rungstudio-cli write (the same options) DEVICE=VALUE...
+Exit status of read and write: 0 done, 1 the PLC did not answer or refused, 2 usage, device, value or port error.</source>
+        <translation>  rungstudio-cli read  --target T --protocol vigor|modbus|modbus-tcp|hostlink
+        (--port NÉV | --tcp HOST:PORT | --pty ÚTVONAL) [--station N] [--baud B]
+        [--frame 8N1] [--timeout MS] [--retries N] OPERANDUS...
+  rungstudio-cli write (ugyanezek a kapcsolók) OPERANDUS=ÉRTÉK...
+A read és a write kilépési kódja: 0 kész, 1 a PLC nem válaszolt vagy elutasította, 2 használati, operandus-, érték- vagy porthiba.</translation>
+    </message>
+    <message>
+        <location line="+69"/>
+        <source>%1: write DEVICE=VALUE</source>
+        <translation>%1: OPERANDUS=ÉRTÉK alakban adja meg</translation>
+    </message>
+    <message>
+        <location line="+9"/>
+        <source>%1: %2 is not a value for %3 (a bit takes 0 or 1, ON or OFF; a word a number, 0x for hexadecimal)</source>
+        <translation>%1: a(z) %2 nem lehet %3 értéke (egy bit 0 vagy 1, ON vagy OFF; egy szó szám, hexadecimálisan 0x előtaggal)</translation>
+    </message>
+    <message>
+        <location line="+17"/>
+        <source>note: %1</source>
+        <translation>megjegyzés: %1</translation>
+    </message>
+    <message>
+        <location line="+5"/>
+        <source>not written: %1</source>
+        <translation>nem íródott ki: %1</translation>
+    </message>
+</context>
+<context>
     <name>rung::app::ProgramExport</name>
     <message>
         <location filename="../app/gui/ladder_export.cpp" line="+82"/>
@@ -1367,6 +1463,271 @@ Létradiagram- és utasításlista-szerkesztő a következő PLC-khez: %2.</tran
         <location line="+70"/>
         <source>The virtual PLC needs a QCoreApplication for its simulation thread</source>
         <translation>A virtuális PLC szimulációs szálához QCoreApplication kell</translation>
+    </message>
+</context>
+<context>
+    <name>rung::comms::Driver</name>
+    <message>
+        <location filename="../comms/driver/driver.cpp" line="+57"/>
+        <source>station 0 is the Modbus broadcast address: no PLC answers it, so nothing could be read and no write acknowledged; give the PLC&apos;s own station (1..247, or 255 for any PL110)</source>
+        <translation>a 0-s állomás a Modbus körüzenet-címe: egyetlen PLC sem válaszol rá, így semmit sem lehetne olvasni, és egyetlen írást sem nyugtázna senki; adja meg a PLC saját állomáscímét (1..247, vagy bármely PL110-hez 255)</translation>
+    </message>
+    <message>
+        <location line="+5"/>
+        <source>station %1 is outside %2&apos;s %3..%4</source>
+        <translation>a(z) %1. állomás kívül esik a(z) %2 %3..%4 tartományán</translation>
+    </message>
+    <message>
+        <location line="+33"/>
+        <location filename="../comms/driver/link.cpp" line="+16"/>
+        <location filename="../comms/driver/protocol_driver.cpp" line="+62"/>
+        <source>%1: %2</source>
+        <translation>%1: %2</translation>
+    </message>
+    <message>
+        <location line="+53"/>
+        <source>%1 has no address in %2, so it cannot be read over it</source>
+        <translation>%1 nem szerepel a(z) %2 címtérképében, ezért azon keresztül nem olvasható</translation>
+    </message>
+    <message>
+        <location line="+48"/>
+        <source>%1 and %2 more</source>
+        <translation>%1 és még %2</translation>
+    </message>
+    <message>
+        <location line="+4"/>
+        <location line="+33"/>
+        <source>reading %1 from %2</source>
+        <translation>%1 olvasása innen: %2</translation>
+    </message>
+    <message>
+        <location filename="../comms/driver/driver_commands.cpp" line="+18"/>
+        <source>ON</source>
+        <translation>BE</translation>
+    </message>
+    <message>
+        <location line="+1"/>
+        <source>OFF</source>
+        <translation>KI</translation>
+    </message>
+    <message>
+        <location line="+19"/>
+        <source>%1: %2 has no word address in %3</source>
+        <translation>%1: %2 nem rendelkezik szócímmel a(z) %3 címtérképében</translation>
+    </message>
+    <message>
+        <location line="+11"/>
+        <source>%1: %2 does not fit %3 (%4..%5)</source>
+        <translation>%1: a(z) %2 nem fér el ebben: %3 (%4..%5)</translation>
+    </message>
+    <message>
+        <location line="+27"/>
+        <source>%1: %2 is not a bit in %3</source>
+        <translation>%1: %2 nem bit a(z) %3 címtérképében</translation>
+    </message>
+    <message>
+        <location line="+8"/>
+        <source>setting %1 %2 on %3</source>
+        <translation>%1 %2 állítása itt: %3</translation>
+    </message>
+    <message>
+        <location line="+11"/>
+        <source>writing %1 = %2 to %3</source>
+        <translation>%1 = %2 írása ide: %3</translation>
+    </message>
+    <message>
+        <location line="+7"/>
+        <source>writing the set value of %1 = %2 to %3</source>
+        <translation>%1 beállított értékének írása (%2) ide: %3</translation>
+    </message>
+    <message>
+        <location line="+16"/>
+        <source>%1: the set value of %2 is a constant of the program in the PLC; %3 cannot change it (change the program, or make the set value a register)</source>
+        <translation>%1: %2 beállított értéke a PLC-ben lévő program állandója; a(z) %3 nem tudja megváltoztatni (módosítsa a programot, vagy adja meg a beállított értéket regiszterben)</translation>
+    </message>
+    <message>
+        <location line="+10"/>
+        <source>forcing %1 %2 on %3</source>
+        <translation>%1 kényszerítése %2 állapotba itt: %3</translation>
+    </message>
+    <message>
+        <location line="+16"/>
+        <source>releasing %1 on %2</source>
+        <translation>%1 kényszerítésének megszüntetése itt: %2</translation>
+    </message>
+    <message>
+        <location line="+4"/>
+        <source>%1: %2 has no command that releases one bit; release all forced bits instead (KC)</source>
+        <translation>%1: a(z) %2 protokollnak nincs parancsa egyetlen bit kényszerítésének megszüntetésére; szüntesse meg az összes kényszerítést (KC)</translation>
+    </message>
+    <message>
+        <location line="+7"/>
+        <source>releasing every forced bit on %1</source>
+        <translation>minden kényszerítés megszüntetése itt: %1</translation>
+    </message>
+    <message>
+        <location line="+34"/>
+        <location filename="../comms/driver/host_link_driver.cpp" line="+160"/>
+        <source>switching %1 to %2</source>
+        <translation>%1 átkapcsolása %2 módba</translation>
+    </message>
+    <message>
+        <location line="+5"/>
+        <source>%1: the PLC has RUN and STOP only</source>
+        <translation>%1: a PLC-nek csak RUN és STOP üzemmódja van</translation>
+    </message>
+    <message>
+        <location filename="../comms/driver/host_link_driver.cpp" line="-137"/>
+        <location filename="../comms/driver/modbus_driver.cpp" line="+29"/>
+        <source>%1 unit %2 on %3</source>
+        <translation>%1, %2. egység, %3</translation>
+    </message>
+    <message>
+        <location line="+68"/>
+        <source>%1: the completion flags of timers and counters are read-only over Host Link (RG)</source>
+        <translation>%1: az időzítők és számlálók lejárt-jelzői Host Linken csak olvashatók (RG)</translation>
+    </message>
+    <message>
+        <location line="+34"/>
+        <source>Host Link forces bits of the IR / SR channels (CIO) only</source>
+        <translation>Host Linken csak az IR / SR csatornák bitjei kényszeríthetők (CIO)</translation>
+    </message>
+    <message>
+        <location line="+13"/>
+        <source>reading the mode of %1</source>
+        <translation>%1 üzemmódjának olvasása</translation>
+    </message>
+    <message>
+        <location line="+40"/>
+        <source>%1 was in RUN mode: switched to MONITOR, where Host Link writes are accepted (the program goes on running)</source>
+        <translation>%1 RUN módban volt: átkapcsolva MONITOR módba, ahol a Host Link írásokat elfogadja (a program tovább fut)</translation>
+    </message>
+    <message>
+        <location line="+12"/>
+        <location filename="../comms/driver/modbus_driver.cpp" line="+111"/>
+        <source>reading the model of %1</source>
+        <translation>%1 típusának olvasása</translation>
+    </message>
+    <message>
+        <location line="+4"/>
+        <source>model code %1h</source>
+        <translation>típuskód: %1h</translation>
+    </message>
+    <message>
+        <location filename="../comms/driver/link.cpp" line="+59"/>
+        <source>%1 is not open</source>
+        <translation>%1 nincs megnyitva</translation>
+    </message>
+    <message>
+        <location line="+50"/>
+        <source>cancelled</source>
+        <translation>megszakítva</translation>
+    </message>
+    <message>
+        <location line="+40"/>
+        <location line="+9"/>
+        <source>%1 (%2 attempts)</source>
+        <translation>%1 (%2 kísérlet)</translation>
+    </message>
+    <message>
+        <location filename="../comms/driver/modbus_driver.cpp" line="-51"/>
+        <source>%1: Modbus has no function that writes discrete inputs</source>
+        <translation>%1: a Modbusnak nincs függvénye a diszkrét bemenetek írására</translation>
+    </message>
+    <message>
+        <location line="+60"/>
+        <source>device type %1</source>
+        <translation>eszköztípus: %1</translation>
+    </message>
+    <message>
+        <location line="+11"/>
+        <source>firmware %1</source>
+        <translation>firmware: %1</translation>
+    </message>
+    <message>
+        <location filename="../comms/driver/online_session.cpp" line="+96"/>
+        <source>%1 is not connected: nothing was sent</source>
+        <translation>%1 nincs csatlakoztatva: semmi sem lett elküldve</translation>
+    </message>
+    <message>
+        <location line="+145"/>
+        <source>Connection to %1 lost: %2. Trying again.</source>
+        <translation>Megszakadt a kapcsolat ezzel: %1: %2. Újrapróbálkozás.</translation>
+    </message>
+    <message>
+        <location line="+3"/>
+        <source>Cannot reach %1: %2. Trying again.</source>
+        <translation>%1 nem érhető el: %2. Újrapróbálkozás.</translation>
+    </message>
+    <message>
+        <location line="+52"/>
+        <source>Cannot connect to %1: %2</source>
+        <translation>Nem sikerült kapcsolódni ide: %1: %2</translation>
+    </message>
+    <message>
+        <location filename="../comms/driver/protocol_driver.cpp" line="-38"/>
+        <source>Vigor Computer Link</source>
+        <translation>Vigor Computer Link</translation>
+    </message>
+    <message>
+        <location line="+2"/>
+        <source>Modbus RTU</source>
+        <translation>Modbus RTU</translation>
+    </message>
+    <message>
+        <location line="+2"/>
+        <source>Modbus TCP</source>
+        <translation>Modbus TCP</translation>
+    </message>
+    <message>
+        <location line="+2"/>
+        <source>Host Link</source>
+        <translation>Host Link</translation>
+    </message>
+    <message>
+        <location line="+8"/>
+        <source>STOP</source>
+        <translation>STOP</translation>
+    </message>
+    <message>
+        <location line="+2"/>
+        <source>PROGRAM</source>
+        <translation>PROGRAM</translation>
+    </message>
+    <message>
+        <location line="+2"/>
+        <source>MONITOR</source>
+        <translation>MONITOR</translation>
+    </message>
+    <message>
+        <location line="+2"/>
+        <source>RUN</source>
+        <translation>RUN</translation>
+    </message>
+    <message>
+        <location line="+4"/>
+        <source>unknown mode</source>
+        <translation>ismeretlen üzemmód</translation>
+    </message>
+    <message>
+        <location line="+20"/>
+        <source>cannot force over %1: the protocol has no force command; write the bit instead (the program may overwrite it)</source>
+        <translation>%1 protokollon nem lehet kényszeríteni: nincs kényszerítő parancsa; írja inkább a bitet (a program felülírhatja)</translation>
+    </message>
+    <message>
+        <location line="+19"/>
+        <source>%1 has no command to change RUN / STOP</source>
+        <translation>a(z) %1 protokollnak nincs parancsa a RUN / STOP váltására</translation>
+    </message>
+    <message>
+        <location line="+19"/>
+        <source>%1 does not speak %2</source>
+        <translation>%1 nem ismeri a(z) %2 protokollt</translation>
+    </message>
+    <message>
+        <location filename="../comms/driver/vigor_driver.cpp" line="+19"/>
+        <source>%1 station %2 on %3</source>
+        <translation>%1, %2. állomás, %3</translation>
     </message>
 </context>
 <context>
@@ -1939,7 +2300,7 @@ Létradiagram- és utasításlista-szerkesztő a következő PLC-khez: %2.</tran
         <translation>funkcióblokk</translation>
     </message>
     <message>
-        <location line="+12"/>
+        <location line="+13"/>
         <source>rung %1</source>
         <translation>%1. létrafok</translation>
     </message>

@@ -42,7 +42,7 @@
 <context>
     <name>rung::app::Cli</name>
     <message>
-        <location filename="../app/cli/cli.cpp" line="+49"/>
+        <location filename="../app/cli/cli.cpp" line="+51"/>
         <location line="+45"/>
         <source>unexpected argument %1</source>
         <translation>argomento non previsto: %1</translation>
@@ -53,7 +53,7 @@
         <translation>--to deve essere il, ladder o project</translation>
     </message>
     <message>
-        <location line="-73"/>
+        <location line="-74"/>
         <source>usage:
   rungstudio-cli check FILE [--target %1] [--model M]
   rungstudio-cli convert FILE [--target T] [--from il|ladder|project] --to il|ladder|project [-o OUT] [--force]
@@ -72,7 +72,7 @@ FILE è una lista istruzioni (.il), un testo ladder (.ladder) o un progetto (.ru
 Codice di uscita: 0 nessun errore, 1 il programma contiene errori, 2 errore di utilizzo o di I/O.</translation>
     </message>
     <message>
-        <location line="+89"/>
+        <location line="+90"/>
         <source>nothing written: the list as typed would be lost</source>
         <translation>non è stato scritto nulla: la lista digitata andrebbe persa</translation>
     </message>
@@ -97,7 +97,7 @@ Codice di uscita: 0 nessun errore, 1 il programma contiene errori, 2 errore di u
         <translation>impossibile scrivere %1: %2</translation>
     </message>
     <message>
-        <location line="+28"/>
+        <location line="+32"/>
         <source>no command given</source>
         <translation>nessun comando specificato</translation>
     </message>
@@ -1067,6 +1067,102 @@ Editor di schemi ladder e liste istruzioni per %2.</translation>
     </message>
 </context>
 <context>
+    <name>rung::app::Online</name>
+    <message>
+        <location filename="../app/cli/cli_online.cpp" line="+21"/>
+        <source>usage:</source>
+        <translation>uso:</translation>
+    </message>
+    <message>
+        <location line="+40"/>
+        <source>%1 needs a value</source>
+        <translation>%1 richiede un valore</translation>
+    </message>
+    <message>
+        <location line="+9"/>
+        <source>unknown option %1</source>
+        <translation>opzione sconosciuta: %1</translation>
+    </message>
+    <message>
+        <location line="+6"/>
+        <source>--target and --protocol are needed</source>
+        <translation>servono --target e --protocol</translation>
+    </message>
+    <message>
+        <location line="+5"/>
+        <source>unknown target %1</source>
+        <translation>famiglia PLC sconosciuta: %1</translation>
+    </message>
+    <message>
+        <location line="+5"/>
+        <source>unknown protocol %1: vigor, modbus, modbus-tcp or hostlink</source>
+        <translation>protocollo sconosciuto %1: vigor, modbus, modbus-tcp o hostlink</translation>
+    </message>
+    <message>
+        <location line="+6"/>
+        <source>give exactly one of --port, --tcp and --pty</source>
+        <translation>indicare esattamente uno tra --port, --tcp e --pty</translation>
+    </message>
+    <message>
+        <location line="+4"/>
+        <source>modbus-tcp needs --tcp HOST:PORT (for RTU frames on a port: modbus)</source>
+        <translation>modbus-tcp richiede --tcp HOST:PORTA (per frame RTU su una porta: modbus)</translation>
+    </message>
+    <message>
+        <location line="+8"/>
+        <source>--tcp needs HOST:PORT, e.g. 127.0.0.1:502; got %1</source>
+        <translation>--tcp richiede HOST:PORTA, ad es. 127.0.0.1:502; ricevuto %1</translation>
+    </message>
+    <message>
+        <location line="+18"/>
+        <source>%1 must be a number from %2 to %3; got %4</source>
+        <translation>%1 deve essere un numero da %2 a %3; ricevuto %4</translation>
+    </message>
+    <message>
+        <location line="+16"/>
+        <source>--frame must be data bits, parity and stop bits, e.g. 8N1 or 7E2; got %1</source>
+        <translation>--frame indica bit di dati, parità e bit di stop, ad es. 8N1 o 7E2; ricevuto %1</translation>
+    </message>
+    <message>
+        <location line="+5"/>
+        <source>no device given</source>
+        <translation>nessun operando indicato</translation>
+    </message>
+    <message>
+        <location line="+62"/>
+        <source>  rungstudio-cli read  --target T --protocol vigor|modbus|modbus-tcp|hostlink
+        (--port NAME | --tcp HOST:PORT | --pty PATH) [--station N] [--baud B]
+        [--frame 8N1] [--timeout MS] [--retries N] DEVICE...
+  rungstudio-cli write (the same options) DEVICE=VALUE...
+Exit status of read and write: 0 done, 1 the PLC did not answer or refused, 2 usage, device, value or port error.</source>
+        <translation>  rungstudio-cli read  --target T --protocol vigor|modbus|modbus-tcp|hostlink
+        (--port NOME | --tcp HOST:PORTA | --pty PERCORSO) [--station N] [--baud B]
+        [--frame 8N1] [--timeout MS] [--retries N] OPERANDO...
+  rungstudio-cli write (le stesse opzioni) OPERANDO=VALORE...
+Codice di uscita di read e write: 0 fatto, 1 il PLC non ha risposto o ha rifiutato, 2 errore di uso, di operando, di valore o di porta.</translation>
+    </message>
+    <message>
+        <location line="+69"/>
+        <source>%1: write DEVICE=VALUE</source>
+        <translation>%1: scrivere OPERANDO=VALORE</translation>
+    </message>
+    <message>
+        <location line="+9"/>
+        <source>%1: %2 is not a value for %3 (a bit takes 0 or 1, ON or OFF; a word a number, 0x for hexadecimal)</source>
+        <translation>%1: %2 non è un valore per %3 (un bit vale 0 o 1, ON o OFF; una word un numero, 0x per l&apos;esadecimale)</translation>
+    </message>
+    <message>
+        <location line="+17"/>
+        <source>note: %1</source>
+        <translation>nota: %1</translation>
+    </message>
+    <message>
+        <location line="+5"/>
+        <source>not written: %1</source>
+        <translation>non scritto: %1</translation>
+    </message>
+</context>
+<context>
     <name>rung::app::ProgramExport</name>
     <message>
         <location filename="../app/gui/ladder_export.cpp" line="+82"/>
@@ -1373,6 +1469,271 @@ Editor di schemi ladder e liste istruzioni per %2.</translation>
         <location line="+70"/>
         <source>The virtual PLC needs a QCoreApplication for its simulation thread</source>
         <translation>Il PLC virtuale richiede una QCoreApplication per il thread di simulazione</translation>
+    </message>
+</context>
+<context>
+    <name>rung::comms::Driver</name>
+    <message>
+        <location filename="../comms/driver/driver.cpp" line="+57"/>
+        <source>station 0 is the Modbus broadcast address: no PLC answers it, so nothing could be read and no write acknowledged; give the PLC&apos;s own station (1..247, or 255 for any PL110)</source>
+        <translation>la stazione 0 è l&apos;indirizzo broadcast Modbus: nessun PLC risponde, quindi nulla potrebbe essere letto né alcuna scrittura confermata; indicare la stazione del PLC (1..247, o 255 per qualsiasi PL110)</translation>
+    </message>
+    <message>
+        <location line="+5"/>
+        <source>station %1 is outside %2&apos;s %3..%4</source>
+        <translation>la stazione %1 è fuori dall&apos;intervallo %3..%4 di %2</translation>
+    </message>
+    <message>
+        <location line="+33"/>
+        <location filename="../comms/driver/link.cpp" line="+16"/>
+        <location filename="../comms/driver/protocol_driver.cpp" line="+62"/>
+        <source>%1: %2</source>
+        <translation>%1: %2</translation>
+    </message>
+    <message>
+        <location line="+53"/>
+        <source>%1 has no address in %2, so it cannot be read over it</source>
+        <translation>%1 non ha un indirizzo in %2, quindi non può essere letto con esso</translation>
+    </message>
+    <message>
+        <location line="+48"/>
+        <source>%1 and %2 more</source>
+        <translation>%1 e altri %2</translation>
+    </message>
+    <message>
+        <location line="+4"/>
+        <location line="+33"/>
+        <source>reading %1 from %2</source>
+        <translation>lettura di %1 da %2</translation>
+    </message>
+    <message>
+        <location filename="../comms/driver/driver_commands.cpp" line="+18"/>
+        <source>ON</source>
+        <translation>ON</translation>
+    </message>
+    <message>
+        <location line="+1"/>
+        <source>OFF</source>
+        <translation>OFF</translation>
+    </message>
+    <message>
+        <location line="+19"/>
+        <source>%1: %2 has no word address in %3</source>
+        <translation>%1: %2 non ha un indirizzo di word in %3</translation>
+    </message>
+    <message>
+        <location line="+11"/>
+        <source>%1: %2 does not fit %3 (%4..%5)</source>
+        <translation>%1: %2 non rientra in %3 (%4..%5)</translation>
+    </message>
+    <message>
+        <location line="+27"/>
+        <source>%1: %2 is not a bit in %3</source>
+        <translation>%1: %2 non è un bit in %3</translation>
+    </message>
+    <message>
+        <location line="+8"/>
+        <source>setting %1 %2 on %3</source>
+        <translation>impostazione di %1 a %2 su %3</translation>
+    </message>
+    <message>
+        <location line="+11"/>
+        <source>writing %1 = %2 to %3</source>
+        <translation>scrittura di %1 = %2 su %3</translation>
+    </message>
+    <message>
+        <location line="+7"/>
+        <source>writing the set value of %1 = %2 to %3</source>
+        <translation>scrittura del valore di preset di %1 = %2 su %3</translation>
+    </message>
+    <message>
+        <location line="+16"/>
+        <source>%1: the set value of %2 is a constant of the program in the PLC; %3 cannot change it (change the program, or make the set value a register)</source>
+        <translation>%1: il valore di preset di %2 è una costante del programma nel PLC; %3 non può cambiarlo (modificare il programma, o mettere il preset in un registro)</translation>
+    </message>
+    <message>
+        <location line="+10"/>
+        <source>forcing %1 %2 on %3</source>
+        <translation>forzatura di %1 a %2 su %3</translation>
+    </message>
+    <message>
+        <location line="+16"/>
+        <source>releasing %1 on %2</source>
+        <translation>rilascio della forzatura di %1 su %2</translation>
+    </message>
+    <message>
+        <location line="+4"/>
+        <source>%1: %2 has no command that releases one bit; release all forced bits instead (KC)</source>
+        <translation>%1: %2 non ha un comando che rilascia un solo bit; rilasciare invece tutti i bit forzati (KC)</translation>
+    </message>
+    <message>
+        <location line="+7"/>
+        <source>releasing every forced bit on %1</source>
+        <translation>rilascio di tutti i bit forzati su %1</translation>
+    </message>
+    <message>
+        <location line="+34"/>
+        <location filename="../comms/driver/host_link_driver.cpp" line="+160"/>
+        <source>switching %1 to %2</source>
+        <translation>commutazione di %1 in %2</translation>
+    </message>
+    <message>
+        <location line="+5"/>
+        <source>%1: the PLC has RUN and STOP only</source>
+        <translation>%1: il PLC ha solo RUN e STOP</translation>
+    </message>
+    <message>
+        <location filename="../comms/driver/host_link_driver.cpp" line="-137"/>
+        <location filename="../comms/driver/modbus_driver.cpp" line="+29"/>
+        <source>%1 unit %2 on %3</source>
+        <translation>%1 unità %2 su %3</translation>
+    </message>
+    <message>
+        <location line="+68"/>
+        <source>%1: the completion flags of timers and counters are read-only over Host Link (RG)</source>
+        <translation>%1: i flag di completamento di temporizzatori e contatori sono in sola lettura con Host Link (RG)</translation>
+    </message>
+    <message>
+        <location line="+34"/>
+        <source>Host Link forces bits of the IR / SR channels (CIO) only</source>
+        <translation>Host Link forza solo i bit dei canali IR / SR (CIO)</translation>
+    </message>
+    <message>
+        <location line="+13"/>
+        <source>reading the mode of %1</source>
+        <translation>lettura del modo di %1</translation>
+    </message>
+    <message>
+        <location line="+40"/>
+        <source>%1 was in RUN mode: switched to MONITOR, where Host Link writes are accepted (the program goes on running)</source>
+        <translation>%1 era in modo RUN: commutato in MONITOR, dove le scritture Host Link sono accettate (il programma continua a girare)</translation>
+    </message>
+    <message>
+        <location line="+12"/>
+        <location filename="../comms/driver/modbus_driver.cpp" line="+111"/>
+        <source>reading the model of %1</source>
+        <translation>lettura del modello di %1</translation>
+    </message>
+    <message>
+        <location line="+4"/>
+        <source>model code %1h</source>
+        <translation>codice modello %1h</translation>
+    </message>
+    <message>
+        <location filename="../comms/driver/link.cpp" line="+59"/>
+        <source>%1 is not open</source>
+        <translation>%1 non è aperto</translation>
+    </message>
+    <message>
+        <location line="+50"/>
+        <source>cancelled</source>
+        <translation>annullato</translation>
+    </message>
+    <message>
+        <location line="+40"/>
+        <location line="+9"/>
+        <source>%1 (%2 attempts)</source>
+        <translation>%1 (%2 tentativi)</translation>
+    </message>
+    <message>
+        <location filename="../comms/driver/modbus_driver.cpp" line="-51"/>
+        <source>%1: Modbus has no function that writes discrete inputs</source>
+        <translation>%1: Modbus non ha una funzione che scrive gli ingressi discreti</translation>
+    </message>
+    <message>
+        <location line="+60"/>
+        <source>device type %1</source>
+        <translation>tipo di dispositivo %1</translation>
+    </message>
+    <message>
+        <location line="+11"/>
+        <source>firmware %1</source>
+        <translation>firmware %1</translation>
+    </message>
+    <message>
+        <location filename="../comms/driver/online_session.cpp" line="+96"/>
+        <source>%1 is not connected: nothing was sent</source>
+        <translation>%1 non è connesso: non è stato inviato nulla</translation>
+    </message>
+    <message>
+        <location line="+145"/>
+        <source>Connection to %1 lost: %2. Trying again.</source>
+        <translation>Connessione con %1 persa: %2. Nuovo tentativo in corso.</translation>
+    </message>
+    <message>
+        <location line="+3"/>
+        <source>Cannot reach %1: %2. Trying again.</source>
+        <translation>Impossibile raggiungere %1: %2. Nuovo tentativo in corso.</translation>
+    </message>
+    <message>
+        <location line="+52"/>
+        <source>Cannot connect to %1: %2</source>
+        <translation>Impossibile connettersi a %1: %2</translation>
+    </message>
+    <message>
+        <location filename="../comms/driver/protocol_driver.cpp" line="-38"/>
+        <source>Vigor Computer Link</source>
+        <translation>Vigor Computer Link</translation>
+    </message>
+    <message>
+        <location line="+2"/>
+        <source>Modbus RTU</source>
+        <translation>Modbus RTU</translation>
+    </message>
+    <message>
+        <location line="+2"/>
+        <source>Modbus TCP</source>
+        <translation>Modbus TCP</translation>
+    </message>
+    <message>
+        <location line="+2"/>
+        <source>Host Link</source>
+        <translation>Host Link</translation>
+    </message>
+    <message>
+        <location line="+8"/>
+        <source>STOP</source>
+        <translation>STOP</translation>
+    </message>
+    <message>
+        <location line="+2"/>
+        <source>PROGRAM</source>
+        <translation>PROGRAM</translation>
+    </message>
+    <message>
+        <location line="+2"/>
+        <source>MONITOR</source>
+        <translation>MONITOR</translation>
+    </message>
+    <message>
+        <location line="+2"/>
+        <source>RUN</source>
+        <translation>RUN</translation>
+    </message>
+    <message>
+        <location line="+4"/>
+        <source>unknown mode</source>
+        <translation>modo sconosciuto</translation>
+    </message>
+    <message>
+        <location line="+20"/>
+        <source>cannot force over %1: the protocol has no force command; write the bit instead (the program may overwrite it)</source>
+        <translation>impossibile forzare con %1: il protocollo non ha un comando di forzatura; scrivere invece il bit (il programma può sovrascriverlo)</translation>
+    </message>
+    <message>
+        <location line="+19"/>
+        <source>%1 has no command to change RUN / STOP</source>
+        <translation>%1 non ha un comando per cambiare RUN / STOP</translation>
+    </message>
+    <message>
+        <location line="+19"/>
+        <source>%1 does not speak %2</source>
+        <translation>%1 non supporta %2</translation>
+    </message>
+    <message>
+        <location filename="../comms/driver/vigor_driver.cpp" line="+19"/>
+        <source>%1 station %2 on %3</source>
+        <translation>%1 stazione %2 su %3</translation>
     </message>
 </context>
 <context>
@@ -1945,7 +2306,7 @@ Editor di schemi ladder e liste istruzioni per %2.</translation>
         <translation>blocco funzione</translation>
     </message>
     <message>
-        <location line="+12"/>
+        <location line="+13"/>
         <source>rung %1</source>
         <translation>segmento %1</translation>
     </message>

@@ -1,6 +1,7 @@
 #include "cli.h"
 
 #include "cli_common.h"
+#include "cli_online.h"
 #include "cli_serve.h"
 #include "cli_simulate.h"
 
@@ -38,7 +39,8 @@ QString usage() {
                   "FILE is a listing (.il), a ladder text (.ladder) or a project (.rung).\n"
                   "--lang en|hu|it: the language of the messages (else the locale's, LANG).\n"
                   "Exit status: 0 no error, 1 the program has errors, 2 usage or I/O error.")
-        .arg(model::targetIds().join(QLatin1Char('|')));
+               .arg(model::targetIds().join(QLatin1Char('|'))) +
+           QLatin1Char('\n') + onlineUsage();
 }
 
 int check(const QStringList &args, QTextStream &out, QTextStream &err) {
@@ -191,6 +193,10 @@ int runCli(const QStringList &arguments, QTextStream &out, QTextStream &err) {
         return runSimulateCommand(args, out, err);
     if (command == QLatin1String("serve"))
         return runServeCommand(args, out, err);
+    if (command == QLatin1String("read"))
+        return runReadCommand(args, out, err);
+    if (command == QLatin1String("write"))
+        return runWriteCommand(args, out, err);
     if (command == QLatin1String("--help") || command == QLatin1String("-h") ||
         command == QLatin1String("help")) {
         out << usage() << '\n';

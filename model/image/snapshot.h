@@ -31,6 +31,9 @@ struct Snapshot {
     // Logic result after each instruction of the last scan (index = instruction index);
     // empty when power-flow recording is off.
     std::vector<bool> powerFlow;
+    // An online source lost its link to the PLC: the words are the last values read, kept so
+    // the user still sees them, and no longer the PLC's. A simulation is never stale.
+    bool stale = false;
 
     bool bit(const Address &address) const {
         const BitRef r = layout ? layout->bit(address) : BitRef{};

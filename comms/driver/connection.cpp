@@ -1,0 +1,76 @@
+#include "comms/driver/connection.h"
+
+#include "comms/transport/pty_transport.h"
+#include "comms/transport/serial_transport.h"
+#include "comms/transport/tcp_transport.h"
+
+namespace rung::comms {
+
+QString ConnectionSettings::where() const {
+    return via == Via::Tcp ? QStringLiteral("%1:%2").arg(host).arg(tcpPort) : port;
+}
+
+ConnectionSettings defaultSettings(ProtocolKind protocol) {
+    ConnectionSettings s;
+    s.protocol = protocol;
+    switch (protocol) {
+    case ProtocolKind::VigorLink: // CP1: 19200, 7 bits, even, 1 stop, station 0 (seed 001 B-5)
+        s.serial = {19200, 7, SerialSettings::Parity::Even, 1, SerialSettings::Flow::None};
+        s.station = 0;
+        break;
+    case ProtocolKind::HostLink: // the common PC Setup: 9600, 7 bits, even, 2 stop
+        s.serial = {9600, 7, SerialSettings::Parity::Even, 2, SerialSettings::Flow::None};
+        s.station = 0;
+        break;
+    case ProtocolKind::ModbusRtu: // PL110 COM1: 19200 8N1 (seed 003 chapter 3)
+    case ProtocolKind::ModbusTcp:
+        s.serial = {19200, 8, SerialSettings::Parity::None, 1, SerialSettings::Flow::None};
+        s.station = 1;
+        break;
+    }
+    return s;
+}
+
+LinkSettings lineTiming(const ConnectionSettings &settings) {
+    LinkSettings link = settings.link;
+    if (settings.via == ConnectionSettings::Via::Serial)
+        link.characterUs = settings.serial.characterMicroseconds();
+    // A pseudo-terminal or a serial device server still ends at a real line somewhere; the
+    // gap costs at most 1.75 ms above 19200 bps (less than a character below it).
+    if (settings.protocol == ProtocolKind::ModbusRtu)
+        link.gapUs = settings.serial.rtuGapMicroseconds();
+    return link;
+}
+
+std::unique_ptr<Transport> makeTransport(const ConnectionSettings &settings) {
+    switch (settings.via) {
+    case ConnectionSettings::Via::Serial:
+        return std::make_unique<SerialTransport>(settings.port, settings.serial);
+    case ConnectionSettings::Via::Pty:
+        return std::make_unique<PtyTransport>(settings.port);
+    case ConnectionSettings::Via::Tcp: {
+        auto tcp = std::make_unique<TcpTransport>(settings.host, settings.tcpPort);
+        tcp->setOpenTimeout(std::max(settings.link.timeoutMs, 500));
+        return tcp;
+    }
+    }
+    return nullptr;
+}
+
+bool parseProtocolKind(QStringView name, ProtocolKind *kind) {
+    const struct {
+        const char *name;
+        ProtocolKind kind;
+    } names[] = {{"vigor", ProtocolKind::VigorLink},
+                 {"modbus", ProtocolKind::ModbusRtu},
+                 {"modbus-tcp", ProtocolKind::ModbusTcp},
+                 {"hostlink", ProtocolKind::HostLink}};
+    for (const auto &n : names)
+        if (name == QLatin1String(n.name)) {
+            *kind = n.kind;
+            return true;
+        }
+    return false;
+}
+
+} // namespace rung::comms

@@ -1,0 +1,53 @@
+#pragma once
+
+// Where a PLC is and how to speak to it: the protocol, the port (a serial port, a
+// pseudo-terminal, a TCP host) with its line settings, the station, timeouts and retries.
+// The defaults are each protocol's (protocols.md): Vigor CP1 19200 7E1 station 0, PL110
+// 19200 8N1 unit 1, Host Link 9600 7E2 unit 0.
+
+#include "comms/driver/link.h"
+#include "comms/driver/protocol_driver.h"
+#include "comms/transport/serial_settings.h"
+
+#include <memory>
+
+namespace rung::comms {
+
+struct ConnectionSettings {
+    enum class Via : std::uint8_t { Serial, Pty, Tcp };
+    ProtocolKind protocol = ProtocolKind::ModbusRtu;
+    Via via = Via::Serial;
+    QString port; // serial port or pseudo-terminal path
+    SerialSettings serial;
+    QString host;
+    quint16 tcpPort = 502;
+    int station = 1;
+    LinkSettings link;
+    // The shortest time from one refresh of the watched devices to the next (0: as fast as
+    // the PLC answers).
+    int pollIntervalMs = 20;
+    // How often a mode that needs its own command (Host Link MS) is read.
+    int modePollMs = 1000;
+    // Reconnecting after the link is lost: the first wait, doubled up to the last.
+    int reconnectMinMs = 250;
+    int reconnectMaxMs = 4000;
+
+    // "/dev/ttyUSB0", "192.168.1.5:502": where, as a user would say it.
+    QString where() const;
+};
+
+// Each protocol's usual line settings and station (see above), on the given port.
+ConnectionSettings defaultSettings(ProtocolKind protocol);
+
+// The link settings with the line's timing: on a serial port the time per character, and
+// for Modbus RTU the 3.5-character silence before each request.
+LinkSettings lineTiming(const ConnectionSettings &settings);
+
+// A transport for the settings, not yet open. A TCP transport must be made and used on one
+// thread (QTcpSocket): the session calls this on its worker.
+std::unique_ptr<Transport> makeTransport(const ConnectionSettings &settings);
+
+// "vigor", "modbus", "modbus-tcp", "hostlink" (the command line's names); false when unknown.
+bool parseProtocolKind(QStringView name, ProtocolKind *kind);
+
+} // namespace rung::comms

@@ -1,0 +1,295 @@
+// Our master against real Modbus slaves from Debian: a program on libmodbus
+// (peers/modbus_peer.cpp) and a script on python3-pymodbus (peers/pymodbus_peer.py), over a
+// real pseudo-terminal (RTU) and TCP loopback (Modbus TCP). Both hold the values of
+// peers/peer_values.h, so every read is checked against a number computed here.
+
+#include "comms/driver/driver.h"
+#include "comms/driver/online_session.h"
+#include "comms/transport/pty_transport.h"
+#include "comms/transport/tcp_transport.h"
+#include "model/target/address.h"
+#include "model/target/target.h"
+#include "tests/comms/peers/peer_values.h"
+
+#include <QCoreApplication>
+#include <QElapsedTimer>
+#include <QProcess>
+#include <QTcpServer>
+
+#include <gtest/gtest.h>
+
+namespace rung::comms::test {
+namespace {
+
+namespace peer = rung::comms::test::peer;
+using model::Family;
+
+enum class Peer { LibModbus, PyModbus };
+enum class Wire { RtuPty, Tcp };
+
+// The peer's program and why it is missing, if it is.
+QStringList program(Peer p, QString *missing) {
+    if (p == Peer::LibModbus) {
+#ifdef RUNG_MODBUS_PEER
+        return {QStringLiteral(RUNG_MODBUS_PEER)};
+#else
+        *missing = QStringLiteral("libmodbus-dev is not installed (scripts/install-deps.sh)");
+        return {};
+#endif
+    }
+    static const bool have = [] {
+        QProcess check;
+        check.start(QStringLiteral("/usr/bin/python3"),
+                    {QStringLiteral("-c"), QStringLiteral("import pymodbus, serial_asyncio")});
+        return check.waitForFinished(20000) && check.exitStatus() == QProcess::NormalExit &&
+               check.exitCode() == 0;
+    }();
+    if (!have) {
+        *missing = QStringLiteral("python3-pymodbus or python3-serial-asyncio is not installed "
+                                  "(scripts/install-deps.sh)");
+        return {};
+    }
+    return {QStringLiteral("/usr/bin/python3"), QStringLiteral(RUNG_PYMODBUS_PEER)};
+}
+
+quint16 freePort() {
+    QTcpServer probe;
+    probe.listen(QHostAddress::LocalHost, 0);
+    return probe.serverPort();
+}
+
+// A peer process that serves until the object goes.
+struct PeerProcess {
+    QProcess process;
+    QString failure;
+
+    bool start(const QStringList &command, const QStringList &args) {
+        process.setProcessChannelMode(QProcess::SeparateChannels);
+        process.start(command.front(), command.mid(1) + args);
+        QElapsedTimer clock;
+        clock.start();
+        QByteArray out;
+        while (!out.contains("ready")) {
+            if (clock.elapsed() > 15000 || process.state() == QProcess::NotRunning) {
+                failure = QStringLiteral("the peer did not start: %1 %2")
+                              .arg(QString::fromLocal8Bit(out),
+                                   QString::fromLocal8Bit(process.readAllStandardError()));
+                return false;
+            }
+            process.waitForReadyRead(100);
+            out += process.readAllStandardOutput();
+        }
+        return true;
+    }
+    void stop() {
+        if (process.state() != QProcess::NotRunning) {
+            process.kill();
+            process.waitForFinished(5000);
+        }
+    }
+    ~PeerProcess() { stop(); }
+};
+
+class RealPeers : public ::testing::TestWithParam<std::tuple<Peer, Wire>> {
+protected:
+    void SetUp() override {
+        const auto [who, wire] = GetParam();
+        QString missing;
+        const QStringList command = program(who, &missing);
+        if (command.isEmpty())
+            GTEST_SKIP() << missing.toStdString();
+        std::unique_ptr<Transport> transport;
+        QStringList args;
+        if (wire == Wire::RtuPty) {
+            QString error;
+            auto pair = PtyTransport::createPair(&error);
+            ASSERT_TRUE(pair) << error.toStdString();
+            args = {QStringLiteral("rtu"), pair->peerPath(), QStringLiteral("1")};
+            transport = std::move(pair);
+        } else {
+            const quint16 port = freePort();
+            args = {QStringLiteral("tcp"), QString::number(port), QStringLiteral("1")};
+            transport = std::make_unique<TcpTransport>(QStringLiteral("127.0.0.1"), port);
+        }
+        ASSERT_TRUE(m_peer.start(command, args)) << m_peer.failure.toStdString();
+        m_transport = std::move(transport);
+    }
+
+    std::unique_ptr<Driver> driver(Family family) {
+        QString error;
+        auto d = Driver::create(model::Target::get(family),
+                                std::get<1>(GetParam()) == Wire::Tcp ? ProtocolKind::ModbusTcp
+                                                                     : ProtocolKind::ModbusRtu,
+                                std::move(m_transport), 1, {1000, 2, 20}, &error);
+        EXPECT_TRUE(d) << error.toStdString();
+        if (d) {
+            EXPECT_TRUE(d->link().open(&error)) << error.toStdString();
+        }
+        return d;
+    }
+    static model::Address device(const Driver &d, const QString &name) {
+        return std::get<model::Address>(d.parseDevice(name));
+    }
+
+    PeerProcess m_peer;
+    std::unique_ptr<Transport> m_transport;
+};
+
+TEST_P(RealPeers, ReadsScatteredPl110DevicesWithinThe30WordLimitAndWritesThem) {
+    auto d = driver(Family::Pl110);
+    ASSERT_TRUE(d);
+    // 60 scattered V words, 40 Q bits, presets, the RUN bit: every value is the peer's formula.
+    std::vector<model::Address> devices;
+    std::vector<qint64> expected;
+    for (int v = 0; v < 350; v += 6) {
+        devices.push_back(device(*d, QStringLiteral("V%1").arg(v)));
+        expected.push_back(std::int16_t(peer::reg(2000 + v)));
+    }
+    for (int q = 1; q <= 200; q += 5) {
+        devices.push_back(device(*d, QStringLiteral("Q%1").arg(q)));
+        expected.push_back(peer::coil(2400 + q - 1));
+    }
+    devices.push_back(device(*d, QStringLiteral("PT3")));
+    expected.push_back(std::int16_t(peer::reg(13002)));
+    devices.push_back(device(*d, QStringLiteral("SM0.0")));
+    expected.push_back(peer::coil(16000));
+    const auto plan = d->plan(devices);
+    for (const PlannedRead &r : plan.reads) {
+        if (r.span.space == model::ProtocolSpace::HoldingRegisters) {
+            EXPECT_LE(r.span.count, 30);
+        }
+    }
+    std::vector<qint64> values;
+    DriverError e = d->read(devices, &values);
+    ASSERT_TRUE(e.ok()) << e.message.toStdString();
+    EXPECT_EQ(values, expected);
+
+    // Writes, each acknowledged, then read back.
+    using Kind = model::DeviceCommand::Kind;
+    e = d->execute({Kind::WriteWord, device(*d, QStringLiteral("V10")), -7});
+    ASSERT_TRUE(e.ok()) << e.message.toStdString();
+    e = d->execute({Kind::WriteBit, device(*d, QStringLiteral("Q2")), 1});
+    ASSERT_TRUE(e.ok()) << e.message.toStdString();
+    e = d->execute({Kind::WriteBit, device(*d, QStringLiteral("V3.5")), 1});
+    ASSERT_TRUE(e.ok()) << e.message.toStdString();
+    e = d->execute({Kind::WriteSetValue, device(*d, QStringLiteral("T1")), 250});
+    ASSERT_TRUE(e.ok()) << e.message.toStdString();
+    ASSERT_TRUE(d->setMode(PlcMode::Stop).ok());
+    e = d->read({device(*d, QStringLiteral("V10")), device(*d, QStringLiteral("Q2")),
+                 device(*d, QStringLiteral("V3.5")), device(*d, QStringLiteral("PT1"))},
+                &values);
+    ASSERT_TRUE(e.ok()) << e.message.toStdString();
+    EXPECT_EQ(values, (std::vector<qint64>{-7, 1, 1, 250}));
+    PlcMode mode = PlcMode::Unknown;
+    ASSERT_TRUE(d->readMode(&mode).ok());
+    EXPECT_EQ(mode, PlcMode::Stop);
+    // The model and firmware words.
+    PlcIdentity id;
+    ASSERT_TRUE(d->identify(&id).ok());
+    EXPECT_EQ(id.model, QStringLiteral("device type %1").arg(peer::reg(0)));
+}
+
+TEST_P(RealPeers, AnAddressThePeerLacksIsRefusedByNameAndTheRestIsRead) {
+    auto d = driver(Family::Pl110);
+    ASSERT_TRUE(d);
+    // MMC12999 is register 42999: past the peer's 40000 registers, exception 02.
+    const auto plan =
+        d->plan({device(*d, QStringLiteral("MMC12999")), device(*d, QStringLiteral("V1"))});
+    std::vector<std::int32_t> words(std::size_t(d->layout()->wordCount()), 0);
+    std::vector<std::pair<model::Address, QString>> refused;
+    const DriverError e = d->refresh(plan, words, &refused);
+    ASSERT_TRUE(e.ok()) << e.message.toStdString();
+    ASSERT_EQ(refused.size(), 1u);
+    EXPECT_TRUE(refused[0].second.contains(QLatin1String("MMC12999")))
+        << refused[0].second.toStdString();
+    EXPECT_TRUE(refused[0].second.contains(QLatin1String("illegal data address")))
+        << refused[0].second.toStdString();
+    EXPECT_EQ(words[std::size_t(d->layout()->word(device(*d, QStringLiteral("V1"))))],
+              std::int16_t(peer::reg(2001)));
+}
+
+TEST_P(RealPeers, TheVigorCp2MapReadsInputsOutputsAndRegisters) {
+    auto d = driver(Family::Vigor);
+    ASSERT_TRUE(d);
+    std::vector<qint64> values;
+    const DriverError e =
+        d->read({device(*d, QStringLiteral("X0")), device(*d, QStringLiteral("X7")),
+                 device(*d, QStringLiteral("X12")), device(*d, QStringLiteral("Y3")),
+                 device(*d, QStringLiteral("M100")), device(*d, QStringLiteral("D0")),
+                 device(*d, QStringLiteral("D107")), device(*d, QStringLiteral("C200"))},
+                &values);
+    ASSERT_TRUE(e.ok()) << e.message.toStdString();
+    const qint64 c200 = std::int32_t(peer::reg(8648) | std::uint32_t(peer::reg(8649)) << 16);
+    EXPECT_EQ(values,
+              (std::vector<qint64>{peer::input(0), peer::input(7), peer::input(10), peer::coil(3),
+                                   peer::coil(612), std::int16_t(peer::reg(0)),
+                                   std::int16_t(peer::reg(107)), c200}));
+}
+
+INSTANTIATE_TEST_SUITE_P(
+    Debian, RealPeers,
+    ::testing::Combine(::testing::Values(Peer::LibModbus, Peer::PyModbus),
+                       ::testing::Values(Wire::RtuPty, Wire::Tcp)),
+    [](const ::testing::TestParamInfo<std::tuple<Peer, Wire>> &info) {
+        return std::string(std::get<0>(info.param) == Peer::LibModbus ? "LibModbus" : "PyModbus") +
+               (std::get<1>(info.param) == Wire::RtuPty ? "RtuOverPty" : "Tcp");
+    });
+
+template <typename Condition> bool eventually(Condition condition, int ms = 10000) {
+    QElapsedTimer t;
+    t.start();
+    while (!condition()) {
+        if (t.elapsed() > ms)
+            return false;
+        QCoreApplication::processEvents(QEventLoop::AllEvents, 10);
+    }
+    return true;
+}
+
+TEST(RealPeerSession, AnOnlineSessionLosesALibmodbusSlaveThatDiesAndFindsItsSuccessor) {
+    QString missing;
+    const QStringList command = program(Peer::LibModbus, &missing);
+    if (command.isEmpty())
+        GTEST_SKIP() << missing.toStdString();
+    QString error;
+    std::unique_ptr<PtyTransport> pair = PtyTransport::createPair(&error);
+    ASSERT_TRUE(pair) << error.toStdString();
+    const QString path = pair->peerPath();
+    auto first = std::make_unique<PeerProcess>();
+    ASSERT_TRUE(first->start(command, {QStringLiteral("rtu"), path, QStringLiteral("1")}))
+        << first->failure.toStdString();
+    const model::Target &target = model::Target::get(Family::Pl110);
+    ConnectionSettings settings = defaultSettings(ProtocolKind::ModbusRtu);
+    settings.via = ConnectionSettings::Via::Pty;
+    settings.port = path;
+    settings.link = {100, 1, 10};
+    settings.reconnectMinMs = 20;
+    settings.reconnectMaxMs = 100;
+    OnlineSession session(target, settings, nullptr,
+                          [&pair]() -> std::unique_ptr<Transport> { return std::move(pair); });
+    QObject reader;
+    const model::Address v5 = std::get<model::Address>(model::parseAddress(target, u"V5"));
+    session.setWatched(&reader, {v5});
+    session.connectToPlc();
+    ASSERT_TRUE(eventually([&] {
+        const auto s = session.snapshot();
+        return s && s->value(v5) == std::int16_t(peer::reg(2005)) &&
+               session.connectionState() == OnlineSession::ConnectionState::Online;
+    })) << session.errorText().toStdString();
+    first->stop(); // the PLC is switched off
+    ASSERT_TRUE(eventually(
+        [&] { return session.connectionState() == OnlineSession::ConnectionState::Lost; }));
+    EXPECT_TRUE(session.snapshot()->stale);
+    EXPECT_EQ(session.snapshot()->value(v5), std::int16_t(peer::reg(2005)));
+    EXPECT_EQ(session.runState(), model::MonitorSource::RunState::Offline);
+    PeerProcess second; // and on again
+    ASSERT_TRUE(second.start(command, {QStringLiteral("rtu"), path, QStringLiteral("1")}))
+        << second.failure.toStdString();
+    EXPECT_TRUE(eventually([&] {
+        return session.connectionState() == OnlineSession::ConnectionState::Online &&
+               !session.snapshot()->stale;
+    })) << session.errorText().toStdString();
+}
+
+} // namespace
+} // namespace rung::comms::test
