@@ -5,14 +5,18 @@
 #include <QEvent>
 
 #include "model/target/address.h"
+#include "model/target/target_lists.h"
 
 #include <QHeaderView>
 #include <QLineEdit>
+#include <QStyle>
 #include <QTreeWidget>
 #include <QVBoxLayout>
 
+#include <algorithm>
 #include <map>
 #include <optional>
+#include <vector>
 
 namespace rung::editor {
 
@@ -70,9 +74,51 @@ Use useOf(model::Op op) {
 void CrossReferenceView::retranslate() {
     // The field is as narrow as the dock (about 300 px): the short text as its placeholder,
     // the whole one as its tooltip (in Hungarian the whole one was cut off).
-    m_filter->setPlaceholderText(tr("Device or prefix (X0, X)"));
-    m_filter->setToolTip(tr("Device or prefix (X0, X); empty: every device"));
-    m_tree->setHeaderLabels({tr("Device / rung"), tr("Step"), tr("Use"), tr("Instruction")});
+    // The examples are the target's own: its first input and what it starts with.
+    const QString device = model::exampleDevice(m_document->target());
+    qsizetype letters = 0;
+    while (letters < device.size() && device[letters].isLetter())
+        ++letters;
+    const QString prefix =
+        letters > 0 ? device.left(letters) : device.section(QLatin1Char('.'), 0, 0);
+    m_filter->setPlaceholderText(tr("Device or prefix (%1, %2)").arg(device, prefix));
+    m_filter->setToolTip(tr("Device or prefix (%1, %2); empty: every device").arg(device, prefix));
+    // The rung rows under a device say "rung N" themselves: the first title names the device
+    // only ("Device / rung" took the room of a column and a half in Hungarian).
+    m_tree->setHeaderLabels({tr("Device"), tr("Step"), tr("Use"), tr("Instruction")});
+    fitColumns();
+}
+
+void CrossReferenceView::fitColumns() {
+    QHeaderView *header = m_tree->header();
+    const int columns = header->count();
+    std::vector<int> width(static_cast<std::size_t>(columns));
+    // A step is written with four digits (these PLCs hold fewer than 10000 steps).
+    const int digits = m_tree->fontMetrics().horizontalAdvance(QStringLiteral("0000")) +
+                       2 * m_tree->style()->pixelMetric(QStyle::PM_FocusFrameHMargin) + 8;
+    int used = 0;
+    for (int c = 0; c < columns; ++c) {
+        // The style's hint for a title leaves it a pixel short in some fonts: the text's own
+        // width and the header's margins are the floor.
+        const QString title = m_tree->headerItem()->text(c);
+        const int titleWidth = header->fontMetrics().horizontalAdvance(title) +
+                               2 * header->style()->pixelMetric(QStyle::PM_HeaderMargin) + 8;
+        width[static_cast<std::size_t>(c)] =
+            std::max({header->sectionSizeHint(c), titleWidth, c == 1 ? digits : 0});
+        used += width[static_cast<std::size_t>(c)];
+    }
+    const int extra = std::max(0, m_tree->viewport()->width() - used);
+    const int sharers[] = {0, 2, 3};
+    for (int k = 0; k < 3 && sharers[k] < columns; ++k)
+        width[static_cast<std::size_t>(sharers[k])] += extra / 3 + (k < extra % 3 ? 1 : 0);
+    for (int c = 0; c < columns; ++c)
+        header->resizeSection(c, width[static_cast<std::size_t>(c)]);
+}
+
+bool CrossReferenceView::eventFilter(QObject *watched, QEvent *event) {
+    if (watched == m_tree->viewport() && event->type() == QEvent::Resize)
+        fitColumns();
+    return QWidget::eventFilter(watched, event);
 }
 
 void CrossReferenceView::changeEvent(QEvent *event) {
@@ -93,19 +139,20 @@ CrossReferenceView::CrossReferenceView(Document *document, QWidget *parent)
     m_tree->setDragEnabled(true);
     m_tree->setDragDropMode(QAbstractItemView::DragOnly);
     m_tree->setObjectName(QStringLiteral("crossReferenceTree"));
-    retranslate();
     m_tree->setUniformRowHeights(true);
     m_tree->setAlternatingRowColors(true);
     // The uses fit the dock's width, no sideways scrolling (in Hungarian the use column ran
-    // off the side): the step as wide as its digits, the other columns share the rest, and a
-    // text longer than its share ends in "..." with the whole of it as the tooltip.
+    // off the side), and no title is cut (Stretch cut them all in a narrow dock): fitColumns
+    // gives each column its title's width, the step its digits', and shares the rest; a text
+    // longer than its column ends in "..." with the whole of it as the tooltip.
     m_tree->header()->setStretchLastSection(false);
-    m_tree->header()->setSectionResizeMode(QHeaderView::Stretch);
-    m_tree->header()->setSectionResizeMode(1, QHeaderView::ResizeToContents);
+    m_tree->viewport()->installEventFilter(this);
+    retranslate();
     layout->addWidget(m_filter);
     layout->addWidget(m_tree, 1);
     connect(m_filter, &QLineEdit::textChanged, this, &CrossReferenceView::refresh);
     connect(document, &Document::programChanged, this, [this] {
+        retranslate(); // another target has other devices
         m_stale = true;
         if (m_onScreen)
             refresh();
@@ -166,6 +213,7 @@ void CrossReferenceView::refresh() {
         device->setText(0, symbol && !symbol->name.isEmpty()
                                ? QStringLiteral("%1  %2").arg(name, symbol->name)
                                : name);
+        device->setToolTip(0, device->text(0)); // a long name ends in "..." in a narrow dock
         int counts[3] = {0, 0, 0};
         for (const Place &p : places) {
             ++counts[static_cast<int>(p.use)];

@@ -34,9 +34,13 @@ signals:
 
 protected:
     void changeEvent(QEvent *event) override; // LanguageChange: the headers and the hint
+    bool eventFilter(QObject *watched, QEvent *event) override; // the tree's width: fitColumns
 
 private:
     void retranslate();
+    // Each column at least as wide as its title, the step as its digits; the device, the use
+    // and the instruction share what is left of the tree's width.
+    void fitColumns();
     Document *m_document;
     QLineEdit *m_filter;
     QTreeWidget *m_tree;

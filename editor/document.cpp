@@ -75,8 +75,51 @@ private:
 // whatever the UI language was when it was shown.
 const QRegularExpression &placeholderPattern() {
     static const QRegularExpression re(
-        QStringLiteral("^\\s*(?:;|//)\\s*\\[\\[(\\d+:[0-9a-f]+)\\]\\]"));
+        QStringLiteral("^\\s*(?:;|//)\\s*\\[\\[(\\d+:[0-9a-f]+(?:@\\d+,\\d+)?)\\]\\]"));
     return re;
+}
+
+// What a rung lists on its own: its instructions, with the cell each came from.
+model::ToListingResult listedAlone(const model::Target &target, const model::Rung &rung) {
+    model::LadderProgram one;
+    one.target = &target;
+    one.rungs = {rung};
+    return model::ladderToList(one);
+}
+
+bool sameInstructions(const model::ToListingResult &a, const model::ToListingResult &b) {
+    const auto &x = a.list.instructions;
+    const auto &y = b.list.instructions;
+    return a.problems.empty() && b.problems.empty() && x.size() == y.size() &&
+           std::equal(x.begin(), x.end(), y.begin(),
+                      [](const model::Instruction &i, const model::Instruction &j) {
+                          return i.sameAs(j);
+                      });
+}
+
+// The contacts of listed rung `index` that the list leaves out, being on no path to an output
+// (LD002): (row, column), in reading order.
+std::vector<std::pair<int, int>> leftOutContacts(const model::Rung &rung, int index,
+                                                 const model::ToListingResult &listing) {
+    std::set<std::pair<int, int>> listed;
+    const auto r = static_cast<std::size_t>(index);
+    if (r + 1 < listing.rungFirst.size()) // the rung's own instructions only: no pass over all
+        for (auto i = static_cast<std::size_t>(listing.rungFirst[r]);
+             i < static_cast<std::size_t>(listing.rungFirst[r + 1]) && i < listing.origin.size();
+             ++i)
+            if (const model::CellOrigin &o = listing.origin[i]; o.row >= 0 && o.column >= 0)
+                listed.emplace(o.row, o.column);
+    std::vector<std::pair<int, int>> out;
+    for (int row = 0; row < rung.rows; ++row)
+        for (int col = 0; col < rung.columns; ++col)
+            if (rung.cell(row, col).kind == model::CellKind::Contact && !listed.count({row, col}))
+                out.emplace_back(row, col);
+    return out;
+}
+
+QString contactName(const model::Target &target, const model::Contact &contact) {
+    return contact.operands.empty() ? model::contactToText(target, contact)
+                                    : model::formatOperand(target, contact.operands.front());
 }
 
 } // namespace
@@ -143,6 +186,30 @@ int Document::firstLineOfRung(int rung) const {
     return m_rungLine[static_cast<std::size_t>(rung)];
 }
 
+int Document::lineOf(const model::Location &location) const {
+    if (const auto it = m_leftOutLine.find({location.rung, location.row, location.cell});
+        it != m_leftOutLine.end())
+        return it->second;
+    const auto listed = [&](int rung) {
+        const auto r = static_cast<std::size_t>(rung);
+        return r + 1 < m_listing.rungFirst.size() &&
+               m_listing.rungFirst[r] < m_listing.rungFirst[r + 1];
+    };
+    if (location.rung >= 0 && location.row >= 0 && location.cell >= 0 && listed(location.rung)) {
+        const model::CellOrigin cell{location.rung, location.row, location.cell};
+        const auto &origin = m_listing.origin;
+        const auto first =
+            static_cast<std::size_t>(m_listing.rungFirst[static_cast<std::size_t>(location.rung)]);
+        const auto end = std::min(
+            origin.size(), static_cast<std::size_t>(
+                               m_listing.rungFirst[static_cast<std::size_t>(location.rung) + 1]));
+        for (std::size_t i = first; i < end; ++i)
+            if (origin[i] == cell && i < m_printed.instructionLine.size())
+                return m_printed.instructionLine[i];
+    }
+    return firstLineOfRung(location.rung);
+}
+
 int Document::stepCount() const {
     int steps = 0;
     for (const model::Instruction &i : m_listing.list.instructions)
@@ -200,15 +267,29 @@ bool Document::setListing(const QString &text, std::vector<model::Diagnostic> *e
     // The placeholder lines: each puts back the rung it stands for, at its place; one this
     // document never showed (pasted from elsewhere) is an error rather than a lost rung.
     std::vector<std::pair<int, const model::Rung *>> held; // line (1-based), rung
+    std::vector<KeptContact> kept;                         // the left-out contacts whose lines stay
     {
         const QStringList lines = text.split(QLatin1Char('\n'));
         for (int i = 0; i < lines.size(); ++i) {
             const QString key = placeholderKey(lines[i]);
             if (key.isEmpty())
                 continue;
-            if (const auto it = m_held.find(key); it != m_held.end()) {
-                held.emplace_back(i + 1, &it->second);
-                continue;
+            const QString rungKey = key.section(QLatin1Char('@'), 0, 0);
+            if (const auto it = m_held.find(rungKey); it != m_held.end()) {
+                if (!key.contains(QLatin1Char('@'))) {
+                    held.emplace_back(i + 1, &it->second);
+                    continue;
+                }
+                const QString cell = key.section(QLatin1Char('@'), 1);
+                const int row = cell.section(QLatin1Char(','), 0, 0).toInt() - 1;
+                const int col = cell.section(QLatin1Char(','), 1).toInt() - 1;
+                const model::Rung &rung = it->second;
+                if (row >= 0 && col >= 0 && row < rung.rows && col < rung.columns &&
+                    rung.cell(row, col).kind == model::CellKind::Contact) {
+                    kept.push_back(
+                        {i + 1, rungKey.section(QLatin1Char(':'), 0, 0).toInt(), &rung, row, col});
+                    continue;
+                }
             }
             model::Diagnostic d;
             d.code = QStringLiteral("SYN001");
@@ -253,8 +334,13 @@ bool Document::setListing(const QString &text, std::vector<model::Diagnostic> *e
     options.formOnly = true;
     if (errors)
         *errors = model::checkList(parsed.list, options);
-    // Each held rung goes before the first rung whose instructions start below its line.
     auto &rungs = ladder.ladder.rungs;
+    if (std::vector<model::Diagnostic> lost = keepContacts(kept, ladder); !lost.empty()) {
+        if (errors)
+            *errors = lost;
+        return false;
+    }
+    // Each held rung goes before the first rung whose instructions start below its line.
     for (std::size_t h = 0; h < held.size(); ++h) {
         const auto [line, rung] = held[h];
         const auto before = std::count_if(ladder.rungLine.begin(), ladder.rungLine.end(),
@@ -270,6 +356,88 @@ bool Document::setListing(const QString &text, std::vector<model::Diagnostic> *e
         replaceRungs(0, static_cast<int>(m_project.program.rungs.size()), ladder.ladder.rungs,
                      tr("Edit instruction list"));
     return true;
+}
+
+std::vector<model::Diagnostic> Document::keepContacts(const std::vector<KeptContact> &kept,
+                                                      model::ToLadderResult &ladder) const {
+    std::vector<model::Diagnostic> lost;
+    const auto problem = [&lost](const KeptContact &k, const QString &message) {
+        model::Diagnostic d;
+        d.code = QStringLiteral("SYN001"); // as a line that stood for another program's rung
+        d.severity = model::Severity::Error;
+        d.location.line = k.line;
+        d.location.column = 1;
+        d.message = message;
+        lost.push_back(d);
+    };
+    const auto name = [this](const KeptContact &k) {
+        return contactName(target(), k.drawn->cell(k.row, k.column).contact);
+    };
+    // Each contact joins the rung below its line.
+    auto &rungs = ladder.ladder.rungs;
+    std::map<std::size_t, std::vector<const KeptContact *>> byRung;
+    for (const KeptContact &k : kept) {
+        const auto below = static_cast<std::size_t>(
+            std::upper_bound(ladder.rungLine.begin(), ladder.rungLine.end(), k.line) -
+            ladder.rungLine.begin());
+        if (below < rungs.size())
+            byRung[below].push_back(&k);
+        else
+            problem(k, tr("This line keeps %1 (row %2, column %3) of rung %4, but no rung "
+                          "follows it: delete the line to let the contact go, or undo")
+                           .arg(name(k))
+                           .arg(k.row + 1)
+                           .arg(k.column + 1)
+                           .arg(k.rungNumber));
+    }
+    for (const auto &[index, marks] : byRung) {
+        model::Rung &typed = rungs[index];
+        const model::ToListingResult wanted = listedAlone(target(), typed);
+        const model::Rung *drawn = marks.front()->drawn;
+        const bool oneDrawing = std::all_of(marks.begin(), marks.end(),
+                                            [drawn](const auto *k) { return k->drawn == drawn; });
+        if (oneDrawing && sameInstructions(listedAlone(target(), *drawn), wanted)) {
+            // The rung lists as it did: its drawing comes back whole, less the left-out
+            // contacts whose lines were deleted.
+            model::Rung back = *drawn;
+            back.comment = typed.comment;
+            for (const auto &[row, col] : leftOutContacts(*drawn, 0, listedAlone(target(), *drawn)))
+                if (std::none_of(marks.begin(), marks.end(), [row, col](const auto *k) {
+                        return k->row == row && k->column == col;
+                    }))
+                    back.cell(row, col) = model::Cell{};
+            typed = back;
+            continue;
+        }
+        // The rung was edited: each contact goes back to its cell when that is free, else to
+        // a new row below the rung, where it stays off every path as it was.
+        for (const KeptContact *k : marks) {
+            const model::Cell &drawnCell = k->drawn->cell(k->row, k->column);
+            if (k->row < typed.rows && k->column < typed.columns &&
+                typed.cell(k->row, k->column) == drawnCell)
+                continue; // typed in where it stood (linked now, or as it was)
+            model::Rung merged = typed;
+            int row = k->row;
+            if (row >= merged.rows || k->column >= merged.columns ||
+                merged.cell(row, k->column).kind != model::CellKind::Empty ||
+                merged.coveredByBox(row))
+                row = merged.rows;
+            merged.widenKeepingWires(std::max(merged.rows, row + 1),
+                                     std::max(merged.columns, k->column + 1));
+            merged.cell(row, k->column) = drawnCell;
+            if (merged.cell(row, k->column).kind == model::CellKind::Contact &&
+                sameInstructions(listedAlone(target(), merged), wanted))
+                typed = merged;
+            else
+                problem(*k, tr("%1 (row %2, column %3) of rung %4 finds no place in the rung "
+                               "typed below this line: delete the line to let it go, or undo")
+                                .arg(name(*k))
+                                .arg(k->row + 1)
+                                .arg(k->column + 1)
+                                .arg(k->rungNumber));
+        }
+    }
+    return lost;
 }
 
 void Document::applyRungs(int first, int count, const std::vector<model::Rung> &rungs) {
@@ -299,6 +467,8 @@ void Document::refresh() {
     // lists nothing and is not blank), so the two views never disagree silently.
     model::InstructionList shown = m_listing.list;
     std::vector<std::pair<int, std::size_t>> placeholders; // rung, its comment in `shown`
+    // A left-out contact (rung, row, column) and its comment in `shown`.
+    std::vector<std::pair<std::tuple<int, int, int>, std::size_t>> contactMarks;
     m_unlisted.clear();
     {
         std::vector<std::pair<int, QString>> comments;
@@ -306,8 +476,30 @@ void Document::refresh() {
         const auto &all = m_project.program.rungs;
         for (std::size_t r = 0; r < all.size() && r + 1 < m_listing.rungFirst.size(); ++r) {
             const int at = m_listing.rungFirst[r];
-            if (at < m_listing.rungFirst[r + 1])
+            if (at < m_listing.rungFirst[r + 1]) {
+                // A listed rung: a marked line for each contact it leaves out, after the
+                // rung's own comment, before its first instruction.
+                const int index = static_cast<int>(r);
+                const auto leftOut = leftOutContacts(all[r], index, m_listing);
+                if (leftOut.empty())
+                    continue;
+                while (next < shown.comments.size() && shown.comments[next].first <= at)
+                    comments.push_back(shown.comments[next++]);
+                const QString key = heldRung(index);
+                for (const auto &[row, col] : leftOut) {
+                    comments.emplace_back(
+                        at, QStringLiteral("[[%1@%2,%3]] ").arg(key).arg(row + 1).arg(col + 1) +
+                                tr("Rung %1: %2 (row %3, column %4) is on no path to an output, "
+                                   "so the list leaves it out; the ladder keeps it while this "
+                                   "line stays.")
+                                    .arg(index + 1)
+                                    .arg(contactName(target(), all[r].cell(row, col).contact))
+                                    .arg(row + 1)
+                                    .arg(col + 1));
+                    contactMarks.push_back({{index, row, col}, comments.size() - 1});
+                }
                 continue;
+            }
             const auto problem = std::find_if(
                 m_listing.problems.begin(), m_listing.problems.end(),
                 [r](const model::Diagnostic &d) { return d.location.rung == static_cast<int>(r); });
@@ -360,6 +552,9 @@ void Document::refresh() {
             isPlaceholder[comment] = true;
             m_rungLine[static_cast<std::size_t>(rung)] = commentLine[comment];
         }
+        m_leftOutLine.clear();
+        for (const auto &[cell, comment] : contactMarks)
+            m_leftOutLine[cell] = commentLine[comment];
         // A listed rung starts at its own first comment, else at its first instruction.
         std::vector<int> firstOwnComment(ins.size() + 1, 0);
         for (std::size_t k = 0; k < comments.size(); ++k) {

@@ -11,6 +11,7 @@
 #include <QUndoStack>
 
 #include <map>
+#include <tuple>
 
 namespace rung::editor {
 
@@ -54,10 +55,18 @@ public:
         QString reason;
     };
     const std::vector<Unlisted> &unlistedRungs() const { return m_unlisted; }
-    // The key a placeholder line carries for a rung ("3:9f2c41"), empty if it is no placeholder.
+    // A contact of a listed rung that is on no path to an output (LD002) is not in the list
+    // either: a marked line before its rung's instructions names it, "; [[3:9f2c41@2,1]] Rung
+    // 3: X5 (row 2, column 1) ...", and setListing keeps the contact in the rebuilt rung while
+    // that line stays (deleting the line lets it go).
+    // The key a placeholder line carries ("3:9f2c41", or "3:9f2c41@2,1" for a contact), empty
+    // if the line is no placeholder.
     static QString placeholderKey(const QString &line);
     int rungOfLine(int line) const; // 1-based line of the listing text -> rung, -1 if none
     int firstLineOfRung(int rung) const;
+    // The line of the list a finding on the ladder belongs to: a left-out contact's marked
+    // line, the line of the instruction written from the cell, else its rung's first line.
+    int lineOf(const model::Location &location) const;
     int stepCount() const;
 
     const std::vector<model::Diagnostic> &diagnostics() const { return m_diagnostics; }
@@ -104,6 +113,18 @@ signals:
     void pathChanged(const QString &path);
 
 private:
+    // A left-out contact whose marked line stays in the text given to setListing.
+    struct KeptContact {
+        int line;                 // the marked line (1-based)
+        int rungNumber;           // the rung it named (1-based, as the line says)
+        const model::Rung *drawn; // that rung as drawn (held)
+        int row;
+        int column;
+    };
+    // Puts each kept contact into the rung below its line; what finds no place is returned
+    // as an error on its line, and nothing may change then.
+    std::vector<model::Diagnostic> keepContacts(const std::vector<KeptContact> &kept,
+                                                model::ToLadderResult &ladder) const;
     void refresh();
     // Keeps rung `index` for the placeholder line that stands for it; returns the line's key.
     QString heldRung(int index);
@@ -117,6 +138,8 @@ private:
     std::vector<Unlisted> m_unlisted;
     quint64 m_rungsRevision = 0;
     std::vector<int> m_rungLine; // first line of each rung in m_listingText (1-based)
+    // The marked line of each left-out contact, by rung, row and column.
+    std::map<std::tuple<int, int, int>, int> m_leftOutLine;
     // Every rung a placeholder line has stood for since the project was opened, by the key the
     // line carries: text typed from an older list still finds its rung.
     std::map<QString, model::Rung> m_held;

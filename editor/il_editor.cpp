@@ -617,4 +617,12 @@ void IlEditor::updateCallTip() {
         setToolTip(QString());
 }
 
+void IlEditor::changeEvent(QEvent *event) {
+    if (event->type() == QEvent::LanguageChange) {
+        setAccessibleName(tr("Instruction list"));
+        updateCallTip(); // the instruction's summary, in the new language
+    }
+    QsciScintilla::changeEvent(event);
+}
+
 } // namespace rung::editor

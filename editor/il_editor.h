@@ -125,6 +125,7 @@ protected:
     void paintEvent(QPaintEvent *event) override;
     void contextMenuEvent(QContextMenuEvent *event) override;
     void keyPressEvent(QKeyEvent *event) override;
+    void changeEvent(QEvent *event) override; // LanguageChange: its own texts again
 
 private:
     void snapshotArrived();

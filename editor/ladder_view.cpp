@@ -3,6 +3,7 @@
 #include "monitor_commands.h"
 
 #include "model/target/address.h"
+#include "model/target/target_lists.h"
 
 #include <QCompleter>
 #include <QKeyEvent>
@@ -355,7 +356,8 @@ bool LadderView::enterInstruction(const QString &text, QString *error) {
         return fail(parsed.errors.front().message);
     if (parsed.list.instructions.size() != 1)
         return fail(
-            tr("Type one instruction, for example \"%1 X0\"").arg(mnemonicFor(model::Op::Load)));
+            tr("Type one instruction, for example \"%1 %2\"")
+                .arg(mnemonicFor(model::Op::Load), model::exampleDevice(m_document->target())));
     model::Instruction ins = parsed.list.instructions.front();
     ins.line = ins.column = ins.step = 0;
     const model::Op op = ins.op();
@@ -542,6 +544,12 @@ void LadderView::resizeEvent(QResizeEvent *event) {
     else
         relayout();
     tellWatched();
+}
+
+void LadderView::changeEvent(QEvent *event) {
+    if (event->type() == QEvent::LanguageChange)
+        setAccessibleName(tr("Ladder diagram"));
+    QAbstractScrollArea::changeEvent(event);
 }
 
 } // namespace rung::editor

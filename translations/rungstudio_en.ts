@@ -28,11 +28,19 @@
         </translation>
     </message>
     <message numerus="yes">
-        <location line="+48"/>
+        <location line="+46"/>
         <source>%n place(s) changed</source>
         <translation>
             <numerusform>%n place changed</numerusform>
             <numerusform>%n places changed</numerusform>
+        </translation>
+    </message>
+    <message numerus="yes">
+        <location line="+52"/>
+        <source>%n row(s) of the symbol table name no device of this PLC and are left out of the file: %1. Export the other symbols?</source>
+        <translation>
+            <numerusform>%n row of the symbol table names no device of this PLC and is left out of the file: %1. Export the other symbols?</numerusform>
+            <numerusform>%n rows of the symbol table name no device of this PLC and are left out of the file: %1. Export the other symbols?</numerusform>
         </translation>
     </message>
 </context>
@@ -50,7 +58,7 @@
 <context>
     <name>rung::editor::Document</name>
     <message numerus="yes">
-        <location filename="../editor/document.cpp" line="+172"/>
+        <location filename="../editor/document.cpp" line="+239"/>
         <source>Delete %n rungs</source>
         <translation>
             <numerusform>Delete %n rung</numerusform>

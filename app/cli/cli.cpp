@@ -10,6 +10,7 @@
 #include "model/checks/checks.h"
 #include "model/convert/convert.h"
 #include "model/ladder/ladder_text.h"
+#include "model/target/target_lists.h"
 
 #include <QCoreApplication>
 #include <QSaveFile>
@@ -27,7 +28,7 @@ struct Tr {
 
 QString usage() {
     return Tr::tr("usage:\n"
-                  "  rungstudio-cli check FILE [--target vpc|vigor|cpm1|pl110] [--model M]\n"
+                  "  rungstudio-cli check FILE [--target %1] [--model M]\n"
                   "  rungstudio-cli convert FILE [--target T] [--from il|ladder|project] --to "
                   "il|ladder|project "
                   "[-o OUT] [--force]\n"
@@ -39,7 +40,8 @@ QString usage() {
                   "[--station N] [--baud B] [--period MS]\n"
                   "FILE is a listing (.il), a ladder text (.ladder) or a project (.rung).\n"
                   "--lang en|hu|it: the language of the messages (else the locale's, LANG).\n"
-                  "Exit status: 0 no error, 1 the program has errors, 2 usage or I/O error.") +
+                  "Exit status: 0 no error, 1 the program has errors, 2 usage or I/O error.")
+               .arg(model::targetIds().join(QLatin1Char('|'))) +
            QLatin1Char('\n') + onlineUsage() + QLatin1Char('\n') + recordUsage() +
            QLatin1Char('\n') + terminalUsage();
 }

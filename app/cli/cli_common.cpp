@@ -4,6 +4,7 @@
 #include "model/convert/convert.h"
 #include "model/ladder/ladder_text.h"
 #include "model/project/file_read.h"
+#include "model/target/target_lists.h"
 
 #include <QCoreApplication>
 #include <QFile>
@@ -177,15 +178,14 @@ bool loadInput(const CommonOptions &options, Input *input, QString *error) {
             targetId = model::Target::get(model::Target::families().front()).id;
         }
         if (targetId.isEmpty()) {
-            *error =
-                Tr::tr("%1: which PLC? Give --target vpc|vigor|cpm1|pl110 or a \"; target: NAME\" "
-                       "first line")
-                    .arg(options.file);
+            *error = Tr::tr("%1: which PLC? Give --target %2 or a \"; target: NAME\" first line")
+                         .arg(options.file, model::targetIds().join(QLatin1Char('|')));
             return false;
         }
         input->target = model::Target::byId(targetId);
         if (!input->target) {
-            *error = Tr::tr("unknown target %1 (vpc, vigor, cpm1, pl110)").arg(targetId);
+            *error = Tr::tr("unknown target %1 (%2)")
+                         .arg(targetId, model::targetIds().join(QStringLiteral(", ")));
             return false;
         }
         if (!options.model.isEmpty()) {

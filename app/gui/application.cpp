@@ -1,6 +1,7 @@
 #include "application.h"
 
 #include "command_line.h"
+#include "dialogs.h"
 #include "language.h"
 #include "main_window.h"
 
@@ -39,8 +40,8 @@ int runGui(int argc, char **argv) {
     MainWindow window;
     window.show();
     if (!arguments.ok())
-        QMessageBox::critical(&window, QApplication::translate("rung::app::Gui", "Rung Studio"),
-                              arguments.error);
+        messageBox(QMessageBox::Critical, &window,
+                   QApplication::translate("rung::app::Gui", "Rung Studio"), arguments.error);
     else
         window.start(arguments.file, arguments.target);
     if (!arguments.screenshot.isEmpty()) {

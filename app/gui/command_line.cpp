@@ -1,6 +1,7 @@
 #include "command_line.h"
 
 #include "model/target/target.h"
+#include "model/target/target_lists.h"
 
 #include <QCoreApplication>
 
@@ -27,8 +28,8 @@ void describeGuiArguments(QCommandLineParser &parser) {
                                      "A project (.rung) or an instruction list to open")));
     parser.addOption(QCommandLineOption(
         QStringLiteral("target"),
-        translated(QT_TRANSLATE_NOOP("rung::app::Gui",
-                                     "Target of an instruction list: vpc, vigor, cpm1, pl110")),
+        translated(QT_TRANSLATE_NOOP("rung::app::Gui", "Target of an instruction list: %1"))
+            .arg(model::targetIds().join(QStringLiteral(", "))),
         QStringLiteral("T")));
     parser.addOption(QCommandLineOption(
         QStringLiteral("screenshot"),
@@ -45,9 +46,8 @@ GuiArguments readGuiArguments(const QCommandLineParser &parser) {
     if (files.size() > 1)
         a.error = translated(QT_TRANSLATE_NOOP("rung::app::Gui", "Open one file at a time"));
     else if (!a.target.isEmpty() && !model::Target::byId(a.target))
-        a.error = translated(QT_TRANSLATE_NOOP("rung::app::Gui",
-                                               "Unknown target %1: use vpc, vigor, cpm1 or pl110"))
-                      .arg(a.target);
+        a.error = translated(QT_TRANSLATE_NOOP("rung::app::Gui", "Unknown target %1: use %2"))
+                      .arg(a.target, model::targetIds().join(QStringLiteral(", ")));
     return a;
 }
 

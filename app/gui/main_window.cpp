@@ -1,5 +1,6 @@
 #include "main_window.h"
 
+#include "dialogs.h"
 #include "recovery.h"
 #include "symbol_table.h"
 
@@ -14,7 +15,6 @@
 #include <QApplication>
 #include <QCloseEvent>
 #include <QDockWidget>
-#include <QInputDialog>
 #include <QLabel>
 #include <QMenuBar>
 #include <QScreen>
@@ -185,9 +185,9 @@ void MainWindow::editRungComment() {
     if (index < 0 || index >= static_cast<int>(rungs.size()))
         return;
     bool ok = false;
-    const QString text = QInputDialog::getMultiLineText(
-        this, tr("Rung Comment"), tr("Comment above rung %1:").arg(index + 1),
-        rungs[static_cast<std::size_t>(index)].comment, &ok);
+    const QString text =
+        askMultiLineText(this, tr("Rung Comment"), tr("Comment above rung %1:").arg(index + 1),
+                         rungs[static_cast<std::size_t>(index)].comment, &ok);
     if (ok)
         m_ladder->setRungComment(text);
 }
@@ -244,7 +244,7 @@ void MainWindow::refreshFromDocument() {
         for (model::Diagnostic d : m_document->diagnostics()) {
             if (d.location.rung < 0)
                 continue;
-            d.location.line = m_document->firstLineOfRung(d.location.rung);
+            d.location.line = m_document->lineOf(d.location);
             if (d.location.line > 0)
                 onLines.push_back(d);
         }

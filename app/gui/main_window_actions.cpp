@@ -1,9 +1,11 @@
 #include "main_window.h"
 
+#include "dialogs.h"
 #include "language.h"
 #include "symbol_table.h"
 
 #include "app/languages.h"
+#include "model/target/target_lists.h"
 
 #include "editor/il_editor.h"
 #include "editor/ladder_view.h"
@@ -218,7 +220,7 @@ void MainWindow::buildActions() {
                                                           tr("CSV files (*.csv)"));
         QString error;
         if (!path.isEmpty() && !m_symbols->importCsv(path, &error))
-            QMessageBox::critical(this, tr("Cannot import"), error);
+            messageBox(QMessageBox::Critical, this, tr("Cannot import"), error);
     });
     edit->addAction(tr("E&xport Symbols (CSV)..."), this, &MainWindow::exportSymbols);
     edit->addSeparator();
@@ -284,25 +286,33 @@ void MainWindow::buildActions() {
     }
     QMenu *help = menuBar()->addMenu(tr("&Help"));
     help->addAction(tr("&Keyboard..."), this, [this] {
-        QMessageBox::information(
-            this, tr("Keyboard"),
+        // The examples in this PLC's own words: "LD X0, OUT Y0", "LD 000.00, OUT 010.00".
+        const model::Target &t = m_document->target();
+        QStringList examples;
+        for (const auto &[op, output] :
+             {std::pair{model::Op::Load, false}, std::pair{model::Op::Out, true}})
+            if (const model::InstructionSpec *spec = t.findInstruction(op))
+                examples << spec->mnemonic + QLatin1Char(' ') + model::exampleDevice(t, output);
+        messageBox(
+            QMessageBox::Information, this, tr("Keyboard"),
             tr("F5 normally open contact, F6 normally closed contact, F7 coil, F8 instruction\n"
                "Shift+F5 / Shift+F6 the same contacts in parallel with the row above\n"
                "Shift+F7 / Shift+F8 rising / falling edge contact (Alt: in parallel)\n"
                "F9 horizontal wire, Shift+F9 vertical link, Ctrl+F9 / Ctrl+F10 delete them\n"
-               "Type an instruction into the cell: LD X0, ANI X2, OUT Y1, TMR T0 K10\n"
+               "Type an instruction into the cell: %1\n"
                "Insert: insert a cell, Ctrl+Insert: insert a row, Shift+Insert: insert a rung\n"
                "Delete: clear, Ctrl+Delete: delete the row, Shift+Delete: delete the rung\n"
-               "Ctrl+Z / Ctrl+Y: undo / redo, Ctrl+wheel: zoom, F4: check the program") +
+               "Ctrl+Z / Ctrl+Y: undo / redo, Ctrl+wheel: zoom, F4: check the program")
+                    .arg(examples.join(QStringLiteral(", "))) +
                 QLatin1Char('\n') +
                 tr("Simulation: F10 run, F11 pause, Shift+F11 stop, F12 single scan, "
                    "Ctrl+Shift+F12 power cycle"));
     });
     help->addAction(tr("&About Rung Studio"), this, [this] {
-        QMessageBox::about(
-            this, tr("About Rung Studio"),
-            tr("Rung Studio %1\nLadder and instruction-list editor for VPC, Vigor, CPM1 and PL110.")
-                .arg(QApplication::applicationVersion()));
+        messageBox(QMessageBox::Information, this, tr("About Rung Studio"),
+                   tr("Rung Studio %1\nLadder and instruction-list editor for %2.")
+                       .arg(QApplication::applicationVersion(),
+                            model::targetDisplayNames().join(QStringLiteral(", "))));
     });
     rebuildRecentMenu();
     rebuildExamplesMenu();

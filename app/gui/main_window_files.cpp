@@ -1,5 +1,6 @@
 #include "main_window.h"
 
+#include "dialogs.h"
 #include "example_titles.h"
 #include "ladder_export.h"
 #include "recovery.h"
@@ -59,13 +60,14 @@ bool MainWindow::offerRecovery(bool ask) {
                     : tr("Rung Studio was not closed properly last time. Recover the unsaved "
                          "changes to %1?")
                           .arg(QDir::toNativeSeparators(origin));
-            return !ask || QMessageBox::question(this, tr("Recover"), question) == QMessageBox::Yes;
+            return !ask || messageBox(QMessageBox::Question, this, tr("Recover"), question) ==
+                               QMessageBox::Yes;
         },
         &unreadable);
     if (!unreadable.isEmpty()) {
         statusBar()->showMessage(unreadable.join(u' '), 15000);
         if (ask)
-            QMessageBox::warning(this, tr("Recover"), unreadable.join(u'\n'));
+            messageBox(QMessageBox::Warning, this, tr("Recover"), unreadable.join(u'\n'));
     }
     if (!recovered)
         return false;
@@ -113,7 +115,7 @@ void MainWindow::newProject(const model::Target &target, const QString &modelNam
 bool MainWindow::openFile(const QString &path, const QString &targetId, bool quiet) {
     auto fail = [&](const QString &message) {
         if (!quiet)
-            QMessageBox::critical(this, tr("Cannot open the file"), message);
+            messageBox(QMessageBox::Critical, this, tr("Cannot open the file"), message);
         statusBar()->showMessage(message, 10000);
         return false;
     };
@@ -192,7 +194,7 @@ bool MainWindow::saveTo(const QString &path) {
     const model::Project project = projectToKeep();
     model::ProjectError error;
     if (!model::saveProject(project, path, &error)) {
-        QMessageBox::critical(this, tr("Cannot save"), error.message);
+        messageBox(QMessageBox::Critical, this, tr("Cannot save"), error.message);
         return false;
     }
     m_savedPending = project.pendingListing;
@@ -219,9 +221,9 @@ bool MainWindow::maybeSave() {
         applyListing();
     if (!isModified())
         return true;
-    const auto answer =
-        QMessageBox::warning(this, tr("Unsaved changes"), tr("Save the changes to the program?"),
-                             QMessageBox::Save | QMessageBox::Discard | QMessageBox::Cancel);
+    const auto answer = messageBox(QMessageBox::Warning, this, tr("Unsaved changes"),
+                                   tr("Save the changes to the program?"),
+                                   QMessageBox::Save | QMessageBox::Discard | QMessageBox::Cancel);
     if (answer == QMessageBox::Save)
         return fileSave();
     return answer == QMessageBox::Discard;
@@ -253,13 +255,8 @@ void MainWindow::fileNew() {
     connect(buttons, &QDialogButtonBox::accepted, &dialog, &QDialog::accept);
     connect(buttons, &QDialogButtonBox::rejected, &dialog, &QDialog::reject);
     form->addRow(buttons);
-    // A title bar shows the title beside the window manager's icon and buttons; a dialog only
-    // as wide as its two combo boxes cut "Nuovo progetto" to "Nuovo... getto". Room for the
-    // title in a bold title-bar font and about four buttons' width besides.
-    QFont titleFont = dialog.font();
-    titleFont.setBold(true);
-    dialog.setMinimumWidth(QFontMetrics(titleFont).horizontalAdvance(dialog.windowTitle()) +
-                           8 * QFontMetrics(titleFont).height());
+    // A dialog only as wide as its two combo boxes cut "Nuovo progetto" to "Nuovo... getto".
+    fitTitle(&dialog);
     if (dialog.exec() != QDialog::Accepted)
         return;
     newProject(*model::Target::byId(family->currentData().toString()), modelBox->currentText());
@@ -289,9 +286,8 @@ QString MainWindow::completeSavePath(const QString &chosen, const QStringList &s
         return chosen;
     const QString path = chosen + QLatin1Char('.') + suffixes.front();
     if (QFileInfo::exists(path) &&
-        QMessageBox::question(
-            this, tr("Replace File"),
-            tr("%1 already exists. Replace it?").arg(QDir::toNativeSeparators(path))) !=
+        messageBox(QMessageBox::Question, this, tr("Replace File"),
+                   tr("%1 already exists. Replace it?").arg(QDir::toNativeSeparators(path))) !=
             QMessageBox::Yes)
         return QString();
     return path;
@@ -335,7 +331,7 @@ void MainWindow::exportListing() {
     QString error =
         ProgramExport(*m_document, m_ladder->namesFirst()).listingBlockers(m_listingErrors);
     if (!error.isEmpty()) {
-        QMessageBox::critical(this, tr("Cannot export"), error);
+        messageBox(QMessageBox::Critical, this, tr("Cannot export"), error);
         return;
     }
     const QString path =
@@ -343,7 +339,7 @@ void MainWindow::exportListing() {
                     {QStringLiteral("il"), QStringLiteral("txt")});
     if (!path.isEmpty() &&
         !ProgramExport(*m_document, m_ladder->namesFirst()).listing(path, &error, m_listingErrors))
-        QMessageBox::critical(this, tr("Cannot export"), error);
+        messageBox(QMessageBox::Critical, this, tr("Cannot export"), error);
 }
 
 void MainWindow::exportImage(const QString &format) {
@@ -353,7 +349,7 @@ void MainWindow::exportImage(const QString &format) {
         return;
     QString error;
     if (!ProgramExport(*m_document, m_ladder->namesFirst()).ladder(path, &error))
-        QMessageBox::critical(this, tr("Cannot export"), error);
+        messageBox(QMessageBox::Critical, this, tr("Cannot export"), error);
 }
 
 void MainWindow::printPreview() {
@@ -413,7 +409,8 @@ void MainWindow::rebuildExamplesMenu() {
                 model::ProjectError error;
                 auto project = model::loadProject(path, &error);
                 if (!project) {
-                    QMessageBox::critical(this, tr("Cannot open the example"), error.message);
+                    messageBox(QMessageBox::Critical, this, tr("Cannot open the example"),
+                               error.message);
                     return;
                 }
                 showProject(*project, QString());

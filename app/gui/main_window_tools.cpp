@@ -1,5 +1,6 @@
 #include "main_window.h"
 
+#include "dialogs.h"
 #include "symbol_table.h"
 
 #include "editor/cross_reference_view.h"
@@ -14,7 +15,6 @@
 #include <QClipboard>
 #include <QDockWidget>
 #include <QFileDialog>
-#include <QInputDialog>
 #include <QLineEdit>
 #include <QMessageBox>
 #include <QMimeData>
@@ -124,8 +124,7 @@ void MainWindow::findDeviceDialog() {
     bool ok = false;
     const QString start =
         m_ladder->deviceAtCursor().isEmpty() ? m_findText : m_ladder->deviceAtCursor();
-    const QString text = QInputDialog::getText(this, tr("Find Device"), tr("Device:"),
-                                               QLineEdit::Normal, start, &ok);
+    const QString text = askText(this, tr("Find Device"), tr("Device:"), start, &ok);
     if (ok && !text.trimmed().isEmpty())
         findDevice(text, false);
 }
@@ -152,18 +151,17 @@ void MainWindow::replaceDevice() {
     bool ok = false;
     // The device under the cursor, of the list when it has the focus, else of the ladder.
     const QString current = m_il->hasFocus() ? m_il->deviceAtCaret() : m_ladder->deviceAtCursor();
-    const QString from = QInputDialog::getText(
-        this, tr("Replace Device"), tr("Replace the device:"), QLineEdit::Normal, current, &ok);
+    const QString from =
+        askText(this, tr("Replace Device"), tr("Replace the device:"), current, &ok);
     if (!ok || from.trimmed().isEmpty())
         return;
-    const QString to = QInputDialog::getText(this, tr("Replace Device"), tr("with:"),
-                                             QLineEdit::Normal, QString(), &ok);
+    const QString to = askText(this, tr("Replace Device"), tr("with:"), QString(), &ok);
     if (!ok)
         return;
     QString error;
     const int count = replaceDeviceEverywhere(from, to, &error);
     if (count < 0)
-        QMessageBox::warning(this, tr("Replace Device"), error);
+        messageBox(QMessageBox::Warning, this, tr("Replace Device"), error);
     else
         statusBar()->showMessage(tr("%n place(s) changed", nullptr, count), 5000);
 }
@@ -209,11 +207,25 @@ void MainWindow::buildCrossReference() {
 }
 
 void MainWindow::exportSymbols() {
+    // A row that is no symbol yet (a device this PLC does not have) cannot go into a file
+    // that imports again: say which, and let the user choose, before asking for a name.
+    if (const auto &pending = m_symbols->pending(); !pending.empty()) {
+        QStringList rows;
+        for (const model::PendingSymbol &p : pending)
+            rows << (p.device.isEmpty() ? tr("(no device) %1").arg(p.name)
+                                        : QStringLiteral("%1 %2").arg(p.device, p.name));
+        if (messageBox(QMessageBox::Question, this, tr("Export Symbols"),
+                       tr("%n row(s) of the symbol table name no device of this PLC and are "
+                          "left out of the file: %1. Export the other symbols?",
+                          nullptr, static_cast<int>(pending.size()))
+                           .arg(rows.join(QStringLiteral(", ")))) != QMessageBox::Yes)
+            return;
+    }
     const QString path =
         askSavePath(tr("Export Symbols"), tr("CSV files (*.csv)"), {QStringLiteral("csv")});
     QString error;
     if (!path.isEmpty() && !m_symbols->exportCsv(path, &error))
-        QMessageBox::critical(this, tr("Cannot export"), error);
+        messageBox(QMessageBox::Critical, this, tr("Cannot export"), error);
 }
 
 } // namespace rung::app

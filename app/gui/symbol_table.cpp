@@ -9,6 +9,7 @@
 #include <QEvent>
 #include <QHeaderView>
 #include <QSaveFile>
+#include <QStyle>
 
 namespace rung::app {
 
@@ -21,10 +22,8 @@ SymbolTable::SymbolTable(editor::Document *document, QWidget *parent)
     : QTableWidget(0, 3, parent)
     , m_document(document) {
     setObjectName(QStringLiteral("symbolsTable"));
-    setHeaders();
     horizontalHeader()->setStretchLastSection(true);
-    setColumnWidth(0, 70);
-    setColumnWidth(1, 90);
+    setHeaders();
     verticalHeader()->hide();
     verticalHeader()->setDefaultSectionSize(fontMetrics().height() + 8);
     connect(this, &QTableWidget::cellChanged, this, [this](int row, int) {
@@ -34,7 +33,14 @@ SymbolTable::SymbolTable(editor::Document *document, QWidget *parent)
 }
 
 void SymbolTable::setHeaders() {
-    setHorizontalHeaderLabels({tr("Device"), tr("Name"), tr("Comment")});
+    const QStringList titles{tr("Device"), tr("Name"), tr("Comment")};
+    setHorizontalHeaderLabels(titles);
+    // The device and name columns as wide as their titles ("Operandus" was cut at 70 px),
+    // never narrower than a device and a short name; the comment takes the rest.
+    const QFontMetrics metrics(horizontalHeader()->font());
+    const int padding = 2 * horizontalHeader()->style()->pixelMetric(QStyle::PM_HeaderMargin) + 12;
+    setColumnWidth(0, std::max(70, metrics.horizontalAdvance(titles[0]) + padding));
+    setColumnWidth(1, std::max(90, metrics.horizontalAdvance(titles[1]) + padding));
 }
 
 void SymbolTable::changeEvent(QEvent *event) {

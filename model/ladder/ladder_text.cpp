@@ -1,5 +1,8 @@
 #include "model/ladder/ladder_text.h"
 
+#include "model/target/address.h"
+#include "model/target/target_lists.h"
+
 #include <QCoreApplication>
 #include <QRegularExpression>
 #include <QStringList>
@@ -260,7 +263,9 @@ private:
                 continue;
             }
             if (!cell.startsWith(QLatin1String("-[")) || !cell.endsWith(QLatin1String("]-"))) {
-                error(m_at, at, Tr::tr("A cell is empty, a wire, or a contact \"-[ X0 ]-\""));
+                error(m_at, at,
+                      Tr::tr("A cell is empty, a wire, or a contact \"-[ %1 ]-\"")
+                          .arg(exampleDevice(m_target)));
                 return false;
             }
             Contact contact;
@@ -276,7 +281,10 @@ private:
         if (output.isEmpty())
             return true;
         if (!output.startsWith(QLatin1Char('(')) || !output.endsWith(QLatin1Char(')'))) {
-            error(m_at, outputAt, Tr::tr("An output is written in parentheses: (OUT Y0)"));
+            const InstructionSpec *coil = m_target.findInstruction(Op::Out);
+            error(m_at, outputAt,
+                  Tr::tr("An output is written in parentheses: (%1 %2)")
+                      .arg(coil ? coil->mnemonic : QString(), exampleDevice(m_target, true)));
             return false;
         }
         const QString inner = output.mid(1, output.size() - 2);

@@ -302,17 +302,22 @@ std::variant<Constant, AddressError> parseConstant(const Target &target, QString
         return AddressError{
             Tr::tr("%1: %2 writes constants without K or H").arg(t.toString(), target.displayName),
             lead};
+    // How this target writes a constant, for the messages that refuse another way.
+    const auto ownWay = [&rules] {
+        if (rules.prefixed)
+            return Tr::tr("write a constant as K (decimal) or H (hexadecimal)");
+        if (rules.bcd)
+            return Tr::tr("write a constant with # (e.g. #0150)");
+        return Tr::tr("write a constant as a plain number (e.g. 150)");
+    };
     if (c.style == Constant::Style::Bcd && rules.hashPlain) {
         c.style = Constant::Style::Plain;
     } else if (c.style == Constant::Style::Bcd && !rules.bcd)
-        return AddressError{Tr::tr("%1: # constants belong to CPM1 listings").arg(t.toString()),
-                            lead};
-    if (c.style == Constant::Style::Plain && !rules.plain)
         return AddressError{
-            rules.prefixed
-                ? Tr::tr("%1: write a constant as K (decimal) or H (hexadecimal)").arg(t.toString())
-                : Tr::tr("%1: write a constant with # (e.g. #0150)").arg(t.toString()),
+            Tr::tr("%1: %2 has no # constants; %3").arg(t.toString(), target.displayName, ownWay()),
             lead};
+    if (c.style == Constant::Style::Plain && !rules.plain)
+        return AddressError{Tr::tr("%1: %2").arg(t.toString(), ownWay()), lead};
     bool negative = false;
     if (pos < t.size() && (t[pos] == QLatin1Char('-') || t[pos] == QLatin1Char('+')) &&
         c.style != Constant::Style::Bcd && c.style != Constant::Style::Hex) {

@@ -31,7 +31,7 @@ TEST(CommandLine, AFileAndATarget) {
 TEST(CommandLine, WhatCannotBeUsedSaysWhy) {
     const app::GuiArguments unknown = app::parseGuiArguments(
         {QStringLiteral("rungstudio"), QStringLiteral("p.il"), QStringLiteral("--target=s7")});
-    EXPECT_EQ(unknown.error, QStringLiteral("Unknown target s7: use vpc, vigor, cpm1 or pl110"));
+    EXPECT_EQ(unknown.error, QStringLiteral("Unknown target s7: use vpc, vigor, cpm1, pl110"));
     EXPECT_FALSE(app::parseGuiArguments({QStringLiteral("rungstudio"), QStringLiteral("a.rung"),
                                          QStringLiteral("b.rung")})
                      .ok());

@@ -152,8 +152,8 @@ TEST_F(LanguageSwitch, TheNewProjectDialogIsWideEnoughForItsTitle) {
             QFont bold = dialog->font();
             bold.setBold(true);
             // The title and a title bar's icon, minimise, maximise and close buttons: under
-            // openbox these took 115 px beside the title, about seven text heights.
-            needed = QFontMetrics(bold).horizontalAdvance(title) + 7 * QFontMetrics(bold).height();
+            // openbox seven text heights beside the title still cut it, eight did not.
+            needed = QFontMetrics(bold).horizontalAdvance(title) + 8 * QFontMetrics(bold).height();
             dialog->reject();
         }
     });

@@ -5,10 +5,12 @@
 #include <QApplication>
 #include <QDockWidget>
 #include <QFile>
+#include <QLabel>
 #include <QMessageBox>
 #include <QPushButton>
 #include <QScreen>
 #include <QSettings>
+#include <QStatusBar>
 #include <QTemporaryDir>
 #include <QTimer>
 
@@ -59,6 +61,45 @@ TEST(Screen, TheNextStartRestoresTheWindowAndItsDocks) {
     EXPECT_TRUE(project->isVisible());
     QSettings().remove(QStringLiteral("window/geometry"));
     QSettings().remove(QStringLiteral("window/state"));
+}
+
+// A netbook's 1024x600: the window fits, the ladder keeps most of the room, the project and
+// problems docks and the status bar stay on screen, the toolbar's buttons are reachable.
+TEST(Screen, ALayoutThatWorksDownTo1024x600) {
+    // The layout of a first start: the ladder and the list as tabs (side by side, each of the
+    // two gets half of the room by choice).
+    for (const char *key : {"window/geometry", "window/state", "view/sideBySide", "view/split"})
+        QSettings().remove(QString::fromLatin1(key));
+    app::MainWindow window;
+    window.show();
+    const QSize minimum = window.minimumSizeHint().expandedTo(window.minimumSize());
+    EXPECT_LE(minimum.width(), 1024);
+    EXPECT_LE(minimum.height(), 600 - 32); // a panel or title bar takes the rest
+    window.resize(1024, 600 - 32);
+    QApplication::processEvents();
+    ASSERT_EQ(window.size(), QSize(1024, 600 - 32));
+    const QRect inside = window.rect();
+    const auto onScreen = [&](QWidget *w) {
+        return w && w->isVisible() &&
+               inside.contains(QRect(w->mapTo(&window, QPoint(0, 0)), w->size()));
+    };
+    auto *project = window.findChild<QDockWidget *>(QStringLiteral("projectDock"));
+    auto *problems = window.findChild<QDockWidget *>(QStringLiteral("problemsDock"));
+    EXPECT_TRUE(onScreen(project));
+    EXPECT_TRUE(onScreen(problems));
+    EXPECT_TRUE(onScreen(window.statusBar()));
+    EXPECT_TRUE(onScreen(window.ladderView()));
+    // The drawing keeps the larger part; the docks keep enough to be read.
+    EXPECT_GE(window.ladderView()->width(), 1024 / 2);
+    EXPECT_GE(window.ladderView()->height(), 250);
+    EXPECT_GE(problems->height(), 80);
+    EXPECT_GE(project->width(), 200);
+    // The status bar's parts are whole.
+    for (QLabel *label : window.statusBar()->findChildren<QLabel *>()) {
+        if (label->isVisible() && !label->text().isEmpty()) {
+            EXPECT_GE(label->width(), label->sizeHint().width()) << label->text().toStdString();
+        }
+    }
 }
 
 using SavePath = test::WindowFixture;

@@ -8,14 +8,19 @@
 #include "editor/symbols_csv.h"
 #include "model/target/address.h"
 
+#include <QApplication>
 #include <QDockWidget>
 #include <QFile>
+#include <QFileDialog>
 #include <QLineEdit>
+#include <QMessageBox>
+#include <QPushButton>
 #include <QSet>
 #include <QSignalSpy>
 #include <QTableWidget>
 #include <QTemporaryDir>
 #include <QTest>
+#include <QTimer>
 #include <QTreeWidget>
 #include <QUndoStack>
 
@@ -75,6 +80,7 @@ TEST_F(XrefFixture, ADeviceShowsItsNameAndEachUseLeadsToItsRung) {
     ASSERT_EQ(tree->topLevelItemCount(), 1);
     QTreeWidgetItem *y0 = tree->topLevelItem(0);
     EXPECT_EQ(y0->text(0), QStringLiteral("Y0  Pump"));
+    EXPECT_EQ(y0->toolTip(0), y0->text(0)); // whole, when the column cuts a long name
     EXPECT_EQ(y0->text(3), QStringLiteral("main"));
     EXPECT_TRUE(y0->isExpanded());
     ASSERT_EQ(y0->childCount(), 2);
@@ -263,4 +269,38 @@ TEST(SymbolsTable, AnInvalidRowIsSavedAndReopensMarked) {
     ASSERT_TRUE(fixed);
     EXPECT_TRUE(fixed->pendingSymbols.empty());
     EXPECT_EQ(fixed->symbols.front().name, QStringLiteral("Spare"));
+}
+
+// Export Symbols cannot write a row that names no device of the PLC (it would not import
+// again): it names the row and asks first; No exports nothing.
+TEST(SymbolsTable, ExportSaysWhichRowsItLeavesOutAndAsks) {
+    app::MainWindow window;
+    window.newProject(model::Target::get(model::Family::Vigor), QStringLiteral("VB"));
+    auto *table = window.findChild<QTableWidget *>(QStringLiteral("symbolsTable"));
+    ASSERT_NE(table, nullptr);
+    table->item(0, 0)->setText(QStringLiteral("X9"));
+    table->item(0, 1)->setText(QStringLiteral("Spare"));
+    QAction *exportAction = test::editMenuEntry(window, QStringLiteral("Export Symbols (CSV)..."));
+    ASSERT_NE(exportAction, nullptr);
+    QString asked;
+    int fileDialogs = 0;
+    // Whatever opens is answered: the question with No, a file dialog (which must not come)
+    // with Cancel, so the test cannot hang.
+    QTimer answer;
+    answer.setInterval(10);
+    QObject::connect(&answer, &QTimer::timeout, [&] {
+        QWidget *modal = QApplication::activeModalWidget();
+        if (auto *box = qobject_cast<QMessageBox *>(modal)) {
+            asked = box->text();
+            box->button(QMessageBox::No)->click();
+        } else if (auto *files = qobject_cast<QFileDialog *>(modal)) {
+            ++fileDialogs;
+            files->reject();
+        }
+    });
+    answer.start();
+    exportAction->trigger();
+    answer.stop();
+    EXPECT_TRUE(asked.contains(QLatin1String("X9 Spare"))) << asked.toStdString();
+    EXPECT_EQ(fileDialogs, 0);
 }

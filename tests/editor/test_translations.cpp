@@ -14,6 +14,8 @@
 #include <QTranslator>
 #include <QXmlStreamReader>
 
+#include "tests/editor/catalogue.h"
+
 #include <gtest/gtest.h>
 
 #include <map>
@@ -21,50 +23,10 @@
 #include <set>
 
 using namespace rung;
+using test::Message;
+using test::readCatalogue;
 
 namespace {
-
-struct Message {
-    QString context;
-    QString source;
-    bool numerus = false;
-    bool finished = true;
-    QStringList forms; // one string, or the numerus forms
-};
-
-std::vector<Message> readCatalogue(const QString &path) {
-    QFile file(path);
-    EXPECT_TRUE(file.open(QIODevice::ReadOnly)) << path.toStdString();
-    std::vector<Message> messages;
-    QXmlStreamReader xml(&file);
-    QString context;
-    Message current;
-    while (!xml.atEnd()) {
-        xml.readNext();
-        if (!xml.isStartElement())
-            continue;
-        const auto name = xml.name();
-        if (name == QLatin1String("name")) {
-            context = xml.readElementText();
-        } else if (name == QLatin1String("message")) {
-            current =
-                Message{context, {}, xml.attributes().value("numerus") == QLatin1String("yes")};
-        } else if (name == QLatin1String("source")) {
-            current.source = xml.readElementText();
-        } else if (name == QLatin1String("translation")) {
-            current.finished = xml.attributes().value("type").isEmpty();
-            if (current.numerus) {
-                while (xml.readNextStartElement())
-                    current.forms << xml.readElementText();
-            } else {
-                current.forms << xml.readElementText();
-            }
-            messages.push_back(current);
-        }
-    }
-    EXPECT_FALSE(xml.hasError()) << xml.errorString().toStdString();
-    return messages;
-}
 
 std::multiset<QString> placeholders(const QString &text, bool numerus) {
     static const QRegularExpression re(QStringLiteral("%(?:n|L?[1-9])"));

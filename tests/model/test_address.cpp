@@ -503,7 +503,8 @@ TEST(Constant, VpcAndPl110WritePlainNumbers) {
     EXPECT_EQ(formatConstant(vpc(), Constant{1234, Constant::Style::Plain}),
               QStringLiteral("1234"));
     EXPECT_EQ(constantError(vpc(), "#12"),
-              QStringLiteral("#12: # constants belong to CPM1 listings"));
+              QStringLiteral("#12: VPC has no # constants; write a constant as a plain number "
+                             "(e.g. 150)"));
     EXPECT_EQ(constant(pl110(), "-32768"), (Constant{-32768, Constant::Style::Plain}));
     // PLProg writes MOV(Tx = #0): on PL110 '#' marks a plain number.
     EXPECT_EQ(constant(pl110(), "#0"), (Constant{0, Constant::Style::Plain}));

@@ -4,6 +4,7 @@
 
 #include "model/target/address.h"
 #include "model/target/target.h"
+#include "model/target/target_lists.h"
 
 #include <QDir>
 #include <QDirIterator>
@@ -154,4 +155,48 @@ TEST(SourceGuard, LiteralScannerSeesCodeNotComments) {
     EXPECT_EQ(literalsOf(QStringLiteral(R"(f("M9000"); // "X0")")), QStringList{"M9000"});
     EXPECT_EQ(literalsOf(QStringLiteral(R"(g('"', "a\"b"))")), QStringList{"a\"b"});
     EXPECT_TRUE(literalsOf(QStringLiteral(R"(// "p76")")).isEmpty());
+}
+
+// A device written inside a message ("for example \"LD X0\"") is a fact of one family too: a
+// CPM1 user reads of a device their PLC does not have. Messages take their examples from the
+// target (exampleDevice); this reads every word of every literal.
+TEST(SourceGuard, NoDeviceNameInsideATextOutsideTheTargetTables) {
+    static const QRegularExpression separators(QStringLiteral("[^A-Za-z0-9.]+"));
+    for (const QString &path : productSources()) {
+        const QStringList lines = linesOf(path);
+        for (int k = 0; k < lines.size(); ++k) {
+            for (const QString &literal : literalsOf(lines[k])) {
+                for (QString word : literal.split(separators, Qt::SkipEmptyParts)) {
+                    while (word.endsWith(QLatin1Char('.')))
+                        word.chop(1); // the end of a sentence
+                    if (word == literal || !mayBeDevice(word))
+                        continue; // a whole literal is the guard above's
+                    for (Family f : Target::families()) {
+                        const Target &t = Target::get(f);
+                        EXPECT_FALSE(std::holds_alternative<Address>(parseAddress(t, word)))
+                            << where(path, k).toStdString() << ": \"" << word.toStdString()
+                            << "\" in \"" << literal.toStdString() << "\" is a "
+                            << t.displayName.toStdString()
+                            << " device; take the example from the target (exampleDevice)";
+                    }
+                }
+            }
+        }
+    }
+}
+
+// Texts that list the PLCs read the tables: a fifth family needs no new text.
+TEST(SourceGuard, NoTextListsTheFamilies) {
+    for (const QString &path : productSources()) {
+        const QStringList lines = linesOf(path);
+        for (int k = 0; k < lines.size(); ++k)
+            for (const QString &literal : literalsOf(lines[k])) {
+                int named = 0;
+                for (const QString &id : targetIds())
+                    named += literal.contains(id, Qt::CaseInsensitive) ? 1 : 0;
+                EXPECT_LT(named, 2)
+                    << where(path, k).toStdString() << ": \"" << literal.toStdString()
+                    << "\" names the families; use targetIds() / displayNames()";
+            }
+    }
 }

@@ -1,0 +1,22 @@
+#pragma once
+
+// What texts name from the target tables: the families a text lists and the device a message
+// shows as an example. A text takes them from here, never writes one of its own, so adding a
+// fifth PLC needs no new text.
+
+#include "model/target/target.h"
+
+#include <QString>
+#include <QStringList>
+
+namespace rung::model {
+
+// The families' ids ("vpc", "vigor", ...) and display names, in Target::families() order.
+QStringList targetIds();
+QStringList targetDisplayNames();
+
+// The target's first input terminal (Vigor X0, VPC i00, CPM1 000.00, PL110 I1), or its first
+// output terminal (Y0, o00, 010.00, Q1), as the target writes it.
+QString exampleDevice(const Target &target, bool output = false);
+
+} // namespace rung::model
