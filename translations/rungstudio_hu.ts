@@ -987,7 +987,7 @@ Létradiagram- és utasításlista-szerkesztő VPC, Vigor, CPM1 és PL110 PLC-kh
         <translation>Az utasításlistában hibák vannak, ezért a létra még az utolsó hibátlan programot mutatja: a szimuláció előtt javítsa a listát (vagy vonja vissza a módosítást)</translation>
     </message>
     <message>
-        <location line="+38"/>
+        <location line="+39"/>
         <source>&amp;Simulation</source>
         <translation>Szi&amp;muláció</translation>
     </message>
@@ -2227,12 +2227,12 @@ Létradiagram- és utasításlista-szerkesztő VPC, Vigor, CPM1 és PL110 PLC-kh
     </message>
     <message>
         <location line="+7"/>
-        <location line="+96"/>
+        <location line="+97"/>
         <source>The preset of %1 is the constant %2 of the program: change it in the program</source>
         <translation>%1 beállított értéke a program %2 konstansa: a programban változtassa meg</translation>
     </message>
     <message>
-        <location line="-83"/>
+        <location line="-84"/>
         <source>%1 forced ON</source>
         <translation>%1 kényszerítve BE</translation>
     </message>
@@ -2272,7 +2272,7 @@ Létradiagram- és utasításlista-szerkesztő VPC, Vigor, CPM1 és PL110 PLC-kh
         <translation>„%1” nem érték ehhez: %2; írjon egész számot (hexadecimális elé 0x)</translation>
     </message>
     <message>
-        <location line="+5"/>
+        <location line="+6"/>
         <source>%1 written: %2</source>
         <translation>%1 írva: %2</translation>
     </message>
@@ -2287,7 +2287,7 @@ Létradiagram- és utasításlista-szerkesztő VPC, Vigor, CPM1 és PL110 PLC-kh
         <translation>%1 új beállított értéke:</translation>
     </message>
     <message>
-        <location line="+16"/>
+        <location line="+17"/>
         <source>&quot;%1&quot; is no preset for %2: type a whole number from 0</source>
         <translation>„%1” nem beállított érték ehhez: %2; írjon 0-tól kezdődő egész számot</translation>
     </message>
@@ -2310,23 +2310,25 @@ Létradiagram- és utasításlista-szerkesztő VPC, Vigor, CPM1 és PL110 PLC-kh
 <context>
     <name>rung::editor::PowerFlow</name>
     <message>
-        <location filename="../editor/power_flow.cpp" line="+318"/>
+        <location filename="../editor/il_editor_monitor.cpp" line="+96"/>
+        <location filename="../editor/power_flow.cpp" line="+326"/>
         <source>ON</source>
         <translation>BE</translation>
     </message>
     <message>
-        <location line="+0"/>
+        <location line="+1"/>
+        <location filename="../editor/power_flow.cpp" line="+0"/>
         <source>OFF</source>
         <translation>KI</translation>
     </message>
     <message>
-        <location line="+16"/>
+        <location filename="../editor/power_flow.cpp" line="+16"/>
         <source>%1/%2 ×%3 s</source>
         <extracomment>a timer&apos;s time elapsed / set value in its units, then the unit: &quot;23/50 ×0.1 s&quot;</extracomment>
         <translation>%1/%2 ×%3 s</translation>
     </message>
     <message>
-        <location line="+25"/>
+        <location line="+26"/>
         <source>%1 = %2</source>
         <extracomment>a device and its value under a box: &quot;D0 = 12&quot;</extracomment>
         <translation>%1 = %2</translation>

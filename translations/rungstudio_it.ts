@@ -991,7 +991,7 @@ Editor di schemi ladder e liste istruzioni per VPC, Vigor, CPM1 e PL110.</transl
         <translation>La lista istruzioni contiene errori, quindi il ladder mostra ancora l&apos;ultimo programma senza errori: correggere la lista (o annullare) prima di simulare</translation>
     </message>
     <message>
-        <location line="+38"/>
+        <location line="+39"/>
         <source>&amp;Simulation</source>
         <translation>&amp;Simulazione</translation>
     </message>
@@ -2233,12 +2233,12 @@ Editor di schemi ladder e liste istruzioni per VPC, Vigor, CPM1 e PL110.</transl
     </message>
     <message>
         <location line="+7"/>
-        <location line="+96"/>
+        <location line="+97"/>
         <source>The preset of %1 is the constant %2 of the program: change it in the program</source>
         <translation>Il valore di preset di %1 è la costante %2 del programma: modificarlo nel programma</translation>
     </message>
     <message>
-        <location line="-83"/>
+        <location line="-84"/>
         <source>%1 forced ON</source>
         <translation>%1 forzato ON</translation>
     </message>
@@ -2278,7 +2278,7 @@ Editor di schemi ladder e liste istruzioni per VPC, Vigor, CPM1 e PL110.</transl
         <translation>&quot;%1&quot; non è un valore per %2: scrivere un numero intero (0x davanti a uno esadecimale)</translation>
     </message>
     <message>
-        <location line="+5"/>
+        <location line="+6"/>
         <source>%1 written: %2</source>
         <translation>%1 scritto: %2</translation>
     </message>
@@ -2293,7 +2293,7 @@ Editor di schemi ladder e liste istruzioni per VPC, Vigor, CPM1 e PL110.</transl
         <translation>Nuovo valore di preset di %1:</translation>
     </message>
     <message>
-        <location line="+16"/>
+        <location line="+17"/>
         <source>&quot;%1&quot; is no preset for %2: type a whole number from 0</source>
         <translation>&quot;%1&quot; non è un valore di preset per %2: scrivere un numero intero da 0</translation>
     </message>
@@ -2316,23 +2316,25 @@ Editor di schemi ladder e liste istruzioni per VPC, Vigor, CPM1 e PL110.</transl
 <context>
     <name>rung::editor::PowerFlow</name>
     <message>
-        <location filename="../editor/power_flow.cpp" line="+318"/>
+        <location filename="../editor/il_editor_monitor.cpp" line="+96"/>
+        <location filename="../editor/power_flow.cpp" line="+326"/>
         <source>ON</source>
         <translation>ON</translation>
     </message>
     <message>
-        <location line="+0"/>
+        <location line="+1"/>
+        <location filename="../editor/power_flow.cpp" line="+0"/>
         <source>OFF</source>
         <translation>OFF</translation>
     </message>
     <message>
-        <location line="+16"/>
+        <location filename="../editor/power_flow.cpp" line="+16"/>
         <source>%1/%2 ×%3 s</source>
         <extracomment>a timer&apos;s time elapsed / set value in its units, then the unit: &quot;23/50 ×0.1 s&quot;</extracomment>
         <translation>%1/%2 ×%3 s</translation>
     </message>
     <message>
-        <location line="+25"/>
+        <location line="+26"/>
         <source>%1 = %2</source>
         <extracomment>a device and its value under a box: &quot;D0 = 12&quot;</extracomment>
         <translation>%1 = %2</translation>
