@@ -112,21 +112,45 @@ void openFileInTheMainWindow(benchmark::State &state) {
 // A 2,000-rung Vigor program whose first rung is LD X20 / OUT Y20 (devices the random rungs
 // do not use) and whose second counts the scans in D100 (so that every snapshot changes what
 // the first page shows), saved as a project the main window opens.
-QString overlayProjectFile(QTemporaryDir &dir) {
+// On failure: an empty path and why in `why`.
+QString overlayProjectFile(QTemporaryDir &dir, std::string &why) {
     const model::Target &t = model::Target::get(model::Family::Vigor);
-    rung::testing::RandomProgramOptions o;
-    o.rungs = 2000;
-    o.extended = true; // timers, compares, moves: values under the boxes
+    // The generator numbers a timer per extended rung: 800 of them stay within the target's
+    // timers (timers, compares, moves: values under the boxes); 1,200 plain rungs follow.
+    rung::testing::RandomProgramOptions boxes;
+    boxes.rungs = 800;
+    boxes.extended = true;
+    boxes.end = false;
+    // 2,000 rungs within the VH's 16,000 steps: networks two deep, one output a rung.
+    boxes.maxDepth = 2;
+    boxes.branches = false;
+    rung::testing::RandomProgramOptions plain;
+    plain.rungs = 1200;
+    plain.maxDepth = 2;
+    plain.branches = false;
     const QString text = QStringLiteral("LD X20\nOUT Y20\nLD M9000\nINC D100\n") +
-                         rung::testing::randomProgram(t, 11, o);
+                         rung::testing::randomProgram(t, 11, boxes) +
+                         rung::testing::randomProgram(t, 12, plain);
     const model::ParseResult parsed = model::parseInstructionList(t, text);
+    if (!parsed.ok()) {
+        const model::ParseError &e = parsed.errors.front();
+        why = QStringLiteral("the generated listing does not parse: line %1: %2")
+                  .arg(e.line)
+                  .arg(e.message)
+                  .toStdString();
+        return {};
+    }
     model::Project p;
     p.target = &t;
     p.model = t.defaultModel().name;
     p.program = model::listToLadder(parsed.list).ladder;
     const QString path = dir.filePath(QStringLiteral("overlay.rung"));
     model::ProjectError error;
-    return parsed.ok() && model::saveProject(p, path, &error) ? path : QString();
+    if (!model::saveProject(p, path, &error)) {
+        why = "the project could not be written";
+        return {};
+    }
+    return path;
 }
 
 // Counts the paint events of a widget and when the last one ended.
@@ -144,15 +168,35 @@ struct RunningWindow {
     QTemporaryDir dir;
     app::MainWindow window;
     bool ok = false;
+    std::string why; // what went wrong when !ok
     explicit RunningWindow(double speed) {
-        const QString path = overlayProjectFile(dir);
+        const QString path = overlayProjectFile(dir, why);
         window.resize(1366, 768);
         window.setSideBySide(true);
         window.show();
-        if (path.isEmpty() || !window.openFile(path, QString(), true))
+        if (path.isEmpty())
             return;
+        if (!window.openFile(path, QString(), true)) {
+            why = "the project did not open";
+            return;
+        }
+        // The controller says why it does not start (the program's errors).
+        QString said;
+        QObject::connect(window.simulation(), &app::SimulationController::message, &window,
+                         [&said](const QString &text) { said += text + QLatin1Char(' '); });
+        QObject::connect(window.simulation(), &app::SimulationController::problems, &window,
+                         [&said](const std::vector<model::Diagnostic> &errors) {
+                             for (const model::Diagnostic &d : errors)
+                                 said += QStringLiteral("%1 (line %2, rung %3): %4; ")
+                                             .arg(d.code)
+                                             .arg(d.location.line)
+                                             .arg(d.location.rung + 1)
+                                             .arg(d.message);
+                         });
         window.simulation()->setSpeed(speed);
         ok = window.simulation()->run();
+        if (!ok)
+            why = "the program did not run: " + said.toStdString();
         QApplication::processEvents();
     }
     ~RunningWindow() { window.simulation()->stop(); }
@@ -164,7 +208,7 @@ struct RunningWindow {
 void overlayFramesAtFullSpeed(benchmark::State &state) {
     RunningWindow w(0.0);
     if (!w.ok) {
-        state.SkipWithError("the program did not run");
+        state.SkipWithError(w.why.c_str());
         return;
     }
     editor::LadderView *view = w.window.ladderView();
@@ -202,7 +246,7 @@ void overlayFramesAtFullSpeed(benchmark::State &state) {
 void overlayFrameCost(benchmark::State &state) {
     RunningWindow w(0.0);
     if (!w.ok) {
-        state.SkipWithError("the program did not run");
+        state.SkipWithError(w.why.c_str());
         return;
     }
     app::SimulationController *sim = w.window.simulation();
@@ -239,12 +283,15 @@ void overlayFrameCost(benchmark::State &state) {
 void inputToScreenLatency(benchmark::State &state) {
     RunningWindow w(1.0);
     if (!w.ok) {
-        state.SkipWithError("the program did not run");
+        state.SkipWithError(w.why.c_str());
         return;
     }
     app::SimulationController *sim = w.window.simulation();
     editor::LadderView *view = w.window.ladderView();
+    // The first rung's coil on screen: the ladder beside the list is narrower than a rung.
     view->verticalScrollBar()->setValue(0);
+    view->horizontalScrollBar()->setValue(view->horizontalScrollBar()->maximum());
+    QApplication::processEvents();
     const model::Address x20 = std::get<model::Address>(
         model::parseAddress(w.window.document()->target(), QStringLiteral("X20")));
     const QRect out = view->cellRectOnScreen({0, 0, view->metrics().gridColumns});
