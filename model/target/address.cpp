@@ -395,6 +395,8 @@ Address offsetAddress(const Target &target, const Address &address, qint64 offse
             return Address{i, static_cast<int>(element), address.bit};
     }
     return {};
+}
+
 std::variant<std::vector<Address>, AddressError>
 parseAddressRange(const Target &target, QStringView text, const ModelVariant *model) {
     const qsizetype dots = text.indexOf(QLatin1String(".."));

@@ -31,6 +31,7 @@ std::variant<Address, AddressError> parseAddress(const Target &target, QStringVi
 // Invalid when no area of that prefix (on the model, if one is given) holds it.
 Address offsetAddress(const Target &target, const Address &address, qint64 offset,
                       const ModelVariant *model = nullptr);
+
 // A range of devices as a user types it into a watch table: "D0..D15", "X0..X17" (Vigor X
 // is octal: 16 inputs), "000.00..000.11" (CPM1 bits, across channels too), "M490..M510" (one
 // prefix, though the table splits it in areas). Every device from the first to the last in
