@@ -249,7 +249,7 @@ Kilépési kód: 0 nincs hiba, 1 a programban hiba van, 2 használati vagy I/O h
         <translation>Ismeretlen célrendszer: %1; használható: vpc, vigor, cpm1 vagy pl110</translation>
     </message>
     <message>
-        <location filename="../app/gui/application.cpp" line="+40"/>
+        <location filename="../app/gui/application.cpp" line="+42"/>
         <source>Rung Studio</source>
         <translation>Rung Studio</translation>
     </message>
@@ -2411,7 +2411,7 @@ A read és a write kilépési kódja: 0 kész, 1 a PLC nem válaszolt vagy eluta
 <context>
     <name>rung::editor::IoPanel</name>
     <message>
-        <location filename="../editor/io_panel.cpp" line="+90"/>
+        <location filename="../editor/io_panel.cpp" line="+88"/>
         <source>Inputs are switches</source>
         <translation>A bemenetek kapcsolók</translation>
     </message>
@@ -2725,7 +2725,7 @@ A read és a write kilépési kódja: 0 kész, 1 a PLC nem válaszolt vagy eluta
 <context>
     <name>rung::editor::TimingCanvas</name>
     <message>
-        <location filename="../editor/timing_canvas.cpp" line="+154"/>
+        <location filename="../editor/timing_canvas.cpp" line="+156"/>
         <source>Type devices above (Y0, D0..D3) or drag them here from the ladder or the watch table</source>
         <translation>Írjon be fent operandusokat (Y0, D0..D3), vagy húzza ide őket a létradiagramról vagy a figyelőtáblából</translation>
     </message>
@@ -2733,7 +2733,7 @@ A read és a write kilépési kódja: 0 kész, 1 a PLC nem válaszolt vagy eluta
 <context>
     <name>rung::editor::TimingChart</name>
     <message>
-        <location filename="../editor/timing_chart.cpp" line="+157"/>
+        <location filename="../editor/timing_chart.cpp" line="+165"/>
         <source>Add: Y0, D0..D3, then Enter</source>
         <translation>Hozzáadás: Y0, D0..D3, majd Enter</translation>
     </message>
@@ -2881,7 +2881,7 @@ A read és a write kilépési kódja: 0 kész, 1 a PLC nem válaszolt vagy eluta
         <translation>A trigger nincs élesítve: ez a forrás nem tudja figyelni: %1</translation>
     </message>
     <message>
-        <location line="+22"/>
+        <location line="+23"/>
         <source>Armed: stops when %1</source>
         <translation>Élesítve: megáll, ha %1</translation>
     </message>

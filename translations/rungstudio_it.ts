@@ -249,7 +249,7 @@ Codice di uscita: 0 nessun errore, 1 il programma contiene errori, 2 errore di u
         <translation>Famiglia PLC sconosciuta: %1; usare vpc, vigor, cpm1 o pl110</translation>
     </message>
     <message>
-        <location filename="../app/gui/application.cpp" line="+40"/>
+        <location filename="../app/gui/application.cpp" line="+42"/>
         <source>Rung Studio</source>
         <translation>Rung Studio</translation>
     </message>
@@ -2417,7 +2417,7 @@ Codice di uscita di read e write: 0 fatto, 1 il PLC non ha risposto o ha rifiuta
 <context>
     <name>rung::editor::IoPanel</name>
     <message>
-        <location filename="../editor/io_panel.cpp" line="+90"/>
+        <location filename="../editor/io_panel.cpp" line="+88"/>
         <source>Inputs are switches</source>
         <translation>Ingressi come interruttori</translation>
     </message>
@@ -2731,7 +2731,7 @@ Codice di uscita di read e write: 0 fatto, 1 il PLC non ha risposto o ha rifiuta
 <context>
     <name>rung::editor::TimingCanvas</name>
     <message>
-        <location filename="../editor/timing_canvas.cpp" line="+154"/>
+        <location filename="../editor/timing_canvas.cpp" line="+156"/>
         <source>Type devices above (Y0, D0..D3) or drag them here from the ladder or the watch table</source>
         <translation>Digitare sopra gli operandi (Y0, D0..D3) o trascinarli qui dal ladder o dalla tabella di osservazione</translation>
     </message>
@@ -2739,7 +2739,7 @@ Codice di uscita di read e write: 0 fatto, 1 il PLC non ha risposto o ha rifiuta
 <context>
     <name>rung::editor::TimingChart</name>
     <message>
-        <location filename="../editor/timing_chart.cpp" line="+157"/>
+        <location filename="../editor/timing_chart.cpp" line="+165"/>
         <source>Add: Y0, D0..D3, then Enter</source>
         <translation>Aggiungi: Y0, D0..D3, poi Invio</translation>
     </message>
@@ -2888,7 +2888,7 @@ Codice di uscita di read e write: 0 fatto, 1 il PLC non ha risposto o ha rifiuta
         <translation>Trigger non armato: questa sorgente non può osservare %1</translation>
     </message>
     <message>
-        <location line="+22"/>
+        <location line="+23"/>
         <source>Armed: stops when %1</source>
         <translation>Armato: si ferma quando %1</translation>
     </message>
