@@ -63,7 +63,6 @@ TimingChart::TimingChart(Document *document, QWidget *parent)
     m_arm->setObjectName(QStringLiteral("timingArm"));
     m_readout->setObjectName(QStringLiteral("timingReadout"));
     m_add->setClearButtonEnabled(true);
-    m_add->setMinimumWidth(QFontMetrics(m_add->font()).averageCharWidth() * 30);
     m_trigger->setMinimumWidth(150);
     m_zoomIn->setText(QStringLiteral("+"));
     m_zoomOut->setText(QStringLiteral("−"));
@@ -163,6 +162,10 @@ TimingChart::TimingChart(Document *document, QWidget *parent)
 
 void TimingChart::retranslate() {
     m_add->setPlaceholderText(tr("Add: Y0, D0..D3, then Enter"));
+    // Wide enough for the hint in every language (the clear button takes room too).
+    m_add->setMinimumWidth(
+        std::max(QFontMetrics(m_add->font()).horizontalAdvance(m_add->placeholderText()) + 36,
+                 QFontMetrics(m_add->font()).averageCharWidth() * 30));
     m_add->setToolTip(tr("Devices and ranges to draw, with commas; they can also be dragged "
                          "here from the ladder or the watch table"));
     m_zoomIn->setToolTip(tr("Zoom in (+, Ctrl+wheel)"));

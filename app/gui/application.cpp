@@ -75,14 +75,13 @@ int runGui(int argc, char **argv) {
                             words << name;
                     }
                 editor::WatchListView *watch = window.watchListView();
-                watch->addDevices(named + words);
+                watch->addDevices(words + named); // the formats in view first
                 const model::ValueFormat formats[] = {
                     model::ValueFormat::Decimal, model::ValueFormat::Hex,
                     model::ValueFormat::Binary, model::ValueFormat::Bcd};
                 for (int k = 0;
                      k < static_cast<int>(words.size()) && watch->topLevelItemCount() > 0; ++k)
-                    if (QTreeWidgetItem *row =
-                            watch->topLevelItem(0)->child(static_cast<int>(named.size()) + k))
+                    if (QTreeWidgetItem *row = watch->topLevelItem(0)->child(k))
                         watch->setFormat(row, formats[k]);
                 editor::TimingChart *timing = window.timingChart();
                 timing->addDevices(named);
