@@ -399,6 +399,8 @@ void BM_ResolvedOperandsRatio(benchmark::State &state) {
     state.counters["plain_ns_per_scan"] = plainNs / scans;
     state.counters["resolved_ns_per_scan"] = resolvedNs / scans;
     state.counters["ratio"] = plainNs > 0 ? resolvedNs / plainNs : 0;
+}
+
 // The same cost as a user meets it: two SimulatorSessions of the mixed program run as fast as
 // possible on their worker threads, in turns of 150 ms, one plain and one with 1,000 devices
 // recorded, a trigger armed and a reader copying the chart's window out of the history 30
