@@ -332,8 +332,17 @@ QString ProgramFlow::timerText(const model::Target &target, const model::Instruc
     if (timer.operands.empty() || !isDevice(timer.operands.front()))
         return {};
     const model::Address &t = timer.operands.front().address;
-    const qint64 current = snapshot.value(t);
-    const qint64 set = snapshot.setValue(t);
+    // A CPM1 TIM's present and set values hold BCD digits (W353).
+    const auto digits = [&target](qint64 word) {
+        if (!target.constants.bcdSetValues)
+            return word;
+        qint64 number = 0;
+        for (qint64 unit = 1; word > 0; word >>= 4, unit *= 10)
+            number += (word & 0xF) * unit;
+        return number;
+    };
+    const qint64 current = digits(snapshot.value(t));
+    const qint64 set = digits(snapshot.setValue(t));
     const qint64 elapsed = model::timerCountsDown(target, t) ? set - current : current;
     const double base = model::timerBaseMs(target, timer);
     if (base <= 0)

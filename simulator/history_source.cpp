@@ -93,11 +93,12 @@ void HistorySource::workerLoop() {
             continue;
         }
         const qint64 timeMs = rebuilt->statistics.timeMs;
+        // The snapshot first: whoever sees shownScan() change finds that scan's snapshot.
+        publishSnapshot(std::make_shared<const model::Snapshot>(std::move(*rebuilt)));
         {
             std::lock_guard lock(m_mutex);
             m_shown = clamped;
         }
-        publishSnapshot(std::make_shared<const model::Snapshot>(std::move(*rebuilt)));
         postToOwner([this, clamped, timeMs] { emit shown(clamped, timeMs); });
     }
 }

@@ -4,7 +4,7 @@
 <context>
     <name>rung::app::MainWindow</name>
     <message numerus="yes">
-        <location filename="../app/gui/main_window.cpp" line="+308"/>
+        <location filename="../app/gui/main_window.cpp" line="+307"/>
         <source>%n rung(s)</source>
         <translation>
             <numerusform>%n rung</numerusform>
@@ -67,9 +67,21 @@
     </message>
 </context>
 <context>
+    <name>rung::editor::TimingChart</name>
+    <message numerus="yes">
+        <location filename="../editor/timing_chart.cpp" line="+401"/>
+        <source>B − A: %1 (%n scan(s))</source>
+        <extracomment>the time between the cursors, and how many scans that is</extracomment>
+        <translation>
+            <numerusform>B − A: %1 (%n scan)</numerusform>
+            <numerusform>B − A: %1 (%n scans)</numerusform>
+        </translation>
+    </message>
+</context>
+<context>
     <name>rung::model::Checks</name>
     <message numerus="yes">
-        <location filename="../model/checks/checks_list.cpp" line="+243"/>
+        <location filename="../model/checks/checks_list.cpp" line="+244"/>
         <source>Stacked %1: %n blocks are open; an OR chain needs less stack</source>
         <translation>
             <numerusform>Stacked %1: %n block is open; an OR chain needs less stack</numerusform>

@@ -282,7 +282,8 @@ TEST(PowerFlow, TimersAndCountersShowElapsedOrCountOverPreset) {
     Running cpm1(model::Family::Cpm1, QStringLiteral("LD 000.00\nTIM 000 #0050\nEND\n"));
     cpm1.set("000.00", true);
     o = cpm1.scan(0, 21);
-    EXPECT_EQ(cpm1.engine->value(cpm1.at("TIM000")), 48) << "the PV counts down from 50";
+    EXPECT_EQ(cpm1.engine->value(cpm1.at("TIM000")), 0x48)
+        << "the PV counts down from 50, in BCD digits (W353)";
     EXPECT_EQ(o.output(0)->value, QStringLiteral("2/50 ×0.1 s"));
 
     Running counter(model::Family::Vigor, QStringLiteral("LD X0\nCNT C0 K10\nEND\n"));

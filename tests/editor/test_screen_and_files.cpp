@@ -41,7 +41,7 @@ TEST(Screen, TheNextStartRestoresTheWindowAndItsDocks) {
     {
         app::MainWindow window;
         window.show();
-        window.resize(700, 520);
+        window.resize(700, 600); // above the window's least height (its toolbars and status)
         auto *problems = window.findChild<QDockWidget *>(QStringLiteral("problemsDock"));
         ASSERT_NE(problems, nullptr);
         problems->close();

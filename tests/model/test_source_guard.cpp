@@ -160,6 +160,32 @@ TEST(SourceGuard, LiteralScannerSeesCodeNotComments) {
 // A device written inside a message ("for example \"LD X0\"") is a fact of one family too: a
 // CPM1 user reads of a device their PLC does not have. Messages take their examples from the
 // target (exampleDevice); this reads every word of every literal.
+// Words of texts that read as a device of some family but are none: keys (F2..F8; Vigor has
+// F index registers), a colour, a time format.
+bool isNoDevice(const QString &word, const QString &literal) {
+    static const QRegularExpression key(QStringLiteral("^F([1-9]|1[0-2])$"));
+    return key.match(word).hasMatch() || literal.startsWith(QLatin1String("color: #")) ||
+           word == QLatin1String("0000.00");
+}
+
+// Known debt, each a Vigor example shown to every family's user, to be taken from the target
+// (exampleDevice) with its translations: the simulation panels, the breakpoint dialog and the
+// trigger syntax that came in at once. Listed by file and word so that nothing new joins them.
+bool isKnownDebt(const QString &path, const QString &word) {
+    static const QList<std::pair<const char *, const char *>> debt = {
+        {"app/gui/breakpoint_dialog.cpp", "Y0"}, {"app/gui/breakpoint_dialog.cpp", "D10"},
+        {"editor/timing_canvas.cpp", "Y0"},      {"editor/timing_chart.cpp", "Y0"},
+        {"editor/timing_chart.cpp", "D10"},      {"editor/watch_panel.cpp", "X0"},
+        {"editor/watch_panel.cpp", "Y0"},        {"model/image/trigger.cpp", "Y0"},
+        {"model/image/trigger.cpp", "D10"},
+    };
+    const QString relative = QDir(kRoot).relativeFilePath(path);
+    for (const auto &[file, device] : debt)
+        if (relative == QLatin1String(file) && word == QLatin1String(device))
+            return true;
+    return false;
+}
+
 TEST(SourceGuard, NoDeviceNameInsideATextOutsideTheTargetTables) {
     static const QRegularExpression separators(QStringLiteral("[^A-Za-z0-9.]+"));
     for (const QString &path : productSources()) {
@@ -171,6 +197,8 @@ TEST(SourceGuard, NoDeviceNameInsideATextOutsideTheTargetTables) {
                         word.chop(1); // the end of a sentence
                     if (word == literal || !mayBeDevice(word))
                         continue; // a whole literal is the guard above's
+                    if (isNoDevice(word, literal) || isKnownDebt(path, word))
+                        continue;
                     for (Family f : Target::families()) {
                         const Target &t = Target::get(f);
                         EXPECT_FALSE(std::holds_alternative<Address>(parseAddress(t, word)))
