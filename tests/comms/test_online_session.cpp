@@ -40,6 +40,7 @@ struct Harness {
     const model::Target &target;
     std::mutex mutex;
     FakeTransport *port = nullptr; // the latest made, owned by the session's driver
+    int made = 0;                  // transports made: a reconnect makes a new one
     std::function<void(FakeTransport &)> setUp;
     std::unique_ptr<OnlineSession> session;
     QObject reader;
@@ -55,12 +56,19 @@ struct Harness {
             setUp(*t);
             std::lock_guard lock(mutex);
             port = t.get();
+            ++made;
             return t;
         });
     }
     FakeTransport *transport() {
         std::lock_guard lock(mutex);
         return port;
+    }
+    // The transport made as the n-th (1-based), once it exists: the one before it is gone
+    // with its driver after a disconnect, and must not be touched.
+    FakeTransport *transportNumber(int n) {
+        std::lock_guard lock(mutex);
+        return made == n ? port : nullptr;
     }
     void watch(std::initializer_list<const char *> names) {
         std::vector<model::Address> devices;
@@ -252,7 +260,10 @@ TEST(OnlineSession, DisconnectAndDestructionDoNotWaitForASilentPlc) {
     EXPECT_TRUE(
         eventually([&] { return h.session->connectionState() == State::Disconnected; }, 2000));
     h.session->connectToPlc();
-    ASSERT_TRUE(eventually([&] { return h.transport()->writes() > 0; }));
+    ASSERT_TRUE(eventually([&] {
+        FakeTransport *again = h.transportNumber(2);
+        return again && again->writes() > 0;
+    }));
     clock.restart();
     h.session.reset(); // the worker is waiting for the PLC
     EXPECT_LT(clock.elapsed(), 2000);
