@@ -1415,6 +1415,29 @@ A read és a write kilépési kódja: 0 kész, 1 a PLC nem válaszolt vagy eluta
     </message>
 </context>
 <context>
+    <name>rung::app::PortOptions</name>
+    <message>
+        <location filename="../app/cli/cli_port_options.cpp" line="+23"/>
+        <source>unexpected argument %1</source>
+        <translation>váratlan argumentum: %1</translation>
+    </message>
+    <message>
+        <location line="+4"/>
+        <source>%1 needs a value</source>
+        <translation>%1 után érték kell</translation>
+    </message>
+    <message>
+        <location line="+14"/>
+        <source>--baud must be a number from 50 to 4000000; got %1</source>
+        <translation>a --baud 50 és 4000000 közötti szám legyen; kapott érték: %1</translation>
+    </message>
+    <message>
+        <location line="+6"/>
+        <source>--frame must be data bits, parity and stop bits, e.g. 8N1 or 7E2; got %1</source>
+        <translation>a --frame adatbitek, paritás és stopbitek megadása, pl. 8N1 vagy 7E2; kapott érték: %1</translation>
+    </message>
+</context>
+<context>
     <name>rung::app::ProgramExport</name>
     <message>
         <location filename="../app/gui/ladder_export.cpp" line="+82"/>
@@ -1473,7 +1496,7 @@ A read és a write kilépési kódja: 0 kész, 1 a PLC nem válaszolt vagy eluta
 <context>
     <name>rung::app::Record</name>
     <message>
-        <location filename="../app/cli/cli_record.cpp" line="+41"/>
+        <location filename="../app/cli/cli_record.cpp" line="+43"/>
         <source>  rungstudio-cli record --pc PORT --plc PORT [--baud B] [--frame 8N1] [-o FILE]
         [--seconds S]   (PORT: a serial port, a /dev/pts path, or pty for a new one)</source>
         <translation>  rungstudio-cli record --pc PORT --plc PORT [--baud B] [--frame 8N1] [-o FILE]
@@ -1485,32 +1508,12 @@ A read és a write kilépési kódja: 0 kész, 1 a PLC nem válaszolt vagy eluta
         <translation>használat:</translation>
     </message>
     <message>
-        <location line="+14"/>
-        <source>%1 needs a value</source>
-        <translation>%1 után érték kell</translation>
-    </message>
-    <message>
-        <location line="+5"/>
-        <source>unexpected argument %1</source>
-        <translation>váratlan argumentum: %1</translation>
-    </message>
-    <message>
-        <location line="+3"/>
+        <location line="+15"/>
         <source>--pc and --plc are needed: the two ports to join</source>
         <translation>a --pc és a --plc kell: az összekötendő két port</translation>
     </message>
     <message>
-        <location line="+6"/>
-        <source>--baud must be a number from 50 to 4000000; got %1</source>
-        <translation>a --baud 50 és 4000000 közötti szám legyen; kapott érték: %1</translation>
-    </message>
-    <message>
-        <location line="+4"/>
-        <source>--frame must be data bits, parity and stop bits, e.g. 8N1 or 7E2; got %1</source>
-        <translation>a --frame adatbitek, paritás és stopbitek megadása, pl. 8N1 vagy 7E2; kapott érték: %1</translation>
-    </message>
-    <message>
-        <location line="+7"/>
+        <location line="+8"/>
         <source>--seconds must be a positive number; got %1</source>
         <translation>a --seconds pozitív szám legyen; kapott érték: %1</translation>
     </message>
@@ -1971,7 +1974,7 @@ A FÁJL utasításlista (.il), létradiagram-szöveg (.ladder) vagy projekt (.ru
 <context>
     <name>rung::app::SimulationPanel</name>
     <message>
-        <location filename="../app/gui/simulation_panel.cpp" line="+154"/>
+        <location filename="../app/gui/simulation_panel.cpp" line="+156"/>
         <source>Run</source>
         <translation>Futtatás</translation>
     </message>
@@ -2101,7 +2104,7 @@ Kiértékelés: %4 µs (%5..%6)</translation>
 <context>
     <name>rung::app::Terminal</name>
     <message>
-        <location filename="../app/cli/cli_terminal.cpp" line="+104"/>
+        <location filename="../app/cli/cli_terminal.cpp" line="+106"/>
         <source>  rungstudio-cli terminal --port PORT [--baud B] [--frame 8N1] [--wait MS]
         (each line of stdin: hex bytes, &quot;text\r&quot;, or a capture line)</source>
         <translation>  rungstudio-cli terminal --port PORT [--baud B] [--frame 8N1] [--wait MS]
@@ -2113,37 +2116,17 @@ Kiértékelés: %4 µs (%5..%6)</translation>
         <translation>használat:</translation>
     </message>
     <message>
-        <location line="+14"/>
-        <source>%1 needs a value</source>
-        <translation>%1 után érték kell</translation>
-    </message>
-    <message>
-        <location line="+5"/>
-        <source>unexpected argument %1</source>
-        <translation>váratlan argumentum: %1</translation>
-    </message>
-    <message>
-        <location line="+3"/>
+        <location line="+11"/>
         <source>--port is needed</source>
         <translation>a --port kell</translation>
     </message>
     <message>
-        <location line="+6"/>
-        <source>--baud must be a number from 50 to 4000000; got %1</source>
-        <translation>a --baud 50 és 4000000 közötti szám legyen; kapott érték: %1</translation>
-    </message>
-    <message>
-        <location line="+4"/>
-        <source>--frame must be data bits, parity and stop bits, e.g. 8N1 or 7E2; got %1</source>
-        <translation>a --frame adatbitek, paritás és stopbitek megadása, pl. 8N1 vagy 7E2; kapott érték: %1</translation>
-    </message>
-    <message>
-        <location line="+7"/>
+        <location line="+8"/>
         <source>--wait must be a number from 1 to 60000; got %1</source>
         <translation>a --wait 1 és 60000 közötti szám legyen; kapott érték: %1</translation>
     </message>
     <message>
-        <location line="+38"/>
+        <location line="+37"/>
         <source>line %1: &quot;%2&quot; is neither hex bytes (02 30 31), a quoted text (&quot;@00RD\r&quot;) nor a capture line</source>
         <translation>%1. sor: „%2” nem hexa bájtok (02 30 31), nem idézőjeles szöveg (&quot;@00RD\r&quot;) és nem is egy felvétel sora</translation>
     </message>
@@ -3517,7 +3500,7 @@ Kiértékelés: %4 µs (%5..%6)</translation>
         <translation>KI</translation>
     </message>
     <message>
-        <location filename="../editor/power_flow.cpp" line="+16"/>
+        <location filename="../editor/power_flow.cpp" line="+25"/>
         <source>%1/%2 ×%3 s</source>
         <extracomment>a timer&apos;s time elapsed / set value in its units, then the unit: &quot;23/50 ×0.1 s&quot;</extracomment>
         <translation>%1/%2 ×%3 s</translation>

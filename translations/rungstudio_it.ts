@@ -1420,6 +1420,29 @@ Codice di uscita di read e write: 0 fatto, 1 il PLC non ha risposto o ha rifiuta
     </message>
 </context>
 <context>
+    <name>rung::app::PortOptions</name>
+    <message>
+        <location filename="../app/cli/cli_port_options.cpp" line="+23"/>
+        <source>unexpected argument %1</source>
+        <translation>argomento inatteso %1</translation>
+    </message>
+    <message>
+        <location line="+4"/>
+        <source>%1 needs a value</source>
+        <translation>%1 richiede un valore</translation>
+    </message>
+    <message>
+        <location line="+14"/>
+        <source>--baud must be a number from 50 to 4000000; got %1</source>
+        <translation>--baud deve essere un numero da 50 a 4000000; ricevuto %1</translation>
+    </message>
+    <message>
+        <location line="+6"/>
+        <source>--frame must be data bits, parity and stop bits, e.g. 8N1 or 7E2; got %1</source>
+        <translation>--frame indica bit di dati, parità e bit di stop, ad es. 8N1 o 7E2; ricevuto %1</translation>
+    </message>
+</context>
+<context>
     <name>rung::app::ProgramExport</name>
     <message>
         <location filename="../app/gui/ladder_export.cpp" line="+82"/>
@@ -1478,7 +1501,7 @@ Codice di uscita di read e write: 0 fatto, 1 il PLC non ha risposto o ha rifiuta
 <context>
     <name>rung::app::Record</name>
     <message>
-        <location filename="../app/cli/cli_record.cpp" line="+41"/>
+        <location filename="../app/cli/cli_record.cpp" line="+43"/>
         <source>  rungstudio-cli record --pc PORT --plc PORT [--baud B] [--frame 8N1] [-o FILE]
         [--seconds S]   (PORT: a serial port, a /dev/pts path, or pty for a new one)</source>
         <translation>  rungstudio-cli record --pc PORT --plc PORT [--baud B] [--frame 8N1] [-o FILE]
@@ -1490,32 +1513,12 @@ Codice di uscita di read e write: 0 fatto, 1 il PLC non ha risposto o ha rifiuta
         <translation>uso:</translation>
     </message>
     <message>
-        <location line="+14"/>
-        <source>%1 needs a value</source>
-        <translation>%1 richiede un valore</translation>
-    </message>
-    <message>
-        <location line="+5"/>
-        <source>unexpected argument %1</source>
-        <translation>argomento inatteso %1</translation>
-    </message>
-    <message>
-        <location line="+3"/>
+        <location line="+15"/>
         <source>--pc and --plc are needed: the two ports to join</source>
         <translation>servono --pc e --plc: le due porte da collegare</translation>
     </message>
     <message>
-        <location line="+6"/>
-        <source>--baud must be a number from 50 to 4000000; got %1</source>
-        <translation>--baud deve essere un numero da 50 a 4000000; ricevuto %1</translation>
-    </message>
-    <message>
-        <location line="+4"/>
-        <source>--frame must be data bits, parity and stop bits, e.g. 8N1 or 7E2; got %1</source>
-        <translation>--frame indica bit di dati, parità e bit di stop, ad es. 8N1 o 7E2; ricevuto %1</translation>
-    </message>
-    <message>
-        <location line="+7"/>
+        <location line="+8"/>
         <source>--seconds must be a positive number; got %1</source>
         <translation>--seconds deve essere un numero positivo; ricevuto %1</translation>
     </message>
@@ -1977,7 +1980,7 @@ FILE è una lista istruzioni (.il), un testo ladder (.ladder) o un progetto (.ru
 <context>
     <name>rung::app::SimulationPanel</name>
     <message>
-        <location filename="../app/gui/simulation_panel.cpp" line="+154"/>
+        <location filename="../app/gui/simulation_panel.cpp" line="+156"/>
         <source>Run</source>
         <translation>Esecuzione</translation>
     </message>
@@ -2107,7 +2110,7 @@ Valutazione: %4 µs (%5..%6)</translation>
 <context>
     <name>rung::app::Terminal</name>
     <message>
-        <location filename="../app/cli/cli_terminal.cpp" line="+104"/>
+        <location filename="../app/cli/cli_terminal.cpp" line="+106"/>
         <source>  rungstudio-cli terminal --port PORT [--baud B] [--frame 8N1] [--wait MS]
         (each line of stdin: hex bytes, &quot;text\r&quot;, or a capture line)</source>
         <translation>  rungstudio-cli terminal --port PORT [--baud B] [--frame 8N1] [--wait MS]
@@ -2119,37 +2122,17 @@ Valutazione: %4 µs (%5..%6)</translation>
         <translation>uso:</translation>
     </message>
     <message>
-        <location line="+14"/>
-        <source>%1 needs a value</source>
-        <translation>%1 richiede un valore</translation>
-    </message>
-    <message>
-        <location line="+5"/>
-        <source>unexpected argument %1</source>
-        <translation>argomento inatteso %1</translation>
-    </message>
-    <message>
-        <location line="+3"/>
+        <location line="+11"/>
         <source>--port is needed</source>
         <translation>serve --port</translation>
     </message>
     <message>
-        <location line="+6"/>
-        <source>--baud must be a number from 50 to 4000000; got %1</source>
-        <translation>--baud deve essere un numero da 50 a 4000000; ricevuto %1</translation>
-    </message>
-    <message>
-        <location line="+4"/>
-        <source>--frame must be data bits, parity and stop bits, e.g. 8N1 or 7E2; got %1</source>
-        <translation>--frame indica bit di dati, parità e bit di stop, ad es. 8N1 o 7E2; ricevuto %1</translation>
-    </message>
-    <message>
-        <location line="+7"/>
+        <location line="+8"/>
         <source>--wait must be a number from 1 to 60000; got %1</source>
         <translation>--wait deve essere un numero da 1 a 60000; ricevuto %1</translation>
     </message>
     <message>
-        <location line="+38"/>
+        <location line="+37"/>
         <source>line %1: &quot;%2&quot; is neither hex bytes (02 30 31), a quoted text (&quot;@00RD\r&quot;) nor a capture line</source>
         <translation>riga %1: &quot;%2&quot; non è né byte esadecimali (02 30 31), né un testo tra virgolette (&quot;@00RD\r&quot;), né una riga di una cattura</translation>
     </message>
@@ -3524,7 +3507,7 @@ Valutazione: %4 µs (%5..%6)</translation>
         <translation>OFF</translation>
     </message>
     <message>
-        <location filename="../editor/power_flow.cpp" line="+16"/>
+        <location filename="../editor/power_flow.cpp" line="+25"/>
         <source>%1/%2 ×%3 s</source>
         <extracomment>a timer&apos;s time elapsed / set value in its units, then the unit: &quot;23/50 ×0.1 s&quot;</extracomment>
         <translation>%1/%2 ×%3 s</translation>

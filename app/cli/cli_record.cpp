@@ -1,5 +1,7 @@
 #include "cli_record.h"
 
+#include "cli_port_options.h"
+
 #include "comms/driver/connection.h"
 #include "comms/driver/relay.h"
 #include "comms/transport/pty_transport.h"
@@ -50,37 +52,21 @@ int runRecordCommand(const QStringList &args, QTextStream &out, QTextStream &err
         err << message << '\n' << Tr::tr("usage:") << '\n' << recordUsage() << '\n';
         return 2;
     };
-    const struct {
-        const char *name;
-        QString *value;
-    } valued[] = {{"--pc", &pcPort},   {"--plc", &plcPort},         {"--baud", &baudText},
-                  {"--frame", &frame}, {"--seconds", &secondsText}, {"-o", &output}};
-    for (qsizetype i = 0; i < args.size(); ++i) {
-        bool taken = false;
-        for (const auto &v : valued) {
-            if (args[i] != QLatin1String(v.name))
-                continue;
-            if (i + 1 >= args.size())
-                return fail(Tr::tr("%1 needs a value").arg(args[i]));
-            *v.value = args[++i];
-            taken = true;
-        }
-        if (!taken)
-            return fail(Tr::tr("unexpected argument %1").arg(args[i]));
-    }
+    QString error;
+    comms::SerialSettings line;
+    if (!takeValuedOptions(args,
+                           {{"--pc", &pcPort},
+                            {"--plc", &plcPort},
+                            {"--baud", &baudText},
+                            {"--frame", &frame},
+                            {"--seconds", &secondsText},
+                            {"-o", &output}},
+                           &error))
+        return fail(error);
     if (pcPort.isEmpty() || plcPort.isEmpty())
         return fail(Tr::tr("--pc and --plc are needed: the two ports to join"));
-    comms::SerialSettings line;
-    if (!baudText.isEmpty()) {
-        bool ok = false;
-        line.baud = baudText.toInt(&ok);
-        if (!ok || line.baud < 50 || line.baud > 4'000'000)
-            return fail(Tr::tr("--baud must be a number from 50 to 4000000; got %1").arg(baudText));
-    }
-    if (!frame.isEmpty() && !comms::parseFrameFormat(frame, &line))
-        return fail(
-            Tr::tr("--frame must be data bits, parity and stop bits, e.g. 8N1 or 7E2; got %1")
-                .arg(frame));
+    if (!parseLineOptions(baudText, frame, &line, &error))
+        return fail(error);
     double seconds = 0;
     if (!secondsText.isEmpty()) {
         bool ok = false;
@@ -89,7 +75,7 @@ int runRecordCommand(const QStringList &args, QTextStream &out, QTextStream &err
             return fail(Tr::tr("--seconds must be a positive number; got %1").arg(secondsText));
     }
 
-    QString error, pcCreated, plcCreated;
+    QString pcCreated, plcCreated;
     auto pc = makeSide(pcPort, line, &pcCreated, &error);
     if (!pc) {
         err << Tr::tr("the PC's side: %1").arg(error) << '\n';

@@ -1,5 +1,7 @@
 #include "cli_terminal.h"
 
+#include "cli_port_options.h"
+
 #include "comms/driver/connection.h"
 #include "comms/driver/relay.h"
 
@@ -112,37 +114,17 @@ int runTerminalCommand(const QStringList &args, QTextStream &in, QTextStream &ou
         err << message << '\n' << Tr::tr("usage:") << '\n' << terminalUsage() << '\n';
         return 2;
     };
-    const struct {
-        const char *name;
-        QString *value;
-    } valued[] = {
-        {"--port", &port}, {"--baud", &baudText}, {"--frame", &frame}, {"--wait", &waitText}};
-    for (qsizetype i = 0; i < args.size(); ++i) {
-        bool taken = false;
-        for (const auto &v : valued) {
-            if (args[i] != QLatin1String(v.name))
-                continue;
-            if (i + 1 >= args.size())
-                return fail(Tr::tr("%1 needs a value").arg(args[i]));
-            *v.value = args[++i];
-            taken = true;
-        }
-        if (!taken)
-            return fail(Tr::tr("unexpected argument %1").arg(args[i]));
-    }
+    QString error;
+    comms::SerialSettings line;
+    if (!takeValuedOptions(
+            args,
+            {{"--port", &port}, {"--baud", &baudText}, {"--frame", &frame}, {"--wait", &waitText}},
+            &error))
+        return fail(error);
     if (port.isEmpty())
         return fail(Tr::tr("--port is needed"));
-    comms::SerialSettings line;
-    if (!baudText.isEmpty()) {
-        bool ok = false;
-        line.baud = baudText.toInt(&ok);
-        if (!ok || line.baud < 50 || line.baud > 4'000'000)
-            return fail(Tr::tr("--baud must be a number from 50 to 4000000; got %1").arg(baudText));
-    }
-    if (!frame.isEmpty() && !comms::parseFrameFormat(frame, &line))
-        return fail(
-            Tr::tr("--frame must be data bits, parity and stop bits, e.g. 8N1 or 7E2; got %1")
-                .arg(frame));
+    if (!parseLineOptions(baudText, frame, &line, &error))
+        return fail(error);
     int waitMs = 500;
     if (!waitText.isEmpty()) {
         bool ok = false;
@@ -152,7 +134,6 @@ int runTerminalCommand(const QStringList &args, QTextStream &in, QTextStream &ou
     }
 
     const std::unique_ptr<comms::Transport> transport = comms::makePortTransport(port, line);
-    QString error;
     if (!transport->open(&error)) {
         err << error << '\n';
         return 2;

@@ -1,6 +1,7 @@
 #include "comms/protocol/vigor_link.h"
 #include "comms/transport/pty_transport.h"
 #include "tests/comms/hex.h"
+#include "tests/comms/pty_pair.h"
 
 #include <gtest/gtest.h>
 
@@ -19,39 +20,11 @@ namespace {
 
 using R = ReadResult::Status;
 
-struct Pair {
-    std::unique_ptr<PtyTransport> master;
-    std::unique_ptr<PtyTransport> peer;
-};
-
-Pair makePair() {
-    Pair p;
-    QString error;
-    p.master = PtyTransport::createPair(&error);
-    EXPECT_TRUE(p.master) << error.toStdString();
-    if (!p.master)
-        return p;
-    EXPECT_TRUE(p.master->peerPath().startsWith(QLatin1String("/dev/pts/")));
-    p.peer = std::make_unique<PtyTransport>(p.master->peerPath());
-    EXPECT_TRUE(p.peer->open(&error)) << error.toStdString();
-    return p;
-}
-
-// Reads until `size` bytes arrived or a read returns something other than data.
-QByteArray readAll(Transport &t, qsizetype size, int ms = 2000) {
-    QByteArray out;
-    const QDeadlineTimer deadline(ms);
-    while (out.size() < size) {
-        const auto r = t.read(deadline);
-        if (r.status != R::Data)
-            break;
-        out += r.bytes;
-    }
-    return out;
-}
+using test::makePtyPair;
+using test::readAll;
 
 TEST(PtyTransport, AVigorRequestCrossesARealPseudoTerminalByteForByteBothWays) {
-    Pair p = makePair();
+    test::PtyPair p = makePtyPair();
     ASSERT_TRUE(p.peer);
     // Every byte value, including CR, ^C and ^S, must pass untouched (raw mode, no echo).
     QByteArray all;
@@ -66,7 +39,7 @@ TEST(PtyTransport, AVigorRequestCrossesARealPseudoTerminalByteForByteBothWays) {
 }
 
 TEST(PtyTransport, AReadWithNothingToReadEndsAtItsDeadline) {
-    Pair p = makePair();
+    test::PtyPair p = makePtyPair();
     ASSERT_TRUE(p.peer);
     QElapsedTimer clock;
     clock.start();
@@ -77,7 +50,7 @@ TEST(PtyTransport, AReadWithNothingToReadEndsAtItsDeadline) {
 }
 
 TEST(PtyTransport, CancelFromAnotherThreadWakesAWaitingRead) {
-    Pair p = makePair();
+    test::PtyPair p = makePtyPair();
     ASSERT_TRUE(p.peer);
     ReadResult result;
     std::thread reader([&] { result = p.peer->read(QDeadlineTimer(QDeadlineTimer::Forever)); });
@@ -101,7 +74,7 @@ TEST(PtyTransport, OpeningAMissingPathOrANonTerminalNamesThePathAndTheCause) {
 }
 
 TEST(PtyTransport, TheMasterGoingAwayFailsTheReadInsteadOfHanging) {
-    Pair p = makePair();
+    test::PtyPair p = makePtyPair();
     ASSERT_TRUE(p.peer);
     p.master.reset();
     const auto r = p.peer->read(QDeadlineTimer(2000));
@@ -110,7 +83,7 @@ TEST(PtyTransport, TheMasterGoingAwayFailsTheReadInsteadOfHanging) {
 }
 
 TEST(PtyTransport, AReplySplitAcrossWritesIsDecodedWhole) {
-    Pair p = makePair();
+    test::PtyPair p = makePtyPair();
     ASSERT_TRUE(p.peer);
     const QByteArray reply = test::bytes("06 30 30 35 31 30 30 41 37 39 33 03 30 44");
     vigor::ReplyDecoder d({0, vigor::Command::Read, 0x0081, 2, {}});
@@ -130,7 +103,7 @@ TEST(PtyTransport, AReplySplitAcrossWritesIsDecodedWhole) {
 TEST(PtyTransport, ACancelWithNoReadWaitingEndsTheNextReadOnceAndIsNotLost) {
     // transport.h: a cancel() between two reads ends the next read that would wait, once,
     // however many came; data already there comes first.
-    Pair p = makePair();
+    test::PtyPair p = makePtyPair();
     ASSERT_TRUE(p.peer);
     p.peer->cancel();
     p.peer->cancel();
@@ -198,7 +171,7 @@ private:
 };
 
 TEST(PtyTransport, RunningOutOfDescriptorsIsAClearErrorAndLeaksNothing) {
-    Pair p = makePair(); // a terminal to open while descriptors are short
+    test::PtyPair p = makePtyPair(); // a terminal to open while descriptors are short
     ASSERT_TRUE(p.peer);
     const int before = openDescriptors();
     bool refusedAll = false, madeOne = false;

@@ -7,6 +7,7 @@
 #include "comms/transport/serial_transport.h"
 #include "tests/comms/fake_transport.h"
 #include "tests/comms/hex.h"
+#include "tests/comms/pty_pair.h"
 
 #include <gtest/gtest.h>
 
@@ -19,36 +20,9 @@ namespace {
 using R = ReadResult::Status;
 using Direction = TrafficRecord::Direction;
 
-// A new pseudo-terminal for the relay and its other end, open, for the test to talk through.
-struct Pty {
-    std::unique_ptr<PtyTransport> relaySide;
-    std::unique_ptr<PtyTransport> user;
-};
+using test::readAll;
 
-Pty makePty() {
-    Pty p;
-    QString error;
-    p.relaySide = PtyTransport::createPair(&error);
-    EXPECT_TRUE(p.relaySide) << error.toStdString();
-    if (!p.relaySide)
-        return p;
-    p.user = std::make_unique<PtyTransport>(p.relaySide->peerPath());
-    EXPECT_TRUE(p.user->open(&error)) << error.toStdString();
-    return p;
-}
-
-QByteArray readAll(Transport &t, qsizetype size, int ms = 3000) {
-    QByteArray out;
-    const QDeadlineTimer deadline(ms);
-    while (out.size() < size) {
-        const auto r = t.read(deadline);
-        if (r.status != R::Data)
-            break;
-        out += r.bytes;
-    }
-    return out;
-}
-
+// Each pseudo-terminal's master side is the relay's, its peer the test's.
 // Every record of the tap, joined per direction in the order they came.
 QByteArray recorded(const Relay &relay, Direction direction) {
     QByteArray out;
@@ -73,17 +47,17 @@ const QByteArray kRequest = test::bytes("02 30 30 37 30 30 34 30 41 03 39 46");
 const QByteArray kAck = test::bytes("06 30 30 37 30 30 30 03 32 41");
 
 TEST(Relay, ARequestAndItsAnswerPassUntouchedAndAreRecordedWithTheirDirection) {
-    Pty pc = makePty();
-    Pty plc = makePty();
-    ASSERT_TRUE(pc.user && plc.user);
-    Relay relay(std::move(pc.relaySide), std::move(plc.relaySide));
+    test::PtyPair pc = test::makePtyPair();
+    test::PtyPair plc = test::makePtyPair();
+    ASSERT_TRUE(pc.peer && plc.peer);
+    Relay relay(std::move(pc.master), std::move(plc.master));
     QString error;
     ASSERT_TRUE(relay.start(&error)) << error.toStdString();
 
-    ASSERT_TRUE(pc.user->write(kRequest, QDeadlineTimer(2000), &error));
-    EXPECT_EQ(readAll(*plc.user, kRequest.size()), kRequest);
-    ASSERT_TRUE(plc.user->write(kAck, QDeadlineTimer(2000), &error));
-    EXPECT_EQ(readAll(*pc.user, kAck.size()), kAck);
+    ASSERT_TRUE(pc.peer->write(kRequest, QDeadlineTimer(2000), &error));
+    EXPECT_EQ(readAll(*plc.peer, kRequest.size(), 3000), kRequest);
+    ASSERT_TRUE(plc.peer->write(kAck, QDeadlineTimer(2000), &error));
+    EXPECT_EQ(readAll(*pc.peer, kAck.size(), 3000), kAck);
 
     ASSERT_TRUE(waitFor([&] { return recorded(relay, Direction::Received) == kAck; }));
     EXPECT_EQ(recorded(relay, Direction::Sent), kRequest);
@@ -101,10 +75,10 @@ TEST(Relay, ARequestAndItsAnswerPassUntouchedAndAreRecordedWithTheirDirection) {
 }
 
 TEST(Relay, EveryByteValuePassesBothWaysAtOnce) {
-    Pty pc = makePty();
-    Pty plc = makePty();
-    ASSERT_TRUE(pc.user && plc.user);
-    Relay relay(std::move(pc.relaySide), std::move(plc.relaySide));
+    test::PtyPair pc = test::makePtyPair();
+    test::PtyPair plc = test::makePtyPair();
+    ASSERT_TRUE(pc.peer && plc.peer);
+    Relay relay(std::move(pc.master), std::move(plc.master));
     QString error;
     ASSERT_TRUE(relay.start(&error)) << error.toStdString();
     QByteArray all, reversed;
@@ -113,21 +87,20 @@ TEST(Relay, EveryByteValuePassesBothWaysAtOnce) {
         reversed += char(255 - i);
     }
     // Both directions at the same time: neither waits for the other.
-    ASSERT_TRUE(pc.user->write(all, QDeadlineTimer(2000), &error));
-    ASSERT_TRUE(plc.user->write(reversed, QDeadlineTimer(2000), &error));
-    EXPECT_EQ(readAll(*plc.user, all.size()), all);
-    EXPECT_EQ(readAll(*pc.user, reversed.size()), reversed);
+    ASSERT_TRUE(pc.peer->write(all, QDeadlineTimer(2000), &error));
+    ASSERT_TRUE(plc.peer->write(reversed, QDeadlineTimer(2000), &error));
+    EXPECT_EQ(readAll(*plc.peer, all.size()), all);
+    EXPECT_EQ(readAll(*pc.peer, reversed.size()), reversed);
     ASSERT_TRUE(waitFor([&] { return recorded(relay, Direction::Received).size() == 256; }));
     EXPECT_EQ(recorded(relay, Direction::Sent), all);
     EXPECT_EQ(recorded(relay, Direction::Received), reversed);
 }
 
 TEST(Relay, APortThatCannotBeOpenedIsNamedWithItsSide) {
-    Pty pc = makePty();
-    ASSERT_TRUE(pc.user);
+    test::PtyPair pc = test::makePtyPair();
+    ASSERT_TRUE(pc.peer);
     const QString missing = QStringLiteral("/dev/ttyRUNG-no-such-port");
-    Relay relay(std::move(pc.relaySide),
-                std::make_unique<SerialTransport>(missing, SerialSettings{}));
+    Relay relay(std::move(pc.master), std::make_unique<SerialTransport>(missing, SerialSettings{}));
     QString error;
     EXPECT_FALSE(relay.start(&error));
     EXPECT_TRUE(error.contains(QLatin1String("the PLC's side"))) << error.toStdString();
@@ -136,16 +109,16 @@ TEST(Relay, APortThatCannotBeOpenedIsNamedWithItsSide) {
 }
 
 TEST(Relay, APlcSideThatVanishesStopsTheRelayAndSaysWhich) {
-    Pty pc = makePty();
-    ASSERT_TRUE(pc.user);
+    test::PtyPair pc = test::makePtyPair();
+    ASSERT_TRUE(pc.peer);
     auto fake = std::make_unique<test::FakeTransport>(QStringLiteral("ttyUSB7"));
     test::FakeTransport *plc = fake.get();
     plc->setResponder([](const QByteArray &) { return QList<QByteArray>{kAck}; });
-    Relay relay(std::move(pc.relaySide), std::move(fake));
+    Relay relay(std::move(pc.master), std::move(fake));
     QString error;
     ASSERT_TRUE(relay.start(&error)) << error.toStdString();
-    ASSERT_TRUE(pc.user->write(kRequest, QDeadlineTimer(2000), &error));
-    EXPECT_EQ(readAll(*pc.user, kAck.size()), kAck);
+    ASSERT_TRUE(pc.peer->write(kRequest, QDeadlineTimer(2000), &error));
+    EXPECT_EQ(readAll(*pc.peer, kAck.size(), 3000), kAck);
 
     plc->unplug();
     ASSERT_TRUE(waitFor([&] { return !relay.running(); }));
