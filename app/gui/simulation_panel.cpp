@@ -62,17 +62,19 @@ SimulationPanel::SimulationPanel(SimulationController *simulation, QWidget *pare
     m_period->setObjectName(QStringLiteral("simulationPeriod"));
     m_period->setRange(1, 100);
     m_powerCycle = new QPushButton;
+    // Each button under its field, not beside it: the dock shares its column with the
+    // inputs and outputs, and Hungarian and Italian labels and buttons are long.
     run->addWidget(m_scansLabel, 0, 0);
     run->addWidget(m_scans, 0, 1);
-    run->addWidget(m_runScans, 0, 2);
-    run->addWidget(m_durationLabel, 1, 0);
-    run->addWidget(m_duration, 1, 1);
-    run->addWidget(m_runFor, 1, 2);
-    run->addWidget(m_speedLabel, 2, 0);
-    run->addWidget(m_speed, 2, 1, 1, 2);
-    run->addWidget(m_periodLabel, 3, 0);
-    run->addWidget(m_period, 3, 1, 1, 2);
-    run->addWidget(m_powerCycle, 4, 0, 1, 3);
+    run->addWidget(m_runScans, 1, 1);
+    run->addWidget(m_durationLabel, 2, 0);
+    run->addWidget(m_duration, 2, 1);
+    run->addWidget(m_runFor, 3, 1);
+    run->addWidget(m_speedLabel, 4, 0);
+    run->addWidget(m_speed, 4, 1);
+    run->addWidget(m_periodLabel, 5, 0);
+    run->addWidget(m_period, 5, 1);
+    run->addWidget(m_powerCycle, 6, 0, 1, 2);
     run->setColumnStretch(1, 1);
     layout->addWidget(m_runGroup);
 
