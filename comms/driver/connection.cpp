@@ -46,8 +46,8 @@ LinkSettings lineTiming(const ConnectionSettings &settings) {
 
 std::unique_ptr<Transport> makeTransport(const ConnectionSettings &settings) {
     switch (settings.via) {
-    case ConnectionSettings::Via::Serial:
-        return std::make_unique<SerialTransport>(settings.port, settings.serial);
+    case ConnectionSettings::Via::Serial: // a pseudo-terminal named as a port works too
+        return makePortTransport(settings.port, settings.serial);
     case ConnectionSettings::Via::Pty:
         return std::make_unique<PtyTransport>(settings.port);
     case ConnectionSettings::Via::Tcp: {

@@ -1,3 +1,4 @@
+#include "comms/driver/connection.h"
 #include "comms/protocol/vigor_link.h"
 #include "comms/transport/pty_transport.h"
 #include "tests/comms/hex.h"
@@ -7,6 +8,8 @@
 
 #include <QDir>
 #include <QElapsedTimer>
+#include <QFile>
+#include <QTemporaryDir>
 
 #include <fcntl.h>
 #include <sys/resource.h>
@@ -208,6 +211,42 @@ TEST(PtyTransport, RunningOutOfDescriptorsIsAClearErrorAndLeaksNothing) {
     EXPECT_TRUE(refusedAll);
     EXPECT_TRUE(madeOne);
     EXPECT_EQ(openDescriptors(), before);
+}
+
+// A user copies the /dev/pts path that `serve --pty` or socat printed into --port (or the
+// connection panel's port box): it works as a port, also through socat's symbolic link,
+// though libserialport cannot open a pseudo-terminal.
+TEST(PtyTransport, APseudoTerminalNamedAsASerialPortOpensAsOne) {
+    QString error;
+    std::unique_ptr<PtyTransport> master = PtyTransport::createPair(&error);
+    ASSERT_TRUE(master) << error.toStdString();
+    QTemporaryDir dir;
+    const QString link = dir.filePath(QStringLiteral("ttyV0"));
+    ASSERT_TRUE(QFile::link(master->peerPath(), link));
+    ConnectionSettings settings = defaultSettings(ProtocolKind::VigorLink);
+    for (const QString &port : {master->peerPath(), link}) {
+        settings.via = ConnectionSettings::Via::Serial;
+        settings.port = port;
+        std::unique_ptr<Transport> t = makeTransport(settings);
+        ASSERT_TRUE(t->open(&error)) << port.toStdString() << ": " << error.toStdString();
+        EXPECT_EQ(t->name(), port);
+        ASSERT_TRUE(t->write("\x05"
+                             "00",
+                             QDeadlineTimer(2000), &error));
+        EXPECT_EQ(readAll(*master, 3), QByteArray("\x05"
+                                                  "00"));
+        t->close();
+    }
+}
+
+// A name that is no pseudo-terminal stays a serial port, and its error names the port.
+TEST(PtyTransport, AMissingPortIsASerialPortWhoseErrorNamesIt) {
+    std::unique_ptr<Transport> t =
+        makePortTransport(QStringLiteral("/dev/ttyNoSuchPort7"), SerialSettings{});
+    QString error;
+    EXPECT_FALSE(t->open(&error));
+    EXPECT_TRUE(error.contains(QLatin1String("/dev/ttyNoSuchPort7"))) << error.toStdString();
+    EXPECT_EQ(dynamic_cast<PtyTransport *>(t.get()), nullptr);
 }
 
 } // namespace
