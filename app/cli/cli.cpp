@@ -188,6 +188,11 @@ int convert(const QStringList &args, QTextStream &out, QTextStream &err) {
 int runCli(const QStringList &arguments, QTextStream &out, QTextStream &err) {
     const QString command = arguments.value(1);
     const QStringList args = arguments.mid(2);
+    // `rungstudio-cli serve --help` is how most users ask; no command takes it as a value.
+    if (args.contains(QLatin1String("--help")) || args.contains(QLatin1String("-h"))) {
+        out << usage() << '\n';
+        return 0;
+    }
     if (command == QLatin1String("check"))
         return check(args, out, err);
     if (command == QLatin1String("convert"))

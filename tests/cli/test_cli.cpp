@@ -302,8 +302,16 @@ TEST(Examples, EveryExampleProjectLoadsAndHasNoError) {
 TEST(CliUsage, HelpListsEveryCommandAndVersionNamesTheTool) {
     const CliRun help = cli({QStringLiteral("--help")});
     EXPECT_EQ(help.code, 0);
-    for (const char *command : {"check FILE", "convert FILE", "simulate FILE"})
+    for (const char *command :
+         {"check FILE", "convert FILE", "simulate FILE", "serve FILE", "read  --target",
+          "write (the same", "record --pc", "terminal --port"})
         EXPECT_TRUE(help.out.contains(QLatin1String(command))) << command;
+    // Asked after a command, help is help, not an unknown option.
+    for (const char *command : {"serve", "read", "record", "terminal", "check"}) {
+        const CliRun after = cli({QLatin1String(command), QStringLiteral("--help")});
+        EXPECT_EQ(after.code, 0) << command << after.err.toStdString();
+        EXPECT_EQ(after.out, help.out) << command;
+    }
     const CliRun version = cli({QStringLiteral("--version")});
     EXPECT_EQ(version.code, 0);
     EXPECT_TRUE(QRegularExpression(QStringLiteral("^rungstudio-cli \\d+\\.\\d+\\.\\d+\n$"))
