@@ -153,8 +153,7 @@ void TimingCanvas::render(QPainter &p, QSize size) const {
     if (!m_channels || m_channels->empty()) {
         p.setPen(palette().color(QPalette::PlaceholderText));
         p.drawText(QRect(left, kAxisHeight, width, size.height() - kAxisHeight), Qt::AlignCenter,
-                   tr("Type devices above (Y0, D0..D3) or drag them here from the ladder or the "
-                      "watch table"));
+                   m_emptyText);
     }
     if (m_channels) {
         const QFontMetrics fm(p.font());

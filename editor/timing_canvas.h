@@ -32,6 +32,11 @@ public:
     void setPastMarks(std::vector<model::HistoryRecorder::Mark> marks);
     int selectedRow() const { return m_selected; }
     void setSelectedRow(int row);
+    // What an empty chart says (the chart's hint, with the target's own devices).
+    void setEmptyText(const QString &text) {
+        m_emptyText = text;
+        update();
+    }
 
     // The whole drawing at this size (the widget's own, or an export's).
     void render(QPainter &painter, QSize size) const;
@@ -77,6 +82,7 @@ private:
     std::optional<qint64> m_cursor[2];
     int m_selected = -1;
     int m_dragging = -1; // which cursor a drag moves
+    QString m_emptyText;
 };
 
 } // namespace rung::editor

@@ -5,6 +5,7 @@
 #include "timing_canvas.h"
 
 #include "model/target/address.h"
+#include "model/target/target_lists.h"
 
 #include <QCheckBox>
 #include <QComboBox>
@@ -149,6 +150,8 @@ TimingChart::TimingChart(Document *document, QWidget *parent)
             [this](const QStringList &devices) { addDevices(devices); });
     connect(m_canvas, &TimingCanvas::removeRequested, this, &TimingChart::removeChannel);
     connect(document, &Document::programChanged, this, [this] {
+        if (&m_document->target() != m_hintsTarget)
+            retranslate(); // another family: the hints' examples are its devices
         // Symbols renamed: the names column follows.
         for (TimingChannel &c : m_channels) {
             const model::Symbol *s = m_document->project().symbol(c.address);
@@ -161,7 +164,14 @@ TimingChart::TimingChart(Document *document, QWidget *parent)
 }
 
 void TimingChart::retranslate() {
-    m_add->setPlaceholderText(tr("Add: Y0, D0..D3, then Enter"));
+    const model::Target &target = m_document->target();
+    m_hintsTarget = &target;
+    const QString bit = model::exampleDevice(target, true);
+    m_add->setPlaceholderText(
+        tr("Add: %1, %2, then Enter").arg(bit, model::exampleWordRange(target, 4)));
+    m_canvas->setEmptyText(tr("Type devices above (%1, %2) or drag them here from the ladder "
+                              "or the watch table")
+                               .arg(bit, model::exampleWordRange(target, 4)));
     // Wide enough for the hint in every language (the clear button takes room too).
     m_add->setMinimumWidth(
         std::max(QFontMetrics(m_add->font()).horizontalAdvance(m_add->placeholderText()) + 36,
@@ -174,7 +184,8 @@ void TimingChart::retranslate() {
     m_fit->setToolTip(tr("Show everything recorded"));
     m_followBox->setText(tr("Follow"));
     m_followBox->setToolTip(tr("Keep the newest scan at the right edge"));
-    m_trigger->setPlaceholderText(tr("Trigger: Y0 rises, D10 > 100"));
+    m_trigger->setPlaceholderText(
+        tr("Trigger: %1 rises, %2 > 100").arg(bit, model::exampleWord(target, 10)));
     m_trigger->setToolTip(tr("A condition checked after every scan: DEVICE rises, DEVICE falls, "
                              "or DEVICE = <> < <= > >= VALUE"));
     m_triggerAction->setItemText(0, tr("Stop the simulation"));

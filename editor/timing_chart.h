@@ -84,6 +84,7 @@ private:
     qint64 snapToScan(qint64 timeMs) const;
 
     Document *m_document;
+    const model::Target *m_hintsTarget = nullptr; // whose devices the hints show
     QPointer<model::MonitorSource> m_source;
     std::vector<TimingChannel> m_channels;
     TimingCanvas *m_canvas;

@@ -1,7 +1,10 @@
 #include "watch_panel.h"
 
 #include "device_mime.h"
+#include "document.h"
 #include "watch_list_view.h"
+
+#include "model/target/target_lists.h"
 
 #include <QEvent>
 #include <QLineEdit>
@@ -11,6 +14,7 @@ namespace rung::editor {
 
 WatchPanel::WatchPanel(Document *document, QWidget *parent)
     : QWidget(parent)
+    , m_document(document)
     , m_view(new WatchListView(document))
     , m_add(new QLineEdit) {
     setObjectName(QStringLiteral("watchPanel"));
@@ -23,13 +27,22 @@ WatchPanel::WatchPanel(Document *document, QWidget *parent)
     layout->addWidget(m_view, 1);
     connect(m_add, &QLineEdit::returnPressed, this, &WatchPanel::addTyped);
     connect(m_view, &WatchListView::message, this, &WatchPanel::message);
+    connect(document, &Document::programChanged, this, [this] {
+        if (&m_document->target() != m_hintsTarget)
+            retranslate(); // another family: the hints' examples are its devices
+    });
     retranslate();
 }
 
 void WatchPanel::retranslate() {
-    m_add->setPlaceholderText(tr("Add: a device or a range (D0..D15), then Enter"));
-    m_add->setToolTip(tr("Several at once with commas: X0, Y0, D0..D15. Devices can also be "
-                         "dragged here from the ladder or the cross reference"));
+    const model::Target &target = m_document->target();
+    m_hintsTarget = &target;
+    const QString range = model::exampleWordRange(target, 16);
+    m_add->setPlaceholderText(tr("Add: a device or a range (%1), then Enter").arg(range));
+    m_add->setToolTip(
+        tr("Several at once with commas: %1, %2, %3. Devices can also be "
+           "dragged here from the ladder or the cross reference")
+            .arg(model::exampleDevice(target), model::exampleDevice(target, true), range));
 }
 
 void WatchPanel::changeEvent(QEvent *event) {

@@ -35,6 +35,8 @@ private:
     void retranslate();
     void addTyped();
 
+    Document *m_document;
+    const model::Target *m_hintsTarget = nullptr; // whose devices the hints show
     WatchListView *m_view;
     QLineEdit *m_add;
 };

@@ -3,6 +3,7 @@
 #include <QCoreApplication>
 
 #include <chrono>
+#include <utility>
 
 namespace rung::simulator {
 
@@ -231,8 +232,8 @@ void SimulatorSession::reportTrigger(const Fired &fired) {
     });
 }
 
-void SimulatorSession::publish(const Engine &engine) {
-    publishSnapshot(std::make_shared<const Snapshot>(engine.snapshot()));
+void SimulatorSession::publish(const Engine &engine, bool answer) {
+    publishSnapshot(std::make_shared<const Snapshot>(engine.snapshot()), answer);
 }
 
 void SimulatorSession::reportErrors(const Engine &engine, std::size_t &reported) {
@@ -288,11 +289,17 @@ void SimulatorSession::workerLoop() {
     };
     Clock::time_point lastPublish;
     bool unpublished = false; // scans since the last snapshot
-    auto publishNow = [&] {
-        publish(engine);
+    // Commands were applied and no scan has run since: the next scan's snapshot answers them
+    // (the coil an input drives) and is told at once.
+    bool answerDue = false;
+    auto publishNow = [&](bool answer = false) {
+        publish(engine, answer);
         lastPublish = Clock::now();
         unpublished = false;
     };
+    // Twice a beat: the readers' beat (MonitorSource) then always finds a snapshot newer
+    // than the last it told, and keeps its 30 a second.
+    constexpr auto kPublishInterval = std::chrono::milliseconds(kMinSnapshotIntervalMs / 2);
     publishNow();
     for (;;) {
         Work work = Work::None;
@@ -399,8 +406,9 @@ void SimulatorSession::workerLoop() {
                 postToOwner([this] { setErrorText({}); });
                 anchor(); // the fresh engine's clock starts at 0
             }
-            publishNow();
+            publishNow(true); // the input's own state shows at once too
             m_inbox.complete();
+            answerDue = true;
             continue;
         }
         case Work::Step:
@@ -436,9 +444,8 @@ void SimulatorSession::workerLoop() {
         reportErrors(engine, errorsReported);
         unpublished = true;
         const auto now = Clock::now();
-        if (fired || stepsDone ||
-            now - lastPublish >= std::chrono::milliseconds(kMinSnapshotIntervalMs))
-            publishNow();
+        if (fired || stepsDone || answerDue || now - lastPublish >= kPublishInterval)
+            publishNow(std::exchange(answerDue, false));
         if (fired) // after the snapshot: a reader told finds that scan in it
             reportTrigger(*fired);
         if (stepsDone)

@@ -2,8 +2,10 @@
 
 // A simulation as a MonitorSource: the engine scans on its own worker thread; device
 // commands and power cycles go through the engine's command inbox (applied at the start of a
-// scan, or at once while paused); snapshots are taken at most every
-// MonitorSource::kMinSnapshotIntervalMs and after every step, and shared by all readers.
+// scan, or at once while paused); snapshots are taken twice a beat of the readers'
+// notifications (MonitorSource::kMinSnapshotIntervalMs / 2), after every step, and at once
+// after the scan that follows a command (an answer: readers are told without waiting for
+// the beat); all readers share them.
 // The control calls (run, pause, stop, step, speed) return at once: the owner thread never
 // waits for a scan. Chosen devices are recorded per scan in a HistoryRecorder.
 
@@ -80,7 +82,7 @@ private:
     void control(const std::function<void()> &change); // under the lock, wakes the worker
     void wakeWorker();
     void workerLoop();
-    void publish(const Engine &engine);
+    void publish(const Engine &engine, bool answer = false);
     // Worker: Paused now, told to the owner unless a control call came after this.
     void pauseFromWorker(int breakpoint);
     void reportErrors(const Engine &engine, std::size_t &reported);

@@ -42,7 +42,7 @@
 <context>
     <name>rung::app::BreakpointDialog</name>
     <message>
-        <location filename="../app/gui/breakpoint_dialog.cpp" line="+38"/>
+        <location filename="../app/gui/breakpoint_dialog.cpp" line="+39"/>
         <source>Breakpoint Condition</source>
         <translation>Töréspont feltétele</translation>
     </message>
@@ -82,12 +82,12 @@
         <translation>&amp;Megállás</translation>
     </message>
     <message>
-        <location line="+2"/>
-        <source>a device, e.g. Y0 or D10</source>
-        <translation>operandus, pl. Y0 vagy D10</translation>
+        <location line="+3"/>
+        <source>a device, e.g. %1 or %2</source>
+        <translation>operandus, pl. %1 vagy %2</translation>
     </message>
     <message>
-        <location line="+1"/>
+        <location line="+2"/>
         <source>&amp;Device</source>
         <translation>&amp;Operandus</translation>
     </message>
@@ -175,7 +175,7 @@ Kilépési kód: 0 nincs hiba, 1 a programban hiba van, 2 használati vagy I/O h
         <translation>%1 nem írható: %2</translation>
     </message>
     <message>
-        <location line="+38"/>
+        <location line="+43"/>
         <source>no command given</source>
         <translation>nincs megadva parancs</translation>
     </message>
@@ -947,7 +947,7 @@ Létradiagram- és utasításlista-szerkesztő a következő PLC-khez: %2.</tran
         <location line="-4"/>
         <location line="+8"/>
         <location line="+10"/>
-        <location filename="../app/gui/main_window_panels.cpp" line="+50"/>
+        <location filename="../app/gui/main_window_panels.cpp" line="+56"/>
         <location filename="../app/gui/main_window_tools.cpp" line="+3"/>
         <source>Cannot export</source>
         <translation>Az exportálás nem sikerült</translation>
@@ -1175,14 +1175,14 @@ Létradiagram- és utasításlista-szerkesztő a következő PLC-khez: %2.</tran
     </message>
     <message>
         <location filename="../app/gui/main_window_debug.cpp" line="+38"/>
-        <location line="+130"/>
+        <location line="+139"/>
         <location filename="../app/gui/main_window_monitor.cpp" line="+33"/>
         <source>Simulation</source>
         <translation>Szimuláció</translation>
     </message>
     <message>
-        <location line="-123"/>
-        <location line="+125"/>
+        <location line="-127"/>
+        <location line="+129"/>
         <source>Scan Debugger</source>
         <translation>Ciklushibakereső</translation>
     </message>
@@ -3627,22 +3627,9 @@ Kiértékelés: %4 µs (%5..%6)</translation>
     </message>
 </context>
 <context>
-    <name>rung::editor::TimingCanvas</name>
-    <message>
-        <location filename="../editor/timing_canvas.cpp" line="+156"/>
-        <source>Type devices above (Y0, D0..D3) or drag them here from the ladder or the watch table</source>
-        <translation>Írjon be fent operandusokat (Y0, D0..D3), vagy húzza ide őket a létradiagramról vagy a figyelőtáblából</translation>
-    </message>
-</context>
-<context>
     <name>rung::editor::TimingChart</name>
     <message>
-        <location filename="../editor/timing_chart.cpp" line="+164"/>
-        <source>Add: Y0, D0..D3, then Enter</source>
-        <translation>Hozzáadás: Y0, D0..D3, majd Enter</translation>
-    </message>
-    <message>
-        <location line="+5"/>
+        <location filename="../editor/timing_chart.cpp" line="+179"/>
         <source>Devices and ranges to draw, with commas; they can also be dragged here from the ladder or the watch table</source>
         <translation>Kirajzolandó operandusok és tartományok, vesszővel elválasztva; a létradiagramról vagy a figyelőtáblából ide is húzhatók</translation>
     </message>
@@ -3677,9 +3664,19 @@ Kiértékelés: %4 µs (%5..%6)</translation>
         <translation>A legutóbbi ciklus a jobb szélen marad</translation>
     </message>
     <message>
+        <location line="-15"/>
+        <source>Add: %1, %2, then Enter</source>
+        <translation>Hozzáadás: %1, %2, majd Enter</translation>
+    </message>
+    <message>
         <location line="+1"/>
-        <source>Trigger: Y0 rises, D10 &gt; 100</source>
-        <translation>Trigger: Y0 rises, D10 &gt; 100</translation>
+        <source>Type devices above (%1, %2) or drag them here from the ladder or the watch table</source>
+        <translation>Írjon be fent operandusokat (%1, %2), vagy húzza ide őket a létradiagramról vagy a figyelőtáblából</translation>
+    </message>
+    <message>
+        <location line="+16"/>
+        <source>Trigger: %1 rises, %2 &gt; 100</source>
+        <translation>Trigger: %1 rises, %2 &gt; 100</translation>
     </message>
     <message>
         <location line="+1"/>
@@ -4017,14 +4014,14 @@ Kiértékelés: %4 µs (%5..%6)</translation>
 <context>
     <name>rung::editor::WatchPanel</name>
     <message>
-        <location filename="../editor/watch_panel.cpp" line="+30"/>
-        <source>Add: a device or a range (D0..D15), then Enter</source>
-        <translation>Hozzáadás: operandus vagy tartomány (D0..D15), majd Enter</translation>
+        <location filename="../editor/watch_panel.cpp" line="+41"/>
+        <source>Add: a device or a range (%1), then Enter</source>
+        <translation>Hozzáadás: operandus vagy tartomány (%1), majd Enter</translation>
     </message>
     <message>
-        <location line="+1"/>
-        <source>Several at once with commas: X0, Y0, D0..D15. Devices can also be dragged here from the ladder or the cross reference</source>
-        <translation>Egyszerre több, vesszővel: X0, Y0, D0..D15. Operandusok a létradiagramról vagy a kereszthivatkozásból ide is húzhatók</translation>
+        <location line="+2"/>
+        <source>Several at once with commas: %1, %2, %3. Devices can also be dragged here from the ladder or the cross reference</source>
+        <translation>Egyszerre több, vesszővel: %1, %2, %3. Operandusok a létradiagramról vagy a kereszthivatkozásból ide is húzhatók</translation>
     </message>
 </context>
 <context>
@@ -6472,19 +6469,19 @@ Kiértékelés: %4 µs (%5..%6)</translation>
 <context>
     <name>rung::model::Trigger</name>
     <message>
-        <location filename="../model/image/trigger.cpp" line="+59"/>
-        <source>Type a condition: &quot;Y0 rises&quot;, &quot;Y0 falls&quot; or &quot;D10 &gt; 100&quot;</source>
-        <translation>Írjon be egy feltételt: &quot;Y0 rises&quot;, &quot;Y0 falls&quot; vagy &quot;D10 &gt; 100&quot;</translation>
+        <location filename="../model/image/trigger.cpp" line="+60"/>
+        <source>Type a condition: &quot;%1 rises&quot;, &quot;%1 falls&quot; or &quot;%2 &gt; 100&quot;</source>
+        <translation>Írjon be egy feltételt: &quot;%1 rises&quot;, &quot;%1 falls&quot; vagy &quot;%2 &gt; 100&quot;</translation>
     </message>
     <message>
-        <location line="+25"/>
+        <location line="+26"/>
         <source>&quot;%1&quot; is not a whole number (0x before a hexadecimal one)</source>
         <translation>„%1” nem egész szám (hexadecimális előtt 0x)</translation>
     </message>
     <message>
         <location line="+2"/>
-        <source>&quot;%1&quot; is no condition: write &quot;Y0 rises&quot;, &quot;Y0 falls&quot; or &quot;D10 &gt; 100&quot;</source>
-        <translation>„%1” nem feltétel: írja így: &quot;Y0 rises&quot;, &quot;Y0 falls&quot; vagy &quot;D10 &gt; 100&quot;</translation>
+        <source>&quot;%1&quot; is no condition: write &quot;%2 rises&quot;, &quot;%2 falls&quot; or &quot;%3 &gt; 100&quot;</source>
+        <translation>„%1” nem feltétel: írja így: &quot;%2 rises&quot;, &quot;%2 falls&quot; vagy &quot;%3 &gt; 100&quot;</translation>
     </message>
     <message>
         <location line="+10"/>
@@ -6843,7 +6840,7 @@ Kiértékelés: %4 µs (%5..%6)</translation>
 <context>
     <name>rung::simulator::SimulatorSession</name>
     <message>
-        <location filename="../simulator/session.cpp" line="+244"/>
+        <location filename="../simulator/session.cpp" line="+245"/>
         <source>Line %1: %2</source>
         <translation>%1. sor: %2</translation>
     </message>

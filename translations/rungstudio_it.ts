@@ -42,7 +42,7 @@
 <context>
     <name>rung::app::BreakpointDialog</name>
     <message>
-        <location filename="../app/gui/breakpoint_dialog.cpp" line="+38"/>
+        <location filename="../app/gui/breakpoint_dialog.cpp" line="+39"/>
         <source>Breakpoint Condition</source>
         <translation>Condizione del punto di interruzione</translation>
     </message>
@@ -82,12 +82,12 @@
         <translation>&amp;Fermati</translation>
     </message>
     <message>
-        <location line="+2"/>
-        <source>a device, e.g. Y0 or D10</source>
-        <translation>un operando, p. es. Y0 o D10</translation>
+        <location line="+3"/>
+        <source>a device, e.g. %1 or %2</source>
+        <translation>un operando, p. es. %1 o %2</translation>
     </message>
     <message>
-        <location line="+1"/>
+        <location line="+2"/>
         <source>&amp;Device</source>
         <translation>&amp;Operando</translation>
     </message>
@@ -175,7 +175,7 @@ Codice di uscita: 0 nessun errore, 1 il programma contiene errori, 2 errore di u
         <translation>impossibile scrivere %1: %2</translation>
     </message>
     <message>
-        <location line="+38"/>
+        <location line="+43"/>
         <source>no command given</source>
         <translation>nessun comando specificato</translation>
     </message>
@@ -949,7 +949,7 @@ Editor di schemi ladder e liste istruzioni per %2.</translation>
         <location line="-4"/>
         <location line="+8"/>
         <location line="+10"/>
-        <location filename="../app/gui/main_window_panels.cpp" line="+50"/>
+        <location filename="../app/gui/main_window_panels.cpp" line="+56"/>
         <location filename="../app/gui/main_window_tools.cpp" line="+3"/>
         <source>Cannot export</source>
         <translation>Impossibile esportare</translation>
@@ -1180,14 +1180,14 @@ Editor di schemi ladder e liste istruzioni per %2.</translation>
     </message>
     <message>
         <location filename="../app/gui/main_window_debug.cpp" line="+38"/>
-        <location line="+130"/>
+        <location line="+139"/>
         <location filename="../app/gui/main_window_monitor.cpp" line="+33"/>
         <source>Simulation</source>
         <translation>Simulazione</translation>
     </message>
     <message>
-        <location line="-123"/>
-        <location line="+125"/>
+        <location line="-127"/>
+        <location line="+129"/>
         <source>Scan Debugger</source>
         <translation>Debugger della scansione</translation>
     </message>
@@ -3634,22 +3634,9 @@ Valutazione: %4 µs (%5..%6)</translation>
     </message>
 </context>
 <context>
-    <name>rung::editor::TimingCanvas</name>
-    <message>
-        <location filename="../editor/timing_canvas.cpp" line="+156"/>
-        <source>Type devices above (Y0, D0..D3) or drag them here from the ladder or the watch table</source>
-        <translation>Digitare sopra gli operandi (Y0, D0..D3) o trascinarli qui dal ladder o dalla tabella di osservazione</translation>
-    </message>
-</context>
-<context>
     <name>rung::editor::TimingChart</name>
     <message>
-        <location filename="../editor/timing_chart.cpp" line="+164"/>
-        <source>Add: Y0, D0..D3, then Enter</source>
-        <translation>Aggiungi: Y0, D0..D3, poi Invio</translation>
-    </message>
-    <message>
-        <location line="+5"/>
+        <location filename="../editor/timing_chart.cpp" line="+179"/>
         <source>Devices and ranges to draw, with commas; they can also be dragged here from the ladder or the watch table</source>
         <translation>Operandi e intervalli da tracciare, separati da virgole; si possono anche trascinare qui dal ladder o dalla tabella di osservazione</translation>
     </message>
@@ -3684,9 +3671,19 @@ Valutazione: %4 µs (%5..%6)</translation>
         <translation>L&apos;ultima scansione resta sul bordo destro</translation>
     </message>
     <message>
+        <location line="-15"/>
+        <source>Add: %1, %2, then Enter</source>
+        <translation>Aggiungi: %1, %2, poi Invio</translation>
+    </message>
+    <message>
         <location line="+1"/>
-        <source>Trigger: Y0 rises, D10 &gt; 100</source>
-        <translation>Trigger: Y0 rises, D10 &gt; 100</translation>
+        <source>Type devices above (%1, %2) or drag them here from the ladder or the watch table</source>
+        <translation>Digitare sopra gli operandi (%1, %2) o trascinarli qui dal ladder o dalla tabella di osservazione</translation>
+    </message>
+    <message>
+        <location line="+16"/>
+        <source>Trigger: %1 rises, %2 &gt; 100</source>
+        <translation>Trigger: %1 rises, %2 &gt; 100</translation>
     </message>
     <message>
         <location line="+1"/>
@@ -4025,14 +4022,14 @@ Valutazione: %4 µs (%5..%6)</translation>
 <context>
     <name>rung::editor::WatchPanel</name>
     <message>
-        <location filename="../editor/watch_panel.cpp" line="+30"/>
-        <source>Add: a device or a range (D0..D15), then Enter</source>
-        <translation>Aggiungi: un operando o un intervallo (D0..D15), poi Invio</translation>
+        <location filename="../editor/watch_panel.cpp" line="+41"/>
+        <source>Add: a device or a range (%1), then Enter</source>
+        <translation>Aggiungi: un operando o un intervallo (%1), poi Invio</translation>
     </message>
     <message>
-        <location line="+1"/>
-        <source>Several at once with commas: X0, Y0, D0..D15. Devices can also be dragged here from the ladder or the cross reference</source>
-        <translation>Più di uno con le virgole: X0, Y0, D0..D15. Gli operandi si possono anche trascinare qui dal ladder o dai riferimenti incrociati</translation>
+        <location line="+2"/>
+        <source>Several at once with commas: %1, %2, %3. Devices can also be dragged here from the ladder or the cross reference</source>
+        <translation>Più di uno con le virgole: %1, %2, %3. Gli operandi si possono anche trascinare qui dal ladder o dai riferimenti incrociati</translation>
     </message>
 </context>
 <context>
@@ -6487,19 +6484,19 @@ Valutazione: %4 µs (%5..%6)</translation>
 <context>
     <name>rung::model::Trigger</name>
     <message>
-        <location filename="../model/image/trigger.cpp" line="+59"/>
-        <source>Type a condition: &quot;Y0 rises&quot;, &quot;Y0 falls&quot; or &quot;D10 &gt; 100&quot;</source>
-        <translation>Digitare una condizione: &quot;Y0 rises&quot;, &quot;Y0 falls&quot; o &quot;D10 &gt; 100&quot;</translation>
+        <location filename="../model/image/trigger.cpp" line="+60"/>
+        <source>Type a condition: &quot;%1 rises&quot;, &quot;%1 falls&quot; or &quot;%2 &gt; 100&quot;</source>
+        <translation>Digitare una condizione: &quot;%1 rises&quot;, &quot;%1 falls&quot; o &quot;%2 &gt; 100&quot;</translation>
     </message>
     <message>
-        <location line="+25"/>
+        <location line="+26"/>
         <source>&quot;%1&quot; is not a whole number (0x before a hexadecimal one)</source>
         <translation>&quot;%1&quot; non è un numero intero (0x prima di uno esadecimale)</translation>
     </message>
     <message>
         <location line="+2"/>
-        <source>&quot;%1&quot; is no condition: write &quot;Y0 rises&quot;, &quot;Y0 falls&quot; or &quot;D10 &gt; 100&quot;</source>
-        <translation>&quot;%1&quot; non è una condizione: scrivere &quot;Y0 rises&quot;, &quot;Y0 falls&quot; o &quot;D10 &gt; 100&quot;</translation>
+        <source>&quot;%1&quot; is no condition: write &quot;%2 rises&quot;, &quot;%2 falls&quot; or &quot;%3 &gt; 100&quot;</source>
+        <translation>&quot;%1&quot; non è una condizione: scrivere &quot;%2 rises&quot;, &quot;%2 falls&quot; o &quot;%3 &gt; 100&quot;</translation>
     </message>
     <message>
         <location line="+10"/>
@@ -6858,7 +6855,7 @@ Valutazione: %4 µs (%5..%6)</translation>
 <context>
     <name>rung::simulator::SimulatorSession</name>
     <message>
-        <location filename="../simulator/session.cpp" line="+244"/>
+        <location filename="../simulator/session.cpp" line="+245"/>
         <source>Line %1: %2</source>
         <translation>Riga %1: %2</translation>
     </message>

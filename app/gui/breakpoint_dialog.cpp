@@ -1,6 +1,7 @@
 #include "breakpoint_dialog.h"
 
 #include "model/target/address.h"
+#include "model/target/target_lists.h"
 
 #include <QComboBox>
 #include <QDialogButtonBox>
@@ -50,7 +51,9 @@ BreakpointDialog::BreakpointDialog(const model::Target &target, const QString &p
     m_kind->addItem(tr("When the word compares"), static_cast<int>(When::Compare));
     form->addRow(tr("&Stop"), m_kind);
     m_device = new QLineEdit;
-    m_device->setPlaceholderText(tr("a device, e.g. Y0 or D10"));
+    m_device->setPlaceholderText(
+        tr("a device, e.g. %1 or %2")
+            .arg(model::exampleDevice(target, true), model::exampleWord(target, 10)));
     form->addRow(tr("&Device"), m_device);
     m_op = new QComboBox;
     for (const model::CompareOp op : kOps)

@@ -38,14 +38,19 @@ void MainWindow::setupDebugging() {
     auto *panelDock = new QDockWidget(tr("Simulation"), this);
     panelDock->setObjectName(QStringLiteral("simulationDock"));
     panelDock->setWidget(scroll);
-    addDockWidget(Qt::RightDockWidgetArea, panelDock);
+    // Tabs beside the project and the terminals, like them: the ladder keeps its width.
+    addDockWidget(Qt::LeftDockWidgetArea, panelDock);
+    if (auto *project = findChild<QDockWidget *>(QStringLiteral("projectDock"))) {
+        tabifyDockWidget(project, panelDock);
+        project->raise();
+    }
 
     m_scanDebugger = new ScanDebuggerView(m_simulation, m_document);
     m_scanDebugger->setObjectName(QStringLiteral("scanDebugger"));
     auto *debugDock = new QDockWidget(tr("Scan Debugger"), this);
     debugDock->setObjectName(QStringLiteral("scanDebuggerDock"));
     debugDock->setWidget(m_scanDebugger);
-    addDockWidget(Qt::RightDockWidgetArea, debugDock);
+    addDockWidget(Qt::LeftDockWidgetArea, debugDock);
     tabifyDockWidget(panelDock, debugDock);
     // Out of the way until a simulation starts: the ladder keeps its width for drawing.
     panelDock->hide();
@@ -56,7 +61,11 @@ void MainWindow::setupDebugging() {
                 if (session && !m_simulationDocksShown) {
                     m_simulationDocksShown = true;
                     panelDock->show();
-                    panelDock->raise();
+                    // A tab beside the terminals: they stay in front (toggle an input, see
+                    // the rung); the run controls are in the toolbar too.
+                    if (auto *io = findChild<QDockWidget *>(QStringLiteral("ioDock"));
+                        io && io->isVisible())
+                        io->raise();
                 }
             });
     connect(m_il, &editor::IlEditor::breakpointToggleRequested, this, [this](int line) {

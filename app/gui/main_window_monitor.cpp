@@ -6,6 +6,7 @@
 #include "main_window.h"
 
 #include "editor/il_editor.h"
+#include "editor/io_panel.h"
 #include "editor/ladder_view.h"
 #include "editor/watch_list_view.h"
 
@@ -22,6 +23,9 @@ void MainWindow::setMonitorSource(model::MonitorSource *source, MonitorOrigin or
     m_ladder->setMonitorSource(source);
     m_il->setMonitorSource(source);
     m_watch->setMonitorSource(source);
+    // The terminals show what the ladder shows (a past scan too, where a toggle is refused
+    // as read-only); the chart keeps the live source it is scrubbed along (setPanelsSource).
+    m_ioPanel->setMonitorSource(source);
     updateMonitorLabel();
     updateTitle();
     updateSimulationStatus();

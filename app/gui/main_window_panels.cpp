@@ -31,10 +31,16 @@ void MainWindow::buildMonitorDocks() {
     QDockWidget *problems = findChild<QDockWidget *>(QStringLiteral("problemsDock"));
     QDockWidget *watch = dock("watchDock", m_watchPanel, Qt::BottomDockWidgetArea);
     QDockWidget *chart = dock("timingChartDock", m_chart, Qt::BottomDockWidgetArea);
-    // The terminals beside the ladder (toggle an input, see the rung), the table and the
-    // chart below it with the problems.
+    // The terminals as a tab beside the project (toggle an input, see the rung), the table
+    // and the chart below the ladder with the problems. Not a column of their own: on a
+    // 1366x768 screen one beside the project cuts the ladder's coils off.
     // Hidden until a simulation starts (or View shows it): the ladder keeps the width.
-    dock("ioDock", m_ioPanel, Qt::RightDockWidgetArea)->hide();
+    QDockWidget *io = dock("ioDock", m_ioPanel, Qt::LeftDockWidgetArea);
+    if (auto *project = findChild<QDockWidget *>(QStringLiteral("projectDock"))) {
+        tabifyDockWidget(project, io);
+        project->raise();
+    }
+    io->hide();
     tabifyDockWidget(problems, watch);
     tabifyDockWidget(watch, chart);
     problems->raise();
@@ -78,7 +84,7 @@ void MainWindow::setPanelsSource(model::MonitorSource *source) {
         m_panelsShown = true;
         if (auto *d = findChild<QDockWidget *>(QStringLiteral("ioDock")); d && !d->isVisible()) {
             d->show();
-            resizeDocks({d}, {330}, Qt::Horizontal);
+            d->raise();
         }
     }
 }

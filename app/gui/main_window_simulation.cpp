@@ -4,12 +4,12 @@
 #include "simulation_panel.h"
 
 #include "editor/problems_view.h"
+#include "editor/timing_chart.h"
 #include "editor/watch_list_view.h"
 #include "simulator/session.h"
 
 #include <QAction>
 #include <QActionGroup>
-
 #include <QDockWidget>
 #include <QDoubleSpinBox>
 #include <QInputDialog>
@@ -65,6 +65,13 @@ void MainWindow::setupSimulation() {
             });
     connect(m_simulation, &SimulationController::sessionChanged, this,
             [this](simulator::SimulatorSession *session) { setPanelsSource(session); });
+    // Scrubbing the chart's cursor A back shows that scan in the ladder, the list, the
+    // watch table and the terminals (cursor B only measures); Return to Live ends it.
+    connect(m_chart, &editor::TimingChart::cursorMoved, this,
+            [this](int which, quint64, qint64 timeMs) {
+                if (which == 0 && m_simulation->session())
+                    m_simulation->showHistoryAt(timeMs);
+            });
 
     connect(m_simulation, &SimulationController::problems, this,
             [this](const std::vector<model::Diagnostic> &errors) {

@@ -7,7 +7,10 @@ namespace rung::model {
 MonitorSource::MonitorSource(QObject *parent)
     : QObject(parent) {
     m_notifyTimer.setSingleShot(true);
-    connect(&m_notifyTimer, &QTimer::timeout, this, &MonitorSource::notify);
+    // A coarse timer may fire 5% late: the beat would slip under 30 a second.
+    m_notifyTimer.setTimerType(Qt::PreciseTimer);
+    m_clock.start();
+    connect(&m_notifyTimer, &QTimer::timeout, this, &MonitorSource::scheduleNotify);
 }
 
 MonitorSource::~MonitorSource() = default;
@@ -76,14 +79,17 @@ bool MonitorSource::setTrigger(std::optional<Trigger>) {
     return false;
 }
 
-void MonitorSource::publishSnapshot(std::shared_ptr<const Snapshot> snapshot) {
+void MonitorSource::publishSnapshot(std::shared_ptr<const Snapshot> snapshot, bool answer) {
     {
         std::lock_guard lock(m_mutex);
         m_latest = std::move(snapshot);
     }
     // One notification in flight at a time; later snapshots replace the pointer it will read.
+    // An answer asks again: the one in flight may be waiting for the beat.
     // By name, not by functor: the call event is then Qt's alone and carries no data.
-    if (!m_notifyPending.exchange(true, std::memory_order_acq_rel))
+    const bool wasPending = m_notifyPending.exchange(true, std::memory_order_acq_rel);
+    const bool wasAnswer = answer && m_answerPending.exchange(true, std::memory_order_acq_rel);
+    if (!wasPending || (answer && !wasAnswer))
         QMetaObject::invokeMethod(this, "scheduleNotify", Qt::QueuedConnection);
 }
 
@@ -109,16 +115,26 @@ void MonitorSource::runPosted() {
 }
 
 void MonitorSource::scheduleNotify() {
-    const qint64 since = m_lastNotify.isValid() ? m_lastNotify.elapsed() : kMinSnapshotIntervalMs;
-    if (since >= kMinSnapshotIntervalMs)
+    const qint64 due = m_beat.dueUs(m_notifyPending.load(std::memory_order_acquire),
+                                    m_answerPending.load(std::memory_order_acquire));
+    if (due == NotifyBeat::kNever)
+        return;
+    const qint64 now = m_clock.nsecsElapsed() / 1000;
+    if (now >= due) {
+        m_notifyTimer.stop();
         notify();
-    else if (!m_notifyTimer.isActive())
-        m_notifyTimer.start(static_cast<int>(kMinSnapshotIntervalMs - since));
+        return;
+    }
+    // Rounded up: early would find the beat not yet due and wait a whole beat more.
+    const int ms = static_cast<int>((due - now + 999) / 1000);
+    if (!m_notifyTimer.isActive() || m_notifyTimer.remainingTime() > ms)
+        m_notifyTimer.start(ms);
 }
 
 void MonitorSource::notify() {
     m_notifyPending.store(false, std::memory_order_release);
-    m_lastNotify.restart();
+    m_answerPending.store(false, std::memory_order_release);
+    m_beat.notified(m_clock.nsecsElapsed() / 1000);
     emit snapshotChanged();
 }
 

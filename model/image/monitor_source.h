@@ -6,12 +6,14 @@
 //
 // Threads: a source lives in the thread that made it (its owner, the UI thread in the IDE)
 // and emits every signal there. Snapshots may be published from any thread; readers share
-// one immutable copy (no copy per reader) and are told at most kMaxSnapshotsPerSecond times.
+// one immutable copy (no copy per reader) and are told on a beat of kMaxSnapshotsPerSecond
+// (NotifyBeat), sooner when a snapshot answers the user.
 // Commands are asynchronous: submit() returns an id at once, commandFinished() reports it
 // later (online: when the PLC acknowledged the write).
 
 #include "model/image/device_command.h"
 #include "model/image/history.h"
+#include "model/image/notify_beat.h"
 #include "model/image/snapshot.h"
 #include "model/image/trigger.h"
 
@@ -47,8 +49,9 @@ public:
     Q_ENUM(RunState)
 
     using CommandId = quint64;
-    static constexpr int kMaxSnapshotsPerSecond = 30;
-    static constexpr int kMinSnapshotIntervalMs = 1000 / kMaxSnapshotsPerSecond + 1;
+    static constexpr int kMaxSnapshotsPerSecond = NotifyBeat::kPerSecond;
+    // The beat's length in whole milliseconds (33).
+    static constexpr int kMinSnapshotIntervalMs = 1000 / kMaxSnapshotsPerSecond;
 
     explicit MonitorSource(QObject *parent = nullptr);
     ~MonitorSource() override;
@@ -101,8 +104,10 @@ protected:
     virtual void startCommand(CommandId id, const DeviceCommand &command) = 0;
 
     CommandId nextCommandId() { return m_nextId++; } // owner thread
-    // Any thread: makes the snapshot the latest and tells readers, at the bounded rate.
-    void publishSnapshot(std::shared_ptr<const Snapshot> snapshot);
+    // Any thread: makes the snapshot the latest and tells readers, on the beat. An answer (the
+    // first snapshot after a command of the user took effect) is told at once, so an input
+    // toggled shows on the coil within a scan and a repaint.
+    void publishSnapshot(std::shared_ptr<const Snapshot> snapshot, bool answer = false);
     // Any thread: delivered to the owner thread as commandFinished().
     void finishCommand(CommandId id, bool ok, const QString &error);
     // Any thread: runs the function on the owner thread, in posting order. Everything the
@@ -121,7 +126,9 @@ private:
     mutable std::mutex m_mutex;
     std::shared_ptr<const Snapshot> m_latest;
     std::atomic<bool> m_notifyPending{false};
-    QElapsedTimer m_lastNotify;
+    std::atomic<bool> m_answerPending{false};
+    QElapsedTimer m_clock;
+    NotifyBeat m_beat; // owner thread
     QTimer m_notifyTimer;
     RunState m_runState = RunState::Offline;
     QString m_errorText;

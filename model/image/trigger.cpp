@@ -1,6 +1,7 @@
 #include "model/image/trigger.h"
 
 #include "model/target/address.h"
+#include "model/target/target_lists.h"
 
 #include <QCoreApplication>
 #include <QRegularExpression>
@@ -56,7 +57,8 @@ std::variant<Trigger, QString> parseTrigger(const Target &target, const QString 
         QStringLiteral("^(.+?)\\s*(<>|<=|>=|=|<|>)\\s*(\\S+)$"));
     const QString typed = text.trimmed();
     if (typed.isEmpty())
-        return Tr::tr("Type a condition: \"Y0 rises\", \"Y0 falls\" or \"D10 > 100\"");
+        return Tr::tr("Type a condition: \"%1 rises\", \"%1 falls\" or \"%2 > 100\"")
+            .arg(exampleDevice(target, true), exampleWord(target, 10));
     Trigger trigger;
     QString device;
     if (const auto m = edge.match(typed); m.hasMatch()) {
@@ -83,9 +85,9 @@ std::variant<Trigger, QString> parseTrigger(const Target &target, const QString 
         if (!ok)
             return Tr::tr("\"%1\" is not a whole number (0x before a hexadecimal one)").arg(number);
     } else {
-        return Tr::tr("\"%1\" is no condition: write \"Y0 rises\", \"Y0 falls\" or "
-                      "\"D10 > 100\"")
-            .arg(typed);
+        return Tr::tr("\"%1\" is no condition: write \"%2 rises\", \"%2 falls\" or "
+                      "\"%3 > 100\"")
+            .arg(typed, exampleDevice(target, true), exampleWord(target, 10));
     }
     const auto parsed = parseAddress(target, device.trimmed(), model);
     if (const auto *error = std::get_if<AddressError>(&parsed))

@@ -18,5 +18,10 @@ QStringList targetDisplayNames();
 // The target's first input terminal (Vigor X0, VPC i00, CPM1 000.00, PL110 I1), or its first
 // output terminal (Y0, o00, 010.00, Q1), as the target writes it.
 QString exampleDevice(const Target &target, bool output = false);
+// A data word `offset` elements after the first of the target's data memory (Vigor D10,
+// CPM1 DM0010, PL110 V11, VPC d10 for offset 10), for hints like "D10 > 100" or "D0..D3".
+QString exampleWord(const Target &target, int offset = 0);
+// "D0..D3": a range of the first `count` data words.
+QString exampleWordRange(const Target &target, int count);
 
 } // namespace rung::model

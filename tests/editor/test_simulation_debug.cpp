@@ -10,6 +10,8 @@
 #include "app/gui/simulation_controller.h"
 #include "app/gui/simulation_panel.h"
 #include "editor/il_editor.h"
+#include "editor/io_panel.h"
+#include "editor/timing_chart.h"
 #include "editor/watch_list_view.h"
 #include "simulator/history_source.h"
 #include "simulator/session.h"
@@ -239,18 +241,29 @@ TEST_F(Debugging, TheHistoryShowsAnEarlierScanInTheViewsMarkedThenReturnsToLive)
         return window.statusBar()->currentMessage().startsWith(
             QStringLiteral("history is read-only"));
     })) << window.statusBar()->currentMessage().toStdString();
-    // The chart's cursor asks by time: 255 ms is after scan 25.
-    sim()->showHistoryAt(255);
+    // Scrubbing the timing chart's cursor A: 255 ms sits on scan 25's end (250 ms). The
+    // chart itself stays live (it is what one scrubs along); the terminals show the past
+    // with the ladder.
+    editor::TimingChart *chart = window.timingChart();
+    chart->placeCursor(0, 255);
     ASSERT_TRUE(eventually([&] {
         const auto s = sim()->historySource()->snapshot();
         return s && s->statistics.scans == 25;
     }));
+    EXPECT_EQ(sim()->historySource()->snapshot()->value(at("D0")), 25);
+    EXPECT_EQ(window.ioPanel()->monitorSource(), sim()->historySource());
+    EXPECT_EQ(chart->monitorSource(), sim()->session());
+    // Cursor B measures; it does not move the history.
+    chart->placeCursor(1, 405);
+    QApplication::processEvents();
+    EXPECT_EQ(sim()->historySource()->snapshot()->statistics.scans, 25u);
     QAction *live = test::menuAction(window, QStringLiteral("Return to Live"));
     ASSERT_NE(live, nullptr);
     EXPECT_EQ(live->shortcut(), QKeySequence(Qt::CTRL | Qt::SHIFT | Qt::Key_L));
     live->trigger();
     EXPECT_FALSE(sim()->historyShown());
     EXPECT_EQ(window.watchListView()->monitorSource(), sim()->session());
+    EXPECT_EQ(window.ioPanel()->monitorSource(), sim()->session());
     EXPECT_FALSE(test::statusText(window).contains(QStringLiteral("History:")));
     EXPECT_TRUE(panel->historyLabel().isEmpty());
 }

@@ -92,6 +92,23 @@ TEST(MessagesFromTables, ExampleDevicesAreEachFamilysOwn) {
     }
 }
 
+TEST(MessagesFromTables, ExampleWordsAreEachFamilysDataMemory) {
+    EXPECT_EQ(exampleWord(Target::get(Family::Vigor), 10), QStringLiteral("D10"));
+    EXPECT_EQ(exampleWordRange(Target::get(Family::Vigor), 4), QStringLiteral("D0..D3"));
+    EXPECT_EQ(exampleWord(Target::get(Family::Cpm1), 10), QStringLiteral("DM0010"));
+    EXPECT_EQ(exampleWord(Target::get(Family::Pl110), 10), QStringLiteral("V11"));
+    EXPECT_EQ(exampleWordRange(Target::get(Family::Pl110), 4), QStringLiteral("V1..V4"));
+    for (Family f : Target::families()) {
+        const Target &t = Target::get(f);
+        const QString word = exampleWord(t, 10);
+        ASSERT_FALSE(word.isEmpty()) << t.id.toStdString();
+        const auto parsed = parseAddress(t, word);
+        ASSERT_TRUE(std::holds_alternative<Address>(parsed)) << word.toStdString();
+        const Address a = std::get<Address>(parsed);
+        EXPECT_TRUE(a.bit < 0 && t.area(a.area).kind != AreaKind::Bit) << word.toStdString();
+    }
+}
+
 TEST(MessagesFromTables, TheFamiliesAreListedFromTheRegistry) {
     const QStringList ids = targetIds();
     ASSERT_EQ(ids.size(), static_cast<qsizetype>(Target::families().size()));

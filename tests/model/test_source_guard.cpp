@@ -168,24 +168,6 @@ bool isNoDevice(const QString &word, const QString &literal) {
            word == QLatin1String("0000.00");
 }
 
-// Known debt, each a Vigor example shown to every family's user, to be taken from the target
-// (exampleDevice) with its translations: the simulation panels, the breakpoint dialog and the
-// trigger syntax that came in at once. Listed by file and word so that nothing new joins them.
-bool isKnownDebt(const QString &path, const QString &word) {
-    static const QList<std::pair<const char *, const char *>> debt = {
-        {"app/gui/breakpoint_dialog.cpp", "Y0"}, {"app/gui/breakpoint_dialog.cpp", "D10"},
-        {"editor/timing_canvas.cpp", "Y0"},      {"editor/timing_chart.cpp", "Y0"},
-        {"editor/timing_chart.cpp", "D10"},      {"editor/watch_panel.cpp", "X0"},
-        {"editor/watch_panel.cpp", "Y0"},        {"model/image/trigger.cpp", "Y0"},
-        {"model/image/trigger.cpp", "D10"},
-    };
-    const QString relative = QDir(kRoot).relativeFilePath(path);
-    for (const auto &[file, device] : debt)
-        if (relative == QLatin1String(file) && word == QLatin1String(device))
-            return true;
-    return false;
-}
-
 TEST(SourceGuard, NoDeviceNameInsideATextOutsideTheTargetTables) {
     static const QRegularExpression separators(QStringLiteral("[^A-Za-z0-9.]+"));
     for (const QString &path : productSources()) {
@@ -197,7 +179,7 @@ TEST(SourceGuard, NoDeviceNameInsideATextOutsideTheTargetTables) {
                         word.chop(1); // the end of a sentence
                     if (word == literal || !mayBeDevice(word))
                         continue; // a whole literal is the guard above's
-                    if (isNoDevice(word, literal) || isKnownDebt(path, word))
+                    if (isNoDevice(word, literal))
                         continue;
                     for (Family f : Target::families()) {
                         const Target &t = Target::get(f);
