@@ -175,7 +175,7 @@ Kilépési kód: 0 nincs hiba, 1 a programban hiba van, 2 használati vagy I/O h
         <translation>%1 nem írható: %2</translation>
     </message>
     <message>
-        <location line="+38"/>
+        <location line="+43"/>
         <source>no command given</source>
         <translation>nincs megadva parancs</translation>
     </message>
@@ -244,6 +244,361 @@ Kilépési kód: 0 nincs hiba, 1 a programban hiba van, 2 használati vagy I/O h
         <location filename="../app/cli/cli_language.cpp" line="+31"/>
         <source>--lang must be one of %1</source>
         <translation>a --lang értéke csak ezek egyike lehet: %1</translation>
+    </message>
+</context>
+<context>
+    <name>rung::app::ConnectionPanel</name>
+    <message>
+        <location filename="../app/gui/connection_panel.cpp" line="+51"/>
+        <source>ON</source>
+        <translation>BE</translation>
+    </message>
+    <message>
+        <location line="+0"/>
+        <source>OFF</source>
+        <translation>KI</translation>
+    </message>
+    <message>
+        <location line="+3"/>
+        <source>Set %1 %2</source>
+        <translation>%1 beállítása: %2</translation>
+    </message>
+    <message>
+        <location line="+2"/>
+        <source>Write %1 = %2</source>
+        <translation>%1 írása: %2</translation>
+    </message>
+    <message>
+        <location line="+2"/>
+        <source>Write the preset of %1 = %2</source>
+        <translation>%1 beállított értékének írása: %2</translation>
+    </message>
+    <message>
+        <location line="+2"/>
+        <source>Force %1 %2</source>
+        <translation>%1 kényszerítése: %2</translation>
+    </message>
+    <message>
+        <location line="+2"/>
+        <source>Release the force on %1</source>
+        <translation>%1 kényszerítésének feloldása</translation>
+    </message>
+    <message>
+        <location line="+2"/>
+        <source>Release every force</source>
+        <translation>Minden kényszerítés feloldása</translation>
+    </message>
+    <message>
+        <location line="+25"/>
+        <source>Cancelled: nothing was sent to the PLC</source>
+        <translation>Megszakítva: semmi sem lett elküldve a PLC-nek</translation>
+    </message>
+    <message>
+        <location line="+225"/>
+        <source>Connection</source>
+        <translation>Kapcsolat</translation>
+    </message>
+    <message>
+        <location line="+1"/>
+        <source>Protocol:</source>
+        <translation>Protokoll:</translation>
+    </message>
+    <message>
+        <location line="+1"/>
+        <source>Serial port</source>
+        <translation>Soros port</translation>
+    </message>
+    <message>
+        <location line="+1"/>
+        <source>TCP</source>
+        <translation>TCP</translation>
+    </message>
+    <message>
+        <location line="+1"/>
+        <source>Port:</source>
+        <translation>Port:</translation>
+    </message>
+    <message>
+        <location line="+1"/>
+        <source>A serial port, or a path typed in (a pseudo-terminal such as the one &apos;rungstudio-cli serve --pty&apos; prints)</source>
+        <translation>Soros port, vagy beírt elérési út (például az a pszeudoterminál, amelyet a &apos;rungstudio-cli serve --pty&apos; kiír)</translation>
+    </message>
+    <message>
+        <location line="+2"/>
+        <source>Refresh</source>
+        <translation>Frissítés</translation>
+    </message>
+    <message>
+        <location line="+1"/>
+        <source>Baud rate:</source>
+        <translation>Átviteli sebesség (baud):</translation>
+    </message>
+    <message>
+        <location line="+1"/>
+        <source>Format:</source>
+        <translation>Formátum:</translation>
+    </message>
+    <message>
+        <location line="+1"/>
+        <source>Data bits, parity (N none, E even, O odd) and stop bits</source>
+        <translation>Adatbitek, paritás (N nincs, E páros, O páratlan) és stopbitek</translation>
+    </message>
+    <message>
+        <location line="+1"/>
+        <source>Host:</source>
+        <translation>Gép:</translation>
+    </message>
+    <message>
+        <location line="+1"/>
+        <source>TCP port:</source>
+        <translation>TCP-port:</translation>
+    </message>
+    <message>
+        <location line="+1"/>
+        <source>Station:</source>
+        <translation>Állomás:</translation>
+    </message>
+    <message>
+        <location line="+1"/>
+        <source>Timeout (ms):</source>
+        <translation>Időtúllépés (ms):</translation>
+    </message>
+    <message>
+        <location line="+1"/>
+        <source>Retries:</source>
+        <translation>Ismétlések:</translation>
+    </message>
+    <message>
+        <location line="+1"/>
+        <source>Test Connection</source>
+        <translation>Kapcsolat tesztelése</translation>
+    </message>
+    <message>
+        <location line="+1"/>
+        <source>Traffic</source>
+        <translation>Adatforgalom</translation>
+    </message>
+    <message>
+        <location line="+1"/>
+        <source>Record</source>
+        <translation>Rögzítés</translation>
+    </message>
+    <message>
+        <location line="+1"/>
+        <source>Clear</source>
+        <translation>Törlés</translation>
+    </message>
+    <message>
+        <location line="+1"/>
+        <source>Save...</source>
+        <translation>Mentés...</translation>
+    </message>
+    <message>
+        <location line="+18"/>
+        <source>PLC: %1</source>
+        <translation>PLC: %1</translation>
+    </message>
+    <message>
+        <location line="+1"/>
+        <source>PLC: %1, model %2</source>
+        <translation>PLC: %1, modell: %2</translation>
+    </message>
+    <message>
+        <location line="+5"/>
+        <source>The link protocol of the %1 is not published, so the IDE cannot talk to it. Instead: export the program as a console listing (File &gt; Export Instruction List) and load it with the PLC&apos;s own tool; to study the link, capture its traffic with &apos;rungstudio-cli record&apos;.</source>
+        <translation>A(z) %1 kommunikációs protokollja nem nyilvános, ezért az IDE nem tud vele kapcsolatot teremteni. Helyette: exportálja a programot konzollistaként (Fájl &gt; Utasításlista exportálása), és töltse be a PLC saját eszközével; a kapcsolat tanulmányozásához rögzítse az adatforgalmát a &apos;rungstudio-cli record&apos; paranccsal.</translation>
+    </message>
+    <message>
+        <location line="+131"/>
+        <source>Change the PLC&apos;s Memory</source>
+        <translation>A PLC memóriájának módosítása</translation>
+    </message>
+    <message>
+        <location line="+1"/>
+        <source>%1 on %2?
+
+This changes the memory of a real PLC, which may be driving a machine. You are asked once for each connection; later changes go at once.</source>
+        <translation>%1 ezen: %2?
+
+Ez egy valódi PLC memóriáját módosítja, amely gépet vezérelhet. Kapcsolatonként egyszer kérdezünk; a további módosítások azonnal mennek.</translation>
+    </message>
+    <message>
+        <location line="+16"/>
+        <location line="+106"/>
+        <source>Choose the serial port the PLC is on (or type its path)</source>
+        <translation>Válassza ki a soros portot, amelyen a PLC van (vagy írja be az elérési útját)</translation>
+    </message>
+    <message>
+        <location line="-77"/>
+        <source>%1: done, the PLC acknowledged it</source>
+        <translation>%1: kész, a PLC nyugtázta</translation>
+    </message>
+    <message>
+        <location line="+1"/>
+        <source>%1: not done: %2</source>
+        <translation>%1: nem történt meg: %2</translation>
+    </message>
+    <message>
+        <location line="+6"/>
+        <source>These PLCs cannot send their program back, so the IDE cannot know whether the PLC runs the program shown here. Compare by reading devices: watch them in the ladder or the watch table.</source>
+        <translation>Ezek a PLC-k nem tudják visszaküldeni a programjukat, ezért az IDE nem tudhatja, hogy a PLC az itt látható programot futtatja-e. Hasonlítsa össze operandusok olvasásával: figyelje őket a létradiagramon vagy a figyelőtáblában.</translation>
+    </message>
+    <message>
+        <location line="+27"/>
+        <source>Switch to %1</source>
+        <translation>Átváltás %1 módba</translation>
+    </message>
+    <message>
+        <location line="+15"/>
+        <source>The PLC runs its program: its outputs switch as the program says.</source>
+        <translation>A PLC futtatja a programját: a kimenetei a program szerint kapcsolnak.</translation>
+    </message>
+    <message>
+        <location line="+3"/>
+        <source>The PLC runs its program and takes writes from the IDE.</source>
+        <translation>A PLC futtatja a programját, és fogadja az IDE írásait.</translation>
+    </message>
+    <message>
+        <location line="+3"/>
+        <source>The PLC stops running its program.</source>
+        <translation>A PLC leállítja a programja futtatását.</translation>
+    </message>
+    <message>
+        <location line="+4"/>
+        <source>PLC Mode</source>
+        <translation>PLC üzemmód</translation>
+    </message>
+    <message>
+        <location line="+1"/>
+        <source>Switch %1 to %2?
+
+%3</source>
+        <translation>%1 átváltása %2 módba?
+
+%3</translation>
+    </message>
+    <message>
+        <location line="+7"/>
+        <source>Already connected: the panel shows what the PLC reports</source>
+        <translation>Már csatlakozva: a panel mutatja, amit a PLC jelent</translation>
+    </message>
+    <message>
+        <location line="+1"/>
+        <source>A test is under way</source>
+        <translation>Egy teszt folyamatban van</translation>
+    </message>
+    <message>
+        <location line="+15"/>
+        <source>Testing %1...</source>
+        <translation>%1 tesztelése...</translation>
+    </message>
+    <message>
+        <location line="+8"/>
+        <source>The PLC answers (this protocol does not report the model)</source>
+        <translation>A PLC válaszol (ez a protokoll nem jelenti a modellt)</translation>
+    </message>
+    <message>
+        <location line="+1"/>
+        <source>The PLC answers: %1</source>
+        <translation>A PLC válaszol: %1</translation>
+    </message>
+    <message>
+        <location line="+2"/>
+        <source>, version %1</source>
+        <translation>, verzió: %1</translation>
+    </message>
+    <message>
+        <location line="+2"/>
+        <source>; mode %1</source>
+        <translation>; üzemmód: %1</translation>
+    </message>
+    <message>
+        <location line="+2"/>
+        <source>; round trip %1 ms</source>
+        <translation>; válaszidő: %1 ms</translation>
+    </message>
+    <message>
+        <location line="+4"/>
+        <location line="+11"/>
+        <source>No answer: %1</source>
+        <translation>Nincs válasz: %1</translation>
+    </message>
+    <message>
+        <location line="-1"/>
+        <source>No answer from the PLC</source>
+        <translation>A PLC nem válaszol</translation>
+    </message>
+    <message>
+        <location line="+27"/>
+        <location line="+4"/>
+        <source>Offline</source>
+        <translation>Offline</translation>
+    </message>
+    <message>
+        <location line="-4"/>
+        <source>Offline: no link to this PLC</source>
+        <translation>Offline: ehhez a PLC-hez nincs kapcsolat</translation>
+    </message>
+    <message>
+        <location line="+6"/>
+        <source>Connecting to %1...</source>
+        <translation>Kapcsolódás ehhez: %1...</translation>
+    </message>
+    <message>
+        <location line="+1"/>
+        <source>Connecting to %1: %2</source>
+        <translation>Kapcsolódás ehhez: %1: %2</translation>
+    </message>
+    <message>
+        <location line="+3"/>
+        <source>Online: %1</source>
+        <translation>Online: %1</translation>
+    </message>
+    <message>
+        <location line="+10"/>
+        <source>Link lost: %1
+Trying again; the values shown are the last read, marked stale.</source>
+        <translation>Megszakadt a kapcsolat: %1
+Újrapróbálkozás; a látható értékek az utoljára olvasottak, elavultként jelölve.</translation>
+    </message>
+    <message>
+        <location line="+4"/>
+        <source>Cannot connect: %1</source>
+        <translation>Nem lehet kapcsolódni: %1</translation>
+    </message>
+    <message>
+        <location line="+7"/>
+        <source>Disconnect</source>
+        <translation>Bontás</translation>
+    </message>
+    <message>
+        <location line="+0"/>
+        <source>Connect</source>
+        <translation>Kapcsolódás</translation>
+    </message>
+    <message>
+        <location line="+29"/>
+        <source>Errors %1, retries %2, timeouts %3, refused %4, reconnects %5
+Round trip %6 ms (mean %7, max %8); refresh %9 ms, %10 frame(s)</source>
+        <translation>Hibák: %1, ismétlések: %2, időtúllépések: %3, elutasítva: %4, újracsatlakozások: %5
+Válaszidő: %6 ms (átlag %7, max. %8); frissítés: %9 ms, %10 keret</translation>
+    </message>
+    <message>
+        <location line="+27"/>
+        <source>PC&gt;PLC</source>
+        <extracomment>the direction of bytes in the traffic log: from the PC to the PLC, and back</extracomment>
+        <translation>PC&gt;PLC</translation>
+    </message>
+    <message>
+        <location line="+1"/>
+        <source>PLC&gt;PC</source>
+        <translation>PLC&gt;PC</translation>
+    </message>
+    <message>
+        <location line="+11"/>
+        <location line="+6"/>
+        <source>Cannot write %1: %2</source>
+        <translation>%1 nem írható: %2</translation>
     </message>
 </context>
 <context>
@@ -340,7 +695,7 @@ Kilépési kód: 0 nincs hiba, 1 a programban hiba van, 2 használati vagy I/O h
 <context>
     <name>rung::app::MainWindow</name>
     <message>
-        <location filename="../app/gui/main_window.cpp" line="+159"/>
+        <location filename="../app/gui/main_window.cpp" line="+160"/>
         <source>Problems</source>
         <translation>Problémák</translation>
     </message>
@@ -542,7 +897,7 @@ Kilépési kód: 0 nincs hiba, 1 a programban hiba van, 2 használati vagy I/O h
         <translation>S&amp;or törlése</translation>
     </message>
     <message>
-        <location line="+60"/>
+        <location line="+61"/>
         <source>F5 normally open contact, F6 normally closed contact, F7 coil, F8 instruction
 Shift+F5 / Shift+F6 the same contacts in parallel with the row above
 Shift+F7 / Shift+F8 rising / falling edge contact (Alt: in parallel)
@@ -583,7 +938,7 @@ Létradiagram- és utasításlista-szerkesztő a következő PLC-khez: %2.</tran
         <translation>&amp;Mégis</translation>
     </message>
     <message>
-        <location line="-176"/>
+        <location line="-177"/>
         <source>Select</source>
         <translation>Kijelölés</translation>
     </message>
@@ -700,7 +1055,7 @@ Létradiagram- és utasításlista-szerkesztő a következő PLC-khez: %2.</tran
         <translation>Program ellen&amp;őrzése</translation>
     </message>
     <message>
-        <location line="+5"/>
+        <location line="+6"/>
         <source>&amp;Language</source>
         <translation>N&amp;yelv</translation>
     </message>
@@ -860,6 +1215,7 @@ Létradiagram- és utasításlista-szerkesztő a következő PLC-khez: %2.</tran
     </message>
     <message>
         <location line="+21"/>
+        <location filename="../app/gui/main_window_online.cpp" line="+57"/>
         <source>Cannot save</source>
         <translation>A mentés nem sikerült</translation>
     </message>
@@ -947,7 +1303,7 @@ Létradiagram- és utasításlista-szerkesztő a következő PLC-khez: %2.</tran
         <location line="-4"/>
         <location line="+8"/>
         <location line="+10"/>
-        <location filename="../app/gui/main_window_panels.cpp" line="+50"/>
+        <location filename="../app/gui/main_window_panels.cpp" line="+52"/>
         <location filename="../app/gui/main_window_tools.cpp" line="+3"/>
         <source>Cannot export</source>
         <translation>Az exportálás nem sikerült</translation>
@@ -1176,7 +1532,7 @@ Létradiagram- és utasításlista-szerkesztő a következő PLC-khez: %2.</tran
     <message>
         <location filename="../app/gui/main_window_debug.cpp" line="+38"/>
         <location line="+130"/>
-        <location filename="../app/gui/main_window_monitor.cpp" line="+33"/>
+        <location filename="../app/gui/main_window_monitor.cpp" line="+38"/>
         <source>Simulation</source>
         <translation>Szimuláció</translation>
     </message>
@@ -1316,6 +1672,102 @@ Létradiagram- és utasításlista-szerkesztő a következő PLC-khez: %2.</tran
         <location line="+1"/>
         <source>Timing Chart</source>
         <translation>Idődiagram</translation>
+    </message>
+    <message>
+        <location filename="../app/gui/main_window_online.cpp" line="-4"/>
+        <source>Save Traffic Log</source>
+        <translation>Adatforgalom-napló mentése</translation>
+    </message>
+    <message>
+        <location line="+0"/>
+        <source>Text files (*.txt)</source>
+        <translation>Szövegfájlok (*.txt)</translation>
+    </message>
+    <message>
+        <location line="+11"/>
+        <source>Go Online</source>
+        <translation>Online kapcsolódás</translation>
+    </message>
+    <message>
+        <location line="+1"/>
+        <source>The simulation is running. Going online pauses it: the views then show the PLC&apos;s values. Go online?</source>
+        <translation>A szimuláció fut. Az online kapcsolódás szünetelteti: a nézetek ezután a PLC értékeit mutatják. Kapcsolódik?</translation>
+    </message>
+    <message>
+        <location line="+12"/>
+        <source>Simulate</source>
+        <translation>Szimuláció</translation>
+    </message>
+    <message>
+        <location line="+1"/>
+        <source>The IDE is online to %1. Go offline to simulate?</source>
+        <translation>Az IDE online kapcsolatban van ezzel: %1. Bontja a kapcsolatot a szimulációhoz?</translation>
+    </message>
+    <message>
+        <location line="+5"/>
+        <source>The simulation stays paused while the IDE is online</source>
+        <translation>A szimuláció szünetel, amíg az IDE online</translation>
+    </message>
+    <message>
+        <location line="+8"/>
+        <source>Connection</source>
+        <translation>Kapcsolat</translation>
+    </message>
+    <message>
+        <location line="+2"/>
+        <source>&amp;Online</source>
+        <translation>&amp;Online</translation>
+    </message>
+    <message>
+        <location line="+12"/>
+        <location line="+70"/>
+        <source>Go &amp;Online</source>
+        <translation>&amp;Online kapcsolódás</translation>
+    </message>
+    <message>
+        <location line="-59"/>
+        <source>&amp;Test Connection</source>
+        <translation>Kapcsolat &amp;tesztelése</translation>
+    </message>
+    <message>
+        <location line="+5"/>
+        <source>PLC to &amp;STOP / PROGRAM</source>
+        <translation>PLC &amp;STOP / PROGRAM módba</translation>
+    </message>
+    <message>
+        <location line="+2"/>
+        <source>PLC to &amp;MONITOR</source>
+        <translation>PLC &amp;MONITOR módba</translation>
+    </message>
+    <message>
+        <location line="+2"/>
+        <source>PLC to &amp;RUN</source>
+        <translation>PLC &amp;RUN módba</translation>
+    </message>
+    <message>
+        <location line="+3"/>
+        <source>Release All &amp;Forces in the PLC</source>
+        <translation>Minden &amp;kényszerítés feloldása a PLC-ben</translation>
+    </message>
+    <message>
+        <location line="+20"/>
+        <source>Online: %1</source>
+        <translation>Online: %1</translation>
+    </message>
+    <message>
+        <location line="+6"/>
+        <source>Going online. The IDE cannot know whether the PLC runs the program shown: compare by reading devices</source>
+        <translation>Online kapcsolódás. Az IDE nem tudhatja, hogy a PLC a látható programot futtatja-e: hasonlítsa össze operandusok olvasásával</translation>
+    </message>
+    <message>
+        <location line="+9"/>
+        <source>Offline</source>
+        <translation>Offline</translation>
+    </message>
+    <message>
+        <location line="+12"/>
+        <source>Go &amp;Offline</source>
+        <translation>&amp;Offline (kapcsolat bontása)</translation>
     </message>
 </context>
 <context>

@@ -175,7 +175,7 @@ Codice di uscita: 0 nessun errore, 1 il programma contiene errori, 2 errore di u
         <translation>impossibile scrivere %1: %2</translation>
     </message>
     <message>
-        <location line="+38"/>
+        <location line="+43"/>
         <source>no command given</source>
         <translation>nessun comando specificato</translation>
     </message>
@@ -244,6 +244,361 @@ Codice di uscita: 0 nessun errore, 1 il programma contiene errori, 2 errore di u
         <location filename="../app/cli/cli_language.cpp" line="+31"/>
         <source>--lang must be one of %1</source>
         <translation>--lang deve essere uno tra %1</translation>
+    </message>
+</context>
+<context>
+    <name>rung::app::ConnectionPanel</name>
+    <message>
+        <location filename="../app/gui/connection_panel.cpp" line="+51"/>
+        <source>ON</source>
+        <translation>ON</translation>
+    </message>
+    <message>
+        <location line="+0"/>
+        <source>OFF</source>
+        <translation>OFF</translation>
+    </message>
+    <message>
+        <location line="+3"/>
+        <source>Set %1 %2</source>
+        <translation>Imposta %1 a %2</translation>
+    </message>
+    <message>
+        <location line="+2"/>
+        <source>Write %1 = %2</source>
+        <translation>Scrivi %1 = %2</translation>
+    </message>
+    <message>
+        <location line="+2"/>
+        <source>Write the preset of %1 = %2</source>
+        <translation>Scrivi il valore di preset di %1 = %2</translation>
+    </message>
+    <message>
+        <location line="+2"/>
+        <source>Force %1 %2</source>
+        <translation>Forza %1 a %2</translation>
+    </message>
+    <message>
+        <location line="+2"/>
+        <source>Release the force on %1</source>
+        <translation>Rilascia la forzatura di %1</translation>
+    </message>
+    <message>
+        <location line="+2"/>
+        <source>Release every force</source>
+        <translation>Rilascia tutte le forzature</translation>
+    </message>
+    <message>
+        <location line="+25"/>
+        <source>Cancelled: nothing was sent to the PLC</source>
+        <translation>Annullato: nulla è stato inviato al PLC</translation>
+    </message>
+    <message>
+        <location line="+225"/>
+        <source>Connection</source>
+        <translation>Connessione</translation>
+    </message>
+    <message>
+        <location line="+1"/>
+        <source>Protocol:</source>
+        <translation>Protocollo:</translation>
+    </message>
+    <message>
+        <location line="+1"/>
+        <source>Serial port</source>
+        <translation>Porta seriale</translation>
+    </message>
+    <message>
+        <location line="+1"/>
+        <source>TCP</source>
+        <translation>TCP</translation>
+    </message>
+    <message>
+        <location line="+1"/>
+        <source>Port:</source>
+        <translation>Porta:</translation>
+    </message>
+    <message>
+        <location line="+1"/>
+        <source>A serial port, or a path typed in (a pseudo-terminal such as the one &apos;rungstudio-cli serve --pty&apos; prints)</source>
+        <translation>Una porta seriale, o un percorso digitato (uno pseudo-terminale come quello stampato da &apos;rungstudio-cli serve --pty&apos;)</translation>
+    </message>
+    <message>
+        <location line="+2"/>
+        <source>Refresh</source>
+        <translation>Aggiorna</translation>
+    </message>
+    <message>
+        <location line="+1"/>
+        <source>Baud rate:</source>
+        <translation>Velocità (baud):</translation>
+    </message>
+    <message>
+        <location line="+1"/>
+        <source>Format:</source>
+        <translation>Formato:</translation>
+    </message>
+    <message>
+        <location line="+1"/>
+        <source>Data bits, parity (N none, E even, O odd) and stop bits</source>
+        <translation>Bit di dati, parità (N nessuna, E pari, O dispari) e bit di stop</translation>
+    </message>
+    <message>
+        <location line="+1"/>
+        <source>Host:</source>
+        <translation>Host:</translation>
+    </message>
+    <message>
+        <location line="+1"/>
+        <source>TCP port:</source>
+        <translation>Porta TCP:</translation>
+    </message>
+    <message>
+        <location line="+1"/>
+        <source>Station:</source>
+        <translation>Stazione:</translation>
+    </message>
+    <message>
+        <location line="+1"/>
+        <source>Timeout (ms):</source>
+        <translation>Timeout (ms):</translation>
+    </message>
+    <message>
+        <location line="+1"/>
+        <source>Retries:</source>
+        <translation>Tentativi:</translation>
+    </message>
+    <message>
+        <location line="+1"/>
+        <source>Test Connection</source>
+        <translation>Test della connessione</translation>
+    </message>
+    <message>
+        <location line="+1"/>
+        <source>Traffic</source>
+        <translation>Traffico</translation>
+    </message>
+    <message>
+        <location line="+1"/>
+        <source>Record</source>
+        <translation>Registra</translation>
+    </message>
+    <message>
+        <location line="+1"/>
+        <source>Clear</source>
+        <translation>Cancella</translation>
+    </message>
+    <message>
+        <location line="+1"/>
+        <source>Save...</source>
+        <translation>Salva...</translation>
+    </message>
+    <message>
+        <location line="+18"/>
+        <source>PLC: %1</source>
+        <translation>PLC: %1</translation>
+    </message>
+    <message>
+        <location line="+1"/>
+        <source>PLC: %1, model %2</source>
+        <translation>PLC: %1, modello %2</translation>
+    </message>
+    <message>
+        <location line="+5"/>
+        <source>The link protocol of the %1 is not published, so the IDE cannot talk to it. Instead: export the program as a console listing (File &gt; Export Instruction List) and load it with the PLC&apos;s own tool; to study the link, capture its traffic with &apos;rungstudio-cli record&apos;.</source>
+        <translation>Il protocollo di comunicazione del %1 non è pubblicato, quindi l&apos;IDE non può dialogare con esso. In alternativa: esportare il programma come listato per console (File &gt; Esporta lista istruzioni) e caricarlo con lo strumento proprio del PLC; per studiare il collegamento, registrarne il traffico con &apos;rungstudio-cli record&apos;.</translation>
+    </message>
+    <message>
+        <location line="+131"/>
+        <source>Change the PLC&apos;s Memory</source>
+        <translation>Modifica della memoria del PLC</translation>
+    </message>
+    <message>
+        <location line="+1"/>
+        <source>%1 on %2?
+
+This changes the memory of a real PLC, which may be driving a machine. You are asked once for each connection; later changes go at once.</source>
+        <translation>%1 su %2?
+
+Questo modifica la memoria di un PLC reale, che potrebbe comandare una macchina. La domanda viene posta una volta per connessione; le modifiche successive partono subito.</translation>
+    </message>
+    <message>
+        <location line="+16"/>
+        <location line="+106"/>
+        <source>Choose the serial port the PLC is on (or type its path)</source>
+        <translation>Scegliere la porta seriale del PLC (o digitarne il percorso)</translation>
+    </message>
+    <message>
+        <location line="-77"/>
+        <source>%1: done, the PLC acknowledged it</source>
+        <translation>%1: fatto, il PLC ha confermato</translation>
+    </message>
+    <message>
+        <location line="+1"/>
+        <source>%1: not done: %2</source>
+        <translation>%1: non eseguito: %2</translation>
+    </message>
+    <message>
+        <location line="+6"/>
+        <source>These PLCs cannot send their program back, so the IDE cannot know whether the PLC runs the program shown here. Compare by reading devices: watch them in the ladder or the watch table.</source>
+        <translation>Questi PLC non possono rimandare il loro programma, quindi l&apos;IDE non può sapere se il PLC esegue il programma mostrato qui. Confrontare leggendo gli operandi: osservarli nel ladder o nella tabella di osservazione.</translation>
+    </message>
+    <message>
+        <location line="+27"/>
+        <source>Switch to %1</source>
+        <translation>Passa a %1</translation>
+    </message>
+    <message>
+        <location line="+15"/>
+        <source>The PLC runs its program: its outputs switch as the program says.</source>
+        <translation>Il PLC esegue il suo programma: le uscite commutano come dice il programma.</translation>
+    </message>
+    <message>
+        <location line="+3"/>
+        <source>The PLC runs its program and takes writes from the IDE.</source>
+        <translation>Il PLC esegue il suo programma e accetta le scritture dall&apos;IDE.</translation>
+    </message>
+    <message>
+        <location line="+3"/>
+        <source>The PLC stops running its program.</source>
+        <translation>Il PLC smette di eseguire il suo programma.</translation>
+    </message>
+    <message>
+        <location line="+4"/>
+        <source>PLC Mode</source>
+        <translation>Modo del PLC</translation>
+    </message>
+    <message>
+        <location line="+1"/>
+        <source>Switch %1 to %2?
+
+%3</source>
+        <translation>Passare %1 a %2?
+
+%3</translation>
+    </message>
+    <message>
+        <location line="+7"/>
+        <source>Already connected: the panel shows what the PLC reports</source>
+        <translation>Già connesso: il pannello mostra ciò che il PLC riporta</translation>
+    </message>
+    <message>
+        <location line="+1"/>
+        <source>A test is under way</source>
+        <translation>Un test è in corso</translation>
+    </message>
+    <message>
+        <location line="+15"/>
+        <source>Testing %1...</source>
+        <translation>Test di %1...</translation>
+    </message>
+    <message>
+        <location line="+8"/>
+        <source>The PLC answers (this protocol does not report the model)</source>
+        <translation>Il PLC risponde (questo protocollo non riporta il modello)</translation>
+    </message>
+    <message>
+        <location line="+1"/>
+        <source>The PLC answers: %1</source>
+        <translation>Il PLC risponde: %1</translation>
+    </message>
+    <message>
+        <location line="+2"/>
+        <source>, version %1</source>
+        <translation>, versione %1</translation>
+    </message>
+    <message>
+        <location line="+2"/>
+        <source>; mode %1</source>
+        <translation>; modo %1</translation>
+    </message>
+    <message>
+        <location line="+2"/>
+        <source>; round trip %1 ms</source>
+        <translation>; tempo di andata e ritorno %1 ms</translation>
+    </message>
+    <message>
+        <location line="+4"/>
+        <location line="+11"/>
+        <source>No answer: %1</source>
+        <translation>Nessuna risposta: %1</translation>
+    </message>
+    <message>
+        <location line="-1"/>
+        <source>No answer from the PLC</source>
+        <translation>Nessuna risposta dal PLC</translation>
+    </message>
+    <message>
+        <location line="+27"/>
+        <location line="+4"/>
+        <source>Offline</source>
+        <translation>Offline</translation>
+    </message>
+    <message>
+        <location line="-4"/>
+        <source>Offline: no link to this PLC</source>
+        <translation>Offline: nessun collegamento a questo PLC</translation>
+    </message>
+    <message>
+        <location line="+6"/>
+        <source>Connecting to %1...</source>
+        <translation>Connessione a %1...</translation>
+    </message>
+    <message>
+        <location line="+1"/>
+        <source>Connecting to %1: %2</source>
+        <translation>Connessione a %1: %2</translation>
+    </message>
+    <message>
+        <location line="+3"/>
+        <source>Online: %1</source>
+        <translation>Online: %1</translation>
+    </message>
+    <message>
+        <location line="+10"/>
+        <source>Link lost: %1
+Trying again; the values shown are the last read, marked stale.</source>
+        <translation>Collegamento perso: %1
+Nuovo tentativo in corso; i valori mostrati sono gli ultimi letti, segnati come non aggiornati.</translation>
+    </message>
+    <message>
+        <location line="+4"/>
+        <source>Cannot connect: %1</source>
+        <translation>Impossibile connettersi: %1</translation>
+    </message>
+    <message>
+        <location line="+7"/>
+        <source>Disconnect</source>
+        <translation>Disconnetti</translation>
+    </message>
+    <message>
+        <location line="+0"/>
+        <source>Connect</source>
+        <translation>Connetti</translation>
+    </message>
+    <message>
+        <location line="+29"/>
+        <source>Errors %1, retries %2, timeouts %3, refused %4, reconnects %5
+Round trip %6 ms (mean %7, max %8); refresh %9 ms, %10 frame(s)</source>
+        <translation>Errori %1, tentativi %2, timeout %3, rifiutati %4, riconnessioni %5
+Andata e ritorno %6 ms (media %7, max %8); aggiornamento %9 ms, %10 frame</translation>
+    </message>
+    <message>
+        <location line="+27"/>
+        <source>PC&gt;PLC</source>
+        <extracomment>the direction of bytes in the traffic log: from the PC to the PLC, and back</extracomment>
+        <translation>PC&gt;PLC</translation>
+    </message>
+    <message>
+        <location line="+1"/>
+        <source>PLC&gt;PC</source>
+        <translation>PLC&gt;PC</translation>
+    </message>
+    <message>
+        <location line="+11"/>
+        <location line="+6"/>
+        <source>Cannot write %1: %2</source>
+        <translation>Impossibile scrivere %1: %2</translation>
     </message>
 </context>
 <context>
@@ -340,7 +695,7 @@ Codice di uscita: 0 nessun errore, 1 il programma contiene errori, 2 errore di u
 <context>
     <name>rung::app::MainWindow</name>
     <message>
-        <location filename="../app/gui/main_window.cpp" line="+159"/>
+        <location filename="../app/gui/main_window.cpp" line="+160"/>
         <source>Problems</source>
         <translation>Problemi</translation>
     </message>
@@ -542,7 +897,7 @@ Codice di uscita: 0 nessun errore, 1 il programma contiene errori, 2 errore di u
         <translation>E&amp;limina riga</translation>
     </message>
     <message>
-        <location line="+60"/>
+        <location line="+61"/>
         <source>F5 normally open contact, F6 normally closed contact, F7 coil, F8 instruction
 Shift+F5 / Shift+F6 the same contacts in parallel with the row above
 Shift+F7 / Shift+F8 rising / falling edge contact (Alt: in parallel)
@@ -583,7 +938,7 @@ Editor di schemi ladder e liste istruzioni per %2.</translation>
         <translation>&amp;Ripeti</translation>
     </message>
     <message>
-        <location line="-176"/>
+        <location line="-177"/>
         <source>Select</source>
         <translation>Seleziona</translation>
     </message>
@@ -700,7 +1055,7 @@ Editor di schemi ladder e liste istruzioni per %2.</translation>
         <translation>&amp;Verifica programma</translation>
     </message>
     <message>
-        <location line="+5"/>
+        <location line="+6"/>
         <source>&amp;Language</source>
         <translation>&amp;Lingua</translation>
     </message>
@@ -862,6 +1217,7 @@ Editor di schemi ladder e liste istruzioni per %2.</translation>
     </message>
     <message>
         <location line="+21"/>
+        <location filename="../app/gui/main_window_online.cpp" line="+57"/>
         <source>Cannot save</source>
         <translation>Impossibile salvare</translation>
     </message>
@@ -949,7 +1305,7 @@ Editor di schemi ladder e liste istruzioni per %2.</translation>
         <location line="-4"/>
         <location line="+8"/>
         <location line="+10"/>
-        <location filename="../app/gui/main_window_panels.cpp" line="+50"/>
+        <location filename="../app/gui/main_window_panels.cpp" line="+52"/>
         <location filename="../app/gui/main_window_tools.cpp" line="+3"/>
         <source>Cannot export</source>
         <translation>Impossibile esportare</translation>
@@ -1181,7 +1537,7 @@ Editor di schemi ladder e liste istruzioni per %2.</translation>
     <message>
         <location filename="../app/gui/main_window_debug.cpp" line="+38"/>
         <location line="+130"/>
-        <location filename="../app/gui/main_window_monitor.cpp" line="+33"/>
+        <location filename="../app/gui/main_window_monitor.cpp" line="+38"/>
         <source>Simulation</source>
         <translation>Simulazione</translation>
     </message>
@@ -1321,6 +1677,102 @@ Editor di schemi ladder e liste istruzioni per %2.</translation>
         <location line="+1"/>
         <source>Timing Chart</source>
         <translation>Diagramma temporale</translation>
+    </message>
+    <message>
+        <location filename="../app/gui/main_window_online.cpp" line="-4"/>
+        <source>Save Traffic Log</source>
+        <translation>Salva il registro del traffico</translation>
+    </message>
+    <message>
+        <location line="+0"/>
+        <source>Text files (*.txt)</source>
+        <translation>File di testo (*.txt)</translation>
+    </message>
+    <message>
+        <location line="+11"/>
+        <source>Go Online</source>
+        <translation>Vai online</translation>
+    </message>
+    <message>
+        <location line="+1"/>
+        <source>The simulation is running. Going online pauses it: the views then show the PLC&apos;s values. Go online?</source>
+        <translation>La simulazione è in esecuzione. Andare online la mette in pausa: le viste mostrano poi i valori del PLC. Andare online?</translation>
+    </message>
+    <message>
+        <location line="+12"/>
+        <source>Simulate</source>
+        <translation>Simula</translation>
+    </message>
+    <message>
+        <location line="+1"/>
+        <source>The IDE is online to %1. Go offline to simulate?</source>
+        <translation>L&apos;IDE è online con %1. Andare offline per simulare?</translation>
+    </message>
+    <message>
+        <location line="+5"/>
+        <source>The simulation stays paused while the IDE is online</source>
+        <translation>La simulazione resta in pausa finché l&apos;IDE è online</translation>
+    </message>
+    <message>
+        <location line="+8"/>
+        <source>Connection</source>
+        <translation>Connessione</translation>
+    </message>
+    <message>
+        <location line="+2"/>
+        <source>&amp;Online</source>
+        <translation>&amp;Online</translation>
+    </message>
+    <message>
+        <location line="+12"/>
+        <location line="+70"/>
+        <source>Go &amp;Online</source>
+        <translation>Vai &amp;online</translation>
+    </message>
+    <message>
+        <location line="-59"/>
+        <source>&amp;Test Connection</source>
+        <translation>&amp;Test della connessione</translation>
+    </message>
+    <message>
+        <location line="+5"/>
+        <source>PLC to &amp;STOP / PROGRAM</source>
+        <translation>PLC in &amp;STOP / PROGRAM</translation>
+    </message>
+    <message>
+        <location line="+2"/>
+        <source>PLC to &amp;MONITOR</source>
+        <translation>PLC in &amp;MONITOR</translation>
+    </message>
+    <message>
+        <location line="+2"/>
+        <source>PLC to &amp;RUN</source>
+        <translation>PLC in &amp;RUN</translation>
+    </message>
+    <message>
+        <location line="+3"/>
+        <source>Release All &amp;Forces in the PLC</source>
+        <translation>Rilascia tutte le &amp;forzature nel PLC</translation>
+    </message>
+    <message>
+        <location line="+20"/>
+        <source>Online: %1</source>
+        <translation>Online: %1</translation>
+    </message>
+    <message>
+        <location line="+6"/>
+        <source>Going online. The IDE cannot know whether the PLC runs the program shown: compare by reading devices</source>
+        <translation>Connessione online. L&apos;IDE non può sapere se il PLC esegue il programma mostrato: confrontare leggendo gli operandi</translation>
+    </message>
+    <message>
+        <location line="+9"/>
+        <source>Offline</source>
+        <translation>Offline</translation>
+    </message>
+    <message>
+        <location line="+12"/>
+        <source>Go &amp;Offline</source>
+        <translation>Vai &amp;offline</translation>
     </message>
 </context>
 <context>

@@ -266,8 +266,9 @@ void MainWindow::buildActions() {
         ->setShortcut(QKeySequence::ZoomOut);
     view->addAction(tr("&Check Program"), this, [this] { refreshFromDocument(); })
         ->setShortcut(Qt::Key_F4);
-    addPanelActions(view);    // main_window_panels.cpp
-    buildSimulationMenu(bar); // main_window_simulation.cpp
+    addPanelActions(view);      // main_window_panels.cpp
+    buildSimulationMenu(bar);   // main_window_simulation.cpp
+    buildOnlineMenu(bar, view); // main_window_online.cpp
 
     QMenu *language = menuBar()->addMenu(tr("&Language"));
     auto *group = new QActionGroup(language);
