@@ -1721,7 +1721,7 @@ Editor di schemi ladder e liste istruzioni per %2.</translation>
     <message>
         <location line="+2"/>
         <source>&amp;Online</source>
-        <translation>&amp;Online</translation>
+        <translation>&amp;In linea</translation>
     </message>
     <message>
         <location line="+12"/>

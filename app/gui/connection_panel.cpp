@@ -157,6 +157,9 @@ void ConnectionPanel::build() {
     form->setFieldGrowthPolicy(QFormLayout::AllNonFixedFieldsGrow);
     m_protocol = new QComboBox;
     m_protocol->setObjectName(QStringLiteral("connectionProtocol"));
+    // The dock may be narrow: the combos take the width they are given.
+    m_protocol->setSizeAdjustPolicy(QComboBox::AdjustToMinimumContentsLengthWithIcon);
+    m_protocol->setMinimumContentsLength(8);
     m_protocolLabel = new QLabel;
     form->addRow(m_protocolLabel, m_protocol);
     auto *via = new QHBoxLayout;
@@ -188,7 +191,6 @@ void ConnectionPanel::build() {
     portRow->addWidget(m_refresh);
     m_portLabel = new QLabel;
     serialForm->addRow(m_portLabel, portRow);
-    auto *lineRow = new QHBoxLayout;
     m_baud = new QComboBox;
     m_baud->setObjectName(QStringLiteral("connectionBaud"));
     for (int b : kBauds)
@@ -198,11 +200,9 @@ void ConnectionPanel::build() {
     for (const char *f : kFrames)
         m_frame->addItem(QString::fromLatin1(f));
     m_frameLabel = new QLabel;
-    lineRow->addWidget(m_baud, 1);
-    lineRow->addWidget(m_frameLabel);
-    lineRow->addWidget(m_frame);
     m_baudLabel = new QLabel;
-    serialForm->addRow(m_baudLabel, lineRow);
+    serialForm->addRow(m_baudLabel, m_baud);
+    serialForm->addRow(m_frameLabel, m_frame);
     m_viaStack->addWidget(serial);
     auto *tcp = new QWidget;
     auto *tcpForm = new QFormLayout(tcp);
@@ -220,7 +220,6 @@ void ConnectionPanel::build() {
     m_viaStack->addWidget(tcp);
     form->addRow(m_viaStack);
 
-    auto *numbers = new QHBoxLayout;
     m_station = new QSpinBox;
     m_station->setObjectName(QStringLiteral("connectionStation"));
     m_station->setRange(0, 247);
@@ -237,10 +236,8 @@ void ConnectionPanel::build() {
     m_timeoutLabel = new QLabel;
     m_retriesLabel = new QLabel;
     form->addRow(m_stationLabel, m_station);
-    numbers->addWidget(m_timeout, 1);
-    numbers->addWidget(m_retriesLabel);
-    numbers->addWidget(m_retries);
-    form->addRow(m_timeoutLabel, numbers);
+    form->addRow(m_timeoutLabel, m_timeout);
+    form->addRow(m_retriesLabel, m_retries);
     layout->addWidget(m_settingsBox);
 
     auto *buttons = new QHBoxLayout;
@@ -289,6 +286,7 @@ void ConnectionPanel::build() {
     m_traffic->setLineWrapMode(QPlainTextEdit::NoWrap);
     m_traffic->setMaximumBlockCount(kTrafficLines);
     m_traffic->setFont(QFontDatabase::systemFont(QFontDatabase::FixedFont));
+    m_traffic->setMinimumHeight(m_traffic->fontMetrics().lineSpacing() * 8);
     trafficLayout->addWidget(m_traffic);
     layout->addWidget(m_trafficBox, 1);
 
@@ -709,6 +707,9 @@ void ConnectionPanel::updateState() {
     m_connect->setEnabled(canConnect());
     m_testButton->setEnabled(canConnect() && !online && !m_test);
     m_settingsBox->setEnabled(canConnect() && !online);
+    // Online the settings cannot change: the state names the port and the PLC, and the room
+    // goes to the figures and the traffic.
+    m_settingsBox->setVisible(!online);
     m_state->setText(stateText());
     QString colour;
     if (m_session) {

@@ -11,6 +11,7 @@
 #include <QMenu>
 #include <QMenuBar>
 #include <QMessageBox>
+#include <QScrollArea>
 #include <QStatusBar>
 #include <QStyle>
 #include <QToolBar>
@@ -35,8 +36,18 @@ void MainWindow::setupOnline() {
     m_connectionPanel = new ConnectionPanel;
     auto *dock = new QDockWidget(this);
     dock->setObjectName(QStringLiteral("connectionDock"));
-    dock->setWidget(m_connectionPanel);
+    // Scrolled: on a 1366x768 screen the settings, the figures and the traffic log must never
+    // make the window taller than the screen.
+    auto *scroll = new QScrollArea;
+    scroll->setWidgetResizable(true);
+    scroll->setFrameShape(QFrame::NoFrame);
+    scroll->setHorizontalScrollBarPolicy(Qt::ScrollBarAlwaysOff); // the texts wrap instead
+    scroll->setWidget(m_connectionPanel);
+    dock->setWidget(scroll);
     addDockWidget(Qt::RightDockWidgetArea, dock);
+    // A tab beside the inputs and outputs: each gets the whole height.
+    if (auto *io = findChild<QDockWidget *>(QStringLiteral("ioDock")))
+        tabifyDockWidget(io, dock);
     dock->hide(); // View > Connection, or Online > Go Online, shows it
     const auto refreshTarget = [this] {
         const model::ModelVariant *variant = m_document->modelVariant();
@@ -138,6 +149,10 @@ void MainWindow::onlineSessionChanged(comms::OnlineSession *session) {
     if (session) {
         setMonitorSource(session, MonitorOrigin::Online);
         setPanelsSource(session);
+        // The panels' first showing may put the inputs and outputs over the connection tab.
+        if (auto *dock = findChild<QDockWidget *>(QStringLiteral("connectionDock")))
+            if (dock->isVisible())
+                dock->raise();
         connect(session, &comms::OnlineSession::connectionStateChanged, this,
                 [this, session](comms::OnlineSession::ConnectionState state) {
                     using State = comms::OnlineSession::ConnectionState;
