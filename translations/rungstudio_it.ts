@@ -386,7 +386,7 @@ Codice di uscita: 0 nessun errore, 1 il programma contiene errori, 2 errore di u
     <message>
         <location line="+1"/>
         <source>Clear</source>
-        <translation>Cancella</translation>
+        <translation>Svuota</translation>
     </message>
     <message>
         <location line="+1"/>

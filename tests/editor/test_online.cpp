@@ -6,6 +6,7 @@
 
 #include "app/gui/connection_panel.h"
 #include "app/gui/main_window.h"
+#include "app/gui/simulation_controller.h"
 #include "comms/driver/online_session.h"
 #include "editor/ladder_view.h"
 #include "model/target/address.h"
@@ -333,7 +334,58 @@ TEST_P(Online, APulledCableShowsAtOnceKeepsStaleValuesAndReconnectsByItself) {
         << panel->statisticsText().toStdString();
 }
 
+// An online PLC and a simulation never feed the views together (the window's side, the same
+// for every protocol: tried with one).
+class OnlineAndSimulation : public Online {};
+
+TEST_P(OnlineAndSimulation, GoingOnlinePausesTheSimulationAndSimulatingOffersToGoOffline) {
+    using RunState = model::MonitorSource::RunState;
+    app::SimulationController *simulation = window.simulation();
+    ASSERT_TRUE(simulation->run());
+    ASSERT_EQ(window.monitorSource(), simulation->monitorSource());
+    // Declined: the simulation goes on, nothing connects.
+    panel->setConfirmer([this](const QString &, const QString &text) {
+        questions << text;
+        return false;
+    });
+    action("onlineConnect")->trigger();
+    EXPECT_EQ(session(), nullptr);
+    ASSERT_EQ(questions.size(), 1);
+    EXPECT_TRUE(questions[0].contains(QStringLiteral("simulation"))) << questions[0].toStdString();
+    EXPECT_EQ(simulation->runState(), RunState::Running);
+    // Accepted: paused, and the views show the PLC.
+    panel->setConfirmer([this](const QString &, const QString &text) {
+        questions << text;
+        return true;
+    });
+    goOnline();
+    EXPECT_TRUE(
+        QTest::qWaitFor([&] { return simulation->runState() == RunState::Paused; }, kPatienceMs));
+    EXPECT_EQ(window.monitorSource(), session());
+    // Run while online: paused again, and the offer to go offline; declined keeps the PLC.
+    panel->setConfirmer([this](const QString &, const QString &text) {
+        questions << text;
+        return false;
+    });
+    simulation->run();
+    EXPECT_TRUE(
+        QTest::qWaitFor([&] { return simulation->runState() == RunState::Paused; }, kPatienceMs));
+    EXPECT_TRUE(questions.last().contains(QStringLiteral("Go offline to simulate")))
+        << questions.last().toStdString();
+    EXPECT_NE(session(), nullptr);
+    EXPECT_EQ(window.monitorSource(), session());
+    // Accepted: offline, and the simulation runs and feeds the views again.
+    panel->setConfirmer([](const QString &, const QString &) { return true; });
+    simulation->run();
+    EXPECT_TRUE(QTest::qWaitFor([&] { return session() == nullptr; }, kPatienceMs));
+    EXPECT_TRUE(
+        QTest::qWaitFor([&] { return simulation->runState() == RunState::Running; }, kPatienceMs));
+    EXPECT_EQ(window.monitorSource(), simulation->monitorSource());
+}
+
 INSTANTIATE_TEST_SUITE_P(VirtualPlcOnAPty, Online, ::testing::ValuesIn(kCases),
+                         [](const auto &info) { return std::string(info.param.name); });
+INSTANTIATE_TEST_SUITE_P(VirtualPlcOnAPty, OnlineAndSimulation, ::testing::Values(kCases[0]),
                          [](const auto &info) { return std::string(info.param.name); });
 
 // Without a PLC on the line: the test says what it found (nothing) without hanging the UI.
