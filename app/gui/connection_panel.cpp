@@ -721,6 +721,10 @@ void ConnectionPanel::updateState() {
         case State::Failed:
             colour = QStringLiteral("#b00020");
             break;
+        case State::Connecting: // first contact failed: the session tries again
+            if (!m_session->errorText().isEmpty())
+                colour = QStringLiteral("#b00020");
+            break;
         default:
             break;
         }

@@ -219,6 +219,18 @@ TEST_P(Online, TheViewsShowThePlcAndFollowItsInputs) {
     EXPECT_TRUE(panel->trafficLog()->toPlainText().contains(QStringLiteral("PC>PLC")));
     EXPECT_TRUE(panel->trafficLog()->toPlainText().contains(QStringLiteral("PLC>PC")));
     EXPECT_TRUE(panel->statisticsText().contains(QStringLiteral("Round trip")));
+    // Save... writes the log as shown, a record a line.
+    const QString saved = dir.filePath(QStringLiteral("traffic.txt"));
+    QString error;
+    ASSERT_TRUE(panel->saveTraffic(saved, &error)) << error.toStdString();
+    QFile log(saved);
+    ASSERT_TRUE(log.open(QIODevice::ReadOnly));
+    const QString text = QString::fromUtf8(log.readAll());
+    EXPECT_TRUE(
+        text.startsWith(panel->trafficLog()->toPlainText().section(QLatin1Char('\n'), 0, 0)));
+    EXPECT_TRUE(text.contains(QStringLiteral(" PC>PLC ")));
+    EXPECT_FALSE(panel->saveTraffic(dir.filePath(QStringLiteral("no/such/dir/t.txt")), &error));
+    EXPECT_TRUE(error.contains(QStringLiteral("no/such/dir"))) << error.toStdString();
 
     // Offline: the simulation's (none) again, and the window says so.
     action("onlineConnect")->trigger();
@@ -442,6 +454,26 @@ TEST(OnlinePanel, AVpcIsListedAndSaysWhatToDoInstead) {
     EXPECT_TRUE(note->text().contains(QStringLiteral("rungstudio-cli record")));
     EXPECT_FALSE(panel->connectToPlc());
     EXPECT_FALSE(window.findChild<QAction *>(QStringLiteral("onlineConnect"))->isEnabled());
+}
+
+TEST(OnlinePanel, ThePortIsRememberedForTheNextWindow) {
+    QString error;
+    auto pty = comms::PtyTransport::createPair(&error);
+    ASSERT_TRUE(pty) << error.toStdString();
+    {
+        app::MainWindow window;
+        window.newProject(model::Target::get(model::Family::Pl110), QString());
+        comms::ConnectionSettings s = comms::defaultSettings(comms::ProtocolKind::ModbusRtu);
+        s.port = pty->peerPath();
+        s.link.timeoutMs = 50;
+        s.link.retries = 0;
+        window.connectionPanel()->setSettings(s);
+        ASSERT_TRUE(window.connectionPanel()->connectToPlc());
+        window.connectionPanel()->disconnectFromPlc();
+    }
+    app::MainWindow window;
+    window.newProject(model::Target::get(model::Family::Pl110), QString());
+    EXPECT_EQ(window.connectionPanel()->settings().port, pty->peerPath());
 }
 
 TEST(OnlinePanel, LineSettingsStartFromTheProtocolsDefaults) {
