@@ -394,7 +394,7 @@ Kilépési kód: 0 nincs hiba, 1 a programban hiba van, 2 használati vagy I/O h
         <translation>Mentés...</translation>
     </message>
     <message>
-        <location line="+18"/>
+        <location line="+19"/>
         <source>PLC: %1</source>
         <translation>PLC: %1</translation>
     </message>
@@ -404,12 +404,12 @@ Kilépési kód: 0 nincs hiba, 1 a programban hiba van, 2 használati vagy I/O h
         <translation>PLC: %1, modell: %2</translation>
     </message>
     <message>
-        <location line="+5"/>
+        <location line="+4"/>
         <source>The link protocol of the %1 is not published, so the IDE cannot talk to it. Instead: export the program as a console listing (File &gt; Export Instruction List) and load it with the PLC&apos;s own tool; to study the link, capture its traffic with &apos;rungstudio-cli record&apos;.</source>
         <translation>A(z) %1 kommunikációs protokollja nem nyilvános, ezért az IDE nem tud vele kapcsolatot teremteni. Helyette: exportálja a programot konzollistaként (Fájl &gt; Utasításlista exportálása), és töltse be a PLC saját eszközével; a kapcsolat tanulmányozásához rögzítse az adatforgalmát a &apos;rungstudio-cli record&apos; paranccsal.</translation>
     </message>
     <message>
-        <location line="+131"/>
+        <location line="+133"/>
         <source>Change the PLC&apos;s Memory</source>
         <translation>A PLC memóriájának módosítása</translation>
     </message>
@@ -424,12 +424,12 @@ Ez egy valódi PLC memóriáját módosítja, amely gépet vezérelhet. Kapcsola
     </message>
     <message>
         <location line="+16"/>
-        <location line="+106"/>
+        <location line="+105"/>
         <source>Choose the serial port the PLC is on (or type its path)</source>
         <translation>Válassza ki a soros portot, amelyen a PLC van (vagy írja be az elérési útját)</translation>
     </message>
     <message>
-        <location line="-77"/>
+        <location line="-76"/>
         <source>%1: done, the PLC acknowledged it</source>
         <translation>%1: kész, a PLC nyugtázta</translation>
     </message>
@@ -464,7 +464,7 @@ Ez egy valódi PLC memóriáját módosítja, amely gépet vezérelhet. Kapcsola
         <translation>A PLC leállítja a programja futtatását.</translation>
     </message>
     <message>
-        <location line="+4"/>
+        <location line="+3"/>
         <source>PLC Mode</source>
         <translation>PLC üzemmód</translation>
     </message>
@@ -540,7 +540,7 @@ Ez egy valódi PLC memóriáját módosítja, amely gépet vezérelhet. Kapcsola
         <translation>Offline: ehhez a PLC-hez nincs kapcsolat</translation>
     </message>
     <message>
-        <location line="+6"/>
+        <location line="+7"/>
         <source>Connecting to %1...</source>
         <translation>Kapcsolódás ehhez: %1...</translation>
     </message>
@@ -550,7 +550,7 @@ Ez egy valódi PLC memóriáját módosítja, amely gépet vezérelhet. Kapcsola
         <translation>Kapcsolódás ehhez: %1: %2</translation>
     </message>
     <message>
-        <location line="+3"/>
+        <location line="+2"/>
         <source>Online: %1</source>
         <translation>Online: %1</translation>
     </message>
@@ -577,14 +577,14 @@ Trying again; the values shown are the last read, marked stale.</source>
         <translation>Kapcsolódás</translation>
     </message>
     <message>
-        <location line="+29"/>
+        <location line="+36"/>
         <source>Errors %1, retries %2, timeouts %3, refused %4, reconnects %5
 Round trip %6 ms (mean %7, max %8); refresh %9 ms, %10 frame(s)</source>
         <translation>Hibák: %1, ismétlések: %2, időtúllépések: %3, elutasítva: %4, újracsatlakozások: %5
 Válaszidő: %6 ms (átlag %7, max. %8); frissítés: %9 ms, %10 keret</translation>
     </message>
     <message>
-        <location line="+27"/>
+        <location line="+31"/>
         <source>PC&gt;PLC</source>
         <extracomment>the direction of bytes in the traffic log: from the PC to the PLC, and back</extracomment>
         <translation>PC&gt;PLC</translation>
@@ -921,6 +921,11 @@ Ctrl+Z / Ctrl+Y: visszavonás / mégis, Ctrl+görgő: nagyítás, F4: a program 
         <translation>Szimuláció: F10 futtatás, F11 szünet, Shift+F11 leállítás, F12 egy ciklus, Ctrl+Shift+F12 ki-bekapcsolás</translation>
     </message>
     <message>
+        <location line="+3"/>
+        <source>Online: Ctrl+W go online / offline, Ctrl+1 STOP (PROGRAM), Ctrl+3 MONITOR, Ctrl+4 RUN</source>
+        <translation>Online: Ctrl+W online kapcsolódás / bontás, Ctrl+1 STOP (PROGRAM), Ctrl+3 MONITOR, Ctrl+4 RUN</translation>
+    </message>
+    <message>
         <location line="+5"/>
         <source>Rung Studio %1
 Ladder and instruction-list editor for %2.</source>
@@ -938,7 +943,7 @@ Létradiagram- és utasításlista-szerkesztő a következő PLC-khez: %2.</tran
         <translation>&amp;Mégis</translation>
     </message>
     <message>
-        <location line="-177"/>
+        <location line="-180"/>
         <source>Select</source>
         <translation>Kijelölés</translation>
     </message>
@@ -1075,7 +1080,7 @@ Létradiagram- és utasításlista-szerkesztő a következő PLC-khez: %2.</tran
         <translation>Billentyűzet</translation>
     </message>
     <message>
-        <location line="+14"/>
+        <location line="+17"/>
         <source>&amp;About Rung Studio</source>
         <translation>A Rung Studio &amp;névjegye</translation>
     </message>
@@ -1215,7 +1220,7 @@ Létradiagram- és utasításlista-szerkesztő a következő PLC-khez: %2.</tran
     </message>
     <message>
         <location line="+21"/>
-        <location filename="../app/gui/main_window_online.cpp" line="+57"/>
+        <location filename="../app/gui/main_window_online.cpp" line="+69"/>
         <source>Cannot save</source>
         <translation>A mentés nem sikerült</translation>
     </message>
@@ -1674,7 +1679,7 @@ Létradiagram- és utasításlista-szerkesztő a következő PLC-khez: %2.</tran
         <translation>Idődiagram</translation>
     </message>
     <message>
-        <location filename="../app/gui/main_window_online.cpp" line="-4"/>
+        <location filename="../app/gui/main_window_online.cpp" line="-3"/>
         <source>Save Traffic Log</source>
         <translation>Adatforgalom-napló mentése</translation>
     </message>
@@ -1684,7 +1689,7 @@ Létradiagram- és utasításlista-szerkesztő a következő PLC-khez: %2.</tran
         <translation>Szövegfájlok (*.txt)</translation>
     </message>
     <message>
-        <location line="+11"/>
+        <location line="+10"/>
         <source>Go Online</source>
         <translation>Online kapcsolódás</translation>
     </message>
@@ -1694,7 +1699,7 @@ Létradiagram- és utasításlista-szerkesztő a következő PLC-khez: %2.</tran
         <translation>A szimuláció fut. Az online kapcsolódás szünetelteti: a nézetek ezután a PLC értékeit mutatják. Kapcsolódik?</translation>
     </message>
     <message>
-        <location line="+12"/>
+        <location line="+11"/>
         <source>Simulate</source>
         <translation>Szimuláció</translation>
     </message>
@@ -1719,13 +1724,13 @@ Létradiagram- és utasításlista-szerkesztő a következő PLC-khez: %2.</tran
         <translation>&amp;Online</translation>
     </message>
     <message>
-        <location line="+12"/>
-        <location line="+70"/>
+        <location line="+13"/>
+        <location line="+71"/>
         <source>Go &amp;Online</source>
         <translation>&amp;Online kapcsolódás</translation>
     </message>
     <message>
-        <location line="-59"/>
+        <location line="-61"/>
         <source>&amp;Test Connection</source>
         <translation>Kapcsolat &amp;tesztelése</translation>
     </message>
@@ -1750,7 +1755,7 @@ Létradiagram- és utasításlista-szerkesztő a következő PLC-khez: %2.</tran
         <translation>Minden &amp;kényszerítés feloldása a PLC-ben</translation>
     </message>
     <message>
-        <location line="+20"/>
+        <location line="+23"/>
         <source>Online: %1</source>
         <translation>Online: %1</translation>
     </message>
@@ -1765,7 +1770,7 @@ Létradiagram- és utasításlista-szerkesztő a következő PLC-khez: %2.</tran
         <translation>Offline</translation>
     </message>
     <message>
-        <location line="+12"/>
+        <location line="+11"/>
         <source>Go &amp;Offline</source>
         <translation>&amp;Offline (kapcsolat bontása)</translation>
     </message>

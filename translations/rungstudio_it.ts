@@ -394,7 +394,7 @@ Codice di uscita: 0 nessun errore, 1 il programma contiene errori, 2 errore di u
         <translation>Salva...</translation>
     </message>
     <message>
-        <location line="+18"/>
+        <location line="+19"/>
         <source>PLC: %1</source>
         <translation>PLC: %1</translation>
     </message>
@@ -404,12 +404,12 @@ Codice di uscita: 0 nessun errore, 1 il programma contiene errori, 2 errore di u
         <translation>PLC: %1, modello %2</translation>
     </message>
     <message>
-        <location line="+5"/>
+        <location line="+4"/>
         <source>The link protocol of the %1 is not published, so the IDE cannot talk to it. Instead: export the program as a console listing (File &gt; Export Instruction List) and load it with the PLC&apos;s own tool; to study the link, capture its traffic with &apos;rungstudio-cli record&apos;.</source>
         <translation>Il protocollo di comunicazione del %1 non è pubblicato, quindi l&apos;IDE non può dialogare con esso. In alternativa: esportare il programma come listato per console (File &gt; Esporta lista istruzioni) e caricarlo con lo strumento proprio del PLC; per studiare il collegamento, registrarne il traffico con &apos;rungstudio-cli record&apos;.</translation>
     </message>
     <message>
-        <location line="+131"/>
+        <location line="+133"/>
         <source>Change the PLC&apos;s Memory</source>
         <translation>Modifica della memoria del PLC</translation>
     </message>
@@ -424,12 +424,12 @@ Questo modifica la memoria di un PLC reale, che potrebbe comandare una macchina.
     </message>
     <message>
         <location line="+16"/>
-        <location line="+106"/>
+        <location line="+105"/>
         <source>Choose the serial port the PLC is on (or type its path)</source>
         <translation>Scegliere la porta seriale del PLC (o digitarne il percorso)</translation>
     </message>
     <message>
-        <location line="-77"/>
+        <location line="-76"/>
         <source>%1: done, the PLC acknowledged it</source>
         <translation>%1: fatto, il PLC ha confermato</translation>
     </message>
@@ -464,7 +464,7 @@ Questo modifica la memoria di un PLC reale, che potrebbe comandare una macchina.
         <translation>Il PLC smette di eseguire il suo programma.</translation>
     </message>
     <message>
-        <location line="+4"/>
+        <location line="+3"/>
         <source>PLC Mode</source>
         <translation>Modo del PLC</translation>
     </message>
@@ -540,7 +540,7 @@ Questo modifica la memoria di un PLC reale, che potrebbe comandare una macchina.
         <translation>Offline: nessun collegamento a questo PLC</translation>
     </message>
     <message>
-        <location line="+6"/>
+        <location line="+7"/>
         <source>Connecting to %1...</source>
         <translation>Connessione a %1...</translation>
     </message>
@@ -550,7 +550,7 @@ Questo modifica la memoria di un PLC reale, che potrebbe comandare una macchina.
         <translation>Connessione a %1: %2</translation>
     </message>
     <message>
-        <location line="+3"/>
+        <location line="+2"/>
         <source>Online: %1</source>
         <translation>Online: %1</translation>
     </message>
@@ -577,14 +577,14 @@ Nuovo tentativo in corso; i valori mostrati sono gli ultimi letti, segnati come 
         <translation>Connetti</translation>
     </message>
     <message>
-        <location line="+29"/>
+        <location line="+36"/>
         <source>Errors %1, retries %2, timeouts %3, refused %4, reconnects %5
 Round trip %6 ms (mean %7, max %8); refresh %9 ms, %10 frame(s)</source>
         <translation>Errori %1, tentativi %2, timeout %3, rifiutati %4, riconnessioni %5
 Andata e ritorno %6 ms (media %7, max %8); aggiornamento %9 ms, %10 frame</translation>
     </message>
     <message>
-        <location line="+27"/>
+        <location line="+31"/>
         <source>PC&gt;PLC</source>
         <extracomment>the direction of bytes in the traffic log: from the PC to the PLC, and back</extracomment>
         <translation>PC&gt;PLC</translation>
@@ -921,6 +921,11 @@ Ctrl+Z / Ctrl+Y: annulla / ripeti, Ctrl+rotellina: zoom, F4: verifica il program
         <translation>Simulazione: F10 esegui, F11 pausa, Shift+F11 stop, F12 singola scansione, Ctrl+Shift+F12 spegni e riaccendi</translation>
     </message>
     <message>
+        <location line="+3"/>
+        <source>Online: Ctrl+W go online / offline, Ctrl+1 STOP (PROGRAM), Ctrl+3 MONITOR, Ctrl+4 RUN</source>
+        <translation>In linea: Ctrl+W vai online / offline, Ctrl+1 STOP (PROGRAM), Ctrl+3 MONITOR, Ctrl+4 RUN</translation>
+    </message>
+    <message>
         <location line="+5"/>
         <source>Rung Studio %1
 Ladder and instruction-list editor for %2.</source>
@@ -938,7 +943,7 @@ Editor di schemi ladder e liste istruzioni per %2.</translation>
         <translation>&amp;Ripeti</translation>
     </message>
     <message>
-        <location line="-177"/>
+        <location line="-180"/>
         <source>Select</source>
         <translation>Seleziona</translation>
     </message>
@@ -1075,7 +1080,7 @@ Editor di schemi ladder e liste istruzioni per %2.</translation>
         <translation>Tastiera</translation>
     </message>
     <message>
-        <location line="+14"/>
+        <location line="+17"/>
         <source>&amp;About Rung Studio</source>
         <translation>&amp;Informazioni su Rung Studio</translation>
     </message>
@@ -1217,7 +1222,7 @@ Editor di schemi ladder e liste istruzioni per %2.</translation>
     </message>
     <message>
         <location line="+21"/>
-        <location filename="../app/gui/main_window_online.cpp" line="+57"/>
+        <location filename="../app/gui/main_window_online.cpp" line="+69"/>
         <source>Cannot save</source>
         <translation>Impossibile salvare</translation>
     </message>
@@ -1679,7 +1684,7 @@ Editor di schemi ladder e liste istruzioni per %2.</translation>
         <translation>Diagramma temporale</translation>
     </message>
     <message>
-        <location filename="../app/gui/main_window_online.cpp" line="-4"/>
+        <location filename="../app/gui/main_window_online.cpp" line="-3"/>
         <source>Save Traffic Log</source>
         <translation>Salva il registro del traffico</translation>
     </message>
@@ -1689,7 +1694,7 @@ Editor di schemi ladder e liste istruzioni per %2.</translation>
         <translation>File di testo (*.txt)</translation>
     </message>
     <message>
-        <location line="+11"/>
+        <location line="+10"/>
         <source>Go Online</source>
         <translation>Vai online</translation>
     </message>
@@ -1699,7 +1704,7 @@ Editor di schemi ladder e liste istruzioni per %2.</translation>
         <translation>La simulazione è in esecuzione. Andare online la mette in pausa: le viste mostrano poi i valori del PLC. Andare online?</translation>
     </message>
     <message>
-        <location line="+12"/>
+        <location line="+11"/>
         <source>Simulate</source>
         <translation>Simula</translation>
     </message>
@@ -1724,13 +1729,13 @@ Editor di schemi ladder e liste istruzioni per %2.</translation>
         <translation>&amp;In linea</translation>
     </message>
     <message>
-        <location line="+12"/>
-        <location line="+70"/>
+        <location line="+13"/>
+        <location line="+71"/>
         <source>Go &amp;Online</source>
         <translation>Vai &amp;online</translation>
     </message>
     <message>
-        <location line="-59"/>
+        <location line="-61"/>
         <source>&amp;Test Connection</source>
         <translation>&amp;Test della connessione</translation>
     </message>
@@ -1755,7 +1760,7 @@ Editor di schemi ladder e liste istruzioni per %2.</translation>
         <translation>Rilascia tutte le &amp;forzature nel PLC</translation>
     </message>
     <message>
-        <location line="+20"/>
+        <location line="+23"/>
         <source>Online: %1</source>
         <translation>Online: %1</translation>
     </message>
@@ -1770,7 +1775,7 @@ Editor di schemi ladder e liste istruzioni per %2.</translation>
         <translation>Offline</translation>
     </message>
     <message>
-        <location line="+12"/>
+        <location line="+11"/>
         <source>Go &amp;Offline</source>
         <translation>Vai &amp;offline</translation>
     </message>

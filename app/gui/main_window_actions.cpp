@@ -307,7 +307,10 @@ void MainWindow::buildActions() {
                     .arg(examples.join(QStringLiteral(", "))) +
                 QLatin1Char('\n') +
                 tr("Simulation: F10 run, F11 pause, Shift+F11 stop, F12 single scan, "
-                   "Ctrl+Shift+F12 power cycle"));
+                   "Ctrl+Shift+F12 power cycle") +
+                QLatin1Char('\n') +
+                tr("Online: Ctrl+W go online / offline, Ctrl+1 STOP (PROGRAM), Ctrl+3 MONITOR, "
+                   "Ctrl+4 RUN"));
     });
     help->addAction(tr("&About Rung Studio"), this, [this] {
         messageBox(QMessageBox::Information, this, tr("About Rung Studio"),
