@@ -332,6 +332,9 @@ void ConnectionPanel::retranslate() {
     m_record->setText(tr("Record"));
     m_clear->setText(tr("Clear"));
     m_save->setText(tr("Save..."));
+    for (int i = 0; i < m_protocol->count(); ++i)
+        m_protocol->setItemText(i,
+                                comms::protocolName(ProtocolKind(m_protocol->itemData(i).toInt())));
     if (m_target)
         setTarget(*m_target, m_modelName); // the texts that name the target
     updateState();
