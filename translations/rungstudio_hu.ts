@@ -295,8 +295,8 @@ Kilépési kód: 0 nincs hiba, 1 a programban hiba van, 2 használati vagy I/O h
     </message>
     <message>
         <location line="+225"/>
-        <source>Connection</source>
-        <translation>Kapcsolat</translation>
+        <source>Settings</source>
+        <translation>Beállítások</translation>
     </message>
     <message>
         <location line="+1"/>
@@ -394,7 +394,7 @@ Kilépési kód: 0 nincs hiba, 1 a programban hiba van, 2 használati vagy I/O h
         <translation>Mentés...</translation>
     </message>
     <message>
-        <location line="+19"/>
+        <location line="+22"/>
         <source>PLC: %1</source>
         <translation>PLC: %1</translation>
     </message>
@@ -1220,7 +1220,7 @@ Létradiagram- és utasításlista-szerkesztő a következő PLC-khez: %2.</tran
     </message>
     <message>
         <location line="+21"/>
-        <location filename="../app/gui/main_window_online.cpp" line="+69"/>
+        <location filename="../app/gui/main_window_online.cpp" line="+70"/>
         <source>Cannot save</source>
         <translation>A mentés nem sikerült</translation>
     </message>
@@ -1719,7 +1719,7 @@ Létradiagram- és utasításlista-szerkesztő a következő PLC-khez: %2.</tran
         <translation>Kapcsolat</translation>
     </message>
     <message>
-        <location line="+2"/>
+        <location line="+7"/>
         <source>&amp;Online</source>
         <translation>&amp;Online</translation>
     </message>

@@ -295,8 +295,8 @@ Codice di uscita: 0 nessun errore, 1 il programma contiene errori, 2 errore di u
     </message>
     <message>
         <location line="+225"/>
-        <source>Connection</source>
-        <translation>Connessione</translation>
+        <source>Settings</source>
+        <translation>Impostazioni</translation>
     </message>
     <message>
         <location line="+1"/>
@@ -394,7 +394,7 @@ Codice di uscita: 0 nessun errore, 1 il programma contiene errori, 2 errore di u
         <translation>Salva...</translation>
     </message>
     <message>
-        <location line="+19"/>
+        <location line="+22"/>
         <source>PLC: %1</source>
         <translation>PLC: %1</translation>
     </message>
@@ -1222,7 +1222,7 @@ Editor di schemi ladder e liste istruzioni per %2.</translation>
     </message>
     <message>
         <location line="+21"/>
-        <location filename="../app/gui/main_window_online.cpp" line="+69"/>
+        <location filename="../app/gui/main_window_online.cpp" line="+70"/>
         <source>Cannot save</source>
         <translation>Impossibile salvare</translation>
     </message>
@@ -1724,7 +1724,7 @@ Editor di schemi ladder e liste istruzioni per %2.</translation>
         <translation>Connessione</translation>
     </message>
     <message>
-        <location line="+2"/>
+        <location line="+7"/>
         <source>&amp;Online</source>
         <translation>&amp;In linea</translation>
     </message>

@@ -311,7 +311,7 @@ void ConnectionPanel::build() {
 }
 
 void ConnectionPanel::retranslate() {
-    m_settingsBox->setTitle(tr("Connection"));
+    m_settingsBox->setTitle(tr("Settings"));
     m_protocolLabel->setText(tr("Protocol:"));
     m_viaSerial->setText(tr("Serial port"));
     m_viaTcp->setText(tr("TCP"));

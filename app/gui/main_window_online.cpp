@@ -12,6 +12,7 @@
 #include <QMenuBar>
 #include <QMessageBox>
 #include <QScrollArea>
+#include <QScrollBar>
 #include <QStatusBar>
 #include <QStyle>
 #include <QToolBar>
@@ -100,6 +101,12 @@ void MainWindow::setupOnline() {
 void MainWindow::buildOnlineMenu(QToolBar *bar, QMenu *view) {
     auto *dock = findChild<QDockWidget *>(QStringLiteral("connectionDock"));
     dock->setWindowTitle(tr("Connection"));
+    // Never narrower than its fields and buttons in this language (the texts wrap, the fields
+    // do not).
+    if (auto *scroll = qobject_cast<QScrollArea *>(dock->widget()))
+        scroll->setMinimumWidth(m_connectionPanel->minimumSizeHint().width() +
+                                scroll->verticalScrollBar()->sizeHint().width() +
+                                2 * style()->pixelMetric(QStyle::PM_LayoutRightMargin));
     view->addAction(dock->toggleViewAction());
     QMenu *menu = menuBar()->addMenu(tr("&Online"));
     const auto add = [this, menu](const char *name, const QString &text, const QKeySequence &key,
