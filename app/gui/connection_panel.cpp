@@ -155,6 +155,8 @@ void ConnectionPanel::build() {
     m_settingsBox = new QGroupBox;
     auto *form = new QFormLayout(m_settingsBox);
     form->setFieldGrowthPolicy(QFormLayout::AllNonFixedFieldsGrow);
+    // A narrow dock (a long Hungarian label) puts the label above its field.
+    form->setRowWrapPolicy(QFormLayout::WrapLongRows);
     m_protocol = new QComboBox;
     m_protocol->setObjectName(QStringLiteral("connectionProtocol"));
     // The dock may be narrow: the combos take the width they are given.
@@ -178,6 +180,7 @@ void ConnectionPanel::build() {
     auto *serialForm = new QFormLayout(serial);
     serialForm->setContentsMargins(0, 0, 0, 0);
     serialForm->setFieldGrowthPolicy(QFormLayout::AllNonFixedFieldsGrow);
+    serialForm->setRowWrapPolicy(QFormLayout::WrapLongRows);
     auto *portRow = new QHBoxLayout;
     m_port = new QComboBox;
     m_port->setObjectName(QStringLiteral("connectionPort"));
@@ -207,6 +210,7 @@ void ConnectionPanel::build() {
     auto *tcp = new QWidget;
     auto *tcpForm = new QFormLayout(tcp);
     tcpForm->setContentsMargins(0, 0, 0, 0);
+    tcpForm->setRowWrapPolicy(QFormLayout::WrapLongRows);
     m_host = new QLineEdit(QStringLiteral("127.0.0.1"));
     m_host->setObjectName(QStringLiteral("connectionHost"));
     m_tcpPort = new QSpinBox;

@@ -27,6 +27,15 @@
 namespace rung::app {
 
 namespace {
+// Never narrower than the panel's fields and buttons as they are now (the texts wrap, the
+// fields do not; online the settings are hidden and the dock may be narrower).
+void fitConnectionDock(QDockWidget *dock, ConnectionPanel *panel) {
+    if (auto *scroll = qobject_cast<QScrollArea *>(dock->widget()))
+        scroll->setMinimumWidth(panel->minimumSizeHint().width() +
+                                scroll->verticalScrollBar()->sizeHint().width() +
+                                2 * dock->style()->pixelMetric(QStyle::PM_LayoutRightMargin));
+}
+
 bool scanning(model::MonitorSource::RunState state) {
     using State = model::MonitorSource::RunState;
     return state == State::Running || state == State::Stepping;
@@ -101,12 +110,7 @@ void MainWindow::setupOnline() {
 void MainWindow::buildOnlineMenu(QToolBar *bar, QMenu *view) {
     auto *dock = findChild<QDockWidget *>(QStringLiteral("connectionDock"));
     dock->setWindowTitle(tr("Connection"));
-    // Never narrower than its fields and buttons in this language (the texts wrap, the fields
-    // do not).
-    if (auto *scroll = qobject_cast<QScrollArea *>(dock->widget()))
-        scroll->setMinimumWidth(m_connectionPanel->minimumSizeHint().width() +
-                                scroll->verticalScrollBar()->sizeHint().width() +
-                                2 * style()->pixelMetric(QStyle::PM_LayoutRightMargin));
+    fitConnectionDock(dock, m_connectionPanel);
     view->addAction(dock->toggleViewAction());
     QMenu *menu = menuBar()->addMenu(tr("&Online"));
     const auto add = [this, menu](const char *name, const QString &text, const QKeySequence &key,
@@ -183,6 +187,8 @@ void MainWindow::onlineSessionChanged(comms::OnlineSession *session) {
         setPanelsSource(m_simulation->session());
         statusBar()->showMessage(tr("Offline"), 5000);
     }
+    if (auto *dock = findChild<QDockWidget *>(QStringLiteral("connectionDock")))
+        fitConnectionDock(dock, m_connectionPanel);
     updateOnlineActions();
 }
 
