@@ -74,6 +74,11 @@ struct Case {
     bool setsMode;    // the protocol switches RUN / STOP (not Vigor Computer Link)
 };
 
+// gtest names a failing case by its protocol, not by its bytes.
+void PrintTo(const Case &c, std::ostream *os) {
+    *os << c.name;
+}
+
 const Case kCases[] = {
     {"Vigor", "vigor", comms::ProtocolKind::VigorLink,
      "LD X0\nOUT Y0\nLD M9000\nADD D0 K1 D1\nEND\n", "X0", "Y0", "D0", "D1", 1, false, false,
