@@ -58,6 +58,7 @@ MainWindow::MainWindow(QWidget *parent)
     buildCrossReference();
     buildMonitorDocks(); // main_window_panels.cpp
     setupSimulation();
+    setupOnline(); // main_window_online.cpp
     buildActions();
 
     m_ilTimer.setSingleShot(true);

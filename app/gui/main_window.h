@@ -26,6 +26,9 @@ class QToolBar;
 namespace rung::model {
 class MonitorSource;
 }
+namespace rung::comms {
+class OnlineSession;
+}
 namespace rung::editor {
 class CrossReferenceView;
 class IlEditor;
@@ -43,6 +46,7 @@ class MonitorSource;
 
 namespace rung::app {
 
+class ConnectionPanel;
 class RecoveryFile;
 class ScanDebuggerView;
 class SimulationController;
@@ -95,6 +99,7 @@ public:
     SimulationController *simulation() const { return m_simulation; }
     SimulationPanel *simulationPanel() const { return m_simulationPanel; }
     ScanDebuggerView *scanDebugger() const { return m_scanDebugger; }
+    ConnectionPanel *connectionPanel() const { return m_connectionPanel; }
     // Sets or clears a breakpoint where the user is: the instruction list's line when it has
     // the focus, else the ladder cursor's rung (its first instruction).
     void toggleBreakpointHere();
@@ -185,6 +190,11 @@ private:
     void showStoppedAt(int instruction);
     // The instruction at the instruction list's caret (or a 1-based line), -1 for none.
     int instructionAtLine(int line) const;
+    // Online to a PLC (main_window_online.cpp).
+    void setupOnline();
+    void buildOnlineMenu(QToolBar *bar, QMenu *view);
+    void onlineSessionChanged(comms::OnlineSession *session);
+    void updateOnlineActions();
     // The origin's label in the status bar and the title (main_window_monitor.cpp).
     void updateMonitorLabel();
     // Which instruction of the program each line of the list shows, for its live values.
@@ -216,6 +226,7 @@ private:
     QLabel *m_statusHistory = nullptr;
     SimulationPanel *m_simulationPanel = nullptr;
     ScanDebuggerView *m_scanDebugger = nullptr;
+    ConnectionPanel *m_connectionPanel = nullptr;
     bool m_simulationDocksShown = false; // shown once, when a simulation first starts
     QPointer<model::MonitorSource> m_monitorSource;
     MonitorOrigin m_monitorOrigin = MonitorOrigin::Simulation;

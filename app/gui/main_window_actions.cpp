@@ -266,8 +266,9 @@ void MainWindow::buildActions() {
         ->setShortcut(QKeySequence::ZoomOut);
     view->addAction(tr("&Check Program"), this, [this] { refreshFromDocument(); })
         ->setShortcut(Qt::Key_F4);
-    addPanelActions(view);    // main_window_panels.cpp
-    buildSimulationMenu(bar); // main_window_simulation.cpp
+    addPanelActions(view);      // main_window_panels.cpp
+    buildSimulationMenu(bar);   // main_window_simulation.cpp
+    buildOnlineMenu(bar, view); // main_window_online.cpp
 
     QMenu *language = menuBar()->addMenu(tr("&Language"));
     auto *group = new QActionGroup(language);
@@ -306,7 +307,10 @@ void MainWindow::buildActions() {
                     .arg(examples.join(QStringLiteral(", "))) +
                 QLatin1Char('\n') +
                 tr("Simulation: F10 run, F11 pause, Shift+F11 stop, F12 single scan, "
-                   "Ctrl+Shift+F12 power cycle"));
+                   "Ctrl+Shift+F12 power cycle") +
+                QLatin1Char('\n') +
+                tr("Online: Ctrl+W go online / offline, Ctrl+1 STOP (PROGRAM), Ctrl+3 MONITOR, "
+                   "Ctrl+4 RUN"));
     });
     help->addAction(tr("&About Rung Studio"), this, [this] {
         messageBox(QMessageBox::Information, this, tr("About Rung Studio"),

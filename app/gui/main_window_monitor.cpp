@@ -5,6 +5,8 @@
 
 #include "main_window.h"
 
+#include "connection_panel.h"
+
 #include "editor/il_editor.h"
 #include "editor/io_panel.h"
 #include "editor/ladder_view.h"
@@ -18,6 +20,9 @@
 namespace rung::app {
 
 void MainWindow::setMonitorSource(model::MonitorSource *source, MonitorOrigin origin) {
+    // Online, the PLC keeps the views: the simulation's source waits until the IDE is offline.
+    if (origin != MonitorOrigin::Online && m_connectionPanel && m_connectionPanel->session())
+        return;
     m_monitorSource = source;
     m_monitorOrigin = origin;
     m_ladder->setMonitorSource(source);

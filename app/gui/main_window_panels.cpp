@@ -1,5 +1,7 @@
 #include "main_window.h"
 
+#include "connection_panel.h"
+
 #include "editor/io_panel.h"
 #include "editor/timing_chart.h"
 #include "editor/watch_list_view.h"
@@ -76,6 +78,9 @@ void MainWindow::addPanelActions(QMenu *menu) {
 }
 
 void MainWindow::setPanelsSource(model::MonitorSource *source) {
+    // Online, the PLC keeps the panels (main_window_online.cpp).
+    if (m_connectionPanel && m_connectionPanel->session() && source != m_connectionPanel->session())
+        return;
     m_watchPanel->setMonitorSource(source);
     m_ioPanel->setMonitorSource(source);
     m_chart->setMonitorSource(source);

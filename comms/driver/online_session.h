@@ -77,6 +77,8 @@ public:
     // The bytes both ways since sequence `from` (see TrafficTap::records).
     std::vector<TrafficRecord> traffic(quint64 from, quint64 *next = nullptr) const;
     void setTrafficTap(bool on);
+    // The wall-clock time the tap's timeUs counts from, to print a record's time of day.
+    QDateTime trafficStart() const { return m_traffic.start(); }
 
 signals:
     void connectionStateChanged(rung::comms::OnlineSession::ConnectionState state);

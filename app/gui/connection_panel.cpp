@@ -1,0 +1,804 @@
+#include "connection_panel.h"
+
+#include "dialogs.h"
+
+#include "comms/driver/relay.h"
+#include "comms/transport/serial_transport.h"
+#include "model/target/address.h"
+#include "model/target/target.h"
+
+#include <QCheckBox>
+#include <QComboBox>
+#include <QEvent>
+#include <QFile>
+#include <QFontDatabase>
+#include <QFormLayout>
+#include <QGroupBox>
+#include <QHBoxLayout>
+#include <QLabel>
+#include <QLineEdit>
+#include <QMessageBox>
+#include <QPlainTextEdit>
+#include <QPushButton>
+#include <QRadioButton>
+#include <QSaveFile>
+#include <QSettings>
+#include <QSpinBox>
+#include <QStackedWidget>
+#include <QTimer>
+#include <QVBoxLayout>
+
+#include <QHash>
+
+namespace rung::app {
+
+namespace {
+
+using comms::ConnectionSettings;
+using comms::ProtocolKind;
+using State = comms::OnlineSession::ConnectionState;
+
+// The frame formats the manuals name (data bits, parity, stop bits).
+constexpr const char *kFrames[] = {"7E1", "7E2", "7O1", "7O2", "8N1", "8N2", "8E1", "8O1"};
+constexpr int kBauds[] = {1200, 2400, 4800, 9600, 19200, 38400, 57600, 115200};
+// The traffic log keeps this many lines (the session's tap keeps its own ring).
+constexpr int kTrafficLines = 5000;
+
+// The user's words for a command, for the question and the result line.
+QString describe(const model::Target &target, const model::DeviceCommand &c) {
+    using Kind = model::DeviceCommand::Kind;
+    const QString device = model::formatAddress(target, c.address);
+    const QString onOff = c.value ? ConnectionPanel::tr("ON") : ConnectionPanel::tr("OFF");
+    switch (c.kind) {
+    case Kind::WriteBit:
+        return ConnectionPanel::tr("Set %1 %2").arg(device, onOff);
+    case Kind::WriteWord:
+        return ConnectionPanel::tr("Write %1 = %2").arg(device).arg(c.value);
+    case Kind::WriteSetValue:
+        return ConnectionPanel::tr("Write the preset of %1 = %2").arg(device).arg(c.value);
+    case Kind::Force:
+        return ConnectionPanel::tr("Force %1 %2").arg(device, onOff);
+    case Kind::Release:
+        return ConnectionPanel::tr("Release the force on %1").arg(device);
+    case Kind::ReleaseAll:
+        return ConnectionPanel::tr("Release every force");
+    }
+    return {};
+}
+
+// The online session with the panel's first-time question: the first change of a
+// connection asks before it goes to the PLC; a refusal answers the command at once, with
+// nothing sent.
+class ConfirmingSession final : public comms::OnlineSession {
+public:
+    using Ask = std::function<bool(const QString &what)>;
+    ConfirmingSession(const model::Target &target, ConnectionSettings settings, Ask ask)
+        : OnlineSession(target, std::move(settings))
+        , m_ask(std::move(ask)) {}
+
+    QString what(CommandId id) const { return m_what.value(id); }
+    void remember(CommandId id, const QString &what) { m_what.insert(id, what); }
+
+protected:
+    void startCommand(CommandId id, const model::DeviceCommand &command) override {
+        const QString text = describe(target(), command);
+        m_what.insert(id, text);
+        if (!m_confirmed) {
+            if (!m_ask || !m_ask(text)) {
+                finishCommand(id, false,
+                              ConnectionPanel::tr("Cancelled: nothing was sent to the PLC"));
+                return;
+            }
+            m_confirmed = true;
+        }
+        OnlineSession::startCommand(id, command);
+    }
+
+private:
+    Ask m_ask;
+    bool m_confirmed = false;
+    QHash<CommandId, QString> m_what;
+};
+
+std::vector<ProtocolKind> protocolsOf(const model::Target &target) {
+    std::vector<ProtocolKind> kinds;
+    for (const model::ProtocolMap &map : target.protocolMaps) {
+        switch (map.protocol) {
+        case model::ProtocolId::VigorLink:
+            kinds.push_back(ProtocolKind::VigorLink);
+            break;
+        case model::ProtocolId::Modbus:
+            kinds.push_back(ProtocolKind::ModbusRtu);
+            kinds.push_back(ProtocolKind::ModbusTcp);
+            break;
+        case model::ProtocolId::HostLink:
+            kinds.push_back(ProtocolKind::HostLink);
+            break;
+        }
+    }
+    return kinds;
+}
+
+QString settingsKey(const QString &name) {
+    return QStringLiteral("online/") + name;
+}
+
+} // namespace
+
+ConnectionPanel::ConnectionPanel(QWidget *parent)
+    : QWidget(parent) {
+    setObjectName(QStringLiteral("connectionPanel"));
+    build();
+    retranslate();
+    refreshPorts();
+    updateState();
+}
+
+ConnectionPanel::~ConnectionPanel() {
+    // The views hold the session through QPointer; it goes before the widgets do.
+    m_test.reset();
+    m_session.reset();
+}
+
+void ConnectionPanel::build() {
+    auto *layout = new QVBoxLayout(this);
+    m_targetLabel = new QLabel;
+    m_targetLabel->setObjectName(QStringLiteral("connectionTarget"));
+    m_targetLabel->setWordWrap(true);
+    layout->addWidget(m_targetLabel);
+    m_vpcNote = new QLabel;
+    m_vpcNote->setObjectName(QStringLiteral("connectionUnpublished"));
+    m_vpcNote->setWordWrap(true);
+    m_vpcNote->setTextInteractionFlags(Qt::TextSelectableByMouse);
+    layout->addWidget(m_vpcNote);
+
+    m_settingsBox = new QGroupBox;
+    auto *form = new QFormLayout(m_settingsBox);
+    form->setFieldGrowthPolicy(QFormLayout::AllNonFixedFieldsGrow);
+    // A narrow dock (a long Hungarian label) puts the label above its field.
+    form->setRowWrapPolicy(QFormLayout::WrapLongRows);
+    m_protocol = new QComboBox;
+    m_protocol->setObjectName(QStringLiteral("connectionProtocol"));
+    // The dock may be narrow: the combos take the width they are given.
+    m_protocol->setSizeAdjustPolicy(QComboBox::AdjustToMinimumContentsLengthWithIcon);
+    m_protocol->setMinimumContentsLength(8);
+    m_protocolLabel = new QLabel;
+    form->addRow(m_protocolLabel, m_protocol);
+    auto *via = new QHBoxLayout;
+    m_viaSerial = new QRadioButton;
+    m_viaSerial->setObjectName(QStringLiteral("connectionViaSerial"));
+    m_viaTcp = new QRadioButton;
+    m_viaTcp->setObjectName(QStringLiteral("connectionViaTcp"));
+    m_viaSerial->setChecked(true);
+    via->addWidget(m_viaSerial);
+    via->addWidget(m_viaTcp);
+    via->addStretch();
+    form->addRow(via);
+
+    m_viaStack = new QStackedWidget;
+    auto *serial = new QWidget;
+    auto *serialForm = new QFormLayout(serial);
+    serialForm->setContentsMargins(0, 0, 0, 0);
+    serialForm->setFieldGrowthPolicy(QFormLayout::AllNonFixedFieldsGrow);
+    serialForm->setRowWrapPolicy(QFormLayout::WrapLongRows);
+    auto *portRow = new QHBoxLayout;
+    m_port = new QComboBox;
+    m_port->setObjectName(QStringLiteral("connectionPort"));
+    m_port->setEditable(true); // a pseudo-terminal or a port the list does not show
+    m_port->setInsertPolicy(QComboBox::NoInsert);
+    m_port->setSizeAdjustPolicy(QComboBox::AdjustToMinimumContentsLengthWithIcon);
+    m_port->setMinimumContentsLength(12);
+    m_refresh = new QPushButton;
+    m_refresh->setObjectName(QStringLiteral("connectionRefresh"));
+    portRow->addWidget(m_port, 1);
+    portRow->addWidget(m_refresh);
+    m_portLabel = new QLabel;
+    serialForm->addRow(m_portLabel, portRow);
+    m_baud = new QComboBox;
+    m_baud->setObjectName(QStringLiteral("connectionBaud"));
+    for (int b : kBauds)
+        m_baud->addItem(QString::number(b), b);
+    m_frame = new QComboBox;
+    m_frame->setObjectName(QStringLiteral("connectionFrame"));
+    for (const char *f : kFrames)
+        m_frame->addItem(QString::fromLatin1(f));
+    m_frameLabel = new QLabel;
+    m_baudLabel = new QLabel;
+    serialForm->addRow(m_baudLabel, m_baud);
+    serialForm->addRow(m_frameLabel, m_frame);
+    m_viaStack->addWidget(serial);
+    auto *tcp = new QWidget;
+    auto *tcpForm = new QFormLayout(tcp);
+    tcpForm->setContentsMargins(0, 0, 0, 0);
+    tcpForm->setRowWrapPolicy(QFormLayout::WrapLongRows);
+    m_host = new QLineEdit(QStringLiteral("127.0.0.1"));
+    m_host->setObjectName(QStringLiteral("connectionHost"));
+    m_tcpPort = new QSpinBox;
+    m_tcpPort->setObjectName(QStringLiteral("connectionTcpPort"));
+    m_tcpPort->setRange(1, 65535);
+    m_tcpPort->setValue(502);
+    m_hostLabel = new QLabel;
+    m_tcpPortLabel = new QLabel;
+    tcpForm->addRow(m_hostLabel, m_host);
+    tcpForm->addRow(m_tcpPortLabel, m_tcpPort);
+    m_viaStack->addWidget(tcp);
+    form->addRow(m_viaStack);
+
+    m_station = new QSpinBox;
+    m_station->setObjectName(QStringLiteral("connectionStation"));
+    m_station->setRange(0, 247);
+    m_timeout = new QSpinBox;
+    m_timeout->setObjectName(QStringLiteral("connectionTimeout"));
+    m_timeout->setRange(20, 30000);
+    m_timeout->setSingleStep(100);
+    m_timeout->setValue(1000);
+    m_retries = new QSpinBox;
+    m_retries->setObjectName(QStringLiteral("connectionRetries"));
+    m_retries->setRange(0, 10);
+    m_retries->setValue(2);
+    m_stationLabel = new QLabel;
+    m_timeoutLabel = new QLabel;
+    m_retriesLabel = new QLabel;
+    form->addRow(m_stationLabel, m_station);
+    form->addRow(m_timeoutLabel, m_timeout);
+    form->addRow(m_retriesLabel, m_retries);
+    layout->addWidget(m_settingsBox);
+
+    auto *buttons = new QHBoxLayout;
+    m_testButton = new QPushButton;
+    m_testButton->setObjectName(QStringLiteral("connectionTest"));
+    m_connect = new QPushButton;
+    m_connect->setObjectName(QStringLiteral("connectionConnect"));
+    m_connect->setDefault(true);
+    buttons->addWidget(m_testButton);
+    buttons->addWidget(m_connect);
+    layout->addLayout(buttons);
+
+    const auto label = [layout](const char *name) {
+        auto *l = new QLabel;
+        l->setObjectName(QString::fromLatin1(name));
+        l->setWordWrap(true);
+        l->setTextInteractionFlags(Qt::TextSelectableByMouse);
+        layout->addWidget(l);
+        return l;
+    };
+    m_state = label("connectionState");
+    m_state->setStyleSheet(QStringLiteral("QLabel { font-weight: bold; }"));
+    m_testResult = label("connectionTestResult");
+    m_notice = label("connectionNotice");
+    m_statistics = label("connectionStatistics");
+    m_command = label("connectionCommand");
+
+    m_trafficBox = new QGroupBox;
+    auto *trafficLayout = new QVBoxLayout(m_trafficBox);
+    auto *trafficButtons = new QHBoxLayout;
+    m_record = new QCheckBox;
+    m_record->setObjectName(QStringLiteral("connectionRecordTraffic"));
+    m_record->setChecked(true);
+    m_clear = new QPushButton;
+    m_clear->setObjectName(QStringLiteral("connectionClearTraffic"));
+    m_save = new QPushButton;
+    m_save->setObjectName(QStringLiteral("connectionSaveTraffic"));
+    trafficButtons->addWidget(m_record);
+    trafficButtons->addStretch();
+    trafficButtons->addWidget(m_clear);
+    trafficButtons->addWidget(m_save);
+    trafficLayout->addLayout(trafficButtons);
+    m_traffic = new QPlainTextEdit;
+    m_traffic->setObjectName(QStringLiteral("connectionTraffic"));
+    m_traffic->setReadOnly(true);
+    m_traffic->setLineWrapMode(QPlainTextEdit::NoWrap);
+    m_traffic->setMaximumBlockCount(kTrafficLines);
+    m_traffic->setFont(QFontDatabase::systemFont(QFontDatabase::FixedFont));
+    m_traffic->setMinimumHeight(m_traffic->fontMetrics().lineSpacing() * 8);
+    trafficLayout->addWidget(m_traffic);
+    layout->addWidget(m_trafficBox, 1);
+
+    connect(m_protocol, &QComboBox::activated, this, [this] { protocolChosen(); });
+    connect(m_viaSerial, &QRadioButton::toggled, this,
+            [this](bool serial) { m_viaStack->setCurrentIndex(serial ? 0 : 1); });
+    connect(m_refresh, &QPushButton::clicked, this, &ConnectionPanel::refreshPorts);
+    connect(m_testButton, &QPushButton::clicked, this, [this] { testConnection(); });
+    connect(m_connect, &QPushButton::clicked, this, [this] {
+        if (m_session)
+            disconnectFromPlc();
+        else
+            connectToPlc();
+    });
+    connect(m_record, &QCheckBox::toggled, this, [this](bool on) {
+        if (m_session)
+            m_session->setTrafficTap(on);
+    });
+    connect(m_clear, &QPushButton::clicked, m_traffic, &QPlainTextEdit::clear);
+    // Save... is the window's: it owns the file dialogs (main_window_online.cpp).
+    connect(m_save, &QPushButton::clicked, this, &ConnectionPanel::saveTrafficRequested);
+}
+
+void ConnectionPanel::retranslate() {
+    m_settingsBox->setTitle(tr("Settings"));
+    m_protocolLabel->setText(tr("Protocol:"));
+    m_viaSerial->setText(tr("Serial port"));
+    m_viaTcp->setText(tr("TCP"));
+    m_portLabel->setText(tr("Port:"));
+    m_port->setToolTip(tr("A serial port, or a path typed in (a pseudo-terminal such as the "
+                          "one 'rungstudio-cli serve --pty' prints)"));
+    m_refresh->setText(tr("Refresh"));
+    m_baudLabel->setText(tr("Baud rate:"));
+    m_frameLabel->setText(tr("Format:"));
+    m_frame->setToolTip(tr("Data bits, parity (N none, E even, O odd) and stop bits"));
+    m_hostLabel->setText(tr("Host:"));
+    m_tcpPortLabel->setText(tr("TCP port:"));
+    m_stationLabel->setText(tr("Station:"));
+    m_timeoutLabel->setText(tr("Timeout (ms):"));
+    m_retriesLabel->setText(tr("Retries:"));
+    m_testButton->setText(tr("Test Connection"));
+    m_trafficBox->setTitle(tr("Traffic"));
+    m_record->setText(tr("Record"));
+    m_clear->setText(tr("Clear"));
+    m_save->setText(tr("Save..."));
+    for (int i = 0; i < m_protocol->count(); ++i)
+        m_protocol->setItemText(i,
+                                comms::protocolName(ProtocolKind(m_protocol->itemData(i).toInt())));
+    if (m_target)
+        setTarget(*m_target, m_modelName); // the texts that name the target
+    updateState();
+}
+
+void ConnectionPanel::changeEvent(QEvent *event) {
+    if (event->type() == QEvent::LanguageChange)
+        retranslate();
+    QWidget::changeEvent(event);
+}
+
+void ConnectionPanel::setTarget(const model::Target &target, const QString &modelName) {
+    const bool changed = m_target != &target;
+    if (changed && m_session)
+        disconnectFromPlc(); // the views would read the new family's devices from the old PLC
+    m_target = &target;
+    m_modelName = modelName;
+    m_targetLabel->setText(modelName.isEmpty()
+                               ? tr("PLC: %1").arg(target.displayName)
+                               : tr("PLC: %1, model %2").arg(target.displayName, modelName));
+    const bool speaks = canConnect();
+    m_vpcNote->setVisible(!speaks);
+    m_vpcNote->setText(
+        tr("The link protocol of the %1 is not published, so the IDE cannot talk to it. "
+           "Instead: export the program as a console listing (File > Export Instruction List) and "
+           "load "
+           "it with the PLC's own tool; to study the link, capture its traffic with "
+           "'rungstudio-cli record'.")
+            .arg(target.displayName));
+    m_settingsBox->setEnabled(speaks);
+    if (changed || m_protocol->count() == 0)
+        fillProtocols();
+    updateState();
+}
+
+bool ConnectionPanel::canConnect() const {
+    return m_target && !protocolsOf(*m_target).empty();
+}
+
+void ConnectionPanel::fillProtocols() {
+    m_protocol->clear();
+    if (!m_target)
+        return;
+    for (ProtocolKind kind : protocolsOf(*m_target))
+        m_protocol->addItem(comms::protocolName(kind), int(kind));
+    // The protocol last used with this family, else the first.
+    const int last =
+        QSettings().value(settingsKey(QStringLiteral("protocol/") + m_target->id), -1).toInt();
+    if (const int i = m_protocol->findData(last); i >= 0)
+        m_protocol->setCurrentIndex(i);
+    m_protocolLabel->setVisible(m_protocol->count() > 1);
+    m_protocol->setVisible(m_protocol->count() > 1);
+    protocolChosen();
+}
+
+ProtocolKind ConnectionPanel::protocol() const {
+    return ProtocolKind(m_protocol->currentData().toInt());
+}
+
+void ConnectionPanel::protocolChosen() {
+    if (m_protocol->count() == 0)
+        return;
+    ConnectionSettings s = comms::defaultSettings(protocol());
+    QSettings saved;
+    s.port = saved.value(settingsKey(QStringLiteral("port"))).toString();
+    s.host =
+        saved.value(settingsKey(QStringLiteral("host")), QStringLiteral("127.0.0.1")).toString();
+    s.tcpPort = quint16(saved.value(settingsKey(QStringLiteral("tcpPort")), 502).toInt());
+    s.via = protocol() == ProtocolKind::ModbusTcp ? ConnectionSettings::Via::Tcp
+                                                  : ConnectionSettings::Via::Serial;
+    setSettings(s);
+}
+
+void ConnectionPanel::refreshPorts() {
+    const QString typed = m_port->currentText();
+    const QString current = m_port->currentData().toString();
+    m_port->clear();
+    for (const comms::SerialPortInfo &p : comms::availableSerialPorts()) {
+        QString text = p.name;
+        if (!p.description.isEmpty())
+            text += QStringLiteral(" - ") + p.description;
+        if (!p.usbId().isEmpty())
+            text += QStringLiteral(" [%1]").arg(p.usbId());
+        m_port->addItem(text, p.name);
+    }
+    const QString keep = current.isEmpty() ? typed : current;
+    if (const int i = m_port->findData(keep); i >= 0)
+        m_port->setCurrentIndex(i);
+    else
+        m_port->setEditText(keep);
+}
+
+comms::ConnectionSettings ConnectionPanel::settings() const {
+    ConnectionSettings s = comms::defaultSettings(protocol());
+    s.via = m_viaTcp->isChecked() ? ConnectionSettings::Via::Tcp : ConnectionSettings::Via::Serial;
+    // A port chosen from the list stands for its name; anything else is as typed.
+    const int i = m_port->currentIndex();
+    s.port = i >= 0 && m_port->itemText(i) == m_port->currentText()
+                 ? m_port->itemData(i).toString()
+                 : m_port->currentText().trimmed();
+    s.serial.baud = m_baud->currentText().toInt();
+    comms::parseFrameFormat(m_frame->currentText(), &s.serial);
+    s.host = m_host->text().trimmed();
+    s.tcpPort = quint16(m_tcpPort->value());
+    s.station = m_station->value();
+    s.link.timeoutMs = m_timeout->value();
+    s.link.retries = m_retries->value();
+    return s;
+}
+
+void ConnectionPanel::setSettings(const comms::ConnectionSettings &s) {
+    if (const int i = m_protocol->findData(int(s.protocol)); i >= 0)
+        m_protocol->setCurrentIndex(i);
+    (s.via == ConnectionSettings::Via::Tcp ? m_viaTcp : m_viaSerial)->setChecked(true);
+    if (const int i = m_port->findData(s.port); i >= 0)
+        m_port->setCurrentIndex(i);
+    else
+        m_port->setEditText(s.port);
+    if (int i = m_baud->findData(s.serial.baud); i >= 0)
+        m_baud->setCurrentIndex(i);
+    else {
+        m_baud->addItem(QString::number(s.serial.baud), s.serial.baud);
+        m_baud->setCurrentIndex(m_baud->count() - 1);
+    }
+    m_frame->setCurrentText(comms::frameFormatText(s.serial));
+    m_host->setText(s.host);
+    m_tcpPort->setValue(s.tcpPort);
+    m_station->setValue(s.station);
+    m_timeout->setValue(s.link.timeoutMs);
+    m_retries->setValue(s.link.retries);
+}
+
+void ConnectionPanel::remember() const {
+    QSettings saved;
+    const ConnectionSettings s = settings();
+    saved.setValue(settingsKey(QStringLiteral("protocol/") + m_target->id), int(s.protocol));
+    if (!s.port.isEmpty())
+        saved.setValue(settingsKey(QStringLiteral("port")), s.port);
+    saved.setValue(settingsKey(QStringLiteral("host")), s.host);
+    saved.setValue(settingsKey(QStringLiteral("tcpPort")), s.tcpPort);
+}
+
+bool ConnectionPanel::confirm(const QString &title, const QString &text) {
+    if (m_confirmer)
+        return m_confirmer(title, text);
+    return messageBox(QMessageBox::Question, this, title, text,
+                      QMessageBox::Yes | QMessageBox::No) == QMessageBox::Yes;
+}
+
+std::unique_ptr<comms::OnlineSession> ConnectionPanel::makeSession() const {
+    auto *self = const_cast<ConnectionPanel *>(this);
+    ConnectionSettings s = settings();
+    auto session = std::make_unique<ConfirmingSession>(
+        *m_target, s, [self, where = s.where()](const QString &what) {
+            const QString plc = self->m_session ? self->m_session->plcName() : where;
+            return self->confirm(
+                tr("Change the PLC's Memory"),
+                tr("%1 on %2?\n\nThis changes the memory of a real PLC, which may be driving a "
+                   "machine. You are asked once for each connection; later changes go at once.")
+                    .arg(what, plc));
+        });
+    return session;
+}
+
+bool ConnectionPanel::connectToPlc() {
+    if (m_session)
+        return true;
+    if (!canConnect()) {
+        emit message(m_vpcNote->text());
+        return false;
+    }
+    const ConnectionSettings s = settings();
+    if (s.where().isEmpty() || (s.via == ConnectionSettings::Via::Serial && s.port.isEmpty())) {
+        emit message(tr("Choose the serial port the PLC is on (or type its path)"));
+        return false;
+    }
+    if (m_guard && !m_guard())
+        return false;
+    m_test.reset();
+    remember();
+    m_session = makeSession();
+    m_session->setTrafficTap(m_record->isChecked());
+    m_trafficNext = 0;
+    m_testResult->clear();
+    m_lastCommand.clear();
+    m_command->clear();
+    comms::OnlineSession *session = m_session.get();
+    connect(session, &comms::OnlineSession::connectionStateChanged, this,
+            &ConnectionPanel::updateState);
+    connect(session, &comms::OnlineSession::plcModeChanged, this, &ConnectionPanel::updateState);
+    connect(session, &comms::OnlineSession::identityChanged, this, &ConnectionPanel::updateState);
+    connect(session, &model::MonitorSource::errorTextChanged, this, &ConnectionPanel::updateState);
+    connect(session, &comms::OnlineSession::statisticsChanged, this,
+            &ConnectionPanel::updateStatistics);
+    connect(session, &comms::OnlineSession::trafficAvailable, this, &ConnectionPanel::pullTraffic);
+    connect(session, &comms::OnlineSession::notice, this, [this](const QString &text) {
+        m_notice->setText(text);
+        emit message(text);
+    });
+    connect(session, &model::MonitorSource::commandFinished, this,
+            [this, session](model::MonitorSource::CommandId id, bool ok, const QString &error) {
+                const QString what = static_cast<ConfirmingSession *>(session)->what(id);
+                m_lastCommand = ok ? tr("%1: done, the PLC acknowledged it").arg(what)
+                                   : tr("%1: not done: %2").arg(what, error);
+                m_command->setText(m_lastCommand);
+                m_command->setStyleSheet(ok ? QString()
+                                            : QStringLiteral("QLabel { color: #b00020; }"));
+            });
+    m_notice->setText(
+        tr("These PLCs cannot send their program back, so the IDE cannot know whether the PLC "
+           "runs the program shown here. Compare by reading devices: watch them in the ladder "
+           "or the watch table."));
+    m_session->connectToPlc();
+    updateState();
+    emit sessionChanged(session);
+    return true;
+}
+
+void ConnectionPanel::disconnectFromPlc() {
+    if (!m_session)
+        return;
+    pullTraffic();
+    // The views let go of the session before it goes; session() is null while they do.
+    std::unique_ptr<comms::OnlineSession> old = std::move(m_session);
+    emit sessionChanged(nullptr);
+    old->disconnectFromPlc();
+    old.reset();
+    m_notice->clear();
+    updateState();
+}
+
+model::MonitorSource::CommandId ConnectionPanel::setPlcMode(comms::PlcMode mode) {
+    if (!m_session)
+        return 0;
+    const model::MonitorSource::CommandId id = m_session->setPlcMode(mode);
+    static_cast<ConfirmingSession *>(m_session.get())
+        ->remember(id, tr("Switch to %1").arg(comms::modeName(mode)));
+    return id;
+}
+
+bool ConnectionPanel::requestPlcMode(comms::PlcMode mode) {
+    comms::OnlineSession *session = m_session.get();
+    if (!session)
+        return false;
+    // Host Link has PROGRAM / MONITOR / RUN; the others RUN and STOP (their RUN bit).
+    const bool hostLink = session->settings().protocol == comms::ProtocolKind::HostLink;
+    if (mode == comms::PlcMode::Program && !hostLink)
+        mode = comms::PlcMode::Stop;
+    QString what;
+    switch (mode) {
+    case comms::PlcMode::Run:
+        what = tr("The PLC runs its program: its outputs switch as the program says.");
+        break;
+    case comms::PlcMode::Monitor:
+        what = tr("The PLC runs its program and takes writes from the IDE.");
+        break;
+    default:
+        what = tr("The PLC stops running its program.");
+        break;
+    }
+    if (!confirm(tr("PLC Mode"),
+                 tr("Switch %1 to %2?\n\n%3").arg(session->plcName(), comms::modeName(mode), what)))
+        return false;
+    return setPlcMode(mode) != 0;
+}
+
+bool ConnectionPanel::testConnection() {
+    if (m_session || m_test) {
+        emit message(m_session ? tr("Already connected: the panel shows what the PLC reports")
+                               : tr("A test is under way"));
+        return false;
+    }
+    if (!canConnect()) {
+        emit message(m_vpcNote->text());
+        return false;
+    }
+    const ConnectionSettings s = settings();
+    if (s.where().isEmpty()) {
+        emit message(tr("Choose the serial port the PLC is on (or type its path)"));
+        return false;
+    }
+    remember();
+    m_test = std::make_unique<comms::OnlineSession>(*m_target, s);
+    m_testResult->setStyleSheet(QString());
+    m_testResult->setText(tr("Testing %1...").arg(s.where()));
+    comms::OnlineSession *test = m_test.get();
+    connect(test, &comms::OnlineSession::connectionStateChanged, this, [this, test](State state) {
+        if (m_test.get() != test)
+            return; // the test is over; the session is on its way out
+        if (state == State::Online) {
+            const comms::PlcIdentity id = test->identity();
+            QString found = id.model.isEmpty()
+                                ? tr("The PLC answers (this protocol does not report the model)")
+                                : tr("The PLC answers: %1").arg(id.model);
+            if (!id.version.isEmpty())
+                found += tr(", version %1").arg(id.version);
+            if (test->plcMode() != comms::PlcMode::Unknown)
+                found += tr("; mode %1").arg(comms::modeName(test->plcMode()));
+            const comms::LinkStatistics st = test->statistics();
+            found += tr("; round trip %1 ms").arg(st.lastRoundTripMs, 0, 'f', 1);
+            finishTest(true, found + QLatin1Char('.'));
+        } else if (state == State::Lost || state == State::Failed ||
+                   (state == State::Connecting && !test->errorText().isEmpty())) {
+            finishTest(false, tr("No answer: %1").arg(test->errorText()));
+        }
+    });
+    // A silent line: the session keeps trying; the test gives up after every retry's time.
+    if (!m_testDeadline) {
+        m_testDeadline = new QTimer(this);
+        m_testDeadline->setSingleShot(true);
+        connect(m_testDeadline, &QTimer::timeout, this, [this] {
+            if (m_test)
+                finishTest(false, m_test->errorText().isEmpty()
+                                      ? tr("No answer from the PLC")
+                                      : tr("No answer: %1").arg(m_test->errorText()));
+        });
+    }
+    m_testDeadline->start(s.link.timeoutMs * (s.link.retries + 1) + 1000);
+    m_test->connectToPlc();
+    updateState();
+    return true;
+}
+
+void ConnectionPanel::finishTest(bool ok, const QString &text) {
+    if (m_testDeadline)
+        m_testDeadline->stop();
+    // Not inside the test session's own signal: it goes on the next turn of the loop.
+    if (m_test) {
+        m_test->disconnectFromPlc();
+        m_test.release()->deleteLater();
+    }
+    m_testResult->setText(text);
+    m_testResult->setStyleSheet(ok ? QStringLiteral("QLabel { color: #1b5e20; }")
+                                   : QStringLiteral("QLabel { color: #b00020; }"));
+    updateState();
+    emit testFinished(ok, text);
+}
+
+QString ConnectionPanel::stateText() const {
+    if (!m_session)
+        return canConnect() ? tr("Offline") : tr("Offline: no link to this PLC");
+    const QString error = m_session->errorText();
+    switch (m_session->connectionState()) {
+    case State::Disconnected:
+        return tr("Offline");
+    case State::Connecting:
+        return error.isEmpty()
+                   ? tr("Connecting to %1...").arg(m_session->settings().where())
+                   : tr("Connecting to %1: %2").arg(m_session->settings().where(), error);
+    case State::Online: {
+        QString text = tr("Online: %1").arg(m_session->plcName());
+        if (m_session->plcMode() != comms::PlcMode::Unknown)
+            text += QStringLiteral(", ") + comms::modeName(m_session->plcMode());
+        if (!m_session->identity().model.isEmpty())
+            text += QStringLiteral(" (%1)").arg(m_session->identity().model);
+        if (!error.isEmpty())
+            text += QLatin1Char('\n') + error;
+        return text;
+    }
+    case State::Lost:
+        return tr("Link lost: %1\nTrying again; the values shown are the last read, marked "
+                  "stale.")
+            .arg(error);
+    case State::Failed:
+        return tr("Cannot connect: %1").arg(error);
+    }
+    return {};
+}
+
+void ConnectionPanel::updateState() {
+    const bool online = m_session != nullptr;
+    m_connect->setText(online ? tr("Disconnect") : tr("Connect"));
+    m_connect->setEnabled(canConnect());
+    m_testButton->setEnabled(canConnect() && !online && !m_test);
+    m_settingsBox->setEnabled(canConnect() && !online);
+    // Online the settings cannot change: the state names the port and the PLC, and the room
+    // goes to the figures and the traffic.
+    m_settingsBox->setVisible(!online);
+    m_state->setText(stateText());
+    QString colour;
+    if (m_session) {
+        switch (m_session->connectionState()) {
+        case State::Online:
+            colour = QStringLiteral("#1b5e20");
+            break;
+        case State::Lost:
+        case State::Failed:
+            colour = QStringLiteral("#b00020");
+            break;
+        case State::Connecting: // first contact failed: the session tries again
+            if (!m_session->errorText().isEmpty())
+                colour = QStringLiteral("#b00020");
+            break;
+        default:
+            break;
+        }
+    }
+    m_state->setStyleSheet(
+        colour.isEmpty() ? QStringLiteral("QLabel { font-weight: bold; }")
+                         : QStringLiteral("QLabel { font-weight: bold; color: %1; }").arg(colour));
+    updateStatistics();
+}
+
+QString ConnectionPanel::statisticsText() const {
+    if (!m_session)
+        return {};
+    const comms::LinkStatistics s = m_session->statistics();
+    return tr("Errors %1, retries %2, timeouts %3, refused %4, reconnects %5\n"
+              "Round trip %6 ms (mean %7, max %8); refresh %9 ms, %10 frame(s)")
+        .arg(s.errors)
+        .arg(s.retries)
+        .arg(s.timeouts)
+        .arg(s.refusals)
+        .arg(s.reconnects)
+        .arg(s.lastRoundTripMs, 0, 'f', 1)
+        .arg(s.meanRoundTripMs, 0, 'f', 1)
+        .arg(s.maxRoundTripMs, 0, 'f', 1)
+        .arg(s.lastRefreshMs, 0, 'f', 1)
+        .arg(s.framesPerRefresh);
+}
+
+void ConnectionPanel::updateStatistics() {
+    m_statistics->setText(statisticsText());
+}
+
+QString ConnectionPanel::lastCommandText() const {
+    return m_lastCommand;
+}
+
+void ConnectionPanel::pullTraffic() {
+    if (!m_session)
+        return;
+    quint64 next = m_trafficNext;
+    const std::vector<comms::TrafficRecord> records = m_session->traffic(m_trafficNext, &next);
+    m_trafficNext = next;
+    if (records.empty())
+        return;
+    //: the direction of bytes in the traffic log: from the PC to the PLC, and back
+    const QString sent = tr("PC>PLC");
+    const QString received = tr("PLC>PC");
+    QStringList lines;
+    lines.reserve(int(records.size()));
+    for (const comms::TrafficRecord &r : records)
+        lines << comms::formatTrafficRecord(r, m_session->trafficStart(), sent, received);
+    m_traffic->appendPlainText(lines.join(QLatin1Char('\n')));
+}
+
+bool ConnectionPanel::saveTraffic(const QString &path, QString *error) const {
+    QSaveFile file(path);
+    if (!file.open(QIODevice::WriteOnly | QIODevice::Text)) {
+        *error = tr("Cannot write %1: %2").arg(path, file.errorString());
+        return false;
+    }
+    file.write(m_traffic->toPlainText().toUtf8());
+    file.write("\n");
+    if (!file.commit()) {
+        *error = tr("Cannot write %1: %2").arg(path, file.errorString());
+        return false;
+    }
+    return true;
+}
+
+} // namespace rung::app

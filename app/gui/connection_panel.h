@@ -1,0 +1,163 @@
+#pragma once
+
+// The connection panel (issue 13): where a real PLC is and how to speak to it, the link's
+// state and figures, and the bytes both ways. The target family and model come from the
+// project; the protocol is chosen where the family has a choice; the line settings start
+// from each protocol's defaults (comms::defaultSettings). Connect makes a comms::OnlineSession
+// (owned here) and announces it with sessionChanged(): the main window hands it to the views
+// (main_window_online.cpp). A VPC is listed and says what to do instead: its link protocol is
+// not published.
+//
+// The first write, force or preset of a connection asks before it goes to the PLC (naming
+// the device and the PLC); later ones go at once. Every command's answer from the PLC is
+// shown in the panel.
+
+#include "comms/driver/online_session.h"
+
+#include <QPointer>
+#include <QWidget>
+
+#include <functional>
+#include <memory>
+
+class QCheckBox;
+class QComboBox;
+class QGroupBox;
+class QLabel;
+class QLineEdit;
+class QPlainTextEdit;
+class QPushButton;
+class QRadioButton;
+class QSpinBox;
+class QStackedWidget;
+class QTimer;
+
+namespace rung::model {
+class Target;
+}
+
+namespace rung::app {
+
+class ConnectionPanel : public QWidget {
+    Q_OBJECT
+
+public:
+    explicit ConnectionPanel(QWidget *parent = nullptr);
+    ~ConnectionPanel() override;
+
+    // The project's target and model; a change of family ends a connection and refills the
+    // protocol choice with its defaults.
+    void setTarget(const model::Target &target, const QString &modelName);
+    const model::Target *target() const { return m_target; }
+    // True when the family has a protocol the IDE speaks (not a VPC).
+    bool canConnect() const;
+
+    // The settings as the fields say; setSettings fills the fields.
+    comms::ConnectionSettings settings() const;
+    void setSettings(const comms::ConnectionSettings &settings);
+
+    // Null while offline.
+    comms::OnlineSession *session() const { return m_session.get(); }
+    // Connects with the fields' settings; false (with message()) when it cannot start.
+    bool connectToPlc();
+    void disconnectFromPlc();
+    // Opens a second, short-lived session that reads the identity (or the run state) and
+    // says what it found in the panel and in testFinished(); false when it cannot start.
+    bool testConnection();
+    bool testing() const { return m_test != nullptr; }
+    // RUN / STOP / MONITOR through the session (its answer shows as the last command); 0
+    // while offline.
+    model::MonitorSource::CommandId setPlcMode(comms::PlcMode mode);
+    // The same after asking (naming the PLC and what the mode does); false when declined.
+    // STOP is PROGRAM over Host Link, the RUN bit's off state over the others.
+    bool requestPlcMode(comms::PlcMode mode);
+
+    // Questions to the user (tests answer them directly): true to go on.
+    using Confirmer = std::function<bool(const QString &title, const QString &text)>;
+    void setConfirmer(Confirmer confirmer) { m_confirmer = std::move(confirmer); }
+    bool confirm(const QString &title, const QString &text);
+    // Asked before connecting (the window: the simulation); false: do not connect.
+    void setConnectGuard(std::function<bool()> guard) { m_guard = std::move(guard); }
+
+    // "Online: Vigor station 0 on /dev/pts/3", "Link lost: ...", as the panel shows it.
+    QString stateText() const;
+    QString statisticsText() const;
+    QString lastCommandText() const;
+    QPlainTextEdit *trafficLog() const { return m_traffic; }
+    // Writes the traffic log as shown (one record a line); false with the reason.
+    bool saveTraffic(const QString &path, QString *error) const;
+    // Serial ports again (Refresh).
+    void refreshPorts();
+
+signals:
+    void sessionChanged(rung::comms::OnlineSession *session); // null: offline again
+    void testFinished(bool ok, const QString &text);
+    void message(const QString &text);
+    void saveTrafficRequested(); // Save... (the window asks where)
+
+protected:
+    void changeEvent(QEvent *event) override;
+
+private:
+    void build();
+    void retranslate();
+    void fillProtocols();
+    void protocolChosen();
+    void updateState();
+    void updateStatistics();
+    void pullTraffic();
+    void finishTest(bool ok, const QString &text);
+    void remember() const;
+    std::unique_ptr<comms::OnlineSession> makeSession() const;
+    comms::ProtocolKind protocol() const;
+
+    const model::Target *m_target = nullptr;
+    QString m_modelName;
+    std::unique_ptr<comms::OnlineSession> m_session;
+    std::unique_ptr<comms::OnlineSession> m_test;
+    QTimer *m_testDeadline = nullptr;
+    Confirmer m_confirmer;
+    std::function<bool()> m_guard;
+    quint64 m_trafficNext = 0;
+    QString m_lastCommand;
+
+    QLabel *m_targetLabel = nullptr;
+    QLabel *m_vpcNote = nullptr;
+    QGroupBox *m_settingsBox = nullptr;
+    QLabel *m_protocolLabel = nullptr;
+    QComboBox *m_protocol = nullptr;
+    QRadioButton *m_viaSerial = nullptr;
+    QRadioButton *m_viaTcp = nullptr;
+    QStackedWidget *m_viaStack = nullptr;
+    QComboBox *m_port = nullptr;
+    QPushButton *m_refresh = nullptr;
+    QComboBox *m_baud = nullptr;
+    QComboBox *m_frame = nullptr;
+    QLineEdit *m_host = nullptr;
+    QSpinBox *m_tcpPort = nullptr;
+    QSpinBox *m_station = nullptr;
+    QSpinBox *m_timeout = nullptr;
+    QSpinBox *m_retries = nullptr;
+    QLabel *m_portLabel = nullptr;
+    QLabel *m_baudLabel = nullptr;
+    QLabel *m_frameLabel = nullptr;
+    QLabel *m_hostLabel = nullptr;
+    QLabel *m_tcpPortLabel = nullptr;
+    QLabel *m_stationLabel = nullptr;
+    QLabel *m_timeoutLabel = nullptr;
+    QLabel *m_retriesLabel = nullptr;
+    QPushButton *m_testButton = nullptr;
+    QPushButton *m_connect = nullptr;
+    QLabel *m_state = nullptr;
+    QLabel *m_testResult = nullptr;
+    QLabel *m_statistics = nullptr;
+    QLabel *m_command = nullptr;
+    QLabel *m_notice = nullptr;
+    QGroupBox *m_trafficBox = nullptr;
+    QCheckBox *m_record = nullptr;
+    QPushButton *m_clear = nullptr;
+    QPushButton *m_save = nullptr;
+    QPlainTextEdit *m_traffic = nullptr;
+};
+
+} // namespace rung::app

@@ -1,0 +1,500 @@
+// The IDE online (issue 13): the main window and its connection panel against the virtual
+// PLC served over a real pseudo-terminal, for Vigor Computer Link, Modbus RTU (PL110) and
+// Host Link (CPM1): connect, see a coil follow an input set in the PLC, force a bit, write a
+// word, RUN / STOP, pull the cable and see the error, the stale values and the reconnect.
+// Every wait has a deadline of a few seconds; the virtual PLC scans every 10 ms.
+
+#include "app/gui/connection_panel.h"
+#include "app/gui/main_window.h"
+#include "app/gui/simulation_controller.h"
+#include "comms/driver/online_session.h"
+#include "editor/ladder_view.h"
+#include "model/target/address.h"
+#include "tests/cli/virtual_plc_fixture.h"
+
+#include <QAction>
+#include <QDockWidget>
+#include <QLabel>
+#include <QPlainTextEdit>
+#include <QSignalSpy>
+#include <QStatusBar>
+#include <QTemporaryDir>
+#include <QTest>
+
+#include <gtest/gtest.h>
+
+#include <atomic>
+
+namespace rung::test {
+namespace {
+
+using State = comms::OnlineSession::ConnectionState;
+constexpr int kPatienceMs = 5000;
+
+// The cable between the virtual PLC and the pty: cut() drops every byte both ways, as a
+// pulled cable does; the PLC and the IDE's port stay as they are.
+class Cable final : public comms::Transport {
+public:
+    explicit Cable(std::unique_ptr<comms::Transport> inner)
+        : m_inner(std::move(inner)) {}
+    void cut(bool cut) { m_cut = cut; }
+    QString name() const override { return m_inner->name(); }
+    bool open(QString *error) override { return m_inner->open(error); }
+    void close() override { m_inner->close(); }
+    bool isOpen() const override { return m_inner->isOpen(); }
+    bool write(QByteArrayView bytes, QDeadlineTimer deadline, QString *error) override {
+        return m_cut ? true : m_inner->write(bytes, deadline, error);
+    }
+    comms::ReadResult read(QDeadlineTimer deadline) override {
+        comms::ReadResult r = m_inner->read(deadline);
+        if (m_cut && r.status == comms::ReadResult::Status::Data)
+            return {}; // lost on the way: the PLC hears nothing
+        return r;
+    }
+    void discardInput() override { m_inner->discardInput(); }
+    void cancel() override { m_inner->cancel(); }
+
+private:
+    std::unique_ptr<comms::Transport> m_inner;
+    std::atomic<bool> m_cut{false};
+};
+
+struct Case {
+    const char *name;
+    const char *target;
+    comms::ProtocolKind protocol;
+    const char *listing;
+    const char *input; // set in the PLC; the coil follows it
+    const char *coil;
+    const char *word; // written from the IDE; result = word (+1 for Vigor)
+    const char *result;
+    int offset;       // result - word
+    bool forces;      // the protocol forces bits (Host Link)
+    bool monitorMode; // PROGRAM / MONITOR / RUN (Host Link), else RUN / STOP
+    bool setsMode;    // the protocol switches RUN / STOP (not Vigor Computer Link)
+};
+
+// gtest names a failing case by its protocol, not by its bytes.
+void PrintTo(const Case &c, std::ostream *os) {
+    *os << c.name;
+}
+
+const Case kCases[] = {
+    {"Vigor", "vigor", comms::ProtocolKind::VigorLink,
+     "LD X0\nOUT Y0\nLD M9000\nADD D0 K1 D1\nEND\n", "X0", "Y0", "D0", "D1", 1, false, false,
+     false},
+    {"Pl110Modbus", "pl110", comms::ProtocolKind::ModbusRtu,
+     "LD I1\nOUT Q1\nLD SM0.0\nMOV V0 V1\nEND\n", "I1", "Q1", "V0", "V1", 0, false, false, true},
+    {"Cpm1HostLink", "cpm1", comms::ProtocolKind::HostLink,
+     "LD 000.01\nOUT 010.01\nLD 253.13\nMOV(21) DM 0000 DM 0001\nEND(01)\n", "000.01", "010.01",
+     "DM 0000", "DM 0001", 0, true, true, true},
+};
+
+class Online : public ::testing::TestWithParam<Case> {
+protected:
+    const Case &c = GetParam();
+    const model::Target &target = *model::Target::byId(QString::fromLatin1(c.target));
+    QTemporaryDir dir;
+    std::unique_ptr<app::VirtualPlc> plc;
+    Cable *cable = nullptr;
+    QString path;
+    app::MainWindow window;
+    app::ConnectionPanel *panel = window.connectionPanel();
+    QStringList questions;
+
+    void SetUp() override {
+        // The virtual PLC, as `rungstudio-cli serve --pty` runs it, behind the cable.
+        const QString file = dir.filePath(QStringLiteral("plc.il"));
+        QFile f(file);
+        ASSERT_TRUE(f.open(QIODevice::WriteOnly));
+        f.write("; target: ");
+        f.write(c.target);
+        f.write("\n");
+        f.write(c.listing);
+        f.close();
+        QString errText;
+        QTextStream err(&errText);
+        app::LoadedProgram loaded;
+        ASSERT_EQ(app::loadProgram({file, {}, {}}, &loaded, err), 0) << errText.toStdString();
+        app::VirtualPlc::Options o;
+        o.slave.protocol = comms::protocolIdOf(c.protocol);
+        o.slave.station = comms::defaultSettings(c.protocol).station;
+        o.periodMs = 10;
+        plc = std::make_unique<app::VirtualPlc>(loaded.program, o);
+        QString error;
+        auto pty = comms::PtyTransport::createPair(&error);
+        ASSERT_TRUE(pty) << error.toStdString();
+        path = pty->peerPath();
+        auto wire = std::make_unique<Cable>(std::move(pty));
+        cable = wire.get();
+        ASSERT_TRUE(plc->serve(std::move(wire), &error)) << error.toStdString();
+
+        // The same program in the IDE, online to it.
+        window.newProject(target, target.defaultModel().name);
+        std::vector<model::Diagnostic> errors;
+        ASSERT_TRUE(window.document()->setListing(QString::fromLatin1(c.listing), &errors));
+        window.resize(1200, 800);
+        window.show();
+        panel->setConfirmer([this](const QString &, const QString &text) {
+            questions << text;
+            return true;
+        });
+        comms::ConnectionSettings s = comms::defaultSettings(c.protocol);
+        s.port = path;
+        s.link.timeoutMs = 150;
+        s.link.retries = 1;
+        panel->setSettings(s);
+    }
+    void TearDown() override {
+        panel->disconnectFromPlc();
+        plc.reset();
+    }
+
+    model::Address at(const char *device) const {
+        return std::get<model::Address>(model::parseAddress(target, QString::fromLatin1(device)));
+    }
+    comms::OnlineSession *session() const { return panel->session(); }
+    std::shared_ptr<const model::Snapshot> shown() const {
+        return window.monitorSource() ? window.monitorSource()->snapshot() : nullptr;
+    }
+    qint64 value(const char *device) const {
+        const auto s = shown();
+        return s ? s->value(at(device)) : -99999;
+    }
+    bool bit(const char *device) const {
+        const auto s = shown();
+        return s && s->bit(at(device));
+    }
+    // The PLC's own image, as a device on the machine sets it.
+    void setInPlc(const char *device, bool on) {
+        const auto change =
+            plc->image()->apply({{model::DeviceCommand::Kind::WriteBit, at(device), on ? 1 : 0}},
+                                QDeadlineTimer(kPatienceMs));
+        ASSERT_TRUE(change.done()) << change.message.toStdString();
+    }
+    qint64 plcValue(const char *device) const {
+        return plc->image()->snapshot()->value(at(device));
+    }
+    // commandFinished for the id: ok, and the text.
+    std::pair<bool, QString> finished(model::MonitorSource::CommandId id, QSignalSpy &spy) {
+        const auto find = [&]() -> const QList<QVariant> * {
+            for (const auto &call : spy)
+                if (call[0].value<model::MonitorSource::CommandId>() == id)
+                    return &call;
+            return nullptr;
+        };
+        if (!QTest::qWaitFor([&] { return find() != nullptr; }, kPatienceMs))
+            return {false, QStringLiteral("no answer within the patience")};
+        return {find()->at(1).toBool(), find()->at(2).toString()};
+    }
+    QAction *action(const char *name) const {
+        return window.findChild<QAction *>(QString::fromLatin1(name));
+    }
+    void goOnline() {
+        QAction *go = action("onlineConnect");
+        ASSERT_TRUE(go && go->isEnabled());
+        go->trigger();
+        ASSERT_TRUE(session());
+        ASSERT_TRUE(QTest::qWaitFor([&] { return session()->connectionState() == State::Online; },
+                                    kPatienceMs))
+            << panel->stateText().toStdString();
+    }
+};
+
+TEST_P(Online, TheViewsShowThePlcAndFollowItsInputs) {
+    goOnline();
+    EXPECT_EQ(window.monitorSource(), session());
+    EXPECT_TRUE(window.findChild<QDockWidget *>(QStringLiteral("connectionDock"))->isVisible());
+    auto *origin = window.statusBar()->findChild<QLabel *>(QStringLiteral("monitorOrigin"));
+    ASSERT_TRUE(origin);
+    EXPECT_EQ(origin->text(), app::MainWindow::originText(app::MainWindow::MonitorOrigin::Online));
+    EXPECT_TRUE(panel->stateText().startsWith(QStringLiteral("Online: ")))
+        << panel->stateText().toStdString();
+    EXPECT_TRUE(action("onlineConnect")->text().contains(QStringLiteral("Offline")));
+    // Only what the views show is polled: the ladder shows the coil and its input.
+    const std::vector<model::Address> watched = session()->watched();
+    EXPECT_NE(std::find(watched.begin(), watched.end(), at(c.coil)), watched.end());
+
+    setInPlc(c.input, true);
+    EXPECT_TRUE(QTest::qWaitFor([&] { return bit(c.coil); }, kPatienceMs));
+    setInPlc(c.input, false);
+    EXPECT_TRUE(QTest::qWaitFor([&] { return !bit(c.coil); }, kPatienceMs));
+    EXPECT_TRUE(QTest::qWaitFor([&] { return !panel->trafficLog()->toPlainText().isEmpty(); },
+                                kPatienceMs));
+    EXPECT_TRUE(panel->trafficLog()->toPlainText().contains(QStringLiteral("PC>PLC")));
+    EXPECT_TRUE(panel->trafficLog()->toPlainText().contains(QStringLiteral("PLC>PC")));
+    EXPECT_TRUE(panel->statisticsText().contains(QStringLiteral("Round trip")));
+    // Save... writes the log as shown, a record a line.
+    const QString saved = dir.filePath(QStringLiteral("traffic.txt"));
+    QString error;
+    ASSERT_TRUE(panel->saveTraffic(saved, &error)) << error.toStdString();
+    QFile log(saved);
+    ASSERT_TRUE(log.open(QIODevice::ReadOnly));
+    const QString text = QString::fromUtf8(log.readAll());
+    EXPECT_TRUE(
+        text.startsWith(panel->trafficLog()->toPlainText().section(QLatin1Char('\n'), 0, 0)));
+    EXPECT_TRUE(text.contains(QStringLiteral(" PC>PLC ")));
+    EXPECT_FALSE(panel->saveTraffic(dir.filePath(QStringLiteral("no/such/dir/t.txt")), &error));
+    EXPECT_TRUE(error.contains(QStringLiteral("no/such/dir"))) << error.toStdString();
+
+    // Offline: the simulation's (none) again, and the window says so.
+    action("onlineConnect")->trigger();
+    EXPECT_EQ(panel->session(), nullptr);
+    EXPECT_EQ(window.monitorSource(), nullptr);
+    EXPECT_EQ(panel->stateText(), QStringLiteral("Offline"));
+}
+
+TEST_P(Online, WritesAskOnceNameTheDeviceAndThePlcAndShowTheAnswer) {
+    goOnline();
+    QSignalSpy done(session(), &model::MonitorSource::commandFinished);
+    const auto id = session()->writeWord(at(c.word), 41);
+    const auto [ok, error] = finished(id, done);
+    EXPECT_TRUE(ok) << error.toStdString();
+    ASSERT_EQ(questions.size(), 1);
+    EXPECT_TRUE(questions[0].contains(model::formatAddress(target, at(c.word))))
+        << questions[0].toStdString();
+    EXPECT_TRUE(questions[0].contains(session()->plcName())) << questions[0].toStdString();
+    EXPECT_TRUE(panel->lastCommandText().contains(QStringLiteral("acknowledged")))
+        << panel->lastCommandText().toStdString();
+    EXPECT_TRUE(QTest::qWaitFor([&] { return plcValue(c.result) == 41 + c.offset; }, kPatienceMs))
+        << plcValue(c.result);
+
+    // Force the coil: against the program where the protocol forces, else a clear refusal.
+    const auto forced = session()->force(at(c.coil), true);
+    const auto [forceOk, forceError] = finished(forced, done);
+    EXPECT_EQ(questions.size(), 1) << "asked once for each connection";
+    EXPECT_EQ(forceOk, c.forces) << forceError.toStdString();
+    if (c.forces) {
+        EXPECT_TRUE(QTest::qWaitFor([&] { return bit(c.coil); }, kPatienceMs));
+        const auto released = session()->releaseAll();
+        EXPECT_TRUE(finished(released, done).first);
+        EXPECT_TRUE(QTest::qWaitFor([&] { return !bit(c.coil); }, kPatienceMs));
+    } else {
+        EXPECT_FALSE(forceError.isEmpty());
+        EXPECT_TRUE(panel->lastCommandText().contains(forceError))
+            << panel->lastCommandText().toStdString();
+    }
+
+    // Declined: nothing is sent, and the panel says so.
+    panel->disconnectFromPlc();
+    questions.clear();
+    panel->setConfirmer([this](const QString &, const QString &text) {
+        questions << text;
+        return false;
+    });
+    goOnline();
+    QSignalSpy again(session(), &model::MonitorSource::commandFinished);
+    const auto refused = session()->writeWord(at(c.word), 7);
+    const auto [refusedOk, why] = finished(refused, again);
+    EXPECT_FALSE(refusedOk);
+    EXPECT_TRUE(why.contains(QStringLiteral("nothing was sent"))) << why.toStdString();
+    EXPECT_EQ(questions.size(), 1);
+    EXPECT_EQ(plcValue(c.result), 41 + c.offset);
+}
+
+TEST_P(Online, RunAndStopAskFirstAndTheModeFollows) {
+    goOnline();
+    ASSERT_TRUE(
+        QTest::qWaitFor([&] { return session()->plcMode() == comms::PlcMode::Run; }, kPatienceMs))
+        << comms::modeName(session()->plcMode()).toStdString();
+    EXPECT_EQ(action("onlineMonitor")->isEnabled(), c.monitorMode);
+    QSignalSpy done(session(), &model::MonitorSource::commandFinished);
+    action("onlineProgram")->trigger();
+    ASSERT_EQ(questions.size(), 1);
+    EXPECT_TRUE(questions[0].contains(session()->plcName()));
+    const comms::PlcMode stopped = c.monitorMode ? comms::PlcMode::Program : comms::PlcMode::Stop;
+    if (!c.setsMode) {
+        // The PLC's answer, in the panel: the protocol has no such command.
+        EXPECT_TRUE(QTest::qWaitFor([&] { return done.size() == 1; }, kPatienceMs));
+        EXPECT_FALSE(done[0][1].toBool());
+        EXPECT_TRUE(panel->lastCommandText().contains(QStringLiteral("not done")))
+            << panel->lastCommandText().toStdString();
+        EXPECT_EQ(session()->plcMode(), comms::PlcMode::Run);
+        return;
+    }
+    EXPECT_TRUE(QTest::qWaitFor([&] { return session()->plcMode() == stopped; }, kPatienceMs))
+        << comms::modeName(session()->plcMode()).toStdString() << " "
+        << panel->lastCommandText().toStdString();
+    action("onlineRun")->trigger();
+    EXPECT_EQ(questions.size(), 2);
+    EXPECT_TRUE(
+        QTest::qWaitFor([&] { return session()->plcMode() == comms::PlcMode::Run; }, kPatienceMs));
+    // Declined: the mode stays.
+    panel->setConfirmer([](const QString &, const QString &) { return false; });
+    action("onlineProgram")->trigger();
+    QTest::qWait(50); // nothing may be sent: there is no answer to wait for
+    EXPECT_EQ(session()->plcMode(), comms::PlcMode::Run);
+}
+
+TEST_P(Online, APulledCableShowsAtOnceKeepsStaleValuesAndReconnectsByItself) {
+    goOnline();
+    setInPlc(c.input, true);
+    ASSERT_TRUE(QTest::qWaitFor([&] { return bit(c.coil); }, kPatienceMs));
+    cable->cut(true);
+    ASSERT_TRUE(
+        QTest::qWaitFor([&] { return session()->connectionState() == State::Lost; }, kPatienceMs));
+    EXPECT_TRUE(panel->stateText().startsWith(QStringLiteral("Link lost: ")))
+        << panel->stateText().toStdString();
+    EXPECT_FALSE(session()->errorText().isEmpty());
+    EXPECT_TRUE(QTest::qWaitFor([&] { return shown() && shown()->stale; }, kPatienceMs));
+    EXPECT_TRUE(bit(c.coil)) << "the last value is kept";
+    EXPECT_EQ(window.monitorSource(), session()) << "still the PLC's, marked stale";
+    // Cable back: online again without the user doing anything, values live.
+    setInPlc(c.input, false);
+    cable->cut(false);
+    EXPECT_TRUE(
+        QTest::qWaitFor([&] { return session()->connectionState() == State::Online; }, kPatienceMs))
+        << panel->stateText().toStdString();
+    EXPECT_TRUE(QTest::qWaitFor([&] { return !bit(c.coil) && !shown()->stale; }, kPatienceMs));
+    EXPECT_GE(session()->statistics().reconnects, 1u);
+    EXPECT_TRUE(panel->statisticsText().contains(QStringLiteral("reconnects 1")))
+        << panel->statisticsText().toStdString();
+}
+
+// An online PLC and a simulation never feed the views together (the window's side, the same
+// for every protocol: tried with one).
+class OnlineAndSimulation : public Online {};
+
+TEST_P(OnlineAndSimulation, GoingOnlinePausesTheSimulationAndSimulatingOffersToGoOffline) {
+    using RunState = model::MonitorSource::RunState;
+    app::SimulationController *simulation = window.simulation();
+    ASSERT_TRUE(simulation->run());
+    ASSERT_EQ(window.monitorSource(), simulation->monitorSource());
+    // Declined: the simulation goes on, nothing connects.
+    panel->setConfirmer([this](const QString &, const QString &text) {
+        questions << text;
+        return false;
+    });
+    action("onlineConnect")->trigger();
+    EXPECT_EQ(session(), nullptr);
+    ASSERT_EQ(questions.size(), 1);
+    EXPECT_TRUE(questions[0].contains(QStringLiteral("simulation"))) << questions[0].toStdString();
+    EXPECT_EQ(simulation->runState(), RunState::Running);
+    // Accepted: paused, and the views show the PLC.
+    panel->setConfirmer([this](const QString &, const QString &text) {
+        questions << text;
+        return true;
+    });
+    goOnline();
+    EXPECT_TRUE(
+        QTest::qWaitFor([&] { return simulation->runState() == RunState::Paused; }, kPatienceMs));
+    EXPECT_EQ(window.monitorSource(), session());
+    // Run while online: paused again, and the offer to go offline; declined keeps the PLC.
+    panel->setConfirmer([this](const QString &, const QString &text) {
+        questions << text;
+        return false;
+    });
+    simulation->run();
+    EXPECT_TRUE(
+        QTest::qWaitFor([&] { return simulation->runState() == RunState::Paused; }, kPatienceMs));
+    EXPECT_TRUE(questions.last().contains(QStringLiteral("Go offline to simulate")))
+        << questions.last().toStdString();
+    EXPECT_NE(session(), nullptr);
+    EXPECT_EQ(window.monitorSource(), session());
+    // Accepted: offline, and the simulation runs and feeds the views again.
+    panel->setConfirmer([](const QString &, const QString &) { return true; });
+    simulation->run();
+    EXPECT_TRUE(QTest::qWaitFor([&] { return session() == nullptr; }, kPatienceMs));
+    EXPECT_TRUE(
+        QTest::qWaitFor([&] { return simulation->runState() == RunState::Running; }, kPatienceMs));
+    EXPECT_EQ(window.monitorSource(), simulation->monitorSource());
+}
+
+INSTANTIATE_TEST_SUITE_P(VirtualPlcOnAPty, Online, ::testing::ValuesIn(kCases),
+                         [](const auto &info) { return std::string(info.param.name); });
+INSTANTIATE_TEST_SUITE_P(VirtualPlcOnAPty, OnlineAndSimulation, ::testing::Values(kCases[0]),
+                         [](const auto &info) { return std::string(info.param.name); });
+
+// Without a PLC on the line: the test says what it found (nothing) without hanging the UI.
+TEST(OnlinePanel, TestConnectionOnASilentLineSaysSoWithinItsDeadline) {
+    QString error;
+    auto pty = comms::PtyTransport::createPair(&error); // nobody answers on it
+    ASSERT_TRUE(pty) << error.toStdString();
+    app::MainWindow window;
+    window.newProject(model::Target::get(model::Family::Pl110), QString());
+    app::ConnectionPanel *panel = window.connectionPanel();
+    comms::ConnectionSettings s = comms::defaultSettings(comms::ProtocolKind::ModbusRtu);
+    s.port = pty->peerPath();
+    s.link.timeoutMs = 100;
+    s.link.retries = 0;
+    panel->setSettings(s);
+    QSignalSpy result(panel, &app::ConnectionPanel::testFinished);
+    ASSERT_TRUE(panel->testConnection());
+    ASSERT_TRUE(result.wait(kPatienceMs));
+    EXPECT_FALSE(result[0][0].toBool());
+    EXPECT_TRUE(result[0][1].toString().startsWith(QStringLiteral("No answer")))
+        << result[0][1].toString().toStdString();
+    EXPECT_EQ(panel->session(), nullptr);
+}
+
+TEST(OnlinePanel, TestConnectionReadsTheIdentityOfTheVirtualPlc) {
+    comms::slave::SlaveOptions options;
+    options.protocol = model::ProtocolId::HostLink;
+    options.station = 0;
+    VirtualPlcUnderTest plc("; target: cpm1\nLD 000.01\nOUT 010.01\nEND(01)\n", options, false);
+    ASSERT_TRUE(plc.ready());
+    app::MainWindow window;
+    window.newProject(model::Target::get(model::Family::Cpm1), QString());
+    app::ConnectionPanel *panel = window.connectionPanel();
+    comms::ConnectionSettings s = comms::defaultSettings(comms::ProtocolKind::HostLink);
+    s.port = plc.path;
+    panel->setSettings(s);
+    QSignalSpy result(panel, &app::ConnectionPanel::testFinished);
+    ASSERT_TRUE(panel->testConnection());
+    ASSERT_TRUE(result.wait(kPatienceMs));
+    EXPECT_TRUE(result[0][0].toBool()) << result[0][1].toString().toStdString();
+    EXPECT_TRUE(result[0][1].toString().contains(QStringLiteral("model code 11h")))
+        << result[0][1].toString().toStdString();
+    EXPECT_EQ(panel->session(), nullptr) << "a test does not stay online";
+}
+
+TEST(OnlinePanel, AVpcIsListedAndSaysWhatToDoInstead) {
+    app::MainWindow window;
+    window.newProject(model::Target::get(model::Family::Vpc), QString());
+    app::ConnectionPanel *panel = window.connectionPanel();
+    EXPECT_FALSE(panel->canConnect());
+    auto *note = panel->findChild<QLabel *>(QStringLiteral("connectionUnpublished"));
+    ASSERT_TRUE(note);
+    EXPECT_TRUE(note->text().contains(QStringLiteral("not published")));
+    EXPECT_TRUE(note->text().contains(QStringLiteral("rungstudio-cli record")));
+    EXPECT_FALSE(panel->connectToPlc());
+    EXPECT_FALSE(window.findChild<QAction *>(QStringLiteral("onlineConnect"))->isEnabled());
+}
+
+TEST(OnlinePanel, ThePortIsRememberedForTheNextWindow) {
+    QString error;
+    auto pty = comms::PtyTransport::createPair(&error);
+    ASSERT_TRUE(pty) << error.toStdString();
+    {
+        app::MainWindow window;
+        window.newProject(model::Target::get(model::Family::Pl110), QString());
+        comms::ConnectionSettings s = comms::defaultSettings(comms::ProtocolKind::ModbusRtu);
+        s.port = pty->peerPath();
+        s.link.timeoutMs = 50;
+        s.link.retries = 0;
+        window.connectionPanel()->setSettings(s);
+        ASSERT_TRUE(window.connectionPanel()->connectToPlc());
+        window.connectionPanel()->disconnectFromPlc();
+    }
+    app::MainWindow window;
+    window.newProject(model::Target::get(model::Family::Pl110), QString());
+    EXPECT_EQ(window.connectionPanel()->settings().port, pty->peerPath());
+}
+
+TEST(OnlinePanel, LineSettingsStartFromTheProtocolsDefaults) {
+    app::MainWindow window;
+    window.newProject(model::Target::get(model::Family::Cpm1), QString());
+    const comms::ConnectionSettings hostLink = window.connectionPanel()->settings();
+    EXPECT_EQ(hostLink.protocol, comms::ProtocolKind::HostLink);
+    EXPECT_EQ(hostLink.serial.baud, 9600);
+    EXPECT_EQ(comms::frameFormatText(hostLink.serial), QStringLiteral("7E2"));
+    EXPECT_EQ(hostLink.station, 0);
+    window.newProject(model::Target::get(model::Family::Vigor), QStringLiteral("VB"));
+    const comms::ConnectionSettings vigor = window.connectionPanel()->settings();
+    EXPECT_EQ(vigor.protocol, comms::ProtocolKind::VigorLink);
+    EXPECT_EQ(vigor.serial.baud, 19200);
+    EXPECT_EQ(comms::frameFormatText(vigor.serial), QStringLiteral("7E1"));
+}
+
+} // namespace
+} // namespace rung::test
