@@ -19,7 +19,7 @@ QStringList targetDisplayNames();
 // output terminal (Y0, o00, 010.00, Q1), as the target writes it.
 QString exampleDevice(const Target &target, bool output = false);
 // A data word `offset` elements after the first of the target's data memory (Vigor D10,
-// CPM1 DM0010, PL110 V11, VPC d10 for offset 10), for hints like "D10 > 100" or "D0..D3".
+// CPM1 DM 0010, PL110 V10 for offset 10), for hints like "D10 > 100" or "D0..D3".
 QString exampleWord(const Target &target, int offset = 0);
 // "D0..D3": a range of the first `count` data words.
 QString exampleWordRange(const Target &target, int count);

@@ -95,9 +95,9 @@ TEST(MessagesFromTables, ExampleDevicesAreEachFamilysOwn) {
 TEST(MessagesFromTables, ExampleWordsAreEachFamilysDataMemory) {
     EXPECT_EQ(exampleWord(Target::get(Family::Vigor), 10), QStringLiteral("D10"));
     EXPECT_EQ(exampleWordRange(Target::get(Family::Vigor), 4), QStringLiteral("D0..D3"));
-    EXPECT_EQ(exampleWord(Target::get(Family::Cpm1), 10), QStringLiteral("DM0010"));
-    EXPECT_EQ(exampleWord(Target::get(Family::Pl110), 10), QStringLiteral("V11"));
-    EXPECT_EQ(exampleWordRange(Target::get(Family::Pl110), 4), QStringLiteral("V1..V4"));
+    EXPECT_EQ(exampleWord(Target::get(Family::Cpm1), 10), QStringLiteral("DM 0010"));
+    EXPECT_EQ(exampleWord(Target::get(Family::Pl110), 10), QStringLiteral("V10"));
+    EXPECT_EQ(exampleWordRange(Target::get(Family::Pl110), 4), QStringLiteral("V0..V3"));
     for (Family f : Target::families()) {
         const Target &t = Target::get(f);
         const QString word = exampleWord(t, 10);

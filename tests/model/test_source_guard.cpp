@@ -164,7 +164,8 @@ TEST(SourceGuard, LiteralScannerSeesCodeNotComments) {
 // F index registers), a colour, a time format.
 bool isNoDevice(const QString &word, const QString &literal) {
     static const QRegularExpression key(QStringLiteral("^F([1-9]|1[0-2])$"));
-    return key.match(word).hasMatch() || literal.startsWith(QLatin1String("color: #")) ||
+    // A colour (#b00020) is no PL110 B device.
+    return key.match(word).hasMatch() || literal.contains(QLatin1Char('#') + word) ||
            word == QLatin1String("0000.00");
 }
 

@@ -51,6 +51,10 @@ int main(int argc, char **argv) {
     }
     std::printf("ready\n");
     std::fflush(stdout);
+    // A test that died (an abort, a sanitizer's halt) cannot stop its peer: an orphan leaves,
+    // and so does a peer whose pseudo-terminal is gone (EIO at once, forever: a spinning
+    // core for the rest of the test run).
+    const pid_t parent = ::getppid();
     for (;;) {
         if (!rtu && modbus_tcp_accept(ctx, &server) < 0)
             return 1;
@@ -59,6 +63,8 @@ int main(int argc, char **argv) {
             const int n = modbus_receive(ctx, request);
             if (n == 0)
                 continue; // not for this unit
+            if (::getppid() != parent || (rtu && n < 0 && errno == EIO))
+                return 0;
             if (n < 0)
                 break; // the connection closed (TCP), or a broken frame (RTU): go on
             modbus_reply(ctx, request, n, map);
