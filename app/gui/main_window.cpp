@@ -59,6 +59,11 @@ MainWindow::MainWindow(QWidget *parent)
     buildMonitorDocks(); // main_window_panels.cpp
     setupSimulation();
     setupOnline(); // main_window_online.cpp
+    // Each dock tabified beside the project (terminals, simulation, scan debugger,
+    // connection) and hidden again leaves another tab in front; a first start shows the
+    // project (a saved layout, restored below, keeps the user's own).
+    if (auto *project = findChild<QDockWidget *>(QStringLiteral("projectDock")))
+        project->raise();
     buildActions();
 
     m_ilTimer.setSingleShot(true);

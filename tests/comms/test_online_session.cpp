@@ -303,7 +303,8 @@ TEST(OnlineSession, HostLinkSwitchesToMonitorToWriteSaysSoAndShowsItsForces) {
     h.session->connectToPlc();
     ASSERT_TRUE(eventually([&] { return h.value("DM 0005") == 0x1234; }));
     ASSERT_TRUE(eventually([&] { return h.session->plcMode() == PlcMode::Run; }));
-    EXPECT_EQ(h.session->runState(), RunState::Running);
+    // The mode and the run state reach the owner thread as two posts.
+    EXPECT_TRUE(eventually([&] { return h.session->runState() == RunState::Running; }));
     EXPECT_TRUE(eventually([&] { return identity.count() > 0; }));
     EXPECT_EQ(h.session->identity().model, QStringLiteral("model code 12h"));
     const auto w = h.finish(h.session->writeWord(address(h.target, "DM 0005"), 99), finished);
