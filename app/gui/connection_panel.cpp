@@ -1,16 +1,17 @@
+// The connection panel's settings form (connection_panel.h): the target's protocols, the port
+// or host, the line settings from each protocol's defaults, remembered per family. The live
+// side (connecting, testing, state, traffic) is connection_panel_link.cpp.
+
 #include "connection_panel.h"
 
 #include "dialogs.h"
 
-#include "comms/driver/relay.h"
 #include "comms/transport/serial_transport.h"
-#include "model/target/address.h"
 #include "model/target/target.h"
 
 #include <QCheckBox>
 #include <QComboBox>
 #include <QEvent>
-#include <QFile>
 #include <QFontDatabase>
 #include <QFormLayout>
 #include <QGroupBox>
@@ -21,14 +22,11 @@
 #include <QPlainTextEdit>
 #include <QPushButton>
 #include <QRadioButton>
-#include <QSaveFile>
 #include <QSettings>
 #include <QSpinBox>
 #include <QStackedWidget>
 #include <QTimer>
 #include <QVBoxLayout>
-
-#include <QHash>
 
 namespace rung::app {
 
@@ -36,88 +34,12 @@ namespace {
 
 using comms::ConnectionSettings;
 using comms::ProtocolKind;
-using State = comms::OnlineSession::ConnectionState;
 
 // The frame formats the manuals name (data bits, parity, stop bits).
 constexpr const char *kFrames[] = {"7E1", "7E2", "7O1", "7O2", "8N1", "8N2", "8E1", "8O1"};
 constexpr int kBauds[] = {1200, 2400, 4800, 9600, 19200, 38400, 57600, 115200};
 // The traffic log keeps this many lines (the session's tap keeps its own ring).
 constexpr int kTrafficLines = 5000;
-
-// The user's words for a command, for the question and the result line.
-QString describe(const model::Target &target, const model::DeviceCommand &c) {
-    using Kind = model::DeviceCommand::Kind;
-    const QString device = model::formatAddress(target, c.address);
-    const QString onOff = c.value ? ConnectionPanel::tr("ON") : ConnectionPanel::tr("OFF");
-    switch (c.kind) {
-    case Kind::WriteBit:
-        return ConnectionPanel::tr("Set %1 %2").arg(device, onOff);
-    case Kind::WriteWord:
-        return ConnectionPanel::tr("Write %1 = %2").arg(device).arg(c.value);
-    case Kind::WriteSetValue:
-        return ConnectionPanel::tr("Write the preset of %1 = %2").arg(device).arg(c.value);
-    case Kind::Force:
-        return ConnectionPanel::tr("Force %1 %2").arg(device, onOff);
-    case Kind::Release:
-        return ConnectionPanel::tr("Release the force on %1").arg(device);
-    case Kind::ReleaseAll:
-        return ConnectionPanel::tr("Release every force");
-    }
-    return {};
-}
-
-// The online session with the panel's first-time question: the first change of a
-// connection asks before it goes to the PLC; a refusal answers the command at once, with
-// nothing sent.
-class ConfirmingSession final : public comms::OnlineSession {
-public:
-    using Ask = std::function<bool(const QString &what)>;
-    ConfirmingSession(const model::Target &target, ConnectionSettings settings, Ask ask)
-        : OnlineSession(target, std::move(settings))
-        , m_ask(std::move(ask)) {}
-
-    QString what(CommandId id) const { return m_what.value(id); }
-    void remember(CommandId id, const QString &what) { m_what.insert(id, what); }
-
-protected:
-    void startCommand(CommandId id, const model::DeviceCommand &command) override {
-        const QString text = describe(target(), command);
-        m_what.insert(id, text);
-        if (!m_confirmed) {
-            if (!m_ask || !m_ask(text)) {
-                finishCommand(id, false,
-                              ConnectionPanel::tr("Cancelled: nothing was sent to the PLC"));
-                return;
-            }
-            m_confirmed = true;
-        }
-        OnlineSession::startCommand(id, command);
-    }
-
-private:
-    Ask m_ask;
-    bool m_confirmed = false;
-    QHash<CommandId, QString> m_what;
-};
-
-std::vector<ProtocolKind> protocolsOf(const model::Target &target) {
-    std::vector<ProtocolKind> kinds;
-    for (const model::ProtocolMap &map : target.protocolMaps) {
-        switch (map.protocol) {
-        case model::ProtocolId::VigorLink:
-            kinds.push_back(ProtocolKind::VigorLink);
-            break;
-        case model::ProtocolId::Modbus:
-            kinds.push_back(ProtocolKind::ModbusRtu);
-            kinds.push_back(ProtocolKind::ModbusTcp);
-            break;
-        case model::ProtocolId::HostLink:
-            kinds.push_back(ProtocolKind::HostLink);
-            break;
-        }
-    }
-    return kinds;
-}
 
 QString settingsKey(const QString &name) {
     return QStringLiteral("online/") + name;
@@ -375,14 +297,14 @@ void ConnectionPanel::setTarget(const model::Target &target, const QString &mode
 }
 
 bool ConnectionPanel::canConnect() const {
-    return m_target && !protocolsOf(*m_target).empty();
+    return m_target && !comms::protocolsOf(*m_target).empty();
 }
 
 void ConnectionPanel::fillProtocols() {
     m_protocol->clear();
     if (!m_target)
         return;
-    for (ProtocolKind kind : protocolsOf(*m_target))
+    for (ProtocolKind kind : comms::protocolsOf(*m_target))
         m_protocol->addItem(comms::protocolName(kind), int(kind));
     // The protocol last used with this family, else the first.
     const int last =
@@ -486,319 +408,6 @@ bool ConnectionPanel::confirm(const QString &title, const QString &text) {
         return m_confirmer(title, text);
     return messageBox(QMessageBox::Question, this, title, text,
                       QMessageBox::Yes | QMessageBox::No) == QMessageBox::Yes;
-}
-
-std::unique_ptr<comms::OnlineSession> ConnectionPanel::makeSession() const {
-    auto *self = const_cast<ConnectionPanel *>(this);
-    ConnectionSettings s = settings();
-    auto session = std::make_unique<ConfirmingSession>(
-        *m_target, s, [self, where = s.where()](const QString &what) {
-            const QString plc = self->m_session ? self->m_session->plcName() : where;
-            return self->confirm(
-                tr("Change the PLC's Memory"),
-                tr("%1 on %2?\n\nThis changes the memory of a real PLC, which may be driving a "
-                   "machine. You are asked once for each connection; later changes go at once.")
-                    .arg(what, plc));
-        });
-    return session;
-}
-
-bool ConnectionPanel::connectToPlc() {
-    if (m_session)
-        return true;
-    if (!canConnect()) {
-        emit message(m_vpcNote->text());
-        return false;
-    }
-    const ConnectionSettings s = settings();
-    if (s.where().isEmpty() || (s.via == ConnectionSettings::Via::Serial && s.port.isEmpty())) {
-        emit message(tr("Choose the serial port the PLC is on (or type its path)"));
-        return false;
-    }
-    if (m_guard && !m_guard())
-        return false;
-    m_test.reset();
-    remember();
-    m_session = makeSession();
-    m_session->setTrafficTap(m_record->isChecked());
-    m_trafficNext = 0;
-    m_testResult->clear();
-    m_lastCommand.clear();
-    m_command->clear();
-    comms::OnlineSession *session = m_session.get();
-    connect(session, &comms::OnlineSession::connectionStateChanged, this,
-            &ConnectionPanel::updateState);
-    connect(session, &comms::OnlineSession::plcModeChanged, this, &ConnectionPanel::updateState);
-    connect(session, &comms::OnlineSession::identityChanged, this, &ConnectionPanel::updateState);
-    connect(session, &model::MonitorSource::errorTextChanged, this, &ConnectionPanel::updateState);
-    connect(session, &comms::OnlineSession::statisticsChanged, this,
-            &ConnectionPanel::updateStatistics);
-    connect(session, &comms::OnlineSession::trafficAvailable, this, &ConnectionPanel::pullTraffic);
-    connect(session, &comms::OnlineSession::notice, this, [this](const QString &text) {
-        m_notice->setText(text);
-        emit message(text);
-    });
-    connect(session, &model::MonitorSource::commandFinished, this,
-            [this, session](model::MonitorSource::CommandId id, bool ok, const QString &error) {
-                const QString what = static_cast<ConfirmingSession *>(session)->what(id);
-                m_lastCommand = ok ? tr("%1: done, the PLC acknowledged it").arg(what)
-                                   : tr("%1: not done: %2").arg(what, error);
-                m_command->setText(m_lastCommand);
-                m_command->setStyleSheet(ok ? QString()
-                                            : QStringLiteral("QLabel { color: #b00020; }"));
-            });
-    m_notice->setText(
-        tr("These PLCs cannot send their program back, so the IDE cannot know whether the PLC "
-           "runs the program shown here. Compare by reading devices: watch them in the ladder "
-           "or the watch table."));
-    m_session->connectToPlc();
-    updateState();
-    emit sessionChanged(session);
-    return true;
-}
-
-void ConnectionPanel::disconnectFromPlc() {
-    if (!m_session)
-        return;
-    pullTraffic();
-    // The views let go of the session before it goes; session() is null while they do.
-    std::unique_ptr<comms::OnlineSession> old = std::move(m_session);
-    emit sessionChanged(nullptr);
-    old->disconnectFromPlc();
-    old.reset();
-    m_notice->clear();
-    updateState();
-}
-
-model::MonitorSource::CommandId ConnectionPanel::setPlcMode(comms::PlcMode mode) {
-    if (!m_session)
-        return 0;
-    const model::MonitorSource::CommandId id = m_session->setPlcMode(mode);
-    static_cast<ConfirmingSession *>(m_session.get())
-        ->remember(id, tr("Switch to %1").arg(comms::modeName(mode)));
-    return id;
-}
-
-bool ConnectionPanel::requestPlcMode(comms::PlcMode mode) {
-    comms::OnlineSession *session = m_session.get();
-    if (!session)
-        return false;
-    // Host Link has PROGRAM / MONITOR / RUN; the others RUN and STOP (their RUN bit).
-    const bool hostLink = session->settings().protocol == comms::ProtocolKind::HostLink;
-    if (mode == comms::PlcMode::Program && !hostLink)
-        mode = comms::PlcMode::Stop;
-    QString what;
-    switch (mode) {
-    case comms::PlcMode::Run:
-        what = tr("The PLC runs its program: its outputs switch as the program says.");
-        break;
-    case comms::PlcMode::Monitor:
-        what = tr("The PLC runs its program and takes writes from the IDE.");
-        break;
-    default:
-        what = tr("The PLC stops running its program.");
-        break;
-    }
-    if (!confirm(tr("PLC Mode"),
-                 tr("Switch %1 to %2?\n\n%3").arg(session->plcName(), comms::modeName(mode), what)))
-        return false;
-    return setPlcMode(mode) != 0;
-}
-
-bool ConnectionPanel::testConnection() {
-    if (m_session || m_test) {
-        emit message(m_session ? tr("Already connected: the panel shows what the PLC reports")
-                               : tr("A test is under way"));
-        return false;
-    }
-    if (!canConnect()) {
-        emit message(m_vpcNote->text());
-        return false;
-    }
-    const ConnectionSettings s = settings();
-    if (s.where().isEmpty()) {
-        emit message(tr("Choose the serial port the PLC is on (or type its path)"));
-        return false;
-    }
-    remember();
-    m_test = std::make_unique<comms::OnlineSession>(*m_target, s);
-    m_testResult->setStyleSheet(QString());
-    m_testResult->setText(tr("Testing %1...").arg(s.where()));
-    comms::OnlineSession *test = m_test.get();
-    connect(test, &comms::OnlineSession::connectionStateChanged, this, [this, test](State state) {
-        if (m_test.get() != test)
-            return; // the test is over; the session is on its way out
-        if (state == State::Online) {
-            const comms::PlcIdentity id = test->identity();
-            QString found = id.model.isEmpty()
-                                ? tr("The PLC answers (this protocol does not report the model)")
-                                : tr("The PLC answers: %1").arg(id.model);
-            if (!id.version.isEmpty())
-                found += tr(", version %1").arg(id.version);
-            if (test->plcMode() != comms::PlcMode::Unknown)
-                found += tr("; mode %1").arg(comms::modeName(test->plcMode()));
-            const comms::LinkStatistics st = test->statistics();
-            found += tr("; round trip %1 ms").arg(st.lastRoundTripMs, 0, 'f', 1);
-            finishTest(true, found + QLatin1Char('.'));
-        } else if (state == State::Lost || state == State::Failed ||
-                   (state == State::Connecting && !test->errorText().isEmpty())) {
-            finishTest(false, tr("No answer: %1").arg(test->errorText()));
-        }
-    });
-    // A silent line: the session keeps trying; the test gives up after every retry's time.
-    if (!m_testDeadline) {
-        m_testDeadline = new QTimer(this);
-        m_testDeadline->setSingleShot(true);
-        connect(m_testDeadline, &QTimer::timeout, this, [this] {
-            if (m_test)
-                finishTest(false, m_test->errorText().isEmpty()
-                                      ? tr("No answer from the PLC")
-                                      : tr("No answer: %1").arg(m_test->errorText()));
-        });
-    }
-    m_testDeadline->start(s.link.timeoutMs * (s.link.retries + 1) + 1000);
-    m_test->connectToPlc();
-    updateState();
-    return true;
-}
-
-void ConnectionPanel::finishTest(bool ok, const QString &text) {
-    if (m_testDeadline)
-        m_testDeadline->stop();
-    // Not inside the test session's own signal: it goes on the next turn of the loop.
-    if (m_test) {
-        m_test->disconnectFromPlc();
-        m_test.release()->deleteLater();
-    }
-    m_testResult->setText(text);
-    m_testResult->setStyleSheet(ok ? QStringLiteral("QLabel { color: #1b5e20; }")
-                                   : QStringLiteral("QLabel { color: #b00020; }"));
-    updateState();
-    emit testFinished(ok, text);
-}
-
-QString ConnectionPanel::stateText() const {
-    if (!m_session)
-        return canConnect() ? tr("Offline") : tr("Offline: no link to this PLC");
-    const QString error = m_session->errorText();
-    switch (m_session->connectionState()) {
-    case State::Disconnected:
-        return tr("Offline");
-    case State::Connecting:
-        return error.isEmpty()
-                   ? tr("Connecting to %1...").arg(m_session->settings().where())
-                   : tr("Connecting to %1: %2").arg(m_session->settings().where(), error);
-    case State::Online: {
-        QString text = tr("Online: %1").arg(m_session->plcName());
-        if (m_session->plcMode() != comms::PlcMode::Unknown)
-            text += QStringLiteral(", ") + comms::modeName(m_session->plcMode());
-        if (!m_session->identity().model.isEmpty())
-            text += QStringLiteral(" (%1)").arg(m_session->identity().model);
-        if (!error.isEmpty())
-            text += QLatin1Char('\n') + error;
-        return text;
-    }
-    case State::Lost:
-        return tr("Link lost: %1\nTrying again; the values shown are the last read, marked "
-                  "stale.")
-            .arg(error);
-    case State::Failed:
-        return tr("Cannot connect: %1").arg(error);
-    }
-    return {};
-}
-
-void ConnectionPanel::updateState() {
-    const bool online = m_session != nullptr;
-    m_connect->setText(online ? tr("Disconnect") : tr("Connect"));
-    m_connect->setEnabled(canConnect());
-    m_testButton->setEnabled(canConnect() && !online && !m_test);
-    m_settingsBox->setEnabled(canConnect() && !online);
-    // Online the settings cannot change: the state names the port and the PLC, and the room
-    // goes to the figures and the traffic.
-    m_settingsBox->setVisible(!online);
-    m_state->setText(stateText());
-    QString colour;
-    if (m_session) {
-        switch (m_session->connectionState()) {
-        case State::Online:
-            colour = QStringLiteral("#1b5e20");
-            break;
-        case State::Lost:
-        case State::Failed:
-            colour = QStringLiteral("#b00020");
-            break;
-        case State::Connecting: // first contact failed: the session tries again
-            if (!m_session->errorText().isEmpty())
-                colour = QStringLiteral("#b00020");
-            break;
-        default:
-            break;
-        }
-    }
-    m_state->setStyleSheet(
-        colour.isEmpty() ? QStringLiteral("QLabel { font-weight: bold; }")
-                         : QStringLiteral("QLabel { font-weight: bold; color: %1; }").arg(colour));
-    updateStatistics();
-}
-
-QString ConnectionPanel::statisticsText() const {
-    if (!m_session)
-        return {};
-    const comms::LinkStatistics s = m_session->statistics();
-    return tr("Errors %1, retries %2, timeouts %3, refused %4, reconnects %5\n"
-              "Round trip %6 ms (mean %7, max %8); refresh %9 ms, %10 frame(s)")
-        .arg(s.errors)
-        .arg(s.retries)
-        .arg(s.timeouts)
-        .arg(s.refusals)
-        .arg(s.reconnects)
-        .arg(s.lastRoundTripMs, 0, 'f', 1)
-        .arg(s.meanRoundTripMs, 0, 'f', 1)
-        .arg(s.maxRoundTripMs, 0, 'f', 1)
-        .arg(s.lastRefreshMs, 0, 'f', 1)
-        .arg(s.framesPerRefresh);
-}
-
-void ConnectionPanel::updateStatistics() {
-    m_statistics->setText(statisticsText());
-}
-
-QString ConnectionPanel::lastCommandText() const {
-    return m_lastCommand;
-}
-
-void ConnectionPanel::pullTraffic() {
-    if (!m_session)
-        return;
-    quint64 next = m_trafficNext;
-    const std::vector<comms::TrafficRecord> records = m_session->traffic(m_trafficNext, &next);
-    m_trafficNext = next;
-    if (records.empty())
-        return;
-    //: the direction of bytes in the traffic log: from the PC to the PLC, and back
-    const QString sent = tr("PC>PLC");
-    const QString received = tr("PLC>PC");
-    QStringList lines;
-    lines.reserve(int(records.size()));
-    for (const comms::TrafficRecord &r : records)
-        lines << comms::formatTrafficRecord(r, m_session->trafficStart(), sent, received);
-    m_traffic->appendPlainText(lines.join(QLatin1Char('\n')));
-}
-
-bool ConnectionPanel::saveTraffic(const QString &path, QString *error) const {
-    QSaveFile file(path);
-    if (!file.open(QIODevice::WriteOnly | QIODevice::Text)) {
-        *error = tr("Cannot write %1: %2").arg(path, file.errorString());
-        return false;
-    }
-    file.write(m_traffic->toPlainText().toUtf8());
-    file.write("\n");
-    if (!file.commit()) {
-        *error = tr("Cannot write %1: %2").arg(path, file.errorString());
-        return false;
-    }
-    return true;
 }
 
 } // namespace rung::app

@@ -18,6 +18,18 @@ model::ProtocolId protocolIdOf(ProtocolKind kind) {
     }
 }
 
+std::vector<ProtocolKind> protocolsOf(const model::Target &target) {
+    std::vector<ProtocolKind> kinds;
+    for (const ProtocolKind kind : {ProtocolKind::VigorLink, ProtocolKind::ModbusRtu,
+                                    ProtocolKind::ModbusTcp, ProtocolKind::HostLink})
+        for (const model::ProtocolMap &map : target.protocolMaps)
+            if (map.protocol == protocolIdOf(kind)) {
+                kinds.push_back(kind);
+                break;
+            }
+    return kinds;
+}
+
 QString protocolName(ProtocolKind kind) {
     switch (kind) {
     case ProtocolKind::VigorLink:

@@ -26,6 +26,8 @@ namespace rung::comms {
 enum class ProtocolKind : std::uint8_t { VigorLink, ModbusRtu, ModbusTcp, HostLink };
 
 model::ProtocolId protocolIdOf(ProtocolKind kind);
+// The protocols a target can be reached by: those whose map its table has (a VPC: none).
+std::vector<ProtocolKind> protocolsOf(const model::Target &target);
 QString protocolName(ProtocolKind kind); // "Vigor Computer Link", "Modbus RTU", ...
 
 // Stop: a PLC that has RUN and STOP only (its RUN bit is off); Program / Monitor / Run: Host Link.

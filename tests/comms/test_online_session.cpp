@@ -278,6 +278,16 @@ TEST(OnlineSession, CommandsWhileNotConnectedFailAtOnce) {
     EXPECT_EQ(h.transport(), nullptr); // no port was even opened
 }
 
+// What the connection panel offers per family comes from the target tables' maps.
+TEST(OnlineSession, EachFamilyIsReachedByTheProtocolsItsTableMaps) {
+    using K = ProtocolKind;
+    const auto of = [](model::Family f) { return protocolsOf(model::Target::get(f)); };
+    EXPECT_EQ(of(model::Family::Vigor), (std::vector<K>{K::VigorLink, K::ModbusRtu, K::ModbusTcp}));
+    EXPECT_EQ(of(model::Family::Pl110), (std::vector<K>{K::ModbusRtu, K::ModbusTcp}));
+    EXPECT_EQ(of(model::Family::Cpm1), (std::vector<K>{K::HostLink}));
+    EXPECT_TRUE(of(model::Family::Vpc).empty()); // its link protocol is not published
+}
+
 TEST(OnlineSession, SettingsThatCannotWorkFailWithTheReason) {
     ConnectionSettings s = pl110Settings();
     s.station = 0;
