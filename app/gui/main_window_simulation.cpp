@@ -180,7 +180,10 @@ void MainWindow::updateSimulationStatus() {
     const bool history = m_simulation->historyShown();
     if (m_statusHistory) {
         m_statusHistory->setVisible(history);
-        m_statusHistory->setText(m_simulation->historyText() + tr(" (read-only)"));
+        // "(read-only)" is the framed origin label's beside it; a full status bar (a long
+        // run state at x10) must not squeeze the scan's number out.
+        m_statusHistory->setText(m_simulation->historyText());
+        m_statusHistory->setMinimumWidth(m_statusHistory->sizeHint().width());
     }
     const bool scanning = state == State::Running || state == State::Stepping;
     for (QAction *a : findChildren<QAction *>()) {

@@ -1,6 +1,9 @@
 // The window on a small screen, and the names export dialogs write.
 
 #include "app/gui/main_window.h"
+#include "app/gui/simulation_controller.h"
+#include "editor/document.h"
+#include "editor/ladder_view.h"
 
 #include <QApplication>
 #include <QDockWidget>
@@ -100,6 +103,42 @@ TEST(Screen, ALayoutThatWorksDownTo1024x600) {
             EXPECT_GE(label->width(), label->sizeHint().width()) << label->text().toStdString();
         }
     }
+}
+
+// The first simulation opens the terminals and the run controls as tabs beside the project,
+// not as a column of their own: on a 1366x768 screen that column cut the ladder's coils off.
+TEST(Screen, TheFirstSimulationLeavesTheLadderItsWidth) {
+    for (const char *key : {"window/geometry", "window/state", "view/sideBySide", "view/split"})
+        QSettings().remove(QString::fromLatin1(key));
+    app::MainWindow window;
+    window.resize(1366, 768 - 32);
+    window.show();
+    std::vector<model::Diagnostic> errors;
+    ASSERT_TRUE(window.document()->setListing(QStringLiteral("LD X0\nOUT Y0\nEND\n"), &errors));
+    for (int k = 0; k < 5; ++k) // the first start's dock sizes settle
+        QApplication::processEvents();
+    const int before = window.ladderView()->width();
+    ASSERT_TRUE(window.simulation()->run());
+    for (int k = 0; k < 5; ++k)
+        QApplication::processEvents();
+    auto *project = window.findChild<QDockWidget *>(QStringLiteral("projectDock"));
+    auto *io = window.findChild<QDockWidget *>(QStringLiteral("ioDock"));
+    auto *controls = window.findChild<QDockWidget *>(QStringLiteral("simulationDock"));
+    ASSERT_TRUE(project && io && controls);
+    EXPECT_TRUE(io->isVisible());
+    EXPECT_FALSE(io->visibleRegion().isEmpty()); // the terminals in front
+    EXPECT_TRUE(controls->isVisible());
+    const QList<QDockWidget *> tabs = window.tabifiedDockWidgets(project);
+    EXPECT_TRUE(tabs.contains(io));
+    EXPECT_TRUE(tabs.contains(controls));
+    EXPECT_EQ(window.ladderView()->width(), before);
+    for (QDockWidget *dock : window.findChildren<QDockWidget *>()) {
+        if (dock->isVisible()) {
+            EXPECT_NE(window.dockWidgetArea(dock), Qt::RightDockWidgetArea)
+                << dock->objectName().toStdString();
+        }
+    }
+    window.simulation()->stop();
 }
 
 using SavePath = test::WindowFixture;

@@ -232,7 +232,7 @@ TEST_F(Debugging, TheHistoryShowsAnEarlierScanInTheViewsMarkedThenReturnsToLive)
     EXPECT_EQ(window.watchListView()->monitorSource(), sim()->historySource());
     ASSERT_TRUE(eventually([&] {
         return test::statusText(window).contains(
-            QStringLiteral("History: scan 10 (0:00:00.10) (read-only)"));
+            QStringLiteral("History: scan 10 (0:00:00.10)|History (read-only)"));
     })) << test::statusText(window).toStdString();
     EXPECT_EQ(panel->historyLabel(), QStringLiteral("History: scan 10 (0:00:00.10)"));
     // A write is refused and said.
