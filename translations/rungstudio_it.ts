@@ -371,7 +371,7 @@ Codice di uscita: 0 nessun errore, 1 il programma contiene errori, 2 errore di u
     <message>
         <location line="+1"/>
         <source>Test Connection</source>
-        <translation>Test della connessione</translation>
+        <translation>Prova connessione</translation>
     </message>
     <message>
         <location line="+1"/>
@@ -1732,7 +1732,7 @@ Editor di schemi ladder e liste istruzioni per %2.</translation>
     <message>
         <location line="-63"/>
         <source>&amp;Test Connection</source>
-        <translation>&amp;Test della connessione</translation>
+        <translation>&amp;Prova connessione</translation>
     </message>
     <message>
         <location line="+5"/>

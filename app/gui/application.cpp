@@ -98,8 +98,11 @@ int runGui(int argc, char **argv) {
                 QTimer::singleShot(chart ? 8000 : 4000, &window, [&window, &app, path, chart] {
                     if (chart)
                         window.timingChart()->placeCursor(0, 35000);
-                    window.grab().save(path);
-                    app.quit();
+                    // The status bar lays the history marks out over a few posted events.
+                    QTimer::singleShot(chart ? 300 : 0, &window, [&window, &app, path] {
+                        window.grab().save(path);
+                        app.quit();
+                    });
                 });
                 return;
             }

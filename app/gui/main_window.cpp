@@ -1,6 +1,7 @@
 #include "main_window.h"
 
 #include "dialogs.h"
+#include "eliding_label.h"
 #include "recovery.h"
 #include "symbol_table.h"
 
@@ -49,7 +50,7 @@ MainWindow::MainWindow(QWidget *parent)
 
     m_statusTarget = new QLabel;
     m_statusSteps = new QLabel;
-    m_statusCursor = new QLabel;
+    m_statusCursor = new ElidingLabel; // the first to give way in a full status bar
     statusBar()->addWidget(m_statusCursor, 1);
     statusBar()->addPermanentWidget(m_statusSteps);
     statusBar()->addPermanentWidget(m_statusTarget);
@@ -353,10 +354,10 @@ void MainWindow::updateStatus() {
         int line = 0;
         int index = 0;
         m_il->getCursorPosition(&line, &index);
-        m_statusCursor->setText(tr("Line %1, column %2").arg(line + 1).arg(index + 1));
+        m_statusCursor->setFullText(tr("Line %1, column %2").arg(line + 1).arg(index + 1));
     } else {
         const editor::CellCursor c = m_ladder->cursor();
-        m_statusCursor->setText(
+        m_statusCursor->setFullText(
             tr("Rung %1, row %2, column %3").arg(c.rung + 1).arg(c.row + 1).arg(c.column + 1));
     }
 }

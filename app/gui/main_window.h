@@ -47,6 +47,7 @@ class MonitorSource;
 namespace rung::app {
 
 class ConnectionPanel;
+class ElidingLabel;
 class RecoveryFile;
 class ScanDebuggerView;
 class SimulationController;
@@ -220,9 +221,9 @@ private:
     QToolBar *m_toolBar = nullptr;
     QLabel *m_statusTarget;
     QLabel *m_statusSteps;
-    QLabel *m_statusCursor;
+    ElidingLabel *m_statusCursor;
     SimulationController *m_simulation = nullptr;
-    QLabel *m_statusSimulation = nullptr;
+    ElidingLabel *m_statusSimulation = nullptr;
     QLabel *m_statusHistory = nullptr;
     SimulationPanel *m_simulationPanel = nullptr;
     ScanDebuggerView *m_scanDebugger = nullptr;

@@ -1,5 +1,6 @@
 #include "main_window.h"
 
+#include "eliding_label.h"
 #include "simulation_controller.h"
 #include "simulation_panel.h"
 
@@ -45,7 +46,7 @@ void MainWindow::setupSimulation() {
     m_statusHistory->hide();
     statusBar()->addPermanentWidget(m_statusHistory);
     updateMonitorLabel(); // the origin's label, left of the simulation's, hidden until values show
-    m_statusSimulation = new QLabel;
+    m_statusSimulation = new ElidingLabel;
     m_statusSimulation->setObjectName(QStringLiteral("simulationStatus"));
     statusBar()->addPermanentWidget(m_statusSimulation);
     connect(m_simulation, &SimulationController::statusChanged, this,
@@ -176,7 +177,7 @@ void MainWindow::buildSimulationMenu(QToolBar *bar) {
 void MainWindow::updateSimulationStatus() {
     using State = model::MonitorSource::RunState;
     const State state = m_simulation->runState();
-    m_statusSimulation->setText(m_simulation->statusText());
+    m_statusSimulation->setFullText(m_simulation->statusText());
     const bool history = m_simulation->historyShown();
     if (m_statusHistory) {
         m_statusHistory->setVisible(history);

@@ -4,6 +4,7 @@
 // its engine scans on its own thread, so the tests wait for its snapshots with the event loop
 // running.
 
+#include "app/gui/eliding_label.h"
 #include "app/gui/simulation_controller.h"
 #include "editor/il_editor.h"
 #include "editor/io_panel.h"
@@ -36,8 +37,8 @@ constexpr const char *kFlipFlop = "LD X0\nOUT Y0\nLDI Y1\nOUT Y1\nEND\n";
 struct Simulation : test::WindowFixture {
     app::SimulationController *sim() { return window.simulation(); }
     QString status() {
-        auto *label = window.findChild<QLabel *>(QStringLiteral("simulationStatus"));
-        return label ? label->text() : QString();
+        auto *label = window.findChild<app::ElidingLabel *>(QStringLiteral("simulationStatus"));
+        return label ? label->fullText() : QString();
     }
     model::Address at(const char *device) {
         return std::get<model::Address>(

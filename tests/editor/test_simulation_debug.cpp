@@ -268,6 +268,42 @@ TEST_F(Debugging, TheHistoryShowsAnEarlierScanInTheViewsMarkedThenReturnsToLive)
     EXPECT_TRUE(panel->historyLabel().isEmpty());
 }
 
+TEST_F(Debugging, AFullStatusBarElidesTheRunStateAndKeepsTheHistoryMarksApart) {
+    // The run state with its statistics is long; in Hungarian at 1366x768 it once pushed the
+    // amber history label and the framed origin label over each other.
+    load("LD X0\nCNT C0 K100\nLD M9000\nADD D0 K1 D0\nEND\n");
+    window.resize(800, 600);
+    window.show();
+    ASSERT_TRUE(QTest::qWaitForWindowExposed(&window));
+    sim()->setSpeed(10);
+    ASSERT_TRUE(sim()->runScans(30));
+    ASSERT_TRUE(eventually([&] { return sim()->runState() == State::Paused; }));
+    window.simulationPanel()->historySlider()->setValue(10);
+    ASSERT_TRUE(sim()->historyShown());
+    auto *history = window.statusBar()->findChild<QLabel *>(QStringLiteral("historyStatus"));
+    auto *origin = window.statusBar()->findChild<QLabel *>(QStringLiteral("monitorOrigin"));
+    auto *state =
+        window.statusBar()->findChild<app::ElidingLabel *>(QStringLiteral("simulationStatus"));
+    ASSERT_TRUE(history && origin && state);
+    ASSERT_TRUE(eventually([&] { return history->isVisible() && origin->isVisible(); }));
+    // The status bar lays out over a few posted events; then the labels sit side by side.
+    const auto apart = [&] {
+        return !history->geometry().intersects(origin->geometry()) &&
+               !origin->geometry().intersects(state->geometry()) &&
+               !history->geometry().intersects(state->geometry());
+    };
+    EXPECT_TRUE(eventually(apart, 2000));
+    const QString full = state->fullText();
+    EXPECT_TRUE(full.startsWith(QStringLiteral("Paused | 0:00:00.30 | 30 scans")))
+        << full.toStdString();
+    EXPECT_GE(history->width(), history->sizeHint().width()); // the scan's number is whole
+    EXPECT_LE(state->geometry().right(), window.statusBar()->width());
+    // What did not fit is elided, and the whole run state is its tooltip.
+    EXPECT_TRUE(state->text().endsWith(QChar(0x2026))) << state->text().toStdString();
+    EXPECT_EQ(state->toolTip(), full);
+    sim()->setSpeed(1);
+}
+
 TEST_F(Debugging, AnEditWhileRunningKeepsTheCounterValueAndSaysSo) {
     load("LD X0\nCNT C0 K100\nEND\n");
     ASSERT_TRUE(sim()->singleScan());

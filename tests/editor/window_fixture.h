@@ -3,6 +3,7 @@
 // The main window as the GUI tests meet it: a new Vigor VB program, and the few things the
 // tests do with it (load a listing, type into a cell, find a menu entry, read the status bar).
 
+#include "app/gui/eliding_label.h"
 #include "app/gui/main_window.h"
 #include "editor/ladder_view.h"
 
@@ -73,7 +74,10 @@ inline QMenu *submenu(const QMainWindow &window, const QString &title) {
 inline QString statusText(const QMainWindow &window) {
     QStringList texts;
     for (QLabel *label : window.statusBar()->findChildren<QLabel *>())
-        texts << label->text();
+        if (auto *elided = qobject_cast<app::ElidingLabel *>(label))
+            texts << elided->fullText(); // what the label says whatever the window's width
+        else
+            texts << label->text();
     return texts.join(QLatin1Char('|'));
 }
 
