@@ -88,7 +88,8 @@ std::optional<IlEditor::LineValue> IlEditor::monitoredLine(int line) const {
         if (k == 0 && op == model::Op::Timer)
             parts << QStringLiteral("%1 %2").arg(name, ProgramFlow::timerText(*m_target, ins, *s));
         else if (k == 0 && (op == model::Op::Counter || op == model::Op::UpDownCounter))
-            parts << QStringLiteral("%1 %2").arg(name, ProgramFlow::counterText(o, *s));
+            parts << QStringLiteral("%1 %2").arg(name,
+                                                 ProgramFlow::counterText(*m_target, ins, *s));
         else if (asBit && s->layout->bit(o.address).valid())
             // A contact or coil of a timer or counter is its done bit.
             parts << QStringLiteral("%1 = %2").arg(

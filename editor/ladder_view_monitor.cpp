@@ -223,10 +223,14 @@ QString LadderView::liveHelp(const CellCursor &cell) const {
         QString value;
         if (o.address.bit < 0 &&
             (kind == model::AreaKind::Timer || kind == model::AreaKind::Counter)) {
+            // The box's own preset where the PLC holds none that can be read.
+            const bool ownBox = box && &o == &operands.front();
+            const std::optional<qint64> set =
+                ProgramFlow::presetOf(target, ownBox ? box : nullptr, o.address, *snapshot);
             //: a timer's or counter's live state in a tooltip: current value, set value, done bit
             value = tr("current %1, set %2, %3")
-                        .arg(snapshot->value(o.address))
-                        .arg(snapshot->setValue(o.address))
+                        .arg(ProgramFlow::presentOf(target, o.address, *snapshot))
+                        .arg(set ? QString::number(*set) : QStringLiteral("?"))
                         .arg(snapshot->bit(o.address) ? tr("ON") : tr("OFF"));
             if (box && box->op() == model::Op::Timer && &o == &operands.front())
                 value += QStringLiteral("; ") + ProgramFlow::timerText(target, *box, *snapshot);

@@ -247,7 +247,9 @@ bool MonitorCommands::writePreset(const MonitorTargets::Preset &preset) {
     if (!m_source || !preset.constant.isEmpty())
         return false;
     const auto snapshot = m_source->snapshot();
-    const QString now = snapshot ? QString::number(snapshot->setValue(preset.element)) : QString();
+    const QString now = snapshot && snapshot->setValueKnown(preset.element)
+                            ? QString::number(snapshot->setValue(preset.element))
+                            : QString();
     const auto typed = askValue(tr("Write Preset of %1").arg(device(preset.element)),
                                 tr("New preset of %1:").arg(device(preset.element)), now);
     return typed && writePresetText(preset, *typed);

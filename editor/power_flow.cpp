@@ -327,36 +327,75 @@ QString ProgramFlow::wordText(const model::Snapshot &snapshot, const model::Addr
     return QString::number(snapshot.value(address));
 }
 
+namespace {
+
+// A CPM1 TIM's or CNT's present and set values hold BCD digits (W353).
+qint64 setValueNumber(const model::Target &target, qint64 word) {
+    if (!target.constants.bcdSetValues)
+        return word;
+    qint64 number = 0;
+    for (qint64 unit = 1; word > 0; word >>= 4, unit *= 10)
+        number += (word & 0xF) * unit;
+    return number;
+}
+
+QString numberOrUnknown(std::optional<qint64> value) {
+    return value ? QString::number(*value) : QStringLiteral("?");
+}
+
+} // namespace
+
+qint64 ProgramFlow::presentOf(const model::Target &target, const model::Address &element,
+                              const model::Snapshot &snapshot) {
+    return setValueNumber(target, snapshot.value(element));
+}
+
+std::optional<qint64> ProgramFlow::presetOf(const model::Target &target,
+                                            const model::Instruction *box,
+                                            const model::Address &element,
+                                            const model::Snapshot &snapshot) {
+    if (snapshot.setValueKnown(element))
+        return setValueNumber(target, snapshot.setValue(element));
+    if (!box || box->operands.size() < 2 || !(box->operands.front().address == element))
+        return std::nullopt;
+    const model::Operand &preset = box->operands[1];
+    if (preset.modified()) // indexed: only the PLC knows which word it read
+        return std::nullopt;
+    if (preset.kind == model::Operand::Kind::Constant)
+        return preset.constant.value; // CPM1 #0150 is the number 150 already
+    if (isDevice(preset) && snapshot.valueKnown(preset.address))
+        return setValueNumber(target, snapshot.value(preset.address));
+    return std::nullopt;
+}
+
 QString ProgramFlow::timerText(const model::Target &target, const model::Instruction &timer,
                                const model::Snapshot &snapshot) {
     if (timer.operands.empty() || !isDevice(timer.operands.front()))
         return {};
     const model::Address &t = timer.operands.front().address;
-    // A CPM1 TIM's present and set values hold BCD digits (W353).
-    const auto digits = [&target](qint64 word) {
-        if (!target.constants.bcdSetValues)
-            return word;
-        qint64 number = 0;
-        for (qint64 unit = 1; word > 0; word >>= 4, unit *= 10)
-            number += (word & 0xF) * unit;
-        return number;
-    };
-    const qint64 current = digits(snapshot.value(t));
-    const qint64 set = digits(snapshot.setValue(t));
-    const qint64 elapsed = model::timerCountsDown(target, t) ? set - current : current;
+    const qint64 current = presentOf(target, t, snapshot);
+    const std::optional<qint64> set = presetOf(target, &timer, t, snapshot);
+    const bool down = model::timerCountsDown(target, t);
+    // A timer that counts down shows the time elapsed, which needs the set value.
+    const std::optional<qint64> elapsed = !down ? std::optional<qint64>(current)
+                                          : set ? std::optional<qint64>(*set - current)
+                                                : std::nullopt;
     const double base = model::timerBaseMs(target, timer);
     if (base <= 0)
-        return QStringLiteral("%1/%2").arg(elapsed).arg(set);
+        return QStringLiteral("%1/%2").arg(numberOrUnknown(elapsed), numberOrUnknown(set));
     //: a timer's time elapsed / set value in its units, then the unit: "23/50 ×0.1 s"
-    return Tr::tr("%1/%2 ×%3 s").arg(elapsed).arg(set).arg(seconds(base));
+    return Tr::tr("%1/%2 ×%3 s")
+        .arg(numberOrUnknown(elapsed), numberOrUnknown(set))
+        .arg(seconds(base));
 }
 
-QString ProgramFlow::counterText(const model::Operand &counter, const model::Snapshot &snapshot) {
-    if (!isDevice(counter))
+QString ProgramFlow::counterText(const model::Target &target, const model::Instruction &counter,
+                                 const model::Snapshot &snapshot) {
+    if (counter.operands.empty() || !isDevice(counter.operands.front()))
         return {};
-    return QStringLiteral("%1/%2")
-        .arg(snapshot.value(counter.address))
-        .arg(snapshot.setValue(counter.address));
+    const model::Address &c = counter.operands.front().address;
+    return QStringLiteral("%1/%2").arg(QString::number(presentOf(target, c, snapshot)),
+                                       numberOrUnknown(presetOf(target, &counter, c, snapshot)));
 }
 
 QString ProgramFlow::valuesText(const model::Target &target, const model::Instruction &ins,
@@ -366,8 +405,8 @@ QString ProgramFlow::valuesText(const model::Target &target, const model::Instru
     const model::Op op = ins.op();
     if (op == model::Op::Timer)
         return timerText(target, ins, snapshot);
-    if ((op == model::Op::Counter || op == model::Op::UpDownCounter) && !ins.operands.empty())
-        return counterText(ins.operands.front(), snapshot);
+    if (op == model::Op::Counter || op == model::Op::UpDownCounter)
+        return counterText(target, ins, snapshot);
     QStringList parts;
     for (const model::Operand &o : ins.operands) {
         if (!isDevice(o) || o.address.bit >= 0 ||

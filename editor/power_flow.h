@@ -24,6 +24,8 @@
 
 #include <QString>
 
+#include <optional>
+
 #include <cstdint>
 #include <vector>
 
@@ -102,7 +104,18 @@ public:
     // Texts the overlay and the instruction list show for devices (translated).
     static QString timerText(const model::Target &target, const model::Instruction &timer,
                              const model::Snapshot &snapshot);
-    static QString counterText(const model::Operand &counter, const model::Snapshot &snapshot);
+    static QString counterText(const model::Target &target, const model::Instruction &counter,
+                               const model::Snapshot &snapshot);
+    // A timer's or counter's values as numbers (a CPM1 word's BCD digits decoded). The set
+    // value in force is the memory's where it is known; online, where no protocol area holds
+    // it (a Vigor K constant lives in the program), it is the box's own operand: the
+    // constant, or the word device it names once read. Unknown: nullopt.
+    static qint64 presentOf(const model::Target &target, const model::Address &element,
+                            const model::Snapshot &snapshot);
+    static std::optional<qint64> presetOf(const model::Target &target,
+                                          const model::Instruction *box,
+                                          const model::Address &element,
+                                          const model::Snapshot &snapshot);
     // The values of an instruction's word devices ("D0 = 12  D1 = 3"); for a timer or
     // counter its elapsed / preset.
     static QString valuesText(const model::Target &target, const model::Instruction &ins,

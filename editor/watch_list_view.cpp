@@ -201,7 +201,10 @@ void WatchListView::showRow(QTreeWidgetItem *item, const model::Snapshot *snapsh
         // Current value against the preset, and the done bit.
         text = tr("%1 of %2, %3")
                    .arg(model::formatValue(snapshot->value(*address), bits, f),
-                        model::formatValue(snapshot->setValue(*address), bits, f),
+                        // Online, a set value no protocol area holds is not known here.
+                        snapshot->setValueKnown(*address)
+                            ? model::formatValue(snapshot->setValue(*address), bits, f)
+                            : QStringLiteral("?"),
                         snapshot->bit(*address) ? tr("ON") : tr("OFF"));
     else
         text = model::formatValue(snapshot->value(*address), bits, f);

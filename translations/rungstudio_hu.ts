@@ -424,12 +424,12 @@ Ez egy valódi PLC memóriáját módosítja, amely gépet vezérelhet. Kapcsola
     </message>
     <message>
         <location line="+16"/>
-        <location line="+104"/>
+        <location line="+103"/>
         <source>Choose the serial port the PLC is on (or type its path)</source>
         <translation>Válassza ki a soros portot, amelyen a PLC van (vagy írja be az elérési útját)</translation>
     </message>
     <message>
-        <location line="-75"/>
+        <location line="-74"/>
         <source>%1: done, the PLC acknowledged it</source>
         <translation>%1: kész, a PLC nyugtázta</translation>
     </message>
@@ -449,7 +449,7 @@ Ez egy valódi PLC memóriáját módosítja, amely gépet vezérelhet. Kapcsola
         <translation>Átváltás %1 módba</translation>
     </message>
     <message>
-        <location line="+15"/>
+        <location line="+14"/>
         <source>The PLC runs its program: its outputs switch as the program says.</source>
         <translation>A PLC futtatja a programját: a kimenetei a program szerint kapcsolnak.</translation>
     </message>
@@ -695,7 +695,7 @@ Válaszidő: %6 ms (átlag %7, max. %8); frissítés: %9 ms, %10 keret</translat
 <context>
     <name>rung::app::MainWindow</name>
     <message>
-        <location filename="../app/gui/main_window.cpp" line="+165"/>
+        <location filename="../app/gui/main_window.cpp" line="+166"/>
         <source>Problems</source>
         <translation>Problémák</translation>
     </message>
@@ -1220,7 +1220,7 @@ Létradiagram- és utasításlista-szerkesztő a következő PLC-khez: %2.</tran
     </message>
     <message>
         <location line="+21"/>
-        <location filename="../app/gui/main_window_online.cpp" line="+79"/>
+        <location filename="../app/gui/main_window_online.cpp" line="+80"/>
         <source>Cannot save</source>
         <translation>A mentés nem sikerült</translation>
     </message>
@@ -1434,7 +1434,7 @@ Létradiagram- és utasításlista-szerkesztő a következő PLC-khez: %2.</tran
         <translation>Szimbólumok exportálása</translation>
     </message>
     <message>
-        <location filename="../app/gui/main_window_simulation.cpp" line="+36"/>
+        <location filename="../app/gui/main_window_simulation.cpp" line="+37"/>
         <source>The instruction list has errors, so the ladder still shows the last program without them: correct the list (or undo) before simulating</source>
         <translation>Az utasításlistában hibák vannak, ezért a létra még az utolsó hibátlan programot mutatja: a szimuláció előtt javítsa a listát (vagy vonja vissza a módosítást)</translation>
     </message>
@@ -1720,12 +1720,12 @@ Létradiagram- és utasításlista-szerkesztő a következő PLC-khez: %2.</tran
     </message>
     <message>
         <location line="+13"/>
-        <location line="+73"/>
+        <location line="+80"/>
         <source>Go &amp;Online</source>
         <translation>&amp;Online kapcsolódás</translation>
     </message>
     <message>
-        <location line="-63"/>
+        <location line="-70"/>
         <source>&amp;Test Connection</source>
         <translation>Kapcsolat &amp;tesztelése</translation>
     </message>
@@ -1765,7 +1765,12 @@ Létradiagram- és utasításlista-szerkesztő a következő PLC-khez: %2.</tran
         <translation>Offline</translation>
     </message>
     <message>
-        <location line="+13"/>
+        <location line="+14"/>
+        <source>%1 cannot switch the PLC between RUN and STOP: use the switch on the PLC</source>
+        <translation>A(z) %1 nem tudja a PLC-t RUN és STOP között váltani: használja a PLC kapcsolóját</translation>
+    </message>
+    <message>
+        <location line="+6"/>
         <source>Go &amp;Offline</source>
         <translation>&amp;Offline (kapcsolat bontása)</translation>
     </message>
@@ -2782,12 +2787,12 @@ Kiértékelés: %4 µs (%5..%6)</translation>
         <translation>firmware: %1</translation>
     </message>
     <message>
-        <location filename="../comms/driver/online_session.cpp" line="+96"/>
+        <location filename="../comms/driver/online_session.cpp" line="+101"/>
         <source>%1 is not connected: nothing was sent</source>
         <translation>%1 nincs csatlakoztatva: semmi sem lett elküldve</translation>
     </message>
     <message>
-        <location line="+145"/>
+        <location line="+176"/>
         <source>Connection to %1 lost: %2. Trying again.</source>
         <translation>Megszakadt a kapcsolat ezzel: %1: %2. Újrapróbálkozás.</translation>
     </message>
@@ -3792,7 +3797,7 @@ Kiértékelés: %4 µs (%5..%6)</translation>
         <translation>%1 nincs használatban a programban</translation>
     </message>
     <message>
-        <location filename="../editor/ladder_view_monitor.cpp" line="+227"/>
+        <location filename="../editor/ladder_view_monitor.cpp" line="+231"/>
         <source>current %1, set %2, %3</source>
         <extracomment>a timer&apos;s or counter&apos;s live state in a tooltip: current value, set value, done bit</extracomment>
         <translation>aktuális %1, beállított %2, %3</translation>
@@ -3857,12 +3862,12 @@ Kiértékelés: %4 µs (%5..%6)</translation>
     </message>
     <message>
         <location line="+7"/>
-        <location line="+97"/>
+        <location line="+99"/>
         <source>The preset of %1 is the constant %2 of the program: change it in the program</source>
         <translation>%1 beállított értéke a program %2 konstansa: a programban változtassa meg</translation>
     </message>
     <message>
-        <location line="-84"/>
+        <location line="-86"/>
         <source>%1 forced ON</source>
         <translation>%1 kényszerítve BE</translation>
     </message>
@@ -3907,7 +3912,7 @@ Kiértékelés: %4 µs (%5..%6)</translation>
         <translation>%1 írva: %2</translation>
     </message>
     <message>
-        <location line="+9"/>
+        <location line="+11"/>
         <source>Write Preset of %1</source>
         <translation>%1 beállított értékének írása</translation>
     </message>
@@ -3940,7 +3945,7 @@ Kiértékelés: %4 µs (%5..%6)</translation>
 <context>
     <name>rung::editor::PowerFlow</name>
     <message>
-        <location filename="../editor/il_editor_monitor.cpp" line="+96"/>
+        <location filename="../editor/il_editor_monitor.cpp" line="+97"/>
         <location filename="../editor/power_flow.cpp" line="+326"/>
         <source>ON</source>
         <translation>BE</translation>
@@ -3952,13 +3957,13 @@ Kiértékelés: %4 µs (%5..%6)</translation>
         <translation>KI</translation>
     </message>
     <message>
-        <location filename="../editor/power_flow.cpp" line="+25"/>
+        <location filename="../editor/power_flow.cpp" line="+61"/>
         <source>%1/%2 ×%3 s</source>
         <extracomment>a timer&apos;s time elapsed / set value in its units, then the unit: &quot;23/50 ×0.1 s&quot;</extracomment>
         <translation>%1/%2 ×%3 s</translation>
     </message>
     <message>
-        <location line="+26"/>
+        <location line="+29"/>
         <source>%1 = %2</source>
         <extracomment>a device and its value under a box: &quot;D0 = 12&quot;</extracomment>
         <translation>%1 = %2</translation>
@@ -4296,7 +4301,7 @@ Kiértékelés: %4 µs (%5..%6)</translation>
     </message>
     <message>
         <location line="+21"/>
-        <location line="+6"/>
+        <location line="+9"/>
         <location line="+6"/>
         <location line="+50"/>
         <source>ON</source>
@@ -4308,8 +4313,8 @@ Kiértékelés: %4 µs (%5..%6)</translation>
         <translation>%1 időzítő vagy számláló: aktuális értékét a program határozza meg, itt nem írható</translation>
     </message>
     <message>
-        <location line="-25"/>
-        <location line="+6"/>
+        <location line="-28"/>
+        <location line="+9"/>
         <location line="+6"/>
         <location line="+53"/>
         <source>OFF</source>
@@ -4353,7 +4358,7 @@ Kiértékelés: %4 µs (%5..%6)</translation>
         <translation>Érték írása...</translation>
     </message>
     <message>
-        <location line="-181"/>
+        <location line="-184"/>
         <source>%1 of %2, %3</source>
         <translation>%1 / %2, %3</translation>
     </message>
@@ -4393,7 +4398,7 @@ Kiértékelés: %4 µs (%5..%6)</translation>
         <translation>Dupla kattintás: egy bit kényszerítése BE vagy KI, vagy feloldása</translation>
     </message>
     <message>
-        <location line="+108"/>
+        <location line="+111"/>
         <source>%1 (forced)</source>
         <translation>%1 (kényszerített)</translation>
     </message>

@@ -424,12 +424,12 @@ Questo modifica la memoria di un PLC reale, che potrebbe comandare una macchina.
     </message>
     <message>
         <location line="+16"/>
-        <location line="+104"/>
+        <location line="+103"/>
         <source>Choose the serial port the PLC is on (or type its path)</source>
         <translation>Scegliere la porta seriale del PLC (o digitarne il percorso)</translation>
     </message>
     <message>
-        <location line="-75"/>
+        <location line="-74"/>
         <source>%1: done, the PLC acknowledged it</source>
         <translation>%1: fatto, il PLC ha confermato</translation>
     </message>
@@ -449,7 +449,7 @@ Questo modifica la memoria di un PLC reale, che potrebbe comandare una macchina.
         <translation>Passa a %1</translation>
     </message>
     <message>
-        <location line="+15"/>
+        <location line="+14"/>
         <source>The PLC runs its program: its outputs switch as the program says.</source>
         <translation>Il PLC esegue il suo programma: le uscite commutano come dice il programma.</translation>
     </message>
@@ -695,7 +695,7 @@ Andata e ritorno %6 ms (media %7, max %8); aggiornamento %9 ms, %10 frame</trans
 <context>
     <name>rung::app::MainWindow</name>
     <message>
-        <location filename="../app/gui/main_window.cpp" line="+165"/>
+        <location filename="../app/gui/main_window.cpp" line="+166"/>
         <source>Problems</source>
         <translation>Problemi</translation>
     </message>
@@ -1222,7 +1222,7 @@ Editor di schemi ladder e liste istruzioni per %2.</translation>
     </message>
     <message>
         <location line="+21"/>
-        <location filename="../app/gui/main_window_online.cpp" line="+79"/>
+        <location filename="../app/gui/main_window_online.cpp" line="+80"/>
         <source>Cannot save</source>
         <translation>Impossibile salvare</translation>
     </message>
@@ -1439,7 +1439,7 @@ Editor di schemi ladder e liste istruzioni per %2.</translation>
         <translation>Esporta simboli</translation>
     </message>
     <message>
-        <location filename="../app/gui/main_window_simulation.cpp" line="+36"/>
+        <location filename="../app/gui/main_window_simulation.cpp" line="+37"/>
         <source>The instruction list has errors, so the ladder still shows the last program without them: correct the list (or undo) before simulating</source>
         <translation>La lista istruzioni contiene errori, quindi il ladder mostra ancora l&apos;ultimo programma senza errori: correggere la lista (o annullare) prima di simulare</translation>
     </message>
@@ -1725,12 +1725,12 @@ Editor di schemi ladder e liste istruzioni per %2.</translation>
     </message>
     <message>
         <location line="+13"/>
-        <location line="+73"/>
+        <location line="+80"/>
         <source>Go &amp;Online</source>
         <translation>Vai &amp;online</translation>
     </message>
     <message>
-        <location line="-63"/>
+        <location line="-70"/>
         <source>&amp;Test Connection</source>
         <translation>&amp;Prova connessione</translation>
     </message>
@@ -1770,7 +1770,12 @@ Editor di schemi ladder e liste istruzioni per %2.</translation>
         <translation>Offline</translation>
     </message>
     <message>
-        <location line="+13"/>
+        <location line="+14"/>
+        <source>%1 cannot switch the PLC between RUN and STOP: use the switch on the PLC</source>
+        <translation>%1 non può commutare il PLC tra RUN e STOP: usare il selettore sul PLC</translation>
+    </message>
+    <message>
+        <location line="+6"/>
         <source>Go &amp;Offline</source>
         <translation>Vai &amp;offline</translation>
     </message>
@@ -2788,12 +2793,12 @@ Valutazione: %4 µs (%5..%6)</translation>
         <translation>firmware %1</translation>
     </message>
     <message>
-        <location filename="../comms/driver/online_session.cpp" line="+96"/>
+        <location filename="../comms/driver/online_session.cpp" line="+101"/>
         <source>%1 is not connected: nothing was sent</source>
         <translation>%1 non è connesso: non è stato inviato nulla</translation>
     </message>
     <message>
-        <location line="+145"/>
+        <location line="+176"/>
         <source>Connection to %1 lost: %2. Trying again.</source>
         <translation>Connessione con %1 persa: %2. Nuovo tentativo in corso.</translation>
     </message>
@@ -3799,7 +3804,7 @@ Valutazione: %4 µs (%5..%6)</translation>
         <translation>%1 non è usato nel programma</translation>
     </message>
     <message>
-        <location filename="../editor/ladder_view_monitor.cpp" line="+227"/>
+        <location filename="../editor/ladder_view_monitor.cpp" line="+231"/>
         <source>current %1, set %2, %3</source>
         <extracomment>a timer&apos;s or counter&apos;s live state in a tooltip: current value, set value, done bit</extracomment>
         <translation>corrente %1, preset %2, %3</translation>
@@ -3864,12 +3869,12 @@ Valutazione: %4 µs (%5..%6)</translation>
     </message>
     <message>
         <location line="+7"/>
-        <location line="+97"/>
+        <location line="+99"/>
         <source>The preset of %1 is the constant %2 of the program: change it in the program</source>
         <translation>Il valore di preset di %1 è la costante %2 del programma: modificarlo nel programma</translation>
     </message>
     <message>
-        <location line="-84"/>
+        <location line="-86"/>
         <source>%1 forced ON</source>
         <translation>%1 forzato ON</translation>
     </message>
@@ -3914,7 +3919,7 @@ Valutazione: %4 µs (%5..%6)</translation>
         <translation>%1 scritto: %2</translation>
     </message>
     <message>
-        <location line="+9"/>
+        <location line="+11"/>
         <source>Write Preset of %1</source>
         <translation>Scrivi il valore di preset di %1</translation>
     </message>
@@ -3947,7 +3952,7 @@ Valutazione: %4 µs (%5..%6)</translation>
 <context>
     <name>rung::editor::PowerFlow</name>
     <message>
-        <location filename="../editor/il_editor_monitor.cpp" line="+96"/>
+        <location filename="../editor/il_editor_monitor.cpp" line="+97"/>
         <location filename="../editor/power_flow.cpp" line="+326"/>
         <source>ON</source>
         <translation>ON</translation>
@@ -3959,13 +3964,13 @@ Valutazione: %4 µs (%5..%6)</translation>
         <translation>OFF</translation>
     </message>
     <message>
-        <location filename="../editor/power_flow.cpp" line="+25"/>
+        <location filename="../editor/power_flow.cpp" line="+61"/>
         <source>%1/%2 ×%3 s</source>
         <extracomment>a timer&apos;s time elapsed / set value in its units, then the unit: &quot;23/50 ×0.1 s&quot;</extracomment>
         <translation>%1/%2 ×%3 s</translation>
     </message>
     <message>
-        <location line="+26"/>
+        <location line="+29"/>
         <source>%1 = %2</source>
         <extracomment>a device and its value under a box: &quot;D0 = 12&quot;</extracomment>
         <translation>%1 = %2</translation>
@@ -4304,7 +4309,7 @@ Valutazione: %4 µs (%5..%6)</translation>
     </message>
     <message>
         <location line="+21"/>
-        <location line="+6"/>
+        <location line="+9"/>
         <location line="+6"/>
         <location line="+50"/>
         <source>ON</source>
@@ -4316,8 +4321,8 @@ Valutazione: %4 µs (%5..%6)</translation>
         <translation>%1 è un temporizzatore o un contatore: il suo valore corrente segue il programma e qui non si può scrivere</translation>
     </message>
     <message>
-        <location line="-25"/>
-        <location line="+6"/>
+        <location line="-28"/>
+        <location line="+9"/>
         <location line="+6"/>
         <location line="+53"/>
         <source>OFF</source>
@@ -4361,7 +4366,7 @@ Valutazione: %4 µs (%5..%6)</translation>
         <translation>Scrivi valore...</translation>
     </message>
     <message>
-        <location line="-181"/>
+        <location line="-184"/>
         <source>%1 of %2, %3</source>
         <translation>%1 di %2, %3</translation>
     </message>
@@ -4401,7 +4406,7 @@ Valutazione: %4 µs (%5..%6)</translation>
         <translation>Doppio clic: forza un bit ON o OFF, o lo rilascia</translation>
     </message>
     <message>
-        <location line="+108"/>
+        <location line="+111"/>
         <source>%1 (forced)</source>
         <translation>%1 (forzato)</translation>
     </message>

@@ -192,8 +192,7 @@ bool ConnectionPanel::requestPlcMode(comms::PlcMode mode) {
     if (!session)
         return false;
     // Host Link has PROGRAM / MONITOR / RUN; the others RUN and STOP (their RUN bit).
-    const bool hostLink = session->settings().protocol == comms::ProtocolKind::HostLink;
-    if (mode == comms::PlcMode::Program && !hostLink)
+    if (mode == comms::PlcMode::Program && !session->abilities().monitorMode)
         mode = comms::PlcMode::Stop;
     QString what;
     switch (mode) {

@@ -4,6 +4,7 @@
 #include "simulation_controller.h"
 
 #include "comms/driver/online_session.h"
+#include "comms/driver/protocol_driver.h"
 #include "simulator/session.h"
 
 #include <QAction>
@@ -194,7 +195,14 @@ void MainWindow::onlineSessionChanged(comms::OnlineSession *session) {
 
 void MainWindow::updateOnlineActions() {
     comms::OnlineSession *session = m_connectionPanel ? m_connectionPanel->session() : nullptr;
-    const bool hostLink = session && session->settings().protocol == comms::ProtocolKind::HostLink;
+    // What the protocol can command (Vigor's Computer Link reads the mode but cannot set it).
+    const comms::OnlineSession::Abilities can =
+        session ? session->abilities() : comms::OnlineSession::Abilities{};
+    const QString noMode =
+        session && !can.setsMode
+            ? tr("%1 cannot switch the PLC between RUN and STOP: use the switch on the PLC")
+                  .arg(comms::protocolName(session->settings().protocol))
+            : QString();
     for (QAction *a : findChildren<QAction *>()) {
         const QString name = a->objectName();
         if (name == QLatin1String("onlineConnect")) {
@@ -205,11 +213,14 @@ void MainWindow::updateOnlineActions() {
             a->setEnabled(m_connectionPanel->canConnect() || session);
         } else if (name == QLatin1String("onlineTest")) {
             a->setEnabled(m_connectionPanel->canConnect() && !session);
-        } else if (name == QLatin1String("onlineProgram") || name == QLatin1String("onlineRun") ||
-                   name == QLatin1String("onlineReleaseAll")) {
-            a->setEnabled(session != nullptr);
+        } else if (name == QLatin1String("onlineProgram") || name == QLatin1String("onlineRun")) {
+            a->setEnabled(session && can.setsMode);
+            a->setStatusTip(noMode);
+        } else if (name == QLatin1String("onlineReleaseAll")) {
+            a->setEnabled(session && can.forces);
         } else if (name == QLatin1String("onlineMonitor")) {
-            a->setEnabled(hostLink);
+            a->setEnabled(session && can.monitorMode);
+            a->setStatusTip(noMode);
         }
     }
 }

@@ -85,6 +85,8 @@ public:
     model::Address runStateDevice() const { return m_runDevice; }
     DriverError readMode(PlcMode *mode);
     bool canSetMode() const;
+    bool hasMonitorMode() const { return m_protocol->hasMonitorMode(); }
+    bool canForce() const { return m_protocol->canForce(); }
     DriverError setMode(PlcMode mode);
     DriverError identify(PlcIdentity *identity) { return m_protocol->identify(identity); }
 

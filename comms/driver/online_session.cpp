@@ -79,6 +79,11 @@ QString OnlineSession::plcName() const {
                : m_plcName;
 }
 
+OnlineSession::Abilities OnlineSession::abilities() const {
+    std::lock_guard lock(m_mutex);
+    return m_abilities;
+}
+
 LinkStatistics OnlineSession::statistics() const {
     std::lock_guard lock(m_mutex);
     return m_statistics;
@@ -142,8 +147,10 @@ void OnlineSession::failPending(const QString &why) {
 
 void OnlineSession::publish(const std::vector<std::int32_t> &words, bool stale,
                             const std::map<model::Address, bool> &forced,
-                            const model::ScanStatistics &statistics) {
+                            const model::ScanStatistics &statistics,
+                            std::shared_ptr<const std::vector<bool>> wordsRead) {
     auto s = std::make_shared<model::Snapshot>();
+    s->wordsRead = std::move(wordsRead);
     s->layout = m_layout;
     s->words = words;
     s->stale = stale;
@@ -193,10 +200,39 @@ void OnlineSession::postStatistics() {
     postToOwner([this] { emit statisticsChanged(); });
 }
 
+namespace {
+
+// After a refresh: the words its plan placed, but those of devices the PLC refused.
+void markRead(const Driver::Plan &plan,
+              const std::vector<std::pair<model::Address, QString>> &refused,
+              std::shared_ptr<const std::vector<bool>> &wordsRead) {
+    std::shared_ptr<std::vector<bool>> more;
+    for (std::size_t d = 0; d < plan.devices.size(); ++d) {
+        if (std::any_of(refused.begin(), refused.end(),
+                        [&](const auto &r) { return r.first == plan.devices[d]; }))
+            continue;
+        for (const Driver::Placement &p : plan.placements[d]) {
+            const auto word = std::size_t(p.word);
+            if (p.word < 0 || word >= wordsRead->size() || (*wordsRead)[word])
+                continue;
+            if (!more)
+                more = std::make_shared<std::vector<bool>>(*wordsRead);
+            (*more)[word] = true;
+        }
+    }
+    if (more)
+        wordsRead = std::move(more);
+}
+
+} // namespace
+
 void OnlineSession::workerLoop() {
     std::unique_ptr<Driver> driver;
     Driver::Plan plan;
     std::vector<std::int32_t> words(std::size_t(m_layout->wordCount()), 0);
+    // The words the PLC answered for (Snapshot::wordsRead): shared by every snapshot until
+    // a refresh reads one more.
+    auto wordsRead = std::make_shared<const std::vector<bool>>(words.size(), false);
     std::vector<model::Address> refused; // devices the PLC refused: not asked for again
     QStringList problems;                // why some watched devices show nothing
     bool haveValues = false;
@@ -236,7 +272,7 @@ void OnlineSession::workerLoop() {
             driver->link().close(); // opened again on the next try
         up = false;
         if (haveValues)
-            publish(words, true, driver->forced(), figures);
+            publish(words, true, driver->forced(), figures, wordsRead);
         const QString text =
             everUp ? QCoreApplication::translate("rung::comms::Driver",
                                                  "Connection to %1 lost: %2. Trying again.")
@@ -275,7 +311,7 @@ void OnlineSession::workerLoop() {
                     m_activeLink = nullptr;
                 }
                 if (haveValues)
-                    publish(words, true, driver->forced(), figures);
+                    publish(words, true, driver->forced(), figures, wordsRead);
                 driver->link().close();
                 driver.reset();
                 postState(ConnectionState::Disconnected, {});
@@ -309,6 +345,7 @@ void OnlineSession::workerLoop() {
                 std::lock_guard lock(m_mutex);
                 m_activeLink = &driver->link();
                 m_plcName = driver->plcName();
+                m_abilities = {driver->canSetMode(), driver->hasMonitorMode(), driver->canForce()};
             }
             backoff = m_settings.reconnectMinMs;
             dirty = true;
@@ -396,6 +433,7 @@ void OnlineSession::workerLoop() {
         }
         driver->link().countRefresh(double(clock.nsecsElapsed()) / 1e6, int(plan.reads.size()),
                                     plan.bytes());
+        markRead(plan, newlyRefused, wordsRead);
         if (!newlyRefused.empty()) {
             // Left out from now on (until the watched devices change): asking again would
             // only cost a refused frame every refresh.
@@ -435,7 +473,7 @@ void OnlineSession::workerLoop() {
         ++figures.scans;
         figures.timeMs = connectedClock.elapsed();
         figures.periodMs = clock.elapsed();
-        publish(words, false, driver->forced(), figures);
+        publish(words, false, driver->forced(), figures, wordsRead);
         if (now != mode || !up)
             postMode(now);
         mode = now;

@@ -71,6 +71,14 @@ public:
     PlcIdentity identity() const { return m_identity; }
     // "CPM1 unit 0 on /dev/ttyUSB0".
     QString plcName() const;
+    // What the protocol can command, known once its driver exists (before the session is
+    // first Online); all false before.
+    struct Abilities {
+        bool setsMode = false;    // RUN / STOP (or PROGRAM / RUN)
+        bool monitorMode = false; // PROGRAM / MONITOR / RUN
+        bool forces = false;      // forces bits (else a force is refused and says so)
+    };
+    Abilities abilities() const;
 
     // Any thread.
     LinkStatistics statistics() const;
@@ -109,7 +117,8 @@ private:
     // last refresh's time (the online counterparts of the simulator's scan figures).
     void publish(const std::vector<std::int32_t> &words, bool stale,
                  const std::map<model::Address, bool> &forced,
-                 const model::ScanStatistics &statistics);
+                 const model::ScanStatistics &statistics,
+                 std::shared_ptr<const std::vector<bool>> wordsRead);
     void postState(ConnectionState state, const QString &error);
     void postMode(PlcMode mode);
     void postStatistics();
@@ -137,6 +146,7 @@ private:
     comms::Link *m_activeLink = nullptr; // cancel() target while the worker uses it
     LinkStatistics m_statistics;
     QString m_plcName;
+    Abilities m_abilities;
 
     std::thread m_worker; // last: starts after everything it reads exists
 };

@@ -83,6 +83,8 @@ public:
     virtual bool readsMode() const { return false; }
     virtual DriverError readMode(PlcMode *mode);
     virtual bool setsMode() const { return false; }
+    // PROGRAM / MONITOR / RUN (Host Link) rather than STOP / RUN.
+    virtual bool hasMonitorMode() const { return false; }
     virtual DriverError setMode(PlcMode mode);
     // Before a write: Host Link switches a PLC in RUN to MONITOR (writes answer end code 01
     // in RUN) and says so in *notice.

@@ -77,6 +77,7 @@ public:
     bool readsMode() const override { return true; }
     DriverError readMode(PlcMode *mode) override;
     bool setsMode() const override { return true; }
+    bool hasMonitorMode() const override { return true; }
     DriverError setMode(PlcMode mode) override;
     DriverError prepareWrite(QString *notice) override;
     bool identifies() const override { return true; }

@@ -50,6 +50,11 @@ struct Snapshot {
     bool stale = false;
     // Set while the scan is stopped inside (the words then hold what the scan wrote so far).
     std::optional<ScanPause> pause;
+    // Online: the words the PLC has answered for at least once (MemoryLayout order); the
+    // others hold 0 because nobody asked, not because the PLC said so (a Vigor timer's set
+    // value lives in the program, and no protocol area holds it). Null: every word is the
+    // memory's own (a simulation).
+    std::shared_ptr<const std::vector<bool>> wordsRead;
 
     bool bit(const Address &address) const {
         const BitRef r = layout ? layout->bit(address) : BitRef{};
@@ -62,6 +67,16 @@ struct Snapshot {
     std::int32_t setValue(const Address &address) const {
         return layout ? word(layout->setValueWord(address)) : 0;
     }
+    // The set value in force is known: the memory holds it, or the PLC answered for it.
+    bool setValueKnown(const Address &address) const {
+        return layout && known(layout->setValueWord(address));
+    }
+    bool valueKnown(const Address &address) const {
+        if (!layout)
+            return false;
+        const int word = address.bit < 0 ? layout->word(address) : -1;
+        return known(word >= 0 ? word : layout->bit(address).word);
+    }
     bool forced(const Address &address) const {
         const BitRef r = layout ? layout->bit(address) : BitRef{};
         return r.valid() && static_cast<std::size_t>(r.word) < forceMask.size() &&
@@ -69,6 +84,12 @@ struct Snapshot {
     }
 
 private:
+    bool known(int index) const {
+        if (index < 0 || static_cast<std::size_t>(index) >= words.size())
+            return false;
+        return !wordsRead || (static_cast<std::size_t>(index) < wordsRead->size() &&
+                              (*wordsRead)[static_cast<std::size_t>(index)]);
+    }
     std::int32_t word(int index) const {
         return index >= 0 && static_cast<std::size_t>(index) < words.size()
                    ? words[static_cast<std::size_t>(index)]

@@ -125,6 +125,14 @@ TEST(OnlineSession, PollsOnlyTheWatchedDevicesIntoTheSimulatorsSnapshotShape) {
     EXPECT_GT(h.snapshot()->statistics.scans, 0u); // refreshes, the online "scans"
     EXPECT_EQ(h.snapshot()->words.size(), std::size_t(h.session->layout()->wordCount()));
     EXPECT_EQ(h.value("V100"), 0); // not watched, not read
+    // RUN / STOP through SM0.0; no MONITOR, no force.
+    EXPECT_TRUE(h.session->abilities().setsMode);
+    EXPECT_FALSE(h.session->abilities().monitorMode);
+    EXPECT_FALSE(h.session->abilities().forces);
+    // ... and the snapshot says which words the PLC answered for: a 0 nobody read is no value.
+    EXPECT_TRUE(h.snapshot()->valueKnown(address(h.target, "V10")));
+    EXPECT_TRUE(h.snapshot()->valueKnown(address(h.target, "Q1")));
+    EXPECT_FALSE(h.snapshot()->valueKnown(address(h.target, "V100")));
     EXPECT_TRUE(h.session->errorText().isEmpty()) << h.session->errorText().toStdString();
     // The identity: PL110 words 0 and 1, read once.
     // Only V10 (register 2010), Q1 (coil 2400) and the RUN bit (coil 16000) were asked for.
@@ -140,6 +148,13 @@ TEST(OnlineSession, PollsOnlyTheWatchedDevicesIntoTheSimulatorsSnapshotShape) {
     plc.setRegister(2020, 55);
     h.watch({"V10", "V20"});
     EXPECT_TRUE(eventually([&] { return h.value("V20") == 55; }));
+    // A PL110 timer's preset is in the PT area (seed 003 2.1.9): read with the timer, known.
+    h.watch({"T1"});
+    EXPECT_TRUE(eventually([&] {
+        const auto s = h.snapshot();
+        return s && s->valueKnown(address(h.target, "T1")) &&
+               s->setValueKnown(address(h.target, "T1"));
+    }));
 }
 
 TEST(OnlineSession, WritesAreDoneWhenThePlcAcknowledgesAndRefusalsSayWhy) {
@@ -317,6 +332,10 @@ TEST(OnlineSession, HostLinkSwitchesToMonitorToWriteSaysSoAndShowsItsForces) {
     EXPECT_TRUE(eventually([&] { return h.session->runState() == RunState::Running; }));
     EXPECT_TRUE(eventually([&] { return identity.count() > 0; }));
     EXPECT_EQ(h.session->identity().model, QStringLiteral("model code 12h"));
+    // Host Link commands every mode and forces.
+    EXPECT_TRUE(h.session->abilities().setsMode);
+    EXPECT_TRUE(h.session->abilities().monitorMode);
+    EXPECT_TRUE(h.session->abilities().forces);
     const auto w = h.finish(h.session->writeWord(address(h.target, "DM 0005"), 99), finished);
     EXPECT_TRUE(w.first) << w.second.toStdString();
     EXPECT_EQ(plc.word(model::ProtocolSpace::HostLinkDm, 5), 99);
@@ -345,10 +364,18 @@ TEST(OnlineSession, AVigorOnTheComputerLinkShowsItsBitsWordsAndRunState) {
     s.link = {50, 1, 5};
     s.pollIntervalMs = 5;
     Harness h(model::Family::Vigor, s, [&](FakeTransport &t) { t.setResponder(plc.responder()); });
-    h.watch({"M10", "D5", "Y0"});
+    h.watch({"M10", "D5", "Y0", "T0"});
     QSignalSpy finished(h.session.get(), &model::MonitorSource::commandFinished);
     h.session->connectToPlc();
     ASSERT_TRUE(eventually([&] { return h.bit("M10") && h.value("D5") == 0x3039; }));
+    // A timer's current value is read; its set value lives in the program, where the link
+    // cannot reach it, and the snapshot says it is not known (the overlay shows the box's K).
+    EXPECT_TRUE(h.snapshot()->valueKnown(address(h.target, "T0")));
+    EXPECT_FALSE(h.snapshot()->setValueKnown(address(h.target, "T0")));
+    // The link reads the mode (M9000) but cannot set it, and forces nothing.
+    EXPECT_FALSE(h.session->abilities().setsMode);
+    EXPECT_FALSE(h.session->abilities().monitorMode);
+    EXPECT_FALSE(h.session->abilities().forces);
     EXPECT_TRUE(eventually([&] { return h.session->runState() == RunState::Running; }));
     // Y0 ON with 70h; the refresh shows it.
     const auto on = h.finish(h.session->writeBit(address(h.target, "Y0"), true), finished);

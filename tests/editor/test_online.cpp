@@ -68,10 +68,11 @@ struct Case {
     const char *coil;
     const char *word; // written from the IDE; result = word (+1 for Vigor)
     const char *result;
-    int offset;       // result - word
-    bool forces;      // the protocol forces bits (Host Link)
-    bool monitorMode; // PROGRAM / MONITOR / RUN (Host Link), else RUN / STOP
-    bool setsMode;    // the protocol switches RUN / STOP (not Vigor Computer Link)
+    int offset;        // result - word
+    bool forces;       // the protocol forces bits (Host Link)
+    bool monitorMode;  // PROGRAM / MONITOR / RUN (Host Link), else RUN / STOP
+    bool setsMode;     // the protocol switches RUN / STOP (not Vigor Computer Link)
+    const char *timer; // rung 3 times it from the input: what the overlay writes under it
 };
 
 // gtest names a failing case by its protocol, not by its bytes.
@@ -79,15 +80,19 @@ void PrintTo(const Case &c, std::ostream *os) {
     *os << c.name;
 }
 
+// The timers' presets: a Vigor K constant lives in the program (the link reads no set
+// value), the PL110's is read from PT1, the CPM1's # constant is in the program too.
 const Case kCases[] = {
     {"Vigor", "vigor", comms::ProtocolKind::VigorLink,
-     "LD X0\nOUT Y0\nLD M9000\nADD D0 K1 D1\nEND\n", "X0", "Y0", "D0", "D1", 1, false, false,
-     false},
+     "LD X0\nOUT Y0\nLD M9000\nADD D0 K1 D1\nLD X0\nTMR T0 K350\nEND\n", "X0", "Y0", "D0", "D1", 1,
+     false, false, false, "/350 ×0.1 s"},
     {"Pl110Modbus", "pl110", comms::ProtocolKind::ModbusRtu,
-     "LD I1\nOUT Q1\nLD SM0.0\nMOV V0 V1\nEND\n", "I1", "Q1", "V0", "V1", 0, false, false, true},
+     "LD I1\nOUT Q1\nLD SM0.0\nMOV V0 V1\nLD I1\nTON T1 300 100\nEND\n", "I1", "Q1", "V0", "V1", 0,
+     false, false, true, "/300 ×0.1 s"},
     {"Cpm1HostLink", "cpm1", comms::ProtocolKind::HostLink,
-     "LD 000.01\nOUT 010.01\nLD 253.13\nMOV(21) DM 0000 DM 0001\nEND(01)\n", "000.01", "010.01",
-     "DM 0000", "DM 0001", 0, true, true, true},
+     "LD 000.01\nOUT 010.01\nLD 253.13\nMOV(21) DM 0000 DM 0001\nLD 000.01\nTIM 000 "
+     "#0350\nEND(01)\n",
+     "000.01", "010.01", "DM 0000", "DM 0001", 0, true, true, true, "/350 ×0.1 s"},
 };
 
 class Online : public ::testing::TestWithParam<Case> {
@@ -244,6 +249,27 @@ TEST_P(Online, TheViewsShowThePlcAndFollowItsInputs) {
     EXPECT_EQ(panel->stateText(), QStringLiteral("Offline"));
 }
 
+// A timer's box shows the time elapsed over its preset, read from the PLC where an area
+// holds it, else the box's own: never the 0 of a set value no protocol can read.
+TEST_P(Online, ATimerShowsItsTimeOverItsPreset) {
+    goOnline();
+    const auto text = [&] {
+        const editor::RungOverlay o = window.ladderView()->overlay(2);
+        return o.output(0) ? o.output(0)->value : QString();
+    };
+    EXPECT_TRUE(QTest::qWaitFor(
+        [&] { return text() == QStringLiteral("0") + QString::fromUtf8(c.timer); }, kPatienceMs))
+        << text().toStdString();
+    setInPlc(c.input, true);
+    EXPECT_TRUE(QTest::qWaitFor(
+        [&] {
+            return text().endsWith(QString::fromUtf8(c.timer)) &&
+                   !text().startsWith(QLatin1Char('0'));
+        },
+        kPatienceMs))
+        << text().toStdString();
+}
+
 TEST_P(Online, WritesAskOnceNameTheDeviceAndThePlcAndShowTheAnswer) {
     goOnline();
     QSignalSpy done(session(), &model::MonitorSource::commandFinished);
@@ -298,13 +324,16 @@ TEST_P(Online, RunAndStopAskFirstAndTheModeFollows) {
         QTest::qWaitFor([&] { return session()->plcMode() == comms::PlcMode::Run; }, kPatienceMs))
         << comms::modeName(session()->plcMode()).toStdString();
     EXPECT_EQ(action("onlineMonitor")->isEnabled(), c.monitorMode);
-    QSignalSpy done(session(), &model::MonitorSource::commandFinished);
-    action("onlineProgram")->trigger();
-    ASSERT_EQ(questions.size(), 1);
-    EXPECT_TRUE(questions[0].contains(session()->plcName()));
-    const comms::PlcMode stopped = c.monitorMode ? comms::PlcMode::Program : comms::PlcMode::Stop;
+    EXPECT_EQ(action("onlineReleaseAll")->isEnabled(), c.forces);
     if (!c.setsMode) {
-        // The PLC's answer, in the panel: the protocol has no such command.
+        // Nothing offered that the protocol cannot do, and the menu says why.
+        EXPECT_FALSE(action("onlineProgram")->isEnabled());
+        EXPECT_FALSE(action("onlineRun")->isEnabled());
+        EXPECT_TRUE(action("onlineRun")->statusTip().contains(QStringLiteral("switch on the PLC")))
+            << action("onlineRun")->statusTip().toStdString();
+        // Asked anyway (a script, a key held over): the answer says it is not done.
+        QSignalSpy done(session(), &model::MonitorSource::commandFinished);
+        panel->requestPlcMode(comms::PlcMode::Stop);
         EXPECT_TRUE(QTest::qWaitFor([&] { return done.size() == 1; }, kPatienceMs));
         EXPECT_FALSE(done[0][1].toBool());
         EXPECT_TRUE(panel->lastCommandText().contains(QStringLiteral("not done")))
@@ -312,6 +341,12 @@ TEST_P(Online, RunAndStopAskFirstAndTheModeFollows) {
         EXPECT_EQ(session()->plcMode(), comms::PlcMode::Run);
         return;
     }
+    EXPECT_TRUE(action("onlineRun")->statusTip().isEmpty());
+    QSignalSpy done(session(), &model::MonitorSource::commandFinished);
+    action("onlineProgram")->trigger();
+    ASSERT_EQ(questions.size(), 1);
+    EXPECT_TRUE(questions[0].contains(session()->plcName()));
+    const comms::PlcMode stopped = c.monitorMode ? comms::PlcMode::Program : comms::PlcMode::Stop;
     EXPECT_TRUE(QTest::qWaitFor([&] { return session()->plcMode() == stopped; }, kPatienceMs))
         << comms::modeName(session()->plcMode()).toStdString() << " "
         << panel->lastCommandText().toStdString();

@@ -296,6 +296,61 @@ TEST(PowerFlow, TimersAndCountersShowElapsedOrCountOverPreset) {
     EXPECT_EQ(counter.overlay(0).output(0)->value, QStringLiteral("3/10"));
 }
 
+// A CPM1 CNT counts down from its set value, both in BCD digits (W353): #0012 with three
+// counts is 9 of 12, not the raw words 9 and 18.
+TEST(PowerFlow, ACpm1CounterShowsItsBcdDigitsAsNumbers) {
+    Running p(model::Family::Cpm1, QStringLiteral("LD 000.00\nLD 000.01\nCNT 001 #0012\nEND\n"));
+    for (int i = 0; i < 3; ++i) {
+        p.set("000.00", true);
+        p.scan();
+        p.set("000.00", false);
+        p.scan();
+    }
+    EXPECT_EQ(p.engine->value(p.at("CNT 001")), 0x09);
+    EXPECT_EQ(p.overlay(0).output(0)->value, QStringLiteral("9/12"));
+}
+
+// Online, the PLC answers only for what a protocol area holds: a Vigor timer's current value,
+// not its K preset, which lives in the program. The overlay then takes the box's own preset:
+// the constant, or the word it names once that word was read; never a 0 nobody read.
+TEST(PowerFlow, OnlineATimerWhosePresetNoAreaHoldsShowsTheBoxsOwnPreset) {
+    Running p(model::Family::Vigor, QStringLiteral("LD X0\nTMR T0 K350\nTMR T1 D10\nEND\n"));
+    p.engine->writeWord(p.at("D10"), 50);
+    p.set("X0", true);
+    p.scan(0, 31);
+    p.snapshot = p.engine->snapshot();
+    const model::MemoryLayout &layout = *p.snapshot.layout;
+    // What an online session over the Vigor link reads: bits and current values only.
+    auto read = std::make_shared<std::vector<bool>>(p.snapshot.words.size(), false);
+    for (const char *device : {"X0", "T0", "T1"}) {
+        (*read)[std::size_t(layout.word(p.at(device)))] = true;
+        (*read)[std::size_t(layout.bit(p.at(device)).word)] = true;
+    }
+    // The words nobody asked for hold 0 online.
+    for (const char *device : {"T0", "T1"})
+        p.snapshot.words[std::size_t(layout.setValueWord(p.at(device)))] = 0;
+    p.snapshot.words[std::size_t(layout.word(p.at("D10")))] = 0;
+    p.snapshot.wordsRead = read;
+    EXPECT_FALSE(p.snapshot.setValueKnown(p.at("T0")));
+    EXPECT_FALSE(p.snapshot.valueKnown(p.at("D10")));
+    const model::Instruction &t0 = p.listing.list.instructions[1];
+    const model::Instruction &t1 = p.listing.list.instructions[2];
+    ASSERT_EQ(t0.op(), model::Op::Timer);
+    EXPECT_EQ(ProgramFlow::timerText(p.target, t0, p.snapshot), QStringLiteral("3/350 ×0.1 s"));
+    EXPECT_EQ(ProgramFlow::timerText(p.target, t1, p.snapshot), QStringLiteral("3/? ×0.1 s"))
+        << "D10 was not read: its preset is not known";
+    // D10 read as well: its value is the preset.
+    (*read)[std::size_t(layout.word(p.at("D10")))] = true;
+    p.snapshot.words[std::size_t(layout.word(p.at("D10")))] = 50;
+    EXPECT_EQ(ProgramFlow::timerText(p.target, t1, p.snapshot), QStringLiteral("3/50 ×0.1 s"));
+    // A simulation knows every word: the memory's set value wins over the operand.
+    model::Snapshot simulated = p.engine->snapshot();
+    EXPECT_TRUE(simulated.setValueKnown(p.at("T0")));
+    p.engine->writeSetValue(p.at("T0"), 200);
+    simulated = p.engine->snapshot();
+    EXPECT_EQ(ProgramFlow::presetOf(p.target, &t0, p.at("T0"), simulated), 200);
+}
+
 TEST(PowerFlow, ABoxShowsTheValuesOfItsWords) {
     Running p(model::Family::Vigor, QStringLiteral("LD X0\nMOV K7 D3\nEND\n"));
     RungOverlay o = p.scan();
