@@ -3,6 +3,7 @@
 #include "document.h"
 #include "terminal_widgets.h"
 
+#include "model/image/bcd.h"
 #include "model/target/address.h"
 
 #include <QComboBox>
@@ -44,11 +45,8 @@ std::int32_t fromBcd(std::int32_t word) {
     return value;
 }
 
-std::int32_t toBcd(int value) {
-    std::int32_t word = 0;
-    for (int shift = 0; shift <= 12 && value > 0; shift += 4, value /= 10)
-        word |= (value % 10) << shift;
-    return word;
+std::int32_t toBcd(int value) { // four digits: the word of a CPM1 channel
+    return static_cast<std::int32_t>(model::toBcd(value % 10000));
 }
 
 // Sections of the panel: bit inputs, bit outputs, word inputs, word outputs.

@@ -232,7 +232,7 @@ QString LadderView::liveHelp(const CellCursor &cell) const {
                         .arg(ProgramFlow::presentOf(target, o.address, *snapshot))
                         .arg(set ? QString::number(*set) : QStringLiteral("?"))
                         .arg(snapshot->bit(o.address) ? tr("ON") : tr("OFF"));
-            if (box && box->op() == model::Op::Timer && &o == &operands.front())
+            if (ownBox && box->op() == model::Op::Timer)
                 value += QStringLiteral("; ") + ProgramFlow::timerText(target, *box, *snapshot);
         } else {
             value = ProgramFlow::wordText(*snapshot, o.address);

@@ -1,5 +1,6 @@
 #include "monitor_commands.h"
 
+#include "model/image/bcd.h"
 #include "model/target/address.h"
 
 #include <QAction>
@@ -24,10 +25,7 @@ void addOnce(std::vector<model::Address> &list, const model::Address &a) {
 std::optional<qint64> toBcd(qint64 value) {
     if (value < 0 || value > 9999)
         return std::nullopt;
-    qint64 bcd = 0;
-    for (int shift = 0; value > 0; shift += 4, value /= 10)
-        bcd |= (value % 10) << shift;
-    return bcd;
+    return model::toBcd(value);
 }
 
 } // namespace

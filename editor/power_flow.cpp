@@ -1,5 +1,6 @@
 #include "power_flow.h"
 
+#include "model/image/bcd.h"
 #include "model/listing/il.h"
 
 #include <QCoreApplication>
@@ -329,14 +330,10 @@ QString ProgramFlow::wordText(const model::Snapshot &snapshot, const model::Addr
 
 namespace {
 
-// A CPM1 TIM's or CNT's present and set values hold BCD digits (W353).
+// A CPM1 TIM's or CNT's present and set values hold BCD digits (W353); a word that is not
+// BCD is shown as it is rather than as a wrong number.
 qint64 setValueNumber(const model::Target &target, qint64 word) {
-    if (!target.constants.bcdSetValues)
-        return word;
-    qint64 number = 0;
-    for (qint64 unit = 1; word > 0; word >>= 4, unit *= 10)
-        number += (word & 0xF) * unit;
-    return number;
+    return target.constants.bcdSetValues ? model::fromBcd(word).value_or(word) : word;
 }
 
 QString numberOrUnknown(std::optional<qint64> value) {

@@ -1,5 +1,6 @@
 #include "engine.h"
 
+#include "model/image/bcd.h"
 #include "model/listing/structure.h"
 
 #include <QCoreApplication>
@@ -51,18 +52,7 @@ inline bool edge(std::uint8_t &prev, bool now, bool falling) {
 
 // BCD digits -> number; -1 when a nibble is above 9 (or the value is negative).
 std::int32_t fromBcd(std::int32_t raw) {
-    if (raw < 0)
-        return -1;
-    std::int32_t result = 0;
-    std::int32_t scale = 1;
-    for (std::uint32_t v = static_cast<std::uint32_t>(raw); v != 0; v >>= 4) {
-        const std::uint32_t digit = v & 0xF;
-        if (digit > 9)
-            return -1;
-        result += static_cast<std::int32_t>(digit) * scale;
-        scale *= 10;
-    }
-    return result;
+    return static_cast<std::int32_t>(model::fromBcd(raw).value_or(-1));
 }
 
 } // namespace

@@ -5,6 +5,7 @@
 // (compiler.h) and scanned by the Engine (engine.h) without looking at text or the target.
 
 #include "model/checks/diagnostic.h"
+#include "model/image/bcd.h"
 #include "model/image/memory_layout.h"
 
 #include <cstdint>
@@ -134,14 +135,8 @@ constexpr std::uint8_t kTimerAccumulates = 1;
 
 enum class WordOp : std::uint8_t { And, Or, Xor, Not, ToBcd, FromBcd };
 
-// The BCD word of a decimal number >= 0, a digit a nibble (CPM1 #0150 constants, Vigor /
-// CPM1 BCD); the caller checks the digits fit the word.
-constexpr std::int64_t toBcd(std::int64_t value) {
-    std::int64_t word = 0;
-    for (std::int64_t shift = 0; value > 0; value /= 10, shift += 4)
-        word |= (value % 10) << shift;
-    return word;
-}
+// CPM1 #0150 constants, Vigor / CPM1 BCD (model/image/bcd.h).
+using model::toBcd;
 
 enum class MathOp : std::uint8_t { Add, Sub, Mul, Div, Or, And, Xor, Shl, Shr };
 

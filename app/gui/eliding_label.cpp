@@ -5,9 +5,7 @@
 namespace rung::app {
 
 ElidingLabel::ElidingLabel(QWidget *parent)
-    : QLabel(parent) {
-    setSizePolicy(QSizePolicy::Preferred, QSizePolicy::Preferred);
-}
+    : QLabel(parent) {}
 
 void ElidingLabel::setFullText(const QString &text) {
     m_full = text;

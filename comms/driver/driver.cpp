@@ -1,5 +1,6 @@
 #include "comms/driver/driver.h"
 
+#include "model/image/bcd.h"
 #include "model/image/snapshot.h"
 #include "model/target/address.h"
 #include "model/target/target.h"
@@ -23,16 +24,9 @@ bool isCounterOrTimer(const model::Area &area) {
     return area.kind == model::AreaKind::Timer || area.kind == model::AreaKind::Counter;
 }
 
-// BCD digits -> number (Host Link RC).
+// BCD digits -> number (Host Link RC); not BCD: shown as it is rather than as a wrong number.
 std::int64_t fromBcd(std::uint32_t raw) {
-    std::int64_t value = 0;
-    for (int shift = 12; shift >= 0; shift -= 4) {
-        const std::uint32_t digit = (raw >> shift) & 0xF;
-        if (digit > 9)
-            return raw; // not BCD: shown as it is rather than as a wrong number
-        value = value * 10 + digit;
-    }
-    return value;
+    return model::fromBcd(raw).value_or(raw);
 }
 
 } // namespace

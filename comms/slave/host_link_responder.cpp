@@ -1,6 +1,7 @@
 #include "comms/slave/host_link_responder.h"
 
 #include "comms/protocol/ascii_hex.h"
+#include "model/image/bcd.h"
 
 namespace rung::comms::slave {
 
@@ -24,22 +25,12 @@ bool unserved(QByteArrayView header) {
 
 // Timer / counter present values travel as four BCD digits (W353, RC / WC).
 std::uint16_t toBcd(std::uint32_t value) {
-    value %= 10000;
-    std::uint16_t out = 0;
-    for (int shift = 0; shift < 16; shift += 4, value /= 10)
-        out |= std::uint16_t((value % 10) << shift);
-    return out;
+    return std::uint16_t(model::toBcd(value % 10000));
 }
 
 std::optional<std::uint16_t> fromBcd(std::uint16_t digits) {
-    std::uint16_t out = 0;
-    for (int shift = 12; shift >= 0; shift -= 4) {
-        const int d = (digits >> shift) & 0xF;
-        if (d > 9)
-            return std::nullopt;
-        out = std::uint16_t(out * 10 + d);
-    }
-    return out;
+    const auto number = model::fromBcd(digits);
+    return number ? std::optional<std::uint16_t>(std::uint16_t(*number)) : std::nullopt;
 }
 
 } // namespace

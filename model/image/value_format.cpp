@@ -1,4 +1,5 @@
 #include "model/image/value_format.h"
+#include "model/image/bcd.h"
 
 #include <QCoreApplication>
 
@@ -78,14 +79,8 @@ QString formatValue(std::int32_t value, int bits, ValueFormat format) {
         return out;
     }
     case ValueFormat::Bcd: {
-        std::uint64_t decimal = 0;
-        for (int b = bits - 4; b >= 0; b -= 4) {
-            const std::uint32_t digit = (u >> b) & 0xFu;
-            if (digit > 9)
-                return Tr::tr("%1 (not BCD)").arg(hex);
-            decimal = decimal * 10 + digit;
-        }
-        return QString::number(decimal);
+        const std::optional<std::int64_t> decimal = fromBcd(u);
+        return decimal ? QString::number(*decimal) : Tr::tr("%1 (not BCD)").arg(hex);
     }
     }
     return {};

@@ -13,13 +13,16 @@
 #include "tests/cli/virtual_plc_fixture.h"
 
 #include <QAction>
+#include <QApplication>
 #include <QDockWidget>
+#include <QHelpEvent>
 #include <QLabel>
 #include <QPlainTextEdit>
 #include <QSignalSpy>
 #include <QStatusBar>
 #include <QTemporaryDir>
 #include <QTest>
+#include <QToolTip>
 
 #include <gtest/gtest.h>
 
@@ -268,6 +271,15 @@ TEST_P(Online, ATimerShowsItsTimeOverItsPreset) {
         },
         kPatienceMs))
         << text().toStdString();
+    // Hovering the box: its tooltip names the same preset.
+    editor::LadderView *view = window.ladderView();
+    const QRect box = view->cellRectOnScreen({2, 0, view->metrics().gridColumns});
+    ASSERT_TRUE(box.isValid());
+    QHelpEvent hover(QEvent::ToolTip, box.center(), view->viewport()->mapToGlobal(box.center()));
+    QApplication::sendEvent(view->viewport(), &hover);
+    const QString preset = QString::fromUtf8(c.timer).section(QLatin1Char(' '), 0, 0).mid(1);
+    EXPECT_TRUE(QToolTip::text().contains(QStringLiteral("set %1, ").arg(preset)))
+        << QToolTip::text().toStdString();
 }
 
 TEST_P(Online, WritesAskOnceNameTheDeviceAndThePlcAndShowTheAnswer) {

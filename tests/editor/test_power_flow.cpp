@@ -52,6 +52,15 @@ struct Running {
         return std::get<model::Address>(model::parseAddress(target, QString::fromLatin1(device)));
     }
     void set(const char *device, bool on) { engine->setBit(at(device), on); }
+    // Rising edges on a counter's input, a scan ON and a scan OFF each.
+    void pulse(const char *device, int times) {
+        for (int i = 0; i < times; ++i) {
+            set(device, true);
+            scan();
+            set(device, false);
+            scan();
+        }
+    }
     // Scans, then the overlay of a rung as the view would draw it.
     RungOverlay scan(int rung = 0, int scans = 1) {
         engine->runScans(static_cast<quint64>(scans));
@@ -287,12 +296,7 @@ TEST(PowerFlow, TimersAndCountersShowElapsedOrCountOverPreset) {
     EXPECT_EQ(o.output(0)->value, QStringLiteral("2/50 ×0.1 s"));
 
     Running counter(model::Family::Vigor, QStringLiteral("LD X0\nCNT C0 K10\nEND\n"));
-    for (int i = 0; i < 3; ++i) {
-        counter.set("X0", true);
-        counter.scan();
-        counter.set("X0", false);
-        counter.scan();
-    }
+    counter.pulse("X0", 3);
     EXPECT_EQ(counter.overlay(0).output(0)->value, QStringLiteral("3/10"));
 }
 
@@ -300,12 +304,7 @@ TEST(PowerFlow, TimersAndCountersShowElapsedOrCountOverPreset) {
 // counts is 9 of 12, not the raw words 9 and 18.
 TEST(PowerFlow, ACpm1CounterShowsItsBcdDigitsAsNumbers) {
     Running p(model::Family::Cpm1, QStringLiteral("LD 000.00\nLD 000.01\nCNT 001 #0012\nEND\n"));
-    for (int i = 0; i < 3; ++i) {
-        p.set("000.00", true);
-        p.scan();
-        p.set("000.00", false);
-        p.scan();
-    }
+    p.pulse("000.00", 3);
     EXPECT_EQ(p.engine->value(p.at("CNT 001")), 0x09);
     EXPECT_EQ(p.overlay(0).output(0)->value, QStringLiteral("9/12"));
 }

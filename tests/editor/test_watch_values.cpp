@@ -58,6 +58,18 @@ TEST(WatchValues, TheValueColumnShowsEachSnapshotAndTheSourceLearnsWhatIsWatched
     EXPECT_EQ(list->child(1)->text(kValue), QStringLiteral("1234"));
     EXPECT_EQ(list->child(2)->text(kValue), QStringLiteral("12 of 50, OFF"));
 
+    // Online, the PLC answered for T3's present value but nobody could read its set value
+    // (a Vigor K preset lives in the program): not "of 0".
+    auto online = std::make_shared<model::Snapshot>(*snapshot);
+    auto read = std::make_shared<std::vector<bool>>(online->words.size(), true);
+    (*read)[static_cast<std::size_t>(layout.setValueWord(at(target, "T3")))] = false;
+    online->words[static_cast<std::size_t>(layout.setValueWord(at(target, "T3")))] = 0;
+    online->wordsRead = read;
+    source.publish(online);
+    ASSERT_TRUE(changed.wait(5000));
+    EXPECT_EQ(list->child(2)->text(kValue), QStringLiteral("12 of ?, OFF"));
+    EXPECT_EQ(list->child(1)->text(kValue), QStringLiteral("1234"));
+
     // A device added to the list is watched and shown at once.
     view.setCurrentItem(view.topLevelItem(0));
     view.addDevice(QStringLiteral("Y1"));
