@@ -114,6 +114,8 @@ void MainWindow::buildOnlineMenu(QToolBar *bar, QMenu *view) {
     fitConnectionDock(dock, m_connectionPanel);
     view->addAction(dock->toggleViewAction());
     QMenu *menu = menuBar()->addMenu(tr("&Online"));
+    // A greyed entry says why when hovered (a status tip does not show for it).
+    menu->setToolTipsVisible(true);
     const auto add = [this, menu](const char *name, const QString &text, const QKeySequence &key,
                                   auto slot) {
         QAction *a = menu->addAction(text, this, slot);
@@ -215,12 +217,12 @@ void MainWindow::updateOnlineActions() {
             a->setEnabled(m_connectionPanel->canConnect() && !session);
         } else if (name == QLatin1String("onlineProgram") || name == QLatin1String("onlineRun")) {
             a->setEnabled(session && can.setsMode);
-            a->setStatusTip(noMode);
+            a->setToolTip(noMode);
         } else if (name == QLatin1String("onlineReleaseAll")) {
             a->setEnabled(session && can.forces);
         } else if (name == QLatin1String("onlineMonitor")) {
             a->setEnabled(session && can.monitorMode);
-            a->setStatusTip(noMode);
+            a->setToolTip(noMode);
         }
     }
 }
