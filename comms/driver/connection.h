@@ -23,8 +23,8 @@ struct ConnectionSettings {
     quint16 tcpPort = 502;
     int station = 1;
     LinkSettings link;
-    // The shortest time from one refresh of the watched devices to the next (0: as fast as
-    // the PLC answers).
+    // The shortest time from the start of one refresh of the watched devices to the start of
+    // the next (0: as fast as the PLC answers).
     int pollIntervalMs = 20;
     // How often a mode that needs its own command (Host Link MS) is read.
     int modePollMs = 1000;

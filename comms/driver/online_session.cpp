@@ -487,8 +487,11 @@ void OnlineSession::workerLoop() {
             postToOwner([this, text = problemText()] { setErrorText(text); });
         }
         shareStatistics(false);
+        // The interval runs from the start of this refresh, so a refresh that takes longer
+        // than it (any serial line with more than a few frames) is followed by the next at
+        // once: the wire, not a pause, sets the rate.
         std::unique_lock lock(m_mutex);
-        if (!waitFor(lock, m_settings.pollIntervalMs))
+        if (!waitFor(lock, std::max(0, m_settings.pollIntervalMs - int(clock.elapsed()))))
             break;
     }
     std::lock_guard lock(m_mutex);

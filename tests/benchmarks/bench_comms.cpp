@@ -6,11 +6,13 @@
 // A pty has no baud rate: its time is what the software adds to the wire time.
 
 #include "comms/driver/driver.h"
+#include "comms/driver/online_session.h"
 #include "comms/transport/pty_transport.h"
 #include "model/target/target.h"
 #include "tests/comms/fake_plc.h"
 #include "tests/comms/pty_peer.h"
 
+#include <QCoreApplication>
 #include <QElapsedTimer>
 
 #include <benchmark/benchmark.h>
@@ -18,6 +20,7 @@
 #include <limits>
 #include <map>
 #include <random>
+#include <thread>
 
 using namespace rung;
 using namespace rung::comms;
@@ -187,6 +190,121 @@ void BM_RefreshOverPty(benchmark::State &state) {
 }
 BENCHMARK(BM_RefreshOverPty)->DenseRange(0, 3)->Unit(benchmark::kMillisecond)->UseRealTime();
 
+// The first `count` elements of each area the protocol maps, area after area: the devices of
+// a screenful of rungs, which come in runs (X0-X17, Y0-Y7, M100-M131, T0-T7, D0-D9).
+std::vector<model::Address> clustered(const Driver &driver, int count) {
+    const model::Target &t = driver.target();
+    std::vector<model::Address> out;
+    const int each = 8;
+    for (int start = 0; int(out.size()) < count && start < 64; start += each)
+        for (int a = 0; a < int(t.areas.size()) && int(out.size()) < count; ++a) {
+            const model::Area &area = t.area(a);
+            for (int e = area.first + start;
+                 e <= area.last && e < area.first + start + each && int(out.size()) < count; ++e)
+                if (driver.plan({model::Address{a, e, -1}}).unmapped.empty())
+                    out.push_back({a, e, -1});
+        }
+    return out;
+}
+
+// Issue 13: with 100 devices on screen at 19200 bps, the online refresh rate against what the
+// wire allows for the planned frames. The whole online path: an OnlineSession (its worker,
+// planner, driver, link and the 20 ms poll interval of the connection panel) on a real
+// pseudo-terminal, the virtual PLC answering as a PLC on a 19200 bps line could at the
+// earliest (PtyWire). "wire_ms" is the time the planned frames take on that line at
+// the least, the silences Modbus RTU asks for included; "rate_vs_wire" = wire_ms / the real
+// time between refreshes (the limit is 0.9). Range: the protocol case, then 0 = 100 devices
+// scattered at random (many short frames), 1 = 100 devices in runs (a screenful of rungs).
+void BM_OnlineRefreshAt19200(benchmark::State &state) {
+    const Case &c = kCases[state.range(0)];
+    const bool inRuns = state.range(1) == 1;
+    state.SetLabel(std::string(c.name) + (inRuns ? " 100 in runs" : " 100 scattered"));
+    test::FakeVigorPlc vigor;
+    test::FakeModbusPlc modbus(c.station);
+    test::FakeHostLinkPlc hostLink;
+    const auto responder = c.protocol == ProtocolKind::VigorLink  ? vigor.responder()
+                           : c.protocol == ProtocolKind::HostLink ? hostLink.responder()
+                                                                  : modbus.responder();
+    const bool rtu = c.protocol == ProtocolKind::ModbusRtu;
+    test::PtyPeer peer(responder, true, {19200, c.bitsPerCharacter, rtu ? 3.5 : 0.0});
+    if (!peer.ok()) {
+        state.SkipWithError(peer.error().toStdString().c_str());
+        return;
+    }
+    // The plan the session will make, for its figures: the same devices and the run bit.
+    auto planner = makeDriver(c, std::make_unique<PtyTransport>(peer.path()));
+    std::vector<model::Address> devices =
+        inRuns ? clustered(*planner, 100) : scattered(*planner, 100);
+    std::vector<model::Address> planned = devices;
+    if (planner->runStateDevice().valid())
+        planned.push_back(planner->runStateDevice());
+    std::sort(planned.begin(), planned.end());
+    planned.erase(std::unique(planned.begin(), planned.end()), planned.end());
+    const auto plan = planner->plan(planned);
+    const double characterMs = c.bitsPerCharacter * 1000.0 / 19200.0;
+    const double wireMs =
+        (double(plan.bytes()) + (rtu ? 2 * 3.5 * double(plan.reads.size()) : 0.0)) * characterMs;
+
+    ConnectionSettings settings = defaultSettings(c.protocol);
+    settings.via = ConnectionSettings::Via::Pty;
+    settings.port = peer.path();
+    settings.station = c.station;
+    settings.link.timeoutMs = 2000;
+    OnlineSession session(model::Target::get(c.family), settings);
+    QObject reader;
+    session.setWatched(&reader, devices);
+    session.connectToPlc();
+    const auto refreshes = [&session] {
+        const auto snapshot = session.snapshot();
+        return snapshot ? snapshot->statistics.scans : quint64(0);
+    };
+    const auto waitFor = [&](quint64 count) {
+        QElapsedTimer patience;
+        patience.start();
+        while (refreshes() < count) {
+            if (patience.elapsed() > 20000)
+                return false;
+            std::this_thread::sleep_for(std::chrono::microseconds(200));
+        }
+        return true;
+    };
+    // The first refresh also reads the PLC's identity: start counting after it.
+    if (!waitFor(1)) {
+        state.SkipWithError(qPrintable(QStringLiteral("no refresh: ") + session.errorText()));
+        return;
+    }
+    quint64 seen = refreshes();
+    const quint64 counted = seen;
+    QElapsedTimer clock;
+    clock.start();
+    for (auto _ : state) {
+        if (!waitFor(seen + 1)) {
+            state.SkipWithError(qPrintable(QStringLiteral("stopped: ") + session.errorText()));
+            return;
+        }
+        seen = refreshes();
+    }
+    const double refreshMs = double(clock.nsecsElapsed()) / 1e6 / double(seen - counted);
+    state.counters["frames"] = double(plan.reads.size());
+    state.counters["bytes"] = plan.bytes();
+    state.counters["wire_ms"] = wireMs;
+    state.counters["refresh_ms"] = refreshMs;
+    state.counters["rate_vs_wire"] = wireMs / refreshMs;
+    session.disconnectFromPlc();
+    if (wireMs / refreshMs < 0.9)
+        state.SkipWithError("the refresh rate is under 90% of what the wire allows");
+}
+BENCHMARK(BM_OnlineRefreshAt19200)
+    ->ArgsProduct({{0, 1, 2, 3}, {0, 1}})
+    ->Iterations(5)
+    ->Unit(benchmark::kMillisecond)
+    ->UseRealTime();
+
 } // namespace
 
-BENCHMARK_MAIN();
+int main(int argc, char **argv) {
+    QCoreApplication app(argc, argv); // the online session posts to its owner's thread
+    benchmark::Initialize(&argc, argv);
+    benchmark::RunSpecifiedBenchmarks();
+    return 0;
+}

@@ -10,18 +10,31 @@
 #include "tests/comms/fake_transport.h"
 
 #include <atomic>
+#include <chrono>
 #include <thread>
 
 namespace rung::comms::test {
+
+// A pty has no baud rate. With a wire speed, an eager PtyPeer answers when a PLC on a serial
+// line at that speed could have at the earliest: the request's characters, the silence the
+// protocol asks before an answer (Modbus RTU: 3.5 characters), then the answer's characters,
+// counted from the request's first byte; the PLC's own turnaround is taken as nothing.
+struct PtyWire {
+    int bitsPerSecond = 0; // 0: no pacing
+    int bitsPerCharacter = 10;
+    double silenceCharacters = 0;
+    double characterUs() const { return 1e6 * bitsPerCharacter / bitsPerSecond; }
+};
 
 class PtyPeer {
 public:
     // eager: answer as soon as the responder makes an answer of what arrived (it returns
     // nothing for a request not yet whole), instead of waiting for the line to go quiet; for
     // the benchmark, whose times would otherwise count the wait.
-    explicit PtyPeer(FakeTransport::Responder responder, bool eager = false)
+    explicit PtyPeer(FakeTransport::Responder responder, bool eager = false, PtyWire wire = {})
         : m_responder(std::move(responder))
-        , m_eager(eager) {
+        , m_eager(eager)
+        , m_wire(wire) {
         QString error;
         m_master = PtyTransport::createPair(&error);
         if (!m_master) {
@@ -45,10 +58,13 @@ public:
 private:
     void loop() {
         QByteArray request;
+        std::chrono::steady_clock::time_point firstByte;
         while (!m_stop) {
             // Quiet for 3 ms after bytes: the request is whole.
             const ReadResult r = m_master->read(QDeadlineTimer(request.isEmpty() ? 200 : 3));
             if (r.status == ReadResult::Status::Data) {
+                if (request.isEmpty())
+                    firstByte = std::chrono::steady_clock::now();
                 request += r.bytes;
                 // A Host Link delimiter (a lone CR asking for the next part, which the
                 // responder sent already) is no request.
@@ -58,8 +74,18 @@ private:
                     const QList<QByteArray> reply = m_responder(request);
                     if (!reply.isEmpty()) {
                         QString error;
-                        for (const QByteArray &chunk : reply)
+                        double dueUs =
+                            m_wire.bitsPerSecond > 0
+                                ? (request.size() + m_wire.silenceCharacters) * m_wire.characterUs()
+                                : 0;
+                        for (const QByteArray &chunk : reply) {
+                            if (m_wire.bitsPerSecond > 0) {
+                                dueUs += chunk.size() * m_wire.characterUs();
+                                std::this_thread::sleep_until(
+                                    firstByte + std::chrono::microseconds(qint64(dueUs)));
+                            }
                             m_master->write(chunk, QDeadlineTimer(1000), &error);
+                        }
                         ++m_answered;
                         request.clear();
                     }
@@ -80,6 +106,7 @@ private:
 
     FakeTransport::Responder m_responder;
     bool m_eager = false;
+    PtyWire m_wire;
     std::unique_ptr<PtyTransport> m_master;
     QString m_error;
     std::atomic<bool> m_stop{false};

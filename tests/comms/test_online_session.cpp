@@ -12,6 +12,9 @@
 
 #include <gtest/gtest.h>
 
+#include <chrono>
+#include <thread>
+
 namespace rung::comms::test {
 namespace {
 
@@ -207,6 +210,41 @@ TEST(OnlineSession, RunAndStopThroughTheRunBitShowInTheRunState) {
     const auto run = h.finish(h.session->setPlcMode(PlcMode::Run), finished);
     EXPECT_TRUE(run.first) << run.second.toStdString();
     EXPECT_TRUE(eventually([&] { return h.session->runState() == RunState::Running; }));
+}
+
+// At 19200 bps a refresh of a screenful of devices takes longer than the poll interval: the
+// next one starts at once (the interval counts from the start of a refresh), so the wire, not
+// a pause, sets the rate. Each answer here takes 150 ms, a refresh (V10 and the RUN bit, two
+// frames) 300 ms, the interval 250 ms: one refresh after the other comes every ~300 ms, and
+// would come every ~550 ms if the interval were a pause after each.
+TEST(OnlineSession, ARefreshLongerThanThePollIntervalIsFollowedAtOnce) {
+    FakeModbusPlc plc;
+    plc.setCoil(16000, true);
+    ConnectionSettings settings = pl110Settings();
+    settings.link.timeoutMs = 2000;
+    settings.pollIntervalMs = 250;
+    Harness h(model::Family::Pl110, settings, [&](FakeTransport &t) {
+        t.setResponder([answer = plc.responder()](const QByteArray &request) {
+            std::this_thread::sleep_for(std::chrono::milliseconds(150));
+            return answer(request);
+        });
+    });
+    h.watch({"V10"});
+    h.session->connectToPlc();
+    const auto refreshes = [&] {
+        const auto snapshot = h.snapshot();
+        return snapshot ? snapshot->statistics.scans : 0;
+    };
+    ASSERT_TRUE(eventually([&] { return h.session->statistics().framesPerRefresh == 2; }));
+    // From the end of one refresh to the end of the next, twice.
+    const auto first = refreshes();
+    ASSERT_TRUE(eventually([&] { return refreshes() > first; }));
+    QElapsedTimer clock;
+    clock.start();
+    ASSERT_TRUE(eventually([&] { return refreshes() > first + 2; }));
+    const double periodMs = double(clock.elapsed()) / 2;
+    EXPECT_GE(periodMs, 280);
+    EXPECT_LT(periodMs, 425) << "a pause of the poll interval after each refresh";
 }
 
 TEST(OnlineSession, ALostLinkShowsAtOnceKeepsTheValuesStaleAndResumesByItself) {
