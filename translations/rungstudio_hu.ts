@@ -249,7 +249,7 @@ Kilépési kód: 0 nincs hiba, 1 a programban hiba van, 2 használati vagy I/O h
 <context>
     <name>rung::app::ConnectionPanel</name>
     <message>
-        <location filename="../app/gui/connection_panel_link.cpp" line="+45"/>
+        <location filename="../app/gui/connection_panel_link.cpp" line="+48"/>
         <source>ON</source>
         <translation>BE</translation>
     </message>
@@ -329,7 +329,7 @@ Kilépési kód: 0 nincs hiba, 1 a programban hiba van, 2 használati vagy I/O h
         <translation>Frissítés</translation>
     </message>
     <message>
-        <location line="+1"/>
+        <location line="+2"/>
         <source>Baud rate:</source>
         <translation>Átviteli sebesség (baud):</translation>
     </message>
@@ -409,6 +409,16 @@ Kilépési kód: 0 nincs hiba, 1 a programban hiba van, 2 használati vagy I/O h
         <translation>A(z) %1 kommunikációs protokollja nem nyilvános, ezért az IDE nem tud vele kapcsolatot teremteni. Helyette: exportálja a programot konzollistaként (Fájl &gt; Utasításlista exportálása), és töltse be a PLC saját eszközével; a kapcsolat tanulmányozásához rögzítse az adatforgalmát a &apos;rungstudio-cli record&apos; paranccsal.</translation>
     </message>
     <message>
+        <location line="+72"/>
+        <source>No port found</source>
+        <translation>Nem található port</translation>
+    </message>
+    <message>
+        <location line="+1"/>
+        <source>Choose or type a port</source>
+        <translation>Válasszon vagy írjon be portot</translation>
+    </message>
+    <message>
         <location filename="../app/gui/connection_panel_link.cpp" line="+23"/>
         <source>Change the PLC&apos;s Memory</source>
         <translation>A PLC memóriájának módosítása</translation>
@@ -423,13 +433,12 @@ This changes the memory of a real PLC, which may be driving a machine. You are a
 Ez egy valódi PLC memóriáját módosítja, amely gépet vezérelhet. Kapcsolatonként egyszer kérdezünk; a további módosítások azonnal mennek.</translation>
     </message>
     <message>
-        <location line="+16"/>
-        <location line="+103"/>
+        <location line="+108"/>
         <source>Choose the serial port the PLC is on (or type its path)</source>
         <translation>Válassza ki a soros portot, amelyen a PLC van (vagy írja be az elérési útját)</translation>
     </message>
     <message>
-        <location line="-74"/>
+        <location line="-65"/>
         <source>%1: done, the PLC acknowledged it</source>
         <translation>%1: kész, a PLC nyugtázta</translation>
     </message>
@@ -479,6 +488,11 @@ Ez egy valódi PLC memóriáját módosítja, amely gépet vezérelhet. Kapcsola
     </message>
     <message>
         <location line="+7"/>
+        <source>Type the host name or IP address of the PLC or its gateway</source>
+        <translation>Írja be a PLC vagy az átjárója gépnevét vagy IP-címét</translation>
+    </message>
+    <message>
+        <location line="+12"/>
         <source>Already connected: the panel shows what the PLC reports</source>
         <translation>Már csatlakozva: a panel mutatja, amit a PLC jelent</translation>
     </message>
@@ -488,7 +502,7 @@ Ez egy valódi PLC memóriáját módosítja, amely gépet vezérelhet. Kapcsola
         <translation>Egy teszt folyamatban van</translation>
     </message>
     <message>
-        <location line="+15"/>
+        <location line="+13"/>
         <source>Testing %1...</source>
         <translation>%1 tesztelése...</translation>
     </message>
@@ -1719,18 +1733,18 @@ Létradiagram- és utasításlista-szerkesztő a következő PLC-khez: %2.</tran
         <translation>&amp;Online</translation>
     </message>
     <message>
-        <location line="+13"/>
-        <location line="+80"/>
+        <location line="+15"/>
+        <location line="+81"/>
         <source>Go &amp;Online</source>
         <translation>&amp;Online kapcsolódás</translation>
     </message>
     <message>
-        <location line="-70"/>
+        <location line="-71"/>
         <source>&amp;Test Connection</source>
         <translation>Kapcsolat &amp;tesztelése</translation>
     </message>
     <message>
-        <location line="+5"/>
+        <location line="+6"/>
         <source>PLC to &amp;STOP / PROGRAM</source>
         <translation>PLC &amp;STOP / PROGRAM módba</translation>
     </message>
@@ -2610,7 +2624,7 @@ Kiértékelés: %4 µs (%5..%6)</translation>
 <context>
     <name>rung::comms::Driver</name>
     <message>
-        <location filename="../comms/driver/driver.cpp" line="+57"/>
+        <location filename="../comms/driver/driver.cpp" line="+51"/>
         <source>station 0 is the Modbus broadcast address: no PLC answers it, so nothing could be read and no write acknowledged; give the PLC&apos;s own station (1..247, or 255 for any PL110)</source>
         <translation>a 0-s állomás a Modbus körüzenet-címe: egyetlen PLC sem válaszol rá, így semmit sem lehetne olvasni, és egyetlen írást sem nyugtázna senki; adja meg a PLC saját állomáscímét (1..247, vagy bármely PL110-hez 255)</translation>
     </message>
@@ -3599,7 +3613,7 @@ Kiértékelés: %4 µs (%5..%6)</translation>
 <context>
     <name>rung::editor::IoPanel</name>
     <message>
-        <location filename="../editor/io_panel.cpp" line="+88"/>
+        <location filename="../editor/io_panel.cpp" line="+86"/>
         <source>Inputs are switches</source>
         <translation>A bemenetek kapcsolók</translation>
     </message>
@@ -3826,7 +3840,7 @@ Kiértékelés: %4 µs (%5..%6)</translation>
 <context>
     <name>rung::editor::MonitorCommands</name>
     <message>
-        <location filename="../editor/monitor_commands.cpp" line="+129"/>
+        <location filename="../editor/monitor_commands.cpp" line="+127"/>
         <source>Force %1 O&amp;N</source>
         <translation>%1 kényszerítése &amp;BE</translation>
     </message>
@@ -3946,7 +3960,7 @@ Kiértékelés: %4 µs (%5..%6)</translation>
     <name>rung::editor::PowerFlow</name>
     <message>
         <location filename="../editor/il_editor_monitor.cpp" line="+97"/>
-        <location filename="../editor/power_flow.cpp" line="+326"/>
+        <location filename="../editor/power_flow.cpp" line="+327"/>
         <source>ON</source>
         <translation>BE</translation>
     </message>
@@ -3957,7 +3971,7 @@ Kiértékelés: %4 µs (%5..%6)</translation>
         <translation>KI</translation>
     </message>
     <message>
-        <location filename="../editor/power_flow.cpp" line="+61"/>
+        <location filename="../editor/power_flow.cpp" line="+57"/>
         <source>%1/%2 ×%3 s</source>
         <extracomment>a timer&apos;s time elapsed / set value in its units, then the unit: &quot;23/50 ×0.1 s&quot;</extracomment>
         <translation>%1/%2 ×%3 s</translation>
@@ -6949,7 +6963,7 @@ Kiértékelés: %4 µs (%5..%6)</translation>
 <context>
     <name>rung::model::ValueFormat</name>
     <message>
-        <location filename="../model/image/value_format.cpp" line="+45"/>
+        <location filename="../model/image/value_format.cpp" line="+46"/>
         <source>Decimal</source>
         <translation>Decimális</translation>
     </message>
@@ -6974,12 +6988,12 @@ Kiértékelés: %4 µs (%5..%6)</translation>
         <translation>BCD</translation>
     </message>
     <message>
-        <location line="+32"/>
+        <location line="+29"/>
         <source>%1 (not BCD)</source>
         <translation>%1 (nem BCD)</translation>
     </message>
     <message>
-        <location line="+13"/>
+        <location line="+10"/>
         <location line="+61"/>
         <source>Type a value</source>
         <translation>Írjon be egy értéket</translation>
@@ -7171,7 +7185,7 @@ Kiértékelés: %4 µs (%5..%6)</translation>
 <context>
     <name>rung::simulator::Engine</name>
     <message>
-        <location filename="../simulator/engine_execute.cpp" line="+78"/>
+        <location filename="../simulator/engine_execute.cpp" line="+68"/>
         <source>set value %1 is not a BCD number; the instruction is skipped</source>
         <translation>a(z) %1 beállított érték nem BCD szám; az utasítás kimarad</translation>
     </message>

@@ -249,7 +249,7 @@ Codice di uscita: 0 nessun errore, 1 il programma contiene errori, 2 errore di u
 <context>
     <name>rung::app::ConnectionPanel</name>
     <message>
-        <location filename="../app/gui/connection_panel_link.cpp" line="+45"/>
+        <location filename="../app/gui/connection_panel_link.cpp" line="+48"/>
         <source>ON</source>
         <translation>ON</translation>
     </message>
@@ -329,7 +329,7 @@ Codice di uscita: 0 nessun errore, 1 il programma contiene errori, 2 errore di u
         <translation>Aggiorna</translation>
     </message>
     <message>
-        <location line="+1"/>
+        <location line="+2"/>
         <source>Baud rate:</source>
         <translation>Velocità (baud):</translation>
     </message>
@@ -409,6 +409,16 @@ Codice di uscita: 0 nessun errore, 1 il programma contiene errori, 2 errore di u
         <translation>Il protocollo di comunicazione del %1 non è pubblicato, quindi l&apos;IDE non può dialogare con esso. In alternativa: esportare il programma come listato per console (File &gt; Esporta lista istruzioni) e caricarlo con lo strumento proprio del PLC; per studiare il collegamento, registrarne il traffico con &apos;rungstudio-cli record&apos;.</translation>
     </message>
     <message>
+        <location line="+72"/>
+        <source>No port found</source>
+        <translation>Nessuna porta trovata</translation>
+    </message>
+    <message>
+        <location line="+1"/>
+        <source>Choose or type a port</source>
+        <translation>Scegliere o digitare una porta</translation>
+    </message>
+    <message>
         <location filename="../app/gui/connection_panel_link.cpp" line="+23"/>
         <source>Change the PLC&apos;s Memory</source>
         <translation>Modifica della memoria del PLC</translation>
@@ -423,13 +433,12 @@ This changes the memory of a real PLC, which may be driving a machine. You are a
 Questo modifica la memoria di un PLC reale, che potrebbe comandare una macchina. La domanda viene posta una volta per connessione; le modifiche successive partono subito.</translation>
     </message>
     <message>
-        <location line="+16"/>
-        <location line="+103"/>
+        <location line="+108"/>
         <source>Choose the serial port the PLC is on (or type its path)</source>
         <translation>Scegliere la porta seriale del PLC (o digitarne il percorso)</translation>
     </message>
     <message>
-        <location line="-74"/>
+        <location line="-65"/>
         <source>%1: done, the PLC acknowledged it</source>
         <translation>%1: fatto, il PLC ha confermato</translation>
     </message>
@@ -479,6 +488,11 @@ Questo modifica la memoria di un PLC reale, che potrebbe comandare una macchina.
     </message>
     <message>
         <location line="+7"/>
+        <source>Type the host name or IP address of the PLC or its gateway</source>
+        <translation>Digitare il nome host o l&apos;indirizzo IP del PLC o del suo gateway</translation>
+    </message>
+    <message>
+        <location line="+12"/>
         <source>Already connected: the panel shows what the PLC reports</source>
         <translation>Già connesso: il pannello mostra ciò che il PLC riporta</translation>
     </message>
@@ -488,7 +502,7 @@ Questo modifica la memoria di un PLC reale, che potrebbe comandare una macchina.
         <translation>Un test è in corso</translation>
     </message>
     <message>
-        <location line="+15"/>
+        <location line="+13"/>
         <source>Testing %1...</source>
         <translation>Test di %1...</translation>
     </message>
@@ -1724,18 +1738,18 @@ Editor di schemi ladder e liste istruzioni per %2.</translation>
         <translation>&amp;In linea</translation>
     </message>
     <message>
-        <location line="+13"/>
-        <location line="+80"/>
+        <location line="+15"/>
+        <location line="+81"/>
         <source>Go &amp;Online</source>
         <translation>Vai &amp;online</translation>
     </message>
     <message>
-        <location line="-70"/>
+        <location line="-71"/>
         <source>&amp;Test Connection</source>
         <translation>&amp;Prova connessione</translation>
     </message>
     <message>
-        <location line="+5"/>
+        <location line="+6"/>
         <source>PLC to &amp;STOP / PROGRAM</source>
         <translation>PLC in &amp;STOP / PROGRAM</translation>
     </message>
@@ -2616,7 +2630,7 @@ Valutazione: %4 µs (%5..%6)</translation>
 <context>
     <name>rung::comms::Driver</name>
     <message>
-        <location filename="../comms/driver/driver.cpp" line="+57"/>
+        <location filename="../comms/driver/driver.cpp" line="+51"/>
         <source>station 0 is the Modbus broadcast address: no PLC answers it, so nothing could be read and no write acknowledged; give the PLC&apos;s own station (1..247, or 255 for any PL110)</source>
         <translation>la stazione 0 è l&apos;indirizzo broadcast Modbus: nessun PLC risponde, quindi nulla potrebbe essere letto né alcuna scrittura confermata; indicare la stazione del PLC (1..247, o 255 per qualsiasi PL110)</translation>
     </message>
@@ -3606,7 +3620,7 @@ Valutazione: %4 µs (%5..%6)</translation>
 <context>
     <name>rung::editor::IoPanel</name>
     <message>
-        <location filename="../editor/io_panel.cpp" line="+88"/>
+        <location filename="../editor/io_panel.cpp" line="+86"/>
         <source>Inputs are switches</source>
         <translation>Ingressi come interruttori</translation>
     </message>
@@ -3833,7 +3847,7 @@ Valutazione: %4 µs (%5..%6)</translation>
 <context>
     <name>rung::editor::MonitorCommands</name>
     <message>
-        <location filename="../editor/monitor_commands.cpp" line="+129"/>
+        <location filename="../editor/monitor_commands.cpp" line="+127"/>
         <source>Force %1 O&amp;N</source>
         <translation>Forza %1 O&amp;N</translation>
     </message>
@@ -3953,7 +3967,7 @@ Valutazione: %4 µs (%5..%6)</translation>
     <name>rung::editor::PowerFlow</name>
     <message>
         <location filename="../editor/il_editor_monitor.cpp" line="+97"/>
-        <location filename="../editor/power_flow.cpp" line="+326"/>
+        <location filename="../editor/power_flow.cpp" line="+327"/>
         <source>ON</source>
         <translation>ON</translation>
     </message>
@@ -3964,7 +3978,7 @@ Valutazione: %4 µs (%5..%6)</translation>
         <translation>OFF</translation>
     </message>
     <message>
-        <location filename="../editor/power_flow.cpp" line="+61"/>
+        <location filename="../editor/power_flow.cpp" line="+57"/>
         <source>%1/%2 ×%3 s</source>
         <extracomment>a timer&apos;s time elapsed / set value in its units, then the unit: &quot;23/50 ×0.1 s&quot;</extracomment>
         <translation>%1/%2 ×%3 s</translation>
@@ -6964,7 +6978,7 @@ Valutazione: %4 µs (%5..%6)</translation>
 <context>
     <name>rung::model::ValueFormat</name>
     <message>
-        <location filename="../model/image/value_format.cpp" line="+45"/>
+        <location filename="../model/image/value_format.cpp" line="+46"/>
         <source>Decimal</source>
         <translation>Decimale</translation>
     </message>
@@ -6989,12 +7003,12 @@ Valutazione: %4 µs (%5..%6)</translation>
         <translation>BCD</translation>
     </message>
     <message>
-        <location line="+32"/>
+        <location line="+29"/>
         <source>%1 (not BCD)</source>
         <translation>%1 (non BCD)</translation>
     </message>
     <message>
-        <location line="+13"/>
+        <location line="+10"/>
         <location line="+61"/>
         <source>Type a value</source>
         <translation>Digitare un valore</translation>
@@ -7186,7 +7200,7 @@ Valutazione: %4 µs (%5..%6)</translation>
 <context>
     <name>rung::simulator::Engine</name>
     <message>
-        <location filename="../simulator/engine_execute.cpp" line="+78"/>
+        <location filename="../simulator/engine_execute.cpp" line="+68"/>
         <source>set value %1 is not a BCD number; the instruction is skipped</source>
         <translation>il valore di preset %1 non è un numero BCD; l&apos;istruzione viene saltata</translation>
     </message>

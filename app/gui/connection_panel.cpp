@@ -245,6 +245,7 @@ void ConnectionPanel::retranslate() {
     m_port->setToolTip(tr("A serial port, or a path typed in (a pseudo-terminal such as the "
                           "one 'rungstudio-cli serve --pty' prints)"));
     m_refresh->setText(tr("Refresh"));
+    updatePortHint();
     m_baudLabel->setText(tr("Baud rate:"));
     m_frameLabel->setText(tr("Format:"));
     m_frame->setToolTip(tr("Data bits, parity (N none, E even, O odd) and stop bits"));
@@ -351,6 +352,13 @@ void ConnectionPanel::refreshPorts() {
         m_port->setCurrentIndex(i);
     else
         m_port->setEditText(keep);
+    updatePortHint();
+}
+
+void ConnectionPanel::updatePortHint() {
+    // An empty field says whether the list has anything to choose from.
+    m_port->lineEdit()->setPlaceholderText(m_port->count() == 0 ? tr("No port found")
+                                                                : tr("Choose or type a port"));
 }
 
 comms::ConnectionSettings ConnectionPanel::settings() const {

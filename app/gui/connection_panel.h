@@ -107,6 +107,10 @@ private:
     void updateStatistics();
     void pullTraffic();
     void finishTest(bool ok, const QString &text);
+    // No port chosen: says so in the panel as well as the status bar, and puts the cursor in
+    // the port's field; false.
+    bool askForPort();
+    void updatePortHint();
     void remember() const;
     std::unique_ptr<comms::OnlineSession> makeSession() const;
     comms::ProtocolKind protocol() const;

@@ -11,12 +11,15 @@
 #include "model/target/target.h"
 
 #include <QCheckBox>
+#include <QComboBox>
 #include <QGroupBox>
 #include <QHash>
 #include <QLabel>
+#include <QLineEdit>
 #include <QMessageBox>
 #include <QPlainTextEdit>
 #include <QPushButton>
+#include <QRadioButton>
 #include <QSaveFile>
 #include <QTimer>
 
@@ -120,10 +123,8 @@ bool ConnectionPanel::connectToPlc() {
         return false;
     }
     const ConnectionSettings s = settings();
-    if (s.where().isEmpty() || (s.via == ConnectionSettings::Via::Serial && s.port.isEmpty())) {
-        emit message(tr("Choose the serial port the PLC is on (or type its path)"));
-        return false;
-    }
+    if (s.where().isEmpty() || (s.via == ConnectionSettings::Via::Serial && s.port.isEmpty()))
+        return askForPort();
     if (m_guard && !m_guard())
         return false;
     m_test.reset();
@@ -212,6 +213,18 @@ bool ConnectionPanel::requestPlcMode(comms::PlcMode mode) {
     return setPlcMode(mode) != 0;
 }
 
+bool ConnectionPanel::askForPort() {
+    const QString text = m_viaTcp->isChecked()
+                             ? tr("Type the host name or IP address of the PLC or its gateway")
+                             : tr("Choose the serial port the PLC is on (or type its path)");
+    m_testResult->setStyleSheet(colourSheet(kBad));
+    m_testResult->setText(text);
+    emit message(text);
+    QWidget *field = m_viaTcp->isChecked() ? static_cast<QWidget *>(m_host) : m_port;
+    field->setFocus(Qt::OtherFocusReason);
+    return false;
+}
+
 bool ConnectionPanel::testConnection() {
     if (m_session || m_test) {
         emit message(m_session ? tr("Already connected: the panel shows what the PLC reports")
@@ -223,10 +236,8 @@ bool ConnectionPanel::testConnection() {
         return false;
     }
     const ConnectionSettings s = settings();
-    if (s.where().isEmpty()) {
-        emit message(tr("Choose the serial port the PLC is on (or type its path)"));
-        return false;
-    }
+    if (s.where().isEmpty())
+        return askForPort();
     remember();
     m_test = std::make_unique<comms::OnlineSession>(*m_target, s);
     m_testResult->setStyleSheet(QString());

@@ -140,6 +140,7 @@ void MainWindow::buildOnlineMenu(QToolBar *bar, QMenu *view) {
     go->setIcon(style()->standardIcon(QStyle::SP_DriveNetIcon));
     add("onlineTest", tr("&Test Connection"), {}, [this, dock] {
         dock->show();
+        dock->raise(); // its settings and its answer are in the panel
         m_connectionPanel->testConnection();
     });
     menu->addSeparator();

@@ -14,13 +14,16 @@
 
 #include <QAction>
 #include <QApplication>
+#include <QComboBox>
 #include <QDockWidget>
 #include <QHelpEvent>
 #include <QLabel>
+#include <QLineEdit>
 #include <QMenu>
 #include <QPlainTextEdit>
 #include <QSignalSpy>
 #include <QStatusBar>
+#include <QTabBar>
 #include <QTemporaryDir>
 #include <QTest>
 #include <QToolTip>
@@ -507,6 +510,45 @@ TEST(OnlinePanel, TestConnectionReadsTheIdentityOfTheVirtualPlc) {
     EXPECT_TRUE(result[0][1].toString().contains(QStringLiteral("model code 11h")))
         << result[0][1].toString().toStdString();
     EXPECT_EQ(panel->session(), nullptr) << "a test does not stay online";
+}
+
+// Online > Test Connection before a port is chosen: the panel comes to the front, says what
+// it needs where the user looks, and puts the cursor in the port's field.
+TEST(OnlinePanel, TestConnectionWithoutAPortShowsThePanelAndAsksForOne) {
+    app::MainWindow window;
+    window.newProject(model::Target::get(model::Family::Pl110), QString());
+    window.show();
+    window.activateWindow();
+    ASSERT_TRUE(QTest::qWaitForWindowActive(&window));
+    app::ConnectionPanel *panel = window.connectionPanel();
+    comms::ConnectionSettings s = comms::defaultSettings(comms::ProtocolKind::ModbusRtu);
+    s.port.clear();
+    panel->setSettings(s);
+    auto *port = panel->findChild<QComboBox *>(QStringLiteral("connectionPort"));
+    ASSERT_TRUE(port);
+    EXPECT_FALSE(port->lineEdit()->placeholderText().isEmpty()) << "the empty field says why";
+    // The panel was open once, and the project is in front of it now.
+    window.findChild<QDockWidget *>(QStringLiteral("connectionDock"))->show();
+    QApplication::processEvents();
+    window.findChild<QDockWidget *>(QStringLiteral("projectDock"))->raise();
+    QApplication::processEvents();
+    // The tab in front in the panel's tab group.
+    const auto front = [&window]() -> QString {
+        for (QTabBar *bar : window.findChildren<QTabBar *>())
+            for (int i = 0; i < bar->count(); ++i)
+                if (bar->tabText(i) == QStringLiteral("Connection"))
+                    return bar->tabText(bar->currentIndex());
+        return {};
+    };
+    ASSERT_EQ(front(), QStringLiteral("Project"));
+    window.findChild<QAction *>(QStringLiteral("onlineTest"))->trigger();
+    QApplication::processEvents();
+    EXPECT_EQ(front(), QStringLiteral("Connection")) << "not behind another tab";
+    const auto *result = panel->findChild<QLabel *>(QStringLiteral("connectionTestResult"));
+    EXPECT_TRUE(result->text().startsWith(QStringLiteral("Choose the serial port")))
+        << result->text().toStdString();
+    EXPECT_TRUE(QTest::qWaitFor([&] { return port->hasFocus(); }, kPatienceMs));
+    EXPECT_EQ(panel->session(), nullptr);
 }
 
 TEST(OnlinePanel, AVpcIsListedAndSaysWhatToDoInstead) {
