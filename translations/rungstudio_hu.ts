@@ -569,14 +569,14 @@ Ez egy valódi PLC memóriáját módosítja, amely gépet vezérelhet. Kapcsola
         <translation>Online: %1</translation>
     </message>
     <message>
-        <location line="+10"/>
-        <source>Link lost: %1
-Trying again; the values shown are the last read, marked stale.</source>
-        <translation>Megszakadt a kapcsolat: %1
-Újrapróbálkozás; a látható értékek az utoljára olvasottak, elavultként jelölve.</translation>
+        <location line="+11"/>
+        <source>%1
+The values shown are the last read, marked stale.</source>
+        <translation>%1
+A látható értékek az utoljára olvasottak, elavultként jelölve.</translation>
     </message>
     <message>
-        <location line="+4"/>
+        <location line="+2"/>
         <source>Cannot connect: %1</source>
         <translation>Nem lehet kapcsolódni: %1</translation>
     </message>
@@ -2796,27 +2796,32 @@ Kiértékelés: %4 µs (%5..%6)</translation>
         <translation>eszköztípus: %1</translation>
     </message>
     <message>
-        <location line="+11"/>
-        <source>firmware %1</source>
-        <translation>firmware: %1</translation>
-    </message>
-    <message>
-        <location filename="../comms/driver/online_session.cpp" line="+101"/>
+        <location filename="../comms/driver/online_session.cpp" line="+115"/>
         <source>%1 is not connected: nothing was sent</source>
         <translation>%1 nincs csatlakoztatva: semmi sem lett elküldve</translation>
     </message>
     <message>
-        <location line="+176"/>
+        <location line="+182"/>
+        <source>Connection lost: %1. Trying again.</source>
+        <translation>Megszakadt a kapcsolat: %1. Újrapróbálkozás.</translation>
+    </message>
+    <message>
+        <location line="+3"/>
         <source>Connection to %1 lost: %2. Trying again.</source>
         <translation>Megszakadt a kapcsolat ezzel: %1: %2. Újrapróbálkozás.</translation>
     </message>
     <message>
-        <location line="+3"/>
+        <location line="-7"/>
         <source>Cannot reach %1: %2. Trying again.</source>
         <translation>%1 nem érhető el: %2. Újrapróbálkozás.</translation>
     </message>
     <message>
-        <location line="+52"/>
+        <location line="-198"/>
+        <source>%1 cannot force bits: its protocol has no force command. Set the bit instead (the program may overwrite it).</source>
+        <translation>%1 nem tud biteket kényszeríteni: a protokolljának nincs kényszerítő parancsa. Állítsa inkább a bitet (a program felülírhatja).</translation>
+    </message>
+    <message>
+        <location line="+257"/>
         <source>Cannot connect to %1: %2</source>
         <translation>Nem sikerült kapcsolódni ide: %1: %2</translation>
     </message>
@@ -3629,18 +3634,18 @@ Kiértékelés: %4 µs (%5..%6)</translation>
     </message>
     <message>
         <location line="+3"/>
-        <location line="+230"/>
+        <location line="+234"/>
         <source>Inputs take effect at the next scan</source>
         <translation>A bemenetek a következő ciklusban hatnak</translation>
     </message>
     <message>
-        <location line="-229"/>
-        <location line="+230"/>
+        <location line="-233"/>
+        <location line="+234"/>
         <source>Run the simulation (F10) to work the inputs</source>
         <translation>A bemenetek kezeléséhez indítsa a szimulációt (F10)</translation>
     </message>
     <message>
-        <location line="-147"/>
+        <location line="-151"/>
         <source>Further inputs the program uses</source>
         <translation>A program további bemenetei</translation>
     </message>
@@ -3840,7 +3845,7 @@ Kiértékelés: %4 µs (%5..%6)</translation>
 <context>
     <name>rung::editor::MonitorCommands</name>
     <message>
-        <location filename="../editor/monitor_commands.cpp" line="+127"/>
+        <location filename="../editor/monitor_commands.cpp" line="+134"/>
         <source>Force %1 O&amp;N</source>
         <translation>%1 kényszerítése &amp;BE</translation>
     </message>
@@ -4367,12 +4372,12 @@ Kiértékelés: %4 µs (%5..%6)</translation>
         <translation>Kényszerítés feloldása</translation>
     </message>
     <message>
-        <location line="+7"/>
+        <location line="+13"/>
         <source>Write Value...</source>
         <translation>Érték írása...</translation>
     </message>
     <message>
-        <location line="-184"/>
+        <location line="-190"/>
         <source>%1 of %2, %3</source>
         <translation>%1 / %2, %3</translation>
     </message>
@@ -4452,7 +4457,7 @@ Kiértékelés: %4 µs (%5..%6)</translation>
         <translation>%1 megjelenítése: %2</translation>
     </message>
     <message>
-        <location line="+50"/>
+        <location line="+57"/>
         <source>Show As</source>
         <translation>Megjelenítés</translation>
     </message>

@@ -569,14 +569,14 @@ Questo modifica la memoria di un PLC reale, che potrebbe comandare una macchina.
         <translation>Online: %1</translation>
     </message>
     <message>
-        <location line="+10"/>
-        <source>Link lost: %1
-Trying again; the values shown are the last read, marked stale.</source>
-        <translation>Collegamento perso: %1
-Nuovo tentativo in corso; i valori mostrati sono gli ultimi letti, segnati come non aggiornati.</translation>
+        <location line="+11"/>
+        <source>%1
+The values shown are the last read, marked stale.</source>
+        <translation>%1
+I valori mostrati sono gli ultimi letti, segnati come non aggiornati.</translation>
     </message>
     <message>
-        <location line="+4"/>
+        <location line="+2"/>
         <source>Cannot connect: %1</source>
         <translation>Impossibile connettersi: %1</translation>
     </message>
@@ -2802,27 +2802,32 @@ Valutazione: %4 µs (%5..%6)</translation>
         <translation>tipo di dispositivo %1</translation>
     </message>
     <message>
-        <location line="+11"/>
-        <source>firmware %1</source>
-        <translation>firmware %1</translation>
-    </message>
-    <message>
-        <location filename="../comms/driver/online_session.cpp" line="+101"/>
+        <location filename="../comms/driver/online_session.cpp" line="+115"/>
         <source>%1 is not connected: nothing was sent</source>
         <translation>%1 non è connesso: non è stato inviato nulla</translation>
     </message>
     <message>
-        <location line="+176"/>
+        <location line="+182"/>
+        <source>Connection lost: %1. Trying again.</source>
+        <translation>Connessione persa: %1. Nuovo tentativo in corso.</translation>
+    </message>
+    <message>
+        <location line="+3"/>
         <source>Connection to %1 lost: %2. Trying again.</source>
         <translation>Connessione con %1 persa: %2. Nuovo tentativo in corso.</translation>
     </message>
     <message>
-        <location line="+3"/>
+        <location line="-7"/>
         <source>Cannot reach %1: %2. Trying again.</source>
         <translation>Impossibile raggiungere %1: %2. Nuovo tentativo in corso.</translation>
     </message>
     <message>
-        <location line="+52"/>
+        <location line="-198"/>
+        <source>%1 cannot force bits: its protocol has no force command. Set the bit instead (the program may overwrite it).</source>
+        <translation>%1 non può forzare i bit: il suo protocollo non ha un comando di forzatura. Impostare invece il bit (il programma può sovrascriverlo).</translation>
+    </message>
+    <message>
+        <location line="+257"/>
         <source>Cannot connect to %1: %2</source>
         <translation>Impossibile connettersi a %1: %2</translation>
     </message>
@@ -3636,18 +3641,18 @@ Valutazione: %4 µs (%5..%6)</translation>
     </message>
     <message>
         <location line="+3"/>
-        <location line="+230"/>
+        <location line="+234"/>
         <source>Inputs take effect at the next scan</source>
         <translation>Gli ingressi valgono dalla scansione successiva</translation>
     </message>
     <message>
-        <location line="-229"/>
-        <location line="+230"/>
+        <location line="-233"/>
+        <location line="+234"/>
         <source>Run the simulation (F10) to work the inputs</source>
         <translation>Avviare la simulazione (F10) per agire sugli ingressi</translation>
     </message>
     <message>
-        <location line="-147"/>
+        <location line="-151"/>
         <source>Further inputs the program uses</source>
         <translation>Altri ingressi usati dal programma</translation>
     </message>
@@ -3847,7 +3852,7 @@ Valutazione: %4 µs (%5..%6)</translation>
 <context>
     <name>rung::editor::MonitorCommands</name>
     <message>
-        <location filename="../editor/monitor_commands.cpp" line="+127"/>
+        <location filename="../editor/monitor_commands.cpp" line="+134"/>
         <source>Force %1 O&amp;N</source>
         <translation>Forza %1 O&amp;N</translation>
     </message>
@@ -4375,12 +4380,12 @@ Valutazione: %4 µs (%5..%6)</translation>
         <translation>Rilascia</translation>
     </message>
     <message>
-        <location line="+7"/>
+        <location line="+13"/>
         <source>Write Value...</source>
         <translation>Scrivi valore...</translation>
     </message>
     <message>
-        <location line="-184"/>
+        <location line="-190"/>
         <source>%1 of %2, %3</source>
         <translation>%1 di %2, %3</translation>
     </message>
@@ -4460,7 +4465,7 @@ Valutazione: %4 µs (%5..%6)</translation>
         <translation>Mostra %1 come %2</translation>
     </message>
     <message>
-        <location line="+50"/>
+        <location line="+57"/>
         <source>Show As</source>
         <translation>Mostra come</translation>
     </message>

@@ -334,6 +334,37 @@ TEST_P(Online, WritesAskOnceNameTheDeviceAndThePlcAndShowTheAnswer) {
     EXPECT_EQ(plcValue(c.result), 41 + c.offset);
 }
 
+// The ladder's context menu offers a force only where the protocol has one; elsewhere the
+// entries are greyed and say why (and what to do instead), instead of a refusal after a try.
+TEST_P(Online, TheContextMenuOffersForcesOnlyWhereTheProtocolCanForce) {
+    auto *ladder = window.findChild<editor::LadderView *>();
+    ASSERT_TRUE(ladder);
+    goOnline();
+    std::unique_ptr<QMenu> menu(ladder->monitorMenu({0, 0, 0}, nullptr));
+    ASSERT_NE(menu, nullptr);
+    const auto entry = [&menu](const QString &text) -> QAction * {
+        for (QAction *a : menu->actions())
+            if (QString(a->text()).remove(QLatin1Char('&')) == text)
+                return a;
+        return nullptr;
+    };
+    const QString input = model::formatAddress(target, at(c.input));
+    QAction *force = entry(QStringLiteral("Force %1 ON").arg(input));
+    QAction *release = entry(QStringLiteral("Release %1").arg(input));
+    QAction *set = entry(QStringLiteral("Set %1 ON").arg(input));
+    ASSERT_TRUE(force && release && set);
+    EXPECT_TRUE(set->isEnabled());
+    EXPECT_EQ(force->isEnabled(), c.forces);
+    EXPECT_EQ(release->isEnabled(), c.forces);
+    EXPECT_EQ(session()->forceRefusal().isEmpty(), c.forces);
+    if (!c.forces) {
+        EXPECT_TRUE(force->toolTip().contains(session()->plcName()))
+            << force->toolTip().toStdString();
+        EXPECT_TRUE(force->toolTip().contains(QStringLiteral("Set the bit instead")))
+            << force->toolTip().toStdString();
+    }
+}
+
 TEST_P(Online, RunAndStopAskFirstAndTheModeFollows) {
     goOnline();
     ASSERT_TRUE(
@@ -397,7 +428,14 @@ TEST_P(Online, APulledCableShowsAtOnceKeepsStaleValuesAndReconnectsByItself) {
     cable->cut(true);
     ASSERT_TRUE(
         QTest::qWaitFor([&] { return session()->connectionState() == State::Lost; }, kPatienceMs));
-    EXPECT_TRUE(panel->stateText().startsWith(QStringLiteral("Link lost: ")))
+    EXPECT_TRUE(panel->stateText().startsWith(QStringLiteral("Connection ")))
+        << panel->stateText().toStdString();
+    // Said once: "lost", the PLC, the cause, and that it tries again.
+    EXPECT_EQ(panel->stateText().count(QStringLiteral("lost")), 1)
+        << panel->stateText().toStdString();
+    EXPECT_EQ(panel->stateText().count(QStringLiteral("Trying again")), 1)
+        << panel->stateText().toStdString();
+    EXPECT_TRUE(panel->stateText().contains(session()->plcName()))
         << panel->stateText().toStdString();
     EXPECT_FALSE(session()->errorText().isEmpty());
     EXPECT_TRUE(QTest::qWaitFor([&] { return shown() && shown()->stale; }, kPatienceMs));
