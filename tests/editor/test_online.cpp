@@ -18,6 +18,7 @@
 #include <QDockWidget>
 #include <QHelpEvent>
 #include <QLabel>
+#include <QLayout>
 #include <QLineEdit>
 #include <QMenu>
 #include <QPlainTextEdit>
@@ -587,6 +588,29 @@ TEST(OnlinePanel, TestConnectionWithoutAPortShowsThePanelAndAsksForOne) {
         << result->text().toStdString();
     EXPECT_TRUE(QTest::qWaitFor([&] { return port->hasFocus(); }, kPatienceMs));
     EXPECT_EQ(panel->session(), nullptr);
+}
+
+// The TCP settings take the room they need: no gap where the serial ones (three rows) would be.
+TEST(OnlinePanel, TheTcpSettingsAreNotFollowedByTheSerialOnesRoom) {
+    app::MainWindow window;
+    window.newProject(model::Target::get(model::Family::Pl110), QString());
+    app::ConnectionPanel *panel = window.connectionPanel();
+    auto *via = panel->findChild<QWidget *>(QStringLiteral("connectionVia"));
+    auto *host = panel->findChild<QLineEdit *>(QStringLiteral("connectionHost"));
+    auto *port = panel->findChild<QComboBox *>(QStringLiteral("connectionPort"));
+    ASSERT_TRUE(via && host && port);
+    window.show();
+    const auto heightFor = [via] { return via->layout()->totalHeightForWidth(300); };
+    comms::ConnectionSettings s = comms::defaultSettings(comms::ProtocolKind::ModbusTcp);
+    s.via = comms::ConnectionSettings::Via::Tcp;
+    panel->setSettings(s);
+    ASSERT_TRUE(host->isVisibleTo(panel));
+    ASSERT_FALSE(port->isVisibleTo(panel));
+    const int tcp = heightFor();
+    panel->setSettings(comms::defaultSettings(comms::ProtocolKind::ModbusRtu));
+    ASSERT_TRUE(port->isVisibleTo(panel));
+    const int serial = heightFor();
+    EXPECT_LT(tcp, serial) << "the TCP settings (two rows) keep the serial ones' (three) room";
 }
 
 TEST(OnlinePanel, AVpcIsListedAndSaysWhatToDoInstead) {
