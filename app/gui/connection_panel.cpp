@@ -347,6 +347,10 @@ void ConnectionPanel::showVia(int page) {
     m_viaPages[page]->show();
 }
 
+QString ConnectionPanel::cannotConnectReason() const {
+    return canConnect() ? QString() : m_vpcNote->text();
+}
+
 void ConnectionPanel::refreshPorts() {
     const QString typed = m_port->currentText();
     const QString current = m_port->currentData().toString();

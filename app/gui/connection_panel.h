@@ -50,6 +50,8 @@ public:
     const model::Target *target() const { return m_target; }
     // True when the family has a protocol the IDE speaks (not a VPC).
     bool canConnect() const;
+    // Why not, and what to do instead (empty when it can).
+    QString cannotConnectReason() const;
 
     // The settings as the fields say; setSettings fills the fields.
     comms::ConnectionSettings settings() const;

@@ -623,7 +623,18 @@ TEST(OnlinePanel, AVpcIsListedAndSaysWhatToDoInstead) {
     EXPECT_TRUE(note->text().contains(QStringLiteral("not published")));
     EXPECT_TRUE(note->text().contains(QStringLiteral("rungstudio-cli record")));
     EXPECT_FALSE(panel->connectToPlc());
-    EXPECT_FALSE(window.findChild<QAction *>(QStringLiteral("onlineConnect"))->isEnabled());
+    // Greyed in the Online menu and the tool bar, and hovering says why and what instead.
+    for (const char *name : {"onlineConnect", "onlineTest"}) {
+        QAction *a = window.findChild<QAction *>(QString::fromLatin1(name));
+        EXPECT_FALSE(a->isEnabled()) << name;
+        EXPECT_EQ(a->toolTip(), note->text()) << name;
+    }
+    // A PL110 project after it: the entries are live and say what they do.
+    window.newProject(model::Target::get(model::Family::Pl110), QString());
+    QAction *go = window.findChild<QAction *>(QStringLiteral("onlineConnect"));
+    EXPECT_TRUE(go->isEnabled());
+    EXPECT_TRUE(go->toolTip().startsWith(QStringLiteral("Go Online")))
+        << go->toolTip().toStdString();
 }
 
 TEST(OnlinePanel, ThePortIsRememberedForTheNextWindow) {
