@@ -4665,7 +4665,7 @@ Kiértékelés: %4 µs (%5..%6)</translation>
     </message>
     <message>
         <location line="+49"/>
-        <location filename="../model/checks/checks_list.cpp" line="+79"/>
+        <location filename="../model/checks/checks_list.cpp" line="+80"/>
         <source>Append %1</source>
         <translation>%1 hozzáfűzése a végére</translation>
     </message>
@@ -4754,7 +4754,7 @@ Kiértékelés: %4 µs (%5..%6)</translation>
         </translation>
     </message>
     <message>
-        <location line="+153"/>
+        <location line="+158"/>
         <source>%1 is driven twice; a coil may be driven only once (the first is on line %2)</source>
         <translation>%1 kétszer van vezérelve; egy tekercs csak egyszer vezérelhető (az első a(z) %2. sorban)</translation>
     </message>
@@ -5015,6 +5015,11 @@ Kiértékelés: %4 µs (%5..%6)</translation>
         <source>%1 stops while %2 is ON, and line %3 writes %2</source>
         <translation>%1 áll, amíg %2 BE, és a(z) %3. sor írja: %2</translation>
     </message>
+    <message>
+        <location filename="../model/checks/unmodelled.cpp" line="+56"/>
+        <source>%1 is not simulated: %2</source>
+        <translation>%1 nincs szimulálva: %2</translation>
+    </message>
 </context>
 <context>
     <name>rung::model::Convert</name>
@@ -5174,12 +5179,12 @@ Kiértékelés: %4 µs (%5..%6)</translation>
     </message>
     <message>
         <location line="+19"/>
-        <location line="+182"/>
+        <location line="+184"/>
         <source>&apos;%1...&apos; is too long for an operand</source>
         <translation>A(z) &apos;%1...&apos; túl hosszú egy operandushoz</translation>
     </message>
     <message numerus="yes">
-        <location line="-120"/>
+        <location line="-122"/>
         <source>%1 needs %n operand(s): %2</source>
         <translation>
             <numerusform>%1 %n operandust igényel: %2</numerusform>
@@ -5203,7 +5208,7 @@ Kiértékelés: %4 µs (%5..%6)</translation>
         <translation>%1: a beállított érték BCD konstans (#0000..#9999) vagy csatorna</translation>
     </message>
     <message>
-        <location line="+29"/>
+        <location line="+31"/>
         <source>%1 is out of range: %2..%3 fit here</source>
         <translation>%1 tartományon kívül esik: itt %2..%3 lehet</translation>
     </message>
@@ -5705,8 +5710,8 @@ Kiértékelés: %4 µs (%5..%6)</translation>
     </message>
     <message>
         <location line="+5"/>
-        <location filename="../model/target/target_pl110.cpp" line="+28"/>
-        <location filename="../model/target/target_vigor.cpp" line="+60"/>
+        <location filename="../model/target/target_pl110.cpp" line="+54"/>
+        <location filename="../model/target/target_vigor.cpp" line="+63"/>
         <location filename="../model/target/target_vpc.cpp" line="+5"/>
         <source>Start a block with a normally open contact</source>
         <translation>Blokk kezdése záró érintkezővel</translation>
@@ -6046,7 +6051,7 @@ Kiértékelés: %4 µs (%5..%6)</translation>
         <translation>A program vége</translation>
     </message>
     <message>
-        <location filename="../model/target/target_pl110.cpp" line="-311"/>
+        <location filename="../model/target/target_pl110.cpp" line="-337"/>
         <source>IF contact: ON while S1 ? S2 is true</source>
         <translation>IF érintkező: BE, amíg S1 ? S2 igaz</translation>
     </message>
@@ -6192,7 +6197,32 @@ Kiértékelés: %4 µs (%5..%6)</translation>
         <translation>legnagyobb ciklusidő (0,1 ms)</translation>
     </message>
     <message>
-        <location line="+24"/>
+        <location line="+7"/>
+        <source>the display (standby brightness and delay, system and user pages enabled, start page, page shown) is not modelled; the word is plain memory</source>
+        <translation>a kijelzőt (készenléti fényerő és késleltetés, engedélyezett rendszer- és felhasználói oldalak, kezdőoldal, megjelenített oldal) a szimulátor nem modellezi; a szó egyszerű memória</translation>
+    </message>
+    <message>
+        <location line="+5"/>
+        <source>the PLC shows the page requested and then resets SM106 to 0; the simulator shows no page and keeps the value written</source>
+        <translation>a PLC megjeleníti a kért oldalt, majd az SM106-ot 0-ra állítja; a szimulátor nem jelenít meg oldalt, és megtartja a beírt értéket</translation>
+    </message>
+    <message>
+        <location line="+4"/>
+        <source>the terminal (the last variable changed from the keys, the password entered) is not modelled; the word stays as the program leaves it</source>
+        <translation>a kezelőegységet (a gombokkal utoljára módosított változó, a beírt jelszó) a szimulátor nem modellezi; a szó úgy marad, ahogy a program hagyja</translation>
+    </message>
+    <message>
+        <location line="+4"/>
+        <source>the terminal&apos;s keys (SWAP, UP, DOWN, SET) are not modelled: no key is ever pressed unless you write the word</source>
+        <translation>a kezelőegység gombjait (SWAP, UP, DOWN, SET) a szimulátor nem modellezi: egyik gomb sincs lenyomva, hacsak be nem írja a szót</translation>
+    </message>
+    <message>
+        <location line="+4"/>
+        <source>the user pages&apos; parameter fields (SetPAR, FormatPAR, PosPAR) are not modelled: nothing is shown or edited</source>
+        <translation>a felhasználói oldalak paramétermezőit (SetPAR, FormatPAR, PosPAR) a szimulátor nem modellezi: semmi sem jelenik meg és semmi sem módosítható</translation>
+    </message>
+    <message>
+        <location line="+26"/>
         <source>NOT contact: invert the power flow</source>
         <translation>NOT érintkező: az áramút negálása</translation>
     </message>
@@ -6392,7 +6422,7 @@ Kiértékelés: %4 µs (%5..%6)</translation>
         <translation>Kijelzőparaméter elhelyezése</translation>
     </message>
     <message>
-        <location filename="../model/target/target_vigor.cpp" line="-156"/>
+        <location filename="../model/target/target_vigor.cpp" line="-159"/>
         <source>Compare contact: ON while S1 ? S2</source>
         <translation>Összehasonlító érintkező: BE, amíg S1 ? S2</translation>
     </message>
@@ -6501,12 +6531,7 @@ Kiértékelés: %4 µs (%5..%6)</translation>
         <translation>100 ms-os órajel</translation>
     </message>
     <message>
-        <location line="+6"/>
-        <source>RS instruction: 8-bit mode (OFF: 16-bit)</source>
-        <translation>RS utasítás: 8 bites mód (kikapcsolva: 16 bites)</translation>
-    </message>
-    <message>
-        <location line="+2"/>
+        <location line="+11"/>
         <source>SMOV works on hexadecimal digits</source>
         <translation>Az SMOV hexadecimális számjegyekkel dolgozik</translation>
     </message>
@@ -6676,7 +6701,22 @@ Kiértékelés: %4 µs (%5..%6)</translation>
         <translation>Bekapcsolás-késleltető időzítő: T0..T199 100 ms-os, T200..T245 10 ms-os egységekben; T246..T249 1 ms-os, T250..T255 100 ms-os összegző (RST nullázza)</translation>
     </message>
     <message>
-        <location line="+94"/>
+        <location line="+32"/>
+        <source>Move 32 bits: S (S, S+1) to D (low word), D+1 (high word)</source>
+        <translation>32 bit mozgatása: S (S, S+1) a D-be (alsó szó) és a D+1-be (felső szó)</translation>
+    </message>
+    <message>
+        <location line="+70"/>
+        <source>Write n words to special module m1, at m2, once on a rising edge</source>
+        <translation>n szó írása az m1 speciális modulba, m2-től, egyszer, felfutó élre</translation>
+    </message>
+    <message>
+        <location line="+16"/>
+        <source>Check code: the sum of n bytes from S into D, their parity into D+1 (M9161 ON: one byte a word)</source>
+        <translation>Ellenőrző kód: az S-től kezdődő n bájt összege a D-be, paritásuk a D+1-be (M9161 BE: szavanként egy bájt)</translation>
+    </message>
+    <message>
+        <location line="+11"/>
         <source>Convert n ASCII characters from S to hexadecimal in D</source>
         <translation>n ASCII karakter átalakítása S-től hexadecimálissá D-be</translation>
     </message>
@@ -6716,12 +6756,17 @@ Kiértékelés: %4 µs (%5..%6)</translation>
         <translation>S m2 számjegyének mozgatása az m1. számjegytől D-be az n. számjegytől</translation>
     </message>
     <message>
-        <location line="-119"/>
+        <location line="-154"/>
         <source>Counter: counts rising edges, reset with RST</source>
         <translation>Számláló: a felfutó éleket számolja, törlés RST-vel</translation>
     </message>
     <message>
-        <location line="+6"/>
+        <location line="-146"/>
+        <source>RS, CCD, ASCI, HEX: 8-bit mode, one byte a word (OFF: 16-bit)</source>
+        <translation>RS, CCD, ASCI, HEX: 8 bites mód, szavanként egy bájt (KI: 16 bites)</translation>
+    </message>
+    <message>
+        <location line="+152"/>
         <source>Step ladder: start of step S</source>
         <translation>Léptetőlánc: az S lépés kezdete</translation>
     </message>
@@ -6736,7 +6781,7 @@ Kiértékelés: %4 µs (%5..%6)</translation>
         <translation>S mozgatása D-be</translation>
     </message>
     <message>
-        <location line="+6"/>
+        <location line="+18"/>
         <source>Move n words from S to D</source>
         <translation>n szó mozgatása S-ből D-be</translation>
     </message>
@@ -6821,12 +6866,7 @@ Kiértékelés: %4 µs (%5..%6)</translation>
         <translation>n szó írása az m1 speciális modul m2 címére</translation>
     </message>
     <message>
-        <location line="+3"/>
-        <source>Sum and parity check of n bytes</source>
-        <translation>n bájt összege és paritásellenőrzése</translation>
-    </message>
-    <message>
-        <location line="+3"/>
+        <location line="+29"/>
         <source>Refresh n inputs or outputs now</source>
         <translation>n bemenet vagy kimenet azonnali frissítése</translation>
     </message>
@@ -7060,7 +7100,7 @@ Kiértékelés: %4 µs (%5..%6)</translation>
 <context>
     <name>rung::simulator::Compiler</name>
     <message>
-        <location filename="../simulator/compiler_detail.h" line="+103"/>
+        <location filename="../simulator/compiler_detail.h" line="+117"/>
         <source>%1 needs operand %2</source>
         <translation>%1: hiányzik a(z) %2. operandus</translation>
     </message>
@@ -7102,12 +7142,18 @@ Kiértékelés: %4 µs (%5..%6)</translation>
         <translation>%1 nem szó típusú operandus</translation>
     </message>
     <message>
-        <location line="+17"/>
+        <location filename="../simulator/compile_words.cpp" line="+30"/>
+        <location filename="../simulator/compiler_detail.h" line="+17"/>
         <source>%1 needs the next word too, which does not exist</source>
         <translation>%1 a következő szót is igényli, de az nem létezik</translation>
     </message>
     <message>
-        <location line="+30"/>
+        <location line="+21"/>
+        <source>%1 reads a block of words: %2 is not a word device</source>
+        <translation>%1 szavak blokkját olvassa: %2 nem szó típusú operandus</translation>
+    </message>
+    <message>
+        <location filename="../simulator/compiler_detail.h" line="+30"/>
         <source>%1 needs %2 open blocks before it</source>
         <translation>%1 előtt %2 nyitott blokk kell</translation>
     </message>
@@ -7127,7 +7173,7 @@ Kiértékelés: %4 µs (%5..%6)</translation>
         <translation>%1 nem számláló</translation>
     </message>
     <message>
-        <location line="+67"/>
+        <location line="+71"/>
         <source>%1 needs three bit devices from %2</source>
         <translation>%1 három bit típusú operandust igényel %2-tól</translation>
     </message>
@@ -7148,6 +7194,7 @@ Kiértékelés: %4 µs (%5..%6)</translation>
     </message>
     <message>
         <location line="+27"/>
+        <location filename="../simulator/compile_words.cpp" line="+9"/>
         <source>%1 needs a count from 1 to %2</source>
         <translation>%1 darabszáma 1 és %2 között lehet</translation>
     </message>
@@ -7157,12 +7204,12 @@ Kiértékelés: %4 µs (%5..%6)</translation>
         <translation>a(z) %1 szavas blokk túlnyúlik a terület végén</translation>
     </message>
     <message>
-        <location filename="../simulator/compiler.cpp" line="+162"/>
+        <location filename="../simulator/compiler.cpp" line="+163"/>
         <source>unknown instruction</source>
         <translation>ismeretlen utasítás</translation>
     </message>
     <message>
-        <location line="+19"/>
+        <location line="+20"/>
         <source>more than %1 nested %2</source>
         <translation>több mint %1 egymásba ágyazott %2</translation>
     </message>
@@ -7190,22 +7237,22 @@ Kiértékelés: %4 µs (%5..%6)</translation>
 <context>
     <name>rung::simulator::Engine</name>
     <message>
-        <location filename="../simulator/engine_execute.cpp" line="+68"/>
+        <location filename="../simulator/engine_execute.cpp" line="+70"/>
         <source>set value %1 is not a BCD number; the instruction is skipped</source>
         <translation>a(z) %1 beállított érték nem BCD szám; az utasítás kimarad</translation>
     </message>
     <message>
-        <location line="+47"/>
+        <location line="+50"/>
         <source>%1 does not fit in BCD (0..%2); the destination is unchanged</source>
         <translation>%1 nem fér el BCD-ben (0..%2); a cél nem változik</translation>
     </message>
     <message>
-        <location line="+13"/>
+        <location line="+14"/>
         <source>%1 is not a BCD number; the destination is unchanged</source>
         <translation>%1 nem BCD szám; a cél nem változik</translation>
     </message>
     <message>
-        <location line="+17"/>
+        <location line="+19"/>
         <source>result %1 is outside 0..9999; %2 is written</source>
         <translation>a(z) %1 eredmény kívül esik a 0..9999 tartományon; %2 íródik be</translation>
     </message>
@@ -7221,7 +7268,7 @@ Kiértékelés: %4 µs (%5..%6)</translation>
         <translation>osztás nullával; a cél változatlan marad</translation>
     </message>
     <message>
-        <location line="+21"/>
+        <location line="+41"/>
         <source>MOVIND index %1 is outside 0..%2; nothing is written</source>
         <translation>a MOVIND %1 indexe kívül esik a 0..%2 tartományon; nem íródik semmi</translation>
     </message>
@@ -7286,6 +7333,11 @@ Kiértékelés: %4 µs (%5..%6)</translation>
         <location line="+7"/>
         <source>operation error: %1 reaches %2, which does not exist; the instruction is not executed</source>
         <translation>műveleti hiba: %1 a nem létező %2 operandusra mutat; az utasítás nem hajtódik végre</translation>
+    </message>
+    <message>
+        <location filename="../simulator/engine_words.cpp" line="+22"/>
+        <source>operation error: %1 bytes need %2 words from the source, past the end of its area; the instruction is not executed</source>
+        <translation>műveleti hiba: %1 bájthoz %2 szó kell a forrástól, túl a terület végén; az utasítás nem hajtódik végre</translation>
     </message>
 </context>
 <context>

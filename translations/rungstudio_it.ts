@@ -4673,7 +4673,7 @@ Valutazione: %4 µs (%5..%6)</translation>
     </message>
     <message>
         <location line="+49"/>
-        <location filename="../model/checks/checks_list.cpp" line="+79"/>
+        <location filename="../model/checks/checks_list.cpp" line="+80"/>
         <source>Append %1</source>
         <translation>Aggiungi %1 in fondo</translation>
     </message>
@@ -4764,7 +4764,7 @@ Valutazione: %4 µs (%5..%6)</translation>
         </translation>
     </message>
     <message>
-        <location line="+153"/>
+        <location line="+158"/>
         <source>%1 is driven twice; a coil may be driven only once (the first is on line %2)</source>
         <translation>%1 è comandato due volte; una bobina può essere comandata una volta sola (il primo è alla riga %2)</translation>
     </message>
@@ -5025,6 +5025,11 @@ Valutazione: %4 µs (%5..%6)</translation>
         <source>%1 stops while %2 is ON, and line %3 writes %2</source>
         <translation>%1 si ferma mentre %2 è ON, e la riga %3 scrive %2</translation>
     </message>
+    <message>
+        <location filename="../model/checks/unmodelled.cpp" line="+56"/>
+        <source>%1 is not simulated: %2</source>
+        <translation>%1 non è simulato: %2</translation>
+    </message>
 </context>
 <context>
     <name>rung::model::Convert</name>
@@ -5187,12 +5192,12 @@ Valutazione: %4 µs (%5..%6)</translation>
     </message>
     <message>
         <location line="+19"/>
-        <location line="+182"/>
+        <location line="+184"/>
         <source>&apos;%1...&apos; is too long for an operand</source>
         <translation>&apos;%1...&apos; è troppo lungo per un operando</translation>
     </message>
     <message numerus="yes">
-        <location line="-120"/>
+        <location line="-122"/>
         <source>%1 needs %n operand(s): %2</source>
         <translation>
             <numerusform>%1 richiede %n operando: %2</numerusform>
@@ -5218,7 +5223,7 @@ Valutazione: %4 µs (%5..%6)</translation>
         <translation>%1: un valore di preset è una costante BCD #0000..#9999 o un canale</translation>
     </message>
     <message>
-        <location line="+29"/>
+        <location line="+31"/>
         <source>%1 is out of range: %2..%3 fit here</source>
         <translation>%1 è fuori campo: qui sono ammessi %2..%3</translation>
     </message>
@@ -5720,8 +5725,8 @@ Valutazione: %4 µs (%5..%6)</translation>
     </message>
     <message>
         <location line="+5"/>
-        <location filename="../model/target/target_pl110.cpp" line="+28"/>
-        <location filename="../model/target/target_vigor.cpp" line="+60"/>
+        <location filename="../model/target/target_pl110.cpp" line="+54"/>
+        <location filename="../model/target/target_vigor.cpp" line="+63"/>
         <location filename="../model/target/target_vpc.cpp" line="+5"/>
         <source>Start a block with a normally open contact</source>
         <translation>Inizia un blocco con un contatto normalmente aperto</translation>
@@ -6061,7 +6066,7 @@ Valutazione: %4 µs (%5..%6)</translation>
         <translation>Fine del programma</translation>
     </message>
     <message>
-        <location filename="../model/target/target_pl110.cpp" line="-311"/>
+        <location filename="../model/target/target_pl110.cpp" line="-337"/>
         <source>IF contact: ON while S1 ? S2 is true</source>
         <translation>Contatto IF: ON mentre S1 ? S2 è vero</translation>
     </message>
@@ -6207,7 +6212,32 @@ Valutazione: %4 µs (%5..%6)</translation>
         <translation>tempo di scansione massimo (0,1 ms)</translation>
     </message>
     <message>
-        <location line="+24"/>
+        <location line="+7"/>
+        <source>the display (standby brightness and delay, system and user pages enabled, start page, page shown) is not modelled; the word is plain memory</source>
+        <translation>il display (luminosità e ritardo dello standby, pagine di sistema e utente abilitate, pagina di avvio, pagina visualizzata) non è modellato; la word è semplice memoria</translation>
+    </message>
+    <message>
+        <location line="+5"/>
+        <source>the PLC shows the page requested and then resets SM106 to 0; the simulator shows no page and keeps the value written</source>
+        <translation>il PLC visualizza la pagina richiesta e poi forza SM106 a 0; il simulatore non visualizza pagine e mantiene il valore scritto</translation>
+    </message>
+    <message>
+        <location line="+4"/>
+        <source>the terminal (the last variable changed from the keys, the password entered) is not modelled; the word stays as the program leaves it</source>
+        <translation>il terminale (ultima variabile modificata dai pulsanti, password immessa) non è modellato; la word resta come la lascia il programma</translation>
+    </message>
+    <message>
+        <location line="+4"/>
+        <source>the terminal&apos;s keys (SWAP, UP, DOWN, SET) are not modelled: no key is ever pressed unless you write the word</source>
+        <translation>i pulsanti del terminale (SWAP, UP, DOWN, SET) non sono modellati: nessun pulsante risulta premuto se non si scrive la word</translation>
+    </message>
+    <message>
+        <location line="+4"/>
+        <source>the user pages&apos; parameter fields (SetPAR, FormatPAR, PosPAR) are not modelled: nothing is shown or edited</source>
+        <translation>i campi parametro delle pagine utente (SetPAR, FormatPAR, PosPAR) non sono modellati: nulla viene visualizzato o modificato</translation>
+    </message>
+    <message>
+        <location line="+26"/>
         <source>NOT contact: invert the power flow</source>
         <translation>Contatto NOT: inverte il flusso di corrente</translation>
     </message>
@@ -6407,7 +6437,7 @@ Valutazione: %4 µs (%5..%6)</translation>
         <translation>Posiziona un parametro del display</translation>
     </message>
     <message>
-        <location filename="../model/target/target_vigor.cpp" line="-156"/>
+        <location filename="../model/target/target_vigor.cpp" line="-159"/>
         <source>Compare contact: ON while S1 ? S2</source>
         <translation>Contatto di confronto: ON mentre S1 ? S2</translation>
     </message>
@@ -6516,12 +6546,7 @@ Valutazione: %4 µs (%5..%6)</translation>
         <translation>clock da 100 ms</translation>
     </message>
     <message>
-        <location line="+6"/>
-        <source>RS instruction: 8-bit mode (OFF: 16-bit)</source>
-        <translation>Istruzione RS: modalità 8 bit (OFF: 16 bit)</translation>
-    </message>
-    <message>
-        <location line="+2"/>
+        <location line="+11"/>
         <source>SMOV works on hexadecimal digits</source>
         <translation>SMOV opera su cifre esadecimali</translation>
     </message>
@@ -6691,7 +6716,22 @@ Valutazione: %4 µs (%5..%6)</translation>
         <translation>Temporizzatore di ritardo all&apos;inserzione: T0..T199 in unità di 100 ms, T200..T245 di 10 ms; T246..T249 1 ms, T250..T255 100 ms a ritenzione (azzerati con RST)</translation>
     </message>
     <message>
-        <location line="+94"/>
+        <location line="+32"/>
+        <source>Move 32 bits: S (S, S+1) to D (low word), D+1 (high word)</source>
+        <translation>Sposta 32 bit: S (S, S+1) in D (word bassa), D+1 (word alta)</translation>
+    </message>
+    <message>
+        <location line="+70"/>
+        <source>Write n words to special module m1, at m2, once on a rising edge</source>
+        <translation>Scrive n word nel modulo speciale m1, da m2, una volta sul fronte di salita</translation>
+    </message>
+    <message>
+        <location line="+16"/>
+        <source>Check code: the sum of n bytes from S into D, their parity into D+1 (M9161 ON: one byte a word)</source>
+        <translation>Codice di controllo: la somma di n byte da S in D, la loro parità in D+1 (M9161 ON: un byte per word)</translation>
+    </message>
+    <message>
+        <location line="+11"/>
         <source>Convert n ASCII characters from S to hexadecimal in D</source>
         <translation>Converte n caratteri ASCII da S in esadecimale in D</translation>
     </message>
@@ -6731,12 +6771,17 @@ Valutazione: %4 µs (%5..%6)</translation>
         <translation>Sposta m2 cifre di S dalla cifra m1 in D dalla cifra n</translation>
     </message>
     <message>
-        <location line="-119"/>
+        <location line="-154"/>
         <source>Counter: counts rising edges, reset with RST</source>
         <translation>Contatore: conta i fronti di salita, reset con RST</translation>
     </message>
     <message>
-        <location line="+6"/>
+        <location line="-146"/>
+        <source>RS, CCD, ASCI, HEX: 8-bit mode, one byte a word (OFF: 16-bit)</source>
+        <translation>RS, CCD, ASCI, HEX: modalità a 8 bit, un byte per word (OFF: 16 bit)</translation>
+    </message>
+    <message>
+        <location line="+152"/>
         <source>Step ladder: start of step S</source>
         <translation>Step ladder: inizio del passo S</translation>
     </message>
@@ -6751,7 +6796,7 @@ Valutazione: %4 µs (%5..%6)</translation>
         <translation>Sposta S in D</translation>
     </message>
     <message>
-        <location line="+6"/>
+        <location line="+18"/>
         <source>Move n words from S to D</source>
         <translation>Sposta n word da S a D</translation>
     </message>
@@ -6836,12 +6881,7 @@ Valutazione: %4 µs (%5..%6)</translation>
         <translation>Scrive n word nel modulo speciale m1, a m2</translation>
     </message>
     <message>
-        <location line="+3"/>
-        <source>Sum and parity check of n bytes</source>
-        <translation>Somma e controllo di parità di n byte</translation>
-    </message>
-    <message>
-        <location line="+3"/>
+        <location line="+29"/>
         <source>Refresh n inputs or outputs now</source>
         <translation>Aggiorna subito n ingressi o uscite</translation>
     </message>
@@ -7075,7 +7115,7 @@ Valutazione: %4 µs (%5..%6)</translation>
 <context>
     <name>rung::simulator::Compiler</name>
     <message>
-        <location filename="../simulator/compiler_detail.h" line="+103"/>
+        <location filename="../simulator/compiler_detail.h" line="+117"/>
         <source>%1 needs operand %2</source>
         <translation>%1 richiede l&apos;operando %2</translation>
     </message>
@@ -7117,12 +7157,18 @@ Valutazione: %4 µs (%5..%6)</translation>
         <translation>%1 non è un operando word</translation>
     </message>
     <message>
-        <location line="+17"/>
+        <location filename="../simulator/compile_words.cpp" line="+30"/>
+        <location filename="../simulator/compiler_detail.h" line="+17"/>
         <source>%1 needs the next word too, which does not exist</source>
         <translation>%1 richiede anche la word successiva, che non esiste</translation>
     </message>
     <message>
-        <location line="+30"/>
+        <location line="+21"/>
+        <source>%1 reads a block of words: %2 is not a word device</source>
+        <translation>%1 legge un blocco di word: %2 non è un operando word</translation>
+    </message>
+    <message>
+        <location filename="../simulator/compiler_detail.h" line="+30"/>
         <source>%1 needs %2 open blocks before it</source>
         <translation>%1 richiede %2 blocchi aperti prima di sé</translation>
     </message>
@@ -7142,7 +7188,7 @@ Valutazione: %4 µs (%5..%6)</translation>
         <translation>%1 non è un contatore</translation>
     </message>
     <message>
-        <location line="+67"/>
+        <location line="+71"/>
         <source>%1 needs three bit devices from %2</source>
         <translation>%1 richiede tre operandi a bit a partire da %2</translation>
     </message>
@@ -7163,6 +7209,7 @@ Valutazione: %4 µs (%5..%6)</translation>
     </message>
     <message>
         <location line="+27"/>
+        <location filename="../simulator/compile_words.cpp" line="+9"/>
         <source>%1 needs a count from 1 to %2</source>
         <translation>%1 richiede un numero da 1 a %2</translation>
     </message>
@@ -7172,12 +7219,12 @@ Valutazione: %4 µs (%5..%6)</translation>
         <translation>il blocco di %1 word va oltre la fine della sua area</translation>
     </message>
     <message>
-        <location filename="../simulator/compiler.cpp" line="+162"/>
+        <location filename="../simulator/compiler.cpp" line="+163"/>
         <source>unknown instruction</source>
         <translation>istruzione sconosciuta</translation>
     </message>
     <message>
-        <location line="+19"/>
+        <location line="+20"/>
         <source>more than %1 nested %2</source>
         <translation>più di %1 %2 annidati</translation>
     </message>
@@ -7205,22 +7252,22 @@ Valutazione: %4 µs (%5..%6)</translation>
 <context>
     <name>rung::simulator::Engine</name>
     <message>
-        <location filename="../simulator/engine_execute.cpp" line="+68"/>
+        <location filename="../simulator/engine_execute.cpp" line="+70"/>
         <source>set value %1 is not a BCD number; the instruction is skipped</source>
         <translation>il valore di preset %1 non è un numero BCD; l&apos;istruzione viene saltata</translation>
     </message>
     <message>
-        <location line="+47"/>
+        <location line="+50"/>
         <source>%1 does not fit in BCD (0..%2); the destination is unchanged</source>
         <translation>%1 non sta in BCD (0..%2); la destinazione resta invariata</translation>
     </message>
     <message>
-        <location line="+13"/>
+        <location line="+14"/>
         <source>%1 is not a BCD number; the destination is unchanged</source>
         <translation>%1 non è un numero BCD; la destinazione resta invariata</translation>
     </message>
     <message>
-        <location line="+17"/>
+        <location line="+19"/>
         <source>result %1 is outside 0..9999; %2 is written</source>
         <translation>il risultato %1 è fuori da 0..9999; viene scritto %2</translation>
     </message>
@@ -7236,7 +7283,7 @@ Valutazione: %4 µs (%5..%6)</translation>
         <translation>divisione per zero; la destinazione resta invariata</translation>
     </message>
     <message>
-        <location line="+21"/>
+        <location line="+41"/>
         <source>MOVIND index %1 is outside 0..%2; nothing is written</source>
         <translation>l&apos;indice %1 di MOVIND è fuori da 0..%2; non viene scritto nulla</translation>
     </message>
@@ -7301,6 +7348,11 @@ Valutazione: %4 µs (%5..%6)</translation>
         <location line="+7"/>
         <source>operation error: %1 reaches %2, which does not exist; the instruction is not executed</source>
         <translation>errore operativo: %1 raggiunge %2, che non esiste; l&apos;istruzione non viene eseguita</translation>
+    </message>
+    <message>
+        <location filename="../simulator/engine_words.cpp" line="+22"/>
+        <source>operation error: %1 bytes need %2 words from the source, past the end of its area; the instruction is not executed</source>
+        <translation>errore operativo: %1 byte richiedono %2 word dalla sorgente, oltre la fine della sua area; l&apos;istruzione non viene eseguita</translation>
     </message>
 </context>
 <context>

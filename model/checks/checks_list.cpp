@@ -1,6 +1,7 @@
 #include "model/checks/checks.h"
 #include "model/checks/checks_internal.h"
 #include "model/checks/operand_rules.h"
+#include "model/checks/unmodelled.h"
 #include "model/convert/convert.h"
 #include "model/ladder/network.h"
 #include "model/listing/structure.h"
@@ -389,6 +390,11 @@ private:
             // What the simulator will not model is said before a simulation is tried.
             if (ins.spec->function == ApplyFunction::NotSimulated)
                 add("SIM100", Severity::Warning, i, notSimulatedMessage(*ins.spec));
+            for (const UnmodelledUse &use : unmodelledUses(m_t, ins)) {
+                Finding &f = add("SIM101", Severity::Warning, i, use.message);
+                atOperand(f, i,
+                          formatOperand(m_t, ins.operands[static_cast<std::size_t>(use.operand)]));
+            }
             for (const OperandBreach &b : operandBreaches(m_t, ins)) {
                 const Operand &o = ins.operands[static_cast<std::size_t>(b.operand)];
                 Finding &f = add("OP005", Severity::Error, i, b.message);
