@@ -215,7 +215,13 @@ Kilépési kód: 0 nincs hiba, 1 a programban hiba van, 2 használati vagy I/O h
         <translation>ismeretlen célrendszer: %1 (%2)</translation>
     </message>
     <message>
-        <location line="-115"/>
+        <location line="+65"/>
+        <source>%1:rung %2:%3:%4</source>
+        <extracomment>A finding&apos;s place on the ladder, after the file as a compiler writes file:line:column: %1 the file, %2 the rung&apos;s number, %3 the row, %4 the column. Keep the colons.</extracomment>
+        <translation>%1:létrafok %2:%3:%4</translation>
+    </message>
+    <message>
+        <location line="-180"/>
         <source>%1 holds an instruction list typed in Rung Studio that is not in its program: the list had errors when the project was saved, and is kept as typed under the key &quot;pendingListing&quot;; the rungs are the last valid program. Open the project in Rung Studio and fix the list.</source>
         <translation>A(z) %1 egy Rung Studióban begépelt utasításlistát tartalmaz, amely nincs benne a programjában: a lista hibás volt a projekt mentésekor, és begépelt formájában a „pendingListing” kulcs alatt maradt meg; a létrafokok az utolsó érvényes programot tartalmazzák. Nyissa meg a projektet a Rung Studióban, és javítsa ki a listát.</translation>
     </message>
@@ -695,19 +701,19 @@ Válaszidő: %6 ms (átlag %7, max. %8); frissítés: %9 ms, %10 keret</translat
 <context>
     <name>rung::app::MainWindow</name>
     <message>
-        <location filename="../app/gui/main_window.cpp" line="+166"/>
+        <location filename="../app/gui/main_window.cpp" line="+170"/>
         <source>Problems</source>
         <translation>Problémák</translation>
     </message>
     <message>
         <location line="+5"/>
-        <location line="+280"/>
+        <location line="+312"/>
         <source>Project</source>
         <translation>Projekt</translation>
     </message>
     <message>
-        <location line="-273"/>
-        <location line="+276"/>
+        <location line="-305"/>
+        <location line="+308"/>
         <source>Symbols</source>
         <translation>Szimbólumok</translation>
     </message>
@@ -1090,7 +1096,7 @@ Létradiagram- és utasításlista-szerkesztő a következő PLC-khez: %2.</tran
         <translation>A Rung Studio névjegye</translation>
     </message>
     <message>
-        <location filename="../app/gui/main_window.cpp" line="-258"/>
+        <location filename="../app/gui/main_window.cpp" line="-290"/>
         <source>Rung Comment</source>
         <translation>Létrafok megjegyzése</translation>
     </message>
@@ -1101,23 +1107,43 @@ Létradiagram- és utasításlista-szerkesztő a következő PLC-khez: %2.</tran
     </message>
     <message>
         <location line="+22"/>
-        <location line="+240"/>
+        <location line="+272"/>
         <source>Ladder</source>
         <translation>Létradiagram</translation>
     </message>
     <message>
-        <location line="-239"/>
-        <location line="+240"/>
+        <location line="-271"/>
+        <location line="+272"/>
         <source>Instruction List</source>
         <translation>Utasításlista</translation>
     </message>
     <message>
-        <location line="-227"/>
+        <location line="-259"/>
         <source>The list as typed had errors and now shows the ladder&apos;s program; Ctrl+Z in the list brings it back</source>
         <translation>A begépelt lista hibás volt, most a létradiagram programját mutatja; a listában a Ctrl+Z visszahozza</translation>
     </message>
     <message>
-        <location line="+79"/>
+        <location line="+90"/>
+        <source>Replace the Instruction List?</source>
+        <translation>Lecseréli az utasításlistát?</translation>
+    </message>
+    <message>
+        <location line="+1"/>
+        <source>The instruction list as typed has errors (line %1: %2).</source>
+        <translation>A begépelt utasításlista hibás (%1. sor: %2).</translation>
+    </message>
+    <message>
+        <location line="+5"/>
+        <source>This change to the ladder replaces the list with the ladder&apos;s program; Ctrl+Z in the list brings the typed text back. Cancel keeps the list as typed and leaves the ladder as it is.</source>
+        <translation>A létradiagram e módosítása a listát a létradiagram programjára cseréli; a listában a Ctrl+Z visszahozza a begépelt szöveget. A Mégse megtartja a begépelt listát, és a létradiagramot változatlanul hagyja.</translation>
+    </message>
+    <message>
+        <location line="+3"/>
+        <source>Replace the List</source>
+        <translation>Lista cseréje</translation>
+    </message>
+    <message>
+        <location line="+12"/>
         <source>&lt;b&gt;%1&lt;/b&gt;&lt;br&gt;Target: %2, model %3&lt;br&gt;%4, %5</source>
         <translation>&lt;b&gt;%1&lt;/b&gt;&lt;br&gt;PLC-család: %2, modell: %3&lt;br&gt;%4, %5</translation>
     </message>
@@ -1719,7 +1745,7 @@ Létradiagram- és utasításlista-szerkesztő a következő PLC-khez: %2.</tran
         <translation>&amp;Online</translation>
     </message>
     <message>
-        <location line="+13"/>
+        <location line="+15"/>
         <location line="+80"/>
         <source>Go &amp;Online</source>
         <translation>&amp;Online kapcsolódás</translation>
@@ -2610,7 +2636,7 @@ Kiértékelés: %4 µs (%5..%6)</translation>
 <context>
     <name>rung::comms::Driver</name>
     <message>
-        <location filename="../comms/driver/driver.cpp" line="+57"/>
+        <location filename="../comms/driver/driver.cpp" line="+51"/>
         <source>station 0 is the Modbus broadcast address: no PLC answers it, so nothing could be read and no write acknowledged; give the PLC&apos;s own station (1..247, or 255 for any PL110)</source>
         <translation>a 0-s állomás a Modbus körüzenet-címe: egyetlen PLC sem válaszol rá, így semmit sem lehetne olvasni, és egyetlen írást sem nyugtázna senki; adja meg a PLC saját állomáscímét (1..247, vagy bármely PL110-hez 255)</translation>
     </message>
@@ -3492,7 +3518,7 @@ Kiértékelés: %4 µs (%5..%6)</translation>
         <translation>Szimbólumok szerkesztése</translation>
     </message>
     <message>
-        <location line="+190"/>
+        <location line="+201"/>
         <source>Insert rung</source>
         <translation>Létrafok beszúrása</translation>
     </message>
@@ -3599,7 +3625,7 @@ Kiértékelés: %4 µs (%5..%6)</translation>
 <context>
     <name>rung::editor::IoPanel</name>
     <message>
-        <location filename="../editor/io_panel.cpp" line="+88"/>
+        <location filename="../editor/io_panel.cpp" line="+86"/>
         <source>Inputs are switches</source>
         <translation>A bemenetek kapcsolók</translation>
     </message>
@@ -3690,17 +3716,17 @@ Kiértékelés: %4 µs (%5..%6)</translation>
     <name>rung::editor::LadderView</name>
     <message>
         <location filename="../editor/ladder_view.cpp" line="+41"/>
-        <location line="+510"/>
+        <location line="+505"/>
         <source>Ladder diagram</source>
         <translation>Létradiagram</translation>
     </message>
     <message>
-        <location line="-412"/>
+        <location line="-407"/>
         <source>Edit rung comment</source>
         <translation>Létrafok megjegyzésének szerkesztése</translation>
     </message>
     <message>
-        <location line="+220"/>
+        <location line="+215"/>
         <source>Type one instruction, for example &quot;%1 %2&quot;</source>
         <translation>Egy utasítást írjon be, például: &quot;%1 %2&quot;</translation>
     </message>
@@ -3826,7 +3852,7 @@ Kiértékelés: %4 µs (%5..%6)</translation>
 <context>
     <name>rung::editor::MonitorCommands</name>
     <message>
-        <location filename="../editor/monitor_commands.cpp" line="+129"/>
+        <location filename="../editor/monitor_commands.cpp" line="+127"/>
         <source>Force %1 O&amp;N</source>
         <translation>%1 kényszerítése &amp;BE</translation>
     </message>
@@ -3946,7 +3972,7 @@ Kiértékelés: %4 µs (%5..%6)</translation>
     <name>rung::editor::PowerFlow</name>
     <message>
         <location filename="../editor/il_editor_monitor.cpp" line="+97"/>
-        <location filename="../editor/power_flow.cpp" line="+326"/>
+        <location filename="../editor/power_flow.cpp" line="+327"/>
         <source>ON</source>
         <translation>BE</translation>
     </message>
@@ -3957,7 +3983,7 @@ Kiértékelés: %4 µs (%5..%6)</translation>
         <translation>KI</translation>
     </message>
     <message>
-        <location filename="../editor/power_flow.cpp" line="+61"/>
+        <location filename="../editor/power_flow.cpp" line="+57"/>
         <source>%1/%2 ×%3 s</source>
         <extracomment>a timer&apos;s time elapsed / set value in its units, then the unit: &quot;23/50 ×0.1 s&quot;</extracomment>
         <translation>%1/%2 ×%3 s</translation>
@@ -4678,7 +4704,12 @@ Kiértékelés: %4 µs (%5..%6)</translation>
         <translation>Egyetlen érintkező %1 kapcsolással egyszerűbb %2 formában</translation>
     </message>
     <message>
-        <location line="+11"/>
+        <location line="+12"/>
+        <source>The block after a single contact can be written shorter; the contact stays in front of the %1</source>
+        <translation>Az egyetlen érintkező utáni blokk rövidebben is írható; az érintkező a(z) %1 előtt marad</translation>
+    </message>
+    <message>
+        <location line="+10"/>
         <source>A single device in parallel with a block belongs on the lower row: the block first, then an OR, drops the %1</source>
         <translation>Egy blokkal párhuzamos egyetlen operandus az alsó sorba való: előbb a blokk, majd egy OR, így elmarad a(z) %1</translation>
     </message>
@@ -6949,7 +6980,7 @@ Kiértékelés: %4 µs (%5..%6)</translation>
 <context>
     <name>rung::model::ValueFormat</name>
     <message>
-        <location filename="../model/image/value_format.cpp" line="+45"/>
+        <location filename="../model/image/value_format.cpp" line="+46"/>
         <source>Decimal</source>
         <translation>Decimális</translation>
     </message>
@@ -6974,12 +7005,12 @@ Kiértékelés: %4 µs (%5..%6)</translation>
         <translation>BCD</translation>
     </message>
     <message>
-        <location line="+32"/>
+        <location line="+29"/>
         <source>%1 (not BCD)</source>
         <translation>%1 (nem BCD)</translation>
     </message>
     <message>
-        <location line="+13"/>
+        <location line="+10"/>
         <location line="+61"/>
         <source>Type a value</source>
         <translation>Írjon be egy értéket</translation>
@@ -7171,7 +7202,7 @@ Kiértékelés: %4 µs (%5..%6)</translation>
 <context>
     <name>rung::simulator::Engine</name>
     <message>
-        <location filename="../simulator/engine_execute.cpp" line="+78"/>
+        <location filename="../simulator/engine_execute.cpp" line="+68"/>
         <source>set value %1 is not a BCD number; the instruction is skipped</source>
         <translation>a(z) %1 beállított érték nem BCD szám; az utasítás kimarad</translation>
     </message>

@@ -215,7 +215,13 @@ Codice di uscita: 0 nessun errore, 1 il programma contiene errori, 2 errore di u
         <translation>famiglia PLC sconosciuta: %1 (%2)</translation>
     </message>
     <message>
-        <location line="-115"/>
+        <location line="+65"/>
+        <source>%1:rung %2:%3:%4</source>
+        <extracomment>A finding&apos;s place on the ladder, after the file as a compiler writes file:line:column: %1 the file, %2 the rung&apos;s number, %3 the row, %4 the column. Keep the colons.</extracomment>
+        <translation>%1:segmento %2:%3:%4</translation>
+    </message>
+    <message>
+        <location line="-180"/>
         <source>%1 holds an instruction list typed in Rung Studio that is not in its program: the list had errors when the project was saved, and is kept as typed under the key &quot;pendingListing&quot;; the rungs are the last valid program. Open the project in Rung Studio and fix the list.</source>
         <translation>%1 contiene una lista istruzioni digitata in Rung Studio che non è nel suo programma: la lista conteneva errori quando il progetto è stato salvato, ed è conservata così come digitata sotto la chiave &quot;pendingListing&quot;; i segmenti sono l&apos;ultimo programma valido. Aprire il progetto in Rung Studio e correggere la lista.</translation>
     </message>
@@ -695,19 +701,19 @@ Andata e ritorno %6 ms (media %7, max %8); aggiornamento %9 ms, %10 frame</trans
 <context>
     <name>rung::app::MainWindow</name>
     <message>
-        <location filename="../app/gui/main_window.cpp" line="+166"/>
+        <location filename="../app/gui/main_window.cpp" line="+170"/>
         <source>Problems</source>
         <translation>Problemi</translation>
     </message>
     <message>
         <location line="+5"/>
-        <location line="+280"/>
+        <location line="+312"/>
         <source>Project</source>
         <translation>Progetto</translation>
     </message>
     <message>
-        <location line="-273"/>
-        <location line="+276"/>
+        <location line="-305"/>
+        <location line="+308"/>
         <source>Symbols</source>
         <translation>Simboli</translation>
     </message>
@@ -1090,7 +1096,7 @@ Editor di schemi ladder e liste istruzioni per %2.</translation>
         <translation>Informazioni su Rung Studio</translation>
     </message>
     <message>
-        <location filename="../app/gui/main_window.cpp" line="-258"/>
+        <location filename="../app/gui/main_window.cpp" line="-290"/>
         <source>Rung Comment</source>
         <translation>Commento del segmento</translation>
     </message>
@@ -1101,23 +1107,43 @@ Editor di schemi ladder e liste istruzioni per %2.</translation>
     </message>
     <message>
         <location line="+22"/>
-        <location line="+240"/>
+        <location line="+272"/>
         <source>Ladder</source>
         <translation>Ladder</translation>
     </message>
     <message>
-        <location line="-239"/>
-        <location line="+240"/>
+        <location line="-271"/>
+        <location line="+272"/>
         <source>Instruction List</source>
         <translation>Lista istruzioni</translation>
     </message>
     <message>
-        <location line="-227"/>
+        <location line="-259"/>
         <source>The list as typed had errors and now shows the ladder&apos;s program; Ctrl+Z in the list brings it back</source>
         <translation>La lista digitata conteneva errori e ora mostra il programma dello schema ladder; Ctrl+Z nella lista la ripristina</translation>
     </message>
     <message>
-        <location line="+79"/>
+        <location line="+90"/>
+        <source>Replace the Instruction List?</source>
+        <translation>Sostituire la lista istruzioni?</translation>
+    </message>
+    <message>
+        <location line="+1"/>
+        <source>The instruction list as typed has errors (line %1: %2).</source>
+        <translation>La lista istruzioni digitata contiene errori (riga %1: %2).</translation>
+    </message>
+    <message>
+        <location line="+5"/>
+        <source>This change to the ladder replaces the list with the ladder&apos;s program; Ctrl+Z in the list brings the typed text back. Cancel keeps the list as typed and leaves the ladder as it is.</source>
+        <translation>Questa modifica dello schema ladder sostituisce la lista con il programma dello schema ladder; Ctrl+Z nella lista ripristina il testo digitato. Annulla mantiene la lista digitata e lascia lo schema ladder invariato.</translation>
+    </message>
+    <message>
+        <location line="+3"/>
+        <source>Replace the List</source>
+        <translation>Sostituisci la lista</translation>
+    </message>
+    <message>
+        <location line="+12"/>
         <source>&lt;b&gt;%1&lt;/b&gt;&lt;br&gt;Target: %2, model %3&lt;br&gt;%4, %5</source>
         <translation>&lt;b&gt;%1&lt;/b&gt;&lt;br&gt;Famiglia PLC: %2, modello %3&lt;br&gt;%4, %5</translation>
     </message>
@@ -1724,7 +1750,7 @@ Editor di schemi ladder e liste istruzioni per %2.</translation>
         <translation>&amp;In linea</translation>
     </message>
     <message>
-        <location line="+13"/>
+        <location line="+15"/>
         <location line="+80"/>
         <source>Go &amp;Online</source>
         <translation>Vai &amp;online</translation>
@@ -2616,7 +2642,7 @@ Valutazione: %4 µs (%5..%6)</translation>
 <context>
     <name>rung::comms::Driver</name>
     <message>
-        <location filename="../comms/driver/driver.cpp" line="+57"/>
+        <location filename="../comms/driver/driver.cpp" line="+51"/>
         <source>station 0 is the Modbus broadcast address: no PLC answers it, so nothing could be read and no write acknowledged; give the PLC&apos;s own station (1..247, or 255 for any PL110)</source>
         <translation>la stazione 0 è l&apos;indirizzo broadcast Modbus: nessun PLC risponde, quindi nulla potrebbe essere letto né alcuna scrittura confermata; indicare la stazione del PLC (1..247, o 255 per qualsiasi PL110)</translation>
     </message>
@@ -3498,7 +3524,7 @@ Valutazione: %4 µs (%5..%6)</translation>
         <translation>Modifica simboli</translation>
     </message>
     <message>
-        <location line="+190"/>
+        <location line="+201"/>
         <source>Insert rung</source>
         <translation>Inserisci segmento</translation>
     </message>
@@ -3606,7 +3632,7 @@ Valutazione: %4 µs (%5..%6)</translation>
 <context>
     <name>rung::editor::IoPanel</name>
     <message>
-        <location filename="../editor/io_panel.cpp" line="+88"/>
+        <location filename="../editor/io_panel.cpp" line="+86"/>
         <source>Inputs are switches</source>
         <translation>Ingressi come interruttori</translation>
     </message>
@@ -3697,17 +3723,17 @@ Valutazione: %4 µs (%5..%6)</translation>
     <name>rung::editor::LadderView</name>
     <message>
         <location filename="../editor/ladder_view.cpp" line="+41"/>
-        <location line="+510"/>
+        <location line="+505"/>
         <source>Ladder diagram</source>
         <translation>Schema ladder</translation>
     </message>
     <message>
-        <location line="-412"/>
+        <location line="-407"/>
         <source>Edit rung comment</source>
         <translation>Modifica commento del segmento</translation>
     </message>
     <message>
-        <location line="+220"/>
+        <location line="+215"/>
         <source>Type one instruction, for example &quot;%1 %2&quot;</source>
         <translation>Digitare una sola istruzione, ad esempio &quot;%1 %2&quot;</translation>
     </message>
@@ -3833,7 +3859,7 @@ Valutazione: %4 µs (%5..%6)</translation>
 <context>
     <name>rung::editor::MonitorCommands</name>
     <message>
-        <location filename="../editor/monitor_commands.cpp" line="+129"/>
+        <location filename="../editor/monitor_commands.cpp" line="+127"/>
         <source>Force %1 O&amp;N</source>
         <translation>Forza %1 O&amp;N</translation>
     </message>
@@ -3953,7 +3979,7 @@ Valutazione: %4 µs (%5..%6)</translation>
     <name>rung::editor::PowerFlow</name>
     <message>
         <location filename="../editor/il_editor_monitor.cpp" line="+97"/>
-        <location filename="../editor/power_flow.cpp" line="+326"/>
+        <location filename="../editor/power_flow.cpp" line="+327"/>
         <source>ON</source>
         <translation>ON</translation>
     </message>
@@ -3964,7 +3990,7 @@ Valutazione: %4 µs (%5..%6)</translation>
         <translation>OFF</translation>
     </message>
     <message>
-        <location filename="../editor/power_flow.cpp" line="+61"/>
+        <location filename="../editor/power_flow.cpp" line="+57"/>
         <source>%1/%2 ×%3 s</source>
         <extracomment>a timer&apos;s time elapsed / set value in its units, then the unit: &quot;23/50 ×0.1 s&quot;</extracomment>
         <translation>%1/%2 ×%3 s</translation>
@@ -4687,7 +4713,12 @@ Valutazione: %4 µs (%5..%6)</translation>
         <translation>Un singolo contatto unito con %1 è più semplice come %2</translation>
     </message>
     <message>
-        <location line="+11"/>
+        <location line="+12"/>
+        <source>The block after a single contact can be written shorter; the contact stays in front of the %1</source>
+        <translation>Il blocco dopo un singolo contatto si può scrivere più breve; il contatto resta davanti a %1</translation>
+    </message>
+    <message>
+        <location line="+10"/>
         <source>A single device in parallel with a block belongs on the lower row: the block first, then an OR, drops the %1</source>
         <translation>Un singolo operando in parallelo a un blocco va sulla riga inferiore: prima il blocco, poi un OR, senza %1</translation>
     </message>
@@ -6964,7 +6995,7 @@ Valutazione: %4 µs (%5..%6)</translation>
 <context>
     <name>rung::model::ValueFormat</name>
     <message>
-        <location filename="../model/image/value_format.cpp" line="+45"/>
+        <location filename="../model/image/value_format.cpp" line="+46"/>
         <source>Decimal</source>
         <translation>Decimale</translation>
     </message>
@@ -6989,12 +7020,12 @@ Valutazione: %4 µs (%5..%6)</translation>
         <translation>BCD</translation>
     </message>
     <message>
-        <location line="+32"/>
+        <location line="+29"/>
         <source>%1 (not BCD)</source>
         <translation>%1 (non BCD)</translation>
     </message>
     <message>
-        <location line="+13"/>
+        <location line="+10"/>
         <location line="+61"/>
         <source>Type a value</source>
         <translation>Digitare un valore</translation>
@@ -7186,7 +7217,7 @@ Valutazione: %4 µs (%5..%6)</translation>
 <context>
     <name>rung::simulator::Engine</name>
     <message>
-        <location filename="../simulator/engine_execute.cpp" line="+78"/>
+        <location filename="../simulator/engine_execute.cpp" line="+68"/>
         <source>set value %1 is not a BCD number; the instruction is skipped</source>
         <translation>il valore di preset %1 non è un numero BCD; l&apos;istruzione viene saltata</translation>
     </message>

@@ -48,13 +48,16 @@ struct LadderEditOverTypedList : test::WindowFixture {
         view->setCursor({0, 0, 1});
         typeIntoCell(Qt::Key_F5, "X2");
     }
-    // Answers the next question with the button of this text; what it asked lands in *asked.
-    void answer(const QString &button, QString *asked) {
-        QTimer::singleShot(0, &window, [button, asked] {
+    // Answers the next question with the button of this text; what it asked lands in *asked,
+    // and the text of its default button in *byDefault.
+    void answer(const QString &button, QString *asked, QString *byDefault = nullptr) {
+        QTimer::singleShot(0, &window, [button, asked, byDefault] {
             auto *box = qobject_cast<QMessageBox *>(QApplication::activeModalWidget());
             if (!box)
                 return;
             *asked = box->text();
+            if (byDefault && box->defaultButton())
+                *byDefault = box->defaultButton()->text();
             for (QAbstractButton *b : box->buttons())
                 if (b->text().remove(QLatin1Char('&')) == button) {
                     b->click();
@@ -72,10 +75,75 @@ TEST_F(LadderEditOverTypedList, CtrlZInTheListBringsTheTypedTextBack) {
     QString asked;
     answer(QStringLiteral("Replace the List"), &asked);
     editTheLadder();
+    // Asked first, naming the list's first error.
+    EXPECT_TRUE(asked.contains(QStringLiteral("line 4"))) << asked.toStdString();
+    EXPECT_TRUE(asked.contains(QStringLiteral("X8"))) << asked.toStdString();
     ASSERT_TRUE(window.document()->listingText().contains(QStringLiteral("AND X2")))
         << window.document()->listingText().toStdString();
     EXPECT_EQ(il->text(), window.document()->listingText());
     il->setFocus();
     QTest::keyClick(il, Qt::Key_Z, Qt::ControlModifier);
     EXPECT_EQ(il->text(), kTyped);
+}
+
+TEST_F(LadderEditOverTypedList, CancelLeavesBothViewsAndTheTypedTextAsTheyWere) {
+    typeInTheList();
+    const int steps = window.document()->undoStack()->count();
+    const quint64 revision = window.document()->rungsRevision();
+    QString asked;
+    QString byDefault;
+    answer(QStringLiteral("Cancel"), &asked, &byDefault);
+    editTheLadder();
+    EXPECT_TRUE(asked.contains(QStringLiteral("line 4"))) << asked.toStdString();
+    EXPECT_EQ(byDefault.remove(QLatin1Char('&')), QStringLiteral("Cancel"));
+    EXPECT_EQ(il->text(), kTyped);
+    EXPECT_EQ(window.document()->listingText(), kProgram); // the ladder as it was
+    EXPECT_EQ(window.document()->rungsRevision(), revision);
+    EXPECT_EQ(window.document()->undoStack()->count(), steps); // no step pushed
+    EXPECT_GT(window.problemsView()->count(model::Severity::Error), 0);
+}
+
+// Typed within the typing pause, not yet checked: the edit asks all the same.
+TEST_F(LadderEditOverTypedList, TextTypedJustNowIsAskedForToo) {
+    il->setFocus();
+    il->setCursorPosition(2, 0);
+    QTest::keyClicks(il, QStringLiteral("OUT X8"));
+    QTest::keyClick(il, Qt::Key_Return);
+    QString asked;
+    answer(QStringLiteral("Cancel"), &asked);
+    editTheLadder();
+    EXPECT_TRUE(asked.contains(QStringLiteral("line 3"))) << asked.toStdString();
+    EXPECT_EQ(il->text(), QStringLiteral("LD X0\nOUT Y0\nOUT X8\nEND\n"));
+    EXPECT_EQ(window.document()->listingText(), kProgram);
+}
+
+// Edit > Redo of a ladder step would replace the list as typed too: asked the same way.
+TEST_F(LadderEditOverTypedList, RedoOfALadderStepAsksFirst) {
+    editTheLadder();
+    QUndoStack *stack = window.document()->undoStack();
+    stack->undo();
+    ASSERT_EQ(window.document()->listingText(), kProgram);
+    typeInTheList();
+    const int index = stack->index();
+    QAction *redo = test::editMenuEntry(window, QStringLiteral("Redo Place LD X2"));
+    ASSERT_NE(redo, nullptr);
+    QString asked;
+    answer(QStringLiteral("Cancel"), &asked);
+    redo->trigger();
+    EXPECT_TRUE(asked.contains(QStringLiteral("line 4"))) << asked.toStdString();
+    EXPECT_EQ(stack->index(), index);
+    EXPECT_EQ(il->text(), kTyped);
+    answer(QStringLiteral("Replace the List"), &asked);
+    redo->trigger();
+    EXPECT_EQ(stack->index(), index + 1);
+    EXPECT_TRUE(il->text().contains(QStringLiteral("AND X2")));
+}
+
+// Without typed errors nothing is asked: the list simply follows the ladder.
+TEST_F(LadderEditOverTypedList, AListWithoutErrorsFollowsWithoutAQuestion) {
+    QString asked;
+    answer(QStringLiteral("Cancel"), &asked);
+    editTheLadder();
+    EXPECT_TRUE(asked.isEmpty()) << asked.toStdString();
+    EXPECT_TRUE(il->text().contains(QStringLiteral("AND X2")));
 }
