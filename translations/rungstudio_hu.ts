@@ -215,7 +215,13 @@ Kilépési kód: 0 nincs hiba, 1 a programban hiba van, 2 használati vagy I/O h
         <translation>ismeretlen célrendszer: %1 (%2)</translation>
     </message>
     <message>
-        <location line="-115"/>
+        <location line="+65"/>
+        <source>%1:rung %2:%3:%4</source>
+        <extracomment>A finding&apos;s place on the ladder, after the file as a compiler writes file:line:column: %1 the file, %2 the rung&apos;s number, %3 the row, %4 the column. Keep the colons.</extracomment>
+        <translation>%1:létrafok %2:%3:%4</translation>
+    </message>
+    <message>
+        <location line="-180"/>
         <source>%1 holds an instruction list typed in Rung Studio that is not in its program: the list had errors when the project was saved, and is kept as typed under the key &quot;pendingListing&quot;; the rungs are the last valid program. Open the project in Rung Studio and fix the list.</source>
         <translation>A(z) %1 egy Rung Studióban begépelt utasításlistát tartalmaz, amely nincs benne a programjában: a lista hibás volt a projekt mentésekor, és begépelt formájában a „pendingListing” kulcs alatt maradt meg; a létrafokok az utolsó érvényes programot tartalmazzák. Nyissa meg a projektet a Rung Studióban, és javítsa ki a listát.</translation>
     </message>
@@ -294,7 +300,7 @@ Kilépési kód: 0 nincs hiba, 1 a programban hiba van, 2 használati vagy I/O h
         <translation>Megszakítva: semmi sem lett elküldve a PLC-nek</translation>
     </message>
     <message>
-        <location filename="../app/gui/connection_panel.cpp" line="+240"/>
+        <location filename="../app/gui/connection_panel.cpp" line="+245"/>
         <source>Settings</source>
         <translation>Beállítások</translation>
     </message>
@@ -409,7 +415,7 @@ Kilépési kód: 0 nincs hiba, 1 a programban hiba van, 2 használati vagy I/O h
         <translation>A(z) %1 kommunikációs protokollja nem nyilvános, ezért az IDE nem tud vele kapcsolatot teremteni. Helyette: exportálja a programot konzollistaként (Fájl &gt; Utasításlista exportálása), és töltse be a PLC saját eszközével; a kapcsolat tanulmányozásához rögzítse az adatforgalmát a &apos;rungstudio-cli record&apos; paranccsal.</translation>
     </message>
     <message>
-        <location line="+72"/>
+        <location line="+83"/>
         <source>No port found</source>
         <translation>Nem található port</translation>
     </message>
@@ -709,19 +715,19 @@ Válaszidő: %6 ms (átlag %7, max. %8); frissítés: %9 ms, %10 keret</translat
 <context>
     <name>rung::app::MainWindow</name>
     <message>
-        <location filename="../app/gui/main_window.cpp" line="+166"/>
+        <location filename="../app/gui/main_window.cpp" line="+170"/>
         <source>Problems</source>
         <translation>Problémák</translation>
     </message>
     <message>
         <location line="+5"/>
-        <location line="+280"/>
+        <location line="+312"/>
         <source>Project</source>
         <translation>Projekt</translation>
     </message>
     <message>
-        <location line="-273"/>
-        <location line="+276"/>
+        <location line="-305"/>
+        <location line="+308"/>
         <source>Symbols</source>
         <translation>Szimbólumok</translation>
     </message>
@@ -1104,7 +1110,7 @@ Létradiagram- és utasításlista-szerkesztő a következő PLC-khez: %2.</tran
         <translation>A Rung Studio névjegye</translation>
     </message>
     <message>
-        <location filename="../app/gui/main_window.cpp" line="-258"/>
+        <location filename="../app/gui/main_window.cpp" line="-290"/>
         <source>Rung Comment</source>
         <translation>Létrafok megjegyzése</translation>
     </message>
@@ -1115,23 +1121,43 @@ Létradiagram- és utasításlista-szerkesztő a következő PLC-khez: %2.</tran
     </message>
     <message>
         <location line="+22"/>
-        <location line="+240"/>
+        <location line="+272"/>
         <source>Ladder</source>
         <translation>Létradiagram</translation>
     </message>
     <message>
-        <location line="-239"/>
-        <location line="+240"/>
+        <location line="-271"/>
+        <location line="+272"/>
         <source>Instruction List</source>
         <translation>Utasításlista</translation>
     </message>
     <message>
-        <location line="-227"/>
+        <location line="-259"/>
         <source>The list as typed had errors and now shows the ladder&apos;s program; Ctrl+Z in the list brings it back</source>
         <translation>A begépelt lista hibás volt, most a létradiagram programját mutatja; a listában a Ctrl+Z visszahozza</translation>
     </message>
     <message>
-        <location line="+79"/>
+        <location line="+90"/>
+        <source>Replace the Instruction List?</source>
+        <translation>Lecseréli az utasításlistát?</translation>
+    </message>
+    <message>
+        <location line="+1"/>
+        <source>The instruction list as typed has errors (line %1: %2).</source>
+        <translation>A begépelt utasításlista hibás (%1. sor: %2).</translation>
+    </message>
+    <message>
+        <location line="+5"/>
+        <source>This change to the ladder replaces the list with the ladder&apos;s program; Ctrl+Z in the list brings the typed text back. Cancel keeps the list as typed and leaves the ladder as it is.</source>
+        <translation>A létradiagram e módosítása a listát a létradiagram programjára cseréli; a listában a Ctrl+Z visszahozza a begépelt szöveget. A Mégse megtartja a begépelt listát, és a létradiagramot változatlanul hagyja.</translation>
+    </message>
+    <message>
+        <location line="+3"/>
+        <source>Replace the List</source>
+        <translation>Lista cseréje</translation>
+    </message>
+    <message>
+        <location line="+12"/>
         <source>&lt;b&gt;%1&lt;/b&gt;&lt;br&gt;Target: %2, model %3&lt;br&gt;%4, %5</source>
         <translation>&lt;b&gt;%1&lt;/b&gt;&lt;br&gt;PLC-család: %2, modell: %3&lt;br&gt;%4, %5</translation>
     </message>
@@ -3511,7 +3537,7 @@ Kiértékelés: %4 µs (%5..%6)</translation>
         <translation>Szimbólumok szerkesztése</translation>
     </message>
     <message>
-        <location line="+190"/>
+        <location line="+201"/>
         <source>Insert rung</source>
         <translation>Létrafok beszúrása</translation>
     </message>
@@ -3709,17 +3735,17 @@ Kiértékelés: %4 µs (%5..%6)</translation>
     <name>rung::editor::LadderView</name>
     <message>
         <location filename="../editor/ladder_view.cpp" line="+41"/>
-        <location line="+510"/>
+        <location line="+505"/>
         <source>Ladder diagram</source>
         <translation>Létradiagram</translation>
     </message>
     <message>
-        <location line="-412"/>
+        <location line="-407"/>
         <source>Edit rung comment</source>
         <translation>Létrafok megjegyzésének szerkesztése</translation>
     </message>
     <message>
-        <location line="+220"/>
+        <location line="+215"/>
         <source>Type one instruction, for example &quot;%1 %2&quot;</source>
         <translation>Egy utasítást írjon be, például: &quot;%1 %2&quot;</translation>
     </message>
@@ -4697,7 +4723,12 @@ Kiértékelés: %4 µs (%5..%6)</translation>
         <translation>Egyetlen érintkező %1 kapcsolással egyszerűbb %2 formában</translation>
     </message>
     <message>
-        <location line="+11"/>
+        <location line="+12"/>
+        <source>The block after a single contact can be written shorter; the contact stays in front of the %1</source>
+        <translation>Az egyetlen érintkező utáni blokk rövidebben is írható; az érintkező a(z) %1 előtt marad</translation>
+    </message>
+    <message>
+        <location line="+10"/>
         <source>A single device in parallel with a block belongs on the lower row: the block first, then an OR, drops the %1</source>
         <translation>Egy blokkal párhuzamos egyetlen operandus az alsó sorba való: előbb a blokk, majd egy OR, így elmarad a(z) %1</translation>
     </message>
@@ -6706,7 +6737,7 @@ Kiértékelés: %4 µs (%5..%6)</translation>
         <translation>32 bit mozgatása: S (S, S+1) a D-be (alsó szó) és a D+1-be (felső szó)</translation>
     </message>
     <message>
-        <location line="+70"/>
+        <location line="+72"/>
         <source>Write n words to special module m1, at m2, once on a rising edge</source>
         <translation>n szó írása az m1 speciális modulba, m2-től, egyszer, felfutó élre</translation>
     </message>
@@ -6756,7 +6787,7 @@ Kiértékelés: %4 µs (%5..%6)</translation>
         <translation>S m2 számjegyének mozgatása az m1. számjegytől D-be az n. számjegytől</translation>
     </message>
     <message>
-        <location line="-154"/>
+        <location line="-156"/>
         <source>Counter: counts rising edges, reset with RST</source>
         <translation>Számláló: a felfutó éleket számolja, törlés RST-vel</translation>
     </message>
@@ -6781,7 +6812,7 @@ Kiértékelés: %4 µs (%5..%6)</translation>
         <translation>S mozgatása D-be</translation>
     </message>
     <message>
-        <location line="+18"/>
+        <location line="+20"/>
         <source>Move n words from S to D</source>
         <translation>n szó mozgatása S-ből D-be</translation>
     </message>

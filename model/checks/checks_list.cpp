@@ -254,6 +254,17 @@ private:
                                                            ? m_t.findInstruction(Op::Or)->mnemonic
                                                            : QString()));
                     offerCanonical(f, i);
+                } else if (fuzzy && op == Op::AndBlock && !inSeries(m_list, first.first, i) &&
+                           rungForm(i).form.known && !rungForm(i).form.rewrite.empty()) {
+                    // A block with a branch after a single contact: moving the contact behind
+                    // the block would drop the ANB but reorder what needs no move. The rung as
+                    // the ladder draws it keeps the contact in front, the block in its simplest
+                    // form (LD X0 / LD X1 / OR X2 / ANB).
+                    Finding &f = add("FZ004", Severity::Warning, i,
+                                     Tr::tr("The block after a single contact can be written "
+                                            "shorter; the contact stays in front of the %1")
+                                         .arg(name(i)));
+                    offerCanonical(f, i);
                 } else if (fuzzy) {
                     const bool orBlock = op == Op::OrBlock;
                     // A block of contacts in series stays where it is written (moveBehind).

@@ -265,6 +265,43 @@ TEST(CliBinary, LangPicksTheLanguageOverTheLocale) {
         << wrong.toStdString();
 }
 
+// The place of a finding on the ladder ("rung 1:1:4") speaks the language of --lang too.
+TEST(CliBinary, LangTranslatesTheRungOfAFindingsPlace) {
+    QTemporaryDir dir;
+    const QString file = write(dir, QStringLiteral("bridge.ladder"),
+                               "LADDER vigor WIDTH 8\n"
+                               "RUNG 1 ROWS 3 COLUMNS 3\n"
+                               "|-[ X0 ]-+----------[ X1 ]-+(OUT Y0)\n"
+                               "|        |                 |\n"
+                               "|        +-[ X2 ]-+        +\n"
+                               "|                 |        |\n"
+                               "|-[ X3 ]----------+-[ X4 ]-+\n");
+    const auto run = [&](const char *lang) {
+        QProcessEnvironment env = QProcessEnvironment::systemEnvironment();
+        for (const char *name : {"LC_ALL", "LC_MESSAGES", "LANGUAGE"})
+            env.remove(QString::fromLatin1(name));
+        env.insert(QStringLiteral("LANG"), QStringLiteral("C"));
+        QProcess p;
+        p.setProcessEnvironment(env);
+        p.start(QStringLiteral(RUNG_CLI_PATH), {QStringLiteral("--lang"), QString::fromLatin1(lang),
+                                                QStringLiteral("check"), file});
+        EXPECT_TRUE(p.waitForFinished(30000));
+        EXPECT_EQ(p.exitCode(), 1);
+        return QString::fromUtf8(p.readAllStandardOutput());
+    };
+    const QString english = run("en");
+    EXPECT_TRUE(english.contains(file + QStringLiteral(":rung 1:1:4: error: ")))
+        << english.toStdString();
+    const QString hungarian = run("hu");
+    EXPECT_TRUE(hungarian.contains(file + QStringLiteral(":létrafok 1:1:4: hiba: ")))
+        << hungarian.toStdString();
+    EXPECT_FALSE(hungarian.contains(QStringLiteral(":rung "))) << hungarian.toStdString();
+    const QString italian = run("it");
+    EXPECT_TRUE(italian.contains(file + QStringLiteral(":segmento 1:1:4: errore: ")))
+        << italian.toStdString();
+    EXPECT_FALSE(italian.contains(QStringLiteral(":rung "))) << italian.toStdString();
+}
+
 // The C locale gets English with its plural forms, not the "(s)" of the source text.
 TEST(CliBinary, EnglishInTheCLocaleHasItsPluralForms) {
     QTemporaryDir dir;
