@@ -50,7 +50,8 @@ double LadderMetrics::rungHeight(const model::Rung &rung) const {
 }
 
 LadderMetrics::FontSizes LadderMetrics::fontSizes() const {
-    return {static_cast<int>(rowHeight * 0.24), static_cast<int>(rowHeight * 0.2),
+    return {std::max(1, static_cast<int>(rowHeight * 0.24)),
+            std::max(1, static_cast<int>(rowHeight * 0.2)),
             std::max(1, static_cast<int>(rowHeight * 0.26))};
 }
 
@@ -72,9 +73,9 @@ LadderPainter::LadderPainter(const model::Project &project, const LadderMetrics 
     , m_pen(std::max(1.0, std::round(1.6 * metrics.rowHeight / 52.0))) {
     m_font = QFont(QStringLiteral("DejaVu Sans"));
     const LadderMetrics::FontSizes sizes = metrics.fontSizes();
-    m_font.setPixelSize(std::max(1, sizes.label));
+    m_font.setPixelSize(sizes.label);
     m_small = m_font;
-    m_small.setPixelSize(std::max(1, sizes.small));
+    m_small.setPixelSize(sizes.small);
     m_mark = m_font;
     m_mark.setBold(true);
     m_mark.setPixelSize(sizes.mark);

@@ -116,8 +116,11 @@ bool Engine::resolveStep(const Step &s, std::size_t step, Step &r) {
     // CCD reads n words from its source in 8-bit mode, n / 2 rounded up in 16-bit mode, and
     // writes one word (its parity word is resolved as the slot).
     const bool checkCode = s.code == Code::CheckCode;
-    const int blockWords = checkCodeBytes(s) ? std::max(1, s.count) : (s.count + 1) / 2;
-    int extent = s.code == Code::BlockMove ? std::max(1, s.count) : checkCode ? blockWords : 1;
+    int extent = 1;
+    if (s.code == Code::BlockMove)
+        extent = std::max(1, s.count);
+    else if (checkCode)
+        extent = checkCodeBytes(s) ? std::max(1, s.count) : (s.count + 1) / 2;
     auto word = [&](const OperandRef &ref, std::int64_t element) {
         const Segment *seg = segmentOf(p, ref, element);
         return static_cast<std::int32_t>(seg->base + (element - seg->first));
