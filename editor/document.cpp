@@ -219,7 +219,7 @@ int Document::stepCount() const {
 
 void Document::replaceRungs(int first, int count, const std::vector<model::Rung> &rungs,
                             const QString &label) {
-    if (m_rungEditGuard && !m_rungEditGuard())
+    if (m_rungEditGuard && !m_rungEditGuard(first, count))
         return;
     pushRungs(first, count, rungs, label);
 }

@@ -78,9 +78,12 @@ public:
     QStringList knownDevices(bool withNames = false) const;
 
     // Asked before each edit of the rungs that does not come from the list (the ladder's, a
-    // fix's): false leaves the program as it is and pushes no step. The main window asks the
-    // user there before an edit replaces a list typed with errors.
-    void setRungEditGuard(std::function<bool()> guard) { m_rungEditGuard = std::move(guard); }
+    // fix's), with the rungs it replaces: false leaves the program as it is and pushes no step.
+    // The main window asks the user there before an edit replaces a list typed with errors, and
+    // takes a list typed just now first.
+    void setRungEditGuard(std::function<bool(int first, int count)> guard) {
+        m_rungEditGuard = std::move(guard);
+    }
     // Whether the undo stack's step at this index changes the rungs (a symbol's does not).
     bool stepChangesRungs(int index) const;
 
@@ -155,7 +158,7 @@ private:
     // line carries: text typed from an older list still finds its rung.
     std::map<QString, model::Rung> m_held;
     std::vector<model::Diagnostic> m_diagnostics;
-    std::function<bool()> m_rungEditGuard;
+    std::function<bool(int first, int count)> m_rungEditGuard;
 };
 
 } // namespace rung::editor

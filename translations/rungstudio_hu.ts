@@ -715,19 +715,19 @@ Válaszidő: %6 ms (átlag %7, max. %8); frissítés: %9 ms, %10 keret</translat
 <context>
     <name>rung::app::MainWindow</name>
     <message>
-        <location filename="../app/gui/main_window.cpp" line="+170"/>
+        <location filename="../app/gui/main_window.cpp" line="+173"/>
         <source>Problems</source>
         <translation>Problémák</translation>
     </message>
     <message>
         <location line="+5"/>
-        <location line="+312"/>
+        <location line="+330"/>
         <source>Project</source>
         <translation>Projekt</translation>
     </message>
     <message>
-        <location line="-305"/>
-        <location line="+308"/>
+        <location line="-323"/>
+        <location line="+326"/>
         <source>Symbols</source>
         <translation>Szimbólumok</translation>
     </message>
@@ -1110,7 +1110,7 @@ Létradiagram- és utasításlista-szerkesztő a következő PLC-khez: %2.</tran
         <translation>A Rung Studio névjegye</translation>
     </message>
     <message>
-        <location filename="../app/gui/main_window.cpp" line="-290"/>
+        <location filename="../app/gui/main_window.cpp" line="-308"/>
         <source>Rung Comment</source>
         <translation>Létrafok megjegyzése</translation>
     </message>
@@ -1121,23 +1121,28 @@ Létradiagram- és utasításlista-szerkesztő a következő PLC-khez: %2.</tran
     </message>
     <message>
         <location line="+22"/>
-        <location line="+272"/>
+        <location line="+290"/>
         <source>Ladder</source>
         <translation>Létradiagram</translation>
     </message>
     <message>
-        <location line="-271"/>
-        <location line="+272"/>
+        <location line="-289"/>
+        <location line="+290"/>
         <source>Instruction List</source>
         <translation>Utasításlista</translation>
     </message>
     <message>
-        <location line="-259"/>
+        <location line="-277"/>
         <source>The list as typed had errors and now shows the ladder&apos;s program; Ctrl+Z in the list brings it back</source>
         <translation>A begépelt lista hibás volt, most a létradiagram programját mutatja; a listában a Ctrl+Z visszahozza</translation>
     </message>
     <message>
-        <location line="+90"/>
+        <location line="+95"/>
+        <source>The list as typed was taken first and changed rung %1, so the ladder edit was not made: make it again on the rung as it is now.</source>
+        <translation>A begépelt lista került előbb a programba, és megváltoztatta a(z) %1. létrafokot, ezért a létradiagram módosítása nem történt meg: végezze el újra a létrafok mostani állapotán.</translation>
+    </message>
+    <message>
+        <location line="+13"/>
         <source>Replace the Instruction List?</source>
         <translation>Lecseréli az utasításlistát?</translation>
     </message>

@@ -715,19 +715,19 @@ Andata e ritorno %6 ms (media %7, max %8); aggiornamento %9 ms, %10 frame</trans
 <context>
     <name>rung::app::MainWindow</name>
     <message>
-        <location filename="../app/gui/main_window.cpp" line="+170"/>
+        <location filename="../app/gui/main_window.cpp" line="+173"/>
         <source>Problems</source>
         <translation>Problemi</translation>
     </message>
     <message>
         <location line="+5"/>
-        <location line="+312"/>
+        <location line="+330"/>
         <source>Project</source>
         <translation>Progetto</translation>
     </message>
     <message>
-        <location line="-305"/>
-        <location line="+308"/>
+        <location line="-323"/>
+        <location line="+326"/>
         <source>Symbols</source>
         <translation>Simboli</translation>
     </message>
@@ -1110,7 +1110,7 @@ Editor di schemi ladder e liste istruzioni per %2.</translation>
         <translation>Informazioni su Rung Studio</translation>
     </message>
     <message>
-        <location filename="../app/gui/main_window.cpp" line="-290"/>
+        <location filename="../app/gui/main_window.cpp" line="-308"/>
         <source>Rung Comment</source>
         <translation>Commento del segmento</translation>
     </message>
@@ -1121,23 +1121,28 @@ Editor di schemi ladder e liste istruzioni per %2.</translation>
     </message>
     <message>
         <location line="+22"/>
-        <location line="+272"/>
+        <location line="+290"/>
         <source>Ladder</source>
         <translation>Ladder</translation>
     </message>
     <message>
-        <location line="-271"/>
-        <location line="+272"/>
+        <location line="-289"/>
+        <location line="+290"/>
         <source>Instruction List</source>
         <translation>Lista istruzioni</translation>
     </message>
     <message>
-        <location line="-259"/>
+        <location line="-277"/>
         <source>The list as typed had errors and now shows the ladder&apos;s program; Ctrl+Z in the list brings it back</source>
         <translation>La lista digitata conteneva errori e ora mostra il programma dello schema ladder; Ctrl+Z nella lista la ripristina</translation>
     </message>
     <message>
-        <location line="+90"/>
+        <location line="+95"/>
+        <source>The list as typed was taken first and changed rung %1, so the ladder edit was not made: make it again on the rung as it is now.</source>
+        <translation>La lista digitata è stata applicata per prima e ha cambiato il segmento %1, quindi la modifica dello schema ladder non è stata fatta: ripeterla sul segmento com&apos;è ora.</translation>
+    </message>
+    <message>
+        <location line="+13"/>
         <source>Replace the Instruction List?</source>
         <translation>Sostituire la lista istruzioni?</translation>
     </message>

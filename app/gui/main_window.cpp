@@ -28,6 +28,8 @@
 #include <QTimer>
 #include <QVBoxLayout>
 
+#include <algorithm>
+
 namespace rung::app {
 
 MainWindow::MainWindow(QWidget *parent)
@@ -74,7 +76,8 @@ MainWindow::MainWindow(QWidget *parent)
     connect(&m_ilTimer, &QTimer::timeout, this, &MainWindow::applyListing);
     connect(m_il, &editor::IlEditor::listingEdited, this, [this] { m_ilTimer.start(); });
     connect(m_document, &editor::Document::programChanged, this, &MainWindow::refreshFromDocument);
-    m_document->setRungEditGuard([this] { return mayReplaceTypedList(); });
+    m_document->setRungEditGuard(
+        [this](int first, int count) { return mayReplaceTypedList(first, count); });
     connect(m_document, &editor::Document::pathChanged, this, &MainWindow::updateTitle);
     connect(m_document->undoStack(), &QUndoStack::cleanChanged, this, &MainWindow::updateTitle);
     connect(m_ladder, &editor::LadderView::cursorMoved, this, [this](const editor::CellCursor &c) {
@@ -308,25 +311,43 @@ void MainWindow::refreshFromDocument() {
     updateTitle(); // the list as typed counts as unsaved work
 }
 
-bool MainWindow::mayReplaceTypedList() {
+bool MainWindow::mayReplaceTypedList(int first, int count) {
     if (m_editingListing)
         return true; // the list's own change
     if (m_ilTimer.isActive()) {
-        // Typed just now, not yet checked: text with errors is taken as such (the program
-        // stays), so that the question below knows of it; a valid text is left to the pause.
+        // Typed just now, not yet checked. Text with errors is taken as such (the program
+        // stays), so that the question below knows of it. A valid text becomes the program
+        // now, its own undo step, so the edit adds to it instead of printing over it.
         std::vector<model::Diagnostic> errors;
-        if (!m_document->setListing(m_il->text(), &errors, editor::Document::ListingStep::Check))
-            applyListing();
+        const bool valid =
+            m_document->setListing(m_il->text(), &errors, editor::Document::ListingStep::Check);
+        const std::vector<model::Rung> before =
+            valid ? m_document->ladder().rungs : std::vector<model::Rung>{};
+        applyListing();
+        if (valid) {
+            const std::vector<model::Rung> &after = m_document->ladder().rungs;
+            const auto [b, a] =
+                std::mismatch(before.begin(), before.end(), after.begin(), after.end());
+            const auto unchanged = static_cast<int>(b - before.begin());
+            if (unchanged < first + std::max(count, 0)) {
+                statusBar()->showMessage(
+                    tr("The list as typed was taken first and changed rung %1, so the ladder "
+                       "edit was not made: make it again on the rung as it is now.")
+                        .arg(unchanged + 1),
+                    10000);
+                return false;
+            }
+        }
     }
-    const auto first = std::find_if(
+    const auto firstError = std::find_if(
         m_listingErrors.begin(), m_listingErrors.end(),
         [](const model::Diagnostic &d) { return d.severity == model::Severity::Error; });
-    if (first == m_listingErrors.end())
+    if (firstError == m_listingErrors.end())
         return true;
     QMessageBox box(QMessageBox::Question, tr("Replace the Instruction List?"),
                     tr("The instruction list as typed has errors (line %1: %2).")
-                        .arg(first->location.line)
-                        .arg(first->message),
+                        .arg(firstError->location.line)
+                        .arg(firstError->message),
                     QMessageBox::NoButton, this);
     box.setInformativeText(
         tr("This change to the ladder replaces the list with the ladder's program; Ctrl+Z in "

@@ -148,7 +148,10 @@ private:
     // Before an edit of the rungs replaces the list as typed with errors (the list would show
     // the ladder's program): asks the user, naming the list's first error; false to keep the
     // list and leave the program as it is. True at once when there is nothing typed to lose.
-    bool mayReplaceTypedList();
+    // A list typed within the pause without errors is taken first, as its own step; false
+    // (with a word in the status bar) when it changed the rungs [first, first + count) the
+    // edit was made on, so that the edit never lands on a rung it was not made for.
+    bool mayReplaceTypedList(int first = 0, int count = 0);
     void showProject(const model::Project &project, const QString &path);
     void refreshProjectInfo();
     // The list as typed when it has errors the program could not take; empty when it agrees.

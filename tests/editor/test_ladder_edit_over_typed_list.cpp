@@ -8,6 +8,7 @@
 #include <QApplication>
 #include <QMessageBox>
 #include <QPushButton>
+#include <QStatusBar>
 #include <QTimer>
 
 #include "tests/editor/window_fixture.h"
@@ -146,4 +147,42 @@ TEST_F(LadderEditOverTypedList, AListWithoutErrorsFollowsWithoutAQuestion) {
     editTheLadder();
     EXPECT_TRUE(asked.isEmpty()) << asked.toStdString();
     EXPECT_TRUE(il->text().contains(QStringLiteral("AND X2")));
+}
+
+// Typed within the typing pause without errors: the text is taken first, as its own step, and
+// the ladder edit adds to it; nothing typed is printed over.
+TEST_F(LadderEditOverTypedList, TextTypedJustNowWithoutErrorsIsKeptUnderTheEdit) {
+    il->setFocus();
+    il->setCursorPosition(2, 0); // at END
+    QTest::keyClicks(il, QStringLiteral("LD X1"));
+    QTest::keyClick(il, Qt::Key_Return);
+    QTest::keyClicks(il, QStringLiteral("OUT Y1"));
+    QTest::keyClick(il, Qt::Key_Return);
+    const int steps = window.document()->undoStack()->count();
+    QString asked;
+    answer(QStringLiteral("Cancel"), &asked);
+    editTheLadder();
+    EXPECT_TRUE(asked.isEmpty()) << asked.toStdString();
+    EXPECT_EQ(window.document()->listingText(),
+              QStringLiteral("LD X0\nAND X2\nOUT Y0\nLD X1\nOUT Y1\nEND\n"));
+    EXPECT_EQ(il->text(), window.document()->listingText());
+    // Two steps: the typed list, then the contact; undoing the contact keeps the typing.
+    EXPECT_EQ(window.document()->undoStack()->count(), steps + 2);
+    window.document()->undoStack()->undo();
+    EXPECT_EQ(il->text(), QStringLiteral("LD X0\nOUT Y0\nLD X1\nOUT Y1\nEND\n"));
+}
+
+// Typed within the pause on the very rung the ladder edit was made on: the typing wins, the
+// edit is not made on a rung it was not made for, and the status bar says so.
+TEST_F(LadderEditOverTypedList, TextTypedJustNowOnTheEditedRungWinsAndTheEditIsNotMade) {
+    il->setFocus();
+    il->setCursorPosition(0, 4); // after "LD X"
+    QTest::keyClick(il, Qt::Key_Delete);
+    QTest::keyClicks(il, QStringLiteral("3"));
+    ASSERT_EQ(il->text(), QStringLiteral("LD X3\nOUT Y0\nEND\n"));
+    editTheLadder();
+    EXPECT_EQ(window.document()->listingText(), QStringLiteral("LD X3\nOUT Y0\nEND\n"));
+    EXPECT_EQ(il->text(), window.document()->listingText());
+    EXPECT_TRUE(window.statusBar()->currentMessage().contains(QStringLiteral("rung 1")))
+        << window.statusBar()->currentMessage().toStdString();
 }
