@@ -1,6 +1,7 @@
 #include "main_window.h"
 
 #include "dialogs.h"
+#include "file_dialogs.h"
 #include "language.h"
 #include "symbol_table.h"
 
@@ -17,7 +18,6 @@
 #include <QApplication>
 #include <QDockWidget>
 #include <QFile>
-#include <QFileDialog>
 #include <QKeyEvent>
 #include <QMenuBar>
 #include <QMessageBox>
@@ -216,8 +216,8 @@ void MainWindow::buildActions() {
         ->setShortcut(QKeySequence(Qt::CTRL | Qt::Key_H)); // QKeySequence::Replace: none on Linux
     edit->addSeparator();
     edit->addAction(tr("&Import Symbols (CSV)..."), this, [this] {
-        const QString path = QFileDialog::getOpenFileName(this, tr("Import Symbols"), QString(),
-                                                          tr("CSV files (*.csv)"));
+        const QString path =
+            askOpenFile(this, tr("Import Symbols"), m_document->path(), tr("CSV files (*.csv)"));
         QString error;
         if (!path.isEmpty() && !m_symbols->importCsv(path, &error))
             messageBox(QMessageBox::Critical, this, tr("Cannot import"), error);

@@ -2,6 +2,7 @@
 
 #include "dialogs.h"
 #include "example_titles.h"
+#include "file_dialogs.h"
 #include "ladder_export.h"
 #include "recovery.h"
 #include "symbol_table.h"
@@ -18,7 +19,6 @@
 #include <QDialogButtonBox>
 #include <QDir>
 #include <QDirIterator>
-#include <QFileDialog>
 #include <QFileInfo>
 #include <QFontMetrics>
 #include <QFormLayout>
@@ -265,8 +265,8 @@ void MainWindow::fileNew() {
 void MainWindow::fileOpen() {
     if (!maybeSave())
         return;
-    const QString path = QFileDialog::getOpenFileName(
-        this, tr("Open"), QString(),
+    const QString path = askOpenFile(
+        this, tr("Open"), m_document->path(),
         tr("Rung Studio projects (*.rung);;Instruction lists (*.il *.txt);;Ladder texts "
            "(*.ladder)"));
     if (!path.isEmpty())
@@ -295,19 +295,16 @@ QString MainWindow::completeSavePath(const QString &chosen, const QStringList &s
 
 QString MainWindow::askSavePath(const QString &title, const QString &filter,
                                 const QStringList &suffixes) {
-    return completeSavePath(
-        QFileDialog::getSaveFileName(
-            this, title,
-            m_document->path().isEmpty() ? QString() : QFileInfo(m_document->path()).absolutePath(),
-            filter),
-        suffixes);
+    return completeSavePath(askSaveFile(this, title, fileDialogFolder(m_document->path()), filter),
+                            suffixes);
 }
 
 bool MainWindow::fileSaveAs() {
-    const QString path =
-        completeSavePath(QFileDialog::getSaveFileName(this, tr("Save As"), m_document->path(),
-                                                      tr("Rung Studio projects (*.rung)")),
-                         {QString::fromLatin1(model::kProjectExtension)});
+    const QString path = completeSavePath(
+        askSaveFile(this, tr("Save As"),
+                    m_document->path().isEmpty() ? fileDialogFolder(QString()) : m_document->path(),
+                    tr("Rung Studio projects (*.rung)")),
+        {QString::fromLatin1(model::kProjectExtension)});
     if (path.isEmpty())
         return false;
     return saveTo(path);
@@ -316,8 +313,7 @@ bool MainWindow::fileSaveAs() {
 void MainWindow::importListing() {
     if (!maybeSave())
         return;
-    const QString path =
-        QFileDialog::getOpenFileName(this, tr("Import Instruction List"), QString(),
+    const QString path = askOpenFile(this, tr("Import Instruction List"), m_document->path(),
                                      tr("Instruction lists (*.il *.txt);;All files (*)"));
     // Read for the PLC the list names on its first line, else for the project's.
     if (!path.isEmpty())

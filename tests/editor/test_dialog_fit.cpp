@@ -181,6 +181,13 @@ TEST_P(DialogFit, EveryDialogFitsItsTitleAndTexts) {
     window.document()->insertRung(0, window.document()->ladder().rungs.front());
     expectFits("Unsaved changes", [&] { entry(mw, "&New Project...")->trigger(); });
     window.document()->markSaved();
+    // Qt's own file dialogs, as under a desktop without one of its own: the size and date
+    // columns' titles whole ("Dimensione" was cut).
+    QCoreApplication::setAttribute(Qt::AA_DontUseNativeDialogs, true);
+    expectFits("Open", [&] { entry(mw, "&Open...")->trigger(); });
+    expectFits("Export Instruction List",
+               [&] { entry(mw, "&Export Instruction List...")->trigger(); });
+    QCoreApplication::setAttribute(Qt::AA_DontUseNativeDialogs, false);
     // A file that cannot be opened.
     expectFits("Cannot open the file",
                [&] { window.openFile(dir.filePath(QStringLiteral("none.rung"))); });

@@ -2,6 +2,7 @@
 // File > Open Recent (remembered in the settings for the next start).
 
 #include "app/gui/example_titles.h"
+#include "app/gui/file_dialogs.h"
 #include "app/gui/language.h"
 #include "app/gui/main_window.h"
 #include "editor/il_editor.h"
@@ -10,6 +11,7 @@
 #include "model/project/project.h"
 
 #include <QApplication>
+#include <QDir>
 #include <QDirIterator>
 #include <QFile>
 #include <QFileDialog>
@@ -218,4 +220,38 @@ TEST(FilesMenu, OpenOffersLadderTexts) {
     open->trigger();
     EXPECT_TRUE(filters.join(u';').contains(QStringLiteral("*.ladder")))
         << filters.join(u';').toStdString();
+}
+
+namespace {
+
+// The folder the File > Open dialog starts in.
+QString openDialogFolder(app::MainWindow &window) {
+    QString folder;
+    QTimer::singleShot(0, &window, [&folder] {
+        if (auto *dialog = qobject_cast<QFileDialog *>(QApplication::activeModalWidget())) {
+            folder = dialog->directory().absolutePath();
+            dialog->reject();
+        }
+    });
+    QAction *open = test::menuAction(window, QStringLiteral("Open..."));
+    if (open)
+        open->trigger();
+    return folder;
+}
+
+} // namespace
+
+// File > Open starts where the project is, not in the folder the IDE was started from; a new
+// project's dialog starts where a file was last opened.
+TEST(FilesMenu, OpenStartsInTheProjectsFolderThenTheLastOneUsed) {
+    QTemporaryDir dir;
+    QTemporaryDir other;
+    ASSERT_NE(QDir(dir.path()).canonicalPath(), QDir::currentPath());
+    app::MainWindow window;
+    ASSERT_TRUE(window.saveTo(dir.filePath(QStringLiteral("latch.rung"))));
+    EXPECT_EQ(QDir(openDialogFolder(window)).canonicalPath(), QDir(dir.path()).canonicalPath());
+    // Taking a file from the other folder remembers it for a new project.
+    app::rememberFileDialogFolder(other.filePath(QStringLiteral("x.rung")));
+    app::MainWindow fresh;
+    EXPECT_EQ(QDir(openDialogFolder(fresh)).canonicalPath(), QDir(other.path()).canonicalPath());
 }
