@@ -228,20 +228,25 @@ std::size_t Engine::execute(std::size_t from, std::size_t to) {
     std::size_t i = from;
     for (; i < to; ++i) {
         const Step *step = &steps[i];
-        if (step->flags & kResolve) [[unlikely]] {
-            if (!resolveStep(*step, i, resolved)) {
-                if constexpr (Record)
-                    m_flow[i] = acc;
-                continue;
+        // One test per step for the rare ones, so that the plain scan pays little for them:
+        // an operand resolved at run time, or "@MOV(21)", which runs on the rising edge of
+        // its condition while the rung's condition goes on to the instructions after it.
+        const bool special = (step->flags & (kResolve | kDifferentiated)) != 0;
+        bool level = false;
+        if (special) [[unlikely]] {
+            if (step->flags & kResolve) {
+                if (!resolveStep(*step, i, resolved)) {
+                    if constexpr (Record)
+                        m_flow[i] = acc;
+                    continue;
+                }
+                step = &resolved;
             }
-            step = &resolved;
+            level = acc;
+            if (step->flags & kDifferentiated)
+                acc = edge(m_edges[static_cast<std::size_t>(step->slot)], acc, false);
         }
         const Step &s = *step;
-        // "@MOV(21)" runs on the rising edge of its condition; the rung's condition goes on
-        // to the instructions after it.
-        const bool level = acc;
-        if (s.flags & kDifferentiated) [[unlikely]]
-            acc = edge(m_edges[static_cast<std::size_t>(s.slot)], acc, false);
         switch (s.code) {
         case Code::Load:
         case Code::LoadEdge:
@@ -786,10 +791,12 @@ std::size_t Engine::execute(std::size_t from, std::size_t to) {
                 m_flow[i] = acc;
             return leave(n);
         }
-        if (step == &resolved) [[unlikely]]
-            writeBack(steps[i], resolved, W);
-        if (s.flags & kDifferentiated) [[unlikely]]
-            acc = level;
+        if (special) [[unlikely]] {
+            if (step == &resolved)
+                writeBack(steps[i], resolved, W);
+            if (s.flags & kDifferentiated)
+                acc = level;
+        }
         if constexpr (Record)
             m_flow[i] = acc;
     }
