@@ -1019,13 +1019,13 @@ Létradiagram- és utasításlista-szerkesztő a következő PLC-khez: %2.</tran
         <translation>Operandus &amp;cseréje...</translation>
     </message>
     <message>
-        <location line="+4"/>
+        <location line="+5"/>
         <source>Import Symbols</source>
         <translation>Szimbólumok importálása</translation>
     </message>
     <message>
-        <location line="+1"/>
-        <location filename="../app/gui/main_window_tools.cpp" line="+225"/>
+        <location line="+0"/>
+        <location filename="../app/gui/main_window_tools.cpp" line="+224"/>
         <source>CSV files (*.csv)</source>
         <translation>CSV-fájlok (*.csv)</translation>
     </message>
@@ -1320,17 +1320,17 @@ Létradiagram- és utasításlista-szerkesztő a következő PLC-khez: %2.</tran
         <translation>%1 már létezik. Lecseréli?</translation>
     </message>
     <message>
-        <location line="+18"/>
+        <location line="+14"/>
         <source>Save As</source>
         <translation>Mentés másként</translation>
     </message>
     <message>
-        <location line="+1"/>
+        <location line="+2"/>
         <source>Rung Studio projects (*.rung)</source>
         <translation>Rung Studio projektek (*.rung)</translation>
     </message>
     <message>
-        <location line="+11"/>
+        <location line="+10"/>
         <source>Import Instruction List</source>
         <translation>Utasításlista importálása</translation>
     </message>
@@ -1359,7 +1359,7 @@ Létradiagram- és utasításlista-szerkesztő a következő PLC-khez: %2.</tran
         <translation>Az exportálás nem sikerült</translation>
     </message>
     <message>
-        <location line="-197"/>
+        <location line="-193"/>
         <source>%1, line %2, column %3: %4</source>
         <translation>%1, %2. sor, %3. oszlop: %4</translation>
     </message>
@@ -1369,7 +1369,7 @@ Létradiagram- és utasításlista-szerkesztő a következő PLC-khez: %2.</tran
         <translation>Rung Studio projektek (*.rung);;Utasításlisták (*.il *.txt);;Létraszövegek (*.ladder)</translation>
     </message>
     <message>
-        <location line="+77"/>
+        <location line="+73"/>
         <source>Export Ladder</source>
         <translation>Létradiagram exportálása</translation>
     </message>
@@ -2103,16 +2103,6 @@ A read és a write kilépési kódja: 0 kész, 1 a PLC nem válaszolt vagy eluta
     </message>
     <message>
         <location line="+1"/>
-        <source>Block stack (ANB/ORB):</source>
-        <translation>Blokkverem (ANB/ORB):</translation>
-    </message>
-    <message>
-        <location line="+1"/>
-        <source>MPS stack:</source>
-        <translation>MPS-verem:</translation>
-    </message>
-    <message>
-        <location line="+1"/>
         <source>Step Instruction</source>
         <translation>Lépés egy utasítással</translation>
     </message>
@@ -2157,7 +2147,17 @@ A read és a write kilépési kódja: 0 kész, 1 a PLC nem válaszolt vagy eluta
         <translation>Mindet eltávolítja</translation>
     </message>
     <message>
-        <location line="+30"/>
+        <location line="+29"/>
+        <source>Block stack (%1 / %2):</source>
+        <translation>Blokkverem (%1 / %2):</translation>
+    </message>
+    <message>
+        <location line="+3"/>
+        <source>%1 stack:</source>
+        <translation>%1-verem:</translation>
+    </message>
+    <message>
+        <location line="+11"/>
         <source>Not stopped inside a scan. Step Instruction starts a scan and stops before its first instruction; a breakpoint stops a running scan.</source>
         <translation>Nincs megállítva ciklus közben. A Lépés egy utasítással ciklust indít, és az első utasítása előtt megáll; a töréspont a futó ciklust állítja meg.</translation>
     </message>
@@ -7293,7 +7293,7 @@ Kiértékelés: %4 µs (%5..%6)</translation>
         <translation>a(z) %1 eredmény kívül esik a 0..9999 tartományon; %2 íródik be</translation>
     </message>
     <message>
-        <location line="+413"/>
+        <location line="+418"/>
         <source>subroutines nest deeper than %1 levels; the call is skipped</source>
         <translation>a szubrutinok %1 szintnél mélyebben ágyazódnak egymásba; a hívás elmarad</translation>
     </message>

@@ -1019,13 +1019,13 @@ Editor di schemi ladder e liste istruzioni per %2.</translation>
         <translation>S&amp;ostituisci operando...</translation>
     </message>
     <message>
-        <location line="+4"/>
+        <location line="+5"/>
         <source>Import Symbols</source>
         <translation>Importa simboli</translation>
     </message>
     <message>
-        <location line="+1"/>
-        <location filename="../app/gui/main_window_tools.cpp" line="+225"/>
+        <location line="+0"/>
+        <location filename="../app/gui/main_window_tools.cpp" line="+224"/>
         <source>CSV files (*.csv)</source>
         <translation>File CSV (*.csv)</translation>
     </message>
@@ -1322,17 +1322,17 @@ Editor di schemi ladder e liste istruzioni per %2.</translation>
         <translation>%1 esiste già. Sostituirlo?</translation>
     </message>
     <message>
-        <location line="+18"/>
+        <location line="+14"/>
         <source>Save As</source>
         <translation>Salva con nome</translation>
     </message>
     <message>
-        <location line="+1"/>
+        <location line="+2"/>
         <source>Rung Studio projects (*.rung)</source>
         <translation>Progetti Rung Studio (*.rung)</translation>
     </message>
     <message>
-        <location line="+11"/>
+        <location line="+10"/>
         <source>Import Instruction List</source>
         <translation>Importa lista istruzioni</translation>
     </message>
@@ -1361,7 +1361,7 @@ Editor di schemi ladder e liste istruzioni per %2.</translation>
         <translation>Impossibile esportare</translation>
     </message>
     <message>
-        <location line="-197"/>
+        <location line="-193"/>
         <source>%1, line %2, column %3: %4</source>
         <translation>%1, riga %2, colonna %3: %4</translation>
     </message>
@@ -1371,7 +1371,7 @@ Editor di schemi ladder e liste istruzioni per %2.</translation>
         <translation>Progetti Rung Studio (*.rung);;Liste istruzioni (*.il *.txt);;Testi ladder (*.ladder)</translation>
     </message>
     <message>
-        <location line="+77"/>
+        <location line="+73"/>
         <source>Export Ladder</source>
         <translation>Esporta schema ladder</translation>
     </message>
@@ -2108,16 +2108,6 @@ Codice di uscita di read e write: 0 fatto, 1 il PLC non ha risposto o ha rifiuta
     </message>
     <message>
         <location line="+1"/>
-        <source>Block stack (ANB/ORB):</source>
-        <translation>Stack dei blocchi (ANB/ORB):</translation>
-    </message>
-    <message>
-        <location line="+1"/>
-        <source>MPS stack:</source>
-        <translation>Stack MPS:</translation>
-    </message>
-    <message>
-        <location line="+1"/>
         <source>Step Instruction</source>
         <translation>Passo di una istruzione</translation>
     </message>
@@ -2162,7 +2152,17 @@ Codice di uscita di read e write: 0 fatto, 1 il PLC non ha risposto o ha rifiuta
         <translation>Rimuovi tutti</translation>
     </message>
     <message>
-        <location line="+30"/>
+        <location line="+29"/>
+        <source>Block stack (%1 / %2):</source>
+        <translation>Stack dei blocchi (%1 / %2):</translation>
+    </message>
+    <message>
+        <location line="+3"/>
+        <source>%1 stack:</source>
+        <translation>Stack %1:</translation>
+    </message>
+    <message>
+        <location line="+11"/>
         <source>Not stopped inside a scan. Step Instruction starts a scan and stops before its first instruction; a breakpoint stops a running scan.</source>
         <translation>Non fermo dentro una scansione. Passo di una istruzione avvia una scansione e si ferma prima della sua prima istruzione; un punto di interruzione ferma una scansione in corso.</translation>
     </message>
@@ -7308,7 +7308,7 @@ Valutazione: %4 µs (%5..%6)</translation>
         <translation>il risultato %1 è fuori da 0..9999; viene scritto %2</translation>
     </message>
     <message>
-        <location line="+413"/>
+        <location line="+418"/>
         <source>subroutines nest deeper than %1 levels; the call is skipped</source>
         <translation>le subroutine sono annidate oltre %1 livelli; la chiamata non viene eseguita</translation>
     </message>

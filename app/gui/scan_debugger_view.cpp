@@ -135,8 +135,6 @@ ScanDebuggerView::ScanDebuggerView(SimulationController *simulation, editor::Doc
 
 void ScanDebuggerView::retranslate() {
     m_resultCaption->setText(tr("Logic result:"));
-    m_blocksCaption->setText(tr("Block stack (ANB/ORB):"));
-    m_stackCaption->setText(tr("MPS stack:"));
     m_step->setText(tr("Step Instruction"));
     m_finish->setText(tr("Finish Scan"));
     m_continue->setText(tr("Continue"));
@@ -166,6 +164,19 @@ QStringList ScanDebuggerView::memoryStack() const {
 }
 
 void ScanDebuggerView::refresh() {
+    // The stacks in the family's words: a CPM1 user reads AND LD / OR LD, and only the
+    // Vigor has a branch stack (MPS); the others branch through TR bits or none.
+    const model::Target &target = m_document->target();
+    const auto mnemonic = [&target](model::Op op) {
+        const model::InstructionSpec *spec = target.findInstruction(op);
+        return spec ? spec->mnemonic : QString();
+    };
+    m_blocksCaption->setText(tr("Block stack (%1 / %2):")
+                                 .arg(mnemonic(model::Op::AndBlock), mnemonic(model::Op::OrBlock)));
+    const QString push = mnemonic(model::Op::Push);
+    m_stackCaption->setText(tr("%1 stack:").arg(push));
+    m_stackCaption->setVisible(!push.isEmpty());
+    m_stack->setVisible(!push.isEmpty());
     simulator::SimulatorSession *session = m_simulation->session();
     const auto snapshot = session ? session->snapshot() : nullptr;
     const bool inside = snapshot && snapshot->pause.has_value();

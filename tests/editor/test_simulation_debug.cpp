@@ -21,6 +21,7 @@
 #include <QApplication>
 #include <QComboBox>
 #include <QDialogButtonBox>
+#include <QLabel>
 #include <QLineEdit>
 #include <QPushButton>
 #include <QSignalSpy>
@@ -437,4 +438,34 @@ TEST_F(Debugging, TheDockRunsScansAndForASimulatedTime) {
     panel->periodBox()->setValue(5);
     EXPECT_EQ(sim()->periodMs(), 5);
     sim()->setPeriodMs(10);
+}
+
+// The Scan Debugger names the stacks as the family writes them: ANB / ORB and MPS on a Vigor;
+// AND LD / OR LD on a CPM1, which has no branch stack (it branches through TR bits) to show.
+TEST_F(Debugging, TheStacksAreNamedInTheFamilysWords) {
+    app::ScanDebuggerView *debugger = window.scanDebugger();
+    ASSERT_NE(debugger, nullptr);
+    const auto captions = [debugger] {
+        QStringList texts;
+        for (const QLabel *label : debugger->findChildren<QLabel *>())
+            if (!label->isHidden())
+                texts << label->text();
+        return texts;
+    };
+    auto *branchStack = debugger->findChild<QWidget *>(QStringLiteral("debuggerMpsStack"));
+    ASSERT_NE(branchStack, nullptr);
+    load(kBlocks);
+    debugger->refresh();
+    EXPECT_TRUE(captions().contains(QStringLiteral("Block stack (ANB / ORB):")))
+        << captions().join(u'|').toStdString();
+    EXPECT_TRUE(captions().contains(QStringLiteral("MPS stack:")))
+        << captions().join(u'|').toStdString();
+    EXPECT_FALSE(branchStack->isHidden());
+    window.newProject(model::Target::get(model::Family::Cpm1), QString());
+    debugger->refresh();
+    EXPECT_TRUE(captions().contains(QStringLiteral("Block stack (AND LD / OR LD):")))
+        << captions().join(u'|').toStdString();
+    EXPECT_FALSE(captions().join(u'|').contains(QStringLiteral("MPS")))
+        << captions().join(u'|').toStdString();
+    EXPECT_TRUE(branchStack->isHidden());
 }
