@@ -7003,9 +7003,9 @@ Kiértékelés: %4 µs (%5..%6)</translation>
         <translation>Omron Host Link (C mód)</translation>
     </message>
     <message>
-        <location filename="../model/target/target_pl110_maps.cpp" line="+22"/>
-        <source>PL110 MODBUS RTU slave</source>
-        <translation>PL110 MODBUS RTU szolga</translation>
+        <location filename="../model/target/target_pl110_maps.cpp" line="+23"/>
+        <source>PL110 MODBUS slave</source>
+        <translation>PL110 MODBUS szolga</translation>
     </message>
     <message>
         <location filename="../model/target/target_vigor_maps.cpp" line="+15"/>

@@ -7018,9 +7018,9 @@ Valutazione: %4 µs (%5..%6)</translation>
         <translation>Omron Host Link (modo C)</translation>
     </message>
     <message>
-        <location filename="../model/target/target_pl110_maps.cpp" line="+22"/>
-        <source>PL110 MODBUS RTU slave</source>
-        <translation>PL110 slave MODBUS RTU</translation>
+        <location filename="../model/target/target_pl110_maps.cpp" line="+23"/>
+        <source>PL110 MODBUS slave</source>
+        <translation>PL110 slave MODBUS</translation>
     </message>
     <message>
         <location filename="../model/target/target_vigor_maps.cpp" line="+15"/>

@@ -366,5 +366,32 @@ TEST(CliServe, TcpPrintsTheAddressAndSigintStopsIt) {
     EXPECT_EQ(serve.exitCode(), 0);
 }
 
+// A PL110 served over TCP calls its map a MODBUS slave, not an RTU one: the frames are TCP's.
+TEST(CliServe, APl110OverTcpIsNotCalledAnRtuSlave) {
+    QTemporaryDir dir;
+    const QString file = dir.filePath(QStringLiteral("plc.il"));
+    {
+        QFile f(file);
+        ASSERT_TRUE(f.open(QIODevice::WriteOnly));
+        f.write("; target: pl110\nLD I1\nOUT Q1\nEND\n");
+    }
+    QProcess serve;
+    serve.start(QStringLiteral(RUNG_CLI_PATH),
+                {QStringLiteral("serve"), file, QStringLiteral("--protocol"),
+                 QStringLiteral("modbus-tcp"), QStringLiteral("--tcp"),
+                 QStringLiteral("127.0.0.1:0")});
+    ASSERT_TRUE(serve.waitForStarted(5000));
+    const QDeadlineTimer deadline(15000);
+    while (!serve.canReadLine() && !deadline.hasExpired() && serve.state() == QProcess::Running)
+        serve.waitForReadyRead(100);
+    ASSERT_TRUE(QString::fromUtf8(serve.readLine()).startsWith(QLatin1String("127.0.0.1:")));
+    ::kill(pid_t(serve.processId()), SIGINT);
+    ASSERT_TRUE(serve.waitForFinished(5000));
+    const QString err = QString::fromUtf8(serve.readAllStandardError());
+    EXPECT_TRUE(err.contains(QStringLiteral("PL110 MODBUS slave, modbus-tcp")))
+        << err.toStdString();
+    EXPECT_FALSE(err.contains(QStringLiteral("RTU"))) << err.toStdString();
+}
+
 } // namespace
 } // namespace rung::test
