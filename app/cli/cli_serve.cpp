@@ -3,6 +3,8 @@
 #include "cli_load_program.h"
 
 #include "app/virtual_plc/virtual_plc.h"
+#include "comms/driver/connection.h"
+#include "comms/driver/protocol_driver.h"
 #include "comms/transport/pty_transport.h"
 #include "comms/transport/serial_transport.h"
 
@@ -30,49 +32,6 @@ QString usage() {
                   "[--station N] [--baud B] [--frame 8N1|7E1|7E2|...] [--period MS] "
                   "[--fault bad-checksum|silent|wrong-station|garbage|truncated|split]");
 }
-
-struct ProtocolChoice {
-    const char *name;
-    model::ProtocolId id;
-    comms::modbus::Framing framing;
-    int station;      // the default station / unit
-    int firstStation; // the range the protocol numbers stations in
-    int lastStation;
-    SerialSettings line; // the PLC's default line (protocols.md)
-};
-
-// protocols.md: Vigor CP1 19200 7E1, station 0..255 (CP2); Modbus 1..247, PL110 19200 8N1;
-// Host Link 9600 7E2, units 00..31.
-const ProtocolChoice kProtocols[] = {
-    {"vigor",
-     model::ProtocolId::VigorLink,
-     comms::modbus::Framing::Rtu,
-     0,
-     0,
-     255,
-     {19200, 7, SerialSettings::Parity::Even, 1, SerialSettings::Flow::None}},
-    {"modbus",
-     model::ProtocolId::Modbus,
-     comms::modbus::Framing::Rtu,
-     1,
-     1,
-     247,
-     {19200, 8, SerialSettings::Parity::None, 1, SerialSettings::Flow::None}},
-    {"modbus-tcp",
-     model::ProtocolId::Modbus,
-     comms::modbus::Framing::Tcp,
-     1,
-     1,
-     247,
-     {19200, 8, SerialSettings::Parity::None, 1, SerialSettings::Flow::None}},
-    {"hostlink",
-     model::ProtocolId::HostLink,
-     comms::modbus::Framing::Rtu,
-     0,
-     0,
-     31,
-     {9600, 7, SerialSettings::Parity::Even, 2, SerialSettings::Flow::None}},
-};
 
 // What ended the serving: a signal, or the line failing.
 struct Ending {
@@ -142,18 +101,20 @@ int runServeCommand(const QStringList &args, QTextStream &out, QTextStream &err)
     }
     if (program.file.isEmpty())
         return fail(Tr::tr("no FILE given"));
-    const ProtocolChoice *choice = nullptr;
-    for (const ProtocolChoice &p : kProtocols)
-        if (protocolName == QLatin1String(p.name))
-            choice = &p;
-    if (!choice)
+    // One table of the protocols' line defaults and stations, the connection panel's too.
+    comms::ProtocolKind kind{};
+    if (!comms::parseProtocolKind(protocolName, &kind))
         return fail(protocolName.isEmpty()
                         ? Tr::tr("--protocol is required")
                         : Tr::tr("unknown protocol %1 (vigor, modbus, modbus-tcp, hostlink)")
                               .arg(protocolName));
+    const comms::ConnectionSettings defaults = comms::defaultSettings(kind);
+    const comms::StationRange stations = comms::stationRange(kind);
+    const auto framing = kind == comms::ProtocolKind::ModbusTcp ? comms::modbus::Framing::Tcp
+                                                                : comms::modbus::Framing::Rtu;
     if (int(pty) + int(!portName.isEmpty()) + int(!tcp.isEmpty()) != 1)
         return fail(Tr::tr("give one of --pty, --port NAME and --tcp HOST:PORT"));
-    if (choice->framing == comms::modbus::Framing::Tcp && tcp.isEmpty())
+    if (framing == comms::modbus::Framing::Tcp && tcp.isEmpty())
         return fail(Tr::tr("--protocol modbus-tcp is served over --tcp HOST:PORT"));
     QHostAddress host;
     quint16 tcpPort = 0;
@@ -171,21 +132,21 @@ int runServeCommand(const QStringList &args, QTextStream &out, QTextStream &err)
         tcpPort = quint16(port);
     }
     comms::slave::SlaveOptions slave;
-    slave.protocol = choice->id;
-    slave.framing = choice->framing;
-    slave.line = choice->line;
+    slave.protocol = comms::protocolIdOf(kind);
+    slave.framing = framing;
+    slave.line = defaults.serial;
     if (baud > 0)
         slave.line.baud = baud;
     if (!format.isEmpty() && !comms::parseFrameFormat(format, &slave.line))
         return fail(Tr::tr("--frame needs data bits, parity and stop bits, e.g. 8N1 or 7E2, "
                            "not %1")
                         .arg(format));
-    slave.station = station >= 0 ? station : choice->station;
-    if (slave.station < choice->firstStation || slave.station > choice->lastStation)
+    slave.station = station >= 0 ? station : defaults.station;
+    if (slave.station < stations.first || slave.station > stations.last)
         return fail(Tr::tr("--station %1 is outside %2..%3, the stations of %4")
                         .arg(slave.station)
-                        .arg(choice->firstStation)
-                        .arg(choice->lastStation)
+                        .arg(stations.first)
+                        .arg(stations.last)
                         .arg(protocolName));
     if (!faultName.isEmpty()) {
         const auto fault = comms::slave::faultFromName(faultName);
@@ -198,12 +159,11 @@ int runServeCommand(const QStringList &args, QTextStream &out, QTextStream &err)
     LoadedProgram loaded;
     if (const int status = loadProgram(program, &loaded, err); status != 0)
         return status;
-    const model::ProtocolMap *map = model::findProtocolMap(*loaded.target, choice->id);
+    const model::ProtocolMap *map = model::findProtocolMap(*loaded.target, slave.protocol);
     if (!map) {
         QStringList spoken;
-        for (const ProtocolChoice &p : kProtocols)
-            if (model::findProtocolMap(*loaded.target, p.id))
-                spoken << QLatin1String(p.name);
+        for (const comms::ProtocolKind k : comms::protocolsOf(*loaded.target))
+            spoken << comms::protocolCommandName(k);
         err << (spoken.isEmpty() ? Tr::tr("%1 has no published protocol to serve (protocols.md)")
                                        .arg(loaded.target->displayName)
                                  : Tr::tr("%1 does not speak %2; it speaks %3")

@@ -67,20 +67,46 @@ std::unique_ptr<Transport> makePortTransport(const QString &port, const SerialSe
     return std::make_unique<SerialTransport>(port, line);
 }
 
+namespace {
+
+// The command line's names (rungstudio-cli read/write/serve --protocol).
+const struct {
+    const char *name;
+    ProtocolKind kind;
+} kCommandNames[] = {{"vigor", ProtocolKind::VigorLink},
+                     {"modbus", ProtocolKind::ModbusRtu},
+                     {"modbus-tcp", ProtocolKind::ModbusTcp},
+                     {"hostlink", ProtocolKind::HostLink}};
+
+} // namespace
+
 bool parseProtocolKind(QStringView name, ProtocolKind *kind) {
-    const struct {
-        const char *name;
-        ProtocolKind kind;
-    } names[] = {{"vigor", ProtocolKind::VigorLink},
-                 {"modbus", ProtocolKind::ModbusRtu},
-                 {"modbus-tcp", ProtocolKind::ModbusTcp},
-                 {"hostlink", ProtocolKind::HostLink}};
-    for (const auto &n : names)
+    for (const auto &n : kCommandNames)
         if (name == QLatin1String(n.name)) {
             *kind = n.kind;
             return true;
         }
     return false;
+}
+
+QString protocolCommandName(ProtocolKind kind) {
+    for (const auto &n : kCommandNames)
+        if (n.kind == kind)
+            return QLatin1String(n.name);
+    return {};
+}
+
+StationRange stationRange(ProtocolKind protocol) {
+    switch (protocol) {
+    case ProtocolKind::VigorLink: // CP2 stations 0..255 (seed 001 B-5)
+        return {0, 255};
+    case ProtocolKind::HostLink: // units 00..31 (W353 Host Link)
+        return {0, 31};
+    case ProtocolKind::ModbusRtu: // 1..247; 0 is broadcast
+    case ProtocolKind::ModbusTcp:
+        return {1, 247};
+    }
+    return {0, 0};
 }
 
 } // namespace rung::comms

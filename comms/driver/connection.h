@@ -52,5 +52,14 @@ std::unique_ptr<Transport> makePortTransport(const QString &port, const SerialSe
 
 // "vigor", "modbus", "modbus-tcp", "hostlink" (the command line's names); false when unknown.
 bool parseProtocolKind(QStringView name, ProtocolKind *kind);
+// The command line's name of a protocol ("modbus-tcp").
+QString protocolCommandName(ProtocolKind kind);
+
+// The stations (units) a protocol numbers: Vigor 0..255, Modbus 1..247, Host Link 0..31.
+struct StationRange {
+    int first = 0;
+    int last = 0;
+};
+StationRange stationRange(ProtocolKind protocol);
 
 } // namespace rung::comms
