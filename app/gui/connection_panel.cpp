@@ -6,7 +6,10 @@
 
 #include "dialogs.h"
 
+#include "comms/driver/connection.h"
+#include "comms/driver/protocol_driver.h"
 #include "comms/transport/serial_transport.h"
+#include "model/target/protocol_map.h"
 #include "model/target/target.h"
 
 #include <QCheckBox>
@@ -153,7 +156,6 @@ void ConnectionPanel::build() {
 
     m_station = new QSpinBox;
     m_station->setObjectName(QStringLiteral("connectionStation"));
-    m_station->setRange(0, 247);
     m_timeout = new QSpinBox;
     m_timeout->setObjectName(QStringLiteral("connectionTimeout"));
     m_timeout->setRange(20, 30000);
@@ -412,6 +414,14 @@ void ConnectionPanel::setSettings(const comms::ConnectionSettings &s) {
     m_frame->setCurrentText(comms::frameFormatText(s.serial));
     m_host->setText(s.host);
     m_tcpPort->setValue(s.tcpPort);
+    // The stations the protocol numbers (Vigor 0..255, Modbus 1..247, Host Link 0..31); a
+    // PL110 answers 255 too, "any station" (seed 003 chapter 3).
+    comms::StationRange stations = comms::stationRange(s.protocol);
+    if (const model::ProtocolMap *map =
+            m_target ? model::findProtocolMap(*m_target, comms::protocolIdOf(s.protocol)) : nullptr;
+        map && map->anyStationUnit > stations.last)
+        stations.last = map->anyStationUnit;
+    m_station->setRange(stations.first, stations.last);
     m_station->setValue(s.station);
     m_timeout->setValue(s.link.timeoutMs);
     m_retries->setValue(s.link.retries);

@@ -23,6 +23,7 @@
 #include <QMenu>
 #include <QPlainTextEdit>
 #include <QSignalSpy>
+#include <QSpinBox>
 #include <QStatusBar>
 #include <QTabBar>
 #include <QTemporaryDir>
@@ -670,6 +671,23 @@ TEST(OnlinePanel, LineSettingsStartFromTheProtocolsDefaults) {
     EXPECT_EQ(vigor.protocol, comms::ProtocolKind::VigorLink);
     EXPECT_EQ(vigor.serial.baud, 19200);
     EXPECT_EQ(comms::frameFormatText(vigor.serial), QStringLiteral("7E1"));
+}
+
+// The station field takes the stations the protocol numbers, no more: Host Link units 0..31,
+// Vigor stations 0..255, Modbus 1..247 and the PL110's 255 for "any" (it was 0..247 for all).
+TEST(OnlinePanel, TheStationFieldTakesTheProtocolsStations) {
+    app::MainWindow window;
+    auto *station =
+        window.connectionPanel()->findChild<QSpinBox *>(QStringLiteral("connectionStation"));
+    ASSERT_NE(station, nullptr);
+    const auto range = [station] { return std::pair{station->minimum(), station->maximum()}; };
+    window.newProject(model::Target::get(model::Family::Cpm1), QString());
+    EXPECT_EQ(range(), (std::pair{0, 31}));
+    window.newProject(model::Target::get(model::Family::Vigor), QStringLiteral("VB"));
+    EXPECT_EQ(range(), (std::pair{0, 255}));
+    window.newProject(model::Target::get(model::Family::Pl110), QString());
+    EXPECT_EQ(window.connectionPanel()->settings().protocol, comms::ProtocolKind::ModbusRtu);
+    EXPECT_EQ(range(), (std::pair{1, 255}));
 }
 
 } // namespace
