@@ -77,6 +77,7 @@ void ConnectionPanel::build() {
     layout->addWidget(m_vpcNote);
 
     m_settingsBox = new QGroupBox;
+    m_settingsBox->setObjectName(QStringLiteral("connectionSettings"));
     auto *form = new QFormLayout(m_settingsBox);
     form->setFieldGrowthPolicy(QFormLayout::AllNonFixedFieldsGrow);
     // A narrow dock (a long Hungarian label) puts the label above its field.

@@ -329,7 +329,9 @@ void ConnectionPanel::updateState() {
     m_connect->setText(online ? tr("Disconnect") : tr("Connect"));
     m_connect->setEnabled(canConnect());
     m_testButton->setEnabled(canConnect() && !online && !m_test);
-    m_settingsBox->setEnabled(canConnect() && !online);
+    // A test runs on the settings it started with: changed under it, its answer would stand
+    // beside settings it never tried.
+    m_settingsBox->setEnabled(canConnect() && !online && !m_test);
     // Online the settings cannot change: the state names the port and the PLC, and the room
     // goes to the figures and the traffic.
     m_settingsBox->setVisible(!online);

@@ -523,8 +523,14 @@ TEST(OnlinePanel, TestConnectionOnASilentLineSaysSoWithinItsDeadline) {
     s.link.retries = 0;
     panel->setSettings(s);
     QSignalSpy result(panel, &app::ConnectionPanel::testFinished);
+    auto *settings = panel->findChild<QWidget *>(QStringLiteral("connectionSettings"));
+    ASSERT_NE(settings, nullptr);
+    EXPECT_TRUE(settings->isEnabled());
     ASSERT_TRUE(panel->testConnection());
+    // While it tests, the settings it tests cannot change under it.
+    EXPECT_FALSE(settings->isEnabled());
     ASSERT_TRUE(result.wait(kPatienceMs));
+    EXPECT_TRUE(settings->isEnabled());
     EXPECT_FALSE(result[0][0].toBool());
     EXPECT_TRUE(result[0][1].toString().startsWith(QStringLiteral("No answer")))
         << result[0][1].toString().toStdString();
