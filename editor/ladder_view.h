@@ -188,7 +188,8 @@ private:
     bool staleValues() const;
     std::pair<int, int> visibleRungs() const; // [first, last)
     void showMonitorMenu(const CellCursor &cell, QPoint globalPos);
-    QString liveHelp(const CellCursor &cell) const; // the tooltip's values
+    QString liveHelp(const CellCursor &cell) const;    // the tooltip's values
+    QString toolTipText(const CellCursor &cell) const; // elementHelp, then liveHelp
     // Tells the source the devices of the rungs on screen (an online source polls only those).
     void tellWatched();
 
@@ -199,7 +200,11 @@ private:
     bool m_namesFirst = false;
     QStringListModel *m_completions = nullptr;
     CellCursor m_dragFrom{-1, 0, 0}; // where the left button went down
-    QPointF m_pressAt;               // the viewport position of that press
+    // The tooltip this view shows, so that its values follow the snapshots while it is up.
+    CellCursor m_tipCell{-1, 0, 0};
+    QPoint m_tipAt;
+    QString m_tipText;
+    QPointF m_pressAt;     // the viewport position of that press
     QString m_pressDevice; // the device of the pressed cell: a drag out of the view carries it
     // How far the pressed cell moved on screen when the press moved the cursor (the spare row
     // follows the cursor's rung): later positions of the same gesture are shifted by it so

@@ -14,6 +14,7 @@
 #include <QContextMenuEvent>
 #include <QMenu>
 #include <QScrollBar>
+#include <QToolTip>
 
 #include <algorithm>
 
@@ -80,6 +81,14 @@ void LadderView::snapshotArrived() {
             viewport()->update();
         }
         return;
+    }
+    // A tooltip of this view that is still up shows the values as they are now, not as they
+    // were when it opened (another widget's tooltip is left alone).
+    if (!m_tipText.isEmpty() && QToolTip::isVisible() && QToolTip::text() == m_tipText) {
+        if (const QString text = toolTipText(m_tipCell); text != m_tipText && !text.isEmpty()) {
+            m_tipText = text;
+            QToolTip::showText(m_tipAt, text, viewport());
+        }
     }
     const ProgramFlow flow(m_document->ladder(), m_document->listing(), *snapshot);
     const bool stale = staleValues();

@@ -182,14 +182,22 @@ bool LadderView::viewportEvent(QEvent *event) {
     // Hovering an element shows its device with the symbol's name and comment.
     const auto *help = static_cast<QHelpEvent *>(event);
     const CellCursor cell = cellAt(help->pos());
-    QString text = elementHelp(cell);
-    if (const QString live = liveHelp(cell); !live.isEmpty())
-        text += (text.isEmpty() ? QString() : QStringLiteral("\n")) + live;
+    const QString text = toolTipText(cell);
+    m_tipCell = cell;
+    m_tipAt = help->globalPos();
+    m_tipText = text;
     if (text.isEmpty())
         QToolTip::hideText();
     else
         QToolTip::showText(help->globalPos(), text, viewport());
     return true;
+}
+
+QString LadderView::toolTipText(const CellCursor &cell) const {
+    QString text = elementHelp(cell);
+    if (const QString live = liveHelp(cell); !live.isEmpty())
+        text += (text.isEmpty() ? QString() : QStringLiteral("\n")) + live;
+    return text;
 }
 
 QString LadderView::elementHelp(const CellCursor &cell) const {

@@ -14,10 +14,12 @@
 
 #include <QApplication>
 #include <QDockWidget>
+#include <QHelpEvent>
 #include <QInputDialog>
 #include <QMenu>
 #include <QPaintEvent>
 #include <QTimer>
+#include <QToolTip>
 
 #include "tests/editor/fake_monitor_source.h"
 #include "tests/editor/window_fixture.h"
@@ -132,6 +134,31 @@ TEST_F(Overlay, ToggleAnInputAndTheCoilIsEnergisedAfterOneScan) {
     ASSERT_TRUE(until([&] {
         return pixel(coilCentre(0)) == editor::LadderPainter::energisedColor();
     })) << pixel(coilCentre(0)).name().toStdString();
+}
+
+// A tooltip left open over a coil follows the scans: its value is the one on screen now,
+// not the one of the moment it opened.
+TEST_F(Overlay, AnOpenTooltipFollowsTheValues) {
+    load("LD X0\nOUT Y0\nEND\n");
+    window.resize(1200, 700);
+    window.show();
+    ASSERT_TRUE(sim()->singleScan());
+    ASSERT_NE(waitFor([](const model::Snapshot &s) { return s.statistics.scans == 1; }), nullptr);
+    ASSERT_TRUE(until([&] { return view->overlay(0).rows == 1; }));
+    const QPoint centre = coilCentre(0);
+    QHelpEvent hover(QEvent::ToolTip, centre, view->viewport()->mapToGlobal(centre));
+    QApplication::sendEvent(view->viewport(), &hover);
+    ASSERT_TRUE(QToolTip::isVisible());
+    const QString before = QToolTip::text();
+    ASSERT_TRUE(before.contains(QStringLiteral("OFF"))) << before.toStdString();
+    sim()->session()->writeBit(at("X0"), true);
+    ASSERT_TRUE(sim()->singleScan());
+    ASSERT_NE(waitFor([](const model::Snapshot &s) { return s.statistics.scans == 2; }), nullptr);
+    EXPECT_TRUE(until([] {
+        return QToolTip::text().contains(QStringLiteral("ON")) &&
+               !QToolTip::text().contains(QStringLiteral("OFF"));
+    })) << QToolTip::text().toStdString();
+    QToolTip::hideText();
 }
 
 TEST_F(Overlay, ForceAndReleaseFromTheContextMenu) {
