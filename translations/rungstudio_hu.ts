@@ -4596,7 +4596,7 @@ Kiértékelés: %4 µs (%5..%6)</translation>
         <translation>%1: %2</translation>
     </message>
     <message>
-        <location line="+104"/>
+        <location line="+126"/>
         <source>%1: both ends of a range must be devices of one kind (D0..D15)</source>
         <translation>%1: a tartomány mindkét vége azonos fajta operandus kell legyen (D0..D15)</translation>
     </message>
@@ -4616,7 +4616,7 @@ Kiértékelés: %4 µs (%5..%6)</translation>
         <translation>%1: a PLC-nek nincs %2 operandusa ebben a tartományban</translation>
     </message>
     <message>
-        <location line="-126"/>
+        <location line="-148"/>
         <source>%1: digits are expected</source>
         <translation>%1: számjegyek kellenek</translation>
     </message>
@@ -4749,7 +4749,12 @@ Kiértékelés: %4 µs (%5..%6)</translation>
         </translation>
     </message>
     <message>
-        <location line="+153"/>
+        <location line="+141"/>
+        <source>%1 cannot be written: the program only reads it (%2)</source>
+        <translation>%1 nem írható: a program csak olvassa (%2)</translation>
+    </message>
+    <message>
+        <location line="+56"/>
         <source>%1 is driven twice; a coil may be driven only once (the first is on line %2)</source>
         <translation>%1 kétszer van vezérelve; egy tekercs csak egyszer vezérelhető (az első a(z) %2. sorban)</translation>
     </message>
@@ -4891,12 +4896,7 @@ Kiértékelés: %4 µs (%5..%6)</translation>
         <translation>A(z) %1 beállított érték tartományon kívül esik</translation>
     </message>
     <message>
-        <location line="+21"/>
-        <source>%1 cannot be written: %2 are read-only</source>
-        <translation>%1 nem írható (%2: csak olvasható)</translation>
-    </message>
-    <message>
-        <location line="+7"/>
+        <location line="+28"/>
         <source>%1 cannot be written: the PLC drives it (%2)</source>
         <translation>%1 nem írható: a PLC vezérli (%2)</translation>
     </message>
@@ -4941,27 +4941,54 @@ Kiértékelés: %4 µs (%5..%6)</translation>
         <translation>a(z) %2 %1 értéke #0DNS legyen, D, N és S számjegy 0 és 3 között, nem %3</translation>
     </message>
     <message>
-        <location line="+18"/>
+        <location line="+81"/>
         <source>the %1 of %2 must be BCD (#0000..#9999), not %3</source>
         <translation>a(z) %2 %1 értéke BCD legyen (#0000..#9999), nem %3</translation>
     </message>
     <message>
-        <location line="+20"/>
+        <location line="-39"/>
         <source>%1 or %2</source>
         <translation>%1 vagy %2</translation>
     </message>
     <message>
-        <location line="+1"/>
+        <location line="-26"/>
+        <source>%1 uses %2..%3, which runs from %4 into %5: a block stays in one</source>
+        <translation>%1 a(z) %2..%3 tartományt használja, amely a(z) %4 területről átnyúlik a(z) %5 területre: egy blokk egy területen belül marad</translation>
+    </message>
+    <message>
+        <location line="+7"/>
+        <source>%1 uses %2..%3, but %4 does not exist</source>
+        <translation>%1 a(z) %2..%3 tartományt használja, de %4 nem létezik</translation>
+    </message>
+    <message>
+        <location line="+44"/>
+        <location line="+31"/>
         <source>the %1 of %2 must be %3, not %4</source>
         <translation>a(z) %2 %1 értéke %3 lehet, nem %4</translation>
     </message>
     <message>
-        <location line="+5"/>
+        <location line="-26"/>
+        <location line="+67"/>
+        <source>%1 takes its %2 from %3 only, not %4</source>
+        <translation>%1 a(z) %2 értékét csak ebből veszi: %3, nem ebből: %4</translation>
+    </message>
+    <message>
+        <location line="-37"/>
+        <source>the %1 of %2 must be at least %3, not %4</source>
+        <translation>a(z) %2 %1 értéke legalább %3 lehet, nem %4</translation>
+    </message>
+    <message>
+        <location line="+6"/>
         <source>the %1 of %2 must be from %3 to %4, not %5</source>
         <translation>a(z) %2 %1 értéke %3 és %4 között lehet, nem %5</translation>
     </message>
     <message>
-        <location line="+15"/>
+        <location line="+11"/>
+        <source>the %1 of %2 must be a number, not %3</source>
+        <translation>a(z) %2 %1 értéke szám kell legyen, nem %3</translation>
+    </message>
+    <message>
+        <location line="+11"/>
         <source>%1 moves whole words: %2 cannot be its %3</source>
         <translation>%1 egész szavakat mozgat: %2 nem lehet a(z) %3</translation>
     </message>
@@ -4971,7 +4998,7 @@ Kiértékelés: %4 µs (%5..%6)</translation>
         <translation>%1 a(z) %2 értékét konstansból vagy ebből veszi: %3, nem ebből: %4</translation>
     </message>
     <message>
-        <location line="+16"/>
+        <location line="+17"/>
         <source>%1 takes only %2..%3, not %4</source>
         <translation>a(z) %1 csak %2..%3 operandust fogad el, nem %4</translation>
     </message>
@@ -4981,17 +5008,12 @@ Kiértékelés: %4 µs (%5..%6)</translation>
         <translation>a(z) %2 %1 bitcímezhető csatorna legyen (IR, HR, LR), nem %3</translation>
     </message>
     <message>
-        <location line="+9"/>
-        <source>%1 %2 %3: the end word must be in the area of the start word and not before it</source>
-        <translation>%1 %2 %3: a záró szó a kezdő szó területén legyen, és ne előtte</translation>
+        <location line="+13"/>
+        <source>%1 %2 %3: the last device must be of the kind of the first and not before it</source>
+        <translation>%1 %2 %3: az utolsó operandus az elsővel azonos fajtájú legyen, és ne előzze meg</translation>
     </message>
     <message>
-        <location line="+11"/>
-        <source>%1 writes %2 words from %3, past the end of %4</source>
-        <translation>%1 %2 szót ír %3-tól, túl a(z) %4 végén</translation>
-    </message>
-    <message>
-        <location line="+14"/>
+        <location line="+41"/>
         <source>%1 cannot write %2: %3 are written only by %4</source>
         <translation>a(z) %1 nem írhatja a(z) %2 operandust: a(z) %3 csak a(z) %4 írhatja</translation>
     </message>
@@ -5014,7 +5036,7 @@ Kiértékelés: %4 µs (%5..%6)</translation>
 <context>
     <name>rung::model::Convert</name>
     <message>
-        <location filename="../model/convert/convert_to_ladder.cpp" line="+201"/>
+        <location filename="../model/convert/convert_to_ladder.cpp" line="+216"/>
         <source>%1 joins the condition of a branch point in parallel with another block; the ladder cannot draw this: repeat the shared contacts in this branch instead</source>
         <translation>%1 egy elágazási pont feltételét párhuzamosan köti egy másik blokkal; ezt a létradiagram nem tudja megrajzolni: ismételje meg a közös érintkezőket ebben az ágban</translation>
     </message>
@@ -6034,14 +6056,14 @@ Kiértékelés: %4 µs (%5..%6)</translation>
     </message>
     <message>
         <location line="+3"/>
-        <location filename="../model/target/target_pl110.cpp" line="+116"/>
+        <location filename="../model/target/target_pl110.cpp" line="+128"/>
         <location filename="../model/target/target_vigor.cpp" line="-1"/>
         <location filename="../model/target/target_vpc.cpp" line="+5"/>
         <source>End of the program</source>
         <translation>A program vége</translation>
     </message>
     <message>
-        <location filename="../model/target/target_pl110.cpp" line="-311"/>
+        <location filename="../model/target/target_pl110.cpp" line="-323"/>
         <source>IF contact: ON while S1 ? S2 is true</source>
         <translation>IF érintkező: BE, amíg S1 ? S2 igaz</translation>
     </message>
@@ -6292,7 +6314,12 @@ Kiértékelés: %4 µs (%5..%6)</translation>
         <translation>Lefelé számláló PV-től: UP, DOWN és RESET (PV betöltése) bemenetek; C BE 0-nál</translation>
     </message>
     <message>
-        <location line="+10"/>
+        <location line="+13"/>
+        <source>operator</source>
+        <translation>műveleti jel</translation>
+    </message>
+    <message>
+        <location line="+2"/>
         <source>Math formula: D = S1 op S2, op one of + - * / | &amp; ^ &lt;&lt; &gt;&gt;</source>
         <translation>Matematikai képlet: D = S1 op S2, op a következők egyike: + - * / | &amp; ^ &lt;&lt; &gt;&gt;</translation>
     </message>
@@ -6302,7 +6329,15 @@ Kiértékelés: %4 µs (%5..%6)</translation>
         <translation>Érték vagy szó mozgatása D-be</translation>
     </message>
     <message>
-        <location line="+6"/>
+        <location line="+11"/>
+        <location filename="../model/target/target_vigor.cpp" line="+161"/>
+        <location line="+61"/>
+        <location line="+51"/>
+        <source>number of words</source>
+        <translation>szavak száma</translation>
+    </message>
+    <message>
+        <location line="+2"/>
         <source>Move n words from S (or the value S) to D</source>
         <translation>n szó mozgatása S-ből (vagy az S érték) D-be</translation>
     </message>
@@ -6387,7 +6422,7 @@ Kiértékelés: %4 µs (%5..%6)</translation>
         <translation>Kijelzőparaméter elhelyezése</translation>
     </message>
     <message>
-        <location filename="../model/target/target_vigor.cpp" line="-156"/>
+        <location filename="../model/target/target_vigor.cpp" line="-429"/>
         <source>Compare contact: ON while S1 ? S2</source>
         <translation>Összehasonlító érintkező: BE, amíg S1 ? S2</translation>
     </message>
@@ -6671,7 +6706,12 @@ Kiértékelés: %4 µs (%5..%6)</translation>
         <translation>Bekapcsolás-késleltető időzítő: T0..T199 100 ms-os, T200..T245 10 ms-os egységekben; T246..T249 1 ms-os, T250..T255 100 ms-os összegző (RST nullázza)</translation>
     </message>
     <message>
-        <location line="+94"/>
+        <location line="+119"/>
+        <source>first input or output</source>
+        <translation>első bemenet vagy kimenet</translation>
+    </message>
+    <message>
+        <location line="+6"/>
         <source>Convert n ASCII characters from S to hexadecimal in D</source>
         <translation>n ASCII karakter átalakítása S-től hexadecimálissá D-be</translation>
     </message>
@@ -6681,12 +6721,32 @@ Kiértékelés: %4 µs (%5..%6)</translation>
         <translation>n hexadecimális számjegy átalakítása S-től ASCII-vé D-be</translation>
     </message>
     <message>
-        <location line="+5"/>
+        <location line="+10"/>
+        <source>first word to send</source>
+        <translation>első küldendő szó</translation>
+    </message>
+    <message>
+        <location line="+4"/>
+        <source>first word received</source>
+        <translation>első fogadott szó</translation>
+    </message>
+    <message>
+        <location line="+7"/>
         <source>Serial communication on CP2: send m words from S, receive n words into D</source>
         <translation>Soros kommunikáció a CP2-n: m szó küldése S-től, n szó fogadása D-be</translation>
     </message>
     <message>
-        <location line="+7"/>
+        <location line="+11"/>
+        <source>table</source>
+        <translation>táblázat</translation>
+    </message>
+    <message>
+        <location line="+5"/>
+        <source>working area</source>
+        <translation>munkaterület</translation>
+    </message>
+    <message>
+        <location line="+2"/>
         <source>Easy Link between PLCs: table from S1, working area S2</source>
         <translation>Easy Link PLC-k között: táblázat S1-től, munkaterület S2</translation>
     </message>
@@ -6711,7 +6771,7 @@ Kiértékelés: %4 µs (%5..%6)</translation>
         <translation>S m2 számjegyének mozgatása az m1. számjegytől D-be az n. számjegytől</translation>
     </message>
     <message>
-        <location line="-119"/>
+        <location line="-177"/>
         <source>Counter: counts rising edges, reset with RST</source>
         <translation>Számláló: a felfutó éleket számolja, törlés RST-vel</translation>
     </message>
@@ -6731,17 +6791,17 @@ Kiértékelés: %4 µs (%5..%6)</translation>
         <translation>S mozgatása D-be</translation>
     </message>
     <message>
-        <location line="+6"/>
+        <location line="+12"/>
         <source>Move n words from S to D</source>
         <translation>n szó mozgatása S-ből D-be</translation>
     </message>
     <message>
-        <location line="+4"/>
+        <location line="+7"/>
         <source>Compare S1 with S2: D, D+1, D+2 = &gt;, =, &lt;</source>
         <translation>S1 összehasonlítása S2-vel: D, D+1, D+2 = &gt;, =, &lt;</translation>
     </message>
     <message>
-        <location line="+3"/>
+        <location line="+6"/>
         <source>Reset every device from D1 to D2</source>
         <translation>Minden operandus törlése D1-től D2-ig</translation>
     </message>
@@ -6756,7 +6816,7 @@ Kiértékelés: %4 µs (%5..%6)</translation>
         <translation>D = S1 - S2</translation>
     </message>
     <message>
-        <location line="+3"/>
+        <location line="+6"/>
         <source>D, D+1 = S1 x S2 (32-bit product)</source>
         <translation>D, D+1 = S1 x S2 (32 bites szorzat)</translation>
     </message>
@@ -6806,7 +6866,7 @@ Kiértékelés: %4 µs (%5..%6)</translation>
         <translation>D = az S BCD számjegyek értéke</translation>
     </message>
     <message>
-        <location line="+8"/>
+        <location line="+17"/>
         <source>Read n words of special module m1, from m2</source>
         <translation>n szó olvasása az m1 speciális modul m2 címétől</translation>
     </message>
@@ -6821,7 +6881,7 @@ Kiértékelés: %4 µs (%5..%6)</translation>
         <translation>n bájt összege és paritásellenőrzése</translation>
     </message>
     <message>
-        <location line="+3"/>
+        <location line="+10"/>
         <source>Refresh n inputs or outputs now</source>
         <translation>n bemenet vagy kimenet azonnali frissítése</translation>
     </message>
@@ -7060,12 +7120,13 @@ Kiértékelés: %4 µs (%5..%6)</translation>
         <translation>%1: hiányzik a(z) %2. operandus</translation>
     </message>
     <message>
-        <location line="+17"/>
+        <location filename="../simulator/compile_steps.cpp" line="+164"/>
+        <location filename="../simulator/compiler_detail.h" line="+17"/>
         <source>%1 is not a bit device</source>
         <translation>%1 nem bit típusú operandus</translation>
     </message>
     <message>
-        <location line="+23"/>
+        <location filename="../simulator/compiler_detail.h" line="+23"/>
         <source>constant %1 is out of range</source>
         <translation>a(z) %1 konstans tartományon kívül esik</translation>
     </message>
@@ -7107,7 +7168,7 @@ Kiértékelés: %4 µs (%5..%6)</translation>
         <translation>%1 előtt %2 nyitott blokk kell</translation>
     </message>
     <message>
-        <location filename="../simulator/compile_steps.cpp" line="+17"/>
+        <location filename="../simulator/compile_steps.cpp" line="-147"/>
         <source>more than %1 open blocks</source>
         <translation>több mint %1 nyitott blokk</translation>
     </message>
@@ -7122,32 +7183,22 @@ Kiértékelés: %4 µs (%5..%6)</translation>
         <translation>%1 nem számláló</translation>
     </message>
     <message>
-        <location line="+67"/>
-        <source>%1 needs three bit devices from %2</source>
-        <translation>%1 három bit típusú operandust igényel %2-tól</translation>
+        <location line="+138"/>
+        <source>the simulator has no operator %1</source>
+        <translation>a szimulátor nem ismeri ezt a műveleti jelet: %1</translation>
     </message>
     <message>
-        <location line="+17"/>
-        <source>%1 needs two devices of one kind, the first not after the second</source>
-        <translation>%1 két azonos fajtájú operandust igényel, az első nem lehet a második után</translation>
+        <location line="+46"/>
+        <source>%1 is not a number of words</source>
+        <translation>%1 nem érvényes szószám</translation>
     </message>
     <message>
-        <location line="+48"/>
-        <source>unknown operator %1 (use + - * / | &amp; ^ &lt;&lt; &gt;&gt;)</source>
-        <translation>ismeretlen művelet: %1 (használható: + - * / | &amp; ^ &lt;&lt; &gt;&gt;)</translation>
-    </message>
-    <message>
-        <location line="+17"/>
+        <location line="-29"/>
         <source>%1 needs a bit: a bit device, or a word and a bit number 0..15</source>
         <translation>%1 egy bitet igényel: bit típusú operandust, vagy egy szót és egy 0..15 bitszámot</translation>
     </message>
     <message>
-        <location line="+27"/>
-        <source>%1 needs a count from 1 to %2</source>
-        <translation>%1 darabszáma 1 és %2 között lehet</translation>
-    </message>
-    <message>
-        <location line="+15"/>
+        <location line="+43"/>
         <source>the block of %1 words runs past the end of its area</source>
         <translation>a(z) %1 szavas blokk túlnyúlik a terület végén</translation>
     </message>
@@ -7172,12 +7223,13 @@ Kiértékelés: %4 µs (%5..%6)</translation>
         <translation>%1 nem törölhető</translation>
     </message>
     <message>
-        <location line="+5"/>
+        <location filename="../simulator/compile_steps.cpp" line="-112"/>
+        <location filename="../simulator/compiler.cpp" line="+5"/>
         <source>%1 is not a device</source>
         <translation>%1 nem operandus</translation>
     </message>
     <message>
-        <location line="+110"/>
+        <location filename="../simulator/compiler.cpp" line="+110"/>
         <source>the program has no target</source>
         <translation>a programnak nincs célrendszere</translation>
     </message>

@@ -4604,7 +4604,7 @@ Valutazione: %4 µs (%5..%6)</translation>
         <translation>%1: %2</translation>
     </message>
     <message>
-        <location line="+104"/>
+        <location line="+126"/>
         <source>%1: both ends of a range must be devices of one kind (D0..D15)</source>
         <translation>%1: entrambi gli estremi di un intervallo devono essere operandi dello stesso tipo (D0..D15)</translation>
     </message>
@@ -4624,7 +4624,7 @@ Valutazione: %4 µs (%5..%6)</translation>
         <translation>%1: il PLC non ha %2 in questo intervallo</translation>
     </message>
     <message>
-        <location line="-126"/>
+        <location line="-148"/>
         <source>%1: digits are expected</source>
         <translation>%1: sono attese delle cifre</translation>
     </message>
@@ -4759,7 +4759,12 @@ Valutazione: %4 µs (%5..%6)</translation>
         </translation>
     </message>
     <message>
-        <location line="+153"/>
+        <location line="+141"/>
+        <source>%1 cannot be written: the program only reads it (%2)</source>
+        <translation>%1 non può essere scritto: il programma lo legge soltanto (%2)</translation>
+    </message>
+    <message>
+        <location line="+56"/>
         <source>%1 is driven twice; a coil may be driven only once (the first is on line %2)</source>
         <translation>%1 è comandato due volte; una bobina può essere comandata una volta sola (il primo è alla riga %2)</translation>
     </message>
@@ -4901,12 +4906,7 @@ Valutazione: %4 µs (%5..%6)</translation>
         <translation>Il valore di preset %1 è fuori campo</translation>
     </message>
     <message>
-        <location line="+21"/>
-        <source>%1 cannot be written: %2 are read-only</source>
-        <translation>%1 non può essere scritto: area di sola lettura (%2)</translation>
-    </message>
-    <message>
-        <location line="+7"/>
+        <location line="+28"/>
         <source>%1 cannot be written: the PLC drives it (%2)</source>
         <translation>%1 non è scrivibile: lo gestisce il PLC (%2)</translation>
     </message>
@@ -4951,27 +4951,54 @@ Valutazione: %4 µs (%5..%6)</translation>
         <translation>il %1 di %2 deve essere #0DNS con le cifre D, N e S da 0 a 3, non %3</translation>
     </message>
     <message>
-        <location line="+18"/>
+        <location line="+81"/>
         <source>the %1 of %2 must be BCD (#0000..#9999), not %3</source>
         <translation>il %1 di %2 deve essere BCD (#0000..#9999), non %3</translation>
     </message>
     <message>
-        <location line="+20"/>
+        <location line="-39"/>
         <source>%1 or %2</source>
         <translation>%1 o %2</translation>
     </message>
     <message>
-        <location line="+1"/>
+        <location line="-26"/>
+        <source>%1 uses %2..%3, which runs from %4 into %5: a block stays in one</source>
+        <translation>%1 usa %2..%3, che passa da %4 a %5: un blocco resta in un&apos;area sola</translation>
+    </message>
+    <message>
+        <location line="+7"/>
+        <source>%1 uses %2..%3, but %4 does not exist</source>
+        <translation>%1 usa %2..%3, ma %4 non esiste</translation>
+    </message>
+    <message>
+        <location line="+44"/>
+        <location line="+31"/>
         <source>the %1 of %2 must be %3, not %4</source>
         <translation>il %1 di %2 deve essere %3, non %4</translation>
     </message>
     <message>
-        <location line="+5"/>
+        <location line="-26"/>
+        <location line="+67"/>
+        <source>%1 takes its %2 from %3 only, not %4</source>
+        <translation>%1 prende il suo %2 solo da %3, non da %4</translation>
+    </message>
+    <message>
+        <location line="-37"/>
+        <source>the %1 of %2 must be at least %3, not %4</source>
+        <translation>il %1 di %2 deve essere almeno %3, non %4</translation>
+    </message>
+    <message>
+        <location line="+6"/>
         <source>the %1 of %2 must be from %3 to %4, not %5</source>
         <translation>il %1 di %2 deve essere da %3 a %4, non %5</translation>
     </message>
     <message>
-        <location line="+15"/>
+        <location line="+11"/>
+        <source>the %1 of %2 must be a number, not %3</source>
+        <translation>il %1 di %2 deve essere un numero, non %3</translation>
+    </message>
+    <message>
+        <location line="+11"/>
         <source>%1 moves whole words: %2 cannot be its %3</source>
         <translation>%1 sposta word intere: %2 non può essere il suo %3</translation>
     </message>
@@ -4981,7 +5008,7 @@ Valutazione: %4 µs (%5..%6)</translation>
         <translation>%1 prende il suo %2 da una costante o da %3, non da %4</translation>
     </message>
     <message>
-        <location line="+16"/>
+        <location line="+17"/>
         <source>%1 takes only %2..%3, not %4</source>
         <translation>%1 accetta solo %2..%3, non %4</translation>
     </message>
@@ -4991,17 +5018,12 @@ Valutazione: %4 µs (%5..%6)</translation>
         <translation>il %1 di %2 deve essere un canale con bit (IR, HR, LR), non %3</translation>
     </message>
     <message>
-        <location line="+9"/>
-        <source>%1 %2 %3: the end word must be in the area of the start word and not before it</source>
-        <translation>%1 %2 %3: la word finale deve stare nell&apos;area della word iniziale e non prima di essa</translation>
+        <location line="+13"/>
+        <source>%1 %2 %3: the last device must be of the kind of the first and not before it</source>
+        <translation>%1 %2 %3: l&apos;ultimo operando deve essere dello stesso tipo del primo e non precederlo</translation>
     </message>
     <message>
-        <location line="+11"/>
-        <source>%1 writes %2 words from %3, past the end of %4</source>
-        <translation>%1 scrive %2 word da %3, oltre la fine di %4</translation>
-    </message>
-    <message>
-        <location line="+14"/>
+        <location line="+41"/>
         <source>%1 cannot write %2: %3 are written only by %4</source>
         <translation>%1 non può scrivere %2: %3 sono scritti solo da %4</translation>
     </message>
@@ -5024,7 +5046,7 @@ Valutazione: %4 µs (%5..%6)</translation>
 <context>
     <name>rung::model::Convert</name>
     <message>
-        <location filename="../model/convert/convert_to_ladder.cpp" line="+201"/>
+        <location filename="../model/convert/convert_to_ladder.cpp" line="+216"/>
         <source>%1 joins the condition of a branch point in parallel with another block; the ladder cannot draw this: repeat the shared contacts in this branch instead</source>
         <translation>%1 collega la condizione di un punto di diramazione in parallelo a un altro blocco; lo schema ladder non può disegnarlo: ripeti invece i contatti comuni in questo ramo</translation>
     </message>
@@ -6049,14 +6071,14 @@ Valutazione: %4 µs (%5..%6)</translation>
     </message>
     <message>
         <location line="+3"/>
-        <location filename="../model/target/target_pl110.cpp" line="+116"/>
+        <location filename="../model/target/target_pl110.cpp" line="+128"/>
         <location filename="../model/target/target_vigor.cpp" line="-1"/>
         <location filename="../model/target/target_vpc.cpp" line="+5"/>
         <source>End of the program</source>
         <translation>Fine del programma</translation>
     </message>
     <message>
-        <location filename="../model/target/target_pl110.cpp" line="-311"/>
+        <location filename="../model/target/target_pl110.cpp" line="-323"/>
         <source>IF contact: ON while S1 ? S2 is true</source>
         <translation>Contatto IF: ON mentre S1 ? S2 è vero</translation>
     </message>
@@ -6307,7 +6329,12 @@ Valutazione: %4 µs (%5..%6)</translation>
         <translation>Contatore all&apos;indietro da PV: ingressi UP, DOWN e RESET (carica PV); C ON a 0</translation>
     </message>
     <message>
-        <location line="+10"/>
+        <location line="+13"/>
+        <source>operator</source>
+        <translation>operatore</translation>
+    </message>
+    <message>
+        <location line="+2"/>
         <source>Math formula: D = S1 op S2, op one of + - * / | &amp; ^ &lt;&lt; &gt;&gt;</source>
         <translation>Formula matematica: D = S1 op S2, op uno tra + - * / | &amp; ^ &lt;&lt; &gt;&gt;</translation>
     </message>
@@ -6317,7 +6344,15 @@ Valutazione: %4 µs (%5..%6)</translation>
         <translation>Sposta un valore o una word in D</translation>
     </message>
     <message>
-        <location line="+6"/>
+        <location line="+11"/>
+        <location filename="../model/target/target_vigor.cpp" line="+161"/>
+        <location line="+61"/>
+        <location line="+51"/>
+        <source>number of words</source>
+        <translation>numero di word</translation>
+    </message>
+    <message>
+        <location line="+2"/>
         <source>Move n words from S (or the value S) to D</source>
         <translation>Sposta n word da S (o il valore S) a D</translation>
     </message>
@@ -6402,7 +6437,7 @@ Valutazione: %4 µs (%5..%6)</translation>
         <translation>Posiziona un parametro del display</translation>
     </message>
     <message>
-        <location filename="../model/target/target_vigor.cpp" line="-156"/>
+        <location filename="../model/target/target_vigor.cpp" line="-429"/>
         <source>Compare contact: ON while S1 ? S2</source>
         <translation>Contatto di confronto: ON mentre S1 ? S2</translation>
     </message>
@@ -6686,7 +6721,12 @@ Valutazione: %4 µs (%5..%6)</translation>
         <translation>Temporizzatore di ritardo all&apos;inserzione: T0..T199 in unità di 100 ms, T200..T245 di 10 ms; T246..T249 1 ms, T250..T255 100 ms a ritenzione (azzerati con RST)</translation>
     </message>
     <message>
-        <location line="+94"/>
+        <location line="+119"/>
+        <source>first input or output</source>
+        <translation>primo ingresso o uscita</translation>
+    </message>
+    <message>
+        <location line="+6"/>
         <source>Convert n ASCII characters from S to hexadecimal in D</source>
         <translation>Converte n caratteri ASCII da S in esadecimale in D</translation>
     </message>
@@ -6696,12 +6736,32 @@ Valutazione: %4 µs (%5..%6)</translation>
         <translation>Converte n cifre esadecimali da S in ASCII in D</translation>
     </message>
     <message>
-        <location line="+5"/>
+        <location line="+10"/>
+        <source>first word to send</source>
+        <translation>primo registro da inviare</translation>
+    </message>
+    <message>
+        <location line="+4"/>
+        <source>first word received</source>
+        <translation>primo registro ricevuto</translation>
+    </message>
+    <message>
+        <location line="+7"/>
         <source>Serial communication on CP2: send m words from S, receive n words into D</source>
         <translation>Comunicazione seriale su CP2: invia m word da S, riceve n word in D</translation>
     </message>
     <message>
-        <location line="+7"/>
+        <location line="+11"/>
+        <source>table</source>
+        <translation>inizio tabella</translation>
+    </message>
+    <message>
+        <location line="+5"/>
+        <source>working area</source>
+        <translation>blocco di lavoro</translation>
+    </message>
+    <message>
+        <location line="+2"/>
         <source>Easy Link between PLCs: table from S1, working area S2</source>
         <translation>Easy Link tra PLC: tabella da S1, area di lavoro S2</translation>
     </message>
@@ -6726,7 +6786,7 @@ Valutazione: %4 µs (%5..%6)</translation>
         <translation>Sposta m2 cifre di S dalla cifra m1 in D dalla cifra n</translation>
     </message>
     <message>
-        <location line="-119"/>
+        <location line="-177"/>
         <source>Counter: counts rising edges, reset with RST</source>
         <translation>Contatore: conta i fronti di salita, reset con RST</translation>
     </message>
@@ -6746,17 +6806,17 @@ Valutazione: %4 µs (%5..%6)</translation>
         <translation>Sposta S in D</translation>
     </message>
     <message>
-        <location line="+6"/>
+        <location line="+12"/>
         <source>Move n words from S to D</source>
         <translation>Sposta n word da S a D</translation>
     </message>
     <message>
-        <location line="+4"/>
+        <location line="+7"/>
         <source>Compare S1 with S2: D, D+1, D+2 = &gt;, =, &lt;</source>
         <translation>Confronta S1 con S2: D, D+1, D+2 = &gt;, =, &lt;</translation>
     </message>
     <message>
-        <location line="+3"/>
+        <location line="+6"/>
         <source>Reset every device from D1 to D2</source>
         <translation>Resetta tutti gli operandi da D1 a D2</translation>
     </message>
@@ -6771,7 +6831,7 @@ Valutazione: %4 µs (%5..%6)</translation>
         <translation>D = S1 - S2</translation>
     </message>
     <message>
-        <location line="+3"/>
+        <location line="+6"/>
         <source>D, D+1 = S1 x S2 (32-bit product)</source>
         <translation>D, D+1 = S1 x S2 (prodotto a 32 bit)</translation>
     </message>
@@ -6821,7 +6881,7 @@ Valutazione: %4 µs (%5..%6)</translation>
         <translation>D = il valore delle cifre BCD di S</translation>
     </message>
     <message>
-        <location line="+8"/>
+        <location line="+17"/>
         <source>Read n words of special module m1, from m2</source>
         <translation>Legge n word dal modulo speciale m1, da m2</translation>
     </message>
@@ -6836,7 +6896,7 @@ Valutazione: %4 µs (%5..%6)</translation>
         <translation>Somma e controllo di parità di n byte</translation>
     </message>
     <message>
-        <location line="+3"/>
+        <location line="+10"/>
         <source>Refresh n inputs or outputs now</source>
         <translation>Aggiorna subito n ingressi o uscite</translation>
     </message>
@@ -7075,12 +7135,13 @@ Valutazione: %4 µs (%5..%6)</translation>
         <translation>%1 richiede l&apos;operando %2</translation>
     </message>
     <message>
-        <location line="+17"/>
+        <location filename="../simulator/compile_steps.cpp" line="+164"/>
+        <location filename="../simulator/compiler_detail.h" line="+17"/>
         <source>%1 is not a bit device</source>
         <translation>%1 non è un operando a bit</translation>
     </message>
     <message>
-        <location line="+23"/>
+        <location filename="../simulator/compiler_detail.h" line="+23"/>
         <source>constant %1 is out of range</source>
         <translation>la costante %1 è fuori campo</translation>
     </message>
@@ -7122,7 +7183,7 @@ Valutazione: %4 µs (%5..%6)</translation>
         <translation>%1 richiede %2 blocchi aperti prima di sé</translation>
     </message>
     <message>
-        <location filename="../simulator/compile_steps.cpp" line="+17"/>
+        <location filename="../simulator/compile_steps.cpp" line="-147"/>
         <source>more than %1 open blocks</source>
         <translation>più di %1 blocchi aperti</translation>
     </message>
@@ -7137,32 +7198,22 @@ Valutazione: %4 µs (%5..%6)</translation>
         <translation>%1 non è un contatore</translation>
     </message>
     <message>
-        <location line="+67"/>
-        <source>%1 needs three bit devices from %2</source>
-        <translation>%1 richiede tre operandi a bit a partire da %2</translation>
+        <location line="+138"/>
+        <source>the simulator has no operator %1</source>
+        <translation>il simulatore non ha l&apos;operatore %1</translation>
     </message>
     <message>
-        <location line="+17"/>
-        <source>%1 needs two devices of one kind, the first not after the second</source>
-        <translation>%1 richiede due operandi dello stesso tipo, il primo non successivo al secondo</translation>
+        <location line="+46"/>
+        <source>%1 is not a number of words</source>
+        <translation>%1 non è un numero di word</translation>
     </message>
     <message>
-        <location line="+48"/>
-        <source>unknown operator %1 (use + - * / | &amp; ^ &lt;&lt; &gt;&gt;)</source>
-        <translation>operatore sconosciuto %1 (usare + - * / | &amp; ^ &lt;&lt; &gt;&gt;)</translation>
-    </message>
-    <message>
-        <location line="+17"/>
+        <location line="-29"/>
         <source>%1 needs a bit: a bit device, or a word and a bit number 0..15</source>
         <translation>%1 richiede un bit: un operando a bit, o una word e un numero di bit 0..15</translation>
     </message>
     <message>
-        <location line="+27"/>
-        <source>%1 needs a count from 1 to %2</source>
-        <translation>%1 richiede un numero da 1 a %2</translation>
-    </message>
-    <message>
-        <location line="+15"/>
+        <location line="+43"/>
         <source>the block of %1 words runs past the end of its area</source>
         <translation>il blocco di %1 word va oltre la fine della sua area</translation>
     </message>
@@ -7187,12 +7238,13 @@ Valutazione: %4 µs (%5..%6)</translation>
         <translation>%1 non può essere resettato</translation>
     </message>
     <message>
-        <location line="+5"/>
+        <location filename="../simulator/compile_steps.cpp" line="-112"/>
+        <location filename="../simulator/compiler.cpp" line="+5"/>
         <source>%1 is not a device</source>
         <translation>%1 non è un operando</translation>
     </message>
     <message>
-        <location line="+110"/>
+        <location filename="../simulator/compiler.cpp" line="+110"/>
         <source>the program has no target</source>
         <translation>il programma non ha una famiglia PLC</translation>
     </message>
