@@ -219,6 +219,17 @@ int Document::stepCount() const {
 
 void Document::replaceRungs(int first, int count, const std::vector<model::Rung> &rungs,
                             const QString &label) {
+    if (m_rungEditGuard && !m_rungEditGuard())
+        return;
+    pushRungs(first, count, rungs, label);
+}
+
+bool Document::stepChangesRungs(int index) const {
+    return dynamic_cast<const ReplaceRungsCommand *>(m_undo.command(index)) != nullptr;
+}
+
+void Document::pushRungs(int first, int count, const std::vector<model::Rung> &rungs,
+                         const QString &label) {
     const auto &all = m_project.program.rungs;
     first = std::clamp(first, 0, static_cast<int>(all.size()));
     count = std::clamp(count, 0, static_cast<int>(all.size()) - first);
@@ -348,13 +359,13 @@ bool Document::setListing(const QString &text, std::vector<model::Diagnostic> *e
         const auto at = std::min<std::size_t>(static_cast<std::size_t>(before) + h, rungs.size());
         rungs.insert(rungs.begin() + static_cast<std::ptrdiff_t>(at), *rung);
     }
-    if (ladder.ladder.rungs == m_project.program.rungs)
+    if (step == ListingStep::Check || ladder.ladder.rungs == m_project.program.rungs)
         return true;
     if (step == ListingStep::InPlace)
         applyRungs(0, static_cast<int>(m_project.program.rungs.size()), ladder.ladder.rungs);
     else
-        replaceRungs(0, static_cast<int>(m_project.program.rungs.size()), ladder.ladder.rungs,
-                     tr("Edit instruction list"));
+        pushRungs(0, static_cast<int>(m_project.program.rungs.size()), ladder.ladder.rungs,
+                  tr("Edit instruction list"));
     return true;
 }
 

@@ -10,6 +10,7 @@
 #include <QObject>
 #include <QUndoStack>
 
+#include <functional>
 #include <map>
 #include <tuple>
 
@@ -76,6 +77,13 @@ public:
     // symbol's name after two spaces ("X0  Start").
     QStringList knownDevices(bool withNames = false) const;
 
+    // Asked before each edit of the rungs that does not come from the list (the ladder's, a
+    // fix's): false leaves the program as it is and pushes no step. The main window asks the
+    // user there before an edit replaces a list typed with errors.
+    void setRungEditGuard(std::function<bool()> guard) { m_rungEditGuard = std::move(guard); }
+    // Whether the undo stack's step at this index changes the rungs (a symbol's does not).
+    bool stepChangesRungs(int index) const;
+
     // Edits, each one undo step with its label.
     void replaceRungs(int first, int count, const std::vector<model::Rung> &rungs,
                       const QString &label);
@@ -85,8 +93,9 @@ public:
     void setSymbols(const std::vector<model::Symbol> &symbols);
     void setWatchLists(const std::vector<model::WatchList> &lists, const QString &label);
     // How setListing changes the program: as an undo step of its own, or in place for an undo
-    // step that holds the change itself (a fix of the typed list, ListingLinesCommand).
-    enum class ListingStep { Own, InPlace };
+    // step that holds the change itself (a fix of the typed list, ListingLinesCommand), or not
+    // at all: Check only says whether the text would be taken (and its errors).
+    enum class ListingStep { Own, InPlace, Check };
     // Rebuilds the ladder from listing text; false (nothing changed) when the text has errors,
     // which land in *errors: the syntax errors, or when the text parses but cannot be drawn
     // every finding of the listing checks by its documented code (as `rungstudio-cli check`).
@@ -126,6 +135,8 @@ private:
     std::vector<model::Diagnostic> keepContacts(const std::vector<KeptContact> &kept,
                                                 model::ToLadderResult &ladder) const;
     void refresh();
+    void pushRungs(int first, int count, const std::vector<model::Rung> &rungs,
+                   const QString &label);
     // Keeps rung `index` for the placeholder line that stands for it; returns the line's key.
     QString heldRung(int index);
 
@@ -144,6 +155,7 @@ private:
     // line carries: text typed from an older list still finds its rung.
     std::map<QString, model::Rung> m_held;
     std::vector<model::Diagnostic> m_diagnostics;
+    std::function<bool()> m_rungEditGuard;
 };
 
 } // namespace rung::editor

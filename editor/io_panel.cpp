@@ -268,8 +268,12 @@ void IoPanel::addBlock(QLayout *strip, const QString &title,
                         QAction *forceOn = menu.addAction(tr("Force ON"));
                         QAction *forceOff = menu.addAction(tr("Force OFF"));
                         QAction *release = menu.addAction(tr("Release"));
-                        for (QAction *f : {forceOn, forceOff, release})
-                            f->setEnabled(m_source != nullptr);
+                        const QString noForce = m_source ? m_source->forceRefusal() : QString();
+                        for (QAction *f : {forceOn, forceOff, release}) {
+                            f->setEnabled(m_source != nullptr && noForce.isEmpty());
+                            f->setToolTip(noForce);
+                        }
+                        menu.setToolTipsVisible(true);
                         QAction *chosen = menu.exec(button->mapToGlobal(at));
                         if (chosen == sw || chosen == push) {
                             m_pushButtons[device] = chosen == push;

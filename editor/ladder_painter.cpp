@@ -49,17 +49,36 @@ double LadderMetrics::rungHeight(const model::Rung &rung) const {
     return commentBlock(rung) + lines * rowHeight + rungGap;
 }
 
+LadderMetrics::FontSizes LadderMetrics::fontSizes() const {
+    return {std::max(1, static_cast<int>(rowHeight * 0.24)),
+            std::max(1, static_cast<int>(rowHeight * 0.2)),
+            std::max(1, static_cast<int>(rowHeight * 0.26))};
+}
+
+double LadderMetrics::minReadableZoom() {
+    constexpr double full = LadderMetrics().rowHeight;
+    LadderMetrics m;
+    for (int row = 1; row < static_cast<int>(full); ++row) {
+        m.rowHeight = row; // the view rounds the zoomed row to whole pixels
+        const FontSizes f = m.fontSizes();
+        if (f.label >= kMinReadableLabel && f.small >= kMinReadableSmall)
+            return row / full;
+    }
+    return 1.0;
+}
+
 LadderPainter::LadderPainter(const model::Project &project, const LadderMetrics &metrics)
     : m_project(project)
     , m_m(metrics)
     , m_pen(std::max(1.0, std::round(1.6 * metrics.rowHeight / 52.0))) {
     m_font = QFont(QStringLiteral("DejaVu Sans"));
-    m_font.setPixelSize(static_cast<int>(metrics.rowHeight * 0.24));
+    const LadderMetrics::FontSizes sizes = metrics.fontSizes();
+    m_font.setPixelSize(sizes.label);
     m_small = m_font;
-    m_small.setPixelSize(static_cast<int>(metrics.rowHeight * 0.2));
+    m_small.setPixelSize(sizes.small);
     m_mark = m_font;
     m_mark.setBold(true);
-    m_mark.setPixelSize(std::max(1, static_cast<int>(metrics.rowHeight * 0.26)));
+    m_mark.setPixelSize(sizes.mark);
 }
 
 double LadderPainter::snap(double v, double width) {

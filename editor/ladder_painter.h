@@ -45,6 +45,20 @@ struct LadderMetrics {
         return blocks(rung) > 1 ? rung.rows + 1 : rung.rows;
     }
     double commentBlock(const model::Rung &rung) const;
+    // The pixel sizes of the drawing's text at this row height: the device labels, the small
+    // text (symbol names, comments, rung numbers, step addresses, box operands) and the letter
+    // inside a coil. The painter draws with these, and Fit to Width shrinks no further than
+    // minReadableZoom(), so one rule decides what is readable.
+    struct FontSizes {
+        int label;
+        int small;
+        int mark;
+    };
+    FontSizes fontSizes() const;
+    static constexpr int kMinReadableLabel = 10;
+    static constexpr int kMinReadableSmall = 9;
+    // The smallest zoom (of a 100 % row of 52 px) at which fontSizes() keeps both floors.
+    static double minReadableZoom();
     double width() const {
         return gutter + shownColumns() * cellWidth + outputWidth + kRightMargin;
     }

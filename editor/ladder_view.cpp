@@ -148,20 +148,15 @@ void LadderView::setFitWidth(bool on) {
     emit fitWidthChanged(on);
 }
 
-namespace {
-// Fit to Width shrinks the drawing no further than this: the device labels (0.24 of a row of
-// 52 px at 100 %, ladder_painter) stay at 10 px or more and the names below them at 8 px or
-// more; a drawing wider than that scrolls sideways instead of shrinking into unreadable text.
-constexpr double kMinFitZoom = 10.0 / (0.24 * 52.0);
-} // namespace
-
 void LadderView::fitZoomToWidth() {
     // The drawing's width at 100 %, and what the viewport leaves for it (the zoomed cells
     // round down to whole pixels, so the drawing never comes out wider).
     const double full = metricsAt(1.0).width() - LadderMetrics::kRightMargin;
     const double available = viewport()->width() - LadderMetrics::kRightMargin - 2;
     if (full > 0 && available > 0)
-        applyZoom(std::clamp(available / full, kMinFitZoom, 1.0));
+        // Never below readable text (LadderMetrics::fontSizes): a drawing wider than that
+        // scrolls sideways instead of shrinking into text nobody can read.
+        applyZoom(std::clamp(available / full, LadderMetrics::minReadableZoom(), 1.0));
 }
 
 int LadderView::rungAt(double y) const {

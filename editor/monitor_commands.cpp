@@ -122,20 +122,27 @@ bool MonitorCommands::addActions(QMenu *menu, const MonitorTargets &devices) {
         return a;
     };
     QPointer<MonitorCommands> self(this);
+    const QString noForce = live ? m_source->forceRefusal() : QString();
+    const auto forcing = [&noForce](QAction *a) {
+        if (noForce.isEmpty())
+            return;
+        a->setEnabled(false);
+        a->setToolTip(noForce);
+    };
     for (const model::Address &bit : devices.bits) {
         const QString name = device(bit);
-        add(tr("Force %1 O&N").arg(name), [self, bit] {
+        forcing(add(tr("Force %1 O&N").arg(name), [self, bit] {
             if (self)
                 self->force(bit, true);
-        });
-        add(tr("Force %1 O&FF").arg(name), [self, bit] {
+        }));
+        forcing(add(tr("Force %1 O&FF").arg(name), [self, bit] {
             if (self)
                 self->force(bit, false);
-        });
-        add(tr("&Release %1").arg(name), [self, bit] {
+        }));
+        forcing(add(tr("&Release %1").arg(name), [self, bit] {
             if (self)
                 self->release(bit);
-        });
+        }));
         add(tr("Set %1 &ON").arg(name), [self, bit] {
             if (self)
                 self->setBit(bit, true);

@@ -380,6 +380,12 @@ QList<QAction *> WatchListView::deviceActions(QTreeWidgetItem *item, QObject *pa
             if (source)
                 source->release(device);
         });
+        // Greyed, saying why, where the PLC has no force command.
+        if (const QString why = source ? source->forceRefusal() : QString(); !why.isEmpty())
+            for (qsizetype k = actions.size() - 3; k < actions.size(); ++k) {
+                actions[k]->setEnabled(false);
+                actions[k]->setToolTip(why);
+            }
     } else {
         const model::AreaKind kind = m_document->target().area(device.area).kind;
         if (kind != model::AreaKind::Timer && kind != model::AreaKind::Counter)
@@ -391,6 +397,7 @@ QList<QAction *> WatchListView::deviceActions(QTreeWidgetItem *item, QObject *pa
 void WatchListView::contextMenuEvent(QContextMenuEvent *event) {
     QTreeWidgetItem *item = itemAt(viewport()->mapFromGlobal(event->globalPos()));
     QMenu menu;
+    menu.setToolTipsVisible(true); // a greyed entry says why
     menu.addActions(deviceActions(item, &menu));
     const auto address = addressOf(item);
     if (address && !isBit(*address)) {

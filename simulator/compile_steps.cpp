@@ -141,6 +141,10 @@ void Compiler::compileApply(const model::Instruction &ins, Step &s) {
     using model::ApplyFunction;
     switch (ins.spec->function) {
     case ApplyFunction::Mov:
+        if (ins.spec->doubleWord) {
+            compileDoubleMove(ins, s); // compile_words.cpp
+            break;
+        }
         s.code = Code::Move;
         s.x = sourceOf(ins, 0);
         s.dest = destOf(ins, 1, false, &s.width);
@@ -319,6 +323,9 @@ void Compiler::compileApply(const model::Instruction &ins, Step &s) {
     case ApplyFunction::FromBcd:
         // CPM1 COM(29) D complements D in place; Vigor CML S D, BCD/BIN S D write D.
         compileWordLogic(ins, s, 1);
+        break;
+    case ApplyFunction::CheckCode:
+        compileCheckCode(ins, s); // compile_words.cpp
         break;
     case ApplyFunction::Toggle:
         // OUTB (seed 003 4.2.3): each activation of the coil flips the bit

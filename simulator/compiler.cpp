@@ -55,6 +55,7 @@ void Compiler::compileSystem() {
             bindFlag(d.role, m_layout->bit(a)); // compile_cpm1.cpp
             break;
         case model::SystemRole::Other:
+        case model::SystemRole::ByteMode: // read by CCD (compile_words.cpp)
         case model::SystemRole::Error:
         case model::SystemRole::Connected:
             break;
@@ -164,6 +165,7 @@ CompileResult Compiler::run() {
         }
         const model::InstructionSpec &spec = *ins.spec;
         reportBreaches(ins);
+        reportUnmodelled(ins);
         switch (spec.op) {
         case Op::Load:
         case Op::And:

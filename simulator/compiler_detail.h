@@ -7,6 +7,7 @@
 #include "compiler.h"
 
 #include "model/checks/operand_rules.h"
+#include "model/checks/unmodelled.h"
 #include "model/listing/structure.h"
 #include "model/target/address.h"
 
@@ -77,6 +78,19 @@ private:
         for (const model::OperandBreach &b : breaches)
             error(ins, b.message);
         m_muted = !breaches.empty();
+    }
+    // A device the simulator keeps as plain memory (Target::unmodelled): `check` warns SIM101
+    // with the same words.
+    void reportUnmodelled(const model::Instruction &ins) {
+        for (const model::UnmodelledUse &use : model::unmodelledUses(m_target, ins)) {
+            model::Diagnostic d;
+            d.code = QStringLiteral("SIM101");
+            d.severity = model::Severity::Warning;
+            d.location.line = ins.line;
+            d.location.column = ins.column;
+            d.message = use.message;
+            m_diagnostics.push_back(std::move(d));
+        }
     }
     void notSimulated(const model::Instruction &ins) {
         model::Diagnostic d;
@@ -240,6 +254,9 @@ private:
     void compileCounter(const model::Instruction &ins, Step &s);
     void compileApply(const model::Instruction &ins, Step &s);
     void compileWordLogic(const model::Instruction &ins, Step &s, std::size_t sources);
+    // compile_words.cpp: Vigor DMOV and CCD.
+    void compileDoubleMove(const model::Instruction &ins, Step &s);
+    void compileCheckCode(const model::Instruction &ins, Step &s);
     void compileSystem();
     // Omron CPM1 (compile_cpm1.cpp): the W353 application instructions, SBN / RET / STEP,
     // the arithmetic flags, and the subroutines' targets.

@@ -208,6 +208,13 @@ private:
     bool isStimulus(const model::Address &address) const;
     std::int32_t readSet(const Step &s, std::size_t step);
     void wordLogic(const Step &s, std::size_t step); // Code::WordLogic, its input ON
+    // engine_words.cpp: Vigor CCD with its input ON; whether it takes a byte a word now.
+    void checkCode(const Step &s, std::size_t step);
+    bool checkCodeBytes(const Step &s) const {
+        return s.bit.valid() &&
+               (static_cast<std::uint32_t>(m_words[static_cast<std::size_t>(s.bit.word)]) &
+                s.bit.mask) != 0;
+    }
     // Omron CPM1 (engine_cpm1.cpp): Code::Arithmetic with its input ON, SFT(10), the flags.
     void arithmetic(const Step &s, std::size_t step);
     void shiftRegister(const Step &s, bool data, bool pulse, bool reset);

@@ -2,6 +2,8 @@
 
 #include "model/image/bcd.h"
 #include "model/listing/structure.h"
+#include "model/target/address.h"
+#include "model/target/word_text.h"
 
 #include <QCoreApplication>
 
@@ -112,10 +114,13 @@ void Engine::wordLogic(const Step &s, std::size_t step) {
         const std::int64_t max = s.width >= 32 ? 99999999 : 9999;
         if (v < 0 || v > max) {
             setFlag(m_program->flags.error, true); // W353 BCD(24): "ER: S is greater than 270F"
-            runtimeError(step, Tr::tr("%1 does not fit in BCD (0..%2); the destination is "
-                                      "unchanged")
-                                   .arg(v)
-                                   .arg(max));
+            // In the family's own words: a CPM1 user reads the word as #9999, not -26215.
+            const model::Target &t = layout().target();
+            runtimeError(
+                step, Tr::tr("%1 does not fit in BCD (0..%2); the destination is "
+                             "unchanged")
+                          .arg(s.width >= 32 ? QString::number(v) : model::formatWord(t, v),
+                               s.width >= 32 ? QString::number(max) : model::formatWord(t, max)));
             return;
         }
         r = toBcd(v);
@@ -125,8 +130,11 @@ void Engine::wordLogic(const Step &s, std::size_t step) {
         const std::int32_t v = fromBcd(static_cast<std::int32_t>(a & 0x7FFFFFFFu));
         if (v < 0 || (a & 0x80000000u)) {
             setFlag(m_program->flags.error, true); // W353 BIN(23): "ER: S is not BCD"
-            runtimeError(step, Tr::tr("%1 is not a BCD number; the destination is unchanged")
-                                   .arg(QString::number(a, 16)));
+            runtimeError(step,
+                         Tr::tr("%1 is not a BCD number; the destination is unchanged")
+                             .arg(model::formatConstant(
+                                 layout().target(), model::Constant{static_cast<qint64>(a),
+                                                                    model::Constant::Style::Hex})));
             return;
         }
         r = v;
@@ -715,6 +723,26 @@ std::size_t Engine::execute(std::size_t from, std::size_t to) {
                         wrw(s.dest + k, s.x.index >= 0 ? R[s.x.index + k] : s.x.constant, s.width);
                 }
             }
+            break;
+        case Code::DoubleMove:
+            if (acc) {
+                // FX order: the low word first (DMOV H00310035 D4: D4 = 0035h, D5 = 0031h).
+                const std::int32_t v = s.y.index >= 0
+                                           ? static_cast<std::int32_t>(
+                                                 (static_cast<std::uint32_t>(R[s.y.index]) << 16) |
+                                                 (static_cast<std::uint32_t>(rdw(s.x)) & 0xFFFFu))
+                                           : rdw(s.x);
+                if (s.slot >= 0) {
+                    wrw(s.dest, v, 16);
+                    wrw(s.slot, v >> 16, 16);
+                } else {
+                    wrw(s.dest, v, s.width);
+                }
+            }
+            break;
+        case Code::CheckCode:
+            if (acc)
+                checkCode(s, i); // engine_words.cpp
             break;
         case Code::IndirectMove:
             if (acc) {

@@ -113,7 +113,14 @@ bool Engine::resolveStep(const Step &s, std::size_t step, Step &r) {
     const Program &p = *m_program;
     r = s;
     bool ok = true;
-    const int extent = s.code == Code::BlockMove ? std::max(1, s.count) : 1;
+    // CCD reads n words from its source in 8-bit mode, n / 2 rounded up in 16-bit mode, and
+    // writes one word (its parity word is resolved as the slot).
+    const bool checkCode = s.code == Code::CheckCode;
+    int extent = 1;
+    if (s.code == Code::BlockMove)
+        extent = std::max(1, s.count);
+    else if (checkCode)
+        extent = checkCodeBytes(s) ? std::max(1, s.count) : (s.count + 1) / 2;
     auto word = [&](const OperandRef &ref, std::int64_t element) {
         const Segment *seg = segmentOf(p, ref, element);
         return static_cast<std::int32_t>(seg->base + (element - seg->first));
@@ -152,6 +159,11 @@ bool Engine::resolveStep(const Step &s, std::size_t step, Step &r) {
     };
     source(r.x);
     source(r.y);
+    if (checkCode) {
+        if (s.x.index <= kRefBase)
+            r.y.constant = extent; // the block was found whole where the index put it
+        extent = 1;
+    }
     if (ok && s.dest <= kRefBase) {
         const OperandRef &ref = p.refs[refOf(s.dest)];
         switch (ref.kind) {
@@ -185,7 +197,8 @@ bool Engine::resolveStep(const Step &s, std::size_t step, Step &r) {
             break;
         }
     }
-    if (ok && s.slot <= kRefBase && (s.code == Code::Mul || s.code == Code::Div)) {
+    if (ok && s.slot <= kRefBase &&
+        (s.code == Code::Mul || s.code == Code::Div || s.code == Code::DoubleMove || checkCode)) {
         const OperandRef &ref = p.refs[refOf(s.slot)];
         const std::int64_t e = resolveElement(ref, step, 1, &ok);
         if (ok)

@@ -66,6 +66,13 @@ enum class Code : std::uint8_t {
     WordLogic,    // dest = x op y (op = WordOp): WAND/ANDW ..., CML/COM, BCD, BIN
     BlockMove,    // x = first source word (or a constant to fill), dest = first word, count
     IndirectMove, // PL110 MOVIND: dest + value of y := x; count = words from dest to area end
+    // Vigor DMOV (32 bits): x = the source, y = its high word (index < 0: x is a 32-bit word
+    // or a constant); dest = the low word, slot = the high word (-1: dest is 32-bit).
+    DoubleMove,
+    // Vigor CCD: x = the first source word, count = bytes, bit = the 8-bit mode flag (invalid:
+    // always 16-bit), dest = the sum, slot = the parity, y.constant = the words from x to the
+    // end of its area (engine_words.cpp).
+    CheckCode,
     // Omron CPM1 (W353), with the arithmetic flags (Program::flags): op = ArithOp; engine_cpm1.cpp
     Arithmetic,
     ShiftRegister, // SFT(10): data, shift pulse (edge slot), reset; dest = St, count = words

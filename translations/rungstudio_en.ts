@@ -4,7 +4,7 @@
 <context>
     <name>rung::app::MainWindow</name>
     <message numerus="yes">
-        <location filename="../app/gui/main_window.cpp" line="+314"/>
+        <location filename="../app/gui/main_window.cpp" line="+350"/>
         <source>%n rung(s)</source>
         <translation>
             <numerusform>%n rung</numerusform>
@@ -58,7 +58,7 @@
 <context>
     <name>rung::editor::Document</name>
     <message numerus="yes">
-        <location filename="../editor/document.cpp" line="+239"/>
+        <location filename="../editor/document.cpp" line="+250"/>
         <source>Delete %n rungs</source>
         <translation>
             <numerusform>Delete %n rung</numerusform>
@@ -81,7 +81,7 @@
 <context>
     <name>rung::model::Checks</name>
     <message numerus="yes">
-        <location filename="../model/checks/checks_list.cpp" line="+244"/>
+        <location filename="../model/checks/checks_list.cpp" line="+245"/>
         <source>Stacked %1: %n blocks are open; an OR chain needs less stack</source>
         <translation>
             <numerusform>Stacked %1: %n block is open; an OR chain needs less stack</numerusform>
@@ -89,7 +89,7 @@
         </translation>
     </message>
     <message numerus="yes">
-        <location line="+87"/>
+        <location line="+98"/>
         <source>%n MPS left without MPP at the end of the rung</source>
         <translation>
             <numerusform>%n MPS left without MPP at the end of the rung</numerusform>

@@ -215,7 +215,13 @@ Kilépési kód: 0 nincs hiba, 1 a programban hiba van, 2 használati vagy I/O h
         <translation>ismeretlen célrendszer: %1 (%2)</translation>
     </message>
     <message>
-        <location line="-115"/>
+        <location line="+65"/>
+        <source>%1:rung %2:%3:%4</source>
+        <extracomment>A finding&apos;s place on the ladder, after the file as a compiler writes file:line:column: %1 the file, %2 the rung&apos;s number, %3 the row, %4 the column. Keep the colons.</extracomment>
+        <translation>%1:létrafok %2:%3:%4</translation>
+    </message>
+    <message>
+        <location line="-180"/>
         <source>%1 holds an instruction list typed in Rung Studio that is not in its program: the list had errors when the project was saved, and is kept as typed under the key &quot;pendingListing&quot;; the rungs are the last valid program. Open the project in Rung Studio and fix the list.</source>
         <translation>A(z) %1 egy Rung Studióban begépelt utasításlistát tartalmaz, amely nincs benne a programjában: a lista hibás volt a projekt mentésekor, és begépelt formájában a „pendingListing” kulcs alatt maradt meg; a létrafokok az utolsó érvényes programot tartalmazzák. Nyissa meg a projektet a Rung Studióban, és javítsa ki a listát.</translation>
     </message>
@@ -294,7 +300,7 @@ Kilépési kód: 0 nincs hiba, 1 a programban hiba van, 2 használati vagy I/O h
         <translation>Megszakítva: semmi sem lett elküldve a PLC-nek</translation>
     </message>
     <message>
-        <location filename="../app/gui/connection_panel.cpp" line="+240"/>
+        <location filename="../app/gui/connection_panel.cpp" line="+245"/>
         <source>Settings</source>
         <translation>Beállítások</translation>
     </message>
@@ -409,7 +415,7 @@ Kilépési kód: 0 nincs hiba, 1 a programban hiba van, 2 használati vagy I/O h
         <translation>A(z) %1 kommunikációs protokollja nem nyilvános, ezért az IDE nem tud vele kapcsolatot teremteni. Helyette: exportálja a programot konzollistaként (Fájl &gt; Utasításlista exportálása), és töltse be a PLC saját eszközével; a kapcsolat tanulmányozásához rögzítse az adatforgalmát a &apos;rungstudio-cli record&apos; paranccsal.</translation>
     </message>
     <message>
-        <location line="+72"/>
+        <location line="+83"/>
         <source>No port found</source>
         <translation>Nem található port</translation>
     </message>
@@ -569,14 +575,14 @@ Ez egy valódi PLC memóriáját módosítja, amely gépet vezérelhet. Kapcsola
         <translation>Online: %1</translation>
     </message>
     <message>
-        <location line="+10"/>
-        <source>Link lost: %1
-Trying again; the values shown are the last read, marked stale.</source>
-        <translation>Megszakadt a kapcsolat: %1
-Újrapróbálkozás; a látható értékek az utoljára olvasottak, elavultként jelölve.</translation>
+        <location line="+11"/>
+        <source>%1
+The values shown are the last read, marked stale.</source>
+        <translation>%1
+A látható értékek az utoljára olvasottak, elavultként jelölve.</translation>
     </message>
     <message>
-        <location line="+4"/>
+        <location line="+2"/>
         <source>Cannot connect: %1</source>
         <translation>Nem lehet kapcsolódni: %1</translation>
     </message>
@@ -709,19 +715,19 @@ Válaszidő: %6 ms (átlag %7, max. %8); frissítés: %9 ms, %10 keret</translat
 <context>
     <name>rung::app::MainWindow</name>
     <message>
-        <location filename="../app/gui/main_window.cpp" line="+166"/>
+        <location filename="../app/gui/main_window.cpp" line="+170"/>
         <source>Problems</source>
         <translation>Problémák</translation>
     </message>
     <message>
         <location line="+5"/>
-        <location line="+280"/>
+        <location line="+312"/>
         <source>Project</source>
         <translation>Projekt</translation>
     </message>
     <message>
-        <location line="-273"/>
-        <location line="+276"/>
+        <location line="-305"/>
+        <location line="+308"/>
         <source>Symbols</source>
         <translation>Szimbólumok</translation>
     </message>
@@ -1104,7 +1110,7 @@ Létradiagram- és utasításlista-szerkesztő a következő PLC-khez: %2.</tran
         <translation>A Rung Studio névjegye</translation>
     </message>
     <message>
-        <location filename="../app/gui/main_window.cpp" line="-258"/>
+        <location filename="../app/gui/main_window.cpp" line="-290"/>
         <source>Rung Comment</source>
         <translation>Létrafok megjegyzése</translation>
     </message>
@@ -1115,23 +1121,43 @@ Létradiagram- és utasításlista-szerkesztő a következő PLC-khez: %2.</tran
     </message>
     <message>
         <location line="+22"/>
-        <location line="+240"/>
+        <location line="+272"/>
         <source>Ladder</source>
         <translation>Létradiagram</translation>
     </message>
     <message>
-        <location line="-239"/>
-        <location line="+240"/>
+        <location line="-271"/>
+        <location line="+272"/>
         <source>Instruction List</source>
         <translation>Utasításlista</translation>
     </message>
     <message>
-        <location line="-227"/>
+        <location line="-259"/>
         <source>The list as typed had errors and now shows the ladder&apos;s program; Ctrl+Z in the list brings it back</source>
         <translation>A begépelt lista hibás volt, most a létradiagram programját mutatja; a listában a Ctrl+Z visszahozza</translation>
     </message>
     <message>
-        <location line="+79"/>
+        <location line="+90"/>
+        <source>Replace the Instruction List?</source>
+        <translation>Lecseréli az utasításlistát?</translation>
+    </message>
+    <message>
+        <location line="+1"/>
+        <source>The instruction list as typed has errors (line %1: %2).</source>
+        <translation>A begépelt utasításlista hibás (%1. sor: %2).</translation>
+    </message>
+    <message>
+        <location line="+5"/>
+        <source>This change to the ladder replaces the list with the ladder&apos;s program; Ctrl+Z in the list brings the typed text back. Cancel keeps the list as typed and leaves the ladder as it is.</source>
+        <translation>A létradiagram e módosítása a listát a létradiagram programjára cseréli; a listában a Ctrl+Z visszahozza a begépelt szöveget. A Mégse megtartja a begépelt listát, és a létradiagramot változatlanul hagyja.</translation>
+    </message>
+    <message>
+        <location line="+3"/>
+        <source>Replace the List</source>
+        <translation>Lista cseréje</translation>
+    </message>
+    <message>
+        <location line="+12"/>
         <source>&lt;b&gt;%1&lt;/b&gt;&lt;br&gt;Target: %2, model %3&lt;br&gt;%4, %5</source>
         <translation>&lt;b&gt;%1&lt;/b&gt;&lt;br&gt;PLC-család: %2, modell: %3&lt;br&gt;%4, %5</translation>
     </message>
@@ -2796,27 +2822,32 @@ Kiértékelés: %4 µs (%5..%6)</translation>
         <translation>eszköztípus: %1</translation>
     </message>
     <message>
-        <location line="+11"/>
-        <source>firmware %1</source>
-        <translation>firmware: %1</translation>
-    </message>
-    <message>
-        <location filename="../comms/driver/online_session.cpp" line="+101"/>
+        <location filename="../comms/driver/online_session.cpp" line="+115"/>
         <source>%1 is not connected: nothing was sent</source>
         <translation>%1 nincs csatlakoztatva: semmi sem lett elküldve</translation>
     </message>
     <message>
-        <location line="+176"/>
+        <location line="+182"/>
+        <source>Connection lost: %1. Trying again.</source>
+        <translation>Megszakadt a kapcsolat: %1. Újrapróbálkozás.</translation>
+    </message>
+    <message>
+        <location line="+3"/>
         <source>Connection to %1 lost: %2. Trying again.</source>
         <translation>Megszakadt a kapcsolat ezzel: %1: %2. Újrapróbálkozás.</translation>
     </message>
     <message>
-        <location line="+3"/>
+        <location line="-7"/>
         <source>Cannot reach %1: %2. Trying again.</source>
         <translation>%1 nem érhető el: %2. Újrapróbálkozás.</translation>
     </message>
     <message>
-        <location line="+52"/>
+        <location line="-198"/>
+        <source>%1 cannot force bits: its protocol has no force command. Set the bit instead (the program may overwrite it).</source>
+        <translation>%1 nem tud biteket kényszeríteni: a protokolljának nincs kényszerítő parancsa. Állítsa inkább a bitet (a program felülírhatja).</translation>
+    </message>
+    <message>
+        <location line="+257"/>
         <source>Cannot connect to %1: %2</source>
         <translation>Nem sikerült kapcsolódni ide: %1: %2</translation>
     </message>
@@ -3506,7 +3537,7 @@ Kiértékelés: %4 µs (%5..%6)</translation>
         <translation>Szimbólumok szerkesztése</translation>
     </message>
     <message>
-        <location line="+190"/>
+        <location line="+201"/>
         <source>Insert rung</source>
         <translation>Létrafok beszúrása</translation>
     </message>
@@ -3629,18 +3660,18 @@ Kiértékelés: %4 µs (%5..%6)</translation>
     </message>
     <message>
         <location line="+3"/>
-        <location line="+230"/>
+        <location line="+234"/>
         <source>Inputs take effect at the next scan</source>
         <translation>A bemenetek a következő ciklusban hatnak</translation>
     </message>
     <message>
-        <location line="-229"/>
-        <location line="+230"/>
+        <location line="-233"/>
+        <location line="+234"/>
         <source>Run the simulation (F10) to work the inputs</source>
         <translation>A bemenetek kezeléséhez indítsa a szimulációt (F10)</translation>
     </message>
     <message>
-        <location line="-147"/>
+        <location line="-151"/>
         <source>Further inputs the program uses</source>
         <translation>A program további bemenetei</translation>
     </message>
@@ -3704,17 +3735,17 @@ Kiértékelés: %4 µs (%5..%6)</translation>
     <name>rung::editor::LadderView</name>
     <message>
         <location filename="../editor/ladder_view.cpp" line="+41"/>
-        <location line="+510"/>
+        <location line="+505"/>
         <source>Ladder diagram</source>
         <translation>Létradiagram</translation>
     </message>
     <message>
-        <location line="-412"/>
+        <location line="-407"/>
         <source>Edit rung comment</source>
         <translation>Létrafok megjegyzésének szerkesztése</translation>
     </message>
     <message>
-        <location line="+220"/>
+        <location line="+215"/>
         <source>Type one instruction, for example &quot;%1 %2&quot;</source>
         <translation>Egy utasítást írjon be, például: &quot;%1 %2&quot;</translation>
     </message>
@@ -3840,7 +3871,7 @@ Kiértékelés: %4 µs (%5..%6)</translation>
 <context>
     <name>rung::editor::MonitorCommands</name>
     <message>
-        <location filename="../editor/monitor_commands.cpp" line="+127"/>
+        <location filename="../editor/monitor_commands.cpp" line="+134"/>
         <source>Force %1 O&amp;N</source>
         <translation>%1 kényszerítése &amp;BE</translation>
     </message>
@@ -4367,12 +4398,12 @@ Kiértékelés: %4 µs (%5..%6)</translation>
         <translation>Kényszerítés feloldása</translation>
     </message>
     <message>
-        <location line="+7"/>
+        <location line="+13"/>
         <source>Write Value...</source>
         <translation>Érték írása...</translation>
     </message>
     <message>
-        <location line="-184"/>
+        <location line="-190"/>
         <source>%1 of %2, %3</source>
         <translation>%1 / %2, %3</translation>
     </message>
@@ -4452,7 +4483,7 @@ Kiértékelés: %4 µs (%5..%6)</translation>
         <translation>%1 megjelenítése: %2</translation>
     </message>
     <message>
-        <location line="+50"/>
+        <location line="+57"/>
         <source>Show As</source>
         <translation>Megjelenítés</translation>
     </message>
@@ -4660,7 +4691,7 @@ Kiértékelés: %4 µs (%5..%6)</translation>
     </message>
     <message>
         <location line="+49"/>
-        <location filename="../model/checks/checks_list.cpp" line="+79"/>
+        <location filename="../model/checks/checks_list.cpp" line="+80"/>
         <source>Append %1</source>
         <translation>%1 hozzáfűzése a végére</translation>
     </message>
@@ -4692,7 +4723,12 @@ Kiértékelés: %4 µs (%5..%6)</translation>
         <translation>Egyetlen érintkező %1 kapcsolással egyszerűbb %2 formában</translation>
     </message>
     <message>
-        <location line="+11"/>
+        <location line="+12"/>
+        <source>The block after a single contact can be written shorter; the contact stays in front of the %1</source>
+        <translation>Az egyetlen érintkező utáni blokk rövidebben is írható; az érintkező a(z) %1 előtt marad</translation>
+    </message>
+    <message>
+        <location line="+10"/>
         <source>A single device in parallel with a block belongs on the lower row: the block first, then an OR, drops the %1</source>
         <translation>Egy blokkal párhuzamos egyetlen operandus az alsó sorba való: előbb a blokk, majd egy OR, így elmarad a(z) %1</translation>
     </message>
@@ -4749,7 +4785,7 @@ Kiértékelés: %4 µs (%5..%6)</translation>
         </translation>
     </message>
     <message>
-        <location line="+141"/>
+        <location line="+146"/>
         <source>%1 cannot be written: the program only reads it (%2)</source>
         <translation>%1 nem írható: a program csak olvassa (%2)</translation>
     </message>
@@ -5032,6 +5068,11 @@ Kiértékelés: %4 µs (%5..%6)</translation>
         <source>%1 stops while %2 is ON, and line %3 writes %2</source>
         <translation>%1 áll, amíg %2 BE, és a(z) %3. sor írja: %2</translation>
     </message>
+    <message>
+        <location filename="../model/checks/unmodelled.cpp" line="+56"/>
+        <source>%1 is not simulated: %2</source>
+        <translation>%1 nincs szimulálva: %2</translation>
+    </message>
 </context>
 <context>
     <name>rung::model::Convert</name>
@@ -5191,12 +5232,12 @@ Kiértékelés: %4 µs (%5..%6)</translation>
     </message>
     <message>
         <location line="+19"/>
-        <location line="+182"/>
+        <location line="+184"/>
         <source>&apos;%1...&apos; is too long for an operand</source>
         <translation>A(z) &apos;%1...&apos; túl hosszú egy operandushoz</translation>
     </message>
     <message numerus="yes">
-        <location line="-120"/>
+        <location line="-122"/>
         <source>%1 needs %n operand(s): %2</source>
         <translation>
             <numerusform>%1 %n operandust igényel: %2</numerusform>
@@ -5220,7 +5261,7 @@ Kiértékelés: %4 µs (%5..%6)</translation>
         <translation>%1: a beállított érték BCD konstans (#0000..#9999) vagy csatorna</translation>
     </message>
     <message>
-        <location line="+29"/>
+        <location line="+31"/>
         <source>%1 is out of range: %2..%3 fit here</source>
         <translation>%1 tartományon kívül esik: itt %2..%3 lehet</translation>
     </message>
@@ -5722,8 +5763,8 @@ Kiértékelés: %4 µs (%5..%6)</translation>
     </message>
     <message>
         <location line="+5"/>
-        <location filename="../model/target/target_pl110.cpp" line="+28"/>
-        <location filename="../model/target/target_vigor.cpp" line="+60"/>
+        <location filename="../model/target/target_pl110.cpp" line="+54"/>
+        <location filename="../model/target/target_vigor.cpp" line="+63"/>
         <location filename="../model/target/target_vpc.cpp" line="+5"/>
         <source>Start a block with a normally open contact</source>
         <translation>Blokk kezdése záró érintkezővel</translation>
@@ -6063,7 +6104,7 @@ Kiértékelés: %4 µs (%5..%6)</translation>
         <translation>A program vége</translation>
     </message>
     <message>
-        <location filename="../model/target/target_pl110.cpp" line="-323"/>
+        <location filename="../model/target/target_pl110.cpp" line="-349"/>
         <source>IF contact: ON while S1 ? S2 is true</source>
         <translation>IF érintkező: BE, amíg S1 ? S2 igaz</translation>
     </message>
@@ -6209,7 +6250,32 @@ Kiértékelés: %4 µs (%5..%6)</translation>
         <translation>legnagyobb ciklusidő (0,1 ms)</translation>
     </message>
     <message>
-        <location line="+24"/>
+        <location line="+7"/>
+        <source>the display (standby brightness and delay, system and user pages enabled, start page, page shown) is not modelled; the word is plain memory</source>
+        <translation>a kijelzőt (készenléti fényerő és késleltetés, engedélyezett rendszer- és felhasználói oldalak, kezdőoldal, megjelenített oldal) a szimulátor nem modellezi; a szó egyszerű memória</translation>
+    </message>
+    <message>
+        <location line="+5"/>
+        <source>the PLC shows the page requested and then resets SM106 to 0; the simulator shows no page and keeps the value written</source>
+        <translation>a PLC megjeleníti a kért oldalt, majd az SM106-ot 0-ra állítja; a szimulátor nem jelenít meg oldalt, és megtartja a beírt értéket</translation>
+    </message>
+    <message>
+        <location line="+4"/>
+        <source>the terminal (the last variable changed from the keys, the password entered) is not modelled; the word stays as the program leaves it</source>
+        <translation>a kezelőegységet (a gombokkal utoljára módosított változó, a beírt jelszó) a szimulátor nem modellezi; a szó úgy marad, ahogy a program hagyja</translation>
+    </message>
+    <message>
+        <location line="+4"/>
+        <source>the terminal&apos;s keys (SWAP, UP, DOWN, SET) are not modelled: no key is ever pressed unless you write the word</source>
+        <translation>a kezelőegység gombjait (SWAP, UP, DOWN, SET) a szimulátor nem modellezi: egyik gomb sincs lenyomva, hacsak be nem írja a szót</translation>
+    </message>
+    <message>
+        <location line="+4"/>
+        <source>the user pages&apos; parameter fields (SetPAR, FormatPAR, PosPAR) are not modelled: nothing is shown or edited</source>
+        <translation>a felhasználói oldalak paramétermezőit (SetPAR, FormatPAR, PosPAR) a szimulátor nem modellezi: semmi sem jelenik meg és semmi sem módosítható</translation>
+    </message>
+    <message>
+        <location line="+26"/>
         <source>NOT contact: invert the power flow</source>
         <translation>NOT érintkező: az áramút negálása</translation>
     </message>
@@ -6330,9 +6396,9 @@ Kiértékelés: %4 µs (%5..%6)</translation>
     </message>
     <message>
         <location line="+11"/>
-        <location filename="../model/target/target_vigor.cpp" line="+161"/>
+        <location filename="../model/target/target_vigor.cpp" line="+175"/>
         <location line="+61"/>
-        <location line="+51"/>
+        <location line="+74"/>
         <source>number of words</source>
         <translation>szavak száma</translation>
     </message>
@@ -6422,7 +6488,7 @@ Kiértékelés: %4 µs (%5..%6)</translation>
         <translation>Kijelzőparaméter elhelyezése</translation>
     </message>
     <message>
-        <location filename="../model/target/target_vigor.cpp" line="-429"/>
+        <location filename="../model/target/target_vigor.cpp" line="-469"/>
         <source>Compare contact: ON while S1 ? S2</source>
         <translation>Összehasonlító érintkező: BE, amíg S1 ? S2</translation>
     </message>
@@ -6531,12 +6597,7 @@ Kiértékelés: %4 µs (%5..%6)</translation>
         <translation>100 ms-os órajel</translation>
     </message>
     <message>
-        <location line="+6"/>
-        <source>RS instruction: 8-bit mode (OFF: 16-bit)</source>
-        <translation>RS utasítás: 8 bites mód (kikapcsolva: 16 bites)</translation>
-    </message>
-    <message>
-        <location line="+2"/>
+        <location line="+11"/>
         <source>SMOV works on hexadecimal digits</source>
         <translation>Az SMOV hexadecimális számjegyekkel dolgozik</translation>
     </message>
@@ -6706,7 +6767,22 @@ Kiértékelés: %4 µs (%5..%6)</translation>
         <translation>Bekapcsolás-késleltető időzítő: T0..T199 100 ms-os, T200..T245 10 ms-os egységekben; T246..T249 1 ms-os, T250..T255 100 ms-os összegző (RST nullázza)</translation>
     </message>
     <message>
-        <location line="+119"/>
+        <location line="+32"/>
+        <source>Move 32 bits: S (S, S+1) to D (low word), D+1 (high word)</source>
+        <translation>32 bit mozgatása: S (S, S+1) a D-be (alsó szó) és a D+1-be (felső szó)</translation>
+    </message>
+    <message>
+        <location line="+96"/>
+        <source>Write n words to special module m1, at m2, once on a rising edge</source>
+        <translation>n szó írása az m1 speciális modulba, m2-től, egyszer, felfutó élre</translation>
+    </message>
+    <message>
+        <location line="+16"/>
+        <source>Check code: the sum of n bytes from S into D, their parity into D+1 (M9161 ON: one byte a word)</source>
+        <translation>Ellenőrző kód: az S-től kezdődő n bájt összege a D-be, paritásuk a D+1-be (M9161 BE: szavanként egy bájt)</translation>
+    </message>
+    <message>
+        <location line="+12"/>
         <source>first input or output</source>
         <translation>első bemenet vagy kimenet</translation>
     </message>
@@ -6771,12 +6847,17 @@ Kiértékelés: %4 µs (%5..%6)</translation>
         <translation>S m2 számjegyének mozgatása az m1. számjegytől D-be az n. számjegytől</translation>
     </message>
     <message>
-        <location line="-177"/>
+        <location line="-214"/>
         <source>Counter: counts rising edges, reset with RST</source>
         <translation>Számláló: a felfutó éleket számolja, törlés RST-vel</translation>
     </message>
     <message>
-        <location line="+6"/>
+        <location line="-146"/>
+        <source>RS, CCD, ASCI, HEX: 8-bit mode, one byte a word (OFF: 16-bit)</source>
+        <translation>RS, CCD, ASCI, HEX: 8 bites mód, szavanként egy bájt (KI: 16 bites)</translation>
+    </message>
+    <message>
+        <location line="+152"/>
         <source>Step ladder: start of step S</source>
         <translation>Léptetőlánc: az S lépés kezdete</translation>
     </message>
@@ -6791,7 +6872,7 @@ Kiértékelés: %4 µs (%5..%6)</translation>
         <translation>S mozgatása D-be</translation>
     </message>
     <message>
-        <location line="+12"/>
+        <location line="+26"/>
         <source>Move n words from S to D</source>
         <translation>n szó mozgatása S-ből D-be</translation>
     </message>
@@ -6876,12 +6957,7 @@ Kiértékelés: %4 µs (%5..%6)</translation>
         <translation>n szó írása az m1 speciális modul m2 címére</translation>
     </message>
     <message>
-        <location line="+3"/>
-        <source>Sum and parity check of n bytes</source>
-        <translation>n bájt összege és paritásellenőrzése</translation>
-    </message>
-    <message>
-        <location line="+10"/>
+        <location line="+36"/>
         <source>Refresh n inputs or outputs now</source>
         <translation>n bemenet vagy kimenet azonnali frissítése</translation>
     </message>
@@ -7115,12 +7191,12 @@ Kiértékelés: %4 µs (%5..%6)</translation>
 <context>
     <name>rung::simulator::Compiler</name>
     <message>
-        <location filename="../simulator/compiler_detail.h" line="+103"/>
+        <location filename="../simulator/compiler_detail.h" line="+117"/>
         <source>%1 needs operand %2</source>
         <translation>%1: hiányzik a(z) %2. operandus</translation>
     </message>
     <message>
-        <location filename="../simulator/compile_steps.cpp" line="+164"/>
+        <location filename="../simulator/compile_steps.cpp" line="+168"/>
         <location filename="../simulator/compiler_detail.h" line="+17"/>
         <source>%1 is not a bit device</source>
         <translation>%1 nem bit típusú operandus</translation>
@@ -7158,17 +7234,23 @@ Kiértékelés: %4 µs (%5..%6)</translation>
         <translation>%1 nem szó típusú operandus</translation>
     </message>
     <message>
-        <location line="+17"/>
+        <location filename="../simulator/compile_words.cpp" line="+30"/>
+        <location filename="../simulator/compiler_detail.h" line="+17"/>
         <source>%1 needs the next word too, which does not exist</source>
         <translation>%1 a következő szót is igényli, de az nem létezik</translation>
     </message>
     <message>
-        <location line="+30"/>
+        <location line="+21"/>
+        <source>%1 reads a block of words: %2 is not a word device</source>
+        <translation>%1 szavak blokkját olvassa: %2 nem szó típusú operandus</translation>
+    </message>
+    <message>
+        <location filename="../simulator/compiler_detail.h" line="+30"/>
         <source>%1 needs %2 open blocks before it</source>
         <translation>%1 előtt %2 nyitott blokk kell</translation>
     </message>
     <message>
-        <location filename="../simulator/compile_steps.cpp" line="-147"/>
+        <location filename="../simulator/compile_steps.cpp" line="-151"/>
         <source>more than %1 open blocks</source>
         <translation>több mint %1 nyitott blokk</translation>
     </message>
@@ -7183,7 +7265,7 @@ Kiértékelés: %4 µs (%5..%6)</translation>
         <translation>%1 nem számláló</translation>
     </message>
     <message>
-        <location line="+138"/>
+        <location line="+142"/>
         <source>the simulator has no operator %1</source>
         <translation>a szimulátor nem ismeri ezt a műveleti jelet: %1</translation>
     </message>
@@ -7198,17 +7280,22 @@ Kiértékelés: %4 µs (%5..%6)</translation>
         <translation>%1 egy bitet igényel: bit típusú operandust, vagy egy szót és egy 0..15 bitszámot</translation>
     </message>
     <message>
-        <location line="+43"/>
+        <location filename="../simulator/compile_words.cpp" line="+9"/>
+        <source>%1 needs a count from 1 to %2</source>
+        <translation>%1 darabszáma 1 és %2 között lehet</translation>
+    </message>
+    <message>
+        <location filename="../simulator/compile_steps.cpp" line="+43"/>
         <source>the block of %1 words runs past the end of its area</source>
         <translation>a(z) %1 szavas blokk túlnyúlik a terület végén</translation>
     </message>
     <message>
-        <location filename="../simulator/compiler.cpp" line="+162"/>
+        <location filename="../simulator/compiler.cpp" line="+163"/>
         <source>unknown instruction</source>
         <translation>ismeretlen utasítás</translation>
     </message>
     <message>
-        <location line="+19"/>
+        <location line="+20"/>
         <source>more than %1 nested %2</source>
         <translation>több mint %1 egymásba ágyazott %2</translation>
     </message>
@@ -7237,22 +7324,22 @@ Kiértékelés: %4 µs (%5..%6)</translation>
 <context>
     <name>rung::simulator::Engine</name>
     <message>
-        <location filename="../simulator/engine_execute.cpp" line="+68"/>
+        <location filename="../simulator/engine_execute.cpp" line="+70"/>
         <source>set value %1 is not a BCD number; the instruction is skipped</source>
         <translation>a(z) %1 beállított érték nem BCD szám; az utasítás kimarad</translation>
     </message>
     <message>
-        <location line="+47"/>
+        <location line="+50"/>
         <source>%1 does not fit in BCD (0..%2); the destination is unchanged</source>
         <translation>%1 nem fér el BCD-ben (0..%2); a cél nem változik</translation>
     </message>
     <message>
-        <location line="+13"/>
+        <location line="+14"/>
         <source>%1 is not a BCD number; the destination is unchanged</source>
         <translation>%1 nem BCD szám; a cél nem változik</translation>
     </message>
     <message>
-        <location line="+17"/>
+        <location line="+19"/>
         <source>result %1 is outside 0..9999; %2 is written</source>
         <translation>a(z) %1 eredmény kívül esik a 0..9999 tartományon; %2 íródik be</translation>
     </message>
@@ -7268,7 +7355,7 @@ Kiértékelés: %4 µs (%5..%6)</translation>
         <translation>osztás nullával; a cél változatlan marad</translation>
     </message>
     <message>
-        <location line="+21"/>
+        <location line="+41"/>
         <source>MOVIND index %1 is outside 0..%2; nothing is written</source>
         <translation>a MOVIND %1 indexe kívül esik a 0..%2 tartományon; nem íródik semmi</translation>
     </message>
@@ -7333,6 +7420,11 @@ Kiértékelés: %4 µs (%5..%6)</translation>
         <location line="+7"/>
         <source>operation error: %1 reaches %2, which does not exist; the instruction is not executed</source>
         <translation>műveleti hiba: %1 a nem létező %2 operandusra mutat; az utasítás nem hajtódik végre</translation>
+    </message>
+    <message>
+        <location filename="../simulator/engine_words.cpp" line="+22"/>
+        <source>operation error: %1 bytes need %2 words from the source, past the end of its area; the instruction is not executed</source>
+        <translation>műveleti hiba: %1 bájthoz %2 szó kell a forrástól, túl a terület végén; az utasítás nem hajtódik végre</translation>
     </message>
 </context>
 <context>

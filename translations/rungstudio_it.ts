@@ -215,7 +215,13 @@ Codice di uscita: 0 nessun errore, 1 il programma contiene errori, 2 errore di u
         <translation>famiglia PLC sconosciuta: %1 (%2)</translation>
     </message>
     <message>
-        <location line="-115"/>
+        <location line="+65"/>
+        <source>%1:rung %2:%3:%4</source>
+        <extracomment>A finding&apos;s place on the ladder, after the file as a compiler writes file:line:column: %1 the file, %2 the rung&apos;s number, %3 the row, %4 the column. Keep the colons.</extracomment>
+        <translation>%1:segmento %2:%3:%4</translation>
+    </message>
+    <message>
+        <location line="-180"/>
         <source>%1 holds an instruction list typed in Rung Studio that is not in its program: the list had errors when the project was saved, and is kept as typed under the key &quot;pendingListing&quot;; the rungs are the last valid program. Open the project in Rung Studio and fix the list.</source>
         <translation>%1 contiene una lista istruzioni digitata in Rung Studio che non è nel suo programma: la lista conteneva errori quando il progetto è stato salvato, ed è conservata così come digitata sotto la chiave &quot;pendingListing&quot;; i segmenti sono l&apos;ultimo programma valido. Aprire il progetto in Rung Studio e correggere la lista.</translation>
     </message>
@@ -294,7 +300,7 @@ Codice di uscita: 0 nessun errore, 1 il programma contiene errori, 2 errore di u
         <translation>Annullato: nulla è stato inviato al PLC</translation>
     </message>
     <message>
-        <location filename="../app/gui/connection_panel.cpp" line="+240"/>
+        <location filename="../app/gui/connection_panel.cpp" line="+245"/>
         <source>Settings</source>
         <translation>Impostazioni</translation>
     </message>
@@ -409,7 +415,7 @@ Codice di uscita: 0 nessun errore, 1 il programma contiene errori, 2 errore di u
         <translation>Il protocollo di comunicazione del %1 non è pubblicato, quindi l&apos;IDE non può dialogare con esso. In alternativa: esportare il programma come listato per console (File &gt; Esporta lista istruzioni) e caricarlo con lo strumento proprio del PLC; per studiare il collegamento, registrarne il traffico con &apos;rungstudio-cli record&apos;.</translation>
     </message>
     <message>
-        <location line="+72"/>
+        <location line="+83"/>
         <source>No port found</source>
         <translation>Nessuna porta trovata</translation>
     </message>
@@ -569,14 +575,14 @@ Questo modifica la memoria di un PLC reale, che potrebbe comandare una macchina.
         <translation>Online: %1</translation>
     </message>
     <message>
-        <location line="+10"/>
-        <source>Link lost: %1
-Trying again; the values shown are the last read, marked stale.</source>
-        <translation>Collegamento perso: %1
-Nuovo tentativo in corso; i valori mostrati sono gli ultimi letti, segnati come non aggiornati.</translation>
+        <location line="+11"/>
+        <source>%1
+The values shown are the last read, marked stale.</source>
+        <translation>%1
+I valori mostrati sono gli ultimi letti, segnati come non aggiornati.</translation>
     </message>
     <message>
-        <location line="+4"/>
+        <location line="+2"/>
         <source>Cannot connect: %1</source>
         <translation>Impossibile connettersi: %1</translation>
     </message>
@@ -709,19 +715,19 @@ Andata e ritorno %6 ms (media %7, max %8); aggiornamento %9 ms, %10 frame</trans
 <context>
     <name>rung::app::MainWindow</name>
     <message>
-        <location filename="../app/gui/main_window.cpp" line="+166"/>
+        <location filename="../app/gui/main_window.cpp" line="+170"/>
         <source>Problems</source>
         <translation>Problemi</translation>
     </message>
     <message>
         <location line="+5"/>
-        <location line="+280"/>
+        <location line="+312"/>
         <source>Project</source>
         <translation>Progetto</translation>
     </message>
     <message>
-        <location line="-273"/>
-        <location line="+276"/>
+        <location line="-305"/>
+        <location line="+308"/>
         <source>Symbols</source>
         <translation>Simboli</translation>
     </message>
@@ -1104,7 +1110,7 @@ Editor di schemi ladder e liste istruzioni per %2.</translation>
         <translation>Informazioni su Rung Studio</translation>
     </message>
     <message>
-        <location filename="../app/gui/main_window.cpp" line="-258"/>
+        <location filename="../app/gui/main_window.cpp" line="-290"/>
         <source>Rung Comment</source>
         <translation>Commento del segmento</translation>
     </message>
@@ -1115,23 +1121,43 @@ Editor di schemi ladder e liste istruzioni per %2.</translation>
     </message>
     <message>
         <location line="+22"/>
-        <location line="+240"/>
+        <location line="+272"/>
         <source>Ladder</source>
         <translation>Ladder</translation>
     </message>
     <message>
-        <location line="-239"/>
-        <location line="+240"/>
+        <location line="-271"/>
+        <location line="+272"/>
         <source>Instruction List</source>
         <translation>Lista istruzioni</translation>
     </message>
     <message>
-        <location line="-227"/>
+        <location line="-259"/>
         <source>The list as typed had errors and now shows the ladder&apos;s program; Ctrl+Z in the list brings it back</source>
         <translation>La lista digitata conteneva errori e ora mostra il programma dello schema ladder; Ctrl+Z nella lista la ripristina</translation>
     </message>
     <message>
-        <location line="+79"/>
+        <location line="+90"/>
+        <source>Replace the Instruction List?</source>
+        <translation>Sostituire la lista istruzioni?</translation>
+    </message>
+    <message>
+        <location line="+1"/>
+        <source>The instruction list as typed has errors (line %1: %2).</source>
+        <translation>La lista istruzioni digitata contiene errori (riga %1: %2).</translation>
+    </message>
+    <message>
+        <location line="+5"/>
+        <source>This change to the ladder replaces the list with the ladder&apos;s program; Ctrl+Z in the list brings the typed text back. Cancel keeps the list as typed and leaves the ladder as it is.</source>
+        <translation>Questa modifica dello schema ladder sostituisce la lista con il programma dello schema ladder; Ctrl+Z nella lista ripristina il testo digitato. Annulla mantiene la lista digitata e lascia lo schema ladder invariato.</translation>
+    </message>
+    <message>
+        <location line="+3"/>
+        <source>Replace the List</source>
+        <translation>Sostituisci la lista</translation>
+    </message>
+    <message>
+        <location line="+12"/>
         <source>&lt;b&gt;%1&lt;/b&gt;&lt;br&gt;Target: %2, model %3&lt;br&gt;%4, %5</source>
         <translation>&lt;b&gt;%1&lt;/b&gt;&lt;br&gt;Famiglia PLC: %2, modello %3&lt;br&gt;%4, %5</translation>
     </message>
@@ -2802,27 +2828,32 @@ Valutazione: %4 µs (%5..%6)</translation>
         <translation>tipo di dispositivo %1</translation>
     </message>
     <message>
-        <location line="+11"/>
-        <source>firmware %1</source>
-        <translation>firmware %1</translation>
-    </message>
-    <message>
-        <location filename="../comms/driver/online_session.cpp" line="+101"/>
+        <location filename="../comms/driver/online_session.cpp" line="+115"/>
         <source>%1 is not connected: nothing was sent</source>
         <translation>%1 non è connesso: non è stato inviato nulla</translation>
     </message>
     <message>
-        <location line="+176"/>
+        <location line="+182"/>
+        <source>Connection lost: %1. Trying again.</source>
+        <translation>Connessione persa: %1. Nuovo tentativo in corso.</translation>
+    </message>
+    <message>
+        <location line="+3"/>
         <source>Connection to %1 lost: %2. Trying again.</source>
         <translation>Connessione con %1 persa: %2. Nuovo tentativo in corso.</translation>
     </message>
     <message>
-        <location line="+3"/>
+        <location line="-7"/>
         <source>Cannot reach %1: %2. Trying again.</source>
         <translation>Impossibile raggiungere %1: %2. Nuovo tentativo in corso.</translation>
     </message>
     <message>
-        <location line="+52"/>
+        <location line="-198"/>
+        <source>%1 cannot force bits: its protocol has no force command. Set the bit instead (the program may overwrite it).</source>
+        <translation>%1 non può forzare i bit: il suo protocollo non ha un comando di forzatura. Impostare invece il bit (il programma può sovrascriverlo).</translation>
+    </message>
+    <message>
+        <location line="+257"/>
         <source>Cannot connect to %1: %2</source>
         <translation>Impossibile connettersi a %1: %2</translation>
     </message>
@@ -3512,7 +3543,7 @@ Valutazione: %4 µs (%5..%6)</translation>
         <translation>Modifica simboli</translation>
     </message>
     <message>
-        <location line="+190"/>
+        <location line="+201"/>
         <source>Insert rung</source>
         <translation>Inserisci segmento</translation>
     </message>
@@ -3636,18 +3667,18 @@ Valutazione: %4 µs (%5..%6)</translation>
     </message>
     <message>
         <location line="+3"/>
-        <location line="+230"/>
+        <location line="+234"/>
         <source>Inputs take effect at the next scan</source>
         <translation>Gli ingressi valgono dalla scansione successiva</translation>
     </message>
     <message>
-        <location line="-229"/>
-        <location line="+230"/>
+        <location line="-233"/>
+        <location line="+234"/>
         <source>Run the simulation (F10) to work the inputs</source>
         <translation>Avviare la simulazione (F10) per agire sugli ingressi</translation>
     </message>
     <message>
-        <location line="-147"/>
+        <location line="-151"/>
         <source>Further inputs the program uses</source>
         <translation>Altri ingressi usati dal programma</translation>
     </message>
@@ -3711,17 +3742,17 @@ Valutazione: %4 µs (%5..%6)</translation>
     <name>rung::editor::LadderView</name>
     <message>
         <location filename="../editor/ladder_view.cpp" line="+41"/>
-        <location line="+510"/>
+        <location line="+505"/>
         <source>Ladder diagram</source>
         <translation>Schema ladder</translation>
     </message>
     <message>
-        <location line="-412"/>
+        <location line="-407"/>
         <source>Edit rung comment</source>
         <translation>Modifica commento del segmento</translation>
     </message>
     <message>
-        <location line="+220"/>
+        <location line="+215"/>
         <source>Type one instruction, for example &quot;%1 %2&quot;</source>
         <translation>Digitare una sola istruzione, ad esempio &quot;%1 %2&quot;</translation>
     </message>
@@ -3847,7 +3878,7 @@ Valutazione: %4 µs (%5..%6)</translation>
 <context>
     <name>rung::editor::MonitorCommands</name>
     <message>
-        <location filename="../editor/monitor_commands.cpp" line="+127"/>
+        <location filename="../editor/monitor_commands.cpp" line="+134"/>
         <source>Force %1 O&amp;N</source>
         <translation>Forza %1 O&amp;N</translation>
     </message>
@@ -4375,12 +4406,12 @@ Valutazione: %4 µs (%5..%6)</translation>
         <translation>Rilascia</translation>
     </message>
     <message>
-        <location line="+7"/>
+        <location line="+13"/>
         <source>Write Value...</source>
         <translation>Scrivi valore...</translation>
     </message>
     <message>
-        <location line="-184"/>
+        <location line="-190"/>
         <source>%1 of %2, %3</source>
         <translation>%1 di %2, %3</translation>
     </message>
@@ -4460,7 +4491,7 @@ Valutazione: %4 µs (%5..%6)</translation>
         <translation>Mostra %1 come %2</translation>
     </message>
     <message>
-        <location line="+50"/>
+        <location line="+57"/>
         <source>Show As</source>
         <translation>Mostra come</translation>
     </message>
@@ -4668,7 +4699,7 @@ Valutazione: %4 µs (%5..%6)</translation>
     </message>
     <message>
         <location line="+49"/>
-        <location filename="../model/checks/checks_list.cpp" line="+79"/>
+        <location filename="../model/checks/checks_list.cpp" line="+80"/>
         <source>Append %1</source>
         <translation>Aggiungi %1 in fondo</translation>
     </message>
@@ -4701,7 +4732,12 @@ Valutazione: %4 µs (%5..%6)</translation>
         <translation>Un singolo contatto unito con %1 è più semplice come %2</translation>
     </message>
     <message>
-        <location line="+11"/>
+        <location line="+12"/>
+        <source>The block after a single contact can be written shorter; the contact stays in front of the %1</source>
+        <translation>Il blocco dopo un singolo contatto si può scrivere più breve; il contatto resta davanti a %1</translation>
+    </message>
+    <message>
+        <location line="+10"/>
         <source>A single device in parallel with a block belongs on the lower row: the block first, then an OR, drops the %1</source>
         <translation>Un singolo operando in parallelo a un blocco va sulla riga inferiore: prima il blocco, poi un OR, senza %1</translation>
     </message>
@@ -4759,7 +4795,7 @@ Valutazione: %4 µs (%5..%6)</translation>
         </translation>
     </message>
     <message>
-        <location line="+141"/>
+        <location line="+146"/>
         <source>%1 cannot be written: the program only reads it (%2)</source>
         <translation>%1 non può essere scritto: il programma lo legge soltanto (%2)</translation>
     </message>
@@ -5042,6 +5078,11 @@ Valutazione: %4 µs (%5..%6)</translation>
         <source>%1 stops while %2 is ON, and line %3 writes %2</source>
         <translation>%1 si ferma mentre %2 è ON, e la riga %3 scrive %2</translation>
     </message>
+    <message>
+        <location filename="../model/checks/unmodelled.cpp" line="+56"/>
+        <source>%1 is not simulated: %2</source>
+        <translation>%1 non è simulato: %2</translation>
+    </message>
 </context>
 <context>
     <name>rung::model::Convert</name>
@@ -5204,12 +5245,12 @@ Valutazione: %4 µs (%5..%6)</translation>
     </message>
     <message>
         <location line="+19"/>
-        <location line="+182"/>
+        <location line="+184"/>
         <source>&apos;%1...&apos; is too long for an operand</source>
         <translation>&apos;%1...&apos; è troppo lungo per un operando</translation>
     </message>
     <message numerus="yes">
-        <location line="-120"/>
+        <location line="-122"/>
         <source>%1 needs %n operand(s): %2</source>
         <translation>
             <numerusform>%1 richiede %n operando: %2</numerusform>
@@ -5235,7 +5276,7 @@ Valutazione: %4 µs (%5..%6)</translation>
         <translation>%1: un valore di preset è una costante BCD #0000..#9999 o un canale</translation>
     </message>
     <message>
-        <location line="+29"/>
+        <location line="+31"/>
         <source>%1 is out of range: %2..%3 fit here</source>
         <translation>%1 è fuori campo: qui sono ammessi %2..%3</translation>
     </message>
@@ -5737,8 +5778,8 @@ Valutazione: %4 µs (%5..%6)</translation>
     </message>
     <message>
         <location line="+5"/>
-        <location filename="../model/target/target_pl110.cpp" line="+28"/>
-        <location filename="../model/target/target_vigor.cpp" line="+60"/>
+        <location filename="../model/target/target_pl110.cpp" line="+54"/>
+        <location filename="../model/target/target_vigor.cpp" line="+63"/>
         <location filename="../model/target/target_vpc.cpp" line="+5"/>
         <source>Start a block with a normally open contact</source>
         <translation>Inizia un blocco con un contatto normalmente aperto</translation>
@@ -6078,7 +6119,7 @@ Valutazione: %4 µs (%5..%6)</translation>
         <translation>Fine del programma</translation>
     </message>
     <message>
-        <location filename="../model/target/target_pl110.cpp" line="-323"/>
+        <location filename="../model/target/target_pl110.cpp" line="-349"/>
         <source>IF contact: ON while S1 ? S2 is true</source>
         <translation>Contatto IF: ON mentre S1 ? S2 è vero</translation>
     </message>
@@ -6224,7 +6265,32 @@ Valutazione: %4 µs (%5..%6)</translation>
         <translation>tempo di scansione massimo (0,1 ms)</translation>
     </message>
     <message>
-        <location line="+24"/>
+        <location line="+7"/>
+        <source>the display (standby brightness and delay, system and user pages enabled, start page, page shown) is not modelled; the word is plain memory</source>
+        <translation>il display (luminosità e ritardo dello standby, pagine di sistema e utente abilitate, pagina di avvio, pagina visualizzata) non è modellato; la word è semplice memoria</translation>
+    </message>
+    <message>
+        <location line="+5"/>
+        <source>the PLC shows the page requested and then resets SM106 to 0; the simulator shows no page and keeps the value written</source>
+        <translation>il PLC visualizza la pagina richiesta e poi forza SM106 a 0; il simulatore non visualizza pagine e mantiene il valore scritto</translation>
+    </message>
+    <message>
+        <location line="+4"/>
+        <source>the terminal (the last variable changed from the keys, the password entered) is not modelled; the word stays as the program leaves it</source>
+        <translation>il terminale (ultima variabile modificata dai pulsanti, password immessa) non è modellato; la word resta come la lascia il programma</translation>
+    </message>
+    <message>
+        <location line="+4"/>
+        <source>the terminal&apos;s keys (SWAP, UP, DOWN, SET) are not modelled: no key is ever pressed unless you write the word</source>
+        <translation>i pulsanti del terminale (SWAP, UP, DOWN, SET) non sono modellati: nessun pulsante risulta premuto se non si scrive la word</translation>
+    </message>
+    <message>
+        <location line="+4"/>
+        <source>the user pages&apos; parameter fields (SetPAR, FormatPAR, PosPAR) are not modelled: nothing is shown or edited</source>
+        <translation>i campi parametro delle pagine utente (SetPAR, FormatPAR, PosPAR) non sono modellati: nulla viene visualizzato o modificato</translation>
+    </message>
+    <message>
+        <location line="+26"/>
         <source>NOT contact: invert the power flow</source>
         <translation>Contatto NOT: inverte il flusso di corrente</translation>
     </message>
@@ -6345,9 +6411,9 @@ Valutazione: %4 µs (%5..%6)</translation>
     </message>
     <message>
         <location line="+11"/>
-        <location filename="../model/target/target_vigor.cpp" line="+161"/>
+        <location filename="../model/target/target_vigor.cpp" line="+175"/>
         <location line="+61"/>
-        <location line="+51"/>
+        <location line="+74"/>
         <source>number of words</source>
         <translation>numero di word</translation>
     </message>
@@ -6437,7 +6503,7 @@ Valutazione: %4 µs (%5..%6)</translation>
         <translation>Posiziona un parametro del display</translation>
     </message>
     <message>
-        <location filename="../model/target/target_vigor.cpp" line="-429"/>
+        <location filename="../model/target/target_vigor.cpp" line="-469"/>
         <source>Compare contact: ON while S1 ? S2</source>
         <translation>Contatto di confronto: ON mentre S1 ? S2</translation>
     </message>
@@ -6546,12 +6612,7 @@ Valutazione: %4 µs (%5..%6)</translation>
         <translation>clock da 100 ms</translation>
     </message>
     <message>
-        <location line="+6"/>
-        <source>RS instruction: 8-bit mode (OFF: 16-bit)</source>
-        <translation>Istruzione RS: modalità 8 bit (OFF: 16 bit)</translation>
-    </message>
-    <message>
-        <location line="+2"/>
+        <location line="+11"/>
         <source>SMOV works on hexadecimal digits</source>
         <translation>SMOV opera su cifre esadecimali</translation>
     </message>
@@ -6721,7 +6782,22 @@ Valutazione: %4 µs (%5..%6)</translation>
         <translation>Temporizzatore di ritardo all&apos;inserzione: T0..T199 in unità di 100 ms, T200..T245 di 10 ms; T246..T249 1 ms, T250..T255 100 ms a ritenzione (azzerati con RST)</translation>
     </message>
     <message>
-        <location line="+119"/>
+        <location line="+32"/>
+        <source>Move 32 bits: S (S, S+1) to D (low word), D+1 (high word)</source>
+        <translation>Sposta 32 bit: S (S, S+1) in D (word bassa), D+1 (word alta)</translation>
+    </message>
+    <message>
+        <location line="+96"/>
+        <source>Write n words to special module m1, at m2, once on a rising edge</source>
+        <translation>Scrive n word nel modulo speciale m1, da m2, una volta sul fronte di salita</translation>
+    </message>
+    <message>
+        <location line="+16"/>
+        <source>Check code: the sum of n bytes from S into D, their parity into D+1 (M9161 ON: one byte a word)</source>
+        <translation>Codice di controllo: la somma di n byte da S in D, la loro parità in D+1 (M9161 ON: un byte per word)</translation>
+    </message>
+    <message>
+        <location line="+12"/>
         <source>first input or output</source>
         <translation>primo ingresso o uscita</translation>
     </message>
@@ -6786,12 +6862,17 @@ Valutazione: %4 µs (%5..%6)</translation>
         <translation>Sposta m2 cifre di S dalla cifra m1 in D dalla cifra n</translation>
     </message>
     <message>
-        <location line="-177"/>
+        <location line="-214"/>
         <source>Counter: counts rising edges, reset with RST</source>
         <translation>Contatore: conta i fronti di salita, reset con RST</translation>
     </message>
     <message>
-        <location line="+6"/>
+        <location line="-146"/>
+        <source>RS, CCD, ASCI, HEX: 8-bit mode, one byte a word (OFF: 16-bit)</source>
+        <translation>RS, CCD, ASCI, HEX: modalità a 8 bit, un byte per word (OFF: 16 bit)</translation>
+    </message>
+    <message>
+        <location line="+152"/>
         <source>Step ladder: start of step S</source>
         <translation>Step ladder: inizio del passo S</translation>
     </message>
@@ -6806,7 +6887,7 @@ Valutazione: %4 µs (%5..%6)</translation>
         <translation>Sposta S in D</translation>
     </message>
     <message>
-        <location line="+12"/>
+        <location line="+26"/>
         <source>Move n words from S to D</source>
         <translation>Sposta n word da S a D</translation>
     </message>
@@ -6891,12 +6972,7 @@ Valutazione: %4 µs (%5..%6)</translation>
         <translation>Scrive n word nel modulo speciale m1, a m2</translation>
     </message>
     <message>
-        <location line="+3"/>
-        <source>Sum and parity check of n bytes</source>
-        <translation>Somma e controllo di parità di n byte</translation>
-    </message>
-    <message>
-        <location line="+10"/>
+        <location line="+36"/>
         <source>Refresh n inputs or outputs now</source>
         <translation>Aggiorna subito n ingressi o uscite</translation>
     </message>
@@ -7130,12 +7206,12 @@ Valutazione: %4 µs (%5..%6)</translation>
 <context>
     <name>rung::simulator::Compiler</name>
     <message>
-        <location filename="../simulator/compiler_detail.h" line="+103"/>
+        <location filename="../simulator/compiler_detail.h" line="+117"/>
         <source>%1 needs operand %2</source>
         <translation>%1 richiede l&apos;operando %2</translation>
     </message>
     <message>
-        <location filename="../simulator/compile_steps.cpp" line="+164"/>
+        <location filename="../simulator/compile_steps.cpp" line="+168"/>
         <location filename="../simulator/compiler_detail.h" line="+17"/>
         <source>%1 is not a bit device</source>
         <translation>%1 non è un operando a bit</translation>
@@ -7173,17 +7249,23 @@ Valutazione: %4 µs (%5..%6)</translation>
         <translation>%1 non è un operando word</translation>
     </message>
     <message>
-        <location line="+17"/>
+        <location filename="../simulator/compile_words.cpp" line="+30"/>
+        <location filename="../simulator/compiler_detail.h" line="+17"/>
         <source>%1 needs the next word too, which does not exist</source>
         <translation>%1 richiede anche la word successiva, che non esiste</translation>
     </message>
     <message>
-        <location line="+30"/>
+        <location line="+21"/>
+        <source>%1 reads a block of words: %2 is not a word device</source>
+        <translation>%1 legge un blocco di word: %2 non è un operando word</translation>
+    </message>
+    <message>
+        <location filename="../simulator/compiler_detail.h" line="+30"/>
         <source>%1 needs %2 open blocks before it</source>
         <translation>%1 richiede %2 blocchi aperti prima di sé</translation>
     </message>
     <message>
-        <location filename="../simulator/compile_steps.cpp" line="-147"/>
+        <location filename="../simulator/compile_steps.cpp" line="-151"/>
         <source>more than %1 open blocks</source>
         <translation>più di %1 blocchi aperti</translation>
     </message>
@@ -7198,7 +7280,7 @@ Valutazione: %4 µs (%5..%6)</translation>
         <translation>%1 non è un contatore</translation>
     </message>
     <message>
-        <location line="+138"/>
+        <location line="+142"/>
         <source>the simulator has no operator %1</source>
         <translation>il simulatore non ha l&apos;operatore %1</translation>
     </message>
@@ -7213,17 +7295,22 @@ Valutazione: %4 µs (%5..%6)</translation>
         <translation>%1 richiede un bit: un operando a bit, o una word e un numero di bit 0..15</translation>
     </message>
     <message>
-        <location line="+43"/>
+        <location filename="../simulator/compile_words.cpp" line="+9"/>
+        <source>%1 needs a count from 1 to %2</source>
+        <translation>%1 richiede un numero da 1 a %2</translation>
+    </message>
+    <message>
+        <location filename="../simulator/compile_steps.cpp" line="+43"/>
         <source>the block of %1 words runs past the end of its area</source>
         <translation>il blocco di %1 word va oltre la fine della sua area</translation>
     </message>
     <message>
-        <location filename="../simulator/compiler.cpp" line="+162"/>
+        <location filename="../simulator/compiler.cpp" line="+163"/>
         <source>unknown instruction</source>
         <translation>istruzione sconosciuta</translation>
     </message>
     <message>
-        <location line="+19"/>
+        <location line="+20"/>
         <source>more than %1 nested %2</source>
         <translation>più di %1 %2 annidati</translation>
     </message>
@@ -7252,22 +7339,22 @@ Valutazione: %4 µs (%5..%6)</translation>
 <context>
     <name>rung::simulator::Engine</name>
     <message>
-        <location filename="../simulator/engine_execute.cpp" line="+68"/>
+        <location filename="../simulator/engine_execute.cpp" line="+70"/>
         <source>set value %1 is not a BCD number; the instruction is skipped</source>
         <translation>il valore di preset %1 non è un numero BCD; l&apos;istruzione viene saltata</translation>
     </message>
     <message>
-        <location line="+47"/>
+        <location line="+50"/>
         <source>%1 does not fit in BCD (0..%2); the destination is unchanged</source>
         <translation>%1 non sta in BCD (0..%2); la destinazione resta invariata</translation>
     </message>
     <message>
-        <location line="+13"/>
+        <location line="+14"/>
         <source>%1 is not a BCD number; the destination is unchanged</source>
         <translation>%1 non è un numero BCD; la destinazione resta invariata</translation>
     </message>
     <message>
-        <location line="+17"/>
+        <location line="+19"/>
         <source>result %1 is outside 0..9999; %2 is written</source>
         <translation>il risultato %1 è fuori da 0..9999; viene scritto %2</translation>
     </message>
@@ -7283,7 +7370,7 @@ Valutazione: %4 µs (%5..%6)</translation>
         <translation>divisione per zero; la destinazione resta invariata</translation>
     </message>
     <message>
-        <location line="+21"/>
+        <location line="+41"/>
         <source>MOVIND index %1 is outside 0..%2; nothing is written</source>
         <translation>l&apos;indice %1 di MOVIND è fuori da 0..%2; non viene scritto nulla</translation>
     </message>
@@ -7348,6 +7435,11 @@ Valutazione: %4 µs (%5..%6)</translation>
         <location line="+7"/>
         <source>operation error: %1 reaches %2, which does not exist; the instruction is not executed</source>
         <translation>errore operativo: %1 raggiunge %2, che non esiste; l&apos;istruzione non viene eseguita</translation>
+    </message>
+    <message>
+        <location filename="../simulator/engine_words.cpp" line="+22"/>
+        <source>operation error: %1 bytes need %2 words from the source, past the end of its area; the instruction is not executed</source>
+        <translation>errore operativo: %1 byte richiedono %2 word dalla sorgente, oltre la fine della sua area; l&apos;istruzione non viene eseguita</translation>
     </message>
 </context>
 <context>

@@ -247,7 +247,9 @@ QString formatDiagnostic(const QString &file, const model::Diagnostic &d) {
                     .arg(d.location.line)
                     .arg(std::max(1, d.location.column));
     else if (d.location.onLadder())
-        where = QStringLiteral("%1:rung %2:%3:%4")
+        //: A finding's place on the ladder, after the file as a compiler writes file:line:column:
+        //: %1 the file, %2 the rung's number, %3 the row, %4 the column. Keep the colons.
+        where = Tr::tr("%1:rung %2:%3:%4")
                     .arg(file)
                     .arg(d.location.rung + 1)
                     .arg(std::max(0, d.location.row) + 1)

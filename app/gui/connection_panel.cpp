@@ -24,7 +24,6 @@
 #include <QRadioButton>
 #include <QSettings>
 #include <QSpinBox>
-#include <QStackedWidget>
 #include <QTimer>
 #include <QVBoxLayout>
 
@@ -97,7 +96,10 @@ void ConnectionPanel::build() {
     via->addStretch();
     form->addRow(via);
 
-    m_viaStack = new QStackedWidget;
+    m_via = new QWidget;
+    m_via->setObjectName(QStringLiteral("connectionVia"));
+    auto *viaPages = new QVBoxLayout(m_via);
+    viaPages->setContentsMargins(0, 0, 0, 0);
     auto *serial = new QWidget;
     auto *serialForm = new QFormLayout(serial);
     serialForm->setContentsMargins(0, 0, 0, 0);
@@ -128,7 +130,8 @@ void ConnectionPanel::build() {
     m_baudLabel = new QLabel;
     serialForm->addRow(m_baudLabel, m_baud);
     serialForm->addRow(m_frameLabel, m_frame);
-    m_viaStack->addWidget(serial);
+    viaPages->addWidget(serial);
+    m_viaPages[0] = serial;
     auto *tcp = new QWidget;
     auto *tcpForm = new QFormLayout(tcp);
     tcpForm->setContentsMargins(0, 0, 0, 0);
@@ -143,8 +146,10 @@ void ConnectionPanel::build() {
     m_tcpPortLabel = new QLabel;
     tcpForm->addRow(m_hostLabel, m_host);
     tcpForm->addRow(m_tcpPortLabel, m_tcpPort);
-    m_viaStack->addWidget(tcp);
-    form->addRow(m_viaStack);
+    viaPages->addWidget(tcp);
+    m_viaPages[1] = tcp;
+    showVia(0);
+    form->addRow(m_via);
 
     m_station = new QSpinBox;
     m_station->setObjectName(QStringLiteral("connectionStation"));
@@ -218,7 +223,7 @@ void ConnectionPanel::build() {
 
     connect(m_protocol, &QComboBox::activated, this, [this] { protocolChosen(); });
     connect(m_viaSerial, &QRadioButton::toggled, this,
-            [this](bool serial) { m_viaStack->setCurrentIndex(serial ? 0 : 1); });
+            [this](bool serial) { showVia(serial ? 0 : 1); });
     connect(m_refresh, &QPushButton::clicked, this, &ConnectionPanel::refreshPorts);
     connect(m_testButton, &QPushButton::clicked, this, [this] { testConnection(); });
     connect(m_connect, &QPushButton::clicked, this, [this] {
@@ -333,6 +338,17 @@ void ConnectionPanel::protocolChosen() {
     s.via = protocol() == ProtocolKind::ModbusTcp ? ConnectionSettings::Via::Tcp
                                                   : ConnectionSettings::Via::Serial;
     setSettings(s);
+}
+
+void ConnectionPanel::showVia(int page) {
+    // Only the page shown takes room (a stack would be as tall as its tallest page, and leave
+    // the serial settings' room empty under the TCP ones).
+    m_viaPages[1 - page]->hide();
+    m_viaPages[page]->show();
+}
+
+QString ConnectionPanel::cannotConnectReason() const {
+    return canConnect() ? QString() : m_vpcNote->text();
 }
 
 void ConnectionPanel::refreshPorts() {

@@ -29,7 +29,6 @@ class QPlainTextEdit;
 class QPushButton;
 class QRadioButton;
 class QSpinBox;
-class QStackedWidget;
 class QTimer;
 
 namespace rung::model {
@@ -51,6 +50,8 @@ public:
     const model::Target *target() const { return m_target; }
     // True when the family has a protocol the IDE speaks (not a VPC).
     bool canConnect() const;
+    // Why not, and what to do instead (empty when it can).
+    QString cannotConnectReason() const;
 
     // The settings as the fields say; setSettings fills the fields.
     comms::ConnectionSettings settings() const;
@@ -110,6 +111,7 @@ private:
     // No port chosen: says so in the panel as well as the status bar, and puts the cursor in
     // the port's field; false.
     bool askForPort();
+    void showVia(int page); // 0: the serial settings, 1: TCP
     void updatePortHint();
     void remember() const;
     std::unique_ptr<comms::OnlineSession> makeSession() const;
@@ -132,7 +134,8 @@ private:
     QComboBox *m_protocol = nullptr;
     QRadioButton *m_viaSerial = nullptr;
     QRadioButton *m_viaTcp = nullptr;
-    QStackedWidget *m_viaStack = nullptr;
+    QWidget *m_via = nullptr;
+    QWidget *m_viaPages[2] = {}; // the serial settings, the TCP ones
     QComboBox *m_port = nullptr;
     QPushButton *m_refresh = nullptr;
     QComboBox *m_baud = nullptr;

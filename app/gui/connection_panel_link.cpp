@@ -316,9 +316,8 @@ QString ConnectionPanel::stateText() const {
         return text;
     }
     case State::Lost:
-        return tr("Link lost: %1\nTrying again; the values shown are the last read, marked "
-                  "stale.")
-            .arg(error);
+        // The session's text says "lost", the PLC, the cause and that it tries again.
+        return tr("%1\nThe values shown are the last read, marked stale.").arg(error);
     case State::Failed:
         return tr("Cannot connect: %1").arg(error);
     }

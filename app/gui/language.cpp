@@ -33,12 +33,15 @@ QStringList availableLanguages() {
     return languageCodes();
 }
 
+QString languageFor(const QLocale &locale, const QString &remembered) {
+    if (availableLanguages().contains(remembered))
+        return remembered;
+    const QString spoken = QLocale::languageToCode(locale.language());
+    return availableLanguages().contains(spoken) ? spoken : QStringLiteral("en");
+}
+
 QString startLanguage() {
-    const QString chosen = QSettings().value(kSetting).toString();
-    if (availableLanguages().contains(chosen))
-        return chosen;
-    const QString system = QLocale::system().name().left(2);
-    return availableLanguages().contains(system) ? system : QStringLiteral("en");
+    return languageFor(QLocale::system(), QSettings().value(kSetting).toString());
 }
 
 QString currentLanguage() {

@@ -18,6 +18,8 @@
 #include <QDockWidget>
 #include <QLabel>
 #include <QMenuBar>
+#include <QMessageBox>
+#include <QPushButton>
 #include <QScreen>
 #include <QSettings>
 #include <QSplitter>
@@ -72,6 +74,7 @@ MainWindow::MainWindow(QWidget *parent)
     connect(&m_ilTimer, &QTimer::timeout, this, &MainWindow::applyListing);
     connect(m_il, &editor::IlEditor::listingEdited, this, [this] { m_ilTimer.start(); });
     connect(m_document, &editor::Document::programChanged, this, &MainWindow::refreshFromDocument);
+    m_document->setRungEditGuard([this] { return mayReplaceTypedList(); });
     connect(m_document, &editor::Document::pathChanged, this, &MainWindow::updateTitle);
     connect(m_document->undoStack(), &QUndoStack::cleanChanged, this, &MainWindow::updateTitle);
     connect(m_ladder, &editor::LadderView::cursorMoved, this, [this](const editor::CellCursor &c) {
@@ -142,6 +145,7 @@ MainWindow::~MainWindow() {
     // cleared): nothing of this window may answer them any more.
     m_ilTimer.stop();
     m_recoveryTimer.stop();
+    m_document->setRungEditGuard({});
     // ~QWidget hides the window, which moves the application's focus: the lambda on
     // focusChanged would run on an object that is no longer a MainWindow.
     disconnect(qApp, nullptr, this, nullptr);
@@ -302,6 +306,38 @@ void MainWindow::refreshFromDocument() {
     refreshProjectInfo();
     updateStatus();
     updateTitle(); // the list as typed counts as unsaved work
+}
+
+bool MainWindow::mayReplaceTypedList() {
+    if (m_editingListing)
+        return true; // the list's own change
+    if (m_ilTimer.isActive()) {
+        // Typed just now, not yet checked: text with errors is taken as such (the program
+        // stays), so that the question below knows of it; a valid text is left to the pause.
+        std::vector<model::Diagnostic> errors;
+        if (!m_document->setListing(m_il->text(), &errors, editor::Document::ListingStep::Check))
+            applyListing();
+    }
+    const auto first = std::find_if(
+        m_listingErrors.begin(), m_listingErrors.end(),
+        [](const model::Diagnostic &d) { return d.severity == model::Severity::Error; });
+    if (first == m_listingErrors.end())
+        return true;
+    QMessageBox box(QMessageBox::Question, tr("Replace the Instruction List?"),
+                    tr("The instruction list as typed has errors (line %1: %2).")
+                        .arg(first->location.line)
+                        .arg(first->message),
+                    QMessageBox::NoButton, this);
+    box.setInformativeText(
+        tr("This change to the ladder replaces the list with the ladder's program; Ctrl+Z in "
+           "the list brings the typed text back. Cancel keeps the list as typed and leaves the "
+           "ladder as it is."));
+    QPushButton *replace = box.addButton(tr("Replace the List"), QMessageBox::AcceptRole);
+    QPushButton *cancel = box.addButton(QMessageBox::Cancel);
+    box.setDefaultButton(cancel);
+    box.setEscapeButton(cancel);
+    box.exec();
+    return box.clickedButton() == replace;
 }
 
 void MainWindow::refreshProjectInfo() {

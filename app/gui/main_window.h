@@ -145,6 +145,10 @@ private:
     void updateTitle();
     void updateStatus();
     void refreshFromDocument();
+    // Before an edit of the rungs replaces the list as typed with errors (the list would show
+    // the ladder's program): asks the user, naming the list's first error; false to keep the
+    // list and leave the program as it is. True at once when there is nothing typed to lose.
+    bool mayReplaceTypedList();
     void showProject(const model::Project &project, const QString &path);
     void refreshProjectInfo();
     // The list as typed when it has errors the program could not take; empty when it agrees.

@@ -356,6 +356,10 @@ QAction *MainWindow::undoAction(bool redo, QObject *owner) {
             applyListing();
             return;
         }
+        // A step of the rungs would replace the list as typed: asked first.
+        const int step = redo ? stack->index() : stack->index() - 1;
+        if (m_document->stepChangesRungs(step) && !mayReplaceTypedList())
+            return;
         redo ? stack->redo() : stack->undo();
     });
     return action;

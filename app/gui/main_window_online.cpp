@@ -214,8 +214,11 @@ void MainWindow::updateOnlineActions() {
                 QStringLiteral("%1 (%2)").arg(a->text().remove(QLatin1Char('&')),
                                               a->shortcut().toString(QKeySequence::NativeText)));
             a->setEnabled(m_connectionPanel->canConnect() || session);
+            if (!session && !m_connectionPanel->canConnect())
+                a->setToolTip(m_connectionPanel->cannotConnectReason()); // a VPC: why not
         } else if (name == QLatin1String("onlineTest")) {
             a->setEnabled(m_connectionPanel->canConnect() && !session);
+            a->setToolTip(m_connectionPanel->cannotConnectReason());
         } else if (name == QLatin1String("onlineProgram") || name == QLatin1String("onlineRun")) {
             a->setEnabled(session && can.setsMode);
             a->setToolTip(noMode);

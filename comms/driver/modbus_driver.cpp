@@ -156,8 +156,9 @@ DriverError ModbusDriver::identify(PlcIdentity *identity) {
                 return e;
             words.push_back(version[0]);
         }
-        identity->version =
-            QCoreApplication::translate("rung::comms::Driver", "firmware %1").arg(words[1]);
+        // Word 1, "Versione software programma PL110" (seed 003 chapter 3): a number, which
+        // the panel introduces as the version.
+        identity->version = QString::number(words[1]);
     }
     return {};
 }

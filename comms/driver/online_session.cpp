@@ -84,6 +84,20 @@ OnlineSession::Abilities OnlineSession::abilities() const {
     return m_abilities;
 }
 
+QString OnlineSession::forceRefusal() const {
+    QString name;
+    {
+        std::lock_guard lock(m_mutex);
+        if (m_abilities.forces || m_plcName.isEmpty())
+            return {}; // can force, or not known yet (a force then says why it was refused)
+        name = m_plcName;
+    }
+    return QCoreApplication::translate("rung::comms::Driver",
+                                       "%1 cannot force bits: its protocol has no force command. "
+                                       "Set the bit instead (the program may overwrite it).")
+        .arg(name);
+}
+
 LinkStatistics OnlineSession::statistics() const {
     std::lock_guard lock(m_mutex);
     return m_statistics;
@@ -273,13 +287,19 @@ void OnlineSession::workerLoop() {
         up = false;
         if (haveValues)
             publish(words, true, driver->forced(), figures, wordsRead);
+        // Said once: a driver's message names the PLC already, a port's does not.
+        const QString where = driver->plcName();
         const QString text =
-            everUp ? QCoreApplication::translate("rung::comms::Driver",
-                                                 "Connection to %1 lost: %2. Trying again.")
-                         .arg(driver->plcName(), e.message)
-                   : QCoreApplication::translate("rung::comms::Driver",
-                                                 "Cannot reach %1: %2. Trying again.")
-                         .arg(driver->plcName(), e.message);
+            !everUp ? QCoreApplication::translate("rung::comms::Driver",
+                                                  "Cannot reach %1: %2. Trying again.")
+                          .arg(where, e.message)
+            : e.message.contains(where)
+                ? QCoreApplication::translate("rung::comms::Driver",
+                                              "Connection lost: %1. Trying again.")
+                      .arg(e.message)
+                : QCoreApplication::translate("rung::comms::Driver",
+                                              "Connection to %1 lost: %2. Trying again.")
+                      .arg(where, e.message);
         postState(everUp ? ConnectionState::Lost : ConnectionState::Connecting, text);
         failPending(text);
         shareStatistics(true);

@@ -79,6 +79,8 @@ public:
         bool forces = false;      // forces bits (else a force is refused and says so)
     };
     Abilities abilities() const;
+    // Once the protocol is known to have no force command: says so and what to do instead.
+    QString forceRefusal() const override;
 
     // Any thread.
     LinkStatistics statistics() const;

@@ -1,6 +1,7 @@
 #include "model/checks/checks.h"
 #include "model/checks/checks_internal.h"
 #include "model/checks/operand_rules.h"
+#include "model/checks/unmodelled.h"
 #include "model/convert/convert.h"
 #include "model/ladder/network.h"
 #include "model/listing/structure.h"
@@ -253,6 +254,17 @@ private:
                                                            ? m_t.findInstruction(Op::Or)->mnemonic
                                                            : QString()));
                     offerCanonical(f, i);
+                } else if (fuzzy && op == Op::AndBlock && !inSeries(m_list, first.first, i) &&
+                           rungForm(i).form.known && !rungForm(i).form.rewrite.empty()) {
+                    // A block with a branch after a single contact: moving the contact behind
+                    // the block would drop the ANB but reorder what needs no move. The rung as
+                    // the ladder draws it keeps the contact in front, the block in its simplest
+                    // form (LD X0 / LD X1 / OR X2 / ANB).
+                    Finding &f = add("FZ004", Severity::Warning, i,
+                                     Tr::tr("The block after a single contact can be written "
+                                            "shorter; the contact stays in front of the %1")
+                                         .arg(name(i)));
+                    offerCanonical(f, i);
                 } else if (fuzzy) {
                     const bool orBlock = op == Op::OrBlock;
                     // A block of contacts in series stays where it is written (moveBehind).
@@ -431,6 +443,11 @@ private:
             // What the simulator will not model is said before a simulation is tried.
             if (ins.spec->function == ApplyFunction::NotSimulated)
                 add("SIM100", Severity::Warning, i, notSimulatedMessage(*ins.spec));
+            for (const UnmodelledUse &use : unmodelledUses(m_t, ins)) {
+                Finding &f = add("SIM101", Severity::Warning, i, use.message);
+                atOperand(f, i,
+                          formatOperand(m_t, ins.operands[static_cast<std::size_t>(use.operand)]));
+            }
             for (const OperandBreach &b : operandBreaches(m_t, ins)) {
                 const Operand &o = ins.operands[static_cast<std::size_t>(b.operand)];
                 Finding &f = add("OP005", Severity::Error, i, b.message);

@@ -71,6 +71,11 @@ public:
     CommandId release(const Address &address);
     CommandId releaseAll();
 
+    // Why this source cannot force bits (translated: an online PLC whose protocol has no force
+    // command), or empty when it can. Views grey their force entries out and say why, rather
+    // than offer what the PLC would refuse. Owner thread.
+    virtual QString forceRefusal() const { return {}; }
+
     // Readers say which devices they show (an online source polls only those); a reader's
     // set is dropped when it is destroyed. watched() is the union, sorted, without repeats.
     void setWatched(QObject *reader, std::vector<Address> devices);

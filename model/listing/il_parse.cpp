@@ -496,8 +496,10 @@ private:
         }
         if (kind == OperandKind::SetValue)
             return true;
-        // 32-bit when the instruction works on a 32-bit device (Vigor C200..C255).
+        // 32-bit when the instruction is (Vigor DMOV H00310035 D4) or works on a 32-bit
+        // device (Vigor C200..C255).
         const bool wide =
+            (ins.spec && ins.spec->doubleWord) ||
             std::any_of(ins.operands.begin(), ins.operands.end(), [&](const Operand &x) {
                 return x.kind == Operand::Kind::Device && x.address.area >= 0 &&
                        m_target.area(x.address.area).wordBits == 32;

@@ -131,6 +131,10 @@ enum class SystemRole : std::uint8_t {
     Equal,
     Less,
     StepStart, // ON for one cycle when a STEP(08) step starts (W353: SR 25407)
+    // The program's choice of 8-bit data (Vigor M9161, seed 001 B-3-9: "16-bit mode (M9161=
+    // OFF) and 8-bit mode (M9161=ON)"): while ON, CCD and the RS family take one byte, the
+    // low one, from each word; OFF, both bytes, low first.
+    ByteMode,
     Other,
 };
 
@@ -270,6 +274,9 @@ enum class ApplyFunction : std::uint8_t {
     ClearCarry,     // CLC(41)
     SubroutineCall, // SBS(91) N: run subroutine N (SBN(92) N .. RET(93)) and come back
     StepNext,       // SNXT(09) B: end the current step, start the step of control bit B
+    // Vigor CCD S D n (FX / Delta FNC 84): the sum of n bytes from S into D, their parity
+    // (XOR) into D+1; bytes as SystemRole::ByteMode says.
+    CheckCode,
 };
 
 // Timer behaviours beyond the plain on-delay (PL110 TOFF / TONR).
@@ -299,6 +306,9 @@ struct InstructionSpec {
     CounterMode counterMode = CounterMode::Up; // Op::UpDownCounter
     // The differentiated form ("@MOV(21)", W353): runs once when its condition turns ON.
     bool differentiated = false;
+    // The 32-bit form (the FX family's D prefix, Vigor DMOV): each word operand is the pair
+    // D (low word), D+1 (high word), or one 32-bit device; constants are 32-bit.
+    bool doubleWord = false;
 };
 
 struct Limits {
@@ -372,6 +382,15 @@ struct Semantics {
     ParallelPort parallelIn;  // VPC p77
 };
 
+// Devices the program reads and writes as memory while the PLC does more with them than the
+// simulator models (PL110 SM100..SM185: the display's pages and parameters, SM110 the keys;
+// seed 003 2.1.2): `check` warns (SIM101) at each use, naming the device and `what`.
+struct UnmodelledDevices {
+    QString first;              // the first device of the range, as written: "SM100"
+    QString last;               // the last one, inclusive: "SM109"
+    const char *what = nullptr; // QT_TRANSLATE_NOOP("rung::model::Target", ...): what is missed
+};
+
 // A block of a model's terminals as its terminal strip groups them (Vigor X0..X7, CPM1
 // channel 000 bits 00..11, PL110 I1..I8, VPC a00..a03): the simulator's I/O panel draws one
 // group per block. An area the program cannot write (Area::writable false) is an input,
@@ -423,6 +442,7 @@ public:
     QString displayName; // "VPC", "Vigor M/VB/VH", "Omron CPM1", "PL110"
     std::vector<Area> areas;
     std::vector<SystemDevice> systemDevices;
+    std::vector<UnmodelledDevices> unmodelled; // what the simulator leaves as plain memory
     std::vector<InstructionSpec> instructions;
     std::vector<ModelVariant> models;
     Limits limits;

@@ -184,6 +184,32 @@ Target makePl110Target() {
          QT_TRANSLATE_NOOP("rung::model::Target", "maximum scan time (0.1 ms)"), 100},
     };
 
+    // What the simulator keeps as plain memory (2.1.2): the display of the PL110-2A and its
+    // terminal. `check` warns at each use (SIM101). SM111..SM117 are not in the manual's table.
+    t.unmodelled = {
+        {QStringLiteral("SM100"), QStringLiteral("SM105"),
+         QT_TRANSLATE_NOOP("rung::model::Target",
+                           "the display (standby brightness and delay, system and user pages "
+                           "enabled, start page, page shown) is not modelled; the word is plain "
+                           "memory")},
+        {QStringLiteral("SM106"), QStringLiteral("SM106"),
+         QT_TRANSLATE_NOOP("rung::model::Target",
+                           "the PLC shows the page requested and then resets SM106 to 0; the "
+                           "simulator shows no page and keeps the value written")},
+        {QStringLiteral("SM107"), QStringLiteral("SM109"),
+         QT_TRANSLATE_NOOP("rung::model::Target",
+                           "the terminal (the last variable changed from the keys, the password "
+                           "entered) is not modelled; the word stays as the program leaves it")},
+        {QStringLiteral("SM110"), QStringLiteral("SM110"),
+         QT_TRANSLATE_NOOP("rung::model::Target",
+                           "the terminal's keys (SWAP, UP, DOWN, SET) are not modelled: no key "
+                           "is ever pressed unless you write the word")},
+        {QStringLiteral("SM118"), QStringLiteral("SM185"),
+         QT_TRANSLATE_NOOP("rung::model::Target",
+                           "the user pages' parameter fields (SetPAR, FormatPAR, PosPAR) are not "
+                           "modelled: nothing is shown or edited")},
+    };
+
     // Contacts. The plain spellings come first: Target::findInstruction(op, mode) returns the
     // first match, and that is what the converter writes.
     addContactFamily(

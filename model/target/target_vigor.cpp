@@ -175,8 +175,11 @@ Target makeVigorTarget() {
          QT_TRANSLATE_NOOP("rung::model::Target", "1 s clock")},
         {QStringLiteral("M9014"), SystemRole::Clock1min,
          QT_TRANSLATE_NOOP("rung::model::Target", "1 min clock")},
-        {QStringLiteral("M9161"), SystemRole::Other,
-         QT_TRANSLATE_NOOP("rung::model::Target", "RS instruction: 8-bit mode (OFF: 16-bit)")},
+        // Set by the program (seed 001's RS programs: "M9161 Assign 8-bits processing mode").
+        {QStringLiteral("M9161"), SystemRole::ByteMode,
+         QT_TRANSLATE_NOOP("rung::model::Target",
+                           "RS, CCD, ASCI, HEX: 8-bit mode, one byte a word (OFF: 16-bit)"),
+         1000, true},
         {QStringLiteral("M9168"), SystemRole::Other,
          QT_TRANSLATE_NOOP("rung::model::Target", "SMOV works on hexadecimal digits")},
         {QStringLiteral("M9199"), SystemRole::Other,
@@ -338,6 +341,20 @@ Target makeVigorTarget() {
     const OperandSpec dst{K::WordDest};
     in.push_back(apply("MOV", ApplyFunction::Mov, {src, dst}, 5,
                        QT_TRANSLATE_NOOP("rung::model::Target", "Move S to D"), "S D"));
+    // DMOV H00310035 D4 (seed 001, B-3-9 and B-4-5: two ASCII characters a call, "1" into D5
+    // and "5" into D4): MOV's 32-bit form, FNC 12 with the FX family's D prefix, 9 steps
+    // (one for the instruction, four for each 32-bit operand, as Delta's DMOV).
+    InstructionSpec dmov =
+        apply("DMOV", ApplyFunction::Mov, {src, dst}, 9,
+              QT_TRANSLATE_NOOP("rung::model::Target",
+                                "Move 32 bits: S (S, S+1) to D (low word), D+1 (high word)"),
+              "S D");
+    dmov.functionCode = 12;
+    dmov.doubleWord = true;
+    for (OperandSpec &o : dmov.operands)
+        o.wholeWords = true; // a pair of words, not a group of 16 bits (K4M0)
+    dmov.operands[1].words = 2;
+    in.push_back(dmov);
     OperandSpec blockSrc = src;
     blockSrc.wholeWords = true;
     OperandSpec blockDst = dst;
@@ -400,9 +417,9 @@ Target makeVigorTarget() {
         "BIN", ApplyFunction::FromBcd, {src, dst}, 5,
         QT_TRANSLATE_NOOP("rung::model::Target", "D = the value of the BCD digits S"), "S D"));
     // Special modules, I/O refresh and communication: accepted, not simulated (check warns,
-    // SIM100). Neither seed gives step counts: each is the FX family's 16-bit size, one step
-    // for the instruction and two for each operand (Delta's tables, which seed 004 belongs
-    // to, give FROM/TO 9, CCD 7, REF 5 the same way). Operands as seed 001's pages and
+    // SIM100); CCD is simulated. Neither seed gives step counts: each is the FX family's 16-bit
+    // size, one step for the instruction and two for each operand (Delta's tables, which seed 004
+    // belongs to, give FROM/TO 9, CCD 7, REF 5 the same way). Operands as seed 001's pages and
     // example programs write them.
     // FROM / TO m1 m2 D n (seed 001's VB-1COM pages: FROM K1 K2000 D50 K15, TO K1 K1000 D0
     // K15): n words at least one, the block D..D+n-1 inside the registers.
@@ -421,9 +438,32 @@ Target makeVigorTarget() {
         apply("TO", ApplyFunction::NotSimulated, {src, src, moduleSrc, moduleWords}, 9,
               QT_TRANSLATE_NOOP("rung::model::Target", "Write n words to special module m1, at m2"),
               "m1 m2 S n"));
-    in.push_back(apply("CCD", ApplyFunction::NotSimulated, {src, dst, {K::Count}}, 7,
-                       QT_TRANSLATE_NOOP("rung::model::Target", "Sum and parity check of n bytes"),
-                       "S D n"));
+    // TOP K1 K0 H7096 K1 (seed 001 B-4-5, the VB-1COM's communication format): TO's pulse
+    // form, FNC 79, run once when its condition turns ON; not simulated either.
+    InstructionSpec top =
+        apply("TOP", ApplyFunction::NotSimulated, {src, src, moduleSrc, moduleWords}, 9,
+              QT_TRANSLATE_NOOP("rung::model::Target",
+                                "Write n words to special module m1, at m2, once on a rising edge"),
+              "m1 m2 S n");
+    top.functionCode = 79;
+    in.push_back(top);
+    // CCD D52 D104 K11 (seed 001 B-3-9, B-4-5: the check code of a frame, one character a
+    // word with M9161 ON). FNC 84; n = 1..256 bytes (FX, Delta).
+    OperandSpec ccdSource = src;
+    ccdSource.wholeWords = true;
+    OperandSpec ccdSum = dst;
+    ccdSum.words = 2; // D: the sum, D+1: the parity
+    OperandSpec bytes{K::Count};
+    bytes.lowest = 1;
+    bytes.highest = 256;
+    InstructionSpec ccd =
+        apply("CCD", ApplyFunction::CheckCode, {ccdSource, ccdSum, bytes}, 7,
+              QT_TRANSLATE_NOOP("rung::model::Target",
+                                "Check code: the sum of n bytes from S into D, their parity into "
+                                "D+1 (M9161 ON: one byte a word)"),
+              "S D n");
+    ccd.functionCode = 84;
+    in.push_back(ccd);
     // Seed 004 1.1 ("Scan time exception"): "A direct I/O refresh instruction REF allows the
     // PLC to access I/O immediately": inputs or outputs, X or Y only. (The FX / Delta habit of
     // a start that is a multiple of 8 is not in the seeds and not enforced.)

@@ -42,6 +42,22 @@ const Case kCases[] = {
     {"Cpm1HostLink", model::Family::Cpm1, ProtocolKind::HostLink, 0, 11},     // 7E2
 };
 
+// The fake PLC (the codecs' slave side) that answers the case's protocol.
+struct FakePlcs {
+    const Case &c;
+    test::FakeVigorPlc vigor;
+    test::FakeModbusPlc modbus;
+    test::FakeHostLinkPlc hostLink;
+    explicit FakePlcs(const Case &which)
+        : c(which)
+        , modbus(which.station) {}
+    test::FakeTransport::Responder responder() {
+        return c.protocol == ProtocolKind::VigorLink  ? vigor.responder()
+               : c.protocol == ProtocolKind::HostLink ? hostLink.responder()
+                                                      : modbus.responder();
+    }
+};
+
 std::unique_ptr<Driver> makeDriver(const Case &c, std::unique_ptr<Transport> transport) {
     QString error;
     return Driver::create(model::Target::get(c.family), c.protocol, std::move(transport), c.station,
@@ -148,13 +164,8 @@ BENCHMARK(BM_Plan200Scattered)->DenseRange(0, 3)->Unit(benchmark::kMicrosecond);
 void BM_RefreshOverPty(benchmark::State &state) {
     const Case &c = kCases[state.range(0)];
     state.SetLabel(c.name);
-    test::FakeVigorPlc vigor;
-    test::FakeModbusPlc modbus(c.station);
-    test::FakeHostLinkPlc hostLink;
-    const auto responder = c.protocol == ProtocolKind::VigorLink  ? vigor.responder()
-                           : c.protocol == ProtocolKind::HostLink ? hostLink.responder()
-                                                                  : modbus.responder();
-    test::PtyPeer peer(responder, true);
+    FakePlcs plcs(c);
+    test::PtyPeer peer(plcs.responder(), true);
     if (!peer.ok()) {
         state.SkipWithError(peer.error().toStdString().c_str());
         return;
@@ -219,14 +230,9 @@ void BM_OnlineRefreshAt19200(benchmark::State &state) {
     const Case &c = kCases[state.range(0)];
     const bool inRuns = state.range(1) == 1;
     state.SetLabel(std::string(c.name) + (inRuns ? " 100 in runs" : " 100 scattered"));
-    test::FakeVigorPlc vigor;
-    test::FakeModbusPlc modbus(c.station);
-    test::FakeHostLinkPlc hostLink;
-    const auto responder = c.protocol == ProtocolKind::VigorLink  ? vigor.responder()
-                           : c.protocol == ProtocolKind::HostLink ? hostLink.responder()
-                                                                  : modbus.responder();
+    FakePlcs plcs(c);
     const bool rtu = c.protocol == ProtocolKind::ModbusRtu;
-    test::PtyPeer peer(responder, true, {19200, c.bitsPerCharacter, rtu ? 3.5 : 0.0});
+    test::PtyPeer peer(plcs.responder(), true, {19200, c.bitsPerCharacter, rtu ? 3.5 : 0.0});
     if (!peer.ok()) {
         state.SkipWithError(peer.error().toStdString().c_str());
         return;

@@ -63,16 +63,18 @@ TEST(CliCheck, SyntaxErrorsHaveLineAndColumn) {
               QStringLiteral("%1:2:6: error: Y8: Y is numbered in octal [SYN001]\n").arg(file));
 }
 
+// A rung whose X2 would carry power right to left (RC001 at rung 1, row 1, column 4).
+constexpr char kBridgeLadder[] = "LADDER vigor WIDTH 8\n"
+                                 "RUNG 1 ROWS 3 COLUMNS 3\n"
+                                 "|-[ X0 ]-+----------[ X1 ]-+(OUT Y0)\n"
+                                 "|        |                 |\n"
+                                 "|        +-[ X2 ]-+        +\n"
+                                 "|                 |        |\n"
+                                 "|-[ X3 ]----------+-[ X4 ]-+\n";
+
 TEST(CliCheck, LadderFindingsNameTheRung) {
     QTemporaryDir dir;
-    const QString file = write(dir, QStringLiteral("bridge.ladder"),
-                               "LADDER vigor WIDTH 8\n"
-                               "RUNG 1 ROWS 3 COLUMNS 3\n"
-                               "|-[ X0 ]-+----------[ X1 ]-+(OUT Y0)\n"
-                               "|        |                 |\n"
-                               "|        +-[ X2 ]-+        +\n"
-                               "|                 |        |\n"
-                               "|-[ X3 ]----------+-[ X4 ]-+\n");
+    const QString file = write(dir, QStringLiteral("bridge.ladder"), kBridgeLadder);
     const CliRun r = cli({QStringLiteral("check"), file});
     EXPECT_EQ(r.code, 1);
     EXPECT_TRUE(r.out.contains(QStringLiteral("%1:rung 1:1:4: error: Reverse current").arg(file)))
@@ -263,6 +265,36 @@ TEST(CliBinary, LangPicksTheLanguageOverTheLocale) {
     EXPECT_EQ(code, 2);
     EXPECT_TRUE(wrong.contains(QStringLiteral("--lang must be one of en, hu, it")))
         << wrong.toStdString();
+}
+
+// The place of a finding on the ladder ("rung 1:1:4") speaks the language of --lang too.
+TEST(CliBinary, LangTranslatesTheRungOfAFindingsPlace) {
+    QTemporaryDir dir;
+    const QString file = write(dir, QStringLiteral("bridge.ladder"), kBridgeLadder);
+    const auto run = [&](const char *lang) {
+        QProcessEnvironment env = QProcessEnvironment::systemEnvironment();
+        for (const char *name : {"LC_ALL", "LC_MESSAGES", "LANGUAGE"})
+            env.remove(QString::fromLatin1(name));
+        env.insert(QStringLiteral("LANG"), QStringLiteral("C"));
+        QProcess p;
+        p.setProcessEnvironment(env);
+        p.start(QStringLiteral(RUNG_CLI_PATH), {QStringLiteral("--lang"), QString::fromLatin1(lang),
+                                                QStringLiteral("check"), file});
+        EXPECT_TRUE(p.waitForFinished(30000));
+        EXPECT_EQ(p.exitCode(), 1);
+        return QString::fromUtf8(p.readAllStandardOutput());
+    };
+    const QString english = run("en");
+    EXPECT_TRUE(english.contains(file + QStringLiteral(":rung 1:1:4: error: ")))
+        << english.toStdString();
+    const QString hungarian = run("hu");
+    EXPECT_TRUE(hungarian.contains(file + QStringLiteral(":létrafok 1:1:4: hiba: ")))
+        << hungarian.toStdString();
+    EXPECT_FALSE(hungarian.contains(QStringLiteral(":rung "))) << hungarian.toStdString();
+    const QString italian = run("it");
+    EXPECT_TRUE(italian.contains(file + QStringLiteral(":segmento 1:1:4: errore: ")))
+        << italian.toStdString();
+    EXPECT_FALSE(italian.contains(QStringLiteral(":rung "))) << italian.toStdString();
 }
 
 // The C locale gets English with its plural forms, not the "(s)" of the source text.

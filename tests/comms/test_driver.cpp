@@ -186,7 +186,7 @@ TEST(ModbusDriver, Pl110RunStopIsSm0Bit0AndTheModelIsWordsZeroAndOne) {
     PlcIdentity id;
     ASSERT_TRUE(f.driver->identify(&id).ok());
     EXPECT_EQ(id.model, QStringLiteral("device type 110"));
-    EXPECT_EQ(id.version, QStringLiteral("firmware 12"));
+    EXPECT_EQ(id.version, QStringLiteral("12")); // the panel says "version 12"
     EXPECT_TRUE(f.port->mismatch().isEmpty()) << f.port->mismatch().toStdString();
 }
 

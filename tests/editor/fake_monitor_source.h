@@ -32,6 +32,8 @@ public:
 
     std::vector<model::DeviceCommand> commands;
     QString failWith; // empty: every command succeeds
+    QString refusal;  // forceRefusal(): empty, the source can force
+    QString forceRefusal() const override { return refusal; }
 
 protected:
     void startCommand(CommandId id, const model::DeviceCommand &command) override {

@@ -8,10 +8,13 @@
 #include "editor/io_panel.h"
 #include "editor/terminal_widgets.h"
 
+#include <QApplication>
+#include <QMenu>
 #include <QSignalSpy>
 #include <QSlider>
 #include <QSpinBox>
 #include <QTest>
+#include <QTimer>
 
 #include <gtest/gtest.h>
 
@@ -98,6 +101,39 @@ TEST(IoPanel, APushButtonIsOnWhileHeldByMouseOrSpace) {
     QTest::keyRelease(x3, Qt::Key_Space);
     ASSERT_EQ(source.commands.size(), 4u);
     EXPECT_EQ(source.commands[3].value, 0);
+}
+
+// An input's context menu greys its forces and says why where the source cannot force (an
+// online PLC whose protocol has no force command).
+TEST(IoPanel, AnInputsForcesAreGreyedWithTheReasonWhereTheSourceCannotForce) {
+    const model::Target &t = model::Target::get(model::Family::Vigor);
+    editor::Document document;
+    document.reset(t, QStringLiteral("VB"));
+    editor::IoPanel panel(&document);
+    test::FakeMonitorSource source;
+    source.refusal = QStringLiteral("This PLC cannot force bits");
+    panel.setMonitorSource(&source);
+    panel.show();
+    editor::InputTerminal *x0 = panel.input(QStringLiteral("X0"));
+    ASSERT_TRUE(x0);
+    QStringList seen; // "text|enabled|tooltip" of each entry of the open menu
+    QTimer::singleShot(0, [&seen] {
+        auto *menu = qobject_cast<QMenu *>(QApplication::activePopupWidget());
+        if (!menu)
+            return;
+        for (QAction *a : menu->actions())
+            if (!a->isSeparator())
+                seen << QStringLiteral("%1|%2|%3")
+                            .arg(a->text(), a->isEnabled() ? "on" : "off", a->toolTip());
+        menu->close();
+    });
+    emit x0->customContextMenuRequested(QPoint(2, 2));
+    ASSERT_FALSE(seen.isEmpty()) << "no menu opened";
+    for (const char *force : {"Force ON", "Force OFF", "Release"})
+        EXPECT_TRUE(
+            seen.contains(QStringLiteral("%1|off|%2").arg(QLatin1String(force), source.refusal)))
+            << force << ": " << seen.join(QLatin1Char(' ')).toStdString();
+    EXPECT_TRUE(source.commands.empty());
 }
 
 TEST(IoPanel, ASwitchTogglesFromTheStateTheImageShows) {

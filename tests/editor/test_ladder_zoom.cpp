@@ -50,8 +50,12 @@ TEST(LadderZoom, FitToWidthKeepsTheTextReadableAndScrollsInstead) {
     ASSERT_TRUE(QTest::qWaitForWindowExposed(&view));
     view.setFitWidth(true);
     const editor::LadderMetrics m = view.metrics();
-    EXPECT_GE(static_cast<int>(m.rowHeight * 0.24), 10); // ladder_painter's label size
-    EXPECT_GE(static_cast<int>(m.rowHeight * 0.2), 8);   // and the names'
+    // The sizes the painter draws with at this zoom: device labels and the small text (names,
+    // comments, rung numbers).
+    const editor::LadderMetrics::FontSizes sizes = m.fontSizes();
+    EXPECT_GE(sizes.label, 10);
+    EXPECT_GE(sizes.small, 9);
+    EXPECT_LT(view.zoom(), 1.0); // it did shrink, as far as readable
     EXPECT_GT(m.width(), view.viewport()->width());
     EXPECT_GT(view.horizontalScrollBar()->maximum(), 0); // the rest is a scroll away
     EXPECT_TRUE(view.fitWidth());

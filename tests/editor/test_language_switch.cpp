@@ -129,9 +129,34 @@ TEST_F(LanguageSwitch, TheChoiceIsRememberedForTheNextStart) {
     EXPECT_TRUE(test::menuAction(next, "Italiano")->isChecked());
     // No choice made: the system's language when we have it, else English.
     QSettings().remove(QStringLiteral("ui/language"));
-    const QString system = QLocale::system().name().left(2);
-    EXPECT_EQ(app::startLanguage(),
-              app::availableLanguages().contains(system) ? system : QStringLiteral("en"));
+    EXPECT_EQ(app::startLanguage(), app::languageFor(QLocale::system()));
+}
+
+// The first start speaks the system's language where we have it, English elsewhere.
+TEST(StartLanguage, TheFirstStartFollowsTheSystemLocale) {
+    EXPECT_EQ(app::languageFor(QLocale(QStringLiteral("hu_HU"))), QStringLiteral("hu"));
+    EXPECT_EQ(app::languageFor(QLocale(QStringLiteral("it_IT"))), QStringLiteral("it"));
+    EXPECT_EQ(app::languageFor(QLocale(QStringLiteral("it_CH"))), QStringLiteral("it"));
+    EXPECT_EQ(app::languageFor(QLocale(QStringLiteral("de_DE"))), QStringLiteral("en"));
+    EXPECT_EQ(app::languageFor(QLocale(QStringLiteral("en_US"))), QStringLiteral("en"));
+    EXPECT_EQ(app::languageFor(QLocale::c()), QStringLiteral("en"));
+}
+
+// A language chosen in the menu wins over the locale at every later start; a remembered value
+// we have no catalogue for (an older version's, edited by hand) falls back to the locale.
+TEST(StartLanguage, TheRememberedChoiceWinsOverTheLocale) {
+    EXPECT_EQ(app::languageFor(QLocale(QStringLiteral("hu_HU")), QStringLiteral("it")),
+              QStringLiteral("it"));
+    EXPECT_EQ(app::languageFor(QLocale(QStringLiteral("it_IT")), QStringLiteral("en")),
+              QStringLiteral("en"));
+    EXPECT_EQ(app::languageFor(QLocale(QStringLiteral("de_DE")), QStringLiteral("hu")),
+              QStringLiteral("hu"));
+    EXPECT_EQ(app::languageFor(QLocale(QStringLiteral("hu_HU")), QStringLiteral("xx")),
+              QStringLiteral("hu"));
+    // startLanguage() reads the remembered choice.
+    QSettings().setValue(QStringLiteral("ui/language"), QStringLiteral("hu"));
+    EXPECT_EQ(app::startLanguage(), QStringLiteral("hu"));
+    QSettings().remove(QStringLiteral("ui/language"));
 }
 
 // The New Project dialog leaves its title room in a title bar: in Italian it read

@@ -259,6 +259,13 @@ TEST_F(Fixture, TypedTextWithErrorsGivesWayToALadderEditButStaysInTheListsUndo) 
     ASSERT_EQ(window.ilEditor()->text(), typed);
     ladder()->setFocus();
     ladder()->setCursor({0, 0, 1});
+    // Asked first (test_ladder_edit_over_typed_list.cpp): the user lets the list go.
+    QTimer::singleShot(0, &window, [] {
+        if (auto *box = qobject_cast<QMessageBox *>(QApplication::activeModalWidget()))
+            for (QAbstractButton *b : box->buttons())
+                if (b->text() == QStringLiteral("Replace the List"))
+                    b->click();
+    });
     typeIntoCell(Qt::Key_F5, "X1");
     EXPECT_EQ(listing(), QStringLiteral("LD X0\nAND X1\nOUT Y0\nEND\n"));
     EXPECT_EQ(window.ilEditor()->text(), listing());

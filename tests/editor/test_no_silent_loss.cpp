@@ -238,7 +238,12 @@ TEST_F(NoSilentLoss, EditingSymbolsOrWatchListsKeepsTheListAsTyped) {
     const auto saved = model::loadProject(path, nullptr);
     ASSERT_TRUE(saved);
     EXPECT_EQ(saved->pendingListing, kTyped);
-    // An edit of the rungs still brings the ladder's listing into the list, as before.
+    // An edit of the rungs still brings the ladder's listing into the list, once the user
+    // agreed to it.
+    QTimer::singleShot(0, &window, [] {
+        if (auto *box = qobject_cast<QMessageBox *>(QApplication::activeModalWidget()))
+            box->buttons().front()->click(); // "Replace the List"
+    });
     window.document()->insertRung(0, window.document()->ladder().rungs.front());
     EXPECT_EQ(window.ilEditor()->text(), window.document()->listingText());
 }

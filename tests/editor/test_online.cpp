@@ -18,6 +18,7 @@
 #include <QDockWidget>
 #include <QHelpEvent>
 #include <QLabel>
+#include <QLayout>
 #include <QLineEdit>
 #include <QMenu>
 #include <QPlainTextEdit>
@@ -334,6 +335,37 @@ TEST_P(Online, WritesAskOnceNameTheDeviceAndThePlcAndShowTheAnswer) {
     EXPECT_EQ(plcValue(c.result), 41 + c.offset);
 }
 
+// The ladder's context menu offers a force only where the protocol has one; elsewhere the
+// entries are greyed and say why (and what to do instead), instead of a refusal after a try.
+TEST_P(Online, TheContextMenuOffersForcesOnlyWhereTheProtocolCanForce) {
+    auto *ladder = window.findChild<editor::LadderView *>();
+    ASSERT_TRUE(ladder);
+    goOnline();
+    std::unique_ptr<QMenu> menu(ladder->monitorMenu({0, 0, 0}, nullptr));
+    ASSERT_NE(menu, nullptr);
+    const auto entry = [&menu](const QString &text) -> QAction * {
+        for (QAction *a : menu->actions())
+            if (QString(a->text()).remove(QLatin1Char('&')) == text)
+                return a;
+        return nullptr;
+    };
+    const QString input = model::formatAddress(target, at(c.input));
+    QAction *force = entry(QStringLiteral("Force %1 ON").arg(input));
+    QAction *release = entry(QStringLiteral("Release %1").arg(input));
+    QAction *set = entry(QStringLiteral("Set %1 ON").arg(input));
+    ASSERT_TRUE(force && release && set);
+    EXPECT_TRUE(set->isEnabled());
+    EXPECT_EQ(force->isEnabled(), c.forces);
+    EXPECT_EQ(release->isEnabled(), c.forces);
+    EXPECT_EQ(session()->forceRefusal().isEmpty(), c.forces);
+    if (!c.forces) {
+        EXPECT_TRUE(force->toolTip().contains(session()->plcName()))
+            << force->toolTip().toStdString();
+        EXPECT_TRUE(force->toolTip().contains(QStringLiteral("Set the bit instead")))
+            << force->toolTip().toStdString();
+    }
+}
+
 TEST_P(Online, RunAndStopAskFirstAndTheModeFollows) {
     goOnline();
     ASSERT_TRUE(
@@ -397,7 +429,14 @@ TEST_P(Online, APulledCableShowsAtOnceKeepsStaleValuesAndReconnectsByItself) {
     cable->cut(true);
     ASSERT_TRUE(
         QTest::qWaitFor([&] { return session()->connectionState() == State::Lost; }, kPatienceMs));
-    EXPECT_TRUE(panel->stateText().startsWith(QStringLiteral("Link lost: ")))
+    EXPECT_TRUE(panel->stateText().startsWith(QStringLiteral("Connection ")))
+        << panel->stateText().toStdString();
+    // Said once: "lost", the PLC, the cause, and that it tries again.
+    EXPECT_EQ(panel->stateText().count(QStringLiteral("lost")), 1)
+        << panel->stateText().toStdString();
+    EXPECT_EQ(panel->stateText().count(QStringLiteral("Trying again")), 1)
+        << panel->stateText().toStdString();
+    EXPECT_TRUE(panel->stateText().contains(session()->plcName()))
         << panel->stateText().toStdString();
     EXPECT_FALSE(session()->errorText().isEmpty());
     EXPECT_TRUE(QTest::qWaitFor([&] { return shown() && shown()->stale; }, kPatienceMs));
@@ -551,6 +590,29 @@ TEST(OnlinePanel, TestConnectionWithoutAPortShowsThePanelAndAsksForOne) {
     EXPECT_EQ(panel->session(), nullptr);
 }
 
+// The TCP settings take the room they need: no gap where the serial ones (three rows) would be.
+TEST(OnlinePanel, TheTcpSettingsAreNotFollowedByTheSerialOnesRoom) {
+    app::MainWindow window;
+    window.newProject(model::Target::get(model::Family::Pl110), QString());
+    app::ConnectionPanel *panel = window.connectionPanel();
+    auto *via = panel->findChild<QWidget *>(QStringLiteral("connectionVia"));
+    auto *host = panel->findChild<QLineEdit *>(QStringLiteral("connectionHost"));
+    auto *port = panel->findChild<QComboBox *>(QStringLiteral("connectionPort"));
+    ASSERT_TRUE(via && host && port);
+    window.show();
+    const auto heightFor = [via] { return via->layout()->totalHeightForWidth(300); };
+    comms::ConnectionSettings s = comms::defaultSettings(comms::ProtocolKind::ModbusTcp);
+    s.via = comms::ConnectionSettings::Via::Tcp;
+    panel->setSettings(s);
+    ASSERT_TRUE(host->isVisibleTo(panel));
+    ASSERT_FALSE(port->isVisibleTo(panel));
+    const int tcp = heightFor();
+    panel->setSettings(comms::defaultSettings(comms::ProtocolKind::ModbusRtu));
+    ASSERT_TRUE(port->isVisibleTo(panel));
+    const int serial = heightFor();
+    EXPECT_LT(tcp, serial) << "the TCP settings (two rows) keep the serial ones' (three) room";
+}
+
 TEST(OnlinePanel, AVpcIsListedAndSaysWhatToDoInstead) {
     app::MainWindow window;
     window.newProject(model::Target::get(model::Family::Vpc), QString());
@@ -561,7 +623,18 @@ TEST(OnlinePanel, AVpcIsListedAndSaysWhatToDoInstead) {
     EXPECT_TRUE(note->text().contains(QStringLiteral("not published")));
     EXPECT_TRUE(note->text().contains(QStringLiteral("rungstudio-cli record")));
     EXPECT_FALSE(panel->connectToPlc());
-    EXPECT_FALSE(window.findChild<QAction *>(QStringLiteral("onlineConnect"))->isEnabled());
+    // Greyed in the Online menu and the tool bar, and hovering says why and what instead.
+    for (const char *name : {"onlineConnect", "onlineTest"}) {
+        QAction *a = window.findChild<QAction *>(QString::fromLatin1(name));
+        EXPECT_FALSE(a->isEnabled()) << name;
+        EXPECT_EQ(a->toolTip(), note->text()) << name;
+    }
+    // A PL110 project after it: the entries are live and say what they do.
+    window.newProject(model::Target::get(model::Family::Pl110), QString());
+    QAction *go = window.findChild<QAction *>(QStringLiteral("onlineConnect"));
+    EXPECT_TRUE(go->isEnabled());
+    EXPECT_TRUE(go->toolTip().startsWith(QStringLiteral("Go Online")))
+        << go->toolTip().toStdString();
 }
 
 TEST(OnlinePanel, ThePortIsRememberedForTheNextWindow) {

@@ -114,16 +114,18 @@ TEST_F(Problems, ALadderThatCannotBeListedShowsEachProblemOnce) {
 }
 
 TEST_F(Problems, AReorderingFixOfTheTypedListIsOneUndoStep) {
-    // Vigor manual form: a block after a single contact (FZ004).
-    const QString typed = QStringLiteral("LD X0\nLD X1\nLD X2\nORB\nANB\nOUT Y0\nEND\n");
+    // An output read from the stack that can go before the MPS (FZ006): its fix reorders the
+    // program. (FZ004 on a block with a branch keeps the order now: the rung's simplest form.)
+    const QString typed =
+        QStringLiteral("LD X0\nMPS\nLD X1\nLD X2\nORB\nANB\nOUT Y0\nMPP\nOUT Y1\nEND\n");
     window.ilEditor()->setText(typed);
     window.applyListing();
     const std::vector<model::Rung> before = window.document()->ladder().rungs;
     ASSERT_EQ(before, programOf(typed));
-    const model::Diagnostic *fz004 = shownWithCode("FZ004");
-    ASSERT_NE(fz004, nullptr) << describe(shown());
-    ASSERT_TRUE(fz004->fix.has_value());
-    const model::Diagnostic fix = *fz004;
+    const model::Diagnostic *fz006 = shownWithCode("FZ006");
+    ASSERT_NE(fz006, nullptr) << describe(shown());
+    ASSERT_TRUE(fz006->fix.has_value());
+    const model::Diagnostic fix = *fz006;
     QUndoStack *stack = window.document()->undoStack();
     const int steps = stack->count();
 
@@ -132,9 +134,9 @@ TEST_F(Problems, AReorderingFixOfTheTypedListIsOneUndoStep) {
     EXPECT_NE(fixed, typed);
     EXPECT_TRUE(fixed.startsWith(fix.fix->listing)) << fixed.toStdString();
     const std::vector<model::Rung> reordered = programOf(fixed);
-    EXPECT_NE(reordered, before); // the contact moved behind the block
+    EXPECT_NE(reordered, before); // the output moved before the MPS
     EXPECT_EQ(window.document()->ladder().rungs, reordered);
-    EXPECT_EQ(shownWithCode("FZ004"), nullptr);
+    EXPECT_EQ(shownWithCode("FZ006"), nullptr);
     EXPECT_EQ(stack->count(), steps + 1);
     EXPECT_EQ(stack->undoText(), fix.fix->label);
     EXPECT_FALSE(fix.fix->label.isEmpty());

@@ -7,8 +7,12 @@
 
 #include <QApplication>
 #include <QDockWidget>
+#include <QElapsedTimer>
 #include <QFile>
+#include <QFileDialog>
+#include <QFileInfo>
 #include <QLabel>
+#include <QLineEdit>
 #include <QMessageBox>
 #include <QPushButton>
 #include <QScreen>
@@ -182,4 +186,112 @@ TEST_F(SavePath, AnAddedExtensionThatNamesAnExistingFileAsksBeforeReplacingIt) {
     EXPECT_EQ(window.completeSavePath(latch, {QStringLiteral("csv")}),
               latch + QStringLiteral(".csv"));
     EXPECT_TRUE(asked);
+}
+
+namespace {
+
+// Drives the dialogs a menu entry opens, as a user would: in the (non-native) file dialog it
+// goes to `dir`, types `name` and accepts; a question after it is answered with `answer`, its
+// text kept in `asked`. Every dialog is closed by a deadline, so no test can hang on one.
+struct SaveDialogDriver {
+    QString dir;
+    QString name;
+    QMessageBox::StandardButton answer = QMessageBox::No;
+    QString asked;
+    bool sawFileDialog = false;
+    QTimer timer;
+    QElapsedTimer since;
+
+    SaveDialogDriver(const QString &folder, const QString &typed)
+        : dir(folder)
+        , name(typed) {
+        QCoreApplication::setAttribute(Qt::AA_DontUseNativeDialogs, true);
+        since.start();
+        timer.setInterval(20);
+        QObject::connect(&timer, &QTimer::timeout, [this] { step(); });
+        timer.start();
+    }
+    ~SaveDialogDriver() { QCoreApplication::setAttribute(Qt::AA_DontUseNativeDialogs, false); }
+    void step() {
+        QWidget *modal = QApplication::activeModalWidget();
+        if (since.elapsed() > 10000) {
+            if (modal)
+                modal->close();
+            return;
+        }
+        if (auto *files = qobject_cast<QFileDialog *>(modal)) {
+            sawFileDialog = true;
+            files->setDirectory(dir);
+            auto *edit = files->findChild<QLineEdit *>(QStringLiteral("fileNameEdit"));
+            if (!edit) {
+                files->reject();
+                return;
+            }
+            edit->clear();
+            QTest::keyClicks(edit, name);
+            static_cast<QDialog *>(files)->accept(); // QFileDialog::accept, as its Save button
+        } else if (auto *box = qobject_cast<QMessageBox *>(modal)) {
+            asked = box->text();
+            if (QAbstractButton *button = box->button(answer))
+                button->click();
+            else
+                box->reject();
+        }
+    }
+};
+
+QByteArray contents(const QString &path) {
+    QFile f(path);
+    return f.open(QIODevice::ReadOnly) ? f.readAll() : QByteArray();
+}
+
+} // namespace
+
+// Export Instruction List... as the user meets it: the file dialog, `latch` typed, and the
+// whole listing lands in latch.il (the format's extension added, no file named `latch`).
+TEST_F(SavePath, ExportInstructionListThroughTheMenuAddsTheExtension) {
+    load("LD X0\nOUT Y0\nEND\n");
+    QTemporaryDir dir;
+    QAction *entry = test::menuAction(window, QStringLiteral("Export Instruction List..."));
+    ASSERT_NE(entry, nullptr);
+    {
+        SaveDialogDriver driver(dir.path(), QStringLiteral("latch"));
+        entry->trigger();
+        EXPECT_TRUE(driver.sawFileDialog);
+        EXPECT_TRUE(driver.asked.isEmpty()) << driver.asked.toStdString(); // nothing to replace
+    }
+    EXPECT_FALSE(QFileInfo::exists(dir.filePath(QStringLiteral("latch"))));
+    EXPECT_EQ(QString::fromUtf8(contents(dir.filePath(QStringLiteral("latch.il")))),
+              window.document()->listingText());
+}
+
+// A file of the completed name exists: the export asks before replacing it, and No keeps it.
+TEST_F(SavePath, ExportInstructionListAsksBeforeReplacingAFile) {
+    load("LD X0\nOUT Y0\nEND\n");
+    QTemporaryDir dir;
+    const QString latch = dir.filePath(QStringLiteral("latch.il"));
+    {
+        QFile old(latch);
+        ASSERT_TRUE(old.open(QIODevice::WriteOnly));
+        old.write("old work\n");
+    }
+    QAction *entry = test::menuAction(window, QStringLiteral("Export Instruction List..."));
+    ASSERT_NE(entry, nullptr);
+    {
+        SaveDialogDriver driver(dir.path(), QStringLiteral("latch"));
+        driver.answer = QMessageBox::No;
+        entry->trigger();
+        EXPECT_TRUE(driver.sawFileDialog);
+        EXPECT_TRUE(driver.asked.contains(QStringLiteral("latch.il")))
+            << driver.asked.toStdString();
+    }
+    EXPECT_EQ(contents(latch), QByteArray("old work\n"));
+    {
+        SaveDialogDriver driver(dir.path(), QStringLiteral("latch"));
+        driver.answer = QMessageBox::Yes;
+        entry->trigger();
+        EXPECT_TRUE(driver.asked.contains(QStringLiteral("latch.il")))
+            << driver.asked.toStdString();
+    }
+    EXPECT_EQ(QString::fromUtf8(contents(latch)), window.document()->listingText());
 }

@@ -76,6 +76,21 @@ TEST_F(WatchCommands, ABitIsSetForcedAndReleasedFromItsContextActions) {
     EXPECT_TRUE(view->deviceActions(row(0), &owner).isEmpty());
 }
 
+// A source that cannot force (an online PLC whose protocol has no force command): the force
+// entries are greyed and say why; setting the bit stays.
+TEST_F(WatchCommands, ForcesAreGreyedWithTheReasonWhereTheSourceCannotForce) {
+    source.refusal = QStringLiteral("This PLC cannot force bits");
+    QObject owner;
+    const QList<QAction *> actions = view->deviceActions(row(0), &owner);
+    for (const char *text : {"Force ON", "Force OFF", "Release"}) {
+        ASSERT_NE(action(actions, text), nullptr) << text;
+        EXPECT_FALSE(action(actions, text)->isEnabled()) << text;
+        EXPECT_EQ(action(actions, text)->toolTip(), source.refusal) << text;
+    }
+    EXPECT_TRUE(action(actions, "Set ON")->isEnabled());
+    EXPECT_TRUE(action(actions, "Set OFF")->isEnabled());
+}
+
 TEST_F(WatchCommands, AWordOffersToWriteAValueAndTheValueColumnWritesIt) {
     QObject owner;
     const QList<QAction *> actions = view->deviceActions(row(1), &owner);

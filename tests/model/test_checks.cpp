@@ -75,7 +75,7 @@ const Case kCases[] = {
     // FZ004-FZ006 only where the text is not the canonical one (the canonical listing of a
     // ladder never gets a fuzzy-form warning); the clean program is the fix applied.
     {"FZ004", Family::Vigor, nullptr, "LD X0;LD X1;LD X2;ORB;ANB;OUT Y0;END",
-     "LD X1;LD X2;ORB;AND X0;OUT Y0;END"},
+     "LD X0;LD X1;OR X2;ANB;OUT Y0;END"},
     {"FZ005", Family::Vigor, nullptr, "LD X0;LD X1;AND X2;LD X3;ORB;ORB;OUT Y0;END",
      "LD X1;AND X2;LD X3;ORB;OR X0;OUT Y0;END"},
     {"FZ006", Family::Vigor, nullptr, "LD X0;MPS;LD X1;LD X2;ORB;ANB;OUT Y0;MPP;OUT Y1;END",
@@ -466,7 +466,8 @@ TEST(FuzzyForms, TheReorderingFixesAreTheManualsForms) {
         const char *program;
         const char *fixed;
     } cases[] = {
-        {"FZ004", "LD X0;LD X1;LD X2;ORB;ANB;OUT Y0;END", "LD X1;LD X2;ORB;AND X0;OUT Y0"},
+        // FZ004 keeps the single contact in front (AFixKeepsTheOrderOfContactsInSeries).
+        {"FZ004", "LD X0;LD X1;LD X2;ORB;ANB;OUT Y0;END", "LD X0;LD X1;OR X2;ANB;OUT Y0"},
         {"FZ005", "LD X0;LD X1;AND X2;LD X3;ORB;ORB;OUT Y0;END",
          "LD X1;AND X2;LD X3;ORB;OR X0;OUT Y0"},
         {"FZ006", "LD X0;MPS;LD X1;LD X2;ORB;ANB;OUT Y0;MPP;OUT Y1;END",
@@ -503,11 +504,27 @@ TEST(FuzzyForms, AFixKeepsTheOrderOfContactsInSeries) {
         EXPECT_EQ(d->fix->label, QStringLiteral("Join the contacts in series and drop the ANB"));
         EXPECT_TRUE(d->message.contains(QStringLiteral("AND"))) << d->message.toStdString();
     }
-    // A block with a branch still goes to the front: there is no other way to write it.
+    // A block with a branch after a single contact: X0 stays in front (it used to move behind
+    // the branch, LD X1 / LD X2 / ORB / AND X0), the branch is written as an OR, and the rung
+    // so fixed has no fuzzy form left.
     const auto ds = check(Family::Vigor, nullptr, text("LD X0;LD X1;LD X2;ORB;ANB;OUT Y0;END"));
     const Diagnostic *d = find(ds, "FZ004");
-    ASSERT_NE(d, nullptr);
-    EXPECT_EQ(d->fix->label, QStringLiteral("Move the block to the front and drop the ANB"));
+    ASSERT_NE(d, nullptr) << all(ds).toStdString();
+    ASSERT_TRUE(d->fix.has_value());
+    EXPECT_EQ(d->fix->listing, text("LD X0;LD X1;OR X2;ANB;OUT Y0") + QLatin1Char('\n'));
+    EXPECT_FALSE(d->message.contains(QStringLiteral("front and drop"))) << d->message.toStdString();
+    const auto fixed = check(Family::Vigor, nullptr, d->fix->listing + QStringLiteral("END\n"));
+    for (const Diagnostic &left : fixed)
+        EXPECT_NE(left.severity, Severity::Error) << all(fixed).toStdString();
+    for (const Diagnostic &left : fixed)
+        EXPECT_FALSE(left.code.startsWith(QLatin1String("FZ"))) << all(fixed).toStdString();
+    // The same with more contacts on the branch: their order stays too.
+    const auto longer =
+        check(Family::Vigor, nullptr, text("LD X0;LD X1;AND X3;LD X2;ORB;ANB;OUT Y0;END"));
+    if (const Diagnostic *l = find(longer, "FZ004"); l && l->fix) {
+        EXPECT_TRUE(l->fix->listing.startsWith(QStringLiteral("LD X0\n")))
+            << l->fix->listing.toStdString();
+    }
 }
 
 TEST(FuzzyForms, CanonicalFormsOfTheManualGetNoWarning) {

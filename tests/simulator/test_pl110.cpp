@@ -1,6 +1,7 @@
 // PL110 boxes on the real target table and listing (seed 003 4.2.4 - 4.2.9): what the golden
 // traces in tests/data/sim/pl110_*.il do not pin.
 
+#include "model/checks/checks.h"
 #include "real_target_sim.h"
 
 #include <gtest/gtest.h>
@@ -451,4 +452,25 @@ TEST(Pl110Contacts, IfComparesWithASignedHashConstant) {
     s.engine->scan();
     EXPECT_FALSE(s.bit("Q4"));
     EXPECT_TRUE(s.bit("Q3"));
+}
+
+// Issue 14: what `check` warns as not simulated (SIM101, seed 003 2.1.2) the simulator says
+// again when it starts, with the same words, and SM106 keeps what the program wrote.
+TEST(Pl110Unmodelled, TheSimulatorWarnsAsCheckDoesAndKeepsThePageRequest) {
+    Pl110 s("LD SM0.0\nMOV 17 SM106\nLD SM110.3\nOUT Q1\nEND");
+    ASSERT_TRUE(s.result.ok());
+    std::vector<model::Diagnostic> fromCheck;
+    for (const model::Diagnostic &d : model::checkList(s.parsed.list, {}))
+        if (d.code == QLatin1String("SIM101"))
+            fromCheck.push_back(d);
+    ASSERT_EQ(fromCheck.size(), 2u);
+    ASSERT_EQ(s.result.diagnostics.size(), 2u);
+    for (std::size_t k = 0; k < 2; ++k) {
+        EXPECT_EQ(s.result.diagnostics[k].code, QLatin1String("SIM101"));
+        EXPECT_EQ(s.result.diagnostics[k].location.line, fromCheck[k].location.line);
+        EXPECT_EQ(s.result.diagnostics[k].message, fromCheck[k].message);
+    }
+    s.engine->scan();
+    s.engine->scan();
+    EXPECT_EQ(s.value("SM106"), 17); // the PLC would have reset it once the page was shown
 }

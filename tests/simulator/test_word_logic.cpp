@@ -75,7 +75,7 @@ TEST(VigorWordLogic, AValueBeyondFourBcdDigitsIsARuntimeErrorAndWritesNothing) {
 // Issue 14: special-module and refresh instructions are accepted, warned at check time and
 // when simulating, and do nothing in the simulator - never silently.
 TEST(VigorWordLogic, ModuleInstructionsAreAcceptedAndWarnedNotSimulated) {
-    Vigor s("LD M9000\nFROM K0 K1 D0 K2\nLD M9000\nTO K0 K1 D0 K2\nLD M9000\nCCD D0 D10 K4\n"
+    Vigor s("LD M9000\nFROM K0 K1 D0 K2\nLD M9000\nTO K0 K1 D0 K2\nLD M9000\nTOP K1 K0 H7096 K1\n"
             "LD M9000\nREF X0 K8\nEND");
     ASSERT_TRUE(s.parsed.ok()) << s.parsed.errors.front().message.toStdString();
     ASSERT_TRUE(s.result.ok());
@@ -122,4 +122,31 @@ TEST(Cpm1WordLogic, BinAndBcdConvertTheWholeFourDigits) {
     // The bare names are accepted, as for every CPM1 instruction with a function code.
     Cpm1 bare("LD 253.13\nBIN DM 0000 DM 0001\nEND(01)");
     EXPECT_TRUE(bare.result.ok());
+}
+
+// Issue 14: a CPM1 user reads a word as its four hexadecimal digits (#9999, W353 "ER: S is
+// greater than 270F"), not as the signed number the simulator holds (-26215); the Vigor's
+// words stay decimal, its BCD digits H-prefixed.
+TEST(Cpm1WordLogic, BcdErrorsShowTheWordAsTheFamilyWritesIt) {
+    Cpm1 s("LD 253.13\nBCD(24) DM 0000 DM 0001\nLD 253.13\nBIN(23) DM 0002 DM 0003\nEND(01)");
+    ASSERT_TRUE(s.result.ok());
+    s.engine->writeWord(s.at("DM 0000"), static_cast<std::int16_t>(0x9999));
+    s.engine->writeWord(s.at("DM 0002"), 0x12A4);
+    s.engine->scan();
+    ASSERT_EQ(s.engine->runtimeErrors().size(), 2u);
+    EXPECT_EQ(s.engine->runtimeErrors()[0].message,
+              QLatin1String("#9999 does not fit in BCD (0..#270F); the destination is unchanged"));
+    EXPECT_EQ(s.engine->runtimeErrors()[1].message,
+              QLatin1String("#12A4 is not a BCD number; the destination is unchanged"));
+
+    Vigor v("LD M9000\nBCD D0 D1\nLD M9000\nBIN D2 D3\nEND");
+    ASSERT_TRUE(v.result.ok());
+    v.engine->writeWord(v.at("D0"), -5);
+    v.engine->writeWord(v.at("D2"), 0x12A4);
+    v.engine->scan();
+    ASSERT_EQ(v.engine->runtimeErrors().size(), 2u);
+    EXPECT_EQ(v.engine->runtimeErrors()[0].message,
+              QLatin1String("-5 does not fit in BCD (0..9999); the destination is unchanged"));
+    EXPECT_EQ(v.engine->runtimeErrors()[1].message,
+              QLatin1String("H12A4 is not a BCD number; the destination is unchanged"));
 }
