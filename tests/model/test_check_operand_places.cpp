@@ -7,6 +7,8 @@
 
 #include <gtest/gtest.h>
 
+#include <optional>
+
 using namespace rung::model;
 
 namespace {
@@ -19,11 +21,12 @@ std::vector<Diagnostic> checked(Family family, const QString &text) {
     return checkList(parsed.list, options);
 }
 
-const Diagnostic *first(const std::vector<Diagnostic> &found, const char *code) {
+// A copy: the findings are a temporary of the caller's expression.
+std::optional<Diagnostic> first(const std::vector<Diagnostic> &found, const char *code) {
     for (const Diagnostic &d : found)
         if (d.code == QLatin1String(code))
-            return &d;
-    return nullptr;
+            return d;
+    return std::nullopt;
 }
 
 } // namespace
@@ -46,8 +49,9 @@ TEST(CheckOperandPlaces, AConstantThatBreaksARuleIsPointedAtByItsColumn) {
     };
     for (const Case &c : cases) {
         SCOPED_TRACE(c.text);
-        const Diagnostic *d = first(checked(c.family, QString::fromLatin1(c.text)), "OP005");
-        ASSERT_NE(d, nullptr);
+        const std::optional<Diagnostic> d =
+            first(checked(c.family, QString::fromLatin1(c.text)), "OP005");
+        ASSERT_TRUE(d.has_value());
         EXPECT_EQ(d->location.line, c.line);
         EXPECT_EQ(d->location.column, c.column);
     }
@@ -56,15 +60,15 @@ TEST(CheckOperandPlaces, AConstantThatBreaksARuleIsPointedAtByItsColumn) {
 TEST(CheckOperandPlaces, AWriteToAReadOnlyAreaReadsAsASentence) {
     // CPM1 DM 6144.. is "read-only data memory": the message once said "read-only data memory
     // are read-only".
-    const Diagnostic *d = first(
+    const std::optional<Diagnostic> d = first(
         checked(Family::Cpm1, QStringLiteral("LD 253.13\nMOV(21) #0001 DM 6144\nEND")), "OP002");
-    ASSERT_NE(d, nullptr);
+    ASSERT_TRUE(d.has_value());
     EXPECT_EQ(d->message,
               QStringLiteral("DM 6144 cannot be written: the program only reads it (read-only "
                              "data memory)"));
-    const Diagnostic *x =
+    const std::optional<Diagnostic> x =
         first(checked(Family::Vigor, QStringLiteral("LD M9000\nOUT X0\nEND")), "OP002");
-    ASSERT_NE(x, nullptr);
+    ASSERT_TRUE(x.has_value());
     EXPECT_EQ(x->message,
               QStringLiteral("X0 cannot be written: the program only reads it (inputs)"));
 }
