@@ -4977,12 +4977,12 @@ Kiértékelés: %4 µs (%5..%6)</translation>
         <translation>a(z) %2 %1 értéke #0DNS legyen, D, N és S számjegy 0 és 3 között, nem %3</translation>
     </message>
     <message>
-        <location line="+81"/>
+        <location line="+88"/>
         <source>the %1 of %2 must be BCD (#0000..#9999), not %3</source>
         <translation>a(z) %2 %1 értéke BCD legyen (#0000..#9999), nem %3</translation>
     </message>
     <message>
-        <location line="-39"/>
+        <location line="-46"/>
         <source>%1 or %2</source>
         <translation>%1 vagy %2</translation>
     </message>
@@ -4998,18 +4998,23 @@ Kiértékelés: %4 µs (%5..%6)</translation>
     </message>
     <message>
         <location line="+44"/>
-        <location line="+31"/>
+        <location line="+38"/>
         <source>the %1 of %2 must be %3, not %4</source>
         <translation>a(z) %2 %1 értéke %3 lehet, nem %4</translation>
     </message>
     <message>
-        <location line="-26"/>
-        <location line="+67"/>
+        <location line="-33"/>
+        <location line="+74"/>
         <source>%1 takes its %2 from %3 only, not %4</source>
         <translation>%1 a(z) %2 értékét csak ebből veszi: %3, nem ebből: %4</translation>
     </message>
     <message>
-        <location line="-37"/>
+        <location line="-66"/>
+        <source>the %1 of %2 must be a device, not %3</source>
+        <translation>a(z) %2 %1 operandus legyen, nem %3</translation>
+    </message>
+    <message>
+        <location line="+29"/>
         <source>the %1 of %2 must be at least %3, not %4</source>
         <translation>a(z) %2 %1 értéke legalább %3 lehet, nem %4</translation>
     </message>
@@ -5039,7 +5044,27 @@ Kiértékelés: %4 µs (%5..%6)</translation>
         <translation>a(z) %1 csak %2..%3 operandust fogad el, nem %4</translation>
     </message>
     <message>
-        <location line="+7"/>
+        <location line="+13"/>
+        <source>the %1 of %2 is a word: %3 is a single bit</source>
+        <translation>a(z) %2 %1 egy szó: %3 egyetlen bit</translation>
+    </message>
+    <message>
+        <location line="+11"/>
+        <source>the %1 of %2 is a word: %3 starts no word of 16 bits (%4 and %5 do)</source>
+        <translation>a(z) %2 %1 egy szó: %3 nem 16 bites szó eleje (%4 és %5 az)</translation>
+    </message>
+    <message>
+        <location line="+18"/>
+        <source>the %1 of %2 is a bit: %3 is a whole channel (%4 is its first bit)</source>
+        <translation>a(z) %2 %1 egy bit: %3 egy teljes csatorna (első bitje %4)</translation>
+    </message>
+    <message>
+        <location line="+6"/>
+        <source>the %1 of %2 is a bit: %3 is a whole word</source>
+        <translation>a(z) %2 %1 egy bit: %3 egy teljes szó</translation>
+    </message>
+    <message>
+        <location line="+8"/>
         <source>the %1 of %2 must be a channel with bits (IR, HR, LR), not %3</source>
         <translation>a(z) %2 %1 bitcímezhető csatorna legyen (IR, HR, LR), nem %3</translation>
     </message>
@@ -5049,7 +5074,7 @@ Kiértékelés: %4 µs (%5..%6)</translation>
         <translation>%1 %2 %3: az utolsó operandus az elsővel azonos fajtájú legyen, és ne előzze meg</translation>
     </message>
     <message>
-        <location line="+41"/>
+        <location line="+47"/>
         <source>%1 cannot write %2: %3 are written only by %4</source>
         <translation>a(z) %1 nem írhatja a(z) %2 operandust: a(z) %3 csak a(z) %4 írhatja</translation>
     </message>
@@ -5652,7 +5677,7 @@ Kiértékelés: %4 µs (%5..%6)</translation>
     </message>
     <message>
         <location line="+4"/>
-        <location filename="../model/target/target_pl110.cpp" line="+86"/>
+        <location filename="../model/target/target_pl110.cpp" line="+89"/>
         <location filename="../model/target/target_vpc.cpp" line="+61"/>
         <source>timers</source>
         <translation>időzítők</translation>
@@ -6104,7 +6129,7 @@ Kiértékelés: %4 µs (%5..%6)</translation>
         <translation>A program vége</translation>
     </message>
     <message>
-        <location filename="../model/target/target_pl110.cpp" line="-349"/>
+        <location filename="../model/target/target_pl110.cpp" line="-352"/>
         <source>IF contact: ON while S1 ? S2 is true</source>
         <translation>IF érintkező: BE, amíg S1 ? S2 igaz</translation>
     </message>
@@ -6129,7 +6154,7 @@ Kiértékelés: %4 µs (%5..%6)</translation>
         <translation>markerek</translation>
     </message>
     <message>
-        <location line="+6"/>
+        <location line="+9"/>
         <source>timers (with SM0.13 ON)</source>
         <translation>időzítők (SM0.13 bekapcsolva)</translation>
     </message>
@@ -6396,9 +6421,9 @@ Kiértékelés: %4 µs (%5..%6)</translation>
     </message>
     <message>
         <location line="+11"/>
-        <location filename="../model/target/target_vigor.cpp" line="+175"/>
+        <location filename="../model/target/target_vigor.cpp" line="+176"/>
         <location line="+61"/>
-        <location line="+74"/>
+        <location line="+75"/>
         <source>number of words</source>
         <translation>szavak száma</translation>
     </message>
@@ -6488,7 +6513,7 @@ Kiértékelés: %4 µs (%5..%6)</translation>
         <translation>Kijelzőparaméter elhelyezése</translation>
     </message>
     <message>
-        <location filename="../model/target/target_vigor.cpp" line="-469"/>
+        <location filename="../model/target/target_vigor.cpp" line="-471"/>
         <source>Compare contact: ON while S1 ? S2</source>
         <translation>Összehasonlító érintkező: BE, amíg S1 ? S2</translation>
     </message>
@@ -6772,12 +6797,12 @@ Kiértékelés: %4 µs (%5..%6)</translation>
         <translation>32 bit mozgatása: S (S, S+1) a D-be (alsó szó) és a D+1-be (felső szó)</translation>
     </message>
     <message>
-        <location line="+96"/>
+        <location line="+97"/>
         <source>Write n words to special module m1, at m2, once on a rising edge</source>
         <translation>n szó írása az m1 speciális modulba, m2-től, egyszer, felfutó élre</translation>
     </message>
     <message>
-        <location line="+16"/>
+        <location line="+17"/>
         <source>Check code: the sum of n bytes from S into D, their parity into D+1 (M9161 ON: one byte a word)</source>
         <translation>Ellenőrző kód: az S-től kezdődő n bájt összege a D-be, paritásuk a D+1-be (M9161 BE: szavanként egy bájt)</translation>
     </message>
@@ -6847,7 +6872,7 @@ Kiértékelés: %4 µs (%5..%6)</translation>
         <translation>S m2 számjegyének mozgatása az m1. számjegytől D-be az n. számjegytől</translation>
     </message>
     <message>
-        <location line="-214"/>
+        <location line="-216"/>
         <source>Counter: counts rising edges, reset with RST</source>
         <translation>Számláló: a felfutó éleket számolja, törlés RST-vel</translation>
     </message>
@@ -6872,7 +6897,7 @@ Kiértékelés: %4 µs (%5..%6)</translation>
         <translation>S mozgatása D-be</translation>
     </message>
     <message>
-        <location line="+26"/>
+        <location line="+27"/>
         <source>Move n words from S to D</source>
         <translation>n szó mozgatása S-ből D-be</translation>
     </message>
@@ -6957,7 +6982,7 @@ Kiértékelés: %4 µs (%5..%6)</translation>
         <translation>n szó írása az m1 speciális modul m2 címére</translation>
     </message>
     <message>
-        <location line="+36"/>
+        <location line="+37"/>
         <source>Refresh n inputs or outputs now</source>
         <translation>n bemenet vagy kimenet azonnali frissítése</translation>
     </message>

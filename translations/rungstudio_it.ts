@@ -4987,12 +4987,12 @@ Valutazione: %4 µs (%5..%6)</translation>
         <translation>il %1 di %2 deve essere #0DNS con le cifre D, N e S da 0 a 3, non %3</translation>
     </message>
     <message>
-        <location line="+81"/>
+        <location line="+88"/>
         <source>the %1 of %2 must be BCD (#0000..#9999), not %3</source>
         <translation>il %1 di %2 deve essere BCD (#0000..#9999), non %3</translation>
     </message>
     <message>
-        <location line="-39"/>
+        <location line="-46"/>
         <source>%1 or %2</source>
         <translation>%1 o %2</translation>
     </message>
@@ -5008,18 +5008,23 @@ Valutazione: %4 µs (%5..%6)</translation>
     </message>
     <message>
         <location line="+44"/>
-        <location line="+31"/>
+        <location line="+38"/>
         <source>the %1 of %2 must be %3, not %4</source>
         <translation>il %1 di %2 deve essere %3, non %4</translation>
     </message>
     <message>
-        <location line="-26"/>
-        <location line="+67"/>
+        <location line="-33"/>
+        <location line="+74"/>
         <source>%1 takes its %2 from %3 only, not %4</source>
         <translation>%1 prende il suo %2 solo da %3, non da %4</translation>
     </message>
     <message>
-        <location line="-37"/>
+        <location line="-66"/>
+        <source>the %1 of %2 must be a device, not %3</source>
+        <translation>il %1 di %2 deve essere un operando, non %3</translation>
+    </message>
+    <message>
+        <location line="+29"/>
         <source>the %1 of %2 must be at least %3, not %4</source>
         <translation>il %1 di %2 deve essere almeno %3, non %4</translation>
     </message>
@@ -5049,7 +5054,27 @@ Valutazione: %4 µs (%5..%6)</translation>
         <translation>%1 accetta solo %2..%3, non %4</translation>
     </message>
     <message>
-        <location line="+7"/>
+        <location line="+13"/>
+        <source>the %1 of %2 is a word: %3 is a single bit</source>
+        <translation>il %1 di %2 è una word: %3 è un singolo bit</translation>
+    </message>
+    <message>
+        <location line="+11"/>
+        <source>the %1 of %2 is a word: %3 starts no word of 16 bits (%4 and %5 do)</source>
+        <translation>il %1 di %2 è una word: %3 non è l&apos;inizio di una word di 16 bit (%4 e %5 lo sono)</translation>
+    </message>
+    <message>
+        <location line="+18"/>
+        <source>the %1 of %2 is a bit: %3 is a whole channel (%4 is its first bit)</source>
+        <translation>il %1 di %2 è un bit: %3 è un canale intero (il suo primo bit è %4)</translation>
+    </message>
+    <message>
+        <location line="+6"/>
+        <source>the %1 of %2 is a bit: %3 is a whole word</source>
+        <translation>il %1 di %2 è un bit: %3 è una word intera</translation>
+    </message>
+    <message>
+        <location line="+8"/>
         <source>the %1 of %2 must be a channel with bits (IR, HR, LR), not %3</source>
         <translation>il %1 di %2 deve essere un canale con bit (IR, HR, LR), non %3</translation>
     </message>
@@ -5059,7 +5084,7 @@ Valutazione: %4 µs (%5..%6)</translation>
         <translation>%1 %2 %3: l&apos;ultimo operando deve essere dello stesso tipo del primo e non precederlo</translation>
     </message>
     <message>
-        <location line="+41"/>
+        <location line="+47"/>
         <source>%1 cannot write %2: %3 are written only by %4</source>
         <translation>%1 non può scrivere %2: %3 sono scritti solo da %4</translation>
     </message>
@@ -5667,7 +5692,7 @@ Valutazione: %4 µs (%5..%6)</translation>
     </message>
     <message>
         <location line="+4"/>
-        <location filename="../model/target/target_pl110.cpp" line="+86"/>
+        <location filename="../model/target/target_pl110.cpp" line="+89"/>
         <location filename="../model/target/target_vpc.cpp" line="+61"/>
         <source>timers</source>
         <translation>temporizzatori</translation>
@@ -6119,7 +6144,7 @@ Valutazione: %4 µs (%5..%6)</translation>
         <translation>Fine del programma</translation>
     </message>
     <message>
-        <location filename="../model/target/target_pl110.cpp" line="-349"/>
+        <location filename="../model/target/target_pl110.cpp" line="-352"/>
         <source>IF contact: ON while S1 ? S2 is true</source>
         <translation>Contatto IF: ON mentre S1 ? S2 è vero</translation>
     </message>
@@ -6144,7 +6169,7 @@ Valutazione: %4 µs (%5..%6)</translation>
         <translation>marker</translation>
     </message>
     <message>
-        <location line="+6"/>
+        <location line="+9"/>
         <source>timers (with SM0.13 ON)</source>
         <translation>temporizzatori (con SM0.13 ON)</translation>
     </message>
@@ -6411,9 +6436,9 @@ Valutazione: %4 µs (%5..%6)</translation>
     </message>
     <message>
         <location line="+11"/>
-        <location filename="../model/target/target_vigor.cpp" line="+175"/>
+        <location filename="../model/target/target_vigor.cpp" line="+176"/>
         <location line="+61"/>
-        <location line="+74"/>
+        <location line="+75"/>
         <source>number of words</source>
         <translation>numero di word</translation>
     </message>
@@ -6503,7 +6528,7 @@ Valutazione: %4 µs (%5..%6)</translation>
         <translation>Posiziona un parametro del display</translation>
     </message>
     <message>
-        <location filename="../model/target/target_vigor.cpp" line="-469"/>
+        <location filename="../model/target/target_vigor.cpp" line="-471"/>
         <source>Compare contact: ON while S1 ? S2</source>
         <translation>Contatto di confronto: ON mentre S1 ? S2</translation>
     </message>
@@ -6787,12 +6812,12 @@ Valutazione: %4 µs (%5..%6)</translation>
         <translation>Sposta 32 bit: S (S, S+1) in D (word bassa), D+1 (word alta)</translation>
     </message>
     <message>
-        <location line="+96"/>
+        <location line="+97"/>
         <source>Write n words to special module m1, at m2, once on a rising edge</source>
         <translation>Scrive n word nel modulo speciale m1, da m2, una volta sul fronte di salita</translation>
     </message>
     <message>
-        <location line="+16"/>
+        <location line="+17"/>
         <source>Check code: the sum of n bytes from S into D, their parity into D+1 (M9161 ON: one byte a word)</source>
         <translation>Codice di controllo: la somma di n byte da S in D, la loro parità in D+1 (M9161 ON: un byte per word)</translation>
     </message>
@@ -6862,7 +6887,7 @@ Valutazione: %4 µs (%5..%6)</translation>
         <translation>Sposta m2 cifre di S dalla cifra m1 in D dalla cifra n</translation>
     </message>
     <message>
-        <location line="-214"/>
+        <location line="-216"/>
         <source>Counter: counts rising edges, reset with RST</source>
         <translation>Contatore: conta i fronti di salita, reset con RST</translation>
     </message>
@@ -6887,7 +6912,7 @@ Valutazione: %4 µs (%5..%6)</translation>
         <translation>Sposta S in D</translation>
     </message>
     <message>
-        <location line="+26"/>
+        <location line="+27"/>
         <source>Move n words from S to D</source>
         <translation>Sposta n word da S a D</translation>
     </message>
@@ -6972,7 +6997,7 @@ Valutazione: %4 µs (%5..%6)</translation>
         <translation>Scrive n word nel modulo speciale m1, a m2</translation>
     </message>
     <message>
-        <location line="+36"/>
+        <location line="+37"/>
         <source>Refresh n inputs or outputs now</source>
         <translation>Aggiorna subito n ingressi o uscite</translation>
     </message>

@@ -150,6 +150,13 @@ std::vector<OperandBreach> operandBreaches(const Target &target, const Instructi
                                           formatConstant(target, o.constant))});
             continue;
         }
+        if (o.kind == Operand::Kind::Constant && rule.deviceOnly) {
+            // CCD S: a block of words to read, not a value.
+            found.push_back({at, Tr::tr("the %1 of %2 must be a device, not %3")
+                                     .arg(slotName(rule, k), spec.mnemonic,
+                                          formatConstant(target, o.constant))});
+            continue;
+        }
         if (o.kind == Operand::Kind::Constant) {
             const qint64 v = o.constant.value;
             if (rule.bcd && o.constant.style != Constant::Style::Bcd) {
@@ -236,6 +243,60 @@ std::vector<OperandBreach> operandBreaches(const Target &target, const Instructi
             }
             continue;
         }
+        const bool wordSlot = rule.kind == OperandKind::WordSource ||
+                              rule.kind == OperandKind::WordDest ||
+                              rule.kind == OperandKind::SetValue;
+        // SBIT / RBIT name a word and a bit number, or a bit device itself (PL110 SBIT Q1).
+        const bool bitItself =
+            spec.function == ApplyFunction::SetBit || spec.function == ApplyFunction::ResetBit;
+        if (wordSlot && area.kind == AreaKind::Bit && o.digits == 0 && !bitItself) {
+            // A plain bit device is a word only where the table reads 16 bits as one
+            // (Area::bitsAsWords, PL110 I1 = I1..I16); the Vigor writes K4M0 for that.
+            if (!area.bitsAsWords) {
+                found.push_back(
+                    {at, Tr::tr("the %1 of %2 is a word: %3 is a single bit")
+                             .arg(slotName(rule, k), spec.mnemonic, formatOperand(target, o))});
+                continue;
+            }
+            const int offset = o.address.index - area.first;
+            if (!o.modified() && offset % 16 != 0) {
+                Address below = o.address;
+                below.index = area.first + offset / 16 * 16;
+                Address above = below;
+                above.index += 16;
+                found.push_back(
+                    {at, Tr::tr("the %1 of %2 is a word: %3 starts no word of 16 bits "
+                                "(%4 and %5 do)")
+                             .arg(slotName(rule, k), spec.mnemonic, formatOperand(target, o),
+                                  formatAddress(target, below), formatAddress(target, above))});
+                continue;
+            }
+        }
+        const bool bitSlot =
+            rule.kind == OperandKind::BitSource || rule.kind == OperandKind::BitDest;
+        // A whole word or channel where a bit belongs: the simulator has no bit to read or
+        // write. Coils on a word are OP002's ("cannot drive"); a channel of bits is refused
+        // everywhere (CPM1 LD 011, SNXT(09) 011: write 011.00). A reset clears words too
+        // (RST D0, ZRST D0 D9).
+        const bool clearsWords = spec.op == Op::Reset || spec.function == ApplyFunction::ZoneReset;
+        if (bitSlot && !clearsWords && o.address.bit < 0 && o.digits == 0 &&
+            (area.kind == AreaKind::Channel ||
+             (area.kind == AreaKind::Word && spec.op == Op::Apply))) {
+            if (area.numbering == Numbering::ChannelBit) {
+                Address firstBit = o.address;
+                firstBit.bit = 0;
+                found.push_back({at, Tr::tr("the %1 of %2 is a bit: %3 is a whole channel (%4 is "
+                                            "its first bit)")
+                                         .arg(slotName(rule, k), spec.mnemonic,
+                                              formatAddress(target, o.address),
+                                              formatAddress(target, firstBit))});
+            } else {
+                found.push_back({at, Tr::tr("the %1 of %2 is a bit: %3 is a whole word")
+                                         .arg(slotName(rule, k), spec.mnemonic,
+                                              formatAddress(target, o.address))});
+            }
+            continue;
+        }
         if (rule.bitWords && (area.numbering != Numbering::ChannelBit || o.address.bit >= 0)) {
             found.push_back(
                 {at, Tr::tr("the %1 of %2 must be a channel with bits (IR, HR, LR), "
@@ -266,7 +327,13 @@ std::vector<OperandBreach> operandBreaches(const Target &target, const Instructi
             }
         }
         // A modified operand (K4M0, D0Z0) is resolved where it lands, each time it runs.
-        if (rule.words > 1 && o.address.bit < 0 && !o.modified()) {
+        // A 32-bit form reads a 32-bit device, and a timer or counter source, as one (Vigor
+        // DMOV C200 D0, DMOV T0 D0 sign-extended); other words as a pair.
+        const bool single =
+            spec.doubleWord && (area.wordBits >= 32 ||
+                                (!isDestination(rule.kind) &&
+                                 (area.kind == AreaKind::Timer || area.kind == AreaKind::Counter)));
+        if (rule.words > 1 && o.address.bit < 0 && !o.modified() && !single) {
             if (const QString broken = brokenRun(target, spec, o.address, rule.words);
                 !broken.isEmpty()) {
                 found.push_back({at, broken});

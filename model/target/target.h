@@ -86,6 +86,11 @@ struct Area {
     // Holds a branch point's condition within a rung (CPM1 TR, W353): driven in many rungs,
     // so a second OUT is no duplicate coil.
     bool branchMemory = false;
+    // A bit area a word operand may name: the 16 bits from an element first + 16k are one word
+    // (PL110 I1 = I1..I16, I17 = I17..I32; docs/targets.md). Without it a plain bit device is
+    // no word operand (Vigor: seed 001's Operand Devices tables mark X, Y, M, S apart from
+    // KnX, KnY, KnM, KnS; CPM1 TR: W353 uses it in LD and OUT only). model::operandBreaches.
+    bool bitsAsWords = false;
     // Sub-ranges with other properties (read-only system bits inside a channel area,
     // retentive M ranges on Vigor) are separate Area entries; the parser picks the one that
     // contains the number.
@@ -203,8 +208,8 @@ struct OperandSpec {
     // A device in this slot must be of one of these areas (Area::key); constants are free
     // (PL110 presets PT / PV: "da una variabile dell'area VW, SMW, AI e TR", 4.2.4, 4.2.5).
     std::vector<const char *> sourceAreas;
-    // With sourceAreas: a device of those areas only, no constant (seed 001 RS S and D, LINK
-    // S1 and S2: only the D column is marked).
+    // A device, no constant: with sourceAreas, of those areas only (seed 001 RS S and D, LINK
+    // S1 and S2: only the D column is marked); without, any (Vigor CCD S, a block to read).
     bool deviceOnly = false;
     // The slot takes plain words only: no digit-designated bits (K4M0) and no double words
     // (VD0) - block moves count words (Vigor BMOV, PL110 BLKMOV / MOVIND).

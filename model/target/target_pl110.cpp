@@ -80,6 +80,9 @@ Target makePl110Target() {
         .onlyWrittenBy = ApplyFunction::Toggle;
     addArea(t, "M", "M", AreaKind::Bit, 1, 128,
             QT_TRANSLATE_NOOP("rung::model::Target", "markers"));
+    // A word operand may name 16 bits of a bit area from I1, I17, ... (Area::bitsAsWords).
+    for (Area &a : t.areas)
+        a.bitsAsWords = a.kind == AreaKind::Bit;
     // SM0.13 (2.1.2) trades the counters C1..C16 for the timers T49..T64, "normalmente
     // disabilitati": those run only while it is ON, the counters only while it is OFF.
     addArea(t, "T", "T", AreaKind::Timer, 1, 48,

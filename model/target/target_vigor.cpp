@@ -352,7 +352,8 @@ Target makeVigorTarget() {
     dmov.functionCode = 12;
     dmov.doubleWord = true;
     for (OperandSpec &o : dmov.operands)
-        o.wholeWords = true; // a pair of words, not a group of 16 bits (K4M0)
+        o.wholeWords = true;    // a pair of words, not a group of 16 bits (K4M0)
+    dmov.operands[0].words = 2; // S, S+1 unless a 32-bit device, a timer or a counter
     dmov.operands[1].words = 2;
     in.push_back(dmov);
     OperandSpec blockSrc = src;
@@ -451,6 +452,7 @@ Target makeVigorTarget() {
     // word with M9161 ON). FNC 84; n = 1..256 bytes (FX, Delta).
     OperandSpec ccdSource = src;
     ccdSource.wholeWords = true;
+    ccdSource.deviceOnly = true; // the bytes are read from words, not from a constant
     OperandSpec ccdSum = dst;
     ccdSum.words = 2; // D: the sum, D+1: the parity
     OperandSpec bytes{K::Count};

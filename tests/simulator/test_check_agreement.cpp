@@ -126,14 +126,84 @@ TEST(CheckSimulatorAgreement, Cpm1) {
                     });
 }
 
+// A word operand is a word: seed 001's "Operand Devices" tables mark X, Y, M, S apart from
+// KnX, KnY, KnM, KnS, so a Vigor word slot takes K4M0, not M0; CPM1 TR (W353) is a bit for
+// LD and OUT only; the PL110 reads 16 bits of a bit area as a word from I1, I17, ...
+// (Area::bitsAsWords).
+TEST(CheckSimulatorAgreement, ABitDeviceIsNoWordOperand) {
+    expectAgreement(
+        model::Family::Vigor,
+        {
+            {"LD M9000\nMOV M0 D0\nEND", 2,
+             "the operand 1 of MOV is a word: M0 is a "
+             "single bit",
+             "LD M9000\nMOV K4M0 D0\nEND"},
+            {"LD M9000\nINC Y0\nEND", 2, "Y0 is a single bit", "LD M9000\nINC K4Y0\nEND"},
+            {"LD M9000\nADD D0 K1 S500\nEND", 2, "S500 is a single bit",
+             "LD M9000\nADD D0 K1 K4S500\nEND"},
+            {"LD M9000\nMUL K2 K20 M16\nEND", 2, "M16 is a single bit",
+             "LD M9000\nMUL K2 K20 D16\nEND"},
+        });
+    expectAgreement(model::Family::Cpm1,
+                    {
+                        {"LD 253.13\nMOV(21) #0001 TR 1\nEND", 2, "TR 1 is a single bit",
+                         "LD 253.13\nMOV(21) #0001 HR01\nEND"},
+                        {"LD 253.13\nINC(38) TR 0\nEND", 2, "TR 0 is a single bit",
+                         "LD 253.13\nINC(38) DM 0000\nEND"},
+                    });
+    expectAgreement(
+        model::Family::Pl110,
+        {
+            {"LD SM0.0\nMOV I2 V0\nEND", 2, "I2 starts no word of 16 bits (I1 and I17 do)",
+             "LD SM0.0\nMOV I17 V0\nEND"},
+            {"LD SM0.0\nMOV V0 M20\nEND", 2, "(M17 and M33 do)", "LD SM0.0\nMOV V0 M17\nEND"},
+        });
+}
+
+// A bit operand is a bit: CMP's result D, D+1, D+2 are bit devices (seed 001), a CPM1 control
+// bit or contact names a bit of a channel (011.00), not the channel.
+TEST(CheckSimulatorAgreement, AWholeWordIsNoBitOperand) {
+    expectAgreement(
+        model::Family::Vigor,
+        {
+            {"LD M9000\nCMP D0 D1 D9000\nEND", 2,
+             "the operand 3 of CMP is a bit: D9000 is a whole word", "LD M9000\nCMP D0 D1 M0\nEND"},
+        });
+    expectAgreement(
+        model::Family::Cpm1,
+        {
+            {"LD 011\nOUT 010.00\nEND", 1,
+             "011 is a whole channel (011.00 is its "
+             "first bit)",
+             "LD 011.00\nOUT 010.00\nEND"},
+            {"LD 000.00\nOUT 010\nEND", 2, "010 is a whole channel", "LD 000.00\nOUT 010.01\nEND"},
+        });
+}
+
+// Vigor CCD S D n reads n bytes from the words at S: a device (seed 001 B-3-9 CCD D52 D104
+// K11); DMOV S D reads S and S+1 unless S is a 32-bit counter or a timer (C200..C255 hold 32
+// bits), and writes D, D+1 unless D is a 32-bit counter.
+TEST(CheckSimulatorAgreement, BlocksAndPairsOfTheVigor) {
+    expectAgreement(
+        model::Family::Vigor,
+        {
+            {"LD M9000\nCCD K100 D104 K11\nEND", 2,
+             "the operand 1 of CCD must be a device, not K100", "LD M9000\nCCD D52 D104 K11\nEND"},
+            {"LD M9000\nDMOV D8191 D0\nEND", 2, "D8192 does not exist",
+             "LD M9000\nDMOV C255 D0\nEND"},
+            {"LD M9000\nDMOV K1 D8191\nEND", 2, "D8192 does not exist",
+             "LD M9000\nDMOV K1 C255\nEND"},
+            {"LD M9000\nDMOV D0 T255\nEND", 2, "T256 does not exist",
+             "LD M9000\nDMOV T255 D0\nEND"},
+        });
+}
+
 // Random operands for every application instruction of every family, near the ends of the
 // areas and around the constants' limits: whenever the compiler refuses an instruction,
-// `check` has an error on its line.
-// DISABLED: it still finds disagreements beyond the audit's list (issue 14, left open): a
-// plain bit device in a word slot (Vigor M1 / S497 without Kn, PL110 bits off a multiple of
-// 16: "is not a word device"), "needs the next word too" and "is not a bit device" cases.
-// Enable it once those are table rules.
-TEST(CheckSimulatorAgreement, DISABLED_WhateverTheCompilerRefusesCheckReportsOnItsLine) {
+// `check` has an error on its line. (The ~190 it once found were plain bit devices in word
+// slots, whole words or channels in bit slots, a CCD constant and DMOV pairs: the table rules
+// of the three tests above. Twelve seeds found none when it was enabled.)
+TEST(CheckSimulatorAgreement, WhateverTheCompilerRefusesCheckReportsOnItsLine) {
     int refused = 0;
     int compiled = 0;
     for (const model::Family family : model::Target::families()) {
