@@ -158,13 +158,14 @@ void Compiler::compileApply(const model::Instruction &ins, Step &s) {
             break;
         s.slot = static_cast<int>(m_program->bitLists.size());
         s.count = 3;
+        // D, D+1, D+2 as the table's rule (OperandSpec::words, model::runBreaks) counts them:
+        // M499 is followed by M500 of the latched area.
         for (int k = 0; k < 3; ++k) {
-            model::Address a = d->address;
-            a.index += k;
-            const BitRef r = isDevice(*d) ? m_layout->bit(a) : BitRef{};
+            const BitRef r = isDevice(*d)
+                                 ? m_layout->bit(model::offsetAddress(m_target, d->address, k))
+                                 : BitRef{};
             if (!r.valid()) {
-                error(ins, Tr::tr("%1 needs three bit devices from %2")
-                               .arg(ins.spec->mnemonic, describe(*d)));
+                error(ins, Tr::tr("%1 is not a bit device").arg(describe(*d)));
                 break;
             }
             m_program->bitLists.push_back(r);
@@ -177,17 +178,20 @@ void Compiler::compileApply(const model::Instruction &ins, Step &s) {
         const model::Operand *b = operand(ins, 1);
         if (!a || !b)
             break;
-        if (!isDevice(*a) || !isDevice(*b) || a->address.area != b->address.area ||
-            b->address.index < a->address.index ||
+        // One kind, the first not after the last, every device between: the table's rule
+        // (OperandSpec::rangeFrom), which reportBreaches has said when it is broken.
+        if (m_muted || !isDevice(*a) || !isDevice(*b) ||
             b->address.index - a->address.index >= kMaxZoneElements) {
-            error(ins, Tr::tr("%1 needs two devices of one kind, the first not after the "
-                              "second")
-                           .arg(ins.spec->mnemonic));
+            error(ins, Tr::tr("%1 is not a device").arg(describe(*b)));
             break;
         }
         s.slot = static_cast<int>(m_program->resets.size());
-        for (model::Address x = a->address; x.index <= b->address.index; ++x.index)
+        for (int k = 0; k <= b->address.index - a->address.index; ++k) {
+            const model::Address x = model::offsetAddress(m_target, a->address, k);
+            if (!x.valid())
+                break;
             m_program->resets.push_back(resetTargetOf(x));
+        }
         s.count = static_cast<int>(m_program->resets.size()) - s.slot;
         break;
     }
@@ -227,8 +231,10 @@ void Compiler::compileApply(const model::Instruction &ins, Step &s) {
                 s.op = static_cast<std::uint8_t>(value);
                 found = true;
             }
+        // The operators the table allows (OperandSpec::allowedTexts, which reportBreaches
+        // reads) all have a MathOp above; one more in the table and not here is an error.
         if (op && !found)
-            error(ins, Tr::tr("unknown operator %1 (use + - * / | & ^ << >>)").arg(op->text));
+            error(ins, Tr::tr("the simulator has no operator %1").arg(op->text));
         break;
     }
     case ApplyFunction::SetBit:
@@ -268,22 +274,23 @@ void Compiler::compileApply(const model::Instruction &ins, Step &s) {
         s.x = sourceOf(ins, 0);
         s.dest = destOf(ins, 1, false, &s.width);
         const model::Operand *n = operand(ins, 2);
-        if (!n || m_failed)
+        // The count and both blocks follow the table's rules (OperandSpec::lowest, countFrom:
+        // n >= 1, every word of a block there), which reportBreaches has said when broken.
+        if (!n || m_failed || m_muted)
             break;
         if (n->kind != model::Operand::Kind::Constant || n->constant.value < 1 ||
             n->constant.value > kMaxZoneElements) {
-            error(ins, Tr::tr("%1 needs a count from 1 to %2")
-                           .arg(ins.spec->mnemonic)
-                           .arg(kMaxZoneElements));
+            error(ins, Tr::tr("%1 is not a number of words").arg(describe(*n)));
             break;
         }
         s.count = static_cast<int>(n->constant.value);
-        // Both blocks must lie inside their areas.
+        // Words of one block lie one after another in the image (model::runBreaks); a bit
+        // area read as words counts 16 bits a word.
         auto fits = [&](const model::Operand &o) {
-            model::Address last = o.address;
-            last.index += s.count - 1;
-            return m_layout->word(last) == m_layout->word(o.address) + s.count - 1 &&
-                   m_layout->word(last) >= 0;
+            const int perWord = kindOf(o) == AreaKind::Bit ? 16 : 1;
+            const int last = m_layout->word(model::offsetAddress(
+                m_target, o.address, static_cast<qint64>(s.count - 1) * perWord));
+            return last >= 0 && last == m_layout->word(o.address) + s.count - 1;
         };
         // An indexed block is checked where it lands, each time it runs.
         if ((s.dest >= 0 && !fits(ins.operands[1])) || (s.x.index >= 0 && !fits(ins.operands[0])))

@@ -198,9 +198,9 @@ private:
             return -1;
         if (resolvedAtRunTime(*o))
             return nextRef(ins, *o, i);
-        model::Address a = o->address;
-        ++a.index;
-        const int w = m_layout->word(a);
+        // D199 is followed by D200 of the latched area, as the table's rule counts
+        // (OperandSpec::words, model::runBreaks).
+        const int w = m_layout->word(model::offsetAddress(m_target, o->address, 1));
         if (w < 0)
             error(ins,
                   trCompiler(QT_TRANSLATE_NOOP("rung::simulator::Compiler",

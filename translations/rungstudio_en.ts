@@ -100,7 +100,7 @@
 <context>
     <name>rung::model::Convert</name>
     <message numerus="yes">
-        <location filename="../model/convert/convert_to_ladder.cpp" line="+286"/>
+        <location filename="../model/convert/convert_to_ladder.cpp" line="+301"/>
         <source>%1 needs two blocks, but %n is open</source>
         <translation>
             <numerusform>%1 needs two blocks, but %n is open</numerusform>

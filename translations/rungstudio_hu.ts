@@ -300,7 +300,7 @@ Kilépési kód: 0 nincs hiba, 1 a programban hiba van, 2 használati vagy I/O h
         <translation>Megszakítva: semmi sem lett elküldve a PLC-nek</translation>
     </message>
     <message>
-        <location filename="../app/gui/connection_panel.cpp" line="+245"/>
+        <location filename="../app/gui/connection_panel.cpp" line="+248"/>
         <source>Settings</source>
         <translation>Beállítások</translation>
     </message>
@@ -597,7 +597,7 @@ A látható értékek az utoljára olvasottak, elavultként jelölve.</translati
         <translation>Kapcsolódás</translation>
     </message>
     <message>
-        <location line="+35"/>
+        <location line="+37"/>
         <source>Errors %1, retries %2, timeouts %3, refused %4, reconnects %5
 Round trip %6 ms (mean %7, max %8); refresh %9 ms, %10 frame(s)</source>
         <translation>Hibák: %1, ismétlések: %2, időtúllépések: %3, elutasítva: %4, újracsatlakozások: %5
@@ -2212,12 +2212,12 @@ A read és a write kilépési kódja: 0 kész, 1 a PLC nem válaszolt vagy eluta
 <context>
     <name>rung::app::Serve</name>
     <message>
-        <location filename="../app/cli/cli_serve.cpp" line="+28"/>
+        <location filename="../app/cli/cli_serve.cpp" line="+30"/>
         <source>usage: rungstudio-cli serve FILE [--target T] [--model M] --protocol vigor|modbus|modbus-tcp|hostlink (--pty | --port NAME | --tcp HOST:PORT) [--station N] [--baud B] [--frame 8N1|7E1|7E2|...] [--period MS] [--fault bad-checksum|silent|wrong-station|garbage|truncated|split]</source>
         <translation>használat: rungstudio-cli serve FILE [--target T] [--model M] --protocol vigor|modbus|modbus-tcp|hostlink (--pty | --port NAME | --tcp HOST:PORT) [--station N] [--baud B] [--frame 8N1|7E1|7E2|...] [--period MS] [--fault bad-checksum|silent|wrong-station|garbage|truncated|split]</translation>
     </message>
     <message>
-        <location line="+111"/>
+        <location line="+68"/>
         <source>unexpected argument %1</source>
         <translation>váratlan argumentum: %1</translation>
     </message>
@@ -2232,7 +2232,7 @@ A read és a write kilépési kódja: 0 kész, 1 a PLC nem válaszolt vagy eluta
         <translation>nincs megadva FILE</translation>
     </message>
     <message>
-        <location line="+7"/>
+        <location line="+5"/>
         <source>--protocol is required</source>
         <translation>a --protocol megadása kötelező</translation>
     </message>
@@ -2242,7 +2242,7 @@ A read és a write kilépési kódja: 0 kész, 1 a PLC nem válaszolt vagy eluta
         <translation>ismeretlen protokoll: %1 (vigor, modbus, modbus-tcp, hostlink)</translation>
     </message>
     <message>
-        <location line="+3"/>
+        <location line="+7"/>
         <source>give one of --pty, --port NAME and --tcp HOST:PORT</source>
         <translation>adja meg a --pty, a --port NAME és a --tcp HOST:PORT közül pontosan egyet</translation>
     </message>
@@ -2272,7 +2272,7 @@ A read és a write kilépési kódja: 0 kész, 1 a PLC nem válaszolt vagy eluta
         <translation>ismeretlen hibamód: %1 (%2)</translation>
     </message>
     <message>
-        <location line="+14"/>
+        <location line="+13"/>
         <source>%1 has no published protocol to serve (protocols.md)</source>
         <translation>a(z) %1 PLC-nek nincs nyilvános protokollja, amelyen kiszolgálható lenne (protocols.md)</translation>
     </message>
@@ -3847,7 +3847,7 @@ Kiértékelés: %4 µs (%5..%6)</translation>
         <translation>%1 nincs használatban a programban</translation>
     </message>
     <message>
-        <location filename="../editor/ladder_view_monitor.cpp" line="+231"/>
+        <location filename="../editor/ladder_view_monitor.cpp" line="+240"/>
         <source>current %1, set %2, %3</source>
         <extracomment>a timer&apos;s or counter&apos;s live state in a tooltip: current value, set value, done bit</extracomment>
         <translation>aktuális %1, beállított %2, %3</translation>
@@ -4632,7 +4632,7 @@ Kiértékelés: %4 µs (%5..%6)</translation>
         <translation>%1: %2</translation>
     </message>
     <message>
-        <location line="+104"/>
+        <location line="+126"/>
         <source>%1: both ends of a range must be devices of one kind (D0..D15)</source>
         <translation>%1: a tartomány mindkét vége azonos fajta operandus kell legyen (D0..D15)</translation>
     </message>
@@ -4652,7 +4652,7 @@ Kiértékelés: %4 µs (%5..%6)</translation>
         <translation>%1: a PLC-nek nincs %2 operandusa ebben a tartományban</translation>
     </message>
     <message>
-        <location line="-126"/>
+        <location line="-148"/>
         <source>%1: digits are expected</source>
         <translation>%1: számjegyek kellenek</translation>
     </message>
@@ -4790,7 +4790,12 @@ Kiértékelés: %4 µs (%5..%6)</translation>
         </translation>
     </message>
     <message>
-        <location line="+158"/>
+        <location line="+146"/>
+        <source>%1 cannot be written: the program only reads it (%2)</source>
+        <translation>%1 nem írható: a program csak olvassa (%2)</translation>
+    </message>
+    <message>
+        <location line="+56"/>
         <source>%1 is driven twice; a coil may be driven only once (the first is on line %2)</source>
         <translation>%1 kétszer van vezérelve; egy tekercs csak egyszer vezérelhető (az első a(z) %2. sorban)</translation>
     </message>
@@ -4932,12 +4937,7 @@ Kiértékelés: %4 µs (%5..%6)</translation>
         <translation>A(z) %1 beállított érték tartományon kívül esik</translation>
     </message>
     <message>
-        <location line="+21"/>
-        <source>%1 cannot be written: %2 are read-only</source>
-        <translation>%1 nem írható (%2: csak olvasható)</translation>
-    </message>
-    <message>
-        <location line="+7"/>
+        <location line="+28"/>
         <source>%1 cannot be written: the PLC drives it (%2)</source>
         <translation>%1 nem írható: a PLC vezérli (%2)</translation>
     </message>
@@ -4982,27 +4982,59 @@ Kiértékelés: %4 µs (%5..%6)</translation>
         <translation>a(z) %2 %1 értéke #0DNS legyen, D, N és S számjegy 0 és 3 között, nem %3</translation>
     </message>
     <message>
-        <location line="+18"/>
+        <location line="+88"/>
         <source>the %1 of %2 must be BCD (#0000..#9999), not %3</source>
         <translation>a(z) %2 %1 értéke BCD legyen (#0000..#9999), nem %3</translation>
     </message>
     <message>
-        <location line="+20"/>
+        <location line="-46"/>
         <source>%1 or %2</source>
         <translation>%1 vagy %2</translation>
     </message>
     <message>
-        <location line="+1"/>
+        <location line="-26"/>
+        <source>%1 uses %2..%3, which runs from %4 into %5: a block stays in one</source>
+        <translation>%1 a(z) %2..%3 tartományt használja, amely a(z) %4 területről átnyúlik a(z) %5 területre: egy blokk egy területen belül marad</translation>
+    </message>
+    <message>
+        <location line="+7"/>
+        <source>%1 uses %2..%3, but %4 does not exist</source>
+        <translation>%1 a(z) %2..%3 tartományt használja, de %4 nem létezik</translation>
+    </message>
+    <message>
+        <location line="+44"/>
+        <location line="+38"/>
         <source>the %1 of %2 must be %3, not %4</source>
         <translation>a(z) %2 %1 értéke %3 lehet, nem %4</translation>
     </message>
     <message>
-        <location line="+5"/>
+        <location line="-33"/>
+        <location line="+74"/>
+        <source>%1 takes its %2 from %3 only, not %4</source>
+        <translation>%1 a(z) %2 értékét csak ebből veszi: %3, nem ebből: %4</translation>
+    </message>
+    <message>
+        <location line="-66"/>
+        <source>the %1 of %2 must be a device, not %3</source>
+        <translation>a(z) %2 %1 operandus legyen, nem %3</translation>
+    </message>
+    <message>
+        <location line="+29"/>
+        <source>the %1 of %2 must be at least %3, not %4</source>
+        <translation>a(z) %2 %1 értéke legalább %3 lehet, nem %4</translation>
+    </message>
+    <message>
+        <location line="+6"/>
         <source>the %1 of %2 must be from %3 to %4, not %5</source>
         <translation>a(z) %2 %1 értéke %3 és %4 között lehet, nem %5</translation>
     </message>
     <message>
-        <location line="+15"/>
+        <location line="+11"/>
+        <source>the %1 of %2 must be a number, not %3</source>
+        <translation>a(z) %2 %1 értéke szám kell legyen, nem %3</translation>
+    </message>
+    <message>
+        <location line="+11"/>
         <source>%1 moves whole words: %2 cannot be its %3</source>
         <translation>%1 egész szavakat mozgat: %2 nem lehet a(z) %3</translation>
     </message>
@@ -5012,27 +5044,42 @@ Kiértékelés: %4 µs (%5..%6)</translation>
         <translation>%1 a(z) %2 értékét konstansból vagy ebből veszi: %3, nem ebből: %4</translation>
     </message>
     <message>
-        <location line="+16"/>
+        <location line="+17"/>
         <source>%1 takes only %2..%3, not %4</source>
         <translation>a(z) %1 csak %2..%3 operandust fogad el, nem %4</translation>
     </message>
     <message>
-        <location line="+7"/>
+        <location line="+16"/>
+        <source>the %1 of %2 is a word: %3 is a single bit</source>
+        <translation>a(z) %2 %1 egy szó: %3 egyetlen bit</translation>
+    </message>
+    <message>
+        <location line="+11"/>
+        <source>the %1 of %2 is a word: %3 starts no word of 16 bits (%4 and %5 do)</source>
+        <translation>a(z) %2 %1 egy szó: %3 nem 16 bites szó eleje (%4 és %5 az)</translation>
+    </message>
+    <message>
+        <location line="+20"/>
+        <source>the %1 of %2 is a bit: %3 is a whole channel (%4 is its first bit)</source>
+        <translation>a(z) %2 %1 egy bit: %3 egy teljes csatorna (első bitje %4)</translation>
+    </message>
+    <message>
+        <location line="+6"/>
+        <source>the %1 of %2 is a bit: %3 is a whole word</source>
+        <translation>a(z) %2 %1 egy bit: %3 egy teljes szó</translation>
+    </message>
+    <message>
+        <location line="+8"/>
         <source>the %1 of %2 must be a channel with bits (IR, HR, LR), not %3</source>
         <translation>a(z) %2 %1 bitcímezhető csatorna legyen (IR, HR, LR), nem %3</translation>
     </message>
     <message>
-        <location line="+9"/>
-        <source>%1 %2 %3: the end word must be in the area of the start word and not before it</source>
-        <translation>%1 %2 %3: a záró szó a kezdő szó területén legyen, és ne előtte</translation>
+        <location line="+13"/>
+        <source>%1 %2 %3: the last device must be of the kind of the first and not before it</source>
+        <translation>%1 %2 %3: az utolsó operandus az elsővel azonos fajtájú legyen, és ne előzze meg</translation>
     </message>
     <message>
-        <location line="+11"/>
-        <source>%1 writes %2 words from %3, past the end of %4</source>
-        <translation>%1 %2 szót ír %3-tól, túl a(z) %4 végén</translation>
-    </message>
-    <message>
-        <location line="+14"/>
+        <location line="+47"/>
         <source>%1 cannot write %2: %3 are written only by %4</source>
         <translation>a(z) %1 nem írhatja a(z) %2 operandust: a(z) %3 csak a(z) %4 írhatja</translation>
     </message>
@@ -5060,7 +5107,7 @@ Kiértékelés: %4 µs (%5..%6)</translation>
 <context>
     <name>rung::model::Convert</name>
     <message>
-        <location filename="../model/convert/convert_to_ladder.cpp" line="+201"/>
+        <location filename="../model/convert/convert_to_ladder.cpp" line="+216"/>
         <source>%1 joins the condition of a branch point in parallel with another block; the ladder cannot draw this: repeat the shared contacts in this branch instead</source>
         <translation>%1 egy elágazási pont feltételét párhuzamosan köti egy másik blokkal; ezt a létradiagram nem tudja megrajzolni: ismételje meg a közös érintkezőket ebben az ágban</translation>
     </message>
@@ -5635,7 +5682,7 @@ Kiértékelés: %4 µs (%5..%6)</translation>
     </message>
     <message>
         <location line="+4"/>
-        <location filename="../model/target/target_pl110.cpp" line="+86"/>
+        <location filename="../model/target/target_pl110.cpp" line="+89"/>
         <location filename="../model/target/target_vpc.cpp" line="+61"/>
         <source>timers</source>
         <translation>időzítők</translation>
@@ -6080,14 +6127,14 @@ Kiértékelés: %4 µs (%5..%6)</translation>
     </message>
     <message>
         <location line="+3"/>
-        <location filename="../model/target/target_pl110.cpp" line="+116"/>
+        <location filename="../model/target/target_pl110.cpp" line="+128"/>
         <location filename="../model/target/target_vigor.cpp" line="-1"/>
         <location filename="../model/target/target_vpc.cpp" line="+5"/>
         <source>End of the program</source>
         <translation>A program vége</translation>
     </message>
     <message>
-        <location filename="../model/target/target_pl110.cpp" line="-337"/>
+        <location filename="../model/target/target_pl110.cpp" line="-352"/>
         <source>IF contact: ON while S1 ? S2 is true</source>
         <translation>IF érintkező: BE, amíg S1 ? S2 igaz</translation>
     </message>
@@ -6112,7 +6159,7 @@ Kiértékelés: %4 µs (%5..%6)</translation>
         <translation>markerek</translation>
     </message>
     <message>
-        <location line="+6"/>
+        <location line="+9"/>
         <source>timers (with SM0.13 ON)</source>
         <translation>időzítők (SM0.13 bekapcsolva)</translation>
     </message>
@@ -6363,7 +6410,12 @@ Kiértékelés: %4 µs (%5..%6)</translation>
         <translation>Lefelé számláló PV-től: UP, DOWN és RESET (PV betöltése) bemenetek; C BE 0-nál</translation>
     </message>
     <message>
-        <location line="+10"/>
+        <location line="+13"/>
+        <source>operator</source>
+        <translation>műveleti jel</translation>
+    </message>
+    <message>
+        <location line="+2"/>
         <source>Math formula: D = S1 op S2, op one of + - * / | &amp; ^ &lt;&lt; &gt;&gt;</source>
         <translation>Matematikai képlet: D = S1 op S2, op a következők egyike: + - * / | &amp; ^ &lt;&lt; &gt;&gt;</translation>
     </message>
@@ -6373,7 +6425,15 @@ Kiértékelés: %4 µs (%5..%6)</translation>
         <translation>Érték vagy szó mozgatása D-be</translation>
     </message>
     <message>
-        <location line="+6"/>
+        <location line="+11"/>
+        <location filename="../model/target/target_vigor.cpp" line="+176"/>
+        <location line="+61"/>
+        <location line="+75"/>
+        <source>number of words</source>
+        <translation>szavak száma</translation>
+    </message>
+    <message>
+        <location line="+2"/>
         <source>Move n words from S (or the value S) to D</source>
         <translation>n szó mozgatása S-ből (vagy az S érték) D-be</translation>
     </message>
@@ -6458,7 +6518,7 @@ Kiértékelés: %4 µs (%5..%6)</translation>
         <translation>Kijelzőparaméter elhelyezése</translation>
     </message>
     <message>
-        <location filename="../model/target/target_vigor.cpp" line="-159"/>
+        <location filename="../model/target/target_vigor.cpp" line="-471"/>
         <source>Compare contact: ON while S1 ? S2</source>
         <translation>Összehasonlító érintkező: BE, amíg S1 ? S2</translation>
     </message>
@@ -6742,17 +6802,22 @@ Kiértékelés: %4 µs (%5..%6)</translation>
         <translation>32 bit mozgatása: S (S, S+1) a D-be (alsó szó) és a D+1-be (felső szó)</translation>
     </message>
     <message>
-        <location line="+72"/>
+        <location line="+97"/>
         <source>Write n words to special module m1, at m2, once on a rising edge</source>
         <translation>n szó írása az m1 speciális modulba, m2-től, egyszer, felfutó élre</translation>
     </message>
     <message>
-        <location line="+16"/>
+        <location line="+17"/>
         <source>Check code: the sum of n bytes from S into D, their parity into D+1 (M9161 ON: one byte a word)</source>
         <translation>Ellenőrző kód: az S-től kezdődő n bájt összege a D-be, paritásuk a D+1-be (M9161 BE: szavanként egy bájt)</translation>
     </message>
     <message>
-        <location line="+11"/>
+        <location line="+12"/>
+        <source>first input or output</source>
+        <translation>első bemenet vagy kimenet</translation>
+    </message>
+    <message>
+        <location line="+6"/>
         <source>Convert n ASCII characters from S to hexadecimal in D</source>
         <translation>n ASCII karakter átalakítása S-től hexadecimálissá D-be</translation>
     </message>
@@ -6762,12 +6827,32 @@ Kiértékelés: %4 µs (%5..%6)</translation>
         <translation>n hexadecimális számjegy átalakítása S-től ASCII-vé D-be</translation>
     </message>
     <message>
-        <location line="+5"/>
+        <location line="+10"/>
+        <source>first word to send</source>
+        <translation>első küldendő szó</translation>
+    </message>
+    <message>
+        <location line="+4"/>
+        <source>first word received</source>
+        <translation>első fogadott szó</translation>
+    </message>
+    <message>
+        <location line="+7"/>
         <source>Serial communication on CP2: send m words from S, receive n words into D</source>
         <translation>Soros kommunikáció a CP2-n: m szó küldése S-től, n szó fogadása D-be</translation>
     </message>
     <message>
-        <location line="+7"/>
+        <location line="+11"/>
+        <source>table</source>
+        <translation>táblázat</translation>
+    </message>
+    <message>
+        <location line="+5"/>
+        <source>working area</source>
+        <translation>munkaterület</translation>
+    </message>
+    <message>
+        <location line="+2"/>
         <source>Easy Link between PLCs: table from S1, working area S2</source>
         <translation>Easy Link PLC-k között: táblázat S1-től, munkaterület S2</translation>
     </message>
@@ -6792,7 +6877,7 @@ Kiértékelés: %4 µs (%5..%6)</translation>
         <translation>S m2 számjegyének mozgatása az m1. számjegytől D-be az n. számjegytől</translation>
     </message>
     <message>
-        <location line="-156"/>
+        <location line="-216"/>
         <source>Counter: counts rising edges, reset with RST</source>
         <translation>Számláló: a felfutó éleket számolja, törlés RST-vel</translation>
     </message>
@@ -6817,17 +6902,17 @@ Kiértékelés: %4 µs (%5..%6)</translation>
         <translation>S mozgatása D-be</translation>
     </message>
     <message>
-        <location line="+20"/>
+        <location line="+27"/>
         <source>Move n words from S to D</source>
         <translation>n szó mozgatása S-ből D-be</translation>
     </message>
     <message>
-        <location line="+4"/>
+        <location line="+7"/>
         <source>Compare S1 with S2: D, D+1, D+2 = &gt;, =, &lt;</source>
         <translation>S1 összehasonlítása S2-vel: D, D+1, D+2 = &gt;, =, &lt;</translation>
     </message>
     <message>
-        <location line="+3"/>
+        <location line="+6"/>
         <source>Reset every device from D1 to D2</source>
         <translation>Minden operandus törlése D1-től D2-ig</translation>
     </message>
@@ -6842,7 +6927,7 @@ Kiértékelés: %4 µs (%5..%6)</translation>
         <translation>D = S1 - S2</translation>
     </message>
     <message>
-        <location line="+3"/>
+        <location line="+6"/>
         <source>D, D+1 = S1 x S2 (32-bit product)</source>
         <translation>D, D+1 = S1 x S2 (32 bites szorzat)</translation>
     </message>
@@ -6892,7 +6977,7 @@ Kiértékelés: %4 µs (%5..%6)</translation>
         <translation>D = az S BCD számjegyek értéke</translation>
     </message>
     <message>
-        <location line="+8"/>
+        <location line="+17"/>
         <source>Read n words of special module m1, from m2</source>
         <translation>n szó olvasása az m1 speciális modul m2 címétől</translation>
     </message>
@@ -6902,7 +6987,7 @@ Kiértékelés: %4 µs (%5..%6)</translation>
         <translation>n szó írása az m1 speciális modul m2 címére</translation>
     </message>
     <message>
-        <location line="+29"/>
+        <location line="+37"/>
         <source>Refresh n inputs or outputs now</source>
         <translation>n bemenet vagy kimenet azonnali frissítése</translation>
     </message>
@@ -7141,12 +7226,13 @@ Kiértékelés: %4 µs (%5..%6)</translation>
         <translation>%1: hiányzik a(z) %2. operandus</translation>
     </message>
     <message>
-        <location line="+17"/>
+        <location filename="../simulator/compile_steps.cpp" line="+168"/>
+        <location filename="../simulator/compiler_detail.h" line="+17"/>
         <source>%1 is not a bit device</source>
         <translation>%1 nem bit típusú operandus</translation>
     </message>
     <message>
-        <location line="+23"/>
+        <location filename="../simulator/compiler_detail.h" line="+23"/>
         <source>constant %1 is out of range</source>
         <translation>a(z) %1 konstans tartományon kívül esik</translation>
     </message>
@@ -7194,7 +7280,7 @@ Kiértékelés: %4 µs (%5..%6)</translation>
         <translation>%1 előtt %2 nyitott blokk kell</translation>
     </message>
     <message>
-        <location filename="../simulator/compile_steps.cpp" line="+17"/>
+        <location filename="../simulator/compile_steps.cpp" line="-151"/>
         <source>more than %1 open blocks</source>
         <translation>több mint %1 nyitott blokk</translation>
     </message>
@@ -7209,33 +7295,27 @@ Kiértékelés: %4 µs (%5..%6)</translation>
         <translation>%1 nem számláló</translation>
     </message>
     <message>
-        <location line="+71"/>
-        <source>%1 needs three bit devices from %2</source>
-        <translation>%1 három bit típusú operandust igényel %2-tól</translation>
+        <location line="+142"/>
+        <source>the simulator has no operator %1</source>
+        <translation>a szimulátor nem ismeri ezt a műveleti jelet: %1</translation>
     </message>
     <message>
-        <location line="+17"/>
-        <source>%1 needs two devices of one kind, the first not after the second</source>
-        <translation>%1 két azonos fajtájú operandust igényel, az első nem lehet a második után</translation>
+        <location line="+46"/>
+        <source>%1 is not a number of words</source>
+        <translation>%1 nem érvényes szószám</translation>
     </message>
     <message>
-        <location line="+48"/>
-        <source>unknown operator %1 (use + - * / | &amp; ^ &lt;&lt; &gt;&gt;)</source>
-        <translation>ismeretlen művelet: %1 (használható: + - * / | &amp; ^ &lt;&lt; &gt;&gt;)</translation>
-    </message>
-    <message>
-        <location line="+17"/>
+        <location line="-29"/>
         <source>%1 needs a bit: a bit device, or a word and a bit number 0..15</source>
         <translation>%1 egy bitet igényel: bit típusú operandust, vagy egy szót és egy 0..15 bitszámot</translation>
     </message>
     <message>
-        <location line="+27"/>
         <location filename="../simulator/compile_words.cpp" line="+9"/>
         <source>%1 needs a count from 1 to %2</source>
         <translation>%1 darabszáma 1 és %2 között lehet</translation>
     </message>
     <message>
-        <location line="+15"/>
+        <location filename="../simulator/compile_steps.cpp" line="+43"/>
         <source>the block of %1 words runs past the end of its area</source>
         <translation>a(z) %1 szavas blokk túlnyúlik a terület végén</translation>
     </message>
@@ -7260,12 +7340,13 @@ Kiértékelés: %4 µs (%5..%6)</translation>
         <translation>%1 nem törölhető</translation>
     </message>
     <message>
-        <location line="+5"/>
+        <location filename="../simulator/compile_steps.cpp" line="-112"/>
+        <location filename="../simulator/compiler.cpp" line="+5"/>
         <source>%1 is not a device</source>
         <translation>%1 nem operandus</translation>
     </message>
     <message>
-        <location line="+110"/>
+        <location filename="../simulator/compiler.cpp" line="+110"/>
         <source>the program has no target</source>
         <translation>a programnak nincs célrendszere</translation>
     </message>

@@ -300,7 +300,7 @@ Codice di uscita: 0 nessun errore, 1 il programma contiene errori, 2 errore di u
         <translation>Annullato: nulla è stato inviato al PLC</translation>
     </message>
     <message>
-        <location filename="../app/gui/connection_panel.cpp" line="+245"/>
+        <location filename="../app/gui/connection_panel.cpp" line="+248"/>
         <source>Settings</source>
         <translation>Impostazioni</translation>
     </message>
@@ -597,7 +597,7 @@ I valori mostrati sono gli ultimi letti, segnati come non aggiornati.</translati
         <translation>Connetti</translation>
     </message>
     <message>
-        <location line="+35"/>
+        <location line="+37"/>
         <source>Errors %1, retries %2, timeouts %3, refused %4, reconnects %5
 Round trip %6 ms (mean %7, max %8); refresh %9 ms, %10 frame(s)</source>
         <translation>Errori %1, tentativi %2, timeout %3, rifiutati %4, riconnessioni %5
@@ -2217,12 +2217,12 @@ Codice di uscita di read e write: 0 fatto, 1 il PLC non ha risposto o ha rifiuta
 <context>
     <name>rung::app::Serve</name>
     <message>
-        <location filename="../app/cli/cli_serve.cpp" line="+28"/>
+        <location filename="../app/cli/cli_serve.cpp" line="+30"/>
         <source>usage: rungstudio-cli serve FILE [--target T] [--model M] --protocol vigor|modbus|modbus-tcp|hostlink (--pty | --port NAME | --tcp HOST:PORT) [--station N] [--baud B] [--frame 8N1|7E1|7E2|...] [--period MS] [--fault bad-checksum|silent|wrong-station|garbage|truncated|split]</source>
         <translation>uso: rungstudio-cli serve FILE [--target T] [--model M] --protocol vigor|modbus|modbus-tcp|hostlink (--pty | --port NAME | --tcp HOST:PORT) [--station N] [--baud B] [--frame 8N1|7E1|7E2|...] [--period MS] [--fault bad-checksum|silent|wrong-station|garbage|truncated|split]</translation>
     </message>
     <message>
-        <location line="+111"/>
+        <location line="+68"/>
         <source>unexpected argument %1</source>
         <translation>argomento inatteso %1</translation>
     </message>
@@ -2237,7 +2237,7 @@ Codice di uscita di read e write: 0 fatto, 1 il PLC non ha risposto o ha rifiuta
         <translation>nessun FILE indicato</translation>
     </message>
     <message>
-        <location line="+7"/>
+        <location line="+5"/>
         <source>--protocol is required</source>
         <translation>--protocol è obbligatorio</translation>
     </message>
@@ -2247,7 +2247,7 @@ Codice di uscita di read e write: 0 fatto, 1 il PLC non ha risposto o ha rifiuta
         <translation>protocollo sconosciuto %1 (vigor, modbus, modbus-tcp, hostlink)</translation>
     </message>
     <message>
-        <location line="+3"/>
+        <location line="+7"/>
         <source>give one of --pty, --port NAME and --tcp HOST:PORT</source>
         <translation>indicare uno solo tra --pty, --port NAME e --tcp HOST:PORT</translation>
     </message>
@@ -2277,7 +2277,7 @@ Codice di uscita di read e write: 0 fatto, 1 il PLC non ha risposto o ha rifiuta
         <translation>guasto sconosciuto %1 (%2)</translation>
     </message>
     <message>
-        <location line="+14"/>
+        <location line="+13"/>
         <source>%1 has no published protocol to serve (protocols.md)</source>
         <translation>%1 non ha un protocollo pubblicato da servire (protocols.md)</translation>
     </message>
@@ -3854,7 +3854,7 @@ Valutazione: %4 µs (%5..%6)</translation>
         <translation>%1 non è usato nel programma</translation>
     </message>
     <message>
-        <location filename="../editor/ladder_view_monitor.cpp" line="+231"/>
+        <location filename="../editor/ladder_view_monitor.cpp" line="+240"/>
         <source>current %1, set %2, %3</source>
         <extracomment>a timer&apos;s or counter&apos;s live state in a tooltip: current value, set value, done bit</extracomment>
         <translation>corrente %1, preset %2, %3</translation>
@@ -4640,7 +4640,7 @@ Valutazione: %4 µs (%5..%6)</translation>
         <translation>%1: %2</translation>
     </message>
     <message>
-        <location line="+104"/>
+        <location line="+126"/>
         <source>%1: both ends of a range must be devices of one kind (D0..D15)</source>
         <translation>%1: entrambi gli estremi di un intervallo devono essere operandi dello stesso tipo (D0..D15)</translation>
     </message>
@@ -4660,7 +4660,7 @@ Valutazione: %4 µs (%5..%6)</translation>
         <translation>%1: il PLC non ha %2 in questo intervallo</translation>
     </message>
     <message>
-        <location line="-126"/>
+        <location line="-148"/>
         <source>%1: digits are expected</source>
         <translation>%1: sono attese delle cifre</translation>
     </message>
@@ -4800,7 +4800,12 @@ Valutazione: %4 µs (%5..%6)</translation>
         </translation>
     </message>
     <message>
-        <location line="+158"/>
+        <location line="+146"/>
+        <source>%1 cannot be written: the program only reads it (%2)</source>
+        <translation>%1 non può essere scritto: il programma lo legge soltanto (%2)</translation>
+    </message>
+    <message>
+        <location line="+56"/>
         <source>%1 is driven twice; a coil may be driven only once (the first is on line %2)</source>
         <translation>%1 è comandato due volte; una bobina può essere comandata una volta sola (il primo è alla riga %2)</translation>
     </message>
@@ -4942,12 +4947,7 @@ Valutazione: %4 µs (%5..%6)</translation>
         <translation>Il valore di preset %1 è fuori campo</translation>
     </message>
     <message>
-        <location line="+21"/>
-        <source>%1 cannot be written: %2 are read-only</source>
-        <translation>%1 non può essere scritto: area di sola lettura (%2)</translation>
-    </message>
-    <message>
-        <location line="+7"/>
+        <location line="+28"/>
         <source>%1 cannot be written: the PLC drives it (%2)</source>
         <translation>%1 non è scrivibile: lo gestisce il PLC (%2)</translation>
     </message>
@@ -4992,27 +4992,59 @@ Valutazione: %4 µs (%5..%6)</translation>
         <translation>il %1 di %2 deve essere #0DNS con le cifre D, N e S da 0 a 3, non %3</translation>
     </message>
     <message>
-        <location line="+18"/>
+        <location line="+88"/>
         <source>the %1 of %2 must be BCD (#0000..#9999), not %3</source>
         <translation>il %1 di %2 deve essere BCD (#0000..#9999), non %3</translation>
     </message>
     <message>
-        <location line="+20"/>
+        <location line="-46"/>
         <source>%1 or %2</source>
         <translation>%1 o %2</translation>
     </message>
     <message>
-        <location line="+1"/>
+        <location line="-26"/>
+        <source>%1 uses %2..%3, which runs from %4 into %5: a block stays in one</source>
+        <translation>%1 usa %2..%3, che passa da %4 a %5: un blocco resta in un&apos;area sola</translation>
+    </message>
+    <message>
+        <location line="+7"/>
+        <source>%1 uses %2..%3, but %4 does not exist</source>
+        <translation>%1 usa %2..%3, ma %4 non esiste</translation>
+    </message>
+    <message>
+        <location line="+44"/>
+        <location line="+38"/>
         <source>the %1 of %2 must be %3, not %4</source>
         <translation>il %1 di %2 deve essere %3, non %4</translation>
     </message>
     <message>
-        <location line="+5"/>
+        <location line="-33"/>
+        <location line="+74"/>
+        <source>%1 takes its %2 from %3 only, not %4</source>
+        <translation>%1 prende il suo %2 solo da %3, non da %4</translation>
+    </message>
+    <message>
+        <location line="-66"/>
+        <source>the %1 of %2 must be a device, not %3</source>
+        <translation>il %1 di %2 deve essere un operando, non %3</translation>
+    </message>
+    <message>
+        <location line="+29"/>
+        <source>the %1 of %2 must be at least %3, not %4</source>
+        <translation>il %1 di %2 deve essere almeno %3, non %4</translation>
+    </message>
+    <message>
+        <location line="+6"/>
         <source>the %1 of %2 must be from %3 to %4, not %5</source>
         <translation>il %1 di %2 deve essere da %3 a %4, non %5</translation>
     </message>
     <message>
-        <location line="+15"/>
+        <location line="+11"/>
+        <source>the %1 of %2 must be a number, not %3</source>
+        <translation>il %1 di %2 deve essere un numero, non %3</translation>
+    </message>
+    <message>
+        <location line="+11"/>
         <source>%1 moves whole words: %2 cannot be its %3</source>
         <translation>%1 sposta word intere: %2 non può essere il suo %3</translation>
     </message>
@@ -5022,27 +5054,42 @@ Valutazione: %4 µs (%5..%6)</translation>
         <translation>%1 prende il suo %2 da una costante o da %3, non da %4</translation>
     </message>
     <message>
-        <location line="+16"/>
+        <location line="+17"/>
         <source>%1 takes only %2..%3, not %4</source>
         <translation>%1 accetta solo %2..%3, non %4</translation>
     </message>
     <message>
-        <location line="+7"/>
+        <location line="+16"/>
+        <source>the %1 of %2 is a word: %3 is a single bit</source>
+        <translation>il %1 di %2 è una word: %3 è un singolo bit</translation>
+    </message>
+    <message>
+        <location line="+11"/>
+        <source>the %1 of %2 is a word: %3 starts no word of 16 bits (%4 and %5 do)</source>
+        <translation>il %1 di %2 è una word: %3 non è l&apos;inizio di una word di 16 bit (%4 e %5 lo sono)</translation>
+    </message>
+    <message>
+        <location line="+20"/>
+        <source>the %1 of %2 is a bit: %3 is a whole channel (%4 is its first bit)</source>
+        <translation>il %1 di %2 è un bit: %3 è un canale intero (il suo primo bit è %4)</translation>
+    </message>
+    <message>
+        <location line="+6"/>
+        <source>the %1 of %2 is a bit: %3 is a whole word</source>
+        <translation>il %1 di %2 è un bit: %3 è una word intera</translation>
+    </message>
+    <message>
+        <location line="+8"/>
         <source>the %1 of %2 must be a channel with bits (IR, HR, LR), not %3</source>
         <translation>il %1 di %2 deve essere un canale con bit (IR, HR, LR), non %3</translation>
     </message>
     <message>
-        <location line="+9"/>
-        <source>%1 %2 %3: the end word must be in the area of the start word and not before it</source>
-        <translation>%1 %2 %3: la word finale deve stare nell&apos;area della word iniziale e non prima di essa</translation>
+        <location line="+13"/>
+        <source>%1 %2 %3: the last device must be of the kind of the first and not before it</source>
+        <translation>%1 %2 %3: l&apos;ultimo operando deve essere dello stesso tipo del primo e non precederlo</translation>
     </message>
     <message>
-        <location line="+11"/>
-        <source>%1 writes %2 words from %3, past the end of %4</source>
-        <translation>%1 scrive %2 word da %3, oltre la fine di %4</translation>
-    </message>
-    <message>
-        <location line="+14"/>
+        <location line="+47"/>
         <source>%1 cannot write %2: %3 are written only by %4</source>
         <translation>%1 non può scrivere %2: %3 sono scritti solo da %4</translation>
     </message>
@@ -5070,7 +5117,7 @@ Valutazione: %4 µs (%5..%6)</translation>
 <context>
     <name>rung::model::Convert</name>
     <message>
-        <location filename="../model/convert/convert_to_ladder.cpp" line="+201"/>
+        <location filename="../model/convert/convert_to_ladder.cpp" line="+216"/>
         <source>%1 joins the condition of a branch point in parallel with another block; the ladder cannot draw this: repeat the shared contacts in this branch instead</source>
         <translation>%1 collega la condizione di un punto di diramazione in parallelo a un altro blocco; lo schema ladder non può disegnarlo: ripeti invece i contatti comuni in questo ramo</translation>
     </message>
@@ -5650,7 +5697,7 @@ Valutazione: %4 µs (%5..%6)</translation>
     </message>
     <message>
         <location line="+4"/>
-        <location filename="../model/target/target_pl110.cpp" line="+86"/>
+        <location filename="../model/target/target_pl110.cpp" line="+89"/>
         <location filename="../model/target/target_vpc.cpp" line="+61"/>
         <source>timers</source>
         <translation>temporizzatori</translation>
@@ -6095,14 +6142,14 @@ Valutazione: %4 µs (%5..%6)</translation>
     </message>
     <message>
         <location line="+3"/>
-        <location filename="../model/target/target_pl110.cpp" line="+116"/>
+        <location filename="../model/target/target_pl110.cpp" line="+128"/>
         <location filename="../model/target/target_vigor.cpp" line="-1"/>
         <location filename="../model/target/target_vpc.cpp" line="+5"/>
         <source>End of the program</source>
         <translation>Fine del programma</translation>
     </message>
     <message>
-        <location filename="../model/target/target_pl110.cpp" line="-337"/>
+        <location filename="../model/target/target_pl110.cpp" line="-352"/>
         <source>IF contact: ON while S1 ? S2 is true</source>
         <translation>Contatto IF: ON mentre S1 ? S2 è vero</translation>
     </message>
@@ -6127,7 +6174,7 @@ Valutazione: %4 µs (%5..%6)</translation>
         <translation>marker</translation>
     </message>
     <message>
-        <location line="+6"/>
+        <location line="+9"/>
         <source>timers (with SM0.13 ON)</source>
         <translation>temporizzatori (con SM0.13 ON)</translation>
     </message>
@@ -6378,7 +6425,12 @@ Valutazione: %4 µs (%5..%6)</translation>
         <translation>Contatore all&apos;indietro da PV: ingressi UP, DOWN e RESET (carica PV); C ON a 0</translation>
     </message>
     <message>
-        <location line="+10"/>
+        <location line="+13"/>
+        <source>operator</source>
+        <translation>operatore</translation>
+    </message>
+    <message>
+        <location line="+2"/>
         <source>Math formula: D = S1 op S2, op one of + - * / | &amp; ^ &lt;&lt; &gt;&gt;</source>
         <translation>Formula matematica: D = S1 op S2, op uno tra + - * / | &amp; ^ &lt;&lt; &gt;&gt;</translation>
     </message>
@@ -6388,7 +6440,15 @@ Valutazione: %4 µs (%5..%6)</translation>
         <translation>Sposta un valore o una word in D</translation>
     </message>
     <message>
-        <location line="+6"/>
+        <location line="+11"/>
+        <location filename="../model/target/target_vigor.cpp" line="+176"/>
+        <location line="+61"/>
+        <location line="+75"/>
+        <source>number of words</source>
+        <translation>numero di word</translation>
+    </message>
+    <message>
+        <location line="+2"/>
         <source>Move n words from S (or the value S) to D</source>
         <translation>Sposta n word da S (o il valore S) a D</translation>
     </message>
@@ -6473,7 +6533,7 @@ Valutazione: %4 µs (%5..%6)</translation>
         <translation>Posiziona un parametro del display</translation>
     </message>
     <message>
-        <location filename="../model/target/target_vigor.cpp" line="-159"/>
+        <location filename="../model/target/target_vigor.cpp" line="-471"/>
         <source>Compare contact: ON while S1 ? S2</source>
         <translation>Contatto di confronto: ON mentre S1 ? S2</translation>
     </message>
@@ -6757,17 +6817,22 @@ Valutazione: %4 µs (%5..%6)</translation>
         <translation>Sposta 32 bit: S (S, S+1) in D (word bassa), D+1 (word alta)</translation>
     </message>
     <message>
-        <location line="+72"/>
+        <location line="+97"/>
         <source>Write n words to special module m1, at m2, once on a rising edge</source>
         <translation>Scrive n word nel modulo speciale m1, da m2, una volta sul fronte di salita</translation>
     </message>
     <message>
-        <location line="+16"/>
+        <location line="+17"/>
         <source>Check code: the sum of n bytes from S into D, their parity into D+1 (M9161 ON: one byte a word)</source>
         <translation>Codice di controllo: la somma di n byte da S in D, la loro parità in D+1 (M9161 ON: un byte per word)</translation>
     </message>
     <message>
-        <location line="+11"/>
+        <location line="+12"/>
+        <source>first input or output</source>
+        <translation>primo ingresso o uscita</translation>
+    </message>
+    <message>
+        <location line="+6"/>
         <source>Convert n ASCII characters from S to hexadecimal in D</source>
         <translation>Converte n caratteri ASCII da S in esadecimale in D</translation>
     </message>
@@ -6777,12 +6842,32 @@ Valutazione: %4 µs (%5..%6)</translation>
         <translation>Converte n cifre esadecimali da S in ASCII in D</translation>
     </message>
     <message>
-        <location line="+5"/>
+        <location line="+10"/>
+        <source>first word to send</source>
+        <translation>primo registro da inviare</translation>
+    </message>
+    <message>
+        <location line="+4"/>
+        <source>first word received</source>
+        <translation>primo registro ricevuto</translation>
+    </message>
+    <message>
+        <location line="+7"/>
         <source>Serial communication on CP2: send m words from S, receive n words into D</source>
         <translation>Comunicazione seriale su CP2: invia m word da S, riceve n word in D</translation>
     </message>
     <message>
-        <location line="+7"/>
+        <location line="+11"/>
+        <source>table</source>
+        <translation>inizio tabella</translation>
+    </message>
+    <message>
+        <location line="+5"/>
+        <source>working area</source>
+        <translation>blocco di lavoro</translation>
+    </message>
+    <message>
+        <location line="+2"/>
         <source>Easy Link between PLCs: table from S1, working area S2</source>
         <translation>Easy Link tra PLC: tabella da S1, area di lavoro S2</translation>
     </message>
@@ -6807,7 +6892,7 @@ Valutazione: %4 µs (%5..%6)</translation>
         <translation>Sposta m2 cifre di S dalla cifra m1 in D dalla cifra n</translation>
     </message>
     <message>
-        <location line="-156"/>
+        <location line="-216"/>
         <source>Counter: counts rising edges, reset with RST</source>
         <translation>Contatore: conta i fronti di salita, reset con RST</translation>
     </message>
@@ -6832,17 +6917,17 @@ Valutazione: %4 µs (%5..%6)</translation>
         <translation>Sposta S in D</translation>
     </message>
     <message>
-        <location line="+20"/>
+        <location line="+27"/>
         <source>Move n words from S to D</source>
         <translation>Sposta n word da S a D</translation>
     </message>
     <message>
-        <location line="+4"/>
+        <location line="+7"/>
         <source>Compare S1 with S2: D, D+1, D+2 = &gt;, =, &lt;</source>
         <translation>Confronta S1 con S2: D, D+1, D+2 = &gt;, =, &lt;</translation>
     </message>
     <message>
-        <location line="+3"/>
+        <location line="+6"/>
         <source>Reset every device from D1 to D2</source>
         <translation>Resetta tutti gli operandi da D1 a D2</translation>
     </message>
@@ -6857,7 +6942,7 @@ Valutazione: %4 µs (%5..%6)</translation>
         <translation>D = S1 - S2</translation>
     </message>
     <message>
-        <location line="+3"/>
+        <location line="+6"/>
         <source>D, D+1 = S1 x S2 (32-bit product)</source>
         <translation>D, D+1 = S1 x S2 (prodotto a 32 bit)</translation>
     </message>
@@ -6907,7 +6992,7 @@ Valutazione: %4 µs (%5..%6)</translation>
         <translation>D = il valore delle cifre BCD di S</translation>
     </message>
     <message>
-        <location line="+8"/>
+        <location line="+17"/>
         <source>Read n words of special module m1, from m2</source>
         <translation>Legge n word dal modulo speciale m1, da m2</translation>
     </message>
@@ -6917,7 +7002,7 @@ Valutazione: %4 µs (%5..%6)</translation>
         <translation>Scrive n word nel modulo speciale m1, a m2</translation>
     </message>
     <message>
-        <location line="+29"/>
+        <location line="+37"/>
         <source>Refresh n inputs or outputs now</source>
         <translation>Aggiorna subito n ingressi o uscite</translation>
     </message>
@@ -7156,12 +7241,13 @@ Valutazione: %4 µs (%5..%6)</translation>
         <translation>%1 richiede l&apos;operando %2</translation>
     </message>
     <message>
-        <location line="+17"/>
+        <location filename="../simulator/compile_steps.cpp" line="+168"/>
+        <location filename="../simulator/compiler_detail.h" line="+17"/>
         <source>%1 is not a bit device</source>
         <translation>%1 non è un operando a bit</translation>
     </message>
     <message>
-        <location line="+23"/>
+        <location filename="../simulator/compiler_detail.h" line="+23"/>
         <source>constant %1 is out of range</source>
         <translation>la costante %1 è fuori campo</translation>
     </message>
@@ -7209,7 +7295,7 @@ Valutazione: %4 µs (%5..%6)</translation>
         <translation>%1 richiede %2 blocchi aperti prima di sé</translation>
     </message>
     <message>
-        <location filename="../simulator/compile_steps.cpp" line="+17"/>
+        <location filename="../simulator/compile_steps.cpp" line="-151"/>
         <source>more than %1 open blocks</source>
         <translation>più di %1 blocchi aperti</translation>
     </message>
@@ -7224,33 +7310,27 @@ Valutazione: %4 µs (%5..%6)</translation>
         <translation>%1 non è un contatore</translation>
     </message>
     <message>
-        <location line="+71"/>
-        <source>%1 needs three bit devices from %2</source>
-        <translation>%1 richiede tre operandi a bit a partire da %2</translation>
+        <location line="+142"/>
+        <source>the simulator has no operator %1</source>
+        <translation>il simulatore non ha l&apos;operatore %1</translation>
     </message>
     <message>
-        <location line="+17"/>
-        <source>%1 needs two devices of one kind, the first not after the second</source>
-        <translation>%1 richiede due operandi dello stesso tipo, il primo non successivo al secondo</translation>
+        <location line="+46"/>
+        <source>%1 is not a number of words</source>
+        <translation>%1 non è un numero di word</translation>
     </message>
     <message>
-        <location line="+48"/>
-        <source>unknown operator %1 (use + - * / | &amp; ^ &lt;&lt; &gt;&gt;)</source>
-        <translation>operatore sconosciuto %1 (usare + - * / | &amp; ^ &lt;&lt; &gt;&gt;)</translation>
-    </message>
-    <message>
-        <location line="+17"/>
+        <location line="-29"/>
         <source>%1 needs a bit: a bit device, or a word and a bit number 0..15</source>
         <translation>%1 richiede un bit: un operando a bit, o una word e un numero di bit 0..15</translation>
     </message>
     <message>
-        <location line="+27"/>
         <location filename="../simulator/compile_words.cpp" line="+9"/>
         <source>%1 needs a count from 1 to %2</source>
         <translation>%1 richiede un numero da 1 a %2</translation>
     </message>
     <message>
-        <location line="+15"/>
+        <location filename="../simulator/compile_steps.cpp" line="+43"/>
         <source>the block of %1 words runs past the end of its area</source>
         <translation>il blocco di %1 word va oltre la fine della sua area</translation>
     </message>
@@ -7275,12 +7355,13 @@ Valutazione: %4 µs (%5..%6)</translation>
         <translation>%1 non può essere resettato</translation>
     </message>
     <message>
-        <location line="+5"/>
+        <location filename="../simulator/compile_steps.cpp" line="-112"/>
+        <location filename="../simulator/compiler.cpp" line="+5"/>
         <source>%1 is not a device</source>
         <translation>%1 non è un operando</translation>
     </message>
     <message>
-        <location line="+110"/>
+        <location filename="../simulator/compiler.cpp" line="+110"/>
         <source>the program has no target</source>
         <translation>il programma non ha una famiglia PLC</translation>
     </message>

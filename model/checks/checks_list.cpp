@@ -391,6 +391,48 @@ private:
             f.diagnostic.location.column = static_cast<int>(found) + 1;
     }
 
+    // Moves the finding to the column of operand k when it is a constant or a word (SBIT V3
+    // 16: the 16), found as a whole word after the mnemonic; the mnemonic's column otherwise.
+    void atWordOperand(Finding &f, int i, std::size_t k) {
+        const Instruction &ins = at(i);
+        if (!m_source || ins.line <= 0 || k >= ins.operands.size())
+            return;
+        if (m_sourceLines.isEmpty())
+            m_sourceLines = m_source->split(QLatin1Char('\n'));
+        const auto written = [this](const Operand &o) {
+            return o.kind == Operand::Kind::Constant ? formatConstant(m_t, o.constant)
+                   : o.kind == Operand::Kind::Text   ? o.text.trimmed()
+                                                     : formatOperand(m_t, o);
+        };
+        const QString wanted = written(ins.operands[k]);
+        int skip = 0; // earlier operands written the same way
+        for (std::size_t j = 0; j < k; ++j)
+            if (written(ins.operands[j]).compare(wanted, Qt::CaseInsensitive) == 0)
+                ++skip;
+        QString line = m_sourceLines.value(ins.line - 1);
+        if (const qsizetype comment = line.indexOf(QLatin1Char(';')); comment >= 0)
+            line.truncate(comment);
+        qsizetype pos = std::max(0, ins.column - 1);
+        bool mnemonic = true;
+        while (pos < line.size()) {
+            while (pos < line.size() && line[pos].isSpace())
+                ++pos;
+            qsizetype end = pos;
+            while (end < line.size() && !line[end].isSpace())
+                ++end;
+            if (end == pos)
+                break;
+            if (!mnemonic &&
+                QStringView(line).mid(pos, end - pos).compare(wanted, Qt::CaseInsensitive) == 0 &&
+                skip-- == 0) {
+                f.diagnostic.location.column = static_cast<int>(pos) + 1;
+                return;
+            }
+            mnemonic = false;
+            pos = end;
+        }
+    }
+
     void operands() {
         std::map<int, std::pair<int, int>> bankUse; // number -> (timer use, counter use)
         for (int i = 0; i < size(); ++i) {
@@ -411,6 +453,8 @@ private:
                 Finding &f = add("OP005", Severity::Error, i, b.message);
                 if (o.kind == Operand::Kind::Device)
                     atOperand(f, i, formatOperand(m_t, o));
+                else
+                    atWordOperand(f, i, static_cast<std::size_t>(b.operand));
             }
             for (std::size_t k = 0; k < ins.operands.size(); ++k) {
                 const Operand &o = ins.operands[k];
@@ -442,7 +486,7 @@ private:
                     driven = driveBySystem(offsetAddress(m_t, o.address, b, m_model));
                 if (destination && !area.writable && ins.op() != Op::Reset) {
                     atOperand(add("OP002", Severity::Error, i,
-                                  Tr::tr("%1 cannot be written: %2 are read-only")
+                                  Tr::tr("%1 cannot be written: the program only reads it (%2)")
                                       .arg(device, QCoreApplication::translate(
                                                        "rung::model::Target", area.description))),
                               i, device);

@@ -76,6 +76,47 @@ QString controlWordMessage(const Target &target, const OperandSpec &rule, std::s
         .arg(slotName(rule, k), spec.mnemonic, shown);
 }
 
+// "BMOV uses D8190..D8199, but D8192 does not exist": a run of `count` elements from
+// `first` that model::runBreaks finds broken; empty when it is whole.
+QString brokenRun(const Target &target, const InstructionSpec &spec, const Address &first,
+                  qint64 count, bool wordBlock = false) {
+    const std::optional<Address> missing = runBreaks(target, first, count, wordBlock);
+    if (!missing)
+        return {};
+    Address last = first;
+    last.index = static_cast<int>(std::min<qint64>(qint64{first.index} + count - 1, INT_MAX));
+    const Address there = offsetAddress(target, first, qint64{missing->index} - first.index);
+    if (there.valid() && there.area != missing->area) {
+        // A block of timer or counter values: T199 and T200 are no neighbours in memory.
+        return Tr::tr("%1 uses %2..%3, which runs from %4 into %5: a block stays in one")
+            .arg(spec.mnemonic, formatAddress(target, first), formatAddress(target, last),
+                 QCoreApplication::translate("rung::model::Target",
+                                             target.area(missing->area).description),
+                 QCoreApplication::translate("rung::model::Target",
+                                             target.area(there.area).description));
+    }
+    return Tr::tr("%1 uses %2..%3, but %4 does not exist")
+        .arg(spec.mnemonic, formatAddress(target, first), formatAddress(target, last),
+             formatAddress(target, *missing));
+}
+
+// "D" for the keys D and DL: the prefixes of the areas, each once.
+QString areaPrefixes(const Target &target, const std::vector<const char *> &keys) {
+    QStringList prefixes;
+    for (const char *key : keys)
+        if (const int a = areaByKey(target, key);
+            a >= 0 && !prefixes.contains(target.area(a).prefix))
+            prefixes << target.area(a).prefix;
+    return prefixes.join(QStringLiteral(", "));
+}
+
+QString choiceList(const QStringList &all) {
+    QStringList values = all;
+    const QString last = values.takeLast();
+    return values.isEmpty() ? last
+                            : Tr::tr("%1 or %2").arg(values.join(QStringLiteral(", ")), last);
+}
+
 } // namespace
 
 std::vector<OperandBreach> operandBreaches(const Target &target, const Instruction &ins) {
@@ -87,6 +128,35 @@ std::vector<OperandBreach> operandBreaches(const Target &target, const Instructi
         const Operand &o = ins.operands[k];
         const OperandSpec &rule = spec.operands[k];
         const int at = static_cast<int>(k);
+        if (!rule.allowedTexts.empty()) {
+            // A word from a list (PL110 FM's operators): a number or another word is none.
+            QStringList texts;
+            for (const char *text : rule.allowedTexts)
+                texts << QString::fromLatin1(text);
+            const QString written = o.kind == Operand::Kind::Constant
+                                        ? formatConstant(target, o.constant)
+                                    : o.kind == Operand::Kind::Device ? formatOperand(target, o)
+                                                                      : o.text.trimmed();
+            if (o.kind != Operand::Kind::Text || !texts.contains(written))
+                found.push_back(
+                    {at, Tr::tr("the %1 of %2 must be %3, not %4")
+                             .arg(slotName(rule, k), spec.mnemonic, choiceList(texts), written)});
+            continue;
+        }
+        if (o.kind == Operand::Kind::Constant && rule.deviceOnly && !rule.sourceAreas.empty()) {
+            found.push_back({at, Tr::tr("%1 takes its %2 from %3 only, not %4")
+                                     .arg(spec.mnemonic, slotName(rule, k),
+                                          areaPrefixes(target, rule.sourceAreas),
+                                          formatConstant(target, o.constant))});
+            continue;
+        }
+        if (o.kind == Operand::Kind::Constant && rule.deviceOnly) {
+            // CCD S: a block of words to read, not a value.
+            found.push_back({at, Tr::tr("the %1 of %2 must be a device, not %3")
+                                     .arg(slotName(rule, k), spec.mnemonic,
+                                          formatConstant(target, o.constant))});
+            continue;
+        }
         if (o.kind == Operand::Kind::Constant) {
             const qint64 v = o.constant.value;
             if (rule.bcd && o.constant.style != Constant::Style::Bcd) {
@@ -106,13 +176,14 @@ std::vector<OperandBreach> operandBreaches(const Target &target, const Instructi
                 QStringList values;
                 for (int a : rule.allowedValues)
                     values << QString::number(a);
-                const QString last = values.takeLast();
-                const QString choices =
-                    values.isEmpty()
-                        ? last
-                        : Tr::tr("%1 or %2").arg(values.join(QStringLiteral(", ")), last);
+                const QString choices = choiceList(values);
                 found.push_back({at, Tr::tr("the %1 of %2 must be %3, not %4")
                                          .arg(slotName(rule, k), spec.mnemonic, choices)
+                                         .arg(v)});
+            } else if (rule.highest == INT_MAX && rule.lowest != INT_MIN && v < rule.lowest) {
+                found.push_back({at, Tr::tr("the %1 of %2 must be at least %3, not %4")
+                                         .arg(slotName(rule, k), spec.mnemonic)
+                                         .arg(rule.lowest)
                                          .arg(v)});
             } else if ((rule.lowest != INT_MIN || rule.highest != INT_MAX) &&
                        (v < rule.lowest || v > rule.highest)) {
@@ -122,6 +193,13 @@ std::vector<OperandBreach> operandBreaches(const Target &target, const Instructi
                                          .arg(rule.highest)
                                          .arg(v)});
             }
+            continue;
+        }
+        if (o.kind == Operand::Kind::Text &&
+            (rule.lowest != INT_MIN || rule.highest != INT_MAX || !rule.allowedValues.empty())) {
+            // PL110 keeps a word in a constant slot verbatim; a slot with a range wants a number.
+            found.push_back({at, Tr::tr("the %1 of %2 must be a number, not %3")
+                                     .arg(slotName(rule, k), spec.mnemonic, o.text.trimmed())});
             continue;
         }
         if (o.kind != Operand::Kind::Device || !o.address.valid() ||
@@ -138,18 +216,19 @@ std::vector<OperandBreach> operandBreaches(const Target &target, const Instructi
         if (!rule.sourceAreas.empty() &&
             std::none_of(rule.sourceAreas.begin(), rule.sourceAreas.end(),
                          [&](const char *key) { return area.key == QLatin1String(key); })) {
-            QStringList prefixes;
-            for (const char *key : rule.sourceAreas)
-                if (const int a = areaByKey(target, key); a >= 0)
-                    prefixes << target.area(a).prefix;
-            found.push_back(
-                {at, Tr::tr("%1 takes its %2 from a constant or from %3, not %4")
-                         .arg(spec.mnemonic, slotName(rule, k), prefixes.join(QStringLiteral(", ")),
-                              formatOperand(target, o))});
+            const QString prefixes = areaPrefixes(target, rule.sourceAreas);
+            found.push_back({at, rule.deviceOnly
+                                     ? Tr::tr("%1 takes its %2 from %3 only, not %4")
+                                           .arg(spec.mnemonic, slotName(rule, k), prefixes,
+                                                formatOperand(target, o))
+                                     : Tr::tr("%1 takes its %2 from a constant or from %3, not %4")
+                                           .arg(spec.mnemonic, slotName(rule, k), prefixes,
+                                                formatOperand(target, o))});
             continue;
         }
         const bool wrongArea = rule.area && area.key != QLatin1String(rule.area);
-        if (wrongArea || o.address.index < rule.lowest || o.address.index > rule.highest) {
+        if (wrongArea ||
+            (rule.area && (o.address.index < rule.lowest || o.address.index > rule.highest))) {
             // "OUTQI writes only Q1..Q8, not Q9": the range as the listing writes it.
             const int ruleArea = rule.area ? areaByKey(target, rule.area) : o.address.area;
             if (ruleArea >= 0) {
@@ -164,6 +243,60 @@ std::vector<OperandBreach> operandBreaches(const Target &target, const Instructi
             }
             continue;
         }
+        const bool wordSlot = rule.kind == OperandKind::WordSource ||
+                              rule.kind == OperandKind::WordDest ||
+                              rule.kind == OperandKind::SetValue;
+        // SBIT / RBIT name a word and a bit number, or a bit device itself (PL110 SBIT Q1).
+        const bool bitItself =
+            spec.function == ApplyFunction::SetBit || spec.function == ApplyFunction::ResetBit;
+        if (wordSlot && area.kind == AreaKind::Bit && o.digits == 0 && !bitItself) {
+            // A plain bit device is a word only where the table reads 16 bits as one
+            // (Area::bitsAsWords, PL110 I1 = I1..I16); the Vigor writes K4M0 for that.
+            if (!area.bitsAsWords) {
+                found.push_back(
+                    {at, Tr::tr("the %1 of %2 is a word: %3 is a single bit")
+                             .arg(slotName(rule, k), spec.mnemonic, formatOperand(target, o))});
+                continue;
+            }
+            const int offset = o.address.index - area.first;
+            if (!o.modified() && offset % 16 != 0) {
+                Address below = o.address;
+                below.index = area.first + offset / 16 * 16;
+                Address above = below;
+                above.index += 16;
+                found.push_back(
+                    {at, Tr::tr("the %1 of %2 is a word: %3 starts no word of 16 bits "
+                                "(%4 and %5 do)")
+                             .arg(slotName(rule, k), spec.mnemonic, formatOperand(target, o),
+                                  formatAddress(target, below), formatAddress(target, above))});
+                continue;
+            }
+        }
+        const bool bitSlot =
+            rule.kind == OperandKind::BitSource || rule.kind == OperandKind::BitDest;
+        // A whole word or channel where a bit belongs: the simulator has no bit to read or
+        // write. Coils on a word are OP002's ("cannot drive"); a channel of bits is refused
+        // everywhere (CPM1 LD 011, SNXT(09) 011: write 011.00). A reset clears words too
+        // (RST D0, ZRST D0 D9).
+        const bool clearsWords = spec.op == Op::Reset || spec.function == ApplyFunction::ZoneReset;
+        if (bitSlot && !clearsWords && o.address.bit < 0 && o.digits == 0 &&
+            (area.kind == AreaKind::Channel ||
+             (area.kind == AreaKind::Word && spec.op == Op::Apply))) {
+            if (area.numbering == Numbering::ChannelBit) {
+                Address firstBit = o.address;
+                firstBit.bit = 0;
+                found.push_back({at, Tr::tr("the %1 of %2 is a bit: %3 is a whole channel (%4 is "
+                                            "its first bit)")
+                                         .arg(slotName(rule, k), spec.mnemonic,
+                                              formatAddress(target, o.address),
+                                              formatAddress(target, firstBit))});
+            } else {
+                found.push_back({at, Tr::tr("the %1 of %2 is a bit: %3 is a whole word")
+                                         .arg(slotName(rule, k), spec.mnemonic,
+                                              formatAddress(target, o.address))});
+            }
+            continue;
+        }
         if (rule.bitWords && (area.numbering != Numbering::ChannelBit || o.address.bit >= 0)) {
             found.push_back(
                 {at, Tr::tr("the %1 of %2 must be a channel with bits (IR, HR, LR), "
@@ -173,26 +306,52 @@ std::vector<OperandBreach> operandBreaches(const Target &target, const Instructi
         }
         if (rule.rangeFrom >= 0 && static_cast<std::size_t>(rule.rangeFrom) < ins.operands.size()) {
             const Operand &first = ins.operands[static_cast<std::size_t>(rule.rangeFrom)];
-            if (first.kind == Operand::Kind::Device &&
-                (first.address.area != o.address.area || first.address.index > o.address.index)) {
-                found.push_back({at, Tr::tr("%1 %2 %3: the end word must be in the area of the "
-                                            "start word and not before it")
-                                         .arg(spec.mnemonic, formatAddress(target, first.address),
-                                              formatAddress(target, o.address))});
+            if (first.kind == Operand::Kind::Device && first.address.valid() &&
+                first.address.area < static_cast<int>(target.areas.size())) {
+                const Area &from = target.area(first.address.area);
+                if (from.prefix != area.prefix || from.kind != area.kind ||
+                    first.address.index > o.address.index) {
+                    found.push_back(
+                        {at, Tr::tr("%1 %2 %3: the last device must be of the kind of the first "
+                                    "and not before it")
+                                 .arg(spec.mnemonic, formatAddress(target, first.address),
+                                      formatAddress(target, o.address))});
+                    continue;
+                }
+                const QString broken = brokenRun(target, spec, first.address,
+                                                 qint64{o.address.index} - first.address.index + 1);
+                if (!broken.isEmpty()) {
+                    found.push_back({at, broken});
+                    continue;
+                }
+            }
+        }
+        // A modified operand (K4M0, D0Z0) is resolved where it lands, each time it runs.
+        // A 32-bit form reads a 32-bit device, and a timer or counter source, as one (Vigor
+        // DMOV C200 D0, DMOV T0 D0 sign-extended); other words as a pair.
+        const bool single =
+            spec.doubleWord && (area.wordBits >= 32 ||
+                                (!isDestination(rule.kind) &&
+                                 (area.kind == AreaKind::Timer || area.kind == AreaKind::Counter)));
+        if (rule.words > 1 && o.address.bit < 0 && !o.modified() && !single) {
+            if (const QString broken = brokenRun(target, spec, o.address, rule.words);
+                !broken.isEmpty()) {
+                found.push_back({at, broken});
                 continue;
             }
         }
-        if (rule.words > 1 && o.address.bit < 0) {
-            Address last = o.address;
-            last.index += rule.words - 1;
-            if (last.index > area.last) {
-                found.push_back({at, Tr::tr("%1 writes %2 words from %3, past the end of %4")
-                                         .arg(spec.mnemonic)
-                                         .arg(rule.words)
-                                         .arg(formatAddress(target, o.address),
-                                              QCoreApplication::translate("rung::model::Target",
-                                                                          area.description))});
-                continue;
+        if (rule.countFrom >= 0 && static_cast<std::size_t>(rule.countFrom) < ins.operands.size() &&
+            !o.modified()) {
+            const Operand &n = ins.operands[static_cast<std::size_t>(rule.countFrom)];
+            if (n.kind == Operand::Kind::Constant && n.constant.value >= 1) {
+                // A bit area read as words gives 16 bits a word (PL110 I1 = I1..I16).
+                const qint64 span =
+                    area.kind == AreaKind::Bit ? n.constant.value * 16 : n.constant.value;
+                if (const QString broken = brokenRun(target, spec, o.address, span, true);
+                    !broken.isEmpty()) {
+                    found.push_back({at, broken});
+                    continue;
+                }
             }
         }
         // seed 003 4.2.3: a bistable relay changes only on its own coil.

@@ -176,13 +176,28 @@ public:
         m_result.ladder.target = list.target;
     }
 
-    // One rung per span of model::rungSpans; after an error the rest of its rung is skipped.
+    // One rung per span of model::rungSpans. After an error the rest of that part is skipped
+    // up to the next load after an output, where the user's next rung starts: its errors are
+    // found too (the program is checked whole), though no rung of the broken span is drawn.
     ToLadderResult run() {
         const auto &ins = m_list.instructions;
         for (const RungSpan &span : rungSpans(ins)) {
-            for (int i = span.first; i < span.last && !m_broken; ++i)
-                step(ins[static_cast<std::size_t>(i)], i);
+            bool outputSince = false;
+            for (int i = span.first; i < span.last; ++i) {
+                const Instruction &at = ins[static_cast<std::size_t>(i)];
+                if (m_broken) {
+                    if (!(outputSince && at.op() == Op::Load)) {
+                        outputSince = outputSince || isOutput(at.op());
+                        continue;
+                    }
+                    finishRung(false);
+                    m_spanBroken = true;
+                    outputSince = false;
+                }
+                step(at, i);
+            }
             finishRung(span.last == static_cast<int>(ins.size()));
+            m_spanBroken = false;
         }
         return std::move(m_result);
     }
@@ -406,7 +421,7 @@ private:
                             .arg(firstIns.line));
             }
         }
-        if (!m_broken) {
+        if (!m_broken && !m_spanBroken) {
             RungLogic logic;
             if (!m_boxInputs.empty()) {
                 logic.boxInputs = m_boxInputs;
@@ -460,6 +475,7 @@ private:
     bool m_hadOutput = false;
     bool m_inStep = false; // between STL and RET
     bool m_broken = false;
+    bool m_spanBroken = false; // an earlier part of this span had an error: draw none of it
     std::size_t m_comment = 0;
 };
 

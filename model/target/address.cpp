@@ -397,6 +397,28 @@ Address offsetAddress(const Target &target, const Address &address, qint64 offse
     return {};
 }
 
+std::optional<Address> runBreaks(const Target &target, const Address &first, qint64 count,
+                                 bool wordBlock) {
+    if (!first.valid() || first.area >= static_cast<int>(target.areas.size()) || count < 1)
+        return std::nullopt;
+    int at = first.area;
+    const qint64 last = qint64{first.index} + count - 1;
+    if (first.index < target.area(at).first)
+        return first;
+    while (last > target.area(at).last) {
+        const Area &here = target.area(at);
+        const bool next =
+            at + 1 < static_cast<int>(target.areas.size()) &&
+            (!wordBlock || (here.kind != AreaKind::Timer && here.kind != AreaKind::Counter)) &&
+            target.area(at + 1).prefix == here.prefix && target.area(at + 1).kind == here.kind &&
+            target.area(at + 1).first == here.last + 1;
+        if (!next)
+            return Address{at, here.last + 1, first.bit};
+        ++at;
+    }
+    return std::nullopt;
+}
+
 std::variant<std::vector<Address>, AddressError>
 parseAddressRange(const Target &target, QStringView text, const ModelVariant *model) {
     const qsizetype dots = text.indexOf(QLatin1String(".."));

@@ -8,6 +8,7 @@
 #include <QString>
 #include <QStringView>
 
+#include <optional>
 #include <variant>
 #include <vector>
 
@@ -31,6 +32,18 @@ std::variant<Address, AddressError> parseAddress(const Target &target, QStringVi
 // Invalid when no area of that prefix (on the model, if one is given) holds it.
 Address offsetAddress(const Target &target, const Address &address, qint64 offset,
                       const ModelVariant *model = nullptr);
+
+// Where a run of `count` elements from `first` breaks: the first element no area holds, or
+// nullopt when all exist. The run goes on from an area only into the area after it in the
+// table of the same prefix and kind that starts at the next number (D199 -> D200, the latched
+// registers; M499 -> M500): such bit, word and channel areas lie one after another in the
+// memory image (MemoryLayout), so a block of words stays a block. Timer and counter areas
+// hold bits, values and set values apart, so a block of words (wordBlock) stops at their end;
+// one element at a time (a zone reset, MUL's D+1) goes on from T199 to T200. A block
+// instruction, MUL's D+1, CMP's three bits and a zone reset all ask it, in `check` and the
+// simulator.
+std::optional<Address> runBreaks(const Target &target, const Address &first, qint64 count,
+                                 bool wordBlock = false);
 
 // A range of devices as a user types it into a watch table: "D0..D15", "X0..X17" (Vigor X
 // is octal: 16 inputs), "000.00..000.11" (CPM1 bits, across channels too), "M490..M510" (one

@@ -86,6 +86,11 @@ struct Area {
     // Holds a branch point's condition within a rung (CPM1 TR, W353): driven in many rungs,
     // so a second OUT is no duplicate coil.
     bool branchMemory = false;
+    // A bit area a word operand may name: the 16 bits from an element first + 16k are one word
+    // (PL110 I1 = I1..I16, I17 = I17..I32; docs/targets.md). Without it a plain bit device is
+    // no word operand (Vigor: seed 001's Operand Devices tables mark X, Y, M, S apart from
+    // KnX, KnY, KnM, KnS; CPM1 TR: W353 uses it in LD and OUT only). model::operandBreaches.
+    bool bitsAsWords = false;
     // Sub-ranges with other properties (read-only system bits inside a channel area,
     // retentive M ranges on Vigor) are separate Area entries; the parser picks the one that
     // contains the number.
@@ -192,8 +197,9 @@ struct OperandSpec {
     OperandKind kind = OperandKind::BitSource;
     bool optional = false;
     // Narrower rules the manual gives for this slot, checked by model::operandBreaches for
-    // `check` and the simulator alike. A constant's value, or a device's element number,
-    // from lowest to highest (PL110 SBIT bit 0..15, OUTQI Q1..Q8, II I1..I8).
+    // `check` and the simulator alike. A constant's value from lowest to highest (PL110 SBIT
+    // bit 0..15, Vigor RS m 0..256), and a device's element number when `area` names its area
+    // (OUTQI Q1..Q8, II I1..I8).
     int lowest = INT_MIN;
     int highest = INT_MAX;
     std::vector<int> allowedValues; // a constant must be one of these (PL110 time base)
@@ -202,18 +208,28 @@ struct OperandSpec {
     // A device in this slot must be of one of these areas (Area::key); constants are free
     // (PL110 presets PT / PV: "da una variabile dell'area VW, SMW, AI e TR", 4.2.4, 4.2.5).
     std::vector<const char *> sourceAreas;
+    // A device, no constant: with sourceAreas, of those areas only (seed 001 RS S and D, LINK
+    // S1 and S2: only the D column is marked); without, any (Vigor CCD S, a block to read).
+    bool deviceOnly = false;
     // The slot takes plain words only: no digit-designated bits (K4M0) and no double words
     // (VD0) - block moves count words (Vigor BMOV, PL110 BLKMOV / MOVIND).
     bool wholeWords = false;
     // A constant must be BCD (#0000..#9999): W353 instructions that read BCD (ADD(30) ...).
     bool bcd = false;
-    // The last word of a range that starts at operand `rangeFrom`: the same area, not before
-    // it (SFT(10) / WSFT(16) St E); -1: none.
+    // The last element of a range that starts at operand `rangeFrom`: the same prefix and
+    // kind, not before it, every element between them there (model::runBreaks) (SFT(10) /
+    // WSFT(16) St E, Vigor ZRST D1 D2); -1: none.
     int rangeFrom = -1;
     // A word whose bits are devices (CPM1 IR, HR, LR channels; not DM): SFT(10).
     bool bitWords = false;
-    // Words from this one the instruction writes, all in its area (MUL(32) / DIV(33): R, R+1).
+    // Elements from this one the instruction uses, one after another (model::runBreaks):
+    // words (MUL(32) / DIV(33): R, R+1; Vigor MUL D, D+1) or bits (Vigor CMP D, D+1, D+2).
     int words = 1;
+    // The block from this operand has as many words as the constant of operand `countFrom`
+    // (Vigor BMOV S D n, PL110 BLKMOV S D n), every one of them there; -1: none.
+    int countFrom = -1;
+    // A word operand (Operand::Kind::Text) must be one of these (PL110 FM's operators, 4.2.10).
+    std::vector<const char *> allowedTexts;
     ControlWord control = ControlWord::None;
 };
 

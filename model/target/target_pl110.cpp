@@ -80,6 +80,9 @@ Target makePl110Target() {
         .onlyWrittenBy = ApplyFunction::Toggle;
     addArea(t, "M", "M", AreaKind::Bit, 1, 128,
             QT_TRANSLATE_NOOP("rung::model::Target", "markers"));
+    // A word operand may name 16 bits of a bit area from I1, I17, ... (Area::bitsAsWords).
+    for (Area &a : t.areas)
+        a.bitsAsWords = a.kind == AreaKind::Bit;
     // SM0.13 (2.1.2) trades the counters C1..C16 for the timers T49..T64, "normalmente
     // disabilitati": those run only while it is ON, the counters only while it is OFF.
     addArea(t, "T", "T", AreaKind::Timer, 1, 48,
@@ -336,7 +339,12 @@ Target makePl110Target() {
     // Functions.
     const OperandSpec src{K::WordSource};
     const OperandSpec dst{K::WordDest};
-    addBox(t, "FM", ApplyFunction::Math, {src, {K::Constant}, src, dst},
+    // "operazioni matematiche (+, -, *, /, |, & *, <<, >>)" (4.2.6; the OCR's "& *" is & ^,
+    // PLProg's XOR): no other operator.
+    OperandSpec mathOperator{K::Constant};
+    mathOperator.allowedTexts = {"+", "-", "*", "/", "|", "&", "^", "<<", ">>"};
+    mathOperator.name = QT_TRANSLATE_NOOP("rung::model::Target", "operator");
+    addBox(t, "FM", ApplyFunction::Math, {src, mathOperator, src, dst},
            QT_TRANSLATE_NOOP("rung::model::Target",
                              "Math formula: D = S1 op S2, op one of + - * / | & ^ << >>"),
            "S1 OP S2 D");
@@ -346,7 +354,14 @@ Target makePl110Target() {
     blockSrc.wholeWords = true;
     OperandSpec blockDst = dst;
     blockDst.wholeWords = true;
-    addBox(t, "BLKMOV", ApplyFunction::BlockMove, {blockSrc, blockDst, {K::Count}},
+    // "al blocco di memoria, a partire dalla locazione di memoria specificata" (4.2.8): n
+    // words from S and from D, each block inside the memory, n at least 1.
+    blockSrc.countFrom = 2;
+    blockDst.countFrom = 2;
+    OperandSpec blockCount{K::Count};
+    blockCount.lowest = 1;
+    blockCount.name = QT_TRANSLATE_NOOP("rung::model::Target", "number of words");
+    addBox(t, "BLKMOV", ApplyFunction::BlockMove, {blockSrc, blockDst, blockCount},
            QT_TRANSLATE_NOOP("rung::model::Target", "Move n words from S (or the value S) to D"),
            "S D n");
     addBox(t, "MOVIND", ApplyFunction::IndirectMove, {src, blockDst, src},

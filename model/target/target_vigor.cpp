@@ -352,31 +352,47 @@ Target makeVigorTarget() {
     dmov.functionCode = 12;
     dmov.doubleWord = true;
     for (OperandSpec &o : dmov.operands)
-        o.wholeWords = true; // a pair of words, not a group of 16 bits (K4M0)
+        o.wholeWords = true;    // a pair of words, not a group of 16 bits (K4M0)
+    dmov.operands[0].words = 2; // S, S+1 unless a 32-bit device, a timer or a counter
     dmov.operands[1].words = 2;
     in.push_back(dmov);
     OperandSpec blockSrc = src;
     blockSrc.wholeWords = true;
     OperandSpec blockDst = dst;
     blockDst.wholeWords = true;
-    in.push_back(apply("BMOV", ApplyFunction::BlockMove, {blockSrc, blockDst, {K::Count}}, 7,
+    // n words from S to D: both blocks lie inside the registers, n at least 1.
+    blockSrc.countFrom = 2;
+    blockDst.countFrom = 2;
+    OperandSpec blockCount{K::Count};
+    blockCount.lowest = 1;
+    blockCount.name = QT_TRANSLATE_NOOP("rung::model::Target", "number of words");
+    in.push_back(apply("BMOV", ApplyFunction::BlockMove, {blockSrc, blockDst, blockCount}, 7,
                        QT_TRANSLATE_NOOP("rung::model::Target", "Move n words from S to D"),
                        "S D n"));
+    // D, D+1, D+2 take >, =, <: three bits one after another.
+    OperandSpec compareBits{K::BitDest};
+    compareBits.words = 3;
     in.push_back(
-        apply("CMP", ApplyFunction::Compare, {src, src, {K::BitDest}}, 7,
+        apply("CMP", ApplyFunction::Compare, {src, src, compareBits}, 7,
               QT_TRANSLATE_NOOP("rung::model::Target", "Compare S1 with S2: D, D+1, D+2 = >, =, <"),
               "S1 S2 D"));
-    in.push_back(apply("ZRST", ApplyFunction::ZoneReset, {{K::BitDest}, {K::BitDest}}, 5,
+    // D1 and D2 of one kind, D1 not after D2.
+    OperandSpec zoneEnd{K::BitDest};
+    zoneEnd.rangeFrom = 0;
+    in.push_back(apply("ZRST", ApplyFunction::ZoneReset, {{K::BitDest}, zoneEnd}, 5,
                        QT_TRANSLATE_NOOP("rung::model::Target", "Reset every device from D1 to D2"),
                        "D1 D2"));
     in.push_back(apply("ADD", ApplyFunction::Add, {src, src, dst}, 7,
                        QT_TRANSLATE_NOOP("rung::model::Target", "D = S1 + S2"), "S1 S2 D"));
     in.push_back(apply("SUB", ApplyFunction::Sub, {src, src, dst}, 7,
                        QT_TRANSLATE_NOOP("rung::model::Target", "D = S1 - S2"), "S1 S2 D"));
+    // The product and the remainder go to D+1 as well.
+    OperandSpec wordPair = dst;
+    wordPair.words = 2;
     in.push_back(apply(
-        "MUL", ApplyFunction::Mul, {src, src, dst}, 7,
+        "MUL", ApplyFunction::Mul, {src, src, wordPair}, 7,
         QT_TRANSLATE_NOOP("rung::model::Target", "D, D+1 = S1 x S2 (32-bit product)"), "S1 S2 D"));
-    in.push_back(apply("DIV", ApplyFunction::Div, {src, src, dst}, 7,
+    in.push_back(apply("DIV", ApplyFunction::Div, {src, src, wordPair}, 7,
                        QT_TRANSLATE_NOOP("rung::model::Target", "D = S1 / S2, D+1 = remainder"),
                        "S1 S2 D"));
     in.push_back(apply("INC", ApplyFunction::Inc, {dst}, 3,
@@ -406,18 +422,27 @@ Target makeVigorTarget() {
     // size, one step for the instruction and two for each operand (Delta's tables, which seed 004
     // belongs to, give FROM/TO 9, CCD 7, REF 5 the same way). Operands as seed 001's pages and
     // example programs write them.
+    // FROM / TO m1 m2 D n (seed 001's VB-1COM pages: FROM K1 K2000 D50 K15, TO K1 K1000 D0
+    // K15): n words at least one, the block D..D+n-1 inside the registers.
+    OperandSpec moduleWords{K::Count};
+    moduleWords.lowest = 1;
+    moduleWords.name = QT_TRANSLATE_NOOP("rung::model::Target", "number of words");
+    OperandSpec moduleDst = dst;
+    moduleDst.countFrom = 3;
+    OperandSpec moduleSrc = src;
+    moduleSrc.countFrom = 3;
     in.push_back(apply(
-        "FROM", ApplyFunction::NotSimulated, {src, src, dst, {K::Count}}, 9,
+        "FROM", ApplyFunction::NotSimulated, {src, src, moduleDst, moduleWords}, 9,
         QT_TRANSLATE_NOOP("rung::model::Target", "Read n words of special module m1, from m2"),
         "m1 m2 D n"));
     in.push_back(
-        apply("TO", ApplyFunction::NotSimulated, {src, src, src, {K::Count}}, 9,
+        apply("TO", ApplyFunction::NotSimulated, {src, src, moduleSrc, moduleWords}, 9,
               QT_TRANSLATE_NOOP("rung::model::Target", "Write n words to special module m1, at m2"),
               "m1 m2 S n"));
     // TOP K1 K0 H7096 K1 (seed 001 B-4-5, the VB-1COM's communication format): TO's pulse
     // form, FNC 79, run once when its condition turns ON; not simulated either.
     InstructionSpec top =
-        apply("TOP", ApplyFunction::NotSimulated, {src, src, src, {K::Count}}, 9,
+        apply("TOP", ApplyFunction::NotSimulated, {src, src, moduleSrc, moduleWords}, 9,
               QT_TRANSLATE_NOOP("rung::model::Target",
                                 "Write n words to special module m1, at m2, once on a rising edge"),
               "m1 m2 S n");
@@ -427,6 +452,7 @@ Target makeVigorTarget() {
     // word with M9161 ON). FNC 84; n = 1..256 bytes (FX, Delta).
     OperandSpec ccdSource = src;
     ccdSource.wholeWords = true;
+    ccdSource.deviceOnly = true; // the bytes are read from words, not from a constant
     OperandSpec ccdSum = dst;
     ccdSum.words = 2; // D: the sum, D+1: the parity
     OperandSpec bytes{K::Count};
@@ -440,7 +466,14 @@ Target makeVigorTarget() {
               "S D n");
     ccd.functionCode = 84;
     in.push_back(ccd);
-    in.push_back(apply("REF", ApplyFunction::NotSimulated, {{K::BitSource}, {K::Count}}, 5,
+    // Seed 004 1.1 ("Scan time exception"): "A direct I/O refresh instruction REF allows the
+    // PLC to access I/O immediately": inputs or outputs, X or Y only. (The FX / Delta habit of
+    // a start that is a multiple of 8 is not in the seeds and not enforced.)
+    OperandSpec refreshed{K::BitSource};
+    refreshed.sourceAreas = {"X", "Y"};
+    refreshed.deviceOnly = true;
+    refreshed.name = QT_TRANSLATE_NOOP("rung::model::Target", "first input or output");
+    in.push_back(apply("REF", ApplyFunction::NotSimulated, {refreshed, {K::Count}}, 5,
                        QT_TRANSLATE_NOOP("rung::model::Target", "Refresh n inputs or outputs now"),
                        "D n"));
     // HEX D59 D106 K2, ASCI D111 D12 K4 (seed 001's VB-1COM programs).
@@ -453,19 +486,46 @@ Target makeVigorTarget() {
                                          "Convert n hexadecimal digits from S to ASCII in D"),
                        "S D n"));
     // RS D0 D200 D100 D201 (FNC 80): send m words from S, receive n words into D.
-    in.push_back(apply("RS", ApplyFunction::NotSimulated, {src, src, dst, src}, 9,
+    // Seed 001, FNC 80 RS, "Operand Devices": S and D in the D column only; m and n a D or a
+    // K/H constant, "m,n=0~256".
+    OperandSpec rsData{K::WordSource};
+    rsData.sourceAreas = {"D", "DL"};
+    rsData.deviceOnly = true;
+    OperandSpec rsFirst = rsData;
+    rsFirst.name = QT_TRANSLATE_NOOP("rung::model::Target", "first word to send");
+    OperandSpec rsInto{K::WordDest};
+    rsInto.sourceAreas = {"D", "DL"};
+    rsInto.deviceOnly = true;
+    rsInto.name = QT_TRANSLATE_NOOP("rung::model::Target", "first word received");
+    OperandSpec rsCount{K::WordSource};
+    rsCount.sourceAreas = {"D", "DL"};
+    rsCount.lowest = 0;
+    rsCount.highest = 256;
+    rsCount.name = QT_TRANSLATE_NOOP("rung::model::Target", "number of words");
+    in.push_back(apply("RS", ApplyFunction::NotSimulated, {rsFirst, rsCount, rsInto, rsCount}, 9,
                        QT_TRANSLATE_NOOP("rung::model::Target",
                                          "Serial communication on CP2: send m words from S, "
                                          "receive n words into D"),
                        "S m D n"));
     // LINK D1000 D100 (FNC 89), MBUS D1000 D100 (FNC 149): a table from S1, 4 working words
     // from S2.
-    in.push_back(apply("LINK", ApplyFunction::NotSimulated, {src, dst}, 5,
+    // Seed 001, FNC 89 LINK and FNC 149 MBUS, "Operand Devices": S1 and S2 in the D column;
+    // "S2: Instruction working area, occupies 4 consecutive registers".
+    OperandSpec linkTable{K::WordSource};
+    linkTable.sourceAreas = {"D", "DL"};
+    linkTable.deviceOnly = true;
+    linkTable.name = QT_TRANSLATE_NOOP("rung::model::Target", "table");
+    OperandSpec linkWork{K::WordDest};
+    linkWork.sourceAreas = {"D", "DL"};
+    linkWork.deviceOnly = true;
+    linkWork.words = 4;
+    linkWork.name = QT_TRANSLATE_NOOP("rung::model::Target", "working area");
+    in.push_back(apply("LINK", ApplyFunction::NotSimulated, {linkTable, linkWork}, 5,
                        QT_TRANSLATE_NOOP("rung::model::Target",
                                          "Easy Link between PLCs: table from S1, working area S2"),
                        "S1 S2"));
     in.push_back(apply(
-        "MBUS", ApplyFunction::NotSimulated, {src, dst}, 5,
+        "MBUS", ApplyFunction::NotSimulated, {linkTable, linkWork}, 5,
         QT_TRANSLATE_NOOP("rung::model::Target", "MODBUS master: table from S1, working area S2"),
         "S1 S2"));
     // VRRD K1 D0: the value of the volume VR1 into D0.

@@ -681,7 +681,7 @@ TEST(CliCheck, AnOperandTheSimulatorRefusesIsACheckErrorAtItsPlace) {
     const CliRun r = cli({QStringLiteral("check"), file});
     EXPECT_EQ(r.code, 1);
     EXPECT_EQ(r.out, QStringLiteral("%1:3:7: error: OUTQI takes only Q1..Q8, not Q9 [OP005]\n"
-                                    "%1:5:1: error: the time base (ms) of TON must be 10, 100 or "
+                                    "%1:5:10: error: the time base (ms) of TON must be 10, 100 or "
                                     "1000, not 50 [OP005]\n")
                          .arg(file));
 }

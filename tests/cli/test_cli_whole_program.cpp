@@ -107,3 +107,27 @@ TEST(CliWholeProgram, ConvertOfAProjectWithAListAsTypedWithErrorsKeepsIt) {
     ASSERT_TRUE(kept);
     EXPECT_TRUE(kept->pendingListing.contains(QStringLiteral("LD X8")));
 }
+
+// A block that leaves the registers is a check error (issue 14: check and simulate agree), so
+// convert writes nothing for it and says where; the corrected block converts.
+TEST(CliWholeProgram, ConvertWritesNoBlockMoveThatLeavesItsArea) {
+    QTemporaryDir dir;
+    const QString file = test::writeFile(dir, QStringLiteral("b.il"),
+                                         "; target: vigor\nLD M9000\nBMOV D8190 D0 K10\nEND\n");
+    const QString out = dir.filePath(QStringLiteral("b.ladder"));
+    const test::CliRun r = cli({QStringLiteral("convert"), file, QStringLiteral("--to"),
+                                QStringLiteral("ladder"), QStringLiteral("-o"), out});
+    EXPECT_EQ(r.code, 1);
+    EXPECT_FALSE(QFile::exists(out));
+    EXPECT_TRUE(r.err.contains(QStringLiteral("b.il:3:6: error: BMOV uses D8190..D8199, but "
+                                              "D8192 does not exist [OP005]")))
+        << r.err.toStdString();
+    const test::CliRun check = cli({QStringLiteral("check"), file});
+    EXPECT_EQ(check.code, 1);
+    const QString good = test::writeFile(dir, QStringLiteral("g.il"),
+                                         "; target: vigor\nLD M9000\nBMOV D8182 D0 K10\nEND\n");
+    const test::CliRun converted = cli({QStringLiteral("convert"), good, QStringLiteral("--to"),
+                                        QStringLiteral("ladder"), QStringLiteral("-o"), out});
+    EXPECT_EQ(converted.code, 0) << converted.err.toStdString();
+    EXPECT_TRUE(QFile::exists(out));
+}

@@ -172,7 +172,8 @@ TEST(Cpm1Instructions, OperandRulesOfW353AreCheckErrors) {
         {"LD 000.00;WSFT(16) 200 HR01;END(01)", "not before"},
         {"LD 000.00;LD 000.01;LD 000.02;SFT(10) DM 0000 DM 0001;END(01)", "channel with bits"},
         // MUL(32) / DIV(33) write R and R+1 in R's area.
-        {"LD 000.00;MUL(32) #0002 #0003 DM 1023;END(01)", "2 words"},
+        {"LD 000.00;MUL(32) #0002 #0003 DM 1023;END(01)",
+         "DM 1023..DM 1024, but DM 1024 does not exist"},
         // Subroutine numbers 00..49.
         {"LD 000.00;SBS(91) 50;END(01)", "0 to 49"},
     };

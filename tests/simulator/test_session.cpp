@@ -337,8 +337,10 @@ TEST(SimulatorSession, APausedSessionPublishesItsLastScan) {
 TEST(SimulatorSession, AStoppingTriggerPausesAtTheScanWhereItBecameTrue) {
     // As fast as possible: thousands of scans between two snapshots, yet the trigger is
     // evaluated on every recorded scan, so the session stops at exactly scan 501 (D0 counts
-    // one a scan from the first: D0 > 500 first holds after scan 501).
-    SessionFixture f("LD M9000\nADD D0 K1 D0\nEND");
+    // one a scan from the first: D0 > 500 first holds after scan 501). D0 stops at 1000: a
+    // count that wrapped at 32767 would make the condition false and true again, a second
+    // firing whenever the run below outpaced the test by 65536 scans (the machine's speed).
+    SessionFixture f("LD M9000\nCMP D0 K999 M0\nLDI M0\nADD D0 K1 D0\nEND");
     model::MonitorSource &source = *f.session;
     model::Trigger trigger;
     trigger.device = f.at("D0");
@@ -362,6 +364,7 @@ TEST(SimulatorSession, AStoppingTriggerPausesAtTheScanWhereItBecameTrue) {
     // Run goes on from there; the condition stays true, so it does not fire again.
     f.session->run();
     ASSERT_TRUE(eventually([&] { return f.latest()->statistics.scans > 1000; }));
+    EXPECT_EQ(f.latest()->value(f.at("D0")), 1000);
     f.session->pause();
     EXPECT_EQ(fired.count(), 1);
 }

@@ -1,0 +1,72 @@
+// The Vigor operand rules of seed 001's own tables ("Operand Devices" of FNC 80 RS, FNC 89
+// LINK, FNC 149 MBUS), seed 004's REF and seed 001's FROM/TO pages: the seed's example
+// operands pass `check`, operands the tables do not mark are OP005 errors on their line.
+
+#include "model/checks/checks.h"
+#include "model/listing/il.h"
+
+#include <gtest/gtest.h>
+
+using namespace rung::model;
+
+namespace {
+
+std::vector<Diagnostic> operandErrors(const char *line) {
+    const QString text = QStringLiteral("LD X20\n%1\nEND").arg(QLatin1String(line));
+    const ParseResult parsed = parseInstructionList(Target::get(Family::Vigor), text);
+    EXPECT_TRUE(parsed.ok()) << line;
+    std::vector<Diagnostic> found;
+    if (!parsed.ok())
+        return found;
+    for (Diagnostic &d : checkList(parsed.list, {}))
+        if (d.severity == Severity::Error)
+            found.push_back(std::move(d));
+    return found;
+}
+
+} // namespace
+
+TEST(VigorOperands, SeedOneOperandTables) {
+    // The seeds' own examples.
+    for (const char *good :
+         {"RS D0 D200 D100 D201", "RS D0 K0 D100 K256", "RS D10 H10 D8000 D3", "LINK D1000 D100",
+          "MBUS D1000 D100", "LINK D0 D8188", "FROM K1 K2000 D50 K15", "TO K1 K1000 D0 K15",
+          "TO K1 K2 K14 K1", "TO K1 K1 K1M20 K1", "REF X0 K8", "REF Y0 K8", "REF X4 K4"}) {
+        SCOPED_TRACE(good);
+        const std::vector<Diagnostic> errors = operandErrors(good);
+        EXPECT_TRUE(errors.empty()) << errors.front().message.toStdString();
+    }
+    struct Bad {
+        const char *line;
+        const char *says;
+    };
+    const Bad bad[] = {
+        // FNC 80: S and D in the D column; m, n = 0~256.
+        {"RS K5 D200 D100 D201", "from D only, not K5"},
+        {"RS K4M0 D200 D100 D201", "from D only, not K4M0"},
+        {"RS D0 D200 C10 D201", "from D only, not C10"},
+        {"RS D0 K257 D100 D201", "from 0 to 256, not 257"},
+        {"RS D0 D200 D100 T5", "from a constant or from D, not T5"},
+        // FNC 89 / FNC 149: S1 and S2 on D; S2 occupies 4 consecutive registers.
+        {"LINK K1000 D100", "from D only, not K1000"},
+        {"MBUS D1000 K4M100", "from D only, not K4M100"},
+        {"LINK D1000 D8189", "D8192 does not exist"},
+        {"MBUS D1000 D8190", "D8192 does not exist"},
+        // FROM / TO: n >= 1, the block inside its area.
+        {"FROM K1 K2000 D8180 K15", "D8192 does not exist"},
+        {"FROM K1 K2000 D50 K0", "at least 1, not 0"},
+        {"TO K1 K1000 D8190 K15", "D8192 does not exist"},
+        // REF: inputs or outputs.
+        {"REF M0 K8", "from X, Y only, not M0"},
+        {"REF S0 K8", "from X, Y only, not S0"},
+    };
+    for (const Bad &b : bad) {
+        SCOPED_TRACE(b.line);
+        const std::vector<Diagnostic> errors = operandErrors(b.line);
+        ASSERT_EQ(errors.size(), 1u);
+        EXPECT_EQ(errors.front().code, QStringLiteral("OP005"));
+        EXPECT_EQ(errors.front().location.line, 2);
+        EXPECT_TRUE(errors.front().message.contains(QLatin1String(b.says)))
+            << errors.front().message.toStdString();
+    }
+}
