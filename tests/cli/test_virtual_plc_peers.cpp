@@ -341,56 +341,58 @@ TEST(CliServe, ServesAPtyUntilSigtermAndExitsCleanly) {
     EXPECT_TRUE(err.contains(QStringLiteral("writes"))) << err.toStdString();
 }
 
-TEST(CliServe, TcpPrintsTheAddressAndSigintStopsIt) {
+// What `serve --protocol modbus-tcp --tcp 127.0.0.1:0` of a program says until SIGINT ends it.
+struct TcpServe {
+    QString where; // its first line: the address it listens on
+    QString err;
+    int exitCode = -1;
+};
+
+TcpServe serveOverTcpUntilSigint(const QByteArray &program) {
+    TcpServe r;
     QTemporaryDir dir;
     const QString file = dir.filePath(QStringLiteral("plc.il"));
-    {
-        QFile f(file);
-        ASSERT_TRUE(f.open(QIODevice::WriteOnly));
-        f.write(kVigor);
-    }
+    QFile f(file);
+    if (!f.open(QIODevice::WriteOnly))
+        return r;
+    f.write(program);
+    f.close();
     QProcess serve;
     serve.start(QStringLiteral(RUNG_CLI_PATH),
                 {QStringLiteral("serve"), file, QStringLiteral("--protocol"),
                  QStringLiteral("modbus-tcp"), QStringLiteral("--tcp"),
                  QStringLiteral("127.0.0.1:0")});
-    ASSERT_TRUE(serve.waitForStarted(5000));
+    if (!serve.waitForStarted(5000))
+        return r;
     const QDeadlineTimer deadline(15000);
     while (!serve.canReadLine() && !deadline.hasExpired() && serve.state() == QProcess::Running)
         serve.waitForReadyRead(100);
-    const QString where = QString::fromUtf8(serve.readLine()).trimmed();
-    ASSERT_TRUE(where.startsWith(QLatin1String("127.0.0.1:"))) << where.toStdString();
-    EXPECT_NE(where.section(u':', 1).toInt(), 0);
+    r.where = QString::fromUtf8(serve.readLine()).trimmed();
     ::kill(pid_t(serve.processId()), SIGINT);
-    ASSERT_TRUE(serve.waitForFinished(5000));
-    EXPECT_EQ(serve.exitCode(), 0);
+    if (!serve.waitForFinished(5000)) {
+        serve.kill();
+        serve.waitForFinished(1000);
+        return r;
+    }
+    r.err = QString::fromUtf8(serve.readAllStandardError());
+    r.exitCode = serve.exitCode();
+    return r;
+}
+
+TEST(CliServe, TcpPrintsTheAddressAndSigintStopsIt) {
+    const TcpServe r = serveOverTcpUntilSigint(kVigor);
+    ASSERT_TRUE(r.where.startsWith(QLatin1String("127.0.0.1:"))) << r.where.toStdString();
+    EXPECT_NE(r.where.section(u':', 1).toInt(), 0);
+    EXPECT_EQ(r.exitCode, 0);
 }
 
 // A PL110 served over TCP calls its map a MODBUS slave, not an RTU one: the frames are TCP's.
 TEST(CliServe, APl110OverTcpIsNotCalledAnRtuSlave) {
-    QTemporaryDir dir;
-    const QString file = dir.filePath(QStringLiteral("plc.il"));
-    {
-        QFile f(file);
-        ASSERT_TRUE(f.open(QIODevice::WriteOnly));
-        f.write("; target: pl110\nLD I1\nOUT Q1\nEND\n");
-    }
-    QProcess serve;
-    serve.start(QStringLiteral(RUNG_CLI_PATH),
-                {QStringLiteral("serve"), file, QStringLiteral("--protocol"),
-                 QStringLiteral("modbus-tcp"), QStringLiteral("--tcp"),
-                 QStringLiteral("127.0.0.1:0")});
-    ASSERT_TRUE(serve.waitForStarted(5000));
-    const QDeadlineTimer deadline(15000);
-    while (!serve.canReadLine() && !deadline.hasExpired() && serve.state() == QProcess::Running)
-        serve.waitForReadyRead(100);
-    ASSERT_TRUE(QString::fromUtf8(serve.readLine()).startsWith(QLatin1String("127.0.0.1:")));
-    ::kill(pid_t(serve.processId()), SIGINT);
-    ASSERT_TRUE(serve.waitForFinished(5000));
-    const QString err = QString::fromUtf8(serve.readAllStandardError());
-    EXPECT_TRUE(err.contains(QStringLiteral("PL110 MODBUS slave, modbus-tcp")))
-        << err.toStdString();
-    EXPECT_FALSE(err.contains(QStringLiteral("RTU"))) << err.toStdString();
+    const TcpServe r = serveOverTcpUntilSigint("; target: pl110\nLD I1\nOUT Q1\nEND\n");
+    ASSERT_TRUE(r.where.startsWith(QLatin1String("127.0.0.1:"))) << r.where.toStdString();
+    EXPECT_TRUE(r.err.contains(QStringLiteral("PL110 MODBUS slave, modbus-tcp")))
+        << r.err.toStdString();
+    EXPECT_FALSE(r.err.contains(QStringLiteral("RTU"))) << r.err.toStdString();
 }
 
 } // namespace
