@@ -245,8 +245,20 @@ void Compiler::compileApply(const model::Instruction &ins, Step &s) {
         if (o && isDevice(*o) && ins.operands.size() > 1 &&
             ins.operands[1].kind == model::Operand::Kind::Constant) {
             model::Address a = o->address;
-            a.bit = static_cast<int>(ins.operands[1].constant.value);
-            r = a.bit >= 0 && a.bit < 16 ? m_layout->bit(a) : BitRef{};
+            const qint64 n = ins.operands[1].constant.value;
+            if (n < 0 || n > 15) {
+                r = {};
+            } else if (m_layout->area(a.area).kind == model::AreaKind::Bit) {
+                // 16 bits of a bit area read as one word from I1, I17, ... (Area::bitsAsWords):
+                // its bit n is the device n above the first, so PL110 SBIT Q1 3 sets Q4.
+                if (m_layout->word(a) >= 0) {
+                    a.index += static_cast<int>(n);
+                    r = m_layout->bit(a);
+                }
+            } else {
+                a.bit = static_cast<int>(n);
+                r = m_layout->bit(a);
+            }
         } else if (o && isDevice(*o)) {
             r = m_layout->bit(o->address);
         }

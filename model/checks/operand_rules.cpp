@@ -246,9 +246,11 @@ std::vector<OperandBreach> operandBreaches(const Target &target, const Instructi
         const bool wordSlot = rule.kind == OperandKind::WordSource ||
                               rule.kind == OperandKind::WordDest ||
                               rule.kind == OperandKind::SetValue;
-        // SBIT / RBIT name a word and a bit number, or a bit device itself (PL110 SBIT Q1).
+        // SBIT / RBIT name a word and a bit number, or a bit device itself (PL110 SBIT Q1);
+        // with a bit number, Q1 is the word Q1..Q16 and must start one (SBIT Q1 3 sets Q4).
         const bool bitItself =
-            spec.function == ApplyFunction::SetBit || spec.function == ApplyFunction::ResetBit;
+            (spec.function == ApplyFunction::SetBit || spec.function == ApplyFunction::ResetBit) &&
+            ins.operands.size() < 2;
         if (wordSlot && area.kind == AreaKind::Bit && o.digits == 0 && !bitItself) {
             // A plain bit device is a word only where the table reads 16 bits as one
             // (Area::bitsAsWords, PL110 I1 = I1..I16); the Vigor writes K4M0 for that.

@@ -302,6 +302,8 @@ TEST(Pl110Operands, CheckAndSimulatorRefuseTheSameOperands) {
         // 4.2.14: SBIT / RBIT name bit 0..15
         {"LD I1\nSBIT V3 16\nEND", 2, "from 0 to 15, not 16"},
         {"LD I1\nRBIT V3 -1\nEND", 2, "from 0 to 15, not -1"},
+        // ... of a word: Q5 starts no word of Q's 16 bits, so Q5 3 names no bit
+        {"LD I1\nSBIT Q5 3\nEND", 2, "Q5 starts no word of 16 bits (Q1 and Q17 do)"},
         // 4.2.12: QI on the terminals Q1..Q8 only
         {"LD I1\nOUTQI Q9\nEND", 2, "OUTQI takes only Q1..Q8, not Q9"},
         {"LD I1\nOUTQI M1\nEND", 2, "OUTQI takes only Q1..Q8, not M1"},
@@ -342,6 +344,31 @@ TEST(Pl110Operands, CheckAndSimulatorRefuseTheSameOperands) {
         for (const model::Diagnostic &d : model::checkList(s.parsed.list, {}))
             EXPECT_NE(d.code, QLatin1String("OP005")) << d.message.toStdString();
     }
+}
+
+// 4.2.14 sets or resets "un bit di un'area di memoria", bit 0 the least significant: a bit
+// area is a memory of words of 16 bits from I1, Q1, M1, ... (as word operands read it), so
+// SBIT Q1 3 is Q1..Q16's bit 3, Q4; without a bit number SBIT Q1 is Q1 itself.
+TEST(Pl110Operands, SbitOnABitAreaCountsFromTheWordsFirstBit) {
+    Pl110 s("LD I1\nSBIT Q1 3\nLD I1\nSBIT Q17 15\nLD I1\nSBIT M2\n"
+            "LD I2\nRBIT Q1 3\nLD I2\nRBIT Q17 15\nLD I2\nRBIT M2\nEND");
+    ASSERT_TRUE(s.result.ok());
+    for (const model::Diagnostic &d : model::checkList(s.parsed.list, {}))
+        EXPECT_NE(d.severity, model::Severity::Error) << d.message.toStdString();
+    s.in("I1", true);
+    s.engine->scan();
+    EXPECT_TRUE(s.bit("Q4"));
+    EXPECT_TRUE(s.bit("Q32"));
+    EXPECT_TRUE(s.bit("M2"));
+    EXPECT_FALSE(s.bit("Q1"));
+    EXPECT_FALSE(s.bit("Q17"));
+    EXPECT_EQ(s.value("Q1"), 1 << 3) << "Q1..Q16 read as a word";
+    s.in("I1", false);
+    s.in("I2", true);
+    s.engine->scan();
+    EXPECT_FALSE(s.bit("Q4"));
+    EXPECT_FALSE(s.bit("Q32"));
+    EXPECT_FALSE(s.bit("M2"));
 }
 
 // seed 003 2.1.2 lists the special markers up to SM185; 5.4's user-page program enables
