@@ -31,7 +31,8 @@ TEST(VigorOperands, SeedOneOperandTables) {
     for (const char *good :
          {"RS D0 D200 D100 D201", "RS D0 K0 D100 K256", "RS D10 H10 D8000 D3", "LINK D1000 D100",
           "MBUS D1000 D100", "LINK D0 D8188", "FROM K1 K2000 D50 K15", "TO K1 K1000 D0 K15",
-          "TO K1 K2 K14 K1", "TO K1 K1 K1M20 K1", "REF X0 K8", "REF Y0 K8", "REF X4 K4"}) {
+          "TO K1 K2 K14 K1", "TO K1 K1 K1M20 K1", "TOP K1 K0 H7096 K1", "REF X0 K8", "REF Y0 K8",
+          "REF X4 K4"}) {
         SCOPED_TRACE(good);
         const std::vector<Diagnostic> errors = operandErrors(good);
         EXPECT_TRUE(errors.empty()) << errors.front().message.toStdString();
@@ -56,6 +57,9 @@ TEST(VigorOperands, SeedOneOperandTables) {
         {"FROM K1 K2000 D8180 K15", "D8192 does not exist"},
         {"FROM K1 K2000 D50 K0", "at least 1, not 0"},
         {"TO K1 K1000 D8190 K15", "D8192 does not exist"},
+        // TOP (seed 001 B-4-5) is TO's pulse form: the same rules.
+        {"TOP K1 K0 D8190 K15", "D8192 does not exist"},
+        {"TOP K1 K0 D0 K0", "at least 1, not 0"},
         // REF: inputs or outputs.
         {"REF M0 K8", "from X, Y only, not M0"},
         {"REF S0 K8", "from X, Y only, not S0"},
