@@ -156,6 +156,13 @@ void Compiler::compileApply(const model::Instruction &ins, Step &s) {
         const model::Operand *d = operand(ins, 2);
         if (!d)
             break;
+        // Its three results are written: not on the inputs (seed 001: Y, M, S).
+        if (isDevice(*d) && !m_target.area(d->address.area).writable) {
+            error(ins,
+                  trCompiler(QT_TRANSLATE_NOOP("rung::simulator::Compiler", "%1 cannot be written"))
+                      .arg(describe(*d)));
+            break;
+        }
         s.slot = static_cast<int>(m_program->bitLists.size());
         s.count = 3;
         // D, D+1, D+2 as the table's rule (OperandSpec::words, model::runBreaks) counts them:
@@ -183,6 +190,17 @@ void Compiler::compileApply(const model::Instruction &ins, Step &s) {
         if (m_muted || !isDevice(*a) || !isDevice(*b) ||
             b->address.index - a->address.index >= kMaxZoneElements) {
             error(ins, Tr::tr("%1 is not a device").arg(describe(*b)));
+            break;
+        }
+        // ZRST clears what the program writes: not the inputs (seed 001: Y, M, S, T, C, D).
+        const model::Operand *readOnly = nullptr;
+        for (const model::Operand *end : {a, b})
+            if (!readOnly && !m_target.area(end->address.area).writable)
+                readOnly = end;
+        if (readOnly) {
+            error(ins,
+                  trCompiler(QT_TRANSLATE_NOOP("rung::simulator::Compiler", "%1 cannot be written"))
+                      .arg(describe(*readOnly)));
             break;
         }
         s.slot = static_cast<int>(m_program->resets.size());
