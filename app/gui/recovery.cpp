@@ -45,6 +45,10 @@ void RecoveryFile::setDirectory(const QString &directory) {
     directoryOverride() = directory;
 }
 
+QString RecoveryFile::directory() {
+    return recoveryDirectory();
+}
+
 RecoveryFile::RecoveryFile() {
     // Process ids repeat (containers start every program with a low one): a name whose lock is
     // taken, or whose recovery file waits to be offered, belongs to another instance. A

@@ -46,6 +46,7 @@ public:
                                         QStringList *unreadable = nullptr);
 
     static void setDirectory(const QString &directory); // tests: a folder of their own
+    static QString directory();                         // the folder in use
 
 private:
     QString m_base;                    // recovery file path without its suffix

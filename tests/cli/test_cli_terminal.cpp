@@ -9,7 +9,7 @@
 namespace rung::test {
 namespace {
 
-constexpr const char *kVigor = "; target: vigor\nLD M9000\nOUT Y0\nEND\n";
+constexpr const char *kTerminalProgram = "; target: vigor\nLD M9000\nOUT Y0\nEND\n";
 
 struct TerminalRun {
     int code = -1;
@@ -38,7 +38,7 @@ QStringList hexOf(const QString &output, const QString &direction) {
 
 struct TerminalOnVirtualPlc : ::testing::Test {
     VirtualPlcUnderTest plc{
-        kVigor, {model::ProtocolId::VigorLink, comms::modbus::Framing::Rtu, 0}, false};
+        kTerminalProgram, {model::ProtocolId::VigorLink, comms::modbus::Framing::Rtu, 0}, false};
     QStringList args() const {
         return {QStringLiteral("--port"), plc.path, QStringLiteral("--wait"),
                 QStringLiteral("600")};
@@ -83,8 +83,8 @@ TEST_F(TerminalOnVirtualPlc, ACaptureReplaysItsPcSideAndSkipsThePlcs) {
 }
 
 TEST(CliTerminal, ALineThatIsNoBytesIsNamedWithItsNumberAndNothingMoreIsSent) {
-    VirtualPlcUnderTest plc(kVigor, {model::ProtocolId::VigorLink, comms::modbus::Framing::Rtu, 0},
-                            false);
+    VirtualPlcUnderTest plc(kTerminalProgram,
+                            {model::ProtocolId::VigorLink, comms::modbus::Framing::Rtu, 0}, false);
     ASSERT_TRUE(plc.ready());
     const TerminalRun r = terminal(
         {QStringLiteral("--port"), plc.path, QStringLiteral("--wait"), QStringLiteral("50")},

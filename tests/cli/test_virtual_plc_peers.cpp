@@ -28,9 +28,9 @@ using comms::modbus::Framing;
 using model::ProtocolId;
 
 // V1 follows V0, Q1 follows I1.
-constexpr const char *kPl110 = "; target: pl110\nLD I1\nOUT Q1\nLD SM0.0\nMOV V0 V1\nEND\n";
+constexpr const char *kPeerPl110 = "; target: pl110\nLD I1\nOUT Q1\nLD SM0.0\nMOV V0 V1\nEND\n";
 // Y0 follows M0; D1 = D0 + 1.
-constexpr const char *kVigor = "; target: vigor\nLD M0\nOUT Y0\nLD M9000\nADD D0 K1 D1\nEND\n";
+constexpr const char *kPeerVigor = "; target: vigor\nLD M0\nOUT Y0\nLD M9000\nADD D0 K1 D1\nEND\n";
 
 struct Finished {
     bool inTime = false;
@@ -114,7 +114,7 @@ bool mbpollWrite(const VirtualPlcUnderTest &v, const char *type, int reference, 
 
 TEST(PeerMbpoll, ReadsAndWritesThePl110OverAPseudoTerminal) {
     REQUIRE_MBPOLL();
-    VirtualPlcUnderTest v(kPl110, {ProtocolId::Modbus, Framing::Rtu, 1}, false);
+    VirtualPlcUnderTest v(kPeerPl110, {ProtocolId::Modbus, Framing::Rtu, 1}, false);
     ASSERT_TRUE(v.ready());
     ASSERT_TRUE(mbpollWrite(v, "4", 2000, 555));                              // V0
     ASSERT_TRUE(mbpollWrite(v, "0", 1600, 1));                                // I1
@@ -128,7 +128,7 @@ TEST(PeerMbpoll, ReadsAndWritesThePl110OverAPseudoTerminal) {
 
 TEST(PeerMbpoll, ReadsAndWritesTheVigorCp2MapOverModbusTcp) {
     REQUIRE_MBPOLL();
-    VirtualPlcUnderTest v(kVigor, {ProtocolId::Modbus, Framing::Tcp, 1}, true);
+    VirtualPlcUnderTest v(kPeerVigor, {ProtocolId::Modbus, Framing::Tcp, 1}, true);
     ASSERT_TRUE(v.ready());
     ASSERT_TRUE(mbpollWrite(v, "4", 0, 99));                               // D0
     ASSERT_TRUE(mbpollWrite(v, "0", 512, 1));                              // M0
@@ -179,7 +179,8 @@ struct Libmodbus {
 
 void libmodbusMaster(bool tcp) {
 #ifdef RUNG_HAVE_LIBMODBUS
-    VirtualPlcUnderTest v(kPl110, {ProtocolId::Modbus, tcp ? Framing::Tcp : Framing::Rtu, 1}, tcp);
+    VirtualPlcUnderTest v(kPeerPl110, {ProtocolId::Modbus, tcp ? Framing::Tcp : Framing::Rtu, 1},
+                          tcp);
     ASSERT_TRUE(v.ready());
     Libmodbus m(v);
     ASSERT_TRUE(m.ctx);
@@ -220,7 +221,7 @@ TEST(PeerLibmodbus, MasterOverModbusTcp) {
 TEST(PeerLibmodbus, BroadcastWritesAreDoneWithoutAnAnswer) {
     REQUIRE_LIBMODBUS();
 #ifdef RUNG_HAVE_LIBMODBUS
-    VirtualPlcUnderTest v(kPl110, {ProtocolId::Modbus, Framing::Rtu, 1}, false);
+    VirtualPlcUnderTest v(kPeerPl110, {ProtocolId::Modbus, Framing::Rtu, 1}, false);
     ASSERT_TRUE(v.ready());
     Libmodbus m(v);
     ASSERT_TRUE(m.ctx);
@@ -276,8 +277,8 @@ for mode, where in zip(args[0::2], args[1::2]):
 )";
 
 TEST(PeerPymodbus, MasterOverModbusTcpAndRtuOnAPseudoTerminal) {
-    VirtualPlcUnderTest tcp(kPl110, {ProtocolId::Modbus, Framing::Tcp, 1}, true);
-    VirtualPlcUnderTest rtu(kPl110, {ProtocolId::Modbus, Framing::Rtu, 1}, false);
+    VirtualPlcUnderTest tcp(kPeerPl110, {ProtocolId::Modbus, Framing::Tcp, 1}, true);
+    VirtualPlcUnderTest rtu(kPeerPl110, {ProtocolId::Modbus, Framing::Rtu, 1}, false);
     ASSERT_TRUE(tcp.ready() && rtu.ready());
     const Finished f =
         run(QStringLiteral("/usr/bin/python3"),
@@ -306,7 +307,7 @@ TEST(CliServe, ServesAPtyUntilSigtermAndExitsCleanly) {
     {
         QFile f(file);
         ASSERT_TRUE(f.open(QIODevice::WriteOnly));
-        f.write(kPl110);
+        f.write(kPeerPl110);
     }
     QProcess serve;
     serve.start(QStringLiteral(RUNG_CLI_PATH),
@@ -380,7 +381,7 @@ TcpServe serveOverTcpUntilSigint(const QByteArray &program) {
 }
 
 TEST(CliServe, TcpPrintsTheAddressAndSigintStopsIt) {
-    const TcpServe r = serveOverTcpUntilSigint(kVigor);
+    const TcpServe r = serveOverTcpUntilSigint(kPeerVigor);
     ASSERT_TRUE(r.where.startsWith(QLatin1String("127.0.0.1:"))) << r.where.toStdString();
     EXPECT_NE(r.where.section(u':', 1).toInt(), 0);
     EXPECT_EQ(r.exitCode, 0);

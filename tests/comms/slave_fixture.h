@@ -2,8 +2,12 @@
 
 // A device image for the slave's tests, with its devices named as a listing writes them.
 
+#include "comms/protocol/protocol_error.h"
 #include "comms/slave/memory_image.h"
+#include "comms/transport/transport.h"
 #include "model/target/address.h"
+
+#include <QDeadlineTimer>
 
 #include <gtest/gtest.h>
 
@@ -40,5 +44,21 @@ struct Image {
         return image->snapshot()->value(device(target, dev));
     }
 };
+
+// Writes a request as a master does and feeds what comes back to the decoder until it has a
+// whole reply or `ms` pass.
+template <typename Decoder>
+FrameStatus exchange(Transport &t, const QByteArray &request, Decoder &d, int ms = 2000) {
+    QString error;
+    EXPECT_TRUE(t.write(request, QDeadlineTimer(1000), &error)) << error.toStdString();
+    const QDeadlineTimer deadline(ms);
+    while (d.status() == FrameStatus::NeedMore) {
+        const ReadResult r = t.read(deadline);
+        if (r.status != ReadResult::Status::Data)
+            break;
+        d.feed(r.bytes);
+    }
+    return d.status();
+}
 
 } // namespace rung::comms::test

@@ -12,6 +12,7 @@
 #include "comms/slave/vigor_responder.h"
 #include "comms/transport/tcp_transport.h"
 #include "tests/comms/slave_fixture.h"
+#include "tests/targets.h"
 
 #include <gtest/gtest.h>
 
@@ -25,9 +26,7 @@ using model::Family;
 using model::ProtocolId;
 using test::Image;
 
-const model::Target &target(Family f) {
-    return model::Target::get(f);
-}
+using rung::testing::target;
 
 const model::ProtocolMap &mapOf(Family f, ProtocolId p) {
     return *model::findProtocolMap(target(f), p);
@@ -128,19 +127,7 @@ TEST(SlaveFaults, VigorATruncatedRequestIsLeftForTheNextStx) {
 
 // ----- over raw TCP -----
 
-template <typename Decoder>
-FrameStatus exchange(Transport &t, const QByteArray &request, Decoder &d) {
-    QString error;
-    EXPECT_TRUE(t.write(request, QDeadlineTimer(1000), &error)) << error.toStdString();
-    const QDeadlineTimer deadline(2000);
-    while (d.status() == FrameStatus::NeedMore) {
-        const ReadResult r = t.read(deadline);
-        if (r.status != ReadResult::Status::Data)
-            break;
-        d.feed(r.bytes);
-    }
-    return d.status();
-}
+using test::exchange;
 
 TEST(SlaveFaults, HostLinkAndModbusRtuFramesOverRawTcp) {
     Image cpm1(target(Family::Cpm1), OperatingMode::Monitor);

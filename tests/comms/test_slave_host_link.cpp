@@ -3,24 +3,26 @@
 
 #include "comms/slave/host_link_responder.h"
 #include "tests/comms/slave_fixture.h"
+#include "tests/targets.h"
 
 #include <gtest/gtest.h>
 
 namespace rung::comms::slave {
+// Named, so that the using-directive stays in this file when the test files are compiled
+// together (tests/CMakeLists.txt).
+namespace host_link_slave {
 namespace {
 
 using namespace hostlink;
 using test::Image;
 
-const model::Target &cpm1() {
-    return model::Target::get(model::Family::Cpm1);
-}
+using rung::testing::cpm1;
 
-struct Fixture {
+struct HostLinkSlave {
     Image plc;
     HostLinkResponder slave;
 
-    explicit Fixture(OperatingMode mode = OperatingMode::Run, int unit = 0)
+    explicit HostLinkSlave(OperatingMode mode = OperatingMode::Run, int unit = 0)
         : plc(cpm1(), mode)
         , slave(cpm1(), *model::findProtocolMap(cpm1(), model::ProtocolId::HostLink), unit,
                 plc.image) {}
@@ -51,7 +53,7 @@ struct Fixture {
 };
 
 TEST(HostLinkSlave, TheCommandVectorsOfProtocolsMdAreAnswered) {
-    Fixture f(OperatingMode::Monitor);
+    HostLinkSlave f(OperatingMode::Monitor);
     f.plc.set("DM 0000", 0x1234);
     f.plc.set("000", 0x00F0);
     f.plc.set("001", 0x0102);
@@ -85,7 +87,7 @@ TEST(HostLinkSlave, TheCommandVectorsOfProtocolsMdAreAnswered) {
 }
 
 TEST(HostLinkSlave, ModeChangesAndTheStatusTheyShow) {
-    Fixture f(OperatingMode::Run);
+    HostLinkSlave f(OperatingMode::Run);
     auto status = [&f] {
         const ReplyDecoder d = f.ask(statusCommand(0));
         EXPECT_EQ(d.status(), FrameStatus::Complete);
@@ -105,7 +107,7 @@ TEST(HostLinkSlave, ModeChangesAndTheStatusTheyShow) {
 }
 
 TEST(HostLinkSlave, WritesAndForcingAreRefusedInRunUntilMonitor) {
-    Fixture f(OperatingMode::Run);
+    HostLinkSlave f(OperatingMode::Run);
     EXPECT_EQ(f.endCodeOf(writeCommand(0, model::ProtocolSpace::HostLinkDm, 5, {7})), NotInRun);
     EXPECT_EQ(f.endCodeOf(forceCommand(0, true, 10, 0)), NotInRun);
     EXPECT_EQ(f.endCodeOf(cancelForceCommand(0)), NotInRun);
@@ -120,7 +122,7 @@ TEST(HostLinkSlave, WritesAndForcingAreRefusedInRunUntilMonitor) {
 }
 
 TEST(HostLinkSlave, PresentValuesTravelAsBcdAndCompletionFlagsAsDigits) {
-    Fixture f(OperatingMode::Monitor);
+    HostLinkSlave f(OperatingMode::Monitor);
     f.plc.set("TIM 002", 1234);
     f.plc.set("TIM 003", 1);
     ReplyDecoder d = f.ask(readCommand(0, model::ProtocolSpace::HostLinkTimerPv, 2, 1));
@@ -137,7 +139,7 @@ TEST(HostLinkSlave, PresentValuesTravelAsBcdAndCompletionFlagsAsDigits) {
 }
 
 TEST(HostLinkSlave, EndCodesForBrokenAndOutOfReachCommands) {
-    Fixture f(OperatingMode::Monitor);
+    HostLinkSlave f(OperatingMode::Monitor);
     // 13: a wrong FCS, answered since the unit is ours.
     QByteArrayList out = f.slave.feed("@00RD0000000158*\r");
     ASSERT_EQ(out.size(), 1);
@@ -159,7 +161,7 @@ TEST(HostLinkSlave, EndCodesForBrokenAndOutOfReachCommands) {
 }
 
 TEST(HostLinkSlave, AnotherUnitIsNotAnswered) {
-    Fixture f(OperatingMode::Run, 3);
+    HostLinkSlave f(OperatingMode::Run, 3);
     EXPECT_TRUE(f.slave.feed("@00RD0000000157*\r").isEmpty());
     EXPECT_EQ(f.slave.statistics().ignored, 1u);
     EXPECT_EQ(f.ask(readCommand(3, model::ProtocolSpace::HostLinkDm, 0, 1)).status(),
@@ -167,7 +169,7 @@ TEST(HostLinkSlave, AnotherUnitIsNotAnswered) {
 }
 
 TEST(HostLinkSlave, LongAnswersAndCommandsGoInPartsWithTheDelimiter) {
-    Fixture f(OperatingMode::Monitor);
+    HostLinkSlave f(OperatingMode::Monitor);
     std::vector<std::uint16_t> words;
     for (int i = 0; i < 100; ++i)
         words.push_back(std::uint16_t(0x1000 + i));
@@ -191,7 +193,7 @@ TEST(HostLinkSlave, LongAnswersAndCommandsGoInPartsWithTheDelimiter) {
 }
 
 TEST(HostLinkSlave, ANewCommandInsteadOfTheDelimiterDropsTheRestOfAnAnswer) {
-    Fixture f(OperatingMode::Monitor);
+    HostLinkSlave f(OperatingMode::Monitor);
     QByteArrayList out =
         f.slave.feed(encode(readCommand(0, model::ProtocolSpace::HostLinkDm, 0, 100)).front());
     ASSERT_EQ(out.size(), 1);
@@ -203,7 +205,7 @@ TEST(HostLinkSlave, ANewCommandInsteadOfTheDelimiterDropsTheRestOfAnAnswer) {
 }
 
 TEST(HostLinkSlave, ACommandBegunAfreshInPlaceOfALaterPartIsServed) {
-    Fixture f(OperatingMode::Monitor);
+    HostLinkSlave f(OperatingMode::Monitor);
     std::vector<std::uint16_t> words(100, 0x1111);
     const QList<QByteArray> parts =
         encode(writeCommand(0, model::ProtocolSpace::HostLinkDm, 0, words));
@@ -217,11 +219,12 @@ TEST(HostLinkSlave, ACommandBegunAfreshInPlaceOfALaterPartIsServed) {
 }
 
 TEST(HostLinkSlave, TestCommandEchoes) {
-    Fixture f;
+    HostLinkSlave f;
     const QByteArrayList out = f.slave.feed(encode({0, "TS", -1, "HELLO 123"}).front());
     ASSERT_EQ(out.size(), 1);
     EXPECT_EQ(out.front(), QByteArray("@00TSHELLO 123") + fcs("@00TSHELLO 123") + "*\r");
 }
 
 } // namespace
+} // namespace host_link_slave
 } // namespace rung::comms::slave

@@ -3,27 +3,29 @@
 
 #include "comms/slave/modbus_responder.h"
 #include "tests/comms/slave_fixture.h"
+#include "tests/targets.h"
 
 #include <gtest/gtest.h>
 
 namespace rung::comms::slave {
+// Named, so that the using-directive stays in this file when the test files are compiled
+// together (tests/CMakeLists.txt).
+namespace modbus_slave {
 namespace {
 
 using namespace modbus;
 using test::Image;
 
-const model::Target &target(model::Family f) {
-    return model::Target::get(f);
-}
+using rung::testing::target;
 
-struct Fixture {
+struct ModbusSlave {
     const model::Target &t;
     Image plc;
     ModbusResponder slave;
     Framing framing;
     int transaction = 0;
 
-    explicit Fixture(model::Family family, Framing framing = Framing::Rtu, int station = 1)
+    explicit ModbusSlave(model::Family family, Framing framing = Framing::Rtu, int station = 1)
         : t(target(family))
         , plc(t)
         , slave(t, *model::findProtocolMap(t, model::ProtocolId::Modbus), station, plc.image,
@@ -60,7 +62,7 @@ struct Fixture {
 };
 
 TEST(ModbusSlave, VigorCp2MapHoldingRegistersAreDAndCoilsAreY) {
-    Fixture f(model::Family::Vigor);
+    ModbusSlave f(model::Family::Vigor);
     f.plc.set("D0", 1234);
     f.plc.set("D1", -2);
     f.plc.set("D8191", 7);
@@ -86,7 +88,7 @@ TEST(ModbusSlave, VigorCp2MapHoldingRegistersAreDAndCoilsAreY) {
 }
 
 TEST(ModbusSlave, WritesOfEveryFunctionReachTheImage) {
-    Fixture f(model::Family::Vigor);
+    ModbusSlave f(model::Family::Vigor);
     EXPECT_EQ(f.ask({WriteSingleRegister, 100, 1, {0xBEEF}, {}}).status(), FrameStatus::Complete);
     EXPECT_EQ(f.plc.value("D100") & 0xFFFF, 0xBEEF);
     EXPECT_EQ(f.ask({WriteMultipleRegisters, 8648, 2, {0x5678, 0x0002}, {}}).status(),
@@ -103,7 +105,7 @@ TEST(ModbusSlave, WritesOfEveryFunctionReachTheImage) {
 }
 
 TEST(ModbusSlave, ExceptionsOfTheVigorMap) {
-    Fixture f(model::Family::Vigor);
+    ModbusSlave f(model::Family::Vigor);
     // Past D9255 (register 9015) there is nothing: 02, also for a read that runs into it.
     EXPECT_EQ(f.exceptionOf({ReadHoldingRegisters, 9016, 1, {}, {}}), IllegalDataAddress);
     EXPECT_EQ(f.exceptionOf({ReadHoldingRegisters, 9010, 10, {}, {}}), IllegalDataAddress);
@@ -115,7 +117,7 @@ TEST(ModbusSlave, ExceptionsOfTheVigorMap) {
 }
 
 TEST(ModbusSlave, AnUnknownFunctionEndsAtTheSilenceAndGetsException01) {
-    Fixture f(model::Family::Vigor);
+    ModbusSlave f(model::Family::Vigor);
     EXPECT_TRUE(f.slave.feed(rtuFrame(1, QByteArray("\x2B\x0E\x01\x00", 4))).isEmpty());
     const QByteArrayList out = f.slave.silence();
     ASSERT_EQ(out.size(), 1);
@@ -123,7 +125,7 @@ TEST(ModbusSlave, AnUnknownFunctionEndsAtTheSilenceAndGetsException01) {
 }
 
 TEST(ModbusSlave, Pl110ThirtyWordsAndItsOwnIllegalValueCode) {
-    Fixture f(model::Family::Pl110);
+    ModbusSlave f(model::Family::Pl110);
     EXPECT_EQ(f.registers(2000, 30).size(), 30u);
     // Seed 003 3.1: at most 30 words, and ILLEGAL DATA VALUE is 04 there.
     EXPECT_EQ(f.exceptionOf({ReadHoldingRegisters, 2000, 31, {}, {}}), 0x04);
@@ -135,7 +137,7 @@ TEST(ModbusSlave, Pl110ThirtyWordsAndItsOwnIllegalValueCode) {
 }
 
 TEST(ModbusSlave, Pl110WordsPackBitsAndReadOnlyRangesRefuseWrites) {
-    Fixture f(model::Family::Pl110);
+    ModbusSlave f(model::Family::Pl110);
     f.plc.set("I1", 1);
     f.plc.set("I16", 1);
     f.plc.set("Q3", 1);
@@ -160,7 +162,7 @@ TEST(ModbusSlave, Pl110WordsPackBitsAndReadOnlyRangesRefuseWrites) {
 }
 
 TEST(ModbusSlave, Pl110IdentityRegistersAndRunBit) {
-    Fixture f(model::Family::Pl110, Framing::Rtu, 7);
+    ModbusSlave f(model::Family::Pl110, Framing::Rtu, 7);
     EXPECT_EQ(f.registers(5, 1, 7), (std::vector<std::uint16_t>{7})); // protocol address
     EXPECT_EQ(f.registers(0, 2, 7).size(), 2u);
     EXPECT_EQ(f.exceptionOf({WriteSingleRegister, 0, 1, {1}, {}}, 7), IllegalDataAddress);
@@ -175,7 +177,7 @@ TEST(ModbusSlave, Pl110IdentityRegistersAndRunBit) {
 }
 
 TEST(ModbusSlave, BroadcastWritesAreDoneAndNeverAnswered) {
-    Fixture f(model::Family::Pl110);
+    ModbusSlave f(model::Family::Pl110);
     Request w{WriteSingleRegister, 2000, 1, {42}, {}};
     EXPECT_TRUE(f.slave.feed(f.frame(0, w)).isEmpty());
     EXPECT_EQ(f.plc.value("V0"), 42);
@@ -185,16 +187,16 @@ TEST(ModbusSlave, BroadcastWritesAreDoneAndNeverAnswered) {
 }
 
 TEST(ModbusSlave, OtherUnitsAreIgnoredAndFFhIsAnsweredByThePl110) {
-    Fixture f(model::Family::Pl110, Framing::Rtu, 3);
+    ModbusSlave f(model::Family::Pl110, Framing::Rtu, 3);
     EXPECT_TRUE(f.slave.feed(f.frame(4, {ReadHoldingRegisters, 2000, 1, {}, {}})).isEmpty());
     EXPECT_EQ(f.slave.statistics().ignored, 1u);
     EXPECT_EQ(f.ask({ReadHoldingRegisters, 2000, 1, {}, {}}, 0xFF).status(), FrameStatus::Complete);
-    Fixture v(model::Family::Vigor, Framing::Rtu, 3); // the CP2 has no such address
+    ModbusSlave v(model::Family::Vigor, Framing::Rtu, 3); // the CP2 has no such address
     EXPECT_TRUE(v.slave.feed(v.frame(0xFF, {ReadHoldingRegisters, 0, 1, {}, {}})).isEmpty());
 }
 
 TEST(ModbusSlave, ABadCrcIsDroppedUnansweredAndTheNextFrameIsServed) {
-    Fixture f(model::Family::Vigor);
+    ModbusSlave f(model::Family::Vigor);
     QByteArray bad = f.frame(1, {ReadHoldingRegisters, 0, 1, {}, {}});
     bad[bad.size() - 1] = char(bad.back() ^ 0x01);
     EXPECT_TRUE(f.slave.feed(bad).isEmpty());
@@ -203,7 +205,7 @@ TEST(ModbusSlave, ABadCrcIsDroppedUnansweredAndTheNextFrameIsServed) {
 }
 
 TEST(ModbusSlave, TcpEchoesTheTransactionAndTakesUnits0AndFF) {
-    Fixture f(model::Family::Vigor, Framing::Tcp, 1);
+    ModbusSlave f(model::Family::Vigor, Framing::Tcp, 1);
     f.plc.set("D3", 33);
     for (int unit : {1, 0, 0xFF}) {
         ReplyDecoder d = f.ask({ReadHoldingRegisters, 3, 1, {}, {}}, unit);
@@ -214,4 +216,5 @@ TEST(ModbusSlave, TcpEchoesTheTransactionAndTakesUnits0AndFF) {
 }
 
 } // namespace
+} // namespace modbus_slave
 } // namespace rung::comms::slave

@@ -9,6 +9,7 @@
 #include "comms/transport/tcp_transport.h"
 #include "tests/comms/hex.h"
 #include "tests/comms/slave_fixture.h"
+#include "tests/targets.h"
 
 #include <gtest/gtest.h>
 
@@ -25,9 +26,7 @@ using model::ProtocolId;
 using test::bytes;
 using test::Image;
 
-const model::Target &target(Family f) {
-    return model::Target::get(f);
-}
+using rung::testing::target;
 
 // A slave on a new pseudo-terminal and a master's end of it.
 struct PtyLink {
@@ -48,20 +47,7 @@ struct PtyLink {
     }
 };
 
-// Writes a request and feeds what comes back to the decoder until it is done or the deadline.
-template <typename Decoder>
-FrameStatus exchange(Transport &t, const QByteArray &request, Decoder &d, int ms = 1000) {
-    QString error;
-    EXPECT_TRUE(t.write(request, QDeadlineTimer(1000), &error)) << error.toStdString();
-    const QDeadlineTimer deadline(ms);
-    while (d.status() == FrameStatus::NeedMore) {
-        const ReadResult r = t.read(deadline);
-        if (r.status != ReadResult::Status::Data)
-            break;
-        d.feed(r.bytes);
-    }
-    return d.status();
-}
+using test::exchange;
 
 bool waitFor(const std::function<bool()> &condition) {
     const QDeadlineTimer deadline(3000);

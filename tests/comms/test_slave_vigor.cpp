@@ -4,6 +4,7 @@
 #include "comms/slave/vigor_responder.h"
 #include "tests/comms/hex.h"
 #include "tests/comms/slave_fixture.h"
+#include "tests/targets.h"
 
 #include <gtest/gtest.h>
 
@@ -13,11 +14,9 @@ namespace {
 using test::bytes;
 using test::Image;
 
-const model::Target &vigor() {
-    return model::Target::get(model::Family::Vigor);
-}
+using rung::testing::vigor;
 
-struct Fixture {
+struct VigorSlave {
     Image plc{vigor()};
     VigorResponder slave{vigor(), *model::findProtocolMap(vigor(), model::ProtocolId::VigorLink), 0,
                          plc.image};
@@ -30,7 +29,7 @@ struct Fixture {
 };
 
 TEST(VigorSlave, Vector1ReadM8ToM23) {
-    Fixture f;
+    VigorSlave f;
     // M8..M15 = A7h, M16..M23 = 93h (bit 0 = the lowest device number).
     for (int i = 0; i < 8; ++i) {
         f.plc.set(qPrintable(QStringLiteral("M%1").arg(8 + i)), (0xA7 >> i) & 1);
@@ -41,7 +40,7 @@ TEST(VigorSlave, Vector1ReadM8ToM23) {
 }
 
 TEST(VigorSlave, Vector2ReadD1D2LowByteFirst) {
-    Fixture f;
+    VigorSlave f;
     f.plc.set("D1", 0x1234);
     f.plc.set("D2", 0xABCD);
     EXPECT_EQ(f.ask(bytes("02 30 30 35 31 31 43 30 32 30 34 03 30 33")),
@@ -49,7 +48,7 @@ TEST(VigorSlave, Vector2ReadD1D2LowByteFirst) {
 }
 
 TEST(VigorSlave, Vector3WriteY30ToY47) {
-    Fixture f;
+    VigorSlave f;
     EXPECT_EQ(f.ask(bytes("02 30 30 36 31 30 30 34 33 30 32 43 36 33 45 03 45 34")),
               bytes("06 30 30 36 31 30 30 03 32 41"));
     // C6h on Y30..Y37 (octal), 3Eh on Y40..Y47.
@@ -62,14 +61,14 @@ TEST(VigorSlave, Vector3WriteY30ToY47) {
 }
 
 TEST(VigorSlave, Vector4WriteD1) {
-    Fixture f;
+    VigorSlave f;
     EXPECT_EQ(f.ask(bytes("02 30 30 36 31 31 43 30 32 30 32 32 35 41 33 03 44 44")),
               bytes("06 30 30 36 31 30 30 03 32 41"));
     EXPECT_EQ(f.plc.value("D1") & 0xFFFF, 0xA325);
 }
 
 TEST(VigorSlave, Vectors5And6BitOnAndOff) {
-    Fixture f;
+    VigorSlave f;
     f.plc.set("M100", 1);
     EXPECT_EQ(f.ask(bytes("02 30 30 37 30 30 34 30 41 03 39 46")),
               bytes("06 30 30 37 30 30 30 03 32 41"));
@@ -81,7 +80,7 @@ TEST(VigorSlave, Vectors5And6BitOnAndOff) {
 }
 
 TEST(VigorSlave, ARequestInPiecesAndNoiseBeforeItIsAnsweredOnce) {
-    Fixture f;
+    VigorSlave f;
     f.plc.set("D1", 0x1234);
     f.plc.set("D2", 0xABCD);
     const QByteArray request = bytes("02 30 30 35 31 31 43 30 32 30 34 03 30 33");
@@ -93,7 +92,7 @@ TEST(VigorSlave, ARequestInPiecesAndNoiseBeforeItIsAnsweredOnce) {
 }
 
 TEST(VigorSlave, AnotherStationsRequestIsNotAnswered) {
-    Fixture f;
+    VigorSlave f;
     vigor::Request r{5, vigor::Command::Read, 0x1C02, 4, {}};
     EXPECT_TRUE(f.slave.feed(vigor::encodeRequest(r)).isEmpty());
     EXPECT_EQ(f.slave.statistics().ignored, 1u);
@@ -104,7 +103,7 @@ TEST(VigorSlave, AnotherStationsRequestIsNotAnswered) {
 }
 
 // The reply's error code for a request to this station.
-int errorOf(Fixture &f, const QByteArray &request) {
+int errorOf(VigorSlave &f, const QByteArray &request) {
     const QByteArray reply = f.ask(request);
     if (reply.size() < 7)
         return -1;
@@ -112,7 +111,7 @@ int errorOf(Fixture &f, const QByteArray &request) {
 }
 
 TEST(VigorSlave, ErrorCodesOfB5) {
-    Fixture f;
+    VigorSlave f;
     // 11h: the sum does not match.
     QByteArray badSum = bytes("02 30 30 35 31 31 43 30 32 30 34 03 30 33");
     badSum[badSum.size() - 1] = '4';
@@ -134,7 +133,7 @@ TEST(VigorSlave, ErrorCodesOfB5) {
 }
 
 TEST(VigorSlave, BitCommandsActOnBitDevicesOnly) {
-    Fixture f;
+    VigorSlave f;
     // S20: byte 0302h, bit 4 -> 1814h (protocols.md).
     EXPECT_EQ(errorOf(f, vigor::encodeRequest({0, vigor::Command::BitOn, 0x1814, 0, {}})), 0);
     EXPECT_TRUE(f.plc.bit("S20"));
@@ -145,7 +144,7 @@ TEST(VigorSlave, BitCommandsActOnBitDevicesOnly) {
 }
 
 TEST(VigorSlave, AWordWrittenAsTwoBytesIsOneWriteOfTheWholeWord) {
-    Fixture f;
+    VigorSlave f;
     f.plc.set("D5", 0x1111);
     const int before = f.plc.image->changes();
     // D5 low byte only (1C0Ah): the high byte stays.
@@ -155,7 +154,7 @@ TEST(VigorSlave, AWordWrittenAsTwoBytesIsOneWriteOfTheWholeWord) {
 }
 
 TEST(VigorSlave, A32BitCounterValueReadsLowByteFirst) {
-    Fixture f;
+    VigorSlave f;
     f.plc.set("C200", 0x01020304);
     const QByteArray reply = f.ask(vigor::encodeRequest({0, vigor::Command::Read, 0x1A00, 4, {}}));
     vigor::ReplyDecoder d({0, vigor::Command::Read, 0x1A00, 4, {}});
@@ -164,7 +163,7 @@ TEST(VigorSlave, A32BitCounterValueReadsLowByteFirst) {
 }
 
 TEST(VigorSlave, TimerCoilsAreNotServedAndSaySo) {
-    Fixture f;
+    VigorSlave f;
     EXPECT_EQ(errorOf(f, vigor::encodeRequest({0, vigor::Command::Read, 0x0780, 1, {}})), 0x28);
 }
 

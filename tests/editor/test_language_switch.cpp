@@ -30,16 +30,6 @@ QString tr(const char *context, const char *text) {
     return QCoreApplication::translate(context, text);
 }
 
-// The language menu's entry, as the user picks it; the switch happens once its events arrive.
-void pick(app::MainWindow &window, const char *name) {
-    QAction *entry = test::menuAction(window, QString::fromUtf8(name));
-    ASSERT_NE(entry, nullptr) << name;
-    entry->trigger();
-    QCoreApplication::processEvents(); // the queued switch
-    QCoreApplication::sendPostedEvents(nullptr, QEvent::LanguageChange);
-    QCoreApplication::processEvents();
-}
-
 struct LanguageSwitch : test::WindowFixture {
     void SetUp() override {
         WindowFixture::SetUp();
@@ -68,7 +58,7 @@ TEST_F(LanguageSwitch, EverythingChangesAtOnceWithoutARestart) {
     const QString englishStatus = test::statusText(window);
     ASSERT_TRUE(englishStatus.contains(QStringLiteral("steps"))) << englishStatus.toStdString();
 
-    pick(window, "Magyar");
+    test::pickMenuEntry(window, "Magyar");
     EXPECT_EQ(app::currentLanguage(), QStringLiteral("hu"));
     const QString file = tr("rung::app::MainWindow", "&File");
     ASSERT_NE(file, QStringLiteral("&File")); // the catalogue is there
@@ -96,14 +86,14 @@ TEST_F(LanguageSwitch, EverythingChangesAtOnceWithoutARestart) {
     EXPECT_EQ(box.button(QMessageBox::Save)->text(), QStringLiteral("Mentés"));
     EXPECT_EQ(box.button(QMessageBox::Yes)->text(), QStringLiteral("&Igen"));
 
-    pick(window, "Italiano");
+    test::pickMenuEntry(window, "Italiano");
     EXPECT_EQ(window.menuBar()->actions().first()->text(), tr("rung::app::MainWindow", "&File"));
     EXPECT_NE(window.problemsView()->diagnosticAt(0)->message, hungarian.message);
     QMessageBox italian(QMessageBox::Warning, QStringLiteral("t"), QStringLiteral("t"),
                         QMessageBox::Save);
     EXPECT_EQ(italian.button(QMessageBox::Save)->text(), QStringLiteral("Salva"));
 
-    pick(window, "English");
+    test::pickMenuEntry(window, "English");
     EXPECT_EQ(window.menuBar()->actions().first()->text(), QStringLiteral("&File"));
     EXPECT_EQ(window.problemsView()->diagnosticAt(0)->message, english.message);
     EXPECT_EQ(test::statusText(window), englishStatus);
@@ -114,7 +104,7 @@ TEST_F(LanguageSwitch, TheListAsTypedStaysAndItsErrorsAreTranslatedToo) {
     window.ilEditor()->setText(typed);
     window.applyListing();
     const QString before = window.problemsView()->diagnosticAt(0)->message;
-    pick(window, "Magyar");
+    test::pickMenuEntry(window, "Magyar");
     EXPECT_EQ(window.ilEditor()->text(), typed);
     EXPECT_NE(window.problemsView()->diagnosticAt(0)->message, before);
     EXPECT_TRUE(window.isModified()); // still unsaved work
@@ -122,7 +112,7 @@ TEST_F(LanguageSwitch, TheListAsTypedStaysAndItsErrorsAreTranslatedToo) {
 
 TEST_F(LanguageSwitch, TheChoiceIsRememberedForTheNextStart) {
     QSettings().remove(QStringLiteral("ui/language"));
-    pick(window, "Italiano");
+    test::pickMenuEntry(window, "Italiano");
     EXPECT_EQ(QSettings().value(QStringLiteral("ui/language")).toString(), QStringLiteral("it"));
     EXPECT_EQ(app::startLanguage(), QStringLiteral("it"));
     app::MainWindow next;
@@ -162,7 +152,7 @@ TEST(StartLanguage, TheRememberedChoiceWinsOverTheLocale) {
 // The New Project dialog leaves its title room in a title bar: in Italian it read
 // "Nuovo... getto" under a window manager, the dialog only as wide as its combo boxes.
 TEST_F(LanguageSwitch, TheNewProjectDialogIsWideEnoughForItsTitle) {
-    pick(window, "Italiano");
+    test::pickMenuEntry(window, "Italiano");
     window.document()->markSaved(); // no "save the changes?" before the dialog
     QAction *entry = test::menuAction(
         window, tr("rung::app::MainWindow", "&New Project...").remove(QLatin1Char('&')));

@@ -10,6 +10,7 @@
 #include "model/convert/convert.h"
 #include "model/ladder/ladder_text.h"
 #include "model/listing/il.h"
+#include "tests/targets.h"
 
 #include <QAbstractButton>
 #include <QApplication>
@@ -215,18 +216,7 @@ QStringList linesOf(const QString &text) {
     return lines;
 }
 
-void pick(app::MainWindow &window, const char *name) {
-    QAction *entry = test::menuAction(window, QString::fromUtf8(name));
-    ASSERT_NE(entry, nullptr) << name;
-    entry->trigger();
-    QCoreApplication::processEvents();
-    QCoreApplication::sendPostedEvents(nullptr, QEvent::LanguageChange);
-    QCoreApplication::processEvents();
-}
-
-const model::Target &vigor() {
-    return model::Target::get(model::Family::Vigor);
-}
+using rung::testing::vigor;
 
 // Something of everything: a coil driven twice (a finding), a bridge the list cannot express
 // (a placeholder line), a contact on no path (a marked line), a symbol, a symbol row that is
@@ -305,13 +295,13 @@ TEST_F(LanguageWalk, NoTextOfTheOldLanguageIsLeft) {
     window.ilEditor()->setCursorPosition(out, 1);
     QApplication::processEvents(); // QScintilla tells of the move when it updates
     ASSERT_FALSE(window.ilEditor()->toolTip().isEmpty());
-    pick(window, "Magyar");
+    test::pickMenuEntry(window, "Magyar");
     QStringList left = leftOver(window, OldTexts(QStringLiteral("en"), QStringLiteral("hu")));
     EXPECT_TRUE(left.isEmpty()) << left.join(QLatin1Char('\n')).toStdString();
-    pick(window, "Italiano");
+    test::pickMenuEntry(window, "Italiano");
     left = leftOver(window, OldTexts(QStringLiteral("hu"), QStringLiteral("it")));
     EXPECT_TRUE(left.isEmpty()) << left.join(QLatin1Char('\n')).toStdString();
-    pick(window, "English");
+    test::pickMenuEntry(window, "English");
     left = leftOver(window, OldTexts(QStringLiteral("it"), QStringLiteral("en")));
     EXPECT_TRUE(left.isEmpty()) << left.join(QLatin1Char('\n')).toStdString();
 }
@@ -326,7 +316,7 @@ TEST_F(LanguageWalk, TheNoticeOfAListWithErrorsFollows) {
     ASSERT_NE(notice, nullptr);
     const QString english = notice->text();
     ASSERT_FALSE(english.isEmpty());
-    pick(window, "Italiano");
+    test::pickMenuEntry(window, "Italiano");
     EXPECT_EQ(window.ilEditor()->text(), typed);
     EXPECT_NE(notice->text(), english);
     const QStringList left = leftOver(window, OldTexts(QStringLiteral("en"), QStringLiteral("it")));

@@ -8,6 +8,7 @@
 #include "model/convert/convert.h"
 #include "model/ladder/ladder_text.h"
 #include "model/listing/il.h"
+#include "tests/targets.h"
 
 #include "tests/editor/window_fixture.h"
 
@@ -17,9 +18,7 @@ using namespace rung;
 
 namespace {
 
-const model::Target &vigor() {
-    return model::Target::get(model::Family::Vigor);
-}
+using rung::testing::vigor;
 
 model::Contact contact(const char *text) {
     QString why;

@@ -6,6 +6,7 @@
 #include "model/convert/convert.h"
 #include "model/ladder/ladder_text.h"
 #include "model/listing/il.h"
+#include "tests/targets.h"
 
 #include <QRegularExpression>
 
@@ -24,9 +25,7 @@ const char *kBridge = "LADDER vigor WIDTH 8\n"
                       "|                 |        |\n"
                       "|-[ X3 ]----------+-[ X4 ]-+\n";
 
-const model::Target &vigor() {
-    return model::Target::get(model::Family::Vigor);
-}
+using rung::testing::vigor;
 
 model::Rung bridge() {
     model::Rung r =

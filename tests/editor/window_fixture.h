@@ -5,6 +5,7 @@
 
 #include "app/gui/eliding_label.h"
 #include "app/gui/main_window.h"
+#include "app/gui/recovery.h"
 #include "editor/ladder_view.h"
 
 #include <QAction>
@@ -13,6 +14,7 @@
 #include <QMenu>
 #include <QMenuBar>
 #include <QStatusBar>
+#include <QTemporaryDir>
 #include <QTest>
 #include <QToolBar>
 
@@ -36,6 +38,17 @@ inline QAction *menuAction(const QMainWindow &window, const QString &text) {
                             return inner;
             }
     return nullptr;
+}
+
+// A menu entry picked as the user picks it (Language > Magyar): triggered, then the queued
+// work it starts and the language change it posts carried out.
+inline void pickMenuEntry(QMainWindow &window, const char *name) {
+    QAction *entry = menuAction(window, QString::fromUtf8(name));
+    ASSERT_NE(entry, nullptr) << name;
+    entry->trigger();
+    QCoreApplication::processEvents();
+    QCoreApplication::sendPostedEvents(nullptr, QEvent::LanguageChange);
+    QCoreApplication::processEvents();
 }
 
 // A button of the toolbars, by its text without the access-key '&'; nullptr when there is none.
@@ -81,7 +94,20 @@ inline QString statusText(const QMainWindow &window) {
     return texts.join(QLatin1Char('|'));
 }
 
+// A recovery folder of the test's own while it lives: a window that recovered work keeps it in
+// a recovery file of its own, orphaned when the window goes, and the next test's windows
+// would be offered it (a hang when the whole binary runs in one process).
+struct OwnRecoveryFolder {
+    QTemporaryDir folder;
+    QString before = app::RecoveryFile::directory();
+    OwnRecoveryFolder() { app::RecoveryFile::setDirectory(folder.path()); }
+    ~OwnRecoveryFolder() { app::RecoveryFile::setDirectory(before); }
+    OwnRecoveryFolder(const OwnRecoveryFolder &) = delete;
+    OwnRecoveryFolder &operator=(const OwnRecoveryFolder &) = delete;
+};
+
 struct WindowFixture : ::testing::Test {
+    OwnRecoveryFolder recoveryFolder; // before the window: its recovery file goes there
     app::MainWindow window;
     editor::LadderView *view = window.ladderView();
 

@@ -1,4 +1,5 @@
 #include "model/target/address.h"
+#include "tests/targets.h"
 
 #include <gtest/gtest.h>
 
@@ -13,18 +14,10 @@ using namespace rung::model;
 
 namespace {
 
-const Target &vpc() {
-    return Target::get(Family::Vpc);
-}
-const Target &vigor() {
-    return Target::get(Family::Vigor);
-}
-const Target &cpm1() {
-    return Target::get(Family::Cpm1);
-}
-const Target &pl110() {
-    return Target::get(Family::Pl110);
-}
+using rung::testing::cpm1;
+using rung::testing::pl110;
+using rung::testing::vigor;
+using rung::testing::vpc;
 
 int areaIndex(const Target &t, const char *key) {
     for (int i = 0; i < static_cast<int>(t.areas.size()); ++i)

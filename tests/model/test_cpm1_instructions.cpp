@@ -9,6 +9,7 @@
 #include "model/listing/il.h"
 #include "model/listing/structure.h"
 #include "model/target/word_text.h"
+#include "tests/targets.h"
 
 #include <gtest/gtest.h>
 
@@ -16,20 +17,18 @@ using namespace rung::model;
 
 namespace {
 
-const Target &cpm1() {
-    return Target::get(Family::Cpm1);
-}
+using rung::testing::cpm1;
 
 QString text(const char *semicolonSeparated) {
     return QString::fromLatin1(semicolonSeparated).replace(QLatin1Char(';'), QLatin1Char('\n'));
 }
 
-ParseResult parse(const char *listing) {
+ParseResult parseCpm1(const char *listing) {
     return parseInstructionList(cpm1(), text(listing));
 }
 
 std::vector<Diagnostic> check(const char *listing) {
-    const ParseResult parsed = parse(listing);
+    const ParseResult parsed = parseCpm1(listing);
     EXPECT_TRUE(parsed.ok()) << (parsed.errors.empty() ? ""
                                                        : parsed.errors[0].message.toStdString());
     return checkList(parsed.list);
@@ -105,7 +104,7 @@ TEST(Cpm1Instructions, ListingRoundTripsEveryNewForm) {
                           "LD 000.07;SNXT(09) LR00.00;STEP(08) LR00.00;LD 000.08;OUT 010.00;"
                           "LD 000.09;SNXT(09) LR00.01;STEP(08);SBN(92) 05;LD 253.13;"
                           "OUT 010.01;RET(93);END(01)";
-    const ParseResult p = parse(listing);
+    const ParseResult p = parseCpm1(listing);
     ASSERT_TRUE(p.ok()) << p.errors.front().line << ": " << p.errors.front().message.toStdString();
     const QString printed = printInstructionList(p.list);
     EXPECT_TRUE(printed.contains(QStringLiteral("@MOV(21) #0012 DM 0000")))
@@ -124,9 +123,9 @@ TEST(Cpm1Instructions, ListingRoundTripsEveryNewForm) {
 // Seed 002 3.5: "Időrelék/számlálók TC - terület TC000-TC127": TC names the bank, so TC 005
 // is the counter CNT 005 when the program counts with it, the timer TIM 005 when it times.
 TEST(Cpm1Instructions, TcNamesTheTimerOrTheCounterTheProgramDefines) {
-    const ParseResult p = parse("LD 000.00;LD 000.01;CNT 005 #0003;LD TC 005;OUT 010.00;"
-                                "LD 000.02;TIM 006 #0010;LD TC006;OUT 010.01;"
-                                "LD 253.13;MOV(21) TC 005 DM 0000;END(01)");
+    const ParseResult p = parseCpm1("LD 000.00;LD 000.01;CNT 005 #0003;LD TC 005;OUT 010.00;"
+                                    "LD 000.02;TIM 006 #0010;LD TC006;OUT 010.01;"
+                                    "LD 253.13;MOV(21) TC 005 DM 0000;END(01)");
     ASSERT_TRUE(p.ok()) << p.errors.front().message.toStdString();
     const QString printed = printInstructionList(p.list);
     EXPECT_TRUE(printed.contains(QStringLiteral("LD CNT 005"))) << printed.toStdString();
@@ -137,17 +136,18 @@ TEST(Cpm1Instructions, TcNamesTheTimerOrTheCounterTheProgramDefines) {
     const ParseResult again = parseInstructionList(cpm1(), printed);
     ASSERT_TRUE(again.ok());
     EXPECT_TRUE(checkList(again.list).empty()) << all(checkList(again.list)).toStdString();
-    EXPECT_FALSE(parse("LD TC 128;OUT 010.00;END(01)").ok()); // beyond TC000..TC127
+    EXPECT_FALSE(parseCpm1("LD TC 128;OUT 010.00;END(01)").ok()); // beyond TC000..TC127
 }
 
 // W353 / seed 002: LR 00..15, bits LR 00.00..LR 15.15; seed 002 writes bits as LR0005 too.
 TEST(Cpm1Instructions, LinkRelaysAreChannelsWithBits) {
-    const ParseResult p = parse("LD LR 00.05;OUT LR1504;LD LR0005;MOV(21) LR 03 DM 0000;END(01)");
+    const ParseResult p =
+        parseCpm1("LD LR 00.05;OUT LR1504;LD LR0005;MOV(21) LR 03 DM 0000;END(01)");
     ASSERT_TRUE(p.ok()) << p.errors.front().message.toStdString();
     EXPECT_EQ(printInstructionList(p.list),
               QStringLiteral("LD LR00.05\nOUT LR15.04\nLD LR00.05\nMOV(21) LR03 DM 0000\n"
                              "END(01)\n"));
-    const ParseResult beyond = parse("LD LR16.00;OUT 010.00;END(01)");
+    const ParseResult beyond = parseCpm1("LD LR16.00;OUT 010.00;END(01)");
     ASSERT_FALSE(beyond.ok());
     EXPECT_TRUE(beyond.errors.front().message.contains(QStringLiteral("LR00..LR15")))
         << beyond.errors.front().message.toStdString();
@@ -207,8 +207,8 @@ TEST(Cpm1Instructions, FlagsAreReadOnlySystemBits) {
 // W353 "Subroutines" and "Step Instructions": the structure problems, by code (each with a
 // clean twin in tests/model/test_checks.cpp's table).
 TEST(Cpm1Instructions, SubroutinesPairByNumberAfterTheMainProgram) {
-    const ParseResult p = parse("LD 000.00;SBS(91) 01;LD 000.01;SBS(91) 02;SBN(92) 01;"
-                                "LD 253.13;OUT 010.00;RET(93);SBN(92) 02;RET(93);END(01)");
+    const ParseResult p = parseCpm1("LD 000.00;SBS(91) 01;LD 000.01;SBS(91) 02;SBN(92) 01;"
+                                    "LD 253.13;OUT 010.00;RET(93);SBN(92) 02;RET(93);END(01)");
     ASSERT_TRUE(p.ok());
     const BlockPairs pairs = pairBlocks(p.list);
     EXPECT_TRUE(pairs.problems.empty());
@@ -236,9 +236,9 @@ TEST(Cpm1Instructions, StructureProblemsAreNamedInTheFamilysWords) {
 // and STEP(08) stand at the rail. The ladder and back give the same listing.
 TEST(Cpm1Instructions, LadderAndBackKeepTheBoxes) {
     const ParseResult p =
-        parse("LD 000.00;LD 000.01;LD 000.02;SFT(10) 200 201;LD 000.03;@ADD(30) DM 0000 #0001 "
-              "DM 0000;LD 000.04;SNXT(09) LR00.00;STEP(08) LR00.00;LD 000.05;OUT 010.00;"
-              "STEP(08);LD 000.06;SBS(91) 00;SBN(92) 00;LD 253.13;OUT 010.01;RET(93);END(01)");
+        parseCpm1("LD 000.00;LD 000.01;LD 000.02;SFT(10) 200 201;LD 000.03;@ADD(30) DM 0000 #0001 "
+                  "DM 0000;LD 000.04;SNXT(09) LR00.00;STEP(08) LR00.00;LD 000.05;OUT 010.00;"
+                  "STEP(08);LD 000.06;SBS(91) 00;SBN(92) 00;LD 253.13;OUT 010.01;RET(93);END(01)");
     ASSERT_TRUE(p.ok()) << p.errors.front().message.toStdString();
     const ToLadderResult ladder = listToLadder(p.list);
     ASSERT_TRUE(ladder.ok()) << (ladder.problems.empty()
@@ -263,12 +263,12 @@ TEST(Cpm1Instructions, TemporaryRelaysMayBeDrivenInEveryRung) {
                           "00005 MOV(21) #0001 DM 0101;00006 LD TR 0;00007 AND NOT 25504;"
                           "00008 MOV(21) #0000 DM 0101;LD 000.03;OUT TR 0;AND 000.04;"
                           "OUT 010.00;LD TR 0;OUT 010.01;END(01)";
-    const ParseResult p = parse(listing);
+    const ParseResult p = parseCpm1(listing);
     ASSERT_TRUE(p.ok()) << p.errors.front().message.toStdString();
     EXPECT_TRUE(printInstructionList(p.list).startsWith(QStringLiteral("LD 000.02\nOUT TR 0\n")));
     EXPECT_TRUE(check(listing).empty()) << all(check(listing)).toStdString();
     EXPECT_NE(find(check("LD 000.00;OUT 010.00;LD 000.01;OUT 010.00;END(01)"), "DC001"), nullptr);
-    EXPECT_FALSE(parse("LD TR 8;OUT 010.00;END(01)").ok()); // TR 0..7
+    EXPECT_FALSE(parseCpm1("LD TR 8;OUT 010.00;END(01)").ok()); // TR 0..7
 }
 
 // The CPM1's words are BCD digits (its # constants, its timers' values, W353): the watch list

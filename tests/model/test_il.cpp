@@ -2,6 +2,7 @@
 // parse -> print -> parse identity, aliases, step numbers, and every error with its place.
 
 #include "model/listing/il.h"
+#include "tests/model/listing_test_util.h"
 
 #include <QDir>
 #include <QFile>
@@ -10,28 +11,19 @@
 #include <gtest/gtest.h>
 
 using namespace rung::model;
+using rung::testing::describeErrors;
+using rung::testing::parseListing;
 
 namespace {
-
-ParseResult parse(Family family, const QString &text) {
-    return parseInstructionList(Target::get(family), text);
-}
-
-std::string describe(const ParseResult &r) {
-    QString out;
-    for (const ParseError &e : r.errors)
-        out += QStringLiteral("%1:%2 %3\n").arg(e.line).arg(e.column).arg(e.message);
-    return out.toStdString();
-}
 
 // parse -> print -> parse gives the same instructions and comments, and printing is a
 // fixpoint (the canonical form prints to itself).
 void expectRoundTrip(Family family, const QString &text, const PrintOptions &options = {}) {
-    const ParseResult first = parse(family, text);
-    ASSERT_TRUE(first.ok()) << describe(first) << text.toStdString();
+    const ParseResult first = parseListing(family, text);
+    ASSERT_TRUE(first.ok()) << describeErrors(first) << text.toStdString();
     const QString printed = printInstructionList(first.list, options);
-    const ParseResult second = parse(family, printed);
-    ASSERT_TRUE(second.ok()) << describe(second) << printed.toStdString();
+    const ParseResult second = parseListing(family, printed);
+    ASSERT_TRUE(second.ok()) << describeErrors(second) << printed.toStdString();
     ASSERT_EQ(first.list.instructions.size(), second.list.instructions.size())
         << printed.toStdString();
     for (std::size_t i = 0; i < first.list.instructions.size(); ++i)
@@ -43,8 +35,8 @@ void expectRoundTrip(Family family, const QString &text, const PrintOptions &opt
 }
 
 QStringList printedLines(Family family, const QString &text) {
-    const ParseResult r = parse(family, text);
-    EXPECT_TRUE(r.ok()) << describe(r);
+    const ParseResult r = parseListing(family, text);
+    EXPECT_TRUE(r.ok()) << describeErrors(r);
     return printInstructionList(r.list, {.stepNumbers = false, .comments = false})
         .split(QLatin1Char('\n'), Qt::SkipEmptyParts);
 }
@@ -67,8 +59,8 @@ TEST(IlVpc, SeedListingsParseWithoutErrorsAndRoundTrip) {
 
 TEST(IlVpc, ConsoleLineWithStepNumberParses) {
     // Seed 000, RUN & MONITOR: "0002 LD  p01<p00".
-    const ParseResult r = parse(Family::Vpc, QStringLiteral("0002 LD  p01<p00"));
-    ASSERT_TRUE(r.ok()) << describe(r);
+    const ParseResult r = parseListing(Family::Vpc, QStringLiteral("0002 LD  p01<p00"));
+    ASSERT_TRUE(r.ok()) << describeErrors(r);
     ASSERT_EQ(r.list.instructions.size(), 1u);
     const Instruction &ins = r.list.instructions[0];
     EXPECT_EQ(ins.op(), Op::Load);
@@ -80,9 +72,9 @@ TEST(IlVpc, ConsoleLineWithStepNumberParses) {
 }
 
 TEST(IlVpc, SeedTransfersReadAsTransferWithDestinationFirst) {
-    const ParseResult r = parse(Family::Vpc, QStringLiteral("OUT p21,p12\nOUT p15+p17\n"
-                                                            "OUT p15-p17\nOUT* p21,p12"));
-    ASSERT_TRUE(r.ok()) << describe(r);
+    const ParseResult r = parseListing(Family::Vpc, QStringLiteral("OUT p21,p12\nOUT p15+p17\n"
+                                                                   "OUT p15-p17\nOUT* p21,p12"));
+    ASSERT_TRUE(r.ok()) << describeErrors(r);
     ASSERT_EQ(r.list.instructions.size(), 4u);
     const TransferOp expected[] = {TransferOp::Assign, TransferOp::Add, TransferOp::Subtract,
                                    TransferOp::Assign};
@@ -100,16 +92,16 @@ TEST(IlVpc, StarIsShortForNotAndPrintsCanonically) {
     EXPECT_EQ(printedLines(Family::Vpc, QStringLiteral("LD* p01<p00\nAND* i01\nOUT* o02\n"
                                                        "OUT* p21,p12")),
               (QStringList{"LD NOT p01<p00", "AND NOT i01", "OUT NOT o02", "OUT NOT p21,p12"}));
-    const ParseResult a = parse(Family::Vpc, QStringLiteral("LD* p01<p00"));
-    const ParseResult b = parse(Family::Vpc, QStringLiteral("ld not p01<p00"));
+    const ParseResult a = parseListing(Family::Vpc, QStringLiteral("LD* p01<p00"));
+    const ParseResult b = parseListing(Family::Vpc, QStringLiteral("ld not p01<p00"));
     ASSERT_TRUE(a.ok() && b.ok());
     EXPECT_TRUE(a.list.instructions[0].sameAs(b.list.instructions[0]));
 }
 
 TEST(IlVpc, FusedTimerAndCounterNumbers) {
-    const ParseResult r = parse(Family::Vpc, QStringLiteral("LD i00\nTIM00\nLD i01\nLD i02\n"
-                                                            "CNT05\nLD i03\nTIM31"));
-    ASSERT_TRUE(r.ok()) << describe(r);
+    const ParseResult r = parseListing(Family::Vpc, QStringLiteral("LD i00\nTIM00\nLD i01\nLD i02\n"
+                                                                   "CNT05\nLD i03\nTIM31"));
+    ASSERT_TRUE(r.ok()) << describeErrors(r);
     ASSERT_EQ(r.list.instructions.size(), 7u);
     EXPECT_EQ(r.list.instructions[1].op(), Op::Timer);
     EXPECT_EQ(r.list.instructions[4].op(), Op::Counter);
@@ -130,7 +122,7 @@ TEST(IlVpc, EveryInstructionOfTheFamilyRoundTrips) {
 }
 
 TEST(IlVpc, StepNumbersPrintedAsTheConsoleShowsThemAndReadBack) {
-    const ParseResult r = parse(Family::Vpc, QString::fromLatin1(kVpcSeedListings[0]));
+    const ParseResult r = parseListing(Family::Vpc, QString::fromLatin1(kVpcSeedListings[0]));
     ASSERT_TRUE(r.ok());
     const QString printed = printInstructionList(r.list, {.stepNumbers = true});
     EXPECT_TRUE(printed.startsWith(QStringLiteral("0000 LD p01>p02\n0001 AND NOT r02\n")))
@@ -141,15 +133,15 @@ TEST(IlVpc, StepNumbersPrintedAsTheConsoleShowsThemAndReadBack) {
 
 TEST(IlVpc, CompareTheTableDoesNotHaveIsAnErrorAtTheSymbol) {
     // VPC compares with = < > only (seed 000).
-    const ParseResult r = parse(Family::Vpc, QStringLiteral("LD p01<=p00"));
+    const ParseResult r = parseListing(Family::Vpc, QStringLiteral("LD p01<=p00"));
     ASSERT_EQ(r.errors.size(), 1u);
     EXPECT_EQ(r.errors[0].line, 1);
     EXPECT_EQ(r.errors[0].column, 7);
 }
 
 TEST(IlVpc, TransferWithoutSourceIsAnError) {
-    const ParseResult r = parse(Family::Vpc, QStringLiteral("LD i00\nOUT p21,"));
-    ASSERT_EQ(r.errors.size(), 1u) << describe(r);
+    const ParseResult r = parseListing(Family::Vpc, QStringLiteral("LD i00\nOUT p21,"));
+    ASSERT_EQ(r.errors.size(), 1u) << describeErrors(r);
     EXPECT_EQ(r.errors[0].line, 2);
     EXPECT_EQ(r.errors[0].column, 9);
 }
@@ -172,14 +164,15 @@ TEST(IlCpm1, SeedListingsParseWithoutErrorsAndRoundTrip) {
 
 TEST(IlCpm1, SeedJumpListingReportsOnlyTheLmeTypoWithJmeSuggested) {
     // Seed 002 prints "LME 0" for "JME 0"; the listing is otherwise valid.
-    const ParseResult r = parse(Family::Cpm1, QStringLiteral("LD      000.02\nAND     000.03\n"
-                                                             "JMP     0\nLD      000.04\n"
-                                                             "OUT     010.00\nLD      000.05\n"
-                                                             "OUT     010.01\nLME     0\n"));
-    ASSERT_EQ(r.errors.size(), 1u) << describe(r);
+    const ParseResult r =
+        parseListing(Family::Cpm1, QStringLiteral("LD      000.02\nAND     000.03\n"
+                                                  "JMP     0\nLD      000.04\n"
+                                                  "OUT     010.00\nLD      000.05\n"
+                                                  "OUT     010.01\nLME     0\n"));
+    ASSERT_EQ(r.errors.size(), 1u) << describeErrors(r);
     EXPECT_EQ(r.errors[0].line, 8);
     EXPECT_EQ(r.errors[0].column, 1);
-    EXPECT_TRUE(r.errors[0].message.contains(QStringLiteral("JME"))) << describe(r);
+    EXPECT_TRUE(r.errors[0].message.contains(QStringLiteral("JME"))) << describeErrors(r);
     EXPECT_EQ(r.list.instructions.size(), 7u);
     expectRoundTrip(Family::Cpm1,
                     QStringLiteral("LD 000.02\nAND 000.03\nJMP 0\nLD 000.04\nOUT 010.00\n"
@@ -188,30 +181,33 @@ TEST(IlCpm1, SeedJumpListingReportsOnlyTheLmeTypoWithJmeSuggested) {
 
 TEST(IlCpm1, FunctionCodeIsOptionalAndMustMatch) {
     const ParseResult a =
-        parse(Family::Cpm1, QStringLiteral("LD 000.00\nLD 000.01\nKEEP(11) 200.00\n"
-                                           "END(01)"));
-    const ParseResult b = parse(Family::Cpm1, QStringLiteral("LD 000.00\nLD 000.01\nkeep 200.00\n"
-                                                             "end"));
-    ASSERT_TRUE(a.ok()) << describe(a);
-    ASSERT_TRUE(b.ok()) << describe(b);
+        parseListing(Family::Cpm1, QStringLiteral("LD 000.00\nLD 000.01\nKEEP(11) 200.00\n"
+                                                  "END(01)"));
+    const ParseResult b =
+        parseListing(Family::Cpm1, QStringLiteral("LD 000.00\nLD 000.01\nkeep 200.00\n"
+                                                  "end"));
+    ASSERT_TRUE(a.ok()) << describeErrors(a);
+    ASSERT_TRUE(b.ok()) << describeErrors(b);
     ASSERT_EQ(a.list.instructions.size(), b.list.instructions.size());
     for (std::size_t i = 0; i < a.list.instructions.size(); ++i)
         EXPECT_TRUE(a.list.instructions[i].sameAs(b.list.instructions[i]));
     EXPECT_EQ(a.list.instructions[2].op(), Op::Keep);
     EXPECT_EQ(a.list.instructions[3].op(), Op::End);
 
-    const ParseResult wrong = parse(Family::Cpm1, QStringLiteral("LD 000.00\nKEEP(12) 200.00"));
+    const ParseResult wrong =
+        parseListing(Family::Cpm1, QStringLiteral("LD 000.00\nKEEP(12) 200.00"));
     ASSERT_EQ(wrong.errors.size(), 1u);
     EXPECT_EQ(wrong.errors[0].line, 2);
     EXPECT_EQ(wrong.errors[0].column, 1);
 }
 
 TEST(IlCpm1, TimersCountersAndTheirContacts) {
-    const ParseResult r = parse(Family::Cpm1, QStringLiteral("LD 000.00\nTIM 000 #0150\n"
-                                                             "LD TIM 000\nOUT 010.00\n"
-                                                             "LD 000.01\nLD 000.02\nCNT 001 #0005\n"
-                                                             "LD 000.03\nTIMH(15) 002 HR01\n"));
-    ASSERT_TRUE(r.ok()) << describe(r);
+    const ParseResult r =
+        parseListing(Family::Cpm1, QStringLiteral("LD 000.00\nTIM 000 #0150\n"
+                                                  "LD TIM 000\nOUT 010.00\n"
+                                                  "LD 000.01\nLD 000.02\nCNT 001 #0005\n"
+                                                  "LD 000.03\nTIMH(15) 002 HR01\n"));
+    ASSERT_TRUE(r.ok()) << describeErrors(r);
     ASSERT_EQ(r.list.instructions.size(), 9u);
     const Instruction &tim = r.list.instructions[1];
     EXPECT_EQ(tim.op(), Op::Timer);
@@ -240,8 +236,8 @@ TEST(IlCpm1, EveryInstructionOfTheFamilyRoundTrips) {
 }
 
 TEST(IlCpm1, ConstantWithANonDigitIsAnErrorAtTheCharacter) {
-    const ParseResult r = parse(Family::Cpm1, QStringLiteral("LD 000.00\nTIM 000 #01X0"));
-    ASSERT_EQ(r.errors.size(), 1u) << describe(r);
+    const ParseResult r = parseListing(Family::Cpm1, QStringLiteral("LD 000.00\nTIM 000 #01X0"));
+    ASSERT_EQ(r.errors.size(), 1u) << describeErrors(r);
     EXPECT_EQ(r.errors[0].line, 2);
     EXPECT_EQ(r.errors[0].column, 12);
 }
@@ -252,8 +248,8 @@ const char *const kExecutionOrder = "LD X0\nOR M0\nAND X1\nLD X3\nAND M1\nORB\nL
                                     "LD T0\nAND M3\nORB\nANB\nOUT Y1\nTMR T0 K10\n";
 
 TEST(IlVigor, ExecutionOrderProgramParsesAndRoundTrips) {
-    const ParseResult r = parse(Family::Vigor, QString::fromLatin1(kExecutionOrder));
-    ASSERT_TRUE(r.ok()) << describe(r);
+    const ParseResult r = parseListing(Family::Vigor, QString::fromLatin1(kExecutionOrder));
+    ASSERT_TRUE(r.ok()) << describeErrors(r);
     ASSERT_EQ(r.list.instructions.size(), 14u);
     EXPECT_EQ(r.list.instructions[5].op(), Op::OrBlock);
     EXPECT_EQ(r.list.instructions[11].op(), Op::AndBlock);
@@ -265,13 +261,13 @@ TEST(IlVigor, ExecutionOrderProgramParsesAndRoundTrips) {
 
 TEST(IlVigor, SeedTabulatedListingWithStepNumbersParses) {
     // Seed 004, 1.5.1, as printed (tabs, step numbers on some lines only).
-    const ParseResult r =
-        parse(Family::Vigor,
-              QStringLiteral("1\tLD\tX0\t\n2\tOR\tM0\t\n3\tAND\tX1\t\n4\tLD\tX3\t\n\tAND\tM1\t\n"
-                             "\tORB\t\t\n5\tLD\tY1\t\n\tAND\tX4\t\n6\tLD\tT0\t\n\tAND\tM3\t\n"
-                             "\tORB\t\t\n7\tANB\t\t\n8\tOUT\tY1\t\n\tTMR\tT0 K10\t\n"));
-    ASSERT_TRUE(r.ok()) << describe(r);
-    const ParseResult clean = parse(Family::Vigor, QString::fromLatin1(kExecutionOrder));
+    const ParseResult r = parseListing(
+        Family::Vigor,
+        QStringLiteral("1\tLD\tX0\t\n2\tOR\tM0\t\n3\tAND\tX1\t\n4\tLD\tX3\t\n\tAND\tM1\t\n"
+                       "\tORB\t\t\n5\tLD\tY1\t\n\tAND\tX4\t\n6\tLD\tT0\t\n\tAND\tM3\t\n"
+                       "\tORB\t\t\n7\tANB\t\t\n8\tOUT\tY1\t\n\tTMR\tT0 K10\t\n"));
+    ASSERT_TRUE(r.ok()) << describeErrors(r);
+    const ParseResult clean = parseListing(Family::Vigor, QString::fromLatin1(kExecutionOrder));
     ASSERT_EQ(r.list.instructions.size(), clean.list.instructions.size());
     for (std::size_t i = 0; i < clean.list.instructions.size(); ++i)
         EXPECT_TRUE(r.list.instructions[i].sameAs(clean.list.instructions[i]));
@@ -298,8 +294,9 @@ TEST(IlVigor, EveryInstructionOfTheFamilyRoundTrips) {
 }
 
 TEST(IlVigor, ConstantsDecimalAndHexadecimal) {
-    const ParseResult r = parse(Family::Vigor, QStringLiteral("LD M9000\nMOV K10 D0\nMOV H1F D1"));
-    ASSERT_TRUE(r.ok()) << describe(r);
+    const ParseResult r =
+        parseListing(Family::Vigor, QStringLiteral("LD M9000\nMOV K10 D0\nMOV H1F D1"));
+    ASSERT_TRUE(r.ok()) << describeErrors(r);
     EXPECT_EQ(r.list.instructions[1].operands.at(0).constant.value, 10);
     EXPECT_EQ(r.list.instructions[2].operands.at(0).constant.value, 31);
     const Target &vigor = Target::get(Family::Vigor);
@@ -307,17 +304,18 @@ TEST(IlVigor, ConstantsDecimalAndHexadecimal) {
 }
 
 TEST(IlVigor, OperandsMayBeSeparatedByCommas) {
-    const ParseResult a = parse(Family::Vigor, QStringLiteral("MOV K10,D0"));
-    const ParseResult b = parse(Family::Vigor, QStringLiteral("MOV K10 D0"));
-    ASSERT_TRUE(a.ok()) << describe(a);
+    const ParseResult a = parseListing(Family::Vigor, QStringLiteral("MOV K10,D0"));
+    const ParseResult b = parseListing(Family::Vigor, QStringLiteral("MOV K10 D0"));
+    ASSERT_TRUE(a.ok()) << describeErrors(a);
     EXPECT_TRUE(a.list.instructions.at(0).sameAs(b.list.instructions.at(0)));
 }
 
 TEST(IlVigor, StepSizesFollowTheTable) {
     const Target &vigor = Target::get(Family::Vigor);
-    const ParseResult r = parse(Family::Vigor, QStringLiteral("LD X0\nTMR T0 K10\nCNT C0 K3\n"
-                                                              "CNT C200 K10\nMOV K10 D0\nEND"));
-    ASSERT_TRUE(r.ok()) << describe(r);
+    const ParseResult r =
+        parseListing(Family::Vigor, QStringLiteral("LD X0\nTMR T0 K10\nCNT C0 K3\n"
+                                                   "CNT C200 K10\nMOV K10 D0\nEND"));
+    ASSERT_TRUE(r.ok()) << describeErrors(r);
     const auto &ins = r.list.instructions;
     EXPECT_EQ(instructionSteps(vigor, ins[0]), 1);
     EXPECT_EQ(instructionSteps(vigor, ins[1]), 3);
@@ -338,7 +336,8 @@ TEST(IlVigor, StepSizesFollowTheTable) {
 
 TEST(IlVpc, EveryInstructionIsOneLine) {
     const Target &vpc = Target::get(Family::Vpc);
-    const ParseResult r = parse(Family::Vpc, QStringLiteral("LD i00\nTIM00\nOUT p00+p01\nEND"));
+    const ParseResult r =
+        parseListing(Family::Vpc, QStringLiteral("LD i00\nTIM00\nOUT p00+p01\nEND"));
     ASSERT_TRUE(r.ok());
     for (const Instruction &i : r.list.instructions)
         EXPECT_EQ(instructionSteps(vpc, i), 1);
@@ -346,8 +345,8 @@ TEST(IlVpc, EveryInstructionIsOneLine) {
 }
 
 TEST(IlVigor, OctalInputOutOfRangeIsReportedAtItsColumn) {
-    const ParseResult r = parse(Family::Vigor, QStringLiteral("LD X0\nAND  X8\nOUT Y0"));
-    ASSERT_EQ(r.errors.size(), 1u) << describe(r);
+    const ParseResult r = parseListing(Family::Vigor, QStringLiteral("LD X0\nAND  X8\nOUT Y0"));
+    ASSERT_EQ(r.errors.size(), 1u) << describeErrors(r);
     EXPECT_EQ(r.errors[0].line, 2);
     EXPECT_GE(r.errors[0].column, 6);
     EXPECT_LE(r.errors[0].column, 7);
@@ -365,20 +364,20 @@ TEST(IlPl110, ListingOfEveryElementKindRoundTrips) {
 }
 
 TEST(IlPl110, WordSpellingsOfTheManualAreAccepted) {
-    const ParseResult a = parse(Family::Pl110, QStringLiteral("LD SM0.0\nMOV VW30 V31"));
-    const ParseResult b = parse(Family::Pl110, QStringLiteral("LD SM0.0\nMOV V30 V31"));
-    ASSERT_TRUE(a.ok()) << describe(a);
-    ASSERT_TRUE(b.ok()) << describe(b);
+    const ParseResult a = parseListing(Family::Pl110, QStringLiteral("LD SM0.0\nMOV VW30 V31"));
+    const ParseResult b = parseListing(Family::Pl110, QStringLiteral("LD SM0.0\nMOV V30 V31"));
+    ASSERT_TRUE(a.ok()) << describeErrors(a);
+    ASSERT_TRUE(b.ok()) << describeErrors(b);
     EXPECT_TRUE(a.list.instructions[1].sameAs(b.list.instructions[1]));
 }
 
 // ---- Listing text: comments, blanks, case, tabs -------------------------------------------
 
 TEST(IlText, CommentsBlankLinesCaseAndTabs) {
-    const ParseResult r =
-        parse(Family::Vigor, QStringLiteral("; start / stop latch\n\n  ld\tX0   // start\n"
-                                            "\tOr Y0\r\nani X1\n;  coil\nOUT\tY0\n\n; the end\n"));
-    ASSERT_TRUE(r.ok()) << describe(r);
+    const ParseResult r = parseListing(
+        Family::Vigor, QStringLiteral("; start / stop latch\n\n  ld\tX0   // start\n"
+                                      "\tOr Y0\r\nani X1\n;  coil\nOUT\tY0\n\n; the end\n"));
+    ASSERT_TRUE(r.ok()) << describeErrors(r);
     ASSERT_EQ(r.list.instructions.size(), 4u);
     EXPECT_EQ(r.list.instructions[0].line, 3);
     EXPECT_EQ(r.list.instructions[0].column, 3);
@@ -394,8 +393,8 @@ TEST(IlText, CommentsBlankLinesCaseAndTabs) {
 TEST(IlText, PrintKeepsLineAndTrailingComments) {
     const QString text = QStringLiteral("; latch\nLD X0 ; start button\nOR Y0\nANI X1\n"
                                         "OUT Y0\n; end of program\n");
-    const ParseResult r = parse(Family::Vigor, text);
-    ASSERT_TRUE(r.ok()) << describe(r);
+    const ParseResult r = parseListing(Family::Vigor, text);
+    ASSERT_TRUE(r.ok()) << describeErrors(r);
     EXPECT_EQ(printInstructionList(r.list), text);
     expectRoundTrip(Family::Vigor, text);
     EXPECT_EQ(printInstructionList(r.list, {.comments = false}),
@@ -403,16 +402,16 @@ TEST(IlText, PrintKeepsLineAndTrailingComments) {
 }
 
 TEST(IlText, StepNumberWithColonIsAccepted) {
-    const ParseResult r = parse(Family::Vpc, QStringLiteral("0000: LD i00\n0001: OUT o00"));
-    ASSERT_TRUE(r.ok()) << describe(r);
+    const ParseResult r = parseListing(Family::Vpc, QStringLiteral("0000: LD i00\n0001: OUT o00"));
+    ASSERT_TRUE(r.ok()) << describeErrors(r);
     ASSERT_EQ(r.list.instructions.size(), 2u);
     EXPECT_EQ(r.list.instructions[1].column, 7);
 }
 
 TEST(IlText, EmptyAndCommentOnlyInputs) {
-    EXPECT_TRUE(parse(Family::Vigor, QString()).list.instructions.empty());
-    EXPECT_TRUE(parse(Family::Vigor, QString()).ok());
-    const ParseResult r = parse(Family::Cpm1, QStringLiteral("\n\n; only a note\n\t\n"));
+    EXPECT_TRUE(parseListing(Family::Vigor, QString()).list.instructions.empty());
+    EXPECT_TRUE(parseListing(Family::Vigor, QString()).ok());
+    const ParseResult r = parseListing(Family::Cpm1, QStringLiteral("\n\n; only a note\n\t\n"));
     EXPECT_TRUE(r.ok());
     EXPECT_TRUE(r.list.instructions.empty());
     EXPECT_EQ(printInstructionList(r.list), QStringLiteral("; only a note\n"));

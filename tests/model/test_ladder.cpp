@@ -2,6 +2,7 @@
 // reverse-current analysis (model/ladder/reverse_current.h).
 
 #include "random_program.h"
+#include "tests/targets.h"
 
 #include "model/convert/convert.h"
 #include "model/ladder/ladder_text.h"
@@ -16,9 +17,7 @@ using namespace rung::model;
 
 namespace {
 
-const Target &vigor() {
-    return Target::get(Family::Vigor);
-}
+using rung::testing::vigor;
 
 Contact contactOf(const char *device) {
     Contact c;

@@ -5,6 +5,7 @@
 #include "model/convert/convert.h"
 #include "model/ladder/ladder_text.h"
 #include "model/ladder/reverse_current.h"
+#include "tests/targets.h"
 
 #include <gtest/gtest.h>
 
@@ -16,15 +17,13 @@ using namespace rung::model;
 
 namespace {
 
-const Target &vigor() {
-    return Target::get(Family::Vigor);
-}
+using rung::testing::vigor;
 
 Address addr(const char *name) {
     return std::get<Address>(parseAddress(vigor(), QString::fromLatin1(name)));
 }
 
-InstructionList parse(const char *text) {
+InstructionList vigorProgram(const char *text) {
     ParseResult r = parseInstructionList(vigor(), QString::fromLatin1(text));
     EXPECT_TRUE(r.ok()) << text;
     return r.list;
@@ -65,8 +64,9 @@ LadderProgram ladderFile(const char *name) {
 
 TEST(Logic, ExecutionOrderExampleComputesTheBlocksOfTheManual) {
     // ladder-rules.md, seed 004 1.5.1, verbatim.
-    const InstructionList list = parse("LD X0\nOR M0\nAND X1\nLD X3\nAND M1\nORB\nLD Y1\nAND X4\n"
-                                       "LD T0\nAND M3\nORB\nANB\nOUT Y1\nTMR T0 K10\n");
+    const InstructionList list =
+        vigorProgram("LD X0\nOR M0\nAND X1\nLD X3\nAND M1\nORB\nLD Y1\nAND X4\n"
+                     "LD T0\nAND M3\nORB\nANB\nOUT Y1\nTMR T0 K10\n");
     const LadderProgram ladder = listToLadder(list).ladder;
     const auto names = {"X0", "M0", "X1", "X3", "M1", "Y1", "X4", "T0", "M3"};
     for (unsigned k = 0; k < 512; ++k) {
@@ -81,8 +81,8 @@ TEST(Logic, ExecutionOrderExampleComputesTheBlocksOfTheManual) {
 }
 
 TEST(Logic, LaterWritesWinStopFirstAndStartFirst) {
-    const InstructionList stopFirst = parse("LD X0\nSET Y0\nLD X1\nRST Y0\n");
-    const InstructionList startFirst = parse("LD X1\nRST Y0\nLD X0\nSET Y0\n");
+    const InstructionList stopFirst = vigorProgram("LD X0\nSET Y0\nLD X1\nRST Y0\n");
+    const InstructionList startFirst = vigorProgram("LD X1\nRST Y0\nLD X0\nSET Y0\n");
     const Inputs both({"X0", "X1"}, 3);
     EXPECT_FALSE(out(evaluateList(stopFirst, both.reader()), "Y0"));
     EXPECT_TRUE(out(evaluateList(startFirst, both.reader()), "Y0"));
@@ -93,7 +93,7 @@ TEST(Logic, LaterWritesWinStopFirstAndStartFirst) {
 
 TEST(Logic, LaterContactsSeeEarlierOutputsOfTheSamePass) {
     // Y0 written by rung 1 is read by rung 2 in the same scan.
-    const InstructionList list = parse("LD X0\nOUT Y0\nLD Y0\nOUT Y1\n");
+    const InstructionList list = vigorProgram("LD X0\nOUT Y0\nLD Y0\nOUT Y1\n");
     const LadderProgram ladder = listToLadder(list).ladder;
     for (unsigned k = 0; k < 2; ++k) {
         const Inputs in({"X0"}, k);
@@ -105,7 +105,7 @@ TEST(Logic, LaterContactsSeeEarlierOutputsOfTheSamePass) {
 
 TEST(Logic, StackBranchesEachSeeTheSavedCondition) {
     const InstructionList list =
-        parse("LD X0\nMPS\nAND X1\nOUT Y0\nMRD\nANI X2\nOUT Y1\nMPP\nOUT Y2\n");
+        vigorProgram("LD X0\nMPS\nAND X1\nOUT Y0\nMRD\nANI X2\nOUT Y1\nMPP\nOUT Y2\n");
     const LadderProgram ladder = listToLadder(list).ladder;
     for (unsigned k = 0; k < 8; ++k) {
         const Inputs in({"X0", "X1", "X2"}, k);
@@ -145,7 +145,7 @@ TEST(Logic, PowerNeverFlowsRightToLeftThroughABridge) {
 // and an INV after another INV sees the first one's result.
 TEST(LadderEvaluator, AnInverterConductsWhenNoPowerReachesIt) {
     const InstructionList list =
-        parse("LD X0\nAND X1\nINV\nOUT Y0\nLD X0\nINV\nAND X2\nINV\nOUT Y1\nEND\n");
+        vigorProgram("LD X0\nAND X1\nINV\nOUT Y0\nLD X0\nINV\nAND X2\nINV\nOUT Y1\nEND\n");
     const ToLadderResult ladder = listToLadder(list);
     ASSERT_TRUE(ladder.ok());
     for (unsigned k = 0; k < 8; ++k) {

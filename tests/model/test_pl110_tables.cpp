@@ -7,6 +7,7 @@
 #include "model/listing/il.h"
 #include "model/target/address.h"
 #include "model/target/protocol_map.h"
+#include "tests/targets.h"
 
 #include <gtest/gtest.h>
 
@@ -14,9 +15,7 @@ using namespace rung::model;
 
 namespace {
 
-const Target &pl110() {
-    return Target::get(Family::Pl110);
-}
+using rung::testing::pl110;
 
 Address at(const char *text) {
     const auto a = parseAddress(pl110(), QString::fromLatin1(text));

@@ -1,6 +1,7 @@
 #include "model/listing/il.h"
 #include "model/target/address.h"
 #include "model/target/target.h"
+#include "tests/targets.h"
 
 #include <gtest/gtest.h>
 
@@ -16,18 +17,10 @@ using namespace rung::model;
 
 namespace {
 
-const Target &vpc() {
-    return Target::get(Family::Vpc);
-}
-const Target &vigor() {
-    return Target::get(Family::Vigor);
-}
-const Target &cpm1() {
-    return Target::get(Family::Cpm1);
-}
-const Target &pl110() {
-    return Target::get(Family::Pl110);
-}
+using rung::testing::cpm1;
+using rung::testing::pl110;
+using rung::testing::vigor;
+using rung::testing::vpc;
 
 const Area &areaOf(const Target &t, const char *device) {
     const auto r = parseAddress(t, QString::fromLatin1(device));

@@ -2,6 +2,7 @@
 
 #include "model/image/trigger.h"
 #include "model/target/address.h"
+#include "tests/targets.h"
 
 #include <gtest/gtest.h>
 
@@ -9,9 +10,7 @@ using namespace rung::model;
 
 namespace {
 
-const Target &vigor() {
-    return Target::get(Family::Vigor);
-}
+using rung::testing::vigor;
 
 Trigger parsed(const Target &t, const char *text) {
     const auto r = parseTrigger(t, QString::fromUtf8(text));

@@ -8,6 +8,7 @@
 #include "model/convert/convert.h"
 #include "model/ladder/ladder_text.h"
 #include "model/listing/il.h"
+#include "tests/targets.h"
 
 #include <gtest/gtest.h>
 
@@ -17,11 +18,9 @@ using namespace rung::model;
 
 namespace {
 
-const Target &vigor() {
-    return Target::get(Family::Vigor);
-}
+using rung::testing::vigor;
 
-ParseResult parse(const char *text) {
+ParseResult parseVigor(const char *text) {
     return parseInstructionList(vigor(), QString::fromLatin1(text));
 }
 
@@ -45,7 +44,7 @@ QString operandError(const char *text) {
 }
 
 std::vector<Diagnostic> check(const char *text) {
-    const ParseResult r = parse(text);
+    const ParseResult r = parseVigor(text);
     EXPECT_TRUE(r.ok()) << errors(r);
     return checkList(r.list);
 }
@@ -135,14 +134,14 @@ TEST(VigorOperands, ListingsRoundTripWithDigitsAndIndexes) {
                        "LD X0\n"
                        "INC K1Y0\n"
                        "END\n";
-    const ParseResult r = parse(text);
+    const ParseResult r = parseVigor(text);
     ASSERT_TRUE(r.ok()) << errors(r);
     const QString printed = printInstructionList(r.list);
     EXPECT_EQ(printed, QString::fromLatin1(text));
     // Seed 004's spellings read as the same program.
     const ParseResult wplsoft =
-        parse("LD= K4M0 K10F0\nMOV K4X0 D0E0\nLD X1\nAND<> D5F7 K2Y10\nCMP K1M20 K5 M10\n"
-              "LD X2\nADD K4M0E1 D1 K2Y0\nLD X3\nTMR T0 D10E2\nLD X0\nINC K1Y0\nEND\n");
+        parseVigor("LD= K4M0 K10F0\nMOV K4X0 D0E0\nLD X1\nAND<> D5F7 K2Y10\nCMP K1M20 K5 M10\n"
+                   "LD X2\nADD K4M0E1 D1 K2Y0\nLD X3\nTMR T0 D10E2\nLD X0\nINC K1Y0\nEND\n");
     ASSERT_TRUE(wplsoft.ok()) << errors(wplsoft);
     EXPECT_EQ(printInstructionList(wplsoft.list), printed);
     for (const Diagnostic &d : checkList(r.list))
@@ -150,21 +149,21 @@ TEST(VigorOperands, ListingsRoundTripWithDigitsAndIndexes) {
 }
 
 TEST(VigorOperands, OnlyWordSlotsTakeThem) {
-    ParseResult r = parse("LD K1X0\nOUT Y0\nEND");
+    ParseResult r = parseVigor("LD K1X0\nOUT Y0\nEND");
     ASSERT_EQ(r.errors.size(), 1u);
     EXPECT_EQ(r.errors[0].column, 4);
     EXPECT_TRUE(r.errors[0].message.contains(QLatin1String("is a word (4 bits)")));
-    r = parse("LD X0\nOUT M0E0\nEND");
+    r = parseVigor("LD X0\nOUT M0E0\nEND");
     ASSERT_EQ(r.errors.size(), 1u);
-    r = parse("LD X0\nOUT K1Y0\nEND");
+    r = parseVigor("LD X0\nOUT K1Y0\nEND");
     ASSERT_EQ(r.errors.size(), 1u);
-    r = parse("LD X0\nTMR T0E0 K10\nEND");
+    r = parseVigor("LD X0\nTMR T0E0 K10\nEND");
     ASSERT_EQ(r.errors.size(), 1u);
     EXPECT_TRUE(r.errors[0].message.contains(QLatin1String("index register")));
-    r = parse("LD X0\nMOV D0 K10F0\nEND");
+    r = parseVigor("LD X0\nMOV D0 K10F0\nEND");
     ASSERT_EQ(r.errors.size(), 1u);
     EXPECT_TRUE(r.errors[0].message.contains(QLatin1String("constant")));
-    r = parse("LD X0\nBMOV D0 D10 K2F0\nEND"); // n is a plain constant
+    r = parseVigor("LD X0\nBMOV D0 D10 K2F0\nEND"); // n is a plain constant
     EXPECT_FALSE(r.ok());
     // K2F0 is the constant 2 indexed by F0 (V0), never a digit group of the word F0.
     const Operand k = operand("K2F0");
@@ -179,7 +178,7 @@ TEST(VigorOperands, ChecksReadTheGroupAsTheDevicesItWrites) {
     // K4M9000 writes M9000 (ON while the PLC runs) among its bits; K1M9004 does not.
     found = check("LD X0\nMOV K5 K1M9000\nEND");
     EXPECT_TRUE(has(found, "OP002", "the PLC drives it"));
-    EXPECT_FALSE(parse("LD X0\nMOV K5 K2M8996\nEND").ok()); // M8996.. does not exist
+    EXPECT_FALSE(parseVigor("LD X0\nMOV K5 K2M8996\nEND").ok()); // M8996.. does not exist
     found = check("LD X0\nMOV K5 K1M9004\nEND");
     EXPECT_FALSE(has(found, "OP002", ""));
     // A block move counts words: BMOV takes no digit group (OP005, as the simulator says).
@@ -206,7 +205,7 @@ TEST(VigorOperands, SeedOneProgramsWithDigitGroupsPassTheChecks) {
 }
 
 TEST(VigorOperands, TheLadderCarriesThemBothWays) {
-    const ParseResult r = parse("LD= K4M0 K10F0\nAND X1\nMOV K2X4 D0E0\nEND\n");
+    const ParseResult r = parseVigor("LD= K4M0 K10F0\nAND X1\nMOV K2X4 D0E0\nEND\n");
     ASSERT_TRUE(r.ok()) << errors(r);
     const ToLadderResult ladder = listToLadder(r.list);
     ASSERT_TRUE(ladder.ok());

@@ -69,4 +69,13 @@ struct RealTargetSim {
     std::unique_ptr<Engine> engine;
 };
 
+// A program of one family's table by the family's name: Pl110 s("LD I1\nOUT Q1\nEND").
+template <model::Family F> struct FamilySim : RealTargetSim {
+    explicit FamilySim(const char *text)
+        : RealTargetSim(F, text) {}
+};
+using Vigor = FamilySim<model::Family::Vigor>;
+using Cpm1 = FamilySim<model::Family::Cpm1>;
+using Pl110 = FamilySim<model::Family::Pl110>;
+
 } // namespace rung::simulator::test

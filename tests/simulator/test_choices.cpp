@@ -10,7 +10,7 @@ using namespace rung::simulator;
 
 namespace {
 
-using Sim = test::RealTargetSim;
+using RealSim = test::RealTargetSim;
 
 } // namespace
 
@@ -18,7 +18,7 @@ using Sim = test::RealTargetSim;
 // (the value does not change while both inputs are at 1): an edge on one input while the
 // other is held ON does not count, nor do edges arriving together.
 TEST(Cpm1ReversibleCounter, DoesNotCountWhileBothInputsAreOn) {
-    Sim s(model::Family::Cpm1, "LD 000.00\nLD 000.01\nLD 000.02\nCNTR(12) 003 #0005\nEND");
+    RealSim s(model::Family::Cpm1, "LD 000.00\nLD 000.01\nLD 000.02\nCNTR(12) 003 #0005\nEND");
     ASSERT_TRUE(s.parsed.ok());
     ASSERT_TRUE(s.result.ok());
     s.in("000.00", true);
@@ -52,7 +52,7 @@ TEST(Cpm1ReversibleCounter, DoesNotCountWhileBothInputsAreOn) {
 // transfer whose result leaves 0..9999 writes it modulo 10000 (as the four-digit register
 // would show it) and is a runtime diagnostic naming the step, reported once per step.
 TEST(VpcDecimalRange, TransferPast9999WrapsAndIsReportedWithItsLine) {
-    Sim s(model::Family::Vpc, "LD r88\nOUT p00+p01\nEND");
+    RealSim s(model::Family::Vpc, "LD r88\nOUT p00+p01\nEND");
     ASSERT_TRUE(s.result.ok());
     s.engine->writeWord(s.at("p00"), 9998);
     s.engine->writeWord(s.at("p01"), 1);
@@ -70,7 +70,7 @@ TEST(VpcDecimalRange, TransferPast9999WrapsAndIsReportedWithItsLine) {
 }
 
 TEST(VpcDecimalRange, SubtractionBelowZeroWrapsFrom9999) {
-    Sim s(model::Family::Vpc, "LD r88\nOUT t01-p01\nEND");
+    RealSim s(model::Family::Vpc, "LD r88\nOUT t01-p01\nEND");
     ASSERT_TRUE(s.result.ok());
     s.engine->writeSetValue(s.at("t01"), 3);
     s.engine->writeWord(s.at("p01"), 5);

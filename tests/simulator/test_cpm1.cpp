@@ -24,8 +24,8 @@ QString lines(const char *semicolonSeparated) {
     return QString::fromLatin1(semicolonSeparated).replace(QLatin1Char(';'), QLatin1Char('\n'));
 }
 
-struct Cpm1 : test::RealTargetSim {
-    explicit Cpm1(const char *text)
+struct Cpm1Sim : test::RealTargetSim {
+    explicit Cpm1Sim(const char *text)
         : RealTargetSim(model::Family::Cpm1, lines(text).toLatin1().constData()) {}
     void word(const char *name, std::int32_t value) { engine->writeWord(at(name), value); }
     std::uint32_t hex(const char *name) const {
@@ -55,7 +55,7 @@ std::string program(const char *body) {
 // set if the result is greater than 9999"; SUB(31): "If the result is negative, CY is set and
 // the 10's complement of the actual result is placed in R".
 TEST(Cpm1Arithmetic, BcdAddAndSubtractCarryAndComplement) {
-    Cpm1 add(program("LD 253.13;CLC(41);ADD(30) DM 0000 DM 0001 DM 0002").c_str());
+    Cpm1Sim add(program("LD 253.13;CLC(41);ADD(30) DM 0000 DM 0001 DM 0002").c_str());
     ASSERT_TRUE(add.result.ok());
     add.word("DM 0000", 0x9000);
     add.word("DM 0001", 0x1234);
@@ -65,7 +65,7 @@ TEST(Cpm1Arithmetic, BcdAddAndSubtractCarryAndComplement) {
     EXPECT_FALSE(add.bit("200.06"));
     EXPECT_FALSE(add.bit("255.04")) << "the flags are OFF after END";
 
-    Cpm1 sub(program("LD 253.13;CLC(41);SUB(31) DM 0000 DM 0001 DM 0002").c_str());
+    Cpm1Sim sub(program("LD 253.13;CLC(41);SUB(31) DM 0000 DM 0001 DM 0002").c_str());
     ASSERT_TRUE(sub.result.ok());
     sub.word("DM 0000", 0x0100);
     sub.word("DM 0001", 0x0250);
@@ -81,8 +81,8 @@ TEST(Cpm1Arithmetic, BcdAddAndSubtractCarryAndComplement) {
 
 // The carry goes into the next addition unless CLC(41) clears it; STC(40) sets it.
 TEST(Cpm1Arithmetic, CarryIsAddedUntilCleared) {
-    Cpm1 s("LD 253.13;STC(40);ADD(30) #0001 #0002 DM 0000;ADB(50) #0001 #0002 DM 0001;"
-           "CLC(41);ADD(30) #0001 #0002 DM 0002;END(01)");
+    Cpm1Sim s("LD 253.13;STC(40);ADD(30) #0001 #0002 DM 0000;ADB(50) #0001 #0002 DM 0001;"
+              "CLC(41);ADD(30) #0001 #0002 DM 0002;END(01)");
     ASSERT_TRUE(s.result.ok());
     s.engine->scan();
     EXPECT_EQ(s.hex("DM 0000"), 0x0004u); // 1 + 2 + CY
@@ -91,9 +91,9 @@ TEST(Cpm1Arithmetic, CarryIsAddedUntilCleared) {
 }
 
 TEST(Cpm1Arithmetic, BcdMultiplyAndDivideUseTwoWords) {
-    Cpm1 s(program("LD 253.13;MUL(32) DM 0000 DM 0001 DM 0010;DIV(33) DM 0000 DM 0001 "
-                   "DM 0020")
-               .c_str());
+    Cpm1Sim s(program("LD 253.13;MUL(32) DM 0000 DM 0001 DM 0010;DIV(33) DM 0000 DM 0001 "
+                      "DM 0020")
+                  .c_str());
     ASSERT_TRUE(s.result.ok());
     s.word("DM 0000", 0x9999);
     s.word("DM 0001", 0x0012);
@@ -108,7 +108,7 @@ TEST(Cpm1Arithmetic, BcdMultiplyAndDivideUseTwoWords) {
 // W353 appendix B: "instructions with a vertical arrow under the ER column are not executed
 // if ER is ON"; an operand that is not BCD turns ER ON.
 TEST(Cpm1Arithmetic, AnOperandThatIsNotBcdSetsErAndWritesNothing) {
-    Cpm1 s(program("LD 253.13;ADD(30) DM 0000 #0001 DM 0001").c_str());
+    Cpm1Sim s(program("LD 253.13;ADD(30) DM 0000 #0001 DM 0001").c_str());
     ASSERT_TRUE(s.result.ok());
     s.word("DM 0000", 0x12A4);
     s.word("DM 0001", 0x5555);
@@ -129,7 +129,7 @@ TEST(Cpm1Arithmetic, AnOperandThatIsNotBcdSetsErAndWritesNothing) {
 }
 
 TEST(Cpm1Arithmetic, DivisionByZeroSetsEr) {
-    Cpm1 s(program("LD 253.13;DIV(33) #0010 DM 0000 DM 0001").c_str());
+    Cpm1Sim s(program("LD 253.13;DIV(33) #0010 DM 0000 DM 0001").c_str());
     ASSERT_TRUE(s.result.ok());
     s.word("DM 0001", 0x7777);
     s.engine->scan();
@@ -140,9 +140,9 @@ TEST(Cpm1Arithmetic, DivisionByZeroSetsEr) {
 // W353 ADB(50): "CY will be set if the result is greater than FFFF"; SBB(51): "If the result
 // is negative, CY is set and the 2's complement of the actual result is placed in R".
 TEST(Cpm1Arithmetic, BinaryAddAndSubtract) {
-    Cpm1 s(program("LD 253.13;CLC(41);ADB(50) DM 0000 DM 0001 DM 0002;AND 255.04;OUT 201.00;"
-                   "LD 253.13;CLC(41);SBB(51) DM 0001 DM 0000 DM 0003")
-               .c_str());
+    Cpm1Sim s(program("LD 253.13;CLC(41);ADB(50) DM 0000 DM 0001 DM 0002;AND 255.04;OUT 201.00;"
+                      "LD 253.13;CLC(41);SBB(51) DM 0001 DM 0000 DM 0003")
+                  .c_str());
     ASSERT_TRUE(s.result.ok());
     s.word("DM 0000", 0xF000);
     s.word("DM 0001", 0x2000);
@@ -155,7 +155,7 @@ TEST(Cpm1Arithmetic, BinaryAddAndSubtract) {
 
 // W353 INC(38) / DEC(39): BCD, without a carry: 9999 + 1 = 0000 (EQ), 0000 - 1 = 9999.
 TEST(Cpm1Arithmetic, IncrementAndDecrementWrapInBcd) {
-    Cpm1 s(program("LD 253.13;INC(38) DM 0000;LD 253.13;DEC(39) DM 0001").c_str());
+    Cpm1Sim s(program("LD 253.13;INC(38) DM 0000;LD 253.13;DEC(39) DM 0001").c_str());
     ASSERT_TRUE(s.result.ok());
     s.word("DM 0000", 0x0998);
     s.word("DM 0001", 0x0001);
@@ -172,7 +172,7 @@ TEST(Cpm1Arithmetic, IncrementAndDecrementWrapInBcd) {
 
 // W353 CMP(20): GR, EQ and LE from two unsigned words; the flags are read right after it.
 TEST(Cpm1Compare, SetsGreaterEqualLess) {
-    Cpm1 s(program("LD 253.13;CMP(20) DM 0000 #0100").c_str());
+    Cpm1Sim s(program("LD 253.13;CMP(20) DM 0000 #0100").c_str());
     ASSERT_TRUE(s.result.ok());
     const auto flags = [&] {
         std::string f;
@@ -196,7 +196,7 @@ TEST(Cpm1Compare, SetsGreaterEqualLess) {
 
 // W353 MOV(21) / MVN(22): "EQ: ON when all zeros are transferred".
 TEST(Cpm1Moves, MoveAndMoveNotSetEq) {
-    Cpm1 s(program("LD 253.13;MOV(21) DM 0000 DM 0001;MVN(22) DM 0000 DM 0002").c_str());
+    Cpm1Sim s(program("LD 253.13;MOV(21) DM 0000 DM 0001;MVN(22) DM 0000 DM 0002").c_str());
     ASSERT_TRUE(s.result.ok());
     s.word("DM 0000", 0x00F0);
     s.engine->scan();
@@ -212,9 +212,9 @@ TEST(Cpm1Moves, MoveAndMoveNotSetEq) {
 // MOVD(83) S Di D: Di's digit 0 the first source digit, digit 1 the number of digits - 1,
 // digit 2 the first destination digit; digits wrap from the leftmost to the rightmost.
 TEST(Cpm1Moves, BitAndDigitMoves) {
-    Cpm1 s(program("LD 253.13;MOVB(82) DM 0000 #1203 DM 0001;MOVD(83) DM 0000 #0210 DM 0002;"
-                   "MOVD(83) DM 0000 #0033 DM 0003")
-               .c_str());
+    Cpm1Sim s(program("LD 253.13;MOVB(82) DM 0000 #1203 DM 0001;MOVD(83) DM 0000 #0210 DM 0002;"
+                      "MOVD(83) DM 0000 #0033 DM 0003")
+                  .c_str());
     ASSERT_TRUE(s.result.ok());
     s.word("DM 0000", 0x1238); // bit 03 is ON
     s.engine->scan();
@@ -223,7 +223,7 @@ TEST(Cpm1Moves, BitAndDigitMoves) {
     EXPECT_EQ(s.hex("DM 0003"), 0x2381u); // 4 digits from digit 3 on, wrapping
     EXPECT_TRUE(s.engine->runtimeErrors().empty()) << s.errors();
     // A bit designator read from a channel is checked when it runs: ER, nothing written.
-    Cpm1 c(program("LD 253.13;MOVB(82) DM 0000 DM 0005 DM 0001").c_str());
+    Cpm1Sim c(program("LD 253.13;MOVB(82) DM 0000 DM 0005 DM 0001").c_str());
     ASSERT_TRUE(c.result.ok());
     c.word("DM 0000", 0xFFFF);
     c.word("DM 0005", 0x0016);
@@ -235,7 +235,7 @@ TEST(Cpm1Moves, BitAndDigitMoves) {
 // W353 WSFT(16) St E: "shifts data between St and E in word units. Zeros are written into St
 // and the content of E is lost."
 TEST(Cpm1Shift, WordShiftMovesWordsUp) {
-    Cpm1 s("LD 000.00;@WSFT(16) DM 0000 DM 0002;END(01)");
+    Cpm1Sim s("LD 000.00;@WSFT(16) DM 0000 DM 0002;END(01)");
     ASSERT_TRUE(s.result.ok());
     s.word("DM 0000", 0x1111);
     s.word("DM 0001", 0x2222);
@@ -250,7 +250,7 @@ TEST(Cpm1Shift, WordShiftMovesWordsUp) {
 
 // SFT(10) over two words: bit 15 of St goes into bit 00 of the next word.
 TEST(Cpm1Shift, ShiftRegisterCarriesAcrossWords) {
-    Cpm1 s("LD 000.00;LD 000.01;LD 000.02;SFT(10) HR00 HR01;END(01)");
+    Cpm1Sim s("LD 000.00;LD 000.01;LD 000.02;SFT(10) HR00 HR01;END(01)");
     ASSERT_TRUE(s.result.ok());
     s.word("HR00", static_cast<std::int16_t>(0x8001));
     s.pulses("000.01", 1);
@@ -270,7 +270,7 @@ TEST(Cpm1Shift, ShiftRegisterCarriesAcrossWords) {
 // W353: "Differentiated instructions are executed only once when their execution condition
 // changes ... from OFF to ON".
 TEST(Cpm1Differentiated, RunsOnceOnTheRisingEdgeAndLeavesTheRungCondition) {
-    Cpm1 s("LD 000.00;@INC(38) DM 0000;INC(38) DM 0001;OUT 010.00;END(01)");
+    Cpm1Sim s("LD 000.00;@INC(38) DM 0000;INC(38) DM 0001;OUT 010.00;END(01)");
     ASSERT_TRUE(s.result.ok());
     s.in("000.00", true);
     for (int k = 0; k < 3; ++k)
@@ -287,7 +287,7 @@ TEST(Cpm1Differentiated, RunsOnceOnTheRisingEdgeAndLeavesTheRungCondition) {
 
 // W353 TIM: "ER: SV is not in BCD" - the timer's set value read from a channel.
 TEST(Cpm1Flags, TimerWithANonBcdSetValueSetsEr) {
-    Cpm1 s("LD 253.13;TIM 000 DM 0000;LD 253.13;AND 255.03;OUT 200.03;END(01)");
+    Cpm1Sim s("LD 253.13;TIM 000 DM 0000;LD 253.13;AND 255.03;OUT 200.03;END(01)");
     ASSERT_TRUE(s.result.ok());
     s.word("DM 0000", 0x00AB);
     s.engine->scan();
@@ -297,8 +297,8 @@ TEST(Cpm1Flags, TimerWithANonBcdSetValueSetsEr) {
 // W353 "Subroutines": SBS(91) nests up to 16 levels; a subroutine that calls itself goes
 // deeper and is stopped with a runtime error instead of hanging.
 TEST(Cpm1Subroutines, NestingDeeperThanSixteenIsARuntimeError) {
-    Cpm1 s("LD 253.13;SBS(91) 00;SBN(92) 00;LD 253.13;INC(38) DM 0000;LD 253.13;SBS(91) 00;"
-           "RET(93);END(01)");
+    Cpm1Sim s("LD 253.13;SBS(91) 00;SBN(92) 00;LD 253.13;INC(38) DM 0000;LD 253.13;SBS(91) 00;"
+              "RET(93);END(01)");
     ASSERT_TRUE(s.result.ok()) << (s.result.diagnostics.empty()
                                        ? ""
                                        : s.result.diagnostics[0].message.toStdString());
@@ -310,9 +310,9 @@ TEST(Cpm1Subroutines, NestingDeeperThanSixteenIsARuntimeError) {
 
 // A step's outputs go OFF and its timers reset once the step is over (W353); its KEEP keeps.
 TEST(Cpm1Steps, AnEndedStepResetsOutputsAndTimersKeepsKeep) {
-    Cpm1 s("LD 000.00;SNXT(09) LR10.00;STEP(08) LR10.00;LD 253.13;TIM 001 #0002;LD 253.13;"
-           "OUT 010.00;LD 253.13;LD 000.03;KEEP(11) 200.01;LD 000.01;SNXT(09) LR10.01;"
-           "STEP(08);END(01)");
+    Cpm1Sim s("LD 000.00;SNXT(09) LR10.00;STEP(08) LR10.00;LD 253.13;TIM 001 #0002;LD 253.13;"
+              "OUT 010.00;LD 253.13;LD 000.03;KEEP(11) 200.01;LD 000.01;SNXT(09) LR10.01;"
+              "STEP(08);END(01)");
     ASSERT_TRUE(s.result.ok());
     s.engine->setPeriodMs(100);
     s.pulses("000.00", 1);
@@ -339,7 +339,7 @@ TEST(Cpm1Operands, TheSimulatorRefusesWhatCheckReports) {
           "LD 000.00;LD 000.01;LD 000.02;SFT(10) DM 0000 DM 0001;END(01)",
           "LD 000.00;MUL(32) #0002 #0003 DM 1023;END(01)", "LD 000.00;SBS(91) 50;END(01)",
           "LD 000.00;SBS(91) 03;END(01)", "SBN(92) 01;LD 253.13;OUT 010.00;END(01)"}) {
-        Cpm1 s(listing);
+        Cpm1Sim s(listing);
         ASSERT_TRUE(s.parsed.ok()) << listing;
         EXPECT_FALSE(s.result.ok()) << listing;
         const auto checked = model::checkList(s.parsed.list);
@@ -356,7 +356,7 @@ TEST(Cpm1Operands, TheSimulatorRefusesWhatCheckReports) {
 // A trace speaks the CPM1's words: --set "DM 0000=#0012@0" writes the word 0012h and a column
 // hex:DM 0001 prints a word as its four digits.
 TEST(Cpm1Trace, WordsAreSetAndPrintedAsTheirDigits) {
-    Cpm1 s("LD 253.13;ADD(30) DM 0000 #0001 DM 0001;END(01)");
+    Cpm1Sim s("LD 253.13;ADD(30) DM 0000 #0001 DM 0001;END(01)");
     ASSERT_TRUE(s.result.ok());
     TraceRequest request;
     QString error;

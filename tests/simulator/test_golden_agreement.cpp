@@ -17,13 +17,13 @@ using namespace rung;
 
 namespace {
 
-QString dataDir() {
+QString goldenDir() {
     return QStringLiteral(RUNG_TEST_DATA_DIR "/sim");
 }
 
 std::vector<std::string> programs() {
     std::vector<std::string> names;
-    for (const QString &il : QDir(dataDir()).entryList({QStringLiteral("*.il")}, QDir::Files))
+    for (const QString &il : QDir(goldenDir()).entryList({QStringLiteral("*.il")}, QDir::Files))
         names.push_back(QFileInfo(il).completeBaseName().toStdString());
     return names;
 }
@@ -33,7 +33,7 @@ class GoldenAgreement : public testing::TestWithParam<std::string> {};
 } // namespace
 
 TEST_P(GoldenAgreement, CheckConvertAndSimulateTakeTheSameProgram) {
-    QFile f(dataDir() + QLatin1Char('/') + QString::fromStdString(GetParam()) +
+    QFile f(goldenDir() + QLatin1Char('/') + QString::fromStdString(GetParam()) +
             QStringLiteral(".il"));
     ASSERT_TRUE(f.open(QIODevice::ReadOnly | QIODevice::Text));
     const QString text = QString::fromUtf8(f.readAll());

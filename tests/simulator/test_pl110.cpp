@@ -11,10 +11,7 @@ using namespace rung::simulator;
 
 namespace {
 
-struct Pl110 : test::RealTargetSim {
-    explicit Pl110(const char *text)
-        : RealTargetSim(model::Family::Pl110, text) {}
-};
+using test::Pl110;
 
 } // namespace
 

@@ -12,15 +12,9 @@ using namespace rung::simulator;
 
 namespace {
 
-struct Pl110 : test::RealTargetSim {
-    explicit Pl110(const char *text)
-        : RealTargetSim(model::Family::Pl110, text) {}
-};
+using test::Pl110;
 
-struct Vigor : test::RealTargetSim {
-    explicit Vigor(const char *text)
-        : RealTargetSim(model::Family::Vigor, text) {}
-};
+using test::Vigor;
 
 } // namespace
 

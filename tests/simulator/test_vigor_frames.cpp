@@ -1,4 +1,4 @@
-// Vigor instructions that seed 001's communication programs use to build and check a frame
+// VigorFrames instructions that seed 001's communication programs use to build and check a frame
 // (issue 14): CCD, the check code (B-3-9 "Accumulate then take the last two digits (HEX)",
 // B-4-5), and DMOV, the 32-bit move that writes two characters a call.
 
@@ -12,8 +12,8 @@ using namespace rung::simulator;
 
 namespace {
 
-struct Vigor : test::RealTargetSim {
-    explicit Vigor(const char *text)
+struct VigorFrames : test::RealTargetSim {
+    explicit VigorFrames(const char *text)
         : RealTargetSim(model::Family::Vigor, text) {}
     void words(const char *first, std::initializer_list<int> values) {
         model::Address a = at(first);
@@ -38,7 +38,7 @@ std::vector<QString> codes(const std::vector<model::Diagnostic> &found) {
 // program does. D+1 holds the parity, bit k ON when an odd number of the bytes have bit k ON
 // (the FX / Delta rule): the XOR of the bytes, 76h.
 TEST(VigorCheckCode, TheSeedFrameSumsTo200hInEightBitMode) {
-    Vigor s("LD M9000\nOUT M9161\nLD M9000\nCCD D2 D102 K11\nEND");
+    VigorFrames s("LD M9000\nOUT M9161\nLD M9000\nCCD D2 D102 K11\nEND");
     ASSERT_TRUE(s.result.ok()) << s.result.diagnostics.front().message.toStdString();
     EXPECT_TRUE(s.result.diagnostics.empty()); // simulated: no SIM100
     EXPECT_TRUE(codes(model::checkList(s.parsed.list, {})).empty());
@@ -52,7 +52,7 @@ TEST(VigorCheckCode, TheSeedFrameSumsTo200hInEightBitMode) {
 // M9161 OFF: each word gives its low byte, then its high byte; n counts bytes (CCD D0 D100
 // K6 reads D0..D2). The bytes 100, 111, 120, 202, 123, 211 sum to 867, parity 11h.
 TEST(VigorCheckCode, SixteenBitModeTakesTheLowByteThenTheHighByte) {
-    Vigor s("LD X0\nCCD D0 D100 K6\nLD X0\nCCD D0 D110 K5\nEND");
+    VigorFrames s("LD X0\nCCD D0 D100 K6\nLD X0\nCCD D0 D110 K5\nEND");
     ASSERT_TRUE(s.result.ok());
     s.words("D0", {111 << 8 | 100, 202 << 8 | 120, 211 << 8 | 123});
     s.engine->scan();
@@ -67,7 +67,7 @@ TEST(VigorCheckCode, SixteenBitModeTakesTheLowByteThenTheHighByte) {
 
 // In 8-bit mode the high byte of each word is left out.
 TEST(VigorCheckCode, EightBitModeIgnoresTheHighBytes) {
-    Vigor s("LD M9000\nOUT M9161\nLD M9000\nCCD D0 D100 K2\nEND");
+    VigorFrames s("LD M9000\nOUT M9161\nLD M9000\nCCD D0 D100 K2\nEND");
     ASSERT_TRUE(s.result.ok());
     s.words("D0", {0x7F31, 0x1232});
     s.engine->scan();
@@ -78,7 +78,7 @@ TEST(VigorCheckCode, EightBitModeIgnoresTheHighBytes) {
 // A block that runs past the end of its area is the PLC's operation error: nothing written,
 // reported once with the line. The same block fits in 16-bit mode (two bytes a word).
 TEST(VigorCheckCode, ABlockPastTheEndOfItsAreaIsNotExecuted) {
-    Vigor s("LD X0\nOUT M9161\nLD M9000\nCCD D8190 D0 K4\nEND");
+    VigorFrames s("LD X0\nOUT M9161\nLD M9000\nCCD D8190 D0 K4\nEND");
     ASSERT_TRUE(s.result.ok());
     s.words("D8190", {0x0101, 0x0202});
     s.engine->writeWord(s.at("D0"), 7);
@@ -94,7 +94,7 @@ TEST(VigorCheckCode, ABlockPastTheEndOfItsAreaIsNotExecuted) {
 
 // An index register moves the block; it is measured where it lands.
 TEST(VigorCheckCode, AnIndexedSourceIsReadWhereTheIndexPutsIt) {
-    Vigor s("LD M9000\nOUT M9161\nLD M9000\nCCD D0Z0 D100 K2\nEND");
+    VigorFrames s("LD M9000\nOUT M9161\nLD M9000\nCCD D0Z0 D100 K2\nEND");
     ASSERT_TRUE(s.result.ok());
     s.words("D10", {0x41, 0x42});
     s.engine->writeWord(s.at("Z0"), 10);
@@ -109,7 +109,7 @@ TEST(VigorCheckCode, AnIndexedSourceIsReadWhereTheIndexPutsIt) {
 
 // n is 1..256 bytes (FX, Delta): check and the simulator refuse 0 alike, with one message.
 TEST(VigorCheckCode, CountOutsideOneTo256IsRefusedByCheckAndSimulator) {
-    Vigor s("LD M9000\nCCD D0 D100 K0\nEND");
+    VigorFrames s("LD M9000\nCCD D0 D100 K0\nEND");
     ASSERT_TRUE(s.parsed.ok());
     ASSERT_FALSE(s.result.ok());
     const auto found = model::checkList(s.parsed.list, {});
@@ -120,8 +120,8 @@ TEST(VigorCheckCode, CountOutsideOneTo256IsRefusedByCheckAndSimulator) {
 // Seed 001 B-4-5: "DMOV H00310035 D4" puts "5" (35h) into D4 and "1" (31h) into D5: the low
 // word first, as the FX family's 32-bit instructions store a pair.
 TEST(VigorDoubleMove, TheLowWordGoesFirst) {
-    Vigor s("LD M9000\nDMOV H00310035 D4\nLD M9000\nDMOV D4 D10\nLD M9000\nDMOV K-2 D20\n"
-            "LD M9000\nDMOV K100000 D30\nEND");
+    VigorFrames s("LD M9000\nDMOV H00310035 D4\nLD M9000\nDMOV D4 D10\nLD M9000\nDMOV K-2 D20\n"
+                  "LD M9000\nDMOV K100000 D30\nEND");
     ASSERT_TRUE(s.parsed.ok()) << s.parsed.errors.front().message.toStdString();
     ASSERT_TRUE(s.result.ok()) << s.result.diagnostics.front().message.toStdString();
     EXPECT_TRUE(s.result.diagnostics.empty());
@@ -139,7 +139,8 @@ TEST(VigorDoubleMove, TheLowWordGoesFirst) {
 
 // A 32-bit counter is one 32-bit value on either side; a register pair meets it half way.
 TEST(VigorDoubleMove, ThirtyTwoBitCountersAndIndexedPairs) {
-    Vigor s("LD M9000\nDMOV D0 C200\nLD M9000\nDMOV C200 D10\nLD M9000\nDMOV D0Z0 D20Z0\nEND");
+    VigorFrames s(
+        "LD M9000\nDMOV D0 C200\nLD M9000\nDMOV C200 D10\nLD M9000\nDMOV D0Z0 D20Z0\nEND");
     ASSERT_TRUE(s.result.ok()) << s.result.diagnostics.front().message.toStdString();
     s.words("D0", {0x2345, 0x0001, 0x1111, 0x2222});
     s.engine->writeWord(s.at("Z0"), 2);
@@ -153,7 +154,7 @@ TEST(VigorDoubleMove, ThirtyTwoBitCountersAndIndexedPairs) {
 
 // The pair must be whole: D8191 has no D8192 (check OP005 and the simulator alike).
 TEST(VigorDoubleMove, ADestinationPairPastItsAreaIsRefused) {
-    Vigor s("LD M9000\nDMOV K1 D8191\nEND");
+    VigorFrames s("LD M9000\nDMOV K1 D8191\nEND");
     ASSERT_TRUE(s.parsed.ok());
     EXPECT_FALSE(s.result.ok());
     EXPECT_EQ(codes(model::checkList(s.parsed.list, {})),
@@ -162,7 +163,7 @@ TEST(VigorDoubleMove, ADestinationPairPastItsAreaIsRefused) {
 
 // A digit group is 16 bits, not a pair: DMOV refuses it (OP005), as BMOV does.
 TEST(VigorDoubleMove, ADigitGroupIsNoPair) {
-    Vigor s("LD M9000\nDMOV K4M0 D0\nEND");
+    VigorFrames s("LD M9000\nDMOV K4M0 D0\nEND");
     ASSERT_TRUE(s.parsed.ok());
     EXPECT_FALSE(s.result.ok());
     EXPECT_EQ(codes(model::checkList(s.parsed.list, {})),

@@ -1,4 +1,4 @@
-// Digit-designated operands and index registers on the real Vigor table (issue 14; V/Z as
+// Digit-designated operands and index registers on the real VigorBits table (issue 14; V/Z as
 // seed 001's operand tables name them, E/F as seed 004's WPLSoft family does): what MOV, CMP, ADD
 // and the other word instructions read and write, the octal X/Y numbering inside a group, and the
 // operation error of an index that lands outside its areas.
@@ -12,8 +12,8 @@ using namespace rung::simulator;
 
 namespace {
 
-struct Vigor : test::RealTargetSim {
-    explicit Vigor(const char *text)
+struct VigorBits : test::RealTargetSim {
+    explicit VigorBits(const char *text)
         : RealTargetSim(model::Family::Vigor, text) {}
     std::string bitsOf(std::initializer_list<const char *> names) const {
         std::string s;
@@ -26,7 +26,7 @@ struct Vigor : test::RealTargetSim {
 } // namespace
 
 TEST(VigorDigitGroups, MovToK4Y0WritesSixteenOutputsCountingInOctal) {
-    Vigor s("LD M9000\nMOV H1234 K4Y0\nEND");
+    VigorBits s("LD M9000\nMOV H1234 K4Y0\nEND");
     ASSERT_TRUE(s.result.ok());
     ASSERT_TRUE(s.result.diagnostics.empty());
     s.engine->scan();
@@ -37,7 +37,7 @@ TEST(VigorDigitGroups, MovToK4Y0WritesSixteenOutputsCountingInOctal) {
 }
 
 TEST(VigorDigitGroups, K2X4ReadsX4ToX7ThenX10ToX13) {
-    Vigor s("LD M9000\nMOV K2X4 D0\nEND");
+    VigorBits s("LD M9000\nMOV K2X4 D0\nEND");
     ASSERT_TRUE(s.result.ok());
     s.in("X4", true);
     s.in("X13", true);
@@ -48,8 +48,8 @@ TEST(VigorDigitGroups, K2X4ReadsX4ToX7ThenX10ToX13) {
 }
 
 TEST(VigorDigitGroups, AShortGroupWritesItsBitsOnlyAndReadsUnsigned) {
-    Vigor s("LD M9000\nMOV K31 K1M20\nLD M9000\nMOV K1M20 D1\nLD M9000\nMOV K-1 K4M100\n"
-            "LD M9000\nMOV K4M100 D2\nLD M9000\nMOV K2M100 D3\nEND");
+    VigorBits s("LD M9000\nMOV K31 K1M20\nLD M9000\nMOV K1M20 D1\nLD M9000\nMOV K-1 K4M100\n"
+                "LD M9000\nMOV K4M100 D2\nLD M9000\nMOV K2M100 D3\nEND");
     ASSERT_TRUE(s.result.ok());
     s.engine->setBit(s.at("M24"), true);
     s.engine->scan();
@@ -60,10 +60,10 @@ TEST(VigorDigitGroups, AShortGroupWritesItsBitsOnlyAndReadsUnsigned) {
 }
 
 TEST(VigorDigitGroups, CmpAddIncAndCompareContactsWorkOnGroups) {
-    Vigor s("LD M9000\nCMP K1X0 K5 M10\n"
-            "LD X10\nADD K2M0 K3 K2M0\n"
-            "LD X11\nINC K1Y0\n"
-            "LD>= K2M0 K6\nOUT Y10\nEND");
+    VigorBits s("LD M9000\nCMP K1X0 K5 M10\n"
+                "LD X10\nADD K2M0 K3 K2M0\n"
+                "LD X11\nINC K1Y0\n"
+                "LD>= K2M0 K6\nOUT Y10\nEND");
     ASSERT_TRUE(s.result.ok());
     s.in("X0", true);
     s.in("X2", true); // K1X0 = 5
@@ -86,7 +86,7 @@ TEST(VigorDigitGroups, CmpAddIncAndCompareContactsWorkOnGroups) {
 }
 
 TEST(VigorDigitGroups, MulIntoAGroupKeepsTheLowBits) {
-    Vigor s("LD M9000\nMUL K300 K300 K4M0\nEND");
+    VigorBits s("LD M9000\nMUL K300 K300 K4M0\nEND");
     ASSERT_TRUE(s.result.ok());
     s.engine->scan();
     // 90000 = 15F90h: K4 keeps 5F90h, and no word follows a group.
@@ -98,7 +98,7 @@ TEST(VigorDigitGroups, MulIntoAGroupKeepsTheLowBits) {
 }
 
 TEST(VigorIndexRegisters, TheRegisterMovesTheOperandEachScan) {
-    Vigor s("LD M9000\nMOV K7 D0E0\nLD M9000\nMOV K10F0 D100\nLD M9000\nMOV D20Z0 D101\nEND");
+    VigorBits s("LD M9000\nMOV K7 D0E0\nLD M9000\nMOV K10F0 D100\nLD M9000\nMOV D20Z0 D101\nEND");
     ASSERT_TRUE(s.result.ok());
     s.engine->writeWord(s.at("E0"), 5);
     s.engine->writeWord(s.at("F0"), 3);
@@ -119,7 +119,7 @@ TEST(VigorIndexRegisters, TheRegisterMovesTheOperandEachScan) {
 
 TEST(VigorIndexRegisters, ProgramsSetTheirOwnIndex) {
     // A table walk: E0 counts 0..3, each scan D10E0 takes the scan's number.
-    Vigor s("LD M9000\nMOV Z0 D10Z0\nLD M9000\nINC Z0\nEND");
+    VigorBits s("LD M9000\nMOV Z0 D10Z0\nLD M9000\nINC Z0\nEND");
     ASSERT_TRUE(s.result.ok());
     s.engine->runScans(4);
     EXPECT_EQ(s.value("D10"), 0);
@@ -130,7 +130,7 @@ TEST(VigorIndexRegisters, ProgramsSetTheirOwnIndex) {
 }
 
 TEST(VigorIndexRegisters, IndexedGroupsAndTimerSetValues) {
-    Vigor s("LD M9000\nMOV K15 K1M0E1\nLD X0\nTMR T0 D0F1\nEND");
+    VigorBits s("LD M9000\nMOV K15 K1M0E1\nLD X0\nTMR T0 D0F1\nEND");
     ASSERT_TRUE(s.result.ok());
     s.engine->setPeriodMs(100);
     s.engine->writeWord(s.at("E1"), 4);
@@ -143,7 +143,7 @@ TEST(VigorIndexRegisters, IndexedGroupsAndTimerSetValues) {
 }
 
 TEST(VigorIndexRegisters, MulAndDivWriteTheWordAfterTheIndexedOne) {
-    Vigor s("LD M9000\nMUL K300 K300 D10E0\nLD M9000\nDIV K7 K2 D20E0\nEND");
+    VigorBits s("LD M9000\nMUL K300 K300 D10E0\nLD M9000\nDIV K7 K2 D20E0\nEND");
     ASSERT_TRUE(s.result.ok());
     s.engine->writeWord(s.at("E0"), 2);
     s.engine->scan();
@@ -156,7 +156,7 @@ TEST(VigorIndexRegisters, MulAndDivWriteTheWordAfterTheIndexedOne) {
 // The WPLSoft family: an index that takes a device outside its range is an operation error;
 // the instruction is not executed and the scan goes on.
 TEST(VigorIndexRegisters, AnIndexOutOfRangeIsAnOperationErrorAndWritesNothing) {
-    Vigor s("LD M9000\nMOV K7 D8190E0\nLD= D0E1 K0\nOUT Y0\nLDI Y1\nOUT Y1\nEND");
+    VigorBits s("LD M9000\nMOV K7 D8190E0\nLD= D0E1 K0\nOUT Y0\nLDI Y1\nOUT Y1\nEND");
     ASSERT_TRUE(s.result.ok());
     s.engine->writeWord(s.at("E0"), 5); // D8195: between D8191 and D9000
     s.engine->writeWord(s.at("E1"), -1);
@@ -179,7 +179,7 @@ TEST(VigorIndexRegisters, AnIndexOutOfRangeIsAnOperationErrorAndWritesNothing) {
 }
 
 TEST(VigorIndexRegisters, ABlockMoveMustLandInsideItsArea) {
-    Vigor s("LD M9000\nBMOV D0 D8180E0 K10\nEND");
+    VigorBits s("LD M9000\nBMOV D0 D8180E0 K10\nEND");
     ASSERT_TRUE(s.result.ok());
     s.engine->writeWord(s.at("D0"), 9);
     s.engine->scan();
@@ -191,7 +191,7 @@ TEST(VigorIndexRegisters, ABlockMoveMustLandInsideItsArea) {
 }
 
 TEST(VigorIndexRegisters, ForcedBitsOfAGroupKeepTheirValue) {
-    Vigor s("LD M9000\nMOV K0 K1Y0\nEND");
+    VigorBits s("LD M9000\nMOV K0 K1Y0\nEND");
     ASSERT_TRUE(s.result.ok());
     s.engine->force(s.at("Y1"), true);
     s.engine->scan();
@@ -201,7 +201,7 @@ TEST(VigorIndexRegisters, ForcedBitsOfAGroupKeepTheirValue) {
 // On the octal areas an index counts elements: K1X0Z0 with Z0 = 8 starts at X10 (the FX
 // family's X0Z with Z = 8).
 TEST(VigorIndexRegisters, AnIndexCountsElementsOnOctalAreas) {
-    Vigor s("LD M9000\nMOV K1X0Z0 D0\nLD M9000\nMOV K15 K1Y0Z0\nEND");
+    VigorBits s("LD M9000\nMOV K1X0Z0 D0\nLD M9000\nMOV K15 K1Y0Z0\nEND");
     ASSERT_TRUE(s.result.ok());
     s.engine->writeWord(s.at("Z0"), 8);
     s.in("X10", true);

@@ -11,15 +11,9 @@ using namespace rung::simulator;
 
 namespace {
 
-struct Vigor : test::RealTargetSim {
-    explicit Vigor(const char *text)
-        : RealTargetSim(model::Family::Vigor, text) {}
-};
+using test::Vigor;
 
-struct Cpm1 : test::RealTargetSim {
-    explicit Cpm1(const char *text)
-        : RealTargetSim(model::Family::Cpm1, text) {}
-};
+using test::Cpm1;
 
 } // namespace
 
