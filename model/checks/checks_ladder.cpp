@@ -157,6 +157,15 @@ std::vector<Diagnostic> checkLadder(const LadderProgram &ladder, const ToListing
         d.location.line = 0;
         d.location.column = 0;
         d.location.rung = rungOf(list.rungFirst, f.instruction);
+        // On the element the instruction came from (the list's origin map), so the ladder marks
+        // that cell and the list that instruction's line, not the rung's first line (its comment).
+        if (f.instruction >= 0 && static_cast<std::size_t>(f.instruction) < list.origin.size()) {
+            const CellOrigin &from = list.origin[static_cast<std::size_t>(f.instruction)];
+            if (from.rung == d.location.rung && from.row >= 0 && from.column >= 0) {
+                d.location.row = from.row;
+                d.location.cell = from.column;
+            }
+        }
         d.fix.reset();
         if (d.code == QLatin1String("EN001")) {
             // END is missing: a rung of END alone after the last one.

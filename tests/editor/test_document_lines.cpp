@@ -46,3 +46,26 @@ TEST(DocumentLines, RungLinesAreTheLinesTheListShows) {
         EXPECT_EQ(map.instructionAt(line) >= 0, !lines[line - 1].startsWith(QLatin1Char(';')))
             << line;
 }
+
+// A finding of the listing checks sits on the element its instruction came from: the list marks
+// that instruction's line, not the rung's first line, which is its comment (an OUT on an input
+// was marked on "; a comment" and placed at "rung 1" only).
+TEST(DocumentLines, AListingFindingIsOnItsInstructionsLineAndCell) {
+    editor::Document document;
+    document.reset(model::Target::get(model::Family::Vigor), QStringLiteral("VB"));
+    std::vector<model::Diagnostic> errors;
+    ASSERT_TRUE(document.setListing(QStringLiteral("; a comment\nLD X0\nOUT Y0\n"
+                                                   "; another\nLD X1\nAND X2\nOUT X3\nEND\n"),
+                                    &errors));
+    const QStringList lines = shownLines(document.listingText());
+    const auto lineOf = [&](const QString &text) { return lines.indexOf(text) + 1; };
+    const auto &all = document.diagnostics();
+    const auto op002 = std::find_if(all.begin(), all.end(), [](const model::Diagnostic &d) {
+        return d.code == QLatin1String("OP002");
+    });
+    ASSERT_NE(op002, all.end());
+    EXPECT_EQ(op002->location.rung, 1);
+    EXPECT_EQ(op002->location.row, 0);
+    EXPECT_EQ(op002->location.cell, document.ladder().rungs[1].columns) << "the output column";
+    EXPECT_EQ(document.lineOf(op002->location), lineOf(QStringLiteral("OUT X3")));
+}
