@@ -316,6 +316,8 @@ CompileResult Compiler::run() {
         if (m_resolve)
             s.flags |= kResolve;
         m_resolve = false;
+        if (s.flags & (kResolve | kDifferentiated))
+            m_program->specialSteps = true;
     }
     m_muted = false;
     resolveJumps();

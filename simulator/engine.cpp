@@ -79,10 +79,13 @@ void Engine::scan() {
     const auto start = std::chrono::steady_clock::now();
     const std::size_t n = m_program->steps.size();
     beginScan();
+    // The plain program's loop has no test for the rare steps at all (a test per step cost
+    // ~10% of a scan, docs/performance.md).
+    const bool special = m_program->specialSteps;
     if (m_record)
-        execute<true, false>(0, n);
+        special ? execute<true, false>(0, n) : execute<true, false, false>(0, n);
     else
-        execute<false, false>(0, n);
+        special ? execute<false, false>(0, n) : execute<false, false, false>(0, n);
     endScan();
     recordExecTime(std::chrono::duration_cast<std::chrono::nanoseconds>(
                        std::chrono::steady_clock::now() - start)

@@ -175,7 +175,9 @@ private:
     // Steps [from, to) (jumps may leave it early or late); returns the next step to run,
     // >= steps.size() once END ran. Resumable: the registers come from and go back to
     // m_regs; else they start empty (a whole scan) and stay in the function.
-    template <bool Record, bool Resumable> std::size_t execute(std::size_t from, std::size_t to);
+    // Special: the program may have kResolve / kDifferentiated steps (Program::specialSteps).
+    template <bool Record, bool Resumable, bool Special = true>
+    std::size_t execute(std::size_t from, std::size_t to);
     std::size_t runSegment(std::size_t from, std::size_t to);
     void startInsideScan();
     void completeInsideScan();

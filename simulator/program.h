@@ -240,6 +240,9 @@ struct Program {
     int maxPushDepth = 0;
     // VPC: bit writes land in a write image that becomes visible at END (docs/simulator.md).
     bool deferredBitWrites = false;
+    // Some step has kResolve or kDifferentiated: without one, a scan runs a loop that never
+    // tests for them (Engine::execute's Special).
+    bool specialSteps = false;
     std::int64_t timerMax = 0;   // a timer's current value saturates here (Limits::timerMax)
     std::int32_t counterMin = 0; // saturating up/down counters (Limits::counterMin / Max)
     std::int32_t counterMax = 0;
