@@ -22,12 +22,6 @@ using comms::ProtocolKind;
 using model::DeviceCommand;
 using model::ProtocolId;
 
-// Q1 follows I1, Q2 follows M1, V1 follows V0.
-constexpr const char *kPl110 = "; target: pl110\n"
-                               "LD I1\nOUT Q1\nLD M1\nOUT Q2\nLD SM0.0\nMOV V0 V1\nEND\n";
-// Y0 follows M0; D1 = D0 + 1.
-constexpr const char *kVigor = "; target: vigor\n"
-                               "LD M0\nOUT Y0\nLD M9000\nADD D0 K1 D1\nEND\n";
 // 010.00 follows HR 00.00, 010.01 follows the input 000.01; DM 0001 = DM 0000.
 constexpr const char *kCpm1 = "; target: cpm1\n"
                               "LD HR 00.00\nOUT 010.00\nLD 000.01\nOUT 010.01\n"
@@ -76,7 +70,8 @@ std::unique_ptr<comms::Transport> ptyTo(const VirtualPlcUnderTest &plc) {
 }
 
 TEST(DriverMeetsVirtualPlc, VigorComputerLinkOnAPty) {
-    VirtualPlcUnderTest plc(kVigor, {ProtocolId::VigorLink, comms::modbus::Framing::Rtu, 0}, false);
+    VirtualPlcUnderTest plc(kFollowerVigor, {ProtocolId::VigorLink, comms::modbus::Framing::Rtu, 0},
+                            false);
     ASSERT_TRUE(plc.ready());
     Master m("vigor", ProtocolKind::VigorLink, ptyTo(plc), 0);
     ASSERT_TRUE(m.driver);
@@ -94,7 +89,8 @@ TEST(DriverMeetsVirtualPlc, VigorComputerLinkOnAPty) {
 }
 
 TEST(DriverMeetsVirtualPlc, Pl110ModbusRtuOnAPtyWithRunAndStop) {
-    VirtualPlcUnderTest plc(kPl110, {ProtocolId::Modbus, comms::modbus::Framing::Rtu, 1}, false);
+    VirtualPlcUnderTest plc(kFollowerPl110, {ProtocolId::Modbus, comms::modbus::Framing::Rtu, 1},
+                            false);
     ASSERT_TRUE(plc.ready());
     Master m("pl110", ProtocolKind::ModbusRtu, ptyTo(plc), 1);
     ASSERT_TRUE(m.driver);
@@ -115,7 +111,8 @@ TEST(DriverMeetsVirtualPlc, Pl110ModbusRtuOnAPtyWithRunAndStop) {
 }
 
 TEST(DriverMeetsVirtualPlc, VigorCp2ModbusOverTcpLoopback) {
-    VirtualPlcUnderTest plc(kVigor, {ProtocolId::Modbus, comms::modbus::Framing::Tcp, 1}, true);
+    VirtualPlcUnderTest plc(kFollowerVigor, {ProtocolId::Modbus, comms::modbus::Framing::Tcp, 1},
+                            true);
     ASSERT_TRUE(plc.ready());
     Master m("vigor", ProtocolKind::ModbusTcp,
              std::make_unique<comms::TcpTransport>(QStringLiteral("127.0.0.1"), plc.port), 1);

@@ -16,12 +16,6 @@ namespace {
 using namespace comms;
 using model::ProtocolId;
 
-// V1 follows V0, Q1 follows I1 and Q2 follows M1.
-constexpr const char *kServedPl110 = "; target: pl110\n"
-                                     "LD I1\nOUT Q1\nLD M1\nOUT Q2\nLD SM0.0\nMOV V0 V1\nEND\n";
-// Y0 follows M0; D1 = D0 + 1.
-constexpr const char *kServedVigor = "; target: vigor\n"
-                                     "LD M0\nOUT Y0\nLD M9000\nADD D0 K1 D1\nEND\n";
 // 010.00 follows HR 00.00 (IR 000 is an input: the program's own); DM 0001 = DM 0000.
 constexpr const char *kServedCpm1 = "; target: cpm1\n"
                                     "LD HR 00.00\nOUT 010.00\nLD 253.13\nMOV(21) DM 0000 DM 0001\n"
@@ -71,7 +65,7 @@ struct ModbusMaster {
 };
 
 TEST(VirtualPlc, Pl110OverModbusRtuOnAPtyRunsWhatTheMasterWrites) {
-    VirtualPlcUnderTest v(kServedPl110, {ProtocolId::Modbus, modbus::Framing::Rtu, 1}, false);
+    VirtualPlcUnderTest v(kFollowerPl110, {ProtocolId::Modbus, modbus::Framing::Rtu, 1}, false);
     ASSERT_TRUE(v.ready());
     PtyTransport pty(v.path);
     QString error;
@@ -90,7 +84,7 @@ TEST(VirtualPlc, Pl110OverModbusRtuOnAPtyRunsWhatTheMasterWrites) {
 }
 
 TEST(VirtualPlc, Pl110RunBitStopsAndStartsTheScan) {
-    VirtualPlcUnderTest v(kServedPl110, {ProtocolId::Modbus, modbus::Framing::Tcp, 1}, true);
+    VirtualPlcUnderTest v(kFollowerPl110, {ProtocolId::Modbus, modbus::Framing::Tcp, 1}, true);
     ASSERT_TRUE(v.ready());
     TcpTransport tcp(QStringLiteral("127.0.0.1"), v.port);
     QString error;
@@ -111,7 +105,7 @@ TEST(VirtualPlc, Pl110RunBitStopsAndStartsTheScan) {
 
 TEST(VirtualPlc, VigorCp2ModbusTcpAndTheLinkOnAPty) {
     {
-        VirtualPlcUnderTest v(kServedVigor, {ProtocolId::Modbus, modbus::Framing::Tcp, 1}, true);
+        VirtualPlcUnderTest v(kFollowerVigor, {ProtocolId::Modbus, modbus::Framing::Tcp, 1}, true);
         ASSERT_TRUE(v.ready());
         TcpTransport tcp(QStringLiteral("127.0.0.1"), v.port);
         QString error;
@@ -122,7 +116,7 @@ TEST(VirtualPlc, VigorCp2ModbusTcpAndTheLinkOnAPty) {
         ASSERT_TRUE(m.write({modbus::WriteSingleRegister, 0, 1, {41}, {}})); // D0
         EXPECT_TRUE(eventually([&] { return m.reg(1) == 42; }));             // D1
     }
-    VirtualPlcUnderTest v(kServedVigor, {ProtocolId::VigorLink, {}, 0}, false);
+    VirtualPlcUnderTest v(kFollowerVigor, {ProtocolId::VigorLink, {}, 0}, false);
     ASSERT_TRUE(v.ready());
     PtyTransport pty(v.path);
     QString error;
@@ -187,7 +181,7 @@ TEST(VirtualPlc, HostLinkRefusesWritesInRunUntilMonitor) {
 }
 
 TEST(VirtualPlc, StopEndsAWaitingWriteAndTheWorkers) {
-    VirtualPlcUnderTest v(kServedPl110, {ProtocolId::Modbus, modbus::Framing::Tcp, 1}, true);
+    VirtualPlcUnderTest v(kFollowerPl110, {ProtocolId::Modbus, modbus::Framing::Tcp, 1}, true);
     ASSERT_TRUE(v.ready());
     const auto started = std::chrono::steady_clock::now();
     v.plc->stop();

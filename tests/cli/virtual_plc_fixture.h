@@ -19,6 +19,14 @@
 
 namespace rung::test {
 
+// Two programs for a virtual PLC whose outputs follow what a master writes.
+// PL110: Q1 follows I1, Q2 follows M1, V1 follows V0.
+inline constexpr const char *kFollowerPl110 =
+    "; target: pl110\nLD I1\nOUT Q1\nLD M1\nOUT Q2\nLD SM0.0\nMOV V0 V1\nEND\n";
+// Vigor: Y0 follows M0; D1 = D0 + 1.
+inline constexpr const char *kFollowerVigor =
+    "; target: vigor\nLD M0\nOUT Y0\nLD M9000\nADD D0 K1 D1\nEND\n";
+
 struct VirtualPlcUnderTest {
     QTemporaryDir dir;
     std::unique_ptr<app::VirtualPlc> plc;
