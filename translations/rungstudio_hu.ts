@@ -2053,7 +2053,7 @@ A read és a write kilépési kódja: 0 kész, 1 a PLC nem válaszolt vagy eluta
 <context>
     <name>rung::app::RecoveryFile</name>
     <message>
-        <location filename="../app/gui/recovery.cpp" line="+80"/>
+        <location filename="../app/gui/recovery.cpp" line="+84"/>
         <source>The recovery file could not be written: %1</source>
         <translation>A helyreállítási fájl nem írható: %1</translation>
     </message>
@@ -4695,7 +4695,7 @@ Kiértékelés: %4 µs (%5..%6)</translation>
         <translation>%1 (%2. sor, %3. oszlop) nincs rajta egyetlen áramúton sem a bal oldali gyűjtősíntől egy kimenetig: a lista kihagyja</translation>
     </message>
     <message>
-        <location line="+49"/>
+        <location line="+58"/>
         <location filename="../model/checks/checks_list.cpp" line="+80"/>
         <source>Append %1</source>
         <translation>%1 hozzáfűzése a végére</translation>
@@ -5049,7 +5049,7 @@ Kiértékelés: %4 µs (%5..%6)</translation>
         <translation>a(z) %1 csak %2..%3 operandust fogad el, nem %4</translation>
     </message>
     <message>
-        <location line="+16"/>
+        <location line="+18"/>
         <source>the %1 of %2 is a word: %3 is a single bit</source>
         <translation>a(z) %2 %1 egy szó: %3 egyetlen bit</translation>
     </message>
@@ -5059,9 +5059,14 @@ Kiértékelés: %4 µs (%5..%6)</translation>
         <translation>a(z) %2 %1 egy szó: %3 nem 16 bites szó eleje (%4 és %5 az)</translation>
     </message>
     <message>
-        <location line="+20"/>
+        <location line="+24"/>
         <source>the %1 of %2 is a bit: %3 is a whole channel (%4 is its first bit)</source>
         <translation>a(z) %2 %1 egy bit: %3 egy teljes csatorna (első bitje %4)</translation>
+    </message>
+    <message>
+        <location line="+5"/>
+        <source>the %1 of %2 is a bit: %3 is a whole word (%4 is its first bit)</source>
+        <translation>a(z) %2 %1 egy bit: %3 egy teljes szó (első bitje %4)</translation>
     </message>
     <message>
         <location line="+6"/>
@@ -5231,7 +5236,7 @@ Kiértékelés: %4 µs (%5..%6)</translation>
         <translation>Túl sok hiba; a lista többi része nem lett beolvasva</translation>
     </message>
     <message>
-        <location line="+152"/>
+        <location line="+160"/>
         <source>Program sections such as &apos;%1&apos; are not supported: a listing is one main program, run at every scan</source>
         <translation>A programszakaszok (például &apos;%1&apos;) nem támogatottak: az utasításlista egyetlen főprogram, amely minden ciklusban lefut</translation>
     </message>
@@ -5793,7 +5798,7 @@ Kiértékelés: %4 µs (%5..%6)</translation>
     </message>
     <message>
         <location line="+5"/>
-        <location filename="../model/target/target_pl110.cpp" line="+54"/>
+        <location filename="../model/target/target_pl110.cpp" line="+86"/>
         <location filename="../model/target/target_vigor.cpp" line="+63"/>
         <location filename="../model/target/target_vpc.cpp" line="+5"/>
         <source>Start a block with a normally open contact</source>
@@ -6134,7 +6139,7 @@ Kiértékelés: %4 µs (%5..%6)</translation>
         <translation>A program vége</translation>
     </message>
     <message>
-        <location filename="../model/target/target_pl110.cpp" line="-352"/>
+        <location filename="../model/target/target_pl110.cpp" line="-384"/>
         <source>IF contact: ON while S1 ? S2 is true</source>
         <translation>IF érintkező: BE, amíg S1 ? S2 igaz</translation>
     </message>
@@ -6280,7 +6285,42 @@ Kiértékelés: %4 µs (%5..%6)</translation>
         <translation>legnagyobb ciklusidő (0,1 ms)</translation>
     </message>
     <message>
-        <location line="+7"/>
+        <location line="+10"/>
+        <source>the encoders&apos; load bits and the stepper motor output on AQ1 are not modelled; the word is plain memory</source>
+        <translation>az enkóderek betöltőbitjeit és az AQ1 léptetőmotor-kimenetét a szimulátor nem modellezi; a szó egyszerű memória</translation>
+    </message>
+    <message>
+        <location line="+4"/>
+        <source>the protocol address (the offset and the rotary switch) is not modelled; the word is plain memory</source>
+        <translation>a protokollcímet (az eltolást és a forgókapcsolót) a szimulátor nem modellezi; a szó egyszerű memória</translation>
+    </message>
+    <message>
+        <location line="+4"/>
+        <source>the real-time clock is not modelled: the word keeps what the program writes and does not count</source>
+        <translation>a valós idejű órát a szimulátor nem modellezi: a szó azt tartja, amit a program beleír, és nem számol</translation>
+    </message>
+    <message>
+        <location line="+4"/>
+        <source>the timed interrupts (their programs are not supported) and the stepper motor&apos;s ramp are not modelled; the word is plain memory</source>
+        <translation>az időzített megszakításokat (programjaik nem támogatottak) és a léptetőmotor rámpáját a szimulátor nem modellezi; a szó egyszerű memória</translation>
+    </message>
+    <message>
+        <location line="+4"/>
+        <source>the encoders are not modelled: no count, no load, no rate; the word is plain memory</source>
+        <translation>az enkódereket a szimulátor nem modellezi: nincs számlálás, betöltés, sebesség; a szó egyszerű memória</translation>
+    </message>
+    <message>
+        <location line="+4"/>
+        <source>the input filters and the analog configuration (type, range, calibration, output range) are not modelled: an analog input reads the value set in the simulator</source>
+        <translation>a bemeneti szűrőket és az analóg beállításokat (típus, tartomány, kalibrálás, kimeneti tartomány) a szimulátor nem modellezi: az analóg bemenet a szimulátorban beállított értéket olvassa</translation>
+    </message>
+    <message>
+        <location line="+5"/>
+        <source>the serial ports COM1, EXP1 and COM2 (state, speed, format, delays, error counts, free port) are not modelled; the word is plain memory</source>
+        <translation>a COM1, EXP1 és COM2 soros portokat (állapot, sebesség, formátum, késleltetések, hibaszámlálók, free port) a szimulátor nem modellezi; a szó egyszerű memória</translation>
+    </message>
+    <message>
+        <location line="+4"/>
         <source>the display (standby brightness and delay, system and user pages enabled, start page, page shown) is not modelled; the word is plain memory</source>
         <translation>a kijelzőt (készenléti fényerő és késleltetés, engedélyezett rendszer- és felhasználói oldalak, kezdőoldal, megjelenített oldal) a szimulátor nem modellezi; a szó egyszerű memória</translation>
     </message>
@@ -7226,7 +7266,7 @@ Kiértékelés: %4 µs (%5..%6)</translation>
         <translation>%1: hiányzik a(z) %2. operandus</translation>
     </message>
     <message>
-        <location filename="../simulator/compile_steps.cpp" line="+168"/>
+        <location filename="../simulator/compile_steps.cpp" line="+175"/>
         <location filename="../simulator/compiler_detail.h" line="+17"/>
         <source>%1 is not a bit device</source>
         <translation>%1 nem bit típusú operandus</translation>
@@ -7254,6 +7294,8 @@ Kiértékelés: %4 µs (%5..%6)</translation>
     </message>
     <message>
         <location line="+16"/>
+        <location filename="../simulator/compile_steps.cpp" line="-13"/>
+        <location line="+40"/>
         <location filename="../simulator/compiler_detail.h" line="+24"/>
         <source>%1 cannot be written</source>
         <translation>%1 nem írható</translation>
@@ -7280,7 +7322,7 @@ Kiértékelés: %4 µs (%5..%6)</translation>
         <translation>%1 előtt %2 nyitott blokk kell</translation>
     </message>
     <message>
-        <location filename="../simulator/compile_steps.cpp" line="-151"/>
+        <location filename="../simulator/compile_steps.cpp" line="-185"/>
         <source>more than %1 open blocks</source>
         <translation>több mint %1 nyitott blokk</translation>
     </message>
@@ -7295,12 +7337,12 @@ Kiértékelés: %4 µs (%5..%6)</translation>
         <translation>%1 nem számláló</translation>
     </message>
     <message>
-        <location line="+142"/>
+        <location line="+160"/>
         <source>the simulator has no operator %1</source>
         <translation>a szimulátor nem ismeri ezt a műveleti jelet: %1</translation>
     </message>
     <message>
-        <location line="+46"/>
+        <location line="+58"/>
         <source>%1 is not a number of words</source>
         <translation>%1 nem érvényes szószám</translation>
     </message>
@@ -7340,13 +7382,13 @@ Kiértékelés: %4 µs (%5..%6)</translation>
         <translation>%1 nem törölhető</translation>
     </message>
     <message>
-        <location filename="../simulator/compile_steps.cpp" line="-112"/>
+        <location filename="../simulator/compile_steps.cpp" line="-135"/>
         <location filename="../simulator/compiler.cpp" line="+5"/>
         <source>%1 is not a device</source>
         <translation>%1 nem operandus</translation>
     </message>
     <message>
-        <location filename="../simulator/compiler.cpp" line="+110"/>
+        <location filename="../simulator/compiler.cpp" line="+112"/>
         <source>the program has no target</source>
         <translation>a programnak nincs célrendszere</translation>
     </message>
@@ -7374,7 +7416,7 @@ Kiértékelés: %4 µs (%5..%6)</translation>
         <translation>a(z) %1 eredmény kívül esik a 0..9999 tartományon; %2 íródik be</translation>
     </message>
     <message>
-        <location line="+418"/>
+        <location line="+420"/>
         <source>subroutines nest deeper than %1 levels; the call is skipped</source>
         <translation>a szubrutinok %1 szintnél mélyebben ágyazódnak egymásba; a hívás elmarad</translation>
     </message>

@@ -2058,7 +2058,7 @@ Codice di uscita di read e write: 0 fatto, 1 il PLC non ha risposto o ha rifiuta
 <context>
     <name>rung::app::RecoveryFile</name>
     <message>
-        <location filename="../app/gui/recovery.cpp" line="+80"/>
+        <location filename="../app/gui/recovery.cpp" line="+84"/>
         <source>The recovery file could not be written: %1</source>
         <translation>Impossibile scrivere il file di recupero: %1</translation>
     </message>
@@ -4703,7 +4703,7 @@ Valutazione: %4 µs (%5..%6)</translation>
         <translation>%1 (riga %2, colonna %3) non si trova su alcun percorso dalla barra sinistra a un&apos;uscita: la lista lo omette</translation>
     </message>
     <message>
-        <location line="+49"/>
+        <location line="+58"/>
         <location filename="../model/checks/checks_list.cpp" line="+80"/>
         <source>Append %1</source>
         <translation>Aggiungi %1 in fondo</translation>
@@ -5059,7 +5059,7 @@ Valutazione: %4 µs (%5..%6)</translation>
         <translation>%1 accetta solo %2..%3, non %4</translation>
     </message>
     <message>
-        <location line="+16"/>
+        <location line="+18"/>
         <source>the %1 of %2 is a word: %3 is a single bit</source>
         <translation>il %1 di %2 è una word: %3 è un singolo bit</translation>
     </message>
@@ -5069,9 +5069,14 @@ Valutazione: %4 µs (%5..%6)</translation>
         <translation>il %1 di %2 è una word: %3 non è l&apos;inizio di una word di 16 bit (%4 e %5 lo sono)</translation>
     </message>
     <message>
-        <location line="+20"/>
+        <location line="+24"/>
         <source>the %1 of %2 is a bit: %3 is a whole channel (%4 is its first bit)</source>
         <translation>il %1 di %2 è un bit: %3 è un canale intero (il suo primo bit è %4)</translation>
+    </message>
+    <message>
+        <location line="+5"/>
+        <source>the %1 of %2 is a bit: %3 is a whole word (%4 is its first bit)</source>
+        <translation>il %1 di %2 è un bit: %3 è una word intera (il suo primo bit è %4)</translation>
     </message>
     <message>
         <location line="+6"/>
@@ -5244,7 +5249,7 @@ Valutazione: %4 µs (%5..%6)</translation>
         <translation>Troppi errori; il resto della lista non è stato letto</translation>
     </message>
     <message>
-        <location line="+152"/>
+        <location line="+160"/>
         <source>Program sections such as &apos;%1&apos; are not supported: a listing is one main program, run at every scan</source>
         <translation>Le sezioni di programma come &apos;%1&apos; non sono supportate: una lista istruzioni è un solo programma principale, eseguito a ogni scansione</translation>
     </message>
@@ -5808,7 +5813,7 @@ Valutazione: %4 µs (%5..%6)</translation>
     </message>
     <message>
         <location line="+5"/>
-        <location filename="../model/target/target_pl110.cpp" line="+54"/>
+        <location filename="../model/target/target_pl110.cpp" line="+86"/>
         <location filename="../model/target/target_vigor.cpp" line="+63"/>
         <location filename="../model/target/target_vpc.cpp" line="+5"/>
         <source>Start a block with a normally open contact</source>
@@ -6149,7 +6154,7 @@ Valutazione: %4 µs (%5..%6)</translation>
         <translation>Fine del programma</translation>
     </message>
     <message>
-        <location filename="../model/target/target_pl110.cpp" line="-352"/>
+        <location filename="../model/target/target_pl110.cpp" line="-384"/>
         <source>IF contact: ON while S1 ? S2 is true</source>
         <translation>Contatto IF: ON mentre S1 ? S2 è vero</translation>
     </message>
@@ -6295,7 +6300,42 @@ Valutazione: %4 µs (%5..%6)</translation>
         <translation>tempo di scansione massimo (0,1 ms)</translation>
     </message>
     <message>
-        <location line="+7"/>
+        <location line="+10"/>
+        <source>the encoders&apos; load bits and the stepper motor output on AQ1 are not modelled; the word is plain memory</source>
+        <translation>i bit di caricamento degli encoder e l&apos;uscita AQ1 del motore passo passo non sono modellati; la word è semplice memoria</translation>
+    </message>
+    <message>
+        <location line="+4"/>
+        <source>the protocol address (the offset and the rotary switch) is not modelled; the word is plain memory</source>
+        <translation>l&apos;indirizzo di protocollo (l&apos;offset e il rotary-switch) non è modellato; la word è semplice memoria</translation>
+    </message>
+    <message>
+        <location line="+4"/>
+        <source>the real-time clock is not modelled: the word keeps what the program writes and does not count</source>
+        <translation>l&apos;orologio interno non è modellato: la word mantiene ciò che il programma scrive e non avanza</translation>
+    </message>
+    <message>
+        <location line="+4"/>
+        <source>the timed interrupts (their programs are not supported) and the stepper motor&apos;s ramp are not modelled; the word is plain memory</source>
+        <translation>gli interrupt a tempo (i loro programmi non sono supportati) e la rampa del motore passo passo non sono modellati; la word è semplice memoria</translation>
+    </message>
+    <message>
+        <location line="+4"/>
+        <source>the encoders are not modelled: no count, no load, no rate; the word is plain memory</source>
+        <translation>gli encoder non sono modellati: nessun conteggio, caricamento o frequenza; la word è semplice memoria</translation>
+    </message>
+    <message>
+        <location line="+4"/>
+        <source>the input filters and the analog configuration (type, range, calibration, output range) are not modelled: an analog input reads the value set in the simulator</source>
+        <translation>i filtri degli ingressi e la configurazione analogica (tipo, range, calibrazione, range delle uscite) non sono modellati: un ingresso analogico legge il valore impostato nel simulatore</translation>
+    </message>
+    <message>
+        <location line="+5"/>
+        <source>the serial ports COM1, EXP1 and COM2 (state, speed, format, delays, error counts, free port) are not modelled; the word is plain memory</source>
+        <translation>le seriali COM1, EXP1 e COM2 (stato, baudrate, formato, ritardi, conteggio errori, free-port) non sono modellate; la word è semplice memoria</translation>
+    </message>
+    <message>
+        <location line="+4"/>
         <source>the display (standby brightness and delay, system and user pages enabled, start page, page shown) is not modelled; the word is plain memory</source>
         <translation>il display (luminosità e ritardo dello standby, pagine di sistema e utente abilitate, pagina di avvio, pagina visualizzata) non è modellato; la word è semplice memoria</translation>
     </message>
@@ -7241,7 +7281,7 @@ Valutazione: %4 µs (%5..%6)</translation>
         <translation>%1 richiede l&apos;operando %2</translation>
     </message>
     <message>
-        <location filename="../simulator/compile_steps.cpp" line="+168"/>
+        <location filename="../simulator/compile_steps.cpp" line="+175"/>
         <location filename="../simulator/compiler_detail.h" line="+17"/>
         <source>%1 is not a bit device</source>
         <translation>%1 non è un operando a bit</translation>
@@ -7269,6 +7309,8 @@ Valutazione: %4 µs (%5..%6)</translation>
     </message>
     <message>
         <location line="+16"/>
+        <location filename="../simulator/compile_steps.cpp" line="-13"/>
+        <location line="+40"/>
         <location filename="../simulator/compiler_detail.h" line="+24"/>
         <source>%1 cannot be written</source>
         <translation>%1 non può essere scritto</translation>
@@ -7295,7 +7337,7 @@ Valutazione: %4 µs (%5..%6)</translation>
         <translation>%1 richiede %2 blocchi aperti prima di sé</translation>
     </message>
     <message>
-        <location filename="../simulator/compile_steps.cpp" line="-151"/>
+        <location filename="../simulator/compile_steps.cpp" line="-185"/>
         <source>more than %1 open blocks</source>
         <translation>più di %1 blocchi aperti</translation>
     </message>
@@ -7310,12 +7352,12 @@ Valutazione: %4 µs (%5..%6)</translation>
         <translation>%1 non è un contatore</translation>
     </message>
     <message>
-        <location line="+142"/>
+        <location line="+160"/>
         <source>the simulator has no operator %1</source>
         <translation>il simulatore non ha l&apos;operatore %1</translation>
     </message>
     <message>
-        <location line="+46"/>
+        <location line="+58"/>
         <source>%1 is not a number of words</source>
         <translation>%1 non è un numero di word</translation>
     </message>
@@ -7355,13 +7397,13 @@ Valutazione: %4 µs (%5..%6)</translation>
         <translation>%1 non può essere resettato</translation>
     </message>
     <message>
-        <location filename="../simulator/compile_steps.cpp" line="-112"/>
+        <location filename="../simulator/compile_steps.cpp" line="-135"/>
         <location filename="../simulator/compiler.cpp" line="+5"/>
         <source>%1 is not a device</source>
         <translation>%1 non è un operando</translation>
     </message>
     <message>
-        <location filename="../simulator/compiler.cpp" line="+110"/>
+        <location filename="../simulator/compiler.cpp" line="+112"/>
         <source>the program has no target</source>
         <translation>il programma non ha una famiglia PLC</translation>
     </message>
@@ -7389,7 +7431,7 @@ Valutazione: %4 µs (%5..%6)</translation>
         <translation>il risultato %1 è fuori da 0..9999; viene scritto %2</translation>
     </message>
     <message>
-        <location line="+418"/>
+        <location line="+420"/>
         <source>subroutines nest deeper than %1 levels; the call is skipped</source>
         <translation>le subroutine sono annidate oltre %1 livelli; la chiamata non viene eseguita</translation>
     </message>

@@ -278,20 +278,29 @@ std::vector<OperandBreach> operandBreaches(const Target &target, const Instructi
             rule.kind == OperandKind::BitSource || rule.kind == OperandKind::BitDest;
         // A whole word or channel where a bit belongs: the simulator has no bit to read or
         // write. Coils on a word are OP002's ("cannot drive"); a channel of bits is refused
-        // everywhere (CPM1 LD 011, SNXT(09) 011: write 011.00). A reset clears words too
-        // (RST D0, ZRST D0 D9).
+        // everywhere (CPM1 LD 011, SNXT(09) 011: write 011.00), and so is a word of bits read
+        // as a contact (PL110 LD V1: V1.0 is its first bit). A reset clears words too (RST D0,
+        // ZRST D0 D9).
         const bool clearsWords = spec.op == Op::Reset || spec.function == ApplyFunction::ZoneReset;
         if (bitSlot && !clearsWords && o.address.bit < 0 && o.digits == 0 &&
             (area.kind == AreaKind::Channel ||
-             (area.kind == AreaKind::Word && spec.op == Op::Apply))) {
+             (area.kind == AreaKind::Word &&
+              (spec.op == Op::Apply || rule.kind == OperandKind::BitSource)))) {
             if (area.numbering == Numbering::ChannelBit) {
                 Address firstBit = o.address;
                 firstBit.bit = 0;
-                found.push_back({at, Tr::tr("the %1 of %2 is a bit: %3 is a whole channel (%4 is "
-                                            "its first bit)")
-                                         .arg(slotName(rule, k), spec.mnemonic,
-                                              formatAddress(target, o.address),
-                                              formatAddress(target, firstBit))});
+                found.push_back(
+                    {at, area.kind == AreaKind::Channel
+                             ? Tr::tr("the %1 of %2 is a bit: %3 is a whole channel (%4 is "
+                                      "its first bit)")
+                                   .arg(slotName(rule, k), spec.mnemonic,
+                                        formatAddress(target, o.address),
+                                        formatAddress(target, firstBit))
+                             : Tr::tr("the %1 of %2 is a bit: %3 is a whole word (%4 is its "
+                                      "first bit)")
+                                   .arg(slotName(rule, k), spec.mnemonic,
+                                        formatAddress(target, o.address),
+                                        formatAddress(target, firstBit))});
             } else {
                 found.push_back({at, Tr::tr("the %1 of %2 is a bit: %3 is a whole word")
                                          .arg(slotName(rule, k), spec.mnemonic,

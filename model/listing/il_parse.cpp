@@ -168,7 +168,15 @@ private:
         QString fusedNumber;
         if (tokens[0].text.size() > kMaxTokenLength ||
             !matchMnemonic(tokens, &ins.spec, &used, &fusedNumber)) {
-            reportUnknown(tokens[0], lineNumber);
+            // A section header may hold spaces ("[Interrupt 1]"): quote it whole.
+            Token shown = tokens[0];
+            if (shown.text.startsWith(QLatin1Char('[')) && !shown.text.contains(QLatin1Char(']')))
+                for (std::size_t k = 1; k < tokens.size(); ++k) {
+                    shown.text += QLatin1Char(' ') + tokens[k].text;
+                    if (tokens[k].text.contains(QLatin1Char(']')))
+                        break;
+                }
+            reportUnknown(shown, lineNumber);
             return;
         }
         std::vector<Token> operands(tokens.begin() + static_cast<std::ptrdiff_t>(used),

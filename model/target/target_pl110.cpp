@@ -187,9 +187,41 @@ Target makePl110Target() {
          QT_TRANSLATE_NOOP("rung::model::Target", "maximum scan time (0.1 ms)"), 100},
     };
 
-    // What the simulator keeps as plain memory (2.1.2): the display of the PL110-2A and its
-    // terminal. `check` warns at each use (SIM101). SM111..SM117 are not in the manual's table.
+    // What the simulator keeps as plain memory (2.1.2): the hardware behind the special
+    // markers (encoders, stepper output, clock, protocol address, filters and analog
+    // configuration, serial ports), the timed interrupts and the display of the PL110-2A and its
+    // terminal. `check` warns at each use (SIM101). SM1 (faults) reads 0, no fault, as it should
+    // in a simulation; SM3, SM19, SM32..SM36 and SM111..SM117 are not in the manual's table.
     t.unmodelled = {
+        {QStringLiteral("SM2"), QStringLiteral("SM2"),
+         QT_TRANSLATE_NOOP("rung::model::Target",
+                           "the encoders' load bits and the stepper motor output on AQ1 are not "
+                           "modelled; the word is plain memory")},
+        {QStringLiteral("SM4"), QStringLiteral("SM5"),
+         QT_TRANSLATE_NOOP("rung::model::Target",
+                           "the protocol address (the offset and the rotary switch) is not "
+                           "modelled; the word is plain memory")},
+        {QStringLiteral("SM9"), QStringLiteral("SM15"),
+         QT_TRANSLATE_NOOP("rung::model::Target",
+                           "the real-time clock is not modelled: the word keeps what the program "
+                           "writes and does not count")},
+        {QStringLiteral("SM16"), QStringLiteral("SM18"),
+         QT_TRANSLATE_NOOP("rung::model::Target",
+                           "the timed interrupts (their programs are not supported) and the "
+                           "stepper motor's ramp are not modelled; the word is plain memory")},
+        {QStringLiteral("SM20"), QStringLiteral("SM31"),
+         QT_TRANSLATE_NOOP("rung::model::Target",
+                           "the encoders are not modelled: no count, no load, no rate; the word "
+                           "is plain memory")},
+        {QStringLiteral("SM38"), QStringLiteral("SM69"),
+         QT_TRANSLATE_NOOP("rung::model::Target",
+                           "the input filters and the analog configuration (type, range, "
+                           "calibration, output range) are not modelled: an analog input reads "
+                           "the value set in the simulator")},
+        {QStringLiteral("SM70"), QStringLiteral("SM99"),
+         QT_TRANSLATE_NOOP("rung::model::Target",
+                           "the serial ports COM1, EXP1 and COM2 (state, speed, format, delays, "
+                           "error counts, free port) are not modelled; the word is plain memory")},
         {QStringLiteral("SM100"), QStringLiteral("SM105"),
          QT_TRANSLATE_NOOP("rung::model::Target",
                            "the display (standby brightness and delay, system and user pages "

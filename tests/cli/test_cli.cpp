@@ -702,3 +702,42 @@ TEST(CliCheck, MessagesSpeakTheFamilysLanguage) {
     EXPECT_FALSE(r.out.contains(QStringLiteral("Oper duplication")));
     EXPECT_TRUE(r.out.contains(QStringLiteral("[DC001]")));
 }
+
+// Issue 14, seed 003 5.4 and 2.1.2: PLProg draws the initialisation code ([Init]) and the
+// two timed-interrupt programs (SM16 / SM17) beside the main ladder. A listing is one
+// program: check, convert (to a ladder or a project) and simulate all refuse a section line
+// with the same words, at its place, and write nothing; the message says where initialisation
+// goes (LD SM0.1) and that interrupt programs are not supported.
+TEST(CliSections, InitAndInterruptSectionsAreRefusedAlikeByEveryCommand) {
+    QTemporaryDir dir;
+    const QString file = write(dir, QStringLiteral("sections.il"),
+                               "; target: pl110\n[Init]\nLD SM0.0\nSBIT SMW103 0\n[Main]\n"
+                               "LD I1\nOUT Q1\n[Interrupt 1]\nLD I2\nOUT Q2\nEND\n");
+    const CliRun check = cli({QStringLiteral("check"), file});
+    EXPECT_EQ(check.code, 1);
+    for (const char *line :
+         {"sections.il:2:1: error:", "sections.il:5:1: error:", "sections.il:8:1: error:"})
+        EXPECT_TRUE(check.out.contains(QLatin1String(line))) << line << check.out.toStdString();
+    EXPECT_TRUE(check.out.contains(
+        QStringLiteral("Program sections such as '[Init]' are not supported: a listing is one "
+                       "main program, run at every scan; put what runs once under LD SM0.1 (ON "
+                       "in the first scan). Interrupt programs are not supported")))
+        << check.out.toStdString();
+    EXPECT_TRUE(check.out.contains(QStringLiteral("'[Interrupt 1]' are not supported")))
+        << check.out.toStdString();
+    for (const char *to : {"ladder", "project"}) {
+        const QString out = dir.filePath(QStringLiteral("sections.") + QLatin1String(to));
+        const CliRun r =
+            cli({QStringLiteral("convert"), file, QStringLiteral("--to"), QLatin1String(to),
+                 QStringLiteral("-o"), out, QStringLiteral("--force")});
+        EXPECT_EQ(r.code, 1) << to;
+        EXPECT_FALSE(QFile::exists(out)) << to; // --force never writes what does not parse
+        EXPECT_TRUE(r.err.contains(QStringLiteral("sections.il:2:1: error: Program sections")))
+            << r.err.toStdString();
+    }
+    const CliRun sim = cli({QStringLiteral("simulate"), file, QStringLiteral("--scans"),
+                            QStringLiteral("2"), QStringLiteral("--trace"), QStringLiteral("Q1")});
+    EXPECT_NE(sim.code, 0);
+    EXPECT_TRUE(sim.err.contains(QStringLiteral("sections.il:8:1: error: Program sections")))
+        << sim.err.toStdString();
+}

@@ -225,3 +225,84 @@ TEST(Pl110Checks, DisplayKeyAndPortMarkersWarn) {
     ASSERT_NE(sm106, placed.end());
     EXPECT_EQ(sm106->location.column, 8);
 }
+
+// Issue 14, seed 003 2.1.2: every special-marker word behind hardware the simulator does not
+// have is named at `check` time, first and last word of each range: the timed interrupts'
+// intervals SM16 / SM17 ("Intervallo dell'interrupt a tempo n° 1"), the clock SM9..SM15, the
+// encoders SM20..SM31 and SM2, the protocol address SM4 / SM5, filters and analog
+// configuration SM38..SM69, the serial ports SM70..SM99. What the simulator models (SM0, SM6..SM8
+// scan time, SM37 TEST inputs) and the faults SM1 (no fault in a simulation) stay quiet.
+TEST(Pl110Checks, HardwareAndInterruptMarkersWarnWhereTheyAreUsed) {
+    const std::pair<const char *, const char *> warned[] = {
+        {"SM16", "the timed interrupts"},
+        {"SM17", "the timed interrupts"},
+        {"SM18", "ramp"},
+        {"SM2", "encoders' load bits"},
+        {"SM4", "protocol address"},
+        {"SM5", "rotary switch"},
+        {"SM9", "real-time clock"},
+        {"SM15", "real-time clock"},
+        {"SM20", "encoders"},
+        {"SM31", "encoders"},
+        {"SM38", "input filters"},
+        {"SM69", "analog configuration"},
+        {"SM70", "serial ports"},
+        {"SM99", "serial ports"},
+    };
+    for (const auto &[device, phrase] : warned) {
+        const QString text = QStringLiteral("LD SM0.0\nMOV 10 %1\nEND").arg(QLatin1String(device));
+        const ParseResult r = parseInstructionList(pl110(), text);
+        ASSERT_TRUE(r.ok()) << device;
+        std::vector<Diagnostic> found;
+        for (const Diagnostic &d : checkList(r.list))
+            if (d.code == QLatin1String("SIM101"))
+                found.push_back(d);
+        ASSERT_EQ(found.size(), 1u) << device;
+        EXPECT_EQ(found[0].location.line, 2) << device;
+        EXPECT_EQ(found[0].severity, Severity::Warning);
+        EXPECT_TRUE(found[0].message.startsWith(QLatin1String(device) +
+                                                QLatin1String(" is not simulated: ")))
+            << found[0].message.toStdString();
+        EXPECT_TRUE(found[0].message.contains(QLatin1String(phrase)))
+            << device << ": " << found[0].message.toStdString();
+    }
+    // A bit of an interval word and the double word over the encoder count warn as well.
+    EXPECT_EQ(count(check("LD SM17.3\nOUT Q1\nEND"), "SIM101"), 1);
+    EXPECT_EQ(count(check("LD SM0.0\nMOV SMD22 VD0\nEND"), "SIM101"), 1);
+    for (const char *quiet : {"SM1", "SM3", "SM6", "SM8", "SM19", "SM32", "SM36", "SM37"}) {
+        const QString text = QStringLiteral("LD SM0.0\nMOV %1 V0\nEND").arg(QLatin1String(quiet));
+        EXPECT_EQ(count(checkList(parseInstructionList(pl110(), text).list), "SIM101"), 0) << quiet;
+    }
+}
+
+// Issue 14: what the PL110 simulator does not model among the instructions (PID, POS, RANGE
+// scaling, MOVTXT, SEND, COM / EXP, the display parameters) is named by `check` at each use
+// (SIM100), the instruction's own mnemonic in the message, not only when simulating.
+TEST(Pl110Checks, EveryInstructionNotSimulatedWarnsAtCheckTime) {
+    QStringList expected = {"MOVTXT",  "RANGE", "SEND",     "COM",       "EXP",
+                            "TunePOS", "POS",   "StartPID", "PID",       "SetOutPID",
+                            "GENSET",  "CONV",  "SetPAR",   "FormatPAR", "PosPAR"};
+    QStringList seen;
+    for (const InstructionSpec &spec : pl110().instructions) {
+        if (spec.function != ApplyFunction::NotSimulated)
+            continue;
+        seen << spec.mnemonic;
+        const QString text =
+            QStringLiteral("LD I1\n%1 V1 V2\nLD I2\nOUT Q1\nEND").arg(spec.mnemonic);
+        const ParseResult r = parseInstructionList(pl110(), text);
+        ASSERT_TRUE(r.ok()) << spec.mnemonic.toStdString();
+        std::vector<Diagnostic> found;
+        for (const Diagnostic &d : checkList(r.list))
+            if (d.code == QLatin1String("SIM100"))
+                found.push_back(d);
+        ASSERT_EQ(found.size(), 1u) << spec.mnemonic.toStdString();
+        EXPECT_EQ(found[0].severity, Severity::Warning);
+        EXPECT_EQ(found[0].location.line, 2);
+        EXPECT_EQ(found[0].message,
+                  spec.mnemonic +
+                      QLatin1String(" is not simulated: it does nothing in the simulator"));
+    }
+    seen.sort();
+    expected.sort();
+    EXPECT_EQ(seen, expected);
+}

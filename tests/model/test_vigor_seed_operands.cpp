@@ -4,6 +4,7 @@
 
 #include "model/checks/checks.h"
 #include "model/listing/il.h"
+#include "model/target/address.h"
 
 #include <gtest/gtest.h>
 
@@ -72,5 +73,41 @@ TEST(VigorOperands, SeedOneOperandTables) {
         EXPECT_EQ(errors.front().location.line, 2);
         EXPECT_TRUE(errors.front().message.contains(QLatin1String(b.says)))
             << errors.front().message.toStdString();
+    }
+}
+
+// Issue 14, seed 004 1.4 "Every timer has its resolution (unit: 1ms/10ms/100ms)": the ranges
+// of docs/targets.md "Timer resolutions" hold on every Vigor model the product offers (M, VB,
+// VH): each timer number exists there with its time base and mode, and one past the last does
+// not. A model given other ranges would have to say so in the table (ModelVariant::overrides).
+TEST(VigorTimerRanges, EveryModelHasTheFamilysResolutions) {
+    const Target &t = Target::get(Family::Vigor);
+    struct Expected {
+        const char *device;
+        double baseMs;
+        TimerMode mode;
+    };
+    const Expected expected[] = {
+        {"T0", 100, TimerMode::OnDelay},        {"T199", 100, TimerMode::OnDelay},
+        {"T200", 10, TimerMode::OnDelay},       {"T245", 10, TimerMode::OnDelay},
+        {"T246", 1, TimerMode::Accumulating},   {"T249", 1, TimerMode::Accumulating},
+        {"T250", 100, TimerMode::Accumulating}, {"T255", 100, TimerMode::Accumulating},
+    };
+    ASSERT_EQ(t.models.size(), 3u);
+    for (const ModelVariant &model : t.models) {
+        SCOPED_TRACE(model.name.toStdString());
+        for (const Expected &e : expected) {
+            const auto parsed = parseAddress(t, QString::fromLatin1(e.device));
+            ASSERT_TRUE(std::holds_alternative<Address>(parsed)) << e.device;
+            const Address a = std::get<Address>(parsed);
+            const auto range = t.range(a.area, &model);
+            ASSERT_TRUE(range.has_value()) << e.device;
+            EXPECT_TRUE(a.index >= range->first && a.index <= range->second) << e.device;
+            const Area &area = t.area(a.area);
+            const double base = area.timerBaseMs > 0 ? area.timerBaseMs : t.defaultTimerBaseMs;
+            EXPECT_EQ(base, e.baseMs) << e.device;
+            EXPECT_EQ(area.timerMode, e.mode) << e.device;
+        }
+        EXPECT_FALSE(std::holds_alternative<Address>(parseAddress(t, QStringLiteral("T256"))));
     }
 }

@@ -109,8 +109,15 @@ TEST(GoldenTraceSet, CoversEveryFamilyExampleListedInTheIssue) {
         "cpm1_difu_difd", "cpm1_jmp_jme", "cpm1_tim_timh", "cpm1_cnt_cntr",
         // CPM1, Omron W353 (issue 14): application instructions, subroutines, steps
         "cpm1_add_carry", "cpm1_sft", "cpm1_cmp_timer", "cpm1_step_snxt", "cpm1_subroutine",
+        "cpm1_mov_bcd_set_value",
         // PL110, seed 003 4.2
-        "pl110_contacts", "pl110_timers", "pl110_counters", "pl110_movind"};
+        "pl110_contacts", "pl110_timers", "pl110_counters", "pl110_movind",
+        // PL110, seed 003 2.1 and 4.2 (issue 14): TONR, presets, SM0.13, trimmers, VD / SMD
+        "pl110_tonr_scan_toggle", "pl110_presets", "pl110_sm0_13", "pl110_trimmer_preset",
+        "pl110_double_words",
+        // Vigor, seed 001 (issue 14): digits and index registers, CCD, RS, timer resolutions
+        "vigor_digits_index", "vigor_ccd_check_code", "vigor_send_frame",
+        "vigor_timer_resolutions"};
     const std::vector<std::string> names = goldenNames();
     for (const std::string &name : expected)
         EXPECT_NE(std::find(names.begin(), names.end(), name), names.end()) << name;

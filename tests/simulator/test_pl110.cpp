@@ -463,7 +463,7 @@ TEST(Pl110TestMode, InputsComeFromSm37WhileSm05IsOn) {
 }
 
 // seed 003 4.2.20's positioning example compares with a signed constant, "IF VD8 == #-1"
-// (on a single word here: double words are not modelled yet, docs/targets.md).
+// (on a single word here; the manual's own double word VD8 is golden trace pl110_double_words).
 TEST(Pl110Contacts, IfComparesWithASignedHashConstant) {
     Pl110 s("LD= V8 #-1\nOUT Q4\nLD= V8 1\nOUT Q3\nEND");
     ASSERT_TRUE(s.parsed.ok()) << s.parsed.errors.front().message.toStdString();
