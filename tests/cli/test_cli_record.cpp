@@ -28,6 +28,7 @@ TEST(CliRecord, ARealMasterReadsAVirtualPlcThroughTheRecorderAndTheCaptureHoldsB
     VirtualPlcUnderTest plc(kVigor, {model::ProtocolId::VigorLink, comms::modbus::Framing::Rtu, 0},
                             false);
     ASSERT_TRUE(plc.ready());
+    ASSERT_TRUE(plc.scanned()); // Y0 is ON from the end of the first scan
     QTemporaryDir dir;
     const QString capture = dir.filePath(QStringLiteral("capture.txt"));
     QProcess recorder;

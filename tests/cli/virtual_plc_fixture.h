@@ -5,7 +5,9 @@
 
 #include "app/cli/cli_load_program.h"
 #include "app/virtual_plc/virtual_plc.h"
+#include "comms/slave/device_image.h"
 #include "comms/transport/pty_transport.h"
+#include "model/image/snapshot.h"
 
 #include <QFile>
 #include <QTemporaryDir>
@@ -65,6 +67,10 @@ struct VirtualPlcUnderTest {
         EXPECT_TRUE(plc->serve(std::move(pty), &error)) << error.toStdString();
     }
     bool ready() const { return plc && (!path.isEmpty() || port != 0); }
+    // A PLC answers from its I/O image, which holds the program's results from the end of
+    // the first scan on; a test that reads them first waits for that scan (on a loaded
+    // machine the session's thread may not have run it yet when a master asks).
+    bool scanned(int ms = 5000) const;
 };
 
 // Polls until the condition holds or the deadline passes (the program runs in real time).
@@ -76,6 +82,15 @@ inline bool eventually(const std::function<bool()> &condition, int ms = 3000) {
         std::this_thread::sleep_for(std::chrono::milliseconds(10));
     }
     return true;
+}
+
+inline bool VirtualPlcUnderTest::scanned(int ms) const {
+    return plc && eventually(
+                      [this] {
+                          const auto snapshot = plc->image()->snapshot();
+                          return snapshot && snapshot->statistics.scans > 0;
+                      },
+                      ms);
 }
 
 } // namespace rung::test
