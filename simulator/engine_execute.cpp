@@ -173,6 +173,16 @@ std::size_t Engine::execute(std::size_t from, std::size_t to) {
         const ElementGate &g = p.gates[static_cast<std::size_t>(slot)];
         return !g.bit.valid() || rd(g.bit) == g.whenOn;
     };
+    // A timer's or counter's set value: readSet's work, inline for the plain case (no BCD
+    // digits to decode), which every timer and counter of a scan asks once.
+    auto setValue = [&](const Step &s, std::size_t at) -> std::int32_t {
+        if (s.flags & kBcd) [[unlikely]]
+            return readSet(s, at);
+        const std::int32_t set = std::max<std::int32_t>(0, rdw(s.x));
+        if (s.y.index >= 0)
+            R[s.y.index] = set;
+        return set;
+    };
     auto wrw = [&](std::int32_t index, std::int64_t v, int width) {
         storeWord(static_cast<std::size_t>(index), v, width);
     };
@@ -365,7 +375,7 @@ std::size_t Engine::execute(std::size_t from, std::size_t to) {
             ElementState &st = m_states[static_cast<std::size_t>(s.slot)];
             if (!gateOpen(s.slot)) // Area::enabledBy (PL110 SM0.13): the box does nothing
                 break;
-            const std::int32_t set = readSet(s, i);
+            const std::int32_t set = setValue(s, i);
             if (set < 0)
                 break;
             std::int64_t units = 0;
@@ -401,7 +411,7 @@ std::size_t Engine::execute(std::size_t from, std::size_t to) {
             }
             if (!gateOpen(s.slot)) // Area::enabledBy (PL110 SM0.13): the box does nothing
                 break;
-            const std::int32_t set = readSet(s, i);
+            const std::int32_t set = setValue(s, i);
             if (set < 0)
                 break;
             if (reset) {
@@ -422,7 +432,7 @@ std::size_t Engine::execute(std::size_t from, std::size_t to) {
             const bool up = bsp > 0 ? blocks[--bsp] : false;
             if (!gateOpen(s.slot)) // Area::enabledBy (PL110 SM0.13): the box does nothing
                 break;
-            const std::int32_t set = readSet(s, i);
+            const std::int32_t set = setValue(s, i);
             if (set < 0)
                 break;
             const bool upEdge = up && !(st.previous & 1);
@@ -452,7 +462,7 @@ std::size_t Engine::execute(std::size_t from, std::size_t to) {
             ElementState &st = m_states[static_cast<std::size_t>(s.slot)];
             if (!gateOpen(s.slot)) // Area::enabledBy (PL110 SM0.13): the box does nothing
                 break;
-            const std::int32_t set = readSet(s, i);
+            const std::int32_t set = setValue(s, i);
             if (set < 0)
                 break;
             std::int32_t &current = R[s.dest];
@@ -516,7 +526,7 @@ std::size_t Engine::execute(std::size_t from, std::size_t to) {
             const bool up = bsp > 0 ? blocks[--bsp] : false;
             if (!gateOpen(s.slot)) // Area::enabledBy (PL110 SM0.13): the box does nothing
                 break;
-            const std::int32_t set = readSet(s, i);
+            const std::int32_t set = setValue(s, i);
             if (set < 0)
                 break;
             const bool upEdge = up && !(st.previous & 1);

@@ -1,6 +1,7 @@
 #include "model/target/address.h"
 
 #include <QCoreApplication>
+#include <QVarLengthArray>
 
 #include <algorithm>
 #include <limits>
@@ -19,33 +20,50 @@ struct Tr {
 QString squeeze(QStringView text) {
     QString out;
     out.reserve(text.size());
-    for (QChar c : text)
-        if (!c.isSpace())
+    for (QChar c : text) {
+        const char16_t u = c.unicode();
+        if (u < 0x80) { // ASCII, nearly every operand: no table lookup
+            if (u != ' ' && (u < '\t' || u > '\r'))
+                out.append(QChar(u >= 'a' && u <= 'z' ? u - ('a' - 'A') : u));
+        } else if (!c.isSpace()) {
             out.append(c.toUpper());
+        }
+    }
     return out;
 }
 
-// Length of the longest spelling of the area's prefix that starts s and is followed by a
-// digit, or -1.
-// Compares without building the squeezed prefix: this runs for every area on every operand.
-qsizetype prefixMatch(const Area &area, const QString &s) {
+// The length of the longest spelling of each area's prefix that starts s and is followed
+// by a digit, or -1; and the longest of all. This runs for every operand the parser reads, so
+// it compares against the table's prepared spellings (Target::prefixSpellings) once.
+struct PrefixMatches {
+    QVarLengthArray<qsizetype, 64> length;
     qsizetype best = -1;
-    auto tryOne = [&](const QString &spelling) {
-        qsizetype n = 0;
-        for (QChar c : spelling) {
-            if (c.isSpace())
-                continue;
-            if (n >= s.size() || s[n] != c.toUpper())
-                return;
-            ++n;
-        }
-        if (s.size() > n && s[n].isDigit())
-            best = std::max(best, n);
-    };
-    tryOne(area.prefix);
-    for (const QString &alias : area.prefixAliases)
-        tryOne(alias);
-    return best;
+};
+
+PrefixMatches matchPrefixes(const Target &target, const QString &s) {
+    PrefixMatches m;
+    m.length.resize(static_cast<qsizetype>(target.areas.size()));
+    std::fill(m.length.begin(), m.length.end(), qsizetype(-1));
+    std::vector<Target::PrefixSpelling> own;
+    const std::vector<Target::PrefixSpelling> *spellings = &target.prefixSpellings();
+    if (spellings->empty()) {
+        own = target.makePrefixSpellings();
+        spellings = &own;
+    }
+    for (const Target::PrefixSpelling &p : *spellings) {
+        const qsizetype n = p.text.size();
+        if (s.size() <= n || !s[n].isDigit())
+            continue;
+        qsizetype same = 0; // prefixes are a few letters: no call into QString for them
+        while (same < n && s[same] == p.text[same])
+            ++same;
+        if (same < n)
+            continue;
+        qsizetype &length = m.length[p.area];
+        length = std::max(length, n);
+        m.best = std::max(m.best, n);
+    }
+    return m;
 }
 
 int radixOf(Numbering n) {
@@ -116,7 +134,7 @@ std::variant<Address, AddressError> parseAddress(const Target &target, QStringVi
     const QStringView trimmed = text.trimmed();
     const int lead = static_cast<int>(text.indexOf(trimmed.isEmpty() ? text : trimmed));
     const QString s = squeeze(trimmed);
-    const QString shown = trimmed.toString();
+    const QStringView shown = trimmed; // for the messages: no copy on the way that has none
     auto error = [&](const QString &message, qsizetype squeezedPos) {
         return AddressError{message, lead + originalColumn(trimmed, squeezedPos)};
     };
@@ -124,9 +142,8 @@ std::variant<Address, AddressError> parseAddress(const Target &target, QStringVi
         return AddressError{Tr::tr("A device is missing"), 0};
 
     // The longest prefix followed by a digit wins: "HR00" is HR, not an unprefixed channel.
-    qsizetype bestLength = -1;
-    for (const Area &a : target.areas)
-        bestLength = std::max(bestLength, prefixMatch(a, s));
+    const PrefixMatches prefixes = matchPrefixes(target, s);
+    const qsizetype bestLength = prefixes.best;
     if (bestLength < 0) {
         // Name the prefix the user wrote, if any, for a clearer message.
         qsizetype letters = 0;
@@ -145,7 +162,7 @@ std::variant<Address, AddressError> parseAddress(const Target &target, QStringVi
     // rules, then pick the area whose range holds the number.
     int firstArea = -1;
     for (int i = 0; i < static_cast<int>(target.areas.size()); ++i)
-        if (prefixMatch(target.area(i), s) == bestLength) {
+        if (prefixes.length[i] == bestLength) {
             firstArea = i;
             break;
         }
@@ -190,7 +207,7 @@ std::variant<Address, AddressError> parseAddress(const Target &target, QStringVi
     int anyArea = -1;
     for (int i = 0; i < static_cast<int>(target.areas.size()); ++i) {
         const Area &a = target.area(i);
-        if (prefixMatch(a, s) != bestLength)
+        if (prefixes.length[i] != bestLength)
             continue;
         if (anyArea < 0)
             anyArea = i;
@@ -211,7 +228,7 @@ std::variant<Address, AddressError> parseAddress(const Target &target, QStringVi
         std::vector<std::pair<int, int>> spans;
         for (int i = 0; i < static_cast<int>(target.areas.size()); ++i) {
             const Area &a = target.area(i);
-            if (prefixMatch(a, s) != bestLength)
+            if (prefixes.length[i] != bestLength)
                 continue;
             bitAllowed = bitAllowed || a.numbering == Numbering::ChannelBit;
             if (const auto r = target.range(i, model))

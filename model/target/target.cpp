@@ -44,7 +44,16 @@ QString stripFunctionCode(const QString &mnemonic, int *code) {
 }
 
 QString normalizeSpaces(const QString &text) {
-    return text.simplified().toUpper();
+    // What the parser asks nearly always, an upper-case mnemonic with single spaces ("LD",
+    // "AND LD"), is its own normal form: no copy.
+    bool normal = !text.isEmpty();
+    for (qsizetype i = 0; normal && i < text.size(); ++i) {
+        const char16_t u = text[i].unicode();
+        const bool space = u == ' ';
+        normal = u < 0x80 && !(u >= 'a' && u <= 'z') && !(u >= '\t' && u <= '\r') &&
+                 !(space && (i == 0 || i + 1 == text.size() || text[i - 1] == QLatin1Char(' ')));
+    }
+    return normal ? text : text.simplified().toUpper();
 }
 
 } // namespace
@@ -114,7 +123,25 @@ const ModelVariant &Target::defaultModel() const {
     return models.back();
 }
 
+std::vector<Target::PrefixSpelling> Target::makePrefixSpellings() const {
+    std::vector<PrefixSpelling> out;
+    for (int i = 0; i < static_cast<int>(areas.size()); ++i) {
+        const Area &a = area(i);
+        QStringList spellings{a.prefix};
+        spellings << a.prefixAliases;
+        for (const QString &spelling : spellings) {
+            QString squeezed;
+            for (QChar c : spelling)
+                if (!c.isSpace())
+                    squeezed.append(c.toUpper());
+            out.push_back({squeezed, i});
+        }
+    }
+    return out;
+}
+
 void Target::buildIndex() {
+    m_prefixes = makePrefixSpellings();
     m_spellings.clear();
     for (int i = 0; i < static_cast<int>(instructions.size()); ++i) {
         const InstructionSpec &spec = instructions[static_cast<std::size_t>(i)];

@@ -476,6 +476,15 @@ public:
     int indexOf(const InstructionSpec *spec) const;
 
     const Area &area(int index) const { return areas[static_cast<std::size_t>(index)]; }
+    // Every spelling of every area's prefix (Area::prefix and prefixAliases) as parseAddress
+    // compares it: without spaces, upper case. Built by buildIndex (again after a change of
+    // the areas); parseAddress computes them itself for a table not yet indexed.
+    struct PrefixSpelling {
+        QString text;
+        int area = 0;
+    };
+    const std::vector<PrefixSpelling> &prefixSpellings() const { return m_prefixes; }
+    std::vector<PrefixSpelling> makePrefixSpellings() const;
     // Effective range of an area on a model (after the model's overrides); nullopt = absent.
     std::optional<std::pair<int, int>> range(int areaIndex, const ModelVariant *model) const;
     const SystemDevice *systemDevice(SystemRole role) const;
@@ -485,6 +494,7 @@ public:
 
 private:
     QMultiHash<QString, int> m_spellings; // normalized mnemonic or alias -> instruction index
+    std::vector<PrefixSpelling> m_prefixes;
 };
 
 } // namespace rung::model
