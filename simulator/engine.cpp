@@ -169,7 +169,7 @@ void Engine::beginScan() {
             break;
         }
         auto &w = reinterpret_cast<std::uint32_t &>(R[b.bit.word]);
-        w = on ? (w | b.bit.mask) : (w & ~b.bit.mask);
+        w = (w & ~b.bit.mask) | (b.bit.mask & (0u - static_cast<std::uint32_t>(on)));
     }
     if (p.parallelInWord >= 0) {
         std::int32_t v = 0;

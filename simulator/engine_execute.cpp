@@ -197,8 +197,10 @@ std::size_t Engine::execute(std::size_t from, std::size_t to) {
     bool gate = true;
     const bool flags = p.flags.any(); // the W353 flags: MOV(21) sets EQ
     int depth = 0;                    // SBS(91) nesting
-    std::size_t returns[kSubroutineDepth] = {};
-    bool held[kSubroutineDepth] = {};
+    // Written before read (entries below depth only): no clearing at every scan, which
+    // cost a loop of its own.
+    std::size_t returns[kSubroutineDepth];
+    bool held[kSubroutineDepth];
     // A stopped scan's registers come in and go back; the whole scan keeps them local, so
     // the plain scan's loop is the one it always was.
     if constexpr (Resumable) {

@@ -4534,12 +4534,12 @@ Kiértékelés: %4 µs (%5..%6)</translation>
 <context>
     <name>rung::model::Address</name>
     <message>
-        <location filename="../model/target/address.cpp" line="+124"/>
+        <location filename="../model/target/address.cpp" line="+142"/>
         <source>A device is missing</source>
         <translation>Hiányzik egy operandus</translation>
     </message>
     <message>
-        <location line="+14"/>
+        <location line="+13"/>
         <source>%1: a number is expected after %2</source>
         <translation>%1: %2 után szám kell</translation>
     </message>
@@ -5798,7 +5798,7 @@ Kiértékelés: %4 µs (%5..%6)</translation>
     </message>
     <message>
         <location line="+5"/>
-        <location filename="../model/target/target_pl110.cpp" line="+86"/>
+        <location filename="../model/target/target_pl110.cpp" line="+85"/>
         <location filename="../model/target/target_vigor.cpp" line="+63"/>
         <location filename="../model/target/target_vpc.cpp" line="+5"/>
         <source>Start a block with a normally open contact</source>
@@ -6139,7 +6139,7 @@ Kiértékelés: %4 µs (%5..%6)</translation>
         <translation>A program vége</translation>
     </message>
     <message>
-        <location filename="../model/target/target_pl110.cpp" line="-384"/>
+        <location filename="../model/target/target_pl110.cpp" line="-383"/>
         <source>IF contact: ON while S1 ? S2 is true</source>
         <translation>IF érintkező: BE, amíg S1 ? S2 igaz</translation>
     </message>
@@ -6300,24 +6300,24 @@ Kiértékelés: %4 µs (%5..%6)</translation>
         <translation>a valós idejű órát a szimulátor nem modellezi: a szó azt tartja, amit a program beleír, és nem számol</translation>
     </message>
     <message>
-        <location line="+4"/>
-        <source>the timed interrupts (their programs are not supported) and the stepper motor&apos;s ramp are not modelled; the word is plain memory</source>
-        <translation>az időzített megszakításokat (programjaik nem támogatottak) és a léptetőmotor rámpáját a szimulátor nem modellezi; a szó egyszerű memória</translation>
-    </message>
-    <message>
-        <location line="+4"/>
+        <location line="+8"/>
         <source>the encoders are not modelled: no count, no load, no rate; the word is plain memory</source>
         <translation>az enkódereket a szimulátor nem modellezi: nincs számlálás, betöltés, sebesség; a szó egyszerű memória</translation>
     </message>
     <message>
-        <location line="+4"/>
-        <source>the input filters and the analog configuration (type, range, calibration, output range) are not modelled: an analog input reads the value set in the simulator</source>
-        <translation>a bemeneti szűrőket és az analóg beállításokat (típus, tartomány, kalibrálás, kimeneti tartomány) a szimulátor nem modellezi: az analóg bemenet a szimulátorban beállított értéket olvassa</translation>
+        <location line="-4"/>
+        <source>the timed interrupts and the stepper ramp are not modelled (interrupt programs are not supported)</source>
+        <translation>az időzített megszakításokat és a léptetőmotor rámpáját a szimulátor nem modellezi (megszakításprogram nem támogatott)</translation>
     </message>
     <message>
-        <location line="+5"/>
-        <source>the serial ports COM1, EXP1 and COM2 (state, speed, format, delays, error counts, free port) are not modelled; the word is plain memory</source>
-        <translation>a COM1, EXP1 és COM2 soros portokat (állapot, sebesség, formátum, késleltetések, hibaszámlálók, free port) a szimulátor nem modellezi; a szó egyszerű memória</translation>
+        <location line="+8"/>
+        <source>the input filters and analog settings are not modelled: an analog input reads the value set in the simulator</source>
+        <translation>a bemeneti szűrőket és az analóg beállításokat a szimulátor nem modellezi: az analóg bemenet a szimulátorban beállított értéket olvassa</translation>
+    </message>
+    <message>
+        <location line="+4"/>
+        <source>the serial ports COM1, EXP1 and COM2 are not modelled; the word is plain memory</source>
+        <translation>a COM1, EXP1 és COM2 soros portokat a szimulátor nem modellezi; a szó egyszerű memória</translation>
     </message>
     <message>
         <location line="+4"/>
@@ -7416,7 +7416,7 @@ Kiértékelés: %4 µs (%5..%6)</translation>
         <translation>a(z) %1 eredmény kívül esik a 0..9999 tartományon; %2 íródik be</translation>
     </message>
     <message>
-        <location line="+420"/>
+        <location line="+430"/>
         <source>subroutines nest deeper than %1 levels; the call is skipped</source>
         <translation>a szubrutinok %1 szintnél mélyebben ágyazódnak egymásba; a hívás elmarad</translation>
     </message>

@@ -4542,12 +4542,12 @@ Valutazione: %4 µs (%5..%6)</translation>
 <context>
     <name>rung::model::Address</name>
     <message>
-        <location filename="../model/target/address.cpp" line="+124"/>
+        <location filename="../model/target/address.cpp" line="+142"/>
         <source>A device is missing</source>
         <translation>Manca un operando</translation>
     </message>
     <message>
-        <location line="+14"/>
+        <location line="+13"/>
         <source>%1: a number is expected after %2</source>
         <translation>%1: dopo %2 è atteso un numero</translation>
     </message>
@@ -5813,7 +5813,7 @@ Valutazione: %4 µs (%5..%6)</translation>
     </message>
     <message>
         <location line="+5"/>
-        <location filename="../model/target/target_pl110.cpp" line="+86"/>
+        <location filename="../model/target/target_pl110.cpp" line="+85"/>
         <location filename="../model/target/target_vigor.cpp" line="+63"/>
         <location filename="../model/target/target_vpc.cpp" line="+5"/>
         <source>Start a block with a normally open contact</source>
@@ -6154,7 +6154,7 @@ Valutazione: %4 µs (%5..%6)</translation>
         <translation>Fine del programma</translation>
     </message>
     <message>
-        <location filename="../model/target/target_pl110.cpp" line="-384"/>
+        <location filename="../model/target/target_pl110.cpp" line="-383"/>
         <source>IF contact: ON while S1 ? S2 is true</source>
         <translation>Contatto IF: ON mentre S1 ? S2 è vero</translation>
     </message>
@@ -6315,24 +6315,24 @@ Valutazione: %4 µs (%5..%6)</translation>
         <translation>l&apos;orologio interno non è modellato: la word mantiene ciò che il programma scrive e non avanza</translation>
     </message>
     <message>
-        <location line="+4"/>
-        <source>the timed interrupts (their programs are not supported) and the stepper motor&apos;s ramp are not modelled; the word is plain memory</source>
-        <translation>gli interrupt a tempo (i loro programmi non sono supportati) e la rampa del motore passo passo non sono modellati; la word è semplice memoria</translation>
-    </message>
-    <message>
-        <location line="+4"/>
+        <location line="+8"/>
         <source>the encoders are not modelled: no count, no load, no rate; the word is plain memory</source>
         <translation>gli encoder non sono modellati: nessun conteggio, caricamento o frequenza; la word è semplice memoria</translation>
     </message>
     <message>
-        <location line="+4"/>
-        <source>the input filters and the analog configuration (type, range, calibration, output range) are not modelled: an analog input reads the value set in the simulator</source>
-        <translation>i filtri degli ingressi e la configurazione analogica (tipo, range, calibrazione, range delle uscite) non sono modellati: un ingresso analogico legge il valore impostato nel simulatore</translation>
+        <location line="-4"/>
+        <source>the timed interrupts and the stepper ramp are not modelled (interrupt programs are not supported)</source>
+        <translation>gli interrupt a tempo e la rampa del motore passo passo non sono modellati (i programmi di interrupt non sono supportati)</translation>
     </message>
     <message>
-        <location line="+5"/>
-        <source>the serial ports COM1, EXP1 and COM2 (state, speed, format, delays, error counts, free port) are not modelled; the word is plain memory</source>
-        <translation>le seriali COM1, EXP1 e COM2 (stato, baudrate, formato, ritardi, conteggio errori, free-port) non sono modellate; la word è semplice memoria</translation>
+        <location line="+8"/>
+        <source>the input filters and analog settings are not modelled: an analog input reads the value set in the simulator</source>
+        <translation>i filtri degli ingressi e le impostazioni analogiche non sono modellati: un ingresso analogico legge il valore impostato nel simulatore</translation>
+    </message>
+    <message>
+        <location line="+4"/>
+        <source>the serial ports COM1, EXP1 and COM2 are not modelled; the word is plain memory</source>
+        <translation>le seriali COM1, EXP1 e COM2 non sono modellate; la word è semplice memoria</translation>
     </message>
     <message>
         <location line="+4"/>
@@ -7431,7 +7431,7 @@ Valutazione: %4 µs (%5..%6)</translation>
         <translation>il risultato %1 è fuori da 0..9999; viene scritto %2</translation>
     </message>
     <message>
-        <location line="+420"/>
+        <location line="+430"/>
         <source>subroutines nest deeper than %1 levels; the call is skipped</source>
         <translation>le subroutine sono annidate oltre %1 livelli; la chiamata non viene eseguita</translation>
     </message>

@@ -207,21 +207,20 @@ Target makePl110Target() {
                            "writes and does not count")},
         {QStringLiteral("SM16"), QStringLiteral("SM18"),
          QT_TRANSLATE_NOOP("rung::model::Target",
-                           "the timed interrupts (their programs are not supported) and the "
-                           "stepper motor's ramp are not modelled; the word is plain memory")},
+                           "the timed interrupts and the stepper ramp are not modelled "
+                           "(interrupt programs are not supported)")},
         {QStringLiteral("SM20"), QStringLiteral("SM31"),
          QT_TRANSLATE_NOOP("rung::model::Target",
                            "the encoders are not modelled: no count, no load, no rate; the word "
                            "is plain memory")},
         {QStringLiteral("SM38"), QStringLiteral("SM69"),
          QT_TRANSLATE_NOOP("rung::model::Target",
-                           "the input filters and the analog configuration (type, range, "
-                           "calibration, output range) are not modelled: an analog input reads "
-                           "the value set in the simulator")},
+                           "the input filters and analog settings are not modelled: an analog "
+                           "input reads the value set in the simulator")},
         {QStringLiteral("SM70"), QStringLiteral("SM99"),
          QT_TRANSLATE_NOOP("rung::model::Target",
-                           "the serial ports COM1, EXP1 and COM2 (state, speed, format, delays, "
-                           "error counts, free port) are not modelled; the word is plain memory")},
+                           "the serial ports COM1, EXP1 and COM2 are not modelled; the word is "
+                           "plain memory")},
         {QStringLiteral("SM100"), QStringLiteral("SM105"),
          QT_TRANSLATE_NOOP("rung::model::Target",
                            "the display (standby brightness and delay, system and user pages "

@@ -245,7 +245,7 @@ TEST(Pl110Checks, HardwareAndInterruptMarkersWarnWhereTheyAreUsed) {
         {"SM20", "encoders"},
         {"SM31", "encoders"},
         {"SM38", "input filters"},
-        {"SM69", "analog configuration"},
+        {"SM69", "analog settings"},
         {"SM70", "serial ports"},
         {"SM99", "serial ports"},
     };
