@@ -12,6 +12,7 @@
 
 #include <QString>
 
+#include <algorithm>
 #include <functional>
 #include <memory>
 #include <optional>
@@ -210,7 +211,19 @@ private:
             static_cast<std::int32_t>((v & ~m_forceMask[i]) | (m_forceValue[i] & m_forceMask[i]));
     }
     bool isStimulus(const model::Address &address) const;
-    std::int32_t readSet(const Step &s, std::size_t step);
+    // A timer's or counter's set value (negative: none, the box is skipped), also stored where
+    // the program reads the set value in use. Inline: every timer and counter of a scan asks
+    // it; BCD digits (CPM1) are decoded out of line.
+    std::int32_t readSet(const Step &s, std::size_t step) {
+        if (s.flags & kBcd) [[unlikely]]
+            return readBcdSet(s, step);
+        const std::int32_t set = std::max<std::int32_t>(
+            0, s.x.index >= 0 ? m_words[static_cast<std::size_t>(s.x.index)] : s.x.constant);
+        if (s.y.index >= 0)
+            m_words[static_cast<std::size_t>(s.y.index)] = set;
+        return set;
+    }
+    std::int32_t readBcdSet(const Step &s, std::size_t step);
     void wordLogic(const Step &s, std::size_t step); // Code::WordLogic, its input ON
     // engine_words.cpp: Vigor CCD with its input ON; whether it takes a byte a word now.
     void checkCode(const Step &s, std::size_t step);

@@ -59,28 +59,23 @@ std::int32_t fromBcd(std::int32_t raw) {
 
 } // namespace
 
-std::int32_t Engine::readSet(const Step &s, std::size_t step) {
-    std::int32_t set = s.x.index >= 0 ? m_words[static_cast<std::size_t>(s.x.index)] : s.x.constant;
-    const std::int32_t raw = set;
-    if (s.flags & kBcd) {
-        const std::int32_t decoded = fromBcd(set);
-        if (decoded < 0) {
-            setFlag(m_program->flags.error, true); // W353 TIM / CNT: "ER: SV is not in BCD"
-            runtimeError(step,
-                         Tr::tr("set value %1 is not a BCD number; the instruction is "
-                                "skipped")
-                             .arg(QString::number(static_cast<std::uint32_t>(set) & 0xFFFFu, 16)));
-            return -1;
-        }
-        set = decoded;
+std::int32_t Engine::readBcdSet(const Step &s, std::size_t step) {
+    const std::int32_t raw =
+        s.x.index >= 0 ? m_words[static_cast<std::size_t>(s.x.index)] : s.x.constant;
+    const std::int32_t decoded = fromBcd(raw);
+    if (decoded < 0) {
+        setFlag(m_program->flags.error, true); // W353 TIM / CNT: "ER: SV is not in BCD"
+        runtimeError(step,
+                     Tr::tr("set value %1 is not a BCD number; the instruction is "
+                            "skipped")
+                         .arg(QString::number(static_cast<std::uint32_t>(raw) & 0xFFFFu, 16)));
+        return -1;
     }
-    set = std::max<std::int32_t>(0, set);
     // The set value in use, as the PLC holds it: BCD digits on the CPM1 (W353: timer and
     // counter SVs and PVs are BCD), so the watch list shows the word a Host Link read gives.
     if (s.y.index >= 0)
-        m_words[static_cast<std::size_t>(s.y.index)] =
-            (s.flags & kBcd) ? wrapToWidth(raw, 16) : set;
-    return set;
+        m_words[static_cast<std::size_t>(s.y.index)] = wrapToWidth(raw, 16);
+    return std::max<std::int32_t>(0, decoded);
 }
 
 // Word logic and the BCD conversions act on the word's bits, so they read it unsigned at the
@@ -172,16 +167,6 @@ std::size_t Engine::execute(std::size_t from, std::size_t to) {
             return true;
         const ElementGate &g = p.gates[static_cast<std::size_t>(slot)];
         return !g.bit.valid() || rd(g.bit) == g.whenOn;
-    };
-    // A timer's or counter's set value: readSet's work, inline for the plain case (no BCD
-    // digits to decode), which every timer and counter of a scan asks once.
-    auto setValue = [&](const Step &s, std::size_t at) -> std::int32_t {
-        if (s.flags & kBcd) [[unlikely]]
-            return readSet(s, at);
-        const std::int32_t set = std::max<std::int32_t>(0, rdw(s.x));
-        if (s.y.index >= 0)
-            R[s.y.index] = set;
-        return set;
     };
     auto wrw = [&](std::int32_t index, std::int64_t v, int width) {
         storeWord(static_cast<std::size_t>(index), v, width);
@@ -377,7 +362,7 @@ std::size_t Engine::execute(std::size_t from, std::size_t to) {
             ElementState &st = m_states[static_cast<std::size_t>(s.slot)];
             if (!gateOpen(s.slot)) // Area::enabledBy (PL110 SM0.13): the box does nothing
                 break;
-            const std::int32_t set = setValue(s, i);
+            const std::int32_t set = readSet(s, i);
             if (set < 0)
                 break;
             std::int64_t units = 0;
@@ -413,7 +398,7 @@ std::size_t Engine::execute(std::size_t from, std::size_t to) {
             }
             if (!gateOpen(s.slot)) // Area::enabledBy (PL110 SM0.13): the box does nothing
                 break;
-            const std::int32_t set = setValue(s, i);
+            const std::int32_t set = readSet(s, i);
             if (set < 0)
                 break;
             if (reset) {
@@ -434,7 +419,7 @@ std::size_t Engine::execute(std::size_t from, std::size_t to) {
             const bool up = bsp > 0 ? blocks[--bsp] : false;
             if (!gateOpen(s.slot)) // Area::enabledBy (PL110 SM0.13): the box does nothing
                 break;
-            const std::int32_t set = setValue(s, i);
+            const std::int32_t set = readSet(s, i);
             if (set < 0)
                 break;
             const bool upEdge = up && !(st.previous & 1);
@@ -464,7 +449,7 @@ std::size_t Engine::execute(std::size_t from, std::size_t to) {
             ElementState &st = m_states[static_cast<std::size_t>(s.slot)];
             if (!gateOpen(s.slot)) // Area::enabledBy (PL110 SM0.13): the box does nothing
                 break;
-            const std::int32_t set = setValue(s, i);
+            const std::int32_t set = readSet(s, i);
             if (set < 0)
                 break;
             std::int32_t &current = R[s.dest];
@@ -528,7 +513,7 @@ std::size_t Engine::execute(std::size_t from, std::size_t to) {
             const bool up = bsp > 0 ? blocks[--bsp] : false;
             if (!gateOpen(s.slot)) // Area::enabledBy (PL110 SM0.13): the box does nothing
                 break;
-            const std::int32_t set = setValue(s, i);
+            const std::int32_t set = readSet(s, i);
             if (set < 0)
                 break;
             const bool upEdge = up && !(st.previous & 1);
