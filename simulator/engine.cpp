@@ -168,8 +168,7 @@ void Engine::beginScan() {
                 on = (t % clock) < clock / 2;
             break;
         }
-        auto &w = reinterpret_cast<std::uint32_t &>(R[b.bit.word]);
-        w = (w & ~b.bit.mask) | (b.bit.mask & (0u - static_cast<std::uint32_t>(on)));
+        writeBit(R[b.bit.word], b.bit.mask, on);
     }
     if (p.parallelInWord >= 0) {
         std::int32_t v = 0;

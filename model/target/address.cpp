@@ -15,23 +15,6 @@ struct Tr {
     Q_DECLARE_TR_FUNCTIONS(rung::model::Address)
 };
 
-// Prefixes are compared without spaces and case: "TIM 000", "TIM000" and "tim000" are one
-// device, and VPC's lower-case "i00" may be typed as "I00".
-QString squeeze(QStringView text) {
-    QString out;
-    out.reserve(text.size());
-    for (QChar c : text) {
-        const char16_t u = c.unicode();
-        if (u < 0x80) { // ASCII, nearly every operand: no table lookup
-            if (u != ' ' && (u < '\t' || u > '\r'))
-                out.append(QChar(u >= 'a' && u <= 'z' ? u - ('a' - 'A') : u));
-        } else if (!c.isSpace()) {
-            out.append(c.toUpper());
-        }
-    }
-    return out;
-}
-
 // The length of the longest spelling of each area's prefix that starts s and is followed
 // by a digit, or -1; and the longest of all. This runs for every operand the parser reads, so
 // it compares against the table's prepared spellings (Target::prefixSpellings) once.
@@ -129,11 +112,26 @@ int originalColumn(QStringView text, qsizetype squeezedPos) {
 
 } // namespace
 
+QString squeezeAddress(QStringView text) {
+    QString out;
+    out.reserve(text.size());
+    for (QChar c : text) {
+        const char16_t u = c.unicode();
+        if (u < 0x80) { // ASCII, nearly every operand: no table lookup
+            if (u != ' ' && (u < '\t' || u > '\r'))
+                out.append(QChar(u >= 'a' && u <= 'z' ? u - ('a' - 'A') : u));
+        } else if (!c.isSpace()) {
+            out.append(c.toUpper());
+        }
+    }
+    return out;
+}
+
 std::variant<Address, AddressError> parseAddress(const Target &target, QStringView text,
                                                  const ModelVariant *model) {
     const QStringView trimmed = text.trimmed();
     const int lead = static_cast<int>(text.indexOf(trimmed.isEmpty() ? text : trimmed));
-    const QString s = squeeze(trimmed);
+    const QString s = squeezeAddress(trimmed);
     const QStringView shown = trimmed; // for the messages: no copy on the way that has none
     auto error = [&](const QString &message, qsizetype squeezedPos) {
         return AddressError{message, lead + originalColumn(trimmed, squeezedPos)};
@@ -151,7 +149,7 @@ std::variant<Address, AddressError> parseAddress(const Target &target, QStringVi
             ++letters;
         if (letters == s.size()) {
             for (const Area &a : target.areas)
-                if (squeeze(a.prefix) == s)
+                if (squeezeAddress(a.prefix) == s)
                     return error(Tr::tr("%1: a number is expected after %2").arg(shown, a.prefix),
                                  s.size());
         }

@@ -21,6 +21,10 @@ struct AddressError {
     int column = 0;
 };
 
+// An address as parseAddress compares it with the table's prefixes: without spaces, upper
+// case. "TIM 000", "TIM000" and "tim000" are one device, and VPC's "i00" may be typed "I00".
+QString squeezeAddress(QStringView text);
+
 // Parse a device address as the target writes it: "X10", "i00", "010.00", "HR00.05",
 // "TIM 000" (CPM1 timer number), "I20", "SM0.0". With a model the model's ranges apply
 // ("o31 is beyond VPC2416's outputs o00..o15"); without one, the family's full ranges.

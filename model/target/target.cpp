@@ -1,5 +1,6 @@
 #include "model/target/target.h"
 
+#include "model/target/address.h"
 #include "model/target/target_data.h"
 
 #include <array>
@@ -129,13 +130,8 @@ std::vector<Target::PrefixSpelling> Target::makePrefixSpellings() const {
         const Area &a = area(i);
         QStringList spellings{a.prefix};
         spellings << a.prefixAliases;
-        for (const QString &spelling : spellings) {
-            QString squeezed;
-            for (QChar c : spelling)
-                if (!c.isSpace())
-                    squeezed.append(c.toUpper());
-            out.push_back({squeezed, i});
-        }
+        for (const QString &spelling : spellings)
+            out.push_back({squeezeAddress(spelling), i});
     }
     return out;
 }

@@ -441,6 +441,40 @@ TEST(Address, LongestPrefixWins) {
     EXPECT_EQ(cpm1().area(parsed(cpm1(), QStringLiteral("HR05")).area).key, QStringLiteral("HR"));
 }
 
+// A table the registry has not indexed (a fifth family being written, a test's own) parses
+// as the indexed one does: parseAddress prepares the prefix spellings itself then.
+TEST(Address, ATableNotYetIndexedParsesAsTheIndexedOne) {
+    Target fresh;
+    fresh.displayName = cpm1().displayName;
+    fresh.areas = cpm1().areas;
+    fresh.constants = cpm1().constants;
+    ASSERT_TRUE(fresh.prefixSpellings().empty());
+    for (const char *text : {"HR05", "TIM 000", "tim000", "010.00", "00105", "LR 15.15"})
+        EXPECT_EQ(parsed(fresh, QLatin1String(text)), parsed(cpm1(), QLatin1String(text))) << text;
+    EXPECT_EQ(failure(fresh, QStringLiteral("HR")).message,
+              failure(cpm1(), QStringLiteral("HR")).message);
+    fresh.buildIndex();
+    EXPECT_EQ(fresh.prefixSpellings().size(), cpm1().prefixSpellings().size());
+}
+
+// A copy of a table given an area of its own is indexed again (Target::buildIndex), and the
+// new prefix is read with and without spaces, in either case, by its alias too.
+TEST(Address, ACopiedTableWithANewAreaReadsItsPrefixOnceIndexedAgain) {
+    Target fifth = vigor();
+    Area words;
+    words.key = QStringLiteral("W");
+    words.prefix = QStringLiteral("WR");
+    words.prefixAliases = {QStringLiteral("W R")};
+    words.kind = AreaKind::Word;
+    words.last = 99;
+    fifth.areas.push_back(words);
+    fifth.buildIndex();
+    const int w = static_cast<int>(fifth.areas.size()) - 1;
+    for (const char *text : {"WR12", "wr 12", "W R12", "w r 12"})
+        EXPECT_EQ(parsed(fifth, QLatin1String(text)), (Address{w, 12, -1})) << text;
+    EXPECT_EQ(parsed(fifth, QStringLiteral("D12")), parsed(vigor(), QStringLiteral("D12")));
+}
+
 TEST(Address, InvalidAddressPrintsAsQuestionMark) {
     EXPECT_EQ(formatAddress(vpc(), Address{}), QStringLiteral("?"));
     EXPECT_EQ(formatAddress(vpc(), Address{1000, 0, -1}), QStringLiteral("?"));
