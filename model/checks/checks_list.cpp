@@ -50,8 +50,8 @@ public:
         switchedElements(m_list, m_found);
         duplicates();
         length();
-        // Drawn only here: a form-only check (betterForm) needs no drawing of the whole list.
-        m_ladder = listToLadder(m_list);
+        // Read only here: a form-only check (betterForm) needs no reading of the whole list.
+        m_drawing = listToLadderProblems(m_list);
         structure();
         return std::move(m_found);
     }
@@ -592,7 +592,7 @@ private:
                         QLatin1String(code) == QLatin1String("ST003"));
             });
         };
-        for (const Diagnostic &d : m_ladder.problems) {
+        for (const Diagnostic &d : m_drawing) {
             const bool stack = d.code == QLatin1String("CV004");
             const bool open = d.code == QLatin1String("CV008");
             if ((stack && reported("ST002", d.location)) || (open && reported("ST003", d.location)))
@@ -619,7 +619,7 @@ private:
     const QString *m_source = nullptr;
     QStringList m_sourceLines; // split on the first operand finding
     std::vector<RungSpan> m_spans;
-    ToLadderResult m_ladder;
+    std::vector<Diagnostic> m_drawing; // what keeps the list from being drawn
     bool m_systemParsed = false;
     std::map<Address, const SystemDevice *> m_systemDriven;
     std::map<int, SpanForm> m_forms; // by the rung's first instruction

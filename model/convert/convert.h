@@ -45,5 +45,8 @@ struct ToLadderResult {
 
 ToListingResult ladderToList(const LadderProgram &ladder);
 ToLadderResult listToLadder(const InstructionList &list);
+// What listToLadder reports, without drawing the ladder: the checks need only this, and a
+// drawing of a 10,000-rung list is most of their memory.
+std::vector<Diagnostic> listToLadderProblems(const InstructionList &list);
 
 } // namespace rung::model

@@ -171,8 +171,11 @@ Rung layout(const RungLogic &logic) {
 
 class Reader {
 public:
-    explicit Reader(const InstructionList &list)
-        : m_list(list) {
+    // draw = false: the problems only, no rung laid out (every problem is found while
+    // reading; layout() finds none).
+    Reader(const InstructionList &list, bool draw)
+        : m_list(list)
+        , m_draw(draw) {
         m_result.ladder.target = list.target;
     }
 
@@ -421,7 +424,7 @@ private:
                             .arg(firstIns.line));
             }
         }
-        if (!m_broken && !m_spanBroken) {
+        if (m_draw && !m_broken && !m_spanBroken) {
             RungLogic logic;
             if (!m_boxInputs.empty()) {
                 logic.boxInputs = m_boxInputs;
@@ -461,6 +464,7 @@ private:
     }
 
     const InstructionList &m_list;
+    const bool m_draw;
     ToLadderResult m_result;
     std::vector<Node> m_nodes;
     std::vector<Instruction> m_outputs;
@@ -488,7 +492,11 @@ Rung layoutRung(const RungLogic &logic) {
 } // namespace detail
 
 ToLadderResult listToLadder(const InstructionList &list) {
-    return Reader(list).run();
+    return Reader(list, true).run();
+}
+
+std::vector<Diagnostic> listToLadderProblems(const InstructionList &list) {
+    return Reader(list, false).run().problems;
 }
 
 } // namespace rung::model

@@ -99,6 +99,11 @@ struct PrintedListing {
     int instructionAt(int line) const;  // -1 for a comment line or beyond the text
 };
 PrintedListing printListing(const InstructionList &list, const PrintOptions &options = {});
+// The list's instructions with `comments` in place of its own (the document adds its
+// placeholder lines so), without a copy of the instructions.
+PrintedListing printListing(const InstructionList &list,
+                            const std::vector<std::pair<int, QString>> &comments,
+                            const PrintOptions &options = {});
 QString printInstruction(const Target &target, const Instruction &instruction);
 // One operand alone, as the drawing and its tooltips show it (X0, K10, #0150, a PL110 text).
 QString formatOperand(const Target &target, const Operand &operand);

@@ -98,6 +98,12 @@ QString printInstruction(const Target &target, const Instruction &instruction) {
 }
 
 PrintedListing printListing(const InstructionList &list, const PrintOptions &options) {
+    return printListing(list, list.comments, options);
+}
+
+PrintedListing printListing(const InstructionList &list,
+                            const std::vector<std::pair<int, QString>> &comments,
+                            const PrintOptions &options) {
     PrintedListing printed;
     if (!list.target)
         return printed;
@@ -119,9 +125,8 @@ PrintedListing printListing(const InstructionList &list, const PrintOptions &opt
     int step = 0;
     for (int i = 0; i <= count; ++i) {
         printed.firstLine.push_back(line);
-        while (options.comments && comment < list.comments.size() &&
-               list.comments[comment].first <= i) {
-            for (const QString &part : list.comments[comment].second.split(lineBreak)) {
+        while (options.comments && comment < comments.size() && comments[comment].first <= i) {
+            for (const QString &part : comments[comment].second.split(lineBreak)) {
                 out += QLatin1String("; ") + part;
                 endLine(-1);
             }
@@ -172,8 +177,7 @@ double timerBaseMs(const Target &target, const Instruction &instruction) {
     // The instruction's own base (CPM1 TIMH), else the timer area's (Vigor T200.. 10 ms),
     // else the target's.
     const Operand *timer = instruction.operands.empty() ? nullptr : &instruction.operands[0];
-    const double areaBase = timer && timer->kind == Operand::Kind::Device &&
-                                    timer->address.valid()
+    const double areaBase = timer && timer->kind == Operand::Kind::Device && timer->address.valid()
                                 ? target.area(timer->address.area).timerBaseMs
                                 : 0;
     double base = instruction.spec->timerBaseMs > 0 ? instruction.spec->timerBaseMs

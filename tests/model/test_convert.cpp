@@ -152,6 +152,43 @@ TEST(Conversion, OpenBlockAtTheEndIsReported) {
     EXPECT_EQ(r.problems.back().code, QStringLiteral("CV007"));
 }
 
+// The checks read a listing's problems without drawing it (listToLadderProblems): the same
+// problems, in the same order, as the drawing finds, over random programs of every target
+// with lines left out (most then have problems) and the manual's broken forms.
+TEST(Conversion, ProblemsWithoutTheDrawingAreTheDrawingsProblems) {
+    const auto same = [](const InstructionList &list) {
+        const std::vector<Diagnostic> drawn = listToLadder(list).problems;
+        const std::vector<Diagnostic> read = listToLadderProblems(list);
+        EXPECT_EQ(read.size(), drawn.size());
+        for (std::size_t k = 0; k < std::min(read.size(), drawn.size()); ++k) {
+            EXPECT_EQ(read[k].code, drawn[k].code) << k;
+            EXPECT_EQ(read[k].location.line, drawn[k].location.line) << k;
+            EXPECT_EQ(read[k].location.column, drawn[k].location.column) << k;
+            EXPECT_EQ(read[k].message, drawn[k].message) << k;
+        }
+        return drawn.size();
+    };
+    EXPECT_EQ(same(parse(Family::Vigor, lines({"LD X0", "ANB", "OUT Y0", "LD X1", "OUT Y1"}))), 1u);
+    EXPECT_EQ(same(parse(Family::Vigor, lines({"LD X0", "OUT Y0", "LD X1", "LD X2"}))), 1u);
+    std::size_t withProblems = 0;
+    for (Family f : {Family::Vpc, Family::Vigor, Family::Cpm1, Family::Pl110}) {
+        const Target &t = Target::get(f);
+        for (std::uint64_t seed = 1; seed <= 30; ++seed) {
+            rung::testing::RandomProgramOptions o;
+            o.extended = seed % 2 == 0;
+            QStringList text = rung::testing::randomProgram(t, seed, o).split(QLatin1Char('\n'));
+            EXPECT_EQ(same(parse(f, text.join(QLatin1Char('\n')))), 0u) << seed;
+            std::mt19937_64 random(seed);
+            for (int cut = 0; cut < 3 && text.size() > 2; ++cut) {
+                text.removeAt(
+                    static_cast<qsizetype>(random() % static_cast<std::uint64_t>(text.size() - 1)));
+                withProblems += same(parse(f, text.join(QLatin1Char('\n')))) > 0 ? 1 : 0;
+            }
+        }
+    }
+    EXPECT_GT(withProblems, 100u); // of 360 cut listings: the broken paths are compared too
+}
+
 // The seed examples of ladder-rules.md (the execution-order program, the fuzzy pairs of seed
 // 004 1.7 and 1.8) and the design examples of seed 004 1.9 (their listings are drawings in
 // the manual; written here from the text).

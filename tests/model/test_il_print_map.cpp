@@ -87,3 +87,22 @@ TEST(PrintedListing, RandomProgramsWithRungCommentsKeepTheirMap) {
         }
     }
 }
+
+// The document prints its listing with placeholder comments of its own: the comments given
+// replace the list's, the instructions and their line map are the list's.
+TEST(PrintedListing, CommentsGivenApartReplaceTheListsOwn) {
+    const InstructionList list = parse(
+        Family::Vigor, QStringLiteral("; the list's own\nLD X0\nOUT Y0\nLD X1\nOUT Y1\nEND\n"));
+    const std::vector<std::pair<int, QString>> comments = {{0, QStringLiteral("first")},
+                                                           {2, QStringLiteral("placeholder")},
+                                                           {2, QStringLiteral("third")}};
+    const PrintedListing printed = printListing(list, comments);
+    EXPECT_EQ(printed.text, QStringLiteral("; first\nLD X0\nOUT Y0\n; placeholder\n; third\n"
+                                           "LD X1\nOUT Y1\nEND\n"));
+    EXPECT_EQ(printed.instructionLine, (std::vector<int>{2, 3, 6, 7, 8}));
+    EXPECT_EQ(printed.firstLine, (std::vector<int>{1, 3, 4, 7, 8, 9}));
+    InstructionList same = list;
+    same.comments = comments;
+    expectMapMatchesTheText(same, printed);
+    EXPECT_EQ(printListing(list).text.count(QStringLiteral("the list's own")), 1);
+}
