@@ -192,17 +192,17 @@ int Document::lineOf(const model::Location &location) const {
         return it->second;
     const auto listed = [&](int rung) {
         const auto r = static_cast<std::size_t>(rung);
-        return r + 1 < m_listing.rungFirst.size() &&
-               m_listing.rungFirst[r] < m_listing.rungFirst[r + 1];
+        return r + 1 < m_listing->rungFirst.size() &&
+               m_listing->rungFirst[r] < m_listing->rungFirst[r + 1];
     };
     if (location.rung >= 0 && location.row >= 0 && location.cell >= 0 && listed(location.rung)) {
         const model::CellOrigin cell{location.rung, location.row, location.cell};
-        const auto &origin = m_listing.origin;
+        const auto &origin = m_listing->origin;
         const auto first =
-            static_cast<std::size_t>(m_listing.rungFirst[static_cast<std::size_t>(location.rung)]);
+            static_cast<std::size_t>(m_listing->rungFirst[static_cast<std::size_t>(location.rung)]);
         const auto end = std::min(
             origin.size(), static_cast<std::size_t>(
-                               m_listing.rungFirst[static_cast<std::size_t>(location.rung) + 1]));
+                               m_listing->rungFirst[static_cast<std::size_t>(location.rung) + 1]));
         for (std::size_t i = first; i < end; ++i)
             if (origin[i] == cell && i < m_printed.instructionLine.size())
                 return m_printed.instructionLine[i];
@@ -212,7 +212,7 @@ int Document::lineOf(const model::Location &location) const {
 
 int Document::stepCount() const {
     int steps = 0;
-    for (const model::Instruction &i : m_listing.list.instructions)
+    for (const model::Instruction &i : m_listing->list.instructions)
         steps += model::instructionSteps(*m_project.target, i);
     return steps;
 }
@@ -473,29 +473,33 @@ QString Document::heldRung(int index) {
 }
 
 void Document::refresh() {
-    m_listing = model::ladderToList(m_project.program);
+    m_listing =
+        std::make_shared<const model::ToListingResult>(model::ladderToList(m_project.program));
     // The list as shown: a placeholder comment where a rung could not be listed (a rung that
-    // lists nothing and is not blank), so the two views never disagree silently.
-    model::InstructionList shown = m_listing.list;
-    std::vector<std::pair<int, std::size_t>> placeholders; // rung, its comment in `shown`
-    // A left-out contact (rung, row, column) and its comment in `shown`.
+    // lists nothing and is not blank), so the two views never disagree silently. Only the
+    // comments are the document's own: the instructions are printed from the listing, not
+    // copied (a copy of a 10,000-rung list was a fifth of the ladder view's memory).
+    const auto &listed = m_listing->list.comments;
+    std::vector<std::pair<int, QString>> shownComments;
+    std::vector<std::pair<int, std::size_t>> placeholders; // rung, its comment in shownComments
+    // A left-out contact (rung, row, column) and its comment in shownComments.
     std::vector<std::pair<std::tuple<int, int, int>, std::size_t>> contactMarks;
     m_unlisted.clear();
     {
         std::vector<std::pair<int, QString>> comments;
         std::size_t next = 0;
         const auto &all = m_project.program.rungs;
-        for (std::size_t r = 0; r < all.size() && r + 1 < m_listing.rungFirst.size(); ++r) {
-            const int at = m_listing.rungFirst[r];
-            if (at < m_listing.rungFirst[r + 1]) {
+        for (std::size_t r = 0; r < all.size() && r + 1 < m_listing->rungFirst.size(); ++r) {
+            const int at = m_listing->rungFirst[r];
+            if (at < m_listing->rungFirst[r + 1]) {
                 // A listed rung: a marked line for each contact it leaves out, after the
                 // rung's own comment, before its first instruction.
                 const int index = static_cast<int>(r);
-                const auto leftOut = leftOutContacts(all[r], index, m_listing);
+                const auto leftOut = leftOutContacts(all[r], index, *m_listing);
                 if (leftOut.empty())
                     continue;
-                while (next < shown.comments.size() && shown.comments[next].first <= at)
-                    comments.push_back(shown.comments[next++]);
+                while (next < listed.size() && listed[next].first <= at)
+                    comments.push_back(listed[next++]);
                 const QString key = heldRung(index);
                 for (const auto &[row, col] : leftOut) {
                     comments.emplace_back(
@@ -512,7 +516,7 @@ void Document::refresh() {
                 continue;
             }
             const auto problem = std::find_if(
-                m_listing.problems.begin(), m_listing.problems.end(),
+                m_listing->problems.begin(), m_listing->problems.end(),
                 [r](const model::Diagnostic &d) { return d.location.rung == static_cast<int>(r); });
             const model::Rung &rung = all[r];
             const bool blank =
@@ -520,11 +524,11 @@ void Document::refresh() {
                              [](const auto &o) { return o.has_value(); }) &&
                 std::all_of(rung.cells.begin(), rung.cells.end(),
                             [](const model::Cell &c) { return c.kind == model::CellKind::Empty; });
-            if (problem == m_listing.problems.end() && blank)
+            if (problem == m_listing->problems.end() && blank)
                 continue;
-            while (next < shown.comments.size() && shown.comments[next].first < at)
-                comments.push_back(shown.comments[next++]);
-            const QString why = problem != m_listing.problems.end()
+            while (next < listed.size() && listed[next].first < at)
+                comments.push_back(listed[next++]);
+            const QString why = problem != m_listing->problems.end()
                                     ? problem->message
                                     : tr("it has nothing to list yet");
             comments.emplace_back(
@@ -536,18 +540,18 @@ void Document::refresh() {
             placeholders.emplace_back(static_cast<int>(r), comments.size() - 1);
             m_unlisted.push_back({static_cast<int>(r), why});
         }
-        comments.insert(comments.end(), shown.comments.begin() + static_cast<std::ptrdiff_t>(next),
-                        shown.comments.end());
-        shown.comments = std::move(comments);
+        comments.insert(comments.end(), listed.begin() + static_cast<std::ptrdiff_t>(next),
+                        listed.end());
+        shownComments = std::move(comments);
     }
-    m_printed = model::printListing(shown);
+    m_printed = model::printListing(m_listing->list, shownComments);
     m_listingText = m_printed.text;
     // Lines of the printed listing: comments come before their rung's first instruction; a
     // placeholder is its rung's line.
     m_rungLine.assign(m_project.program.rungs.size(), -1);
     {
-        const auto &ins = shown.instructions;
-        const auto &comments = shown.comments;
+        const auto &ins = m_listing->list.instructions;
+        const auto &comments = shownComments;
         // The comments before instruction i fill the lines from firstLine[i] on (the printer's
         // map), in their order.
         std::vector<int> commentLine(comments.size(), 0);
@@ -573,9 +577,9 @@ void Document::refresh() {
             if (!isPlaceholder[k] && first == 0)
                 first = commentLine[k];
         }
-        for (std::size_t r = 0; r + 1 < m_listing.rungFirst.size() && r < m_rungLine.size(); ++r) {
-            const auto at = static_cast<std::size_t>(m_listing.rungFirst[r]);
-            if (m_listing.rungFirst[r] < m_listing.rungFirst[r + 1])
+        for (std::size_t r = 0; r + 1 < m_listing->rungFirst.size() && r < m_rungLine.size(); ++r) {
+            const auto at = static_cast<std::size_t>(m_listing->rungFirst[r]);
+            if (m_listing->rungFirst[r] < m_listing->rungFirst[r + 1])
                 m_rungLine[r] = firstOwnComment[at] > 0 ? firstOwnComment[at] : instructionLine[at];
         }
     }
@@ -583,7 +587,7 @@ void Document::refresh() {
     options.model = modelVariant();
     // The checks report what keeps a rung from being listed (the listing's own problems) by
     // the documented codes, RC001 with its fix: those problems are not added a second time.
-    m_diagnostics = model::checkLadder(m_project.program, m_listing, options);
+    m_diagnostics = model::checkLadder(m_project.program, *m_listing, options);
     emit programChanged();
 }
 

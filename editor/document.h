@@ -12,6 +12,7 @@
 
 #include <functional>
 #include <map>
+#include <memory>
 #include <tuple>
 
 namespace rung::editor {
@@ -41,7 +42,12 @@ public:
     void markUnsaved() { m_undo.resetClean(); }
 
     // The canonical listing of the ladder and where each rung starts in it.
-    const model::ToListingResult &listing() const { return m_listing; }
+    const model::ToListingResult &listing() const { return *m_listing; }
+    // The listing's instructions, kept alive for a reader that holds them past the next
+    // refresh (the list pane's values), without a copy.
+    std::shared_ptr<const std::vector<model::Instruction>> sharedInstructions() const {
+        return {m_listing, &m_listing->list.instructions};
+    }
     // The listing as the list pane shows it: a rung the list cannot express (a bridge, an
     // element the target lacks) has a placeholder comment in its place, "; [[3:9f2c41]] Rung
     // 3 is not in the list: ...", that names it and why; setListing puts that rung back
@@ -146,7 +152,8 @@ private:
     model::Project m_project;
     QString m_path;
     QUndoStack m_undo;
-    model::ToListingResult m_listing;
+    std::shared_ptr<const model::ToListingResult> m_listing =
+        std::make_shared<const model::ToListingResult>();
     QString m_listingText;
     model::PrintedListing m_printed;
     std::vector<Unlisted> m_unlisted;

@@ -16,9 +16,9 @@
 
 #include <functional>
 #include <map>
-#include <vector>
 #include <memory>
 #include <optional>
+#include <vector>
 
 namespace rung::editor {
 
@@ -99,9 +99,10 @@ public:
     void setMonitorSource(model::MonitorSource *source);
     model::MonitorSource *monitorSource() const { return m_source; }
     // Which instruction of the running program each line (0-based) holds, -1 for none, and
-    // the instructions; empty when the text shown is not the running program's.
+    // the instructions (shared with the document, not copied: a 10,000-rung listing is
+    // ~18 MB); empty when the text shown is not the running program's.
     void setMonitorLines(std::vector<int> instructionOfLine,
-                         std::vector<model::Instruction> instructions);
+                         std::shared_ptr<const std::vector<model::Instruction>> instructions);
     struct LineValue {
         std::optional<bool> result; // the logic result after the instruction, when known
         QString text;               // the devices' values
@@ -149,7 +150,9 @@ private:
     QPointer<model::MonitorSource> m_source;
     MonitorCommands *m_commands = nullptr;
     std::vector<int> m_lineInstruction;
-    std::vector<model::Instruction> m_instructions;
+    std::shared_ptr<const std::vector<model::Instruction>> m_instructions;
+    // The instruction at index `index` of m_instructions, or null.
+    const model::Instruction *monitoredInstruction(int index) const;
     std::map<int, LineValue> m_painted; // what the lines on screen show, by line
 };
 

@@ -52,13 +52,20 @@ void IlEditor::setMonitorSource(model::MonitorSource *source) {
     viewport()->update();
 }
 
-void IlEditor::setMonitorLines(std::vector<int> instructionOfLine,
-                               std::vector<model::Instruction> instructions) {
+void IlEditor::setMonitorLines(
+    std::vector<int> instructionOfLine,
+    std::shared_ptr<const std::vector<model::Instruction>> instructions) {
     m_lineInstruction = std::move(instructionOfLine);
     m_instructions = std::move(instructions);
     m_painted.clear();
     if (m_source)
         viewport()->update();
+}
+
+const model::Instruction *IlEditor::monitoredInstruction(int index) const {
+    if (!m_instructions || index < 0 || static_cast<std::size_t>(index) >= m_instructions->size())
+        return nullptr;
+    return &(*m_instructions)[static_cast<std::size_t>(index)];
 }
 
 std::optional<IlEditor::LineValue> IlEditor::monitoredLine(int line) const {
@@ -67,11 +74,12 @@ std::optional<IlEditor::LineValue> IlEditor::monitoredLine(int line) const {
         static_cast<std::size_t>(line) >= m_lineInstruction.size())
         return std::nullopt;
     const int index = m_lineInstruction[static_cast<std::size_t>(line)];
-    if (index < 0 || static_cast<std::size_t>(index) >= m_instructions.size())
+    const model::Instruction *found = monitoredInstruction(index);
+    if (!found)
         return std::nullopt;
-    const model::Instruction &ins = m_instructions[static_cast<std::size_t>(index)];
+    const model::Instruction &ins = *found;
     LineValue v;
-    if (s->powerFlow.size() == m_instructions.size())
+    if (s->powerFlow.size() == m_instructions->size())
         v.result = s->powerFlow[static_cast<std::size_t>(index)];
     QStringList parts;
     const model::Op op = ins.op();
@@ -219,14 +227,14 @@ void IlEditor::paintValues() {
 QMenu *IlEditor::monitorMenu(int line, QWidget *parent) {
     if (line < 0 || static_cast<std::size_t>(line) >= m_lineInstruction.size())
         return nullptr;
-    const int index = m_lineInstruction[static_cast<std::size_t>(line)];
-    if (index < 0 || static_cast<std::size_t>(index) >= m_instructions.size())
+    const model::Instruction *ins =
+        monitoredInstruction(m_lineInstruction[static_cast<std::size_t>(line)]);
+    if (!ins)
         return nullptr;
     m_commands->setTarget(m_target);
     auto *menu = new QMenu(parent);
     menu->setObjectName(QStringLiteral("monitorMenu"));
-    if (!m_commands->addActions(
-            menu, monitorTargets(*m_target, m_instructions[static_cast<std::size_t>(index)]))) {
+    if (!m_commands->addActions(menu, monitorTargets(*m_target, *ins))) {
         delete menu;
         return nullptr;
     }

@@ -68,7 +68,7 @@ void MainWindow::updateMonitorLabel() {
 }
 
 void MainWindow::updateMonitorLines(bool typed) {
-    const auto &instructions = m_document->listing().list.instructions;
+    const auto instructions = m_document->sharedInstructions();
     if (!typed) {
         m_il->setMonitorLines(m_document->printedListing().instructionOfLine, instructions);
         return;
@@ -78,7 +78,7 @@ void MainWindow::updateMonitorLines(bool typed) {
     if (m_typedSteps.text == m_il->text() && !m_typedSteps.instructionOfLine.empty())
         m_il->setMonitorLines(m_typedSteps.instructionOfLine, instructions);
     else
-        m_il->setMonitorLines({}, {});
+        m_il->setMonitorLines({}, nullptr);
 }
 
 } // namespace rung::app
