@@ -69,3 +69,22 @@ TEST(DocumentLines, AListingFindingIsOnItsInstructionsLineAndCell) {
     EXPECT_EQ(op002->location.cell, document.ladder().rungs[1].columns) << "the output column";
     EXPECT_EQ(document.lineOf(op002->location), lineOf(QStringLiteral("OUT X3")));
 }
+
+// The list pane's values read the document's instructions without a copy: what it holds stays
+// the listing it was given after an edit replaces the document's, and is the document's own
+// until then.
+TEST(DocumentLines, SharedInstructionsOutliveTheNextRefreshUnchanged) {
+    editor::Document document;
+    document.reset(model::Target::get(model::Family::Vigor), QStringLiteral("VB"));
+    std::vector<model::Diagnostic> errors;
+    ASSERT_TRUE(document.setListing(QStringLiteral("LD X0\nOUT Y0\nEND\n"), &errors));
+    const auto held = document.sharedInstructions();
+    ASSERT_TRUE(held);
+    EXPECT_EQ(held.get(), &document.listing().list.instructions);
+    ASSERT_TRUE(document.setListing(QStringLiteral("LD X0\nAND X1\nOUT Y0\nLD X2\nOUT Y2\nEND\n"),
+                                    &errors));
+    EXPECT_EQ(document.listing().list.instructions.size(), 6u);
+    ASSERT_EQ(held->size(), 3u);
+    EXPECT_EQ((*held)[1].spec->mnemonic, QStringLiteral("OUT"));
+    EXPECT_NE(held.get(), &document.listing().list.instructions);
+}
