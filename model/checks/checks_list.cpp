@@ -51,8 +51,7 @@ public:
         duplicates();
         length();
         // Read only here: a form-only check (betterForm) needs no reading of the whole list.
-        m_drawing = listToLadderProblems(m_list);
-        structure();
+        structure(listToLadderProblems(m_list));
         return std::move(m_found);
     }
 
@@ -584,7 +583,7 @@ private:
     // What keeps the listing from being drawn, as the conversion finds it, by the documented
     // codes: an output with no condition (OC001), blocks left open or missing (BL001). MRD/MPP
     // without MPS and MPS left open are ST002/ST003, which blocksAndStack() has reported.
-    void structure() {
+    void structure(const std::vector<Diagnostic> &drawing) {
         const auto reported = [this](const char *code, const Location &at) {
             return std::any_of(m_found.begin(), m_found.end(), [&](const Finding &f) {
                 return f.diagnostic.code == QLatin1String(code) &&
@@ -592,7 +591,7 @@ private:
                         QLatin1String(code) == QLatin1String("ST003"));
             });
         };
-        for (const Diagnostic &d : m_drawing) {
+        for (const Diagnostic &d : drawing) {
             const bool stack = d.code == QLatin1String("CV004");
             const bool open = d.code == QLatin1String("CV008");
             if ((stack && reported("ST002", d.location)) || (open && reported("ST003", d.location)))
@@ -619,7 +618,6 @@ private:
     const QString *m_source = nullptr;
     QStringList m_sourceLines; // split on the first operand finding
     std::vector<RungSpan> m_spans;
-    std::vector<Diagnostic> m_drawing; // what keeps the list from being drawn
     bool m_systemParsed = false;
     std::map<Address, const SystemDevice *> m_systemDriven;
     std::map<int, SpanForm> m_forms; // by the rung's first instruction

@@ -260,6 +260,15 @@ private:
         return child;
     }
 
+    // The outputs are kept only to build the rung: the problems need none of them.
+    void addOutput(const Instruction &ins) {
+        if (!m_draw)
+            return;
+        m_outputs.push_back(ins);
+        m_nodes[static_cast<std::size_t>(m_cur)].items.emplace_back(
+            true, static_cast<int>(m_outputs.size()) - 1);
+    }
+
     void step(const Instruction &ins, int index) {
         const Op op = ins.op();
         if (op == Op::StepLadder)
@@ -269,8 +278,7 @@ private:
         if (isUnconditional(op)) {
             finishRung(false);
             begin(index, ins);
-            m_outputs.push_back(ins);
-            m_nodes[0].items.emplace_back(true, 0);
+            addOutput(ins);
             m_hadOutput = true;
             finishRung(false);
             return;
@@ -382,9 +390,7 @@ private:
             return problem(ins, "CV006", Tr::tr("%1 has no condition").arg(ins.spec->mnemonic));
         if (!m_blocks[0].empty())
             m_cur = addChild(std::move(m_blocks[0]));
-        m_outputs.push_back(ins);
-        m_nodes[static_cast<std::size_t>(m_cur)].items.emplace_back(
-            true, static_cast<int>(m_outputs.size()) - 1);
+        addOutput(ins);
         m_blocks.assign(1, Expr{});
         m_anchored = true;
         m_hadOutput = true;
