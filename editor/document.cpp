@@ -5,6 +5,7 @@
 #include "model/ladder/ladder_text.h"
 
 #include <QCryptographicHash>
+#include <QFileInfo>
 #include <QRegularExpression>
 #include <QUndoCommand>
 
@@ -155,7 +156,13 @@ void Document::setProject(const model::Project &project, const QString &path) {
     m_project.program.target = m_project.target;
     m_undo.clear();
     m_held.clear();
-    setPath(path);
+    const bool named = !m_untitledName.isEmpty();
+    m_untitledName.clear();
+    m_suggestedPath.clear();
+    if (path != m_path)
+        setPath(path);
+    else if (named)
+        emit nameChanged();
     ++m_rungsRevision;
     refresh();
 }
@@ -170,6 +177,19 @@ void Document::setPath(const QString &path) {
         return;
     m_path = path;
     emit pathChanged(path);
+    emit nameChanged();
+}
+
+void Document::setUntitledName(const QString &name, const QString &suggestedPath) {
+    m_untitledName = name;
+    m_suggestedPath = suggestedPath;
+    emit nameChanged();
+}
+
+QString Document::name() const {
+    if (!m_path.isEmpty())
+        return QFileInfo(m_path).fileName();
+    return m_untitledName.isEmpty() ? tr("Untitled") : m_untitledName;
 }
 
 int Document::rungOfLine(int line) const {

@@ -35,6 +35,15 @@ public:
 
     QString path() const { return m_path; }
     void setPath(const QString &path);
+    // A program with no project file yet may still have a name: the listing it was imported
+    // from ("traffic.il"), the example it copies ("Traffic light"). The title and the printed
+    // header show it, and Save As offers `suggestedPath` (the folder and name it came from,
+    // as a project). Until the next setProject or reset; a path, once saved, names it.
+    void setUntitledName(const QString &name, const QString &suggestedPath);
+    // The file's name, else the untitled name, else "Untitled".
+    QString name() const;
+    // Where Save As starts: the file itself, else the suggestion, else empty.
+    QString suggestedPath() const { return m_path.isEmpty() ? m_suggestedPath : m_path; }
     bool isModified() const { return !m_undo.isClean(); }
     void markSaved() { m_undo.setClean(); }
     // The program holds work that no file has (recovered after a crash): no undo step is
@@ -129,6 +138,7 @@ public:
 signals:
     void programChanged();
     void pathChanged(const QString &path);
+    void nameChanged(); // name() changed: a new path or untitled name
 
 private:
     // A left-out contact whose marked line stays in the text given to setListing.
@@ -151,6 +161,8 @@ private:
 
     model::Project m_project;
     QString m_path;
+    QString m_untitledName;
+    QString m_suggestedPath;
     QUndoStack m_undo;
     std::shared_ptr<const model::ToListingResult> m_listing =
         std::make_shared<const model::ToListingResult>();

@@ -4,7 +4,7 @@
 <context>
     <name>rung::app::MainWindow</name>
     <message numerus="yes">
-        <location filename="../app/gui/main_window.cpp" line="+371"/>
+        <location filename="../app/gui/main_window.cpp" line="+373"/>
         <source>%n rung(s)</source>
         <translation>
             <numerusform>%n rung</numerusform>
@@ -58,7 +58,7 @@
 <context>
     <name>rung::editor::Document</name>
     <message numerus="yes">
-        <location filename="../editor/document.cpp" line="+250"/>
+        <location filename="../editor/document.cpp" line="+270"/>
         <source>Delete %n rungs</source>
         <translation>
             <numerusform>Delete %n rung</numerusform>
@@ -81,7 +81,7 @@
 <context>
     <name>rung::model::Checks</name>
     <message numerus="yes">
-        <location filename="../model/checks/checks_list.cpp" line="+245"/>
+        <location filename="../model/checks/checks_list.cpp" line="+244"/>
         <source>Stacked %1: %n blocks are open; an OR chain needs less stack</source>
         <translation>
             <numerusform>Stacked %1: %n block is open; an OR chain needs less stack</numerusform>
@@ -100,7 +100,7 @@
 <context>
     <name>rung::model::Convert</name>
     <message numerus="yes">
-        <location filename="../model/convert/convert_to_ladder.cpp" line="+301"/>
+        <location filename="../model/convert/convert_to_ladder.cpp" line="+312"/>
         <source>%1 needs two blocks, but %n is open</source>
         <translation>
             <numerusform>%1 needs two blocks, but %n is open</numerusform>
@@ -116,7 +116,7 @@
         </translation>
     </message>
     <message numerus="yes">
-        <location line="+99"/>
+        <location line="+97"/>
         <source>The rung starting on line %1 leaves %n MPS without MPP</source>
         <translation>
             <numerusform>The rung starting on line %1 leaves %n MPS without MPP</numerusform>

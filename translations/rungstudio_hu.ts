@@ -715,19 +715,19 @@ Válaszidő: %6 ms (átlag %7, max. %8); frissítés: %9 ms, %10 keret</translat
 <context>
     <name>rung::app::MainWindow</name>
     <message>
-        <location filename="../app/gui/main_window.cpp" line="+173"/>
+        <location filename="../app/gui/main_window.cpp" line="+176"/>
         <source>Problems</source>
         <translation>Problémák</translation>
     </message>
     <message>
         <location line="+5"/>
-        <location line="+330"/>
+        <location line="+327"/>
         <source>Project</source>
         <translation>Projekt</translation>
     </message>
     <message>
-        <location line="-323"/>
-        <location line="+326"/>
+        <location line="-320"/>
+        <location line="+323"/>
         <source>Symbols</source>
         <translation>Szimbólumok</translation>
     </message>
@@ -1110,7 +1110,7 @@ Létradiagram- és utasításlista-szerkesztő a következő PLC-khez: %2.</tran
         <translation>A Rung Studio névjegye</translation>
     </message>
     <message>
-        <location filename="../app/gui/main_window.cpp" line="-308"/>
+        <location filename="../app/gui/main_window.cpp" line="-305"/>
         <source>Rung Comment</source>
         <translation>Létrafok megjegyzése</translation>
     </message>
@@ -1121,18 +1121,18 @@ Létradiagram- és utasításlista-szerkesztő a következő PLC-khez: %2.</tran
     </message>
     <message>
         <location line="+22"/>
-        <location line="+290"/>
+        <location line="+287"/>
         <source>Ladder</source>
         <translation>Létradiagram</translation>
     </message>
     <message>
-        <location line="-289"/>
-        <location line="+290"/>
+        <location line="-286"/>
+        <location line="+287"/>
         <source>Instruction List</source>
         <translation>Utasításlista</translation>
     </message>
     <message>
-        <location line="-277"/>
+        <location line="-274"/>
         <source>The list as typed had errors and now shows the ladder&apos;s program; Ctrl+Z in the list brings it back</source>
         <translation>A begépelt lista hibás volt, most a létradiagram programját mutatja; a listában a Ctrl+Z visszahozza</translation>
     </message>
@@ -1162,18 +1162,12 @@ Létradiagram- és utasításlista-szerkesztő a következő PLC-khez: %2.</tran
         <translation>Lista cseréje</translation>
     </message>
     <message>
-        <location line="+12"/>
+        <location line="+11"/>
         <source>&lt;b&gt;%1&lt;/b&gt;&lt;br&gt;Target: %2, model %3&lt;br&gt;%4, %5</source>
         <translation>&lt;b&gt;%1&lt;/b&gt;&lt;br&gt;PLC-család: %2, modell: %3&lt;br&gt;%4, %5</translation>
     </message>
-    <message>
-        <location line="+1"/>
-        <location line="+55"/>
-        <source>Untitled</source>
-        <translation>Névtelen</translation>
-    </message>
     <message numerus="yes">
-        <location line="-53"/>
+        <location line="+3"/>
         <source>%n rung(s)</source>
         <translation>
             <numerusform>%n létrafok</numerusform>
@@ -1259,12 +1253,12 @@ Létradiagram- és utasításlista-szerkesztő a következő PLC-khez: %2.</tran
         <translation>Ismeretlen célrendszer: %1</translation>
     </message>
     <message>
-        <location line="+28"/>
+        <location line="+30"/>
         <source>%1 has errors; the ladder follows once they are fixed</source>
         <translation>%1 hibás; a létradiagram a hibák javítása után követi</translation>
     </message>
     <message>
-        <location line="+21"/>
+        <location line="+33"/>
         <location filename="../app/gui/main_window_online.cpp" line="+80"/>
         <source>Cannot save</source>
         <translation>A mentés nem sikerült</translation>
@@ -1320,12 +1314,12 @@ Létradiagram- és utasításlista-szerkesztő a következő PLC-khez: %2.</tran
         <translation>%1 már létezik. Lecseréli?</translation>
     </message>
     <message>
-        <location line="+14"/>
+        <location line="+13"/>
         <source>Save As</source>
         <translation>Mentés másként</translation>
     </message>
     <message>
-        <location line="+2"/>
+        <location line="+4"/>
         <source>Rung Studio projects (*.rung)</source>
         <translation>Rung Studio projektek (*.rung)</translation>
     </message>
@@ -1359,17 +1353,17 @@ Létradiagram- és utasításlista-szerkesztő a következő PLC-khez: %2.</tran
         <translation>Az exportálás nem sikerült</translation>
     </message>
     <message>
-        <location line="-193"/>
+        <location line="-208"/>
         <source>%1, line %2, column %3: %4</source>
         <translation>%1, %2. sor, %3. oszlop: %4</translation>
     </message>
     <message>
-        <location line="+115"/>
+        <location line="+129"/>
         <source>Rung Studio projects (*.rung);;Instruction lists (*.il *.txt);;Ladder texts (*.ladder)</source>
         <translation>Rung Studio projektek (*.rung);;Utasításlisták (*.il *.txt);;Létraszövegek (*.ladder)</translation>
     </message>
     <message>
-        <location line="+73"/>
+        <location line="+74"/>
         <source>Export Ladder</source>
         <translation>Létradiagram exportálása</translation>
     </message>
@@ -1467,7 +1461,7 @@ Létradiagram- és utasításlista-szerkesztő a következő PLC-khez: %2.</tran
         </translation>
     </message>
     <message>
-        <location filename="../app/gui/main_window.cpp" line="+92"/>
+        <location filename="../app/gui/main_window.cpp" line="+90"/>
         <location filename="../app/gui/main_window_tools.cpp" line="-26"/>
         <source>Cross Reference</source>
         <translation>Kereszthivatkozás</translation>
@@ -1952,12 +1946,7 @@ A read és a write kilépési kódja: 0 kész, 1 a PLC nem válaszolt vagy eluta
         <translation>%1: a létradiagram PDF, SVG vagy PNG formátumba exportálható</translation>
     </message>
     <message>
-        <location line="+21"/>
-        <source>Untitled</source>
-        <translation>Névtelen</translation>
-    </message>
-    <message>
-        <location line="+2"/>
+        <location line="+22"/>
         <source>%1 %2</source>
         <translation>%1 %2</translation>
     </message>
@@ -3537,12 +3526,17 @@ Kiértékelés: %4 µs (%5..%6)</translation>
 <context>
     <name>rung::editor::Document</name>
     <message>
-        <location filename="../editor/document.cpp" line="+44"/>
+        <location filename="../editor/document.cpp" line="+45"/>
         <source>Edit symbols</source>
         <translation>Szimbólumok szerkesztése</translation>
     </message>
     <message>
-        <location line="+201"/>
+        <location line="+147"/>
+        <source>Untitled</source>
+        <translation>Névtelen</translation>
+    </message>
+    <message>
+        <location line="+73"/>
         <source>Insert rung</source>
         <translation>Létrafok beszúrása</translation>
     </message>
@@ -3579,7 +3573,7 @@ Kiértékelés: %4 µs (%5..%6)</translation>
         <translation>A(z) %4. létrafok %1 érintkezője (%2. sor, %3. oszlop) nem fér el a sor alatt beírt létrafokban: törölje a sort, és az érintkező elmarad, vagy vonja vissza a szerkesztést</translation>
     </message>
     <message>
-        <location line="+60"/>
+        <location line="+64"/>
         <source>Rung %1: %2 (row %3, column %4) is on no path to an output, so the list leaves it out; the ladder keeps it while this line stays.</source>
         <translation>A(z) %1. létrafok: %2 (%3. sor, %4. oszlop) nincs rajta egyetlen kimenethez vezető áramúton sem, ezért a lista kihagyja; a létradiagram megtartja, amíg ez a sor megvan.</translation>
     </message>
@@ -3598,7 +3592,7 @@ Kiértékelés: %4 µs (%5..%6)</translation>
     <name>rung::editor::IlEditor</name>
     <message>
         <location filename="../editor/il_editor.cpp" line="+273"/>
-        <location line="+349"/>
+        <location line="+354"/>
         <source>Instruction list</source>
         <translation>Utasításlista</translation>
     </message>
@@ -3606,7 +3600,7 @@ Kiértékelés: %4 µs (%5..%6)</translation>
 <context>
     <name>rung::editor::IlLexer</name>
     <message>
-        <location line="-555"/>
+        <location line="-560"/>
         <source>Default</source>
         <translation>Alapértelmezett</translation>
     </message>
@@ -3995,7 +3989,7 @@ Kiértékelés: %4 µs (%5..%6)</translation>
 <context>
     <name>rung::editor::PowerFlow</name>
     <message>
-        <location filename="../editor/il_editor_monitor.cpp" line="+97"/>
+        <location filename="../editor/il_editor_monitor.cpp" line="+105"/>
         <location filename="../editor/power_flow.cpp" line="+327"/>
         <source>ON</source>
         <translation>BE</translation>
@@ -4534,7 +4528,7 @@ Kiértékelés: %4 µs (%5..%6)</translation>
 <context>
     <name>rung::model::Address</name>
     <message>
-        <location filename="../model/target/address.cpp" line="+142"/>
+        <location filename="../model/target/address.cpp" line="+140"/>
         <source>A device is missing</source>
         <translation>Hiányzik egy operandus</translation>
     </message>
@@ -4696,7 +4690,7 @@ Kiértékelés: %4 µs (%5..%6)</translation>
     </message>
     <message>
         <location line="+58"/>
-        <location filename="../model/checks/checks_list.cpp" line="+80"/>
+        <location filename="../model/checks/checks_list.cpp" line="+79"/>
         <source>Append %1</source>
         <translation>%1 hozzáfűzése a végére</translation>
     </message>
@@ -5112,12 +5106,12 @@ Kiértékelés: %4 µs (%5..%6)</translation>
 <context>
     <name>rung::model::Convert</name>
     <message>
-        <location filename="../model/convert/convert_to_ladder.cpp" line="+216"/>
+        <location filename="../model/convert/convert_to_ladder.cpp" line="+219"/>
         <source>%1 joins the condition of a branch point in parallel with another block; the ladder cannot draw this: repeat the shared contacts in this branch instead</source>
         <translation>%1 egy elágazási pont feltételét párhuzamosan köti egy másik blokkal; ezt a létradiagram nem tudja megrajzolni: ismételje meg a közös érintkezőket ebben az ágban</translation>
     </message>
     <message>
-        <location line="+68"/>
+        <location line="+76"/>
         <source>%1 has no block to continue; start the rung with a load</source>
         <translation>%1 előtt nincs folytatható blokk; a létrafokot töltő (LD) utasítással kezdje</translation>
     </message>
@@ -5171,7 +5165,7 @@ Kiértékelés: %4 µs (%5..%6)</translation>
         <translation>%1 egy blokkot igényel, de %2 nyitott</translation>
     </message>
     <message>
-        <location line="+40"/>
+        <location line="+38"/>
         <source>The rung starting on line %1 ends without an output</source>
         <translation>A(z) %1. sorban kezdődő létrafok kimenet nélkül ér véget</translation>
     </message>
@@ -7396,12 +7390,12 @@ Kiértékelés: %4 µs (%5..%6)</translation>
 <context>
     <name>rung::simulator::Engine</name>
     <message>
-        <location filename="../simulator/engine_execute.cpp" line="+70"/>
+        <location filename="../simulator/engine_execute.cpp" line="+69"/>
         <source>set value %1 is not a BCD number; the instruction is skipped</source>
         <translation>a(z) %1 beállított érték nem BCD szám; az utasítás kimarad</translation>
     </message>
     <message>
-        <location line="+50"/>
+        <location line="+46"/>
         <source>%1 does not fit in BCD (0..%2); the destination is unchanged</source>
         <translation>%1 nem fér el BCD-ben (0..%2); a cél nem változik</translation>
     </message>
@@ -7416,7 +7410,7 @@ Kiértékelés: %4 µs (%5..%6)</translation>
         <translation>a(z) %1 eredmény kívül esik a 0..9999 tartományon; %2 íródik be</translation>
     </message>
     <message>
-        <location line="+430"/>
+        <location line="+422"/>
         <source>subroutines nest deeper than %1 levels; the call is skipped</source>
         <translation>a szubrutinok %1 szintnél mélyebben ágyazódnak egymásba; a hívás elmarad</translation>
     </message>

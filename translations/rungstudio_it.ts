@@ -715,19 +715,19 @@ Andata e ritorno %6 ms (media %7, max %8); aggiornamento %9 ms, %10 frame</trans
 <context>
     <name>rung::app::MainWindow</name>
     <message>
-        <location filename="../app/gui/main_window.cpp" line="+173"/>
+        <location filename="../app/gui/main_window.cpp" line="+176"/>
         <source>Problems</source>
         <translation>Problemi</translation>
     </message>
     <message>
         <location line="+5"/>
-        <location line="+330"/>
+        <location line="+327"/>
         <source>Project</source>
         <translation>Progetto</translation>
     </message>
     <message>
-        <location line="-323"/>
-        <location line="+326"/>
+        <location line="-320"/>
+        <location line="+323"/>
         <source>Symbols</source>
         <translation>Simboli</translation>
     </message>
@@ -1110,7 +1110,7 @@ Editor di schemi ladder e liste istruzioni per %2.</translation>
         <translation>Informazioni su Rung Studio</translation>
     </message>
     <message>
-        <location filename="../app/gui/main_window.cpp" line="-308"/>
+        <location filename="../app/gui/main_window.cpp" line="-305"/>
         <source>Rung Comment</source>
         <translation>Commento del segmento</translation>
     </message>
@@ -1121,18 +1121,18 @@ Editor di schemi ladder e liste istruzioni per %2.</translation>
     </message>
     <message>
         <location line="+22"/>
-        <location line="+290"/>
+        <location line="+287"/>
         <source>Ladder</source>
         <translation>Ladder</translation>
     </message>
     <message>
-        <location line="-289"/>
-        <location line="+290"/>
+        <location line="-286"/>
+        <location line="+287"/>
         <source>Instruction List</source>
         <translation>Lista istruzioni</translation>
     </message>
     <message>
-        <location line="-277"/>
+        <location line="-274"/>
         <source>The list as typed had errors and now shows the ladder&apos;s program; Ctrl+Z in the list brings it back</source>
         <translation>La lista digitata conteneva errori e ora mostra il programma dello schema ladder; Ctrl+Z nella lista la ripristina</translation>
     </message>
@@ -1162,18 +1162,12 @@ Editor di schemi ladder e liste istruzioni per %2.</translation>
         <translation>Sostituisci la lista</translation>
     </message>
     <message>
-        <location line="+12"/>
+        <location line="+11"/>
         <source>&lt;b&gt;%1&lt;/b&gt;&lt;br&gt;Target: %2, model %3&lt;br&gt;%4, %5</source>
         <translation>&lt;b&gt;%1&lt;/b&gt;&lt;br&gt;Famiglia PLC: %2, modello %3&lt;br&gt;%4, %5</translation>
     </message>
-    <message>
-        <location line="+1"/>
-        <location line="+55"/>
-        <source>Untitled</source>
-        <translation>Senza titolo</translation>
-    </message>
     <message numerus="yes">
-        <location line="-53"/>
+        <location line="+3"/>
         <source>%n rung(s)</source>
         <translation>
             <numerusform>%n segmento</numerusform>
@@ -1261,12 +1255,12 @@ Editor di schemi ladder e liste istruzioni per %2.</translation>
         <translation>Famiglia PLC sconosciuta: %1</translation>
     </message>
     <message>
-        <location line="+28"/>
+        <location line="+30"/>
         <source>%1 has errors; the ladder follows once they are fixed</source>
         <translation>%1 contiene errori; lo schema ladder si aggiorna quando sono corretti</translation>
     </message>
     <message>
-        <location line="+21"/>
+        <location line="+33"/>
         <location filename="../app/gui/main_window_online.cpp" line="+80"/>
         <source>Cannot save</source>
         <translation>Impossibile salvare</translation>
@@ -1322,12 +1316,12 @@ Editor di schemi ladder e liste istruzioni per %2.</translation>
         <translation>%1 esiste già. Sostituirlo?</translation>
     </message>
     <message>
-        <location line="+14"/>
+        <location line="+13"/>
         <source>Save As</source>
         <translation>Salva con nome</translation>
     </message>
     <message>
-        <location line="+2"/>
+        <location line="+4"/>
         <source>Rung Studio projects (*.rung)</source>
         <translation>Progetti Rung Studio (*.rung)</translation>
     </message>
@@ -1361,17 +1355,17 @@ Editor di schemi ladder e liste istruzioni per %2.</translation>
         <translation>Impossibile esportare</translation>
     </message>
     <message>
-        <location line="-193"/>
+        <location line="-208"/>
         <source>%1, line %2, column %3: %4</source>
         <translation>%1, riga %2, colonna %3: %4</translation>
     </message>
     <message>
-        <location line="+115"/>
+        <location line="+129"/>
         <source>Rung Studio projects (*.rung);;Instruction lists (*.il *.txt);;Ladder texts (*.ladder)</source>
         <translation>Progetti Rung Studio (*.rung);;Liste istruzioni (*.il *.txt);;Testi ladder (*.ladder)</translation>
     </message>
     <message>
-        <location line="+73"/>
+        <location line="+74"/>
         <source>Export Ladder</source>
         <translation>Esporta schema ladder</translation>
     </message>
@@ -1472,7 +1466,7 @@ Editor di schemi ladder e liste istruzioni per %2.</translation>
         </translation>
     </message>
     <message>
-        <location filename="../app/gui/main_window.cpp" line="+92"/>
+        <location filename="../app/gui/main_window.cpp" line="+90"/>
         <location filename="../app/gui/main_window_tools.cpp" line="-26"/>
         <source>Cross Reference</source>
         <translation>Riferimenti incrociati</translation>
@@ -1957,12 +1951,7 @@ Codice di uscita di read e write: 0 fatto, 1 il PLC non ha risposto o ha rifiuta
         <translation>%1: lo schema ladder può essere esportato in PDF, SVG o PNG</translation>
     </message>
     <message>
-        <location line="+21"/>
-        <source>Untitled</source>
-        <translation>Senza titolo</translation>
-    </message>
-    <message>
-        <location line="+2"/>
+        <location line="+22"/>
         <source>%1 %2</source>
         <translation>%1 %2</translation>
     </message>
@@ -3543,12 +3532,17 @@ Valutazione: %4 µs (%5..%6)</translation>
 <context>
     <name>rung::editor::Document</name>
     <message>
-        <location filename="../editor/document.cpp" line="+44"/>
+        <location filename="../editor/document.cpp" line="+45"/>
         <source>Edit symbols</source>
         <translation>Modifica simboli</translation>
     </message>
     <message>
-        <location line="+201"/>
+        <location line="+147"/>
+        <source>Untitled</source>
+        <translation>Senza titolo</translation>
+    </message>
+    <message>
+        <location line="+73"/>
         <source>Insert rung</source>
         <translation>Inserisci segmento</translation>
     </message>
@@ -3586,7 +3580,7 @@ Valutazione: %4 µs (%5..%6)</translation>
         <translation>%1 (riga %2, colonna %3) del segmento %4 non trova posto nel segmento scritto sotto questa riga: elimina la riga per lasciarlo andare, oppure annulla</translation>
     </message>
     <message>
-        <location line="+60"/>
+        <location line="+64"/>
         <source>Rung %1: %2 (row %3, column %4) is on no path to an output, so the list leaves it out; the ladder keeps it while this line stays.</source>
         <translation>Segmento %1: %2 (riga %3, colonna %4) non è su alcun percorso verso un&apos;uscita, quindi la lista lo omette; il ladder lo conserva finché resta questa riga.</translation>
     </message>
@@ -3605,7 +3599,7 @@ Valutazione: %4 µs (%5..%6)</translation>
     <name>rung::editor::IlEditor</name>
     <message>
         <location filename="../editor/il_editor.cpp" line="+273"/>
-        <location line="+349"/>
+        <location line="+354"/>
         <source>Instruction list</source>
         <translation>Lista istruzioni</translation>
     </message>
@@ -3613,7 +3607,7 @@ Valutazione: %4 µs (%5..%6)</translation>
 <context>
     <name>rung::editor::IlLexer</name>
     <message>
-        <location line="-555"/>
+        <location line="-560"/>
         <source>Default</source>
         <translation>Predefinito</translation>
     </message>
@@ -4002,7 +3996,7 @@ Valutazione: %4 µs (%5..%6)</translation>
 <context>
     <name>rung::editor::PowerFlow</name>
     <message>
-        <location filename="../editor/il_editor_monitor.cpp" line="+97"/>
+        <location filename="../editor/il_editor_monitor.cpp" line="+105"/>
         <location filename="../editor/power_flow.cpp" line="+327"/>
         <source>ON</source>
         <translation>ON</translation>
@@ -4542,7 +4536,7 @@ Valutazione: %4 µs (%5..%6)</translation>
 <context>
     <name>rung::model::Address</name>
     <message>
-        <location filename="../model/target/address.cpp" line="+142"/>
+        <location filename="../model/target/address.cpp" line="+140"/>
         <source>A device is missing</source>
         <translation>Manca un operando</translation>
     </message>
@@ -4704,7 +4698,7 @@ Valutazione: %4 µs (%5..%6)</translation>
     </message>
     <message>
         <location line="+58"/>
-        <location filename="../model/checks/checks_list.cpp" line="+80"/>
+        <location filename="../model/checks/checks_list.cpp" line="+79"/>
         <source>Append %1</source>
         <translation>Aggiungi %1 in fondo</translation>
     </message>
@@ -5122,12 +5116,12 @@ Valutazione: %4 µs (%5..%6)</translation>
 <context>
     <name>rung::model::Convert</name>
     <message>
-        <location filename="../model/convert/convert_to_ladder.cpp" line="+216"/>
+        <location filename="../model/convert/convert_to_ladder.cpp" line="+219"/>
         <source>%1 joins the condition of a branch point in parallel with another block; the ladder cannot draw this: repeat the shared contacts in this branch instead</source>
         <translation>%1 collega la condizione di un punto di diramazione in parallelo a un altro blocco; lo schema ladder non può disegnarlo: ripeti invece i contatti comuni in questo ramo</translation>
     </message>
     <message>
-        <location line="+68"/>
+        <location line="+76"/>
         <source>%1 has no block to continue; start the rung with a load</source>
         <translation>%1 non ha un blocco da continuare; iniziare il segmento con un caricamento</translation>
     </message>
@@ -5183,7 +5177,7 @@ Valutazione: %4 µs (%5..%6)</translation>
         <translation>%1 richiede un blocco, ma %2 sono aperti</translation>
     </message>
     <message>
-        <location line="+40"/>
+        <location line="+38"/>
         <source>The rung starting on line %1 ends without an output</source>
         <translation>Il segmento che inizia alla riga %1 termina senza un&apos;uscita</translation>
     </message>
@@ -7411,12 +7405,12 @@ Valutazione: %4 µs (%5..%6)</translation>
 <context>
     <name>rung::simulator::Engine</name>
     <message>
-        <location filename="../simulator/engine_execute.cpp" line="+70"/>
+        <location filename="../simulator/engine_execute.cpp" line="+69"/>
         <source>set value %1 is not a BCD number; the instruction is skipped</source>
         <translation>il valore di preset %1 non è un numero BCD; l&apos;istruzione viene saltata</translation>
     </message>
     <message>
-        <location line="+50"/>
+        <location line="+46"/>
         <source>%1 does not fit in BCD (0..%2); the destination is unchanged</source>
         <translation>%1 non sta in BCD (0..%2); la destinazione resta invariata</translation>
     </message>
@@ -7431,7 +7425,7 @@ Valutazione: %4 µs (%5..%6)</translation>
         <translation>il risultato %1 è fuori da 0..9999; viene scritto %2</translation>
     </message>
     <message>
-        <location line="+430"/>
+        <location line="+422"/>
         <source>subroutines nest deeper than %1 levels; the call is skipped</source>
         <translation>le subroutine sono annidate oltre %1 livelli; la chiamata non viene eseguita</translation>
     </message>

@@ -136,8 +136,7 @@ bool ProgramExport::print(QPrinter *printer) const {
     int pages = 1;
     paintProgram(
         p, m_document, m, m_namesFirst, pageHeight, kTop, [&] { ++pages; }, false);
-    const QString projectName =
-        m_document.path().isEmpty() ? tr("Untitled") : QFileInfo(m_document.path()).fileName();
+    const QString projectName = m_document.name();
     const QString target =
         tr("%1 %2").arg(project.target->displayName, m_document.modelVariant()->name);
     const QString date = QLocale().toString(QDate::currentDate(), QLocale::ShortFormat);

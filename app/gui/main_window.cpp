@@ -78,7 +78,10 @@ MainWindow::MainWindow(QWidget *parent)
     connect(m_document, &editor::Document::programChanged, this, &MainWindow::refreshFromDocument);
     m_document->setRungEditGuard(
         [this](int first, int count) { return mayReplaceTypedList(first, count); });
-    connect(m_document, &editor::Document::pathChanged, this, &MainWindow::updateTitle);
+    connect(m_document, &editor::Document::nameChanged, this, [this] {
+        updateTitle();
+        refreshProjectInfo();
+    });
     connect(m_document->undoStack(), &QUndoStack::cleanChanged, this, &MainWindow::updateTitle);
     connect(m_ladder, &editor::LadderView::cursorMoved, this, [this](const editor::CellCursor &c) {
         updateStatus();
@@ -364,12 +367,11 @@ bool MainWindow::mayReplaceTypedList(int first, int count) {
 void MainWindow::refreshProjectInfo() {
     const model::Target &t = m_document->target();
     const int rungs = static_cast<int>(m_document->ladder().rungs.size());
-    m_projectInfo->setText(
-        tr("<b>%1</b><br>Target: %2, model %3<br>%4, %5")
-            .arg(m_document->path().isEmpty() ? tr("Untitled")
-                                              : m_document->path().section(QLatin1Char('/'), -1),
-                 t.displayName, m_document->modelVariant()->name, tr("%n rung(s)", nullptr, rungs),
-                 tr("%n step(s)", nullptr, m_document->stepCount())));
+    m_projectInfo->setText(tr("<b>%1</b><br>Target: %2, model %3<br>%4, %5")
+                               .arg(m_document->name().toHtmlEscaped(), t.displayName,
+                                    m_document->modelVariant()->name,
+                                    tr("%n rung(s)", nullptr, rungs),
+                                    tr("%n step(s)", nullptr, m_document->stepCount())));
 }
 
 void MainWindow::applyListing() {
@@ -420,9 +422,7 @@ void MainWindow::updateStatus() {
 }
 
 void MainWindow::updateTitle() {
-    const QString name = m_document->path().isEmpty()
-                             ? tr("Untitled")
-                             : m_document->path().section(QLatin1Char('/'), -1);
+    const QString name = m_document->name();
     // While values are shown, the title says whose (simulation, online PLC, history).
     if (m_monitorSource)
         setWindowTitle(

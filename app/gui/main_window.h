@@ -153,6 +153,9 @@ private:
     // edit was made on, so that the edit never lands on a rung it was not made for.
     bool mayReplaceTypedList(int first = 0, int count = 0);
     void showProject(const model::Project &project, const QString &path);
+    // Names a program opened from a listing or ladder text after its file
+    // (Document::setUntitledName).
+    void nameImported(const QString &path);
     void refreshProjectInfo();
     // The list as typed when it has errors the program could not take; empty when it agrees.
     QString pendingListing() const;

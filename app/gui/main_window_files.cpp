@@ -162,6 +162,7 @@ bool MainWindow::openFile(const QString &path, const QString &targetId, bool qui
             project.model = target->defaultModel().name;
             project.program = ladder.ladder;
             showProject(project, QString());
+            nameImported(path);
             return true;
         }
         const model::ParseResult parsed = model::parseInstructionList(*target, text);
@@ -173,6 +174,7 @@ bool MainWindow::openFile(const QString &path, const QString &targetId, bool qui
             newProject(*target, target->defaultModel().name);
             m_il->setText(text);
             applyListing();
+            nameImported(path);
             m_errorsMessage = tr("%1 has errors; the ladder follows once they are fixed")
                                   .arg(QFileInfo(path).fileName());
             statusBar()->showMessage(m_errorsMessage, 10000);
@@ -185,7 +187,19 @@ bool MainWindow::openFile(const QString &path, const QString &targetId, bool qui
     showProject(project, suffix == QLatin1String(model::kProjectExtension) ? path : QString());
     if (suffix == QLatin1String(model::kProjectExtension))
         addRecent(path);
+    else
+        nameImported(path);
     return true;
+}
+
+void MainWindow::nameImported(const QString &path) {
+    // A listing or ladder text opens as a new project named after its file; saving it writes
+    // a project beside it, not over the text.
+    const QFileInfo file(path);
+    m_document->setUntitledName(
+        file.fileName(),
+        file.absoluteDir().filePath(file.completeBaseName() + QLatin1Char('.') +
+                                    QString::fromLatin1(model::kProjectExtension)));
 }
 
 bool MainWindow::saveTo(const QString &path) {
@@ -300,11 +314,12 @@ QString MainWindow::askSavePath(const QString &title, const QString &filter,
 }
 
 bool MainWindow::fileSaveAs() {
-    const QString path = completeSavePath(
-        askSaveFile(this, tr("Save As"),
-                    m_document->path().isEmpty() ? fileDialogFolder(QString()) : m_document->path(),
-                    tr("Rung Studio projects (*.rung)")),
-        {QString::fromLatin1(model::kProjectExtension)});
+    const QString path = completeSavePath(askSaveFile(this, tr("Save As"),
+                                                      m_document->suggestedPath().isEmpty()
+                                                          ? fileDialogFolder(QString())
+                                                          : m_document->suggestedPath(),
+                                                      tr("Rung Studio projects (*.rung)")),
+                                          {QString::fromLatin1(model::kProjectExtension)});
     if (path.isEmpty())
         return false;
     return saveTo(path);
@@ -398,7 +413,7 @@ void MainWindow::rebuildExamplesMenu() {
         QMenu *sub = m_examplesMenu->addMenu(t ? t->displayName : target);
         paths.sort();
         for (const QString &path : paths)
-            sub->addAction(exampleTitle(t, QFileInfo(path).baseName()), this, [this, path] {
+            sub->addAction(exampleTitle(t, QFileInfo(path).baseName()), this, [this, path, t] {
                 if (!maybeSave())
                     return;
                 // Examples open as untitled copies: saving asks where.
@@ -410,6 +425,9 @@ void MainWindow::rebuildExamplesMenu() {
                     return;
                 }
                 showProject(*project, QString());
+                m_document->setUntitledName(
+                    exampleTitle(t, QFileInfo(path).baseName()),
+                    QDir(fileDialogFolder(QString())).filePath(QFileInfo(path).fileName()));
             });
     }
     m_examplesMenu->setEnabled(!byTarget.empty());

@@ -255,3 +255,78 @@ TEST(FilesMenu, OpenStartsInTheProjectsFolderThenTheLastOneUsed) {
     app::MainWindow fresh;
     EXPECT_EQ(QDir(openDialogFolder(fresh)).canonicalPath(), QDir(other.path()).canonicalPath());
 }
+
+namespace {
+
+// The file the Save As dialog proposes (it is cancelled).
+QString saveAsProposal(app::MainWindow &window) {
+    QString proposed;
+    QTimer::singleShot(0, &window, [&proposed] {
+        if (auto *dialog = qobject_cast<QFileDialog *>(QApplication::activeModalWidget())) {
+            proposed = dialog->selectedFiles().value(0);
+            dialog->reject();
+        }
+    });
+    QAction *saveAs = test::menuAction(window, QStringLiteral("Save As..."));
+    if (saveAs)
+        saveAs->trigger();
+    return proposed;
+}
+
+} // namespace
+
+// A listing opened from a file is named after it (the title, the project pane, the printed
+// header), not "Untitled", and Save As proposes a project of the same name beside it; with
+// errors in the listing too. A project opened next is named by its own file.
+TEST(FilesMenu, AnImportedListingIsNamedAfterItsFileAndSavesBesideIt) {
+    QTemporaryDir dir;
+    const auto write = [&dir](const QString &name, const QByteArray &text) {
+        QFile out(dir.filePath(name));
+        EXPECT_TRUE(out.open(QIODevice::WriteOnly));
+        out.write(text);
+        return out.fileName();
+    };
+    const QString good = write(QStringLiteral("traffic.il"), "LD X0\nOUT Y0\nEND\n");
+    const QString bad = write(QStringLiteral("broken.txt"), "LD X8\nOUT Y0\nEND\n");
+    app::MainWindow window;
+    ASSERT_TRUE(window.openFile(good, QStringLiteral("vigor"), true));
+    EXPECT_TRUE(window.document()->path().isEmpty()); // Save asks where
+    EXPECT_EQ(window.document()->name(), QStringLiteral("traffic.il"));
+    EXPECT_TRUE(window.windowTitle().startsWith(QStringLiteral("traffic.il")))
+        << window.windowTitle().toStdString();
+    EXPECT_EQ(QFileInfo(saveAsProposal(window)).absoluteFilePath(),
+              QFileInfo(dir.filePath(QStringLiteral("traffic.rung"))).absoluteFilePath());
+
+    ASSERT_TRUE(window.openFile(bad, QStringLiteral("vigor"), true));
+    EXPECT_EQ(window.document()->name(), QStringLiteral("broken.txt"));
+    EXPECT_TRUE(window.windowTitle().startsWith(QStringLiteral("broken.txt")))
+        << window.windowTitle().toStdString();
+    EXPECT_EQ(QFileInfo(saveAsProposal(window)).fileName(), QStringLiteral("broken.rung"));
+
+    const QString project = dir.filePath(QStringLiteral("kept.rung"));
+    ASSERT_TRUE(window.saveTo(project));
+    EXPECT_EQ(window.document()->name(), QStringLiteral("kept.rung"));
+    EXPECT_TRUE(window.windowTitle().startsWith(QStringLiteral("kept.rung")))
+        << window.windowTitle().toStdString();
+    ASSERT_TRUE(window.openFile(good, QStringLiteral("vigor"), true));
+    ASSERT_TRUE(window.openFile(project, QString(), true));
+    EXPECT_EQ(window.document()->name(), QStringLiteral("kept.rung"));
+}
+
+// An example opens as an untitled copy named by its title; Save As proposes its file name.
+TEST(FilesMenu, AnExampleIsNamedByItsTitle) {
+    app::MainWindow window;
+    QAction *traffic = nullptr;
+    if (QMenu *examples = test::submenu(window, QStringLiteral("Examples")))
+        for (QAction *sub : examples->actions())
+            for (QAction *example : sub->menu()->actions())
+                if (example->text() == QStringLiteral("Traffic light"))
+                    traffic = example;
+    ASSERT_NE(traffic, nullptr);
+    traffic->trigger();
+    EXPECT_TRUE(window.document()->path().isEmpty());
+    EXPECT_EQ(window.document()->name(), QStringLiteral("Traffic light"));
+    EXPECT_TRUE(window.windowTitle().startsWith(QStringLiteral("Traffic light")))
+        << window.windowTitle().toStdString();
+    EXPECT_EQ(QFileInfo(saveAsProposal(window)).fileName(), QStringLiteral("traffic-light.rung"));
+}
