@@ -342,6 +342,16 @@ bool Document::setListing(const QString &text, std::vector<model::Diagnostic> *e
         d.message = e.message;
         problems.push_back(d);
     }
+    if (!parsed.ok()) {
+        // What the lines that did parse show already (an output to an input, a coil driven
+        // twice), beside the lines that did not.
+        model::CheckOptions partial;
+        partial.model = modelVariant();
+        partial.source = &text;
+        partial.parsedLinesOnly = true;
+        for (model::Diagnostic &d : model::checkList(parsed.list, partial))
+            problems.push_back(std::move(d));
+    }
     if (!parsed.ok() || !problems.empty()) {
         model::sortDiagnostics(problems);
         if (errors)

@@ -47,15 +47,20 @@ std::vector<model::Diagnostic> findings(const Input &input) {
     for (const model::Diagnostic &d : input.problems)
         if (d.code == QLatin1String("SYN001"))
             all.push_back(d);
+    model::CheckOptions options;
+    options.model = input.model;
+    if (input.kind == InputKind::Listing)
+        options.source = &input.text;
     // A text that parses is checked whole, even when it cannot be drawn (or listed): the checks
-    // name those problems by their documented codes, next to every other finding.
+    // name those problems by their documented codes, next to every other finding. A listing
+    // with lines that do not parse gets what the others show already (Document::setListing).
     if (all.empty()) {
-        model::CheckOptions options;
-        options.model = input.model;
-        if (input.kind == InputKind::Listing)
-            options.source = &input.text;
         all = input.kind == InputKind::Listing ? model::checkList(input.list, options)
                                                : model::checkLadder(input.ladder, options);
+    } else if (input.kind == InputKind::Listing) {
+        options.parsedLinesOnly = true;
+        for (model::Diagnostic &d : model::checkList(input.list, options))
+            all.push_back(std::move(d));
     }
     model::sortDiagnostics(all);
     return all;
@@ -78,14 +83,13 @@ bool pendingListing(const Input &input, QString *notice, std::vector<model::Diag
     const model::ParseResult parsed = model::parseInstructionList(*input.target, text, input.model);
     for (const model::ParseError &e : parsed.errors)
         errors->push_back(syntaxError(e.line, e.column, e.message));
-    if (parsed.ok()) {
-        model::CheckOptions options;
-        options.model = input.model;
-        options.source = &text;
-        for (const model::Diagnostic &d : model::checkList(parsed.list, options))
-            if (d.severity == model::Severity::Error)
-                errors->push_back(d);
-    }
+    model::CheckOptions options;
+    options.model = input.model;
+    options.source = &text;
+    options.parsedLinesOnly = !parsed.ok();
+    for (const model::Diagnostic &d : model::checkList(parsed.list, options))
+        if (d.severity == model::Severity::Error)
+            errors->push_back(d);
     return true;
 }
 

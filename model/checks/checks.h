@@ -17,6 +17,11 @@ struct CheckOptions {
     // Only the fuzzy-syntax findings (FZ*) on the form of the text: for an editor that keeps
     // the user's listing as typed and has the program's other findings from the ladder.
     bool formOnly = false;
+    // Some lines of the text did not parse and are not in the list: only what each instruction
+    // shows by itself or beside the others that did (operands, double coils). The rungs,
+    // blocks, stack, END and length would be judged on a list with holes, and wait until
+    // every line parses.
+    bool parsedLinesOnly = false;
     // The text the listing was parsed from, if at hand: operand findings then point at the
     // operand's column instead of the instruction's.
     const QString *source = nullptr;

@@ -31,12 +31,18 @@ public:
         , m_t(*list.target)
         , m_model(options.model ? options.model : &list.target->defaultModel())
         , m_formOnly(options.formOnly)
+        , m_parsedLinesOnly(options.parsedLinesOnly)
         , m_source(options.source) {}
 
     void setForms(bool on) { m_withForms = on; }
 
     std::vector<Finding> run() {
         spans();
+        if (m_parsedLinesOnly) {
+            operands();
+            duplicates();
+            return std::move(m_found);
+        }
         blocksAndStack();
         if (m_formOnly) {
             std::erase_if(m_found, [](const Finding &f) {
@@ -615,6 +621,7 @@ private:
     const Target &m_t;
     const ModelVariant *m_model;
     bool m_formOnly = false;
+    bool m_parsedLinesOnly = false;
     const QString *m_source = nullptr;
     QStringList m_sourceLines; // split on the first operand finding
     std::vector<RungSpan> m_spans;

@@ -63,6 +63,21 @@ TEST(CliCheck, SyntaxErrorsHaveLineAndColumn) {
               QStringLiteral("%1:2:6: error: Y8: Y is numbered in octal [SYN001]\n").arg(file));
 }
 
+// The lines that parse are checked beside the one that does not, as in the editor.
+TEST(CliCheck, TheLinesThatParseAreCheckedBesideASyntaxError) {
+    QTemporaryDir dir;
+    const QString file =
+        write(dir, QStringLiteral("bad.il"), "LD X8\nOUT Y0\nLD X1\nOUT X2\nEND\n");
+    const CliRun r =
+        cli({QStringLiteral("check"), file, QStringLiteral("--target"), QStringLiteral("vigor")});
+    EXPECT_EQ(r.code, 1);
+    EXPECT_EQ(r.out,
+              QStringLiteral("%1:1:5: error: X8: X is numbered in octal [SYN001]\n"
+                             "%1:4:5: error: X2 cannot be written: the program only reads it "
+                             "(inputs) [OP002]\n")
+                  .arg(file));
+}
+
 // A rung whose X2 would carry power right to left (RC001 at rung 1, row 1, column 4).
 constexpr char kBridgeLadder[] = "LADDER vigor WIDTH 8\n"
                                  "RUNG 1 ROWS 3 COLUMNS 3\n"

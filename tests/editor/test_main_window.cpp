@@ -110,6 +110,21 @@ TEST_F(Fixture, InvalidListKeepsTheLastLadderAndShowsTheError) {
     EXPECT_TRUE(found);
 }
 
+// The other lines are checked while one does not parse: OUT X2 (an output to an input) is in
+// the problems and marked in the list beside the syntax error of line 1.
+TEST_F(Fixture, TheLinesThatParseAreCheckedWhileAnotherDoesNot) {
+    window.ilEditor()->setText(QStringLiteral("LD X8\nOUT Y0\nLD X1\nOUT X2\nEND\n"));
+    window.applyListing();
+    QStringList found;
+    for (int i = 0; const model::Diagnostic *d = window.problemsView()->diagnosticAt(i); ++i)
+        found << QStringLiteral("%1@%2").arg(d->code).arg(d->location.line);
+    EXPECT_EQ(found, (QStringList{QStringLiteral("SYN001@1"), QStringLiteral("OP002@4")}))
+        << found.join(u' ').toStdString();
+    EXPECT_NE(window.ilEditor()->markersAtLine(3), 0u); // line 4, 0-based
+    EXPECT_TRUE(window.ilEditor()->annotation(3).contains(QStringLiteral("[OP002]")))
+        << window.ilEditor()->annotation(3).toStdString();
+}
+
 TEST_F(Fixture, EditingTheListAfterAPauseNeedsNoExplicitApply) {
     QSignalSpy changed(window.document(), &editor::Document::programChanged);
     window.ilEditor()->setText(QStringLiteral("LD X2\nOUT Y2\nEND\n"));

@@ -642,3 +642,30 @@ TEST(Checks, ProblemsThatKeepALadderFromItsListingAreLD003) {
         EXPECT_FALSE(e.code.startsWith(QLatin1String("CV"))) << e.code.toStdString();
     EXPECT_EQ(find(checkLadder(box.ladder), "LD003"), nullptr);
 }
+
+// A listing with a line that does not parse (LD X8: X is octal) is still checked where the
+// other lines show something by themselves: an output to an input, a coil driven twice. What
+// depends on the whole list (OUT Y0 left without its condition, the blocks, END) waits.
+TEST(Checks, LinesThatDoNotParseLeaveTheOthersChecked) {
+    const Target &t = Target::get(Family::Vigor);
+    const QString listing = QStringLiteral("LD X8\nOUT Y0\nLD X1\nOUT X2\nLD X3\nOUT Y0\nEND\n");
+    const ParseResult parsed = parseInstructionList(t, listing);
+    ASSERT_EQ(parsed.errors.size(), 1u);
+    EXPECT_EQ(parsed.errors[0].line, 1);
+    CheckOptions partial;
+    partial.source = &listing;
+    partial.parsedLinesOnly = true;
+    const std::vector<Diagnostic> found = checkList(parsed.list, partial);
+    ASSERT_EQ(found.size(), 2u) << all(found).toStdString();
+    EXPECT_EQ(found[0].code, QStringLiteral("OP002"));
+    EXPECT_EQ(found[0].location.line, 4);
+    EXPECT_EQ(found[0].location.column, 5); // at X2
+    EXPECT_EQ(found[1].code, QStringLiteral("DC001"));
+    EXPECT_EQ(found[1].location.line, 6);
+    // Checked whole, the list with its hole has an output with no condition on line 2: a
+    // finding of the hole, not of what the user typed.
+    CheckOptions whole;
+    whole.source = &listing;
+    EXPECT_NE(find(checkList(parsed.list, whole), "OC001"), nullptr);
+    EXPECT_EQ(find(found, "OC001"), nullptr);
+}
