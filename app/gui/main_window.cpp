@@ -24,6 +24,7 @@
 #include <QSettings>
 #include <QSplitter>
 #include <QStatusBar>
+#include <QTabBar>
 #include <QTabWidget>
 #include <QTimer>
 #include <QVBoxLayout>
@@ -496,6 +497,19 @@ void MainWindow::changeEvent(QEvent *event) {
     if (event->type() == QEvent::LanguageChange && m_toolBar)
         retranslate();
     QMainWindow::changeEvent(event);
+}
+
+void MainWindow::childEvent(QChildEvent *event) {
+    // Qt makes a tab bar for docks tabbed together when it lays them out, eliding the titles
+    // to the dock's width: with the project, the cross reference, the terminals and the
+    // simulation beside the ladder at 1366x768 every tab read "P...", "Si...". Whole titles
+    // and scroll arrows tell each apart; polished is after Qt's own settings.
+    if (event->polished())
+        if (auto *tabs = qobject_cast<QTabBar *>(event->child())) {
+            tabs->setElideMode(Qt::ElideNone);
+            tabs->setUsesScrollButtons(true);
+        }
+    QMainWindow::childEvent(event);
 }
 
 void MainWindow::retranslate() {

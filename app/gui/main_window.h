@@ -130,6 +130,8 @@ public:
 protected:
     void closeEvent(QCloseEvent *event) override;
     void changeEvent(QEvent *event) override; // LanguageChange: retranslate()
+    // The docks' tab bars, as Qt makes them: whole titles (scrolled), never "P..." / "Si...".
+    void childEvent(QChildEvent *event) override;
 
 private:
     // applyListing(), as a step of its own or into the undo step already under way (a fix).

@@ -8,6 +8,7 @@
 #include "editor/problems_view.h"
 
 #include <QAction>
+#include <QApplication>
 #include <QDockWidget>
 #include <QLabel>
 #include <QMenuBar>
@@ -15,6 +16,7 @@
 #include <QSignalSpy>
 #include <QSplitter>
 #include <QStatusBar>
+#include <QTabBar>
 #include <QTabWidget>
 #include <QTest>
 
@@ -150,4 +152,31 @@ TEST(ViewLayout, TheSplitBetweenLadderAndListIsRemembered) {
     EXPECT_EQ(split->sizes(), chosen);
     QSettings().remove(QStringLiteral("view/sideBySide"));
     QSettings().remove(QStringLiteral("view/split"));
+}
+
+// The docks tabbed beside the ladder at 1366x768 (project, cross reference, terminals,
+// simulation) show their whole titles, scrolled when they do not fit: Qt's own tab bars cut
+// them to "P..." and "Si...", which no one can tell apart.
+TEST(DockTabs, TitlesAreWholeAt1366x768) {
+    app::MainWindow window;
+    window.resize(1366, 768);
+    window.show();
+    ASSERT_TRUE(QTest::qWaitForWindowExposed(&window));
+    for (const char *name : {"ioDock", "simulationDock", "crossReferenceDock"}) {
+        auto *dock = window.findChild<QDockWidget *>(QString::fromLatin1(name));
+        ASSERT_NE(dock, nullptr) << name;
+        dock->show();
+    }
+    QApplication::processEvents();
+    int tabs = 0;
+    for (QTabBar *bar : window.findChildren<QTabBar *>(Qt::FindDirectChildrenOnly)) {
+        if (!bar->isVisible())
+            continue;
+        EXPECT_EQ(bar->elideMode(), Qt::ElideNone);
+        for (int i = 0; i < bar->count(); ++i, ++tabs)
+            EXPECT_GE(bar->tabRect(i).width(),
+                      bar->fontMetrics().horizontalAdvance(bar->tabText(i)))
+                << bar->tabText(i).toStdString();
+    }
+    EXPECT_GE(tabs, 4); // the left column's four
 }
