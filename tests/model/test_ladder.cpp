@@ -278,6 +278,42 @@ TEST_P(LadderTextRoundTrip, PrintThenParseGivesTheSameLadder) {
     }
 }
 
+// A project holds each contact as its text (contactToText): read alone (contactFromText, as
+// loadProject does), it is the contact the drawing had, for every kind of contact of a target.
+TEST_P(LadderTextRoundTrip, EveryContactReadsBackAlone) {
+    const Target &target = Target::get(GetParam());
+    int contacts = 0;
+    for (std::uint64_t seed = 1; seed <= 100; ++seed) {
+        rung::testing::RandomProgramOptions o;
+        o.rungs = 6;
+        o.extended = true;
+        ParseResult p = parseInstructionList(target, rung::testing::randomProgram(target, seed, o));
+        ASSERT_TRUE(p.ok()) << seed;
+        const ToLadderResult lad = listToLadder(p.list);
+        for (const Rung &rung : lad.ladder.rungs)
+            for (int r = 0; r < rung.rows; ++r)
+                for (int c = 0; c < rung.columns; ++c) {
+                    if (rung.cell(r, c).kind != CellKind::Contact)
+                        continue;
+                    const Contact &drawn = rung.cell(r, c).contact;
+                    const QString text = contactToText(target, drawn);
+                    QString error;
+                    const std::optional<Contact> read = contactFromText(target, text, &error);
+                    ASSERT_TRUE(read.has_value())
+                        << text.toStdString() << ": " << error.toStdString();
+                    EXPECT_TRUE(*read == drawn) << text.toStdString();
+                    ++contacts;
+                }
+    }
+    EXPECT_GT(contacts, 500);
+    // What is not a contact says why.
+    for (const char *bad : {"", "/", "~X", "?X0", "X0]-[X1"}) {
+        QString error;
+        EXPECT_FALSE(contactFromText(target, QString::fromLatin1(bad), &error).has_value()) << bad;
+        EXPECT_FALSE(error.isEmpty()) << bad;
+    }
+}
+
 INSTANTIATE_TEST_SUITE_P(AllTargets, LadderTextRoundTrip,
                          ::testing::Values(Family::Vpc, Family::Vigor, Family::Cpm1, Family::Pl110),
                          [](const auto &info) { return Target::get(info.param).id.toStdString(); });
