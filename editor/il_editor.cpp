@@ -449,12 +449,14 @@ void IlEditor::showDiagnostics(const std::vector<model::Diagnostic> &diagnostics
     markerDeleteAll(kErrorMarker);
     markerDeleteAll(kWarningMarker);
     m_notes.clear();
+    m_longestNote = 0;
     for (const model::Diagnostic &d : diagnostics) {
         if (!d.location.onListing())
             continue;
         const int line = d.location.line - 1;
         markerAdd(line, d.severity == model::Severity::Error ? kErrorMarker : kWarningMarker);
         m_notes[line] << QStringLiteral("%1 [%2]").arg(d.message, d.code);
+        m_longestNote = std::max(m_longestNote, m_notes[line].back().size());
     }
     showNotes();
 }
@@ -503,8 +505,27 @@ void IlEditor::showNotes() {
 
 void IlEditor::resizeEvent(QResizeEvent *event) {
     QsciScintilla::resizeEvent(event);
-    if (!m_notes.empty() && noteColumns() != m_notesWrappedAt)
-        showNotes();
+    const int columns = noteColumns();
+    if (m_notes.empty() || columns == m_notesWrappedAt)
+        return;
+    // Notes no longer than either width are one line at both: nothing to write again.
+    if (m_longestNote <= std::min(columns, m_notesWrappedAt)) {
+        m_notesWrappedAt = columns;
+        return;
+    }
+    // Once for the resizes of one layout pass (a window shown resizes the list several
+    // times): writing 10,000 notes is tens of milliseconds each time.
+    if (m_rewrapPending)
+        return;
+    m_rewrapPending = true;
+    QMetaObject::invokeMethod(
+        this,
+        [this] {
+            m_rewrapPending = false;
+            if (noteColumns() != m_notesWrappedAt)
+                showNotes();
+        },
+        Qt::QueuedConnection);
 }
 
 void IlEditor::setStepNumbers(const std::vector<int> &stepOfLine) {

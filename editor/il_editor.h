@@ -146,6 +146,8 @@ private:
     std::function<QStringList()> m_devices;
     std::map<int, QStringList> m_notes; // the diagnostics' messages by line, unwrapped
     int m_notesWrappedAt = 0;           // the columns they were last wrapped to
+    qsizetype m_longestNote = 0;        // no narrower view wraps a note
+    bool m_rewrapPending = false;       // a resize asked to wrap them again, not yet done
     int m_stoppedLine = 0;
     QPointer<model::MonitorSource> m_source;
     MonitorCommands *m_commands = nullptr;
