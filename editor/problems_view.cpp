@@ -1,8 +1,11 @@
 #include "problems_view.h"
 
+#include <QAbstractTableModel>
+#include <QCoreApplication>
 #include <QContextMenuEvent>
 #include <QEvent>
 #include <QHeaderView>
+#include <QIcon>
 #include <QMenu>
 #include <QPainter>
 #include <QStyle>
@@ -11,58 +14,132 @@
 
 namespace rung::editor {
 
+// The findings as rows: severity, code, place, message. Texts are made when a row is drawn.
+class ProblemsModel : public QAbstractTableModel {
+    Q_DECLARE_TR_FUNCTIONS(rung::editor::ProblemsView)
+
+public:
+    ProblemsModel(QObject *parent, QIcon error, QIcon warning)
+        : QAbstractTableModel(parent)
+        , m_error(std::move(error))
+        , m_warning(std::move(warning)) {}
+
+    void setDiagnostics(std::vector<model::Diagnostic> diagnostics) {
+        beginResetModel();
+        m_diagnostics = std::move(diagnostics);
+        endResetModel();
+    }
+    // The headers and rows in the language now installed.
+    void retranslate() {
+        emit headerDataChanged(Qt::Horizontal, 0, kColumns - 1);
+        if (!m_diagnostics.empty())
+            emit dataChanged(index(0, 0), index(rowCount() - 1, kColumns - 1));
+    }
+    const std::vector<model::Diagnostic> &diagnostics() const { return m_diagnostics; }
+
+    int rowCount(const QModelIndex &parent = {}) const override {
+        return parent.isValid() ? 0 : static_cast<int>(m_diagnostics.size());
+    }
+    int columnCount(const QModelIndex &parent = {}) const override {
+        return parent.isValid() ? 0 : kColumns;
+    }
+
+    QVariant headerData(int section, Qt::Orientation orientation, int role) const override {
+        if (orientation != Qt::Horizontal || role != Qt::DisplayRole)
+            return {};
+        switch (section) {
+        case 0:
+            return tr("Severity");
+        case 1:
+            return tr("Code");
+        case 2:
+            return tr("Place");
+        case 3:
+            return tr("Message");
+        }
+        return {};
+    }
+
+    QVariant data(const QModelIndex &index, int role) const override {
+        if (!index.isValid() || index.row() >= rowCount())
+            return {};
+        const model::Diagnostic &d = m_diagnostics[static_cast<std::size_t>(index.row())];
+        const bool error = d.severity == model::Severity::Error;
+        if (role == Qt::DecorationRole && index.column() == 0)
+            return error ? m_error : m_warning;
+        if (role == Qt::ToolTipRole && index.column() == 3)
+            return d.message;
+        if (role != Qt::DisplayRole)
+            return {};
+        switch (index.column()) {
+        case 0:
+            return error                                    ? tr("Error")
+                   : d.severity == model::Severity::Warning ? tr("Warning")
+                                                            : tr("Note");
+        case 1:
+            return d.code;
+        case 2:
+            return place(d);
+        case 3:
+            return d.fix ? tr("%1 (fix available)").arg(d.message) : d.message;
+        }
+        return {};
+    }
+
+    static QString place(const model::Diagnostic &d) {
+        if (d.location.onListing())
+            return tr("line %1").arg(d.location.line);
+        if (d.location.onLadder())
+            return d.location.row >= 0
+                       ? tr("rung %1, row %2").arg(d.location.rung + 1).arg(d.location.row + 1)
+                       : tr("rung %1").arg(d.location.rung + 1);
+        return {};
+    }
+
+private:
+    static constexpr int kColumns = 4;
+    std::vector<model::Diagnostic> m_diagnostics;
+    QIcon m_error;
+    QIcon m_warning;
+};
+
 ProblemsView::ProblemsView(QWidget *parent)
-    : QTreeWidget(parent) {
-    setColumnCount(4);
+    : QTreeView(parent)
+    , m_model(new ProblemsModel(this, style()->standardIcon(QStyle::SP_MessageBoxCritical),
+                                style()->standardIcon(QStyle::SP_MessageBoxWarning))) {
+    setModel(m_model);
     retranslate();
     setRootIsDecorated(false);
     setUniformRowHeights(true);
     setAlternatingRowColors(true);
+    setEditTriggers(QAbstractItemView::NoEditTriggers);
     header()->setStretchLastSection(true);
-    connect(this, &QTreeWidget::itemActivated, this, [this](QTreeWidgetItem *item) {
-        if (const model::Diagnostic *d = diagnosticAt(indexOfTopLevelItem(item)))
+    connect(this, &QTreeView::activated, this, [this](const QModelIndex &index) {
+        if (const model::Diagnostic *d = diagnosticAt(index.row()))
             emit locate(*d);
     });
 }
 
 void ProblemsView::retranslate() {
-    setHeaderLabels({tr("Severity"), tr("Code"), tr("Place"), tr("Message")});
+    m_model->retranslate();
     setAccessibleName(tr("Problems"));
 }
 
 void ProblemsView::changeEvent(QEvent *event) {
-    // The rows come again from whoever found them (in the new language); the headers are ours.
+    // The rows come again from whoever found them (in the new language); the headers and
+    // the severities are ours.
     if (event->type() == QEvent::LanguageChange)
         retranslate();
-    QTreeWidget::changeEvent(event);
+    QTreeView::changeEvent(event);
 }
 
 void ProblemsView::setDiagnostics(const std::vector<model::Diagnostic> &diagnostics) {
-    m_diagnostics = diagnostics;
-    model::sortDiagnostics(m_diagnostics);
-    clear();
-    for (const model::Diagnostic &d : m_diagnostics) {
-        auto *item = new QTreeWidgetItem(this);
-        const bool error = d.severity == model::Severity::Error;
-        item->setIcon(0, style()->standardIcon(error ? QStyle::SP_MessageBoxCritical
-                                                     : QStyle::SP_MessageBoxWarning));
-        item->setText(0, error                                    ? tr("Error")
-                         : d.severity == model::Severity::Warning ? tr("Warning")
-                                                                  : tr("Note"));
-        item->setText(1, d.code);
-        QString place;
-        if (d.location.onListing())
-            place = tr("line %1").arg(d.location.line);
-        else if (d.location.onLadder())
-            place = d.location.row >= 0
-                        ? tr("rung %1, row %2").arg(d.location.rung + 1).arg(d.location.row + 1)
-                        : tr("rung %1").arg(d.location.rung + 1);
-        item->setText(2, place);
-        item->setText(3, d.fix ? tr("%1 (fix available)").arg(d.message) : d.message);
-        item->setToolTip(3, d.message);
-    }
-    // Columns fit their contents, but never narrower than a "Warning" with its icon, a code
-    // and a "rung 10, row 2": an empty or short list does not squeeze its headers.
+    std::vector<model::Diagnostic> sorted = diagnostics;
+    model::sortDiagnostics(sorted);
+    m_model->setDiagnostics(std::move(sorted));
+    // Columns fit their contents (the rows in view and about a thousand more: Qt's measure),
+    // but never narrower than a "Warning" with its icon, a code and a "rung 10, row 2": an
+    // empty or short list does not squeeze its headers.
     const QFontMetrics fm(font());
     const int minimum[3] = {fm.horizontalAdvance(tr("Warning")) + 44,
                             fm.horizontalAdvance(QStringLiteral("SYN001")) + 24,
@@ -74,10 +151,14 @@ void ProblemsView::setDiagnostics(const std::vector<model::Diagnostic> &diagnost
     viewport()->update();
 }
 
+int ProblemsView::rowCount() const {
+    return m_model->rowCount();
+}
+
 int ProblemsView::count(model::Severity severity) const {
-    return static_cast<int>(
-        std::count_if(m_diagnostics.begin(), m_diagnostics.end(),
-                      [severity](const model::Diagnostic &d) { return d.severity == severity; }));
+    const auto &all = m_model->diagnostics();
+    return static_cast<int>(std::count_if(
+        all.begin(), all.end(), [severity](const auto &d) { return d.severity == severity; }));
 }
 
 QString ProblemsView::summary() const {
@@ -92,8 +173,8 @@ QString ProblemsView::summary() const {
 }
 
 void ProblemsView::paintEvent(QPaintEvent *event) {
-    QTreeWidget::paintEvent(event);
-    if (topLevelItemCount() > 0)
+    QTreeView::paintEvent(event);
+    if (rowCount() > 0)
         return;
     // An empty list says so, instead of looking like it has not run.
     QPainter p(viewport());
@@ -102,13 +183,14 @@ void ProblemsView::paintEvent(QPaintEvent *event) {
 }
 
 const model::Diagnostic *ProblemsView::diagnosticAt(int row) const {
-    if (row < 0 || row >= static_cast<int>(m_diagnostics.size()))
+    const auto &all = m_model->diagnostics();
+    if (row < 0 || row >= static_cast<int>(all.size()))
         return nullptr;
-    return &m_diagnostics[static_cast<std::size_t>(row)];
+    return &all[static_cast<std::size_t>(row)];
 }
 
 void ProblemsView::contextMenuEvent(QContextMenuEvent *event) {
-    const model::Diagnostic *d = diagnosticAt(indexOfTopLevelItem(itemAt(event->pos())));
+    const model::Diagnostic *d = diagnosticAt(indexAt(event->pos()).row());
     if (!d)
         return;
     QMenu menu(this);

@@ -1,15 +1,19 @@
 #pragma once
 
 // The problems panel: every finding of the checks, sorted by place, with its code and
-// severity. Activating one asks to show its place; a finding with a fix offers it.
+// severity. Activating one asks to show its place; a finding with a fix offers it. The rows
+// are the findings themselves (a model over them): a program with 30,000 findings costs no
+// widget item, text or icon of its own per finding.
 
 #include "model/checks/diagnostic.h"
 
-#include <QTreeWidget>
+#include <QTreeView>
 
 namespace rung::editor {
 
-class ProblemsView : public QTreeWidget {
+class ProblemsModel;
+
+class ProblemsView : public QTreeView {
     Q_OBJECT
 
 public:
@@ -17,6 +21,7 @@ public:
 
     void setDiagnostics(const std::vector<model::Diagnostic> &diagnostics);
     const model::Diagnostic *diagnosticAt(int row) const;
+    int rowCount() const;
     int count(model::Severity severity) const;
     // "Problems (2 errors, 1 warning)", the panel's title.
     QString summary() const;
@@ -32,7 +37,7 @@ protected:
 
 private:
     void retranslate();
-    std::vector<model::Diagnostic> m_diagnostics;
+    ProblemsModel *m_model;
 };
 
 } // namespace rung::editor

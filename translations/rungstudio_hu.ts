@@ -185,7 +185,7 @@ Kilépési kód: 0 nincs hiba, 1 a programban hiba van, 2 használati vagy I/O h
         <translation>ismeretlen parancs: %1</translation>
     </message>
     <message>
-        <location filename="../app/cli/cli_common.cpp" line="+98"/>
+        <location filename="../app/cli/cli_common.cpp" line="+102"/>
         <source>%1 needs a value</source>
         <translation>%1 után érték kell</translation>
     </message>
@@ -221,12 +221,12 @@ Kilépési kód: 0 nincs hiba, 1 a programban hiba van, 2 használati vagy I/O h
         <translation>%1:létrafok %2:%3:%4</translation>
     </message>
     <message>
-        <location line="-180"/>
+        <location line="-179"/>
         <source>%1 holds an instruction list typed in Rung Studio that is not in its program: the list had errors when the project was saved, and is kept as typed under the key &quot;pendingListing&quot;; the rungs are the last valid program. Open the project in Rung Studio and fix the list.</source>
         <translation>A(z) %1 egy Rung Studióban begépelt utasításlistát tartalmaz, amely nincs benne a programjában: a lista hibás volt a projekt mentésekor, és begépelt formájában a „pendingListing” kulcs alatt maradt meg; a létrafokok az utolsó érvényes programot tartalmazzák. Nyissa meg a projektet a Rung Studióban, és javítsa ki a listát.</translation>
     </message>
     <message>
-        <location line="+123"/>
+        <location line="+122"/>
         <location line="+27"/>
         <source>%1 has no model %2</source>
         <translation>a(z) %1 rendszernek nincs %2 modellje</translation>
@@ -715,19 +715,19 @@ Válaszidő: %6 ms (átlag %7, max. %8); frissítés: %9 ms, %10 keret</translat
 <context>
     <name>rung::app::MainWindow</name>
     <message>
-        <location filename="../app/gui/main_window.cpp" line="+176"/>
+        <location filename="../app/gui/main_window.cpp" line="+177"/>
         <source>Problems</source>
         <translation>Problémák</translation>
     </message>
     <message>
         <location line="+5"/>
-        <location line="+327"/>
+        <location line="+340"/>
         <source>Project</source>
         <translation>Projekt</translation>
     </message>
     <message>
-        <location line="-320"/>
-        <location line="+323"/>
+        <location line="-333"/>
+        <location line="+336"/>
         <source>Symbols</source>
         <translation>Szimbólumok</translation>
     </message>
@@ -1110,7 +1110,7 @@ Létradiagram- és utasításlista-szerkesztő a következő PLC-khez: %2.</tran
         <translation>A Rung Studio névjegye</translation>
     </message>
     <message>
-        <location filename="../app/gui/main_window.cpp" line="-305"/>
+        <location filename="../app/gui/main_window.cpp" line="-318"/>
         <source>Rung Comment</source>
         <translation>Létrafok megjegyzése</translation>
     </message>
@@ -1121,18 +1121,18 @@ Létradiagram- és utasításlista-szerkesztő a következő PLC-khez: %2.</tran
     </message>
     <message>
         <location line="+22"/>
-        <location line="+287"/>
+        <location line="+300"/>
         <source>Ladder</source>
         <translation>Létradiagram</translation>
     </message>
     <message>
-        <location line="-286"/>
-        <location line="+287"/>
+        <location line="-299"/>
+        <location line="+300"/>
         <source>Instruction List</source>
         <translation>Utasításlista</translation>
     </message>
     <message>
-        <location line="-274"/>
+        <location line="-287"/>
         <source>The list as typed had errors and now shows the ladder&apos;s program; Ctrl+Z in the list brings it back</source>
         <translation>A begépelt lista hibás volt, most a létradiagram programját mutatja; a listában a Ctrl+Z visszahozza</translation>
     </message>
@@ -1461,7 +1461,7 @@ Létradiagram- és utasításlista-szerkesztő a következő PLC-khez: %2.</tran
         </translation>
     </message>
     <message>
-        <location filename="../app/gui/main_window.cpp" line="+90"/>
+        <location filename="../app/gui/main_window.cpp" line="+103"/>
         <location filename="../app/gui/main_window_tools.cpp" line="-26"/>
         <source>Cross Reference</source>
         <translation>Kereszthivatkozás</translation>
@@ -3558,7 +3558,7 @@ Kiértékelés: %4 µs (%5..%6)</translation>
         <translation>Ez a sor egy másik program létrafokát jelölte: törölje a sort, vagy vonja vissza a beillesztést</translation>
     </message>
     <message>
-        <location line="+59"/>
+        <location line="+69"/>
         <source>Edit instruction list</source>
         <translation>Utasításlista szerkesztése</translation>
     </message>
@@ -3592,7 +3592,7 @@ Kiértékelés: %4 µs (%5..%6)</translation>
     <name>rung::editor::IlEditor</name>
     <message>
         <location filename="../editor/il_editor.cpp" line="+273"/>
-        <location line="+354"/>
+        <location line="+375"/>
         <source>Instruction list</source>
         <translation>Utasításlista</translation>
     </message>
@@ -3600,7 +3600,7 @@ Kiértékelés: %4 µs (%5..%6)</translation>
 <context>
     <name>rung::editor::IlLexer</name>
     <message>
-        <location line="-560"/>
+        <location line="-581"/>
         <source>Default</source>
         <translation>Alapértelmezett</translation>
     </message>
@@ -4016,70 +4016,70 @@ Kiértékelés: %4 µs (%5..%6)</translation>
 <context>
     <name>rung::editor::ProblemsView</name>
     <message>
-        <location filename="../editor/problems_view.cpp" line="+29"/>
+        <location filename="../editor/problems_view.cpp" line="+52"/>
         <source>Severity</source>
         <translation>Súlyosság</translation>
     </message>
     <message>
-        <location line="+0"/>
+        <location line="+2"/>
         <source>Code</source>
         <translation>Kód</translation>
     </message>
     <message>
-        <location line="+0"/>
+        <location line="+2"/>
         <source>Place</source>
         <translation>Hely</translation>
     </message>
     <message>
-        <location line="+0"/>
+        <location line="+2"/>
         <source>Message</source>
         <translation>Üzenet</translation>
     </message>
     <message>
-        <location line="+1"/>
-        <location line="+61"/>
+        <location line="+67"/>
+        <location line="+47"/>
         <source>Problems</source>
         <translation>Problémák</translation>
     </message>
     <message>
-        <location line="-42"/>
+        <location line="-96"/>
         <source>Error</source>
         <translation>Hiba</translation>
     </message>
     <message>
         <location line="+1"/>
-        <location line="+17"/>
+        <location line="+67"/>
         <source>Warning</source>
         <translation>Figyelmeztetés</translation>
     </message>
     <message>
-        <location line="-16"/>
+        <location line="-66"/>
         <source>Note</source>
         <translation>Megjegyzés</translation>
     </message>
     <message>
-        <location line="+4"/>
+        <location line="+13"/>
         <source>line %1</source>
         <translation>%1. sor</translation>
     </message>
     <message>
         <location line="+3"/>
-        <location line="+11"/>
+        <location line="+52"/>
         <source>rung %1, row %2</source>
         <translation>%1. létrafok, %2. sor</translation>
     </message>
     <message>
-        <location line="-10"/>
+        <location line="-51"/>
         <source>rung %1</source>
         <translation>%1. létrafok</translation>
     </message>
     <message>
-        <location line="+2"/>
+        <location line="-11"/>
         <source>%1 (fix available)</source>
         <translation>%1 (javítás elérhető)</translation>
     </message>
     <message>
-        <location line="+27"/>
+        <location line="+85"/>
         <source>1 error</source>
         <translation>1 hiba</translation>
     </message>
@@ -4114,7 +4114,7 @@ Kiértékelés: %4 µs (%5..%6)</translation>
         <translation>Nincs probléma</translation>
     </message>
     <message>
-        <location line="+15"/>
+        <location line="+16"/>
         <source>Show</source>
         <translation>Megjelenítés</translation>
     </message>
@@ -4690,7 +4690,7 @@ Kiértékelés: %4 µs (%5..%6)</translation>
     </message>
     <message>
         <location line="+58"/>
-        <location filename="../model/checks/checks_list.cpp" line="+79"/>
+        <location filename="../model/checks/checks_list.cpp" line="+85"/>
         <source>Append %1</source>
         <translation>%1 hozzáfűzése a végére</translation>
     </message>
@@ -5387,7 +5387,7 @@ Kiértékelés: %4 µs (%5..%6)</translation>
 <context>
     <name>rung::model::LadderText</name>
     <message>
-        <location filename="../model/ladder/ladder_text.cpp" line="+186"/>
+        <location filename="../model/ladder/ladder_text.cpp" line="+197"/>
         <source>A ladder text starts with &quot;LADDER &lt;target&gt; WIDTH &lt;n&gt;&quot;</source>
         <translation>A létra-szöveg így kezdődik: &quot;LADDER &lt;target&gt; WIDTH &lt;n&gt;&quot;</translation>
     </message>
@@ -5458,7 +5458,7 @@ Kiértékelés: %4 µs (%5..%6)</translation>
         <translation>%1 egy szó; az érintkező bit típusú operandust vár</translation>
     </message>
     <message>
-        <location line="+74"/>
+        <location line="+69"/>
         <source>&apos;%1&apos; is not a contact</source>
         <translation>A(z) &apos;%1&apos; nem érintkező</translation>
     </message>

@@ -185,7 +185,7 @@ Codice di uscita: 0 nessun errore, 1 il programma contiene errori, 2 errore di u
         <translation>comando sconosciuto: %1</translation>
     </message>
     <message>
-        <location filename="../app/cli/cli_common.cpp" line="+98"/>
+        <location filename="../app/cli/cli_common.cpp" line="+102"/>
         <source>%1 needs a value</source>
         <translation>%1 richiede un valore</translation>
     </message>
@@ -221,12 +221,12 @@ Codice di uscita: 0 nessun errore, 1 il programma contiene errori, 2 errore di u
         <translation>%1:segmento %2:%3:%4</translation>
     </message>
     <message>
-        <location line="-180"/>
+        <location line="-179"/>
         <source>%1 holds an instruction list typed in Rung Studio that is not in its program: the list had errors when the project was saved, and is kept as typed under the key &quot;pendingListing&quot;; the rungs are the last valid program. Open the project in Rung Studio and fix the list.</source>
         <translation>%1 contiene una lista istruzioni digitata in Rung Studio che non è nel suo programma: la lista conteneva errori quando il progetto è stato salvato, ed è conservata così come digitata sotto la chiave &quot;pendingListing&quot;; i segmenti sono l&apos;ultimo programma valido. Aprire il progetto in Rung Studio e correggere la lista.</translation>
     </message>
     <message>
-        <location line="+123"/>
+        <location line="+122"/>
         <location line="+27"/>
         <source>%1 has no model %2</source>
         <translation>%1 non ha il modello %2</translation>
@@ -715,19 +715,19 @@ Andata e ritorno %6 ms (media %7, max %8); aggiornamento %9 ms, %10 frame</trans
 <context>
     <name>rung::app::MainWindow</name>
     <message>
-        <location filename="../app/gui/main_window.cpp" line="+176"/>
+        <location filename="../app/gui/main_window.cpp" line="+177"/>
         <source>Problems</source>
         <translation>Problemi</translation>
     </message>
     <message>
         <location line="+5"/>
-        <location line="+327"/>
+        <location line="+340"/>
         <source>Project</source>
         <translation>Progetto</translation>
     </message>
     <message>
-        <location line="-320"/>
-        <location line="+323"/>
+        <location line="-333"/>
+        <location line="+336"/>
         <source>Symbols</source>
         <translation>Simboli</translation>
     </message>
@@ -1110,7 +1110,7 @@ Editor di schemi ladder e liste istruzioni per %2.</translation>
         <translation>Informazioni su Rung Studio</translation>
     </message>
     <message>
-        <location filename="../app/gui/main_window.cpp" line="-305"/>
+        <location filename="../app/gui/main_window.cpp" line="-318"/>
         <source>Rung Comment</source>
         <translation>Commento del segmento</translation>
     </message>
@@ -1121,18 +1121,18 @@ Editor di schemi ladder e liste istruzioni per %2.</translation>
     </message>
     <message>
         <location line="+22"/>
-        <location line="+287"/>
+        <location line="+300"/>
         <source>Ladder</source>
         <translation>Ladder</translation>
     </message>
     <message>
-        <location line="-286"/>
-        <location line="+287"/>
+        <location line="-299"/>
+        <location line="+300"/>
         <source>Instruction List</source>
         <translation>Lista istruzioni</translation>
     </message>
     <message>
-        <location line="-274"/>
+        <location line="-287"/>
         <source>The list as typed had errors and now shows the ladder&apos;s program; Ctrl+Z in the list brings it back</source>
         <translation>La lista digitata conteneva errori e ora mostra il programma dello schema ladder; Ctrl+Z nella lista la ripristina</translation>
     </message>
@@ -1466,7 +1466,7 @@ Editor di schemi ladder e liste istruzioni per %2.</translation>
         </translation>
     </message>
     <message>
-        <location filename="../app/gui/main_window.cpp" line="+90"/>
+        <location filename="../app/gui/main_window.cpp" line="+103"/>
         <location filename="../app/gui/main_window_tools.cpp" line="-26"/>
         <source>Cross Reference</source>
         <translation>Riferimenti incrociati</translation>
@@ -3565,7 +3565,7 @@ Valutazione: %4 µs (%5..%6)</translation>
         <translation>Questa riga rappresentava un segmento di un altro programma: elimina la riga o annulla l&apos;incolla</translation>
     </message>
     <message>
-        <location line="+59"/>
+        <location line="+69"/>
         <source>Edit instruction list</source>
         <translation>Modifica lista istruzioni</translation>
     </message>
@@ -3599,7 +3599,7 @@ Valutazione: %4 µs (%5..%6)</translation>
     <name>rung::editor::IlEditor</name>
     <message>
         <location filename="../editor/il_editor.cpp" line="+273"/>
-        <location line="+354"/>
+        <location line="+375"/>
         <source>Instruction list</source>
         <translation>Lista istruzioni</translation>
     </message>
@@ -3607,7 +3607,7 @@ Valutazione: %4 µs (%5..%6)</translation>
 <context>
     <name>rung::editor::IlLexer</name>
     <message>
-        <location line="-560"/>
+        <location line="-581"/>
         <source>Default</source>
         <translation>Predefinito</translation>
     </message>
@@ -4023,70 +4023,70 @@ Valutazione: %4 µs (%5..%6)</translation>
 <context>
     <name>rung::editor::ProblemsView</name>
     <message>
-        <location filename="../editor/problems_view.cpp" line="+29"/>
+        <location filename="../editor/problems_view.cpp" line="+52"/>
         <source>Severity</source>
         <translation>Gravità</translation>
     </message>
     <message>
-        <location line="+0"/>
+        <location line="+2"/>
         <source>Code</source>
         <translation>Codice</translation>
     </message>
     <message>
-        <location line="+0"/>
+        <location line="+2"/>
         <source>Place</source>
         <translation>Posizione</translation>
     </message>
     <message>
-        <location line="+0"/>
+        <location line="+2"/>
         <source>Message</source>
         <translation>Messaggio</translation>
     </message>
     <message>
-        <location line="+1"/>
-        <location line="+61"/>
+        <location line="+67"/>
+        <location line="+47"/>
         <source>Problems</source>
         <translation>Problemi</translation>
     </message>
     <message>
-        <location line="-42"/>
+        <location line="-96"/>
         <source>Error</source>
         <translation>Errore</translation>
     </message>
     <message>
         <location line="+1"/>
-        <location line="+17"/>
+        <location line="+67"/>
         <source>Warning</source>
         <translation>Avviso</translation>
     </message>
     <message>
-        <location line="-16"/>
+        <location line="-66"/>
         <source>Note</source>
         <translation>Nota</translation>
     </message>
     <message>
-        <location line="+4"/>
+        <location line="+13"/>
         <source>line %1</source>
         <translation>riga %1</translation>
     </message>
     <message>
         <location line="+3"/>
-        <location line="+11"/>
+        <location line="+52"/>
         <source>rung %1, row %2</source>
         <translation>segmento %1, riga %2</translation>
     </message>
     <message>
-        <location line="-10"/>
+        <location line="-51"/>
         <source>rung %1</source>
         <translation>segmento %1</translation>
     </message>
     <message>
-        <location line="+2"/>
+        <location line="-11"/>
         <source>%1 (fix available)</source>
         <translation>%1 (correzione disponibile)</translation>
     </message>
     <message>
-        <location line="+27"/>
+        <location line="+85"/>
         <source>1 error</source>
         <translation>1 errore</translation>
     </message>
@@ -4121,7 +4121,7 @@ Valutazione: %4 µs (%5..%6)</translation>
         <translation>Nessun problema trovato</translation>
     </message>
     <message>
-        <location line="+15"/>
+        <location line="+16"/>
         <source>Show</source>
         <translation>Mostra</translation>
     </message>
@@ -4698,7 +4698,7 @@ Valutazione: %4 µs (%5..%6)</translation>
     </message>
     <message>
         <location line="+58"/>
-        <location filename="../model/checks/checks_list.cpp" line="+79"/>
+        <location filename="../model/checks/checks_list.cpp" line="+85"/>
         <source>Append %1</source>
         <translation>Aggiungi %1 in fondo</translation>
     </message>
@@ -5402,7 +5402,7 @@ Valutazione: %4 µs (%5..%6)</translation>
 <context>
     <name>rung::model::LadderText</name>
     <message>
-        <location filename="../model/ladder/ladder_text.cpp" line="+186"/>
+        <location filename="../model/ladder/ladder_text.cpp" line="+197"/>
         <source>A ladder text starts with &quot;LADDER &lt;target&gt; WIDTH &lt;n&gt;&quot;</source>
         <translation>Un testo ladder inizia con &quot;LADDER &lt;target&gt; WIDTH &lt;n&gt;&quot;</translation>
     </message>
@@ -5473,7 +5473,7 @@ Valutazione: %4 µs (%5..%6)</translation>
         <translation>%1 è una word; un contatto richiede un operando a bit</translation>
     </message>
     <message>
-        <location line="+74"/>
+        <location line="+69"/>
         <source>&apos;%1&apos; is not a contact</source>
         <translation>&apos;%1&apos; non è un contatto</translation>
     </message>

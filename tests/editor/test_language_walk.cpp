@@ -13,6 +13,7 @@
 #include "tests/targets.h"
 
 #include <QAbstractButton>
+#include <QAbstractItemView>
 #include <QApplication>
 #include <QComboBox>
 #include <QDockWidget>
@@ -167,6 +168,22 @@ std::vector<Text> windowTexts(QMainWindow &window) {
             // anew when it comes into view.
             for (int i = 0; tree->isVisible() && i < tree->topLevelItemCount(); ++i)
                 addItem(out, where, tree->topLevelItem(i), tree->columnCount());
+        }
+        // A view over a model of its own (the problems list): its headers and rows as drawn.
+        if (auto *view = qobject_cast<QAbstractItemView *>(w);
+            view && view->model() && !qobject_cast<QTreeWidget *>(w) &&
+            !qobject_cast<QTableWidget *>(w) && !qobject_cast<QHeaderView *>(w)) {
+            const QAbstractItemModel *m = view->model();
+            for (int c = 0; c < m->columnCount(); ++c)
+                out.push_back({where + QStringLiteral(" header"),
+                               m->headerData(c, Qt::Horizontal).toString()});
+            for (int r = 0; view->isVisible() && r < m->rowCount(); ++r)
+                for (int c = 0; c < m->columnCount(); ++c) {
+                    const QModelIndex index = m->index(r, c);
+                    out.push_back({where + QStringLiteral(" item"), index.data().toString()});
+                    out.push_back({where + QStringLiteral(" item tooltip"),
+                                   index.data(Qt::ToolTipRole).toString()});
+                }
         }
         if (auto *table = qobject_cast<QTableWidget *>(w))
             for (int c = 0; c < table->columnCount(); ++c) {

@@ -150,7 +150,7 @@ TEST_F(Fixture, ProblemsNavigateToTheirPlace) {
             row = i;
     ASSERT_GE(row, 0);
     QSignalSpy moved(ladder(), &editor::LadderView::cursorMoved);
-    emit problems->itemActivated(problems->topLevelItem(row), 0);
+    emit problems->activated(problems->model()->index(row, 0));
     EXPECT_EQ(ladder()->cursor().rung, 1);
 }
 
