@@ -8,7 +8,9 @@
 #include <Qsci/qsciapis.h>
 
 #include <algorithm>
+#include <array>
 #include <cctype>
+#include <cstdio>
 #include <optional>
 
 #include <QCoreApplication>
@@ -529,13 +531,21 @@ void IlEditor::resizeEvent(QResizeEvent *event) {
 }
 
 void IlEditor::setStepNumbers(const std::vector<int> &stepOfLine) {
-    for (int line = 0; line < lines(); ++line) {
-        const int step = line < static_cast<int>(stepOfLine.size())
-                             ? stepOfLine[static_cast<std::size_t>(line)]
-                             : -1;
-        setMarginText(
-            line, step >= 0 ? QStringLiteral("%1").arg(step, 4, 10, QLatin1Char('0')) : QString(),
-            IlLexer::StepNumber);
+    // All cleared at once, then the lines with a step, each in two messages to Scintilla
+    // (QsciScintilla::setMarginText asks the style offset every time and converts a
+    // QString): a 10,000-rung listing has over 100,000 lines, numbered again at every change.
+    clearMarginText();
+    const auto offset = static_cast<long>(SendScintilla(SCI_MARGINGETSTYLEOFFSET));
+    const int count = std::min(lines(), static_cast<int>(stepOfLine.size()));
+    std::array<char, 16> text{};
+    for (int line = 0; line < count; ++line) {
+        const int step = stepOfLine[static_cast<std::size_t>(line)];
+        if (step < 0)
+            continue;
+        std::snprintf(text.data(), text.size(), "%04d", step);
+        const auto at = static_cast<unsigned long>(line);
+        SendScintilla(SCI_MARGINSETTEXT, at, text.data());
+        SendScintilla(SCI_MARGINSETSTYLE, at, IlLexer::StepNumber - offset);
     }
 }
 

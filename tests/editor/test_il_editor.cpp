@@ -184,3 +184,30 @@ TEST(IlEditorDevice, TheDeviceAtTheCaretAsTheTargetWritesIt) {
     EXPECT_EQ(at(1, 8), QString()); // the constant K10
     EXPECT_EQ(at(2, 5), QStringLiteral("Y0"));
 }
+
+// The step numbers beside the lines: a line that loses its step (a comment now, a line with an
+// error) shows none, and every number has the step numbers' style.
+TEST(IlEditorSteps, NumbersFollowTheLinesAndAnOldOneGoes) {
+    editor::IlEditor editor(model::Target::get(model::Family::Vigor));
+    editor.setText(QStringLiteral("LD X0\nOUT Y0\nEND\n"));
+    const auto margin = [&editor](int line) {
+        const auto at = static_cast<unsigned long>(line);
+        const long length =
+            editor.SendScintilla(QsciScintillaBase::SCI_MARGINGETTEXT, at, static_cast<long>(0));
+        QByteArray buffer(static_cast<qsizetype>(length) + 1, '\0');
+        editor.SendScintilla(QsciScintillaBase::SCI_MARGINGETTEXT, at,
+                             static_cast<void *>(buffer.data()));
+        return QString::fromUtf8(buffer.constData());
+    };
+    editor.setStepNumbers({0, 1, 12345});
+    EXPECT_EQ(margin(0), QStringLiteral("0000"));
+    EXPECT_EQ(margin(1), QStringLiteral("0001"));
+    EXPECT_EQ(margin(2), QStringLiteral("12345"));
+    const long offset = editor.SendScintilla(QsciScintillaBase::SCI_MARGINGETSTYLEOFFSET);
+    EXPECT_EQ(editor.SendScintilla(QsciScintillaBase::SCI_MARGINGETSTYLE, 1UL, 0L) + offset,
+              editor::IlLexer::StepNumber);
+    editor.setStepNumbers({-1, 0});
+    EXPECT_EQ(margin(0), QString());
+    EXPECT_EQ(margin(1), QStringLiteral("0000"));
+    EXPECT_EQ(margin(2), QString()); // no step given for it
+}
