@@ -10,7 +10,6 @@
 #include <algorithm>
 #include <array>
 #include <cctype>
-#include <cstdio>
 #include <optional>
 
 #include <QCoreApplication>
@@ -531,20 +530,28 @@ void IlEditor::resizeEvent(QResizeEvent *event) {
 }
 
 void IlEditor::setStepNumbers(const std::vector<int> &stepOfLine) {
-    // All cleared at once, then the lines with a step, each in two messages to Scintilla
-    // (QsciScintilla::setMarginText asks the style offset every time and converts a
-    // QString): a 10,000-rung listing has over 100,000 lines, numbered again at every change.
-    clearMarginText();
+    // Two messages to Scintilla a numbered line (QsciScintilla::setMarginText asks the style
+    // offset every time and converts a QString): a 10,000-rung listing has over 100,000
+    // lines, numbered again at every change. A line without a step loses a number it had.
     const auto offset = static_cast<long>(SendScintilla(SCI_MARGINGETSTYLEOFFSET));
-    const int count = std::min(lines(), static_cast<int>(stepOfLine.size()));
-    std::array<char, 16> text{};
+    const int count = lines();
+    std::array<char, 12> text{};
     for (int line = 0; line < count; ++line) {
-        const int step = stepOfLine[static_cast<std::size_t>(line)];
-        if (step < 0)
-            continue;
-        std::snprintf(text.data(), text.size(), "%04d", step);
         const auto at = static_cast<unsigned long>(line);
-        SendScintilla(SCI_MARGINSETTEXT, at, text.data());
+        const int step = line < static_cast<int>(stepOfLine.size())
+                             ? stepOfLine[static_cast<std::size_t>(line)]
+                             : -1;
+        if (step < 0) {
+            if (SendScintilla(SCI_MARGINGETTEXT, at, static_cast<long>(0)) > 0)
+                SendScintilla(SCI_MARGINSETTEXT, at, static_cast<const char *>(nullptr));
+            continue;
+        }
+        // At least four digits, as the PLCs' consoles show a step ("0012").
+        std::size_t digits = 0;
+        for (int rest = step; rest > 0 || digits < 4; rest /= 10)
+            text[text.size() - 2 - digits++] = static_cast<char>('0' + rest % 10);
+        text[text.size() - 1] = '\0';
+        SendScintilla(SCI_MARGINSETTEXT, at, text.data() + text.size() - 1 - digits);
         SendScintilla(SCI_MARGINSETSTYLE, at, IlLexer::StepNumber - offset);
     }
 }
