@@ -1,8 +1,8 @@
 #include "problems_view.h"
 
 #include <QAbstractTableModel>
-#include <QCoreApplication>
 #include <QContextMenuEvent>
+#include <QCoreApplication>
 #include <QEvent>
 #include <QHeaderView>
 #include <QIcon>
@@ -115,8 +115,9 @@ ProblemsView::ProblemsView(QWidget *parent)
     setEditTriggers(QAbstractItemView::NoEditTriggers);
     header()->setStretchLastSection(true);
     connect(this, &QTreeView::activated, this, [this](const QModelIndex &index) {
+        // A copy: whoever shows the place may refresh the findings this one is among.
         if (const model::Diagnostic *d = diagnosticAt(index.row()))
-            emit locate(*d);
+            emit locate(model::Diagnostic(*d));
     });
 }
 

@@ -27,6 +27,8 @@
 
 #include <gtest/gtest.h>
 
+#include <optional>
+
 using namespace rung;
 
 namespace {
@@ -482,11 +484,12 @@ TEST_F(Fixture, FuzzyFormsOfTheTypedListOfferTheirCanonicalRewriteAsOneStep) {
     EXPECT_EQ(window.ilEditor()->text(), typed);             // the text stays as the user wrote it
     EXPECT_EQ(window.document()->ladder().rungs.size(), 3u); // and the ladder follows it
     editor::ProblemsView *problems = window.problemsView();
-    const model::Diagnostic *fuzzy = nullptr;
+    // A copy: the panel's findings are replaced when the fix refreshes it.
+    std::optional<model::Diagnostic> fuzzy;
     for (int i = 0; problems->diagnosticAt(i); ++i)
         if (problems->diagnosticAt(i)->code == QLatin1String("FZ002"))
-            fuzzy = problems->diagnosticAt(i);
-    ASSERT_NE(fuzzy, nullptr);
+            fuzzy = *problems->diagnosticAt(i);
+    ASSERT_TRUE(fuzzy.has_value());
     EXPECT_EQ(fuzzy->severity, model::Severity::Warning);
     EXPECT_TRUE(fuzzy->location.onListing());
     ASSERT_TRUE(fuzzy->fix.has_value());
