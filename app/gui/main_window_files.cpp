@@ -412,8 +412,9 @@ void MainWindow::rebuildExamplesMenu() {
         const model::Target *t = model::Target::byId(target);
         QMenu *sub = m_examplesMenu->addMenu(t ? t->displayName : target);
         paths.sort();
-        for (const QString &path : paths)
-            sub->addAction(exampleTitle(t, QFileInfo(path).baseName()), this, [this, path, t] {
+        for (const QString &path : paths) {
+            const QString title = exampleTitle(t, QFileInfo(path).baseName());
+            sub->addAction(title, this, [this, path, title] {
                 if (!maybeSave())
                     return;
                 // Examples open as untitled copies: saving asks where.
@@ -426,9 +427,9 @@ void MainWindow::rebuildExamplesMenu() {
                 }
                 showProject(*project, QString());
                 m_document->setUntitledName(
-                    exampleTitle(t, QFileInfo(path).baseName()),
-                    QDir(fileDialogFolder(QString())).filePath(QFileInfo(path).fileName()));
+                    title, QDir(fileDialogFolder(QString())).filePath(QFileInfo(path).fileName()));
             });
+        }
     }
     m_examplesMenu->setEnabled(!byTarget.empty());
 }

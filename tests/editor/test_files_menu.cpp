@@ -224,19 +224,31 @@ TEST(FilesMenu, OpenOffersLadderTexts) {
 
 namespace {
 
-// The folder the File > Open dialog starts in.
-QString openDialogFolder(app::MainWindow &window) {
-    QString folder;
-    QTimer::singleShot(0, &window, [&folder] {
+// What a file dialog of the menu entry `entry` shows (`read`), the dialog then cancelled.
+QString askedByDialog(app::MainWindow &window, const char *entry,
+                      QString (*read)(const QFileDialog &)) {
+    QString seen;
+    QTimer::singleShot(0, &window, [&seen, read] {
         if (auto *dialog = qobject_cast<QFileDialog *>(QApplication::activeModalWidget())) {
-            folder = dialog->directory().absolutePath();
+            seen = read(*dialog);
             dialog->reject();
         }
     });
-    QAction *open = test::menuAction(window, QStringLiteral("Open..."));
-    if (open)
-        open->trigger();
-    return folder;
+    if (QAction *action = test::menuAction(window, QString::fromLatin1(entry)))
+        action->trigger();
+    return seen;
+}
+
+// The folder the File > Open dialog starts in.
+QString openDialogFolder(app::MainWindow &window) {
+    return askedByDialog(window, "Open...",
+                         [](const QFileDialog &d) { return d.directory().absolutePath(); });
+}
+
+// The file the Save As dialog proposes.
+QString saveAsProposal(app::MainWindow &window) {
+    return askedByDialog(window, "Save As...",
+                         [](const QFileDialog &d) { return d.selectedFiles().value(0); });
 }
 
 } // namespace
@@ -255,25 +267,6 @@ TEST(FilesMenu, OpenStartsInTheProjectsFolderThenTheLastOneUsed) {
     app::MainWindow fresh;
     EXPECT_EQ(QDir(openDialogFolder(fresh)).canonicalPath(), QDir(other.path()).canonicalPath());
 }
-
-namespace {
-
-// The file the Save As dialog proposes (it is cancelled).
-QString saveAsProposal(app::MainWindow &window) {
-    QString proposed;
-    QTimer::singleShot(0, &window, [&proposed] {
-        if (auto *dialog = qobject_cast<QFileDialog *>(QApplication::activeModalWidget())) {
-            proposed = dialog->selectedFiles().value(0);
-            dialog->reject();
-        }
-    });
-    QAction *saveAs = test::menuAction(window, QStringLiteral("Save As..."));
-    if (saveAs)
-        saveAs->trigger();
-    return proposed;
-}
-
-} // namespace
 
 // A listing opened from a file is named after it (the title, the project pane, the printed
 // header), not "Untitled", and Save As proposes a project of the same name beside it; with
