@@ -63,7 +63,10 @@ BreakpointDialog::BreakpointDialog(const model::Target &target, const QString &p
     auto *compare = new QHBoxLayout;
     compare->addWidget(m_op);
     compare->addWidget(m_value, 1);
-    form->addRow(tr("&Compare"), compare);
+    // A row of a layout gets no buddy from the form: its "&Compare" would show the '&'.
+    auto *compareLabel = new QLabel(tr("&Compare"));
+    compareLabel->setBuddy(m_op);
+    form->addRow(compareLabel, compare);
     layout->addLayout(form);
     m_problem = new QLabel;
     m_problem->setObjectName(QStringLiteral("breakpointProblem"));

@@ -5,6 +5,7 @@
 #include "connection_panel.h"
 
 #include "dialogs.h"
+#include "wheel_guard.h"
 
 #include "comms/driver/connection.h"
 #include "comms/driver/protocol_driver.h"
@@ -53,6 +54,7 @@ ConnectionPanel::ConnectionPanel(QWidget *parent)
     : QWidget(parent) {
     setObjectName(QStringLiteral("connectionPanel"));
     build();
+    guardWheel(this); // scrolling the dock never changes a setting (issue 31)
     retranslate();
     refreshPorts();
     updateState();
@@ -194,6 +196,12 @@ void ConnectionPanel::build() {
     };
     m_state = label("connectionState");
     m_state->setStyleSheet(QStringLiteral("QLabel { font-weight: bold; }"));
+    m_warning = label("connectionWarning");
+    // A warning looks like one: dark amber on pale amber, a sign before it, not bold.
+    m_warning->setStyleSheet(
+        QStringLiteral("QLabel { color: #5d4000; background: #fff1c4; border: 1px solid #e0b000; "
+                       "padding: 2px 4px; }"));
+    m_warning->hide();
     m_testResult = label("connectionTestResult");
     m_notice = label("connectionNotice");
     m_statistics = label("connectionStatistics");
@@ -272,6 +280,7 @@ void ConnectionPanel::retranslate() {
                                 comms::protocolName(ProtocolKind(m_protocol->itemData(i).toInt())));
     if (m_target)
         setTarget(*m_target, m_modelName); // the texts that name the target
+    retranslateResults();
     updateState();
 }
 

@@ -246,6 +246,7 @@ void MainWindow::refreshFromDocument() {
         m_il->setListing(m_document->listingText());
         m_shownListing = m_document->listingText();
         m_listingErrors.clear();
+        m_ladder->setNotice(QString()); // it spoke of the errors of a list no longer shown
     }
     m_shownRevision = m_document->rungsRevision();
     // The list pane shows the text as typed (with errors or forms of its own), or the listing.

@@ -68,6 +68,8 @@ void MainWindow::setupOnline() {
     refreshTarget();
     connect(m_document, &editor::Document::programChanged, this, refreshTarget);
     connect(m_document, &editor::Document::pathChanged, this, refreshTarget);
+    connect(m_document, &editor::Document::projectReplaced, m_connectionPanel,
+            &ConnectionPanel::forgetResults);
     connect(m_connectionPanel, &ConnectionPanel::message, this,
             [this](const QString &text) { statusBar()->showMessage(text, 10000); });
     connect(m_connectionPanel, &ConnectionPanel::sessionChanged, this,

@@ -7,6 +7,7 @@
 #include "editor/watch_list_view.h"
 #include "editor/watch_panel.h"
 
+#include <QDir>
 #include <QDockWidget>
 #include <QMenu>
 #include <QMessageBox>
@@ -54,7 +55,12 @@ void MainWindow::buildMonitorDocks() {
         const QString path =
             askSavePath(tr("Export Timing Chart"), QStringLiteral("*.%1").arg(format), {format});
         QString error;
-        if (!path.isEmpty() && !m_chart->exportTo(path, format, &error))
+        if (path.isEmpty())
+            return;
+        if (m_chart->exportTo(path, format, &error))
+            statusBar()->showMessage(
+                tr("Timing chart exported to %1").arg(QDir::toNativeSeparators(path)), 10000);
+        else
             QMessageBox::critical(this, tr("Cannot export"), error);
     });
     retranslatePanels();

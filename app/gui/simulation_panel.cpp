@@ -1,6 +1,7 @@
 #include "simulation_panel.h"
 
 #include "simulation_controller.h"
+#include "wheel_guard.h"
 
 #include "simulator/history_source.h"
 #include "simulator/scan_history.h"
@@ -116,6 +117,7 @@ SimulationPanel::SimulationPanel(SimulationController *simulation, QWidget *pare
     history->addWidget(m_historyMark);
     layout->addWidget(m_historyGroup);
     layout->addStretch(1);
+    guardWheel(this); // scrolling the dock never changes the speed or the period
 
     connect(m_runScans, &QPushButton::clicked, this, [this] {
         QSettings().setValue(QStringLiteral("simulation/runScans"), m_scans->value());
