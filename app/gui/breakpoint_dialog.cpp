@@ -1,5 +1,7 @@
 #include "breakpoint_dialog.h"
 
+#include "dialogs.h"
+
 #include "model/target/address.h"
 #include "model/target/target_lists.h"
 
@@ -86,6 +88,7 @@ BreakpointDialog::BreakpointDialog(const model::Target &target, const QString &p
     connect(m_kind, &QComboBox::currentIndexChanged, this, &BreakpointDialog::validate);
     connect(m_device, &QLineEdit::textChanged, this, &BreakpointDialog::validate);
     validate();
+    fitTitle(this);
 }
 
 QString BreakpointDialog::problem() const {

@@ -55,10 +55,7 @@ void MainWindow::setupOnline() {
     scroll->setHorizontalScrollBarPolicy(Qt::ScrollBarAlwaysOff); // the texts wrap instead
     scroll->setWidget(m_connectionPanel);
     dock->setWidget(scroll);
-    addDockWidget(Qt::RightDockWidgetArea, dock);
-    // A tab beside the inputs and outputs: each gets the whole height.
-    if (auto *io = findChild<QDockWidget *>(QStringLiteral("ioDock")))
-        tabifyDockWidget(io, dock);
+    addDockWidget(Qt::RightDockWidgetArea, dock); // with the live docks (dock_layout.h)
     dock->hide(); // View > Connection, or Online > Go Online, shows it
     const auto refreshTarget = [this] {
         const model::ModelVariant *variant = m_document->modelVariant();
