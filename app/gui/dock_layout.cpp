@@ -55,15 +55,16 @@ void sizeDocks(QMainWindow *window, bool wide) {
     QDockWidget *problems = dock(window, "problemsDock");
     if (!project || !io || !simulation || !problems)
         return;
-    // The ladder keeps about 840 px: at its smallest readable zoom the coils and boxes of a
-    // full row fit (LadderMetrics::minReadableZoom). A wide screen's two columns share the
-    // rest; a narrow one's single column takes what is left, at least the project's table.
-    const int spare = window->width() - 840;
+    // The ladder keeps about 850 px with its frame and scroll bar, the docks' frames and
+    // handles take about 50: at its smallest readable zoom a full row's contacts, coil and
+    // boxes fit (LadderMetrics::minReadableZoom). A wide screen's two columns share the rest;
+    // a narrow one's single column takes what is left, at least a narrow symbol table.
+    const int spare = window->width() - 900;
     if (wide) {
-        const int column = std::clamp(spare / 2, 200, 300);
+        const int column = std::clamp(spare / 2, 180, 300);
         window->resizeDocks({project, io}, {column, column}, Qt::Horizontal);
     } else {
-        window->resizeDocks({project}, {std::clamp(spare, 170, 300)}, Qt::Horizontal);
+        window->resizeDocks({project}, {std::clamp(spare + 20, 150, 300)}, Qt::Horizontal);
     }
     // The problems, the watch table and the timing chart share the bottom: tall enough for a
     // few signals of the chart, less on a low screen.

@@ -58,6 +58,10 @@ SimulationPanel::SimulationPanel(SimulationController *simulation, QWidget *pare
     m_speedLabel = new QLabel;
     m_speed = new QComboBox;
     m_speed->setObjectName(QStringLiteral("simulationSpeed"));
+    // The dock is a narrow column beside the ladder: the combo takes the width it is given
+    // (its list opens as wide as its longest entry).
+    m_speed->setSizeAdjustPolicy(QComboBox::AdjustToMinimumContentsLengthWithIcon);
+    m_speed->setMinimumContentsLength(8);
     m_periodLabel = new QLabel;
     m_period = new QSpinBox;
     m_period->setObjectName(QStringLiteral("simulationPeriod"));

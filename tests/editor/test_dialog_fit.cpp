@@ -286,10 +286,12 @@ TEST_P(DialogFit, TheStatusBarTheLadderAndTheChartShowTheirTextsWhole) {
                          .repeated(4));
     settle();
     EXPECT_TRUE(bar->shownMessage().endsWith(QChar(0x2026))) << bar->shownMessage().toStdString();
-    for (QWidget *field : bar->findChildren<QWidget *>(Qt::FindDirectChildrenOnly))
-        if (field->isVisible())
+    for (QWidget *field : bar->findChildren<QWidget *>(Qt::FindDirectChildrenOnly)) {
+        if (field->isVisible()) {
             EXPECT_LE(bar->messageArea().right() + 8, field->x())
                 << field->objectName().toStdString();
+        }
+    }
     bar->clearMessage();
     sim->returnToLive();
 

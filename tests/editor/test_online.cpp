@@ -29,8 +29,8 @@
 #include <QTabBar>
 #include <QTemporaryDir>
 #include <QTest>
-#include <QTreeWidget>
 #include <QToolTip>
+#include <QTreeWidget>
 
 #include <gtest/gtest.h>
 
@@ -495,8 +495,8 @@ TEST_P(Online, AWatchValueIsNotShownBeforeTheWriteIsConfirmed) {
         return false;
     });
     row->setText(editor::WatchListView::ValueColumn, QStringLiteral("4321"));
-    ASSERT_TRUE(QTest::qWaitFor([&] { return whileAsked != QStringLiteral("(not asked)"); },
-                                kPatienceMs));
+    ASSERT_TRUE(
+        QTest::qWaitFor([&] { return whileAsked != QStringLiteral("(not asked)"); }, kPatienceMs));
     EXPECT_EQ(whileAsked, before);
     EXPECT_EQ(shownValue(), before);
 }

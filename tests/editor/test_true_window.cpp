@@ -7,6 +7,7 @@
 // left where the user scrolled it, the history's window told truly).
 
 #include "app/gui/connection_panel.h"
+#include "app/gui/dock_layout.h"
 #include "app/gui/language.h"
 #include "app/gui/scan_debugger_view.h"
 #include "app/gui/simulation_controller.h"
@@ -22,6 +23,7 @@
 #include <QContextMenuEvent>
 #include <QDockWidget>
 #include <QFileDialog>
+#include <QMainWindow>
 #include <QMenu>
 #include <QPushButton>
 #include <QScrollArea>
@@ -36,6 +38,9 @@
 #include "tests/editor/window_fixture.h"
 
 #include <gtest/gtest.h>
+
+#include <map>
+#include <set>
 
 using namespace rung;
 
@@ -253,7 +258,7 @@ TEST_F(TrueWindow, ExportingTheTimingChartSaysWhereItWent) {
     QTimer::singleShot(0, [&] {
         if (auto *dialog = qobject_cast<QFileDialog *>(QApplication::activeModalWidget())) {
             dialog->selectFile(path);
-            dialog->accept();
+            QMetaObject::invokeMethod(dialog, "accept"); // a slot: what the Save button does
         }
     });
     emit window.timingChart()->exportRequested(QStringLiteral("csv"));
@@ -341,4 +346,106 @@ TEST_F(TrueWindow, TheHistorysWindowIsToldAsTheRecordKeepsIt) {
     EXPECT_TRUE(text.endsWith(QStringLiteral("; at least the last hour is kept")))
         << text.toStdString();
     EXPECT_FALSE(text.contains(QStringLiteral("at most"))) << text.toStdString();
+}
+
+namespace {
+
+// A window with the docks the main window has, by name, for the layout alone.
+struct DockedWindow {
+    QMainWindow window;
+    std::map<QString, QDockWidget *> docks;
+    DockedWindow() {
+        window.setCentralWidget(new QWidget);
+        for (const char *name :
+             {"projectDock", "crossReferenceDock", "ioDock", "simulationDock", "scanDebuggerDock",
+              "connectionDock", "problemsDock", "watchDock", "timingChartDock"}) {
+            auto *d = new QDockWidget(QString::fromLatin1(name), &window);
+            d->setObjectName(QString::fromLatin1(name));
+            d->setWidget(new QWidget);
+            window.addDockWidget(Qt::LeftDockWidgetArea, d);
+            docks[QString::fromLatin1(name)] = d;
+        }
+    }
+    QDockWidget *operator[](const char *name) { return docks.at(QString::fromLatin1(name)); }
+    // The docks tabbed with `name` (itself included), by name.
+    std::set<QString> group(const char *name) {
+        std::set<QString> names{QString::fromLatin1(name)};
+        for (QDockWidget *d : window.tabifiedDockWidgets((*this)[name]))
+            names.insert(d->objectName());
+        return names;
+    }
+};
+
+std::set<QString> names(std::initializer_list<const char *> list) {
+    std::set<QString> out;
+    for (const char *n : list)
+        out.insert(QString::fromLatin1(n));
+    return out;
+}
+
+} // namespace
+
+// Item 13: what is used together is visible together. Wide: editing left; the terminals over
+// the simulation's and the connection's tabs on the right; findings below.
+TEST(DockGroups, AWideScreenHasAnEditingAndALiveColumn) {
+    DockedWindow w;
+    app::arrangeDocks(&w.window, true);
+    EXPECT_EQ(w.group("projectDock"), names({"projectDock", "crossReferenceDock"}));
+    EXPECT_EQ(w.group("simulationDock"),
+              names({"simulationDock", "scanDebuggerDock", "connectionDock"}));
+    EXPECT_EQ(w.group("ioDock"), names({"ioDock"})); // never behind the simulation's tab
+    EXPECT_EQ(w.group("problemsDock"), names({"problemsDock", "watchDock", "timingChartDock"}));
+    EXPECT_EQ(w.window.dockWidgetArea(w["projectDock"]), Qt::LeftDockWidgetArea);
+    EXPECT_EQ(w.window.dockWidgetArea(w["ioDock"]), Qt::RightDockWidgetArea);
+    EXPECT_EQ(w.window.dockWidgetArea(w["simulationDock"]), Qt::RightDockWidgetArea);
+    EXPECT_EQ(w.window.dockWidgetArea(w["problemsDock"]), Qt::BottomDockWidgetArea);
+}
+
+// Item 13, narrow: one column beside the ladder; the terminals under the tabs, never behind
+// one of them.
+TEST(DockGroups, ANarrowScreenHasOneColumnWithTheTerminalsApart) {
+    DockedWindow w;
+    app::arrangeDocks(&w.window, false);
+    EXPECT_EQ(w.group("projectDock"), names({"projectDock", "crossReferenceDock", "simulationDock",
+                                             "scanDebuggerDock", "connectionDock"}));
+    EXPECT_EQ(w.group("ioDock"), names({"ioDock"}));
+    EXPECT_EQ(w.window.dockWidgetArea(w["ioDock"]), Qt::LeftDockWidgetArea);
+    EXPECT_EQ(w.group("problemsDock"), names({"problemsDock", "watchDock", "timingChartDock"}));
+}
+
+// Item 12: on a 1024x600 screen (a title bar of it taken) the window with every dock shown
+// is no taller than the screen, and the ladder shows a whole row with its coil and a timer's
+// box without scrolling sideways, while simulating too.
+TEST_F(TrueWindow, TheWindowFitsA1024x600ScreenAndTheLadderItsCoils) {
+    load("LD X0\nAND X1\nAND X2\nAND X3\nAND X4\nAND X5\nAND X6\nAND X7\nAND X10\nAND X11\n"
+         "AND X12\nOUT Y0\nLD X0\nTMR T0 K350\nEND\n");
+    window.show();
+    ASSERT_TRUE(QTest::qWaitForWindowExposed(&window));
+    const QSize screen(1024, 600 - 32);
+    window.resize(screen);
+    app::sizeDocks(&window, false); // as the first start does
+    for (int i = 0; i < 5; ++i)
+        QApplication::processEvents();
+    const auto coilsInView = [&] {
+        const QRect coil = view->cellRectOnScreen({0, 0, view->metrics().gridColumns});
+        const QRect box = view->cellRectOnScreen({1, 0, view->metrics().gridColumns});
+        return view->horizontalScrollBar()->value() == 0 &&
+               coil.right() <= view->viewport()->width() &&
+               box.right() <= view->viewport()->width();
+    };
+    EXPECT_TRUE(QTest::qWaitFor(coilsInView, 2000))
+        << view->viewport()->width() << " px for the ladder";
+    ASSERT_TRUE(sim()->singleScan()); // the terminals and the simulation's dock come
+    ASSERT_TRUE(paused());
+    for (const char *name : {"scanDebuggerDock", "connectionDock", "timingChartDock"})
+        window.findChild<QDockWidget *>(QString::fromLatin1(name))->show();
+    for (int i = 0; i < 5; ++i)
+        QApplication::processEvents();
+    EXPECT_LE(window.minimumSizeHint().height(), screen.height());
+    EXPECT_LE(window.minimumSizeHint().width(), screen.width());
+    window.resize(screen);
+    QApplication::processEvents();
+    EXPECT_EQ(window.size(), screen);
+    EXPECT_TRUE(QTest::qWaitFor(coilsInView, 2000))
+        << view->viewport()->width() << " px for the ladder";
 }
