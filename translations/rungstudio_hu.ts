@@ -42,7 +42,7 @@
 <context>
     <name>rung::app::BreakpointDialog</name>
     <message>
-        <location filename="../app/gui/breakpoint_dialog.cpp" line="+39"/>
+        <location filename="../app/gui/breakpoint_dialog.cpp" line="+41"/>
         <source>Breakpoint Condition</source>
         <translation>Töréspont feltétele</translation>
     </message>
@@ -97,7 +97,7 @@
         <translation>Össze&amp;hasonlítás</translation>
     </message>
     <message>
-        <location line="+39"/>
+        <location line="+40"/>
         <source>Type the device the condition watches</source>
         <translation>Írja be a feltétel által figyelt operandust</translation>
     </message>
@@ -720,19 +720,19 @@ Válaszidő: %6 ms (átlag %7, max. %8); frissítés: %9 ms, %10 keret</translat
 <context>
     <name>rung::app::MainWindow</name>
     <message>
-        <location filename="../app/gui/main_window.cpp" line="+177"/>
+        <location filename="../app/gui/main_window.cpp" line="+173"/>
         <source>Problems</source>
         <translation>Problémák</translation>
     </message>
     <message>
         <location line="+5"/>
-        <location line="+341"/>
+        <location line="+343"/>
         <source>Project</source>
         <translation>Projekt</translation>
     </message>
     <message>
-        <location line="-334"/>
-        <location line="+337"/>
+        <location line="-336"/>
+        <location line="+339"/>
         <source>Symbols</source>
         <translation>Szimbólumok</translation>
     </message>
@@ -1030,7 +1030,7 @@ Létradiagram- és utasításlista-szerkesztő a következő PLC-khez: %2.</tran
     </message>
     <message>
         <location line="+0"/>
-        <location filename="../app/gui/main_window_tools.cpp" line="+224"/>
+        <location filename="../app/gui/main_window_tools.cpp" line="+222"/>
         <source>CSV files (*.csv)</source>
         <translation>CSV-fájlok (*.csv)</translation>
     </message>
@@ -1115,7 +1115,7 @@ Létradiagram- és utasításlista-szerkesztő a következő PLC-khez: %2.</tran
         <translation>A Rung Studio névjegye</translation>
     </message>
     <message>
-        <location filename="../app/gui/main_window.cpp" line="-319"/>
+        <location filename="../app/gui/main_window.cpp" line="-321"/>
         <source>Rung Comment</source>
         <translation>Létrafok megjegyzése</translation>
     </message>
@@ -1126,18 +1126,18 @@ Létradiagram- és utasításlista-szerkesztő a következő PLC-khez: %2.</tran
     </message>
     <message>
         <location line="+22"/>
-        <location line="+301"/>
+        <location line="+303"/>
         <source>Ladder</source>
         <translation>Létradiagram</translation>
     </message>
     <message>
-        <location line="-300"/>
-        <location line="+301"/>
+        <location line="-302"/>
+        <location line="+303"/>
         <source>Instruction List</source>
         <translation>Utasításlista</translation>
     </message>
     <message>
-        <location line="-288"/>
+        <location line="-290"/>
         <source>The list as typed had errors and now shows the ladder&apos;s program; Ctrl+Z in the list brings it back</source>
         <translation>A begépelt lista hibás volt, most a létradiagram programját mutatja; a listában a Ctrl+Z visszahozza</translation>
     </message>
@@ -1264,7 +1264,7 @@ Létradiagram- és utasításlista-szerkesztő a következő PLC-khez: %2.</tran
     </message>
     <message>
         <location line="+33"/>
-        <location filename="../app/gui/main_window_online.cpp" line="+82"/>
+        <location filename="../app/gui/main_window_online.cpp" line="+79"/>
         <source>Cannot save</source>
         <translation>A mentés nem sikerült</translation>
     </message>
@@ -1352,7 +1352,7 @@ Létradiagram- és utasításlista-szerkesztő a következő PLC-khez: %2.</tran
         <location line="-4"/>
         <location line="+8"/>
         <location line="+10"/>
-        <location filename="../app/gui/main_window_panels.cpp" line="+64"/>
+        <location filename="../app/gui/main_window_panels.cpp" line="+54"/>
         <location filename="../app/gui/main_window_tools.cpp" line="+3"/>
         <source>Cannot export</source>
         <translation>Az exportálás nem sikerült</translation>
@@ -1378,7 +1378,7 @@ Létradiagram- és utasításlista-szerkesztő a következő PLC-khez: %2.</tran
         <translation>A példa nem nyitható meg</translation>
     </message>
     <message>
-        <location filename="../app/gui/main_window_tools.cpp" line="-161"/>
+        <location filename="../app/gui/main_window_tools.cpp" line="-159"/>
         <source>Cut rungs</source>
         <translation>Létrafokok kivágása</translation>
     </message>
@@ -1454,7 +1454,7 @@ Létradiagram- és utasításlista-szerkesztő a következő PLC-khez: %2.</tran
         <translation>%1 cseréje erre: %2</translation>
     </message>
     <message>
-        <location line="+29"/>
+        <location line="+27"/>
         <source>(no device) %1</source>
         <translation>(nincs operandus) %1</translation>
     </message>
@@ -1466,13 +1466,13 @@ Létradiagram- és utasításlista-szerkesztő a következő PLC-khez: %2.</tran
         </translation>
     </message>
     <message>
-        <location filename="../app/gui/main_window.cpp" line="+103"/>
-        <location filename="../app/gui/main_window_tools.cpp" line="-26"/>
+        <location filename="../app/gui/main_window.cpp" line="+105"/>
+        <location filename="../app/gui/main_window_tools.cpp" line="-24"/>
         <source>Cross Reference</source>
         <translation>Kereszthivatkozás</translation>
     </message>
     <message>
-        <location filename="../app/gui/main_window_tools.cpp" line="+25"/>
+        <location filename="../app/gui/main_window_tools.cpp" line="+23"/>
         <location line="+8"/>
         <source>Export Symbols</source>
         <translation>Szimbólumok exportálása</translation>
@@ -1575,14 +1575,14 @@ Létradiagram- és utasításlista-szerkesztő a következő PLC-khez: %2.</tran
     </message>
     <message>
         <location filename="../app/gui/main_window_debug.cpp" line="+38"/>
-        <location line="+139"/>
+        <location line="+141"/>
         <location filename="../app/gui/main_window_monitor.cpp" line="+42"/>
         <source>Simulation</source>
         <translation>Szimuláció</translation>
     </message>
     <message>
-        <location line="-127"/>
-        <location line="+129"/>
+        <location line="-133"/>
+        <location line="+135"/>
         <source>Scan Debugger</source>
         <translation>Ciklushibakereső</translation>
     </message>
@@ -2424,10 +2424,16 @@ A FÁJL utasításlista (.il), létradiagram-szöveg (.ladder) vagy projekt (.ru
         <translation>Léptetés</translation>
     </message>
     <message>
-        <location line="+8"/>
-        <source>%1 | %2 | %3 scans | scan %4 ms | evaluation %5 µs (%6..%7)</source>
-        <extracomment>%1 run state, %2 simulated time h:mm:ss.cc, %3 scans, %4 scan period in ms, %5 %6 %7 time the last scan took to evaluate: current, minimum, maximum, in µs</extracomment>
-        <translation>%1 | %2 | %3 ciklus | ciklusidő %4 ms | kiértékelés %5 µs (%6..%7)</translation>
+        <location line="+9"/>
+        <source>%1 | %2 | %3 scans | scan %4 ms</source>
+        <extracomment>%1 run state, %2 simulated time h:mm:ss.cc, %3 scans, %4 scan period in ms</extracomment>
+        <translation>%1 | %2 | %3 ciklus | ciklusidő %4 ms</translation>
+    </message>
+    <message>
+        <location line="+10"/>
+        <source>Evaluation of a scan on this computer: %1 µs (%2..%3)</source>
+        <extracomment>the time the last scan took to evaluate on this computer: current, minimum, maximum</extracomment>
+        <translation>Egy ciklus kiértékelése ezen a számítógépen: %1 µs (%2..%3)</translation>
     </message>
     <message>
         <location filename="../app/gui/simulation_debug.cpp" line="+96"/>
@@ -2485,7 +2491,7 @@ A FÁJL utasításlista (.il), létradiagram-szöveg (.ladder) vagy projekt (.ru
 <context>
     <name>rung::app::SimulationPanel</name>
     <message>
-        <location filename="../app/gui/simulation_panel.cpp" line="+158"/>
+        <location filename="../app/gui/simulation_panel.cpp" line="+162"/>
         <source>Run</source>
         <translation>Futtatás</translation>
     </message>

@@ -42,7 +42,7 @@
 <context>
     <name>rung::app::BreakpointDialog</name>
     <message>
-        <location filename="../app/gui/breakpoint_dialog.cpp" line="+39"/>
+        <location filename="../app/gui/breakpoint_dialog.cpp" line="+41"/>
         <source>Breakpoint Condition</source>
         <translation>Condizione del punto di interruzione</translation>
     </message>
@@ -97,7 +97,7 @@
         <translation>&amp;Confronto</translation>
     </message>
     <message>
-        <location line="+39"/>
+        <location line="+40"/>
         <source>Type the device the condition watches</source>
         <translation>Scrivere l&apos;operando che la condizione osserva</translation>
     </message>
@@ -720,19 +720,19 @@ Andata e ritorno %6 ms (media %7, max %8); aggiornamento %9 ms, %10 frame</trans
 <context>
     <name>rung::app::MainWindow</name>
     <message>
-        <location filename="../app/gui/main_window.cpp" line="+177"/>
+        <location filename="../app/gui/main_window.cpp" line="+173"/>
         <source>Problems</source>
         <translation>Problemi</translation>
     </message>
     <message>
         <location line="+5"/>
-        <location line="+341"/>
+        <location line="+343"/>
         <source>Project</source>
         <translation>Progetto</translation>
     </message>
     <message>
-        <location line="-334"/>
-        <location line="+337"/>
+        <location line="-336"/>
+        <location line="+339"/>
         <source>Symbols</source>
         <translation>Simboli</translation>
     </message>
@@ -1030,7 +1030,7 @@ Editor di schemi ladder e liste istruzioni per %2.</translation>
     </message>
     <message>
         <location line="+0"/>
-        <location filename="../app/gui/main_window_tools.cpp" line="+224"/>
+        <location filename="../app/gui/main_window_tools.cpp" line="+222"/>
         <source>CSV files (*.csv)</source>
         <translation>File CSV (*.csv)</translation>
     </message>
@@ -1115,7 +1115,7 @@ Editor di schemi ladder e liste istruzioni per %2.</translation>
         <translation>Informazioni su Rung Studio</translation>
     </message>
     <message>
-        <location filename="../app/gui/main_window.cpp" line="-319"/>
+        <location filename="../app/gui/main_window.cpp" line="-321"/>
         <source>Rung Comment</source>
         <translation>Commento del segmento</translation>
     </message>
@@ -1126,18 +1126,18 @@ Editor di schemi ladder e liste istruzioni per %2.</translation>
     </message>
     <message>
         <location line="+22"/>
-        <location line="+301"/>
+        <location line="+303"/>
         <source>Ladder</source>
         <translation>Ladder</translation>
     </message>
     <message>
-        <location line="-300"/>
-        <location line="+301"/>
+        <location line="-302"/>
+        <location line="+303"/>
         <source>Instruction List</source>
         <translation>Lista istruzioni</translation>
     </message>
     <message>
-        <location line="-288"/>
+        <location line="-290"/>
         <source>The list as typed had errors and now shows the ladder&apos;s program; Ctrl+Z in the list brings it back</source>
         <translation>La lista digitata conteneva errori e ora mostra il programma dello schema ladder; Ctrl+Z nella lista la ripristina</translation>
     </message>
@@ -1266,7 +1266,7 @@ Editor di schemi ladder e liste istruzioni per %2.</translation>
     </message>
     <message>
         <location line="+33"/>
-        <location filename="../app/gui/main_window_online.cpp" line="+82"/>
+        <location filename="../app/gui/main_window_online.cpp" line="+79"/>
         <source>Cannot save</source>
         <translation>Impossibile salvare</translation>
     </message>
@@ -1354,7 +1354,7 @@ Editor di schemi ladder e liste istruzioni per %2.</translation>
         <location line="-4"/>
         <location line="+8"/>
         <location line="+10"/>
-        <location filename="../app/gui/main_window_panels.cpp" line="+64"/>
+        <location filename="../app/gui/main_window_panels.cpp" line="+54"/>
         <location filename="../app/gui/main_window_tools.cpp" line="+3"/>
         <source>Cannot export</source>
         <translation>Impossibile esportare</translation>
@@ -1380,7 +1380,7 @@ Editor di schemi ladder e liste istruzioni per %2.</translation>
         <translation>Impossibile aprire l&apos;esempio</translation>
     </message>
     <message>
-        <location filename="../app/gui/main_window_tools.cpp" line="-161"/>
+        <location filename="../app/gui/main_window_tools.cpp" line="-159"/>
         <source>Cut rungs</source>
         <translation>Taglia segmenti</translation>
     </message>
@@ -1458,7 +1458,7 @@ Editor di schemi ladder e liste istruzioni per %2.</translation>
         <translation>Sostituisci %1 con %2</translation>
     </message>
     <message>
-        <location line="+29"/>
+        <location line="+27"/>
         <source>(no device) %1</source>
         <translation>(nessun operando) %1</translation>
     </message>
@@ -1471,13 +1471,13 @@ Editor di schemi ladder e liste istruzioni per %2.</translation>
         </translation>
     </message>
     <message>
-        <location filename="../app/gui/main_window.cpp" line="+103"/>
-        <location filename="../app/gui/main_window_tools.cpp" line="-26"/>
+        <location filename="../app/gui/main_window.cpp" line="+105"/>
+        <location filename="../app/gui/main_window_tools.cpp" line="-24"/>
         <source>Cross Reference</source>
         <translation>Riferimenti incrociati</translation>
     </message>
     <message>
-        <location filename="../app/gui/main_window_tools.cpp" line="+25"/>
+        <location filename="../app/gui/main_window_tools.cpp" line="+23"/>
         <location line="+8"/>
         <source>Export Symbols</source>
         <translation>Esporta simboli</translation>
@@ -1580,14 +1580,14 @@ Editor di schemi ladder e liste istruzioni per %2.</translation>
     </message>
     <message>
         <location filename="../app/gui/main_window_debug.cpp" line="+38"/>
-        <location line="+139"/>
+        <location line="+141"/>
         <location filename="../app/gui/main_window_monitor.cpp" line="+42"/>
         <source>Simulation</source>
         <translation>Simulazione</translation>
     </message>
     <message>
-        <location line="-127"/>
-        <location line="+129"/>
+        <location line="-133"/>
+        <location line="+135"/>
         <source>Scan Debugger</source>
         <translation>Debugger della scansione</translation>
     </message>
@@ -2430,10 +2430,16 @@ FILE è una lista istruzioni (.il), un testo ladder (.ladder) o un progetto (.ru
         <translation>Passo passo</translation>
     </message>
     <message>
-        <location line="+8"/>
-        <source>%1 | %2 | %3 scans | scan %4 ms | evaluation %5 µs (%6..%7)</source>
-        <extracomment>%1 run state, %2 simulated time h:mm:ss.cc, %3 scans, %4 scan period in ms, %5 %6 %7 time the last scan took to evaluate: current, minimum, maximum, in µs</extracomment>
-        <translation>%1 | %2 | %3 scansioni | scansione %4 ms | valutazione %5 µs (%6..%7)</translation>
+        <location line="+9"/>
+        <source>%1 | %2 | %3 scans | scan %4 ms</source>
+        <extracomment>%1 run state, %2 simulated time h:mm:ss.cc, %3 scans, %4 scan period in ms</extracomment>
+        <translation>%1 | %2 | %3 scansioni | scansione %4 ms</translation>
+    </message>
+    <message>
+        <location line="+10"/>
+        <source>Evaluation of a scan on this computer: %1 µs (%2..%3)</source>
+        <extracomment>the time the last scan took to evaluate on this computer: current, minimum, maximum</extracomment>
+        <translation>Valutazione di una scansione su questo computer: %1 µs (%2..%3)</translation>
     </message>
     <message>
         <location filename="../app/gui/simulation_debug.cpp" line="+96"/>
@@ -2491,7 +2497,7 @@ FILE è una lista istruzioni (.il), un testo ladder (.ladder) o un progetto (.ru
 <context>
     <name>rung::app::SimulationPanel</name>
     <message>
-        <location filename="../app/gui/simulation_panel.cpp" line="+158"/>
+        <location filename="../app/gui/simulation_panel.cpp" line="+162"/>
         <source>Run</source>
         <translation>Esecuzione</translation>
     </message>

@@ -28,6 +28,10 @@ void arrangeDocks(QMainWindow *window, bool wide) {
         return;
     // A split before the tabs: Qt tabs a dock split beside one that is already tabbed.
     window->addDockWidget(Qt::LeftDockWidgetArea, project);
+    // Narrow, the one column goes down to the status bar: stacked over the findings its
+    // minimum height and theirs made the window taller than a 600 px screen.
+    window->setCorner(Qt::BottomLeftCorner,
+                      wide ? Qt::BottomDockWidgetArea : Qt::LeftDockWidgetArea);
     if (wide) {
         window->addDockWidget(Qt::RightDockWidgetArea, io);
         window->splitDockWidget(io, simulation, Qt::Vertical);

@@ -417,6 +417,8 @@ void MainWindow::updateStatus() {
         m_statusCursor->setFullText(
             tr("Rung %1, row %2, column %3").arg(c.rung + 1).arg(c.row + 1).arg(c.column + 1));
     }
+    // Short, and where the user is: whole ("Segmento 1, riga 1, colo..." was cut).
+    m_statusCursor->setMinimumWidth(m_statusCursor->sizeHint().width());
 }
 
 void MainWindow::updateTitle() {

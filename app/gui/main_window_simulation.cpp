@@ -177,6 +177,7 @@ void MainWindow::updateSimulationStatus() {
     using State = model::MonitorSource::RunState;
     const State state = m_simulation->runState();
     m_statusSimulation->setFullText(m_simulation->statusText());
+    m_statusSimulation->setToolTip(m_simulation->statusToolTip());
     const bool history = m_simulation->historyShown();
     if (m_statusHistory) {
         m_statusHistory->setVisible(history);
