@@ -1264,7 +1264,7 @@ Létradiagram- és utasításlista-szerkesztő a következő PLC-khez: %2.</tran
     </message>
     <message>
         <location line="+33"/>
-        <location filename="../app/gui/main_window_online.cpp" line="+79"/>
+        <location filename="../app/gui/main_window_online.cpp" line="+82"/>
         <source>Cannot save</source>
         <translation>A mentés nem sikerült</translation>
     </message>
@@ -2491,7 +2491,7 @@ A FÁJL utasításlista (.il), létradiagram-szöveg (.ladder) vagy projekt (.ru
 <context>
     <name>rung::app::SimulationPanel</name>
     <message>
-        <location filename="../app/gui/simulation_panel.cpp" line="+162"/>
+        <location filename="../app/gui/simulation_panel.cpp" line="+161"/>
         <source>Run</source>
         <translation>Futtatás</translation>
     </message>
@@ -2548,12 +2548,17 @@ A FÁJL utasításlista (.il), létradiagram-szöveg (.ladder) vagy projekt (.ru
         <translation> ms</translation>
     </message>
     <message>
-        <location line="+1"/>
-        <source>Power Cycle (retentive areas kept)</source>
-        <translation>Ki-bekapcsolás (a remanens területek megmaradnak)</translation>
+        <location line="+2"/>
+        <source>Power Cycle</source>
+        <translation>Ki-bekapcsolás</translation>
     </message>
     <message>
-        <location line="+1"/>
+        <location line="+2"/>
+        <source>Off and on again: the retentive areas keep their values, the rest starts as at power-on</source>
+        <translation>Ki- és újra bekapcsolás: a remanens területek megtartják értéküket, a többi a bekapcsoláskori állapotból indul</translation>
+    </message>
+    <message>
+        <location line="+2"/>
         <source>Statistics</source>
         <translation>Statisztika</translation>
     </message>
@@ -3669,7 +3674,7 @@ Kiértékelés: %4 µs (%5..%6)</translation>
 <context>
     <name>rung::editor::IoPanel</name>
     <message>
-        <location filename="../editor/io_panel.cpp" line="+86"/>
+        <location filename="../editor/io_panel.cpp" line="+89"/>
         <source>Inputs are switches</source>
         <translation>A bemenetek kapcsolók</translation>
     </message>

@@ -1266,7 +1266,7 @@ Editor di schemi ladder e liste istruzioni per %2.</translation>
     </message>
     <message>
         <location line="+33"/>
-        <location filename="../app/gui/main_window_online.cpp" line="+79"/>
+        <location filename="../app/gui/main_window_online.cpp" line="+82"/>
         <source>Cannot save</source>
         <translation>Impossibile salvare</translation>
     </message>
@@ -2497,7 +2497,7 @@ FILE è una lista istruzioni (.il), un testo ladder (.ladder) o un progetto (.ru
 <context>
     <name>rung::app::SimulationPanel</name>
     <message>
-        <location filename="../app/gui/simulation_panel.cpp" line="+162"/>
+        <location filename="../app/gui/simulation_panel.cpp" line="+161"/>
         <source>Run</source>
         <translation>Esecuzione</translation>
     </message>
@@ -2554,12 +2554,17 @@ FILE è una lista istruzioni (.il), un testo ladder (.ladder) o un progetto (.ru
         <translation> ms</translation>
     </message>
     <message>
-        <location line="+1"/>
-        <source>Power Cycle (retentive areas kept)</source>
-        <translation>Spegni e riaccendi (le aree ritentive restano)</translation>
+        <location line="+2"/>
+        <source>Power Cycle</source>
+        <translation>Spegni e riaccendi</translation>
     </message>
     <message>
-        <location line="+1"/>
+        <location line="+2"/>
+        <source>Off and on again: the retentive areas keep their values, the rest starts as at power-on</source>
+        <translation>Spegnere e riaccendere: le aree ritentive conservano i valori, il resto riparte come all&apos;accensione</translation>
+    </message>
+    <message>
+        <location line="+2"/>
         <source>Statistics</source>
         <translation>Statistiche</translation>
     </message>
@@ -3676,7 +3681,7 @@ Valutazione: %4 µs (%5..%6)</translation>
 <context>
     <name>rung::editor::IoPanel</name>
     <message>
-        <location filename="../editor/io_panel.cpp" line="+86"/>
+        <location filename="../editor/io_panel.cpp" line="+89"/>
         <source>Inputs are switches</source>
         <translation>Ingressi come interruttori</translation>
     </message>

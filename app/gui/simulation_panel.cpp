@@ -173,7 +173,11 @@ void SimulationPanel::retranslate() {
     m_periodLabel->setText(tr("Scan period:"));
     //: milliseconds
     m_period->setSuffix(tr(" ms"));
-    m_powerCycle->setText(tr("Power Cycle (retentive areas kept)"));
+    // Short: the dock is a narrow column; what it keeps is in the tooltip.
+    m_powerCycle->setText(tr("Power Cycle"));
+    m_powerCycle->setToolTip(
+        tr("Off and on again: the retentive areas keep their values, the rest starts as at "
+           "power-on"));
     m_statsGroup->setTitle(tr("Statistics"));
     m_historyGroup->setTitle(tr("History"));
     m_historyScanLabel->setText(tr("Show scan:"));
