@@ -23,6 +23,7 @@
 #include <QContextMenuEvent>
 #include <QDockWidget>
 #include <QFileDialog>
+#include <QLineEdit>
 #include <QMainWindow>
 #include <QMenu>
 #include <QPushButton>
@@ -142,8 +143,17 @@ TEST_F(TrueWindow, AWatchValueTheHistoryRefusesIsNotShown) {
     ASSERT_TRUE(QTest::qWaitFor(
         [&] { return row->text(editor::WatchListView::ValueColumn) == QStringLiteral("5"); }, 5000))
         << row->text(editor::WatchListView::ValueColumn).toStdString();
-    // As the value cell's editor commits it.
-    row->setText(editor::WatchListView::ValueColumn, QStringLiteral("777"));
+    // Typed in the value cell (F2) and committed with Return, as a user does.
+    editor::WatchListView *watch = window.watchListView();
+    window.show();
+    ASSERT_TRUE(QTest::qWaitForWindowExposed(&window));
+    watch->setCurrentItem(row, editor::WatchListView::ValueColumn);
+    QTest::keyClick(watch, Qt::Key_F2);
+    auto *editor = watch->viewport()->findChild<QLineEdit *>();
+    ASSERT_NE(editor, nullptr);
+    editor->setText(QStringLiteral("777"));
+    QTest::keyClick(editor, Qt::Key_Return);
+    QApplication::processEvents();
     EXPECT_EQ(row->text(editor::WatchListView::ValueColumn), QStringLiteral("5"));
     ASSERT_TRUE(QTest::qWaitFor(
         [&] {
@@ -164,7 +174,14 @@ TEST_F(TrueWindow, AConstantPresetIsShownWhenStopped) {
     ASSERT_TRUE(sim()->singleScan());
     ASSERT_TRUE(paused());
     sim()->stop();
-    ASSERT_TRUE(QTest::qWaitFor([&] { return sim()->runState() == RunState::Stopped; }, 5000));
+    // The power-on state's snapshot: no scan yet, the boxes not run.
+    ASSERT_TRUE(QTest::qWaitFor(
+        [&] {
+            const auto s = sim()->session() ? sim()->session()->snapshot() : nullptr;
+            return sim()->runState() == RunState::Stopped && s && s->statistics.scans == 0;
+        },
+        5000));
+    QApplication::processEvents();
     const auto value = [&](int rung) {
         const editor::RungOverlay o = view->overlay(rung);
         return o.output(0) ? o.output(0)->value : QString();
