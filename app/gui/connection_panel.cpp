@@ -10,6 +10,7 @@
 #include "comms/driver/connection.h"
 #include "comms/driver/protocol_driver.h"
 #include "comms/transport/serial_transport.h"
+#include "editor/terminal_widgets.h"
 #include "model/target/protocol_map.h"
 #include "model/target/target.h"
 
@@ -176,7 +177,10 @@ void ConnectionPanel::build() {
     form->addRow(m_retriesLabel, m_retries);
     layout->addWidget(m_settingsBox);
 
-    auto *buttons = new QHBoxLayout;
+    // The buttons wrap in a column beside the ladder (dock_layout.h) rather than make the
+    // panel wider than it: past its width the panel scrolls and its texts were cut.
+    auto *buttonRow = new QWidget;
+    auto *buttons = new editor::FlowLayout(buttonRow);
     m_testButton = new QPushButton;
     m_testButton->setObjectName(QStringLiteral("connectionTest"));
     m_connect = new QPushButton;
@@ -184,7 +188,7 @@ void ConnectionPanel::build() {
     m_connect->setDefault(true);
     buttons->addWidget(m_testButton);
     buttons->addWidget(m_connect);
-    layout->addLayout(buttons);
+    layout->addWidget(buttonRow);
 
     const auto label = [layout](const char *name) {
         auto *l = new QLabel;
@@ -209,7 +213,8 @@ void ConnectionPanel::build() {
 
     m_trafficBox = new QGroupBox;
     auto *trafficLayout = new QVBoxLayout(m_trafficBox);
-    auto *trafficButtons = new QHBoxLayout;
+    auto *trafficRow = new QWidget;
+    auto *trafficButtons = new editor::FlowLayout(trafficRow);
     m_record = new QCheckBox;
     m_record->setObjectName(QStringLiteral("connectionRecordTraffic"));
     m_record->setChecked(true);
@@ -218,10 +223,9 @@ void ConnectionPanel::build() {
     m_save = new QPushButton;
     m_save->setObjectName(QStringLiteral("connectionSaveTraffic"));
     trafficButtons->addWidget(m_record);
-    trafficButtons->addStretch();
     trafficButtons->addWidget(m_clear);
     trafficButtons->addWidget(m_save);
-    trafficLayout->addLayout(trafficButtons);
+    trafficLayout->addWidget(trafficRow);
     m_traffic = new QPlainTextEdit;
     m_traffic->setObjectName(QStringLiteral("connectionTraffic"));
     m_traffic->setReadOnly(true);
