@@ -165,6 +165,7 @@ void Document::setProject(const model::Project &project, const QString &path) {
         emit nameChanged();
     ++m_rungsRevision;
     refresh();
+    emit projectReplaced();
 }
 
 const model::ModelVariant *Document::modelVariant() const {

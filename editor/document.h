@@ -139,6 +139,9 @@ signals:
     void programChanged();
     void pathChanged(const QString &path);
     void nameChanged(); // name() changed: a new path or untitled name
+    // Another project (setProject, reset): after its programChanged. What a view said of the
+    // project before is not this one's.
+    void projectReplaced();
 
 private:
     // A left-out contact whose marked line stays in the text given to setListing.

@@ -64,6 +64,9 @@ IoPanel::IoPanel(Document *document, QWidget *parent)
     m_hint->setWordWrap(true);
     m_mode = new QComboBox;
     m_mode->setObjectName(QStringLiteral("ioInputMode"));
+    // As narrow as the terminals' grid: the panel is a column beside the ladder.
+    m_mode->setSizeAdjustPolicy(QComboBox::AdjustToMinimumContentsLengthWithIcon);
+    m_mode->setMinimumContentsLength(10);
     m_mode->addItems({QString(), QString()});
     outer->addWidget(m_mode);
     outer->addWidget(m_hint);

@@ -9,6 +9,13 @@
 namespace rung::editor {
 
 namespace {
+// Where a printed instruction's operands start (-1: none).
+qsizetype space(const QString &printed) {
+    return printed.indexOf(QLatin1Char(' '));
+}
+} // namespace
+
+namespace {
 
 // The letters on a box's inputs, as the manuals name them: SFT(10)'s data, shift and reset
 // inputs (Omron W353: I, P, R), a counter's count and reset (CP, R), KEEP / LR set and reset,
@@ -236,6 +243,34 @@ bool LadderPainter::isCoil(const model::Instruction &ins) const {
            ins.operands.size() == 1;
 }
 
+QStringList LadderPainter::valueLines(const QString &live, const QFontMetricsF &metrics,
+                                      double width) {
+    // "D0 = 12  D1 = 1234" as it is, else without the spaces around '=', else a device a line:
+    // elided on one line, a MOV showed "D1 = 1…" and the value's last digits were lost.
+    if (metrics.horizontalAdvance(live) <= width)
+        return {live};
+    QString compact = live;
+    compact.replace(QStringLiteral(" = "), QStringLiteral("="));
+    compact.replace(QStringLiteral("  "), QStringLiteral(" "));
+    if (metrics.horizontalAdvance(compact) <= width)
+        return {compact};
+    QStringList lines = live.split(QStringLiteral("  "), Qt::SkipEmptyParts);
+    for (QString &line : lines)
+        if (metrics.horizontalAdvance(line) > width)
+            line.replace(QStringLiteral(" = "), QStringLiteral("="));
+    return lines;
+}
+
+QFont LadderPainter::liveFont() const {
+    QFont bold = m_small;
+    bold.setBold(true);
+    return bold;
+}
+
+QRectF LadderPainter::boxTextRect(const QRectF &area) const {
+    return boxRect(area).adjusted(3, 1, -3, -1); // a one-row box's, as paintOutput draws it
+}
+
 QRectF LadderPainter::boxRect(const QRectF &area) const {
     const double y = wireY(area.top());
     const double rowH = m_m.rowHeight;
@@ -300,19 +335,26 @@ void LadderPainter::paintOutput(QPainter &p, const QRectF &area, const model::In
     const QRectF inner = box.adjusted(tall ? rowH * 0.3 : 3, 1, -3, -1);
     const QFontMetricsF fm(m_font);
     if (!live.isEmpty()) {
-        // Monitored: the instruction on the first line, its values (bold) on the second.
+        // Monitored: the instruction on the first line, its values (bold) below it.
         QFont bold = m_small;
         bold.setBold(true);
         const QFontMetricsF fs(m_small);
         const QFontMetricsF fb(bold);
-        const double lines = fs.height() + fb.height();
+        const QStringList values = valueLines(live, fb, inner.width());
+        // Values a line each: the operands are named beside their values, the mnemonic says
+        // the rest (and keeps the three lines inside a one-row box).
+        const QString first = values.size() > 1 && space(text) > 0 ? text.left(space(text)) : text;
+        const double lines = fs.height() + fb.height() * values.size();
         const double top = tall ? inner.top() + 2 : inner.center().y() - lines / 2;
         p.setFont(m_small);
         p.drawText(QRectF(inner.left(), top, inner.width(), fs.height()), Qt::AlignCenter,
-                   fs.elidedText(text, Qt::ElideRight, inner.width()));
+                   fs.elidedText(first, Qt::ElideRight, inner.width()));
         p.setFont(bold);
-        p.drawText(QRectF(inner.left(), top + fs.height(), inner.width(), fb.height()),
-                   Qt::AlignCenter, fb.elidedText(live, Qt::ElideRight, inner.width()));
+        for (qsizetype i = 0; i < values.size(); ++i)
+            p.drawText(QRectF(inner.left(),
+                              top + fs.height() + fb.height() * static_cast<double>(i),
+                              inner.width(), fb.height()),
+                       Qt::AlignCenter, fb.elidedText(values[i], Qt::ElideRight, inner.width()));
         return;
     }
     if (!tall && fm.horizontalAdvance(text) <= inner.width()) {

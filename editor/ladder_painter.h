@@ -9,7 +9,9 @@
 #include "model/project/project.h"
 
 #include <QFont>
+#include <QFontMetricsF>
 #include <QPainter>
+#include <QStringList>
 
 #include <algorithm>
 #include <set>
@@ -104,6 +106,14 @@ public:
     static QColor energisedColor();
     static QColor forcedColor();
     static QColor staleColor();
+    // The values under a box's instruction, as lines that fit `width` in `metrics`: one
+    // line when it fits (compacted if need be), else a device a line.
+    static QStringList valueLines(const QString &live, const QFontMetricsF &metrics, double width);
+    // A box's inner rectangle (where its text goes) in an output area, and the badge of a
+    // forced contact in its cell: for the tests of what fits.
+    QRectF boxTextRect(const QRectF &area) const;
+    QFont liveFont() const; // a box's values: the small font, bold
+    QRectF contactForceBadge(const QRectF &cell) const;
 
 private:
     // `live`: the monitored value to show under the element (compare contacts).
@@ -121,7 +131,11 @@ private:
                            const RungOverlay &o, int row, int column) const;
     void paintOutputState(QPainter &p, const QRectF &area, const model::Instruction &ins,
                           const RungOverlay::Output &out, bool stale) const;
-    void paintForced(QPainter &p, const QRectF &element, bool stale) const;
+    // A forced element: a dashed outline round it and the "F" badge in `badge`.
+    void paintForced(QPainter &p, const QRectF &element, const QRectF &badge, bool stale) const;
+    double forceBadgeSize() const;
+    // The badge of a contact or coil: right of its symbol, on the wire, inside the cell.
+    QRectF forceBadgeBeside(const QRectF &cell, double symbolRight) const;
     QPen livePen(bool stale) const;
     // Shared geometry of the drawing and its overlay.
     bool isCoil(const model::Instruction &ins) const;

@@ -46,24 +46,42 @@ QPen LadderPainter::livePen(bool stale) const {
     return pen;
 }
 
-void LadderPainter::paintForced(QPainter &p, const QRectF &element, bool stale) const {
+double LadderPainter::forceBadgeSize() const {
+    return std::max(9.0, std::round(m_m.rowHeight * 0.27));
+}
+
+void LadderPainter::paintForced(QPainter &p, const QRectF &element, const QRectF &badge,
+                                bool stale) const {
     p.save();
     const QColor color = stale ? staleColor() : forcedColor();
     QPen outline(color, std::max(1.5, m_pen * 0.8), Qt::DashLine);
     p.setPen(outline);
     p.setBrush(Qt::NoBrush);
     p.drawRect(element);
-    // The badge: an "F" cut out of a filled square at the top-right corner.
-    const double size = std::max(9.0, std::round(m_m.rowHeight * 0.27));
-    const QRectF badge(element.right() - size, element.top(), size, size);
+    // The badge: an "F" cut out of a filled square, where it covers no text.
     p.fillRect(badge, color);
     QFont font = m_small;
     font.setBold(true);
-    font.setPixelSize(std::max(7, static_cast<int>(size * 0.8)));
+    font.setPixelSize(std::max(7, static_cast<int>(badge.height() * 0.8)));
     p.setFont(font);
     p.setPen(kPaper);
     p.drawText(badge, Qt::AlignCenter, QStringLiteral("F"));
     p.restore();
+}
+
+QRectF LadderPainter::contactForceBadge(const QRectF &cell) const {
+    const double cx = cell.center().x();
+    return forceBadgeBeside(cell, snap(cx + m_m.cellWidth * 0.12, m_pen));
+}
+
+QRectF LadderPainter::forceBadgeBeside(const QRectF &cell, double symbolRight) const {
+    // Right of the contact's or coil's symbol, on its wire: the device's label above and the
+    // name or value below stay whole ("X1", "000.00" lost their last character under a badge
+    // in the corner).
+    const double size = forceBadgeSize();
+    const double y = wireY(cell.top());
+    const double left = std::min(symbolRight + std::max(2.0, m_pen), cell.right() - 3 - size);
+    return QRectF(left, y - size / 2, size, size);
 }
 
 void LadderPainter::paintContactState(QPainter &p, const QRectF &cell, const model::Contact &c,
@@ -122,7 +140,11 @@ void LadderPainter::paintContactState(QPainter &p, const QRectF &cell, const mod
         }
     }
     if (o.isForced(row, column))
-        paintForced(p, cell.adjusted(2, 2, -2, -2), stale);
+        paintForced(p, cell.adjusted(2, 2, -2, -2),
+                    c.compare != model::CompareOp::None && !c.invert
+                        ? forceBadgeBeside(cell, cell.right() - 4 - forceBadgeSize())
+                        : forceBadgeBeside(cell, cx + half),
+                    stale);
 }
 
 void LadderPainter::paintOutputState(QPainter &p, const QRectF &area, const model::Instruction &ins,
@@ -174,7 +196,8 @@ void LadderPainter::paintOutputState(QPainter &p, const QRectF &area, const mode
             }
         }
         if (out.forced)
-            paintForced(p, QRectF(cx - r * 1.5, y - r * 1.45, r * 3, r * 2.9), stale);
+            paintForced(p, QRectF(cx - r * 1.5, y - r * 1.45, r * 3, r * 2.9),
+                        forceBadgeBeside(area, cx + r * 1.5), stale);
         return;
     }
     const QRectF box = boxRect(area);
@@ -195,8 +218,11 @@ void LadderPainter::paintOutputState(QPainter &p, const QRectF &area, const mode
         p.drawPolygon(tri, 3);
         p.setBrush(Qt::NoBrush);
     }
-    if (out.forced)
-        paintForced(p, box.adjusted(-3, -3, 3, 3), stale);
+    if (out.forced) {
+        const QRectF element = box.adjusted(-3, -3, 3, 3);
+        const double size = forceBadgeSize();
+        paintForced(p, element, QRectF(element.right() - size, element.top(), size, size), stale);
+    }
 }
 
 void LadderPainter::paintOverlay(QPainter &p, const model::Rung &rung, const RungOverlay &o) const {

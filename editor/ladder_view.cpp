@@ -43,7 +43,12 @@ LadderView::LadderView(Document *document, QWidget *parent)
         if (m_anchorRung >= static_cast<int>(m_document->ladder().rungs.size()))
             m_anchorRung = -1;
         relayout();
-        setCursor(m_cursor);
+        // An edit of the rungs shows where it was made; a change of the symbols or the watch
+        // lists (a row added to the watch table) leaves the view where the user scrolled it.
+        if (m_document->rungsRevision() != m_shownRevision) {
+            m_shownRevision = m_document->rungsRevision();
+            setCursor(m_cursor);
+        }
         m_overlays.clear(); // the rungs the overlays were computed for are gone
         tellWatched();
         viewport()->update();

@@ -210,10 +210,14 @@ private:
     // follows the cursor's rung): later positions of the same gesture are shifted by it so
     // they are read in the layout the press was read in.
     QPointF m_pressShift;
-    QKeySequence m_tool;       // the armed palette tool, empty: select
-    int m_anchorRung = -1;     // where a rung selection started; -1: none
-    int m_anchorColumn = -1;   // where a cell selection in the cursor's row started
-    std::vector<double> m_top; // y of each rung at zoom 1, plus the total height at the end
+    // The cell a right press chose: its context menu is that cell's, though the layout moved
+    // under the pointer when the press moved the cursor (and the spare row) to its rung.
+    CellCursor m_contextCell{-1, 0, 0};
+    quint64 m_shownRevision = 0; // the document's rungsRevision() the cursor was last placed in
+    QKeySequence m_tool;         // the armed palette tool, empty: select
+    int m_anchorRung = -1;       // where a rung selection started; -1: none
+    int m_anchorColumn = -1;     // where a cell selection in the cursor's row started
+    std::vector<double> m_top;   // y of each rung at zoom 1, plus the total height at the end
     QLineEdit *m_editor = nullptr;
     QLabel *m_notice = nullptr;
     std::map<int, bool> m_breakpoints;

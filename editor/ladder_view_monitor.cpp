@@ -193,10 +193,16 @@ void LadderView::contextMenuEvent(QContextMenuEvent *event) {
         return; // the right button put the tool away (mousePressEvent)
     CellCursor cell = m_cursor;
     if (event->reason() == QContextMenuEvent::Mouse) {
-        cell = cellAt(viewport()->mapFromGlobal(event->globalPos()));
-        if (cell.rung < 0)
-            return;
-        setCursor(cell);
+        const QPoint at = viewport()->mapFromGlobal(event->globalPos());
+        if (m_contextCell.rung >= 0 && !draggedFarEnough(at)) {
+            cell = m_contextCell; // the press chose it, in the layout before the row moved
+        } else {
+            cell = cellAt(at);
+            if (cell.rung < 0)
+                return;
+            setCursor(cell);
+        }
+        m_contextCell = {-1, 0, 0};
     }
     const QRect at = cellRectOnScreen(cell);
     showMonitorMenu(cell, event->reason() == QContextMenuEvent::Mouse

@@ -96,6 +96,7 @@ void LadderView::mousePressEvent(QMouseEvent *event) {
     m_pressAt = event->position();
     m_pressShift = QPointF(cellRectOnScreen(cell).topLeft()) - before;
     m_dragFrom = event->button() == Qt::LeftButton ? cell : CellCursor{-1, 0, 0};
+    m_contextCell = event->button() == Qt::RightButton ? cell : CellCursor{-1, 0, 0};
     m_pressDevice = event->button() == Qt::LeftButton ? deviceAtCursor() : QString();
 }
 

@@ -347,22 +347,46 @@ qint64 ProgramFlow::presentOf(const model::Target &target, const model::Address 
     return setValueNumber(target, snapshot.value(element));
 }
 
+std::optional<qint64> ProgramFlow::presetWordOf(const model::Target &target,
+                                                const model::Instruction *box,
+                                                const model::Address &element,
+                                                const model::Snapshot &snapshot) {
+    const model::Operand *preset =
+        box && box->operands.size() >= 2 && box->operands.front().address == element
+            ? &box->operands[1]
+            : nullptr;
+    if (preset && preset->modified()) // indexed: only the PLC knows which word it read
+        preset = nullptr;
+    // CPM1 #0150 is the number 150 already; its word holds the digits.
+    if (preset && preset->kind == model::Operand::Kind::Constant)
+        return target.constants.bcdSetValues ? model::toBcd(preset->constant.value)
+                                             : preset->constant.value;
+    if (snapshot.setValueKnown(element))
+        return snapshot.setValue(element);
+    if (preset && isDevice(*preset) && snapshot.valueKnown(preset->address))
+        return snapshot.value(preset->address);
+    return std::nullopt;
+}
+
 std::optional<qint64> ProgramFlow::presetOf(const model::Target &target,
                                             const model::Instruction *box,
                                             const model::Address &element,
                                             const model::Snapshot &snapshot) {
-    if (snapshot.setValueKnown(element))
-        return setValueNumber(target, snapshot.setValue(element));
-    if (!box || box->operands.size() < 2 || !(box->operands.front().address == element))
-        return std::nullopt;
-    const model::Operand &preset = box->operands[1];
-    if (preset.modified()) // indexed: only the PLC knows which word it read
-        return std::nullopt;
-    if (preset.kind == model::Operand::Kind::Constant)
-        return preset.constant.value; // CPM1 #0150 is the number 150 already
-    if (isDevice(preset) && snapshot.valueKnown(preset.address))
-        return setValueNumber(target, snapshot.value(preset.address));
-    return std::nullopt;
+    const std::optional<qint64> word = presetWordOf(target, box, element, snapshot);
+    return word ? std::optional<qint64>(setValueNumber(target, *word)) : std::nullopt;
+}
+
+const model::Instruction *ProgramFlow::boxOf(const std::vector<model::Instruction> &program,
+                                             const model::Address &element) {
+    for (const model::Instruction &ins : program) {
+        const model::Op op = ins.op();
+        if ((op == model::Op::Timer || op == model::Op::Counter ||
+             op == model::Op::UpDownCounter) &&
+            !ins.operands.empty() && isDevice(ins.operands.front()) &&
+            ins.operands.front().address == element)
+            return &ins;
+    }
+    return nullptr;
 }
 
 QString ProgramFlow::timerText(const model::Target &target, const model::Instruction &timer,

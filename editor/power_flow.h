@@ -106,16 +106,28 @@ public:
                              const model::Snapshot &snapshot);
     static QString counterText(const model::Target &target, const model::Instruction &counter,
                                const model::Snapshot &snapshot);
-    // A timer's or counter's values as numbers (a CPM1 word's BCD digits decoded). The set
-    // value in force is the memory's where it is known; online, where no protocol area holds
-    // it (a Vigor K constant lives in the program), it is the box's own operand: the
-    // constant, or the word device it names once read. Unknown: nullopt.
+    // A timer's or counter's values as numbers (a CPM1 word's BCD digits decoded). A
+    // constant preset (K350, #0150) is the program's, shown as the box has it whether or not
+    // the source ran the box yet (a stopped simulation's memory holds 0 until the box runs)
+    // or can read it (online, no protocol area holds a Vigor K constant). Else the memory's
+    // set value where it is known, else the word device the box names once read. Unknown:
+    // nullopt.
     static qint64 presentOf(const model::Target &target, const model::Address &element,
                             const model::Snapshot &snapshot);
     static std::optional<qint64> presetOf(const model::Target &target,
                                           const model::Instruction *box,
                                           const model::Address &element,
                                           const model::Snapshot &snapshot);
+    // The same as the memory word holds it (a CPM1's BCD digits), for a view that shows the
+    // word in a format of its own (the watch table).
+    static std::optional<qint64> presetWordOf(const model::Target &target,
+                                              const model::Instruction *box,
+                                              const model::Address &element,
+                                              const model::Snapshot &snapshot);
+    // The timer or counter box of the program that drives an element (its first operand);
+    // null when none does.
+    static const model::Instruction *boxOf(const std::vector<model::Instruction> &program,
+                                           const model::Address &element);
     // The values of an instruction's word devices ("D0 = 12  D1 = 3"); for a timer or
     // counter its elapsed / preset.
     static QString valuesText(const model::Target &target, const model::Instruction &ins,

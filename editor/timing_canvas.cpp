@@ -148,7 +148,7 @@ void TimingCanvas::render(QPainter &p, QSize size) const {
     const int width = std::max(1, size.width() - left);
     const qint64 from = m_endMs - static_cast<qint64>(std::llround(width * m_msPerPixel));
     p.fillRect(QRect(0, 0, left, size.height()), palette().color(QPalette::Window));
-    paintAxis(p, left, width, from);
+    paintAxis(p, left, width, from, size);
     const QColor ink = palette().color(QPalette::Text);
     if (!m_channels || m_channels->empty()) {
         p.setPen(palette().color(QPalette::PlaceholderText));
@@ -203,12 +203,16 @@ void TimingCanvas::render(QPainter &p, QSize size) const {
         const double x = xAt(*m_cursor[which], left, width, from);
         p.setPen(QPen(kCursor, which == 0 ? 2 : 1.5, which == 0 ? Qt::SolidLine : Qt::DashLine));
         p.drawLine(QPointF(x, 0), QPointF(x, size.height()));
-        p.setPen(kCursor);
+        // The letter white on the cursor's colour, in the ruler: never over a number.
         QFont bold = p.font();
         bold.setBold(true);
         p.setFont(bold);
-        p.drawText(QPointF(x + 3, QFontMetrics(bold).ascent() + 1),
-                   which == 0 ? QStringLiteral("A") : QStringLiteral("B"));
+        const QFontMetricsF fm(bold);
+        const QString letter = which == 0 ? QStringLiteral("A") : QStringLiteral("B");
+        const QRectF tag(x + 1, 1, fm.horizontalAdvance(letter) + 6, fm.height());
+        p.fillRect(tag, kCursor);
+        p.setPen(Qt::white);
+        p.drawText(tag, Qt::AlignCenter, letter);
         p.setFont(font());
     }
     p.restore();
@@ -216,8 +220,51 @@ void TimingCanvas::render(QPainter &p, QSize size) const {
     p.drawLine(left, 0, left, size.height());
 }
 
-void TimingCanvas::paintAxis(QPainter &p, int left, int width, qint64 from) const {
+std::vector<QRectF> TimingCanvas::cursorTags(QSize size) const {
+    std::vector<QRectF> tags;
+    const int left = nameWidth();
+    const int width = std::max(1, size.width() - left);
+    const qint64 from = m_endMs - static_cast<qint64>(std::llround(width * m_msPerPixel));
+    QFont bold = font();
+    bold.setBold(true);
+    const QFontMetricsF fm(bold);
+    for (int which = 0; which < 2; ++which) {
+        if (!m_cursor[which])
+            continue;
+        const double x = xAt(*m_cursor[which], left, width, from);
+        const QString letter = which == 0 ? QStringLiteral("A") : QStringLiteral("B");
+        // The line's whole crossing of the ruler, and the letter's tag beside it.
+        tags.emplace_back(x - 2, 0, fm.horizontalAdvance(letter) + 9, kAxisHeight);
+    }
+    return tags;
+}
+
+std::vector<QRectF> TimingCanvas::rulerLabels(QSize size) const {
+    const int left = nameWidth();
+    const int width = std::max(1, size.width() - left);
+    const qint64 from = m_endMs - static_cast<qint64>(std::llround(width * m_msPerPixel));
+    const QFontMetricsF fm(font());
+    const qint64 step = niceStep(
+        static_cast<double>(fm.horizontalAdvance(QStringLiteral("0000.00 s")) + 16) * m_msPerPixel);
+    const std::vector<QRectF> tags = cursorTags(size);
+    std::vector<QRectF> labels;
+    const qint64 first = (std::max<qint64>(from, 0) + step - 1) / step * step;
+    for (qint64 t = first; t <= m_endMs; t += step) {
+        const double x = xAt(t, left, width, from);
+        const QRectF label(x + 2, kAxisHeight - 6 - fm.ascent(),
+                           fm.horizontalAdvance(timeText(t, step)), fm.height());
+        // A number a cursor's line and letter would cross is left out: the cursor's own time
+        // is in the chart's readout, and the two drawn over each other read as neither.
+        if (std::none_of(tags.begin(), tags.end(),
+                         [&label](const QRectF &tag) { return tag.intersects(label); }))
+            labels.push_back(label);
+    }
+    return labels;
+}
+
+void TimingCanvas::paintAxis(QPainter &p, int left, int width, qint64 from, QSize size) const {
     const QFontMetrics fm(p.font());
+    const std::vector<QRectF> labels = rulerLabels(size);
     const qint64 step = niceStep(
         static_cast<double>(fm.horizontalAdvance(QStringLiteral("0000.00 s")) + 16) * m_msPerPixel);
     p.setPen(palette().color(QPalette::Text));
@@ -227,7 +274,9 @@ void TimingCanvas::paintAxis(QPainter &p, int left, int width, qint64 from) cons
         const double x = xAt(t, left, width, from);
         p.setPen(palette().color(QPalette::Text));
         p.drawLine(QPointF(x, kAxisHeight - 5), QPointF(x, kAxisHeight - 1));
-        p.drawText(QPointF(x + 2, kAxisHeight - 6), timeText(t, step));
+        if (std::any_of(labels.begin(), labels.end(),
+                        [x](const QRectF &label) { return qAbs(label.left() - (x + 2)) < 0.5; }))
+            p.drawText(QPointF(x + 2, kAxisHeight - 6), timeText(t, step));
         p.setPen(QPen(palette().color(QPalette::Midlight), 1, Qt::DotLine));
         p.drawLine(QPointF(x, kAxisHeight),
                    QPointF(x, rowTop(m_channels ? int(m_channels->size()) : 0)));

@@ -7,9 +7,11 @@
 
 #include "timing_data.h"
 
+#include <QRectF>
 #include <QWidget>
 
 #include <optional>
+#include <vector>
 
 namespace rung::editor {
 
@@ -40,6 +42,10 @@ public:
 
     // The whole drawing at this size (the widget's own, or an export's).
     void render(QPainter &painter, QSize size) const;
+    // Where the ruler's numbers and the cursors' tags (their line across the ruler and their
+    // letter) go when drawn at `size`; no number is drawn under a tag.
+    std::vector<QRectF> rulerLabels(QSize size) const;
+    std::vector<QRectF> cursorTags(QSize size) const;
     // The height every row needs: what an export takes.
     int contentHeight() const;
 
@@ -70,7 +76,7 @@ private:
     int rowHeight(int row) const;
     int rowAt(int y) const;
     double xAt(qint64 timeMs, int left, int width, qint64 from) const;
-    void paintAxis(QPainter &p, int left, int width, qint64 from) const;
+    void paintAxis(QPainter &p, int left, int width, qint64 from, QSize size) const;
     void paintBit(QPainter &p, const QRect &r, std::size_t k, qint64 from) const;
     void paintWord(QPainter &p, const QRect &r, std::size_t k, qint64 from) const;
 

@@ -2,6 +2,7 @@
 
 #include "device_mime.h"
 #include "document.h"
+#include "power_flow.h"
 
 #include "model/image/monitor_source.h"
 #include "model/target/address.h"
@@ -67,7 +68,13 @@ WatchListView::WatchListView(Document *document, QWidget *parent)
     connect(this, &QTreeWidget::itemChanged, this, [this](QTreeWidgetItem *item, int column) {
         if (m_showing || column != ValueColumn)
             return;
-        writeValue(item, item->text(ValueColumn));
+        // The row shows what the source holds, never the text typed: a write can be refused
+        // (a past scan is read-only) or wait for the user's yes (the first write to a PLC),
+        // and a value nobody wrote must not stand in the table meanwhile.
+        const QString typed = item->text(ValueColumn);
+        m_editing = nullptr;
+        showValues();
+        writeValue(item, typed);
         showValues(); // the value as the source has it, until the next snapshot
     });
     refresh();
@@ -197,16 +204,16 @@ void WatchListView::showRow(QTreeWidgetItem *item, const model::Snapshot *snapsh
     QString text;
     if (bit)
         text = snapshot->bit(*address) ? tr("ON") : tr("OFF");
-    else if (element)
-        // Current value against the preset, and the done bit.
+    else if (element) {
+        // Current value against the preset (a constant one as the program has it; "?" online
+        // where no protocol area holds it), and the done bit.
+        const std::optional<qint64> preset =
+            ProgramFlow::presetWordOf(t, m_boxes.value(item), *address, *snapshot);
         text = tr("%1 of %2, %3")
                    .arg(model::formatValue(snapshot->value(*address), bits, f),
-                        // Online, a set value no protocol area holds is not known here.
-                        snapshot->setValueKnown(*address)
-                            ? model::formatValue(snapshot->setValue(*address), bits, f)
-                            : QStringLiteral("?"),
+                        preset ? model::formatValue(*preset, bits, f) : QStringLiteral("?"),
                         snapshot->bit(*address) ? tr("ON") : tr("OFF"));
-    else
+    } else
         text = model::formatValue(snapshot->value(*address), bits, f);
     const bool forced = snapshot->forced(*address);
     item->setText(ValueColumn, forced ? tr("%1 (forced)").arg(text) : text);
@@ -452,10 +459,14 @@ void WatchListView::refresh() {
         tellWatched();
     }
     // Symbols and formats change without the rows changing.
+    m_program = m_document->sharedInstructions();
+    m_boxes.clear();
     for (int i = 0; i < topLevelItemCount(); ++i)
         for (int k = 0; k < topLevelItem(i)->childCount(); ++k) {
             QTreeWidgetItem *row = topLevelItem(i)->child(k);
             const auto a = addressOf(row);
+            if (const model::Instruction *box = a ? ProgramFlow::boxOf(*m_program, *a) : nullptr)
+                m_boxes.insert(row, box);
             const model::Symbol *symbol = a ? m_document->project().symbol(*a) : nullptr;
             row->setText(SymbolColumn, symbol ? symbol->name : QString());
             row->setToolTip(SymbolColumn, symbol ? symbol->comment : QString());

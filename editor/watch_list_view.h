@@ -11,7 +11,9 @@
 
 #include "model/image/monitor_source.h"
 #include "model/image/value_format.h"
+#include "model/listing/il.h"
 
+#include <QHash>
 #include <QList>
 #include <QPointer>
 #include <QTreeWidget>
@@ -98,6 +100,10 @@ private:
     QPointer<model::MonitorSource> m_source;
     bool m_showing = false;               // the view writes the value column itself: not an edit
     QTreeWidgetItem *m_editing = nullptr; // whose value is being typed (editValue)
+    // The program's timer and counter boxes of the rows (their constant presets), from the
+    // instructions held here.
+    std::shared_ptr<const std::vector<model::Instruction>> m_program;
+    QHash<const QTreeWidgetItem *, const model::Instruction *> m_boxes;
 };
 
 } // namespace rung::editor

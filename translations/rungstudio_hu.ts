@@ -42,7 +42,7 @@
 <context>
     <name>rung::app::BreakpointDialog</name>
     <message>
-        <location filename="../app/gui/breakpoint_dialog.cpp" line="+39"/>
+        <location filename="../app/gui/breakpoint_dialog.cpp" line="+41"/>
         <source>Breakpoint Condition</source>
         <translation>Töréspont feltétele</translation>
     </message>
@@ -92,12 +92,12 @@
         <translation>&amp;Operandus</translation>
     </message>
     <message>
-        <location line="+9"/>
+        <location line="+10"/>
         <source>&amp;Compare</source>
         <translation>Össze&amp;hasonlítás</translation>
     </message>
     <message>
-        <location line="+37"/>
+        <location line="+40"/>
         <source>Type the device the condition watches</source>
         <translation>Írja be a feltétel által figyelt operandust</translation>
     </message>
@@ -255,7 +255,7 @@ Kilépési kód: 0 nincs hiba, 1 a programban hiba van, 2 használati vagy I/O h
 <context>
     <name>rung::app::ConnectionPanel</name>
     <message>
-        <location filename="../app/gui/connection_panel_link.cpp" line="+48"/>
+        <location filename="../app/gui/connection_panel_link.cpp" line="+49"/>
         <source>ON</source>
         <translation>BE</translation>
     </message>
@@ -295,12 +295,12 @@ Kilépési kód: 0 nincs hiba, 1 a programban hiba van, 2 használati vagy I/O h
         <translation>Minden kényszerítés feloldása</translation>
     </message>
     <message>
-        <location line="+26"/>
+        <location line="+27"/>
         <source>Cancelled: nothing was sent to the PLC</source>
         <translation>Megszakítva: semmi sem lett elküldve a PLC-nek</translation>
     </message>
     <message>
-        <location filename="../app/gui/connection_panel.cpp" line="+248"/>
+        <location filename="../app/gui/connection_panel.cpp" line="+256"/>
         <source>Settings</source>
         <translation>Beállítások</translation>
     </message>
@@ -400,7 +400,7 @@ Kilépési kód: 0 nincs hiba, 1 a programban hiba van, 2 használati vagy I/O h
         <translation>Mentés...</translation>
     </message>
     <message>
-        <location line="+22"/>
+        <location line="+23"/>
         <source>PLC: %1</source>
         <translation>PLC: %1</translation>
     </message>
@@ -439,17 +439,22 @@ This changes the memory of a real PLC, which may be driving a machine. You are a
 Ez egy valódi PLC memóriáját módosítja, amely gépet vezérelhet. Kapcsolatonként egyszer kérdezünk; a további módosítások azonnal mennek.</translation>
     </message>
     <message>
-        <location line="+108"/>
+        <location line="+115"/>
         <source>Choose the serial port the PLC is on (or type its path)</source>
         <translation>Válassza ki a soros portot, amelyen a PLC van (vagy írja be az elérési útját)</translation>
     </message>
     <message>
-        <location line="-65"/>
+        <location line="-69"/>
         <source>%1: done, the PLC acknowledged it</source>
         <translation>%1: kész, a PLC nyugtázta</translation>
     </message>
     <message>
-        <location line="+1"/>
+        <location line="-3"/>
+        <source>A command</source>
+        <translation>Egy parancs</translation>
+    </message>
+    <message>
+        <location line="+4"/>
         <source>%1: not done: %2</source>
         <translation>%1: nem történt meg: %2</translation>
     </message>
@@ -459,12 +464,12 @@ Ez egy valódi PLC memóriáját módosítja, amely gépet vezérelhet. Kapcsola
         <translation>Ezek a PLC-k nem tudják visszaküldeni a programjukat, ezért az IDE nem tudhatja, hogy a PLC az itt látható programot futtatja-e. Hasonlítsa össze operandusok olvasásával: figyelje őket a létradiagramon vagy a figyelőtáblában.</translation>
     </message>
     <message>
-        <location line="+27"/>
+        <location line="+28"/>
         <source>Switch to %1</source>
         <translation>Átváltás %1 módba</translation>
     </message>
     <message>
-        <location line="+14"/>
+        <location line="+15"/>
         <source>The PLC runs its program: its outputs switch as the program says.</source>
         <translation>A PLC futtatja a programját: a kimenetei a program szerint kapcsolnak.</translation>
     </message>
@@ -493,7 +498,7 @@ Ez egy valódi PLC memóriáját módosítja, amely gépet vezérelhet. Kapcsola
 %3</translation>
     </message>
     <message>
-        <location line="+7"/>
+        <location line="+9"/>
         <source>Type the host name or IP address of the PLC or its gateway</source>
         <translation>Írja be a PLC vagy az átjárója gépnevét vagy IP-címét</translation>
     </message>
@@ -508,12 +513,12 @@ Ez egy valódi PLC memóriáját módosítja, amely gépet vezérelhet. Kapcsola
         <translation>Egy teszt folyamatban van</translation>
     </message>
     <message>
-        <location line="+13"/>
+        <location line="+12"/>
         <source>Testing %1...</source>
         <translation>%1 tesztelése...</translation>
     </message>
     <message>
-        <location line="+8"/>
+        <location line="+12"/>
         <source>The PLC answers (this protocol does not report the model)</source>
         <translation>A PLC válaszol (ez a protokoll nem jelenti a modellt)</translation>
     </message>
@@ -533,12 +538,12 @@ Ez egy valódi PLC memóriáját módosítja, amely gépet vezérelhet. Kapcsola
         <translation>; üzemmód: %1</translation>
     </message>
     <message>
-        <location line="+2"/>
+        <location line="+1"/>
         <source>; round trip %1 ms</source>
         <translation>; válaszidő: %1 ms</translation>
     </message>
     <message>
-        <location line="+4"/>
+        <location line="+6"/>
         <location line="+11"/>
         <source>No answer: %1</source>
         <translation>Nincs válasz: %1</translation>
@@ -549,7 +554,7 @@ Ez egy valódi PLC memóriáját módosítja, amely gépet vezérelhet. Kapcsola
         <translation>A PLC nem válaszol</translation>
     </message>
     <message>
-        <location line="+26"/>
+        <location line="+40"/>
         <location line="+4"/>
         <source>Offline</source>
         <translation>Offline</translation>
@@ -570,12 +575,12 @@ Ez egy valódi PLC memóriáját módosítja, amely gépet vezérelhet. Kapcsola
         <translation>Kapcsolódás ehhez: %1: %2</translation>
     </message>
     <message>
-        <location line="+2"/>
+        <location line="-23"/>
         <source>Online: %1</source>
         <translation>Online: %1</translation>
     </message>
     <message>
-        <location line="+11"/>
+        <location line="+28"/>
         <source>%1
 The values shown are the last read, marked stale.</source>
         <translation>%1
@@ -597,14 +602,14 @@ A látható értékek az utoljára olvasottak, elavultként jelölve.</translati
         <translation>Kapcsolódás</translation>
     </message>
     <message>
-        <location line="+37"/>
+        <location line="+42"/>
         <source>Errors %1, retries %2, timeouts %3, refused %4, reconnects %5
 Round trip %6 ms (mean %7, max %8); refresh %9 ms, %10 frame(s)</source>
         <translation>Hibák: %1, ismétlések: %2, időtúllépések: %3, elutasítva: %4, újracsatlakozások: %5
 Válaszidő: %6 ms (átlag %7, max. %8); frissítés: %9 ms, %10 keret</translation>
     </message>
     <message>
-        <location line="+31"/>
+        <location line="+65"/>
         <source>PC&gt;PLC</source>
         <extracomment>the direction of bytes in the traffic log: from the PC to the PLC, and back</extracomment>
         <translation>PC&gt;PLC</translation>
@@ -715,19 +720,19 @@ Válaszidő: %6 ms (átlag %7, max. %8); frissítés: %9 ms, %10 keret</translat
 <context>
     <name>rung::app::MainWindow</name>
     <message>
-        <location filename="../app/gui/main_window.cpp" line="+177"/>
+        <location filename="../app/gui/main_window.cpp" line="+173"/>
         <source>Problems</source>
         <translation>Problémák</translation>
     </message>
     <message>
         <location line="+5"/>
-        <location line="+340"/>
+        <location line="+343"/>
         <source>Project</source>
         <translation>Projekt</translation>
     </message>
     <message>
-        <location line="-333"/>
-        <location line="+336"/>
+        <location line="-336"/>
+        <location line="+339"/>
         <source>Symbols</source>
         <translation>Szimbólumok</translation>
     </message>
@@ -1025,7 +1030,7 @@ Létradiagram- és utasításlista-szerkesztő a következő PLC-khez: %2.</tran
     </message>
     <message>
         <location line="+0"/>
-        <location filename="../app/gui/main_window_tools.cpp" line="+224"/>
+        <location filename="../app/gui/main_window_tools.cpp" line="+222"/>
         <source>CSV files (*.csv)</source>
         <translation>CSV-fájlok (*.csv)</translation>
     </message>
@@ -1110,7 +1115,7 @@ Létradiagram- és utasításlista-szerkesztő a következő PLC-khez: %2.</tran
         <translation>A Rung Studio névjegye</translation>
     </message>
     <message>
-        <location filename="../app/gui/main_window.cpp" line="-318"/>
+        <location filename="../app/gui/main_window.cpp" line="-321"/>
         <source>Rung Comment</source>
         <translation>Létrafok megjegyzése</translation>
     </message>
@@ -1121,23 +1126,23 @@ Létradiagram- és utasításlista-szerkesztő a következő PLC-khez: %2.</tran
     </message>
     <message>
         <location line="+22"/>
-        <location line="+300"/>
+        <location line="+303"/>
         <source>Ladder</source>
         <translation>Létradiagram</translation>
     </message>
     <message>
-        <location line="-299"/>
-        <location line="+300"/>
+        <location line="-302"/>
+        <location line="+303"/>
         <source>Instruction List</source>
         <translation>Utasításlista</translation>
     </message>
     <message>
-        <location line="-287"/>
+        <location line="-290"/>
         <source>The list as typed had errors and now shows the ladder&apos;s program; Ctrl+Z in the list brings it back</source>
         <translation>A begépelt lista hibás volt, most a létradiagram programját mutatja; a listában a Ctrl+Z visszahozza</translation>
     </message>
     <message>
-        <location line="+95"/>
+        <location line="+96"/>
         <source>The list as typed was taken first and changed rung %1, so the ladder edit was not made: make it again on the rung as it is now.</source>
         <translation>A begépelt lista került előbb a programba, és megváltoztatta a(z) %1. létrafokot, ezért a létradiagram módosítása nem történt meg: végezze el újra a létrafok mostani állapotán.</translation>
     </message>
@@ -1259,7 +1264,7 @@ Létradiagram- és utasításlista-szerkesztő a következő PLC-khez: %2.</tran
     </message>
     <message>
         <location line="+33"/>
-        <location filename="../app/gui/main_window_online.cpp" line="+80"/>
+        <location filename="../app/gui/main_window_online.cpp" line="+82"/>
         <source>Cannot save</source>
         <translation>A mentés nem sikerült</translation>
     </message>
@@ -1347,7 +1352,7 @@ Létradiagram- és utasításlista-szerkesztő a következő PLC-khez: %2.</tran
         <location line="-4"/>
         <location line="+8"/>
         <location line="+10"/>
-        <location filename="../app/gui/main_window_panels.cpp" line="+58"/>
+        <location filename="../app/gui/main_window_panels.cpp" line="+54"/>
         <location filename="../app/gui/main_window_tools.cpp" line="+3"/>
         <source>Cannot export</source>
         <translation>Az exportálás nem sikerült</translation>
@@ -1368,12 +1373,12 @@ Létradiagram- és utasításlista-szerkesztő a következő PLC-khez: %2.</tran
         <translation>Létradiagram exportálása</translation>
     </message>
     <message>
-        <location line="+65"/>
+        <location line="+66"/>
         <source>Cannot open the example</source>
         <translation>A példa nem nyitható meg</translation>
     </message>
     <message>
-        <location filename="../app/gui/main_window_tools.cpp" line="-161"/>
+        <location filename="../app/gui/main_window_tools.cpp" line="-159"/>
         <source>Cut rungs</source>
         <translation>Létrafokok kivágása</translation>
     </message>
@@ -1449,7 +1454,7 @@ Létradiagram- és utasításlista-szerkesztő a következő PLC-khez: %2.</tran
         <translation>%1 cseréje erre: %2</translation>
     </message>
     <message>
-        <location line="+29"/>
+        <location line="+27"/>
         <source>(no device) %1</source>
         <translation>(nincs operandus) %1</translation>
     </message>
@@ -1461,13 +1466,13 @@ Létradiagram- és utasításlista-szerkesztő a következő PLC-khez: %2.</tran
         </translation>
     </message>
     <message>
-        <location filename="../app/gui/main_window.cpp" line="+103"/>
-        <location filename="../app/gui/main_window_tools.cpp" line="-26"/>
+        <location filename="../app/gui/main_window.cpp" line="+105"/>
+        <location filename="../app/gui/main_window_tools.cpp" line="-24"/>
         <source>Cross Reference</source>
         <translation>Kereszthivatkozás</translation>
     </message>
     <message>
-        <location filename="../app/gui/main_window_tools.cpp" line="+25"/>
+        <location filename="../app/gui/main_window_tools.cpp" line="+23"/>
         <location line="+8"/>
         <source>Export Symbols</source>
         <translation>Szimbólumok exportálása</translation>
@@ -1513,7 +1518,7 @@ Létradiagram- és utasításlista-szerkesztő a következő PLC-khez: %2.</tran
         <translation>Ciklus&amp;ok futtatása...</translation>
     </message>
     <message>
-        <location line="+4"/>
+        <location line="+3"/>
         <source>Run Scans</source>
         <translation>Ciklusok futtatása</translation>
     </message>
@@ -1570,14 +1575,14 @@ Létradiagram- és utasításlista-szerkesztő a következő PLC-khez: %2.</tran
     </message>
     <message>
         <location filename="../app/gui/main_window_debug.cpp" line="+38"/>
-        <location line="+139"/>
+        <location line="+141"/>
         <location filename="../app/gui/main_window_monitor.cpp" line="+42"/>
         <source>Simulation</source>
         <translation>Szimuláció</translation>
     </message>
     <message>
-        <location line="-127"/>
-        <location line="+129"/>
+        <location line="-133"/>
+        <location line="+135"/>
         <source>Scan Debugger</source>
         <translation>Ciklushibakereső</translation>
     </message>
@@ -1693,12 +1698,17 @@ Létradiagram- és utasításlista-szerkesztő a következő PLC-khez: %2.</tran
         <translation>A létradiagram, az utasításlista és a figyelőlisták értékeinek forrása: %1</translation>
     </message>
     <message>
-        <location filename="../app/gui/main_window_panels.cpp" line="-3"/>
+        <location filename="../app/gui/main_window_panels.cpp" line="-8"/>
         <source>Export Timing Chart</source>
         <translation>Idődiagram exportálása</translation>
     </message>
     <message>
-        <location line="+13"/>
+        <location line="+6"/>
+        <source>Timing chart exported to %1</source>
+        <translation>Az idődiagram exportálva ide: %1</translation>
+    </message>
+    <message>
+        <location line="+12"/>
         <source>Watch</source>
         <translation>Figyelés</translation>
     </message>
@@ -2086,7 +2096,7 @@ A read és a write kilépési kódja: 0 kész, 1 a PLC nem válaszolt vagy eluta
         <translation>(üres)</translation>
     </message>
     <message>
-        <location line="+100"/>
+        <location line="+104"/>
         <source>Logic result:</source>
         <translation>Logikai eredmény:</translation>
     </message>
@@ -2187,7 +2197,7 @@ A read és a write kilépési kódja: 0 kész, 1 a PLC nem válaszolt vagy eluta
         <translation>Nem aktív lépésen (STL) belül</translation>
     </message>
     <message>
-        <location line="+15"/>
+        <location line="+19"/>
         <source>Rung %1 (no longer there)</source>
         <translation>%1. létrafok (már nincs meg)</translation>
     </message>
@@ -2196,6 +2206,16 @@ A read és a write kilépési kódja: 0 kész, 1 a PLC nem válaszolt vagy eluta
         <source>Rung %1, line %2: %3</source>
         <extracomment>%1 rung, %2 line, %3 the instruction</extracomment>
         <translation>%1. létrafok, %2. sor: %3</translation>
+    </message>
+    <message>
+        <location line="+23"/>
+        <source>No breakpoint is set: Ctrl+B sets one where the cursor is</source>
+        <translation>Nincs töréspont: a Ctrl+B a kurzor helyére tesz egyet</translation>
+    </message>
+    <message>
+        <location line="+1"/>
+        <source>Choose a breakpoint in the list first</source>
+        <translation>Előbb válasszon egy töréspontot a listában</translation>
     </message>
 </context>
 <context>
@@ -2404,10 +2424,16 @@ A FÁJL utasításlista (.il), létradiagram-szöveg (.ladder) vagy projekt (.ru
         <translation>Léptetés</translation>
     </message>
     <message>
-        <location line="+8"/>
-        <source>%1 | %2 | %3 scans | scan %4 ms | evaluation %5 µs (%6..%7)</source>
-        <extracomment>%1 run state, %2 simulated time h:mm:ss.cc, %3 scans, %4 scan period in ms, %5 %6 %7 time the last scan took to evaluate: current, minimum, maximum, in µs</extracomment>
-        <translation>%1 | %2 | %3 ciklus | ciklusidő %4 ms | kiértékelés %5 µs (%6..%7)</translation>
+        <location line="+9"/>
+        <source>%1 | %2 | %3 scans | scan %4 ms</source>
+        <extracomment>%1 run state, %2 simulated time h:mm:ss.cc, %3 scans, %4 scan period in ms</extracomment>
+        <translation>%1 | %2 | %3 ciklus | ciklusidő %4 ms</translation>
+    </message>
+    <message>
+        <location line="+10"/>
+        <source>Evaluation of a scan on this computer: %1 µs (%2..%3)</source>
+        <extracomment>the time the last scan took to evaluate on this computer: current, minimum, maximum</extracomment>
+        <translation>Egy ciklus kiértékelése ezen a számítógépen: %1 µs (%2..%3)</translation>
     </message>
     <message>
         <location filename="../app/gui/simulation_debug.cpp" line="+96"/>
@@ -2441,7 +2467,7 @@ A FÁJL utasításlista (.il), létradiagram-szöveg (.ladder) vagy projekt (.ru
         <translation>amikor %1 %2 %3</translation>
     </message>
     <message>
-        <location filename="../app/gui/simulation_history.cpp" line="+64"/>
+        <location filename="../app/gui/simulation_history.cpp" line="+66"/>
         <source>History: rebuilding...</source>
         <translation>Előzmények: újraépítés...</translation>
     </message>
@@ -2456,16 +2482,16 @@ A FÁJL utasításlista (.il), létradiagram-szöveg (.ladder) vagy projekt (.ru
         <translation>Még nincsenek előzmények: futtassa a szimulációt</translation>
     </message>
     <message>
-        <location line="+2"/>
-        <source>Recorded: the last %1 of simulated time (scans %2..%3, %4 MB); at most the last hour is kept</source>
+        <location line="+4"/>
+        <source>Recorded: the last %1 of simulated time (scans %2..%3, %4 MB); at least the last hour is kept</source>
         <extracomment>%1 h:mm:ss of simulated time, %2 %3 first and last scan, %4 memory in MB</extracomment>
-        <translation>Rögzítve: a szimulált idő utolsó %1 része (%2..%3. ciklus, %4 MB); legfeljebb az utolsó óra marad meg</translation>
+        <translation>Rögzítve: a szimulált idő utolsó %1 része (%2..%3. ciklus, %4 MB); legalább az utolsó óra megmarad</translation>
     </message>
 </context>
 <context>
     <name>rung::app::SimulationPanel</name>
     <message>
-        <location filename="../app/gui/simulation_panel.cpp" line="+156"/>
+        <location filename="../app/gui/simulation_panel.cpp" line="+161"/>
         <source>Run</source>
         <translation>Futtatás</translation>
     </message>
@@ -2522,12 +2548,17 @@ A FÁJL utasításlista (.il), létradiagram-szöveg (.ladder) vagy projekt (.ru
         <translation> ms</translation>
     </message>
     <message>
-        <location line="+1"/>
-        <source>Power Cycle (retentive areas kept)</source>
-        <translation>Ki-bekapcsolás (a remanens területek megmaradnak)</translation>
+        <location line="+2"/>
+        <source>Power Cycle</source>
+        <translation>Ki-bekapcsolás</translation>
     </message>
     <message>
-        <location line="+1"/>
+        <location line="+2"/>
+        <source>Off and on again: the retentive areas keep their values, the rest starts as at power-on</source>
+        <translation>Ki- és újra bekapcsolás: a remanens területek megtartják értéküket, a többi a bekapcsoláskori állapotból indul</translation>
+    </message>
+    <message>
+        <location line="+2"/>
         <source>Statistics</source>
         <translation>Statisztika</translation>
     </message>
@@ -3531,7 +3562,7 @@ Kiértékelés: %4 µs (%5..%6)</translation>
         <translation>Szimbólumok szerkesztése</translation>
     </message>
     <message>
-        <location line="+147"/>
+        <location line="+148"/>
         <source>Untitled</source>
         <translation>Névtelen</translation>
     </message>
@@ -3591,8 +3622,8 @@ Kiértékelés: %4 µs (%5..%6)</translation>
 <context>
     <name>rung::editor::IlEditor</name>
     <message>
-        <location filename="../editor/il_editor.cpp" line="+273"/>
-        <location line="+375"/>
+        <location filename="../editor/il_editor.cpp" line="+274"/>
+        <location line="+391"/>
         <source>Instruction list</source>
         <translation>Utasításlista</translation>
     </message>
@@ -3600,7 +3631,7 @@ Kiértékelés: %4 µs (%5..%6)</translation>
 <context>
     <name>rung::editor::IlLexer</name>
     <message>
-        <location line="-581"/>
+        <location line="-597"/>
         <source>Default</source>
         <translation>Alapértelmezett</translation>
     </message>
@@ -3643,7 +3674,7 @@ Kiértékelés: %4 µs (%5..%6)</translation>
 <context>
     <name>rung::editor::IoPanel</name>
     <message>
-        <location filename="../editor/io_panel.cpp" line="+86"/>
+        <location filename="../editor/io_panel.cpp" line="+89"/>
         <source>Inputs are switches</source>
         <translation>A bemenetek kapcsolók</translation>
     </message>
@@ -3734,7 +3765,7 @@ Kiértékelés: %4 µs (%5..%6)</translation>
     <name>rung::editor::LadderView</name>
     <message>
         <location filename="../editor/ladder_view.cpp" line="+41"/>
-        <location line="+505"/>
+        <location line="+510"/>
         <source>Ladder diagram</source>
         <translation>Létradiagram</translation>
     </message>
@@ -3766,7 +3797,7 @@ Kiértékelés: %4 µs (%5..%6)</translation>
     </message>
     <message>
         <location line="+22"/>
-        <location filename="../editor/ladder_view_mouse.cpp" line="+156"/>
+        <location filename="../editor/ladder_view_mouse.cpp" line="+157"/>
         <source>Draw a wire</source>
         <translation>Vezeték rajzolása</translation>
     </message>
@@ -3841,7 +3872,7 @@ Kiértékelés: %4 µs (%5..%6)</translation>
         <translation>%1 nincs használatban a programban</translation>
     </message>
     <message>
-        <location filename="../editor/ladder_view_monitor.cpp" line="+240"/>
+        <location filename="../editor/ladder_view_monitor.cpp" line="+246"/>
         <source>current %1, set %2, %3</source>
         <extracomment>a timer&apos;s or counter&apos;s live state in a tooltip: current value, set value, done bit</extracomment>
         <translation>aktuális %1, beállított %2, %3</translation>
@@ -4001,7 +4032,7 @@ Kiértékelés: %4 µs (%5..%6)</translation>
         <translation>KI</translation>
     </message>
     <message>
-        <location filename="../editor/power_flow.cpp" line="+57"/>
+        <location filename="../editor/power_flow.cpp" line="+81"/>
         <source>%1/%2 ×%3 s</source>
         <extracomment>a timer&apos;s time elapsed / set value in its units, then the unit: &quot;23/50 ×0.1 s&quot;</extracomment>
         <translation>%1/%2 ×%3 s</translation>
@@ -4036,24 +4067,24 @@ Kiértékelés: %4 µs (%5..%6)</translation>
         <translation>Üzenet</translation>
     </message>
     <message>
-        <location line="+67"/>
+        <location line="+68"/>
         <location line="+47"/>
         <source>Problems</source>
         <translation>Problémák</translation>
     </message>
     <message>
-        <location line="-96"/>
+        <location line="-97"/>
         <source>Error</source>
         <translation>Hiba</translation>
     </message>
     <message>
         <location line="+1"/>
-        <location line="+67"/>
+        <location line="+68"/>
         <source>Warning</source>
         <translation>Figyelmeztetés</translation>
     </message>
     <message>
-        <location line="-66"/>
+        <location line="-67"/>
         <source>Note</source>
         <translation>Megjegyzés</translation>
     </message>
@@ -4064,12 +4095,12 @@ Kiértékelés: %4 µs (%5..%6)</translation>
     </message>
     <message>
         <location line="+3"/>
-        <location line="+52"/>
+        <location line="+53"/>
         <source>rung %1, row %2</source>
         <translation>%1. létrafok, %2. sor</translation>
     </message>
     <message>
-        <location line="-51"/>
+        <location line="-52"/>
         <source>rung %1</source>
         <translation>%1. létrafok</translation>
     </message>
@@ -4079,7 +4110,7 @@ Kiértékelés: %4 µs (%5..%6)</translation>
         <translation>%1 (javítás elérhető)</translation>
     </message>
     <message>
-        <location line="+85"/>
+        <location line="+86"/>
         <source>1 error</source>
         <translation>1 hiba</translation>
     </message>
@@ -4329,7 +4360,7 @@ Kiértékelés: %4 µs (%5..%6)</translation>
 <context>
     <name>rung::editor::WatchListView</name>
     <message>
-        <location filename="../editor/watch_list_view.cpp" line="+102"/>
+        <location filename="../editor/watch_list_view.cpp" line="+109"/>
         <source>Watch lists</source>
         <translation>Figyelőlisták</translation>
     </message>
@@ -4402,12 +4433,12 @@ Kiértékelés: %4 µs (%5..%6)</translation>
         <translation>Érték írása...</translation>
     </message>
     <message>
-        <location line="-190"/>
+        <location line="-187"/>
         <source>%1 of %2, %3</source>
         <translation>%1 / %2, %3</translation>
     </message>
     <message>
-        <location line="-105"/>
+        <location line="-108"/>
         <source>Device</source>
         <translation>Operandus</translation>
     </message>
@@ -4492,7 +4523,7 @@ Kiértékelés: %4 µs (%5..%6)</translation>
         <translation>Eltávolítás</translation>
     </message>
     <message>
-        <location line="+72"/>
+        <location line="+76"/>
         <source>Not added to the watch list: %1</source>
         <translation>Nem került a figyelőlistára: %1</translation>
     </message>

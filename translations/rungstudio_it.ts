@@ -42,7 +42,7 @@
 <context>
     <name>rung::app::BreakpointDialog</name>
     <message>
-        <location filename="../app/gui/breakpoint_dialog.cpp" line="+39"/>
+        <location filename="../app/gui/breakpoint_dialog.cpp" line="+41"/>
         <source>Breakpoint Condition</source>
         <translation>Condizione del punto di interruzione</translation>
     </message>
@@ -92,12 +92,12 @@
         <translation>&amp;Operando</translation>
     </message>
     <message>
-        <location line="+9"/>
+        <location line="+10"/>
         <source>&amp;Compare</source>
         <translation>&amp;Confronto</translation>
     </message>
     <message>
-        <location line="+37"/>
+        <location line="+40"/>
         <source>Type the device the condition watches</source>
         <translation>Scrivere l&apos;operando che la condizione osserva</translation>
     </message>
@@ -255,7 +255,7 @@ Codice di uscita: 0 nessun errore, 1 il programma contiene errori, 2 errore di u
 <context>
     <name>rung::app::ConnectionPanel</name>
     <message>
-        <location filename="../app/gui/connection_panel_link.cpp" line="+48"/>
+        <location filename="../app/gui/connection_panel_link.cpp" line="+49"/>
         <source>ON</source>
         <translation>ON</translation>
     </message>
@@ -295,12 +295,12 @@ Codice di uscita: 0 nessun errore, 1 il programma contiene errori, 2 errore di u
         <translation>Rilascia tutte le forzature</translation>
     </message>
     <message>
-        <location line="+26"/>
+        <location line="+27"/>
         <source>Cancelled: nothing was sent to the PLC</source>
         <translation>Annullato: nulla è stato inviato al PLC</translation>
     </message>
     <message>
-        <location filename="../app/gui/connection_panel.cpp" line="+248"/>
+        <location filename="../app/gui/connection_panel.cpp" line="+256"/>
         <source>Settings</source>
         <translation>Impostazioni</translation>
     </message>
@@ -400,7 +400,7 @@ Codice di uscita: 0 nessun errore, 1 il programma contiene errori, 2 errore di u
         <translation>Salva...</translation>
     </message>
     <message>
-        <location line="+22"/>
+        <location line="+23"/>
         <source>PLC: %1</source>
         <translation>PLC: %1</translation>
     </message>
@@ -439,17 +439,22 @@ This changes the memory of a real PLC, which may be driving a machine. You are a
 Questo modifica la memoria di un PLC reale, che potrebbe comandare una macchina. La domanda viene posta una volta per connessione; le modifiche successive partono subito.</translation>
     </message>
     <message>
-        <location line="+108"/>
+        <location line="+115"/>
         <source>Choose the serial port the PLC is on (or type its path)</source>
         <translation>Scegliere la porta seriale del PLC (o digitarne il percorso)</translation>
     </message>
     <message>
-        <location line="-65"/>
+        <location line="-69"/>
         <source>%1: done, the PLC acknowledged it</source>
         <translation>%1: fatto, il PLC ha confermato</translation>
     </message>
     <message>
-        <location line="+1"/>
+        <location line="-3"/>
+        <source>A command</source>
+        <translation>Un comando</translation>
+    </message>
+    <message>
+        <location line="+4"/>
         <source>%1: not done: %2</source>
         <translation>%1: non eseguito: %2</translation>
     </message>
@@ -459,12 +464,12 @@ Questo modifica la memoria di un PLC reale, che potrebbe comandare una macchina.
         <translation>Questi PLC non possono rimandare il loro programma, quindi l&apos;IDE non può sapere se il PLC esegue il programma mostrato qui. Confrontare leggendo gli operandi: osservarli nel ladder o nella tabella di osservazione.</translation>
     </message>
     <message>
-        <location line="+27"/>
+        <location line="+28"/>
         <source>Switch to %1</source>
         <translation>Passa a %1</translation>
     </message>
     <message>
-        <location line="+14"/>
+        <location line="+15"/>
         <source>The PLC runs its program: its outputs switch as the program says.</source>
         <translation>Il PLC esegue il suo programma: le uscite commutano come dice il programma.</translation>
     </message>
@@ -493,7 +498,7 @@ Questo modifica la memoria di un PLC reale, che potrebbe comandare una macchina.
 %3</translation>
     </message>
     <message>
-        <location line="+7"/>
+        <location line="+9"/>
         <source>Type the host name or IP address of the PLC or its gateway</source>
         <translation>Digitare il nome host o l&apos;indirizzo IP del PLC o del suo gateway</translation>
     </message>
@@ -508,12 +513,12 @@ Questo modifica la memoria di un PLC reale, che potrebbe comandare una macchina.
         <translation>Un test è in corso</translation>
     </message>
     <message>
-        <location line="+13"/>
+        <location line="+12"/>
         <source>Testing %1...</source>
         <translation>Test di %1...</translation>
     </message>
     <message>
-        <location line="+8"/>
+        <location line="+12"/>
         <source>The PLC answers (this protocol does not report the model)</source>
         <translation>Il PLC risponde (questo protocollo non riporta il modello)</translation>
     </message>
@@ -533,12 +538,12 @@ Questo modifica la memoria di un PLC reale, che potrebbe comandare una macchina.
         <translation>; modo %1</translation>
     </message>
     <message>
-        <location line="+2"/>
+        <location line="+1"/>
         <source>; round trip %1 ms</source>
         <translation>; tempo di andata e ritorno %1 ms</translation>
     </message>
     <message>
-        <location line="+4"/>
+        <location line="+6"/>
         <location line="+11"/>
         <source>No answer: %1</source>
         <translation>Nessuna risposta: %1</translation>
@@ -549,7 +554,7 @@ Questo modifica la memoria di un PLC reale, che potrebbe comandare una macchina.
         <translation>Nessuna risposta dal PLC</translation>
     </message>
     <message>
-        <location line="+26"/>
+        <location line="+40"/>
         <location line="+4"/>
         <source>Offline</source>
         <translation>Offline</translation>
@@ -570,12 +575,12 @@ Questo modifica la memoria di un PLC reale, che potrebbe comandare una macchina.
         <translation>Connessione a %1: %2</translation>
     </message>
     <message>
-        <location line="+2"/>
+        <location line="-23"/>
         <source>Online: %1</source>
         <translation>Online: %1</translation>
     </message>
     <message>
-        <location line="+11"/>
+        <location line="+28"/>
         <source>%1
 The values shown are the last read, marked stale.</source>
         <translation>%1
@@ -597,14 +602,14 @@ I valori mostrati sono gli ultimi letti, segnati come non aggiornati.</translati
         <translation>Connetti</translation>
     </message>
     <message>
-        <location line="+37"/>
+        <location line="+42"/>
         <source>Errors %1, retries %2, timeouts %3, refused %4, reconnects %5
 Round trip %6 ms (mean %7, max %8); refresh %9 ms, %10 frame(s)</source>
         <translation>Errori %1, tentativi %2, timeout %3, rifiutati %4, riconnessioni %5
 Andata e ritorno %6 ms (media %7, max %8); aggiornamento %9 ms, %10 frame</translation>
     </message>
     <message>
-        <location line="+31"/>
+        <location line="+65"/>
         <source>PC&gt;PLC</source>
         <extracomment>the direction of bytes in the traffic log: from the PC to the PLC, and back</extracomment>
         <translation>PC&gt;PLC</translation>
@@ -715,19 +720,19 @@ Andata e ritorno %6 ms (media %7, max %8); aggiornamento %9 ms, %10 frame</trans
 <context>
     <name>rung::app::MainWindow</name>
     <message>
-        <location filename="../app/gui/main_window.cpp" line="+177"/>
+        <location filename="../app/gui/main_window.cpp" line="+173"/>
         <source>Problems</source>
         <translation>Problemi</translation>
     </message>
     <message>
         <location line="+5"/>
-        <location line="+340"/>
+        <location line="+343"/>
         <source>Project</source>
         <translation>Progetto</translation>
     </message>
     <message>
-        <location line="-333"/>
-        <location line="+336"/>
+        <location line="-336"/>
+        <location line="+339"/>
         <source>Symbols</source>
         <translation>Simboli</translation>
     </message>
@@ -1025,7 +1030,7 @@ Editor di schemi ladder e liste istruzioni per %2.</translation>
     </message>
     <message>
         <location line="+0"/>
-        <location filename="../app/gui/main_window_tools.cpp" line="+224"/>
+        <location filename="../app/gui/main_window_tools.cpp" line="+222"/>
         <source>CSV files (*.csv)</source>
         <translation>File CSV (*.csv)</translation>
     </message>
@@ -1110,7 +1115,7 @@ Editor di schemi ladder e liste istruzioni per %2.</translation>
         <translation>Informazioni su Rung Studio</translation>
     </message>
     <message>
-        <location filename="../app/gui/main_window.cpp" line="-318"/>
+        <location filename="../app/gui/main_window.cpp" line="-321"/>
         <source>Rung Comment</source>
         <translation>Commento del segmento</translation>
     </message>
@@ -1121,23 +1126,23 @@ Editor di schemi ladder e liste istruzioni per %2.</translation>
     </message>
     <message>
         <location line="+22"/>
-        <location line="+300"/>
+        <location line="+303"/>
         <source>Ladder</source>
         <translation>Ladder</translation>
     </message>
     <message>
-        <location line="-299"/>
-        <location line="+300"/>
+        <location line="-302"/>
+        <location line="+303"/>
         <source>Instruction List</source>
         <translation>Lista istruzioni</translation>
     </message>
     <message>
-        <location line="-287"/>
+        <location line="-290"/>
         <source>The list as typed had errors and now shows the ladder&apos;s program; Ctrl+Z in the list brings it back</source>
         <translation>La lista digitata conteneva errori e ora mostra il programma dello schema ladder; Ctrl+Z nella lista la ripristina</translation>
     </message>
     <message>
-        <location line="+95"/>
+        <location line="+96"/>
         <source>The list as typed was taken first and changed rung %1, so the ladder edit was not made: make it again on the rung as it is now.</source>
         <translation>La lista digitata è stata applicata per prima e ha cambiato il segmento %1, quindi la modifica dello schema ladder non è stata fatta: ripeterla sul segmento com&apos;è ora.</translation>
     </message>
@@ -1261,7 +1266,7 @@ Editor di schemi ladder e liste istruzioni per %2.</translation>
     </message>
     <message>
         <location line="+33"/>
-        <location filename="../app/gui/main_window_online.cpp" line="+80"/>
+        <location filename="../app/gui/main_window_online.cpp" line="+82"/>
         <source>Cannot save</source>
         <translation>Impossibile salvare</translation>
     </message>
@@ -1349,7 +1354,7 @@ Editor di schemi ladder e liste istruzioni per %2.</translation>
         <location line="-4"/>
         <location line="+8"/>
         <location line="+10"/>
-        <location filename="../app/gui/main_window_panels.cpp" line="+58"/>
+        <location filename="../app/gui/main_window_panels.cpp" line="+54"/>
         <location filename="../app/gui/main_window_tools.cpp" line="+3"/>
         <source>Cannot export</source>
         <translation>Impossibile esportare</translation>
@@ -1370,12 +1375,12 @@ Editor di schemi ladder e liste istruzioni per %2.</translation>
         <translation>Esporta schema ladder</translation>
     </message>
     <message>
-        <location line="+65"/>
+        <location line="+66"/>
         <source>Cannot open the example</source>
         <translation>Impossibile aprire l&apos;esempio</translation>
     </message>
     <message>
-        <location filename="../app/gui/main_window_tools.cpp" line="-161"/>
+        <location filename="../app/gui/main_window_tools.cpp" line="-159"/>
         <source>Cut rungs</source>
         <translation>Taglia segmenti</translation>
     </message>
@@ -1453,7 +1458,7 @@ Editor di schemi ladder e liste istruzioni per %2.</translation>
         <translation>Sostituisci %1 con %2</translation>
     </message>
     <message>
-        <location line="+29"/>
+        <location line="+27"/>
         <source>(no device) %1</source>
         <translation>(nessun operando) %1</translation>
     </message>
@@ -1466,13 +1471,13 @@ Editor di schemi ladder e liste istruzioni per %2.</translation>
         </translation>
     </message>
     <message>
-        <location filename="../app/gui/main_window.cpp" line="+103"/>
-        <location filename="../app/gui/main_window_tools.cpp" line="-26"/>
+        <location filename="../app/gui/main_window.cpp" line="+105"/>
+        <location filename="../app/gui/main_window_tools.cpp" line="-24"/>
         <source>Cross Reference</source>
         <translation>Riferimenti incrociati</translation>
     </message>
     <message>
-        <location filename="../app/gui/main_window_tools.cpp" line="+25"/>
+        <location filename="../app/gui/main_window_tools.cpp" line="+23"/>
         <location line="+8"/>
         <source>Export Symbols</source>
         <translation>Esporta simboli</translation>
@@ -1518,7 +1523,7 @@ Editor di schemi ladder e liste istruzioni per %2.</translation>
         <translation>Esegui scansio&amp;ni...</translation>
     </message>
     <message>
-        <location line="+4"/>
+        <location line="+3"/>
         <source>Run Scans</source>
         <translation>Esegui scansioni</translation>
     </message>
@@ -1575,14 +1580,14 @@ Editor di schemi ladder e liste istruzioni per %2.</translation>
     </message>
     <message>
         <location filename="../app/gui/main_window_debug.cpp" line="+38"/>
-        <location line="+139"/>
+        <location line="+141"/>
         <location filename="../app/gui/main_window_monitor.cpp" line="+42"/>
         <source>Simulation</source>
         <translation>Simulazione</translation>
     </message>
     <message>
-        <location line="-127"/>
-        <location line="+129"/>
+        <location line="-133"/>
+        <location line="+135"/>
         <source>Scan Debugger</source>
         <translation>Debugger della scansione</translation>
     </message>
@@ -1698,12 +1703,17 @@ Editor di schemi ladder e liste istruzioni per %2.</translation>
         <translation>Lo schema ladder, la lista istruzioni e le liste di osservazione mostrano i valori di: %1</translation>
     </message>
     <message>
-        <location filename="../app/gui/main_window_panels.cpp" line="-3"/>
+        <location filename="../app/gui/main_window_panels.cpp" line="-8"/>
         <source>Export Timing Chart</source>
         <translation>Esporta diagramma temporale</translation>
     </message>
     <message>
-        <location line="+13"/>
+        <location line="+6"/>
+        <source>Timing chart exported to %1</source>
+        <translation>Diagramma temporale esportato in %1</translation>
+    </message>
+    <message>
+        <location line="+12"/>
         <source>Watch</source>
         <translation>Osservazione</translation>
     </message>
@@ -2091,7 +2101,7 @@ Codice di uscita di read e write: 0 fatto, 1 il PLC non ha risposto o ha rifiuta
         <translation>(vuoto)</translation>
     </message>
     <message>
-        <location line="+100"/>
+        <location line="+104"/>
         <source>Logic result:</source>
         <translation>Risultato logico:</translation>
     </message>
@@ -2192,7 +2202,7 @@ Codice di uscita di read e write: 0 fatto, 1 il PLC non ha risposto o ha rifiuta
         <translation>Dentro un passo (STL) non attivo</translation>
     </message>
     <message>
-        <location line="+15"/>
+        <location line="+19"/>
         <source>Rung %1 (no longer there)</source>
         <translation>Segmento %1 (non esiste più)</translation>
     </message>
@@ -2201,6 +2211,16 @@ Codice di uscita di read e write: 0 fatto, 1 il PLC non ha risposto o ha rifiuta
         <source>Rung %1, line %2: %3</source>
         <extracomment>%1 rung, %2 line, %3 the instruction</extracomment>
         <translation>Segmento %1, riga %2: %3</translation>
+    </message>
+    <message>
+        <location line="+23"/>
+        <source>No breakpoint is set: Ctrl+B sets one where the cursor is</source>
+        <translation>Nessun punto di interruzione: Ctrl+B ne imposta uno dove si trova il cursore</translation>
+    </message>
+    <message>
+        <location line="+1"/>
+        <source>Choose a breakpoint in the list first</source>
+        <translation>Scegliere prima un punto di interruzione nell&apos;elenco</translation>
     </message>
 </context>
 <context>
@@ -2410,10 +2430,16 @@ FILE è una lista istruzioni (.il), un testo ladder (.ladder) o un progetto (.ru
         <translation>Passo passo</translation>
     </message>
     <message>
-        <location line="+8"/>
-        <source>%1 | %2 | %3 scans | scan %4 ms | evaluation %5 µs (%6..%7)</source>
-        <extracomment>%1 run state, %2 simulated time h:mm:ss.cc, %3 scans, %4 scan period in ms, %5 %6 %7 time the last scan took to evaluate: current, minimum, maximum, in µs</extracomment>
-        <translation>%1 | %2 | %3 scansioni | scansione %4 ms | valutazione %5 µs (%6..%7)</translation>
+        <location line="+9"/>
+        <source>%1 | %2 | %3 scans | scan %4 ms</source>
+        <extracomment>%1 run state, %2 simulated time h:mm:ss.cc, %3 scans, %4 scan period in ms</extracomment>
+        <translation>%1 | %2 | %3 scansioni | scansione %4 ms</translation>
+    </message>
+    <message>
+        <location line="+10"/>
+        <source>Evaluation of a scan on this computer: %1 µs (%2..%3)</source>
+        <extracomment>the time the last scan took to evaluate on this computer: current, minimum, maximum</extracomment>
+        <translation>Valutazione di una scansione su questo computer: %1 µs (%2..%3)</translation>
     </message>
     <message>
         <location filename="../app/gui/simulation_debug.cpp" line="+96"/>
@@ -2447,7 +2473,7 @@ FILE è una lista istruzioni (.il), un testo ladder (.ladder) o un progetto (.ru
         <translation>quando %1 %2 %3</translation>
     </message>
     <message>
-        <location filename="../app/gui/simulation_history.cpp" line="+64"/>
+        <location filename="../app/gui/simulation_history.cpp" line="+66"/>
         <source>History: rebuilding...</source>
         <translation>Cronologia: ricostruzione...</translation>
     </message>
@@ -2462,16 +2488,16 @@ FILE è una lista istruzioni (.il), un testo ladder (.ladder) o un progetto (.ru
         <translation>Ancora nessuna cronologia: eseguire la simulazione</translation>
     </message>
     <message>
-        <location line="+2"/>
-        <source>Recorded: the last %1 of simulated time (scans %2..%3, %4 MB); at most the last hour is kept</source>
+        <location line="+4"/>
+        <source>Recorded: the last %1 of simulated time (scans %2..%3, %4 MB); at least the last hour is kept</source>
         <extracomment>%1 h:mm:ss of simulated time, %2 %3 first and last scan, %4 memory in MB</extracomment>
-        <translation>Registrato: gli ultimi %1 di tempo simulato (scansioni %2..%3, %4 MB); si conserva al più l&apos;ultima ora</translation>
+        <translation>Registrato: gli ultimi %1 di tempo simulato (scansioni %2..%3, %4 MB); si conserva almeno l&apos;ultima ora</translation>
     </message>
 </context>
 <context>
     <name>rung::app::SimulationPanel</name>
     <message>
-        <location filename="../app/gui/simulation_panel.cpp" line="+156"/>
+        <location filename="../app/gui/simulation_panel.cpp" line="+161"/>
         <source>Run</source>
         <translation>Esecuzione</translation>
     </message>
@@ -2528,12 +2554,17 @@ FILE è una lista istruzioni (.il), un testo ladder (.ladder) o un progetto (.ru
         <translation> ms</translation>
     </message>
     <message>
-        <location line="+1"/>
-        <source>Power Cycle (retentive areas kept)</source>
-        <translation>Spegni e riaccendi (le aree ritentive restano)</translation>
+        <location line="+2"/>
+        <source>Power Cycle</source>
+        <translation>Spegni e riaccendi</translation>
     </message>
     <message>
-        <location line="+1"/>
+        <location line="+2"/>
+        <source>Off and on again: the retentive areas keep their values, the rest starts as at power-on</source>
+        <translation>Spegnere e riaccendere: le aree ritentive conservano i valori, il resto riparte come all&apos;accensione</translation>
+    </message>
+    <message>
+        <location line="+2"/>
         <source>Statistics</source>
         <translation>Statistiche</translation>
     </message>
@@ -3537,7 +3568,7 @@ Valutazione: %4 µs (%5..%6)</translation>
         <translation>Modifica simboli</translation>
     </message>
     <message>
-        <location line="+147"/>
+        <location line="+148"/>
         <source>Untitled</source>
         <translation>Senza titolo</translation>
     </message>
@@ -3598,8 +3629,8 @@ Valutazione: %4 µs (%5..%6)</translation>
 <context>
     <name>rung::editor::IlEditor</name>
     <message>
-        <location filename="../editor/il_editor.cpp" line="+273"/>
-        <location line="+375"/>
+        <location filename="../editor/il_editor.cpp" line="+274"/>
+        <location line="+391"/>
         <source>Instruction list</source>
         <translation>Lista istruzioni</translation>
     </message>
@@ -3607,7 +3638,7 @@ Valutazione: %4 µs (%5..%6)</translation>
 <context>
     <name>rung::editor::IlLexer</name>
     <message>
-        <location line="-581"/>
+        <location line="-597"/>
         <source>Default</source>
         <translation>Predefinito</translation>
     </message>
@@ -3650,7 +3681,7 @@ Valutazione: %4 µs (%5..%6)</translation>
 <context>
     <name>rung::editor::IoPanel</name>
     <message>
-        <location filename="../editor/io_panel.cpp" line="+86"/>
+        <location filename="../editor/io_panel.cpp" line="+89"/>
         <source>Inputs are switches</source>
         <translation>Ingressi come interruttori</translation>
     </message>
@@ -3741,7 +3772,7 @@ Valutazione: %4 µs (%5..%6)</translation>
     <name>rung::editor::LadderView</name>
     <message>
         <location filename="../editor/ladder_view.cpp" line="+41"/>
-        <location line="+505"/>
+        <location line="+510"/>
         <source>Ladder diagram</source>
         <translation>Schema ladder</translation>
     </message>
@@ -3773,7 +3804,7 @@ Valutazione: %4 µs (%5..%6)</translation>
     </message>
     <message>
         <location line="+22"/>
-        <location filename="../editor/ladder_view_mouse.cpp" line="+156"/>
+        <location filename="../editor/ladder_view_mouse.cpp" line="+157"/>
         <source>Draw a wire</source>
         <translation>Disegna collegamento orizzontale</translation>
     </message>
@@ -3848,7 +3879,7 @@ Valutazione: %4 µs (%5..%6)</translation>
         <translation>%1 non è usato nel programma</translation>
     </message>
     <message>
-        <location filename="../editor/ladder_view_monitor.cpp" line="+240"/>
+        <location filename="../editor/ladder_view_monitor.cpp" line="+246"/>
         <source>current %1, set %2, %3</source>
         <extracomment>a timer&apos;s or counter&apos;s live state in a tooltip: current value, set value, done bit</extracomment>
         <translation>corrente %1, preset %2, %3</translation>
@@ -4008,7 +4039,7 @@ Valutazione: %4 µs (%5..%6)</translation>
         <translation>OFF</translation>
     </message>
     <message>
-        <location filename="../editor/power_flow.cpp" line="+57"/>
+        <location filename="../editor/power_flow.cpp" line="+81"/>
         <source>%1/%2 ×%3 s</source>
         <extracomment>a timer&apos;s time elapsed / set value in its units, then the unit: &quot;23/50 ×0.1 s&quot;</extracomment>
         <translation>%1/%2 ×%3 s</translation>
@@ -4043,24 +4074,24 @@ Valutazione: %4 µs (%5..%6)</translation>
         <translation>Messaggio</translation>
     </message>
     <message>
-        <location line="+67"/>
+        <location line="+68"/>
         <location line="+47"/>
         <source>Problems</source>
         <translation>Problemi</translation>
     </message>
     <message>
-        <location line="-96"/>
+        <location line="-97"/>
         <source>Error</source>
         <translation>Errore</translation>
     </message>
     <message>
         <location line="+1"/>
-        <location line="+67"/>
+        <location line="+68"/>
         <source>Warning</source>
         <translation>Avviso</translation>
     </message>
     <message>
-        <location line="-66"/>
+        <location line="-67"/>
         <source>Note</source>
         <translation>Nota</translation>
     </message>
@@ -4071,12 +4102,12 @@ Valutazione: %4 µs (%5..%6)</translation>
     </message>
     <message>
         <location line="+3"/>
-        <location line="+52"/>
+        <location line="+53"/>
         <source>rung %1, row %2</source>
         <translation>segmento %1, riga %2</translation>
     </message>
     <message>
-        <location line="-51"/>
+        <location line="-52"/>
         <source>rung %1</source>
         <translation>segmento %1</translation>
     </message>
@@ -4086,7 +4117,7 @@ Valutazione: %4 µs (%5..%6)</translation>
         <translation>%1 (correzione disponibile)</translation>
     </message>
     <message>
-        <location line="+85"/>
+        <location line="+86"/>
         <source>1 error</source>
         <translation>1 errore</translation>
     </message>
@@ -4337,7 +4368,7 @@ Valutazione: %4 µs (%5..%6)</translation>
 <context>
     <name>rung::editor::WatchListView</name>
     <message>
-        <location filename="../editor/watch_list_view.cpp" line="+102"/>
+        <location filename="../editor/watch_list_view.cpp" line="+109"/>
         <source>Watch lists</source>
         <translation>Liste di osservazione</translation>
     </message>
@@ -4410,12 +4441,12 @@ Valutazione: %4 µs (%5..%6)</translation>
         <translation>Scrivi valore...</translation>
     </message>
     <message>
-        <location line="-190"/>
+        <location line="-187"/>
         <source>%1 of %2, %3</source>
         <translation>%1 di %2, %3</translation>
     </message>
     <message>
-        <location line="-105"/>
+        <location line="-108"/>
         <source>Device</source>
         <translation>Operando</translation>
     </message>
@@ -4500,7 +4531,7 @@ Valutazione: %4 µs (%5..%6)</translation>
         <translation>Rimuovi</translation>
     </message>
     <message>
-        <location line="+72"/>
+        <location line="+76"/>
         <source>Not added to the watch list: %1</source>
         <translation>Non aggiunto alla lista di osservazione: %1</translation>
     </message>

@@ -1,5 +1,7 @@
 #include "breakpoint_dialog.h"
 
+#include "dialogs.h"
+
 #include "model/target/address.h"
 #include "model/target/target_lists.h"
 
@@ -63,7 +65,10 @@ BreakpointDialog::BreakpointDialog(const model::Target &target, const QString &p
     auto *compare = new QHBoxLayout;
     compare->addWidget(m_op);
     compare->addWidget(m_value, 1);
-    form->addRow(tr("&Compare"), compare);
+    // A row of a layout gets no buddy from the form: its "&Compare" would show the '&'.
+    auto *compareLabel = new QLabel(tr("&Compare"));
+    compareLabel->setBuddy(m_op);
+    form->addRow(compareLabel, compare);
     layout->addLayout(form);
     m_problem = new QLabel;
     m_problem->setObjectName(QStringLiteral("breakpointProblem"));
@@ -83,6 +88,7 @@ BreakpointDialog::BreakpointDialog(const model::Target &target, const QString &p
     connect(m_kind, &QComboBox::currentIndexChanged, this, &BreakpointDialog::validate);
     connect(m_device, &QLineEdit::textChanged, this, &BreakpointDialog::validate);
     validate();
+    fitTitle(this);
 }
 
 QString BreakpointDialog::problem() const {

@@ -5,10 +5,12 @@
 #include "connection_panel.h"
 
 #include "dialogs.h"
+#include "wheel_guard.h"
 
 #include "comms/driver/connection.h"
 #include "comms/driver/protocol_driver.h"
 #include "comms/transport/serial_transport.h"
+#include "editor/terminal_widgets.h"
 #include "model/target/protocol_map.h"
 #include "model/target/target.h"
 
@@ -53,6 +55,7 @@ ConnectionPanel::ConnectionPanel(QWidget *parent)
     : QWidget(parent) {
     setObjectName(QStringLiteral("connectionPanel"));
     build();
+    guardWheel(this); // scrolling the dock never changes a setting (issue 31)
     retranslate();
     refreshPorts();
     updateState();
@@ -174,7 +177,10 @@ void ConnectionPanel::build() {
     form->addRow(m_retriesLabel, m_retries);
     layout->addWidget(m_settingsBox);
 
-    auto *buttons = new QHBoxLayout;
+    // The buttons wrap in a column beside the ladder (dock_layout.h) rather than make the
+    // panel wider than it: past its width the panel scrolls and its texts were cut.
+    auto *buttonRow = new QWidget;
+    auto *buttons = new editor::FlowLayout(buttonRow);
     m_testButton = new QPushButton;
     m_testButton->setObjectName(QStringLiteral("connectionTest"));
     m_connect = new QPushButton;
@@ -182,7 +188,7 @@ void ConnectionPanel::build() {
     m_connect->setDefault(true);
     buttons->addWidget(m_testButton);
     buttons->addWidget(m_connect);
-    layout->addLayout(buttons);
+    layout->addWidget(buttonRow);
 
     const auto label = [layout](const char *name) {
         auto *l = new QLabel;
@@ -194,6 +200,12 @@ void ConnectionPanel::build() {
     };
     m_state = label("connectionState");
     m_state->setStyleSheet(QStringLiteral("QLabel { font-weight: bold; }"));
+    m_warning = label("connectionWarning");
+    // A warning looks like one: dark amber on pale amber, a sign before it, not bold.
+    m_warning->setStyleSheet(
+        QStringLiteral("QLabel { color: #5d4000; background: #fff1c4; border: 1px solid #e0b000; "
+                       "padding: 2px 4px; }"));
+    m_warning->hide();
     m_testResult = label("connectionTestResult");
     m_notice = label("connectionNotice");
     m_statistics = label("connectionStatistics");
@@ -201,7 +213,8 @@ void ConnectionPanel::build() {
 
     m_trafficBox = new QGroupBox;
     auto *trafficLayout = new QVBoxLayout(m_trafficBox);
-    auto *trafficButtons = new QHBoxLayout;
+    auto *trafficRow = new QWidget;
+    auto *trafficButtons = new editor::FlowLayout(trafficRow);
     m_record = new QCheckBox;
     m_record->setObjectName(QStringLiteral("connectionRecordTraffic"));
     m_record->setChecked(true);
@@ -210,10 +223,9 @@ void ConnectionPanel::build() {
     m_save = new QPushButton;
     m_save->setObjectName(QStringLiteral("connectionSaveTraffic"));
     trafficButtons->addWidget(m_record);
-    trafficButtons->addStretch();
     trafficButtons->addWidget(m_clear);
     trafficButtons->addWidget(m_save);
-    trafficLayout->addLayout(trafficButtons);
+    trafficLayout->addWidget(trafficRow);
     m_traffic = new QPlainTextEdit;
     m_traffic->setObjectName(QStringLiteral("connectionTraffic"));
     m_traffic->setReadOnly(true);
@@ -272,6 +284,7 @@ void ConnectionPanel::retranslate() {
                                 comms::protocolName(ProtocolKind(m_protocol->itemData(i).toInt())));
     if (m_target)
         setTarget(*m_target, m_modelName); // the texts that name the target
+    retranslateResults();
     updateState();
 }
 

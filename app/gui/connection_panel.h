@@ -82,6 +82,9 @@ public:
 
     // "Online: Vigor station 0 on /dev/pts/3", "Link lost: ...", as the panel shows it.
     QString stateText() const;
+    // Online: what the PLC cannot answer ("TR 0 has no address in ..."), shown apart from the
+    // state as a warning; empty otherwise.
+    QString warningText() const;
     QString statisticsText() const;
     QString lastCommandText() const;
     QPlainTextEdit *trafficLog() const { return m_traffic; }
@@ -89,6 +92,9 @@ public:
     bool saveTraffic(const QString &path, QString *error) const;
     // Serial ports again (Refresh).
     void refreshPorts();
+    // Another project: what the panel said of the last test, command and connection is not
+    // this project's (offline; online the panel keeps speaking of the PLC it is connected to).
+    void forgetResults();
 
 signals:
     void sessionChanged(rung::comms::OnlineSession *session); // null: offline again
@@ -105,9 +111,16 @@ private:
     void fillProtocols();
     void protocolChosen();
     void updateState();
+    QString onlineText() const; // "Online: Vigor station 0 on /dev/pts/3, RUN (VB-14)"
     void updateStatistics();
     void pullTraffic();
-    void finishTest(bool ok, const QString &text);
+    // A text the panel shows, made again in the language installed on a language change.
+    using Text = std::function<QString()>;
+    void finishTest(bool ok, const Text &text);
+    void setTestResult(Text text, const QString &colour);
+    void setCommandResult(Text text, bool ok);
+    void setNotice(Text text);
+    void retranslateResults();
     // No port chosen: says so in the panel as well as the status bar, and puts the cursor in
     // the port's field; false.
     bool askForPort();
@@ -125,7 +138,11 @@ private:
     Confirmer m_confirmer;
     std::function<bool()> m_guard;
     quint64 m_trafficNext = 0;
-    QString m_lastCommand;
+    Text m_testText;
+    QString m_testColour;
+    Text m_commandText;
+    bool m_commandOk = true;
+    Text m_noticeText;
 
     QLabel *m_targetLabel = nullptr;
     QLabel *m_vpcNote = nullptr;
@@ -156,6 +173,7 @@ private:
     QPushButton *m_testButton = nullptr;
     QPushButton *m_connect = nullptr;
     QLabel *m_state = nullptr;
+    QLabel *m_warning = nullptr;
     QLabel *m_testResult = nullptr;
     QLabel *m_statistics = nullptr;
     QLabel *m_command = nullptr;

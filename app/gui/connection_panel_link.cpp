@@ -30,6 +30,7 @@ namespace {
 using comms::ConnectionSettings;
 using comms::ProtocolKind;
 using State = comms::OnlineSession::ConnectionState;
+using Text = std::function<QString()>; // as ConnectionPanel::Text
 
 // The colours of a state, a test's result and a command's answer (with their words, never
 // alone).
@@ -73,14 +74,15 @@ public:
         : OnlineSession(target, std::move(settings))
         , m_ask(std::move(ask)) {}
 
-    // The command's words, once: taken when its answer is shown.
-    QString takeWhat(CommandId id) { return m_what.take(id); }
-    void remember(CommandId id, const QString &what) { m_what.insert(id, what); }
+    // The command's words, once: taken when its answer is shown (made again in the language
+    // installed whenever the panel's texts are).
+    Text takeWhat(CommandId id) { return m_what.take(id); }
+    void remember(CommandId id, Text what) { m_what.insert(id, std::move(what)); }
 
 protected:
     void startCommand(CommandId id, const model::DeviceCommand &command) override {
         const QString text = describe(target(), command);
-        m_what.insert(id, text);
+        m_what.insert(id, [t = &target(), command] { return describe(*t, command); });
         if (!m_confirmed) {
             if (!m_ask || !m_ask(text)) {
                 finishCommand(id, false,
@@ -95,7 +97,7 @@ protected:
 private:
     Ask m_ask;
     bool m_confirmed = false;
-    QHash<CommandId, QString> m_what;
+    QHash<CommandId, Text> m_what;
 };
 
 } // namespace
@@ -132,9 +134,8 @@ bool ConnectionPanel::connectToPlc() {
     m_session = makeSession();
     m_session->setTrafficTap(m_record->isChecked());
     m_trafficNext = 0;
-    m_testResult->clear();
-    m_lastCommand.clear();
-    m_command->clear();
+    setTestResult({}, QString());
+    setCommandResult({}, true);
     comms::OnlineSession *session = m_session.get();
     connect(session, &comms::OnlineSession::connectionStateChanged, this,
             &ConnectionPanel::updateState);
@@ -145,21 +146,26 @@ bool ConnectionPanel::connectToPlc() {
             &ConnectionPanel::updateStatistics);
     connect(session, &comms::OnlineSession::trafficAvailable, this, &ConnectionPanel::pullTraffic);
     connect(session, &comms::OnlineSession::notice, this, [this](const QString &text) {
-        m_notice->setText(text);
+        setNotice([text] { return text; }); // the session's words, as it said them
         emit message(text);
     });
     connect(session, &model::MonitorSource::commandFinished, this,
             [this, session](model::MonitorSource::CommandId id, bool ok, const QString &error) {
-                const QString what = static_cast<ConfirmingSession *>(session)->takeWhat(id);
-                m_lastCommand = ok ? tr("%1: done, the PLC acknowledged it").arg(what)
-                                   : tr("%1: not done: %2").arg(what, error);
-                m_command->setText(m_lastCommand);
-                m_command->setStyleSheet(ok ? QString() : colourSheet(kBad));
+                Text what = static_cast<ConfirmingSession *>(session)->takeWhat(id);
+                if (!what)
+                    what = [] { return tr("A command"); };
+                setCommandResult(
+                    [what, ok, error] {
+                        return ok ? tr("%1: done, the PLC acknowledged it").arg(what())
+                                  : tr("%1: not done: %2").arg(what(), error);
+                    },
+                    ok);
             });
-    m_notice->setText(
-        tr("These PLCs cannot send their program back, so the IDE cannot know whether the PLC "
-           "runs the program shown here. Compare by reading devices: watch them in the ladder "
-           "or the watch table."));
+    setNotice([] {
+        return tr("These PLCs cannot send their program back, so the IDE cannot know whether "
+                  "the PLC runs the program shown here. Compare by reading devices: watch them "
+                  "in the ladder or the watch table.");
+    });
     m_session->connectToPlc();
     updateState();
     emit sessionChanged(session);
@@ -175,7 +181,7 @@ void ConnectionPanel::disconnectFromPlc() {
     emit sessionChanged(nullptr);
     old->disconnectFromPlc();
     old.reset();
-    m_notice->clear();
+    setNotice({});
     updateState();
 }
 
@@ -183,8 +189,9 @@ model::MonitorSource::CommandId ConnectionPanel::setPlcMode(comms::PlcMode mode)
     if (!m_session)
         return 0;
     const model::MonitorSource::CommandId id = m_session->setPlcMode(mode);
-    static_cast<ConfirmingSession *>(m_session.get())
-        ->remember(id, tr("Switch to %1").arg(comms::modeName(mode)));
+    static_cast<ConfirmingSession *>(m_session.get())->remember(id, [mode] {
+        return tr("Switch to %1").arg(comms::modeName(mode));
+    });
     return id;
 }
 
@@ -214,12 +221,14 @@ bool ConnectionPanel::requestPlcMode(comms::PlcMode mode) {
 }
 
 bool ConnectionPanel::askForPort() {
-    const QString text = m_viaTcp->isChecked()
-                             ? tr("Type the host name or IP address of the PLC or its gateway")
-                             : tr("Choose the serial port the PLC is on (or type its path)");
-    m_testResult->setStyleSheet(colourSheet(kBad));
-    m_testResult->setText(text);
-    emit message(text);
+    const bool tcp = m_viaTcp->isChecked();
+    setTestResult(
+        [tcp] {
+            return tcp ? tr("Type the host name or IP address of the PLC or its gateway")
+                       : tr("Choose the serial port the PLC is on (or type its path)");
+        },
+        kBad);
+    emit message(m_testResult->text());
     QWidget *field = m_viaTcp->isChecked() ? static_cast<QWidget *>(m_host) : m_port;
     field->setFocus(Qt::OtherFocusReason);
     return false;
@@ -240,27 +249,31 @@ bool ConnectionPanel::testConnection() {
         return askForPort();
     remember();
     m_test = std::make_unique<comms::OnlineSession>(*m_target, s);
-    m_testResult->setStyleSheet(QString());
-    m_testResult->setText(tr("Testing %1...").arg(s.where()));
+    setTestResult([where = s.where()] { return tr("Testing %1...").arg(where); }, QString());
     comms::OnlineSession *test = m_test.get();
     connect(test, &comms::OnlineSession::connectionStateChanged, this, [this, test](State state) {
         if (m_test.get() != test)
             return; // the test is over; the session is on its way out
         if (state == State::Online) {
             const comms::PlcIdentity id = test->identity();
-            QString found = id.model.isEmpty()
-                                ? tr("The PLC answers (this protocol does not report the model)")
-                                : tr("The PLC answers: %1").arg(id.model);
-            if (!id.version.isEmpty())
-                found += tr(", version %1").arg(id.version);
-            if (test->plcMode() != comms::PlcMode::Unknown)
-                found += tr("; mode %1").arg(comms::modeName(test->plcMode()));
-            const comms::LinkStatistics st = test->statistics();
-            found += tr("; round trip %1 ms").arg(st.lastRoundTripMs, 0, 'f', 1);
-            finishTest(true, found + QLatin1Char('.'));
+            const comms::PlcMode mode = test->plcMode();
+            const double roundTrip = test->statistics().lastRoundTripMs;
+            finishTest(true, [id, mode, roundTrip] {
+                QString found =
+                    id.model.isEmpty()
+                        ? tr("The PLC answers (this protocol does not report the model)")
+                        : tr("The PLC answers: %1").arg(id.model);
+                if (!id.version.isEmpty())
+                    found += tr(", version %1").arg(id.version);
+                if (mode != comms::PlcMode::Unknown)
+                    found += tr("; mode %1").arg(comms::modeName(mode));
+                found += tr("; round trip %1 ms").arg(roundTrip, 0, 'f', 1);
+                return found + QLatin1Char('.');
+            });
         } else if (state == State::Lost || state == State::Failed ||
                    (state == State::Connecting && !test->errorText().isEmpty())) {
-            finishTest(false, tr("No answer: %1").arg(test->errorText()));
+            finishTest(false,
+                       [error = test->errorText()] { return tr("No answer: %1").arg(error); });
         }
     });
     // A silent line: the session keeps trying; the test gives up after every retry's time.
@@ -269,9 +282,10 @@ bool ConnectionPanel::testConnection() {
         m_testDeadline->setSingleShot(true);
         connect(m_testDeadline, &QTimer::timeout, this, [this] {
             if (m_test)
-                finishTest(false, m_test->errorText().isEmpty()
-                                      ? tr("No answer from the PLC")
-                                      : tr("No answer: %1").arg(m_test->errorText()));
+                finishTest(false, [error = m_test->errorText()] {
+                    return error.isEmpty() ? tr("No answer from the PLC")
+                                           : tr("No answer: %1").arg(error);
+                });
         });
     }
     m_testDeadline->start(s.link.timeoutMs * (s.link.retries + 1) + 1000);
@@ -280,7 +294,7 @@ bool ConnectionPanel::testConnection() {
     return true;
 }
 
-void ConnectionPanel::finishTest(bool ok, const QString &text) {
+void ConnectionPanel::finishTest(bool ok, const Text &text) {
     if (m_testDeadline)
         m_testDeadline->stop();
     // Not inside the test session's own signal: it goes on the next turn of the loop.
@@ -288,10 +302,23 @@ void ConnectionPanel::finishTest(bool ok, const QString &text) {
         m_test->disconnectFromPlc();
         m_test.release()->deleteLater();
     }
-    m_testResult->setText(text);
-    m_testResult->setStyleSheet(colourSheet(ok ? kGood : kBad));
+    setTestResult(text, ok ? kGood : kBad);
     updateState();
-    emit testFinished(ok, text);
+    emit testFinished(ok, m_testResult->text());
+}
+
+QString ConnectionPanel::onlineText() const {
+    QString text = tr("Online: %1").arg(m_session->plcName());
+    if (m_session->plcMode() != comms::PlcMode::Unknown)
+        text += QStringLiteral(", ") + comms::modeName(m_session->plcMode());
+    if (!m_session->identity().model.isEmpty())
+        text += QStringLiteral(" (%1)").arg(m_session->identity().model);
+    return text;
+}
+
+QString ConnectionPanel::warningText() const {
+    return m_session && m_session->connectionState() == State::Online ? m_session->errorText()
+                                                                      : QString();
 }
 
 QString ConnectionPanel::stateText() const {
@@ -305,16 +332,8 @@ QString ConnectionPanel::stateText() const {
         return error.isEmpty()
                    ? tr("Connecting to %1...").arg(m_session->settings().where())
                    : tr("Connecting to %1: %2").arg(m_session->settings().where(), error);
-    case State::Online: {
-        QString text = tr("Online: %1").arg(m_session->plcName());
-        if (m_session->plcMode() != comms::PlcMode::Unknown)
-            text += QStringLiteral(", ") + comms::modeName(m_session->plcMode());
-        if (!m_session->identity().model.isEmpty())
-            text += QStringLiteral(" (%1)").arg(m_session->identity().model);
-        if (!error.isEmpty())
-            text += QLatin1Char('\n') + error;
-        return text;
-    }
+    case State::Online:
+        return error.isEmpty() ? onlineText() : onlineText() + QLatin1Char('\n') + error;
     case State::Lost:
         // The session's text says "lost", the PLC, the cause and that it tries again.
         return tr("%1\nThe values shown are the last read, marked stale.").arg(error);
@@ -335,7 +354,12 @@ void ConnectionPanel::updateState() {
     // Online the settings cannot change: the state names the port and the PLC, and the room
     // goes to the figures and the traffic.
     m_settingsBox->setVisible(!online);
-    m_state->setText(stateText());
+    // Online, what the PLC cannot answer (a device with no address in the protocol) is a
+    // warning of its own, never in the green of the state above it.
+    const QString warning = warningText();
+    m_state->setText(warning.isEmpty() ? stateText() : onlineText());
+    m_warning->setText(warning.isEmpty() ? QString() : QStringLiteral("\u26A0 ") + warning);
+    m_warning->setVisible(!warning.isEmpty());
     QString colour;
     if (m_session) {
         switch (m_session->connectionState()) {
@@ -382,7 +406,41 @@ void ConnectionPanel::updateStatistics() {
 }
 
 QString ConnectionPanel::lastCommandText() const {
-    return m_lastCommand;
+    return m_command->text();
+}
+
+void ConnectionPanel::setTestResult(Text text, const QString &colour) {
+    m_testText = std::move(text);
+    m_testColour = colour;
+    m_testResult->setText(m_testText ? m_testText() : QString());
+    m_testResult->setStyleSheet(colour.isEmpty() ? QString() : colourSheet(colour));
+}
+
+void ConnectionPanel::setCommandResult(Text text, bool ok) {
+    m_commandText = std::move(text);
+    m_commandOk = ok;
+    m_command->setText(m_commandText ? m_commandText() : QString());
+    m_command->setStyleSheet(ok ? QString() : colourSheet(kBad));
+}
+
+void ConnectionPanel::setNotice(Text text) {
+    m_noticeText = std::move(text);
+    m_notice->setText(m_noticeText ? m_noticeText() : QString());
+}
+
+void ConnectionPanel::retranslateResults() {
+    setTestResult(m_testText, m_testColour);
+    setCommandResult(m_commandText, m_commandOk);
+    setNotice(m_noticeText);
+}
+
+void ConnectionPanel::forgetResults() {
+    // Offline only: online, the panel speaks of the PLC the IDE is still connected to.
+    if (m_session)
+        return;
+    setTestResult({}, QString());
+    setCommandResult({}, true);
+    setNotice({}); // the traffic log stays: it is a record the user may still save
 }
 
 void ConnectionPanel::pullTraffic() {

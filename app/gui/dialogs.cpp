@@ -72,6 +72,39 @@ QString askMultiLineText(QWidget *parent, const QString &title, const QString &l
     return accepted ? dialog.textValue() : QString();
 }
 
+int askInt(QWidget *parent, const QString &title, const QString &label, int value, int min, int max,
+           bool *ok) {
+    QInputDialog dialog(parent);
+    dialog.setWindowTitle(title);
+    dialog.setLabelText(label);
+    dialog.setInputMode(QInputDialog::IntInput);
+    dialog.setIntRange(min, max);
+    dialog.setIntValue(value);
+    dialog.minimumSizeHint(); // its layout, as above
+    fitTitle(&dialog);
+    const bool accepted = dialog.exec() == QDialog::Accepted;
+    if (ok)
+        *ok = accepted;
+    return accepted ? dialog.intValue() : value;
+}
+
+double askDouble(QWidget *parent, const QString &title, const QString &label, double value,
+                 double min, double max, int decimals, bool *ok) {
+    QInputDialog dialog(parent);
+    dialog.setWindowTitle(title);
+    dialog.setLabelText(label);
+    dialog.setInputMode(QInputDialog::DoubleInput);
+    dialog.setDoubleDecimals(decimals);
+    dialog.setDoubleRange(min, max);
+    dialog.setDoubleValue(value);
+    dialog.minimumSizeHint(); // its layout, as above
+    fitTitle(&dialog);
+    const bool accepted = dialog.exec() == QDialog::Accepted;
+    if (ok)
+        *ok = accepted;
+    return accepted ? dialog.doubleValue() : value;
+}
+
 QMessageBox::StandardButton messageBox(QMessageBox::Icon icon, QWidget *parent,
                                        const QString &title, const QString &text,
                                        QMessageBox::StandardButtons buttons) {

@@ -26,6 +26,13 @@ QString askText(QWidget *parent, const QString &title, const QString &label, con
 QString askMultiLineText(QWidget *parent, const QString &title, const QString &label,
                          const QString &text, bool *ok);
 
+// QInputDialog::getInt / getDouble with the title fitted: the field alone made "Run Scans"
+// read "Ciklus…tatása" and "Esegui… nsioni" in a title bar.
+int askInt(QWidget *parent, const QString &title, const QString &label, int value, int min, int max,
+           bool *ok);
+double askDouble(QWidget *parent, const QString &title, const QString &label, double value,
+                 double min, double max, int decimals, bool *ok);
+
 // QMessageBox's static functions with the title fitted.
 // No buttons given: Yes and No for a question, else OK.
 QMessageBox::StandardButton

@@ -1,8 +1,10 @@
 #include "main_window.h"
 
 #include "dialogs.h"
+#include "dock_layout.h"
 #include "eliding_label.h"
 #include "recovery.h"
+#include "status_bar.h"
 #include "symbol_table.h"
 
 #include "editor/il_editor.h"
@@ -52,6 +54,7 @@ MainWindow::MainWindow(QWidget *parent)
     layout->addWidget(m_tabs);
     layout->addWidget(m_split);
     setCentralWidget(central);
+    setStatusBar(new StatusBar); // a long message ends in "…" before the fields
 
     m_statusTarget = new QLabel;
     m_statusSteps = new QLabel;
@@ -65,11 +68,10 @@ MainWindow::MainWindow(QWidget *parent)
     buildMonitorDocks(); // main_window_panels.cpp
     setupSimulation();
     setupOnline(); // main_window_online.cpp
-    // Each dock tabified beside the project (terminals, simulation, scan debugger,
-    // connection) and hidden again leaves another tab in front; a first start shows the
-    // project (a saved layout, restored below, keeps the user's own).
-    if (auto *project = findChild<QDockWidget *>(QStringLiteral("projectDock")))
-        project->raise();
+    // Editing docks left, live ones together, findings below (dock_layout.h); a saved
+    // layout, restored below, keeps the user's own.
+    const bool wide = screen()->availableGeometry().width() >= kWideScreen;
+    arrangeDocks(this, wide);
     buildActions();
 
     m_ilTimer.setSingleShot(true);
@@ -131,17 +133,11 @@ MainWindow::MainWindow(QWidget *parent)
     resizeDocks({findChild<QDockWidget *>(QStringLiteral("problemsDock"))}, {150}, Qt::Vertical);
     resizeDocks({findChild<QDockWidget *>(QStringLiteral("projectDock"))}, {230}, Qt::Horizontal);
     restoreGeometry(settings.value(QStringLiteral("window/geometry")).toByteArray());
-    if (!restoreState(settings.value(QStringLiteral("window/state")).toByteArray())) {
-        // First start: the project dock wide enough for device, name and the start of the
-        // comment, the problems list a few lines high. Docks take sizes once laid out.
-        QTimer::singleShot(0, this, [this] {
-            if (auto *project = findChild<QDockWidget *>(QStringLiteral("projectDock")))
-                resizeDocks({project}, {300}, Qt::Horizontal);
-            // The problems, the watch table and the timing chart share the bottom: tall
-            // enough for a few signals of the chart.
-            if (auto *problems = findChild<QDockWidget *>(QStringLiteral("problemsDock")))
-                resizeDocks({problems}, {190}, Qt::Vertical);
-        });
+    if (!restoreState(settings.value(QStringLiteral("window/state")).toByteArray(),
+                      kDockLayoutVersion)) {
+        // First start (or a layout of the docks before issue 31): the columns as wide as the
+        // ladder leaves them. Docks take sizes once laid out.
+        QTimer::singleShot(0, this, [this, wide] { sizeDocks(this, wide); });
     }
     refreshFromDocument();
     updateTitle();
@@ -246,6 +242,7 @@ void MainWindow::refreshFromDocument() {
         m_il->setListing(m_document->listingText());
         m_shownListing = m_document->listingText();
         m_listingErrors.clear();
+        m_ladder->setNotice(QString()); // it spoke of the errors of a list no longer shown
     }
     m_shownRevision = m_document->rungsRevision();
     // The list pane shows the text as typed (with errors or forms of its own), or the listing.
@@ -420,6 +417,8 @@ void MainWindow::updateStatus() {
         m_statusCursor->setFullText(
             tr("Rung %1, row %2, column %3").arg(c.rung + 1).arg(c.row + 1).arg(c.column + 1));
     }
+    // Short, and where the user is: whole ("Segmento 1, riga 1, colo..." was cut).
+    m_statusCursor->setMinimumWidth(m_statusCursor->sizeHint().width());
 }
 
 void MainWindow::updateTitle() {
@@ -550,7 +549,7 @@ void MainWindow::closeEvent(QCloseEvent *event) {
     }
     QSettings settings;
     settings.setValue(QStringLiteral("window/geometry"), saveGeometry());
-    settings.setValue(QStringLiteral("window/state"), saveState());
+    settings.setValue(QStringLiteral("window/state"), saveState(kDockLayoutVersion));
     if (m_sideBySide)
         settings.setValue(QStringLiteral("view/split"), m_split->saveState());
     m_recovery->remove();

@@ -38,20 +38,21 @@ void MainWindow::setupDebugging() {
     auto *panelDock = new QDockWidget(tr("Simulation"), this);
     panelDock->setObjectName(QStringLiteral("simulationDock"));
     panelDock->setWidget(scroll);
-    // Tabs beside the project and the terminals, like them: the ladder keeps its width.
+    // With the terminals and the connection (dock_layout.h).
     addDockWidget(Qt::LeftDockWidgetArea, panelDock);
-    if (auto *project = findChild<QDockWidget *>(QStringLiteral("projectDock"))) {
-        tabifyDockWidget(project, panelDock);
-        project->raise();
-    }
 
     m_scanDebugger = new ScanDebuggerView(m_simulation, m_document);
     m_scanDebugger->setObjectName(QStringLiteral("scanDebugger"));
     auto *debugDock = new QDockWidget(tr("Scan Debugger"), this);
     debugDock->setObjectName(QStringLiteral("scanDebuggerDock"));
-    debugDock->setWidget(m_scanDebugger);
+    // Scrolled: its stacks and breakpoints must not make the window taller than a 1024x600
+    // screen (the window's minimum height is the docks' minimum heights added up).
+    auto *debugScroll = new QScrollArea;
+    debugScroll->setWidgetResizable(true);
+    debugScroll->setFrameShape(QFrame::NoFrame);
+    debugScroll->setWidget(m_scanDebugger);
+    debugDock->setWidget(debugScroll);
     addDockWidget(Qt::LeftDockWidgetArea, debugDock);
-    tabifyDockWidget(panelDock, debugDock);
     // Out of the way until a simulation starts: the ladder keeps its width for drawing.
     panelDock->hide();
     debugDock->hide();
@@ -61,8 +62,9 @@ void MainWindow::setupDebugging() {
                 if (session && !m_simulationDocksShown) {
                     m_simulationDocksShown = true;
                     panelDock->show();
-                    // A tab beside the terminals: they stay in front (toggle an input, see
-                    // the rung); the run controls are in the toolbar too.
+                    panelDock->raise();
+                    // Where the user put the two in one place, the terminals stay in front
+                    // (toggle an input, see the rung); the run controls are in the toolbar too.
                     if (auto *io = findChild<QDockWidget *>(QStringLiteral("ioDock"));
                         io && io->isVisible())
                         io->raise();

@@ -28,13 +28,16 @@
 namespace rung::app {
 
 namespace {
-// Never narrower than the panel's fields and buttons as they are now (the texts wrap, the
-// fields do not; online the settings are hidden and the dock may be narrower).
+// As wide as the panel's fields and buttons as they are now (the texts wrap, the fields do
+// not; online the settings are hidden and the dock may be narrower), but no wider than a
+// column beside the ladder may be (dock_layout.h): past that the panel scrolls sideways.
 void fitConnectionDock(QDockWidget *dock, ConnectionPanel *panel) {
+    constexpr int kWidestColumn = 240;
     if (auto *scroll = qobject_cast<QScrollArea *>(dock->widget()))
-        scroll->setMinimumWidth(panel->minimumSizeHint().width() +
-                                scroll->verticalScrollBar()->sizeHint().width() +
-                                2 * dock->style()->pixelMetric(QStyle::PM_LayoutRightMargin));
+        scroll->setMinimumWidth(std::min(
+            kWidestColumn, panel->minimumSizeHint().width() +
+                               scroll->verticalScrollBar()->sizeHint().width() +
+                               2 * dock->style()->pixelMetric(QStyle::PM_LayoutRightMargin)));
 }
 
 bool scanning(model::MonitorSource::RunState state) {
@@ -52,13 +55,10 @@ void MainWindow::setupOnline() {
     auto *scroll = new QScrollArea;
     scroll->setWidgetResizable(true);
     scroll->setFrameShape(QFrame::NoFrame);
-    scroll->setHorizontalScrollBarPolicy(Qt::ScrollBarAlwaysOff); // the texts wrap instead
+    scroll->setHorizontalScrollBarPolicy(Qt::ScrollBarAsNeeded); // in a narrow column
     scroll->setWidget(m_connectionPanel);
     dock->setWidget(scroll);
-    addDockWidget(Qt::RightDockWidgetArea, dock);
-    // A tab beside the inputs and outputs: each gets the whole height.
-    if (auto *io = findChild<QDockWidget *>(QStringLiteral("ioDock")))
-        tabifyDockWidget(io, dock);
+    addDockWidget(Qt::RightDockWidgetArea, dock); // with the live docks (dock_layout.h)
     dock->hide(); // View > Connection, or Online > Go Online, shows it
     const auto refreshTarget = [this] {
         const model::ModelVariant *variant = m_document->modelVariant();
@@ -68,6 +68,8 @@ void MainWindow::setupOnline() {
     refreshTarget();
     connect(m_document, &editor::Document::programChanged, this, refreshTarget);
     connect(m_document, &editor::Document::pathChanged, this, refreshTarget);
+    connect(m_document, &editor::Document::projectReplaced, m_connectionPanel,
+            &ConnectionPanel::forgetResults);
     connect(m_connectionPanel, &ConnectionPanel::message, this,
             [this](const QString &text) { statusBar()->showMessage(text, 10000); });
     connect(m_connectionPanel, &ConnectionPanel::sessionChanged, this,

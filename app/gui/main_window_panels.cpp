@@ -7,6 +7,7 @@
 #include "editor/watch_list_view.h"
 #include "editor/watch_panel.h"
 
+#include <QDir>
 #include <QDockWidget>
 #include <QMenu>
 #include <QMessageBox>
@@ -30,22 +31,12 @@ void MainWindow::buildMonitorDocks() {
     m_watch = m_watchPanel->view();
     m_ioPanel = new editor::IoPanel(m_document);
     m_chart = new editor::TimingChart(m_document);
-    QDockWidget *problems = findChild<QDockWidget *>(QStringLiteral("problemsDock"));
-    QDockWidget *watch = dock("watchDock", m_watchPanel, Qt::BottomDockWidgetArea);
-    QDockWidget *chart = dock("timingChartDock", m_chart, Qt::BottomDockWidgetArea);
-    // The terminals as a tab beside the project (toggle an input, see the rung), the table
-    // and the chart below the ladder with the problems. Not a column of their own: on a
-    // 1366x768 screen one beside the project cuts the ladder's coils off.
-    // Hidden until a simulation starts (or View shows it): the ladder keeps the width.
-    QDockWidget *io = dock("ioDock", m_ioPanel, Qt::LeftDockWidgetArea);
-    if (auto *project = findChild<QDockWidget *>(QStringLiteral("projectDock"))) {
-        tabifyDockWidget(project, io);
-        project->raise();
-    }
-    io->hide();
-    tabifyDockWidget(problems, watch);
-    tabifyDockWidget(watch, chart);
-    problems->raise();
+    // The table and the chart below the ladder with the problems, the terminals with the
+    // live docks (dock_layout.h). The terminals are hidden until a simulation starts (or
+    // View shows them): the ladder keeps the width.
+    dock("watchDock", m_watchPanel, Qt::BottomDockWidgetArea);
+    dock("timingChartDock", m_chart, Qt::BottomDockWidgetArea);
+    dock("ioDock", m_ioPanel, Qt::LeftDockWidgetArea)->hide();
     const auto say = [this](const QString &text) { statusBar()->showMessage(text, 10000); };
     connect(m_watchPanel, &editor::WatchPanel::message, this, say);
     connect(m_ioPanel, &editor::IoPanel::message, this, say);
@@ -54,7 +45,12 @@ void MainWindow::buildMonitorDocks() {
         const QString path =
             askSavePath(tr("Export Timing Chart"), QStringLiteral("*.%1").arg(format), {format});
         QString error;
-        if (!path.isEmpty() && !m_chart->exportTo(path, format, &error))
+        if (path.isEmpty())
+            return;
+        if (m_chart->exportTo(path, format, &error))
+            statusBar()->showMessage(
+                tr("Timing chart exported to %1").arg(QDir::toNativeSeparators(path)), 10000);
+        else
             QMessageBox::critical(this, tr("Cannot export"), error);
     });
     retranslatePanels();

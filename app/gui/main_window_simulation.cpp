@@ -1,5 +1,6 @@
 #include "main_window.h"
 
+#include "dialogs.h"
 #include "eliding_label.h"
 #include "simulation_controller.h"
 #include "simulation_panel.h"
@@ -13,7 +14,6 @@
 #include <QActionGroup>
 #include <QDockWidget>
 #include <QDoubleSpinBox>
-#include <QInputDialog>
 #include <QLabel>
 #include <QMenuBar>
 #include <QSpinBox>
@@ -118,9 +118,8 @@ void MainWindow::buildSimulationMenu(QToolBar *bar) {
     add("simulationRunScans", tr("Run Sc&ans..."), QStyle::SP_MediaSeekForward,
         QKeySequence(Qt::CTRL | Qt::SHIFT | Qt::Key_F10), [this] {
             bool ok = false;
-            const int count =
-                QInputDialog::getInt(this, tr("Run Scans"), tr("Scans to run:"),
-                                     m_simulationPanel->scansBox()->value(), 1, 100000000, 1, &ok);
+            const int count = askInt(this, tr("Run Scans"), tr("Scans to run:"),
+                                     m_simulationPanel->scansBox()->value(), 1, 100000000, &ok);
             if (ok) {
                 m_simulationPanel->scansBox()->setValue(count);
                 m_simulation->runScans(static_cast<quint64>(count));
@@ -129,9 +128,9 @@ void MainWindow::buildSimulationMenu(QToolBar *bar) {
     add("simulationRunFor", tr("R&un For..."), QStyle::SP_MediaSeekForward,
         QKeySequence(Qt::CTRL | Qt::SHIFT | Qt::Key_F11), [this] {
             bool ok = false;
-            const double seconds = QInputDialog::getDouble(
-                this, tr("Run For"), tr("Simulated time to run, in seconds:"),
-                m_simulationPanel->durationBox()->value(), 0.01, 24.0 * 3600.0, 2, &ok);
+            const double seconds =
+                askDouble(this, tr("Run For"), tr("Simulated time to run, in seconds:"),
+                          m_simulationPanel->durationBox()->value(), 0.01, 24.0 * 3600.0, 2, &ok);
             if (ok) {
                 m_simulationPanel->durationBox()->setValue(seconds);
                 m_simulation->runFor(static_cast<qint64>(seconds * 1000.0 + 0.5));
@@ -178,6 +177,7 @@ void MainWindow::updateSimulationStatus() {
     using State = model::MonitorSource::RunState;
     const State state = m_simulation->runState();
     m_statusSimulation->setFullText(m_simulation->statusText());
+    m_statusSimulation->setToolTip(m_simulation->statusToolTip());
     const bool history = m_simulation->historyShown();
     if (m_statusHistory) {
         m_statusHistory->setVisible(history);

@@ -194,9 +194,7 @@ void MainWindow::buildCrossReference() {
     m_crossDevice = m_crossReference->filter();
     m_crossTree = m_crossReference->tree();
     dock->setWidget(m_crossReference);
-    addDockWidget(Qt::LeftDockWidgetArea, dock);
-    tabifyDockWidget(findChild<QDockWidget *>(QStringLiteral("projectDock")), dock);
-    findChild<QDockWidget *>(QStringLiteral("projectDock"))->raise();
+    addDockWidget(Qt::LeftDockWidgetArea, dock); // a tab beside the project (dock_layout.h)
     connect(dock, &QDockWidget::visibilityChanged, m_crossReference,
             &editor::CrossReferenceView::setOnScreen);
     connect(m_crossReference, &editor::CrossReferenceView::rungActivated, this, [this](int rung) {

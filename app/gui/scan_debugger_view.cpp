@@ -123,6 +123,10 @@ ScanDebuggerView::ScanDebuggerView(SimulationController *simulation, editor::Doc
     });
     connect(m_removeAll, &QPushButton::clicked, simulation,
             &SimulationController::clearBreakpoints);
+    // Remove and Condition... act on the breakpoint chosen in the list: greyed, saying so,
+    // while none is (a click that did nothing and said nothing left the user guessing).
+    connect(m_breakpoints, &QTreeWidget::itemSelectionChanged, this,
+            &ScanDebuggerView::updateButtons);
     connect(m_breakpoints, &QTreeWidget::itemDoubleClicked, this, [this](QTreeWidgetItem *item) {
         emit goToInstruction(item->data(0, Qt::UserRole).toInt());
     });
@@ -229,6 +233,10 @@ void ScanDebuggerView::refresh() {
 }
 
 void ScanDebuggerView::refreshBreakpoints() {
+    // The breakpoint chosen stays chosen when the list is written again.
+    const QTreeWidgetItem *current = m_breakpoints->currentItem();
+    const int chosen =
+        current && current->isSelected() ? current->data(0, Qt::UserRole).toInt() : -1;
     m_breakpoints->clear();
     const auto &list = m_document->listing().list.instructions;
     const auto &printed = m_document->printedListing();
@@ -255,9 +263,24 @@ void ScanDebuggerView::refreshBreakpoints() {
     m_breakpoints->resizeColumnToContents(0);
     m_breakpoints->setColumnWidth(
         0, std::min(m_breakpoints->columnWidth(0), m_breakpoints->viewport()->width() * 2 / 3));
-    m_condition->setEnabled(!m_simulation->breakpoints().empty());
-    m_remove->setEnabled(!m_simulation->breakpoints().empty());
-    m_removeAll->setEnabled(!m_simulation->breakpoints().empty());
+    for (int i = 0; chosen >= 0 && i < m_breakpoints->topLevelItemCount(); ++i)
+        if (m_breakpoints->topLevelItem(i)->data(0, Qt::UserRole).toInt() == chosen)
+            m_breakpoints->setCurrentItem(m_breakpoints->topLevelItem(i));
+    updateButtons();
+}
+
+void ScanDebuggerView::updateButtons() {
+    const bool any = !m_simulation->breakpoints().empty();
+    const QTreeWidgetItem *item = m_breakpoints->currentItem();
+    const bool chosen = item && item->isSelected() && item->data(0, Qt::UserRole).toInt() >= 0;
+    const QString why = !any      ? tr("No breakpoint is set: Ctrl+B sets one where the cursor is")
+                        : !chosen ? tr("Choose a breakpoint in the list first")
+                                  : QString();
+    for (QPushButton *b : {m_condition, m_remove}) {
+        b->setEnabled(chosen);
+        b->setToolTip(why);
+    }
+    m_removeAll->setEnabled(any);
 }
 
 } // namespace rung::app

@@ -37,6 +37,7 @@ public:
     QStringList blockStack() const; // bottom first
     QStringList memoryStack() const;
     QTreeWidget *breakpointList() const { return m_breakpoints; }
+    QPushButton *removeButton() const { return m_remove; }
 
 signals:
     // The user asks to edit the condition of the breakpoint on this instruction.
@@ -45,6 +46,7 @@ signals:
 
 private:
     void refreshBreakpoints();
+    void updateButtons(); // Remove and Condition... need a breakpoint chosen in the list
 
     SimulationController *m_simulation;
     editor::Document *m_document;

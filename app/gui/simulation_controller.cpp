@@ -354,12 +354,28 @@ QString SimulationController::statusText(model::MonitorSource::RunState state, d
     if (!snapshot)
         return what;
     const model::ScanStatistics &s = snapshot->statistics;
-    //: %1 run state, %2 simulated time h:mm:ss.cc, %3 scans, %4 scan period in ms,
-    //: %5 %6 %7 time the last scan took to evaluate: current, minimum, maximum, in µs
-    return tr("%1 | %2 | %3 scans | scan %4 ms | evaluation %5 µs (%6..%7)")
+    // The evaluation figures are the status line's tooltip and the Simulation dock's: beside
+    // the history's and the origin's marks they were cut in every language (issue 31).
+    //: %1 run state, %2 simulated time h:mm:ss.cc, %3 scans, %4 scan period in ms
+    return tr("%1 | %2 | %3 scans | scan %4 ms")
         .arg(what, clockText(s.timeMs), QString::number(s.scans))
-        .arg(s.periodMs)
+        .arg(s.periodMs);
+}
+
+QString SimulationController::evaluationText(const model::Snapshot *snapshot) {
+    if (!snapshot)
+        return {};
+    const model::ScanStatistics &s = snapshot->statistics;
+    //: the time the last scan took to evaluate on this computer: current, minimum, maximum
+    return tr("Evaluation of a scan on this computer: %1 µs (%2..%3)")
         .arg(microseconds(s.execNsCurrent), microseconds(s.execNsMin), microseconds(s.execNsMax));
+}
+
+QString SimulationController::statusToolTip() const {
+    const std::shared_ptr<const model::Snapshot> snapshot =
+        m_session ? m_session->snapshot() : nullptr;
+    const QString evaluation = evaluationText(snapshot.get());
+    return evaluation.isEmpty() ? statusText() : statusText() + QLatin1Char('\n') + evaluation;
 }
 
 } // namespace rung::app

@@ -115,11 +115,14 @@ public slots:
     // The chart's cursor on a past time (virtual ms): the views show the scan at that time.
     void showHistoryAt(qint64 timeMs);
     void returnToLive();
-    // The status line: run state, simulated time, scans, scan time (the virtual period) and
-    // the evaluation time current/min/max.
+    // The status line: run state, simulated time, scans, scan time (the virtual period).
     QString statusText() const;
     static QString statusText(model::MonitorSource::RunState state, double speed,
                               const model::Snapshot *snapshot);
+    // "Evaluation of a scan on this computer: 2.5 µs (1.0..9.9)"; empty without a snapshot.
+    static QString evaluationText(const model::Snapshot *snapshot);
+    // The status line and the evaluation, for its tooltip.
+    QString statusToolTip() const;
     // Virtual time as h:mm:ss.cc, the same in every language.
     static QString clockText(qint64 ms);
 

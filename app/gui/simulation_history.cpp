@@ -51,8 +51,10 @@ void SimulationController::showHistoryAt(qint64 timeMs) {
 void SimulationController::returnToLive() {
     if (!m_historySource)
         return;
+    // Live before anyone is told: the window names the origin by historyShown(), and the
+    // views let go of the history while it still lives (it goes at the end of this scope).
+    const std::unique_ptr<simulator::HistorySource> shown = std::move(m_historySource);
     emit monitorSourceChanged(m_session.get());
-    m_historySource.reset();
     emit statusChanged();
 }
 
@@ -72,7 +74,9 @@ QString SimulationController::historyWindowText() const {
     if (w.lastScan <= w.firstScan)
         return tr("No history yet: run the simulation");
     //: %1 h:mm:ss of simulated time, %2 %3 first and last scan, %4 memory in MB
-    return tr("Recorded: the last %1 of simulated time (scans %2..%3, %4 MB); at most the last "
+    // The record keeps at least the last hour and drops the oldest scans only a checkpoint at
+    // a time (simulator/scan_history.h): it may hold more than an hour, never less.
+    return tr("Recorded: the last %1 of simulated time (scans %2..%3, %4 MB); at least the last "
               "hour is kept")
         .arg(duration(w.lastMs - w.firstMs))
         .arg(w.firstScan)

@@ -1,6 +1,7 @@
 #include "simulation_panel.h"
 
 #include "simulation_controller.h"
+#include "wheel_guard.h"
 
 #include "simulator/history_source.h"
 #include "simulator/scan_history.h"
@@ -39,7 +40,7 @@ SimulationPanel::SimulationPanel(SimulationController *simulation, QWidget *pare
     auto *layout = new QVBoxLayout(this);
 
     m_runGroup = new QGroupBox;
-    auto *run = new QGridLayout(m_runGroup);
+    auto *run = new QFormLayout(m_runGroup);
     m_scansLabel = new QLabel;
     m_scans = new QSpinBox;
     m_scans->setObjectName(QStringLiteral("runScansCount"));
@@ -57,25 +58,27 @@ SimulationPanel::SimulationPanel(SimulationController *simulation, QWidget *pare
     m_speedLabel = new QLabel;
     m_speed = new QComboBox;
     m_speed->setObjectName(QStringLiteral("simulationSpeed"));
+    // The dock is a narrow column beside the ladder: the combo takes the width it is given
+    // (its list opens as wide as its longest entry).
+    m_speed->setSizeAdjustPolicy(QComboBox::AdjustToMinimumContentsLengthWithIcon);
+    m_speed->setMinimumContentsLength(8);
     m_periodLabel = new QLabel;
     m_period = new QSpinBox;
     m_period->setObjectName(QStringLiteral("simulationPeriod"));
     m_period->setRange(1, 100);
     m_powerCycle = new QPushButton;
-    // Each button under its field, not beside it: the dock shares its column with the
-    // inputs and outputs, and Hungarian and Italian labels and buttons are long.
-    run->addWidget(m_scansLabel, 0, 0);
-    run->addWidget(m_scans, 0, 1);
-    run->addWidget(m_runScans, 1, 1);
-    run->addWidget(m_durationLabel, 2, 0);
-    run->addWidget(m_duration, 2, 1);
-    run->addWidget(m_runFor, 3, 1);
-    run->addWidget(m_speedLabel, 4, 0);
-    run->addWidget(m_speed, 4, 1);
-    run->addWidget(m_periodLabel, 5, 0);
-    run->addWidget(m_period, 5, 1);
-    run->addWidget(m_powerCycle, 6, 0, 1, 2);
-    run->setColumnStretch(1, 1);
+    // Each button under its field, not beside it, and a label over its field where the
+    // column is too narrow for both: the dock is a column beside the ladder (dock_layout.h),
+    // and Hungarian and Italian labels and buttons are long.
+    run->setRowWrapPolicy(QFormLayout::WrapLongRows);
+    run->setFieldGrowthPolicy(QFormLayout::AllNonFixedFieldsGrow);
+    run->addRow(m_scansLabel, m_scans);
+    run->addRow(m_runScans);
+    run->addRow(m_durationLabel, m_duration);
+    run->addRow(m_runFor);
+    run->addRow(m_speedLabel, m_speed);
+    run->addRow(m_periodLabel, m_period);
+    run->addRow(m_powerCycle);
     layout->addWidget(m_runGroup);
 
     m_statsGroup = new QGroupBox;
@@ -83,6 +86,7 @@ SimulationPanel::SimulationPanel(SimulationController *simulation, QWidget *pare
     m_stats = new QLabel;
     m_stats->setObjectName(QStringLiteral("simulationStatistics"));
     m_stats->setTextInteractionFlags(Qt::TextSelectableByMouse);
+    m_stats->setWordWrap(true); // a narrow column: the lines wrap rather than scroll
     stats->addWidget(m_stats);
     layout->addWidget(m_statsGroup);
 
@@ -105,8 +109,8 @@ SimulationPanel::SimulationPanel(SimulationController *simulation, QWidget *pare
     m_live->setObjectName(QStringLiteral("returnToLive"));
     row->addWidget(m_historyScanLabel);
     row->addWidget(m_historyScan, 1);
-    row->addWidget(m_live);
     history->addLayout(row);
+    history->addWidget(m_live); // under the scan: the column is narrow
     m_historyMark = new QLabel;
     m_historyMark->setObjectName(QStringLiteral("historyMark"));
     // Marked so it cannot be taken for the live state: bold on amber, as the status bar.
@@ -116,6 +120,7 @@ SimulationPanel::SimulationPanel(SimulationController *simulation, QWidget *pare
     history->addWidget(m_historyMark);
     layout->addWidget(m_historyGroup);
     layout->addStretch(1);
+    guardWheel(this); // scrolling the dock never changes the speed or the period
 
     connect(m_runScans, &QPushButton::clicked, this, [this] {
         QSettings().setValue(QStringLiteral("simulation/runScans"), m_scans->value());
@@ -168,7 +173,11 @@ void SimulationPanel::retranslate() {
     m_periodLabel->setText(tr("Scan period:"));
     //: milliseconds
     m_period->setSuffix(tr(" ms"));
-    m_powerCycle->setText(tr("Power Cycle (retentive areas kept)"));
+    // Short: the dock is a narrow column; what it keeps is in the tooltip.
+    m_powerCycle->setText(tr("Power Cycle"));
+    m_powerCycle->setToolTip(
+        tr("Off and on again: the retentive areas keep their values, the rest starts as at "
+           "power-on"));
     m_statsGroup->setTitle(tr("Statistics"));
     m_historyGroup->setTitle(tr("History"));
     m_historyScanLabel->setText(tr("Show scan:"));

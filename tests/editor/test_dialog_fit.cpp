@@ -2,8 +2,17 @@
 // enough for its title in a window manager's title bar, and every label, button and combo box
 // of it, and of the window at 1366x768 and at 1024x600, is at least as large as its text needs.
 
+#include "app/gui/eliding_label.h"
 #include "app/gui/language.h"
 #include "app/gui/main_window.h"
+#include "app/gui/simulation_controller.h"
+#include "app/gui/status_bar.h"
+#include "editor/ladder_painter.h"
+#include "editor/ladder_view.h"
+#include "editor/timing_canvas.h"
+#include "editor/timing_chart.h"
+#include "model/target/address.h"
+#include "simulator/session.h"
 
 #include <QAbstractButton>
 #include <QApplication>
@@ -14,6 +23,7 @@
 #include <QHeaderView>
 #include <QLabel>
 #include <QMessageBox>
+#include <QRegularExpression>
 #include <QSettings>
 #include <QStatusBar>
 #include <QTabBar>
@@ -49,6 +59,11 @@ QStringList cutTexts(QWidget *root) {
         if (auto *label = qobject_cast<QLabel *>(w)) {
             if (label->text().isEmpty() || label->pixmap().isNull() == false)
                 continue;
+            // An access key with no field to go to shows its '&' ("&Compare").
+            static const QRegularExpression accessKey(QStringLiteral("(^|[^&])&[^&\\s]"));
+            if (!label->buddy() && label->textFormat() != Qt::RichText &&
+                !Qt::mightBeRichText(label->text()) && accessKey.match(label->text()).hasMatch())
+                cut << QStringLiteral("%1 shows its '&': %2").arg(nameOf(w), label->text());
             const bool fits = label->wordWrap()
                                   ? label->height() >= label->heightForWidth(label->width())
                                   : label->width() >= label->sizeHint().width();
@@ -177,6 +192,11 @@ TEST_P(DialogFit, EveryDialogFitsItsTitleAndTexts) {
     expectFits("Rung Comment", [&] { window.editRungComment(); });
     expectFits("Keyboard", [&] { entry(mw, "&Keyboard...")->trigger(); });
     expectFits("About", [&] { entry(mw, "&About Rung Studio")->trigger(); });
+    // The simulation's and the debugger's dialogs: "Ciklus…tatása", "Esegui… nsioni" and a
+    // literal "&Compare" were cut or shown so.
+    expectFits("Run Scans", [&] { entry(mw, "Run Sc&ans...")->trigger(); });
+    expectFits("Run For", [&] { entry(mw, "R&un For...")->trigger(); });
+    expectFits("Breakpoint Condition", [&] { window.editBreakpointCondition(0); });
     // Save the changes? (New Project on a changed program asks first.)
     window.document()->insertRung(0, window.document()->ladder().rungs.front());
     expectFits("Unsaved changes", [&] { entry(mw, "&New Project...")->trigger(); });
@@ -223,3 +243,149 @@ TEST_P(DialogFit, TheWindowShowsItsTextsWholeOnSmallScreens) {
 
 INSTANTIATE_TEST_SUITE_P(Languages, DialogFit, ::testing::Values("en", "hu", "it"),
                          [](const auto &info) { return std::string(info.param); });
+
+namespace {
+
+// The status bar's fields show their whole texts (an ElidingLabel its full text).
+QStringList elidedFields(QStatusBar *bar) {
+    QStringList cut;
+    for (auto *label : bar->findChildren<app::ElidingLabel *>())
+        if (label->isVisible() && label->text() != label->fullText())
+            cut << QStringLiteral("%1: \"%2\" of \"%3\"")
+                       .arg(label->objectName(), label->text(), label->fullText());
+    return cut;
+}
+
+} // namespace
+
+// Issue 31's clipped texts at 1366x768: the status bar's fields while a past scan is shown, a
+// long message before them, the force badge beside a contact's device, a MOV box's values and
+// the timing chart's cursors over its ruler.
+TEST_P(DialogFit, TheStatusBarTheLadderAndTheChartShowTheirTextsWhole) {
+    app::SimulationController *sim = window.simulation();
+    const auto paused = [&] {
+        return QTest::qWaitFor(
+            [&] { return sim->runState() == model::MonitorSource::RunState::Paused; }, 5000);
+    };
+    const auto settle = [] {
+        for (int i = 0; i < 5; ++i)
+            QCoreApplication::processEvents();
+    };
+    load("LD X1\nOUT Y0\nLD M9000\nMOV K12345 D0\nMOV D0 D1\nEND\n");
+    ASSERT_TRUE(sim->runScans(200));
+    ASSERT_TRUE(paused());
+    sim->showHistoryScan(150);
+    settle();
+    auto *bar = qobject_cast<app::StatusBar *>(window.statusBar());
+    ASSERT_NE(bar, nullptr);
+    EXPECT_TRUE(QTest::qWaitFor([&] { return elidedFields(bar).isEmpty(); }, 2000))
+        << GetParam() << ": " << elidedFields(bar).join(QStringLiteral("; ")).toStdString();
+    // A message longer than its room ends in "…" a gap before the first field.
+    bar->showMessage(QStringLiteral("Connection to the PLC lost: no answer within 1000 ms. "
+                                    "Trying again. ")
+                         .repeated(4));
+    settle();
+    EXPECT_TRUE(bar->shownMessage().endsWith(QChar(0x2026))) << bar->shownMessage().toStdString();
+    for (QWidget *field : bar->findChildren<QWidget *>(Qt::FindDirectChildrenOnly)) {
+        if (field->isVisible()) {
+            EXPECT_LE(bar->messageArea().right() + 8, field->x())
+                << field->objectName().toStdString();
+        }
+    }
+    bar->clearMessage();
+    sim->returnToLive();
+
+    // The MOV box (rung 2, row 2): "D0 = 12345  D1 = 12345", each value whole.
+    editor::LadderView *ladder = window.ladderView();
+    const auto movValues = [&] {
+        const editor::RungOverlay o = ladder->overlay(1);
+        return o.output(1) ? o.output(1)->value : QString();
+    };
+    ASSERT_TRUE(QTest::qWaitFor([&] { return movValues().contains(QStringLiteral("D1 = 12345")); },
+                                5000))
+        << movValues().toStdString();
+    {
+        const editor::LadderMetrics m = ladder->metrics();
+        const editor::LadderPainter painter(window.document()->project(), m);
+        const model::Rung &rung = window.document()->ladder().rungs[1];
+        const QRectF inner = painter.boxTextRect(painter.outputRect(rung, 1));
+        const QFontMetricsF fm(painter.liveFont());
+        const QStringList lines = editor::LadderPainter::valueLines(movValues(), fm, inner.width());
+        for (const QString &line : lines)
+            EXPECT_LE(fm.horizontalAdvance(line), inner.width())
+                << GetParam() << ": " << line.toStdString();
+    }
+
+    // A forced contact: its device's label ("X1", a CPM1's "000.00") is drawn the same as
+    // without the force, the badge beside the contact, not over the label's last character.
+    struct Forced {
+        model::Family family;
+        const char *model;
+        const char *listing;
+        const char *device;
+    };
+    for (const Forced &f :
+         {Forced{model::Family::Vigor, "VB", "LD X1\nOUT Y0\nEND\n", "X1"},
+          Forced{model::Family::Cpm1, nullptr, "LD 000.00\nOUT 010.00\nEND(01)\n", "000.00"}}) {
+        const model::Target &target = model::Target::get(f.family);
+        window.newProject(target,
+                          f.model ? QString::fromLatin1(f.model) : target.defaultModel().name);
+        load(f.listing);
+        ASSERT_TRUE(sim->singleScan());
+        ASSERT_TRUE(paused());
+        settle();
+        ladder->setCursor({0, 1, 0}); // the cursor's frame off the contact
+        const QRect cell = ladder->cellRectOnScreen({0, 0, 0});
+        // Above the contact's symbol (whose heavy bars reach a little above it when it
+        // conducts) and inside the dashed outline of a forced element.
+        const int symbolTop = cell.top() + static_cast<int>(ladder->metrics().rowHeight * 0.35);
+        const QRect label(cell.left() + 5, cell.top() + 5, cell.width() - 10,
+                          symbolTop - 4 - (cell.top() + 5));
+        ladder->viewport()->repaint();
+        const QImage before = ladder->viewport()->grab().toImage();
+        const auto device =
+            std::get<model::Address>(model::parseAddress(target, QString::fromLatin1(f.device)));
+        sim->session()->force(device, true);
+        ASSERT_TRUE(QTest::qWaitFor(
+            [&] {
+                const auto s = sim->session()->snapshot();
+                return s && s->forced(device);
+            },
+            5000));
+        ASSERT_TRUE(QTest::qWaitFor([&] { return ladder->overlay(0).isForced(0, 0); }, 5000));
+        ladder->viewport()->repaint();
+        const QImage after = ladder->viewport()->grab().toImage();
+        int changed = 0;
+        for (int y = label.top(); y <= label.bottom(); ++y)
+            for (int x = label.left(); x <= label.right(); ++x)
+                changed += before.pixel(x, y) != after.pixel(x, y);
+        EXPECT_EQ(changed, 0) << GetParam() << ": " << f.device << ": " << changed
+                              << " pixels of the label changed";
+        sim->stop();
+    }
+
+    // The chart's cursors never stand over a number of its ruler.
+    window.newProject(model::Target::get(model::Family::Vigor), QStringLiteral("VB"));
+    load("LD M9000\nADD D0 K1 D0\nEND\n");
+    ASSERT_TRUE(sim->runScans(300));
+    ASSERT_TRUE(paused());
+    auto *chartDock = window.findChild<QDockWidget *>(QStringLiteral("timingChartDock"));
+    ASSERT_NE(chartDock, nullptr);
+    chartDock->show();
+    chartDock->raise();
+    settle();
+    editor::TimingChart *chart = window.timingChart();
+    editor::TimingCanvas *canvas = chart->canvas();
+    int numbers = 0;
+    for (qint64 t = 0; t <= 3000; t += 25) {
+        chart->placeCursor(0, t);
+        chart->placeCursor(1, t + 310);
+        const std::vector<QRectF> labels = canvas->rulerLabels(canvas->size());
+        const std::vector<QRectF> tags = canvas->cursorTags(canvas->size());
+        numbers += static_cast<int>(labels.size());
+        for (const QRectF &label : labels)
+            for (const QRectF &tag : tags)
+                EXPECT_FALSE(label.intersects(tag)) << GetParam() << " at " << t << " ms";
+    }
+    EXPECT_GT(numbers, 0);
+}

@@ -9,6 +9,7 @@
 #include "app/gui/simulation_controller.h"
 #include "comms/driver/online_session.h"
 #include "editor/ladder_view.h"
+#include "editor/watch_list_view.h"
 #include "model/target/address.h"
 #include "tests/cli/virtual_plc_fixture.h"
 
@@ -29,6 +30,7 @@
 #include <QTemporaryDir>
 #include <QTest>
 #include <QToolTip>
+#include <QTreeWidget>
 
 #include <gtest/gtest.h>
 
@@ -453,6 +455,73 @@ TEST_P(Online, APulledCableShowsAtOnceKeepsStaleValuesAndReconnectsByItself) {
     EXPECT_GE(session()->statistics().reconnects, 1u);
     EXPECT_TRUE(panel->statisticsText().contains(QStringLiteral("reconnects 1")))
         << panel->statisticsText().toStdString();
+}
+
+// Issue 31: the watch table names a timer's preset as the box does (the Vigor's K constant
+// lives in the program: "60 of 350", not "60 of ?").
+TEST_P(Online, TheWatchTableShowsATimersPresetAsTheBoxDoes) {
+    editor::WatchListView *watch = window.watchListView();
+    const char *timer = c.protocol == comms::ProtocolKind::VigorLink   ? "T0"
+                        : c.protocol == comms::ProtocolKind::ModbusRtu ? "T1"
+                                                                       : "TIM 000";
+    watch->addDevice(model::formatAddress(target, at(timer)));
+    ASSERT_EQ(watch->topLevelItemCount(), 1);
+    QTreeWidgetItem *row = watch->topLevelItem(0)->child(0);
+    ASSERT_NE(row, nullptr);
+    goOnline();
+    const QString preset =
+        QStringLiteral(" of %1, ")
+            .arg(QString::fromUtf8(c.timer).section(QLatin1Char(' '), 0, 0).mid(1));
+    EXPECT_TRUE(QTest::qWaitFor(
+        [&] { return row->text(editor::WatchListView::ValueColumn).contains(preset); },
+        kPatienceMs))
+        << row->text(editor::WatchListView::ValueColumn).toStdString();
+}
+
+// Issue 31: a value typed in the watch table is not shown while the first write of the
+// connection is asked about (nor after a no): the row shows what the PLC holds.
+TEST_P(Online, AWatchValueIsNotShownBeforeTheWriteIsConfirmed) {
+    editor::WatchListView *watch = window.watchListView();
+    watch->addDevice(model::formatAddress(target, at(c.word)));
+    QTreeWidgetItem *row = watch->topLevelItem(0)->child(0);
+    ASSERT_NE(row, nullptr);
+    goOnline();
+    const auto shownValue = [&] { return row->text(editor::WatchListView::ValueColumn); };
+    ASSERT_TRUE(QTest::qWaitFor([&] { return !shownValue().isEmpty(); }, kPatienceMs));
+    const QString before = shownValue();
+    QString whileAsked = QStringLiteral("(not asked)");
+    panel->setConfirmer([&](const QString &, const QString &) {
+        whileAsked = shownValue();
+        return false;
+    });
+    row->setText(editor::WatchListView::ValueColumn, QStringLiteral("4321"));
+    ASSERT_TRUE(
+        QTest::qWaitFor([&] { return whileAsked != QStringLiteral("(not asked)"); }, kPatienceMs));
+    EXPECT_EQ(whileAsked, before);
+    EXPECT_EQ(shownValue(), before);
+}
+
+// Issue 31: what the PLC cannot answer online is a warning of its own, not in the green of
+// "Online" (a CPM1's TR bits have no Host Link address).
+TEST_P(Online, ADeviceThePlcCannotReadIsAWarningApartFromTheState) {
+    if (c.protocol != comms::ProtocolKind::HostLink)
+        GTEST_SKIP() << "the TR bits are a CPM1's";
+    window.watchListView()->addDevice(QStringLiteral("TR 0"));
+    goOnline();
+    ASSERT_TRUE(QTest::qWaitFor([&] { return !panel->warningText().isEmpty(); }, kPatienceMs));
+    EXPECT_TRUE(panel->warningText().contains(QStringLiteral("TR 0")))
+        << panel->warningText().toStdString();
+    auto *state = panel->findChild<QLabel *>(QStringLiteral("connectionState"));
+    auto *warning = panel->findChild<QLabel *>(QStringLiteral("connectionWarning"));
+    ASSERT_TRUE(state && warning);
+    EXPECT_TRUE(QTest::qWaitFor([&] { return warning->isVisible(); }, kPatienceMs));
+    EXPECT_TRUE(warning->text().contains(panel->warningText()));
+    EXPECT_FALSE(state->text().contains(panel->warningText())) << state->text().toStdString();
+    EXPECT_TRUE(state->text().startsWith(QStringLiteral("Online: ")));
+    // The state in the green of Online; the warning not green, not bold.
+    EXPECT_TRUE(state->styleSheet().contains(QStringLiteral("#1b5e20")));
+    EXPECT_FALSE(warning->styleSheet().contains(QStringLiteral("#1b5e20")));
+    EXPECT_FALSE(warning->styleSheet().contains(QStringLiteral("bold")));
 }
 
 // An online PLC and a simulation never feed the views together (the window's side, the same

@@ -342,12 +342,15 @@ TEST(PowerFlow, OnlineATimerWhosePresetNoAreaHoldsShowsTheBoxsOwnPreset) {
     (*read)[std::size_t(layout.word(p.at("D10")))] = true;
     p.snapshot.words[std::size_t(layout.word(p.at("D10")))] = 50;
     EXPECT_EQ(ProgramFlow::timerText(p.target, t1, p.snapshot), QStringLiteral("3/50 ×0.1 s"));
-    // A simulation knows every word: the memory's set value wins over the operand.
+    // A constant preset is the program's (issue 31): a set value in the memory that the box
+    // has not loaded yet (after Stop: 0) is not shown for it; a word preset is the memory's.
     model::Snapshot simulated = p.engine->snapshot();
     EXPECT_TRUE(simulated.setValueKnown(p.at("T0")));
-    p.engine->writeSetValue(p.at("T0"), 200);
+    p.engine->writeSetValue(p.at("T0"), 0);
+    p.engine->writeSetValue(p.at("T1"), 40);
     simulated = p.engine->snapshot();
-    EXPECT_EQ(ProgramFlow::presetOf(p.target, &t0, p.at("T0"), simulated), 200);
+    EXPECT_EQ(ProgramFlow::presetOf(p.target, &t0, p.at("T0"), simulated), 350);
+    EXPECT_EQ(ProgramFlow::presetOf(p.target, &t1, p.at("T1"), simulated), 40);
 }
 
 TEST(PowerFlow, ABoxShowsTheValuesOfItsWords) {

@@ -301,7 +301,7 @@ TEST_F(Debugging, AFullStatusBarElidesTheRunStateAndKeepsTheHistoryMarksApart) {
     EXPECT_LE(state->geometry().right(), window.statusBar()->width());
     // What did not fit is elided, and the whole run state is its tooltip.
     EXPECT_TRUE(state->text().endsWith(QChar(0x2026))) << state->text().toStdString();
-    EXPECT_EQ(state->toolTip(), full);
+    EXPECT_TRUE(state->toolTip().startsWith(full)) << state->toolTip().toStdString();
     sim()->setSpeed(1);
 }
 

@@ -1,0 +1,32 @@
+#pragma once
+
+// Where the window's docks go on a first start (a layout the user saved is restored as it
+// was): what a user needs together is visible together (issue 31, docs/user-guide.md "The
+// docks").
+//  - Editing: Project and Cross Reference, tabs of the left column.
+//  - Live values, from a simulation or a PLC: Inputs and Outputs, with Simulation, Scan
+//    Debugger and Connection as tabs below it (a simulation and a PLC never feed the views
+//    together, so their docks share a place). On a wide screen this is a right-hand column;
+//    on a narrow one (1024x600) there is room beside the ladder for one column only, so the
+//    Simulation, Scan Debugger and Connection tabs join Project's and Inputs and Outputs
+//    goes under them.
+//  - Findings and records: Problems, Watch and Timing Chart, tabs below the ladder.
+// The widths leave the ladder its readable width (a coil and a timer's box in view).
+
+class QMainWindow;
+
+namespace rung::app {
+
+// The layout's version in the saved window state: a layout saved before these groups
+// (six tabs on the left) is not restored.
+inline constexpr int kDockLayoutVersion = 1;
+// A screen at least this wide gets the right-hand column.
+inline constexpr int kWideScreen = 1280;
+
+// Places the docks by their object names (projectDock, crossReferenceDock, ioDock,
+// simulationDock, scanDebuggerDock, connectionDock, problemsDock, watchDock, timingChartDock).
+void arrangeDocks(QMainWindow *window, bool wide);
+// The first start's widths and heights of the columns, once the window is laid out.
+void sizeDocks(QMainWindow *window, bool wide);
+
+} // namespace rung::app
