@@ -1,5 +1,6 @@
 #include "main_window.h"
 
+#include "about_dialog.h"
 #include "dialogs.h"
 #include "file_dialogs.h"
 #include "language.h"
@@ -312,12 +313,12 @@ void MainWindow::buildActions() {
                 tr("Online: Ctrl+W go online / offline, Ctrl+1 STOP (PROGRAM), Ctrl+3 MONITOR, "
                    "Ctrl+4 RUN"));
     });
-    help->addAction(tr("&About Rung Studio"), this, [this] {
-        messageBox(QMessageBox::Information, this, tr("About Rung Studio"),
-                   tr("Rung Studio %1\nLadder and instruction-list editor for %2.")
-                       .arg(QApplication::applicationVersion(),
-                            model::targetDisplayNames().join(QStringLiteral(", "))));
+    QAction *about = help->addAction(tr("&About Rung Studio"), this, [this] {
+        AboutDialog dialog(this);
+        dialog.exec();
     });
+    about->setObjectName(QStringLiteral("aboutAction"));
+    about->setMenuRole(QAction::AboutRole);
     rebuildRecentMenu();
     rebuildExamplesMenu();
 }
