@@ -13,20 +13,31 @@
 #include <QDir>
 #include <QHBoxLayout>
 #include <QLabel>
+#include <QPainter>
 #include <QPushButton>
+#include <QSvgRenderer>
 #include <QUrl>
 #include <QVBoxLayout>
 
 namespace rung::app {
 
 QIcon applicationIcon() {
+    // Each size rendered from its own drawing: QIcon's SVG engine keeps one file per mode, so
+    // the small drawings would be lost if the SVGs were added as files.
     QIcon icon;
-    icon.addFile(QStringLiteral(":/icons/rungstudio-16.svg"), QSize(16, 16));
-    icon.addFile(QStringLiteral(":/icons/rungstudio-24.svg"), QSize(22, 22));
-    icon.addFile(QStringLiteral(":/icons/rungstudio-24.svg"), QSize(24, 24));
-    for (int size : {32, 48, 64, 128, 256})
-        icon.addFile(QStringLiteral(":/icons/io.github.rungstudio.RungStudio.svg"),
-                     QSize(size, size));
+    for (int size : {16, 22, 24, 32, 48, 64, 128, 256}) {
+        const QString file = size == 16 ? QStringLiteral(":/icons/rungstudio-16.svg")
+                             : size < 32
+                                 ? QStringLiteral(":/icons/rungstudio-24.svg")
+                                 : QStringLiteral(":/icons/io.github.rungstudio.RungStudio.svg");
+        QSvgRenderer svg(file);
+        QImage image(size, size, QImage::Format_ARGB32_Premultiplied);
+        image.fill(Qt::transparent);
+        QPainter painter(&image);
+        svg.render(&painter);
+        painter.end();
+        icon.addPixmap(QPixmap::fromImage(image));
+    }
     return icon;
 }
 
@@ -44,8 +55,9 @@ AboutDialog::AboutDialog(QWidget *parent)
     logo->setPixmap(applicationIcon().pixmap(QSize(64, 64)));
     logo->setAlignment(Qt::AlignTop);
 
+    const QString version = QStringLiteral(RUNG_VERSION);
     auto *title = new QLabel(QStringLiteral("<b style='font-size:large'>Rung Studio %1</b>")
-                                 .arg(QApplication::applicationVersion().toHtmlEscaped()));
+                                 .arg(version.toHtmlEscaped()));
     title->setObjectName(QStringLiteral("aboutTitle"));
     auto *what = new QLabel(tr("Ladder and instruction-list editor for %1.")
                                 .arg(model::targetDisplayNames().join(QStringLiteral(", "))));
@@ -71,8 +83,7 @@ AboutDialog::AboutDialog(QWidget *parent)
     // against (it has no run-time query).
     const QString row = QStringLiteral("<tr><td>%1</td><td>&nbsp;%2&nbsp;</td><td>%3</td></tr>");
     QString parts = QStringLiteral("<table>");
-    parts += row.arg(QStringLiteral("Rung Studio"), QApplication::applicationVersion(),
-                     tr("GNU GPL, version 3 or later"));
+    parts += row.arg(QStringLiteral("Rung Studio"), version, tr("GNU GPL, version 3 or later"));
     parts +=
         row.arg(QStringLiteral("Qt"), QString::fromLatin1(qVersion()), tr("GNU LGPL, version 3"));
     parts += row.arg(QStringLiteral("QScintilla"), QStringLiteral(QSCINTILLA_VERSION_STR),

@@ -4,6 +4,8 @@
 
 #include "tests/cli/man_page.h"
 
+#include <QDir>
+#include <QDirIterator>
 #include <QFile>
 #include <QProcess>
 #include <QRegularExpression>
@@ -82,11 +84,16 @@ TEST(ManPage, VersionsAgreeWithTheProgram) {
     ASSERT_TRUE(
         QRegularExpression(QStringLiteral("^\\d+\\.\\d+\\.\\d+$")).match(version).hasMatch())
         << version.toStdString();
-    for (const char *page : {"rungstudio-cli.1", "rungstudio.1"}) {
-        const QString text =
-            test::readText(QStringLiteral(RUNG_SOURCE_DIR "/packaging/man/") + QLatin1String(page));
-        EXPECT_TRUE(text.contains(QStringLiteral("\"Rung Studio %1\"").arg(version))) << page;
+    QDirIterator pages(QStringLiteral(RUNG_SOURCE_DIR "/packaging/man"), {QStringLiteral("*.1")},
+                       QDir::Files, QDirIterator::Subdirectories);
+    int count = 0;
+    for (; pages.hasNext(); ++count) {
+        const QString page = pages.next();
+        EXPECT_TRUE(
+            test::readText(page).contains(QStringLiteral("\"Rung Studio %1\"").arg(version)))
+            << page.toStdString();
     }
+    EXPECT_GE(count, 2);
     const QString changelog =
         test::readText(QStringLiteral(RUNG_SOURCE_DIR "/packaging/debian/changelog"));
     EXPECT_TRUE(changelog.startsWith(QStringLiteral("rungstudio (%1) ").arg(version)))
