@@ -31,10 +31,14 @@ build=$(cd "$build" && pwd)
 cache=$build/CMakeCache.txt
 [ -f "$cache" ] || { echo "$build is not a configured build folder (no CMakeCache.txt)" >&2; exit 2; }
 setting() { sed -n "s/^$1:[A-Z]*=//p" "$cache"; }
+# RUNG_PACKAGE_ANY_BUILD=1 lets a developer try the checks on the Debug folder they work in;
+# what is shipped (and CI) is a Release build.
 case $(setting CMAKE_BUILD_TYPE) in
     Release | RelWithDebInfo | MinSizeRel) ;;
-    *) echo "$build is a $(setting CMAKE_BUILD_TYPE) build: configure one with -DCMAKE_BUILD_TYPE=Release" >&2
-       exit 2 ;;
+    *) if [ "${RUNG_PACKAGE_ANY_BUILD:-}" != 1 ]; then
+           echo "$build is a $(setting CMAKE_BUILD_TYPE) build: configure one with -DCMAKE_BUILD_TYPE=Release" >&2
+           exit 2
+       fi ;;
 esac
 for option in RUNG_SANITIZE RUNG_TSAN RUNG_BUILD_FUZZERS; do
     [ "$(setting $option)" != ON ] || { echo "$build has $option=ON: package a build without it" >&2; exit 2; }
@@ -90,16 +94,18 @@ else
     bad "the package lacks$missing"
 fi
 
-# lintian: no error. LINTIAN_KEPT are the warnings kept, each for a reason:
-#   no-symbols-control-file etc. do not arise (no shared library); the ones below do:
-#   - hardening-no-fortify-functions: the build's flags are the project's CMake flags, not
-#     dpkg-buildflags' (-D_FORTIFY_SOURCE=2); a Debian source package would add them.
-#   - groff-message: man-db's groff warns of lines it fills, harmless.
-LINTIAN_KEPT="hardening-no-fortify-functions"
-lintian --no-tag-display-limit --fail-on error --suppress-tags "$LINTIAN_KEPT" "$deb" \
-    >"$work/lintian" 2>&1 && lintian_status=0 || lintian_status=$?
+# lintian: no error, and today no warning either. With -I --pedantic it also says (kept, as
+# information only): hardening-no-bindnow and hardening-no-fortify-functions (the programs are
+# built with the project's CMake flags, not dpkg-buildflags' -D_FORTIFY_SOURCE=2 -Wl,-z,now,
+# which a Debian source package would add), binary-has-unneeded-section .comment (CPack's
+# strip keeps it), possible-documentation-but-no-doc-base-registration (doc-base is optional).
+# Running as root, lintian says it is not recommended: that line is left out below.
+lintian_status=0
+lintian --tag-display-limit 0 --fail-on error,warning "$deb" >"$work/lintian.out" 2>&1 ||
+    lintian_status=$?
+grep -v 'running with root privileges' "$work/lintian.out" >"$work/lintian" || true
 if [ $lintian_status -eq 0 ]; then
-    ok "lintian: no error$(grep -c '^W:' "$work/lintian" | sed 's/^0$//; s/^[1-9].*/ (& warnings, listed below)/')"
+    ok "lintian: no error, no warning"
 else
     bad "lintian"
 fi
@@ -174,8 +180,9 @@ complete_words() { # complete_words WORD...: what the completion offers for the 
         COMP_WORDS=("$@"); COMP_CWORD=$(($# - 1))
         COMP_LINE="$*"; COMP_POINT=${#COMP_LINE}
         _rungstudio_cli rungstudio-cli "${COMP_WORDS[COMP_CWORD]}" "${COMP_WORDS[COMP_CWORD-1]}"
-        printf "%s\n" "${COMPREPLY[@]}"' "$share/bash-completion/completions/rungstudio-cli" "$@"
+        printf "%s\n" "${COMPREPLY[@]}"' "$RUNG_COMPLETION" "$@"
 }
+export RUNG_COMPLETION=$share/bash-completion/completions/rungstudio-cli
 export -f complete_words
 check "completion: the commands" bash -c "[ \"\$(complete_words rungstudio-cli s | sort | tr '\n' ' ')\" = 'serve simulate ' ]"
 check "completion: an option of serve" bash -c "complete_words rungstudio-cli serve x.rung --pro | grep -qx -- --protocol"

@@ -18,6 +18,7 @@
 #include <QApplication>
 #include <QCommandLineParser>
 #include <QDockWidget>
+#include <QMenu>
 #include <QMessageBox>
 #include <QScreen>
 #include <QTimer>
@@ -160,7 +161,14 @@ int runGui(int argc, char **argv) {
                         return a;
                 return nullptr;
             };
-            if (dialog == QLatin1String("about")) {
+            if (dialog == QLatin1String("examples")) {
+                // File > Examples open at its first family, as found beside the program.
+                if (auto *examples = window.findChild<QMenu *>(QStringLiteral("examplesMenu"))) {
+                    examples->popup(window.mapToGlobal(QPoint(40, 40)));
+                    if (!examples->actions().isEmpty() && examples->actions().first()->menu())
+                        examples->setActiveAction(examples->actions().first());
+                }
+            } else if (dialog == QLatin1String("about")) {
                 if (auto *a = window.findChild<QAction *>(QStringLiteral("aboutAction")))
                     a->trigger();
             } else if (dialog == QLatin1String("save")) {

@@ -29,8 +29,12 @@ QString runInstalledTool(const QStringList &args) {
     return QString::fromUtf8(p.readAllStandardOutput());
 }
 
-QString cliManPage() {
-    return test::readText(QStringLiteral(RUNG_SOURCE_DIR "/packaging/man/rungstudio-cli.1"));
+// The page in English, Hungarian and Italian.
+const char *const kCliManPages[] = {"rungstudio-cli.1", "hu/rungstudio-cli.1",
+                                    "it/rungstudio-cli.1"};
+
+QString cliManPage(const char *page) {
+    return test::readText(QStringLiteral(RUNG_SOURCE_DIR "/packaging/man/") + QLatin1String(page));
 }
 
 QString cliProgramVersion() {
@@ -44,13 +48,15 @@ QString cliProgramVersion() {
 TEST(ManPage, CliOptionsAreThoseOfHelp) {
     const QString help = runInstalledTool({QStringLiteral("--help")});
     ASSERT_TRUE(help.contains(QLatin1String("usage:"))) << help.toStdString();
-    const QString page = cliManPage();
-    ASSERT_FALSE(page.isEmpty());
     const QStringList inHelp = test::optionsIn(help);
-    const QStringList inPage = test::optionsIn(test::manText(page));
     EXPECT_GE(inHelp.size(), 25);
-    EXPECT_EQ(inPage, inHelp) << "man: " << inPage.join(' ').toStdString()
-                              << "\nhelp: " << inHelp.join(' ').toStdString();
+    for (const char *name : kCliManPages) {
+        const QString page = cliManPage(name);
+        ASSERT_FALSE(page.isEmpty()) << name;
+        const QStringList inPage = test::optionsIn(test::manText(page));
+        EXPECT_EQ(inPage, inHelp) << name << "\nman: " << inPage.join(' ').toStdString()
+                                  << "\nhelp: " << inHelp.join(' ').toStdString();
+    }
 }
 
 TEST(ManPage, CliCommandsAreThoseOfHelp) {
@@ -62,19 +68,18 @@ TEST(ManPage, CliCommandsAreThoseOfHelp) {
         inHelp << it.next().captured(1);
     inHelp.removeDuplicates();
     inHelp.sort();
-    // The page's COMMANDS section: a tagged paragraph per command.
-    const QString page = test::manText(cliManPage());
-    const QString commands =
-        page.section(QStringLiteral(".SH COMMANDS"), 1).section(QStringLiteral(".SH "), 0, 0);
-    QStringList inPage;
+    EXPECT_GE(inHelp.size(), 8);
+    // A command is a tagged paragraph of its own (".TP" then ".B check").
     const QRegularExpression tagged(QStringLiteral("^\\.TP\\n\\.B ([a-z]+)$"),
                                     QRegularExpression::MultilineOption);
-    for (auto it = tagged.globalMatch(commands); it.hasNext();)
-        inPage << it.next().captured(1);
-    inPage.sort();
-    EXPECT_GE(inHelp.size(), 8);
-    EXPECT_EQ(inPage, inHelp) << "man: " << inPage.join(' ').toStdString()
-                              << "\nhelp: " << inHelp.join(' ').toStdString();
+    for (const char *name : kCliManPages) {
+        QStringList inPage;
+        for (auto it = tagged.globalMatch(test::manText(cliManPage(name))); it.hasNext();)
+            inPage << it.next().captured(1);
+        inPage.sort();
+        EXPECT_EQ(inPage, inHelp) << name << "\nman: " << inPage.join(' ').toStdString()
+                                  << "\nhelp: " << inHelp.join(' ').toStdString();
+    }
 }
 
 // The version a user reads in the man page's header, the package's changelog and the software
