@@ -186,6 +186,7 @@ export RUNG_COMPLETION=$share/bash-completion/completions/rungstudio-cli
 export -f complete_words
 check "completion: the commands" bash -c "[ \"\$(complete_words rungstudio-cli s | sort | tr '\n' ' ')\" = 'serve simulate ' ]"
 check "completion: an option of serve" bash -c "complete_words rungstudio-cli serve x.rung --pro | grep -qx -- --protocol"
+check "completion: serve's --pty takes no value" bash -c "complete_words rungstudio-cli serve x.rung --pty --st | grep -qx -- --station"
 check "completion: the targets" bash -c "[ \"\$(complete_words rungstudio-cli check x.il --target '' | tr '\n' ' ')\" = 'vpc vigor cpm1 pl110 ' ]"
 
 # ---- The package installed by dpkg (--dpkg) ----------------------------------------------------
