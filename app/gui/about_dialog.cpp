@@ -26,9 +26,8 @@ QIcon applicationIcon() {
     // the small drawings would be lost if the SVGs were added as files.
     QIcon icon;
     for (int size : {16, 22, 24, 32, 48, 64, 128, 256}) {
-        const QString file = size == 16 ? QStringLiteral(":/icons/rungstudio-16.svg")
-                             : size < 32
-                                 ? QStringLiteral(":/icons/rungstudio-24.svg")
+        const QString file = size < 32
+                                 ? QStringLiteral(":/icons/rungstudio-%1.svg").arg(size)
                                  : QStringLiteral(":/icons/io.github.rungstudio.RungStudio.svg");
         QSvgRenderer svg(file);
         QImage image(size, size, QImage::Format_ARGB32_Premultiplied);

@@ -8,8 +8,8 @@
 
 namespace rung::app {
 
-// The program's icon (resources/icons), drawn apart for 16 and 24 px so the rung stays legible
-// at the taskbar's and the title bar's sizes.
+// The program's icon (resources/icons), drawn apart for 16, 22 and 24 px so the rung stays
+// legible at the taskbar's and the title bar's sizes.
 QIcon applicationIcon();
 
 class AboutDialog : public QDialog {

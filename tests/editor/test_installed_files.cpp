@@ -176,19 +176,27 @@ TEST(About, IsOnTheHelpMenu) {
     EXPECT_EQ(about->text().remove(QLatin1Char('&')), QStringLiteral("About Rung Studio"));
 }
 
-// The window's and the taskbar's icon: the product's drawing, the 16 px size from its own
-// pixel-grid drawing rather than the large one shrunk.
-TEST(AppIcon, HasEverySizeAndItsOwnSixteenPixels) {
+// The window's and the taskbar's icon: the product's drawing, the 16, 22 and 24 px sizes from
+// their own pixel-grid drawings rather than the large one shrunk (blurred lines).
+TEST(AppIcon, HasEverySizeAndItsOwnSmallDrawings) {
     const QIcon icon = app::applicationIcon();
     ASSERT_FALSE(icon.isNull());
-    for (int size : {16, 24, 32, 48, 256})
-        EXPECT_FALSE(icon.pixmap(size, size).isNull()) << size;
-    const QImage small = icon.pixmap(16, 16).toImage().convertToFormat(QImage::Format_ARGB32);
-    const QImage drawn = QIcon(QStringLiteral(":/icons/rungstudio-16.svg"))
-                             .pixmap(16, 16)
-                             .toImage()
-                             .convertToFormat(QImage::Format_ARGB32);
-    EXPECT_EQ(small, drawn);
+    for (int size : {16, 22, 24, 32, 48, 256})
+        EXPECT_EQ(icon.pixmap(size, size).size(), QSize(size, size)) << size;
+    for (int size : {16, 22, 24}) {
+        const QImage small =
+            icon.pixmap(size, size).toImage().convertToFormat(QImage::Format_ARGB32);
+        const QImage drawn = QIcon(QStringLiteral(":/icons/rungstudio-%1.svg").arg(size))
+                                 .pixmap(size, size)
+                                 .toImage()
+                                 .convertToFormat(QImage::Format_ARGB32);
+        const QImage shrunk = QIcon(QStringLiteral(":/icons/io.github.rungstudio.RungStudio.svg"))
+                                  .pixmap(size, size)
+                                  .toImage()
+                                  .convertToFormat(QImage::Format_ARGB32);
+        EXPECT_EQ(small, drawn) << size;
+        EXPECT_NE(small, shrunk) << size;
+    }
 }
 
 // What the desktop entry offers to open (a double-click in a file manager), the window opens.
