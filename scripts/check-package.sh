@@ -162,12 +162,14 @@ man_options() { zcat "$1" | grep -v '^\.\\"' | sed 's/\\-/-/g' | options_in; }
 same_options() { # same_options MANPAGE PROGRAM
     diff <(man_options "$1") <(LANG=C LC_ALL=C QT_QPA_PLATFORM=offscreen "$2" --help | options_in)
 }
-check "rungstudio-cli.1 names the options of rungstudio-cli --help" \
-    same_options "$share/man/man1/rungstudio-cli.1.gz" "$cli"
-check "rungstudio.1 names the options of rungstudio --help" \
-    same_options "$share/man/man1/rungstudio.1.gz" "$prefix/bin/rungstudio"
+for language in "" hu/ it/; do
+    check "${language}rungstudio-cli.1 names the options of rungstudio-cli --help" \
+        same_options "$share/man/${language}man1/rungstudio-cli.1.gz" "$cli"
+    check "${language}rungstudio.1 names the options of rungstudio --help" \
+        same_options "$share/man/${language}man1/rungstudio.1.gz" "$prefix/bin/rungstudio"
+done
 check "the man pages read without a groff warning" bash -c "
-    for page in '$share'/man/man1/*.1.gz; do
+    for page in '$share'/man/man1/*.1.gz '$share'/man/*/man1/*.1.gz; do
         out=\$(LC_ALL=C.UTF-8 MANWIDTH=80 man --warnings -l \"\$page\" 2>&1 >/dev/null)
         [ -z \"\$out\" ] || { echo \"\$page: \$out\"; exit 1; }
     done"
