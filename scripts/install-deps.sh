@@ -10,6 +10,10 @@ packages=(
     libgtest-dev libbenchmark-dev
     xvfb xauth poppler-utils
     mbpoll libmodbus-dev python3-pymodbus python3-serial-asyncio socat
+    # The installed files and the .deb (packaging/, scripts/check-package.sh): icons rendered,
+    # docs as HTML, the package's dependencies found, and the checks of what it installs.
+    librsvg2-bin cmark-gfm dpkg-dev file desktop-file-utils appstream libxml2-utils lintian
+    shared-mime-info xdg-utils libfile-mimeinfo-perl hicolor-icon-theme bash-completion man-db
 )
 missing=()
 for p in "${packages[@]}"; do

@@ -1,8 +1,9 @@
 #!/usr/bin/env bash
 # Starts the IDE under Xvfb on a project (default: the Vigor traffic light) and saves a
 # picture of the window: bash scripts/screenshot.sh [FILE] [OUT.png] [tabs|side] [en|hu|it]
-# [new|save|open] (side: ladder and instruction list side by side, the README's picture; the
-# language of the interface; a dialog pictured over the window: the whole screen is saved).
+# [new|save|open|about|examples] (side: ladder and instruction list side by side, the README's
+# picture; the language of the interface; a dialog or File > Examples pictured over the window:
+# the whole screen is saved).
 # RUNG_SCREEN=1366x768 sets the screen's size (default 1600x1000). With openbox installed the
 # windows get their title bars (apt-get install openbox; not needed by the tests).
 set -euo pipefail

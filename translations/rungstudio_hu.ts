@@ -40,6 +40,64 @@
     </message>
 </context>
 <context>
+    <name>rung::app::AboutDialog</name>
+    <message>
+        <location filename="../app/gui/about_dialog.cpp" line="+51"/>
+        <source>About Rung Studio</source>
+        <translation>A Rung Studio névjegye</translation>
+    </message>
+    <message>
+        <location line="+10"/>
+        <source>Ladder and instruction-list editor for %1.</source>
+        <translation>Létradiagram- és utasításlista-szerkesztő a következő PLC-khez: %1.</translation>
+    </message>
+    <message>
+        <location line="+10"/>
+        <source>User guide</source>
+        <translation>Felhasználói kézikönyv</translation>
+    </message>
+    <message>
+        <location line="+5"/>
+        <source>The user guide is not installed beside the program.</source>
+        <translation>A felhasználói kézikönyv nincs telepítve a program mellé.</translation>
+    </message>
+    <message>
+        <location line="+9"/>
+        <source>GNU GPL, version 3 or later</source>
+        <translation>GNU GPL, 3. vagy későbbi változat</translation>
+    </message>
+    <message>
+        <location line="+2"/>
+        <source>GNU LGPL, version 3</source>
+        <translation>GNU LGPL, 3. változat</translation>
+    </message>
+    <message>
+        <location line="+2"/>
+        <source>GNU GPL, version 3</source>
+        <translation>GNU GPL, 3. változat</translation>
+    </message>
+    <message>
+        <location line="+3"/>
+        <source>GNU LGPL, version 3 or later</source>
+        <translation>GNU LGPL, 3. vagy későbbi változat</translation>
+    </message>
+    <message>
+        <location line="+2"/>
+        <source>Built with:</source>
+        <translation>Felhasznált összetevők:</translation>
+    </message>
+    <message>
+        <location line="+18"/>
+        <source>Copyright and licences</source>
+        <translation>Szerzői jog és licencek</translation>
+    </message>
+    <message>
+        <location line="+14"/>
+        <source>About &amp;Qt</source>
+        <translation>A &amp;Qt névjegye</translation>
+    </message>
+</context>
+<context>
     <name>rung::app::BreakpointDialog</name>
     <message>
         <location filename="../app/gui/breakpoint_dialog.cpp" line="+41"/>
@@ -120,7 +178,7 @@
 <context>
     <name>rung::app::Cli</name>
     <message>
-        <location filename="../app/cli/cli.cpp" line="+54"/>
+        <location filename="../app/cli/cli.cpp" line="+55"/>
         <location line="+45"/>
         <source>unexpected argument %1</source>
         <translation>váratlan argumentum: %1</translation>
@@ -131,26 +189,7 @@
         <translation>a --to értéke il, ladder vagy project lehet</translation>
     </message>
     <message>
-        <location line="-75"/>
-        <source>usage:
-  rungstudio-cli check FILE [--target %1] [--model M]
-  rungstudio-cli convert FILE [--target T] [--from il|ladder|project] --to il|ladder|project [-o OUT] [--force]
-  rungstudio-cli simulate FILE [--target T] --scans N [--period MS] [--set DEV=VALUE@SCAN]... --trace DEV[,DEV...]
-  rungstudio-cli serve FILE [--target T] --protocol vigor|modbus|modbus-tcp|hostlink (--pty | --port NAME | --tcp HOST:PORT) [--station N] [--baud B] [--period MS]
-FILE is a listing (.il), a ladder text (.ladder) or a project (.rung).
---lang en|hu|it: the language of the messages (else the locale&apos;s, LANG).
-Exit status: 0 no error, 1 the program has errors, 2 usage or I/O error.</source>
-        <translation>használat:
-  rungstudio-cli check FILE [--target %1] [--model M]
-  rungstudio-cli convert FILE [--target T] [--from il|ladder|project] --to il|ladder|project [-o OUT] [--force]
-  rungstudio-cli simulate FILE [--target T] --scans N [--period MS] [--set DEV=VALUE@SCAN]... --trace DEV[,DEV...]
-  rungstudio-cli serve FILE [--target T] --protocol vigor|modbus|modbus-tcp|hostlink (--pty | --port NAME | --tcp HOST:PORT) [--station N] [--baud B] [--period MS]
-A FILE utasításlista (.il), létra-szöveg (.ladder) vagy projekt (.rung).
---lang en|hu|it: az üzenetek nyelve (különben a területi beállításé, LANG).
-Kilépési kód: 0 nincs hiba, 1 a programban hiba van, 2 használati vagy I/O hiba.</translation>
-    </message>
-    <message>
-        <location line="+91"/>
+        <location line="+16"/>
         <source>nothing written: the list as typed would be lost</source>
         <translation>semmi sem íródott ki: a begépelt lista elveszne</translation>
     </message>
@@ -251,6 +290,25 @@ Kilépési kód: 0 nincs hiba, 1 a programban hiba van, 2 használati vagy I/O h
         <source>--lang must be one of %1</source>
         <translation>a --lang értéke csak ezek egyike lehet: %1</translation>
     </message>
+    <message>
+        <location filename="../app/cli/cli.cpp" line="-195"/>
+        <source>usage:
+  rungstudio-cli check FILE [--target %1] [--model M]
+  rungstudio-cli convert FILE [--target T] [--model M] [--from il|ladder|project] --to il|ladder|project [-o OUT] [--force]
+  rungstudio-cli simulate FILE [--target T] [--model M] --scans N [--period MS] [--set DEV=VALUE@SCAN]... --trace DEV[,DEV...]
+  rungstudio-cli serve FILE [--target T] [--model M] --protocol vigor|modbus|modbus-tcp|hostlink (--pty | --port NAME | --tcp HOST:PORT) [--station N] [--baud B] [--frame 8N1] [--period MS] [--fault KIND]
+FILE is a listing (.il), a ladder text (.ladder) or a project (.rung).
+--lang en|hu|it: the language of the messages (else the locale&apos;s, LANG).
+Exit status: 0 no error, 1 the program has errors, 2 usage or I/O error.</source>
+        <translation>használat:
+  rungstudio-cli check FILE [--target %1] [--model M]
+  rungstudio-cli convert FILE [--target T] [--model M] [--from il|ladder|project] --to il|ladder|project [-o OUT] [--force]
+  rungstudio-cli simulate FILE [--target T] [--model M] --scans N [--period MS] [--set DEV=VALUE@SCAN]... --trace DEV[,DEV...]
+  rungstudio-cli serve FILE [--target T] [--model M] --protocol vigor|modbus|modbus-tcp|hostlink (--pty | --port NAME | --tcp HOST:PORT) [--station N] [--baud B] [--frame 8N1] [--period MS] [--fault KIND]
+A FILE utasításlista (.il), létra-szöveg (.ladder) vagy projekt (.rung).
+--lang en|hu|it: az üzenetek nyelve (különben a területi beállításé, LANG).
+Kilépési kód: 0 nincs hiba, 1 a programban hiba van, 2 használati vagy I/O hiba.</translation>
+    </message>
 </context>
 <context>
     <name>rung::app::ConnectionPanel</name>
@@ -300,7 +358,7 @@ Kilépési kód: 0 nincs hiba, 1 a programban hiba van, 2 használati vagy I/O h
         <translation>Megszakítva: semmi sem lett elküldve a PLC-nek</translation>
     </message>
     <message>
-        <location filename="../app/gui/connection_panel.cpp" line="+256"/>
+        <location filename="../app/gui/connection_panel.cpp" line="+260"/>
         <source>Settings</source>
         <translation>Beállítások</translation>
     </message>
@@ -712,7 +770,7 @@ Válaszidő: %6 ms (átlag %7, max. %8); frissítés: %9 ms, %10 keret</translat
         <translation>Egyszerre egy fájl nyitható meg</translation>
     </message>
     <message>
-        <location filename="../app/gui/application.cpp" line="+44"/>
+        <location filename="../app/gui/application.cpp" line="+80"/>
         <source>Rung Studio</source>
         <translation>Rung Studio</translation>
     </message>
@@ -737,7 +795,7 @@ Válaszidő: %6 ms (átlag %7, max. %8); frissítés: %9 ms, %10 keret</translat
         <translation>Szimbólumok</translation>
     </message>
     <message>
-        <location filename="../app/gui/main_window_actions.cpp" line="+48"/>
+        <location filename="../app/gui/main_window_actions.cpp" line="+49"/>
         <source>&amp;File</source>
         <translation>&amp;Fájl</translation>
     </message>
@@ -767,7 +825,7 @@ Válaszidő: %6 ms (átlag %7, max. %8); frissítés: %9 ms, %10 keret</translat
         <translation>&amp;Példák</translation>
     </message>
     <message>
-        <location line="+1"/>
+        <location line="+2"/>
         <source>&amp;Save</source>
         <translation>M&amp;entés</translation>
     </message>
@@ -951,14 +1009,7 @@ Ctrl+Z / Ctrl+Y: visszavonás / mégis, Ctrl+görgő: nagyítás, F4: a program 
         <translation>Online: Ctrl+W online kapcsolódás / bontás, Ctrl+1 STOP (PROGRAM), Ctrl+3 MONITOR, Ctrl+4 RUN</translation>
     </message>
     <message>
-        <location line="+5"/>
-        <source>Rung Studio %1
-Ladder and instruction-list editor for %2.</source>
-        <translation>Rung Studio %1
-Létradiagram- és utasításlista-szerkesztő a következő PLC-khez: %2.</translation>
-    </message>
-    <message>
-        <location line="+17"/>
+        <location line="+22"/>
         <source>&amp;Undo</source>
         <translation>&amp;Visszavonás</translation>
     </message>
@@ -1110,11 +1161,6 @@ Létradiagram- és utasításlista-szerkesztő a következő PLC-khez: %2.</tran
         <translation>A Rung Studio &amp;névjegye</translation>
     </message>
     <message>
-        <location line="+1"/>
-        <source>About Rung Studio</source>
-        <translation>A Rung Studio névjegye</translation>
-    </message>
-    <message>
         <location filename="../app/gui/main_window.cpp" line="-321"/>
         <source>Rung Comment</source>
         <translation>Létrafok megjegyzése</translation>
@@ -1221,7 +1267,7 @@ Létradiagram- és utasításlista-szerkesztő a következő PLC-khez: %2.</tran
         <translation>%1. létrafok, %2. sor, %3. oszlop</translation>
     </message>
     <message>
-        <location filename="../app/gui/main_window_actions.cpp" line="+20"/>
+        <location filename="../app/gui/main_window_actions.cpp" line="+21"/>
         <source>&amp;Redo %1</source>
         <extracomment>%1 is the step&apos;s label, e.g. &quot;Insert rung&quot;</extracomment>
         <translation>&amp;Mégis: %1</translation>
@@ -1232,7 +1278,7 @@ Létradiagram- és utasításlista-szerkesztő a következő PLC-khez: %2.</tran
         <translation>&amp;Visszavonás: %1</translation>
     </message>
     <message>
-        <location filename="../app/gui/main_window_files.cpp" line="+63"/>
+        <location filename="../app/gui/main_window_files.cpp" line="+64"/>
         <location line="+7"/>
         <source>Recover</source>
         <translation>Helyreállítás</translation>
@@ -1253,7 +1299,7 @@ Létradiagram- és utasításlista-szerkesztő a következő PLC-khez: %2.</tran
         <translation>A fájl nem nyitható meg</translation>
     </message>
     <message>
-        <location line="+30"/>
+        <location line="+37"/>
         <source>Unknown target %1</source>
         <translation>Ismeretlen célrendszer: %1</translation>
     </message>
@@ -1373,7 +1419,7 @@ Létradiagram- és utasításlista-szerkesztő a következő PLC-khez: %2.</tran
         <translation>Létradiagram exportálása</translation>
     </message>
     <message>
-        <location line="+66"/>
+        <location line="+69"/>
         <source>Cannot open the example</source>
         <translation>A példa nem nyitható meg</translation>
     </message>
@@ -1822,6 +1868,11 @@ Létradiagram- és utasításlista-szerkesztő a következő PLC-khez: %2.</tran
         <location line="+6"/>
         <source>Go &amp;Offline</source>
         <translation>&amp;Offline (kapcsolat bontása)</translation>
+    </message>
+    <message>
+        <location filename="../app/gui/main_window_files.cpp" line="-307"/>
+        <source>%1: this version of Rung Studio cannot open networks (.rungnet) or test scenarios (.rungtest) in the window yet</source>
+        <translation>%1: a Rung Studio ezen változata az ablakban még nem tud hálózatot (.rungnet) vagy tesztforgatókönyvet (.rungtest) megnyitni</translation>
     </message>
 </context>
 <context>

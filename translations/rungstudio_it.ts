@@ -40,6 +40,64 @@
     </message>
 </context>
 <context>
+    <name>rung::app::AboutDialog</name>
+    <message>
+        <location filename="../app/gui/about_dialog.cpp" line="+51"/>
+        <source>About Rung Studio</source>
+        <translation>Informazioni su Rung Studio</translation>
+    </message>
+    <message>
+        <location line="+10"/>
+        <source>Ladder and instruction-list editor for %1.</source>
+        <translation>Editor di schemi ladder e liste istruzioni per %1.</translation>
+    </message>
+    <message>
+        <location line="+10"/>
+        <source>User guide</source>
+        <translation>Guida utente</translation>
+    </message>
+    <message>
+        <location line="+5"/>
+        <source>The user guide is not installed beside the program.</source>
+        <translation>La guida utente non è installata accanto al programma.</translation>
+    </message>
+    <message>
+        <location line="+9"/>
+        <source>GNU GPL, version 3 or later</source>
+        <translation>GNU GPL, versione 3 o successiva</translation>
+    </message>
+    <message>
+        <location line="+2"/>
+        <source>GNU LGPL, version 3</source>
+        <translation>GNU LGPL, versione 3</translation>
+    </message>
+    <message>
+        <location line="+2"/>
+        <source>GNU GPL, version 3</source>
+        <translation>GNU GPL, versione 3</translation>
+    </message>
+    <message>
+        <location line="+3"/>
+        <source>GNU LGPL, version 3 or later</source>
+        <translation>GNU LGPL, versione 3 o successiva</translation>
+    </message>
+    <message>
+        <location line="+2"/>
+        <source>Built with:</source>
+        <translation>Realizzato con:</translation>
+    </message>
+    <message>
+        <location line="+18"/>
+        <source>Copyright and licences</source>
+        <translation>Copyright e licenze</translation>
+    </message>
+    <message>
+        <location line="+14"/>
+        <source>About &amp;Qt</source>
+        <translation>Informazioni su &amp;Qt</translation>
+    </message>
+</context>
+<context>
     <name>rung::app::BreakpointDialog</name>
     <message>
         <location filename="../app/gui/breakpoint_dialog.cpp" line="+41"/>
@@ -120,7 +178,7 @@
 <context>
     <name>rung::app::Cli</name>
     <message>
-        <location filename="../app/cli/cli.cpp" line="+54"/>
+        <location filename="../app/cli/cli.cpp" line="+55"/>
         <location line="+45"/>
         <source>unexpected argument %1</source>
         <translation>argomento non previsto: %1</translation>
@@ -131,26 +189,7 @@
         <translation>--to deve essere il, ladder o project</translation>
     </message>
     <message>
-        <location line="-75"/>
-        <source>usage:
-  rungstudio-cli check FILE [--target %1] [--model M]
-  rungstudio-cli convert FILE [--target T] [--from il|ladder|project] --to il|ladder|project [-o OUT] [--force]
-  rungstudio-cli simulate FILE [--target T] --scans N [--period MS] [--set DEV=VALUE@SCAN]... --trace DEV[,DEV...]
-  rungstudio-cli serve FILE [--target T] --protocol vigor|modbus|modbus-tcp|hostlink (--pty | --port NAME | --tcp HOST:PORT) [--station N] [--baud B] [--period MS]
-FILE is a listing (.il), a ladder text (.ladder) or a project (.rung).
---lang en|hu|it: the language of the messages (else the locale&apos;s, LANG).
-Exit status: 0 no error, 1 the program has errors, 2 usage or I/O error.</source>
-        <translation>uso:
-  rungstudio-cli check FILE [--target %1] [--model M]
-  rungstudio-cli convert FILE [--target T] [--from il|ladder|project] --to il|ladder|project [-o OUT] [--force]
-  rungstudio-cli simulate FILE [--target T] --scans N [--period MS] [--set DEV=VALUE@SCAN]... --trace DEV[,DEV...]
-  rungstudio-cli serve FILE [--target T] --protocol vigor|modbus|modbus-tcp|hostlink (--pty | --port NAME | --tcp HOST:PORT) [--station N] [--baud B] [--period MS]
-FILE è una lista istruzioni (.il), un testo ladder (.ladder) o un progetto (.rung).
---lang en|hu|it: la lingua dei messaggi (altrimenti quella della localizzazione, LANG).
-Codice di uscita: 0 nessun errore, 1 il programma contiene errori, 2 errore di utilizzo o di I/O.</translation>
-    </message>
-    <message>
-        <location line="+91"/>
+        <location line="+16"/>
         <source>nothing written: the list as typed would be lost</source>
         <translation>non è stato scritto nulla: la lista digitata andrebbe persa</translation>
     </message>
@@ -251,6 +290,25 @@ Codice di uscita: 0 nessun errore, 1 il programma contiene errori, 2 errore di u
         <source>--lang must be one of %1</source>
         <translation>--lang deve essere uno tra %1</translation>
     </message>
+    <message>
+        <location filename="../app/cli/cli.cpp" line="-195"/>
+        <source>usage:
+  rungstudio-cli check FILE [--target %1] [--model M]
+  rungstudio-cli convert FILE [--target T] [--model M] [--from il|ladder|project] --to il|ladder|project [-o OUT] [--force]
+  rungstudio-cli simulate FILE [--target T] [--model M] --scans N [--period MS] [--set DEV=VALUE@SCAN]... --trace DEV[,DEV...]
+  rungstudio-cli serve FILE [--target T] [--model M] --protocol vigor|modbus|modbus-tcp|hostlink (--pty | --port NAME | --tcp HOST:PORT) [--station N] [--baud B] [--frame 8N1] [--period MS] [--fault KIND]
+FILE is a listing (.il), a ladder text (.ladder) or a project (.rung).
+--lang en|hu|it: the language of the messages (else the locale&apos;s, LANG).
+Exit status: 0 no error, 1 the program has errors, 2 usage or I/O error.</source>
+        <translation>uso:
+  rungstudio-cli check FILE [--target %1] [--model M]
+  rungstudio-cli convert FILE [--target T] [--model M] [--from il|ladder|project] --to il|ladder|project [-o OUT] [--force]
+  rungstudio-cli simulate FILE [--target T] [--model M] --scans N [--period MS] [--set DEV=VALUE@SCAN]... --trace DEV[,DEV...]
+  rungstudio-cli serve FILE [--target T] [--model M] --protocol vigor|modbus|modbus-tcp|hostlink (--pty | --port NAME | --tcp HOST:PORT) [--station N] [--baud B] [--frame 8N1] [--period MS] [--fault KIND]
+FILE è una lista istruzioni (.il), un testo ladder (.ladder) o un progetto (.rung).
+--lang en|hu|it: la lingua dei messaggi (altrimenti quella della localizzazione, LANG).
+Codice di uscita: 0 nessun errore, 1 il programma contiene errori, 2 errore di utilizzo o di I/O.</translation>
+    </message>
 </context>
 <context>
     <name>rung::app::ConnectionPanel</name>
@@ -300,7 +358,7 @@ Codice di uscita: 0 nessun errore, 1 il programma contiene errori, 2 errore di u
         <translation>Annullato: nulla è stato inviato al PLC</translation>
     </message>
     <message>
-        <location filename="../app/gui/connection_panel.cpp" line="+256"/>
+        <location filename="../app/gui/connection_panel.cpp" line="+260"/>
         <source>Settings</source>
         <translation>Impostazioni</translation>
     </message>
@@ -712,7 +770,7 @@ Andata e ritorno %6 ms (media %7, max %8); aggiornamento %9 ms, %10 frame</trans
         <translation>Aprire un solo file alla volta</translation>
     </message>
     <message>
-        <location filename="../app/gui/application.cpp" line="+44"/>
+        <location filename="../app/gui/application.cpp" line="+80"/>
         <source>Rung Studio</source>
         <translation>Rung Studio</translation>
     </message>
@@ -737,7 +795,7 @@ Andata e ritorno %6 ms (media %7, max %8); aggiornamento %9 ms, %10 frame</trans
         <translation>Simboli</translation>
     </message>
     <message>
-        <location filename="../app/gui/main_window_actions.cpp" line="+48"/>
+        <location filename="../app/gui/main_window_actions.cpp" line="+49"/>
         <source>&amp;File</source>
         <translation>&amp;File</translation>
     </message>
@@ -767,7 +825,7 @@ Andata e ritorno %6 ms (media %7, max %8); aggiornamento %9 ms, %10 frame</trans
         <translation>Ese&amp;mpi</translation>
     </message>
     <message>
-        <location line="+1"/>
+        <location line="+2"/>
         <source>&amp;Save</source>
         <translation>&amp;Salva</translation>
     </message>
@@ -951,14 +1009,7 @@ Ctrl+Z / Ctrl+Y: annulla / ripeti, Ctrl+rotellina: zoom, F4: verifica il program
         <translation>In linea: Ctrl+W vai online / offline, Ctrl+1 STOP (PROGRAM), Ctrl+3 MONITOR, Ctrl+4 RUN</translation>
     </message>
     <message>
-        <location line="+5"/>
-        <source>Rung Studio %1
-Ladder and instruction-list editor for %2.</source>
-        <translation>Rung Studio %1
-Editor di schemi ladder e liste istruzioni per %2.</translation>
-    </message>
-    <message>
-        <location line="+17"/>
+        <location line="+22"/>
         <source>&amp;Undo</source>
         <translation>&amp;Annulla</translation>
     </message>
@@ -1110,11 +1161,6 @@ Editor di schemi ladder e liste istruzioni per %2.</translation>
         <translation>&amp;Informazioni su Rung Studio</translation>
     </message>
     <message>
-        <location line="+1"/>
-        <source>About Rung Studio</source>
-        <translation>Informazioni su Rung Studio</translation>
-    </message>
-    <message>
         <location filename="../app/gui/main_window.cpp" line="-321"/>
         <source>Rung Comment</source>
         <translation>Commento del segmento</translation>
@@ -1223,7 +1269,7 @@ Editor di schemi ladder e liste istruzioni per %2.</translation>
         <translation>Segmento %1, riga %2, colonna %3</translation>
     </message>
     <message>
-        <location filename="../app/gui/main_window_actions.cpp" line="+20"/>
+        <location filename="../app/gui/main_window_actions.cpp" line="+21"/>
         <source>&amp;Redo %1</source>
         <extracomment>%1 is the step&apos;s label, e.g. &quot;Insert rung&quot;</extracomment>
         <translation>&amp;Ripeti %1</translation>
@@ -1234,7 +1280,7 @@ Editor di schemi ladder e liste istruzioni per %2.</translation>
         <translation>&amp;Annulla %1</translation>
     </message>
     <message>
-        <location filename="../app/gui/main_window_files.cpp" line="+63"/>
+        <location filename="../app/gui/main_window_files.cpp" line="+64"/>
         <location line="+7"/>
         <source>Recover</source>
         <translation>Ripristino</translation>
@@ -1255,7 +1301,7 @@ Editor di schemi ladder e liste istruzioni per %2.</translation>
         <translation>Impossibile aprire il file</translation>
     </message>
     <message>
-        <location line="+30"/>
+        <location line="+37"/>
         <source>Unknown target %1</source>
         <translation>Famiglia PLC sconosciuta: %1</translation>
     </message>
@@ -1375,7 +1421,7 @@ Editor di schemi ladder e liste istruzioni per %2.</translation>
         <translation>Esporta schema ladder</translation>
     </message>
     <message>
-        <location line="+66"/>
+        <location line="+69"/>
         <source>Cannot open the example</source>
         <translation>Impossibile aprire l&apos;esempio</translation>
     </message>
@@ -1827,6 +1873,11 @@ Editor di schemi ladder e liste istruzioni per %2.</translation>
         <location line="+6"/>
         <source>Go &amp;Offline</source>
         <translation>Vai &amp;offline</translation>
+    </message>
+    <message>
+        <location filename="../app/gui/main_window_files.cpp" line="-307"/>
+        <source>%1: this version of Rung Studio cannot open networks (.rungnet) or test scenarios (.rungtest) in the window yet</source>
+        <translation>%1: questa versione di Rung Studio non può ancora aprire nella finestra reti (.rungnet) o scenari di test (.rungtest)</translation>
     </message>
 </context>
 <context>

@@ -29,21 +29,22 @@ struct Tr {
 QString usage() {
     return Tr::tr("usage:\n"
                   "  rungstudio-cli check FILE [--target %1] [--model M]\n"
-                  "  rungstudio-cli convert FILE [--target T] [--from il|ladder|project] --to "
-                  "il|ladder|project "
+                  "  rungstudio-cli convert FILE [--target T] [--model M] [--from "
+                  "il|ladder|project] --to il|ladder|project "
                   "[-o OUT] [--force]\n"
-                  "  rungstudio-cli simulate FILE [--target T] --scans N [--period MS] [--set "
-                  "DEV=VALUE@SCAN]... "
+                  "  rungstudio-cli simulate FILE [--target T] [--model M] --scans N [--period "
+                  "MS] [--set DEV=VALUE@SCAN]... "
                   "--trace DEV[,DEV...]\n"
-                  "  rungstudio-cli serve FILE [--target T] --protocol "
+                  "  rungstudio-cli serve FILE [--target T] [--model M] --protocol "
                   "vigor|modbus|modbus-tcp|hostlink (--pty | --port NAME | --tcp HOST:PORT) "
-                  "[--station N] [--baud B] [--period MS]\n"
+                  "[--station N] [--baud B] [--frame 8N1] [--period MS] [--fault KIND]\n"
                   "FILE is a listing (.il), a ladder text (.ladder) or a project (.rung).\n"
                   "--lang en|hu|it: the language of the messages (else the locale's, LANG).\n"
                   "Exit status: 0 no error, 1 the program has errors, 2 usage or I/O error.")
                .arg(model::targetIds().join(QLatin1Char('|'))) +
            QLatin1Char('\n') + onlineUsage() + QLatin1Char('\n') + recordUsage() +
-           QLatin1Char('\n') + terminalUsage();
+           QLatin1Char('\n') + terminalUsage() + QLatin1Char('\n') +
+           QStringLiteral("  rungstudio-cli --help | --version");
 }
 
 int check(const QStringList &args, QTextStream &out, QTextStream &err) {

@@ -1,5 +1,6 @@
 #include "application.h"
 
+#include "about_dialog.h"
 #include "command_line.h"
 #include "dialogs.h"
 #include "language.h"
@@ -17,24 +18,59 @@
 #include <QApplication>
 #include <QCommandLineParser>
 #include <QDockWidget>
+#include <QMenu>
 #include <QMessageBox>
 #include <QScreen>
 #include <QTimer>
 
 namespace rung::app {
 
+namespace {
+
+void nameApplication() {
+    QCoreApplication::setOrganizationName(QStringLiteral("RungStudio"));
+    QCoreApplication::setApplicationName(QStringLiteral("Rung Studio"));
+    QCoreApplication::setApplicationVersion(QStringLiteral(RUNG_VERSION));
+}
+
+// --help and --version answer without a display, as other programs' do (a package's scripts
+// and the man page's test ask them on machines that have none).
+bool asksForHelpOrVersion(int argc, char **argv) {
+    for (int i = 1; i < argc; ++i) {
+        const QByteArray arg(argv[i]);
+        if (arg == "--") // what follows is a file name
+            return false;
+        if (arg == "-h" || arg == "--help" || arg == "--help-all" || arg == "-v" ||
+            arg == "--version" || arg == "-?")
+            return true;
+    }
+    return false;
+}
+
+} // namespace
+
 int runGui(int argc, char **argv) {
+    if (asksForHelpOrVersion(argc, argv)) {
+        QCoreApplication app(argc, argv);
+        nameApplication();
+        setLanguage(startLanguage(), false);
+        QCommandLineParser parser;
+        describeGuiArguments(parser);
+        parser.process(app); // prints and exits
+        return 0;
+    }
     QApplication app(argc, argv);
-    QApplication::setOrganizationName(QStringLiteral("RungStudio"));
-    QApplication::setApplicationName(QStringLiteral("Rung Studio"));
-    QApplication::setApplicationVersion(QStringLiteral(RUNG_VERSION));
+    nameApplication();
+    // The taskbar's icon: the window's on X11, the desktop entry's (by its name) on Wayland.
+    QApplication::setWindowIcon(applicationIcon());
+    QGuiApplication::setDesktopFileName(QStringLiteral("io.github.rungstudio.RungStudio"));
 
     // The language chosen in the Language menu, else the system's when we have it.
     setLanguage(startLanguage(), false);
 
     QCommandLineParser parser;
     describeGuiArguments(parser);
-    parser.process(app); // --help, --version and unknown options end here
+    parser.process(app); // unknown options end here
     const GuiArguments arguments = readGuiArguments(parser);
 
     MainWindow window;
@@ -125,7 +161,17 @@ int runGui(int argc, char **argv) {
                         return a;
                 return nullptr;
             };
-            if (dialog == QLatin1String("save")) {
+            if (dialog == QLatin1String("examples")) {
+                // File > Examples open at its first family, as found beside the program.
+                if (auto *examples = window.findChild<QMenu *>(QStringLiteral("examplesMenu"))) {
+                    examples->popup(window.mapToGlobal(QPoint(40, 40)));
+                    if (!examples->actions().isEmpty() && examples->actions().first()->menu())
+                        examples->setActiveAction(examples->actions().first());
+                }
+            } else if (dialog == QLatin1String("about")) {
+                if (auto *a = window.findChild<QAction *>(QStringLiteral("aboutAction")))
+                    a->trigger();
+            } else if (dialog == QLatin1String("save")) {
                 window.document()->markUnsaved();
                 window.close();
             } else if (QAction *a = byKey(dialog == QLatin1String("open") ? QKeySequence::Open

@@ -1,5 +1,6 @@
 #include "main_window.h"
 
+#include "about_dialog.h"
 #include "dialogs.h"
 #include "file_dialogs.h"
 #include "language.h"
@@ -66,6 +67,7 @@ void MainWindow::buildActions() {
     open->setShortcut(QKeySequence::Open);
     m_recentMenu = file->addMenu(tr("Open &Recent"));
     m_examplesMenu = file->addMenu(tr("E&xamples"));
+    m_examplesMenu->setObjectName(QStringLiteral("examplesMenu"));
     QAction *save = file->addAction(editor::toolIcon(editor::ToolIcon::SaveFile), tr("&Save"), this,
                                     &MainWindow::fileSave);
     save->setShortcut(QKeySequence::Save);
@@ -312,12 +314,12 @@ void MainWindow::buildActions() {
                 tr("Online: Ctrl+W go online / offline, Ctrl+1 STOP (PROGRAM), Ctrl+3 MONITOR, "
                    "Ctrl+4 RUN"));
     });
-    help->addAction(tr("&About Rung Studio"), this, [this] {
-        messageBox(QMessageBox::Information, this, tr("About Rung Studio"),
-                   tr("Rung Studio %1\nLadder and instruction-list editor for %2.")
-                       .arg(QApplication::applicationVersion(),
-                            model::targetDisplayNames().join(QStringLiteral(", "))));
+    QAction *about = help->addAction(tr("&About Rung Studio"), this, [this] {
+        AboutDialog dialog(this);
+        dialog.exec();
     });
+    about->setObjectName(QStringLiteral("aboutAction"));
+    about->setMenuRole(QAction::AboutRole);
     rebuildRecentMenu();
     rebuildExamplesMenu();
 }

@@ -3,6 +3,7 @@
 
 #include "app/gui/example_titles.h"
 #include "app/gui/file_dialogs.h"
+#include "app/gui/installed_files.h"
 #include "app/gui/language.h"
 #include "app/gui/main_window.h"
 #include "editor/il_editor.h"
@@ -74,7 +75,8 @@ TEST(FilesMenu, ExamplesHaveReadableTitles) {
 // would show its file name in every language).
 TEST(FilesMenu, EveryExampleNamedInWordsHasATranslatableTitle) {
     const QStringList titled = app::examplesWithTitles();
-    QDirIterator it(QStringLiteral(":/examples"), {QStringLiteral("*.rung")}, QDir::Files,
+    ASSERT_FALSE(app::examplesFolder().isEmpty());
+    QDirIterator it(app::examplesFolder(), {QStringLiteral("*.rung")}, QDir::Files,
                     QDirIterator::Subdirectories);
     int examples = 0;
     while (it.hasNext()) {
@@ -93,7 +95,8 @@ TEST(FilesMenu, EveryExampleNamedInWordsHasATranslatableTitle) {
 // The examples speak to the user about the program, not about where they came from: no
 // "seed 004 1.9" or docs file names in their comments.
 TEST(FilesMenu, ExampleCommentsSpeakTheUsersWords) {
-    QDirIterator it(QStringLiteral(":/examples"), {QStringLiteral("*.rung")}, QDir::Files,
+    ASSERT_FALSE(app::examplesFolder().isEmpty());
+    QDirIterator it(app::examplesFolder(), {QStringLiteral("*.rung")}, QDir::Files,
                     QDirIterator::Subdirectories);
     const QRegularExpression sources(QStringLiteral("\\bseed\\b|docs/|\\.md\\b|manual"),
                                      QRegularExpression::CaseInsensitiveOption);
