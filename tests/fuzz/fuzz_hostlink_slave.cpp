@@ -22,19 +22,40 @@ extern "C" int LLVMFuzzerTestOneInput(const std::uint8_t *data, std::size_t size
     auto image = std::make_shared<slave::MemoryImage>(target, modes[in.byte() % 3]);
     slave::HostLinkResponder responder(target, map, unit, image);
     const QByteArray own = "@" + QByteArray::number(unit).rightJustified(2, '0');
-    const auto valid = [&own](const QByteArray &f) {
-        if (f == QByteArray(1, hostlink::Cr))
-            return true;
-        if (f.size() > hostlink::MaxFirstFrame || !f.endsWith(hostlink::Cr))
-            return false;
-        if (f.startsWith('@') && !f.startsWith(own))
-            return false;
-        // FCS "*" CR ends the last part, FCS CR each other one.
-        const qsizetype fcsAt = f.size() - (f.endsWith("*\r") ? 4 : 3);
-        return fcsAt >= 0 && hostlink::fcs(QByteArrayView(f).first(fcsAt)) == f.mid(fcsAt, 2);
-    };
     // A command in parts and the parts of an answer not asked for yet.
     const qsizetype bound = hostlink::CommandDecoder::MaxBuffered + 2 * hostlink::MaxText;
-    fuzz::serveAll(in, responder, bound, false, valid);
+    bool pending = false; // parts of an answer wait for the master's CR
+    while (!in.done()) {
+        const QByteArray chunk = in.chunk();
+        const QByteArrayList out = responder.feed(chunk);
+        // A CR first asks for the next part; anything else gives the rest of the answer up.
+        bool later = pending && !chunk.isEmpty() && chunk.front() == hostlink::Cr;
+        if (!chunk.isEmpty() && !later)
+            pending = false;
+        for (const QByteArray &f : out) {
+            if (f == QByteArray(1, hostlink::Cr))
+                continue; // the delimiter: send the command's next part
+            // FCS "*" CR ends an answer's last part, FCS CR each other one.
+            const qsizetype fcsAt = f.size() - (f.endsWith("*\r") ? 4 : 3);
+            const bool framed = f.size() <= hostlink::MaxFirstFrame && f.endsWith(hostlink::Cr) &&
+                                fcsAt >= 0 &&
+                                hostlink::fcs(QByteArrayView(f).first(fcsAt)) == f.mid(fcsAt, 2);
+            // The first part of an answer names this unit; a later part holds data only.
+            const bool placed = later ? !f.startsWith('@') : f.startsWith(own);
+            if (!framed || !placed) {
+                std::fprintf(stderr, "the slave sent a frame that is not one: %s\n",
+                             f.toHex(' ').constData());
+                std::abort();
+            }
+            later = false;
+            pending = !f.endsWith("*\r");
+        }
+        if (responder.buffered() > bound) {
+            std::fprintf(stderr, "the slave holds %lld bytes, its bound is %lld\n",
+                         static_cast<long long>(responder.buffered()),
+                         static_cast<long long>(bound));
+            std::abort();
+        }
+    }
     return 0;
 }
