@@ -105,7 +105,7 @@ std::vector<Driver::Placement> Driver::placementsOf(const model::Address &addres
         const model::BitRef ref = m_layout->bit(a);
         if (!pa || !ref.valid())
             return;
-        out.push_back({{pa->space, pa->unit, 1}, pa->bit, ref.word, ref.mask, 1, false});
+        out.push_back({{pa->space, pa->unit, 1}, pa->bit, ref.word, ref.mask, 1});
     };
     const auto valueOf = [&](const model::Address &a, int word) {
         const auto pa = where(a, DevicePart::Value);

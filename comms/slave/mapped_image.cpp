@@ -63,6 +63,23 @@ std::optional<bool> MappedImage::bitValue(const model::Snapshot &s, OperatingMod
     return s.bit(a);
 }
 
+std::vector<model::MappedDevice> MappedImage::withBankMates(const model::MappedDevice &d) const {
+    std::vector<model::MappedDevice> out{d};
+    const int bank = m_target->area(d.area).bank;
+    if (bank < 0)
+        return out;
+    for (std::size_t k = 0; k < m_target->areas.size(); ++k) {
+        const model::Area &other = m_target->areas[k];
+        if (int(k) != d.area && other.bank == bank && d.index >= other.first &&
+            d.index <= other.last) {
+            model::MappedDevice mate = d;
+            mate.area = int(k);
+            out.push_back(mate);
+        }
+    }
+    return out;
+}
+
 std::uint32_t MappedImage::value(const model::Snapshot &s, OperatingMode mode,
                                  const model::Address &a) const {
     auto v = static_cast<std::uint32_t>(s.value(a));
@@ -91,12 +108,22 @@ MappedImage::Units MappedImage::read(const model::Snapshot &s, OperatingMode mod
         }
         if (const auto d = device(space, unit); d && (width == 1 || d->part == DevicePart::Value)) {
             if (width == 1) {
-                const std::optional<bool> on = bitValue(s, mode, *d);
-                if (!on)
+                bool known = true;
+                bool on = false;
+                for (const model::MappedDevice &m : withBankMates(*d)) {
+                    const std::optional<bool> b = bitValue(s, mode, m);
+                    known = known && b.has_value();
+                    on = on || b.value_or(false);
+                }
+                if (!known)
                     return refuse(Refusal::NotServed);
-                out.values.push_back(*on ? 1 : 0);
+                out.values.push_back(on ? 1 : 0);
             } else {
-                const std::uint32_t v = value(s, mode, addressOf(*d)) >> (d->unitOffset * width);
+                std::uint32_t whole = 0;
+                for (const model::MappedDevice &m : withBankMates(*d))
+                    if ((whole = value(s, mode, addressOf(m))) != 0)
+                        break;
+                const std::uint32_t v = whole >> (d->unitOffset * width);
                 out.values.push_back(std::uint16_t(v & unitMask(width)));
             }
             continue;
@@ -165,12 +192,15 @@ MappedImage::Change MappedImage::write(const model::Snapshot &s, ProtocolSpace s
             }
             if (d->readOnly)
                 return refuse(Refusal::ReadOnly, unit);
-            const model::Address a = addressOf(*d);
-            auto [it, added] = wholeValues.try_emplace(a, static_cast<std::uint32_t>(s.value(a)));
-            if (added)
-                order.push_back(a);
-            const int shift = d->unitOffset * width;
-            it->second = (it->second & ~(unitMask(width) << shift)) | (v << shift);
+            for (const model::MappedDevice &m : withBankMates(*d)) {
+                const model::Address a = addressOf(m);
+                auto [it, added] =
+                    wholeValues.try_emplace(a, static_cast<std::uint32_t>(s.value(a)));
+                if (added)
+                    order.push_back(a);
+                const int shift = d->unitOffset * width;
+                it->second = (it->second & ~(unitMask(width) << shift)) | (v << shift);
+            }
             continue;
         }
         if (width == 1)

@@ -147,7 +147,7 @@ TEST(VirtualPlc, VigorCp2ModbusTcpAndTheLinkOnAPty) {
 TEST(VirtualPlc, VigorLinkReadsTheTimerAndCounterCoilsTheProgramDrives) {
     // The Vigor M/VB/VH communication manual, B-5-3: T0..T255's coils at 0780h..079Fh,
     // C0..C255's at 07A0h..07BFh. T5's coil follows M0, C3's follows M1.
-    VirtualPlcUnderTest v("; target: vigor\nLD M0\nOUT T5 K1000\nLD M1\nOUT C3 K5\nEND\n",
+    VirtualPlcUnderTest v("; target: vigor\nLD M0\nTMR T5 K1000\nLD M1\nCNT C3 K5\nEND\n",
                           {ProtocolId::VigorLink, {}, 0}, false);
     ASSERT_TRUE(v.ready());
     PtyTransport pty(v.path);
