@@ -1,7 +1,9 @@
 #!/usr/bin/env bash
 # Builds the libFuzzer targets with clang (ASan + UBSan) and runs each for SECONDS:
 #   bash scripts/fuzz.sh [SECONDS] [fuzz_il_parser|fuzz_project_loader|fuzz_vigor_reply|
-#                                   fuzz_modbus_reply|fuzz_hostlink_reply]
+#                                   fuzz_modbus_reply|fuzz_hostlink_reply|fuzz_vigor_slave|
+#                                   fuzz_modbus_rtu_slave|fuzz_modbus_tcp_slave|
+#                                   fuzz_hostlink_slave]
 # Corpora start from the project's own listings, ladders and projects; findings land in
 # build-fuzz/findings/.
 set -euo pipefail
@@ -11,8 +13,12 @@ only="${2:-}"
 bash scripts/install-deps.sh
 CC=clang CXX=clang++ cmake -S . -B build-fuzz -G Ninja -DCMAKE_BUILD_TYPE=RelWithDebInfo \
     -DRUNG_BUILD_FUZZERS=ON -DRUNG_BUILD_GUI=OFF -DRUNG_BUILD_BENCHMARKS=OFF >/dev/null
-comms_fuzzers=(fuzz_vigor_reply fuzz_modbus_reply fuzz_hostlink_reply)
-cmake --build build-fuzz --target fuzz_il_parser fuzz_project_loader "${comms_fuzzers[@]}"
+# The reply decoders of the masters, and the slaves whole (the virtual PLC's request side).
+comms_fuzzers=(fuzz_vigor_reply fuzz_modbus_reply fuzz_hostlink_reply fuzz_vigor_slave
+    fuzz_modbus_rtu_slave fuzz_modbus_tcp_slave fuzz_hostlink_slave)
+targets=(fuzz_il_parser fuzz_project_loader "${comms_fuzzers[@]}")
+[ -n "$only" ] && targets=("$only")
+cmake --build build-fuzz --target "${targets[@]}"
 mkdir -p build-fuzz/corpus/il build-fuzz/corpus/project build-fuzz/findings
 # The IL fuzzer reads the first byte as the target (Family: 0 VPC, 1 Vigor, 2 CPM1, 3 PL110);
 # each listing is seeded with its own family, named by the file's prefix.

@@ -373,6 +373,21 @@ Snapshot Engine::snapshot() const {
     if (m_record)
         s.powerFlow.assign(m_flow.begin(), m_flow.end());
     s.pause = pausePosition();
+    // The coils, from the element states: a timer's input as its box last ran (running), a
+    // counter's count input (previous, bit 0; the UP input of an up/down counter).
+    const MemoryLayout &l = layout();
+    s.coils.assign(m_states.size(), false);
+    for (int k = 0; k < l.areaCount(); ++k) {
+        const AreaLayout &a = l.area(k);
+        if (a.stateBase < 0)
+            continue;
+        for (int e = 0; e < a.count; ++e) {
+            const auto slot = static_cast<std::size_t>(a.stateBase + e);
+            const ElementState &st = m_states[slot];
+            s.coils[slot] =
+                a.kind == model::AreaKind::Timer ? st.running != 0 : (st.previous & 1) != 0;
+        }
+    }
     return s;
 }
 

@@ -383,12 +383,7 @@ Kilépési kód: 0 nincs hiba, 1 a programban hiba van, 2 használati vagy I/O h
         <translation>Port:</translation>
     </message>
     <message>
-        <location line="+1"/>
-        <source>A serial port, or a path typed in (a pseudo-terminal such as the one &apos;rungstudio-cli serve --pty&apos; prints)</source>
-        <translation>Soros port, vagy beírt elérési út (például az a pszeudoterminál, amelyet a &apos;rungstudio-cli serve --pty&apos; kiír)</translation>
-    </message>
-    <message>
-        <location line="+2"/>
+        <location line="+5"/>
         <source>Refresh</source>
         <translation>Frissítés</translation>
     </message>
@@ -682,6 +677,17 @@ Válaszidő: %6 ms (átlag %7, max. %8); frissítés: %9 ms, %10 keret</translat
         <location line="+6"/>
         <source>Cannot write %1: %2</source>
         <translation>%1 nem írható: %2</translation>
+    </message>
+    <message>
+        <location filename="../app/gui/connection_panel.cpp" line="-130"/>
+        <source>A serial port, or a path typed in: a pseudo-terminal such as the one
+&apos;rungstudio-cli serve --pty&apos; prints, or the link that
+&apos;serve --pty --link PATH&apos; keeps at PATH, which still leads to the
+PLC after serve restarts</source>
+        <translation>Soros port, vagy beírt elérési út: egy pszeudoterminál, például az, amelyet a
+&apos;rungstudio-cli serve --pty&apos; kiír, vagy a hivatkozás, amelyet a
+&apos;serve --pty --link ÚTVONAL&apos; az ÚTVONAL helyén tart, és amely a serve
+újraindítása után is a PLC-hez vezet</translation>
     </message>
 </context>
 <context>
@@ -1938,7 +1944,7 @@ Ctrl+Z / Ctrl+Y: visszavonás / mégis, Ctrl+görgő: nagyítás, F4: a program 
         <translation>nincs megadva operandus</translation>
     </message>
     <message>
-        <location line="+62"/>
+        <location line="+74"/>
         <source>  rungstudio-cli read  --target T --protocol vigor|modbus|modbus-tcp|hostlink
         (--port NAME | --tcp HOST:PORT | --pty PATH) [--station N] [--baud B]
         [--frame 8N1] [--timeout MS] [--retries N] DEVICE...
@@ -1951,7 +1957,7 @@ Exit status of read and write: 0 done, 1 the PLC did not answer or refused, 2 us
 A read és a write kilépési kódja: 0 kész, 1 a PLC nem válaszolt vagy elutasította, 2 használati, operandus-, érték- vagy porthiba.</translation>
     </message>
     <message>
-        <location line="+69"/>
+        <location line="+68"/>
         <source>%1: write DEVICE=VALUE</source>
         <translation>%1: OPERANDUS=ÉRTÉK alakban adja meg</translation>
     </message>
@@ -1961,7 +1967,7 @@ A read és a write kilépési kódja: 0 kész, 1 a PLC nem válaszolt vagy eluta
         <translation>%1: a(z) %2 nem lehet %3 értéke (egy bit 0 vagy 1, ON vagy OFF; egy szó szám, hexadecimálisan 0x előtaggal)</translation>
     </message>
     <message>
-        <location line="+17"/>
+        <location line="+33"/>
         <source>note: %1</source>
         <translation>megjegyzés: %1</translation>
     </message>
@@ -1969,6 +1975,11 @@ A read és a write kilépési kódja: 0 kész, 1 a PLC nem válaszolt vagy eluta
         <location line="+5"/>
         <source>not written: %1</source>
         <translation>nem íródott ki: %1</translation>
+    </message>
+    <message>
+        <location line="-16"/>
+        <source>%1: %2</source>
+        <translation>%1: %2</translation>
     </message>
 </context>
 <context>
@@ -2272,12 +2283,7 @@ A read és a write kilépési kódja: 0 kész, 1 a PLC nem válaszolt vagy eluta
 <context>
     <name>rung::app::Serve</name>
     <message>
-        <location filename="../app/cli/cli_serve.cpp" line="+30"/>
-        <source>usage: rungstudio-cli serve FILE [--target T] [--model M] --protocol vigor|modbus|modbus-tcp|hostlink (--pty | --port NAME | --tcp HOST:PORT) [--station N] [--baud B] [--frame 8N1|7E1|7E2|...] [--period MS] [--fault bad-checksum|silent|wrong-station|garbage|truncated|split]</source>
-        <translation>használat: rungstudio-cli serve FILE [--target T] [--model M] --protocol vigor|modbus|modbus-tcp|hostlink (--pty | --port NAME | --tcp HOST:PORT) [--station N] [--baud B] [--frame 8N1|7E1|7E2|...] [--period MS] [--fault bad-checksum|silent|wrong-station|garbage|truncated|split]</translation>
-    </message>
-    <message>
-        <location line="+68"/>
+        <location filename="../app/cli/cli_serve.cpp" line="+182"/>
         <source>unexpected argument %1</source>
         <translation>váratlan argumentum: %1</translation>
     </message>
@@ -2312,7 +2318,7 @@ A read és a write kilépési kódja: 0 kész, 1 a PLC nem válaszolt vagy eluta
         <translation>a --protocol modbus-tcp a --tcp HOST:PORT kapcsolón szolgál ki</translation>
     </message>
     <message>
-        <location line="+11"/>
+        <location line="+23"/>
         <source>--tcp needs HOST:PORT with a numeric address, e.g. 127.0.0.1:1502, not %1</source>
         <translation>a --tcp numerikus címet és portot vár (HOST:PORT), pl. 127.0.0.1:1502, nem ezt: %1</translation>
     </message>
@@ -2342,14 +2348,44 @@ A read és a write kilépési kódja: 0 kész, 1 a PLC nem válaszolt vagy eluta
         <translation>a(z) %1 nem ismeri ezt: %2; ezeket ismeri: %3</translation>
     </message>
     <message>
-        <location line="+49"/>
+        <location line="+55"/>
         <source>%1 serves %2 (%3, %4, station %5) on %6; stop it with Ctrl+C</source>
         <translation>a(z) %1 kiszolgálja: %2 (%3, %4, %5. állomás), itt: %6; leállítás: Ctrl+C</translation>
     </message>
     <message>
-        <location line="+21"/>
+        <location line="+25"/>
         <source>%1 requests answered, %2 refused with an error, %3 for other stations or broadcast, %4 frames dropped; %5 writes</source>
         <translation>%1 kérés megválaszolva, %2 hibakóddal elutasítva, %3 más állomásnak szólt vagy körözvény volt, %4 keret eldobva; %5 írás</translation>
+    </message>
+    <message>
+        <location line="-307"/>
+        <source>usage: rungstudio-cli serve FILE [--target T] [--model M] --protocol vigor|modbus|modbus-tcp|hostlink (--pty [--link PATH] | --port NAME | --tcp HOST:PORT) [--station N] [--baud B] [--frame 8N1|7E1|7E2|...] [--period MS] [--fault bad-checksum|silent|wrong-station|garbage|truncated|split]</source>
+        <translation>használat: rungstudio-cli serve FILE [--target T] [--model M] --protocol vigor|modbus|modbus-tcp|hostlink (--pty [--link PATH] | --port NAME | --tcp HOST:PORT) [--station N] [--baud B] [--frame 8N1|7E1|7E2|...] [--period MS] [--fault bad-checksum|silent|wrong-station|garbage|truncated|split]</translation>
+    </message>
+    <message>
+        <location line="+44"/>
+        <source>--link %1: %2</source>
+        <translation>--link %1: %2</translation>
+    </message>
+    <message>
+        <location line="+5"/>
+        <source>--link %1: something that is not a link to a pseudo-terminal is there already; it is left as it is: remove it or give another path</source>
+        <translation>--link %1: ott már van valami, ami nem pszeudoterminálra mutató hivatkozás; érintetlen marad: törölje, vagy adjon meg másik útvonalat</translation>
+    </message>
+    <message>
+        <location line="+13"/>
+        <source>--link %1: the link cannot be made: %2</source>
+        <translation>--link %1: a hivatkozás nem hozható létre: %2</translation>
+    </message>
+    <message>
+        <location line="+104"/>
+        <source>--link names the pseudo-terminal of --pty (a port keeps its own name, a TCP address is given)</source>
+        <translation>a --link a --pty pszeudoterminálját nevezi meg (egy port megtartja a saját nevét, a TCP-cím adott)</translation>
+    </message>
+    <message>
+        <location line="+123"/>
+        <source>%1 (a link to %2, removed at the end)</source>
+        <translation>%1 (hivatkozás erre: %2, a végén törlődik)</translation>
     </message>
 </context>
 <context>
@@ -2707,7 +2743,7 @@ Kiértékelés: %4 µs (%5..%6)</translation>
 <context>
     <name>rung::app::VirtualPlc</name>
     <message>
-        <location filename="../app/virtual_plc/virtual_plc.cpp" line="+100"/>
+        <location filename="../app/virtual_plc/virtual_plc.cpp" line="+101"/>
         <location line="+10"/>
         <source>the virtual PLC is stopping</source>
         <translation>a virtuális PLC leáll</translation>
@@ -2726,7 +2762,7 @@ Kiértékelés: %4 µs (%5..%6)</translation>
 <context>
     <name>rung::comms::Driver</name>
     <message>
-        <location filename="../comms/driver/driver.cpp" line="+51"/>
+        <location filename="../comms/driver/driver.cpp" line="+46"/>
         <source>station 0 is the Modbus broadcast address: no PLC answers it, so nothing could be read and no write acknowledged; give the PLC&apos;s own station (1..247, or 255 for any PL110)</source>
         <translation>a 0-s állomás a Modbus körüzenet-címe: egyetlen PLC sem válaszol rá, így semmit sem lehetne olvasni, és egyetlen írást sem nyugtázna senki; adja meg a PLC saját állomáscímét (1..247, vagy bármely PL110-hez 255)</translation>
     </message>
@@ -2743,7 +2779,7 @@ Kiértékelés: %4 µs (%5..%6)</translation>
         <translation>%1: %2</translation>
     </message>
     <message>
-        <location line="+53"/>
+        <location line="+49"/>
         <source>%1 has no address in %2, so it cannot be read over it</source>
         <translation>%1 nem szerepel a(z) %2 címtérképében, ezért azon keresztül nem olvasható</translation>
     </message>
@@ -2759,7 +2795,7 @@ Kiértékelés: %4 µs (%5..%6)</translation>
         <translation>%1 olvasása innen: %2</translation>
     </message>
     <message>
-        <location filename="../comms/driver/driver_commands.cpp" line="+18"/>
+        <location filename="../comms/driver/driver_commands.cpp" line="+19"/>
         <source>ON</source>
         <translation>BE</translation>
     </message>
@@ -2774,12 +2810,12 @@ Kiértékelés: %4 µs (%5..%6)</translation>
         <translation>%1: %2 nem rendelkezik szócímmel a(z) %3 címtérképében</translation>
     </message>
     <message>
-        <location line="+11"/>
+        <location line="+21"/>
         <source>%1: %2 does not fit %3 (%4..%5)</source>
         <translation>%1: a(z) %2 nem fér el ebben: %3 (%4..%5)</translation>
     </message>
     <message>
-        <location line="+27"/>
+        <location line="+24"/>
         <source>%1: %2 is not a bit in %3</source>
         <translation>%1: %2 nem bit a(z) %3 címtérképében</translation>
     </message>
@@ -2991,6 +3027,16 @@ Kiértékelés: %4 µs (%5..%6)</translation>
         <location filename="../comms/driver/vigor_driver.cpp" line="+19"/>
         <source>%1 station %2 on %3</source>
         <translation>%1, %2. állomás, %3</translation>
+    </message>
+    <message>
+        <location filename="../comms/driver/driver.cpp" line="+83"/>
+        <source>%1 does not fit %2 (0..9999)</source>
+        <translation>%1 nem fér el ebben: %2 (0..9999)</translation>
+    </message>
+    <message>
+        <location filename="../comms/driver/driver_commands.cpp" line="-153"/>
+        <source>%1: %2 holds four BCD digits (#0000..#9999); %3h is not one</source>
+        <translation>%1: a(z) %2 négy BCD-számjegyet tárol (#0000..#9999); a(z) %3h nem ilyen</translation>
     </message>
 </context>
 <context>
@@ -3489,7 +3535,7 @@ Kiértékelés: %4 µs (%5..%6)</translation>
         <translation>%1 nem nyitható meg újra: a program által létrehozott pszeudoterminál a bezárásakor megszűnt; hozzon létre újat, és adja meg az útvonalát a másik félnek</translation>
     </message>
     <message>
-        <location filename="../comms/slave/memory_image.cpp" line="+85"/>
+        <location filename="../comms/slave/memory_image.cpp" line="+86"/>
         <source>%1 cannot be written in this PLC&apos;s memory</source>
         <translation>a(z) %1 nem írható ennek a PLC-nek a memóriájában</translation>
     </message>
@@ -7199,7 +7245,7 @@ Kiértékelés: %4 µs (%5..%6)</translation>
         <translation>Ugrás vége</translation>
     </message>
     <message>
-        <location filename="../model/target/target_cpm1_maps.cpp" line="+18"/>
+        <location filename="../model/target/target_cpm1_maps.cpp" line="+20"/>
         <source>Omron Host Link (C-mode)</source>
         <translation>Omron Host Link (C mód)</translation>
     </message>

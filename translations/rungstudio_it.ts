@@ -383,12 +383,7 @@ Codice di uscita: 0 nessun errore, 1 il programma contiene errori, 2 errore di u
         <translation>Porta:</translation>
     </message>
     <message>
-        <location line="+1"/>
-        <source>A serial port, or a path typed in (a pseudo-terminal such as the one &apos;rungstudio-cli serve --pty&apos; prints)</source>
-        <translation>Una porta seriale, o un percorso digitato (uno pseudo-terminale come quello stampato da &apos;rungstudio-cli serve --pty&apos;)</translation>
-    </message>
-    <message>
-        <location line="+2"/>
+        <location line="+5"/>
         <source>Refresh</source>
         <translation>Aggiorna</translation>
     </message>
@@ -682,6 +677,17 @@ Andata e ritorno %6 ms (media %7, max %8); aggiornamento %9 ms, %10 frame</trans
         <location line="+6"/>
         <source>Cannot write %1: %2</source>
         <translation>Impossibile scrivere %1: %2</translation>
+    </message>
+    <message>
+        <location filename="../app/gui/connection_panel.cpp" line="-130"/>
+        <source>A serial port, or a path typed in: a pseudo-terminal such as the one
+&apos;rungstudio-cli serve --pty&apos; prints, or the link that
+&apos;serve --pty --link PATH&apos; keeps at PATH, which still leads to the
+PLC after serve restarts</source>
+        <translation>Una porta seriale, o un percorso digitato: uno pseudo-terminale come quello
+stampato da &apos;rungstudio-cli serve --pty&apos;, o il collegamento che
+&apos;serve --pty --link PERCORSO&apos; mantiene in PERCORSO, che porta ancora al
+PLC dopo il riavvio di serve</translation>
     </message>
 </context>
 <context>
@@ -1943,7 +1949,7 @@ Ctrl+Z / Ctrl+Y: annulla / ripeti, Ctrl+rotellina: zoom, F4: verifica il program
         <translation>nessun operando indicato</translation>
     </message>
     <message>
-        <location line="+62"/>
+        <location line="+74"/>
         <source>  rungstudio-cli read  --target T --protocol vigor|modbus|modbus-tcp|hostlink
         (--port NAME | --tcp HOST:PORT | --pty PATH) [--station N] [--baud B]
         [--frame 8N1] [--timeout MS] [--retries N] DEVICE...
@@ -1956,7 +1962,7 @@ Exit status of read and write: 0 done, 1 the PLC did not answer or refused, 2 us
 Codice di uscita di read e write: 0 fatto, 1 il PLC non ha risposto o ha rifiutato, 2 errore di uso, di operando, di valore o di porta.</translation>
     </message>
     <message>
-        <location line="+69"/>
+        <location line="+68"/>
         <source>%1: write DEVICE=VALUE</source>
         <translation>%1: scrivere OPERANDO=VALORE</translation>
     </message>
@@ -1966,7 +1972,7 @@ Codice di uscita di read e write: 0 fatto, 1 il PLC non ha risposto o ha rifiuta
         <translation>%1: %2 non è un valore per %3 (un bit vale 0 o 1, ON o OFF; una word un numero, 0x per l&apos;esadecimale)</translation>
     </message>
     <message>
-        <location line="+17"/>
+        <location line="+33"/>
         <source>note: %1</source>
         <translation>nota: %1</translation>
     </message>
@@ -1974,6 +1980,11 @@ Codice di uscita di read e write: 0 fatto, 1 il PLC non ha risposto o ha rifiuta
         <location line="+5"/>
         <source>not written: %1</source>
         <translation>non scritto: %1</translation>
+    </message>
+    <message>
+        <location line="-16"/>
+        <source>%1: %2</source>
+        <translation>%1: %2</translation>
     </message>
 </context>
 <context>
@@ -2277,12 +2288,7 @@ Codice di uscita di read e write: 0 fatto, 1 il PLC non ha risposto o ha rifiuta
 <context>
     <name>rung::app::Serve</name>
     <message>
-        <location filename="../app/cli/cli_serve.cpp" line="+30"/>
-        <source>usage: rungstudio-cli serve FILE [--target T] [--model M] --protocol vigor|modbus|modbus-tcp|hostlink (--pty | --port NAME | --tcp HOST:PORT) [--station N] [--baud B] [--frame 8N1|7E1|7E2|...] [--period MS] [--fault bad-checksum|silent|wrong-station|garbage|truncated|split]</source>
-        <translation>uso: rungstudio-cli serve FILE [--target T] [--model M] --protocol vigor|modbus|modbus-tcp|hostlink (--pty | --port NAME | --tcp HOST:PORT) [--station N] [--baud B] [--frame 8N1|7E1|7E2|...] [--period MS] [--fault bad-checksum|silent|wrong-station|garbage|truncated|split]</translation>
-    </message>
-    <message>
-        <location line="+68"/>
+        <location filename="../app/cli/cli_serve.cpp" line="+182"/>
         <source>unexpected argument %1</source>
         <translation>argomento inatteso %1</translation>
     </message>
@@ -2317,7 +2323,7 @@ Codice di uscita di read e write: 0 fatto, 1 il PLC non ha risposto o ha rifiuta
         <translation>--protocol modbus-tcp si serve con --tcp HOST:PORT</translation>
     </message>
     <message>
-        <location line="+11"/>
+        <location line="+23"/>
         <source>--tcp needs HOST:PORT with a numeric address, e.g. 127.0.0.1:1502, not %1</source>
         <translation>--tcp richiede HOST:PORT con un indirizzo numerico, ad es. 127.0.0.1:1502, non %1</translation>
     </message>
@@ -2347,14 +2353,44 @@ Codice di uscita di read e write: 0 fatto, 1 il PLC non ha risposto o ha rifiuta
         <translation>%1 non parla %2; parla %3</translation>
     </message>
     <message>
-        <location line="+49"/>
+        <location line="+55"/>
         <source>%1 serves %2 (%3, %4, station %5) on %6; stop it with Ctrl+C</source>
         <translation>%1 serve %2 (%3, %4, stazione %5) su %6; per fermarlo Ctrl+C</translation>
     </message>
     <message>
-        <location line="+21"/>
+        <location line="+25"/>
         <source>%1 requests answered, %2 refused with an error, %3 for other stations or broadcast, %4 frames dropped; %5 writes</source>
         <translation>%1 richieste con risposta, %2 rifiutate con un errore, %3 per altre stazioni o broadcast, %4 frame scartati; %5 scritture</translation>
+    </message>
+    <message>
+        <location line="-307"/>
+        <source>usage: rungstudio-cli serve FILE [--target T] [--model M] --protocol vigor|modbus|modbus-tcp|hostlink (--pty [--link PATH] | --port NAME | --tcp HOST:PORT) [--station N] [--baud B] [--frame 8N1|7E1|7E2|...] [--period MS] [--fault bad-checksum|silent|wrong-station|garbage|truncated|split]</source>
+        <translation>uso: rungstudio-cli serve FILE [--target T] [--model M] --protocol vigor|modbus|modbus-tcp|hostlink (--pty [--link PATH] | --port NAME | --tcp HOST:PORT) [--station N] [--baud B] [--frame 8N1|7E1|7E2|...] [--period MS] [--fault bad-checksum|silent|wrong-station|garbage|truncated|split]</translation>
+    </message>
+    <message>
+        <location line="+44"/>
+        <source>--link %1: %2</source>
+        <translation>--link %1: %2</translation>
+    </message>
+    <message>
+        <location line="+5"/>
+        <source>--link %1: something that is not a link to a pseudo-terminal is there already; it is left as it is: remove it or give another path</source>
+        <translation>--link %1: lì c&apos;è già qualcosa che non è un collegamento a uno pseudo-terminale; resta com&apos;è: rimuoverlo o indicare un altro percorso</translation>
+    </message>
+    <message>
+        <location line="+13"/>
+        <source>--link %1: the link cannot be made: %2</source>
+        <translation>--link %1: impossibile creare il collegamento: %2</translation>
+    </message>
+    <message>
+        <location line="+104"/>
+        <source>--link names the pseudo-terminal of --pty (a port keeps its own name, a TCP address is given)</source>
+        <translation>--link dà un nome allo pseudo-terminale di --pty (una porta ha già il suo nome, un indirizzo TCP è dato)</translation>
+    </message>
+    <message>
+        <location line="+123"/>
+        <source>%1 (a link to %2, removed at the end)</source>
+        <translation>%1 (un collegamento a %2, rimosso alla fine)</translation>
     </message>
 </context>
 <context>
@@ -2713,7 +2749,7 @@ Valutazione: %4 µs (%5..%6)</translation>
 <context>
     <name>rung::app::VirtualPlc</name>
     <message>
-        <location filename="../app/virtual_plc/virtual_plc.cpp" line="+100"/>
+        <location filename="../app/virtual_plc/virtual_plc.cpp" line="+101"/>
         <location line="+10"/>
         <source>the virtual PLC is stopping</source>
         <translation>il PLC virtuale si sta arrestando</translation>
@@ -2732,7 +2768,7 @@ Valutazione: %4 µs (%5..%6)</translation>
 <context>
     <name>rung::comms::Driver</name>
     <message>
-        <location filename="../comms/driver/driver.cpp" line="+51"/>
+        <location filename="../comms/driver/driver.cpp" line="+46"/>
         <source>station 0 is the Modbus broadcast address: no PLC answers it, so nothing could be read and no write acknowledged; give the PLC&apos;s own station (1..247, or 255 for any PL110)</source>
         <translation>la stazione 0 è l&apos;indirizzo broadcast Modbus: nessun PLC risponde, quindi nulla potrebbe essere letto né alcuna scrittura confermata; indicare la stazione del PLC (1..247, o 255 per qualsiasi PL110)</translation>
     </message>
@@ -2749,7 +2785,7 @@ Valutazione: %4 µs (%5..%6)</translation>
         <translation>%1: %2</translation>
     </message>
     <message>
-        <location line="+53"/>
+        <location line="+49"/>
         <source>%1 has no address in %2, so it cannot be read over it</source>
         <translation>%1 non ha un indirizzo in %2, quindi non può essere letto con esso</translation>
     </message>
@@ -2765,7 +2801,7 @@ Valutazione: %4 µs (%5..%6)</translation>
         <translation>lettura di %1 da %2</translation>
     </message>
     <message>
-        <location filename="../comms/driver/driver_commands.cpp" line="+18"/>
+        <location filename="../comms/driver/driver_commands.cpp" line="+19"/>
         <source>ON</source>
         <translation>ON</translation>
     </message>
@@ -2780,12 +2816,12 @@ Valutazione: %4 µs (%5..%6)</translation>
         <translation>%1: %2 non ha un indirizzo di word in %3</translation>
     </message>
     <message>
-        <location line="+11"/>
+        <location line="+21"/>
         <source>%1: %2 does not fit %3 (%4..%5)</source>
         <translation>%1: %2 non rientra in %3 (%4..%5)</translation>
     </message>
     <message>
-        <location line="+27"/>
+        <location line="+24"/>
         <source>%1: %2 is not a bit in %3</source>
         <translation>%1: %2 non è un bit in %3</translation>
     </message>
@@ -2997,6 +3033,16 @@ Valutazione: %4 µs (%5..%6)</translation>
         <location filename="../comms/driver/vigor_driver.cpp" line="+19"/>
         <source>%1 station %2 on %3</source>
         <translation>%1 stazione %2 su %3</translation>
+    </message>
+    <message>
+        <location filename="../comms/driver/driver.cpp" line="+83"/>
+        <source>%1 does not fit %2 (0..9999)</source>
+        <translation>%1 non rientra in %2 (0..9999)</translation>
+    </message>
+    <message>
+        <location filename="../comms/driver/driver_commands.cpp" line="-153"/>
+        <source>%1: %2 holds four BCD digits (#0000..#9999); %3h is not one</source>
+        <translation>%1: %2 contiene quattro cifre BCD (#0000..#9999); %3h non lo è</translation>
     </message>
 </context>
 <context>
@@ -3495,7 +3541,7 @@ Valutazione: %4 µs (%5..%6)</translation>
         <translation>Impossibile aprire di nuovo %1: lo pseudo-terminale creato da questo programma è terminato alla chiusura; crearne uno nuovo e darne il percorso all&apos;altra parte</translation>
     </message>
     <message>
-        <location filename="../comms/slave/memory_image.cpp" line="+85"/>
+        <location filename="../comms/slave/memory_image.cpp" line="+86"/>
         <source>%1 cannot be written in this PLC&apos;s memory</source>
         <translation>%1 non si può scrivere nella memoria di questo PLC</translation>
     </message>
@@ -7214,7 +7260,7 @@ Valutazione: %4 µs (%5..%6)</translation>
         <translation>Fine di un salto</translation>
     </message>
     <message>
-        <location filename="../model/target/target_cpm1_maps.cpp" line="+18"/>
+        <location filename="../model/target/target_cpm1_maps.cpp" line="+20"/>
         <source>Omron Host Link (C-mode)</source>
         <translation>Omron Host Link (modo C)</translation>
     </message>

@@ -129,8 +129,8 @@ bool parseOptions(const QStringList &args, Options *o, QString *error) {
     return true;
 }
 
-// Opens the link; exit code 0, or 2 with the reason on err.
-int connect(const Options &o, std::unique_ptr<comms::Driver> *driver, QTextStream &err) {
+// The driver, its port not opened yet; exit code 0, or 2 with the reason on err.
+int makeDriver(const Options &o, std::unique_ptr<comms::Driver> *driver, QTextStream &err) {
     QString error;
     *driver =
         comms::Driver::create(*o.target, o.settings.protocol, comms::makeTransport(o.settings),
@@ -139,11 +139,23 @@ int connect(const Options &o, std::unique_ptr<comms::Driver> *driver, QTextStrea
         err << error << '\n';
         return 2;
     }
-    if (!(*driver)->link().open(&error)) {
+    return 0;
+}
+
+// Opens the link; exit code 0, or 2 with the reason on err.
+int openLink(comms::Driver &driver, QTextStream &err) {
+    QString error;
+    if (!driver.link().open(&error)) {
         err << error << '\n';
         return 2;
     }
     return 0;
+}
+
+int connect(const Options &o, std::unique_ptr<comms::Driver> *driver, QTextStream &err) {
+    if (const int code = makeDriver(o, driver, err))
+        return code;
+    return openLink(**driver, err);
 }
 
 // A value as written on the command line: a decimal number (signed) or 0x hexadecimal; a
@@ -232,8 +244,7 @@ int runReadCommand(const QStringList &args, QTextStream &out, QTextStream &err) 
                                       [&a](const auto &r) { return r.first == a; });
         if (bad != refused.end())
             continue;
-        const qint64 value = isBit(*o.target, a) ? (image.bit(a) ? 1 : 0) : image.value(a);
-        out << o.items[qsizetype(i)].trimmed() << '=' << value << '\n';
+        out << o.items[qsizetype(i)].trimmed() << '=' << driver->number(image, a) << '\n';
     }
     for (const auto &[address, why] : refused)
         err << why << '\n';
@@ -274,7 +285,23 @@ int runWriteCommand(const QStringList &args, QTextStream &out, QTextStream &err)
                             a, value});
     }
     std::unique_ptr<comms::Driver> driver;
-    if (const int code = connect(o, &driver, err))
+    if (const int code = makeDriver(o, &driver, err))
+        return code;
+    // A number typed for a word becomes the word the PLC keeps (a CPM1 timer's BCD digits),
+    // every one before the port is opened.
+    for (std::size_t i = 0; i < commands.size(); ++i) {
+        model::DeviceCommand &c = commands[i];
+        if (c.kind != model::DeviceCommand::Kind::WriteWord)
+            continue;
+        QString why;
+        const std::optional<qint64> word = driver->wordOf(c.address, c.value, &why);
+        if (!word) {
+            err << Tr::tr("%1: %2").arg(o.items[qsizetype(i)], why) << '\n';
+            return 2;
+        }
+        c.value = *word;
+    }
+    if (const int code = openLink(*driver, err))
         return code;
     for (std::size_t i = 0; i < commands.size(); ++i) {
         QString notice;

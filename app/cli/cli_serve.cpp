@@ -9,11 +9,19 @@
 #include "comms/transport/serial_transport.h"
 
 #include <QCoreApplication>
+#include <QFile>
+#include <QFileInfo>
 
+#include <cerrno>
+#include <climits>
 #include <csignal>
+#include <cstring>
 #include <ctime>
 #include <mutex>
+#include <optional>
 #include <pthread.h>
+#include <sys/stat.h>
+#include <unistd.h>
 
 namespace rung::app {
 
@@ -28,8 +36,8 @@ using comms::slave::Fault;
 
 QString usage() {
     return Tr::tr("usage: rungstudio-cli serve FILE [--target T] [--model M] --protocol "
-                  "vigor|modbus|modbus-tcp|hostlink (--pty | --port NAME | --tcp HOST:PORT) "
-                  "[--station N] [--baud B] [--frame 8N1|7E1|7E2|...] [--period MS] "
+                  "vigor|modbus|modbus-tcp|hostlink (--pty [--link PATH] | --port NAME | --tcp "
+                  "HOST:PORT) [--station N] [--baud B] [--frame 8N1|7E1|7E2|...] [--period MS] "
                   "[--fault bad-checksum|silent|wrong-station|garbage|truncated|split]");
 }
 
@@ -39,11 +47,85 @@ struct Ending {
     QString failure;
 };
 
+// The target of the symbolic link at path; empty when path is no symbolic link.
+QString linkTarget(const QByteArray &path) {
+    struct stat st {};
+    if (::lstat(path.constData(), &st) != 0 || !S_ISLNK(st.st_mode))
+        return {};
+    QByteArray target(PATH_MAX, '\0');
+    const ssize_t n = ::readlink(path.constData(), target.data(), std::size_t(target.size()));
+    return n > 0 ? QString::fromLocal8Bit(target.left(n)) : QString();
+}
+
+// A stable name for the pseudo-terminal (--link): a symbolic link to it, made when serving
+// starts and removed when it ends, so that a master (the IDE, mbpoll) finds the PLC at the
+// same path after serve restarts. What is at the path already is replaced only when it is
+// such a link, one into /dev/pts/ (left by a serve that was killed); anything else is the
+// user's and is refused.
+class PtyLink {
+public:
+    explicit PtyLink(QString path)
+        : m_path(QFileInfo(path).absoluteFilePath()) {}
+    ~PtyLink() { remove(); }
+    PtyLink(const PtyLink &) = delete;
+    PtyLink &operator=(const PtyLink &) = delete;
+
+    const QString &path() const { return m_path; }
+
+    // Whether the path may take the link; false with why.
+    bool usable(QString *error) const {
+        const QByteArray path = QFile::encodeName(m_path);
+        struct stat st {};
+        if (::lstat(path.constData(), &st) != 0) {
+            if (errno == ENOENT)
+                return true;
+            *error = Tr::tr("--link %1: %2").arg(m_path, QString::fromLocal8Bit(strerror(errno)));
+            return false;
+        }
+        if (S_ISLNK(st.st_mode) && linkTarget(path).startsWith(QLatin1String("/dev/pts/")))
+            return true;
+        *error = Tr::tr("--link %1: something that is not a link to a pseudo-terminal is there "
+                        "already; it is left as it is: remove it or give another path")
+                     .arg(m_path);
+        return false;
+    }
+
+    // Points the path at the pseudo-terminal (the old link replaced in one step).
+    bool make(const QString &pty, QString *error) {
+        const QByteArray path = QFile::encodeName(m_path);
+        const QByteArray fresh = path + ".new-" + QByteArray::number(qint64(::getpid()));
+        ::unlink(fresh.constData());
+        if (::symlink(QFile::encodeName(pty).constData(), fresh.constData()) != 0 ||
+            ::rename(fresh.constData(), path.constData()) != 0) {
+            *error = Tr::tr("--link %1: the link cannot be made: %2")
+                         .arg(m_path, QString::fromLocal8Bit(strerror(errno)));
+            ::unlink(fresh.constData());
+            return false;
+        }
+        m_pty = pty;
+        return true;
+    }
+
+    // Removes the link if it is still this serve's (another may have taken the path since).
+    void remove() {
+        if (m_pty.isEmpty())
+            return;
+        const QByteArray path = QFile::encodeName(m_path);
+        if (linkTarget(path) == m_pty)
+            ::unlink(path.constData());
+        m_pty.clear();
+    }
+
+private:
+    QString m_path;
+    QString m_pty; // what the link points to, once made
+};
+
 } // namespace
 
 int runServeCommand(const QStringList &args, QTextStream &out, QTextStream &err) {
     ProgramOptions program;
-    QString protocolName, portName, tcp, faultName;
+    QString protocolName, portName, tcp, faultName, linkPath;
     bool pty = false;
     int station = -1, baud = 0;
     qint64 period = 0;
@@ -78,6 +160,8 @@ int runServeCommand(const QStringList &args, QTextStream &out, QTextStream &err)
             ok = value(&protocolName);
         else if (a == QLatin1String("--pty"))
             pty = true;
+        else if (a == QLatin1String("--link"))
+            ok = value(&linkPath) && !linkPath.isEmpty();
         else if (a == QLatin1String("--port"))
             ok = value(&portName);
         else if (a == QLatin1String("--tcp"))
@@ -116,6 +200,18 @@ int runServeCommand(const QStringList &args, QTextStream &out, QTextStream &err)
         return fail(Tr::tr("give one of --pty, --port NAME and --tcp HOST:PORT"));
     if (framing == comms::modbus::Framing::Tcp && tcp.isEmpty())
         return fail(Tr::tr("--protocol modbus-tcp is served over --tcp HOST:PORT"));
+    if (!linkPath.isEmpty() && !pty)
+        return fail(Tr::tr("--link names the pseudo-terminal of --pty (a port keeps its own "
+                           "name, a TCP address is given)"));
+    std::optional<PtyLink> link;
+    if (!linkPath.isEmpty()) {
+        link.emplace(linkPath);
+        QString why;
+        if (!link->usable(&why)) {
+            err << why << '\n';
+            return 2;
+        }
+    }
     QHostAddress host;
     quint16 tcpPort = 0;
     if (!tcp.isEmpty()) {
@@ -196,12 +292,17 @@ int runServeCommand(const QStringList &args, QTextStream &out, QTextStream &err)
     VirtualPlc plc(loaded.program, options);
     QString error;
     QString where;
+    QString linked; // the pseudo-terminal the link points to
     if (pty) {
         auto transport = comms::PtyTransport::createPair(&error);
         if (transport) {
             where = transport->peerPath();
             if (!plc.serve(std::move(transport), &error))
                 where.clear();
+        }
+        if (!where.isEmpty() && link) {
+            linked = where;
+            where = link->make(linked, &error) ? link->path() : QString();
         }
     } else if (!portName.isEmpty()) {
         if (plc.serve(std::make_unique<comms::SerialTransport>(portName, slave.line), &error))
@@ -213,14 +314,17 @@ int runServeCommand(const QStringList &args, QTextStream &out, QTextStream &err)
         err << error << '\n';
         return 2;
     }
-    // The first line says where the PLC is reached; a script reads it before anything else.
+    // The first line says where the PLC is reached (with --link, the link); a script reads
+    // it before anything else.
     out << where << Qt::endl;
     err << Tr::tr("%1 serves %2 (%3, %4, station %5) on %6; stop it with Ctrl+C")
                .arg(loaded.target->displayName, program.file,
                     QCoreApplication::translate("rung::model::Target", map->description),
                     protocolName)
                .arg(slave.station)
-               .arg(where)
+               .arg(linked.isEmpty()
+                        ? where
+                        : Tr::tr("%1 (a link to %2, removed at the end)").arg(where, linked))
         << Qt::endl;
 
     QString failure;
@@ -235,6 +339,8 @@ int runServeCommand(const QStringList &args, QTextStream &out, QTextStream &err)
         }
     }
     plc.stop();
+    if (link)
+        link->remove();
     const comms::slave::SlaveStatistics s = plc.statistics();
     err << Tr::tr("%1 requests answered, %2 refused with an error, %3 for other stations or "
                   "broadcast, %4 frames dropped; %5 writes")

@@ -262,8 +262,10 @@ void ConnectionPanel::retranslate() {
     m_viaSerial->setText(tr("Serial port"));
     m_viaTcp->setText(tr("TCP"));
     m_portLabel->setText(tr("Port:"));
-    m_port->setToolTip(tr("A serial port, or a path typed in (a pseudo-terminal such as the "
-                          "one 'rungstudio-cli serve --pty' prints)"));
+    m_port->setToolTip(tr("A serial port, or a path typed in: a pseudo-terminal such as the one\n"
+                          "'rungstudio-cli serve --pty' prints, or the link that\n"
+                          "'serve --pty --link PATH' keeps at PATH, which still leads to the\n"
+                          "PLC after serve restarts"));
     m_refresh->setText(tr("Refresh"));
     updatePortHint();
     m_baudLabel->setText(tr("Baud rate:"));

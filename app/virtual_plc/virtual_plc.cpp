@@ -47,6 +47,7 @@ public:
         empty->words.assign(words, 0);
         empty->forceMask.assign(words, 0);
         empty->forceValue.assign(words, 0);
+        empty->coils.assign(static_cast<std::size_t>(empty->layout->elementStateCount()), false);
         m_empty = std::move(empty);
         // Runs on the owner thread: the session emits there.
         QObject::connect(session, &model::MonitorSource::commandFinished, session,

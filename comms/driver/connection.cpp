@@ -60,8 +60,13 @@ std::unique_ptr<Transport> makeTransport(const ConnectionSettings &settings) {
 }
 
 std::unique_ptr<Transport> makePortTransport(const QString &port, const SerialSettings &line) {
-    // A socat link names its pseudo-terminal through a symbolic link.
-    const QString real = QFileInfo(port).canonicalFilePath();
+    // A socat link names its pseudo-terminal through a symbolic link, and so does
+    // `serve --pty --link PATH`, whose link may lead nowhere for a moment while serve restarts:
+    // still a pseudo-terminal, opened through the link when it leads to one again.
+    const QFileInfo info(port);
+    QString real = info.canonicalFilePath();
+    if (real.isEmpty() && info.isSymLink())
+        real = info.symLinkTarget();
     if ((real.isEmpty() ? port : real).startsWith(QLatin1String("/dev/pts/")))
         return std::make_unique<PtyTransport>(port);
     return std::make_unique<SerialTransport>(port, line);

@@ -24,11 +24,6 @@ bool isCounterOrTimer(const model::Area &area) {
     return area.kind == model::AreaKind::Timer || area.kind == model::AreaKind::Counter;
 }
 
-// BCD digits -> number (Host Link RC); not BCD: shown as it is rather than as a wrong number.
-std::int64_t fromBcd(std::uint32_t raw) {
-    return model::fromBcd(raw).value_or(raw);
-}
-
 } // namespace
 
 Driver::Driver(const model::Target &target, ProtocolKind kind, std::unique_ptr<Link> link)
@@ -110,18 +105,14 @@ std::vector<Driver::Placement> Driver::placementsOf(const model::Address &addres
         const model::BitRef ref = m_layout->bit(a);
         if (!pa || !ref.valid())
             return;
-        out.push_back({{pa->space, pa->unit, 1}, pa->bit, ref.word, ref.mask, 1, false});
+        out.push_back({{pa->space, pa->unit, 1}, pa->bit, ref.word, ref.mask, 1});
     };
     const auto valueOf = [&](const model::Address &a, int word) {
         const auto pa = where(a, DevicePart::Value);
         if (!pa || word < 0)
             return;
-        out.push_back({{pa->space, pa->unit, pa->units},
-                       -1,
-                       word,
-                       0,
-                       m_target.area(a.area).wordBits,
-                       m_protocol->bcdUnits(pa->space)});
+        out.push_back(
+            {{pa->space, pa->unit, pa->units}, -1, word, 0, m_target.area(a.area).wordBits});
     };
     if (address.bit >= 0 || area.kind == model::AreaKind::Bit) {
         bitOf(address);
@@ -261,8 +252,7 @@ DriverError Driver::refresh(const Plan &plan, std::vector<std::int32_t> &words,
             std::uint64_t raw = 0;
             for (int i = 0; i < p.source.count; ++i)
                 raw |= std::uint64_t(run->units[at + std::size_t(i)]) << (i * width);
-            const std::int64_t value = p.bcd ? fromBcd(std::uint32_t(raw)) : std::int64_t(raw);
-            word = model::wrapToWidth(value, p.bits);
+            word = model::wrapToWidth(std::int64_t(raw), p.bits);
         }
     }
     return {};
@@ -282,14 +272,38 @@ DriverError Driver::read(const std::vector<model::Address> &devices, std::vector
     image.layout = m_layout;
     image.words = std::move(words);
     values->clear();
-    for (const model::Address &a : devices) {
-        const model::Area &area = m_target.area(a.area);
-        if (a.bit >= 0 || area.kind == model::AreaKind::Bit)
-            values->push_back(image.bit(a) ? 1 : 0);
-        else
-            values->push_back(image.value(a));
-    }
+    for (const model::Address &a : devices)
+        values->push_back(number(image, a));
     return {};
+}
+
+bool Driver::keepsBcd(const model::Address &address) const {
+    const auto pa = address.bit < 0 ? where(address, DevicePart::Value) : std::nullopt;
+    return pa && m_protocol->bcdUnits(pa->space);
+}
+
+qint64 Driver::number(const model::Snapshot &image, const model::Address &device) const {
+    const model::Area &area = m_target.area(device.area);
+    if (device.bit >= 0 || area.kind == model::AreaKind::Bit)
+        return image.bit(device) ? 1 : 0;
+    const qint64 word = image.value(device);
+    // Not BCD (a PLC that holds something else there): shown as it is, not as a wrong number.
+    return keepsBcd(device) ? model::fromBcd(word).value_or(word) : word;
+}
+
+std::optional<qint64> Driver::wordOf(const model::Address &device, qint64 number,
+                                     QString *why) const {
+    if (!keepsBcd(device))
+        return number; // execute() checks that it fits the word
+    if (number < 0 || number > 9999) {
+        if (why)
+            *why =
+                QCoreApplication::translate("rung::comms::Driver", "%1 does not fit %2 (0..9999)")
+                    .arg(number)
+                    .arg(deviceName(device));
+        return std::nullopt;
+    }
+    return model::toBcd(number);
 }
 
 } // namespace rung::comms

@@ -17,9 +17,11 @@
 #include "comms/driver/protocol_driver.h"
 #include "model/image/device_command.h"
 #include "model/image/memory_layout.h"
+#include "model/image/snapshot.h"
 
 #include <map>
 #include <memory>
+#include <optional>
 #include <variant>
 
 namespace rung::comms {
@@ -51,7 +53,6 @@ public:
         int word = -1;          // image word
         std::uint32_t mask = 0; // a bit of the image word; 0: the whole word takes the value
         int bits = 16;          // the value's width (sign)
-        bool bcd = false;
     };
     struct Plan {
         std::vector<model::Address> devices;
@@ -66,10 +67,17 @@ public:
     // listed in *refused; the error is for what stops the whole refresh (the link).
     DriverError refresh(const Plan &plan, std::vector<std::int32_t> &words,
                         std::vector<std::pair<model::Address, QString>> *refused);
-    // The values of devices, as `read` prints them: a bit 0 / 1, a word or a timer's /
-    // counter's current value as a signed number of its width. Fails on the first device
-    // that cannot be read.
+    // The values of devices, as `read` prints them (number()). Fails on the first device that
+    // cannot be read.
     DriverError read(const std::vector<model::Address> &devices, std::vector<qint64> *values);
+    // The image a refresh fills and the commands execute() takes hold the PLC's words as its
+    // memory does, as the simulator's image does: a CPM1 timer's present value 150 is the
+    // word 0150h (BCD digits, W353), and RC / WC carry it so. A user reads and types numbers:
+    // number() is a device's value as `read` prints it (a bit 0 / 1, a word its signed value
+    // of its width, a BCD present value its number; a word that is not BCD as it is), and
+    // wordOf() the word that holds a typed number (nullopt with why when it cannot).
+    qint64 number(const model::Snapshot &image, const model::Address &device) const;
+    std::optional<qint64> wordOf(const model::Address &device, qint64 number, QString *why) const;
 
     // --- commands (model::DeviceCommand) ---
     // *notice: what the driver did besides (Host Link: switched RUN to MONITOR to write).
@@ -95,6 +103,8 @@ private:
     std::vector<Placement> placementsOf(const model::Address &address, QString *why) const;
     std::optional<model::ProtocolAddress> where(const model::Address &address,
                                                 model::DevicePart part) const;
+    // The PLC keeps the device's value as BCD digits (Host Link RC / WC).
+    bool keepsBcd(const model::Address &address) const;
     // Checks the value fits, then (prepareWrite) writes it.
     DriverError writeValue(const model::Address &device, const model::Address &target, qint64 value,
                            const QString &what, QString *notice);

@@ -2,6 +2,7 @@
 
 #include "comms/driver/driver.h"
 
+#include "model/image/bcd.h"
 #include "model/target/target.h"
 
 #include <QCoreApplication>
@@ -40,9 +41,19 @@ DriverError Driver::writeValue(const model::Address &device, const model::Addres
                      QCoreApplication::translate("rung::model::Target",
                                                  m_protocol->map().description))};
     const int bits = std::clamp(m_target.area(target.area).wordBits, 1, 32);
-    const bool bcd = m_protocol->bcdUnits(pa->space);
-    const qint64 lowest = bcd ? 0 : -(qint64(1) << (bits - 1));
-    const qint64 highest = bcd ? 9999 : (qint64(1) << bits) - 1;
+    // The word as the PLC keeps it (number() / wordOf()): where that is BCD digits (Host Link
+    // RC / WC), the PLC answers any other word with end code 15, so it is not sent.
+    if (m_protocol->bcdUnits(pa->space)) {
+        if (value < 0 || value > 0x9999 || !model::fromBcd(value))
+            return {K::BadDevice, 0,
+                    QCoreApplication::translate("rung::comms::Driver",
+                                                "%1: %2 holds four BCD digits (#0000..#9999); "
+                                                "%3h is not one")
+                        .arg(what, deviceName(device),
+                             QString::number(value, 16).toUpper().rightJustified(4, u'0'))};
+    }
+    const qint64 lowest = -(qint64(1) << (bits - 1));
+    const qint64 highest = (qint64(1) << bits) - 1;
     if (value < lowest || value > highest)
         return {
             K::BadDevice, 0,
@@ -52,10 +63,7 @@ DriverError Driver::writeValue(const model::Address &device, const model::Addres
                 .arg(deviceName(device))
                 .arg(lowest)
                 .arg(highest)};
-    std::uint64_t raw = bcd ? 0 : std::uint64_t(value);
-    if (bcd)
-        for (int shift = 0; shift < 16; shift += 4, value /= 10)
-            raw |= std::uint64_t(value % 10) << shift;
+    const auto raw = std::uint64_t(value);
     const int width = model::unitBits(pa->space);
     const std::uint64_t unitMask = (std::uint64_t(1) << width) - 1;
     std::vector<std::uint32_t> units;

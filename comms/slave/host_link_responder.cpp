@@ -23,14 +23,11 @@ bool unserved(QByteArrayView header) {
     return false;
 }
 
-// Timer / counter present values travel as four BCD digits (W353, RC / WC).
-std::uint16_t toBcd(std::uint32_t value) {
-    return std::uint16_t(model::toBcd(value % 10000));
-}
-
-std::optional<std::uint16_t> fromBcd(std::uint16_t digits) {
-    const auto number = model::fromBcd(digits);
-    return number ? std::optional<std::uint16_t>(std::uint16_t(*number)) : std::nullopt;
+// Timer / counter present values are four BCD digits in the PLC's memory (W353; the
+// simulator keeps them so too), and RC / WC carry that word as it is: 0150 is 150. A word
+// written with a digit above 9 is no present value.
+bool isBcd(std::uint16_t digits) {
+    return model::fromBcd(digits).has_value();
 }
 
 } // namespace
@@ -173,8 +170,7 @@ Frame HostLinkResponder::read(const Frame &command, ProtocolSpace space) {
         if (space == ProtocolSpace::HostLinkCompletion)
             reply.text += v ? '1' : '0';
         else
-            detail::appendHex(reply.text, space == ProtocolSpace::HostLinkTimerPv ? toBcd(v) : v,
-                              4);
+            detail::appendHex(reply.text, v, 4);
     }
     return reply;
 }
@@ -186,12 +182,9 @@ Frame HostLinkResponder::write(const Frame &command, ProtocolSpace space) {
     if (!o.valid)
         return endCode(command, FormatError);
     if (space == ProtocolSpace::HostLinkTimerPv)
-        for (std::uint16_t &w : o.words) {
-            const auto v = fromBcd(w);
-            if (!v)
+        for (const std::uint16_t w : o.words)
+            if (!isBcd(w))
                 return endCode(command, EntryNumberError);
-            w = *v;
-        }
     const auto snapshot = m_image->snapshot();
     const MappedImage::Change c = m_mapped.write(*snapshot, space, o.begin, o.words);
     if (c.refusal != MappedImage::Refusal::None)

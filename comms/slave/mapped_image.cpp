@@ -33,16 +33,19 @@ std::optional<model::MappedDevice> MappedImage::device(ProtocolSpace space, int 
     return model::fromProtocol(*m_target, *m_map, space, unit, bit);
 }
 
-// The registers that describe the PLC (PL110 words 0, 1 and 5, seed 003 chapter 3).
+// The registers that describe the PLC (PL110 words 0, 1 and 5, PL110 manual 3.2) and the
+// units the map lists with no device (ProtocolMap::fixedUnits). Read only.
 std::optional<std::uint32_t> MappedImage::special(ProtocolSpace space, int unit) const {
-    if (space != ProtocolSpace::HoldingRegisters)
-        return std::nullopt;
-    if (unit == m_map->modelRegister)
-        return std::uint32_t(std::max(0, m_map->modelCode));
-    if (unit == m_map->versionRegister)
-        return 0u; // the virtual PLC has no firmware version of the vendor's to report
-    if (unit == m_map->stationRegister)
-        return std::uint32_t(m_station & 0xFFFF);
+    if (space == ProtocolSpace::HoldingRegisters) {
+        if (unit == m_map->modelRegister)
+            return std::uint32_t(std::max(0, m_map->modelCode));
+        if (unit == m_map->versionRegister)
+            return 0u; // the virtual PLC has no firmware version of the vendor's to report
+        if (unit == m_map->stationRegister)
+            return std::uint32_t(m_station & 0xFFFF);
+    }
+    if (const auto v = model::fixedUnitValue(*m_map, space, unit))
+        return std::uint32_t(*v);
     return std::nullopt;
 }
 
@@ -50,11 +53,31 @@ bool MappedImage::isRunBit(const model::Address &address) const {
     return m_run.valid() && address == m_run;
 }
 
-bool MappedImage::bitValue(const model::Snapshot &s, OperatingMode mode,
-                           const model::Address &a) const {
+std::optional<bool> MappedImage::bitValue(const model::Snapshot &s, OperatingMode mode,
+                                          const model::MappedDevice &d) const {
+    const model::Address a = addressOf(d);
+    if (d.part == DevicePart::Coil)
+        return s.coil(a); // nullopt: an image that does not know its coils
     if (isRunBit(a))
         return mode != OperatingMode::Program;
     return s.bit(a);
+}
+
+std::vector<model::MappedDevice> MappedImage::withBankMates(const model::MappedDevice &d) const {
+    std::vector<model::MappedDevice> out{d};
+    const int bank = m_target->area(d.area).bank;
+    if (bank < 0)
+        return out;
+    for (std::size_t k = 0; k < m_target->areas.size(); ++k) {
+        const model::Area &other = m_target->areas[k];
+        if (int(k) != d.area && other.bank == bank && d.index >= other.first &&
+            d.index <= other.last) {
+            model::MappedDevice mate = d;
+            mate.area = int(k);
+            out.push_back(mate);
+        }
+    }
+    return out;
 }
 
 std::uint32_t MappedImage::value(const model::Snapshot &s, OperatingMode mode,
@@ -84,13 +107,23 @@ MappedImage::Units MappedImage::read(const model::Snapshot &s, OperatingMode mod
             continue;
         }
         if (const auto d = device(space, unit); d && (width == 1 || d->part == DevicePart::Value)) {
-            if (d->part == DevicePart::Coil)
-                return refuse(Refusal::NotServed);
-            const model::Address a = addressOf(*d);
             if (width == 1) {
-                out.values.push_back(bitValue(s, mode, a) ? 1 : 0);
+                bool known = true;
+                bool on = false;
+                for (const model::MappedDevice &m : withBankMates(*d)) {
+                    const std::optional<bool> b = bitValue(s, mode, m);
+                    known = known && b.has_value();
+                    on = on || b.value_or(false);
+                }
+                if (!known)
+                    return refuse(Refusal::NotServed);
+                out.values.push_back(on ? 1 : 0);
             } else {
-                const std::uint32_t v = value(s, mode, a) >> (d->unitOffset * width);
+                std::uint32_t whole = 0;
+                for (const model::MappedDevice &m : withBankMates(*d))
+                    if ((whole = value(s, mode, addressOf(m))) != 0)
+                        break;
+                const std::uint32_t v = whole >> (d->unitOffset * width);
                 out.values.push_back(std::uint16_t(v & unitMask(width)));
             }
             continue;
@@ -103,10 +136,11 @@ MappedImage::Units MappedImage::read(const model::Snapshot &s, OperatingMode mod
             const auto d = device(space, unit, b);
             if (!d)
                 continue;
-            if (d->part == DevicePart::Coil)
+            const std::optional<bool> on = bitValue(s, mode, *d);
+            if (!on)
                 return refuse(Refusal::NotServed);
             any = true;
-            if (bitValue(s, mode, addressOf(*d)))
+            if (*on)
                 packed |= 1u << b;
         }
         if (!any)
@@ -118,10 +152,9 @@ MappedImage::Units MappedImage::read(const model::Snapshot &s, OperatingMode mod
 
 MappedImage::Refusal MappedImage::addBit(Change &change, const model::MappedDevice &d,
                                          bool on) const {
-    if (d.readOnly)
+    // A coil is the program's: the next scan drives it from the box's input again.
+    if (d.readOnly || d.part == DevicePart::Coil)
         return Refusal::ReadOnly;
-    if (d.part == DevicePart::Coil)
-        return Refusal::NotServed;
     const model::Address a = addressOf(d);
     if (isRunBit(a) && m_map->runBitStartsStops) {
         change.mode = on ? OperatingMode::Run : OperatingMode::Program;
@@ -159,12 +192,15 @@ MappedImage::Change MappedImage::write(const model::Snapshot &s, ProtocolSpace s
             }
             if (d->readOnly)
                 return refuse(Refusal::ReadOnly, unit);
-            const model::Address a = addressOf(*d);
-            auto [it, added] = wholeValues.try_emplace(a, static_cast<std::uint32_t>(s.value(a)));
-            if (added)
-                order.push_back(a);
-            const int shift = d->unitOffset * width;
-            it->second = (it->second & ~(unitMask(width) << shift)) | (v << shift);
+            for (const model::MappedDevice &m : withBankMates(*d)) {
+                const model::Address a = addressOf(m);
+                auto [it, added] =
+                    wholeValues.try_emplace(a, static_cast<std::uint32_t>(s.value(a)));
+                if (added)
+                    order.push_back(a);
+                const int shift = d->unitOffset * width;
+                it->second = (it->second & ~(unitMask(width) << shift)) | (v << shift);
+            }
             continue;
         }
         if (width == 1)

@@ -11,6 +11,10 @@
 //    and keeps the rest.
 //  - A unit that packs bit devices (a link byte of X, a PL110 register of Q) reads its bits;
 //    bits the map leaves empty read 0 and are not written. A unit with no device is refused.
+//  - Areas that share their element numbers (CPM1 TIM / CNT) are one element to the protocol:
+//    a read answers with the one that holds something, a write goes to each.
+//  - A timer's or counter's coil (Vigor link 0780h..07BFh) reads Snapshot::coils; a write to
+//    it is refused, as the program drives it.
 //  - The target's RUN bit (SystemRole::Run) reads the operating mode; where the map says so
 //    (ProtocolMap::runBitStartsStops) writing it starts or stops the PLC.
 
@@ -33,8 +37,9 @@ public:
     enum class Refusal : std::uint8_t {
         None,
         NoDevice,  // the unit holds no device of the map
-        ReadOnly,  // the protocol reads it but does not write it (ProtocolRange::readOnly)
-        NotServed, // a part of a device the image does not hold (Vigor timer / counter coils)
+        ReadOnly,  // the protocol reads it but does not write it (ProtocolRange::readOnly), or
+                   // the program drives it (a Vigor timer / counter coil)
+        NotServed, // a part of a device the image does not hold (coils of an online image)
     };
 
     struct Units {
@@ -65,8 +70,15 @@ public:
 
 private:
     std::optional<std::uint32_t> special(model::ProtocolSpace space, int unit) const;
+    // The device and the same element of the areas that share its numbers (CPM1 TIM / CNT, one
+    // bank: TC 005 is TIM 005 or CNT 005, whichever the program makes of it). The image keeps
+    // each area's words apart, so a unit reads the one that holds something (a bit: any ON; a
+    // value: the first that is not 0) and a value written goes to each.
+    std::vector<model::MappedDevice> withBankMates(const model::MappedDevice &d) const;
     bool isRunBit(const model::Address &address) const;
-    bool bitValue(const model::Snapshot &s, OperatingMode mode, const model::Address &a) const;
+    // nullopt: the image does not hold this bit (the coils of an image that does not know them).
+    std::optional<bool> bitValue(const model::Snapshot &s, OperatingMode mode,
+                                 const model::MappedDevice &d) const;
     std::uint32_t value(const model::Snapshot &s, OperatingMode mode,
                         const model::Address &a) const;
     Refusal addBit(Change &change, const model::MappedDevice &d, bool on) const;

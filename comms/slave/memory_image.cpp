@@ -68,6 +68,7 @@ MemoryImage::MemoryImage(const model::Target &target, OperatingMode mode)
     s->words.assign(words, 0);
     s->forceMask.assign(words, 0);
     s->forceValue.assign(words, 0);
+    s->coils.assign(static_cast<std::size_t>(s->layout->elementStateCount()), false); // no program
     m_snapshot = std::move(s);
 }
 

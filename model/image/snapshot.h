@@ -50,6 +50,11 @@ struct Snapshot {
     bool stale = false;
     // Set while the scan is stopped inside (the words then hold what the scan wrote so far).
     std::optional<ScanPause> pause;
+    // A timer's or counter's coil: its input (a counter's count input) as the box last ran,
+    // per element state slot (MemoryLayout::elementState). The Vigor Computer Link reads it
+    // at 0780h..07BFh (Vigor M/VB/VH communication manual, B-5-3). Empty where the origin
+    // does not know it (an online PLC).
+    std::vector<bool> coils;
     // Online: the words the PLC has answered for at least once (MemoryLayout order); the
     // others hold 0 because nobody asked, not because the PLC said so (a Vigor timer's set
     // value lives in the program, and no protocol area holds it). Null: every word is the
@@ -76,6 +81,12 @@ struct Snapshot {
             return false;
         const int word = address.bit < 0 ? layout->word(address) : -1;
         return known(word >= 0 ? word : layout->bit(address).word);
+    }
+    std::optional<bool> coil(const Address &address) const {
+        const int slot = layout ? layout->elementState(address) : -1;
+        if (slot < 0 || static_cast<std::size_t>(slot) >= coils.size())
+            return std::nullopt;
+        return coils[static_cast<std::size_t>(slot)];
     }
     bool forced(const Address &address) const {
         const BitRef r = layout ? layout->bit(address) : BitRef{};

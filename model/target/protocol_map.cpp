@@ -61,7 +61,7 @@ std::optional<ProtocolAddress> toProtocol(const Target &target, const ProtocolMa
         return std::nullopt;
     for (const auto &r : map.ranges) {
         if (r.part != part || areaIndex(target, r.area) != address.area ||
-            address.index > lastOf(r, area))
+            address.index < r.origin || address.index > lastOf(r, area))
             continue;
         const int element = address.index - r.origin;
         const int width = unitBits(r.space);
@@ -111,6 +111,13 @@ std::optional<MappedDevice> fromProtocol(const Target &target, const ProtocolMap
         if (d.index >= area.first && d.index <= lastOf(r, area))
             return d;
     }
+    return std::nullopt;
+}
+
+std::optional<int> fixedUnitValue(const ProtocolMap &map, ProtocolSpace space, int unit) {
+    for (const ProtocolFixedUnits &f : map.fixedUnits)
+        if (f.space == space && unit >= f.first && unit <= f.last)
+            return f.value;
     return std::nullopt;
 }
 

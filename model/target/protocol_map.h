@@ -60,6 +60,18 @@ struct ProtocolRange {
     bool readOnly = false;
 };
 
+// Units a manual lists as readable that hold no device of the target: the PLC's own figures
+// (PL110: the protocol chosen for COM1, EXP1 and COM2, words 2..4), what the simulator does
+// not run (the positioners' bits and the PID loops' percentages) and the analog words of
+// expansion modules (AI5..AI66, AQ3..AQ64). A slave answers them with `value` and refuses
+// writes to them.
+struct ProtocolFixedUnits {
+    ProtocolSpace space = ProtocolSpace::HoldingRegisters;
+    int first = 0;
+    int last = 0;
+    int value = 0;
+};
+
 // Vigor Computer Link: 51h / 61h move at most 128 bytes (seed 001, B-5). The Vigor link
 // map's limit and the codec's frame bounds (comms/protocol/vigor_link.h) both read it.
 inline constexpr int VigorLinkMaxBytes = 128;
@@ -87,6 +99,7 @@ struct ProtocolMap {
     // Writing the target's SystemRole::Run bit starts (1) and stops (0) the PLC (PL110 SM0 bit 0,
     // seed 003 chapter 3); elsewhere the run bit is the PLC's to drive.
     bool runBitStartsStops = false;
+    std::vector<ProtocolFixedUnits> fixedUnits;
     // The exception code for an illegal data value (Modbus: 03; the PL110 manual lists 04 as
     // ILLEGAL DATA VALUE, seed 003 3.1).
     int illegalValueException = 0x03;
@@ -123,6 +136,8 @@ std::optional<ProtocolAddress> toProtocol(const Target &target, const ProtocolMa
 // (CPM1 TIM / CNT, one bank) share addresses too; the way back names the first of them.
 std::optional<MappedDevice> fromProtocol(const Target &target, const ProtocolMap &map,
                                          ProtocolSpace space, int unit, int bit = -1);
+// The value of a unit in the map's fixedUnits; nullopt for any other unit.
+std::optional<int> fixedUnitValue(const ProtocolMap &map, ProtocolSpace space, int unit);
 
 namespace detail {
 std::vector<ProtocolMap> vigorProtocolMaps();

@@ -4,9 +4,11 @@
 
 // Omron CPM1 Host Link areas (W353; protocols.md): IR/SR channels through RR / WR, HR
 // through RH / WH, DM through RD / WD, timer / counter present values through RC / WC and
-// their completion flags through RG. A channel's bit is that word's bit. The reach of RR / WR
-// (IR and SR to channel 252) and RD / WD (DM 0000..1023, 6144..6655) is protocols.md's; the
-// channels and DM words past it are the PLC's but not the protocol's.
+// their completion flags through RG. A channel's bit is that word's bit. RR reads IR and SR to
+// channel 255 (W353's IR/SR area, 000..255); SR 253..255 hold the flags the PLC sets (253.13
+// always ON, the arithmetic flags 255.03..255.07), which RR reads and WR may not write. RD / WD
+// reach DM 0000..1023 and 6144..6655; the DM words past 6655 are the PLC's but not the
+// protocol's.
 
 namespace rung::model::detail {
 
@@ -26,6 +28,8 @@ std::vector<ProtocolMap> cpm1ProtocolMaps() {
         {"WR", P::Bit, S::HostLinkIr, 200, 200},
         {"SR", P::Value, S::HostLinkIr, 232, 232, 252},
         {"SR", P::Bit, S::HostLinkIr, 232, 232, 252},
+        {"SR", P::Value, S::HostLinkIr, 253, 253, 255, true},
+        {"SR", P::Bit, S::HostLinkIr, 253, 253, 255, true},
         {"HR", P::Value, S::HostLinkHr, 0, 0},
         {"HR", P::Bit, S::HostLinkHr, 0, 0},
         {"DM", P::Value, S::HostLinkDm, 0, 0},

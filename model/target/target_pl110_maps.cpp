@@ -57,6 +57,20 @@ std::vector<ProtocolMap> pl110ProtocolMaps() {
         {"EEP", P::Value, S::HoldingRegisters, 20000, 0},
         {"MMC", P::Value, S::HoldingRegisters, 30000, 0},
     };
+    // Listed in 3.2, readable, with no device here: a master (mbpoll, an HMI) reads words 0..5
+    // in one request and the analog blocks whole. They read 0: the manual gives no codes for
+    // the protocols of words 2..4, and the simulated PL110 runs no positioner or PID loop and
+    // has no expansion module. Words 0, 1 and 5 are the model, version and station registers.
+    m.fixedUnits = {
+        {S::HoldingRegisters, 2, 4},         // protocol on COM1, EXP1, COM2 (R, ROM)
+        {S::HoldingRegisters, 90, 90},       // POS1..POS2 on/off contacts (R)
+        {S::HoldingRegisters, 95, 95},       // POS1..POS2 tuning contacts (R)
+        {S::HoldingRegisters, 19004, 19065}, // AI5.. of 19000..19065 (R)
+        {S::HoldingRegisters, 19402, 19463}, // AQ3.. of 19400..19463
+        {S::HoldingRegisters, 19800, 19815}, // PID1..4 P / I / D / output percentages (R)
+        {S::Coils, 1440, 1441},              // POS1..POS2 on/off (R)
+        {S::Coils, 1520, 1521},              // POS1..POS2 tuning (R)
+    };
     return {m};
 }
 

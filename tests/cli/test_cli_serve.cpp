@@ -7,6 +7,7 @@
 #include <QDirIterator>
 
 #include <QFile>
+#include <QFileInfo>
 #include <QTcpServer>
 #include <QTemporaryDir>
 
@@ -61,6 +62,38 @@ TEST(CliServe, UsageErrorsSayWhatIsWrong) {
                QStringLiteral("--pty"), QStringLiteral("--frame"), QStringLiteral("9X3")});
     EXPECT_EQ(r.code, 2);
     EXPECT_TRUE(r.err.contains(QStringLiteral("9X3")));
+}
+
+TEST(CliServe, ALinkIsMadeOnlyForAPtyAndNeverOverSomethingOfTheUsers) {
+    QTemporaryDir dir;
+    const QString file = program(dir, "p.il", "; target: pl110\nLD I1\nOUT Q1\nEND\n");
+    const QString at = dir.filePath(QStringLiteral("plc"));
+    CliRun r = serve({file, QStringLiteral("--protocol"), QStringLiteral("modbus"),
+                      QStringLiteral("--tcp"), QStringLiteral("127.0.0.1:0"),
+                      QStringLiteral("--link"), at});
+    EXPECT_EQ(r.code, 2);
+    EXPECT_TRUE(r.err.contains(QStringLiteral("--link names the pseudo-terminal of --pty")))
+        << r.err.toStdString();
+    // A file of the user's, and a link that leads elsewhere: left as they are, exit 2.
+    {
+        QFile mine(at);
+        ASSERT_TRUE(mine.open(QIODevice::WriteOnly));
+        mine.write("notes");
+    }
+    const QString other = dir.filePath(QStringLiteral("other"));
+    ASSERT_TRUE(QFile::link(file, other));
+    for (const QString &taken : {at, other}) {
+        r = serve({file, QStringLiteral("--protocol"), QStringLiteral("modbus"),
+                   QStringLiteral("--pty"), QStringLiteral("--link"), taken});
+        EXPECT_EQ(r.code, 2) << taken.toStdString();
+        EXPECT_TRUE(r.out.isEmpty()) << r.out.toStdString();
+        EXPECT_TRUE(r.err.contains(QStringLiteral("not a link to a pseudo-terminal")))
+            << r.err.toStdString();
+    }
+    QFile mine(at);
+    ASSERT_TRUE(mine.open(QIODevice::ReadOnly));
+    EXPECT_EQ(mine.readAll(), "notes");
+    EXPECT_EQ(QFileInfo(other).symLinkTarget(), file);
 }
 
 TEST(CliServe, APlcThatDoesNotSpeakTheProtocolIsNamedWithWhatItSpeaks) {

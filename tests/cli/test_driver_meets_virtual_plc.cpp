@@ -162,5 +162,29 @@ TEST(DriverMeetsVirtualPlc, Cpm1HostLinkOnAPtyWritesThroughMonitorAndForces) {
     EXPECT_EQ(mode, PlcMode::Run);
 }
 
+TEST(DriverMeetsVirtualPlc, Cpm1HostLinkReadsTheIrAndSrWordsTo255AsTheCliDoes) {
+    // RR reads the IR and SR words 000..255 (protocols.md; the Omron CPM1 guide's channels):
+    // the input channel 000, the flags 253.13 (always ON) and 255.06 (EQ) and their words.
+    VirtualPlcUnderTest plc(kCpm1, {ProtocolId::HostLink, comms::modbus::Framing::Rtu, 0}, false);
+    ASSERT_TRUE(plc.ready());
+    ASSERT_TRUE(plc.scanned());
+    Master m("cpm1", ProtocolKind::HostLink, ptyTo(plc), 0);
+    ASSERT_TRUE(m.driver);
+    std::vector<model::Address> devices;
+    for (const char *d : {"000", "253.13", "255.06", "253", "254", "255", "000.01"})
+        devices.push_back(m.at(d));
+    const comms::Driver::Plan plan = m.driver->plan(devices);
+    for (const auto &[device, why] : plan.unmapped)
+        ADD_FAILURE() << why.toStdString();
+    EXPECT_EQ(m.value("253.13"), 1);
+    EXPECT_EQ(m.value("253") & 0x2000, 0x2000);
+    EXPECT_EQ(m.value("000"), 0);
+    EXPECT_EQ(m.value("255.06"), m.value("255") >> 6 & 1);
+    // The flags are the PLC's: WR to 253 is refused (end code 04), and nothing changes.
+    const DriverError refused = m.run(DeviceCommand::Kind::WriteWord, "253", 0);
+    EXPECT_EQ(refused.kind, DriverError::Kind::Refused) << refused.message.toStdString();
+    EXPECT_EQ(m.value("253.13"), 1);
+}
+
 } // namespace
 } // namespace rung::test

@@ -6,6 +6,8 @@
 #include "comms/protocol/modbus.h"
 #include "comms/protocol/vigor_link.h"
 #include "comms/transport/tcp_transport.h"
+#include "model/target/address.h"
+#include "tests/cli/cli_run.h"
 #include "tests/cli/virtual_plc_fixture.h"
 
 #include <gtest/gtest.h>
@@ -142,6 +144,48 @@ TEST(VirtualPlc, VigorCp2ModbusTcpAndTheLinkOnAPty) {
     }));
 }
 
+TEST(VirtualPlc, VigorLinkReadsTheTimerAndCounterCoilsTheProgramDrives) {
+    // The Vigor M/VB/VH communication manual, B-5-3: T0..T255's coils at 0780h..079Fh,
+    // C0..C255's at 07A0h..07BFh. T5's coil follows M0, C3's follows M1.
+    VirtualPlcUnderTest v("; target: vigor\nLD M0\nTMR T5 K1000\nLD M1\nCNT C3 K5\nEND\n",
+                          {ProtocolId::VigorLink, {}, 0}, false);
+    ASSERT_TRUE(v.ready());
+    PtyTransport pty(v.path);
+    QString error;
+    ASSERT_TRUE(pty.open(&error));
+    const auto bit = [&pty](int byte, int bit, bool on) {
+        const vigor::Request r{0,
+                               on ? vigor::Command::BitOn : vigor::Command::BitOff,
+                               vigor::bitAddress(byte, bit),
+                               0,
+                               {}};
+        vigor::ReplyDecoder d(r);
+        return exchange(pty, vigor::encodeRequest(r), d) == FrameStatus::Complete;
+    };
+    const auto coils = [&pty] {
+        const vigor::Request read{0, vigor::Command::Read, 0x0780, 0x40, {}};
+        vigor::ReplyDecoder d(read);
+        return exchange(pty, vigor::encodeRequest(read), d) == FrameStatus::Complete
+                   ? d.reply().data
+                   : QByteArray();
+    };
+    // The 64 bytes with T5's coil (0780h, bit 5) and C3's (07A0h, bit 3) as given.
+    const auto with = [](bool t5, bool c3) {
+        QByteArray b(0x40, '\0');
+        b[0] = t5 ? '\x20' : '\0';
+        b[0x20] = c3 ? '\x08' : '\0';
+        return b;
+    };
+    ASSERT_TRUE(v.scanned());
+    EXPECT_EQ(coils(), with(false, false));
+    ASSERT_TRUE(bit(0x80, 0, true)); // M0
+    EXPECT_TRUE(eventually([&] { return coils() == with(true, false); }));
+    ASSERT_TRUE(bit(0x80, 1, true)); // M1
+    EXPECT_TRUE(eventually([&] { return coils() == with(true, true); }));
+    ASSERT_TRUE(bit(0x80, 0, false));
+    EXPECT_TRUE(eventually([&] { return coils() == with(false, true); }));
+}
+
 TEST(VirtualPlc, HostLinkRefusesWritesInRunUntilMonitor) {
     VirtualPlcUnderTest v(kServedCpm1, {ProtocolId::HostLink, {}, 0}, false);
     ASSERT_TRUE(v.ready());
@@ -178,6 +222,84 @@ TEST(VirtualPlc, HostLinkRefusesWritesInRunUntilMonitor) {
               FrameStatus::Complete);
     EXPECT_EQ(hostlink::modeOfStatus(ask(hostlink::statusCommand(0)).reply().status),
               hostlink::Mode::Program);
+}
+
+// CNT 000 and CNT 001 count down from #0150 and #0009; their inputs stay OFF, so the
+// present values stay at the set values.
+constexpr const char *kCountersCpm1 = "; target: cpm1\n"
+                                      "LD 000.00\nLD 000.01\nCNT 000 #0150\n"
+                                      "LD 000.02\nLD 000.03\nCNT 001 #0009\nEND(01)\n";
+
+// Bytes as the PLC sends them, up to the end of one Host Link frame ("*" CR).
+QByteArray askRaw(Transport &t, const QByteArray &command) {
+    QString error;
+    EXPECT_TRUE(t.write(command, QDeadlineTimer(1000), &error)) << error.toStdString();
+    QByteArray reply;
+    const QDeadlineTimer deadline(2000);
+    while (!reply.endsWith("*\r")) {
+        const ReadResult r = t.read(deadline);
+        if (r.status != ReadResult::Status::Data)
+            break;
+        reply += r.bytes;
+    }
+    return reply;
+}
+
+TEST(VirtualPlc, HostLinkPresentValuesAreThePlcsBcdWordsBothWays) {
+    // A CPM1 keeps a timer's or counter's present value as BCD digits (W353; the Omron CPM1
+    // guide: set values are BCD), and so does the simulator: 150 is the word 0150h. RC / WC
+    // carry that word as it is; converting it again would answer 0336 for 150.
+    VirtualPlcUnderTest v(kCountersCpm1, {ProtocolId::HostLink, {}, 0}, false);
+    ASSERT_TRUE(v.ready());
+    ASSERT_TRUE(v.scanned());
+    const model::Target &cpm1 = *model::Target::byId(QStringLiteral("cpm1"));
+    const model::Address cnt0 = std::get<model::Address>(model::parseAddress(cpm1, u"CNT 000"));
+    EXPECT_EQ(v.plc->image()->snapshot()->value(cnt0), 0x0150);
+    PtyTransport pty(v.path);
+    QString error;
+    ASSERT_TRUE(pty.open(&error)) << error.toStdString();
+    // protocols.md's vector: @00RC0000000253* reads TC 000 and 001.
+    const QByteArray text = "@00RC0001500009";
+    EXPECT_EQ(askRaw(pty, "@00RC0000000253*\r"), text + hostlink::fcs(text) + "*\r");
+    // `read` prints the numbers, as the ladder shows them from the same words.
+    pty.close();
+    const auto read =
+        cli({QStringLiteral("read"), QStringLiteral("--target"), QStringLiteral("cpm1"),
+             QStringLiteral("--protocol"), QStringLiteral("hostlink"), QStringLiteral("--pty"),
+             v.path, QStringLiteral("CNT 000"), QStringLiteral("TIM 001"), QStringLiteral("000"),
+             QStringLiteral("253.13")});
+    EXPECT_EQ(read.code, 0) << read.err.toStdString();
+    EXPECT_EQ(read.out, QStringLiteral("CNT 000=150\nTIM 001=9\n000=0\n253.13=1\n"));
+    // WC in PROGRAM (the scan stopped, so the program does not count over it): 0042 is the
+    // word 0042h in the PLC and comes back by RC as 0042.
+    ASSERT_TRUE(pty.open(&error)) << error.toStdString();
+    EXPECT_EQ(askRaw(pty, "@00SC0050*\r"),
+              QByteArray("@00SC00") + hostlink::fcs("@00SC00") + "*\r");
+    const QByteArray wc = "@00WC00000042";
+    EXPECT_EQ(askRaw(pty, wc + hostlink::fcs(wc) + "*\r"),
+              QByteArray("@00WC00") + hostlink::fcs("@00WC00") + "*\r");
+    EXPECT_EQ(v.plc->image()->snapshot()->value(cnt0), 0x0042);
+    const QByteArray rc = "@00RC00000001";
+    const QByteArray back = "@00RC000042";
+    EXPECT_EQ(askRaw(pty, rc + hostlink::fcs(rc) + "*\r"), back + hostlink::fcs(back) + "*\r");
+    pty.close();
+    // `write` takes the number: CNT 001 = 12 is the word 0012h.
+    const auto write =
+        cli({QStringLiteral("write"), QStringLiteral("--target"), QStringLiteral("cpm1"),
+             QStringLiteral("--protocol"), QStringLiteral("hostlink"), QStringLiteral("--pty"),
+             v.path, QStringLiteral("CNT 001=12")});
+    EXPECT_EQ(write.code, 0) << write.err.toStdString();
+    const model::Address cnt1 = std::get<model::Address>(model::parseAddress(cpm1, u"CNT 001"));
+    EXPECT_EQ(v.plc->image()->snapshot()->value(cnt1), 0x0012);
+    // Past four digits: refused before the port is opened.
+    const auto big =
+        cli({QStringLiteral("write"), QStringLiteral("--target"), QStringLiteral("cpm1"),
+             QStringLiteral("--protocol"), QStringLiteral("hostlink"), QStringLiteral("--pty"),
+             v.path, QStringLiteral("CNT 001=10000")});
+    EXPECT_EQ(big.code, 2);
+    EXPECT_TRUE(big.err.contains(QLatin1String("10000 does not fit CNT 001 (0..9999)")))
+        << big.err.toStdString();
+    EXPECT_EQ(v.plc->image()->snapshot()->value(cnt1), 0x0012);
 }
 
 TEST(VirtualPlc, StopEndsAWaitingWriteAndTheWorkers) {

@@ -7,6 +7,7 @@
 
 #include "tests/cli/virtual_plc_fixture.h"
 
+#include <QFileInfo>
 #include <QProcess>
 #include <QRegularExpression>
 #include <QStandardPaths>
@@ -20,6 +21,7 @@
 #include <cerrno>
 #include <csignal>
 #include <map>
+#include <tuple>
 
 namespace rung::test {
 namespace {
@@ -340,6 +342,146 @@ TEST(CliServe, ServesAPtyUntilSigtermAndExitsCleanly) {
     EXPECT_EQ(serve.exitCode(), 0);
     const QString err = QString::fromUtf8(serve.readAllStandardError());
     EXPECT_TRUE(err.contains(QStringLiteral("writes"))) << err.toStdString();
+}
+
+// `rungstudio-cli serve FILE ARGS...` started as a user starts it; its first line (where the
+// PLC is reached) read, or empty when it ended or said nothing within 15 s.
+struct Served {
+    QProcess process;
+    QString where;
+
+    Served(const QString &file, const QStringList &args) {
+        process.start(QStringLiteral(RUNG_CLI_PATH),
+                      QStringList{QStringLiteral("serve"), file} + args);
+        if (!process.waitForStarted(5000))
+            return;
+        const QDeadlineTimer deadline(15000);
+        while (!process.canReadLine() && !deadline.hasExpired() &&
+               process.state() == QProcess::Running)
+            process.waitForReadyRead(100);
+        where = QString::fromUtf8(process.readLine()).trimmed();
+    }
+    // SIGTERM, as a service manager stops it; its exit code (-1: it had to be killed).
+    int stop() {
+        process.terminate();
+        if (process.waitForFinished(5000))
+            return process.exitStatus() == QProcess::NormalExit ? process.exitCode() : -1;
+        process.kill();
+        process.waitForFinished(1000);
+        return -1;
+    }
+    ~Served() {
+        if (process.state() != QProcess::NotRunning)
+            stop();
+    }
+};
+
+QStringList mbpollRtu(int station, const char *type, int reference, const QString &path) {
+    return {QStringLiteral("-m"),
+            QStringLiteral("rtu"),
+            QStringLiteral("-b"),
+            QStringLiteral("19200"),
+            QStringLiteral("-P"),
+            QStringLiteral("none"),
+            QStringLiteral("-a"),
+            QString::number(station),
+            QStringLiteral("-0"),
+            QStringLiteral("-1"),
+            QStringLiteral("-o"),
+            QStringLiteral("1"),
+            QStringLiteral("-t"),
+            QLatin1String(type),
+            QStringLiteral("-r"),
+            QString::number(reference),
+            path};
+}
+
+TEST(CliServe, APl110AnswersEveryWordItsManualListsAsMbpollFirstAsksThem) {
+    REQUIRE_MBPOLL();
+    QTemporaryDir dir;
+    const QString file = dir.filePath(QStringLiteral("plc.il"));
+    {
+        QFile f(file);
+        ASSERT_TRUE(f.open(QIODevice::WriteOnly));
+        f.write(kPeerPl110);
+    }
+    Served serve(file, {QStringLiteral("--protocol"), QStringLiteral("modbus"),
+                        QStringLiteral("--pty"), QStringLiteral("--station"), QStringLiteral("7")});
+    ASSERT_TRUE(serve.where.startsWith(QLatin1String("/dev/pts/"))) << serve.where.toStdString();
+    const auto poll = [&](const char *type, int reference, int count) {
+        return run(mbpoll(), mbpollRtu(7, type, reference, serve.where)
+                                 << QStringLiteral("-c") << QString::number(count));
+    };
+    // Words 0..5 in one request (PL110 manual 3.2: device type, firmware, the protocols of
+    // COM1 / EXP1 / COM2, the protocol address): the station the PLC answers as is word 5.
+    Finished f = poll("4", 0, 6);
+    EXPECT_EQ(f.code, 0) << f.out.toStdString() << f.err.toStdString();
+    EXPECT_EQ(mbpollValues(f.out),
+              (std::map<int, int>{{0, 0}, {1, 0}, {2, 0}, {3, 0}, {4, 0}, {5, 7}}))
+        << f.out.toStdString();
+    // Function 04 reads the same words (3.1).
+    f = poll("3", 0, 6);
+    EXPECT_EQ(f.code, 0) << f.out.toStdString() << f.err.toStdString();
+    EXPECT_EQ(mbpollValues(f.out)[5], 7);
+    // The other listed words with no device of the simulated PLC read 0: the positioners
+    // (90, 95), the analog blocks past AI4 / AQ2, the PID percentages; bits 1440.., 1520..
+    for (const auto &[type, reference, count] :
+         {std::tuple{"4", 90, 1}, std::tuple{"4", 95, 1}, std::tuple{"4", 19000, 30},
+          std::tuple{"4", 19030, 30}, std::tuple{"4", 19060, 6}, std::tuple{"4", 19400, 30},
+          std::tuple{"4", 19430, 30}, std::tuple{"4", 19460, 4}, std::tuple{"4", 19800, 16},
+          std::tuple{"0", 1440, 2}, std::tuple{"0", 1520, 2}}) {
+        f = poll(type, reference, count);
+        EXPECT_EQ(f.code, 0) << reference << ": " << f.out.toStdString() << f.err.toStdString();
+        EXPECT_EQ(int(mbpollValues(f.out).size()), count) << reference;
+    }
+    // What the manual does not list is refused: word 6, 19066, 19816; bit 1442.
+    for (const auto &[type, reference] :
+         {std::pair{"4", 6}, std::pair{"4", 19066}, std::pair{"4", 19816}, std::pair{"0", 1442}}) {
+        f = poll(type, reference, 1);
+        EXPECT_NE(f.code, 0) << reference << ": " << f.out.toStdString();
+        EXPECT_TRUE(f.out.contains(QLatin1String("Illegal data address")) ||
+                    f.err.contains(QLatin1String("Illegal data address")))
+            << reference << ": " << f.out.toStdString() << f.err.toStdString();
+    }
+    // Read only: word 2 is not written (exception 02).
+    f = run(mbpoll(), mbpollRtu(7, "4", 2, serve.where) << QStringLiteral("5"));
+    EXPECT_NE(f.code, 0) << f.out.toStdString();
+    EXPECT_EQ(serve.stop(), 0);
+}
+
+TEST(CliServe, ALinkLeadsToThePlcAcrossRestartsAndGoesWhenServeEnds) {
+    REQUIRE_MBPOLL();
+    QTemporaryDir dir;
+    const QString file = dir.filePath(QStringLiteral("plc.il"));
+    {
+        QFile f(file);
+        ASSERT_TRUE(f.open(QIODevice::WriteOnly));
+        f.write(kPeerPl110);
+    }
+    const QString link = dir.filePath(QStringLiteral("plc"));
+    // A link left by a serve that was killed (SIGKILL: no cleanup) is taken over.
+    ASSERT_TRUE(QFile::link(QStringLiteral("/dev/pts/4000"), link));
+    const QStringList args{QStringLiteral("--protocol"), QStringLiteral("modbus"),
+                           QStringLiteral("--pty"), QStringLiteral("--link"), link};
+    const QStringList v0 = mbpollRtu(1, "4", 2000, link);
+    const QStringList v1 = mbpollRtu(1, "4", 2001, link);
+    for (const int value : {321, 654}) { // a first run, then a restart
+        Served serve(file, args);
+        ASSERT_EQ(serve.where, link) << serve.process.readAllStandardError().toStdString();
+        const QString pty = QFileInfo(link).symLinkTarget();
+        EXPECT_TRUE(pty.startsWith(QLatin1String("/dev/pts/"))) << pty.toStdString();
+        EXPECT_NE(pty, QStringLiteral("/dev/pts/4000"));
+        // A master given the link's path, as the user gives it in the Connection panel.
+        const Finished w = run(mbpoll(), QStringList(v0) << QString::number(value));
+        EXPECT_EQ(w.code, 0) << w.out.toStdString() << w.err.toStdString();
+        EXPECT_TRUE(eventually([&] { return mbpollValues(run(mbpoll(), v1).out)[2001] == value; }));
+        EXPECT_EQ(serve.stop(), 0);
+        const QString err = QString::fromUtf8(serve.process.readAllStandardError());
+        EXPECT_TRUE(err.contains(QStringLiteral("a link to ") + pty)) << err.toStdString();
+        // Gone with the serve that made it: no link to a pseudo-terminal that no longer is.
+        EXPECT_FALSE(QFileInfo(link).isSymLink());
+        EXPECT_FALSE(QFileInfo::exists(link));
+    }
 }
 
 // What `serve --protocol modbus-tcp --tcp 127.0.0.1:0` of a program says until SIGINT ends it.

@@ -227,6 +227,44 @@ TEST(HostLinkDriver, ReadsDmIrAndTimersWithTheSpecFrames) {
     EXPECT_TRUE(f.port->mismatch().isEmpty()) << f.port->mismatch().toStdString();
 }
 
+TEST(HostLinkDriver, TheImageHoldsPresentValuesAsThePlcKeepsThemInBcd) {
+    // The online image is the PLC's memory, as the simulator's is: TIM 000 = 150 is the word
+    // 0150h there (W353), which the ladder and the watch table read as BCD. A refresh that
+    // turned it into 150 (0096h) would show "96" beside the simulation's "150".
+    FakeDriver f(Family::Cpm1, ProtocolKind::HostLink, 0);
+    f.port->reply("@00RC0000000253*\r", hostLinkReply("RC", 0, "01500009"));
+    const Driver::Plan plan = f.driver->plan(f.devices({"TIM 000", "TIM 001"}));
+    // Only the values: the plan reads the completion flags (RG) too.
+    f.port->reply(
+        hostlink::encode(hostlink::readCommand(0, model::ProtocolSpace::HostLinkCompletion, 0, 2))
+            .value(0),
+        hostLinkReply("RG", 0, "00"));
+    std::vector<std::int32_t> words(std::size_t(f.driver->layout()->wordCount()), 0);
+    ASSERT_TRUE(f.driver->refresh(plan, words, nullptr).ok());
+    model::Snapshot image;
+    image.layout = f.driver->layout();
+    image.words = words;
+    EXPECT_EQ(image.value(f.device("TIM 000")), 0x0150);
+    EXPECT_EQ(image.value(f.device("TIM 001")), 0x0009);
+    EXPECT_EQ(f.driver->number(image, f.device("TIM 000")), 150);
+    // A command carries the word too (the watch table's BCD 150 is 0150h): WC sends it as it
+    // is, @00WC0000 0150 (W353), not 0336, the digits of 0150h read as a number.
+    f.port->reply("@00MS5E*\r", hostLinkReply("MS", 0, "0300")); // MONITOR
+    f.port->reply(hostlink::encode(
+                      hostlink::writeCommand(0, model::ProtocolSpace::HostLinkTimerPv, 0, {0x0150}))
+                      .value(0),
+                  hostLinkReply("WC", 0));
+    const DriverError written = f.execute(Kind::WriteWord, "TIM 000", 0x0150);
+    EXPECT_TRUE(written.ok()) << written.message.toStdString();
+    EXPECT_TRUE(f.port->mismatch().isEmpty()) << f.port->mismatch().toStdString();
+    // The way a user types it: 150 is the word 0150h; past four digits it does not fit.
+    QString why;
+    EXPECT_EQ(f.driver->wordOf(f.device("TIM 000"), 150, &why), 0x0150);
+    EXPECT_EQ(f.driver->wordOf(f.device("TIM 000"), 10000, &why), std::nullopt);
+    EXPECT_TRUE(why.contains(QLatin1String("0..9999"))) << why.toStdString();
+    EXPECT_EQ(f.driver->wordOf(f.device("DM 0000"), 150, &why), 150); // a plain word
+}
+
 TEST(HostLinkDriver, AWriteInRunSwitchesToMonitorFirstAndSaysSo) {
     FakeDriver f(Family::Cpm1, ProtocolKind::HostLink, 0);
     f.port->reply("@00MS5E*\r", hostLinkReply("MS", 0, "0200")); // bits 9-8 = 10: RUN

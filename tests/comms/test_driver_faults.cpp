@@ -2,10 +2,10 @@
 // names the device, the PLC and the cause; bounded retries for noise and silence only; no
 // hang; and no write reported done that the PLC did not acknowledge.
 
+#include "comms/driver/connection.h"
 #include "comms/protocol/host_link.h"
 #include "comms/protocol/modbus.h"
 #include "comms/protocol/vigor_link.h"
-#include "comms/driver/connection.h"
 #include "tests/comms/driver_fixture.h"
 #include "tests/comms/hex.h"
 
@@ -268,10 +268,12 @@ TEST(DriverFaults, ADeviceThePlcRefusesIsNamedAndTheOthersAreStillRead) {
 
 TEST(DriverFaults, AValueThatDoesNotFitIsRefusedBeforeAnythingIsSent) {
     FakeDriver f(Family::Cpm1, ProtocolKind::HostLink, 0);
-    // Timer present values are 4 BCD digits.
-    const DriverError e = f.execute(Kind::WriteWord, "TIM 000", 10000);
+    // Timer present values are 4 BCD digits: the word 00A0h is none (the PLC: end code 15).
+    const DriverError e = f.execute(Kind::WriteWord, "TIM 000", 0x00A0);
     EXPECT_EQ(e.kind, EK::BadDevice);
-    EXPECT_TRUE(e.message.contains(QLatin1String("0..9999"))) << e.message.toStdString();
+    EXPECT_TRUE(e.message.contains(QLatin1String("#0000..#9999"))) << e.message.toStdString();
+    EXPECT_TRUE(e.message.contains(QLatin1String("00A0h"))) << e.message.toStdString();
+    EXPECT_EQ(f.execute(Kind::WriteWord, "TIM 000", 0x10000).kind, EK::BadDevice);
     FakeDriver v(Family::Vigor, ProtocolKind::VigorLink, 0);
     EXPECT_EQ(v.execute(Kind::WriteWord, "D0", 70000).kind, EK::BadDevice);
     EXPECT_EQ(f.port->writes() + v.port->writes(), 0);

@@ -239,6 +239,27 @@ TEST(PtyTransport, APseudoTerminalNamedAsASerialPortOpensAsOne) {
     }
 }
 
+// `serve --pty --link PATH` restarting: the link leads to a pseudo-terminal that is gone, and
+// the next start points it at a new one. A master given PATH in between still takes it for a
+// pseudo-terminal, and opens the new one through it once it is there.
+TEST(PtyTransport, ALinkToAPseudoTerminalThatIsGoneIsStillOneAndOpensWhenItLeadsToOneAgain) {
+    QTemporaryDir dir;
+    const QString link = dir.filePath(QStringLiteral("plc"));
+    ASSERT_TRUE(QFile::link(QStringLiteral("/dev/pts/4000"), link));
+    std::unique_ptr<Transport> t = makePortTransport(link, SerialSettings{});
+    ASSERT_NE(dynamic_cast<PtyTransport *>(t.get()), nullptr);
+    QString error;
+    EXPECT_FALSE(t->open(&error));
+    EXPECT_TRUE(error.contains(link)) << error.toStdString();
+    std::unique_ptr<PtyTransport> master = PtyTransport::createPair(&error);
+    ASSERT_TRUE(master) << error.toStdString();
+    ASSERT_TRUE(QFile::remove(link));
+    ASSERT_TRUE(QFile::link(master->peerPath(), link));
+    ASSERT_TRUE(t->open(&error)) << error.toStdString();
+    ASSERT_TRUE(t->write("\x05", QDeadlineTimer(2000), &error)) << error.toStdString();
+    EXPECT_EQ(readAll(*master, 1), QByteArray("\x05"));
+}
+
 // A name that is no pseudo-terminal stays a serial port, and its error names the port.
 TEST(PtyTransport, AMissingPortIsASerialPortWhoseErrorNamesIt) {
     std::unique_ptr<Transport> t =

@@ -123,13 +123,15 @@ TEST(HostLinkSlave, WritesAndForcingAreRefusedInRunUntilMonitor) {
 
 TEST(HostLinkSlave, PresentValuesTravelAsBcdAndCompletionFlagsAsDigits) {
     HostLinkSlave f(OperatingMode::Monitor);
-    f.plc.set("TIM 002", 1234);
+    // The PLC keeps a present value as BCD digits (W353; the simulator too): TIM 002 = 1234
+    // is the word 1234h, which RC carries as it is.
+    f.plc.set("TIM 002", 0x1234);
     f.plc.set("TIM 003", 1);
     ReplyDecoder d = f.ask(readCommand(0, model::ProtocolSpace::HostLinkTimerPv, 2, 1));
     ASSERT_EQ(d.status(), FrameStatus::Complete);
     EXPECT_EQ(d.reply().words, (std::vector<std::uint16_t>{0x1234}));
     EXPECT_EQ(f.endCodeOf(writeCommand(0, model::ProtocolSpace::HostLinkTimerPv, 2, {0x0150})), 0);
-    EXPECT_EQ(f.plc.value("TIM 002"), 150);
+    EXPECT_EQ(f.plc.value("TIM 002"), 0x0150);
     // Not BCD: 15.
     EXPECT_EQ(f.endCodeOf(writeCommand(0, model::ProtocolSpace::HostLinkTimerPv, 2, {0x00A0})),
               EntryNumberError);

@@ -1,6 +1,7 @@
 // The Vigor Computer Link slave (seed 001 B-5): protocols.md's vectors from the PLC's side,
 // byte for byte, and the error codes it answers with.
 
+#include "comms/slave/memory_image.h"
 #include "comms/slave/vigor_responder.h"
 #include "tests/comms/hex.h"
 #include "tests/comms/slave_fixture.h"
@@ -162,9 +163,110 @@ TEST(VigorSlave, A32BitCounterValueReadsLowByteFirst) {
     EXPECT_EQ(d.reply().data, bytes("04 03 02 01"));
 }
 
-TEST(VigorSlave, TimerCoilsAreNotServedAndSaySo) {
+// The bytes a 51h read answers with; empty when it is refused.
+QByteArray readBytes(VigorSlave &f, int address, int length) {
+    const vigor::Request request{0, vigor::Command::Read, address, length, {}};
+    vigor::ReplyDecoder d(request);
+    if (d.feed(f.ask(vigor::encodeRequest(request))) != FrameStatus::Complete)
+        return {};
+    return d.reply().data;
+}
+
+TEST(VigorSlave, EveryAreaOfTheB53TableIsServedFromItsFirstByteToItsLast) {
+    // The Vigor M/VB/VH communication manual, B-5-3: each area's first and last device at its
+    // first and last byte, and every byte between them readable (in reads of 128 bytes).
     VigorSlave f;
-    EXPECT_EQ(errorOf(f, vigor::encodeRequest({0, vigor::Command::Read, 0x0780, 1, {}})), 0x28);
+    const model::Target &t = vigor();
+    auto on = [&](const char *device) {
+        const auto done =
+            f.plc.image->apply({{model::DeviceCommand::Kind::WriteBit, test::device(t, device), 1}},
+                               QDeadlineTimer(1000));
+        ASSERT_TRUE(done.done()) << device;
+    };
+    struct Bits {
+        const char *first, *last;
+        int from, to;
+    };
+    for (const Bits &row : {Bits{"X0", "X777", 0x0000, 0x003F}, Bits{"Y0", "Y777", 0x0040, 0x007F},
+                            Bits{"M0", "M5119", 0x0080, 0x02FF}, Bits{"S0", "S999", 0x0300, 0x037C},
+                            Bits{"T0", "T255", 0x0380, 0x039F}, Bits{"C0", "C255", 0x03A0, 0x03BF},
+                            Bits{"M9000", "M9255", 0x03E0, 0x03FF}}) {
+        on(row.first);
+        on(row.last);
+        EXPECT_EQ(readBytes(f, row.from, 1), QByteArray(1, '\x01')) << row.first;
+        EXPECT_EQ(readBytes(f, row.to, 1), QByteArray(1, '\x80')) << row.last;
+    }
+    // The coils: 0780h..079Fh T0..T255, 07A0h..07BFh C0..C255 (an image without a program
+    // holds them OFF; the virtual PLC's program drives them, tests/cli).
+    EXPECT_EQ(readBytes(f, 0x0780, 0x40), QByteArray(0x40, '\0'));
+    struct Words {
+        const char *first, *last;
+        int from, to, bytes;
+    };
+    for (const Words &row :
+         {Words{"T0", "T255", 0x1400, 0x15FE, 2}, Words{"D9000", "D9255", 0x1600, 0x17FE, 2},
+          Words{"C0", "C199", 0x1800, 0x198E, 2}, Words{"C200", "C255", 0x1A00, 0x1ADC, 4},
+          Words{"D0", "D8191", 0x1C00, 0x5BFE, 2}}) {
+        f.plc.set(row.first, 0x1234);
+        f.plc.set(row.last, row.bytes == 4 ? 0x01020304 : 0xABCD);
+        EXPECT_EQ(readBytes(f, row.from, row.bytes),
+                  row.bytes == 4 ? bytes("34 12 00 00") : bytes("34 12"))
+            << row.first;
+        EXPECT_EQ(readBytes(f, row.to, row.bytes),
+                  row.bytes == 4 ? bytes("04 03 02 01") : bytes("CD AB"))
+            << row.last;
+    }
+    // No hole inside an area: every byte of it in reads of at most 128 bytes.
+    for (const auto &[from, to] :
+         {std::pair{0x0000, 0x037C}, std::pair{0x0380, 0x03BF}, std::pair{0x03E0, 0x03FF},
+          std::pair{0x0780, 0x07BF}, std::pair{0x1400, 0x198F}, std::pair{0x1A00, 0x1ADF},
+          std::pair{0x1C00, 0x5BFF}}) {
+        for (int at = from; at <= to; at += 128) {
+            const int length = std::min(128, to - at + 1);
+            EXPECT_EQ(readBytes(f, at, length).size(), length) << std::hex << at;
+        }
+    }
+    // Between the areas the table lists nothing: 037Dh, 03C0h, 0400h, 07C0h, 1990h, 1AE0h.
+    for (const int gap : {0x037D, 0x03C0, 0x0400, 0x07C0, 0x1990, 0x1AE0, 0x5C00})
+        EXPECT_TRUE(readBytes(f, gap, 1).isEmpty()) << std::hex << gap;
+}
+
+TEST(VigorSlave, ACoilIsReadButNotWrittenAndAnImageWithoutCoilsSaysSo) {
+    VigorSlave f;
+    // 61h to T0..T7's coils: the program drives a coil, so the write is refused (28h).
+    EXPECT_EQ(errorOf(f, vigor::encodeRequest({0, vigor::Command::Write, 0x0780, 1, "\x01"})),
+              0x28);
+    EXPECT_EQ(f.plc.image->changes(), 0);
+    // An online image does not know the coils: 28h rather than a made-up 00.
+    auto online = std::make_shared<MemoryImage>(vigor());
+    struct NoCoils final : DeviceImage {
+        std::shared_ptr<MemoryImage> inner;
+        std::shared_ptr<const model::Snapshot> snapshot() const override {
+            auto s = std::make_shared<model::Snapshot>(*inner->snapshot());
+            s->coils.clear();
+            return s;
+        }
+        ImageChange apply(const std::vector<model::DeviceCommand> &c, QDeadlineTimer d) override {
+            return inner->apply(c, d);
+        }
+        OperatingMode mode() const override { return inner->mode(); }
+        ImageChange setMode(OperatingMode m, QDeadlineTimer d) override {
+            return inner->setMode(m, d);
+        }
+    };
+    auto image = std::make_shared<NoCoils>();
+    image->inner = online;
+    VigorResponder slave(vigor(), *model::findProtocolMap(vigor(), model::ProtocolId::VigorLink), 0,
+                         image);
+    const QByteArrayList out =
+        slave.feed(vigor::encodeRequest({0, vigor::Command::Read, 0x0780, 1, {}}));
+    ASSERT_EQ(out.size(), 1);
+    EXPECT_EQ(out.front().mid(5, 2), "28");
+    // The contacts beside them are served.
+    const QByteArrayList contacts =
+        slave.feed(vigor::encodeRequest({0, vigor::Command::Read, 0x0380, 1, {}}));
+    ASSERT_EQ(contacts.size(), 1);
+    EXPECT_EQ(contacts.front().mid(5, 2), "00");
 }
 
 } // namespace

@@ -163,7 +163,9 @@ TEST(VigorLink, AnAnswerFromAnotherStationIsWrongStation) {
     ReplyDecoder d({5, Command::BitOn, 0x040A, 0, {}});
     ASSERT_EQ(d.feed(encodeReply({6, Command::BitOn, 0, {}})), FrameStatus::Failed);
     EXPECT_EQ(d.error().kind, Kind::WrongStation);
-    EXPECT_TRUE(d.error().message.contains(QLatin1String("6")));
+    // Both stations, each in its place: the one that answered, the one that was asked.
+    EXPECT_EQ(d.error().message,
+              QStringLiteral("Vigor link: station 6 answered, station 5 was asked"));
 }
 
 TEST(VigorLink, AReplyToAnotherCommandOrWithTheWrongLengthIsRefused) {

@@ -235,6 +235,9 @@ TEST_P(Online, TheViewsShowThePlcAndFollowItsInputs) {
     EXPECT_TRUE(QTest::qWaitFor([&] { return bit(c.coil); }, kPatienceMs));
     setInPlc(c.input, false);
     EXPECT_TRUE(QTest::qWaitFor([&] { return !bit(c.coil); }, kPatienceMs));
+    // Every device the views show has an address on the wire: no "... has no address in ..."
+    // (the CPM1's 253.13 is read by RR, as `rungstudio-cli read` reads it).
+    EXPECT_TRUE(session()->errorText().isEmpty()) << session()->errorText().toStdString();
     EXPECT_TRUE(QTest::qWaitFor([&] { return !panel->trafficLog()->toPlainText().isEmpty(); },
                                 kPatienceMs));
     EXPECT_TRUE(panel->trafficLog()->toPlainText().contains(QStringLiteral("PC>PLC")));
@@ -418,11 +421,19 @@ TEST_P(Online, RunAndStopAskFirstAndTheModeFollows) {
     EXPECT_EQ(questions.size(), 2);
     EXPECT_TRUE(
         QTest::qWaitFor([&] { return session()->plcMode() == comms::PlcMode::Run; }, kPatienceMs));
-    // Declined: the mode stays.
+    // Declined: nothing is sent and the mode stays. Proved by a round trip that must come
+    // after it, not by a pause: the session sends waiting commands before each refresh, so
+    // once the views show an input changed in the PLC after the refusal, a mode change asked
+    // before would have gone first (and PROGRAM / STOP would have kept the coil from following).
     panel->setConfirmer([](const QString &, const QString &) { return false; });
+    QSignalSpy commands(session(), &model::MonitorSource::commandFinished);
     action("onlineProgram")->trigger();
-    QTest::qWait(50); // nothing may be sent: there is no answer to wait for
+    const bool on = !plc->image()->snapshot()->bit(at(c.input));
+    setInPlc(c.input, on);
+    EXPECT_TRUE(QTest::qWaitFor([&] { return bit(c.coil) == on; }, kPatienceMs));
+    EXPECT_TRUE(commands.isEmpty()); // no command started, not even one answered "cancelled"
     EXPECT_EQ(session()->plcMode(), comms::PlcMode::Run);
+    EXPECT_EQ(plc->image()->mode(), comms::slave::OperatingMode::Run);
 }
 
 TEST_P(Online, APulledCableShowsAtOnceKeepsStaleValuesAndReconnectsByItself) {

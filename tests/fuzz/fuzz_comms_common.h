@@ -8,6 +8,7 @@
 #include "comms/protocol/protocol_error.h"
 
 #include <QByteArray>
+#include <QByteArrayList>
 
 #include <algorithm>
 #include <cstdint>
@@ -59,6 +60,39 @@ template <typename Decoder> void feedAll(Input &in, Decoder &decoder) {
         std::abort(); // every failure names its cause
     if (decoder.status() == FrameStatus::NeedMore && decoder.deadlinePassed(100).message.isEmpty())
         std::abort();
+}
+
+// The slave side (a responder of comms/slave, the virtual PLC's): the whole input is the peer's
+// bytes, fed in chunks; with `silences`, a byte after each chunk says whether the line then
+// goes quiet (silence() when it is a multiple of 4: Modbus RTU's end of a frame). Every frame
+// the slave sends must pass `valid` (framed, its checksum right, from its own station), and
+// what it holds stays within `bound` after every feed.
+template <typename Responder, typename Valid>
+void serveAll(Input &in, Responder &responder, qsizetype bound, bool silences, Valid valid) {
+    while (!in.done()) {
+        QByteArrayList out = responder.feed(in.chunk());
+        if (silences && in.byte() % 4 == 0)
+            out += responder.silence();
+        for (const QByteArray &frame : out) {
+            if (!valid(frame)) {
+                std::fprintf(stderr, "the slave sent a frame that is not one: %s\n",
+                             frame.toHex(' ').constData());
+                std::abort();
+            }
+        }
+        if (responder.buffered() > bound) {
+            std::fprintf(stderr, "the slave holds %lld bytes, its bound is %lld\n",
+                         static_cast<long long>(responder.buffered()),
+                         static_cast<long long>(bound));
+            std::abort();
+        }
+    }
+}
+
+// Upper-case hexadecimal digits only (the ASCII protocols' payload).
+inline bool isUpperHex(QByteArrayView bytes) {
+    return std::all_of(bytes.begin(), bytes.end(),
+                       [](char c) { return (c >= '0' && c <= '9') || (c >= 'A' && c <= 'F'); });
 }
 
 } // namespace rung::comms::fuzz

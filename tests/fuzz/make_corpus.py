@@ -156,3 +156,62 @@ commands = [b"@00RD0000000157*\r", b"@00WD0100123456*\r", b"@00RR0000000242*\r",
             b"@00WR001000FF44*\r", b"@00RC0000000253*\r", b"@00MS5E*\r", b"@00SC0050*\r",
             b"@00SC0252*\r", b"@00SC0353*\r", b"@00MM40*\r", b"@00KSCIO 0010003C*\r"]
 write("fuzz_hostlink_reply", "all_commands", bytes([0, 2]) + chunks(b"".join(commands)))
+
+
+# ----- The slaves' request side (fuzz_*_slave.cpp): the peer's bytes only, behind the bytes
+# that pick the slave (station; Modbus: the map, 0 Vigor CP2 / 1 PL110, and 1 + b % 247 as
+# the station; Host Link: unit, mode 0 PROGRAM / 1 MONITOR / 2 RUN).
+def chunks_quiet(stream, size=16):
+    """Chunks as fuzz_modbus_rtu_slave reads them: each followed by the byte that says whether
+    the line goes quiet (0: silence(), the end of an RTU frame; 1: more follows)."""
+    out = b""
+    for i in range(0, len(stream), size):
+        piece = stream[i:i + size]
+        last = i + size >= len(stream)
+        out += bytes([len(piece) - 1]) + piece + bytes([0 if last else 1])
+    return out
+
+
+for name, command, address, length, request, reply in VIGOR:
+    write("fuzz_vigor_slave", name, bytes([0]) + chunks(hx(request)))
+    write("fuzz_vigor_slave", name + "_one_byte_reads", bytes([0]) + chunks(hx(request), 1))
+write("fuzz_vigor_slave", "all_requests", bytes([0]) + chunks(requests))
+# Noise before a request, and a request for station 5 on a line shared with station 0's.
+write("fuzz_vigor_slave", "noise_then_read_m8",
+      bytes([0]) + chunks(b"\xff\x06garbage" + hx(VIGOR[0][4])))
+
+modbus_requests = b""
+for name, function, address, count, value, request, response in MODBUS:
+    frame = rtu(unit, hx(request))
+    modbus_requests += frame
+    # The Vigor CP2 map (0) and the PL110's (1), station 11h (1 + 16).
+    for which in (0, 1):
+        write("fuzz_modbus_rtu_slave", f"{name}_map{which}",
+              bytes([which, 16]) + chunks_quiet(frame))
+        write("fuzz_modbus_tcp_slave", f"{name}_map{which}",
+              bytes([which, 16]) + chunks(tcp(1, unit, hx(request))))
+write("fuzz_modbus_rtu_slave", "all_requests_pl110", bytes([1, 16]) + chunks_quiet(modbus_requests))
+# What mbpoll asks a PL110 first: words 0..5 of unit 1; then function 04 and a broadcast write.
+pl110 = [rtu(1, hx("03 00 00 00 06")), rtu(1, hx("04 00 00 00 06")),
+         rtu(0, hx("06 07 D0 01 41")), rtu(0xFF, hx("01 06 40 00 10"))]
+write("fuzz_modbus_rtu_slave", "pl110_words_0_to_5",
+      bytes([1, 0]) + b"".join(chunks_quiet(f) for f in pl110))
+write("fuzz_modbus_tcp_slave", "pl110_words_0_to_5",
+      bytes([1, 0]) + chunks(b"".join(tcp(i + 1, 1, f[1:-2]) for i, f in enumerate(pl110))))
+write("fuzz_modbus_tcp_slave", "all_requests_vigor",
+      bytes([0, 16]) + chunks(b"".join(tcp(i + 1, unit, hx(m[5])) for i, m in enumerate(MODBUS))))
+
+for i, command in enumerate(commands):
+    write("fuzz_hostlink_slave", f"command_{i:02d}_monitor", bytes([0, 1]) + chunks(command))
+write("fuzz_hostlink_slave", "all_commands_monitor", bytes([0, 1]) + chunks(b"".join(commands)))
+write("fuzz_hostlink_slave", "all_commands_run", bytes([0, 2]) + chunks(b"".join(commands)))
+write("fuzz_hostlink_slave", "all_commands_program", bytes([0, 0]) + chunks(b"".join(commands)))
+# A read of 100 words answered in four parts, each asked for with a CR; a write of 40 words
+# sent in two parts, each part's CR answered by the slave.
+rd100 = hl("@05RD00000100")
+write("fuzz_hostlink_slave", "rd_100_words_in_parts",
+      bytes([5, 1]) + chunks(rd100 + b"\r\r\r"))
+wd_text = "@05WD0000" + "".join(f"{i:04X}" for i in range(40))
+first, rest = wd_text[:127], wd_text[127:]
+write("fuzz_hostlink_slave", "wd_40_words_in_parts",
+      bytes([5, 1]) + chunks((first + fcs(first) + "\r").encode() + (rest + fcs(rest) + "*\r").encode()))

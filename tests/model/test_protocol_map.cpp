@@ -210,22 +210,35 @@ TEST(ProtocolMap, Cpm1HostLinkAreas) {
 }
 
 TEST(ProtocolMap, Cpm1HostLinkReachesWhatProtocolsMdGivesAndNoFurther) {
-    // protocols.md: RR / WR reach IR and SR to channel 0252, RD / WD DM 0000..1023 and
-    // 6144..6655. The PLC has SR 253..255 and DM past 6655; the protocol map does not.
+    // protocols.md: RR / WR reach the IR and SR words 000..255 (SR 253..255: the PLC's flags,
+    // read with RR, never written), RD / WD DM 0000..1023 and 6144..6655. The PLC has DM past
+    // 6655; the protocol map does not.
     const Target &t = Target::get(Family::Cpm1);
     const ProtocolMap &m = *findProtocolMap(t, ProtocolId::HostLink);
-    EXPECT_EQ(map(t, ProtocolId::HostLink, "252", P::Value),
-              (ProtocolAddress{S::HostLinkIr, 252, -1, 1}));
-    EXPECT_EQ(map(t, ProtocolId::HostLink, "DM 6655", P::Value),
-              (ProtocolAddress{S::HostLinkDm, 6655, -1, 1}));
-    for (const char *beyond : {"253", "255"}) {
-        EXPECT_FALSE(toProtocol(t, m, parse(t, beyond), P::Value).has_value()) << beyond;
-        EXPECT_FALSE(toProtocol(t, m, parse(t, (QByteArray(beyond) + ".00").constData()), P::Bit))
-            << beyond;
+    const auto H = ProtocolId::HostLink;
+    EXPECT_EQ(map(t, H, "000", P::Value), (ProtocolAddress{S::HostLinkIr, 0, -1, 1}));
+    EXPECT_EQ(map(t, H, "252", P::Value), (ProtocolAddress{S::HostLinkIr, 252, -1, 1}));
+    EXPECT_EQ(map(t, H, "253", P::Value), (ProtocolAddress{S::HostLinkIr, 253, -1, 1}));
+    EXPECT_EQ(map(t, H, "255", P::Value), (ProtocolAddress{S::HostLinkIr, 255, -1, 1}));
+    EXPECT_EQ(map(t, H, "253.13"), (ProtocolAddress{S::HostLinkIr, 253, 13, 1}));
+    EXPECT_EQ(map(t, H, "255.06"), (ProtocolAddress{S::HostLinkIr, 255, 6, 1}));
+    EXPECT_EQ(map(t, H, "DM 6655", P::Value), (ProtocolAddress{S::HostLinkDm, 6655, -1, 1}));
+    // The way back: the flags' channels are SR, read only; the SR words below them are not.
+    for (const int channel : {253, 254, 255}) {
+        const auto word = fromProtocol(t, m, S::HostLinkIr, channel);
+        ASSERT_TRUE(word.has_value()) << channel;
+        EXPECT_EQ(formatAddress(t, {word->area, word->index, -1}), QString::number(channel));
+        EXPECT_TRUE(word->readOnly) << channel;
     }
+    const auto flag = fromProtocol(t, m, S::HostLinkIr, 253, 13);
+    ASSERT_TRUE(flag.has_value());
+    EXPECT_EQ(formatAddress(t, {flag->area, flag->index, flag->bit}), QStringLiteral("253.13"));
+    EXPECT_TRUE(flag->readOnly);
+    const auto analog = fromProtocol(t, m, S::HostLinkIr, 250);
+    ASSERT_TRUE(analog.has_value());
+    EXPECT_FALSE(analog->readOnly);
     EXPECT_FALSE(toProtocol(t, m, parse(t, "DM 6656"), P::Value).has_value());
-    EXPECT_FALSE(fromProtocol(t, m, S::HostLinkIr, 253).has_value());
-    EXPECT_FALSE(fromProtocol(t, m, S::HostLinkIr, 255, 0).has_value());
+    EXPECT_FALSE(fromProtocol(t, m, S::HostLinkIr, 256).has_value());
     EXPECT_FALSE(fromProtocol(t, m, S::HostLinkDm, 6656).has_value());
     EXPECT_TRUE(fromProtocol(t, m, S::HostLinkDm, 6655).has_value());
 }
