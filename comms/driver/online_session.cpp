@@ -249,6 +249,7 @@ void OnlineSession::workerLoop() {
     auto wordsRead = std::make_shared<const std::vector<bool>>(words.size(), false);
     std::vector<model::Address> refused; // devices the PLC refused: not asked for again
     QStringList problems;                // why some watched devices show nothing
+    QString problemsPosted;              // what the owner was last told of them
     bool haveValues = false;
     bool everUp = false;
     bool up = false;
@@ -502,9 +503,13 @@ void OnlineSession::workerLoop() {
                 driver->link().countReconnect();
             up = everUp = true;
             backoff = m_settings.reconnectMinMs;
-            postState(ConnectionState::Online, problemText());
-        } else if (!newlyRefused.empty()) {
-            postToOwner([this, text = problemText()] { setErrorText(text); });
+            problemsPosted = problemText();
+            postState(ConnectionState::Online, problemsPosted);
+        } else if (problemText() != problemsPosted) {
+            // A device the PLC refused, or one with no address watched after the connection
+            // was up: the warning changes without the state changing.
+            problemsPosted = problemText();
+            postToOwner([this, text = problemsPosted] { setErrorText(text); });
         }
         shareStatistics(false);
         // The interval runs from the start of this refresh, so a refresh that takes longer

@@ -428,6 +428,29 @@ TEST(OnlineSession, AVigorOnTheComputerLinkShowsItsBitsWordsAndRunState) {
     EXPECT_TRUE(run.second.contains(QLatin1String("RUN / STOP"))) << run.second.toStdString();
 }
 
+// A device with no address in the protocol, watched after the connection is up, is said
+// at once (the state stays Online): the warning does not wait for a reconnect. Watched
+// before or after is a race between the window and the worker, so both orders are tried.
+TEST(OnlineSession, ADeviceWithNoAddressWatchedWhileOnlineIsSaidAndUnsaidWhenDropped) {
+    FakeHostLinkPlc plc;
+    ConnectionSettings s = defaultSettings(ProtocolKind::HostLink);
+    s.link = {50, 1, 5};
+    s.pollIntervalMs = 5;
+    Harness h(model::Family::Cpm1, s, [&](FakeTransport &t) { t.setResponder(plc.responder()); });
+    h.watch({"DM 0005"});
+    h.session->connectToPlc();
+    ASSERT_TRUE(eventually([&] { return h.session->connectionState() == State::Online; }));
+    ASSERT_TRUE(eventually([&] { return h.snapshot() && h.snapshot()->statistics.scans > 1; }));
+    EXPECT_TRUE(h.session->errorText().isEmpty()) << h.session->errorText().toStdString();
+    h.watch({"DM 0005", "TR 0"});
+    ASSERT_TRUE(eventually([&] { return h.session->errorText().contains(QLatin1String("TR 0")); }))
+        << h.session->errorText().toStdString();
+    EXPECT_EQ(h.session->connectionState(), State::Online);
+    h.watch({"DM 0005"});
+    EXPECT_TRUE(eventually([&] { return h.session->errorText().isEmpty(); }))
+        << h.session->errorText().toStdString();
+}
+
 TEST(OnlineSession, StatisticsAndTheTrafficTapReachTheOwner) {
     FakeModbusPlc plc;
     plc.setCoil(16000, true);
