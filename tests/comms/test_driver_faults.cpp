@@ -2,10 +2,10 @@
 // names the device, the PLC and the cause; bounded retries for noise and silence only; no
 // hang; and no write reported done that the PLC did not acknowledge.
 
+#include "comms/driver/connection.h"
 #include "comms/protocol/host_link.h"
 #include "comms/protocol/modbus.h"
 #include "comms/protocol/vigor_link.h"
-#include "comms/driver/connection.h"
 #include "tests/comms/driver_fixture.h"
 #include "tests/comms/hex.h"
 
