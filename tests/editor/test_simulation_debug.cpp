@@ -289,7 +289,7 @@ TEST_F(Debugging, AFullStatusBarElidesTheRunStateAndKeepsTheHistoryMarksApart) {
                !origin->geometry().intersects(state->geometry()) &&
                !history->geometry().intersects(state->geometry());
     };
-    EXPECT_TRUE(eventually(apart, 2000));
+    EXPECT_TRUE(eventually(apart));
     const QString full = state->fullText();
     EXPECT_TRUE(full.startsWith(QStringLiteral("Paused | 0:00:00.30 | 30 scans")))
         << full.toStdString();
