@@ -386,7 +386,7 @@ bool Document::setListing(const QString &text, std::vector<model::Diagnostic> *e
     for (std::size_t h = 0; h < held.size(); ++h) {
         const auto [line, rung] = held[h];
         const auto before = std::count_if(ladder.rungLine.begin(), ladder.rungLine.end(),
-                                          [line](int first) { return first < line; });
+                                          [line = line](int first) { return first < line; });
         const auto at = std::min<std::size_t>(static_cast<std::size_t>(before) + h, rungs.size());
         rungs.insert(rungs.begin() + static_cast<std::ptrdiff_t>(at), *rung);
     }
@@ -444,7 +444,7 @@ std::vector<model::Diagnostic> Document::keepContacts(const std::vector<KeptCont
             model::Rung back = *drawn;
             back.comment = typed.comment;
             for (const auto &[row, col] : leftOutContacts(*drawn, 0, listedAlone(target(), *drawn)))
-                if (std::none_of(marks.begin(), marks.end(), [row, col](const auto *k) {
+                if (std::none_of(marks.begin(), marks.end(), [row = row, col = col](const auto *k) {
                         return k->row == row && k->column == col;
                     }))
                     back.cell(row, col) = model::Cell{};

@@ -154,7 +154,7 @@ QRect IlEditor::valueRect(int line) const {
 
 void IlEditor::snapshotArrived() {
     const auto [first, last] = visibleLines();
-    std::erase_if(m_painted, [first, last](const auto &entry) {
+    std::erase_if(m_painted, [first = first, last = last](const auto &entry) {
         return entry.first < first || entry.first >= last;
     });
     for (int line = first; line < last; ++line) {

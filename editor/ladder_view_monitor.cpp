@@ -93,7 +93,7 @@ void LadderView::snapshotArrived() {
     const ProgramFlow flow(m_document->ladder(), m_document->listing(), *snapshot);
     const bool stale = staleValues();
     const auto [first, last] = visibleRungs();
-    std::erase_if(m_overlays, [first, last](const auto &entry) {
+    std::erase_if(m_overlays, [first = first, last = last](const auto &entry) {
         return entry.first < first || entry.first >= last;
     });
     const int scroll = verticalScrollBar()->value();

@@ -16,6 +16,7 @@
 #include <functional>
 #include <memory>
 #include <optional>
+#include <span>
 #include <vector>
 
 namespace rung::simulator {
@@ -139,8 +140,9 @@ public:
     const std::vector<RuntimeError> &runtimeErrors() const { return m_errors; }
 
     Snapshot snapshot() const;
-    // The memory image in MemoryLayout order (the history recorder reads it after a scan).
-    const std::vector<std::int32_t> &words() const { return m_words; }
+    // The memory image in MemoryLayout order (the history recorder reads it after a scan): the
+    // layout's words only, as in a snapshot; the scratch words behind them are the engine's.
+    std::span<const std::int32_t> words() const { return {m_words.data(), m_scratch}; }
 
 private:
     void loadPresets(); // Program::presetLoads, at start and at each power cycle

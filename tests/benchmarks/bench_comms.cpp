@@ -9,6 +9,7 @@
 #include "comms/driver/online_session.h"
 #include "comms/transport/pty_transport.h"
 #include "model/target/target.h"
+#include "tests/benchmarks/smoke.h"
 #include "tests/comms/fake_plc.h"
 #include "tests/comms/pty_peer.h"
 
@@ -302,7 +303,7 @@ void BM_OnlineRefreshAt19200(benchmark::State &state) {
 }
 BENCHMARK(BM_OnlineRefreshAt19200)
     ->ArgsProduct({{0, 1, 2, 3}, {0, 1}})
-    ->Iterations(5)
+    ->Iterations(bench::times(5))
     ->Unit(benchmark::kMillisecond)
     ->UseRealTime();
 

@@ -3,6 +3,7 @@
 // ladder. The program comes from the property tests' random generator (series/parallel
 // blocks in fuzzy orders, several outputs per rung, MPS branches, two-input boxes).
 
+#include "tests/benchmarks/smoke.h"
 #include "tests/model/random_program.cpp"
 
 #include "model/convert/convert.h"
@@ -16,7 +17,7 @@ using namespace rung::model;
 
 namespace {
 
-constexpr int kRungs = 10000;
+const int kRungs = rung::bench::sized(10000, 200);
 
 const InstructionList &program(Family family) {
     static std::map<Family, InstructionList> cache;

@@ -3,6 +3,7 @@
 // The program comes from the property tests' random generator: series/parallel blocks in
 // fuzzy orders, several outputs per rung, MPS branches, KEEP boxes.
 
+#include "tests/benchmarks/smoke.h"
 #include "tests/model/random_program.cpp"
 
 #include "model/checks/checks.h"
@@ -14,12 +15,14 @@ using namespace rung::model;
 
 namespace {
 
+const int kRungs = rung::bench::sized(10000, 200);
+
 const InstructionList &program(Family family) {
     static std::map<Family, InstructionList> cache;
     auto it = cache.find(family);
     if (it == cache.end()) {
         rung::testing::RandomProgramOptions o;
-        o.rungs = 10000;
+        o.rungs = kRungs;
         const Target &t = Target::get(family);
         ParseResult parsed = parseInstructionList(t, rung::testing::randomProgram(t, 42, o));
         it = cache.emplace(family, parsed.list).first;
@@ -34,7 +37,7 @@ void listToLadderToList(benchmark::State &state, Family family) {
         ToListingResult back = ladderToList(ladder.ladder);
         benchmark::DoNotOptimize(back.list.instructions.data());
     }
-    state.counters["rungs"] = 10000;
+    state.counters["rungs"] = kRungs;
     state.counters["instructions"] = static_cast<double>(list.instructions.size());
 }
 
@@ -60,7 +63,7 @@ void allChecksOnTheLadder(benchmark::State &state, Family family) {
 void parseListing(benchmark::State &state) {
     const Target &t = Target::get(Family::Vigor);
     rung::testing::RandomProgramOptions o;
-    o.rungs = 10000;
+    o.rungs = kRungs;
     const QString text = rung::testing::randomProgram(t, 42, o);
     for (auto _ : state) {
         ParseResult r = parseInstructionList(t, text);

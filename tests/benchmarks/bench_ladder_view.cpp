@@ -3,6 +3,7 @@
 // overlay (issue 11): how often it repaints with a 2,000-rung program simulated as fast as
 // possible, what one overlay frame costs, and the time from toggling an input to the frame
 // that shows its coil changed, at real-time speed.
+#include "tests/benchmarks/smoke.h"
 #include "tests/model/random_program.cpp"
 
 #include "app/gui/main_window.h"
@@ -38,7 +39,7 @@ model::Project bigProject() {
     static model::Project project = [] {
         const model::Target &t = model::Target::get(model::Family::Vigor);
         rung::testing::RandomProgramOptions o;
-        o.rungs = 10000;
+        o.rungs = bench::sized(10000, 200);
         const model::ParseResult parsed =
             model::parseInstructionList(t, rung::testing::randomProgram(t, 7, o));
         model::Project p;
@@ -154,14 +155,14 @@ QString overlayProjectFile(QTemporaryDir &dir, std::string &why) {
     // The generator numbers a timer per extended rung: 800 of them stay within the target's
     // timers (timers, compares, moves: values under the boxes); 1,200 plain rungs follow.
     rung::testing::RandomProgramOptions boxes;
-    boxes.rungs = 800;
+    boxes.rungs = bench::sized(800, 40);
     boxes.extended = true;
     boxes.end = false;
     // 2,000 rungs within the VH's 16,000 steps: networks two deep, one output a rung.
     boxes.maxDepth = 2;
     boxes.branches = false;
     rung::testing::RandomProgramOptions plain;
-    plain.rungs = 1200;
+    plain.rungs = bench::sized(1200, 60);
     plain.maxDepth = 2;
     plain.branches = false;
     const QString text = QStringLiteral("LD X20\nOUT Y20\nLD M9000\nINC D100\n") +
@@ -393,12 +394,15 @@ void inputToScreenLatency(benchmark::State &state) {
 
 } // namespace
 
-BENCHMARK(overlayFramesAtFullSpeed)->Unit(benchmark::kMillisecond)->Iterations(3);
-BENCHMARK(overlayFrameCost)->Unit(benchmark::kMillisecond)->Iterations(40);
-BENCHMARK(inputToScreenLatency)->Unit(benchmark::kMillisecond)->UseManualTime()->Iterations(40);
-BENCHMARK(openAndPaintFirstPage)->Unit(benchmark::kMillisecond)->Iterations(3);
+BENCHMARK(overlayFramesAtFullSpeed)->Unit(benchmark::kMillisecond)->Iterations(bench::times(3));
+BENCHMARK(overlayFrameCost)->Unit(benchmark::kMillisecond)->Iterations(bench::times(40));
+BENCHMARK(inputToScreenLatency)
+    ->Unit(benchmark::kMillisecond)
+    ->UseManualTime()
+    ->Iterations(bench::times(40));
+BENCHMARK(openAndPaintFirstPage)->Unit(benchmark::kMillisecond)->Iterations(bench::times(3));
 BENCHMARK(scrollOnePage)->Unit(benchmark::kMillisecond);
-BENCHMARK(openFileInTheMainWindow)->Unit(benchmark::kMillisecond)->Iterations(3);
+BENCHMARK(openFileInTheMainWindow)->Unit(benchmark::kMillisecond)->Iterations(bench::times(3));
 
 int main(int argc, char **argv) {
     if (qEnvironmentVariableIsEmpty("QT_QPA_PLATFORM"))

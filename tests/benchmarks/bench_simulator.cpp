@@ -5,6 +5,7 @@
 
 #include "tests/benchmarks/compiled_scan.h"
 #include "tests/benchmarks/mixed_program.h"
+#include "tests/benchmarks/smoke.h"
 #include "tests/simulator/sim_test_target.h"
 
 #include "model/image/history.h"
@@ -24,8 +25,8 @@
 
 #include <algorithm>
 #include <chrono>
-#include <random>
 #include <limits>
+#include <random>
 #include <string>
 #include <vector>
 
@@ -164,8 +165,26 @@ void BM_CompiledRatio(benchmark::State &state) {
         stimulate(k);
         f.engine.scan();
         bench::compiledScan(words.data(), stimulus.data(), compiledState, 10);
-        if (words != f.engine.words()) {
-            state.SkipWithError("the compiled program and the engine differ");
+        const auto engineWords = f.engine.words();
+        if (words.size() != engineWords.size() ||
+            !std::equal(words.begin(), words.end(), engineWords.begin())) {
+            std::string why;
+            if (words.size() != engineWords.size()) {
+                why = QStringLiteral("the compiled program holds %1 words, the engine %2")
+                          .arg(words.size())
+                          .arg(engineWords.size())
+                          .toStdString();
+            } else {
+                const auto diff = std::mismatch(words.begin(), words.end(), engineWords.begin());
+                why = QStringLiteral("the compiled program and the engine differ after scan %1: "
+                                     "word %2 is %3 compiled, %4 in the engine")
+                          .arg(k)
+                          .arg(diff.first - words.begin())
+                          .arg(*diff.first)
+                          .arg(*diff.second)
+                          .toStdString();
+            }
+            state.SkipWithError(why.c_str());
             return;
         }
     }
@@ -269,7 +288,7 @@ void BM_HistoryJumpTrafficLightHour(benchmark::State &state) {
     ScanHistory history;
     history.start(engine);
     const auto x0 = std::get<model::Address>(model::parseAddress(vigor, QStringLiteral("X0")));
-    constexpr quint64 kHour = 360000;
+    const quint64 kHour = static_cast<quint64>(bench::sized(360000, 6000)); // scans of 10 ms
     for (quint64 k = 0; k < kHour; ++k) {
         if (k % 6000 == 0) { // a stimulus once a minute, as a user's click
             const EngineCommand c{0, model::DeviceCommand{model::DeviceCommand::Kind::WriteBit, x0,
@@ -478,11 +497,14 @@ void BM_SessionHistoryRatio(benchmark::State &state) {
     state.counters["ratio"] = withRate > 0 ? plainRate / withRate : 0;
 }
 
+// 24 h of virtual time (ten minutes in a smoke run).
+const qint64 kDayMs = bench::sized(24 * 3600, 600) * 1000LL;
+
 void BM_TrafficLight24Hours(benchmark::State &state) {
     for (auto _ : state) {
         Fixture f(QString::fromLatin1(kTrafficLight));
         f.engine.setPeriodMs(10);
-        f.engine.runFor(24LL * 3600 * 1000);
+        f.engine.runFor(kDayMs);
         benchmark::DoNotOptimize(f.engine.statistics().scans);
     }
 }
@@ -504,7 +526,7 @@ void BM_TrafficLight24HoursVigorListing(benchmark::State &state) {
     for (auto _ : state) {
         Engine engine(compiled.program);
         engine.setPeriodMs(10);
-        engine.runFor(24LL * 3600 * 1000);
+        engine.runFor(kDayMs);
         benchmark::DoNotOptimize(engine.statistics().scans);
     }
 }
@@ -512,42 +534,47 @@ void BM_TrafficLight24HoursVigorListing(benchmark::State &state) {
 } // namespace
 
 // Repetitions give medians (the figures docs/simulator.md quotes).
-BENCHMARK(BM_Scan2048Steps)->Repetitions(5)->DisplayAggregatesOnly(true);
-BENCHMARK(BM_Scan2048StepsWithPowerFlow)->Repetitions(5)->DisplayAggregatesOnly(true);
+BENCHMARK(BM_Scan2048Steps)->Repetitions(bench::times(5))->DisplayAggregatesOnly(true);
+BENCHMARK(BM_Scan2048StepsWithPowerFlow)->Repetitions(bench::times(5))->DisplayAggregatesOnly(true);
 BENCHMARK(BM_PowerFlowRatio)
     ->Unit(benchmark::kMillisecond)
-    ->Repetitions(5)
+    ->Repetitions(bench::times(5))
     ->DisplayAggregatesOnly(true);
 BENCHMARK(BM_HistoryRatio)
     ->Unit(benchmark::kMillisecond)
-    ->Repetitions(5)
+    ->Repetitions(bench::times(5))
     ->DisplayAggregatesOnly(true);
 BENCHMARK(BM_ResolvedOperandsRatio)
     ->Unit(benchmark::kMillisecond)
-    ->Repetitions(5)
+    ->Repetitions(bench::times(5))
     ->DisplayAggregatesOnly(true);
 BENCHMARK(BM_CompiledRatio)
     ->Unit(benchmark::kMillisecond)
-    ->Repetitions(5)
+    ->Repetitions(bench::times(5))
     ->DisplayAggregatesOnly(true);
 BENCHMARK(BM_BreakpointRatio)
     ->Unit(benchmark::kMillisecond)
-    ->Repetitions(5)
+    ->Repetitions(bench::times(5))
     ->DisplayAggregatesOnly(true);
 BENCHMARK(BM_ScanHistoryRatio)
     ->Unit(benchmark::kMillisecond)
-    ->Repetitions(5)
+    ->Repetitions(bench::times(5))
     ->DisplayAggregatesOnly(true);
-BENCHMARK(BM_HistoryJumpTrafficLightHour)->Unit(benchmark::kMillisecond)->Iterations(200);
+BENCHMARK(BM_HistoryJumpTrafficLightHour)
+    ->Unit(benchmark::kMillisecond)
+    ->Iterations(bench::times(200));
 BENCHMARK(BM_SessionHistoryRatio)
     ->Unit(benchmark::kMillisecond)
-    ->Iterations(4)
-    ->Repetitions(3)
+    ->Iterations(bench::times(4))
+    ->Repetitions(bench::times(3))
     ->DisplayAggregatesOnly(true);
-BENCHMARK(BM_TrafficLight24Hours)->Unit(benchmark::kMillisecond)->Iterations(1)->Repetitions(3);
+BENCHMARK(BM_TrafficLight24Hours)
+    ->Unit(benchmark::kMillisecond)
+    ->Iterations(bench::times(1))
+    ->Repetitions(bench::times(3));
 BENCHMARK(BM_TrafficLight24HoursVigorListing)
     ->Unit(benchmark::kMillisecond)
-    ->Iterations(1)
-    ->Repetitions(3);
+    ->Iterations(bench::times(1))
+    ->Repetitions(bench::times(3));
 
 BENCHMARK_MAIN();

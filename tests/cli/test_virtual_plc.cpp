@@ -99,8 +99,12 @@ TEST(VirtualPlc, Pl110RunBitStopsAndStartsTheScan) {
     // Stopped: the write is taken, the program does not run on it.
     ASSERT_TRUE(m.write({modbus::WriteSingleRegister, 2000, 1, {77}, {}}));
     EXPECT_EQ(m.reg(2000), 77);
-    std::this_thread::sleep_for(std::chrono::milliseconds(60)); // six scan periods
+    // That something does not happen shows only over time: six scan periods, in which a
+    // running program would have copied the word. The scan count must not move either.
+    const quint64 scans = v.plc->image()->snapshot()->statistics.scans;
+    std::this_thread::sleep_for(std::chrono::milliseconds(60));
     EXPECT_NE(m.reg(2001), 77);
+    EXPECT_EQ(v.plc->image()->snapshot()->statistics.scans, scans);
     ASSERT_TRUE(m.write({modbus::WriteSingleCoil, 16000, 1, {}, {true}}));
     EXPECT_TRUE(eventually([&] { return m.reg(2001) == 77; }));
 }

@@ -8,6 +8,7 @@
 #include "comms/slave/device_image.h"
 #include "comms/transport/pty_transport.h"
 #include "model/image/snapshot.h"
+#include "tests/eventually.h"
 
 #include <QFile>
 #include <QTemporaryDir>
@@ -20,6 +21,9 @@
 #include <thread>
 
 namespace rung::test {
+
+using waits::eventually;
+using waits::kPatienceMs;
 
 // Two programs for a virtual PLC whose outputs follow what a master writes.
 // PL110: Q1 follows I1, Q2 follows M1, V1 follows V0.
@@ -72,17 +76,6 @@ struct VirtualPlcUnderTest {
     // machine the session's thread may not have run it yet when a master asks).
     bool scanned(int ms = 5000) const;
 };
-
-// Polls until the condition holds or the deadline passes (the program runs in real time).
-inline bool eventually(const std::function<bool()> &condition, int ms = 3000) {
-    const auto end = std::chrono::steady_clock::now() + std::chrono::milliseconds(ms);
-    while (!condition()) {
-        if (std::chrono::steady_clock::now() > end)
-            return false;
-        std::this_thread::sleep_for(std::chrono::milliseconds(10));
-    }
-    return true;
-}
 
 inline bool VirtualPlcUnderTest::scanned(int ms) const {
     return plc && eventually(

@@ -5,6 +5,7 @@
 #include "model/target/address.h"
 #include "model/target/target.h"
 #include "tests/comms/fake_plc.h"
+#include "tests/eventually.h"
 
 #include <QCoreApplication>
 #include <QElapsedTimer>
@@ -21,18 +22,8 @@ namespace {
 using RunState = model::MonitorSource::RunState;
 using State = OnlineSession::ConnectionState;
 
-constexpr int kPatienceMs = 5000;
-
-template <typename Condition> bool eventually(Condition condition, int ms = kPatienceMs) {
-    QElapsedTimer t;
-    t.start();
-    while (!condition()) {
-        if (t.elapsed() > ms)
-            return false;
-        QCoreApplication::processEvents(QEventLoop::AllEvents, 5);
-    }
-    return true;
-}
+using waits::eventually;
+using waits::kPatienceMs;
 
 model::Address address(const model::Target &t, const char *name) {
     return std::get<model::Address>(model::parseAddress(t, QString::fromLatin1(name)));
@@ -225,6 +216,7 @@ TEST(OnlineSession, ARefreshLongerThanThePollIntervalIsFollowedAtOnce) {
     settings.pollIntervalMs = 250;
     Harness h(model::Family::Pl110, settings, [&](FakeTransport &t) {
         t.setResponder([answer = plc.responder()](const QByteArray &request) {
+            // A slow wire is the stimulus: the answer's delay is the test's, not a wait.
             std::this_thread::sleep_for(std::chrono::milliseconds(150));
             return answer(request);
         });

@@ -12,6 +12,7 @@
 #include <QTemporaryDir>
 
 #include <fcntl.h>
+#include <poll.h>
 #include <sys/resource.h>
 #include <unistd.h>
 
@@ -25,6 +26,17 @@ using R = ReadResult::Status;
 
 using test::makePtyPair;
 using test::readAll;
+
+// Whether the terminal at `path` has input to read within `ms`, without reading it.
+bool readableWithin(const QString &path, int ms) {
+    const int fd = ::open(QFile::encodeName(path).constData(), O_RDONLY | O_NOCTTY | O_NONBLOCK);
+    if (fd < 0)
+        return false;
+    pollfd p{fd, POLLIN, 0};
+    const bool readable = ::poll(&p, 1, ms) == 1 && (p.revents & POLLIN) != 0;
+    ::close(fd);
+    return readable;
+}
 
 TEST(PtyTransport, AVigorRequestCrossesARealPseudoTerminalByteForByteBothWays) {
     test::PtyPair p = makePtyPair();
@@ -57,6 +69,9 @@ TEST(PtyTransport, CancelFromAnotherThreadWakesAWaitingRead) {
     ASSERT_TRUE(p.peer);
     ReadResult result;
     std::thread reader([&] { result = p.peer->read(QDeadlineTimer(QDeadlineTimer::Forever)); });
+    // A pause, not a wait for a condition: nothing outside the transport tells that its read
+    // is waiting. A cancel before the read ends it Cancelled all the same (the next test), so
+    // a loaded machine cannot make this test fail, only test less.
     std::this_thread::sleep_for(std::chrono::milliseconds(20));
     p.peer->cancel();
     reader.join();
@@ -118,7 +133,10 @@ TEST(PtyTransport, ACancelWithNoReadWaitingEndsTheNextReadOnceAndIsNotLost) {
 
     QString error;
     ASSERT_TRUE(p.master->write("x", QDeadlineTimer(1000), &error));
-    std::this_thread::sleep_for(std::chrono::milliseconds(50)); // the byte reaches the peer
+    // The kernel hands a pty's bytes to the other side's line discipline later, on a work
+    // queue: wait until the peer's side has it to read (a second descriptor of the same
+    // terminal sees the same input queue) before the cancel.
+    ASSERT_TRUE(readableWithin(p.master->peerPath(), 2000));
     p.peer->cancel();
     const auto first = p.peer->read(QDeadlineTimer(1000));
     EXPECT_EQ(first.status, R::Data);

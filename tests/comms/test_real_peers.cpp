@@ -10,6 +10,7 @@
 #include "model/target/address.h"
 #include "model/target/target.h"
 #include "tests/comms/peers/peer_values.h"
+#include "tests/eventually.h"
 
 #include <QCoreApplication>
 #include <QElapsedTimer>
@@ -30,6 +31,7 @@ namespace {
 
 namespace peer = rung::comms::test::peer;
 using model::Family;
+using waits::eventually;
 
 enum class Peer { LibModbus, PyModbus };
 enum class Wire { RtuPty, Tcp };
@@ -281,17 +283,6 @@ INSTANTIATE_TEST_SUITE_P(
         return std::string(std::get<0>(info.param) == Peer::LibModbus ? "LibModbus" : "PyModbus") +
                (std::get<1>(info.param) == Wire::RtuPty ? "RtuOverPty" : "Tcp");
     });
-
-template <typename Condition> bool eventually(Condition condition, int ms = 10000) {
-    QElapsedTimer t;
-    t.start();
-    while (!condition()) {
-        if (t.elapsed() > ms)
-            return false;
-        QCoreApplication::processEvents(QEventLoop::AllEvents, 10);
-    }
-    return true;
-}
 
 TEST(RealPeerSession, AnOnlineSessionLosesALibmodbusSlaveThatDiesAndFindsItsSuccessor) {
     QString missing;

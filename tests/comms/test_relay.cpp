@@ -8,6 +8,7 @@
 #include "tests/comms/fake_transport.h"
 #include "tests/comms/hex.h"
 #include "tests/comms/pty_pair.h"
+#include "tests/eventually.h"
 
 #include <gtest/gtest.h>
 
@@ -16,6 +17,8 @@
 
 namespace rung::comms {
 namespace {
+
+using waits::eventually;
 
 using R = ReadResult::Status;
 using Direction = TrafficRecord::Direction;
@@ -30,16 +33,6 @@ QByteArray recorded(const Relay &relay, Direction direction) {
         if (r.direction == direction)
             out += r.bytes;
     return out;
-}
-
-bool waitFor(const std::function<bool()> &condition, int ms = 3000) {
-    const QDeadlineTimer deadline(ms);
-    while (!condition()) {
-        if (deadline.hasExpired())
-            return false;
-        QThread::msleep(5);
-    }
-    return true;
 }
 
 // protocols.md, Vigor Computer Link test vector 5: M10 ON and the PLC's ACK.
@@ -59,7 +52,7 @@ TEST(Relay, ARequestAndItsAnswerPassUntouchedAndAreRecordedWithTheirDirection) {
     ASSERT_TRUE(plc.peer->write(kAck, QDeadlineTimer(2000), &error));
     EXPECT_EQ(readAll(*pc.peer, kAck.size(), 3000), kAck);
 
-    ASSERT_TRUE(waitFor([&] { return recorded(relay, Direction::Received) == kAck; }));
+    ASSERT_TRUE(eventually([&] { return recorded(relay, Direction::Received) == kAck; }));
     EXPECT_EQ(recorded(relay, Direction::Sent), kRequest);
     // In the order they were said, with times that do not go back.
     const std::vector<TrafficRecord> records = relay.tap().records(0);
@@ -91,7 +84,7 @@ TEST(Relay, EveryByteValuePassesBothWaysAtOnce) {
     ASSERT_TRUE(plc.peer->write(reversed, QDeadlineTimer(2000), &error));
     EXPECT_EQ(readAll(*plc.peer, all.size()), all);
     EXPECT_EQ(readAll(*pc.peer, reversed.size()), reversed);
-    ASSERT_TRUE(waitFor([&] { return recorded(relay, Direction::Received).size() == 256; }));
+    ASSERT_TRUE(eventually([&] { return recorded(relay, Direction::Received).size() == 256; }));
     EXPECT_EQ(recorded(relay, Direction::Sent), all);
     EXPECT_EQ(recorded(relay, Direction::Received), reversed);
 }
@@ -121,7 +114,7 @@ TEST(Relay, APlcSideThatVanishesStopsTheRelayAndSaysWhich) {
     EXPECT_EQ(readAll(*pc.peer, kAck.size(), 3000), kAck);
 
     plc->unplug();
-    ASSERT_TRUE(waitFor([&] { return !relay.running(); }));
+    ASSERT_TRUE(eventually([&] { return !relay.running(); }));
     EXPECT_TRUE(relay.failure().contains(QLatin1String("the PLC's side (ttyUSB7)")))
         << relay.failure().toStdString();
     // What was said before it went is kept.

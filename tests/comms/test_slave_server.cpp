@@ -9,6 +9,7 @@
 #include "comms/transport/tcp_transport.h"
 #include "tests/comms/hex.h"
 #include "tests/comms/slave_fixture.h"
+#include "tests/eventually.h"
 #include "tests/targets.h"
 
 #include <gtest/gtest.h>
@@ -20,6 +21,8 @@
 
 namespace rung::comms::slave {
 namespace {
+
+using waits::eventually;
 
 using model::Family;
 using model::ProtocolId;
@@ -48,16 +51,6 @@ struct PtyLink {
 };
 
 using test::exchange;
-
-bool waitFor(const std::function<bool()> &condition) {
-    const QDeadlineTimer deadline(3000);
-    while (!condition()) {
-        if (deadline.hasExpired())
-            return false;
-        std::this_thread::sleep_for(std::chrono::milliseconds(2));
-    }
-    return true;
-}
 
 TEST(SlaveServer, VigorLinkVectorAcrossAPseudoTerminal) {
     Image plc(target(Family::Vigor));
@@ -206,7 +199,7 @@ TEST(SlaveServer, ADisconnectedClientIsLetGoAndOneOverTheLimitRefused) {
         EXPECT_EQ(second.read(QDeadlineTimer(2000)).status, ReadResult::Status::Failed);
         EXPECT_TRUE(server.lastProblem().contains(QLatin1String("refused")));
         client.close();
-        EXPECT_TRUE(waitFor([&] { return server.clients() == 0; })) << "round " << round;
+        EXPECT_TRUE(eventually([&] { return server.clients() == 0; })) << "round " << round;
     }
 }
 
@@ -314,10 +307,10 @@ TEST(SlaveServer, GarbageTruncationAndOtherStationsNeverHangTheSlave) {
     // A truncated request (dropped at the gap) and one for unit 9 (not ours): no answer...
     const SlaveStatistics before = link.server->statistics();
     ASSERT_TRUE(link.master->write(good.first(5), QDeadlineTimer(1000), &error));
-    EXPECT_TRUE(waitFor([&] { return link.server->statistics().dropped > before.dropped; }));
+    EXPECT_TRUE(eventually([&] { return link.server->statistics().dropped > before.dropped; }));
     ASSERT_TRUE(link.master->write(modbus::rtuFrame(9, modbus::encodeRequestPdu(r)),
                                    QDeadlineTimer(1000), &error));
-    EXPECT_TRUE(waitFor([&] { return link.server->statistics().ignored > before.ignored; }));
+    EXPECT_TRUE(eventually([&] { return link.server->statistics().ignored > before.ignored; }));
     EXPECT_EQ(link.master->read(QDeadlineTimer(100)).status, ReadResult::Status::Timeout);
     EXPECT_EQ(link.server->statistics().answered, before.answered);
     // ... and the next good request is answered.

@@ -83,6 +83,9 @@ TEST(TcpTransport, CancelFromAnotherThreadEndsAWaitingRead) {
     ASSERT_TRUE(link->accepted);
     ReadResult result;
     std::thread canceller([&] {
+        // A pause, not a wait for a condition: nothing outside the transport tells that its
+        // read is waiting. If the cancel came first, the read would end Cancelled all the same
+        // (the next test), so a loaded machine cannot make this test fail, only test less.
         std::this_thread::sleep_for(std::chrono::milliseconds(30));
         link->client->cancel();
     });

@@ -4,10 +4,14 @@
 // seen, and commands are recorded and answered at once (ok, or the error the test chose).
 
 #include "model/image/monitor_source.h"
+#include "tests/eventually.h"
 
 #include <vector>
 
 namespace rung::test {
+
+using waits::eventually;
+using waits::kPatienceMs;
 
 class FakeMonitorSource : public model::MonitorSource {
 public:

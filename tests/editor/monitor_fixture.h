@@ -8,6 +8,7 @@
 #include "model/target/address.h"
 #include "simulator/compiler.h"
 #include "simulator/session.h"
+#include "tests/eventually.h"
 
 #include <QCoreApplication>
 #include <QElapsedTimer>
@@ -18,17 +19,8 @@
 
 namespace rung::test {
 
-// Processes events until the condition holds; false after the deadline.
-template <typename Condition> bool eventually(Condition condition, int ms = 10000) {
-    QElapsedTimer t;
-    t.start();
-    while (!condition()) {
-        if (t.elapsed() > ms)
-            return false;
-        QCoreApplication::processEvents(QEventLoop::AllEvents, 10);
-    }
-    return true;
-}
+using waits::eventually;
+using waits::kPatienceMs;
 
 struct MonitorFixture {
     editor::Document document;

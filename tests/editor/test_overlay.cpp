@@ -18,11 +18,13 @@
 #include <QInputDialog>
 #include <QMenu>
 #include <QPaintEvent>
+#include <QSignalSpy>
 #include <QTimer>
 #include <QToolTip>
 
 #include "tests/editor/fake_monitor_source.h"
 #include "tests/editor/window_fixture.h"
+#include "tests/eventually.h"
 
 #include <gtest/gtest.h>
 
@@ -60,15 +62,8 @@ struct Overlay : test::WindowFixture {
         return std::get<model::Address>(
             model::parseAddress(window.document()->target(), QString::fromLatin1(device)));
     }
-    // Runs the event loop until `done` holds, at most 5 s.
-    bool until(const std::function<bool()> &done) {
-        for (int i = 0; i < 500; ++i) {
-            if (done())
-                return true;
-            QTest::qWait(10);
-        }
-        return done();
-    }
+    // Runs the event loop until `done` holds.
+    bool until(const std::function<bool()> &done) { return test::eventually(done); }
     // The newest snapshot once it satisfies `ready`; null after 5 s.
     std::shared_ptr<const model::Snapshot>
     waitFor(const std::function<bool(const model::Snapshot &)> &ready) {
@@ -428,7 +423,8 @@ TEST_F(Overlay, ASnapshotRepaintsOnlyTheRungsThatChanged) {
     } spy;
     view->viewport()->installEventFilter(&spy);
     // The window settles first (the origin's label shown, the layout that follows, the first
-    // snapshot's frame; late on a loaded machine): 100 ms without a paint, within 3 s.
+    // snapshot's frame; late on a loaded machine): 100 ms without a paint, within 3 s. A poll
+    // for quiet: nothing tells that the window will not lay itself out once more.
     bool settled = false;
     for (int i = 0; i < 30 && !settled; ++i) {
         const int before = spy.paints;
@@ -436,13 +432,22 @@ TEST_F(Overlay, ASnapshotRepaintsOnlyTheRungsThatChanged) {
         settled = spy.paints == before;
     }
     ASSERT_TRUE(settled) << "the view kept repainting";
+    // A snapshot is shown when snapshotChanged reaches the view (it repaints the rungs that
+    // changed then), and painted when the events it posted are delivered.
+    QSignalSpy arrived(&source, &model::MonitorSource::snapshotChanged);
+    const auto deliver = [&](std::shared_ptr<const model::Snapshot> s) {
+        arrived.clear();
+        source.publish(std::move(s));
+        const bool reached = until([&] { return !arrived.isEmpty(); });
+        QCoreApplication::processEvents();
+        return reached;
+    };
     spy.painted = QRegion();
     auto next = std::make_shared<model::Snapshot>(*snapshot);
     const model::BitRef x1 = next->layout->bit(at("X1"));
     next->words[static_cast<std::size_t>(x1.word)] |= static_cast<std::int32_t>(x1.mask);
-    source.publish(next);
+    ASSERT_TRUE(deliver(next));
     ASSERT_TRUE(until([&] { return !spy.painted.isEmpty(); }));
-    QTest::qWait(50);
     const QRect second = view->cellRectOnScreen({1, 0, 0});
     const QRect first = view->cellRectOnScreen({0, 0, 0});
     const QRect third = view->cellRectOnScreen({2, 0, 0});
@@ -452,8 +457,7 @@ TEST_F(Overlay, ASnapshotRepaintsOnlyTheRungsThatChanged) {
 
     // The same values again: nothing repainted.
     spy.painted = QRegion();
-    source.publish(std::make_shared<model::Snapshot>(*next));
-    QTest::qWait(100);
+    ASSERT_TRUE(deliver(std::make_shared<model::Snapshot>(*next)));
     EXPECT_TRUE(spy.painted.isEmpty());
     view->viewport()->removeEventFilter(&spy);
     window.setMonitorSource(nullptr);

@@ -19,6 +19,7 @@
 #include <QDockWidget>
 
 #include "tests/editor/window_fixture.h"
+#include "tests/eventually.h"
 
 #include <gtest/gtest.h>
 
@@ -48,13 +49,18 @@ struct Simulation : test::WindowFixture {
     // null after 5 s.
     std::shared_ptr<const model::Snapshot>
     waitFor(const std::function<bool(const model::Snapshot &)> &ready) {
-        for (int i = 0; i < 500; ++i) {
+        std::shared_ptr<const model::Snapshot> found;
+        test::eventually([&] {
             if (sim()->session())
                 if (auto s = sim()->session()->snapshot(); s && ready(*s))
-                    return s;
-            QTest::qWait(10);
-        }
-        return nullptr;
+                    found = s;
+            return found != nullptr;
+        });
+        return found;
+    }
+    // Whether the status section comes to say what `holds` wants (it follows snapshotChanged).
+    bool statusComes(const std::function<bool(const QString &)> &holds) {
+        return test::eventually([&] { return holds(status()); });
     }
     void showActive() {
         window.show();
@@ -131,21 +137,27 @@ TEST_F(Simulation, TheKeysRunPauseScanAndStopFromTheLadder) {
     ASSERT_NE(sim()->session(), nullptr);
     EXPECT_EQ(sim()->runState(), State::Running);
     ASSERT_NE(waitFor([](const model::Snapshot &s) { return s.statistics.scans > 3; }), nullptr);
-    QTest::qWait(100); // the status follows snapshotChanged
-    EXPECT_TRUE(status().startsWith(QStringLiteral("Running x"))) << status().toStdString();
-    EXPECT_TRUE(status().contains(QStringLiteral(" scans | scan 10 ms")))
-        << status().toStdString();
+    EXPECT_TRUE(statusComes([](const QString &s) {
+        return s.startsWith(QStringLiteral("Running x")) &&
+               s.contains(QStringLiteral(" scans | scan 10 ms"));
+    })) << status().toStdString();
     EXPECT_FALSE(view->inlineEditor()->isVisible()); // the key did not reach the ladder
 
     QTest::keyClick(view, Qt::Key_F11);
     EXPECT_EQ(sim()->runState(), State::Paused);
-    QTest::qWait(100); // a scan under way when F11 came ends
-    EXPECT_TRUE(status().startsWith(QStringLiteral("Paused | "))) << status().toStdString();
+    // A scan under way when F11 came ends first.
+    EXPECT_TRUE(statusComes([](const QString &s) {
+        return s.startsWith(QStringLiteral("Paused | "));
+    })) << status().toStdString();
 
     // F12: one scan, published at once; F12 again: exactly one more, Y1 following the parity.
+    const quint64 before = sim()->session()->snapshot()->statistics.scans;
     QTest::keyClick(view, Qt::Key_F12);
-    QTest::qWait(100);
+    ASSERT_NE(
+        waitFor([before](const model::Snapshot &s) { return s.statistics.scans == before + 1; }),
+        nullptr);
     const quint64 scans = sim()->session()->snapshot()->statistics.scans;
+    // That a paused session does not scan shows only over time: ten scan periods.
     QTest::qWait(100);
     EXPECT_EQ(sim()->session()->snapshot()->statistics.scans, scans) << "paused, yet scanning";
     QTest::keyClick(view, Qt::Key_F12);
@@ -155,9 +167,9 @@ TEST_F(Simulation, TheKeysRunPauseScanAndStopFromTheLadder) {
                                 << scans;
     EXPECT_EQ(stepped->bit(at("Y1")), (scans + 1) % 2 == 1);
     EXPECT_EQ(stepped->statistics.timeMs, static_cast<qint64>(scans + 1) * 10);
-    QTest::qWait(100);
-    EXPECT_TRUE(status().contains(QStringLiteral("| %1 scans |").arg(scans + 1)))
-        << status().toStdString();
+    EXPECT_TRUE(statusComes([scans](const QString &s) {
+        return s.contains(QStringLiteral("| %1 scans |").arg(scans + 1));
+    })) << status().toStdString();
 
     // Shift+F11: the power-on state.
     QTest::keyClick(view, Qt::Key_F11, Qt::ShiftModifier);
@@ -165,9 +177,9 @@ TEST_F(Simulation, TheKeysRunPauseScanAndStopFromTheLadder) {
     const auto stopped = waitFor([](const model::Snapshot &s) { return s.statistics.scans == 0; });
     ASSERT_NE(stopped, nullptr);
     EXPECT_FALSE(stopped->bit(at("Y1")));
-    QTest::qWait(100);
-    EXPECT_TRUE(status().startsWith(QStringLiteral("Stopped | 0:00:00.00 | 0 scans")))
-        << status().toStdString();
+    EXPECT_TRUE(statusComes([](const QString &s) {
+        return s.startsWith(QStringLiteral("Stopped | 0:00:00.00 | 0 scans"));
+    })) << status().toStdString();
 }
 
 TEST_F(Simulation, TheKeysWorkFromTheInstructionListToo) {
@@ -196,9 +208,8 @@ TEST_F(Simulation, SingleScansFromPowerOnCountOneEach) {
     s = waitFor([](const model::Snapshot &s) { return s.statistics.scans == 2; });
     ASSERT_NE(s, nullptr);
     EXPECT_FALSE(s->bit(at("Y1")));
-    for (int i = 0; i < 100 && sim()->runState() != State::Paused; ++i)
-        QTest::qWait(10); // the session says Paused on this thread once the scan is done
-    EXPECT_EQ(sim()->runState(), State::Paused);
+    // The session says Paused on this thread once the scan is done.
+    EXPECT_TRUE(test::eventually([&] { return sim()->runState() == State::Paused; }));
 }
 
 TEST_F(Simulation, TheSpeedChosenInTheMenuGoesToTheSession) {
@@ -208,9 +219,9 @@ TEST_F(Simulation, TheSpeedChosenInTheMenuGoesToTheSession) {
     fast->trigger();
     ASSERT_TRUE(sim()->run());
     EXPECT_EQ(sim()->session()->speed(), 0.0);
-    QTest::qWait(100);
-    EXPECT_TRUE(status().startsWith(QStringLiteral("Running at full speed")))
-        << status().toStdString();
+    EXPECT_TRUE(statusComes([](const QString &s) {
+        return s.startsWith(QStringLiteral("Running at full speed"));
+    })) << status().toStdString();
     QAction *ten = test::menuAction(window, QStringLiteral("x10 Real Time"));
     ASSERT_NE(ten, nullptr);
     ten->trigger();
@@ -230,8 +241,9 @@ TEST_F(Simulation, TheScanPeriodChosenInTheMenuIsTheVirtualTimeOfAScan) {
     ASSERT_NE(s, nullptr);
     EXPECT_EQ(s->statistics.periodMs, 5);
     EXPECT_EQ(s->statistics.timeMs, 10);
-    QTest::qWait(100);
-    EXPECT_TRUE(status().contains(QStringLiteral("| scan 5 ms"))) << status().toStdString();
+    EXPECT_TRUE(statusComes([](const QString &s) {
+        return s.contains(QStringLiteral("| scan 5 ms"));
+    })) << status().toStdString();
     test::menuAction(window, QStringLiteral("10 ms"))->trigger(); // the next test's (QSettings)
 }
 
@@ -262,9 +274,10 @@ TEST_F(Simulation, TheWatchListShowsTheRunningValues) {
     ASSERT_TRUE(sim()->singleScan());
     EXPECT_EQ(watch->monitorSource(), sim()->session());
     ASSERT_NE(waitFor([](const model::Snapshot &s) { return s.statistics.scans == 1; }), nullptr);
-    QTest::qWait(100);
-    EXPECT_EQ(watch->topLevelItem(0)->child(0)->text(editor::WatchListView::ValueColumn),
-              QStringLiteral("ON"));
+    EXPECT_TRUE(test::eventually([&] {
+        return watch->topLevelItem(0)->child(0)->text(editor::WatchListView::ValueColumn) ==
+               QStringLiteral("ON");
+    })) << watch->topLevelItem(0)->child(0)->text(editor::WatchListView::ValueColumn).toStdString();
     // Every monitoring view was handed the same source.
     EXPECT_EQ(window.ioPanel()->monitorSource(), sim()->session());
     EXPECT_EQ(window.timingChart()->monitorSource(), sim()->session());

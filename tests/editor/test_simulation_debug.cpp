@@ -15,6 +15,7 @@
 #include "editor/watch_list_view.h"
 #include "simulator/history_source.h"
 #include "simulator/session.h"
+#include "tests/eventually.h"
 
 #include "model/target/address.h"
 
@@ -53,13 +54,8 @@ struct Debugging : test::WindowFixture {
         return std::get<model::Address>(
             model::parseAddress(window.document()->target(), QString::fromLatin1(device)));
     }
-    template <typename Condition> bool eventually(Condition condition, int ms = 5000) {
-        for (int waited = 0; waited < ms; waited += 10) {
-            if (condition())
-                return true;
-            QTest::qWait(10);
-        }
-        return condition();
+    template <typename Condition> bool eventually(Condition condition) {
+        return test::eventually(condition);
     }
     std::shared_ptr<const model::Snapshot> live() {
         return sim()->session() ? sim()->session()->snapshot() : nullptr;
@@ -293,7 +289,7 @@ TEST_F(Debugging, AFullStatusBarElidesTheRunStateAndKeepsTheHistoryMarksApart) {
                !origin->geometry().intersects(state->geometry()) &&
                !history->geometry().intersects(state->geometry());
     };
-    EXPECT_TRUE(eventually(apart, 2000));
+    EXPECT_TRUE(eventually(apart));
     const QString full = state->fullText();
     EXPECT_TRUE(full.startsWith(QStringLiteral("Paused | 0:00:00.30 | 30 scans")))
         << full.toStdString();

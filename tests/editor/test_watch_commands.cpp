@@ -4,6 +4,7 @@
 // stands in for the simulator or a PLC and records what it was asked.
 
 #include "fake_monitor_source.h"
+#include "tests/eventually.h"
 
 #include "editor/document.h"
 #include "editor/watch_list_view.h"
@@ -166,8 +167,8 @@ TEST_F(WatchCommands, TheValueEditorOpensOnTheNumberAndSnapshotsDoNotOverwriteWh
     const auto d5 = static_cast<std::size_t>(snapshot->layout->word(at("D5")));
     snapshot->words[d5] = 12;
     source.publish(snapshot);
-    QTest::qWait(50);
-    EXPECT_EQ(row(1)->text(kValue), QStringLiteral("12"));
+    EXPECT_TRUE(test::eventually([&] { return row(1)->text(kValue) == QStringLiteral("12"); }))
+        << row(1)->text(kValue).toStdString();
     QObject owner;
     const QList<QAction *> actions = view->deviceActions(row(1), &owner);
     ASSERT_EQ(actions.size(), 1);
@@ -176,22 +177,27 @@ TEST_F(WatchCommands, TheValueEditorOpensOnTheNumberAndSnapshotsDoNotOverwriteWh
     ASSERT_NE(editor, nullptr);
     EXPECT_EQ(editor->text(), QStringLiteral("12"));
     editor->setText(QStringLiteral("30"));
-    // The program changes D5 meanwhile: the editor keeps what the user typed.
+    // The program changes D5 meanwhile: the editor keeps what the user typed. X0 changes too:
+    // once its row shows it, the view has had the snapshot.
     auto later = source.blank(target);
     later->words[d5] = 13;
+    const model::BitRef x0 = later->layout->bit(at("X0"));
+    later->words[static_cast<std::size_t>(x0.word)] |= static_cast<std::int32_t>(x0.mask);
     source.publish(later);
-    QTest::qWait(100);
+    ASSERT_TRUE(test::eventually([&] { return row(0)->text(kValue) == QStringLiteral("ON"); }))
+        << row(0)->text(kValue).toStdString();
     EXPECT_EQ(editor->text(), QStringLiteral("30"));
     QTest::keyClick(editor, Qt::Key_Return);
-    QTest::qWait(50); // the delegate commits queued
+    // The delegate commits queued.
+    ASSERT_TRUE(test::eventually([&] { return !source.commands.empty(); }));
     ASSERT_EQ(source.commands.size(), 1u);
     EXPECT_EQ(source.commands[0].kind, Kind::WriteWord);
     EXPECT_EQ(source.commands[0].address, at("D5"));
     EXPECT_EQ(source.commands[0].value, 30);
     // Closed, the column follows the snapshots again.
     source.publish(later);
-    QTest::qWait(100);
-    EXPECT_EQ(row(1)->text(kValue), QStringLiteral("13"));
+    EXPECT_TRUE(test::eventually([&] { return row(1)->text(kValue) == QStringLiteral("13"); }))
+        << row(1)->text(kValue).toStdString();
 }
 
 } // namespace

@@ -7,6 +7,7 @@
 #include "app/gui/main_window.h"
 #include "app/gui/recovery.h"
 #include "editor/ladder_view.h"
+#include "tests/eventually.h"
 
 #include <QAction>
 #include <QLabel>
@@ -23,6 +24,9 @@
 #include <functional>
 
 namespace rung::test {
+
+using waits::eventually;
+using waits::kPatienceMs;
 
 // An entry of one of the menu bar's menus (or one of their submenus), by its text without
 // the access-key '&'; nullptr when there is none.

@@ -5,6 +5,7 @@
 // generous time limits; no sleep is an assertion.
 
 #include "real_target_sim.h"
+#include "tests/eventually.h"
 
 #include "simulator/session.h"
 
@@ -19,19 +20,8 @@
 
 namespace rung::simulator::test {
 
-constexpr int kPatienceMs = 10000;
-
-// Processes events until the condition holds or the patience runs out.
-template <typename Condition> bool eventually(Condition condition, int ms = kPatienceMs) {
-    QElapsedTimer t;
-    t.start();
-    while (!condition()) {
-        if (t.elapsed() > ms)
-            return false;
-        QCoreApplication::processEvents(QEventLoop::AllEvents, 10);
-    }
-    return true;
-}
+using waits::eventually;
+using waits::kPatienceMs;
 
 struct SessionFixture {
     explicit SessionFixture(const char *program)
@@ -66,6 +56,8 @@ struct SessionFixture {
     // worker reach the lock, so everything change submits is seen by the worker at once.
     template <typename Change> void whileWorkerHeld(Change change) {
         session->readHistory([&](const model::HistoryRecorder &) {
+            // A fixed pause, not a condition: nothing outside the worker tells that it waits
+            // for the lock; five scan periods let a scanning worker get there.
             std::this_thread::sleep_for(std::chrono::milliseconds(50));
             change();
         });

@@ -219,4 +219,10 @@ struct TableSim {
     std::unique_ptr<Engine> engine;
 };
 
+// The engine's memory image as a vector, for comparing two engines with EXPECT_EQ.
+inline std::vector<std::int32_t> image(const Engine &engine) {
+    const auto words = engine.words();
+    return {words.begin(), words.end()};
+}
+
 } // namespace rung::simulator::test

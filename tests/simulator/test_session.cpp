@@ -185,6 +185,7 @@ TEST(SimulatorSession, AfterAStallPacingGoesOnFromNowWithoutABurst) {
     f.session->run();
     ASSERT_TRUE(eventually([&] { return f.latest()->statistics.scans >= 3; }));
     f.session->readHistory([](const model::HistoryRecorder &) {
+        // The stall is the stimulus, not a wait for something: its length is the test's.
         std::this_thread::sleep_for(std::chrono::milliseconds(1000));
     });
     QElapsedTimer t;

@@ -180,7 +180,7 @@ TEST(SessionHistory, AHistorySourceShowsAnEarlierScanAsItWasLive) {
     QSignalSpy shown(&history, &HistorySource::shown);
     for (const auto &[scan, snapshot] : live) {
         history.showScan(scan);
-        ASSERT_TRUE(eventually([&] { return history.shownScan() == scan; }));
+        ASSERT_TRUE(eventually([&, scan = scan] { return history.shownScan() == scan; }));
         const auto rebuilt = history.snapshot();
         ASSERT_TRUE(rebuilt);
         EXPECT_EQ(rebuilt->words, snapshot->words) << "scan " << scan;

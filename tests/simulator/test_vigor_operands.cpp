@@ -36,6 +36,18 @@ TEST(VigorDigitGroups, MovToK4Y0WritesSixteenOutputsCountingInOctal) {
     EXPECT_FALSE(s.bit("Y20"));
 }
 
+// A digit group is written through the engine's scratch word behind the image: what the
+// engine hands its readers (the history recorder, the benchmarks' compiled-code check) is the
+// layout's words alone, the same as a snapshot holds.
+TEST(VigorDigitGroups, TheEnginesImageIsTheLayoutsWordsAsASnapshotHoldsThem) {
+    VigorBits s("LD M9000\nMOV H1234 K4Y0\nEND");
+    ASSERT_TRUE(s.result.ok());
+    s.engine->scan();
+    const auto words = s.engine->words();
+    EXPECT_EQ(words.size(), static_cast<std::size_t>(s.result.program->layout->wordCount()));
+    EXPECT_EQ(std::vector<std::int32_t>(words.begin(), words.end()), s.engine->snapshot().words);
+}
+
 TEST(VigorDigitGroups, K2X4ReadsX4ToX7ThenX10ToX13) {
     VigorBits s("LD M9000\nMOV K2X4 D0\nEND");
     ASSERT_TRUE(s.result.ok());
