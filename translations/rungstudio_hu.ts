@@ -120,7 +120,7 @@
 <context>
     <name>rung::app::Cli</name>
     <message>
-        <location filename="../app/cli/cli.cpp" line="+54"/>
+        <location filename="../app/cli/cli.cpp" line="+58"/>
         <location line="+45"/>
         <source>unexpected argument %1</source>
         <translation>váratlan argumentum: %1</translation>
@@ -131,7 +131,7 @@
         <translation>a --to értéke il, ladder vagy project lehet</translation>
     </message>
     <message>
-        <location line="-75"/>
+        <location line="-77"/>
         <source>usage:
   rungstudio-cli check FILE [--target %1] [--model M]
   rungstudio-cli convert FILE [--target T] [--from il|ladder|project] --to il|ladder|project [-o OUT] [--force]
@@ -150,7 +150,7 @@ A FILE utasításlista (.il), létra-szöveg (.ladder) vagy projekt (.rung).
 Kilépési kód: 0 nincs hiba, 1 a programban hiba van, 2 használati vagy I/O hiba.</translation>
     </message>
     <message>
-        <location line="+91"/>
+        <location line="+93"/>
         <source>nothing written: the list as typed would be lost</source>
         <translation>semmi sem íródott ki: a begépelt lista elveszne</translation>
     </message>
@@ -175,7 +175,7 @@ Kilépési kód: 0 nincs hiba, 1 a programban hiba van, 2 használati vagy I/O h
         <translation>%1 nem írható: %2</translation>
     </message>
     <message>
-        <location line="+43"/>
+        <location line="+49"/>
         <source>no command given</source>
         <translation>nincs megadva parancs</translation>
     </message>
@@ -619,6 +619,66 @@ Válaszidő: %6 ms (átlag %7, max. %8); frissítés: %9 ms, %10 keret</translat
         <location line="+6"/>
         <source>Cannot write %1: %2</source>
         <translation>%1 nem írható: %2</translation>
+    </message>
+</context>
+<context>
+    <name>rung::app::Diff</name>
+    <message>
+        <location filename="../app/cli/cli_diff.cpp" line="+61"/>
+        <source>%1 does not read whole, so it is not compared</source>
+        <translation>%1 nem olvasható be teljesen, ezért nincs összehasonlítva</translation>
+    </message>
+    <message>
+        <location line="+12"/>
+        <source>  rungstudio-cli diff A B [--target T] [--model M] [--from il|ladder|project] [--format text|json]
+        (exit 0 the same, 1 different, 2 error)</source>
+        <translation>  rungstudio-cli diff A B [--target T] [--model M] [--from il|ladder|project] [--format text|json]
+        (kilépési kód 0 azonos, 1 eltérő, 2 hiba)</translation>
+    </message>
+    <message>
+        <location line="+6"/>
+        <source>  rungstudio-cli show FILE   (a project as text to read and diff: git&apos;s textconv)</source>
+        <translation>  rungstudio-cli show FILE   (a projekt szövegként, olvasáshoz és összehasonlításhoz: a git textconv-ja)</translation>
+    </message>
+    <message>
+        <location line="+13"/>
+        <source>%1 needs a value</source>
+        <translation>%1 után érték kell</translation>
+    </message>
+    <message>
+        <location line="+13"/>
+        <source>unknown option %1</source>
+        <translation>ismeretlen kapcsoló: %1</translation>
+    </message>
+    <message>
+        <location line="+7"/>
+        <source>diff takes two files, A and B</source>
+        <translation>a diff két fájlt vár, A-t és B-t</translation>
+    </message>
+    <message>
+        <location line="+4"/>
+        <source>--format must be text or json, not %1</source>
+        <translation>a --format értéke text vagy json lehet, nem %1</translation>
+    </message>
+    <message>
+        <location line="+26"/>
+        <source>diff needs at least one file that is not /dev/null</source>
+        <translation>a diff legalább egy olyan fájlt vár, amely nem /dev/null</translation>
+    </message>
+    <message>
+        <location line="+13"/>
+        <source>%1 is a program for %2 and %3 one for %4: only programs of one PLC are compared</source>
+        <translation>%1 program %2 PLC-hez, %3 pedig %4 PLC-hez: csak azonos PLC programjai hasonlíthatók össze</translation>
+    </message>
+    <message>
+        <location line="+17"/>
+        <source>usage:</source>
+        <translation>használat:</translation>
+    </message>
+    <message>
+        <location line="+18"/>
+        <source>not read as a project: %1</source>
+        <translation>nem olvasható projektként: %1</translation>
     </message>
 </context>
 <context>
@@ -1368,7 +1428,7 @@ Létradiagram- és utasításlista-szerkesztő a következő PLC-khez: %2.</tran
         <translation>Létradiagram exportálása</translation>
     </message>
     <message>
-        <location line="+65"/>
+        <location line="+66"/>
         <source>Cannot open the example</source>
         <translation>A példa nem nyitható meg</translation>
     </message>
@@ -2623,6 +2683,60 @@ Kiértékelés: %4 µs (%5..%6)</translation>
     </message>
 </context>
 <context>
+    <name>rung::app::Test</name>
+    <message>
+        <location filename="../app/cli/cli_test.cpp" line="+47"/>
+        <source>  rungstudio-cli test FILE|DIR... [--junit OUT.xml]   (scenario tests, .rungtest)</source>
+        <translation>  rungstudio-cli test FILE|DIR... [--junit OUT.xml]   (forgatókönyv-tesztek, .rungtest)</translation>
+    </message>
+    <message>
+        <location line="+10"/>
+        <source>--junit needs a value</source>
+        <translation>a --junit után érték kell</translation>
+    </message>
+    <message>
+        <location line="+5"/>
+        <source>unknown option %1</source>
+        <translation>ismeretlen kapcsoló: %1</translation>
+    </message>
+    <message>
+        <location line="+7"/>
+        <source>no scenario given</source>
+        <translation>nincs megadva forgatókönyv</translation>
+    </message>
+    <message>
+        <location line="+14"/>
+        <source>%1: no .%2 file in the folder</source>
+        <translation>%1: a mappában nincs .%2 fájl</translation>
+    </message>
+    <message>
+        <location line="+7"/>
+        <source>%1: no such file or folder</source>
+        <translation>%1: nincs ilyen fájl vagy mappa</translation>
+    </message>
+    <message>
+        <location line="+18"/>
+        <source>error</source>
+        <translation>hiba</translation>
+    </message>
+    <message>
+        <location line="+6"/>
+        <source>note</source>
+        <translation>megjegyzés</translation>
+    </message>
+    <message>
+        <location line="+14"/>
+        <source>%1 scenario(s), %2 expectation(s): %3 failed; %4 scenario(s) did not pass</source>
+        <extracomment>The summary of a test run: %1 scenario files, %2 expectations, %3 failed expectations, %4 scenarios that failed or did not run.</extracomment>
+        <translation>%1 forgatókönyv, %2 elvárás: %3 nem teljesült; %4 forgatókönyv nem ment át</translation>
+    </message>
+    <message>
+        <location line="+10"/>
+        <source>cannot write %1: %2</source>
+        <translation>%1 nem írható: %2</translation>
+    </message>
+</context>
+<context>
     <name>rung::app::VirtualPlc</name>
     <message>
         <location filename="../app/virtual_plc/virtual_plc.cpp" line="+100"/>
@@ -3591,8 +3705,8 @@ Kiértékelés: %4 µs (%5..%6)</translation>
 <context>
     <name>rung::editor::IlEditor</name>
     <message>
-        <location filename="../editor/il_editor.cpp" line="+273"/>
-        <location line="+375"/>
+        <location filename="../editor/il_editor.cpp" line="+274"/>
+        <location line="+391"/>
         <source>Instruction list</source>
         <translation>Utasításlista</translation>
     </message>
@@ -3600,7 +3714,7 @@ Kiértékelés: %4 µs (%5..%6)</translation>
 <context>
     <name>rung::editor::IlLexer</name>
     <message>
-        <location line="-581"/>
+        <location line="-597"/>
         <source>Default</source>
         <translation>Alapértelmezett</translation>
     </message>
@@ -4036,24 +4150,24 @@ Kiértékelés: %4 µs (%5..%6)</translation>
         <translation>Üzenet</translation>
     </message>
     <message>
-        <location line="+67"/>
+        <location line="+68"/>
         <location line="+47"/>
         <source>Problems</source>
         <translation>Problémák</translation>
     </message>
     <message>
-        <location line="-96"/>
+        <location line="-97"/>
         <source>Error</source>
         <translation>Hiba</translation>
     </message>
     <message>
         <location line="+1"/>
-        <location line="+67"/>
+        <location line="+68"/>
         <source>Warning</source>
         <translation>Figyelmeztetés</translation>
     </message>
     <message>
-        <location line="-66"/>
+        <location line="-67"/>
         <source>Note</source>
         <translation>Megjegyzés</translation>
     </message>
@@ -4064,12 +4178,12 @@ Kiértékelés: %4 µs (%5..%6)</translation>
     </message>
     <message>
         <location line="+3"/>
-        <location line="+52"/>
+        <location line="+53"/>
         <source>rung %1, row %2</source>
         <translation>%1. létrafok, %2. sor</translation>
     </message>
     <message>
-        <location line="-51"/>
+        <location line="-52"/>
         <source>rung %1</source>
         <translation>%1. létrafok</translation>
     </message>
@@ -4079,7 +4193,7 @@ Kiértékelés: %4 µs (%5..%6)</translation>
         <translation>%1 (javítás elérhető)</translation>
     </message>
     <message>
-        <location line="+85"/>
+        <location line="+86"/>
         <source>1 error</source>
         <translation>1 hiba</translation>
     </message>
@@ -5104,6 +5218,216 @@ Kiértékelés: %4 µs (%5..%6)</translation>
     </message>
 </context>
 <context>
+    <name>rung::model::Compare</name>
+    <message>
+        <location filename="../model/compare/compare_report.cpp" line="+24"/>
+        <source>the same</source>
+        <translation>azonos</translation>
+    </message>
+    <message>
+        <location line="+2"/>
+        <source>moved</source>
+        <translation>áthelyezve</translation>
+    </message>
+    <message>
+        <location line="+2"/>
+        <source>changed</source>
+        <translation>módosítva</translation>
+    </message>
+    <message>
+        <location line="+2"/>
+        <source>moved and changed</source>
+        <translation>áthelyezve és módosítva</translation>
+    </message>
+    <message>
+        <location line="+2"/>
+        <source>inserted</source>
+        <translation>beszúrva</translation>
+    </message>
+    <message>
+        <location line="+2"/>
+        <source>deleted</source>
+        <translation>törölve</translation>
+    </message>
+    <message>
+        <location line="+8"/>
+        <source>contact</source>
+        <translation>érintkező</translation>
+    </message>
+    <message>
+        <location line="+2"/>
+        <source>output</source>
+        <translation>kimenet</translation>
+    </message>
+    <message>
+        <location line="+4"/>
+        <source>branches</source>
+        <translation>ágak</translation>
+    </message>
+    <message>
+        <location line="+41"/>
+        <source>name</source>
+        <translation>név</translation>
+    </message>
+    <message>
+        <location line="+2"/>
+        <source>comment</source>
+        <translation>megjegyzés</translation>
+    </message>
+    <message>
+        <location line="+12"/>
+        <source>- rung %1 of A: %2</source>
+        <extracomment>A rung only in the first program (A): %1 its number there, %2 &quot;deleted&quot;.</extracomment>
+        <translation>- A %1. létrafoka: %2</translation>
+    </message>
+    <message>
+        <location line="+3"/>
+        <source>+ rung %1 of B: %2</source>
+        <extracomment>A rung only in the second program (B): %1 its number there, %2 &quot;inserted&quot;.</extracomment>
+        <translation>+ B %1. létrafoka: %2</translation>
+    </message>
+    <message>
+        <location line="+2"/>
+        <source>rung %1: %2</source>
+        <translation>%1. létrafok: %2</translation>
+    </message>
+    <message>
+        <location line="+2"/>
+        <source>rung %1 -&gt; %2: %3</source>
+        <extracomment>A rung of A (number %1) that is rung %2 of B, and what happened to it (%3).</extracomment>
+        <translation>%1. -&gt; %2. létrafok: %3</translation>
+    </message>
+    <message>
+        <location line="+19"/>
+        <source>+ %1 added: %2</source>
+        <translation>+ %1 hozzáadva: %2</translation>
+    </message>
+    <message>
+        <location line="+3"/>
+        <source>- %1 removed: %2</source>
+        <translation>- %1 eltávolítva: %2</translation>
+    </message>
+    <message>
+        <location line="+4"/>
+        <source>* the branches joining the contacts changed</source>
+        <translation>* az érintkezőket összekötő ágak megváltoztak</translation>
+    </message>
+    <message>
+        <location line="+3"/>
+        <source>* %1 changed: %2 -&gt; %3</source>
+        <translation>* %1 módosítva: %2 -&gt; %3</translation>
+    </message>
+    <message>
+        <location line="+5"/>
+        <source>operand %1: %2 -&gt; %3</source>
+        <extracomment>An operand that changed: %1 its number (1 = the first), %2 and %3 the old and the new operand.</extracomment>
+        <translation>%1. operandus: %2 -&gt; %3</translation>
+    </message>
+    <message>
+        <location line="+8"/>
+        <source>* comment changed: %1 -&gt; %2</source>
+        <translation>* megjegyzés módosítva: %1 -&gt; %2</translation>
+    </message>
+    <message>
+        <location line="+8"/>
+        <source>+ %1 added: %2 %3</source>
+        <extracomment>%1 what (&quot;symbol X0&quot;, &quot;set value T0&quot;), %2 the field (&quot;name&quot;, &quot;comment&quot;, &quot;value&quot;).</extracomment>
+        <translation>+ %1 hozzáadva: %2 %3</translation>
+    </message>
+    <message>
+        <location line="+2"/>
+        <source>- %1 removed: %2 %3</source>
+        <translation>- %1 eltávolítva: %2 %3</translation>
+    </message>
+    <message>
+        <location line="+4"/>
+        <source>* %1 changed: %2 %3 -&gt; %4</source>
+        <translation>* %1 módosítva: %2 %3 -&gt; %4</translation>
+    </message>
+    <message>
+        <location line="+7"/>
+        <source>+ watch list %1 added: %2</source>
+        <translation>+ %1 figyelőlista hozzáadva: %2</translation>
+    </message>
+    <message>
+        <location line="+1"/>
+        <source>- watch list %1 removed: %2</source>
+        <translation>- %1 figyelőlista eltávolítva: %2</translation>
+    </message>
+    <message>
+        <location line="+3"/>
+        <source>+ watch list %1: %2 added</source>
+        <translation>+ %1 figyelőlista: %2 hozzáadva</translation>
+    </message>
+    <message>
+        <location line="+1"/>
+        <source>- watch list %1: %2 removed</source>
+        <translation>- %1 figyelőlista: %2 eltávolítva</translation>
+    </message>
+    <message>
+        <location line="+2"/>
+        <source>* watch list %1: the order changed: %2 -&gt; %3</source>
+        <translation>* %1 figyelőlista: a sorrend megváltozott: %2 -&gt; %3</translation>
+    </message>
+    <message>
+        <location line="+3"/>
+        <source>* watch list %1: %2 shown as %3 -&gt; %4</source>
+        <extracomment>A watch list row shown in another format: %1 the list, %2 the device, %3 and %4 the formats (dec, signed, hex, bin, bcd).</extracomment>
+        <translation>* %1 figyelőlista: %2 megjelenítése %3 -&gt; %4</translation>
+    </message>
+    <message>
+        <location line="+7"/>
+        <source>+ B holds an instruction list typed with errors that is not in its rungs (pendingListing)</source>
+        <translation>+ B egy hibásan begépelt utasításlistát tartalmaz, amely nincs a létrafokaiban (pendingListing)</translation>
+    </message>
+    <message>
+        <location line="+3"/>
+        <source>- A holds an instruction list typed with errors that is not in its rungs (pendingListing)</source>
+        <translation>- A egy hibásan begépelt utasításlistát tartalmaz, amely nincs a létrafokaiban (pendingListing)</translation>
+    </message>
+    <message>
+        <location line="+5"/>
+        <source>* the instruction lists typed with errors that are not in the rungs differ (pendingListing)</source>
+        <translation>* a hibásan begépelt, a létrafokokban nem szereplő utasításlisták eltérnek (pendingListing)</translation>
+    </message>
+    <message>
+        <location line="+3"/>
+        <source>+ symbol row not yet a symbol: %1</source>
+        <translation>+ még nem szimbólum sor: %1</translation>
+    </message>
+    <message>
+        <location line="+1"/>
+        <source>- symbol row not yet a symbol: %1</source>
+        <translation>- még nem szimbólum sor: %1</translation>
+    </message>
+    <message>
+        <location line="+27"/>
+        <source>* model changed: %1 -&gt; %2</source>
+        <translation>* modell módosítva: %1 -&gt; %2</translation>
+    </message>
+    <message>
+        <location line="+5"/>
+        <source>symbol %1</source>
+        <translation>%1 szimbólum</translation>
+    </message>
+    <message>
+        <location line="+2"/>
+        <source>set value %1</source>
+        <translation>%1 beállított érték</translation>
+    </message>
+    <message>
+        <location line="+10"/>
+        <source>The programs are the same (rungs: %1).</source>
+        <translation>A programok azonosak (létrafokok: %1).</translation>
+    </message>
+    <message>
+        <location line="+3"/>
+        <source>Rungs: %1 in A, %2 in B; %3 the same, %4 moved, %5 changed, %6 moved and changed, %7 inserted, %8 deleted.</source>
+        <extracomment>The summary of a comparison: %1 rungs in A, %2 in B, then how many of each kind.</extracomment>
+        <translation>Létrafokok: %1 az A-ban, %2 a B-ben; %3 azonos, %4 áthelyezve, %5 módosítva, %6 áthelyezve és módosítva, %7 beszúrva, %8 törölve.</translation>
+    </message>
+</context>
+<context>
     <name>rung::model::Convert</name>
     <message>
         <location filename="../model/convert/convert_to_ladder.cpp" line="+219"/>
@@ -5466,7 +5790,7 @@ Kiértékelés: %4 µs (%5..%6)</translation>
 <context>
     <name>rung::model::Project</name>
     <message>
-        <location filename="../model/project/project.cpp" line="+110"/>
+        <location filename="../model/project/project.cpp" line="+211"/>
         <source>Line %1, column %2 (byte %3): the file is not valid JSON (%4)</source>
         <translation>%1. sor, %2. oszlop (%3. bájt): a fájl nem érvényes JSON (%4)</translation>
     </message>
@@ -5632,7 +5956,7 @@ Kiértékelés: %4 µs (%5..%6)</translation>
         <translation>%1: a fájl nagyobb %2 MB-nál, ennél többet a Rung Studio nem olvas be</translation>
     </message>
     <message>
-        <location filename="../model/project/project.cpp" line="+131"/>
+        <location filename="../model/project/project.cpp" line="+149"/>
         <source>%1: cannot write the file (%2)</source>
         <translation>%1: a fájl nem írható (%2)</translation>
     </message>
@@ -7516,6 +7840,167 @@ Kiértékelés: %4 µs (%5..%6)</translation>
         <location line="+24"/>
         <source>that scan is no longer recorded</source>
         <translation>az a ciklus már nincs rögzítve</translation>
+    </message>
+</context>
+<context>
+    <name>rung::simulator::Scenario</name>
+    <message>
+        <location filename="../simulator/scenario_parse.cpp" line="+56"/>
+        <source>%1: a number of scans is whole</source>
+        <translation>%1: a ciklusok száma egész szám</translation>
+    </message>
+    <message>
+        <location line="+14"/>
+        <source>%1 is more than a week of virtual time</source>
+        <translation>%1 több mint egy hét virtuális idő</translation>
+    </message>
+    <message>
+        <location line="+4"/>
+        <source>%1 is not a whole number of milliseconds</source>
+        <translation>%1 nem egész számú ezredmásodperc</translation>
+    </message>
+    <message>
+        <location line="+42"/>
+        <source>%1 is no time</source>
+        <translation>%1 nem időtartam</translation>
+    </message>
+    <message>
+        <location line="+6"/>
+        <source>a scenario runs one program; the first is on line %1</source>
+        <translation>egy forgatókönyv egy programot futtat; az első a(z) %1. sorban van</translation>
+    </message>
+    <message>
+        <location line="+16"/>
+        <source>unknown option %1 (--target, --model)</source>
+        <translation>ismeretlen kapcsoló: %1 (--target, --model)</translation>
+    </message>
+    <message>
+        <location line="+7"/>
+        <source>the period is a time of at least 1 ms</source>
+        <translation>a ciklusidő legalább 1 ms</translation>
+    </message>
+    <message>
+        <location line="+36"/>
+        <source>&quot;%1&quot; is no statement (program, period, at TIME set|force|release|expect, within TIME expect, always expect, run TIME)</source>
+        <translation>„%1” nem utasítás (program, period, at IDŐ set|force|release|expect, within IDŐ expect, always expect, run IDŐ)</translation>
+    </message>
+    <message>
+        <location line="+6"/>
+        <source>the statement says nothing after its verb</source>
+        <translation>az utasítás igéje után nincs semmi</translation>
+    </message>
+    <message>
+        <location line="+6"/>
+        <source>no program: a scenario starts with &quot;program FILE&quot;</source>
+        <translation>nincs program: a forgatókönyv „program FÁJL” sorral kezdődik</translation>
+    </message>
+    <message>
+        <location filename="../simulator/scenario_run.cpp" line="+118"/>
+        <source>&quot;%1&quot; is not understood here</source>
+        <translation>„%1” itt nem értelmezhető</translation>
+    </message>
+    <message>
+        <location line="+11"/>
+        <source>%1 is no device</source>
+        <translation>%1 nem operandus</translation>
+    </message>
+    <message>
+        <location line="+2"/>
+        <source>%1: only bits are forced</source>
+        <translation>%1: csak bitek kényszeríthetők</translation>
+    </message>
+    <message>
+        <location line="+3"/>
+        <source>%1 needs =VALUE</source>
+        <translation>%1 után =ÉRTÉK kell</translation>
+    </message>
+    <message>
+        <location line="+5"/>
+        <source>%1 is no value (a number, ON or OFF, #hex digits)</source>
+        <translation>%1 nem érték (szám, ON vagy OFF, #hexa számjegyek)</translation>
+    </message>
+    <message>
+        <location line="+7"/>
+        <source>DEVICE=VALUE is expected</source>
+        <translation>OPERANDUS=ÉRTÉK várható</translation>
+    </message>
+    <message>
+        <location line="+11"/>
+        <source>%1: only bits are forced and released</source>
+        <translation>%1: csak bitek kényszeríthetők és oldhatók fel</translation>
+    </message>
+    <message>
+        <location line="+87"/>
+        <source>a device or a value is missing at the end</source>
+        <translation>a végéről hiányzik egy operandus vagy érték</translation>
+    </message>
+    <message>
+        <location line="+1"/>
+        <source>a device or a value is expected at &quot;%1&quot;</source>
+        <translation>operandus vagy érték várható itt: „%1”</translation>
+    </message>
+    <message>
+        <location line="+44"/>
+        <source>%1 is no device of %2: %3</source>
+        <translation>%1 nem operandusa a(z) %2 PLC-nek: %3</translation>
+    </message>
+    <message>
+        <location line="+10"/>
+        <source>%1: cv: and sv: name a timer&apos;s or a counter&apos;s current and set value</source>
+        <translation>%1: a cv: és az sv: egy időzítő vagy számláló aktuális és beállított értékét jelöli</translation>
+    </message>
+    <message>
+        <location line="+60"/>
+        <source>a &quot;)&quot; is missing</source>
+        <translation>hiányzik egy „)”</translation>
+    </message>
+    <message>
+        <location line="+26"/>
+        <source>%1 is a word: compare it (%1=5, %1&gt;100)</source>
+        <translation>%1 egy szó: hasonlítsa össze (%1=5, %1&gt;100)</translation>
+    </message>
+    <message>
+        <location line="+1"/>
+        <source>%1 alone is no condition</source>
+        <translation>%1 önmagában nem feltétel</translation>
+    </message>
+    <message>
+        <location line="+60"/>
+        <source>at %1 comes before line %2&apos;s %3: statements stand in the order of their times</source>
+        <translation>az at %1 korábbi, mint a(z) %2. sor %3 ideje: az utasítások időrendben követik egymást</translation>
+    </message>
+    <message>
+        <location line="+128"/>
+        <source>%1: the run was already at %2 (the statement before waited until then), so at %3 could not be checked</source>
+        <translation>%1: a futás már %2-nál tartott (az előző utasítás addig várt), ezért az at %3 nem volt ellenőrizhető</translation>
+    </message>
+    <message>
+        <location line="+13"/>
+        <source>at %1: expected %2, seen %3</source>
+        <extracomment>A failed expectation: %1 the time, %2 what was expected, %3 the devices&apos; values then (&quot;Y0=1 Y1=0&quot;).</extracomment>
+        <translation>%1-kor: elvárt %2, tapasztalt %3</translation>
+    </message>
+    <message>
+        <location line="+24"/>
+        <source>within %1 of %2 (until %3): expected %4, seen %5</source>
+        <extracomment>%1 the time allowed (&quot;2s&quot;), %2 the time it counted from, %3 until when, %4 what was expected, %5 the values seen at the end.</extracomment>
+        <translation>%2 után %1-on belül (%3-ig): elvárt %4, tapasztalt %5</translation>
+    </message>
+    <message>
+        <location line="+24"/>
+        <source>at %1: expected always %2, seen %3 (failed in %4 of %5 scans)</source>
+        <extracomment>An `always` expectation that failed: %1 the first time, %2 what was expected, %3 the values then, %4 the scans it failed in, %5 the scans run.</extracomment>
+        <translation>%1-kor: mindig elvárt %2, tapasztalt %3 (%5 ciklusból %4-ban nem teljesült)</translation>
+    </message>
+    <message>
+        <location line="+11"/>
+        <source>runtime error at step %1: %2</source>
+        <translation>futásidejű hiba a(z) %1. lépésnél: %2</translation>
+    </message>
+    <message>
+        <location line="+22"/>
+        <source>the program does not start</source>
+        <translation>a program nem indul el</translation>
     </message>
 </context>
 <context>

@@ -120,7 +120,7 @@
 <context>
     <name>rung::app::Cli</name>
     <message>
-        <location filename="../app/cli/cli.cpp" line="+54"/>
+        <location filename="../app/cli/cli.cpp" line="+58"/>
         <location line="+45"/>
         <source>unexpected argument %1</source>
         <translation>argomento non previsto: %1</translation>
@@ -131,7 +131,7 @@
         <translation>--to deve essere il, ladder o project</translation>
     </message>
     <message>
-        <location line="-75"/>
+        <location line="-77"/>
         <source>usage:
   rungstudio-cli check FILE [--target %1] [--model M]
   rungstudio-cli convert FILE [--target T] [--from il|ladder|project] --to il|ladder|project [-o OUT] [--force]
@@ -150,7 +150,7 @@ FILE è una lista istruzioni (.il), un testo ladder (.ladder) o un progetto (.ru
 Codice di uscita: 0 nessun errore, 1 il programma contiene errori, 2 errore di utilizzo o di I/O.</translation>
     </message>
     <message>
-        <location line="+91"/>
+        <location line="+93"/>
         <source>nothing written: the list as typed would be lost</source>
         <translation>non è stato scritto nulla: la lista digitata andrebbe persa</translation>
     </message>
@@ -175,7 +175,7 @@ Codice di uscita: 0 nessun errore, 1 il programma contiene errori, 2 errore di u
         <translation>impossibile scrivere %1: %2</translation>
     </message>
     <message>
-        <location line="+43"/>
+        <location line="+49"/>
         <source>no command given</source>
         <translation>nessun comando specificato</translation>
     </message>
@@ -619,6 +619,66 @@ Andata e ritorno %6 ms (media %7, max %8); aggiornamento %9 ms, %10 frame</trans
         <location line="+6"/>
         <source>Cannot write %1: %2</source>
         <translation>Impossibile scrivere %1: %2</translation>
+    </message>
+</context>
+<context>
+    <name>rung::app::Diff</name>
+    <message>
+        <location filename="../app/cli/cli_diff.cpp" line="+61"/>
+        <source>%1 does not read whole, so it is not compared</source>
+        <translation>%1 non si legge per intero, quindi non viene confrontato</translation>
+    </message>
+    <message>
+        <location line="+12"/>
+        <source>  rungstudio-cli diff A B [--target T] [--model M] [--from il|ladder|project] [--format text|json]
+        (exit 0 the same, 1 different, 2 error)</source>
+        <translation>  rungstudio-cli diff A B [--target T] [--model M] [--from il|ladder|project] [--format text|json]
+        (uscita 0 uguali, 1 diversi, 2 errore)</translation>
+    </message>
+    <message>
+        <location line="+6"/>
+        <source>  rungstudio-cli show FILE   (a project as text to read and diff: git&apos;s textconv)</source>
+        <translation>  rungstudio-cli show FILE   (il progetto come testo da leggere e confrontare: il textconv di git)</translation>
+    </message>
+    <message>
+        <location line="+13"/>
+        <source>%1 needs a value</source>
+        <translation>%1 richiede un valore</translation>
+    </message>
+    <message>
+        <location line="+13"/>
+        <source>unknown option %1</source>
+        <translation>opzione sconosciuta: %1</translation>
+    </message>
+    <message>
+        <location line="+7"/>
+        <source>diff takes two files, A and B</source>
+        <translation>diff richiede due file, A e B</translation>
+    </message>
+    <message>
+        <location line="+4"/>
+        <source>--format must be text or json, not %1</source>
+        <translation>--format deve essere text o json, non %1</translation>
+    </message>
+    <message>
+        <location line="+26"/>
+        <source>diff needs at least one file that is not /dev/null</source>
+        <translation>diff richiede almeno un file che non sia /dev/null</translation>
+    </message>
+    <message>
+        <location line="+13"/>
+        <source>%1 is a program for %2 and %3 one for %4: only programs of one PLC are compared</source>
+        <translation>%1 è un programma per %2 e %3 uno per %4: si confrontano solo programmi dello stesso PLC</translation>
+    </message>
+    <message>
+        <location line="+17"/>
+        <source>usage:</source>
+        <translation>uso:</translation>
+    </message>
+    <message>
+        <location line="+18"/>
+        <source>not read as a project: %1</source>
+        <translation>non letto come progetto: %1</translation>
     </message>
 </context>
 <context>
@@ -1370,7 +1430,7 @@ Editor di schemi ladder e liste istruzioni per %2.</translation>
         <translation>Esporta schema ladder</translation>
     </message>
     <message>
-        <location line="+65"/>
+        <location line="+66"/>
         <source>Cannot open the example</source>
         <translation>Impossibile aprire l&apos;esempio</translation>
     </message>
@@ -2629,6 +2689,60 @@ Valutazione: %4 µs (%5..%6)</translation>
     </message>
 </context>
 <context>
+    <name>rung::app::Test</name>
+    <message>
+        <location filename="../app/cli/cli_test.cpp" line="+47"/>
+        <source>  rungstudio-cli test FILE|DIR... [--junit OUT.xml]   (scenario tests, .rungtest)</source>
+        <translation>  rungstudio-cli test FILE|DIR... [--junit OUT.xml]   (test di scenario, .rungtest)</translation>
+    </message>
+    <message>
+        <location line="+10"/>
+        <source>--junit needs a value</source>
+        <translation>--junit richiede un valore</translation>
+    </message>
+    <message>
+        <location line="+5"/>
+        <source>unknown option %1</source>
+        <translation>opzione sconosciuta: %1</translation>
+    </message>
+    <message>
+        <location line="+7"/>
+        <source>no scenario given</source>
+        <translation>nessuno scenario indicato</translation>
+    </message>
+    <message>
+        <location line="+14"/>
+        <source>%1: no .%2 file in the folder</source>
+        <translation>%1: nessun file .%2 nella cartella</translation>
+    </message>
+    <message>
+        <location line="+7"/>
+        <source>%1: no such file or folder</source>
+        <translation>%1: file o cartella inesistente</translation>
+    </message>
+    <message>
+        <location line="+18"/>
+        <source>error</source>
+        <translation>errore</translation>
+    </message>
+    <message>
+        <location line="+6"/>
+        <source>note</source>
+        <translation>nota</translation>
+    </message>
+    <message>
+        <location line="+14"/>
+        <source>%1 scenario(s), %2 expectation(s): %3 failed; %4 scenario(s) did not pass</source>
+        <extracomment>The summary of a test run: %1 scenario files, %2 expectations, %3 failed expectations, %4 scenarios that failed or did not run.</extracomment>
+        <translation>%1 scenari, %2 attese: %3 non soddisfatte; %4 scenari non superati</translation>
+    </message>
+    <message>
+        <location line="+10"/>
+        <source>cannot write %1: %2</source>
+        <translation>impossibile scrivere %1: %2</translation>
+    </message>
+</context>
+<context>
     <name>rung::app::VirtualPlc</name>
     <message>
         <location filename="../app/virtual_plc/virtual_plc.cpp" line="+100"/>
@@ -3598,8 +3712,8 @@ Valutazione: %4 µs (%5..%6)</translation>
 <context>
     <name>rung::editor::IlEditor</name>
     <message>
-        <location filename="../editor/il_editor.cpp" line="+273"/>
-        <location line="+375"/>
+        <location filename="../editor/il_editor.cpp" line="+274"/>
+        <location line="+391"/>
         <source>Instruction list</source>
         <translation>Lista istruzioni</translation>
     </message>
@@ -3607,7 +3721,7 @@ Valutazione: %4 µs (%5..%6)</translation>
 <context>
     <name>rung::editor::IlLexer</name>
     <message>
-        <location line="-581"/>
+        <location line="-597"/>
         <source>Default</source>
         <translation>Predefinito</translation>
     </message>
@@ -4043,24 +4157,24 @@ Valutazione: %4 µs (%5..%6)</translation>
         <translation>Messaggio</translation>
     </message>
     <message>
-        <location line="+67"/>
+        <location line="+68"/>
         <location line="+47"/>
         <source>Problems</source>
         <translation>Problemi</translation>
     </message>
     <message>
-        <location line="-96"/>
+        <location line="-97"/>
         <source>Error</source>
         <translation>Errore</translation>
     </message>
     <message>
         <location line="+1"/>
-        <location line="+67"/>
+        <location line="+68"/>
         <source>Warning</source>
         <translation>Avviso</translation>
     </message>
     <message>
-        <location line="-66"/>
+        <location line="-67"/>
         <source>Note</source>
         <translation>Nota</translation>
     </message>
@@ -4071,12 +4185,12 @@ Valutazione: %4 µs (%5..%6)</translation>
     </message>
     <message>
         <location line="+3"/>
-        <location line="+52"/>
+        <location line="+53"/>
         <source>rung %1, row %2</source>
         <translation>segmento %1, riga %2</translation>
     </message>
     <message>
-        <location line="-51"/>
+        <location line="-52"/>
         <source>rung %1</source>
         <translation>segmento %1</translation>
     </message>
@@ -4086,7 +4200,7 @@ Valutazione: %4 µs (%5..%6)</translation>
         <translation>%1 (correzione disponibile)</translation>
     </message>
     <message>
-        <location line="+85"/>
+        <location line="+86"/>
         <source>1 error</source>
         <translation>1 errore</translation>
     </message>
@@ -5114,6 +5228,216 @@ Valutazione: %4 µs (%5..%6)</translation>
     </message>
 </context>
 <context>
+    <name>rung::model::Compare</name>
+    <message>
+        <location filename="../model/compare/compare_report.cpp" line="+24"/>
+        <source>the same</source>
+        <translation>uguale</translation>
+    </message>
+    <message>
+        <location line="+2"/>
+        <source>moved</source>
+        <translation>spostato</translation>
+    </message>
+    <message>
+        <location line="+2"/>
+        <source>changed</source>
+        <translation>modificato</translation>
+    </message>
+    <message>
+        <location line="+2"/>
+        <source>moved and changed</source>
+        <translation>spostato e modificato</translation>
+    </message>
+    <message>
+        <location line="+2"/>
+        <source>inserted</source>
+        <translation>inserito</translation>
+    </message>
+    <message>
+        <location line="+2"/>
+        <source>deleted</source>
+        <translation>eliminato</translation>
+    </message>
+    <message>
+        <location line="+8"/>
+        <source>contact</source>
+        <translation>contatto</translation>
+    </message>
+    <message>
+        <location line="+2"/>
+        <source>output</source>
+        <translation>uscita</translation>
+    </message>
+    <message>
+        <location line="+4"/>
+        <source>branches</source>
+        <translation>rami</translation>
+    </message>
+    <message>
+        <location line="+41"/>
+        <source>name</source>
+        <translation>nome</translation>
+    </message>
+    <message>
+        <location line="+2"/>
+        <source>comment</source>
+        <translation>commento</translation>
+    </message>
+    <message>
+        <location line="+12"/>
+        <source>- rung %1 of A: %2</source>
+        <extracomment>A rung only in the first program (A): %1 its number there, %2 &quot;deleted&quot;.</extracomment>
+        <translation>- segmento %1 di A: %2</translation>
+    </message>
+    <message>
+        <location line="+3"/>
+        <source>+ rung %1 of B: %2</source>
+        <extracomment>A rung only in the second program (B): %1 its number there, %2 &quot;inserted&quot;.</extracomment>
+        <translation>+ segmento %1 di B: %2</translation>
+    </message>
+    <message>
+        <location line="+2"/>
+        <source>rung %1: %2</source>
+        <translation>segmento %1: %2</translation>
+    </message>
+    <message>
+        <location line="+2"/>
+        <source>rung %1 -&gt; %2: %3</source>
+        <extracomment>A rung of A (number %1) that is rung %2 of B, and what happened to it (%3).</extracomment>
+        <translation>segmento %1 -&gt; %2: %3</translation>
+    </message>
+    <message>
+        <location line="+19"/>
+        <source>+ %1 added: %2</source>
+        <translation>+ %1 aggiunto: %2</translation>
+    </message>
+    <message>
+        <location line="+3"/>
+        <source>- %1 removed: %2</source>
+        <translation>- %1 rimosso: %2</translation>
+    </message>
+    <message>
+        <location line="+4"/>
+        <source>* the branches joining the contacts changed</source>
+        <translation>* i rami che uniscono i contatti sono cambiati</translation>
+    </message>
+    <message>
+        <location line="+3"/>
+        <source>* %1 changed: %2 -&gt; %3</source>
+        <translation>* %1 modificato: %2 -&gt; %3</translation>
+    </message>
+    <message>
+        <location line="+5"/>
+        <source>operand %1: %2 -&gt; %3</source>
+        <extracomment>An operand that changed: %1 its number (1 = the first), %2 and %3 the old and the new operand.</extracomment>
+        <translation>operando %1: %2 -&gt; %3</translation>
+    </message>
+    <message>
+        <location line="+8"/>
+        <source>* comment changed: %1 -&gt; %2</source>
+        <translation>* commento modificato: %1 -&gt; %2</translation>
+    </message>
+    <message>
+        <location line="+8"/>
+        <source>+ %1 added: %2 %3</source>
+        <extracomment>%1 what (&quot;symbol X0&quot;, &quot;set value T0&quot;), %2 the field (&quot;name&quot;, &quot;comment&quot;, &quot;value&quot;).</extracomment>
+        <translation>+ %1 aggiunto: %2 %3</translation>
+    </message>
+    <message>
+        <location line="+2"/>
+        <source>- %1 removed: %2 %3</source>
+        <translation>- %1 rimosso: %2 %3</translation>
+    </message>
+    <message>
+        <location line="+4"/>
+        <source>* %1 changed: %2 %3 -&gt; %4</source>
+        <translation>* %1 modificato: %2 %3 -&gt; %4</translation>
+    </message>
+    <message>
+        <location line="+7"/>
+        <source>+ watch list %1 added: %2</source>
+        <translation>+ lista di osservazione %1 aggiunta: %2</translation>
+    </message>
+    <message>
+        <location line="+1"/>
+        <source>- watch list %1 removed: %2</source>
+        <translation>- lista di osservazione %1 rimossa: %2</translation>
+    </message>
+    <message>
+        <location line="+3"/>
+        <source>+ watch list %1: %2 added</source>
+        <translation>+ lista di osservazione %1: %2 aggiunto</translation>
+    </message>
+    <message>
+        <location line="+1"/>
+        <source>- watch list %1: %2 removed</source>
+        <translation>- lista di osservazione %1: %2 rimosso</translation>
+    </message>
+    <message>
+        <location line="+2"/>
+        <source>* watch list %1: the order changed: %2 -&gt; %3</source>
+        <translation>* lista di osservazione %1: l&apos;ordine è cambiato: %2 -&gt; %3</translation>
+    </message>
+    <message>
+        <location line="+3"/>
+        <source>* watch list %1: %2 shown as %3 -&gt; %4</source>
+        <extracomment>A watch list row shown in another format: %1 the list, %2 the device, %3 and %4 the formats (dec, signed, hex, bin, bcd).</extracomment>
+        <translation>* lista di osservazione %1: %2 mostrato come %3 -&gt; %4</translation>
+    </message>
+    <message>
+        <location line="+7"/>
+        <source>+ B holds an instruction list typed with errors that is not in its rungs (pendingListing)</source>
+        <translation>+ B contiene una lista istruzioni digitata con errori che non è nei suoi segmenti (pendingListing)</translation>
+    </message>
+    <message>
+        <location line="+3"/>
+        <source>- A holds an instruction list typed with errors that is not in its rungs (pendingListing)</source>
+        <translation>- A contiene una lista istruzioni digitata con errori che non è nei suoi segmenti (pendingListing)</translation>
+    </message>
+    <message>
+        <location line="+5"/>
+        <source>* the instruction lists typed with errors that are not in the rungs differ (pendingListing)</source>
+        <translation>* le liste istruzioni digitate con errori che non sono nei segmenti differiscono (pendingListing)</translation>
+    </message>
+    <message>
+        <location line="+3"/>
+        <source>+ symbol row not yet a symbol: %1</source>
+        <translation>+ riga non ancora simbolo: %1</translation>
+    </message>
+    <message>
+        <location line="+1"/>
+        <source>- symbol row not yet a symbol: %1</source>
+        <translation>- riga non ancora simbolo: %1</translation>
+    </message>
+    <message>
+        <location line="+27"/>
+        <source>* model changed: %1 -&gt; %2</source>
+        <translation>* modello modificato: %1 -&gt; %2</translation>
+    </message>
+    <message>
+        <location line="+5"/>
+        <source>symbol %1</source>
+        <translation>simbolo %1</translation>
+    </message>
+    <message>
+        <location line="+2"/>
+        <source>set value %1</source>
+        <translation>valore di preset %1</translation>
+    </message>
+    <message>
+        <location line="+10"/>
+        <source>The programs are the same (rungs: %1).</source>
+        <translation>I programmi sono uguali (segmenti: %1).</translation>
+    </message>
+    <message>
+        <location line="+3"/>
+        <source>Rungs: %1 in A, %2 in B; %3 the same, %4 moved, %5 changed, %6 moved and changed, %7 inserted, %8 deleted.</source>
+        <extracomment>The summary of a comparison: %1 rungs in A, %2 in B, then how many of each kind.</extracomment>
+        <translation>Segmenti: %1 in A, %2 in B; %3 uguali, %4 spostati, %5 modificati, %6 spostati e modificati, %7 inseriti, %8 eliminati.</translation>
+    </message>
+</context>
+<context>
     <name>rung::model::Convert</name>
     <message>
         <location filename="../model/convert/convert_to_ladder.cpp" line="+219"/>
@@ -5481,7 +5805,7 @@ Valutazione: %4 µs (%5..%6)</translation>
 <context>
     <name>rung::model::Project</name>
     <message>
-        <location filename="../model/project/project.cpp" line="+110"/>
+        <location filename="../model/project/project.cpp" line="+211"/>
         <source>Line %1, column %2 (byte %3): the file is not valid JSON (%4)</source>
         <translation>Riga %1, colonna %2 (byte %3): il file non è JSON valido (%4)</translation>
     </message>
@@ -5647,7 +5971,7 @@ Valutazione: %4 µs (%5..%6)</translation>
         <translation>%1: il file supera %2 MB, il massimo che Rung Studio legge</translation>
     </message>
     <message>
-        <location filename="../model/project/project.cpp" line="+131"/>
+        <location filename="../model/project/project.cpp" line="+149"/>
         <source>%1: cannot write the file (%2)</source>
         <translation>%1: impossibile scrivere il file (%2)</translation>
     </message>
@@ -7531,6 +7855,167 @@ Valutazione: %4 µs (%5..%6)</translation>
         <location line="+24"/>
         <source>that scan is no longer recorded</source>
         <translation>quella scansione non è più registrata</translation>
+    </message>
+</context>
+<context>
+    <name>rung::simulator::Scenario</name>
+    <message>
+        <location filename="../simulator/scenario_parse.cpp" line="+56"/>
+        <source>%1: a number of scans is whole</source>
+        <translation>%1: il numero di scansioni è intero</translation>
+    </message>
+    <message>
+        <location line="+14"/>
+        <source>%1 is more than a week of virtual time</source>
+        <translation>%1 supera una settimana di tempo virtuale</translation>
+    </message>
+    <message>
+        <location line="+4"/>
+        <source>%1 is not a whole number of milliseconds</source>
+        <translation>%1 non è un numero intero di millisecondi</translation>
+    </message>
+    <message>
+        <location line="+42"/>
+        <source>%1 is no time</source>
+        <translation>%1 non è un tempo</translation>
+    </message>
+    <message>
+        <location line="+6"/>
+        <source>a scenario runs one program; the first is on line %1</source>
+        <translation>uno scenario esegue un solo programma; il primo è alla riga %1</translation>
+    </message>
+    <message>
+        <location line="+16"/>
+        <source>unknown option %1 (--target, --model)</source>
+        <translation>opzione sconosciuta: %1 (--target, --model)</translation>
+    </message>
+    <message>
+        <location line="+7"/>
+        <source>the period is a time of at least 1 ms</source>
+        <translation>il periodo è un tempo di almeno 1 ms</translation>
+    </message>
+    <message>
+        <location line="+36"/>
+        <source>&quot;%1&quot; is no statement (program, period, at TIME set|force|release|expect, within TIME expect, always expect, run TIME)</source>
+        <translation>&quot;%1&quot; non è un&apos;istruzione (program, period, at TEMPO set|force|release|expect, within TEMPO expect, always expect, run TEMPO)</translation>
+    </message>
+    <message>
+        <location line="+6"/>
+        <source>the statement says nothing after its verb</source>
+        <translation>l&apos;istruzione non dice nulla dopo il verbo</translation>
+    </message>
+    <message>
+        <location line="+6"/>
+        <source>no program: a scenario starts with &quot;program FILE&quot;</source>
+        <translation>nessun programma: uno scenario inizia con &quot;program FILE&quot;</translation>
+    </message>
+    <message>
+        <location filename="../simulator/scenario_run.cpp" line="+118"/>
+        <source>&quot;%1&quot; is not understood here</source>
+        <translation>&quot;%1&quot; non è comprensibile qui</translation>
+    </message>
+    <message>
+        <location line="+11"/>
+        <source>%1 is no device</source>
+        <translation>%1 non è un operando</translation>
+    </message>
+    <message>
+        <location line="+2"/>
+        <source>%1: only bits are forced</source>
+        <translation>%1: si forzano solo i bit</translation>
+    </message>
+    <message>
+        <location line="+3"/>
+        <source>%1 needs =VALUE</source>
+        <translation>%1 richiede =VALORE</translation>
+    </message>
+    <message>
+        <location line="+5"/>
+        <source>%1 is no value (a number, ON or OFF, #hex digits)</source>
+        <translation>%1 non è un valore (un numero, ON o OFF, #cifre esadecimali)</translation>
+    </message>
+    <message>
+        <location line="+7"/>
+        <source>DEVICE=VALUE is expected</source>
+        <translation>è atteso OPERANDO=VALORE</translation>
+    </message>
+    <message>
+        <location line="+11"/>
+        <source>%1: only bits are forced and released</source>
+        <translation>%1: si forzano e rilasciano solo i bit</translation>
+    </message>
+    <message>
+        <location line="+87"/>
+        <source>a device or a value is missing at the end</source>
+        <translation>manca un operando o un valore alla fine</translation>
+    </message>
+    <message>
+        <location line="+1"/>
+        <source>a device or a value is expected at &quot;%1&quot;</source>
+        <translation>è atteso un operando o un valore in &quot;%1&quot;</translation>
+    </message>
+    <message>
+        <location line="+44"/>
+        <source>%1 is no device of %2: %3</source>
+        <translation>%1 non è un operando di %2: %3</translation>
+    </message>
+    <message>
+        <location line="+10"/>
+        <source>%1: cv: and sv: name a timer&apos;s or a counter&apos;s current and set value</source>
+        <translation>%1: cv: e sv: indicano il valore corrente e di preset di un temporizzatore o contatore</translation>
+    </message>
+    <message>
+        <location line="+60"/>
+        <source>a &quot;)&quot; is missing</source>
+        <translation>manca una &quot;)&quot;</translation>
+    </message>
+    <message>
+        <location line="+26"/>
+        <source>%1 is a word: compare it (%1=5, %1&gt;100)</source>
+        <translation>%1 è una word: confrontala (%1=5, %1&gt;100)</translation>
+    </message>
+    <message>
+        <location line="+1"/>
+        <source>%1 alone is no condition</source>
+        <translation>%1 da solo non è una condizione</translation>
+    </message>
+    <message>
+        <location line="+60"/>
+        <source>at %1 comes before line %2&apos;s %3: statements stand in the order of their times</source>
+        <translation>at %1 viene prima di %3 della riga %2: le istruzioni seguono l&apos;ordine dei loro tempi</translation>
+    </message>
+    <message>
+        <location line="+128"/>
+        <source>%1: the run was already at %2 (the statement before waited until then), so at %3 could not be checked</source>
+        <translation>%1: l&apos;esecuzione era già a %2 (l&apos;istruzione precedente ha atteso fin lì), quindi at %3 non si è potuto verificare</translation>
+    </message>
+    <message>
+        <location line="+13"/>
+        <source>at %1: expected %2, seen %3</source>
+        <extracomment>A failed expectation: %1 the time, %2 what was expected, %3 the devices&apos; values then (&quot;Y0=1 Y1=0&quot;).</extracomment>
+        <translation>a %1: atteso %2, visto %3</translation>
+    </message>
+    <message>
+        <location line="+24"/>
+        <source>within %1 of %2 (until %3): expected %4, seen %5</source>
+        <extracomment>%1 the time allowed (&quot;2s&quot;), %2 the time it counted from, %3 until when, %4 what was expected, %5 the values seen at the end.</extracomment>
+        <translation>entro %1 da %2 (fino a %3): atteso %4, visto %5</translation>
+    </message>
+    <message>
+        <location line="+24"/>
+        <source>at %1: expected always %2, seen %3 (failed in %4 of %5 scans)</source>
+        <extracomment>An `always` expectation that failed: %1 the first time, %2 what was expected, %3 the values then, %4 the scans it failed in, %5 the scans run.</extracomment>
+        <translation>a %1: atteso sempre %2, visto %3 (non soddisfatto in %4 di %5 scansioni)</translation>
+    </message>
+    <message>
+        <location line="+11"/>
+        <source>runtime error at step %1: %2</source>
+        <translation>errore di esecuzione al passo %1: %2</translation>
+    </message>
+    <message>
+        <location line="+22"/>
+        <source>the program does not start</source>
+        <translation>il programma non si avvia</translation>
     </message>
 </context>
 <context>

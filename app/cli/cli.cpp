@@ -1,6 +1,7 @@
 #include "cli.h"
 
 #include "cli_common.h"
+#include "cli_diff.h"
 #include "cli_online.h"
 #include "cli_record.h"
 #include "cli_serve.h"
@@ -42,8 +43,8 @@ QString usage() {
                   "--lang en|hu|it: the language of the messages (else the locale's, LANG).\n"
                   "Exit status: 0 no error, 1 the program has errors, 2 usage or I/O error.")
                .arg(model::targetIds().join(QLatin1Char('|'))) +
-           QLatin1Char('\n') + onlineUsage() + QLatin1Char('\n') + recordUsage() +
-           QLatin1Char('\n') + terminalUsage();
+           QLatin1Char('\n') + diffUsage() + QLatin1Char('\n') + showUsage() + QLatin1Char('\n') +
+           onlineUsage() + QLatin1Char('\n') + recordUsage() + QLatin1Char('\n') + terminalUsage();
 }
 
 int check(const QStringList &args, QTextStream &out, QTextStream &err) {
@@ -199,6 +200,10 @@ int runCli(const QStringList &arguments, QTextStream &out, QTextStream &err) {
         return convert(args, out, err);
     if (command == QLatin1String("simulate"))
         return runSimulateCommand(args, out, err);
+    if (command == QLatin1String("diff"))
+        return runDiffCommand(args, out, err);
+    if (command == QLatin1String("show"))
+        return runShowCommand(args, out, err);
     if (command == QLatin1String("serve"))
         return runServeCommand(args, out, err);
     if (command == QLatin1String("record"))
