@@ -7,6 +7,7 @@
 #include "cli_serve.h"
 #include "cli_simulate.h"
 #include "cli_terminal.h"
+#include "cli_test.h"
 
 #include "model/checks/checks.h"
 #include "model/convert/convert.h"
@@ -44,7 +45,8 @@ QString usage() {
                   "Exit status: 0 no error, 1 the program has errors, 2 usage or I/O error.")
                .arg(model::targetIds().join(QLatin1Char('|'))) +
            QLatin1Char('\n') + diffUsage() + QLatin1Char('\n') + showUsage() + QLatin1Char('\n') +
-           onlineUsage() + QLatin1Char('\n') + recordUsage() + QLatin1Char('\n') + terminalUsage();
+           testUsage() + QLatin1Char('\n') + onlineUsage() + QLatin1Char('\n') + recordUsage() +
+           QLatin1Char('\n') + terminalUsage();
 }
 
 int check(const QStringList &args, QTextStream &out, QTextStream &err) {
@@ -204,6 +206,8 @@ int runCli(const QStringList &arguments, QTextStream &out, QTextStream &err) {
         return runDiffCommand(args, out, err);
     if (command == QLatin1String("show"))
         return runShowCommand(args, out, err);
+    if (command == QLatin1String("test"))
+        return runTestCommand(args, out, err);
     if (command == QLatin1String("serve"))
         return runServeCommand(args, out, err);
     if (command == QLatin1String("record"))
