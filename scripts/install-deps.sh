@@ -10,6 +10,7 @@ packages=(
     libgtest-dev libbenchmark-dev
     xvfb xauth poppler-utils
     mbpoll libmodbus-dev python3-pymodbus python3-serial-asyncio socat
+    git libxml2-utils
 )
 missing=()
 for p in "${packages[@]}"; do

@@ -120,21 +120,16 @@
 <context>
     <name>rung::app::Cli</name>
     <message>
-        <location filename="../app/cli/cli.cpp" line="+58"/>
-        <location line="+45"/>
+        <location filename="../app/cli/cli.cpp" line="+57"/>
+        <location line="+48"/>
         <source>unexpected argument %1</source>
         <translation>váratlan argumentum: %1</translation>
     </message>
     <message>
-        <location line="+6"/>
-        <source>--to must be il, ladder or project</source>
-        <translation>a --to értéke il, ladder vagy project lehet</translation>
-    </message>
-    <message>
-        <location line="-77"/>
+        <location line="-72"/>
         <source>usage:
   rungstudio-cli check FILE [--target %1] [--model M]
-  rungstudio-cli convert FILE [--target T] [--from il|ladder|project] --to il|ladder|project [-o OUT] [--force]
+  rungstudio-cli convert FILE [--target T] [--from il|ladder|project|plcopen] --to il|ladder|project|plcopen [-o OUT] [--force] [--map FILE]
   rungstudio-cli simulate FILE [--target T] --scans N [--period MS] [--set DEV=VALUE@SCAN]... --trace DEV[,DEV...]
   rungstudio-cli serve FILE [--target T] --protocol vigor|modbus|modbus-tcp|hostlink (--pty | --port NAME | --tcp HOST:PORT) [--station N] [--baud B] [--period MS]
 FILE is a listing (.il), a ladder text (.ladder) or a project (.rung).
@@ -142,7 +137,7 @@ FILE is a listing (.il), a ladder text (.ladder) or a project (.rung).
 Exit status: 0 no error, 1 the program has errors, 2 usage or I/O error.</source>
         <translation>használat:
   rungstudio-cli check FILE [--target %1] [--model M]
-  rungstudio-cli convert FILE [--target T] [--from il|ladder|project] --to il|ladder|project [-o OUT] [--force]
+  rungstudio-cli convert FILE [--target T] [--from il|ladder|project|plcopen] --to il|ladder|project|plcopen [-o OUT] [--force] [--map FILE]
   rungstudio-cli simulate FILE [--target T] --scans N [--period MS] [--set DEV=VALUE@SCAN]... --trace DEV[,DEV...]
   rungstudio-cli serve FILE [--target T] --protocol vigor|modbus|modbus-tcp|hostlink (--pty | --port NAME | --tcp HOST:PORT) [--station N] [--baud B] [--period MS]
 A FILE utasításlista (.il), létra-szöveg (.ladder) vagy projekt (.rung).
@@ -150,7 +145,17 @@ A FILE utasításlista (.il), létra-szöveg (.ladder) vagy projekt (.rung).
 Kilépési kód: 0 nincs hiba, 1 a programban hiba van, 2 használati vagy I/O hiba.</translation>
     </message>
     <message>
-        <location line="+93"/>
+        <location line="+78"/>
+        <source>--to must be il, ladder, project or plcopen</source>
+        <translation>a --to értéke il, ladder, project vagy plcopen lehet</translation>
+    </message>
+    <message>
+        <location line="+12"/>
+        <source>--map is for --from plcopen</source>
+        <translation>a --map a --from plcopen mellé való</translation>
+    </message>
+    <message>
+        <location line="+14"/>
         <source>nothing written: the list as typed would be lost</source>
         <translation>semmi sem íródott ki: a begépelt lista elveszne</translation>
     </message>
@@ -170,7 +175,7 @@ Kilépési kód: 0 nincs hiba, 1 a programban hiba van, 2 használati vagy I/O h
         <translation>nem íródott semmi: a bemenet hibás (a --force így is kiírja)</translation>
     </message>
     <message>
-        <location line="+25"/>
+        <location line="+27"/>
         <source>cannot write %1: %2</source>
         <translation>%1 nem írható: %2</translation>
     </message>
@@ -228,11 +233,14 @@ Kilépési kód: 0 nincs hiba, 1 a programban hiba van, 2 használati vagy I/O h
     <message>
         <location line="+122"/>
         <location line="+27"/>
+        <location filename="../app/cli/cli_plcopen.cpp" line="+35"/>
         <source>%1 has no model %2</source>
         <translation>a(z) %1 rendszernek nincs %2 modellje</translation>
     </message>
     <message>
         <location line="+18"/>
+        <location filename="../app/cli/cli_plcopen.cpp" line="+34"/>
+        <location line="+3"/>
         <source>error</source>
         <translation>hiba</translation>
     </message>
@@ -243,6 +251,7 @@ Kilépési kód: 0 nincs hiba, 1 a programban hiba van, 2 használati vagy I/O h
     </message>
     <message>
         <location line="+1"/>
+        <location filename="../app/cli/cli_plcopen.cpp" line="+50"/>
         <source>note</source>
         <translation>megjegyzés</translation>
     </message>
@@ -250,6 +259,51 @@ Kilépési kód: 0 nincs hiba, 1 a programban hiba van, 2 használati vagy I/O h
         <location filename="../app/cli/cli_language.cpp" line="+31"/>
         <source>--lang must be one of %1</source>
         <translation>a --lang értéke csak ezek egyike lehet: %1</translation>
+    </message>
+    <message>
+        <location filename="../app/cli/cli_plcopen.cpp" line="-99"/>
+        <source>--from plcopen needs --target: which PLC the program is for</source>
+        <translation>a --from plcopen mellé --target kell: melyik PLC-hez készül a program</translation>
+    </message>
+    <message>
+        <location line="+5"/>
+        <source>unknown target %1</source>
+        <translation>ismeretlen célrendszer: %1</translation>
+    </message>
+    <message>
+        <location line="+34"/>
+        <source>%1: note: the file was written by Rung Studio for %2; it is read for %3</source>
+        <translation>%1: megjegyzés: a fájlt a Rung Studio %2 PLC-hez írta; %3 PLC-hez olvassuk be</translation>
+    </message>
+    <message>
+        <location line="+12"/>
+        <source>variable %1 (%2) names no device of %3, and none is free for it</source>
+        <translation>a(z) %1 (%2) változó nem a(z) %3 PLC operandusa, és nincs szabad operandus hozzá</translation>
+    </message>
+    <message>
+        <location line="+2"/>
+        <source>variable %1 (%2) names no device of %3; proposed: %4</source>
+        <translation>a(z) %1 (%2) változó nem a(z) %3 PLC operandusa; javasolt: %4</translation>
+    </message>
+    <message>
+        <location line="+4"/>
+        <source>A mapping file with the devices proposed (check them, then give it with --map FILE):</source>
+        <translation>Hozzárendelő fájl a javasolt operandusokkal (ellenőrizze, majd adja meg: --map FÁJL):</translation>
+    </message>
+    <message>
+        <location line="+8"/>
+        <source>nothing written: the file holds no ladder to import</source>
+        <translation>nem íródott semmi: a fájlban nincs beolvasható létradiagram</translation>
+    </message>
+    <message>
+        <location line="+6"/>
+        <source>nothing written: the file holds what %1 cannot take, listed above (--force writes the rest)</source>
+        <translation>nem íródott semmi: a fájlban olyasmi van, amit a(z) %1 nem tud fogadni, fent felsorolva (a --force a többit kiírja)</translation>
+    </message>
+    <message>
+        <location line="+6"/>
+        <source>written without what is listed above (--force)</source>
+        <translation>kiírva a fent felsoroltak nélkül (--force)</translation>
     </message>
 </context>
 <context>
@@ -624,7 +678,7 @@ Válaszidő: %6 ms (átlag %7, max. %8); frissítés: %9 ms, %10 keret</translat
 <context>
     <name>rung::app::Diff</name>
     <message>
-        <location filename="../app/cli/cli_diff.cpp" line="+61"/>
+        <location filename="../app/cli/cli_diff.cpp" line="+62"/>
         <source>%1 does not read whole, so it is not compared</source>
         <translation>%1 nem olvasható be teljesen, ezért nincs összehasonlítva</translation>
     </message>
@@ -2715,12 +2769,12 @@ Kiértékelés: %4 µs (%5..%6)</translation>
         <translation>%1: nincs ilyen fájl vagy mappa</translation>
     </message>
     <message>
-        <location line="+18"/>
+        <location line="+21"/>
         <source>error</source>
         <translation>hiba</translation>
     </message>
     <message>
-        <location line="+6"/>
+        <location line="+5"/>
         <source>note</source>
         <translation>megjegyzés</translation>
     </message>
@@ -5355,7 +5409,7 @@ Kiértékelés: %4 µs (%5..%6)</translation>
         <translation>- %1 figyelőlista eltávolítva: %2</translation>
     </message>
     <message>
-        <location line="+3"/>
+        <location line="+2"/>
         <source>+ watch list %1: %2 added</source>
         <translation>+ %1 figyelőlista: %2 hozzáadva</translation>
     </message>
@@ -5785,6 +5839,204 @@ Kiértékelés: %4 µs (%5..%6)</translation>
         <location line="+69"/>
         <source>&apos;%1&apos; is not a contact</source>
         <translation>A(z) &apos;%1&apos; nem érintkező</translation>
+    </message>
+</context>
+<context>
+    <name>rung::model::Plcopen</name>
+    <message>
+        <location filename="../model/exchange/plcopen_import.cpp" line="+120"/>
+        <source>not a PLCopen TC6 XML 2.01 project (the root is &lt;%1&gt; in &quot;%2&quot;, &lt;project&gt; in &quot;%3&quot; is expected)</source>
+        <translation>nem PLCopen TC6 XML 2.01 projekt (a gyökér &lt;%1&gt; a(z) „%2” névtérben, &lt;project&gt; várható a(z) „%3” névtérben)</translation>
+    </message>
+    <message>
+        <location line="+18"/>
+        <source>a second program is not imported: a project is one ladder (the first program, %1, is)</source>
+        <translation>a második program nem kerül beolvasásra: egy projekt egy létradiagram (az első program, %1, igen)</translation>
+    </message>
+    <message>
+        <location line="+3"/>
+        <source>a %1 is not imported: %2 runs one ladder, with no user functions or function blocks</source>
+        <translation>%1 nem kerül beolvasásra: a(z) %2 egy létradiagramot futtat, felhasználói függvények és funkcióblokkok nélkül</translation>
+    </message>
+    <message>
+        <location line="+5"/>
+        <source>the file has no program</source>
+        <translation>a fájlban nincs program</translation>
+    </message>
+    <message>
+        <location line="+15"/>
+        <source>a body in %1 is not imported: only ladder (LD) is</source>
+        <translation>a(z) %1 nyelvű törzs nem kerül beolvasásra: csak a létradiagram (LD)</translation>
+    </message>
+    <message>
+        <location line="+6"/>
+        <source>the program has no ladder (LD) body</source>
+        <translation>a programnak nincs létradiagram (LD) törzse</translation>
+    </message>
+    <message>
+        <location line="+131"/>
+        <source>the mapping file gives %1: %2</source>
+        <translation>a hozzárendelő fájl szerint %1: %2</translation>
+    </message>
+    <message>
+        <location line="+12"/>
+        <source>%1 at %2: %3 has no such device (docs/plcopen.md, located variables); give one in a mapping file</source>
+        <translation>%1 itt: %2: a(z) %3 PLC-nek nincs ilyen operandusa (docs/plcopen.md, címzett változók); adjon meg egyet hozzárendelő fájlban</translation>
+    </message>
+    <message>
+        <location line="+135"/>
+        <source>input %1 is not a variable or a literal</source>
+        <translation>a(z) %1 bemenet nem változó és nem konstans</translation>
+    </message>
+    <message>
+        <location line="+28"/>
+        <source>line %1: &quot;%2&quot; is not NAME = DEVICE</source>
+        <translation>%1. sor: „%2” nem NÉV = OPERANDUS alakú</translation>
+    </message>
+    <message>
+        <location filename="../model/exchange/plcopen_power.cpp" line="+47"/>
+        <source>its input is connected to nothing: not imported</source>
+        <translation>a bemenete semmihez sem kapcsolódik: nem kerül beolvasásra</translation>
+    </message>
+    <message>
+        <location line="+83"/>
+        <source>it is connected to element %1, which the file does not have</source>
+        <translation>a(z) %1 elemhez kapcsolódik, amely nincs a fájlban</translation>
+    </message>
+    <message>
+        <location line="+7"/>
+        <source>the power flow runs in a loop: not imported</source>
+        <translation>az áramút körbe fut: nem kerül beolvasásra</translation>
+    </message>
+    <message>
+        <location line="+25"/>
+        <source>a contact both negated and on an edge is not imported</source>
+        <translation>a nyitó és egyben élvezérelt érintkező nem kerül beolvasásra</translation>
+    </message>
+    <message>
+        <location line="+8"/>
+        <source>%1 has no such contact</source>
+        <translation>a(z) %1 PLC-nek nincs ilyen érintkezője</translation>
+    </message>
+    <message>
+        <location line="+15"/>
+        <source>no connector is named %1</source>
+        <translation>nincs %1 nevű csatlakozó</translation>
+    </message>
+    <message>
+        <location line="+6"/>
+        <source>a %1 carries no power flow %2 can take</source>
+        <translation>a(z) %1 nem visz olyan áramutat, amelyet a(z) %2 fogadni tud</translation>
+    </message>
+    <message>
+        <location line="+33"/>
+        <source>a comparison needs IN1 and IN2</source>
+        <translation>az összehasonlításhoz IN1 és IN2 kell</translation>
+    </message>
+    <message>
+        <location line="+16"/>
+        <source>%1 has no compare contact %2</source>
+        <translation>a(z) %1 PLC-nek nincs %2 összehasonlító érintkezője</translation>
+    </message>
+    <message>
+        <location line="+28"/>
+        <source>%1 has no element for %2 in the power flow</source>
+        <translation>a(z) %1 PLC-nek nincs az áramútban %2 elemnek megfelelő eleme</translation>
+    </message>
+    <message>
+        <location line="+19"/>
+        <source>output %1 of %2 as power flow is not imported</source>
+        <translation>a(z) %2 %1 kimenete áramútként nem kerül beolvasásra</translation>
+    </message>
+    <message>
+        <location line="+23"/>
+        <source>one instruction is expected</source>
+        <translation>egy utasítás várható</translation>
+    </message>
+    <message>
+        <location line="+37"/>
+        <source>a negated coil that also sets, resets or pulses is not imported</source>
+        <translation>a negált tekercs, amely egyben beír, töröl vagy impulzust ad, nem kerül beolvasásra</translation>
+    </message>
+    <message>
+        <location line="+6"/>
+        <source>%1 has no such coil</source>
+        <translation>a(z) %1 PLC-nek nincs ilyen tekercse</translation>
+    </message>
+    <message>
+        <location line="+23"/>
+        <source>PT must be a time literal (T#1s) to be a set value: not imported</source>
+        <translation>a PT-nek időkonstansnak (T#1s) kell lennie, hogy beállított érték legyen: nem kerül beolvasásra</translation>
+    </message>
+    <message>
+        <location line="+10"/>
+        <source>%1 has no pulse timer (TP)</source>
+        <translation>a(z) %1 PLC-nek nincs impulzusidőzítője (TP)</translation>
+    </message>
+    <message>
+        <location line="+19"/>
+        <source>%1 has no %2 timer that times %3 ms on %4</source>
+        <translation>a(z) %1 PLC-nek nincs olyan %2 időzítője, amely %3 ms-ot mér a(z) %4 operandussal</translation>
+    </message>
+    <message>
+        <location line="+88"/>
+        <source>MOVE&apos;s OUT goes to no variable: not imported</source>
+        <translation>a MOVE OUT kimenete nem megy változóba: nem kerül beolvasásra</translation>
+    </message>
+    <message>
+        <location line="+16"/>
+        <source>%1 has no move instruction</source>
+        <translation>a(z) %1 PLC-nek nincs mozgató utasítása</translation>
+    </message>
+    <message>
+        <location filename="../model/exchange/plcopen_rungs.cpp" line="+226"/>
+        <source>the ladder does not use it and it names no device: not imported</source>
+        <translation>a létradiagram nem használja, és nem jelöl operandust: nem kerül beolvasásra</translation>
+    </message>
+    <message>
+        <location line="+115"/>
+        <source>IEC jumps, labels and returns are not imported: %1&apos;s own jumps work otherwise; write them in Rung Studio</source>
+        <translation>az IEC ugrások, címkék és visszatérések nem kerülnek beolvasásra: a(z) %1 saját ugrásai másként működnek; írja meg őket a Rung Studióban</translation>
+    </message>
+    <message>
+        <location line="+5"/>
+        <source>this block is not imported: contacts, coils, TON, TOF, MOVE, the comparisons, NOT, R_TRIG and F_TRIG are (docs/plcopen.md)</source>
+        <translation>ez a blokk nem kerül beolvasásra: az érintkezők, tekercsek, TON, TOF, MOVE, az összehasonlítások, NOT, R_TRIG és F_TRIG igen (docs/plcopen.md)</translation>
+    </message>
+    <message>
+        <location line="+4"/>
+        <source>its power comes from %1 (line %2), which is not imported</source>
+        <translation>az áramútja innen jön: %1 (%2. sor), amely nem kerül beolvasásra</translation>
+    </message>
+    <message>
+        <location line="+5"/>
+        <source>its power goes to %1 (line %2), which is not imported</source>
+        <translation>az áramútja ide megy: %1 (%2. sor), amely nem kerül beolvasásra</translation>
+    </message>
+    <message>
+        <location line="+4"/>
+        <source>no output uses it: not imported</source>
+        <translation>egyetlen kimenet sem használja: nem kerül beolvasásra</translation>
+    </message>
+    <message>
+        <location filename="../model/exchange/plcopen_write.cpp" line="+99"/>
+        <source>%1 is written as a block of %2&apos;s own: other tools read the file but do not know this block</source>
+        <translation>a(z) %1 a(z) %2 saját blokkjaként íródik ki: más eszközök beolvassák a fájlt, de ezt a blokkot nem ismerik</translation>
+    </message>
+    <message>
+        <location filename="../model/exchange/plcopen_xml.cpp" line="+28"/>
+        <source>line %1: the XML nests deeper than %2 levels</source>
+        <translation>%1. sor: az XML %2 szintnél mélyebben ágyazott</translation>
+    </message>
+    <message>
+        <location line="+26"/>
+        <source>line %1, column %2: the file is not well-formed XML (%3)</source>
+        <translation>%1. sor, %2. oszlop: a fájl nem szabályos XML (%3)</translation>
+    </message>
+    <message>
+        <location line="+7"/>
+        <source>the file holds no XML element</source>
+        <translation>a fájlban nincs XML elem</translation>
     </message>
 </context>
 <context>
@@ -7860,12 +8112,12 @@ Kiértékelés: %4 µs (%5..%6)</translation>
         <translation>%1 nem egész számú ezredmásodperc</translation>
     </message>
     <message>
-        <location line="+42"/>
+        <location line="+43"/>
         <source>%1 is no time</source>
         <translation>%1 nem időtartam</translation>
     </message>
     <message>
-        <location line="+6"/>
+        <location line="+5"/>
         <source>a scenario runs one program; the first is on line %1</source>
         <translation>egy forgatókönyv egy programot futtat; az első a(z) %1. sorban van</translation>
     </message>
@@ -7895,7 +8147,7 @@ Kiértékelés: %4 µs (%5..%6)</translation>
         <translation>nincs program: a forgatókönyv „program FÁJL” sorral kezdődik</translation>
     </message>
     <message>
-        <location filename="../simulator/scenario_run.cpp" line="+118"/>
+        <location filename="../simulator/scenario_run.cpp" line="+116"/>
         <source>&quot;%1&quot; is not understood here</source>
         <translation>„%1” itt nem értelmezhető</translation>
     </message>
@@ -7915,12 +8167,12 @@ Kiértékelés: %4 µs (%5..%6)</translation>
         <translation>%1 után =ÉRTÉK kell</translation>
     </message>
     <message>
-        <location line="+5"/>
+        <location line="+6"/>
         <source>%1 is no value (a number, ON or OFF, #hex digits)</source>
         <translation>%1 nem érték (szám, ON vagy OFF, #hexa számjegyek)</translation>
     </message>
     <message>
-        <location line="+7"/>
+        <location line="+6"/>
         <source>DEVICE=VALUE is expected</source>
         <translation>OPERANDUS=ÉRTÉK várható</translation>
     </message>
@@ -7930,7 +8182,7 @@ Kiértékelés: %4 µs (%5..%6)</translation>
         <translation>%1: csak bitek kényszeríthetők és oldhatók fel</translation>
     </message>
     <message>
-        <location line="+87"/>
+        <location line="+85"/>
         <source>a device or a value is missing at the end</source>
         <translation>a végéről hiányzik egy operandus vagy érték</translation>
     </message>
@@ -7940,12 +8192,12 @@ Kiértékelés: %4 µs (%5..%6)</translation>
         <translation>operandus vagy érték várható itt: „%1”</translation>
     </message>
     <message>
-        <location line="+44"/>
+        <location line="+45"/>
         <source>%1 is no device of %2: %3</source>
         <translation>%1 nem operandusa a(z) %2 PLC-nek: %3</translation>
     </message>
     <message>
-        <location line="+10"/>
+        <location line="+9"/>
         <source>%1: cv: and sv: name a timer&apos;s or a counter&apos;s current and set value</source>
         <translation>%1: a cv: és az sv: egy időzítő vagy számláló aktuális és beállított értékét jelöli</translation>
     </message>
@@ -7955,7 +8207,7 @@ Kiértékelés: %4 µs (%5..%6)</translation>
         <translation>hiányzik egy „)”</translation>
     </message>
     <message>
-        <location line="+26"/>
+        <location line="+27"/>
         <source>%1 is a word: compare it (%1=5, %1&gt;100)</source>
         <translation>%1 egy szó: hasonlítsa össze (%1=5, %1&gt;100)</translation>
     </message>
@@ -7981,7 +8233,7 @@ Kiértékelés: %4 µs (%5..%6)</translation>
         <translation>%1-kor: elvárt %2, tapasztalt %3</translation>
     </message>
     <message>
-        <location line="+24"/>
+        <location line="+25"/>
         <source>within %1 of %2 (until %3): expected %4, seen %5</source>
         <extracomment>%1 the time allowed (&quot;2s&quot;), %2 the time it counted from, %3 until when, %4 what was expected, %5 the values seen at the end.</extracomment>
         <translation>%2 után %1-on belül (%3-ig): elvárt %4, tapasztalt %5</translation>
@@ -7993,7 +8245,7 @@ Kiértékelés: %4 µs (%5..%6)</translation>
         <translation>%1-kor: mindig elvárt %2, tapasztalt %3 (%5 ciklusból %4-ban nem teljesült)</translation>
     </message>
     <message>
-        <location line="+11"/>
+        <location line="+13"/>
         <source>runtime error at step %1: %2</source>
         <translation>futásidejű hiba a(z) %1. lépésnél: %2</translation>
     </message>

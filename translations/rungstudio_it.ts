@@ -120,21 +120,16 @@
 <context>
     <name>rung::app::Cli</name>
     <message>
-        <location filename="../app/cli/cli.cpp" line="+58"/>
-        <location line="+45"/>
+        <location filename="../app/cli/cli.cpp" line="+57"/>
+        <location line="+48"/>
         <source>unexpected argument %1</source>
         <translation>argomento non previsto: %1</translation>
     </message>
     <message>
-        <location line="+6"/>
-        <source>--to must be il, ladder or project</source>
-        <translation>--to deve essere il, ladder o project</translation>
-    </message>
-    <message>
-        <location line="-77"/>
+        <location line="-72"/>
         <source>usage:
   rungstudio-cli check FILE [--target %1] [--model M]
-  rungstudio-cli convert FILE [--target T] [--from il|ladder|project] --to il|ladder|project [-o OUT] [--force]
+  rungstudio-cli convert FILE [--target T] [--from il|ladder|project|plcopen] --to il|ladder|project|plcopen [-o OUT] [--force] [--map FILE]
   rungstudio-cli simulate FILE [--target T] --scans N [--period MS] [--set DEV=VALUE@SCAN]... --trace DEV[,DEV...]
   rungstudio-cli serve FILE [--target T] --protocol vigor|modbus|modbus-tcp|hostlink (--pty | --port NAME | --tcp HOST:PORT) [--station N] [--baud B] [--period MS]
 FILE is a listing (.il), a ladder text (.ladder) or a project (.rung).
@@ -142,7 +137,7 @@ FILE is a listing (.il), a ladder text (.ladder) or a project (.rung).
 Exit status: 0 no error, 1 the program has errors, 2 usage or I/O error.</source>
         <translation>uso:
   rungstudio-cli check FILE [--target %1] [--model M]
-  rungstudio-cli convert FILE [--target T] [--from il|ladder|project] --to il|ladder|project [-o OUT] [--force]
+  rungstudio-cli convert FILE [--target T] [--from il|ladder|project|plcopen] --to il|ladder|project|plcopen [-o OUT] [--force] [--map FILE]
   rungstudio-cli simulate FILE [--target T] --scans N [--period MS] [--set DEV=VALUE@SCAN]... --trace DEV[,DEV...]
   rungstudio-cli serve FILE [--target T] --protocol vigor|modbus|modbus-tcp|hostlink (--pty | --port NAME | --tcp HOST:PORT) [--station N] [--baud B] [--period MS]
 FILE è una lista istruzioni (.il), un testo ladder (.ladder) o un progetto (.rung).
@@ -150,7 +145,17 @@ FILE è una lista istruzioni (.il), un testo ladder (.ladder) o un progetto (.ru
 Codice di uscita: 0 nessun errore, 1 il programma contiene errori, 2 errore di utilizzo o di I/O.</translation>
     </message>
     <message>
-        <location line="+93"/>
+        <location line="+78"/>
+        <source>--to must be il, ladder, project or plcopen</source>
+        <translation>--to deve essere il, ladder, project o plcopen</translation>
+    </message>
+    <message>
+        <location line="+12"/>
+        <source>--map is for --from plcopen</source>
+        <translation>--map si usa con --from plcopen</translation>
+    </message>
+    <message>
+        <location line="+14"/>
         <source>nothing written: the list as typed would be lost</source>
         <translation>non è stato scritto nulla: la lista digitata andrebbe persa</translation>
     </message>
@@ -170,7 +175,7 @@ Codice di uscita: 0 nessun errore, 1 il programma contiene errori, 2 errore di u
         <translation>nessun file scritto: l&apos;ingresso contiene errori (--force lo scrive comunque)</translation>
     </message>
     <message>
-        <location line="+25"/>
+        <location line="+27"/>
         <source>cannot write %1: %2</source>
         <translation>impossibile scrivere %1: %2</translation>
     </message>
@@ -228,11 +233,14 @@ Codice di uscita: 0 nessun errore, 1 il programma contiene errori, 2 errore di u
     <message>
         <location line="+122"/>
         <location line="+27"/>
+        <location filename="../app/cli/cli_plcopen.cpp" line="+35"/>
         <source>%1 has no model %2</source>
         <translation>%1 non ha il modello %2</translation>
     </message>
     <message>
         <location line="+18"/>
+        <location filename="../app/cli/cli_plcopen.cpp" line="+34"/>
+        <location line="+3"/>
         <source>error</source>
         <translation>errore</translation>
     </message>
@@ -243,6 +251,7 @@ Codice di uscita: 0 nessun errore, 1 il programma contiene errori, 2 errore di u
     </message>
     <message>
         <location line="+1"/>
+        <location filename="../app/cli/cli_plcopen.cpp" line="+50"/>
         <source>note</source>
         <translation>nota</translation>
     </message>
@@ -250,6 +259,51 @@ Codice di uscita: 0 nessun errore, 1 il programma contiene errori, 2 errore di u
         <location filename="../app/cli/cli_language.cpp" line="+31"/>
         <source>--lang must be one of %1</source>
         <translation>--lang deve essere uno tra %1</translation>
+    </message>
+    <message>
+        <location filename="../app/cli/cli_plcopen.cpp" line="-99"/>
+        <source>--from plcopen needs --target: which PLC the program is for</source>
+        <translation>--from plcopen richiede --target: per quale PLC è il programma</translation>
+    </message>
+    <message>
+        <location line="+5"/>
+        <source>unknown target %1</source>
+        <translation>famiglia PLC sconosciuta: %1</translation>
+    </message>
+    <message>
+        <location line="+34"/>
+        <source>%1: note: the file was written by Rung Studio for %2; it is read for %3</source>
+        <translation>%1: nota: il file è stato scritto da Rung Studio per %2; viene letto per %3</translation>
+    </message>
+    <message>
+        <location line="+12"/>
+        <source>variable %1 (%2) names no device of %3, and none is free for it</source>
+        <translation>la variabile %1 (%2) non indica un operando di %3, e non ne resta uno libero</translation>
+    </message>
+    <message>
+        <location line="+2"/>
+        <source>variable %1 (%2) names no device of %3; proposed: %4</source>
+        <translation>la variabile %1 (%2) non indica un operando di %3; proposto: %4</translation>
+    </message>
+    <message>
+        <location line="+4"/>
+        <source>A mapping file with the devices proposed (check them, then give it with --map FILE):</source>
+        <translation>Un file di corrispondenze con gli operandi proposti (verificarli, poi indicarlo con --map FILE):</translation>
+    </message>
+    <message>
+        <location line="+8"/>
+        <source>nothing written: the file holds no ladder to import</source>
+        <translation>nulla scritto: il file non contiene uno schema ladder da importare</translation>
+    </message>
+    <message>
+        <location line="+6"/>
+        <source>nothing written: the file holds what %1 cannot take, listed above (--force writes the rest)</source>
+        <translation>nulla scritto: il file contiene ciò che %1 non può accogliere, elencato sopra (--force scrive il resto)</translation>
+    </message>
+    <message>
+        <location line="+6"/>
+        <source>written without what is listed above (--force)</source>
+        <translation>scritto senza quanto elencato sopra (--force)</translation>
     </message>
 </context>
 <context>
@@ -624,7 +678,7 @@ Andata e ritorno %6 ms (media %7, max %8); aggiornamento %9 ms, %10 frame</trans
 <context>
     <name>rung::app::Diff</name>
     <message>
-        <location filename="../app/cli/cli_diff.cpp" line="+61"/>
+        <location filename="../app/cli/cli_diff.cpp" line="+62"/>
         <source>%1 does not read whole, so it is not compared</source>
         <translation>%1 non si legge per intero, quindi non viene confrontato</translation>
     </message>
@@ -2721,12 +2775,12 @@ Valutazione: %4 µs (%5..%6)</translation>
         <translation>%1: file o cartella inesistente</translation>
     </message>
     <message>
-        <location line="+18"/>
+        <location line="+21"/>
         <source>error</source>
         <translation>errore</translation>
     </message>
     <message>
-        <location line="+6"/>
+        <location line="+5"/>
         <source>note</source>
         <translation>nota</translation>
     </message>
@@ -5365,7 +5419,7 @@ Valutazione: %4 µs (%5..%6)</translation>
         <translation>- lista di osservazione %1 rimossa: %2</translation>
     </message>
     <message>
-        <location line="+3"/>
+        <location line="+2"/>
         <source>+ watch list %1: %2 added</source>
         <translation>+ lista di osservazione %1: %2 aggiunto</translation>
     </message>
@@ -5800,6 +5854,204 @@ Valutazione: %4 µs (%5..%6)</translation>
         <location line="+69"/>
         <source>&apos;%1&apos; is not a contact</source>
         <translation>&apos;%1&apos; non è un contatto</translation>
+    </message>
+</context>
+<context>
+    <name>rung::model::Plcopen</name>
+    <message>
+        <location filename="../model/exchange/plcopen_import.cpp" line="+120"/>
+        <source>not a PLCopen TC6 XML 2.01 project (the root is &lt;%1&gt; in &quot;%2&quot;, &lt;project&gt; in &quot;%3&quot; is expected)</source>
+        <translation>non è un progetto PLCopen TC6 XML 2.01 (la radice è &lt;%1&gt; in &quot;%2&quot;, è atteso &lt;project&gt; in &quot;%3&quot;)</translation>
+    </message>
+    <message>
+        <location line="+18"/>
+        <source>a second program is not imported: a project is one ladder (the first program, %1, is)</source>
+        <translation>un secondo programma non viene importato: un progetto è un solo schema ladder (il primo programma, %1, sì)</translation>
+    </message>
+    <message>
+        <location line="+3"/>
+        <source>a %1 is not imported: %2 runs one ladder, with no user functions or function blocks</source>
+        <translation>un %1 non viene importato: %2 esegue un solo schema ladder, senza funzioni né blocchi funzione dell&apos;utente</translation>
+    </message>
+    <message>
+        <location line="+5"/>
+        <source>the file has no program</source>
+        <translation>il file non contiene un programma</translation>
+    </message>
+    <message>
+        <location line="+15"/>
+        <source>a body in %1 is not imported: only ladder (LD) is</source>
+        <translation>un corpo in %1 non viene importato: solo il ladder (LD)</translation>
+    </message>
+    <message>
+        <location line="+6"/>
+        <source>the program has no ladder (LD) body</source>
+        <translation>il programma non ha un corpo ladder (LD)</translation>
+    </message>
+    <message>
+        <location line="+131"/>
+        <source>the mapping file gives %1: %2</source>
+        <translation>il file di corrispondenze indica %1: %2</translation>
+    </message>
+    <message>
+        <location line="+12"/>
+        <source>%1 at %2: %3 has no such device (docs/plcopen.md, located variables); give one in a mapping file</source>
+        <translation>%1 in %2: %3 non ha un tale operando (docs/plcopen.md, variabili allocate); indicarne uno in un file di corrispondenze</translation>
+    </message>
+    <message>
+        <location line="+135"/>
+        <source>input %1 is not a variable or a literal</source>
+        <translation>l&apos;ingresso %1 non è una variabile né un letterale</translation>
+    </message>
+    <message>
+        <location line="+28"/>
+        <source>line %1: &quot;%2&quot; is not NAME = DEVICE</source>
+        <translation>riga %1: &quot;%2&quot; non è NOME = OPERANDO</translation>
+    </message>
+    <message>
+        <location filename="../model/exchange/plcopen_power.cpp" line="+47"/>
+        <source>its input is connected to nothing: not imported</source>
+        <translation>il suo ingresso non è collegato a nulla: non importato</translation>
+    </message>
+    <message>
+        <location line="+83"/>
+        <source>it is connected to element %1, which the file does not have</source>
+        <translation>è collegato all&apos;elemento %1, che il file non contiene</translation>
+    </message>
+    <message>
+        <location line="+7"/>
+        <source>the power flow runs in a loop: not imported</source>
+        <translation>il flusso di potenza gira in un anello: non importato</translation>
+    </message>
+    <message>
+        <location line="+25"/>
+        <source>a contact both negated and on an edge is not imported</source>
+        <translation>un contatto insieme negato e sul fronte non viene importato</translation>
+    </message>
+    <message>
+        <location line="+8"/>
+        <source>%1 has no such contact</source>
+        <translation>%1 non ha un tale contatto</translation>
+    </message>
+    <message>
+        <location line="+15"/>
+        <source>no connector is named %1</source>
+        <translation>nessun connettore si chiama %1</translation>
+    </message>
+    <message>
+        <location line="+6"/>
+        <source>a %1 carries no power flow %2 can take</source>
+        <translation>un %1 non porta un flusso di potenza che %2 possa accogliere</translation>
+    </message>
+    <message>
+        <location line="+33"/>
+        <source>a comparison needs IN1 and IN2</source>
+        <translation>un confronto richiede IN1 e IN2</translation>
+    </message>
+    <message>
+        <location line="+16"/>
+        <source>%1 has no compare contact %2</source>
+        <translation>%1 non ha un contatto di confronto %2</translation>
+    </message>
+    <message>
+        <location line="+28"/>
+        <source>%1 has no element for %2 in the power flow</source>
+        <translation>%1 non ha un elemento per %2 nel flusso di potenza</translation>
+    </message>
+    <message>
+        <location line="+19"/>
+        <source>output %1 of %2 as power flow is not imported</source>
+        <translation>l&apos;uscita %1 di %2 come flusso di potenza non viene importata</translation>
+    </message>
+    <message>
+        <location line="+23"/>
+        <source>one instruction is expected</source>
+        <translation>è attesa un&apos;istruzione</translation>
+    </message>
+    <message>
+        <location line="+37"/>
+        <source>a negated coil that also sets, resets or pulses is not imported</source>
+        <translation>una bobina negata che anche imposta, resetta o dà un impulso non viene importata</translation>
+    </message>
+    <message>
+        <location line="+6"/>
+        <source>%1 has no such coil</source>
+        <translation>%1 non ha una tale bobina</translation>
+    </message>
+    <message>
+        <location line="+23"/>
+        <source>PT must be a time literal (T#1s) to be a set value: not imported</source>
+        <translation>PT deve essere un letterale di tempo (T#1s) per essere un valore di preset: non importato</translation>
+    </message>
+    <message>
+        <location line="+10"/>
+        <source>%1 has no pulse timer (TP)</source>
+        <translation>%1 non ha un temporizzatore a impulso (TP)</translation>
+    </message>
+    <message>
+        <location line="+19"/>
+        <source>%1 has no %2 timer that times %3 ms on %4</source>
+        <translation>%1 non ha un temporizzatore %2 che misuri %3 ms su %4</translation>
+    </message>
+    <message>
+        <location line="+88"/>
+        <source>MOVE&apos;s OUT goes to no variable: not imported</source>
+        <translation>l&apos;OUT di MOVE non va a una variabile: non importato</translation>
+    </message>
+    <message>
+        <location line="+16"/>
+        <source>%1 has no move instruction</source>
+        <translation>%1 non ha un&apos;istruzione di trasferimento</translation>
+    </message>
+    <message>
+        <location filename="../model/exchange/plcopen_rungs.cpp" line="+226"/>
+        <source>the ladder does not use it and it names no device: not imported</source>
+        <translation>lo schema ladder non la usa e non indica un operando: non importata</translation>
+    </message>
+    <message>
+        <location line="+115"/>
+        <source>IEC jumps, labels and returns are not imported: %1&apos;s own jumps work otherwise; write them in Rung Studio</source>
+        <translation>i salti, le etichette e i ritorni IEC non vengono importati: i salti propri di %1 funzionano diversamente; scriverli in Rung Studio</translation>
+    </message>
+    <message>
+        <location line="+5"/>
+        <source>this block is not imported: contacts, coils, TON, TOF, MOVE, the comparisons, NOT, R_TRIG and F_TRIG are (docs/plcopen.md)</source>
+        <translation>questo blocco non viene importato: lo sono contatti, bobine, TON, TOF, MOVE, i confronti, NOT, R_TRIG e F_TRIG (docs/plcopen.md)</translation>
+    </message>
+    <message>
+        <location line="+4"/>
+        <source>its power comes from %1 (line %2), which is not imported</source>
+        <translation>il suo flusso viene da %1 (riga %2), che non viene importato</translation>
+    </message>
+    <message>
+        <location line="+5"/>
+        <source>its power goes to %1 (line %2), which is not imported</source>
+        <translation>il suo flusso va a %1 (riga %2), che non viene importato</translation>
+    </message>
+    <message>
+        <location line="+4"/>
+        <source>no output uses it: not imported</source>
+        <translation>nessuna uscita lo usa: non importato</translation>
+    </message>
+    <message>
+        <location filename="../model/exchange/plcopen_write.cpp" line="+99"/>
+        <source>%1 is written as a block of %2&apos;s own: other tools read the file but do not know this block</source>
+        <translation>%1 viene scritto come blocco proprio di %2: altri strumenti leggono il file ma non conoscono questo blocco</translation>
+    </message>
+    <message>
+        <location filename="../model/exchange/plcopen_xml.cpp" line="+28"/>
+        <source>line %1: the XML nests deeper than %2 levels</source>
+        <translation>riga %1: l&apos;XML è annidato oltre %2 livelli</translation>
+    </message>
+    <message>
+        <location line="+26"/>
+        <source>line %1, column %2: the file is not well-formed XML (%3)</source>
+        <translation>riga %1, colonna %2: il file non è XML ben formato (%3)</translation>
+    </message>
+    <message>
+        <location line="+7"/>
+        <source>the file holds no XML element</source>
+        <translation>il file non contiene elementi XML</translation>
     </message>
 </context>
 <context>
@@ -7875,12 +8127,12 @@ Valutazione: %4 µs (%5..%6)</translation>
         <translation>%1 non è un numero intero di millisecondi</translation>
     </message>
     <message>
-        <location line="+42"/>
+        <location line="+43"/>
         <source>%1 is no time</source>
         <translation>%1 non è un tempo</translation>
     </message>
     <message>
-        <location line="+6"/>
+        <location line="+5"/>
         <source>a scenario runs one program; the first is on line %1</source>
         <translation>uno scenario esegue un solo programma; il primo è alla riga %1</translation>
     </message>
@@ -7910,7 +8162,7 @@ Valutazione: %4 µs (%5..%6)</translation>
         <translation>nessun programma: uno scenario inizia con &quot;program FILE&quot;</translation>
     </message>
     <message>
-        <location filename="../simulator/scenario_run.cpp" line="+118"/>
+        <location filename="../simulator/scenario_run.cpp" line="+116"/>
         <source>&quot;%1&quot; is not understood here</source>
         <translation>&quot;%1&quot; non è comprensibile qui</translation>
     </message>
@@ -7930,12 +8182,12 @@ Valutazione: %4 µs (%5..%6)</translation>
         <translation>%1 richiede =VALORE</translation>
     </message>
     <message>
-        <location line="+5"/>
+        <location line="+6"/>
         <source>%1 is no value (a number, ON or OFF, #hex digits)</source>
         <translation>%1 non è un valore (un numero, ON o OFF, #cifre esadecimali)</translation>
     </message>
     <message>
-        <location line="+7"/>
+        <location line="+6"/>
         <source>DEVICE=VALUE is expected</source>
         <translation>è atteso OPERANDO=VALORE</translation>
     </message>
@@ -7945,7 +8197,7 @@ Valutazione: %4 µs (%5..%6)</translation>
         <translation>%1: si forzano e rilasciano solo i bit</translation>
     </message>
     <message>
-        <location line="+87"/>
+        <location line="+85"/>
         <source>a device or a value is missing at the end</source>
         <translation>manca un operando o un valore alla fine</translation>
     </message>
@@ -7955,12 +8207,12 @@ Valutazione: %4 µs (%5..%6)</translation>
         <translation>è atteso un operando o un valore in &quot;%1&quot;</translation>
     </message>
     <message>
-        <location line="+44"/>
+        <location line="+45"/>
         <source>%1 is no device of %2: %3</source>
         <translation>%1 non è un operando di %2: %3</translation>
     </message>
     <message>
-        <location line="+10"/>
+        <location line="+9"/>
         <source>%1: cv: and sv: name a timer&apos;s or a counter&apos;s current and set value</source>
         <translation>%1: cv: e sv: indicano il valore corrente e di preset di un temporizzatore o contatore</translation>
     </message>
@@ -7970,7 +8222,7 @@ Valutazione: %4 µs (%5..%6)</translation>
         <translation>manca una &quot;)&quot;</translation>
     </message>
     <message>
-        <location line="+26"/>
+        <location line="+27"/>
         <source>%1 is a word: compare it (%1=5, %1&gt;100)</source>
         <translation>%1 è una word: confrontala (%1=5, %1&gt;100)</translation>
     </message>
@@ -7996,7 +8248,7 @@ Valutazione: %4 µs (%5..%6)</translation>
         <translation>a %1: atteso %2, visto %3</translation>
     </message>
     <message>
-        <location line="+24"/>
+        <location line="+25"/>
         <source>within %1 of %2 (until %3): expected %4, seen %5</source>
         <extracomment>%1 the time allowed (&quot;2s&quot;), %2 the time it counted from, %3 until when, %4 what was expected, %5 the values seen at the end.</extracomment>
         <translation>entro %1 da %2 (fino a %3): atteso %4, visto %5</translation>
@@ -8008,7 +8260,7 @@ Valutazione: %4 µs (%5..%6)</translation>
         <translation>a %1: atteso sempre %2, visto %3 (non soddisfatto in %4 di %5 scansioni)</translation>
     </message>
     <message>
-        <location line="+11"/>
+        <location line="+13"/>
         <source>runtime error at step %1: %2</source>
         <translation>errore di esecuzione al passo %1: %2</translation>
     </message>

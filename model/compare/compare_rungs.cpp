@@ -138,6 +138,21 @@ std::vector<ElementChange> elementChanges(const Target &t, const ComparedRung &x
             else
                 added.push_back(j);
         }
+        // The same instruction on both sides stands elsewhere in the rung: the branches
+        // changed around it, the element did not.
+        for (auto r = removed.begin(); r != removed.end();) {
+            const Instruction &ri = x.instructions[static_cast<std::size_t>(*r)];
+            const auto same = std::find_if(added.begin(), added.end(), [&](int j) {
+                return y.instructions[static_cast<std::size_t>(j)].sameAs(ri);
+            });
+            if (same == added.end()) {
+                ++r;
+                continue;
+            }
+            branches = true;
+            added.erase(same);
+            r = removed.erase(r);
+        }
         std::vector<int> partner(removed.size(), -1);
         std::vector<bool> taken(added.size(), false);
         // First the same element changed, then any two of one category in their order.
