@@ -104,8 +104,10 @@ using ScenarioProgramLoader = std::function<ScenarioProgram(
 // scenario runs"). The default period is the engine's (10 ms).
 ScenarioResult runScenario(const QString &text, const QString &file,
                            const ScenarioProgramLoader &loader);
-// The same from a parsed scenario and a program at hand.
-ScenarioResult runScenario(const Scenario &scenario, const std::shared_ptr<const Program> &program);
+// The same from a parsed scenario and a program at hand; `afterScan`, when given, sees the
+// engine after every scan (the timing chart of a run records from it).
+ScenarioResult runScenario(const Scenario &scenario, const std::shared_ptr<const Program> &program,
+                           const std::function<void(const Engine &)> &afterScan = {});
 
 // A duration as the reports write it: "35s", "12.34s", "150ms", "2min 5s".
 QString formatScenarioTime(qint64 ms);

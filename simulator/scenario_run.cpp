@@ -421,7 +421,8 @@ std::vector<model::Address> addressesOf(const Condition &c) {
 
 } // namespace
 
-ScenarioResult runScenario(const Scenario &s, const std::shared_ptr<const Program> &program) {
+ScenarioResult runScenario(const Scenario &s, const std::shared_ptr<const Program> &program,
+                           const std::function<void(const Engine &)> &afterScan) {
     ScenarioResult result;
     result.file = s.file;
     const model::Target &target = program->layout->target();
@@ -500,6 +501,8 @@ ScenarioResult runScenario(const Scenario &s, const std::shared_ptr<const Progra
     auto scan = [&] {
         engine.scan();
         ++done;
+        if (afterScan)
+            afterScan(engine);
         for (std::size_t k = 0; k < always.size(); ++k) {
             const PreparedStatement &st = steps[always[k]];
             if (st.condition.holds(engine))

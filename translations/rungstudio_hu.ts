@@ -307,6 +307,154 @@ Kilépési kód: 0 nincs hiba, 1 a programban hiba van, 2 használati vagy I/O h
     </message>
 </context>
 <context>
+    <name>rung::app::CompareWindow</name>
+    <message>
+        <location filename="../app/gui/compare_window.cpp" line="+46"/>
+        <source>%1 is a program for %2; the open program is for %3: only programs of one PLC are compared</source>
+        <translation>%1 program a(z) %2 PLC-hez, a megnyitott program a(z) %3 PLC-hez készült: csak azonos PLC programjai hasonlíthatók össze</translation>
+    </message>
+    <message>
+        <location line="+21"/>
+        <source>%1, line %2, column %3: %4; a file that does not read whole is not compared</source>
+        <translation>%1, %2. sor, %3. oszlop: %4; a nem teljesen beolvasható fájl nem hasonlítható össze</translation>
+    </message>
+    <message>
+        <location line="+32"/>
+        <source>Compare With</source>
+        <translation>Összehasonlítás</translation>
+    </message>
+    <message>
+        <location line="+1"/>
+        <source>Rung Studio projects (*.rung);;Instruction lists (*.il *.txt);;Ladder texts (*.ladder)</source>
+        <translation>Rung Studio projektek (*.rung);;Utasításlisták (*.il *.txt);;Létra-szövegek (*.ladder)</translation>
+    </message>
+    <message>
+        <location line="+7"/>
+        <source>Cannot compare</source>
+        <translation>Az összehasonlítás nem sikerült</translation>
+    </message>
+    <message>
+        <location line="+14"/>
+        <source>Compare: %1 and %2</source>
+        <translation>Összehasonlítás: %1 és %2</translation>
+    </message>
+    <message>
+        <location line="+3"/>
+        <source>A (left): %1        B (right): %2</source>
+        <translation>A (bal): %1        B (jobb): %2</translation>
+    </message>
+    <message>
+        <location line="+9"/>
+        <source>Ladder</source>
+        <translation>Létradiagram</translation>
+    </message>
+    <message>
+        <location line="+3"/>
+        <source>Change</source>
+        <translation>Változás</translation>
+    </message>
+    <message>
+        <location line="+0"/>
+        <source>A: %1</source>
+        <translation>A: %1</translation>
+    </message>
+    <message>
+        <location line="+0"/>
+        <source>B: %1</source>
+        <translation>B: %1</translation>
+    </message>
+    <message>
+        <location line="+11"/>
+        <source>Instruction List</source>
+        <translation>Utasításlista</translation>
+    </message>
+    <message>
+        <location line="+5"/>
+        <source>Report</source>
+        <translation>Jelentés</translation>
+    </message>
+    <message>
+        <location line="+6"/>
+        <source>&amp;Previous Change</source>
+        <translation>&amp;Előző változás</translation>
+    </message>
+    <message>
+        <location line="+1"/>
+        <source>&amp;Next Change</source>
+        <translation>&amp;Következő változás</translation>
+    </message>
+    <message>
+        <location line="+1"/>
+        <source>P&amp;rint...</source>
+        <translation>&amp;Nyomtatás...</translation>
+    </message>
+    <message>
+        <location line="+1"/>
+        <source>Previous change (Alt+Up)</source>
+        <translation>Előző változás (Alt+Fel)</translation>
+    </message>
+    <message>
+        <location line="+1"/>
+        <source>Next change (Alt+Down)</source>
+        <translation>Következő változás (Alt+Le)</translation>
+    </message>
+    <message>
+        <location line="+35"/>
+        <source>The programs are the same.</source>
+        <translation>A programok azonosak.</translation>
+    </message>
+    <message numerus="yes">
+        <location line="+1"/>
+        <source>%n rung(s) differ.</source>
+        <translation>
+            <numerusform>%n létrafok eltér.</numerusform>
+        </translation>
+    </message>
+    <message numerus="yes">
+        <location line="+7"/>
+        <source>%n difference(s) besides the rungs (symbols, set values, watch lists): see the Report.</source>
+        <translation>
+            <numerusform>%n eltérés a létrafokokon kívül (szimbólumok, beállított értékek, figyelőlisták): lásd a Jelentést.</numerusform>
+        </translation>
+    </message>
+    <message>
+        <location line="+3"/>
+        <source>Alt+Down: next change, Alt+Up: previous.</source>
+        <translation>Alt+Le: következő változás, Alt+Fel: előző.</translation>
+    </message>
+    <message>
+        <location line="+18"/>
+        <location line="+1"/>
+        <source>rung %1</source>
+        <translation>%1. létrafok</translation>
+    </message>
+    <message>
+        <location line="+17"/>
+        <source>~ changed</source>
+        <translation>~ módosítva</translation>
+    </message>
+    <message>
+        <location line="+1"/>
+        <source>+ only in B</source>
+        <translation>+ csak B-ben</translation>
+    </message>
+    <message>
+        <location line="+1"/>
+        <source>- only in A</source>
+        <translation>- csak A-ban</translation>
+    </message>
+    <message>
+        <location line="+21"/>
+        <source>No change before this one.</source>
+        <translation>Ez előtt nincs változás.</translation>
+    </message>
+    <message>
+        <location line="+1"/>
+        <source>No change after this one.</source>
+        <translation>Ez után nincs változás.</translation>
+    </message>
+</context>
+<context>
     <name>rung::app::ConnectionPanel</name>
     <message>
         <location filename="../app/gui/connection_panel_link.cpp" line="+48"/>
@@ -846,7 +994,7 @@ Válaszidő: %6 ms (átlag %7, max. %8); frissítés: %9 ms, %10 keret</translat
         <translation>Szimbólumok</translation>
     </message>
     <message>
-        <location filename="../app/gui/main_window_actions.cpp" line="+48"/>
+        <location filename="../app/gui/main_window_actions.cpp" line="+50"/>
         <source>&amp;File</source>
         <translation>&amp;Fájl</translation>
     </message>
@@ -886,7 +1034,12 @@ Válaszidő: %6 ms (átlag %7, max. %8); frissítés: %9 ms, %10 keret</translat
         <translation>Mentés m&amp;ásként...</translation>
     </message>
     <message>
-        <location line="+3"/>
+        <location line="+2"/>
+        <source>Co&amp;mpare With...</source>
+        <translation>Össze&amp;hasonlítás...</translation>
+    </message>
+    <message>
+        <location line="+5"/>
         <source>&amp;Import Instruction List...</source>
         <translation>Utasításlista &amp;importálása...</translation>
     </message>
@@ -897,6 +1050,21 @@ Válaszidő: %6 ms (átlag %7, max. %8); frissítés: %9 ms, %10 keret</translat
     </message>
     <message>
         <location line="+1"/>
+        <source>Import &amp;PLCopen XML...</source>
+        <translation>PLCopen XML imp&amp;ortálása...</translation>
+    </message>
+    <message>
+        <location line="+8"/>
+        <source>Expor&amp;t PLCopen XML...</source>
+        <translation>PLCopen XML expor&amp;tálása...</translation>
+    </message>
+    <message>
+        <location line="+7"/>
+        <source>The instruction list has errors, so the ladder is not the program as typed: fix the list first.</source>
+        <translation>Az utasításlistában hibák vannak, ezért a létradiagram nem a begépelt program: előbb javítsa a listát.</translation>
+    </message>
+    <message>
+        <location line="+3"/>
         <source>Export &amp;Ladder</source>
         <translation>Létradiagram exportálá&amp;sa</translation>
     </message>
@@ -1461,7 +1629,7 @@ Létradiagram- és utasításlista-szerkesztő a következő PLC-khez: %2.</tran
         <location line="-4"/>
         <location line="+8"/>
         <location line="+10"/>
-        <location filename="../app/gui/main_window_panels.cpp" line="+58"/>
+        <location filename="../app/gui/main_window_panels.cpp" line="+69"/>
         <location filename="../app/gui/main_window_tools.cpp" line="+3"/>
         <source>Cannot export</source>
         <translation>Az exportálás nem sikerült</translation>
@@ -1827,6 +1995,11 @@ Létradiagram- és utasításlista-szerkesztő a következő PLC-khez: %2.</tran
         <translation>Idődiagram</translation>
     </message>
     <message>
+        <location line="+1"/>
+        <source>Tests</source>
+        <translation>Tesztek</translation>
+    </message>
+    <message>
         <location filename="../app/gui/main_window_online.cpp" line="-3"/>
         <source>Save Traffic Log</source>
         <translation>Adatforgalom-napló mentése</translation>
@@ -2022,6 +2195,150 @@ A read és a write kilépési kódja: 0 kész, 1 a PLC nem válaszolt vagy eluta
         <location line="+5"/>
         <source>not written: %1</source>
         <translation>nem íródott ki: %1</translation>
+    </message>
+</context>
+<context>
+    <name>rung::app::PlcopenImportDialog</name>
+    <message>
+        <location filename="../app/gui/plcopen_exchange.cpp" line="+34"/>
+        <location line="+16"/>
+        <source>Cannot export</source>
+        <translation>Az exportálás nem sikerült</translation>
+    </message>
+    <message>
+        <location line="-11"/>
+        <location line="+17"/>
+        <source>Export PLCopen XML</source>
+        <translation>PLCopen XML exportálása</translation>
+    </message>
+    <message>
+        <location line="-16"/>
+        <source>PLCopen XML (*.xml)</source>
+        <translation>PLCopen XML (*.xml)</translation>
+    </message>
+    <message>
+        <location line="+11"/>
+        <source>%1: %2</source>
+        <translation>%1: %2</translation>
+    </message>
+    <message>
+        <location line="+6"/>
+        <source>%1 is written. Other tools will read it, but not these blocks:
+
+%2</source>
+        <translation>%1 elkészült. Más eszközök beolvassák, de ezeket a blokkokat nem:
+
+%2</translation>
+    </message>
+    <message>
+        <location line="+8"/>
+        <source>Import PLCopen XML</source>
+        <translation>PLCopen XML importálása</translation>
+    </message>
+    <message>
+        <location line="+1"/>
+        <source>PLCopen XML (*.xml);;All files (*)</source>
+        <translation>PLCopen XML (*.xml);;Minden fájl (*)</translation>
+    </message>
+    <message>
+        <location line="+7"/>
+        <source>Cannot open the file</source>
+        <translation>A fájl nem nyitható meg</translation>
+    </message>
+    <message>
+        <location line="+14"/>
+        <source>Import PLCopen XML: %1</source>
+        <translation>PLCopen XML importálása: %1</translation>
+    </message>
+    <message>
+        <location line="+11"/>
+        <source>PLC family:</source>
+        <translation>PLC-család:</translation>
+    </message>
+    <message>
+        <location line="+1"/>
+        <source>Model:</source>
+        <translation>Modell:</translation>
+    </message>
+    <message>
+        <location line="+2"/>
+        <source>Variables without a device: a free one is proposed; change it where the program needs another.</source>
+        <translation>Operandus nélküli változók: a program egy szabad operandust javasol; írjon be mást, ahol a program mást kíván.</translation>
+    </message>
+    <message>
+        <location line="+5"/>
+        <source>Variable</source>
+        <translation>Változó</translation>
+    </message>
+    <message>
+        <location line="+0"/>
+        <source>Type</source>
+        <translation>Típus</translation>
+    </message>
+    <message>
+        <location line="+0"/>
+        <source>Line</source>
+        <translation>Sor</translation>
+    </message>
+    <message>
+        <location line="+0"/>
+        <source>Device</source>
+        <translation>Operandus</translation>
+    </message>
+    <message>
+        <location line="+5"/>
+        <source>Not imported (element, line and why):</source>
+        <translation>Nem kerül beolvasásra (elem, sor és ok):</translation>
+    </message>
+    <message>
+        <location line="+5"/>
+        <source>Import the rest and leave out what is listed</source>
+        <translation>A többi beolvasása, a felsoroltak kihagyásával</translation>
+    </message>
+    <message>
+        <location line="+6"/>
+        <source>&amp;Import</source>
+        <translation>&amp;Beolvasás</translation>
+    </message>
+    <message>
+        <location line="+23"/>
+        <location line="+53"/>
+        <source>(no such device)</source>
+        <translation>(nincs ilyen operandus)</translation>
+    </message>
+    <message>
+        <location line="+6"/>
+        <source>line %1: %2: %3</source>
+        <translation>%1. sor: %2: %3</translation>
+    </message>
+    <message>
+        <location line="+4"/>
+        <source>The file holds no ladder to import.</source>
+        <translation>A fájlban nincs beolvasható létradiagram.</translation>
+    </message>
+    <message numerus="yes">
+        <location line="+2"/>
+        <source>Everything in the file is imported: %n rung(s).</source>
+        <translation>
+            <numerusform>A fájl teljes tartalma beolvasásra kerül: %n létrafok.</numerusform>
+        </translation>
+    </message>
+    <message numerus="yes">
+        <location line="+3"/>
+        <source>%n item(s) of the file are not imported; %1 variable(s) have no device yet.</source>
+        <translation>
+            <numerusform>A fájl %n eleme nem kerül beolvasásra; %1 változónak még nincs operandusa.</numerusform>
+        </translation>
+    </message>
+    <message>
+        <location line="+25"/>
+        <source>Some variables still have no device: give each one a device of %1.</source>
+        <translation>Néhány változónak még nincs operandusa: adjon mindegyiknek egy %1 operandust.</translation>
+    </message>
+    <message>
+        <location line="+6"/>
+        <source>The file holds what %1 cannot take, listed here. Tick &quot;%2&quot; to import the rest.</source>
+        <translation>A fájlban olyasmi van, amit a(z) %1 nem tud fogadni, itt felsorolva. A többi beolvasásához jelölje be: „%2”.</translation>
     </message>
 </context>
 <context>
@@ -2788,6 +3105,159 @@ Kiértékelés: %4 µs (%5..%6)</translation>
         <location line="+10"/>
         <source>cannot write %1: %2</source>
         <translation>%1 nem írható: %2</translation>
+    </message>
+</context>
+<context>
+    <name>rung::app::TestsPanel</name>
+    <message>
+        <location filename="../app/gui/tests_panel.cpp" line="+51"/>
+        <source>unknown target %1</source>
+        <translation>ismeretlen célrendszer: %1</translation>
+    </message>
+    <message>
+        <location line="+88"/>
+        <source>Run All</source>
+        <translation>Mind futtatása</translation>
+    </message>
+    <message>
+        <location line="+1"/>
+        <source>Run</source>
+        <translation>Futtatás</translation>
+    </message>
+    <message>
+        <location line="+1"/>
+        <source>Refresh</source>
+        <translation>Frissítés</translation>
+    </message>
+    <message>
+        <location line="+1"/>
+        <source>Record...</source>
+        <translation>Rögzítés...</translation>
+    </message>
+    <message>
+        <location line="+1"/>
+        <source>Runs the selected scenario</source>
+        <translation>A kijelölt forgatókönyv futtatása</translation>
+    </message>
+    <message>
+        <location line="+1"/>
+        <source>Writes a scenario of the simulation so far: the inputs as you worked them, the outputs as they were seen</source>
+        <translation>Forgatókönyvet ír az eddigi szimulációból: a bemeneteket, ahogy kezelte őket, a kimeneteket, ahogy látszottak</translation>
+    </message>
+    <message>
+        <location line="+2"/>
+        <source>Scenario / expectation</source>
+        <translation>Forgatókönyv / elvárás</translation>
+    </message>
+    <message>
+        <location line="+0"/>
+        <source>Result</source>
+        <translation>Eredmény</translation>
+    </message>
+    <message>
+        <location line="+2"/>
+        <source>Save the project: its scenario tests (.rungtest) are the files beside it that name it</source>
+        <translation>Mentse a projektet: a forgatókönyv-tesztjei (.rungtest) a mellette lévő, rá hivatkozó fájlok</translation>
+    </message>
+    <message>
+        <location line="+60"/>
+        <source>the open program has errors: %1</source>
+        <translation>a megnyitott programban hibák vannak: %1</translation>
+    </message>
+    <message>
+        <location line="+12"/>
+        <source>No scenario test names this project</source>
+        <translation>Egy forgatókönyv-teszt sem hivatkozik erre a projektre</translation>
+    </message>
+    <message>
+        <location line="+69"/>
+        <source>not run</source>
+        <translation>nem futott</translation>
+    </message>
+    <message numerus="yes">
+        <location line="+8"/>
+        <source>passed: %n expectation(s)</source>
+        <translation>
+            <numerusform>sikeres: %n elvárás</numerusform>
+        </translation>
+    </message>
+    <message numerus="yes">
+        <location line="+5"/>
+        <source>FAILED: %n expectation(s)</source>
+        <translation>
+            <numerusform>SIKERTELEN: %n elvárás</numerusform>
+        </translation>
+    </message>
+    <message>
+        <location line="+2"/>
+        <source>did not run</source>
+        <translation>nem futott le</translation>
+    </message>
+    <message>
+        <location line="+6"/>
+        <source>line %1</source>
+        <translation>%1. sor</translation>
+    </message>
+    <message>
+        <location line="+1"/>
+        <source>error: %1</source>
+        <translation>hiba: %1</translation>
+    </message>
+    <message>
+        <location line="+5"/>
+        <location line="+46"/>
+        <source>line %1: %2</source>
+        <translation>%1. sor: %2</translation>
+    </message>
+    <message>
+        <location line="-41"/>
+        <source>ok</source>
+        <translation>rendben</translation>
+    </message>
+    <message>
+        <location line="+3"/>
+        <source>FAILED: %1 (double-click: the timing chart)</source>
+        <translation>SIKERTELEN: %1 (dupla kattintás: idődiagram)</translation>
+    </message>
+    <message>
+        <location line="+10"/>
+        <source>Scenario tests: %1 passed, %2 failed</source>
+        <translation>Forgatókönyv-tesztek: %1 sikeres, %2 sikertelen</translation>
+    </message>
+    <message>
+        <location line="+26"/>
+        <source>Timing chart of %1, line %2</source>
+        <translation>%1 idődiagramja, %2. sor</translation>
+    </message>
+    <message>
+        <location line="+26"/>
+        <source>Nothing to record: start a simulation and work its inputs first</source>
+        <translation>Nincs mit rögzíteni: előbb indítson szimulációt és kezelje a bemeneteit</translation>
+    </message>
+    <message>
+        <location line="+35"/>
+        <location line="+9"/>
+        <location line="+3"/>
+        <location line="+8"/>
+        <location line="+6"/>
+        <location line="+5"/>
+        <source>Record a Scenario</source>
+        <translation>Forgatókönyv rögzítése</translation>
+    </message>
+    <message>
+        <location line="-30"/>
+        <source>Save the project first: a scenario names the project&apos;s file.</source>
+        <translation>Előbb mentse a projektet: a forgatókönyv a projekt fájljára hivatkozik.</translation>
+    </message>
+    <message>
+        <location line="+12"/>
+        <source>Scenario tests (*.rungtest)</source>
+        <translation>Forgatókönyv-tesztek (*.rungtest)</translation>
+    </message>
+    <message>
+        <location line="+21"/>
+        <source>Recorded %1</source>
+        <translation>Rögzítve: %1</translation>
     </message>
 </context>
 <context>
@@ -3634,6 +4104,64 @@ Kiértékelés: %4 µs (%5..%6)</translation>
     </message>
 </context>
 <context>
+    <name>rung::editor::CompareView</name>
+    <message>
+        <location filename="../editor/compare_view.cpp" line="+49"/>
+        <source>the same</source>
+        <translation>azonos</translation>
+    </message>
+    <message>
+        <location line="+2"/>
+        <source>moved</source>
+        <translation>áthelyezve</translation>
+    </message>
+    <message>
+        <location line="+2"/>
+        <source>changed</source>
+        <translation>módosítva</translation>
+    </message>
+    <message>
+        <location line="+2"/>
+        <source>moved and changed</source>
+        <translation>áthelyezve és módosítva</translation>
+    </message>
+    <message>
+        <location line="+2"/>
+        <source>inserted</source>
+        <translation>beszúrva</translation>
+    </message>
+    <message>
+        <location line="+2"/>
+        <source>deleted</source>
+        <translation>törölve</translation>
+    </message>
+    <message>
+        <location line="+166"/>
+        <source>Both programs are empty.</source>
+        <translation>Mindkét program üres.</translation>
+    </message>
+    <message>
+        <location line="+47"/>
+        <source>A: rung %1</source>
+        <translation>A: %1. létrafok</translation>
+    </message>
+    <message>
+        <location line="+3"/>
+        <source>B: rung %1</source>
+        <translation>B: %1. létrafok</translation>
+    </message>
+    <message>
+        <location line="+46"/>
+        <source>(not in A)</source>
+        <translation>(A-ban nincs)</translation>
+    </message>
+    <message>
+        <location line="+0"/>
+        <source>(not in B)</source>
+        <translation>(B-ben nincs)</translation>
+    </message>
+</context>
+<context>
     <name>rung::editor::CrossReferenceView</name>
     <message>
         <location filename="../editor/cross_reference_view.cpp" line="+84"/>
@@ -4418,7 +4946,7 @@ Kiértékelés: %4 µs (%5..%6)</translation>
         <translation>Eltávolítás</translation>
     </message>
     <message>
-        <location line="+102"/>
+        <location line="+109"/>
         <source>A: %1</source>
         <translation>A: %1</translation>
     </message>
@@ -8217,12 +8745,12 @@ Kiértékelés: %4 µs (%5..%6)</translation>
         <translation>%1 önmagában nem feltétel</translation>
     </message>
     <message>
-        <location line="+60"/>
+        <location line="+61"/>
         <source>at %1 comes before line %2&apos;s %3: statements stand in the order of their times</source>
         <translation>az at %1 korábbi, mint a(z) %2. sor %3 ideje: az utasítások időrendben követik egymást</translation>
     </message>
     <message>
-        <location line="+128"/>
+        <location line="+130"/>
         <source>%1: the run was already at %2 (the statement before waited until then), so at %3 could not be checked</source>
         <translation>%1: a futás már %2-nál tartott (az előző utasítás addig várt), ezért az at %3 nem volt ellenőrizhető</translation>
     </message>
@@ -8253,6 +8781,41 @@ Kiértékelés: %4 µs (%5..%6)</translation>
         <location line="+22"/>
         <source>the program does not start</source>
         <translation>a program nem indul el</translation>
+    </message>
+    <message>
+        <location filename="../simulator/scenario_record.cpp" line="+39"/>
+        <source>the simulation has run no scan yet: run it, work its inputs, then record</source>
+        <translation>a szimuláció még egy ciklust sem futott: indítsa el, kezelje a bemeneteit, aztán rögzítsen</translation>
+    </message>
+    <message>
+        <location line="+5"/>
+        <source>the simulation&apos;s history no longer holds its start (it keeps the last hour): stop it, run it again and record sooner</source>
+        <translation>a szimuláció előzménye már nem tartalmazza a kezdetét (az utolsó órát őrzi): állítsa le, indítsa újra, és rögzítsen hamarabb</translation>
+    </message>
+    <message>
+        <location line="+7"/>
+        <source>Recorded from a simulation: the inputs as they were worked, the outputs as they were seen.</source>
+        <translation>Szimulációból rögzítve: a bemenetek, ahogy kezelték őket, a kimenetek, ahogy látszottak.</translation>
+    </message>
+    <message>
+        <location line="+33"/>
+        <source>a command given while a scan was stopped inside is applied at the start of the next scan</source>
+        <translation>a ciklus belsejében megállított állapotban adott parancs a következő ciklus elején érvényesül</translation>
+    </message>
+    <message>
+        <location line="+5"/>
+        <source>the period was changed during the simulation: the scenario runs at the first one, %1 ms</source>
+        <translation>a ciklusidő a szimuláció közben változott: a forgatókönyv az elsővel fut, %1 ms</translation>
+    </message>
+    <message>
+        <location line="+27"/>
+        <source>a power cycle, reset or online edit at %1 is not in the scenario</source>
+        <translation>a(z) %1 időpontbeli tápciklus, alaphelyzetbe állítás vagy online szerkesztés nincs a forgatókönyvben</translation>
+    </message>
+    <message>
+        <location filename="../simulator/scenario_trace.cpp" line="+60"/>
+        <source>a scenario&apos;s run is read-only</source>
+        <translation>a forgatókönyv futása csak olvasható</translation>
     </message>
 </context>
 <context>

@@ -307,6 +307,156 @@ Codice di uscita: 0 nessun errore, 1 il programma contiene errori, 2 errore di u
     </message>
 </context>
 <context>
+    <name>rung::app::CompareWindow</name>
+    <message>
+        <location filename="../app/gui/compare_window.cpp" line="+46"/>
+        <source>%1 is a program for %2; the open program is for %3: only programs of one PLC are compared</source>
+        <translation>%1 è un programma per %2; il programma aperto è per %3: si confrontano solo programmi dello stesso PLC</translation>
+    </message>
+    <message>
+        <location line="+21"/>
+        <source>%1, line %2, column %3: %4; a file that does not read whole is not compared</source>
+        <translation>%1, riga %2, colonna %3: %4; un file che non si legge per intero non viene confrontato</translation>
+    </message>
+    <message>
+        <location line="+32"/>
+        <source>Compare With</source>
+        <translation>Confronta con</translation>
+    </message>
+    <message>
+        <location line="+1"/>
+        <source>Rung Studio projects (*.rung);;Instruction lists (*.il *.txt);;Ladder texts (*.ladder)</source>
+        <translation>Progetti Rung Studio (*.rung);;Liste istruzioni (*.il *.txt);;Testi ladder (*.ladder)</translation>
+    </message>
+    <message>
+        <location line="+7"/>
+        <source>Cannot compare</source>
+        <translation>Impossibile confrontare</translation>
+    </message>
+    <message>
+        <location line="+14"/>
+        <source>Compare: %1 and %2</source>
+        <translation>Confronto: %1 e %2</translation>
+    </message>
+    <message>
+        <location line="+3"/>
+        <source>A (left): %1        B (right): %2</source>
+        <translation>A (sinistra): %1        B (destra): %2</translation>
+    </message>
+    <message>
+        <location line="+9"/>
+        <source>Ladder</source>
+        <translation>Ladder</translation>
+    </message>
+    <message>
+        <location line="+3"/>
+        <source>Change</source>
+        <translation>Modifica</translation>
+    </message>
+    <message>
+        <location line="+0"/>
+        <source>A: %1</source>
+        <translation>A: %1</translation>
+    </message>
+    <message>
+        <location line="+0"/>
+        <source>B: %1</source>
+        <translation>B: %1</translation>
+    </message>
+    <message>
+        <location line="+11"/>
+        <source>Instruction List</source>
+        <translation>Lista istruzioni</translation>
+    </message>
+    <message>
+        <location line="+5"/>
+        <source>Report</source>
+        <translation>Rapporto</translation>
+    </message>
+    <message>
+        <location line="+6"/>
+        <source>&amp;Previous Change</source>
+        <translation>Modifica &amp;precedente</translation>
+    </message>
+    <message>
+        <location line="+1"/>
+        <source>&amp;Next Change</source>
+        <translation>Modifica &amp;successiva</translation>
+    </message>
+    <message>
+        <location line="+1"/>
+        <source>P&amp;rint...</source>
+        <translation>S&amp;tampa...</translation>
+    </message>
+    <message>
+        <location line="+1"/>
+        <source>Previous change (Alt+Up)</source>
+        <translation>Modifica precedente (Alt+Su)</translation>
+    </message>
+    <message>
+        <location line="+1"/>
+        <source>Next change (Alt+Down)</source>
+        <translation>Modifica successiva (Alt+Giù)</translation>
+    </message>
+    <message>
+        <location line="+35"/>
+        <source>The programs are the same.</source>
+        <translation>I programmi sono uguali.</translation>
+    </message>
+    <message numerus="yes">
+        <location line="+1"/>
+        <source>%n rung(s) differ.</source>
+        <translation>
+            <numerusform>%n segmento diverso.</numerusform>
+            <numerusform>%n segmenti diversi.</numerusform>
+        </translation>
+    </message>
+    <message numerus="yes">
+        <location line="+7"/>
+        <source>%n difference(s) besides the rungs (symbols, set values, watch lists): see the Report.</source>
+        <translation>
+            <numerusform>%n differenza oltre ai segmenti (simboli, valori di preset, liste di osservazione): vedere il Rapporto.</numerusform>
+            <numerusform>%n differenze oltre ai segmenti (simboli, valori di preset, liste di osservazione): vedere il Rapporto.</numerusform>
+        </translation>
+    </message>
+    <message>
+        <location line="+3"/>
+        <source>Alt+Down: next change, Alt+Up: previous.</source>
+        <translation>Alt+Giù: modifica successiva, Alt+Su: precedente.</translation>
+    </message>
+    <message>
+        <location line="+18"/>
+        <location line="+1"/>
+        <source>rung %1</source>
+        <translation>segmento %1</translation>
+    </message>
+    <message>
+        <location line="+17"/>
+        <source>~ changed</source>
+        <translation>~ modificato</translation>
+    </message>
+    <message>
+        <location line="+1"/>
+        <source>+ only in B</source>
+        <translation>+ solo in B</translation>
+    </message>
+    <message>
+        <location line="+1"/>
+        <source>- only in A</source>
+        <translation>- solo in A</translation>
+    </message>
+    <message>
+        <location line="+21"/>
+        <source>No change before this one.</source>
+        <translation>Nessuna modifica prima di questa.</translation>
+    </message>
+    <message>
+        <location line="+1"/>
+        <source>No change after this one.</source>
+        <translation>Nessuna modifica dopo questa.</translation>
+    </message>
+</context>
+<context>
     <name>rung::app::ConnectionPanel</name>
     <message>
         <location filename="../app/gui/connection_panel_link.cpp" line="+48"/>
@@ -846,7 +996,7 @@ Andata e ritorno %6 ms (media %7, max %8); aggiornamento %9 ms, %10 frame</trans
         <translation>Simboli</translation>
     </message>
     <message>
-        <location filename="../app/gui/main_window_actions.cpp" line="+48"/>
+        <location filename="../app/gui/main_window_actions.cpp" line="+50"/>
         <source>&amp;File</source>
         <translation>&amp;File</translation>
     </message>
@@ -886,7 +1036,12 @@ Andata e ritorno %6 ms (media %7, max %8); aggiornamento %9 ms, %10 frame</trans
         <translation>Salva &amp;con nome...</translation>
     </message>
     <message>
-        <location line="+3"/>
+        <location line="+2"/>
+        <source>Co&amp;mpare With...</source>
+        <translation>Con&amp;fronta con...</translation>
+    </message>
+    <message>
+        <location line="+5"/>
         <source>&amp;Import Instruction List...</source>
         <translation>&amp;Importa lista istruzioni...</translation>
     </message>
@@ -897,6 +1052,21 @@ Andata e ritorno %6 ms (media %7, max %8); aggiornamento %9 ms, %10 frame</trans
     </message>
     <message>
         <location line="+1"/>
+        <source>Import &amp;PLCopen XML...</source>
+        <translation>Importa PLCopen &amp;XML...</translation>
+    </message>
+    <message>
+        <location line="+8"/>
+        <source>Expor&amp;t PLCopen XML...</source>
+        <translation>Esp&amp;orta PLCopen XML...</translation>
+    </message>
+    <message>
+        <location line="+7"/>
+        <source>The instruction list has errors, so the ladder is not the program as typed: fix the list first.</source>
+        <translation>La lista istruzioni contiene errori, quindi lo schema ladder non è il programma digitato: correggere prima la lista.</translation>
+    </message>
+    <message>
+        <location line="+3"/>
         <source>Export &amp;Ladder</source>
         <translation>Esporta schema &amp;ladder</translation>
     </message>
@@ -1463,7 +1633,7 @@ Editor di schemi ladder e liste istruzioni per %2.</translation>
         <location line="-4"/>
         <location line="+8"/>
         <location line="+10"/>
-        <location filename="../app/gui/main_window_panels.cpp" line="+58"/>
+        <location filename="../app/gui/main_window_panels.cpp" line="+69"/>
         <location filename="../app/gui/main_window_tools.cpp" line="+3"/>
         <source>Cannot export</source>
         <translation>Impossibile esportare</translation>
@@ -1832,6 +2002,11 @@ Editor di schemi ladder e liste istruzioni per %2.</translation>
         <translation>Diagramma temporale</translation>
     </message>
     <message>
+        <location line="+1"/>
+        <source>Tests</source>
+        <translation>Test</translation>
+    </message>
+    <message>
         <location filename="../app/gui/main_window_online.cpp" line="-3"/>
         <source>Save Traffic Log</source>
         <translation>Salva il registro del traffico</translation>
@@ -2027,6 +2202,152 @@ Codice di uscita di read e write: 0 fatto, 1 il PLC non ha risposto o ha rifiuta
         <location line="+5"/>
         <source>not written: %1</source>
         <translation>non scritto: %1</translation>
+    </message>
+</context>
+<context>
+    <name>rung::app::PlcopenImportDialog</name>
+    <message>
+        <location filename="../app/gui/plcopen_exchange.cpp" line="+34"/>
+        <location line="+16"/>
+        <source>Cannot export</source>
+        <translation>Impossibile esportare</translation>
+    </message>
+    <message>
+        <location line="-11"/>
+        <location line="+17"/>
+        <source>Export PLCopen XML</source>
+        <translation>Esporta PLCopen XML</translation>
+    </message>
+    <message>
+        <location line="-16"/>
+        <source>PLCopen XML (*.xml)</source>
+        <translation>PLCopen XML (*.xml)</translation>
+    </message>
+    <message>
+        <location line="+11"/>
+        <source>%1: %2</source>
+        <translation>%1: %2</translation>
+    </message>
+    <message>
+        <location line="+6"/>
+        <source>%1 is written. Other tools will read it, but not these blocks:
+
+%2</source>
+        <translation>%1 è scritto. Altri strumenti lo leggeranno, ma non questi blocchi:
+
+%2</translation>
+    </message>
+    <message>
+        <location line="+8"/>
+        <source>Import PLCopen XML</source>
+        <translation>Importa PLCopen XML</translation>
+    </message>
+    <message>
+        <location line="+1"/>
+        <source>PLCopen XML (*.xml);;All files (*)</source>
+        <translation>PLCopen XML (*.xml);;Tutti i file (*)</translation>
+    </message>
+    <message>
+        <location line="+7"/>
+        <source>Cannot open the file</source>
+        <translation>Impossibile aprire il file</translation>
+    </message>
+    <message>
+        <location line="+14"/>
+        <source>Import PLCopen XML: %1</source>
+        <translation>Importa PLCopen XML: %1</translation>
+    </message>
+    <message>
+        <location line="+11"/>
+        <source>PLC family:</source>
+        <translation>Famiglia PLC:</translation>
+    </message>
+    <message>
+        <location line="+1"/>
+        <source>Model:</source>
+        <translation>Modello:</translation>
+    </message>
+    <message>
+        <location line="+2"/>
+        <source>Variables without a device: a free one is proposed; change it where the program needs another.</source>
+        <translation>Variabili senza operando: ne viene proposto uno libero; cambiarlo dove il programma ne richiede un altro.</translation>
+    </message>
+    <message>
+        <location line="+5"/>
+        <source>Variable</source>
+        <translation>Variabile</translation>
+    </message>
+    <message>
+        <location line="+0"/>
+        <source>Type</source>
+        <translation>Tipo</translation>
+    </message>
+    <message>
+        <location line="+0"/>
+        <source>Line</source>
+        <translation>Riga</translation>
+    </message>
+    <message>
+        <location line="+0"/>
+        <source>Device</source>
+        <translation>Operando</translation>
+    </message>
+    <message>
+        <location line="+5"/>
+        <source>Not imported (element, line and why):</source>
+        <translation>Non importato (elemento, riga e motivo):</translation>
+    </message>
+    <message>
+        <location line="+5"/>
+        <source>Import the rest and leave out what is listed</source>
+        <translation>Importa il resto e tralascia quanto elencato</translation>
+    </message>
+    <message>
+        <location line="+6"/>
+        <source>&amp;Import</source>
+        <translation>&amp;Importa</translation>
+    </message>
+    <message>
+        <location line="+23"/>
+        <location line="+53"/>
+        <source>(no such device)</source>
+        <translation>(operando inesistente)</translation>
+    </message>
+    <message>
+        <location line="+6"/>
+        <source>line %1: %2: %3</source>
+        <translation>riga %1: %2: %3</translation>
+    </message>
+    <message>
+        <location line="+4"/>
+        <source>The file holds no ladder to import.</source>
+        <translation>Il file non contiene uno schema ladder da importare.</translation>
+    </message>
+    <message numerus="yes">
+        <location line="+2"/>
+        <source>Everything in the file is imported: %n rung(s).</source>
+        <translation>
+            <numerusform>Tutto il contenuto del file viene importato: %n segmento.</numerusform>
+            <numerusform>Tutto il contenuto del file viene importato: %n segmenti.</numerusform>
+        </translation>
+    </message>
+    <message numerus="yes">
+        <location line="+3"/>
+        <source>%n item(s) of the file are not imported; %1 variable(s) have no device yet.</source>
+        <translation>
+            <numerusform>%n elemento del file non viene importato; %1 variabili non hanno ancora un operando.</numerusform>
+            <numerusform>%n elementi del file non vengono importati; %1 variabili non hanno ancora un operando.</numerusform>
+        </translation>
+    </message>
+    <message>
+        <location line="+25"/>
+        <source>Some variables still have no device: give each one a device of %1.</source>
+        <translation>Alcune variabili non hanno ancora un operando: assegnare a ciascuna un operando di %1.</translation>
+    </message>
+    <message>
+        <location line="+6"/>
+        <source>The file holds what %1 cannot take, listed here. Tick &quot;%2&quot; to import the rest.</source>
+        <translation>Il file contiene ciò che %1 non può accogliere, elencato qui. Spuntare &quot;%2&quot; per importare il resto.</translation>
     </message>
 </context>
 <context>
@@ -2794,6 +3115,161 @@ Valutazione: %4 µs (%5..%6)</translation>
         <location line="+10"/>
         <source>cannot write %1: %2</source>
         <translation>impossibile scrivere %1: %2</translation>
+    </message>
+</context>
+<context>
+    <name>rung::app::TestsPanel</name>
+    <message>
+        <location filename="../app/gui/tests_panel.cpp" line="+51"/>
+        <source>unknown target %1</source>
+        <translation>famiglia PLC sconosciuta: %1</translation>
+    </message>
+    <message>
+        <location line="+88"/>
+        <source>Run All</source>
+        <translation>Esegui tutti</translation>
+    </message>
+    <message>
+        <location line="+1"/>
+        <source>Run</source>
+        <translation>Esegui</translation>
+    </message>
+    <message>
+        <location line="+1"/>
+        <source>Refresh</source>
+        <translation>Aggiorna</translation>
+    </message>
+    <message>
+        <location line="+1"/>
+        <source>Record...</source>
+        <translation>Registra...</translation>
+    </message>
+    <message>
+        <location line="+1"/>
+        <source>Runs the selected scenario</source>
+        <translation>Esegue lo scenario selezionato</translation>
+    </message>
+    <message>
+        <location line="+1"/>
+        <source>Writes a scenario of the simulation so far: the inputs as you worked them, the outputs as they were seen</source>
+        <translation>Scrive uno scenario della simulazione finora: gli ingressi come sono stati azionati, le uscite come sono state viste</translation>
+    </message>
+    <message>
+        <location line="+2"/>
+        <source>Scenario / expectation</source>
+        <translation>Scenario / attesa</translation>
+    </message>
+    <message>
+        <location line="+0"/>
+        <source>Result</source>
+        <translation>Risultato</translation>
+    </message>
+    <message>
+        <location line="+2"/>
+        <source>Save the project: its scenario tests (.rungtest) are the files beside it that name it</source>
+        <translation>Salvare il progetto: i suoi test di scenario (.rungtest) sono i file accanto che lo indicano</translation>
+    </message>
+    <message>
+        <location line="+60"/>
+        <source>the open program has errors: %1</source>
+        <translation>il programma aperto contiene errori: %1</translation>
+    </message>
+    <message>
+        <location line="+12"/>
+        <source>No scenario test names this project</source>
+        <translation>Nessun test di scenario indica questo progetto</translation>
+    </message>
+    <message>
+        <location line="+69"/>
+        <source>not run</source>
+        <translation>non eseguito</translation>
+    </message>
+    <message numerus="yes">
+        <location line="+8"/>
+        <source>passed: %n expectation(s)</source>
+        <translation>
+            <numerusform>superato: %n attesa</numerusform>
+            <numerusform>superato: %n attese</numerusform>
+        </translation>
+    </message>
+    <message numerus="yes">
+        <location line="+5"/>
+        <source>FAILED: %n expectation(s)</source>
+        <translation>
+            <numerusform>FALLITO: %n attesa</numerusform>
+            <numerusform>FALLITO: %n attese</numerusform>
+        </translation>
+    </message>
+    <message>
+        <location line="+2"/>
+        <source>did not run</source>
+        <translation>non è stato eseguito</translation>
+    </message>
+    <message>
+        <location line="+6"/>
+        <source>line %1</source>
+        <translation>riga %1</translation>
+    </message>
+    <message>
+        <location line="+1"/>
+        <source>error: %1</source>
+        <translation>errore: %1</translation>
+    </message>
+    <message>
+        <location line="+5"/>
+        <location line="+46"/>
+        <source>line %1: %2</source>
+        <translation>riga %1: %2</translation>
+    </message>
+    <message>
+        <location line="-41"/>
+        <source>ok</source>
+        <translation>ok</translation>
+    </message>
+    <message>
+        <location line="+3"/>
+        <source>FAILED: %1 (double-click: the timing chart)</source>
+        <translation>FALLITO: %1 (doppio clic: il diagramma temporale)</translation>
+    </message>
+    <message>
+        <location line="+10"/>
+        <source>Scenario tests: %1 passed, %2 failed</source>
+        <translation>Test di scenario: %1 superati, %2 falliti</translation>
+    </message>
+    <message>
+        <location line="+26"/>
+        <source>Timing chart of %1, line %2</source>
+        <translation>Diagramma temporale di %1, riga %2</translation>
+    </message>
+    <message>
+        <location line="+26"/>
+        <source>Nothing to record: start a simulation and work its inputs first</source>
+        <translation>Niente da registrare: avviare prima una simulazione e azionarne gli ingressi</translation>
+    </message>
+    <message>
+        <location line="+35"/>
+        <location line="+9"/>
+        <location line="+3"/>
+        <location line="+8"/>
+        <location line="+6"/>
+        <location line="+5"/>
+        <source>Record a Scenario</source>
+        <translation>Registra uno scenario</translation>
+    </message>
+    <message>
+        <location line="-30"/>
+        <source>Save the project first: a scenario names the project&apos;s file.</source>
+        <translation>Salvare prima il progetto: uno scenario indica il file del progetto.</translation>
+    </message>
+    <message>
+        <location line="+12"/>
+        <source>Scenario tests (*.rungtest)</source>
+        <translation>Test di scenario (*.rungtest)</translation>
+    </message>
+    <message>
+        <location line="+21"/>
+        <source>Recorded %1</source>
+        <translation>Registrato %1</translation>
     </message>
 </context>
 <context>
@@ -3640,6 +4116,64 @@ Valutazione: %4 µs (%5..%6)</translation>
     </message>
 </context>
 <context>
+    <name>rung::editor::CompareView</name>
+    <message>
+        <location filename="../editor/compare_view.cpp" line="+49"/>
+        <source>the same</source>
+        <translation>uguale</translation>
+    </message>
+    <message>
+        <location line="+2"/>
+        <source>moved</source>
+        <translation>spostato</translation>
+    </message>
+    <message>
+        <location line="+2"/>
+        <source>changed</source>
+        <translation>modificato</translation>
+    </message>
+    <message>
+        <location line="+2"/>
+        <source>moved and changed</source>
+        <translation>spostato e modificato</translation>
+    </message>
+    <message>
+        <location line="+2"/>
+        <source>inserted</source>
+        <translation>inserito</translation>
+    </message>
+    <message>
+        <location line="+2"/>
+        <source>deleted</source>
+        <translation>eliminato</translation>
+    </message>
+    <message>
+        <location line="+166"/>
+        <source>Both programs are empty.</source>
+        <translation>Entrambi i programmi sono vuoti.</translation>
+    </message>
+    <message>
+        <location line="+47"/>
+        <source>A: rung %1</source>
+        <translation>A: segmento %1</translation>
+    </message>
+    <message>
+        <location line="+3"/>
+        <source>B: rung %1</source>
+        <translation>B: segmento %1</translation>
+    </message>
+    <message>
+        <location line="+46"/>
+        <source>(not in A)</source>
+        <translation>(non in A)</translation>
+    </message>
+    <message>
+        <location line="+0"/>
+        <source>(not in B)</source>
+        <translation>(non in B)</translation>
+    </message>
+</context>
+<context>
     <name>rung::editor::CrossReferenceView</name>
     <message>
         <location filename="../editor/cross_reference_view.cpp" line="+84"/>
@@ -4425,7 +4959,7 @@ Valutazione: %4 µs (%5..%6)</translation>
         <translation>Rimuovi</translation>
     </message>
     <message>
-        <location line="+102"/>
+        <location line="+109"/>
         <source>A: %1</source>
         <translation>A: %1</translation>
     </message>
@@ -8232,12 +8766,12 @@ Valutazione: %4 µs (%5..%6)</translation>
         <translation>%1 da solo non è una condizione</translation>
     </message>
     <message>
-        <location line="+60"/>
+        <location line="+61"/>
         <source>at %1 comes before line %2&apos;s %3: statements stand in the order of their times</source>
         <translation>at %1 viene prima di %3 della riga %2: le istruzioni seguono l&apos;ordine dei loro tempi</translation>
     </message>
     <message>
-        <location line="+128"/>
+        <location line="+130"/>
         <source>%1: the run was already at %2 (the statement before waited until then), so at %3 could not be checked</source>
         <translation>%1: l&apos;esecuzione era già a %2 (l&apos;istruzione precedente ha atteso fin lì), quindi at %3 non si è potuto verificare</translation>
     </message>
@@ -8268,6 +8802,41 @@ Valutazione: %4 µs (%5..%6)</translation>
         <location line="+22"/>
         <source>the program does not start</source>
         <translation>il programma non si avvia</translation>
+    </message>
+    <message>
+        <location filename="../simulator/scenario_record.cpp" line="+39"/>
+        <source>the simulation has run no scan yet: run it, work its inputs, then record</source>
+        <translation>la simulazione non ha ancora eseguito alcuna scansione: avviarla, azionarne gli ingressi, poi registrare</translation>
+    </message>
+    <message>
+        <location line="+5"/>
+        <source>the simulation&apos;s history no longer holds its start (it keeps the last hour): stop it, run it again and record sooner</source>
+        <translation>la cronologia della simulazione non ne contiene più l&apos;inizio (conserva l&apos;ultima ora): fermarla, riavviarla e registrare prima</translation>
+    </message>
+    <message>
+        <location line="+7"/>
+        <source>Recorded from a simulation: the inputs as they were worked, the outputs as they were seen.</source>
+        <translation>Registrato da una simulazione: gli ingressi come sono stati azionati, le uscite come sono state viste.</translation>
+    </message>
+    <message>
+        <location line="+33"/>
+        <source>a command given while a scan was stopped inside is applied at the start of the next scan</source>
+        <translation>un comando dato mentre una scansione era ferma al suo interno viene applicato all&apos;inizio della scansione successiva</translation>
+    </message>
+    <message>
+        <location line="+5"/>
+        <source>the period was changed during the simulation: the scenario runs at the first one, %1 ms</source>
+        <translation>il periodo è cambiato durante la simulazione: lo scenario usa il primo, %1 ms</translation>
+    </message>
+    <message>
+        <location line="+27"/>
+        <source>a power cycle, reset or online edit at %1 is not in the scenario</source>
+        <translation>un ciclo di alimentazione, un reset o una modifica online a %1 non è nello scenario</translation>
+    </message>
+    <message>
+        <location filename="../simulator/scenario_trace.cpp" line="+60"/>
+        <source>a scenario&apos;s run is read-only</source>
+        <translation>l&apos;esecuzione di uno scenario è di sola lettura</translation>
     </message>
 </context>
 <context>

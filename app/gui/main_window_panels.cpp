@@ -1,11 +1,15 @@
 #include "main_window.h"
 
 #include "connection_panel.h"
+#include "simulation_controller.h"
+#include "tests_panel.h"
 
 #include "editor/io_panel.h"
 #include "editor/timing_chart.h"
 #include "editor/watch_list_view.h"
 #include "editor/watch_panel.h"
+
+#include "simulator/session.h"
 
 #include <QDockWidget>
 #include <QMenu>
@@ -45,6 +49,13 @@ void MainWindow::buildMonitorDocks() {
     io->hide();
     tabifyDockWidget(problems, watch);
     tabifyDockWidget(watch, chart);
+    auto *tests = new TestsPanel(m_document);
+    tests->setHistory([this] {
+        return m_simulation->session() ? m_simulation->session()->scanHistory() : nullptr;
+    });
+    connect(tests, &TestsPanel::message, this,
+            [this](const QString &t) { statusBar()->showMessage(t, 10000); });
+    tabifyDockWidget(chart, dock("testsDock", tests, Qt::BottomDockWidgetArea));
     problems->raise();
     const auto say = [this](const QString &text) { statusBar()->showMessage(text, 10000); };
     connect(m_watchPanel, &editor::WatchPanel::message, this, say);
@@ -68,11 +79,12 @@ void MainWindow::retranslatePanels() {
     title("watchDock", tr("Watch"));
     title("ioDock", tr("Inputs and Outputs"));
     title("timingChartDock", tr("Timing Chart"));
+    title("testsDock", tr("Tests"));
 }
 
 void MainWindow::addPanelActions(QMenu *menu) {
     menu->addSeparator();
-    for (const char *name : {"watchDock", "ioDock", "timingChartDock"})
+    for (const char *name : {"watchDock", "ioDock", "timingChartDock", "testsDock"})
         if (auto *d = findChild<QDockWidget *>(QString::fromLatin1(name)))
             menu->addAction(d->toggleViewAction());
 }

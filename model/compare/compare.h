@@ -98,6 +98,17 @@ Comparison compareProjects(const Project &a, const Project &b);
 // `ladder` is listToLadder(list).ladder; rungs that did not convert are left as they are.
 void addInstructionComments(const InstructionList &list, LadderProgram *ladder);
 
+// The two instruction lists side by side, rung by rung as the comparison pairs them: a heading
+// row per rung, then its instructions aligned (the same on both sides, one changed into the
+// other, only in A, only in B). For the IDE's Compare With... list.
+struct ListingRow {
+    enum class Kind : std::uint8_t { Rung, Same, Changed, Removed, Added } kind = Kind::Same;
+    int difference = -1; // the rung's entry in Comparison::rungs
+    QString a, b;        // the instructions as the target writes them ("" where none)
+};
+std::vector<ListingRow> comparisonListing(const Comparison &comparison, const LadderProgram &a,
+                                          const LadderProgram &b);
+
 // The report: translated text (only what differs, then a summary line) or JSON (every rung
 // with its status; keys and statuses are not translated: docs/version-control.md).
 QString comparisonText(const Comparison &comparison, const QString &nameA, const QString &nameB);

@@ -302,6 +302,69 @@ void addInstructionComments(const InstructionList &list, LadderProgram *ladder) 
     }
 }
 
+std::vector<ListingRow> comparisonListing(const Comparison &comparison, const LadderProgram &a,
+                                          const LadderProgram &b) {
+    const Target &t = *comparison.target;
+    const std::vector<ComparedRung> ra = comparedRungs(a);
+    const std::vector<ComparedRung> rb = comparedRungs(b);
+    std::vector<ListingRow> rows;
+    auto row = [&rows](ListingRow::Kind kind, int d, const QString &x, const QString &y) {
+        rows.push_back({kind, d, x, y});
+    };
+    for (std::size_t d = 0; d < comparison.rungs.size(); ++d) {
+        const RungDifference &r = comparison.rungs[d];
+        const int di = static_cast<int>(d);
+        row(ListingRow::Kind::Rung, di, {}, {});
+        const ComparedRung *x = r.a >= 0 && static_cast<std::size_t>(r.a) < ra.size()
+                                    ? &ra[static_cast<std::size_t>(r.a)]
+                                    : nullptr;
+        const ComparedRung *y = r.b >= 0 && static_cast<std::size_t>(r.b) < rb.size()
+                                    ? &rb[static_cast<std::size_t>(r.b)]
+                                    : nullptr;
+        if (!x || !y || x->instructions.empty() || y->instructions.empty()) {
+            const QStringList lx = x ? instructionLines(t, *x) : QStringList();
+            const QStringList ly = y ? instructionLines(t, *y) : QStringList();
+            const bool same = x && y && x->signature == y->signature;
+            for (qsizetype k = 0; k < std::max(lx.size(), ly.size()); ++k)
+                row(same                ? ListingRow::Kind::Same
+                    : k >= ly.size()    ? ListingRow::Kind::Removed
+                    : k >= lx.size()    ? ListingRow::Kind::Added
+                                        : ListingRow::Kind::Changed,
+                    di, lx.value(k), ly.value(k));
+            continue;
+        }
+        const auto common = commonInstructions(x->instructions, y->instructions);
+        int pa = 0;
+        int pb = 0;
+        auto hunk = [&](int a1, int b1) {
+            while (pa < a1 || pb < b1) {
+                const bool both = pa < a1 && pb < b1;
+                row(both         ? ListingRow::Kind::Changed
+                    : pa < a1    ? ListingRow::Kind::Removed
+                                 : ListingRow::Kind::Added,
+                    di,
+                    pa < a1 ? printInstruction(t, x->instructions[static_cast<std::size_t>(pa)])
+                            : QString(),
+                    pb < b1 ? printInstruction(t, y->instructions[static_cast<std::size_t>(pb)])
+                            : QString());
+                if (pa < a1)
+                    ++pa;
+                if (pb < b1)
+                    ++pb;
+            }
+        };
+        for (const auto &[i, j] : common) {
+            hunk(i, j);
+            const QString text = printInstruction(t, x->instructions[static_cast<std::size_t>(i)]);
+            row(ListingRow::Kind::Same, di, text, text);
+            pa = i + 1;
+            pb = j + 1;
+        }
+        hunk(static_cast<int>(x->instructions.size()), static_cast<int>(y->instructions.size()));
+    }
+    return rows;
+}
+
 std::vector<RungDifference> compareRungs(const Target &t, const std::vector<ComparedRung> &a,
                                          const std::vector<ComparedRung> &b) {
     std::vector<QString> keysA;

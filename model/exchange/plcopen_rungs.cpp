@@ -372,22 +372,31 @@ void Importer::proposeDevices() {
             kind = AreaKind::Counter;
         else if (t != QLatin1String("BOOL") && !t.isEmpty())
             kind = AreaKind::Word;
-        for (std::size_t i = 0; i < m_t.areas.size() && u.proposed.isEmpty(); ++i) {
-            const Area &a = m_t.areas[i];
-            const bool plain = a.writable && !a.system && !a.physical && !a.indexRegister &&
-                               !a.presetsOf && !a.branchMemory &&
-                               a.onlyWrittenBy == ApplyFunction::None && !a.retentive;
-            if (a.kind != kind || !plain)
-                continue;
-            const auto range = m_t.range(static_cast<int>(i), m_model);
-            if (!range)
-                continue;
-            for (int n = range->first; n <= range->second; ++n) {
-                const Address candidate{static_cast<int>(i), n, -1};
-                if (taken.insert(candidate).second) {
-                    u.proposed = formatAddress(m_t, candidate);
-                    break;
-                }
+        // Areas of the kind first; then the bits (or the words) of channel areas, where the
+        // target keeps its work bits in channels (CPM1 200.00).
+        for (int pass = 0; pass < 2 && u.proposed.isEmpty(); ++pass) {
+            const AreaKind wanted = pass == 0 ? kind : AreaKind::Channel;
+            if (pass == 1 && kind != AreaKind::Bit && kind != AreaKind::Word)
+                break;
+            for (std::size_t i = 0; i < m_t.areas.size() && u.proposed.isEmpty(); ++i) {
+                const Area &a = m_t.areas[i];
+                const bool plain = a.writable && !a.system && !a.physical && !a.indexRegister &&
+                                   !a.presetsOf && !a.branchMemory &&
+                                   a.onlyWrittenBy == ApplyFunction::None && !a.retentive;
+                if (a.kind != wanted || !plain)
+                    continue;
+                const auto range = m_t.range(static_cast<int>(i), m_model);
+                if (!range)
+                    continue;
+                const int bits = pass == 1 && kind == AreaKind::Bit ? 16 : 0;
+                for (int n = range->first; n <= range->second && u.proposed.isEmpty(); ++n)
+                    for (int b = bits > 0 ? 0 : -1; b < std::max(0, bits); ++b) {
+                        const Address candidate{static_cast<int>(i), n, b};
+                        if (taken.insert(candidate).second) {
+                            u.proposed = formatAddress(m_t, candidate);
+                            break;
+                        }
+                    }
             }
         }
     }

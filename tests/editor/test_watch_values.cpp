@@ -14,7 +14,7 @@
 #include <gtest/gtest.h>
 
 using namespace rung;
-constexpr int kValue = editor::WatchListView::ValueColumn;
+constexpr int kValueColumn = editor::WatchListView::ValueColumn;
 
 namespace {
 
@@ -54,9 +54,9 @@ TEST(WatchValues, TheValueColumnShowsEachSnapshotAndTheSourceLearnsWhatIsWatched
     ASSERT_TRUE(changed.wait(5000));
     const QTreeWidgetItem *list = view.topLevelItem(0);
     ASSERT_EQ(list->childCount(), 3);
-    EXPECT_EQ(list->child(0)->text(kValue), QStringLiteral("ON (forced)"));
-    EXPECT_EQ(list->child(1)->text(kValue), QStringLiteral("1234"));
-    EXPECT_EQ(list->child(2)->text(kValue), QStringLiteral("12 of 50, OFF"));
+    EXPECT_EQ(list->child(0)->text(kValueColumn), QStringLiteral("ON (forced)"));
+    EXPECT_EQ(list->child(1)->text(kValueColumn), QStringLiteral("1234"));
+    EXPECT_EQ(list->child(2)->text(kValueColumn), QStringLiteral("12 of 50, OFF"));
 
     // Online, the PLC answered for T3's present value but nobody could read its set value
     // (a Vigor K preset lives in the program): not "of 0".
@@ -67,18 +67,18 @@ TEST(WatchValues, TheValueColumnShowsEachSnapshotAndTheSourceLearnsWhatIsWatched
     online->wordsRead = read;
     source.publish(online);
     ASSERT_TRUE(changed.wait(5000));
-    EXPECT_EQ(list->child(2)->text(kValue), QStringLiteral("12 of ?, OFF"));
-    EXPECT_EQ(list->child(1)->text(kValue), QStringLiteral("1234"));
+    EXPECT_EQ(list->child(2)->text(kValueColumn), QStringLiteral("12 of ?, OFF"));
+    EXPECT_EQ(list->child(1)->text(kValueColumn), QStringLiteral("1234"));
 
     // A device added to the list is watched and shown at once.
     view.setCurrentItem(view.topLevelItem(0));
     view.addDevice(QStringLiteral("Y1"));
     EXPECT_EQ(source.watched().size(), 4u);
     ASSERT_EQ(view.topLevelItem(0)->childCount(), 4);
-    EXPECT_EQ(view.topLevelItem(0)->child(3)->text(kValue), QStringLiteral("OFF"));
+    EXPECT_EQ(view.topLevelItem(0)->child(3)->text(kValueColumn), QStringLiteral("OFF"));
 
     view.setMonitorSource(nullptr);
-    EXPECT_TRUE(view.topLevelItem(0)->child(0)->text(kValue).isEmpty());
+    EXPECT_TRUE(view.topLevelItem(0)->child(0)->text(kValueColumn).isEmpty());
     EXPECT_TRUE(source.watched().empty());
 }
 
@@ -137,8 +137,8 @@ TEST(WatchValues, HeadersAndValuesFollowALanguageSwitch) {
     QSignalSpy changed(&source, &model::MonitorSource::snapshotChanged);
     source.publish(snapshot);
     ASSERT_TRUE(changed.wait(5000));
-    ASSERT_EQ(view.headerItem()->text(kValue), QStringLiteral("Value"));
-    ASSERT_EQ(view.topLevelItem(0)->child(0)->text(kValue), QStringLiteral("ON"));
+    ASSERT_EQ(view.headerItem()->text(kValueColumn), QStringLiteral("Value"));
+    ASSERT_EQ(view.topLevelItem(0)->child(0)->text(kValueColumn), QStringLiteral("ON"));
 
     ASSERT_TRUE(app::setLanguage(QStringLiteral("hu"), false));
     QCoreApplication::sendPostedEvents(nullptr, QEvent::LanguageChange);
@@ -147,9 +147,9 @@ TEST(WatchValues, HeadersAndValuesFollowALanguageSwitch) {
     };
     ASSERT_NE(hu("Value"), QStringLiteral("Value")); // the catalogue is there
     EXPECT_EQ(view.headerItem()->text(0), hu("Device"));
-    EXPECT_EQ(view.headerItem()->text(kValue), hu("Value"));
-    EXPECT_EQ(view.topLevelItem(0)->child(0)->text(kValue), hu("ON"));
+    EXPECT_EQ(view.headerItem()->text(kValueColumn), hu("Value"));
+    EXPECT_EQ(view.topLevelItem(0)->child(0)->text(kValueColumn), hu("ON"));
     app::setLanguage(QStringLiteral("en"), false);
     QCoreApplication::sendPostedEvents(nullptr, QEvent::LanguageChange);
-    EXPECT_EQ(view.headerItem()->text(kValue), QStringLiteral("Value"));
+    EXPECT_EQ(view.headerItem()->text(kValueColumn), QStringLiteral("Value"));
 }

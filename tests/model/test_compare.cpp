@@ -372,3 +372,31 @@ TEST(ProjectText, ShowsTheListingAndEverythingAroundItWithoutRungNumbers) {
                                              "list \"Main\":\n;   D0 (hex)\n")
                                   .arg(t.defaultModel().name));
 }
+
+// The lists side by side: a heading per rung, the instructions aligned within it.
+TEST(Compare, TheListingsStandSideBySideAligned) {
+    std::vector<QString> rungs = distinctRungs(2);
+    const Project a = listed(vigor(), program(rungs));
+    rungs[1] = QStringLiteral("LD X1\nAND X2\nANI M1\nOUT Y1\n");
+    const Project b = listed(vigor(), program(rungs));
+    const Comparison c = compareProjects(a, b);
+    const std::vector<ListingRow> rows = comparisonListing(c, a.program, b.program);
+    using K = ListingRow::Kind;
+    std::vector<std::tuple<K, QString, QString>> got;
+    for (const ListingRow &r : rows)
+        got.emplace_back(r.kind, r.a, r.b);
+    const std::vector<std::tuple<K, QString, QString>> expected{
+        {K::Rung, {}, {}},
+        {K::Same, QStringLiteral("LD X0"), QStringLiteral("LD X0")},
+        {K::Same, QStringLiteral("AND M0"), QStringLiteral("AND M0")},
+        {K::Same, QStringLiteral("OUT Y0"), QStringLiteral("OUT Y0")},
+        {K::Rung, {}, {}},
+        {K::Same, QStringLiteral("LD X1"), QStringLiteral("LD X1")},
+        {K::Changed, QStringLiteral("AND M1"), QStringLiteral("AND X2")},
+        {K::Added, {}, QStringLiteral("ANI M1")},
+        {K::Same, QStringLiteral("OUT Y1"), QStringLiteral("OUT Y1")},
+        {K::Rung, {}, {}},
+        {K::Same, QStringLiteral("END"), QStringLiteral("END")}};
+    EXPECT_EQ(got, expected);
+    EXPECT_EQ(rows[6].difference, 1);
+}

@@ -225,3 +225,101 @@ TEST(Scenario, TimesAreReadExactly) {
     EXPECT_EQ(s.statements[2].time.resolve(5), 50);
     EXPECT_EQ(s.statements[3].time.ms, 4500000);
 }
+
+#include "simulator/command_inbox.h"
+#include "simulator/scenario_record.h"
+
+namespace {
+
+// A simulation as the session drives one: commands recorded, applied, then scans.
+struct Recording {
+    std::shared_ptr<const Program> program;
+    Engine engine;
+    ScanHistory history;
+    explicit Recording(std::shared_ptr<const Program> p)
+        : program(p)
+        , engine(p) {
+        history.start(engine);
+    }
+    void command(model::DeviceCommand::Kind kind, const char *device, qint64 value) {
+        model::DeviceCommand d;
+        d.kind = kind;
+        d.address = std::get<model::Address>(
+            model::parseAddress(program->layout->target(), QString::fromLatin1(device)));
+        d.value = value;
+        EngineCommand c;
+        c.what = d;
+        history.record(engine, c);
+        QString error;
+        ASSERT_TRUE(applyCommand(engine, c, &error)) << error.toStdString();
+    }
+    void scans(int n) {
+        for (int k = 0; k < n; ++k) {
+            engine.scan();
+            history.afterScan(engine, 1000);
+        }
+    }
+};
+
+std::shared_ptr<const Program> latch(const QString &listing = kLatch) {
+    const model::ParseResult parsed = model::parseInstructionList(rung::testing::vigor(), listing);
+    return compileProgram(parsed.list).program;
+}
+
+} // namespace
+
+// Record a simulation as a scenario: the inputs as worked, the outputs as seen; it passes on
+// the program it was recorded from and says what a change changed.
+TEST(ScenarioRecord, ASimulationBecomesAScenarioThatReplays) {
+    Recording r(latch());
+    const model::Address y0 =
+        std::get<model::Address>(model::parseAddress(rung::testing::vigor(), u"Y0"));
+    const model::Address y1 =
+        std::get<model::Address>(model::parseAddress(rung::testing::vigor(), u"Y1"));
+    using K = model::DeviceCommand::Kind;
+    r.scans(5);
+    r.command(K::WriteBit, "X0", 1);
+    r.scans(10);
+    r.command(K::WriteBit, "X0", 0);
+    r.scans(250); // T0 (2 s) done: Y1 ON
+    r.command(K::Force, "Y0", 0);
+    r.scans(3);
+    r.command(K::ReleaseAll, "Y0", 0);
+    r.scans(2);
+    QString error;
+    const auto recorded = recordScenario(r.history, rung::testing::vigor(), QStringLiteral("latch.il"),
+                                         {y0, y1}, &error);
+    ASSERT_TRUE(recorded) << error.toStdString();
+    EXPECT_TRUE(recorded->notes.isEmpty());
+    EXPECT_EQ(recorded->text.section(QLatin1Char('\n'), 1),
+              QStringLiteral("program latch.il\n"
+                             "period 10ms\n"
+                             "\n"
+                             "at 0.05s set X0=1\n"
+                             "at 0.14s expect Y0=1 Y1=0\n"
+                             "at 0.15s set X0=0\n"
+                             "at 2.64s expect Y0=1 Y1=1\n"
+                             "at 2.65s force Y0=0\n"
+                             "at 2.67s expect Y0=0 Y1=0\n"
+                             "at 2.68s release all\n"
+                             "at 2.69s expect Y0=0 Y1=0\n"));
+    ListingLoader same{&rung::testing::vigor(), kLatch, {}};
+    const ScenarioResult replay =
+        runScenario(recorded->text, QStringLiteral("/p/latch.rungtest"), std::cref(same));
+    EXPECT_TRUE(replay.passed()) << why(replay);
+    // The timer made longer: the replay says so.
+    QString longer = kLatch;
+    longer.replace(QStringLiteral("K20"), QStringLiteral("K30"));
+    ListingLoader changed{&rung::testing::vigor(), longer, {}};
+    const ScenarioResult failed =
+        runScenario(recorded->text, QStringLiteral("/p/latch.rungtest"), std::cref(changed));
+    ASSERT_EQ(failed.failures.size(), 1u) << why(failed);
+    EXPECT_EQ(failed.failures[0].message, QStringLiteral("at 2.64s: expected Y0=1 Y1=1, seen Y0=1 Y1=0"));
+}
+
+TEST(ScenarioRecord, NothingToRecordIsSaid) {
+    Recording r(latch());
+    QString error;
+    EXPECT_FALSE(recordScenario(r.history, rung::testing::vigor(), QStringLiteral("x.il"), {}, &error));
+    EXPECT_TRUE(error.startsWith(QStringLiteral("the simulation has run no scan yet")));
+}
