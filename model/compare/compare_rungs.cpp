@@ -326,10 +326,10 @@ std::vector<ListingRow> comparisonListing(const Comparison &comparison, const La
             const QStringList ly = y ? instructionLines(t, *y) : QStringList();
             const bool same = x && y && x->signature == y->signature;
             for (qsizetype k = 0; k < std::max(lx.size(), ly.size()); ++k)
-                row(same                ? ListingRow::Kind::Same
-                    : k >= ly.size()    ? ListingRow::Kind::Removed
-                    : k >= lx.size()    ? ListingRow::Kind::Added
-                                        : ListingRow::Kind::Changed,
+                row(same             ? ListingRow::Kind::Same
+                    : k >= ly.size() ? ListingRow::Kind::Removed
+                    : k >= lx.size() ? ListingRow::Kind::Added
+                                     : ListingRow::Kind::Changed,
                     di, lx.value(k), ly.value(k));
             continue;
         }
@@ -339,9 +339,9 @@ std::vector<ListingRow> comparisonListing(const Comparison &comparison, const La
         auto hunk = [&](int a1, int b1) {
             while (pa < a1 || pb < b1) {
                 const bool both = pa < a1 && pb < b1;
-                row(both         ? ListingRow::Kind::Changed
-                    : pa < a1    ? ListingRow::Kind::Removed
-                                 : ListingRow::Kind::Added,
+                row(both      ? ListingRow::Kind::Changed
+                    : pa < a1 ? ListingRow::Kind::Removed
+                              : ListingRow::Kind::Added,
                     di,
                     pa < a1 ? printInstruction(t, x->instructions[static_cast<std::size_t>(pa)])
                             : QString(),

@@ -117,8 +117,8 @@ TEST(CompareWindow, AFileOfAnotherPlcOrThatDoesNotReadIsRefusedWithTheReason) {
     EXPECT_FALSE(app::loadForComparison(bad, rung::testing::vigor(), &error));
     EXPECT_TRUE(error.contains(QStringLiteral("line 1, column 5"))) << error.toStdString();
     const auto ok = app::loadForComparison(
-        QStringLiteral(RUNG_SOURCE_DIR "/resources/examples/vigor/flasher.rung"), rung::testing::vigor(),
-        &error);
+        QStringLiteral(RUNG_SOURCE_DIR "/resources/examples/vigor/flasher.rung"),
+        rung::testing::vigor(), &error);
     ASSERT_TRUE(ok);
 }
 

@@ -287,8 +287,8 @@ TEST(ScenarioRecord, ASimulationBecomesAScenarioThatReplays) {
     r.command(K::ReleaseAll, "Y0", 0);
     r.scans(2);
     QString error;
-    const auto recorded = recordScenario(r.history, rung::testing::vigor(), QStringLiteral("latch.il"),
-                                         {y0, y1}, &error);
+    const auto recorded = recordScenario(r.history, rung::testing::vigor(),
+                                         QStringLiteral("latch.il"), {y0, y1}, &error);
     ASSERT_TRUE(recorded) << error.toStdString();
     EXPECT_TRUE(recorded->notes.isEmpty());
     EXPECT_EQ(recorded->text.section(QLatin1Char('\n'), 1),
@@ -314,12 +314,14 @@ TEST(ScenarioRecord, ASimulationBecomesAScenarioThatReplays) {
     const ScenarioResult failed =
         runScenario(recorded->text, QStringLiteral("/p/latch.rungtest"), std::cref(changed));
     ASSERT_EQ(failed.failures.size(), 1u) << why(failed);
-    EXPECT_EQ(failed.failures[0].message, QStringLiteral("at 2.64s: expected Y0=1 Y1=1, seen Y0=1 Y1=0"));
+    EXPECT_EQ(failed.failures[0].message,
+              QStringLiteral("at 2.64s: expected Y0=1 Y1=1, seen Y0=1 Y1=0"));
 }
 
 TEST(ScenarioRecord, NothingToRecordIsSaid) {
     Recording r(latch());
     QString error;
-    EXPECT_FALSE(recordScenario(r.history, rung::testing::vigor(), QStringLiteral("x.il"), {}, &error));
+    EXPECT_FALSE(
+        recordScenario(r.history, rung::testing::vigor(), QStringLiteral("x.il"), {}, &error));
     EXPECT_TRUE(error.startsWith(QStringLiteral("the simulation has run no scan yet")));
 }
