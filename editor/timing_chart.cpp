@@ -333,6 +333,13 @@ void TimingChart::zoom(double factor, std::optional<qint64> anchorMs) {
     applyView();
 }
 
+void TimingChart::centreOn(qint64 timeMs) {
+    setFollow(false);
+    refresh();
+    m_endMs = timeMs + static_cast<qint64>(std::llround(m_canvas->waveWidth() * m_msPerPixel / 2));
+    applyView();
+}
+
 qint64 TimingChart::snapToScan(qint64 timeMs) const {
     // Scans end every period from the newest one back: a cursor sits on a scan's end.
     const qint64 period = std::max<qint64>(1, m_periodMs);

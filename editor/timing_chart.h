@@ -48,6 +48,8 @@ public:
     bool follows() const { return m_follow; }
     void zoom(double factor, std::optional<qint64> anchorMs = std::nullopt);
     void setMsPerPixel(double msPerPixel);
+    // The view centred on this time, following stopped (a failed scenario's instant).
+    void centreOn(qint64 timeMs);
     // A cursor (0: A, 1: B) at the scan nearest this time; cursorMoved() follows.
     void placeCursor(int which, qint64 timeMs);
 

@@ -14,6 +14,8 @@ packages=(
     # docs as HTML, the package's dependencies found, and the checks of what it installs.
     librsvg2-bin cmark-gfm dpkg-dev file desktop-file-utils appstream libxml2-utils lintian
     shared-mime-info xdg-utils libfile-mimeinfo-perl hicolor-icon-theme bash-completion man-db
+    # Compare as a git diff driver (docs/version-control.md) and the PLCopen schema check.
+    git
 )
 missing=()
 for p in "${packages[@]}"; do

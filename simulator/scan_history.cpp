@@ -111,6 +111,20 @@ ScanHistory::Window ScanHistory::window() const {
     return w;
 }
 
+std::vector<ScanHistory::Recorded> ScanHistory::recorded() const {
+    std::lock_guard lock(m_mutex);
+    std::vector<Recorded> out;
+    out.reserve(m_events.size());
+    for (const Event &e : m_events)
+        out.push_back({e.scan, e.position, e.action});
+    return out;
+}
+
+qint64 ScanHistory::firstPeriodMs() const {
+    std::lock_guard lock(m_mutex);
+    return m_checkpoints.empty() ? 10 : m_checkpoints.front().periodMs;
+}
+
 std::optional<quint64> ScanHistory::scanAt(qint64 timeMs) const {
     std::lock_guard lock(m_mutex);
     if (m_checkpoints.empty())

@@ -74,6 +74,17 @@ public:
     // The image after `scan` (its statistics: scans and virtual time; power flow recorded),
     // empty when the scan is outside the window.
     std::optional<model::Snapshot> rebuild(quint64 scan) const;
+    // What came from outside in the window, oldest first: the completed scans when it was
+    // applied, where inside a stopped scan (-1: at a boundary), and what (a scenario is
+    // recorded from it: scenario_record.h).
+    struct Recorded {
+        quint64 scan = 0;
+        int position = -1;
+        Action action;
+    };
+    std::vector<Recorded> recorded() const;
+    // The scan period the window starts with.
+    qint64 firstPeriodMs() const;
 
 private:
     struct Checkpoint {

@@ -2,6 +2,25 @@
 <!DOCTYPE TS>
 <TS version="2.1" language="en">
 <context>
+    <name>rung::app::CompareWindow</name>
+    <message numerus="yes">
+        <location filename="../app/gui/compare_window.cpp" line="+198"/>
+        <source>%n rung(s) differ.</source>
+        <translation>
+            <numerusform>%n rung differs.</numerusform>
+            <numerusform>%n rungs differ.</numerusform>
+        </translation>
+    </message>
+    <message numerus="yes">
+        <location line="+7"/>
+        <source>%n difference(s) besides the rungs (symbols, set values, watch lists): see the Report.</source>
+        <translation>
+            <numerusform>%n difference besides the rungs (symbols, set values, watch lists): see the Report.</numerusform>
+            <numerusform>%n differences besides the rungs (symbols, set values, watch lists): see the Report.</numerusform>
+        </translation>
+    </message>
+</context>
+<context>
     <name>rung::app::MainWindow</name>
     <message numerus="yes">
         <location filename="../app/gui/main_window.cpp" line="+371"/>
@@ -45,6 +64,25 @@
     </message>
 </context>
 <context>
+    <name>rung::app::PlcopenImportDialog</name>
+    <message numerus="yes">
+        <location filename="../app/gui/plcopen_exchange.cpp" line="+210"/>
+        <source>Everything in the file is imported: %n rung(s).</source>
+        <translation>
+            <numerusform>Everything in the file is imported: %n rung.</numerusform>
+            <numerusform>Everything in the file is imported: %n rungs.</numerusform>
+        </translation>
+    </message>
+    <message numerus="yes">
+        <location line="+3"/>
+        <source>%n item(s) of the file are not imported; %1 variable(s) have no device yet.</source>
+        <translation>
+            <numerusform>%n item of the file is not imported; %1 variable(s) have no device yet.</numerusform>
+            <numerusform>%n items of the file are not imported; %1 variable(s) have no device yet.</numerusform>
+        </translation>
+    </message>
+</context>
+<context>
     <name>rung::app::SimulationController</name>
     <message numerus="yes">
         <location filename="../app/gui/simulation_controller.cpp" line="+101"/>
@@ -52,6 +90,25 @@
         <translation>
             <numerusform>The program has %n error: the simulation does not start; the Problems list shows it</numerusform>
             <numerusform>The program has %n errors: the simulation does not start; the Problems list shows them</numerusform>
+        </translation>
+    </message>
+</context>
+<context>
+    <name>rung::app::TestsPanel</name>
+    <message numerus="yes">
+        <location filename="../app/gui/tests_panel.cpp" line="+297"/>
+        <source>passed: %n expectation(s)</source>
+        <translation>
+            <numerusform>passed: %n expectation</numerusform>
+            <numerusform>passed: %n expectations</numerusform>
+        </translation>
+    </message>
+    <message numerus="yes">
+        <location line="+5"/>
+        <source>FAILED: %n expectation(s)</source>
+        <translation>
+            <numerusform>FAILED: %n expectation</numerusform>
+            <numerusform>FAILED: %n expectations</numerusform>
         </translation>
     </message>
 </context>
@@ -69,7 +126,7 @@
 <context>
     <name>rung::editor::TimingChart</name>
     <message numerus="yes">
-        <location filename="../editor/timing_chart.cpp" line="+412"/>
+        <location filename="../editor/timing_chart.cpp" line="+419"/>
         <source>B − A: %1 (%n scan(s))</source>
         <extracomment>the time between the cursors, and how many scans that is</extracomment>
         <translation>

@@ -178,18 +178,32 @@
 <context>
     <name>rung::app::Cli</name>
     <message>
-        <location filename="../app/cli/cli.cpp" line="+55"/>
-        <location line="+45"/>
+        <location filename="../app/cli/cli.cpp" line="+59"/>
+        <location line="+48"/>
         <source>unexpected argument %1</source>
         <translation>váratlan argumentum: %1</translation>
     </message>
     <message>
-        <location line="+6"/>
-        <source>--to must be il, ladder or project</source>
-        <translation>a --to értéke il, ladder vagy project lehet</translation>
+        <location line="-74"/>
+        <source>usage:
+  rungstudio-cli check FILE [--target %1] [--model M]
+  rungstudio-cli convert FILE [--target T] [--model M] [--from il|ladder|project|plcopen] --to il|ladder|project|plcopen [-o OUT] [--force] [--map FILE]
+  rungstudio-cli simulate FILE [--target T] [--model M] --scans N [--period MS] [--set DEV=VALUE@SCAN]... --trace DEV[,DEV...]
+  rungstudio-cli serve FILE [--target T] [--model M] --protocol vigor|modbus|modbus-tcp|hostlink (--pty | --port NAME | --tcp HOST:PORT) [--station N] [--baud B] [--frame 8N1] [--period MS] [--fault KIND]
+FILE is a listing (.il), a ladder text (.ladder) or a project (.rung).
+--lang en|hu|it: the language of the messages (else the locale&apos;s, LANG).
+Exit status: 0 no error, 1 the program has errors, 2 usage or I/O error.</source>
+        <translation>használat:
+  rungstudio-cli check FILE [--target %1] [--model M]
+  rungstudio-cli convert FILE [--target T] [--model M] [--from il|ladder|project|plcopen] --to il|ladder|project|plcopen [-o OUT] [--force] [--map FILE]
+  rungstudio-cli simulate FILE [--target T] [--model M] --scans N [--period MS] [--set DEV=VALUE@SCAN]... --trace DEV[,DEV...]
+  rungstudio-cli serve FILE [--target T] [--model M] --protocol vigor|modbus|modbus-tcp|hostlink (--pty | --port NAME | --tcp HOST:PORT) [--station N] [--baud B] [--frame 8N1] [--period MS] [--fault KIND]
+A FILE utasításlista (.il), létra-szöveg (.ladder) vagy projekt (.rung).
+--lang en|hu|it: az üzenetek nyelve (különben a területi beállításé, LANG).
+Kilépési kód: 0 nincs hiba, 1 a programban hiba van, 2 használati vagy I/O hiba.</translation>
     </message>
     <message>
-        <location line="+16"/>
+        <location line="+106"/>
         <source>nothing written: the list as typed would be lost</source>
         <translation>semmi sem íródott ki: a begépelt lista elveszne</translation>
     </message>
@@ -209,12 +223,12 @@
         <translation>nem íródott semmi: a bemenet hibás (a --force így is kiírja)</translation>
     </message>
     <message>
-        <location line="+25"/>
+        <location line="+27"/>
         <source>cannot write %1: %2</source>
         <translation>%1 nem írható: %2</translation>
     </message>
     <message>
-        <location line="+43"/>
+        <location line="+49"/>
         <source>no command given</source>
         <translation>nincs megadva parancs</translation>
     </message>
@@ -267,11 +281,14 @@
     <message>
         <location line="+122"/>
         <location line="+27"/>
+        <location filename="../app/cli/cli_plcopen.cpp" line="+35"/>
         <source>%1 has no model %2</source>
         <translation>a(z) %1 rendszernek nincs %2 modellje</translation>
     </message>
     <message>
         <location line="+18"/>
+        <location filename="../app/cli/cli_plcopen.cpp" line="+34"/>
+        <location line="+3"/>
         <source>error</source>
         <translation>hiba</translation>
     </message>
@@ -282,6 +299,7 @@
     </message>
     <message>
         <location line="+1"/>
+        <location filename="../app/cli/cli_plcopen.cpp" line="+50"/>
         <source>note</source>
         <translation>megjegyzés</translation>
     </message>
@@ -291,23 +309,207 @@
         <translation>a --lang értéke csak ezek egyike lehet: %1</translation>
     </message>
     <message>
-        <location filename="../app/cli/cli.cpp" line="-195"/>
-        <source>usage:
-  rungstudio-cli check FILE [--target %1] [--model M]
-  rungstudio-cli convert FILE [--target T] [--model M] [--from il|ladder|project] --to il|ladder|project [-o OUT] [--force]
-  rungstudio-cli simulate FILE [--target T] [--model M] --scans N [--period MS] [--set DEV=VALUE@SCAN]... --trace DEV[,DEV...]
-  rungstudio-cli serve FILE [--target T] [--model M] --protocol vigor|modbus|modbus-tcp|hostlink (--pty | --port NAME | --tcp HOST:PORT) [--station N] [--baud B] [--frame 8N1] [--period MS] [--fault KIND]
-FILE is a listing (.il), a ladder text (.ladder) or a project (.rung).
---lang en|hu|it: the language of the messages (else the locale&apos;s, LANG).
-Exit status: 0 no error, 1 the program has errors, 2 usage or I/O error.</source>
-        <translation>használat:
-  rungstudio-cli check FILE [--target %1] [--model M]
-  rungstudio-cli convert FILE [--target T] [--model M] [--from il|ladder|project] --to il|ladder|project [-o OUT] [--force]
-  rungstudio-cli simulate FILE [--target T] [--model M] --scans N [--period MS] [--set DEV=VALUE@SCAN]... --trace DEV[,DEV...]
-  rungstudio-cli serve FILE [--target T] [--model M] --protocol vigor|modbus|modbus-tcp|hostlink (--pty | --port NAME | --tcp HOST:PORT) [--station N] [--baud B] [--frame 8N1] [--period MS] [--fault KIND]
-A FILE utasításlista (.il), létra-szöveg (.ladder) vagy projekt (.rung).
---lang en|hu|it: az üzenetek nyelve (különben a területi beállításé, LANG).
-Kilépési kód: 0 nincs hiba, 1 a programban hiba van, 2 használati vagy I/O hiba.</translation>
+        <location filename="../app/cli/cli.cpp" line="-137"/>
+        <source>--to must be il, ladder, project or plcopen</source>
+        <translation>a --to értéke il, ladder, project vagy plcopen lehet</translation>
+    </message>
+    <message>
+        <location line="+12"/>
+        <source>--map is for --from plcopen</source>
+        <translation>a --map a --from plcopen mellé való</translation>
+    </message>
+    <message>
+        <location filename="../app/cli/cli_plcopen.cpp" line="-99"/>
+        <source>--from plcopen needs --target: which PLC the program is for</source>
+        <translation>a --from plcopen mellé --target kell: melyik PLC-hez készül a program</translation>
+    </message>
+    <message>
+        <location line="+5"/>
+        <source>unknown target %1</source>
+        <translation>ismeretlen célrendszer: %1</translation>
+    </message>
+    <message>
+        <location line="+34"/>
+        <source>%1: note: the file was written by Rung Studio for %2; it is read for %3</source>
+        <translation>%1: megjegyzés: a fájlt a Rung Studio %2 PLC-hez írta; %3 PLC-hez olvassuk be</translation>
+    </message>
+    <message>
+        <location line="+12"/>
+        <source>variable %1 (%2) names no device of %3, and none is free for it</source>
+        <translation>a(z) %1 (%2) változó nem a(z) %3 PLC operandusa, és nincs szabad operandus hozzá</translation>
+    </message>
+    <message>
+        <location line="+2"/>
+        <source>variable %1 (%2) names no device of %3; proposed: %4</source>
+        <translation>a(z) %1 (%2) változó nem a(z) %3 PLC operandusa; javasolt: %4</translation>
+    </message>
+    <message>
+        <location line="+4"/>
+        <source>A mapping file with the devices proposed (check them, then give it with --map FILE):</source>
+        <translation>Hozzárendelő fájl a javasolt operandusokkal (ellenőrizze, majd adja meg: --map FÁJL):</translation>
+    </message>
+    <message>
+        <location line="+8"/>
+        <source>nothing written: the file holds no ladder to import</source>
+        <translation>nem íródott semmi: a fájlban nincs beolvasható létradiagram</translation>
+    </message>
+    <message>
+        <location line="+6"/>
+        <source>nothing written: the file holds what %1 cannot take, listed above (--force writes the rest)</source>
+        <translation>nem íródott semmi: a fájlban olyasmi van, amit a(z) %1 nem tud fogadni, fent felsorolva (a --force a többit kiírja)</translation>
+    </message>
+    <message>
+        <location line="+6"/>
+        <source>written without what is listed above (--force)</source>
+        <translation>kiírva a fent felsoroltak nélkül (--force)</translation>
+    </message>
+</context>
+<context>
+    <name>rung::app::CompareWindow</name>
+    <message>
+        <location filename="../app/gui/compare_window.cpp" line="+46"/>
+        <source>%1 is a program for %2; the open program is for %3: only programs of one PLC are compared</source>
+        <translation>%1 program a(z) %2 PLC-hez, a megnyitott program a(z) %3 PLC-hez készült: csak azonos PLC programjai hasonlíthatók össze</translation>
+    </message>
+    <message>
+        <location line="+21"/>
+        <source>%1, line %2, column %3: %4; a file that does not read whole is not compared</source>
+        <translation>%1, %2. sor, %3. oszlop: %4; a nem teljesen beolvasható fájl nem hasonlítható össze</translation>
+    </message>
+    <message>
+        <location line="+32"/>
+        <source>Compare With</source>
+        <translation>Összehasonlítás</translation>
+    </message>
+    <message>
+        <location line="+1"/>
+        <source>Rung Studio projects (*.rung);;Instruction lists (*.il *.txt);;Ladder texts (*.ladder)</source>
+        <translation>Rung Studio projektek (*.rung);;Utasításlisták (*.il *.txt);;Létra-szövegek (*.ladder)</translation>
+    </message>
+    <message>
+        <location line="+7"/>
+        <source>Cannot compare</source>
+        <translation>Az összehasonlítás nem sikerült</translation>
+    </message>
+    <message>
+        <location line="+14"/>
+        <source>Compare: %1 and %2</source>
+        <translation>Összehasonlítás: %1 és %2</translation>
+    </message>
+    <message>
+        <location line="+3"/>
+        <source>A (left): %1        B (right): %2</source>
+        <translation>A (bal): %1        B (jobb): %2</translation>
+    </message>
+    <message>
+        <location line="+9"/>
+        <source>Ladder</source>
+        <translation>Létradiagram</translation>
+    </message>
+    <message>
+        <location line="+3"/>
+        <source>Change</source>
+        <translation>Változás</translation>
+    </message>
+    <message>
+        <location line="+0"/>
+        <source>A: %1</source>
+        <translation>A: %1</translation>
+    </message>
+    <message>
+        <location line="+0"/>
+        <source>B: %1</source>
+        <translation>B: %1</translation>
+    </message>
+    <message>
+        <location line="+11"/>
+        <source>Instruction List</source>
+        <translation>Utasításlista</translation>
+    </message>
+    <message>
+        <location line="+5"/>
+        <source>Report</source>
+        <translation>Jelentés</translation>
+    </message>
+    <message>
+        <location line="+6"/>
+        <source>&amp;Previous Change</source>
+        <translation>&amp;Előző változás</translation>
+    </message>
+    <message>
+        <location line="+1"/>
+        <source>&amp;Next Change</source>
+        <translation>&amp;Következő változás</translation>
+    </message>
+    <message>
+        <location line="+1"/>
+        <source>P&amp;rint...</source>
+        <translation>&amp;Nyomtatás...</translation>
+    </message>
+    <message>
+        <location line="+1"/>
+        <source>Previous change (Alt+Up)</source>
+        <translation>Előző változás (Alt+Fel)</translation>
+    </message>
+    <message>
+        <location line="+1"/>
+        <source>Next change (Alt+Down)</source>
+        <translation>Következő változás (Alt+Le)</translation>
+    </message>
+    <message>
+        <location line="+35"/>
+        <source>The programs are the same.</source>
+        <translation>A programok azonosak.</translation>
+    </message>
+    <message numerus="yes">
+        <location line="+1"/>
+        <source>%n rung(s) differ.</source>
+        <translation>
+            <numerusform>%n létrafok eltér.</numerusform>
+        </translation>
+    </message>
+    <message numerus="yes">
+        <location line="+7"/>
+        <source>%n difference(s) besides the rungs (symbols, set values, watch lists): see the Report.</source>
+        <translation>
+            <numerusform>%n eltérés a létrafokokon kívül (szimbólumok, beállított értékek, figyelőlisták): lásd a Jelentést.</numerusform>
+        </translation>
+    </message>
+    <message>
+        <location line="+3"/>
+        <source>Alt+Down: next change, Alt+Up: previous.</source>
+        <translation>Alt+Le: következő változás, Alt+Fel: előző.</translation>
+    </message>
+    <message>
+        <location line="+18"/>
+        <location line="+1"/>
+        <source>rung %1</source>
+        <translation>%1. létrafok</translation>
+    </message>
+    <message>
+        <location line="+17"/>
+        <source>~ changed</source>
+        <translation>~ módosítva</translation>
+    </message>
+    <message>
+        <location line="+1"/>
+        <source>+ only in B</source>
+        <translation>+ csak B-ben</translation>
+    </message>
+    <message>
+        <location line="+1"/>
+        <source>- only in A</source>
+        <translation>- csak A-ban</translation>
+    </message>
+    <message>
+        <location line="+21"/>
+        <source>No change before this one.</source>
+        <translation>Ez előtt nincs változás.</translation>
+    </message>
+    <message>
+        <location line="+1"/>
+        <source>No change after this one.</source>
+        <translation>Ez után nincs változás.</translation>
     </message>
 </context>
 <context>
@@ -691,6 +893,66 @@ PLC after serve restarts</source>
     </message>
 </context>
 <context>
+    <name>rung::app::Diff</name>
+    <message>
+        <location filename="../app/cli/cli_diff.cpp" line="+62"/>
+        <source>%1 does not read whole, so it is not compared</source>
+        <translation>%1 nem olvasható be teljesen, ezért nincs összehasonlítva</translation>
+    </message>
+    <message>
+        <location line="+12"/>
+        <source>  rungstudio-cli diff A B [--target T] [--model M] [--from il|ladder|project] [--format text|json]
+        (exit 0 the same, 1 different, 2 error)</source>
+        <translation>  rungstudio-cli diff A B [--target T] [--model M] [--from il|ladder|project] [--format text|json]
+        (kilépési kód 0 azonos, 1 eltérő, 2 hiba)</translation>
+    </message>
+    <message>
+        <location line="+6"/>
+        <source>  rungstudio-cli show FILE   (a project as text to read and diff: git&apos;s textconv)</source>
+        <translation>  rungstudio-cli show FILE   (a projekt szövegként, olvasáshoz és összehasonlításhoz: a git textconv-ja)</translation>
+    </message>
+    <message>
+        <location line="+13"/>
+        <source>%1 needs a value</source>
+        <translation>%1 után érték kell</translation>
+    </message>
+    <message>
+        <location line="+13"/>
+        <source>unknown option %1</source>
+        <translation>ismeretlen kapcsoló: %1</translation>
+    </message>
+    <message>
+        <location line="+7"/>
+        <source>diff takes two files, A and B</source>
+        <translation>a diff két fájlt vár, A-t és B-t</translation>
+    </message>
+    <message>
+        <location line="+4"/>
+        <source>--format must be text or json, not %1</source>
+        <translation>a --format értéke text vagy json lehet, nem %1</translation>
+    </message>
+    <message>
+        <location line="+26"/>
+        <source>diff needs at least one file that is not /dev/null</source>
+        <translation>a diff legalább egy olyan fájlt vár, amely nem /dev/null</translation>
+    </message>
+    <message>
+        <location line="+13"/>
+        <source>%1 is a program for %2 and %3 one for %4: only programs of one PLC are compared</source>
+        <translation>%1 program %2 PLC-hez, %3 pedig %4 PLC-hez: csak azonos PLC programjai hasonlíthatók össze</translation>
+    </message>
+    <message>
+        <location line="+17"/>
+        <source>usage:</source>
+        <translation>használat:</translation>
+    </message>
+    <message>
+        <location line="+18"/>
+        <source>not read as a project: %1</source>
+        <translation>nem olvasható projektként: %1</translation>
+    </message>
+</context>
+<context>
     <name>rung::app::ExampleTitles</name>
     <message>
         <location filename="../app/gui/example_titles.cpp" line="+19"/>
@@ -801,7 +1063,7 @@ PLC after serve restarts</source>
         <translation>Szimbólumok</translation>
     </message>
     <message>
-        <location filename="../app/gui/main_window_actions.cpp" line="+49"/>
+        <location filename="../app/gui/main_window_actions.cpp" line="+51"/>
         <source>&amp;File</source>
         <translation>&amp;Fájl</translation>
     </message>
@@ -841,7 +1103,7 @@ PLC after serve restarts</source>
         <translation>Mentés m&amp;ásként...</translation>
     </message>
     <message>
-        <location line="+3"/>
+        <location line="+7"/>
         <source>&amp;Import Instruction List...</source>
         <translation>Utasításlista &amp;importálása...</translation>
     </message>
@@ -851,7 +1113,7 @@ PLC after serve restarts</source>
         <translation>Utasításlista e&amp;xportálása...</translation>
     </message>
     <message>
-        <location line="+1"/>
+        <location line="+19"/>
         <source>Export &amp;Ladder</source>
         <translation>Létradiagram exportálá&amp;sa</translation>
     </message>
@@ -1404,7 +1666,7 @@ Ctrl+Z / Ctrl+Y: visszavonás / mégis, Ctrl+görgő: nagyítás, F4: a program 
         <location line="-4"/>
         <location line="+8"/>
         <location line="+10"/>
-        <location filename="../app/gui/main_window_panels.cpp" line="+54"/>
+        <location filename="../app/gui/main_window_panels.cpp" line="+66"/>
         <location filename="../app/gui/main_window_tools.cpp" line="+3"/>
         <source>Cannot export</source>
         <translation>Az exportálás nem sikerült</translation>
@@ -1880,6 +2142,31 @@ Ctrl+Z / Ctrl+Y: visszavonás / mégis, Ctrl+görgő: nagyítás, F4: a program 
         <source>%1: this version of Rung Studio cannot open networks (.rungnet) or test scenarios (.rungtest) in the window yet</source>
         <translation>%1: a Rung Studio ezen változata az ablakban még nem tud hálózatot (.rungnet) vagy tesztforgatókönyvet (.rungtest) megnyitni</translation>
     </message>
+    <message>
+        <location filename="../app/gui/main_window_actions.cpp" line="-284"/>
+        <source>Co&amp;mpare With...</source>
+        <translation>Össze&amp;hasonlítás...</translation>
+    </message>
+    <message>
+        <location line="+7"/>
+        <source>Import &amp;PLCopen XML...</source>
+        <translation>PLCopen XML imp&amp;ortálása...</translation>
+    </message>
+    <message>
+        <location line="+8"/>
+        <source>Expor&amp;t PLCopen XML...</source>
+        <translation>PLCopen XML expor&amp;tálása...</translation>
+    </message>
+    <message>
+        <location line="+7"/>
+        <source>The instruction list has errors, so the ladder is not the program as typed: fix the list first.</source>
+        <translation>Az utasításlistában hibák vannak, ezért a létradiagram nem a begépelt program: előbb javítsa a listát.</translation>
+    </message>
+    <message>
+        <location filename="../app/gui/main_window_panels.cpp" line="+1"/>
+        <source>Tests</source>
+        <translation>Tesztek</translation>
+    </message>
 </context>
 <context>
     <name>rung::app::Online</name>
@@ -1980,6 +2267,150 @@ A read és a write kilépési kódja: 0 kész, 1 a PLC nem válaszolt vagy eluta
         <location line="-16"/>
         <source>%1: %2</source>
         <translation>%1: %2</translation>
+    </message>
+</context>
+<context>
+    <name>rung::app::PlcopenImportDialog</name>
+    <message>
+        <location filename="../app/gui/plcopen_exchange.cpp" line="+34"/>
+        <location line="+16"/>
+        <source>Cannot export</source>
+        <translation>Az exportálás nem sikerült</translation>
+    </message>
+    <message>
+        <location line="-11"/>
+        <location line="+17"/>
+        <source>Export PLCopen XML</source>
+        <translation>PLCopen XML exportálása</translation>
+    </message>
+    <message>
+        <location line="-16"/>
+        <source>PLCopen XML (*.xml)</source>
+        <translation>PLCopen XML (*.xml)</translation>
+    </message>
+    <message>
+        <location line="+11"/>
+        <source>%1: %2</source>
+        <translation>%1: %2</translation>
+    </message>
+    <message>
+        <location line="+6"/>
+        <source>%1 is written. Other tools will read it, but not these blocks:
+
+%2</source>
+        <translation>%1 elkészült. Más eszközök beolvassák, de ezeket a blokkokat nem:
+
+%2</translation>
+    </message>
+    <message>
+        <location line="+8"/>
+        <source>Import PLCopen XML</source>
+        <translation>PLCopen XML importálása</translation>
+    </message>
+    <message>
+        <location line="+1"/>
+        <source>PLCopen XML (*.xml);;All files (*)</source>
+        <translation>PLCopen XML (*.xml);;Minden fájl (*)</translation>
+    </message>
+    <message>
+        <location line="+7"/>
+        <source>Cannot open the file</source>
+        <translation>A fájl nem nyitható meg</translation>
+    </message>
+    <message>
+        <location line="+14"/>
+        <source>Import PLCopen XML: %1</source>
+        <translation>PLCopen XML importálása: %1</translation>
+    </message>
+    <message>
+        <location line="+11"/>
+        <source>PLC family:</source>
+        <translation>PLC-család:</translation>
+    </message>
+    <message>
+        <location line="+1"/>
+        <source>Model:</source>
+        <translation>Modell:</translation>
+    </message>
+    <message>
+        <location line="+2"/>
+        <source>Variables without a device: a free one is proposed; change it where the program needs another.</source>
+        <translation>Operandus nélküli változók: a program egy szabad operandust javasol; írjon be mást, ahol a program mást kíván.</translation>
+    </message>
+    <message>
+        <location line="+5"/>
+        <source>Variable</source>
+        <translation>Változó</translation>
+    </message>
+    <message>
+        <location line="+0"/>
+        <source>Type</source>
+        <translation>Típus</translation>
+    </message>
+    <message>
+        <location line="+0"/>
+        <source>Line</source>
+        <translation>Sor</translation>
+    </message>
+    <message>
+        <location line="+0"/>
+        <source>Device</source>
+        <translation>Operandus</translation>
+    </message>
+    <message>
+        <location line="+5"/>
+        <source>Not imported (element, line and why):</source>
+        <translation>Nem kerül beolvasásra (elem, sor és ok):</translation>
+    </message>
+    <message>
+        <location line="+5"/>
+        <source>Import the rest and leave out what is listed</source>
+        <translation>A többi beolvasása, a felsoroltak kihagyásával</translation>
+    </message>
+    <message>
+        <location line="+6"/>
+        <source>&amp;Import</source>
+        <translation>&amp;Beolvasás</translation>
+    </message>
+    <message>
+        <location line="+23"/>
+        <location line="+53"/>
+        <source>(no such device)</source>
+        <translation>(nincs ilyen operandus)</translation>
+    </message>
+    <message>
+        <location line="+6"/>
+        <source>line %1: %2: %3</source>
+        <translation>%1. sor: %2: %3</translation>
+    </message>
+    <message>
+        <location line="+4"/>
+        <source>The file holds no ladder to import.</source>
+        <translation>A fájlban nincs beolvasható létradiagram.</translation>
+    </message>
+    <message numerus="yes">
+        <location line="+2"/>
+        <source>Everything in the file is imported: %n rung(s).</source>
+        <translation>
+            <numerusform>A fájl teljes tartalma beolvasásra kerül: %n létrafok.</numerusform>
+        </translation>
+    </message>
+    <message numerus="yes">
+        <location line="+3"/>
+        <source>%n item(s) of the file are not imported; %1 variable(s) have no device yet.</source>
+        <translation>
+            <numerusform>A fájl %n eleme nem kerül beolvasásra; %1 változónak még nincs operandusa.</numerusform>
+        </translation>
+    </message>
+    <message>
+        <location line="+25"/>
+        <source>Some variables still have no device: give each one a device of %1.</source>
+        <translation>Néhány változónak még nincs operandusa: adjon mindegyiknek egy %1 operandust.</translation>
+    </message>
+    <message>
+        <location line="+6"/>
+        <source>The file holds what %1 cannot take, listed here. Tick &quot;%2&quot; to import the rest.</source>
+        <translation>A fájlban olyasmi van, amit a(z) %1 nem tud fogadni, itt felsorolva. A többi beolvasásához jelölje be: „%2”.</translation>
     </message>
 </context>
 <context>
@@ -2741,6 +3172,213 @@ Kiértékelés: %4 µs (%5..%6)</translation>
     </message>
 </context>
 <context>
+    <name>rung::app::Test</name>
+    <message>
+        <location filename="../app/cli/cli_test.cpp" line="+47"/>
+        <source>  rungstudio-cli test FILE|DIR... [--junit OUT.xml]   (scenario tests, .rungtest)</source>
+        <translation>  rungstudio-cli test FILE|DIR... [--junit OUT.xml]   (forgatókönyv-tesztek, .rungtest)</translation>
+    </message>
+    <message>
+        <location line="+10"/>
+        <source>--junit needs a value</source>
+        <translation>a --junit után érték kell</translation>
+    </message>
+    <message>
+        <location line="+5"/>
+        <source>unknown option %1</source>
+        <translation>ismeretlen kapcsoló: %1</translation>
+    </message>
+    <message>
+        <location line="+7"/>
+        <source>no scenario given</source>
+        <translation>nincs megadva forgatókönyv</translation>
+    </message>
+    <message>
+        <location line="+14"/>
+        <source>%1: no .%2 file in the folder</source>
+        <translation>%1: a mappában nincs .%2 fájl</translation>
+    </message>
+    <message>
+        <location line="+7"/>
+        <source>%1: no such file or folder</source>
+        <translation>%1: nincs ilyen fájl vagy mappa</translation>
+    </message>
+    <message>
+        <location line="+21"/>
+        <source>error</source>
+        <translation>hiba</translation>
+    </message>
+    <message>
+        <location line="+5"/>
+        <source>note</source>
+        <translation>megjegyzés</translation>
+    </message>
+    <message>
+        <location line="+14"/>
+        <source>%1 scenario(s), %2 expectation(s): %3 failed; %4 scenario(s) did not pass</source>
+        <extracomment>The summary of a test run: %1 scenario files, %2 expectations, %3 failed expectations, %4 scenarios that failed or did not run.</extracomment>
+        <translation>%1 forgatókönyv, %2 elvárás: %3 nem teljesült; %4 forgatókönyv nem ment át</translation>
+    </message>
+    <message>
+        <location line="+10"/>
+        <source>cannot write %1: %2</source>
+        <translation>%1 nem írható: %2</translation>
+    </message>
+</context>
+<context>
+    <name>rung::app::TestsPanel</name>
+    <message>
+        <location filename="../app/gui/tests_panel.cpp" line="+51"/>
+        <source>unknown target %1</source>
+        <translation>ismeretlen célrendszer: %1</translation>
+    </message>
+    <message>
+        <location line="+88"/>
+        <source>Run All</source>
+        <translation>Mind futtatása</translation>
+    </message>
+    <message>
+        <location line="+1"/>
+        <source>Run</source>
+        <translation>Futtatás</translation>
+    </message>
+    <message>
+        <location line="+1"/>
+        <source>Refresh</source>
+        <translation>Frissítés</translation>
+    </message>
+    <message>
+        <location line="+1"/>
+        <source>Record...</source>
+        <translation>Rögzítés...</translation>
+    </message>
+    <message>
+        <location line="+1"/>
+        <source>Runs the selected scenario</source>
+        <translation>A kijelölt forgatókönyv futtatása</translation>
+    </message>
+    <message>
+        <location line="+1"/>
+        <source>Writes a scenario of the simulation so far: the inputs as you worked them, the outputs as they were seen</source>
+        <translation>Forgatókönyvet ír az eddigi szimulációból: a bemeneteket, ahogy kezelte őket, a kimeneteket, ahogy látszottak</translation>
+    </message>
+    <message>
+        <location line="+2"/>
+        <source>Scenario / expectation</source>
+        <translation>Forgatókönyv / elvárás</translation>
+    </message>
+    <message>
+        <location line="+0"/>
+        <source>Result</source>
+        <translation>Eredmény</translation>
+    </message>
+    <message>
+        <location line="+2"/>
+        <source>Save the project: its scenario tests (.rungtest) are the files beside it that name it</source>
+        <translation>Mentse a projektet: a forgatókönyv-tesztjei (.rungtest) a mellette lévő, rá hivatkozó fájlok</translation>
+    </message>
+    <message>
+        <location line="+60"/>
+        <source>the open program has errors: %1</source>
+        <translation>a megnyitott programban hibák vannak: %1</translation>
+    </message>
+    <message>
+        <location line="+12"/>
+        <source>No scenario test names this project</source>
+        <translation>Egy forgatókönyv-teszt sem hivatkozik erre a projektre</translation>
+    </message>
+    <message>
+        <location line="+69"/>
+        <source>not run</source>
+        <translation>nem futott</translation>
+    </message>
+    <message numerus="yes">
+        <location line="+8"/>
+        <source>passed: %n expectation(s)</source>
+        <translation>
+            <numerusform>sikeres: %n elvárás</numerusform>
+        </translation>
+    </message>
+    <message numerus="yes">
+        <location line="+5"/>
+        <source>FAILED: %n expectation(s)</source>
+        <translation>
+            <numerusform>SIKERTELEN: %n elvárás</numerusform>
+        </translation>
+    </message>
+    <message>
+        <location line="+2"/>
+        <source>did not run</source>
+        <translation>nem futott le</translation>
+    </message>
+    <message>
+        <location line="+6"/>
+        <source>line %1</source>
+        <translation>%1. sor</translation>
+    </message>
+    <message>
+        <location line="+1"/>
+        <source>error: %1</source>
+        <translation>hiba: %1</translation>
+    </message>
+    <message>
+        <location line="+5"/>
+        <location line="+46"/>
+        <source>line %1: %2</source>
+        <translation>%1. sor: %2</translation>
+    </message>
+    <message>
+        <location line="-41"/>
+        <source>ok</source>
+        <translation>rendben</translation>
+    </message>
+    <message>
+        <location line="+3"/>
+        <source>FAILED: %1 (double-click: the timing chart)</source>
+        <translation>SIKERTELEN: %1 (dupla kattintás: idődiagram)</translation>
+    </message>
+    <message>
+        <location line="+10"/>
+        <source>Scenario tests: %1 passed, %2 failed</source>
+        <translation>Forgatókönyv-tesztek: %1 sikeres, %2 sikertelen</translation>
+    </message>
+    <message>
+        <location line="+26"/>
+        <source>Timing chart of %1, line %2</source>
+        <translation>%1 idődiagramja, %2. sor</translation>
+    </message>
+    <message>
+        <location line="+26"/>
+        <source>Nothing to record: start a simulation and work its inputs first</source>
+        <translation>Nincs mit rögzíteni: előbb indítson szimulációt és kezelje a bemeneteit</translation>
+    </message>
+    <message>
+        <location line="+35"/>
+        <location line="+9"/>
+        <location line="+3"/>
+        <location line="+8"/>
+        <location line="+6"/>
+        <location line="+5"/>
+        <source>Record a Scenario</source>
+        <translation>Forgatókönyv rögzítése</translation>
+    </message>
+    <message>
+        <location line="-30"/>
+        <source>Save the project first: a scenario names the project&apos;s file.</source>
+        <translation>Előbb mentse a projektet: a forgatókönyv a projekt fájljára hivatkozik.</translation>
+    </message>
+    <message>
+        <location line="+12"/>
+        <source>Scenario tests (*.rungtest)</source>
+        <translation>Forgatókönyv-tesztek (*.rungtest)</translation>
+    </message>
+    <message>
+        <location line="+21"/>
+        <source>Recorded %1</source>
+        <translation>Rögzítve: %1</translation>
+    </message>
+</context>
+<context>
     <name>rung::app::VirtualPlc</name>
     <message>
         <location filename="../app/virtual_plc/virtual_plc.cpp" line="+101"/>
@@ -2939,7 +3577,7 @@ Kiértékelés: %4 µs (%5..%6)</translation>
         <translation>%1 nincs csatlakoztatva: semmi sem lett elküldve</translation>
     </message>
     <message>
-        <location line="+182"/>
+        <location line="+183"/>
         <source>Connection lost: %1. Trying again.</source>
         <translation>Megszakadt a kapcsolat: %1. Újrapróbálkozás.</translation>
     </message>
@@ -2954,12 +3592,12 @@ Kiértékelés: %4 µs (%5..%6)</translation>
         <translation>%1 nem érhető el: %2. Újrapróbálkozás.</translation>
     </message>
     <message>
-        <location line="-198"/>
+        <location line="-199"/>
         <source>%1 cannot force bits: its protocol has no force command. Set the bit instead (the program may overwrite it).</source>
         <translation>%1 nem tud biteket kényszeríteni: a protokolljának nincs kényszerítő parancsa. Állítsa inkább a bitet (a program felülírhatja).</translation>
     </message>
     <message>
-        <location line="+257"/>
+        <location line="+258"/>
         <source>Cannot connect to %1: %2</source>
         <translation>Nem sikerült kapcsolódni ide: %1: %2</translation>
     </message>
@@ -3591,6 +4229,64 @@ Kiértékelés: %4 µs (%5..%6)</translation>
         <location line="+6"/>
         <source>%1 (%2) failed: %3</source>
         <translation>%1 (%2) hibára futott: %3</translation>
+    </message>
+</context>
+<context>
+    <name>rung::editor::CompareView</name>
+    <message>
+        <location filename="../editor/compare_view.cpp" line="+49"/>
+        <source>the same</source>
+        <translation>azonos</translation>
+    </message>
+    <message>
+        <location line="+2"/>
+        <source>moved</source>
+        <translation>áthelyezve</translation>
+    </message>
+    <message>
+        <location line="+2"/>
+        <source>changed</source>
+        <translation>módosítva</translation>
+    </message>
+    <message>
+        <location line="+2"/>
+        <source>moved and changed</source>
+        <translation>áthelyezve és módosítva</translation>
+    </message>
+    <message>
+        <location line="+2"/>
+        <source>inserted</source>
+        <translation>beszúrva</translation>
+    </message>
+    <message>
+        <location line="+2"/>
+        <source>deleted</source>
+        <translation>törölve</translation>
+    </message>
+    <message>
+        <location line="+166"/>
+        <source>Both programs are empty.</source>
+        <translation>Mindkét program üres.</translation>
+    </message>
+    <message>
+        <location line="+47"/>
+        <source>A: rung %1</source>
+        <translation>A: %1. létrafok</translation>
+    </message>
+    <message>
+        <location line="+3"/>
+        <source>B: rung %1</source>
+        <translation>B: %1. létrafok</translation>
+    </message>
+    <message>
+        <location line="+46"/>
+        <source>(not in A)</source>
+        <translation>(A-ban nincs)</translation>
+    </message>
+    <message>
+        <location line="+0"/>
+        <source>(not in B)</source>
+        <translation>(B-ben nincs)</translation>
     </message>
 </context>
 <context>
@@ -4378,7 +5074,7 @@ Kiértékelés: %4 µs (%5..%6)</translation>
         <translation>Eltávolítás</translation>
     </message>
     <message>
-        <location line="+102"/>
+        <location line="+109"/>
         <source>A: %1</source>
         <translation>A: %1</translation>
     </message>
@@ -5232,6 +5928,216 @@ Kiértékelés: %4 µs (%5..%6)</translation>
     </message>
 </context>
 <context>
+    <name>rung::model::Compare</name>
+    <message>
+        <location filename="../model/compare/compare_report.cpp" line="+24"/>
+        <source>the same</source>
+        <translation>azonos</translation>
+    </message>
+    <message>
+        <location line="+2"/>
+        <source>moved</source>
+        <translation>áthelyezve</translation>
+    </message>
+    <message>
+        <location line="+2"/>
+        <source>changed</source>
+        <translation>módosítva</translation>
+    </message>
+    <message>
+        <location line="+2"/>
+        <source>moved and changed</source>
+        <translation>áthelyezve és módosítva</translation>
+    </message>
+    <message>
+        <location line="+2"/>
+        <source>inserted</source>
+        <translation>beszúrva</translation>
+    </message>
+    <message>
+        <location line="+2"/>
+        <source>deleted</source>
+        <translation>törölve</translation>
+    </message>
+    <message>
+        <location line="+8"/>
+        <source>contact</source>
+        <translation>érintkező</translation>
+    </message>
+    <message>
+        <location line="+2"/>
+        <source>output</source>
+        <translation>kimenet</translation>
+    </message>
+    <message>
+        <location line="+4"/>
+        <source>branches</source>
+        <translation>ágak</translation>
+    </message>
+    <message>
+        <location line="+41"/>
+        <source>name</source>
+        <translation>név</translation>
+    </message>
+    <message>
+        <location line="+2"/>
+        <source>comment</source>
+        <translation>megjegyzés</translation>
+    </message>
+    <message>
+        <location line="+12"/>
+        <source>- rung %1 of A: %2</source>
+        <extracomment>A rung only in the first program (A): %1 its number there, %2 &quot;deleted&quot;.</extracomment>
+        <translation>- A %1. létrafoka: %2</translation>
+    </message>
+    <message>
+        <location line="+3"/>
+        <source>+ rung %1 of B: %2</source>
+        <extracomment>A rung only in the second program (B): %1 its number there, %2 &quot;inserted&quot;.</extracomment>
+        <translation>+ B %1. létrafoka: %2</translation>
+    </message>
+    <message>
+        <location line="+2"/>
+        <source>rung %1: %2</source>
+        <translation>%1. létrafok: %2</translation>
+    </message>
+    <message>
+        <location line="+2"/>
+        <source>rung %1 -&gt; %2: %3</source>
+        <extracomment>A rung of A (number %1) that is rung %2 of B, and what happened to it (%3).</extracomment>
+        <translation>%1. -&gt; %2. létrafok: %3</translation>
+    </message>
+    <message>
+        <location line="+19"/>
+        <source>+ %1 added: %2</source>
+        <translation>+ %1 hozzáadva: %2</translation>
+    </message>
+    <message>
+        <location line="+3"/>
+        <source>- %1 removed: %2</source>
+        <translation>- %1 eltávolítva: %2</translation>
+    </message>
+    <message>
+        <location line="+4"/>
+        <source>* the branches joining the contacts changed</source>
+        <translation>* az érintkezőket összekötő ágak megváltoztak</translation>
+    </message>
+    <message>
+        <location line="+3"/>
+        <source>* %1 changed: %2 -&gt; %3</source>
+        <translation>* %1 módosítva: %2 -&gt; %3</translation>
+    </message>
+    <message>
+        <location line="+5"/>
+        <source>operand %1: %2 -&gt; %3</source>
+        <extracomment>An operand that changed: %1 its number (1 = the first), %2 and %3 the old and the new operand.</extracomment>
+        <translation>%1. operandus: %2 -&gt; %3</translation>
+    </message>
+    <message>
+        <location line="+8"/>
+        <source>* comment changed: %1 -&gt; %2</source>
+        <translation>* megjegyzés módosítva: %1 -&gt; %2</translation>
+    </message>
+    <message>
+        <location line="+8"/>
+        <source>+ %1 added: %2 %3</source>
+        <extracomment>%1 what (&quot;symbol X0&quot;, &quot;set value T0&quot;), %2 the field (&quot;name&quot;, &quot;comment&quot;, &quot;value&quot;).</extracomment>
+        <translation>+ %1 hozzáadva: %2 %3</translation>
+    </message>
+    <message>
+        <location line="+2"/>
+        <source>- %1 removed: %2 %3</source>
+        <translation>- %1 eltávolítva: %2 %3</translation>
+    </message>
+    <message>
+        <location line="+4"/>
+        <source>* %1 changed: %2 %3 -&gt; %4</source>
+        <translation>* %1 módosítva: %2 %3 -&gt; %4</translation>
+    </message>
+    <message>
+        <location line="+7"/>
+        <source>+ watch list %1 added: %2</source>
+        <translation>+ %1 figyelőlista hozzáadva: %2</translation>
+    </message>
+    <message>
+        <location line="+1"/>
+        <source>- watch list %1 removed: %2</source>
+        <translation>- %1 figyelőlista eltávolítva: %2</translation>
+    </message>
+    <message>
+        <location line="+2"/>
+        <source>+ watch list %1: %2 added</source>
+        <translation>+ %1 figyelőlista: %2 hozzáadva</translation>
+    </message>
+    <message>
+        <location line="+1"/>
+        <source>- watch list %1: %2 removed</source>
+        <translation>- %1 figyelőlista: %2 eltávolítva</translation>
+    </message>
+    <message>
+        <location line="+2"/>
+        <source>* watch list %1: the order changed: %2 -&gt; %3</source>
+        <translation>* %1 figyelőlista: a sorrend megváltozott: %2 -&gt; %3</translation>
+    </message>
+    <message>
+        <location line="+3"/>
+        <source>* watch list %1: %2 shown as %3 -&gt; %4</source>
+        <extracomment>A watch list row shown in another format: %1 the list, %2 the device, %3 and %4 the formats (dec, signed, hex, bin, bcd).</extracomment>
+        <translation>* %1 figyelőlista: %2 megjelenítése %3 -&gt; %4</translation>
+    </message>
+    <message>
+        <location line="+7"/>
+        <source>+ B holds an instruction list typed with errors that is not in its rungs (pendingListing)</source>
+        <translation>+ B egy hibásan begépelt utasításlistát tartalmaz, amely nincs a létrafokaiban (pendingListing)</translation>
+    </message>
+    <message>
+        <location line="+3"/>
+        <source>- A holds an instruction list typed with errors that is not in its rungs (pendingListing)</source>
+        <translation>- A egy hibásan begépelt utasításlistát tartalmaz, amely nincs a létrafokaiban (pendingListing)</translation>
+    </message>
+    <message>
+        <location line="+5"/>
+        <source>* the instruction lists typed with errors that are not in the rungs differ (pendingListing)</source>
+        <translation>* a hibásan begépelt, a létrafokokban nem szereplő utasításlisták eltérnek (pendingListing)</translation>
+    </message>
+    <message>
+        <location line="+3"/>
+        <source>+ symbol row not yet a symbol: %1</source>
+        <translation>+ még nem szimbólum sor: %1</translation>
+    </message>
+    <message>
+        <location line="+1"/>
+        <source>- symbol row not yet a symbol: %1</source>
+        <translation>- még nem szimbólum sor: %1</translation>
+    </message>
+    <message>
+        <location line="+27"/>
+        <source>* model changed: %1 -&gt; %2</source>
+        <translation>* modell módosítva: %1 -&gt; %2</translation>
+    </message>
+    <message>
+        <location line="+5"/>
+        <source>symbol %1</source>
+        <translation>%1 szimbólum</translation>
+    </message>
+    <message>
+        <location line="+2"/>
+        <source>set value %1</source>
+        <translation>%1 beállított érték</translation>
+    </message>
+    <message>
+        <location line="+10"/>
+        <source>The programs are the same (rungs: %1).</source>
+        <translation>A programok azonosak (létrafokok: %1).</translation>
+    </message>
+    <message>
+        <location line="+3"/>
+        <source>Rungs: %1 in A, %2 in B; %3 the same, %4 moved, %5 changed, %6 moved and changed, %7 inserted, %8 deleted.</source>
+        <extracomment>The summary of a comparison: %1 rungs in A, %2 in B, then how many of each kind.</extracomment>
+        <translation>Létrafokok: %1 az A-ban, %2 a B-ben; %3 azonos, %4 áthelyezve, %5 módosítva, %6 áthelyezve és módosítva, %7 beszúrva, %8 törölve.</translation>
+    </message>
+</context>
+<context>
     <name>rung::model::Convert</name>
     <message>
         <location filename="../model/convert/convert_to_ladder.cpp" line="+219"/>
@@ -5592,9 +6498,207 @@ Kiértékelés: %4 µs (%5..%6)</translation>
     </message>
 </context>
 <context>
+    <name>rung::model::Plcopen</name>
+    <message>
+        <location filename="../model/exchange/plcopen_import.cpp" line="+120"/>
+        <source>not a PLCopen TC6 XML 2.01 project (the root is &lt;%1&gt; in &quot;%2&quot;, &lt;project&gt; in &quot;%3&quot; is expected)</source>
+        <translation>nem PLCopen TC6 XML 2.01 projekt (a gyökér &lt;%1&gt; a(z) „%2” névtérben, &lt;project&gt; várható a(z) „%3” névtérben)</translation>
+    </message>
+    <message>
+        <location line="+18"/>
+        <source>a second program is not imported: a project is one ladder (the first program, %1, is)</source>
+        <translation>a második program nem kerül beolvasásra: egy projekt egy létradiagram (az első program, %1, igen)</translation>
+    </message>
+    <message>
+        <location line="+3"/>
+        <source>a %1 is not imported: %2 runs one ladder, with no user functions or function blocks</source>
+        <translation>%1 nem kerül beolvasásra: a(z) %2 egy létradiagramot futtat, felhasználói függvények és funkcióblokkok nélkül</translation>
+    </message>
+    <message>
+        <location line="+5"/>
+        <source>the file has no program</source>
+        <translation>a fájlban nincs program</translation>
+    </message>
+    <message>
+        <location line="+15"/>
+        <source>a body in %1 is not imported: only ladder (LD) is</source>
+        <translation>a(z) %1 nyelvű törzs nem kerül beolvasásra: csak a létradiagram (LD)</translation>
+    </message>
+    <message>
+        <location line="+6"/>
+        <source>the program has no ladder (LD) body</source>
+        <translation>a programnak nincs létradiagram (LD) törzse</translation>
+    </message>
+    <message>
+        <location line="+131"/>
+        <source>the mapping file gives %1: %2</source>
+        <translation>a hozzárendelő fájl szerint %1: %2</translation>
+    </message>
+    <message>
+        <location line="+12"/>
+        <source>%1 at %2: %3 has no such device (docs/plcopen.md, located variables); give one in a mapping file</source>
+        <translation>%1 itt: %2: a(z) %3 PLC-nek nincs ilyen operandusa (docs/plcopen.md, címzett változók); adjon meg egyet hozzárendelő fájlban</translation>
+    </message>
+    <message>
+        <location line="+135"/>
+        <source>input %1 is not a variable or a literal</source>
+        <translation>a(z) %1 bemenet nem változó és nem konstans</translation>
+    </message>
+    <message>
+        <location line="+28"/>
+        <source>line %1: &quot;%2&quot; is not NAME = DEVICE</source>
+        <translation>%1. sor: „%2” nem NÉV = OPERANDUS alakú</translation>
+    </message>
+    <message>
+        <location filename="../model/exchange/plcopen_power.cpp" line="+47"/>
+        <source>its input is connected to nothing: not imported</source>
+        <translation>a bemenete semmihez sem kapcsolódik: nem kerül beolvasásra</translation>
+    </message>
+    <message>
+        <location line="+83"/>
+        <source>it is connected to element %1, which the file does not have</source>
+        <translation>a(z) %1 elemhez kapcsolódik, amely nincs a fájlban</translation>
+    </message>
+    <message>
+        <location line="+7"/>
+        <source>the power flow runs in a loop: not imported</source>
+        <translation>az áramút körbe fut: nem kerül beolvasásra</translation>
+    </message>
+    <message>
+        <location line="+25"/>
+        <source>a contact both negated and on an edge is not imported</source>
+        <translation>a nyitó és egyben élvezérelt érintkező nem kerül beolvasásra</translation>
+    </message>
+    <message>
+        <location line="+8"/>
+        <source>%1 has no such contact</source>
+        <translation>a(z) %1 PLC-nek nincs ilyen érintkezője</translation>
+    </message>
+    <message>
+        <location line="+15"/>
+        <source>no connector is named %1</source>
+        <translation>nincs %1 nevű csatlakozó</translation>
+    </message>
+    <message>
+        <location line="+6"/>
+        <source>a %1 carries no power flow %2 can take</source>
+        <translation>a(z) %1 nem visz olyan áramutat, amelyet a(z) %2 fogadni tud</translation>
+    </message>
+    <message>
+        <location line="+33"/>
+        <source>a comparison needs IN1 and IN2</source>
+        <translation>az összehasonlításhoz IN1 és IN2 kell</translation>
+    </message>
+    <message>
+        <location line="+16"/>
+        <source>%1 has no compare contact %2</source>
+        <translation>a(z) %1 PLC-nek nincs %2 összehasonlító érintkezője</translation>
+    </message>
+    <message>
+        <location line="+28"/>
+        <source>%1 has no element for %2 in the power flow</source>
+        <translation>a(z) %1 PLC-nek nincs az áramútban %2 elemnek megfelelő eleme</translation>
+    </message>
+    <message>
+        <location line="+19"/>
+        <source>output %1 of %2 as power flow is not imported</source>
+        <translation>a(z) %2 %1 kimenete áramútként nem kerül beolvasásra</translation>
+    </message>
+    <message>
+        <location line="+23"/>
+        <source>one instruction is expected</source>
+        <translation>egy utasítás várható</translation>
+    </message>
+    <message>
+        <location line="+37"/>
+        <source>a negated coil that also sets, resets or pulses is not imported</source>
+        <translation>a negált tekercs, amely egyben beír, töröl vagy impulzust ad, nem kerül beolvasásra</translation>
+    </message>
+    <message>
+        <location line="+6"/>
+        <source>%1 has no such coil</source>
+        <translation>a(z) %1 PLC-nek nincs ilyen tekercse</translation>
+    </message>
+    <message>
+        <location line="+23"/>
+        <source>PT must be a time literal (T#1s) to be a set value: not imported</source>
+        <translation>a PT-nek időkonstansnak (T#1s) kell lennie, hogy beállított érték legyen: nem kerül beolvasásra</translation>
+    </message>
+    <message>
+        <location line="+10"/>
+        <source>%1 has no pulse timer (TP)</source>
+        <translation>a(z) %1 PLC-nek nincs impulzusidőzítője (TP)</translation>
+    </message>
+    <message>
+        <location line="+19"/>
+        <source>%1 has no %2 timer that times %3 ms on %4</source>
+        <translation>a(z) %1 PLC-nek nincs olyan %2 időzítője, amely %3 ms-ot mér a(z) %4 operandussal</translation>
+    </message>
+    <message>
+        <location line="+88"/>
+        <source>MOVE&apos;s OUT goes to no variable: not imported</source>
+        <translation>a MOVE OUT kimenete nem megy változóba: nem kerül beolvasásra</translation>
+    </message>
+    <message>
+        <location line="+16"/>
+        <source>%1 has no move instruction</source>
+        <translation>a(z) %1 PLC-nek nincs mozgató utasítása</translation>
+    </message>
+    <message>
+        <location filename="../model/exchange/plcopen_rungs.cpp" line="+226"/>
+        <source>the ladder does not use it and it names no device: not imported</source>
+        <translation>a létradiagram nem használja, és nem jelöl operandust: nem kerül beolvasásra</translation>
+    </message>
+    <message>
+        <location line="+115"/>
+        <source>IEC jumps, labels and returns are not imported: %1&apos;s own jumps work otherwise; write them in Rung Studio</source>
+        <translation>az IEC ugrások, címkék és visszatérések nem kerülnek beolvasásra: a(z) %1 saját ugrásai másként működnek; írja meg őket a Rung Studióban</translation>
+    </message>
+    <message>
+        <location line="+5"/>
+        <source>this block is not imported: contacts, coils, TON, TOF, MOVE, the comparisons, NOT, R_TRIG and F_TRIG are (docs/plcopen.md)</source>
+        <translation>ez a blokk nem kerül beolvasásra: az érintkezők, tekercsek, TON, TOF, MOVE, az összehasonlítások, NOT, R_TRIG és F_TRIG igen (docs/plcopen.md)</translation>
+    </message>
+    <message>
+        <location line="+4"/>
+        <source>its power comes from %1 (line %2), which is not imported</source>
+        <translation>az áramútja innen jön: %1 (%2. sor), amely nem kerül beolvasásra</translation>
+    </message>
+    <message>
+        <location line="+5"/>
+        <source>its power goes to %1 (line %2), which is not imported</source>
+        <translation>az áramútja ide megy: %1 (%2. sor), amely nem kerül beolvasásra</translation>
+    </message>
+    <message>
+        <location line="+4"/>
+        <source>no output uses it: not imported</source>
+        <translation>egyetlen kimenet sem használja: nem kerül beolvasásra</translation>
+    </message>
+    <message>
+        <location filename="../model/exchange/plcopen_write.cpp" line="+99"/>
+        <source>%1 is written as a block of %2&apos;s own: other tools read the file but do not know this block</source>
+        <translation>a(z) %1 a(z) %2 saját blokkjaként íródik ki: más eszközök beolvassák a fájlt, de ezt a blokkot nem ismerik</translation>
+    </message>
+    <message>
+        <location filename="../model/exchange/plcopen_xml.cpp" line="+28"/>
+        <source>line %1: the XML nests deeper than %2 levels</source>
+        <translation>%1. sor: az XML %2 szintnél mélyebben ágyazott</translation>
+    </message>
+    <message>
+        <location line="+26"/>
+        <source>line %1, column %2: the file is not well-formed XML (%3)</source>
+        <translation>%1. sor, %2. oszlop: a fájl nem szabályos XML (%3)</translation>
+    </message>
+    <message>
+        <location line="+7"/>
+        <source>the file holds no XML element</source>
+        <translation>a fájlban nincs XML elem</translation>
+    </message>
+</context>
+<context>
     <name>rung::model::Project</name>
     <message>
-        <location filename="../model/project/project.cpp" line="+110"/>
+        <location filename="../model/project/project.cpp" line="+211"/>
         <source>Line %1, column %2 (byte %3): the file is not valid JSON (%4)</source>
         <translation>%1. sor, %2. oszlop (%3. bájt): a fájl nem érvényes JSON (%4)</translation>
     </message>
@@ -5760,7 +6864,7 @@ Kiértékelés: %4 µs (%5..%6)</translation>
         <translation>%1: a fájl nagyobb %2 MB-nál, ennél többet a Rung Studio nem olvas be</translation>
     </message>
     <message>
-        <location filename="../model/project/project.cpp" line="+131"/>
+        <location filename="../model/project/project.cpp" line="+149"/>
         <source>%1: cannot write the file (%2)</source>
         <translation>%1: a fájl nem írható (%2)</translation>
     </message>
@@ -7644,6 +8748,202 @@ Kiértékelés: %4 µs (%5..%6)</translation>
         <location line="+24"/>
         <source>that scan is no longer recorded</source>
         <translation>az a ciklus már nincs rögzítve</translation>
+    </message>
+</context>
+<context>
+    <name>rung::simulator::Scenario</name>
+    <message>
+        <location filename="../simulator/scenario_parse.cpp" line="+56"/>
+        <source>%1: a number of scans is whole</source>
+        <translation>%1: a ciklusok száma egész szám</translation>
+    </message>
+    <message>
+        <location line="+14"/>
+        <source>%1 is more than a week of virtual time</source>
+        <translation>%1 több mint egy hét virtuális idő</translation>
+    </message>
+    <message>
+        <location line="+4"/>
+        <source>%1 is not a whole number of milliseconds</source>
+        <translation>%1 nem egész számú ezredmásodperc</translation>
+    </message>
+    <message>
+        <location line="+43"/>
+        <source>%1 is no time</source>
+        <translation>%1 nem időtartam</translation>
+    </message>
+    <message>
+        <location line="+5"/>
+        <source>a scenario runs one program; the first is on line %1</source>
+        <translation>egy forgatókönyv egy programot futtat; az első a(z) %1. sorban van</translation>
+    </message>
+    <message>
+        <location line="+16"/>
+        <source>unknown option %1 (--target, --model)</source>
+        <translation>ismeretlen kapcsoló: %1 (--target, --model)</translation>
+    </message>
+    <message>
+        <location line="+7"/>
+        <source>the period is a time of at least 1 ms</source>
+        <translation>a ciklusidő legalább 1 ms</translation>
+    </message>
+    <message>
+        <location line="+36"/>
+        <source>&quot;%1&quot; is no statement (program, period, at TIME set|force|release|expect, within TIME expect, always expect, run TIME)</source>
+        <translation>„%1” nem utasítás (program, period, at IDŐ set|force|release|expect, within IDŐ expect, always expect, run IDŐ)</translation>
+    </message>
+    <message>
+        <location line="+6"/>
+        <source>the statement says nothing after its verb</source>
+        <translation>az utasítás igéje után nincs semmi</translation>
+    </message>
+    <message>
+        <location line="+6"/>
+        <source>no program: a scenario starts with &quot;program FILE&quot;</source>
+        <translation>nincs program: a forgatókönyv „program FÁJL” sorral kezdődik</translation>
+    </message>
+    <message>
+        <location filename="../simulator/scenario_run.cpp" line="+116"/>
+        <source>&quot;%1&quot; is not understood here</source>
+        <translation>„%1” itt nem értelmezhető</translation>
+    </message>
+    <message>
+        <location line="+11"/>
+        <source>%1 is no device</source>
+        <translation>%1 nem operandus</translation>
+    </message>
+    <message>
+        <location line="+2"/>
+        <source>%1: only bits are forced</source>
+        <translation>%1: csak bitek kényszeríthetők</translation>
+    </message>
+    <message>
+        <location line="+3"/>
+        <source>%1 needs =VALUE</source>
+        <translation>%1 után =ÉRTÉK kell</translation>
+    </message>
+    <message>
+        <location line="+6"/>
+        <source>%1 is no value (a number, ON or OFF, #hex digits)</source>
+        <translation>%1 nem érték (szám, ON vagy OFF, #hexa számjegyek)</translation>
+    </message>
+    <message>
+        <location line="+6"/>
+        <source>DEVICE=VALUE is expected</source>
+        <translation>OPERANDUS=ÉRTÉK várható</translation>
+    </message>
+    <message>
+        <location line="+11"/>
+        <source>%1: only bits are forced and released</source>
+        <translation>%1: csak bitek kényszeríthetők és oldhatók fel</translation>
+    </message>
+    <message>
+        <location line="+85"/>
+        <source>a device or a value is missing at the end</source>
+        <translation>a végéről hiányzik egy operandus vagy érték</translation>
+    </message>
+    <message>
+        <location line="+1"/>
+        <source>a device or a value is expected at &quot;%1&quot;</source>
+        <translation>operandus vagy érték várható itt: „%1”</translation>
+    </message>
+    <message>
+        <location line="+45"/>
+        <source>%1 is no device of %2: %3</source>
+        <translation>%1 nem operandusa a(z) %2 PLC-nek: %3</translation>
+    </message>
+    <message>
+        <location line="+9"/>
+        <source>%1: cv: and sv: name a timer&apos;s or a counter&apos;s current and set value</source>
+        <translation>%1: a cv: és az sv: egy időzítő vagy számláló aktuális és beállított értékét jelöli</translation>
+    </message>
+    <message>
+        <location line="+60"/>
+        <source>a &quot;)&quot; is missing</source>
+        <translation>hiányzik egy „)”</translation>
+    </message>
+    <message>
+        <location line="+27"/>
+        <source>%1 is a word: compare it (%1=5, %1&gt;100)</source>
+        <translation>%1 egy szó: hasonlítsa össze (%1=5, %1&gt;100)</translation>
+    </message>
+    <message>
+        <location line="+1"/>
+        <source>%1 alone is no condition</source>
+        <translation>%1 önmagában nem feltétel</translation>
+    </message>
+    <message>
+        <location line="+61"/>
+        <source>at %1 comes before line %2&apos;s %3: statements stand in the order of their times</source>
+        <translation>az at %1 korábbi, mint a(z) %2. sor %3 ideje: az utasítások időrendben követik egymást</translation>
+    </message>
+    <message>
+        <location line="+130"/>
+        <source>%1: the run was already at %2 (the statement before waited until then), so at %3 could not be checked</source>
+        <translation>%1: a futás már %2-nál tartott (az előző utasítás addig várt), ezért az at %3 nem volt ellenőrizhető</translation>
+    </message>
+    <message>
+        <location line="+13"/>
+        <source>at %1: expected %2, seen %3</source>
+        <extracomment>A failed expectation: %1 the time, %2 what was expected, %3 the devices&apos; values then (&quot;Y0=1 Y1=0&quot;).</extracomment>
+        <translation>%1-kor: elvárt %2, tapasztalt %3</translation>
+    </message>
+    <message>
+        <location line="+25"/>
+        <source>within %1 of %2 (until %3): expected %4, seen %5</source>
+        <extracomment>%1 the time allowed (&quot;2s&quot;), %2 the time it counted from, %3 until when, %4 what was expected, %5 the values seen at the end.</extracomment>
+        <translation>%2 után %1-on belül (%3-ig): elvárt %4, tapasztalt %5</translation>
+    </message>
+    <message>
+        <location line="+24"/>
+        <source>at %1: expected always %2, seen %3 (failed in %4 of %5 scans)</source>
+        <extracomment>An `always` expectation that failed: %1 the first time, %2 what was expected, %3 the values then, %4 the scans it failed in, %5 the scans run.</extracomment>
+        <translation>%1-kor: mindig elvárt %2, tapasztalt %3 (%5 ciklusból %4-ban nem teljesült)</translation>
+    </message>
+    <message>
+        <location line="+13"/>
+        <source>runtime error at step %1: %2</source>
+        <translation>futásidejű hiba a(z) %1. lépésnél: %2</translation>
+    </message>
+    <message>
+        <location line="+22"/>
+        <source>the program does not start</source>
+        <translation>a program nem indul el</translation>
+    </message>
+    <message>
+        <location filename="../simulator/scenario_record.cpp" line="+39"/>
+        <source>the simulation has run no scan yet: run it, work its inputs, then record</source>
+        <translation>a szimuláció még egy ciklust sem futott: indítsa el, kezelje a bemeneteit, aztán rögzítsen</translation>
+    </message>
+    <message>
+        <location line="+5"/>
+        <source>the simulation&apos;s history no longer holds its start (it keeps the last hour): stop it, run it again and record sooner</source>
+        <translation>a szimuláció előzménye már nem tartalmazza a kezdetét (az utolsó órát őrzi): állítsa le, indítsa újra, és rögzítsen hamarabb</translation>
+    </message>
+    <message>
+        <location line="+7"/>
+        <source>Recorded from a simulation: the inputs as they were worked, the outputs as they were seen.</source>
+        <translation>Szimulációból rögzítve: a bemenetek, ahogy kezelték őket, a kimenetek, ahogy látszottak.</translation>
+    </message>
+    <message>
+        <location line="+33"/>
+        <source>a command given while a scan was stopped inside is applied at the start of the next scan</source>
+        <translation>a ciklus belsejében megállított állapotban adott parancs a következő ciklus elején érvényesül</translation>
+    </message>
+    <message>
+        <location line="+5"/>
+        <source>the period was changed during the simulation: the scenario runs at the first one, %1 ms</source>
+        <translation>a ciklusidő a szimuláció közben változott: a forgatókönyv az elsővel fut, %1 ms</translation>
+    </message>
+    <message>
+        <location line="+27"/>
+        <source>a power cycle, reset or online edit at %1 is not in the scenario</source>
+        <translation>a(z) %1 időpontbeli tápciklus, alaphelyzetbe állítás vagy online szerkesztés nincs a forgatókönyvben</translation>
+    </message>
+    <message>
+        <location filename="../simulator/scenario_trace.cpp" line="+60"/>
+        <source>a scenario&apos;s run is read-only</source>
+        <translation>a forgatókönyv futása csak olvasható</translation>
     </message>
 </context>
 <context>

@@ -178,18 +178,32 @@
 <context>
     <name>rung::app::Cli</name>
     <message>
-        <location filename="../app/cli/cli.cpp" line="+55"/>
-        <location line="+45"/>
+        <location filename="../app/cli/cli.cpp" line="+59"/>
+        <location line="+48"/>
         <source>unexpected argument %1</source>
         <translation>argomento non previsto: %1</translation>
     </message>
     <message>
-        <location line="+6"/>
-        <source>--to must be il, ladder or project</source>
-        <translation>--to deve essere il, ladder o project</translation>
+        <location line="-74"/>
+        <source>usage:
+  rungstudio-cli check FILE [--target %1] [--model M]
+  rungstudio-cli convert FILE [--target T] [--model M] [--from il|ladder|project|plcopen] --to il|ladder|project|plcopen [-o OUT] [--force] [--map FILE]
+  rungstudio-cli simulate FILE [--target T] [--model M] --scans N [--period MS] [--set DEV=VALUE@SCAN]... --trace DEV[,DEV...]
+  rungstudio-cli serve FILE [--target T] [--model M] --protocol vigor|modbus|modbus-tcp|hostlink (--pty | --port NAME | --tcp HOST:PORT) [--station N] [--baud B] [--frame 8N1] [--period MS] [--fault KIND]
+FILE is a listing (.il), a ladder text (.ladder) or a project (.rung).
+--lang en|hu|it: the language of the messages (else the locale&apos;s, LANG).
+Exit status: 0 no error, 1 the program has errors, 2 usage or I/O error.</source>
+        <translation>uso:
+  rungstudio-cli check FILE [--target %1] [--model M]
+  rungstudio-cli convert FILE [--target T] [--model M] [--from il|ladder|project|plcopen] --to il|ladder|project|plcopen [-o OUT] [--force] [--map FILE]
+  rungstudio-cli simulate FILE [--target T] [--model M] --scans N [--period MS] [--set DEV=VALUE@SCAN]... --trace DEV[,DEV...]
+  rungstudio-cli serve FILE [--target T] [--model M] --protocol vigor|modbus|modbus-tcp|hostlink (--pty | --port NAME | --tcp HOST:PORT) [--station N] [--baud B] [--frame 8N1] [--period MS] [--fault KIND]
+FILE è una lista istruzioni (.il), un testo ladder (.ladder) o un progetto (.rung).
+--lang en|hu|it: la lingua dei messaggi (altrimenti quella della localizzazione, LANG).
+Codice di uscita: 0 nessun errore, 1 il programma contiene errori, 2 errore di utilizzo o di I/O.</translation>
     </message>
     <message>
-        <location line="+16"/>
+        <location line="+106"/>
         <source>nothing written: the list as typed would be lost</source>
         <translation>non è stato scritto nulla: la lista digitata andrebbe persa</translation>
     </message>
@@ -209,12 +223,12 @@
         <translation>nessun file scritto: l&apos;ingresso contiene errori (--force lo scrive comunque)</translation>
     </message>
     <message>
-        <location line="+25"/>
+        <location line="+27"/>
         <source>cannot write %1: %2</source>
         <translation>impossibile scrivere %1: %2</translation>
     </message>
     <message>
-        <location line="+43"/>
+        <location line="+49"/>
         <source>no command given</source>
         <translation>nessun comando specificato</translation>
     </message>
@@ -267,11 +281,14 @@
     <message>
         <location line="+122"/>
         <location line="+27"/>
+        <location filename="../app/cli/cli_plcopen.cpp" line="+35"/>
         <source>%1 has no model %2</source>
         <translation>%1 non ha il modello %2</translation>
     </message>
     <message>
         <location line="+18"/>
+        <location filename="../app/cli/cli_plcopen.cpp" line="+34"/>
+        <location line="+3"/>
         <source>error</source>
         <translation>errore</translation>
     </message>
@@ -282,6 +299,7 @@
     </message>
     <message>
         <location line="+1"/>
+        <location filename="../app/cli/cli_plcopen.cpp" line="+50"/>
         <source>note</source>
         <translation>nota</translation>
     </message>
@@ -291,23 +309,209 @@
         <translation>--lang deve essere uno tra %1</translation>
     </message>
     <message>
-        <location filename="../app/cli/cli.cpp" line="-195"/>
-        <source>usage:
-  rungstudio-cli check FILE [--target %1] [--model M]
-  rungstudio-cli convert FILE [--target T] [--model M] [--from il|ladder|project] --to il|ladder|project [-o OUT] [--force]
-  rungstudio-cli simulate FILE [--target T] [--model M] --scans N [--period MS] [--set DEV=VALUE@SCAN]... --trace DEV[,DEV...]
-  rungstudio-cli serve FILE [--target T] [--model M] --protocol vigor|modbus|modbus-tcp|hostlink (--pty | --port NAME | --tcp HOST:PORT) [--station N] [--baud B] [--frame 8N1] [--period MS] [--fault KIND]
-FILE is a listing (.il), a ladder text (.ladder) or a project (.rung).
---lang en|hu|it: the language of the messages (else the locale&apos;s, LANG).
-Exit status: 0 no error, 1 the program has errors, 2 usage or I/O error.</source>
-        <translation>uso:
-  rungstudio-cli check FILE [--target %1] [--model M]
-  rungstudio-cli convert FILE [--target T] [--model M] [--from il|ladder|project] --to il|ladder|project [-o OUT] [--force]
-  rungstudio-cli simulate FILE [--target T] [--model M] --scans N [--period MS] [--set DEV=VALUE@SCAN]... --trace DEV[,DEV...]
-  rungstudio-cli serve FILE [--target T] [--model M] --protocol vigor|modbus|modbus-tcp|hostlink (--pty | --port NAME | --tcp HOST:PORT) [--station N] [--baud B] [--frame 8N1] [--period MS] [--fault KIND]
-FILE è una lista istruzioni (.il), un testo ladder (.ladder) o un progetto (.rung).
---lang en|hu|it: la lingua dei messaggi (altrimenti quella della localizzazione, LANG).
-Codice di uscita: 0 nessun errore, 1 il programma contiene errori, 2 errore di utilizzo o di I/O.</translation>
+        <location filename="../app/cli/cli.cpp" line="-137"/>
+        <source>--to must be il, ladder, project or plcopen</source>
+        <translation>--to deve essere il, ladder, project o plcopen</translation>
+    </message>
+    <message>
+        <location line="+12"/>
+        <source>--map is for --from plcopen</source>
+        <translation>--map si usa con --from plcopen</translation>
+    </message>
+    <message>
+        <location filename="../app/cli/cli_plcopen.cpp" line="-99"/>
+        <source>--from plcopen needs --target: which PLC the program is for</source>
+        <translation>--from plcopen richiede --target: per quale PLC è il programma</translation>
+    </message>
+    <message>
+        <location line="+5"/>
+        <source>unknown target %1</source>
+        <translation>famiglia PLC sconosciuta: %1</translation>
+    </message>
+    <message>
+        <location line="+34"/>
+        <source>%1: note: the file was written by Rung Studio for %2; it is read for %3</source>
+        <translation>%1: nota: il file è stato scritto da Rung Studio per %2; viene letto per %3</translation>
+    </message>
+    <message>
+        <location line="+12"/>
+        <source>variable %1 (%2) names no device of %3, and none is free for it</source>
+        <translation>la variabile %1 (%2) non indica un operando di %3, e non ne resta uno libero</translation>
+    </message>
+    <message>
+        <location line="+2"/>
+        <source>variable %1 (%2) names no device of %3; proposed: %4</source>
+        <translation>la variabile %1 (%2) non indica un operando di %3; proposto: %4</translation>
+    </message>
+    <message>
+        <location line="+4"/>
+        <source>A mapping file with the devices proposed (check them, then give it with --map FILE):</source>
+        <translation>Un file di corrispondenze con gli operandi proposti (verificarli, poi indicarlo con --map FILE):</translation>
+    </message>
+    <message>
+        <location line="+8"/>
+        <source>nothing written: the file holds no ladder to import</source>
+        <translation>nulla scritto: il file non contiene uno schema ladder da importare</translation>
+    </message>
+    <message>
+        <location line="+6"/>
+        <source>nothing written: the file holds what %1 cannot take, listed above (--force writes the rest)</source>
+        <translation>nulla scritto: il file contiene ciò che %1 non può accogliere, elencato sopra (--force scrive il resto)</translation>
+    </message>
+    <message>
+        <location line="+6"/>
+        <source>written without what is listed above (--force)</source>
+        <translation>scritto senza quanto elencato sopra (--force)</translation>
+    </message>
+</context>
+<context>
+    <name>rung::app::CompareWindow</name>
+    <message>
+        <location filename="../app/gui/compare_window.cpp" line="+46"/>
+        <source>%1 is a program for %2; the open program is for %3: only programs of one PLC are compared</source>
+        <translation>%1 è un programma per %2; il programma aperto è per %3: si confrontano solo programmi dello stesso PLC</translation>
+    </message>
+    <message>
+        <location line="+21"/>
+        <source>%1, line %2, column %3: %4; a file that does not read whole is not compared</source>
+        <translation>%1, riga %2, colonna %3: %4; un file che non si legge per intero non viene confrontato</translation>
+    </message>
+    <message>
+        <location line="+32"/>
+        <source>Compare With</source>
+        <translation>Confronta con</translation>
+    </message>
+    <message>
+        <location line="+1"/>
+        <source>Rung Studio projects (*.rung);;Instruction lists (*.il *.txt);;Ladder texts (*.ladder)</source>
+        <translation>Progetti Rung Studio (*.rung);;Liste istruzioni (*.il *.txt);;Testi ladder (*.ladder)</translation>
+    </message>
+    <message>
+        <location line="+7"/>
+        <source>Cannot compare</source>
+        <translation>Impossibile confrontare</translation>
+    </message>
+    <message>
+        <location line="+14"/>
+        <source>Compare: %1 and %2</source>
+        <translation>Confronto: %1 e %2</translation>
+    </message>
+    <message>
+        <location line="+3"/>
+        <source>A (left): %1        B (right): %2</source>
+        <translation>A (sinistra): %1        B (destra): %2</translation>
+    </message>
+    <message>
+        <location line="+9"/>
+        <source>Ladder</source>
+        <translation>Ladder</translation>
+    </message>
+    <message>
+        <location line="+3"/>
+        <source>Change</source>
+        <translation>Modifica</translation>
+    </message>
+    <message>
+        <location line="+0"/>
+        <source>A: %1</source>
+        <translation>A: %1</translation>
+    </message>
+    <message>
+        <location line="+0"/>
+        <source>B: %1</source>
+        <translation>B: %1</translation>
+    </message>
+    <message>
+        <location line="+11"/>
+        <source>Instruction List</source>
+        <translation>Lista istruzioni</translation>
+    </message>
+    <message>
+        <location line="+5"/>
+        <source>Report</source>
+        <translation>Rapporto</translation>
+    </message>
+    <message>
+        <location line="+6"/>
+        <source>&amp;Previous Change</source>
+        <translation>Modifica &amp;precedente</translation>
+    </message>
+    <message>
+        <location line="+1"/>
+        <source>&amp;Next Change</source>
+        <translation>Modifica &amp;successiva</translation>
+    </message>
+    <message>
+        <location line="+1"/>
+        <source>P&amp;rint...</source>
+        <translation>S&amp;tampa...</translation>
+    </message>
+    <message>
+        <location line="+1"/>
+        <source>Previous change (Alt+Up)</source>
+        <translation>Modifica precedente (Alt+Su)</translation>
+    </message>
+    <message>
+        <location line="+1"/>
+        <source>Next change (Alt+Down)</source>
+        <translation>Modifica successiva (Alt+Giù)</translation>
+    </message>
+    <message>
+        <location line="+35"/>
+        <source>The programs are the same.</source>
+        <translation>I programmi sono uguali.</translation>
+    </message>
+    <message numerus="yes">
+        <location line="+1"/>
+        <source>%n rung(s) differ.</source>
+        <translation>
+            <numerusform>%n segmento diverso.</numerusform>
+            <numerusform>%n segmenti diversi.</numerusform>
+        </translation>
+    </message>
+    <message numerus="yes">
+        <location line="+7"/>
+        <source>%n difference(s) besides the rungs (symbols, set values, watch lists): see the Report.</source>
+        <translation>
+            <numerusform>%n differenza oltre ai segmenti (simboli, valori di preset, liste di osservazione): vedere il Rapporto.</numerusform>
+            <numerusform>%n differenze oltre ai segmenti (simboli, valori di preset, liste di osservazione): vedere il Rapporto.</numerusform>
+        </translation>
+    </message>
+    <message>
+        <location line="+3"/>
+        <source>Alt+Down: next change, Alt+Up: previous.</source>
+        <translation>Alt+Giù: modifica successiva, Alt+Su: precedente.</translation>
+    </message>
+    <message>
+        <location line="+18"/>
+        <location line="+1"/>
+        <source>rung %1</source>
+        <translation>segmento %1</translation>
+    </message>
+    <message>
+        <location line="+17"/>
+        <source>~ changed</source>
+        <translation>~ modificato</translation>
+    </message>
+    <message>
+        <location line="+1"/>
+        <source>+ only in B</source>
+        <translation>+ solo in B</translation>
+    </message>
+    <message>
+        <location line="+1"/>
+        <source>- only in A</source>
+        <translation>- solo in A</translation>
+    </message>
+    <message>
+        <location line="+21"/>
+        <source>No change before this one.</source>
+        <translation>Nessuna modifica prima di questa.</translation>
+    </message>
+    <message>
+        <location line="+1"/>
+        <source>No change after this one.</source>
+        <translation>Nessuna modifica dopo questa.</translation>
     </message>
 </context>
 <context>
@@ -691,6 +895,66 @@ PLC dopo il riavvio di serve</translation>
     </message>
 </context>
 <context>
+    <name>rung::app::Diff</name>
+    <message>
+        <location filename="../app/cli/cli_diff.cpp" line="+62"/>
+        <source>%1 does not read whole, so it is not compared</source>
+        <translation>%1 non si legge per intero, quindi non viene confrontato</translation>
+    </message>
+    <message>
+        <location line="+12"/>
+        <source>  rungstudio-cli diff A B [--target T] [--model M] [--from il|ladder|project] [--format text|json]
+        (exit 0 the same, 1 different, 2 error)</source>
+        <translation>  rungstudio-cli diff A B [--target T] [--model M] [--from il|ladder|project] [--format text|json]
+        (uscita 0 uguali, 1 diversi, 2 errore)</translation>
+    </message>
+    <message>
+        <location line="+6"/>
+        <source>  rungstudio-cli show FILE   (a project as text to read and diff: git&apos;s textconv)</source>
+        <translation>  rungstudio-cli show FILE   (il progetto come testo da leggere e confrontare: il textconv di git)</translation>
+    </message>
+    <message>
+        <location line="+13"/>
+        <source>%1 needs a value</source>
+        <translation>%1 richiede un valore</translation>
+    </message>
+    <message>
+        <location line="+13"/>
+        <source>unknown option %1</source>
+        <translation>opzione sconosciuta: %1</translation>
+    </message>
+    <message>
+        <location line="+7"/>
+        <source>diff takes two files, A and B</source>
+        <translation>diff richiede due file, A e B</translation>
+    </message>
+    <message>
+        <location line="+4"/>
+        <source>--format must be text or json, not %1</source>
+        <translation>--format deve essere text o json, non %1</translation>
+    </message>
+    <message>
+        <location line="+26"/>
+        <source>diff needs at least one file that is not /dev/null</source>
+        <translation>diff richiede almeno un file che non sia /dev/null</translation>
+    </message>
+    <message>
+        <location line="+13"/>
+        <source>%1 is a program for %2 and %3 one for %4: only programs of one PLC are compared</source>
+        <translation>%1 è un programma per %2 e %3 uno per %4: si confrontano solo programmi dello stesso PLC</translation>
+    </message>
+    <message>
+        <location line="+17"/>
+        <source>usage:</source>
+        <translation>uso:</translation>
+    </message>
+    <message>
+        <location line="+18"/>
+        <source>not read as a project: %1</source>
+        <translation>non letto come progetto: %1</translation>
+    </message>
+</context>
+<context>
     <name>rung::app::ExampleTitles</name>
     <message>
         <location filename="../app/gui/example_titles.cpp" line="+19"/>
@@ -801,7 +1065,7 @@ PLC dopo il riavvio di serve</translation>
         <translation>Simboli</translation>
     </message>
     <message>
-        <location filename="../app/gui/main_window_actions.cpp" line="+49"/>
+        <location filename="../app/gui/main_window_actions.cpp" line="+51"/>
         <source>&amp;File</source>
         <translation>&amp;File</translation>
     </message>
@@ -841,7 +1105,7 @@ PLC dopo il riavvio di serve</translation>
         <translation>Salva &amp;con nome...</translation>
     </message>
     <message>
-        <location line="+3"/>
+        <location line="+7"/>
         <source>&amp;Import Instruction List...</source>
         <translation>&amp;Importa lista istruzioni...</translation>
     </message>
@@ -851,7 +1115,7 @@ PLC dopo il riavvio di serve</translation>
         <translation>Es&amp;porta lista istruzioni...</translation>
     </message>
     <message>
-        <location line="+1"/>
+        <location line="+19"/>
         <source>Export &amp;Ladder</source>
         <translation>Esporta schema &amp;ladder</translation>
     </message>
@@ -1406,7 +1670,7 @@ Ctrl+Z / Ctrl+Y: annulla / ripeti, Ctrl+rotellina: zoom, F4: verifica il program
         <location line="-4"/>
         <location line="+8"/>
         <location line="+10"/>
-        <location filename="../app/gui/main_window_panels.cpp" line="+54"/>
+        <location filename="../app/gui/main_window_panels.cpp" line="+66"/>
         <location filename="../app/gui/main_window_tools.cpp" line="+3"/>
         <source>Cannot export</source>
         <translation>Impossibile esportare</translation>
@@ -1885,6 +2149,31 @@ Ctrl+Z / Ctrl+Y: annulla / ripeti, Ctrl+rotellina: zoom, F4: verifica il program
         <source>%1: this version of Rung Studio cannot open networks (.rungnet) or test scenarios (.rungtest) in the window yet</source>
         <translation>%1: questa versione di Rung Studio non può ancora aprire nella finestra reti (.rungnet) o scenari di test (.rungtest)</translation>
     </message>
+    <message>
+        <location filename="../app/gui/main_window_actions.cpp" line="-284"/>
+        <source>Co&amp;mpare With...</source>
+        <translation>Con&amp;fronta con...</translation>
+    </message>
+    <message>
+        <location line="+7"/>
+        <source>Import &amp;PLCopen XML...</source>
+        <translation>Importa PLCopen &amp;XML...</translation>
+    </message>
+    <message>
+        <location line="+8"/>
+        <source>Expor&amp;t PLCopen XML...</source>
+        <translation>Esp&amp;orta PLCopen XML...</translation>
+    </message>
+    <message>
+        <location line="+7"/>
+        <source>The instruction list has errors, so the ladder is not the program as typed: fix the list first.</source>
+        <translation>La lista istruzioni contiene errori, quindi lo schema ladder non è il programma digitato: correggere prima la lista.</translation>
+    </message>
+    <message>
+        <location filename="../app/gui/main_window_panels.cpp" line="+1"/>
+        <source>Tests</source>
+        <translation>Test</translation>
+    </message>
 </context>
 <context>
     <name>rung::app::Online</name>
@@ -1985,6 +2274,152 @@ Codice di uscita di read e write: 0 fatto, 1 il PLC non ha risposto o ha rifiuta
         <location line="-16"/>
         <source>%1: %2</source>
         <translation>%1: %2</translation>
+    </message>
+</context>
+<context>
+    <name>rung::app::PlcopenImportDialog</name>
+    <message>
+        <location filename="../app/gui/plcopen_exchange.cpp" line="+34"/>
+        <location line="+16"/>
+        <source>Cannot export</source>
+        <translation>Impossibile esportare</translation>
+    </message>
+    <message>
+        <location line="-11"/>
+        <location line="+17"/>
+        <source>Export PLCopen XML</source>
+        <translation>Esporta PLCopen XML</translation>
+    </message>
+    <message>
+        <location line="-16"/>
+        <source>PLCopen XML (*.xml)</source>
+        <translation>PLCopen XML (*.xml)</translation>
+    </message>
+    <message>
+        <location line="+11"/>
+        <source>%1: %2</source>
+        <translation>%1: %2</translation>
+    </message>
+    <message>
+        <location line="+6"/>
+        <source>%1 is written. Other tools will read it, but not these blocks:
+
+%2</source>
+        <translation>%1 è scritto. Altri strumenti lo leggeranno, ma non questi blocchi:
+
+%2</translation>
+    </message>
+    <message>
+        <location line="+8"/>
+        <source>Import PLCopen XML</source>
+        <translation>Importa PLCopen XML</translation>
+    </message>
+    <message>
+        <location line="+1"/>
+        <source>PLCopen XML (*.xml);;All files (*)</source>
+        <translation>PLCopen XML (*.xml);;Tutti i file (*)</translation>
+    </message>
+    <message>
+        <location line="+7"/>
+        <source>Cannot open the file</source>
+        <translation>Impossibile aprire il file</translation>
+    </message>
+    <message>
+        <location line="+14"/>
+        <source>Import PLCopen XML: %1</source>
+        <translation>Importa PLCopen XML: %1</translation>
+    </message>
+    <message>
+        <location line="+11"/>
+        <source>PLC family:</source>
+        <translation>Famiglia PLC:</translation>
+    </message>
+    <message>
+        <location line="+1"/>
+        <source>Model:</source>
+        <translation>Modello:</translation>
+    </message>
+    <message>
+        <location line="+2"/>
+        <source>Variables without a device: a free one is proposed; change it where the program needs another.</source>
+        <translation>Variabili senza operando: ne viene proposto uno libero; cambiarlo dove il programma ne richiede un altro.</translation>
+    </message>
+    <message>
+        <location line="+5"/>
+        <source>Variable</source>
+        <translation>Variabile</translation>
+    </message>
+    <message>
+        <location line="+0"/>
+        <source>Type</source>
+        <translation>Tipo</translation>
+    </message>
+    <message>
+        <location line="+0"/>
+        <source>Line</source>
+        <translation>Riga</translation>
+    </message>
+    <message>
+        <location line="+0"/>
+        <source>Device</source>
+        <translation>Operando</translation>
+    </message>
+    <message>
+        <location line="+5"/>
+        <source>Not imported (element, line and why):</source>
+        <translation>Non importato (elemento, riga e motivo):</translation>
+    </message>
+    <message>
+        <location line="+5"/>
+        <source>Import the rest and leave out what is listed</source>
+        <translation>Importa il resto e tralascia quanto elencato</translation>
+    </message>
+    <message>
+        <location line="+6"/>
+        <source>&amp;Import</source>
+        <translation>&amp;Importa</translation>
+    </message>
+    <message>
+        <location line="+23"/>
+        <location line="+53"/>
+        <source>(no such device)</source>
+        <translation>(operando inesistente)</translation>
+    </message>
+    <message>
+        <location line="+6"/>
+        <source>line %1: %2: %3</source>
+        <translation>riga %1: %2: %3</translation>
+    </message>
+    <message>
+        <location line="+4"/>
+        <source>The file holds no ladder to import.</source>
+        <translation>Il file non contiene uno schema ladder da importare.</translation>
+    </message>
+    <message numerus="yes">
+        <location line="+2"/>
+        <source>Everything in the file is imported: %n rung(s).</source>
+        <translation>
+            <numerusform>Tutto il contenuto del file viene importato: %n segmento.</numerusform>
+            <numerusform>Tutto il contenuto del file viene importato: %n segmenti.</numerusform>
+        </translation>
+    </message>
+    <message numerus="yes">
+        <location line="+3"/>
+        <source>%n item(s) of the file are not imported; %1 variable(s) have no device yet.</source>
+        <translation>
+            <numerusform>%n elemento del file non viene importato; %1 variabili non hanno ancora un operando.</numerusform>
+            <numerusform>%n elementi del file non vengono importati; %1 variabili non hanno ancora un operando.</numerusform>
+        </translation>
+    </message>
+    <message>
+        <location line="+25"/>
+        <source>Some variables still have no device: give each one a device of %1.</source>
+        <translation>Alcune variabili non hanno ancora un operando: assegnare a ciascuna un operando di %1.</translation>
+    </message>
+    <message>
+        <location line="+6"/>
+        <source>The file holds what %1 cannot take, listed here. Tick &quot;%2&quot; to import the rest.</source>
+        <translation>Il file contiene ciò che %1 non può accogliere, elencato qui. Spuntare &quot;%2&quot; per importare il resto.</translation>
     </message>
 </context>
 <context>
@@ -2747,6 +3182,215 @@ Valutazione: %4 µs (%5..%6)</translation>
     </message>
 </context>
 <context>
+    <name>rung::app::Test</name>
+    <message>
+        <location filename="../app/cli/cli_test.cpp" line="+47"/>
+        <source>  rungstudio-cli test FILE|DIR... [--junit OUT.xml]   (scenario tests, .rungtest)</source>
+        <translation>  rungstudio-cli test FILE|DIR... [--junit OUT.xml]   (test di scenario, .rungtest)</translation>
+    </message>
+    <message>
+        <location line="+10"/>
+        <source>--junit needs a value</source>
+        <translation>--junit richiede un valore</translation>
+    </message>
+    <message>
+        <location line="+5"/>
+        <source>unknown option %1</source>
+        <translation>opzione sconosciuta: %1</translation>
+    </message>
+    <message>
+        <location line="+7"/>
+        <source>no scenario given</source>
+        <translation>nessuno scenario indicato</translation>
+    </message>
+    <message>
+        <location line="+14"/>
+        <source>%1: no .%2 file in the folder</source>
+        <translation>%1: nessun file .%2 nella cartella</translation>
+    </message>
+    <message>
+        <location line="+7"/>
+        <source>%1: no such file or folder</source>
+        <translation>%1: file o cartella inesistente</translation>
+    </message>
+    <message>
+        <location line="+21"/>
+        <source>error</source>
+        <translation>errore</translation>
+    </message>
+    <message>
+        <location line="+5"/>
+        <source>note</source>
+        <translation>nota</translation>
+    </message>
+    <message>
+        <location line="+14"/>
+        <source>%1 scenario(s), %2 expectation(s): %3 failed; %4 scenario(s) did not pass</source>
+        <extracomment>The summary of a test run: %1 scenario files, %2 expectations, %3 failed expectations, %4 scenarios that failed or did not run.</extracomment>
+        <translation>%1 scenari, %2 attese: %3 non soddisfatte; %4 scenari non superati</translation>
+    </message>
+    <message>
+        <location line="+10"/>
+        <source>cannot write %1: %2</source>
+        <translation>impossibile scrivere %1: %2</translation>
+    </message>
+</context>
+<context>
+    <name>rung::app::TestsPanel</name>
+    <message>
+        <location filename="../app/gui/tests_panel.cpp" line="+51"/>
+        <source>unknown target %1</source>
+        <translation>famiglia PLC sconosciuta: %1</translation>
+    </message>
+    <message>
+        <location line="+88"/>
+        <source>Run All</source>
+        <translation>Esegui tutti</translation>
+    </message>
+    <message>
+        <location line="+1"/>
+        <source>Run</source>
+        <translation>Esegui</translation>
+    </message>
+    <message>
+        <location line="+1"/>
+        <source>Refresh</source>
+        <translation>Aggiorna</translation>
+    </message>
+    <message>
+        <location line="+1"/>
+        <source>Record...</source>
+        <translation>Registra...</translation>
+    </message>
+    <message>
+        <location line="+1"/>
+        <source>Runs the selected scenario</source>
+        <translation>Esegue lo scenario selezionato</translation>
+    </message>
+    <message>
+        <location line="+1"/>
+        <source>Writes a scenario of the simulation so far: the inputs as you worked them, the outputs as they were seen</source>
+        <translation>Scrive uno scenario della simulazione finora: gli ingressi come sono stati azionati, le uscite come sono state viste</translation>
+    </message>
+    <message>
+        <location line="+2"/>
+        <source>Scenario / expectation</source>
+        <translation>Scenario / attesa</translation>
+    </message>
+    <message>
+        <location line="+0"/>
+        <source>Result</source>
+        <translation>Risultato</translation>
+    </message>
+    <message>
+        <location line="+2"/>
+        <source>Save the project: its scenario tests (.rungtest) are the files beside it that name it</source>
+        <translation>Salvare il progetto: i suoi test di scenario (.rungtest) sono i file accanto che lo indicano</translation>
+    </message>
+    <message>
+        <location line="+60"/>
+        <source>the open program has errors: %1</source>
+        <translation>il programma aperto contiene errori: %1</translation>
+    </message>
+    <message>
+        <location line="+12"/>
+        <source>No scenario test names this project</source>
+        <translation>Nessun test di scenario indica questo progetto</translation>
+    </message>
+    <message>
+        <location line="+69"/>
+        <source>not run</source>
+        <translation>non eseguito</translation>
+    </message>
+    <message numerus="yes">
+        <location line="+8"/>
+        <source>passed: %n expectation(s)</source>
+        <translation>
+            <numerusform>superato: %n attesa</numerusform>
+            <numerusform>superato: %n attese</numerusform>
+        </translation>
+    </message>
+    <message numerus="yes">
+        <location line="+5"/>
+        <source>FAILED: %n expectation(s)</source>
+        <translation>
+            <numerusform>FALLITO: %n attesa</numerusform>
+            <numerusform>FALLITO: %n attese</numerusform>
+        </translation>
+    </message>
+    <message>
+        <location line="+2"/>
+        <source>did not run</source>
+        <translation>non è stato eseguito</translation>
+    </message>
+    <message>
+        <location line="+6"/>
+        <source>line %1</source>
+        <translation>riga %1</translation>
+    </message>
+    <message>
+        <location line="+1"/>
+        <source>error: %1</source>
+        <translation>errore: %1</translation>
+    </message>
+    <message>
+        <location line="+5"/>
+        <location line="+46"/>
+        <source>line %1: %2</source>
+        <translation>riga %1: %2</translation>
+    </message>
+    <message>
+        <location line="-41"/>
+        <source>ok</source>
+        <translation>ok</translation>
+    </message>
+    <message>
+        <location line="+3"/>
+        <source>FAILED: %1 (double-click: the timing chart)</source>
+        <translation>FALLITO: %1 (doppio clic: il diagramma temporale)</translation>
+    </message>
+    <message>
+        <location line="+10"/>
+        <source>Scenario tests: %1 passed, %2 failed</source>
+        <translation>Test di scenario: %1 superati, %2 falliti</translation>
+    </message>
+    <message>
+        <location line="+26"/>
+        <source>Timing chart of %1, line %2</source>
+        <translation>Diagramma temporale di %1, riga %2</translation>
+    </message>
+    <message>
+        <location line="+26"/>
+        <source>Nothing to record: start a simulation and work its inputs first</source>
+        <translation>Niente da registrare: avviare prima una simulazione e azionarne gli ingressi</translation>
+    </message>
+    <message>
+        <location line="+35"/>
+        <location line="+9"/>
+        <location line="+3"/>
+        <location line="+8"/>
+        <location line="+6"/>
+        <location line="+5"/>
+        <source>Record a Scenario</source>
+        <translation>Registra uno scenario</translation>
+    </message>
+    <message>
+        <location line="-30"/>
+        <source>Save the project first: a scenario names the project&apos;s file.</source>
+        <translation>Salvare prima il progetto: uno scenario indica il file del progetto.</translation>
+    </message>
+    <message>
+        <location line="+12"/>
+        <source>Scenario tests (*.rungtest)</source>
+        <translation>Test di scenario (*.rungtest)</translation>
+    </message>
+    <message>
+        <location line="+21"/>
+        <source>Recorded %1</source>
+        <translation>Registrato %1</translation>
+    </message>
+</context>
+<context>
     <name>rung::app::VirtualPlc</name>
     <message>
         <location filename="../app/virtual_plc/virtual_plc.cpp" line="+101"/>
@@ -2945,7 +3589,7 @@ Valutazione: %4 µs (%5..%6)</translation>
         <translation>%1 non è connesso: non è stato inviato nulla</translation>
     </message>
     <message>
-        <location line="+182"/>
+        <location line="+183"/>
         <source>Connection lost: %1. Trying again.</source>
         <translation>Connessione persa: %1. Nuovo tentativo in corso.</translation>
     </message>
@@ -2960,12 +3604,12 @@ Valutazione: %4 µs (%5..%6)</translation>
         <translation>Impossibile raggiungere %1: %2. Nuovo tentativo in corso.</translation>
     </message>
     <message>
-        <location line="-198"/>
+        <location line="-199"/>
         <source>%1 cannot force bits: its protocol has no force command. Set the bit instead (the program may overwrite it).</source>
         <translation>%1 non può forzare i bit: il suo protocollo non ha un comando di forzatura. Impostare invece il bit (il programma può sovrascriverlo).</translation>
     </message>
     <message>
-        <location line="+257"/>
+        <location line="+258"/>
         <source>Cannot connect to %1: %2</source>
         <translation>Impossibile connettersi a %1: %2</translation>
     </message>
@@ -3597,6 +4241,64 @@ Valutazione: %4 µs (%5..%6)</translation>
         <location line="+6"/>
         <source>%1 (%2) failed: %3</source>
         <translation>%1 (%2) non funziona più: %3</translation>
+    </message>
+</context>
+<context>
+    <name>rung::editor::CompareView</name>
+    <message>
+        <location filename="../editor/compare_view.cpp" line="+49"/>
+        <source>the same</source>
+        <translation>uguale</translation>
+    </message>
+    <message>
+        <location line="+2"/>
+        <source>moved</source>
+        <translation>spostato</translation>
+    </message>
+    <message>
+        <location line="+2"/>
+        <source>changed</source>
+        <translation>modificato</translation>
+    </message>
+    <message>
+        <location line="+2"/>
+        <source>moved and changed</source>
+        <translation>spostato e modificato</translation>
+    </message>
+    <message>
+        <location line="+2"/>
+        <source>inserted</source>
+        <translation>inserito</translation>
+    </message>
+    <message>
+        <location line="+2"/>
+        <source>deleted</source>
+        <translation>eliminato</translation>
+    </message>
+    <message>
+        <location line="+166"/>
+        <source>Both programs are empty.</source>
+        <translation>Entrambi i programmi sono vuoti.</translation>
+    </message>
+    <message>
+        <location line="+47"/>
+        <source>A: rung %1</source>
+        <translation>A: segmento %1</translation>
+    </message>
+    <message>
+        <location line="+3"/>
+        <source>B: rung %1</source>
+        <translation>B: segmento %1</translation>
+    </message>
+    <message>
+        <location line="+46"/>
+        <source>(not in A)</source>
+        <translation>(non in A)</translation>
+    </message>
+    <message>
+        <location line="+0"/>
+        <source>(not in B)</source>
+        <translation>(non in B)</translation>
     </message>
 </context>
 <context>
@@ -4385,7 +5087,7 @@ Valutazione: %4 µs (%5..%6)</translation>
         <translation>Rimuovi</translation>
     </message>
     <message>
-        <location line="+102"/>
+        <location line="+109"/>
         <source>A: %1</source>
         <translation>A: %1</translation>
     </message>
@@ -5242,6 +5944,216 @@ Valutazione: %4 µs (%5..%6)</translation>
     </message>
 </context>
 <context>
+    <name>rung::model::Compare</name>
+    <message>
+        <location filename="../model/compare/compare_report.cpp" line="+24"/>
+        <source>the same</source>
+        <translation>uguale</translation>
+    </message>
+    <message>
+        <location line="+2"/>
+        <source>moved</source>
+        <translation>spostato</translation>
+    </message>
+    <message>
+        <location line="+2"/>
+        <source>changed</source>
+        <translation>modificato</translation>
+    </message>
+    <message>
+        <location line="+2"/>
+        <source>moved and changed</source>
+        <translation>spostato e modificato</translation>
+    </message>
+    <message>
+        <location line="+2"/>
+        <source>inserted</source>
+        <translation>inserito</translation>
+    </message>
+    <message>
+        <location line="+2"/>
+        <source>deleted</source>
+        <translation>eliminato</translation>
+    </message>
+    <message>
+        <location line="+8"/>
+        <source>contact</source>
+        <translation>contatto</translation>
+    </message>
+    <message>
+        <location line="+2"/>
+        <source>output</source>
+        <translation>uscita</translation>
+    </message>
+    <message>
+        <location line="+4"/>
+        <source>branches</source>
+        <translation>rami</translation>
+    </message>
+    <message>
+        <location line="+41"/>
+        <source>name</source>
+        <translation>nome</translation>
+    </message>
+    <message>
+        <location line="+2"/>
+        <source>comment</source>
+        <translation>commento</translation>
+    </message>
+    <message>
+        <location line="+12"/>
+        <source>- rung %1 of A: %2</source>
+        <extracomment>A rung only in the first program (A): %1 its number there, %2 &quot;deleted&quot;.</extracomment>
+        <translation>- segmento %1 di A: %2</translation>
+    </message>
+    <message>
+        <location line="+3"/>
+        <source>+ rung %1 of B: %2</source>
+        <extracomment>A rung only in the second program (B): %1 its number there, %2 &quot;inserted&quot;.</extracomment>
+        <translation>+ segmento %1 di B: %2</translation>
+    </message>
+    <message>
+        <location line="+2"/>
+        <source>rung %1: %2</source>
+        <translation>segmento %1: %2</translation>
+    </message>
+    <message>
+        <location line="+2"/>
+        <source>rung %1 -&gt; %2: %3</source>
+        <extracomment>A rung of A (number %1) that is rung %2 of B, and what happened to it (%3).</extracomment>
+        <translation>segmento %1 -&gt; %2: %3</translation>
+    </message>
+    <message>
+        <location line="+19"/>
+        <source>+ %1 added: %2</source>
+        <translation>+ %1 aggiunto: %2</translation>
+    </message>
+    <message>
+        <location line="+3"/>
+        <source>- %1 removed: %2</source>
+        <translation>- %1 rimosso: %2</translation>
+    </message>
+    <message>
+        <location line="+4"/>
+        <source>* the branches joining the contacts changed</source>
+        <translation>* i rami che uniscono i contatti sono cambiati</translation>
+    </message>
+    <message>
+        <location line="+3"/>
+        <source>* %1 changed: %2 -&gt; %3</source>
+        <translation>* %1 modificato: %2 -&gt; %3</translation>
+    </message>
+    <message>
+        <location line="+5"/>
+        <source>operand %1: %2 -&gt; %3</source>
+        <extracomment>An operand that changed: %1 its number (1 = the first), %2 and %3 the old and the new operand.</extracomment>
+        <translation>operando %1: %2 -&gt; %3</translation>
+    </message>
+    <message>
+        <location line="+8"/>
+        <source>* comment changed: %1 -&gt; %2</source>
+        <translation>* commento modificato: %1 -&gt; %2</translation>
+    </message>
+    <message>
+        <location line="+8"/>
+        <source>+ %1 added: %2 %3</source>
+        <extracomment>%1 what (&quot;symbol X0&quot;, &quot;set value T0&quot;), %2 the field (&quot;name&quot;, &quot;comment&quot;, &quot;value&quot;).</extracomment>
+        <translation>+ %1 aggiunto: %2 %3</translation>
+    </message>
+    <message>
+        <location line="+2"/>
+        <source>- %1 removed: %2 %3</source>
+        <translation>- %1 rimosso: %2 %3</translation>
+    </message>
+    <message>
+        <location line="+4"/>
+        <source>* %1 changed: %2 %3 -&gt; %4</source>
+        <translation>* %1 modificato: %2 %3 -&gt; %4</translation>
+    </message>
+    <message>
+        <location line="+7"/>
+        <source>+ watch list %1 added: %2</source>
+        <translation>+ lista di osservazione %1 aggiunta: %2</translation>
+    </message>
+    <message>
+        <location line="+1"/>
+        <source>- watch list %1 removed: %2</source>
+        <translation>- lista di osservazione %1 rimossa: %2</translation>
+    </message>
+    <message>
+        <location line="+2"/>
+        <source>+ watch list %1: %2 added</source>
+        <translation>+ lista di osservazione %1: %2 aggiunto</translation>
+    </message>
+    <message>
+        <location line="+1"/>
+        <source>- watch list %1: %2 removed</source>
+        <translation>- lista di osservazione %1: %2 rimosso</translation>
+    </message>
+    <message>
+        <location line="+2"/>
+        <source>* watch list %1: the order changed: %2 -&gt; %3</source>
+        <translation>* lista di osservazione %1: l&apos;ordine è cambiato: %2 -&gt; %3</translation>
+    </message>
+    <message>
+        <location line="+3"/>
+        <source>* watch list %1: %2 shown as %3 -&gt; %4</source>
+        <extracomment>A watch list row shown in another format: %1 the list, %2 the device, %3 and %4 the formats (dec, signed, hex, bin, bcd).</extracomment>
+        <translation>* lista di osservazione %1: %2 mostrato come %3 -&gt; %4</translation>
+    </message>
+    <message>
+        <location line="+7"/>
+        <source>+ B holds an instruction list typed with errors that is not in its rungs (pendingListing)</source>
+        <translation>+ B contiene una lista istruzioni digitata con errori che non è nei suoi segmenti (pendingListing)</translation>
+    </message>
+    <message>
+        <location line="+3"/>
+        <source>- A holds an instruction list typed with errors that is not in its rungs (pendingListing)</source>
+        <translation>- A contiene una lista istruzioni digitata con errori che non è nei suoi segmenti (pendingListing)</translation>
+    </message>
+    <message>
+        <location line="+5"/>
+        <source>* the instruction lists typed with errors that are not in the rungs differ (pendingListing)</source>
+        <translation>* le liste istruzioni digitate con errori che non sono nei segmenti differiscono (pendingListing)</translation>
+    </message>
+    <message>
+        <location line="+3"/>
+        <source>+ symbol row not yet a symbol: %1</source>
+        <translation>+ riga non ancora simbolo: %1</translation>
+    </message>
+    <message>
+        <location line="+1"/>
+        <source>- symbol row not yet a symbol: %1</source>
+        <translation>- riga non ancora simbolo: %1</translation>
+    </message>
+    <message>
+        <location line="+27"/>
+        <source>* model changed: %1 -&gt; %2</source>
+        <translation>* modello modificato: %1 -&gt; %2</translation>
+    </message>
+    <message>
+        <location line="+5"/>
+        <source>symbol %1</source>
+        <translation>simbolo %1</translation>
+    </message>
+    <message>
+        <location line="+2"/>
+        <source>set value %1</source>
+        <translation>valore di preset %1</translation>
+    </message>
+    <message>
+        <location line="+10"/>
+        <source>The programs are the same (rungs: %1).</source>
+        <translation>I programmi sono uguali (segmenti: %1).</translation>
+    </message>
+    <message>
+        <location line="+3"/>
+        <source>Rungs: %1 in A, %2 in B; %3 the same, %4 moved, %5 changed, %6 moved and changed, %7 inserted, %8 deleted.</source>
+        <extracomment>The summary of a comparison: %1 rungs in A, %2 in B, then how many of each kind.</extracomment>
+        <translation>Segmenti: %1 in A, %2 in B; %3 uguali, %4 spostati, %5 modificati, %6 spostati e modificati, %7 inseriti, %8 eliminati.</translation>
+    </message>
+</context>
+<context>
     <name>rung::model::Convert</name>
     <message>
         <location filename="../model/convert/convert_to_ladder.cpp" line="+219"/>
@@ -5607,9 +6519,207 @@ Valutazione: %4 µs (%5..%6)</translation>
     </message>
 </context>
 <context>
+    <name>rung::model::Plcopen</name>
+    <message>
+        <location filename="../model/exchange/plcopen_import.cpp" line="+120"/>
+        <source>not a PLCopen TC6 XML 2.01 project (the root is &lt;%1&gt; in &quot;%2&quot;, &lt;project&gt; in &quot;%3&quot; is expected)</source>
+        <translation>non è un progetto PLCopen TC6 XML 2.01 (la radice è &lt;%1&gt; in &quot;%2&quot;, è atteso &lt;project&gt; in &quot;%3&quot;)</translation>
+    </message>
+    <message>
+        <location line="+18"/>
+        <source>a second program is not imported: a project is one ladder (the first program, %1, is)</source>
+        <translation>un secondo programma non viene importato: un progetto è un solo schema ladder (il primo programma, %1, sì)</translation>
+    </message>
+    <message>
+        <location line="+3"/>
+        <source>a %1 is not imported: %2 runs one ladder, with no user functions or function blocks</source>
+        <translation>un %1 non viene importato: %2 esegue un solo schema ladder, senza funzioni né blocchi funzione dell&apos;utente</translation>
+    </message>
+    <message>
+        <location line="+5"/>
+        <source>the file has no program</source>
+        <translation>il file non contiene un programma</translation>
+    </message>
+    <message>
+        <location line="+15"/>
+        <source>a body in %1 is not imported: only ladder (LD) is</source>
+        <translation>un corpo in %1 non viene importato: solo il ladder (LD)</translation>
+    </message>
+    <message>
+        <location line="+6"/>
+        <source>the program has no ladder (LD) body</source>
+        <translation>il programma non ha un corpo ladder (LD)</translation>
+    </message>
+    <message>
+        <location line="+131"/>
+        <source>the mapping file gives %1: %2</source>
+        <translation>il file di corrispondenze indica %1: %2</translation>
+    </message>
+    <message>
+        <location line="+12"/>
+        <source>%1 at %2: %3 has no such device (docs/plcopen.md, located variables); give one in a mapping file</source>
+        <translation>%1 in %2: %3 non ha un tale operando (docs/plcopen.md, variabili allocate); indicarne uno in un file di corrispondenze</translation>
+    </message>
+    <message>
+        <location line="+135"/>
+        <source>input %1 is not a variable or a literal</source>
+        <translation>l&apos;ingresso %1 non è una variabile né un letterale</translation>
+    </message>
+    <message>
+        <location line="+28"/>
+        <source>line %1: &quot;%2&quot; is not NAME = DEVICE</source>
+        <translation>riga %1: &quot;%2&quot; non è NOME = OPERANDO</translation>
+    </message>
+    <message>
+        <location filename="../model/exchange/plcopen_power.cpp" line="+47"/>
+        <source>its input is connected to nothing: not imported</source>
+        <translation>il suo ingresso non è collegato a nulla: non importato</translation>
+    </message>
+    <message>
+        <location line="+83"/>
+        <source>it is connected to element %1, which the file does not have</source>
+        <translation>è collegato all&apos;elemento %1, che il file non contiene</translation>
+    </message>
+    <message>
+        <location line="+7"/>
+        <source>the power flow runs in a loop: not imported</source>
+        <translation>il flusso di potenza gira in un anello: non importato</translation>
+    </message>
+    <message>
+        <location line="+25"/>
+        <source>a contact both negated and on an edge is not imported</source>
+        <translation>un contatto insieme negato e sul fronte non viene importato</translation>
+    </message>
+    <message>
+        <location line="+8"/>
+        <source>%1 has no such contact</source>
+        <translation>%1 non ha un tale contatto</translation>
+    </message>
+    <message>
+        <location line="+15"/>
+        <source>no connector is named %1</source>
+        <translation>nessun connettore si chiama %1</translation>
+    </message>
+    <message>
+        <location line="+6"/>
+        <source>a %1 carries no power flow %2 can take</source>
+        <translation>un %1 non porta un flusso di potenza che %2 possa accogliere</translation>
+    </message>
+    <message>
+        <location line="+33"/>
+        <source>a comparison needs IN1 and IN2</source>
+        <translation>un confronto richiede IN1 e IN2</translation>
+    </message>
+    <message>
+        <location line="+16"/>
+        <source>%1 has no compare contact %2</source>
+        <translation>%1 non ha un contatto di confronto %2</translation>
+    </message>
+    <message>
+        <location line="+28"/>
+        <source>%1 has no element for %2 in the power flow</source>
+        <translation>%1 non ha un elemento per %2 nel flusso di potenza</translation>
+    </message>
+    <message>
+        <location line="+19"/>
+        <source>output %1 of %2 as power flow is not imported</source>
+        <translation>l&apos;uscita %1 di %2 come flusso di potenza non viene importata</translation>
+    </message>
+    <message>
+        <location line="+23"/>
+        <source>one instruction is expected</source>
+        <translation>è attesa un&apos;istruzione</translation>
+    </message>
+    <message>
+        <location line="+37"/>
+        <source>a negated coil that also sets, resets or pulses is not imported</source>
+        <translation>una bobina negata che anche imposta, resetta o dà un impulso non viene importata</translation>
+    </message>
+    <message>
+        <location line="+6"/>
+        <source>%1 has no such coil</source>
+        <translation>%1 non ha una tale bobina</translation>
+    </message>
+    <message>
+        <location line="+23"/>
+        <source>PT must be a time literal (T#1s) to be a set value: not imported</source>
+        <translation>PT deve essere un letterale di tempo (T#1s) per essere un valore di preset: non importato</translation>
+    </message>
+    <message>
+        <location line="+10"/>
+        <source>%1 has no pulse timer (TP)</source>
+        <translation>%1 non ha un temporizzatore a impulso (TP)</translation>
+    </message>
+    <message>
+        <location line="+19"/>
+        <source>%1 has no %2 timer that times %3 ms on %4</source>
+        <translation>%1 non ha un temporizzatore %2 che misuri %3 ms su %4</translation>
+    </message>
+    <message>
+        <location line="+88"/>
+        <source>MOVE&apos;s OUT goes to no variable: not imported</source>
+        <translation>l&apos;OUT di MOVE non va a una variabile: non importato</translation>
+    </message>
+    <message>
+        <location line="+16"/>
+        <source>%1 has no move instruction</source>
+        <translation>%1 non ha un&apos;istruzione di trasferimento</translation>
+    </message>
+    <message>
+        <location filename="../model/exchange/plcopen_rungs.cpp" line="+226"/>
+        <source>the ladder does not use it and it names no device: not imported</source>
+        <translation>lo schema ladder non la usa e non indica un operando: non importata</translation>
+    </message>
+    <message>
+        <location line="+115"/>
+        <source>IEC jumps, labels and returns are not imported: %1&apos;s own jumps work otherwise; write them in Rung Studio</source>
+        <translation>i salti, le etichette e i ritorni IEC non vengono importati: i salti propri di %1 funzionano diversamente; scriverli in Rung Studio</translation>
+    </message>
+    <message>
+        <location line="+5"/>
+        <source>this block is not imported: contacts, coils, TON, TOF, MOVE, the comparisons, NOT, R_TRIG and F_TRIG are (docs/plcopen.md)</source>
+        <translation>questo blocco non viene importato: lo sono contatti, bobine, TON, TOF, MOVE, i confronti, NOT, R_TRIG e F_TRIG (docs/plcopen.md)</translation>
+    </message>
+    <message>
+        <location line="+4"/>
+        <source>its power comes from %1 (line %2), which is not imported</source>
+        <translation>il suo flusso viene da %1 (riga %2), che non viene importato</translation>
+    </message>
+    <message>
+        <location line="+5"/>
+        <source>its power goes to %1 (line %2), which is not imported</source>
+        <translation>il suo flusso va a %1 (riga %2), che non viene importato</translation>
+    </message>
+    <message>
+        <location line="+4"/>
+        <source>no output uses it: not imported</source>
+        <translation>nessuna uscita lo usa: non importato</translation>
+    </message>
+    <message>
+        <location filename="../model/exchange/plcopen_write.cpp" line="+99"/>
+        <source>%1 is written as a block of %2&apos;s own: other tools read the file but do not know this block</source>
+        <translation>%1 viene scritto come blocco proprio di %2: altri strumenti leggono il file ma non conoscono questo blocco</translation>
+    </message>
+    <message>
+        <location filename="../model/exchange/plcopen_xml.cpp" line="+28"/>
+        <source>line %1: the XML nests deeper than %2 levels</source>
+        <translation>riga %1: l&apos;XML è annidato oltre %2 livelli</translation>
+    </message>
+    <message>
+        <location line="+26"/>
+        <source>line %1, column %2: the file is not well-formed XML (%3)</source>
+        <translation>riga %1, colonna %2: il file non è XML ben formato (%3)</translation>
+    </message>
+    <message>
+        <location line="+7"/>
+        <source>the file holds no XML element</source>
+        <translation>il file non contiene elementi XML</translation>
+    </message>
+</context>
+<context>
     <name>rung::model::Project</name>
     <message>
-        <location filename="../model/project/project.cpp" line="+110"/>
+        <location filename="../model/project/project.cpp" line="+211"/>
         <source>Line %1, column %2 (byte %3): the file is not valid JSON (%4)</source>
         <translation>Riga %1, colonna %2 (byte %3): il file non è JSON valido (%4)</translation>
     </message>
@@ -5775,7 +6885,7 @@ Valutazione: %4 µs (%5..%6)</translation>
         <translation>%1: il file supera %2 MB, il massimo che Rung Studio legge</translation>
     </message>
     <message>
-        <location filename="../model/project/project.cpp" line="+131"/>
+        <location filename="../model/project/project.cpp" line="+149"/>
         <source>%1: cannot write the file (%2)</source>
         <translation>%1: impossibile scrivere il file (%2)</translation>
     </message>
@@ -7659,6 +8769,202 @@ Valutazione: %4 µs (%5..%6)</translation>
         <location line="+24"/>
         <source>that scan is no longer recorded</source>
         <translation>quella scansione non è più registrata</translation>
+    </message>
+</context>
+<context>
+    <name>rung::simulator::Scenario</name>
+    <message>
+        <location filename="../simulator/scenario_parse.cpp" line="+56"/>
+        <source>%1: a number of scans is whole</source>
+        <translation>%1: il numero di scansioni è intero</translation>
+    </message>
+    <message>
+        <location line="+14"/>
+        <source>%1 is more than a week of virtual time</source>
+        <translation>%1 supera una settimana di tempo virtuale</translation>
+    </message>
+    <message>
+        <location line="+4"/>
+        <source>%1 is not a whole number of milliseconds</source>
+        <translation>%1 non è un numero intero di millisecondi</translation>
+    </message>
+    <message>
+        <location line="+43"/>
+        <source>%1 is no time</source>
+        <translation>%1 non è un tempo</translation>
+    </message>
+    <message>
+        <location line="+5"/>
+        <source>a scenario runs one program; the first is on line %1</source>
+        <translation>uno scenario esegue un solo programma; il primo è alla riga %1</translation>
+    </message>
+    <message>
+        <location line="+16"/>
+        <source>unknown option %1 (--target, --model)</source>
+        <translation>opzione sconosciuta: %1 (--target, --model)</translation>
+    </message>
+    <message>
+        <location line="+7"/>
+        <source>the period is a time of at least 1 ms</source>
+        <translation>il periodo è un tempo di almeno 1 ms</translation>
+    </message>
+    <message>
+        <location line="+36"/>
+        <source>&quot;%1&quot; is no statement (program, period, at TIME set|force|release|expect, within TIME expect, always expect, run TIME)</source>
+        <translation>&quot;%1&quot; non è un&apos;istruzione (program, period, at TEMPO set|force|release|expect, within TEMPO expect, always expect, run TEMPO)</translation>
+    </message>
+    <message>
+        <location line="+6"/>
+        <source>the statement says nothing after its verb</source>
+        <translation>l&apos;istruzione non dice nulla dopo il verbo</translation>
+    </message>
+    <message>
+        <location line="+6"/>
+        <source>no program: a scenario starts with &quot;program FILE&quot;</source>
+        <translation>nessun programma: uno scenario inizia con &quot;program FILE&quot;</translation>
+    </message>
+    <message>
+        <location filename="../simulator/scenario_run.cpp" line="+116"/>
+        <source>&quot;%1&quot; is not understood here</source>
+        <translation>&quot;%1&quot; non è comprensibile qui</translation>
+    </message>
+    <message>
+        <location line="+11"/>
+        <source>%1 is no device</source>
+        <translation>%1 non è un operando</translation>
+    </message>
+    <message>
+        <location line="+2"/>
+        <source>%1: only bits are forced</source>
+        <translation>%1: si forzano solo i bit</translation>
+    </message>
+    <message>
+        <location line="+3"/>
+        <source>%1 needs =VALUE</source>
+        <translation>%1 richiede =VALORE</translation>
+    </message>
+    <message>
+        <location line="+6"/>
+        <source>%1 is no value (a number, ON or OFF, #hex digits)</source>
+        <translation>%1 non è un valore (un numero, ON o OFF, #cifre esadecimali)</translation>
+    </message>
+    <message>
+        <location line="+6"/>
+        <source>DEVICE=VALUE is expected</source>
+        <translation>è atteso OPERANDO=VALORE</translation>
+    </message>
+    <message>
+        <location line="+11"/>
+        <source>%1: only bits are forced and released</source>
+        <translation>%1: si forzano e rilasciano solo i bit</translation>
+    </message>
+    <message>
+        <location line="+85"/>
+        <source>a device or a value is missing at the end</source>
+        <translation>manca un operando o un valore alla fine</translation>
+    </message>
+    <message>
+        <location line="+1"/>
+        <source>a device or a value is expected at &quot;%1&quot;</source>
+        <translation>è atteso un operando o un valore in &quot;%1&quot;</translation>
+    </message>
+    <message>
+        <location line="+45"/>
+        <source>%1 is no device of %2: %3</source>
+        <translation>%1 non è un operando di %2: %3</translation>
+    </message>
+    <message>
+        <location line="+9"/>
+        <source>%1: cv: and sv: name a timer&apos;s or a counter&apos;s current and set value</source>
+        <translation>%1: cv: e sv: indicano il valore corrente e di preset di un temporizzatore o contatore</translation>
+    </message>
+    <message>
+        <location line="+60"/>
+        <source>a &quot;)&quot; is missing</source>
+        <translation>manca una &quot;)&quot;</translation>
+    </message>
+    <message>
+        <location line="+27"/>
+        <source>%1 is a word: compare it (%1=5, %1&gt;100)</source>
+        <translation>%1 è una word: confrontala (%1=5, %1&gt;100)</translation>
+    </message>
+    <message>
+        <location line="+1"/>
+        <source>%1 alone is no condition</source>
+        <translation>%1 da solo non è una condizione</translation>
+    </message>
+    <message>
+        <location line="+61"/>
+        <source>at %1 comes before line %2&apos;s %3: statements stand in the order of their times</source>
+        <translation>at %1 viene prima di %3 della riga %2: le istruzioni seguono l&apos;ordine dei loro tempi</translation>
+    </message>
+    <message>
+        <location line="+130"/>
+        <source>%1: the run was already at %2 (the statement before waited until then), so at %3 could not be checked</source>
+        <translation>%1: l&apos;esecuzione era già a %2 (l&apos;istruzione precedente ha atteso fin lì), quindi at %3 non si è potuto verificare</translation>
+    </message>
+    <message>
+        <location line="+13"/>
+        <source>at %1: expected %2, seen %3</source>
+        <extracomment>A failed expectation: %1 the time, %2 what was expected, %3 the devices&apos; values then (&quot;Y0=1 Y1=0&quot;).</extracomment>
+        <translation>a %1: atteso %2, visto %3</translation>
+    </message>
+    <message>
+        <location line="+25"/>
+        <source>within %1 of %2 (until %3): expected %4, seen %5</source>
+        <extracomment>%1 the time allowed (&quot;2s&quot;), %2 the time it counted from, %3 until when, %4 what was expected, %5 the values seen at the end.</extracomment>
+        <translation>entro %1 da %2 (fino a %3): atteso %4, visto %5</translation>
+    </message>
+    <message>
+        <location line="+24"/>
+        <source>at %1: expected always %2, seen %3 (failed in %4 of %5 scans)</source>
+        <extracomment>An `always` expectation that failed: %1 the first time, %2 what was expected, %3 the values then, %4 the scans it failed in, %5 the scans run.</extracomment>
+        <translation>a %1: atteso sempre %2, visto %3 (non soddisfatto in %4 di %5 scansioni)</translation>
+    </message>
+    <message>
+        <location line="+13"/>
+        <source>runtime error at step %1: %2</source>
+        <translation>errore di esecuzione al passo %1: %2</translation>
+    </message>
+    <message>
+        <location line="+22"/>
+        <source>the program does not start</source>
+        <translation>il programma non si avvia</translation>
+    </message>
+    <message>
+        <location filename="../simulator/scenario_record.cpp" line="+39"/>
+        <source>the simulation has run no scan yet: run it, work its inputs, then record</source>
+        <translation>la simulazione non ha ancora eseguito alcuna scansione: avviarla, azionarne gli ingressi, poi registrare</translation>
+    </message>
+    <message>
+        <location line="+5"/>
+        <source>the simulation&apos;s history no longer holds its start (it keeps the last hour): stop it, run it again and record sooner</source>
+        <translation>la cronologia della simulazione non ne contiene più l&apos;inizio (conserva l&apos;ultima ora): fermarla, riavviarla e registrare prima</translation>
+    </message>
+    <message>
+        <location line="+7"/>
+        <source>Recorded from a simulation: the inputs as they were worked, the outputs as they were seen.</source>
+        <translation>Registrato da una simulazione: gli ingressi come sono stati azionati, le uscite come sono state viste.</translation>
+    </message>
+    <message>
+        <location line="+33"/>
+        <source>a command given while a scan was stopped inside is applied at the start of the next scan</source>
+        <translation>un comando dato mentre una scansione era ferma al suo interno viene applicato all&apos;inizio della scansione successiva</translation>
+    </message>
+    <message>
+        <location line="+5"/>
+        <source>the period was changed during the simulation: the scenario runs at the first one, %1 ms</source>
+        <translation>il periodo è cambiato durante la simulazione: lo scenario usa il primo, %1 ms</translation>
+    </message>
+    <message>
+        <location line="+27"/>
+        <source>a power cycle, reset or online edit at %1 is not in the scenario</source>
+        <translation>un ciclo di alimentazione, un reset o una modifica online a %1 non è nello scenario</translation>
+    </message>
+    <message>
+        <location filename="../simulator/scenario_trace.cpp" line="+60"/>
+        <source>a scenario&apos;s run is read-only</source>
+        <translation>l&apos;esecuzione di uno scenario è di sola lettura</translation>
     </message>
 </context>
 <context>

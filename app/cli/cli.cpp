@@ -1,11 +1,14 @@
 #include "cli.h"
 
 #include "cli_common.h"
+#include "cli_diff.h"
 #include "cli_online.h"
+#include "cli_plcopen.h"
 #include "cli_record.h"
 #include "cli_serve.h"
 #include "cli_simulate.h"
 #include "cli_terminal.h"
+#include "cli_test.h"
 
 #include "model/checks/checks.h"
 #include "model/convert/convert.h"
@@ -30,8 +33,8 @@ QString usage() {
     return Tr::tr("usage:\n"
                   "  rungstudio-cli check FILE [--target %1] [--model M]\n"
                   "  rungstudio-cli convert FILE [--target T] [--model M] [--from "
-                  "il|ladder|project] --to il|ladder|project "
-                  "[-o OUT] [--force]\n"
+                  "il|ladder|project|plcopen] --to il|ladder|project|plcopen "
+                  "[-o OUT] [--force] [--map FILE]\n"
                   "  rungstudio-cli simulate FILE [--target T] [--model M] --scans N [--period "
                   "MS] [--set DEV=VALUE@SCAN]... "
                   "--trace DEV[,DEV...]\n"
@@ -42,7 +45,8 @@ QString usage() {
                   "--lang en|hu|it: the language of the messages (else the locale's, LANG).\n"
                   "Exit status: 0 no error, 1 the program has errors, 2 usage or I/O error.")
                .arg(model::targetIds().join(QLatin1Char('|'))) +
-           QLatin1Char('\n') + onlineUsage() + QLatin1Char('\n') + recordUsage() +
+           QLatin1Char('\n') + diffUsage() + QLatin1Char('\n') + showUsage() + QLatin1Char('\n') +
+           testUsage() + QLatin1Char('\n') + onlineUsage() + QLatin1Char('\n') + recordUsage() +
            QLatin1Char('\n') + terminalUsage() + QLatin1Char('\n') +
            QStringLiteral("  rungstudio-cli --help | --version");
 }
@@ -88,10 +92,13 @@ int convert(const QStringList &args, QTextStream &out, QTextStream &err) {
     }
     QString to;
     QString output;
+    QString mapFile;
     bool force = false;
     for (qsizetype i = 0; i < rest.size(); ++i) {
         if (rest[i] == QLatin1String("--to") && i + 1 < rest.size())
             to = rest[++i];
+        else if (rest[i] == QLatin1String("--map") && i + 1 < rest.size())
+            mapFile = rest[++i];
         else if (rest[i] == QLatin1String("--force"))
             force = true;
         else if (rest[i] == QLatin1String("-o") && i + 1 < rest.size())
@@ -102,12 +109,22 @@ int convert(const QStringList &args, QTextStream &out, QTextStream &err) {
         }
     }
     if (to != QLatin1String("il") && to != QLatin1String("ladder") &&
-        to != QLatin1String("project")) {
-        err << Tr::tr("--to must be il, ladder or project") << '\n' << usage() << '\n';
+        to != QLatin1String("project") && to != QLatin1String("plcopen")) {
+        err << Tr::tr("--to must be il, ladder, project or plcopen") << '\n' << usage() << '\n';
         return 2;
     }
     Input input;
-    if (!loadInput(options, &input, &error)) {
+    // Imported with --force although parts could not be: the exit status says so.
+    int importStatus = 0;
+    if (options.from == QLatin1String("plcopen")) {
+        if (const int status =
+                loadPlcopenInput(options, mapFile, force, &input, &importStatus, err);
+            status != 0)
+            return status;
+    } else if (!mapFile.isEmpty()) {
+        err << Tr::tr("--map is for --from plcopen") << '\n';
+        return 2;
+    } else if (!loadInput(options, &input, &error)) {
         err << error << '\n';
         return 2;
     }
@@ -167,11 +184,13 @@ int convert(const QStringList &args, QTextStream &out, QTextStream &err) {
     } else if (to == QLatin1String("ladder")) {
         input.ladder.target = input.target;
         bytes = model::printLadderText(input.ladder).toUtf8();
+    } else if (to == QLatin1String("plcopen")) {
+        bytes = plcopenOutput(input, err);
     } else {
         bytes = model::projectToJson(input.project);
     }
     // Written with --force, the program still has errors: exit 1 says so, as `check` would.
-    const int status = hasErrors ? 1 : 0;
+    const int status = hasErrors || importStatus != 0 ? 1 : 0;
     if (output.isEmpty()) {
         out << QString::fromUtf8(bytes);
         return status;
@@ -200,6 +219,12 @@ int runCli(const QStringList &arguments, QTextStream &out, QTextStream &err) {
         return convert(args, out, err);
     if (command == QLatin1String("simulate"))
         return runSimulateCommand(args, out, err);
+    if (command == QLatin1String("diff"))
+        return runDiffCommand(args, out, err);
+    if (command == QLatin1String("show"))
+        return runShowCommand(args, out, err);
+    if (command == QLatin1String("test"))
+        return runTestCommand(args, out, err);
     if (command == QLatin1String("serve"))
         return runServeCommand(args, out, err);
     if (command == QLatin1String("record"))

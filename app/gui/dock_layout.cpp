@@ -46,6 +46,8 @@ void arrangeDocks(QMainWindow *window, bool wide) {
     window->addDockWidget(Qt::BottomDockWidgetArea, problems);
     window->tabifyDockWidget(problems, watch);
     window->tabifyDockWidget(watch, chart);
+    if (QDockWidget *tests = dock(window, "testsDock"))
+        window->tabifyDockWidget(chart, tests);
     // Each tabbed dock shown and hidden again leaves another in front: the first start
     // shows the project and the problems.
     project->raise();

@@ -10,7 +10,7 @@
 //    on a narrow one (1024x600) there is room beside the ladder for one column only, so the
 //    Simulation, Scan Debugger and Connection tabs join Project's and Inputs and Outputs
 //    goes under them.
-//  - Findings and records: Problems, Watch and Timing Chart, tabs below the ladder.
+//  - Findings and records: Problems, Watch, Timing Chart and Tests, tabs below the ladder.
 // The widths leave the ladder its readable width (a coil and a timer's box in view).
 
 class QMainWindow;
@@ -24,7 +24,8 @@ inline constexpr int kDockLayoutVersion = 1;
 inline constexpr int kWideScreen = 1280;
 
 // Places the docks by their object names (projectDock, crossReferenceDock, ioDock,
-// simulationDock, scanDebuggerDock, connectionDock, problemsDock, watchDock, timingChartDock).
+// simulationDock, scanDebuggerDock, connectionDock, problemsDock, watchDock, timingChartDock,
+// testsDock).
 void arrangeDocks(QMainWindow *window, bool wide);
 // The first start's widths and heights of the columns, once the window is laid out.
 void sizeDocks(QMainWindow *window, bool wide);

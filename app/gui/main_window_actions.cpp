@@ -1,4 +1,6 @@
+#include "compare_window.h"
 #include "main_window.h"
+#include "plcopen_exchange.h"
 
 #include "about_dialog.h"
 #include "dialogs.h"
@@ -73,9 +75,31 @@ void MainWindow::buildActions() {
     save->setShortcut(QKeySequence::Save);
     file->addAction(tr("Save &As..."), this, &MainWindow::fileSaveAs)
         ->setShortcut(QKeySequence::SaveAs);
+    file->addAction(tr("Co&mpare With..."), this, [this] {
+        CompareWindow::compareWithFile(this, projectToKeep(), m_document->name(),
+                                       m_document->path());
+    });
     file->addSeparator();
     file->addAction(tr("&Import Instruction List..."), this, &MainWindow::importListing);
     file->addAction(tr("&Export Instruction List..."), this, &MainWindow::exportListing);
+    file->addAction(tr("Import &PLCopen XML..."), this, [this] {
+        if (!maybeSave())
+            return;
+        if (auto imported = importPlcopenFile(this, m_document->target(), m_document->path())) {
+            showProject(imported->project, QString());
+            nameImported(imported->path);
+        }
+    });
+    file->addAction(tr("Expor&t PLCopen XML..."), this, [this] {
+        if (m_ilTimer.isActive())
+            applyListing();
+        exportPlcopenFile(
+            this, projectToKeep(), m_document->name(), m_document->path(),
+            pendingListing().isEmpty()
+                ? QString()
+                : tr("The instruction list has "
+                     "errors, so the ladder is not the program as typed: fix the list first."));
+    });
     QMenu *exportMenu = file->addMenu(tr("Export &Ladder"));
     exportMenu->addAction(tr("As &PDF..."), this, [this] { exportImage(QStringLiteral("pdf")); });
     exportMenu->addAction(tr("As &SVG..."), this, [this] { exportImage(QStringLiteral("svg")); });

@@ -1,11 +1,15 @@
 #include "main_window.h"
 
 #include "connection_panel.h"
+#include "simulation_controller.h"
+#include "tests_panel.h"
 
 #include "editor/io_panel.h"
 #include "editor/timing_chart.h"
 #include "editor/watch_list_view.h"
 #include "editor/watch_panel.h"
+
+#include "simulator/session.h"
 
 #include <QDir>
 #include <QDockWidget>
@@ -37,6 +41,14 @@ void MainWindow::buildMonitorDocks() {
     dock("watchDock", m_watchPanel, Qt::BottomDockWidgetArea);
     dock("timingChartDock", m_chart, Qt::BottomDockWidgetArea);
     dock("ioDock", m_ioPanel, Qt::LeftDockWidgetArea)->hide();
+    // The scenario tests of the project, a tab with the findings and records (dock_layout.h).
+    auto *tests = new TestsPanel(m_document);
+    tests->setHistory([this] {
+        return m_simulation->session() ? m_simulation->session()->scanHistory() : nullptr;
+    });
+    connect(tests, &TestsPanel::message, this,
+            [this](const QString &t) { statusBar()->showMessage(t, 10000); });
+    dock("testsDock", tests, Qt::BottomDockWidgetArea);
     const auto say = [this](const QString &text) { statusBar()->showMessage(text, 10000); };
     connect(m_watchPanel, &editor::WatchPanel::message, this, say);
     connect(m_ioPanel, &editor::IoPanel::message, this, say);
@@ -64,11 +76,12 @@ void MainWindow::retranslatePanels() {
     title("watchDock", tr("Watch"));
     title("ioDock", tr("Inputs and Outputs"));
     title("timingChartDock", tr("Timing Chart"));
+    title("testsDock", tr("Tests"));
 }
 
 void MainWindow::addPanelActions(QMenu *menu) {
     menu->addSeparator();
-    for (const char *name : {"watchDock", "ioDock", "timingChartDock"})
+    for (const char *name : {"watchDock", "ioDock", "timingChartDock", "testsDock"})
         if (auto *d = findChild<QDockWidget *>(QString::fromLatin1(name)))
             menu->addAction(d->toggleViewAction());
 }

@@ -33,57 +33,158 @@ QString deviceText(const Target &t, const Address &a) {
 }
 
 // ---- writing ----------------------------------------------------------------------------
+// Written by hand rather than by QJsonDocument, so that the layout serves a diff and a merge:
+// keys in one fixed order (the order a reader wants them: what, then the rungs), a rung's
+// row of cells on one line, an output on one line, a symbol on one line. A change to one
+// contact changes one line, and two people's changes to two rungs touch different lines.
 
-QJsonObject rungToJson(const Target &t, const Rung &rung) {
-    QJsonObject o;
-    if (!rung.comment.isEmpty())
-        o.insert(QStringLiteral("comment"), rung.comment);
-    o.insert(QStringLiteral("rows"), rung.rows);
-    o.insert(QStringLiteral("columns"), rung.columns);
-    QJsonArray cells;
-    for (int r = 0; r < rung.rows; ++r) {
-        QJsonArray row;
-        for (int c = 0; c < rung.columns; ++c) {
-            const Cell &cell = rung.cell(r, c);
-            switch (cell.kind) {
-            case CellKind::Empty:
-                row.append(QString());
-                break;
-            case CellKind::Wire:
-                row.append(QStringLiteral("-"));
-                break;
-            case CellKind::Contact:
-                row.append(contactToText(t, cell.contact));
-                break;
-            }
+// A JSON string: quotes, backslashes and control characters escaped, the rest as UTF-8.
+QByteArray jsonString(const QString &text) {
+    QByteArray out;
+    out.reserve(text.size() + 2);
+    out += '"';
+    for (const char c : text.toUtf8()) {
+        const auto u = static_cast<unsigned char>(c);
+        switch (c) {
+        case '"':
+            out += "\\\"";
+            break;
+        case '\\':
+            out += "\\\\";
+            break;
+        case '\n':
+            out += "\\n";
+            break;
+        case '\r':
+            out += "\\r";
+            break;
+        case '\t':
+            out += "\\t";
+            break;
+        case '\b':
+            out += "\\b";
+            break;
+        case '\f':
+            out += "\\f";
+            break;
+        default:
+            if (u < 0x20)
+                out += QStringLiteral("\\u%1").arg(u, 4, 16, QLatin1Char('0')).toLatin1();
+            else
+                out += c;
         }
-        cells.append(row);
     }
-    o.insert(QStringLiteral("cells"), cells);
-    QJsonArray links;
+    out += '"';
+    return out;
+}
+
+QByteArray number(qint64 value) {
+    return QByteArray::number(value);
+}
+
+class Writer {
+public:
+    QByteArray out;
+
+    // "key": value at this depth, with a comma before it when it is not the object's first.
+    void key(int depth, const char *name) {
+        separate(depth);
+        out += QByteArray(4 * depth, ' ') + '"' + name + "\": ";
+    }
+    void open(char bracket) {
+        out += bracket;
+        m_first.push_back(true);
+    }
+    void close(int depth, char bracket) {
+        const bool empty = m_first.back();
+        m_first.pop_back();
+        if (!empty)
+            out += '\n' + QByteArray(4 * depth, ' ');
+        out += bracket;
+    }
+    // The next element of the array open at depth - 1, on a line of its own.
+    void element(int depth) {
+        separate(depth);
+        out += QByteArray(4 * depth, ' ');
+    }
+
+private:
+    void separate(int) {
+        if (!m_first.back())
+            out += ',';
+        out += '\n';
+        m_first.back() = false;
+    }
+    std::vector<bool> m_first;
+};
+
+QByteArray cellText(const Target &t, const Cell &cell) {
+    switch (cell.kind) {
+    case CellKind::Empty:
+        return jsonString(QString());
+    case CellKind::Wire:
+        return jsonString(QStringLiteral("-"));
+    case CellKind::Contact:
+        break;
+    }
+    return jsonString(contactToText(t, cell.contact));
+}
+
+void writeRung(Writer &w, const Target &t, const Rung &rung) {
+    w.open('{');
+    if (!rung.comment.isEmpty()) {
+        w.key(3, "comment");
+        w.out += jsonString(rung.comment);
+    }
+    w.key(3, "rows");
+    w.out += number(rung.rows);
+    w.key(3, "columns");
+    w.out += number(rung.columns);
+    w.key(3, "cells");
+    w.open('[');
+    for (int r = 0; r < rung.rows; ++r) {
+        w.element(4);
+        QByteArrayList row;
+        for (int c = 0; c < rung.columns; ++c)
+            row << cellText(t, rung.cell(r, c));
+        w.out += '[' + row.join(", ") + ']';
+    }
+    w.close(3, ']');
+    QByteArrayList links;
     for (int r = 0; r + 1 < rung.rows; ++r)
         for (int c = 0; c <= rung.columns; ++c)
             if (rung.link(r, c))
-                links.append(QJsonArray{r, c});
-    o.insert(QStringLiteral("links"), links);
-    QJsonArray outputs;
+                links << '[' + number(r) + ", " + number(c) + ']';
+    w.key(3, "links");
+    w.out += '[' + links.join(", ") + ']';
+    w.key(3, "outputs");
+    w.open('[');
     for (int r = 0; r < rung.rows; ++r) {
         const auto &out = rung.outputs[static_cast<std::size_t>(r)];
         if (!out)
             continue;
-        QJsonArray entry{r, printInstruction(t, *out)};
+        w.element(4);
+        w.out += '[' + number(r) + ", " + jsonString(printInstruction(t, *out));
         // Only rows the rung names explicitly: a box without them takes r..r+k-1 on reading.
         const int k = out->spec ? out->spec->inputs : 1;
         if (k > 1 && !rung.inputRows.empty() && rung.inputRows.front() == r) {
-            QJsonArray rows;
+            QByteArrayList rows;
             for (int i : rung.inputRows)
-                rows.append(i);
-            entry.append(rows);
+                rows << number(i);
+            w.out += ", [" + rows.join(", ") + ']';
         }
-        outputs.append(entry);
+        w.out += ']';
     }
-    o.insert(QStringLiteral("outputs"), outputs);
-    return o;
+    w.close(3, ']');
+    w.close(2, '}');
+}
+
+// A symbol row on one line: { "device": "X0", "name": "Start", "comment": "green button" }.
+QByteArray symbolLine(const QString &device, const QString &name, const QString &comment) {
+    QByteArray line = "{ \"device\": " + jsonString(device) + ", \"name\": " + jsonString(name);
+    if (!comment.isEmpty())
+        line += ", \"comment\": " + jsonString(comment);
+    return line + " }";
 }
 
 // ---- reading ----------------------------------------------------------------------------
@@ -436,61 +537,79 @@ const Symbol *Project::symbol(const Address &address) const {
 
 QByteArray projectToJson(const Project &project) {
     const Target &t = *project.target;
-    QJsonObject root;
-    root.insert(QStringLiteral("format"), QLatin1String(kFormat));
-    root.insert(QStringLiteral("schema"), kProjectSchemaVersion);
-    root.insert(QStringLiteral("target"), t.id);
-    root.insert(QStringLiteral("model"), project.model);
-    QJsonArray rungs;
-    for (const Rung &r : project.program.rungs)
-        rungs.append(rungToJson(t, r));
-    root.insert(QStringLiteral("rungs"), rungs);
-    QJsonArray symbols;
-    for (const Symbol &s : project.symbols) {
-        QJsonObject o;
-        o.insert(QStringLiteral("device"), deviceText(t, s.address));
-        o.insert(QStringLiteral("name"), s.name);
-        if (!s.comment.isEmpty())
-            o.insert(QStringLiteral("comment"), s.comment);
-        symbols.append(o);
+    Writer w;
+    w.open('{');
+    w.key(1, "format");
+    w.out += jsonString(QLatin1String(kFormat));
+    w.key(1, "schema");
+    w.out += number(kProjectSchemaVersion);
+    w.key(1, "target");
+    w.out += jsonString(t.id);
+    w.key(1, "model");
+    w.out += jsonString(project.model);
+    w.key(1, "rungs");
+    w.open('[');
+    for (const Rung &r : project.program.rungs) {
+        w.element(2);
+        writeRung(w, t, r);
     }
-    root.insert(QStringLiteral("symbols"), symbols);
-    QJsonObject setValues;
-    for (const auto &[a, v] : project.setValues)
-        setValues.insert(deviceText(t, a), static_cast<double>(v));
-    root.insert(QStringLiteral("setValues"), setValues);
-    QJsonArray watch;
-    for (const WatchList &w : project.watchLists) {
-        QJsonObject o;
-        o.insert(QStringLiteral("name"), w.name);
-        o.insert(QStringLiteral("devices"), QJsonArray::fromStringList(w.devices));
+    w.close(1, ']');
+    w.key(1, "symbols");
+    w.open('[');
+    for (const Symbol &s : project.symbols) {
+        w.element(2);
+        w.out += symbolLine(deviceText(t, s.address), s.name, s.comment);
+    }
+    w.close(1, ']');
+    // In the order of the devices (T2 before T10), one a line.
+    w.key(1, "setValues");
+    w.open('{');
+    for (const auto &[a, v] : project.setValues) {
+        w.element(2);
+        w.out += jsonString(deviceText(t, a)) + ": " + number(v);
+    }
+    w.close(1, '}');
+    w.key(1, "watchLists");
+    w.open('[');
+    for (const WatchList &list : project.watchLists) {
+        w.element(2);
+        w.open('{');
+        w.key(3, "name");
+        w.out += jsonString(list.name);
+        QByteArrayList devices;
+        for (const QString &d : list.devices)
+            devices << jsonString(d);
+        w.key(3, "devices");
+        w.out += '[' + devices.join(", ") + ']';
         // Only the rows shown otherwise than in decimal, and only rows of the list: a file
         // without the key opens with every row in decimal.
-        QJsonObject formats;
-        for (const auto &[device, format] : w.formats)
-            if (format != ValueFormat::Decimal && w.devices.contains(device))
-                formats.insert(device, valueFormatKey(format));
-        if (!formats.isEmpty())
-            o.insert(QStringLiteral("formats"), formats);
-        watch.append(o);
-    }
-    root.insert(QStringLiteral("watchLists"), watch);
-    if (!project.pendingListing.isEmpty())
-        root.insert(QStringLiteral("pendingListing"), project.pendingListing);
-    if (!project.pendingSymbols.empty()) {
-        QJsonArray pending;
-        for (const PendingSymbol &s : project.pendingSymbols) {
-            QJsonObject o;
-            o.insert(QStringLiteral("device"), s.device);
-            o.insert(QStringLiteral("name"), s.name);
-            if (!s.comment.isEmpty())
-                o.insert(QStringLiteral("comment"), s.comment);
-            pending.append(o);
+        QByteArrayList formats;
+        for (const auto &[device, format] : list.formats)
+            if (format != ValueFormat::Decimal && list.devices.contains(device))
+                formats << jsonString(device) + ": " + jsonString(valueFormatKey(format));
+        if (!formats.isEmpty()) {
+            w.key(3, "formats");
+            w.out += "{ " + formats.join(", ") + " }";
         }
-        root.insert(QStringLiteral("pendingSymbols"), pending);
+        w.close(2, '}');
     }
-    // Indented output: one rung's change stays within its own lines in a diff.
-    return QJsonDocument(root).toJson(QJsonDocument::Indented);
+    w.close(1, ']');
+    if (!project.pendingListing.isEmpty()) {
+        w.key(1, "pendingListing");
+        w.out += jsonString(project.pendingListing);
+    }
+    if (!project.pendingSymbols.empty()) {
+        w.key(1, "pendingSymbols");
+        w.open('[');
+        for (const PendingSymbol &s : project.pendingSymbols) {
+            w.element(2);
+            w.out += symbolLine(s.device, s.name, s.comment);
+        }
+        w.close(1, ']');
+    }
+    w.close(0, '}');
+    w.out += '\n';
+    return w.out;
 }
 
 std::optional<Project> projectFromJson(const QByteArray &json, ProjectError *error) {

@@ -4,6 +4,7 @@
 #include <QDir>
 #include <QDirIterator>
 #include <QFile>
+#include <QJsonDocument>
 #include <QRandomGenerator>
 #include <QTemporaryDir>
 
@@ -171,8 +172,7 @@ TEST(ProjectFile, WatchRowFormatsAreSavedOnlyWhereNotDecimal) {
     p.watchLists[0].formats[QStringLiteral("X0")] = ValueFormat::Decimal;
     p.watchLists[0].formats[QStringLiteral("D9")] = ValueFormat::Hex; // no such row
     const QByteArray json = projectToJson(p);
-    EXPECT_TRUE(json.contains("\"formats\": {\n                \"D0\": \"bcd\"\n            }"))
-        << json.toStdString();
+    EXPECT_TRUE(json.contains("\"formats\": { \"D0\": \"bcd\" }")) << json.toStdString();
     EXPECT_FALSE(json.contains("D9"));
 }
 
@@ -255,4 +255,97 @@ TEST(ProjectFile, AFileWithoutTheListAsTypedHasNone) {
                                  "\"target\": \"vigor\", \"pendingListing\": 5}",
                                  &error));
     EXPECT_EQ(error.message.toStdString(), "pendingListing: a string is expected");
+}
+
+namespace {
+
+// The lines of `after` that are not in `before` and those of `before` not in `after`, as a
+// line diff counts them (the files here have no repeated lines that matter).
+int changedLines(const QByteArray &before, const QByteArray &after) {
+    const QList<QByteArray> x = before.split('\n');
+    const QList<QByteArray> y = after.split('\n');
+    int changed = 0;
+    for (const QByteArray &line : x)
+        changed += y.contains(line) ? 0 : 1;
+    for (const QByteArray &line : y)
+        changed += x.contains(line) ? 0 : 1;
+    return changed;
+}
+
+} // namespace
+
+// docs/version-control.md: one contact, one symbol, one set value each change one line of the
+// file; the keys stand in one fixed order, what a reader wants first at the top.
+TEST(ProjectFile, TheLayoutServesADiff) {
+    Project p = sample();
+    const QByteArray before = projectToJson(p);
+    EXPECT_TRUE(before.startsWith("{\n    \"format\": \"rungstudio-project\",\n    \"schema\": 1,\n"
+                                  "    \"target\": \"vigor\",\n    \"model\": \"VB\",\n    "
+                                  "\"rungs\": [\n"))
+        << before.toStdString();
+    EXPECT_TRUE(before.contains("\n    \"symbols\": [\n        { \"device\": \"X0\", \"name\": "
+                                "\"Start\", \"comment\": \"green button\" }\n    ],\n"))
+        << before.toStdString();
+    EXPECT_TRUE(before.endsWith("}\n"));
+    // A contact made normally closed.
+    Project q = p;
+    Rung &rung = q.program.rungs.front();
+    for (Cell &c : rung.cells)
+        if (c.kind == CellKind::Contact && c.contact.mode == ContactMode::Normal) {
+            c.contact.mode = ContactMode::Negated;
+            break;
+        }
+    EXPECT_EQ(changedLines(before, projectToJson(q)), 2);
+    // A symbol renamed, a set value changed.
+    q = p;
+    q.symbols[0].name = QStringLiteral("Go");
+    EXPECT_EQ(changedLines(before, projectToJson(q)), 2);
+    q = p;
+    q.setValues.begin()->second = 99;
+    EXPECT_EQ(changedLines(before, projectToJson(q)), 2);
+    // Set values in the order of the devices, not of their texts.
+    q = p;
+    const Target &t = *p.target;
+    q.setValues[std::get<Address>(parseAddress(t, u"T10"))] = 1;
+    q.setValues[std::get<Address>(parseAddress(t, u"T2"))] = 2;
+    const QByteArray values = projectToJson(q);
+    EXPECT_LT(values.indexOf("\"T2\": 2"), values.indexOf("\"T10\": 1")) << values.toStdString();
+    // Text with quotes, backslashes, line breaks and other scripts reads back as written.
+    q = p;
+    q.program.rungs.front().comment =
+        QStringLiteral("a \"quoted\" \\ back\nslash\t\u00e1rv\u00edzt\u0001");
+    ProjectError error;
+    const auto back = projectFromJson(projectToJson(q), &error);
+    ASSERT_TRUE(back) << error.message.toStdString();
+    EXPECT_EQ(back->program.rungs.front().comment, q.program.rungs.front().comment);
+}
+
+// Files written before the layout of docs/version-control.md (QJsonDocument's: keys in
+// alphabetical order, one value a line) read as before, and the next save keeps everything.
+TEST(ProjectFile, TheOldLayoutReadsAndSavesToTheSameProject) {
+    ProjectError error;
+    const QString path = QStringLiteral(RUNG_TEST_DATA_DIR "/project/old-layout.rung");
+    const auto old = loadProject(path, &error);
+    ASSERT_TRUE(old) << error.message.toStdString();
+    EXPECT_FALSE(old->symbols.empty());
+    EXPECT_FALSE(old->watchLists.empty());
+    const QByteArray saved = projectToJson(*old);
+    EXPECT_NE(saved, readAll(path));
+    const auto again = projectFromJson(saved, &error);
+    ASSERT_TRUE(again) << error.message.toStdString();
+    EXPECT_EQ(again->program.rungs, old->program.rungs);
+    EXPECT_EQ(again->symbols, old->symbols);
+    EXPECT_EQ(again->watchLists, old->watchLists);
+    EXPECT_EQ(again->setValues, old->setValues);
+    EXPECT_EQ(again->model, old->model);
+    EXPECT_EQ(projectToJson(*again), saved);
+    // Everything a file holds, in the old layout: the same project.
+    Project rich = sample();
+    rich.pendingListing = QStringLiteral("LD X8\nOUT Y1\n");
+    rich.pendingSymbols = {{QStringLiteral("X9"), QStringLiteral("Spare"), QStringLiteral("c")}};
+    const QByteArray oldLayout =
+        QJsonDocument::fromJson(projectToJson(rich)).toJson(QJsonDocument::Indented);
+    const auto fromOld = projectFromJson(oldLayout, &error);
+    ASSERT_TRUE(fromOld) << error.message.toStdString();
+    EXPECT_EQ(projectToJson(*fromOld), projectToJson(rich));
 }

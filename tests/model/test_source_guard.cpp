@@ -164,6 +164,12 @@ TEST(SourceGuard, LiteralScannerSeesCodeNotComments) {
 // F index registers), a colour, a time format.
 bool isNoDevice(const QString &word, const QString &literal) {
     static const QRegularExpression key(QStringLiteral("^F([1-9]|1[0-2])$"));
+    // The PLCopen standard's name and namespace ("TC6 XML 2.01", ".../xml/tc6_0201") are no
+    // CPM1 TC and channel 2.
+    if (literal.contains(QLatin1String("plcopen"), Qt::CaseInsensitive) &&
+        (word.compare(QLatin1String("TC6"), Qt::CaseInsensitive) == 0 ||
+         word == QLatin1String("2.01")))
+        return true;
     // A colour (#b00020) is no PL110 B device.
     return key.match(word).hasMatch() || literal.contains(QLatin1Char('#') + word) ||
            word == QLatin1String("0000.00");

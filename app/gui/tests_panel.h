@@ -1,0 +1,88 @@
+#pragma once
+
+// The Tests dock (docs/scenario-tests.md): the project's scenario tests (the .rungtest files in
+// its folder and below whose `program` is this project), run one or all on a worker thread
+// against the program as it is in the window (unsaved edits too); each expectation passed or
+// failed, in words and colour. A failed one opens the timing chart of the run at its instant
+// with the devices it names. Record... writes a scenario from the simulation's history.
+
+#include "simulator/scan_history.h"
+#include "simulator/scenario.h"
+
+#include <QPointer>
+#include <QWidget>
+
+#include <atomic>
+
+#include <functional>
+#include <memory>
+#include <thread>
+
+class QLabel;
+class QPushButton;
+class QTreeWidget;
+class QTreeWidgetItem;
+
+namespace rung::editor {
+class Document;
+}
+
+namespace rung::app {
+
+class TestsPanel : public QWidget {
+    Q_OBJECT
+
+public:
+    explicit TestsPanel(editor::Document *document, QWidget *parent = nullptr);
+    ~TestsPanel() override; // waits for a run under way
+
+    // The scenarios found beside the project (absolute paths), in name order.
+    QStringList scenarios() const { return m_files; }
+    // Looks for them again (the project was saved elsewhere, a file was added).
+    void refresh();
+    // Runs these (all when empty); runFinished() follows on this thread.
+    void run(const QStringList &files = {});
+    bool running() const { return m_worker.joinable() && !m_done; }
+    const std::vector<simulator::ScenarioResult> &results() const { return m_results; }
+    QTreeWidget *tree() const { return m_tree; }
+    // Opens the chart of a failed expectation (the result of `file`, its failure `index`).
+    void showFailure(const QString &file, std::size_t index);
+
+    // Where the simulation's record comes from, for Record... (the main window's simulation;
+    // null while none runs).
+    using HistoryGetter = std::function<std::shared_ptr<const simulator::ScanHistory>()>;
+    void setHistory(HistoryGetter history) { m_history = std::move(history); }
+    void record();
+    // The scenario Record... writes to `path` (the program named relative to it), or empty
+    // with *error; *notes says what it holds otherwise than the run.
+    QString recordedText(const QString &path, QString *error, QStringList *notes) const;
+
+signals:
+    void runFinished();
+    void message(const QString &text);
+
+protected:
+    void changeEvent(QEvent *event) override;
+
+private:
+    void retranslate();
+    void showResults();
+    // The program as it is in the window, compiled, or why not.
+    simulator::ScenarioProgram documentProgram() const;
+    void join();
+
+    editor::Document *m_document;
+    QLabel *m_folder;
+    QTreeWidget *m_tree;
+    QPushButton *m_runAll;
+    QPushButton *m_runOne;
+    QPushButton *m_refresh;
+    QPushButton *m_record;
+    QStringList m_files;
+    std::vector<simulator::ScenarioResult> m_results;
+    std::thread m_worker;
+    std::atomic<bool> m_done{true};
+    HistoryGetter m_history;
+};
+
+} // namespace rung::app

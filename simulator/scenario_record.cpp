@@ -1,0 +1,135 @@
+#include "scenario_record.h"
+
+#include "model/target/address.h"
+
+#include <QCoreApplication>
+
+namespace rung::simulator {
+
+namespace {
+
+struct Tr {
+    Q_DECLARE_TR_FUNCTIONS(rung::simulator::Scenario)
+};
+
+QString device(const model::Target &t, const model::Address &a) {
+    return model::formatAddress(t, a);
+}
+
+// The outputs' values after `scan` scans, as an expectation ("Y0=1 Y1=0").
+QString seen(const ScanHistory &history, const model::Target &t,
+             const std::vector<model::Address> &outputs, quint64 scan) {
+    const auto snapshot = history.rebuild(scan);
+    if (!snapshot)
+        return {};
+    QStringList parts;
+    for (const model::Address &a : outputs)
+        parts << QStringLiteral("%1=%2").arg(device(t, a)).arg(snapshot->bit(a) ? 1 : 0);
+    return parts.join(QLatin1Char(' '));
+}
+
+} // namespace
+
+std::optional<RecordedScenario> recordScenario(const ScanHistory &history, const model::Target &t,
+                                               const QString &programLine,
+                                               const std::vector<model::Address> &outputs,
+                                               QString *error) {
+    const ScanHistory::Window window = history.window();
+    if (window.empty() || window.lastScan == 0) {
+        *error = Tr::tr("the simulation has run no scan yet: run it, work its inputs, then "
+                        "record");
+        return std::nullopt;
+    }
+    if (window.firstScan > 0) {
+        *error = Tr::tr("the simulation's history no longer holds its start (it keeps the last "
+                        "hour): stop it, run it again and record sooner");
+        return std::nullopt;
+    }
+    RecordedScenario out;
+    const qint64 period = history.firstPeriodMs();
+    QStringList lines;
+    lines << QStringLiteral("# %1").arg(Tr::tr("Recorded from a simulation: the inputs as they "
+                                               "were worked, the outputs as they were seen."))
+          << QStringLiteral("program %1").arg(programLine)
+          << QStringLiteral("period %1ms").arg(period) << QString();
+    const std::vector<ScanHistory::Recorded> events = history.recorded();
+    // Seconds with their decimals, as the scenario reads them back ("65.32s").
+    auto time = [period](quint64 scan) {
+        QString s = QString::number(
+            static_cast<double>(scan) * static_cast<double>(period) / 1000.0, 'f', 3);
+        while (s.endsWith(QLatin1Char('0')))
+            s.chop(1);
+        if (s.endsWith(QLatin1Char('.')))
+            s.chop(1);
+        return s + QLatin1Char('s');
+    };
+    bool periodNoted = false;
+    bool insideNoted = false;
+    std::size_t k = 0;
+    quint64 previous = 0;
+    bool first = true;
+    while (k < events.size()) {
+        const quint64 scan = events[k].scan;
+        // The outputs seen just before these commands (after the scans run since the last).
+        if (!first && scan > previous) {
+            const QString values = seen(history, t, outputs, scan);
+            if (!values.isEmpty() && !outputs.empty())
+                lines << QStringLiteral("at %1 expect %2").arg(time(scan - 1), values);
+        }
+        QStringList sets;
+        for (; k < events.size() && events[k].scan == scan; ++k) {
+            const ScanHistory::Recorded &e = events[k];
+            if (e.position >= 0 && !insideNoted) {
+                insideNoted = true;
+                out.notes << Tr::tr("a command given while a scan was stopped inside is "
+                                    "applied at the start of the next scan");
+            }
+            if (std::holds_alternative<ScanHistory::SetPeriod>(e.action)) {
+                if (!periodNoted)
+                    out.notes << Tr::tr("the period was changed during the simulation: the "
+                                        "scenario runs at the first one, %1 ms")
+                                     .arg(period);
+                periodNoted = true;
+                continue;
+            }
+            const EngineCommand &c = std::get<EngineCommand>(e.action);
+            if (const auto *d = std::get_if<model::DeviceCommand>(&c.what)) {
+                using K = model::DeviceCommand::Kind;
+                const QString name = device(t, d->address);
+                switch (d->kind) {
+                case K::WriteBit:
+                case K::WriteWord:
+                case K::WriteSetValue:
+                    sets << QStringLiteral("at %1 set %2=%3").arg(time(scan), name).arg(d->value);
+                    break;
+                case K::Force:
+                    sets << QStringLiteral("at %1 force %2=%3").arg(time(scan), name).arg(d->value);
+                    break;
+                case K::Release:
+                    sets << QStringLiteral("at %1 release %2").arg(time(scan), name);
+                    break;
+                case K::ReleaseAll:
+                    sets << QStringLiteral("at %1 release all").arg(time(scan));
+                    break;
+                }
+            } else {
+                out.notes << Tr::tr("a power cycle, reset or online edit at %1 is not in the "
+                                    "scenario")
+                                 .arg(time(scan));
+            }
+        }
+        lines << sets;
+        previous = scan;
+        first = false;
+    }
+    // The outputs at the end of the run.
+    if (!outputs.empty()) {
+        const QString values = seen(history, t, outputs, window.lastScan);
+        if (!values.isEmpty())
+            lines << QStringLiteral("at %1 expect %2").arg(time(window.lastScan - 1), values);
+    }
+    out.text = lines.join(QLatin1Char('\n')) + QLatin1Char('\n');
+    return out;
+}
+
+} // namespace rung::simulator

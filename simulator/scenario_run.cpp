@@ -1,0 +1,677 @@
+#include "scenario.h"
+
+#include "model/target/address.h"
+
+#include <QCoreApplication>
+#include <QDir>
+#include <QFileInfo>
+#include <QRegularExpression>
+
+// Running a scenario on the scan engine (docs/scenario-tests.md "How a scenario runs"): the
+// statements' devices and conditions are read with the program's target, then the engine
+// scans on virtual time, the statements applied and checked in the file's order.
+
+namespace rung::simulator {
+
+namespace {
+
+struct Tr {
+    Q_DECLARE_TR_FUNCTIONS(rung::simulator::Scenario)
+};
+
+// A value a condition reads: a device (a bit; a word; a timer's or counter's current or set
+// value) or a constant.
+struct Value {
+    enum class Kind : std::uint8_t { Bit, Word, Current, SetValue, Constant } kind = Kind::Constant;
+    model::Address address;
+    qint64 constant = 0;
+    QString text; // as written
+
+    bool isDevice() const { return kind != Kind::Constant; }
+    qint64 read(const Engine &e) const {
+        switch (kind) {
+        case Kind::Bit:
+            return e.bit(address) ? 1 : 0;
+        case Kind::Word:
+        case Kind::Current:
+            return e.value(address);
+        case Kind::SetValue:
+            return e.setValue(address);
+        case Kind::Constant:
+            break;
+        }
+        return constant;
+    }
+};
+
+struct Condition {
+    enum class Kind : std::uint8_t { And, Or, Not, Compare, Truth } kind = Kind::Truth;
+    std::vector<Condition> items;
+    Value left, right;
+    model::CompareOp op = model::CompareOp::Eq;
+
+    bool holds(const Engine &e) const {
+        switch (kind) {
+        case Kind::And:
+            return std::all_of(items.begin(), items.end(),
+                               [&](const Condition &c) { return c.holds(e); });
+        case Kind::Or:
+            return std::any_of(items.begin(), items.end(),
+                               [&](const Condition &c) { return c.holds(e); });
+        case Kind::Not:
+            return !items.front().holds(e);
+        case Kind::Truth:
+            return left.read(e) != 0;
+        case Kind::Compare:
+            break;
+        }
+        const qint64 x = left.read(e);
+        const qint64 y = right.read(e);
+        switch (op) {
+        case model::CompareOp::Eq:
+        case model::CompareOp::None:
+            return x == y;
+        case model::CompareOp::Ne:
+            return x != y;
+        case model::CompareOp::Lt:
+            return x < y;
+        case model::CompareOp::Le:
+            return x <= y;
+        case model::CompareOp::Gt:
+            return x > y;
+        case model::CompareOp::Ge:
+            return x >= y;
+        }
+        return false;
+    }
+    void devices(std::vector<const Value *> *out) const {
+        for (const Condition &c : items)
+            c.devices(out);
+        for (const Value *v : {&left, &right})
+            if (v->isDevice() && std::none_of(out->begin(), out->end(),
+                                              [v](const Value *w) { return w->text == v->text; }))
+                out->push_back(v);
+    }
+};
+
+struct Assignment {
+    Value device;
+    qint64 value = 0;
+};
+
+// Reads the devices, values and conditions of one statement with the target's spelling of
+// devices ("DM 0010", "000.01", "TIM 000", "V10"). A device may hold one space (the CPM1's
+// "DM 0010"): a word that is no device is tried with the word after it.
+class StatementReader {
+public:
+    StatementReader(const model::Target &target, const QString &text)
+        : m_target(target)
+        , m_text(text) {}
+
+    QString error() const { return m_error; }
+
+    std::optional<Condition> condition() {
+        auto c = readOr();
+        if (c && !atEnd())
+            return fail(Tr::tr("\"%1\" is not understood here").arg(m_text.mid(m_pos).trimmed()));
+        return c;
+    }
+
+    std::optional<std::vector<Assignment>> assignments(bool bitsOnly) {
+        std::vector<Assignment> out;
+        while (!atEnd()) {
+            auto device = readValue(true);
+            if (!device)
+                return std::nullopt;
+            if (!device->isDevice())
+                return fail(Tr::tr("%1 is no device").arg(device->text));
+            if (bitsOnly && device->kind != Value::Kind::Bit)
+                return fail(Tr::tr("%1: only bits are forced").arg(device->text));
+            skipSpaces();
+            if (!take(QStringLiteral("=")))
+                return fail(Tr::tr("%1 needs =VALUE").arg(device->text));
+            auto value = readValue(false);
+            if (!value)
+                return std::nullopt;
+            if (value->isDevice())
+                return fail(
+                    Tr::tr("%1 is no value (a number, ON or OFF, #hex digits)").arg(value->text));
+            out.push_back({*device, value->constant});
+            skipSpaces();
+            take(QStringLiteral(","));
+        }
+        if (out.empty())
+            return fail(Tr::tr("DEVICE=VALUE is expected"));
+        return out;
+    }
+
+    std::optional<std::vector<Value>> devices() {
+        std::vector<Value> out;
+        while (!atEnd()) {
+            auto device = readValue(true);
+            if (!device)
+                return std::nullopt;
+            if (device->kind != Value::Kind::Bit)
+                return fail(Tr::tr("%1: only bits are forced and released").arg(device->text));
+            out.push_back(*device);
+            skipSpaces();
+            take(QStringLiteral(","));
+        }
+        return out;
+    }
+
+private:
+    std::nullopt_t fail(const QString &message) {
+        if (m_error.isEmpty())
+            m_error = message;
+        return std::nullopt;
+    }
+    void skipSpaces() {
+        while (m_pos < m_text.size() && m_text[m_pos].isSpace())
+            ++m_pos;
+    }
+    bool atEnd() {
+        skipSpaces();
+        return m_pos >= m_text.size();
+    }
+    bool take(const QString &s) {
+        skipSpaces();
+        if (m_text.mid(m_pos, s.size()) != s)
+            return false;
+        m_pos += s.size();
+        return true;
+    }
+    static bool wordChar(QChar c) { return !c.isSpace() && !QStringLiteral("()=<>!,").contains(c); }
+    // The word at `from` (no spaces, no operators); its end in *end.
+    QString wordAt(qsizetype from, qsizetype *end) const {
+        qsizetype p = from;
+        while (p < m_text.size() && m_text[p].isSpace())
+            ++p;
+        qsizetype q = p;
+        while (q < m_text.size() && wordChar(m_text[q]))
+            ++q;
+        *end = q;
+        return m_text.mid(p, q - p);
+    }
+    bool keyword(const char *word) {
+        qsizetype end = 0;
+        if (wordAt(m_pos, &end).compare(QLatin1String(word), Qt::CaseInsensitive) != 0)
+            return false;
+        m_pos = end;
+        return true;
+    }
+    bool peekKeyword(const char *word) const {
+        qsizetype end = 0;
+        return wordAt(m_pos, &end).compare(QLatin1String(word), Qt::CaseInsensitive) == 0;
+    }
+
+    static std::optional<qint64> constant(const QString &w) {
+        static const QRegularExpression decimal(QStringLiteral("^-?\\d+$"));
+        bool ok = false;
+        if (decimal.match(w).hasMatch()) {
+            const qint64 v = w.toLongLong(&ok);
+            return ok ? std::optional<qint64>(v) : std::nullopt;
+        }
+        const QString upper = w.toUpper();
+        if (upper == QLatin1String("ON") || upper == QLatin1String("TRUE"))
+            return 1;
+        if (upper == QLatin1String("OFF") || upper == QLatin1String("FALSE"))
+            return 0;
+        // A word in hexadecimal digits: #0150 (as CPM1 listings write BCD words), 0x96, 16#96.
+        QString digits;
+        if (w.startsWith(QLatin1Char('#')))
+            digits = w.mid(1);
+        else if (upper.startsWith(QLatin1String("0X")))
+            digits = w.mid(2);
+        else if (w.startsWith(QLatin1String("16#")))
+            digits = w.mid(3);
+        if (digits.isEmpty() || digits.size() > 8)
+            return std::nullopt;
+        const qint64 v = digits.toLongLong(&ok, 16);
+        return ok ? std::optional<qint64>(v) : std::nullopt;
+    }
+
+    // A device or a constant. With preferDevice a word that reads as both (the CPM1's channel
+    // "200") is the device: left of a comparison and in an assignment a device is expected.
+    std::optional<Value> readValue(bool preferDevice) {
+        qsizetype end = 0;
+        const QString word = wordAt(m_pos, &end);
+        if (word.isEmpty())
+            return fail(m_pos >= m_text.size() ? Tr::tr("a device or a value is missing at the end")
+                                               : Tr::tr("a device or a value is expected at \"%1\"")
+                                                     .arg(m_text.mid(m_pos).trimmed()));
+        if (!preferDevice) {
+            if (const auto c = constant(word)) {
+                m_pos = end;
+                Value v;
+                v.constant = *c;
+                v.text = word;
+                return v;
+            }
+        }
+        QString prefix;
+        QString name = word;
+        for (const char *p : {"cv:", "sv:"})
+            if (name.startsWith(QLatin1String(p), Qt::CaseInsensitive)) {
+                prefix = name.left(3).toLower();
+                name = name.mid(3);
+            }
+        auto parsed = model::parseAddress(m_target, name);
+        qsizetype used = end;
+        QString written = word;
+        if (std::holds_alternative<model::AddressError>(parsed)) {
+            qsizetype end2 = 0;
+            const QString next = wordAt(end, &end2);
+            if (!next.isEmpty() && next.compare(QLatin1String("and"), Qt::CaseInsensitive) != 0 &&
+                next.compare(QLatin1String("or"), Qt::CaseInsensitive) != 0 &&
+                next.compare(QLatin1String("not"), Qt::CaseInsensitive) != 0) {
+                auto two = model::parseAddress(m_target, name + QLatin1Char(' ') + next);
+                if (std::holds_alternative<model::Address>(two)) {
+                    parsed = two;
+                    used = end2;
+                    written = word + QLatin1Char(' ') + next;
+                }
+            }
+        }
+        if (const auto *e = std::get_if<model::AddressError>(&parsed)) {
+            if (preferDevice)
+                if (const auto c = constant(word)) {
+                    m_pos = end;
+                    Value v;
+                    v.constant = *c;
+                    v.text = word;
+                    return v;
+                }
+            return fail(
+                Tr::tr("%1 is no device of %2: %3").arg(word, m_target.displayName, e->message));
+        }
+        m_pos = used;
+        Value v;
+        v.text = written;
+        v.address = std::get<model::Address>(parsed);
+        const model::AreaKind kind = m_target.area(v.address.area).kind;
+        const bool element = kind == model::AreaKind::Timer || kind == model::AreaKind::Counter;
+        if (!prefix.isEmpty() && (!element || v.address.bit >= 0))
+            return fail(Tr::tr("%1: cv: and sv: name a timer's or a counter's current and set "
+                               "value")
+                            .arg(written));
+        if (prefix == QLatin1String("cv:"))
+            v.kind = Value::Kind::Current;
+        else if (prefix == QLatin1String("sv:"))
+            v.kind = Value::Kind::SetValue;
+        else if (element || kind == model::AreaKind::Bit || v.address.bit >= 0)
+            v.kind = Value::Kind::Bit; // a timer's or counter's done bit
+        else
+            v.kind = Value::Kind::Word;
+        return v;
+    }
+
+    std::optional<Condition> readOr() {
+        auto first = readAnd();
+        if (!first)
+            return std::nullopt;
+        Condition c;
+        c.kind = Condition::Kind::Or;
+        c.items.push_back(*first);
+        while (keyword("or")) {
+            auto next = readAnd();
+            if (!next)
+                return std::nullopt;
+            c.items.push_back(*next);
+        }
+        return c.items.size() == 1 ? c.items.front() : c;
+    }
+    // Conditions side by side hold together: "Y0=0 Y1=1" is "Y0=0 and Y1=1".
+    std::optional<Condition> readAnd() {
+        Condition c;
+        c.kind = Condition::Kind::And;
+        while (true) {
+            auto next = readUnary();
+            if (!next)
+                return std::nullopt;
+            c.items.push_back(*next);
+            if (keyword("and"))
+                continue;
+            if (atEnd() || m_text[m_pos] == QLatin1Char(')') || peekKeyword("or"))
+                break;
+        }
+        return c.items.size() == 1 ? c.items.front() : c;
+    }
+    std::optional<Condition> readUnary() {
+        if (keyword("not")) {
+            auto inner = readUnary();
+            if (!inner)
+                return std::nullopt;
+            Condition c;
+            c.kind = Condition::Kind::Not;
+            c.items.push_back(*inner);
+            return c;
+        }
+        if (take(QStringLiteral("("))) {
+            auto inner = readOr();
+            if (!inner)
+                return std::nullopt;
+            if (!take(QStringLiteral(")")))
+                return fail(Tr::tr("a \")\" is missing"));
+            return inner;
+        }
+        auto left = readValue(true);
+        if (!left)
+            return std::nullopt;
+        skipSpaces();
+        static const std::pair<const char *, model::CompareOp> ops[] = {
+            {"<>", model::CompareOp::Ne}, {"!=", model::CompareOp::Ne},
+            {"<=", model::CompareOp::Le}, {">=", model::CompareOp::Ge},
+            {"==", model::CompareOp::Eq}, {"=", model::CompareOp::Eq},
+            {"<", model::CompareOp::Lt},  {">", model::CompareOp::Gt}};
+        for (const auto &[text, op] : ops) {
+            if (!take(QLatin1String(text)))
+                continue;
+            auto right = readValue(false);
+            if (!right)
+                return std::nullopt;
+            Condition c;
+            c.kind = Condition::Kind::Compare;
+            c.left = *left;
+            c.right = *right;
+            c.op = op;
+            return c;
+        }
+        if (left->kind != Value::Kind::Bit)
+            return fail(left->isDevice()
+                            ? Tr::tr("%1 is a word: compare it (%1=5, %1>100)").arg(left->text)
+                            : Tr::tr("%1 alone is no condition").arg(left->text));
+        Condition c;
+        c.kind = Condition::Kind::Truth;
+        c.left = *left;
+        return c;
+    }
+
+    const model::Target &m_target;
+    QString m_text;
+    qsizetype m_pos = 0;
+    QString m_error;
+};
+
+struct PreparedStatement {
+    const ScenarioStatement *statement = nullptr;
+    std::vector<Assignment> assignments; // set, force
+    std::vector<Value> devices;          // release
+    bool releaseAll = false;
+    Condition condition; // expect, within, always
+};
+
+QString seenText(const Condition &c, const Engine &e) {
+    std::vector<const Value *> devices;
+    c.devices(&devices);
+    QStringList parts;
+    for (const Value *v : devices)
+        parts << QStringLiteral("%1=%2").arg(v->text).arg(v->read(e));
+    return parts.join(QLatin1Char(' '));
+}
+
+std::vector<model::Address> addressesOf(const Condition &c) {
+    std::vector<const Value *> devices;
+    c.devices(&devices);
+    std::vector<model::Address> out;
+    for (const Value *v : devices)
+        out.push_back(v->address);
+    return out;
+}
+
+} // namespace
+
+ScenarioResult runScenario(const Scenario &s, const std::shared_ptr<const Program> &program,
+                           const std::function<void(const Engine &)> &afterScan) {
+    ScenarioResult result;
+    result.file = s.file;
+    const model::Target &target = program->layout->target();
+    const qint64 period = s.period ? s.period->resolve(10) : 10;
+    std::vector<PreparedStatement> steps;
+    std::vector<std::size_t> always;
+    qint64 lastAt = 0;
+    int lastAtLine = 0;
+    for (const ScenarioStatement &st : s.statements) {
+        PreparedStatement step;
+        step.statement = &st;
+        StatementReader reader(target, st.text);
+        bool ok = true;
+        using K = ScenarioStatement::Kind;
+        if (st.kind != K::Within && st.kind != K::Always && st.kind != K::Run) {
+            const qint64 t = st.time.resolve(period);
+            if (t < lastAt) {
+                result.errors.push_back(
+                    {st.line, Tr::tr("at %1 comes before line %2's %3: statements stand in the "
+                                     "order of their times")
+                                  .arg(st.time.text)
+                                  .arg(lastAtLine)
+                                  .arg(formatScenarioTime(lastAt))});
+                continue;
+            }
+            lastAt = t;
+            lastAtLine = st.line;
+        }
+        switch (st.kind) {
+        case K::Set:
+        case K::Force:
+            if (auto a = reader.assignments(st.kind == K::Force))
+                step.assignments = *a;
+            else
+                ok = false;
+            break;
+        case K::Release:
+            if (st.text.compare(QLatin1String("all"), Qt::CaseInsensitive) == 0) {
+                step.releaseAll = true;
+            } else if (auto d = reader.devices()) {
+                step.devices = *d;
+            } else {
+                ok = false;
+            }
+            break;
+        case K::Expect:
+        case K::Within:
+        case K::Always:
+            if (auto c = reader.condition())
+                step.condition = *c;
+            else
+                ok = false;
+            break;
+        case K::Run:
+            break;
+        }
+        if (!ok) {
+            result.errors.push_back({st.line, reader.error()});
+            continue;
+        }
+        if (st.kind == K::Expect || st.kind == K::Within || st.kind == K::Always)
+            result.expectations.push_back({st.line, st.source});
+        if (st.kind == K::Always)
+            always.push_back(steps.size());
+        steps.push_back(std::move(step));
+    }
+    if (!result.errors.empty())
+        return result;
+
+    result.ran = true;
+    Engine engine(program);
+    engine.setPeriodMs(period);
+    quint64 done = 0;
+    // `always`: the first failing scan is reported, with how many failed.
+    std::vector<std::optional<ScenarioFailure>> alwaysFailure(always.size());
+    auto scan = [&] {
+        engine.scan();
+        ++done;
+        if (afterScan)
+            afterScan(engine);
+        for (std::size_t k = 0; k < always.size(); ++k) {
+            const PreparedStatement &st = steps[always[k]];
+            if (st.condition.holds(engine))
+                continue;
+            if (alwaysFailure[k]) {
+                ++alwaysFailure[k]->failingScans;
+                continue;
+            }
+            ScenarioFailure f;
+            f.line = st.statement->line;
+            f.timeMs = static_cast<qint64>(done - 1) * period;
+            f.statement = st.statement->source;
+            f.seen = seenText(st.condition, engine);
+            f.devices = addressesOf(st.condition);
+            alwaysFailure[k] = f;
+        }
+    };
+    // Scans until `count` scans have run (scan k starts at k x period).
+    auto runTo = [&](quint64 count) {
+        while (done < count)
+            scan();
+    };
+    auto scanOf = [period](qint64 ms) { return static_cast<quint64>(ms / period); };
+    auto fail = [&](const PreparedStatement &st, qint64 time, const QString &message) {
+        ScenarioFailure f;
+        f.line = st.statement->line;
+        f.timeMs = time;
+        f.statement = st.statement->source;
+        f.seen = seenText(st.condition, engine);
+        f.devices = addressesOf(st.condition);
+        f.message = message;
+        result.failures.push_back(f);
+    };
+    qint64 previous = 0; // the previous statement's time (within counts from it)
+    for (const PreparedStatement &st : steps) {
+        using K = ScenarioStatement::Kind;
+        const ScenarioStatement &statement = *st.statement;
+        switch (statement.kind) {
+        case K::Set:
+        case K::Force:
+        case K::Release: {
+            const qint64 t = statement.time.resolve(period);
+            runTo(scanOf(t));
+            for (const Assignment &a : st.assignments) {
+                if (statement.kind == K::Force)
+                    engine.force(a.device.address, a.value != 0);
+                else if (a.device.kind == Value::Kind::SetValue ||
+                         (a.device.kind == Value::Kind::Bit &&
+                          target.area(a.device.address.area).kind != model::AreaKind::Bit &&
+                          a.device.address.bit < 0))
+                    engine.writeSetValue(a.device.address, a.value); // a timer or counter
+                else if (a.device.kind == Value::Kind::Bit)
+                    engine.setBit(a.device.address, a.value != 0);
+                else
+                    engine.writeWord(a.device.address, a.value);
+            }
+            if (st.releaseAll)
+                engine.releaseAll();
+            for (const Value &d : st.devices)
+                engine.release(d.address);
+            previous = t;
+            break;
+        }
+        case K::Expect: {
+            const qint64 t = statement.time.resolve(period);
+            const quint64 k = scanOf(t);
+            if (done > k + 1) {
+                fail(st, t,
+                     Tr::tr("%1: the run was already at %2 (the statement before waited until "
+                            "then), so at %3 could not be checked")
+                         .arg(statement.source,
+                              formatScenarioTime(static_cast<qint64>(done - 1) * period),
+                              statement.time.text));
+                previous = t;
+                break;
+            }
+            runTo(k + 1);
+            if (!st.condition.holds(engine))
+                fail(st, t,
+                     //: A failed expectation: %1 the time, %2 what was expected, %3 the devices'
+                     //: values then ("Y0=1 Y1=0").
+                     Tr::tr("at %1: expected %2, seen %3")
+                         .arg(formatScenarioTime(t), statement.text,
+                              seenText(st.condition, engine)));
+            previous = t;
+            break;
+        }
+        case K::Within: {
+            const qint64 deadline = previous + statement.time.resolve(period);
+            const quint64 first = scanOf(previous);
+            const quint64 last = scanOf(deadline);
+            bool met = false;
+            while (true) {
+                if (done > first && st.condition.holds(engine)) {
+                    met = true;
+                    break;
+                }
+                if (done > last)
+                    break;
+                scan();
+            }
+            const qint64 at = static_cast<qint64>(done - 1) * period;
+            if (!met)
+                fail(st, at,
+                     //: %1 the time allowed ("2s"), %2 the time it counted from, %3 until when,
+                     //: %4 what was expected, %5 the values seen at the end.
+                     Tr::tr("within %1 of %2 (until %3): expected %4, seen %5")
+                         .arg(statement.time.text, formatScenarioTime(previous),
+                              formatScenarioTime(deadline), statement.text,
+                              seenText(st.condition, engine)));
+            previous = met ? at : deadline;
+            break;
+        }
+        case K::Run: {
+            const qint64 t = statement.time.resolve(period);
+            runTo(static_cast<quint64>((t + period - 1) / period));
+            previous = std::max(previous, t);
+            break;
+        }
+        case K::Always:
+            break;
+        }
+    }
+    for (std::size_t k = 0; k < always.size(); ++k) {
+        if (!alwaysFailure[k])
+            continue;
+        ScenarioFailure f = *alwaysFailure[k];
+        const ScenarioStatement &statement = *steps[always[k]].statement;
+        //: An `always` expectation that failed: %1 the first time, %2 what was expected, %3
+        //: the values then, %4 the scans it failed in, %5 the scans run.
+        f.message = Tr::tr("at %1: expected always %2, seen %3 (failed in %4 of %5 scans)")
+                        .arg(formatScenarioTime(f.timeMs), statement.text, f.seen)
+                        .arg(f.failingScans)
+                        .arg(done);
+        result.failures.push_back(f);
+    }
+    std::stable_sort(
+        result.failures.begin(), result.failures.end(),
+        [](const ScenarioFailure &x, const ScenarioFailure &y) { return x.line < y.line; });
+    result.scans = done;
+    result.durationMs = static_cast<qint64>(done) * period;
+    for (const RuntimeError &e : engine.runtimeErrors())
+        result.runtimeErrors
+            << Tr::tr("runtime error at step %1: %2").arg(e.instruction).arg(e.message);
+    return result;
+}
+
+ScenarioResult runScenario(const QString &text, const QString &file,
+                           const ScenarioProgramLoader &loader) {
+    std::vector<ScenarioError> errors;
+    const Scenario scenario = parseScenario(text, file, &errors);
+    ScenarioResult result;
+    result.file = file;
+    if (!errors.empty()) {
+        result.errors = errors;
+        return result;
+    }
+    const QString path = QFileInfo(scenario.program).isAbsolute()
+                             ? scenario.program
+                             : QFileInfo(file).dir().filePath(scenario.program);
+    const ScenarioProgram loaded = loader(QDir::cleanPath(path), scenario.target, scenario.model);
+    if (!loaded.program) {
+        for (const QString &e : loaded.errors)
+            result.errors.push_back({scenario.programLine, e});
+        if (result.errors.empty())
+            result.errors.push_back({scenario.programLine, Tr::tr("the program does not start")});
+        return result;
+    }
+    return runScenario(scenario, loaded.program);
+}
+
+} // namespace rung::simulator

@@ -1,0 +1,327 @@
+// Scenario tests (docs/scenario-tests.md): the file's statements, the run on virtual time, the
+// report of a failure and JUnit XML.
+
+#include "simulator/compiler.h"
+#include "simulator/scenario.h"
+
+#include "tests/targets.h"
+
+#include <QXmlStreamReader>
+
+#include <gtest/gtest.h>
+
+using namespace rung;
+using namespace rung::simulator;
+
+namespace {
+
+// A loader that hands this listing, whatever the scenario names (the file's own path is kept
+// to tell what was asked).
+struct ListingLoader {
+    const model::Target *target;
+    QString listing;
+    mutable QString asked;
+    ScenarioProgram operator()(const QString &path, const QString &, const QString &) const {
+        asked = path;
+        ScenarioProgram out;
+        const model::ParseResult parsed = model::parseInstructionList(*target, listing);
+        EXPECT_TRUE(parsed.ok());
+        CompileResult compiled = compileProgram(parsed.list);
+        EXPECT_TRUE(compiled.ok());
+        out.program = compiled.program;
+        return out;
+    }
+};
+
+// A start/stop latch with an on-delay: Y0 latches on X0, X1 stops it; T0 (K20 = 2 s) runs
+// while Y0 is ON and lights Y1.
+const QString kLatch = QStringLiteral("LD X0\nOR Y0\nANI X1\nOUT Y0\nLD Y0\nTMR T0 K20\nLD "
+                                      "T0\nOUT Y1\nLD X2\nMOV K7 D0\nEND\n");
+
+ScenarioResult run(const QString &scenario, const QString &listing = kLatch,
+                   const model::Target &target = rung::testing::vigor()) {
+    ListingLoader loader{&target, listing, {}};
+    return runScenario(scenario, QStringLiteral("/plant/tests/latch.rungtest"), std::cref(loader));
+}
+
+std::string why(const ScenarioResult &r) {
+    std::string s;
+    for (const ScenarioError &e : r.errors)
+        s += std::to_string(e.line) + ": " + e.message.toStdString() + "\n";
+    for (const ScenarioFailure &f : r.failures)
+        s += std::to_string(f.line) + ": " + f.message.toStdString() + "\n";
+    return s;
+}
+
+} // namespace
+
+// The statements of the issue, one each, on a program that holds them.
+TEST(Scenario, TheIssuesStatementsPass) {
+    const ScenarioResult r = run(QStringLiteral("program ../latch.il   # the program\n"
+                                                "period 10ms\n"
+                                                "at 0s set X0=1\n"
+                                                "at 100ms set X0=0\n"
+                                                "at 1s expect Y0=1 Y1=0\n"
+                                                "at 2.1s expect Y0=1 Y1=1\n"
+                                                "at 3s set X1=1\n"
+                                                "within 20ms expect Y0=0 Y1=0\n"
+                                                "always expect not (Y1 and not Y0)\n"));
+    EXPECT_TRUE(r.passed()) << why(r);
+    EXPECT_EQ(r.expectations.size(), 4u);
+    EXPECT_EQ(r.durationMs, 3010);
+    EXPECT_EQ(r.scans, 301u);
+}
+
+TEST(Scenario, TheProgramIsFoundBesideTheScenario) {
+    ListingLoader loader{&rung::testing::vigor(), kLatch, {}};
+    runScenario(QStringLiteral("program ../latch.il\nat 0s expect Y0=0\n"),
+                QStringLiteral("/plant/tests/latch.rungtest"), std::cref(loader));
+    EXPECT_EQ(loader.asked, QStringLiteral("/plant/latch.il"));
+}
+
+// A failure names the line, the time, what was expected and the values seen.
+TEST(Scenario, AFailedExpectationSaysWhenWhatAndWhatWasSeen) {
+    const ScenarioResult r = run(QStringLiteral("program latch.il\n"
+                                                "at 0s set X0=1\n"
+                                                "at 1.5s expect Y0=1 Y1=1   # too early\n"
+                                                "at 3s set X1=1\n"
+                                                "within 2scan expect Y0=1\n"
+                                                "always expect Y1=0\n"));
+    ASSERT_TRUE(r.ran) << why(r);
+    ASSERT_EQ(r.failures.size(), 3u) << why(r);
+    EXPECT_EQ(r.failures[0].line, 3);
+    EXPECT_EQ(r.failures[0].timeMs, 1500);
+    EXPECT_EQ(r.failures[0].message, QStringLiteral("at 1.5s: expected Y0=1 Y1=1, seen Y0=1 Y1=0"));
+    EXPECT_EQ(r.failures[1].line, 5);
+    EXPECT_EQ(r.failures[1].message,
+              QStringLiteral("within 2scan of 3s (until 3.02s): expected Y0=1, seen Y0=0"));
+    EXPECT_EQ(r.failures[2].line, 6);
+    // T0 is done at 2 s: Y1 is ON from the scan that starts at 2 s until X1 stops it at 3 s:
+    // 100 of the 303 scans run.
+    EXPECT_EQ(r.failures[2].timeMs, 2000);
+    EXPECT_TRUE(r.failures[2].message.startsWith(
+        QStringLiteral("at 2s: expected always Y1=0, seen Y1=1 (failed in 100 of 303 scans)")))
+        << r.failures[2].message.toStdString();
+    EXPECT_EQ(r.failures[2].devices.size(), 1u);
+}
+
+// Words, set values, current values, forcing and hexadecimal words.
+TEST(Scenario, WordsTimersAndForcing) {
+    const ScenarioResult r = run(QStringLiteral("program latch.il\n"
+                                                "at 0s set X0=1 X2=1\n"
+                                                "at 0s expect sv:T0=20 D0=7 D0>6 D0<>8\n"
+                                                "at 300ms expect cv:T0=3 Y1=OFF\n"
+                                                "at 2.1s expect Y1=ON\n"
+                                                "at 2.5s set X2=0 D0=0x10\n"
+                                                "at 2.5s expect D0=16 D0=16#10\n"
+                                                "at 3s force Y0=0\n"
+                                                "at 3s expect not Y0 and not Y1\n"
+                                                "at 4s release all\n"
+                                                "at 4s expect Y0\n"));
+    EXPECT_TRUE(r.passed()) << why(r);
+}
+
+TEST(Scenario, DevicesAsTheTargetWritesThem) {
+    const model::Target &cpm1 = rung::testing::cpm1();
+    const ScenarioResult r =
+        run(QStringLiteral("program count.il --target cpm1\n"
+                           "at 0s set DM 0010=#0150\n"
+                           "at 0s set 000.01=1\n"
+                           "at 0s expect 010.00=1 DM 0010=#0150 DM 0011 = 336\n"
+                           "at 1s expect TIM 000 = OFF\n"),
+            QStringLiteral("LD 000.01\nOUT 010.00\nLD 253.13\nMOV(21) DM 0010 DM 0011\nEND(01)\n"),
+            cpm1);
+    EXPECT_TRUE(r.passed()) << why(r);
+}
+
+// Lines that do not read, devices the target does not have and times out of order are errors
+// with their lines; the scenario does not run.
+TEST(Scenario, ErrorsHaveTheirLines) {
+    std::vector<ScenarioError> errors;
+    parseScenario(QStringLiteral("period fast\nat 1s push X0\nat 2 s expect\nrun 3 weeks\n"),
+                  QStringLiteral("x.rungtest"), &errors);
+    ASSERT_EQ(errors.size(), 5u);
+    EXPECT_EQ(errors[0].line, 1);
+    EXPECT_EQ(errors[1].line, 2);
+    EXPECT_EQ(errors[2].line, 3);
+    EXPECT_EQ(errors[2].message, QStringLiteral("the statement says nothing after its verb"));
+    EXPECT_EQ(errors[3].line, 4);
+    EXPECT_EQ(errors[4].message,
+              QStringLiteral("no program: a scenario starts with \"program FILE\""));
+    const ScenarioResult r = run(QStringLiteral("program latch.il\n"
+                                                "at 1s set X8=1\n"
+                                                "at 2s expect D0\n"
+                                                "at 3s expect (Y0\n"
+                                                "at 1s expect Y0=1\n"));
+    EXPECT_FALSE(r.ran);
+    ASSERT_EQ(r.errors.size(), 4u) << why(r);
+    EXPECT_EQ(r.errors[0].line, 2);
+    EXPECT_TRUE(r.errors[0].message.startsWith(QStringLiteral("X8 is no device of Vigor")))
+        << r.errors[0].message.toStdString();
+    EXPECT_EQ(r.errors[1].message, QStringLiteral("D0 is a word: compare it (D0=5, D0>100)"));
+    EXPECT_EQ(r.errors[2].message, QStringLiteral("a \")\" is missing"));
+    EXPECT_EQ(r.errors[3].line, 5);
+    EXPECT_FALSE(r.passed());
+}
+
+TEST(Scenario, TimesAreWrittenAsPeopleReadThem) {
+    EXPECT_EQ(formatScenarioTime(150), QStringLiteral("150ms"));
+    EXPECT_EQ(formatScenarioTime(35000), QStringLiteral("35s"));
+    EXPECT_EQ(formatScenarioTime(12340), QStringLiteral("12.34s"));
+    EXPECT_EQ(formatScenarioTime(125000), QStringLiteral("2min 5s"));
+    EXPECT_EQ(formatScenarioTime(3600000), QStringLiteral("1h"));
+}
+
+TEST(Scenario, JUnitHasATestCasePerExpectation) {
+    std::vector<ScenarioResult> results;
+    results.push_back(run(QStringLiteral("program latch.il\nat 0s set X0=1\nat 1s expect "
+                                         "Y0=1\nat 1s expect Y1=1\n")));
+    results.push_back(run(QStringLiteral("period 10ms\n")));
+    const QByteArray xml = scenarioJUnit(results);
+    QXmlStreamReader reader(xml);
+    int cases = 0;
+    int failures = 0;
+    int errors = 0;
+    QString failureMessage;
+    while (!reader.atEnd()) {
+        if (reader.readNext() != QXmlStreamReader::StartElement)
+            continue;
+        if (reader.name() == QLatin1String("testcase"))
+            ++cases;
+        if (reader.name() == QLatin1String("failure")) {
+            ++failures;
+            failureMessage = reader.attributes().value(QStringLiteral("message")).toString();
+        }
+        if (reader.name() == QLatin1String("error"))
+            ++errors;
+        if (reader.name() == QLatin1String("testsuites")) {
+            EXPECT_EQ(reader.attributes().value(QStringLiteral("tests")).toString(),
+                      QStringLiteral("3"));
+            EXPECT_EQ(reader.attributes().value(QStringLiteral("failures")).toString(),
+                      QStringLiteral("1"));
+        }
+    }
+    EXPECT_FALSE(reader.hasError()) << reader.errorString().toStdString();
+    EXPECT_EQ(cases, 3);
+    EXPECT_EQ(failures, 1);
+    EXPECT_EQ(errors, 1);
+    EXPECT_EQ(failureMessage, QStringLiteral("at 1s: expected Y1=1, seen Y1=0"));
+}
+
+// Decimal times are read exactly (64.9 s is no 64899.99... ms), in every unit.
+TEST(Scenario, TimesAreReadExactly) {
+    std::vector<ScenarioError> errors;
+    const Scenario s = parseScenario(
+        QStringLiteral("program x.il\nperiod 5ms\nat 64.9s expect Y0\nat 1.5min expect Y0\n"
+                       "within 10scans expect Y0\nrun 1.25h\nat 0.0005s expect Y0\n"),
+        QStringLiteral("x.rungtest"), &errors);
+    ASSERT_EQ(errors.size(), 1u);
+    EXPECT_EQ(errors[0].line, 7);
+    EXPECT_EQ(errors[0].message, QStringLiteral("0.0005s is not a whole number of milliseconds"));
+    ASSERT_EQ(s.statements.size(), 4u);
+    EXPECT_EQ(s.period->ms, 5);
+    EXPECT_EQ(s.statements[0].time.ms, 64900);
+    EXPECT_EQ(s.statements[1].time.ms, 90000);
+    EXPECT_EQ(s.statements[2].time.resolve(5), 50);
+    EXPECT_EQ(s.statements[3].time.ms, 4500000);
+}
+
+#include "simulator/command_inbox.h"
+#include "simulator/scenario_record.h"
+
+namespace {
+
+// A simulation as the session drives one: commands recorded, applied, then scans.
+struct Recording {
+    std::shared_ptr<const Program> program;
+    Engine engine;
+    ScanHistory history;
+    explicit Recording(std::shared_ptr<const Program> p)
+        : program(p)
+        , engine(p) {
+        history.start(engine);
+    }
+    void command(model::DeviceCommand::Kind kind, const char *device, qint64 value) {
+        model::DeviceCommand d;
+        d.kind = kind;
+        d.address = std::get<model::Address>(
+            model::parseAddress(program->layout->target(), QString::fromLatin1(device)));
+        d.value = value;
+        EngineCommand c;
+        c.what = d;
+        history.record(engine, c);
+        QString error;
+        ASSERT_TRUE(applyCommand(engine, c, &error)) << error.toStdString();
+    }
+    void scans(int n) {
+        for (int k = 0; k < n; ++k) {
+            engine.scan();
+            history.afterScan(engine, 1000);
+        }
+    }
+};
+
+std::shared_ptr<const Program> latch(const QString &listing = kLatch) {
+    const model::ParseResult parsed = model::parseInstructionList(rung::testing::vigor(), listing);
+    return compileProgram(parsed.list).program;
+}
+
+} // namespace
+
+// Record a simulation as a scenario: the inputs as worked, the outputs as seen; it passes on
+// the program it was recorded from and says what a change changed.
+TEST(ScenarioRecord, ASimulationBecomesAScenarioThatReplays) {
+    Recording r(latch());
+    const model::Address y0 =
+        std::get<model::Address>(model::parseAddress(rung::testing::vigor(), u"Y0"));
+    const model::Address y1 =
+        std::get<model::Address>(model::parseAddress(rung::testing::vigor(), u"Y1"));
+    using K = model::DeviceCommand::Kind;
+    r.scans(5);
+    r.command(K::WriteBit, "X0", 1);
+    r.scans(10);
+    r.command(K::WriteBit, "X0", 0);
+    r.scans(250); // T0 (2 s) done: Y1 ON
+    r.command(K::Force, "Y0", 0);
+    r.scans(3);
+    r.command(K::ReleaseAll, "Y0", 0);
+    r.scans(2);
+    QString error;
+    const auto recorded = recordScenario(r.history, rung::testing::vigor(),
+                                         QStringLiteral("latch.il"), {y0, y1}, &error);
+    ASSERT_TRUE(recorded) << error.toStdString();
+    EXPECT_TRUE(recorded->notes.isEmpty());
+    EXPECT_EQ(recorded->text.section(QLatin1Char('\n'), 1),
+              QStringLiteral("program latch.il\n"
+                             "period 10ms\n"
+                             "\n"
+                             "at 0.05s set X0=1\n"
+                             "at 0.14s expect Y0=1 Y1=0\n"
+                             "at 0.15s set X0=0\n"
+                             "at 2.64s expect Y0=1 Y1=1\n"
+                             "at 2.65s force Y0=0\n"
+                             "at 2.67s expect Y0=0 Y1=0\n"
+                             "at 2.68s release all\n"
+                             "at 2.69s expect Y0=0 Y1=0\n"));
+    ListingLoader same{&rung::testing::vigor(), kLatch, {}};
+    const ScenarioResult replay =
+        runScenario(recorded->text, QStringLiteral("/p/latch.rungtest"), std::cref(same));
+    EXPECT_TRUE(replay.passed()) << why(replay);
+    // The timer made longer: the replay says so.
+    QString longer = kLatch;
+    longer.replace(QStringLiteral("K20"), QStringLiteral("K30"));
+    ListingLoader changed{&rung::testing::vigor(), longer, {}};
+    const ScenarioResult failed =
+        runScenario(recorded->text, QStringLiteral("/p/latch.rungtest"), std::cref(changed));
+    ASSERT_EQ(failed.failures.size(), 1u) << why(failed);
+    EXPECT_EQ(failed.failures[0].message,
+              QStringLiteral("at 2.64s: expected Y0=1 Y1=1, seen Y0=1 Y1=0"));
+}
+
+TEST(ScenarioRecord, NothingToRecordIsSaid) {
+    Recording r(latch());
+    QString error;
+    EXPECT_FALSE(
+        recordScenario(r.history, rung::testing::vigor(), QStringLiteral("x.il"), {}, &error));
+    EXPECT_TRUE(error.startsWith(QStringLiteral("the simulation has run no scan yet")));
+}
