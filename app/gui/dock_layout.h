@@ -18,8 +18,8 @@ class QMainWindow;
 namespace rung::app {
 
 // The layout's version in the saved window state: a layout saved before these groups
-// (six tabs on the left) is not restored.
-inline constexpr int kDockLayoutVersion = 1;
+// (six tabs on the left, 1) or before the Tests dock (2) is not restored.
+inline constexpr int kDockLayoutVersion = 2;
 // A screen at least this wide gets the right-hand column.
 inline constexpr int kWideScreen = 1280;
 

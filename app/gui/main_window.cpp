@@ -72,6 +72,10 @@ MainWindow::MainWindow(QWidget *parent)
     // layout, restored below, keeps the user's own.
     const bool wide = screen()->availableGeometry().width() >= kWideScreen;
     arrangeDocks(this, wide);
+    // The layout took its minimum size while the docks were added one beside the other
+    // (four below the ladder: wider than an 800 px screen); grouped, they need less, and the
+    // resize below must not be held to the old minimum.
+    QMainWindow::layout()->activate();
     buildActions();
 
     m_ilTimer.setSingleShot(true);

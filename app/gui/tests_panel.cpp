@@ -2,6 +2,7 @@
 
 #include "compare_window.h"
 #include "dialogs.h"
+#include "eliding_label.h"
 #include "file_dialogs.h"
 
 #include "editor/document.h"
@@ -23,8 +24,8 @@
 #include <QHBoxLayout>
 #include <QHeaderView>
 #include <QLabel>
-#include <QPushButton>
 #include <QSaveFile>
+#include <QToolButton>
 #include <QTreeWidget>
 #include <QVBoxLayout>
 
@@ -81,32 +82,38 @@ TestsPanel::TestsPanel(editor::Document *document, QWidget *parent)
     auto *layout = new QVBoxLayout(this);
     layout->setContentsMargins(4, 4, 4, 4);
     auto *buttons = new QHBoxLayout;
-    m_runAll = new QPushButton;
-    m_runOne = new QPushButton;
-    m_refresh = new QPushButton;
-    m_record = new QPushButton;
-    for (QPushButton *b : {m_runAll, m_runOne, m_refresh, m_record})
+    // Tool buttons, and the folder on a line of its own: the dock is a tab beside the timing
+    // chart, and a wider minimum than the chart's widened the whole window past small screens.
+    m_runAll = new QToolButton;
+    m_runOne = new QToolButton;
+    m_refresh = new QToolButton;
+    m_record = new QToolButton;
+    for (QToolButton *b : {m_runAll, m_runOne, m_refresh, m_record})
         buttons->addWidget(b);
-    m_folder = new QLabel;
-    m_folder->setTextInteractionFlags(Qt::TextSelectableByMouse);
-    buttons->addWidget(m_folder, 1);
+    buttons->addStretch(1);
     layout->addLayout(buttons);
+    m_folder = new ElidingLabel;
+    m_folder->setTextInteractionFlags(Qt::TextSelectableByMouse);
+    layout->addWidget(m_folder);
+    m_unsavedHint = new QLabel;
+    m_unsavedHint->setWordWrap(true);
+    layout->addWidget(m_unsavedHint);
     m_tree = new QTreeWidget;
     m_tree->setColumnCount(2);
     m_tree->header()->setSectionResizeMode(0, QHeaderView::Interactive);
     m_tree->header()->setStretchLastSection(true);
     m_tree->setColumnWidth(0, 380);
     layout->addWidget(m_tree);
-    connect(m_runAll, &QPushButton::clicked, this, [this] { run(); });
-    connect(m_runOne, &QPushButton::clicked, this, [this] {
+    connect(m_runAll, &QToolButton::clicked, this, [this] { run(); });
+    connect(m_runOne, &QToolButton::clicked, this, [this] {
         QTreeWidgetItem *item = m_tree->currentItem();
         while (item && item->parent())
             item = item->parent();
         if (item)
             run({item->data(0, FileRole).toString()});
     });
-    connect(m_refresh, &QPushButton::clicked, this, &TestsPanel::refresh);
-    connect(m_record, &QPushButton::clicked, this, &TestsPanel::record);
+    connect(m_refresh, &QToolButton::clicked, this, &TestsPanel::refresh);
+    connect(m_record, &QToolButton::clicked, this, &TestsPanel::record);
     connect(m_tree, &QTreeWidget::itemActivated, this, [this](QTreeWidgetItem *item) {
         const QVariant failure = item->data(0, FailureRole);
         if (failure.isValid() && item->parent())
@@ -144,10 +151,13 @@ void TestsPanel::retranslate() {
     m_record->setToolTip(tr("Writes a scenario of the simulation so far: the inputs as you "
                             "worked them, the outputs as they were seen"));
     m_tree->setHeaderLabels({tr("Scenario / expectation"), tr("Result")});
-    m_folder->setText(m_document->path().isEmpty()
-                          ? tr("Save the project: its scenario tests (.rungtest) are the files "
-                               "beside it that name it")
-                          : QDir::toNativeSeparators(QFileInfo(m_document->path()).absolutePath()));
+    const bool saved = !m_document->path().isEmpty();
+    m_unsavedHint->setText(tr("Save the project: its scenario tests (.rungtest) are the files "
+                              "beside it that name it"));
+    m_unsavedHint->setVisible(!saved);
+    m_folder->setFullText(
+        saved ? QDir::toNativeSeparators(QFileInfo(m_document->path()).absolutePath()) : QString());
+    m_folder->setVisible(saved);
 }
 
 void TestsPanel::refresh() {
@@ -226,7 +236,7 @@ void TestsPanel::run(const QStringList &files) {
     const QString self = canonical(m_document->path());
     const model::Target *target = &m_document->target();
     m_done = false;
-    for (QPushButton *b : {m_runAll, m_runOne})
+    for (QToolButton *b : {m_runAll, m_runOne})
         b->setEnabled(false);
     m_worker = std::thread([this, todo, open, self, target] {
         std::vector<simulator::ScenarioResult> results;
@@ -264,7 +274,7 @@ void TestsPanel::run(const QStringList &files) {
                 }
                 m_done = true;
                 join();
-                for (QPushButton *b : {m_runAll, m_runOne})
+                for (QToolButton *b : {m_runAll, m_runOne})
                     b->setEnabled(true);
                 showResults();
                 emit runFinished();

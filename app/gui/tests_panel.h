@@ -19,7 +19,7 @@
 #include <thread>
 
 class QLabel;
-class QPushButton;
+class QToolButton;
 class QTreeWidget;
 class QTreeWidgetItem;
 
@@ -28,6 +28,8 @@ class Document;
 }
 
 namespace rung::app {
+
+class ElidingLabel;
 
 class TestsPanel : public QWidget {
     Q_OBJECT
@@ -72,12 +74,16 @@ private:
     void join();
 
     editor::Document *m_document;
-    QLabel *m_folder;
+    // The folder searched, elided to the dock's width (whole in its tooltip); before the
+    // project is saved, a wrapped hint instead. Neither may widen the dock: it is a tab beside
+    // the timing chart, and its minimum width is the window's on a small screen.
+    ElidingLabel *m_folder;
+    QLabel *m_unsavedHint;
     QTreeWidget *m_tree;
-    QPushButton *m_runAll;
-    QPushButton *m_runOne;
-    QPushButton *m_refresh;
-    QPushButton *m_record;
+    QToolButton *m_runAll;
+    QToolButton *m_runOne;
+    QToolButton *m_refresh;
+    QToolButton *m_record;
     QStringList m_files;
     std::vector<simulator::ScenarioResult> m_results;
     std::thread m_worker;

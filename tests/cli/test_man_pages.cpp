@@ -82,6 +82,27 @@ TEST(ManPage, CliCommandsAreThoseOfHelp) {
     }
 }
 
+// The bash completion offers the commands `--help` lists, no more and no fewer.
+TEST(ManPage, BashCompletionOffersTheCommandsOfHelp) {
+    const QString help = runInstalledTool({QStringLiteral("--help")});
+    QStringList inHelp;
+    const QRegularExpression command(QStringLiteral("^\\s*rungstudio-cli ([a-z]+)\\b"),
+                                     QRegularExpression::MultilineOption);
+    for (auto it = command.globalMatch(help); it.hasNext();)
+        inHelp << it.next().captured(1);
+    inHelp.removeDuplicates();
+    inHelp.sort();
+    const QString script =
+        test::readText(QStringLiteral(RUNG_SOURCE_DIR "/packaging/completion/rungstudio-cli"));
+    const QRegularExpressionMatch listed =
+        QRegularExpression(QStringLiteral("local commands=\"([a-z ]+)\"")).match(script);
+    ASSERT_TRUE(listed.hasMatch());
+    QStringList inScript = listed.captured(1).split(QLatin1Char(' '), Qt::SkipEmptyParts);
+    inScript.sort();
+    EXPECT_EQ(inScript, inHelp) << "completion: " << inScript.join(' ').toStdString()
+                                << "\nhelp: " << inHelp.join(' ').toStdString();
+}
+
 // The version a user reads in the man page's header, the package's changelog and the software
 // centre's release list is the one the program prints.
 TEST(ManPage, VersionsAgreeWithTheProgram) {
