@@ -29,4 +29,18 @@ inline int times(int full) {
     return sized(full, 1);
 }
 
+// A limit on time (a rate, a latency) is judged in a measuring run only: a smoke run, under
+// the sanitizers on a shared two-core machine, proves that the benchmark runs and that what
+// it computes is right, not how fast (there the online refresh fell under its 0.9 of the
+// wire's rate while a build ran beside it). Limits on exact counts are judged in both.
+inline bool judgesTime() {
+    return !smoke();
+}
+
+// How long a benchmark waits for something to happen before it calls it an error: the
+// sanitizers make everything several times slower.
+inline int patienceMs(int full) {
+    return smoke() ? full * 5 : full;
+}
+
 } // namespace rung::bench
