@@ -23,7 +23,7 @@
 <context>
     <name>rung::app::MainWindow</name>
     <message numerus="yes">
-        <location filename="../app/gui/main_window.cpp" line="+371"/>
+        <location filename="../app/gui/main_window.cpp" line="+375"/>
         <source>%n rung(s)</source>
         <translation>
             <numerusform>%n rung</numerusform>
@@ -96,7 +96,7 @@
 <context>
     <name>rung::app::TestsPanel</name>
     <message numerus="yes">
-        <location filename="../app/gui/tests_panel.cpp" line="+297"/>
+        <location filename="../app/gui/tests_panel.cpp" line="+309"/>
         <source>passed: %n expectation(s)</source>
         <translation>
             <numerusform>passed: %n expectation</numerusform>

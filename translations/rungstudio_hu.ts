@@ -1046,7 +1046,7 @@ PLC after serve restarts</source>
 <context>
     <name>rung::app::MainWindow</name>
     <message>
-        <location filename="../app/gui/main_window.cpp" line="+173"/>
+        <location filename="../app/gui/main_window.cpp" line="+177"/>
         <source>Problems</source>
         <translation>Problémák</translation>
     </message>
@@ -3228,12 +3228,12 @@ Kiértékelés: %4 µs (%5..%6)</translation>
 <context>
     <name>rung::app::TestsPanel</name>
     <message>
-        <location filename="../app/gui/tests_panel.cpp" line="+51"/>
+        <location filename="../app/gui/tests_panel.cpp" line="+52"/>
         <source>unknown target %1</source>
         <translation>ismeretlen célrendszer: %1</translation>
     </message>
     <message>
-        <location line="+88"/>
+        <location line="+94"/>
         <source>Run All</source>
         <translation>Mind futtatása</translation>
     </message>
@@ -3278,7 +3278,12 @@ Kiértékelés: %4 µs (%5..%6)</translation>
         <translation>Mentse a projektet: a forgatókönyv-tesztjei (.rungtest) a mellette lévő, rá hivatkozó fájlok</translation>
     </message>
     <message>
-        <location line="+60"/>
+        <location line="+4"/>
+        <source>Scenario tests (.rungtest) that name this project, in %1 and below</source>
+        <translation>Az ezt a projektet megnevező forgatókönyv-tesztek (.rungtest) itt és alatta: %1</translation>
+    </message>
+    <message>
+        <location line="+61"/>
         <source>the open program has errors: %1</source>
         <translation>a megnyitott programban hibák vannak: %1</translation>
     </message>

@@ -1048,7 +1048,7 @@ PLC dopo il riavvio di serve</translation>
 <context>
     <name>rung::app::MainWindow</name>
     <message>
-        <location filename="../app/gui/main_window.cpp" line="+173"/>
+        <location filename="../app/gui/main_window.cpp" line="+177"/>
         <source>Problems</source>
         <translation>Problemi</translation>
     </message>
@@ -3238,12 +3238,12 @@ Valutazione: %4 µs (%5..%6)</translation>
 <context>
     <name>rung::app::TestsPanel</name>
     <message>
-        <location filename="../app/gui/tests_panel.cpp" line="+51"/>
+        <location filename="../app/gui/tests_panel.cpp" line="+52"/>
         <source>unknown target %1</source>
         <translation>famiglia PLC sconosciuta: %1</translation>
     </message>
     <message>
-        <location line="+88"/>
+        <location line="+94"/>
         <source>Run All</source>
         <translation>Esegui tutti</translation>
     </message>
@@ -3288,7 +3288,12 @@ Valutazione: %4 µs (%5..%6)</translation>
         <translation>Salvare il progetto: i suoi test di scenario (.rungtest) sono i file accanto che lo indicano</translation>
     </message>
     <message>
-        <location line="+60"/>
+        <location line="+4"/>
+        <source>Scenario tests (.rungtest) that name this project, in %1 and below</source>
+        <translation>Test di scenario (.rungtest) che nominano questo progetto, in %1 e nelle sottocartelle</translation>
+    </message>
+    <message>
+        <location line="+61"/>
         <source>the open program has errors: %1</source>
         <translation>il programma aperto contiene errori: %1</translation>
     </message>

@@ -156,7 +156,9 @@ void TestsPanel::retranslate() {
                               "beside it that name it"));
     m_unsavedHint->setVisible(!saved);
     m_folder->setFullText(
-        saved ? QDir::toNativeSeparators(QFileInfo(m_document->path()).absolutePath()) : QString());
+        saved ? tr("Scenario tests (.rungtest) that name this project, in %1 and below")
+                    .arg(QDir::toNativeSeparators(QFileInfo(m_document->path()).absolutePath()))
+              : QString());
     m_folder->setVisible(saved);
 }
 

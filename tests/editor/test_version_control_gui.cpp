@@ -2,6 +2,7 @@
 // the report; next / previous change), File > Import / Export PLCopen XML, the Tests dock.
 
 #include "app/gui/compare_window.h"
+#include "app/gui/eliding_label.h"
 #include "app/gui/main_window.h"
 #include "app/gui/plcopen_exchange.h"
 #include "app/gui/tests_panel.h"
@@ -191,6 +192,12 @@ TEST(TestsPanel, FindsRunsAndReportsTheProjectsScenarios) {
     auto *panel = window.findChild<app::TestsPanel *>();
     ASSERT_NE(panel, nullptr);
     ASSERT_EQ(panel->scenarios().size(), 2); // not the one of another program
+    // Where the panel looks, said in words with the folder (whole in the tooltip).
+    auto *folder = panel->findChild<app::ElidingLabel *>();
+    ASSERT_NE(folder, nullptr);
+    EXPECT_EQ(folder->fullText(),
+              QStringLiteral("Scenario tests (.rungtest) that name this project, in %1 and below")
+                  .arg(QDir::toNativeSeparators(dir.path())));
     QSignalSpy finished(panel, &app::TestsPanel::runFinished);
     panel->run();
     ASSERT_TRUE(finished.wait(20000));
