@@ -96,7 +96,7 @@
 <context>
     <name>rung::app::TestsPanel</name>
     <message numerus="yes">
-        <location filename="../app/gui/tests_panel.cpp" line="+309"/>
+        <location filename="../app/gui/tests_panel.cpp" line="+345"/>
         <source>passed: %n expectation(s)</source>
         <translation>
             <numerusform>passed: %n expectation</numerusform>

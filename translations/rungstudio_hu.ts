@@ -1546,7 +1546,7 @@ Ctrl+Z / Ctrl+Y: visszavonás / mégis, Ctrl+görgő: nagyítás, F4: a program 
         <translation>&amp;Visszavonás: %1</translation>
     </message>
     <message>
-        <location filename="../app/gui/main_window_files.cpp" line="+64"/>
+        <location filename="../app/gui/main_window_files.cpp" line="+66"/>
         <location line="+7"/>
         <source>Recover</source>
         <translation>Helyreállítás</translation>
@@ -1567,7 +1567,17 @@ Ctrl+Z / Ctrl+Y: visszavonás / mégis, Ctrl+görgő: nagyítás, F4: a program 
         <translation>A fájl nem nyitható meg</translation>
     </message>
     <message>
-        <location line="+37"/>
+        <location line="+9"/>
+        <source>%1: this version of Rung Studio cannot open networks (.rungnet) in the window yet</source>
+        <translation>%1: a Rung Studio ezen változata az ablakban még nem tud hálózatot (.rungnet) megnyitni</translation>
+    </message>
+    <message>
+        <location line="+24"/>
+        <source>%1 names %2, but the Tests dock lists the scenarios beside the project</source>
+        <translation>%1 a(z) %2 programot nevezi meg, de a Tesztek panel a projekt melletti forgatókönyveket sorolja fel</translation>
+    </message>
+    <message>
+        <location line="+30"/>
         <source>Unknown target %1</source>
         <translation>Ismeretlen célrendszer: %1</translation>
     </message>
@@ -1623,7 +1633,12 @@ Ctrl+Z / Ctrl+Y: visszavonás / mégis, Ctrl+görgő: nagyítás, F4: a program 
         <translation>Megnyitás</translation>
     </message>
     <message>
-        <location line="+20"/>
+        <location line="+1"/>
+        <source>Rung Studio projects (*.rung);;Instruction lists (*.il *.txt);;Ladder texts (*.ladder);;Scenario tests (*.rungtest)</source>
+        <translation>Rung Studio projektek (*.rung);;Utasításlisták (*.il *.txt);;Létra-szövegek (*.ladder);;Forgatókönyv-tesztek (*.rungtest)</translation>
+    </message>
+    <message>
+        <location line="+19"/>
         <source>Replace File</source>
         <translation>Fájl cseréje</translation>
     </message>
@@ -1677,12 +1692,7 @@ Ctrl+Z / Ctrl+Y: visszavonás / mégis, Ctrl+görgő: nagyítás, F4: a program 
         <translation>%1, %2. sor, %3. oszlop: %4</translation>
     </message>
     <message>
-        <location line="+129"/>
-        <source>Rung Studio projects (*.rung);;Instruction lists (*.il *.txt);;Ladder texts (*.ladder)</source>
-        <translation>Rung Studio projektek (*.rung);;Utasításlisták (*.il *.txt);;Létraszövegek (*.ladder)</translation>
-    </message>
-    <message>
-        <location line="+74"/>
+        <location line="+203"/>
         <source>Export Ladder</source>
         <translation>Létradiagram exportálása</translation>
     </message>
@@ -2136,11 +2146,6 @@ Ctrl+Z / Ctrl+Y: visszavonás / mégis, Ctrl+görgő: nagyítás, F4: a program 
         <location line="+6"/>
         <source>Go &amp;Offline</source>
         <translation>&amp;Offline (kapcsolat bontása)</translation>
-    </message>
-    <message>
-        <location filename="../app/gui/main_window_files.cpp" line="-307"/>
-        <source>%1: this version of Rung Studio cannot open networks (.rungnet) or test scenarios (.rungtest) in the window yet</source>
-        <translation>%1: a Rung Studio ezen változata az ablakban még nem tud hálózatot (.rungnet) vagy tesztforgatókönyvet (.rungtest) megnyitni</translation>
     </message>
     <message>
         <location filename="../app/gui/main_window_actions.cpp" line="-284"/>
@@ -3283,7 +3288,12 @@ Kiértékelés: %4 µs (%5..%6)</translation>
         <translation>Az ezt a projektet megnevező forgatókönyv-tesztek (.rungtest) itt és alatta: %1</translation>
     </message>
     <message>
-        <location line="+61"/>
+        <location line="+53"/>
+        <source>%1 names no program: its first statement is `program FILE`</source>
+        <translation>%1 nem nevez meg programot: az első utasítása `program FÁJL`</translation>
+    </message>
+    <message>
+        <location line="+44"/>
         <source>the open program has errors: %1</source>
         <translation>a megnyitott programban hibák vannak: %1</translation>
     </message>

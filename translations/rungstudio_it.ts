@@ -1550,7 +1550,7 @@ Ctrl+Z / Ctrl+Y: annulla / ripeti, Ctrl+rotellina: zoom, F4: verifica il program
         <translation>&amp;Annulla %1</translation>
     </message>
     <message>
-        <location filename="../app/gui/main_window_files.cpp" line="+64"/>
+        <location filename="../app/gui/main_window_files.cpp" line="+66"/>
         <location line="+7"/>
         <source>Recover</source>
         <translation>Ripristino</translation>
@@ -1571,7 +1571,17 @@ Ctrl+Z / Ctrl+Y: annulla / ripeti, Ctrl+rotellina: zoom, F4: verifica il program
         <translation>Impossibile aprire il file</translation>
     </message>
     <message>
-        <location line="+37"/>
+        <location line="+9"/>
+        <source>%1: this version of Rung Studio cannot open networks (.rungnet) in the window yet</source>
+        <translation>%1: questa versione di Rung Studio non può ancora aprire reti (.rungnet) nella finestra</translation>
+    </message>
+    <message>
+        <location line="+24"/>
+        <source>%1 names %2, but the Tests dock lists the scenarios beside the project</source>
+        <translation>%1 nomina %2, ma il pannello Test elenca gli scenari accanto al progetto</translation>
+    </message>
+    <message>
+        <location line="+30"/>
         <source>Unknown target %1</source>
         <translation>Famiglia PLC sconosciuta: %1</translation>
     </message>
@@ -1627,7 +1637,12 @@ Ctrl+Z / Ctrl+Y: annulla / ripeti, Ctrl+rotellina: zoom, F4: verifica il program
         <translation>Apri</translation>
     </message>
     <message>
-        <location line="+20"/>
+        <location line="+1"/>
+        <source>Rung Studio projects (*.rung);;Instruction lists (*.il *.txt);;Ladder texts (*.ladder);;Scenario tests (*.rungtest)</source>
+        <translation>Progetti Rung Studio (*.rung);;Liste istruzioni (*.il *.txt);;Testi ladder (*.ladder);;Test di scenario (*.rungtest)</translation>
+    </message>
+    <message>
+        <location line="+19"/>
         <source>Replace File</source>
         <translation>Sostituisci file</translation>
     </message>
@@ -1681,12 +1696,7 @@ Ctrl+Z / Ctrl+Y: annulla / ripeti, Ctrl+rotellina: zoom, F4: verifica il program
         <translation>%1, riga %2, colonna %3: %4</translation>
     </message>
     <message>
-        <location line="+129"/>
-        <source>Rung Studio projects (*.rung);;Instruction lists (*.il *.txt);;Ladder texts (*.ladder)</source>
-        <translation>Progetti Rung Studio (*.rung);;Liste istruzioni (*.il *.txt);;Testi ladder (*.ladder)</translation>
-    </message>
-    <message>
-        <location line="+74"/>
+        <location line="+203"/>
         <source>Export Ladder</source>
         <translation>Esporta schema ladder</translation>
     </message>
@@ -2143,11 +2153,6 @@ Ctrl+Z / Ctrl+Y: annulla / ripeti, Ctrl+rotellina: zoom, F4: verifica il program
         <location line="+6"/>
         <source>Go &amp;Offline</source>
         <translation>Vai &amp;offline</translation>
-    </message>
-    <message>
-        <location filename="../app/gui/main_window_files.cpp" line="-307"/>
-        <source>%1: this version of Rung Studio cannot open networks (.rungnet) or test scenarios (.rungtest) in the window yet</source>
-        <translation>%1: questa versione di Rung Studio non può ancora aprire nella finestra reti (.rungnet) o scenari di test (.rungtest)</translation>
     </message>
     <message>
         <location filename="../app/gui/main_window_actions.cpp" line="-284"/>
@@ -3293,7 +3298,12 @@ Valutazione: %4 µs (%5..%6)</translation>
         <translation>Test di scenario (.rungtest) che nominano questo progetto, in %1 e nelle sottocartelle</translation>
     </message>
     <message>
-        <location line="+61"/>
+        <location line="+53"/>
+        <source>%1 names no program: its first statement is `program FILE`</source>
+        <translation>%1 non nomina alcun programma: la sua prima istruzione è `program FILE`</translation>
+    </message>
+    <message>
+        <location line="+44"/>
         <source>the open program has errors: %1</source>
         <translation>il programma aperto contiene errori: %1</translation>
     </message>

@@ -7,6 +7,7 @@
 #include "ladder_export.h"
 #include "recovery.h"
 #include "symbol_table.h"
+#include "tests_panel.h"
 
 #include "editor/il_editor.h"
 #include "editor/ladder_view.h"
@@ -20,6 +21,7 @@
 #include <QDialogButtonBox>
 #include <QDir>
 #include <QDirIterator>
+#include <QDockWidget>
 #include <QFileInfo>
 #include <QFontMetrics>
 #include <QFormLayout>
@@ -121,13 +123,39 @@ bool MainWindow::openFile(const QString &path, const QString &targetId, bool qui
         return false;
     };
     const QString suffix = QFileInfo(path).suffix().toLower();
-    // Networks and test scenarios are file types of the product (the desktop's MIME types
-    // name them) that this window does not open yet: said plainly, not read as a listing.
-    // TODO(issues 30, 32): open them here, then add their MIME types to the .desktop file.
-    if (suffix == QLatin1String("rungnet") || suffix == QLatin1String("rungtest"))
-        return fail(tr("%1: this version of Rung Studio cannot open networks (.rungnet) or "
-                       "test scenarios (.rungtest) in the window yet")
+    // Networks are a file type of the product (the desktop's MIME types name it) that this
+    // window does not open yet: said plainly, not read as a listing.
+    // TODO(issue 30): open them here, then add their MIME type to the .desktop file.
+    if (suffix == QLatin1String("rungnet"))
+        return fail(tr("%1: this version of Rung Studio cannot open networks (.rungnet) in "
+                       "the window yet")
                         .arg(QDir::toNativeSeparators(path)));
+    // A scenario test opens the program it names, with the scenario chosen in the Tests dock
+    // (what a double-click on a .rungtest in a file manager means).
+    if (suffix == QLatin1String("rungtest")) {
+        QString targetOfTest;
+        QString error;
+        const QString program = TestsPanel::programOf(path, &targetOfTest, &error);
+        if (program.isEmpty())
+            return fail(error);
+        const auto same = [](const QString &a, const QString &b) {
+            return !a.isEmpty() &&
+                   QFileInfo(a).canonicalFilePath() == QFileInfo(b).canonicalFilePath();
+        };
+        if (!same(m_document->path(), program) && !openFile(program, targetOfTest, quiet))
+            return false;
+        auto *tests = findChild<TestsPanel *>();
+        if (auto *dock = findChild<QDockWidget *>(QStringLiteral("testsDock"))) {
+            dock->show();
+            dock->raise();
+        }
+        if (tests && !tests->select(path))
+            statusBar()->showMessage(
+                tr("%1 names %2, but the Tests dock lists the scenarios beside the project")
+                    .arg(QDir::toNativeSeparators(path), QDir::toNativeSeparators(program)),
+                10000);
+        return true;
+    }
     model::Project project;
     if (suffix == QLatin1String(model::kProjectExtension)) {
         model::ProjectError error;
@@ -290,7 +318,7 @@ void MainWindow::fileOpen() {
     const QString path = askOpenFile(
         this, tr("Open"), m_document->path(),
         tr("Rung Studio projects (*.rung);;Instruction lists (*.il *.txt);;Ladder texts "
-           "(*.ladder)"));
+           "(*.ladder);;Scenario tests (*.rungtest)"));
     if (!path.isEmpty())
         openFile(path);
 }

@@ -196,6 +196,42 @@ void TestsPanel::refresh() {
     showResults();
 }
 
+QString TestsPanel::programOf(const QString &scenarioFile, QString *targetId, QString *error) {
+    QByteArray bytes;
+    QString ioError;
+    if (const model::ReadStatus status =
+            model::readAtMost(scenarioFile, kMaxScenarioBytes, &bytes, &ioError);
+        status != model::ReadStatus::Ok) {
+        *error = model::readFailure(status, scenarioFile, kMaxScenarioBytes, ioError);
+        return {};
+    }
+    std::vector<simulator::ScenarioError> errors;
+    const simulator::Scenario s =
+        simulator::parseScenario(QString::fromUtf8(bytes), scenarioFile, &errors);
+    if (s.program.isEmpty()) {
+        *error = tr("%1 names no program: its first statement is `program FILE`")
+                     .arg(QDir::toNativeSeparators(scenarioFile));
+        return {};
+    }
+    if (targetId)
+        *targetId = s.target;
+    return QFileInfo(s.program).isAbsolute() ? s.program
+                                             : QFileInfo(scenarioFile).dir().filePath(s.program);
+}
+
+bool TestsPanel::select(const QString &file) {
+    refresh();
+    const QString wanted = canonical(file);
+    for (int i = 0; i < m_tree->topLevelItemCount(); ++i) {
+        QTreeWidgetItem *item = m_tree->topLevelItem(i);
+        if (canonical(item->data(0, FileRole).toString()) == wanted) {
+            m_tree->setCurrentItem(item);
+            return true;
+        }
+    }
+    return false;
+}
+
 simulator::ScenarioProgram TestsPanel::documentProgram() const {
     simulator::ScenarioProgram out;
     std::vector<model::Diagnostic> errors;

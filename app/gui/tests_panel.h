@@ -40,6 +40,13 @@ public:
 
     // The scenarios found beside the project (absolute paths), in name order.
     QStringList scenarios() const { return m_files; }
+    // The program a scenario file names, resolved against the file's folder, and the target
+    // its `program` line gives (may be empty); empty with *error set when the file does not
+    // read or names no program.
+    static QString programOf(const QString &scenarioFile, QString *targetId, QString *error);
+    // Looks for the project's scenarios again and makes `file` the current one; false when it
+    // is not among them (it names another program).
+    bool select(const QString &file);
     // Looks for them again (the project was saved elsewhere, a file was added).
     void refresh();
     // Runs these (all when empty); runFinished() follows on this thread.

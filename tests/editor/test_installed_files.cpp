@@ -224,6 +224,13 @@ TEST(FileTypes, TheWindowOpensEveryTypeTheDesktopEntryNames) {
                 QFile file(path);
                 ASSERT_TRUE(file.open(QIODevice::WriteOnly));
                 file.write(model::printLadderText(ladder).toUtf8());
+            } else if (glob == QLatin1String("*.rungtest")) {
+                // A scenario naming a project beside it: the window opens that project.
+                ASSERT_TRUE(model::saveProject(
+                    *project, dir.filePath(QStringLiteral("tested.rung")), &error));
+                QFile file(path);
+                ASSERT_TRUE(file.open(QIODevice::WriteOnly));
+                file.write("program tested.rung\nat 1s expect Y0=0\n");
             } else {
                 FAIL() << "no sample for " << glob.toStdString() << ": add one here";
             }
@@ -244,9 +251,10 @@ TEST(FileTypes, EveryDeclaredTypeIsOpenedOrSaysItIsNotYet) {
     const auto declared = declaredMimeTypes();
     const QStringList offered = desktopMimeTypes();
     const std::map<QString, QString> notYet{
-        {QStringLiteral("application/x-rungstudio-network"), QStringLiteral("rungnet")},
-        {QStringLiteral("text/x-rungstudio-test"), QStringLiteral("rungtest")}};
+        {QStringLiteral("application/x-rungstudio-network"), QStringLiteral("rungnet")}};
     ASSERT_GE(declared.size(), 4u);
+    EXPECT_TRUE(
+        offered.contains(QStringLiteral("text/x-rungstudio-test"))); // opened since issue 32
     for (const auto &[type, mime] : declared) {
         EXPECT_TRUE(offered.contains(type) || notYet.count(type)) << type.toStdString();
         EXPECT_FALSE(mime.subClassOf.isEmpty()) << type.toStdString();

@@ -20,9 +20,11 @@
 #include <QComboBox>
 #include <QDockWidget>
 #include <QFile>
+#include <QFileInfo>
 #include <QListWidget>
 #include <QPlainTextEdit>
 #include <QSignalSpy>
+#include <QStatusBar>
 #include <QTabWidget>
 #include <QTableWidget>
 #include <QTreeWidget>
@@ -222,6 +224,37 @@ TEST(TestsPanel, FindsRunsAndReportsTheProjectsScenarios) {
 
 // The chart of a failed expectation: the run again with its devices recorded, the failing
 // instant in the history.
+// A .rungtest opened (File > Open, the command line, a double-click in a file manager) opens
+// the program it names, in the scenario's folder, with the scenario chosen in the Tests dock.
+TEST(TestsPanel, OpeningAScenarioOpensItsProgramWithTheScenarioChosen) {
+    QTemporaryDir dir;
+    const QString project = test::writeFile(dir, QStringLiteral("latch.rung"), kLatchProject);
+    test::writeFile(dir, QStringLiteral("a.rungtest"), "program latch.rung\nat 1s expect Y0=0\n");
+    const QString scenario = test::writeFile(dir, QStringLiteral("b.rungtest"),
+                                             "program latch.rung\nat 1s expect Y0=1\n");
+    const QString orphan =
+        test::writeFile(dir, QStringLiteral("orphan.rungtest"), "at 1s expect Y0=1\n");
+    app::MainWindow window;
+    window.show();
+    ASSERT_TRUE(window.openFile(scenario, QString(), true));
+    EXPECT_EQ(QFileInfo(window.document()->path()).canonicalFilePath(),
+              QFileInfo(project).canonicalFilePath());
+    auto *dock = window.findChild<QDockWidget *>(QStringLiteral("testsDock"));
+    ASSERT_NE(dock, nullptr);
+    EXPECT_TRUE(dock->isVisible());
+    auto *panel = window.findChild<app::TestsPanel *>();
+    ASSERT_NE(panel, nullptr);
+    ASSERT_NE(panel->tree()->currentItem(), nullptr);
+    EXPECT_EQ(panel->tree()->currentItem()->text(0), QStringLiteral("b.rungtest"));
+    // One that names no program opens nothing and says why, with its name.
+    EXPECT_FALSE(window.openFile(orphan, QString(), true));
+    EXPECT_TRUE(window.statusBar()->currentMessage().contains(QStringLiteral("orphan.rungtest")))
+        << window.statusBar()->currentMessage().toStdString();
+    EXPECT_TRUE(window.statusBar()->currentMessage().contains(QStringLiteral("program FILE")));
+    EXPECT_EQ(QFileInfo(window.document()->path()).canonicalFilePath(),
+              QFileInfo(project).canonicalFilePath());
+}
+
 TEST(TestsPanel, AFailedExpectationsRunIsRecordedForTheChart) {
     const model::ParseResult parsed =
         model::parseInstructionList(rung::testing::vigor(), QStringLiteral("LD X0\nOUT Y0\nEND\n"));
