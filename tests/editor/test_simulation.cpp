@@ -151,10 +151,12 @@ TEST_F(Simulation, TheKeysRunPauseScanAndStopFromTheLadder) {
     })) << status().toStdString();
 
     // F12: one scan, published at once; F12 again: exactly one more, Y1 following the parity.
+    // (The scan under way at F11 may publish after the status said Paused: the first F12 is
+    // seen as at least one more scan; the second, counted from a settled pause, exactly one.)
     const quint64 before = sim()->session()->snapshot()->statistics.scans;
     QTest::keyClick(view, Qt::Key_F12);
     ASSERT_NE(
-        waitFor([before](const model::Snapshot &s) { return s.statistics.scans == before + 1; }),
+        waitFor([before](const model::Snapshot &s) { return s.statistics.scans > before; }),
         nullptr);
     const quint64 scans = sim()->session()->snapshot()->statistics.scans;
     // That a paused session does not scan shows only over time: ten scan periods.
