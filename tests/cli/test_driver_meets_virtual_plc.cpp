@@ -163,7 +163,8 @@ TEST(DriverMeetsVirtualPlc, Cpm1HostLinkOnAPtyWritesThroughMonitorAndForces) {
 }
 
 TEST(DriverMeetsVirtualPlc, Cpm1HostLinkReadsTheIrAndSrWordsTo255AsTheCliDoes) {
-    // RR reads the IR and SR words 000..255 (protocols.md; the Omron CPM1 guide's channels):
+    // RR reads the IR and SR words 000..255 (Omron CPM1/SRM1 manual W353, Host Link RR; the
+    // Omron CPM1 guide 3.5, memory map):
     // the input channel 000, the flags 253.13 (always ON) and 255.06 (EQ) and their words.
     VirtualPlcUnderTest plc(kCpm1, {ProtocolId::HostLink, comms::modbus::Framing::Rtu, 0}, false);
     ASSERT_TRUE(plc.ready());

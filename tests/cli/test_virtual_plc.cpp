@@ -262,7 +262,7 @@ TEST(VirtualPlc, HostLinkPresentValuesAreThePlcsBcdWordsBothWays) {
     PtyTransport pty(v.path);
     QString error;
     ASSERT_TRUE(pty.open(&error)) << error.toStdString();
-    // protocols.md's vector: @00RC0000000253* reads TC 000 and 001.
+    // Host Link's RC example (Omron CPM1/SRM1 manual W353): @00RC0000000253* reads TC 000 and 001.
     const QByteArray text = "@00RC0001500009";
     EXPECT_EQ(askRaw(pty, "@00RC0000000253*\r"), text + hostlink::fcs(text) + "*\r");
     // `read` prints the numbers, as the ladder shows them from the same words.

@@ -210,7 +210,8 @@ TEST(ProtocolMap, Cpm1HostLinkAreas) {
 }
 
 TEST(ProtocolMap, Cpm1HostLinkReachesWhatProtocolsMdGivesAndNoFurther) {
-    // protocols.md: RR / WR reach the IR and SR words 000..255 (SR 253..255: the PLC's flags,
+    // Omron CPM1/SRM1 manual W353 (Host Link RR / WR) and the Omron CPM1 guide 3.5 (memory
+    // map): RR / WR reach the IR and SR words 000..255 (SR 253..255: the PLC's flags,
     // read with RR, never written), RD / WD DM 0000..1023 and 6144..6655. The PLC has DM past
     // 6655; the protocol map does not.
     const Target &t = Target::get(Family::Cpm1);
