@@ -35,6 +35,21 @@ void fitTitle(QDialog *dialog) {
         delete strut; // a form layout leaves the minimum width alone
 }
 
+namespace {
+
+// Shows an input dialog set up by the caller with its title whole; whether it was accepted, also
+// in *ok when given.
+bool execFitted(QInputDialog &dialog, bool *ok) {
+    dialog.minimumSizeHint(); // an input dialog builds its layout only when asked for a size
+    fitTitle(&dialog);
+    const bool accepted = dialog.exec() == QDialog::Accepted;
+    if (ok)
+        *ok = accepted;
+    return accepted;
+}
+
+} // namespace
+
 QString askText(QWidget *parent, const QString &title, const QString &label, const QString &text,
                 bool *ok) {
     QInputDialog dialog(parent);
@@ -42,12 +57,7 @@ QString askText(QWidget *parent, const QString &title, const QString &label, con
     dialog.setLabelText(label);
     dialog.setTextValue(text);
     dialog.setInputMode(QInputDialog::TextInput);
-    dialog.minimumSizeHint(); // an input dialog builds its layout only when asked for a size
-    fitTitle(&dialog);
-    const bool accepted = dialog.exec() == QDialog::Accepted;
-    if (ok)
-        *ok = accepted;
-    return accepted ? dialog.textValue() : QString();
+    return execFitted(dialog, ok) ? dialog.textValue() : QString();
 }
 
 QString askMultiLineText(QWidget *parent, const QString &title, const QString &label,
@@ -57,8 +67,7 @@ QString askMultiLineText(QWidget *parent, const QString &title, const QString &l
     dialog.setLabelText(label);
     dialog.setOption(QInputDialog::UsePlainTextEditForTextInput);
     dialog.setTextValue(text);
-    dialog.minimumSizeHint(); // its layout, as above
-    fitTitle(&dialog);
+    dialog.minimumSizeHint(); // its layout, as above: the text edit exists from here
     // A rung comment reads as written: room for about 75 characters a line and a few lines,
     // long lines wrapped rather than scrolled out of sight.
     if (auto *edit = dialog.findChild<QPlainTextEdit *>()) {
@@ -66,10 +75,7 @@ QString askMultiLineText(QWidget *parent, const QString &title, const QString &l
         edit->setMinimumSize(metrics.averageCharWidth() * 76, metrics.lineSpacing() * 8);
         edit->setLineWrapMode(QPlainTextEdit::WidgetWidth);
     }
-    const bool accepted = dialog.exec() == QDialog::Accepted;
-    if (ok)
-        *ok = accepted;
-    return accepted ? dialog.textValue() : QString();
+    return execFitted(dialog, ok) ? dialog.textValue() : QString();
 }
 
 int askInt(QWidget *parent, const QString &title, const QString &label, int value, int min, int max,
@@ -80,12 +86,7 @@ int askInt(QWidget *parent, const QString &title, const QString &label, int valu
     dialog.setInputMode(QInputDialog::IntInput);
     dialog.setIntRange(min, max);
     dialog.setIntValue(value);
-    dialog.minimumSizeHint(); // its layout, as above
-    fitTitle(&dialog);
-    const bool accepted = dialog.exec() == QDialog::Accepted;
-    if (ok)
-        *ok = accepted;
-    return accepted ? dialog.intValue() : value;
+    return execFitted(dialog, ok) ? dialog.intValue() : value;
 }
 
 double askDouble(QWidget *parent, const QString &title, const QString &label, double value,
@@ -97,12 +98,7 @@ double askDouble(QWidget *parent, const QString &title, const QString &label, do
     dialog.setDoubleDecimals(decimals);
     dialog.setDoubleRange(min, max);
     dialog.setDoubleValue(value);
-    dialog.minimumSizeHint(); // its layout, as above
-    fitTitle(&dialog);
-    const bool accepted = dialog.exec() == QDialog::Accepted;
-    if (ok)
-        *ok = accepted;
-    return accepted ? dialog.doubleValue() : value;
+    return execFitted(dialog, ok) ? dialog.doubleValue() : value;
 }
 
 QMessageBox::StandardButton messageBox(QMessageBox::Icon icon, QWidget *parent,

@@ -43,6 +43,18 @@ QString cliProgramVersion() {
         .section(QLatin1Char(' '), 1, 1); // "rungstudio-cli 0.1.0"
 }
 
+// The commands `--help` lists (a line "  rungstudio-cli NAME ..."), sorted, each once.
+QStringList commandsIn(const QString &help) {
+    QStringList commands;
+    const QRegularExpression command(QStringLiteral("^\\s*rungstudio-cli ([a-z]+)\\b"),
+                                     QRegularExpression::MultilineOption);
+    for (auto it = command.globalMatch(help); it.hasNext();)
+        commands << it.next().captured(1);
+    commands.removeDuplicates();
+    commands.sort();
+    return commands;
+}
+
 } // namespace
 
 TEST(ManPage, CliOptionsAreThoseOfHelp) {
@@ -61,13 +73,7 @@ TEST(ManPage, CliOptionsAreThoseOfHelp) {
 
 TEST(ManPage, CliCommandsAreThoseOfHelp) {
     const QString help = runInstalledTool({QStringLiteral("--help")});
-    QStringList inHelp;
-    const QRegularExpression command(QStringLiteral("^\\s*rungstudio-cli ([a-z]+)\\b"),
-                                     QRegularExpression::MultilineOption);
-    for (auto it = command.globalMatch(help); it.hasNext();)
-        inHelp << it.next().captured(1);
-    inHelp.removeDuplicates();
-    inHelp.sort();
+    const QStringList inHelp = commandsIn(help);
     EXPECT_GE(inHelp.size(), 8);
     // A command is a tagged paragraph of its own (".TP" then ".B check").
     const QRegularExpression tagged(QStringLiteral("^\\.TP\\n\\.B ([a-z]+)$"),
@@ -85,13 +91,7 @@ TEST(ManPage, CliCommandsAreThoseOfHelp) {
 // The bash completion offers the commands `--help` lists, no more and no fewer.
 TEST(ManPage, BashCompletionOffersTheCommandsOfHelp) {
     const QString help = runInstalledTool({QStringLiteral("--help")});
-    QStringList inHelp;
-    const QRegularExpression command(QStringLiteral("^\\s*rungstudio-cli ([a-z]+)\\b"),
-                                     QRegularExpression::MultilineOption);
-    for (auto it = command.globalMatch(help); it.hasNext();)
-        inHelp << it.next().captured(1);
-    inHelp.removeDuplicates();
-    inHelp.sort();
+    const QStringList inHelp = commandsIn(help);
     const QString script =
         test::readText(QStringLiteral(RUNG_SOURCE_DIR "/packaging/completion/rungstudio-cli"));
     const QRegularExpressionMatch listed =

@@ -6,6 +6,7 @@
 // when it passes.
 
 #include "tests/cli/virtual_plc_fixture.h"
+#include "tests/test_files.h"
 
 #include <QFileInfo>
 #include <QProcess>
@@ -305,12 +306,7 @@ TEST(PeerPymodbus, MasterOverModbusTcpAndRtuOnAPseudoTerminal) {
 TEST(CliServe, ServesAPtyUntilSigtermAndExitsCleanly) {
     REQUIRE_MBPOLL();
     QTemporaryDir dir;
-    const QString file = dir.filePath(QStringLiteral("plc.il"));
-    {
-        QFile f(file);
-        ASSERT_TRUE(f.open(QIODevice::WriteOnly));
-        f.write(kPeerPl110);
-    }
+    const QString file = test::writeFile(dir, QStringLiteral("plc.il"), kPeerPl110);
     QProcess serve;
     serve.start(QStringLiteral(RUNG_CLI_PATH),
                 {QStringLiteral("serve"), file, QStringLiteral("--protocol"),
@@ -399,12 +395,7 @@ QStringList mbpollRtu(int station, const char *type, int reference, const QStrin
 TEST(CliServe, APl110AnswersEveryWordItsManualListsAsMbpollFirstAsksThem) {
     REQUIRE_MBPOLL();
     QTemporaryDir dir;
-    const QString file = dir.filePath(QStringLiteral("plc.il"));
-    {
-        QFile f(file);
-        ASSERT_TRUE(f.open(QIODevice::WriteOnly));
-        f.write(kPeerPl110);
-    }
+    const QString file = test::writeFile(dir, QStringLiteral("plc.il"), kPeerPl110);
     Served serve(file, {QStringLiteral("--protocol"), QStringLiteral("modbus"),
                         QStringLiteral("--pty"), QStringLiteral("--station"), QStringLiteral("7")});
     ASSERT_TRUE(serve.where.startsWith(QLatin1String("/dev/pts/"))) << serve.where.toStdString();
@@ -452,12 +443,7 @@ TEST(CliServe, APl110AnswersEveryWordItsManualListsAsMbpollFirstAsksThem) {
 TEST(CliServe, ALinkLeadsToThePlcAcrossRestartsAndGoesWhenServeEnds) {
     REQUIRE_MBPOLL();
     QTemporaryDir dir;
-    const QString file = dir.filePath(QStringLiteral("plc.il"));
-    {
-        QFile f(file);
-        ASSERT_TRUE(f.open(QIODevice::WriteOnly));
-        f.write(kPeerPl110);
-    }
+    const QString file = test::writeFile(dir, QStringLiteral("plc.il"), kPeerPl110);
     const QString link = dir.filePath(QStringLiteral("plc"));
     // A link left by a serve that was killed (SIGKILL: no cleanup) is taken over.
     ASSERT_TRUE(QFile::link(QStringLiteral("/dev/pts/4000"), link));
