@@ -27,26 +27,6 @@ model::AreaKind kindOf(const model::Snapshot &s, const model::Address &a) {
     return s.layout->target().area(a.area).kind;
 }
 
-bool compare(model::CompareOp op, qint64 a, qint64 b) {
-    switch (op) {
-    case model::CompareOp::Eq:
-        return a == b;
-    case model::CompareOp::Ne:
-        return a != b;
-    case model::CompareOp::Lt:
-        return a < b;
-    case model::CompareOp::Le:
-        return a <= b;
-    case model::CompareOp::Gt:
-        return a > b;
-    case model::CompareOp::Ge:
-        return a >= b;
-    case model::CompareOp::None:
-        break;
-    }
-    return false;
-}
-
 // Time base in seconds as the overlay writes it: "0.1", "0.01", "1".
 QString seconds(double baseMs) {
     return QString::number(baseMs / 1000.0, 'g', 6);
@@ -141,7 +121,7 @@ std::int8_t ProgramFlow::fromDevices(const model::Contact &c) const {
             else
                 return kUnknown;
         }
-        const bool holds = compare(c.compare, v[0], v[1]);
+        const bool holds = model::compareHolds(c.compare, v[0], v[1]);
         return (c.mode == model::ContactMode::Negated ? !holds : holds) ? 1 : 0;
     }
     const model::Operand &o = c.operands.front();

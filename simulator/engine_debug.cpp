@@ -28,26 +28,6 @@ qint64 nanosSince(Clock::time_point start) {
     return std::chrono::duration_cast<std::chrono::nanoseconds>(Clock::now() - start).count();
 }
 
-bool holds(model::CompareOp op, qint64 a, qint64 b) {
-    switch (op) {
-    case model::CompareOp::Eq:
-        return a == b;
-    case model::CompareOp::Ne:
-        return a != b;
-    case model::CompareOp::Lt:
-        return a < b;
-    case model::CompareOp::Le:
-        return a <= b;
-    case model::CompareOp::Gt:
-        return a > b;
-    case model::CompareOp::Ge:
-        return a >= b;
-    case model::CompareOp::None:
-        break;
-    }
-    return false;
-}
-
 } // namespace
 
 bool Engine::setBreakpoints(const std::vector<Breakpoint> &breakpoints, QString *error) {
@@ -170,8 +150,8 @@ bool Engine::breakpointHolds(std::size_t instruction) {
             stop = stop || !now;
             break;
         case When::Compare:
-            stop =
-                stop || holds(a.spec.op, m_words[static_cast<std::size_t>(a.word)], a.spec.value);
+            stop = stop || model::compareHolds(a.spec.op, m_words[static_cast<std::size_t>(a.word)],
+                                               a.spec.value);
             break;
         }
         a.previous = now;

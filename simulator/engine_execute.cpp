@@ -25,26 +25,6 @@ struct Tr {
 static_assert(Engine::kBlockStack == model::kMaxOpenBlocks);
 static_assert(Engine::kPushStack == model::kMaxStackDepthOfAnyTarget);
 
-bool compare(std::uint8_t op, std::int32_t a, std::int32_t b) {
-    switch (static_cast<model::CompareOp>(op)) {
-    case model::CompareOp::Eq:
-        return a == b;
-    case model::CompareOp::Ne:
-        return a != b;
-    case model::CompareOp::Lt:
-        return a < b;
-    case model::CompareOp::Le:
-        return a <= b;
-    case model::CompareOp::Gt:
-        return a > b;
-    case model::CompareOp::Ge:
-        return a >= b;
-    case model::CompareOp::None:
-        break;
-    }
-    return false;
-}
-
 // A rising (or falling) edge of `now` against the value the slot kept from the last scan.
 inline bool edge(std::uint8_t &prev, bool now, bool falling) {
     const bool v = falling ? (prev && !now) : (now && !prev);
@@ -255,7 +235,8 @@ std::size_t Engine::execute(std::size_t from, std::size_t to) {
                 v = edge(m_edges[static_cast<std::size_t>(s.slot)], rd(s.bit),
                          (s.flags & kFalling) != 0);
             } else {
-                v = compare(s.op, rdw(s.x), rdw(s.y)) != ((s.flags & kNegated) != 0);
+                v = model::compareHolds(model::CompareOp(s.op), rdw(s.x), rdw(s.y)) !=
+                    ((s.flags & kNegated) != 0);
             }
             if (s.flags & kRungStart) {
                 bsp = 0;
@@ -283,7 +264,8 @@ std::size_t Engine::execute(std::size_t from, std::size_t to) {
         }
         case Code::AndCompare:
         case Code::OrCompare: {
-            const bool v = compare(s.op, rdw(s.x), rdw(s.y)) != ((s.flags & kNegated) != 0);
+            const bool v = model::compareHolds(model::CompareOp(s.op), rdw(s.x), rdw(s.y)) !=
+                           ((s.flags & kNegated) != 0);
             acc = s.code == Code::AndCompare ? acc & v : acc | (v & gate);
             break;
         }

@@ -29,23 +29,7 @@ bool Trigger::holds(qint64 v) const {
     case Kind::Compare:
         break;
     }
-    switch (op) {
-    case CompareOp::Eq:
-        return v == value;
-    case CompareOp::Ne:
-        return v != value;
-    case CompareOp::Lt:
-        return v < value;
-    case CompareOp::Le:
-        return v <= value;
-    case CompareOp::Gt:
-        return v > value;
-    case CompareOp::Ge:
-        return v >= value;
-    case CompareOp::None:
-        break;
-    }
-    return false;
+    return compareHolds(op, v, value);
 }
 
 std::variant<Trigger, QString> parseTrigger(const Target &target, const QString &text,
@@ -53,8 +37,6 @@ std::variant<Trigger, QString> parseTrigger(const Target &target, const QString 
     // The device is everything before the condition: CPM1 writes "TIM 000" with a space.
     static const QRegularExpression edge(QStringLiteral("^(.+?)\\s*(rises|falls|↑|↓)$"),
                                          QRegularExpression::CaseInsensitiveOption);
-    static const QRegularExpression compare(
-        QStringLiteral("^(.+?)\\s*(<>|<=|>=|=|<|>)\\s*(\\S+)$"));
     const QString typed = text.trimmed();
     if (typed.isEmpty())
         return Tr::tr("Type a condition: \"%1 rises\", \"%1 falls\" or \"%2 > 100\"")
@@ -67,17 +49,12 @@ std::variant<Trigger, QString> parseTrigger(const Target &target, const QString 
         trigger.kind = word == QLatin1String("rises") || word == QStringLiteral("↑")
                            ? Trigger::Kind::Rises
                            : Trigger::Kind::Falls;
-    } else if (const auto c = compare.match(typed); c.hasMatch()) {
-        device = c.captured(1);
+    } else if (const std::optional<CompareAt> c = findCompare(typed);
+               c && !typed.sliced(c->at + c->length).trimmed().isEmpty()) {
+        device = typed.first(c->at);
         trigger.kind = Trigger::Kind::Compare;
-        const QString op = c.captured(2);
-        trigger.op = op == QLatin1String("=")    ? CompareOp::Eq
-                     : op == QLatin1String("<>") ? CompareOp::Ne
-                     : op == QLatin1String("<")  ? CompareOp::Lt
-                     : op == QLatin1String("<=") ? CompareOp::Le
-                     : op == QLatin1String(">")  ? CompareOp::Gt
-                                                 : CompareOp::Ge;
-        const QString number = c.captured(3);
+        trigger.op = c->op;
+        const QString number = typed.sliced(c->at + c->length).trimmed();
         bool ok = false;
         trigger.value = number.startsWith(QLatin1String("0x"), Qt::CaseInsensitive)
                             ? number.mid(2).toLongLong(&ok, 16)

@@ -370,19 +370,13 @@ private:
             error(m_at, column, Tr::tr("The contact has no device"));
             return false;
         }
-        const std::pair<const char *, CompareOp> symbols[] = {
-            {"<>", CompareOp::Ne}, {"<=", CompareOp::Le}, {">=", CompareOp::Ge},
-            {"<", CompareOp::Lt},  {">", CompareOp::Gt},  {"=", CompareOp::Eq}};
-        for (const auto &[symbol, op] : symbols) {
-            const qsizetype at = body.indexOf(QLatin1String(symbol));
-            if (at <= 0)
-                continue;
+        if (const std::optional<CompareAt> c = findCompare(body)) {
             Operand a;
             Operand b;
-            if (!readOperand(body.left(at), column + 1, &a) ||
-                !readOperand(body.mid(at + qstrlen(symbol)), column + 1 + static_cast<int>(at), &b))
+            if (!readOperand(body.left(c->at), column + 1, &a) ||
+                !readOperand(body.mid(c->at + c->length), column + 1 + static_cast<int>(c->at), &b))
                 return false;
-            contact->compare = op;
+            contact->compare = c->op;
             contact->operands = {a, b};
             return true;
         }

@@ -269,13 +269,10 @@ Target makeVigorTarget() {
     in.push_back(
         contact("ORF", Op::Or, M::Falling,
                 QT_TRANSLATE_NOOP("rung::model::Target", "Falling-edge contact in parallel")));
-    const std::pair<const char *, CompareOp> compares[] = {
-        {"=", CompareOp::Eq},  {"<>", CompareOp::Ne}, {"<", CompareOp::Lt},
-        {"<=", CompareOp::Le}, {">", CompareOp::Gt},  {">=", CompareOp::Ge}};
-    for (const auto &[symbol, cmp] : compares) {
+    for (const CompareOp cmp : kCompareOps) {
         for (const auto &[prefix, op] :
              {std::pair{"LD", Op::Load}, {"AND", Op::And}, {"OR", Op::Or}}) {
-            const QByteArray name = QByteArray(prefix) + symbol;
+            const QByteArray name = QByteArray(prefix) + compareSymbol(cmp);
             InstructionSpec s = compareContact("", op, cmp);
             s.mnemonic = QString::fromLatin1(name);
             in.push_back(s);
