@@ -1,5 +1,6 @@
 #include "trace.h"
 
+#include "model/image/scan_csv.h"
 #include "model/target/address.h"
 
 #include <QCoreApplication>
@@ -131,11 +132,12 @@ bool parseTraceOptions(const model::Target &target, const QStringList &args, Tra
         if (args[i] == QLatin1String("--set")) {
             const auto m = setRe.match(args[i + 1]);
             if (m.captured(3).toULongLong() >= request->scans) {
-                *error = Tr::tr("--set %1 comes after the last scan: %2 scans run, numbered 0 "
-                                "to %3, so it would never apply")
+                //: --set DEV=VALUE@N applies once N (%2) scans have run; %3 scans run
+                *error = Tr::tr("--set %1 comes after the last scan: it applies once %2 scans "
+                                "have run, and %3 run, so it would never apply")
                              .arg(args[i + 1])
-                             .arg(request->scans)
-                             .arg(request->scans - 1);
+                             .arg(m.captured(3).toULongLong())
+                             .arg(request->scans);
                 return false;
             }
         }
@@ -150,10 +152,11 @@ void runTrace(const std::shared_ptr<const Program> &program, const TraceRequest 
     const model::Target &target = program->layout->target();
     Engine engine(program);
     engine.setPeriodMs(request.periodMs);
-    out << "scan,time_ms";
+    QStringList names;
     for (const TraceColumn &c : request.columns)
-        out << ',' << c.name;
-    out << '\n';
+        names << c.name;
+    model::ScanCsvWriter csv(out, names);
+    QStringList values(names.size());
     auto next = request.stimuli.begin();
     for (quint64 scan = 0; scan < request.scans; ++scan) {
         for (; next != request.stimuli.end() && next->scan <= scan; ++next) {
@@ -164,31 +167,29 @@ void runTrace(const std::shared_ptr<const Program> &program, const TraceRequest 
             else
                 engine.setBit(next->address, next->value != 0);
         }
-        const qint64 time = engine.statistics().timeMs;
         engine.scan();
-        out << scan << ',' << time;
-        for (const TraceColumn &c : request.columns) {
-            out << ',';
+        for (qsizetype k = 0; k < values.size(); ++k) {
+            const TraceColumn &c = request.columns[static_cast<std::size_t>(k)];
             switch (c.kind) {
             case TraceColumn::Kind::Bit:
-                out << (engine.bit(c.address) ? 1 : 0);
+                values[k] = engine.bit(c.address) ? QStringLiteral("1") : QStringLiteral("0");
                 break;
             case TraceColumn::Kind::Word:
-                out << engine.value(c.address);
+                values[k] = QString::number(engine.value(c.address));
                 break;
             case TraceColumn::Kind::SetValue:
-                out << engine.setValue(c.address);
+                values[k] = QString::number(engine.setValue(c.address));
                 break;
             case TraceColumn::Kind::Hex:
-                out << '#'
-                    << QStringLiteral("%1")
-                           .arg(static_cast<std::uint32_t>(engine.value(c.address)) & 0xFFFFu, 4,
-                                16, QLatin1Char('0'))
-                           .toUpper();
+                values[k] = QLatin1Char('#') +
+                            QStringLiteral("%1")
+                                .arg(static_cast<std::uint32_t>(engine.value(c.address)) & 0xFFFFu,
+                                     4, 16, QLatin1Char('0'))
+                                .toUpper();
                 break;
             }
         }
-        out << '\n';
+        csv.row(engine.statistics().scans, engine.statistics().timeMs, values);
     }
     if (runtimeErrors)
         *runtimeErrors = engine.runtimeErrors();

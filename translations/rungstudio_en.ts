@@ -69,7 +69,7 @@
 <context>
     <name>rung::editor::TimingChart</name>
     <message numerus="yes">
-        <location filename="../editor/timing_chart.cpp" line="+412"/>
+        <location filename="../editor/timing_chart.cpp" line="+407"/>
         <source>B − A: %1 (%n scan(s))</source>
         <extracomment>the time between the cursors, and how many scans that is</extracomment>
         <translation>
@@ -127,7 +127,7 @@
 <context>
     <name>rung::model::InstructionList</name>
     <message numerus="yes">
-        <location filename="../model/listing/il_parse.cpp" line="+457"/>
+        <location filename="../model/listing/il_parse.cpp" line="+445"/>
         <source>%1 needs %n operand(s): %2</source>
         <translation>
             <numerusform>%1 needs %n operand: %2</numerusform>

@@ -1368,7 +1368,7 @@ Létradiagram- és utasításlista-szerkesztő a következő PLC-khez: %2.</tran
         <translation>Létradiagram exportálása</translation>
     </message>
     <message>
-        <location line="+65"/>
+        <location line="+66"/>
         <source>Cannot open the example</source>
         <translation>A példa nem nyitható meg</translation>
     </message>
@@ -1987,7 +1987,7 @@ A read és a write kilépési kódja: 0 kész, 1 a PLC nem válaszolt vagy eluta
 <context>
     <name>rung::app::Record</name>
     <message>
-        <location filename="../app/cli/cli_record.cpp" line="+43"/>
+        <location filename="../app/cli/cli_record.cpp" line="+41"/>
         <source>  rungstudio-cli record --pc PORT --plc PORT [--baud B] [--frame 8N1] [-o FILE]
         [--seconds S]   (PORT: a serial port, a /dev/pts path, or pty for a new one)</source>
         <translation>  rungstudio-cli record --pc PORT --plc PORT [--baud B] [--frame 8N1] [-o FILE]
@@ -2024,12 +2024,12 @@ A read és a write kilépési kódja: 0 kész, 1 a PLC nem válaszolt vagy eluta
         <translation>%1 nem írható: %2</translation>
     </message>
     <message>
-        <location line="+30"/>
+        <location line="+20"/>
         <source>Passing bytes between %1 (PC) and %2 (PLC); stop with Ctrl+C</source>
         <translation>Bájtok továbbítása %1 (PC) és %2 (PLC) között; leállítás: Ctrl+C</translation>
     </message>
     <message>
-        <location line="+34"/>
+        <location line="+33"/>
         <source>%1 bytes from the PC, %2 bytes from the PLC, in %3 records</source>
         <translation>%1 bájt a PC-től, %2 bájt a PLC-től, %3 bejegyzésben</translation>
     </message>
@@ -2201,7 +2201,7 @@ A read és a write kilépési kódja: 0 kész, 1 a PLC nem válaszolt vagy eluta
 <context>
     <name>rung::app::Serve</name>
     <message>
-        <location filename="../app/cli/cli_serve.cpp" line="+30"/>
+        <location filename="../app/cli/cli_serve.cpp" line="+28"/>
         <source>usage: rungstudio-cli serve FILE [--target T] [--model M] --protocol vigor|modbus|modbus-tcp|hostlink (--pty | --port NAME | --tcp HOST:PORT) [--station N] [--baud B] [--frame 8N1|7E1|7E2|...] [--period MS] [--fault bad-checksum|silent|wrong-station|garbage|truncated|split]</source>
         <translation>használat: rungstudio-cli serve FILE [--target T] [--model M] --protocol vigor|modbus|modbus-tcp|hostlink (--pty | --port NAME | --tcp HOST:PORT) [--station N] [--baud B] [--frame 8N1|7E1|7E2|...] [--period MS] [--fault bad-checksum|silent|wrong-station|garbage|truncated|split]</translation>
     </message>
@@ -2271,12 +2271,12 @@ A read és a write kilépési kódja: 0 kész, 1 a PLC nem válaszolt vagy eluta
         <translation>a(z) %1 nem ismeri ezt: %2; ezeket ismeri: %3</translation>
     </message>
     <message>
-        <location line="+49"/>
+        <location line="+39"/>
         <source>%1 serves %2 (%3, %4, station %5) on %6; stop it with Ctrl+C</source>
         <translation>a(z) %1 kiszolgálja: %2 (%3, %4, %5. állomás), itt: %6; leállítás: Ctrl+C</translation>
     </message>
     <message>
-        <location line="+21"/>
+        <location line="+20"/>
         <source>%1 requests answered, %2 refused with an error, %3 for other stations or broadcast, %4 frames dropped; %5 writes</source>
         <translation>%1 kérés megválaszolva, %2 hibakóddal elutasítva, %3 más állomásnak szólt vagy körözvény volt, %4 keret eldobva; %5 írás</translation>
     </message>
@@ -2743,7 +2743,7 @@ Kiértékelés: %4 µs (%5..%6)</translation>
     </message>
     <message>
         <location line="+34"/>
-        <location filename="../comms/driver/host_link_driver.cpp" line="+160"/>
+        <location filename="../comms/driver/host_link_driver.cpp" line="+154"/>
         <source>switching %1 to %2</source>
         <translation>%1 átkapcsolása %2 módba</translation>
     </message>
@@ -2753,7 +2753,7 @@ Kiértékelés: %4 µs (%5..%6)</translation>
         <translation>%1: a PLC-nek csak RUN és STOP üzemmódja van</translation>
     </message>
     <message>
-        <location filename="../comms/driver/host_link_driver.cpp" line="-137"/>
+        <location filename="../comms/driver/host_link_driver.cpp" line="-131"/>
         <location filename="../comms/driver/modbus_driver.cpp" line="+29"/>
         <source>%1 unit %2 on %3</source>
         <translation>%1, %2. egység, %3</translation>
@@ -2764,7 +2764,7 @@ Kiértékelés: %4 µs (%5..%6)</translation>
         <translation>%1: az időzítők és számlálók lejárt-jelzői Host Linken csak olvashatók (RG)</translation>
     </message>
     <message>
-        <location line="+34"/>
+        <location line="+28"/>
         <source>Host Link forces bits of the IR / SR channels (CIO) only</source>
         <translation>Host Linken csak az IR / SR csatornák bitjei kényszeríthetők (CIO)</translation>
     </message>
@@ -2780,7 +2780,7 @@ Kiértékelés: %4 µs (%5..%6)</translation>
     </message>
     <message>
         <location line="+12"/>
-        <location filename="../comms/driver/modbus_driver.cpp" line="+111"/>
+        <location filename="../comms/driver/modbus_driver.cpp" line="+105"/>
         <source>reading the model of %1</source>
         <translation>%1 típusának olvasása</translation>
     </message>
@@ -2806,12 +2806,12 @@ Kiértékelés: %4 µs (%5..%6)</translation>
         <translation>%1 (%2 kísérlet)</translation>
     </message>
     <message>
-        <location filename="../comms/driver/modbus_driver.cpp" line="-51"/>
+        <location filename="../comms/driver/modbus_driver.cpp" line="-45"/>
         <source>%1: Modbus has no function that writes discrete inputs</source>
         <translation>%1: a Modbusnak nincs függvénye a diszkrét bemenetek írására</translation>
     </message>
     <message>
-        <location line="+60"/>
+        <location line="+54"/>
         <source>device type %1</source>
         <translation>eszköztípus: %1</translation>
     </message>
@@ -2891,7 +2891,7 @@ Kiértékelés: %4 µs (%5..%6)</translation>
         <translation>ismeretlen üzemmód</translation>
     </message>
     <message>
-        <location line="+20"/>
+        <location line="+29"/>
         <source>cannot force over %1: the protocol has no force command; write the bit instead (the program may overwrite it)</source>
         <translation>%1 protokollon nem lehet kényszeríteni: nincs kényszerítő parancsa; írja inkább a bitet (a program felülírhatja)</translation>
     </message>
@@ -3591,8 +3591,8 @@ Kiértékelés: %4 µs (%5..%6)</translation>
 <context>
     <name>rung::editor::IlEditor</name>
     <message>
-        <location filename="../editor/il_editor.cpp" line="+273"/>
-        <location line="+375"/>
+        <location filename="../editor/il_editor.cpp" line="+274"/>
+        <location line="+391"/>
         <source>Instruction list</source>
         <translation>Utasításlista</translation>
     </message>
@@ -3600,7 +3600,7 @@ Kiértékelés: %4 µs (%5..%6)</translation>
 <context>
     <name>rung::editor::IlLexer</name>
     <message>
-        <location line="-581"/>
+        <location line="-597"/>
         <source>Default</source>
         <translation>Alapértelmezett</translation>
     </message>
@@ -3643,7 +3643,7 @@ Kiértékelés: %4 µs (%5..%6)</translation>
 <context>
     <name>rung::editor::IoPanel</name>
     <message>
-        <location filename="../editor/io_panel.cpp" line="+86"/>
+        <location filename="../editor/io_panel.cpp" line="+80"/>
         <source>Inputs are switches</source>
         <translation>A bemenetek kapcsolók</translation>
     </message>
@@ -3659,18 +3659,18 @@ Kiértékelés: %4 µs (%5..%6)</translation>
     </message>
     <message>
         <location line="+3"/>
-        <location line="+234"/>
+        <location line="+229"/>
         <source>Inputs take effect at the next scan</source>
         <translation>A bemenetek a következő ciklusban hatnak</translation>
     </message>
     <message>
-        <location line="-233"/>
-        <location line="+234"/>
+        <location line="-228"/>
+        <location line="+229"/>
         <source>Run the simulation (F10) to work the inputs</source>
         <translation>A bemenetek kezeléséhez indítsa a szimulációt (F10)</translation>
     </message>
     <message>
-        <location line="-151"/>
+        <location line="-146"/>
         <source>Further inputs the program uses</source>
         <translation>A program további bemenetei</translation>
     </message>
@@ -3841,7 +3841,7 @@ Kiértékelés: %4 µs (%5..%6)</translation>
         <translation>%1 nincs használatban a programban</translation>
     </message>
     <message>
-        <location filename="../editor/ladder_view_monitor.cpp" line="+240"/>
+        <location filename="../editor/ladder_view_monitor.cpp" line="+235"/>
         <source>current %1, set %2, %3</source>
         <extracomment>a timer&apos;s or counter&apos;s live state in a tooltip: current value, set value, done bit</extracomment>
         <translation>aktuális %1, beállított %2, %3</translation>
@@ -3870,7 +3870,7 @@ Kiértékelés: %4 µs (%5..%6)</translation>
 <context>
     <name>rung::editor::MonitorCommands</name>
     <message>
-        <location filename="../editor/monitor_commands.cpp" line="+134"/>
+        <location filename="../editor/monitor_commands.cpp" line="+131"/>
         <source>Force %1 O&amp;N</source>
         <translation>%1 kényszerítése &amp;BE</translation>
     </message>
@@ -3989,8 +3989,8 @@ Kiértékelés: %4 µs (%5..%6)</translation>
 <context>
     <name>rung::editor::PowerFlow</name>
     <message>
-        <location filename="../editor/il_editor_monitor.cpp" line="+105"/>
-        <location filename="../editor/power_flow.cpp" line="+327"/>
+        <location filename="../editor/il_editor_monitor.cpp" line="+102"/>
+        <location filename="../editor/power_flow.cpp" line="+307"/>
         <source>ON</source>
         <translation>BE</translation>
     </message>
@@ -4036,24 +4036,24 @@ Kiértékelés: %4 µs (%5..%6)</translation>
         <translation>Üzenet</translation>
     </message>
     <message>
-        <location line="+67"/>
+        <location line="+68"/>
         <location line="+47"/>
         <source>Problems</source>
         <translation>Problémák</translation>
     </message>
     <message>
-        <location line="-96"/>
+        <location line="-97"/>
         <source>Error</source>
         <translation>Hiba</translation>
     </message>
     <message>
         <location line="+1"/>
-        <location line="+67"/>
+        <location line="+68"/>
         <source>Warning</source>
         <translation>Figyelmeztetés</translation>
     </message>
     <message>
-        <location line="-66"/>
+        <location line="-67"/>
         <source>Note</source>
         <translation>Megjegyzés</translation>
     </message>
@@ -4064,12 +4064,12 @@ Kiértékelés: %4 µs (%5..%6)</translation>
     </message>
     <message>
         <location line="+3"/>
-        <location line="+52"/>
+        <location line="+53"/>
         <source>rung %1, row %2</source>
         <translation>%1. létrafok, %2. sor</translation>
     </message>
     <message>
-        <location line="-51"/>
+        <location line="-52"/>
         <source>rung %1</source>
         <translation>%1. létrafok</translation>
     </message>
@@ -4079,7 +4079,7 @@ Kiértékelés: %4 µs (%5..%6)</translation>
         <translation>%1 (javítás elérhető)</translation>
     </message>
     <message>
-        <location line="+85"/>
+        <location line="+86"/>
         <source>1 error</source>
         <translation>1 hiba</translation>
     </message>
@@ -4220,7 +4220,7 @@ Kiértékelés: %4 µs (%5..%6)</translation>
         <translation>Kattintás: A kurzor; Shift+kattintás vagy jobb kattintás: B kurzor; görgő: görgetés; Ctrl+görgő: nagyítás; jobb kattintás egy néven: a formátuma</translation>
     </message>
     <message>
-        <location line="+27"/>
+        <location line="+22"/>
         <source>The trigger could not be armed on this source</source>
         <translation>A trigger ezen a forráson nem élesíthető</translation>
     </message>
@@ -4329,7 +4329,7 @@ Kiértékelés: %4 µs (%5..%6)</translation>
 <context>
     <name>rung::editor::WatchListView</name>
     <message>
-        <location filename="../editor/watch_list_view.cpp" line="+102"/>
+        <location filename="../editor/watch_list_view.cpp" line="+97"/>
         <source>Watch lists</source>
         <translation>Figyelőlisták</translation>
     </message>
@@ -5225,7 +5225,7 @@ Kiértékelés: %4 µs (%5..%6)</translation>
 <context>
     <name>rung::model::InstructionList</name>
     <message>
-        <location filename="../model/listing/il_parse.cpp" line="+123"/>
+        <location filename="../model/listing/il_parse.cpp" line="+114"/>
         <source>Too many errors; the rest of the listing was not read</source>
         <translation>Túl sok hiba; a lista többi része nem lett beolvasva</translation>
     </message>
@@ -5250,7 +5250,7 @@ Kiértékelés: %4 µs (%5..%6)</translation>
         <translation>Ismeretlen utasítás: &apos;%1&apos; (%2); erre gondolt: %3?</translation>
     </message>
     <message>
-        <location line="+44"/>
+        <location line="+41"/>
         <source>%1 cannot compare values</source>
         <translation>%1 nem tud értékeket összehasonlítani</translation>
     </message>
@@ -5453,7 +5453,7 @@ Kiértékelés: %4 µs (%5..%6)</translation>
         <translation>Az érintkezőnek nincs operandusa</translation>
     </message>
     <message>
-        <location line="+24"/>
+        <location line="+18"/>
         <source>%1 is a word; a contact takes a bit device</source>
         <translation>%1 egy szó; az érintkező bit típusú operandust vár</translation>
     </message>
@@ -5681,7 +5681,7 @@ Kiértékelés: %4 µs (%5..%6)</translation>
     </message>
     <message>
         <location line="+4"/>
-        <location filename="../model/target/target_pl110.cpp" line="+89"/>
+        <location filename="../model/target/target_pl110.cpp" line="+87"/>
         <location filename="../model/target/target_vpc.cpp" line="+61"/>
         <source>timers</source>
         <translation>időzítők</translation>
@@ -5689,7 +5689,7 @@ Kiértékelés: %4 µs (%5..%6)</translation>
     <message>
         <location line="+8"/>
         <location filename="../model/target/target_pl110.cpp" line="+5"/>
-        <location filename="../model/target/target_vigor.cpp" line="+135"/>
+        <location filename="../model/target/target_vigor.cpp" line="+123"/>
         <location filename="../model/target/target_vpc.cpp" line="+5"/>
         <source>counters</source>
         <translation>számlálók</translation>
@@ -5841,7 +5841,7 @@ Kiértékelés: %4 µs (%5..%6)</translation>
     <message>
         <location line="+4"/>
         <location filename="../model/target/target_pl110.cpp" line="+5"/>
-        <location filename="../model/target/target_vigor.cpp" line="+21"/>
+        <location filename="../model/target/target_vigor.cpp" line="+18"/>
         <location filename="../model/target/target_vpc.cpp" line="+2"/>
         <source>Connect the last two blocks in series</source>
         <translation>Az utolsó két blokk soros kapcsolása</translation>
@@ -6268,7 +6268,7 @@ Kiértékelés: %4 µs (%5..%6)</translation>
     </message>
     <message>
         <location line="+2"/>
-        <location filename="../model/target/target_vigor.cpp" line="-147"/>
+        <location filename="../model/target/target_vigor.cpp" line="-144"/>
         <source>minimum scan time (0.1 ms)</source>
         <translation>legkisebb ciklusidő (0,1 ms)</translation>
     </message>
@@ -6460,7 +6460,7 @@ Kiértékelés: %4 µs (%5..%6)</translation>
     </message>
     <message>
         <location line="+11"/>
-        <location filename="../model/target/target_vigor.cpp" line="+176"/>
+        <location filename="../model/target/target_vigor.cpp" line="+173"/>
         <location line="+61"/>
         <location line="+75"/>
         <source>number of words</source>
@@ -6552,12 +6552,12 @@ Kiértékelés: %4 µs (%5..%6)</translation>
         <translation>Kijelzőparaméter elhelyezése</translation>
     </message>
     <message>
-        <location filename="../model/target/target_vigor.cpp" line="-471"/>
+        <location filename="../model/target/target_vigor.cpp" line="-456"/>
         <source>Compare contact: ON while S1 ? S2</source>
         <translation>Összehasonlító érintkező: BE, amíg S1 ? S2</translation>
     </message>
     <message>
-        <location line="+60"/>
+        <location line="+48"/>
         <location filename="../model/target/target_vpc.cpp" line="-67"/>
         <source>inputs</source>
         <translation>bemenetek</translation>
@@ -6796,7 +6796,7 @@ Kiértékelés: %4 µs (%5..%6)</translation>
         <translation>Lefutó él érintkező párhuzamosan</translation>
     </message>
     <message>
-        <location line="+21"/>
+        <location line="+18"/>
         <source>Push the result onto the branch stack</source>
         <translation>Az eredmény mentése az elágazási verembe</translation>
     </message>
@@ -6916,12 +6916,12 @@ Kiértékelés: %4 µs (%5..%6)</translation>
         <translation>Számláló: a felfutó éleket számolja, törlés RST-vel</translation>
     </message>
     <message>
-        <location line="-146"/>
+        <location line="-143"/>
         <source>RS, CCD, ASCI, HEX: 8-bit mode, one byte a word (OFF: 16-bit)</source>
         <translation>RS, CCD, ASCI, HEX: 8 bites mód, szavanként egy bájt (KI: 16 bites)</translation>
     </message>
     <message>
-        <location line="+152"/>
+        <location line="+149"/>
         <source>Step ladder: start of step S</source>
         <translation>Léptetőlánc: az S lépés kezdete</translation>
     </message>
@@ -7140,12 +7140,12 @@ Kiértékelés: %4 µs (%5..%6)</translation>
 <context>
     <name>rung::model::Trigger</name>
     <message>
-        <location filename="../model/image/trigger.cpp" line="+60"/>
+        <location filename="../model/image/trigger.cpp" line="+42"/>
         <source>Type a condition: &quot;%1 rises&quot;, &quot;%1 falls&quot; or &quot;%2 &gt; 100&quot;</source>
         <translation>Írjon be egy feltételt: &quot;%1 rises&quot;, &quot;%1 falls&quot; vagy &quot;%2 &gt; 100&quot;</translation>
     </message>
     <message>
-        <location line="+26"/>
+        <location line="+21"/>
         <source>&quot;%1&quot; is not a whole number (0x before a hexadecimal one)</source>
         <translation>„%1” nem egész szám (hexadecimális előtt 0x)</translation>
     </message>
@@ -7390,7 +7390,7 @@ Kiértékelés: %4 µs (%5..%6)</translation>
 <context>
     <name>rung::simulator::Engine</name>
     <message>
-        <location filename="../simulator/engine_execute.cpp" line="+69"/>
+        <location filename="../simulator/engine_execute.cpp" line="+49"/>
         <source>set value %1 is not a BCD number; the instruction is skipped</source>
         <translation>a(z) %1 beállított érték nem BCD szám; az utasítás kimarad</translation>
     </message>
@@ -7410,7 +7410,7 @@ Kiértékelés: %4 µs (%5..%6)</translation>
         <translation>a(z) %1 eredmény kívül esik a 0..9999 tartományon; %2 íródik be</translation>
     </message>
     <message>
-        <location line="+422"/>
+        <location line="+424"/>
         <source>subroutines nest deeper than %1 levels; the call is skipped</source>
         <translation>a szubrutinok %1 szintnél mélyebben ágyazódnak egymásba; a hívás elmarad</translation>
     </message>
@@ -7456,7 +7456,7 @@ Kiértékelés: %4 µs (%5..%6)</translation>
         <translation>osztás nullával</translation>
     </message>
     <message>
-        <location filename="../simulator/engine_debug.cpp" line="+60"/>
+        <location filename="../simulator/engine_debug.cpp" line="+40"/>
         <location line="+11"/>
         <source>the program has no instruction %1 to stop at</source>
         <translation>a programnak nincs %1. utasítása, amelynél meg lehetne állni</translation>
@@ -7529,7 +7529,7 @@ Kiértékelés: %4 µs (%5..%6)</translation>
 <context>
     <name>rung::simulator::Trace</name>
     <message>
-        <location filename="../simulator/trace.cpp" line="+23"/>
+        <location filename="../simulator/trace.cpp" line="+24"/>
         <source>unknown device %1: %2</source>
         <translation>ismeretlen operandus: %1: %2</translation>
     </message>
@@ -7559,12 +7559,13 @@ Kiértékelés: %4 µs (%5..%6)</translation>
         <translation>a --period %1 több mint %2 ms</translation>
     </message>
     <message>
-        <location line="+59"/>
-        <source>--set %1 comes after the last scan: %2 scans run, numbered 0 to %3, so it would never apply</source>
-        <translation>a --set %1 az utolsó ciklus után jönne: %2 ciklus fut, 0-tól %3-ig számozva, így sosem lépne életbe</translation>
+        <location line="+60"/>
+        <source>--set %1 comes after the last scan: it applies once %2 scans have run, and %3 run, so it would never apply</source>
+        <extracomment>--set DEV=VALUE@N applies once N (%2) scans have run; %3 scans run</extracomment>
+        <translation>a --set %1 az utolsó ciklus után jönne: akkor lép életbe, amikor már %2 ciklus lefutott, de csak %3 fut le, így sosem lépne életbe</translation>
     </message>
     <message>
-        <location line="-47"/>
+        <location line="-48"/>
         <source>--set needs DEV=VALUE@SCAN, not &quot;%1&quot;</source>
         <translation>--set formája DEV=VALUE@SCAN, nem &quot;%1&quot;</translation>
     </message>

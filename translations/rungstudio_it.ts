@@ -1370,7 +1370,7 @@ Editor di schemi ladder e liste istruzioni per %2.</translation>
         <translation>Esporta schema ladder</translation>
     </message>
     <message>
-        <location line="+65"/>
+        <location line="+66"/>
         <source>Cannot open the example</source>
         <translation>Impossibile aprire l&apos;esempio</translation>
     </message>
@@ -1992,7 +1992,7 @@ Codice di uscita di read e write: 0 fatto, 1 il PLC non ha risposto o ha rifiuta
 <context>
     <name>rung::app::Record</name>
     <message>
-        <location filename="../app/cli/cli_record.cpp" line="+43"/>
+        <location filename="../app/cli/cli_record.cpp" line="+41"/>
         <source>  rungstudio-cli record --pc PORT --plc PORT [--baud B] [--frame 8N1] [-o FILE]
         [--seconds S]   (PORT: a serial port, a /dev/pts path, or pty for a new one)</source>
         <translation>  rungstudio-cli record --pc PORT --plc PORT [--baud B] [--frame 8N1] [-o FILE]
@@ -2029,12 +2029,12 @@ Codice di uscita di read e write: 0 fatto, 1 il PLC non ha risposto o ha rifiuta
         <translation>impossibile scrivere %1: %2</translation>
     </message>
     <message>
-        <location line="+30"/>
+        <location line="+20"/>
         <source>Passing bytes between %1 (PC) and %2 (PLC); stop with Ctrl+C</source>
         <translation>Inoltro dei byte tra %1 (PC) e %2 (PLC); fermare con Ctrl+C</translation>
     </message>
     <message>
-        <location line="+34"/>
+        <location line="+33"/>
         <source>%1 bytes from the PC, %2 bytes from the PLC, in %3 records</source>
         <translation>%1 byte dal PC, %2 byte dal PLC, in %3 registrazioni</translation>
     </message>
@@ -2206,7 +2206,7 @@ Codice di uscita di read e write: 0 fatto, 1 il PLC non ha risposto o ha rifiuta
 <context>
     <name>rung::app::Serve</name>
     <message>
-        <location filename="../app/cli/cli_serve.cpp" line="+30"/>
+        <location filename="../app/cli/cli_serve.cpp" line="+28"/>
         <source>usage: rungstudio-cli serve FILE [--target T] [--model M] --protocol vigor|modbus|modbus-tcp|hostlink (--pty | --port NAME | --tcp HOST:PORT) [--station N] [--baud B] [--frame 8N1|7E1|7E2|...] [--period MS] [--fault bad-checksum|silent|wrong-station|garbage|truncated|split]</source>
         <translation>uso: rungstudio-cli serve FILE [--target T] [--model M] --protocol vigor|modbus|modbus-tcp|hostlink (--pty | --port NAME | --tcp HOST:PORT) [--station N] [--baud B] [--frame 8N1|7E1|7E2|...] [--period MS] [--fault bad-checksum|silent|wrong-station|garbage|truncated|split]</translation>
     </message>
@@ -2276,12 +2276,12 @@ Codice di uscita di read e write: 0 fatto, 1 il PLC non ha risposto o ha rifiuta
         <translation>%1 non parla %2; parla %3</translation>
     </message>
     <message>
-        <location line="+49"/>
+        <location line="+39"/>
         <source>%1 serves %2 (%3, %4, station %5) on %6; stop it with Ctrl+C</source>
         <translation>%1 serve %2 (%3, %4, stazione %5) su %6; per fermarlo Ctrl+C</translation>
     </message>
     <message>
-        <location line="+21"/>
+        <location line="+20"/>
         <source>%1 requests answered, %2 refused with an error, %3 for other stations or broadcast, %4 frames dropped; %5 writes</source>
         <translation>%1 richieste con risposta, %2 rifiutate con un errore, %3 per altre stazioni o broadcast, %4 frame scartati; %5 scritture</translation>
     </message>
@@ -2749,7 +2749,7 @@ Valutazione: %4 µs (%5..%6)</translation>
     </message>
     <message>
         <location line="+34"/>
-        <location filename="../comms/driver/host_link_driver.cpp" line="+160"/>
+        <location filename="../comms/driver/host_link_driver.cpp" line="+154"/>
         <source>switching %1 to %2</source>
         <translation>commutazione di %1 in %2</translation>
     </message>
@@ -2759,7 +2759,7 @@ Valutazione: %4 µs (%5..%6)</translation>
         <translation>%1: il PLC ha solo RUN e STOP</translation>
     </message>
     <message>
-        <location filename="../comms/driver/host_link_driver.cpp" line="-137"/>
+        <location filename="../comms/driver/host_link_driver.cpp" line="-131"/>
         <location filename="../comms/driver/modbus_driver.cpp" line="+29"/>
         <source>%1 unit %2 on %3</source>
         <translation>%1 unità %2 su %3</translation>
@@ -2770,7 +2770,7 @@ Valutazione: %4 µs (%5..%6)</translation>
         <translation>%1: i flag di completamento di temporizzatori e contatori sono in sola lettura con Host Link (RG)</translation>
     </message>
     <message>
-        <location line="+34"/>
+        <location line="+28"/>
         <source>Host Link forces bits of the IR / SR channels (CIO) only</source>
         <translation>Host Link forza solo i bit dei canali IR / SR (CIO)</translation>
     </message>
@@ -2786,7 +2786,7 @@ Valutazione: %4 µs (%5..%6)</translation>
     </message>
     <message>
         <location line="+12"/>
-        <location filename="../comms/driver/modbus_driver.cpp" line="+111"/>
+        <location filename="../comms/driver/modbus_driver.cpp" line="+105"/>
         <source>reading the model of %1</source>
         <translation>lettura del modello di %1</translation>
     </message>
@@ -2812,12 +2812,12 @@ Valutazione: %4 µs (%5..%6)</translation>
         <translation>%1 (%2 tentativi)</translation>
     </message>
     <message>
-        <location filename="../comms/driver/modbus_driver.cpp" line="-51"/>
+        <location filename="../comms/driver/modbus_driver.cpp" line="-45"/>
         <source>%1: Modbus has no function that writes discrete inputs</source>
         <translation>%1: Modbus non ha una funzione che scrive gli ingressi discreti</translation>
     </message>
     <message>
-        <location line="+60"/>
+        <location line="+54"/>
         <source>device type %1</source>
         <translation>tipo di dispositivo %1</translation>
     </message>
@@ -2897,7 +2897,7 @@ Valutazione: %4 µs (%5..%6)</translation>
         <translation>modo sconosciuto</translation>
     </message>
     <message>
-        <location line="+20"/>
+        <location line="+29"/>
         <source>cannot force over %1: the protocol has no force command; write the bit instead (the program may overwrite it)</source>
         <translation>impossibile forzare con %1: il protocollo non ha un comando di forzatura; scrivere invece il bit (il programma può sovrascriverlo)</translation>
     </message>
@@ -3598,8 +3598,8 @@ Valutazione: %4 µs (%5..%6)</translation>
 <context>
     <name>rung::editor::IlEditor</name>
     <message>
-        <location filename="../editor/il_editor.cpp" line="+273"/>
-        <location line="+375"/>
+        <location filename="../editor/il_editor.cpp" line="+274"/>
+        <location line="+391"/>
         <source>Instruction list</source>
         <translation>Lista istruzioni</translation>
     </message>
@@ -3607,7 +3607,7 @@ Valutazione: %4 µs (%5..%6)</translation>
 <context>
     <name>rung::editor::IlLexer</name>
     <message>
-        <location line="-581"/>
+        <location line="-597"/>
         <source>Default</source>
         <translation>Predefinito</translation>
     </message>
@@ -3650,7 +3650,7 @@ Valutazione: %4 µs (%5..%6)</translation>
 <context>
     <name>rung::editor::IoPanel</name>
     <message>
-        <location filename="../editor/io_panel.cpp" line="+86"/>
+        <location filename="../editor/io_panel.cpp" line="+80"/>
         <source>Inputs are switches</source>
         <translation>Ingressi come interruttori</translation>
     </message>
@@ -3666,18 +3666,18 @@ Valutazione: %4 µs (%5..%6)</translation>
     </message>
     <message>
         <location line="+3"/>
-        <location line="+234"/>
+        <location line="+229"/>
         <source>Inputs take effect at the next scan</source>
         <translation>Gli ingressi valgono dalla scansione successiva</translation>
     </message>
     <message>
-        <location line="-233"/>
-        <location line="+234"/>
+        <location line="-228"/>
+        <location line="+229"/>
         <source>Run the simulation (F10) to work the inputs</source>
         <translation>Avviare la simulazione (F10) per agire sugli ingressi</translation>
     </message>
     <message>
-        <location line="-151"/>
+        <location line="-146"/>
         <source>Further inputs the program uses</source>
         <translation>Altri ingressi usati dal programma</translation>
     </message>
@@ -3848,7 +3848,7 @@ Valutazione: %4 µs (%5..%6)</translation>
         <translation>%1 non è usato nel programma</translation>
     </message>
     <message>
-        <location filename="../editor/ladder_view_monitor.cpp" line="+240"/>
+        <location filename="../editor/ladder_view_monitor.cpp" line="+235"/>
         <source>current %1, set %2, %3</source>
         <extracomment>a timer&apos;s or counter&apos;s live state in a tooltip: current value, set value, done bit</extracomment>
         <translation>corrente %1, preset %2, %3</translation>
@@ -3877,7 +3877,7 @@ Valutazione: %4 µs (%5..%6)</translation>
 <context>
     <name>rung::editor::MonitorCommands</name>
     <message>
-        <location filename="../editor/monitor_commands.cpp" line="+134"/>
+        <location filename="../editor/monitor_commands.cpp" line="+131"/>
         <source>Force %1 O&amp;N</source>
         <translation>Forza %1 O&amp;N</translation>
     </message>
@@ -3996,8 +3996,8 @@ Valutazione: %4 µs (%5..%6)</translation>
 <context>
     <name>rung::editor::PowerFlow</name>
     <message>
-        <location filename="../editor/il_editor_monitor.cpp" line="+105"/>
-        <location filename="../editor/power_flow.cpp" line="+327"/>
+        <location filename="../editor/il_editor_monitor.cpp" line="+102"/>
+        <location filename="../editor/power_flow.cpp" line="+307"/>
         <source>ON</source>
         <translation>ON</translation>
     </message>
@@ -4043,24 +4043,24 @@ Valutazione: %4 µs (%5..%6)</translation>
         <translation>Messaggio</translation>
     </message>
     <message>
-        <location line="+67"/>
+        <location line="+68"/>
         <location line="+47"/>
         <source>Problems</source>
         <translation>Problemi</translation>
     </message>
     <message>
-        <location line="-96"/>
+        <location line="-97"/>
         <source>Error</source>
         <translation>Errore</translation>
     </message>
     <message>
         <location line="+1"/>
-        <location line="+67"/>
+        <location line="+68"/>
         <source>Warning</source>
         <translation>Avviso</translation>
     </message>
     <message>
-        <location line="-66"/>
+        <location line="-67"/>
         <source>Note</source>
         <translation>Nota</translation>
     </message>
@@ -4071,12 +4071,12 @@ Valutazione: %4 µs (%5..%6)</translation>
     </message>
     <message>
         <location line="+3"/>
-        <location line="+52"/>
+        <location line="+53"/>
         <source>rung %1, row %2</source>
         <translation>segmento %1, riga %2</translation>
     </message>
     <message>
-        <location line="-51"/>
+        <location line="-52"/>
         <source>rung %1</source>
         <translation>segmento %1</translation>
     </message>
@@ -4086,7 +4086,7 @@ Valutazione: %4 µs (%5..%6)</translation>
         <translation>%1 (correzione disponibile)</translation>
     </message>
     <message>
-        <location line="+85"/>
+        <location line="+86"/>
         <source>1 error</source>
         <translation>1 errore</translation>
     </message>
@@ -4227,7 +4227,7 @@ Valutazione: %4 µs (%5..%6)</translation>
         <translation>Clic: cursore A; Maiusc+clic o clic destro: cursore B; rotellina: scorrimento; Ctrl+rotellina: zoom; clic destro su un nome: il suo formato</translation>
     </message>
     <message>
-        <location line="+27"/>
+        <location line="+22"/>
         <source>The trigger could not be armed on this source</source>
         <translation>Il trigger non può essere armato su questa sorgente</translation>
     </message>
@@ -4337,7 +4337,7 @@ Valutazione: %4 µs (%5..%6)</translation>
 <context>
     <name>rung::editor::WatchListView</name>
     <message>
-        <location filename="../editor/watch_list_view.cpp" line="+102"/>
+        <location filename="../editor/watch_list_view.cpp" line="+97"/>
         <source>Watch lists</source>
         <translation>Liste di osservazione</translation>
     </message>
@@ -5238,7 +5238,7 @@ Valutazione: %4 µs (%5..%6)</translation>
 <context>
     <name>rung::model::InstructionList</name>
     <message>
-        <location filename="../model/listing/il_parse.cpp" line="+123"/>
+        <location filename="../model/listing/il_parse.cpp" line="+114"/>
         <source>Too many errors; the rest of the listing was not read</source>
         <translation>Troppi errori; il resto della lista non è stato letto</translation>
     </message>
@@ -5263,7 +5263,7 @@ Valutazione: %4 µs (%5..%6)</translation>
         <translation>Istruzione sconosciuta &apos;%1&apos; per %2; forse intendevi %3?</translation>
     </message>
     <message>
-        <location line="+44"/>
+        <location line="+41"/>
         <source>%1 cannot compare values</source>
         <translation>%1 non può confrontare valori</translation>
     </message>
@@ -5468,7 +5468,7 @@ Valutazione: %4 µs (%5..%6)</translation>
         <translation>Il contatto non ha un operando</translation>
     </message>
     <message>
-        <location line="+24"/>
+        <location line="+18"/>
         <source>%1 is a word; a contact takes a bit device</source>
         <translation>%1 è una word; un contatto richiede un operando a bit</translation>
     </message>
@@ -5696,7 +5696,7 @@ Valutazione: %4 µs (%5..%6)</translation>
     </message>
     <message>
         <location line="+4"/>
-        <location filename="../model/target/target_pl110.cpp" line="+89"/>
+        <location filename="../model/target/target_pl110.cpp" line="+87"/>
         <location filename="../model/target/target_vpc.cpp" line="+61"/>
         <source>timers</source>
         <translation>temporizzatori</translation>
@@ -5704,7 +5704,7 @@ Valutazione: %4 µs (%5..%6)</translation>
     <message>
         <location line="+8"/>
         <location filename="../model/target/target_pl110.cpp" line="+5"/>
-        <location filename="../model/target/target_vigor.cpp" line="+135"/>
+        <location filename="../model/target/target_vigor.cpp" line="+123"/>
         <location filename="../model/target/target_vpc.cpp" line="+5"/>
         <source>counters</source>
         <translation>contatori</translation>
@@ -5856,7 +5856,7 @@ Valutazione: %4 µs (%5..%6)</translation>
     <message>
         <location line="+4"/>
         <location filename="../model/target/target_pl110.cpp" line="+5"/>
-        <location filename="../model/target/target_vigor.cpp" line="+21"/>
+        <location filename="../model/target/target_vigor.cpp" line="+18"/>
         <location filename="../model/target/target_vpc.cpp" line="+2"/>
         <source>Connect the last two blocks in series</source>
         <translation>Collega in serie gli ultimi due blocchi</translation>
@@ -6283,7 +6283,7 @@ Valutazione: %4 µs (%5..%6)</translation>
     </message>
     <message>
         <location line="+2"/>
-        <location filename="../model/target/target_vigor.cpp" line="-147"/>
+        <location filename="../model/target/target_vigor.cpp" line="-144"/>
         <source>minimum scan time (0.1 ms)</source>
         <translation>tempo di scansione minimo (0,1 ms)</translation>
     </message>
@@ -6475,7 +6475,7 @@ Valutazione: %4 µs (%5..%6)</translation>
     </message>
     <message>
         <location line="+11"/>
-        <location filename="../model/target/target_vigor.cpp" line="+176"/>
+        <location filename="../model/target/target_vigor.cpp" line="+173"/>
         <location line="+61"/>
         <location line="+75"/>
         <source>number of words</source>
@@ -6567,12 +6567,12 @@ Valutazione: %4 µs (%5..%6)</translation>
         <translation>Posiziona un parametro del display</translation>
     </message>
     <message>
-        <location filename="../model/target/target_vigor.cpp" line="-471"/>
+        <location filename="../model/target/target_vigor.cpp" line="-456"/>
         <source>Compare contact: ON while S1 ? S2</source>
         <translation>Contatto di confronto: ON mentre S1 ? S2</translation>
     </message>
     <message>
-        <location line="+60"/>
+        <location line="+48"/>
         <location filename="../model/target/target_vpc.cpp" line="-67"/>
         <source>inputs</source>
         <translation>ingressi</translation>
@@ -6811,7 +6811,7 @@ Valutazione: %4 µs (%5..%6)</translation>
         <translation>Contatto sul fronte di discesa in parallelo</translation>
     </message>
     <message>
-        <location line="+21"/>
+        <location line="+18"/>
         <source>Push the result onto the branch stack</source>
         <translation>Salva il risultato nello stack delle diramazioni</translation>
     </message>
@@ -6931,12 +6931,12 @@ Valutazione: %4 µs (%5..%6)</translation>
         <translation>Contatore: conta i fronti di salita, reset con RST</translation>
     </message>
     <message>
-        <location line="-146"/>
+        <location line="-143"/>
         <source>RS, CCD, ASCI, HEX: 8-bit mode, one byte a word (OFF: 16-bit)</source>
         <translation>RS, CCD, ASCI, HEX: modalità a 8 bit, un byte per word (OFF: 16 bit)</translation>
     </message>
     <message>
-        <location line="+152"/>
+        <location line="+149"/>
         <source>Step ladder: start of step S</source>
         <translation>Step ladder: inizio del passo S</translation>
     </message>
@@ -7155,12 +7155,12 @@ Valutazione: %4 µs (%5..%6)</translation>
 <context>
     <name>rung::model::Trigger</name>
     <message>
-        <location filename="../model/image/trigger.cpp" line="+60"/>
+        <location filename="../model/image/trigger.cpp" line="+42"/>
         <source>Type a condition: &quot;%1 rises&quot;, &quot;%1 falls&quot; or &quot;%2 &gt; 100&quot;</source>
         <translation>Digitare una condizione: &quot;%1 rises&quot;, &quot;%1 falls&quot; o &quot;%2 &gt; 100&quot;</translation>
     </message>
     <message>
-        <location line="+26"/>
+        <location line="+21"/>
         <source>&quot;%1&quot; is not a whole number (0x before a hexadecimal one)</source>
         <translation>&quot;%1&quot; non è un numero intero (0x prima di uno esadecimale)</translation>
     </message>
@@ -7405,7 +7405,7 @@ Valutazione: %4 µs (%5..%6)</translation>
 <context>
     <name>rung::simulator::Engine</name>
     <message>
-        <location filename="../simulator/engine_execute.cpp" line="+69"/>
+        <location filename="../simulator/engine_execute.cpp" line="+49"/>
         <source>set value %1 is not a BCD number; the instruction is skipped</source>
         <translation>il valore di preset %1 non è un numero BCD; l&apos;istruzione viene saltata</translation>
     </message>
@@ -7425,7 +7425,7 @@ Valutazione: %4 µs (%5..%6)</translation>
         <translation>il risultato %1 è fuori da 0..9999; viene scritto %2</translation>
     </message>
     <message>
-        <location line="+422"/>
+        <location line="+424"/>
         <source>subroutines nest deeper than %1 levels; the call is skipped</source>
         <translation>le subroutine sono annidate oltre %1 livelli; la chiamata non viene eseguita</translation>
     </message>
@@ -7471,7 +7471,7 @@ Valutazione: %4 µs (%5..%6)</translation>
         <translation>divisione per zero</translation>
     </message>
     <message>
-        <location filename="../simulator/engine_debug.cpp" line="+60"/>
+        <location filename="../simulator/engine_debug.cpp" line="+40"/>
         <location line="+11"/>
         <source>the program has no instruction %1 to stop at</source>
         <translation>il programma non ha un&apos;istruzione %1 dove fermarsi</translation>
@@ -7544,7 +7544,7 @@ Valutazione: %4 µs (%5..%6)</translation>
 <context>
     <name>rung::simulator::Trace</name>
     <message>
-        <location filename="../simulator/trace.cpp" line="+23"/>
+        <location filename="../simulator/trace.cpp" line="+24"/>
         <source>unknown device %1: %2</source>
         <translation>operando sconosciuto %1: %2</translation>
     </message>
@@ -7574,12 +7574,13 @@ Valutazione: %4 µs (%5..%6)</translation>
         <translation>--period %1 supera %2 ms</translation>
     </message>
     <message>
-        <location line="+59"/>
-        <source>--set %1 comes after the last scan: %2 scans run, numbered 0 to %3, so it would never apply</source>
-        <translation>--set %1 viene dopo l&apos;ultima scansione: si eseguono %2 scansioni, numerate da 0 a %3, quindi non si applicherebbe mai</translation>
+        <location line="+60"/>
+        <source>--set %1 comes after the last scan: it applies once %2 scans have run, and %3 run, so it would never apply</source>
+        <extracomment>--set DEV=VALUE@N applies once N (%2) scans have run; %3 scans run</extracomment>
+        <translation>--set %1 viene dopo l&apos;ultima scansione: si applica dopo %2 scansioni, e se ne eseguono %3, quindi non si applicherebbe mai</translation>
     </message>
     <message>
-        <location line="-47"/>
+        <location line="-48"/>
         <source>--set needs DEV=VALUE@SCAN, not &quot;%1&quot;</source>
         <translation>--set richiede DEV=VALUE@SCAN, non &quot;%1&quot;</translation>
     </message>
