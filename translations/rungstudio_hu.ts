@@ -185,7 +185,7 @@ Kilépési kód: 0 nincs hiba, 1 a programban hiba van, 2 használati vagy I/O h
         <translation>ismeretlen parancs: %1</translation>
     </message>
     <message>
-        <location filename="../app/cli/cli_common.cpp" line="+102"/>
+        <location filename="../app/cli/cli_common.cpp" line="+101"/>
         <source>%1 needs a value</source>
         <translation>%1 után érték kell</translation>
     </message>
@@ -195,38 +195,28 @@ Kilépési kód: 0 nincs hiba, 1 a programban hiba van, 2 használati vagy I/O h
         <translation>nincs megadva FILE</translation>
     </message>
     <message>
-        <location line="+21"/>
+        <location line="+16"/>
         <source>--from must be il, ladder or project, not %1</source>
         <translation>a --from értéke il, ladder vagy project lehet, nem %1</translation>
     </message>
     <message>
         <location line="+14"/>
-        <source>%1 is a %2 project, not %3</source>
-        <translation>%1 egy %2 projekt, nem %3</translation>
-    </message>
-    <message>
-        <location line="+23"/>
         <source>%1: which PLC? Give --target %2 or a &quot;; target: NAME&quot; first line</source>
         <translation>%1: melyik PLC? Adja meg: --target %2, vagy egy &quot;; target: NAME&quot; első sort</translation>
     </message>
     <message>
-        <location line="+6"/>
-        <source>unknown target %1 (%2)</source>
-        <translation>ismeretlen célrendszer: %1 (%2)</translation>
-    </message>
-    <message>
-        <location line="+65"/>
+        <location line="+74"/>
         <source>%1:rung %2:%3:%4</source>
         <extracomment>A finding&apos;s place on the ladder, after the file as a compiler writes file:line:column: %1 the file, %2 the rung&apos;s number, %3 the row, %4 the column. Keep the colons.</extracomment>
         <translation>%1:létrafok %2:%3:%4</translation>
     </message>
     <message>
-        <location line="-179"/>
+        <location line="-154"/>
         <source>%1 holds an instruction list typed in Rung Studio that is not in its program: the list had errors when the project was saved, and is kept as typed under the key &quot;pendingListing&quot;; the rungs are the last valid program. Open the project in Rung Studio and fix the list.</source>
         <translation>A(z) %1 egy Rung Studióban begépelt utasításlistát tartalmaz, amely nincs benne a programjában: a lista hibás volt a projekt mentésekor, és begépelt formájában a „pendingListing” kulcs alatt maradt meg; a létrafokok az utolsó érvényes programot tartalmazzák. Nyissa meg a projektet a Rung Studióban, és javítsa ki a listát.</translation>
     </message>
     <message>
-        <location line="+122"/>
+        <location line="+97"/>
         <location line="+27"/>
         <source>%1 has no model %2</source>
         <translation>a(z) %1 rendszernek nincs %2 modellje</translation>
@@ -1248,17 +1238,12 @@ Létradiagram- és utasításlista-szerkesztő a következő PLC-khez: %2.</tran
         <translation>A fájl nem nyitható meg</translation>
     </message>
     <message>
-        <location line="+30"/>
-        <source>Unknown target %1</source>
-        <translation>Ismeretlen célrendszer: %1</translation>
-    </message>
-    <message>
-        <location line="+30"/>
+        <location line="+49"/>
         <source>%1 has errors; the ladder follows once they are fixed</source>
         <translation>%1 hibás; a létradiagram a hibák javítása után követi</translation>
     </message>
     <message>
-        <location line="+33"/>
+        <location line="+35"/>
         <location filename="../app/gui/main_window_online.cpp" line="+80"/>
         <source>Cannot save</source>
         <translation>A mentés nem sikerült</translation>
@@ -1353,12 +1338,12 @@ Létradiagram- és utasításlista-szerkesztő a következő PLC-khez: %2.</tran
         <translation>Az exportálás nem sikerült</translation>
     </message>
     <message>
-        <location line="-208"/>
+        <location line="-209"/>
         <source>%1, line %2, column %3: %4</source>
         <translation>%1, %2. sor, %3. oszlop: %4</translation>
     </message>
     <message>
-        <location line="+129"/>
+        <location line="+130"/>
         <source>Rung Studio projects (*.rung);;Instruction lists (*.il *.txt);;Ladder texts (*.ladder)</source>
         <translation>Rung Studio projektek (*.rung);;Utasításlisták (*.il *.txt);;Létraszövegek (*.ladder)</translation>
     </message>
@@ -5640,6 +5625,21 @@ Kiértékelés: %4 µs (%5..%6)</translation>
         <location line="+6"/>
         <source>%1: saving failed (%2); the previous file is unchanged</source>
         <translation>%1: a mentés sikertelen (%2); az előző fájl változatlan</translation>
+    </message>
+    <message>
+        <location filename="../model/project/program_file.cpp" line="+36"/>
+        <source>unknown target %1 (%2)</source>
+        <translation>ismeretlen célrendszer: %1 (%2)</translation>
+    </message>
+    <message>
+        <location line="+1"/>
+        <source>%1: unknown target %2 (%3)</source>
+        <translation>%1: ismeretlen célrendszer: %2 (%3)</translation>
+    </message>
+    <message>
+        <location line="+13"/>
+        <source>%1 is a %2 project, not %3</source>
+        <translation>%1 egy %2 projekt, nem %3</translation>
     </message>
 </context>
 <context>

@@ -185,7 +185,7 @@ Codice di uscita: 0 nessun errore, 1 il programma contiene errori, 2 errore di u
         <translation>comando sconosciuto: %1</translation>
     </message>
     <message>
-        <location filename="../app/cli/cli_common.cpp" line="+102"/>
+        <location filename="../app/cli/cli_common.cpp" line="+101"/>
         <source>%1 needs a value</source>
         <translation>%1 richiede un valore</translation>
     </message>
@@ -195,38 +195,28 @@ Codice di uscita: 0 nessun errore, 1 il programma contiene errori, 2 errore di u
         <translation>nessun FILE specificato</translation>
     </message>
     <message>
-        <location line="+21"/>
+        <location line="+16"/>
         <source>--from must be il, ladder or project, not %1</source>
         <translation>--from deve essere il, ladder o project, non %1</translation>
     </message>
     <message>
         <location line="+14"/>
-        <source>%1 is a %2 project, not %3</source>
-        <translation>%1 è un progetto %2, non %3</translation>
-    </message>
-    <message>
-        <location line="+23"/>
         <source>%1: which PLC? Give --target %2 or a &quot;; target: NAME&quot; first line</source>
         <translation>%1: quale PLC? Specificare --target %2 oppure una prima riga &quot;; target: NAME&quot;</translation>
     </message>
     <message>
-        <location line="+6"/>
-        <source>unknown target %1 (%2)</source>
-        <translation>famiglia PLC sconosciuta: %1 (%2)</translation>
-    </message>
-    <message>
-        <location line="+65"/>
+        <location line="+74"/>
         <source>%1:rung %2:%3:%4</source>
         <extracomment>A finding&apos;s place on the ladder, after the file as a compiler writes file:line:column: %1 the file, %2 the rung&apos;s number, %3 the row, %4 the column. Keep the colons.</extracomment>
         <translation>%1:segmento %2:%3:%4</translation>
     </message>
     <message>
-        <location line="-179"/>
+        <location line="-154"/>
         <source>%1 holds an instruction list typed in Rung Studio that is not in its program: the list had errors when the project was saved, and is kept as typed under the key &quot;pendingListing&quot;; the rungs are the last valid program. Open the project in Rung Studio and fix the list.</source>
         <translation>%1 contiene una lista istruzioni digitata in Rung Studio che non è nel suo programma: la lista conteneva errori quando il progetto è stato salvato, ed è conservata così come digitata sotto la chiave &quot;pendingListing&quot;; i segmenti sono l&apos;ultimo programma valido. Aprire il progetto in Rung Studio e correggere la lista.</translation>
     </message>
     <message>
-        <location line="+122"/>
+        <location line="+97"/>
         <location line="+27"/>
         <source>%1 has no model %2</source>
         <translation>%1 non ha il modello %2</translation>
@@ -1250,17 +1240,12 @@ Editor di schemi ladder e liste istruzioni per %2.</translation>
         <translation>Impossibile aprire il file</translation>
     </message>
     <message>
-        <location line="+30"/>
-        <source>Unknown target %1</source>
-        <translation>Famiglia PLC sconosciuta: %1</translation>
-    </message>
-    <message>
-        <location line="+30"/>
+        <location line="+49"/>
         <source>%1 has errors; the ladder follows once they are fixed</source>
         <translation>%1 contiene errori; lo schema ladder si aggiorna quando sono corretti</translation>
     </message>
     <message>
-        <location line="+33"/>
+        <location line="+35"/>
         <location filename="../app/gui/main_window_online.cpp" line="+80"/>
         <source>Cannot save</source>
         <translation>Impossibile salvare</translation>
@@ -1355,12 +1340,12 @@ Editor di schemi ladder e liste istruzioni per %2.</translation>
         <translation>Impossibile esportare</translation>
     </message>
     <message>
-        <location line="-208"/>
+        <location line="-209"/>
         <source>%1, line %2, column %3: %4</source>
         <translation>%1, riga %2, colonna %3: %4</translation>
     </message>
     <message>
-        <location line="+129"/>
+        <location line="+130"/>
         <source>Rung Studio projects (*.rung);;Instruction lists (*.il *.txt);;Ladder texts (*.ladder)</source>
         <translation>Progetti Rung Studio (*.rung);;Liste istruzioni (*.il *.txt);;Testi ladder (*.ladder)</translation>
     </message>
@@ -5655,6 +5640,21 @@ Valutazione: %4 µs (%5..%6)</translation>
         <location line="+6"/>
         <source>%1: saving failed (%2); the previous file is unchanged</source>
         <translation>%1: salvataggio non riuscito (%2); il file precedente è invariato</translation>
+    </message>
+    <message>
+        <location filename="../model/project/program_file.cpp" line="+36"/>
+        <source>unknown target %1 (%2)</source>
+        <translation>famiglia PLC sconosciuta: %1 (%2)</translation>
+    </message>
+    <message>
+        <location line="+1"/>
+        <source>%1: unknown target %2 (%3)</source>
+        <translation>%1: famiglia PLC sconosciuta: %2 (%3)</translation>
+    </message>
+    <message>
+        <location line="+13"/>
+        <source>%1 is a %2 project, not %3</source>
+        <translation>%1 è un progetto %2, non %3</translation>
     </message>
 </context>
 <context>

@@ -4,11 +4,10 @@
 #include "model/convert/convert.h"
 #include "model/ladder/ladder_text.h"
 #include "model/project/file_read.h"
+#include "model/project/program_file.h"
 #include "model/target/target_lists.h"
 
 #include <QCoreApplication>
-#include <QFile>
-#include <QFileInfo>
 
 namespace rung::app {
 
@@ -132,66 +131,41 @@ bool parseCommonOptions(const QStringList &args, CommonOptions *options, QString
 
 bool loadInput(const CommonOptions &options, Input *input, QString *error) {
     input->file = options.file;
-    const QString suffix = QFileInfo(options.file).suffix().toLower();
-    QString from = options.from;
-    if (from.isEmpty())
-        from = suffix == QLatin1String(model::kProjectExtension) ? QStringLiteral("project")
-               : suffix == QLatin1String("ladder")               ? QStringLiteral("ladder")
-                                                                 : QStringLiteral("il");
-    if (from == QLatin1String("il"))
-        input->kind = InputKind::Listing;
-    else if (from == QLatin1String("ladder"))
-        input->kind = InputKind::Ladder;
-    else if (from == QLatin1String("project"))
-        input->kind = InputKind::Project;
-    else {
-        *error = Tr::tr("--from must be il, ladder or project, not %1").arg(from);
+    model::ProgramFileKind kind = model::programFileKind(options.file);
+    if (options.from == QLatin1String("il"))
+        kind = model::ProgramFileKind::Listing;
+    else if (options.from == QLatin1String("ladder"))
+        kind = model::ProgramFileKind::LadderText;
+    else if (options.from == QLatin1String("project"))
+        kind = model::ProgramFileKind::Project;
+    else if (!options.from.isEmpty()) {
+        *error = Tr::tr("--from must be il, ladder or project, not %1").arg(options.from);
         return false;
     }
-
+    input->kind = kind == model::ProgramFileKind::Project      ? InputKind::Project
+                  : kind == model::ProgramFileKind::LadderText ? InputKind::Ladder
+                                                               : InputKind::Listing;
+    model::ProgramFileOptions open;
+    open.target = options.target;
+    open.maxBytes = kMaxInputBytes;
+    std::optional<model::ProgramFile> file =
+        model::openProgramFile(options.file, kind, open, error);
+    if (!file)
+        return false;
+    if (!file->target) { // a listing that names no PLC: a script says which
+        *error = Tr::tr("%1: which PLC? Give --target %2 or a \"; target: NAME\" first line")
+                     .arg(options.file, model::targetIds().join(QLatin1Char('|')));
+        return false;
+    }
+    input->target = file->target;
+    input->text = file->text;
     if (input->kind == InputKind::Project) {
-        model::ProjectError pe;
-        auto project = model::loadProject(options.file, &pe);
-        if (!project) {
-            *error = pe.message;
-            return false;
-        }
-        input->project = *project;
-        input->target = project->target;
-        if (!options.target.isEmpty() && model::Target::byId(options.target) != project->target) {
-            *error = Tr::tr("%1 is a %2 project, not %3")
-                         .arg(options.file, project->target->id, options.target);
-            return false;
-        }
+        input->project = std::move(file->project);
         input->model =
-            input->target->model(options.model.isEmpty() ? project->model : options.model);
-        input->ladder = project->program;
+            input->target->model(options.model.isEmpty() ? input->project.model : options.model);
+        input->ladder = input->project.program;
     } else {
-        QByteArray bytes;
-        if (!readInputFile(options.file, &bytes, error))
-            return false;
-        input->text = QString::fromUtf8(bytes);
         const QString &text = input->text;
-        QString targetId = options.target;
-        if (targetId.isEmpty())
-            targetId = input->kind == InputKind::Ladder ? model::ladderTextTarget(text)
-                                                        : model::declaredTarget(text);
-        if (targetId.isEmpty() && input->kind == InputKind::Ladder) {
-            // No LADDER header names the PLC: the text is no ladder text, and the parser says so
-            // at 1:1 whatever the target.
-            targetId = model::Target::get(model::Target::families().front()).id;
-        }
-        if (targetId.isEmpty()) {
-            *error = Tr::tr("%1: which PLC? Give --target %2 or a \"; target: NAME\" first line")
-                         .arg(options.file, model::targetIds().join(QLatin1Char('|')));
-            return false;
-        }
-        input->target = model::Target::byId(targetId);
-        if (!input->target) {
-            *error = Tr::tr("unknown target %1 (%2)")
-                         .arg(targetId, model::targetIds().join(QStringLiteral(", ")));
-            return false;
-        }
         if (!options.model.isEmpty()) {
             input->model = input->target->model(options.model);
             if (!input->model) {
