@@ -355,6 +355,48 @@ void LadderPainter::paintContinuation(QPainter &p, QPointF at, int mark, int row
     p.restore();
 }
 
+void LadderPainter::paintLinks(QPainter &p, const model::Rung &rung, int row, double commentH,
+                               const RungOverlay *powered) const {
+    // Vertical links between this row and the next; a link on a block boundary shows at the
+    // end of one block and the start of the next.
+    if (row + 1 >= rung.rows)
+        return;
+    const int shown = m_m.shownColumns();
+    const int blocks = m_m.blocks(rung);
+    const auto drawLink = [&](int block, double x) {
+        const double y0 = wireY(commentH + (block * m_m.blockStride(rung) + row) * m_m.rowHeight);
+        p.drawLine(QPointF(snap(x, m_pen), y0), QPointF(snap(x, m_pen), y0 + m_m.rowHeight));
+    };
+    for (int c = 0; c <= rung.columns; ++c) {
+        if (!rung.link(row, c) || (powered && !powered->nodeOn(row, c)))
+            continue;
+        if (c == rung.columns) {
+            drawLink(blocks - 1, m_m.gutter + shown * m_m.cellWidth);
+            continue;
+        }
+        const int block = std::min(c / std::max(1, shown), blocks - 1);
+        drawLink(block, m_m.gutter + (c - block * shown) * m_m.cellWidth);
+        if (block > 0 && c == block * shown)
+            drawLink(block - 1, m_m.gutter + shown * m_m.cellWidth);
+    }
+}
+
+std::optional<QLineF> LadderPainter::outputWire(const model::Rung &rung, int row) const {
+    // From the last contact column to the output column the row is a wire when it has an
+    // output, so every output lines up at the right.
+    const bool linkedAtEnd =
+        rung.link(row, rung.columns) || (row > 0 && rung.link(row - 1, rung.columns));
+    const bool wiredToEnd =
+        rung.columns == 0 || rung.cell(row, rung.columns - 1).kind != model::CellKind::Empty;
+    if (!(rung.outputs[static_cast<std::size_t>(row)] || rung.coveredByBox(row) || linkedAtEnd) ||
+        !wiredToEnd)
+        return std::nullopt;
+    const QRectF outRect = outputRect(rung, row);
+    const double y = wireY(outRect.top());
+    const int endInBlock = rung.columns - (m_m.blocks(rung) - 1) * m_m.shownColumns();
+    return QLineF(QPointF(m_m.gutter + endInBlock * m_m.cellWidth, y), QPointF(outRect.left(), y));
+}
+
 void LadderPainter::paintRung(QPainter &p, QPointF origin, int index,
                               const RungDecorations &d) const {
     const model::Rung &rung = m_project.program.rungs[static_cast<std::size_t>(index)];
@@ -438,41 +480,13 @@ void LadderPainter::paintRung(QPainter &p, QPointF origin, int index,
                              d.overlay ? d.overlay->valueAt(r, c) : QString());
             }
         }
-        // Vertical links between this row and the next; a link on a block boundary shows at
-        // the end of one block and the start of the next.
         p.setPen(inkPen());
-        for (int c = 0; c <= rung.columns; ++c) {
-            if (r + 1 >= rung.rows || !rung.link(r, c))
-                continue;
-            auto drawLink = [&](int block, double x) {
-                const double y0 =
-                    wireY(commentH + (block * m_m.blockStride(rung) + r) * m_m.rowHeight);
-                p.drawLine(QPointF(snap(x, m_pen), y0),
-                           QPointF(snap(x, m_pen), y0 + m_m.rowHeight));
-            };
-            if (c == rung.columns) {
-                drawLink(blocks - 1, m_m.gutter + shown * m_m.cellWidth);
-                continue;
-            }
-            const int block = std::min(c / std::max(1, shown), blocks - 1);
-            drawLink(block, m_m.gutter + (c - block * shown) * m_m.cellWidth);
-            if (block > 0 && c == block * shown)
-                drawLink(block - 1, m_m.gutter + shown * m_m.cellWidth);
-        }
-        // From the last contact column to the output column the row is a wire when it has an
-        // output, so every output lines up at the right.
+        paintLinks(p, rung, r, commentH, nullptr);
         const auto &out = rung.outputs[static_cast<std::size_t>(r)];
         const QRectF outRect = outputRect(rung, r);
-        const double y = wireY(outRect.top());
-        const bool linkedAtEnd =
-            rung.link(r, rung.columns) || (r > 0 && rung.link(r - 1, rung.columns));
-        const bool wiredToEnd =
-            rung.columns == 0 || rung.cell(r, rung.columns - 1).kind != model::CellKind::Empty;
-        if ((out || rung.coveredByBox(r) || linkedAtEnd) && wiredToEnd) {
+        if (const std::optional<QLineF> wire = outputWire(rung, r)) {
             p.setPen(inkPen());
-            const int endInBlock = rung.columns - (blocks - 1) * shown;
-            p.drawLine(QPointF(m_m.gutter + endInBlock * m_m.cellWidth, y),
-                       QPointF(outRect.left(), y));
+            p.drawLine(*wire);
         }
         if (out && out->spec) {
             QRectF area = outRect;

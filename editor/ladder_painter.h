@@ -12,6 +12,7 @@
 #include <QPainter>
 
 #include <algorithm>
+#include <optional>
 #include <set>
 
 namespace rung::editor {
@@ -115,6 +116,11 @@ private:
     // `live`: the monitored value to show in the box under its instruction.
     void paintOutput(QPainter &p, const QRectF &area, const model::Instruction &ins,
                      const QString &live = QString()) const;
+    // The vertical links below `row` (those whose node is ON in `powered`; null: all).
+    void paintLinks(QPainter &p, const model::Rung &rung, int row, double commentH,
+                    const RungOverlay *powered) const;
+    // The wire from the row's last contact column to the output column, where it has one.
+    std::optional<QLineF> outputWire(const model::Rung &rung, int row) const;
     // The overlay over a painted rung (ladder_painter_overlay.cpp).
     void paintOverlay(QPainter &p, const model::Rung &rung, const RungOverlay &overlay) const;
     void paintContactState(QPainter &p, const QRectF &cell, const model::Contact &contact,

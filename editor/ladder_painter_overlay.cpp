@@ -202,8 +202,6 @@ void LadderPainter::paintOutputState(QPainter &p, const QRectF &area, const mode
 void LadderPainter::paintOverlay(QPainter &p, const model::Rung &rung, const RungOverlay &o) const {
     p.save();
     const double commentH = m_m.commentBlock(rung);
-    const int shown = m_m.shownColumns();
-    const int blocks = m_m.blocks(rung);
     const QPen live = livePen(o.stale);
     if (o.rail) {
         // The left rail beside the first block, heavier than the plain rail underneath.
@@ -226,41 +224,16 @@ void LadderPainter::paintOverlay(QPainter &p, const model::Rung &rung, const Run
                 paintContactState(p, rect, cell.contact, o, r, c);
             }
         }
-        // Vertical links carry the power of the node they join (as the plain painter places
-        // them, a link on a block boundary at both ends).
+        // Vertical links carry the power of the node they join.
         p.setPen(live);
-        for (int c = 0; c <= rung.columns; ++c) {
-            if (r + 1 >= rung.rows || !rung.link(r, c) || !o.nodeOn(r, c))
-                continue;
-            auto drawLink = [&](int block, double x) {
-                const double y0 =
-                    wireY(commentH + (block * m_m.blockStride(rung) + r) * m_m.rowHeight);
-                p.drawLine(QPointF(snap(x, m_pen), y0),
-                           QPointF(snap(x, m_pen), y0 + m_m.rowHeight));
-            };
-            if (c == rung.columns) {
-                drawLink(blocks - 1, m_m.gutter + shown * m_m.cellWidth);
-                continue;
-            }
-            const int block = std::min(c / std::max(1, shown), blocks - 1);
-            drawLink(block, m_m.gutter + (c - block * shown) * m_m.cellWidth);
-            if (block > 0 && c == block * shown)
-                drawLink(block - 1, m_m.gutter + shown * m_m.cellWidth);
-        }
+        paintLinks(p, rung, r, commentH, &o);
         // The wire from the last contact column to the output column.
         const auto &out = rung.outputs[static_cast<std::size_t>(r)];
         const QRectF outRect = outputRect(rung, r);
-        const bool linkedAtEnd =
-            rung.link(r, rung.columns) || (r > 0 && rung.link(r - 1, rung.columns));
-        const bool wiredToEnd =
-            rung.columns == 0 || rung.cell(r, rung.columns - 1).kind != model::CellKind::Empty;
-        if ((out || rung.coveredByBox(r) || linkedAtEnd) && wiredToEnd &&
-            o.nodeOn(r, rung.columns)) {
+        if (const std::optional<QLineF> wire = outputWire(rung, r);
+            wire && o.nodeOn(r, rung.columns)) {
             p.setPen(live);
-            const int endInBlock = rung.columns - (blocks - 1) * shown;
-            const double y = wireY(outRect.top());
-            p.drawLine(QPointF(m_m.gutter + endInBlock * m_m.cellWidth, y),
-                       QPointF(outRect.left(), y));
+            p.drawLine(*wire);
         }
         const RungOverlay::Output *state = o.output(r);
         if (out && out->spec && state) {
