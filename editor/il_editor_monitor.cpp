@@ -34,11 +34,8 @@ bool isDevice(const model::Operand &o) {
 } // namespace
 
 void IlEditor::setMonitorSource(model::MonitorSource *source) {
-    if (m_source == source)
+    if (!model::MonitorSource::switchSource(m_source, source, this))
         return;
-    if (m_source)
-        disconnect(m_source, nullptr, this, nullptr);
-    m_source = source;
     m_commands->setTarget(m_target);
     m_commands->setSource(source);
     m_painted.clear();

@@ -302,12 +302,7 @@ void IoPanel::setAllPushButtons(bool pushButtons) {
 }
 
 void IoPanel::setMonitorSource(model::MonitorSource *source) {
-    if (m_source != source) {
-        if (m_source) {
-            disconnect(m_source, nullptr, this, nullptr);
-            m_source->setWatched(this, {});
-        }
-        m_source = source;
+    if (model::MonitorSource::switchSource(m_source, source, this)) {
         if (source) {
             connect(source, &model::MonitorSource::snapshotChanged, this, &IoPanel::showValues);
             connect(source, &model::MonitorSource::commandFinished, this,

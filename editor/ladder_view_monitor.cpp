@@ -21,13 +21,8 @@
 namespace rung::editor {
 
 void LadderView::setMonitorSource(model::MonitorSource *source) {
-    if (m_source == source)
+    if (!model::MonitorSource::switchSource(m_source, source, this))
         return;
-    if (m_source) {
-        disconnect(m_source, nullptr, this, nullptr);
-        m_source->setWatched(this, {});
-    }
-    m_source = source;
     m_commands->setTarget(&m_document->target());
     m_commands->setSource(source);
     m_overlays.clear();

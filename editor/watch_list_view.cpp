@@ -74,13 +74,8 @@ WatchListView::WatchListView(Document *document, QWidget *parent)
 }
 
 void WatchListView::setMonitorSource(model::MonitorSource *source) {
-    if (m_source == source)
+    if (!model::MonitorSource::switchSource(m_source, source, this))
         return;
-    if (m_source) {
-        disconnect(m_source, nullptr, this, nullptr);
-        m_source->setWatched(this, {});
-    }
-    m_source = source;
     if (source) {
         connect(source, &model::MonitorSource::snapshotChanged, this, &WatchListView::showValues);
         connect(source, &model::MonitorSource::commandFinished, this,
