@@ -1,6 +1,7 @@
 #include "cli_record.h"
 
 #include "cli_port_options.h"
+#include "cli_stop_signals.h"
 
 #include "comms/driver/connection.h"
 #include "comms/driver/relay.h"
@@ -9,9 +10,6 @@
 #include <QCoreApplication>
 #include <QElapsedTimer>
 #include <QFile>
-
-#include <csignal>
-#include <ctime>
 
 namespace rung::app {
 
@@ -97,17 +95,7 @@ int runRecordCommand(const QStringList &args, QTextStream &out, QTextStream &err
         return 2;
     }
 
-    // SIGINT and SIGTERM are taken by this thread alone (sigtimedwait below), blocked before
-    // the relay's threads start so that they inherit the mask.
-    sigset_t stopSignals, previous;
-    sigemptyset(&stopSignals);
-    sigaddset(&stopSignals, SIGINT);
-    sigaddset(&stopSignals, SIGTERM);
-    pthread_sigmask(SIG_BLOCK, &stopSignals, &previous);
-    struct RestoreMask {
-        sigset_t mask;
-        ~RestoreMask() { pthread_sigmask(SIG_SETMASK, &mask, nullptr); }
-    } restore{previous};
+    StopSignals stopSignals; // before the relay's threads start, so that they inherit the mask
 
     comms::Relay relay(std::move(pc), std::move(plc));
     if (!relay.start(&error)) {
@@ -147,8 +135,7 @@ int runRecordCommand(const QStringList &args, QTextStream &out, QTextStream &err
     QElapsedTimer clock;
     clock.start();
     while (relay.running()) {
-        const timespec poll{0, 100'000'000};
-        if (sigtimedwait(&stopSignals, nullptr, &poll) > 0)
+        if (stopSignals.wait(100))
             break;
         drain();
         if (seconds > 0 && double(clock.elapsed()) >= seconds * 1000)

@@ -1,6 +1,7 @@
 #include "cli_serve.h"
 
 #include "cli_load_program.h"
+#include "cli_stop_signals.h"
 
 #include "app/virtual_plc/virtual_plc.h"
 #include "comms/driver/connection.h"
@@ -10,10 +11,7 @@
 
 #include <QCoreApplication>
 
-#include <csignal>
-#include <ctime>
 #include <mutex>
-#include <pthread.h>
 
 namespace rung::app {
 
@@ -173,17 +171,7 @@ int runServeCommand(const QStringList &args, QTextStream &out, QTextStream &err)
         return 2;
     }
 
-    // SIGINT and SIGTERM are taken by this thread alone (sigtimedwait below): blocked here
-    // before any thread starts, so every thread the virtual PLC makes inherits the mask.
-    sigset_t stopSignals, previous;
-    sigemptyset(&stopSignals);
-    sigaddset(&stopSignals, SIGINT);
-    sigaddset(&stopSignals, SIGTERM);
-    pthread_sigmask(SIG_BLOCK, &stopSignals, &previous);
-    struct RestoreMask {
-        sigset_t mask;
-        ~RestoreMask() { pthread_sigmask(SIG_SETMASK, &mask, nullptr); }
-    } restore{previous};
+    StopSignals stopSignals; // before any thread of the virtual PLC starts
 
     auto ending = std::make_shared<Ending>();
     slave.onFailure = [ending](const QString &message) {
@@ -225,8 +213,7 @@ int runServeCommand(const QStringList &args, QTextStream &out, QTextStream &err)
 
     QString failure;
     while (true) {
-        const timespec poll{0, 200'000'000};
-        if (sigtimedwait(&stopSignals, nullptr, &poll) > 0)
+        if (stopSignals.wait(200))
             break;
         std::lock_guard lock(ending->mutex);
         if (!ending->failure.isEmpty()) {
