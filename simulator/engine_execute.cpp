@@ -4,6 +4,7 @@
 #include "model/listing/structure.h"
 #include "model/target/address.h"
 #include "model/target/word_text.h"
+#include "simulator/tr.h"
 
 #include <QCoreApplication>
 
@@ -16,10 +17,6 @@
 namespace rung::simulator {
 
 namespace {
-
-struct Tr {
-    Q_DECLARE_TR_FUNCTIONS(rung::simulator::Engine)
-};
 
 // The compiler holds a program to these (model/listing/structure.h).
 static_assert(Engine::kBlockStack == model::kMaxOpenBlocks);
@@ -46,8 +43,8 @@ std::int32_t Engine::readBcdSet(const Step &s, std::size_t step) {
     if (decoded < 0) {
         setFlag(m_program->flags.error, true); // W353 TIM / CNT: "ER: SV is not in BCD"
         runtimeError(step,
-                     Tr::tr("set value %1 is not a BCD number; the instruction is "
-                            "skipped")
+                     EngineTr::tr("set value %1 is not a BCD number; the instruction is "
+                                  "skipped")
                          .arg(QString::number(static_cast<std::uint32_t>(raw) & 0xFFFFu, 16)));
         return -1;
     }
@@ -92,8 +89,8 @@ void Engine::wordLogic(const Step &s, std::size_t step) {
             // In the family's own words: a CPM1 user reads the word as #9999, not -26215.
             const model::Target &t = layout().target();
             runtimeError(
-                step, Tr::tr("%1 does not fit in BCD (0..%2); the destination is "
-                             "unchanged")
+                step, EngineTr::tr("%1 does not fit in BCD (0..%2); the destination is "
+                                   "unchanged")
                           .arg(s.width >= 32 ? QString::number(v) : model::formatWord(t, v),
                                s.width >= 32 ? QString::number(max) : model::formatWord(t, max)));
             return;
@@ -106,7 +103,7 @@ void Engine::wordLogic(const Step &s, std::size_t step) {
         if (v < 0 || (a & 0x80000000u)) {
             setFlag(m_program->flags.error, true); // W353 BIN(23): "ER: S is not BCD"
             runtimeError(step,
-                         Tr::tr("%1 is not a BCD number; the destination is unchanged")
+                         EngineTr::tr("%1 is not a BCD number; the destination is unchanged")
                              .arg(model::formatConstant(
                                  layout().target(), model::Constant{static_cast<qint64>(a),
                                                                     model::Constant::Style::Hex})));
@@ -124,8 +121,8 @@ void Engine::wordLogic(const Step &s, std::size_t step) {
 // Kept out of the scan loop: the message's temporaries would otherwise weigh on it.
 std::int64_t Engine::outOfDecimalRange(std::size_t step, std::int64_t value) {
     const std::int64_t wrapped = ((value % 10000) + 10000) % 10000;
-    runtimeError(step,
-                 Tr::tr("result %1 is outside 0..9999; %2 is written").arg(value).arg(wrapped));
+    runtimeError(
+        step, EngineTr::tr("result %1 is outside 0..9999; %2 is written").arg(value).arg(wrapped));
     return wrapped;
 }
 
@@ -549,8 +546,8 @@ std::size_t Engine::execute(std::size_t from, std::size_t to) {
             // SBS(91): run the subroutine from its SBN(92), come back after the SBS.
             if (acc && s.count >= 0) {
                 if (depth == kSubroutineDepth) {
-                    runtimeError(i, Tr::tr("subroutines nest deeper than %1 levels; the call "
-                                           "is skipped")
+                    runtimeError(i, EngineTr::tr("subroutines nest deeper than %1 levels; the call "
+                                                 "is skipped")
                                         .arg(kSubroutineDepth));
                     break;
                 }
@@ -637,7 +634,7 @@ std::size_t Engine::execute(std::size_t from, std::size_t to) {
                 const std::int64_t a = rdw(s.x);
                 const std::int64_t b = rdw(s.y);
                 if (b == 0) {
-                    runtimeError(i, Tr::tr("division by zero; the destination is unchanged"));
+                    runtimeError(i, EngineTr::tr("division by zero; the destination is unchanged"));
                     break;
                 }
                 wrw(s.dest, a / b, s.width);
@@ -693,7 +690,7 @@ std::size_t Engine::execute(std::size_t from, std::size_t to) {
                     break;
                 }
                 if (static_cast<MathOp>(s.op) == MathOp::Div && b == 0)
-                    runtimeError(i, Tr::tr("division by zero; the destination is unchanged"));
+                    runtimeError(i, EngineTr::tr("division by zero; the destination is unchanged"));
                 else
                     wrw(s.dest, r, s.width);
             }
@@ -734,9 +731,10 @@ std::size_t Engine::execute(std::size_t from, std::size_t to) {
             if (acc) {
                 const std::int32_t index = rdw(s.y);
                 if (index < 0 || index >= s.count) {
-                    runtimeError(i, Tr::tr("MOVIND index %1 is outside 0..%2; nothing is written")
-                                        .arg(index)
-                                        .arg(s.count - 1));
+                    runtimeError(
+                        i, EngineTr::tr("MOVIND index %1 is outside 0..%2; nothing is written")
+                               .arg(index)
+                               .arg(s.count - 1));
                     break;
                 }
                 wrw(s.dest + index, rdw(s.x), s.width);

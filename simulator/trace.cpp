@@ -2,6 +2,7 @@
 
 #include "model/image/scan_csv.h"
 #include "model/target/address.h"
+#include "simulator/tr.h"
 
 #include <QCoreApplication>
 #include <QRegularExpression>
@@ -13,15 +14,11 @@ namespace rung::simulator {
 
 namespace {
 
-struct Tr {
-    Q_DECLARE_TR_FUNCTIONS(rung::simulator::Trace)
-};
-
 bool device(const model::Target &target, const QString &text, model::Address *address,
             QString *error) {
     const auto parsed = model::parseAddress(target, text.trimmed());
     if (const auto *e = std::get_if<model::AddressError>(&parsed)) {
-        *error = Tr::tr("unknown device %1: %2").arg(text, e->message);
+        *error = TraceTr::tr("unknown device %1: %2").arg(text, e->message);
         return false;
     }
     *address = std::get<model::Address>(parsed);
@@ -50,8 +47,9 @@ bool parseTraceOptions(const model::Target &target, const QStringList &args, Tra
     for (qsizetype i = 0; i < args.size(); ++i) {
         const QString &a = args[i];
         if (i + 1 >= args.size() || !a.startsWith(QLatin1String("--"))) {
-            *error = a.startsWith(QLatin1String("--")) ? Tr::tr("%1 needs a value").arg(a)
-                                                       : Tr::tr("unexpected argument %1").arg(a);
+            *error = a.startsWith(QLatin1String("--"))
+                         ? TraceTr::tr("%1 needs a value").arg(a)
+                         : TraceTr::tr("unexpected argument %1").arg(a);
             return false;
         }
         const QString v = args[++i];
@@ -61,7 +59,7 @@ bool parseTraceOptions(const model::Target &target, const QStringList &args, Tra
             const bool scans = a == QLatin1String("--scans");
             const qint64 most = scans ? kMaxTraceScans : 1000000000;
             if (!ok || n < 1) {
-                *error = Tr::tr("%1 needs a whole number from 1 to %2, not \"%3\"")
+                *error = TraceTr::tr("%1 needs a whole number from 1 to %2, not \"%3\"")
                              .arg(a)
                              .arg(most)
                              .arg(v);
@@ -69,11 +67,11 @@ bool parseTraceOptions(const model::Target &target, const QStringList &args, Tra
             }
             if (n > most) {
                 // A trace prints a row per scan: an unbounded run would never end.
-                *error = scans ? Tr::tr("--scans %1 is more than the %2 scans one trace runs "
-                                        "(a row each); run it in parts")
+                *error = scans ? TraceTr::tr("--scans %1 is more than the %2 scans one trace runs "
+                                             "(a row each); run it in parts")
                                      .arg(v)
                                      .arg(most)
-                               : Tr::tr("--period %1 is more than %2 ms").arg(v).arg(most);
+                               : TraceTr::tr("--period %1 is more than %2 ms").arg(v).arg(most);
                 return false;
             }
             if (scans) {
@@ -85,7 +83,7 @@ bool parseTraceOptions(const model::Target &target, const QStringList &args, Tra
         } else if (a == QLatin1String("--set")) {
             const auto m = setRe.match(v);
             if (!m.hasMatch()) {
-                *error = Tr::tr("--set needs DEV=VALUE@SCAN, not \"%1\"").arg(v);
+                *error = TraceTr::tr("--set needs DEV=VALUE@SCAN, not \"%1\"").arg(v);
                 return false;
             }
             TraceStimulus s;
@@ -119,12 +117,12 @@ bool parseTraceOptions(const model::Target &target, const QStringList &args, Tra
                 request->columns.push_back(c);
             }
         } else {
-            *error = Tr::tr("unknown option %1").arg(a);
+            *error = TraceTr::tr("unknown option %1").arg(a);
             return false;
         }
     }
     if (!haveScans || request->columns.empty()) {
-        *error = Tr::tr("--scans and --trace are required");
+        *error = TraceTr::tr("--scans and --trace are required");
         return false;
     }
     // A stimulus after the last scan would never apply: said, not dropped.
@@ -133,8 +131,8 @@ bool parseTraceOptions(const model::Target &target, const QStringList &args, Tra
             const auto m = setRe.match(args[i + 1]);
             if (m.captured(3).toULongLong() >= request->scans) {
                 //: --set DEV=VALUE@N applies once N (%2) scans have run; %3 scans run
-                *error = Tr::tr("--set %1 comes after the last scan: it applies once %2 scans "
-                                "have run, and %3 run, so it would never apply")
+                *error = TraceTr::tr("--set %1 comes after the last scan: it applies once %2 scans "
+                                     "have run, and %3 run, so it would never apply")
                              .arg(args[i + 1])
                              .arg(m.captured(3).toULongLong())
                              .arg(request->scans);

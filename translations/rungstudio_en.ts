@@ -81,7 +81,7 @@
 <context>
     <name>rung::model::Checks</name>
     <message numerus="yes">
-        <location filename="../model/checks/checks_list.cpp" line="+250"/>
+        <location filename="../model/checks/checks_list.cpp" line="+248"/>
         <source>Stacked %1: %n blocks are open; an OR chain needs less stack</source>
         <translation>
             <numerusform>Stacked %1: %n block is open; an OR chain needs less stack</numerusform>
@@ -89,7 +89,7 @@
         </translation>
     </message>
     <message numerus="yes">
-        <location line="+98"/>
+        <location line="+102"/>
         <source>%n MPS left without MPP at the end of the rung</source>
         <translation>
             <numerusform>%n MPS left without MPP at the end of the rung</numerusform>
@@ -100,7 +100,7 @@
 <context>
     <name>rung::model::Convert</name>
     <message numerus="yes">
-        <location filename="../model/convert/convert_to_ladder.cpp" line="+312"/>
+        <location filename="../model/convert/convert_to_ladder.cpp" line="+310"/>
         <source>%1 needs two blocks, but %n is open</source>
         <translation>
             <numerusform>%1 needs two blocks, but %n is open</numerusform>
@@ -116,7 +116,7 @@
         </translation>
     </message>
     <message numerus="yes">
-        <location line="+97"/>
+        <location line="+100"/>
         <source>The rung starting on line %1 leaves %n MPS without MPP</source>
         <translation>
             <numerusform>The rung starting on line %1 leaves %n MPS without MPP</numerusform>

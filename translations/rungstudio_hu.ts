@@ -120,7 +120,7 @@
 <context>
     <name>rung::app::Cli</name>
     <message>
-        <location filename="../app/cli/cli.cpp" line="+54"/>
+        <location filename="../app/cli/cli.cpp" line="+51"/>
         <location line="+45"/>
         <source>unexpected argument %1</source>
         <translation>váratlan argumentum: %1</translation>
@@ -150,7 +150,7 @@ A FILE utasításlista (.il), létra-szöveg (.ladder) vagy projekt (.rung).
 Kilépési kód: 0 nincs hiba, 1 a programban hiba van, 2 használati vagy I/O hiba.</translation>
     </message>
     <message>
-        <location line="+91"/>
+        <location line="+92"/>
         <source>nothing written: the list as typed would be lost</source>
         <translation>semmi sem íródott ki: a begépelt lista elveszne</translation>
     </message>
@@ -185,7 +185,7 @@ Kilépési kód: 0 nincs hiba, 1 a programban hiba van, 2 használati vagy I/O h
         <translation>ismeretlen parancs: %1</translation>
     </message>
     <message>
-        <location filename="../app/cli/cli_common.cpp" line="+101"/>
+        <location filename="../app/cli/cli_common.cpp" line="+98"/>
         <source>%1 needs a value</source>
         <translation>%1 után érték kell</translation>
     </message>
@@ -237,7 +237,7 @@ Kilépési kód: 0 nincs hiba, 1 a programban hiba van, 2 használati vagy I/O h
         <translation>megjegyzés</translation>
     </message>
     <message>
-        <location filename="../app/cli/cli_language.cpp" line="+31"/>
+        <location filename="../app/cli/cli_language.cpp" line="+25"/>
         <source>--lang must be one of %1</source>
         <translation>a --lang értéke csak ezek egyike lehet: %1</translation>
     </message>
@@ -1802,7 +1802,7 @@ Létradiagram- és utasításlista-szerkesztő a következő PLC-khez: %2.</tran
 <context>
     <name>rung::app::Online</name>
     <message>
-        <location filename="../app/cli/cli_online.cpp" line="+20"/>
+        <location filename="../app/cli/cli_online.cpp" line="+17"/>
         <source>usage:</source>
         <translation>használat:</translation>
     </message>
@@ -1832,12 +1832,12 @@ Létradiagram- és utasításlista-szerkesztő a következő PLC-khez: %2.</tran
         <translation>ismeretlen protokoll: %1; lehet vigor, modbus, modbus-tcp vagy hostlink</translation>
     </message>
     <message>
-        <location line="+6"/>
+        <location line="+7"/>
         <source>give exactly one of --port, --tcp and --pty</source>
         <translation>a --port, a --tcp és a --pty közül pontosan egyet adjon meg</translation>
     </message>
     <message>
-        <location line="+4"/>
+        <location line="+5"/>
         <source>modbus-tcp needs --tcp HOST:PORT (for RTU frames on a port: modbus)</source>
         <translation>a modbus-tcp a --tcp HOST:PORT kapcsolót igényli (RTU keretekhez porton: modbus)</translation>
     </message>
@@ -1852,7 +1852,7 @@ Létradiagram- és utasításlista-szerkesztő a következő PLC-khez: %2.</tran
         <translation>%1 értéke %2 és %3 közötti szám legyen; kapott érték: %4</translation>
     </message>
     <message>
-        <location line="+16"/>
+        <location line="+17"/>
         <source>--frame must be data bits, parity and stop bits, e.g. 8N1 or 7E2; got %1</source>
         <translation>a --frame adatbitek, paritás és stopbitek megadása, pl. 8N1 vagy 7E2; kapott érték: %1</translation>
     </message>
@@ -1875,7 +1875,7 @@ Exit status of read and write: 0 done, 1 the PLC did not answer or refused, 2 us
 A read és a write kilépési kódja: 0 kész, 1 a PLC nem válaszolt vagy elutasította, 2 használati, operandus-, érték- vagy porthiba.</translation>
     </message>
     <message>
-        <location line="+69"/>
+        <location line="+70"/>
         <source>%1: write DEVICE=VALUE</source>
         <translation>%1: OPERANDUS=ÉRTÉK alakban adja meg</translation>
     </message>
@@ -1885,7 +1885,7 @@ A read és a write kilépési kódja: 0 kész, 1 a PLC nem válaszolt vagy eluta
         <translation>%1: a(z) %2 nem lehet %3 értéke (egy bit 0 vagy 1, ON vagy OFF; egy szó szám, hexadecimálisan 0x előtaggal)</translation>
     </message>
     <message>
-        <location line="+17"/>
+        <location line="+18"/>
         <source>note: %1</source>
         <translation>megjegyzés: %1</translation>
     </message>
@@ -1898,7 +1898,7 @@ A read és a write kilépési kódja: 0 kész, 1 a PLC nem válaszolt vagy eluta
 <context>
     <name>rung::app::PortOptions</name>
     <message>
-        <location filename="../app/cli/cli_port_options.cpp" line="+23"/>
+        <location filename="../app/cli/cli_port_options.cpp" line="+16"/>
         <source>unexpected argument %1</source>
         <translation>váratlan argumentum: %1</translation>
     </message>
@@ -1908,7 +1908,7 @@ A read és a write kilépési kódja: 0 kész, 1 a PLC nem válaszolt vagy eluta
         <translation>%1 után érték kell</translation>
     </message>
     <message>
-        <location line="+14"/>
+        <location line="+15"/>
         <source>--baud must be a number from 50 to 4000000; got %1</source>
         <translation>a --baud 50 és 4000000 közötti szám legyen; kapott érték: %1</translation>
     </message>
@@ -1972,7 +1972,7 @@ A read és a write kilépési kódja: 0 kész, 1 a PLC nem válaszolt vagy eluta
 <context>
     <name>rung::app::Record</name>
     <message>
-        <location filename="../app/cli/cli_record.cpp" line="+41"/>
+        <location filename="../app/cli/cli_record.cpp" line="+38"/>
         <source>  rungstudio-cli record --pc PORT --plc PORT [--baud B] [--frame 8N1] [-o FILE]
         [--seconds S]   (PORT: a serial port, a /dev/pts path, or pty for a new one)</source>
         <translation>  rungstudio-cli record --pc PORT --plc PORT [--baud B] [--frame 8N1] [-o FILE]
@@ -1989,7 +1989,7 @@ A read és a write kilépési kódja: 0 kész, 1 a PLC nem válaszolt vagy eluta
         <translation>a --pc és a --plc kell: az összekötendő két port</translation>
     </message>
     <message>
-        <location line="+8"/>
+        <location line="+9"/>
         <source>--seconds must be a positive number; got %1</source>
         <translation>a --seconds pozitív szám legyen; kapott érték: %1</translation>
     </message>
@@ -2186,7 +2186,7 @@ A read és a write kilépési kódja: 0 kész, 1 a PLC nem válaszolt vagy eluta
 <context>
     <name>rung::app::Serve</name>
     <message>
-        <location filename="../app/cli/cli_serve.cpp" line="+28"/>
+        <location filename="../app/cli/cli_serve.cpp" line="+25"/>
         <source>usage: rungstudio-cli serve FILE [--target T] [--model M] --protocol vigor|modbus|modbus-tcp|hostlink (--pty | --port NAME | --tcp HOST:PORT) [--station N] [--baud B] [--frame 8N1|7E1|7E2|...] [--period MS] [--fault bad-checksum|silent|wrong-station|garbage|truncated|split]</source>
         <translation>használat: rungstudio-cli serve FILE [--target T] [--model M] --protocol vigor|modbus|modbus-tcp|hostlink (--pty | --port NAME | --tcp HOST:PORT) [--station N] [--baud B] [--frame 8N1|7E1|7E2|...] [--period MS] [--fault bad-checksum|silent|wrong-station|garbage|truncated|split]</translation>
     </message>
@@ -2246,7 +2246,7 @@ A read és a write kilépési kódja: 0 kész, 1 a PLC nem válaszolt vagy eluta
         <translation>ismeretlen hibamód: %1 (%2)</translation>
     </message>
     <message>
-        <location line="+13"/>
+        <location line="+14"/>
         <source>%1 has no published protocol to serve (protocols.md)</source>
         <translation>a(z) %1 PLC-nek nincs nyilvános protokollja, amelyen kiszolgálható lenne (protocols.md)</translation>
     </message>
@@ -2269,7 +2269,7 @@ A read és a write kilépési kódja: 0 kész, 1 a PLC nem válaszolt vagy eluta
 <context>
     <name>rung::app::Simulate</name>
     <message>
-        <location filename="../app/cli/cli_simulate.cpp" line="+19"/>
+        <location filename="../app/cli/cli_simulate.cpp" line="+16"/>
         <source>usage: rungstudio-cli simulate FILE [--target T] [--model M] --scans N [--period MS] [--set DEV=VALUE@SCAN]... --trace DEV[,DEV...]
 FILE is a listing (.il), a ladder text (.ladder) or a project (.rung).</source>
         <translation>használat: rungstudio-cli simulate FÁJL [--target T] [--model M] --scans N [--period MS] [--set OPERANDUS=ÉRTÉK@CIKLUS]... --trace OPERANDUS[,OPERANDUS...]
@@ -2286,7 +2286,7 @@ A FÁJL utasításlista (.il), létradiagram-szöveg (.ladder) vagy projekt (.ru
         <translation>váratlan argumentum: %1</translation>
     </message>
     <message>
-        <location filename="../app/cli/cli_load_program.cpp" line="+50"/>
+        <location filename="../app/cli/cli_load_program.cpp" line="+47"/>
         <location line="+7"/>
         <location line="+33"/>
         <source>the program does not start</source>
@@ -2580,14 +2580,14 @@ Kiértékelés: %4 µs (%5..%6)</translation>
 <context>
     <name>rung::app::Terminal</name>
     <message>
-        <location filename="../app/cli/cli_terminal.cpp" line="+106"/>
+        <location filename="../app/cli/cli_terminal.cpp" line="+103"/>
         <source>  rungstudio-cli terminal --port PORT [--baud B] [--frame 8N1] [--wait MS]
         (each line of stdin: hex bytes, &quot;text\r&quot;, or a capture line)</source>
         <translation>  rungstudio-cli terminal --port PORT [--baud B] [--frame 8N1] [--wait MS]
         (a szabványos bemenet minden sora: hexa bájtok, &quot;szöveg\r&quot; vagy egy felvétel sora)</translation>
     </message>
     <message>
-        <location line="+8"/>
+        <location line="+9"/>
         <source>usage:</source>
         <translation>használat:</translation>
     </message>
@@ -2597,7 +2597,7 @@ Kiértékelés: %4 µs (%5..%6)</translation>
         <translation>a --port kell</translation>
     </message>
     <message>
-        <location line="+8"/>
+        <location line="+9"/>
         <source>--wait must be a number from 1 to 60000; got %1</source>
         <translation>a --wait 1 és 60000 közötti szám legyen; kapott érték: %1</translation>
     </message>
@@ -2610,18 +2610,18 @@ Kiértékelés: %4 µs (%5..%6)</translation>
 <context>
     <name>rung::app::VirtualPlc</name>
     <message>
-        <location filename="../app/virtual_plc/virtual_plc.cpp" line="+100"/>
+        <location filename="../app/virtual_plc/virtual_plc.cpp" line="+97"/>
         <location line="+10"/>
         <source>the virtual PLC is stopping</source>
         <translation>a virtuális PLC leáll</translation>
     </message>
     <message>
-        <location line="+35"/>
+        <location line="+36"/>
         <source>the simulation did not take the write within the time allowed</source>
         <translation>a szimuláció a megengedett időn belül nem hajtotta végre az írást</translation>
     </message>
     <message>
-        <location line="+70"/>
+        <location line="+71"/>
         <source>The virtual PLC needs a QCoreApplication for its simulation thread</source>
         <translation>A virtuális PLC szimulációs szálához QCoreApplication kell</translation>
     </message>
@@ -3421,8 +3421,8 @@ Kiértékelés: %4 µs (%5..%6)</translation>
 <context>
     <name>rung::comms::Relay</name>
     <message>
-        <location filename="../comms/driver/relay.cpp" line="+35"/>
-        <location line="+13"/>
+        <location filename="../comms/driver/relay.cpp" line="+32"/>
+        <location line="+14"/>
         <location line="+5"/>
         <source>the PC&apos;s side</source>
         <translation>a PC oldala</translation>
@@ -4513,12 +4513,12 @@ Kiértékelés: %4 µs (%5..%6)</translation>
 <context>
     <name>rung::model::Address</name>
     <message>
-        <location filename="../model/target/address.cpp" line="+140"/>
+        <location filename="../model/target/address.cpp" line="+137"/>
         <source>A device is missing</source>
         <translation>Hiányzik egy operandus</translation>
     </message>
     <message>
-        <location line="+13"/>
+        <location line="+14"/>
         <source>%1: a number is expected after %2</source>
         <translation>%1: %2 után szám kell</translation>
     </message>
@@ -4544,23 +4544,23 @@ Kiértékelés: %4 µs (%5..%6)</translation>
     </message>
     <message>
         <location line="+3"/>
-        <location line="+14"/>
+        <location line="+16"/>
         <source>%1: bit %2 is beyond 00..15</source>
         <translation>%1: a(z) %2 bit kívül esik a 00..15 tartományon</translation>
     </message>
     <message>
-        <location line="-9"/>
+        <location line="-10"/>
         <source>%1: unexpected &apos;%2&apos; after the device</source>
         <translation>%1: váratlan &apos;%2&apos; az operandus után</translation>
     </message>
     <message>
-        <location line="+48"/>
+        <location line="+49"/>
         <source>%1: %2 has no bit numbers</source>
         <translation>%1: a(z) %2 operandusnak nincsenek bitszámai</translation>
     </message>
     <message>
-        <location line="+3"/>
-        <location line="+27"/>
+        <location line="+4"/>
+        <location line="+28"/>
         <source>%1: %2 has no %3</source>
         <translation>%1: a(z) %2 típusnak nincsenek %3</translation>
     </message>
@@ -4571,22 +4571,22 @@ Kiértékelés: %4 µs (%5..%6)</translation>
         <translation>%1 kívül esik a(z) %2 %3 tartományán (%4)</translation>
     </message>
     <message>
-        <location line="-11"/>
+        <location line="-12"/>
         <source>%1 is beyond %2&apos;s %3</source>
         <translation>%1 kívül esik a(z) %2 %3 tartományán</translation>
     </message>
     <message>
-        <location line="+37"/>
+        <location line="+38"/>
         <source>A constant is missing</source>
         <translation>Hiányzik egy konstans</translation>
     </message>
     <message>
-        <location line="+23"/>
+        <location line="+22"/>
         <source>%1: %2 writes constants without K or H</source>
         <translation>%1: a(z) %2 a konstansokat K és H nélkül írja</translation>
     </message>
     <message>
-        <location line="+5"/>
+        <location line="+6"/>
         <source>write a constant as K (decimal) or H (hexadecimal)</source>
         <translation>a konstanst K (decimális) vagy H (hexadecimális) előtaggal kell írni</translation>
     </message>
@@ -4601,22 +4601,22 @@ Kiértékelés: %4 µs (%5..%6)</translation>
         <translation>a konstanst egyszerű számként kell írni (pl. 150)</translation>
     </message>
     <message>
-        <location line="+6"/>
+        <location line="+5"/>
         <source>%1: %2 has no # constants; %3</source>
         <translation>%1: a(z) %2 nem ismer # konstanst; %3</translation>
     </message>
     <message>
-        <location line="+3"/>
+        <location line="+4"/>
         <source>%1: %2</source>
         <translation>%1: %2</translation>
     </message>
     <message>
-        <location line="+126"/>
+        <location line="+128"/>
         <source>%1: both ends of a range must be devices of one kind (D0..D15)</source>
         <translation>%1: a tartomány mindkét vége azonos fajta operandus kell legyen (D0..D15)</translation>
     </message>
     <message>
-        <location line="+6"/>
+        <location line="+8"/>
         <source>%1: the range runs backwards</source>
         <translation>%1: a tartomány visszafelé halad</translation>
     </message>
@@ -4631,12 +4631,12 @@ Kiértékelés: %4 µs (%5..%6)</translation>
         <translation>%1: a PLC-nek nincs %2 operandusa ebben a tartományban</translation>
     </message>
     <message>
-        <location line="-148"/>
+        <location line="-152"/>
         <source>%1: digits are expected</source>
         <translation>%1: számjegyek kellenek</translation>
     </message>
     <message>
-        <location line="+13"/>
+        <location line="+14"/>
         <source>%1: &apos;%2&apos; is not a digit</source>
         <translation>%1: a(z) &apos;%2&apos; nem számjegy</translation>
     </message>
@@ -4649,7 +4649,7 @@ Kiértékelés: %4 µs (%5..%6)</translation>
 <context>
     <name>rung::model::Checks</name>
     <message>
-        <location filename="../model/checks/checks_ladder.cpp" line="+71"/>
+        <location filename="../model/checks/checks_ladder.cpp" line="+68"/>
         <source>Reverse current: power would cross an element right to left to reach row %1</source>
         <translation>Visszáram: az áram jobbról balra haladna át egy elemen, hogy elérje a(z) %1. sort</translation>
     </message>
@@ -4659,23 +4659,23 @@ Kiértékelés: %4 µs (%5..%6)</translation>
         <translation>A közös érintkező megkettőzése minden ágba</translation>
     </message>
     <message>
-        <location line="+13"/>
+        <location line="+12"/>
         <source>Open branch: row %1 is not connected to the left rail</source>
         <translation>Nyitott ág: a(z) %1. sor nincs a bal oldali gyűjtősínhez kötve</translation>
     </message>
     <message>
-        <location line="+12"/>
+        <location line="+14"/>
         <source>%1 has no condition: it is wired straight to the left rail</source>
         <translation>%1 feltétel nélküli: közvetlenül a bal oldali gyűjtősínre van kötve</translation>
     </message>
     <message>
-        <location line="+20"/>
+        <location line="+21"/>
         <source>%1 (row %2, column %3) is not on any path from the left rail to an output: the list leaves it out</source>
         <translation>%1 (%2. sor, %3. oszlop) nincs rajta egyetlen áramúton sem a bal oldali gyűjtősíntől egy kimenetig: a lista kihagyja</translation>
     </message>
     <message>
         <location line="+58"/>
-        <location filename="../model/checks/checks_list.cpp" line="+85"/>
+        <location filename="../model/checks/checks_list.cpp" line="+82"/>
         <source>Append %1</source>
         <translation>%1 hozzáfűzése a végére</translation>
     </message>
@@ -4695,14 +4695,14 @@ Kiértékelés: %4 µs (%5..%6)</translation>
         <translation>Halmozott %1: minden blokkot kapcsoljon %1-vel, amint elkészült</translation>
     </message>
     <message numerus="yes">
-        <location line="+3"/>
+        <location line="+4"/>
         <source>Stacked %1: %n blocks are open; an OR chain needs less stack</source>
         <translation>
             <numerusform>Halmozott %1: %n blokk nyitott; egy OR-lánc kevesebb vermet igényel</numerusform>
         </translation>
     </message>
     <message>
-        <location line="+7"/>
+        <location line="+8"/>
         <source>A single contact joined with %1 is simpler as %2</source>
         <translation>Egyetlen érintkező %1 kapcsolással egyszerűbb %2 formában</translation>
     </message>
@@ -4717,7 +4717,7 @@ Kiértékelés: %4 µs (%5..%6)</translation>
         <translation>Egy blokkal párhuzamos egyetlen operandus az alsó sorba való: előbb a blokk, majd egy OR, így elmarad a(z) %1</translation>
     </message>
     <message>
-        <location line="+3"/>
+        <location line="+5"/>
         <source>Contacts in series need no %1: each can follow the one before it as %2</source>
         <translation>Soros érintkezőkhöz nem kell %1: mindegyik %2 utasítással követheti az előzőt</translation>
     </message>
@@ -4732,12 +4732,12 @@ Kiértékelés: %4 µs (%5..%6)</translation>
         <translation>Az egyetlen operandus kerüljön a blokk alá, így elmarad a(z) %1</translation>
     </message>
     <message>
-        <location line="+4"/>
+        <location line="+3"/>
         <source>Join the contacts in series and drop the %1</source>
         <translation>Az érintkezők sorba kötése, így elmarad a(z) %1</translation>
     </message>
     <message>
-        <location line="+1"/>
+        <location line="+2"/>
         <source>Move the block to the front and drop the %1</source>
         <translation>A blokk kerüljön előre, így elmarad a(z) %1</translation>
     </message>
@@ -4757,7 +4757,7 @@ Kiértékelés: %4 µs (%5..%6)</translation>
         <translation>A saját érintkező nélküli kimenet az ág tetejére való, és nem kell hozzá %1</translation>
     </message>
     <message>
-        <location line="+5"/>
+        <location line="+6"/>
         <source>Put the output on top and drop the %1</source>
         <translation>A kimenet kerüljön felülre, így elmarad a(z) %1</translation>
     </message>
@@ -4769,18 +4769,18 @@ Kiértékelés: %4 µs (%5..%6)</translation>
         </translation>
     </message>
     <message>
-        <location line="+146"/>
+        <location line="+148"/>
         <source>%1 cannot be written: the program only reads it (%2)</source>
         <translation>%1 nem írható: a program csak olvassa (%2)</translation>
     </message>
     <message>
-        <location line="+56"/>
+        <location line="+58"/>
         <source>%1 is driven twice; a coil may be driven only once (the first is on line %2)</source>
         <translation>%1 kétszer van vezérelve; egy tekercs csak egyszer vezérelhető (az első a(z) %2. sorban)</translation>
     </message>
     <message>
         <location line="+10"/>
-        <location filename="../model/listing/structure.cpp" line="+20"/>
+        <location filename="../model/listing/structure.cpp" line="+19"/>
         <source>%1 (the PLC says &quot;%2&quot;)</source>
         <translation>%1 (a PLC üzenete: &quot;%2&quot;)</translation>
     </message>
@@ -4790,7 +4790,7 @@ Kiértékelés: %4 µs (%5..%6)</translation>
         <translation>%1 kétszer van vezérelve; egy tekercs csak egyszer vezérelhető (az első a(z) %2. létrafokon)</translation>
     </message>
     <message>
-        <location filename="../model/checks/checks_nesting.cpp" line="+58"/>
+        <location filename="../model/checks/checks_nesting.cpp" line="+51"/>
         <source>END is missing</source>
         <translation>Hiányzik az END</translation>
     </message>
@@ -4800,7 +4800,7 @@ Kiértékelés: %4 µs (%5..%6)</translation>
         <translation>Az END utáni utasítások sosem hajtódnak végre</translation>
     </message>
     <message>
-        <location filename="../model/listing/structure.cpp" line="+219"/>
+        <location filename="../model/listing/structure.cpp" line="+222"/>
         <source>IL inside IL: close the first with ILC</source>
         <translation>IL az IL-en belül: az elsőt zárja le ILC-vel</translation>
     </message>
@@ -4820,12 +4820,12 @@ Kiértékelés: %4 µs (%5..%6)</translation>
         <translation>Második %1 %2: több JMP osztozhat egy számon, de csak egy JME lehet</translation>
     </message>
     <message>
-        <location line="+7"/>
+        <location line="+8"/>
         <source>%1 %2 without a JMP before it</source>
         <translation>%1 %2 előtte lévő JMP nélkül</translation>
     </message>
     <message>
-        <location line="-217"/>
+        <location line="-221"/>
         <source>%1 cannot stand inside a step (STEP(08) .. STEP(08))</source>
         <translation>%1 nem állhat lépésen belül (STEP(08) .. STEP(08))</translation>
     </message>
@@ -4845,7 +4845,7 @@ Kiértékelés: %4 µs (%5..%6)</translation>
         <translation>%1 előtte álló %2 nélkül</translation>
     </message>
     <message>
-        <location line="+13"/>
+        <location line="+14"/>
         <source>%1 without a control bit ends the steps, but no step is open</source>
         <translation>A vezérlőbit nélküli %1 lezárja a lépéseket, de nincs nyitott lépés</translation>
     </message>
@@ -4855,7 +4855,7 @@ Kiértékelés: %4 µs (%5..%6)</translation>
         <translation>%1 a főprogram után és a szubrutinokon kívül áll: soha nem fut le</translation>
     </message>
     <message>
-        <location line="+7"/>
+        <location line="+8"/>
         <source>%1 %2 is not closed with %3</source>
         <translation>%1 %2 nincs lezárva %3 utasítással</translation>
     </message>
@@ -4865,7 +4865,7 @@ Kiértékelés: %4 µs (%5..%6)</translation>
         <translation>A lépések nincsenek lezárva vezérlőbit nélküli %1 utasítással</translation>
     </message>
     <message>
-        <location line="+5"/>
+        <location line="+6"/>
         <source>%1 %2: there is no %3 %2 before END</source>
         <translation>%1 %2: az END előtt nincs %3 %2</translation>
     </message>
@@ -4911,12 +4911,12 @@ Kiértékelés: %4 µs (%5..%6)</translation>
         <translation>A léptetőlánc nincs RET-tel lezárva</translation>
     </message>
     <message>
-        <location filename="../model/checks/checks_list.cpp" line="-93"/>
+        <location filename="../model/checks/checks_list.cpp" line="-96"/>
         <source>Set value %1 is out of range</source>
         <translation>A(z) %1 beállított érték tartományon kívül esik</translation>
     </message>
     <message>
-        <location line="+28"/>
+        <location line="+29"/>
         <source>%1 cannot be written: the PLC drives it (%2)</source>
         <translation>%1 nem írható: a PLC vezérli (%2)</translation>
     </message>
@@ -4931,12 +4931,12 @@ Kiértékelés: %4 µs (%5..%6)</translation>
         <translation>A(z) %1 szám időzítőként és számlálóként is használatban van; közös tartományuk van</translation>
     </message>
     <message>
-        <location line="+29"/>
+        <location line="+31"/>
         <source>%1 is driven twice; the later one wins (first on line %2)</source>
         <translation>%1 kétszer van vezérelve; a későbbi érvényesül (az első a(z) %2. sorban)</translation>
     </message>
     <message>
-        <location line="+15"/>
+        <location line="+16"/>
         <source>%1 is driven twice; the later one wins (first in rung %2)</source>
         <translation>%1 kétszer van vezérelve; a későbbi érvényesül (az első a(z) %2. létrafokon)</translation>
     </message>
@@ -4946,7 +4946,7 @@ Kiértékelés: %4 µs (%5..%6)</translation>
         <translation>A program %1 lépést igényel; a(z) %2 kapacitása %3</translation>
     </message>
     <message>
-        <location filename="../model/checks/operand_rules.cpp" line="+20"/>
+        <location filename="../model/checks/operand_rules.cpp" line="+17"/>
         <source>operand %1</source>
         <translation>%1. operandus</translation>
     </message>
@@ -4988,12 +4988,12 @@ Kiértékelés: %4 µs (%5..%6)</translation>
     </message>
     <message>
         <location line="-33"/>
-        <location line="+74"/>
+        <location line="+75"/>
         <source>%1 takes its %2 from %3 only, not %4</source>
         <translation>%1 a(z) %2 értékét csak ebből veszi: %3, nem ebből: %4</translation>
     </message>
     <message>
-        <location line="-66"/>
+        <location line="-67"/>
         <source>the %1 of %2 must be a device, not %3</source>
         <translation>a(z) %2 %1 operandus legyen, nem %3</translation>
     </message>
@@ -5018,7 +5018,7 @@ Kiértékelés: %4 µs (%5..%6)</translation>
         <translation>%1 egész szavakat mozgat: %2 nem lehet a(z) %3</translation>
     </message>
     <message>
-        <location line="+12"/>
+        <location line="+13"/>
         <source>%1 takes its %2 from a constant or from %3, not %4</source>
         <translation>%1 a(z) %2 értékét konstansból vagy ebből veszi: %3, nem ebből: %4</translation>
     </message>
@@ -5058,7 +5058,7 @@ Kiértékelés: %4 µs (%5..%6)</translation>
         <translation>a(z) %2 %1 bitcímezhető csatorna legyen (IR, HR, LR), nem %3</translation>
     </message>
     <message>
-        <location line="+13"/>
+        <location line="+14"/>
         <source>%1 %2 %3: the last device must be of the kind of the first and not before it</source>
         <translation>%1 %2 %3: az utolsó operandus az elsővel azonos fajtájú legyen, és ne előzze meg</translation>
     </message>
@@ -5073,7 +5073,7 @@ Kiértékelés: %4 µs (%5..%6)</translation>
         <translation>%1 nincs szimulálva: a szimulátorban nem csinál semmit</translation>
     </message>
     <message>
-        <location filename="../model/checks/checks_switched.cpp" line="+67"/>
+        <location filename="../model/checks/checks_switched.cpp" line="+64"/>
         <source>%1 runs only while %2 is ON, and no instruction sets %2</source>
         <translation>%1 csak akkor működik, amíg %2 BE, és egyetlen utasítás sem kapcsolja be: %2</translation>
     </message>
@@ -5083,7 +5083,7 @@ Kiértékelés: %4 µs (%5..%6)</translation>
         <translation>%1 áll, amíg %2 BE, és a(z) %3. sor írja: %2</translation>
     </message>
     <message>
-        <location filename="../model/checks/unmodelled.cpp" line="+56"/>
+        <location filename="../model/checks/unmodelled.cpp" line="+53"/>
         <source>%1 is not simulated: %2</source>
         <translation>%1 nincs szimulálva: %2</translation>
     </message>
@@ -5091,12 +5091,12 @@ Kiértékelés: %4 µs (%5..%6)</translation>
 <context>
     <name>rung::model::Convert</name>
     <message>
-        <location filename="../model/convert/convert_to_ladder.cpp" line="+219"/>
+        <location filename="../model/convert/convert_to_ladder.cpp" line="+216"/>
         <source>%1 joins the condition of a branch point in parallel with another block; the ladder cannot draw this: repeat the shared contacts in this branch instead</source>
         <translation>%1 egy elágazási pont feltételét párhuzamosan köti egy másik blokkal; ezt a létradiagram nem tudja megrajzolni: ismételje meg a közös érintkezőket ebben az ágban</translation>
     </message>
     <message>
-        <location line="+76"/>
+        <location line="+77"/>
         <source>%1 has no block to continue; start the rung with a load</source>
         <translation>%1 előtt nincs folytatható blokk; a létrafokot töltő (LD) utasítással kezdje</translation>
     </message>
@@ -5132,25 +5132,25 @@ Kiértékelés: %4 µs (%5..%6)</translation>
     </message>
     <message>
         <location line="+9"/>
-        <location filename="../model/convert/convert_to_list.cpp" line="+53"/>
+        <location filename="../model/convert/convert_to_list.cpp" line="+48"/>
         <source>%1 has an input with no condition</source>
         <translation>%1 egyik bemenetének nincs feltétele</translation>
     </message>
     <message>
-        <location line="+14"/>
-        <location line="+3"/>
-        <location line="+5"/>
-        <location filename="../model/convert/convert_to_list.cpp" line="+10"/>
+        <location line="+15"/>
+        <location line="+4"/>
+        <location line="+6"/>
+        <location filename="../model/convert/convert_to_list.cpp" line="+12"/>
         <source>%1 has no condition</source>
         <translation>%1 feltétel nélküli</translation>
     </message>
     <message>
-        <location line="-4"/>
+        <location line="-5"/>
         <source>%1 needs one block, but %2 are open</source>
         <translation>%1 egy blokkot igényel, de %2 nyitott</translation>
     </message>
     <message>
-        <location line="+38"/>
+        <location line="+39"/>
         <source>The rung starting on line %1 ends without an output</source>
         <translation>A(z) %1. sorban kezdődő létrafok kimenet nélkül ér véget</translation>
     </message>
@@ -5187,7 +5187,7 @@ Kiértékelés: %4 µs (%5..%6)</translation>
         <translation>Egy kimenetnek nincs feltétele</translation>
     </message>
     <message>
-        <location line="+96"/>
+        <location line="+97"/>
         <source>A branch reads a device that an earlier branch of the same rung writes, and %1 cannot hold this branch point (IL does not nest); draw the branches as separate rungs</source>
         <translation>Egy ág olyan operandust olvas, amelyet ugyanennek a létrafoknak egy korábbi ága ír, és a(z) %1 nem tudja megtartani ezt az elágazási pontot (az IL nem ágyazható egymásba); rajzolja az ágakat külön létrafokokként</translation>
     </message>
@@ -5197,12 +5197,12 @@ Kiértékelés: %4 µs (%5..%6)</translation>
         <translation>A több bemenetű funkcióblokknak egyedül kell állnia a létrafokán</translation>
     </message>
     <message>
-        <location line="+11"/>
+        <location line="+12"/>
         <source>Row %1 is not connected to the left rail</source>
         <translation>A(z) %1. sor nincs a bal oldali gyűjtősínhez kötve</translation>
     </message>
     <message>
-        <location line="+3"/>
+        <location line="+4"/>
         <source>Reverse current: the network feeding row %1 can only close through an element crossed right to left</source>
         <translation>Visszáram: a(z) %1. sort tápláló hálózat csak jobbról balra bejárt elemen át záródhat</translation>
     </message>
@@ -5326,22 +5326,22 @@ Kiértékelés: %4 µs (%5..%6)</translation>
         <translation>egy bit típusú operandus</translation>
     </message>
     <message>
-        <location filename="../model/listing/operand_text.cpp" line="+160"/>
+        <location filename="../model/listing/operand_text.cpp" line="+158"/>
         <source>%1: K%2 is no digit count here; K1..K%3 (groups of 4 bits) fit a word</source>
         <translation>%1: a K%2 itt nem számjegyszám; egy szóba K1..K%3 (4 bites csoportok) fér</translation>
     </message>
     <message>
-        <location line="+12"/>
+        <location line="+13"/>
         <source>%1: K%2 takes a bit device (the first of its bits), not %3</source>
         <translation>%1: a K%2 bit típusú operandust vár (az első bitjét), nem ezt: %3</translation>
     </message>
     <message>
-        <location line="+13"/>
+        <location line="+14"/>
         <source>%1 takes the %2 bits %3..%4, but %5 does not exist</source>
         <translation>%1 a(z) %3..%4 %2 bitet foglalja, de %5 nem létezik</translation>
     </message>
     <message>
-        <location line="+14"/>
+        <location line="+15"/>
         <source>%1: an index register cannot be indexed</source>
         <translation>%1: indexregiszter nem indexelhető</translation>
     </message>
@@ -5351,7 +5351,7 @@ Kiértékelés: %4 µs (%5..%6)</translation>
         <translation>%1: indexregiszter szót (D0E0, K4M0E0) és K konstanst módosít, nem a(z) %2 bitet</translation>
     </message>
     <message>
-        <location line="+12"/>
+        <location line="+14"/>
         <source>%1: index registers modify K constants, not %2</source>
         <translation>%1: indexregiszter K konstanst módosít, nem ezt: %2</translation>
     </message>
@@ -5372,12 +5372,12 @@ Kiértékelés: %4 µs (%5..%6)</translation>
 <context>
     <name>rung::model::LadderText</name>
     <message>
-        <location filename="../model/ladder/ladder_text.cpp" line="+197"/>
+        <location filename="../model/ladder/ladder_text.cpp" line="+195"/>
         <source>A ladder text starts with &quot;LADDER &lt;target&gt; WIDTH &lt;n&gt;&quot;</source>
         <translation>A létra-szöveg így kezdődik: &quot;LADDER &lt;target&gt; WIDTH &lt;n&gt;&quot;</translation>
     </message>
     <message>
-        <location line="+4"/>
+        <location line="+5"/>
         <source>This ladder is for %1, not %2</source>
         <translation>Ez a létradiagram a(z) %1 rendszerhez készült, nem a(z) %2 rendszerhez</translation>
     </message>
@@ -5392,8 +5392,8 @@ Kiértékelés: %4 µs (%5..%6)</translation>
         <translation>A várt forma: &quot;RUNG &lt;n&gt; ROWS &lt;rows&gt; COLUMNS &lt;columns&gt;&quot;</translation>
     </message>
     <message>
-        <location line="+17"/>
-        <location line="+8"/>
+        <location line="+18"/>
+        <location line="+9"/>
         <source>The rung has fewer rows than its header says</source>
         <translation>A létrafoknak kevesebb sora van, mint amennyit a fejléce megad</translation>
     </message>
@@ -5413,7 +5413,7 @@ Kiértékelés: %4 µs (%5..%6)</translation>
         <translation>A kimenetet zárójelben kell írni: (%1 %2)</translation>
     </message>
     <message>
-        <location line="+7"/>
+        <location line="+8"/>
         <source>(^) marks a further input of a box above it</source>
         <translation>A (^) a fölötte álló funkcióblokk további bemenetét jelöli</translation>
     </message>
@@ -5428,7 +5428,7 @@ Kiértékelés: %4 µs (%5..%6)</translation>
         <translation>&apos;~%1&apos;: az áramútelem jele ~, ~P vagy ~N</translation>
     </message>
     <message>
-        <location line="+13"/>
+        <location line="+14"/>
         <source>&apos;%1&apos; is not a contact mark (&apos; &apos;, &apos;/&apos;, &apos;P&apos;, &apos;N&apos;, &apos;~&apos;)</source>
         <translation>A(z) &apos;%1&apos; nem érintkezőjel (&apos; &apos;, &apos;/&apos;, &apos;P&apos;, &apos;N&apos;, &apos;~&apos;)</translation>
     </message>
@@ -5438,7 +5438,7 @@ Kiértékelés: %4 µs (%5..%6)</translation>
         <translation>Az érintkezőnek nincs operandusa</translation>
     </message>
     <message>
-        <location line="+18"/>
+        <location line="+19"/>
         <source>%1 is a word; a contact takes a bit device</source>
         <translation>%1 egy szó; az érintkező bit típusú operandust vár</translation>
     </message>
@@ -5451,27 +5451,27 @@ Kiértékelés: %4 µs (%5..%6)</translation>
 <context>
     <name>rung::model::Project</name>
     <message>
-        <location filename="../model/project/project.cpp" line="+110"/>
+        <location filename="../model/project/project.cpp" line="+108"/>
         <source>Line %1, column %2 (byte %3): the file is not valid JSON (%4)</source>
         <translation>%1. sor, %2. oszlop (%3. bájt): a fájl nem érvényes JSON (%4)</translation>
     </message>
     <message>
-        <location line="+8"/>
+        <location line="+7"/>
         <source>The file is JSON but not a Rung Studio project (no top-level object)</source>
         <translation>A fájl JSON, de nem Rung Studio projekt (nincs legfelső szintű objektum)</translation>
     </message>
     <message>
-        <location line="+4"/>
+        <location line="+5"/>
         <source>The file is JSON but not a Rung Studio project (&quot;format&quot; is not &quot;%1&quot;)</source>
         <translation>A fájl JSON, de nem Rung Studio projekt (a &quot;format&quot; nem &quot;%1&quot;)</translation>
     </message>
     <message>
-        <location line="+5"/>
+        <location line="+6"/>
         <source>The project was written by a newer Rung Studio (schema %1); this version reads schema %2 and older</source>
         <translation>A projektet egy újabb Rung Studio írta (%1. séma); ez a verzió a %2. és korábbi sémát olvassa</translation>
     </message>
     <message>
-        <location line="+5"/>
+        <location line="+6"/>
         <source>&quot;schema&quot; must be a positive number</source>
         <translation>A &quot;schema&quot; pozitív szám kell legyen</translation>
     </message>
@@ -5481,23 +5481,23 @@ Kiértékelés: %4 µs (%5..%6)</translation>
         <translation>&quot;target&quot;: ismeretlen PLC-család: &quot;%1&quot;</translation>
     </message>
     <message>
-        <location line="+5"/>
+        <location line="+4"/>
         <source>&quot;model&quot;: %1 has no model &quot;%2&quot;</source>
         <translation>&quot;model&quot;: a(z) %1 rendszernek nincs &quot;%2&quot; modellje</translation>
     </message>
     <message>
         <location line="+16"/>
-        <location line="+64"/>
+        <location line="+67"/>
         <source>%1: an object with &quot;device&quot; and &quot;name&quot; is expected</source>
         <translation>%1: &quot;device&quot; és &quot;name&quot; mezőket tartalmazó objektum a várt</translation>
     </message>
     <message>
-        <location line="-42"/>
+        <location line="-43"/>
         <source>setValues.%1: a whole number between -%2 and %2 is expected</source>
         <translation>setValues.%1: -%2 és %2 közötti egész szám a várt</translation>
     </message>
     <message>
-        <location line="+10"/>
+        <location line="+9"/>
         <source>%1: an object with &quot;name&quot; and &quot;devices&quot; is expected</source>
         <translation>%1: &quot;name&quot; és &quot;devices&quot; mezőket tartalmazó objektum a várt</translation>
     </message>
@@ -5507,7 +5507,7 @@ Kiértékelés: %4 µs (%5..%6)</translation>
         <translation>%1.devices[%2]: operandusnév a várt</translation>
     </message>
     <message>
-        <location line="+7"/>
+        <location line="+10"/>
         <source>%1.formats.%2: &quot;%3&quot; is no format (dec, signed, hex, bin, bcd)</source>
         <translation>%1.formats.%2: „%3” nem formátum (dec, signed, hex, bin, bcd)</translation>
     </message>
@@ -5542,12 +5542,12 @@ Kiértékelés: %4 µs (%5..%6)</translation>
         <translation>%1: a várt típus: %2</translation>
     </message>
     <message>
-        <location line="+100"/>
+        <location line="+104"/>
         <source>%1.outputs: [row, &quot;instruction&quot;] with a row inside the rung is expected</source>
         <translation>%1.outputs: [sor, &quot;utasítás&quot;] a várt forma, a létrafokon belüli sorral</translation>
     </message>
     <message>
-        <location line="+6"/>
+        <location line="+7"/>
         <source>%1.outputs: row %2 has two outputs</source>
         <translation>%1.outputs: a(z) %2. sornak két kimenete van</translation>
     </message>
@@ -5557,12 +5557,12 @@ Kiértékelés: %4 µs (%5..%6)</translation>
         <translation>%1.outputs: &quot;%2&quot; legfeljebb %3 bemeneti sort fogad, létrafokonként egy funkcióblokkot</translation>
     </message>
     <message>
-        <location line="+9"/>
+        <location line="+10"/>
         <source>%1.outputs: the input rows of &quot;%2&quot; start at its own row and go down inside the rung</source>
         <translation>%1.outputs: &quot;%2&quot; bemeneti sorai a saját sorától indulnak lefelé, a létrafokon belül</translation>
     </message>
     <message>
-        <location line="-119"/>
+        <location line="-125"/>
         <source>%1: a rung object is expected</source>
         <translation>%1: létrafok-objektum a várt</translation>
     </message>
@@ -5577,7 +5577,7 @@ Kiértékelés: %4 µs (%5..%6)</translation>
         <translation>%1.cells: %2 sor a várt, a fájlban %3 van</translation>
     </message>
     <message>
-        <location line="+8"/>
+        <location line="+9"/>
         <source>%1.cells[%2]: an array of cells is expected</source>
         <translation>%1.cells[%2]: cellák tömbje a várt</translation>
     </message>
@@ -5597,12 +5597,12 @@ Kiértékelés: %4 µs (%5..%6)</translation>
         <translation>%1.links: [%2, %3] a létrafokon kívül esik</translation>
     </message>
     <message>
-        <location line="+23"/>
+        <location line="+27"/>
         <source>one instruction is expected</source>
         <translation>egyetlen utasítás a várt</translation>
     </message>
     <message>
-        <location filename="../model/project/file_read.cpp" line="+18"/>
+        <location filename="../model/project/file_read.cpp" line="+13"/>
         <source>%1: cannot open the file (%2)</source>
         <translation>%1: a fájl nem nyitható meg (%2)</translation>
     </message>
@@ -5617,7 +5617,7 @@ Kiértékelés: %4 µs (%5..%6)</translation>
         <translation>%1: a fájl nagyobb %2 MB-nál, ennél többet a Rung Studio nem olvas be</translation>
     </message>
     <message>
-        <location filename="../model/project/project.cpp" line="+131"/>
+        <location filename="../model/project/project.cpp" line="+134"/>
         <source>%1: cannot write the file (%2)</source>
         <translation>%1: a fájl nem írható (%2)</translation>
     </message>
@@ -5627,7 +5627,7 @@ Kiértékelés: %4 µs (%5..%6)</translation>
         <translation>%1: a mentés sikertelen (%2); az előző fájl változatlan</translation>
     </message>
     <message>
-        <location filename="../model/project/program_file.cpp" line="+36"/>
+        <location filename="../model/project/program_file.cpp" line="+30"/>
         <source>unknown target %1 (%2)</source>
         <translation>ismeretlen célrendszer: %1 (%2)</translation>
     </message>
@@ -5689,7 +5689,7 @@ Kiértékelés: %4 µs (%5..%6)</translation>
     <message>
         <location line="+8"/>
         <location filename="../model/target/target_pl110.cpp" line="+5"/>
-        <location filename="../model/target/target_vigor.cpp" line="+123"/>
+        <location filename="../model/target/target_vigor.cpp" line="+125"/>
         <location filename="../model/target/target_vpc.cpp" line="+5"/>
         <source>counters</source>
         <translation>számlálók</translation>
@@ -6552,7 +6552,7 @@ Kiértékelés: %4 µs (%5..%6)</translation>
         <translation>Kijelzőparaméter elhelyezése</translation>
     </message>
     <message>
-        <location filename="../model/target/target_vigor.cpp" line="-456"/>
+        <location filename="../model/target/target_vigor.cpp" line="-458"/>
         <source>Compare contact: ON while S1 ? S2</source>
         <translation>Összehasonlító érintkező: BE, amíg S1 ? S2</translation>
     </message>
@@ -6585,7 +6585,7 @@ Kiértékelés: %4 µs (%5..%6)</translation>
         <translation>speciális relék</translation>
     </message>
     <message>
-        <location line="+4"/>
+        <location line="+5"/>
         <source>step relays</source>
         <translation>lépésrelék</translation>
     </message>
@@ -6615,7 +6615,7 @@ Kiértékelés: %4 µs (%5..%6)</translation>
         <translation>összegző időzítők (100 ms)</translation>
     </message>
     <message>
-        <location line="+5"/>
+        <location line="+6"/>
         <source>latched counters</source>
         <translation>remanens számlálók</translation>
     </message>
@@ -7140,7 +7140,7 @@ Kiértékelés: %4 µs (%5..%6)</translation>
 <context>
     <name>rung::model::Trigger</name>
     <message>
-        <location filename="../model/image/trigger.cpp" line="+42"/>
+        <location filename="../model/image/trigger.cpp" line="+39"/>
         <source>Type a condition: &quot;%1 rises&quot;, &quot;%1 falls&quot; or &quot;%2 &gt; 100&quot;</source>
         <translation>Írjon be egy feltételt: &quot;%1 rises&quot;, &quot;%1 falls&quot; vagy &quot;%2 &gt; 100&quot;</translation>
     </message>
@@ -7150,7 +7150,7 @@ Kiértékelés: %4 µs (%5..%6)</translation>
         <translation>„%1” nem egész szám (hexadecimális előtt 0x)</translation>
     </message>
     <message>
-        <location line="+2"/>
+        <location line="+3"/>
         <source>&quot;%1&quot; is no condition: write &quot;%2 rises&quot;, &quot;%2 falls&quot; or &quot;%3 &gt; 100&quot;</source>
         <translation>„%1” nem feltétel: írja így: &quot;%2 rises&quot;, &quot;%2 falls&quot; vagy &quot;%3 &gt; 100&quot;</translation>
     </message>
@@ -7163,7 +7163,7 @@ Kiértékelés: %4 µs (%5..%6)</translation>
 <context>
     <name>rung::model::ValueFormat</name>
     <message>
-        <location filename="../model/image/value_format.cpp" line="+46"/>
+        <location filename="../model/image/value_format.cpp" line="+43"/>
         <source>Decimal</source>
         <translation>Decimális</translation>
     </message>
@@ -7194,12 +7194,12 @@ Kiértékelés: %4 µs (%5..%6)</translation>
     </message>
     <message>
         <location line="+10"/>
-        <location line="+61"/>
+        <location line="+64"/>
         <source>Type a value</source>
         <translation>Írjon be egy értéket</translation>
     </message>
     <message>
-        <location line="-56"/>
+        <location line="-59"/>
         <source>%1 does not fit a %2-bit word (%3..%4)</source>
         <translation>%1 nem fér el egy %2 bites szóban (%3..%4)</translation>
     </message>
@@ -7209,7 +7209,7 @@ Kiértékelés: %4 µs (%5..%6)</translation>
         <translation>„%1” nem egész szám (hexadecimális előtt 0x)</translation>
     </message>
     <message>
-        <location line="+12"/>
+        <location line="+13"/>
         <source>&quot;%1&quot; is not a hexadecimal value of at most %2 digits</source>
         <translation>„%1” nem legfeljebb %2 jegyű hexadecimális érték</translation>
     </message>
@@ -7219,7 +7219,7 @@ Kiértékelés: %4 µs (%5..%6)</translation>
         <translation>„%1” nem legfeljebb %2 jegyű bináris érték</translation>
     </message>
     <message>
-        <location line="+14"/>
+        <location line="+16"/>
         <source>&quot;%1&quot; is not a BCD value: at most %2 decimal digits</source>
         <translation>„%1” nem BCD érték: legfeljebb %2 decimális számjegy</translation>
     </message>
@@ -7227,7 +7227,7 @@ Kiértékelés: %4 µs (%5..%6)</translation>
 <context>
     <name>rung::simulator::CommandInbox</name>
     <message>
-        <location filename="../simulator/command_inbox.cpp" line="+18"/>
+        <location filename="../simulator/command_inbox.cpp" line="+15"/>
         <source>(no device)</source>
         <translation>(nincs operandus)</translation>
     </message>
@@ -7237,7 +7237,7 @@ Kiértékelés: %4 µs (%5..%6)</translation>
         <translation>a módosított program más memóriafelosztású (másik PLC): nem veheti át a futó memóriaképet</translation>
     </message>
     <message>
-        <location line="+17"/>
+        <location line="+19"/>
         <source>%1 has no set value to write</source>
         <translation>%1 operandusnak nincs írható beállított értéke</translation>
     </message>
@@ -7247,7 +7247,7 @@ Kiértékelés: %4 µs (%5..%6)</translation>
         <translation>%1 nem olyan szó, amelyet ez a PLC írni tud</translation>
     </message>
     <message>
-        <location line="+1"/>
+        <location line="+2"/>
         <source>%1 is not a bit this PLC can write</source>
         <translation>%1 nem olyan bit, amelyet ez a PLC írni tud</translation>
     </message>
@@ -7255,12 +7255,12 @@ Kiértékelés: %4 µs (%5..%6)</translation>
 <context>
     <name>rung::simulator::Compiler</name>
     <message>
-        <location filename="../simulator/compiler_detail.h" line="+117"/>
+        <location filename="../simulator/compiler_detail.h" line="+114"/>
         <source>%1 needs operand %2</source>
         <translation>%1: hiányzik a(z) %2. operandus</translation>
     </message>
     <message>
-        <location filename="../simulator/compile_steps.cpp" line="+175"/>
+        <location filename="../simulator/compile_steps.cpp" line="+176"/>
         <location filename="../simulator/compiler_detail.h" line="+17"/>
         <source>%1 is not a bit device</source>
         <translation>%1 nem bit típusú operandus</translation>
@@ -7271,12 +7271,12 @@ Kiértékelés: %4 µs (%5..%6)</translation>
         <translation>a(z) %1 konstans tartományon kívül esik</translation>
     </message>
     <message>
-        <location filename="../simulator/compile_operands.cpp" line="+25"/>
+        <location filename="../simulator/compile_operands.cpp" line="+26"/>
         <source>%1 is not an index register</source>
         <translation>%1 nem indexregiszter</translation>
     </message>
     <message>
-        <location line="+6"/>
+        <location line="+7"/>
         <source>%1 is a constant; a device is expected here</source>
         <translation>%1 konstans; ide operandus kell</translation>
     </message>
@@ -7300,7 +7300,7 @@ Kiértékelés: %4 µs (%5..%6)</translation>
         <translation>%1 nem szó típusú operandus</translation>
     </message>
     <message>
-        <location filename="../simulator/compile_words.cpp" line="+30"/>
+        <location filename="../simulator/compile_words.cpp" line="+31"/>
         <location filename="../simulator/compiler_detail.h" line="+17"/>
         <source>%1 needs the next word too, which does not exist</source>
         <translation>%1 a következő szót is igényli, de az nem létezik</translation>
@@ -7311,7 +7311,7 @@ Kiértékelés: %4 µs (%5..%6)</translation>
         <translation>%1 szavak blokkját olvassa: %2 nem szó típusú operandus</translation>
     </message>
     <message>
-        <location filename="../simulator/compiler_detail.h" line="+30"/>
+        <location filename="../simulator/compiler_detail.h" line="+29"/>
         <source>%1 needs %2 open blocks before it</source>
         <translation>%1 előtt %2 nyitott blokk kell</translation>
     </message>
@@ -7336,7 +7336,7 @@ Kiértékelés: %4 µs (%5..%6)</translation>
         <translation>a szimulátor nem ismeri ezt a műveleti jelet: %1</translation>
     </message>
     <message>
-        <location line="+58"/>
+        <location line="+59"/>
         <source>%1 is not a number of words</source>
         <translation>%1 nem érvényes szószám</translation>
     </message>
@@ -7346,22 +7346,22 @@ Kiértékelés: %4 µs (%5..%6)</translation>
         <translation>%1 egy bitet igényel: bit típusú operandust, vagy egy szót és egy 0..15 bitszámot</translation>
     </message>
     <message>
-        <location filename="../simulator/compile_words.cpp" line="+9"/>
+        <location filename="../simulator/compile_words.cpp" line="+10"/>
         <source>%1 needs a count from 1 to %2</source>
         <translation>%1 darabszáma 1 és %2 között lehet</translation>
     </message>
     <message>
-        <location filename="../simulator/compile_steps.cpp" line="+43"/>
+        <location filename="../simulator/compile_steps.cpp" line="+45"/>
         <source>the block of %1 words runs past the end of its area</source>
         <translation>a(z) %1 szavas blokk túlnyúlik a terület végén</translation>
     </message>
     <message>
-        <location filename="../simulator/compiler.cpp" line="+163"/>
+        <location filename="../simulator/compiler.cpp" line="+164"/>
         <source>unknown instruction</source>
         <translation>ismeretlen utasítás</translation>
     </message>
     <message>
-        <location line="+20"/>
+        <location line="+21"/>
         <source>more than %1 nested %2</source>
         <translation>több mint %1 egymásba ágyazott %2</translation>
     </message>
@@ -7376,13 +7376,13 @@ Kiértékelés: %4 µs (%5..%6)</translation>
         <translation>%1 nem törölhető</translation>
     </message>
     <message>
-        <location filename="../simulator/compile_steps.cpp" line="-135"/>
+        <location filename="../simulator/compile_steps.cpp" line="-138"/>
         <location filename="../simulator/compiler.cpp" line="+5"/>
         <source>%1 is not a device</source>
         <translation>%1 nem operandus</translation>
     </message>
     <message>
-        <location filename="../simulator/compiler.cpp" line="+112"/>
+        <location filename="../simulator/compiler.cpp" line="+111"/>
         <source>the program has no target</source>
         <translation>a programnak nincs célrendszere</translation>
     </message>
@@ -7390,7 +7390,7 @@ Kiértékelés: %4 µs (%5..%6)</translation>
 <context>
     <name>rung::simulator::Engine</name>
     <message>
-        <location filename="../simulator/engine_execute.cpp" line="+49"/>
+        <location filename="../simulator/engine_execute.cpp" line="+46"/>
         <source>set value %1 is not a BCD number; the instruction is skipped</source>
         <translation>a(z) %1 beállított érték nem BCD szám; az utasítás kimarad</translation>
     </message>
@@ -7421,12 +7421,12 @@ Kiértékelés: %4 µs (%5..%6)</translation>
         <translation>osztás nullával; a cél változatlan marad</translation>
     </message>
     <message>
-        <location line="+41"/>
+        <location line="+42"/>
         <source>MOVIND index %1 is outside 0..%2; nothing is written</source>
         <translation>a MOVIND %1 indexe kívül esik a 0..%2 tartományon; nem íródik semmi</translation>
     </message>
     <message>
-        <location filename="../simulator/engine_cpm1.cpp" line="+45"/>
+        <location filename="../simulator/engine_cpm1.cpp" line="+43"/>
         <source>%1; the instruction is skipped and ER %2 is ON</source>
         <translation>%1; az utasítás nem fut le, és az ER %2 BE</translation>
     </message>
@@ -7441,23 +7441,23 @@ Kiértékelés: %4 µs (%5..%6)</translation>
         <translation>%1 nem BCD szám</translation>
     </message>
     <message>
-        <location line="+29"/>
+        <location line="+27"/>
         <source>bit designator %1 is not #DDSS with bits 00 to 15</source>
         <translation>a(z) %1 bitkijelölő szó nem #DDSS alakú, 00 és 15 közötti bitekkel</translation>
     </message>
     <message>
-        <location line="+18"/>
+        <location line="+17"/>
         <source>digit designator %1 is not #0DNS with digits 0 to 3</source>
         <translation>a(z) %1 számjegykijelölő szó nem #0DNS alakú, 0 és 3 közötti számjegyekkel</translation>
     </message>
     <message>
-        <location line="+73"/>
+        <location line="+74"/>
         <source>division by zero</source>
         <translation>osztás nullával</translation>
     </message>
     <message>
-        <location filename="../simulator/engine_debug.cpp" line="+40"/>
-        <location line="+11"/>
+        <location filename="../simulator/engine_debug.cpp" line="+36"/>
+        <location line="+13"/>
         <source>the program has no instruction %1 to stop at</source>
         <translation>a programnak nincs %1. utasítása, amelynél meg lehetne állni</translation>
     </message>
@@ -7478,7 +7478,7 @@ Kiértékelés: %4 µs (%5..%6)</translation>
         <translation>%1 nem figyelhető bit</translation>
     </message>
     <message>
-        <location filename="../simulator/engine_operands.cpp" line="+87"/>
+        <location filename="../simulator/engine_operands.cpp" line="+84"/>
         <source>operation error: %1 with %2 = %3 reaches %4, which does not exist; the instruction is not executed</source>
         <translation>műveleti hiba: %1, ahol %2 = %3, a nem létező %4 operandusra mutat; az utasítás nem hajtódik végre</translation>
     </message>
@@ -7488,7 +7488,7 @@ Kiértékelés: %4 µs (%5..%6)</translation>
         <translation>műveleti hiba: %1 a nem létező %2 operandusra mutat; az utasítás nem hajtódik végre</translation>
     </message>
     <message>
-        <location filename="../simulator/engine_words.cpp" line="+22"/>
+        <location filename="../simulator/engine_words.cpp" line="+15"/>
         <source>operation error: %1 bytes need %2 words from the source, past the end of its area; the instruction is not executed</source>
         <translation>műveleti hiba: %1 bájthoz %2 szó kell a forrástól, túl a terület végén; az utasítás nem hajtódik végre</translation>
     </message>
@@ -7496,24 +7496,24 @@ Kiértékelés: %4 µs (%5..%6)</translation>
 <context>
     <name>rung::simulator::HistorySource</name>
     <message>
-        <location filename="../simulator/history_source.cpp" line="+43"/>
+        <location filename="../simulator/history_source.cpp" line="+40"/>
         <source>History: scan %1 (%2)</source>
         <extracomment>the window&apos;s mark while it shows a past scan; %1 the scan, %2 its time h:mm:ss.cc</extracomment>
         <translation>Előzmények: %1. ciklus (%2)</translation>
     </message>
     <message>
         <location line="+15"/>
-        <location line="+27"/>
+        <location line="+29"/>
         <source>nothing is recorded yet: run the simulation first</source>
         <translation>még nincs semmi rögzítve: előbb futtassa a szimulációt</translation>
     </message>
     <message>
-        <location line="-17"/>
+        <location line="-18"/>
         <source>history is read-only: return to live to write, force or release</source>
         <translation>az előzmények csak olvashatók: íráshoz, kényszerítéshez vagy feloldáshoz térjen vissza az élő állapothoz</translation>
     </message>
     <message>
-        <location line="+24"/>
+        <location line="+26"/>
         <source>that scan is no longer recorded</source>
         <translation>az a ciklus már nincs rögzítve</translation>
     </message>
@@ -7521,7 +7521,7 @@ Kiértékelés: %4 µs (%5..%6)</translation>
 <context>
     <name>rung::simulator::SimulatorSession</name>
     <message>
-        <location filename="../simulator/session.cpp" line="+245"/>
+        <location filename="../simulator/session.cpp" line="+243"/>
         <source>Line %1: %2</source>
         <translation>%1. sor: %2</translation>
     </message>
@@ -7529,12 +7529,12 @@ Kiértékelés: %4 µs (%5..%6)</translation>
 <context>
     <name>rung::simulator::Trace</name>
     <message>
-        <location filename="../simulator/trace.cpp" line="+24"/>
+        <location filename="../simulator/trace.cpp" line="+21"/>
         <source>unknown device %1: %2</source>
         <translation>ismeretlen operandus: %1: %2</translation>
     </message>
     <message>
-        <location line="+29"/>
+        <location line="+30"/>
         <source>%1 needs a value</source>
         <translation>%1 után érték kell</translation>
     </message>

@@ -120,7 +120,7 @@
 <context>
     <name>rung::app::Cli</name>
     <message>
-        <location filename="../app/cli/cli.cpp" line="+54"/>
+        <location filename="../app/cli/cli.cpp" line="+51"/>
         <location line="+45"/>
         <source>unexpected argument %1</source>
         <translation>argomento non previsto: %1</translation>
@@ -150,7 +150,7 @@ FILE è una lista istruzioni (.il), un testo ladder (.ladder) o un progetto (.ru
 Codice di uscita: 0 nessun errore, 1 il programma contiene errori, 2 errore di utilizzo o di I/O.</translation>
     </message>
     <message>
-        <location line="+91"/>
+        <location line="+92"/>
         <source>nothing written: the list as typed would be lost</source>
         <translation>non è stato scritto nulla: la lista digitata andrebbe persa</translation>
     </message>
@@ -185,7 +185,7 @@ Codice di uscita: 0 nessun errore, 1 il programma contiene errori, 2 errore di u
         <translation>comando sconosciuto: %1</translation>
     </message>
     <message>
-        <location filename="../app/cli/cli_common.cpp" line="+101"/>
+        <location filename="../app/cli/cli_common.cpp" line="+98"/>
         <source>%1 needs a value</source>
         <translation>%1 richiede un valore</translation>
     </message>
@@ -237,7 +237,7 @@ Codice di uscita: 0 nessun errore, 1 il programma contiene errori, 2 errore di u
         <translation>nota</translation>
     </message>
     <message>
-        <location filename="../app/cli/cli_language.cpp" line="+31"/>
+        <location filename="../app/cli/cli_language.cpp" line="+25"/>
         <source>--lang must be one of %1</source>
         <translation>--lang deve essere uno tra %1</translation>
     </message>
@@ -1807,7 +1807,7 @@ Editor di schemi ladder e liste istruzioni per %2.</translation>
 <context>
     <name>rung::app::Online</name>
     <message>
-        <location filename="../app/cli/cli_online.cpp" line="+20"/>
+        <location filename="../app/cli/cli_online.cpp" line="+17"/>
         <source>usage:</source>
         <translation>uso:</translation>
     </message>
@@ -1837,12 +1837,12 @@ Editor di schemi ladder e liste istruzioni per %2.</translation>
         <translation>protocollo sconosciuto %1: vigor, modbus, modbus-tcp o hostlink</translation>
     </message>
     <message>
-        <location line="+6"/>
+        <location line="+7"/>
         <source>give exactly one of --port, --tcp and --pty</source>
         <translation>indicare esattamente uno tra --port, --tcp e --pty</translation>
     </message>
     <message>
-        <location line="+4"/>
+        <location line="+5"/>
         <source>modbus-tcp needs --tcp HOST:PORT (for RTU frames on a port: modbus)</source>
         <translation>modbus-tcp richiede --tcp HOST:PORTA (per frame RTU su una porta: modbus)</translation>
     </message>
@@ -1857,7 +1857,7 @@ Editor di schemi ladder e liste istruzioni per %2.</translation>
         <translation>%1 deve essere un numero da %2 a %3; ricevuto %4</translation>
     </message>
     <message>
-        <location line="+16"/>
+        <location line="+17"/>
         <source>--frame must be data bits, parity and stop bits, e.g. 8N1 or 7E2; got %1</source>
         <translation>--frame indica bit di dati, parità e bit di stop, ad es. 8N1 o 7E2; ricevuto %1</translation>
     </message>
@@ -1880,7 +1880,7 @@ Exit status of read and write: 0 done, 1 the PLC did not answer or refused, 2 us
 Codice di uscita di read e write: 0 fatto, 1 il PLC non ha risposto o ha rifiutato, 2 errore di uso, di operando, di valore o di porta.</translation>
     </message>
     <message>
-        <location line="+69"/>
+        <location line="+70"/>
         <source>%1: write DEVICE=VALUE</source>
         <translation>%1: scrivere OPERANDO=VALORE</translation>
     </message>
@@ -1890,7 +1890,7 @@ Codice di uscita di read e write: 0 fatto, 1 il PLC non ha risposto o ha rifiuta
         <translation>%1: %2 non è un valore per %3 (un bit vale 0 o 1, ON o OFF; una word un numero, 0x per l&apos;esadecimale)</translation>
     </message>
     <message>
-        <location line="+17"/>
+        <location line="+18"/>
         <source>note: %1</source>
         <translation>nota: %1</translation>
     </message>
@@ -1903,7 +1903,7 @@ Codice di uscita di read e write: 0 fatto, 1 il PLC non ha risposto o ha rifiuta
 <context>
     <name>rung::app::PortOptions</name>
     <message>
-        <location filename="../app/cli/cli_port_options.cpp" line="+23"/>
+        <location filename="../app/cli/cli_port_options.cpp" line="+16"/>
         <source>unexpected argument %1</source>
         <translation>argomento inatteso %1</translation>
     </message>
@@ -1913,7 +1913,7 @@ Codice di uscita di read e write: 0 fatto, 1 il PLC non ha risposto o ha rifiuta
         <translation>%1 richiede un valore</translation>
     </message>
     <message>
-        <location line="+14"/>
+        <location line="+15"/>
         <source>--baud must be a number from 50 to 4000000; got %1</source>
         <translation>--baud deve essere un numero da 50 a 4000000; ricevuto %1</translation>
     </message>
@@ -1977,7 +1977,7 @@ Codice di uscita di read e write: 0 fatto, 1 il PLC non ha risposto o ha rifiuta
 <context>
     <name>rung::app::Record</name>
     <message>
-        <location filename="../app/cli/cli_record.cpp" line="+41"/>
+        <location filename="../app/cli/cli_record.cpp" line="+38"/>
         <source>  rungstudio-cli record --pc PORT --plc PORT [--baud B] [--frame 8N1] [-o FILE]
         [--seconds S]   (PORT: a serial port, a /dev/pts path, or pty for a new one)</source>
         <translation>  rungstudio-cli record --pc PORT --plc PORT [--baud B] [--frame 8N1] [-o FILE]
@@ -1994,7 +1994,7 @@ Codice di uscita di read e write: 0 fatto, 1 il PLC non ha risposto o ha rifiuta
         <translation>servono --pc e --plc: le due porte da collegare</translation>
     </message>
     <message>
-        <location line="+8"/>
+        <location line="+9"/>
         <source>--seconds must be a positive number; got %1</source>
         <translation>--seconds deve essere un numero positivo; ricevuto %1</translation>
     </message>
@@ -2191,7 +2191,7 @@ Codice di uscita di read e write: 0 fatto, 1 il PLC non ha risposto o ha rifiuta
 <context>
     <name>rung::app::Serve</name>
     <message>
-        <location filename="../app/cli/cli_serve.cpp" line="+28"/>
+        <location filename="../app/cli/cli_serve.cpp" line="+25"/>
         <source>usage: rungstudio-cli serve FILE [--target T] [--model M] --protocol vigor|modbus|modbus-tcp|hostlink (--pty | --port NAME | --tcp HOST:PORT) [--station N] [--baud B] [--frame 8N1|7E1|7E2|...] [--period MS] [--fault bad-checksum|silent|wrong-station|garbage|truncated|split]</source>
         <translation>uso: rungstudio-cli serve FILE [--target T] [--model M] --protocol vigor|modbus|modbus-tcp|hostlink (--pty | --port NAME | --tcp HOST:PORT) [--station N] [--baud B] [--frame 8N1|7E1|7E2|...] [--period MS] [--fault bad-checksum|silent|wrong-station|garbage|truncated|split]</translation>
     </message>
@@ -2251,7 +2251,7 @@ Codice di uscita di read e write: 0 fatto, 1 il PLC non ha risposto o ha rifiuta
         <translation>guasto sconosciuto %1 (%2)</translation>
     </message>
     <message>
-        <location line="+13"/>
+        <location line="+14"/>
         <source>%1 has no published protocol to serve (protocols.md)</source>
         <translation>%1 non ha un protocollo pubblicato da servire (protocols.md)</translation>
     </message>
@@ -2274,7 +2274,7 @@ Codice di uscita di read e write: 0 fatto, 1 il PLC non ha risposto o ha rifiuta
 <context>
     <name>rung::app::Simulate</name>
     <message>
-        <location filename="../app/cli/cli_simulate.cpp" line="+19"/>
+        <location filename="../app/cli/cli_simulate.cpp" line="+16"/>
         <source>usage: rungstudio-cli simulate FILE [--target T] [--model M] --scans N [--period MS] [--set DEV=VALUE@SCAN]... --trace DEV[,DEV...]
 FILE is a listing (.il), a ladder text (.ladder) or a project (.rung).</source>
         <translation>uso: rungstudio-cli simulate FILE [--target T] [--model M] --scans N [--period MS] [--set OPERANDO=VALORE@SCANSIONE]... --trace OPERANDO[,OPERANDO...]
@@ -2291,7 +2291,7 @@ FILE è una lista istruzioni (.il), un testo ladder (.ladder) o un progetto (.ru
         <translation>argomento non previsto: %1</translation>
     </message>
     <message>
-        <location filename="../app/cli/cli_load_program.cpp" line="+50"/>
+        <location filename="../app/cli/cli_load_program.cpp" line="+47"/>
         <location line="+7"/>
         <location line="+33"/>
         <source>the program does not start</source>
@@ -2586,14 +2586,14 @@ Valutazione: %4 µs (%5..%6)</translation>
 <context>
     <name>rung::app::Terminal</name>
     <message>
-        <location filename="../app/cli/cli_terminal.cpp" line="+106"/>
+        <location filename="../app/cli/cli_terminal.cpp" line="+103"/>
         <source>  rungstudio-cli terminal --port PORT [--baud B] [--frame 8N1] [--wait MS]
         (each line of stdin: hex bytes, &quot;text\r&quot;, or a capture line)</source>
         <translation>  rungstudio-cli terminal --port PORT [--baud B] [--frame 8N1] [--wait MS]
         (ogni riga dello standard input: byte esadecimali, &quot;testo\r&quot; o una riga di una cattura)</translation>
     </message>
     <message>
-        <location line="+8"/>
+        <location line="+9"/>
         <source>usage:</source>
         <translation>uso:</translation>
     </message>
@@ -2603,7 +2603,7 @@ Valutazione: %4 µs (%5..%6)</translation>
         <translation>serve --port</translation>
     </message>
     <message>
-        <location line="+8"/>
+        <location line="+9"/>
         <source>--wait must be a number from 1 to 60000; got %1</source>
         <translation>--wait deve essere un numero da 1 a 60000; ricevuto %1</translation>
     </message>
@@ -2616,18 +2616,18 @@ Valutazione: %4 µs (%5..%6)</translation>
 <context>
     <name>rung::app::VirtualPlc</name>
     <message>
-        <location filename="../app/virtual_plc/virtual_plc.cpp" line="+100"/>
+        <location filename="../app/virtual_plc/virtual_plc.cpp" line="+97"/>
         <location line="+10"/>
         <source>the virtual PLC is stopping</source>
         <translation>il PLC virtuale si sta arrestando</translation>
     </message>
     <message>
-        <location line="+35"/>
+        <location line="+36"/>
         <source>the simulation did not take the write within the time allowed</source>
         <translation>la simulazione non ha eseguito la scrittura entro il tempo consentito</translation>
     </message>
     <message>
-        <location line="+70"/>
+        <location line="+71"/>
         <source>The virtual PLC needs a QCoreApplication for its simulation thread</source>
         <translation>Il PLC virtuale richiede una QCoreApplication per il thread di simulazione</translation>
     </message>
@@ -3427,8 +3427,8 @@ Valutazione: %4 µs (%5..%6)</translation>
 <context>
     <name>rung::comms::Relay</name>
     <message>
-        <location filename="../comms/driver/relay.cpp" line="+35"/>
-        <location line="+13"/>
+        <location filename="../comms/driver/relay.cpp" line="+32"/>
+        <location line="+14"/>
         <location line="+5"/>
         <source>the PC&apos;s side</source>
         <translation>il lato PC</translation>
@@ -4521,12 +4521,12 @@ Valutazione: %4 µs (%5..%6)</translation>
 <context>
     <name>rung::model::Address</name>
     <message>
-        <location filename="../model/target/address.cpp" line="+140"/>
+        <location filename="../model/target/address.cpp" line="+137"/>
         <source>A device is missing</source>
         <translation>Manca un operando</translation>
     </message>
     <message>
-        <location line="+13"/>
+        <location line="+14"/>
         <source>%1: a number is expected after %2</source>
         <translation>%1: dopo %2 è atteso un numero</translation>
     </message>
@@ -4552,23 +4552,23 @@ Valutazione: %4 µs (%5..%6)</translation>
     </message>
     <message>
         <location line="+3"/>
-        <location line="+14"/>
+        <location line="+16"/>
         <source>%1: bit %2 is beyond 00..15</source>
         <translation>%1: il bit %2 è oltre 00..15</translation>
     </message>
     <message>
-        <location line="-9"/>
+        <location line="-10"/>
         <source>%1: unexpected &apos;%2&apos; after the device</source>
         <translation>%1: &apos;%2&apos; inatteso dopo l&apos;operando</translation>
     </message>
     <message>
-        <location line="+48"/>
+        <location line="+49"/>
         <source>%1: %2 has no bit numbers</source>
         <translation>%1: %2 non ha numeri di bit</translation>
     </message>
     <message>
-        <location line="+3"/>
-        <location line="+27"/>
+        <location line="+4"/>
+        <location line="+28"/>
         <source>%1: %2 has no %3</source>
         <translation>%1: %2 non ha %3</translation>
     </message>
@@ -4579,22 +4579,22 @@ Valutazione: %4 µs (%5..%6)</translation>
         <translation>%1 è fuori campo (%3 di %2: %4)</translation>
     </message>
     <message>
-        <location line="-11"/>
+        <location line="-12"/>
         <source>%1 is beyond %2&apos;s %3</source>
         <translation>%1 è fuori campo (%3 di %2)</translation>
     </message>
     <message>
-        <location line="+37"/>
+        <location line="+38"/>
         <source>A constant is missing</source>
         <translation>Manca una costante</translation>
     </message>
     <message>
-        <location line="+23"/>
+        <location line="+22"/>
         <source>%1: %2 writes constants without K or H</source>
         <translation>%1: %2 scrive le costanti senza K o H</translation>
     </message>
     <message>
-        <location line="+5"/>
+        <location line="+6"/>
         <source>write a constant as K (decimal) or H (hexadecimal)</source>
         <translation>scrivere una costante come K (decimale) o H (esadecimale)</translation>
     </message>
@@ -4609,22 +4609,22 @@ Valutazione: %4 µs (%5..%6)</translation>
         <translation>scrivere una costante come numero semplice (ad es. 150)</translation>
     </message>
     <message>
-        <location line="+6"/>
+        <location line="+5"/>
         <source>%1: %2 has no # constants; %3</source>
         <translation>%1: %2 non ha costanti con #; %3</translation>
     </message>
     <message>
-        <location line="+3"/>
+        <location line="+4"/>
         <source>%1: %2</source>
         <translation>%1: %2</translation>
     </message>
     <message>
-        <location line="+126"/>
+        <location line="+128"/>
         <source>%1: both ends of a range must be devices of one kind (D0..D15)</source>
         <translation>%1: entrambi gli estremi di un intervallo devono essere operandi dello stesso tipo (D0..D15)</translation>
     </message>
     <message>
-        <location line="+6"/>
+        <location line="+8"/>
         <source>%1: the range runs backwards</source>
         <translation>%1: l&apos;intervallo va all&apos;indietro</translation>
     </message>
@@ -4639,12 +4639,12 @@ Valutazione: %4 µs (%5..%6)</translation>
         <translation>%1: il PLC non ha %2 in questo intervallo</translation>
     </message>
     <message>
-        <location line="-148"/>
+        <location line="-152"/>
         <source>%1: digits are expected</source>
         <translation>%1: sono attese delle cifre</translation>
     </message>
     <message>
-        <location line="+13"/>
+        <location line="+14"/>
         <source>%1: &apos;%2&apos; is not a digit</source>
         <translation>%1: &apos;%2&apos; non è una cifra</translation>
     </message>
@@ -4657,7 +4657,7 @@ Valutazione: %4 µs (%5..%6)</translation>
 <context>
     <name>rung::model::Checks</name>
     <message>
-        <location filename="../model/checks/checks_ladder.cpp" line="+71"/>
+        <location filename="../model/checks/checks_ladder.cpp" line="+68"/>
         <source>Reverse current: power would cross an element right to left to reach row %1</source>
         <translation>Corrente inversa: la corrente attraverserebbe un elemento da destra a sinistra per raggiungere la riga %1</translation>
     </message>
@@ -4667,23 +4667,23 @@ Valutazione: %4 µs (%5..%6)</translation>
         <translation>Duplica il contatto condiviso in ogni ramo</translation>
     </message>
     <message>
-        <location line="+13"/>
+        <location line="+12"/>
         <source>Open branch: row %1 is not connected to the left rail</source>
         <translation>Ramo aperto: la riga %1 non è collegata alla barra sinistra</translation>
     </message>
     <message>
-        <location line="+12"/>
+        <location line="+14"/>
         <source>%1 has no condition: it is wired straight to the left rail</source>
         <translation>%1 non ha condizione: è collegato direttamente alla barra sinistra</translation>
     </message>
     <message>
-        <location line="+20"/>
+        <location line="+21"/>
         <source>%1 (row %2, column %3) is not on any path from the left rail to an output: the list leaves it out</source>
         <translation>%1 (riga %2, colonna %3) non si trova su alcun percorso dalla barra sinistra a un&apos;uscita: la lista lo omette</translation>
     </message>
     <message>
         <location line="+58"/>
-        <location filename="../model/checks/checks_list.cpp" line="+85"/>
+        <location filename="../model/checks/checks_list.cpp" line="+82"/>
         <source>Append %1</source>
         <translation>Aggiungi %1 in fondo</translation>
     </message>
@@ -4703,7 +4703,7 @@ Valutazione: %4 µs (%5..%6)</translation>
         <translation>%1 impilati: combinare ogni blocco con %1 appena è completo</translation>
     </message>
     <message numerus="yes">
-        <location line="+3"/>
+        <location line="+4"/>
         <source>Stacked %1: %n blocks are open; an OR chain needs less stack</source>
         <translation>
             <numerusform>%1 impilati: %n blocco è aperto; una catena OR richiede meno stack</numerusform>
@@ -4711,7 +4711,7 @@ Valutazione: %4 µs (%5..%6)</translation>
         </translation>
     </message>
     <message>
-        <location line="+7"/>
+        <location line="+8"/>
         <source>A single contact joined with %1 is simpler as %2</source>
         <translation>Un singolo contatto unito con %1 è più semplice come %2</translation>
     </message>
@@ -4726,7 +4726,7 @@ Valutazione: %4 µs (%5..%6)</translation>
         <translation>Un singolo operando in parallelo a un blocco va sulla riga inferiore: prima il blocco, poi un OR, senza %1</translation>
     </message>
     <message>
-        <location line="+3"/>
+        <location line="+5"/>
         <source>Contacts in series need no %1: each can follow the one before it as %2</source>
         <translation>I contatti in serie non richiedono %1: ognuno può seguire il precedente come %2</translation>
     </message>
@@ -4741,12 +4741,12 @@ Valutazione: %4 µs (%5..%6)</translation>
         <translation>Metti il singolo operando sotto il blocco ed elimina %1</translation>
     </message>
     <message>
-        <location line="+4"/>
+        <location line="+3"/>
         <source>Join the contacts in series and drop the %1</source>
         <translation>Collega i contatti in serie ed elimina %1</translation>
     </message>
     <message>
-        <location line="+1"/>
+        <location line="+2"/>
         <source>Move the block to the front and drop the %1</source>
         <translation>Sposta il blocco in testa ed elimina %1</translation>
     </message>
@@ -4766,7 +4766,7 @@ Valutazione: %4 µs (%5..%6)</translation>
         <translation>Un&apos;uscita senza contatti propri va in cima alla diramazione e non richiede %1</translation>
     </message>
     <message>
-        <location line="+5"/>
+        <location line="+6"/>
         <source>Put the output on top and drop the %1</source>
         <translation>Metti l&apos;uscita in cima ed elimina %1</translation>
     </message>
@@ -4779,18 +4779,18 @@ Valutazione: %4 µs (%5..%6)</translation>
         </translation>
     </message>
     <message>
-        <location line="+146"/>
+        <location line="+148"/>
         <source>%1 cannot be written: the program only reads it (%2)</source>
         <translation>%1 non può essere scritto: il programma lo legge soltanto (%2)</translation>
     </message>
     <message>
-        <location line="+56"/>
+        <location line="+58"/>
         <source>%1 is driven twice; a coil may be driven only once (the first is on line %2)</source>
         <translation>%1 è comandato due volte; una bobina può essere comandata una volta sola (il primo è alla riga %2)</translation>
     </message>
     <message>
         <location line="+10"/>
-        <location filename="../model/listing/structure.cpp" line="+20"/>
+        <location filename="../model/listing/structure.cpp" line="+19"/>
         <source>%1 (the PLC says &quot;%2&quot;)</source>
         <translation>%1 (il PLC segnala &quot;%2&quot;)</translation>
     </message>
@@ -4800,7 +4800,7 @@ Valutazione: %4 µs (%5..%6)</translation>
         <translation>%1 è comandato due volte; una bobina può essere comandata una volta sola (il primo è nel segmento %2)</translation>
     </message>
     <message>
-        <location filename="../model/checks/checks_nesting.cpp" line="+58"/>
+        <location filename="../model/checks/checks_nesting.cpp" line="+51"/>
         <source>END is missing</source>
         <translation>Manca END</translation>
     </message>
@@ -4810,7 +4810,7 @@ Valutazione: %4 µs (%5..%6)</translation>
         <translation>Le istruzioni dopo END non vengono mai eseguite</translation>
     </message>
     <message>
-        <location filename="../model/listing/structure.cpp" line="+219"/>
+        <location filename="../model/listing/structure.cpp" line="+222"/>
         <source>IL inside IL: close the first with ILC</source>
         <translation>IL dentro IL: chiudere il primo con ILC</translation>
     </message>
@@ -4830,12 +4830,12 @@ Valutazione: %4 µs (%5..%6)</translation>
         <translation>Un secondo %1 %2: più JMP possono condividere un numero, un solo JME</translation>
     </message>
     <message>
-        <location line="+7"/>
+        <location line="+8"/>
         <source>%1 %2 without a JMP before it</source>
         <translation>%1 %2 senza un JMP prima</translation>
     </message>
     <message>
-        <location line="-217"/>
+        <location line="-221"/>
         <source>%1 cannot stand inside a step (STEP(08) .. STEP(08))</source>
         <translation>%1 non può stare dentro una fase (STEP(08) .. STEP(08))</translation>
     </message>
@@ -4855,7 +4855,7 @@ Valutazione: %4 µs (%5..%6)</translation>
         <translation>%1 senza %2 prima</translation>
     </message>
     <message>
-        <location line="+13"/>
+        <location line="+14"/>
         <source>%1 without a control bit ends the steps, but no step is open</source>
         <translation>%1 senza bit di controllo chiude le fasi, ma nessuna fase è aperta</translation>
     </message>
@@ -4865,7 +4865,7 @@ Valutazione: %4 µs (%5..%6)</translation>
         <translation>%1 è dopo il programma principale e fuori dalle subroutine: non viene mai eseguita</translation>
     </message>
     <message>
-        <location line="+7"/>
+        <location line="+8"/>
         <source>%1 %2 is not closed with %3</source>
         <translation>%1 %2 non è chiusa con %3</translation>
     </message>
@@ -4875,7 +4875,7 @@ Valutazione: %4 µs (%5..%6)</translation>
         <translation>Le fasi non sono chiuse con %1 senza bit di controllo</translation>
     </message>
     <message>
-        <location line="+5"/>
+        <location line="+6"/>
         <source>%1 %2: there is no %3 %2 before END</source>
         <translation>%1 %2: prima di END non c&apos;è %3 %2</translation>
     </message>
@@ -4921,12 +4921,12 @@ Valutazione: %4 µs (%5..%6)</translation>
         <translation>Lo step ladder non è chiuso con RET</translation>
     </message>
     <message>
-        <location filename="../model/checks/checks_list.cpp" line="-93"/>
+        <location filename="../model/checks/checks_list.cpp" line="-96"/>
         <source>Set value %1 is out of range</source>
         <translation>Il valore di preset %1 è fuori campo</translation>
     </message>
     <message>
-        <location line="+28"/>
+        <location line="+29"/>
         <source>%1 cannot be written: the PLC drives it (%2)</source>
         <translation>%1 non è scrivibile: lo gestisce il PLC (%2)</translation>
     </message>
@@ -4941,12 +4941,12 @@ Valutazione: %4 µs (%5..%6)</translation>
         <translation>Il numero %1 è usato come temporizzatore e come contatore; condividono un banco</translation>
     </message>
     <message>
-        <location line="+29"/>
+        <location line="+31"/>
         <source>%1 is driven twice; the later one wins (first on line %2)</source>
         <translation>%1 è comandato due volte; prevale l&apos;ultimo (il primo alla riga %2)</translation>
     </message>
     <message>
-        <location line="+15"/>
+        <location line="+16"/>
         <source>%1 is driven twice; the later one wins (first in rung %2)</source>
         <translation>%1 è comandato due volte; prevale l&apos;ultimo (il primo nel segmento %2)</translation>
     </message>
@@ -4956,7 +4956,7 @@ Valutazione: %4 µs (%5..%6)</translation>
         <translation>Il programma richiede %1 passi; %2 ne contiene %3</translation>
     </message>
     <message>
-        <location filename="../model/checks/operand_rules.cpp" line="+20"/>
+        <location filename="../model/checks/operand_rules.cpp" line="+17"/>
         <source>operand %1</source>
         <translation>operando %1</translation>
     </message>
@@ -4998,12 +4998,12 @@ Valutazione: %4 µs (%5..%6)</translation>
     </message>
     <message>
         <location line="-33"/>
-        <location line="+74"/>
+        <location line="+75"/>
         <source>%1 takes its %2 from %3 only, not %4</source>
         <translation>%1 prende il suo %2 solo da %3, non da %4</translation>
     </message>
     <message>
-        <location line="-66"/>
+        <location line="-67"/>
         <source>the %1 of %2 must be a device, not %3</source>
         <translation>il %1 di %2 deve essere un operando, non %3</translation>
     </message>
@@ -5028,7 +5028,7 @@ Valutazione: %4 µs (%5..%6)</translation>
         <translation>%1 sposta word intere: %2 non può essere il suo %3</translation>
     </message>
     <message>
-        <location line="+12"/>
+        <location line="+13"/>
         <source>%1 takes its %2 from a constant or from %3, not %4</source>
         <translation>%1 prende il suo %2 da una costante o da %3, non da %4</translation>
     </message>
@@ -5068,7 +5068,7 @@ Valutazione: %4 µs (%5..%6)</translation>
         <translation>il %1 di %2 deve essere un canale con bit (IR, HR, LR), non %3</translation>
     </message>
     <message>
-        <location line="+13"/>
+        <location line="+14"/>
         <source>%1 %2 %3: the last device must be of the kind of the first and not before it</source>
         <translation>%1 %2 %3: l&apos;ultimo operando deve essere dello stesso tipo del primo e non precederlo</translation>
     </message>
@@ -5083,7 +5083,7 @@ Valutazione: %4 µs (%5..%6)</translation>
         <translation>%1 non è simulato: nel simulatore non fa nulla</translation>
     </message>
     <message>
-        <location filename="../model/checks/checks_switched.cpp" line="+67"/>
+        <location filename="../model/checks/checks_switched.cpp" line="+64"/>
         <source>%1 runs only while %2 is ON, and no instruction sets %2</source>
         <translation>%1 funziona solo mentre %2 è ON, e nessuna istruzione imposta %2</translation>
     </message>
@@ -5093,7 +5093,7 @@ Valutazione: %4 µs (%5..%6)</translation>
         <translation>%1 si ferma mentre %2 è ON, e la riga %3 scrive %2</translation>
     </message>
     <message>
-        <location filename="../model/checks/unmodelled.cpp" line="+56"/>
+        <location filename="../model/checks/unmodelled.cpp" line="+53"/>
         <source>%1 is not simulated: %2</source>
         <translation>%1 non è simulato: %2</translation>
     </message>
@@ -5101,12 +5101,12 @@ Valutazione: %4 µs (%5..%6)</translation>
 <context>
     <name>rung::model::Convert</name>
     <message>
-        <location filename="../model/convert/convert_to_ladder.cpp" line="+219"/>
+        <location filename="../model/convert/convert_to_ladder.cpp" line="+216"/>
         <source>%1 joins the condition of a branch point in parallel with another block; the ladder cannot draw this: repeat the shared contacts in this branch instead</source>
         <translation>%1 collega la condizione di un punto di diramazione in parallelo a un altro blocco; lo schema ladder non può disegnarlo: ripeti invece i contatti comuni in questo ramo</translation>
     </message>
     <message>
-        <location line="+76"/>
+        <location line="+77"/>
         <source>%1 has no block to continue; start the rung with a load</source>
         <translation>%1 non ha un blocco da continuare; iniziare il segmento con un caricamento</translation>
     </message>
@@ -5144,25 +5144,25 @@ Valutazione: %4 µs (%5..%6)</translation>
     </message>
     <message>
         <location line="+9"/>
-        <location filename="../model/convert/convert_to_list.cpp" line="+53"/>
+        <location filename="../model/convert/convert_to_list.cpp" line="+48"/>
         <source>%1 has an input with no condition</source>
         <translation>%1 ha un ingresso senza condizione</translation>
     </message>
     <message>
-        <location line="+14"/>
-        <location line="+3"/>
-        <location line="+5"/>
-        <location filename="../model/convert/convert_to_list.cpp" line="+10"/>
+        <location line="+15"/>
+        <location line="+4"/>
+        <location line="+6"/>
+        <location filename="../model/convert/convert_to_list.cpp" line="+12"/>
         <source>%1 has no condition</source>
         <translation>%1 non ha condizione</translation>
     </message>
     <message>
-        <location line="-4"/>
+        <location line="-5"/>
         <source>%1 needs one block, but %2 are open</source>
         <translation>%1 richiede un blocco, ma %2 sono aperti</translation>
     </message>
     <message>
-        <location line="+38"/>
+        <location line="+39"/>
         <source>The rung starting on line %1 ends without an output</source>
         <translation>Il segmento che inizia alla riga %1 termina senza un&apos;uscita</translation>
     </message>
@@ -5200,7 +5200,7 @@ Valutazione: %4 µs (%5..%6)</translation>
         <translation>Un&apos;uscita non ha condizione</translation>
     </message>
     <message>
-        <location line="+96"/>
+        <location line="+97"/>
         <source>A branch reads a device that an earlier branch of the same rung writes, and %1 cannot hold this branch point (IL does not nest); draw the branches as separate rungs</source>
         <translation>Un ramo legge un operando che un ramo precedente dello stesso segmento scrive, e %1 non può mantenere questo punto di diramazione (IL non si annida); disegna i rami come segmenti separati</translation>
     </message>
@@ -5210,12 +5210,12 @@ Valutazione: %4 µs (%5..%6)</translation>
         <translation>Un blocco funzione con più ingressi deve stare da solo nel suo segmento</translation>
     </message>
     <message>
-        <location line="+11"/>
+        <location line="+12"/>
         <source>Row %1 is not connected to the left rail</source>
         <translation>La riga %1 non è collegata alla barra sinistra</translation>
     </message>
     <message>
-        <location line="+3"/>
+        <location line="+4"/>
         <source>Reverse current: the network feeding row %1 can only close through an element crossed right to left</source>
         <translation>Corrente inversa: la rete che alimenta la riga %1 può chiudersi solo attraverso un elemento percorso da destra a sinistra</translation>
     </message>
@@ -5341,22 +5341,22 @@ Valutazione: %4 µs (%5..%6)</translation>
         <translation>un operando a bit</translation>
     </message>
     <message>
-        <location filename="../model/listing/operand_text.cpp" line="+160"/>
+        <location filename="../model/listing/operand_text.cpp" line="+158"/>
         <source>%1: K%2 is no digit count here; K1..K%3 (groups of 4 bits) fit a word</source>
         <translation>%1: K%2 non è un numero di cifre valido; in una word stanno K1..K%3 (gruppi di 4 bit)</translation>
     </message>
     <message>
-        <location line="+12"/>
+        <location line="+13"/>
         <source>%1: K%2 takes a bit device (the first of its bits), not %3</source>
         <translation>%1: K%2 richiede un operando a bit (il primo dei suoi bit), non %3</translation>
     </message>
     <message>
-        <location line="+13"/>
+        <location line="+14"/>
         <source>%1 takes the %2 bits %3..%4, but %5 does not exist</source>
         <translation>%1 occupa i %2 bit %3..%4, ma %5 non esiste</translation>
     </message>
     <message>
-        <location line="+14"/>
+        <location line="+15"/>
         <source>%1: an index register cannot be indexed</source>
         <translation>%1: un registro indice non può essere indicizzato</translation>
     </message>
@@ -5366,7 +5366,7 @@ Valutazione: %4 µs (%5..%6)</translation>
         <translation>%1: i registri indice modificano word (D0E0, K4M0E0) e costanti K, non il bit %2</translation>
     </message>
     <message>
-        <location line="+12"/>
+        <location line="+14"/>
         <source>%1: index registers modify K constants, not %2</source>
         <translation>%1: i registri indice modificano costanti K, non %2</translation>
     </message>
@@ -5387,12 +5387,12 @@ Valutazione: %4 µs (%5..%6)</translation>
 <context>
     <name>rung::model::LadderText</name>
     <message>
-        <location filename="../model/ladder/ladder_text.cpp" line="+197"/>
+        <location filename="../model/ladder/ladder_text.cpp" line="+195"/>
         <source>A ladder text starts with &quot;LADDER &lt;target&gt; WIDTH &lt;n&gt;&quot;</source>
         <translation>Un testo ladder inizia con &quot;LADDER &lt;target&gt; WIDTH &lt;n&gt;&quot;</translation>
     </message>
     <message>
-        <location line="+4"/>
+        <location line="+5"/>
         <source>This ladder is for %1, not %2</source>
         <translation>Questo ladder è per %1, non per %2</translation>
     </message>
@@ -5407,8 +5407,8 @@ Valutazione: %4 µs (%5..%6)</translation>
         <translation>Atteso &quot;RUNG &lt;n&gt; ROWS &lt;rows&gt; COLUMNS &lt;columns&gt;&quot;</translation>
     </message>
     <message>
-        <location line="+17"/>
-        <location line="+8"/>
+        <location line="+18"/>
+        <location line="+9"/>
         <source>The rung has fewer rows than its header says</source>
         <translation>Il segmento ha meno righe di quante ne dichiari l&apos;intestazione</translation>
     </message>
@@ -5428,7 +5428,7 @@ Valutazione: %4 µs (%5..%6)</translation>
         <translation>Un&apos;uscita si scrive tra parentesi: (%1 %2)</translation>
     </message>
     <message>
-        <location line="+7"/>
+        <location line="+8"/>
         <source>(^) marks a further input of a box above it</source>
         <translation>(^) indica un ulteriore ingresso del blocco funzione soprastante</translation>
     </message>
@@ -5443,7 +5443,7 @@ Valutazione: %4 µs (%5..%6)</translation>
         <translation>&apos;~%1&apos;: un elemento sul flusso di corrente è ~, ~P o ~N</translation>
     </message>
     <message>
-        <location line="+13"/>
+        <location line="+14"/>
         <source>&apos;%1&apos; is not a contact mark (&apos; &apos;, &apos;/&apos;, &apos;P&apos;, &apos;N&apos;, &apos;~&apos;)</source>
         <translation>&apos;%1&apos; non è un segno di contatto (&apos; &apos;, &apos;/&apos;, &apos;P&apos;, &apos;N&apos;, &apos;~&apos;)</translation>
     </message>
@@ -5453,7 +5453,7 @@ Valutazione: %4 µs (%5..%6)</translation>
         <translation>Il contatto non ha un operando</translation>
     </message>
     <message>
-        <location line="+18"/>
+        <location line="+19"/>
         <source>%1 is a word; a contact takes a bit device</source>
         <translation>%1 è una word; un contatto richiede un operando a bit</translation>
     </message>
@@ -5466,27 +5466,27 @@ Valutazione: %4 µs (%5..%6)</translation>
 <context>
     <name>rung::model::Project</name>
     <message>
-        <location filename="../model/project/project.cpp" line="+110"/>
+        <location filename="../model/project/project.cpp" line="+108"/>
         <source>Line %1, column %2 (byte %3): the file is not valid JSON (%4)</source>
         <translation>Riga %1, colonna %2 (byte %3): il file non è JSON valido (%4)</translation>
     </message>
     <message>
-        <location line="+8"/>
+        <location line="+7"/>
         <source>The file is JSON but not a Rung Studio project (no top-level object)</source>
         <translation>Il file è JSON ma non è un progetto Rung Studio (nessun oggetto al livello superiore)</translation>
     </message>
     <message>
-        <location line="+4"/>
+        <location line="+5"/>
         <source>The file is JSON but not a Rung Studio project (&quot;format&quot; is not &quot;%1&quot;)</source>
         <translation>Il file è JSON ma non è un progetto Rung Studio (&quot;format&quot; non è &quot;%1&quot;)</translation>
     </message>
     <message>
-        <location line="+5"/>
+        <location line="+6"/>
         <source>The project was written by a newer Rung Studio (schema %1); this version reads schema %2 and older</source>
         <translation>Il progetto è stato scritto da una versione più recente di Rung Studio (schema %1); questa versione legge lo schema %2 e precedenti</translation>
     </message>
     <message>
-        <location line="+5"/>
+        <location line="+6"/>
         <source>&quot;schema&quot; must be a positive number</source>
         <translation>&quot;schema&quot; deve essere un numero positivo</translation>
     </message>
@@ -5496,23 +5496,23 @@ Valutazione: %4 µs (%5..%6)</translation>
         <translation>&quot;target&quot;: famiglia PLC sconosciuta &quot;%1&quot;</translation>
     </message>
     <message>
-        <location line="+5"/>
+        <location line="+4"/>
         <source>&quot;model&quot;: %1 has no model &quot;%2&quot;</source>
         <translation>&quot;model&quot;: %1 non ha il modello &quot;%2&quot;</translation>
     </message>
     <message>
         <location line="+16"/>
-        <location line="+64"/>
+        <location line="+67"/>
         <source>%1: an object with &quot;device&quot; and &quot;name&quot; is expected</source>
         <translation>%1: è atteso un oggetto con &quot;device&quot; e &quot;name&quot;</translation>
     </message>
     <message>
-        <location line="-42"/>
+        <location line="-43"/>
         <source>setValues.%1: a whole number between -%2 and %2 is expected</source>
         <translation>setValues.%1: è atteso un numero intero tra -%2 e %2</translation>
     </message>
     <message>
-        <location line="+10"/>
+        <location line="+9"/>
         <source>%1: an object with &quot;name&quot; and &quot;devices&quot; is expected</source>
         <translation>%1: è atteso un oggetto con &quot;name&quot; e &quot;devices&quot;</translation>
     </message>
@@ -5522,7 +5522,7 @@ Valutazione: %4 µs (%5..%6)</translation>
         <translation>%1.devices[%2]: è atteso il nome di un operando</translation>
     </message>
     <message>
-        <location line="+7"/>
+        <location line="+10"/>
         <source>%1.formats.%2: &quot;%3&quot; is no format (dec, signed, hex, bin, bcd)</source>
         <translation>%1.formats.%2: &quot;%3&quot; non è un formato (dec, signed, hex, bin, bcd)</translation>
     </message>
@@ -5557,12 +5557,12 @@ Valutazione: %4 µs (%5..%6)</translation>
         <translation>%1: il valore deve essere %2</translation>
     </message>
     <message>
-        <location line="+100"/>
+        <location line="+104"/>
         <source>%1.outputs: [row, &quot;instruction&quot;] with a row inside the rung is expected</source>
         <translation>%1.outputs: è atteso [riga, &quot;istruzione&quot;] con una riga interna al segmento</translation>
     </message>
     <message>
-        <location line="+6"/>
+        <location line="+7"/>
         <source>%1.outputs: row %2 has two outputs</source>
         <translation>%1.outputs: la riga %2 ha due uscite</translation>
     </message>
@@ -5572,12 +5572,12 @@ Valutazione: %4 µs (%5..%6)</translation>
         <translation>%1.outputs: &quot;%2&quot; accetta fino a %3 righe di ingresso, un blocco funzione per segmento</translation>
     </message>
     <message>
-        <location line="+9"/>
+        <location line="+10"/>
         <source>%1.outputs: the input rows of &quot;%2&quot; start at its own row and go down inside the rung</source>
         <translation>%1.outputs: le righe di ingresso di &quot;%2&quot; partono dalla sua riga e scendono all&apos;interno del segmento</translation>
     </message>
     <message>
-        <location line="-119"/>
+        <location line="-125"/>
         <source>%1: a rung object is expected</source>
         <translation>%1: è atteso un oggetto segmento</translation>
     </message>
@@ -5592,7 +5592,7 @@ Valutazione: %4 µs (%5..%6)</translation>
         <translation>%1.cells: sono attese %2 righe, il file ne ha %3</translation>
     </message>
     <message>
-        <location line="+8"/>
+        <location line="+9"/>
         <source>%1.cells[%2]: an array of cells is expected</source>
         <translation>%1.cells[%2]: è atteso un array di celle</translation>
     </message>
@@ -5612,12 +5612,12 @@ Valutazione: %4 µs (%5..%6)</translation>
         <translation>%1.links: [%2, %3] è fuori dal segmento</translation>
     </message>
     <message>
-        <location line="+23"/>
+        <location line="+27"/>
         <source>one instruction is expected</source>
         <translation>è attesa una sola istruzione</translation>
     </message>
     <message>
-        <location filename="../model/project/file_read.cpp" line="+18"/>
+        <location filename="../model/project/file_read.cpp" line="+13"/>
         <source>%1: cannot open the file (%2)</source>
         <translation>%1: impossibile aprire il file (%2)</translation>
     </message>
@@ -5632,7 +5632,7 @@ Valutazione: %4 µs (%5..%6)</translation>
         <translation>%1: il file supera %2 MB, il massimo che Rung Studio legge</translation>
     </message>
     <message>
-        <location filename="../model/project/project.cpp" line="+131"/>
+        <location filename="../model/project/project.cpp" line="+134"/>
         <source>%1: cannot write the file (%2)</source>
         <translation>%1: impossibile scrivere il file (%2)</translation>
     </message>
@@ -5642,7 +5642,7 @@ Valutazione: %4 µs (%5..%6)</translation>
         <translation>%1: salvataggio non riuscito (%2); il file precedente è invariato</translation>
     </message>
     <message>
-        <location filename="../model/project/program_file.cpp" line="+36"/>
+        <location filename="../model/project/program_file.cpp" line="+30"/>
         <source>unknown target %1 (%2)</source>
         <translation>famiglia PLC sconosciuta: %1 (%2)</translation>
     </message>
@@ -5704,7 +5704,7 @@ Valutazione: %4 µs (%5..%6)</translation>
     <message>
         <location line="+8"/>
         <location filename="../model/target/target_pl110.cpp" line="+5"/>
-        <location filename="../model/target/target_vigor.cpp" line="+123"/>
+        <location filename="../model/target/target_vigor.cpp" line="+125"/>
         <location filename="../model/target/target_vpc.cpp" line="+5"/>
         <source>counters</source>
         <translation>contatori</translation>
@@ -6567,7 +6567,7 @@ Valutazione: %4 µs (%5..%6)</translation>
         <translation>Posiziona un parametro del display</translation>
     </message>
     <message>
-        <location filename="../model/target/target_vigor.cpp" line="-456"/>
+        <location filename="../model/target/target_vigor.cpp" line="-458"/>
         <source>Compare contact: ON while S1 ? S2</source>
         <translation>Contatto di confronto: ON mentre S1 ? S2</translation>
     </message>
@@ -6600,7 +6600,7 @@ Valutazione: %4 µs (%5..%6)</translation>
         <translation>relè speciali</translation>
     </message>
     <message>
-        <location line="+4"/>
+        <location line="+5"/>
         <source>step relays</source>
         <translation>relè di passo</translation>
     </message>
@@ -6630,7 +6630,7 @@ Valutazione: %4 µs (%5..%6)</translation>
         <translation>temporizzatori a ritenzione (100 ms)</translation>
     </message>
     <message>
-        <location line="+5"/>
+        <location line="+6"/>
         <source>latched counters</source>
         <translation>contatori ritentivi</translation>
     </message>
@@ -7155,7 +7155,7 @@ Valutazione: %4 µs (%5..%6)</translation>
 <context>
     <name>rung::model::Trigger</name>
     <message>
-        <location filename="../model/image/trigger.cpp" line="+42"/>
+        <location filename="../model/image/trigger.cpp" line="+39"/>
         <source>Type a condition: &quot;%1 rises&quot;, &quot;%1 falls&quot; or &quot;%2 &gt; 100&quot;</source>
         <translation>Digitare una condizione: &quot;%1 rises&quot;, &quot;%1 falls&quot; o &quot;%2 &gt; 100&quot;</translation>
     </message>
@@ -7165,7 +7165,7 @@ Valutazione: %4 µs (%5..%6)</translation>
         <translation>&quot;%1&quot; non è un numero intero (0x prima di uno esadecimale)</translation>
     </message>
     <message>
-        <location line="+2"/>
+        <location line="+3"/>
         <source>&quot;%1&quot; is no condition: write &quot;%2 rises&quot;, &quot;%2 falls&quot; or &quot;%3 &gt; 100&quot;</source>
         <translation>&quot;%1&quot; non è una condizione: scrivere &quot;%2 rises&quot;, &quot;%2 falls&quot; o &quot;%3 &gt; 100&quot;</translation>
     </message>
@@ -7178,7 +7178,7 @@ Valutazione: %4 µs (%5..%6)</translation>
 <context>
     <name>rung::model::ValueFormat</name>
     <message>
-        <location filename="../model/image/value_format.cpp" line="+46"/>
+        <location filename="../model/image/value_format.cpp" line="+43"/>
         <source>Decimal</source>
         <translation>Decimale</translation>
     </message>
@@ -7209,12 +7209,12 @@ Valutazione: %4 µs (%5..%6)</translation>
     </message>
     <message>
         <location line="+10"/>
-        <location line="+61"/>
+        <location line="+64"/>
         <source>Type a value</source>
         <translation>Digitare un valore</translation>
     </message>
     <message>
-        <location line="-56"/>
+        <location line="-59"/>
         <source>%1 does not fit a %2-bit word (%3..%4)</source>
         <translation>%1 non sta in una word a %2 bit (%3..%4)</translation>
     </message>
@@ -7224,7 +7224,7 @@ Valutazione: %4 µs (%5..%6)</translation>
         <translation>&quot;%1&quot; non è un numero intero (0x prima di uno esadecimale)</translation>
     </message>
     <message>
-        <location line="+12"/>
+        <location line="+13"/>
         <source>&quot;%1&quot; is not a hexadecimal value of at most %2 digits</source>
         <translation>&quot;%1&quot; non è un valore esadecimale di al massimo %2 cifre</translation>
     </message>
@@ -7234,7 +7234,7 @@ Valutazione: %4 µs (%5..%6)</translation>
         <translation>&quot;%1&quot; non è un valore binario di al massimo %2 cifre</translation>
     </message>
     <message>
-        <location line="+14"/>
+        <location line="+16"/>
         <source>&quot;%1&quot; is not a BCD value: at most %2 decimal digits</source>
         <translation>&quot;%1&quot; non è un valore BCD: al massimo %2 cifre decimali</translation>
     </message>
@@ -7242,7 +7242,7 @@ Valutazione: %4 µs (%5..%6)</translation>
 <context>
     <name>rung::simulator::CommandInbox</name>
     <message>
-        <location filename="../simulator/command_inbox.cpp" line="+18"/>
+        <location filename="../simulator/command_inbox.cpp" line="+15"/>
         <source>(no device)</source>
         <translation>(nessun operando)</translation>
     </message>
@@ -7252,7 +7252,7 @@ Valutazione: %4 µs (%5..%6)</translation>
         <translation>il programma modificato ha un&apos;altra disposizione della memoria (un altro PLC): non può subentrare all&apos;immagine in uso</translation>
     </message>
     <message>
-        <location line="+17"/>
+        <location line="+19"/>
         <source>%1 has no set value to write</source>
         <translation>%1 non ha un valore di preset da scrivere</translation>
     </message>
@@ -7262,7 +7262,7 @@ Valutazione: %4 µs (%5..%6)</translation>
         <translation>%1 non è una parola che questo PLC può scrivere</translation>
     </message>
     <message>
-        <location line="+1"/>
+        <location line="+2"/>
         <source>%1 is not a bit this PLC can write</source>
         <translation>%1 non è un bit che questo PLC può scrivere</translation>
     </message>
@@ -7270,12 +7270,12 @@ Valutazione: %4 µs (%5..%6)</translation>
 <context>
     <name>rung::simulator::Compiler</name>
     <message>
-        <location filename="../simulator/compiler_detail.h" line="+117"/>
+        <location filename="../simulator/compiler_detail.h" line="+114"/>
         <source>%1 needs operand %2</source>
         <translation>%1 richiede l&apos;operando %2</translation>
     </message>
     <message>
-        <location filename="../simulator/compile_steps.cpp" line="+175"/>
+        <location filename="../simulator/compile_steps.cpp" line="+176"/>
         <location filename="../simulator/compiler_detail.h" line="+17"/>
         <source>%1 is not a bit device</source>
         <translation>%1 non è un operando a bit</translation>
@@ -7286,12 +7286,12 @@ Valutazione: %4 µs (%5..%6)</translation>
         <translation>la costante %1 è fuori campo</translation>
     </message>
     <message>
-        <location filename="../simulator/compile_operands.cpp" line="+25"/>
+        <location filename="../simulator/compile_operands.cpp" line="+26"/>
         <source>%1 is not an index register</source>
         <translation>%1 non è un registro indice</translation>
     </message>
     <message>
-        <location line="+6"/>
+        <location line="+7"/>
         <source>%1 is a constant; a device is expected here</source>
         <translation>%1 è una costante; qui è atteso un operando</translation>
     </message>
@@ -7315,7 +7315,7 @@ Valutazione: %4 µs (%5..%6)</translation>
         <translation>%1 non è un operando word</translation>
     </message>
     <message>
-        <location filename="../simulator/compile_words.cpp" line="+30"/>
+        <location filename="../simulator/compile_words.cpp" line="+31"/>
         <location filename="../simulator/compiler_detail.h" line="+17"/>
         <source>%1 needs the next word too, which does not exist</source>
         <translation>%1 richiede anche la word successiva, che non esiste</translation>
@@ -7326,7 +7326,7 @@ Valutazione: %4 µs (%5..%6)</translation>
         <translation>%1 legge un blocco di word: %2 non è un operando word</translation>
     </message>
     <message>
-        <location filename="../simulator/compiler_detail.h" line="+30"/>
+        <location filename="../simulator/compiler_detail.h" line="+29"/>
         <source>%1 needs %2 open blocks before it</source>
         <translation>%1 richiede %2 blocchi aperti prima di sé</translation>
     </message>
@@ -7351,7 +7351,7 @@ Valutazione: %4 µs (%5..%6)</translation>
         <translation>il simulatore non ha l&apos;operatore %1</translation>
     </message>
     <message>
-        <location line="+58"/>
+        <location line="+59"/>
         <source>%1 is not a number of words</source>
         <translation>%1 non è un numero di word</translation>
     </message>
@@ -7361,22 +7361,22 @@ Valutazione: %4 µs (%5..%6)</translation>
         <translation>%1 richiede un bit: un operando a bit, o una word e un numero di bit 0..15</translation>
     </message>
     <message>
-        <location filename="../simulator/compile_words.cpp" line="+9"/>
+        <location filename="../simulator/compile_words.cpp" line="+10"/>
         <source>%1 needs a count from 1 to %2</source>
         <translation>%1 richiede un numero da 1 a %2</translation>
     </message>
     <message>
-        <location filename="../simulator/compile_steps.cpp" line="+43"/>
+        <location filename="../simulator/compile_steps.cpp" line="+45"/>
         <source>the block of %1 words runs past the end of its area</source>
         <translation>il blocco di %1 word va oltre la fine della sua area</translation>
     </message>
     <message>
-        <location filename="../simulator/compiler.cpp" line="+163"/>
+        <location filename="../simulator/compiler.cpp" line="+164"/>
         <source>unknown instruction</source>
         <translation>istruzione sconosciuta</translation>
     </message>
     <message>
-        <location line="+20"/>
+        <location line="+21"/>
         <source>more than %1 nested %2</source>
         <translation>più di %1 %2 annidati</translation>
     </message>
@@ -7391,13 +7391,13 @@ Valutazione: %4 µs (%5..%6)</translation>
         <translation>%1 non può essere resettato</translation>
     </message>
     <message>
-        <location filename="../simulator/compile_steps.cpp" line="-135"/>
+        <location filename="../simulator/compile_steps.cpp" line="-138"/>
         <location filename="../simulator/compiler.cpp" line="+5"/>
         <source>%1 is not a device</source>
         <translation>%1 non è un operando</translation>
     </message>
     <message>
-        <location filename="../simulator/compiler.cpp" line="+112"/>
+        <location filename="../simulator/compiler.cpp" line="+111"/>
         <source>the program has no target</source>
         <translation>il programma non ha una famiglia PLC</translation>
     </message>
@@ -7405,7 +7405,7 @@ Valutazione: %4 µs (%5..%6)</translation>
 <context>
     <name>rung::simulator::Engine</name>
     <message>
-        <location filename="../simulator/engine_execute.cpp" line="+49"/>
+        <location filename="../simulator/engine_execute.cpp" line="+46"/>
         <source>set value %1 is not a BCD number; the instruction is skipped</source>
         <translation>il valore di preset %1 non è un numero BCD; l&apos;istruzione viene saltata</translation>
     </message>
@@ -7436,12 +7436,12 @@ Valutazione: %4 µs (%5..%6)</translation>
         <translation>divisione per zero; la destinazione resta invariata</translation>
     </message>
     <message>
-        <location line="+41"/>
+        <location line="+42"/>
         <source>MOVIND index %1 is outside 0..%2; nothing is written</source>
         <translation>l&apos;indice %1 di MOVIND è fuori da 0..%2; non viene scritto nulla</translation>
     </message>
     <message>
-        <location filename="../simulator/engine_cpm1.cpp" line="+45"/>
+        <location filename="../simulator/engine_cpm1.cpp" line="+43"/>
         <source>%1; the instruction is skipped and ER %2 is ON</source>
         <translation>%1; l&apos;istruzione non viene eseguita e ER %2 è ON</translation>
     </message>
@@ -7456,23 +7456,23 @@ Valutazione: %4 µs (%5..%6)</translation>
         <translation>%1 non è un numero BCD</translation>
     </message>
     <message>
-        <location line="+29"/>
+        <location line="+27"/>
         <source>bit designator %1 is not #DDSS with bits 00 to 15</source>
         <translation>il selettore di bit %1 non è #DDSS con bit da 00 a 15</translation>
     </message>
     <message>
-        <location line="+18"/>
+        <location line="+17"/>
         <source>digit designator %1 is not #0DNS with digits 0 to 3</source>
         <translation>il selettore di cifre %1 non è #0DNS con cifre da 0 a 3</translation>
     </message>
     <message>
-        <location line="+73"/>
+        <location line="+74"/>
         <source>division by zero</source>
         <translation>divisione per zero</translation>
     </message>
     <message>
-        <location filename="../simulator/engine_debug.cpp" line="+40"/>
-        <location line="+11"/>
+        <location filename="../simulator/engine_debug.cpp" line="+36"/>
+        <location line="+13"/>
         <source>the program has no instruction %1 to stop at</source>
         <translation>il programma non ha un&apos;istruzione %1 dove fermarsi</translation>
     </message>
@@ -7493,7 +7493,7 @@ Valutazione: %4 µs (%5..%6)</translation>
         <translation>%1 non è un bit da osservare</translation>
     </message>
     <message>
-        <location filename="../simulator/engine_operands.cpp" line="+87"/>
+        <location filename="../simulator/engine_operands.cpp" line="+84"/>
         <source>operation error: %1 with %2 = %3 reaches %4, which does not exist; the instruction is not executed</source>
         <translation>errore operativo: %1 con %2 = %3 raggiunge %4, che non esiste; l&apos;istruzione non viene eseguita</translation>
     </message>
@@ -7503,7 +7503,7 @@ Valutazione: %4 µs (%5..%6)</translation>
         <translation>errore operativo: %1 raggiunge %2, che non esiste; l&apos;istruzione non viene eseguita</translation>
     </message>
     <message>
-        <location filename="../simulator/engine_words.cpp" line="+22"/>
+        <location filename="../simulator/engine_words.cpp" line="+15"/>
         <source>operation error: %1 bytes need %2 words from the source, past the end of its area; the instruction is not executed</source>
         <translation>errore operativo: %1 byte richiedono %2 word dalla sorgente, oltre la fine della sua area; l&apos;istruzione non viene eseguita</translation>
     </message>
@@ -7511,24 +7511,24 @@ Valutazione: %4 µs (%5..%6)</translation>
 <context>
     <name>rung::simulator::HistorySource</name>
     <message>
-        <location filename="../simulator/history_source.cpp" line="+43"/>
+        <location filename="../simulator/history_source.cpp" line="+40"/>
         <source>History: scan %1 (%2)</source>
         <extracomment>the window&apos;s mark while it shows a past scan; %1 the scan, %2 its time h:mm:ss.cc</extracomment>
         <translation>Cronologia: scansione %1 (%2)</translation>
     </message>
     <message>
         <location line="+15"/>
-        <location line="+27"/>
+        <location line="+29"/>
         <source>nothing is recorded yet: run the simulation first</source>
         <translation>non è ancora registrato nulla: eseguire prima la simulazione</translation>
     </message>
     <message>
-        <location line="-17"/>
+        <location line="-18"/>
         <source>history is read-only: return to live to write, force or release</source>
         <translation>la cronologia è di sola lettura: tornare al vivo per scrivere, forzare o rilasciare</translation>
     </message>
     <message>
-        <location line="+24"/>
+        <location line="+26"/>
         <source>that scan is no longer recorded</source>
         <translation>quella scansione non è più registrata</translation>
     </message>
@@ -7536,7 +7536,7 @@ Valutazione: %4 µs (%5..%6)</translation>
 <context>
     <name>rung::simulator::SimulatorSession</name>
     <message>
-        <location filename="../simulator/session.cpp" line="+245"/>
+        <location filename="../simulator/session.cpp" line="+243"/>
         <source>Line %1: %2</source>
         <translation>Riga %1: %2</translation>
     </message>
@@ -7544,12 +7544,12 @@ Valutazione: %4 µs (%5..%6)</translation>
 <context>
     <name>rung::simulator::Trace</name>
     <message>
-        <location filename="../simulator/trace.cpp" line="+24"/>
+        <location filename="../simulator/trace.cpp" line="+21"/>
         <source>unknown device %1: %2</source>
         <translation>operando sconosciuto %1: %2</translation>
     </message>
     <message>
-        <location line="+29"/>
+        <location line="+30"/>
         <source>%1 needs a value</source>
         <translation>%1 richiede un valore</translation>
     </message>

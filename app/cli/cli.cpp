@@ -7,6 +7,7 @@
 #include "cli_simulate.h"
 #include "cli_terminal.h"
 
+#include "app/tr.h"
 #include "model/checks/checks.h"
 #include "model/convert/convert.h"
 #include "model/ladder/ladder_text.h"
@@ -22,25 +23,21 @@ namespace rung::app {
 
 namespace {
 
-struct Tr {
-    Q_DECLARE_TR_FUNCTIONS(rung::app::Cli)
-};
-
 QString usage() {
-    return Tr::tr("usage:\n"
-                  "  rungstudio-cli check FILE [--target %1] [--model M]\n"
-                  "  rungstudio-cli convert FILE [--target T] [--from il|ladder|project] --to "
-                  "il|ladder|project "
-                  "[-o OUT] [--force]\n"
-                  "  rungstudio-cli simulate FILE [--target T] --scans N [--period MS] [--set "
-                  "DEV=VALUE@SCAN]... "
-                  "--trace DEV[,DEV...]\n"
-                  "  rungstudio-cli serve FILE [--target T] --protocol "
-                  "vigor|modbus|modbus-tcp|hostlink (--pty | --port NAME | --tcp HOST:PORT) "
-                  "[--station N] [--baud B] [--period MS]\n"
-                  "FILE is a listing (.il), a ladder text (.ladder) or a project (.rung).\n"
-                  "--lang en|hu|it: the language of the messages (else the locale's, LANG).\n"
-                  "Exit status: 0 no error, 1 the program has errors, 2 usage or I/O error.")
+    return CliTr::tr("usage:\n"
+                     "  rungstudio-cli check FILE [--target %1] [--model M]\n"
+                     "  rungstudio-cli convert FILE [--target T] [--from il|ladder|project] --to "
+                     "il|ladder|project "
+                     "[-o OUT] [--force]\n"
+                     "  rungstudio-cli simulate FILE [--target T] --scans N [--period MS] [--set "
+                     "DEV=VALUE@SCAN]... "
+                     "--trace DEV[,DEV...]\n"
+                     "  rungstudio-cli serve FILE [--target T] --protocol "
+                     "vigor|modbus|modbus-tcp|hostlink (--pty | --port NAME | --tcp HOST:PORT) "
+                     "[--station N] [--baud B] [--period MS]\n"
+                     "FILE is a listing (.il), a ladder text (.ladder) or a project (.rung).\n"
+                     "--lang en|hu|it: the language of the messages (else the locale's, LANG).\n"
+                     "Exit status: 0 no error, 1 the program has errors, 2 usage or I/O error.")
                .arg(model::targetIds().join(QLatin1Char('|'))) +
            QLatin1Char('\n') + onlineUsage() + QLatin1Char('\n') + recordUsage() +
            QLatin1Char('\n') + terminalUsage();
@@ -51,7 +48,7 @@ int check(const QStringList &args, QTextStream &out, QTextStream &err) {
     QStringList rest;
     QString error;
     if (!parseCommonOptions(args, &options, &rest, &error) || !rest.isEmpty()) {
-        err << (error.isEmpty() ? Tr::tr("unexpected argument %1").arg(rest.value(0)) : error)
+        err << (error.isEmpty() ? CliTr::tr("unexpected argument %1").arg(rest.value(0)) : error)
             << '\n'
             << usage() << '\n';
         return 2;
@@ -96,13 +93,13 @@ int convert(const QStringList &args, QTextStream &out, QTextStream &err) {
         else if (rest[i] == QLatin1String("-o") && i + 1 < rest.size())
             output = rest[++i];
         else {
-            err << Tr::tr("unexpected argument %1").arg(rest[i]) << '\n' << usage() << '\n';
+            err << CliTr::tr("unexpected argument %1").arg(rest[i]) << '\n' << usage() << '\n';
             return 2;
         }
     }
     if (to != QLatin1String("il") && to != QLatin1String("ladder") &&
         to != QLatin1String("project")) {
-        err << Tr::tr("--to must be il, ladder or project") << '\n' << usage() << '\n';
+        err << CliTr::tr("--to must be il, ladder or project") << '\n' << usage() << '\n';
         return 2;
     }
     Input input;
@@ -118,7 +115,8 @@ int convert(const QStringList &args, QTextStream &out, QTextStream &err) {
     if (to != QLatin1String("project") && pendingListing(input, &notice, &typed)) {
         for (const model::Diagnostic &d : typed)
             err << formatDiagnostic(pendingLocation(input.file), d) << '\n';
-        err << notice << '\n' << Tr::tr("nothing written: the list as typed would be lost") << '\n';
+        err << notice << '\n'
+            << CliTr::tr("nothing written: the list as typed would be lost") << '\n';
         return 1;
     }
     // What `check` rejects is not written (docs/cli.md): the same findings decide, so that a
@@ -139,7 +137,7 @@ int convert(const QStringList &args, QTextStream &out, QTextStream &err) {
         for (const model::Diagnostic &d : all)
             if (d.severity == model::Severity::Error || d.code == QLatin1String("LD002"))
                 err << formatDiagnostic(input.file, d) << '\n';
-        err << Tr::tr("nothing written: the listing would leave out the contacts above") << '\n';
+        err << CliTr::tr("nothing written: the listing would leave out the contacts above") << '\n';
         return 1;
     }
     const bool hasErrors = incomplete || model::hasErrors(all);
@@ -148,11 +146,11 @@ int convert(const QStringList &args, QTextStream &out, QTextStream &err) {
             if (d.severity == model::Severity::Error)
                 err << formatDiagnostic(input.file, d) << '\n';
         if (incomplete) {
-            err << Tr::tr("nothing written: the input does not parse or convert whole") << '\n';
+            err << CliTr::tr("nothing written: the input does not parse or convert whole") << '\n';
             return 1;
         }
         if (!force) {
-            err << Tr::tr("nothing written: the input has errors (--force writes it anyway)")
+            err << CliTr::tr("nothing written: the input has errors (--force writes it anyway)")
                 << '\n';
             return 1;
         }
@@ -177,7 +175,7 @@ int convert(const QStringList &args, QTextStream &out, QTextStream &err) {
     }
     QSaveFile file(output);
     if (!file.open(QIODevice::WriteOnly) || file.write(bytes) != bytes.size() || !file.commit()) {
-        err << Tr::tr("cannot write %1: %2").arg(output, file.errorString()) << '\n';
+        err << CliTr::tr("cannot write %1: %2").arg(output, file.errorString()) << '\n';
         return 2;
     }
     return status;
@@ -220,8 +218,8 @@ int runCli(const QStringList &arguments, QTextStream &out, QTextStream &err) {
         out << QStringLiteral("rungstudio-cli %1\n").arg(QStringLiteral(RUNG_VERSION));
         return 0;
     }
-    err << (command.isEmpty() ? Tr::tr("no command given")
-                              : Tr::tr("unknown command %1").arg(command))
+    err << (command.isEmpty() ? CliTr::tr("no command given")
+                              : CliTr::tr("unknown command %1").arg(command))
         << '\n'
         << usage() << '\n';
     return 2;

@@ -2,6 +2,7 @@
 
 #include "model/target/address.h"
 #include "model/target/target_lists.h"
+#include "model/tr.h"
 
 #include <QCoreApplication>
 #include <QRegularExpression>
@@ -9,10 +10,6 @@
 namespace rung::model {
 
 namespace {
-
-struct Tr {
-    Q_DECLARE_TR_FUNCTIONS(rung::model::Trigger)
-};
 
 bool isBitDevice(const Target &target, const Address &a) {
     return a.bit >= 0 || target.area(a.area).kind == AreaKind::Bit;
@@ -39,7 +36,7 @@ std::variant<Trigger, QString> parseTrigger(const Target &target, const QString 
                                          QRegularExpression::CaseInsensitiveOption);
     const QString typed = text.trimmed();
     if (typed.isEmpty())
-        return Tr::tr("Type a condition: \"%1 rises\", \"%1 falls\" or \"%2 > 100\"")
+        return TriggerTr::tr("Type a condition: \"%1 rises\", \"%1 falls\" or \"%2 > 100\"")
             .arg(exampleDevice(target, true), exampleWord(target, 10));
     Trigger trigger;
     QString device;
@@ -60,10 +57,11 @@ std::variant<Trigger, QString> parseTrigger(const Target &target, const QString 
                             ? number.mid(2).toLongLong(&ok, 16)
                             : number.toLongLong(&ok, 10);
         if (!ok)
-            return Tr::tr("\"%1\" is not a whole number (0x before a hexadecimal one)").arg(number);
+            return TriggerTr::tr("\"%1\" is not a whole number (0x before a hexadecimal one)")
+                .arg(number);
     } else {
-        return Tr::tr("\"%1\" is no condition: write \"%2 rises\", \"%2 falls\" or "
-                      "\"%3 > 100\"")
+        return TriggerTr::tr("\"%1\" is no condition: write \"%2 rises\", \"%2 falls\" or "
+                             "\"%3 > 100\"")
             .arg(typed, exampleDevice(target, true), exampleWord(target, 10));
     }
     const auto parsed = parseAddress(target, device.trimmed(), model);
@@ -72,7 +70,7 @@ std::variant<Trigger, QString> parseTrigger(const Target &target, const QString 
     trigger.device = std::get<Address>(parsed);
     const bool bit = isBitDevice(target, trigger.device);
     if (trigger.kind != Trigger::Kind::Compare && !bit)
-        return Tr::tr("%1 is a word: compare it with a value (\"%1 > 100\")")
+        return TriggerTr::tr("%1 is a word: compare it with a value (\"%1 > 100\")")
             .arg(formatAddress(target, trigger.device));
     return trigger;
 }

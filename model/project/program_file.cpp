@@ -4,19 +4,12 @@
 #include "model/listing/il.h"
 #include "model/project/file_read.h"
 #include "model/target/target_lists.h"
+#include "model/tr.h"
 
 #include <QCoreApplication>
 #include <QFileInfo>
 
 namespace rung::model {
-
-namespace {
-
-struct Tr {
-    Q_DECLARE_TR_FUNCTIONS(rung::model::Project)
-};
-
-} // namespace
 
 ProgramFileKind programFileKind(const QString &path) {
     const QString suffix = QFileInfo(path).suffix().toLower();
@@ -33,8 +26,9 @@ std::optional<ProgramFile> openProgramFile(const QString &path, ProgramFileKind 
     // A target asked for is the user's word; one a file names is the file's.
     const auto unknown = [&](const QString &id) {
         const QString known = targetIds().join(QStringLiteral(", "));
-        *error = id == options.target ? Tr::tr("unknown target %1 (%2)").arg(id, known)
-                                      : Tr::tr("%1: unknown target %2 (%3)").arg(path, id, known);
+        *error = id == options.target
+                     ? ProjectTr::tr("unknown target %1 (%2)").arg(id, known)
+                     : ProjectTr::tr("%1: unknown target %2 (%3)").arg(path, id, known);
         return std::nullopt;
     };
     if (kind == ProgramFileKind::Project) {
@@ -47,8 +41,8 @@ std::optional<ProgramFile> openProgramFile(const QString &path, ProgramFileKind 
         if (!options.target.isEmpty() && Target::byId(options.target) != project->target) {
             if (!Target::byId(options.target))
                 return unknown(options.target);
-            *error =
-                Tr::tr("%1 is a %2 project, not %3").arg(path, project->target->id, options.target);
+            *error = ProjectTr::tr("%1 is a %2 project, not %3")
+                         .arg(path, project->target->id, options.target);
             return std::nullopt;
         }
         file.target = project->target;
