@@ -201,15 +201,9 @@ void LadderPainter::paintContact(QPainter &p, const QRectF &cell, const model::C
         p.drawLine(QPointF(cx - half - 3, y + h), QPointF(cx + half + 3, y - h));
         break;
     case model::ContactMode::Rising:
-    case model::ContactMode::Falling: {
-        const bool up = c.mode == model::ContactMode::Rising;
-        const double a = up ? y + h * 0.7 : y - h * 0.7;
-        const double b = up ? y - h * 0.7 : y + h * 0.7;
-        p.drawLine(QPointF(cx, a), QPointF(cx, b));
-        p.drawLine(QPointF(cx, b), QPointF(cx - 3, b + (up ? 4 : -4)));
-        p.drawLine(QPointF(cx, b), QPointF(cx + 3, b + (up ? 4 : -4)));
+    case model::ContactMode::Falling:
+        paintEdgeArrow(p, cx, y, h, c.mode == model::ContactMode::Rising);
         break;
-    }
     }
     if (!c.operands.empty()) {
         p.setFont(m_font);
@@ -353,6 +347,15 @@ void LadderPainter::paintContinuation(QPainter &p, QPointF at, int mark, int row
     p.drawText(QRectF(at.x() - 3 * s - 4, at.y() - 4.4 * s, 6 * s + 8, 3 * s), Qt::AlignCenter,
                QStringLiteral("%1%2").arg(mark).arg(QChar(u'a' + row % 26)));
     p.restore();
+}
+
+void LadderPainter::paintEdgeArrow(QPainter &p, double cx, double y, double h, bool up) {
+    // The arrow inside a rising (up) or falling edge contact.
+    const double a = up ? y + h * 0.7 : y - h * 0.7;
+    const double b = up ? y - h * 0.7 : y + h * 0.7;
+    p.drawLine(QPointF(cx, a), QPointF(cx, b));
+    p.drawLine(QPointF(cx, b), QPointF(cx - 3, b + (up ? 4 : -4)));
+    p.drawLine(QPointF(cx, b), QPointF(cx + 3, b + (up ? 4 : -4)));
 }
 
 void LadderPainter::paintLinks(QPainter &p, const model::Rung &rung, int row, double commentH,

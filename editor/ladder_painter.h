@@ -116,6 +116,8 @@ private:
     // `live`: the monitored value to show in the box under its instruction.
     void paintOutput(QPainter &p, const QRectF &area, const model::Instruction &ins,
                      const QString &live = QString()) const;
+    // The arrow of an edge contact, centred at (cx, y), h its half height.
+    static void paintEdgeArrow(QPainter &p, double cx, double y, double h, bool up);
     // The vertical links below `row` (those whose node is ON in `powered`; null: all).
     void paintLinks(QPainter &p, const model::Rung &rung, int row, double commentH,
                     const RungOverlay *powered) const;

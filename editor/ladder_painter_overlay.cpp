@@ -112,12 +112,7 @@ void LadderPainter::paintContactState(QPainter &p, const QRectF &cell, const mod
                 p.drawLine(QPointF(cx - half + 1, y + h - 1), QPointF(cx + half - 1, y - h + 1));
             } else if (c.mode == model::ContactMode::Rising ||
                        c.mode == model::ContactMode::Falling) {
-                const bool up = c.mode == model::ContactMode::Rising;
-                const double a = up ? y + h * 0.7 : y - h * 0.7;
-                const double b = up ? y - h * 0.7 : y + h * 0.7;
-                p.drawLine(QPointF(cx, a), QPointF(cx, b));
-                p.drawLine(QPointF(cx, b), QPointF(cx - 3, b + (up ? 4 : -4)));
-                p.drawLine(QPointF(cx, b), QPointF(cx + 3, b + (up ? 4 : -4)));
+                paintEdgeArrow(p, cx, y, h, c.mode == model::ContactMode::Rising);
             }
         }
     }
