@@ -29,6 +29,9 @@ struct ProjectTr {
 struct TriggerTr {
     Q_DECLARE_TR_FUNCTIONS(rung::model::Trigger)
 };
+struct TypedListingTr {
+    Q_DECLARE_TR_FUNCTIONS(rung::model::TypedListing)
+};
 struct ValueFormatTr {
     Q_DECLARE_TR_FUNCTIONS(rung::model::ValueFormat)
 };

@@ -3511,12 +3511,12 @@ Kiértékelés: %4 µs (%5..%6)</translation>
 <context>
     <name>rung::editor::Document</name>
     <message>
-        <location filename="../editor/document.cpp" line="+45"/>
+        <location filename="../editor/document.cpp" line="+44"/>
         <source>Edit symbols</source>
         <translation>Szimbólumok szerkesztése</translation>
     </message>
     <message>
-        <location line="+147"/>
+        <location line="+91"/>
         <source>Untitled</source>
         <translation>Névtelen</translation>
     </message>
@@ -3538,27 +3538,12 @@ Kiértékelés: %4 µs (%5..%6)</translation>
         </translation>
     </message>
     <message>
-        <location line="+59"/>
-        <source>This line stood for a rung of another program: delete the line or undo the paste</source>
-        <translation>Ez a sor egy másik program létrafokát jelölte: törölje a sort, vagy vonja vissza a beillesztést</translation>
-    </message>
-    <message>
-        <location line="+69"/>
+        <location line="+36"/>
         <source>Edit instruction list</source>
         <translation>Utasításlista szerkesztése</translation>
     </message>
     <message>
-        <location line="+29"/>
-        <source>This line keeps %1 (row %2, column %3) of rung %4, but no rung follows it: delete the line to let the contact go, or undo</source>
-        <translation>Ez a sor a(z) %4. létrafok %1 érintkezőjét (%2. sor, %3. oszlop) őrzi, de nem követi létrafok: törölje a sort, és az érintkező elmarad, vagy vonja vissza a szerkesztést</translation>
-    </message>
-    <message>
-        <location line="+46"/>
-        <source>%1 (row %2, column %3) of rung %4 finds no place in the rung typed below this line: delete the line to let it go, or undo</source>
-        <translation>A(z) %4. létrafok %1 érintkezője (%2. sor, %3. oszlop) nem fér el a sor alatt beírt létrafokban: törölje a sort, és az érintkező elmarad, vagy vonja vissza a szerkesztést</translation>
-    </message>
-    <message>
-        <location line="+64"/>
+        <location line="+50"/>
         <source>Rung %1: %2 (row %3, column %4) is on no path to an output, so the list leaves it out; the ladder keeps it while this line stays.</source>
         <translation>A(z) %1. létrafok: %2 (%3. sor, %4. oszlop) nincs rajta egyetlen kimenethez vezető áramúton sem, ezért a lista kihagyja; a létradiagram megtartja, amíg ez a sor megvan.</translation>
     </message>
@@ -7158,6 +7143,24 @@ Kiértékelés: %4 µs (%5..%6)</translation>
         <location line="+10"/>
         <source>%1 is a word: compare it with a value (&quot;%1 &gt; 100&quot;)</source>
         <translation>%1 szó: hasonlítsa össze egy értékkel (&quot;%1 &gt; 100&quot;)</translation>
+    </message>
+</context>
+<context>
+    <name>rung::model::TypedListing</name>
+    <message>
+        <location filename="../model/convert/typed_listing.cpp" line="+79"/>
+        <source>This line keeps %1 (row %2, column %3) of rung %4, but no rung follows it: delete the line to let the contact go, or undo</source>
+        <translation>Ez a sor a(z) %4. létrafok %1 érintkezőjét (%2. sor, %3. oszlop) őrzi, de nem követi létrafok: törölje a sort, és az érintkező elmarad, vagy vonja vissza a szerkesztést</translation>
+    </message>
+    <message>
+        <location line="+48"/>
+        <source>%1 (row %2, column %3) of rung %4 finds no place in the rung typed below this line: delete the line to let it go, or undo</source>
+        <translation>A(z) %4. létrafok %1 érintkezője (%2. sor, %3. oszlop) nem fér el a sor alatt beírt létrafokban: törölje a sort, és az érintkező elmarad, vagy vonja vissza a szerkesztést</translation>
+    </message>
+    <message>
+        <location line="+87"/>
+        <source>This line stood for a rung of another program: delete the line or undo the paste</source>
+        <translation>Ez a sor egy másik program létrafokát jelölte: törölje a sort, vagy vonja vissza a beillesztést</translation>
     </message>
 </context>
 <context>

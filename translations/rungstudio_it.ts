@@ -3517,12 +3517,12 @@ Valutazione: %4 µs (%5..%6)</translation>
 <context>
     <name>rung::editor::Document</name>
     <message>
-        <location filename="../editor/document.cpp" line="+45"/>
+        <location filename="../editor/document.cpp" line="+44"/>
         <source>Edit symbols</source>
         <translation>Modifica simboli</translation>
     </message>
     <message>
-        <location line="+147"/>
+        <location line="+91"/>
         <source>Untitled</source>
         <translation>Senza titolo</translation>
     </message>
@@ -3545,27 +3545,12 @@ Valutazione: %4 µs (%5..%6)</translation>
         </translation>
     </message>
     <message>
-        <location line="+59"/>
-        <source>This line stood for a rung of another program: delete the line or undo the paste</source>
-        <translation>Questa riga rappresentava un segmento di un altro programma: elimina la riga o annulla l&apos;incolla</translation>
-    </message>
-    <message>
-        <location line="+69"/>
+        <location line="+36"/>
         <source>Edit instruction list</source>
         <translation>Modifica lista istruzioni</translation>
     </message>
     <message>
-        <location line="+29"/>
-        <source>This line keeps %1 (row %2, column %3) of rung %4, but no rung follows it: delete the line to let the contact go, or undo</source>
-        <translation>Questa riga conserva %1 (riga %2, colonna %3) del segmento %4, ma nessun segmento la segue: elimina la riga per lasciar andare il contatto, oppure annulla</translation>
-    </message>
-    <message>
-        <location line="+46"/>
-        <source>%1 (row %2, column %3) of rung %4 finds no place in the rung typed below this line: delete the line to let it go, or undo</source>
-        <translation>%1 (riga %2, colonna %3) del segmento %4 non trova posto nel segmento scritto sotto questa riga: elimina la riga per lasciarlo andare, oppure annulla</translation>
-    </message>
-    <message>
-        <location line="+64"/>
+        <location line="+50"/>
         <source>Rung %1: %2 (row %3, column %4) is on no path to an output, so the list leaves it out; the ladder keeps it while this line stays.</source>
         <translation>Segmento %1: %2 (riga %3, colonna %4) non è su alcun percorso verso un&apos;uscita, quindi la lista lo omette; il ladder lo conserva finché resta questa riga.</translation>
     </message>
@@ -7173,6 +7158,24 @@ Valutazione: %4 µs (%5..%6)</translation>
         <location line="+10"/>
         <source>%1 is a word: compare it with a value (&quot;%1 &gt; 100&quot;)</source>
         <translation>%1 è una word: confrontarla con un valore (&quot;%1 &gt; 100&quot;)</translation>
+    </message>
+</context>
+<context>
+    <name>rung::model::TypedListing</name>
+    <message>
+        <location filename="../model/convert/typed_listing.cpp" line="+79"/>
+        <source>This line keeps %1 (row %2, column %3) of rung %4, but no rung follows it: delete the line to let the contact go, or undo</source>
+        <translation>Questa riga conserva %1 (riga %2, colonna %3) del segmento %4, ma nessun segmento la segue: elimina la riga per lasciar andare il contatto, oppure annulla</translation>
+    </message>
+    <message>
+        <location line="+48"/>
+        <source>%1 (row %2, column %3) of rung %4 finds no place in the rung typed below this line: delete the line to let it go, or undo</source>
+        <translation>%1 (riga %2, colonna %3) del segmento %4 non trova posto nel segmento scritto sotto questa riga: elimina la riga per lasciarlo andare, oppure annulla</translation>
+    </message>
+    <message>
+        <location line="+87"/>
+        <source>This line stood for a rung of another program: delete the line or undo the paste</source>
+        <translation>Questa riga rappresentava un segmento di un altro programma: elimina la riga o annulla l&apos;incolla</translation>
     </message>
 </context>
 <context>
