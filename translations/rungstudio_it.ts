@@ -4097,14 +4097,6 @@ Valutazione: %4 µs (%5..%6)</translation>
     </message>
 </context>
 <context>
-    <name>rung::editor::SymbolsCsv</name>
-    <message>
-        <location filename="../editor/symbols_csv.cpp" line="+113"/>
-        <source>a symbol without a device</source>
-        <translation>un simbolo senza operando</translation>
-    </message>
-</context>
-<context>
     <name>rung::editor::TimingChart</name>
     <message>
         <location filename="../editor/timing_chart.cpp" line="+179"/>
@@ -5640,6 +5632,14 @@ Valutazione: %4 µs (%5..%6)</translation>
         <location line="+13"/>
         <source>%1 is a %2 project, not %3</source>
         <translation>%1 è un progetto %2, non %3</translation>
+    </message>
+</context>
+<context>
+    <name>rung::model::SymbolsCsv</name>
+    <message>
+        <location filename="../model/project/symbols_csv.cpp" line="+113"/>
+        <source>a symbol without a device</source>
+        <translation>un simbolo senza operando</translation>
     </message>
 </context>
 <context>
