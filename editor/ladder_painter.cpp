@@ -359,7 +359,7 @@ void LadderPainter::paintEdgeArrow(QPainter &p, double cx, double y, double h, b
 }
 
 void LadderPainter::paintLinks(QPainter &p, const model::Rung &rung, int row, double commentH,
-                               const RungOverlay *powered) const {
+                               const model::RungOverlay *powered) const {
     // Vertical links between this row and the next; a link on a block boundary shows at the
     // end of one block and the start of the next.
     if (row + 1 >= rung.rows)
@@ -496,7 +496,7 @@ void LadderPainter::paintRung(QPainter &p, QPointF origin, int index,
             const std::vector<int> inputs = rung.boxInputRows(r);
             if (inputs.size() > 1)
                 area.setBottom(outputRect(rung, inputs.back()).bottom());
-            const RungOverlay::Output *live = d.overlay ? d.overlay->output(r) : nullptr;
+            const model::RungOverlay::Output *live = d.overlay ? d.overlay->output(r) : nullptr;
             paintOutput(p, area, *out, live ? live->value : QString());
             if (inputs.size() > 1) {
                 p.setFont(m_small);

@@ -67,7 +67,7 @@ void LadderPainter::paintForced(QPainter &p, const QRectF &element, bool stale) 
 }
 
 void LadderPainter::paintContactState(QPainter &p, const QRectF &cell, const model::Contact &c,
-                                      const RungOverlay &o, int row, int column) const {
+                                      const model::RungOverlay &o, int row, int column) const {
     const bool stale = o.stale;
     const double y = wireY(cell.top());
     const double cx = cell.center().x();
@@ -121,7 +121,7 @@ void LadderPainter::paintContactState(QPainter &p, const QRectF &cell, const mod
 }
 
 void LadderPainter::paintOutputState(QPainter &p, const QRectF &area, const model::Instruction &ins,
-                                     const RungOverlay::Output &out, bool stale) const {
+                                     const model::RungOverlay::Output &out, bool stale) const {
     const double y = wireY(area.top());
     const double h = m_m.rowHeight * 0.2;
     const QPen live = livePen(stale);
@@ -194,7 +194,8 @@ void LadderPainter::paintOutputState(QPainter &p, const QRectF &area, const mode
         paintForced(p, box.adjusted(-3, -3, 3, 3), stale);
 }
 
-void LadderPainter::paintOverlay(QPainter &p, const model::Rung &rung, const RungOverlay &o) const {
+void LadderPainter::paintOverlay(QPainter &p, const model::Rung &rung,
+                                 const model::RungOverlay &o) const {
     p.save();
     const double commentH = m_m.commentBlock(rung);
     const QPen live = livePen(o.stale);
@@ -230,7 +231,7 @@ void LadderPainter::paintOverlay(QPainter &p, const model::Rung &rung, const Run
             p.setPen(live);
             p.drawLine(*wire);
         }
-        const RungOverlay::Output *state = o.output(r);
+        const model::RungOverlay::Output *state = o.output(r);
         if (out && out->spec && state) {
             QRectF area = outRect;
             const std::vector<int> inputs = rung.boxInputRows(r);

@@ -23,6 +23,9 @@ struct InstructionListTr {
 struct LadderTextTr {
     Q_DECLARE_TR_FUNCTIONS(rung::model::LadderText)
 };
+struct PowerFlowTr {
+    Q_DECLARE_TR_FUNCTIONS(rung::model::PowerFlow)
+};
 struct ProjectTr {
     Q_DECLARE_TR_FUNCTIONS(rung::model::Project)
 };

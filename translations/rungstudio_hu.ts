@@ -3827,7 +3827,7 @@ Kiértékelés: %4 µs (%5..%6)</translation>
         <translation>KI</translation>
     </message>
     <message>
-        <location line="+7"/>
+        <location line="+8"/>
         <source>%1 (forced)</source>
         <translation>%1 (kényszerített)</translation>
     </message>
@@ -3954,33 +3954,6 @@ Kiértékelés: %4 µs (%5..%6)</translation>
         <location line="+7"/>
         <source>Preset of %1 written: %2 (in %3)</source>
         <translation>%1 beállított értéke írva: %2 (itt: %3)</translation>
-    </message>
-</context>
-<context>
-    <name>rung::editor::PowerFlow</name>
-    <message>
-        <location filename="../editor/il_editor_monitor.cpp" line="+102"/>
-        <location filename="../editor/power_flow.cpp" line="+307"/>
-        <source>ON</source>
-        <translation>BE</translation>
-    </message>
-    <message>
-        <location line="+1"/>
-        <location filename="../editor/power_flow.cpp" line="+0"/>
-        <source>OFF</source>
-        <translation>KI</translation>
-    </message>
-    <message>
-        <location filename="../editor/power_flow.cpp" line="+57"/>
-        <source>%1/%2 ×%3 s</source>
-        <extracomment>a timer&apos;s time elapsed / set value in its units, then the unit: &quot;23/50 ×0.1 s&quot;</extracomment>
-        <translation>%1/%2 ×%3 s</translation>
-    </message>
-    <message>
-        <location line="+29"/>
-        <source>%1 = %2</source>
-        <extracomment>a device and its value under a box: &quot;D0 = 12&quot;</extracomment>
-        <translation>%1 = %2</translation>
     </message>
 </context>
 <context>
@@ -5423,6 +5396,31 @@ Kiértékelés: %4 µs (%5..%6)</translation>
         <location line="+69"/>
         <source>&apos;%1&apos; is not a contact</source>
         <translation>A(z) &apos;%1&apos; nem érintkező</translation>
+    </message>
+</context>
+<context>
+    <name>rung::model::PowerFlow</name>
+    <message>
+        <location filename="../model/image/power_flow.cpp" line="+395"/>
+        <source>ON</source>
+        <translation>BE</translation>
+    </message>
+    <message>
+        <location line="+0"/>
+        <source>OFF</source>
+        <translation>KI</translation>
+    </message>
+    <message>
+        <location line="-35"/>
+        <source>%1/%2 ×%3 s</source>
+        <extracomment>a timer&apos;s time elapsed / set value in its units, then the unit: &quot;23/50 ×0.1 s&quot;</extracomment>
+        <translation>%1/%2 ×%3 s</translation>
+    </message>
+    <message>
+        <location line="+28"/>
+        <source>%1 = %2</source>
+        <extracomment>a device and its value under a box: &quot;D0 = 12&quot;</extracomment>
+        <translation>%1 = %2</translation>
     </message>
 </context>
 <context>

@@ -3834,7 +3834,7 @@ Valutazione: %4 µs (%5..%6)</translation>
         <translation>OFF</translation>
     </message>
     <message>
-        <location line="+7"/>
+        <location line="+8"/>
         <source>%1 (forced)</source>
         <translation>%1 (forzato)</translation>
     </message>
@@ -3961,33 +3961,6 @@ Valutazione: %4 µs (%5..%6)</translation>
         <location line="+7"/>
         <source>Preset of %1 written: %2 (in %3)</source>
         <translation>Valore di preset di %1 scritto: %2 (in %3)</translation>
-    </message>
-</context>
-<context>
-    <name>rung::editor::PowerFlow</name>
-    <message>
-        <location filename="../editor/il_editor_monitor.cpp" line="+102"/>
-        <location filename="../editor/power_flow.cpp" line="+307"/>
-        <source>ON</source>
-        <translation>ON</translation>
-    </message>
-    <message>
-        <location line="+1"/>
-        <location filename="../editor/power_flow.cpp" line="+0"/>
-        <source>OFF</source>
-        <translation>OFF</translation>
-    </message>
-    <message>
-        <location filename="../editor/power_flow.cpp" line="+57"/>
-        <source>%1/%2 ×%3 s</source>
-        <extracomment>a timer&apos;s time elapsed / set value in its units, then the unit: &quot;23/50 ×0.1 s&quot;</extracomment>
-        <translation>%1/%2 ×%3 s</translation>
-    </message>
-    <message>
-        <location line="+29"/>
-        <source>%1 = %2</source>
-        <extracomment>a device and its value under a box: &quot;D0 = 12&quot;</extracomment>
-        <translation>%1 = %2</translation>
     </message>
 </context>
 <context>
@@ -5438,6 +5411,31 @@ Valutazione: %4 µs (%5..%6)</translation>
         <location line="+69"/>
         <source>&apos;%1&apos; is not a contact</source>
         <translation>&apos;%1&apos; non è un contatto</translation>
+    </message>
+</context>
+<context>
+    <name>rung::model::PowerFlow</name>
+    <message>
+        <location filename="../model/image/power_flow.cpp" line="+395"/>
+        <source>ON</source>
+        <translation>ON</translation>
+    </message>
+    <message>
+        <location line="+0"/>
+        <source>OFF</source>
+        <translation>OFF</translation>
+    </message>
+    <message>
+        <location line="-35"/>
+        <source>%1/%2 ×%3 s</source>
+        <extracomment>a timer&apos;s time elapsed / set value in its units, then the unit: &quot;23/50 ×0.1 s&quot;</extracomment>
+        <translation>%1/%2 ×%3 s</translation>
+    </message>
+    <message>
+        <location line="+28"/>
+        <source>%1 = %2</source>
+        <extracomment>a device and its value under a box: &quot;D0 = 12&quot;</extracomment>
+        <translation>%1 = %2</translation>
     </message>
 </context>
 <context>
