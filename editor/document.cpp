@@ -1,13 +1,12 @@
 #include "document.h"
 
-#include <algorithm>
-
 #include "model/ladder/ladder_text.h"
+#include "model/target/address.h"
 
-#include <QCryptographicHash>
 #include <QFileInfo>
-#include <QRegularExpression>
 #include <QUndoCommand>
+
+#include <algorithm>
 
 #include <map>
 #include <set>
@@ -72,63 +71,7 @@ private:
     std::vector<model::WatchList> m_new;
 };
 
-// "; [[3:9f2c41]] ...": the marker is the same in every language, so the list's text reads back
-// whatever the UI language was when it was shown.
-const QRegularExpression &placeholderPattern() {
-    static const QRegularExpression re(
-        QStringLiteral("^\\s*(?:;|//)\\s*\\[\\[(\\d+:[0-9a-f]+(?:@\\d+,\\d+)?)\\]\\]"));
-    return re;
-}
-
-// What a rung lists on its own: its instructions, with the cell each came from.
-model::ToListingResult listedAlone(const model::Target &target, const model::Rung &rung) {
-    model::LadderProgram one;
-    one.target = &target;
-    one.rungs = {rung};
-    return model::ladderToList(one);
-}
-
-bool sameInstructions(const model::ToListingResult &a, const model::ToListingResult &b) {
-    const auto &x = a.list.instructions;
-    const auto &y = b.list.instructions;
-    return a.problems.empty() && b.problems.empty() && x.size() == y.size() &&
-           std::equal(x.begin(), x.end(), y.begin(),
-                      [](const model::Instruction &i, const model::Instruction &j) {
-                          return i.sameAs(j);
-                      });
-}
-
-// The contacts of listed rung `index` that the list leaves out, being on no path to an output
-// (LD002): (row, column), in reading order.
-std::vector<std::pair<int, int>> leftOutContacts(const model::Rung &rung, int index,
-                                                 const model::ToListingResult &listing) {
-    std::set<std::pair<int, int>> listed;
-    const auto r = static_cast<std::size_t>(index);
-    if (r + 1 < listing.rungFirst.size()) // the rung's own instructions only: no pass over all
-        for (auto i = static_cast<std::size_t>(listing.rungFirst[r]);
-             i < static_cast<std::size_t>(listing.rungFirst[r + 1]) && i < listing.origin.size();
-             ++i)
-            if (const model::CellOrigin &o = listing.origin[i]; o.row >= 0 && o.column >= 0)
-                listed.emplace(o.row, o.column);
-    std::vector<std::pair<int, int>> out;
-    for (int row = 0; row < rung.rows; ++row)
-        for (int col = 0; col < rung.columns; ++col)
-            if (rung.cell(row, col).kind == model::CellKind::Contact && !listed.count({row, col}))
-                out.emplace_back(row, col);
-    return out;
-}
-
-QString contactName(const model::Target &target, const model::Contact &contact) {
-    return contact.operands.empty() ? model::contactToText(target, contact)
-                                    : model::formatOperand(target, contact.operands.front());
-}
-
 } // namespace
-
-QString Document::placeholderKey(const QString &line) {
-    const QRegularExpressionMatch m = placeholderPattern().match(line);
-    return m.hasMatch() ? m.captured(1) : QString();
-}
 
 Document::Document(QObject *parent)
     : QObject(parent) {
@@ -293,193 +236,19 @@ void Document::applySymbols(const std::vector<model::Symbol> &symbols) {
 
 bool Document::setListing(const QString &text, std::vector<model::Diagnostic> *errors,
                           ListingStep step) {
-    model::ParseResult parsed =
-        model::parseInstructionList(*m_project.target, text, modelVariant());
-    std::vector<model::Diagnostic> problems;
-    // The placeholder lines: each puts back the rung it stands for, at its place; one this
-    // document never showed (pasted from elsewhere) is an error rather than a lost rung.
-    std::vector<std::pair<int, const model::Rung *>> held; // line (1-based), rung
-    std::vector<KeptContact> kept;                         // the left-out contacts whose lines stay
-    {
-        const QStringList lines = text.split(QLatin1Char('\n'));
-        for (int i = 0; i < lines.size(); ++i) {
-            const QString key = placeholderKey(lines[i]);
-            if (key.isEmpty())
-                continue;
-            const QString rungKey = key.section(QLatin1Char('@'), 0, 0);
-            if (const auto it = m_held.find(rungKey); it != m_held.end()) {
-                if (!key.contains(QLatin1Char('@'))) {
-                    held.emplace_back(i + 1, &it->second);
-                    continue;
-                }
-                const QString cell = key.section(QLatin1Char('@'), 1);
-                const int row = cell.section(QLatin1Char(','), 0, 0).toInt() - 1;
-                const int col = cell.section(QLatin1Char(','), 1).toInt() - 1;
-                const model::Rung &rung = it->second;
-                if (row >= 0 && col >= 0 && row < rung.rows && col < rung.columns &&
-                    rung.cell(row, col).kind == model::CellKind::Contact) {
-                    kept.push_back(
-                        {i + 1, rungKey.section(QLatin1Char(':'), 0, 0).toInt(), &rung, row, col});
-                    continue;
-                }
-            }
-            model::Diagnostic d;
-            d.code = QStringLiteral("SYN001");
-            d.location.line = i + 1;
-            d.location.column = 1;
-            d.message = tr("This line stood for a rung of another program: delete the line or "
-                           "undo the paste");
-            problems.push_back(d);
-        }
-        std::erase_if(parsed.list.comments, [](const std::pair<int, QString> &c) {
-            return !placeholderKey(QLatin1String("; ") + c.second).isEmpty();
-        });
-    }
-    for (const model::ParseError &e : parsed.errors) {
-        model::Diagnostic d;
-        d.code = QStringLiteral("SYN001");
-        d.location.line = e.line;
-        d.location.column = e.column;
-        d.message = e.message;
-        problems.push_back(d);
-    }
-    if (!parsed.ok()) {
-        // What the lines that did parse show already (an output to an input, a coil driven
-        // twice), beside the lines that did not.
-        model::CheckOptions partial;
-        partial.model = modelVariant();
-        partial.source = &text;
-        partial.parsedLinesOnly = true;
-        for (model::Diagnostic &d : model::checkList(parsed.list, partial))
-            problems.push_back(std::move(d));
-    }
-    if (!parsed.ok() || !problems.empty()) {
-        model::sortDiagnostics(problems);
-        if (errors)
-            *errors = problems;
-        return false;
-    }
-    model::ToLadderResult ladder = model::listToLadder(parsed.list);
-    model::CheckOptions options;
-    options.model = modelVariant();
-    options.source = &text;
-    if (model::hasErrors(ladder.problems)) {
-        // A text that parses but cannot be drawn is checked whole, as `check` does: why it
-        // cannot be drawn by the documented codes (BL001, OC001, ST002, ...), next to every
-        // other finding, which the ladder (the last valid program) cannot give for this text.
-        if (errors)
-            *errors = model::checkList(parsed.list, options);
-        return false;
-    }
-    // The text stays as typed until the ladder is edited: its fuzzy forms are worth a warning
-    // with the canonical rewrite as a fix, and never stop the ladder following.
-    options.formOnly = true;
+    model::TypedListing typed = model::readTypedListing(target(), modelVariant(), text, m_held);
     if (errors)
-        *errors = model::checkList(parsed.list, options);
-    auto &rungs = ladder.ladder.rungs;
-    if (std::vector<model::Diagnostic> lost = keepContacts(kept, ladder); !lost.empty()) {
-        if (errors)
-            *errors = lost;
+        *errors = std::move(typed.findings);
+    if (!typed.rungs)
         return false;
-    }
-    // Each held rung goes before the first rung whose instructions start below its line.
-    for (std::size_t h = 0; h < held.size(); ++h) {
-        const auto [line, rung] = held[h];
-        const auto before = std::count_if(ladder.rungLine.begin(), ladder.rungLine.end(),
-                                          [line = line](int first) { return first < line; });
-        const auto at = std::min<std::size_t>(static_cast<std::size_t>(before) + h, rungs.size());
-        rungs.insert(rungs.begin() + static_cast<std::ptrdiff_t>(at), *rung);
-    }
-    if (step == ListingStep::Check || ladder.ladder.rungs == m_project.program.rungs)
+    if (step == ListingStep::Check || *typed.rungs == m_project.program.rungs)
         return true;
     if (step == ListingStep::InPlace)
-        applyRungs(0, static_cast<int>(m_project.program.rungs.size()), ladder.ladder.rungs);
+        applyRungs(0, static_cast<int>(m_project.program.rungs.size()), *typed.rungs);
     else
-        pushRungs(0, static_cast<int>(m_project.program.rungs.size()), ladder.ladder.rungs,
+        pushRungs(0, static_cast<int>(m_project.program.rungs.size()), *typed.rungs,
                   tr("Edit instruction list"));
     return true;
-}
-
-std::vector<model::Diagnostic> Document::keepContacts(const std::vector<KeptContact> &kept,
-                                                      model::ToLadderResult &ladder) const {
-    std::vector<model::Diagnostic> lost;
-    const auto problem = [&lost](const KeptContact &k, const QString &message) {
-        model::Diagnostic d;
-        d.code = QStringLiteral("SYN001"); // as a line that stood for another program's rung
-        d.severity = model::Severity::Error;
-        d.location.line = k.line;
-        d.location.column = 1;
-        d.message = message;
-        lost.push_back(d);
-    };
-    const auto name = [this](const KeptContact &k) {
-        return contactName(target(), k.drawn->cell(k.row, k.column).contact);
-    };
-    // Each contact joins the rung below its line.
-    auto &rungs = ladder.ladder.rungs;
-    std::map<std::size_t, std::vector<const KeptContact *>> byRung;
-    for (const KeptContact &k : kept) {
-        const auto below = static_cast<std::size_t>(
-            std::upper_bound(ladder.rungLine.begin(), ladder.rungLine.end(), k.line) -
-            ladder.rungLine.begin());
-        if (below < rungs.size())
-            byRung[below].push_back(&k);
-        else
-            problem(k, tr("This line keeps %1 (row %2, column %3) of rung %4, but no rung "
-                          "follows it: delete the line to let the contact go, or undo")
-                           .arg(name(k))
-                           .arg(k.row + 1)
-                           .arg(k.column + 1)
-                           .arg(k.rungNumber));
-    }
-    for (const auto &[index, marks] : byRung) {
-        model::Rung &typed = rungs[index];
-        const model::ToListingResult wanted = listedAlone(target(), typed);
-        const model::Rung *drawn = marks.front()->drawn;
-        const bool oneDrawing = std::all_of(marks.begin(), marks.end(),
-                                            [drawn](const auto *k) { return k->drawn == drawn; });
-        if (oneDrawing && sameInstructions(listedAlone(target(), *drawn), wanted)) {
-            // The rung lists as it did: its drawing comes back whole, less the left-out
-            // contacts whose lines were deleted.
-            model::Rung back = *drawn;
-            back.comment = typed.comment;
-            for (const auto &[row, col] : leftOutContacts(*drawn, 0, listedAlone(target(), *drawn)))
-                if (std::none_of(marks.begin(), marks.end(), [row = row, col = col](const auto *k) {
-                        return k->row == row && k->column == col;
-                    }))
-                    back.cell(row, col) = model::Cell{};
-            typed = back;
-            continue;
-        }
-        // The rung was edited: each contact goes back to its cell when that is free, else to
-        // a new row below the rung, where it stays off every path as it was.
-        for (const KeptContact *k : marks) {
-            const model::Cell &drawnCell = k->drawn->cell(k->row, k->column);
-            if (k->row < typed.rows && k->column < typed.columns &&
-                typed.cell(k->row, k->column) == drawnCell)
-                continue; // typed in where it stood (linked now, or as it was)
-            model::Rung merged = typed;
-            int row = k->row;
-            if (row >= merged.rows || k->column >= merged.columns ||
-                merged.cell(row, k->column).kind != model::CellKind::Empty ||
-                merged.coveredByBox(row))
-                row = merged.rows;
-            merged.widenKeepingWires(std::max(merged.rows, row + 1),
-                                     std::max(merged.columns, k->column + 1));
-            merged.cell(row, k->column) = drawnCell;
-            if (merged.cell(row, k->column).kind == model::CellKind::Contact &&
-                sameInstructions(listedAlone(target(), merged), wanted))
-                typed = merged;
-            else
-                problem(*k, tr("%1 (row %2, column %3) of rung %4 finds no place in the rung "
-                               "typed below this line: delete the line to let it go, or undo")
-                                .arg(name(*k))
-                                .arg(k->row + 1)
-                                .arg(k->column + 1)
-                                .arg(k->rungNumber));
-        }
-    }
-    return lost;
 }
 
 void Document::applyRungs(int first, int count, const std::vector<model::Rung> &rungs) {
@@ -491,16 +260,8 @@ void Document::applyRungs(int first, int count, const std::vector<model::Rung> &
 }
 
 QString Document::heldRung(int index) {
-    const model::Rung &rung = m_project.program.rungs[static_cast<std::size_t>(index)];
-    model::LadderProgram one;
-    one.target = m_project.target;
-    one.rungs = {rung};
-    const QByteArray hash =
-        QCryptographicHash::hash(model::printLadderText(one).toUtf8(), QCryptographicHash::Sha1);
-    const QString key =
-        QStringLiteral("%1:%2").arg(index + 1).arg(QString::fromLatin1(hash.toHex().left(6)));
-    m_held.insert_or_assign(key, rung);
-    return key;
+    return model::holdRung(m_held, target(), index,
+                           m_project.program.rungs[static_cast<std::size_t>(index)]);
 }
 
 void Document::refresh() {
@@ -526,7 +287,7 @@ void Document::refresh() {
                 // A listed rung: a marked line for each contact it leaves out, after the
                 // rung's own comment, before its first instruction.
                 const int index = static_cast<int>(r);
-                const auto leftOut = leftOutContacts(all[r], index, *m_listing);
+                const auto leftOut = model::leftOutContacts(all[r], index, *m_listing);
                 if (leftOut.empty())
                     continue;
                 while (next < listed.size() && listed[next].first <= at)
@@ -534,14 +295,15 @@ void Document::refresh() {
                 const QString key = heldRung(index);
                 for (const auto &[row, col] : leftOut) {
                     comments.emplace_back(
-                        at, QStringLiteral("[[%1@%2,%3]] ").arg(key).arg(row + 1).arg(col + 1) +
-                                tr("Rung %1: %2 (row %3, column %4) is on no path to an output, "
-                                   "so the list leaves it out; the ladder keeps it while this "
-                                   "line stays.")
-                                    .arg(index + 1)
-                                    .arg(contactName(target(), all[r].cell(row, col).contact))
-                                    .arg(row + 1)
-                                    .arg(col + 1));
+                        at,
+                        QStringLiteral("[[%1@%2,%3]] ").arg(key).arg(row + 1).arg(col + 1) +
+                            tr("Rung %1: %2 (row %3, column %4) is on no path to an output, "
+                               "so the list leaves it out; the ladder keeps it while this "
+                               "line stays.")
+                                .arg(index + 1)
+                                .arg(model::contactName(target(), all[r].cell(row, col).contact))
+                                .arg(row + 1)
+                                .arg(col + 1));
                     contactMarks.push_back({{index, row, col}, comments.size() - 1});
                 }
                 continue;

@@ -5,6 +5,7 @@
 
 #include "model/checks/checks.h"
 #include "model/convert/convert.h"
+#include "model/convert/typed_listing.h"
 #include "model/project/project.h"
 
 #include <QObject>
@@ -75,9 +76,7 @@ public:
     // either: a marked line before its rung's instructions names it, "; [[3:9f2c41@2,1]] Rung
     // 3: X5 (row 2, column 1) ...", and setListing keeps the contact in the rebuilt rung while
     // that line stays (deleting the line lets it go).
-    // The key a placeholder line carries ("3:9f2c41", or "3:9f2c41@2,1" for a contact), empty
-    // if the line is no placeholder.
-    static QString placeholderKey(const QString &line);
+    // model/convert/typed_listing.h reads such lines back (model::placeholderKey).
     int rungOfLine(int line) const; // 1-based line of the listing text -> rung, -1 if none
     int firstLineOfRung(int rung) const;
     // The line of the list a finding on the ladder belongs to: a left-out contact's marked
@@ -144,18 +143,6 @@ signals:
     void projectReplaced();
 
 private:
-    // A left-out contact whose marked line stays in the text given to setListing.
-    struct KeptContact {
-        int line;                 // the marked line (1-based)
-        int rungNumber;           // the rung it named (1-based, as the line says)
-        const model::Rung *drawn; // that rung as drawn (held)
-        int row;
-        int column;
-    };
-    // Puts each kept contact into the rung below its line; what finds no place is returned
-    // as an error on its line, and nothing may change then.
-    std::vector<model::Diagnostic> keepContacts(const std::vector<KeptContact> &kept,
-                                                model::ToLadderResult &ladder) const;
     void refresh();
     void pushRungs(int first, int count, const std::vector<model::Rung> &rungs,
                    const QString &label);
@@ -178,7 +165,7 @@ private:
     std::map<std::tuple<int, int, int>, int> m_leftOutLine;
     // Every rung a placeholder line has stood for since the project was opened, by the key the
     // line carries: text typed from an older list still finds its rung.
-    std::map<QString, model::Rung> m_held;
+    model::HeldRungs m_held;
     std::vector<model::Diagnostic> m_diagnostics;
     std::function<bool(int first, int count)> m_rungEditGuard;
 };

@@ -124,7 +124,7 @@ QFont IlLexer::defaultFont(int style) const {
 }
 
 std::vector<int> IlLexer::styleLine(const QString &line) const {
-    if (!Document::placeholderKey(line).isEmpty())
+    if (!model::placeholderKey(line).isEmpty())
         return std::vector<int>(static_cast<std::size_t>(line.size()), Placeholder);
     std::vector<int> styles(static_cast<std::size_t>(line.size()), Default);
     qsizetype cut = line.indexOf(QLatin1Char(';'));

@@ -8,13 +8,12 @@
 #include "il_editor.h"
 
 #include "ladder_painter.h"
+#include "model/image/power_flow.h"
 #include "monitor_commands.h"
-#include "power_flow.h"
 
 #include "model/target/address.h"
 
 #include <QContextMenuEvent>
-#include <QCoreApplication>
 #include <QMenu>
 #include <QPainter>
 
@@ -34,11 +33,8 @@ bool isDevice(const model::Operand &o) {
 } // namespace
 
 void IlEditor::setMonitorSource(model::MonitorSource *source) {
-    if (m_source == source)
+    if (!model::MonitorSource::switchSource(m_source, source, this))
         return;
-    if (m_source)
-        disconnect(m_source, nullptr, this, nullptr);
-    m_source = source;
     m_commands->setTarget(m_target);
     m_commands->setSource(source);
     m_painted.clear();
@@ -94,18 +90,18 @@ std::optional<IlEditor::LineValue> IlEditor::monitoredLine(int line) const {
             v.forced = true;
         const QString name = model::formatAddress(*m_target, o.address);
         if (k == 0 && op == model::Op::Timer)
-            parts << QStringLiteral("%1 %2").arg(name, ProgramFlow::timerText(*m_target, ins, *s));
-        else if (k == 0 && (op == model::Op::Counter || op == model::Op::UpDownCounter))
             parts << QStringLiteral("%1 %2").arg(name,
-                                                 ProgramFlow::counterText(*m_target, ins, *s));
+                                                 model::ProgramFlow::timerText(*m_target, ins, *s));
+        else if (k == 0 && (op == model::Op::Counter || op == model::Op::UpDownCounter))
+            parts << QStringLiteral("%1 %2").arg(
+                name, model::ProgramFlow::counterText(*m_target, ins, *s));
         else if (asBit && s->layout->bit(o.address).valid())
             // A contact or coil of a timer or counter is its done bit.
-            parts << QStringLiteral("%1 = %2").arg(
-                name, s->bit(o.address)
-                          ? QCoreApplication::translate("rung::editor::PowerFlow", "ON")
-                          : QCoreApplication::translate("rung::editor::PowerFlow", "OFF"));
+            parts << QStringLiteral("%1 = %2").arg(name,
+                                                   model::ProgramFlow::bitText(s->bit(o.address)));
         else
-            parts << QStringLiteral("%1 = %2").arg(name, ProgramFlow::wordText(*s, o.address));
+            parts << QStringLiteral("%1 = %2").arg(name,
+                                                   model::ProgramFlow::wordText(*s, o.address));
     }
     v.text = parts.join(QStringLiteral("  "));
     return v;

@@ -4,6 +4,7 @@
 #include "terminal_widgets.h"
 
 #include "model/image/bcd.h"
+#include "model/image/value_format.h"
 #include "model/target/address.h"
 
 #include <QComboBox>
@@ -36,13 +37,6 @@ int areaIndex(const model::Target &t, const QString &key) {
         if (t.area(k).key == key)
             return k;
     return -1;
-}
-
-std::int32_t fromBcd(std::int32_t word) {
-    std::int32_t value = 0;
-    for (int shift = 12; shift >= 0; shift -= 4)
-        value = value * 10 + std::min(9, (word >> shift) & 0xF);
-    return value;
 }
 
 std::int32_t toBcd(int value) { // four digits: the word of a CPM1 channel
@@ -311,12 +305,7 @@ void IoPanel::setAllPushButtons(bool pushButtons) {
 }
 
 void IoPanel::setMonitorSource(model::MonitorSource *source) {
-    if (m_source != source) {
-        if (m_source) {
-            disconnect(m_source, nullptr, this, nullptr);
-            m_source->setWatched(this, {});
-        }
-        m_source = source;
+    if (model::MonitorSource::switchSource(m_source, source, this)) {
         if (source) {
             connect(source, &model::MonitorSource::snapshotChanged, this, &IoPanel::showValues);
             connect(source, &model::MonitorSource::commandFinished, this,
@@ -354,7 +343,14 @@ void IoPanel::showValues() {
             face->setState(ours && snapshot->bit(t.address), ours && snapshot->forced(t.address));
         } else if (auto *analog = qobject_cast<AnalogTerminal *>(t.widget)) {
             const std::int32_t word = ours ? snapshot->value(t.address) : 0;
-            analog->setValue(t.bcd ? fromBcd(word) : word);
+            // A BCD channel holding a nibble above 9 shows the word as it is, not a number
+            // made up from it (model/image/bcd.h: one rule).
+            const std::optional<std::int64_t> number =
+                t.bcd ? model::fromBcd(word & 0xFFFF) : std::optional<std::int64_t>(word);
+            if (number)
+                analog->setValue(static_cast<int>(*number));
+            else
+                analog->setUnreadable(model::formatValue(word, 16, model::ValueFormat::Bcd));
         }
     }
 }

@@ -208,15 +208,9 @@ void LadderPainter::paintContact(QPainter &p, const QRectF &cell, const model::C
         p.drawLine(QPointF(cx - half - 3, y + h), QPointF(cx + half + 3, y - h));
         break;
     case model::ContactMode::Rising:
-    case model::ContactMode::Falling: {
-        const bool up = c.mode == model::ContactMode::Rising;
-        const double a = up ? y + h * 0.7 : y - h * 0.7;
-        const double b = up ? y - h * 0.7 : y + h * 0.7;
-        p.drawLine(QPointF(cx, a), QPointF(cx, b));
-        p.drawLine(QPointF(cx, b), QPointF(cx - 3, b + (up ? 4 : -4)));
-        p.drawLine(QPointF(cx, b), QPointF(cx + 3, b + (up ? 4 : -4)));
+    case model::ContactMode::Falling:
+        paintEdgeArrow(p, cx, y, h, c.mode == model::ContactMode::Rising);
         break;
-    }
     }
     if (!c.operands.empty()) {
         p.setFont(m_font);
@@ -397,6 +391,57 @@ void LadderPainter::paintContinuation(QPainter &p, QPointF at, int mark, int row
     p.restore();
 }
 
+void LadderPainter::paintEdgeArrow(QPainter &p, double cx, double y, double h, bool up) {
+    // The arrow inside a rising (up) or falling edge contact.
+    const double a = up ? y + h * 0.7 : y - h * 0.7;
+    const double b = up ? y - h * 0.7 : y + h * 0.7;
+    p.drawLine(QPointF(cx, a), QPointF(cx, b));
+    p.drawLine(QPointF(cx, b), QPointF(cx - 3, b + (up ? 4 : -4)));
+    p.drawLine(QPointF(cx, b), QPointF(cx + 3, b + (up ? 4 : -4)));
+}
+
+void LadderPainter::paintLinks(QPainter &p, const model::Rung &rung, int row, double commentH,
+                               const model::RungOverlay *powered) const {
+    // Vertical links between this row and the next; a link on a block boundary shows at the
+    // end of one block and the start of the next.
+    if (row + 1 >= rung.rows)
+        return;
+    const int shown = m_m.shownColumns();
+    const int blocks = m_m.blocks(rung);
+    const auto drawLink = [&](int block, double x) {
+        const double y0 = wireY(commentH + (block * m_m.blockStride(rung) + row) * m_m.rowHeight);
+        p.drawLine(QPointF(snap(x, m_pen), y0), QPointF(snap(x, m_pen), y0 + m_m.rowHeight));
+    };
+    for (int c = 0; c <= rung.columns; ++c) {
+        if (!rung.link(row, c) || (powered && !powered->nodeOn(row, c)))
+            continue;
+        if (c == rung.columns) {
+            drawLink(blocks - 1, m_m.gutter + shown * m_m.cellWidth);
+            continue;
+        }
+        const int block = std::min(c / std::max(1, shown), blocks - 1);
+        drawLink(block, m_m.gutter + (c - block * shown) * m_m.cellWidth);
+        if (block > 0 && c == block * shown)
+            drawLink(block - 1, m_m.gutter + shown * m_m.cellWidth);
+    }
+}
+
+std::optional<QLineF> LadderPainter::outputWire(const model::Rung &rung, int row) const {
+    // From the last contact column to the output column the row is a wire when it has an
+    // output, so every output lines up at the right.
+    const bool linkedAtEnd =
+        rung.link(row, rung.columns) || (row > 0 && rung.link(row - 1, rung.columns));
+    const bool wiredToEnd =
+        rung.columns == 0 || rung.cell(row, rung.columns - 1).kind != model::CellKind::Empty;
+    if (!(rung.outputs[static_cast<std::size_t>(row)] || rung.coveredByBox(row) || linkedAtEnd) ||
+        !wiredToEnd)
+        return std::nullopt;
+    const QRectF outRect = outputRect(rung, row);
+    const double y = wireY(outRect.top());
+    const int endInBlock = rung.columns - (m_m.blocks(rung) - 1) * m_m.shownColumns();
+    return QLineF(QPointF(m_m.gutter + endInBlock * m_m.cellWidth, y), QPointF(outRect.left(), y));
+}
+
 void LadderPainter::paintRung(QPainter &p, QPointF origin, int index,
                               const RungDecorations &d) const {
     const model::Rung &rung = m_project.program.rungs[static_cast<std::size_t>(index)];
@@ -480,48 +525,20 @@ void LadderPainter::paintRung(QPainter &p, QPointF origin, int index,
                              d.overlay ? d.overlay->valueAt(r, c) : QString());
             }
         }
-        // Vertical links between this row and the next; a link on a block boundary shows at
-        // the end of one block and the start of the next.
         p.setPen(inkPen());
-        for (int c = 0; c <= rung.columns; ++c) {
-            if (r + 1 >= rung.rows || !rung.link(r, c))
-                continue;
-            auto drawLink = [&](int block, double x) {
-                const double y0 =
-                    wireY(commentH + (block * m_m.blockStride(rung) + r) * m_m.rowHeight);
-                p.drawLine(QPointF(snap(x, m_pen), y0),
-                           QPointF(snap(x, m_pen), y0 + m_m.rowHeight));
-            };
-            if (c == rung.columns) {
-                drawLink(blocks - 1, m_m.gutter + shown * m_m.cellWidth);
-                continue;
-            }
-            const int block = std::min(c / std::max(1, shown), blocks - 1);
-            drawLink(block, m_m.gutter + (c - block * shown) * m_m.cellWidth);
-            if (block > 0 && c == block * shown)
-                drawLink(block - 1, m_m.gutter + shown * m_m.cellWidth);
-        }
-        // From the last contact column to the output column the row is a wire when it has an
-        // output, so every output lines up at the right.
+        paintLinks(p, rung, r, commentH, nullptr);
         const auto &out = rung.outputs[static_cast<std::size_t>(r)];
         const QRectF outRect = outputRect(rung, r);
-        const double y = wireY(outRect.top());
-        const bool linkedAtEnd =
-            rung.link(r, rung.columns) || (r > 0 && rung.link(r - 1, rung.columns));
-        const bool wiredToEnd =
-            rung.columns == 0 || rung.cell(r, rung.columns - 1).kind != model::CellKind::Empty;
-        if ((out || rung.coveredByBox(r) || linkedAtEnd) && wiredToEnd) {
+        if (const std::optional<QLineF> wire = outputWire(rung, r)) {
             p.setPen(inkPen());
-            const int endInBlock = rung.columns - (blocks - 1) * shown;
-            p.drawLine(QPointF(m_m.gutter + endInBlock * m_m.cellWidth, y),
-                       QPointF(outRect.left(), y));
+            p.drawLine(*wire);
         }
         if (out && out->spec) {
             QRectF area = outRect;
             const std::vector<int> inputs = rung.boxInputRows(r);
             if (inputs.size() > 1)
                 area.setBottom(outputRect(rung, inputs.back()).bottom());
-            const RungOverlay::Output *live = d.overlay ? d.overlay->output(r) : nullptr;
+            const model::RungOverlay::Output *live = d.overlay ? d.overlay->output(r) : nullptr;
             paintOutput(p, area, *out, live ? live->value : QString());
             if (inputs.size() > 1) {
                 p.setFont(m_small);

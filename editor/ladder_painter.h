@@ -3,7 +3,7 @@
 // Draws rungs with QPainter: the screen, print, PDF, SVG and PNG export share it, so every
 // output looks the same and stays crisp at any scale.
 
-#include "power_flow.h"
+#include "model/image/power_flow.h"
 
 #include "model/checks/diagnostic.h"
 #include "model/project/project.h"
@@ -14,6 +14,7 @@
 #include <QStringList>
 
 #include <algorithm>
+#include <optional>
 #include <set>
 
 namespace rung::editor {
@@ -83,7 +84,7 @@ struct RungDecorations {
     std::pair<int, int> stoppedAt{-1, -1};
     // The live overlay (a running simulation, an online PLC): power flow, states, values and
     // forced devices drawn over the rung; null when nothing is monitored.
-    const RungOverlay *overlay = nullptr;
+    const model::RungOverlay *overlay = nullptr;
 };
 
 class LadderPainter {
@@ -125,12 +126,20 @@ private:
     // `live`: the monitored value to show in the box under its instruction.
     void paintOutput(QPainter &p, const QRectF &area, const model::Instruction &ins,
                      const QString &live = QString()) const;
+    // The arrow of an edge contact, centred at (cx, y), h its half height.
+    static void paintEdgeArrow(QPainter &p, double cx, double y, double h, bool up);
+    // The vertical links below `row` (those whose node is ON in `powered`; null: all).
+    void paintLinks(QPainter &p, const model::Rung &rung, int row, double commentH,
+                    const model::RungOverlay *powered) const;
+    // The wire from the row's last contact column to the output column, where it has one.
+    std::optional<QLineF> outputWire(const model::Rung &rung, int row) const;
     // The overlay over a painted rung (ladder_painter_overlay.cpp).
-    void paintOverlay(QPainter &p, const model::Rung &rung, const RungOverlay &overlay) const;
+    void paintOverlay(QPainter &p, const model::Rung &rung,
+                      const model::RungOverlay &overlay) const;
     void paintContactState(QPainter &p, const QRectF &cell, const model::Contact &contact,
-                           const RungOverlay &o, int row, int column) const;
+                           const model::RungOverlay &o, int row, int column) const;
     void paintOutputState(QPainter &p, const QRectF &area, const model::Instruction &ins,
-                          const RungOverlay::Output &out, bool stale) const;
+                          const model::RungOverlay::Output &out, bool stale) const;
     // A forced element: a dashed outline round it and the "F" badge in `badge`.
     void paintForced(QPainter &p, const QRectF &element, const QRectF &badge, bool stale) const;
     double forceBadgeSize() const;

@@ -85,7 +85,7 @@ QRectF LadderPainter::forceBadgeBeside(const QRectF &cell, double symbolRight) c
 }
 
 void LadderPainter::paintContactState(QPainter &p, const QRectF &cell, const model::Contact &c,
-                                      const RungOverlay &o, int row, int column) const {
+                                      const model::RungOverlay &o, int row, int column) const {
     const bool stale = o.stale;
     const double y = wireY(cell.top());
     const double cx = cell.center().x();
@@ -130,12 +130,7 @@ void LadderPainter::paintContactState(QPainter &p, const QRectF &cell, const mod
                 p.drawLine(QPointF(cx - half + 1, y + h - 1), QPointF(cx + half - 1, y - h + 1));
             } else if (c.mode == model::ContactMode::Rising ||
                        c.mode == model::ContactMode::Falling) {
-                const bool up = c.mode == model::ContactMode::Rising;
-                const double a = up ? y + h * 0.7 : y - h * 0.7;
-                const double b = up ? y - h * 0.7 : y + h * 0.7;
-                p.drawLine(QPointF(cx, a), QPointF(cx, b));
-                p.drawLine(QPointF(cx, b), QPointF(cx - 3, b + (up ? 4 : -4)));
-                p.drawLine(QPointF(cx, b), QPointF(cx + 3, b + (up ? 4 : -4)));
+                paintEdgeArrow(p, cx, y, h, c.mode == model::ContactMode::Rising);
             }
         }
     }
@@ -148,7 +143,7 @@ void LadderPainter::paintContactState(QPainter &p, const QRectF &cell, const mod
 }
 
 void LadderPainter::paintOutputState(QPainter &p, const QRectF &area, const model::Instruction &ins,
-                                     const RungOverlay::Output &out, bool stale) const {
+                                     const model::RungOverlay::Output &out, bool stale) const {
     const double y = wireY(area.top());
     const double h = m_m.rowHeight * 0.2;
     const QPen live = livePen(stale);
@@ -225,11 +220,10 @@ void LadderPainter::paintOutputState(QPainter &p, const QRectF &area, const mode
     }
 }
 
-void LadderPainter::paintOverlay(QPainter &p, const model::Rung &rung, const RungOverlay &o) const {
+void LadderPainter::paintOverlay(QPainter &p, const model::Rung &rung,
+                                 const model::RungOverlay &o) const {
     p.save();
     const double commentH = m_m.commentBlock(rung);
-    const int shown = m_m.shownColumns();
-    const int blocks = m_m.blocks(rung);
     const QPen live = livePen(o.stale);
     if (o.rail) {
         // The left rail beside the first block, heavier than the plain rail underneath.
@@ -252,43 +246,18 @@ void LadderPainter::paintOverlay(QPainter &p, const model::Rung &rung, const Run
                 paintContactState(p, rect, cell.contact, o, r, c);
             }
         }
-        // Vertical links carry the power of the node they join (as the plain painter places
-        // them, a link on a block boundary at both ends).
+        // Vertical links carry the power of the node they join.
         p.setPen(live);
-        for (int c = 0; c <= rung.columns; ++c) {
-            if (r + 1 >= rung.rows || !rung.link(r, c) || !o.nodeOn(r, c))
-                continue;
-            auto drawLink = [&](int block, double x) {
-                const double y0 =
-                    wireY(commentH + (block * m_m.blockStride(rung) + r) * m_m.rowHeight);
-                p.drawLine(QPointF(snap(x, m_pen), y0),
-                           QPointF(snap(x, m_pen), y0 + m_m.rowHeight));
-            };
-            if (c == rung.columns) {
-                drawLink(blocks - 1, m_m.gutter + shown * m_m.cellWidth);
-                continue;
-            }
-            const int block = std::min(c / std::max(1, shown), blocks - 1);
-            drawLink(block, m_m.gutter + (c - block * shown) * m_m.cellWidth);
-            if (block > 0 && c == block * shown)
-                drawLink(block - 1, m_m.gutter + shown * m_m.cellWidth);
-        }
+        paintLinks(p, rung, r, commentH, &o);
         // The wire from the last contact column to the output column.
         const auto &out = rung.outputs[static_cast<std::size_t>(r)];
         const QRectF outRect = outputRect(rung, r);
-        const bool linkedAtEnd =
-            rung.link(r, rung.columns) || (r > 0 && rung.link(r - 1, rung.columns));
-        const bool wiredToEnd =
-            rung.columns == 0 || rung.cell(r, rung.columns - 1).kind != model::CellKind::Empty;
-        if ((out || rung.coveredByBox(r) || linkedAtEnd) && wiredToEnd &&
-            o.nodeOn(r, rung.columns)) {
+        if (const std::optional<QLineF> wire = outputWire(rung, r);
+            wire && o.nodeOn(r, rung.columns)) {
             p.setPen(live);
-            const int endInBlock = rung.columns - (blocks - 1) * shown;
-            const double y = wireY(outRect.top());
-            p.drawLine(QPointF(m_m.gutter + endInBlock * m_m.cellWidth, y),
-                       QPointF(outRect.left(), y));
+            p.drawLine(*wire);
         }
-        const RungOverlay::Output *state = o.output(r);
+        const model::RungOverlay::Output *state = o.output(r);
         if (out && out->spec && state) {
             QRectF area = outRect;
             const std::vector<int> inputs = rung.boxInputRows(r);

@@ -242,7 +242,7 @@ void LadderView::paintEvent(QPaintEvent *) {
     const int firstVisible = std::max(0, rungAt(top));
     // The overlay of each rung on screen, computed here for a rung snapshotArrived has not
     // seen (scrolled into view since).
-    std::optional<ProgramFlow> flow;
+    std::optional<model::ProgramFlow> flow;
     if (!m_source || (m_shown && &m_shown->layout->target() != &m_document->target()))
         m_shown.reset();
     std::multimap<int, const model::Diagnostic *> findings;

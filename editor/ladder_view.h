@@ -130,7 +130,7 @@ public:
     model::MonitorSource *monitorSource() const { return m_source; }
     // The overlay of a rung as the view draws it now; empty (no rows) while nothing is
     // monitored or the snapshot is of another target.
-    RungOverlay overlay(int rung) const;
+    model::RungOverlay overlay(int rung) const;
     // The context menu's entries for the element at a cell (the device commands); nullptr
     // where the cell holds no device. Enabled only while a source is set.
     QMenu *monitorMenu(const CellCursor &cell, QWidget *parent);
@@ -226,7 +226,7 @@ private:
     MonitorCommands *m_commands = nullptr;
     // The overlays of the rungs on screen, from m_shown; a rung absent is computed when drawn.
     std::shared_ptr<const model::Snapshot> m_shown;
-    std::map<int, RungOverlay> m_overlays;
+    std::map<int, model::RungOverlay> m_overlays;
     std::vector<model::Address> m_watched; // what tellWatched last told
 };
 

@@ -6,8 +6,8 @@
 
 #include "ladder_view.h"
 
+#include "model/image/power_flow.h"
 #include "monitor_commands.h"
-#include "power_flow.h"
 
 #include "model/target/address.h"
 
@@ -21,13 +21,8 @@
 namespace rung::editor {
 
 void LadderView::setMonitorSource(model::MonitorSource *source) {
-    if (m_source == source)
+    if (!model::MonitorSource::switchSource(m_source, source, this))
         return;
-    if (m_source) {
-        disconnect(m_source, nullptr, this, nullptr);
-        m_source->setWatched(this, {});
-    }
-    m_source = source;
     m_commands->setTarget(&m_document->target());
     m_commands->setSource(source);
     m_overlays.clear();
@@ -90,7 +85,7 @@ void LadderView::snapshotArrived() {
             QToolTip::showText(m_tipAt, text, viewport());
         }
     }
-    const ProgramFlow flow(m_document->ladder(), m_document->listing(), *snapshot);
+    const model::ProgramFlow flow(m_document->ladder(), m_document->listing(), *snapshot);
     const bool stale = staleValues();
     const auto [first, last] = visibleRungs();
     std::erase_if(m_overlays, [first = first, last = last](const auto &entry) {
@@ -98,7 +93,7 @@ void LadderView::snapshotArrived() {
     });
     const int scroll = verticalScrollBar()->value();
     for (int i = first; i < last; ++i) {
-        RungOverlay overlay = flow.rung(i, stale);
+        model::RungOverlay overlay = flow.rung(i, stale);
         const auto it = m_overlays.find(i);
         if (it != m_overlays.end() && it->second == overlay)
             continue; // nothing on this rung changed: not repainted
@@ -112,11 +107,11 @@ void LadderView::snapshotArrived() {
     }
 }
 
-RungOverlay LadderView::overlay(int rung) const {
+model::RungOverlay LadderView::overlay(int rung) const {
     const std::shared_ptr<const model::Snapshot> snapshot = monitoredSnapshot();
     if (!snapshot)
         return {};
-    return ProgramFlow(m_document->ladder(), m_document->listing(), *snapshot)
+    return model::ProgramFlow(m_document->ladder(), m_document->listing(), *snapshot)
         .rung(rung, staleValues());
 }
 
@@ -241,16 +236,17 @@ QString LadderView::liveHelp(const CellCursor &cell) const {
             // The box's own preset where the PLC holds none that can be read.
             const bool ownBox = box && &o == &operands.front();
             const std::optional<qint64> set =
-                ProgramFlow::presetOf(target, ownBox ? box : nullptr, o.address, *snapshot);
+                model::ProgramFlow::presetOf(target, ownBox ? box : nullptr, o.address, *snapshot);
             //: a timer's or counter's live state in a tooltip: current value, set value, done bit
             value = tr("current %1, set %2, %3")
-                        .arg(ProgramFlow::presentOf(target, o.address, *snapshot))
+                        .arg(model::ProgramFlow::presentOf(target, o.address, *snapshot))
                         .arg(set ? QString::number(*set) : QStringLiteral("?"))
                         .arg(snapshot->bit(o.address) ? tr("ON") : tr("OFF"));
             if (ownBox && box->op() == model::Op::Timer)
-                value += QStringLiteral("; ") + ProgramFlow::timerText(target, *box, *snapshot);
+                value +=
+                    QStringLiteral("; ") + model::ProgramFlow::timerText(target, *box, *snapshot);
         } else {
-            value = ProgramFlow::wordText(*snapshot, o.address);
+            value = model::ProgramFlow::wordText(*snapshot, o.address);
         }
         if (snapshot->forced(o.address))
             value = tr("%1 (forced)").arg(value);

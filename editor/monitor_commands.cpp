@@ -84,11 +84,8 @@ MonitorCommands::MonitorCommands(const model::Target *target, QWidget *view)
     , m_view(view) {}
 
 void MonitorCommands::setSource(model::MonitorSource *source) {
-    if (m_source == source)
+    if (!model::MonitorSource::switchSource(m_source, source, this))
         return;
-    if (m_source)
-        disconnect(m_source, nullptr, this, nullptr);
-    m_source = source;
     m_pending.clear();
     if (!source)
         return;

@@ -315,9 +315,27 @@ AnalogTerminal::AnalogTerminal(const QString &device, const QString &symbol, int
         layout->addWidget(m_shown);
         bar->setObjectName(QStringLiteral("bar"));
     }
+    m_unreadable = new QLabel;
+    m_unreadable->hide();
+    layout->addWidget(m_unreadable);
+}
+
+void AnalogTerminal::setUnreadable(const QString &text) {
+    m_unreadable->setText(text);
+    m_unreadable->show();
+    if (m_shown) { // an output shows nothing it cannot read
+        m_shown->clear();
+        if (auto *bar = findChild<QProgressBar *>(QStringLiteral("bar")))
+            bar->setValue(bar->minimum());
+    }
+}
+
+QString AnalogTerminal::unreadable() const {
+    return m_unreadable->isHidden() ? QString() : m_unreadable->text();
 }
 
 void AnalogTerminal::setValue(int value) {
+    m_unreadable->hide();
     if (m_slider) {
         // The slider the user holds stays where it is held; the box being typed in too.
         if (m_slider->isSliderDown() || m_spin->hasFocus())

@@ -104,6 +104,10 @@ public:
                    bool input, QWidget *parent = nullptr);
     // The value the PLC holds; the slider stays where the user holds it.
     void setValue(int value);
+    // The PLC's word reads as no number (a BCD channel with a nibble above 9): `text` says
+    // what it holds, beside the value, until the next setValue().
+    void setUnreadable(const QString &text);
+    QString unreadable() const; // empty while the word reads
     int value() const;
     QString device() const { return m_device; }
     QSlider *slider() const { return m_slider; }
@@ -116,7 +120,8 @@ private:
     QString m_device;
     QSlider *m_slider = nullptr;
     QSpinBox *m_spin = nullptr;
-    QLabel *m_shown = nullptr; // an output's value
+    QLabel *m_shown = nullptr;      // an output's value
+    QLabel *m_unreadable = nullptr; // what a word that reads as no number holds
     bool m_updating = false;
 };
 

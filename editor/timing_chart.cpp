@@ -206,13 +206,8 @@ void TimingChart::changeEvent(QEvent *event) {
 }
 
 void TimingChart::setMonitorSource(model::MonitorSource *source) {
-    if (m_source == source)
+    if (!model::MonitorSource::switchSource(m_source, source, this))
         return;
-    if (m_source) {
-        disconnect(m_source, nullptr, this, nullptr);
-        m_source->setWatched(this, {});
-    }
-    m_source = source;
     m_latestMs = 0;
     m_latestScan = 0;
     m_earliestMs = 0;

@@ -1,6 +1,7 @@
 #include "timing_data.h"
 
 #include "model/image/monitor_source.h"
+#include "model/image/scan_csv.h"
 
 #include <QTextStream>
 
@@ -41,29 +42,24 @@ int writeCsv(const model::MonitorSource &source, const std::vector<TimingChannel
         for (std::size_t k = 0; k < channels.size(); ++k)
             all[k] = h.changes(channels[k].address, lowest, highest);
     });
-    QStringList header{QStringLiteral("scan"), QStringLiteral("time_ms")};
+    QStringList devices;
     for (const TimingChannel &c : channels)
-        header << c.device;
-    out << header.join(QLatin1Char(',')) << '\n';
+        devices << c.device;
+    model::ScanCsvWriter csv(out, devices);
     // Every scan at which something changed, in order; then each channel's value after it.
     std::map<quint64, qint64> moments; // scan -> time
     for (const auto &changes : all)
         for (const Change &c : changes)
             moments.emplace(c.scan, c.timeMs);
     std::vector<std::size_t> next(channels.size(), 0);
-    std::vector<QString> value(channels.size());
-    int rows = 0;
+    QStringList value(devices.size());
     for (const auto &[scan, time] : moments) {
         for (std::size_t k = 0; k < channels.size(); ++k)
             while (next[k] < all[k].size() && all[k][next[k]].scan <= scan)
-                value[k] = QString::number(all[k][next[k]++].value);
-        out << scan << ',' << time;
-        for (const QString &v : value)
-            out << ',' << v;
-        out << '\n';
-        ++rows;
+                value[qsizetype(k)] = QString::number(all[k][next[k]++].value);
+        csv.row(scan, time, value);
     }
-    return rows;
+    return csv.rows();
 }
 
 std::vector<model::HistoryRecorder::Mark> triggerMoments(const std::vector<Change> &changes,

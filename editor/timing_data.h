@@ -44,11 +44,10 @@ struct TimingWindow {
 TimingWindow readWindow(const model::MonitorSource &source,
                         const std::vector<TimingChannel> &channels, qint64 fromMs, qint64 toMs);
 
-// The whole kept history of the channels as CSV: a header "scan,time_ms,DEV1,DEV2,...", then
-// a row for each scan after which any channel changed, with every channel's value after that
+// The whole kept history of the channels as the simulation's CSV (model/image/scan_csv.h): a
+// row for each scan after which any channel changed, with every channel's value after that
 // scan (bits 0/1, words as signed numbers; empty before a channel's first recorded value).
-// scan counts scans since power-on (the first scan is 1); time_ms is the virtual time at its
-// end. Returns the number of rows written.
+// Returns the number of rows written.
 int writeCsv(const model::MonitorSource &source, const std::vector<TimingChannel> &channels,
              QTextStream &out);
 

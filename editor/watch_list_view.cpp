@@ -2,7 +2,7 @@
 
 #include "device_mime.h"
 #include "document.h"
-#include "power_flow.h"
+#include "model/image/power_flow.h"
 
 #include "model/image/monitor_source.h"
 #include "model/target/address.h"
@@ -81,13 +81,8 @@ WatchListView::WatchListView(Document *document, QWidget *parent)
 }
 
 void WatchListView::setMonitorSource(model::MonitorSource *source) {
-    if (m_source == source)
+    if (!model::MonitorSource::switchSource(m_source, source, this))
         return;
-    if (m_source) {
-        disconnect(m_source, nullptr, this, nullptr);
-        m_source->setWatched(this, {});
-    }
-    m_source = source;
     if (source) {
         connect(source, &model::MonitorSource::snapshotChanged, this, &WatchListView::showValues);
         connect(source, &model::MonitorSource::commandFinished, this,
@@ -208,7 +203,7 @@ void WatchListView::showRow(QTreeWidgetItem *item, const model::Snapshot *snapsh
         // Current value against the preset (a constant one as the program has it; "?" online
         // where no protocol area holds it), and the done bit.
         const std::optional<qint64> preset =
-            ProgramFlow::presetWordOf(t, m_boxes.value(item), *address, *snapshot);
+            model::ProgramFlow::presetWordOf(t, m_boxes.value(item), *address, *snapshot);
         text = tr("%1 of %2, %3")
                    .arg(model::formatValue(snapshot->value(*address), bits, f),
                         preset ? model::formatValue(*preset, bits, f) : QStringLiteral("?"),
@@ -465,7 +460,8 @@ void WatchListView::refresh() {
         for (int k = 0; k < topLevelItem(i)->childCount(); ++k) {
             QTreeWidgetItem *row = topLevelItem(i)->child(k);
             const auto a = addressOf(row);
-            if (const model::Instruction *box = a ? ProgramFlow::boxOf(*m_program, *a) : nullptr)
+            if (const model::Instruction *box =
+                    a ? model::ProgramFlow::boxOf(*m_program, *a) : nullptr)
                 m_boxes.insert(row, box);
             const model::Symbol *symbol = a ? m_document->project().symbol(*a) : nullptr;
             row->setText(SymbolColumn, symbol ? symbol->name : QString());

@@ -2,6 +2,7 @@
 
 #include "engine.h"
 #include "model/target/address.h"
+#include "simulator/tr.h"
 
 #include <QCoreApplication>
 
@@ -9,13 +10,9 @@ namespace rung::simulator {
 
 namespace {
 
-struct Tr {
-    Q_DECLARE_TR_FUNCTIONS(rung::simulator::CommandInbox)
-};
-
 QString name(const Engine &engine, const model::Address &address) {
     if (!address.valid())
-        return Tr::tr("(no device)");
+        return CommandInboxTr::tr("(no device)");
     return model::formatAddress(engine.layout().target(), address);
 }
 
@@ -71,8 +68,9 @@ bool applyCommand(Engine &engine, const EngineCommand &command, QString *error) 
     if (const auto *edit = std::get_if<ReplaceProgram>(&command.what)) {
         const EditApplied applied = engine.replaceProgram(edit->program, edit->breakpoints);
         if (applied == EditApplied::LayoutDiffers && error)
-            *error = Tr::tr("the edited program is for another memory layout (another PLC): it "
-                            "cannot take over the running image");
+            *error = CommandInboxTr::tr(
+                "the edited program is for another memory layout (another PLC): it "
+                "cannot take over the running image");
         return applied != EditApplied::LayoutDiffers;
     }
     using Kind = model::DeviceCommand::Kind;
@@ -88,7 +86,8 @@ bool applyCommand(Engine &engine, const EngineCommand &command, QString *error) 
     case Kind::WriteSetValue:
         ok = engine.writeSetValue(c.address, c.value);
         if (!ok && error)
-            *error = Tr::tr("%1 has no set value to write").arg(name(engine, c.address));
+            *error =
+                CommandInboxTr::tr("%1 has no set value to write").arg(name(engine, c.address));
         return ok;
     case Kind::Force:
         ok = engine.force(c.address, c.value != 0);
@@ -102,8 +101,10 @@ bool applyCommand(Engine &engine, const EngineCommand &command, QString *error) 
     }
     if (!ok && error)
         *error = c.kind == Kind::WriteWord
-                     ? Tr::tr("%1 is not a word this PLC can write").arg(name(engine, c.address))
-                     : Tr::tr("%1 is not a bit this PLC can write").arg(name(engine, c.address));
+                     ? CommandInboxTr::tr("%1 is not a word this PLC can write")
+                           .arg(name(engine, c.address))
+                     : CommandInboxTr::tr("%1 is not a bit this PLC can write")
+                           .arg(name(engine, c.address));
     return ok;
 }
 

@@ -1,4 +1,5 @@
 #include "compiler_detail.h"
+#include "simulator/tr.h"
 
 // Operands that are no single word of the image: digit-designated bits (K4Y0), operands
 // modified by an index register (D0E0, K4M0E1, K10F0) and double words (PL110 VD0). The
@@ -22,15 +23,16 @@ std::int32_t Compiler::refFor(const model::Instruction &ins, const model::Operan
         r.indexArea = o.index.area;
         r.indexElement = o.index.index;
         if (r.index < 0)
-            error(ins, Tr::tr("%1 is not an index register").arg(describe(o)));
+            error(ins, CompilerTr::tr("%1 is not an index register").arg(describe(o)));
     }
     if (o.kind == model::Operand::Kind::Constant) {
         r.kind = OperandRef::Kind::Constant;
         r.element = static_cast<std::int32_t>(o.constant.value);
         if (dest)
-            error(ins, Tr::tr("%1 is a constant; a device is expected here").arg(describe(o)));
+            error(ins,
+                  CompilerTr::tr("%1 is a constant; a device is expected here").arg(describe(o)));
     } else if (!isDevice(o)) {
-        error(ins, Tr::tr("%1 is not a word device or a constant").arg(describe(o)));
+        error(ins, CompilerTr::tr("%1 is not a word device or a constant").arg(describe(o)));
         return -1;
     } else {
         const model::Area &area = m_target.area(o.address.area);

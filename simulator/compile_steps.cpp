@@ -1,4 +1,5 @@
 #include "compiler_detail.h"
+#include "simulator/tr.h"
 
 #include <algorithm>
 
@@ -14,7 +15,7 @@ void Compiler::compileContact(const model::Instruction &ins, Step &s) {
             m_depth = 0;
             m_push = 0;
         } else if (++m_depth > kMaxBlockDepth) {
-            error(ins, Tr::tr("more than %1 open blocks").arg(model::kMaxOpenBlocks));
+            error(ins, CompilerTr::tr("more than %1 open blocks").arg(model::kMaxOpenBlocks));
             m_depth = kMaxBlockDepth;
         }
     }
@@ -45,7 +46,7 @@ void Compiler::compileTimer(const model::Instruction &ins, Step &s) {
     if (!t)
         return;
     if (!isDevice(*t) || kindOf(*t) != AreaKind::Timer) {
-        error(ins, Tr::tr("%1 is not a timer").arg(describe(*t)));
+        error(ins, CompilerTr::tr("%1 is not a timer").arg(describe(*t)));
         return;
     }
     s.bit = m_layout->bit(t->address);
@@ -92,7 +93,7 @@ void Compiler::compileCounter(const model::Instruction &ins, Step &s) {
     if (!c)
         return;
     if (!isDevice(*c) || kindOf(*c) != AreaKind::Counter) {
-        error(ins, Tr::tr("%1 is not a counter").arg(describe(*c)));
+        error(ins, CompilerTr::tr("%1 is not a counter").arg(describe(*c)));
         return;
     }
     s.bit = m_layout->bit(c->address);
@@ -172,7 +173,7 @@ void Compiler::compileApply(const model::Instruction &ins, Step &s) {
                                  ? m_layout->bit(model::offsetAddress(m_target, d->address, k))
                                  : BitRef{};
             if (!r.valid()) {
-                error(ins, Tr::tr("%1 is not a bit device").arg(describe(*d)));
+                error(ins, CompilerTr::tr("%1 is not a bit device").arg(describe(*d)));
                 break;
             }
             m_program->bitLists.push_back(r);
@@ -189,7 +190,7 @@ void Compiler::compileApply(const model::Instruction &ins, Step &s) {
         // (OperandSpec::rangeFrom), which reportBreaches has said when it is broken.
         if (m_muted || !isDevice(*a) || !isDevice(*b) ||
             b->address.index - a->address.index >= kMaxZoneElements) {
-            error(ins, Tr::tr("%1 is not a device").arg(describe(*b)));
+            error(ins, CompilerTr::tr("%1 is not a device").arg(describe(*b)));
             break;
         }
         // ZRST clears what the program writes: not the inputs (seed 001: Y, M, S, T, C, D).
@@ -252,7 +253,7 @@ void Compiler::compileApply(const model::Instruction &ins, Step &s) {
         // The operators the table allows (OperandSpec::allowedTexts, which reportBreaches
         // reads) all have a MathOp above; one more in the table and not here is an error.
         if (op && !found)
-            error(ins, Tr::tr("the simulator has no operator %1").arg(op->text));
+            error(ins, CompilerTr::tr("the simulator has no operator %1").arg(op->text));
         break;
     }
     case ApplyFunction::SetBit:
@@ -281,8 +282,9 @@ void Compiler::compileApply(const model::Instruction &ins, Step &s) {
             r = m_layout->bit(o->address);
         }
         if (o && !r.valid()) {
-            error(ins, Tr::tr("%1 needs a bit: a bit device, or a word and a bit number 0..15")
-                           .arg(ins.spec->mnemonic));
+            error(ins,
+                  CompilerTr::tr("%1 needs a bit: a bit device, or a word and a bit number 0..15")
+                      .arg(ins.spec->mnemonic));
             break;
         }
         if (ins.spec->function == ApplyFunction::SetBit) {
@@ -310,7 +312,7 @@ void Compiler::compileApply(const model::Instruction &ins, Step &s) {
             break;
         if (n->kind != model::Operand::Kind::Constant || n->constant.value < 1 ||
             n->constant.value > kMaxZoneElements) {
-            error(ins, Tr::tr("%1 is not a number of words").arg(describe(*n)));
+            error(ins, CompilerTr::tr("%1 is not a number of words").arg(describe(*n)));
             break;
         }
         s.count = static_cast<int>(n->constant.value);
@@ -324,7 +326,9 @@ void Compiler::compileApply(const model::Instruction &ins, Step &s) {
         };
         // An indexed block is checked where it lands, each time it runs.
         if ((s.dest >= 0 && !fits(ins.operands[1])) || (s.x.index >= 0 && !fits(ins.operands[0])))
-            error(ins, Tr::tr("the block of %1 words runs past the end of its area").arg(s.count));
+            error(
+                ins,
+                CompilerTr::tr("the block of %1 words runs past the end of its area").arg(s.count));
         break;
     }
     case ApplyFunction::IndirectMove: {

@@ -1,4 +1,5 @@
 #include "compiler_detail.h"
+#include "simulator/tr.h"
 
 // Vigor instructions on more than one word: DMOV (the 32-bit MOV) and CCD (the check code of
 // a block of bytes), which seed 001's communication programs use to build and check frames.
@@ -48,7 +49,7 @@ void Compiler::compileCheckCode(const model::Instruction &ins, Step &s) {
     if (!src || !n)
         return;
     if (!isDevice(*src)) {
-        error(ins, Tr::tr("%1 reads a block of words: %2 is not a word device")
+        error(ins, CompilerTr::tr("%1 reads a block of words: %2 is not a word device")
                        .arg(ins.spec->mnemonic, describe(*src)));
         return;
     }
@@ -57,7 +58,8 @@ void Compiler::compileCheckCode(const model::Instruction &ins, Step &s) {
     s.slot = nextWord(ins, 1);
     if (n->kind != model::Operand::Kind::Constant || n->modified() || n->constant.value < 1 ||
         n->constant.value > 256) {
-        error(ins, Tr::tr("%1 needs a count from 1 to %2").arg(ins.spec->mnemonic).arg(256));
+        error(ins,
+              CompilerTr::tr("%1 needs a count from 1 to %2").arg(ins.spec->mnemonic).arg(256));
         return;
     }
     s.count = static_cast<int>(n->constant.value);

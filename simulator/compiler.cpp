@@ -1,4 +1,5 @@
 #include "compiler_detail.h"
+#include "simulator/tr.h"
 
 #include <algorithm>
 #include <variant>
@@ -160,7 +161,7 @@ CompileResult Compiler::run() {
         m_rungStart = rungStart[k];
         m_muted = false;
         if (!ins.spec) {
-            error(ins, Tr::tr("unknown instruction"));
+            error(ins, CompilerTr::tr("unknown instruction"));
             continue;
         }
         const model::InstructionSpec &spec = *ins.spec;
@@ -180,7 +181,8 @@ CompileResult Compiler::run() {
         case Op::Push:
             s.code = Code::Push;
             if (++m_push > pushLimit) {
-                error(ins, Tr::tr("more than %1 nested %2").arg(pushLimit).arg(spec.mnemonic));
+                error(ins,
+                      CompilerTr::tr("more than %1 nested %2").arg(pushLimit).arg(spec.mnemonic));
                 m_push = pushLimit;
             }
             m_program->maxPushDepth = std::max(m_program->maxPushDepth, m_push);
@@ -189,7 +191,7 @@ CompileResult Compiler::run() {
         case Op::Pop:
             s.code = spec.op == Op::ReadStack ? Code::ReadStack : Code::Pop;
             if (m_push == 0)
-                error(ins, Tr::tr("%1 without MPS before it").arg(spec.mnemonic));
+                error(ins, CompilerTr::tr("%1 without MPS before it").arg(spec.mnemonic));
             else if (spec.op == Op::Pop)
                 --m_push;
             break;
@@ -225,12 +227,12 @@ CompileResult Compiler::run() {
             if (o && isDevice(*o)) {
                 const ResetTarget t = resetTargetOf(o->address);
                 if (!t.bit.valid() && t.word < 0)
-                    error(ins, Tr::tr("%1 cannot be reset").arg(describe(*o)));
+                    error(ins, CompilerTr::tr("%1 cannot be reset").arg(describe(*o)));
                 s.slot = static_cast<int>(m_program->resets.size());
                 s.count = 1;
                 m_program->resets.push_back(t);
             } else if (o) {
-                error(ins, Tr::tr("%1 is not a device").arg(describe(*o)));
+                error(ins, CompilerTr::tr("%1 is not a device").arg(describe(*o)));
             }
             break;
         }
@@ -335,14 +337,13 @@ CompileResult Compiler::run() {
 } // namespace detail
 
 using detail::Compiler;
-using detail::Tr;
 
 CompileResult compileProgram(const model::InstructionList &list) {
     if (!list.target) {
         CompileResult r;
         model::Diagnostic d;
         d.code = QStringLiteral("SIM001");
-        d.message = Tr::tr("the program has no target");
+        d.message = CompilerTr::tr("the program has no target");
         r.diagnostics.push_back(d);
         return r;
     }

@@ -10,6 +10,7 @@
 #include "model/checks/unmodelled.h"
 #include "model/listing/structure.h"
 #include "model/target/address.h"
+#include "simulator/tr.h"
 
 #include <QCoreApplication>
 
@@ -17,10 +18,6 @@ namespace rung::simulator::detail {
 
 using model::AreaKind;
 using model::Op;
-
-struct Tr {
-    Q_DECLARE_TR_FUNCTIONS(rung::simulator::Compiler)
-};
 
 // lupdate loses the scope of Tr::tr after some comparisons in inline member functions and
 // files those texts under a context "Tr" that the program never asks for; the explicit
@@ -131,7 +128,7 @@ private:
             return {};
         BitRef r = isDevice(*o) ? m_layout->bit(o->address) : BitRef{};
         if (!r.valid())
-            error(ins, Tr::tr("%1 is not a bit device").arg(describe(*o)));
+            error(ins, CompilerTr::tr("%1 is not a bit device").arg(describe(*o)));
         return r;
     }
     // A readable word: timers and counters give their current value.
@@ -154,12 +151,12 @@ private:
                 return w;
             }
             if (o->constant.value != w.constant)
-                error(ins, Tr::tr("constant %1 is out of range").arg(describe(*o)));
+                error(ins, CompilerTr::tr("constant %1 is out of range").arg(describe(*o)));
             return w;
         }
         w.index = isDevice(*o) ? m_layout->word(o->address) : -1;
         if (w.index < 0)
-            error(ins, Tr::tr("%1 is not a word device or a constant").arg(describe(*o)));
+            error(ins, CompilerTr::tr("%1 is not a word device or a constant").arg(describe(*o)));
         return w;
     }
     // A writable word; setValue: timers/counters mean their set value (VPC transfers).
@@ -232,8 +229,9 @@ private:
     }
     void popBlocks(const model::Instruction &ins, int n) {
         if (m_depth < n) {
-            error(ins,
-                  Tr::tr("%1 needs %2 open blocks before it").arg(ins.spec->mnemonic).arg(n + 1));
+            error(ins, CompilerTr::tr("%1 needs %2 open blocks before it")
+                           .arg(ins.spec->mnemonic)
+                           .arg(n + 1));
             m_depth = 0;
             return;
         }

@@ -1,6 +1,7 @@
 #include "engine.h"
 
 #include "model/checks/operand_rules.h"
+#include "simulator/tr.h"
 
 #include <QCoreApplication>
 
@@ -13,10 +14,6 @@
 namespace rung::simulator {
 
 namespace {
-
-struct Tr {
-    Q_DECLARE_TR_FUNCTIONS(rung::simulator::Engine)
-};
 
 // The four BCD digits of a 16-bit word as a number, -1 when a digit is above 9.
 int bcdValue(std::uint32_t word) {
@@ -42,8 +39,9 @@ void Engine::operandError(std::size_t step, const QString &message) {
     const model::SystemDevice *er =
         layout().target().systemDevice(model::SystemRole::InstructionError);
     runtimeError(
-        step, er ? Tr::tr("%1; the instruction is skipped and ER %2 is ON").arg(message, er->device)
-                 : Tr::tr("%1; the instruction is skipped").arg(message));
+        step,
+        er ? EngineTr::tr("%1; the instruction is skipped and ER %2 is ON").arg(message, er->device)
+           : EngineTr::tr("%1; the instruction is skipped").arg(message));
 }
 
 void Engine::clearArithmeticFlags() {
@@ -74,7 +72,7 @@ void Engine::arithmetic(const Step &s, std::size_t step) {
         b = count > 1 ? bcdValue(wb) : 0;
         if (a >= 0 && b >= 0)
             return true;
-        operandError(step, Tr::tr("%1 is not a BCD number").arg(hex(a < 0 ? wa : wb)));
+        operandError(step, EngineTr::tr("%1 is not a BCD number").arg(hex(a < 0 ? wa : wb)));
         return false;
     };
     const auto store = [&](std::int32_t index, std::int64_t value) {
@@ -101,9 +99,8 @@ void Engine::arithmetic(const Step &s, std::size_t step) {
         // MOVB(82) S Bi D: Bi's rightmost two digits are S's bit, the leftmost two D's bit.
         const std::uint32_t control = read(s.y);
         if (!model::controlWordFits(model::ControlWord::BitPair, control)) {
-            operandError(
-                step,
-                Tr::tr("bit designator %1 is not #DDSS with bits 00 to 15").arg(hex(control)));
+            operandError(step, EngineTr::tr("bit designator %1 is not #DDSS with bits 00 to 15")
+                                   .arg(hex(control)));
             return;
         }
         const int from = bcdValue(control) % 100;
@@ -119,9 +116,8 @@ void Engine::arithmetic(const Step &s, std::size_t step) {
         // 2 the first destination digit; digits past the leftmost wrap to the rightmost.
         const std::uint32_t control = read(s.y);
         if (!model::controlWordFits(model::ControlWord::Digits, control)) {
-            operandError(
-                step,
-                Tr::tr("digit designator %1 is not #0DNS with digits 0 to 3").arg(hex(control)));
+            operandError(step, EngineTr::tr("digit designator %1 is not #0DNS with digits 0 to 3")
+                                   .arg(hex(control)));
             return;
         }
         const std::uint32_t source = read(s.x);
@@ -194,7 +190,7 @@ void Engine::arithmetic(const Step &s, std::size_t step) {
         if (!bcdOperands(2))
             return;
         if (b == 0) {
-            operandError(step, Tr::tr("division by zero"));
+            operandError(step, EngineTr::tr("division by zero"));
             return;
         }
         store(s.dest, toBcd(a / b));

@@ -1,6 +1,7 @@
 #include "engine.h"
 
 #include "model/target/address.h"
+#include "simulator/tr.h"
 
 #include <QCoreApplication>
 
@@ -18,34 +19,10 @@ namespace rung::simulator {
 
 namespace {
 
-struct Tr {
-    Q_DECLARE_TR_FUNCTIONS(rung::simulator::Engine)
-};
-
 using Clock = std::chrono::steady_clock;
 
 qint64 nanosSince(Clock::time_point start) {
     return std::chrono::duration_cast<std::chrono::nanoseconds>(Clock::now() - start).count();
-}
-
-bool holds(model::CompareOp op, qint64 a, qint64 b) {
-    switch (op) {
-    case model::CompareOp::Eq:
-        return a == b;
-    case model::CompareOp::Ne:
-        return a != b;
-    case model::CompareOp::Lt:
-        return a < b;
-    case model::CompareOp::Le:
-        return a <= b;
-    case model::CompareOp::Gt:
-        return a > b;
-    case model::CompareOp::Ge:
-        return a >= b;
-    case model::CompareOp::None:
-        break;
-    }
-    return false;
 }
 
 } // namespace
@@ -56,8 +33,8 @@ bool Engine::setBreakpoints(const std::vector<Breakpoint> &breakpoints, QString 
         for (const Breakpoint &b : breakpoints)
             if (b.instruction < 0 || b.instruction >= next) {
                 if (error)
-                    *error =
-                        Tr::tr("the program has no instruction %1 to stop at").arg(b.instruction);
+                    *error = EngineTr::tr("the program has no instruction %1 to stop at")
+                                 .arg(b.instruction);
                 return false;
             }
         m_pendingBreakpoints = breakpoints;
@@ -68,7 +45,8 @@ bool Engine::setBreakpoints(const std::vector<Breakpoint> &breakpoints, QString 
     for (const Breakpoint &b : breakpoints) {
         if (b.instruction < 0 || b.instruction >= n) {
             if (error)
-                *error = Tr::tr("the program has no instruction %1 to stop at").arg(b.instruction);
+                *error =
+                    EngineTr::tr("the program has no instruction %1 to stop at").arg(b.instruction);
             return false;
         }
         ArmedBreakpoint a{b, {}, -1, false};
@@ -76,20 +54,20 @@ bool Engine::setBreakpoints(const std::vector<Breakpoint> &breakpoints, QString 
             a.word = layout().word(b.device);
             if (a.word < 0) {
                 if (error)
-                    *error = Tr::tr("%1 is no word to compare")
+                    *error = EngineTr::tr("%1 is no word to compare")
                                  .arg(b.device.valid()
                                           ? model::formatAddress(layout().target(), b.device)
-                                          : Tr::tr("(no device)"));
+                                          : EngineTr::tr("(no device)"));
                 return false;
             }
         } else if (b.when != Breakpoint::When::Always) {
             a.bit = layout().bit(b.device);
             if (!a.bit.valid()) {
                 if (error)
-                    *error = Tr::tr("%1 is no bit to watch")
+                    *error = EngineTr::tr("%1 is no bit to watch")
                                  .arg(b.device.valid()
                                           ? model::formatAddress(layout().target(), b.device)
-                                          : Tr::tr("(no device)"));
+                                          : EngineTr::tr("(no device)"));
                 return false;
             }
             a.previous =
@@ -170,8 +148,8 @@ bool Engine::breakpointHolds(std::size_t instruction) {
             stop = stop || !now;
             break;
         case When::Compare:
-            stop =
-                stop || holds(a.spec.op, m_words[static_cast<std::size_t>(a.word)], a.spec.value);
+            stop = stop || model::compareHolds(a.spec.op, m_words[static_cast<std::size_t>(a.word)],
+                                               a.spec.value);
             break;
         }
         a.previous = now;

@@ -4,6 +4,7 @@
 #include "model/listing/structure.h"
 #include "model/target/address.h"
 #include "model/target/word_text.h"
+#include "simulator/tr.h"
 
 #include <QCoreApplication>
 
@@ -17,33 +18,9 @@ namespace rung::simulator {
 
 namespace {
 
-struct Tr {
-    Q_DECLARE_TR_FUNCTIONS(rung::simulator::Engine)
-};
-
 // The compiler holds a program to these (model/listing/structure.h).
 static_assert(Engine::kBlockStack == model::kMaxOpenBlocks);
 static_assert(Engine::kPushStack == model::kMaxStackDepthOfAnyTarget);
-
-bool compare(std::uint8_t op, std::int32_t a, std::int32_t b) {
-    switch (static_cast<model::CompareOp>(op)) {
-    case model::CompareOp::Eq:
-        return a == b;
-    case model::CompareOp::Ne:
-        return a != b;
-    case model::CompareOp::Lt:
-        return a < b;
-    case model::CompareOp::Le:
-        return a <= b;
-    case model::CompareOp::Gt:
-        return a > b;
-    case model::CompareOp::Ge:
-        return a >= b;
-    case model::CompareOp::None:
-        break;
-    }
-    return false;
-}
 
 // A rising (or falling) edge of `now` against the value the slot kept from the last scan.
 inline bool edge(std::uint8_t &prev, bool now, bool falling) {
@@ -66,8 +43,8 @@ std::int32_t Engine::readBcdSet(const Step &s, std::size_t step) {
     if (decoded < 0) {
         setFlag(m_program->flags.error, true); // W353 TIM / CNT: "ER: SV is not in BCD"
         runtimeError(step,
-                     Tr::tr("set value %1 is not a BCD number; the instruction is "
-                            "skipped")
+                     EngineTr::tr("set value %1 is not a BCD number; the instruction is "
+                                  "skipped")
                          .arg(QString::number(static_cast<std::uint32_t>(raw) & 0xFFFFu, 16)));
         return -1;
     }
@@ -112,8 +89,8 @@ void Engine::wordLogic(const Step &s, std::size_t step) {
             // In the family's own words: a CPM1 user reads the word as #9999, not -26215.
             const model::Target &t = layout().target();
             runtimeError(
-                step, Tr::tr("%1 does not fit in BCD (0..%2); the destination is "
-                             "unchanged")
+                step, EngineTr::tr("%1 does not fit in BCD (0..%2); the destination is "
+                                   "unchanged")
                           .arg(s.width >= 32 ? QString::number(v) : model::formatWord(t, v),
                                s.width >= 32 ? QString::number(max) : model::formatWord(t, max)));
             return;
@@ -126,7 +103,7 @@ void Engine::wordLogic(const Step &s, std::size_t step) {
         if (v < 0 || (a & 0x80000000u)) {
             setFlag(m_program->flags.error, true); // W353 BIN(23): "ER: S is not BCD"
             runtimeError(step,
-                         Tr::tr("%1 is not a BCD number; the destination is unchanged")
+                         EngineTr::tr("%1 is not a BCD number; the destination is unchanged")
                              .arg(model::formatConstant(
                                  layout().target(), model::Constant{static_cast<qint64>(a),
                                                                     model::Constant::Style::Hex})));
@@ -144,8 +121,8 @@ void Engine::wordLogic(const Step &s, std::size_t step) {
 // Kept out of the scan loop: the message's temporaries would otherwise weigh on it.
 std::int64_t Engine::outOfDecimalRange(std::size_t step, std::int64_t value) {
     const std::int64_t wrapped = ((value % 10000) + 10000) % 10000;
-    runtimeError(step,
-                 Tr::tr("result %1 is outside 0..9999; %2 is written").arg(value).arg(wrapped));
+    runtimeError(
+        step, EngineTr::tr("result %1 is outside 0..9999; %2 is written").arg(value).arg(wrapped));
     return wrapped;
 }
 
@@ -255,7 +232,8 @@ std::size_t Engine::execute(std::size_t from, std::size_t to) {
                 v = edge(m_edges[static_cast<std::size_t>(s.slot)], rd(s.bit),
                          (s.flags & kFalling) != 0);
             } else {
-                v = compare(s.op, rdw(s.x), rdw(s.y)) != ((s.flags & kNegated) != 0);
+                v = model::compareHolds(model::CompareOp(s.op), rdw(s.x), rdw(s.y)) !=
+                    ((s.flags & kNegated) != 0);
             }
             if (s.flags & kRungStart) {
                 bsp = 0;
@@ -283,7 +261,8 @@ std::size_t Engine::execute(std::size_t from, std::size_t to) {
         }
         case Code::AndCompare:
         case Code::OrCompare: {
-            const bool v = compare(s.op, rdw(s.x), rdw(s.y)) != ((s.flags & kNegated) != 0);
+            const bool v = model::compareHolds(model::CompareOp(s.op), rdw(s.x), rdw(s.y)) !=
+                           ((s.flags & kNegated) != 0);
             acc = s.code == Code::AndCompare ? acc & v : acc | (v & gate);
             break;
         }
@@ -567,8 +546,8 @@ std::size_t Engine::execute(std::size_t from, std::size_t to) {
             // SBS(91): run the subroutine from its SBN(92), come back after the SBS.
             if (acc && s.count >= 0) {
                 if (depth == kSubroutineDepth) {
-                    runtimeError(i, Tr::tr("subroutines nest deeper than %1 levels; the call "
-                                           "is skipped")
+                    runtimeError(i, EngineTr::tr("subroutines nest deeper than %1 levels; the call "
+                                                 "is skipped")
                                         .arg(kSubroutineDepth));
                     break;
                 }
@@ -655,7 +634,7 @@ std::size_t Engine::execute(std::size_t from, std::size_t to) {
                 const std::int64_t a = rdw(s.x);
                 const std::int64_t b = rdw(s.y);
                 if (b == 0) {
-                    runtimeError(i, Tr::tr("division by zero; the destination is unchanged"));
+                    runtimeError(i, EngineTr::tr("division by zero; the destination is unchanged"));
                     break;
                 }
                 wrw(s.dest, a / b, s.width);
@@ -711,7 +690,7 @@ std::size_t Engine::execute(std::size_t from, std::size_t to) {
                     break;
                 }
                 if (static_cast<MathOp>(s.op) == MathOp::Div && b == 0)
-                    runtimeError(i, Tr::tr("division by zero; the destination is unchanged"));
+                    runtimeError(i, EngineTr::tr("division by zero; the destination is unchanged"));
                 else
                     wrw(s.dest, r, s.width);
             }
@@ -752,9 +731,10 @@ std::size_t Engine::execute(std::size_t from, std::size_t to) {
             if (acc) {
                 const std::int32_t index = rdw(s.y);
                 if (index < 0 || index >= s.count) {
-                    runtimeError(i, Tr::tr("MOVIND index %1 is outside 0..%2; nothing is written")
-                                        .arg(index)
-                                        .arg(s.count - 1));
+                    runtimeError(
+                        i, EngineTr::tr("MOVIND index %1 is outside 0..%2; nothing is written")
+                               .arg(index)
+                               .arg(s.count - 1));
                     break;
                 }
                 wrw(s.dest + index, rdw(s.x), s.width);

@@ -1,6 +1,7 @@
 #include "engine.h"
 
 #include "model/target/address.h"
+#include "simulator/tr.h"
 
 #include <QCoreApplication>
 
@@ -16,10 +17,6 @@
 namespace rung::simulator {
 
 namespace {
-
-struct Tr {
-    Q_DECLARE_TR_FUNCTIONS(rung::simulator::Engine)
-};
 
 const Segment *segmentOf(const Program &p, const OperandRef &ref, std::int64_t element) {
     for (std::int32_t k = 0; k < ref.segmentCount; ++k) {
@@ -84,15 +81,15 @@ std::int64_t Engine::resolveElement(const OperandRef &ref, std::size_t step, int
     if (ref.indexArea >= 0)
         runtimeError(
             step,
-            Tr::tr("operation error: %1 with %2 = %3 reaches %4, which does not exist; "
-                   "the instruction is not executed")
+            EngineTr::tr("operation error: %1 with %2 = %3 reaches %4, which does not exist; "
+                         "the instruction is not executed")
                 .arg(refText(ref),
                      model::formatAddress(t, model::Address{ref.indexArea, ref.indexElement, -1}))
                 .arg(offset)
                 .arg(where));
     else
-        runtimeError(step, Tr::tr("operation error: %1 reaches %2, which does not exist; the "
-                                  "instruction is not executed")
+        runtimeError(step, EngineTr::tr("operation error: %1 reaches %2, which does not exist; the "
+                                        "instruction is not executed")
                                .arg(refText(ref), where));
     return element;
 }

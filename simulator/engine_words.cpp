@@ -1,4 +1,5 @@
 #include "engine.h"
+#include "simulator/tr.h"
 
 #include <QCoreApplication>
 
@@ -7,20 +8,12 @@
 
 namespace rung::simulator {
 
-namespace {
-
-struct Tr {
-    Q_DECLARE_TR_FUNCTIONS(rung::simulator::Engine)
-};
-
-} // namespace
-
 void Engine::checkCode(const Step &s, std::size_t step) {
     const bool bytes = checkCodeBytes(s);
     const int words = bytes ? s.count : (s.count + 1) / 2;
     if (s.x.index < 0 || words > s.y.constant) {
-        runtimeError(step, Tr::tr("operation error: %1 bytes need %2 words from the source, "
-                                  "past the end of its area; the instruction is not executed")
+        runtimeError(step, EngineTr::tr("operation error: %1 bytes need %2 words from the source, "
+                                        "past the end of its area; the instruction is not executed")
                                .arg(s.count)
                                .arg(words));
         return;

@@ -1,14 +1,11 @@
 #include "history_source.h"
+#include "simulator/tr.h"
 
 #include <QCoreApplication>
 
 namespace rung::simulator {
 
 namespace {
-
-struct Tr {
-    Q_DECLARE_TR_FUNCTIONS(rung::simulator::HistorySource)
-};
 
 QString clock(qint64 ms) {
     const qint64 hundredths = ms / 10;
@@ -40,7 +37,7 @@ HistorySource::~HistorySource() {
 
 QString HistorySource::label(quint64 scan, qint64 timeMs) {
     //: the window's mark while it shows a past scan; %1 the scan, %2 its time h:mm:ss.cc
-    return Tr::tr("History: scan %1 (%2)").arg(scan).arg(clock(timeMs));
+    return HistorySourceTr::tr("History: scan %1 (%2)").arg(scan).arg(clock(timeMs));
 }
 
 void HistorySource::showScan(quint64 scan) {
@@ -55,7 +52,7 @@ void HistorySource::showTime(qint64 timeMs) {
     if (const auto scan = m_history->scanAt(timeMs))
         showScan(*scan);
     else
-        emit unavailable(Tr::tr("nothing is recorded yet: run the simulation first"));
+        emit unavailable(HistorySourceTr::tr("nothing is recorded yet: run the simulation first"));
 }
 
 std::optional<quint64> HistorySource::shownScan() const {
@@ -64,8 +61,9 @@ std::optional<quint64> HistorySource::shownScan() const {
 }
 
 void HistorySource::startCommand(CommandId id, const model::DeviceCommand &) {
-    finishCommand(id, false,
-                  Tr::tr("history is read-only: return to live to write, force or release"));
+    finishCommand(
+        id, false,
+        HistorySourceTr::tr("history is read-only: return to live to write, force or release"));
 }
 
 void HistorySource::workerLoop() {
@@ -82,14 +80,17 @@ void HistorySource::workerLoop() {
         const ScanHistory::Window w = m_history->window();
         if (w.empty()) {
             postToOwner([this] {
-                emit unavailable(Tr::tr("nothing is recorded yet: run the simulation first"));
+                emit unavailable(
+                    HistorySourceTr::tr("nothing is recorded yet: run the simulation first"));
             });
             continue;
         }
         const quint64 clamped = std::clamp(scan, w.firstScan, w.lastScan);
         std::optional<model::Snapshot> rebuilt = m_history->rebuild(clamped);
         if (!rebuilt) { // the window moved on meanwhile
-            postToOwner([this] { emit unavailable(Tr::tr("that scan is no longer recorded")); });
+            postToOwner([this] {
+                emit unavailable(HistorySourceTr::tr("that scan is no longer recorded"));
+            });
             continue;
         }
         const qint64 timeMs = rebuilt->statistics.timeMs;

@@ -1,4 +1,5 @@
 #include "scenario.h"
+#include "simulator/tr.h"
 
 #include <QCoreApplication>
 #include <QRegularExpression>
@@ -10,10 +11,6 @@
 namespace rung::simulator {
 
 namespace {
-
-struct Tr {
-    Q_DECLARE_TR_FUNCTIONS(rung::simulator::Scenario)
-};
 
 // A comment starts at a '#' at the start of a line or after a space, unless a hexadecimal
 // digit follows it: "#0150" is a CPM1 word written in its digits ("DM 0010 = #0150").
@@ -53,7 +50,7 @@ std::optional<ScenarioTime> readScenarioTime(const QString &number, const QStrin
         return std::nullopt;
     if (unit.startsWith(QLatin1String("scan"))) {
         if (fraction != 0) {
-            *error = Tr::tr("%1: a number of scans is whole").arg(t.text);
+            *error = ScenarioTr::tr("%1: a number of scans is whole").arg(t.text);
             return std::nullopt;
         }
         t.inScans = true;
@@ -67,11 +64,11 @@ std::optional<ScenarioTime> readScenarioTime(const QString &number, const QStrin
     // A week of virtual time is 60 million scans at 10 ms: far beyond a test, and a bound.
     constexpr qint64 kMaxMs = 7LL * 24 * 3600000;
     if (whole > kMaxMs / factor) {
-        *error = Tr::tr("%1 is more than a week of virtual time").arg(t.text);
+        *error = ScenarioTr::tr("%1 is more than a week of virtual time").arg(t.text);
         return std::nullopt;
     }
     if ((fraction * factor) % scale != 0) {
-        *error = Tr::tr("%1 is not a whole number of milliseconds").arg(t.text);
+        *error = ScenarioTr::tr("%1 is not a whole number of milliseconds").arg(t.text);
         return std::nullopt;
     }
     const qint64 ms = whole * factor + fraction * factor / scale;
@@ -113,13 +110,14 @@ Scenario parseScenario(const QString &text, const QString &file,
         auto time = [&](const QRegularExpressionMatch &m) {
             auto t = readScenarioTime(m.captured(1), m.captured(2), &timeError);
             if (!t)
-                fail(lineNo,
-                     timeError.isEmpty() ? Tr::tr("%1 is no time").arg(m.captured(0)) : timeError);
+                fail(lineNo, timeError.isEmpty()
+                                 ? ScenarioTr::tr("%1 is no time").arg(m.captured(0))
+                                 : timeError);
             return t;
         };
         if (const auto m = program.match(line); m.hasMatch()) {
             if (!s.program.isEmpty()) {
-                fail(lineNo, Tr::tr("a scenario runs one program; the first is on line %1")
+                fail(lineNo, ScenarioTr::tr("a scenario runs one program; the first is on line %1")
                                  .arg(s.programLine));
                 continue;
             }
@@ -135,14 +133,15 @@ Scenario parseScenario(const QString &text, const QString &file,
                 else if (options[k] == QLatin1String("--model"))
                     s.model = options[k + 1];
                 else
-                    fail(lineNo, Tr::tr("unknown option %1 (--target, --model)").arg(options[k]));
+                    fail(lineNo,
+                         ScenarioTr::tr("unknown option %1 (--target, --model)").arg(options[k]));
             }
             continue;
         }
         if (const auto m = period.match(line); m.hasMatch()) {
             const auto t = time(m);
             if (t && (t->inScans || t->ms < 1))
-                fail(lineNo, Tr::tr("the period is a time of at least 1 ms"));
+                fail(lineNo, ScenarioTr::tr("the period is a time of at least 1 ms"));
             else if (t)
                 s.period = *t;
             continue;
@@ -178,19 +177,20 @@ Scenario parseScenario(const QString &text, const QString &file,
             st.kind = ScenarioStatement::Kind::Run;
             st.time = *t;
         } else {
-            fail(lineNo, Tr::tr("\"%1\" is no statement (program, period, at TIME set|force|"
+            fail(lineNo,
+                 ScenarioTr::tr("\"%1\" is no statement (program, period, at TIME set|force|"
                                 "release|expect, within TIME expect, always expect, run TIME)")
-                             .arg(line));
+                     .arg(line));
             continue;
         }
         if (st.kind != ScenarioStatement::Kind::Run && st.text.isEmpty()) {
-            fail(lineNo, Tr::tr("the statement says nothing after its verb"));
+            fail(lineNo, ScenarioTr::tr("the statement says nothing after its verb"));
             continue;
         }
         s.statements.push_back(st);
     }
     if (s.program.isEmpty())
-        fail(1, Tr::tr("no program: a scenario starts with \"program FILE\""));
+        fail(1, ScenarioTr::tr("no program: a scenario starts with \"program FILE\""));
     return s;
 }
 

@@ -1,4 +1,5 @@
 #include "scenario_record.h"
+#include "simulator/tr.h"
 
 #include "model/target/address.h"
 
@@ -7,10 +8,6 @@
 namespace rung::simulator {
 
 namespace {
-
-struct Tr {
-    Q_DECLARE_TR_FUNCTIONS(rung::simulator::Scenario)
-};
 
 QString device(const model::Target &t, const model::Address &a) {
     return model::formatAddress(t, a);
@@ -36,20 +33,22 @@ std::optional<RecordedScenario> recordScenario(const ScanHistory &history, const
                                                QString *error) {
     const ScanHistory::Window window = history.window();
     if (window.empty() || window.lastScan == 0) {
-        *error = Tr::tr("the simulation has run no scan yet: run it, work its inputs, then "
-                        "record");
+        *error = ScenarioTr::tr("the simulation has run no scan yet: run it, work its inputs, then "
+                                "record");
         return std::nullopt;
     }
     if (window.firstScan > 0) {
-        *error = Tr::tr("the simulation's history no longer holds its start (it keeps the last "
-                        "hour): stop it, run it again and record sooner");
+        *error =
+            ScenarioTr::tr("the simulation's history no longer holds its start (it keeps the last "
+                           "hour): stop it, run it again and record sooner");
         return std::nullopt;
     }
     RecordedScenario out;
     const qint64 period = history.firstPeriodMs();
     QStringList lines;
-    lines << QStringLiteral("# %1").arg(Tr::tr("Recorded from a simulation: the inputs as they "
-                                               "were worked, the outputs as they were seen."))
+    lines << QStringLiteral("# %1").arg(
+                 ScenarioTr::tr("Recorded from a simulation: the inputs as they "
+                                "were worked, the outputs as they were seen."))
           << QStringLiteral("program %1").arg(programLine)
           << QStringLiteral("period %1ms").arg(period) << QString();
     const std::vector<ScanHistory::Recorded> events = history.recorded();
@@ -81,13 +80,13 @@ std::optional<RecordedScenario> recordScenario(const ScanHistory &history, const
             const ScanHistory::Recorded &e = events[k];
             if (e.position >= 0 && !insideNoted) {
                 insideNoted = true;
-                out.notes << Tr::tr("a command given while a scan was stopped inside is "
-                                    "applied at the start of the next scan");
+                out.notes << ScenarioTr::tr("a command given while a scan was stopped inside is "
+                                            "applied at the start of the next scan");
             }
             if (std::holds_alternative<ScanHistory::SetPeriod>(e.action)) {
                 if (!periodNoted)
-                    out.notes << Tr::tr("the period was changed during the simulation: the "
-                                        "scenario runs at the first one, %1 ms")
+                    out.notes << ScenarioTr::tr("the period was changed during the simulation: the "
+                                                "scenario runs at the first one, %1 ms")
                                      .arg(period);
                 periodNoted = true;
                 continue;
@@ -113,8 +112,9 @@ std::optional<RecordedScenario> recordScenario(const ScanHistory &history, const
                     break;
                 }
             } else {
-                out.notes << Tr::tr("a power cycle, reset or online edit at %1 is not in the "
-                                    "scenario")
+                out.notes << ScenarioTr::tr(
+                                 "a power cycle, reset or online edit at %1 is not in the "
+                                 "scenario")
                                  .arg(time(scan));
             }
         }

@@ -1,4 +1,5 @@
 #include "scenario.h"
+#include "simulator/tr.h"
 
 #include "model/target/address.h"
 
@@ -14,10 +15,6 @@
 namespace rung::simulator {
 
 namespace {
-
-struct Tr {
-    Q_DECLARE_TR_FUNCTIONS(rung::simulator::Scenario)
-};
 
 // A value a condition reads: a device (a bit; a word; a timer's or counter's current or set
 // value) or a constant.
@@ -65,24 +62,7 @@ struct Condition {
         case Kind::Compare:
             break;
         }
-        const qint64 x = left.read(e);
-        const qint64 y = right.read(e);
-        switch (op) {
-        case model::CompareOp::Eq:
-        case model::CompareOp::None:
-            return x == y;
-        case model::CompareOp::Ne:
-            return x != y;
-        case model::CompareOp::Lt:
-            return x < y;
-        case model::CompareOp::Le:
-            return x <= y;
-        case model::CompareOp::Gt:
-            return x > y;
-        case model::CompareOp::Ge:
-            return x >= y;
-        }
-        return false;
+        return model::compareHolds(op, left.read(e), right.read(e));
     }
     void devices(std::vector<const Value *> *out) const {
         for (const Condition &c : items)
@@ -113,7 +93,8 @@ public:
     std::optional<Condition> condition() {
         auto c = readOr();
         if (c && !atEnd())
-            return fail(Tr::tr("\"%1\" is not understood here").arg(m_text.mid(m_pos).trimmed()));
+            return fail(
+                ScenarioTr::tr("\"%1\" is not understood here").arg(m_text.mid(m_pos).trimmed()));
         return c;
     }
 
@@ -124,24 +105,24 @@ public:
             if (!device)
                 return std::nullopt;
             if (!device->isDevice())
-                return fail(Tr::tr("%1 is no device").arg(device->text));
+                return fail(ScenarioTr::tr("%1 is no device").arg(device->text));
             if (bitsOnly && device->kind != Value::Kind::Bit)
-                return fail(Tr::tr("%1: only bits are forced").arg(device->text));
+                return fail(ScenarioTr::tr("%1: only bits are forced").arg(device->text));
             skipSpaces();
             if (!take(QStringLiteral("=")))
-                return fail(Tr::tr("%1 needs =VALUE").arg(device->text));
+                return fail(ScenarioTr::tr("%1 needs =VALUE").arg(device->text));
             auto value = readValue(false);
             if (!value)
                 return std::nullopt;
             if (value->isDevice())
-                return fail(
-                    Tr::tr("%1 is no value (a number, ON or OFF, #hex digits)").arg(value->text));
+                return fail(ScenarioTr::tr("%1 is no value (a number, ON or OFF, #hex digits)")
+                                .arg(value->text));
             out.push_back({*device, value->constant});
             skipSpaces();
             take(QStringLiteral(","));
         }
         if (out.empty())
-            return fail(Tr::tr("DEVICE=VALUE is expected"));
+            return fail(ScenarioTr::tr("DEVICE=VALUE is expected"));
         return out;
     }
 
@@ -152,7 +133,8 @@ public:
             if (!device)
                 return std::nullopt;
             if (device->kind != Value::Kind::Bit)
-                return fail(Tr::tr("%1: only bits are forced and released").arg(device->text));
+                return fail(
+                    ScenarioTr::tr("%1: only bits are forced and released").arg(device->text));
             out.push_back(*device);
             skipSpaces();
             take(QStringLiteral(","));
@@ -237,9 +219,10 @@ private:
         qsizetype end = 0;
         const QString word = wordAt(m_pos, &end);
         if (word.isEmpty())
-            return fail(m_pos >= m_text.size() ? Tr::tr("a device or a value is missing at the end")
-                                               : Tr::tr("a device or a value is expected at \"%1\"")
-                                                     .arg(m_text.mid(m_pos).trimmed()));
+            return fail(m_pos >= m_text.size()
+                            ? ScenarioTr::tr("a device or a value is missing at the end")
+                            : ScenarioTr::tr("a device or a value is expected at \"%1\"")
+                                  .arg(m_text.mid(m_pos).trimmed()));
         if (!preferDevice) {
             if (const auto c = constant(word)) {
                 m_pos = end;
@@ -282,8 +265,8 @@ private:
                     v.text = word;
                     return v;
                 }
-            return fail(
-                Tr::tr("%1 is no device of %2: %3").arg(word, m_target.displayName, e->message));
+            return fail(ScenarioTr::tr("%1 is no device of %2: %3")
+                            .arg(word, m_target.displayName, e->message));
         }
         m_pos = used;
         Value v;
@@ -292,9 +275,10 @@ private:
         const model::AreaKind kind = m_target.area(v.address.area).kind;
         const bool element = kind == model::AreaKind::Timer || kind == model::AreaKind::Counter;
         if (!prefix.isEmpty() && (!element || v.address.bit >= 0))
-            return fail(Tr::tr("%1: cv: and sv: name a timer's or a counter's current and set "
+            return fail(
+                ScenarioTr::tr("%1: cv: and sv: name a timer's or a counter's current and set "
                                "value")
-                            .arg(written));
+                    .arg(written));
         if (prefix == QLatin1String("cv:"))
             v.kind = Value::Kind::Current;
         else if (prefix == QLatin1String("sv:"))
@@ -352,7 +336,7 @@ private:
             if (!inner)
                 return std::nullopt;
             if (!take(QStringLiteral(")")))
-                return fail(Tr::tr("a \")\" is missing"));
+                return fail(ScenarioTr::tr("a \")\" is missing"));
             return inner;
         }
         auto left = readValue(true);
@@ -378,9 +362,10 @@ private:
             return c;
         }
         if (left->kind != Value::Kind::Bit)
-            return fail(left->isDevice()
-                            ? Tr::tr("%1 is a word: compare it (%1=5, %1>100)").arg(left->text)
-                            : Tr::tr("%1 alone is no condition").arg(left->text));
+            return fail(
+                left->isDevice()
+                    ? ScenarioTr::tr("%1 is a word: compare it (%1=5, %1>100)").arg(left->text)
+                    : ScenarioTr::tr("%1 alone is no condition").arg(left->text));
         Condition c;
         c.kind = Condition::Kind::Truth;
         c.left = *left;
@@ -441,11 +426,12 @@ ScenarioResult runScenario(const Scenario &s, const std::shared_ptr<const Progra
             const qint64 t = st.time.resolve(period);
             if (t < lastAt) {
                 result.errors.push_back(
-                    {st.line, Tr::tr("at %1 comes before line %2's %3: statements stand in the "
-                                     "order of their times")
-                                  .arg(st.time.text)
-                                  .arg(lastAtLine)
-                                  .arg(formatScenarioTime(lastAt))});
+                    {st.line,
+                     ScenarioTr::tr("at %1 comes before line %2's %3: statements stand in the "
+                                    "order of their times")
+                         .arg(st.time.text)
+                         .arg(lastAtLine)
+                         .arg(formatScenarioTime(lastAt))});
                 continue;
             }
             lastAt = t;
@@ -571,8 +557,9 @@ ScenarioResult runScenario(const Scenario &s, const std::shared_ptr<const Progra
             const quint64 k = scanOf(t);
             if (done > k + 1) {
                 fail(st, t,
-                     Tr::tr("%1: the run was already at %2 (the statement before waited until "
-                            "then), so at %3 could not be checked")
+                     ScenarioTr::tr(
+                         "%1: the run was already at %2 (the statement before waited until "
+                         "then), so at %3 could not be checked")
                          .arg(statement.source,
                               formatScenarioTime(static_cast<qint64>(done - 1) * period),
                               statement.time.text));
@@ -584,7 +571,7 @@ ScenarioResult runScenario(const Scenario &s, const std::shared_ptr<const Progra
                 fail(st, t,
                      //: A failed expectation: %1 the time, %2 what was expected, %3 the devices'
                      //: values then ("Y0=1 Y1=0").
-                     Tr::tr("at %1: expected %2, seen %3")
+                     ScenarioTr::tr("at %1: expected %2, seen %3")
                          .arg(formatScenarioTime(t), statement.text,
                               seenText(st.condition, engine)));
             previous = t;
@@ -609,7 +596,7 @@ ScenarioResult runScenario(const Scenario &s, const std::shared_ptr<const Progra
                 fail(st, at,
                      //: %1 the time allowed ("2s"), %2 the time it counted from, %3 until when,
                      //: %4 what was expected, %5 the values seen at the end.
-                     Tr::tr("within %1 of %2 (until %3): expected %4, seen %5")
+                     ScenarioTr::tr("within %1 of %2 (until %3): expected %4, seen %5")
                          .arg(statement.time.text, formatScenarioTime(previous),
                               formatScenarioTime(deadline), statement.text,
                               seenText(st.condition, engine)));
@@ -633,7 +620,7 @@ ScenarioResult runScenario(const Scenario &s, const std::shared_ptr<const Progra
         const ScenarioStatement &statement = *steps[always[k]].statement;
         //: An `always` expectation that failed: %1 the first time, %2 what was expected, %3
         //: the values then, %4 the scans it failed in, %5 the scans run.
-        f.message = Tr::tr("at %1: expected always %2, seen %3 (failed in %4 of %5 scans)")
+        f.message = ScenarioTr::tr("at %1: expected always %2, seen %3 (failed in %4 of %5 scans)")
                         .arg(formatScenarioTime(f.timeMs), statement.text, f.seen)
                         .arg(f.failingScans)
                         .arg(done);
@@ -646,7 +633,7 @@ ScenarioResult runScenario(const Scenario &s, const std::shared_ptr<const Progra
     result.durationMs = static_cast<qint64>(done) * period;
     for (const RuntimeError &e : engine.runtimeErrors())
         result.runtimeErrors
-            << Tr::tr("runtime error at step %1: %2").arg(e.instruction).arg(e.message);
+            << ScenarioTr::tr("runtime error at step %1: %2").arg(e.instruction).arg(e.message);
     return result;
 }
 
@@ -668,7 +655,8 @@ ScenarioResult runScenario(const QString &text, const QString &file,
         for (const QString &e : loaded.errors)
             result.errors.push_back({scenario.programLine, e});
         if (result.errors.empty())
-            result.errors.push_back({scenario.programLine, Tr::tr("the program does not start")});
+            result.errors.push_back(
+                {scenario.programLine, ScenarioTr::tr("the program does not start")});
         return result;
     }
     return runScenario(scenario, loaded.program);

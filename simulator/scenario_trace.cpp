@@ -1,14 +1,11 @@
 #include "scenario_trace.h"
+#include "simulator/tr.h"
 
 #include <QCoreApplication>
 
 namespace rung::simulator {
 
 namespace {
-
-struct Tr {
-    Q_DECLARE_TR_FUNCTIONS(rung::simulator::Scenario)
-};
 
 // Enough changes for every scan of a long run of a toggling bit (an hour at 10 ms).
 constexpr std::size_t kChanges = 400000;
@@ -57,7 +54,7 @@ void ScenarioTrace::readHistory(
 }
 
 void ScenarioTrace::startCommand(CommandId id, const model::DeviceCommand &) {
-    finishCommand(id, false, Tr::tr("a scenario's run is read-only"));
+    finishCommand(id, false, ScenarioTr::tr("a scenario's run is read-only"));
 }
 
 } // namespace rung::simulator

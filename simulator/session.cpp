@@ -1,4 +1,5 @@
 #include "simulator/session.h"
+#include "simulator/tr.h"
 
 #include <QCoreApplication>
 
@@ -13,10 +14,6 @@ using Clock = std::chrono::steady_clock;
 
 // The most real-time pacing catches up in a burst after falling behind (see workerLoop).
 constexpr auto kMaxCatchUp = std::chrono::milliseconds(50);
-
-struct Tr {
-    Q_DECLARE_TR_FUNCTIONS(rung::simulator::SimulatorSession)
-};
 
 } // namespace
 
@@ -242,7 +239,8 @@ void SimulatorSession::reportErrors(const Engine &engine, std::size_t &reported)
         return;
     reported = errors.size();
     const RuntimeError &e = errors.back();
-    const QString text = e.line > 0 ? Tr::tr("Line %1: %2").arg(e.line).arg(e.message) : e.message;
+    const QString text =
+        e.line > 0 ? SimulatorSessionTr::tr("Line %1: %2").arg(e.line).arg(e.message) : e.message;
     postToOwner([this, text] { setErrorText(text); });
 }
 

@@ -1,6 +1,8 @@
 #include "trace.h"
 
+#include "model/image/scan_csv.h"
 #include "model/target/address.h"
+#include "simulator/tr.h"
 
 #include <QCoreApplication>
 #include <QRegularExpression>
@@ -12,15 +14,11 @@ namespace rung::simulator {
 
 namespace {
 
-struct Tr {
-    Q_DECLARE_TR_FUNCTIONS(rung::simulator::Trace)
-};
-
 bool device(const model::Target &target, const QString &text, model::Address *address,
             QString *error) {
     const auto parsed = model::parseAddress(target, text.trimmed());
     if (const auto *e = std::get_if<model::AddressError>(&parsed)) {
-        *error = Tr::tr("unknown device %1: %2").arg(text, e->message);
+        *error = TraceTr::tr("unknown device %1: %2").arg(text, e->message);
         return false;
     }
     *address = std::get<model::Address>(parsed);
@@ -49,8 +47,9 @@ bool parseTraceOptions(const model::Target &target, const QStringList &args, Tra
     for (qsizetype i = 0; i < args.size(); ++i) {
         const QString &a = args[i];
         if (i + 1 >= args.size() || !a.startsWith(QLatin1String("--"))) {
-            *error = a.startsWith(QLatin1String("--")) ? Tr::tr("%1 needs a value").arg(a)
-                                                       : Tr::tr("unexpected argument %1").arg(a);
+            *error = a.startsWith(QLatin1String("--"))
+                         ? TraceTr::tr("%1 needs a value").arg(a)
+                         : TraceTr::tr("unexpected argument %1").arg(a);
             return false;
         }
         const QString v = args[++i];
@@ -60,7 +59,7 @@ bool parseTraceOptions(const model::Target &target, const QStringList &args, Tra
             const bool scans = a == QLatin1String("--scans");
             const qint64 most = scans ? kMaxTraceScans : 1000000000;
             if (!ok || n < 1) {
-                *error = Tr::tr("%1 needs a whole number from 1 to %2, not \"%3\"")
+                *error = TraceTr::tr("%1 needs a whole number from 1 to %2, not \"%3\"")
                              .arg(a)
                              .arg(most)
                              .arg(v);
@@ -68,11 +67,11 @@ bool parseTraceOptions(const model::Target &target, const QStringList &args, Tra
             }
             if (n > most) {
                 // A trace prints a row per scan: an unbounded run would never end.
-                *error = scans ? Tr::tr("--scans %1 is more than the %2 scans one trace runs "
-                                        "(a row each); run it in parts")
+                *error = scans ? TraceTr::tr("--scans %1 is more than the %2 scans one trace runs "
+                                             "(a row each); run it in parts")
                                      .arg(v)
                                      .arg(most)
-                               : Tr::tr("--period %1 is more than %2 ms").arg(v).arg(most);
+                               : TraceTr::tr("--period %1 is more than %2 ms").arg(v).arg(most);
                 return false;
             }
             if (scans) {
@@ -84,7 +83,7 @@ bool parseTraceOptions(const model::Target &target, const QStringList &args, Tra
         } else if (a == QLatin1String("--set")) {
             const auto m = setRe.match(v);
             if (!m.hasMatch()) {
-                *error = Tr::tr("--set needs DEV=VALUE@SCAN, not \"%1\"").arg(v);
+                *error = TraceTr::tr("--set needs DEV=VALUE@SCAN, not \"%1\"").arg(v);
                 return false;
             }
             TraceStimulus s;
@@ -118,12 +117,12 @@ bool parseTraceOptions(const model::Target &target, const QStringList &args, Tra
                 request->columns.push_back(c);
             }
         } else {
-            *error = Tr::tr("unknown option %1").arg(a);
+            *error = TraceTr::tr("unknown option %1").arg(a);
             return false;
         }
     }
     if (!haveScans || request->columns.empty()) {
-        *error = Tr::tr("--scans and --trace are required");
+        *error = TraceTr::tr("--scans and --trace are required");
         return false;
     }
     // A stimulus after the last scan would never apply: said, not dropped.
@@ -131,11 +130,12 @@ bool parseTraceOptions(const model::Target &target, const QStringList &args, Tra
         if (args[i] == QLatin1String("--set")) {
             const auto m = setRe.match(args[i + 1]);
             if (m.captured(3).toULongLong() >= request->scans) {
-                *error = Tr::tr("--set %1 comes after the last scan: %2 scans run, numbered 0 "
-                                "to %3, so it would never apply")
+                //: --set DEV=VALUE@N applies once N (%2) scans have run; %3 scans run
+                *error = TraceTr::tr("--set %1 comes after the last scan: it applies once %2 scans "
+                                     "have run, and %3 run, so it would never apply")
                              .arg(args[i + 1])
-                             .arg(request->scans)
-                             .arg(request->scans - 1);
+                             .arg(m.captured(3).toULongLong())
+                             .arg(request->scans);
                 return false;
             }
         }
@@ -150,10 +150,11 @@ void runTrace(const std::shared_ptr<const Program> &program, const TraceRequest 
     const model::Target &target = program->layout->target();
     Engine engine(program);
     engine.setPeriodMs(request.periodMs);
-    out << "scan,time_ms";
+    QStringList names;
     for (const TraceColumn &c : request.columns)
-        out << ',' << c.name;
-    out << '\n';
+        names << c.name;
+    model::ScanCsvWriter csv(out, names);
+    QStringList values(names.size());
     auto next = request.stimuli.begin();
     for (quint64 scan = 0; scan < request.scans; ++scan) {
         for (; next != request.stimuli.end() && next->scan <= scan; ++next) {
@@ -164,31 +165,29 @@ void runTrace(const std::shared_ptr<const Program> &program, const TraceRequest 
             else
                 engine.setBit(next->address, next->value != 0);
         }
-        const qint64 time = engine.statistics().timeMs;
         engine.scan();
-        out << scan << ',' << time;
-        for (const TraceColumn &c : request.columns) {
-            out << ',';
+        for (qsizetype k = 0; k < values.size(); ++k) {
+            const TraceColumn &c = request.columns[static_cast<std::size_t>(k)];
             switch (c.kind) {
             case TraceColumn::Kind::Bit:
-                out << (engine.bit(c.address) ? 1 : 0);
+                values[k] = engine.bit(c.address) ? QStringLiteral("1") : QStringLiteral("0");
                 break;
             case TraceColumn::Kind::Word:
-                out << engine.value(c.address);
+                values[k] = QString::number(engine.value(c.address));
                 break;
             case TraceColumn::Kind::SetValue:
-                out << engine.setValue(c.address);
+                values[k] = QString::number(engine.setValue(c.address));
                 break;
             case TraceColumn::Kind::Hex:
-                out << '#'
-                    << QStringLiteral("%1")
-                           .arg(static_cast<std::uint32_t>(engine.value(c.address)) & 0xFFFFu, 4,
-                                16, QLatin1Char('0'))
-                           .toUpper();
+                values[k] = QLatin1Char('#') +
+                            QStringLiteral("%1")
+                                .arg(static_cast<std::uint32_t>(engine.value(c.address)) & 0xFFFFu,
+                                     4, 16, QLatin1Char('0'))
+                                .toUpper();
                 break;
             }
         }
-        out << '\n';
+        csv.row(engine.statistics().scans, engine.statistics().timeMs, values);
     }
     if (runtimeErrors)
         *runtimeErrors = engine.runtimeErrors();

@@ -1,8 +1,8 @@
 #pragma once
 
-// Traces: run a program for N scans with stimuli applied before given scans and print the
-// chosen devices as CSV after every END. The `simulate` command and the golden-trace tests
-// share this, so both read the same options.
+// Traces: run a program for N scans with stimuli applied after given numbers of scans and
+// print the chosen devices as CSV after every END. The `simulate` command and the golden-trace
+// tests share this, so both read the same options.
 
 #include "engine.h"
 
@@ -14,7 +14,7 @@ namespace rung::simulator {
 struct TraceStimulus {
     model::Address address;
     qint64 value = 0;
-    quint64 scan = 0; // applied before this scan (scans count from 0)
+    quint64 scan = 0; // applied once this many scans have run (0: before the first)
 };
 
 struct TraceColumn {
@@ -38,14 +38,15 @@ constexpr qint64 kMaxTraceScans = 10000000;
 // --trace DEV[,DEV...]. A trace column "cv:T0" / "sv:T0" is a timer/counter's current / set
 // value; "hex:DM 0100" a word as four hexadecimal digits (a CPM1 BCD word reads as its
 // digits); a bare timer or counter is its done bit; a word device its value. A --set value
-// "#6103" is a word in hexadecimal digits. Unknown options are errors, and so is a --set at
-// or after scan N (it would never apply).
+// "#6103" is a word in hexadecimal digits; "@SCAN" applies it once SCAN scans have run (0:
+// before the first). Unknown options are errors, and so is a --set @N or later with
+// --scans N (no scan runs after it).
 bool parseTraceOptions(const model::Target &target, const QStringList &args, TraceRequest *request,
                        QString *error);
 
-// Runs the request on a fresh engine, writing the CSV header and one row per scan
-// (scan,time_ms,...; time_ms = virtual time at the start of the scan). Stimuli on a
-// timer/counter set its set value; on a word device its value; otherwise the bit.
+// Runs the request on a fresh engine, writing the CSV (model/image/scan_csv.h: scans from 1,
+// the time at a scan's end) with a row per scan. Stimuli on a timer/counter set its set
+// value; on a word device its value; otherwise the bit.
 void runTrace(const std::shared_ptr<const Program> &program, const TraceRequest &request,
               QTextStream &out, std::vector<RuntimeError> *runtimeErrors = nullptr);
 

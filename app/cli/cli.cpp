@@ -10,6 +10,7 @@
 #include "cli_terminal.h"
 #include "cli_test.h"
 
+#include "app/tr.h"
 #include "model/checks/checks.h"
 #include "model/convert/convert.h"
 #include "model/ladder/ladder_text.h"
@@ -25,25 +26,21 @@ namespace rung::app {
 
 namespace {
 
-struct Tr {
-    Q_DECLARE_TR_FUNCTIONS(rung::app::Cli)
-};
-
 QString usage() {
-    return Tr::tr("usage:\n"
-                  "  rungstudio-cli check FILE [--target %1] [--model M]\n"
-                  "  rungstudio-cli convert FILE [--target T] [--model M] [--from "
-                  "il|ladder|project|plcopen] --to il|ladder|project|plcopen "
-                  "[-o OUT] [--force] [--map FILE]\n"
-                  "  rungstudio-cli simulate FILE [--target T] [--model M] --scans N [--period "
-                  "MS] [--set DEV=VALUE@SCAN]... "
-                  "--trace DEV[,DEV...]\n"
-                  "  rungstudio-cli serve FILE [--target T] [--model M] --protocol "
-                  "vigor|modbus|modbus-tcp|hostlink (--pty | --port NAME | --tcp HOST:PORT) "
-                  "[--station N] [--baud B] [--frame 8N1] [--period MS] [--fault KIND]\n"
-                  "FILE is a listing (.il), a ladder text (.ladder) or a project (.rung).\n"
-                  "--lang en|hu|it: the language of the messages (else the locale's, LANG).\n"
-                  "Exit status: 0 no error, 1 the program has errors, 2 usage or I/O error.")
+    return CliTr::tr("usage:\n"
+                     "  rungstudio-cli check FILE [--target %1] [--model M]\n"
+                     "  rungstudio-cli convert FILE [--target T] [--model M] [--from "
+                     "il|ladder|project|plcopen] --to il|ladder|project|plcopen "
+                     "[-o OUT] [--force] [--map FILE]\n"
+                     "  rungstudio-cli simulate FILE [--target T] [--model M] --scans N [--period "
+                     "MS] [--set DEV=VALUE@SCAN]... "
+                     "--trace DEV[,DEV...]\n"
+                     "  rungstudio-cli serve FILE [--target T] [--model M] --protocol "
+                     "vigor|modbus|modbus-tcp|hostlink (--pty | --port NAME | --tcp HOST:PORT) "
+                     "[--station N] [--baud B] [--frame 8N1] [--period MS] [--fault KIND]\n"
+                     "FILE is a listing (.il), a ladder text (.ladder) or a project (.rung).\n"
+                     "--lang en|hu|it: the language of the messages (else the locale's, LANG).\n"
+                     "Exit status: 0 no error, 1 the program has errors, 2 usage or I/O error.")
                .arg(model::targetIds().join(QLatin1Char('|'))) +
            QLatin1Char('\n') + diffUsage() + QLatin1Char('\n') + showUsage() + QLatin1Char('\n') +
            testUsage() + QLatin1Char('\n') + onlineUsage() + QLatin1Char('\n') + recordUsage() +
@@ -56,7 +53,7 @@ int check(const QStringList &args, QTextStream &out, QTextStream &err) {
     QStringList rest;
     QString error;
     if (!parseCommonOptions(args, &options, &rest, &error) || !rest.isEmpty()) {
-        err << (error.isEmpty() ? Tr::tr("unexpected argument %1").arg(rest.value(0)) : error)
+        err << (error.isEmpty() ? CliTr::tr("unexpected argument %1").arg(rest.value(0)) : error)
             << '\n'
             << usage() << '\n';
         return 2;
@@ -104,13 +101,13 @@ int convert(const QStringList &args, QTextStream &out, QTextStream &err) {
         else if (rest[i] == QLatin1String("-o") && i + 1 < rest.size())
             output = rest[++i];
         else {
-            err << Tr::tr("unexpected argument %1").arg(rest[i]) << '\n' << usage() << '\n';
+            err << CliTr::tr("unexpected argument %1").arg(rest[i]) << '\n' << usage() << '\n';
             return 2;
         }
     }
     if (to != QLatin1String("il") && to != QLatin1String("ladder") &&
         to != QLatin1String("project") && to != QLatin1String("plcopen")) {
-        err << Tr::tr("--to must be il, ladder, project or plcopen") << '\n' << usage() << '\n';
+        err << CliTr::tr("--to must be il, ladder, project or plcopen") << '\n' << usage() << '\n';
         return 2;
     }
     Input input;
@@ -122,7 +119,7 @@ int convert(const QStringList &args, QTextStream &out, QTextStream &err) {
             status != 0)
             return status;
     } else if (!mapFile.isEmpty()) {
-        err << Tr::tr("--map is for --from plcopen") << '\n';
+        err << CliTr::tr("--map is for --from plcopen") << '\n';
         return 2;
     } else if (!loadInput(options, &input, &error)) {
         err << error << '\n';
@@ -136,7 +133,8 @@ int convert(const QStringList &args, QTextStream &out, QTextStream &err) {
     if (to != QLatin1String("project") && pendingListing(input, &notice, &typed)) {
         for (const model::Diagnostic &d : typed)
             err << formatDiagnostic(pendingLocation(input.file), d) << '\n';
-        err << notice << '\n' << Tr::tr("nothing written: the list as typed would be lost") << '\n';
+        err << notice << '\n'
+            << CliTr::tr("nothing written: the list as typed would be lost") << '\n';
         return 1;
     }
     // What `check` rejects is not written (docs/cli.md): the same findings decide, so that a
@@ -157,7 +155,7 @@ int convert(const QStringList &args, QTextStream &out, QTextStream &err) {
         for (const model::Diagnostic &d : all)
             if (d.severity == model::Severity::Error || d.code == QLatin1String("LD002"))
                 err << formatDiagnostic(input.file, d) << '\n';
-        err << Tr::tr("nothing written: the listing would leave out the contacts above") << '\n';
+        err << CliTr::tr("nothing written: the listing would leave out the contacts above") << '\n';
         return 1;
     }
     const bool hasErrors = incomplete || model::hasErrors(all);
@@ -166,11 +164,11 @@ int convert(const QStringList &args, QTextStream &out, QTextStream &err) {
             if (d.severity == model::Severity::Error)
                 err << formatDiagnostic(input.file, d) << '\n';
         if (incomplete) {
-            err << Tr::tr("nothing written: the input does not parse or convert whole") << '\n';
+            err << CliTr::tr("nothing written: the input does not parse or convert whole") << '\n';
             return 1;
         }
         if (!force) {
-            err << Tr::tr("nothing written: the input has errors (--force writes it anyway)")
+            err << CliTr::tr("nothing written: the input has errors (--force writes it anyway)")
                 << '\n';
             return 1;
         }
@@ -197,7 +195,7 @@ int convert(const QStringList &args, QTextStream &out, QTextStream &err) {
     }
     QSaveFile file(output);
     if (!file.open(QIODevice::WriteOnly) || file.write(bytes) != bytes.size() || !file.commit()) {
-        err << Tr::tr("cannot write %1: %2").arg(output, file.errorString()) << '\n';
+        err << CliTr::tr("cannot write %1: %2").arg(output, file.errorString()) << '\n';
         return 2;
     }
     return status;
@@ -246,8 +244,8 @@ int runCli(const QStringList &arguments, QTextStream &out, QTextStream &err) {
         out << QStringLiteral("rungstudio-cli %1\n").arg(QStringLiteral(RUNG_VERSION));
         return 0;
     }
-    err << (command.isEmpty() ? Tr::tr("no command given")
-                              : Tr::tr("unknown command %1").arg(command))
+    err << (command.isEmpty() ? CliTr::tr("no command given")
+                              : CliTr::tr("unknown command %1").arg(command))
         << '\n'
         << usage() << '\n';
     return 2;

@@ -1,22 +1,18 @@
 #include "cli_common.h"
 
+#include "app/tr.h"
 #include "model/checks/checks.h"
 #include "model/convert/convert.h"
 #include "model/ladder/ladder_text.h"
 #include "model/project/file_read.h"
+#include "model/project/program_file.h"
 #include "model/target/target_lists.h"
 
 #include <QCoreApplication>
-#include <QFile>
-#include <QFileInfo>
 
 namespace rung::app {
 
 namespace {
-
-struct Tr {
-    Q_DECLARE_TR_FUNCTIONS(rung::app::Cli)
-};
 
 // Checking takes about 0.7 s and 130 MB per MB of listing (8 MB: 6 s, 1 GB); a real program
 // of 10,000 rungs is well under 1 MB. Read at most one byte more than this, so that a device or a
@@ -74,10 +70,10 @@ bool pendingListing(const Input &input, QString *notice, std::vector<model::Diag
     const QString &text = input.project.pendingListing;
     if (input.kind != InputKind::Project || text.isEmpty())
         return false;
-    *notice = Tr::tr("%1 holds an instruction list typed in Rung Studio that is not in its "
-                     "program: the list had errors when the project was saved, and is kept as "
-                     "typed under the key \"pendingListing\"; the rungs are the last valid "
-                     "program. Open the project in Rung Studio and fix the list.")
+    *notice = CliTr::tr("%1 holds an instruction list typed in Rung Studio that is not in its "
+                        "program: the list had errors when the project was saved, and is kept as "
+                        "typed under the key \"pendingListing\"; the rungs are the last valid "
+                        "program. Open the project in Rung Studio and fix the list.")
                   .arg(input.file);
     errors->clear();
     const model::ParseResult parsed = model::parseInstructionList(*input.target, text, input.model);
@@ -99,7 +95,7 @@ bool parseCommonOptions(const QStringList &args, CommonOptions *options, QString
         const QString &a = args[i];
         auto value = [&](QString *into) {
             if (i + 1 >= args.size()) {
-                *error = Tr::tr("%1 needs a value").arg(a);
+                *error = CliTr::tr("%1 needs a value").arg(a);
                 return false;
             }
             *into = args[++i];
@@ -124,7 +120,7 @@ bool parseCommonOptions(const QStringList &args, CommonOptions *options, QString
         }
     }
     if (options->file.isEmpty()) {
-        *error = Tr::tr("no FILE given");
+        *error = CliTr::tr("no FILE given");
         return false;
     }
     return true;
@@ -132,71 +128,46 @@ bool parseCommonOptions(const QStringList &args, CommonOptions *options, QString
 
 bool loadInput(const CommonOptions &options, Input *input, QString *error) {
     input->file = options.file;
-    const QString suffix = QFileInfo(options.file).suffix().toLower();
-    QString from = options.from;
-    if (from.isEmpty())
-        from = suffix == QLatin1String(model::kProjectExtension) ? QStringLiteral("project")
-               : suffix == QLatin1String("ladder")               ? QStringLiteral("ladder")
-                                                                 : QStringLiteral("il");
-    if (from == QLatin1String("il"))
-        input->kind = InputKind::Listing;
-    else if (from == QLatin1String("ladder"))
-        input->kind = InputKind::Ladder;
-    else if (from == QLatin1String("project"))
-        input->kind = InputKind::Project;
-    else {
-        *error = Tr::tr("--from must be il, ladder or project, not %1").arg(from);
+    model::ProgramFileKind kind = model::programFileKind(options.file);
+    if (options.from == QLatin1String("il"))
+        kind = model::ProgramFileKind::Listing;
+    else if (options.from == QLatin1String("ladder"))
+        kind = model::ProgramFileKind::LadderText;
+    else if (options.from == QLatin1String("project"))
+        kind = model::ProgramFileKind::Project;
+    else if (!options.from.isEmpty()) {
+        *error = CliTr::tr("--from must be il, ladder or project, not %1").arg(options.from);
         return false;
     }
-
+    input->kind = kind == model::ProgramFileKind::Project      ? InputKind::Project
+                  : kind == model::ProgramFileKind::LadderText ? InputKind::Ladder
+                                                               : InputKind::Listing;
+    model::ProgramFileOptions open;
+    open.target = options.target;
+    open.maxBytes = kMaxInputBytes;
+    std::optional<model::ProgramFile> file =
+        model::openProgramFile(options.file, kind, open, error);
+    if (!file)
+        return false;
+    if (!file->target) { // a listing that names no PLC: a script says which
+        *error = CliTr::tr("%1: which PLC? Give --target %2 or a \"; target: NAME\" first line")
+                     .arg(options.file, model::targetIds().join(QLatin1Char('|')));
+        return false;
+    }
+    input->target = file->target;
+    input->text = file->text;
     if (input->kind == InputKind::Project) {
-        model::ProjectError pe;
-        auto project = model::loadProject(options.file, &pe);
-        if (!project) {
-            *error = pe.message;
-            return false;
-        }
-        input->project = *project;
-        input->target = project->target;
-        if (!options.target.isEmpty() && model::Target::byId(options.target) != project->target) {
-            *error = Tr::tr("%1 is a %2 project, not %3")
-                         .arg(options.file, project->target->id, options.target);
-            return false;
-        }
+        input->project = std::move(file->project);
         input->model =
-            input->target->model(options.model.isEmpty() ? project->model : options.model);
-        input->ladder = project->program;
+            input->target->model(options.model.isEmpty() ? input->project.model : options.model);
+        input->ladder = input->project.program;
     } else {
-        QByteArray bytes;
-        if (!readInputFile(options.file, &bytes, error))
-            return false;
-        input->text = QString::fromUtf8(bytes);
         const QString &text = input->text;
-        QString targetId = options.target;
-        if (targetId.isEmpty())
-            targetId = input->kind == InputKind::Ladder ? model::ladderTextTarget(text)
-                                                        : model::declaredTarget(text);
-        if (targetId.isEmpty() && input->kind == InputKind::Ladder) {
-            // No LADDER header names the PLC: the text is no ladder text, and the parser says so
-            // at 1:1 whatever the target.
-            targetId = model::Target::get(model::Target::families().front()).id;
-        }
-        if (targetId.isEmpty()) {
-            *error = Tr::tr("%1: which PLC? Give --target %2 or a \"; target: NAME\" first line")
-                         .arg(options.file, model::targetIds().join(QLatin1Char('|')));
-            return false;
-        }
-        input->target = model::Target::byId(targetId);
-        if (!input->target) {
-            *error = Tr::tr("unknown target %1 (%2)")
-                         .arg(targetId, model::targetIds().join(QStringLiteral(", ")));
-            return false;
-        }
         if (!options.model.isEmpty()) {
             input->model = input->target->model(options.model);
             if (!input->model) {
                 *error =
-                    Tr::tr("%1 has no model %2").arg(input->target->displayName, options.model);
+                    CliTr::tr("%1 has no model %2").arg(input->target->displayName, options.model);
                 return false;
             }
         }
@@ -223,7 +194,7 @@ bool loadInput(const CommonOptions &options, Input *input, QString *error) {
     if (options.model.isEmpty() && !input->model)
         input->model = &input->target->defaultModel();
     if (input->model == nullptr) {
-        *error = Tr::tr("%1 has no model %2").arg(input->target->displayName, options.model);
+        *error = CliTr::tr("%1 has no model %2").arg(input->target->displayName, options.model);
         return false;
     }
     input->project.target = input->target;
@@ -241,9 +212,9 @@ bool loadInput(const CommonOptions &options, Input *input, QString *error) {
 }
 
 QString formatDiagnostic(const QString &file, const model::Diagnostic &d) {
-    const QString severity = d.severity == model::Severity::Error     ? Tr::tr("error")
-                             : d.severity == model::Severity::Warning ? Tr::tr("warning")
-                                                                      : Tr::tr("note");
+    const QString severity = d.severity == model::Severity::Error     ? CliTr::tr("error")
+                             : d.severity == model::Severity::Warning ? CliTr::tr("warning")
+                                                                      : CliTr::tr("note");
     QString where;
     if (d.location.onListing())
         where = QStringLiteral("%1:%2:%3")
@@ -253,7 +224,7 @@ QString formatDiagnostic(const QString &file, const model::Diagnostic &d) {
     else if (d.location.onLadder())
         //: A finding's place on the ladder, after the file as a compiler writes file:line:column:
         //: %1 the file, %2 the rung's number, %3 the row, %4 the column. Keep the colons.
-        where = Tr::tr("%1:rung %2:%3:%4")
+        where = CliTr::tr("%1:rung %2:%3:%4")
                     .arg(file)
                     .arg(d.location.rung + 1)
                     .arg(std::max(0, d.location.row) + 1)

@@ -1,4 +1,5 @@
 #include "cli_diff.h"
+#include "app/tr.h"
 
 #include "cli_common.h"
 
@@ -12,10 +13,6 @@
 namespace rung::app {
 
 namespace {
-
-struct Tr {
-    Q_DECLARE_TR_FUNCTIONS(rung::app::Diff)
-};
 
 const QString kNull = QStringLiteral("/dev/null");
 
@@ -59,7 +56,7 @@ bool loadSide(const CommonOptions &options, model::Project *project, QString *er
     }
     if (!problems.isEmpty()) {
         *error = problems.join(QLatin1Char('\n')) + QLatin1Char('\n') +
-                 Tr::tr("%1 does not read whole, so it is not compared").arg(input.file);
+                 DiffTr::tr("%1 does not read whole, so it is not compared").arg(input.file);
         return false;
     }
     *project = input.project;
@@ -71,14 +68,15 @@ bool loadSide(const CommonOptions &options, model::Project *project, QString *er
 } // namespace
 
 QString diffUsage() {
-    return Tr::tr("  rungstudio-cli diff A B [--target T] [--model M] [--from il|ladder|project] "
-                  "[--format text|json]\n"
-                  "        (exit 0 the same, 1 different, 2 error)");
+    return DiffTr::tr(
+        "  rungstudio-cli diff A B [--target T] [--model M] [--from il|ladder|project] "
+        "[--format text|json]\n"
+        "        (exit 0 the same, 1 different, 2 error)");
 }
 
 QString showUsage() {
-    return Tr::tr("  rungstudio-cli show FILE   (a project as text to read and diff: git's "
-                  "textconv)");
+    return DiffTr::tr("  rungstudio-cli show FILE   (a project as text to read and diff: git's "
+                      "textconv)");
 }
 
 int runDiffCommand(const QStringList &args, QTextStream &out, QTextStream &err) {
@@ -90,7 +88,7 @@ int runDiffCommand(const QStringList &args, QTextStream &out, QTextStream &err) 
         if (a == QLatin1String("--format") || a == QLatin1String("--target") ||
             a == QLatin1String("--model") || a == QLatin1String("--from")) {
             if (i + 1 >= args.size()) {
-                err << Tr::tr("%1 needs a value").arg(a) << '\n' << diffUsage() << '\n';
+                err << DiffTr::tr("%1 needs a value").arg(a) << '\n' << diffUsage() << '\n';
                 return 2;
             }
             const QString v = args[++i];
@@ -103,18 +101,18 @@ int runDiffCommand(const QStringList &args, QTextStream &out, QTextStream &err) 
             else
                 options.from = v;
         } else if (a.startsWith(QLatin1String("--"))) {
-            err << Tr::tr("unknown option %1").arg(a) << '\n' << diffUsage() << '\n';
+            err << DiffTr::tr("unknown option %1").arg(a) << '\n' << diffUsage() << '\n';
             return 2;
         } else {
             files << a;
         }
     }
     if (files.size() != 2) {
-        err << Tr::tr("diff takes two files, A and B") << '\n' << diffUsage() << '\n';
+        err << DiffTr::tr("diff takes two files, A and B") << '\n' << diffUsage() << '\n';
         return 2;
     }
     if (format != QLatin1String("text") && format != QLatin1String("json")) {
-        err << Tr::tr("--format must be text or json, not %1").arg(format) << '\n';
+        err << DiffTr::tr("--format must be text or json, not %1").arg(format) << '\n';
         return 2;
     }
     // A listing that names no target takes --target, else its partner's.
@@ -140,7 +138,7 @@ int runDiffCommand(const QStringList &args, QTextStream &out, QTextStream &err) 
         }
     }
     if (empty[0] && empty[1]) {
-        err << Tr::tr("diff needs at least one file that is not /dev/null") << '\n';
+        err << DiffTr::tr("diff needs at least one file that is not /dev/null") << '\n';
         return 2;
     }
     for (int k = 0; k < 2; ++k) {
@@ -153,8 +151,8 @@ int runDiffCommand(const QStringList &args, QTextStream &out, QTextStream &err) 
         projects[k].program.target = other.target;
     }
     if (projects[0].target != projects[1].target) {
-        err << Tr::tr("%1 is a program for %2 and %3 one for %4: only programs of one PLC are "
-                      "compared")
+        err << DiffTr::tr("%1 is a program for %2 and %3 one for %4: only programs of one PLC are "
+                          "compared")
                    .arg(files[0], projects[0].target->displayName, files[1],
                         projects[1].target->displayName)
             << '\n';
@@ -170,7 +168,7 @@ int runDiffCommand(const QStringList &args, QTextStream &out, QTextStream &err) 
 
 int runShowCommand(const QStringList &args, QTextStream &out, QTextStream &err) {
     if (args.size() != 1 || args[0].startsWith(QLatin1String("--"))) {
-        err << Tr::tr("usage:") << '\n' << showUsage() << '\n';
+        err << DiffTr::tr("usage:") << '\n' << showUsage() << '\n';
         return 2;
     }
     const QString &file = args[0];
@@ -188,7 +186,8 @@ int runShowCommand(const QStringList &args, QTextStream &out, QTextStream &err) 
         err << ioError << '\n';
         return 2;
     }
-    out << QStringLiteral("; ") << Tr::tr("not read as a project: %1").arg(error.message) << '\n'
+    out << QStringLiteral("; ") << DiffTr::tr("not read as a project: %1").arg(error.message)
+        << '\n'
         << QString::fromUtf8(bytes);
     return 0;
 }

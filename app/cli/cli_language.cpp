@@ -1,16 +1,11 @@
 #include "cli_language.h"
 
 #include "app/languages.h"
+#include "app/tr.h"
 
 #include <QCoreApplication>
 
 namespace rung::app {
-
-namespace {
-struct Tr {
-    Q_DECLARE_TR_FUNCTIONS(rung::app::Cli)
-};
-} // namespace
 
 bool takeLanguageOption(QStringList *arguments, QString *language, QString *error) {
     language->clear();
@@ -27,8 +22,8 @@ bool takeLanguageOption(QStringList *arguments, QString *language, QString *erro
             continue;
         }
         if (!languageCodes().contains(code)) {
-            *error =
-                Tr::tr("--lang must be one of %1").arg(languageCodes().join(QLatin1String(", ")));
+            *error = CliTr::tr("--lang must be one of %1")
+                         .arg(languageCodes().join(QLatin1String(", ")));
             return false;
         }
         *language = code;

@@ -1,5 +1,6 @@
 #include "cli_load_program.h"
 
+#include "app/tr.h"
 #include "model/checks/checks.h"
 #include "simulator/compiler.h"
 
@@ -8,10 +9,6 @@
 namespace rung::app {
 
 namespace {
-
-struct Tr {
-    Q_DECLARE_TR_FUNCTIONS(rung::app::Simulate)
-};
 
 // The compiler's findings about a drawing's instructions (numbered by their index + 1 below)
 // name the rung, row and cell, as `check` does.
@@ -47,14 +44,14 @@ int loadProgram(const ProgramOptions &options, LoadedProgram *loaded, QTextStrea
     if (pendingListing(input, &notice, &typed)) {
         for (const model::Diagnostic &d : typed)
             err << formatDiagnostic(pendingLocation(input.file), d) << '\n';
-        err << notice << '\n' << Tr::tr("the program does not start") << '\n';
+        err << notice << '\n' << SimulateTr::tr("the program does not start") << '\n';
         return 1;
     }
     if (!input.listValid) {
         for (const model::Diagnostic &d : input.problems)
             if (d.severity == model::Severity::Error)
                 err << formatDiagnostic(input.file, d) << '\n';
-        err << Tr::tr("the program does not start") << '\n';
+        err << SimulateTr::tr("the program does not start") << '\n';
         return 1;
     }
     model::CheckOptions checks;
@@ -87,7 +84,7 @@ int loadProgram(const ProgramOptions &options, LoadedProgram *loaded, QTextStrea
             err << formatDiagnostic(input.file, onLadder(d, origin)) << '\n';
     }
     if (!compiled.ok()) {
-        err << Tr::tr("the program does not start") << '\n';
+        err << SimulateTr::tr("the program does not start") << '\n';
         return 1;
     }
     loaded->program = compiled.program;

@@ -1,5 +1,6 @@
 #include "cli_online.h"
 
+#include "app/tr.h"
 #include "comms/driver/connection.h"
 #include "comms/driver/driver.h"
 #include "model/image/snapshot.h"
@@ -12,12 +13,8 @@ namespace rung::app {
 
 namespace {
 
-struct Tr {
-    Q_DECLARE_TR_FUNCTIONS(rung::app::Online)
-};
-
 QString usage() {
-    return Tr::tr("usage:") + QLatin1Char('\n') + onlineUsage();
+    return OnlineTr::tr("usage:") + QLatin1Char('\n') + onlineUsage();
 }
 
 struct Options {
@@ -41,7 +38,7 @@ bool parseOptions(const QStringList &args, Options *o, QString *error) {
             if (args[i] != QLatin1String(v.name))
                 continue;
             if (i + 1 >= args.size()) {
-                *error = Tr::tr("%1 needs a value").arg(args[i]);
+                *error = OnlineTr::tr("%1 needs a value").arg(args[i]);
                 return false;
             }
             *v.value = args[++i];
@@ -50,33 +47,35 @@ bool parseOptions(const QStringList &args, Options *o, QString *error) {
         if (taken)
             continue;
         if (args[i].startsWith(QLatin1String("--"))) {
-            *error = Tr::tr("unknown option %1").arg(args[i]);
+            *error = OnlineTr::tr("unknown option %1").arg(args[i]);
             return false;
         }
         o->items << args[i];
     }
     if (targetId.isEmpty() || protocol.isEmpty()) {
-        *error = Tr::tr("--target and --protocol are needed");
+        *error = OnlineTr::tr("--target and --protocol are needed");
         return false;
     }
     o->target = model::Target::byId(targetId);
     if (!o->target) {
-        *error = Tr::tr("unknown target %1").arg(targetId);
+        *error = OnlineTr::tr("unknown target %1").arg(targetId);
         return false;
     }
     comms::ProtocolKind kind;
     if (!comms::parseProtocolKind(protocol, &kind)) {
-        *error = Tr::tr("unknown protocol %1: vigor, modbus, modbus-tcp or hostlink").arg(protocol);
+        *error = OnlineTr::tr("unknown protocol %1: vigor, modbus, modbus-tcp or hostlink")
+                     .arg(protocol);
         return false;
     }
     o->settings = comms::defaultSettings(kind);
     const int places = int(!port.isEmpty()) + int(!tcp.isEmpty()) + int(!pty.isEmpty());
     if (places != 1) {
-        *error = Tr::tr("give exactly one of --port, --tcp and --pty");
+        *error = OnlineTr::tr("give exactly one of --port, --tcp and --pty");
         return false;
     }
     if (kind == comms::ProtocolKind::ModbusTcp && tcp.isEmpty()) {
-        *error = Tr::tr("modbus-tcp needs --tcp HOST:PORT (for RTU frames on a port: modbus)");
+        *error = OnlineTr::tr(
+            "modbus-tcp needs --tcp HOST:PORT (for RTU frames on a port: modbus)");
         return false;
     }
     if (!tcp.isEmpty()) {
@@ -84,7 +83,8 @@ bool parseOptions(const QStringList &args, Options *o, QString *error) {
         bool ok = false;
         const int number = colon > 0 ? tcp.mid(colon + 1).toInt(&ok) : 0;
         if (!ok || number < 1 || number > 65535) {
-            *error = Tr::tr("--tcp needs HOST:PORT, e.g. 127.0.0.1:502; got %1").arg(tcp);
+            *error =
+                OnlineTr::tr("--tcp needs HOST:PORT, e.g. 127.0.0.1:502; got %1").arg(tcp);
             return false;
         }
         o->settings.via = comms::ConnectionSettings::Via::Tcp;
@@ -102,7 +102,7 @@ bool parseOptions(const QStringList &args, Options *o, QString *error) {
         bool ok = false;
         const int n = text.toInt(&ok);
         if (!ok || n < lowest || n > highest) {
-            *error = Tr::tr("%1 must be a number from %2 to %3; got %4")
+            *error = OnlineTr::tr("%1 must be a number from %2 to %3; got %4")
                          .arg(QLatin1String(option))
                          .arg(lowest)
                          .arg(highest)
@@ -118,12 +118,13 @@ bool parseOptions(const QStringList &args, Options *o, QString *error) {
         !number(retries, "--retries", 0, 10, &o->settings.link.retries))
         return false;
     if (!frame.isEmpty() && !comms::parseFrameFormat(frame, &o->settings.serial)) {
-        *error = Tr::tr("--frame must be data bits, parity and stop bits, e.g. 8N1 or 7E2; got %1")
+        *error = OnlineTr::tr(
+                     "--frame must be data bits, parity and stop bits, e.g. 8N1 or 7E2; got %1")
                      .arg(frame);
         return false;
     }
     if (o->items.isEmpty()) {
-        *error = Tr::tr("no device given");
+        *error = OnlineTr::tr("no device given");
         return false;
     }
     return true;
@@ -197,12 +198,13 @@ bool isBit(const model::Target &target, const model::Address &a) {
 } // namespace
 
 QString onlineUsage() {
-    return Tr::tr("  rungstudio-cli read  --target T --protocol vigor|modbus|modbus-tcp|hostlink\n"
-                  "        (--port NAME | --tcp HOST:PORT | --pty PATH) [--station N] [--baud B]\n"
-                  "        [--frame 8N1] [--timeout MS] [--retries N] DEVICE...\n"
-                  "  rungstudio-cli write (the same options) DEVICE=VALUE...\n"
-                  "Exit status of read and write: 0 done, 1 the PLC did not answer or refused, "
-                  "2 usage, device, value or port error.");
+    return OnlineTr::tr(
+        "  rungstudio-cli read  --target T --protocol vigor|modbus|modbus-tcp|hostlink\n"
+        "        (--port NAME | --tcp HOST:PORT | --pty PATH) [--station N] [--baud B]\n"
+        "        [--frame 8N1] [--timeout MS] [--retries N] DEVICE...\n"
+        "  rungstudio-cli write (the same options) DEVICE=VALUE...\n"
+        "Exit status of read and write: 0 done, 1 the PLC did not answer or refused, "
+        "2 usage, device, value or port error.");
 }
 
 int runReadCommand(const QStringList &args, QTextStream &out, QTextStream &err) {
@@ -265,7 +267,7 @@ int runWriteCommand(const QStringList &args, QTextStream &out, QTextStream &err)
     for (const QString &item : o.items) {
         const qsizetype eq = item.indexOf(u'=');
         if (eq <= 0) {
-            err << Tr::tr("%1: write DEVICE=VALUE").arg(item) << '\n';
+            err << OnlineTr::tr("%1: write DEVICE=VALUE").arg(item) << '\n';
             return 2;
         }
         model::Address a;
@@ -274,8 +276,9 @@ int runWriteCommand(const QStringList &args, QTextStream &out, QTextStream &err)
         qint64 value = 0;
         if (!parseValue(item.mid(eq + 1), &value) ||
             (isBit(*o.target, a) && value != 0 && value != 1)) {
-            err << Tr::tr("%1: %2 is not a value for %3 (a bit takes 0 or 1, ON or OFF; a word "
-                          "a number, 0x for hexadecimal)")
+            err << OnlineTr::tr(
+                       "%1: %2 is not a value for %3 (a bit takes 0 or 1, ON or OFF; a word "
+                       "a number, 0x for hexadecimal)")
                        .arg(item, item.mid(eq + 1), item.left(eq))
                 << '\n';
             return 2;
@@ -296,7 +299,7 @@ int runWriteCommand(const QStringList &args, QTextStream &out, QTextStream &err)
         QString why;
         const std::optional<qint64> word = driver->wordOf(c.address, c.value, &why);
         if (!word) {
-            err << Tr::tr("%1: %2").arg(o.items[qsizetype(i)], why) << '\n';
+            err << OnlineTr::tr("%1: %2").arg(o.items[qsizetype(i)], why) << '\n';
             return 2;
         }
         c.value = *word;
@@ -307,12 +310,12 @@ int runWriteCommand(const QStringList &args, QTextStream &out, QTextStream &err)
         QString notice;
         const comms::DriverError e = driver->execute(commands[i], &notice);
         if (!notice.isEmpty())
-            err << Tr::tr("note: %1").arg(notice) << '\n';
+            err << OnlineTr::tr("note: %1").arg(notice) << '\n';
         if (e.ok())
             continue;
         err << e.message << '\n';
         if (i + 1 < commands.size())
-            err << Tr::tr("not written: %1")
+            err << OnlineTr::tr("not written: %1")
                        .arg(o.items.mid(qsizetype(i) + 1).join(QLatin1String(" ")))
                 << '\n';
         return e.kind == comms::DriverError::Kind::BadDevice ||

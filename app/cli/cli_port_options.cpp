@@ -1,16 +1,9 @@
 #include "cli_port_options.h"
+#include "app/tr.h"
 
 #include <QCoreApplication>
 
 namespace rung::app {
-
-namespace {
-
-struct Tr {
-    Q_DECLARE_TR_FUNCTIONS(rung::app::PortOptions)
-};
-
-} // namespace
 
 bool takeValuedOptions(const QStringList &args, std::initializer_list<ValuedOption> options,
                        QString *error) {
@@ -20,11 +13,11 @@ bool takeValuedOptions(const QStringList &args, std::initializer_list<ValuedOpti
             if (args[i] == QLatin1String(o.name))
                 match = &o;
         if (!match) {
-            *error = Tr::tr("unexpected argument %1").arg(args[i]);
+            *error = PortOptionsTr::tr("unexpected argument %1").arg(args[i]);
             return false;
         }
         if (i + 1 >= args.size()) {
-            *error = Tr::tr("%1 needs a value").arg(args[i]);
+            *error = PortOptionsTr::tr("%1 needs a value").arg(args[i]);
             return false;
         }
         *match->value = args[++i];
@@ -38,13 +31,15 @@ bool parseLineOptions(const QString &baud, const QString &frame, comms::SerialSe
         bool ok = false;
         const int value = baud.toInt(&ok);
         if (!ok || value < 50 || value > 4'000'000) {
-            *error = Tr::tr("--baud must be a number from 50 to 4000000; got %1").arg(baud);
+            *error =
+                PortOptionsTr::tr("--baud must be a number from 50 to 4000000; got %1").arg(baud);
             return false;
         }
         line->baud = value;
     }
     if (!frame.isEmpty() && !comms::parseFrameFormat(frame, line)) {
-        *error = Tr::tr("--frame must be data bits, parity and stop bits, e.g. 8N1 or 7E2; got %1")
+        *error = PortOptionsTr::tr(
+                     "--frame must be data bits, parity and stop bits, e.g. 8N1 or 7E2; got %1")
                      .arg(frame);
         return false;
     }

@@ -1,7 +1,9 @@
 #include "cli_record.h"
 
 #include "cli_port_options.h"
+#include "cli_stop_signals.h"
 
+#include "app/tr.h"
 #include "comms/driver/connection.h"
 #include "comms/driver/relay.h"
 #include "comms/transport/pty_transport.h"
@@ -10,16 +12,9 @@
 #include <QElapsedTimer>
 #include <QFile>
 
-#include <csignal>
-#include <ctime>
-
 namespace rung::app {
 
 namespace {
-
-struct Tr {
-    Q_DECLARE_TR_FUNCTIONS(rung::app::Record)
-};
 
 // The capture is data a user keeps and compares: its labels are not translated.
 const QString kToPlc = QStringLiteral("PC>PLC");
@@ -40,7 +35,7 @@ std::unique_ptr<comms::Transport> makeSide(const QString &port, const comms::Ser
 } // namespace
 
 QString recordUsage() {
-    return Tr::tr(
+    return RecordTr::tr(
         "  rungstudio-cli record --pc PORT --plc PORT [--baud B] [--frame 8N1] [-o FILE]\n"
         "        [--seconds S]   (PORT: a serial port, a /dev/pts path, or pty for a new "
         "one)");
@@ -49,7 +44,7 @@ QString recordUsage() {
 int runRecordCommand(const QStringList &args, QTextStream &out, QTextStream &err) {
     QString pcPort, plcPort, output, baudText, frame, secondsText;
     const auto fail = [&err](const QString &message) {
-        err << message << '\n' << Tr::tr("usage:") << '\n' << recordUsage() << '\n';
+        err << message << '\n' << RecordTr::tr("usage:") << '\n' << recordUsage() << '\n';
         return 2;
     };
     QString error;
@@ -64,7 +59,7 @@ int runRecordCommand(const QStringList &args, QTextStream &out, QTextStream &err
                            &error))
         return fail(error);
     if (pcPort.isEmpty() || plcPort.isEmpty())
-        return fail(Tr::tr("--pc and --plc are needed: the two ports to join"));
+        return fail(RecordTr::tr("--pc and --plc are needed: the two ports to join"));
     if (!parseLineOptions(baudText, frame, &line, &error))
         return fail(error);
     double seconds = 0;
@@ -72,18 +67,19 @@ int runRecordCommand(const QStringList &args, QTextStream &out, QTextStream &err
         bool ok = false;
         seconds = secondsText.toDouble(&ok);
         if (!ok || seconds <= 0)
-            return fail(Tr::tr("--seconds must be a positive number; got %1").arg(secondsText));
+            return fail(
+                RecordTr::tr("--seconds must be a positive number; got %1").arg(secondsText));
     }
 
     QString pcCreated, plcCreated;
     auto pc = makeSide(pcPort, line, &pcCreated, &error);
     if (!pc) {
-        err << Tr::tr("the PC's side: %1").arg(error) << '\n';
+        err << RecordTr::tr("the PC's side: %1").arg(error) << '\n';
         return 2;
     }
     auto plc = makeSide(plcPort, line, &plcCreated, &error);
     if (!plc) {
-        err << Tr::tr("the PLC's side: %1").arg(error) << '\n';
+        err << RecordTr::tr("the PLC's side: %1").arg(error) << '\n';
         return 2;
     }
     const QString pcName = pcCreated.isEmpty() ? pcPort : pcCreated;
@@ -93,21 +89,11 @@ int runRecordCommand(const QStringList &args, QTextStream &out, QTextStream &err
     QTextStream toFile(&file);
     QTextStream &capture = output.isEmpty() ? out : toFile;
     if (!output.isEmpty() && !file.open(QIODevice::WriteOnly | QIODevice::Text)) {
-        err << Tr::tr("cannot write %1: %2").arg(output, file.errorString()) << '\n';
+        err << RecordTr::tr("cannot write %1: %2").arg(output, file.errorString()) << '\n';
         return 2;
     }
 
-    // SIGINT and SIGTERM are taken by this thread alone (sigtimedwait below), blocked before
-    // the relay's threads start so that they inherit the mask.
-    sigset_t stopSignals, previous;
-    sigemptyset(&stopSignals);
-    sigaddset(&stopSignals, SIGINT);
-    sigaddset(&stopSignals, SIGTERM);
-    pthread_sigmask(SIG_BLOCK, &stopSignals, &previous);
-    struct RestoreMask {
-        sigset_t mask;
-        ~RestoreMask() { pthread_sigmask(SIG_SETMASK, &mask, nullptr); }
-    } restore{previous};
+    StopSignals stopSignals; // before the relay's threads start, so that they inherit the mask
 
     comms::Relay relay(std::move(pc), std::move(plc));
     if (!relay.start(&error)) {
@@ -123,7 +109,7 @@ int runRecordCommand(const QStringList &args, QTextStream &out, QTextStream &err
     capture << "# rungstudio-cli record: PC " << pcName << ", PLC " << plcName << ", " << line.baud
             << ' ' << comms::frameFormatText(line) << ", started "
             << start.toString(Qt::ISODateWithMs) << Qt::endl;
-    err << Tr::tr("Passing bytes between %1 (PC) and %2 (PLC); stop with Ctrl+C")
+    err << RecordTr::tr("Passing bytes between %1 (PC) and %2 (PLC); stop with Ctrl+C")
                .arg(pcName, plcName)
         << Qt::endl;
 
@@ -147,8 +133,7 @@ int runRecordCommand(const QStringList &args, QTextStream &out, QTextStream &err
     QElapsedTimer clock;
     clock.start();
     while (relay.running()) {
-        const timespec poll{0, 100'000'000};
-        if (sigtimedwait(&stopSignals, nullptr, &poll) > 0)
+        if (stopSignals.wait(100))
             break;
         drain();
         if (seconds > 0 && double(clock.elapsed()) >= seconds * 1000)
@@ -157,13 +142,14 @@ int runRecordCommand(const QStringList &args, QTextStream &out, QTextStream &err
     const QString failure = relay.failure();
     relay.stop();
     drain();
-    err << Tr::tr("%1 bytes from the PC, %2 bytes from the PLC, in %3 records")
+    err << RecordTr::tr("%1 bytes from the PC, %2 bytes from the PLC, in %3 records")
                .arg(toPlc)
                .arg(toPc)
                .arg(records)
         << '\n';
     if (lost > 0)
-        err << Tr::tr("%1 records were lost: the capture was not written as fast as they came")
+        err << RecordTr::tr(
+                   "%1 records were lost: the capture was not written as fast as they came")
                    .arg(lost)
             << '\n';
     if (!failure.isEmpty()) {

@@ -1,7 +1,9 @@
 #include "cli_serve.h"
 
 #include "cli_load_program.h"
+#include "cli_stop_signals.h"
 
+#include "app/tr.h"
 #include "app/virtual_plc/virtual_plc.h"
 #include "comms/driver/connection.h"
 #include "comms/driver/protocol_driver.h"
@@ -27,18 +29,15 @@ namespace rung::app {
 
 namespace {
 
-struct Tr {
-    Q_DECLARE_TR_FUNCTIONS(rung::app::Serve)
-};
-
 using comms::SerialSettings;
 using comms::slave::Fault;
 
 QString usage() {
-    return Tr::tr("usage: rungstudio-cli serve FILE [--target T] [--model M] --protocol "
-                  "vigor|modbus|modbus-tcp|hostlink (--pty [--link PATH] | --port NAME | --tcp "
-                  "HOST:PORT) [--station N] [--baud B] [--frame 8N1|7E1|7E2|...] [--period MS] "
-                  "[--fault bad-checksum|silent|wrong-station|garbage|truncated|split]");
+    return ServeTr::tr(
+        "usage: rungstudio-cli serve FILE [--target T] [--model M] --protocol "
+        "vigor|modbus|modbus-tcp|hostlink (--pty [--link PATH] | --port NAME | --tcp "
+        "HOST:PORT) [--station N] [--baud B] [--frame 8N1|7E1|7E2|...] [--period MS] "
+        "[--fault bad-checksum|silent|wrong-station|garbage|truncated|split]");
 }
 
 // What ended the serving: a signal, or the line failing.
@@ -79,14 +78,16 @@ public:
         if (::lstat(path.constData(), &st) != 0) {
             if (errno == ENOENT)
                 return true;
-            *error = Tr::tr("--link %1: %2").arg(m_path, QString::fromLocal8Bit(strerror(errno)));
+            *error =
+                ServeTr::tr("--link %1: %2").arg(m_path, QString::fromLocal8Bit(strerror(errno)));
             return false;
         }
         if (S_ISLNK(st.st_mode) && linkTarget(path).startsWith(QLatin1String("/dev/pts/")))
             return true;
-        *error = Tr::tr("--link %1: something that is not a link to a pseudo-terminal is there "
+        *error =
+            ServeTr::tr("--link %1: something that is not a link to a pseudo-terminal is there "
                         "already; it is left as it is: remove it or give another path")
-                     .arg(m_path);
+                .arg(m_path);
         return false;
     }
 
@@ -97,7 +98,7 @@ public:
         ::unlink(fresh.constData());
         if (::symlink(QFile::encodeName(pty).constData(), fresh.constData()) != 0 ||
             ::rename(fresh.constData(), path.constData()) != 0) {
-            *error = Tr::tr("--link %1: the link cannot be made: %2")
+            *error = ServeTr::tr("--link %1: the link cannot be made: %2")
                          .arg(m_path, QString::fromLocal8Bit(strerror(errno)));
             ::unlink(fresh.constData());
             return false;
@@ -179,30 +180,30 @@ int runServeCommand(const QStringList &args, QTextStream &out, QTextStream &err)
         else if (!a.startsWith(QLatin1String("--")) && program.file.isEmpty())
             program.file = a;
         else
-            return fail(Tr::tr("unexpected argument %1").arg(a));
+            return fail(ServeTr::tr("unexpected argument %1").arg(a));
         if (!ok)
-            return fail(Tr::tr("%1 needs a valid value").arg(a));
+            return fail(ServeTr::tr("%1 needs a valid value").arg(a));
     }
     if (program.file.isEmpty())
-        return fail(Tr::tr("no FILE given"));
+        return fail(ServeTr::tr("no FILE given"));
     // One table of the protocols' line defaults and stations, the connection panel's too.
     comms::ProtocolKind kind{};
     if (!comms::parseProtocolKind(protocolName, &kind))
         return fail(protocolName.isEmpty()
-                        ? Tr::tr("--protocol is required")
-                        : Tr::tr("unknown protocol %1 (vigor, modbus, modbus-tcp, hostlink)")
+                        ? ServeTr::tr("--protocol is required")
+                        : ServeTr::tr("unknown protocol %1 (vigor, modbus, modbus-tcp, hostlink)")
                               .arg(protocolName));
     const comms::ConnectionSettings defaults = comms::defaultSettings(kind);
     const comms::StationRange stations = comms::stationRange(kind);
     const auto framing = kind == comms::ProtocolKind::ModbusTcp ? comms::modbus::Framing::Tcp
                                                                 : comms::modbus::Framing::Rtu;
     if (int(pty) + int(!portName.isEmpty()) + int(!tcp.isEmpty()) != 1)
-        return fail(Tr::tr("give one of --pty, --port NAME and --tcp HOST:PORT"));
+        return fail(ServeTr::tr("give one of --pty, --port NAME and --tcp HOST:PORT"));
     if (framing == comms::modbus::Framing::Tcp && tcp.isEmpty())
-        return fail(Tr::tr("--protocol modbus-tcp is served over --tcp HOST:PORT"));
+        return fail(ServeTr::tr("--protocol modbus-tcp is served over --tcp HOST:PORT"));
     if (!linkPath.isEmpty() && !pty)
-        return fail(Tr::tr("--link names the pseudo-terminal of --pty (a port keeps its own "
-                           "name, a TCP address is given)"));
+        return fail(ServeTr::tr("--link names the pseudo-terminal of --pty (a port keeps its own "
+                                "name, a TCP address is given)"));
     std::optional<PtyLink> link;
     if (!linkPath.isEmpty()) {
         link.emplace(linkPath);
@@ -222,8 +223,8 @@ int runServeCommand(const QStringList &args, QTextStream &out, QTextStream &err)
         host = name == QLatin1String("localhost") ? QHostAddress(QHostAddress::LocalHost)
                                                   : QHostAddress(name);
         if (!ok || port > 65535 || host.isNull())
-            return fail(Tr::tr("--tcp needs HOST:PORT with a numeric address, e.g. "
-                               "127.0.0.1:1502, not %1")
+            return fail(ServeTr::tr("--tcp needs HOST:PORT with a numeric address, e.g. "
+                                    "127.0.0.1:1502, not %1")
                             .arg(tcp));
         tcpPort = quint16(port);
     }
@@ -234,12 +235,12 @@ int runServeCommand(const QStringList &args, QTextStream &out, QTextStream &err)
     if (baud > 0)
         slave.line.baud = baud;
     if (!format.isEmpty() && !comms::parseFrameFormat(format, &slave.line))
-        return fail(Tr::tr("--frame needs data bits, parity and stop bits, e.g. 8N1 or 7E2, "
-                           "not %1")
+        return fail(ServeTr::tr("--frame needs data bits, parity and stop bits, e.g. 8N1 or 7E2, "
+                                "not %1")
                         .arg(format));
     slave.station = station >= 0 ? station : defaults.station;
     if (slave.station < stations.first || slave.station > stations.last)
-        return fail(Tr::tr("--station %1 is outside %2..%3, the stations of %4")
+        return fail(ServeTr::tr("--station %1 is outside %2..%3, the stations of %4")
                         .arg(slave.station)
                         .arg(stations.first)
                         .arg(stations.last)
@@ -247,7 +248,7 @@ int runServeCommand(const QStringList &args, QTextStream &out, QTextStream &err)
     if (!faultName.isEmpty()) {
         const auto fault = comms::slave::faultFromName(faultName);
         if (!fault)
-            return fail(Tr::tr("unknown fault %1 (%2)")
+            return fail(ServeTr::tr("unknown fault %1 (%2)")
                             .arg(faultName, comms::slave::faultNames().join(QLatin1String(", "))));
         slave.fault = *fault;
     }
@@ -260,26 +261,17 @@ int runServeCommand(const QStringList &args, QTextStream &out, QTextStream &err)
         QStringList spoken;
         for (const comms::ProtocolKind k : comms::protocolsOf(*loaded.target))
             spoken << comms::protocolCommandName(k);
-        err << (spoken.isEmpty() ? Tr::tr("%1 has no published protocol to serve (protocols.md)")
-                                       .arg(loaded.target->displayName)
-                                 : Tr::tr("%1 does not speak %2; it speaks %3")
-                                       .arg(loaded.target->displayName, protocolName,
-                                            spoken.join(QLatin1String(", "))))
+        err << (spoken.isEmpty()
+                    ? ServeTr::tr("%1 has no published protocol to serve (protocols.md)")
+                          .arg(loaded.target->displayName)
+                    : ServeTr::tr("%1 does not speak %2; it speaks %3")
+                          .arg(loaded.target->displayName, protocolName,
+                               spoken.join(QLatin1String(", "))))
             << '\n';
         return 2;
     }
 
-    // SIGINT and SIGTERM are taken by this thread alone (sigtimedwait below): blocked here
-    // before any thread starts, so every thread the virtual PLC makes inherits the mask.
-    sigset_t stopSignals, previous;
-    sigemptyset(&stopSignals);
-    sigaddset(&stopSignals, SIGINT);
-    sigaddset(&stopSignals, SIGTERM);
-    pthread_sigmask(SIG_BLOCK, &stopSignals, &previous);
-    struct RestoreMask {
-        sigset_t mask;
-        ~RestoreMask() { pthread_sigmask(SIG_SETMASK, &mask, nullptr); }
-    } restore{previous};
+    StopSignals stopSignals; // before any thread of the virtual PLC starts
 
     auto ending = std::make_shared<Ending>();
     slave.onFailure = [ending](const QString &message) {
@@ -317,20 +309,19 @@ int runServeCommand(const QStringList &args, QTextStream &out, QTextStream &err)
     // The first line says where the PLC is reached (with --link, the link); a script reads
     // it before anything else.
     out << where << Qt::endl;
-    err << Tr::tr("%1 serves %2 (%3, %4, station %5) on %6; stop it with Ctrl+C")
+    err << ServeTr::tr("%1 serves %2 (%3, %4, station %5) on %6; stop it with Ctrl+C")
                .arg(loaded.target->displayName, program.file,
                     QCoreApplication::translate("rung::model::Target", map->description),
                     protocolName)
                .arg(slave.station)
                .arg(linked.isEmpty()
                         ? where
-                        : Tr::tr("%1 (a link to %2, removed at the end)").arg(where, linked))
+                        : ServeTr::tr("%1 (a link to %2, removed at the end)").arg(where, linked))
         << Qt::endl;
 
     QString failure;
     while (true) {
-        const timespec poll{0, 200'000'000};
-        if (sigtimedwait(&stopSignals, nullptr, &poll) > 0)
+        if (stopSignals.wait(200))
             break;
         std::lock_guard lock(ending->mutex);
         if (!ending->failure.isEmpty()) {
@@ -342,8 +333,8 @@ int runServeCommand(const QStringList &args, QTextStream &out, QTextStream &err)
     if (link)
         link->remove();
     const comms::slave::SlaveStatistics s = plc.statistics();
-    err << Tr::tr("%1 requests answered, %2 refused with an error, %3 for other stations or "
-                  "broadcast, %4 frames dropped; %5 writes")
+    err << ServeTr::tr("%1 requests answered, %2 refused with an error, %3 for other stations or "
+                       "broadcast, %4 frames dropped; %5 writes")
                .arg(s.answered)
                .arg(s.refused)
                .arg(s.ignored)

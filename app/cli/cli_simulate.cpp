@@ -3,6 +3,7 @@
 #include "cli_common.h"
 #include "cli_load_program.h"
 
+#include "app/tr.h"
 #include "simulator/trace.h"
 
 #include <QCoreApplication>
@@ -11,14 +12,10 @@ namespace rung::app {
 
 namespace {
 
-struct Tr {
-    Q_DECLARE_TR_FUNCTIONS(rung::app::Simulate)
-};
-
 QString usage() {
-    return Tr::tr("usage: rungstudio-cli simulate FILE [--target T] [--model M] --scans N "
-                  "[--period MS] [--set DEV=VALUE@SCAN]... --trace DEV[,DEV...]\n"
-                  "FILE is a listing (.il), a ladder text (.ladder) or a project (.rung).");
+    return SimulateTr::tr("usage: rungstudio-cli simulate FILE [--target T] [--model M] --scans N "
+                          "[--period MS] [--set DEV=VALUE@SCAN]... --trace DEV[,DEV...]\n"
+                          "FILE is a listing (.il), a ladder text (.ladder) or a project (.rung).");
 }
 
 } // namespace
@@ -31,7 +28,7 @@ int runSimulateCommand(const QStringList &args, QTextStream &out, QTextStream &e
         const QString &a = args[i];
         if (a.startsWith(QLatin1String("--"))) {
             if (i + 1 >= args.size()) {
-                err << Tr::tr("%1 needs a value").arg(a) << '\n' << usage() << '\n';
+                err << SimulateTr::tr("%1 needs a value").arg(a) << '\n' << usage() << '\n';
                 return 2;
             }
             const QString value = args[++i];
@@ -44,7 +41,7 @@ int runSimulateCommand(const QStringList &args, QTextStream &out, QTextStream &e
         } else if (common.file.isEmpty()) {
             common.file = a;
         } else {
-            err << Tr::tr("unexpected argument %1").arg(a) << '\n' << usage() << '\n';
+            err << SimulateTr::tr("unexpected argument %1").arg(a) << '\n' << usage() << '\n';
             return 2;
         }
     }
@@ -72,7 +69,8 @@ int runSimulateCommand(const QStringList &args, QTextStream &out, QTextStream &e
                        .arg(common.file)
                        .arg(program.origin[static_cast<std::size_t>(e.instruction)].rung + 1);
         }
-        err << Tr::tr("runtime error at step %1: %2").arg(e.instruction).arg(e.message) << '\n';
+        err << SimulateTr::tr("runtime error at step %1: %2").arg(e.instruction).arg(e.message)
+            << '\n';
     }
     return 0;
 }

@@ -2,6 +2,7 @@
 
 #include "cli_port_options.h"
 
+#include "app/tr.h"
 #include "comms/driver/connection.h"
 #include "comms/driver/relay.h"
 
@@ -13,10 +14,6 @@
 namespace rung::app {
 
 namespace {
-
-struct Tr {
-    Q_DECLARE_TR_FUNCTIONS(rung::app::Terminal)
-};
 
 // As `record` labels them, so that what this prints reads and replays as a capture.
 const QString kSent = QStringLiteral("PC>PLC");
@@ -103,15 +100,16 @@ std::optional<QByteArray> lineBytes(const QString &line) {
 } // namespace
 
 QString terminalUsage() {
-    return Tr::tr("  rungstudio-cli terminal --port PORT [--baud B] [--frame 8N1] [--wait MS]\n"
-                  "        (each line of stdin: hex bytes, \"text\\r\", or a capture line)");
+    return TerminalTr::tr(
+        "  rungstudio-cli terminal --port PORT [--baud B] [--frame 8N1] [--wait MS]\n"
+        "        (each line of stdin: hex bytes, \"text\\r\", or a capture line)");
 }
 
 int runTerminalCommand(const QStringList &args, QTextStream &in, QTextStream &out,
                        QTextStream &err) {
     QString port, baudText, frame, waitText;
     const auto fail = [&err](const QString &message) {
-        err << message << '\n' << Tr::tr("usage:") << '\n' << terminalUsage() << '\n';
+        err << message << '\n' << TerminalTr::tr("usage:") << '\n' << terminalUsage() << '\n';
         return 2;
     };
     QString error;
@@ -122,7 +120,7 @@ int runTerminalCommand(const QStringList &args, QTextStream &in, QTextStream &ou
             &error))
         return fail(error);
     if (port.isEmpty())
-        return fail(Tr::tr("--port is needed"));
+        return fail(TerminalTr::tr("--port is needed"));
     if (!parseLineOptions(baudText, frame, &line, &error))
         return fail(error);
     int waitMs = 500;
@@ -130,7 +128,8 @@ int runTerminalCommand(const QStringList &args, QTextStream &in, QTextStream &ou
         bool ok = false;
         waitMs = waitText.toInt(&ok);
         if (!ok || waitMs < 1 || waitMs > 60'000)
-            return fail(Tr::tr("--wait must be a number from 1 to 60000; got %1").arg(waitText));
+            return fail(
+                TerminalTr::tr("--wait must be a number from 1 to 60000; got %1").arg(waitText));
     }
 
     const std::unique_ptr<comms::Transport> transport = comms::makePortTransport(port, line);
@@ -167,8 +166,8 @@ int runTerminalCommand(const QStringList &args, QTextStream &in, QTextStream &ou
         ++number;
         const std::optional<QByteArray> bytes = lineBytes(text);
         if (!bytes) {
-            err << Tr::tr("line %1: \"%2\" is neither hex bytes (02 30 31), a quoted text "
-                          "(\"@00RD\\r\") nor a capture line")
+            err << TerminalTr::tr("line %1: \"%2\" is neither hex bytes (02 30 31), a quoted text "
+                                  "(\"@00RD\\r\") nor a capture line")
                        .arg(number)
                        .arg(text.trimmed())
                 << '\n';

@@ -1,4 +1,5 @@
 #include "cli_test.h"
+#include "app/tr.h"
 
 #include "cli_common.h"
 #include "cli_load_program.h"
@@ -15,10 +16,6 @@
 namespace rung::app {
 
 namespace {
-
-struct Tr {
-    Q_DECLARE_TR_FUNCTIONS(rung::app::Test)
-};
 
 const QString kExtension = QStringLiteral("rungtest");
 
@@ -44,8 +41,8 @@ simulator::ScenarioProgram loadScenarioProgram(const QString &path, const QStrin
 } // namespace
 
 QString testUsage() {
-    return Tr::tr("  rungstudio-cli test FILE|DIR... [--junit OUT.xml]   (scenario tests, "
-                  ".rungtest)");
+    return TestTr::tr("  rungstudio-cli test FILE|DIR... [--junit OUT.xml]   (scenario tests, "
+                      ".rungtest)");
 }
 
 int runTestCommand(const QStringList &args, QTextStream &out, QTextStream &err) {
@@ -54,19 +51,19 @@ int runTestCommand(const QStringList &args, QTextStream &out, QTextStream &err) 
     for (qsizetype i = 0; i < args.size(); ++i) {
         if (args[i] == QLatin1String("--junit")) {
             if (i + 1 >= args.size()) {
-                err << Tr::tr("--junit needs a value") << '\n' << testUsage() << '\n';
+                err << TestTr::tr("--junit needs a value") << '\n' << testUsage() << '\n';
                 return 2;
             }
             junit = args[++i];
         } else if (args[i].startsWith(QLatin1String("--"))) {
-            err << Tr::tr("unknown option %1").arg(args[i]) << '\n' << testUsage() << '\n';
+            err << TestTr::tr("unknown option %1").arg(args[i]) << '\n' << testUsage() << '\n';
             return 2;
         } else {
             inputs << args[i];
         }
     }
     if (inputs.isEmpty()) {
-        err << Tr::tr("no scenario given") << '\n' << testUsage() << '\n';
+        err << TestTr::tr("no scenario given") << '\n' << testUsage() << '\n';
         return 2;
     }
     QStringList files;
@@ -80,14 +77,14 @@ int runTestCommand(const QStringList &args, QTextStream &out, QTextStream &err) 
                 found << it.next();
             std::sort(found.begin(), found.end());
             if (found.isEmpty()) {
-                err << Tr::tr("%1: no .%2 file in the folder").arg(input, kExtension) << '\n';
+                err << TestTr::tr("%1: no .%2 file in the folder").arg(input, kExtension) << '\n';
                 return 2;
             }
             files << found;
         } else if (info.exists()) {
             files << input;
         } else {
-            err << Tr::tr("%1: no such file or folder").arg(input) << '\n';
+            err << TestTr::tr("%1: no such file or folder").arg(input) << '\n';
             return 2;
         }
     }
@@ -108,12 +105,12 @@ int runTestCommand(const QStringList &args, QTextStream &out, QTextStream &err) 
             out << QStringLiteral("%1:%2: %3: %4")
                        .arg(file)
                        .arg(e.line)
-                       .arg(Tr::tr("error"), e.message)
+                       .arg(TestTr::tr("error"), e.message)
                 << '\n';
         for (const simulator::ScenarioFailure &f : r.failures)
             out << QStringLiteral("%1:%2: %3").arg(file).arg(f.line).arg(f.message) << '\n';
         for (const QString &note : r.runtimeErrors)
-            err << QStringLiteral("%1: %2: %3").arg(file, Tr::tr("note"), note) << '\n';
+            err << QStringLiteral("%1: %2: %3").arg(file, TestTr::tr("note"), note) << '\n';
         if (!r.passed())
             ++failed;
         expectations += static_cast<int>(r.expectations.size());
@@ -127,7 +124,7 @@ int runTestCommand(const QStringList &args, QTextStream &out, QTextStream &err) 
     }
     //: The summary of a test run: %1 scenario files, %2 expectations, %3 failed expectations,
     //: %4 scenarios that failed or did not run.
-    out << Tr::tr("%1 scenario(s), %2 expectation(s): %3 failed; %4 scenario(s) did not pass")
+    out << TestTr::tr("%1 scenario(s), %2 expectation(s): %3 failed; %4 scenario(s) did not pass")
                .arg(results.size())
                .arg(expectations)
                .arg(failedExpectations)
@@ -137,7 +134,7 @@ int runTestCommand(const QStringList &args, QTextStream &out, QTextStream &err) 
         const QByteArray xml = simulator::scenarioJUnit(results);
         QSaveFile f(junit);
         if (!f.open(QIODevice::WriteOnly) || f.write(xml) != xml.size() || !f.commit()) {
-            err << Tr::tr("cannot write %1: %2").arg(junit, f.errorString()) << '\n';
+            err << TestTr::tr("cannot write %1: %2").arg(junit, f.errorString()) << '\n';
             return 2;
         }
     }

@@ -158,6 +158,10 @@ private:
     // Names a program opened from a listing or ladder text after its file
     // (Document::setUntitledName).
     void nameImported(const QString &path);
+    // A program read from a listing or ladder text: a new project of the target's default
+    // model, named after the file.
+    void showImported(const model::Target &target, const model::LadderProgram &program,
+                      const QString &path);
     void refreshProjectInfo();
     // The list as typed when it has errors the program could not take; empty when it agrees.
     QString pendingListing() const;

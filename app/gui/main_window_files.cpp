@@ -13,7 +13,7 @@
 #include "editor/ladder_view.h"
 
 #include "model/ladder/ladder_text.h"
-#include "model/project/file_read.h"
+#include "model/project/program_file.h"
 #include "model/project/project.h"
 
 #include <QComboBox>
@@ -156,76 +156,68 @@ bool MainWindow::openFile(const QString &path, const QString &targetId, bool qui
                 10000);
         return true;
     }
-    model::Project project;
-    if (suffix == QLatin1String(model::kProjectExtension)) {
-        model::ProjectError error;
-        auto loaded = model::loadProject(path, &error);
-        if (!loaded)
-            return fail(error.message);
-        project = *loaded;
-    } else {
-        // The target: as asked, else as the listing's first line names it, else the current.
-        QByteArray bytes;
-        QString ioError;
-        if (const model::ReadStatus status =
-                model::readAtMost(path, kMaxTextFileBytes, &bytes, &ioError);
-            status != model::ReadStatus::Ok)
-            return fail(model::readFailure(status, path, kMaxTextFileBytes, ioError));
-        const QString text = QString::fromUtf8(bytes);
-        const bool drawn = suffix == QLatin1String("ladder"); // a ladder text, not a listing
-        QString id = targetId;
-        if (id.isEmpty())
-            id = drawn ? model::ladderTextTarget(text)
-                       : model::listingTarget(text, m_document->target().id);
-        if (id.isEmpty())
-            id = m_document->target().id;
-        const model::Target *target = model::Target::byId(id.toLower());
-        if (!target)
-            return fail(tr("Unknown target %1").arg(id));
-        if (drawn) {
-            // The drawing has no text of its own in the window: one that does not read opens
-            // nothing, and says where it stops.
-            const model::LadderTextResult ladder = model::parseLadderText(*target, text);
-            if (!ladder.ok()) {
-                const model::ParseError &e = ladder.errors.front();
-                return fail(tr("%1, line %2, column %3: %4")
-                                .arg(QDir::toNativeSeparators(path))
-                                .arg(e.line)
-                                .arg(e.column)
-                                .arg(e.message));
-            }
-            project.target = target;
-            project.model = target->defaultModel().name;
-            project.program = ladder.ladder;
-            showProject(project, QString());
-            nameImported(path);
-            return true;
-        }
-        const model::ParseResult parsed = model::parseInstructionList(*target, text);
-        const model::ToLadderResult ladder =
-            parsed.ok() ? model::listToLadder(parsed.list) : model::ToLadderResult{};
-        if (!parsed.ok() || !ladder.ok()) {
-            // A listing with errors opens as text, as typed, its errors marked in the list and
-            // the problems: the user fixes it here and the ladder follows.
-            newProject(*target, target->defaultModel().name);
-            m_il->setText(text);
-            applyListing();
-            nameImported(path);
-            m_errorsMessage = tr("%1 has errors; the ladder follows once they are fixed")
-                                  .arg(QFileInfo(path).fileName());
-            statusBar()->showMessage(m_errorsMessage, 10000);
-            return true;
-        }
-        project.target = target;
-        project.model = target->defaultModel().name;
-        project.program = ladder.ladder;
-    }
-    showProject(project, suffix == QLatin1String(model::kProjectExtension) ? path : QString());
-    if (suffix == QLatin1String(model::kProjectExtension))
+    // The target: as asked, else as the file names it, else the one the listing's syntax
+    // reads (the current first), else the current.
+    model::ProgramFileOptions options;
+    options.target = targetId;
+    options.fallbackTarget = m_document->target().id;
+    options.maxBytes = kMaxTextFileBytes;
+    QString error;
+    std::optional<model::ProgramFile> file =
+        model::openProgramFile(path, model::programFileKind(path), options, &error);
+    if (!file)
+        return fail(error);
+    const model::Target &target = *file->target;
+    switch (file->kind) {
+    case model::ProgramFileKind::Project:
+        showProject(file->project, path);
         addRecent(path);
-    else
+        return true;
+    case model::ProgramFileKind::LadderText: {
+        // The drawing has no text of its own in the window: one that does not read opens
+        // nothing, and says where it stops.
+        const model::LadderTextResult ladder = model::parseLadderText(target, file->text);
+        if (!ladder.ok()) {
+            const model::ParseError &e = ladder.errors.front();
+            return fail(tr("%1, line %2, column %3: %4")
+                            .arg(QDir::toNativeSeparators(path))
+                            .arg(e.line)
+                            .arg(e.column)
+                            .arg(e.message));
+        }
+        showImported(target, ladder.ladder, path);
+        return true;
+    }
+    case model::ProgramFileKind::Listing:
+        break;
+    }
+    const model::ParseResult parsed = model::parseInstructionList(target, file->text);
+    const model::ToLadderResult ladder =
+        parsed.ok() ? model::listToLadder(parsed.list) : model::ToLadderResult{};
+    if (!parsed.ok() || !ladder.ok()) {
+        // A listing with errors opens as text, as typed, its errors marked in the list and
+        // the problems: the user fixes it here and the ladder follows.
+        newProject(target, target.defaultModel().name);
+        m_il->setText(file->text);
+        applyListing();
         nameImported(path);
+        m_errorsMessage = tr("%1 has errors; the ladder follows once they are fixed")
+                              .arg(QFileInfo(path).fileName());
+        statusBar()->showMessage(m_errorsMessage, 10000);
+        return true;
+    }
+    showImported(target, ladder.ladder, path);
     return true;
+}
+
+void MainWindow::showImported(const model::Target &target, const model::LadderProgram &program,
+                              const QString &path) {
+    model::Project project;
+    project.target = &target;
+    project.model = target.defaultModel().name;
+    project.program = program;
+    showProject(project, QString());
+    nameImported(path);
 }
 
 void MainWindow::nameImported(const QString &path) {

@@ -1,7 +1,7 @@
 #include "symbol_table.h"
 
 #include "editor/document.h"
-#include "editor/symbols_csv.h"
+#include "model/project/symbols_csv.h"
 
 #include "model/project/file_read.h"
 
@@ -119,7 +119,7 @@ void SymbolTable::refresh() {
 bool SymbolTable::exportCsv(const QString &path, QString *error) const {
     QSaveFile file(path);
     const QByteArray bytes =
-        editor::symbolsToCsv(m_document->target(), m_document->project().symbols).toUtf8();
+        model::symbolsToCsv(m_document->target(), m_document->project().symbols).toUtf8();
     if (!file.open(QIODevice::WriteOnly) || file.write(bytes) != bytes.size() || !file.commit()) {
         if (error)
             *error = tr("%1: %2").arg(QDir::toNativeSeparators(path), file.errorString());
@@ -136,7 +136,7 @@ bool SymbolTable::importCsv(const QString &path, QString *error) {
         *error = model::readFailure(status, path, kMaxCsvBytes, ioError);
         return false;
     }
-    const editor::SymbolsCsv csv = editor::symbolsFromCsv(
+    const model::SymbolsCsv csv = model::symbolsFromCsv(
         m_document->target(), m_document->modelVariant(), QString::fromUtf8(bytes));
     if (!csv.ok()) {
         *error = tr("%1, line %2: %3").arg(path).arg(csv.errorLine).arg(csv.error);

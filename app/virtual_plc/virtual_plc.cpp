@@ -1,5 +1,6 @@
 #include "app/virtual_plc/virtual_plc.h"
 
+#include "app/tr.h"
 #include "simulator/session.h"
 
 #include <QCoreApplication>
@@ -11,10 +12,6 @@
 namespace rung::app {
 
 namespace {
-
-struct Tr {
-    Q_DECLARE_TR_FUNCTIONS(rung::app::VirtualPlc)
-};
 
 using comms::slave::ImageChange;
 using comms::slave::OperatingMode;
@@ -98,7 +95,7 @@ public:
             std::lock_guard plock(p->mutex);
             p->failed = true;
             p->remaining = 0;
-            p->error = Tr::tr("the virtual PLC is stopping");
+            p->error = VirtualPlcTr::tr("the virtual PLC is stopping");
             p->done.notify_all();
         }
     }
@@ -108,7 +105,7 @@ private:
         {
             std::lock_guard lock(m_mutex);
             if (m_shutdown) {
-                settle(*pending, false, Tr::tr("the virtual PLC is stopping"));
+                settle(*pending, false, VirtualPlcTr::tr("the virtual PLC is stopping"));
                 return;
             }
             m_open.push_back(pending);
@@ -142,8 +139,9 @@ private:
                                             [&p] { return p.finished(); });
         ImageChange result;
         if (!done)
-            result = {ImageChange::Status::TimedOut,
-                      Tr::tr("the simulation did not take the write within the time allowed")};
+            result = {
+                ImageChange::Status::TimedOut,
+                VirtualPlcTr::tr("the simulation did not take the write within the time allowed")};
         else if (p.failed)
             result = {ImageChange::Status::Refused, p.error};
         lock.unlock();
@@ -213,7 +211,8 @@ bool VirtualPlc::ready(QString *error) const {
     if (m_server)
         return true;
     if (error)
-        *error = Tr::tr("The virtual PLC needs a QCoreApplication for its simulation thread");
+        *error =
+            VirtualPlcTr::tr("The virtual PLC needs a QCoreApplication for its simulation thread");
     return false;
 }
 

@@ -110,13 +110,7 @@ DriverError HostLinkDriver::writeBit(const model::ProtocolAddress &address, bool
                                      const QString &what) {
     if (address.space == ProtocolSpace::HostLinkCompletion || address.bit < 0)
         return writeUnits(address.space, address.unit, {on ? 1u : 0u}, what);
-    // C-mode has no command that writes one bit: the word is read and written back. Not
-    // atomic: a bit of the same channel that the program changes in between is overwritten.
-    std::vector<std::uint32_t> word;
-    if (DriverError e = readUnits(address.space, address.unit, 1, &word, what); !e.ok())
-        return e;
-    const std::uint32_t mask = 1u << address.bit;
-    return writeUnits(address.space, address.unit, {on ? word[0] | mask : word[0] & ~mask}, what);
+    return writeBitOfWord(address, on, what); // C-mode has no command that writes one bit
 }
 
 DriverError HostLinkDriver::forceBit(const model::ProtocolAddress &address, bool on,

@@ -119,13 +119,7 @@ DriverError ModbusDriver::writeBit(const model::ProtocolAddress &address, bool o
                                    const QString &what) {
     if (address.bit < 0)
         return writeUnits(address.space, address.unit, {on ? 1u : 0u}, what);
-    // A bit inside a register: read the register, change the bit, write it back. Not atomic:
-    // the PLC's program may change another bit of the word in between.
-    std::vector<std::uint32_t> word;
-    if (DriverError e = readUnits(address.space, address.unit, 1, &word, what); !e.ok())
-        return e;
-    const std::uint32_t mask = 1u << address.bit;
-    return writeUnits(address.space, address.unit, {on ? word[0] | mask : word[0] & ~mask}, what);
+    return writeBitOfWord(address, on, what); // a bit inside a register
 }
 
 bool ModbusDriver::identifies() const {

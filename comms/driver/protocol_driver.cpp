@@ -74,6 +74,15 @@ DriverError ProtocolDriver::unsupported(const QString &what, const QString &why)
             QCoreApplication::translate("rung::comms::Driver", "%1: %2").arg(what, why)};
 }
 
+DriverError ProtocolDriver::writeBitOfWord(const model::ProtocolAddress &address, bool on,
+                                           const QString &what) {
+    std::vector<std::uint32_t> word;
+    if (DriverError e = readUnits(address.space, address.unit, 1, &word, what); !e.ok())
+        return e;
+    const std::uint32_t mask = 1u << address.bit;
+    return writeUnits(address.space, address.unit, {on ? word[0] | mask : word[0] & ~mask}, what);
+}
+
 DriverError ProtocolDriver::forceBit(const model::ProtocolAddress &, bool, const QString &what) {
     return unsupported(
         what,

@@ -94,6 +94,10 @@ public:
 
 protected:
     DriverError unsupported(const QString &what, const QString &why) const;
+    // A bit inside a word (address.bit >= 0) for a protocol with no command that writes one:
+    // the word is read, the bit changed and the word written back. Not atomic: a bit of the
+    // same word that the PLC's program changes in between is overwritten.
+    DriverError writeBitOfWord(const model::ProtocolAddress &address, bool on, const QString &what);
 
     Link &m_link;
     const model::Target &m_target;

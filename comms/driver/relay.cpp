@@ -1,14 +1,11 @@
 #include "comms/driver/relay.h"
+#include "comms/tr.h"
 
 #include <QCoreApplication>
 
 namespace rung::comms {
 
 namespace {
-
-struct Tr {
-    Q_DECLARE_TR_FUNCTIONS(rung::comms::Relay)
-};
 
 // A read wakes this often to see whether the relay is stopping; a byte that arrives is
 // passed on at once, whatever this is.
@@ -32,11 +29,12 @@ bool Relay::start(QString *error) {
     const struct {
         Transport *side;
         QString label;
-    } sides[] = {{m_pc.get(), Tr::tr("the PC's side")}, {m_plc.get(), Tr::tr("the PLC's side")}};
+    } sides[] = {{m_pc.get(), RelayTr::tr("the PC's side")},
+                 {m_plc.get(), RelayTr::tr("the PLC's side")}};
     for (const auto &s : sides) {
         QString why;
         if (!s.side->isOpen() && !s.side->open(&why)) {
-            *error = Tr::tr("%1 (%2) cannot be opened: %3").arg(s.label, s.side->name(), why);
+            *error = RelayTr::tr("%1 (%2) cannot be opened: %3").arg(s.label, s.side->name(), why);
             m_pc->close();
             m_plc->close();
             return false;
@@ -45,12 +43,12 @@ bool Relay::start(QString *error) {
     m_stopping = false;
     m_running = true;
     m_toPlc = std::thread([this] {
-        pump(*m_pc, *m_plc, TrafficRecord::Direction::Sent, Tr::tr("the PC's side"),
-             Tr::tr("the PLC's side"));
+        pump(*m_pc, *m_plc, TrafficRecord::Direction::Sent, RelayTr::tr("the PC's side"),
+             RelayTr::tr("the PLC's side"));
     });
     m_toPc = std::thread([this] {
-        pump(*m_plc, *m_pc, TrafficRecord::Direction::Received, Tr::tr("the PLC's side"),
-             Tr::tr("the PC's side"));
+        pump(*m_plc, *m_pc, TrafficRecord::Direction::Received, RelayTr::tr("the PLC's side"),
+             RelayTr::tr("the PC's side"));
     });
     return true;
 }
@@ -97,13 +95,13 @@ void Relay::pump(Transport &from, Transport &to, TrafficRecord::Direction direct
             m_tap.append(direction, r.bytes);
             QString why;
             if (!to.write(r.bytes, QDeadlineTimer(kWriteMs), &why)) {
-                fail(Tr::tr("%1 (%2) stopped taking bytes: %3").arg(toSide, to.name(), why));
+                fail(RelayTr::tr("%1 (%2) stopped taking bytes: %3").arg(toSide, to.name(), why));
                 return;
             }
             break;
         }
         case ReadResult::Status::Failed:
-            fail(Tr::tr("%1 (%2) failed: %3").arg(fromSide, from.name(), r.message));
+            fail(RelayTr::tr("%1 (%2) failed: %3").arg(fromSide, from.name(), r.message));
             return;
         case ReadResult::Status::Timeout:
         case ReadResult::Status::Cancelled:

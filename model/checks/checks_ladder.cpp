@@ -4,6 +4,7 @@
 #include "model/ladder/ladder_text.h"
 #include "model/ladder/reverse_current.h"
 #include "model/ladder/rung_graph.h"
+#include "model/tr.h"
 
 #include <QCoreApplication>
 
@@ -17,10 +18,6 @@
 namespace rung::model {
 
 namespace {
-
-struct Tr {
-    Q_DECLARE_TR_FUNCTIONS(rung::model::Checks)
-};
 
 int rungOf(const std::vector<int> &rungFirst, int instruction) {
     if (instruction < 0)
@@ -68,11 +65,11 @@ std::vector<Diagnostic> checkLadder(const LadderProgram &ladder, const ToListing
             for (const auto &[row, col] : f.cells)
                 d.related.push_back(Location{0, 0, rungIndex, row, col});
             d.message =
-                Tr::tr(
+                ChecksTr::tr(
                     "Reverse current: power would cross an element right to left to reach row %1")
                     .arg(f.row + 1);
             Fix fix;
-            fix.label = Tr::tr("Duplicate the shared contact into each branch");
+            fix.label = ChecksTr::tr("Duplicate the shared contact into each branch");
             fix.firstRung = fix.lastRung = rungIndex;
             fix.rungs = {f.corrected};
             d.fix = fix;
@@ -84,8 +81,8 @@ std::vector<Diagnostic> checkLadder(const LadderProgram &ladder, const ToListing
             Diagnostic d;
             d.code = QStringLiteral("LD001");
             d.location = Location{0, 0, rungIndex, n.row, rung.columns};
-            d.message =
-                Tr::tr("Open branch: row %1 is not connected to the left rail").arg(n.row + 1);
+            d.message = ChecksTr::tr("Open branch: row %1 is not connected to the left rail")
+                            .arg(n.row + 1);
             out.push_back(d);
         }
         for (int row = 0; row < rung.rows; ++row) {
@@ -97,8 +94,9 @@ std::vector<Diagnostic> checkLadder(const LadderProgram &ladder, const ToListing
                     Diagnostic d;
                     d.code = QStringLiteral("OC001");
                     d.location = Location{0, 0, rungIndex, row, rung.columns};
-                    d.message = Tr::tr("%1 has no condition: it is wired straight to the left rail")
-                                    .arg(o->spec->mnemonic);
+                    d.message =
+                        ChecksTr::tr("%1 has no condition: it is wired straight to the left rail")
+                            .arg(o->spec->mnemonic);
                     out.push_back(d);
                 }
         }
@@ -117,11 +115,12 @@ std::vector<Diagnostic> checkLadder(const LadderProgram &ladder, const ToListing
                 const QString name = contact.operands.empty()
                                          ? contactToText(*ladder.target, contact)
                                          : formatOperand(*ladder.target, contact.operands.front());
-                d.message = Tr::tr("%1 (row %2, column %3) is not on any path from the left rail "
-                                   "to an output: the list leaves it out")
-                                .arg(name)
-                                .arg(row + 1)
-                                .arg(col + 1);
+                d.message =
+                    ChecksTr::tr("%1 (row %2, column %3) is not on any path from the left rail "
+                                 "to an output: the list leaves it out")
+                        .arg(name)
+                        .arg(row + 1)
+                        .arg(col + 1);
                 out.push_back(d);
             }
     }
@@ -175,7 +174,7 @@ std::vector<Diagnostic> checkLadder(const LadderProgram &ladder, const ToListing
                 ins.spec = end;
                 endRung.outputs[0] = ins;
                 Fix fix;
-                fix.label = Tr::tr("Append %1").arg(end->mnemonic);
+                fix.label = ChecksTr::tr("Append %1").arg(end->mnemonic);
                 fix.firstRung = static_cast<int>(ladder.rungs.size());
                 fix.lastRung = fix.firstRung - 1; // nothing replaced: the rung is added
                 fix.rungs = {endRung};

@@ -5,6 +5,7 @@
 #include "model/convert/convert.h"
 #include "model/ladder/network.h"
 #include "model/listing/structure.h"
+#include "model/tr.h"
 
 #include <QCoreApplication>
 
@@ -18,10 +19,6 @@
 namespace rung::model::detail {
 
 namespace {
-
-struct Tr {
-    Q_DECLARE_TR_FUNCTIONS(rung::model::Checks)
-};
 
 class ListChecker {
 public:
@@ -82,7 +79,7 @@ private:
             if (last.endsWith(QLatin1Char('\r')))
                 last.chop(1);
             Fix fix;
-            fix.label = Tr::tr("Append %1").arg(end->mnemonic);
+            fix.label = ChecksTr::tr("Append %1").arg(end->mnemonic);
             fix.firstLine = fix.lastLine = line;
             fix.listing = last + QLatin1Char('\n') + end->mnemonic + QLatin1Char('\n');
             f.diagnostic.fix = std::move(fix);
@@ -159,7 +156,7 @@ private:
         if (!span.printed)
             span.printed = printed(span.form.rewrite);
         offer(f, span.first, span.last, *span.printed,
-              Tr::tr("Rewrite the rung in the canonical form"));
+              ChecksTr::tr("Rewrite the rung in the canonical form"));
     }
 
     // Whether the rung [first, last) rewritten as `rewrite` has the form `code` less often: in a
@@ -206,7 +203,7 @@ private:
                 runOp = op;
                 if (m_t.limits.maxBlocksInRow > 0 && run == m_t.limits.maxBlocksInRow + 1)
                     add("FZ003", Severity::Error, i,
-                        Tr::tr("More than %1 %2 in a row: the PLC rejects the program")
+                        ChecksTr::tr("More than %1 %2 in a row: the PLC rejects the program")
                             .arg(m_t.limits.maxBlocksInRow)
                             .arg(name(i)));
             } else {
@@ -240,24 +237,26 @@ private:
                 // Otherwise: the nesting the drawing needs, written as the converter writes it.
                 const bool fuzzy = (stacked || singleOr || singleFirst) && isFuzzy(i);
                 if (fuzzy && stacked) {
-                    Finding &f =
-                        add(op == Op::AndBlock ? "FZ001" : "FZ002", Severity::Warning, i,
-                            // In the family's words: CPM1 and VPC write AND LD / OR LD.
-                            op == Op::AndBlock
-                                ? Tr::tr("Stacked %1: combine each block with %1 as soon as it is "
-                                         "complete")
-                                      .arg(name(i))
-                                : Tr::tr("Stacked %1: %n blocks are open; an OR chain needs less "
-                                         "stack",
-                                         nullptr, static_cast<int>(blocks.size()))
-                                      .arg(name(i)));
+                    Finding &f = add(
+                        op == Op::AndBlock ? "FZ001" : "FZ002", Severity::Warning, i,
+                        // In the family's words: CPM1 and VPC write AND LD / OR LD.
+                        op == Op::AndBlock
+                            ? ChecksTr::tr(
+                                  "Stacked %1: combine each block with %1 as soon as it is "
+                                  "complete")
+                                  .arg(name(i))
+                            : ChecksTr::tr("Stacked %1: %n blocks are open; an OR chain needs less "
+                                           "stack",
+                                           nullptr, static_cast<int>(blocks.size()))
+                                  .arg(name(i)));
                     offerCanonical(f, i);
                 } else if (fuzzy && singleOr) {
-                    Finding &f = add("FZ002", Severity::Warning, i,
-                                     Tr::tr("A single contact joined with %1 is simpler as %2")
-                                         .arg(name(i), m_t.findInstruction(Op::Or)
-                                                           ? m_t.findInstruction(Op::Or)->mnemonic
-                                                           : QString()));
+                    Finding &f =
+                        add("FZ002", Severity::Warning, i,
+                            ChecksTr::tr("A single contact joined with %1 is simpler as %2")
+                                .arg(name(i), m_t.findInstruction(Op::Or)
+                                                  ? m_t.findInstruction(Op::Or)->mnemonic
+                                                  : QString()));
                     offerCanonical(f, i);
                 } else if (fuzzy && op == Op::AndBlock && !inSeries(m_list, first.first, i) &&
                            rungForm(i).form.known && !rungForm(i).form.rewrite.empty()) {
@@ -266,8 +265,8 @@ private:
                     // the ladder draws it keeps the contact in front, the block in its simplest
                     // form (LD X0 / LD X1 / OR X2 / ANB).
                     Finding &f = add("FZ004", Severity::Warning, i,
-                                     Tr::tr("The block after a single contact can be written "
-                                            "shorter; the contact stays in front of the %1")
+                                     ChecksTr::tr("The block after a single contact can be written "
+                                                  "shorter; the contact stays in front of the %1")
                                          .arg(name(i)));
                     offerCanonical(f, i);
                 } else if (fuzzy) {
@@ -276,17 +275,19 @@ private:
                     const bool series = !orBlock && inSeries(m_list, first.first, i);
                     Finding &f = add(
                         orBlock ? "FZ005" : "FZ004", Severity::Warning, i,
-                        orBlock ? Tr::tr("A single device in parallel with a block belongs on the "
-                                         "lower row: the block first, then an OR, drops the %1")
+                        orBlock ? ChecksTr::tr(
+                                      "A single device in parallel with a block belongs on the "
+                                      "lower row: the block first, then an OR, drops the %1")
                                       .arg(name(i))
-                        : series ? Tr::tr("Contacts in series need no %1: each can follow the "
-                                          "one before it as %2")
-                                       .arg(name(i), m_t.findInstruction(Op::And)
-                                                         ? m_t.findInstruction(Op::And)->mnemonic
-                                                         : QString())
-                                 : Tr::tr("The block after a single contact can move to the front "
-                                          "and drop the %1")
-                                       .arg(name(i)));
+                        : series
+                            ? ChecksTr::tr("Contacts in series need no %1: each can follow the "
+                                           "one before it as %2")
+                                  .arg(name(i), m_t.findInstruction(Op::And)
+                                                    ? m_t.findInstruction(Op::And)->mnemonic
+                                                    : QString())
+                            : ChecksTr::tr("The block after a single contact can move to the front "
+                                           "and drop the %1")
+                                  .arg(name(i)));
                     const auto [rungFirst, rungLast] = spanOf(i);
                     const auto moved =
                         moveBehind(m_list, spanOf(i), first.first, i, orBlock ? Op::Or : Op::And);
@@ -294,15 +295,15 @@ private:
                         !betterForm(rungFirst, rungLast, *moved, orBlock ? "FZ005" : "FZ004")) {
                         m_found.pop_back(); // moving it would only make the next join the same
                     } else {
-                        offer(
-                            f, rungFirst, rungLast, printed(*moved),
-                            orBlock ? Tr::tr("Put the single device below the block and drop "
-                                             "the %1")
-                                          .arg(name(i))
-                            : series
-                                ? Tr::tr("Join the contacts in series and drop the %1").arg(name(i))
-                                : Tr::tr("Move the block to the front and drop the %1")
-                                      .arg(name(i)));
+                        offer(f, rungFirst, rungLast, printed(*moved),
+                              orBlock
+                                  ? ChecksTr::tr("Put the single device below the block and drop "
+                                                 "the %1")
+                                        .arg(name(i))
+                              : series ? ChecksTr::tr("Join the contacts in series and drop the %1")
+                                             .arg(name(i))
+                                       : ChecksTr::tr("Move the block to the front and drop the %1")
+                                             .arg(name(i)));
                     }
                 }
                 blocks.pop_back();
@@ -313,26 +314,27 @@ private:
                 ++mps;
                 if (mps == m_t.limits.stackDepth + 1)
                     add("ST001", Severity::Error, i,
-                        Tr::tr("MPS nests more than %1 deep").arg(m_t.limits.stackDepth));
+                        ChecksTr::tr("MPS nests more than %1 deep").arg(m_t.limits.stackDepth));
                 break;
             case Op::ReadStack:
             case Op::Pop:
                 if (mps == 0)
                     add("ST002", Severity::Error, i,
-                        Tr::tr("%1 without a matching MPS").arg(name(i)));
+                        ChecksTr::tr("%1 without a matching MPS").arg(name(i)));
                 else if (op == Op::Pop)
                     --mps;
                 if (i + 1 < size() && isOutput(at(i + 1).op()) &&
                     !isUnconditional(at(i + 1).op()) && at(i + 1).op() != Op::Push) {
                     if (auto lifted = liftOutput(m_list, spanOf(i), i); lifted && isFuzzy(i)) {
-                        Finding &f = add(
-                            "FZ006", Severity::Warning, i + 1,
-                            Tr::tr("An output with no contacts of its own belongs on top of the "
-                                   "branch and needs no %1")
-                                .arg(name(i)));
+                        Finding &f =
+                            add("FZ006", Severity::Warning, i + 1,
+                                ChecksTr::tr(
+                                    "An output with no contacts of its own belongs on top of the "
+                                    "branch and needs no %1")
+                                    .arg(name(i)));
                         const auto [rungFirst, rungLast] = spanOf(i);
                         offer(f, rungFirst, rungLast, printed(*lifted),
-                              Tr::tr("Put the output on top and drop the %1").arg(name(i)));
+                              ChecksTr::tr("Put the output on top and drop the %1").arg(name(i)));
                     }
                 }
                 break;
@@ -345,7 +347,8 @@ private:
                                       isUnconditional(at(i + 1).op());
                 if (rungEnds && mps > 0) {
                     add("ST003", Severity::Error, i,
-                        Tr::tr("%n MPS left without MPP at the end of the rung", nullptr, mps));
+                        ChecksTr::tr("%n MPS left without MPP at the end of the rung", nullptr,
+                                     mps));
                     mps = 0;
                 }
             }
@@ -470,7 +473,7 @@ private:
                     const bool bcd = o.constant.style == Constant::Style::Bcd;
                     if ((bcd && (v < 0 || v > 9999)) || (!bcd && (v < 0 || v > 32767)))
                         add("OP004", Severity::Error, i,
-                            Tr::tr("Set value %1 is out of range").arg(v));
+                            ChecksTr::tr("Set value %1 is out of range").arg(v));
                 }
                 if (o.kind != Operand::Kind::Device)
                     continue;
@@ -490,15 +493,16 @@ private:
                 for (int b = 1; destination && !driven && b < o.digits * 4; ++b)
                     driven = driveBySystem(offsetAddress(m_t, o.address, b, m_model));
                 if (destination && !area.writable && ins.op() != Op::Reset) {
-                    atOperand(add("OP002", Severity::Error, i,
-                                  Tr::tr("%1 cannot be written: the program only reads it (%2)")
-                                      .arg(device, QCoreApplication::translate(
-                                                       "rung::model::Target", area.description))),
-                              i, device);
+                    atOperand(
+                        add("OP002", Severity::Error, i,
+                            ChecksTr::tr("%1 cannot be written: the program only reads it (%2)")
+                                .arg(device, QCoreApplication::translate("rung::model::Target",
+                                                                         area.description))),
+                        i, device);
                 } else if (destination && driven) {
                     atOperand(
                         add("OP002", Severity::Error, i,
-                            Tr::tr("%1 cannot be written: the PLC drives it (%2)")
+                            ChecksTr::tr("%1 cannot be written: the PLC drives it (%2)")
                                 .arg(device, QCoreApplication::translate("rung::model::Target",
                                                                          driven->description))),
                         i, device);
@@ -506,7 +510,7 @@ private:
                            (area.kind == AreaKind::Timer || area.kind == AreaKind::Counter ||
                             (area.kind == AreaKind::Word && o.address.bit < 0))) {
                     atOperand(add("OP002", Severity::Error, i,
-                                  Tr::tr("%1 cannot drive %2: %3 are not relays")
+                                  ChecksTr::tr("%1 cannot drive %2: %3 are not relays")
                                       .arg(name(i), device,
                                            QCoreApplication::translate("rung::model::Target",
                                                                        area.description))),
@@ -523,7 +527,8 @@ private:
             if (use.first && use.second) {
                 Finding &f =
                     add("OP003", Severity::Error, use.second - 1,
-                        Tr::tr("Number %1 is used as a timer and as a counter; they share one bank")
+                        ChecksTr::tr(
+                            "Number %1 is used as a timer and as a counter; they share one bank")
                             .arg(n));
                 f.diagnostic.related.push_back(location(use.first - 1));
             }
@@ -545,29 +550,31 @@ private:
                 continue;
             }
             const bool error = m_t.limits.duplicateCoilIsError;
-            Finding &f =
-                add("DC001", error ? Severity::Error : Severity::Warning, i,
-                    error ? Tr::tr("%1 is driven twice; a coil may be driven only once (the first "
+            Finding &f = add(
+                "DC001", error ? Severity::Error : Severity::Warning, i,
+                error
+                    ? ChecksTr::tr("%1 is driven twice; a coil may be driven only once (the first "
                                    "is on line "
                                    "%2)")
-                                .arg(formatAddress(m_t, a))
-                                .arg(at(it->second).line)
-                          : Tr::tr("%1 is driven twice; the later one wins (first on line %2)")
-                                .arg(formatAddress(m_t, a))
-                                .arg(at(it->second).line));
+                          .arg(formatAddress(m_t, a))
+                          .arg(at(it->second).line)
+                    : ChecksTr::tr("%1 is driven twice; the later one wins (first on line %2)")
+                          .arg(formatAddress(m_t, a))
+                          .arg(at(it->second).line));
             if (m_t.console.duplicate) // the VPC console's "Oper duplication"
                 f.diagnostic.message =
-                    Tr::tr("%1 (the PLC says \"%2\")")
+                    ChecksTr::tr("%1 (the PLC says \"%2\")")
                         .arg(f.diagnostic.message, QString::fromLatin1(m_t.console.duplicate));
             f.diagnostic.related.push_back(location(it->second));
             f.related.push_back(it->second);
             const QString device = formatAddress(m_t, a);
             f.ladderMessage =
-                error ? Tr::tr("%1 is driven twice; a coil may be driven only once (the first is "
-                               "in rung "
-                               "%2)")
+                error ? ChecksTr::tr(
+                            "%1 is driven twice; a coil may be driven only once (the first is "
+                            "in rung "
+                            "%2)")
                             .arg(device, QStringLiteral("%1"))
-                      : Tr::tr("%1 is driven twice; the later one wins (first in rung %2)")
+                      : ChecksTr::tr("%1 is driven twice; the later one wins (first in rung %2)")
                             .arg(device, QStringLiteral("%1"));
         }
     }
@@ -580,7 +587,7 @@ private:
             m_model->programSteps > 0 ? m_model->programSteps : m_t.limits.programSteps;
         if (limit > 0 && steps > limit)
             add("LN001", Severity::Error, size() - 1,
-                Tr::tr("The program needs %1 steps; %2 holds %3")
+                ChecksTr::tr("The program needs %1 steps; %2 holds %3")
                     .arg(steps)
                     .arg(m_model->name)
                     .arg(limit));

@@ -1,19 +1,12 @@
 #include "model/checks/checks_internal.h"
 #include "model/listing/structure.h"
+#include "model/tr.h"
 
 #include <QCoreApplication>
 
 // END and the nesting of IL/ILC, JMP/JPE (JME) and STL/RET (docs/diagnostics.md EN*, NE*, SL*).
 
 namespace rung::model::detail {
-
-namespace {
-
-struct Tr {
-    Q_DECLARE_TR_FUNCTIONS(rung::model::Checks)
-};
-
-} // namespace
 
 Finding &addFinding(std::vector<Finding> &found, const InstructionList &list, const char *code,
                     Severity severity, int index, const QString &message) {
@@ -55,13 +48,13 @@ void endAndNesting(const InstructionList &list, std::vector<Finding> &found) {
             break;
         }
     if (needsEnd && end < 0) {
-        Finding &f = add("EN001", Severity::Error, count - 1, Tr::tr("END is missing"));
+        Finding &f = add("EN001", Severity::Error, count - 1, ChecksTr::tr("END is missing"));
         if (count == 0)
             f.diagnostic.location.line = 1;
     }
     if (end >= 0 && end + 1 < count)
         add("EN002", Severity::Warning, end + 1,
-            Tr::tr("Instructions after END are never executed"));
+            ChecksTr::tr("Instructions after END are never executed"));
 
     // IL / ILC, JMP / JPE (JME), STL / RET: the one pairing the compiler uses too.
     for (const BlockProblem &p : pairBlocks(list).problems) {

@@ -1,4 +1,5 @@
 #include "model/checks/checks_internal.h"
+#include "model/tr.h"
 
 #include <QCoreApplication>
 
@@ -12,10 +13,6 @@
 namespace rung::model::detail {
 
 namespace {
-
-struct Tr {
-    Q_DECLARE_TR_FUNCTIONS(rung::model::Checks)
-};
 
 bool isDestination(OperandKind kind) {
     return kind == OperandKind::BitDest || kind == OperandKind::WordDest;
@@ -32,8 +29,8 @@ int firstWriter(const InstructionList &list, const Address &gate) {
             if (o.kind != Operand::Kind::Device || !isDestination(ins.spec->operands[k].kind))
                 continue;
             const bool bit = o.address == gate;
-            const bool word = o.address.area == gate.area && o.address.index == gate.index &&
-                              o.address.bit < 0;
+            const bool word =
+                o.address.area == gate.area && o.address.index == gate.index && o.address.bit < 0;
             if (bit || word)
                 return static_cast<int>(i);
         }
@@ -64,12 +61,12 @@ void switchedElements(const InstructionList &list, std::vector<Finding> &found) 
         const QString bit = QString::fromLatin1(area.enabledBy);
         if (area.enabledWhenOn && writer < 0) {
             addFinding(found, list, "OP006", Severity::Warning, static_cast<int>(i),
-                       Tr::tr("%1 runs only while %2 is ON, and no instruction sets %2")
+                       ChecksTr::tr("%1 runs only while %2 is ON, and no instruction sets %2")
                            .arg(element, bit));
         } else if (!area.enabledWhenOn && writer >= 0) {
             const Instruction &w = list.instructions[static_cast<std::size_t>(writer)];
             Finding &f = addFinding(found, list, "OP006", Severity::Warning, static_cast<int>(i),
-                                    Tr::tr("%1 stops while %2 is ON, and line %3 writes %2")
+                                    ChecksTr::tr("%1 stops while %2 is ON, and line %3 writes %2")
                                         .arg(element, bit)
                                         .arg(w.line));
             f.related.push_back(writer);

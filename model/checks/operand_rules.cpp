@@ -1,6 +1,7 @@
 #include "model/checks/operand_rules.h"
 
 #include "model/target/address.h"
+#include "model/tr.h"
 
 #include <QCoreApplication>
 
@@ -10,14 +11,10 @@ namespace rung::model {
 
 namespace {
 
-struct Tr {
-    Q_DECLARE_TR_FUNCTIONS(rung::model::Checks)
-};
-
 QString slotName(const OperandSpec &spec, std::size_t k) {
     if (spec.name)
         return QCoreApplication::translate("rung::model::Target", spec.name);
-    return Tr::tr("operand %1").arg(k + 1);
+    return ChecksTr::tr("operand %1").arg(k + 1);
 }
 
 const InstructionSpec *writerOf(const Target &target, ApplyFunction function) {
@@ -70,9 +67,9 @@ QString controlWordMessage(const Target &target, const OperandSpec &rule, std::s
                            const InstructionSpec &spec, const Constant &value) {
     const QString shown = formatConstant(target, value);
     if (rule.control == ControlWord::BitPair)
-        return Tr::tr("the %1 of %2 must be #DDSS with bits DD and SS from 00 to 15, not %3")
+        return ChecksTr::tr("the %1 of %2 must be #DDSS with bits DD and SS from 00 to 15, not %3")
             .arg(slotName(rule, k), spec.mnemonic, shown);
-    return Tr::tr("the %1 of %2 must be #0DNS with digits D, N and S from 0 to 3, not %3")
+    return ChecksTr::tr("the %1 of %2 must be #0DNS with digits D, N and S from 0 to 3, not %3")
         .arg(slotName(rule, k), spec.mnemonic, shown);
 }
 
@@ -88,14 +85,14 @@ QString brokenRun(const Target &target, const InstructionSpec &spec, const Addre
     const Address there = offsetAddress(target, first, qint64{missing->index} - first.index);
     if (there.valid() && there.area != missing->area) {
         // A block of timer or counter values: T199 and T200 are no neighbours in memory.
-        return Tr::tr("%1 uses %2..%3, which runs from %4 into %5: a block stays in one")
+        return ChecksTr::tr("%1 uses %2..%3, which runs from %4 into %5: a block stays in one")
             .arg(spec.mnemonic, formatAddress(target, first), formatAddress(target, last),
                  QCoreApplication::translate("rung::model::Target",
                                              target.area(missing->area).description),
                  QCoreApplication::translate("rung::model::Target",
                                              target.area(there.area).description));
     }
-    return Tr::tr("%1 uses %2..%3, but %4 does not exist")
+    return ChecksTr::tr("%1 uses %2..%3, but %4 does not exist")
         .arg(spec.mnemonic, formatAddress(target, first), formatAddress(target, last),
              formatAddress(target, *missing));
 }
@@ -114,7 +111,7 @@ QString choiceList(const QStringList &all) {
     QStringList values = all;
     const QString last = values.takeLast();
     return values.isEmpty() ? last
-                            : Tr::tr("%1 or %2").arg(values.join(QStringLiteral(", ")), last);
+                            : ChecksTr::tr("%1 or %2").arg(values.join(QStringLiteral(", ")), last);
 }
 
 } // namespace
@@ -139,12 +136,12 @@ std::vector<OperandBreach> operandBreaches(const Target &target, const Instructi
                                                                       : o.text.trimmed();
             if (o.kind != Operand::Kind::Text || !texts.contains(written))
                 found.push_back(
-                    {at, Tr::tr("the %1 of %2 must be %3, not %4")
+                    {at, ChecksTr::tr("the %1 of %2 must be %3, not %4")
                              .arg(slotName(rule, k), spec.mnemonic, choiceList(texts), written)});
             continue;
         }
         if (o.kind == Operand::Kind::Constant && rule.deviceOnly && !rule.sourceAreas.empty()) {
-            found.push_back({at, Tr::tr("%1 takes its %2 from %3 only, not %4")
+            found.push_back({at, ChecksTr::tr("%1 takes its %2 from %3 only, not %4")
                                      .arg(spec.mnemonic, slotName(rule, k),
                                           areaPrefixes(target, rule.sourceAreas),
                                           formatConstant(target, o.constant))});
@@ -152,7 +149,7 @@ std::vector<OperandBreach> operandBreaches(const Target &target, const Instructi
         }
         if (o.kind == Operand::Kind::Constant && rule.deviceOnly) {
             // CCD S: a block of words to read, not a value.
-            found.push_back({at, Tr::tr("the %1 of %2 must be a device, not %3")
+            found.push_back({at, ChecksTr::tr("the %1 of %2 must be a device, not %3")
                                      .arg(slotName(rule, k), spec.mnemonic,
                                           formatConstant(target, o.constant))});
             continue;
@@ -160,7 +157,7 @@ std::vector<OperandBreach> operandBreaches(const Target &target, const Instructi
         if (o.kind == Operand::Kind::Constant) {
             const qint64 v = o.constant.value;
             if (rule.bcd && o.constant.style != Constant::Style::Bcd) {
-                found.push_back({at, Tr::tr("the %1 of %2 must be BCD (#0000..#9999), not %3")
+                found.push_back({at, ChecksTr::tr("the %1 of %2 must be BCD (#0000..#9999), not %3")
                                          .arg(slotName(rule, k), spec.mnemonic,
                                               formatConstant(target, o.constant))});
                 continue;
@@ -177,17 +174,17 @@ std::vector<OperandBreach> operandBreaches(const Target &target, const Instructi
                 for (int a : rule.allowedValues)
                     values << QString::number(a);
                 const QString choices = choiceList(values);
-                found.push_back({at, Tr::tr("the %1 of %2 must be %3, not %4")
+                found.push_back({at, ChecksTr::tr("the %1 of %2 must be %3, not %4")
                                          .arg(slotName(rule, k), spec.mnemonic, choices)
                                          .arg(v)});
             } else if (rule.highest == INT_MAX && rule.lowest != INT_MIN && v < rule.lowest) {
-                found.push_back({at, Tr::tr("the %1 of %2 must be at least %3, not %4")
+                found.push_back({at, ChecksTr::tr("the %1 of %2 must be at least %3, not %4")
                                          .arg(slotName(rule, k), spec.mnemonic)
                                          .arg(rule.lowest)
                                          .arg(v)});
             } else if ((rule.lowest != INT_MIN || rule.highest != INT_MAX) &&
                        (v < rule.lowest || v > rule.highest)) {
-                found.push_back({at, Tr::tr("the %1 of %2 must be from %3 to %4, not %5")
+                found.push_back({at, ChecksTr::tr("the %1 of %2 must be from %3 to %4, not %5")
                                          .arg(slotName(rule, k), spec.mnemonic)
                                          .arg(rule.lowest)
                                          .arg(rule.highest)
@@ -198,7 +195,7 @@ std::vector<OperandBreach> operandBreaches(const Target &target, const Instructi
         if (o.kind == Operand::Kind::Text &&
             (rule.lowest != INT_MIN || rule.highest != INT_MAX || !rule.allowedValues.empty())) {
             // PL110 keeps a word in a constant slot verbatim; a slot with a range wants a number.
-            found.push_back({at, Tr::tr("the %1 of %2 must be a number, not %3")
+            found.push_back({at, ChecksTr::tr("the %1 of %2 must be a number, not %3")
                                      .arg(slotName(rule, k), spec.mnemonic, o.text.trimmed())});
             continue;
         }
@@ -209,7 +206,7 @@ std::vector<OperandBreach> operandBreaches(const Target &target, const Instructi
         if (rule.wholeWords && (o.digits > 0 || area.doubleWordsOf)) {
             // A block counts words: K4M0 or VD0 would make its length mean something else.
             found.push_back(
-                {at, Tr::tr("%1 moves whole words: %2 cannot be its %3")
+                {at, ChecksTr::tr("%1 moves whole words: %2 cannot be its %3")
                          .arg(spec.mnemonic, formatOperand(target, o), slotName(rule, k))});
             continue;
         }
@@ -217,13 +214,14 @@ std::vector<OperandBreach> operandBreaches(const Target &target, const Instructi
             std::none_of(rule.sourceAreas.begin(), rule.sourceAreas.end(),
                          [&](const char *key) { return area.key == QLatin1String(key); })) {
             const QString prefixes = areaPrefixes(target, rule.sourceAreas);
-            found.push_back({at, rule.deviceOnly
-                                     ? Tr::tr("%1 takes its %2 from %3 only, not %4")
-                                           .arg(spec.mnemonic, slotName(rule, k), prefixes,
-                                                formatOperand(target, o))
-                                     : Tr::tr("%1 takes its %2 from a constant or from %3, not %4")
-                                           .arg(spec.mnemonic, slotName(rule, k), prefixes,
-                                                formatOperand(target, o))});
+            found.push_back(
+                {at, rule.deviceOnly
+                         ? ChecksTr::tr("%1 takes its %2 from %3 only, not %4")
+                               .arg(spec.mnemonic, slotName(rule, k), prefixes,
+                                    formatOperand(target, o))
+                         : ChecksTr::tr("%1 takes its %2 from a constant or from %3, not %4")
+                               .arg(spec.mnemonic, slotName(rule, k), prefixes,
+                                    formatOperand(target, o))});
             continue;
         }
         const bool wrongArea = rule.area && area.key != QLatin1String(rule.area);
@@ -238,7 +236,7 @@ std::vector<OperandBreach> operandBreaches(const Target &target, const Instructi
                 const QString last =
                     formatAddress(target, Address{ruleArea, std::min(a.last, rule.highest), -1});
                 found.push_back(
-                    {at, Tr::tr("%1 takes only %2..%3, not %4")
+                    {at, ChecksTr::tr("%1 takes only %2..%3, not %4")
                              .arg(spec.mnemonic, first, last, formatAddress(target, o.address))});
             }
             continue;
@@ -256,7 +254,7 @@ std::vector<OperandBreach> operandBreaches(const Target &target, const Instructi
             // (Area::bitsAsWords, PL110 I1 = I1..I16); the Vigor writes K4M0 for that.
             if (!area.bitsAsWords) {
                 found.push_back(
-                    {at, Tr::tr("the %1 of %2 is a word: %3 is a single bit")
+                    {at, ChecksTr::tr("the %1 of %2 is a word: %3 is a single bit")
                              .arg(slotName(rule, k), spec.mnemonic, formatOperand(target, o))});
                 continue;
             }
@@ -267,8 +265,8 @@ std::vector<OperandBreach> operandBreaches(const Target &target, const Instructi
                 Address above = below;
                 above.index += 16;
                 found.push_back(
-                    {at, Tr::tr("the %1 of %2 is a word: %3 starts no word of 16 bits "
-                                "(%4 and %5 do)")
+                    {at, ChecksTr::tr("the %1 of %2 is a word: %3 starts no word of 16 bits "
+                                      "(%4 and %5 do)")
                              .arg(slotName(rule, k), spec.mnemonic, formatOperand(target, o),
                                   formatAddress(target, below), formatAddress(target, above))});
                 continue;
@@ -291,18 +289,18 @@ std::vector<OperandBreach> operandBreaches(const Target &target, const Instructi
                 firstBit.bit = 0;
                 found.push_back(
                     {at, area.kind == AreaKind::Channel
-                             ? Tr::tr("the %1 of %2 is a bit: %3 is a whole channel (%4 is "
-                                      "its first bit)")
+                             ? ChecksTr::tr("the %1 of %2 is a bit: %3 is a whole channel (%4 is "
+                                            "its first bit)")
                                    .arg(slotName(rule, k), spec.mnemonic,
                                         formatAddress(target, o.address),
                                         formatAddress(target, firstBit))
-                             : Tr::tr("the %1 of %2 is a bit: %3 is a whole word (%4 is its "
-                                      "first bit)")
+                             : ChecksTr::tr("the %1 of %2 is a bit: %3 is a whole word (%4 is its "
+                                            "first bit)")
                                    .arg(slotName(rule, k), spec.mnemonic,
                                         formatAddress(target, o.address),
                                         formatAddress(target, firstBit))});
             } else {
-                found.push_back({at, Tr::tr("the %1 of %2 is a bit: %3 is a whole word")
+                found.push_back({at, ChecksTr::tr("the %1 of %2 is a bit: %3 is a whole word")
                                          .arg(slotName(rule, k), spec.mnemonic,
                                               formatAddress(target, o.address))});
             }
@@ -310,8 +308,8 @@ std::vector<OperandBreach> operandBreaches(const Target &target, const Instructi
         }
         if (rule.bitWords && (area.numbering != Numbering::ChannelBit || o.address.bit >= 0)) {
             found.push_back(
-                {at, Tr::tr("the %1 of %2 must be a channel with bits (IR, HR, LR), "
-                            "not %3")
+                {at, ChecksTr::tr("the %1 of %2 must be a channel with bits (IR, HR, LR), "
+                                  "not %3")
                          .arg(slotName(rule, k), spec.mnemonic, formatAddress(target, o.address))});
             continue;
         }
@@ -323,10 +321,11 @@ std::vector<OperandBreach> operandBreaches(const Target &target, const Instructi
                 if (from.prefix != area.prefix || from.kind != area.kind ||
                     first.address.index > o.address.index) {
                     found.push_back(
-                        {at, Tr::tr("%1 %2 %3: the last device must be of the kind of the first "
-                                    "and not before it")
-                                 .arg(spec.mnemonic, formatAddress(target, first.address),
-                                      formatAddress(target, o.address))});
+                        {at,
+                         ChecksTr::tr("%1 %2 %3: the last device must be of the kind of the first "
+                                      "and not before it")
+                             .arg(spec.mnemonic, formatAddress(target, first.address),
+                                  formatAddress(target, o.address))});
                     continue;
                 }
                 const QString broken = brokenRun(target, spec, first.address,
@@ -370,7 +369,7 @@ std::vector<OperandBreach> operandBreaches(const Target &target, const Instructi
             spec.function != area.onlyWrittenBy) {
             const InstructionSpec *writer = writerOf(target, area.onlyWrittenBy);
             found.push_back(
-                {at, Tr::tr("%1 cannot write %2: %3 are written only by %4")
+                {at, ChecksTr::tr("%1 cannot write %2: %3 are written only by %4")
                          .arg(spec.mnemonic, formatAddress(target, o.address),
                               QCoreApplication::translate("rung::model::Target", area.description),
                               writer ? writer->mnemonic : QString())});
@@ -380,7 +379,7 @@ std::vector<OperandBreach> operandBreaches(const Target &target, const Instructi
 }
 
 QString notSimulatedMessage(const InstructionSpec &spec) {
-    return Tr::tr("%1 is not simulated: it does nothing in the simulator").arg(spec.mnemonic);
+    return ChecksTr::tr("%1 is not simulated: it does nothing in the simulator").arg(spec.mnemonic);
 }
 
 } // namespace rung::model

@@ -1,16 +1,13 @@
 #include "model/checks/unmodelled.h"
 
 #include "model/target/address.h"
+#include "model/tr.h"
 
 #include <QCoreApplication>
 
 namespace rung::model {
 
 namespace {
-
-struct Tr {
-    Q_DECLARE_TR_FUNCTIONS(rung::model::Checks)
-};
 
 std::optional<Address> addressOf(const Target &target, const QString &text) {
     const auto parsed = parseAddress(target, text);
@@ -53,7 +50,7 @@ std::vector<UnmodelledUse> unmodelledUses(const Target &target, const Instructio
                 continue;
             found.push_back(
                 {static_cast<int>(k),
-                 Tr::tr("%1 is not simulated: %2")
+                 ChecksTr::tr("%1 is not simulated: %2")
                      .arg(formatOperand(target, o),
                           QCoreApplication::translate("rung::model::Target", range.what))});
             break;

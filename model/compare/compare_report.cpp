@@ -1,4 +1,5 @@
 #include "model/compare/compare.h"
+#include "model/tr.h"
 
 #include <QCoreApplication>
 #include <QJsonArray>
@@ -12,26 +13,22 @@ namespace rung::model {
 
 namespace {
 
-struct Tr {
-    Q_DECLARE_TR_FUNCTIONS(rung::model::Compare)
-};
-
 using Kind = ItemDifference::Kind;
 
 QString statusText(RungStatus status) {
     switch (status) {
     case RungStatus::Same:
-        return Tr::tr("the same");
+        return CompareTr::tr("the same");
     case RungStatus::Moved:
-        return Tr::tr("moved");
+        return CompareTr::tr("moved");
     case RungStatus::Changed:
-        return Tr::tr("changed");
+        return CompareTr::tr("changed");
     case RungStatus::MovedChanged:
-        return Tr::tr("moved and changed");
+        return CompareTr::tr("moved and changed");
     case RungStatus::Inserted:
-        return Tr::tr("inserted");
+        return CompareTr::tr("inserted");
     case RungStatus::Deleted:
-        return Tr::tr("deleted");
+        return CompareTr::tr("deleted");
     }
     return {};
 }
@@ -39,13 +36,13 @@ QString statusText(RungStatus status) {
 QString elementText(ElementChange::Element e) {
     switch (e) {
     case ElementChange::Element::Contact:
-        return Tr::tr("contact");
+        return CompareTr::tr("contact");
     case ElementChange::Element::Output:
-        return Tr::tr("output");
+        return CompareTr::tr("output");
     case ElementChange::Element::Branches:
         break;
     }
-    return Tr::tr("branches");
+    return CompareTr::tr("branches");
 }
 
 QString elementKey(ElementChange::Element e) {
@@ -86,9 +83,9 @@ QString elementKindKey(ElementChange::Kind k) {
 
 QString fieldText(const QString &field) {
     if (field == QLatin1String("name"))
-        return Tr::tr("name");
+        return CompareTr::tr("name");
     if (field == QLatin1String("comment"))
-        return Tr::tr("comment");
+        return CompareTr::tr("comment");
     return field;
 }
 
@@ -100,14 +97,14 @@ QString rungHeading(const RungDifference &r) {
     const QString status = statusText(r.status);
     if (r.status == RungStatus::Deleted)
         //: A rung only in the first program (A): %1 its number there, %2 "deleted".
-        return Tr::tr("- rung %1 of A: %2").arg(r.a + 1).arg(status);
+        return CompareTr::tr("- rung %1 of A: %2").arg(r.a + 1).arg(status);
     if (r.status == RungStatus::Inserted)
         //: A rung only in the second program (B): %1 its number there, %2 "inserted".
-        return Tr::tr("+ rung %1 of B: %2").arg(r.b + 1).arg(status);
+        return CompareTr::tr("+ rung %1 of B: %2").arg(r.b + 1).arg(status);
     if (r.a == r.b)
-        return Tr::tr("rung %1: %2").arg(r.a + 1).arg(status);
+        return CompareTr::tr("rung %1: %2").arg(r.a + 1).arg(status);
     //: A rung of A (number %1) that is rung %2 of B, and what happened to it (%3).
-    return Tr::tr("rung %1 -> %2: %3").arg(r.a + 1).arg(r.b + 1).arg(status);
+    return CompareTr::tr("rung %1 -> %2: %3").arg(r.a + 1).arg(r.b + 1).arg(status);
 }
 
 void writeRung(const RungDifference &r, QStringList &lines) {
@@ -126,22 +123,25 @@ void writeRung(const RungDifference &r, QStringList &lines) {
         const QString what = elementText(e.element);
         switch (e.kind) {
         case ElementChange::Kind::Added:
-            lines << indent + Tr::tr("+ %1 added: %2").arg(what, e.after);
+            lines << indent + CompareTr::tr("+ %1 added: %2").arg(what, e.after);
             break;
         case ElementChange::Kind::Removed:
-            lines << indent + Tr::tr("- %1 removed: %2").arg(what, e.before);
+            lines << indent + CompareTr::tr("- %1 removed: %2").arg(what, e.before);
             break;
         case ElementChange::Kind::Changed:
             if (e.element == ElementChange::Element::Branches) {
-                lines << indent + Tr::tr("* the branches joining the contacts changed");
+                lines << indent + CompareTr::tr("* the branches joining the contacts changed");
                 break;
             }
-            QString line = indent + Tr::tr("* %1 changed: %2 -> %3").arg(what, e.before, e.after);
+            QString line =
+                indent + CompareTr::tr("* %1 changed: %2 -> %3").arg(what, e.before, e.after);
             QStringList operands;
             for (const ElementChange::Operand &o : e.operands)
                 //: An operand that changed: %1 its number (1 = the first), %2 and %3 the old
                 //: and the new operand.
-                operands << Tr::tr("operand %1: %2 -> %3").arg(o.index + 1).arg(o.before, o.after);
+                operands << CompareTr::tr("operand %1: %2 -> %3")
+                                .arg(o.index + 1)
+                                .arg(o.before, o.after);
             if (!operands.isEmpty())
                 line += QStringLiteral(" (%1)").arg(operands.join(QStringLiteral(", ")));
             lines << line;
@@ -149,7 +149,7 @@ void writeRung(const RungDifference &r, QStringList &lines) {
         }
     }
     if (r.commentChanged)
-        lines << indent + Tr::tr("* comment changed: %1 -> %2")
+        lines << indent + CompareTr::tr("* comment changed: %1 -> %2")
                               .arg(quoted(r.commentA), quoted(r.commentB));
 }
 
@@ -157,48 +157,54 @@ QString itemLine(const QString &what, const ItemDifference &d) {
     //: %1 what ("symbol X0", "set value T0"), %2 the field ("name", "comment", "value").
     switch (d.kind) {
     case Kind::Added:
-        return Tr::tr("+ %1 added: %2 %3").arg(what, fieldText(d.field), quoted(d.after));
+        return CompareTr::tr("+ %1 added: %2 %3").arg(what, fieldText(d.field), quoted(d.after));
     case Kind::Removed:
-        return Tr::tr("- %1 removed: %2 %3").arg(what, fieldText(d.field), quoted(d.before));
+        return CompareTr::tr("- %1 removed: %2 %3").arg(what, fieldText(d.field), quoted(d.before));
     case Kind::Changed:
         break;
     }
-    return Tr::tr("* %1 changed: %2 %3 -> %4")
+    return CompareTr::tr("* %1 changed: %2 %3 -> %4")
         .arg(what, fieldText(d.field), quoted(d.before), quoted(d.after));
 }
 
 QString watchLine(const ItemDifference &d) {
     const QString list = quoted(d.key);
     if (d.field == QLatin1String("devices"))
-        return d.kind == Kind::Added ? Tr::tr("+ watch list %1 added: %2").arg(list, d.after)
-                                     : Tr::tr("- watch list %1 removed: %2").arg(list, d.before);
+        return d.kind == Kind::Added
+                   ? CompareTr::tr("+ watch list %1 added: %2").arg(list, d.after)
+                   : CompareTr::tr("- watch list %1 removed: %2").arg(list, d.before);
     if (d.field == QLatin1String("device"))
-        return d.kind == Kind::Added ? Tr::tr("+ watch list %1: %2 added").arg(list, d.subject)
-                                     : Tr::tr("- watch list %1: %2 removed").arg(list, d.subject);
+        return d.kind == Kind::Added
+                   ? CompareTr::tr("+ watch list %1: %2 added").arg(list, d.subject)
+                   : CompareTr::tr("- watch list %1: %2 removed").arg(list, d.subject);
     if (d.field == QLatin1String("order"))
-        return Tr::tr("* watch list %1: the order changed: %2 -> %3").arg(list, d.before, d.after);
+        return CompareTr::tr("* watch list %1: the order changed: %2 -> %3")
+            .arg(list, d.before, d.after);
     //: A watch list row shown in another format: %1 the list, %2 the device, %3 and %4 the
     //: formats (dec, signed, hex, bin, bcd).
-    return Tr::tr("* watch list %1: %2 shown as %3 -> %4").arg(list, d.subject, d.before, d.after);
+    return CompareTr::tr("* watch list %1: %2 shown as %3 -> %4")
+        .arg(list, d.subject, d.before, d.after);
 }
 
 QString pendingLine(const ItemDifference &d) {
     if (d.key == QLatin1String("pendingListing")) {
         switch (d.kind) {
         case Kind::Added:
-            return Tr::tr("+ B holds an instruction list typed with errors that is not in its "
-                          "rungs (pendingListing)");
+            return CompareTr::tr(
+                "+ B holds an instruction list typed with errors that is not in its "
+                "rungs (pendingListing)");
         case Kind::Removed:
-            return Tr::tr("- A holds an instruction list typed with errors that is not in its "
-                          "rungs (pendingListing)");
+            return CompareTr::tr(
+                "- A holds an instruction list typed with errors that is not in its "
+                "rungs (pendingListing)");
         case Kind::Changed:
             break;
         }
-        return Tr::tr("* the instruction lists typed with errors that are not in the rungs "
-                      "differ (pendingListing)");
+        return CompareTr::tr("* the instruction lists typed with errors that are not in the rungs "
+                             "differ (pendingListing)");
     }
-    return d.kind == Kind::Added ? Tr::tr("+ symbol row not yet a symbol: %1").arg(d.after)
-                                 : Tr::tr("- symbol row not yet a symbol: %1").arg(d.before);
+    return d.kind == Kind::Added ? CompareTr::tr("+ symbol row not yet a symbol: %1").arg(d.after)
+                                 : CompareTr::tr("- symbol row not yet a symbol: %1").arg(d.before);
 }
 
 } // namespace
@@ -225,14 +231,14 @@ QString comparisonText(const Comparison &c, const QString &nameA, const QString 
     QStringList lines;
     lines << QStringLiteral("--- A: %1").arg(nameA) << QStringLiteral("+++ B: %1").arg(nameB);
     if (c.modelA != c.modelB)
-        lines << Tr::tr("* model changed: %1 -> %2").arg(c.modelA, c.modelB);
+        lines << CompareTr::tr("* model changed: %1 -> %2").arg(c.modelA, c.modelB);
     for (const RungDifference &r : c.rungs)
         if (r.status != RungStatus::Same)
             writeRung(r, lines);
     for (const ItemDifference &d : c.symbols)
-        lines << itemLine(Tr::tr("symbol %1").arg(d.key), d);
+        lines << itemLine(CompareTr::tr("symbol %1").arg(d.key), d);
     for (const ItemDifference &d : c.setValues)
-        lines << itemLine(Tr::tr("set value %1").arg(d.key), d);
+        lines << itemLine(CompareTr::tr("set value %1").arg(d.key), d);
     for (const ItemDifference &d : c.watchLists)
         lines << watchLine(d);
     for (const ItemDifference &d : c.pending)
@@ -242,11 +248,12 @@ QString comparisonText(const Comparison &c, const QString &nameA, const QString 
     const int rungsB = static_cast<int>(std::count_if(
         c.rungs.begin(), c.rungs.end(), [](const RungDifference &r) { return r.b >= 0; }));
     if (c.equal()) {
-        lines << Tr::tr("The programs are the same (rungs: %1).").arg(rungsB);
+        lines << CompareTr::tr("The programs are the same (rungs: %1).").arg(rungsB);
     } else {
         //: The summary of a comparison: %1 rungs in A, %2 in B, then how many of each kind.
-        lines << Tr::tr("Rungs: %1 in A, %2 in B; %3 the same, %4 moved, %5 changed, %6 moved "
-                        "and changed, %7 inserted, %8 deleted.")
+        lines << CompareTr::tr(
+                     "Rungs: %1 in A, %2 in B; %3 the same, %4 moved, %5 changed, %6 moved "
+                     "and changed, %7 inserted, %8 deleted.")
                      .arg(rungsA)
                      .arg(rungsB)
                      .arg(c.count(RungStatus::Same))

@@ -1,6 +1,7 @@
 #include "model/convert/convert.h"
 #include "model/ladder/network.h"
 #include "model/listing/structure.h"
+#include "model/tr.h"
 
 #include <QCoreApplication>
 
@@ -20,10 +21,6 @@ bool ToLadderResult::ok() const {
 }
 
 namespace {
-
-struct Tr {
-    Q_DECLARE_TR_FUNCTIONS(rung::model::Convert)
-};
 
 // ---- layout ------------------------------------------------------------------------------
 
@@ -216,9 +213,9 @@ private:
     // the branch point's own contacts, which the branch tree cannot draw.
     void anchoredProblem(const Instruction &at) {
         problem(at, "CV009",
-                Tr::tr("%1 joins the condition of a branch point in parallel with another "
-                       "block; the ladder cannot draw this: repeat the shared contacts in "
-                       "this branch instead")
+                ConvertTr::tr("%1 joins the condition of a branch point in parallel with another "
+                              "block; the ladder cannot draw this: repeat the shared contacts in "
+                              "this branch instead")
                     .arg(at.spec->mnemonic));
     }
 
@@ -291,16 +288,17 @@ private:
         case Op::And:
         case Op::Invert:
             if (m_blocks.empty())
-                return problem(ins, "CV001",
-                               Tr::tr("%1 has no block to continue; start the rung with a load")
-                                   .arg(ins.spec->mnemonic));
+                return problem(
+                    ins, "CV001",
+                    ConvertTr::tr("%1 has no block to continue; start the rung with a load")
+                        .arg(ins.spec->mnemonic));
             m_blocks.back() = detail::series(m_blocks.back(), Expr::leafOf(contactOf(ins)));
             return;
         case Op::Or:
             if (m_blocks.empty() || m_blocks.back().empty())
                 return problem(
                     ins, "CV001",
-                    Tr::tr("%1 has no block to join in parallel").arg(ins.spec->mnemonic));
+                    ConvertTr::tr("%1 has no block to join in parallel").arg(ins.spec->mnemonic));
             if (m_blocks.size() == 1 && m_anchored)
                 return anchoredProblem(ins);
             m_blocks.back() = detail::parallel(m_blocks.back(), Expr::leafOf(contactOf(ins)));
@@ -309,8 +307,8 @@ private:
         case Op::OrBlock: {
             if (m_blocks.size() < 2)
                 return problem(ins, "CV002",
-                               Tr::tr("%1 needs two blocks, but %n is open", nullptr,
-                                      static_cast<int>(m_blocks.size()))
+                               ConvertTr::tr("%1 needs two blocks, but %n is open", nullptr,
+                                             static_cast<int>(m_blocks.size()))
                                    .arg(ins.spec->mnemonic));
             Expr b = std::move(m_blocks.back());
             m_blocks.pop_back();
@@ -318,7 +316,7 @@ private:
             if (op == Op::OrBlock && (a.empty() || b.empty()))
                 return problem(
                     ins, "CV001",
-                    Tr::tr("%1 has no block to join in parallel").arg(ins.spec->mnemonic));
+                    ConvertTr::tr("%1 has no block to join in parallel").arg(ins.spec->mnemonic));
             if (op == Op::OrBlock && m_blocks.size() == 1 && m_anchored)
                 return anchoredProblem(ins);
             m_blocks.back() = op == Op::AndBlock ? detail::series(std::move(a), std::move(b))
@@ -328,8 +326,8 @@ private:
         case Op::Push:
             if (m_blocks.size() != 1)
                 return problem(ins, "CV003",
-                               Tr::tr("MPS needs exactly one open block, but %n is open", nullptr,
-                                      static_cast<int>(m_blocks.size())));
+                               ConvertTr::tr("MPS needs exactly one open block, but %n is open",
+                                             nullptr, static_cast<int>(m_blocks.size())));
             if (!m_blocks[0].empty())
                 m_cur = addChild(std::move(m_blocks[0]));
             m_mps.push_back(m_cur);
@@ -340,7 +338,7 @@ private:
         case Op::Pop:
             if (m_mps.empty())
                 return problem(ins, "CV004",
-                               Tr::tr("%1 without a matching MPS").arg(ins.spec->mnemonic));
+                               ConvertTr::tr("%1 without a matching MPS").arg(ins.spec->mnemonic));
             m_cur = m_mps.back();
             if (op == Op::Pop)
                 m_mps.pop_back();
@@ -356,7 +354,7 @@ private:
             if (m_hadOutput || !m_mps.empty() ||
                 m_blocks.size() != static_cast<std::size_t>(inputs)) {
                 return problem(ins, "CV005",
-                               Tr::tr("%1 needs %2 input blocks, but %3 are open")
+                               ConvertTr::tr("%1 needs %2 input blocks, but %3 are open")
                                    .arg(ins.spec->mnemonic)
                                    .arg(inputs)
                                    .arg(m_blocks.size()));
@@ -365,7 +363,7 @@ private:
                 if (e.empty())
                     return problem(
                         ins, "CV006",
-                        Tr::tr("%1 has an input with no condition").arg(ins.spec->mnemonic));
+                        ConvertTr::tr("%1 has an input with no condition").arg(ins.spec->mnemonic));
             m_box = ins;
             m_boxInputs = std::move(m_blocks);
             m_blocks.clear();
@@ -379,15 +377,18 @@ private:
             m_blocks.assign(1, Expr{});
         }
         if (m_blocks.empty())
-            return problem(ins, "CV006", Tr::tr("%1 has no condition").arg(ins.spec->mnemonic));
+            return problem(ins, "CV006",
+                           ConvertTr::tr("%1 has no condition").arg(ins.spec->mnemonic));
         if (m_blocks.size() != 1)
             return problem(ins, "CV005",
-                           m_blocks.empty() ? Tr::tr("%1 has no condition").arg(ins.spec->mnemonic)
-                                            : Tr::tr("%1 needs one block, but %2 are open")
-                                                  .arg(ins.spec->mnemonic)
-                                                  .arg(m_blocks.size()));
+                           m_blocks.empty()
+                               ? ConvertTr::tr("%1 has no condition").arg(ins.spec->mnemonic)
+                               : ConvertTr::tr("%1 needs one block, but %2 are open")
+                                     .arg(ins.spec->mnemonic)
+                                     .arg(m_blocks.size()));
         if (m_blocks[0].empty() && m_cur == 0 && !m_inStep)
-            return problem(ins, "CV006", Tr::tr("%1 has no condition").arg(ins.spec->mnemonic));
+            return problem(ins, "CV006",
+                           ConvertTr::tr("%1 has no condition").arg(ins.spec->mnemonic));
         if (!m_blocks[0].empty())
             m_cur = addChild(std::move(m_blocks[0]));
         addOutput(ins);
@@ -421,12 +422,12 @@ private:
             const bool open = !(m_blocks.empty() || (m_blocks.size() == 1 && m_blocks[0].empty()));
             if (open || !m_hadOutput) {
                 problem(atEnd ? m_list.instructions.back() : firstIns, "CV007",
-                        Tr::tr("The rung starting on line %1 ends without an output")
+                        ConvertTr::tr("The rung starting on line %1 ends without an output")
                             .arg(firstIns.line));
             } else if (!m_mps.empty()) {
                 problem(firstIns, "CV008",
-                        Tr::tr("The rung starting on line %1 leaves %n MPS without MPP", nullptr,
-                               static_cast<int>(m_mps.size()))
+                        ConvertTr::tr("The rung starting on line %1 leaves %n MPS without MPP",
+                                      nullptr, static_cast<int>(m_mps.size()))
                             .arg(firstIns.line));
             }
         }

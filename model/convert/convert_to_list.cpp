@@ -1,5 +1,6 @@
 #include "model/convert/convert.h"
 #include "model/ladder/rung_graph.h"
+#include "model/tr.h"
 
 #include <algorithm>
 
@@ -21,10 +22,6 @@ bool ToListingResult::ok() const {
 }
 
 namespace {
-
-struct Tr {
-    Q_DECLARE_TR_FUNCTIONS(rung::model::Convert)
-};
 
 class Emitter {
 public:
@@ -48,9 +45,8 @@ public:
         if (!logic.boxInputs.empty()) {
             for (const Expr &e : logic.boxInputs) {
                 if (e.empty())
-                    return fail(
-                        -1,
-                        Tr::tr("%1 has an input with no condition").arg(logic.box.spec->mnemonic));
+                    return fail(-1, ConvertTr::tr("%1 has an input with no condition")
+                                        .arg(logic.box.spec->mnemonic));
                 emitLoad(e);
             }
             emitOutput(logic.box, logic.boxRow);
@@ -60,7 +56,8 @@ public:
             if (item.isOutput) {
                 // Inside a step (STL .. RET) an output may hang on the step bus itself.
                 if (!isUnconditional(item.output.op()) && !inStep)
-                    return fail(-1, Tr::tr("%1 has no condition").arg(item.output.spec->mnemonic));
+                    return fail(
+                        -1, ConvertTr::tr("%1 has no condition").arg(item.output.spec->mnemonic));
                 emitOutput(item.output, item.row);
                 continue;
             }
@@ -93,8 +90,8 @@ private:
                                           ? m_target.findInstruction(Op::Invert, c.mode)
                                           : m_target.findInstruction(op, c.mode, c.compare, false);
         if (!spec) {
-            fail(-1, c.invert ? Tr::tr("%1 has no INV element").arg(m_target.displayName)
-                              : Tr::tr("%1 has no such contact").arg(m_target.displayName));
+            fail(-1, c.invert ? ConvertTr::tr("%1 has no INV element").arg(m_target.displayName)
+                              : ConvertTr::tr("%1 has no such contact").arg(m_target.displayName));
             return;
         }
         Instruction ins;
@@ -111,7 +108,7 @@ private:
         Instruction ins;
         ins.spec = m_target.findInstruction(op);
         if (!ins.spec) {
-            fail(-1, Tr::tr("%1 has no branch stack").arg(m_target.displayName));
+            fail(-1, ConvertTr::tr("%1 has no branch stack").arg(m_target.displayName));
             return;
         }
         push(std::move(ins), -1, -1);
@@ -191,11 +188,11 @@ private:
         switch (e.kind) {
         case Expr::Kind::Leaf:
             if (e.leaf.invert)
-                return fail(-1, Tr::tr("A block cannot start with INV"));
+                return fail(-1, ConvertTr::tr("A block cannot start with INV"));
             return emitContact(Op::Load, e.leaf, e.cell);
         case Expr::Kind::Series:
             if (e.items.empty())
-                return fail(-1, Tr::tr("An output has no condition"));
+                return fail(-1, ConvertTr::tr("An output has no condition"));
             emitLoad(e.items.front());
             for (std::size_t i = 1; i < e.items.size(); ++i)
                 emitAnd(e.items[i]);
@@ -291,10 +288,11 @@ private:
         m_problems->resize(problemMark);
         m_failed = failedBefore;
         if (inInterlock || !interlockUsable(b))
-            return fail(-1, Tr::tr("A branch reads a device that an earlier branch of the same "
-                                   "rung writes, and %1 cannot hold this branch point (IL does "
-                                   "not nest); draw the branches as separate rungs")
-                                .arg(m_target.displayName));
+            return fail(-1,
+                        ConvertTr::tr("A branch reads a device that an earlier branch of the same "
+                                      "rung writes, and %1 cannot hold this branch point (IL does "
+                                      "not nest); draw the branches as separate rungs")
+                            .arg(m_target.displayName));
         emitBare(Op::Interlock);
         emitInterlocked(b);
         emitBare(Op::InterlockClear);
@@ -388,7 +386,7 @@ ToListingResult ladderToList(const LadderProgram &ladder) {
             Diagnostic d;
             d.code = QStringLiteral("CV011");
             d.location.rung = rungIndex;
-            d.message = Tr::tr("A box with several inputs must stand alone in its rung");
+            d.message = ConvertTr::tr("A box with several inputs must stand alone in its rung");
             result.problems.push_back(d);
             bad = true;
         }
@@ -399,12 +397,14 @@ ToListingResult ladderToList(const LadderProgram &ladder) {
             d.location.cell = rung.columns;
             if (!n.connected) {
                 d.code = QStringLiteral("CV012");
-                d.message = Tr::tr("Row %1 is not connected to the left rail").arg(n.row + 1);
+                d.message =
+                    ConvertTr::tr("Row %1 is not connected to the left rail").arg(n.row + 1);
             } else if (!n.seriesParallel) {
                 d.code = QStringLiteral("RC001");
-                d.message = Tr::tr("Reverse current: the network feeding row %1 can only close "
-                                   "through an element crossed right to left")
-                                .arg(n.row + 1);
+                d.message =
+                    ConvertTr::tr("Reverse current: the network feeding row %1 can only close "
+                                  "through an element crossed right to left")
+                        .arg(n.row + 1);
                 for (int id : n.cells)
                     d.related.push_back(Location{0, 0, rungIndex, id / std::max(1, rung.columns),
                                                  id % std::max(1, rung.columns)});

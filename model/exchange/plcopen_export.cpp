@@ -20,14 +20,6 @@
 
 namespace rung::model::plcopen {
 
-namespace {
-
-struct Tr {
-    Q_DECLARE_TR_FUNCTIONS(rung::model::Plcopen)
-};
-
-} // namespace
-
 PlcopenExport Exporter::run(const QString &name, const QDateTime &created) {
     // Timers written as IEC timers are declared as such; plan every rung first.
     for (const Rung &r : m_p.program.rungs)

@@ -1,4 +1,5 @@
 #include "model/exchange/plcopen_import.h"
+#include "model/tr.h"
 
 #include "model/convert/convert.h"
 #include "model/target/address.h"
@@ -18,14 +19,6 @@
 // its line.
 
 namespace rung::model::plcopen {
-
-namespace {
-
-struct Tr {
-    Q_DECLARE_TR_FUNCTIONS(rung::model::Plcopen)
-};
-
-} // namespace
 
 QString describe(const Element &e) {
     if (!e.typeName.isEmpty())
@@ -117,8 +110,8 @@ PlcopenImport Importer::run(const QByteArray &bytes) {
     }
     if (root->name != QLatin1String("project") || root->namespaceUri != QLatin1String(kPlcopenNs)) {
         issue(root->line, root->name,
-              Tr::tr("not a PLCopen TC6 XML 2.01 project (the root is <%1> in \"%2\", "
-                     "<project> in \"%3\" is expected)")
+              PlcopenTr::tr("not a PLCopen TC6 XML 2.01 project (the root is <%1> in \"%2\", "
+                            "<project> in \"%3\" is expected)")
                   .arg(root->name, root->namespaceUri, QLatin1String(kPlcopenNs)));
         return finish();
     }
@@ -135,15 +128,15 @@ PlcopenImport Importer::run(const QByteArray &bytes) {
                 }
                 issue(pou->line, QStringLiteral("pou %1").arg(name),
                       kind == QLatin1String("program")
-                          ? Tr::tr("a second program is not imported: a project is one "
-                                   "ladder (the first program, %1, is)")
+                          ? PlcopenTr::tr("a second program is not imported: a project is one "
+                                          "ladder (the first program, %1, is)")
                                 .arg(program->attribute("name"))
-                          : Tr::tr("a %1 is not imported: %2 runs one ladder, with no user "
-                                   "functions or function blocks")
+                          : PlcopenTr::tr("a %1 is not imported: %2 runs one ladder, with no user "
+                                          "functions or function blocks")
                                 .arg(kind, m_t.displayName));
             }
     if (!program) {
-        issue(root->line, QStringLiteral("project"), Tr::tr("the file has no program"));
+        issue(root->line, QStringLiteral("project"), PlcopenTr::tr("the file has no program"));
         return finish();
     }
     readVariables(*program);
@@ -156,15 +149,15 @@ PlcopenImport Importer::run(const QByteArray &bytes) {
                 ld = &language;
             } else if (language.name != QLatin1String("addData") &&
                        language.name != QLatin1String("documentation")) {
-                issue(
-                    language.line, QStringLiteral("body %1").arg(language.name),
-                    Tr::tr("a body in %1 is not imported: only ladder (LD) is").arg(language.name));
+                issue(language.line, QStringLiteral("body %1").arg(language.name),
+                      PlcopenTr::tr("a body in %1 is not imported: only ladder (LD) is")
+                          .arg(language.name));
             }
         }
     }
     if (!ld) {
         issue(program->line, QStringLiteral("pou %1").arg(program->attribute("name")),
-              Tr::tr("the program has no ladder (LD) body"));
+              PlcopenTr::tr("the program has no ladder (LD) body"));
         return finish();
     }
     readElements(*ld);
@@ -295,7 +288,7 @@ std::optional<Address> Importer::resolve(const QString &name, int line, const QS
         const auto parsed = parseAddress(m_t, it->second, m_model);
         if (const auto *e = std::get_if<AddressError>(&parsed))
             issue(info ? info->line : line, QStringLiteral("variable %1").arg(trimmed),
-                  Tr::tr("the mapping file gives %1: %2").arg(it->second, e->message));
+                  PlcopenTr::tr("the mapping file gives %1: %2").arg(it->second, e->message));
         else
             found = std::get<Address>(parsed);
     }
@@ -307,8 +300,8 @@ std::optional<Address> Importer::resolve(const QString &name, int line, const QS
         found = deviceOfLocation(m_t, info->location, m_model);
         if (!found)
             issue(info->line, QStringLiteral("variable %1").arg(trimmed),
-                  Tr::tr("%1 at %2: %3 has no such device (docs/plcopen.md, located "
-                         "variables); give one in a mapping file")
+                  PlcopenTr::tr("%1 at %2: %3 has no such device (docs/plcopen.md, located "
+                                "variables); give one in a mapping file")
                       .arg(trimmed, info->location, m_t.displayName));
     }
     if (!found)
@@ -442,21 +435,13 @@ std::optional<QString> Importer::pinExpression(const Pin &p, int line) {
             m_used.insert(src->id);
             return src->variable;
         }
-    issue(line, p.formal, Tr::tr("input %1 is not a variable or a literal").arg(p.formal));
+    issue(line, p.formal, PlcopenTr::tr("input %1 is not a variable or a literal").arg(p.formal));
     return std::nullopt;
 }
 
 } // namespace rung::model::plcopen
 
 namespace rung::model {
-
-namespace {
-
-struct Tr {
-    Q_DECLARE_TR_FUNCTIONS(rung::model::Plcopen)
-};
-
-} // namespace
 
 std::optional<DeviceMapping> readDeviceMapping(const QString &text, QString *error) {
     DeviceMapping m;
@@ -470,7 +455,7 @@ std::optional<DeviceMapping> readDeviceMapping(const QString &text, QString *err
             continue;
         const qsizetype eq = line.indexOf(QLatin1Char('='));
         if (eq <= 0 || line.mid(eq + 1).trimmed().isEmpty()) {
-            *error = Tr::tr("line %1: \"%2\" is not NAME = DEVICE").arg(i + 1).arg(line);
+            *error = PlcopenTr::tr("line %1: \"%2\" is not NAME = DEVICE").arg(i + 1).arg(line);
             return std::nullopt;
         }
         m.devices[line.left(eq).trimmed()] = line.mid(eq + 1).trimmed();

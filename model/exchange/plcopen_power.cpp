@@ -1,4 +1,5 @@
 #include "model/exchange/plcopen_import.h"
+#include "model/tr.h"
 
 #include "model/convert/convert.h"
 #include "model/target/address.h"
@@ -13,14 +14,6 @@
 // and the outputs they feed as the target's instructions (docs/plcopen.md "Import").
 
 namespace rung::model::plcopen {
-
-namespace {
-
-struct Tr {
-    Q_DECLARE_TR_FUNCTIONS(rung::model::Plcopen)
-};
-
-} // namespace
 
 Factor Importer::leaf(const Element &e, const Contact &c) const {
     return {QStringLiteral("e%1").arg(e.id), Expr::leafOf(c)};
@@ -44,7 +37,7 @@ std::optional<Contact> Importer::contactOfVariable(const QString &variable, int 
 std::optional<Chain> Importer::chainIn(const Pin *p, const Element &owner) {
     if (!p || p->connections.empty()) {
         issue(owner.line, describe(owner),
-              Tr::tr("its input is connected to nothing: not imported"));
+              PlcopenTr::tr("its input is connected to nothing: not imported"));
         return std::nullopt;
     }
     std::vector<Chain> chains;
@@ -127,14 +120,14 @@ std::optional<Chain> Importer::chainOf(int id, const QString &formal, const Elem
     const Element *e = element(id);
     if (!e) {
         issue(from.line, describe(from),
-              Tr::tr("it is connected to element %1, which the file does not have").arg(id));
+              PlcopenTr::tr("it is connected to element %1, which the file does not have").arg(id));
         return std::nullopt;
     }
     const QString key = QStringLiteral("%1/%2").arg(id).arg(formal);
     if (const auto it = m_chains.find(key); it != m_chains.end())
         return it->second;
     if (!m_visiting.insert(key).second) {
-        issue(e->line, describe(*e), Tr::tr("the power flow runs in a loop: not imported"));
+        issue(e->line, describe(*e), PlcopenTr::tr("the power flow runs in a loop: not imported"));
         return std::nullopt;
     }
     auto chain = computeChain(*e, formal);
@@ -159,7 +152,7 @@ std::optional<Chain> Importer::computeChain(const Element &e, const QString &for
             return std::nullopt;
         if (e.negated && !e.edge.isEmpty() && e.edge != QLatin1String("none")) {
             issue(e.line, describe(e),
-                  Tr::tr("a contact both negated and on an edge is not imported"));
+                  PlcopenTr::tr("a contact both negated and on an edge is not imported"));
             return std::nullopt;
         }
         c->mode = e.negated                            ? ContactMode::Negated
@@ -167,7 +160,8 @@ std::optional<Chain> Importer::computeChain(const Element &e, const QString &for
                   : e.edge == QLatin1String("falling") ? ContactMode::Falling
                                                        : ContactMode::Normal;
         if (!m_t.findInstruction(Op::And, c->mode)) {
-            issue(e.line, describe(e), Tr::tr("%1 has no such contact").arg(m_t.displayName));
+            issue(e.line, describe(e),
+                  PlcopenTr::tr("%1 has no such contact").arg(m_t.displayName));
             return std::nullopt;
         }
         in->push_back(leaf(e, *c));
@@ -182,13 +176,13 @@ std::optional<Chain> Importer::computeChain(const Element &e, const QString &for
                 m_used.insert(c.id);
                 return chainIn(c.inputs.empty() ? nullptr : &c.inputs.front(), c);
             }
-        issue(e.line, describe(e), Tr::tr("no connector is named %1").arg(e.name));
+        issue(e.line, describe(e), PlcopenTr::tr("no connector is named %1").arg(e.name));
         return std::nullopt;
     }
     if (e.kind == QLatin1String("block"))
         return blockChain(e, formal);
     issue(e.line, describe(e),
-          Tr::tr("a %1 carries no power flow %2 can take").arg(e.kind, m_t.displayName));
+          PlcopenTr::tr("a %1 carries no power flow %2 can take").arg(e.kind, m_t.displayName));
     return std::nullopt;
 }
 
@@ -221,7 +215,7 @@ std::optional<Chain> Importer::blockChain(const Element &e, const QString &forma
         const Pin *a = pin(e, "IN1");
         const Pin *b = pin(e, "IN2");
         if (!a || !b) {
-            issue(e.line, describe(e), Tr::tr("a comparison needs IN1 and IN2"));
+            issue(e.line, describe(e), PlcopenTr::tr("a comparison needs IN1 and IN2"));
             return std::nullopt;
         }
         const auto x = pinExpression(*a, e.line);
@@ -237,7 +231,7 @@ std::optional<Chain> Importer::blockChain(const Element &e, const QString &forma
         c.operands = {*ox, *oy};
         if (!m_t.findInstruction(Op::And, ContactMode::Normal, *op)) {
             issue(e.line, describe(e),
-                  Tr::tr("%1 has no compare contact %2")
+                  PlcopenTr::tr("%1 has no compare contact %2")
                       .arg(m_t.displayName, QLatin1String(compareSymbol(*op))));
             return std::nullopt;
         }
@@ -265,7 +259,7 @@ std::optional<Chain> Importer::blockChain(const Element &e, const QString &forma
                      : ContactMode::Falling;
         if (!m_t.findInstruction(Op::Invert, c.mode)) {
             issue(e.line, describe(e),
-                  Tr::tr("%1 has no element for %2 in the power flow")
+                  PlcopenTr::tr("%1 has no element for %2 in the power flow")
                       .arg(m_t.displayName, e.typeName));
             return std::nullopt;
         }
@@ -284,7 +278,7 @@ std::optional<Chain> Importer::blockChain(const Element &e, const QString &forma
         return Chain{{QStringLiteral("q%1").arg(e.id), Expr::leafOf(*c)}};
     }
     issue(e.line, describe(e),
-          Tr::tr("output %1 of %2 as power flow is not imported")
+          PlcopenTr::tr("output %1 of %2 as power flow is not imported")
               .arg(formal.isEmpty() ? QStringLiteral("OUT") : formal, e.typeName));
     return std::nullopt;
 }
@@ -307,7 +301,7 @@ std::optional<Instruction> Importer::parseInstruction(const QString &text, const
     if (!parsed.ok() || parsed.list.instructions.size() != 1) {
         issue(e.line, describe(e),
               QStringLiteral("\"%1\": %2")
-                  .arg(text, parsed.errors.empty() ? Tr::tr("one instruction is expected")
+                  .arg(text, parsed.errors.empty() ? PlcopenTr::tr("one instruction is expected")
                                                    : parsed.errors.front().message));
         return std::nullopt;
     }
@@ -344,13 +338,13 @@ std::optional<Output> Importer::coilOutput(const Element &e) {
                                                             : Op::Out;
         if (e.negated && op != Op::Out) {
             issue(e.line, describe(e),
-                  Tr::tr("a negated coil that also sets, resets or pulses is not imported"));
+                  PlcopenTr::tr("a negated coil that also sets, resets or pulses is not imported"));
             return std::nullopt;
         }
         const InstructionSpec *spec =
             m_t.findInstruction(op, ContactMode::Normal, CompareOp::None, e.negated);
         if (!spec) {
-            issue(e.line, describe(e), Tr::tr("%1 has no such coil").arg(m_t.displayName));
+            issue(e.line, describe(e), PlcopenTr::tr("%1 has no such coil").arg(m_t.displayName));
             return std::nullopt;
         }
         auto ins = build(spec, c->operands, e);
@@ -373,7 +367,7 @@ std::optional<Output> Importer::timerOutput(const Element &e) {
     const auto ms = ptText ? timeLiteral(*ptText) : std::nullopt;
     if (!ms) {
         issue(e.line, describe(e),
-              Tr::tr("PT must be a time literal (T#1s) to be a set value: not imported"));
+              PlcopenTr::tr("PT must be a time literal (T#1s) to be a set value: not imported"));
         return std::nullopt;
     }
     const auto device = resolve(e.instanceName, e.line, e.typeName);
@@ -383,7 +377,8 @@ std::optional<Output> Importer::timerOutput(const Element &e) {
                                ? TimerMode::OffDelay
                                : TimerMode::OnDelay;
     if (e.typeName.compare(QLatin1String("TP"), Qt::CaseInsensitive) == 0) {
-        issue(e.line, describe(e), Tr::tr("%1 has no pulse timer (TP)").arg(m_t.displayName));
+        issue(e.line, describe(e),
+              PlcopenTr::tr("%1 has no pulse timer (TP)").arg(m_t.displayName));
         return std::nullopt;
     }
     for (const InstructionSpec &spec : m_t.instructions) {
@@ -402,7 +397,7 @@ std::optional<Output> Importer::timerOutput(const Element &e) {
         }
     }
     issue(e.line, describe(e),
-          Tr::tr("%1 has no %2 timer that times %3 ms on %4")
+          PlcopenTr::tr("%1 has no %2 timer that times %3 ms on %4")
               .arg(m_t.displayName, e.typeName)
               .arg(*ms)
               .arg(formatAddress(m_t, *device)));
@@ -490,7 +485,7 @@ std::optional<Output> Importer::moveOutput(const Element &e) {
                 if (c.ref == e.id)
                     dest = &o;
     if (!dest) {
-        issue(e.line, describe(e), Tr::tr("MOVE's OUT goes to no variable: not imported"));
+        issue(e.line, describe(e), PlcopenTr::tr("MOVE's OUT goes to no variable: not imported"));
         return std::nullopt;
     }
     m_used.insert(dest->id);
@@ -506,7 +501,8 @@ std::optional<Output> Importer::moveOutput(const Element &e) {
             break;
         }
     if (!spec) {
-        issue(e.line, describe(e), Tr::tr("%1 has no move instruction").arg(m_t.displayName));
+        issue(e.line, describe(e),
+              PlcopenTr::tr("%1 has no move instruction").arg(m_t.displayName));
         return std::nullopt;
     }
     Output out;

@@ -1,4 +1,5 @@
 #include "model/exchange/plcopen_import.h"
+#include "model/tr.h"
 
 #include "model/convert/convert.h"
 #include "model/target/address.h"
@@ -12,14 +13,6 @@
 // rungs' comments, the symbols, and everything of the file not imported, listed.
 
 namespace rung::model::plcopen {
-
-namespace {
-
-struct Tr {
-    Q_DECLARE_TR_FUNCTIONS(rung::model::Plcopen)
-};
-
-} // namespace
 
 void Importer::insert(Node &node, const Chain &chain, std::size_t k, int outputIndex) {
     if (k == chain.size()) {
@@ -223,7 +216,7 @@ void Importer::collectSymbols(Project &p) {
                 v.type == QLatin1String("F_TRIG"))
                 continue; // an instance its block names
             issue(v.line, QStringLiteral("variable %1").arg(name),
-                  Tr::tr("the ladder does not use it and it names no device: not imported"));
+                  PlcopenTr::tr("the ladder does not use it and it names no device: not imported"));
             continue;
         }
         if (v.setValue)
@@ -338,25 +331,25 @@ void Importer::reportUnused() {
         if (e.kind == QLatin1String("jump") || e.kind == QLatin1String("label") ||
             e.kind == QLatin1String("return"))
             issue(e.line, describe(e),
-                  Tr::tr("IEC jumps, labels and returns are not imported: %1's own jumps "
-                         "work otherwise; write them in Rung Studio")
+                  PlcopenTr::tr("IEC jumps, labels and returns are not imported: %1's own jumps "
+                                "work otherwise; write them in Rung Studio")
                       .arg(m_t.displayName));
         else if (e.kind == QLatin1String("block"))
             issue(e.line, describe(e),
-                  Tr::tr("this block is not imported: contacts, coils, TON, TOF, MOVE, the "
-                         "comparisons, NOT, R_TRIG and F_TRIG are (docs/plcopen.md)"));
+                  PlcopenTr::tr("this block is not imported: contacts, coils, TON, TOF, MOVE, the "
+                                "comparisons, NOT, R_TRIG and F_TRIG are (docs/plcopen.md)"));
         else if (const Element *source = sourceNotImported(e))
             issue(e.line, describe(e),
-                  Tr::tr("its power comes from %1 (line %2), which is not imported")
+                  PlcopenTr::tr("its power comes from %1 (line %2), which is not imported")
                       .arg(describe(*source))
                       .arg(source->line));
         else if (const Element *block = blockFedBy(e))
             issue(e.line, describe(e),
-                  Tr::tr("its power goes to %1 (line %2), which is not imported")
+                  PlcopenTr::tr("its power goes to %1 (line %2), which is not imported")
                       .arg(describe(*block))
                       .arg(block->line));
         else
-            issue(e.line, describe(e), Tr::tr("no output uses it: not imported"));
+            issue(e.line, describe(e), PlcopenTr::tr("no output uses it: not imported"));
     }
 }
 

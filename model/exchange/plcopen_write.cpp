@@ -1,4 +1,5 @@
 #include "model/exchange/plcopen_export.h"
+#include "model/tr.h"
 
 #include "model/exchange/plcopen_xml.h"
 #include "model/ladder/ladder_text.h"
@@ -13,14 +14,6 @@
 // each variable, block and coil with Rung Studio's addData (docs/plcopen.md).
 
 namespace rung::model::plcopen {
-
-namespace {
-
-struct Tr {
-    Q_DECLARE_TR_FUNCTIONS(rung::model::Plcopen)
-};
-
-} // namespace
 
 PlcopenExport Exporter::write(const QString &name, const QDateTime &created) {
     PlcopenExport result;
@@ -96,8 +89,8 @@ PlcopenExport Exporter::write(const QString &name, const QDateTime &created) {
     xml.writeEndElement(); // project
     xml.writeEndDocument();
     for (const QString &block : m_vendor)
-        result.notes << Tr::tr("%1 is written as a block of %2's own: other tools read the "
-                               "file but do not know this block")
+        result.notes << PlcopenTr::tr("%1 is written as a block of %2's own: other tools read the "
+                                      "file but do not know this block")
                             .arg(block, m_t.displayName);
     return result;
 }

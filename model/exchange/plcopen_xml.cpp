@@ -1,4 +1,5 @@
 #include "model/exchange/plcopen_xml.h"
+#include "model/tr.h"
 
 #include <QCoreApplication>
 #include <QXmlStreamReader>
@@ -6,10 +7,6 @@
 namespace rung::model {
 
 namespace {
-
-struct Tr {
-    Q_DECLARE_TR_FUNCTIONS(rung::model::Plcopen)
-};
 
 // A PLCopen file nests a few levels deep; a file that nests deeper than this is no PLCopen
 // file, and the limit keeps a hostile one from exhausting the stack.
@@ -25,7 +22,7 @@ std::unique_ptr<XmlNode> readXmlTree(const QByteArray &bytes, QString *error) {
         switch (xml.readNext()) {
         case QXmlStreamReader::StartElement: {
             if (stack.size() > kMaxDepth) {
-                *error = Tr::tr("line %1: the XML nests deeper than %2 levels")
+                *error = PlcopenTr::tr("line %1: the XML nests deeper than %2 levels")
                              .arg(xml.lineNumber())
                              .arg(kMaxDepth);
                 return nullptr;
@@ -51,14 +48,14 @@ std::unique_ptr<XmlNode> readXmlTree(const QByteArray &bytes, QString *error) {
         }
     }
     if (xml.hasError()) {
-        *error = Tr::tr("line %1, column %2: the file is not well-formed XML (%3)")
+        *error = PlcopenTr::tr("line %1, column %2: the file is not well-formed XML (%3)")
                      .arg(xml.lineNumber())
                      .arg(xml.columnNumber())
                      .arg(xml.errorString());
         return nullptr;
     }
     if (root->children.size() != 1) {
-        *error = Tr::tr("the file holds no XML element");
+        *error = PlcopenTr::tr("the file holds no XML element");
         return nullptr;
     }
     auto top = std::make_unique<XmlNode>(std::move(root->children.front()));

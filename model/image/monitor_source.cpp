@@ -60,6 +60,19 @@ void MonitorSource::setWatched(QObject *reader, std::vector<Address> devices) {
     emit watchedChanged();
 }
 
+bool MonitorSource::switchSource(QPointer<MonitorSource> &current, MonitorSource *next,
+                                 QObject *reader) {
+    if (current == next)
+        return false;
+    if (current) {
+        disconnect(current, nullptr, reader, nullptr);
+        if (current->m_watched.remove(reader))
+            emit current->watchedChanged();
+    }
+    current = next;
+    return true;
+}
+
 std::vector<Address> MonitorSource::watched() const {
     std::vector<Address> all;
     for (const auto &devices : m_watched)

@@ -20,6 +20,7 @@
 #include <QElapsedTimer>
 #include <QHash>
 #include <QObject>
+#include <QPointer>
 #include <QString>
 #include <QTimer>
 
@@ -80,6 +81,11 @@ public:
     // set is dropped when it is destroyed. watched() is the union, sorted, without repeats.
     void setWatched(QObject *reader, std::vector<Address> devices);
     std::vector<Address> watched() const;
+    // A reader moving from `current` to `next` (either may be null): leaves the old source
+    // (its signals to the reader and what the reader watched there) and points `current` at
+    // `next`. False, and nothing done, when `next` is the reader's source already.
+    static bool switchSource(QPointer<MonitorSource> &current, MonitorSource *next,
+                             QObject *reader);
 
     // History, for the timing chart: the source records chosen devices scan by scan (or poll
     // by poll) in a HistoryRecorder. A source that keeps none answers false and never calls

@@ -2,6 +2,7 @@
 
 #include "model/target/address.h"
 #include "model/target/target_lists.h"
+#include "model/tr.h"
 
 #include <QCoreApplication>
 #include <QRegularExpression>
@@ -9,10 +10,6 @@
 namespace rung::model {
 
 namespace {
-
-struct Tr {
-    Q_DECLARE_TR_FUNCTIONS(rung::model::Trigger)
-};
 
 bool isBitDevice(const Target &target, const Address &a) {
     return a.bit >= 0 || target.area(a.area).kind == AreaKind::Bit;
@@ -29,23 +26,7 @@ bool Trigger::holds(qint64 v) const {
     case Kind::Compare:
         break;
     }
-    switch (op) {
-    case CompareOp::Eq:
-        return v == value;
-    case CompareOp::Ne:
-        return v != value;
-    case CompareOp::Lt:
-        return v < value;
-    case CompareOp::Le:
-        return v <= value;
-    case CompareOp::Gt:
-        return v > value;
-    case CompareOp::Ge:
-        return v >= value;
-    case CompareOp::None:
-        break;
-    }
-    return false;
+    return compareHolds(op, v, value);
 }
 
 std::variant<Trigger, QString> parseTrigger(const Target &target, const QString &text,
@@ -53,11 +34,9 @@ std::variant<Trigger, QString> parseTrigger(const Target &target, const QString 
     // The device is everything before the condition: CPM1 writes "TIM 000" with a space.
     static const QRegularExpression edge(QStringLiteral("^(.+?)\\s*(rises|falls|↑|↓)$"),
                                          QRegularExpression::CaseInsensitiveOption);
-    static const QRegularExpression compare(
-        QStringLiteral("^(.+?)\\s*(<>|<=|>=|=|<|>)\\s*(\\S+)$"));
     const QString typed = text.trimmed();
     if (typed.isEmpty())
-        return Tr::tr("Type a condition: \"%1 rises\", \"%1 falls\" or \"%2 > 100\"")
+        return TriggerTr::tr("Type a condition: \"%1 rises\", \"%1 falls\" or \"%2 > 100\"")
             .arg(exampleDevice(target, true), exampleWord(target, 10));
     Trigger trigger;
     QString device;
@@ -67,26 +46,22 @@ std::variant<Trigger, QString> parseTrigger(const Target &target, const QString 
         trigger.kind = word == QLatin1String("rises") || word == QStringLiteral("↑")
                            ? Trigger::Kind::Rises
                            : Trigger::Kind::Falls;
-    } else if (const auto c = compare.match(typed); c.hasMatch()) {
-        device = c.captured(1);
+    } else if (const std::optional<CompareAt> c = findCompare(typed);
+               c && !typed.sliced(c->at + c->length).trimmed().isEmpty()) {
+        device = typed.first(c->at);
         trigger.kind = Trigger::Kind::Compare;
-        const QString op = c.captured(2);
-        trigger.op = op == QLatin1String("=")    ? CompareOp::Eq
-                     : op == QLatin1String("<>") ? CompareOp::Ne
-                     : op == QLatin1String("<")  ? CompareOp::Lt
-                     : op == QLatin1String("<=") ? CompareOp::Le
-                     : op == QLatin1String(">")  ? CompareOp::Gt
-                                                 : CompareOp::Ge;
-        const QString number = c.captured(3);
+        trigger.op = c->op;
+        const QString number = typed.sliced(c->at + c->length).trimmed();
         bool ok = false;
         trigger.value = number.startsWith(QLatin1String("0x"), Qt::CaseInsensitive)
                             ? number.mid(2).toLongLong(&ok, 16)
                             : number.toLongLong(&ok, 10);
         if (!ok)
-            return Tr::tr("\"%1\" is not a whole number (0x before a hexadecimal one)").arg(number);
+            return TriggerTr::tr("\"%1\" is not a whole number (0x before a hexadecimal one)")
+                .arg(number);
     } else {
-        return Tr::tr("\"%1\" is no condition: write \"%2 rises\", \"%2 falls\" or "
-                      "\"%3 > 100\"")
+        return TriggerTr::tr("\"%1\" is no condition: write \"%2 rises\", \"%2 falls\" or "
+                             "\"%3 > 100\"")
             .arg(typed, exampleDevice(target, true), exampleWord(target, 10));
     }
     const auto parsed = parseAddress(target, device.trimmed(), model);
@@ -95,7 +70,7 @@ std::variant<Trigger, QString> parseTrigger(const Target &target, const QString 
     trigger.device = std::get<Address>(parsed);
     const bool bit = isBitDevice(target, trigger.device);
     if (trigger.kind != Trigger::Kind::Compare && !bit)
-        return Tr::tr("%1 is a word: compare it with a value (\"%1 > 100\")")
+        return TriggerTr::tr("%1 is a word: compare it with a value (\"%1 > 100\")")
             .arg(formatAddress(target, trigger.device));
     return trigger;
 }

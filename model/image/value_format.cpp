@@ -1,15 +1,12 @@
 #include "model/image/value_format.h"
 #include "model/image/bcd.h"
+#include "model/tr.h"
 
 #include <QCoreApplication>
 
 namespace rung::model {
 
 namespace {
-
-struct Tr {
-    Q_DECLARE_TR_FUNCTIONS(rung::model::ValueFormat)
-};
 
 std::uint32_t widthMask(int bits) {
     return bits >= 32 ? 0xFFFFFFFFu : (1u << bits) - 1u;
@@ -43,15 +40,15 @@ std::optional<ValueFormat> valueFormatFromKey(const QString &key) {
 QString valueFormatName(ValueFormat format) {
     switch (format) {
     case ValueFormat::Decimal:
-        return Tr::tr("Decimal");
+        return ValueFormatTr::tr("Decimal");
     case ValueFormat::Signed:
-        return Tr::tr("Signed");
+        return ValueFormatTr::tr("Signed");
     case ValueFormat::Hex:
-        return Tr::tr("Hexadecimal");
+        return ValueFormatTr::tr("Hexadecimal");
     case ValueFormat::Binary:
-        return Tr::tr("Binary");
+        return ValueFormatTr::tr("Binary");
     case ValueFormat::Bcd:
-        return Tr::tr("BCD");
+        return ValueFormatTr::tr("BCD");
     }
     return {};
 }
@@ -80,7 +77,7 @@ QString formatValue(std::int32_t value, int bits, ValueFormat format) {
     }
     case ValueFormat::Bcd: {
         const std::optional<std::int64_t> decimal = fromBcd(u);
-        return decimal ? QString::number(*decimal) : Tr::tr("%1 (not BCD)").arg(hex);
+        return decimal ? QString::number(*decimal) : ValueFormatTr::tr("%1 (not BCD)").arg(hex);
     }
     }
     return {};
@@ -90,12 +87,12 @@ std::variant<std::int64_t, QString> parseValue(const QString &text, int bits, Va
     bits = bits >= 32 ? 32 : 16;
     QString t = text.trimmed();
     if (t.isEmpty())
-        return Tr::tr("Type a value");
+        return ValueFormatTr::tr("Type a value");
     const qint64 lowest = -(qint64{1} << (bits - 1));
     const qint64 highest = (qint64{1} << bits) - 1;
     const auto inRange = [&](qint64 v) -> std::variant<std::int64_t, QString> {
         if (v < lowest || v > highest)
-            return Tr::tr("%1 does not fit a %2-bit word (%3..%4)")
+            return ValueFormatTr::tr("%1 does not fit a %2-bit word (%3..%4)")
                 .arg(t)
                 .arg(bits)
                 .arg(lowest)
@@ -109,7 +106,8 @@ std::variant<std::int64_t, QString> parseValue(const QString &text, int bits, Va
         const bool hex = t.startsWith(QLatin1String("0x"), Qt::CaseInsensitive);
         const qint64 v = hex ? t.mid(2).toLongLong(&ok, 16) : t.toLongLong(&ok, 10);
         if (!ok)
-            return Tr::tr("\"%1\" is not a whole number (0x before a hexadecimal one)").arg(t);
+            return ValueFormatTr::tr("\"%1\" is not a whole number (0x before a hexadecimal one)")
+                .arg(t);
         return inRange(v);
     }
     case ValueFormat::Hex: {
@@ -121,7 +119,7 @@ std::variant<std::int64_t, QString> parseValue(const QString &text, int bits, Va
             }
         const qint64 v = digits.size() <= bits / 4 ? digits.toLongLong(&ok, 16) : -1;
         if (!ok || digits.startsWith(QLatin1Char('-')) || digits.startsWith(QLatin1Char('+')))
-            return Tr::tr("\"%1\" is not a hexadecimal value of at most %2 digits")
+            return ValueFormatTr::tr("\"%1\" is not a hexadecimal value of at most %2 digits")
                 .arg(t)
                 .arg(bits / 4);
         return inRange(v);
@@ -131,7 +129,9 @@ std::variant<std::int64_t, QString> parseValue(const QString &text, int bits, Va
         digits.remove(QLatin1Char(' ')).remove(QLatin1Char('_'));
         const qint64 v = digits.size() <= bits ? digits.toLongLong(&ok, 2) : -1;
         if (!ok || digits.startsWith(QLatin1Char('-')) || digits.startsWith(QLatin1Char('+')))
-            return Tr::tr("\"%1\" is not a binary value of at most %2 digits").arg(t).arg(bits);
+            return ValueFormatTr::tr("\"%1\" is not a binary value of at most %2 digits")
+                .arg(t)
+                .arg(bits);
         return inRange(v);
     }
     case ValueFormat::Bcd: {
@@ -145,13 +145,13 @@ std::variant<std::int64_t, QString> parseValue(const QString &text, int bits, Va
             v = v * 16 + (c.unicode() - '0');
         }
         if (!ok)
-            return Tr::tr("\"%1\" is not a BCD value: at most %2 decimal digits")
+            return ValueFormatTr::tr("\"%1\" is not a BCD value: at most %2 decimal digits")
                 .arg(t)
                 .arg(bits / 4);
         return inRange(v);
     }
     }
-    return Tr::tr("Type a value");
+    return ValueFormatTr::tr("Type a value");
 }
 
 } // namespace rung::model

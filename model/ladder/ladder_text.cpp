@@ -2,6 +2,7 @@
 
 #include "model/target/address.h"
 #include "model/target/target_lists.h"
+#include "model/tr.h"
 
 #include <QCoreApplication>
 #include <QRegularExpression>
@@ -22,10 +23,6 @@
 namespace rung::model {
 
 namespace {
-
-struct Tr {
-    Q_DECLARE_TR_FUNCTIONS(rung::model::LadderText)
-};
 
 QChar markOf(const Contact &c) {
     if (c.invert)
@@ -194,17 +191,19 @@ private:
         const QStringList parts = m_lines[m_at].simplified().split(QLatin1Char(' '));
         if (parts.size() != 4 || parts[0] != QLatin1String("LADDER") ||
             parts[2] != QLatin1String("WIDTH")) {
-            error(m_at, 0, Tr::tr("A ladder text starts with \"LADDER <target> WIDTH <n>\""));
+            error(m_at, 0,
+                  LadderTextTr::tr("A ladder text starts with \"LADDER <target> WIDTH <n>\""));
             return false;
         }
         if (parts[1].compare(m_target.id, Qt::CaseInsensitive) != 0) {
-            error(m_at, 7, Tr::tr("This ladder is for %1, not %2").arg(parts[1], m_target.id));
+            error(m_at, 7,
+                  LadderTextTr::tr("This ladder is for %1, not %2").arg(parts[1], m_target.id));
             return false;
         }
         bool ok = false;
         m_width = parts[3].toInt(&ok);
         if (!ok || m_width < 5 || m_width > 200) {
-            error(m_at, 0, Tr::tr("The cell width must be a number from 5 to 200"));
+            error(m_at, 0, LadderTextTr::tr("The cell width must be a number from 5 to 200"));
             return false;
         }
         ++m_at;
@@ -221,7 +220,7 @@ private:
         if (parts.size() != 6 || parts[0] != QLatin1String("RUNG") ||
             parts[2] != QLatin1String("ROWS") || parts[4] != QLatin1String("COLUMNS") || !okRows ||
             !okColumns || rows < 1 || rows > 1000 || columns < 0 || columns > 1000) {
-            error(m_at, 0, Tr::tr("Expected \"RUNG <n> ROWS <rows> COLUMNS <columns>\""));
+            error(m_at, 0, LadderTextTr::tr("Expected \"RUNG <n> ROWS <rows> COLUMNS <columns>\""));
             return false;
         }
         ++m_at;
@@ -238,7 +237,8 @@ private:
         int boxRow = -1;
         for (int r = 0; r < rows; ++r) {
             if (m_at >= m_lines.size()) {
-                error(headerLine, 0, Tr::tr("The rung has fewer rows than its header says"));
+                error(headerLine, 0,
+                      LadderTextTr::tr("The rung has fewer rows than its header says"));
                 return false;
             }
             if (!readRow(rung, r, &boxRow))
@@ -246,7 +246,8 @@ private:
             ++m_at;
             if (r + 1 < rows) {
                 if (m_at >= m_lines.size()) {
-                    error(headerLine, 0, Tr::tr("The rung has fewer rows than its header says"));
+                    error(headerLine, 0,
+                          LadderTextTr::tr("The rung has fewer rows than its header says"));
                     return false;
                 }
                 readConnector(rung, r);
@@ -260,7 +261,7 @@ private:
     bool readRow(Rung &rung, int r, int *boxRow) {
         const QString &line = m_lines[m_at];
         if (!line.startsWith(QLatin1Char('|'))) {
-            error(m_at, 0, Tr::tr("A row starts with the left rail '|'"));
+            error(m_at, 0, LadderTextTr::tr("A row starts with the left rail '|'"));
             return false;
         }
         const int stride = m_width + 1;
@@ -275,7 +276,7 @@ private:
             }
             if (!cell.startsWith(QLatin1String("-[")) || !cell.endsWith(QLatin1String("]-"))) {
                 error(m_at, at,
-                      Tr::tr("A cell is empty, a wire, or a contact \"-[ %1 ]-\"")
+                      LadderTextTr::tr("A cell is empty, a wire, or a contact \"-[ %1 ]-\"")
                           .arg(exampleDevice(m_target)));
                 return false;
             }
@@ -294,14 +295,15 @@ private:
         if (!output.startsWith(QLatin1Char('(')) || !output.endsWith(QLatin1Char(')'))) {
             const InstructionSpec *coil = m_target.findInstruction(Op::Out);
             error(m_at, outputAt,
-                  Tr::tr("An output is written in parentheses: (%1 %2)")
+                  LadderTextTr::tr("An output is written in parentheses: (%1 %2)")
                       .arg(coil ? coil->mnemonic : QString(), exampleDevice(m_target, true)));
             return false;
         }
         const QString inner = output.mid(1, output.size() - 2);
         if (inner == QLatin1String("^")) {
             if (*boxRow < 0) {
-                error(m_at, outputAt, Tr::tr("(^) marks a further input of a box above it"));
+                error(m_at, outputAt,
+                      LadderTextTr::tr("(^) marks a further input of a box above it"));
                 return false;
             }
             rung.inputRows.push_back(r);
@@ -311,7 +313,7 @@ private:
         if (!parsed.ok() || parsed.list.instructions.size() != 1) {
             const ParseError e =
                 parsed.errors.empty()
-                    ? ParseError{1, 1, Tr::tr("One output instruction is expected")}
+                    ? ParseError{1, 1, LadderTextTr::tr("One output instruction is expected")}
                     : parsed.errors.front();
             error(m_at, outputAt + e.column, e.message);
             return false;
@@ -350,7 +352,7 @@ private:
                 contact->mode = ContactMode::Falling;
             else if (!body.isEmpty()) {
                 error(m_at, column + 1,
-                      Tr::tr("'~%1': a power-flow element is ~, ~P or ~N").arg(body));
+                      LadderTextTr::tr("'~%1': a power-flow element is ~, ~P or ~N").arg(body));
                 return false;
             }
             return true;
@@ -362,27 +364,22 @@ private:
         else if (mark == QLatin1Char('N'))
             contact->mode = ContactMode::Falling;
         else if (mark != QLatin1Char(' ')) {
-            error(m_at, column,
-                  Tr::tr("'%1' is not a contact mark (' ', '/', 'P', 'N', '~')").arg(mark));
+            error(
+                m_at, column,
+                LadderTextTr::tr("'%1' is not a contact mark (' ', '/', 'P', 'N', '~')").arg(mark));
             return false;
         }
         if (body.isEmpty()) {
-            error(m_at, column, Tr::tr("The contact has no device"));
+            error(m_at, column, LadderTextTr::tr("The contact has no device"));
             return false;
         }
-        const std::pair<const char *, CompareOp> symbols[] = {
-            {"<>", CompareOp::Ne}, {"<=", CompareOp::Le}, {">=", CompareOp::Ge},
-            {"<", CompareOp::Lt},  {">", CompareOp::Gt},  {"=", CompareOp::Eq}};
-        for (const auto &[symbol, op] : symbols) {
-            const qsizetype at = body.indexOf(QLatin1String(symbol));
-            if (at <= 0)
-                continue;
+        if (const std::optional<CompareAt> c = findCompare(body)) {
             Operand a;
             Operand b;
-            if (!readOperand(body.left(at), column + 1, &a) ||
-                !readOperand(body.mid(at + qstrlen(symbol)), column + 1 + static_cast<int>(at), &b))
+            if (!readOperand(body.left(c->at), column + 1, &a) ||
+                !readOperand(body.mid(c->at + c->length), column + 1 + static_cast<int>(c->at), &b))
                 return false;
-            contact->compare = op;
+            contact->compare = c->op;
             contact->operands = {a, b};
             return true;
         }
@@ -391,7 +388,8 @@ private:
             return false;
         if (o.modified()) {
             // A contact reads one bit: K4M0 is a word, an index modifies words only.
-            error(m_at, column + 1, Tr::tr("%1 is a word; a contact takes a bit device").arg(body));
+            error(m_at, column + 1,
+                  LadderTextTr::tr("%1 is a word; a contact takes a bit device").arg(body));
             return false;
         }
         contact->operands = {o};
@@ -460,7 +458,7 @@ std::optional<Contact> contactFromText(const Target &target, const QString &text
     std::optional<Contact> contact =
         TextReader(target, model, QString()).oneContact(QString(mark) + body, &why);
     if (!contact && error)
-        *error = why.isEmpty() ? Tr::tr("'%1' is not a contact").arg(text) : why;
+        *error = why.isEmpty() ? LadderTextTr::tr("'%1' is not a contact").arg(text) : why;
     return contact;
 }
 

@@ -76,15 +76,6 @@ int distance(const QString &a, const QString &b) {
     return row.back();
 }
 
-struct CompareSymbol {
-    const char *text;
-    CompareOp op;
-};
-// Longest first, so "<=" is not read as "<".
-constexpr CompareSymbol kCompareSymbols[] = {
-    {"<>", CompareOp::Ne}, {"<=", CompareOp::Le}, {">=", CompareOp::Ge}, {"=<", CompareOp::Le},
-    {"=>", CompareOp::Ge}, {"<", CompareOp::Lt},  {">", CompareOp::Gt},  {"=", CompareOp::Eq}};
-
 class Parser {
     Q_DECLARE_TR_FUNCTIONS(rung::model::InstructionList)
 
@@ -347,18 +338,15 @@ private:
             ins->spec = s;
             return readPair(ins, token, at, 1, lineNumber);
         }
-        for (const CompareSymbol &c : kCompareSymbols) {
-            const qsizetype at = text.indexOf(QLatin1String(c.text));
-            if (at <= 0)
-                continue;
-            const InstructionSpec *s = infixVariant(base, c.op, TransferOp::None);
+        if (const std::optional<CompareAt> c = findCompare(text)) {
+            const InstructionSpec *s = infixVariant(base, c->op, TransferOp::None);
             if (!s) {
-                error(lineNumber, token.column + static_cast<int>(at),
+                error(lineNumber, token.column + static_cast<int>(c->at),
                       tr("%1 cannot compare values").arg(base->mnemonic));
                 return false;
             }
             ins->spec = s;
-            return readPair(ins, token, at, static_cast<int>(qstrlen(c.text)), lineNumber);
+            return readPair(ins, token, c->at, static_cast<int>(c->length), lineNumber);
         }
         return true; // not infix: the caller reads it as a plain operand
     }

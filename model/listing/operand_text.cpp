@@ -1,4 +1,5 @@
 #include "model/listing/il.h"
+#include "model/tr.h"
 
 #include <QCoreApplication>
 
@@ -10,10 +11,6 @@
 namespace rung::model {
 
 namespace {
-
-struct Tr {
-    Q_DECLARE_TR_FUNCTIONS(rung::model::InstructionList)
-};
 
 // Where the parts of an operand are: [baseStart, baseEnd) the device or constant, the digit
 // count before it, the index register after it (indexStart < 0: none).
@@ -157,24 +154,26 @@ std::variant<Operand, AddressError> parseOperand(const Target &target, QStringVi
     if (p.digitGroup) {
         const int most = target.constants.digitGroups;
         if (p.digits < 1 || p.digits > most)
-            return AddressError{Tr::tr("%1: K%2 is no digit count here; K1..K%3 (groups of 4 "
-                                       "bits) fit a word")
-                                    .arg(shown)
-                                    .arg(p.digits)
-                                    .arg(most),
-                                static_cast<int>(lead)};
+            return AddressError{
+                InstructionListTr::tr("%1: K%2 is no digit count here; K1..K%3 (groups of 4 "
+                                      "bits) fit a word")
+                    .arg(shown)
+                    .arg(p.digits)
+                    .arg(most),
+                static_cast<int>(lead)};
         auto a = parseAddress(target, base, model);
         if (const AddressError *e = std::get_if<AddressError>(&a))
             return shifted(*e, lead + p.baseStart);
         const Address first = std::get<Address>(a);
         const Area &area = target.area(first.area);
         if (area.kind != AreaKind::Bit)
-            return AddressError{Tr::tr("%1: K%2 takes a bit device (the first of its bits), not "
-                                       "%3")
-                                    .arg(shown)
-                                    .arg(p.digits)
-                                    .arg(base.toString()),
-                                static_cast<int>(lead + p.baseStart)};
+            return AddressError{
+                InstructionListTr::tr("%1: K%2 takes a bit device (the first of its bits), not "
+                                      "%3")
+                    .arg(shown)
+                    .arg(p.digits)
+                    .arg(base.toString()),
+                static_cast<int>(lead + p.baseStart)};
         const int bits = p.digits * 4;
         for (int k = 1; k < bits; ++k)
             if (!offsetAddress(target, first, k, model).valid()) {
@@ -182,11 +181,12 @@ std::variant<Operand, AddressError> parseOperand(const Target &target, QStringVi
                     formatAddress(target, Address{first.area, first.index + bits - 1, -1});
                 const QString missing =
                     formatAddress(target, Address{first.area, first.index + k, -1});
-                return AddressError{Tr::tr("%1 takes the %2 bits %3..%4, but %5 does not exist")
-                                        .arg(shown)
-                                        .arg(bits)
-                                        .arg(formatAddress(target, first), last, missing),
-                                    static_cast<int>(lead + p.baseStart)};
+                return AddressError{
+                    InstructionListTr::tr("%1 takes the %2 bits %3..%4, but %5 does not exist")
+                        .arg(shown)
+                        .arg(bits)
+                        .arg(formatAddress(target, first), last, missing),
+                    static_cast<int>(lead + p.baseStart)};
             }
         o.kind = Operand::Kind::Device;
         o.address = first;
@@ -196,12 +196,14 @@ std::variant<Operand, AddressError> parseOperand(const Target &target, QStringVi
         if (const Address *address = std::get_if<Address>(&a)) {
             const Area &area = target.area(address->area);
             if (area.indexRegister)
-                return AddressError{Tr::tr("%1: an index register cannot be indexed").arg(shown),
-                                    static_cast<int>(lead)};
+                return AddressError{
+                    InstructionListTr::tr("%1: an index register cannot be indexed").arg(shown),
+                    static_cast<int>(lead)};
             if (area.kind == AreaKind::Bit || address->bit >= 0)
                 return AddressError{
-                    Tr::tr("%1: index registers modify words (D0E0, K4M0E0) and K constants, "
-                           "not the bit %2")
+                    InstructionListTr::tr(
+                        "%1: index registers modify words (D0E0, K4M0E0) and K constants, "
+                        "not the bit %2")
                         .arg(shown, base.toString()),
                     static_cast<int>(lead)};
             o.kind = Operand::Kind::Device;
@@ -212,9 +214,10 @@ std::variant<Operand, AddressError> parseOperand(const Target &target, QStringVi
             if (!constant)
                 return shifted(std::get<AddressError>(a), lead + p.baseStart);
             if (constant->style != Constant::Style::Decimal)
-                return AddressError{Tr::tr("%1: index registers modify K constants, not %2")
-                                        .arg(shown, base.toString()),
-                                    static_cast<int>(lead)};
+                return AddressError{
+                    InstructionListTr::tr("%1: index registers modify K constants, not %2")
+                        .arg(shown, base.toString()),
+                    static_cast<int>(lead)};
             o.kind = Operand::Kind::Constant;
             o.constant = *constant;
         }
@@ -226,7 +229,7 @@ std::variant<Operand, AddressError> parseOperand(const Target &target, QStringVi
             return shifted(*e, lead + p.indexStart);
         const Address index = std::get<Address>(a);
         if (!target.area(index.area).indexRegister)
-            return AddressError{Tr::tr("%1: %2 is not an index register (%3)")
+            return AddressError{InstructionListTr::tr("%1: %2 is not an index register (%3)")
                                     .arg(shown, indexText.toString(), indexRegisterNames(target)),
                                 static_cast<int>(lead + p.indexStart)};
         o.index = index;

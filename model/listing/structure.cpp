@@ -1,4 +1,5 @@
 #include "model/listing/structure.h"
+#include "model/tr.h"
 
 #include <QCoreApplication>
 
@@ -10,15 +11,13 @@ namespace rung::model {
 namespace {
 
 // The messages are the checks' (NE*, SL001): one text whichever room reports it.
-struct Tr {
-    Q_DECLARE_TR_FUNCTIONS(rung::model::Checks)
-};
 
 // The message, and the PLC console's own text for it where the target's manual gives one
 // (VPC "IL (JMP) missing"): a CPM1 user reads no VPC console text.
 QString withConsole(const QString &message, const char *console) {
-    return console ? Tr::tr("%1 (the PLC says \"%2\")").arg(message, QString::fromLatin1(console))
-                   : message;
+    return console
+               ? ChecksTr::tr("%1 (the PLC says \"%2\")").arg(message, QString::fromLatin1(console))
+               : message;
 }
 
 // After an output the accumulator still holds the branch point's condition: a block loaded
@@ -68,14 +67,14 @@ void pairSubroutinesAndSteps(const InstructionList &list, int last, BlockPairs &
         const Op op = at(i).op();
         if (steps >= 0 && (op == Op::Interlock || op == Op::Jump || op == Op::SubroutineStart))
             add("SP003", i,
-                Tr::tr("%1 cannot stand inside a step (STEP(08) .. STEP(08))").arg(name(i)));
+                ChecksTr::tr("%1 cannot stand inside a step (STEP(08) .. STEP(08))").arg(name(i)));
         switch (op) {
         case Op::SubroutineStart: {
             mainDone = true;
             outside = false;
             if (open >= 0)
                 add("SB003", i,
-                    Tr::tr("%1 %2 inside subroutine %3: close that one with %4 first")
+                    ChecksTr::tr("%1 %2 inside subroutine %3: close that one with %4 first")
                         .arg(name(i))
                         .arg(number(i))
                         .arg(number(open))
@@ -84,7 +83,7 @@ void pairSubroutinesAndSteps(const InstructionList &list, int last, BlockPairs &
             const auto [first, fresh] = defined.emplace(number(i), i);
             if (!fresh)
                 add("SB002", i,
-                    Tr::tr("A second %1 %2: each subroutine number is defined once")
+                    ChecksTr::tr("A second %1 %2: each subroutine number is defined once")
                         .arg(name(i))
                         .arg(number(i)),
                     first->second);
@@ -94,7 +93,8 @@ void pairSubroutinesAndSteps(const InstructionList &list, int last, BlockPairs &
         case Op::SubroutineReturn:
             if (open < 0) {
                 add("SB003", i,
-                    Tr::tr("%1 without %2 before it").arg(name(i), specOf(Op::SubroutineStart)));
+                    ChecksTr::tr("%1 without %2 before it")
+                        .arg(name(i), specOf(Op::SubroutineStart)));
             } else {
                 pairs.partner[static_cast<std::size_t>(open)] = i;
                 pairs.partner[static_cast<std::size_t>(i)] = open;
@@ -107,7 +107,7 @@ void pairSubroutinesAndSteps(const InstructionList &list, int last, BlockPairs &
                     steps = i;
             } else if (steps < 0) {
                 add("SP002", i,
-                    Tr::tr("%1 without a control bit ends the steps, but no step is open")
+                    ChecksTr::tr("%1 without a control bit ends the steps, but no step is open")
                         .arg(name(i)));
             } else {
                 steps = -1;
@@ -123,25 +123,27 @@ void pairSubroutinesAndSteps(const InstructionList &list, int last, BlockPairs &
             !outside) {
             outside = true;
             add("SB004", i,
-                Tr::tr("%1 is after the main program and outside the subroutines: it never runs")
+                ChecksTr::tr(
+                    "%1 is after the main program and outside the subroutines: it never runs")
                     .arg(name(i)),
                 -1, true);
         }
     }
     if (open >= 0)
         add("SB003", open,
-            Tr::tr("%1 %2 is not closed with %3")
+            ChecksTr::tr("%1 %2 is not closed with %3")
                 .arg(name(open))
                 .arg(number(open))
                 .arg(specOf(Op::SubroutineReturn)));
     if (steps >= 0)
         add("SP001", steps,
-            Tr::tr("The steps are not closed with %1 without a control bit").arg(name(steps)));
+            ChecksTr::tr("The steps are not closed with %1 without a control bit")
+                .arg(name(steps)));
     for (int c : calls) {
         const auto it = defined.find(number(c));
         if (it == defined.end())
             add("SB001", c,
-                Tr::tr("%1 %2: there is no %3 %2 before END")
+                ChecksTr::tr("%1 %2: there is no %3 %2 before END")
                     .arg(name(c))
                     .arg(number(c))
                     .arg(specOf(Op::SubroutineStart)));
@@ -236,20 +238,20 @@ BlockPairs pairBlocks(const InstructionList &list) {
         switch (at(i).op()) {
         case Op::Interlock:
             if (il >= 0)
-                add("NE001", i, Tr::tr("IL inside IL: close the first with ILC"), false);
+                add("NE001", i, ChecksTr::tr("IL inside IL: close the first with ILC"), false);
             il = i;
             break;
         case Op::InterlockClear:
             if (il < 0) {
                 add("NE002", i,
-                    withConsole(Tr::tr("%1 without %2").arg(name(i), opName(Op::Interlock)),
+                    withConsole(ChecksTr::tr("%1 without %2").arg(name(i), opName(Op::Interlock)),
                                 t.console.blockMissing),
                     false);
             } else {
                 if (!jumps.empty() && jumps.back() > il)
                     add("NE005", i,
-                        withConsole(Tr::tr("IL and JMP overlap: the jump opened inside the "
-                                           "interlock is still open"),
+                        withConsole(ChecksTr::tr("IL and JMP overlap: the jump opened inside the "
+                                                 "interlock is still open"),
                                     t.console.interlace),
                         false);
                 pair(il, i);
@@ -261,7 +263,7 @@ BlockPairs pairBlocks(const InstructionList &list) {
                 const qint64 n = number(i);
                 if (n >= t.limits.jumpLabels)
                     add("NE006", i,
-                        Tr::tr("Jump number %1 is beyond 00..%2")
+                        ChecksTr::tr("Jump number %1 is beyond 00..%2")
                             .arg(n)
                             .arg(t.limits.jumpLabels - 1),
                         true);
@@ -270,7 +272,7 @@ BlockPairs pairBlocks(const InstructionList &list) {
                 break;
             }
             if (!jumps.empty())
-                add("NE003", i, Tr::tr("JMP inside JMP: close the first jump"), true);
+                add("NE003", i, ChecksTr::tr("JMP inside JMP: close the first jump"), true);
             jumps.push_back(i);
             break;
         case Op::JumpEnd:
@@ -278,30 +280,30 @@ BlockPairs pairBlocks(const InstructionList &list) {
                 const qint64 n = number(i);
                 if (const auto seen = ends.find(n); seen != ends.end())
                     add("NE007", i,
-                        Tr::tr("A second %1 %2: several JMP may share a number, only one JME")
+                        ChecksTr::tr("A second %1 %2: several JMP may share a number, only one JME")
                             .arg(name(i))
                             .arg(n),
                         true, seen->second);
                 else
                     ends.emplace(n, i);
                 if (const auto first = firstJumpOf.find(n); first == firstJumpOf.end())
-                    add("NE004", i, Tr::tr("%1 %2 without a JMP before it").arg(name(i)).arg(n),
-                        true);
+                    add("NE004", i,
+                        ChecksTr::tr("%1 %2 without a JMP before it").arg(name(i)).arg(n), true);
                 else if (pairs.partner[static_cast<std::size_t>(i)] < 0)
                     pairs.partner[static_cast<std::size_t>(i)] = first->second;
                 break;
             }
             if (jumps.empty()) {
                 add("NE004", i,
-                    withConsole(Tr::tr("%1 without %2").arg(name(i), opName(Op::Jump)),
+                    withConsole(ChecksTr::tr("%1 without %2").arg(name(i), opName(Op::Jump)),
                                 t.console.blockMissing),
                     true);
                 break;
             }
             if (il > jumps.back())
                 add("NE005", i,
-                    withConsole(Tr::tr("IL and JMP overlap: the interlock opened inside the "
-                                       "jump is still open"),
+                    withConsole(ChecksTr::tr("IL and JMP overlap: the interlock opened inside the "
+                                             "jump is still open"),
                                 t.console.interlace),
                     true);
             pair(jumps.back(), i);
@@ -318,10 +320,10 @@ BlockPairs pairBlocks(const InstructionList &list) {
         }
     }
     if (il >= 0)
-        add("NE002", il, Tr::tr("IL without ILC"), false);
+        add("NE002", il, ChecksTr::tr("IL without ILC"), false);
     for (int j : jumps)
         add("NE004", j,
-            Tr::tr("JMP without its end (%1)")
+            ChecksTr::tr("JMP without its end (%1)")
                 .arg(t.findInstruction(Op::JumpEnd) ? t.findInstruction(Op::JumpEnd)->mnemonic
                                                     : QString()),
             true);
@@ -330,14 +332,14 @@ BlockPairs pairBlocks(const InstructionList &list) {
         const qint64 n = number(j);
         const auto e = ends.find(n);
         if (e == ends.end())
-            add("NE004", j, Tr::tr("JMP %1 has no JME %1").arg(n), true);
+            add("NE004", j, ChecksTr::tr("JMP %1 has no JME %1").arg(n), true);
         else if (e->second < j)
-            add("NE004", j, Tr::tr("JMP %1 has no JME %1 after it").arg(n), true, e->second);
+            add("NE004", j, ChecksTr::tr("JMP %1 has no JME %1 after it").arg(n), true, e->second);
         else
             pairs.partner[static_cast<std::size_t>(j)] = e->second;
     }
     if (stl >= 0)
-        add("SL001", stl, Tr::tr("The step ladder is not closed with RET"), false);
+        add("SL001", stl, ChecksTr::tr("The step ladder is not closed with RET"), false);
     pairSubroutinesAndSteps(list, last, pairs);
     return pairs;
 }

@@ -1,4 +1,5 @@
 #include "model/project/file_read.h"
+#include "model/tr.h"
 
 #include <QCoreApplication>
 #include <QFile>
@@ -6,24 +7,18 @@
 
 namespace rung::model {
 
-namespace {
-struct Tr {
-    Q_DECLARE_TR_FUNCTIONS(rung::model::Project) // the project's texts, first said there
-};
-} // namespace
-
 QString readFailure(ReadStatus status, const QString &path, qint64 limit, const QString &ioError) {
     switch (status) {
     case ReadStatus::CannotOpen:
-        return Tr::tr("%1: cannot open the file (%2)").arg(path, ioError);
+        return ProjectTr::tr("%1: cannot open the file (%2)").arg(path, ioError);
     case ReadStatus::TooLarge:
         // A regular file says how large it is; a device or a pipe only that it goes on.
         if (const qint64 size = QFileInfo(path).size(); size > limit)
-            return Tr::tr("%1: the file is %2 MB; the most Rung Studio reads is %3 MB")
+            return ProjectTr::tr("%1: the file is %2 MB; the most Rung Studio reads is %3 MB")
                 .arg(path)
                 .arg(size / (1024 * 1024))
                 .arg(limit / (1024 * 1024));
-        return Tr::tr("%1: the file is larger than %2 MB, the most Rung Studio reads")
+        return ProjectTr::tr("%1: the file is larger than %2 MB, the most Rung Studio reads")
             .arg(path)
             .arg(limit / (1024 * 1024));
     case ReadStatus::Ok:

@@ -2,6 +2,7 @@
 
 #include "model/ladder/ladder_text.h"
 #include "model/project/file_read.h"
+#include "model/tr.h"
 
 #include <QCoreApplication>
 #include <QFile>
@@ -19,10 +20,6 @@
 namespace rung::model {
 
 namespace {
-
-struct Tr {
-    Q_DECLARE_TR_FUNCTIONS(rung::model::Project)
-};
 
 constexpr qint64 kMaxProjectBytes = 64 * 1024 * 1024;
 constexpr double kMaxSetValue = 2147483647.0; // the widest set value is a 32-bit register
@@ -208,29 +205,32 @@ public:
                     ++column;
                 }
             }
-            return fail(Tr::tr("Line %1, column %2 (byte %3): the file is not valid JSON (%4)")
-                            .arg(line)
-                            .arg(column)
-                            .arg(parseError.offset)
-                            .arg(parseError.errorString()));
+            return fail(
+                ProjectTr::tr("Line %1, column %2 (byte %3): the file is not valid JSON (%4)")
+                    .arg(line)
+                    .arg(column)
+                    .arg(parseError.offset)
+                    .arg(parseError.errorString()));
         }
         if (!doc.isObject())
-            return fail(
-                Tr::tr("The file is JSON but not a Rung Studio project (no top-level object)"));
+            return fail(ProjectTr::tr(
+                "The file is JSON but not a Rung Studio project (no top-level object)"));
         const QJsonObject root = doc.object();
         if (root.value(QStringLiteral("format")).toString() != QLatin1String(kFormat))
             return fail(
-                Tr::tr("The file is JSON but not a Rung Studio project (\"format\" is not \"%1\")")
+                ProjectTr::tr(
+                    "The file is JSON but not a Rung Studio project (\"format\" is not \"%1\")")
                     .arg(QLatin1String(kFormat)));
         const int schema = root.value(QStringLiteral("schema")).toInt(-1);
         if (schema > kProjectSchemaVersion)
             return fail(
-                Tr::tr("The project was written by a newer Rung Studio (schema %1); this version "
-                       "reads schema %2 and older")
+                ProjectTr::tr(
+                    "The project was written by a newer Rung Studio (schema %1); this version "
+                    "reads schema %2 and older")
                     .arg(schema)
                     .arg(kProjectSchemaVersion));
         if (schema < 1)
-            return fail(Tr::tr("\"schema\" must be a positive number"));
+            return fail(ProjectTr::tr("\"schema\" must be a positive number"));
         if (!expect(root, "target", QJsonValue::String, QString()) ||
             !expect(root, "model", QJsonValue::String, QString()) ||
             !expect(root, "rungs", QJsonValue::Array, QString()) ||
@@ -244,12 +244,12 @@ public:
         const QString targetId = root.value(QStringLiteral("target")).toString();
         p.target = Target::byId(targetId);
         if (!p.target)
-            return fail(Tr::tr("\"target\": unknown PLC family \"%1\"").arg(targetId));
+            return fail(ProjectTr::tr("\"target\": unknown PLC family \"%1\"").arg(targetId));
         p.model = root.value(QStringLiteral("model")).toString();
         const ModelVariant *model = p.target->model(p.model);
         if (!p.model.isEmpty() && !model)
-            return fail(
-                Tr::tr("\"model\": %1 has no model \"%2\"").arg(p.target->displayName, p.model));
+            return fail(ProjectTr::tr("\"model\": %1 has no model \"%2\"")
+                            .arg(p.target->displayName, p.model));
         if (p.model.isEmpty())
             p.model = p.target->defaultModel().name;
         p.program.target = p.target;
@@ -264,8 +264,8 @@ public:
         for (qsizetype i = 0; i < symbols.size(); ++i) {
             const QString where = QStringLiteral("symbols[%1]").arg(i);
             if (!symbols[i].isObject())
-                return fail(
-                    Tr::tr("%1: an object with \"device\" and \"name\" is expected").arg(where));
+                return fail(ProjectTr::tr("%1: an object with \"device\" and \"name\" is expected")
+                                .arg(where));
             const QJsonObject s = symbols[i].toObject();
             if (!expect(s, "device", QJsonValue::String, where) ||
                 !expect(s, "name", QJsonValue::String, where) ||
@@ -287,17 +287,18 @@ public:
             // Range-checked before the cast: converting an out-of-range double is undefined.
             const double v = it.value().toDouble();
             if (!it.value().isDouble() || v != std::floor(v) || std::fabs(v) > kMaxSetValue)
-                return fail(Tr::tr("setValues.%1: a whole number between -%2 and %2 is expected")
-                                .arg(it.key())
-                                .arg(kMaxSetValue, 0, 'f', 0));
+                return fail(
+                    ProjectTr::tr("setValues.%1: a whole number between -%2 and %2 is expected")
+                        .arg(it.key())
+                        .arg(kMaxSetValue, 0, 'f', 0));
             p.setValues[a] = static_cast<qint64>(v);
         }
         const QJsonArray watch = root.value(QStringLiteral("watchLists")).toArray();
         for (qsizetype i = 0; i < watch.size(); ++i) {
             const QString where = QStringLiteral("watchLists[%1]").arg(i);
             if (!watch[i].isObject())
-                return fail(
-                    Tr::tr("%1: an object with \"name\" and \"devices\" is expected").arg(where));
+                return fail(ProjectTr::tr("%1: an object with \"name\" and \"devices\" is expected")
+                                .arg(where));
             const QJsonObject w = watch[i].toObject();
             if (!expect(w, "name", QJsonValue::String, where) ||
                 !expect(w, "devices", QJsonValue::Array, where) ||
@@ -308,17 +309,19 @@ public:
             const QJsonArray devices = w.value(QStringLiteral("devices")).toArray();
             for (qsizetype d = 0; d < devices.size(); ++d) {
                 if (!devices[d].isString())
-                    return fail(
-                        Tr::tr("%1.devices[%2]: a device name is expected").arg(where).arg(d));
+                    return fail(ProjectTr::tr("%1.devices[%2]: a device name is expected")
+                                    .arg(where)
+                                    .arg(d));
                 list.devices << devices[d].toString();
             }
             const QJsonObject formats = w.value(QStringLiteral("formats")).toObject();
             for (auto it = formats.begin(); it != formats.end(); ++it) {
                 const auto format = valueFormatFromKey(it.value().toString());
                 if (!format)
-                    return fail(Tr::tr("%1.formats.%2: \"%3\" is no format (dec, signed, hex, "
-                                       "bin, bcd)")
-                                    .arg(where, it.key(), it.value().toString()));
+                    return fail(
+                        ProjectTr::tr("%1.formats.%2: \"%3\" is no format (dec, signed, hex, "
+                                      "bin, bcd)")
+                            .arg(where, it.key(), it.value().toString()));
                 list.formats[it.key()] = *format;
             }
             p.watchLists.push_back(list);
@@ -328,8 +331,8 @@ public:
         for (qsizetype i = 0; i < pending.size(); ++i) {
             const QString where = QStringLiteral("pendingSymbols[%1]").arg(i);
             if (!pending[i].isObject())
-                return fail(
-                    Tr::tr("%1: an object with \"device\" and \"name\" is expected").arg(where));
+                return fail(ProjectTr::tr("%1: an object with \"device\" and \"name\" is expected")
+                                .arg(where));
             const QJsonObject s = pending[i].toObject();
             if (!expect(s, "device", QJsonValue::String, where) ||
                 !expect(s, "name", QJsonValue::String, where) ||
@@ -353,15 +356,15 @@ private:
     static QString typeName(QJsonValue::Type type) {
         switch (type) {
         case QJsonValue::String:
-            return Tr::tr("a string");
+            return ProjectTr::tr("a string");
         case QJsonValue::Array:
-            return Tr::tr("an array");
+            return ProjectTr::tr("an array");
         case QJsonValue::Object:
-            return Tr::tr("an object");
+            return ProjectTr::tr("an object");
         case QJsonValue::Double:
-            return Tr::tr("a number");
+            return ProjectTr::tr("a number");
         default:
-            return Tr::tr("another value");
+            return ProjectTr::tr("another value");
         }
     }
 
@@ -375,7 +378,7 @@ private:
         const QString path = where.isEmpty()
                                  ? QLatin1String(key)
                                  : QStringLiteral("%1.%2").arg(where, QLatin1String(key));
-        fail(Tr::tr("%1: %2 is expected").arg(path, typeName(type)));
+        fail(ProjectTr::tr("%1: %2 is expected").arg(path, typeName(type)));
         return false;
     }
 
@@ -392,7 +395,7 @@ private:
     bool readRung(const Target &t, const ModelVariant *model, const QJsonValue &value,
                   const QString &where, Rung *rung) {
         if (!value.isObject()) {
-            fail(Tr::tr("%1: a rung object is expected").arg(where));
+            fail(ProjectTr::tr("%1: a rung object is expected").arg(where));
             return false;
         }
         const QJsonObject o = value.toObject();
@@ -404,14 +407,14 @@ private:
         const int rows = o.value(QStringLiteral("rows")).toInt(-1);
         const int columns = o.value(QStringLiteral("columns")).toInt(-1);
         if (rows < 1 || rows > 1000 || columns < 0 || columns > 1000) {
-            fail(Tr::tr("%1: \"rows\" must be 1..1000 and \"columns\" 0..1000").arg(where));
+            fail(ProjectTr::tr("%1: \"rows\" must be 1..1000 and \"columns\" 0..1000").arg(where));
             return false;
         }
         *rung = Rung(rows, columns);
         rung->comment = o.value(QStringLiteral("comment")).toString();
         const QJsonArray cells = o.value(QStringLiteral("cells")).toArray();
         if (cells.size() != rows) {
-            fail(Tr::tr("%1.cells: %2 rows are expected, the file has %3")
+            fail(ProjectTr::tr("%1.cells: %2 rows are expected, the file has %3")
                      .arg(where)
                      .arg(rows)
                      .arg(cells.size()));
@@ -419,12 +422,13 @@ private:
         }
         for (int r = 0; r < rows; ++r) {
             if (!cells[r].isArray()) {
-                fail(Tr::tr("%1.cells[%2]: an array of cells is expected").arg(where).arg(r));
+                fail(
+                    ProjectTr::tr("%1.cells[%2]: an array of cells is expected").arg(where).arg(r));
                 return false;
             }
             const QJsonArray row = cells[r].toArray();
             if (row.size() != columns) {
-                fail(Tr::tr("%1.cells[%2]: %3 cells are expected, the file has %4")
+                fail(ProjectTr::tr("%1.cells[%2]: %3 cells are expected, the file has %4")
                          .arg(where)
                          .arg(r)
                          .arg(columns)
@@ -433,8 +437,8 @@ private:
             }
             for (int c = 0; c < columns; ++c) {
                 if (!row[c].isString()) {
-                    fail(Tr::tr("%1.cells[%2][%3]: a cell is a string (\"\", \"-\" or a "
-                                "contact)")
+                    fail(ProjectTr::tr("%1.cells[%2][%3]: a cell is a string (\"\", \"-\" or a "
+                                       "contact)")
                              .arg(where)
                              .arg(r)
                              .arg(c));
@@ -466,7 +470,10 @@ private:
             const int r = pair.size() == 2 ? pair[0].toInt(-1) : -1;
             const int c = pair.size() == 2 ? pair[1].toInt(-1) : -1;
             if (r < 0 || r + 1 >= rows || c < 0 || c > columns) {
-                fail(Tr::tr("%1.links: [%2, %3] is outside the rung").arg(where).arg(r).arg(c));
+                fail(ProjectTr::tr("%1.links: [%2, %3] is outside the rung")
+                         .arg(where)
+                         .arg(r)
+                         .arg(c));
                 return false;
             }
             rung->setLink(r, c, true);
@@ -475,13 +482,14 @@ private:
             const QJsonArray entry = v.toArray();
             const int r = entry.size() >= 2 ? entry[0].toInt(-1) : -1;
             if (r < 0 || r >= rows || !entry[1].isString()) {
-                fail(Tr::tr("%1.outputs: [row, \"instruction\"] with a row inside the rung is "
-                            "expected")
+                fail(ProjectTr::tr(
+                         "%1.outputs: [row, \"instruction\"] with a row inside the rung is "
+                         "expected")
                          .arg(where));
                 return false;
             }
             if (rung->outputs[static_cast<std::size_t>(r)]) {
-                fail(Tr::tr("%1.outputs: row %2 has two outputs").arg(where).arg(r));
+                fail(ProjectTr::tr("%1.outputs: row %2 has two outputs").arg(where).arg(r));
                 return false;
             }
             const QString text = entry[1].toString();
@@ -489,7 +497,7 @@ private:
             if (!parsed.ok() || parsed.list.instructions.size() != 1) {
                 fail(QStringLiteral("%1.outputs: \"%2\": %3")
                          .arg(where, text,
-                              parsed.errors.empty() ? Tr::tr("one instruction is expected")
+                              parsed.errors.empty() ? ProjectTr::tr("one instruction is expected")
                                                     : parsed.errors.front().message));
                 return false;
             }
@@ -502,7 +510,8 @@ private:
                 const QJsonArray inputs = entry[2].toArray();
                 const int k = std::max(1, ins.spec->inputs);
                 if (!rung->inputRows.empty() || k < 2 || inputs.size() < 1 || inputs.size() > k) {
-                    fail(Tr::tr("%1.outputs: \"%2\" takes up to %3 input rows, one box per rung")
+                    fail(ProjectTr::tr(
+                             "%1.outputs: \"%2\" takes up to %3 input rows, one box per rung")
                              .arg(where, text)
                              .arg(k));
                     return false;
@@ -511,8 +520,9 @@ private:
                     const int row = inputs[i].toInt(-1);
                     const int previous = i == 0 ? r - 1 : rung->inputRows.back();
                     if (row <= previous || row >= rows || (i == 0 && row != r)) {
-                        fail(Tr::tr("%1.outputs: the input rows of \"%2\" start at its own row "
-                                    "and go down inside the rung")
+                        fail(ProjectTr::tr(
+                                 "%1.outputs: the input rows of \"%2\" start at its own row "
+                                 "and go down inside the rung")
                                  .arg(where, text));
                         return false;
                     }
@@ -638,13 +648,14 @@ bool saveProject(const Project &project, const QString &path, ProjectError *erro
     QSaveFile file(path);
     if (!file.open(QIODevice::WriteOnly)) {
         if (error)
-            error->message = Tr::tr("%1: cannot write the file (%2)").arg(path, file.errorString());
+            error->message =
+                ProjectTr::tr("%1: cannot write the file (%2)").arg(path, file.errorString());
         return false;
     }
     const QByteArray data = projectToJson(project);
     if (file.write(data) != data.size() || !file.commit()) {
         if (error)
-            error->message = Tr::tr("%1: saving failed (%2); the previous file is unchanged")
+            error->message = ProjectTr::tr("%1: saving failed (%2); the previous file is unchanged")
                                  .arg(path, file.errorString());
         file.cancelWriting();
         return false;

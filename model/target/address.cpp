@@ -1,4 +1,5 @@
 #include "model/target/address.h"
+#include "model/tr.h"
 
 #include <QCoreApplication>
 #include <QVarLengthArray>
@@ -10,10 +11,6 @@
 namespace rung::model {
 
 namespace {
-
-struct Tr {
-    Q_DECLARE_TR_FUNCTIONS(rung::model::Address)
-};
 
 // The length of the longest spelling of each area's prefix that starts s and is followed
 // by a digit, or -1; and the longest of all. This runs for every operand the parser reads, so
@@ -137,7 +134,7 @@ std::variant<Address, AddressError> parseAddress(const Target &target, QStringVi
         return AddressError{message, lead + originalColumn(trimmed, squeezedPos)};
     };
     if (s.isEmpty())
-        return AddressError{Tr::tr("A device is missing"), 0};
+        return AddressError{AddressTr::tr("A device is missing"), 0};
 
     // The longest prefix followed by a digit wins: "HR00" is HR, not an unprefixed channel.
     const PrefixMatches prefixes = matchPrefixes(target, s);
@@ -150,10 +147,11 @@ std::variant<Address, AddressError> parseAddress(const Target &target, QStringVi
         if (letters == s.size()) {
             for (const Area &a : target.areas)
                 if (squeezeAddress(a.prefix) == s)
-                    return error(Tr::tr("%1: a number is expected after %2").arg(shown, a.prefix),
-                                 s.size());
+                    return error(
+                        AddressTr::tr("%1: a number is expected after %2").arg(shown, a.prefix),
+                        s.size());
         }
-        return error(Tr::tr("%1 is not a device of %2").arg(shown, target.displayName), 0);
+        return error(AddressTr::tr("%1 is not a device of %2").arg(shown, target.displayName), 0);
     }
 
     // Areas sharing the prefix differ by numbering only in theory; read with the first one's
@@ -167,9 +165,9 @@ std::variant<Address, AddressError> parseAddress(const Target &target, QStringVi
     const Area &rules = target.area(firstArea);
     const Number number = readNumber(s, bestLength, radixOf(rules.numbering));
     if (number.overflow)
-        return error(Tr::tr("%1: the number is too large").arg(shown), bestLength);
+        return error(AddressTr::tr("%1: the number is too large").arg(shown), bestLength);
     if (number.badDigit >= 0)
-        return error(Tr::tr("%1: %2 is numbered in octal").arg(shown, rules.prefix),
+        return error(AddressTr::tr("%1: %2 is numbered in octal").arg(shown, rules.prefix),
                      number.badDigit);
 
     int bit = -1;
@@ -177,15 +175,17 @@ std::variant<Address, AddressError> parseAddress(const Target &target, QStringVi
     if (pos < s.size() && s[pos] == QLatin1Char('.')) {
         const Number b = readNumber(s, pos + 1, 10);
         if (b.length == 0)
-            return error(Tr::tr("%1: a bit number is expected after the point").arg(shown),
+            return error(AddressTr::tr("%1: a bit number is expected after the point").arg(shown),
                          pos + 1);
         if (b.overflow || b.value > 15)
-            return error(Tr::tr("%1: bit %2 is beyond 00..15").arg(shown).arg(b.value), pos + 1);
+            return error(AddressTr::tr("%1: bit %2 is beyond 00..15").arg(shown).arg(b.value),
+                         pos + 1);
         bit = static_cast<int>(b.value);
         pos += 1 + b.length;
     }
     if (pos < s.size())
-        return error(Tr::tr("%1: unexpected '%2' after the device").arg(shown, s.mid(pos)), pos);
+        return error(AddressTr::tr("%1: unexpected '%2' after the device").arg(shown, s.mid(pos)),
+                     pos);
 
     qint64 value = number.value;
     // Seed 002 writes a CPM1 bit as channel digits + two bit digits without the point:
@@ -194,7 +194,7 @@ std::variant<Address, AddressError> parseAddress(const Target &target, QStringVi
         number.length == rules.digits + 2) {
         const int b = static_cast<int>(value % 100);
         if (b > 15)
-            return error(Tr::tr("%1: bit %2 is beyond 00..15").arg(shown).arg(b),
+            return error(AddressTr::tr("%1: bit %2 is beyond 00..15").arg(shown).arg(b),
                          bestLength + number.length - 2);
         bit = b;
         value /= 100;
@@ -233,10 +233,11 @@ std::variant<Address, AddressError> parseAddress(const Target &target, QStringVi
                 spans.push_back(*r);
         }
         if (bit >= 0 && !bitAllowed)
-            return error(Tr::tr("%1: %2 has no bit numbers").arg(shown, rules.prefix), bestLength);
+            return error(AddressTr::tr("%1: %2 has no bit numbers").arg(shown, rules.prefix),
+                         bestLength);
         const Area &a = target.area(anyArea);
         if (spans.empty())
-            return error(Tr::tr("%1: %2 has no %3").arg(shown, who, areaName(a)), 0);
+            return error(AddressTr::tr("%1: %2 has no %3").arg(shown, who, areaName(a)), 0);
         std::sort(spans.begin(), spans.end());
         std::vector<std::pair<int, int>> merged{spans.front()};
         for (const auto &span : spans) {
@@ -252,21 +253,22 @@ std::variant<Address, AddressError> parseAddress(const Target &target, QStringVi
         // One span reads best with the area's name; several spans cross areas of different
         // kinds (CPM1 input and work channels), so only the ranges are named.
         if (merged.size() == 1)
-            return error(Tr::tr("%1 is beyond %2's %3 %4").arg(shown, who, areaName(a), ranges[0]),
-                         bestLength);
-        return error(
-            Tr::tr("%1 is beyond %2's %3").arg(shown, who, ranges.join(QStringLiteral(", "))),
-            bestLength);
+            return error(
+                AddressTr::tr("%1 is beyond %2's %3 %4").arg(shown, who, areaName(a), ranges[0]),
+                bestLength);
+        return error(AddressTr::tr("%1 is beyond %2's %3")
+                         .arg(shown, who, ranges.join(QStringLiteral(", "))),
+                     bestLength);
     }
 
     const Area &a = target.area(matched);
     if (model) {
         const auto r = target.range(matched, model);
         if (!r)
-            return error(Tr::tr("%1: %2 has no %3").arg(shown, who, areaName(a)), 0);
+            return error(AddressTr::tr("%1: %2 has no %3").arg(shown, who, areaName(a)), 0);
         if (index < r->first || index > r->second) {
             // The model narrows the area: name the model's range, as the user sees it.
-            return error(Tr::tr("%1 is beyond %2's %3 %4")
+            return error(AddressTr::tr("%1 is beyond %2's %3 %4")
                              .arg(shown, who, areaName(a),
                                   a.prefix + formatNumber(a, r->first) + QStringLiteral("..") +
                                       a.prefix + formatNumber(a, r->second)),
@@ -292,7 +294,7 @@ std::variant<Constant, AddressError> parseConstant(const Target &target, QString
     const QStringView t = text.trimmed();
     const int lead = static_cast<int>(text.indexOf(t.isEmpty() ? text : t));
     if (t.isEmpty())
-        return AddressError{Tr::tr("A constant is missing"), 0};
+        return AddressError{AddressTr::tr("A constant is missing"), 0};
     Constant c;
     qsizetype pos = 0;
     int radix = 10;
@@ -314,25 +316,25 @@ std::variant<Constant, AddressError> parseConstant(const Target &target, QString
     // error that names the target's own.
     const ConstantNotation &rules = target.constants;
     if ((c.style == Constant::Style::Decimal || c.style == Constant::Style::Hex) && !rules.prefixed)
-        return AddressError{
-            Tr::tr("%1: %2 writes constants without K or H").arg(t.toString(), target.displayName),
-            lead};
+        return AddressError{AddressTr::tr("%1: %2 writes constants without K or H")
+                                .arg(t.toString(), target.displayName),
+                            lead};
     // How this target writes a constant, for the messages that refuse another way.
     const auto ownWay = [&rules] {
         if (rules.prefixed)
-            return Tr::tr("write a constant as K (decimal) or H (hexadecimal)");
+            return AddressTr::tr("write a constant as K (decimal) or H (hexadecimal)");
         if (rules.bcd)
-            return Tr::tr("write a constant with # (e.g. #0150)");
-        return Tr::tr("write a constant as a plain number (e.g. 150)");
+            return AddressTr::tr("write a constant with # (e.g. #0150)");
+        return AddressTr::tr("write a constant as a plain number (e.g. 150)");
     };
     if (c.style == Constant::Style::Bcd && rules.hashPlain) {
         c.style = Constant::Style::Plain;
     } else if (c.style == Constant::Style::Bcd && !rules.bcd)
-        return AddressError{
-            Tr::tr("%1: %2 has no # constants; %3").arg(t.toString(), target.displayName, ownWay()),
-            lead};
+        return AddressError{AddressTr::tr("%1: %2 has no # constants; %3")
+                                .arg(t.toString(), target.displayName, ownWay()),
+                            lead};
     if (c.style == Constant::Style::Plain && !rules.plain)
-        return AddressError{Tr::tr("%1: %2").arg(t.toString(), ownWay()), lead};
+        return AddressError{AddressTr::tr("%1: %2").arg(t.toString(), ownWay()), lead};
     bool negative = false;
     if (pos < t.size() && (t[pos] == QLatin1Char('-') || t[pos] == QLatin1Char('+')) &&
         c.style != Constant::Style::Bcd && c.style != Constant::Style::Hex) {
@@ -340,7 +342,7 @@ std::variant<Constant, AddressError> parseConstant(const Target &target, QString
         ++pos;
     }
     if (pos >= t.size())
-        return AddressError{Tr::tr("%1: digits are expected").arg(t.toString()),
+        return AddressError{AddressTr::tr("%1: digits are expected").arg(t.toString()),
                             lead + static_cast<int>(pos)};
     qint64 value = 0;
     bool hexDigitInBcd = false;
@@ -353,14 +355,16 @@ std::variant<Constant, AddressError> parseConstant(const Target &target, QString
                  ch <= QLatin1Char('F'))
             d = ch.unicode() - 'A' + 10;
         if (d < 0)
-            return AddressError{Tr::tr("%1: '%2' is not a digit").arg(t.toString(), QString(t[i])),
-                                lead + static_cast<int>(i)};
+            return AddressError{
+                AddressTr::tr("%1: '%2' is not a digit").arg(t.toString(), QString(t[i])),
+                lead + static_cast<int>(i)};
         if (c.style == Constant::Style::Bcd && d > 9)
             hexDigitInBcd = true;
         const int base = (c.style == Constant::Style::Bcd && hexDigitInBcd) ? 16 : radix;
         value = value * base + d;
         if (value > 0xFFFFFFFFLL)
-            return AddressError{Tr::tr("%1: the constant is too large").arg(t.toString()), lead};
+            return AddressError{AddressTr::tr("%1: the constant is too large").arg(t.toString()),
+                                lead};
     }
     if (hexDigitInBcd) {
         // "#00FF" is a hexadecimal word, not BCD: re-read all digits in base 16.
@@ -458,15 +462,17 @@ parseAddressRange(const Target &target, QStringView text, const ModelVariant *mo
     const QString shown = text.trimmed().toString();
     if (areaA.prefix != areaB.prefix || areaA.kind != areaB.kind || (a.bit >= 0) != (b.bit >= 0))
         return AddressError{
-            Tr::tr("%1: both ends of a range must be devices of one kind (D0..D15)").arg(shown), 0};
+            AddressTr::tr("%1: both ends of a range must be devices of one kind (D0..D15)")
+                .arg(shown),
+            0};
     // Bits of channels count on across channels: 000.15 is followed by 001.00.
     const bool bits = a.bit >= 0;
     const qint64 from = bits ? qint64{a.index} * 16 + a.bit : a.index;
     const qint64 to = bits ? qint64{b.index} * 16 + b.bit : b.index;
     if (to < from)
-        return AddressError{Tr::tr("%1: the range runs backwards").arg(shown), 0};
+        return AddressError{AddressTr::tr("%1: the range runs backwards").arg(shown), 0};
     if (to - from + 1 > kMaxRange)
-        return AddressError{Tr::tr("%1: %2 devices; a range holds at most %3")
+        return AddressError{AddressTr::tr("%1: %2 devices; a range holds at most %3")
                                 .arg(shown)
                                 .arg(to - from + 1)
                                 .arg(kMaxRange),
@@ -488,7 +494,7 @@ parseAddressRange(const Target &target, QStringView text, const ModelVariant *mo
         }
         if (area < 0)
             return AddressError{
-                Tr::tr("%1: the PLC has no %2 inside this range")
+                AddressTr::tr("%1: the PLC has no %2 inside this range")
                     .arg(shown, formatAddress(target, {a.area, index, bits ? int(n % 16) : -1})),
                 0};
         out.push_back({area, index, bits ? static_cast<int>(n % 16) : -1});

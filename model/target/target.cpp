@@ -57,26 +57,32 @@ QString normalizeSpaces(const QString &text) {
     return normal ? text : text.simplified().toUpper();
 }
 
+struct CompareSymbol {
+    const char *text;
+    CompareOp op;
+};
+// Every way a listing writes an operator, the longest first; the first of each operator is
+// how it is printed.
+constexpr CompareSymbol kCompareSymbols[] = {
+    {"<>", CompareOp::Ne}, {"<=", CompareOp::Le}, {">=", CompareOp::Ge}, {"=<", CompareOp::Le},
+    {"=>", CompareOp::Ge}, {"<", CompareOp::Lt},  {">", CompareOp::Gt},  {"=", CompareOp::Eq}};
+
 } // namespace
 
 const char *compareSymbol(CompareOp op) {
-    switch (op) {
-    case CompareOp::Eq:
-        return "=";
-    case CompareOp::Ne:
-        return "<>";
-    case CompareOp::Lt:
-        return "<";
-    case CompareOp::Le:
-        return "<=";
-    case CompareOp::Gt:
-        return ">";
-    case CompareOp::Ge:
-        return ">=";
-    case CompareOp::None:
-        break;
-    }
+    for (const CompareSymbol &s : kCompareSymbols)
+        if (s.op == op)
+            return s.text;
     return "";
+}
+
+std::optional<CompareAt> findCompare(QStringView text) {
+    for (const CompareSymbol &s : kCompareSymbols) {
+        const qsizetype at = text.indexOf(QLatin1String(s.text));
+        if (at > 0)
+            return CompareAt{s.op, at, qsizetype(qstrlen(s.text))};
+    }
+    return std::nullopt;
 }
 
 const Target &Target::get(Family family) {

@@ -164,8 +164,46 @@ enum class ContactMode : std::uint8_t { Normal, Negated, Rising, Falling };
 
 enum class CompareOp : std::uint8_t { None, Eq, Ne, Lt, Le, Gt, Ge };
 
+// The six operators in the order the manuals list their compare contacts (LD=, LD<>, LD<,
+// LD<=, LD>, LD>=): the targets' tables make one instruction of each.
+inline constexpr CompareOp kCompareOps[] = {CompareOp::Eq, CompareOp::Ne, CompareOp::Lt,
+                                            CompareOp::Le, CompareOp::Gt, CompareOp::Ge};
+
 // The operator as listings and the ladder write it: "=", "<>", "<", "<=", ">", ">=".
 const char *compareSymbol(CompareOp op);
+
+// An operator written between two operands ("D0<=K5", "D10 > 100"): where it stands and how
+// many characters it takes. "=<" and "=>" read as "<=" and ">=" (VPC listings write both).
+struct CompareAt {
+    CompareOp op = CompareOp::None;
+    qsizetype at = 0;
+    qsizetype length = 0;
+};
+// The operator in `text`, the longest symbol first (so "<=" is not read as "<"); never at
+// the start, where no operand stands before it. Empty when the text holds none.
+std::optional<CompareAt> findCompare(QStringView text);
+
+// Whether "a op b" holds (None never does): the simulator, the monitor's power flow and
+// the timing chart's trigger all compare here.
+constexpr bool compareHolds(CompareOp op, qint64 a, qint64 b) {
+    switch (op) {
+    case CompareOp::Eq:
+        return a == b;
+    case CompareOp::Ne:
+        return a != b;
+    case CompareOp::Lt:
+        return a < b;
+    case CompareOp::Le:
+        return a <= b;
+    case CompareOp::Gt:
+        return a > b;
+    case CompareOp::Ge:
+        return a >= b;
+    case CompareOp::None:
+        break;
+    }
+    return false;
+}
 
 enum class TransferOp : std::uint8_t { None, Assign, Add, Subtract };
 

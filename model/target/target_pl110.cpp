@@ -34,10 +34,8 @@ void addImmediate(Target &t, const char *mnemonic, Op op, ContactMode mode, cons
 }
 
 void addCompares(Target &t, const char *prefix, Op op) {
-    const std::pair<const char *, CompareOp> compares[] = {
-        {"=", CompareOp::Eq},  {"<>", CompareOp::Ne}, {"<", CompareOp::Lt},
-        {"<=", CompareOp::Le}, {">", CompareOp::Gt},  {">=", CompareOp::Ge}};
-    for (const auto &[symbol, cmp] : compares) {
+    for (const CompareOp cmp : kCompareOps) {
+        const char *symbol = compareSymbol(cmp);
         const QByteArray name = QByteArray(prefix) + symbol;
         InstructionSpec &s = addSpec(
             t, "", op, {{K::WordSource}, {K::WordSource}},

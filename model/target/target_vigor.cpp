@@ -77,40 +77,29 @@ Target makeVigorTarget() {
     t.displayName = QStringLiteral("Vigor");
     t.defaultTimerBaseMs = 100.0;
 
-    auto area = [&t](const char *key, const char *prefix, AreaKind kind, int first, int last,
-                     const char *description) -> Area & {
-        Area a;
-        a.key = QString::fromLatin1(key);
-        a.prefix = QString::fromLatin1(prefix);
-        a.kind = kind;
-        a.first = first;
-        a.last = last;
-        a.description = description;
-        t.areas.push_back(a);
-        return t.areas.back();
-    };
-    Area &x =
-        area("X", "X", AreaKind::Bit, 0, 0777, QT_TRANSLATE_NOOP("rung::model::Target", "inputs"));
+    Area &x = addArea(t, "X", "X", AreaKind::Bit, 0, 0777,
+                      QT_TRANSLATE_NOOP("rung::model::Target", "inputs"));
     x.numbering = Numbering::Octal;
     x.writable = false;
     x.physical = true;
-    Area &y =
-        area("Y", "Y", AreaKind::Bit, 0, 0777, QT_TRANSLATE_NOOP("rung::model::Target", "outputs"));
+    Area &y = addArea(t, "Y", "Y", AreaKind::Bit, 0, 0777,
+                      QT_TRANSLATE_NOOP("rung::model::Target", "outputs"));
     y.numbering = Numbering::Octal;
     y.physical = true;
-    area("M", "M", AreaKind::Bit, 0, 499,
-         QT_TRANSLATE_NOOP("rung::model::Target", "auxiliary relays"));
-    area("ML", "M", AreaKind::Bit, 500, 5119,
-         QT_TRANSLATE_NOOP("rung::model::Target", "latched auxiliary relays"))
+    addArea(t, "M", "M", AreaKind::Bit, 0, 499,
+            QT_TRANSLATE_NOOP("rung::model::Target", "auxiliary relays"));
+    addArea(t, "ML", "M", AreaKind::Bit, 500, 5119,
+            QT_TRANSLATE_NOOP("rung::model::Target", "latched auxiliary relays"))
         .retentive = true;
-    Area &sm = area("SM", "M", AreaKind::Bit, 9000, 9255,
-                    QT_TRANSLATE_NOOP("rung::model::Target", "special relays"));
+    Area &sm = addArea(t, "SM", "M", AreaKind::Bit, 9000, 9255,
+                       QT_TRANSLATE_NOOP("rung::model::Target", "special relays"));
     // Writable as a whole: seed 001's programs drive M9100 (start dialing) and M9122 (RS send);
     // the read-only ones are known by name in systemDevices.
     sm.system = true;
-    area("S", "S", AreaKind::Bit, 0, 499, QT_TRANSLATE_NOOP("rung::model::Target", "step relays"));
-    area("SL", "S", AreaKind::Bit, 500, 999,
-         QT_TRANSLATE_NOOP("rung::model::Target", "latched step relays"))
+    addArea(t, "S", "S", AreaKind::Bit, 0, 499,
+            QT_TRANSLATE_NOOP("rung::model::Target", "step relays"));
+    addArea(t, "SL", "S", AreaKind::Bit, 500, 999,
+            QT_TRANSLATE_NOOP("rung::model::Target", "latched step relays"))
         .retentive = true;
     // Seed 004: "Every timer has its resolution (unit: 1ms/10ms/100ms)"; neither seed gives the
     // ranges. The Vigor numbers its special devices as the FX family does, 1000 higher (FX
@@ -118,47 +107,48 @@ Target makeVigorTarget() {
     // D9010..D9012, M9122, M9161, M9168 of seed 001), so its timers follow the FX ranges:
     // T0..T199 100 ms, T200..T245 10 ms, T246..T249 1 ms and T250..T255 100 ms accumulating
     // and retained. The same on M, VB and VH (a model with other ranges gets overrides).
-    area("T", "T", AreaKind::Timer, 0, 199,
-         QT_TRANSLATE_NOOP("rung::model::Target", "timers (100 ms)"));
-    area("T10", "T", AreaKind::Timer, 200, 245,
-         QT_TRANSLATE_NOOP("rung::model::Target", "timers (10 ms)"))
+    addArea(t, "T", "T", AreaKind::Timer, 0, 199,
+            QT_TRANSLATE_NOOP("rung::model::Target", "timers (100 ms)"));
+    addArea(t, "T10", "T", AreaKind::Timer, 200, 245,
+            QT_TRANSLATE_NOOP("rung::model::Target", "timers (10 ms)"))
         .timerBaseMs = 10;
-    Area &t1 = area("T1R", "T", AreaKind::Timer, 246, 249,
-                    QT_TRANSLATE_NOOP("rung::model::Target", "accumulating timers (1 ms)"));
+    Area &t1 = addArea(t, "T1R", "T", AreaKind::Timer, 246, 249,
+                       QT_TRANSLATE_NOOP("rung::model::Target", "accumulating timers (1 ms)"));
     t1.timerBaseMs = 1;
     t1.timerMode = TimerMode::Accumulating;
     t1.retentive = true;
-    Area &t100 = area("TR", "T", AreaKind::Timer, 250, 255,
-                      QT_TRANSLATE_NOOP("rung::model::Target", "accumulating timers (100 ms)"));
+    Area &t100 = addArea(t, "TR", "T", AreaKind::Timer, 250, 255,
+                         QT_TRANSLATE_NOOP("rung::model::Target", "accumulating timers (100 ms)"));
     t100.timerMode = TimerMode::Accumulating;
     t100.retentive = true;
-    area("C", "C", AreaKind::Counter, 0, 99, QT_TRANSLATE_NOOP("rung::model::Target", "counters"));
-    area("CL", "C", AreaKind::Counter, 100, 199,
-         QT_TRANSLATE_NOOP("rung::model::Target", "latched counters"))
+    addArea(t, "C", "C", AreaKind::Counter, 0, 99,
+            QT_TRANSLATE_NOOP("rung::model::Target", "counters"));
+    addArea(t, "CL", "C", AreaKind::Counter, 100, 199,
+            QT_TRANSLATE_NOOP("rung::model::Target", "latched counters"))
         .retentive = true;
-    Area &c32 = area("C32", "C", AreaKind::Counter, 200, 255,
-                     QT_TRANSLATE_NOOP("rung::model::Target", "32-bit counters"));
+    Area &c32 = addArea(t, "C32", "C", AreaKind::Counter, 200, 255,
+                        QT_TRANSLATE_NOOP("rung::model::Target", "32-bit counters"));
     c32.wordBits = 32;
     c32.retentive = true;
-    area("D", "D", AreaKind::Word, 0, 199,
-         QT_TRANSLATE_NOOP("rung::model::Target", "data registers"));
-    area("DL", "D", AreaKind::Word, 200, 8191,
-         QT_TRANSLATE_NOOP("rung::model::Target", "latched data registers"))
+    addArea(t, "D", "D", AreaKind::Word, 0, 199,
+            QT_TRANSLATE_NOOP("rung::model::Target", "data registers"));
+    addArea(t, "DL", "D", AreaKind::Word, 200, 8191,
+            QT_TRANSLATE_NOOP("rung::model::Target", "latched data registers"))
         .retentive = true;
-    Area &sd = area("SD", "D", AreaKind::Word, 9000, 9255,
-                    QT_TRANSLATE_NOOP("rung::model::Target", "special registers"));
+    Area &sd = addArea(t, "SD", "D", AreaKind::Word, 9000, 9255,
+                       QT_TRANSLATE_NOOP("rung::model::Target", "special registers"));
     sd.system = true;
     // Index registers. Seed 001's operand tables (LINK, RS, MBUS: "V,Z ... VZ index") name
     // the Vigor's V and Z, as in the FX family; seed 004's WPLSoft family calls them E0..E7
     // and F0..F7 (E the low word like Z, F the high one like V). Both spellings are read;
     // the Vigor's own is printed. D0Z0 = D(0 + Z0), K10V0 = 10 + V0. Not in seed 001's link
     // map, so no protocol reaches them.
-    Area &z = area("Z", "Z", AreaKind::Word, 0, 7,
-                   QT_TRANSLATE_NOOP("rung::model::Target", "index registers"));
+    Area &z = addArea(t, "Z", "Z", AreaKind::Word, 0, 7,
+                      QT_TRANSLATE_NOOP("rung::model::Target", "index registers"));
     z.indexRegister = true;
     z.prefixAliases = {QStringLiteral("E")};
-    Area &v = area("V", "V", AreaKind::Word, 0, 7,
-                   QT_TRANSLATE_NOOP("rung::model::Target", "index registers"));
+    Area &v = addArea(t, "V", "V", AreaKind::Word, 0, 7,
+                      QT_TRANSLATE_NOOP("rung::model::Target", "index registers"));
     v.indexRegister = true;
     v.prefixAliases = {QStringLiteral("F")};
 
@@ -269,13 +259,10 @@ Target makeVigorTarget() {
     in.push_back(
         contact("ORF", Op::Or, M::Falling,
                 QT_TRANSLATE_NOOP("rung::model::Target", "Falling-edge contact in parallel")));
-    const std::pair<const char *, CompareOp> compares[] = {
-        {"=", CompareOp::Eq},  {"<>", CompareOp::Ne}, {"<", CompareOp::Lt},
-        {"<=", CompareOp::Le}, {">", CompareOp::Gt},  {">=", CompareOp::Ge}};
-    for (const auto &[symbol, cmp] : compares) {
+    for (const CompareOp cmp : kCompareOps) {
         for (const auto &[prefix, op] :
              {std::pair{"LD", Op::Load}, {"AND", Op::And}, {"OR", Op::Or}}) {
-            const QByteArray name = QByteArray(prefix) + symbol;
+            const QByteArray name = QByteArray(prefix) + compareSymbol(cmp);
             InstructionSpec s = compareContact("", op, cmp);
             s.mnemonic = QString::fromLatin1(name);
             in.push_back(s);

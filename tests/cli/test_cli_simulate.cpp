@@ -58,7 +58,7 @@ TEST(CliSimulate, TheSameProgramWithOneCoilRuns) {
                   QStringLiteral("2"), QStringLiteral("--set"), QStringLiteral("000.01=1@1"),
                   QStringLiteral("--trace"), QStringLiteral("010.00")});
     EXPECT_EQ(r.code, 0) << r.err.toStdString();
-    EXPECT_EQ(r.out, QStringLiteral("scan,time_ms,010.00\n0,0,0\n1,10,1\n"));
+    EXPECT_EQ(r.out, QStringLiteral("scan,time_ms,010.00\n1,10,0\n2,20,1\n"));
 }
 
 TEST(CliSimulate, RuntimeErrorsNameTheLineAndStep) {
@@ -90,8 +90,8 @@ const QStringList kLatchTrace = {QStringLiteral("--scans"), QStringLiteral("6"),
                                  QStringLiteral("--set"),   QStringLiteral("X1=0@2"),
                                  QStringLiteral("--set"),   QStringLiteral("X2=1@4"),
                                  QStringLiteral("--trace"), QStringLiteral("X1,X2,Y1")};
-const QString kLatchCsv = QStringLiteral("scan,time_ms,X1,X2,Y1\n0,0,0,0,0\n1,10,1,0,1\n"
-                                         "2,20,0,0,1\n3,30,0,0,1\n4,40,0,1,0\n5,50,0,1,0\n");
+const QString kLatchCsv = QStringLiteral("scan,time_ms,X1,X2,Y1\n1,10,0,0,0\n2,20,1,0,1\n"
+                                         "3,30,0,0,1\n4,40,0,0,1\n5,50,0,1,0\n6,60,0,1,0\n");
 
 } // namespace
 
@@ -167,7 +167,8 @@ TEST(CliSimulate, ASetAfterTheLastScanIsAnErrorNotIgnored) {
     EXPECT_TRUE(r.out.isEmpty());
     EXPECT_TRUE(r.err.contains(QStringLiteral("--set X0=1@5 comes after the last scan")))
         << r.err.toStdString();
-    EXPECT_TRUE(r.err.contains(QStringLiteral("0 to 4"))) << r.err.toStdString();
+    EXPECT_TRUE(r.err.contains(QStringLiteral("once 5 scans have run, and 5 run")))
+        << r.err.toStdString();
 }
 
 TEST(CliSimulate, ScansMustBeBounded) {

@@ -7,6 +7,7 @@
 #include "editor/problems_view.h"
 
 #include <QFile>
+#include <QStatusBar>
 #include <QTemporaryDir>
 
 #include "tests/test_files.h"
@@ -60,4 +61,18 @@ TEST(CommandLine, AnInstructionListOpensForTheTargetGiven) {
     EXPECT_EQ(other.document()->listingText(), QStringLiteral("END\n"));
     ASSERT_NE(other.problemsView()->diagnosticAt(0), nullptr);
     EXPECT_EQ(other.problemsView()->diagnosticAt(0)->location.line, 1);
+}
+
+// A project is its own target: one asked for that it is not is said, not ignored (as
+// rungstudio-cli says it; model::openProgramFile chooses for both).
+TEST(CommandLine, AProjectOfAnotherTargetThanTheOneGivenIsRefusedSayingWhy) {
+    const QString example =
+        QStringLiteral(RUNG_SOURCE_DIR "/resources/examples/vigor/start-first-latch.rung");
+    app::MainWindow window;
+    EXPECT_FALSE(window.openFile(example, QStringLiteral("cpm1"), true));
+    EXPECT_EQ(window.statusBar()->currentMessage(),
+              example + QStringLiteral(" is a vigor project, not cpm1"));
+    EXPECT_EQ(window.document()->target().id, model::Target::defaultTarget().id);
+    ASSERT_TRUE(window.openFile(example, QStringLiteral("vigor"), true));
+    EXPECT_EQ(window.document()->target().id, QStringLiteral("vigor"));
 }

@@ -298,7 +298,7 @@ TEST_P(DialogFit, TheStatusBarTheLadderAndTheChartShowTheirTextsWhole) {
     // The MOV box (rung 2, row 2): "D0 = 12345  D1 = 12345", each value whole.
     editor::LadderView *ladder = window.ladderView();
     const auto movValues = [&] {
-        const editor::RungOverlay o = ladder->overlay(1);
+        const model::RungOverlay o = ladder->overlay(1);
         return o.output(1) ? o.output(1)->value : QString();
     };
     ASSERT_TRUE(QTest::qWaitFor([&] { return movValues().contains(QStringLiteral("D1 = 12345")); },

@@ -222,6 +222,21 @@ TEST(IoPanel, AnalogValuesAreWrittenAsTheTableSays) {
     ASSERT_TRUE(changed.wait(5000));
     EXPECT_EQ(pot->spinBox()->value(), 123);
     EXPECT_EQ(pot->slider()->value(), 123);
+    EXPECT_EQ(pot->unreadable(), QString());
+    // A nibble above 9 is no BCD digit: the word is shown as it is, not clamped to 1294, and
+    // the slider stays at the last number.
+    snapshot = source.blank(t);
+    snapshot->words[static_cast<std::size_t>(snapshot->layout->word(at(t, "250")))] = 0x12A4;
+    source.publish(snapshot);
+    ASSERT_TRUE(changed.wait(5000));
+    EXPECT_EQ(pot->unreadable(), QStringLiteral("0x12A4 (not BCD)"));
+    EXPECT_EQ(pot->spinBox()->value(), 123);
+    snapshot = source.blank(t);
+    snapshot->words[static_cast<std::size_t>(snapshot->layout->word(at(t, "250")))] = 0x99;
+    source.publish(snapshot);
+    ASSERT_TRUE(changed.wait(5000));
+    EXPECT_EQ(pot->unreadable(), QString());
+    EXPECT_EQ(pot->spinBox()->value(), 99);
 }
 
 TEST(IoPanel, AnAnalogInputDrivesTheProgramOnARealSimulation) {

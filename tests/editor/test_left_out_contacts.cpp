@@ -67,7 +67,7 @@ TEST(LeftOutContact, HasAMarkedLineThatItsWarningPointsAt) {
     EXPECT_TRUE(marker.startsWith(QLatin1String("; [[1:"))) << marker.toStdString();
     EXPECT_TRUE(marker.contains(QLatin1String("@2,1]] Rung 1: X5 (row 2, column 1)")))
         << marker.toStdString();
-    EXPECT_FALSE(editor::Document::placeholderKey(marker).isEmpty());
+    EXPECT_FALSE(model::placeholderKey(marker).isEmpty());
     EXPECT_EQ(lines.mid(2, 4), (QStringList{"LD X0", "OUT Y0", "LD X1", "OUT Y1"}));
     // The marker is no instruction, and it is its rung's line.
     EXPECT_LT(doc.printedListing().instructionAt(2), 0);

@@ -62,7 +62,7 @@ TEST(ListPlaceholder, ARungTheListCannotExpressHasAMarkedLineInItsPlace) {
     EXPECT_TRUE(placeholder.startsWith(QLatin1String("; [[2:"))) << placeholder.toStdString();
     EXPECT_TRUE(placeholder.contains(QLatin1String("Rung 2 is not in the list: Reverse current")))
         << placeholder.toStdString();
-    EXPECT_FALSE(editor::Document::placeholderKey(placeholder).isEmpty());
+    EXPECT_FALSE(model::placeholderKey(placeholder).isEmpty());
     EXPECT_EQ(lines.mid(4, 4), (QStringList{"; Lamp", "LD X5", "OUT Y5", "END"}));
     // The placeholder is its rung's line: the cursor and the rung's findings land on it.
     EXPECT_EQ(doc.firstLineOfRung(1), 4);

@@ -268,7 +268,7 @@ TEST_P(Online, TheViewsShowThePlcAndFollowItsInputs) {
 TEST_P(Online, ATimerShowsItsTimeOverItsPreset) {
     goOnline();
     const auto text = [&] {
-        const editor::RungOverlay o = window.ladderView()->overlay(2);
+        const model::RungOverlay o = window.ladderView()->overlay(2);
         return o.output(0) ? o.output(0)->value : QString();
     };
     EXPECT_TRUE(QTest::qWaitFor(

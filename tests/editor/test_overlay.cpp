@@ -76,7 +76,7 @@ struct Overlay : test::WindowFixture {
         });
         return found;
     }
-    const editor::RungOverlay::Output *coil(const editor::RungOverlay &o, int row = 0) {
+    const model::RungOverlay::Output *coil(const model::RungOverlay &o, int row = 0) {
         return o.output(row);
     }
     // A menu entry by its text without the '&'.
@@ -120,7 +120,7 @@ TEST_F(Overlay, ToggleAnInputAndTheCoilIsEnergisedAfterOneScan) {
     sim()->session()->writeBit(at("X0"), true); // the input toggled
     ASSERT_TRUE(sim()->singleScan());           // one scan
     ASSERT_NE(waitFor([](const model::Snapshot &s) { return s.statistics.scans == 2; }), nullptr);
-    const editor::RungOverlay o = view->overlay(0);
+    const model::RungOverlay o = view->overlay(0);
     EXPECT_TRUE(o.conducts(0, 0));
     EXPECT_TRUE(o.passes(0, 0));
     EXPECT_TRUE(coil(o)->powered);

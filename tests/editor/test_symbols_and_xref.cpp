@@ -5,7 +5,6 @@
 #include "app/gui/main_window.h"
 #include "app/gui/symbol_table.h"
 #include "editor/ladder_view.h"
-#include "editor/symbols_csv.h"
 #include "model/target/address.h"
 
 #include <QApplication>
@@ -124,7 +123,7 @@ TEST_F(XrefFixture, ACrossReferenceOffScreenCatchesUpWhenItComesBack) {
               (QSet<QString>{QStringLiteral("X6"), QStringLiteral("Y6")}));
 }
 
-TEST(SymbolsCsv, ExportAndImportGiveTheSameTableWithCommasQuotesAndLineBreaks) {
+TEST(SymbolsTable, ExportAndImportGiveTheSameTableWithCommasQuotesAndLineBreaks) {
     const std::vector<model::Symbol> symbols = {
         {address("X0"), QStringLiteral("Start"), QStringLiteral("green, big; left")},
         {address("Y0"), QStringLiteral("Pump \"A\""), QStringLiteral("line one\nline two")},
@@ -151,27 +150,6 @@ TEST(SymbolsCsv, ExportAndImportGiveTheSameTableWithCommasQuotesAndLineBreaks) {
 
     EXPECT_FALSE(window.symbolTable()->exportCsv(QStringLiteral("/nonexistent-dir/s.csv"), &error));
     EXPECT_TRUE(error.contains(QStringLiteral("nonexistent-dir"))) << error.toStdString();
-}
-
-TEST(SymbolsCsv, ReadsWhatSpreadsheetsWrite) {
-    const model::Target &vigor = model::Target::get(model::Family::Vigor);
-    // Semicolons, a byte-order mark, CRLF, a header in capitals, blank lines, a device again.
-    const QString text =
-        QString(QChar(0xfeff)) + QStringLiteral("Device;Name;Comment\r\nX0;Start;\"a; b\"\r\n\r\n"
-                                                "Y1;Lamp;\r\nX0;Begin;again\r\n");
-    const editor::SymbolsCsv csv = editor::symbolsFromCsv(vigor, nullptr, text);
-    ASSERT_TRUE(csv.ok()) << csv.error.toStdString();
-    ASSERT_EQ(csv.symbols.size(), 2u);
-    EXPECT_EQ(csv.symbols[0].name, QStringLiteral("Begin")); // the later row wins
-    EXPECT_EQ(csv.symbols[0].comment, QStringLiteral("again"));
-    EXPECT_EQ(csv.symbols[1].address, address("Y1"));
-    // A bad device is reported on the line where its record starts.
-    const editor::SymbolsCsv bad =
-        editor::symbolsFromCsv(vigor, nullptr, QStringLiteral("X0,A,\"two\nlines\"\nX9,B,\n"));
-    EXPECT_FALSE(bad.ok());
-    EXPECT_EQ(bad.errorLine, 3);
-    EXPECT_EQ(bad.error, QStringLiteral("X9: X is numbered in octal"));
-    EXPECT_TRUE(bad.symbols.empty());
 }
 
 // The symbol table is edited in place: a row is a symbol once its device is valid; until then

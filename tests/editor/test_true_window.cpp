@@ -183,7 +183,7 @@ TEST_F(TrueWindow, AConstantPresetIsShownWhenStopped) {
         5000));
     QApplication::processEvents();
     const auto value = [&](int rung) {
-        const editor::RungOverlay o = view->overlay(rung);
+        const model::RungOverlay o = view->overlay(rung);
         return o.output(0) ? o.output(0)->value : QString();
     };
     EXPECT_TRUE(QTest::qWaitFor([&] { return value(0).startsWith(QStringLiteral("0/350")); }, 5000))

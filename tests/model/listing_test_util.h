@@ -9,6 +9,11 @@
 
 namespace rung::testing {
 
+// The execution order example of PLC concepts (WPLSoft family) 1.5.1, verbatim.
+inline constexpr const char *kExecutionOrderExample =
+    "LD X0\nOR M0\nAND X1\nLD X3\nAND M1\nORB\nLD Y1\nAND X4\nLD T0\nAND M3\n"
+    "ORB\nANB\nOUT Y1\nTMR T0 K10\n";
+
 inline model::ParseResult parseListing(model::Family family, const QString &text) {
     return model::parseInstructionList(model::Target::get(family), text);
 }

@@ -5,6 +5,7 @@
 #include "model/convert/convert.h"
 #include "model/ladder/ladder_text.h"
 #include "model/ladder/network.h"
+#include "tests/model/listing_test_util.h"
 
 #include <gtest/gtest.h>
 
@@ -21,17 +22,8 @@
 using namespace rung::model;
 using namespace rung::model::test;
 
-namespace {
-
-// ladder-rules.md, "Execution order example (seed 004, 1.5.1)", verbatim.
-const char *kExecutionOrder =
-    "LD X0\nOR M0\nAND X1\nLD X3\nAND M1\nORB\nLD Y1\nAND X4\nLD T0\nAND M3\n"
-    "ORB\nANB\nOUT Y1\nTMR T0 K10\n";
-
-} // namespace
-
 TEST(Conversion, ExecutionOrderExampleIsAlreadyCanonical) {
-    const QString text = QString::fromLatin1(kExecutionOrder);
+    const QString text = QString::fromLatin1(rung::testing::kExecutionOrderExample);
     LadderProgram ladder;
     EXPECT_EQ(roundTrip(parse(Family::Vigor, text), &ladder), text);
     ASSERT_EQ(ladder.rungs.size(), 1u);
@@ -195,7 +187,7 @@ TEST(Conversion, ProblemsWithoutTheDrawingAreTheDrawingsProblems) {
 TEST(SeedExamples, RoundTripIsAFixpointAndKeepsMeaning) {
     const Target &t = Target::get(Family::Vigor);
     const std::vector<const char *> programs = {
-        kExecutionOrder,
+        rung::testing::kExecutionOrderExample,
         // 1.7 example 1, OK and better; example 2, bad and good.
         "LD X0\nOR X1\nLD X2\nOR X3\nLD X4\nOR X5\nANB\nANB\nOUT Y0\n",
         "LD X0\nOR X1\nLD X2\nOR X3\nANB\nLD X4\nOR X5\nANB\nOUT Y0\n",

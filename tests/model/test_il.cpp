@@ -12,6 +12,7 @@
 
 using namespace rung::model;
 using rung::testing::describeErrors;
+using rung::testing::kExecutionOrderExample;
 using rung::testing::parseListing;
 
 namespace {
@@ -244,11 +245,8 @@ TEST(IlCpm1, ConstantWithANonDigitIsAnErrorAtTheCharacter) {
 
 // ---- Vigor (seeds 001, 004) ---------------------------------------------------------------
 
-const char *const kExecutionOrder = "LD X0\nOR M0\nAND X1\nLD X3\nAND M1\nORB\nLD Y1\nAND X4\n"
-                                    "LD T0\nAND M3\nORB\nANB\nOUT Y1\nTMR T0 K10\n";
-
 TEST(IlVigor, ExecutionOrderProgramParsesAndRoundTrips) {
-    const ParseResult r = parseListing(Family::Vigor, QString::fromLatin1(kExecutionOrder));
+    const ParseResult r = parseListing(Family::Vigor, QString::fromLatin1(kExecutionOrderExample));
     ASSERT_TRUE(r.ok()) << describeErrors(r);
     ASSERT_EQ(r.list.instructions.size(), 14u);
     EXPECT_EQ(r.list.instructions[5].op(), Op::OrBlock);
@@ -256,7 +254,7 @@ TEST(IlVigor, ExecutionOrderProgramParsesAndRoundTrips) {
     const Instruction &tmr = r.list.instructions[13];
     EXPECT_EQ(tmr.op(), Op::Timer);
     EXPECT_EQ(tmr.operands.at(1).constant.value, 10);
-    expectRoundTrip(Family::Vigor, QString::fromLatin1(kExecutionOrder));
+    expectRoundTrip(Family::Vigor, QString::fromLatin1(kExecutionOrderExample));
 }
 
 TEST(IlVigor, SeedTabulatedListingWithStepNumbersParses) {
@@ -267,7 +265,8 @@ TEST(IlVigor, SeedTabulatedListingWithStepNumbersParses) {
                        "\tORB\t\t\n5\tLD\tY1\t\n\tAND\tX4\t\n6\tLD\tT0\t\n\tAND\tM3\t\n"
                        "\tORB\t\t\n7\tANB\t\t\n8\tOUT\tY1\t\n\tTMR\tT0 K10\t\n"));
     ASSERT_TRUE(r.ok()) << describeErrors(r);
-    const ParseResult clean = parseListing(Family::Vigor, QString::fromLatin1(kExecutionOrder));
+    const ParseResult clean =
+        parseListing(Family::Vigor, QString::fromLatin1(kExecutionOrderExample));
     ASSERT_EQ(r.list.instructions.size(), clean.list.instructions.size());
     for (std::size_t i = 0; i < clean.list.instructions.size(); ++i)
         EXPECT_TRUE(r.list.instructions[i].sameAs(clean.list.instructions[i]));

@@ -372,7 +372,7 @@ TEST(Cpm1Trace, WordsAreSetAndPrintedAsTheirDigits) {
     runTrace(s.result.program, request, stream);
     stream.flush();
     EXPECT_EQ(out,
-              QStringLiteral("scan,time_ms,DM 0000,hex:DM 0001\n0,0,0,#0001\n1,10,153,#0100\n"));
+              QStringLiteral("scan,time_ms,DM 0000,hex:DM 0001\n1,10,0,#0001\n2,20,153,#0100\n"));
     EXPECT_FALSE(parseTraceOptions(s.target,
                                    {QStringLiteral("--scans"), QStringLiteral("1"),
                                     QStringLiteral("--set"), QStringLiteral("DM 0000=#12G4@1"),

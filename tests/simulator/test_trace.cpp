@@ -41,7 +41,7 @@ TEST(Trace, BadOptionsSayWhatIsWrong) {
     }
 }
 
-TEST(Trace, PrintsOneRowPerScanWithStimuliAppliedBeforeTheirScan) {
+TEST(Trace, PrintsARowPerScanFromOneWithStimuliAppliedOnceTheirScansHaveRun) {
     auto t = test::makeTestTarget();
     const auto list = test::assemble(*t, QStringLiteral("LD X0\nOUT Y0\nLD X0\nTMR T0 K1\nEND"));
     const CompileResult c = compileProgram(list);
@@ -57,8 +57,8 @@ TEST(Trace, PrintsOneRowPerScanWithStimuliAppliedBeforeTheirScan) {
     runTrace(c.program, r, out);
     out.flush();
     EXPECT_EQ(csv, QStringLiteral("scan,time_ms,Y0,T0,cv:T0,D0\n"
-                                  "0,0,0,0,0,0\n"
-                                  "1,50,1,0,0,0\n"
+                                  "1,50,0,0,0,0\n"
                                   "2,100,1,0,0,0\n"
-                                  "3,150,0,0,0,0\n"));
+                                  "3,150,1,0,0,0\n"
+                                  "4,200,0,0,0,0\n"));
 }

@@ -1,4 +1,4 @@
-#include "symbols_csv.h"
+#include "model/project/symbols_csv.h"
 
 #include "model/target/address.h"
 
@@ -6,7 +6,7 @@
 
 #include <algorithm>
 
-namespace rung::editor {
+namespace rung::model {
 
 namespace {
 
@@ -83,15 +83,15 @@ std::vector<Record> records(const QString &text) {
 
 } // namespace
 
-QString symbolsToCsv(const model::Target &target, const std::vector<model::Symbol> &symbols) {
+QString symbolsToCsv(const Target &target, const std::vector<Symbol> &symbols) {
     QString text = QStringLiteral("device,name,comment\n");
-    for (const model::Symbol &s : symbols)
-        text += field(model::formatAddress(target, s.address)) + QLatin1Char(',') + field(s.name) +
+    for (const Symbol &s : symbols)
+        text += field(formatAddress(target, s.address)) + QLatin1Char(',') + field(s.name) +
                 QLatin1Char(',') + field(s.comment) + QLatin1Char('\n');
     return text;
 }
 
-SymbolsCsv symbolsFromCsv(const model::Target &target, const model::ModelVariant *modelVariant,
+SymbolsCsv symbolsFromCsv(const Target &target, const ModelVariant *modelVariant,
                           const QString &text) {
     SymbolsCsv result;
     QString body = text;
@@ -107,20 +107,20 @@ SymbolsCsv symbolsFromCsv(const model::Target &target, const model::ModelVariant
         first = false;
         if (device.isEmpty() && r.fields.join(QString()).trimmed().isEmpty())
             continue;
-        auto parsed = model::parseAddress(target, device, modelVariant);
-        if (auto *e = std::get_if<model::AddressError>(&parsed)) {
+        auto parsed = parseAddress(target, device, modelVariant);
+        if (auto *e = std::get_if<AddressError>(&parsed)) {
             result.error = device.isEmpty()
-                               ? QCoreApplication::translate("rung::editor::SymbolsCsv",
+                               ? QCoreApplication::translate("rung::model::SymbolsCsv",
                                                              "a symbol without a device")
                                : e->message;
             result.errorLine = r.line;
             result.symbols.clear();
             return result;
         }
-        model::Symbol s{std::get<model::Address>(parsed), r.fields.value(1).trimmed(),
-                        r.fields.value(2).trimmed()};
+        Symbol s{std::get<Address>(parsed), r.fields.value(1).trimmed(),
+                 r.fields.value(2).trimmed()};
         auto same = std::find_if(result.symbols.begin(), result.symbols.end(),
-                                 [&](const model::Symbol &o) { return o.address == s.address; });
+                                 [&](const Symbol &o) { return o.address == s.address; });
         if (same != result.symbols.end())
             *same = s;
         else
@@ -129,4 +129,4 @@ SymbolsCsv symbolsFromCsv(const model::Target &target, const model::ModelVariant
     return result;
 }
 
-} // namespace rung::editor
+} // namespace rung::model

@@ -1,10 +1,10 @@
-// The overlay's power flow (editor/power_flow.h) against the real scan engine: which nodes
+// The overlay's power flow (model/image/power_flow.h) against the real scan engine: which nodes
 // carry power, which contacts conduct, what the values under the boxes say, in series,
 // parallel, ANB and ORB blocks, inverted and edge contacts, an interlock that is off, a
 // source without power flow (an online PLC), and, over random programs of every family, that
 // every output's drawn condition is the one the scan computed.
 
-#include "editor/power_flow.h"
+#include "model/image/power_flow.h"
 
 #include "model/convert/convert.h"
 #include "model/target/address.h"
@@ -19,8 +19,8 @@
 #include <set>
 
 using namespace rung;
-using editor::ProgramFlow;
-using editor::RungOverlay;
+using model::ProgramFlow;
+using model::RungOverlay;
 
 namespace {
 

@@ -29,7 +29,7 @@
 #include <cstdint>
 #include <vector>
 
-namespace rung::editor {
+namespace rung::model {
 
 struct RungOverlay {
     int rows = 0;
@@ -94,58 +94,55 @@ class ProgramFlow {
 public:
     // `listing` is the running program's listing with its origin map; the snapshot must stay
     // alive as long as this object.
-    ProgramFlow(const model::LadderProgram &ladder, const model::ToListingResult &listing,
-                const model::Snapshot &snapshot);
+    ProgramFlow(const LadderProgram &ladder, const ToListingResult &listing,
+                const Snapshot &snapshot);
 
     RungOverlay rung(int index, bool stale = false) const;
     // Whether the snapshot's power flow matches the program (one result per instruction).
     bool hasPowerFlow() const { return m_hasFlow; }
 
     // Texts the overlay and the instruction list show for devices (translated).
-    static QString timerText(const model::Target &target, const model::Instruction &timer,
-                             const model::Snapshot &snapshot);
-    static QString counterText(const model::Target &target, const model::Instruction &counter,
-                               const model::Snapshot &snapshot);
+    static QString timerText(const Target &target, const Instruction &timer,
+                             const Snapshot &snapshot);
+    static QString counterText(const Target &target, const Instruction &counter,
+                               const Snapshot &snapshot);
     // A timer's or counter's values as numbers (a CPM1 word's BCD digits decoded). A
     // constant preset (K350, #0150) is the program's, shown as the box has it whether or not
     // the source ran the box yet (a stopped simulation's memory holds 0 until the box runs)
     // or can read it (online, no protocol area holds a Vigor K constant). Else the memory's
     // set value where it is known, else the word device the box names once read. Unknown:
     // nullopt.
-    static qint64 presentOf(const model::Target &target, const model::Address &element,
-                            const model::Snapshot &snapshot);
-    static std::optional<qint64> presetOf(const model::Target &target,
-                                          const model::Instruction *box,
-                                          const model::Address &element,
-                                          const model::Snapshot &snapshot);
+    static qint64 presentOf(const Target &target, const Address &element, const Snapshot &snapshot);
+    static std::optional<qint64> presetOf(const Target &target, const Instruction *box,
+                                          const Address &element, const Snapshot &snapshot);
     // The same as the memory word holds it (a CPM1's BCD digits), for a view that shows the
     // word in a format of its own (the watch table).
-    static std::optional<qint64> presetWordOf(const model::Target &target,
-                                              const model::Instruction *box,
-                                              const model::Address &element,
-                                              const model::Snapshot &snapshot);
+    static std::optional<qint64> presetWordOf(const Target &target, const Instruction *box,
+                                              const Address &element, const Snapshot &snapshot);
     // The timer or counter box of the program that drives an element (its first operand);
     // null when none does.
-    static const model::Instruction *boxOf(const std::vector<model::Instruction> &program,
-                                           const model::Address &element);
+    static const Instruction *boxOf(const std::vector<Instruction> &program,
+                                    const Address &element);
     // The values of an instruction's word devices ("D0 = 12  D1 = 3"); for a timer or
     // counter its elapsed / preset.
-    static QString valuesText(const model::Target &target, const model::Instruction &ins,
-                              const model::Snapshot &snapshot);
+    static QString valuesText(const Target &target, const Instruction &ins,
+                              const Snapshot &snapshot);
     // A word's value as the monitor writes it (decimal, sign as the word holds it).
-    static QString wordText(const model::Snapshot &snapshot, const model::Address &address);
+    static QString wordText(const Snapshot &snapshot, const Address &address);
+    // A bit's state as the monitor writes it ("ON", "OFF", translated).
+    static QString bitText(bool on);
 
 private:
     enum : std::int8_t { kUnknown = -1 };
     // A contact's conduction from the devices' values (-1: cannot be told, an edge).
-    std::int8_t fromDevices(const model::Contact &contact) const;
+    std::int8_t fromDevices(const Contact &contact) const;
 
-    const model::LadderProgram &m_ladder;
-    const model::ToListingResult &m_listing;
-    const model::Snapshot &m_snapshot;
+    const LadderProgram &m_ladder;
+    const ToListingResult &m_listing;
+    const Snapshot &m_snapshot;
     bool m_hasFlow = false;
     std::vector<std::int8_t> m_conducts; // per instruction, from the power flow
     std::vector<std::uint8_t> m_gate;    // per instruction: the interlock / step let it run
 };
 
-} // namespace rung::editor
+} // namespace rung::model

@@ -11,18 +11,18 @@
 
 #include <vector>
 
-namespace rung::editor {
+namespace rung::model {
 
-QString symbolsToCsv(const model::Target &target, const std::vector<model::Symbol> &symbols);
+QString symbolsToCsv(const Target &target, const std::vector<Symbol> &symbols);
 
 struct SymbolsCsv {
-    std::vector<model::Symbol> symbols; // in file order; a device listed again replaces itself
-    int errorLine = 0;                  // 1-based line of the first bad record
+    std::vector<Symbol> symbols; // in file order; a device listed again replaces itself
+    int errorLine = 0;           // 1-based line of the first bad record
     QString error;
     bool ok() const { return error.isEmpty(); }
 };
 
-SymbolsCsv symbolsFromCsv(const model::Target &target, const model::ModelVariant *modelVariant,
+SymbolsCsv symbolsFromCsv(const Target &target, const ModelVariant *modelVariant,
                           const QString &text);
 
-} // namespace rung::editor
+} // namespace rung::model

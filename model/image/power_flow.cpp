@@ -1,50 +1,28 @@
-#include "power_flow.h"
+#include "model/image/power_flow.h"
+
+#include "model/tr.h"
 
 #include "model/image/bcd.h"
 #include "model/listing/il.h"
 
 #include <QCoreApplication>
 
-namespace rung::editor {
+namespace rung::model {
 
 namespace {
 
-struct Tr {
-    Q_DECLARE_TR_FUNCTIONS(rung::editor::PowerFlow)
-};
-
-bool isDevice(const model::Operand &o) {
-    return o.kind == model::Operand::Kind::Device && o.address.valid();
+bool isDevice(const Operand &o) {
+    return o.kind == Operand::Kind::Device && o.address.valid();
 }
 
 // A bit the snapshot can say ON or OFF: a bit device, a channel's bit, a timer's or
 // counter's done bit.
-bool hasBit(const model::Snapshot &s, const model::Address &a) {
+bool hasBit(const Snapshot &s, const Address &a) {
     return s.layout && s.layout->bit(a).valid();
 }
 
-model::AreaKind kindOf(const model::Snapshot &s, const model::Address &a) {
+AreaKind kindOf(const Snapshot &s, const Address &a) {
     return s.layout->target().area(a.area).kind;
-}
-
-bool compare(model::CompareOp op, qint64 a, qint64 b) {
-    switch (op) {
-    case model::CompareOp::Eq:
-        return a == b;
-    case model::CompareOp::Ne:
-        return a != b;
-    case model::CompareOp::Lt:
-        return a < b;
-    case model::CompareOp::Le:
-        return a <= b;
-    case model::CompareOp::Gt:
-        return a > b;
-    case model::CompareOp::Ge:
-        return a >= b;
-    case model::CompareOp::None:
-        break;
-    }
-    return false;
 }
 
 // Time base in seconds as the overlay writes it: "0.1", "0.01", "1".
@@ -52,15 +30,15 @@ QString seconds(double baseMs) {
     return QString::number(baseMs / 1000.0, 'g', 6);
 }
 
-bool isCoil(model::Op op) {
-    return op == model::Op::Out || op == model::Op::Set || op == model::Op::Reset ||
-           op == model::Op::PulseRise || op == model::Op::PulseFall || op == model::Op::Keep;
+bool isCoil(Op op) {
+    return op == Op::Out || op == Op::Set || op == Op::Reset || op == Op::PulseRise ||
+           op == Op::PulseFall || op == Op::Keep;
 }
 
 } // namespace
 
-ProgramFlow::ProgramFlow(const model::LadderProgram &ladder, const model::ToListingResult &listing,
-                         const model::Snapshot &snapshot)
+ProgramFlow::ProgramFlow(const LadderProgram &ladder, const ToListingResult &listing,
+                         const Snapshot &snapshot)
     : m_ladder(ladder)
     , m_listing(listing)
     , m_snapshot(snapshot) {
@@ -79,35 +57,35 @@ ProgramFlow::ProgramFlow(const model::LadderProgram &ladder, const model::ToList
     bool step = true;
     const auto known = [](bool v) { return static_cast<std::int8_t>(v ? 1 : 0); };
     for (std::size_t i = 0; i < n; ++i) {
-        const model::Instruction &ins = instructions[i];
+        const Instruction &ins = instructions[i];
         const bool gate = interlock && step;
         m_gate[i] = gate ? 1 : 0;
         const bool result = m_hasFlow && flow[i];
         const bool before = m_hasFlow && i > 0 && flow[i - 1];
         switch (ins.op()) {
-        case model::Op::Load: // result = gate AND contact
+        case Op::Load: // result = gate AND contact
             if (m_hasFlow && gate)
                 m_conducts[i] = known(result);
             break;
-        case model::Op::And: // result = before AND contact
+        case Op::And: // result = before AND contact
             if (m_hasFlow && before)
                 m_conducts[i] = known(result);
             break;
-        case model::Op::Or: // result = before OR contact
+        case Op::Or: // result = before OR contact
             if (m_hasFlow && !before)
                 m_conducts[i] = known(result);
             break;
-        case model::Op::Invert: // INV / NOT, PL110 P / N: what the element passes on
+        case Op::Invert: // INV / NOT, PL110 P / N: what the element passes on
             if (m_hasFlow)
                 m_conducts[i] = known(result);
             break;
-        case model::Op::Interlock:
+        case Op::Interlock:
             interlock = m_hasFlow ? result : true;
             break;
-        case model::Op::InterlockClear:
+        case Op::InterlockClear:
             interlock = true;
             break;
-        case model::Op::StepLadder:
+        case Op::StepLadder:
             // The result is interlock AND step: it tells the step only while the interlock is
             // ON; otherwise the step relay's bit does.
             if (m_hasFlow && interlock)
@@ -116,7 +94,7 @@ ProgramFlow::ProgramFlow(const model::LadderProgram &ladder, const model::ToList
                 step = !ins.operands.empty() && isDevice(ins.operands[0]) &&
                        snapshot.bit(ins.operands[0].address);
             break;
-        case model::Op::Return:
+        case Op::Return:
             step = true;
             break;
         default:
@@ -125,36 +103,36 @@ ProgramFlow::ProgramFlow(const model::LadderProgram &ladder, const model::ToList
     }
 }
 
-std::int8_t ProgramFlow::fromDevices(const model::Contact &c) const {
+std::int8_t ProgramFlow::fromDevices(const Contact &c) const {
     if (c.invert || c.operands.empty() || !m_snapshot.layout)
         return kUnknown;
-    if (c.compare != model::CompareOp::None) {
+    if (c.compare != CompareOp::None) {
         if (c.operands.size() < 2)
             return kUnknown;
         qint64 v[2] = {0, 0};
         for (int k = 0; k < 2; ++k) {
-            const model::Operand &o = c.operands[static_cast<std::size_t>(k)];
+            const Operand &o = c.operands[static_cast<std::size_t>(k)];
             if (isDevice(o))
                 v[k] = m_snapshot.value(o.address);
-            else if (o.kind == model::Operand::Kind::Constant)
+            else if (o.kind == Operand::Kind::Constant)
                 v[k] = o.constant.value;
             else
                 return kUnknown;
         }
-        const bool holds = compare(c.compare, v[0], v[1]);
-        return (c.mode == model::ContactMode::Negated ? !holds : holds) ? 1 : 0;
+        const bool holds = compareHolds(c.compare, v[0], v[1]);
+        return (c.mode == ContactMode::Negated ? !holds : holds) ? 1 : 0;
     }
-    const model::Operand &o = c.operands.front();
+    const Operand &o = c.operands.front();
     if (!isDevice(o) || !hasBit(m_snapshot, o.address))
         return kUnknown;
     const bool on = m_snapshot.bit(o.address);
     switch (c.mode) {
-    case model::ContactMode::Normal:
+    case ContactMode::Normal:
         return on ? 1 : 0;
-    case model::ContactMode::Negated:
+    case ContactMode::Negated:
         return on ? 0 : 1;
-    case model::ContactMode::Rising:
-    case model::ContactMode::Falling:
+    case ContactMode::Rising:
+    case ContactMode::Falling:
         break; // an edge lasts one scan: only the power flow knows it
     }
     return kUnknown;
@@ -164,7 +142,7 @@ RungOverlay ProgramFlow::rung(int index, bool stale) const {
     RungOverlay o;
     if (index < 0 || index >= static_cast<int>(m_ladder.rungs.size()) || !m_snapshot.layout)
         return o;
-    const model::Rung &r = m_ladder.rungs[static_cast<std::size_t>(index)];
+    const Rung &r = m_ladder.rungs[static_cast<std::size_t>(index)];
     const int rows = r.rows;
     const int columns = r.columns;
     const int nodes = columns + 1;
@@ -192,7 +170,7 @@ RungOverlay ProgramFlow::rung(int index, bool stale) const {
             rail = m_gate[static_cast<std::size_t>(begin)] != 0;
         for (int i = std::max(0, begin); i < end && static_cast<std::size_t>(i) < m_conducts.size();
              ++i) {
-            const model::CellOrigin &at = m_listing.origin[static_cast<std::size_t>(i)];
+            const CellOrigin &at = m_listing.origin[static_cast<std::size_t>(i)];
             if (at.rung != index || at.row < 0 || at.row >= rows || at.column < 0 ||
                 at.column >= columns)
                 continue;
@@ -210,19 +188,19 @@ RungOverlay ProgramFlow::rung(int index, bool stale) const {
     std::vector<std::uint8_t> follows(static_cast<std::size_t>(rows * columns), 0);
     for (int row = 0; row < rows; ++row)
         for (int column = 0; column < columns; ++column) {
-            const model::Cell &c = r.cell(row, column);
+            const Cell &c = r.cell(row, column);
             const std::size_t k = cell(row, column);
-            if (c.kind == model::CellKind::Wire) {
+            if (c.kind == CellKind::Wire) {
                 pass[k] = Pass::Wire;
                 o.closed[k] = 1;
                 continue;
             }
-            if (c.kind != model::CellKind::Contact)
+            if (c.kind != CellKind::Contact)
                 continue;
-            const model::Contact &contact = c.contact;
+            const Contact &contact = c.contact;
             if (contact.invert) {
                 // NOT inverts what reaches it; P / N pass one scan's edge of it.
-                const bool edge = contact.mode != model::ContactMode::Normal;
+                const bool edge = contact.mode != ContactMode::Normal;
                 pass[k] = edge ? Pass::Scanned : Pass::Invert;
                 follows[k] = scanned[k] == 1 ? 1 : 0;
                 continue;
@@ -234,12 +212,12 @@ RungOverlay ProgramFlow::rung(int index, bool stale) const {
             o.closed[k] = shown == 1 ? 1 : 0;
             follows[k] = power == 1 ? 1 : 0;
             QStringList values;
-            for (const model::Operand &operand : contact.operands) {
+            for (const Operand &operand : contact.operands) {
                 if (!isDevice(operand))
                     continue;
                 if (m_snapshot.forced(operand.address))
                     o.forced[k] = 1;
-                if (contact.compare != model::CompareOp::None)
+                if (contact.compare != CompareOp::None)
                     values << wordText(m_snapshot, operand.address);
             }
             o.value[k] = values.join(QStringLiteral(", "));
@@ -294,37 +272,37 @@ RungOverlay ProgramFlow::rung(int index, bool stale) const {
             continue;
         RungOverlay::Output &out = o.outputs[static_cast<std::size_t>(row)];
         out.present = true;
-        const model::Op op = ins->op();
+        const Op op = ins->op();
         // END, STL, RET, ILC, JPE take no condition: no power flows to them.
-        if (model::isUnconditional(op))
+        if (isUnconditional(op))
             o.node[static_cast<std::size_t>(row * nodes + columns)] = 0;
         out.powered = o.node[static_cast<std::size_t>(row * nodes + columns)] != 0;
-        const model::Operand *device = !ins->operands.empty() && isDevice(ins->operands.front())
-                                           ? &ins->operands.front()
-                                           : nullptr;
+        const Operand *device = !ins->operands.empty() && isDevice(ins->operands.front())
+                                    ? &ins->operands.front()
+                                    : nullptr;
         // A coil's device, a timer's or counter's done bit, the step relay of an STL.
         if (device &&
-            (isCoil(op) || op == model::Op::Timer || op == model::Op::Counter ||
-             op == model::Op::UpDownCounter || op == model::Op::StepLadder) &&
+            (isCoil(op) || op == Op::Timer || op == Op::Counter || op == Op::UpDownCounter ||
+             op == Op::StepLadder) &&
             hasBit(m_snapshot, device->address)) {
             out.hasBit = true;
             out.on = m_snapshot.bit(device->address);
         }
-        for (const model::Operand &operand : ins->operands)
+        for (const Operand &operand : ins->operands)
             if (isDevice(operand) && m_snapshot.forced(operand.address))
                 out.forced = true;
-        if (!isCoil(op) && op != model::Op::StepLadder)
+        if (!isCoil(op) && op != Op::StepLadder)
             out.value = valuesText(m_ladder.target ? *m_ladder.target : m_snapshot.layout->target(),
                                    *ins, m_snapshot);
     }
     return o;
 }
 
-QString ProgramFlow::wordText(const model::Snapshot &snapshot, const model::Address &address) {
+QString ProgramFlow::wordText(const Snapshot &snapshot, const Address &address) {
     if (!snapshot.layout)
         return {};
-    if (address.bit >= 0 || kindOf(snapshot, address) == model::AreaKind::Bit)
-        return snapshot.bit(address) ? Tr::tr("ON") : Tr::tr("OFF");
+    if (address.bit >= 0 || kindOf(snapshot, address) == AreaKind::Bit)
+        return bitText(snapshot.bit(address));
     return QString::number(snapshot.value(address));
 }
 
@@ -332,8 +310,8 @@ namespace {
 
 // A CPM1 TIM's or CNT's present and set values hold BCD digits (W353); a word that is not
 // BCD is shown as it is rather than as a wrong number.
-qint64 setValueNumber(const model::Target &target, qint64 word) {
-    return target.constants.bcdSetValues ? model::fromBcd(word).value_or(word) : word;
+qint64 setValueNumber(const Target &target, qint64 word) {
+    return target.constants.bcdSetValues ? fromBcd(word).value_or(word) : word;
 }
 
 QString numberOrUnknown(std::optional<qint64> value) {
@@ -342,24 +320,22 @@ QString numberOrUnknown(std::optional<qint64> value) {
 
 } // namespace
 
-qint64 ProgramFlow::presentOf(const model::Target &target, const model::Address &element,
-                              const model::Snapshot &snapshot) {
+qint64 ProgramFlow::presentOf(const Target &target, const Address &element,
+                              const Snapshot &snapshot) {
     return setValueNumber(target, snapshot.value(element));
 }
 
-std::optional<qint64> ProgramFlow::presetWordOf(const model::Target &target,
-                                                const model::Instruction *box,
-                                                const model::Address &element,
-                                                const model::Snapshot &snapshot) {
-    const model::Operand *preset =
+std::optional<qint64> ProgramFlow::presetWordOf(const Target &target, const Instruction *box,
+                                                const Address &element, const Snapshot &snapshot) {
+    const Operand *preset =
         box && box->operands.size() >= 2 && box->operands.front().address == element
             ? &box->operands[1]
             : nullptr;
     if (preset && preset->modified()) // indexed: only the PLC knows which word it read
         preset = nullptr;
     // CPM1 #0150 is the number 150 already; its word holds the digits.
-    if (preset && preset->kind == model::Operand::Kind::Constant)
-        return target.constants.bcdSetValues ? model::toBcd(preset->constant.value)
+    if (preset && preset->kind == Operand::Kind::Constant)
+        return target.constants.bcdSetValues ? toBcd(preset->constant.value)
                                              : preset->constant.value;
     if (snapshot.setValueKnown(element))
         return snapshot.setValue(element);
@@ -368,20 +344,17 @@ std::optional<qint64> ProgramFlow::presetWordOf(const model::Target &target,
     return std::nullopt;
 }
 
-std::optional<qint64> ProgramFlow::presetOf(const model::Target &target,
-                                            const model::Instruction *box,
-                                            const model::Address &element,
-                                            const model::Snapshot &snapshot) {
+std::optional<qint64> ProgramFlow::presetOf(const Target &target, const Instruction *box,
+                                            const Address &element, const Snapshot &snapshot) {
     const std::optional<qint64> word = presetWordOf(target, box, element, snapshot);
     return word ? std::optional<qint64>(setValueNumber(target, *word)) : std::nullopt;
 }
 
-const model::Instruction *ProgramFlow::boxOf(const std::vector<model::Instruction> &program,
-                                             const model::Address &element) {
-    for (const model::Instruction &ins : program) {
-        const model::Op op = ins.op();
-        if ((op == model::Op::Timer || op == model::Op::Counter ||
-             op == model::Op::UpDownCounter) &&
+const Instruction *ProgramFlow::boxOf(const std::vector<Instruction> &program,
+                                      const Address &element) {
+    for (const Instruction &ins : program) {
+        const Op op = ins.op();
+        if ((op == Op::Timer || op == Op::Counter || op == Op::UpDownCounter) &&
             !ins.operands.empty() && isDevice(ins.operands.front()) &&
             ins.operands.front().address == element)
             return &ins;
@@ -389,55 +362,58 @@ const model::Instruction *ProgramFlow::boxOf(const std::vector<model::Instructio
     return nullptr;
 }
 
-QString ProgramFlow::timerText(const model::Target &target, const model::Instruction &timer,
-                               const model::Snapshot &snapshot) {
+QString ProgramFlow::timerText(const Target &target, const Instruction &timer,
+                               const Snapshot &snapshot) {
     if (timer.operands.empty() || !isDevice(timer.operands.front()))
         return {};
-    const model::Address &t = timer.operands.front().address;
+    const Address &t = timer.operands.front().address;
     const qint64 current = presentOf(target, t, snapshot);
     const std::optional<qint64> set = presetOf(target, &timer, t, snapshot);
-    const bool down = model::timerCountsDown(target, t);
+    const bool down = timerCountsDown(target, t);
     // A timer that counts down shows the time elapsed, which needs the set value.
     const std::optional<qint64> elapsed = !down ? std::optional<qint64>(current)
                                           : set ? std::optional<qint64>(*set - current)
                                                 : std::nullopt;
-    const double base = model::timerBaseMs(target, timer);
+    const double base = timerBaseMs(target, timer);
     if (base <= 0)
         return QStringLiteral("%1/%2").arg(numberOrUnknown(elapsed), numberOrUnknown(set));
     //: a timer's time elapsed / set value in its units, then the unit: "23/50 ×0.1 s"
-    return Tr::tr("%1/%2 ×%3 s")
+    return PowerFlowTr::tr("%1/%2 ×%3 s")
         .arg(numberOrUnknown(elapsed), numberOrUnknown(set))
         .arg(seconds(base));
 }
 
-QString ProgramFlow::counterText(const model::Target &target, const model::Instruction &counter,
-                                 const model::Snapshot &snapshot) {
+QString ProgramFlow::counterText(const Target &target, const Instruction &counter,
+                                 const Snapshot &snapshot) {
     if (counter.operands.empty() || !isDevice(counter.operands.front()))
         return {};
-    const model::Address &c = counter.operands.front().address;
+    const Address &c = counter.operands.front().address;
     return QStringLiteral("%1/%2").arg(QString::number(presentOf(target, c, snapshot)),
                                        numberOrUnknown(presetOf(target, &counter, c, snapshot)));
 }
 
-QString ProgramFlow::valuesText(const model::Target &target, const model::Instruction &ins,
-                                const model::Snapshot &snapshot) {
+QString ProgramFlow::valuesText(const Target &target, const Instruction &ins,
+                                const Snapshot &snapshot) {
     if (!snapshot.layout)
         return {};
-    const model::Op op = ins.op();
-    if (op == model::Op::Timer)
+    const Op op = ins.op();
+    if (op == Op::Timer)
         return timerText(target, ins, snapshot);
-    if (op == model::Op::Counter || op == model::Op::UpDownCounter)
+    if (op == Op::Counter || op == Op::UpDownCounter)
         return counterText(target, ins, snapshot);
     QStringList parts;
-    for (const model::Operand &o : ins.operands) {
-        if (!isDevice(o) || o.address.bit >= 0 ||
-            kindOf(snapshot, o.address) == model::AreaKind::Bit)
+    for (const Operand &o : ins.operands) {
+        if (!isDevice(o) || o.address.bit >= 0 || kindOf(snapshot, o.address) == AreaKind::Bit)
             continue;
         //: a device and its value under a box: "D0 = 12"
-        parts << Tr::tr("%1 = %2").arg(model::formatOperand(target, o),
-                                       wordText(snapshot, o.address));
+        parts << PowerFlowTr::tr("%1 = %2").arg(formatOperand(target, o),
+                                                wordText(snapshot, o.address));
     }
     return parts.join(QStringLiteral("  "));
 }
 
-} // namespace rung::editor
+QString ProgramFlow::bitText(bool on) {
+    return on ? PowerFlowTr::tr("ON") : PowerFlowTr::tr("OFF");
+}
+
+} // namespace rung::model
