@@ -649,15 +649,19 @@ void IlEditor::updateCallTip() {
     getCursorPosition(&line, &index);
     const QString word =
         text(line).section(QLatin1Char(';'), 0, 0).simplified().section(QLatin1Char(' '), 0, 0);
+    // An instruction without operands (END, ANB) still says what it does.
     const model::InstructionSpec *s = m_target->findInstruction(word);
-    if (s && s->operandHelp)
-        setToolTip(QStringLiteral("%1 %2 — %3")
-                       .arg(s->mnemonic, QString::fromLatin1(s->operandHelp),
-                            s->summary
-                                ? QCoreApplication::translate("rung::model::Target", s->summary)
-                                : QString()));
-    else
+    if (!s) {
         setToolTip(QString());
+        return;
+    }
+    QString tip = s->mnemonic;
+    if (s->operandHelp)
+        tip += QLatin1Char(' ') + QString::fromLatin1(s->operandHelp);
+    if (s->summary)
+        tip +=
+            QStringLiteral(" — ") + QCoreApplication::translate("rung::model::Target", s->summary);
+    setToolTip(tip);
 }
 
 void IlEditor::changeEvent(QEvent *event) {

@@ -64,8 +64,9 @@ TEST_F(ExportFixture, SvgIsVectorTextWithTheDevices) {
         << error.toStdString();
     const QByteArray svg = read(QStringLiteral("ladder.svg"));
     EXPECT_TRUE(svg.contains("<svg"));
-    EXPECT_TRUE(svg.contains(">X0<") || svg.contains("X0")) << svg.left(400).toStdString();
-    EXPECT_TRUE(svg.contains("Y7"));
+    // The devices are text elements of their own, not paths: a reader can search them.
+    EXPECT_TRUE(svg.contains(">X0<")) << svg.left(400).toStdString();
+    EXPECT_TRUE(svg.contains(">Y7<"));
 }
 
 TEST_F(ExportFixture, PdfIsThePrintoutOnSeveralPages) {
