@@ -4,7 +4,7 @@
 <context>
     <name>rung::app::MainWindow</name>
     <message numerus="yes">
-        <location filename="../app/gui/main_window.cpp" line="+371"/>
+        <location filename="../app/gui/main_window.cpp" line="+239"/>
         <source>%n rung(s)</source>
         <translation>
             <numerusform>%n rung</numerusform>

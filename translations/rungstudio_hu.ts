@@ -776,26 +776,95 @@ Válaszidő: %6 ms (átlag %7, max. %8); frissítés: %9 ms, %10 keret</translat
     </message>
 </context>
 <context>
+    <name>rung::app::ListingController</name>
+    <message>
+        <location filename="../app/gui/listing_controller.cpp" line="+66"/>
+        <source>The list as typed had errors and now shows the ladder&apos;s program; Ctrl+Z in the list brings it back</source>
+        <translation>A begépelt lista hibás volt, most a létradiagram programját mutatja; a listában a Ctrl+Z visszahozza</translation>
+    </message>
+    <message>
+        <location line="+94"/>
+        <source>The list as typed was taken first and changed rung %1, so the ladder edit was not made: make it again on the rung as it is now.</source>
+        <translation>A begépelt lista került előbb a programba, és megváltoztatta a(z) %1. létrafokot, ezért a létradiagram módosítása nem történt meg: végezze el újra a létrafok mostani állapotán.</translation>
+    </message>
+    <message>
+        <location line="+13"/>
+        <source>Replace the Instruction List?</source>
+        <translation>Lecseréli az utasításlistát?</translation>
+    </message>
+    <message>
+        <location line="+1"/>
+        <source>The instruction list as typed has errors (line %1: %2).</source>
+        <translation>A begépelt utasításlista hibás (%1. sor: %2).</translation>
+    </message>
+    <message>
+        <location line="+5"/>
+        <source>This change to the ladder replaces the list with the ladder&apos;s program; Ctrl+Z in the list brings the typed text back. Cancel keeps the list as typed and leaves the ladder as it is.</source>
+        <translation>A létradiagram e módosítása a listát a létradiagram programjára cseréli; a listában a Ctrl+Z visszahozza a begépelt szöveget. A Mégse megtartja a begépelt listát, és a létradiagramot változatlanul hagyja.</translation>
+    </message>
+    <message>
+        <location line="+3"/>
+        <source>Replace the List</source>
+        <translation>Lista cseréje</translation>
+    </message>
+    <message>
+        <location line="+25"/>
+        <source>The instruction list has %1: line %2: %3. The ladder shows the last valid program.</source>
+        <translation>Az utasításlistában %1 van: %2. sor: %3. A létradiagram az utolsó érvényes programot mutatja.</translation>
+    </message>
+    <message>
+        <location line="+2"/>
+        <source>an error</source>
+        <translation>egy hiba</translation>
+    </message>
+    <message>
+        <location line="+0"/>
+        <source>%1 errors</source>
+        <translation>%1 hiba</translation>
+    </message>
+    <message>
+        <location line="+53"/>
+        <source>&amp;Redo</source>
+        <translation>&amp;Mégis</translation>
+    </message>
+    <message>
+        <location line="+0"/>
+        <source>&amp;Undo</source>
+        <translation>&amp;Visszavonás</translation>
+    </message>
+    <message>
+        <location line="+2"/>
+        <source>&amp;Redo %1</source>
+        <extracomment>%1 is the step&apos;s label, e.g. &quot;Insert rung&quot;</extracomment>
+        <translation>&amp;Mégis: %1</translation>
+    </message>
+    <message>
+        <location line="+0"/>
+        <source>&amp;Undo %1</source>
+        <translation>&amp;Visszavonás: %1</translation>
+    </message>
+</context>
+<context>
     <name>rung::app::MainWindow</name>
     <message>
-        <location filename="../app/gui/main_window.cpp" line="+173"/>
+        <location filename="../app/gui/main_window.cpp" line="+174"/>
         <source>Problems</source>
         <translation>Problémák</translation>
     </message>
     <message>
         <location line="+5"/>
-        <location line="+343"/>
+        <location line="+151"/>
         <source>Project</source>
         <translation>Projekt</translation>
     </message>
     <message>
-        <location line="-336"/>
-        <location line="+339"/>
+        <location line="-144"/>
+        <location line="+147"/>
         <source>Symbols</source>
         <translation>Szimbólumok</translation>
     </message>
     <message>
-        <location filename="../app/gui/main_window_actions.cpp" line="+49"/>
+        <location filename="../app/gui/main_window_actions.cpp" line="+50"/>
         <source>&amp;File</source>
         <translation>&amp;Fájl</translation>
     </message>
@@ -1009,17 +1078,7 @@ Ctrl+Z / Ctrl+Y: visszavonás / mégis, Ctrl+görgő: nagyítás, F4: a program 
         <translation>Online: Ctrl+W online kapcsolódás / bontás, Ctrl+1 STOP (PROGRAM), Ctrl+3 MONITOR, Ctrl+4 RUN</translation>
     </message>
     <message>
-        <location line="+22"/>
-        <source>&amp;Undo</source>
-        <translation>&amp;Visszavonás</translation>
-    </message>
-    <message>
-        <location line="+0"/>
-        <source>&amp;Redo</source>
-        <translation>&amp;Mégis</translation>
-    </message>
-    <message>
-        <location line="-180"/>
+        <location line="-158"/>
         <source>Select</source>
         <translation>Kijelölés</translation>
     </message>
@@ -1161,7 +1220,7 @@ Ctrl+Z / Ctrl+Y: visszavonás / mégis, Ctrl+görgő: nagyítás, F4: a program 
         <translation>A Rung Studio &amp;névjegye</translation>
     </message>
     <message>
-        <location filename="../app/gui/main_window.cpp" line="-321"/>
+        <location filename="../app/gui/main_window.cpp" line="-129"/>
         <source>Rung Comment</source>
         <translation>Létrafok megjegyzése</translation>
     </message>
@@ -1172,48 +1231,18 @@ Ctrl+Z / Ctrl+Y: visszavonás / mégis, Ctrl+görgő: nagyítás, F4: a program 
     </message>
     <message>
         <location line="+22"/>
-        <location line="+303"/>
+        <location line="+111"/>
         <source>Ladder</source>
         <translation>Létradiagram</translation>
     </message>
     <message>
-        <location line="-302"/>
-        <location line="+303"/>
+        <location line="-110"/>
+        <location line="+111"/>
         <source>Instruction List</source>
         <translation>Utasításlista</translation>
     </message>
     <message>
-        <location line="-290"/>
-        <source>The list as typed had errors and now shows the ladder&apos;s program; Ctrl+Z in the list brings it back</source>
-        <translation>A begépelt lista hibás volt, most a létradiagram programját mutatja; a listában a Ctrl+Z visszahozza</translation>
-    </message>
-    <message>
-        <location line="+96"/>
-        <source>The list as typed was taken first and changed rung %1, so the ladder edit was not made: make it again on the rung as it is now.</source>
-        <translation>A begépelt lista került előbb a programba, és megváltoztatta a(z) %1. létrafokot, ezért a létradiagram módosítása nem történt meg: végezze el újra a létrafok mostani állapotán.</translation>
-    </message>
-    <message>
-        <location line="+13"/>
-        <source>Replace the Instruction List?</source>
-        <translation>Lecseréli az utasításlistát?</translation>
-    </message>
-    <message>
-        <location line="+1"/>
-        <source>The instruction list as typed has errors (line %1: %2).</source>
-        <translation>A begépelt utasításlista hibás (%1. sor: %2).</translation>
-    </message>
-    <message>
-        <location line="+5"/>
-        <source>This change to the ladder replaces the list with the ladder&apos;s program; Ctrl+Z in the list brings the typed text back. Cancel keeps the list as typed and leaves the ladder as it is.</source>
-        <translation>A létradiagram e módosítása a listát a létradiagram programjára cseréli; a listában a Ctrl+Z visszahozza a begépelt szöveget. A Mégse megtartja a begépelt listát, és a létradiagramot változatlanul hagyja.</translation>
-    </message>
-    <message>
-        <location line="+3"/>
-        <source>Replace the List</source>
-        <translation>Lista cseréje</translation>
-    </message>
-    <message>
-        <location line="+11"/>
+        <location line="-102"/>
         <source>&lt;b&gt;%1&lt;/b&gt;&lt;br&gt;Target: %2, model %3&lt;br&gt;%4, %5</source>
         <translation>&lt;b&gt;%1&lt;/b&gt;&lt;br&gt;PLC-család: %2, modell: %3&lt;br&gt;%4, %5</translation>
     </message>
@@ -1232,22 +1261,7 @@ Ctrl+Z / Ctrl+Y: visszavonás / mégis, Ctrl+görgő: nagyítás, F4: a program 
         </translation>
     </message>
     <message>
-        <location line="+20"/>
-        <source>The instruction list has %1: line %2: %3. The ladder shows the last valid program.</source>
-        <translation>Az utasításlistában %1 van: %2. sor: %3. A létradiagram az utolsó érvényes programot mutatja.</translation>
-    </message>
-    <message>
-        <location line="+2"/>
-        <source>an error</source>
-        <translation>egy hiba</translation>
-    </message>
-    <message>
-        <location line="+0"/>
-        <source>%1 errors</source>
-        <translation>%1 hiba</translation>
-    </message>
-    <message>
-        <location line="+13"/>
+        <location line="+6"/>
         <source>%1 %2</source>
         <translation>%1 %2</translation>
     </message>
@@ -1265,17 +1279,6 @@ Ctrl+Z / Ctrl+Y: visszavonás / mégis, Ctrl+görgő: nagyítás, F4: a program 
         <location line="+4"/>
         <source>Rung %1, row %2, column %3</source>
         <translation>%1. létrafok, %2. sor, %3. oszlop</translation>
-    </message>
-    <message>
-        <location filename="../app/gui/main_window_actions.cpp" line="+21"/>
-        <source>&amp;Redo %1</source>
-        <extracomment>%1 is the step&apos;s label, e.g. &quot;Insert rung&quot;</extracomment>
-        <translation>&amp;Mégis: %1</translation>
-    </message>
-    <message>
-        <location line="+0"/>
-        <source>&amp;Undo %1</source>
-        <translation>&amp;Visszavonás: %1</translation>
     </message>
     <message>
         <location filename="../app/gui/main_window_files.cpp" line="+64"/>
@@ -1309,7 +1312,7 @@ Ctrl+Z / Ctrl+Y: visszavonás / mégis, Ctrl+görgő: nagyítás, F4: a program 
         <translation>%1 hibás; a létradiagram a hibák javítása után követi</translation>
     </message>
     <message>
-        <location line="+33"/>
+        <location line="+31"/>
         <location filename="../app/gui/main_window_online.cpp" line="+82"/>
         <source>Cannot save</source>
         <translation>A mentés nem sikerült</translation>
@@ -1325,7 +1328,7 @@ Ctrl+Z / Ctrl+Y: visszavonás / mégis, Ctrl+görgő: nagyítás, F4: a program 
         <translation>Mentve: %1, az utasításlistával úgy, ahogy begépelte; hibás, ezért a létradiagram az utolsó érvényes programot mutatja, amíg a hibákat ki nem javítja</translation>
     </message>
     <message>
-        <location line="+12"/>
+        <location line="+11"/>
         <source>Unsaved changes</source>
         <translation>Nem mentett változások</translation>
     </message>
@@ -1385,7 +1388,7 @@ Ctrl+Z / Ctrl+Y: visszavonás / mégis, Ctrl+görgő: nagyítás, F4: a program 
         <translation>Utasításlisták (*.il *.txt);;Minden fájl (*)</translation>
     </message>
     <message>
-        <location line="+17"/>
+        <location line="+16"/>
         <source>Export Instruction List</source>
         <translation>Utasításlista exportálása</translation>
     </message>
@@ -1404,17 +1407,17 @@ Ctrl+Z / Ctrl+Y: visszavonás / mégis, Ctrl+görgő: nagyítás, F4: a program 
         <translation>Az exportálás nem sikerült</translation>
     </message>
     <message>
-        <location line="-208"/>
+        <location line="-204"/>
         <source>%1, line %2, column %3: %4</source>
         <translation>%1, %2. sor, %3. oszlop: %4</translation>
     </message>
     <message>
-        <location line="+129"/>
+        <location line="+126"/>
         <source>Rung Studio projects (*.rung);;Instruction lists (*.il *.txt);;Ladder texts (*.ladder)</source>
         <translation>Rung Studio projektek (*.rung);;Utasításlisták (*.il *.txt);;Létraszövegek (*.ladder)</translation>
     </message>
     <message>
-        <location line="+74"/>
+        <location line="+73"/>
         <source>Export Ladder</source>
         <translation>Létradiagram exportálása</translation>
     </message>
@@ -1512,7 +1515,7 @@ Ctrl+Z / Ctrl+Y: visszavonás / mégis, Ctrl+görgő: nagyítás, F4: a program 
         </translation>
     </message>
     <message>
-        <location filename="../app/gui/main_window.cpp" line="+105"/>
+        <location filename="../app/gui/main_window.cpp" line="+75"/>
         <location filename="../app/gui/main_window_tools.cpp" line="-24"/>
         <source>Cross Reference</source>
         <translation>Kereszthivatkozás</translation>
@@ -1870,7 +1873,7 @@ Ctrl+Z / Ctrl+Y: visszavonás / mégis, Ctrl+görgő: nagyítás, F4: a program 
         <translation>&amp;Offline (kapcsolat bontása)</translation>
     </message>
     <message>
-        <location filename="../app/gui/main_window_files.cpp" line="-307"/>
+        <location filename="../app/gui/main_window_files.cpp" line="-303"/>
         <source>%1: this version of Rung Studio cannot open networks (.rungnet) or test scenarios (.rungtest) in the window yet</source>
         <translation>%1: a Rung Studio ezen változata az ablakban még nem tud hálózatot (.rungnet) vagy tesztforgatókönyvet (.rungtest) megnyitni</translation>
     </message>

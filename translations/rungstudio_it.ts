@@ -776,26 +776,95 @@ Andata e ritorno %6 ms (media %7, max %8); aggiornamento %9 ms, %10 frame</trans
     </message>
 </context>
 <context>
+    <name>rung::app::ListingController</name>
+    <message>
+        <location filename="../app/gui/listing_controller.cpp" line="+66"/>
+        <source>The list as typed had errors and now shows the ladder&apos;s program; Ctrl+Z in the list brings it back</source>
+        <translation>La lista digitata conteneva errori e ora mostra il programma dello schema ladder; Ctrl+Z nella lista la ripristina</translation>
+    </message>
+    <message>
+        <location line="+94"/>
+        <source>The list as typed was taken first and changed rung %1, so the ladder edit was not made: make it again on the rung as it is now.</source>
+        <translation>La lista digitata è stata applicata per prima e ha cambiato il segmento %1, quindi la modifica dello schema ladder non è stata fatta: ripeterla sul segmento com&apos;è ora.</translation>
+    </message>
+    <message>
+        <location line="+13"/>
+        <source>Replace the Instruction List?</source>
+        <translation>Sostituire la lista istruzioni?</translation>
+    </message>
+    <message>
+        <location line="+1"/>
+        <source>The instruction list as typed has errors (line %1: %2).</source>
+        <translation>La lista istruzioni digitata contiene errori (riga %1: %2).</translation>
+    </message>
+    <message>
+        <location line="+5"/>
+        <source>This change to the ladder replaces the list with the ladder&apos;s program; Ctrl+Z in the list brings the typed text back. Cancel keeps the list as typed and leaves the ladder as it is.</source>
+        <translation>Questa modifica dello schema ladder sostituisce la lista con il programma dello schema ladder; Ctrl+Z nella lista ripristina il testo digitato. Annulla mantiene la lista digitata e lascia lo schema ladder invariato.</translation>
+    </message>
+    <message>
+        <location line="+3"/>
+        <source>Replace the List</source>
+        <translation>Sostituisci la lista</translation>
+    </message>
+    <message>
+        <location line="+25"/>
+        <source>The instruction list has %1: line %2: %3. The ladder shows the last valid program.</source>
+        <translation>La lista istruzioni contiene %1: riga %2: %3. Lo schema ladder mostra l&apos;ultimo programma valido.</translation>
+    </message>
+    <message>
+        <location line="+2"/>
+        <source>an error</source>
+        <translation>un errore</translation>
+    </message>
+    <message>
+        <location line="+0"/>
+        <source>%1 errors</source>
+        <translation>%1 errori</translation>
+    </message>
+    <message>
+        <location line="+53"/>
+        <source>&amp;Redo</source>
+        <translation>&amp;Ripeti</translation>
+    </message>
+    <message>
+        <location line="+0"/>
+        <source>&amp;Undo</source>
+        <translation>&amp;Annulla</translation>
+    </message>
+    <message>
+        <location line="+2"/>
+        <source>&amp;Redo %1</source>
+        <extracomment>%1 is the step&apos;s label, e.g. &quot;Insert rung&quot;</extracomment>
+        <translation>&amp;Ripeti %1</translation>
+    </message>
+    <message>
+        <location line="+0"/>
+        <source>&amp;Undo %1</source>
+        <translation>&amp;Annulla %1</translation>
+    </message>
+</context>
+<context>
     <name>rung::app::MainWindow</name>
     <message>
-        <location filename="../app/gui/main_window.cpp" line="+173"/>
+        <location filename="../app/gui/main_window.cpp" line="+174"/>
         <source>Problems</source>
         <translation>Problemi</translation>
     </message>
     <message>
         <location line="+5"/>
-        <location line="+343"/>
+        <location line="+151"/>
         <source>Project</source>
         <translation>Progetto</translation>
     </message>
     <message>
-        <location line="-336"/>
-        <location line="+339"/>
+        <location line="-144"/>
+        <location line="+147"/>
         <source>Symbols</source>
         <translation>Simboli</translation>
     </message>
     <message>
-        <location filename="../app/gui/main_window_actions.cpp" line="+49"/>
+        <location filename="../app/gui/main_window_actions.cpp" line="+50"/>
         <source>&amp;File</source>
         <translation>&amp;File</translation>
     </message>
@@ -1009,17 +1078,7 @@ Ctrl+Z / Ctrl+Y: annulla / ripeti, Ctrl+rotellina: zoom, F4: verifica il program
         <translation>In linea: Ctrl+W vai online / offline, Ctrl+1 STOP (PROGRAM), Ctrl+3 MONITOR, Ctrl+4 RUN</translation>
     </message>
     <message>
-        <location line="+22"/>
-        <source>&amp;Undo</source>
-        <translation>&amp;Annulla</translation>
-    </message>
-    <message>
-        <location line="+0"/>
-        <source>&amp;Redo</source>
-        <translation>&amp;Ripeti</translation>
-    </message>
-    <message>
-        <location line="-180"/>
+        <location line="-158"/>
         <source>Select</source>
         <translation>Seleziona</translation>
     </message>
@@ -1161,7 +1220,7 @@ Ctrl+Z / Ctrl+Y: annulla / ripeti, Ctrl+rotellina: zoom, F4: verifica il program
         <translation>&amp;Informazioni su Rung Studio</translation>
     </message>
     <message>
-        <location filename="../app/gui/main_window.cpp" line="-321"/>
+        <location filename="../app/gui/main_window.cpp" line="-129"/>
         <source>Rung Comment</source>
         <translation>Commento del segmento</translation>
     </message>
@@ -1172,48 +1231,18 @@ Ctrl+Z / Ctrl+Y: annulla / ripeti, Ctrl+rotellina: zoom, F4: verifica il program
     </message>
     <message>
         <location line="+22"/>
-        <location line="+303"/>
+        <location line="+111"/>
         <source>Ladder</source>
         <translation>Ladder</translation>
     </message>
     <message>
-        <location line="-302"/>
-        <location line="+303"/>
+        <location line="-110"/>
+        <location line="+111"/>
         <source>Instruction List</source>
         <translation>Lista istruzioni</translation>
     </message>
     <message>
-        <location line="-290"/>
-        <source>The list as typed had errors and now shows the ladder&apos;s program; Ctrl+Z in the list brings it back</source>
-        <translation>La lista digitata conteneva errori e ora mostra il programma dello schema ladder; Ctrl+Z nella lista la ripristina</translation>
-    </message>
-    <message>
-        <location line="+96"/>
-        <source>The list as typed was taken first and changed rung %1, so the ladder edit was not made: make it again on the rung as it is now.</source>
-        <translation>La lista digitata è stata applicata per prima e ha cambiato il segmento %1, quindi la modifica dello schema ladder non è stata fatta: ripeterla sul segmento com&apos;è ora.</translation>
-    </message>
-    <message>
-        <location line="+13"/>
-        <source>Replace the Instruction List?</source>
-        <translation>Sostituire la lista istruzioni?</translation>
-    </message>
-    <message>
-        <location line="+1"/>
-        <source>The instruction list as typed has errors (line %1: %2).</source>
-        <translation>La lista istruzioni digitata contiene errori (riga %1: %2).</translation>
-    </message>
-    <message>
-        <location line="+5"/>
-        <source>This change to the ladder replaces the list with the ladder&apos;s program; Ctrl+Z in the list brings the typed text back. Cancel keeps the list as typed and leaves the ladder as it is.</source>
-        <translation>Questa modifica dello schema ladder sostituisce la lista con il programma dello schema ladder; Ctrl+Z nella lista ripristina il testo digitato. Annulla mantiene la lista digitata e lascia lo schema ladder invariato.</translation>
-    </message>
-    <message>
-        <location line="+3"/>
-        <source>Replace the List</source>
-        <translation>Sostituisci la lista</translation>
-    </message>
-    <message>
-        <location line="+11"/>
+        <location line="-102"/>
         <source>&lt;b&gt;%1&lt;/b&gt;&lt;br&gt;Target: %2, model %3&lt;br&gt;%4, %5</source>
         <translation>&lt;b&gt;%1&lt;/b&gt;&lt;br&gt;Famiglia PLC: %2, modello %3&lt;br&gt;%4, %5</translation>
     </message>
@@ -1234,22 +1263,7 @@ Ctrl+Z / Ctrl+Y: annulla / ripeti, Ctrl+rotellina: zoom, F4: verifica il program
         </translation>
     </message>
     <message>
-        <location line="+20"/>
-        <source>The instruction list has %1: line %2: %3. The ladder shows the last valid program.</source>
-        <translation>La lista istruzioni contiene %1: riga %2: %3. Lo schema ladder mostra l&apos;ultimo programma valido.</translation>
-    </message>
-    <message>
-        <location line="+2"/>
-        <source>an error</source>
-        <translation>un errore</translation>
-    </message>
-    <message>
-        <location line="+0"/>
-        <source>%1 errors</source>
-        <translation>%1 errori</translation>
-    </message>
-    <message>
-        <location line="+13"/>
+        <location line="+6"/>
         <source>%1 %2</source>
         <translation>%1 %2</translation>
     </message>
@@ -1267,17 +1281,6 @@ Ctrl+Z / Ctrl+Y: annulla / ripeti, Ctrl+rotellina: zoom, F4: verifica il program
         <location line="+4"/>
         <source>Rung %1, row %2, column %3</source>
         <translation>Segmento %1, riga %2, colonna %3</translation>
-    </message>
-    <message>
-        <location filename="../app/gui/main_window_actions.cpp" line="+21"/>
-        <source>&amp;Redo %1</source>
-        <extracomment>%1 is the step&apos;s label, e.g. &quot;Insert rung&quot;</extracomment>
-        <translation>&amp;Ripeti %1</translation>
-    </message>
-    <message>
-        <location line="+0"/>
-        <source>&amp;Undo %1</source>
-        <translation>&amp;Annulla %1</translation>
     </message>
     <message>
         <location filename="../app/gui/main_window_files.cpp" line="+64"/>
@@ -1311,7 +1314,7 @@ Ctrl+Z / Ctrl+Y: annulla / ripeti, Ctrl+rotellina: zoom, F4: verifica il program
         <translation>%1 contiene errori; lo schema ladder si aggiorna quando sono corretti</translation>
     </message>
     <message>
-        <location line="+33"/>
+        <location line="+31"/>
         <location filename="../app/gui/main_window_online.cpp" line="+82"/>
         <source>Cannot save</source>
         <translation>Impossibile salvare</translation>
@@ -1327,7 +1330,7 @@ Ctrl+Z / Ctrl+Y: annulla / ripeti, Ctrl+rotellina: zoom, F4: verifica il program
         <translation>%1 salvato con la lista istruzioni così come è stata scritta; contiene errori, quindi lo schema ladder mantiene l&apos;ultimo programma valido finché non vengono corretti</translation>
     </message>
     <message>
-        <location line="+12"/>
+        <location line="+11"/>
         <source>Unsaved changes</source>
         <translation>Modifiche non salvate</translation>
     </message>
@@ -1387,7 +1390,7 @@ Ctrl+Z / Ctrl+Y: annulla / ripeti, Ctrl+rotellina: zoom, F4: verifica il program
         <translation>Liste istruzioni (*.il *.txt);;Tutti i file (*)</translation>
     </message>
     <message>
-        <location line="+17"/>
+        <location line="+16"/>
         <source>Export Instruction List</source>
         <translation>Esporta lista istruzioni</translation>
     </message>
@@ -1406,17 +1409,17 @@ Ctrl+Z / Ctrl+Y: annulla / ripeti, Ctrl+rotellina: zoom, F4: verifica il program
         <translation>Impossibile esportare</translation>
     </message>
     <message>
-        <location line="-208"/>
+        <location line="-204"/>
         <source>%1, line %2, column %3: %4</source>
         <translation>%1, riga %2, colonna %3: %4</translation>
     </message>
     <message>
-        <location line="+129"/>
+        <location line="+126"/>
         <source>Rung Studio projects (*.rung);;Instruction lists (*.il *.txt);;Ladder texts (*.ladder)</source>
         <translation>Progetti Rung Studio (*.rung);;Liste istruzioni (*.il *.txt);;Testi ladder (*.ladder)</translation>
     </message>
     <message>
-        <location line="+74"/>
+        <location line="+73"/>
         <source>Export Ladder</source>
         <translation>Esporta schema ladder</translation>
     </message>
@@ -1517,7 +1520,7 @@ Ctrl+Z / Ctrl+Y: annulla / ripeti, Ctrl+rotellina: zoom, F4: verifica il program
         </translation>
     </message>
     <message>
-        <location filename="../app/gui/main_window.cpp" line="+105"/>
+        <location filename="../app/gui/main_window.cpp" line="+75"/>
         <location filename="../app/gui/main_window_tools.cpp" line="-24"/>
         <source>Cross Reference</source>
         <translation>Riferimenti incrociati</translation>
@@ -1875,7 +1878,7 @@ Ctrl+Z / Ctrl+Y: annulla / ripeti, Ctrl+rotellina: zoom, F4: verifica il program
         <translation>Vai &amp;offline</translation>
     </message>
     <message>
-        <location filename="../app/gui/main_window_files.cpp" line="-307"/>
+        <location filename="../app/gui/main_window_files.cpp" line="-303"/>
         <source>%1: this version of Rung Studio cannot open networks (.rungnet) or test scenarios (.rungtest) in the window yet</source>
         <translation>%1: questa versione di Rung Studio non può ancora aprire nella finestra reti (.rungnet) o scenari di test (.rungtest)</translation>
     </message>

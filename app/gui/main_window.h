@@ -48,6 +48,7 @@ namespace rung::app {
 
 class ConnectionPanel;
 class ElidingLabel;
+class ListingController;
 class RecoveryFile;
 class ScanDebuggerView;
 class SimulationController;
@@ -134,8 +135,6 @@ protected:
     void childEvent(QChildEvent *event) override;
 
 private:
-    // applyListing(), as a step of its own or into the undo step already under way (a fix).
-    void applyListingAs(editor::Document::ListingStep step);
     // An instruction list or a symbol table opened, imported: read no further than this.
     static constexpr qint64 kMaxTextFileBytes = 64 * 1024 * 1024;
     void buildActions();
@@ -146,26 +145,14 @@ private:
     void buildDocks();
     void updateTitle();
     void updateStatus();
-    void refreshFromDocument();
-    // Before an edit of the rungs replaces the list as typed with errors (the list would show
-    // the ladder's program): asks the user, naming the list's first error; false to keep the
-    // list and leave the program as it is. True at once when there is nothing typed to lose.
-    // A list typed within the pause without errors is taken first, as its own step; false
-    // (with a word in the status bar) when it changed the rungs [first, first + count) the
-    // edit was made on, so that the edit never lands on a rung it was not made for.
-    bool mayReplaceTypedList(int first = 0, int count = 0);
     void showProject(const model::Project &project, const QString &path);
     // Names a program opened from a listing or ladder text after its file
     // (Document::setUntitledName).
     void nameImported(const QString &path);
     void refreshProjectInfo();
-    // The list as typed when it has errors the program could not take; empty when it agrees.
-    QString pendingListing() const;
     // The project as Save and recovery keep it: the program and the list as typed.
     model::Project projectToKeep() const;
     void locate(const model::Diagnostic &diagnostic);
-    void applyFix(const model::Diagnostic &diagnostic);
-    QAction *undoAction(bool redo, QObject *owner);
     bool maybeSave();
     void addRecent(const QString &path);
     void rebuildRecentMenu();
@@ -210,8 +197,6 @@ private:
     void updateOnlineActions();
     // The origin's label in the status bar and the title (main_window_monitor.cpp).
     void updateMonitorLabel();
-    // Which instruction of the program each line of the list shows, for its live values.
-    void updateMonitorLines(bool typed);
 
     editor::Document *m_document;
     editor::LadderView *m_ladder;
@@ -246,27 +231,11 @@ private:
     QLabel *m_statusOrigin = nullptr;
     QMenu *m_recentMenu = nullptr;
     QMenu *m_examplesMenu = nullptr;
-    QTimer m_ilTimer;
     QTimer m_recoveryTimer;
     std::unique_ptr<RecoveryFile> m_recovery;
-    std::vector<model::Diagnostic> m_listingErrors;
-    struct TypedSteps { // the step of each line of the text as typed, for the text it was read from
-        const model::ModelVariant *model = nullptr;
-        QString text;
-        std::vector<int> steps;
-        // The instruction of the program on each line (0-based), when the text as typed holds
-        // the program's instructions one for one; empty when it does not.
-        std::vector<int> instructionOfLine;
-    } m_typedSteps;
-    bool m_editingListing = false;
-    // The rungs revision and the listing the list pane last took from the document.
-    quint64 m_shownRevision = 0;
-    QString m_shownListing;
+    ListingController *m_listing = nullptr; // the list as typed, in step with the program
     QString m_savedPending; // the list as typed that the file holds (pendingListing)
     std::vector<model::PendingSymbol> m_savedPendingSymbols; // and the symbol rows it holds
-    // A status message about the list's errors ("... has errors"): it goes once the list
-    // applies without them, not when its time is up.
-    QString m_errorsMessage;
     QString m_findText; // the device of the last Find, for F3 / Shift+F3
     bool m_sideBySide = false;
 };

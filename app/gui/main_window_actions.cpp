@@ -4,6 +4,7 @@
 #include "dialogs.h"
 #include "file_dialogs.h"
 #include "language.h"
+#include "listing_controller.h"
 #include "symbol_table.h"
 
 #include "app/languages.h"
@@ -94,9 +95,9 @@ void MainWindow::buildActions() {
     bar->addSeparator();
 
     QMenu *edit = menuBar()->addMenu(tr("&Edit"));
-    QAction *undo = undoAction(false, edit);
+    QAction *undo = m_listing->undoAction(false, edit);
     undo->setShortcut(QKeySequence::Undo);
-    QAction *redo = undoAction(true, edit);
+    QAction *redo = m_listing->undoAction(true, edit);
     // Ctrl+Y as well, as on Windows, once: the platform's Redo may already be it.
     QList<QKeySequence> redoKeys = QKeySequence::keyBindings(QKeySequence::Redo);
     if (!redoKeys.contains(QKeySequence(Qt::CTRL | Qt::Key_Y)))
@@ -266,7 +267,7 @@ void MainWindow::buildActions() {
         ->setShortcut(QKeySequence::ZoomIn);
     view->addAction(tr("Zoom &Out"), this, [this] { m_ladder->setZoom(m_ladder->zoom() / 1.15); })
         ->setShortcut(QKeySequence::ZoomOut);
-    view->addAction(tr("&Check Program"), this, [this] { refreshFromDocument(); })
+    view->addAction(tr("&Check Program"), this, [this] { m_listing->refreshFromDocument(); })
         ->setShortcut(Qt::Key_F4);
     addPanelActions(view);      // main_window_panels.cpp
     buildSimulationMenu(bar);   // main_window_simulation.cpp
@@ -322,49 +323,6 @@ void MainWindow::buildActions() {
     about->setMenuRole(QAction::AboutRole);
     rebuildRecentMenu();
     rebuildExamplesMenu();
-}
-
-QAction *MainWindow::undoAction(bool redo, QObject *owner) {
-    // As QUndoStack's own actions, but the list's pending edit (typed, not yet applied)
-    // becomes a step first: Undo then takes back what was just typed, and no step of the
-    // stack runs on a text the program has not caught up with.
-    QUndoStack *stack = m_document->undoStack();
-    auto *action = new QAction(owner);
-    const auto label = [redo, stack] {
-        const QString what = redo ? stack->redoText() : stack->undoText();
-        if (what.isEmpty())
-            return redo ? tr("&Redo") : tr("&Undo");
-        //: %1 is the step's label, e.g. "Insert rung"
-        return redo ? tr("&Redo %1").arg(what) : tr("&Undo %1").arg(what);
-    };
-    const auto update = [this, action, label, redo, stack] {
-        action->setText(label());
-        action->setEnabled((redo ? stack->canRedo() : stack->canUndo()) ||
-                           (!redo && (m_ilTimer.isActive() || model::hasErrors(m_listingErrors))));
-    };
-    update();
-    // The action as the context: they go with it (a new language builds new ones), and
-    // ~MainWindow disconnects the stack and the list from every action before they go.
-    connect(stack, &QUndoStack::indexChanged, action, update);
-    connect(stack, &QUndoStack::cleanChanged, action, update);
-    connect(m_il, &editor::IlEditor::listingEdited, action, update);
-    connect(action, &QAction::triggered, this, [this, redo, stack] {
-        if (m_ilTimer.isActive())
-            applyListing();
-        // Text the program cannot follow (it has errors) is the list's own business: the
-        // stack's step would overwrite it with the last valid program's listing.
-        if (!redo && model::hasErrors(m_listingErrors) && m_il->isUndoAvailable()) {
-            m_il->undo();
-            applyListing();
-            return;
-        }
-        // A step of the rungs would replace the list as typed: asked first.
-        const int step = redo ? stack->index() : stack->index() - 1;
-        if (m_document->stepChangesRungs(step) && !mayReplaceTypedList())
-            return;
-        redo ? stack->redo() : stack->undo();
-    });
-    return action;
 }
 
 } // namespace rung::app

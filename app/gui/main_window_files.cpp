@@ -5,6 +5,7 @@
 #include "file_dialogs.h"
 #include "installed_files.h"
 #include "ladder_export.h"
+#include "listing_controller.h"
 #include "recovery.h"
 #include "symbol_table.h"
 
@@ -43,8 +44,7 @@ QString MainWindow::recoveryPath() const {
 }
 
 void MainWindow::writeRecovery() {
-    if (m_ilTimer.isActive())
-        applyListing(); // what was typed last is work too
+    m_listing->flush(); // what was typed last is work too
     QString error;
     if (isModified() && !m_recovery->write(projectToKeep(), m_document->path(), &error))
         statusBar()->showMessage(error, 10000);
@@ -90,7 +90,7 @@ void MainWindow::showProject(const model::Project &project, const QString &path)
     // once, as it is shown; Document::setProject emits programChanged, which refreshes.
     m_il->setTarget(*project.target);
     m_il->dropHistory();
-    m_listingErrors.clear();
+    m_listing->forget();
     m_symbols->setPending(project.pendingSymbols); // the rows typed that are no symbol yet
     m_savedPendingSymbols = project.pendingSymbols;
     m_document->setProject(project, path);
@@ -99,14 +99,14 @@ void MainWindow::showProject(const model::Project &project, const QString &path)
         // Saved while the list had errors: it shows as it was typed, errors marked, the
         // ladder showing the last valid program.
         m_il->setText(project.pendingListing);
-        applyListing();
+        m_listing->applyListing();
     }
 }
 
 void MainWindow::newProject(const model::Target &target, const QString &modelName) {
     m_il->setTarget(target);
     m_il->dropHistory();
-    m_listingErrors.clear();
+    m_listing->forget();
     m_symbols->setPending({}); // half-typed rows belong to the program that goes
     m_savedPendingSymbols.clear();
     m_savedPending.clear();
@@ -181,11 +181,10 @@ bool MainWindow::openFile(const QString &path, const QString &targetId, bool qui
             // the problems: the user fixes it here and the ladder follows.
             newProject(*target, target->defaultModel().name);
             m_il->setText(text);
-            applyListing();
+            m_listing->applyListing();
             nameImported(path);
-            m_errorsMessage = tr("%1 has errors; the ladder follows once they are fixed")
-                                  .arg(QFileInfo(path).fileName());
-            statusBar()->showMessage(m_errorsMessage, 10000);
+            m_listing->sayErrors(tr("%1 has errors; the ladder follows once they are fixed")
+                                     .arg(QFileInfo(path).fileName()));
             return true;
         }
         project.target = target;
@@ -211,8 +210,7 @@ void MainWindow::nameImported(const QString &path) {
 }
 
 bool MainWindow::saveTo(const QString &path) {
-    if (m_ilTimer.isActive())
-        applyListing(); // what was typed last is saved too
+    m_listing->flush(); // what was typed last is saved too
     const model::Project project = projectToKeep();
     model::ProjectError error;
     if (!model::saveProject(project, path, &error)) {
@@ -239,8 +237,7 @@ bool MainWindow::saveTo(const QString &path) {
 }
 
 bool MainWindow::maybeSave() {
-    if (m_ilTimer.isActive())
-        applyListing();
+    m_listing->flush();
     if (!isModified())
         return true;
     const auto answer = messageBox(QMessageBox::Warning, this, tr("Unsaved changes"),
@@ -344,11 +341,10 @@ void MainWindow::importListing() {
 }
 
 void MainWindow::exportListing() {
-    if (m_ilTimer.isActive())
-        applyListing();
+    m_listing->flush();
     // Say what stands in the way before the user picks a file for nothing.
-    QString error =
-        ProgramExport(*m_document, m_ladder->namesFirst()).listingBlockers(m_listingErrors);
+    QString error = ProgramExport(*m_document, m_ladder->namesFirst())
+                        .listingBlockers(m_listing->listingErrors());
     if (!error.isEmpty()) {
         messageBox(QMessageBox::Critical, this, tr("Cannot export"), error);
         return;
@@ -356,8 +352,8 @@ void MainWindow::exportListing() {
     const QString path =
         askSavePath(tr("Export Instruction List"), tr("Instruction lists (*.il *.txt)"),
                     {QStringLiteral("il"), QStringLiteral("txt")});
-    if (!path.isEmpty() &&
-        !ProgramExport(*m_document, m_ladder->namesFirst()).listing(path, &error, m_listingErrors))
+    if (!path.isEmpty() && !ProgramExport(*m_document, m_ladder->namesFirst())
+                                .listing(path, &error, m_listing->listingErrors()))
         messageBox(QMessageBox::Critical, this, tr("Cannot export"), error);
 }
 
