@@ -3,8 +3,8 @@
 #include "dialogs.h"
 #include "dock_layout.h"
 #include "eliding_label.h"
+#include "file_controller.h"
 #include "listing_controller.h"
-#include "recovery.h"
 #include "status_bar.h"
 #include "symbol_table.h"
 
@@ -82,6 +82,12 @@ MainWindow::MainWindow(QWidget *parent)
         updateStatus();
         updateTitle(); // the list as typed counts as unsaved work
     });
+    m_files = new FileController(m_document, m_ladder, m_il, m_listing, m_symbols, statusBar(),
+                                 this, this);
+    connect(m_files, &FileController::saved, this, [this] {
+        refreshProjectInfo();
+        updateTitle();
+    });
     buildActions();
 
     connect(m_document, &editor::Document::nameChanged, this, [this] {
@@ -120,11 +126,6 @@ MainWindow::MainWindow(QWidget *parent)
             updateStatus();
     });
 
-    m_recovery = std::make_unique<RecoveryFile>();
-    m_recoveryTimer.setInterval(60 * 1000);
-    connect(&m_recoveryTimer, &QTimer::timeout, this, &MainWindow::writeRecovery);
-    m_recoveryTimer.start();
-
     QSettings settings;
     setSideBySide(settings.value(QStringLiteral("view/sideBySide"), false).toBool());
     m_split->restoreState(settings.value(QStringLiteral("view/split")).toByteArray());
@@ -148,7 +149,6 @@ MainWindow::MainWindow(QWidget *parent)
 MainWindow::~MainWindow() {
     // The child widgets outlive this body and emit while they go (cursor moves, text
     // cleared): nothing of this window may answer them any more.
-    m_recoveryTimer.stop();
     // ~QWidget hides the window, which moves the application's focus: the lambda on
     // focusChanged would run on an object that is no longer a MainWindow.
     disconnect(qApp, nullptr, this, nullptr);
@@ -275,16 +275,40 @@ void MainWindow::applyListing() {
     m_listing->applyListing();
 }
 
-bool MainWindow::isModified() const {
-    return m_document->isModified() || m_listing->pendingListing() != m_savedPending ||
-           m_symbols->pending() != m_savedPendingSymbols;
+bool MainWindow::openFile(const QString &path, const QString &targetId, bool quiet) {
+    return m_files->openFile(path, targetId, quiet);
 }
 
-model::Project MainWindow::projectToKeep() const {
-    model::Project project = m_document->project();
-    project.pendingListing = m_listing->pendingListing();
-    project.pendingSymbols = m_symbols->pending();
-    return project;
+bool MainWindow::saveTo(const QString &path) {
+    return m_files->saveTo(path);
+}
+
+QString MainWindow::completeSavePath(const QString &chosen, const QStringList &suffixes) {
+    return m_files->completeSavePath(chosen, suffixes);
+}
+
+bool MainWindow::isModified() const {
+    return m_files->isModified();
+}
+
+void MainWindow::newProject(const model::Target &target, const QString &modelName) {
+    m_files->newProject(target, modelName);
+}
+
+QString MainWindow::recoveryPath() const {
+    return m_files->recoveryPath();
+}
+
+void MainWindow::writeRecovery() {
+    m_files->writeRecovery();
+}
+
+bool MainWindow::offerRecovery(bool ask) {
+    return m_files->offerRecovery(ask);
+}
+
+void MainWindow::start(const QString &file, const QString &targetId, bool askToRecover) {
+    m_files->start(file, targetId, askToRecover);
 }
 
 void MainWindow::locate(const model::Diagnostic &d) {
@@ -347,7 +371,7 @@ void MainWindow::retranslate() {
 }
 
 void MainWindow::closeEvent(QCloseEvent *event) {
-    if (!maybeSave()) {
+    if (!m_files->maybeSave()) {
         event->ignore();
         return;
     }
@@ -356,7 +380,7 @@ void MainWindow::closeEvent(QCloseEvent *event) {
     settings.setValue(QStringLiteral("window/state"), saveState(kDockLayoutVersion));
     if (m_sideBySide)
         settings.setValue(QStringLiteral("view/split"), m_split->saveState());
-    m_recovery->remove();
+    m_files->closing();
     event->accept();
 }
 

@@ -2,6 +2,7 @@
 
 #include "about_dialog.h"
 #include "dialogs.h"
+#include "file_controller.h"
 #include "file_dialogs.h"
 #include "language.h"
 #include "listing_controller.h"
@@ -60,38 +61,7 @@ void MainWindow::buildActions() {
     bar->setObjectName(QStringLiteral("mainToolBar"));
     bar->setIconSize(QSize(24, 24));
     bar->setToolButtonStyle(Qt::ToolButtonIconOnly); // the names and keys are in the tooltips
-    QAction *newAction = file->addAction(editor::toolIcon(editor::ToolIcon::NewFile),
-                                         tr("&New Project..."), this, &MainWindow::fileNew);
-    newAction->setShortcut(QKeySequence::New);
-    QAction *open = file->addAction(editor::toolIcon(editor::ToolIcon::OpenFile), tr("&Open..."),
-                                    this, &MainWindow::fileOpen);
-    open->setShortcut(QKeySequence::Open);
-    m_recentMenu = file->addMenu(tr("Open &Recent"));
-    m_examplesMenu = file->addMenu(tr("E&xamples"));
-    m_examplesMenu->setObjectName(QStringLiteral("examplesMenu"));
-    QAction *save = file->addAction(editor::toolIcon(editor::ToolIcon::SaveFile), tr("&Save"), this,
-                                    &MainWindow::fileSave);
-    save->setShortcut(QKeySequence::Save);
-    file->addAction(tr("Save &As..."), this, &MainWindow::fileSaveAs)
-        ->setShortcut(QKeySequence::SaveAs);
-    file->addSeparator();
-    file->addAction(tr("&Import Instruction List..."), this, &MainWindow::importListing);
-    file->addAction(tr("&Export Instruction List..."), this, &MainWindow::exportListing);
-    QMenu *exportMenu = file->addMenu(tr("Export &Ladder"));
-    exportMenu->addAction(tr("As &PDF..."), this, [this] { exportImage(QStringLiteral("pdf")); });
-    exportMenu->addAction(tr("As &SVG..."), this, [this] { exportImage(QStringLiteral("svg")); });
-    exportMenu->addAction(tr("As P&NG..."), this, [this] { exportImage(QStringLiteral("png")); });
-    file->addAction(tr("Print Pre&view..."), this, &MainWindow::printPreview)
-        ->setShortcut(QKeySequence::Print);
-    file->addSeparator();
-    file->addAction(tr("&Quit"), this, &QWidget::close)->setShortcut(QKeySequence::Quit);
-    bar->addAction(newAction);
-    bar->addAction(open);
-    bar->addAction(save);
-    for (QAction *a : {newAction, open, save})
-        a->setToolTip(QStringLiteral("%1 (%2)").arg(
-            a->text().remove(QLatin1Char('&')).remove(QStringLiteral("...")),
-            a->shortcut().toString(QKeySequence::NativeText)));
+    m_files->addActions(file, bar);                  // file_controller.cpp
     bar->addSeparator();
 
     QMenu *edit = menuBar()->addMenu(tr("&Edit"));
@@ -321,8 +291,6 @@ void MainWindow::buildActions() {
     });
     about->setObjectName(QStringLiteral("aboutAction"));
     about->setMenuRole(QAction::AboutRole);
-    rebuildRecentMenu();
-    rebuildExamplesMenu();
 }
 
 } // namespace rung::app

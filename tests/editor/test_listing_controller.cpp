@@ -22,8 +22,8 @@ using namespace rung;
 namespace {
 
 // X is octal on a Vigor: X8 is no device.
-const auto kProgram = QStringLiteral("LD X0\nOUT Y0\nEND\n");
-const auto kWithError = QStringLiteral("LD X0\nOUT X8\nEND\n");
+const auto kListingAloneProgram = QStringLiteral("LD X0\nOUT Y0\nEND\n");
+const auto kListingAloneWithError = QStringLiteral("LD X0\nOUT X8\nEND\n");
 
 struct ListingAlone : ::testing::Test {
     editor::Document document;
@@ -48,11 +48,11 @@ struct ListingAlone : ::testing::Test {
 
 TEST_F(ListingAlone, TextTypedBecomesTheProgramAfterThePauseOrAtOnce) {
     QSignalSpy refreshed(&listing, &app::ListingController::refreshed);
-    type(kProgram);
+    type(kListingAloneProgram);
     EXPECT_TRUE(listing.editPending());
     listing.flush(); // what a save or a run does first
     EXPECT_FALSE(listing.editPending());
-    EXPECT_EQ(document.listingText(), kProgram);
+    EXPECT_EQ(document.listingText(), kListingAloneProgram);
     EXPECT_GT(refreshed.count(), 0);
     EXPECT_FALSE(listing.hasErrors());
     EXPECT_TRUE(listing.pendingListing().isEmpty()); // the program holds what is typed
@@ -63,13 +63,14 @@ TEST_F(ListingAlone, TextTypedBecomesTheProgramAfterThePauseOrAtOnce) {
 }
 
 TEST_F(ListingAlone, AListWithErrorsStaysAsTypedAndTheLadderKeepsTheLastProgram) {
-    ASSERT_TRUE(document.setListing(kProgram, nullptr));
-    type(kWithError);
+    ASSERT_TRUE(document.setListing(kListingAloneProgram, nullptr));
+    type(kListingAloneWithError);
     listing.applyListing();
     EXPECT_TRUE(listing.hasErrors());
-    EXPECT_EQ(listing.pendingListing(), kWithError); // what a save keeps beside the program
-    EXPECT_EQ(document.listingText(), kProgram);     // the last valid program
-    EXPECT_EQ(il.text(), kWithError);
+    EXPECT_EQ(listing.pendingListing(),
+              kListingAloneWithError);                       // what a save keeps beside the program
+    EXPECT_EQ(document.listingText(), kListingAloneProgram); // the last valid program
+    EXPECT_EQ(il.text(), kListingAloneWithError);
     EXPECT_TRUE(ladder.notice().contains(QStringLiteral("line 2")))
         << ladder.notice().toStdString();
     EXPECT_GT(problems.count(model::Severity::Error), 0);
@@ -84,7 +85,7 @@ TEST_F(ListingAlone, AListWithErrorsStaysAsTypedAndTheLadderKeepsTheLastProgram)
 }
 
 TEST_F(ListingAlone, AnEditOfTheRungsIsFreeWhenNothingTypedWouldBeLost) {
-    ASSERT_TRUE(document.setListing(kProgram, nullptr));
+    ASSERT_TRUE(document.setListing(kListingAloneProgram, nullptr));
     EXPECT_TRUE(listing.mayReplaceTypedList(0, 1));
     // A valid text typed within the pause is taken first, as its own undo step.
     const int steps = document.undoStack()->count();
@@ -100,11 +101,11 @@ TEST_F(ListingAlone, AnEditOfTheRungsIsFreeWhenNothingTypedWouldBeLost) {
 }
 
 TEST_F(ListingAlone, TheErrorsMessageGoesOnceTheListAppliesWithoutThem) {
-    type(kWithError);
+    type(kListingAloneWithError);
     listing.applyListing();
     listing.sayErrors(QStringLiteral("prog.il has errors"));
     EXPECT_EQ(status.currentMessage(), QStringLiteral("prog.il has errors"));
-    type(kProgram);
+    type(kListingAloneProgram);
     listing.applyListing();
     EXPECT_TRUE(status.currentMessage().isEmpty());
     EXPECT_TRUE(ladder.notice().isEmpty());

@@ -1,4 +1,4 @@
-#include "main_window.h"
+#include "file_controller.h"
 
 #include "dialogs.h"
 #include "example_titles.h"
@@ -9,8 +9,10 @@
 #include "recovery.h"
 #include "symbol_table.h"
 
+#include "editor/document.h"
 #include "editor/il_editor.h"
 #include "editor/ladder_view.h"
+#include "editor/tool_icons.h"
 
 #include "model/ladder/ladder_text.h"
 #include "model/project/file_read.h"
@@ -30,6 +32,7 @@
 #include <QPrinter>
 #include <QSettings>
 #include <QStatusBar>
+#include <QToolBar>
 
 namespace rung::app {
 
@@ -39,18 +42,92 @@ constexpr int kMaxRecent = 8;
 
 } // namespace
 
-QString MainWindow::recoveryPath() const {
+FileController::FileController(editor::Document *document, editor::LadderView *ladder,
+                               editor::IlEditor *il, ListingController *listing,
+                               SymbolTable *symbols, QStatusBar *status, QWidget *window,
+                               QObject *parent)
+    : QObject(parent)
+    , m_document(document)
+    , m_ladder(ladder)
+    , m_il(il)
+    , m_listing(listing)
+    , m_symbols(symbols)
+    , m_status(status)
+    , m_window(window)
+    , m_recovery(std::make_unique<RecoveryFile>()) {
+    m_recoveryTimer.setInterval(60 * 1000);
+    connect(&m_recoveryTimer, &QTimer::timeout, this, &FileController::writeRecovery);
+    m_recoveryTimer.start();
+}
+
+FileController::~FileController() = default;
+
+void FileController::addActions(QMenu *file, QToolBar *bar) {
+    QAction *newAction = file->addAction(editor::toolIcon(editor::ToolIcon::NewFile),
+                                         tr("&New Project..."), this, &FileController::fileNew);
+    newAction->setShortcut(QKeySequence::New);
+    QAction *open = file->addAction(editor::toolIcon(editor::ToolIcon::OpenFile), tr("&Open..."),
+                                    this, &FileController::fileOpen);
+    open->setShortcut(QKeySequence::Open);
+    m_recentMenu = file->addMenu(tr("Open &Recent"));
+    m_examplesMenu = file->addMenu(tr("E&xamples"));
+    m_examplesMenu->setObjectName(QStringLiteral("examplesMenu"));
+    QAction *save = file->addAction(editor::toolIcon(editor::ToolIcon::SaveFile), tr("&Save"), this,
+                                    &FileController::fileSave);
+    save->setShortcut(QKeySequence::Save);
+    file->addAction(tr("Save &As..."), this, &FileController::fileSaveAs)
+        ->setShortcut(QKeySequence::SaveAs);
+    file->addSeparator();
+    file->addAction(tr("&Import Instruction List..."), this, &FileController::importListing);
+    file->addAction(tr("&Export Instruction List..."), this, &FileController::exportListing);
+    QMenu *exportMenu = file->addMenu(tr("Export &Ladder"));
+    exportMenu->addAction(tr("As &PDF..."), this, [this] { exportImage(QStringLiteral("pdf")); });
+    exportMenu->addAction(tr("As &SVG..."), this, [this] { exportImage(QStringLiteral("svg")); });
+    exportMenu->addAction(tr("As P&NG..."), this, [this] { exportImage(QStringLiteral("png")); });
+    file->addAction(tr("Print Pre&view..."), this, &FileController::printPreview)
+        ->setShortcut(QKeySequence::Print);
+    file->addSeparator();
+    if (m_window)
+        file->addAction(tr("&Quit"), m_window, &QWidget::close)->setShortcut(QKeySequence::Quit);
+    bar->addAction(newAction);
+    bar->addAction(open);
+    bar->addAction(save);
+    for (QAction *a : {newAction, open, save})
+        a->setToolTip(QStringLiteral("%1 (%2)").arg(
+            a->text().remove(QLatin1Char('&')).remove(QStringLiteral("...")),
+            a->shortcut().toString(QKeySequence::NativeText)));
+    rebuildRecentMenu();
+    rebuildExamplesMenu();
+}
+
+bool FileController::isModified() const {
+    return m_document->isModified() || m_listing->pendingListing() != m_savedPending ||
+           m_symbols->pending() != m_savedPendingSymbols;
+}
+
+model::Project FileController::projectToKeep() const {
+    model::Project project = m_document->project();
+    project.pendingListing = m_listing->pendingListing();
+    project.pendingSymbols = m_symbols->pending();
+    return project;
+}
+
+void FileController::closing() {
+    m_recovery->remove();
+}
+
+QString FileController::recoveryPath() const {
     return m_recovery->path();
 }
 
-void MainWindow::writeRecovery() {
+void FileController::writeRecovery() {
     m_listing->flush(); // what was typed last is work too
     QString error;
     if (isModified() && !m_recovery->write(projectToKeep(), m_document->path(), &error))
         statusBar()->showMessage(error, 10000);
 }
 
-bool MainWindow::offerRecovery(bool ask) {
+bool FileController::offerRecovery(bool ask) {
     QStringList unreadable;
     auto recovered = m_recovery->takeOrphan(
         [this, ask](const QString &origin) {
@@ -61,14 +138,14 @@ bool MainWindow::offerRecovery(bool ask) {
                     : tr("Rung Studio was not closed properly last time. Recover the unsaved "
                          "changes to %1?")
                           .arg(QDir::toNativeSeparators(origin));
-            return !ask || messageBox(QMessageBox::Question, this, tr("Recover"), question) ==
+            return !ask || messageBox(QMessageBox::Question, m_window, tr("Recover"), question) ==
                                QMessageBox::Yes;
         },
         &unreadable);
     if (!unreadable.isEmpty()) {
         statusBar()->showMessage(unreadable.join(u' '), 15000);
         if (ask)
-            messageBox(QMessageBox::Warning, this, tr("Recover"), unreadable.join(u'\n'));
+            messageBox(QMessageBox::Warning, m_window, tr("Recover"), unreadable.join(u'\n'));
     }
     if (!recovered)
         return false;
@@ -78,14 +155,14 @@ bool MainWindow::offerRecovery(bool ask) {
     return true;
 }
 
-void MainWindow::start(const QString &file, const QString &targetId, bool askToRecover) {
+void FileController::start(const QString &file, const QString &targetId, bool askToRecover) {
     // Recovery comes first, or a start with a file (as scripts/start.sh does) would never
     // offer it, and the next normal close would delete the orphan with its work.
     if (!offerRecovery(askToRecover) && !file.isEmpty())
         openFile(file, targetId);
 }
 
-void MainWindow::showProject(const model::Project &project, const QString &path) {
+void FileController::showProject(const model::Project &project, const QString &path) {
     // The editor gets the target's lexer before the text arrives, so the text is styled
     // once, as it is shown; Document::setProject emits programChanged, which refreshes.
     m_il->setTarget(*project.target);
@@ -103,7 +180,7 @@ void MainWindow::showProject(const model::Project &project, const QString &path)
     }
 }
 
-void MainWindow::newProject(const model::Target &target, const QString &modelName) {
+void FileController::newProject(const model::Target &target, const QString &modelName) {
     m_il->setTarget(target);
     m_il->dropHistory();
     m_listing->forget();
@@ -113,10 +190,10 @@ void MainWindow::newProject(const model::Target &target, const QString &modelNam
     m_document->reset(target, modelName);
 }
 
-bool MainWindow::openFile(const QString &path, const QString &targetId, bool quiet) {
+bool FileController::openFile(const QString &path, const QString &targetId, bool quiet) {
     auto fail = [&](const QString &message) {
         if (!quiet)
-            messageBox(QMessageBox::Critical, this, tr("Cannot open the file"), message);
+            messageBox(QMessageBox::Critical, m_window, tr("Cannot open the file"), message);
         statusBar()->showMessage(message, 10000);
         return false;
     };
@@ -199,7 +276,7 @@ bool MainWindow::openFile(const QString &path, const QString &targetId, bool qui
     return true;
 }
 
-void MainWindow::nameImported(const QString &path) {
+void FileController::nameImported(const QString &path) {
     // A listing or ladder text opens as a new project named after its file; saving it writes
     // a project beside it, not over the text.
     const QFileInfo file(path);
@@ -209,12 +286,12 @@ void MainWindow::nameImported(const QString &path) {
                                     QString::fromLatin1(model::kProjectExtension)));
 }
 
-bool MainWindow::saveTo(const QString &path) {
+bool FileController::saveTo(const QString &path) {
     m_listing->flush(); // what was typed last is saved too
     const model::Project project = projectToKeep();
     model::ProjectError error;
     if (!model::saveProject(project, path, &error)) {
-        messageBox(QMessageBox::Critical, this, tr("Cannot save"), error.message);
+        messageBox(QMessageBox::Critical, m_window, tr("Cannot save"), error.message);
         return false;
     }
     m_savedPending = project.pendingListing;
@@ -223,8 +300,7 @@ bool MainWindow::saveTo(const QString &path) {
     m_document->markSaved();
     m_recovery->remove();
     addRecent(path);
-    refreshProjectInfo();
-    updateTitle();
+    emit saved();
     if (project.pendingListing.isEmpty())
         statusBar()->showMessage(tr("Saved %1").arg(path), 3000);
     else
@@ -236,11 +312,11 @@ bool MainWindow::saveTo(const QString &path) {
     return true;
 }
 
-bool MainWindow::maybeSave() {
+bool FileController::maybeSave() {
     m_listing->flush();
     if (!isModified())
         return true;
-    const auto answer = messageBox(QMessageBox::Warning, this, tr("Unsaved changes"),
+    const auto answer = messageBox(QMessageBox::Warning, m_window, tr("Unsaved changes"),
                                    tr("Save the changes to the program?"),
                                    QMessageBox::Save | QMessageBox::Discard | QMessageBox::Cancel);
     if (answer == QMessageBox::Save)
@@ -248,10 +324,10 @@ bool MainWindow::maybeSave() {
     return answer == QMessageBox::Discard;
 }
 
-void MainWindow::fileNew() {
+void FileController::fileNew() {
     if (!maybeSave())
         return;
-    QDialog dialog(this);
+    QDialog dialog(m_window);
     dialog.setWindowTitle(tr("New Project"));
     auto *form = new QFormLayout(&dialog);
     auto *family = new QComboBox;
@@ -281,45 +357,45 @@ void MainWindow::fileNew() {
     newProject(*model::Target::byId(family->currentData().toString()), modelBox->currentText());
 }
 
-void MainWindow::fileOpen() {
+void FileController::fileOpen() {
     if (!maybeSave())
         return;
     const QString path = askOpenFile(
-        this, tr("Open"), m_document->path(),
+        m_window, tr("Open"), m_document->path(),
         tr("Rung Studio projects (*.rung);;Instruction lists (*.il *.txt);;Ladder texts "
            "(*.ladder)"));
     if (!path.isEmpty())
         openFile(path);
 }
 
-bool MainWindow::fileSave() {
+bool FileController::fileSave() {
     if (m_document->path().isEmpty())
         return fileSaveAs();
     return saveTo(m_document->path());
 }
 
-QString MainWindow::completeSavePath(const QString &chosen, const QStringList &suffixes) {
+QString FileController::completeSavePath(const QString &chosen, const QStringList &suffixes) {
     if (chosen.isEmpty() || suffixes.isEmpty())
         return chosen;
     if (suffixes.contains(QFileInfo(chosen).suffix(), Qt::CaseInsensitive))
         return chosen;
     const QString path = chosen + QLatin1Char('.') + suffixes.front();
     if (QFileInfo::exists(path) &&
-        messageBox(QMessageBox::Question, this, tr("Replace File"),
+        messageBox(QMessageBox::Question, m_window, tr("Replace File"),
                    tr("%1 already exists. Replace it?").arg(QDir::toNativeSeparators(path))) !=
             QMessageBox::Yes)
         return QString();
     return path;
 }
 
-QString MainWindow::askSavePath(const QString &title, const QString &filter,
-                                const QStringList &suffixes) {
-    return completeSavePath(askSaveFile(this, title, fileDialogFolder(m_document->path()), filter),
-                            suffixes);
+QString FileController::askSavePath(const QString &title, const QString &filter,
+                                    const QStringList &suffixes) {
+    return completeSavePath(
+        askSaveFile(m_window, title, fileDialogFolder(m_document->path()), filter), suffixes);
 }
 
-bool MainWindow::fileSaveAs() {
-    const QString path = completeSavePath(askSaveFile(this, tr("Save As"),
+bool FileController::fileSaveAs() {
+    const QString path = completeSavePath(askSaveFile(m_window, tr("Save As"),
                                                       m_document->suggestedPath().isEmpty()
                                                           ? fileDialogFolder(QString())
                                                           : m_document->suggestedPath(),
@@ -330,23 +406,23 @@ bool MainWindow::fileSaveAs() {
     return saveTo(path);
 }
 
-void MainWindow::importListing() {
+void FileController::importListing() {
     if (!maybeSave())
         return;
-    const QString path = askOpenFile(this, tr("Import Instruction List"), m_document->path(),
+    const QString path = askOpenFile(m_window, tr("Import Instruction List"), m_document->path(),
                                      tr("Instruction lists (*.il *.txt);;All files (*)"));
     // Read for the PLC the list names on its first line, else for the project's.
     if (!path.isEmpty())
         openFile(path);
 }
 
-void MainWindow::exportListing() {
+void FileController::exportListing() {
     m_listing->flush();
     // Say what stands in the way before the user picks a file for nothing.
     QString error = ProgramExport(*m_document, m_ladder->namesFirst())
                         .listingBlockers(m_listing->listingErrors());
     if (!error.isEmpty()) {
-        messageBox(QMessageBox::Critical, this, tr("Cannot export"), error);
+        messageBox(QMessageBox::Critical, m_window, tr("Cannot export"), error);
         return;
     }
     const QString path =
@@ -354,30 +430,30 @@ void MainWindow::exportListing() {
                     {QStringLiteral("il"), QStringLiteral("txt")});
     if (!path.isEmpty() && !ProgramExport(*m_document, m_ladder->namesFirst())
                                 .listing(path, &error, m_listing->listingErrors()))
-        messageBox(QMessageBox::Critical, this, tr("Cannot export"), error);
+        messageBox(QMessageBox::Critical, m_window, tr("Cannot export"), error);
 }
 
-void MainWindow::exportImage(const QString &format) {
+void FileController::exportImage(const QString &format) {
     const QString path =
         askSavePath(tr("Export Ladder"), QStringLiteral("*.%1").arg(format), {format});
     if (path.isEmpty())
         return;
     QString error;
     if (!ProgramExport(*m_document, m_ladder->namesFirst()).ladder(path, &error))
-        messageBox(QMessageBox::Critical, this, tr("Cannot export"), error);
+        messageBox(QMessageBox::Critical, m_window, tr("Cannot export"), error);
 }
 
-void MainWindow::printPreview() {
+void FileController::printPreview() {
     QPrinter printer(QPrinter::HighResolution);
     printer.setPageOrientation(QPageLayout::Landscape);
     printer.setPageMargins(QMarginsF(12, 10, 12, 10), QPageLayout::Millimeter);
-    QPrintPreviewDialog dialog(&printer, this);
+    QPrintPreviewDialog dialog(&printer, m_window);
     connect(&dialog, &QPrintPreviewDialog::paintRequested, this,
             [this](QPrinter *pr) { ProgramExport(*m_document, m_ladder->namesFirst()).print(pr); });
     dialog.exec();
 }
 
-void MainWindow::addRecent(const QString &path) {
+void FileController::addRecent(const QString &path) {
     QSettings settings;
     QStringList recent = settings.value(QStringLiteral("files/recent")).toStringList();
     recent.removeAll(path);
@@ -388,7 +464,7 @@ void MainWindow::addRecent(const QString &path) {
     rebuildRecentMenu();
 }
 
-void MainWindow::rebuildRecentMenu() {
+void FileController::rebuildRecentMenu() {
     m_recentMenu->clear();
     const QStringList recent = QSettings().value(QStringLiteral("files/recent")).toStringList();
     for (const QString &path : recent)
@@ -402,7 +478,7 @@ void MainWindow::rebuildRecentMenu() {
     m_recentMenu->setEnabled(!recent.isEmpty());
 }
 
-void MainWindow::rebuildExamplesMenu() {
+void FileController::rebuildExamplesMenu() {
     // The manuals' examples, one submenu per target, from the folder installed beside the
     // program (share/rungstudio/examples).
     m_examplesMenu->clear();
@@ -428,7 +504,7 @@ void MainWindow::rebuildExamplesMenu() {
                 model::ProjectError error;
                 auto project = model::loadProject(path, &error);
                 if (!project) {
-                    messageBox(QMessageBox::Critical, this, tr("Cannot open the example"),
+                    messageBox(QMessageBox::Critical, m_window, tr("Cannot open the example"),
                                error.message);
                     return;
                 }
