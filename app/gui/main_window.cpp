@@ -3,13 +3,13 @@
 #include "dialogs.h"
 #include "dock_layout.h"
 #include "eliding_label.h"
-#include "recovery.h"
+#include "file_controller.h"
+#include "listing_controller.h"
 #include "status_bar.h"
 #include "symbol_table.h"
 
 #include "editor/il_editor.h"
 #include "editor/ladder_view.h"
-#include "editor/listing_lines_command.h"
 #include "editor/problems_view.h"
 #include "editor/watch_list_view.h"
 
@@ -76,15 +76,24 @@ MainWindow::MainWindow(QWidget *parent)
     // (four below the ladder: wider than an 800 px screen); grouped, they need less, and the
     // resize below must not be held to the old minimum.
     QMainWindow::layout()->activate();
+    // The list as typed follows the program after the simulation and the connection did
+    // (their programChanged first), as the window always had it.
+    m_listing =
+        new ListingController(m_document, m_ladder, m_il, m_problems, statusBar(), this, this);
+    connect(m_listing, &ListingController::refreshed, this, [this] {
+        m_symbols->refresh();
+        refreshProjectInfo();
+        updateStatus();
+        updateTitle(); // the list as typed counts as unsaved work
+    });
+    m_files = new FileController(m_document, m_ladder, m_il, m_listing, m_symbols, statusBar(),
+                                 this, this);
+    connect(m_files, &FileController::saved, this, [this] {
+        refreshProjectInfo();
+        updateTitle();
+    });
     buildActions();
 
-    m_ilTimer.setSingleShot(true);
-    m_ilTimer.setInterval(500);
-    connect(&m_ilTimer, &QTimer::timeout, this, &MainWindow::applyListing);
-    connect(m_il, &editor::IlEditor::listingEdited, this, [this] { m_ilTimer.start(); });
-    connect(m_document, &editor::Document::programChanged, this, &MainWindow::refreshFromDocument);
-    m_document->setRungEditGuard(
-        [this](int first, int count) { return mayReplaceTypedList(first, count); });
     connect(m_document, &editor::Document::nameChanged, this, [this] {
         updateTitle();
         refreshProjectInfo();
@@ -120,12 +129,6 @@ MainWindow::MainWindow(QWidget *parent)
         if (now == m_il || now == m_ladder)
             updateStatus();
     });
-    connect(m_problems, &editor::ProblemsView::applyFix, this, &MainWindow::applyFix);
-
-    m_recovery = std::make_unique<RecoveryFile>();
-    m_recoveryTimer.setInterval(60 * 1000);
-    connect(&m_recoveryTimer, &QTimer::timeout, this, &MainWindow::writeRecovery);
-    m_recoveryTimer.start();
 
     QSettings settings;
     setSideBySide(settings.value(QStringLiteral("view/sideBySide"), false).toBool());
@@ -143,16 +146,13 @@ MainWindow::MainWindow(QWidget *parent)
         // ladder leaves them. Docks take sizes once laid out.
         QTimer::singleShot(0, this, [this, wide] { sizeDocks(this, wide); });
     }
-    refreshFromDocument();
+    m_listing->refreshFromDocument();
     updateTitle();
 }
 
 MainWindow::~MainWindow() {
     // The child widgets outlive this body and emit while they go (cursor moves, text
     // cleared): nothing of this window may answer them any more.
-    m_ilTimer.stop();
-    m_recoveryTimer.stop();
-    m_document->setRungEditGuard({});
     // ~QWidget hides the window, which moves the application's focus: the lambda on
     // focusChanged would run on an object that is no longer a MainWindow.
     disconnect(qApp, nullptr, this, nullptr);
@@ -171,6 +171,7 @@ MainWindow::~MainWindow() {
         m_ladder->disconnect(o);
     }
     m_document->undoStack()->disconnect(this);
+    delete m_listing; // its answers to the document, the list and the ladder go with it
 }
 
 void MainWindow::buildDocks() {
@@ -233,139 +234,6 @@ void MainWindow::setSideBySide(bool sideBySide) {
     }
 }
 
-void MainWindow::refreshFromDocument() {
-    // The list pane takes the ladder's listing when the rungs changed, or when it shows the
-    // listing it was given (in another language, say); a change of the symbols or the watch
-    // lists leaves the list as typed as it is.
-    const bool rungsChanged = m_document->rungsRevision() != m_shownRevision;
-    if (!m_editingListing && (rungsChanged || m_il->text() == m_shownListing)) {
-        if (model::hasErrors(m_listingErrors))
-            statusBar()->showMessage(tr("The list as typed had errors and now shows the "
-                                        "ladder's program; Ctrl+Z in the list brings it back"),
-                                     10000);
-        m_il->setListing(m_document->listingText());
-        m_shownListing = m_document->listingText();
-        m_listingErrors.clear();
-        m_ladder->setNotice(QString()); // it spoke of the errors of a list no longer shown
-    }
-    m_shownRevision = m_document->rungsRevision();
-    // The list pane shows the text as typed (with errors or forms of its own), or the listing.
-    const bool typed =
-        m_editingListing || !m_listingErrors.empty() || m_il->text() != m_document->listingText();
-    std::vector<model::Diagnostic> all = m_document->diagnostics();
-    all.insert(all.end(), m_listingErrors.begin(), m_listingErrors.end());
-    m_problems->setDiagnostics(all);
-    if (auto *dock = findChild<QDockWidget *>(QStringLiteral("problemsDock")))
-        dock->setWindowTitle(m_problems->summary());
-    if (!typed) {
-        // Listing findings of the canonical text: map each rung's findings to its lines.
-        std::vector<model::Diagnostic> onLines;
-        for (model::Diagnostic d : m_document->diagnostics()) {
-            if (d.location.rung < 0)
-                continue;
-            d.location.line = m_document->lineOf(d.location);
-            if (d.location.line > 0)
-                onLines.push_back(d);
-        }
-        m_il->showDiagnostics(onLines);
-    } else {
-        m_il->showDiagnostics(m_listingErrors);
-    }
-    std::vector<int> stepOfLine;
-    if (typed) {
-        // The text as typed (with errors, or in a form of its own): its lines that parse
-        // keep their step numbers, as the parser counts them. A typing pause refreshes twice
-        // (the document's change, then the apply): the text is parsed for this once.
-        const QString typed = m_il->text();
-        if (typed != m_typedSteps.text || m_document->modelVariant() != m_typedSteps.model) {
-            const model::ParseResult parsed = model::parseInstructionList(
-                m_document->target(), typed, m_document->modelVariant());
-            std::vector<int> steps(static_cast<std::size_t>(std::max(0, m_il->lines())), -1);
-            for (const model::Instruction &ins : parsed.list.instructions)
-                if (ins.line >= 1 && ins.line <= static_cast<int>(steps.size()))
-                    steps[static_cast<std::size_t>(ins.line - 1)] = ins.step;
-            // A text of the program's own instructions, written its own way (spacing,
-            // comments, aliases): its lines can show the running program's values.
-            std::vector<int> lineOf;
-            const auto &program = m_document->listing().list.instructions;
-            const auto &read = parsed.list.instructions;
-            if (parsed.ok() && read.size() == program.size() &&
-                std::equal(read.begin(), read.end(), program.begin(),
-                           [](const model::Instruction &a, const model::Instruction &b) {
-                               return a.sameAs(b);
-                           })) {
-                lineOf.assign(steps.size(), -1);
-                for (std::size_t i = 0; i < read.size(); ++i)
-                    if (read[i].line >= 1 && read[i].line <= static_cast<int>(lineOf.size()))
-                        lineOf[static_cast<std::size_t>(read[i].line - 1)] = static_cast<int>(i);
-            }
-            m_typedSteps = {m_document->modelVariant(), typed, std::move(steps), std::move(lineOf)};
-        }
-        stepOfLine = m_typedSteps.steps;
-    } else {
-        // The printer's line map: comment lines have no step.
-        const auto &list = m_document->listing().list;
-        for (const int i : m_document->printedListing().instructionOfLine)
-            stepOfLine.push_back(i < 0 ? -1 : list.instructions[static_cast<std::size_t>(i)].step);
-    }
-    m_il->setStepNumbers(stepOfLine);
-    updateMonitorLines(typed);
-    m_symbols->refresh();
-    refreshProjectInfo();
-    updateStatus();
-    updateTitle(); // the list as typed counts as unsaved work
-}
-
-bool MainWindow::mayReplaceTypedList(int first, int count) {
-    if (m_editingListing)
-        return true; // the list's own change
-    if (m_ilTimer.isActive()) {
-        // Typed just now, not yet checked. Text with errors is taken as such (the program
-        // stays), so that the question below knows of it. A valid text becomes the program
-        // now, its own undo step, so the edit adds to it instead of printing over it.
-        std::vector<model::Diagnostic> errors;
-        const bool valid =
-            m_document->setListing(m_il->text(), &errors, editor::Document::ListingStep::Check);
-        const std::vector<model::Rung> before =
-            valid ? m_document->ladder().rungs : std::vector<model::Rung>{};
-        applyListing();
-        if (valid) {
-            const std::vector<model::Rung> &after = m_document->ladder().rungs;
-            const auto [b, a] =
-                std::mismatch(before.begin(), before.end(), after.begin(), after.end());
-            const auto unchanged = static_cast<int>(b - before.begin());
-            if (unchanged < first + std::max(count, 0)) {
-                statusBar()->showMessage(
-                    tr("The list as typed was taken first and changed rung %1, so the ladder "
-                       "edit was not made: make it again on the rung as it is now.")
-                        .arg(unchanged + 1),
-                    10000);
-                return false;
-            }
-        }
-    }
-    const auto firstError = std::find_if(
-        m_listingErrors.begin(), m_listingErrors.end(),
-        [](const model::Diagnostic &d) { return d.severity == model::Severity::Error; });
-    if (firstError == m_listingErrors.end())
-        return true;
-    QMessageBox box(QMessageBox::Question, tr("Replace the Instruction List?"),
-                    tr("The instruction list as typed has errors (line %1: %2).")
-                        .arg(firstError->location.line)
-                        .arg(firstError->message),
-                    QMessageBox::NoButton, this);
-    box.setInformativeText(
-        tr("This change to the ladder replaces the list with the ladder's program; Ctrl+Z in "
-           "the list brings the typed text back. Cancel keeps the list as typed and leaves the "
-           "ladder as it is."));
-    QPushButton *replace = box.addButton(tr("Replace the List"), QMessageBox::AcceptRole);
-    QPushButton *cancel = box.addButton(QMessageBox::Cancel);
-    box.setDefaultButton(cancel);
-    box.setEscapeButton(cancel);
-    box.exec();
-    return box.clickedButton() == replace;
-}
-
 void MainWindow::refreshProjectInfo() {
     const model::Target &t = m_document->target();
     const int rungs = static_cast<int>(m_document->ladder().rungs.size());
@@ -374,35 +242,6 @@ void MainWindow::refreshProjectInfo() {
                                     m_document->modelVariant()->name,
                                     tr("%n rung(s)", nullptr, rungs),
                                     tr("%n step(s)", nullptr, m_document->stepCount())));
-}
-
-void MainWindow::applyListing() {
-    applyListingAs(editor::Document::ListingStep::Own);
-}
-
-void MainWindow::applyListingAs(editor::Document::ListingStep step) {
-    m_ilTimer.stop(); // what is typed is applied now
-    std::vector<model::Diagnostic> errors;
-    m_editingListing = true;
-    const bool ok = m_document->setListing(m_il->text(), &errors, step);
-    m_listingErrors = errors; // when ok: the fuzzy forms of the text as typed
-    if (ok || errors.empty()) {
-        m_ladder->setNotice(QString());
-        if (ok && !m_errorsMessage.isEmpty() && statusBar()->currentMessage() == m_errorsMessage)
-            statusBar()->clearMessage();
-    } else {
-        const model::Diagnostic &first = errors.front();
-        m_ladder->setNotice(
-            tr("The instruction list has %1: line %2: %3. The ladder shows the last valid "
-               "program.")
-                .arg(errors.size() == 1 ? tr("an error") : tr("%1 errors").arg(errors.size()))
-                .arg(first.location.line)
-                .arg(first.message));
-    }
-    // While the text is invalid the ladder keeps the last valid program; the errors show in
-    // the listing and in the problems panel.
-    refreshFromDocument();
-    m_editingListing = false;
 }
 
 void MainWindow::updateStatus() {
@@ -436,20 +275,44 @@ void MainWindow::updateTitle() {
     setWindowModified(isModified());
 }
 
-QString MainWindow::pendingListing() const {
-    return model::hasErrors(m_listingErrors) ? m_il->text() : QString();
+void MainWindow::applyListing() {
+    m_listing->applyListing();
+}
+
+bool MainWindow::openFile(const QString &path, const QString &targetId, bool quiet) {
+    return m_files->openFile(path, targetId, quiet);
+}
+
+bool MainWindow::saveTo(const QString &path) {
+    return m_files->saveTo(path);
+}
+
+QString MainWindow::completeSavePath(const QString &chosen, const QStringList &suffixes) {
+    return m_files->completeSavePath(chosen, suffixes);
 }
 
 bool MainWindow::isModified() const {
-    return m_document->isModified() || pendingListing() != m_savedPending ||
-           m_symbols->pending() != m_savedPendingSymbols;
+    return m_files->isModified();
 }
 
-model::Project MainWindow::projectToKeep() const {
-    model::Project project = m_document->project();
-    project.pendingListing = pendingListing();
-    project.pendingSymbols = m_symbols->pending();
-    return project;
+void MainWindow::newProject(const model::Target &target, const QString &modelName) {
+    m_files->newProject(target, modelName);
+}
+
+QString MainWindow::recoveryPath() const {
+    return m_files->recoveryPath();
+}
+
+void MainWindow::writeRecovery() {
+    m_files->writeRecovery();
+}
+
+bool MainWindow::offerRecovery(bool ask) {
+    return m_files->offerRecovery(ask);
+}
+
+void MainWindow::start(const QString &file, const QString &targetId, bool askToRecover) {
+    m_files->start(file, targetId, askToRecover);
 }
 
 void MainWindow::locate(const model::Diagnostic &d) {
@@ -464,36 +327,6 @@ void MainWindow::locate(const model::Diagnostic &d) {
             m_tabs->setCurrentWidget(m_il);
         m_il->goToLine(d.location.line);
     }
-}
-
-void MainWindow::applyFix(const model::Diagnostic &d) {
-    if (!d.fix)
-        return;
-    if (d.fix->firstRung >= 0) {
-        m_document->replaceRungs(d.fix->firstRung, d.fix->lastRung - d.fix->firstRung + 1,
-                                 d.fix->rungs, d.fix->label);
-        return;
-    }
-    // A listing fix rewrites the lines of the text as typed, the rest of it untouched, as one
-    // step of the project's undo (Edit > Undo) and of the list's own (Ctrl+Z there). FZ001/FZ002
-    // keep the program, FZ004-FZ006 reorder it: the step's redo and undo bring the program along
-    // with the text in place, so that no second step ("Edit instruction list") is pushed.
-    if (m_ilTimer.isActive())
-        applyListing(); // what was typed before the fix is a step of its own
-    const int first = d.fix->firstLine - 1;
-    const int last = d.fix->lastLine - 1;
-    if (first < 0 || last >= m_il->lines() || first > last)
-        return;
-    QStringList before;
-    for (int line = first; line <= last; ++line)
-        before << m_il->lineText(line);
-    QStringList after = d.fix->listing.split(QLatin1Char('\n'));
-    if (after.size() > 1 && after.back().isEmpty())
-        after.removeLast();
-    // The replaced lines count as typed: they are applied into the fix's own undo step.
-    const auto follow = [this] { applyListingAs(editor::Document::ListingStep::InPlace); };
-    m_document->undoStack()->push(
-        new editor::ListingLinesCommand(m_il, first, before, after, follow, d.fix->label));
 }
 
 void MainWindow::changeEvent(QEvent *event) {
@@ -534,12 +367,7 @@ void MainWindow::retranslate() {
     }
     // The findings again, now in this language; the list as typed (errors or forms of its own)
     // stays, and its own findings are read again from it.
-    const bool typed = !m_listingErrors.empty();
-    m_editingListing = typed;
-    m_document->recheck();
-    m_editingListing = false;
-    if (typed)
-        applyListing();
+    m_listing->recheck();
     statusBar()->clearMessage(); // a message of the old language would stay in it
     updateStatus();
     updateMonitorLabel();
@@ -547,7 +375,7 @@ void MainWindow::retranslate() {
 }
 
 void MainWindow::closeEvent(QCloseEvent *event) {
-    if (!maybeSave()) {
+    if (!m_files->maybeSave()) {
         event->ignore();
         return;
     }
@@ -556,7 +384,7 @@ void MainWindow::closeEvent(QCloseEvent *event) {
     settings.setValue(QStringLiteral("window/state"), saveState(kDockLayoutVersion));
     if (m_sideBySide)
         settings.setValue(QStringLiteral("view/split"), m_split->saveState());
-    m_recovery->remove();
+    m_files->closing();
     event->accept();
 }
 

@@ -48,6 +48,8 @@ namespace rung::app {
 
 class ConnectionPanel;
 class ElidingLabel;
+class FileController;
+class ListingController;
 class RecoveryFile;
 class ScanDebuggerView;
 class SimulationController;
@@ -66,23 +68,19 @@ public:
     editor::IlEditor *ilEditor() { return m_il; }
     editor::ProblemsView *problemsView() { return m_problems; }
 
-    // Opens a project (.rung) or a listing (.il, with the given target); false after telling
-    // the user why when the file cannot be read.
+    // The window's files (file_controller.h): open, save, the recovery file. The window's
+    // own entry points are its controller's.
+    FileController *files() const { return m_files; }
     bool openFile(const QString &path, const QString &targetId = QString(), bool quiet = false);
     bool saveTo(const QString &path);
-    // A file name chosen in a save dialog, with the first of `suffixes` added when it has none
-    // of them (typing "latch" for a PDF writes latch.pdf); when that names a file that exists,
-    // asks before it is replaced (the dialog asked about the name as typed). Empty: cancelled.
     QString completeSavePath(const QString &chosen, const QStringList &suffixes);
-    // Unsaved work: the program, or a list as typed (with errors) or symbol rows that are no
-    // symbol yet that the last save or open did not hold.
     bool isModified() const;
     void newProject(const model::Target &target, const QString &modelName);
     void setSideBySide(bool sideBySide);
     void editRungComment(); // asks for the comment of the rung under the cursor
     // Applies the IL editor's text now (the editor also does it after a short pause).
     void applyListing();
-    QString recoveryPath() const; // this window's (recovery.h)
+    QString recoveryPath() const;
     // Tools over the whole program (main_window_tools.cpp).
     void copyRung(bool cut);
     void pasteRungs();
@@ -109,11 +107,7 @@ public:
     QLineEdit *crossReferenceDevice() { return m_crossDevice; }
     QTreeWidget *crossReference() { return m_crossTree; }
     void writeRecovery();
-    // Offers the recovery file of an instance that is gone (crashed), newest first; true when
-    // one was recovered: it is then the open program, modified, with its original file.
     bool offerRecovery(bool ask = true);
-    // What the application shows first: work orphaned by a crash when the user recovers it,
-    // else the file of the command line (if any).
     void start(const QString &file, const QString &targetId, bool askToRecover = true);
 
     // Where the live values come from (main_window_monitor.cpp).
@@ -134,10 +128,6 @@ protected:
     void childEvent(QChildEvent *event) override;
 
 private:
-    // applyListing(), as a step of its own or into the undo step already under way (a fix).
-    void applyListingAs(editor::Document::ListingStep step);
-    // An instruction list or a symbol table opened, imported: read no further than this.
-    static constexpr qint64 kMaxTextFileBytes = 64 * 1024 * 1024;
     void buildActions();
     // Every text of the window in the language now installed: menus and toolbar built again,
     // docks, tabs, status bar, and the problems found again (their messages are translated
@@ -146,49 +136,11 @@ private:
     void buildDocks();
     void updateTitle();
     void updateStatus();
-    void refreshFromDocument();
-    // Before an edit of the rungs replaces the list as typed with errors (the list would show
-    // the ladder's program): asks the user, naming the list's first error; false to keep the
-    // list and leave the program as it is. True at once when there is nothing typed to lose.
-    // A list typed within the pause without errors is taken first, as its own step; false
-    // (with a word in the status bar) when it changed the rungs [first, first + count) the
-    // edit was made on, so that the edit never lands on a rung it was not made for.
-    bool mayReplaceTypedList(int first = 0, int count = 0);
-    void showProject(const model::Project &project, const QString &path);
-    // Names a program opened from a listing or ladder text after its file
-    // (Document::setUntitledName).
-    void nameImported(const QString &path);
-    // A program read from a listing or ladder text: a new project of the target's default
-    // model, named after the file.
-    void showImported(const model::Target &target, const model::LadderProgram &program,
-                      const QString &path);
     void refreshProjectInfo();
-    // The list as typed when it has errors the program could not take; empty when it agrees.
-    QString pendingListing() const;
-    // The project as Save and recovery keep it: the program and the list as typed.
-    model::Project projectToKeep() const;
     void locate(const model::Diagnostic &diagnostic);
-    void applyFix(const model::Diagnostic &diagnostic);
-    QAction *undoAction(bool redo, QObject *owner);
-    bool maybeSave();
-    void addRecent(const QString &path);
-    void rebuildRecentMenu();
-    void rebuildExamplesMenu();
-
-    // File actions (main_window_files.cpp).
-    void fileNew();
-    void fileOpen();
-    bool fileSave();
-    bool fileSaveAs();
-    void importListing();
-    void exportListing();
-    void exportImage(const QString &format);
-    void printPreview();
     void replaceDevice();
     void findDeviceDialog();
     void exportSymbols();
-    // A save dialog, then completeSavePath.
-    QString askSavePath(const QString &title, const QString &filter, const QStringList &suffixes);
     void buildCrossReference();
     // The monitoring docks: watch table, inputs and outputs, timing chart
     // (main_window_panels.cpp).
@@ -214,8 +166,6 @@ private:
     void updateOnlineActions();
     // The origin's label in the status bar and the title (main_window_monitor.cpp).
     void updateMonitorLabel();
-    // Which instruction of the program each line of the list shows, for its live values.
-    void updateMonitorLines(bool typed);
 
     editor::Document *m_document;
     editor::LadderView *m_ladder;
@@ -248,29 +198,8 @@ private:
     QPointer<model::MonitorSource> m_monitorSource;
     MonitorOrigin m_monitorOrigin = MonitorOrigin::Simulation;
     QLabel *m_statusOrigin = nullptr;
-    QMenu *m_recentMenu = nullptr;
-    QMenu *m_examplesMenu = nullptr;
-    QTimer m_ilTimer;
-    QTimer m_recoveryTimer;
-    std::unique_ptr<RecoveryFile> m_recovery;
-    std::vector<model::Diagnostic> m_listingErrors;
-    struct TypedSteps { // the step of each line of the text as typed, for the text it was read from
-        const model::ModelVariant *model = nullptr;
-        QString text;
-        std::vector<int> steps;
-        // The instruction of the program on each line (0-based), when the text as typed holds
-        // the program's instructions one for one; empty when it does not.
-        std::vector<int> instructionOfLine;
-    } m_typedSteps;
-    bool m_editingListing = false;
-    // The rungs revision and the listing the list pane last took from the document.
-    quint64 m_shownRevision = 0;
-    QString m_shownListing;
-    QString m_savedPending; // the list as typed that the file holds (pendingListing)
-    std::vector<model::PendingSymbol> m_savedPendingSymbols; // and the symbol rows it holds
-    // A status message about the list's errors ("... has errors"): it goes once the list
-    // applies without them, not when its time is up.
-    QString m_errorsMessage;
+    ListingController *m_listing = nullptr; // the list as typed, in step with the program
+    FileController *m_files = nullptr;
     QString m_findText; // the device of the last Find, for F3 / Shift+F3
     bool m_sideBySide = false;
 };

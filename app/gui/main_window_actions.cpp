@@ -1,11 +1,11 @@
-#include "compare_window.h"
 #include "main_window.h"
-#include "plcopen_exchange.h"
 
 #include "about_dialog.h"
 #include "dialogs.h"
+#include "file_controller.h"
 #include "file_dialogs.h"
 #include "language.h"
+#include "listing_controller.h"
 #include "symbol_table.h"
 
 #include "app/languages.h"
@@ -61,66 +61,13 @@ void MainWindow::buildActions() {
     bar->setObjectName(QStringLiteral("mainToolBar"));
     bar->setIconSize(QSize(24, 24));
     bar->setToolButtonStyle(Qt::ToolButtonIconOnly); // the names and keys are in the tooltips
-    QAction *newAction = file->addAction(editor::toolIcon(editor::ToolIcon::NewFile),
-                                         tr("&New Project..."), this, &MainWindow::fileNew);
-    newAction->setShortcut(QKeySequence::New);
-    QAction *open = file->addAction(editor::toolIcon(editor::ToolIcon::OpenFile), tr("&Open..."),
-                                    this, &MainWindow::fileOpen);
-    open->setShortcut(QKeySequence::Open);
-    m_recentMenu = file->addMenu(tr("Open &Recent"));
-    m_examplesMenu = file->addMenu(tr("E&xamples"));
-    m_examplesMenu->setObjectName(QStringLiteral("examplesMenu"));
-    QAction *save = file->addAction(editor::toolIcon(editor::ToolIcon::SaveFile), tr("&Save"), this,
-                                    &MainWindow::fileSave);
-    save->setShortcut(QKeySequence::Save);
-    file->addAction(tr("Save &As..."), this, &MainWindow::fileSaveAs)
-        ->setShortcut(QKeySequence::SaveAs);
-    file->addAction(tr("Co&mpare With..."), this, [this] {
-        CompareWindow::compareWithFile(this, projectToKeep(), m_document->name(),
-                                       m_document->path());
-    });
-    file->addSeparator();
-    file->addAction(tr("&Import Instruction List..."), this, &MainWindow::importListing);
-    file->addAction(tr("&Export Instruction List..."), this, &MainWindow::exportListing);
-    file->addAction(tr("Import &PLCopen XML..."), this, [this] {
-        if (!maybeSave())
-            return;
-        if (auto imported = importPlcopenFile(this, m_document->target(), m_document->path())) {
-            showProject(imported->project, QString());
-            nameImported(imported->path);
-        }
-    });
-    file->addAction(tr("Expor&t PLCopen XML..."), this, [this] {
-        if (m_ilTimer.isActive())
-            applyListing();
-        exportPlcopenFile(
-            this, projectToKeep(), m_document->name(), m_document->path(),
-            pendingListing().isEmpty()
-                ? QString()
-                : tr("The instruction list has "
-                     "errors, so the ladder is not the program as typed: fix the list first."));
-    });
-    QMenu *exportMenu = file->addMenu(tr("Export &Ladder"));
-    exportMenu->addAction(tr("As &PDF..."), this, [this] { exportImage(QStringLiteral("pdf")); });
-    exportMenu->addAction(tr("As &SVG..."), this, [this] { exportImage(QStringLiteral("svg")); });
-    exportMenu->addAction(tr("As P&NG..."), this, [this] { exportImage(QStringLiteral("png")); });
-    file->addAction(tr("Print Pre&view..."), this, &MainWindow::printPreview)
-        ->setShortcut(QKeySequence::Print);
-    file->addSeparator();
-    file->addAction(tr("&Quit"), this, &QWidget::close)->setShortcut(QKeySequence::Quit);
-    bar->addAction(newAction);
-    bar->addAction(open);
-    bar->addAction(save);
-    for (QAction *a : {newAction, open, save})
-        a->setToolTip(QStringLiteral("%1 (%2)").arg(
-            a->text().remove(QLatin1Char('&')).remove(QStringLiteral("...")),
-            a->shortcut().toString(QKeySequence::NativeText)));
+    m_files->addActions(file, bar);                  // file_controller.cpp
     bar->addSeparator();
 
     QMenu *edit = menuBar()->addMenu(tr("&Edit"));
-    QAction *undo = undoAction(false, edit);
+    QAction *undo = m_listing->undoAction(false, edit);
     undo->setShortcut(QKeySequence::Undo);
-    QAction *redo = undoAction(true, edit);
+    QAction *redo = m_listing->undoAction(true, edit);
     // Ctrl+Y as well, as on Windows, once: the platform's Redo may already be it.
     QList<QKeySequence> redoKeys = QKeySequence::keyBindings(QKeySequence::Redo);
     if (!redoKeys.contains(QKeySequence(Qt::CTRL | Qt::Key_Y)))
@@ -290,7 +237,7 @@ void MainWindow::buildActions() {
         ->setShortcut(QKeySequence::ZoomIn);
     view->addAction(tr("Zoom &Out"), this, [this] { m_ladder->setZoom(m_ladder->zoom() / 1.15); })
         ->setShortcut(QKeySequence::ZoomOut);
-    view->addAction(tr("&Check Program"), this, [this] { refreshFromDocument(); })
+    view->addAction(tr("&Check Program"), this, [this] { m_listing->refreshFromDocument(); })
         ->setShortcut(Qt::Key_F4);
     addPanelActions(view);      // main_window_panels.cpp
     buildSimulationMenu(bar);   // main_window_simulation.cpp
@@ -344,51 +291,6 @@ void MainWindow::buildActions() {
     });
     about->setObjectName(QStringLiteral("aboutAction"));
     about->setMenuRole(QAction::AboutRole);
-    rebuildRecentMenu();
-    rebuildExamplesMenu();
-}
-
-QAction *MainWindow::undoAction(bool redo, QObject *owner) {
-    // As QUndoStack's own actions, but the list's pending edit (typed, not yet applied)
-    // becomes a step first: Undo then takes back what was just typed, and no step of the
-    // stack runs on a text the program has not caught up with.
-    QUndoStack *stack = m_document->undoStack();
-    auto *action = new QAction(owner);
-    const auto label = [redo, stack] {
-        const QString what = redo ? stack->redoText() : stack->undoText();
-        if (what.isEmpty())
-            return redo ? tr("&Redo") : tr("&Undo");
-        //: %1 is the step's label, e.g. "Insert rung"
-        return redo ? tr("&Redo %1").arg(what) : tr("&Undo %1").arg(what);
-    };
-    const auto update = [this, action, label, redo, stack] {
-        action->setText(label());
-        action->setEnabled((redo ? stack->canRedo() : stack->canUndo()) ||
-                           (!redo && (m_ilTimer.isActive() || model::hasErrors(m_listingErrors))));
-    };
-    update();
-    // The action as the context: they go with it (a new language builds new ones), and
-    // ~MainWindow disconnects the stack and the list from every action before they go.
-    connect(stack, &QUndoStack::indexChanged, action, update);
-    connect(stack, &QUndoStack::cleanChanged, action, update);
-    connect(m_il, &editor::IlEditor::listingEdited, action, update);
-    connect(action, &QAction::triggered, this, [this, redo, stack] {
-        if (m_ilTimer.isActive())
-            applyListing();
-        // Text the program cannot follow (it has errors) is the list's own business: the
-        // stack's step would overwrite it with the last valid program's listing.
-        if (!redo && model::hasErrors(m_listingErrors) && m_il->isUndoAvailable()) {
-            m_il->undo();
-            applyListing();
-            return;
-        }
-        // A step of the rungs would replace the list as typed: asked first.
-        const int step = redo ? stack->index() : stack->index() - 1;
-        if (m_document->stepChangesRungs(step) && !mayReplaceTypedList())
-            return;
-        redo ? stack->redo() : stack->undo();
-    });
-    return action;
 }
 
 } // namespace rung::app

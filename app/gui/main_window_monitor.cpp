@@ -67,18 +67,4 @@ void MainWindow::updateMonitorLabel() {
                                    : QString());
 }
 
-void MainWindow::updateMonitorLines(bool typed) {
-    const auto instructions = m_document->sharedInstructions();
-    if (!typed) {
-        m_il->setMonitorLines(m_document->printedListing().instructionOfLine, instructions);
-        return;
-    }
-    // The text as typed: its own lines when it holds the program's instructions one for one,
-    // else no values (they would stand on the wrong lines).
-    if (m_typedSteps.text == m_il->text() && !m_typedSteps.instructionOfLine.empty())
-        m_il->setMonitorLines(m_typedSteps.instructionOfLine, instructions);
-    else
-        m_il->setMonitorLines({}, nullptr);
-}
-
 } // namespace rung::app

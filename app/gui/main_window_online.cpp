@@ -1,6 +1,7 @@
 #include "main_window.h"
 
 #include "connection_panel.h"
+#include "file_controller.h"
 #include "simulation_controller.h"
 
 #include "comms/driver/online_session.h"
@@ -75,8 +76,8 @@ void MainWindow::setupOnline() {
     connect(m_connectionPanel, &ConnectionPanel::sessionChanged, this,
             &MainWindow::onlineSessionChanged);
     connect(m_connectionPanel, &ConnectionPanel::saveTrafficRequested, this, [this] {
-        const QString path =
-            askSavePath(tr("Save Traffic Log"), tr("Text files (*.txt)"), {QStringLiteral("txt")});
+        const QString path = m_files->askSavePath(tr("Save Traffic Log"), tr("Text files (*.txt)"),
+                                                  {QStringLiteral("txt")});
         QString error;
         if (!path.isEmpty() && !m_connectionPanel->saveTraffic(path, &error))
             QMessageBox::critical(this, tr("Cannot save"), error);

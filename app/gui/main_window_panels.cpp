@@ -1,6 +1,7 @@
 #include "main_window.h"
 
 #include "connection_panel.h"
+#include "file_controller.h"
 #include "simulation_controller.h"
 #include "tests_panel.h"
 
@@ -54,8 +55,8 @@ void MainWindow::buildMonitorDocks() {
     connect(m_ioPanel, &editor::IoPanel::message, this, say);
     connect(m_chart, &editor::TimingChart::message, this, say);
     connect(m_chart, &editor::TimingChart::exportRequested, this, [this](const QString &format) {
-        const QString path =
-            askSavePath(tr("Export Timing Chart"), QStringLiteral("*.%1").arg(format), {format});
+        const QString path = m_files->askSavePath(tr("Export Timing Chart"),
+                                                  QStringLiteral("*.%1").arg(format), {format});
         QString error;
         if (path.isEmpty())
             return;

@@ -2,6 +2,7 @@
 
 #include "dialogs.h"
 #include "eliding_label.h"
+#include "listing_controller.h"
 #include "simulation_controller.h"
 #include "simulation_panel.h"
 
@@ -31,9 +32,8 @@ namespace rung::app {
 void MainWindow::setupSimulation() {
     m_simulation = new SimulationController(m_document, this);
     m_simulation->setBlocker([this]() -> QString {
-        if (m_ilTimer.isActive())
-            applyListing(); // what was just typed is part of what the user sees
-        if (model::hasErrors(m_listingErrors))
+        m_listing->flush(); // what was just typed is part of what the user sees
+        if (m_listing->hasErrors())
             return tr("The instruction list has errors, so the ladder still shows the last "
                       "program without them: correct the list (or undo) before simulating");
         return {};

@@ -1,6 +1,7 @@
 #include "main_window.h"
 
 #include "dialogs.h"
+#include "file_controller.h"
 #include "symbol_table.h"
 
 #include "editor/cross_reference_view.h"
@@ -218,8 +219,8 @@ void MainWindow::exportSymbols() {
                            .arg(rows.join(QStringLiteral(", ")))) != QMessageBox::Yes)
             return;
     }
-    const QString path =
-        askSavePath(tr("Export Symbols"), tr("CSV files (*.csv)"), {QStringLiteral("csv")});
+    const QString path = m_files->askSavePath(tr("Export Symbols"), tr("CSV files (*.csv)"),
+                                              {QStringLiteral("csv")});
     QString error;
     if (!path.isEmpty() && !m_symbols->exportCsv(path, &error))
         messageBox(QMessageBox::Critical, this, tr("Cannot export"), error);

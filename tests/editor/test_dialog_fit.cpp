@@ -186,7 +186,8 @@ struct DialogFit : test::WindowFixture, ::testing::WithParamInterface<const char
 
 TEST_P(DialogFit, EveryDialogFitsItsTitleAndTexts) {
     const char *mw = "rung::app::MainWindow";
-    expectFits("New Project", [&] { entry(mw, "&New Project...")->trigger(); });
+    const char *files = "rung::app::FileController";
+    expectFits("New Project", [&] { entry(files, "&New Project...")->trigger(); });
     expectFits("Find Device", [&] { entry(mw, "&Find Device...")->trigger(); });
     expectFits("Replace Device", [&] { entry(mw, "Replace &Device...")->trigger(); });
     expectFits("Rung Comment", [&] { window.editRungComment(); });
@@ -199,14 +200,14 @@ TEST_P(DialogFit, EveryDialogFitsItsTitleAndTexts) {
     expectFits("Breakpoint Condition", [&] { window.editBreakpointCondition(0); });
     // Save the changes? (New Project on a changed program asks first.)
     window.document()->insertRung(0, window.document()->ladder().rungs.front());
-    expectFits("Unsaved changes", [&] { entry(mw, "&New Project...")->trigger(); });
+    expectFits("Unsaved changes", [&] { entry(files, "&New Project...")->trigger(); });
     window.document()->markSaved();
     // Qt's own file dialogs, as under a desktop without one of its own: the size and date
     // columns' titles whole ("Dimensione" was cut).
     QCoreApplication::setAttribute(Qt::AA_DontUseNativeDialogs, true);
-    expectFits("Open", [&] { entry(mw, "&Open...")->trigger(); });
+    expectFits("Open", [&] { entry(files, "&Open...")->trigger(); });
     expectFits("Export Instruction List",
-               [&] { entry(mw, "&Export Instruction List...")->trigger(); });
+               [&] { entry(files, "&Export Instruction List...")->trigger(); });
     QCoreApplication::setAttribute(Qt::AA_DontUseNativeDialogs, false);
     // A file that cannot be opened.
     expectFits("Cannot open the file",
@@ -301,8 +302,8 @@ TEST_P(DialogFit, TheStatusBarTheLadderAndTheChartShowTheirTextsWhole) {
         const model::RungOverlay o = ladder->overlay(1);
         return o.output(1) ? o.output(1)->value : QString();
     };
-    ASSERT_TRUE(QTest::qWaitFor([&] { return movValues().contains(QStringLiteral("D1 = 12345")); },
-                                5000))
+    ASSERT_TRUE(
+        QTest::qWaitFor([&] { return movValues().contains(QStringLiteral("D1 = 12345")); }, 5000))
         << movValues().toStdString();
     {
         const editor::LadderMetrics m = ladder->metrics();

@@ -155,7 +155,7 @@ TEST_F(LanguageSwitch, TheNewProjectDialogIsWideEnoughForItsTitle) {
     test::pickMenuEntry(window, "Italiano");
     window.document()->markSaved(); // no "save the changes?" before the dialog
     QAction *entry = test::menuAction(
-        window, tr("rung::app::MainWindow", "&New Project...").remove(QLatin1Char('&')));
+        window, tr("rung::app::FileController", "&New Project...").remove(QLatin1Char('&')));
     ASSERT_NE(entry, nullptr);
     QString title;
     int width = 0;

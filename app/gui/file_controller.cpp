@@ -1,16 +1,21 @@
-#include "main_window.h"
+#include "file_controller.h"
 
+#include "compare_window.h"
 #include "dialogs.h"
 #include "example_titles.h"
 #include "file_dialogs.h"
 #include "installed_files.h"
 #include "ladder_export.h"
+#include "listing_controller.h"
+#include "plcopen_exchange.h"
 #include "recovery.h"
 #include "symbol_table.h"
 #include "tests_panel.h"
 
+#include "editor/document.h"
 #include "editor/il_editor.h"
 #include "editor/ladder_view.h"
+#include "editor/tool_icons.h"
 
 #include "model/ladder/ladder_text.h"
 #include "model/project/program_file.h"
@@ -31,6 +36,7 @@
 #include <QPrinter>
 #include <QSettings>
 #include <QStatusBar>
+#include <QToolBar>
 
 namespace rung::app {
 
@@ -40,19 +46,113 @@ constexpr int kMaxRecent = 8;
 
 } // namespace
 
-QString MainWindow::recoveryPath() const {
+FileController::FileController(editor::Document *document, editor::LadderView *ladder,
+                               editor::IlEditor *il, ListingController *listing,
+                               SymbolTable *symbols, QStatusBar *status, QWidget *window,
+                               QObject *parent)
+    : QObject(parent)
+    , m_document(document)
+    , m_ladder(ladder)
+    , m_il(il)
+    , m_listing(listing)
+    , m_symbols(symbols)
+    , m_status(status)
+    , m_window(window)
+    , m_recovery(std::make_unique<RecoveryFile>()) {
+    m_recoveryTimer.setInterval(60 * 1000);
+    connect(&m_recoveryTimer, &QTimer::timeout, this, &FileController::writeRecovery);
+    m_recoveryTimer.start();
+}
+
+FileController::~FileController() = default;
+
+void FileController::addActions(QMenu *file, QToolBar *bar) {
+    QAction *newAction = file->addAction(editor::toolIcon(editor::ToolIcon::NewFile),
+                                         tr("&New Project..."), this, &FileController::fileNew);
+    newAction->setShortcut(QKeySequence::New);
+    QAction *open = file->addAction(editor::toolIcon(editor::ToolIcon::OpenFile), tr("&Open..."),
+                                    this, &FileController::fileOpen);
+    open->setShortcut(QKeySequence::Open);
+    m_recentMenu = file->addMenu(tr("Open &Recent"));
+    m_examplesMenu = file->addMenu(tr("E&xamples"));
+    m_examplesMenu->setObjectName(QStringLiteral("examplesMenu"));
+    QAction *save = file->addAction(editor::toolIcon(editor::ToolIcon::SaveFile), tr("&Save"), this,
+                                    &FileController::fileSave);
+    save->setShortcut(QKeySequence::Save);
+    file->addAction(tr("Save &As..."), this, &FileController::fileSaveAs)
+        ->setShortcut(QKeySequence::SaveAs);
+    file->addAction(tr("Co&mpare With..."), this, [this] {
+        CompareWindow::compareWithFile(m_window, projectToKeep(), m_document->name(),
+                                       m_document->path());
+    });
+    file->addSeparator();
+    file->addAction(tr("&Import Instruction List..."), this, &FileController::importListing);
+    file->addAction(tr("&Export Instruction List..."), this, &FileController::exportListing);
+    file->addAction(tr("Import &PLCopen XML..."), this, [this] {
+        if (!maybeSave())
+            return;
+        if (auto imported = importPlcopenFile(m_window, m_document->target(), m_document->path())) {
+            showProject(imported->project, QString());
+            nameImported(imported->path);
+        }
+    });
+    file->addAction(tr("Expor&t PLCopen XML..."), this, [this] {
+        m_listing->flush();
+        exportPlcopenFile(
+            m_window, projectToKeep(), m_document->name(), m_document->path(),
+            m_listing->pendingListing().isEmpty()
+                ? QString()
+                : tr("The instruction list has "
+                     "errors, so the ladder is not the program as typed: fix the list first."));
+    });
+    QMenu *exportMenu = file->addMenu(tr("Export &Ladder"));
+    exportMenu->addAction(tr("As &PDF..."), this, [this] { exportImage(QStringLiteral("pdf")); });
+    exportMenu->addAction(tr("As &SVG..."), this, [this] { exportImage(QStringLiteral("svg")); });
+    exportMenu->addAction(tr("As P&NG..."), this, [this] { exportImage(QStringLiteral("png")); });
+    file->addAction(tr("Print Pre&view..."), this, &FileController::printPreview)
+        ->setShortcut(QKeySequence::Print);
+    file->addSeparator();
+    if (m_window)
+        file->addAction(tr("&Quit"), m_window, &QWidget::close)->setShortcut(QKeySequence::Quit);
+    bar->addAction(newAction);
+    bar->addAction(open);
+    bar->addAction(save);
+    for (QAction *a : {newAction, open, save})
+        a->setToolTip(QStringLiteral("%1 (%2)").arg(
+            a->text().remove(QLatin1Char('&')).remove(QStringLiteral("...")),
+            a->shortcut().toString(QKeySequence::NativeText)));
+    rebuildRecentMenu();
+    rebuildExamplesMenu();
+}
+
+bool FileController::isModified() const {
+    return m_document->isModified() || m_listing->pendingListing() != m_savedPending ||
+           m_symbols->pending() != m_savedPendingSymbols;
+}
+
+model::Project FileController::projectToKeep() const {
+    model::Project project = m_document->project();
+    project.pendingListing = m_listing->pendingListing();
+    project.pendingSymbols = m_symbols->pending();
+    return project;
+}
+
+void FileController::closing() {
+    m_recovery->remove();
+}
+
+QString FileController::recoveryPath() const {
     return m_recovery->path();
 }
 
-void MainWindow::writeRecovery() {
-    if (m_ilTimer.isActive())
-        applyListing(); // what was typed last is work too
+void FileController::writeRecovery() {
+    m_listing->flush(); // what was typed last is work too
     QString error;
     if (isModified() && !m_recovery->write(projectToKeep(), m_document->path(), &error))
         statusBar()->showMessage(error, 10000);
 }
 
-bool MainWindow::offerRecovery(bool ask) {
+bool FileController::offerRecovery(bool ask) {
     QStringList unreadable;
     auto recovered = m_recovery->takeOrphan(
         [this, ask](const QString &origin) {
@@ -63,14 +163,14 @@ bool MainWindow::offerRecovery(bool ask) {
                     : tr("Rung Studio was not closed properly last time. Recover the unsaved "
                          "changes to %1?")
                           .arg(QDir::toNativeSeparators(origin));
-            return !ask || messageBox(QMessageBox::Question, this, tr("Recover"), question) ==
+            return !ask || messageBox(QMessageBox::Question, m_window, tr("Recover"), question) ==
                                QMessageBox::Yes;
         },
         &unreadable);
     if (!unreadable.isEmpty()) {
         statusBar()->showMessage(unreadable.join(u' '), 15000);
         if (ask)
-            messageBox(QMessageBox::Warning, this, tr("Recover"), unreadable.join(u'\n'));
+            messageBox(QMessageBox::Warning, m_window, tr("Recover"), unreadable.join(u'\n'));
     }
     if (!recovered)
         return false;
@@ -80,19 +180,19 @@ bool MainWindow::offerRecovery(bool ask) {
     return true;
 }
 
-void MainWindow::start(const QString &file, const QString &targetId, bool askToRecover) {
+void FileController::start(const QString &file, const QString &targetId, bool askToRecover) {
     // Recovery comes first, or a start with a file (as scripts/start.sh does) would never
     // offer it, and the next normal close would delete the orphan with its work.
     if (!offerRecovery(askToRecover) && !file.isEmpty())
         openFile(file, targetId);
 }
 
-void MainWindow::showProject(const model::Project &project, const QString &path) {
+void FileController::showProject(const model::Project &project, const QString &path) {
     // The editor gets the target's lexer before the text arrives, so the text is styled
     // once, as it is shown; Document::setProject emits programChanged, which refreshes.
     m_il->setTarget(*project.target);
     m_il->dropHistory();
-    m_listingErrors.clear();
+    m_listing->forget();
     m_symbols->setPending(project.pendingSymbols); // the rows typed that are no symbol yet
     m_savedPendingSymbols = project.pendingSymbols;
     m_document->setProject(project, path);
@@ -101,24 +201,24 @@ void MainWindow::showProject(const model::Project &project, const QString &path)
         // Saved while the list had errors: it shows as it was typed, errors marked, the
         // ladder showing the last valid program.
         m_il->setText(project.pendingListing);
-        applyListing();
+        m_listing->applyListing();
     }
 }
 
-void MainWindow::newProject(const model::Target &target, const QString &modelName) {
+void FileController::newProject(const model::Target &target, const QString &modelName) {
     m_il->setTarget(target);
     m_il->dropHistory();
-    m_listingErrors.clear();
+    m_listing->forget();
     m_symbols->setPending({}); // half-typed rows belong to the program that goes
     m_savedPendingSymbols.clear();
     m_savedPending.clear();
     m_document->reset(target, modelName);
 }
 
-bool MainWindow::openFile(const QString &path, const QString &targetId, bool quiet) {
+bool FileController::openFile(const QString &path, const QString &targetId, bool quiet) {
     auto fail = [&](const QString &message) {
         if (!quiet)
-            messageBox(QMessageBox::Critical, this, tr("Cannot open the file"), message);
+            messageBox(QMessageBox::Critical, m_window, tr("Cannot open the file"), message);
         statusBar()->showMessage(message, 10000);
         return false;
     };
@@ -144,8 +244,9 @@ bool MainWindow::openFile(const QString &path, const QString &targetId, bool qui
         };
         if (!same(m_document->path(), program) && !openFile(program, targetOfTest, quiet))
             return false;
-        auto *tests = findChild<TestsPanel *>();
-        if (auto *dock = findChild<QDockWidget *>(QStringLiteral("testsDock"))) {
+        auto *tests = m_window ? m_window->findChild<TestsPanel *>() : nullptr;
+        if (auto *dock = m_window ? m_window->findChild<QDockWidget *>(QStringLiteral("testsDock"))
+                                  : nullptr) {
             dock->show();
             dock->raise();
         }
@@ -199,19 +300,18 @@ bool MainWindow::openFile(const QString &path, const QString &targetId, bool qui
         // the problems: the user fixes it here and the ladder follows.
         newProject(target, target.defaultModel().name);
         m_il->setText(file->text);
-        applyListing();
+        m_listing->applyListing();
         nameImported(path);
-        m_errorsMessage = tr("%1 has errors; the ladder follows once they are fixed")
-                              .arg(QFileInfo(path).fileName());
-        statusBar()->showMessage(m_errorsMessage, 10000);
+        m_listing->sayErrors(tr("%1 has errors; the ladder follows once they are fixed")
+                                 .arg(QFileInfo(path).fileName()));
         return true;
     }
     showImported(target, ladder.ladder, path);
     return true;
 }
 
-void MainWindow::showImported(const model::Target &target, const model::LadderProgram &program,
-                              const QString &path) {
+void FileController::showImported(const model::Target &target, const model::LadderProgram &program,
+                                  const QString &path) {
     model::Project project;
     project.target = &target;
     project.model = target.defaultModel().name;
@@ -220,7 +320,7 @@ void MainWindow::showImported(const model::Target &target, const model::LadderPr
     nameImported(path);
 }
 
-void MainWindow::nameImported(const QString &path) {
+void FileController::nameImported(const QString &path) {
     // A listing or ladder text opens as a new project named after its file; saving it writes
     // a project beside it, not over the text.
     const QFileInfo file(path);
@@ -230,13 +330,12 @@ void MainWindow::nameImported(const QString &path) {
                                     QString::fromLatin1(model::kProjectExtension)));
 }
 
-bool MainWindow::saveTo(const QString &path) {
-    if (m_ilTimer.isActive())
-        applyListing(); // what was typed last is saved too
+bool FileController::saveTo(const QString &path) {
+    m_listing->flush(); // what was typed last is saved too
     const model::Project project = projectToKeep();
     model::ProjectError error;
     if (!model::saveProject(project, path, &error)) {
-        messageBox(QMessageBox::Critical, this, tr("Cannot save"), error.message);
+        messageBox(QMessageBox::Critical, m_window, tr("Cannot save"), error.message);
         return false;
     }
     m_savedPending = project.pendingListing;
@@ -245,8 +344,7 @@ bool MainWindow::saveTo(const QString &path) {
     m_document->markSaved();
     m_recovery->remove();
     addRecent(path);
-    refreshProjectInfo();
-    updateTitle();
+    emit saved();
     if (project.pendingListing.isEmpty())
         statusBar()->showMessage(tr("Saved %1").arg(path), 3000);
     else
@@ -258,12 +356,11 @@ bool MainWindow::saveTo(const QString &path) {
     return true;
 }
 
-bool MainWindow::maybeSave() {
-    if (m_ilTimer.isActive())
-        applyListing();
+bool FileController::maybeSave() {
+    m_listing->flush();
     if (!isModified())
         return true;
-    const auto answer = messageBox(QMessageBox::Warning, this, tr("Unsaved changes"),
+    const auto answer = messageBox(QMessageBox::Warning, m_window, tr("Unsaved changes"),
                                    tr("Save the changes to the program?"),
                                    QMessageBox::Save | QMessageBox::Discard | QMessageBox::Cancel);
     if (answer == QMessageBox::Save)
@@ -271,10 +368,10 @@ bool MainWindow::maybeSave() {
     return answer == QMessageBox::Discard;
 }
 
-void MainWindow::fileNew() {
+void FileController::fileNew() {
     if (!maybeSave())
         return;
-    QDialog dialog(this);
+    QDialog dialog(m_window);
     dialog.setWindowTitle(tr("New Project"));
     auto *form = new QFormLayout(&dialog);
     auto *family = new QComboBox;
@@ -304,45 +401,45 @@ void MainWindow::fileNew() {
     newProject(*model::Target::byId(family->currentData().toString()), modelBox->currentText());
 }
 
-void MainWindow::fileOpen() {
+void FileController::fileOpen() {
     if (!maybeSave())
         return;
     const QString path = askOpenFile(
-        this, tr("Open"), m_document->path(),
+        m_window, tr("Open"), m_document->path(),
         tr("Rung Studio projects (*.rung);;Instruction lists (*.il *.txt);;Ladder texts "
            "(*.ladder);;Scenario tests (*.rungtest)"));
     if (!path.isEmpty())
         openFile(path);
 }
 
-bool MainWindow::fileSave() {
+bool FileController::fileSave() {
     if (m_document->path().isEmpty())
         return fileSaveAs();
     return saveTo(m_document->path());
 }
 
-QString MainWindow::completeSavePath(const QString &chosen, const QStringList &suffixes) {
+QString FileController::completeSavePath(const QString &chosen, const QStringList &suffixes) {
     if (chosen.isEmpty() || suffixes.isEmpty())
         return chosen;
     if (suffixes.contains(QFileInfo(chosen).suffix(), Qt::CaseInsensitive))
         return chosen;
     const QString path = chosen + QLatin1Char('.') + suffixes.front();
     if (QFileInfo::exists(path) &&
-        messageBox(QMessageBox::Question, this, tr("Replace File"),
+        messageBox(QMessageBox::Question, m_window, tr("Replace File"),
                    tr("%1 already exists. Replace it?").arg(QDir::toNativeSeparators(path))) !=
             QMessageBox::Yes)
         return QString();
     return path;
 }
 
-QString MainWindow::askSavePath(const QString &title, const QString &filter,
-                                const QStringList &suffixes) {
-    return completeSavePath(askSaveFile(this, title, fileDialogFolder(m_document->path()), filter),
-                            suffixes);
+QString FileController::askSavePath(const QString &title, const QString &filter,
+                                    const QStringList &suffixes) {
+    return completeSavePath(
+        askSaveFile(m_window, title, fileDialogFolder(m_document->path()), filter), suffixes);
 }
 
-bool MainWindow::fileSaveAs() {
-    const QString path = completeSavePath(askSaveFile(this, tr("Save As"),
+bool FileController::fileSaveAs() {
+    const QString path = completeSavePath(askSaveFile(m_window, tr("Save As"),
                                                       m_document->suggestedPath().isEmpty()
                                                           ? fileDialogFolder(QString())
                                                           : m_document->suggestedPath(),
@@ -353,55 +450,54 @@ bool MainWindow::fileSaveAs() {
     return saveTo(path);
 }
 
-void MainWindow::importListing() {
+void FileController::importListing() {
     if (!maybeSave())
         return;
-    const QString path = askOpenFile(this, tr("Import Instruction List"), m_document->path(),
+    const QString path = askOpenFile(m_window, tr("Import Instruction List"), m_document->path(),
                                      tr("Instruction lists (*.il *.txt);;All files (*)"));
     // Read for the PLC the list names on its first line, else for the project's.
     if (!path.isEmpty())
         openFile(path);
 }
 
-void MainWindow::exportListing() {
-    if (m_ilTimer.isActive())
-        applyListing();
+void FileController::exportListing() {
+    m_listing->flush();
     // Say what stands in the way before the user picks a file for nothing.
-    QString error =
-        ProgramExport(*m_document, m_ladder->namesFirst()).listingBlockers(m_listingErrors);
+    QString error = ProgramExport(*m_document, m_ladder->namesFirst())
+                        .listingBlockers(m_listing->listingErrors());
     if (!error.isEmpty()) {
-        messageBox(QMessageBox::Critical, this, tr("Cannot export"), error);
+        messageBox(QMessageBox::Critical, m_window, tr("Cannot export"), error);
         return;
     }
     const QString path =
         askSavePath(tr("Export Instruction List"), tr("Instruction lists (*.il *.txt)"),
                     {QStringLiteral("il"), QStringLiteral("txt")});
-    if (!path.isEmpty() &&
-        !ProgramExport(*m_document, m_ladder->namesFirst()).listing(path, &error, m_listingErrors))
-        messageBox(QMessageBox::Critical, this, tr("Cannot export"), error);
+    if (!path.isEmpty() && !ProgramExport(*m_document, m_ladder->namesFirst())
+                                .listing(path, &error, m_listing->listingErrors()))
+        messageBox(QMessageBox::Critical, m_window, tr("Cannot export"), error);
 }
 
-void MainWindow::exportImage(const QString &format) {
+void FileController::exportImage(const QString &format) {
     const QString path =
         askSavePath(tr("Export Ladder"), QStringLiteral("*.%1").arg(format), {format});
     if (path.isEmpty())
         return;
     QString error;
     if (!ProgramExport(*m_document, m_ladder->namesFirst()).ladder(path, &error))
-        messageBox(QMessageBox::Critical, this, tr("Cannot export"), error);
+        messageBox(QMessageBox::Critical, m_window, tr("Cannot export"), error);
 }
 
-void MainWindow::printPreview() {
+void FileController::printPreview() {
     QPrinter printer(QPrinter::HighResolution);
     printer.setPageOrientation(QPageLayout::Landscape);
     printer.setPageMargins(QMarginsF(12, 10, 12, 10), QPageLayout::Millimeter);
-    QPrintPreviewDialog dialog(&printer, this);
+    QPrintPreviewDialog dialog(&printer, m_window);
     connect(&dialog, &QPrintPreviewDialog::paintRequested, this,
             [this](QPrinter *pr) { ProgramExport(*m_document, m_ladder->namesFirst()).print(pr); });
     dialog.exec();
 }
 
-void MainWindow::addRecent(const QString &path) {
+void FileController::addRecent(const QString &path) {
     QSettings settings;
     QStringList recent = settings.value(QStringLiteral("files/recent")).toStringList();
     recent.removeAll(path);
@@ -412,7 +508,9 @@ void MainWindow::addRecent(const QString &path) {
     rebuildRecentMenu();
 }
 
-void MainWindow::rebuildRecentMenu() {
+void FileController::rebuildRecentMenu() {
+    if (!m_recentMenu) // no menu given yet (addActions): the list is kept all the same
+        return;
     m_recentMenu->clear();
     const QStringList recent = QSettings().value(QStringLiteral("files/recent")).toStringList();
     for (const QString &path : recent)
@@ -426,9 +524,11 @@ void MainWindow::rebuildRecentMenu() {
     m_recentMenu->setEnabled(!recent.isEmpty());
 }
 
-void MainWindow::rebuildExamplesMenu() {
+void FileController::rebuildExamplesMenu() {
     // The manuals' examples, one submenu per target, from the folder installed beside the
     // program (share/rungstudio/examples).
+    if (!m_examplesMenu)
+        return;
     m_examplesMenu->clear();
     std::map<QString, QStringList> byTarget;
     if (const QString folder = examplesFolder(); !folder.isEmpty()) {
@@ -452,7 +552,7 @@ void MainWindow::rebuildExamplesMenu() {
                 model::ProjectError error;
                 auto project = model::loadProject(path, &error);
                 if (!project) {
-                    messageBox(QMessageBox::Critical, this, tr("Cannot open the example"),
+                    messageBox(QMessageBox::Critical, m_window, tr("Cannot open the example"),
                                error.message);
                     return;
                 }
