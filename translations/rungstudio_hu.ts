@@ -1231,7 +1231,7 @@ PLC after serve restarts</source>
         <translation>Létradiagram exportálása</translation>
     </message>
     <message>
-        <location line="+69"/>
+        <location line="+73"/>
         <source>Cannot open the example</source>
         <translation>A példa nem nyitható meg</translation>
     </message>
@@ -1346,7 +1346,7 @@ PLC after serve restarts</source>
 <context>
     <name>rung::app::MainWindow</name>
     <message>
-        <location filename="../app/gui/main_window.cpp" line="+178"/>
+        <location filename="../app/gui/main_window.cpp" line="+207"/>
         <source>Problems</source>
         <translation>Problémák</translation>
     </message>
@@ -1363,7 +1363,7 @@ PLC after serve restarts</source>
         <translation>Szimbólumok</translation>
     </message>
     <message>
-        <location filename="../app/gui/main_window_actions.cpp" line="+51"/>
+        <location filename="../app/gui/main_window_actions.cpp" line="+52"/>
         <source>&amp;File</source>
         <translation>&amp;Fájl</translation>
     </message>
@@ -1710,12 +1710,12 @@ Ctrl+Z / Ctrl+Y: visszavonás / mégis, Ctrl+görgő: nagyítás, F4: a program 
         <translation>%1. létrafok, %2. sor, %3. oszlop</translation>
     </message>
     <message>
-        <location filename="../app/gui/main_window_online.cpp" line="+83"/>
+        <location line="-196"/>
         <source>Cannot save</source>
         <translation>A mentés nem sikerült</translation>
     </message>
     <message>
-        <location filename="../app/gui/main_window_panels.cpp" line="+67"/>
+        <location filename="../app/gui/main_window_panels.cpp" line="+69"/>
         <location filename="../app/gui/main_window_tools.cpp" line="+4"/>
         <source>Cannot export</source>
         <translation>Az exportálás nem sikerült</translation>
@@ -1809,7 +1809,7 @@ Ctrl+Z / Ctrl+Y: visszavonás / mégis, Ctrl+görgő: nagyítás, F4: a program 
         </translation>
     </message>
     <message>
-        <location filename="../app/gui/main_window.cpp" line="+99"/>
+        <location filename="../app/gui/main_window.cpp" line="+295"/>
         <location filename="../app/gui/main_window_tools.cpp" line="-24"/>
         <source>Cross Reference</source>
         <translation>Kereszthivatkozás</translation>
@@ -2066,7 +2066,7 @@ Ctrl+Z / Ctrl+Y: visszavonás / mégis, Ctrl+görgő: nagyítás, F4: a program 
         <translation>Idődiagram</translation>
     </message>
     <message>
-        <location filename="../app/gui/main_window_online.cpp" line="-4"/>
+        <location filename="../app/gui/main_window.cpp" line="-299"/>
         <source>Save Traffic Log</source>
         <translation>Adatforgalom-napló mentése</translation>
     </message>
@@ -2074,97 +2074,6 @@ Ctrl+Z / Ctrl+Y: visszavonás / mégis, Ctrl+görgő: nagyítás, F4: a program 
         <location line="+0"/>
         <source>Text files (*.txt)</source>
         <translation>Szövegfájlok (*.txt)</translation>
-    </message>
-    <message>
-        <location line="+11"/>
-        <source>Go Online</source>
-        <translation>Online kapcsolódás</translation>
-    </message>
-    <message>
-        <location line="+1"/>
-        <source>The simulation is running. Going online pauses it: the views then show the PLC&apos;s values. Go online?</source>
-        <translation>A szimuláció fut. Az online kapcsolódás szünetelteti: a nézetek ezután a PLC értékeit mutatják. Kapcsolódik?</translation>
-    </message>
-    <message>
-        <location line="+11"/>
-        <source>Simulate</source>
-        <translation>Szimuláció</translation>
-    </message>
-    <message>
-        <location line="+1"/>
-        <source>The IDE is online to %1. Go offline to simulate?</source>
-        <translation>Az IDE online kapcsolatban van ezzel: %1. Bontja a kapcsolatot a szimulációhoz?</translation>
-    </message>
-    <message>
-        <location line="+5"/>
-        <source>The simulation stays paused while the IDE is online</source>
-        <translation>A szimuláció szünetel, amíg az IDE online</translation>
-    </message>
-    <message>
-        <location line="+8"/>
-        <source>Connection</source>
-        <translation>Kapcsolat</translation>
-    </message>
-    <message>
-        <location line="+3"/>
-        <source>&amp;Online</source>
-        <translation>&amp;Online</translation>
-    </message>
-    <message>
-        <location line="+15"/>
-        <location line="+81"/>
-        <source>Go &amp;Online</source>
-        <translation>&amp;Online kapcsolódás</translation>
-    </message>
-    <message>
-        <location line="-71"/>
-        <source>&amp;Test Connection</source>
-        <translation>Kapcsolat &amp;tesztelése</translation>
-    </message>
-    <message>
-        <location line="+6"/>
-        <source>PLC to &amp;STOP / PROGRAM</source>
-        <translation>PLC &amp;STOP / PROGRAM módba</translation>
-    </message>
-    <message>
-        <location line="+2"/>
-        <source>PLC to &amp;MONITOR</source>
-        <translation>PLC &amp;MONITOR módba</translation>
-    </message>
-    <message>
-        <location line="+2"/>
-        <source>PLC to &amp;RUN</source>
-        <translation>PLC &amp;RUN módba</translation>
-    </message>
-    <message>
-        <location line="+3"/>
-        <source>Release All &amp;Forces in the PLC</source>
-        <translation>Minden &amp;kényszerítés feloldása a PLC-ben</translation>
-    </message>
-    <message>
-        <location line="+23"/>
-        <source>Online: %1</source>
-        <translation>Online: %1</translation>
-    </message>
-    <message>
-        <location line="+6"/>
-        <source>Going online. The IDE cannot know whether the PLC runs the program shown: compare by reading devices</source>
-        <translation>Online kapcsolódás. Az IDE nem tudhatja, hogy a PLC a látható programot futtatja-e: hasonlítsa össze operandusok olvasásával</translation>
-    </message>
-    <message>
-        <location line="+9"/>
-        <source>Offline</source>
-        <translation>Offline</translation>
-    </message>
-    <message>
-        <location line="+14"/>
-        <source>%1 cannot switch the PLC between RUN and STOP: use the switch on the PLC</source>
-        <translation>A(z) %1 nem tudja a PLC-t RUN és STOP között váltani: használja a PLC kapcsolóját</translation>
-    </message>
-    <message>
-        <location line="+6"/>
-        <source>Go &amp;Offline</source>
-        <translation>&amp;Offline (kapcsolat bontása)</translation>
     </message>
     <message>
         <location filename="../app/gui/main_window_panels.cpp" line="+1"/>
@@ -2271,6 +2180,100 @@ A read és a write kilépési kódja: 0 kész, 1 a PLC nem válaszolt vagy eluta
         <location line="-16"/>
         <source>%1: %2</source>
         <translation>%1: %2</translation>
+    </message>
+</context>
+<context>
+    <name>rung::app::OnlineController</name>
+    <message>
+        <location filename="../app/gui/online_controller.cpp" line="+73"/>
+        <source>Go Online</source>
+        <translation>Online kapcsolódás</translation>
+    </message>
+    <message>
+        <location line="+1"/>
+        <source>The simulation is running. Going online pauses it: the views then show the PLC&apos;s values. Go online?</source>
+        <translation>A szimuláció fut. Az online kapcsolódás szünetelteti: a nézetek ezután a PLC értékeit mutatják. Kapcsolódik?</translation>
+    </message>
+    <message>
+        <location line="+11"/>
+        <source>Simulate</source>
+        <translation>Szimuláció</translation>
+    </message>
+    <message>
+        <location line="+0"/>
+        <source>The IDE is online to %1. Go offline to simulate?</source>
+        <translation>Az IDE online kapcsolatban van ezzel: %1. Bontja a kapcsolatot a szimulációhoz?</translation>
+    </message>
+    <message>
+        <location line="+5"/>
+        <source>The simulation stays paused while the IDE is online</source>
+        <translation>A szimuláció szünetel, amíg az IDE online</translation>
+    </message>
+    <message>
+        <location line="+25"/>
+        <source>Connection</source>
+        <translation>Kapcsolat</translation>
+    </message>
+    <message>
+        <location line="+3"/>
+        <source>&amp;Online</source>
+        <translation>&amp;Online</translation>
+    </message>
+    <message>
+        <location line="+14"/>
+        <location line="+73"/>
+        <source>Go &amp;Online</source>
+        <translation>&amp;Online kapcsolódás</translation>
+    </message>
+    <message>
+        <location line="-63"/>
+        <source>&amp;Test Connection</source>
+        <translation>Kapcsolat &amp;tesztelése</translation>
+    </message>
+    <message>
+        <location line="+7"/>
+        <source>PLC to &amp;STOP / PROGRAM</source>
+        <translation>PLC &amp;STOP / PROGRAM módba</translation>
+    </message>
+    <message>
+        <location line="+2"/>
+        <source>PLC to &amp;MONITOR</source>
+        <translation>PLC &amp;MONITOR módba</translation>
+    </message>
+    <message>
+        <location line="+2"/>
+        <source>PLC to &amp;RUN</source>
+        <translation>PLC &amp;RUN módba</translation>
+    </message>
+    <message>
+        <location line="+3"/>
+        <source>Release All &amp;Forces in the PLC</source>
+        <translation>Minden &amp;kényszerítés feloldása a PLC-ben</translation>
+    </message>
+    <message>
+        <location line="+21"/>
+        <source>Online: %1</source>
+        <translation>Online: %1</translation>
+    </message>
+    <message>
+        <location line="+6"/>
+        <source>Going online. The IDE cannot know whether the PLC runs the program shown: compare by reading devices</source>
+        <translation>Online kapcsolódás. Az IDE nem tudhatja, hogy a PLC a látható programot futtatja-e: hasonlítsa össze operandusok olvasásával</translation>
+    </message>
+    <message>
+        <location line="+4"/>
+        <source>Offline</source>
+        <translation>Offline</translation>
+    </message>
+    <message>
+        <location line="+15"/>
+        <source>%1 cannot switch the PLC between RUN and STOP: use the switch on the PLC</source>
+        <translation>A(z) %1 nem tudja a PLC-t RUN és STOP között váltani: használja a PLC kapcsolóját</translation>
+    </message>
+    <message>
+        <location line="+3"/>
+        <source>Go &amp;Offline</source>
+        <translation>&amp;Offline (kapcsolat bontása)</translation>
     </message>
 </context>
 <context>

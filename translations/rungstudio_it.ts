@@ -1233,7 +1233,7 @@ PLC dopo il riavvio di serve</translation>
         <translation>Esporta schema ladder</translation>
     </message>
     <message>
-        <location line="+69"/>
+        <location line="+73"/>
         <source>Cannot open the example</source>
         <translation>Impossibile aprire l&apos;esempio</translation>
     </message>
@@ -1348,7 +1348,7 @@ PLC dopo il riavvio di serve</translation>
 <context>
     <name>rung::app::MainWindow</name>
     <message>
-        <location filename="../app/gui/main_window.cpp" line="+178"/>
+        <location filename="../app/gui/main_window.cpp" line="+207"/>
         <source>Problems</source>
         <translation>Problemi</translation>
     </message>
@@ -1365,7 +1365,7 @@ PLC dopo il riavvio di serve</translation>
         <translation>Simboli</translation>
     </message>
     <message>
-        <location filename="../app/gui/main_window_actions.cpp" line="+51"/>
+        <location filename="../app/gui/main_window_actions.cpp" line="+52"/>
         <source>&amp;File</source>
         <translation>&amp;File</translation>
     </message>
@@ -1714,12 +1714,12 @@ Ctrl+Z / Ctrl+Y: annulla / ripeti, Ctrl+rotellina: zoom, F4: verifica il program
         <translation>Segmento %1, riga %2, colonna %3</translation>
     </message>
     <message>
-        <location filename="../app/gui/main_window_online.cpp" line="+83"/>
+        <location line="-196"/>
         <source>Cannot save</source>
         <translation>Impossibile salvare</translation>
     </message>
     <message>
-        <location filename="../app/gui/main_window_panels.cpp" line="+67"/>
+        <location filename="../app/gui/main_window_panels.cpp" line="+69"/>
         <location filename="../app/gui/main_window_tools.cpp" line="+4"/>
         <source>Cannot export</source>
         <translation>Impossibile esportare</translation>
@@ -1816,7 +1816,7 @@ Ctrl+Z / Ctrl+Y: annulla / ripeti, Ctrl+rotellina: zoom, F4: verifica il program
         </translation>
     </message>
     <message>
-        <location filename="../app/gui/main_window.cpp" line="+99"/>
+        <location filename="../app/gui/main_window.cpp" line="+295"/>
         <location filename="../app/gui/main_window_tools.cpp" line="-24"/>
         <source>Cross Reference</source>
         <translation>Riferimenti incrociati</translation>
@@ -2073,7 +2073,7 @@ Ctrl+Z / Ctrl+Y: annulla / ripeti, Ctrl+rotellina: zoom, F4: verifica il program
         <translation>Diagramma temporale</translation>
     </message>
     <message>
-        <location filename="../app/gui/main_window_online.cpp" line="-4"/>
+        <location filename="../app/gui/main_window.cpp" line="-299"/>
         <source>Save Traffic Log</source>
         <translation>Salva il registro del traffico</translation>
     </message>
@@ -2081,97 +2081,6 @@ Ctrl+Z / Ctrl+Y: annulla / ripeti, Ctrl+rotellina: zoom, F4: verifica il program
         <location line="+0"/>
         <source>Text files (*.txt)</source>
         <translation>File di testo (*.txt)</translation>
-    </message>
-    <message>
-        <location line="+11"/>
-        <source>Go Online</source>
-        <translation>Vai online</translation>
-    </message>
-    <message>
-        <location line="+1"/>
-        <source>The simulation is running. Going online pauses it: the views then show the PLC&apos;s values. Go online?</source>
-        <translation>La simulazione è in esecuzione. Andare online la mette in pausa: le viste mostrano poi i valori del PLC. Andare online?</translation>
-    </message>
-    <message>
-        <location line="+11"/>
-        <source>Simulate</source>
-        <translation>Simula</translation>
-    </message>
-    <message>
-        <location line="+1"/>
-        <source>The IDE is online to %1. Go offline to simulate?</source>
-        <translation>L&apos;IDE è online con %1. Andare offline per simulare?</translation>
-    </message>
-    <message>
-        <location line="+5"/>
-        <source>The simulation stays paused while the IDE is online</source>
-        <translation>La simulazione resta in pausa finché l&apos;IDE è online</translation>
-    </message>
-    <message>
-        <location line="+8"/>
-        <source>Connection</source>
-        <translation>Connessione</translation>
-    </message>
-    <message>
-        <location line="+3"/>
-        <source>&amp;Online</source>
-        <translation>&amp;In linea</translation>
-    </message>
-    <message>
-        <location line="+15"/>
-        <location line="+81"/>
-        <source>Go &amp;Online</source>
-        <translation>Vai &amp;online</translation>
-    </message>
-    <message>
-        <location line="-71"/>
-        <source>&amp;Test Connection</source>
-        <translation>&amp;Prova connessione</translation>
-    </message>
-    <message>
-        <location line="+6"/>
-        <source>PLC to &amp;STOP / PROGRAM</source>
-        <translation>PLC in &amp;STOP / PROGRAM</translation>
-    </message>
-    <message>
-        <location line="+2"/>
-        <source>PLC to &amp;MONITOR</source>
-        <translation>PLC in &amp;MONITOR</translation>
-    </message>
-    <message>
-        <location line="+2"/>
-        <source>PLC to &amp;RUN</source>
-        <translation>PLC in &amp;RUN</translation>
-    </message>
-    <message>
-        <location line="+3"/>
-        <source>Release All &amp;Forces in the PLC</source>
-        <translation>Rilascia tutte le &amp;forzature nel PLC</translation>
-    </message>
-    <message>
-        <location line="+23"/>
-        <source>Online: %1</source>
-        <translation>Online: %1</translation>
-    </message>
-    <message>
-        <location line="+6"/>
-        <source>Going online. The IDE cannot know whether the PLC runs the program shown: compare by reading devices</source>
-        <translation>Connessione online. L&apos;IDE non può sapere se il PLC esegue il programma mostrato: confrontare leggendo gli operandi</translation>
-    </message>
-    <message>
-        <location line="+9"/>
-        <source>Offline</source>
-        <translation>Offline</translation>
-    </message>
-    <message>
-        <location line="+14"/>
-        <source>%1 cannot switch the PLC between RUN and STOP: use the switch on the PLC</source>
-        <translation>%1 non può commutare il PLC tra RUN e STOP: usare il selettore sul PLC</translation>
-    </message>
-    <message>
-        <location line="+6"/>
-        <source>Go &amp;Offline</source>
-        <translation>Vai &amp;offline</translation>
     </message>
     <message>
         <location filename="../app/gui/main_window_panels.cpp" line="+1"/>
@@ -2278,6 +2187,100 @@ Codice di uscita di read e write: 0 fatto, 1 il PLC non ha risposto o ha rifiuta
         <location line="-16"/>
         <source>%1: %2</source>
         <translation>%1: %2</translation>
+    </message>
+</context>
+<context>
+    <name>rung::app::OnlineController</name>
+    <message>
+        <location filename="../app/gui/online_controller.cpp" line="+73"/>
+        <source>Go Online</source>
+        <translation>Vai online</translation>
+    </message>
+    <message>
+        <location line="+1"/>
+        <source>The simulation is running. Going online pauses it: the views then show the PLC&apos;s values. Go online?</source>
+        <translation>La simulazione è in esecuzione. Andare online la mette in pausa: le viste mostrano poi i valori del PLC. Andare online?</translation>
+    </message>
+    <message>
+        <location line="+11"/>
+        <source>Simulate</source>
+        <translation>Simula</translation>
+    </message>
+    <message>
+        <location line="+0"/>
+        <source>The IDE is online to %1. Go offline to simulate?</source>
+        <translation>L&apos;IDE è online con %1. Andare offline per simulare?</translation>
+    </message>
+    <message>
+        <location line="+5"/>
+        <source>The simulation stays paused while the IDE is online</source>
+        <translation>La simulazione resta in pausa finché l&apos;IDE è online</translation>
+    </message>
+    <message>
+        <location line="+25"/>
+        <source>Connection</source>
+        <translation>Connessione</translation>
+    </message>
+    <message>
+        <location line="+3"/>
+        <source>&amp;Online</source>
+        <translation>&amp;In linea</translation>
+    </message>
+    <message>
+        <location line="+14"/>
+        <location line="+73"/>
+        <source>Go &amp;Online</source>
+        <translation>Vai &amp;online</translation>
+    </message>
+    <message>
+        <location line="-63"/>
+        <source>&amp;Test Connection</source>
+        <translation>&amp;Prova connessione</translation>
+    </message>
+    <message>
+        <location line="+7"/>
+        <source>PLC to &amp;STOP / PROGRAM</source>
+        <translation>PLC in &amp;STOP / PROGRAM</translation>
+    </message>
+    <message>
+        <location line="+2"/>
+        <source>PLC to &amp;MONITOR</source>
+        <translation>PLC in &amp;MONITOR</translation>
+    </message>
+    <message>
+        <location line="+2"/>
+        <source>PLC to &amp;RUN</source>
+        <translation>PLC in &amp;RUN</translation>
+    </message>
+    <message>
+        <location line="+3"/>
+        <source>Release All &amp;Forces in the PLC</source>
+        <translation>Rilascia tutte le &amp;forzature nel PLC</translation>
+    </message>
+    <message>
+        <location line="+21"/>
+        <source>Online: %1</source>
+        <translation>Online: %1</translation>
+    </message>
+    <message>
+        <location line="+6"/>
+        <source>Going online. The IDE cannot know whether the PLC runs the program shown: compare by reading devices</source>
+        <translation>Connessione online. L&apos;IDE non può sapere se il PLC esegue il programma mostrato: confrontare leggendo gli operandi</translation>
+    </message>
+    <message>
+        <location line="+4"/>
+        <source>Offline</source>
+        <translation>Offline</translation>
+    </message>
+    <message>
+        <location line="+15"/>
+        <source>%1 cannot switch the PLC between RUN and STOP: use the switch on the PLC</source>
+        <translation>%1 non può commutare il PLC tra RUN e STOP: usare il selettore sul PLC</translation>
+    </message>
+    <message>
+        <location line="+3"/>
+        <source>Go &amp;Offline</source>
+        <translation>Vai &amp;offline</translation>
     </message>
 </context>
 <context>

@@ -1,10 +1,13 @@
 #include "main_window.h"
 
+#include "connection_panel.h"
 #include "dialogs.h"
 #include "dock_layout.h"
 #include "eliding_label.h"
 #include "file_controller.h"
 #include "listing_controller.h"
+#include "online_controller.h"
+#include "simulation_controller.h"
 #include "status_bar.h"
 #include "symbol_table.h"
 
@@ -12,6 +15,8 @@
 #include "editor/ladder_view.h"
 #include "editor/problems_view.h"
 #include "editor/watch_list_view.h"
+
+#include "simulator/session.h"
 
 #include <QAction>
 #include <QActionGroup>
@@ -67,7 +72,27 @@ MainWindow::MainWindow(QWidget *parent)
     buildCrossReference();
     buildMonitorDocks(); // main_window_panels.cpp
     setupSimulation();
-    setupOnline(); // main_window_online.cpp
+    m_online = new OnlineController(m_document, m_simulation, statusBar(), this, this);
+    connect(m_online, &OnlineController::sessionChanged, this,
+            [this](comms::OnlineSession *session) {
+                if (session) {
+                    setMonitorSource(session, MonitorOrigin::Online);
+                    setPanelsSource(session);
+                    return;
+                }
+                // Offline: the simulation's values again (or none).
+                setMonitorSource(m_simulation->monitorSource(), m_simulation->historyShown()
+                                                                    ? MonitorOrigin::History
+                                                                    : MonitorOrigin::Simulation);
+                setPanelsSource(m_simulation->session());
+            });
+    connect(m_online->panel(), &ConnectionPanel::saveTrafficRequested, this, [this] {
+        const QString path = m_files->askSavePath(tr("Save Traffic Log"), tr("Text files (*.txt)"),
+                                                  {QStringLiteral("txt")});
+        QString error;
+        if (!path.isEmpty() && !m_online->panel()->saveTraffic(path, &error))
+            QMessageBox::critical(this, tr("Cannot save"), error);
+    });
     // Editing docks left, live ones together, findings below (dock_layout.h); a saved
     // layout, restored below, keeps the user's own.
     const bool wide = screen()->availableGeometry().width() >= kWideScreen;
@@ -148,6 +173,10 @@ MainWindow::MainWindow(QWidget *parent)
     }
     m_listing->refreshFromDocument();
     updateTitle();
+}
+
+ConnectionPanel *MainWindow::connectionPanel() const {
+    return m_online->panel();
 }
 
 MainWindow::~MainWindow() {

@@ -50,6 +50,7 @@ class ConnectionPanel;
 class ElidingLabel;
 class FileController;
 class ListingController;
+class OnlineController;
 class RecoveryFile;
 class ScanDebuggerView;
 class SimulationController;
@@ -98,7 +99,8 @@ public:
     SimulationController *simulation() const { return m_simulation; }
     SimulationPanel *simulationPanel() const { return m_simulationPanel; }
     ScanDebuggerView *scanDebugger() const { return m_scanDebugger; }
-    ConnectionPanel *connectionPanel() const { return m_connectionPanel; }
+    ConnectionPanel *connectionPanel() const;
+    OnlineController *online() const { return m_online; }
     // Sets or clears a breakpoint where the user is: the instruction list's line when it has
     // the focus, else the ladder cursor's rung (its first instruction).
     void toggleBreakpointHere();
@@ -159,11 +161,6 @@ private:
     void showStoppedAt(int instruction);
     // The instruction at the instruction list's caret (or a 1-based line), -1 for none.
     int instructionAtLine(int line) const;
-    // Online to a PLC (main_window_online.cpp).
-    void setupOnline();
-    void buildOnlineMenu(QToolBar *bar, QMenu *view);
-    void onlineSessionChanged(comms::OnlineSession *session);
-    void updateOnlineActions();
     // The origin's label in the status bar and the title (main_window_monitor.cpp).
     void updateMonitorLabel();
 
@@ -193,8 +190,8 @@ private:
     QLabel *m_statusHistory = nullptr;
     SimulationPanel *m_simulationPanel = nullptr;
     ScanDebuggerView *m_scanDebugger = nullptr;
-    ConnectionPanel *m_connectionPanel = nullptr;
-    bool m_simulationDocksShown = false; // shown once, when a simulation first starts
+    OnlineController *m_online = nullptr; // the connection dock, the Online menu
+    bool m_simulationDocksShown = false;  // shown once, when a simulation first starts
     QPointer<model::MonitorSource> m_monitorSource;
     MonitorOrigin m_monitorOrigin = MonitorOrigin::Simulation;
     QLabel *m_statusOrigin = nullptr;

@@ -6,6 +6,7 @@
 #include "file_dialogs.h"
 #include "language.h"
 #include "listing_controller.h"
+#include "online_controller.h"
 #include "symbol_table.h"
 
 #include "app/languages.h"
@@ -239,9 +240,9 @@ void MainWindow::buildActions() {
         ->setShortcut(QKeySequence::ZoomOut);
     view->addAction(tr("&Check Program"), this, [this] { m_listing->refreshFromDocument(); })
         ->setShortcut(Qt::Key_F4);
-    addPanelActions(view);      // main_window_panels.cpp
-    buildSimulationMenu(bar);   // main_window_simulation.cpp
-    buildOnlineMenu(bar, view); // main_window_online.cpp
+    addPanelActions(view);           // main_window_panels.cpp
+    buildSimulationMenu(bar);        // main_window_simulation.cpp
+    m_online->addActions(bar, view); // online_controller.cpp
 
     QMenu *language = menuBar()->addMenu(tr("&Language"));
     auto *group = new QActionGroup(language);

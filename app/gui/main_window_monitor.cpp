@@ -5,7 +5,7 @@
 
 #include "main_window.h"
 
-#include "connection_panel.h"
+#include "online_controller.h"
 
 #include "editor/il_editor.h"
 #include "editor/io_panel.h"
@@ -21,7 +21,7 @@ namespace rung::app {
 
 void MainWindow::setMonitorSource(model::MonitorSource *source, MonitorOrigin origin) {
     // Online, the PLC keeps the views: the simulation's source waits until the IDE is offline.
-    if (origin != MonitorOrigin::Online && m_connectionPanel && m_connectionPanel->session())
+    if (origin != MonitorOrigin::Online && m_online && m_online->session())
         return;
     m_monitorSource = source;
     m_monitorOrigin = origin;

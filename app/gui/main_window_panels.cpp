@@ -1,9 +1,11 @@
 #include "main_window.h"
 
-#include "connection_panel.h"
 #include "file_controller.h"
+#include "online_controller.h"
 #include "simulation_controller.h"
 #include "tests_panel.h"
+
+#include "comms/driver/online_session.h"
 
 #include "editor/io_panel.h"
 #include "editor/timing_chart.h"
@@ -89,7 +91,7 @@ void MainWindow::addPanelActions(QMenu *menu) {
 
 void MainWindow::setPanelsSource(model::MonitorSource *source) {
     // Online, the PLC keeps the panels (main_window_online.cpp).
-    if (m_connectionPanel && m_connectionPanel->session() && source != m_connectionPanel->session())
+    if (m_online && m_online->session() && source != m_online->session())
         return;
     m_watchPanel->setMonitorSource(source);
     m_ioPanel->setMonitorSource(source);
