@@ -883,6 +883,113 @@ PLC after serve restarts</source>
     </message>
 </context>
 <context>
+    <name>rung::app::DebugController</name>
+    <message>
+        <location filename="../app/gui/debug_controller.cpp" line="+44"/>
+        <location line="+190"/>
+        <source>Simulation</source>
+        <translation>Szimuláció</translation>
+    </message>
+    <message>
+        <location line="-181"/>
+        <location line="+182"/>
+        <source>Scan Debugger</source>
+        <translation>Ciklushibakereső</translation>
+    </message>
+    <message>
+        <location line="-151"/>
+        <source>No instruction on line %1 to stop at</source>
+        <translation>A(z) %1. sorban nincs utasítás, amelynél meg lehetne állni</translation>
+    </message>
+    <message>
+        <location line="+12"/>
+        <source>Rung %1 is not in the instruction list: no breakpoint there</source>
+        <translation>A(z) %1. létrafok nincs az utasításlistában: ott nem lehet töréspont</translation>
+    </message>
+    <message>
+        <location line="+24"/>
+        <source>Online Edit</source>
+        <translation>Online szerkesztés</translation>
+    </message>
+    <message>
+        <location line="+3"/>
+        <source>Apply Keeping the Memory</source>
+        <translation>Alkalmazás a memória megtartásával</translation>
+    </message>
+    <message>
+        <location line="+2"/>
+        <source>Restart from Power-On</source>
+        <translation>Újraindítás a bekapcsolási állapotból</translation>
+    </message>
+    <message>
+        <location line="+1"/>
+        <source>Stop the Simulation</source>
+        <translation>A szimuláció leállítása</translation>
+    </message>
+    <message>
+        <location line="+25"/>
+        <source>S&amp;tep Instruction</source>
+        <translation>Lé&amp;pés egy utasítással</translation>
+    </message>
+    <message>
+        <location line="+3"/>
+        <source>F&amp;inish Scan</source>
+        <translation>Ciklus &amp;befejezése</translation>
+    </message>
+    <message>
+        <location line="+2"/>
+        <source>Toggle &amp;Breakpoint</source>
+        <translation>&amp;Töréspont be/ki</translation>
+    </message>
+    <message>
+        <location line="+2"/>
+        <source>Breakpoint Co&amp;ndition...</source>
+        <translation>Tö&amp;réspont feltétele...</translation>
+    </message>
+    <message>
+        <location line="+5"/>
+        <location line="+42"/>
+        <source>No instruction at %1 to stop at</source>
+        <translation>Itt (%1) nincs utasítás, amelynél meg lehetne állni</translation>
+    </message>
+    <message>
+        <location line="-38"/>
+        <source>Remove All Brea&amp;kpoints</source>
+        <translation>Minden töréspont eltá&amp;volítása</translation>
+    </message>
+    <message>
+        <location line="+3"/>
+        <source>Return to &amp;Live</source>
+        <translation>Vissza az élő állapot&amp;hoz</translation>
+    </message>
+    <message>
+        <location line="+18"/>
+        <source>line %1</source>
+        <translation>%1. sor</translation>
+    </message>
+    <message>
+        <location line="+5"/>
+        <source>rung %1</source>
+        <translation>%1. létrafok</translation>
+    </message>
+    <message>
+        <location line="+16"/>
+        <source>Breakpoint set at %1</source>
+        <translation>Töréspont beállítva: %1</translation>
+    </message>
+    <message>
+        <location line="+1"/>
+        <source>Breakpoint at %1 removed</source>
+        <translation>Töréspont eltávolítva: %1</translation>
+    </message>
+    <message>
+        <location line="+13"/>
+        <source>Stop before line %1: %2</source>
+        <extracomment>where the breakpoint is: %1 line, %2 the instruction</extracomment>
+        <translation>Megállás a(z) %1. sor előtt: %2</translation>
+    </message>
+</context>
+<context>
     <name>rung::app::Diff</name>
     <message>
         <location filename="../app/cli/cli_diff.cpp" line="+59"/>
@@ -1346,7 +1453,7 @@ PLC after serve restarts</source>
 <context>
     <name>rung::app::MainWindow</name>
     <message>
-        <location filename="../app/gui/main_window.cpp" line="+207"/>
+        <location filename="../app/gui/main_window.cpp" line="+216"/>
         <source>Problems</source>
         <translation>Problémák</translation>
     </message>
@@ -1660,18 +1767,18 @@ Ctrl+Z / Ctrl+Y: visszavonás / mégis, Ctrl+görgő: nagyítás, F4: a program 
     </message>
     <message>
         <location line="+22"/>
-        <location line="+135"/>
+        <location line="+136"/>
         <source>Ladder</source>
         <translation>Létradiagram</translation>
     </message>
     <message>
-        <location line="-134"/>
-        <location line="+135"/>
+        <location line="-135"/>
+        <location line="+136"/>
         <source>Instruction List</source>
         <translation>Utasításlista</translation>
     </message>
     <message>
-        <location line="-126"/>
+        <location line="-127"/>
         <source>&lt;b&gt;%1&lt;/b&gt;&lt;br&gt;Target: %2, model %3&lt;br&gt;%4, %5</source>
         <translation>&lt;b&gt;%1&lt;/b&gt;&lt;br&gt;PLC-család: %2, modell: %3&lt;br&gt;%4, %5</translation>
     </message>
@@ -1710,7 +1817,7 @@ Ctrl+Z / Ctrl+Y: visszavonás / mégis, Ctrl+görgő: nagyítás, F4: a program 
         <translation>%1. létrafok, %2. sor, %3. oszlop</translation>
     </message>
     <message>
-        <location line="-196"/>
+        <location line="-204"/>
         <source>Cannot save</source>
         <translation>A mentés nem sikerült</translation>
     </message>
@@ -1809,7 +1916,7 @@ Ctrl+Z / Ctrl+Y: visszavonás / mégis, Ctrl+görgő: nagyítás, F4: a program 
         </translation>
     </message>
     <message>
-        <location filename="../app/gui/main_window.cpp" line="+295"/>
+        <location filename="../app/gui/main_window.cpp" line="+303"/>
         <location filename="../app/gui/main_window_tools.cpp" line="-24"/>
         <source>Cross Reference</source>
         <translation>Kereszthivatkozás</translation>
@@ -1821,12 +1928,12 @@ Ctrl+Z / Ctrl+Y: visszavonás / mégis, Ctrl+görgő: nagyítás, F4: a program 
         <translation>Szimbólumok exportálása</translation>
     </message>
     <message>
-        <location filename="../app/gui/main_window_simulation.cpp" line="+37"/>
+        <location filename="../app/gui/main_window_simulation.cpp" line="+38"/>
         <source>The instruction list has errors, so the ladder still shows the last program without them: correct the list (or undo) before simulating</source>
         <translation>Az utasításlistában hibák vannak, ezért a létra még az utolsó hibátlan programot mutatja: a szimuláció előtt javítsa a listát (vagy vonja vissza a módosítást)</translation>
     </message>
     <message>
-        <location line="+60"/>
+        <location line="+62"/>
         <source>&amp;Simulation</source>
         <translation>Szi&amp;muláció</translation>
     </message>
@@ -1861,7 +1968,7 @@ Ctrl+Z / Ctrl+Y: visszavonás / mégis, Ctrl+görgő: nagyítás, F4: a program 
         <translation>Ciklus&amp;ok futtatása...</translation>
     </message>
     <message>
-        <location line="+3"/>
+        <location line="+4"/>
         <source>Run Scans</source>
         <translation>Ciklusok futtatása</translation>
     </message>
@@ -1917,116 +2024,12 @@ Ctrl+Z / Ctrl+Y: visszavonás / mégis, Ctrl+görgő: nagyítás, F4: a program 
         <translation>&amp;Minden kényszerítés feloldása</translation>
     </message>
     <message>
-        <location filename="../app/gui/main_window_debug.cpp" line="+38"/>
-        <location line="+141"/>
         <location filename="../app/gui/main_window_monitor.cpp" line="+42"/>
         <source>Simulation</source>
         <translation>Szimuláció</translation>
     </message>
     <message>
-        <location line="-133"/>
-        <location line="+135"/>
-        <source>Scan Debugger</source>
-        <translation>Ciklushibakereső</translation>
-    </message>
-    <message>
-        <location line="-105"/>
-        <source>No instruction on line %1 to stop at</source>
-        <translation>A(z) %1. sorban nincs utasítás, amelynél meg lehetne állni</translation>
-    </message>
-    <message>
-        <location line="+12"/>
-        <source>Rung %1 is not in the instruction list: no breakpoint there</source>
-        <translation>A(z) %1. létrafok nincs az utasításlistában: ott nem lehet töréspont</translation>
-    </message>
-    <message>
-        <location line="+24"/>
-        <source>Online Edit</source>
-        <translation>Online szerkesztés</translation>
-    </message>
-    <message>
-        <location line="+3"/>
-        <source>Apply Keeping the Memory</source>
-        <translation>Alkalmazás a memória megtartásával</translation>
-    </message>
-    <message>
         <location line="+2"/>
-        <source>Restart from Power-On</source>
-        <translation>Újraindítás a bekapcsolási állapotból</translation>
-    </message>
-    <message>
-        <location line="+1"/>
-        <source>Stop the Simulation</source>
-        <translation>A szimuláció leállítása</translation>
-    </message>
-    <message>
-        <location line="+23"/>
-        <source>S&amp;tep Instruction</source>
-        <translation>Lé&amp;pés egy utasítással</translation>
-    </message>
-    <message>
-        <location line="+3"/>
-        <source>F&amp;inish Scan</source>
-        <translation>Ciklus &amp;befejezése</translation>
-    </message>
-    <message>
-        <location line="+2"/>
-        <source>Toggle &amp;Breakpoint</source>
-        <translation>&amp;Töréspont be/ki</translation>
-    </message>
-    <message>
-        <location line="+2"/>
-        <source>Breakpoint Co&amp;ndition...</source>
-        <translation>Tö&amp;réspont feltétele...</translation>
-    </message>
-    <message>
-        <location line="+14"/>
-        <source>No instruction here to stop at</source>
-        <translation>Itt nincs utasítás, amelynél meg lehetne állni</translation>
-    </message>
-    <message>
-        <location line="+4"/>
-        <source>Remove All Brea&amp;kpoints</source>
-        <translation>Minden töréspont eltá&amp;volítása</translation>
-    </message>
-    <message>
-        <location line="+3"/>
-        <source>Return to &amp;Live</source>
-        <translation>Vissza az élő állapot&amp;hoz</translation>
-    </message>
-    <message>
-        <location line="+32"/>
-        <source>line %1</source>
-        <translation>%1. sor</translation>
-    </message>
-    <message>
-        <location line="+7"/>
-        <source>rung %1</source>
-        <translation>%1. létrafok</translation>
-    </message>
-    <message>
-        <location line="+3"/>
-        <source>No instruction at %1 to stop at</source>
-        <translation>Itt (%1) nincs utasítás, amelynél meg lehetne állni</translation>
-    </message>
-    <message>
-        <location line="+4"/>
-        <source>Breakpoint set at %1</source>
-        <translation>Töréspont beállítva: %1</translation>
-    </message>
-    <message>
-        <location line="+1"/>
-        <source>Breakpoint at %1 removed</source>
-        <translation>Töréspont eltávolítva: %1</translation>
-    </message>
-    <message>
-        <location line="+13"/>
-        <source>Stop before line %1: %2</source>
-        <extracomment>where the breakpoint is: %1 line, %2 the instruction</extracomment>
-        <translation>Megállás a(z) %1. sor előtt: %2</translation>
-    </message>
-    <message>
-        <location filename="../app/gui/main_window_monitor.cpp" line="+2"/>
         <source>Online PLC</source>
         <translation>Online PLC</translation>
     </message>
@@ -2066,7 +2069,7 @@ Ctrl+Z / Ctrl+Y: visszavonás / mégis, Ctrl+görgő: nagyítás, F4: a program 
         <translation>Idődiagram</translation>
     </message>
     <message>
-        <location filename="../app/gui/main_window.cpp" line="-299"/>
+        <location filename="../app/gui/main_window.cpp" line="-307"/>
         <source>Save Traffic Log</source>
         <translation>Adatforgalom-napló mentése</translation>
     </message>

@@ -885,6 +885,113 @@ PLC dopo il riavvio di serve</translation>
     </message>
 </context>
 <context>
+    <name>rung::app::DebugController</name>
+    <message>
+        <location filename="../app/gui/debug_controller.cpp" line="+44"/>
+        <location line="+190"/>
+        <source>Simulation</source>
+        <translation>Simulazione</translation>
+    </message>
+    <message>
+        <location line="-181"/>
+        <location line="+182"/>
+        <source>Scan Debugger</source>
+        <translation>Debugger della scansione</translation>
+    </message>
+    <message>
+        <location line="-151"/>
+        <source>No instruction on line %1 to stop at</source>
+        <translation>Nessuna istruzione alla riga %1 dove fermarsi</translation>
+    </message>
+    <message>
+        <location line="+12"/>
+        <source>Rung %1 is not in the instruction list: no breakpoint there</source>
+        <translation>Il segmento %1 non è nella lista istruzioni: lì non c&apos;è punto di interruzione</translation>
+    </message>
+    <message>
+        <location line="+24"/>
+        <source>Online Edit</source>
+        <translation>Modifica online</translation>
+    </message>
+    <message>
+        <location line="+3"/>
+        <source>Apply Keeping the Memory</source>
+        <translation>Applica mantenendo la memoria</translation>
+    </message>
+    <message>
+        <location line="+2"/>
+        <source>Restart from Power-On</source>
+        <translation>Riavvia dallo stato di accensione</translation>
+    </message>
+    <message>
+        <location line="+1"/>
+        <source>Stop the Simulation</source>
+        <translation>Ferma la simulazione</translation>
+    </message>
+    <message>
+        <location line="+25"/>
+        <source>S&amp;tep Instruction</source>
+        <translation>P&amp;asso di una istruzione</translation>
+    </message>
+    <message>
+        <location line="+3"/>
+        <source>F&amp;inish Scan</source>
+        <translation>Co&amp;mpleta la scansione</translation>
+    </message>
+    <message>
+        <location line="+2"/>
+        <source>Toggle &amp;Breakpoint</source>
+        <translation>Punto di interr&amp;uzione sì/no</translation>
+    </message>
+    <message>
+        <location line="+2"/>
+        <source>Breakpoint Co&amp;ndition...</source>
+        <translation>Con&amp;dizione del punto di interruzione...</translation>
+    </message>
+    <message>
+        <location line="+5"/>
+        <location line="+42"/>
+        <source>No instruction at %1 to stop at</source>
+        <translation>Nessuna istruzione in %1 dove fermarsi</translation>
+    </message>
+    <message>
+        <location line="-38"/>
+        <source>Remove All Brea&amp;kpoints</source>
+        <translation>Rimuovi &amp;tutti i punti di interruzione</translation>
+    </message>
+    <message>
+        <location line="+3"/>
+        <source>Return to &amp;Live</source>
+        <translation>Torna a&amp;l vivo</translation>
+    </message>
+    <message>
+        <location line="+18"/>
+        <source>line %1</source>
+        <translation>riga %1</translation>
+    </message>
+    <message>
+        <location line="+5"/>
+        <source>rung %1</source>
+        <translation>segmento %1</translation>
+    </message>
+    <message>
+        <location line="+16"/>
+        <source>Breakpoint set at %1</source>
+        <translation>Punto di interruzione impostato: %1</translation>
+    </message>
+    <message>
+        <location line="+1"/>
+        <source>Breakpoint at %1 removed</source>
+        <translation>Punto di interruzione rimosso: %1</translation>
+    </message>
+    <message>
+        <location line="+13"/>
+        <source>Stop before line %1: %2</source>
+        <extracomment>where the breakpoint is: %1 line, %2 the instruction</extracomment>
+        <translation>Fermati prima della riga %1: %2</translation>
+    </message>
+</context>
+<context>
     <name>rung::app::Diff</name>
     <message>
         <location filename="../app/cli/cli_diff.cpp" line="+59"/>
@@ -1348,7 +1455,7 @@ PLC dopo il riavvio di serve</translation>
 <context>
     <name>rung::app::MainWindow</name>
     <message>
-        <location filename="../app/gui/main_window.cpp" line="+207"/>
+        <location filename="../app/gui/main_window.cpp" line="+216"/>
         <source>Problems</source>
         <translation>Problemi</translation>
     </message>
@@ -1662,18 +1769,18 @@ Ctrl+Z / Ctrl+Y: annulla / ripeti, Ctrl+rotellina: zoom, F4: verifica il program
     </message>
     <message>
         <location line="+22"/>
-        <location line="+135"/>
+        <location line="+136"/>
         <source>Ladder</source>
         <translation>Ladder</translation>
     </message>
     <message>
-        <location line="-134"/>
-        <location line="+135"/>
+        <location line="-135"/>
+        <location line="+136"/>
         <source>Instruction List</source>
         <translation>Lista istruzioni</translation>
     </message>
     <message>
-        <location line="-126"/>
+        <location line="-127"/>
         <source>&lt;b&gt;%1&lt;/b&gt;&lt;br&gt;Target: %2, model %3&lt;br&gt;%4, %5</source>
         <translation>&lt;b&gt;%1&lt;/b&gt;&lt;br&gt;Famiglia PLC: %2, modello %3&lt;br&gt;%4, %5</translation>
     </message>
@@ -1714,7 +1821,7 @@ Ctrl+Z / Ctrl+Y: annulla / ripeti, Ctrl+rotellina: zoom, F4: verifica il program
         <translation>Segmento %1, riga %2, colonna %3</translation>
     </message>
     <message>
-        <location line="-196"/>
+        <location line="-204"/>
         <source>Cannot save</source>
         <translation>Impossibile salvare</translation>
     </message>
@@ -1816,7 +1923,7 @@ Ctrl+Z / Ctrl+Y: annulla / ripeti, Ctrl+rotellina: zoom, F4: verifica il program
         </translation>
     </message>
     <message>
-        <location filename="../app/gui/main_window.cpp" line="+295"/>
+        <location filename="../app/gui/main_window.cpp" line="+303"/>
         <location filename="../app/gui/main_window_tools.cpp" line="-24"/>
         <source>Cross Reference</source>
         <translation>Riferimenti incrociati</translation>
@@ -1828,12 +1935,12 @@ Ctrl+Z / Ctrl+Y: annulla / ripeti, Ctrl+rotellina: zoom, F4: verifica il program
         <translation>Esporta simboli</translation>
     </message>
     <message>
-        <location filename="../app/gui/main_window_simulation.cpp" line="+37"/>
+        <location filename="../app/gui/main_window_simulation.cpp" line="+38"/>
         <source>The instruction list has errors, so the ladder still shows the last program without them: correct the list (or undo) before simulating</source>
         <translation>La lista istruzioni contiene errori, quindi il ladder mostra ancora l&apos;ultimo programma senza errori: correggere la lista (o annullare) prima di simulare</translation>
     </message>
     <message>
-        <location line="+60"/>
+        <location line="+62"/>
         <source>&amp;Simulation</source>
         <translation>&amp;Simulazione</translation>
     </message>
@@ -1868,7 +1975,7 @@ Ctrl+Z / Ctrl+Y: annulla / ripeti, Ctrl+rotellina: zoom, F4: verifica il program
         <translation>Esegui scansio&amp;ni...</translation>
     </message>
     <message>
-        <location line="+3"/>
+        <location line="+4"/>
         <source>Run Scans</source>
         <translation>Esegui scansioni</translation>
     </message>
@@ -1924,116 +2031,12 @@ Ctrl+Z / Ctrl+Y: annulla / ripeti, Ctrl+rotellina: zoom, F4: verifica il program
         <translation>Rilascia tutte le &amp;forzature</translation>
     </message>
     <message>
-        <location filename="../app/gui/main_window_debug.cpp" line="+38"/>
-        <location line="+141"/>
         <location filename="../app/gui/main_window_monitor.cpp" line="+42"/>
         <source>Simulation</source>
         <translation>Simulazione</translation>
     </message>
     <message>
-        <location line="-133"/>
-        <location line="+135"/>
-        <source>Scan Debugger</source>
-        <translation>Debugger della scansione</translation>
-    </message>
-    <message>
-        <location line="-105"/>
-        <source>No instruction on line %1 to stop at</source>
-        <translation>Nessuna istruzione alla riga %1 dove fermarsi</translation>
-    </message>
-    <message>
-        <location line="+12"/>
-        <source>Rung %1 is not in the instruction list: no breakpoint there</source>
-        <translation>Il segmento %1 non è nella lista istruzioni: lì non c&apos;è punto di interruzione</translation>
-    </message>
-    <message>
-        <location line="+24"/>
-        <source>Online Edit</source>
-        <translation>Modifica online</translation>
-    </message>
-    <message>
-        <location line="+3"/>
-        <source>Apply Keeping the Memory</source>
-        <translation>Applica mantenendo la memoria</translation>
-    </message>
-    <message>
         <location line="+2"/>
-        <source>Restart from Power-On</source>
-        <translation>Riavvia dallo stato di accensione</translation>
-    </message>
-    <message>
-        <location line="+1"/>
-        <source>Stop the Simulation</source>
-        <translation>Ferma la simulazione</translation>
-    </message>
-    <message>
-        <location line="+23"/>
-        <source>S&amp;tep Instruction</source>
-        <translation>P&amp;asso di una istruzione</translation>
-    </message>
-    <message>
-        <location line="+3"/>
-        <source>F&amp;inish Scan</source>
-        <translation>Co&amp;mpleta la scansione</translation>
-    </message>
-    <message>
-        <location line="+2"/>
-        <source>Toggle &amp;Breakpoint</source>
-        <translation>Punto di interr&amp;uzione sì/no</translation>
-    </message>
-    <message>
-        <location line="+2"/>
-        <source>Breakpoint Co&amp;ndition...</source>
-        <translation>Con&amp;dizione del punto di interruzione...</translation>
-    </message>
-    <message>
-        <location line="+14"/>
-        <source>No instruction here to stop at</source>
-        <translation>Nessuna istruzione qui dove fermarsi</translation>
-    </message>
-    <message>
-        <location line="+4"/>
-        <source>Remove All Brea&amp;kpoints</source>
-        <translation>Rimuovi &amp;tutti i punti di interruzione</translation>
-    </message>
-    <message>
-        <location line="+3"/>
-        <source>Return to &amp;Live</source>
-        <translation>Torna a&amp;l vivo</translation>
-    </message>
-    <message>
-        <location line="+32"/>
-        <source>line %1</source>
-        <translation>riga %1</translation>
-    </message>
-    <message>
-        <location line="+7"/>
-        <source>rung %1</source>
-        <translation>segmento %1</translation>
-    </message>
-    <message>
-        <location line="+3"/>
-        <source>No instruction at %1 to stop at</source>
-        <translation>Nessuna istruzione in %1 dove fermarsi</translation>
-    </message>
-    <message>
-        <location line="+4"/>
-        <source>Breakpoint set at %1</source>
-        <translation>Punto di interruzione impostato: %1</translation>
-    </message>
-    <message>
-        <location line="+1"/>
-        <source>Breakpoint at %1 removed</source>
-        <translation>Punto di interruzione rimosso: %1</translation>
-    </message>
-    <message>
-        <location line="+13"/>
-        <source>Stop before line %1: %2</source>
-        <extracomment>where the breakpoint is: %1 line, %2 the instruction</extracomment>
-        <translation>Fermati prima della riga %1: %2</translation>
-    </message>
-    <message>
-        <location filename="../app/gui/main_window_monitor.cpp" line="+2"/>
         <source>Online PLC</source>
         <translation>PLC online</translation>
     </message>
@@ -2073,7 +2076,7 @@ Ctrl+Z / Ctrl+Y: annulla / ripeti, Ctrl+rotellina: zoom, F4: verifica il program
         <translation>Diagramma temporale</translation>
     </message>
     <message>
-        <location filename="../app/gui/main_window.cpp" line="-299"/>
+        <location filename="../app/gui/main_window.cpp" line="-307"/>
         <source>Save Traffic Log</source>
         <translation>Salva il registro del traffico</translation>
     </message>

@@ -1,6 +1,7 @@
 #include "main_window.h"
 
 #include "connection_panel.h"
+#include "debug_controller.h"
 #include "dialogs.h"
 #include "dock_layout.h"
 #include "eliding_label.h"
@@ -173,6 +174,14 @@ MainWindow::MainWindow(QWidget *parent)
     }
     m_listing->refreshFromDocument();
     updateTitle();
+}
+
+SimulationPanel *MainWindow::simulationPanel() const {
+    return m_debug->simulationPanel();
+}
+
+ScanDebuggerView *MainWindow::scanDebugger() const {
+    return m_debug->scanDebugger();
 }
 
 ConnectionPanel *MainWindow::connectionPanel() const {
@@ -388,7 +397,8 @@ void MainWindow::retranslate() {
     if (auto *dock = findChild<QDockWidget *>(QStringLiteral("crossReferenceDock")))
         dock->setWindowTitle(tr("Cross Reference"));
     m_symbolsLabel->setText(tr("Symbols"));
-    retranslateSimulation();
+    m_debug->retranslate();
+    updateSimulationStatus();
     retranslatePanels();
     if (m_tabs->count() == 2) {
         m_tabs->setTabText(0, tr("Ladder"));

@@ -47,6 +47,7 @@ class MonitorSource;
 namespace rung::app {
 
 class ConnectionPanel;
+class DebugController;
 class ElidingLabel;
 class FileController;
 class ListingController;
@@ -97,15 +98,12 @@ public:
     editor::IoPanel *ioPanel() const { return m_ioPanel; }
     editor::TimingChart *timingChart() const { return m_chart; }
     SimulationController *simulation() const { return m_simulation; }
-    SimulationPanel *simulationPanel() const { return m_simulationPanel; }
-    ScanDebuggerView *scanDebugger() const { return m_scanDebugger; }
+    // The simulation's docks, breakpoints and stepping (debug_controller.h).
+    DebugController *debugging() const { return m_debug; }
+    SimulationPanel *simulationPanel() const;
+    ScanDebuggerView *scanDebugger() const;
     ConnectionPanel *connectionPanel() const;
     OnlineController *online() const { return m_online; }
-    // Sets or clears a breakpoint where the user is: the instruction list's line when it has
-    // the focus, else the ladder cursor's rung (its first instruction).
-    void toggleBreakpointHere();
-    // Opens the condition of the breakpoint on an instruction (setting one if none).
-    void editBreakpointCondition(int instruction);
     QLineEdit *crossReferenceDevice() { return m_crossDevice; }
     QTreeWidget *crossReference() { return m_crossTree; }
     void writeRecovery();
@@ -153,14 +151,7 @@ private:
     // The simulation (main_window_simulation.cpp).
     void setupSimulation();
     void buildSimulationMenu(QToolBar *bar);
-    void buildDebugMenu(QMenu *menu); // main_window_debug.cpp
-    void setupDebugging();
     void updateSimulationStatus();
-    void retranslateSimulation();
-    void updateBreakpointMarks();
-    void showStoppedAt(int instruction);
-    // The instruction at the instruction list's caret (or a 1-based line), -1 for none.
-    int instructionAtLine(int line) const;
     // The origin's label in the status bar and the title (main_window_monitor.cpp).
     void updateMonitorLabel();
 
@@ -188,10 +179,8 @@ private:
     SimulationController *m_simulation = nullptr;
     ElidingLabel *m_statusSimulation = nullptr;
     QLabel *m_statusHistory = nullptr;
-    SimulationPanel *m_simulationPanel = nullptr;
-    ScanDebuggerView *m_scanDebugger = nullptr;
+    DebugController *m_debug = nullptr;
     OnlineController *m_online = nullptr; // the connection dock, the Online menu
-    bool m_simulationDocksShown = false;  // shown once, when a simulation first starts
     QPointer<model::MonitorSource> m_monitorSource;
     MonitorOrigin m_monitorOrigin = MonitorOrigin::Simulation;
     QLabel *m_statusOrigin = nullptr;

@@ -1,5 +1,6 @@
 #include "main_window.h"
 
+#include "debug_controller.h"
 #include "dialogs.h"
 #include "eliding_label.h"
 #include "listing_controller.h"
@@ -89,7 +90,9 @@ void MainWindow::setupSimulation() {
                     dock->raise();
                 }
             });
-    setupDebugging(); // main_window_debug.cpp
+    m_debug =
+        new DebugController(m_document, m_ladder, m_il, m_simulation, statusBar(), this, this);
+    connect(m_debug, &DebugController::stoppedAtShown, this, &MainWindow::updateSimulationStatus);
     updateSimulationStatus();
 }
 
@@ -118,21 +121,22 @@ void MainWindow::buildSimulationMenu(QToolBar *bar) {
     add("simulationRunScans", tr("Run Sc&ans..."), QStyle::SP_MediaSeekForward,
         QKeySequence(Qt::CTRL | Qt::SHIFT | Qt::Key_F10), [this] {
             bool ok = false;
-            const int count = askInt(this, tr("Run Scans"), tr("Scans to run:"),
-                                     m_simulationPanel->scansBox()->value(), 1, 100000000, &ok);
+            const int count =
+                askInt(this, tr("Run Scans"), tr("Scans to run:"),
+                       m_debug->simulationPanel()->scansBox()->value(), 1, 100000000, &ok);
             if (ok) {
-                m_simulationPanel->scansBox()->setValue(count);
+                m_debug->simulationPanel()->scansBox()->setValue(count);
                 m_simulation->runScans(static_cast<quint64>(count));
             }
         });
     add("simulationRunFor", tr("R&un For..."), QStyle::SP_MediaSeekForward,
         QKeySequence(Qt::CTRL | Qt::SHIFT | Qt::Key_F11), [this] {
             bool ok = false;
-            const double seconds =
-                askDouble(this, tr("Run For"), tr("Simulated time to run, in seconds:"),
-                          m_simulationPanel->durationBox()->value(), 0.01, 24.0 * 3600.0, 2, &ok);
+            const double seconds = askDouble(
+                this, tr("Run For"), tr("Simulated time to run, in seconds:"),
+                m_debug->simulationPanel()->durationBox()->value(), 0.01, 24.0 * 3600.0, 2, &ok);
             if (ok) {
-                m_simulationPanel->durationBox()->setValue(seconds);
+                m_debug->simulationPanel()->durationBox()->setValue(seconds);
                 m_simulation->runFor(static_cast<qint64>(seconds * 1000.0 + 0.5));
             }
         });
@@ -164,7 +168,7 @@ void MainWindow::buildSimulationMenu(QToolBar *bar) {
     }
     menu->addSeparator();
     menu->addAction(tr("Release All &Forces"), m_simulation, &SimulationController::releaseAll);
-    buildDebugMenu(menu); // main_window_debug.cpp
+    m_debug->addActions(menu); // debug_controller.cpp
     bar->addSeparator();
     for (QAction *a : {run, pause, stop, scan})
         bar->addAction(a);

@@ -2,6 +2,7 @@
 // enough for its title in a window manager's title bar, and every label, button and combo box
 // of it, and of the window at 1366x768 and at 1024x600, is at least as large as its text needs.
 
+#include "app/gui/debug_controller.h"
 #include "app/gui/eliding_label.h"
 #include "app/gui/language.h"
 #include "app/gui/main_window.h"
@@ -197,7 +198,7 @@ TEST_P(DialogFit, EveryDialogFitsItsTitleAndTexts) {
     // literal "&Compare" were cut or shown so.
     expectFits("Run Scans", [&] { entry(mw, "Run Sc&ans...")->trigger(); });
     expectFits("Run For", [&] { entry(mw, "R&un For...")->trigger(); });
-    expectFits("Breakpoint Condition", [&] { window.editBreakpointCondition(0); });
+    expectFits("Breakpoint Condition", [&] { window.debugging()->editBreakpointCondition(0); });
     // Save the changes? (New Project on a changed program asks first.)
     window.document()->insertRung(0, window.document()->ladder().rungs.front());
     expectFits("Unsaved changes", [&] { entry(files, "&New Project...")->trigger(); });

@@ -1,16 +1,19 @@
-#include "main_window.h"
+#include "debug_controller.h"
 
 #include "breakpoint_dialog.h"
 #include "scan_debugger_view.h"
 #include "simulation_controller.h"
 #include "simulation_panel.h"
 
+#include "editor/document.h"
 #include "editor/il_editor.h"
 #include "editor/ladder_view.h"
+
 #include "simulator/session.h"
 
 #include <QAction>
 #include <QDockWidget>
+#include <QMainWindow>
 #include <QMenu>
 #include <QMessageBox>
 #include <QPushButton>
@@ -18,54 +21,59 @@
 #include <QStatusBar>
 #include <QStyle>
 
-// The simulation's docks (Simulation: run N scans, run for, speed, period, statistics,
-// history; Scan Debugger: the stopped scan and the breakpoints), breakpoints in the list's
-// margin and on the ladder's rungs, the stopped instruction shown in both views, and the
-// question an online edit asks. Keys (docs/user-guide.md): Ctrl+B toggles a breakpoint,
-// Ctrl+Shift+B its condition, Ctrl+F12 steps one instruction, Shift+F12 finishes the scan,
-// Ctrl+Shift+L returns from the history to live; all clear of the ladder's F5..F9 and
-// Ctrl+F9/F10 and of the other menus.
+#include <map>
 
 namespace rung::app {
 
-void MainWindow::setupDebugging() {
-    m_simulationPanel = new SimulationPanel(m_simulation);
-    m_simulationPanel->setObjectName(QStringLiteral("simulationPanel"));
+DebugController::DebugController(editor::Document *document, editor::LadderView *ladder,
+                                 editor::IlEditor *il, SimulationController *simulation,
+                                 QStatusBar *status, QMainWindow *window, QObject *parent)
+    : QObject(parent)
+    , m_document(document)
+    , m_ladder(ladder)
+    , m_il(il)
+    , m_simulation(simulation)
+    , m_status(status)
+    , m_window(window) {
+    m_panel = new SimulationPanel(m_simulation);
+    m_panel->setObjectName(QStringLiteral("simulationPanel"));
     auto *scroll = new QScrollArea;
     scroll->setWidgetResizable(true);
     scroll->setFrameShape(QFrame::NoFrame);
-    scroll->setWidget(m_simulationPanel);
-    auto *panelDock = new QDockWidget(tr("Simulation"), this);
+    scroll->setWidget(m_panel);
+    m_panelDock = new QDockWidget(tr("Simulation"), window);
+    auto *panelDock = m_panelDock;
     panelDock->setObjectName(QStringLiteral("simulationDock"));
     panelDock->setWidget(scroll);
     // With the terminals and the connection (dock_layout.h).
-    addDockWidget(Qt::LeftDockWidgetArea, panelDock);
+    window->addDockWidget(Qt::LeftDockWidgetArea, panelDock);
 
-    m_scanDebugger = new ScanDebuggerView(m_simulation, m_document);
-    m_scanDebugger->setObjectName(QStringLiteral("scanDebugger"));
-    auto *debugDock = new QDockWidget(tr("Scan Debugger"), this);
+    m_debugger = new ScanDebuggerView(m_simulation, m_document);
+    m_debugger->setObjectName(QStringLiteral("scanDebugger"));
+    m_debugDock = new QDockWidget(tr("Scan Debugger"), window);
+    auto *debugDock = m_debugDock;
     debugDock->setObjectName(QStringLiteral("scanDebuggerDock"));
     // Scrolled: its stacks and breakpoints must not make the window taller than a 1024x600
     // screen (the window's minimum height is the docks' minimum heights added up).
     auto *debugScroll = new QScrollArea;
     debugScroll->setWidgetResizable(true);
     debugScroll->setFrameShape(QFrame::NoFrame);
-    debugScroll->setWidget(m_scanDebugger);
+    debugScroll->setWidget(m_debugger);
     debugDock->setWidget(debugScroll);
-    addDockWidget(Qt::LeftDockWidgetArea, debugDock);
+    window->addDockWidget(Qt::LeftDockWidgetArea, debugDock);
     // Out of the way until a simulation starts: the ladder keeps its width for drawing.
     panelDock->hide();
     debugDock->hide();
 
     connect(m_simulation, &SimulationController::sessionChanged, this,
             [this, panelDock](simulator::SimulatorSession *session) {
-                if (session && !m_simulationDocksShown) {
-                    m_simulationDocksShown = true;
+                if (session && !m_docksShown) {
+                    m_docksShown = true;
                     panelDock->show();
                     panelDock->raise();
                     // Where the user put the two in one place, the terminals stay in front
                     // (toggle an input, see the rung); the run controls are in the toolbar too.
-                    if (auto *io = findChild<QDockWidget *>(QStringLiteral("ioDock"));
+                    if (auto *io = m_window->findChild<QDockWidget *>(QStringLiteral("ioDock"));
                         io && io->isVisible())
                         io->raise();
                 }
@@ -89,9 +97,9 @@ void MainWindow::setupDebugging() {
                 5000);
     });
     connect(m_simulation, &SimulationController::breakpointsChanged, this,
-            &MainWindow::updateBreakpointMarks);
+            &DebugController::updateBreakpointMarks);
     connect(m_document, &editor::Document::programChanged, this,
-            &MainWindow::updateBreakpointMarks);
+            &DebugController::updateBreakpointMarks);
     connect(m_simulation, &SimulationController::stoppedAtChanged, this,
             [this, debugDock](int instruction) {
                 showStoppedAt(instruction);
@@ -99,18 +107,18 @@ void MainWindow::setupDebugging() {
                     debugDock->show();
                     debugDock->raise();
                 }
-                updateSimulationStatus();
+                emit stoppedAtShown(instruction);
             });
-    connect(m_scanDebugger, &ScanDebuggerView::editConditionRequested, this,
-            &MainWindow::editBreakpointCondition);
-    connect(m_scanDebugger, &ScanDebuggerView::goToInstruction, this, [this](int instruction) {
+    connect(m_debugger, &ScanDebuggerView::editConditionRequested, this,
+            &DebugController::editBreakpointCondition);
+    connect(m_debugger, &ScanDebuggerView::goToInstruction, this, [this](int instruction) {
         const auto &origin = m_document->listing().origin;
         if (instruction >= 0 && static_cast<std::size_t>(instruction) < origin.size())
             m_ladder->setCursor({origin[static_cast<std::size_t>(instruction)].rung, 0, 0});
     });
     m_simulation->setAsker([this](const QString &question, bool canKeep) {
         QMessageBox box(QMessageBox::Question, tr("Online Edit"), question, QMessageBox::NoButton,
-                        this);
+                        m_window);
         QPushButton *keep =
             canKeep ? box.addButton(tr("Apply Keeping the Memory"), QMessageBox::AcceptRole)
                     : nullptr;
@@ -127,7 +135,9 @@ void MainWindow::setupDebugging() {
     });
 }
 
-void MainWindow::buildDebugMenu(QMenu *menu) {
+DebugController::~DebugController() = default;
+
+void DebugController::addActions(QMenu *menu) {
     const auto add = [this, menu](const char *name, const QString &text, const QKeySequence &key,
                                   auto slot) {
         QAction *a = menu->addAction(text, this, slot);
@@ -140,26 +150,17 @@ void MainWindow::buildDebugMenu(QMenu *menu) {
     menu->addSeparator();
     add("simulationStepInstruction", tr("S&tep Instruction"), QKeySequence(Qt::CTRL | Qt::Key_F12),
         [this] { m_simulation->stepInstruction(); })
-        ->setIcon(style()->standardIcon(QStyle::SP_ArrowRight));
+        ->setIcon(m_window->style()->standardIcon(QStyle::SP_ArrowRight));
     add("simulationFinishScan", tr("F&inish Scan"), QKeySequence(Qt::SHIFT | Qt::Key_F12),
         [this] { m_simulation->finishScan(); });
     add("simulationToggleBreakpoint", tr("Toggle &Breakpoint"), QKeySequence(Qt::CTRL | Qt::Key_B),
         [this] { toggleBreakpointHere(); });
     add("simulationBreakpointCondition", tr("Breakpoint Co&ndition..."),
         QKeySequence(Qt::CTRL | Qt::SHIFT | Qt::Key_B), [this] {
-            int instruction = -1;
-            if (m_il->hasFocus()) {
-                int line = 0, index = 0;
-                m_il->getCursorPosition(&line, &index);
-                instruction = instructionAtLine(line + 1);
-            } else {
-                const auto &first = m_document->listing().rungFirst;
-                const int rung = m_ladder->cursor().rung;
-                if (rung >= 0 && static_cast<std::size_t>(rung) + 1 < first.size())
-                    instruction = first[static_cast<std::size_t>(rung)];
-            }
+            QString where;
+            const int instruction = instructionHere(&where);
             if (instruction < 0)
-                statusBar()->showMessage(tr("No instruction here to stop at"), 5000);
+                statusBar()->showMessage(tr("No instruction at %1 to stop at").arg(where), 5000);
             else
                 editBreakpointCondition(instruction);
         });
@@ -169,44 +170,37 @@ void MainWindow::buildDebugMenu(QMenu *menu) {
     add("simulationReturnToLive", tr("Return to &Live"),
         QKeySequence(Qt::CTRL | Qt::SHIFT | Qt::Key_L), [this] { m_simulation->returnToLive(); });
     menu->addSeparator();
-    for (const char *dock : {"simulationDock", "scanDebuggerDock"})
-        if (auto *d = findChild<QDockWidget *>(QString::fromLatin1(dock)))
-            menu->addAction(d->toggleViewAction());
+    menu->addAction(m_panelDock->toggleViewAction());
+    menu->addAction(m_debugDock->toggleViewAction());
 }
 
-void MainWindow::retranslateSimulation() {
-    if (auto *dock = findChild<QDockWidget *>(QStringLiteral("simulationDock")))
-        dock->setWindowTitle(tr("Simulation"));
-    if (auto *dock = findChild<QDockWidget *>(QStringLiteral("scanDebuggerDock")))
-        dock->setWindowTitle(tr("Scan Debugger"));
-    m_simulationPanel->retranslate();
-    m_scanDebugger->retranslate();
-    updateSimulationStatus();
-}
-
-int MainWindow::instructionAtLine(int line) const {
+int DebugController::instructionAtLine(int line) const {
     // Lines are counted in the canonical text; a text as typed has lines of its own.
     if (m_il->text() != m_document->listingText())
         return -1;
     return m_document->printedListing().instructionAt(line);
 }
 
-void MainWindow::toggleBreakpointHere() {
-    int instruction = -1;
-    QString where;
+int DebugController::instructionHere(QString *where) const {
     if (m_il->hasFocus()) {
         int line = 0, index = 0;
         m_il->getCursorPosition(&line, &index);
-        instruction = instructionAtLine(line + 1);
-        where = tr("line %1").arg(line + 1);
-    } else {
-        const auto &first = m_document->listing().rungFirst;
-        const int rung = m_ladder->cursor().rung;
-        if (rung >= 0 && static_cast<std::size_t>(rung) + 1 < first.size() &&
-            first[static_cast<std::size_t>(rung)] < first[static_cast<std::size_t>(rung) + 1])
-            instruction = first[static_cast<std::size_t>(rung)];
-        where = tr("rung %1").arg(rung + 1);
+        *where = tr("line %1").arg(line + 1);
+        return instructionAtLine(line + 1);
     }
+    const auto &first = m_document->listing().rungFirst;
+    const int rung = m_ladder->cursor().rung;
+    *where = tr("rung %1").arg(rung + 1);
+    // A rung the list has no instruction of (a comment alone) has nowhere to stop.
+    if (rung >= 0 && static_cast<std::size_t>(rung) + 1 < first.size() &&
+        first[static_cast<std::size_t>(rung)] < first[static_cast<std::size_t>(rung) + 1])
+        return first[static_cast<std::size_t>(rung)];
+    return -1;
+}
+
+void DebugController::toggleBreakpointHere() {
+    QString where;
+    const int instruction = instructionHere(&where);
     if (instruction < 0) {
         statusBar()->showMessage(tr("No instruction at %1 to stop at").arg(where), 5000);
         return;
@@ -217,7 +211,7 @@ void MainWindow::toggleBreakpointHere() {
                              5000);
 }
 
-void MainWindow::editBreakpointCondition(int instruction) {
+void DebugController::editBreakpointCondition(int instruction) {
     const auto &list = m_document->listing().list.instructions;
     if (instruction < 0 || static_cast<std::size_t>(instruction) >= list.size())
         return;
@@ -230,12 +224,20 @@ void MainWindow::editBreakpointCondition(int instruction) {
             .arg(i < printed.instructionLine.size() ? printed.instructionLine[i] : 0)
             .arg(model::printInstruction(m_document->target(), list[i]));
     BreakpointDialog dialog(m_document->target(), place,
-                            existing ? *existing : SimulationController::BreakpointSpec{}, this);
+                            existing ? *existing : SimulationController::BreakpointSpec{},
+                            m_window);
     if (dialog.exec() == QDialog::Accepted)
         m_simulation->setBreakpoint(instruction, dialog.breakpoint());
 }
 
-void MainWindow::updateBreakpointMarks() {
+void DebugController::retranslate() {
+    m_panelDock->setWindowTitle(tr("Simulation"));
+    m_debugDock->setWindowTitle(tr("Scan Debugger"));
+    m_panel->retranslate();
+    m_debugger->retranslate();
+}
+
+void DebugController::updateBreakpointMarks() {
     std::map<int, bool> lines;
     std::map<int, bool> rungs;
     const auto &printed = m_document->printedListing();
@@ -253,7 +255,7 @@ void MainWindow::updateBreakpointMarks() {
                                                                        : std::map<int, bool>{});
 }
 
-void MainWindow::showStoppedAt(int instruction) {
+void DebugController::showStoppedAt(int instruction) {
     const auto &origin = m_document->listing().origin;
     const auto &printed = m_document->printedListing();
     if (instruction < 0 || static_cast<std::size_t>(instruction) >= origin.size()) {
