@@ -2821,8 +2821,8 @@ A read és a write kilépési kódja: 0 kész, 1 a PLC nem válaszolt vagy eluta
     </message>
     <message>
         <location line="+13" />
-        <source>%1 has no published protocol to serve (protocols.md)</source>
-        <translation>a(z) %1 PLC-nek nincs nyilvános protokollja, amelyen kiszolgálható lenne (protocols.md)</translation>
+        <source>%1 has no published protocol to serve (its manual gives none)</source>
+        <translation>a(z) %1 PLC-nek nincs nyilvános protokollja, amelyen kiszolgálható lenne (a kézikönyve sem ad meg ilyet)</translation>
     </message>
     <message>
         <location line="+2" />

@@ -2830,8 +2830,8 @@ Codice di uscita di read e write: 0 fatto, 1 il PLC non ha risposto o ha rifiuta
     </message>
     <message>
         <location line="+13" />
-        <source>%1 has no published protocol to serve (protocols.md)</source>
-        <translation>%1 non ha un protocollo pubblicato da servire (protocols.md)</translation>
+        <source>%1 has no published protocol to serve (its manual gives none)</source>
+        <translation>%1 non ha un protocollo pubblicato da servire (il suo manuale non ne riporta)</translation>
     </message>
     <message>
         <location line="+2" />
