@@ -281,7 +281,7 @@ bool MonitorCommands::writePresetText(const MonitorTargets::Preset &preset, cons
     }
     qint64 word = *value;
     if (m_target->constants.bcdSetValues) {
-        // The channel holds the preset's BCD digits (CPM1, seed 002).
+        // The channel holds the preset's BCD digits (Omron CPM1 guide).
         const auto bcd = toBcd(*value);
         if (!bcd) {
             emit message(tr("\"%1\" is no preset for %2: the preset is 0..9999 (BCD)")

@@ -32,8 +32,10 @@ for f in tests/data/sim/*.il; do
     { printf "$byte"; cat "$f"; } > "build-fuzz/corpus/il/$(basename "$f")"
 done
 cp resources/examples/*/*.rung build-fuzz/corpus/project/
-# The comms fuzzers start from the frames of protocols.md and the Modbus spec's examples,
-# behind the bytes that pick the request and the chunk size (tests/fuzz/make_corpus.py).
+# The comms fuzzers start from the manuals' example frames (Vigor M/VB/VH communication manual,
+# B-5-3; Omron CPM1/SRM1 programming manual W353, Host Link) and the Modbus specification's
+# examples, behind the bytes that pick the request and the chunk size
+# (tests/fuzz/make_corpus.py).
 for name in "${comms_fuzzers[@]}"; do
     mkdir -p "build-fuzz/corpus/$name"
     cp tests/fuzz/corpus/"$name"/* "build-fuzz/corpus/$name/"

@@ -70,7 +70,7 @@ void Compiler::compileTimer(const model::Instruction &ins, Step &s) {
         s.op = kTimerAccumulates; // Vigor T246..T255: the time stays while the coil is OFF
     if (m_sem.timerCountsInWord) {
         // PL110 TON / TOFF / TONR T PT [base]: the time base is the third operand (10, 100 or
-        // 1000 ms, seed 003 4.2.4); the current value lives in the T word so that
+        // 1000 ms, PL110 manual 4.2.4); the current value lives in the T word so that
         // MOV(Tx = #0) resets a TONR as the manual says.
         s.code = Code::PlTimer;
         s.op = static_cast<std::uint8_t>(
@@ -157,7 +157,8 @@ void Compiler::compileApply(const model::Instruction &ins, Step &s) {
         const model::Operand *d = operand(ins, 2);
         if (!d)
             break;
-        // Its three results are written: not on the inputs (seed 001: Y, M, S).
+        // Its three results are written: not on the inputs (Vigor M/VB/VH communication
+        // manual: Y, M, S).
         if (isDevice(*d) && !m_target.area(d->address.area).writable) {
             error(ins,
                   trCompiler(QT_TRANSLATE_NOOP("rung::simulator::Compiler", "%1 cannot be written"))
@@ -193,7 +194,8 @@ void Compiler::compileApply(const model::Instruction &ins, Step &s) {
             error(ins, CompilerTr::tr("%1 is not a device").arg(describe(*b)));
             break;
         }
-        // ZRST clears what the program writes: not the inputs (seed 001: Y, M, S, T, C, D).
+        // ZRST clears what the program writes: not the inputs (Vigor M/VB/VH communication
+        // manual: Y, M, S, T, C, D).
         const model::Operand *readOnly = nullptr;
         for (const model::Operand *end : {a, b})
             if (!readOnly && !m_target.area(end->address.area).writable)
@@ -362,7 +364,7 @@ void Compiler::compileApply(const model::Instruction &ins, Step &s) {
         compileCheckCode(ins, s); // compile_words.cpp
         break;
     case ApplyFunction::Toggle:
-        // OUTB (seed 003 4.2.3): each activation of the coil flips the bit
+        // OUTB (PL110 manual 4.2.3): each activation of the coil flips the bit
         s.bit = bitOf(ins, 0);
         edgeStep(s, Code::Toggle, false);
         break;

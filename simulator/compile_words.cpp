@@ -2,7 +2,8 @@
 #include "simulator/tr.h"
 
 // Vigor instructions on more than one word: DMOV (the 32-bit MOV) and CCD (the check code of
-// a block of bytes), which seed 001's communication programs use to build and check frames.
+// a block of bytes), which the communication programs of the Vigor M/VB/VH communication
+// manual use to build and check frames.
 
 namespace rung::simulator::detail {
 
@@ -39,9 +40,10 @@ void Compiler::compileDoubleMove(const model::Instruction &ins, Step &s) {
         s.slot = nextWord(ins, 1);
 }
 
-// CCD S D n (FX / Delta FNC 84; seed 001 B-3-9: "Accumulate then take the last two digits"):
-// the sum of n bytes from S into D and their parity into D+1. While the 8-bit mode flag is ON
-// each word gives its low byte; OFF, its low byte then its high byte.
+// CCD S D n (FX / Delta FNC 84; Vigor M/VB/VH communication manual, B-3-9: "Accumulate then
+// take the last two digits"): the sum of n bytes from S into D and their parity into D+1.
+// While the 8-bit mode flag is ON each word gives its low byte; OFF, its low byte then its high
+// byte.
 void Compiler::compileCheckCode(const model::Instruction &ins, Step &s) {
     s.code = Code::CheckCode;
     const model::Operand *src = operand(ins, 0);

@@ -10,7 +10,7 @@ namespace rung::simulator {
 namespace detail {
 
 // The first `count` inputs of the physical input area, which a TEST-mode image word stands
-// for (seed 003 2.1.2: SM37.0 -> I1 ... SM37.7 -> I8).
+// for (PL110 manual 2.1.2: SM37.0 -> I1 ... SM37.7 -> I8).
 void Compiler::compileInputTestBits(int count) {
     for (std::size_t k = 0; k < m_target.areas.size(); ++k) {
         const model::Area &area = m_target.areas[k];
@@ -196,7 +196,7 @@ CompileResult Compiler::run() {
                 --m_push;
             break;
         case Op::Invert:
-            // NOT, and PL110 P / N (seed 003 4.2.18), which edge-detect the power flow at
+            // NOT, and PL110 P / N (PL110 manual 4.2.18), which edge-detect the power flow at
             // their place in the rung: the mode tells them apart.
             if (spec.mode == model::ContactMode::Rising ||
                 spec.mode == model::ContactMode::Falling) {
@@ -261,7 +261,7 @@ CompileResult Compiler::run() {
                                                                : TransferKind::Assign);
             if (spec.negated)
                 s.flags |= kNegated;
-            // Four-digit decimal words (VPC, seed 000 III): a result outside 0..9999 wraps
+            // Four-digit decimal words (VPC user's manual, III): a result outside 0..9999 wraps
             // modulo 10000 and is a runtime diagnostic.
             if (m_target.limits.decimalDigits == 4)
                 s.flags |= kDecimal4;

@@ -59,7 +59,7 @@ private:
         m_diagnostics.push_back(std::move(d));
     }
     // A constant preset of a timer/counter whose set value the program can address (PL110
-    // PT/PV, seed 003 2.1.9/2.1.11) is loaded into that word at start, and the element reads
+    // PT/PV, PL110 manual 2.1.9/2.1.11) is loaded into that word at start, and the element reads
     // the word: writing PT1 changes T1's preset in force.
     void loadPresetFromMemory(const model::Address &element, Step &s) {
         if (s.x.index >= 0 || s.y.index < 0 || !m_layout->presetAddressable(element))

@@ -124,7 +124,7 @@ void Engine::beginScan() {
     std::int32_t *R = m_words.data();
     for (const auto &[begin, end] : p.inputWordRanges)
         std::copy(m_stimulus.begin() + begin, m_stimulus.begin() + end, m_words.begin() + begin);
-    // TEST mode (seed 003 2.1.2): "la lettura degli ingressi digitali viene disabilitata. Lo
+    // TEST mode (PL110 manual 2.1.2): "la lettura degli ingressi digitali viene disabilitata. Lo
     // stato degli ingressi viene prelevato dalle word SM37".
     if (p.inputTest.valid() && p.inputTestWord >= 0 &&
         (static_cast<std::uint32_t>(R[p.inputTest.word]) & p.inputTest.mask)) {
@@ -197,7 +197,7 @@ void Engine::endScan() {
         for (std::size_t k = 0; k < p.parallelOutBits.size(); ++k)
             put(W, p.parallelOutBits[k], (v >> k) & 1u);
     }
-    // PL110 (seed 003 4.2.5): "PV viene confrontato con il valore corrente al termine di
+    // PL110 (PL110 manual 4.2.5): "PV viene confrontato con il valore corrente al termine di
     // ogni ciclo": the count bit follows the C word as the scan left it. MDOWN is ON at 0,
     // OFF while its RESET is ON (the box keeps RESET in bit 2 of its state).
     for (const std::int32_t k : p.endOfScanCounters) {

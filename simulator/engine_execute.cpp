@@ -408,7 +408,7 @@ std::size_t Engine::execute(std::size_t from, std::size_t to) {
                 st.accumulated = 0;
                 st.running = 0; // completion flag
             } else if ((upEdge || downEdge) && !(up && down)) {
-                // seed 002: the value does not change while both inputs are at 1
+                // Omron CPM1 guide: the value does not change while both inputs are at 1
                 if (upEdge) {
                     st.running = st.accumulated >= set;
                     st.accumulated = st.running ? 0 : st.accumulated + 1;
@@ -423,7 +423,7 @@ std::size_t Engine::execute(std::size_t from, std::size_t to) {
             break;
         }
         case Code::PlTimer: {
-            // PL110 (seed 003 4.2.4): the current value counts time-base units in the T word
+            // PL110 (PL110 manual 4.2.4): the current value counts time-base units in the T word
             // and saturates at Limits::timerMax; st.accumulated holds the ms not yet a whole unit.
             ElementState &st = m_states[static_cast<std::size_t>(s.slot)];
             if (!gateOpen(s.slot)) // Area::enabledBy (PL110 SM0.13): the box does nothing
@@ -482,7 +482,7 @@ std::size_t Engine::execute(std::size_t from, std::size_t to) {
             break;
         }
         case Code::PlCounter: {
-            // PL110 MUP / MDOWN (seed 003 4.2.5): counts rising edges of UP and DOWN in the
+            // PL110 MUP / MDOWN (PL110 manual 4.2.5): counts rising edges of UP and DOWN in the
             // C word, which saturates at Limits::counterMin..counterMax (-32768..32767; MDOWN
             // stops at 0); RESET clears MUP
             // and loads PV into MDOWN. MUP is ON at >= PV, MDOWN at 0.

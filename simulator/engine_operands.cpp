@@ -11,8 +11,8 @@
 // group of bits (K4Y0) is read into a value or written through the scratch word; an index
 // register moves a word, a group or a constant (D0E0, K4M0E1, K10F0); a PL110 double word
 // joins two words. An indexed operand that lands outside every area of its prefix is the
-// PLC's operation error: the instruction is not executed (the WPLSoft family, seed 004,
-// flags it and goes on with the scan), and the simulator names the operand and the index.
+// PLC's operation error: the instruction is not executed (PLC concepts (WPLSoft family): the
+// PLC flags it and goes on with the scan), and the simulator names the operand and the index.
 
 namespace rung::simulator {
 

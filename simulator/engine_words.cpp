@@ -4,7 +4,7 @@
 #include <QCoreApplication>
 
 // Vigor CCD (compile_words.cpp): the check code of a frame held one character a word (8-bit
-// mode, seed 001's programs) or two (16-bit mode).
+// mode, the programs of the Vigor M/VB/VH communication manual) or two (16-bit mode).
 
 namespace rung::simulator {
 

@@ -99,7 +99,7 @@ enum StepFlag : std::uint16_t {
     kBcd = 8,     // set value read from a word holds BCD digits (CPM1)
     kRungStart = 16,
     kOneInput = 32, // counter reset only by RST (Vigor)
-    kDecimal4 = 64, // VPC transfer: the result is a four-digit decimal 0..9999 (seed 000)
+    kDecimal4 = 64, // VPC transfer: the result is a four-digit decimal 0..9999 (VPC user's manual)
     kResolve = 128, // an operand is an OperandRef (x, y, dest or slot <= kRefBase): see below
     // The differentiated form (W353 "@MOV(21)"): runs once when its condition turns ON; the
     // edge memory is `slot`, which no code that can be differentiated uses otherwise.
@@ -254,7 +254,7 @@ struct Program {
     std::int32_t parallelInWord = -1;
     std::vector<BitRef> parallelOutBits; // LSB first
     std::vector<BitRef> parallelInBits;
-    // PL110 MUP / MDOWN steps whose count bit is compared at END (seed 003 4.2.5).
+    // PL110 MUP / MDOWN steps whose count bit is compared at END (PL110 manual 4.2.5).
     std::vector<std::int32_t> endOfScanCounters;
     // Per timer / counter element state slot; empty when no area has Area::enabledBy.
     std::vector<ElementGate> gates;

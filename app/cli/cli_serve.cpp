@@ -262,7 +262,7 @@ int runServeCommand(const QStringList &args, QTextStream &out, QTextStream &err)
         for (const comms::ProtocolKind k : comms::protocolsOf(*loaded.target))
             spoken << comms::protocolCommandName(k);
         err << (spoken.isEmpty()
-                    ? ServeTr::tr("%1 has no published protocol to serve (protocols.md)")
+                    ? ServeTr::tr("%1 has no published protocol to serve (its manual gives none)")
                           .arg(loaded.target->displayName)
                     : ServeTr::tr("%1 does not speak %2; it speaks %3")
                           .arg(loaded.target->displayName, protocolName,

@@ -431,7 +431,7 @@ void ConnectionPanel::setSettings(const comms::ConnectionSettings &s) {
     m_host->setText(s.host);
     m_tcpPort->setValue(s.tcpPort);
     // The stations the protocol numbers (Vigor 0..255, Modbus 1..247, Host Link 0..31); a
-    // PL110 answers 255 too, "any station" (seed 003 chapter 3).
+    // PL110 answers 255 too, "any station" (PL110 manual 3.1).
     comms::StationRange stations = comms::stationRange(s.protocol);
     if (const model::ProtocolMap *map =
             m_target ? model::findProtocolMap(*m_target, comms::protocolIdOf(s.protocol)) : nullptr;

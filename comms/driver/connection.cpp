@@ -16,7 +16,8 @@ ConnectionSettings defaultSettings(ProtocolKind protocol) {
     ConnectionSettings s;
     s.protocol = protocol;
     switch (protocol) {
-    case ProtocolKind::VigorLink: // CP1: 19200, 7 bits, even, 1 stop, station 0 (seed 001 B-5)
+    // CP1: 19200, 7 bits, even, 1 stop, station 0 (Vigor M/VB/VH communication manual, B-5-1)
+    case ProtocolKind::VigorLink:
         s.serial = {19200, 7, SerialSettings::Parity::Even, 1, SerialSettings::Flow::None};
         s.station = 0;
         break;
@@ -24,7 +25,7 @@ ConnectionSettings defaultSettings(ProtocolKind protocol) {
         s.serial = {9600, 7, SerialSettings::Parity::Even, 2, SerialSettings::Flow::None};
         s.station = 0;
         break;
-    case ProtocolKind::ModbusRtu: // PL110 COM1: 19200 8N1 (seed 003 chapter 3)
+    case ProtocolKind::ModbusRtu: // PL110 COM1: 19200 8N1 (PL110 manual 2.1.2, 3.1)
     case ProtocolKind::ModbusTcp:
         s.serial = {19200, 8, SerialSettings::Parity::None, 1, SerialSettings::Flow::None};
         s.station = 1;
@@ -103,7 +104,8 @@ QString protocolCommandName(ProtocolKind kind) {
 
 StationRange stationRange(ProtocolKind protocol) {
     switch (protocol) {
-    case ProtocolKind::VigorLink: // CP2 stations 0..255 (seed 001 B-5)
+    // CP2 stations 0..255 (Vigor M/VB/VH communication manual, B-5-1)
+    case ProtocolKind::VigorLink:
         return {0, 255};
     case ProtocolKind::HostLink: // units 00..31 (W353 Host Link)
         return {0, 31};

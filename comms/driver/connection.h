@@ -2,8 +2,9 @@
 
 // Where a PLC is and how to speak to it: the protocol, the port (a serial port, a
 // pseudo-terminal, a TCP host) with its line settings, the station, timeouts and retries.
-// The defaults are each protocol's (protocols.md): Vigor CP1 19200 7E1 station 0, PL110
-// 19200 8N1 unit 1, Host Link 9600 7E2 unit 0.
+// The defaults are each protocol's: Vigor CP1 19200 7E1 station 0 (Vigor M/VB/VH
+// communication manual, B-5-1), PL110 19200 8N1 unit 1 (PL110 manual 2.1.2, 3.1), Host Link
+// 9600 7E2 unit 0 (the common PC Setup; Omron CPM1/SRM1 programming manual W353, Host Link).
 
 #include "comms/driver/link.h"
 #include "comms/driver/protocol_driver.h"

@@ -33,8 +33,8 @@ QString ModbusDriver::plcName() const {
 }
 
 int ModbusDriver::maxReadUnits(ProtocolSpace space) const {
-    // The PL110 manual limits the word functions (03, 04, 10) to 30 words and says nothing of
-    // a limit on bits (seed 003, chapter 3): the map's limit is a register limit.
+    // The PL110 manual (3.1) limits the word functions (03, 04, 10) to 30 words and says
+    // nothing of a limit on bits: the map's limit is a register limit.
     if (isBitSpace(space))
         return modbus::MaxReadBits;
     return m_map.maxReadUnits > 0 ? std::min(m_map.maxReadUnits, modbus::MaxReadRegisters)
@@ -150,7 +150,7 @@ DriverError ModbusDriver::identify(PlcIdentity *identity) {
                 return e;
             words.push_back(version[0]);
         }
-        // Word 1, "Versione software programma PL110" (seed 003 chapter 3): a number, which
+        // Word 1, "Versione software programma PL110" (PL110 manual 3.2): a number, which
         // the panel introduces as the version.
         identity->version = QString::number(words[1]);
     }

@@ -11,8 +11,9 @@
 
 namespace rung::comms::detail {
 
-// Vigor M / VB / VH Computer Link (seed 001, B-5): 51h / 61h over the byte map, 70h / 71h for
-// bits. No force, no RUN / STOP, no identification (protocols.md).
+// Vigor M / VB / VH Computer Link (Vigor M/VB/VH communication manual, B-5): 51h / 61h over
+// the byte map, 70h / 71h for bits. No force, no RUN / STOP, no identification: B-5-3
+// documents no command for them.
 class VigorLinkDriver final : public ProtocolDriver {
 public:
     using ProtocolDriver::ProtocolDriver;
@@ -53,10 +54,10 @@ private:
     int m_transaction = 0;
 };
 
-// Omron Host Link C-mode (W353; protocols.md): RR/WR, RH/WH, RD/WD, RC/WC (BCD), RG; bits of
-// IR / HR written by reading the word and writing it back; KS / KR / KC force; MS / SC mode;
-// MM model. Writes in RUN are refused by the PLC (end code 01): prepareWrite() switches it
-// to MONITOR first and says so.
+// Omron Host Link C-mode (Omron CPM1/SRM1 programming manual W353, Host Link): RR/WR, RH/WH,
+// RD/WD, RC/WC (BCD), RG; bits of IR / HR written by reading the word and writing it back;
+// KS / KR / KC force; MS / SC mode; MM model. Writes in RUN are refused by the PLC (end code
+// 01): prepareWrite() switches it to MONITOR first and says so.
 class HostLinkDriver final : public ProtocolDriver {
 public:
     using ProtocolDriver::ProtocolDriver;

@@ -1,9 +1,10 @@
 #pragma once
 
 // A pass-through recorder: two ports joined, every byte passed on at once in both directions
-// and recorded with its time. The VPC's link protocol is not published (protocols.md), so
-// nothing here speaks it; a VPC user puts the relay between VPC Host Interface and the PLC
-// and keeps what the two said to each other. It works the same for any PLC and program.
+// and recorded with its time. The VPC's link protocol is not published (the VPC user's manual,
+// I and V, names the RS232C link to VPC Host Interface and gives no frame format), so nothing
+// here speaks it; a VPC user puts the relay between VPC Host Interface and the PLC and keeps
+// what the two said to each other. It works the same for any PLC and program.
 //
 // Threading: one worker per direction reads one side and writes the other, so neither
 // direction waits for the other; the tap is read from any thread (TrafficTap). Sent in the

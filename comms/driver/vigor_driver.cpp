@@ -9,7 +9,7 @@ namespace rung::comms::detail {
 namespace {
 
 // 51h: STX station(2) 51 address(4) length(2) ETX sum(2); the reply ACK station(2) 51
-// error(2) data(2 a byte) ETX sum(2) (seed 001, B-5).
+// error(2) data(2 a byte) ETX sum(2) (Vigor M/VB/VH communication manual, B-5-3).
 constexpr int ReadRequestBytes = 14;
 constexpr int ReadReplyOverhead = 10;
 

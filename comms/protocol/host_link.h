@@ -1,7 +1,7 @@
 #pragma once
 
-// Omron Host Link, C-mode commands (CPM1 / SRM1 manual W353, C200HS; protocols.md), both
-// sides, no I/O.
+// Omron Host Link, C-mode commands (Omron CPM1/SRM1 programming manual W353, Host Link; the
+// C200HS manual), both sides, no I/O.
 //   command  "@" unit(2 decimal) header(2) text FCS(2 hex) "*" CR
 //   response "@" unit header end-code(2 hex) text FCS "*" CR
 // FCS = XOR of every character from "@" (or the frame's first character) to the end of the

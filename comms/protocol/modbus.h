@@ -1,8 +1,8 @@
 #pragma once
 
-// Modbus (Modbus Application Protocol V1.1b3; RTU over serial line V1.02; seed 001 B-3-6 and
-// seed 003 chapter 3 for the PLC maps): the PDU, RTU framing with CRC-16 and TCP framing with
-// the MBAP header, master and slave side, no I/O.
+// Modbus (Modbus Application Protocol V1.1b3; RTU over serial line V1.02; for the PLC maps
+// the Vigor M/VB/VH communication manual, B-3-6, and the PL110 manual, chapter 3): the PDU,
+// RTU framing with CRC-16 and TCP framing with the MBAP header, master and slave side, no I/O.
 
 #include "comms/protocol/protocol_error.h"
 

@@ -1,7 +1,7 @@
 #pragma once
 
-// Vigor M / VB / VH "Computer Link" (seed 001, B-5; protocols.md): pure encoders and
-// incremental decoders for both sides, no I/O.
+// Vigor M / VB / VH "Computer Link" (Vigor M/VB/VH communication manual, B-5): pure encoders
+// and incremental decoders for both sides, no I/O.
 //   request  <STX> station(2) command(2) data... <ETX> sum(2)
 //   response <ACK> station(2) command(2) error(2) data... <ETX> sum(2)
 // The sum adds the bytes from the first station digit up to and including ETX; its low byte is
@@ -19,7 +19,8 @@ namespace rung::comms::vigor {
 inline constexpr char Stx = 0x02;
 inline constexpr char Etx = 0x03;
 inline constexpr char Ack = 0x06;
-// 51h / 61h move at most 128 bytes (seed 001, B-5): the model's, which the link map reads too.
+// 51h / 61h move at most 128 bytes (Vigor M/VB/VH communication manual, B-5-3): the model's,
+// which the link map reads too.
 inline constexpr int MaxBytes = model::VigorLinkMaxBytes;
 // The longest frames: a 61h request of MaxBytes (STX, station, command, address, length, the
 // bytes, ETX, sum) and a 51h reply of MaxBytes (ACK, station, command, error, the bytes, ETX,
@@ -29,7 +30,7 @@ inline constexpr int MaxReplyFrame = 1 + 6 + 2 * MaxBytes + 3;
 
 enum class Command : std::uint8_t { Read = 0x51, Write = 0x61, BitOn = 0x70, BitOff = 0x71 };
 
-// The error byte of a response (seed 001, B-5).
+// The error byte of a response (Vigor M/VB/VH communication manual, B-5-2).
 enum class ErrorCode : std::uint8_t {
     None = 0x00,
     AsciiConversion = 0x10,

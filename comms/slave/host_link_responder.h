@@ -1,8 +1,8 @@
 #pragma once
 
-// Omron Host Link C-mode, the PLC's side (CPM1 / SRM1 manual W353; protocols.md): RR/WR,
-// RH/WH, RD/WD, RC/WC (present values in BCD), RG, MS, SC, KS/KR/KC, MM and TS over the
-// target's Host Link map.
+// Omron Host Link C-mode, the PLC's side (Omron CPM1/SRM1 programming manual W353, Host
+// Link): RR/WR, RH/WH, RD/WD, RC/WC (present values in BCD), RG, MS, SC, KS/KR/KC, MM and TS
+// over the target's Host Link map.
 //  - A command for another unit is not answered; a broken one for this unit gets its end code
 //    (13 FCS, 14 format, 18 frame length).
 //  - Writes and forcing answer 01 in RUN: the master switches to MONITOR (SC 02) first.

@@ -1,8 +1,8 @@
 #pragma once
 
 // Modbus, the slave's side (Application Protocol V1.1b3, serial line V1.02; the Vigor CP2 map
-// of seed 001 B-3-6 and the PL110 map of seed 003 chapter 3): functions 01 02 03 04 05 06 0F
-// 10 over the target's map.
+// of the Vigor M/VB/VH communication manual, B-3-6, and the PL110 map of the PL110 manual,
+// 3.2): functions 01 02 03 04 05 06 0F 10 over the target's map.
 //  - RTU: a frame with a bad CRC is dropped unanswered (serial line 2.5.1.1); unit 0 is a
 //    broadcast: writes are done, nothing is answered; another unit is not answered (the
 //    map's any-station unit, PL110 FFh, is answered like the own one).

@@ -1,8 +1,9 @@
 #pragma once
 
-// Vigor M / VB / VH Computer Link, the PLC's side (seed 001 B-5; protocols.md): 51h reads and
-// 61h writes at most 128 bytes of the link byte map, 70h / 71h set and reset one bit device
-// (X, Y, M, S: timer and counter contacts are not bit devices of the command, error 28h).
+// Vigor M / VB / VH Computer Link, the PLC's side (Vigor M/VB/VH communication manual, B-5):
+// 51h reads and 61h writes at most 128 bytes of the link byte map, 70h / 71h set and reset one
+// bit device (X, Y, M, S: timer and counter contacts are not bit devices of the command, error
+// 28h).
 // A request for another station gets no answer; a broken one that names this station gets its
 // error code: 11h sum, 10h ASCII, 12h command, 28h address or length.
 

@@ -1,6 +1,7 @@
 #pragma once
 
-// Pseudo-terminals through termios: libserialport cannot open them (architecture.md).
+// Pseudo-terminals through termios: libserialport cannot open them (its port lookup needs
+// /sys/class/tty and sp_open needs TIOCMGET).
 // Either end: open() a path ("/dev/pts/3", a socat link), or createPair() makes a new
 // pseudo-terminal and holds its master side, for the virtual PLC (`serve --pty` prints
 // peerPath()). A pseudo-terminal carries bytes only: baud, parity and stop bits do not apply.

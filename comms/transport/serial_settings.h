@@ -1,7 +1,8 @@
 #pragma once
 
-// Line settings of a serial port (protocols.md: Vigor 7E1 19200, Host Link 7E2 9600, PL110
-// 8N1 19200 by default).
+// Line settings of a serial port (by default Vigor 7E1 19200, Vigor M/VB/VH communication
+// manual, B-5-1; Host Link 7E2 9600, Omron CPM1/SRM1 programming manual W353; PL110 8N1 19200,
+// PL110 manual 2.1.2 and 3.1).
 
 #include <QString>
 

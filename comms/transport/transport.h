@@ -1,7 +1,7 @@
 #pragma once
 
-// One interface for the byte pipes to a PLC (architecture.md): libserialport for real ports,
-// termios for pseudo-terminals (libserialport cannot open them), TCP (serial device servers
+// One interface for the byte pipes to a PLC (docs/comms.md, "Transports"): libserialport for real
+// ports, termios for pseudo-terminals (libserialport cannot open them), TCP (serial device servers
 // carry RTU frames over raw TCP; Modbus TCP), a fake for unit tests of the layers above.
 //
 // Threading: every call but cancel() blocks, up to its deadline, so a transport lives on a

@@ -3,7 +3,7 @@
 
 #include <algorithm>
 
-// The rewrites behind the fuzzy-form findings (ladder-rules.md, seed 004 1.7 and 1.8).
+// The rewrites behind the fuzzy-form findings (PLC concepts (WPLSoft family) 1.7 and 1.8).
 
 namespace rung::model::detail {
 

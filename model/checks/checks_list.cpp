@@ -186,7 +186,7 @@ private:
         return count(rewrite) < before->second;
     }
 
-    // Fuzzy forms (ladder-rules.md), block limits, and the branch stack.
+    // Fuzzy forms (PLC concepts (WPLSoft family) 1.7, 1.8), block limits, and the branch stack.
     void blocksAndStack() {
         struct Block {
             int first = 0;      // instruction index that opened it

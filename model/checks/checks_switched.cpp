@@ -4,7 +4,7 @@
 #include <QCoreApplication>
 
 // OP006: timers and counters that a system bit switches on or off (Area::enabledBy; PL110
-// SM0.13, seed 003 2.1.2: "disabilita la gestione dei contatori C[1..16] ed abilita invece la
+// SM0.13, PL110 manual 2.1.2: "disabilita la gestione dei contatori C[1..16] ed abilita invece la
 // gestione dei timer T[49..64], normalmente disabilitati") used where the program leaves them
 // off: a timer T49.. that nothing switches on, a counter beside an instruction that writes
 // the bit. A warning: the bit is retained and R/W over MODBUS, so it may be ON without the

@@ -364,7 +364,7 @@ std::vector<OperandBreach> operandBreaches(const Target &target, const Instructi
                 }
             }
         }
-        // seed 003 4.2.3: a bistable relay changes only on its own coil.
+        // PL110 manual 4.2.3: a bistable relay changes only on its own coil.
         if (isDestination(rule.kind) && area.onlyWrittenBy != ApplyFunction::None &&
             spec.function != area.onlyWrittenBy) {
             const InstructionSpec *writer = writerOf(target, area.onlyWrittenBy);

@@ -1,7 +1,7 @@
 #pragma once
 
 // Devices the simulator keeps as plain memory while the PLC does more with them
-// (Target::unmodelled: PL110 display pages, keys and page request, seed 003 2.1.2). `check`
+// (Target::unmodelled: PL110 display pages, keys and page request, PL110 manual 2.1.2). `check`
 // warns SIM101 at each use and the simulator's compiler again when a simulation starts, with
 // the same words, so nobody trusts a trace of what is not modelled.
 

@@ -339,7 +339,8 @@ private:
                 emitOutput(item.output, item.row);
                 continue;
             }
-            // LD even straight after IL, as seed 000 writes the branches of an interlock.
+            // LD even straight after IL, as the VPC user's manual, VII, writes an interlock's
+            // branches.
             const Branch &child = item.child.front();
             emitLoad(child.cond);
             emitWithoutStack(child, detail::seriesItems(child.cond), true);

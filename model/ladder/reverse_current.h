@@ -3,7 +3,7 @@
 // Reverse current: a rung whose network feeding an output can only be read by letting power
 // cross an element right to left (a bridge). The checks report it with the cells involved and
 // offer the standard correction: every left-to-right path kept, the shared contacts duplicated
-// into the branches (seed 004, 1.8).
+// into the branches (PLC concepts (WPLSoft family) 1.8).
 
 #include "model/ladder/ladder.h"
 

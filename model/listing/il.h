@@ -17,8 +17,9 @@ struct Operand {
     Address address;   // Kind::Device
     Constant constant; // Kind::Constant
     QString text;      // Kind::Text: PL110 FM operator, labels kept verbatim
-    // Vigor (seed 004, the WPLSoft family): a Device with digits n > 0 is the word of the n x 4
-    // bits from `address` (K4Y0 = Y0..Y17, K1M20 = M20..M23, ConstantNotation::digitGroups).
+    // Vigor, as in PLC concepts (WPLSoft family): a Device with digits n > 0 is the word of the
+    // n x 4 bits from `address` (K4Y0 = Y0..Y17, K1M20 = M20..M23,
+    // ConstantNotation::digitGroups).
     int digits = 0;
     // An index register (Area::indexRegister) that modifies a Device or a decimal Constant:
     // D0E0 = D(0 + E0), K10F0 = 10 + F0, K4M0E1 = K4M(0 + E1). Invalid when none.

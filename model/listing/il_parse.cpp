@@ -263,7 +263,7 @@ private:
 
     void reportUnknown(const Token &token, int lineNumber) {
         if (token.text.startsWith(QLatin1Char('['))) {
-            // PLProg's sections (seed 003 5.4 "[Init]", "[Main]", the timed interrupts of
+            // PLProg's sections (PL110 manual 5.4 "[Init]", "[Main]", the timed interrupts of
             // SM16/SM17): a listing is one main program, so say what to write instead.
             QString firstScan;
             for (const SystemDevice &d : m_target.systemDevices)
@@ -538,7 +538,7 @@ private:
             return true;
         if (rules.plain) {
             // A sign alone is an FM operator, not a number; PL110 also writes "#0" and, with
-            // a sign, "#-1" (seed 003 4.2.20: IF VD8 == #-1).
+            // a sign, "#-1" (PL110 manual 4.2.20: IF VD8 == #-1).
             qsizetype digit = rules.hashPlain && c == QLatin1Char('#') ? 1 : 0;
             if (t.size() > digit && (t[digit] == QLatin1Char('-') || t[digit] == QLatin1Char('+')))
                 ++digit;
@@ -642,7 +642,7 @@ private:
         return true;
     }
 
-    // K4Y0, D0E0, K10F0 (seed 004, the WPLSoft family): words, in the word slots of
+    // K4Y0, D0E0, K10F0, as in PLC concepts (WPLSoft family): words, in the word slots of
     // application instructions and set values only.
     bool readModified(OperandKind kind, const Token &token, int lineNumber, Operand *out) {
         const QString &t = token.text;

@@ -183,7 +183,7 @@ double timerBaseMs(const Target &target, const Instruction &instruction) {
     double base = instruction.spec->timerBaseMs > 0 ? instruction.spec->timerBaseMs
                   : areaBase > 0                    ? areaBase
                                                     : target.defaultTimerBaseMs;
-    // PL110 TON / TOFF / TONR T PT [BASE] (seed 003 4.2.4): the allowed bases are the operand's
+    // PL110 TON / TOFF / TONR T PT [BASE] (PL110 manual 4.2.4): the allowed bases are the operand's
     // allowedValues in the table, checked before anything runs.
     if (target.semantics.timerCountsInWord && instruction.operands.size() > 2 &&
         instruction.operands[2].kind == Operand::Kind::Constant)

@@ -3,10 +3,11 @@
 
 #include <QCoreApplication>
 
-// Operands with modifiers, as the WPLSoft family writes them (seed 004 1.4): a digit count
-// before a bit device (K4Y0: the word of Y0..Y17) and an index register after a word device
-// or a decimal constant (D0E0, K10F0, K4M0E1). Every room reads and writes them through the
-// functions here: the listing parser and printer, the ladder text, the project files.
+// Operands with modifiers, as the WPLSoft family writes them (PLC concepts (WPLSoft family)
+// 1.4): a digit count before a bit device (K4Y0: the word of Y0..Y17) and an index register
+// after a word device or a decimal constant (D0E0, K10F0, K4M0E1). Every room reads and writes
+// them through the functions here: the listing parser and printer, the ladder text, the
+// project files.
 
 namespace rung::model {
 

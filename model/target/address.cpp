@@ -188,7 +188,7 @@ std::variant<Address, AddressError> parseAddress(const Target &target, QStringVi
                      pos);
 
     qint64 value = number.value;
-    // Seed 002 writes a CPM1 bit as channel digits + two bit digits without the point:
+    // The Omron CPM1 guide writes a CPM1 bit as channel digits + two bit digits without the point:
     // 25313 is 253.13, HR0005 is HR00.05.
     if (bit < 0 && rules.numbering == Numbering::ChannelBit && rules.digits > 0 &&
         number.length == rules.digits + 2) {

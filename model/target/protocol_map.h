@@ -1,10 +1,12 @@
 #pragma once
 
-// Protocol address maps as target data (protocols.md): where each device of a target sits in
-// the address space of a protocol the PLC speaks. The tables live in target_*_maps.cpp and
-// are attached to the Target by its builder; the functions below are the only code that
-// reads them, in both directions (the master asks for a device, the slave answers an
-// address). target.h includes this header, so it must not include target.h.
+// Protocol address maps as target data (as the manuals give them: Vigor M/VB/VH communication
+// manual, B-5-3 and B-3-6; PL110 manual 3.2; Omron CPM1/SRM1 programming manual W353, Host
+// Link): where each device of a target sits in the address space of a protocol the PLC
+// speaks. The tables live in target_*_maps.cpp and are attached to the Target by its builder;
+// the functions below are the only code that reads them, in both directions (the master asks
+// for a device, the slave answers an address). target.h includes this header, so it must not
+// include target.h.
 
 #include <QString>
 
@@ -44,9 +46,10 @@ enum class DevicePart : std::uint8_t { Bit, Value, Coil };
 // origin, times the word width when the area is a word area); Value parts take
 // Area::wordBits / unitBits units each (a Vigor C200 value: 4 link bytes or 2 registers).
 // `last` ends the range where the protocol's documented reach ends before the area does
-// (CPM1 Host Link: IR/SR to 252, DM to 6655, protocols.md); -1 = the area's last element.
+// (CPM1 Host Link: IR/SR to 252, DM to 6655; Omron CPM1/SRM1 programming manual W353, Host
+// Link); -1 = the area's last element.
 // `readOnly`: the protocol reads the range but refuses writes to it (PL110: inputs as words,
-// timer and counter bits, analog inputs; seed 003 chapter 3, the R column).
+// timer and counter bits, analog inputs; PL110 manual 3.2, the R column).
 struct ProtocolRange {
     const char *area = "";
     DevicePart part = DevicePart::Bit;
@@ -56,7 +59,7 @@ struct ProtocolRange {
     int last = -1;
     // The manual marks the range R (read only) for the protocol. The protocol's access, not
     // the program's: PL110 inputs are R/W as bits 1600.. over MODBUS, R as words 100..
-    // (seed 003 3.2), while no instruction may write them (Area::writable).
+    // (PL110 manual 3.2), while no instruction may write them (Area::writable).
     bool readOnly = false;
 };
 
@@ -72,8 +75,9 @@ struct ProtocolFixedUnits {
     int value = 0;
 };
 
-// Vigor Computer Link: 51h / 61h move at most 128 bytes (seed 001, B-5). The Vigor link
-// map's limit and the codec's frame bounds (comms/protocol/vigor_link.h) both read it.
+// Vigor Computer Link: 51h / 61h move at most 128 bytes (Vigor M/VB/VH communication manual,
+// B-5-3). The Vigor link map's limit and the codec's frame bounds (comms/protocol/vigor_link.h)
+// both read it.
 inline constexpr int VigorLinkMaxBytes = 128;
 
 struct ProtocolMap {
@@ -84,7 +88,7 @@ struct ProtocolMap {
     // words); 0 = the protocol's own limit.
     int maxReadUnits = 0;
     int maxWriteUnits = 0;
-    // PL110: functions 02 and 04 read the same tables as 01 and 03 (seed 003 chapter 3).
+    // PL110: functions 02 and 04 read the same tables as 01 and 03 (PL110 manual 3.1).
     bool inputsShareSpaces = false;
     // Registers that describe the PLC (PL110: device type 0, firmware version 1, protocol
     // address 5); -1 = none. A slave answers the station it serves in stationRegister.
@@ -94,14 +98,14 @@ struct ProtocolMap {
     // The model code the PLC reports (Host Link MM: 11h for CPM1 / CPM1A / SRM1, W353 6-3-28);
     // -1 = the manual gives none.
     int modelCode = -1;
-    // A unit address every slave answers besides its own (PL110: FFh, seed 003 3.1); -1 = none.
+    // A unit address every slave answers besides its own (PL110: FFh, PL110 manual 3.1); -1 = none.
     int anyStationUnit = -1;
     // Writing the target's SystemRole::Run bit starts (1) and stops (0) the PLC (PL110 SM0 bit 0,
-    // seed 003 chapter 3); elsewhere the run bit is the PLC's to drive.
+    // PL110 manual, chapter 3); elsewhere the run bit is the PLC's to drive.
     bool runBitStartsStops = false;
     std::vector<ProtocolFixedUnits> fixedUnits;
-    // The exception code for an illegal data value (Modbus: 03; the PL110 manual lists 04 as
-    // ILLEGAL DATA VALUE, seed 003 3.1).
+    // The exception code for an illegal data value (Modbus: 03; the PL110 manual, 3.1, lists
+    // 04 as ILLEGAL DATA VALUE).
     int illegalValueException = 0x03;
 };
 

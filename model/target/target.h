@@ -56,40 +56,43 @@ struct Area {
     int wordBits = 16;     // value width for Word/Timer/Counter/Channel areas (Vigor C200+: 32)
     const char *description = nullptr; // QT_TRANSLATE_NOOP("rung::model::Target", ...)
     // Only instructions of this function may write the area (PL110 B: its bistable coil OUTB,
-    // seed 003 4.2.3); None: any instruction that writes.
+    // PL110 manual 4.2.3); None: any instruction that writes.
     ApplyFunction onlyWrittenBy{}; // ApplyFunction::None
     // The words of this area are the set values of the timer/counter area with this key,
-    // element for element (PL110 PT1 = preset of T1, PV1 of C1; seed 003 2.1.9, 2.1.11).
+    // element for element (PL110 PT1 = preset of T1, PV1 of C1; PL110 manual 2.1.9, 2.1.11).
     const char *presetsOf = nullptr;
     // Timer areas: the time base of their timers (Vigor T200..T245 10 ms, T246..T249 1 ms),
     // 0: the instruction's or the target's; and how they time (Vigor T246..T255 accumulate:
     // the time is kept while the coil is OFF, RST clears it).
     double timerBaseMs = 0;
     TimerMode timerMode{}; // TimerMode::OnDelay
-    // An index register (Vigor Z / V, seed 004's E / F): a word that, written after an
-    // operand of an application instruction, adds its value to the element number
-    // (D0E0 = D(0 + E0)) or to a constant (K10F0 = 10 + F0); a plain word otherwise.
+    // An index register (Vigor Z / V; E / F in PLC concepts (WPLSoft family) 1.4): a word
+    // that, written after an operand of an application instruction, adds its value to the
+    // element number (D0E0 = D(0 + E0)) or to a constant (K10F0 = 10 + F0); a plain word
+    // otherwise.
     bool indexRegister = false;
     // Element n of this area is the double word of words n (high) and n + 1 (low) of the
-    // word area with this key (PL110 VD / SMD, seed 003 2.1.1: "il numero della doppia word
-    // fa sempre riferimento all'organizzazione in word"; SMD20 = SM20 high, SM21 low).
+    // word area with this key (PL110 VD / SMD, PL110 manual 2.1.1: "il numero della doppia
+    // word fa sempre riferimento all'organizzazione in word"; SMD20 = SM20 high, SM21 low).
     const char *doubleWordsOf = nullptr;
     // Timer / counter areas that run only while a system bit is ON (enabledWhenOn) or OFF:
     // PL110 SM0.13 "disabilita la gestione dei contatori C[1..16] ed abilita invece la
-    // gestione dei timer T[49..64]" (seed 003 2.1.2). A box that does not run keeps its value
-    // and its bit. nullptr: always runs.
+    // gestione dei timer T[49..64]" (PL110 manual 2.1.2). A box that does not run keeps its
+    // value and its bit. nullptr: always runs.
     const char *enabledBy = nullptr;
     bool enabledWhenOn = true;
-    // Its prefixAliases name the whole bank (CPM1 "TC 005", seed 002): the parser makes such
-    // an operand the timer or the counter, whichever the program defines with that number.
+    // Its prefixAliases name the whole bank (CPM1 "TC 005", Omron CPM1 guide 3.5): the parser
+    // makes such an operand the timer or the counter, whichever the program defines with that
+    // number.
     bool bankAlias = false;
     // Holds a branch point's condition within a rung (CPM1 TR, W353): driven in many rungs,
     // so a second OUT is no duplicate coil.
     bool branchMemory = false;
     // A bit area a word operand may name: the 16 bits from an element first + 16k are one word
     // (PL110 I1 = I1..I16, I17 = I17..I32; docs/targets.md). Without it a plain bit device is
-    // no word operand (Vigor: seed 001's Operand Devices tables mark X, Y, M, S apart from
-    // KnX, KnY, KnM, KnS; CPM1 TR: W353 uses it in LD and OUT only). model::operandBreaches.
+    // no word operand (Vigor: the Operand Devices tables of the Vigor M/VB/VH communication
+    // manual mark X, Y, M, S apart from KnX, KnY, KnM, KnS; CPM1 TR: W353 uses it in LD and OUT
+    // only). model::operandBreaches.
     bool bitsAsWords = false;
     // Sub-ranges with other properties (read-only system bits inside a channel area,
     // retentive M ranges on Vigor) are separate Area entries; the parser picks the one that
@@ -123,7 +126,7 @@ enum class SystemRole : std::uint8_t {
     ScanTimeCurrent,
     ScanTimeMin,
     ScanTimeMax,
-    // TEST mode (PL110 SM0.5, seed 003 2.1.2): while this bit is ON the first
+    // TEST mode (PL110 SM0.5, PL110 manual 2.1.2): while this bit is ON the first
     // SystemDevice::inputs physical inputs read the bits of the InputTestImage word.
     InputTest,
     InputTestImage, // PL110 SM37: bit 0 -> I1 ... bit 7 -> I8
@@ -136,9 +139,9 @@ enum class SystemRole : std::uint8_t {
     Equal,
     Less,
     StepStart, // ON for one cycle when a STEP(08) step starts (W353: SR 25407)
-    // The program's choice of 8-bit data (Vigor M9161, seed 001 B-3-9: "16-bit mode (M9161=
-    // OFF) and 8-bit mode (M9161=ON)"): while ON, CCD and the RS family take one byte, the
-    // low one, from each word; OFF, both bytes, low first.
+    // The program's choice of 8-bit data (Vigor M9161, Vigor M/VB/VH communication manual,
+    // B-3-9: "16-bit mode (M9161=OFF) and 8-bit mode (M9161=ON)"): while ON, CCD and the RS
+    // family take one byte, the low one, from each word; OFF, both bytes, low first.
     ByteMode,
     Other,
 };
@@ -156,8 +159,8 @@ struct SystemDevice {
 };
 
 // Whether the PLC drives the device so that the program cannot write it (OP002): every role
-// but Other (seed 001: the program drives M9100), the status flags Error and Connected, and
-// what the manual lets the program write.
+// but Other (the Vigor M/VB/VH communication manual's programs drive M9100), the status flags
+// Error and Connected, and what the manual lets the program write.
 bool drivenByPlc(const SystemDevice &device);
 
 enum class ContactMode : std::uint8_t { Normal, Negated, Rising, Falling };
@@ -246,8 +249,9 @@ struct OperandSpec {
     // A device in this slot must be of one of these areas (Area::key); constants are free
     // (PL110 presets PT / PV: "da una variabile dell'area VW, SMW, AI e TR", 4.2.4, 4.2.5).
     std::vector<const char *> sourceAreas;
-    // A device, no constant: with sourceAreas, of those areas only (seed 001 RS S and D, LINK
-    // S1 and S2: only the D column is marked); without, any (Vigor CCD S, a block to read).
+    // A device, no constant: with sourceAreas, of those areas only (Vigor M/VB/VH communication
+    // manual, RS S and D, LINK S1 and S2: only the D column is marked); without, any (Vigor CCD
+    // S, a block to read).
     bool deviceOnly = false;
     // The slot takes plain words only: no digit-designated bits (K4M0) and no double words
     // (VD0) - block moves count words (Vigor BMOV, PL110 BLKMOV / MOVIND).
@@ -364,12 +368,12 @@ struct Limits {
     bool duplicateCoilIsError = true; // VPC/CPM1 error, Vigor warning
     bool outputNeedsCondition = true;
     // Word values are decimal numbers of this many digits (VPC registers, timers and counters
-    // hold 0000..9999, seed 000 III); 0: binary words of Area::wordBits.
+    // hold 0000..9999, VPC user's manual, III); 0: binary words of Area::wordBits.
     int decimalDigits = 0;
-    // A timer's current value stops here (PL110 seed 003 4.2.4: saturates at 32767).
+    // A timer's current value stops here (PL110 manual 4.2.4: saturates at 32767).
     std::int64_t timerMax = 32767;
     // Where saturating up/down counters stop (Semantics::upDownCountersSaturate; PL110 MUP /
-    // MDOWN, seed 003 4.2.5: the C word's -32768..32767; MDOWN stops at 0 besides).
+    // MDOWN, PL110 manual 4.2.5: the C word's -32768..32767; MDOWN stops at 0 besides).
     std::int64_t counterMin = -32768;
     std::int64_t counterMax = 32767;
     // The scan-time system words (SystemRole::ScanTime*) stop here: one 16-bit word.
@@ -379,25 +383,26 @@ struct Limits {
 // How a target writes constants; parseConstant / formatConstant (address.cpp) and the listing
 // parser read these rules and nothing else. A target accepts every form it sets.
 struct ConstantNotation {
-    bool prefixed = false;  // K10 decimal, H1F hexadecimal (Vigor, seed 004)
-    bool bcd = false;       // #0150 four BCD digits, #00FF a hexadecimal word (CPM1, seed 002)
+    bool prefixed = false;  // K10 decimal, H1F hexadecimal (Vigor; PLC concepts (WPLSoft family))
+    bool bcd = false;       // #0150 four BCD digits, #00FF a hexadecimal word (Omron CPM1 guide)
     bool plain = false;     // a bare number: 150, -3 (VPC, PL110)
     bool hashPlain = false; // '#' only marks a plain number (PL110: PLProg writes "MOV(Tx = #0)")
     // Timer/counter set values are BCD: a # constant or a channel holding BCD digits (CPM1
-    // TIM/CNT, seed 002); the simulator decodes the channel, the parser refuses other forms.
+    // TIM/CNT, Omron CPM1 guide); the simulator decodes the channel, the parser refuses other
+    // forms.
     bool bcdSetValues = false;
     // A constant slot that holds no number keeps the word verbatim (PL110 FM operators and
     // time bases); otherwise it is a constant error.
     bool wordsInConstantSlots = false;
     // Kn before a bit device is a word of n groups of 4 bits from it (K4Y0 = Y0..Y17 on an
     // octal area, K1M20 = M20..M23), n = 1..digitGroups in word operands (Vigor 4: its
-    // instructions are 16-bit; seed 004's WPLSoft family). 0: the target has none.
+    // instructions are 16-bit; as in PLC concepts (WPLSoft family)). 0: the target has none.
     int digitGroups = 0;
 };
 
 // A register whose value appears bit by bit on a run of bit devices, or the other way round
-// (VPC p76 -> o00..o11, i00..i11 -> p77, seed 000). Device texts are parsed with the target's
-// own address rules.
+// (VPC p76 -> o00..o11, i00..i11 -> p77, VPC user's manual, III). Device texts are parsed with
+// the target's own address rules.
 struct ParallelPort {
     QString word;     // "p76"; empty: the target has no such port
     QString firstBit; // the least significant bit: "o00"
@@ -407,18 +412,18 @@ struct ParallelPort {
 // Execution facts the simulator reads (docs/simulator.md), one field per difference a
 // manual describes.
 struct Semantics {
-    // Coils write an image that contacts see from the next scan on (VPC, seed 000).
+    // Coils write an image that contacts see from the next scan on (VPC user's manual).
     bool deferredBitWrites = false;
     // Timers / counters with a lower element number count down from the set value
     // (VPC TIM00..15 / CNT00..15; every CPM1 TIM / CNT).
     int downTimersBelow = 0;
     int downCountersBelow = 0;
     // The timer's current value is the count of time-base units kept in its word, so a write
-    // to the word changes the timing (PL110 TON / TOFF / TONR, seed 003 4.2.4: MOV(Tx = #0)
+    // to the word changes the timing (PL110 TON / TOFF / TONR, PL110 manual 4.2.4: MOV(Tx = #0)
     // resets a TONR); the time base may be named as the timer's third operand (its
     // OperandSpec::allowedValues). Otherwise the elapsed time is the timer's own state.
     bool timerCountsInWord = false;
-    // Up/down counters saturate at the limits of their word (PL110 MUP / MDOWN, seed 003
+    // Up/down counters saturate at the limits of their word (PL110 MUP / MDOWN, PL110 manual
     // 4.2.5) instead of wrapping around (CPM1 CNTR(12)).
     bool upDownCountersSaturate = false;
     ParallelPort parallelOut; // VPC p76
@@ -427,7 +432,7 @@ struct Semantics {
 
 // Devices the program reads and writes as memory while the PLC does more with them than the
 // simulator models (PL110 SM100..SM185: the display's pages and parameters, SM110 the keys;
-// seed 003 2.1.2): `check` warns (SIM101) at each use, naming the device and `what`.
+// PL110 manual 2.1.2): `check` warns (SIM101) at each use, naming the device and `what`.
 struct UnmodelledDevices {
     QString first;              // the first device of the range, as written: "SM100"
     QString last;               // the last one, inclusive: "SM109"
@@ -469,9 +474,10 @@ struct ModelVariant {
     std::vector<TerminalBlock> terminals;
 };
 
-// The PLC's own words for a class of program error (seed 000, the VPC console: "IL (JMP)
-// missing", "IL-JMP interlace", "Oper duplication"), quoted after the product's message so
-// the user recognises the console's text; nullptr where the family's manual gives none.
+// The PLC's own words for a class of program error (VPC user's manual, VI, the VPC console:
+// "IL (JMP) missing", "IL-JMP interlace", "Oper duplication"), quoted after the product's
+// message so the user recognises the console's text; nullptr where the family's manual gives
+// none.
 struct ConsoleTexts {
     const char *blockMissing = nullptr; // ILC / JPE without IL / JMP
     const char *interlace = nullptr;    // IL and JMP closed out of order

@@ -4,7 +4,7 @@
 
 #include <tuple>
 
-// Omron SYSMAC CPM1 (seed 002): 16-bit channels written CCC.BB, BCD constants with '#',
+// Omron SYSMAC CPM1 (Omron CPM1 guide): 16-bit channels written CCC.BB, BCD constants with '#',
 // instructions with Omron's function codes. The canonical spelling carries the function code
 // as SYSWIN prints it ("KEEP(11)"); the bare name is an alias.
 
@@ -50,9 +50,9 @@ Target makeCpm1Target() {
     hr.numbering = Numbering::ChannelBit;
     hr.digits = 2;
     hr.retentive = true;
-    // Link relays LR00..LR15 (seed 002 names LR among the channels a set value may come from;
-    // W353: LR 00..15, bits LR 00.00..LR 15.15, work bits when no 1:1 link is used, cleared
-    // at power-on).
+    // Link relays LR00..LR15 (the Omron CPM1 guide names LR among the channels a set value may
+    // come from; W353: LR 00..15, bits LR 00.00..LR 15.15, work bits when no 1:1 link is used,
+    // cleared at power-on).
     Area &lr = addArea(t, "LR", "LR", AreaKind::Channel, 0, 15,
                        QT_TRANSLATE_NOOP("rung::model::Target", "link relays"));
     lr.numbering = Numbering::ChannelBit;
@@ -68,8 +68,8 @@ Target makeCpm1Target() {
                         QT_TRANSLATE_NOOP("rung::model::Target", "timers"));
     tim.digits = 3;
     tim.bank = 0;
-    // Seed 002 calls the shared bank the "TC - terület TC000-TC127": TC 005 is TIM 005 or
-    // CNT 005, whichever the program makes of it (the parser decides, bankAlias).
+    // The Omron CPM1 guide (3.5) calls the shared bank the "TC - terület TC000-TC127": TC 005
+    // is TIM 005 or CNT 005, whichever the program makes of it (the parser decides, bankAlias).
     tim.prefixAliases = {QStringLiteral("TC ")};
     tim.bankAlias = true;
     Area &cnt = addArea(t, "CNT", "CNT ", AreaKind::Counter, 0, 127,
@@ -221,24 +221,24 @@ Target makeCpm1Target() {
     t.limits.programSteps = 2048;
     t.limits.stackDepth = 8;
     t.limits.contactsPerRow = 10;
-    t.limits.maxBlocksInRow = 0; // "AND LD / OR LD: no limit on count" (seed 002)
+    t.limits.maxBlocksInRow = 0; // "AND LD / OR LD: no limit on count" (Omron CPM1 guide)
     t.limits.jumpLabels = 50;
     t.limits.allowsStack = false;
     t.limits.duplicateCoilIsError = true;
 
-    // Seed 002: constants are BCD with '#' (without it a number is an address), and so are
-    // the set values of TIM / CNT; every timer and counter counts down from its set value.
+    // Omron CPM1 guide: constants are BCD with '#' (without it a number is an address), and so
+    // are the set values of TIM / CNT; every timer and counter counts down from its set value.
     t.constants.bcd = true;
     t.constants.bcdSetValues = true;
     t.semantics.downTimersBelow = 1 << 30;
     t.semantics.downCountersBelow = 1 << 30;
 
-    // CPU units by I/O points; inputs from channel 000, outputs from 010 (seed 002). The
-    // terminals: seed 002 gives the 20-point unit's 12 inputs / 8 outputs; the 10- and
-    // 30-point units (6/4, 18/12) split their points the same way, 12 inputs to a channel
+    // CPU units by I/O points; inputs from channel 000, outputs from 010 (Omron CPM1 guide). The
+    // terminals: the Omron CPM1 guide gives the 20-point unit's 12 inputs / 8 outputs; the 10-
+    // and 30-point units (6/4, 18/12) split their points the same way, 12 inputs to a channel
     // (000.00..000.11, then 001.00..) and 8 outputs (010.00..010.07, then 011.00..).
-    // The two analog setting pots write 0..200 as BCD into channels 250 and 251 (seed 002
-    // 3.4); the panel offers them as analog values.
+    // The two analog setting pots write 0..200 as BCD into channels 250 and 251 (Omron CPM1
+    // guide 3.4); the panel offers them as analog values.
     struct Io {
         const char *name;
         int inChannels, outChannels, inputs, outputs;

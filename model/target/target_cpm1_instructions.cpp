@@ -2,9 +2,9 @@
 
 #include <QCoreApplication>
 
-// The CPM1's application instructions (seed 002 names the categories: "Összehasonlító
-// utasítások, Adatmozgató parancsok, Léptető parancsok, Adatátalakító parancsok, BCD
-// aritmetikai parancsok, Bineáris aritmetikai utasítások, Logikai parancsok,
+// The CPM1's application instructions (the Omron CPM1 guide names the categories:
+// "Összehasonlító utasítások, Adatmozgató parancsok, Léptető parancsok, Adatátalakító
+// parancsok, BCD aritmetikai parancsok, Bineáris aritmetikai utasítások, Logikai parancsok,
 // Szubrutinkezelő utasítások, STEP (lépés) parancsok"; Omron's CPM1 programming manual W353
 // gives each one's function code, operands and flags). Every one with an "@" form in W353
 // gets its differentiated twin ("@MOV(21)"), which runs once when its condition turns ON.

@@ -2,13 +2,13 @@
 
 #include <QCoreApplication>
 
-// Omron CPM1 Host Link areas (W353; protocols.md): IR/SR channels through RR / WR, HR
-// through RH / WH, DM through RD / WD, timer / counter present values through RC / WC and
-// their completion flags through RG. A channel's bit is that word's bit. RR reads IR and SR to
-// channel 255 (W353's IR/SR area, 000..255); SR 253..255 hold the flags the PLC sets (253.13
-// always ON, the arithmetic flags 255.03..255.07), which RR reads and WR may not write. RD / WD
-// reach DM 0000..1023 and 6144..6655; the DM words past 6655 are the PLC's but not the
-// protocol's.
+// Omron CPM1 Host Link areas (Omron CPM1/SRM1 programming manual W353, Host Link): IR/SR
+// channels through RR / WR, HR through RH / WH, DM through RD / WD, timer / counter present values
+// through RC / WC and their completion flags through RG. A channel's bit is that word's bit. RR
+// reads IR and SR to channel 255 (W353's IR/SR area, 000..255); SR 253..255 hold the flags the PLC
+// sets (253.13 always ON, the arithmetic flags 255.03..255.07), which RR reads and WR may not
+// write. RD / WD reach DM 0000..1023 and 6144..6655; the DM words past 6655 are the PLC's but not
+// the protocol's.
 
 namespace rung::model::detail {
 

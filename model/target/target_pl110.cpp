@@ -2,7 +2,7 @@
 
 #include <QCoreApplication>
 
-// PL110 (seed 003, Italian). The vendor tool PLProg is graphical only, so the listing is the
+// PL110 (PL110 manual, Italian). The vendor tool PLProg is graphical only, so the listing is the
 // product's own design (docs/targets.md): IEC-style contact mnemonics (LD, LDN, AND, ANDN,
 // OR, ORN), ANB / ORB for blocks, and the PLProg element names for everything else (NOT, P, N,
 // TON, MUP, FM, ...). Bit devices are numbered from 1, sixteen to a word (I20 is bit 3 of
@@ -64,7 +64,7 @@ Target makePl110Target() {
     t.displayName = QStringLiteral("PL110");
     t.defaultTimerBaseMs = 100.0;
 
-    // Bit areas (seed 003 sections 2.1.3..2.1.5, 4.2.1..4.2.5 and the Modbus map).
+    // Bit areas (PL110 manual, sections 2.1.3..2.1.5, 4.2.1..4.2.5 and the Modbus map).
     Area &in = addArea(t, "I", "I", AreaKind::Bit, 1, 256,
                        QT_TRANSLATE_NOOP("rung::model::Target", "digital inputs"));
     in.writable = false;
@@ -98,7 +98,7 @@ Target makePl110Target() {
                       QT_TRANSLATE_NOOP("rung::model::Target", "variables"));
     v.numbering = Numbering::ChannelBit;
     v.retentive = true;
-    v.prefixAliases = {QStringLiteral("VW")}; // the seed writes word access as VW30, SMW4
+    v.prefixAliases = {QStringLiteral("VW")}; // the PL110 manual writes word access as VW30, SMW4
 
     // SM0..SM185: the table of 2.1.2 runs to the display parameters SM176..SM185; the
     // user-page program of 5.4 sets SMW103.0 and SMW103.1.
@@ -424,7 +424,8 @@ Target makePl110Target() {
                "...");
     addSpec(t, "END", Op::End, {}, QT_TRANSLATE_NOOP("rung::model::Target", "End of the program"));
 
-    // The seed gives no program size; 4096 elements is the product's choice (docs/targets.md).
+    // The PL110 manual gives no program size; 4096 elements is the product's choice
+    // (docs/targets.md).
     t.limits.programSteps = 4096;
     t.limits.stackDepth = 8;
     t.limits.contactsPerRow = 10;
@@ -433,8 +434,8 @@ Target makePl110Target() {
     t.limits.allowsStack = false;
     t.limits.duplicateCoilIsError = true;
     t.limits.outputNeedsCondition = false; // PLProg coils may hang on the left rail
-    t.limits.timerMax = 32767;             // seed 003 4.2.4
-    t.limits.counterMin = -32768;          // seed 003 4.2.5: the C word saturates
+    t.limits.timerMax = 32767;             // PL110 manual 4.2.4
+    t.limits.counterMin = -32768;          // PL110 manual 4.2.5: the C word saturates
     t.limits.counterMax = 32767;
 
     // The listing is the product's design: plain numbers, '#' accepted before them as PLProg
@@ -443,7 +444,7 @@ Target makePl110Target() {
     t.constants.hashPlain = true;
     t.constants.wordsInConstantSlots = true;
     t.semantics.timerCountsInWord = true;
-    t.semantics.upDownCountersSaturate = true; // MUP / MDOWN, seed 003 4.2.5
+    t.semantics.upDownCountersSaturate = true; // MUP / MDOWN, PL110 manual 4.2.5
 
     // Same I/O on both; only PL110-2A has the OLED terminal and its DISP area (1.2, 2.1.16).
     t.models = {

@@ -2,10 +2,9 @@
 
 #include <QCoreApplication>
 
-// PL110 MODBUS slave map, RTU or TCP framing (seed 003 chapter 3; protocols.md). Bit
-// addresses serve functions 01 / 02 / 05 / 0F, word addresses 03 / 04 / 06 / 10; bit areas
-// appear in both, 16 to a word. At most 30 words per request. SM0 bit 0 is RUN (SM0.0 = bit
-// 16000).
+// PL110 MODBUS slave map, RTU or TCP framing (PL110 manual 3.1 and 3.2). Bit addresses serve
+// functions 01 / 02 / 05 / 0F, word addresses 03 / 04 / 06 / 10; bit areas appear in both, 16 to a
+// word. At most 30 words per request. SM0 bit 0 is RUN (SM0.0 = bit 16000).
 // The ranges and their access are the tables of 3.2: the timers reach T48 only (bits
 // 4800..4847, words 300..302, values 12000..12047, presets 13000..13047: T49..T64, which run
 // only with SM0.13, have no address), the special-marker bits SM129.15 (18079), and the

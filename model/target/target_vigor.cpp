@@ -2,10 +2,10 @@
 
 #include <QCoreApplication>
 
-// Vigor M / VB / VH: devices from seed 001's communication address map, instructions of the
-// FX-style family described in seed 004. Where the seeds are silent (latched ranges, clock
-// relays, step counts) the values follow the FX family the Vigor PLCs copy; docs/targets.md
-// lists each such choice.
+// Vigor M / VB / VH: devices from the communication address map of the Vigor M/VB/VH
+// communication manual (B-5-3), instructions of the FX-style family described in PLC concepts
+// (WPLSoft family). Where the manuals are silent (latched ranges, clock relays, step counts)
+// the values follow the FX family the Vigor PLCs copy; docs/targets.md lists each such choice.
 
 namespace rung::model::detail {
 
@@ -93,20 +93,22 @@ Target makeVigorTarget() {
         .retentive = true;
     Area &sm = addArea(t, "SM", "M", AreaKind::Bit, 9000, 9255,
                        QT_TRANSLATE_NOOP("rung::model::Target", "special relays"));
-    // Writable as a whole: seed 001's programs drive M9100 (start dialing) and M9122 (RS send);
-    // the read-only ones are known by name in systemDevices.
+    // Writable as a whole: the programs of the Vigor M/VB/VH communication manual drive M9100
+    // (start dialing) and M9122 (RS send); the read-only ones are known by name in
+    // systemDevices.
     sm.system = true;
     addArea(t, "S", "S", AreaKind::Bit, 0, 499,
             QT_TRANSLATE_NOOP("rung::model::Target", "step relays"));
     addArea(t, "SL", "S", AreaKind::Bit, 500, 999,
             QT_TRANSLATE_NOOP("rung::model::Target", "latched step relays"))
         .retentive = true;
-    // Seed 004: "Every timer has its resolution (unit: 1ms/10ms/100ms)"; neither seed gives the
-    // ranges. The Vigor numbers its special devices as the FX family does, 1000 higher (FX
-    // M8000 RUN, M8002, D8010..D8012, M8122, M8161, M8168 are the Vigor's M9000, M9002,
-    // D9010..D9012, M9122, M9161, M9168 of seed 001), so its timers follow the FX ranges:
-    // T0..T199 100 ms, T200..T245 10 ms, T246..T249 1 ms and T250..T255 100 ms accumulating
-    // and retained. The same on M, VB and VH (a model with other ranges gets overrides).
+    // PLC concepts (WPLSoft family) 1.4: "Every timer has its resolution (unit:
+    // 1ms/10ms/100ms)"; neither manual gives the ranges. The Vigor numbers its special devices
+    // as the FX family does, 1000 higher (FX M8000 RUN, M8002, D8010..D8012, M8122, M8161,
+    // M8168 are the Vigor's M9000, M9002, D9010..D9012, M9122, M9161, M9168 of the Vigor
+    // M/VB/VH communication manual), so its timers follow the FX ranges: T0..T199 100 ms,
+    // T200..T245 10 ms, T246..T249 1 ms and T250..T255 100 ms accumulating and retained. The
+    // same on M, VB and VH (a model with other ranges gets overrides).
     addArea(t, "T", "T", AreaKind::Timer, 0, 199,
             QT_TRANSLATE_NOOP("rung::model::Target", "timers (100 ms)"));
     addArea(t, "T10", "T", AreaKind::Timer, 200, 245,
@@ -138,11 +140,12 @@ Target makeVigorTarget() {
     Area &sd = addArea(t, "SD", "D", AreaKind::Word, 9000, 9255,
                        QT_TRANSLATE_NOOP("rung::model::Target", "special registers"));
     sd.system = true;
-    // Index registers. Seed 001's operand tables (LINK, RS, MBUS: "V,Z ... VZ index") name
-    // the Vigor's V and Z, as in the FX family; seed 004's WPLSoft family calls them E0..E7
-    // and F0..F7 (E the low word like Z, F the high one like V). Both spellings are read;
-    // the Vigor's own is printed. D0Z0 = D(0 + Z0), K10V0 = 10 + V0. Not in seed 001's link
-    // map, so no protocol reaches them.
+    // Index registers. The operand tables of the Vigor M/VB/VH communication manual (LINK, RS,
+    // MBUS: "V,Z ... VZ index") name the Vigor's V and Z, as in the FX family; the WPLSoft
+    // family (PLC concepts (WPLSoft family) 1.4) calls them E0..E7 and F0..F7 (E the low word
+    // like Z, F the high one like V). Both spellings are read; the Vigor's own is printed.
+    // D0Z0 = D(0 + Z0), K10V0 = 10 + V0. Not in the link map of the Vigor M/VB/VH
+    // communication manual, so no protocol reaches them.
     Area &z = addArea(t, "Z", "Z", AreaKind::Word, 0, 7,
                       QT_TRANSLATE_NOOP("rung::model::Target", "index registers"));
     z.indexRegister = true;
@@ -165,7 +168,8 @@ Target makeVigorTarget() {
          QT_TRANSLATE_NOOP("rung::model::Target", "1 s clock")},
         {QStringLiteral("M9014"), SystemRole::Clock1min,
          QT_TRANSLATE_NOOP("rung::model::Target", "1 min clock")},
-        // Set by the program (seed 001's RS programs: "M9161 Assign 8-bits processing mode").
+        // Set by the program (the RS programs of the Vigor M/VB/VH communication manual:
+        // "M9161 Assign 8-bits processing mode").
         {QStringLiteral("M9161"), SystemRole::ByteMode,
          QT_TRANSLATE_NOOP("rung::model::Target",
                            "RS, CCD, ASCI, HEX: 8-bit mode, one byte a word (OFF: 16-bit)"),
@@ -180,7 +184,8 @@ Target makeVigorTarget() {
          QT_TRANSLATE_NOOP("rung::model::Target", "minimum scan time (0.1 ms)"), 100},
         {QStringLiteral("D9012"), SystemRole::ScanTimeMax,
          QT_TRANSLATE_NOOP("rung::model::Target", "maximum scan time (0.1 ms)"), 100},
-        // Named in seed 001's communication chapters; the simulator leaves them alone.
+        // Named in the communication chapters of the Vigor M/VB/VH communication manual; the
+        // simulator leaves them alone.
         {QStringLiteral("M9063"), SystemRole::Other,
          QT_TRANSLATE_NOOP("rung::model::Target",
                            "parallel operation or RS communication error, PLC keeps running")},
@@ -328,9 +333,10 @@ Target makeVigorTarget() {
     const OperandSpec dst{K::WordDest};
     in.push_back(apply("MOV", ApplyFunction::Mov, {src, dst}, 5,
                        QT_TRANSLATE_NOOP("rung::model::Target", "Move S to D"), "S D"));
-    // DMOV H00310035 D4 (seed 001, B-3-9 and B-4-5: two ASCII characters a call, "1" into D5
-    // and "5" into D4): MOV's 32-bit form, FNC 12 with the FX family's D prefix, 9 steps
-    // (one for the instruction, four for each 32-bit operand, as Delta's DMOV).
+    // DMOV H00310035 D4 (Vigor M/VB/VH communication manual, B-3-9 and B-4-5: two ASCII
+    // characters a call, "1" into D5 and "5" into D4): MOV's 32-bit form, FNC 12 with the FX
+    // family's D prefix, 9 steps (one for the instruction, four for each 32-bit operand, as
+    // Delta's DMOV).
     InstructionSpec dmov =
         apply("DMOV", ApplyFunction::Mov, {src, dst}, 9,
               QT_TRANSLATE_NOOP("rung::model::Target",
@@ -386,7 +392,8 @@ Target makeVigorTarget() {
                        QT_TRANSLATE_NOOP("rung::model::Target", "D = D + 1"), "D"));
     in.push_back(apply("DEC", ApplyFunction::Dec, {dst}, 3,
                        QT_TRANSLATE_NOOP("rung::model::Target", "D = D - 1"), "D"));
-    // Word logic and BCD conversion (seed 001's programs: WAND D104 HFF D104).
+    // Word logic and BCD conversion (the programs of the Vigor M/VB/VH communication manual:
+    // WAND D104 HFF D104).
     in.push_back(apply("WAND", ApplyFunction::AndWord, {src, src, dst}, 7,
                        QT_TRANSLATE_NOOP("rung::model::Target", "D = S1 AND S2, bit by bit"),
                        "S1 S2 D"));
@@ -405,12 +412,14 @@ Target makeVigorTarget() {
         "BIN", ApplyFunction::FromBcd, {src, dst}, 5,
         QT_TRANSLATE_NOOP("rung::model::Target", "D = the value of the BCD digits S"), "S D"));
     // Special modules, I/O refresh and communication: accepted, not simulated (check warns,
-    // SIM100); CCD is simulated. Neither seed gives step counts: each is the FX family's 16-bit
-    // size, one step for the instruction and two for each operand (Delta's tables, which seed 004
-    // belongs to, give FROM/TO 9, CCD 7, REF 5 the same way). Operands as seed 001's pages and
-    // example programs write them.
-    // FROM / TO m1 m2 D n (seed 001's VB-1COM pages: FROM K1 K2000 D50 K15, TO K1 K1000 D0
-    // K15): n words at least one, the block D..D+n-1 inside the registers.
+    // SIM100); CCD is simulated. Neither manual gives step counts: each is the FX family's
+    // 16-bit size, one step for the instruction and two for each operand (Delta's tables, to
+    // which PLC concepts (WPLSoft family) belongs, give FROM/TO 9, CCD 7, REF 5 the same way).
+    // Operands as the pages and example programs of the Vigor M/VB/VH communication manual
+    // write them.
+    // FROM / TO m1 m2 D n (the VB-1COM pages of the Vigor M/VB/VH communication manual: FROM K1
+    // K2000 D50 K15, TO K1 K1000 D0 K15): n words at least one, the block D..D+n-1 inside the
+    // registers.
     OperandSpec moduleWords{K::Count};
     moduleWords.lowest = 1;
     moduleWords.name = QT_TRANSLATE_NOOP("rung::model::Target", "number of words");
@@ -426,8 +435,9 @@ Target makeVigorTarget() {
         apply("TO", ApplyFunction::NotSimulated, {src, src, moduleSrc, moduleWords}, 9,
               QT_TRANSLATE_NOOP("rung::model::Target", "Write n words to special module m1, at m2"),
               "m1 m2 S n"));
-    // TOP K1 K0 H7096 K1 (seed 001 B-4-5, the VB-1COM's communication format): TO's pulse
-    // form, FNC 79, run once when its condition turns ON; not simulated either.
+    // TOP K1 K0 H7096 K1 (Vigor M/VB/VH communication manual, B-4-5, the VB-1COM's
+    // communication format): TO's pulse form, FNC 79, run once when its condition turns ON; not
+    // simulated either.
     InstructionSpec top =
         apply("TOP", ApplyFunction::NotSimulated, {src, src, moduleSrc, moduleWords}, 9,
               QT_TRANSLATE_NOOP("rung::model::Target",
@@ -435,8 +445,8 @@ Target makeVigorTarget() {
               "m1 m2 S n");
     top.functionCode = 79;
     in.push_back(top);
-    // CCD D52 D104 K11 (seed 001 B-3-9, B-4-5: the check code of a frame, one character a
-    // word with M9161 ON). FNC 84; n = 1..256 bytes (FX, Delta).
+    // CCD D52 D104 K11 (Vigor M/VB/VH communication manual, B-3-9, B-4-5: the check code of a
+    // frame, one character a word with M9161 ON). FNC 84; n = 1..256 bytes (FX, Delta).
     OperandSpec ccdSource = src;
     ccdSource.wholeWords = true;
     ccdSource.deviceOnly = true; // the bytes are read from words, not from a constant
@@ -453,9 +463,10 @@ Target makeVigorTarget() {
               "S D n");
     ccd.functionCode = 84;
     in.push_back(ccd);
-    // Seed 004 1.1 ("Scan time exception"): "A direct I/O refresh instruction REF allows the
-    // PLC to access I/O immediately": inputs or outputs, X or Y only. (The FX / Delta habit of
-    // a start that is a multiple of 8 is not in the seeds and not enforced.)
+    // PLC concepts (WPLSoft family) 1.1 ("Scan time exception"): "A direct I/O refresh
+    // instruction REF allows the PLC to access I/O immediately": inputs or outputs, X or Y
+    // only. (The FX / Delta habit of a start that is a multiple of 8 is not in the manuals and
+    // not enforced.)
     OperandSpec refreshed{K::BitSource};
     refreshed.sourceAreas = {"X", "Y"};
     refreshed.deviceOnly = true;
@@ -463,7 +474,8 @@ Target makeVigorTarget() {
     in.push_back(apply("REF", ApplyFunction::NotSimulated, {refreshed, {K::Count}}, 5,
                        QT_TRANSLATE_NOOP("rung::model::Target", "Refresh n inputs or outputs now"),
                        "D n"));
-    // HEX D59 D106 K2, ASCI D111 D12 K4 (seed 001's VB-1COM programs).
+    // HEX D59 D106 K2, ASCI D111 D12 K4 (the VB-1COM programs of the Vigor M/VB/VH
+    // communication manual).
     in.push_back(apply("HEX", ApplyFunction::NotSimulated, {src, dst, {K::Count}}, 7,
                        QT_TRANSLATE_NOOP("rung::model::Target",
                                          "Convert n ASCII characters from S to hexadecimal in D"),
@@ -473,8 +485,8 @@ Target makeVigorTarget() {
                                          "Convert n hexadecimal digits from S to ASCII in D"),
                        "S D n"));
     // RS D0 D200 D100 D201 (FNC 80): send m words from S, receive n words into D.
-    // Seed 001, FNC 80 RS, "Operand Devices": S and D in the D column only; m and n a D or a
-    // K/H constant, "m,n=0~256".
+    // Vigor M/VB/VH communication manual, FNC 80 RS, "Operand Devices": S and D in the D column
+    // only; m and n a D or a K/H constant, "m,n=0~256".
     OperandSpec rsData{K::WordSource};
     rsData.sourceAreas = {"D", "DL"};
     rsData.deviceOnly = true;
@@ -496,8 +508,8 @@ Target makeVigorTarget() {
                        "S m D n"));
     // LINK D1000 D100 (FNC 89), MBUS D1000 D100 (FNC 149): a table from S1, 4 working words
     // from S2.
-    // Seed 001, FNC 89 LINK and FNC 149 MBUS, "Operand Devices": S1 and S2 in the D column;
-    // "S2: Instruction working area, occupies 4 consecutive registers".
+    // Vigor M/VB/VH communication manual, FNC 89 LINK and FNC 149 MBUS, "Operand Devices": S1
+    // and S2 in the D column; "S2: Instruction working area, occupies 4 consecutive registers".
     OperandSpec linkTable{K::WordSource};
     linkTable.sourceAreas = {"D", "DL"};
     linkTable.deviceOnly = true;
@@ -523,7 +535,8 @@ Target makeVigorTarget() {
     in.push_back(apply("SWAP", ApplyFunction::NotSimulated, {dst}, 3,
                        QT_TRANSLATE_NOOP("rung::model::Target", "Swap the high and low bytes of D"),
                        "D"));
-    // SMOV D55 K2 K2 D110 K4 (seed 001, with M9168 choosing hexadecimal digits).
+    // SMOV D55 K2 K2 D110 K4 (Vigor M/VB/VH communication manual, with M9168 choosing
+    // hexadecimal digits).
     in.push_back(apply("SMOV", ApplyFunction::NotSimulated,
                        {src, {K::Count}, {K::Count}, dst, {K::Count}}, 11,
                        QT_TRANSLATE_NOOP("rung::model::Target",
@@ -538,18 +551,19 @@ Target makeVigorTarget() {
     t.limits.duplicateCoilIsError = false;
     t.limits.outputNeedsCondition = true;
 
-    // Seed 004: K10 decimal, H1F hexadecimal; a bare number is no constant. K1..K4 before a
-    // bit device: 4 to 16 bits as a word (K4Y0, seed 001's TO K1 K1 K1M20 K1).
+    // PLC concepts (WPLSoft family): K10 decimal, H1F hexadecimal; a bare number is no
+    // constant. K1..K4 before a bit device: 4 to 16 bits as a word (K4Y0; TO K1 K1 K1M20 K1 in
+    // the Vigor M/VB/VH communication manual).
     t.constants.prefixed = true;
     t.constants.digitGroups = 4;
 
-    // The seeds give one device map for the whole family; the models differ in program size.
+    // The manuals give one device map for the whole family; the models differ in program size.
     t.models = {
         ModelVariant{QStringLiteral("M"), {}, 8000, {}},
         ModelVariant{QStringLiteral("VB"), {}, 16000, {}},
         ModelVariant{QStringLiteral("VH"), {}, 16000, {}},
     };
-    // The seeds give no model's I/O count: the panel's strip is 16 inputs X0..X17 and 16
+    // The manuals give no model's I/O count: the panel's strip is 16 inputs X0..X17 and 16
     // outputs Y0..Y17 in eights (octal), and it adds the further X / Y the program uses.
     for (ModelVariant &v : t.models) {
         addTerminals(v, "X", 0, 16);

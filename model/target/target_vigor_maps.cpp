@@ -2,8 +2,8 @@
 
 #include <QCoreApplication>
 
-// Vigor M / VB / VH address maps (seed 001): the Computer Link byte map (B-5) and the CP2
-// MODBUS map (B-3-6), both from protocols.md. Area keys are those of target_vigor.cpp.
+// Vigor M / VB / VH address maps (Vigor M/VB/VH communication manual): the Computer Link byte
+// map (B-5-3) and the CP2 MODBUS map (B-3-6). Area keys are those of target_vigor.cpp.
 
 namespace rung::model::detail {
 

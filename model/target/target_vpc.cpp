@@ -2,7 +2,7 @@
 
 #include <QCoreApplication>
 
-// VPC (seed 000): two-digit decimal operands, compares and transfers written infix
+// VPC (VPC user's manual): two-digit decimal operands, compares and transfers written infix
 // ("LD p01<p00", "OUT p21,p12"), timers and counters with the element number fused into the
 // mnemonic ("TIM00"). The infix forms share their mnemonic with the plain instruction; the
 // plain one comes first so a lookup by spelling finds it.
@@ -74,8 +74,9 @@ Target makeVpcTarget() {
                        QT_TRANSLATE_NOOP("rung::model::Target", "retentive auxiliary relays"));
     rl.digits = 2;
     rl.retentive = true;
-    // The seed lists r88..r95 as system registers, yet lets OUT/LR drive r00..r89: the program
-    // may drop r88 (RUN) to stop and raise r89 (ERR) to signal an alarm. r90..r95 are read-only.
+    // The VPC user's manual (III) lists r88..r95 as system registers, yet lets OUT/LR drive
+    // r00..r89: the program may drop r88 (RUN) to stop and raise r89 (ERR) to signal an alarm.
+    // r90..r95 are read-only.
     Area &rsw = addArea(t, "rsw", "r", AreaKind::Bit, 88, 89,
                         QT_TRANSLATE_NOOP("rung::model::Target", "system relays"));
     rsw.digits = 2;
@@ -202,7 +203,7 @@ Target makeVpcTarget() {
     t.limits.duplicateCoilIsError = true;
     t.limits.decimalDigits = 4;
 
-    // Seed 000: operands are plain decimal numbers; coils take effect from the next scan;
+    // VPC user's manual: operands are plain decimal numbers; coils take effect from the next scan;
     // TIM00..15 / CNT00..15 count down, TIM16..31 / CNT16..31 up; p76 appears binary on
     // o00..o11 (value mod 4096, o11 = MSB) and i00..i11 read as a number into p77.
     t.constants.plain = true;
@@ -212,7 +213,7 @@ Target makeVpcTarget() {
     t.semantics.parallelOut = {QStringLiteral("p76"), QStringLiteral("o00"), 12};
     t.semantics.parallelIn = {QStringLiteral("p77"), QStringLiteral("i00"), 12};
 
-    // Discrete in / out / analog in / analog out per model (seed 000).
+    // Discrete in / out / analog in / analog out per model (VPC user's manual).
     struct Io {
         const char *name;
         int in, out, ain, aout;
@@ -229,15 +230,15 @@ Target makeVpcTarget() {
                        {QStringLiteral("a"), 0, m.ain - 1},
                        {QStringLiteral("d"), 0, m.aout - 1}};
         // The terminal strip: inputs and outputs in eights; the analog values are register
-        // values 0000..9999 (seed 000 III: decimal registers; the seed gives no converter
-        // resolution).
+        // values 0000..9999 (VPC user's manual, III: decimal registers; the manual gives no
+        // converter resolution).
         addTerminals(v, "i", 0, m.in);
         addTerminals(v, "o", 0, m.out);
         addWordTerminals(v, "a", 0, m.ain, 0, 9999);
         addWordTerminals(v, "d", 0, m.aout, 0, 9999);
         t.models.push_back(v);
     }
-    // The console's error texts (seed 000 "Program errors"), quoted in the checks' messages.
+    // The console's error texts (VPC user's manual, VI), quoted in the checks' messages.
     t.console.blockMissing = "IL (JMP) missing";
     t.console.interlace = "IL-JMP interlace";
     t.console.duplicate = "Oper duplication";

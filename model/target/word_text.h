@@ -1,8 +1,8 @@
 #pragma once
 
 // How a word's value is shown and typed where the user watches the PLC's memory. A target
-// whose constants are BCD digits (CPM1 `#0150`, seed 002; its timers, counters and most
-// channels hold BCD, W353) shows a word as its four hexadecimal digits, `#0012`, as its
+// whose constants are BCD digits (CPM1 `#0150`, Omron CPM1 guide; its timers, counters and
+// most channels hold BCD, W353) shows a word as its four hexadecimal digits, `#0012`, as its
 // listing writes constants and its programming tools monitor channels; the others show the
 // number.
 

@@ -36,8 +36,8 @@ using rung::bench::mixedProgram;
 
 namespace {
 
-// Traffic light (seed 004, 1.9 example 16): red 35 s, yellow 5 s, green 25 s, green blinking
-// 5 s; the same program as tests/data/sim/vigor_traffic_light.il.
+// Traffic light (PLC concepts (WPLSoft family) 1.9 example 16): red 35 s, yellow 5 s, green
+// 25 s, green blinking 5 s; the same program as tests/data/sim/vigor_traffic_light.il.
 const char *kTrafficLight = "LD SM9002\nSET S0\n"
                             "STL S0\nOUT Y0\nTMR T0 K350\nLD T0\nSET S1\n"
                             "STL S1\nOUT Y1\nTMR T1 K50\nLD T1\nSET S2\n"

@@ -718,7 +718,7 @@ TEST(CliCheck, MessagesSpeakTheFamilysLanguage) {
     EXPECT_TRUE(r.out.contains(QStringLiteral("[DC001]")));
 }
 
-// Issue 14, seed 003 5.4 and 2.1.2: PLProg draws the initialisation code ([Init]) and the
+// Issue 14, PL110 manual 5.4 and 2.1.2: PLProg draws the initialisation code ([Init]) and the
 // two timed-interrupt programs (SM16 / SM17) beside the main ladder. A listing is one
 // program: check, convert (to a ladder or a project) and simulate all refuse a section line
 // with the same words, at its place, and write nothing; the message says where initialisation

@@ -67,7 +67,8 @@ TEST(CliRecord, ARealMasterReadsAVirtualPlcThroughTheRecorderAndTheCaptureHoldsB
     EXPECT_TRUE(lines[0].startsWith(QStringLiteral("# rungstudio-cli record: PC ") + pcPath))
         << lines[0].toStdString();
     EXPECT_TRUE(lines[0].contains(plc.path)) << lines[0].toStdString();
-    // The master's 51h read of Y0's byte (0040h, seed 001 B-5), STX first, and the PLC's ACK.
+    // The master's 51h read of Y0's byte (0040h, Vigor M/VB/VH communication manual, B-5-3),
+    // STX first, and the PLC's ACK.
     QString toPlc, toPc;
     for (const QString &line : lines.mid(1)) {
         ASSERT_TRUE(line.contains(QLatin1String(" PC>PLC ")) ||

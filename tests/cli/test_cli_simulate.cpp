@@ -40,7 +40,7 @@ SimRun simulate(const QString &listing, QStringList options) {
 } // namespace
 
 TEST(CliSimulate, AProgramThatFailsTheChecksDoesNotStartAndSaysWhy) {
-    // CPM1: a coil may appear only once (seed 002), so the PLC would refuse this program.
+    // CPM1: a coil may appear only once (Omron CPM1 guide), so the PLC would refuse this program.
     const SimRun r =
         simulate(QStringLiteral("LD 000.00\nOUT 010.00\nLD 000.01\nOUT 010.00\nEND\n"),
                  {QStringLiteral("--target"), QStringLiteral("cpm1"), QStringLiteral("--scans"),

@@ -1,5 +1,6 @@
 // `rungstudio-cli terminal`: raw bytes to a PLC and what it answers, against the virtual PLC
-// on a real pseudo-terminal, with protocols.md's Vigor Computer Link vectors verbatim.
+// on a real pseudo-terminal, with the Computer Link examples of the Vigor M/VB/VH
+// communication manual, B-5-3, verbatim.
 
 #include "app/cli/cli_terminal.h"
 #include "tests/cli/virtual_plc_fixture.h"
@@ -47,7 +48,8 @@ struct TerminalOnVirtualPlc : ::testing::Test {
 
 TEST_F(TerminalOnVirtualPlc, HexLinesAreSentAndTheAnswersPrintedAsTheyCame) {
     ASSERT_TRUE(plc.ready());
-    // protocols.md vector 5 (M10 ON) and then vector 1's read of M8..M23.
+    // The manual's 70H example (M10 ON) and then its first 51H example, the read of M8..M23
+    // (Vigor M/VB/VH communication manual, B-5-3).
     const TerminalRun r =
         terminal(args(), QStringLiteral("02 30 30 37 30 30 34 30 41 03 39 46\n"
                                         "02 30 30 35 31 30 30 38 31 30 32 03 46 34\n"));

@@ -1,7 +1,8 @@
 // Our master (comms::Driver, devices by name) against our slave (the virtual PLC running a
 // program) for every protocol, over a real pseudo-terminal and TCP loopback: read, write,
 // force and RUN / STOP where the protocol has them. Each side was also tested against real
-// peers (mbpoll, libmodbus, pymodbus) and protocols.md's frames; this is the two meeting.
+// peers (mbpoll, libmodbus, pymodbus) and the manuals' example frames; this is the two
+// meeting.
 
 #include "comms/driver/driver.h"
 #include "comms/transport/pty_transport.h"
@@ -98,7 +99,8 @@ TEST(DriverMeetsVirtualPlc, Pl110ModbusRtuOnAPtyWithRunAndStop) {
     EXPECT_TRUE(m.becomes("Q2", 1));
     ASSERT_TRUE(m.run(DeviceCommand::Kind::WriteWord, "V0", 321).ok());
     EXPECT_TRUE(m.becomes("V1", 321));
-    // SM0 bit 0 is RUN (protocols.md): STOP keeps the image, the program stops following.
+    // SM0 bit 0 is RUN (PL110 manual 2.1.2, 3.2): STOP keeps the image, the program stops
+    // following.
     ASSERT_TRUE(m.driver->canSetMode());
     ASSERT_TRUE(m.driver->setMode(PlcMode::Stop).ok());
     PlcMode mode = PlcMode::Unknown;
@@ -140,7 +142,8 @@ TEST(DriverMeetsVirtualPlc, Cpm1HostLinkOnAPtyWritesThroughMonitorAndForces) {
     ASSERT_TRUE(m.driver->readMode(&mode).ok());
     EXPECT_EQ(mode, PlcMode::Monitor);
     EXPECT_TRUE(m.becomes("DM 0001", m.value("DM 0000")));
-    // KS: an input forced ON against the wiring (the CIO area, protocols.md); HR cannot be.
+    // KS: an input forced ON against the wiring (the CIO area; Omron CPM1/SRM1 programming
+    // manual W353, Host Link); HR cannot be.
     const DriverError forced = m.run(DeviceCommand::Kind::Force, "000.01", 1);
     ASSERT_TRUE(forced.ok()) << forced.message.toStdString();
     EXPECT_TRUE(m.becomes("010.01", 1));

@@ -1,6 +1,7 @@
 #pragma once
 
-// Test vectors as protocols.md writes them: "02 30 30 35 31" -> bytes.
+// Test vectors as hex bytes, the way the manuals' example frames are written out here:
+// "02 30 30 35 31" -> bytes.
 
 #include <QByteArray>
 #include <QString>

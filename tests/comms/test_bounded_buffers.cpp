@@ -1,7 +1,7 @@
 // A garbled or hostile stream never grows a decoder's memory without bound (issue 12 review):
 // each decoder is fed a long stream built to defeat its framing, buffered() is checked after
-// every feed, the decoder says what it dropped and why, and a good frame from protocols.md
-// is still read after the garbage.
+// every feed, the decoder says what it dropped and why, and a good frame from the manuals'
+// examples is still read after the garbage.
 #include "comms/protocol/host_link.h"
 #include "comms/protocol/modbus.h"
 #include "comms/protocol/vigor_link.h"
@@ -214,8 +214,8 @@ TEST(BoundedBuffers, VigorSlaveDropsAFrameThatNeverReachesEtx) {
         ASSERT_LE(s.buffered(), vigor::MaxRequestFrame);
     }
     EXPECT_TRUE(s.discarded().message.contains(QLatin1String("without ETX")));
-    // A new STX starts over (it cannot stand inside a frame). protocols.md, Vigor test vector 1:
-    // read M8..M23.
+    // A new STX starts over (it cannot stand inside a frame). The first 51H example of the
+    // Vigor M/VB/VH communication manual, B-5-3: read M8..M23.
     ASSERT_EQ(s.feed(bytes("02 30 30 35 31 30 30 38 31 30 32 03 46 34")), FrameStatus::Complete);
     EXPECT_EQ(s.errorCode(), 0);
     EXPECT_EQ(s.request().address, 0x81);

@@ -1,5 +1,7 @@
-// The drivers against protocols.md's frames: each device read or write puts the spec's exact
-// bytes on the wire and reads the spec's reply into the right devices.
+// The drivers against the manuals' example frames (Vigor M/VB/VH communication manual, B-5-3;
+// Omron CPM1/SRM1 programming manual W353, Host Link; the Modbus application protocol
+// specification): each device read or write puts the example's exact bytes on the wire and
+// reads the example's reply into the right devices.
 
 #include "comms/protocol/host_link.h"
 #include "comms/protocol/modbus.h"

@@ -20,7 +20,8 @@ QByteArray reply(int unit, const char *header, int endCode, const QByteArray &te
 }
 
 TEST(HostLink, EncodesEveryCommandOfTheSpecByteForByte) {
-    // protocols.md, "Omron CPM1 Host Link", test vectors (unit 00), each ending in CR.
+    // Omron CPM1/SRM1 programming manual W353 (Host Link): the command examples (unit 00),
+    // each ending in CR.
     EXPECT_EQ(wire(readCommand(0, ProtocolSpace::HostLinkDm, 0, 1)),
               QByteArray("@00RD0000000157*\r"));
     EXPECT_EQ(wire(writeCommand(0, ProtocolSpace::HostLinkDm, 100, {0x1234})),

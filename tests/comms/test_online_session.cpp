@@ -142,7 +142,7 @@ TEST(OnlineSession, PollsOnlyTheWatchedDevicesIntoTheSimulatorsSnapshotShape) {
     plc.setRegister(2020, 55);
     h.watch({"V10", "V20"});
     EXPECT_TRUE(eventually([&] { return h.value("V20") == 55; }));
-    // A PL110 timer's preset is in the PT area (seed 003 2.1.9): read with the timer, known.
+    // A PL110 timer's preset is in the PT area (PL110 manual 2.1.9): read with the timer, known.
     h.watch({"T1"});
     EXPECT_TRUE(eventually([&] {
         const auto s = h.snapshot();

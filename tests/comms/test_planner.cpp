@@ -190,7 +190,8 @@ TEST(Planner, FindsTheCheapestCutOfRandomSetsForEveryProtocol) {
 
 TEST(Planner, ADeviceOutsideTheMapIsNamedNotRead) {
     FakeDriver f(Family::Cpm1, ProtocolKind::HostLink, 0);
-    // DM 6656..6667 exist on the PLC but lie past the Host Link map's reach (protocols.md).
+    // DM 6656..6667 exist on the PLC but lie past the Host Link map's reach (RD / WD reach
+    // DM 0000..1023 and 6144..6655; Omron CPM1/SRM1 programming manual W353, Host Link).
     const auto plan = f.driver->plan(f.devices({"DM 6660", "DM 0001"}));
     ASSERT_EQ(plan.unmapped.size(), 1u);
     EXPECT_TRUE(plan.unmapped.front().second.contains(QLatin1String("DM 6660")))

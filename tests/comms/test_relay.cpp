@@ -35,7 +35,7 @@ QByteArray recorded(const Relay &relay, Direction direction) {
     return out;
 }
 
-// protocols.md, Vigor Computer Link test vector 5: M10 ON and the PLC's ACK.
+// The Vigor M/VB/VH communication manual's 70H example (B-5-3): M10 ON and the PLC's ACK.
 const QByteArray kRequest = test::bytes("02 30 30 37 30 30 34 30 41 03 39 46");
 const QByteArray kAck = test::bytes("06 30 30 37 30 30 30 03 32 41");
 

@@ -1,5 +1,6 @@
-// The Host Link C-mode slave (W353; protocols.md): the command vectors of protocols.md from
-// the PLC's side, modes, forcing, end codes and answers in parts.
+// The Host Link C-mode slave (Omron CPM1/SRM1 programming manual W353, Host Link): the
+// manual's command examples from the PLC's side, modes, forcing, end codes and answers in
+// parts.
 
 #include "comms/slave/host_link_responder.h"
 #include "tests/comms/slave_fixture.h"
@@ -150,7 +151,7 @@ TEST(HostLinkSlave, EndCodesForBrokenAndOutOfReachCommands) {
     Frame broken = readCommand(0, model::ProtocolSpace::HostLinkDm, 0, 1);
     broken.text.chop(1);
     EXPECT_EQ(f.endCodeOf(broken), FormatError);
-    // 04: DM 1024 is past the CPM1's DM (protocols.md: 0000..1023, 6144..6655).
+    // 04: DM 1024 is past the CPM1's DM (0000..1023, 6144..6655; W353, Host Link RD).
     EXPECT_EQ(f.endCodeOf(readCommand(0, model::ProtocolSpace::HostLinkDm, 1020, 5)), AddressOver);
     EXPECT_EQ(f.endCodeOf(readCommand(0, model::ProtocolSpace::HostLinkIr, 20, 1)), AddressOver);
     // 16: a Host Link command the virtual PLC does not serve; IC: not Host Link at all.

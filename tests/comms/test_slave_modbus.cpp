@@ -1,5 +1,6 @@
-// The Modbus slave over the Vigor CP2 map (seed 001 B-3-6) and the PL110 map (seed 003
-// chapter 3): what each function reads and writes, the exceptions, broadcast and units.
+// The Modbus slave over the Vigor CP2 map (Vigor M/VB/VH communication manual, B-3-6) and the
+// PL110 map (PL110 manual, chapter 3): what each function reads and writes, the exceptions,
+// broadcast and units.
 
 #include "comms/slave/modbus_responder.h"
 #include "tests/comms/slave_fixture.h"
@@ -127,7 +128,7 @@ TEST(ModbusSlave, AnUnknownFunctionEndsAtTheSilenceAndGetsException01) {
 TEST(ModbusSlave, Pl110ThirtyWordsAndItsOwnIllegalValueCode) {
     ModbusSlave f(model::Family::Pl110);
     EXPECT_EQ(f.registers(2000, 30).size(), 30u);
-    // Seed 003 3.1: at most 30 words, and ILLEGAL DATA VALUE is 04 there.
+    // PL110 manual 3.1: at most 30 words, and ILLEGAL DATA VALUE is 04 there.
     EXPECT_EQ(f.exceptionOf({ReadHoldingRegisters, 2000, 31, {}, {}}), 0x04);
     EXPECT_EQ(
         f.exceptionOf({WriteMultipleRegisters, 2000, 31, std::vector<std::uint16_t>(31, 1), {}}),

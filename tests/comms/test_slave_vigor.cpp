@@ -1,5 +1,5 @@
-// The Vigor Computer Link slave (seed 001 B-5): protocols.md's vectors from the PLC's side,
-// byte for byte, and the error codes it answers with.
+// The Vigor Computer Link slave (Vigor M/VB/VH communication manual, B-5): the manual's
+// examples (B-5-3) from the PLC's side, byte for byte, and the error codes it answers with.
 
 #include "comms/slave/memory_image.h"
 #include "comms/slave/vigor_responder.h"
@@ -135,7 +135,7 @@ TEST(VigorSlave, ErrorCodesOfB5) {
 
 TEST(VigorSlave, BitCommandsActOnBitDevicesOnly) {
     VigorSlave f;
-    // S20: byte 0302h, bit 4 -> 1814h (protocols.md).
+    // S20: byte 0302h, bit 4 -> 1814h (Vigor M/VB/VH communication manual, B-5-3).
     EXPECT_EQ(errorOf(f, vigor::encodeRequest({0, vigor::Command::BitOn, 0x1814, 0, {}})), 0);
     EXPECT_TRUE(f.plc.bit("S20"));
     // T0's contact (0380h) is no X, Y, M or S: 28h, and nothing changes.

@@ -27,7 +27,8 @@ struct Vector {
     QByteArray replyData;
 };
 
-// protocols.md, "Vigor M / VB / VH Computer Link", test vectors 1..6, byte for byte.
+// Vigor M/VB/VH communication manual, B-5-3: the six examples of commands 51h, 61h, 70h and
+// 71h, byte for byte.
 std::vector<Vector> vectors() {
     return {
         {"read M8..M23",
@@ -92,7 +93,8 @@ TEST(VigorLink, SlaveParsesEveryRequestAndEncodesEveryReplyOfTheSpec) {
 }
 
 TEST(VigorLink, BitAddressIsByteShiftedThreeOrBit) {
-    // protocols.md: S20 -> byte 0302h bit 4 -> 1814h; M10 -> 0081h bit 2 -> 040Ah.
+    // Vigor M/VB/VH communication manual, B-5-3: S20 -> byte 0302h bit 4 -> 1814h; M10 ->
+    // 0081h bit 2 -> 040Ah.
     EXPECT_EQ(bitAddress(0x0302, 4), 0x1814);
     EXPECT_EQ(bitAddress(0x0081, 2), 0x040A);
 }

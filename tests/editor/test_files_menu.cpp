@@ -93,7 +93,8 @@ TEST(FilesMenu, EveryExampleNamedInWordsHasATranslatableTitle) {
 }
 
 // The examples speak to the user about the program, not about where they came from: no
-// "seed 004 1.9" or docs file names in their comments.
+// citation of a manual ("PLC concepts (WPLSoft family) 1.9") or docs file names in their
+// comments.
 TEST(FilesMenu, ExampleCommentsSpeakTheUsersWords) {
     ASSERT_FALSE(app::examplesFolder().isEmpty());
     QDirIterator it(app::examplesFolder(), {QStringLiteral("*.rung")}, QDir::Files,

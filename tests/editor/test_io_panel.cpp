@@ -51,7 +51,7 @@ TEST(IoPanel, ShowsTheModelsTerminalsAsTheStripGroupsThem) {
     editor::Document cpm1;
     cpm1.reset(model::Target::get(model::Family::Cpm1), QStringLiteral("CPM1-20CDR"));
     editor::IoPanel cpm1Panel(&cpm1);
-    // Seed 002: 12 inputs on channel 000, 8 outputs on 010, the pots on 250 and 251.
+    // Omron CPM1 guide: 12 inputs on channel 000, 8 outputs on 010, the pots on 250 and 251.
     EXPECT_NE(cpm1Panel.input(QStringLiteral("000.11")), nullptr);
     EXPECT_EQ(cpm1Panel.input(QStringLiteral("000.12")), nullptr);
     EXPECT_NE(cpm1Panel.lamp(QStringLiteral("010.07")), nullptr);
@@ -170,7 +170,8 @@ TEST(IoPanel, ASwitchTogglesFromTheStateTheImageShows) {
 }
 
 TEST(IoPanel, TheLampFollowsTheOutputOfARealSimulation) {
-    // Seed 004's latch: START X1 sets Y1, STOP X2 resets it; X1 as a push button.
+    // The latch of PLC concepts (WPLSoft family) 1.9: START X1 sets Y1, STOP X2 resets it; X1
+    // as a push button.
     test::MonitorFixture f;
     f.start(model::Target::get(model::Family::Vigor), QStringLiteral("VB"),
             "LD X1\nLD Y1\nANI X2\nORB\nOUT Y1\nEND\n");
@@ -199,7 +200,7 @@ TEST(IoPanel, TheLampFollowsTheOutputOfARealSimulation) {
 }
 
 TEST(IoPanel, AnalogValuesAreWrittenAsTheTableSays) {
-    // CPM1 pots: 0..200 into channels 250/251 as BCD (seed 002 3.4).
+    // CPM1 pots: 0..200 into channels 250/251 as BCD (Omron CPM1 guide 3.4).
     const model::Target &t = model::Target::get(model::Family::Cpm1);
     editor::Document document;
     document.reset(t, QStringLiteral("CPM1-20CDR"));
@@ -240,7 +241,8 @@ TEST(IoPanel, AnalogValuesAreWrittenAsTheTableSays) {
 }
 
 TEST(IoPanel, AnAnalogInputDrivesTheProgramOnARealSimulation) {
-    // VPC a00 as a timer's set value source, seed 000: "OUT t00,a00"; the slider writes a00.
+    // VPC a00 as a timer's set value source, VPC user's manual, VII: "OUT t00,a00"; the slider
+    // writes a00.
     test::MonitorFixture f;
     f.start(model::Target::get(model::Family::Vpc), QStringLiteral("VPC108A4"),
             "LD r88\nOUT p00,a00\nEND\n");

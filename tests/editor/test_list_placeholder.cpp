@@ -16,7 +16,8 @@ using namespace rung;
 
 namespace {
 
-// X2 joins the two branches between contacts: no listing can express it (seed 004 1.8).
+// X2 joins the two branches between contacts: no listing can express it (PLC concepts (WPLSoft
+// family) 1.8).
 const char *kBridge = "LADDER vigor WIDTH 8\n"
                       "RUNG 1 ROWS 3 COLUMNS 3\n"
                       "|-[ X0 ]-+----------[ X1 ]-+(OUT Y0)\n"

@@ -1,7 +1,8 @@
-// The timing chart on a real simulation: its CSV for seed 004's start/stop latch (the example
-// project) equals the known trace, a trigger stops the simulation at the scan where its
-// condition became true, cursors snap to scans and say the time between them, devices come in
-// typed, as ranges and dropped, and the PNG and SVG exports are files that read back.
+// The timing chart on a real simulation: its CSV for the start/stop latch of PLC concepts
+// (WPLSoft family) 1.9 (the example project) equals the known trace, a trigger stops the simulation
+// at the scan where its condition became true, cursors snap to scans and say the time between them,
+// devices come in typed, as ranges and dropped, and the PNG and SVG exports are files that read
+// back.
 
 #include "monitor_fixture.h"
 
@@ -35,10 +36,11 @@ QString readAll(const QString &path) {
 } // namespace
 
 TEST(TimingChart, TheCsvOfTheStartFirstLatchEqualsTheKnownTrace) {
-    // The example project (seed 004 1.9 example 2), driven with the stimulus of the golden
-    // trace tests/data/sim/vigor_start_first_latch.il: --set X1=1@1 --set X1=0@2 --set X2=1@4
-    // --set X1=1@5 --set X2=0@6 --set X1=0@7 (once n scans have run), 8 scans. One CSV, one
-    // meaning: the chart's rows are the trace's, less those where nothing changed.
+    // The example project (PLC concepts (WPLSoft family) 1.9 example 2), driven with the
+    // stimulus of the golden trace tests/data/sim/vigor_start_first_latch.il: --set X1=1@1
+    // --set X1=0@2 --set X2=1@4 --set X1=1@5 --set X2=0@6 --set X1=0@7 (once n scans have run),
+    // 8 scans. One CSV, one meaning: the chart's rows are the trace's, less those where nothing
+    // changed.
     test::MonitorFixture f;
     model::ProjectError error;
     const auto project = model::loadProject(

@@ -1,6 +1,7 @@
 #!/usr/bin/env python3
-"""Writes the comms fuzzers' seed corpus (tests/fuzz/corpus/<fuzzer>/) from the frames of
-protocols.md and of the Modbus Application Protocol V1.1b3's examples, each behind the bytes
+"""Writes the comms fuzzers' seed corpus (tests/fuzz/corpus/<fuzzer>/) from the manuals'
+example frames (Vigor M/VB/VH communication manual, B-5-3; Omron CPM1/SRM1 programming manual
+W353, Host Link) and the Modbus Application Protocol V1.1b3's examples, each behind the bytes
 that pick the request and split the stream into reads (tests/fuzz/fuzz_comms_common.h: a
 chunk is one size byte, 1 + size % 16, then that many bytes). ctest replays the corpus in a
 normal build; scripts/fuzz.sh starts libFuzzer from it. Run it again after changing the
@@ -32,7 +33,7 @@ def write(fuzzer, name, data):
     (d / name).write_bytes(data)
 
 
-# ----- Vigor Computer Link (protocols.md test vectors 1-6) -----
+# ----- Vigor Computer Link (Vigor M/VB/VH communication manual, B-5-3: its six examples) -----
 # prefix: station, command (0 51h, 1 61h, 2 70h, 3 71h), address(2), length byte (1 + b % 128)
 VIGOR = [
     ("read_m8", 0, 0x0081, 2, "02 30 30 35 31 30 30 38 31 30 32 03 46 34",
@@ -110,7 +111,7 @@ write("fuzz_modbus_reply", "serial_line_example",
       bytes([0, 2]) + word(0x6B) + word(2) + bytes([0x11]) + chunks(hx("11 03 00 6B 00 03 76 87")))
 
 
-# ----- Omron Host Link C-mode (protocols.md test vectors) -----
+# ----- Omron Host Link C-mode (Omron CPM1/SRM1 programming manual W353: command examples) -----
 def fcs(text):
     value = 0
     for c in text.encode():
@@ -151,7 +152,7 @@ while len(content) - pos > room:
 parts.append((content[pos:] + fcs(content[pos:]) + "*\r").encode())
 write("fuzz_hostlink_reply", "rd_100_words_split", bytes([5, 0, 2]) + word(0) + word(100) +
       chunks(b"".join(parts)))
-# The slave side: every command of protocols.md, one after another.
+# The slave side: every command example above, one after another.
 commands = [b"@00RD0000000157*\r", b"@00WD0100123456*\r", b"@00RR0000000242*\r",
             b"@00WR001000FF44*\r", b"@00RC0000000253*\r", b"@00MS5E*\r", b"@00SC0050*\r",
             b"@00SC0252*\r", b"@00SC0353*\r", b"@00MM40*\r", b"@00KSCIO 0010003C*\r"]

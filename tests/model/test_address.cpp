@@ -56,7 +56,7 @@ struct Device {
     int bit;
 };
 
-// First and last element of every area, spelled as the manuals (targets.md) write them.
+// First and last element of every area, spelled as the manuals (docs/targets.md) write them.
 const Device kDevices[] = {
     {Family::Vpc, "i00", "i", 0, -1},
     {Family::Vpc, "i39", "i", 39, -1},
@@ -225,12 +225,12 @@ TEST(Address, Pl110BitsStartAtOne) {
     EXPECT_FALSE(failure(pl110(), QStringLiteral("T65")).message.isEmpty());
     EXPECT_FALSE(failure(pl110(), QStringLiteral("C17")).message.isEmpty());
     EXPECT_FALSE(failure(pl110(), QStringLiteral("V350")).message.isEmpty());
-    // I20 is bit 3 of word 2 (seed 003, 2.1.3): element 20 counted from I1.
+    // I20 is bit 3 of word 2 (PL110 manual 2.1.3): element 20 counted from I1.
     EXPECT_EQ(parsed(pl110(), QStringLiteral("I20")).index, 20);
 }
 
 TEST(Address, Pl110WordPrefixesOfTheManualAreAliases) {
-    // Seed 003 writes VW30 and SMW4 for word access; they print as V30 and SM4.
+    // The PL110 manual writes VW30 and SMW4 for word access; they print as V30 and SM4.
     const Address vw = parsed(pl110(), QStringLiteral("VW30"));
     EXPECT_EQ(vw, parsed(pl110(), QStringLiteral("V30")));
     EXPECT_EQ(formatAddress(pl110(), vw), QStringLiteral("V30"));
@@ -310,7 +310,7 @@ TEST(Address, EveryVpcModelAcceptsItsLastInputAndOutputAndRejectsTheNext) {
         const char *name;
         int in, out, ain, aout;
     };
-    // targets.md, from seed 000.
+    // The models' I/O counts: VPC user's manual, II (docs/targets.md).
     const Io models[] = {
         {"VPC106", 10, 6, 0, 0},      {"VPC108A4", 10, 8, 4, 0}, {"VPC1410", 14, 10, 0, 0},
         {"VPC1812", 18, 12, 0, 0},    {"VPC2416", 24, 16, 0, 0}, {"VPC3224L", 32, 24, 0, 0},

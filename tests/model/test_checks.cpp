@@ -62,7 +62,7 @@ QString repeat(const char *lines, int times) {
 }
 
 const Case kCases[] = {
-    // Fuzzy syntax (ladder-rules.md, seed 004 1.7 and 1.8).
+    // Fuzzy syntax (PLC concepts (WPLSoft family) 1.7 and 1.8).
     {"FZ001", Family::Vigor, nullptr, "LD X0;OR X1;LD X2;OR X3;LD X4;OR X5;ANB;ANB;OUT Y0;END",
      "LD X0;OR X1;LD X2;OR X3;ANB;LD X4;OR X5;ANB;OUT Y0;END"},
     {"FZ002", Family::Vigor, nullptr, "LD X0;LD X1;LD X2;LD X3;ORB;ORB;ORB;OUT Y0;END",
@@ -229,7 +229,8 @@ TEST(Checks, OperandRangeNamesTheModel) {
 namespace {
 
 // A bridge: X2 joins the two branches between contacts, so X3 -> X2 -> X1 would carry current
-// right to left through X2's branch point (seed 004 1.8). No listing can express it.
+// right to left through X2's branch point (PLC concepts (WPLSoft family) 1.8). No listing can
+// express it.
 const char *kBridge = "LADDER vigor WIDTH 8\n"
                       "RUNG 1 ROWS 3 COLUMNS 3\n"
                       "|-[ X0 ]-+----------[ X1 ]-+(OUT Y0)\n"
@@ -576,11 +577,12 @@ TEST(Checks, TheDevicesThePlcDrivesCannotBeWritten) {
         EXPECT_TRUE(d->message.startsWith(QString::fromLatin1(c.device))) << c.program;
         EXPECT_EQ(d->location.line, 2);
     }
-    // Read, or written where the program may (seed 001 drives M9100 to start dialing).
+    // Read, or written where the program may (the programs of the Vigor M/VB/VH communication
+    // manual drive M9100 to start dialing).
     for (const char *program :
          {"LD M9000;OUT Y0;END", "LD X0;OUT M9100;END", "LD M9013;MOV D9010 D0;END"})
         EXPECT_EQ(find(check(Family::Vigor, nullptr, text(program)), "OP002"), nullptr) << program;
-    // VPC: the program may drop r88 (RUN) to stop and raise r89 (ERR), as targets.md says.
+    // VPC: the program may drop r88 (RUN) to stop and raise r89 (ERR), as docs/targets.md says.
     for (const char *program : {"LD i00;OUT r88;END", "LD i00;OUT r89;END"})
         EXPECT_EQ(find(check(Family::Vpc, nullptr, text(program)), "OP002"), nullptr) << program;
 }

@@ -74,8 +74,8 @@ TEST(Compare, AProgramEqualsItself) {
               QStringLiteral("--- A: a\n+++ B: b\nThe programs are the same (rungs: 6).\n"));
 }
 
-// The fuzzy spellings of one logic (seed 004 1.7: a contact loaded alone and joined by ANB),
-// other whitespace and another comment layout are not differences.
+// The fuzzy spellings of one logic (PLC concepts (WPLSoft family) 1.7: a contact loaded alone
+// and joined by ANB), other whitespace and another comment layout are not differences.
 TEST(Compare, FuzzySpellingsWhitespaceAndCommentPlacementAreNoDifference) {
     const Project a = listed(vigor(), QStringLiteral("; start the pump\nLD X0\nLD X1\nANB\nOUT "
                                                      "Y0\nEND\n"));

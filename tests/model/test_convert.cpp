@@ -39,7 +39,7 @@ TEST(Conversion, ExecutionOrderExampleIsAlreadyCanonical) {
 }
 
 TEST(Conversion, StackedAnbBecomesAnbAfterEachBlock) {
-    // seed 004 1.7 example 1: "OK" form in, "better" form out.
+    // PLC concepts (WPLSoft family) 1.7 example 1: "OK" form in, "better" form out.
     const QString ok =
         lines({"LD X0", "OR X1", "LD X2", "OR X3", "LD X4", "OR X5", "ANB", "ANB", "OUT Y0"});
     const QString better =
@@ -49,7 +49,7 @@ TEST(Conversion, StackedAnbBecomesAnbAfterEachBlock) {
 }
 
 TEST(Conversion, StackedOrbBecomesAnOrChain) {
-    // seed 004 1.7 example 2: "bad" form in, "good" form out.
+    // PLC concepts (WPLSoft family) 1.7 example 2: "bad" form in, "good" form out.
     const QString bad = lines({"LD X0", "LD X1", "LD X2", "LD X3", "ORB", "ORB", "ORB", "OUT Y0"});
     const QString good = lines({"LD X0", "OR X1", "OR X2", "OR X3", "OUT Y0"});
     EXPECT_EQ(canonical(Family::Vigor, bad), good);
@@ -181,8 +181,8 @@ TEST(Conversion, ProblemsWithoutTheDrawingAreTheDrawingsProblems) {
     EXPECT_GT(withProblems, 100u); // of 360 cut listings: the broken paths are compared too
 }
 
-// The seed examples of ladder-rules.md (the execution-order program, the fuzzy pairs of seed
-// 004 1.7 and 1.8) and the design examples of seed 004 1.9 (their listings are drawings in
+// The examples of PLC concepts (WPLSoft family) (the execution-order program of 1.5.1, the
+// fuzzy pairs of 1.7 and 1.8) and its design examples of 1.9 (their listings are drawings in
 // the manual; written here from the text).
 TEST(SeedExamples, RoundTripIsAFixpointAndKeepsMeaning) {
     const Target &t = Target::get(Family::Vigor);
@@ -212,7 +212,8 @@ TEST(SeedExamples, RoundTripIsAFixpointAndKeepsMeaning) {
         checkProgram(t, QString::fromLatin1(p), seed++);
 }
 
-// Seed 004 1.8: each correction draws a different ladder with the same meaning.
+// PLC concepts (WPLSoft family) 1.8: each correction draws a different ladder with the same
+// meaning.
 TEST(SeedExamples, CorrectedFormsComputeTheSameOutputs) {
     const Target &t = Target::get(Family::Vigor);
     const std::vector<std::pair<const char *, const char *>> pairs = {

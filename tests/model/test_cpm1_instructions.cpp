@@ -1,7 +1,7 @@
 // The CPM1's application instructions as the listing, the checks and the converter know them
 // (issue 14): the function codes of Omron's CPM1 programming manual W353, the "@" forms, the
-// LR link relays and the guide's "TC" bank (seed 002, 3.5 Memóriatérkép), and the operand
-// rules `check` gives where the simulator would refuse.
+// LR link relays and the guide's "TC" bank (Omron CPM1 guide 3.5 Memóriatérkép), and the
+// operand rules `check` gives where the simulator would refuse.
 
 #include "model/checks/checks.h"
 #include "model/convert/convert.h"
@@ -120,8 +120,9 @@ TEST(Cpm1Instructions, ListingRoundTripsEveryNewForm) {
     EXPECT_TRUE(check(listing).empty()) << all(check(listing)).toStdString();
 }
 
-// Seed 002 3.5: "Időrelék/számlálók TC - terület TC000-TC127": TC names the bank, so TC 005
-// is the counter CNT 005 when the program counts with it, the timer TIM 005 when it times.
+// Omron CPM1 guide 3.5: "Időrelék/számlálók TC - terület TC000-TC127": TC names the bank, so
+// TC 005 is the counter CNT 005 when the program counts with it, the timer TIM 005 when it
+// times.
 TEST(Cpm1Instructions, TcNamesTheTimerOrTheCounterTheProgramDefines) {
     const ParseResult p = parseCpm1("LD 000.00;LD 000.01;CNT 005 #0003;LD TC 005;OUT 010.00;"
                                     "LD 000.02;TIM 006 #0010;LD TC006;OUT 010.01;"
@@ -139,7 +140,8 @@ TEST(Cpm1Instructions, TcNamesTheTimerOrTheCounterTheProgramDefines) {
     EXPECT_FALSE(parseCpm1("LD TC 128;OUT 010.00;END(01)").ok()); // beyond TC000..TC127
 }
 
-// W353 / seed 002: LR 00..15, bits LR 00.00..LR 15.15; seed 002 writes bits as LR0005 too.
+// W353 / Omron CPM1 guide: LR 00..15, bits LR 00.00..LR 15.15; the guide writes bits as
+// LR0005 too.
 TEST(Cpm1Instructions, LinkRelaysAreChannelsWithBits) {
     const ParseResult p =
         parseCpm1("LD LR 00.05;OUT LR1504;LD LR0005;MOV(21) LR 03 DM 0000;END(01)");

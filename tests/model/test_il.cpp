@@ -1,4 +1,4 @@
-// The listing parser and printer on every target's listing: the seed listings verbatim,
+// The listing parser and printer on every target's listing: the manuals' listings verbatim,
 // parse -> print -> parse identity, aliases, step numbers, and every error with its place.
 
 #include "model/listing/il.h"
@@ -42,9 +42,9 @@ QStringList printedLines(Family family, const QString &text) {
         .split(QLatin1Char('\n'), Qt::SkipEmptyParts);
 }
 
-// ---- VPC (seed 000) ---------------------------------------------------------------------
+// ---- VPC (VPC user's manual) ---------------------------------------------------------------
 
-// The listings of seed 000, section VII, verbatim.
+// The listings of the VPC user's manual, VII, verbatim.
 const char *const kVpcSeedListings[] = {
     "LD p01>p02\nAND NOT r02\nLD r03\nAND t04\nOR LD\nOUT p15+p17\n",
     "LD p01>p02\nAND NOT r02\nOUT t00+p00\n",
@@ -59,7 +59,7 @@ TEST(IlVpc, SeedListingsParseWithoutErrorsAndRoundTrip) {
 }
 
 TEST(IlVpc, ConsoleLineWithStepNumberParses) {
-    // Seed 000, RUN & MONITOR: "0002 LD  p01<p00".
+    // VPC user's manual, V.a "RUN & MONITOR mode": "0002 LD  p01<p00".
     const ParseResult r = parseListing(Family::Vpc, QStringLiteral("0002 LD  p01<p00"));
     ASSERT_TRUE(r.ok()) << describeErrors(r);
     ASSERT_EQ(r.list.instructions.size(), 1u);
@@ -133,7 +133,7 @@ TEST(IlVpc, StepNumbersPrintedAsTheConsoleShowsThemAndReadBack) {
 }
 
 TEST(IlVpc, CompareTheTableDoesNotHaveIsAnErrorAtTheSymbol) {
-    // VPC compares with = < > only (seed 000).
+    // VPC compares with = < > only (VPC user's manual).
     const ParseResult r = parseListing(Family::Vpc, QStringLiteral("LD p01<=p00"));
     ASSERT_EQ(r.errors.size(), 1u);
     EXPECT_EQ(r.errors[0].line, 1);
@@ -147,7 +147,7 @@ TEST(IlVpc, TransferWithoutSourceIsAnError) {
     EXPECT_EQ(r.errors[0].column, 9);
 }
 
-// ---- CPM1 (seed 002) --------------------------------------------------------------------
+// ---- CPM1 (Omron CPM1 guide) ----------------------------------------------------------------
 
 const char *const kCpm1SeedListings[] = {
     "LD 000.00\nOUT 010.00\n",
@@ -164,7 +164,7 @@ TEST(IlCpm1, SeedListingsParseWithoutErrorsAndRoundTrip) {
 }
 
 TEST(IlCpm1, SeedJumpListingReportsOnlyTheLmeTypoWithJmeSuggested) {
-    // Seed 002 prints "LME 0" for "JME 0"; the listing is otherwise valid.
+    // The Omron CPM1 guide prints "LME 0" for "JME 0"; the listing is otherwise valid.
     const ParseResult r =
         parseListing(Family::Cpm1, QStringLiteral("LD      000.02\nAND     000.03\n"
                                                   "JMP     0\nLD      000.04\n"
@@ -243,7 +243,7 @@ TEST(IlCpm1, ConstantWithANonDigitIsAnErrorAtTheCharacter) {
     EXPECT_EQ(r.errors[0].column, 12);
 }
 
-// ---- Vigor (seeds 001, 004) ---------------------------------------------------------------
+// ---- Vigor (Vigor M/VB/VH communication manual, PLC concepts (WPLSoft family)) ----------------
 
 TEST(IlVigor, ExecutionOrderProgramParsesAndRoundTrips) {
     const ParseResult r = parseListing(Family::Vigor, QString::fromLatin1(kExecutionOrderExample));
@@ -258,7 +258,7 @@ TEST(IlVigor, ExecutionOrderProgramParsesAndRoundTrips) {
 }
 
 TEST(IlVigor, SeedTabulatedListingWithStepNumbersParses) {
-    // Seed 004, 1.5.1, as printed (tabs, step numbers on some lines only).
+    // PLC concepts (WPLSoft family) 1.5.1, as printed (tabs, step numbers on some lines only).
     const ParseResult r = parseListing(
         Family::Vigor,
         QStringLiteral("1\tLD\tX0\t\n2\tOR\tM0\t\n3\tAND\tX1\t\n4\tLD\tX3\t\n\tAND\tM1\t\n"
@@ -273,7 +273,7 @@ TEST(IlVigor, SeedTabulatedListingWithStepNumbersParses) {
 }
 
 TEST(IlVigor, FuzzySyntaxPairsParse) {
-    // ladder-rules.md / seed 004 1.7: Better vs OK, Good vs Bad.
+    // PLC concepts (WPLSoft family) 1.7: Better vs OK, Good vs Bad.
     for (const char *listing :
          {"LD X0\nOR X1\nLD X2\nOR X3\nANB\nLD X4\nOR X5\nANB\n",
           "LD X0\nOR X1\nLD X2\nOR X3\nLD X4\nOR X5\nANB\nANB\n", "LD X0\nOR X1\nOR X2\nOR X3\n",

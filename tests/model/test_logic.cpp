@@ -63,7 +63,7 @@ LadderProgram ladderFile(const char *name) {
 } // namespace
 
 TEST(Logic, ExecutionOrderExampleComputesTheBlocksOfTheManual) {
-    // ladder-rules.md, seed 004 1.5.1, verbatim.
+    // PLC concepts (WPLSoft family) 1.5.1, verbatim.
     const InstructionList list =
         vigorProgram("LD X0\nOR M0\nAND X1\nLD X3\nAND M1\nORB\nLD Y1\nAND X4\n"
                      "LD T0\nAND M3\nORB\nANB\nOUT Y1\nTMR T0 K10\n");

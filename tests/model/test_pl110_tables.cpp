@@ -1,4 +1,4 @@
-// PL110 table facts of issue 14 (seed 003): the MODBUS map as chapter 3.2 prints it (T1..T48
+// PL110 table facts of issue 14 (PL110 manual): the MODBUS map as chapter 3.2 prints it (T1..T48
 // only, inputs R/W as bits and R as words, special-marker bits to SM129.15), the double
 // words VD / SMD (2.1.1), the trimmers TR as a preset source (4.2.4, 4.2.5) and the timers
 // T49..T64 that SM0.13 enables (2.1.2).
@@ -173,7 +173,7 @@ TEST(Pl110Sm013, ACounterBesideAWriteOfSm013IsAWarning) {
     EXPECT_EQ(count(check("LD I1\nLD I2\nLD I3\nMUP C1 5\nLD I1\nTON T1 5\nEND"), "OP006"), 0);
 }
 
-// Issue 14, seed 003 2.1.2: the display's pages, the terminal's keys and SM106 (the PLC shows
+// Issue 14, PL110 manual 2.1.2: the display's pages, the terminal's keys and SM106 (the PLC shows
 // the page requested and resets the word to 0) are plain memory in the simulator: `check`
 // says so at each use, naming the device (SIM101), and nothing of the rest of SM.
 TEST(Pl110Checks, DisplayKeyAndPortMarkersWarn) {
@@ -226,7 +226,7 @@ TEST(Pl110Checks, DisplayKeyAndPortMarkersWarn) {
     EXPECT_EQ(sm106->location.column, 8);
 }
 
-// Issue 14, seed 003 2.1.2: every special-marker word behind hardware the simulator does not
+// Issue 14, PL110 manual 2.1.2: every special-marker word behind hardware the simulator does not
 // have is named at `check` time, first and last word of each range: the timed interrupts'
 // intervals SM16 / SM17 ("Intervallo dell'interrupt a tempo n° 1"), the clock SM9..SM15, the
 // encoders SM20..SM31 and SM2, the protocol address SM4 / SM5, filters and analog

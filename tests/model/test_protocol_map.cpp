@@ -152,7 +152,7 @@ TEST(ProtocolMap, Pl110ModbusBitsAndWordsOfProtocolsMd) {
     EXPECT_EQ(i256->index, 256);
 }
 
-TEST(ProtocolMap, Pl110SlaveFactsOfSeed003Chapter3) {
+TEST(ProtocolMap, Pl110SlaveFactsOfTheManualsChapter3) {
     const Target &t = Target::get(Family::Pl110);
     const ProtocolMap &m = *findProtocolMap(t, ProtocolId::Modbus);
     EXPECT_EQ(m.stationRegister, 5);       // "Indirizzo di protocollo"
@@ -256,7 +256,7 @@ TEST(ProtocolMap, ABitTheUnitDoesNotHaveMapsToNothing) {
     const ProtocolMap &link = *findProtocolMap(vigor, ProtocolId::VigorLink);
     EXPECT_TRUE(fromProtocol(vigor, link, S::LinkBytes, 0x0081, 7).has_value());
     EXPECT_FALSE(fromProtocol(vigor, link, S::LinkBytes, 0x0081, 8).has_value());
-    EXPECT_EQ(link.maxReadUnits, 128); // seed 001, B-5
+    EXPECT_EQ(link.maxReadUnits, 128); // Vigor M/VB/VH communication manual, B-5-3
     // Coils are 1-bit units: the bit is ignored, as documented.
     EXPECT_TRUE(fromProtocol(pl, modbus, S::Coils, 2400, 99).has_value());
 }

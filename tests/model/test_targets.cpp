@@ -182,7 +182,8 @@ TEST(Targets, VpcRetainsTimersCountersRegistersAndR72ToR87) {
 TEST(Targets, VpcInputsAndAnalogInputsAreNeverDestinations) {
     for (const char *d : {"i00", "i39", "a00", "a07", "p77", "r90", "r95"})
         EXPECT_FALSE(areaOf(vpc(), d).writable) << d;
-    // Coils may target o00..o29 and r00..r89 (seed 000): r88 stops, r89 signals an alarm.
+    // Coils may target o00..o29 and r00..r89 (VPC user's manual, III): r88 stops, r89 signals
+    // an alarm.
     for (const char *d : {"o00", "r00", "r87", "r88", "r89", "p00", "p76", "d00"})
         EXPECT_TRUE(areaOf(vpc(), d).writable) << d;
     EXPECT_TRUE(areaOf(vpc(), "i00").physical);
@@ -242,7 +243,7 @@ TEST(Targets, Cpm1AreasFollowTheChannelMap) {
     EXPECT_TRUE(areaOf(cpm1(), "253.13").system);
     EXPECT_TRUE(areaOf(cpm1(), "HR00.00").retentive);
     EXPECT_FALSE(areaOf(cpm1(), "200.00").retentive);
-    EXPECT_FALSE(areaOf(cpm1(), "TIM 000").retentive); // reset on power loss (seed 002)
+    EXPECT_FALSE(areaOf(cpm1(), "TIM 000").retentive); // reset on power loss (Omron CPM1 guide)
     EXPECT_TRUE(areaOf(cpm1(), "DM 0000").writable);
     EXPECT_FALSE(areaOf(cpm1(), "DM 6144").writable);
     EXPECT_EQ(areaOf(cpm1(), "010.00").numbering, Numbering::ChannelBit);
@@ -363,7 +364,8 @@ TEST(Targets, ScanTimeWordsCountInTheirTablesUnit) {
 // Semantics and constant rules: what family.h and the Family switches used to say ----------
 
 TEST(Semantics, VpcParallelPortsAreTwelveBitsOfP76AndP77) {
-    // Seed 000: p76 appears binary on o00..o11 (o11 = MSB); i00..i11 read into p77.
+    // VPC user's manual, III: p76 appears binary on o00..o11 (o11 = MSB); i00..i11 read into
+    // p77.
     const ParallelPort &out = vpc().semantics.parallelOut;
     const ParallelPort &in = vpc().semantics.parallelIn;
     EXPECT_EQ(out.word, QStringLiteral("p76"));
@@ -416,13 +418,13 @@ TEST(Semantics, Cpm1TimhCarriesItsOwnTimeBase) {
 TEST(Semantics, Pl110TimersCountInTheirWordAndCountersSaturate) {
     const Semantics &s = pl110().semantics;
     EXPECT_TRUE(s.timerCountsInWord);
-    for (const char *timer : {"TON", "TOFF", "TONR"}) // seed 003 4.2.4: the time base
+    for (const char *timer : {"TON", "TOFF", "TONR"}) // PL110 manual 4.2.4: the time base
         EXPECT_EQ(spec(pl110(), timer).operands.at(2).allowedValues,
                   (std::vector<int>{10, 100, 1000}))
             << timer;
     EXPECT_TRUE(s.upDownCountersSaturate); // MUP / MDOWN
     EXPECT_EQ(pl110().limits.timerMax, 32767);
-    EXPECT_EQ(pl110().limits.counterMin, -32768); // seed 003 4.2.5
+    EXPECT_EQ(pl110().limits.counterMin, -32768); // PL110 manual 4.2.5
     EXPECT_EQ(pl110().limits.counterMax, 32767);
     for (const Target *t : {&vpc(), &vigor(), &cpm1(), &pl110()})
         EXPECT_EQ(t->limits.scanTimeMax, 32767) << t->id.toStdString(); // one 16-bit word
@@ -546,7 +548,8 @@ TEST(Instructions, VigorFxMnemonics) {
     EXPECT_EQ(spec(vigor(), "PLF").op, Op::PulseFall);
     EXPECT_EQ(spec(vigor(), "STL").op, Op::StepLadder);
     EXPECT_EQ(spec(vigor(), "RET").op, Op::Return);
-    EXPECT_EQ(spec(vigor(), "TMR").operands.size(), 2u); // TMR T0 K10 (seed 004)
+    // TMR T0 K10 (PLC concepts (WPLSoft family) 1.5.1)
+    EXPECT_EQ(spec(vigor(), "TMR").operands.size(), 2u);
     EXPECT_EQ(spec(vigor(), "CNT").inputs, 1);
     EXPECT_EQ(spec(vigor(), "LD=").compare, CompareOp::Eq);
     EXPECT_EQ(spec(vigor(), "AND<>").compare, CompareOp::Ne);

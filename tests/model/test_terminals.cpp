@@ -52,12 +52,13 @@ TEST(Terminals, EveryBlockNamesDevicesTheModelHas) {
 
 TEST(Terminals, CountsAreThoseOfTheManuals) {
     const Target &vpc = Target::get(Family::Vpc);
-    // Seed 000 II: VPC3224A63 32 in / 24 out / 6 analog in / 3 analog out.
+    // VPC user's manual, II: VPC3224A63 32 in / 24 out / 6 analog in / 3 analog out.
     EXPECT_EQ(counts(vpc, *vpc.model(QStringLiteral("VPC3224A63"))),
               (std::array<int, 4>{32, 24, 6, 3}));
     EXPECT_EQ(counts(vpc, *vpc.model(QStringLiteral("VPC106"))), (std::array<int, 4>{10, 6, 0, 0}));
     const Target &cpm1 = Target::get(Family::Cpm1);
-    // Seed 002: 12 inputs / 8 outputs; two analog setting pots (channels 250, 251, BCD 0..200).
+    // Omron CPM1 guide: 12 inputs / 8 outputs; two analog setting pots (channels 250, 251, BCD
+    // 0..200).
     EXPECT_EQ(counts(cpm1, *cpm1.model(QStringLiteral("CPM1-20CDR"))),
               (std::array<int, 4>{12, 8, 2, 0}));
     EXPECT_EQ(counts(cpm1, *cpm1.model(QStringLiteral("CPM1-30CDR"))),
@@ -69,7 +70,7 @@ TEST(Terminals, CountsAreThoseOfTheManuals) {
     EXPECT_TRUE(cpm20.terminals[2].bcd);
     EXPECT_EQ(cpm20.terminals[2].highest, 200);
     const Target &pl110 = Target::get(Family::Pl110);
-    // Seed 003 1.1: 8 digital inputs, 8 relay outputs, 4 analog inputs (10 bit), 1 analog out.
+    // PL110 manual 1.1: 8 digital inputs, 8 relay outputs, 4 analog inputs (10 bit), 1 analog out.
     EXPECT_EQ(counts(pl110, *pl110.model(QStringLiteral("PL110-2A"))),
               (std::array<int, 4>{8, 8, 4, 1}));
     const Target &vigor = Target::get(Family::Vigor);

@@ -1,8 +1,8 @@
-// Vigor word operands (issue 14): digit-designated bit devices (K1M20, K4Y0, K2X10; seed
-// 001's TO K1 K1 K1M20 K1) and the index registers - V0..V7, Z0..Z7 in seed 001's operand
-// tables, E0..E7 / F0..F7 in seed 004's WPLSoft family (D0E0 = D0Z0, K10F0 = K10V0) - parsed,
-// printed, refused where a slot takes no word, checked like any device, and carried through
-// the ladder both ways.
+// Vigor word operands (issue 14): digit-designated bit devices (K1M20, K4Y0, K2X10; TO K1 K1
+// K1M20 K1 in the Vigor M/VB/VH communication manual) and the index registers - V0..V7, Z0..Z7
+// in that manual's operand tables, E0..E7 / F0..F7 in PLC concepts (WPLSoft family) 1.4
+// (D0E0 = D0Z0, K10F0 = K10V0) - parsed, printed, refused where a slot takes no word, checked
+// like any device, and carried through the ladder both ways.
 
 #include "model/checks/checks.h"
 #include "model/convert/convert.h"
@@ -81,7 +81,8 @@ TEST(VigorOperands, IndexRegistersModifyWordsGroupsAndKConstants) {
     const Operand d = operand("D0E0");
     EXPECT_EQ(d.kind, Operand::Kind::Device);
     EXPECT_EQ(formatAddress(vigor(), d.address), QStringLiteral("D0"));
-    // Seed 004's E is the Vigor's Z (the low word), F its V: printed as the Vigor names them.
+    // The E of PLC concepts (WPLSoft family) is the Vigor's Z (the low word), F its V: printed
+    // as the Vigor names them.
     EXPECT_EQ(formatAddress(vigor(), d.index), QStringLiteral("Z0"));
     EXPECT_EQ(operand("D0Z0"), d);
     const Operand k = operand("K10F0");
@@ -94,8 +95,8 @@ TEST(VigorOperands, IndexRegistersModifyWordsGroupsAndKConstants) {
     EXPECT_EQ(formatOperand(vigor(), g), QStringLiteral("K4M0Z1"));
     EXPECT_EQ(formatOperand(vigor(), operand("t5f7")), QStringLiteral("T5V7"));
     EXPECT_EQ(formatOperand(vigor(), operand("C3v2")), QStringLiteral("C3V2"));
-    // Index registers are plain words too (seed 004: "can be used as general purpose
-    // register").
+    // Index registers are plain words too (PLC concepts (WPLSoft family) 1.4: "can be used as
+    // general purpose register").
     EXPECT_EQ(formatOperand(vigor(), operand("E7")), QStringLiteral("Z7"));
     EXPECT_EQ(formatOperand(vigor(), operand("V7")), QStringLiteral("V7"));
 }
@@ -138,7 +139,7 @@ TEST(VigorOperands, ListingsRoundTripWithDigitsAndIndexes) {
     ASSERT_TRUE(r.ok()) << errors(r);
     const QString printed = printInstructionList(r.list);
     EXPECT_EQ(printed, QString::fromLatin1(text));
-    // Seed 004's spellings read as the same program.
+    // The spellings of PLC concepts (WPLSoft family) read as the same program.
     const ParseResult wplsoft =
         parseVigor("LD= K4M0 K10F0\nMOV K4X0 D0E0\nLD X1\nAND<> D5F7 K2Y10\nCMP K1M20 K5 M10\n"
                    "LD X2\nADD K4M0E1 D1 K2Y0\nLD X3\nTMR T0 D10E2\nLD X0\nINC K1Y0\nEND\n");
@@ -188,8 +189,8 @@ TEST(VigorOperands, ChecksReadTheGroupAsTheDevicesItWrites) {
     EXPECT_FALSE(has(found, "OP005", ""));
 }
 
-// The seed 001 example programs (VB-1COM): digit groups in TO / FROM, accepted and warned as
-// not simulated, never an error.
+// The example programs of the Vigor M/VB/VH communication manual (VB-1COM): digit groups in TO
+// / FROM, accepted and warned as not simulated, never an error.
 TEST(VigorOperands, SeedOneProgramsWithDigitGroupsPassTheChecks) {
     const std::vector<Diagnostic> found = check("LD M9000\n"
                                                 "TO K1 K1 K1M20 K1\n"
@@ -226,9 +227,9 @@ TEST(VigorOperands, AContactInTheLadderTakesNoWord) {
     EXPECT_TRUE(contactFromText(vigor(), QStringLiteral("K1X0>=K2F1"), &error));
 }
 
-// The statements of seed 001's example programs, verbatim: each is accepted, warned as not
-// simulated, and takes the FX family's 16-bit size (one step and two per operand; neither
-// seed gives step counts, docs/targets.md).
+// The statements of the example programs of the Vigor M/VB/VH communication manual, verbatim:
+// each is accepted, warned as not simulated, and takes the FX family's 16-bit size (one step
+// and two per operand; neither manual gives step counts, docs/targets.md).
 TEST(VigorOperands, SeedOneCommunicationStatementsParseWithTheirSteps) {
     // statement, steps, simulated (no SIM100)
     const std::tuple<const char *, int, bool> statements[] = {
@@ -270,8 +271,9 @@ TEST(VigorOperands, SeedOneCommunicationStatementsParseWithTheirSteps) {
     }
 }
 
-// The FNC numbers seed 001 and the FX family give them: MOV 12 (DMOV its 32-bit form), TO 79
-// (TOP its pulse form), CCD 84; "DMOV(12)" names the same instruction.
+// The FNC numbers the Vigor M/VB/VH communication manual and the FX family give them: MOV 12
+// (DMOV its 32-bit form), TO 79 (TOP its pulse form), CCD 84; "DMOV(12)" names the same
+// instruction.
 TEST(VigorOperands, FunctionNumbersOfTheSeedInstructions) {
     ASSERT_NE(vigor().findInstruction(QStringLiteral("DMOV")), nullptr);
     EXPECT_EQ(vigor().findInstruction(QStringLiteral("DMOV"))->functionCode, 12);

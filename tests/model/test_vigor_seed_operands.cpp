@@ -1,6 +1,7 @@
-// The Vigor operand rules of seed 001's own tables ("Operand Devices" of FNC 80 RS, FNC 89
-// LINK, FNC 149 MBUS), seed 004's REF and seed 001's FROM/TO pages: the seed's example
-// operands pass `check`, operands the tables do not mark are OP005 errors on their line.
+// The Vigor operand rules of the Vigor M/VB/VH communication manual's own tables ("Operand
+// Devices" of FNC 80 RS, FNC 89 LINK, FNC 149 MBUS), the REF of PLC concepts (WPLSoft family)
+// 1.1 and the Vigor manual's FROM/TO pages: the manuals' example operands pass `check`,
+// operands the tables do not mark are OP005 errors on their line.
 
 #include "model/checks/checks.h"
 #include "model/listing/il.h"
@@ -28,7 +29,7 @@ std::vector<Diagnostic> operandErrors(const char *line) {
 } // namespace
 
 TEST(VigorOperands, SeedOneOperandTables) {
-    // The seeds' own examples.
+    // The manuals' own examples.
     for (const char *good :
          {"RS D0 D200 D100 D201", "RS D0 K0 D100 K256", "RS D10 H10 D8000 D3", "LINK D1000 D100",
           "MBUS D1000 D100", "LINK D0 D8188", "FROM K1 K2000 D50 K15", "TO K1 K1000 D0 K15",
@@ -58,7 +59,7 @@ TEST(VigorOperands, SeedOneOperandTables) {
         {"FROM K1 K2000 D8180 K15", "D8192 does not exist"},
         {"FROM K1 K2000 D50 K0", "at least 1, not 0"},
         {"TO K1 K1000 D8190 K15", "D8192 does not exist"},
-        // TOP (seed 001 B-4-5) is TO's pulse form: the same rules.
+        // TOP (Vigor M/VB/VH communication manual, B-4-5) is TO's pulse form: the same rules.
         {"TOP K1 K0 D8190 K15", "D8192 does not exist"},
         {"TOP K1 K0 D0 K0", "at least 1, not 0"},
         // REF: inputs or outputs.
@@ -76,10 +77,11 @@ TEST(VigorOperands, SeedOneOperandTables) {
     }
 }
 
-// Issue 14, seed 004 1.4 "Every timer has its resolution (unit: 1ms/10ms/100ms)": the ranges
-// of docs/targets.md "Timer resolutions" hold on every Vigor model the product offers (M, VB,
-// VH): each timer number exists there with its time base and mode, and one past the last does
-// not. A model given other ranges would have to say so in the table (ModelVariant::overrides).
+// Issue 14, PLC concepts (WPLSoft family) 1.4 "Every timer has its resolution (unit:
+// 1ms/10ms/100ms)": the ranges of docs/targets.md "Timer resolutions" hold on every Vigor model
+// the product offers (M, VB, VH): each timer number exists there with its time base and mode,
+// and one past the last does not. A model given other ranges would have to say so in the table
+// (ModelVariant::overrides).
 TEST(VigorTimerRanges, EveryModelHasTheFamilysResolutions) {
     const Target &t = Target::get(Family::Vigor);
     struct Expected {

@@ -129,10 +129,10 @@ TEST(CheckSimulatorAgreement, Cpm1) {
                     });
 }
 
-// A word operand is a word: seed 001's "Operand Devices" tables mark X, Y, M, S apart from
-// KnX, KnY, KnM, KnS, so a Vigor word slot takes K4M0, not M0; CPM1 TR (W353) is a bit for
-// LD and OUT only; the PL110 reads 16 bits of a bit area as a word from I1, I17, ...
-// (Area::bitsAsWords).
+// A word operand is a word: the "Operand Devices" tables of the Vigor M/VB/VH communication
+// manual mark X, Y, M, S apart from KnX, KnY, KnM, KnS, so a Vigor word slot takes K4M0, not
+// M0; CPM1 TR (W353) is a bit for LD and OUT only; the PL110 reads 16 bits of a bit area as a
+// word from I1, I17, ... (Area::bitsAsWords).
 TEST(CheckSimulatorAgreement, ABitDeviceIsNoWordOperand) {
     expectAgreement(
         model::Family::Vigor,
@@ -163,8 +163,9 @@ TEST(CheckSimulatorAgreement, ABitDeviceIsNoWordOperand) {
         });
 }
 
-// A bit operand is a bit: CMP's result D, D+1, D+2 are bit devices (seed 001), a CPM1 control
-// bit or contact names a bit of a channel (011.00), not the channel.
+// A bit operand is a bit: CMP's result D, D+1, D+2 are bit devices (Vigor M/VB/VH
+// communication manual), a CPM1 control bit or contact names a bit of a channel (011.00), not
+// the channel.
 TEST(CheckSimulatorAgreement, AWholeWordIsNoBitOperand) {
     expectAgreement(
         model::Family::Vigor,
@@ -181,7 +182,7 @@ TEST(CheckSimulatorAgreement, AWholeWordIsNoBitOperand) {
              "LD 011.00\nOUT 010.00\nEND"},
             {"LD 000.00\nOUT 010\nEND", 2, "010 is a whole channel", "LD 000.00\nOUT 010.01\nEND"},
         });
-    // A PL110 word of bits read as a contact (seed 003 2.1.1: V1.0..V1.15 are its bits).
+    // A PL110 word of bits read as a contact (PL110 manual 2.1.1: V1.0..V1.15 are its bits).
     expectAgreement(model::Family::Pl110,
                     {
                         {"LD V1\nOUT Q1\nEND", 1,
@@ -192,9 +193,9 @@ TEST(CheckSimulatorAgreement, AWholeWordIsNoBitOperand) {
                     });
 }
 
-// Vigor CCD S D n reads n bytes from the words at S: a device (seed 001 B-3-9 CCD D52 D104
-// K11); DMOV S D reads S and S+1 unless S is a 32-bit counter or a timer (C200..C255 hold 32
-// bits), and writes D, D+1 unless D is a 32-bit counter.
+// Vigor CCD S D n reads n bytes from the words at S: a device (Vigor M/VB/VH communication
+// manual, B-3-9: CCD D52 D104 K11); DMOV S D reads S and S+1 unless S is a 32-bit counter or a
+// timer (C200..C255 hold 32 bits), and writes D, D+1 unless D is a 32-bit counter.
 TEST(CheckSimulatorAgreement, BlocksAndPairsOfTheVigor) {
     expectAgreement(
         model::Family::Vigor,

@@ -14,8 +14,8 @@ using RealSim = test::RealTargetSim;
 
 } // namespace
 
-// Seed 002 CNTR(12): "Nem változik a számláló tartalma, ha mindkét bemeneten 1 szint van"
-// (the value does not change while both inputs are at 1): an edge on one input while the
+// Omron CPM1 guide, CNTR(12): "Nem változik a számláló tartalma, ha mindkét bemeneten 1 szint
+// van" (the value does not change while both inputs are at 1): an edge on one input while the
 // other is held ON does not count, nor do edges arriving together.
 TEST(Cpm1ReversibleCounter, DoesNotCountWhileBothInputsAreOn) {
     RealSim s(model::Family::Cpm1, "LD 000.00\nLD 000.01\nLD 000.02\nCNTR(12) 003 #0005\nEND");
@@ -48,8 +48,8 @@ TEST(Cpm1ReversibleCounter, DoesNotCountWhileBothInputsAreOn) {
     EXPECT_EQ(s.value("CNT 003"), 0);
 }
 
-// Seed 000 III: p00..p75 hold 0000..9999, counters 0000..9999, timers 00.00..99.99 s. A
-// transfer whose result leaves 0..9999 writes it modulo 10000 (as the four-digit register
+// VPC user's manual, III: p00..p75 hold 0000..9999, counters 0000..9999, timers 00.00..99.99
+// s. A transfer whose result leaves 0..9999 writes it modulo 10000 (as the four-digit register
 // would show it) and is a runtime diagnostic naming the step, reported once per step.
 TEST(VpcDecimalRange, TransferPast9999WrapsAndIsReportedWithItsLine) {
     RealSim s(model::Family::Vpc, "LD r88\nOUT p00+p01\nEND");

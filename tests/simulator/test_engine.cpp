@@ -409,7 +409,7 @@ TEST(EngineDeferred, VpcContactsSeeBitWritesOnlyAfterEnd) {
 }
 
 TEST(EngineDeferred, VpcOnceASecondExampleAddsOncePerSecond) {
-    // Seed 000 ch. VII: LD r95 IL OUT NOT r04 LD r04 OUT p02+p01 ILC (docs/simulator.md)
+    // VPC user's manual, VII: LD r95 IL OUT NOT r04 LD r04 OUT p02+p01 ILC (docs/simulator.md)
     Sim s("LD SM9013\nIL\nOUTN M4\nLD M4\nXFER D2 D1\nILC\nEND", model::Family::Vpc);
     ASSERT_TRUE(s.result.ok());
     s.engine->writeWord(s.at("D1"), 3);

@@ -39,8 +39,8 @@ TEST(SystemDevices, VigorM9000IsAlwaysOnAndM9002PulsesOnTheFirstScan) {
     EXPECT_TRUE(f.bit("Y1"));
 }
 
-// The scan-time words count 0.1 ms on Vigor (D9010-D9012) and PL110 (SM6-SM8, seed 003
-// "risoluzione 100 uS"); a virtual scan lasts one period. The devices come from the table.
+// The scan-time words count 0.1 ms on Vigor (D9010-D9012) and PL110 (SM6-SM8, PL110 manual
+// 2.1.2, "risoluzione 100 uS"); a virtual scan lasts one period. The devices come from the table.
 void expectScanTimeWordsInTenthsOfAMillisecond(model::Family family, const char *program) {
     Family f(family, program);
     ASSERT_TRUE(f.result.ok());
@@ -88,9 +88,9 @@ TEST(SystemDevices, ScanTimeWordsStopAt32767) {
     EXPECT_EQ(f.value("D9010"), 32767);
 }
 
-// r93 "0.01 s ON-OFF cycle" and r94 "0.1 s" (seed 000): ON for the first half of each cycle
-// of virtual time at the start of the scan. At the default 10 ms period r93 is sampled at
-// the same phase every scan and so reads ON in every scan (docs/simulator.md).
+// r93 "0.01 s ON-OFF cycle" and r94 "0.1 s" (VPC user's manual, III): ON for the first half of
+// each cycle of virtual time at the start of the scan. At the default 10 ms period r93 is
+// sampled at the same phase every scan and so reads ON in every scan (docs/simulator.md).
 TEST(SystemDevices, VpcR93AndR94AreTheHundredthAndTenthOfASecondClocks) {
     Family f(model::Family::Vpc, "LD r93\nOUT o00\nLD r94\nOUT o01\nEND");
     ASSERT_TRUE(f.result.ok());

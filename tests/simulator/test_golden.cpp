@@ -96,26 +96,27 @@ INSTANTIATE_TEST_SUITE_P(Manuals, GoldenTrace, testing::ValuesIn(goldenNames()),
 // silently drops out of the parameterized test). The traffic light has its own test below.
 TEST(GoldenTraceSet, CoversEveryFamilyExampleListedInTheIssue) {
     const std::vector<std::string> expected = {
-        // Vigor, seed 004 1.9
+        // Vigor, PLC concepts (WPLSoft family) 1.9
         "vigor_stop_first_latch", "vigor_start_first_latch", "vigor_set_rst_order",
         "vigor_interlock", "vigor_sequential_control", "vigor_oscillator", "vigor_timer_oscillator",
         "vigor_flasher", "vigor_delay_off", "vigor_counting_extension",
-        // VPC, seed 000 chapter VII
+        // VPC, VPC user's manual, VII
         "vpc_compare_contacts", "vpc_add_compare", "vpc_set_value_arithmetic",
         "vpc_out_not_transfer", "vpc_transfers", "vpc_analog", "vpc_interlock", "vpc_counter_latch",
         "vpc_timers_down_up", "vpc_add_every_scan", "vpc_add_once_a_second",
-        // CPM1, seed 002
+        // CPM1, Omron CPM1 guide
         "cpm1_and", "cpm1_or", "cpm1_out_not", "cpm1_and_ld", "cpm1_or_ld", "cpm1_keep",
         "cpm1_difu_difd", "cpm1_jmp_jme", "cpm1_tim_timh", "cpm1_cnt_cntr",
         // CPM1, Omron W353 (issue 14): application instructions, subroutines, steps
         "cpm1_add_carry", "cpm1_sft", "cpm1_cmp_timer", "cpm1_step_snxt", "cpm1_subroutine",
         "cpm1_mov_bcd_set_value",
-        // PL110, seed 003 4.2
+        // PL110, PL110 manual 4.2
         "pl110_contacts", "pl110_timers", "pl110_counters", "pl110_movind",
-        // PL110, seed 003 2.1 and 4.2 (issue 14): TONR, presets, SM0.13, trimmers, VD / SMD
+        // PL110, PL110 manual 2.1 and 4.2 (issue 14): TONR, presets, SM0.13, trimmers, VD / SMD
         "pl110_tonr_scan_toggle", "pl110_presets", "pl110_sm0_13", "pl110_trimmer_preset",
         "pl110_double_words",
-        // Vigor, seed 001 (issue 14): digits and index registers, CCD, RS, timer resolutions
+        // Vigor, Vigor M/VB/VH communication manual and PLC concepts (WPLSoft family) (issue
+        // 14): digits and index registers, CCD, RS, timer resolutions
         "vigor_digits_index", "vigor_ccd_check_code", "vigor_send_frame",
         "vigor_timer_resolutions"};
     const std::vector<std::string> names = goldenNames();

@@ -1,4 +1,4 @@
-// PL110 boxes on the real target table and listing (seed 003 4.2.4 - 4.2.9): what the golden
+// PL110 boxes on the real target table and listing (PL110 manual 4.2.4 - 4.2.9): what the golden
 // traces in tests/data/sim/pl110_*.il do not pin.
 
 #include "model/checks/checks.h"
@@ -15,7 +15,7 @@ using test::Pl110;
 
 } // namespace
 
-// Contacts and coils of seed 003 4.2.1 - 4.2.18 on the real PL110 table.
+// Contacts and coils of the PL110 manual, 4.2.1 - 4.2.18, on the real PL110 table.
 TEST(Pl110Contacts, PIsOnForOneScanWhenThePowerFlowRises) {
     Pl110 s("LD I1\nP\nOUT Q1\nEND");
     ASSERT_TRUE(s.result.ok());
@@ -227,7 +227,7 @@ TEST(SimulationStart, ProgramWithACheckErrorDoesNotStart) {
     EXPECT_TRUE(prepareProgram(good.list).ok());
 }
 
-// seed 003 4.2.4: TONR "consente di accumulare il tempo per piu periodi di attivazione della
+// PL110 manual 4.2.4: TONR "consente di accumulare il tempo per piu periodi di attivazione della
 // bobina" - every ON period counts whole, also one of a single scan.
 TEST(Pl110Timer, TonrAccumulatesOneScanActivations) {
     Pl110 s("LD I1\nTONR T1 100 10\nLD I1\nTON T2 100 10\nEND");
@@ -251,7 +251,7 @@ TEST(Pl110Timer, TonrCountsTheWholeOfEveryOnPeriod) {
     EXPECT_EQ(s.value("T1"), 12); // 3 x 40 ms in 10 ms units: no first scan lost
 }
 
-// seed 003 2.1.9 / 2.1.11: PT and PV are where the presets are kept.
+// PL110 manual 2.1.9 / 2.1.11: PT and PV are where the presets are kept.
 TEST(Pl110Presets, PtAndPvReadThePresetsInForce) {
     Pl110 s("LD SM0.0\nMOV PT3 V0\nLD SM0.0\nMOV PV2 V1\nLD I1\nTON T3 25 100\n"
             "LD I1\nLD I2\nLD I3\nMUP C2 7\nLD I1\nTON T4 V10 100\nLD SM0.0\nMOV PT4 V2\nEND");
@@ -368,7 +368,7 @@ TEST(Pl110Operands, SbitOnABitAreaCountsFromTheWordsFirstBit) {
     EXPECT_FALSE(s.bit("M2"));
 }
 
-// seed 003 2.1.2 lists the special markers up to SM185; 5.4's user-page program enables
+// PL110 manual 2.1.2 lists the special markers up to SM185; 5.4's user-page program enables
 // pages 17 and 18 with SMW103.0 and SMW103.1 in its initialisation code.
 TEST(Pl110SpecialMarkers, TheWholeDocumentedRangeIsAddressable) {
     Pl110 s("LD SM0.1\nSBIT SMW103 0\nLD SM0.1\nSBIT SMW103 1\nLD SM0.0\nMOV SMW105 SM185\n"
@@ -399,7 +399,7 @@ TEST(Pl110Sections, InitSectionIsAClearNotSupportedError) {
     EXPECT_TRUE(r.errors[0].message.contains(QStringLiteral("LD SM0.1")));
 }
 
-// seed 003 4.2.5: PV "viene confrontato con il valore corrente al termine di ogni ciclo del
+// PL110 manual 4.2.5: PV "viene confrontato con il valore corrente al termine di ogni ciclo del
 // programma": a contact after the box sees the bit of the previous cycle, and a write to C
 // later in the cycle decides the bit.
 TEST(Pl110Counter, TheCountBitIsComparedAtTheEndOfTheCycle) {
@@ -436,7 +436,7 @@ TEST(Pl110Counter, MdownIsOffWhileResetIsOnAndOnAtZero) {
     EXPECT_FALSE(s.bit("C1"));
 }
 
-// seed 003 2.1.2: SM0.5 TEST "la lettura degli ingressi digitali viene disabilitata. Lo stato
+// PL110 manual 2.1.2: SM0.5 TEST "la lettura degli ingressi digitali viene disabilitata. Lo stato
 // degli ingressi viene prelevato dalle word SM37" (SM37.0 -> I1, SM37.7 -> I8).
 TEST(Pl110TestMode, InputsComeFromSm37WhileSm05IsOn) {
     Pl110 s("LD I1\nOUT Q1\nLD I8\nOUT Q8\nLD I9\nOUT Q9\nLD M1\nOUT SM0.5\nEND");
@@ -462,8 +462,9 @@ TEST(Pl110TestMode, InputsComeFromSm37WhileSm05IsOn) {
     EXPECT_FALSE(s.bit("Q8"));
 }
 
-// seed 003 4.2.20's positioning example compares with a signed constant, "IF VD8 == #-1"
-// (on a single word here; the manual's own double word VD8 is golden trace pl110_double_words).
+// The positioning example of the PL110 manual, 4.2.20, compares with a signed constant,
+// "IF VD8 == #-1" (on a single word here; the manual's own double word VD8 is golden trace
+// pl110_double_words).
 TEST(Pl110Contacts, IfComparesWithASignedHashConstant) {
     Pl110 s("LD= V8 #-1\nOUT Q4\nLD= V8 1\nOUT Q3\nEND");
     ASSERT_TRUE(s.parsed.ok()) << s.parsed.errors.front().message.toStdString();
@@ -478,7 +479,7 @@ TEST(Pl110Contacts, IfComparesWithASignedHashConstant) {
     EXPECT_TRUE(s.bit("Q3"));
 }
 
-// Issue 14: what `check` warns as not simulated (SIM101, seed 003 2.1.2) the simulator says
+// Issue 14: what `check` warns as not simulated (SIM101, PL110 manual 2.1.2) the simulator says
 // again when it starts, with the same words, and SM106 keeps what the program wrote.
 TEST(Pl110Unmodelled, TheSimulatorWarnsAsCheckDoesAndKeepsThePageRequest) {
     Pl110 s("LD SM0.0\nMOV 17 SM106\nLD SM110.3\nOUT Q1\nEND");

@@ -1,4 +1,4 @@
-// PL110 double words, trimmers and SM0.13 on the real table (seed 003 2.1.1, 2.1.2, 4.2.4,
+// PL110 double words, trimmers and SM0.13 on the real table (PL110 manual 2.1.1, 2.1.2, 4.2.4,
 // 4.2.20; issue 14), and the Vigor timers of 1 ms and 10 ms and the accumulating ones; the
 // golden traces pl110_double_words, pl110_sm0_13, pl110_trimmer_preset and
 // vigor_timer_resolutions show the manuals' examples.
@@ -122,8 +122,9 @@ TEST(VigorTimers, TenMillisecondTimersCountHundredthsAtEveryScanPeriod) {
     EXPECT_TRUE(s.bit("T249"));
 }
 
-// docs/targets.md "Scan time": seed 004's D1010..D1012 (Delta's WPLSoft family) are data on the
-// Vigor - seed 001's LINK / MBUS tables use D1000.. as data - and the scan time is D9010..D9012.
+// docs/targets.md "Scan time": the D1010..D1012 of PLC concepts (WPLSoft family) 1.1 (Delta's)
+// are data on the Vigor - the LINK / MBUS tables of the Vigor M/VB/VH communication manual use
+// D1000.. as data - and the scan time is D9010..D9012.
 TEST(VigorScanTime, D9010HoldsTheScanTimeAndD1010IsAPlainRegister) {
     Vigor s("LD M9000\nMOV K1234 D1010\nEND");
     ASSERT_TRUE(s.result.ok());

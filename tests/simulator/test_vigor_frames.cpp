@@ -1,6 +1,7 @@
-// VigorFrames instructions that seed 001's communication programs use to build and check a frame
-// (issue 14): CCD, the check code (B-3-9 "Accumulate then take the last two digits (HEX)",
-// B-4-5), and DMOV, the 32-bit move that writes two characters a call.
+// VigorFrames instructions that the communication programs of the Vigor M/VB/VH communication
+// manual use to build and check a frame (issue 14): CCD, the check code (B-3-9 "Accumulate then
+// take the last two digits (HEX)", B-4-5), and DMOV, the 32-bit move that writes two
+// characters a call.
 
 #include "model/checks/checks.h"
 #include "real_target_sim.h"
@@ -33,10 +34,11 @@ std::vector<QString> codes(const std::vector<model::Diagnostic> &found) {
 
 } // namespace
 
-// Seed 001 B-3-9: "30H+31H+35H+31H+31H+43H+30H+30H+30H+32H+03H=200H", one character a word
-// with M9161 ON ("Assign 8-bits processing mode"), summed by CCD D2 D102 K11 as the master's
-// program does. D+1 holds the parity, bit k ON when an odd number of the bytes have bit k ON
-// (the FX / Delta rule): the XOR of the bytes, 76h.
+// Vigor M/VB/VH communication manual, B-3-9:
+// "30H+31H+35H+31H+31H+43H+30H+30H+30H+32H+03H=200H", one character a word with M9161 ON ("Assign
+// 8-bits processing mode"), summed by CCD D2 D102 K11 as the master's program does. D+1 holds the
+// parity, bit k ON when an odd number of the bytes have bit k ON (the FX / Delta rule): the XOR of
+// the bytes, 76h.
 TEST(VigorCheckCode, TheSeedFrameSumsTo200hInEightBitMode) {
     VigorFrames s("LD M9000\nOUT M9161\nLD M9000\nCCD D2 D102 K11\nEND");
     ASSERT_TRUE(s.result.ok()) << s.result.diagnostics.front().message.toStdString();
@@ -117,8 +119,8 @@ TEST(VigorCheckCode, CountOutsideOneTo256IsRefusedByCheckAndSimulator) {
     EXPECT_EQ(s.result.diagnostics.front().message, found.front().message);
 }
 
-// Seed 001 B-4-5: "DMOV H00310035 D4" puts "5" (35h) into D4 and "1" (31h) into D5: the low
-// word first, as the FX family's 32-bit instructions store a pair.
+// Vigor M/VB/VH communication manual, B-4-5: "DMOV H00310035 D4" puts "5" (35h) into D4 and
+// "1" (31h) into D5: the low word first, as the FX family's 32-bit instructions store a pair.
 TEST(VigorDoubleMove, TheLowWordGoesFirst) {
     VigorFrames s("LD M9000\nDMOV H00310035 D4\nLD M9000\nDMOV D4 D10\nLD M9000\nDMOV K-2 D20\n"
                   "LD M9000\nDMOV K100000 D30\nEND");

@@ -1,7 +1,8 @@
 // Digit-designated operands and index registers on the real VigorBits table (issue 14; V/Z as
-// seed 001's operand tables name them, E/F as seed 004's WPLSoft family does): what MOV, CMP, ADD
-// and the other word instructions read and write, the octal X/Y numbering inside a group, and the
-// operation error of an index that lands outside its areas.
+// the operand tables of the Vigor M/VB/VH communication manual name them, E/F as PLC concepts
+// (WPLSoft family) 1.4 does): what MOV, CMP, ADD and the other word instructions read and
+// write, the octal X/Y numbering inside a group, and the operation error of an index that
+// lands outside its areas.
 
 #include "real_target_sim.h"
 
@@ -138,7 +139,7 @@ TEST(VigorIndexRegisters, ProgramsSetTheirOwnIndex) {
     EXPECT_EQ(s.value("D11"), 1);
     EXPECT_EQ(s.value("D13"), 3);
     EXPECT_EQ(s.value("Z0"), 4);
-    EXPECT_EQ(s.value("E0"), 4); // seed 004's name of the same register
+    EXPECT_EQ(s.value("E0"), 4); // the name PLC concepts (WPLSoft family) gives Z0
 }
 
 TEST(VigorIndexRegisters, IndexedGroupsAndTimerSetValues) {

@@ -1,6 +1,7 @@
 // Word logic and BCD conversion on the real Vigor and CPM1 tables (issue 14): Vigor WAND /
-// WOR / WXOR / CML / BCD / BIN (seed 001's programs use WAND D104 HFF D104) and CPM1
-// ANDW(34) / ORW(35) / XORW(36) / COM(29) / BCD(24) / BIN(23) (Omron W353).
+// WOR / WXOR / CML / BCD / BIN (the programs of the Vigor M/VB/VH communication manual use WAND
+// D104 HFF D104) and CPM1 ANDW(34) / ORW(35) / XORW(36) / COM(29) / BCD(24) / BIN(23) (Omron
+// W353).
 
 #include "real_target_sim.h"
 
@@ -17,7 +18,8 @@ using test::Cpm1;
 
 } // namespace
 
-// seed 001 (the MODBUS examples): "WAND D104 HFF D104" keeps the low byte of D104.
+// Vigor M/VB/VH communication manual (the MODBUS examples): "WAND D104 HFF D104" keeps the low
+// byte of D104.
 TEST(VigorWordLogic, WandKeepsTheBitsOfTheMask) {
     Vigor s("LD M9000\nWAND D104 HFF D104\nEND");
     ASSERT_TRUE(s.result.ok());
