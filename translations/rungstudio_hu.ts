@@ -1453,7 +1453,7 @@ PLC after serve restarts</source>
 <context>
     <name>rung::app::MainWindow</name>
     <message>
-        <location filename="../app/gui/main_window.cpp" line="+216"/>
+        <location filename="../app/gui/main_window.cpp" line="+217"/>
         <source>Problems</source>
         <translation>Problémák</translation>
     </message>
@@ -1470,7 +1470,7 @@ PLC after serve restarts</source>
         <translation>Szimbólumok</translation>
     </message>
     <message>
-        <location filename="../app/gui/main_window_actions.cpp" line="+52"/>
+        <location filename="../app/gui/main_window_actions.cpp" line="+53"/>
         <source>&amp;File</source>
         <translation>&amp;Fájl</translation>
     </message>
@@ -1928,103 +1928,12 @@ Ctrl+Z / Ctrl+Y: visszavonás / mégis, Ctrl+görgő: nagyítás, F4: a program 
         <translation>Szimbólumok exportálása</translation>
     </message>
     <message>
-        <location filename="../app/gui/main_window_simulation.cpp" line="+38"/>
+        <location filename="../app/gui/main_window_simulation.cpp" line="+32"/>
         <source>The instruction list has errors, so the ladder still shows the last program without them: correct the list (or undo) before simulating</source>
         <translation>Az utasításlistában hibák vannak, ezért a létra még az utolsó hibátlan programot mutatja: a szimuláció előtt javítsa a listát (vagy vonja vissza a módosítást)</translation>
     </message>
     <message>
-        <location line="+62"/>
-        <source>&amp;Simulation</source>
-        <translation>Szi&amp;muláció</translation>
-    </message>
-    <message>
-        <location line="+10"/>
-        <source>&amp;Run</source>
-        <translation>&amp;Futtatás</translation>
-    </message>
-    <message>
-        <location line="+2"/>
-        <source>&amp;Pause</source>
-        <translation>&amp;Szünet</translation>
-    </message>
-    <message>
-        <location line="+2"/>
-        <source>&amp;Stop (Back to Power-On)</source>
-        <translation>&amp;Leállítás (bekapcsolási állapot)</translation>
-    </message>
-    <message>
-        <location line="+2"/>
-        <source>Single S&amp;can</source>
-        <translation>Egy &amp;ciklus</translation>
-    </message>
-    <message>
-        <location line="+3"/>
-        <source>Po&amp;wer Cycle</source>
-        <translation>&amp;Ki-bekapcsolás</translation>
-    </message>
-    <message>
-        <location line="+2"/>
-        <source>Run Sc&amp;ans...</source>
-        <translation>Ciklus&amp;ok futtatása...</translation>
-    </message>
-    <message>
-        <location line="+4"/>
-        <source>Run Scans</source>
-        <translation>Ciklusok futtatása</translation>
-    </message>
-    <message>
-        <location line="+0"/>
-        <source>Scans to run:</source>
-        <translation>Futtatandó ciklusok:</translation>
-    </message>
-    <message>
-        <location line="+7"/>
-        <source>R&amp;un For...</source>
-        <translation>Futtatás enn&amp;yi ideig...</translation>
-    </message>
-    <message>
-        <location line="+4"/>
-        <source>Run For</source>
-        <translation>Futtatás ennyi ideig</translation>
-    </message>
-    <message>
-        <location line="+0"/>
-        <source>Simulated time to run, in seconds:</source>
-        <translation>Szimulált futási idő másodpercben:</translation>
-    </message>
-    <message>
-        <location line="+7"/>
-        <source>Spee&amp;d</source>
-        <translation>S&amp;ebesség</translation>
-    </message>
-    <message>
-        <location line="+3"/>
-        <source>x%1 Real Time</source>
-        <translation>x%1 valós idő</translation>
-    </message>
-    <message>
-        <location line="+1"/>
-        <source>As &amp;Fast as Possible</source>
-        <translation>A lehető &amp;leggyorsabban</translation>
-    </message>
-    <message>
-        <location line="+9"/>
-        <source>Scan Peri&amp;od</source>
-        <translation>Cikl&amp;usidő</translation>
-    </message>
-    <message>
-        <location line="+4"/>
-        <source>%1 ms</source>
-        <extracomment>the virtual scan period, e.g. &quot;10 ms&quot;</extracomment>
-        <translation>%1 ms</translation>
-    </message>
-    <message>
-        <location line="+10"/>
-        <source>Release All &amp;Forces</source>
-        <translation>&amp;Minden kényszerítés feloldása</translation>
-    </message>
-    <message>
-        <location filename="../app/gui/main_window_monitor.cpp" line="+42"/>
+        <location filename="../app/gui/main_window_monitor.cpp" line="+44"/>
         <source>Simulation</source>
         <translation>Szimuláció</translation>
     </message>
@@ -3014,6 +2923,100 @@ A FÁJL utasításlista (.il), létradiagram-szöveg (.ladder) vagy projekt (.ru
         <source>Recorded: the last %1 of simulated time (scans %2..%3, %4 MB); at least the last hour is kept</source>
         <extracomment>%1 h:mm:ss of simulated time, %2 %3 first and last scan, %4 memory in MB</extracomment>
         <translation>Rögzítve: a szimulált idő utolsó %1 része (%2..%3. ciklus, %4 MB); legalább az utolsó óra megmarad</translation>
+    </message>
+</context>
+<context>
+    <name>rung::app::SimulationMenu</name>
+    <message>
+        <location filename="../app/gui/simulation_menu.cpp" line="+46"/>
+        <source>&amp;Simulation</source>
+        <translation>Szi&amp;muláció</translation>
+    </message>
+    <message>
+        <location line="+11"/>
+        <source>&amp;Run</source>
+        <translation>&amp;Futtatás</translation>
+    </message>
+    <message>
+        <location line="+2"/>
+        <source>&amp;Pause</source>
+        <translation>&amp;Szünet</translation>
+    </message>
+    <message>
+        <location line="+2"/>
+        <source>&amp;Stop (Back to Power-On)</source>
+        <translation>&amp;Leállítás (bekapcsolási állapot)</translation>
+    </message>
+    <message>
+        <location line="+2"/>
+        <source>Single S&amp;can</source>
+        <translation>Egy &amp;ciklus</translation>
+    </message>
+    <message>
+        <location line="+3"/>
+        <source>Po&amp;wer Cycle</source>
+        <translation>&amp;Ki-bekapcsolás</translation>
+    </message>
+    <message>
+        <location line="+2"/>
+        <source>Run Sc&amp;ans...</source>
+        <translation>Ciklus&amp;ok futtatása...</translation>
+    </message>
+    <message>
+        <location line="+4"/>
+        <source>Run Scans</source>
+        <translation>Ciklusok futtatása</translation>
+    </message>
+    <message>
+        <location line="+0"/>
+        <source>Scans to run:</source>
+        <translation>Futtatandó ciklusok:</translation>
+    </message>
+    <message>
+        <location line="+7"/>
+        <source>R&amp;un For...</source>
+        <translation>Futtatás enn&amp;yi ideig...</translation>
+    </message>
+    <message>
+        <location line="+4"/>
+        <source>Run For</source>
+        <translation>Futtatás ennyi ideig</translation>
+    </message>
+    <message>
+        <location line="+0"/>
+        <source>Simulated time to run, in seconds:</source>
+        <translation>Szimulált futási idő másodpercben:</translation>
+    </message>
+    <message>
+        <location line="+7"/>
+        <source>Spee&amp;d</source>
+        <translation>S&amp;ebesség</translation>
+    </message>
+    <message>
+        <location line="+3"/>
+        <source>x%1 Real Time</source>
+        <translation>x%1 valós idő</translation>
+    </message>
+    <message>
+        <location line="+1"/>
+        <source>As &amp;Fast as Possible</source>
+        <translation>A lehető &amp;leggyorsabban</translation>
+    </message>
+    <message>
+        <location line="+9"/>
+        <source>Scan Peri&amp;od</source>
+        <translation>Cikl&amp;usidő</translation>
+    </message>
+    <message>
+        <location line="+4"/>
+        <source>%1 ms</source>
+        <extracomment>the virtual scan period, e.g. &quot;10 ms&quot;</extracomment>
+        <translation>%1 ms</translation>
+    </message>
+    <message>
+        <location line="+10"/>
+        <source>Release All &amp;Forces</source>
+        <translation>&amp;Minden kényszerítés feloldása</translation>
     </message>
 </context>
 <context>

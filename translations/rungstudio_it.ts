@@ -1455,7 +1455,7 @@ PLC dopo il riavvio di serve</translation>
 <context>
     <name>rung::app::MainWindow</name>
     <message>
-        <location filename="../app/gui/main_window.cpp" line="+216"/>
+        <location filename="../app/gui/main_window.cpp" line="+217"/>
         <source>Problems</source>
         <translation>Problemi</translation>
     </message>
@@ -1472,7 +1472,7 @@ PLC dopo il riavvio di serve</translation>
         <translation>Simboli</translation>
     </message>
     <message>
-        <location filename="../app/gui/main_window_actions.cpp" line="+52"/>
+        <location filename="../app/gui/main_window_actions.cpp" line="+53"/>
         <source>&amp;File</source>
         <translation>&amp;File</translation>
     </message>
@@ -1935,103 +1935,12 @@ Ctrl+Z / Ctrl+Y: annulla / ripeti, Ctrl+rotellina: zoom, F4: verifica il program
         <translation>Esporta simboli</translation>
     </message>
     <message>
-        <location filename="../app/gui/main_window_simulation.cpp" line="+38"/>
+        <location filename="../app/gui/main_window_simulation.cpp" line="+32"/>
         <source>The instruction list has errors, so the ladder still shows the last program without them: correct the list (or undo) before simulating</source>
         <translation>La lista istruzioni contiene errori, quindi il ladder mostra ancora l&apos;ultimo programma senza errori: correggere la lista (o annullare) prima di simulare</translation>
     </message>
     <message>
-        <location line="+62"/>
-        <source>&amp;Simulation</source>
-        <translation>&amp;Simulazione</translation>
-    </message>
-    <message>
-        <location line="+10"/>
-        <source>&amp;Run</source>
-        <translation>&amp;Esegui</translation>
-    </message>
-    <message>
-        <location line="+2"/>
-        <source>&amp;Pause</source>
-        <translation>&amp;Pausa</translation>
-    </message>
-    <message>
-        <location line="+2"/>
-        <source>&amp;Stop (Back to Power-On)</source>
-        <translation>&amp;Stop (stato di accensione)</translation>
-    </message>
-    <message>
-        <location line="+2"/>
-        <source>Single S&amp;can</source>
-        <translation>Singola s&amp;cansione</translation>
-    </message>
-    <message>
-        <location line="+3"/>
-        <source>Po&amp;wer Cycle</source>
-        <translation>Spegni e &amp;riaccendi</translation>
-    </message>
-    <message>
-        <location line="+2"/>
-        <source>Run Sc&amp;ans...</source>
-        <translation>Esegui scansio&amp;ni...</translation>
-    </message>
-    <message>
-        <location line="+4"/>
-        <source>Run Scans</source>
-        <translation>Esegui scansioni</translation>
-    </message>
-    <message>
-        <location line="+0"/>
-        <source>Scans to run:</source>
-        <translation>Scansioni da eseguire:</translation>
-    </message>
-    <message>
-        <location line="+7"/>
-        <source>R&amp;un For...</source>
-        <translation>Esegu&amp;i per...</translation>
-    </message>
-    <message>
-        <location line="+4"/>
-        <source>Run For</source>
-        <translation>Esegui per</translation>
-    </message>
-    <message>
-        <location line="+0"/>
-        <source>Simulated time to run, in seconds:</source>
-        <translation>Tempo simulato da eseguire, in secondi:</translation>
-    </message>
-    <message>
-        <location line="+7"/>
-        <source>Spee&amp;d</source>
-        <translation>&amp;Velocità</translation>
-    </message>
-    <message>
-        <location line="+3"/>
-        <source>x%1 Real Time</source>
-        <translation>x%1 tempo reale</translation>
-    </message>
-    <message>
-        <location line="+1"/>
-        <source>As &amp;Fast as Possible</source>
-        <translation>Il più &amp;veloce possibile</translation>
-    </message>
-    <message>
-        <location line="+9"/>
-        <source>Scan Peri&amp;od</source>
-        <translation>Peri&amp;odo di scansione</translation>
-    </message>
-    <message>
-        <location line="+4"/>
-        <source>%1 ms</source>
-        <extracomment>the virtual scan period, e.g. &quot;10 ms&quot;</extracomment>
-        <translation>%1 ms</translation>
-    </message>
-    <message>
-        <location line="+10"/>
-        <source>Release All &amp;Forces</source>
-        <translation>Rilascia tutte le &amp;forzature</translation>
-    </message>
-    <message>
-        <location filename="../app/gui/main_window_monitor.cpp" line="+42"/>
+        <location filename="../app/gui/main_window_monitor.cpp" line="+44"/>
         <source>Simulation</source>
         <translation>Simulazione</translation>
     </message>
@@ -3024,6 +2933,100 @@ FILE è una lista istruzioni (.il), un testo ladder (.ladder) o un progetto (.ru
         <source>Recorded: the last %1 of simulated time (scans %2..%3, %4 MB); at least the last hour is kept</source>
         <extracomment>%1 h:mm:ss of simulated time, %2 %3 first and last scan, %4 memory in MB</extracomment>
         <translation>Registrato: gli ultimi %1 di tempo simulato (scansioni %2..%3, %4 MB); si conserva almeno l&apos;ultima ora</translation>
+    </message>
+</context>
+<context>
+    <name>rung::app::SimulationMenu</name>
+    <message>
+        <location filename="../app/gui/simulation_menu.cpp" line="+46"/>
+        <source>&amp;Simulation</source>
+        <translation>&amp;Simulazione</translation>
+    </message>
+    <message>
+        <location line="+11"/>
+        <source>&amp;Run</source>
+        <translation>&amp;Esegui</translation>
+    </message>
+    <message>
+        <location line="+2"/>
+        <source>&amp;Pause</source>
+        <translation>&amp;Pausa</translation>
+    </message>
+    <message>
+        <location line="+2"/>
+        <source>&amp;Stop (Back to Power-On)</source>
+        <translation>&amp;Stop (stato di accensione)</translation>
+    </message>
+    <message>
+        <location line="+2"/>
+        <source>Single S&amp;can</source>
+        <translation>Singola s&amp;cansione</translation>
+    </message>
+    <message>
+        <location line="+3"/>
+        <source>Po&amp;wer Cycle</source>
+        <translation>Spegni e &amp;riaccendi</translation>
+    </message>
+    <message>
+        <location line="+2"/>
+        <source>Run Sc&amp;ans...</source>
+        <translation>Esegui scansio&amp;ni...</translation>
+    </message>
+    <message>
+        <location line="+4"/>
+        <source>Run Scans</source>
+        <translation>Esegui scansioni</translation>
+    </message>
+    <message>
+        <location line="+0"/>
+        <source>Scans to run:</source>
+        <translation>Scansioni da eseguire:</translation>
+    </message>
+    <message>
+        <location line="+7"/>
+        <source>R&amp;un For...</source>
+        <translation>Esegu&amp;i per...</translation>
+    </message>
+    <message>
+        <location line="+4"/>
+        <source>Run For</source>
+        <translation>Esegui per</translation>
+    </message>
+    <message>
+        <location line="+0"/>
+        <source>Simulated time to run, in seconds:</source>
+        <translation>Tempo simulato da eseguire, in secondi:</translation>
+    </message>
+    <message>
+        <location line="+7"/>
+        <source>Spee&amp;d</source>
+        <translation>&amp;Velocità</translation>
+    </message>
+    <message>
+        <location line="+3"/>
+        <source>x%1 Real Time</source>
+        <translation>x%1 tempo reale</translation>
+    </message>
+    <message>
+        <location line="+1"/>
+        <source>As &amp;Fast as Possible</source>
+        <translation>Il più &amp;veloce possibile</translation>
+    </message>
+    <message>
+        <location line="+9"/>
+        <source>Scan Peri&amp;od</source>
+        <translation>Peri&amp;odo di scansione</translation>
+    </message>
+    <message>
+        <location line="+4"/>
+        <source>%1 ms</source>
+        <extracomment>the virtual scan period, e.g. &quot;10 ms&quot;</extracomment>
+        <translation>%1 ms</translation>
+    </message>
+    <message>
+        <location line="+10"/>
+        <source>Release All &amp;Forces</source>
+        <translation>Rilascia tutte le &amp;forzature</translation>
     </message>
 </context>
 <context>

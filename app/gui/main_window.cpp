@@ -1,4 +1,5 @@
 #include "main_window.h"
+#include "simulation_menu.h"
 
 #include "connection_panel.h"
 #include "debug_controller.h"
@@ -398,7 +399,7 @@ void MainWindow::retranslate() {
         dock->setWindowTitle(tr("Cross Reference"));
     m_symbolsLabel->setText(tr("Symbols"));
     m_debug->retranslate();
-    updateSimulationStatus();
+    m_simulationMenu->updateStatus();
     retranslatePanels();
     if (m_tabs->count() == 2) {
         m_tabs->setTabText(0, tr("Ladder"));

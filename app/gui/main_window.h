@@ -55,6 +55,7 @@ class OnlineController;
 class RecoveryFile;
 class ScanDebuggerView;
 class SimulationController;
+class SimulationMenu;
 class SimulationPanel;
 class SymbolTable;
 
@@ -150,8 +151,6 @@ private:
     void setPanelsSource(model::MonitorSource *source);
     // The simulation (main_window_simulation.cpp).
     void setupSimulation();
-    void buildSimulationMenu(QToolBar *bar);
-    void updateSimulationStatus();
     // The origin's label in the status bar and the title (main_window_monitor.cpp).
     void updateMonitorLabel();
 
@@ -177,8 +176,7 @@ private:
     QLabel *m_statusSteps;
     ElidingLabel *m_statusCursor;
     SimulationController *m_simulation = nullptr;
-    ElidingLabel *m_statusSimulation = nullptr;
-    QLabel *m_statusHistory = nullptr;
+    SimulationMenu *m_simulationMenu = nullptr; // the Simulation menu and status
     DebugController *m_debug = nullptr;
     OnlineController *m_online = nullptr; // the connection dock, the Online menu
     QPointer<model::MonitorSource> m_monitorSource;

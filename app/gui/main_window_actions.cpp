@@ -1,4 +1,5 @@
 #include "main_window.h"
+#include "simulation_menu.h"
 
 #include "about_dialog.h"
 #include "dialogs.h"
@@ -240,9 +241,9 @@ void MainWindow::buildActions() {
         ->setShortcut(QKeySequence::ZoomOut);
     view->addAction(tr("&Check Program"), this, [this] { m_listing->refreshFromDocument(); })
         ->setShortcut(Qt::Key_F4);
-    addPanelActions(view);           // main_window_panels.cpp
-    buildSimulationMenu(bar);        // main_window_simulation.cpp
-    m_online->addActions(bar, view); // online_controller.cpp
+    addPanelActions(view);             // main_window_panels.cpp
+    m_simulationMenu->addActions(bar); // simulation_menu.cpp
+    m_online->addActions(bar, view);   // online_controller.cpp
 
     QMenu *language = menuBar()->addMenu(tr("&Language"));
     auto *group = new QActionGroup(language);

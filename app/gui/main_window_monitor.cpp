@@ -4,6 +4,7 @@
 // more line in setMonitorSource.
 
 #include "main_window.h"
+#include "simulation_menu.h"
 
 #include "online_controller.h"
 
@@ -33,7 +34,8 @@ void MainWindow::setMonitorSource(model::MonitorSource *source, MonitorOrigin or
     m_ioPanel->setMonitorSource(source);
     updateMonitorLabel();
     updateTitle();
-    updateSimulationStatus();
+    if (m_simulationMenu)
+        m_simulationMenu->updateStatus();
 }
 
 QString MainWindow::originText(MonitorOrigin origin) {

@@ -188,6 +188,7 @@ struct DialogFit : test::WindowFixture, ::testing::WithParamInterface<const char
 TEST_P(DialogFit, EveryDialogFitsItsTitleAndTexts) {
     const char *mw = "rung::app::MainWindow";
     const char *files = "rung::app::FileController";
+    const char *simulation = "rung::app::SimulationMenu";
     expectFits("New Project", [&] { entry(files, "&New Project...")->trigger(); });
     expectFits("Find Device", [&] { entry(mw, "&Find Device...")->trigger(); });
     expectFits("Replace Device", [&] { entry(mw, "Replace &Device...")->trigger(); });
@@ -196,8 +197,8 @@ TEST_P(DialogFit, EveryDialogFitsItsTitleAndTexts) {
     expectFits("About", [&] { entry(mw, "&About Rung Studio")->trigger(); });
     // The simulation's and the debugger's dialogs: "Ciklus…tatása", "Esegui… nsioni" and a
     // literal "&Compare" were cut or shown so.
-    expectFits("Run Scans", [&] { entry(mw, "Run Sc&ans...")->trigger(); });
-    expectFits("Run For", [&] { entry(mw, "R&un For...")->trigger(); });
+    expectFits("Run Scans", [&] { entry(simulation, "Run Sc&ans...")->trigger(); });
+    expectFits("Run For", [&] { entry(simulation, "R&un For...")->trigger(); });
     expectFits("Breakpoint Condition", [&] { window.debugging()->editBreakpointCondition(0); });
     // Save the changes? (New Project on a changed program asks first.)
     window.document()->insertRung(0, window.document()->ladder().rungs.front());

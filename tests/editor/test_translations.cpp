@@ -147,10 +147,12 @@ TEST_P(Catalogue, IsEmbeddedAndTranslatesTheMenusTheDiagnosticsAndTheEditorsOwnM
     // Every title comes from the catalogue; a word may stay as it is ("&File" in Italian).
     int changed = 0;
     for (int i = 0; i < menus.size(); ++i) {
-        // The Online menu is its controller's (online_controller.h), the others the window's.
-        const char *context = englishMenus[i] == QLatin1String("&Online")
-                                  ? "rung::app::OnlineController"
-                                  : "rung::app::MainWindow";
+        // The Simulation and Online menus are their controllers' (simulation_menu.h,
+        // online_controller.h), the others the window's.
+        const char *context =
+            englishMenus[i] == QLatin1String("&Online")       ? "rung::app::OnlineController"
+            : englishMenus[i] == QLatin1String("&Simulation") ? "rung::app::SimulationMenu"
+                                                              : "rung::app::MainWindow";
         EXPECT_EQ(menus[i].toStdString(),
                   QCoreApplication::translate(context, englishMenus[i].toUtf8().constData())
                       .toStdString());
