@@ -23,7 +23,7 @@
 <context>
     <name>rung::app::MainWindow</name>
     <message numerus="yes">
-        <location filename="../app/gui/main_window.cpp" line="+282"/>
+        <location filename="../app/gui/main_window.cpp" line="+262"/>
         <source>%n rung(s)</source>
         <translation>
             <numerusform>%n rung</numerusform>

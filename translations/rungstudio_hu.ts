@@ -1453,7 +1453,7 @@ PLC after serve restarts</source>
 <context>
     <name>rung::app::MainWindow</name>
     <message>
-        <location filename="../app/gui/main_window.cpp" line="+217"/>
+        <location filename="../app/gui/main_window.cpp" line="+197"/>
         <source>Problems</source>
         <translation>Problémák</translation>
     </message>
@@ -1817,7 +1817,7 @@ Ctrl+Z / Ctrl+Y: visszavonás / mégis, Ctrl+görgő: nagyítás, F4: a program 
         <translation>%1. létrafok, %2. sor, %3. oszlop</translation>
     </message>
     <message>
-        <location line="-204"/>
+        <location filename="../app/gui/main_window_monitor.cpp" line="+50"/>
         <source>Cannot save</source>
         <translation>A mentés nem sikerült</translation>
     </message>
@@ -1916,7 +1916,7 @@ Ctrl+Z / Ctrl+Y: visszavonás / mégis, Ctrl+görgő: nagyítás, F4: a program 
         </translation>
     </message>
     <message>
-        <location filename="../app/gui/main_window.cpp" line="+303"/>
+        <location filename="../app/gui/main_window.cpp" line="+99"/>
         <location filename="../app/gui/main_window_tools.cpp" line="-24"/>
         <source>Cross Reference</source>
         <translation>Kereszthivatkozás</translation>
@@ -1933,7 +1933,7 @@ Ctrl+Z / Ctrl+Y: visszavonás / mégis, Ctrl+görgő: nagyítás, F4: a program 
         <translation>Az utasításlistában hibák vannak, ezért a létra még az utolsó hibátlan programot mutatja: a szimuláció előtt javítsa a listát (vagy vonja vissza a módosítást)</translation>
     </message>
     <message>
-        <location filename="../app/gui/main_window_monitor.cpp" line="+44"/>
+        <location filename="../app/gui/main_window_monitor.cpp" line="+25"/>
         <source>Simulation</source>
         <translation>Szimuláció</translation>
     </message>
@@ -1978,7 +1978,7 @@ Ctrl+Z / Ctrl+Y: visszavonás / mégis, Ctrl+görgő: nagyítás, F4: a program 
         <translation>Idődiagram</translation>
     </message>
     <message>
-        <location filename="../app/gui/main_window.cpp" line="-307"/>
+        <location filename="../app/gui/main_window_monitor.cpp" line="-51"/>
         <source>Save Traffic Log</source>
         <translation>Adatforgalom-napló mentése</translation>
     </message>

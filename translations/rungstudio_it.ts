@@ -1455,7 +1455,7 @@ PLC dopo il riavvio di serve</translation>
 <context>
     <name>rung::app::MainWindow</name>
     <message>
-        <location filename="../app/gui/main_window.cpp" line="+217"/>
+        <location filename="../app/gui/main_window.cpp" line="+197"/>
         <source>Problems</source>
         <translation>Problemi</translation>
     </message>
@@ -1821,7 +1821,7 @@ Ctrl+Z / Ctrl+Y: annulla / ripeti, Ctrl+rotellina: zoom, F4: verifica il program
         <translation>Segmento %1, riga %2, colonna %3</translation>
     </message>
     <message>
-        <location line="-204"/>
+        <location filename="../app/gui/main_window_monitor.cpp" line="+50"/>
         <source>Cannot save</source>
         <translation>Impossibile salvare</translation>
     </message>
@@ -1923,7 +1923,7 @@ Ctrl+Z / Ctrl+Y: annulla / ripeti, Ctrl+rotellina: zoom, F4: verifica il program
         </translation>
     </message>
     <message>
-        <location filename="../app/gui/main_window.cpp" line="+303"/>
+        <location filename="../app/gui/main_window.cpp" line="+99"/>
         <location filename="../app/gui/main_window_tools.cpp" line="-24"/>
         <source>Cross Reference</source>
         <translation>Riferimenti incrociati</translation>
@@ -1940,7 +1940,7 @@ Ctrl+Z / Ctrl+Y: annulla / ripeti, Ctrl+rotellina: zoom, F4: verifica il program
         <translation>La lista istruzioni contiene errori, quindi il ladder mostra ancora l&apos;ultimo programma senza errori: correggere la lista (o annullare) prima di simulare</translation>
     </message>
     <message>
-        <location filename="../app/gui/main_window_monitor.cpp" line="+44"/>
+        <location filename="../app/gui/main_window_monitor.cpp" line="+25"/>
         <source>Simulation</source>
         <translation>Simulazione</translation>
     </message>
@@ -1985,7 +1985,7 @@ Ctrl+Z / Ctrl+Y: annulla / ripeti, Ctrl+rotellina: zoom, F4: verifica il program
         <translation>Diagramma temporale</translation>
     </message>
     <message>
-        <location filename="../app/gui/main_window.cpp" line="-307"/>
+        <location filename="../app/gui/main_window_monitor.cpp" line="-51"/>
         <source>Save Traffic Log</source>
         <translation>Salva il registro del traffico</translation>
     </message>

@@ -1,5 +1,4 @@
 #include "main_window.h"
-#include "simulation_menu.h"
 
 #include "connection_panel.h"
 #include "debug_controller.h"
@@ -10,6 +9,7 @@
 #include "listing_controller.h"
 #include "online_controller.h"
 #include "simulation_controller.h"
+#include "simulation_menu.h"
 #include "status_bar.h"
 #include "symbol_table.h"
 
@@ -74,27 +74,7 @@ MainWindow::MainWindow(QWidget *parent)
     buildCrossReference();
     buildMonitorDocks(); // main_window_panels.cpp
     setupSimulation();
-    m_online = new OnlineController(m_document, m_simulation, statusBar(), this, this);
-    connect(m_online, &OnlineController::sessionChanged, this,
-            [this](comms::OnlineSession *session) {
-                if (session) {
-                    setMonitorSource(session, MonitorOrigin::Online);
-                    setPanelsSource(session);
-                    return;
-                }
-                // Offline: the simulation's values again (or none).
-                setMonitorSource(m_simulation->monitorSource(), m_simulation->historyShown()
-                                                                    ? MonitorOrigin::History
-                                                                    : MonitorOrigin::Simulation);
-                setPanelsSource(m_simulation->session());
-            });
-    connect(m_online->panel(), &ConnectionPanel::saveTrafficRequested, this, [this] {
-        const QString path = m_files->askSavePath(tr("Save Traffic Log"), tr("Text files (*.txt)"),
-                                                  {QStringLiteral("txt")});
-        QString error;
-        if (!path.isEmpty() && !m_online->panel()->saveTraffic(path, &error))
-            QMessageBox::critical(this, tr("Cannot save"), error);
-    });
+    setupOnline(); // main_window_monitor.cpp
     // Editing docks left, live ones together, findings below (dock_layout.h); a saved
     // layout, restored below, keeps the user's own.
     const bool wide = screen()->availableGeometry().width() >= kWideScreen;

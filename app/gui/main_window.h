@@ -151,6 +151,8 @@ private:
     void setPanelsSource(model::MonitorSource *source);
     // The simulation (main_window_simulation.cpp).
     void setupSimulation();
+    // The online controller and what its session changes in the window (main_window_monitor.cpp).
+    void setupOnline();
     // The origin's label in the status bar and the title (main_window_monitor.cpp).
     void updateMonitorLabel();
 

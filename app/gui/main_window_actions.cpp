@@ -1,5 +1,4 @@
 #include "main_window.h"
-#include "simulation_menu.h"
 
 #include "about_dialog.h"
 #include "dialogs.h"
@@ -8,6 +7,7 @@
 #include "language.h"
 #include "listing_controller.h"
 #include "online_controller.h"
+#include "simulation_menu.h"
 #include "symbol_table.h"
 
 #include "app/languages.h"

@@ -4,9 +4,12 @@
 // more line in setMonitorSource.
 
 #include "main_window.h"
-#include "simulation_menu.h"
 
+#include "connection_panel.h"
+#include "file_controller.h"
 #include "online_controller.h"
+#include "simulation_controller.h"
+#include "simulation_menu.h"
 
 #include "editor/il_editor.h"
 #include "editor/io_panel.h"
@@ -14,11 +17,39 @@
 #include "editor/watch_list_view.h"
 
 #include "model/image/monitor_source.h"
+#include "simulator/session.h"
 
 #include <QLabel>
+#include <QMessageBox>
 #include <QStatusBar>
 
 namespace rung::app {
+
+// Online, the PLC's values go to the views; offline, the simulation's again. The traffic log
+// is saved where the window's files propose.
+void MainWindow::setupOnline() {
+    m_online = new OnlineController(m_document, m_simulation, statusBar(), this, this);
+    connect(m_online, &OnlineController::sessionChanged, this,
+            [this](comms::OnlineSession *session) {
+                if (session) {
+                    setMonitorSource(session, MonitorOrigin::Online);
+                    setPanelsSource(session);
+                    return;
+                }
+                // Offline: the simulation's values again (or none).
+                setMonitorSource(m_simulation->monitorSource(), m_simulation->historyShown()
+                                                                    ? MonitorOrigin::History
+                                                                    : MonitorOrigin::Simulation);
+                setPanelsSource(m_simulation->session());
+            });
+    connect(m_online->panel(), &ConnectionPanel::saveTrafficRequested, this, [this] {
+        const QString path = m_files->askSavePath(tr("Save Traffic Log"), tr("Text files (*.txt)"),
+                                                  {QStringLiteral("txt")});
+        QString error;
+        if (!path.isEmpty() && !m_online->panel()->saveTraffic(path, &error))
+            QMessageBox::critical(this, tr("Cannot save"), error);
+    });
+}
 
 void MainWindow::setMonitorSource(model::MonitorSource *source, MonitorOrigin origin) {
     // Online, the PLC keeps the views: the simulation's source waits until the IDE is offline.
