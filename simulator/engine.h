@@ -229,6 +229,51 @@ private:
         return set;
     }
     std::int32_t readBcdSet(const Step &s, std::size_t step);
+
+    // What execute() holds for a whole pass over the steps, for the instruction bodies its
+    // switch calls: the program, the image read (R), the image bits go to (W: R, or the VPC's
+    // write image) and the scan period. The bodies are defined inline where only execute()
+    // sees them (engine_execute.cpp, engine_timers.h, engine_arith.h) and always inlined into
+    // its loop: the scan compiles to one piece of code, as when they were written in the
+    // switch (callgrind, issue 34).
+    struct Pass {
+        const Program &program;
+        std::int32_t *R;
+        std::int32_t *W;
+        std::int64_t period;
+    };
+    static bool readBit(const std::int32_t *words, const BitRef &bit) {
+        return (static_cast<std::uint32_t>(words[bit.word]) & bit.mask) != 0;
+    }
+    static std::int32_t readWord(const std::int32_t *words, const WordOperand &o) {
+        return o.index >= 0 ? words[o.index] : o.constant;
+    }
+    // storeWord() for a step's word index.
+    void store(std::int32_t index, std::int64_t value, int width) {
+        storeWord(static_cast<std::size_t>(index), value, width);
+    }
+    // Bit instructions and control (engine_execute.cpp).
+    void resetTargets(const Step &s, std::int32_t *W);
+    void markStepStart(const Step &s, bool active, std::int32_t *R);
+    [[gnu::noinline, gnu::cold]] void subroutinesTooDeep(std::size_t step);
+    // Timers and counters (engine_timers.h); gateOpen: Area::enabledBy (PL110 SM0.13).
+    bool gateOpen(const Pass &pass, std::int32_t slot) const;
+    void timer(const Step &s, std::size_t step, bool on, const Pass &pass);
+    void counter(const Step &s, std::size_t step, bool input, bool reset, const Pass &pass);
+    void upDownCounter(const Step &s, std::size_t step, bool up, bool down, bool reset,
+                       const Pass &pass);
+    void plTimer(const Step &s, std::size_t step, bool on, const Pass &pass);
+    void plCounter(const Step &s, std::size_t step, bool up, bool down, bool reset,
+                   const Pass &pass);
+    // Word instructions with their input ON (engine_arith.h).
+    void transfer(const Step &s, std::size_t step, const Pass &pass);
+    void compare(const Step &s, const Pass &pass);
+    void multiply(const Step &s, const Pass &pass);
+    void divide(const Step &s, std::size_t step, const Pass &pass);
+    void math(const Step &s, std::size_t step, const Pass &pass);
+    void blockMove(const Step &s, const Pass &pass);
+    void doubleMove(const Step &s, const Pass &pass);
+    void indirectMove(const Step &s, std::size_t step, const Pass &pass);
     void wordLogic(const Step &s, std::size_t step); // Code::WordLogic, its input ON
     // engine_words.cpp: Vigor CCD with its input ON; whether it takes a byte a word now.
     void checkCode(const Step &s, std::size_t step);

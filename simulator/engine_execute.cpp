@@ -1,4 +1,6 @@
 #include "engine.h"
+#include "engine_arith.h"
+#include "engine_timers.h"
 
 #include "model/image/bcd.h"
 #include "model/listing/structure.h"
@@ -126,6 +128,40 @@ std::int64_t Engine::outOfDecimalRange(std::size_t step, std::int64_t value) {
     return wrapped;
 }
 
+// RST: the listed bits OFF, words 0, timer and counter elements cleared.
+[[gnu::always_inline]] inline void Engine::resetTargets(const Step &s, std::int32_t *W) {
+    const Program &p = *m_program;
+    for (int k = 0; k < s.count; ++k) {
+        const ResetTarget &t = p.resets[static_cast<std::size_t>(s.slot + k)];
+        if (t.bit.valid())
+            put(W, t.bit, false);
+        if (t.word >= 0)
+            store(t.word, 0, 32);
+        if (t.state >= 0) { // the input edge memory stays: no count on release
+            ElementState &st = m_states[static_cast<std::size_t>(t.state)];
+            st.accumulated = 0;
+            st.running = 0;
+        }
+    }
+}
+
+// STEP(08) B: 254.07 is ON in the cycle a step starts (W353).
+[[gnu::always_inline]] inline void Engine::markStepStart(const Step &s, bool active,
+                                                         std::int32_t *R) {
+    const BitRef &stepStart = m_program->flags.stepStart;
+    const bool started =
+        edge(m_edges[static_cast<std::size_t>(s.slot)], s.bit.valid() && active, false);
+    if (s.bit.valid() && stepStart.valid())
+        put(R, stepStart, started);
+}
+
+// Kept out of the scan loop, as outOfDecimalRange.
+void Engine::subroutinesTooDeep(std::size_t step) {
+    runtimeError(step, EngineTr::tr("subroutines nest deeper than %1 levels; the call "
+                                    "is skipped")
+                           .arg(kSubroutineDepth));
+}
+
 template <bool Record, bool Resumable, bool Special>
 std::size_t Engine::execute(std::size_t from, std::size_t to) {
     const Program &p = *m_program;
@@ -133,21 +169,9 @@ std::size_t Engine::execute(std::size_t from, std::size_t to) {
     const std::size_t n = p.steps.size();
     std::int32_t *R = m_words.data();
     std::int32_t *W = p.deferredBitWrites ? m_write.data() : R;
-    const std::int64_t period = m_stats.periodMs;
-    const std::int64_t timerMax = p.timerMax; // Limits::timerMax
-    auto rd = [R](const BitRef &b) {
-        return (static_cast<std::uint32_t>(R[b.word]) & b.mask) != 0;
-    };
-    auto rdw = [R](const WordOperand &o) { return o.index >= 0 ? R[o.index] : o.constant; };
-    auto gateOpen = [&](std::int32_t slot) {
-        if (p.gates.empty() || slot < 0)
-            return true;
-        const ElementGate &g = p.gates[static_cast<std::size_t>(slot)];
-        return !g.bit.valid() || rd(g.bit) == g.whenOn;
-    };
-    auto wrw = [&](std::int32_t index, std::int64_t v, int width) {
-        storeWord(static_cast<std::size_t>(index), v, width);
-    };
+    const Pass pass{p, R, W, m_stats.periodMs};
+    auto rd = [R](const BitRef &b) { return readBit(R, b); };
+    auto rdw = [R](const WordOperand &o) { return readWord(R, o); };
 
     bool blocks[kBlockStack];
     bool pushed[kPushStack];
@@ -197,6 +221,31 @@ std::size_t Engine::execute(std::size_t from, std::size_t to) {
         }
         return next;
     };
+    // A box's inputs before its last one wait on the block stack (the last is acc): they come
+    // off in reverse order.
+    auto pop = [&] { return bsp > 0 ? blocks[--bsp] : false; };
+    // A contact's value: the bit (NOT: inverted), its edge, a comparison.
+    auto contact = [&](const Step &s) { return rd(s.bit) != ((s.flags & kNegated) != 0); };
+    auto contactEdge = [&](const Step &s) {
+        return edge(m_edges[static_cast<std::size_t>(s.slot)], rd(s.bit),
+                    (s.flags & kFalling) != 0);
+    };
+    auto holds = [&](const Step &s) {
+        return model::compareHolds(model::CompareOp(s.op), rdw(s.x), rdw(s.y)) !=
+               ((s.flags & kNegated) != 0);
+    };
+    // LD, LDP / LDF, LD= ...: a new block starts from v.
+    auto load = [&](const Step &s, bool v) {
+        if (s.flags & kRungStart) {
+            bsp = 0;
+            psp = 0;
+        } else if (bsp < kBlockStack) {
+            blocks[bsp++] = acc;
+        }
+        // Bitwise, not &&/||: a contact's value follows the inputs, so a branch on it
+        // is mispredicted about half the time (that cost the scan 1.4x, issue 10).
+        acc = v & gate;
+    };
 
     Step resolved;
     std::size_t i = from;
@@ -223,49 +272,32 @@ std::size_t Engine::execute(std::size_t from, std::size_t to) {
         const Step &s = *step;
         switch (s.code) {
         case Code::Load:
-        case Code::LoadEdge:
-        case Code::LoadCompare: {
-            bool v;
-            if (s.code == Code::Load) {
-                v = rd(s.bit) != ((s.flags & kNegated) != 0);
-            } else if (s.code == Code::LoadEdge) {
-                v = edge(m_edges[static_cast<std::size_t>(s.slot)], rd(s.bit),
-                         (s.flags & kFalling) != 0);
-            } else {
-                v = model::compareHolds(model::CompareOp(s.op), rdw(s.x), rdw(s.y)) !=
-                    ((s.flags & kNegated) != 0);
-            }
-            if (s.flags & kRungStart) {
-                bsp = 0;
-                psp = 0;
-            } else if (bsp < kBlockStack) {
-                blocks[bsp++] = acc;
-            }
-            // Bitwise, not &&/||: a contact's value follows the inputs, so a branch on it
-            // is mispredicted about half the time (that cost the scan 1.4x, issue 10).
-            acc = v & gate;
+            load(s, contact(s));
             break;
-        }
+        case Code::LoadEdge:
+            load(s, contactEdge(s));
+            break;
+        case Code::LoadCompare:
+            load(s, holds(s));
+            break;
         case Code::And:
-            acc = acc & (rd(s.bit) != ((s.flags & kNegated) != 0));
+            acc = acc & contact(s);
             break;
         case Code::Or:
-            acc = acc | ((rd(s.bit) != ((s.flags & kNegated) != 0)) & gate);
+            acc = acc | (contact(s) & gate);
             break;
         case Code::AndEdge:
-        case Code::OrEdge: {
-            const bool v = edge(m_edges[static_cast<std::size_t>(s.slot)], rd(s.bit),
-                                (s.flags & kFalling) != 0);
-            acc = s.code == Code::AndEdge ? acc & v : acc | (v & gate);
+            acc = acc & contactEdge(s);
             break;
-        }
+        case Code::OrEdge:
+            acc = acc | (contactEdge(s) & gate);
+            break;
         case Code::AndCompare:
-        case Code::OrCompare: {
-            const bool v = model::compareHolds(model::CompareOp(s.op), rdw(s.x), rdw(s.y)) !=
-                           ((s.flags & kNegated) != 0);
-            acc = s.code == Code::AndCompare ? acc & v : acc | (v & gate);
+            acc = acc & holds(s);
             break;
-        }
+        case Code::OrCompare:
+            acc = acc | (holds(s) & gate);
+            break;
         case Code::AndBlock:
             if (bsp > 0)
                 acc = blocks[--bsp] & acc;
@@ -306,20 +338,8 @@ std::size_t Engine::execute(std::size_t from, std::size_t to) {
             }
             break;
         case Code::Reset:
-            if (acc) {
-                for (int k = 0; k < s.count; ++k) {
-                    const ResetTarget &t = p.resets[static_cast<std::size_t>(s.slot + k)];
-                    if (t.bit.valid())
-                        put(W, t.bit, false);
-                    if (t.word >= 0)
-                        wrw(t.word, 0, 32);
-                    if (t.state >= 0) { // the input edge memory stays: no count on release
-                        ElementState &st = m_states[static_cast<std::size_t>(t.state)];
-                        st.accumulated = 0;
-                        st.running = 0;
-                    }
-                }
-            }
+            if (acc)
+                resetTargets(s, W);
             break;
         case Code::Pulse:
             put(W, s.bit,
@@ -330,204 +350,45 @@ std::size_t Engine::execute(std::size_t from, std::size_t to) {
                 put(W, s.bit, !rd(s.bit));
             break;
         case Code::Keep: {
-            const bool set = bsp > 0 ? blocks[--bsp] : false;
+            const bool set = pop();
             if (acc)
                 put(W, s.bit, false);
             else if (set)
                 put(W, s.bit, true);
             break;
         }
-        case Code::Timer: {
-            ElementState &st = m_states[static_cast<std::size_t>(s.slot)];
-            if (!gateOpen(s.slot)) // Area::enabledBy (PL110 SM0.13): the box does nothing
-                break;
-            const std::int32_t set = readSet(s, i);
-            if (set < 0)
-                break;
-            std::int64_t units = 0;
-            const bool keeps = s.op == kTimerAccumulates; // only RST clears it
-            if (!acc) {
-                if (!keeps)
-                    st.accumulated = 0;
-                st.running = 0;
-            } else {
-                if (st.running)
-                    st.accumulated = std::min<std::int64_t>(st.accumulated + period,
-                                                            std::int64_t{set} * s.count);
-                st.running = 1;
-            }
-            if (acc || keeps)
-                units = st.accumulated / s.count;
-            put(W, s.bit, (acc || keeps) && units >= set);
-            const std::int64_t present =
-                (s.flags & kDown) ? set - units : std::min<std::int64_t>(units, timerMax);
-            // CPM1 (W353): the present value is BCD too: CMP(20) TIM 000 #0100 compares
-            // digits, and a Host Link RC reads the same word.
-            R[s.dest] = (s.flags & kBcd) ? wrapToWidth(toBcd(present), 16)
-                                         : static_cast<std::int32_t>(present);
+        case Code::Timer:
+            timer(s, i, acc, pass); // engine_timers.h, as the other boxes
             break;
-        }
         case Code::Counter: {
-            ElementState &st = m_states[static_cast<std::size_t>(s.slot)];
-            bool input = acc;
-            bool reset = false;
-            if (!(s.flags & kOneInput)) {
-                input = bsp > 0 ? blocks[--bsp] : false;
-                reset = acc;
-            }
-            if (!gateOpen(s.slot)) // Area::enabledBy (PL110 SM0.13): the box does nothing
-                break;
-            const std::int32_t set = readSet(s, i);
-            if (set < 0)
-                break;
-            if (reset) {
-                st.accumulated = 0;
-            } else if (input && !st.previous && st.accumulated < set) {
-                ++st.accumulated;
-            }
-            st.previous = input;
-            put(W, s.bit, !reset && st.accumulated >= set);
-            const std::int64_t present = (s.flags & kDown) ? set - st.accumulated : st.accumulated;
-            R[s.dest] = wrapToWidth((s.flags & kBcd) ? toBcd(present) : present, s.width);
+            // Vigor (kOneInput): one input, cleared by RST alone; else the count input waits on
+            // the block stack and the condition resets.
+            const bool oneInput = (s.flags & kOneInput) != 0;
+            counter(s, i, oneInput ? acc : pop(), !oneInput && acc, pass);
             break;
         }
         case Code::UpDownCounter: {
-            ElementState &st = m_states[static_cast<std::size_t>(s.slot)];
-            const bool reset = acc;
-            const bool down = bsp > 0 ? blocks[--bsp] : false;
-            const bool up = bsp > 0 ? blocks[--bsp] : false;
-            if (!gateOpen(s.slot)) // Area::enabledBy (PL110 SM0.13): the box does nothing
-                break;
-            const std::int32_t set = readSet(s, i);
-            if (set < 0)
-                break;
-            const bool upEdge = up && !(st.previous & 1);
-            const bool downEdge = down && !(st.previous & 2);
-            st.previous = static_cast<std::uint8_t>((up ? 1 : 0) | (down ? 2 : 0));
-            if (reset) {
-                st.accumulated = 0;
-                st.running = 0; // completion flag
-            } else if ((upEdge || downEdge) && !(up && down)) {
-                // Omron CPM1 guide: the value does not change while both inputs are at 1
-                if (upEdge) {
-                    st.running = st.accumulated >= set;
-                    st.accumulated = st.running ? 0 : st.accumulated + 1;
-                } else {
-                    st.running = st.accumulated <= 0;
-                    st.accumulated = st.running ? set : st.accumulated - 1;
-                }
-            }
-            put(W, s.bit, st.running != 0);
-            R[s.dest] = (s.flags & kBcd) ? wrapToWidth(toBcd(st.accumulated), 16)
-                                         : static_cast<std::int32_t>(st.accumulated);
+            const bool down = pop();
+            const bool up = pop();
+            upDownCounter(s, i, up, down, acc, pass);
             break;
         }
-        case Code::PlTimer: {
-            // PL110 (PL110 manual 4.2.4): the current value counts time-base units in the T word
-            // and saturates at Limits::timerMax; st.accumulated holds the ms not yet a whole unit.
-            ElementState &st = m_states[static_cast<std::size_t>(s.slot)];
-            if (!gateOpen(s.slot)) // Area::enabledBy (PL110 SM0.13): the box does nothing
-                break;
-            const std::int32_t set = readSet(s, i);
-            if (set < 0)
-                break;
-            std::int32_t &current = R[s.dest];
-            auto advance = [&] {
-                st.accumulated += period;
-                const std::int64_t units = std::int64_t{current} + st.accumulated / s.count;
-                st.accumulated %= s.count;
-                current = static_cast<std::int32_t>(std::min(units, timerMax));
-            };
-            bool out = false;
-            switch (static_cast<PlTimerMode>(s.op)) {
-            case PlTimerMode::OnDelay:
-                if (acc) {
-                    if (st.running)
-                        advance();
-                } else {
-                    current = 0;
-                    st.accumulated = 0;
-                }
-                st.running = acc;
-                out = acc && current >= set;
-                break;
-            case PlTimerMode::Accumulating:
-                // Every scan that saw the coil ON was ON until this one (4.2.4: "accumulare
-                // il tempo per piu periodi di attivazione"): a one-scan pulse adds a period,
-                // a coil on SM0.4 half the elapsed time. Held ON, it counts as TON does.
-                if (st.running)
-                    advance();
-                st.running = acc;
-                out = current >= set;
-                break;
-            case PlTimerMode::OffDelay:
-                // running: 0 idle, 1 input ON, 2 timing after an ON -> OFF transition
-                if (acc) {
-                    current = 0;
-                    st.accumulated = 0;
-                    st.running = 1;
-                } else if (st.running == 1) {
-                    st.running = 2;
-                } else if (st.running == 2) {
-                    advance();
-                    if (current >= set) {
-                        current = std::min(current, set);
-                        st.running = 0;
-                    }
-                }
-                out = st.running != 0;
-                break;
-            }
-            put(W, s.bit, out);
+        case Code::PlTimer:
+            plTimer(s, i, acc, pass);
             break;
-        }
         case Code::PlCounter: {
-            // PL110 MUP / MDOWN (PL110 manual 4.2.5): counts rising edges of UP and DOWN in the
-            // C word, which saturates at Limits::counterMin..counterMax (-32768..32767; MDOWN
-            // stops at 0); RESET clears MUP
-            // and loads PV into MDOWN. MUP is ON at >= PV, MDOWN at 0.
-            ElementState &st = m_states[static_cast<std::size_t>(s.slot)];
-            const bool reset = acc;
-            const bool down = bsp > 0 ? blocks[--bsp] : false;
-            const bool up = bsp > 0 ? blocks[--bsp] : false;
-            if (!gateOpen(s.slot)) // Area::enabledBy (PL110 SM0.13): the box does nothing
-                break;
-            const std::int32_t set = readSet(s, i);
-            if (set < 0)
-                break;
-            const bool upEdge = up && !(st.previous & 1);
-            const bool downEdge = down && !(st.previous & 2);
-            st.previous = static_cast<std::uint8_t>((up ? 1 : 0) | (down ? 2 : 0));
-            std::int32_t &current = R[s.dest];
-            const bool countsDown = (s.flags & kDown) != 0;
-            if (reset) {
-                current = countsDown ? set : 0;
-            } else {
-                if (upEdge && current < p.counterMax)
-                    ++current;
-                if (downEdge && current > (countsDown ? std::max(0, p.counterMin) : p.counterMin))
-                    --current;
-            }
-            // The count bit is compared at the end of the cycle (4.2.5), by endScan.
-            st.previous = static_cast<std::uint8_t>(st.previous | (reset ? 4 : 0));
+            const bool down = pop();
+            const bool up = pop();
+            plCounter(s, i, up, down, acc, pass);
             break;
         }
         case Code::Transfer:
-            if (acc != ((s.flags & kNegated) != 0)) {
-                const std::int64_t v = rdw(s.x);
-                const std::int64_t d = R[s.dest];
-                const auto kind = static_cast<TransferKind>(s.op);
-                std::int64_t r = kind == TransferKind::Assign ? v
-                                 : kind == TransferKind::Add  ? d + v
-                                                              : d - v;
-                if ((s.flags & kDecimal4) && (r < 0 || r > 9999)) [[unlikely]]
-                    r = outOfDecimalRange(i, r);
-                wrw(s.dest, r, s.width);
-            }
+            if (acc != ((s.flags & kNegated) != 0))
+                transfer(s, i, pass); // engine_arith.h, as the other word instructions
             break;
         case Code::Move:
             if (acc) {
-                wrw(s.dest, rdw(s.x), s.width);
+                store(s.dest, rdw(s.x), s.width);
                 if (flags) [[unlikely]]
                     resultFlags(rdw(s.x));
             }
@@ -537,18 +398,18 @@ std::size_t Engine::execute(std::size_t from, std::size_t to) {
                 arithmetic(s, i); // engine_cpm1.cpp
             break;
         case Code::ShiftRegister: {
-            const bool pulse = bsp > 0 ? blocks[--bsp] : false;
-            const bool data = bsp > 0 ? blocks[--bsp] : false;
+            const bool pulse = pop();
+            const bool data = pop();
             shiftRegister(s, data, pulse, acc);
             break;
         }
+        // SBS, RET and SBN move the loop's index and the return stack: written here, as JMP
+        // and END below.
         case Code::SubroutineCall:
             // SBS(91): run the subroutine from its SBN(92), come back after the SBS.
             if (acc && s.count >= 0) {
                 if (depth == kSubroutineDepth) {
-                    runtimeError(i, EngineTr::tr("subroutines nest deeper than %1 levels; the call "
-                                                 "is skipped")
-                                        .arg(kSubroutineDepth));
+                    subroutinesTooDeep(i);
                     break;
                 }
                 returns[depth] = i;
@@ -576,19 +437,14 @@ std::size_t Engine::execute(std::size_t from, std::size_t to) {
                 m_flow[i] = acc;
             i = static_cast<std::size_t>(s.slot) - 1;
             continue;
-        case Code::StepDefine: {
+        case Code::StepDefine:
             // STEP(08) B: what follows runs as in an interlock whose condition is B, up to the
-            // next STEP(08); STEP(08) alone ends the steps. 254.07 is ON in the cycle a step
-            // starts (W353).
+            // next STEP(08); STEP(08) alone ends the steps.
             stepActive = !s.bit.valid() || rd(s.bit);
             gate = interlock && stepActive;
             acc = gate;
-            const bool started =
-                edge(m_edges[static_cast<std::size_t>(s.slot)], s.bit.valid() && stepActive, false);
-            if (s.bit.valid() && p.flags.stepStart.valid())
-                put(R, p.flags.stepStart, started);
+            markStepStart(s, stepActive, R);
             break;
-        }
         case Code::StepNext:
             // SNXT(09) B: the step it stands in ends (its bit OFF, so from the next cycle on
             // its outputs are OFF and its timers reset) and the step of B starts.
@@ -599,146 +455,53 @@ std::size_t Engine::execute(std::size_t from, std::size_t to) {
             }
             break;
         case Code::Compare:
-            if (acc) {
-                const std::int32_t a = rdw(s.x);
-                const std::int32_t b = rdw(s.y);
-                const BitRef *bits = &p.bitLists[static_cast<std::size_t>(s.slot)];
-                put(W, bits[0], a > b);
-                put(W, bits[1], a == b);
-                put(W, bits[2], a < b);
-            }
+            if (acc)
+                compare(s, pass);
             break;
         case Code::Add:
             if (acc)
-                wrw(s.dest, std::int64_t{rdw(s.x)} + rdw(s.y), s.width);
+                store(s.dest, std::int64_t{rdw(s.x)} + rdw(s.y), s.width);
             break;
         case Code::Sub:
             if (acc)
-                wrw(s.dest, std::int64_t{rdw(s.x)} - rdw(s.y), s.width);
+                store(s.dest, std::int64_t{rdw(s.x)} - rdw(s.y), s.width);
             break;
         case Code::Mul:
-            if (acc) {
-                const std::int64_t product = std::int64_t{rdw(s.x)} * rdw(s.y);
-                if (s.slot >= 0 && s.width < 32) {
-                    wrw(s.dest, product & 0xFFFF, 16);
-                    wrw(s.slot, product >> 16, 16);
-                } else {
-                    wrw(s.dest, product, 32);
-                    if (s.slot >= 0)
-                        wrw(s.slot, product >> 32, 32);
-                }
-            }
+            if (acc)
+                multiply(s, pass);
             break;
         case Code::Div:
-            if (acc) {
-                const std::int64_t a = rdw(s.x);
-                const std::int64_t b = rdw(s.y);
-                if (b == 0) {
-                    runtimeError(i, EngineTr::tr("division by zero; the destination is unchanged"));
-                    break;
-                }
-                wrw(s.dest, a / b, s.width);
-                if (s.slot >= 0)
-                    wrw(s.slot, a % b, s.width);
-            }
+            if (acc)
+                divide(s, i, pass);
             break;
         case Code::Inc:
         case Code::Dec:
             if (acc)
-                wrw(s.dest, std::int64_t{R[s.dest]} + (s.code == Code::Inc ? 1 : -1), s.width);
+                store(s.dest, std::int64_t{R[s.dest]} + (s.code == Code::Inc ? 1 : -1), s.width);
             break;
         case Code::WordLogic:
             if (acc)
                 wordLogic(s, i);
             break;
         case Code::Math:
-            if (acc) {
-                const std::int64_t a = rdw(s.x);
-                const std::int64_t b = rdw(s.y);
-                std::int64_t r = 0;
-                switch (static_cast<MathOp>(s.op)) {
-                case MathOp::Add:
-                    r = a + b;
-                    break;
-                case MathOp::Sub:
-                    r = a - b;
-                    break;
-                case MathOp::Mul:
-                    r = a * b;
-                    break;
-                case MathOp::Div:
-                    r = b == 0 ? 0 : a / b;
-                    break;
-                case MathOp::Or:
-                    r = a | b;
-                    break;
-                case MathOp::And:
-                    r = a & b;
-                    break;
-                case MathOp::Xor:
-                    r = a ^ b;
-                    break;
-                case MathOp::Shl:
-                    r = b < 0 || b > 31
-                            ? 0
-                            : static_cast<std::int64_t>(static_cast<std::uint64_t>(a) << b);
-                    break;
-                case MathOp::Shr:
-                    r = b < 0 || b > 31
-                            ? 0
-                            : static_cast<std::int64_t>(static_cast<std::uint32_t>(a) >> b);
-                    break;
-                }
-                if (static_cast<MathOp>(s.op) == MathOp::Div && b == 0)
-                    runtimeError(i, EngineTr::tr("division by zero; the destination is unchanged"));
-                else
-                    wrw(s.dest, r, s.width);
-            }
+            if (acc)
+                math(s, i, pass);
             break;
         case Code::BlockMove:
-            if (acc) {
-                // memmove order: an overlapping block copies as if through a buffer
-                if (s.x.index >= 0 && s.x.index < s.dest) {
-                    for (int k = s.count - 1; k >= 0; --k)
-                        wrw(s.dest + k, R[s.x.index + k], s.width);
-                } else {
-                    for (int k = 0; k < s.count; ++k)
-                        wrw(s.dest + k, s.x.index >= 0 ? R[s.x.index + k] : s.x.constant, s.width);
-                }
-            }
+            if (acc)
+                blockMove(s, pass);
             break;
         case Code::DoubleMove:
-            if (acc) {
-                // FX order: the low word first (DMOV H00310035 D4: D4 = 0035h, D5 = 0031h).
-                const std::int32_t v = s.y.index >= 0
-                                           ? static_cast<std::int32_t>(
-                                                 (static_cast<std::uint32_t>(R[s.y.index]) << 16) |
-                                                 (static_cast<std::uint32_t>(rdw(s.x)) & 0xFFFFu))
-                                           : rdw(s.x);
-                if (s.slot >= 0) {
-                    wrw(s.dest, v, 16);
-                    wrw(s.slot, v >> 16, 16);
-                } else {
-                    wrw(s.dest, v, s.width);
-                }
-            }
+            if (acc)
+                doubleMove(s, pass);
             break;
         case Code::CheckCode:
             if (acc)
                 checkCode(s, i); // engine_words.cpp
             break;
         case Code::IndirectMove:
-            if (acc) {
-                const std::int32_t index = rdw(s.y);
-                if (index < 0 || index >= s.count) {
-                    runtimeError(
-                        i, EngineTr::tr("MOVIND index %1 is outside 0..%2; nothing is written")
-                               .arg(index)
-                               .arg(s.count - 1));
-                    break;
-                }
-                wrw(s.dest + index, rdw(s.x), s.width);
-            }
+            if (acc)
+                indirectMove(s, i, pass);
             break;
         case Code::Interlock:
             interlock = acc;

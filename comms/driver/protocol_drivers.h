@@ -4,8 +4,8 @@
 // for it and for their own sources.
 
 #include "comms/driver/protocol_driver.h"
-#include "comms/protocol/host_link.h"
-#include "comms/protocol/modbus.h"
+#include "comms/protocol/host_link_master.h"
+#include "comms/protocol/modbus_master.h"
 
 #include <map>
 

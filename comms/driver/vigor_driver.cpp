@@ -1,5 +1,5 @@
 #include "comms/driver/protocol_drivers.h"
-#include "comms/protocol/vigor_link.h"
+#include "comms/protocol/vigor_link_master.h"
 #include "model/target/target.h"
 
 #include <QCoreApplication>

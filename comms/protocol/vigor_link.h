@@ -1,7 +1,8 @@
 #pragma once
 
 // Vigor M / VB / VH "Computer Link" (Vigor M/VB/VH communication manual, B-5): pure encoders
-// and incremental decoders for both sides, no I/O.
+// and incremental decoders for both sides, no I/O. This file holds what both sides share; the
+// master's side is vigor_link_master.h, the slave's vigor_link_slave.h.
 //   request  <STX> station(2) command(2) data... <ETX> sum(2)
 //   response <ACK> station(2) command(2) error(2) data... <ETX> sum(2)
 // The sum adds the bytes from the first station digit up to and including ETX; its low byte is
@@ -60,61 +61,10 @@ constexpr int bitAddress(int byteAddress, int bit) {
     return byteAddress << 3 | bit;
 }
 
-QByteArray encodeRequest(const Request &request);
-QByteArray encodeReply(const Reply &reply);
-
 // The sum of a frame body (from the first station digit through ETX) as two hex digits.
 QByteArray sum(QByteArrayView body);
 
 // Why the PLC refused, translated: "address out of range (error 28h)".
 QString errorText(int code);
-
-// Master side: collects the reply to one request from bytes as they arrive (in any split).
-class ReplyDecoder : public ReplyDecoderBase {
-public:
-    explicit ReplyDecoder(const Request &request);
-    // Feed the next bytes; after Complete or Failed further bytes are ignored.
-    FrameStatus feed(QByteArrayView bytes);
-    // The caller's deadline passed: a truncated frame or silence, as an error.
-    ProtocolError deadlinePassed(int waitedMs) const;
-    const Reply &reply() const { return m_reply; }
-    qsizetype buffered() const { return m_buffer.size(); }
-    static constexpr qsizetype MaxBuffered = MaxReplyFrame; // longer fails
-
-private:
-    FrameStatus decode();
-
-    Request m_request;
-    QByteArray m_buffer;
-    Reply m_reply;
-};
-
-// Slave side: one request, parsed from bytes as they arrive. Bytes before STX are dropped
-// (line noise between frames). A frame that is complete but wrong carries the error code the
-// PLC answers with (sum 11h, ASCII 10h, command 12h); the caller still checks the station.
-// Memory stays bounded whatever arrives: a frame that runs past MaxRequestFrame without its
-// ETX is dropped up to the next STX; bytes that arrive while a request waits for next() are
-// kept up to one frame, the rest dropped. discarded() says what was thrown away last and why.
-class RequestDecoder {
-public:
-    FrameStatus feed(QByteArrayView bytes);
-    FrameStatus status() const { return m_status; }
-    const Request &request() const { return m_request; }
-    int errorCode() const { return m_errorCode; } // 0, or the ErrorCode to answer with
-    const ProtocolError &discarded() const { return m_discarded; }
-    qsizetype buffered() const { return m_buffer.size(); }
-    static constexpr qsizetype MaxBuffered = 2 * MaxRequestFrame; // a request and the next
-    // Start over for the next frame, keeping bytes already received after this one.
-    void next();
-
-private:
-    void parse();
-    ProtocolError m_discarded;
-    QByteArray m_buffer;
-    qsizetype m_used = 0;
-    FrameStatus m_status = FrameStatus::NeedMore;
-    Request m_request;
-    int m_errorCode = 0;
-};
 
 } // namespace rung::comms::vigor

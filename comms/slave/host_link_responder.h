@@ -12,7 +12,7 @@
 //  - A command in parts gets a lone CR after each part but the last; an answer over 131
 //    characters goes in parts, each after the master's CR.
 
-#include "comms/protocol/host_link.h"
+#include "comms/protocol/host_link_slave.h"
 #include "comms/slave/responder.h"
 
 namespace rung::comms::slave {

@@ -13,7 +13,7 @@
 //    map's limit (PL110: 30 words; its manual numbers the code 04), 04 a write the image
 //    refused, 06 a write the image did not take in time.
 
-#include "comms/protocol/modbus.h"
+#include "comms/protocol/modbus_slave.h"
 #include "comms/slave/responder.h"
 #include "comms/transport/serial_settings.h"
 

@@ -7,7 +7,7 @@
 // A request for another station gets no answer; a broken one that names this station gets its
 // error code: 11h sum, 10h ASCII, 12h command, 28h address or length.
 
-#include "comms/protocol/vigor_link.h"
+#include "comms/protocol/vigor_link_slave.h"
 #include "comms/slave/responder.h"
 
 namespace rung::comms::slave {

@@ -2,9 +2,9 @@
 // write reaches the program at a scan boundary and is answered after it took effect; reads
 // show what the program made of it. Masters here are our own codecs over a real pty or TCP.
 
-#include "comms/protocol/host_link.h"
-#include "comms/protocol/modbus.h"
-#include "comms/protocol/vigor_link.h"
+#include "comms/protocol/host_link_master.h"
+#include "comms/protocol/modbus_master.h"
+#include "comms/protocol/vigor_link_master.h"
 #include "comms/transport/tcp_transport.h"
 #include "model/target/address.h"
 #include "tests/cli/cli_run.h"

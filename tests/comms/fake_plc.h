@@ -4,9 +4,9 @@
 // and coils (Modbus RTU) or channels, DM and a mode (Host Link), with the protocol codecs'
 // slave side. For the online session's unit tests; the real peers are other programs.
 
-#include "comms/protocol/host_link.h"
-#include "comms/protocol/modbus.h"
-#include "comms/protocol/vigor_link.h"
+#include "comms/protocol/host_link_slave.h"
+#include "comms/protocol/modbus_slave.h"
+#include "comms/protocol/vigor_link_slave.h"
 #include "tests/comms/fake_transport.h"
 
 #include <map>

@@ -2,9 +2,12 @@
 // each decoder is fed a long stream built to defeat its framing, buffered() is checked after
 // every feed, the decoder says what it dropped and why, and a good frame from the manuals'
 // examples is still read after the garbage.
-#include "comms/protocol/host_link.h"
-#include "comms/protocol/modbus.h"
-#include "comms/protocol/vigor_link.h"
+#include "comms/protocol/host_link_master.h"
+#include "comms/protocol/host_link_slave.h"
+#include "comms/protocol/modbus_master.h"
+#include "comms/protocol/modbus_slave.h"
+#include "comms/protocol/vigor_link_master.h"
+#include "comms/protocol/vigor_link_slave.h"
 #include "tests/comms/hex.h"
 
 #include <gtest/gtest.h>

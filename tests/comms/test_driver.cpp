@@ -3,9 +3,10 @@
 // specification): each device read or write puts the example's exact bytes on the wire and
 // reads the example's reply into the right devices.
 
-#include "comms/protocol/host_link.h"
+#include "comms/protocol/host_link_master.h"
 #include "comms/protocol/modbus.h"
-#include "comms/protocol/vigor_link.h"
+#include "comms/protocol/vigor_link_master.h"
+#include "comms/protocol/vigor_link_slave.h"
 #include "tests/comms/driver_fixture.h"
 #include "tests/comms/hex.h"
 

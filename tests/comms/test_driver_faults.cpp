@@ -3,9 +3,10 @@
 // hang; and no write reported done that the PLC did not acknowledge.
 
 #include "comms/driver/connection.h"
-#include "comms/protocol/host_link.h"
+#include "comms/protocol/host_link_master.h"
 #include "comms/protocol/modbus.h"
-#include "comms/protocol/vigor_link.h"
+#include "comms/protocol/vigor_link_master.h"
+#include "comms/protocol/vigor_link_slave.h"
 #include "tests/comms/driver_fixture.h"
 #include "tests/comms/hex.h"
 

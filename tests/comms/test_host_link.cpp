@@ -1,4 +1,5 @@
-#include "comms/protocol/host_link.h"
+#include "comms/protocol/host_link_master.h"
+#include "comms/protocol/host_link_slave.h"
 #include "model/target/target.h"
 
 #include <gtest/gtest.h>

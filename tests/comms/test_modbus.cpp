@@ -1,4 +1,5 @@
-#include "comms/protocol/modbus.h"
+#include "comms/protocol/modbus_master.h"
+#include "comms/protocol/modbus_slave.h"
 #include "tests/comms/hex.h"
 
 #include <gtest/gtest.h>

@@ -1,5 +1,5 @@
 #include "comms/driver/connection.h"
-#include "comms/protocol/vigor_link.h"
+#include "comms/protocol/vigor_link_master.h"
 #include "comms/transport/pty_transport.h"
 #include "tests/comms/hex.h"
 #include "tests/comms/pty_pair.h"

@@ -3,9 +3,12 @@
 // worker and says why. Also the protocols' frames over raw TCP, as a serial device server
 // carries them.
 
-#include "comms/protocol/host_link.h"
-#include "comms/protocol/modbus.h"
-#include "comms/protocol/vigor_link.h"
+#include "comms/protocol/host_link_master.h"
+#include "comms/protocol/host_link_slave.h"
+#include "comms/protocol/modbus_master.h"
+#include "comms/protocol/modbus_slave.h"
+#include "comms/protocol/vigor_link_master.h"
+#include "comms/protocol/vigor_link_slave.h"
 #include "comms/slave/host_link_responder.h"
 #include "comms/slave/modbus_responder.h"
 #include "comms/slave/slave_server.h"

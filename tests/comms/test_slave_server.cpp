@@ -2,8 +2,9 @@
 // each protocol answers across the wire, several TCP clients at once, the fault modes look to a
 // master as they should, and a hostile line neither hangs the slave nor grows its memory.
 
-#include "comms/protocol/host_link.h"
-#include "comms/protocol/vigor_link.h"
+#include "comms/protocol/host_link_master.h"
+#include "comms/protocol/modbus_master.h"
+#include "comms/protocol/vigor_link_master.h"
 #include "comms/slave/slave_server.h"
 #include "comms/transport/pty_transport.h"
 #include "comms/transport/tcp_transport.h"

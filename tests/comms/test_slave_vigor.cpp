@@ -1,6 +1,7 @@
 // The Vigor Computer Link slave (Vigor M/VB/VH communication manual, B-5): the manual's
 // examples (B-5-3) from the PLC's side, byte for byte, and the error codes it answers with.
 
+#include "comms/protocol/vigor_link_master.h"
 #include "comms/slave/memory_image.h"
 #include "comms/slave/vigor_responder.h"
 #include "tests/comms/hex.h"

@@ -1,4 +1,5 @@
-#include "comms/protocol/vigor_link.h"
+#include "comms/protocol/vigor_link_master.h"
+#include "comms/protocol/vigor_link_slave.h"
 #include "tests/comms/hex.h"
 
 #include <gtest/gtest.h>

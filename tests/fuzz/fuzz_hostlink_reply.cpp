@@ -1,6 +1,7 @@
 // Any bytes as the Omron Host Link reply to a command the input picks (over any number of
 // parts, with the delimiter taken after each), and as commands to the slave's decoder.
-#include "comms/protocol/host_link.h"
+#include "comms/protocol/host_link_master.h"
+#include "comms/protocol/host_link_slave.h"
 #include "tests/fuzz/fuzz_comms_common.h"
 
 extern "C" int LLVMFuzzerTestOneInput(const std::uint8_t *data, std::size_t size) {

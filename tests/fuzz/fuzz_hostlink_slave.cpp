@@ -4,7 +4,7 @@
 // (the delimiter of a command in parts) or a part with a right FCS, no longer than the PLC
 // sends, the first of an answer from this unit; the slave holds no more than a command in
 // parts and an answer in parts. Input: unit, mode, then the peer's bytes in chunks.
-#include "comms/protocol/host_link.h"
+#include "comms/protocol/host_link_slave.h"
 #include "comms/slave/host_link_responder.h"
 #include "comms/slave/memory_image.h"
 #include "tests/fuzz/fuzz_comms_common.h"

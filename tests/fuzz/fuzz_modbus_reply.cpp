@@ -1,6 +1,7 @@
 // Any bytes as the Modbus RTU or TCP reply to a request the input picks, and as requests to
 // the slave's decoder (with and without the RTU silence that ends an unknown function).
-#include "comms/protocol/modbus.h"
+#include "comms/protocol/modbus_master.h"
+#include "comms/protocol/modbus_slave.h"
 #include "tests/fuzz/fuzz_comms_common.h"
 
 extern "C" int LLVMFuzzerTestOneInput(const std::uint8_t *data, std::size_t size) {

@@ -3,7 +3,7 @@
 // Shared by the Modbus slave fuzzers (RTU, TCP): the slave of a map the input picks (the Vigor
 // CP2 map or the PL110's) over a memory image, and the checks of its PDU.
 
-#include "comms/protocol/modbus.h"
+#include "comms/protocol/modbus_slave.h"
 #include "comms/slave/memory_image.h"
 #include "comms/slave/modbus_responder.h"
 #include "tests/fuzz/fuzz_comms_common.h"

@@ -1,6 +1,7 @@
 // Any bytes as the Vigor Computer Link reply to a request the input picks, and as requests
 // to the slave's decoder.
-#include "comms/protocol/vigor_link.h"
+#include "comms/protocol/vigor_link_master.h"
+#include "comms/protocol/vigor_link_slave.h"
 #include "tests/fuzz/fuzz_comms_common.h"
 
 extern "C" int LLVMFuzzerTestOneInput(const std::uint8_t *data, std::size_t size) {

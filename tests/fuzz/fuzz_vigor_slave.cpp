@@ -2,7 +2,7 @@
 // memory image of a Vigor): decoded, answered through the protocol map, written into the
 // image. Every answer is an ACK frame of the slave's station with a right sum; the slave never
 // holds more than its decoder's bound. Input: the station byte, then the peer's bytes in chunks.
-#include "comms/protocol/vigor_link.h"
+#include "comms/protocol/vigor_link_slave.h"
 #include "comms/slave/memory_image.h"
 #include "comms/slave/vigor_responder.h"
 #include "tests/fuzz/fuzz_comms_common.h"
