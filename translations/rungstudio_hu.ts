@@ -3703,7 +3703,7 @@ Kiértékelés: %4 µs (%5..%6)</translation>
 <context>
     <name>rung::comms::Protocol</name>
     <message>
-        <location filename="../comms/protocol/host_link.cpp" line="+170"/>
+        <location filename="../comms/protocol/host_link.cpp" line="+99"/>
         <source>normal completion (end code %1)</source>
         <translation>normál befejezés (befejezési kód: %1)</translation>
     </message>
@@ -3763,7 +3763,7 @@ Kiértékelés: %4 µs (%5..%6)</translation>
         <translation>befejezési kód: %1</translation>
     </message>
     <message>
-        <location line="+18"/>
+        <location filename="../comms/protocol/host_link_master.cpp" line="+91"/>
         <source>Host Link: the reply starts with byte %1 instead of &quot;@&quot;: not a Host Link answer</source>
         <translation>Host Link: a válasz %1 bájttal kezdődik &quot;@&quot; helyett: nem Host Link válasz</translation>
     </message>
@@ -3829,7 +3829,7 @@ Kiértékelés: %4 µs (%5..%6)</translation>
         <translation>Host Link: a válasz %1 rész és %2 karakter (%3) után megszakadt %4 ms alatt</translation>
     </message>
     <message>
-        <location filename="../comms/protocol/modbus.cpp" line="+140"/>
+        <location filename="../comms/protocol/modbus.cpp" line="+45"/>
         <source>illegal function (exception %1h): the device does not support this function code</source>
         <translation>érvénytelen funkció (%1h kivétel): az eszköz nem támogatja ezt a funkciókódot</translation>
     </message>
@@ -3879,7 +3879,7 @@ Kiértékelés: %4 µs (%5..%6)</translation>
         <translation>ismeretlen kivételkód: %1h</translation>
     </message>
     <message>
-        <location line="+93"/>
+        <location filename="../comms/protocol/modbus_master.cpp" line="+78"/>
         <source>Modbus RTU: the reply starts %1, not an answer to function %2h</source>
         <translation>Modbus RTU: a válasz így kezdődik: %1, ez nem a(z) %2h funkció válasza</translation>
     </message>
@@ -3895,12 +3895,12 @@ Kiértékelés: %4 µs (%5..%6)</translation>
     </message>
     <message>
         <location line="+15"/>
-        <location line="+163"/>
+        <location filename="../comms/protocol/modbus_slave.cpp" line="+169"/>
         <source>Modbus TCP: not a Modbus header (protocol %1, length %2): %3</source>
         <translation>Modbus TCP: nem Modbus fejléc (protokoll: %1, hossz: %2): %3</translation>
     </message>
     <message>
-        <location line="-153"/>
+        <location line="+10"/>
         <source>Modbus TCP: %1 bytes more than the reply&apos;s length</source>
         <translation>Modbus TCP: %1 bájttal több a válasz hosszánál</translation>
     </message>
@@ -3945,7 +3945,7 @@ Kiértékelés: %4 µs (%5..%6)</translation>
         <translation>Modbus: a válasz %1 bájt (%2) után megszakadt %3 ms alatt</translation>
     </message>
     <message>
-        <location filename="../comms/protocol/vigor_link.cpp" line="+72"/>
+        <location filename="../comms/protocol/vigor_link.cpp" line="+32"/>
         <source>no error (error 00h)</source>
         <translation>nincs hiba (00h hiba)</translation>
     </message>
@@ -3980,7 +3980,7 @@ Kiértékelés: %4 µs (%5..%6)</translation>
         <translation>ismeretlen hibakód: %1h</translation>
     </message>
     <message>
-        <location line="+15"/>
+        <location filename="../comms/protocol/vigor_link_master.cpp" line="+43"/>
         <source>Vigor link: the reply starts with byte %1 instead of ACK (06h): not a Computer Link answer</source>
         <translation>Vigor link: a válasz %1 bájttal kezdődik ACK (06h) helyett: nem Computer Link válasz</translation>
     </message>
@@ -4141,12 +4141,12 @@ Kiértékelés: %4 µs (%5..%6)</translation>
         <translation>Nem lehet figyelni ezen: %1:%2: %3</translation>
     </message>
     <message>
-        <location filename="../comms/protocol/host_link.cpp" line="-102"/>
+        <location filename="../comms/protocol/host_link_master.cpp" line="-102"/>
         <source>Host Link: the reply to %1 goes on past the %2 characters of data the command asks for (part %3): not the answer to this command</source>
         <translation>Host Link: a(z) %1 válasza túlmegy a parancs által kért %2 adatkarakteren (%3. rész): nem erre a parancsra érkezett válasz</translation>
     </message>
     <message>
-        <location line="+133"/>
+        <location filename="../comms/protocol/host_link_slave.cpp" line="+39"/>
         <source>Host Link: %1 characters arrived before the command was answered; the %2 beyond the first %3 were dropped</source>
         <translation>Host Link: %1 karakter érkezett, mielőtt a parancs választ kapott volna; az első %3 utáni %2 karakter eldobva</translation>
     </message>
@@ -4166,7 +4166,7 @@ Kiértékelés: %4 µs (%5..%6)</translation>
         <translation>Host Link: a(z) %1 parancs %3 részben túlmegy %2 karakteren, hosszabb bármely parancsnál; válasz: 18-as végkód</translation>
     </message>
     <message>
-        <location filename="../comms/protocol/modbus.cpp" line="+51"/>
+        <location filename="../comms/protocol/modbus_slave.cpp" line="-22"/>
         <source>Modbus: %1 bytes arrived before the request was answered; the %2 beyond the first %3 were dropped</source>
         <translation>Modbus: %1 bájt érkezett, mielőtt a kérés választ kapott volna; az első %3 utáni %2 bájt eldobva</translation>
     </message>
@@ -4176,7 +4176,7 @@ Kiértékelés: %4 µs (%5..%6)</translation>
         <translation>Modbus RTU: a(z) %1h funkció kerete túlmegy %2 bájton, ami egy RTU keret legnagyobb hossza: eldobva a vonal elcsendesedéséig érkezőkkel együtt</translation>
     </message>
     <message>
-        <location filename="../comms/protocol/vigor_link.cpp" line="+28"/>
+        <location filename="../comms/protocol/vigor_link_slave.cpp" line="+53"/>
         <source>Vigor link: %1 bytes arrived before the request was answered; the %2 beyond the first %3 were dropped</source>
         <translation>Vigor link: %1 bájt érkezett, mielőtt a kérés választ kapott volna; az első %3 utáni %2 bájt eldobva</translation>
     </message>
@@ -8661,7 +8661,7 @@ Kiértékelés: %4 µs (%5..%6)</translation>
 <context>
     <name>rung::simulator::Engine</name>
     <message>
-        <location filename="../simulator/engine_execute.cpp" line="+46"/>
+        <location filename="../simulator/engine_execute.cpp" line="+48"/>
         <source>set value %1 is not a BCD number; the instruction is skipped</source>
         <translation>a(z) %1 beállított érték nem BCD szám; az utasítás kimarad</translation>
     </message>
@@ -8681,18 +8681,18 @@ Kiértékelés: %4 µs (%5..%6)</translation>
         <translation>a(z) %1 eredmény kívül esik a 0..9999 tartományon; %2 íródik be</translation>
     </message>
     <message>
-        <location line="+424"/>
+        <location line="+33"/>
         <source>subroutines nest deeper than %1 levels; the call is skipped</source>
         <translation>a szubrutinok %1 szintnél mélyebben ágyazódnak egymásba; a hívás elmarad</translation>
     </message>
     <message>
-        <location line="+88"/>
-        <location line="+56"/>
+        <location filename="../simulator/engine_arith.h" line="+54"/>
+        <location line="+42"/>
         <source>division by zero; the destination is unchanged</source>
         <translation>osztás nullával; a cél változatlan marad</translation>
     </message>
     <message>
-        <location line="+42"/>
+        <location line="+37"/>
         <source>MOVIND index %1 is outside 0..%2; nothing is written</source>
         <translation>a MOVIND %1 indexe kívül esik a 0..%2 tartományon; nem íródik semmi</translation>
     </message>

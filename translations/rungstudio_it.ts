@@ -3715,7 +3715,7 @@ Valutazione: %4 µs (%5..%6)</translation>
 <context>
     <name>rung::comms::Protocol</name>
     <message>
-        <location filename="../comms/protocol/host_link.cpp" line="+170"/>
+        <location filename="../comms/protocol/host_link.cpp" line="+99"/>
         <source>normal completion (end code %1)</source>
         <translation>completamento normale (codice di fine %1)</translation>
     </message>
@@ -3775,7 +3775,7 @@ Valutazione: %4 µs (%5..%6)</translation>
         <translation>codice di fine %1</translation>
     </message>
     <message>
-        <location line="+18"/>
+        <location filename="../comms/protocol/host_link_master.cpp" line="+91"/>
         <source>Host Link: the reply starts with byte %1 instead of &quot;@&quot;: not a Host Link answer</source>
         <translation>Host Link: la risposta inizia con il byte %1 invece di &quot;@&quot;: non è una risposta Host Link</translation>
     </message>
@@ -3841,7 +3841,7 @@ Valutazione: %4 µs (%5..%6)</translation>
         <translation>Host Link: la risposta si è interrotta dopo %1 parti e %2 caratteri (%3) entro %4 ms</translation>
     </message>
     <message>
-        <location filename="../comms/protocol/modbus.cpp" line="+140"/>
+        <location filename="../comms/protocol/modbus.cpp" line="+45"/>
         <source>illegal function (exception %1h): the device does not support this function code</source>
         <translation>funzione non valida (eccezione %1h): il dispositivo non supporta questo codice funzione</translation>
     </message>
@@ -3891,7 +3891,7 @@ Valutazione: %4 µs (%5..%6)</translation>
         <translation>codice di eccezione sconosciuto %1h</translation>
     </message>
     <message>
-        <location line="+93"/>
+        <location filename="../comms/protocol/modbus_master.cpp" line="+78"/>
         <source>Modbus RTU: the reply starts %1, not an answer to function %2h</source>
         <translation>Modbus RTU: la risposta inizia con %1, non è una risposta alla funzione %2h</translation>
     </message>
@@ -3907,12 +3907,12 @@ Valutazione: %4 µs (%5..%6)</translation>
     </message>
     <message>
         <location line="+15"/>
-        <location line="+163"/>
+        <location filename="../comms/protocol/modbus_slave.cpp" line="+169"/>
         <source>Modbus TCP: not a Modbus header (protocol %1, length %2): %3</source>
         <translation>Modbus TCP: non è un&apos;intestazione Modbus (protocollo %1, lunghezza %2): %3</translation>
     </message>
     <message>
-        <location line="-153"/>
+        <location line="+10"/>
         <source>Modbus TCP: %1 bytes more than the reply&apos;s length</source>
         <translation>Modbus TCP: %1 byte in più della lunghezza della risposta</translation>
     </message>
@@ -3957,7 +3957,7 @@ Valutazione: %4 µs (%5..%6)</translation>
         <translation>Modbus: la risposta si è interrotta dopo %1 byte (%2) entro %3 ms</translation>
     </message>
     <message>
-        <location filename="../comms/protocol/vigor_link.cpp" line="+72"/>
+        <location filename="../comms/protocol/vigor_link.cpp" line="+32"/>
         <source>no error (error 00h)</source>
         <translation>nessun errore (errore 00h)</translation>
     </message>
@@ -3992,7 +3992,7 @@ Valutazione: %4 µs (%5..%6)</translation>
         <translation>codice di errore sconosciuto %1h</translation>
     </message>
     <message>
-        <location line="+15"/>
+        <location filename="../comms/protocol/vigor_link_master.cpp" line="+43"/>
         <source>Vigor link: the reply starts with byte %1 instead of ACK (06h): not a Computer Link answer</source>
         <translation>Vigor link: la risposta inizia con il byte %1 invece di ACK (06h): non è una risposta Computer Link</translation>
     </message>
@@ -4153,12 +4153,12 @@ Valutazione: %4 µs (%5..%6)</translation>
         <translation>Impossibile restare in ascolto su %1:%2: %3</translation>
     </message>
     <message>
-        <location filename="../comms/protocol/host_link.cpp" line="-102"/>
+        <location filename="../comms/protocol/host_link_master.cpp" line="-102"/>
         <source>Host Link: the reply to %1 goes on past the %2 characters of data the command asks for (part %3): not the answer to this command</source>
         <translation>Host Link: la risposta a %1 va oltre i %2 caratteri di dati chiesti dal comando (parte %3): non è la risposta a questo comando</translation>
     </message>
     <message>
-        <location line="+133"/>
+        <location filename="../comms/protocol/host_link_slave.cpp" line="+39"/>
         <source>Host Link: %1 characters arrived before the command was answered; the %2 beyond the first %3 were dropped</source>
         <translation>Host Link: sono arrivati %1 caratteri prima della risposta al comando; i %2 oltre i primi %3 sono stati scartati</translation>
     </message>
@@ -4178,7 +4178,7 @@ Valutazione: %4 µs (%5..%6)</translation>
         <translation>Host Link: il comando %1 va oltre %2 caratteri in %3 parti, più lungo di qualsiasi comando; risposto con codice di fine 18</translation>
     </message>
     <message>
-        <location filename="../comms/protocol/modbus.cpp" line="+51"/>
+        <location filename="../comms/protocol/modbus_slave.cpp" line="-22"/>
         <source>Modbus: %1 bytes arrived before the request was answered; the %2 beyond the first %3 were dropped</source>
         <translation>Modbus: sono arrivati %1 byte prima della risposta alla richiesta; i %2 oltre i primi %3 sono stati scartati</translation>
     </message>
@@ -4188,7 +4188,7 @@ Valutazione: %4 µs (%5..%6)</translation>
         <translation>Modbus RTU: un frame della funzione %1h supera %2 byte, la lunghezza massima di un frame RTU: scartato con ciò che segue finché la linea tace</translation>
     </message>
     <message>
-        <location filename="../comms/protocol/vigor_link.cpp" line="+28"/>
+        <location filename="../comms/protocol/vigor_link_slave.cpp" line="+53"/>
         <source>Vigor link: %1 bytes arrived before the request was answered; the %2 beyond the first %3 were dropped</source>
         <translation>Vigor link: sono arrivati %1 byte prima della risposta alla richiesta; i %2 oltre i primi %3 sono stati scartati</translation>
     </message>
@@ -8682,7 +8682,7 @@ Valutazione: %4 µs (%5..%6)</translation>
 <context>
     <name>rung::simulator::Engine</name>
     <message>
-        <location filename="../simulator/engine_execute.cpp" line="+46"/>
+        <location filename="../simulator/engine_execute.cpp" line="+48"/>
         <source>set value %1 is not a BCD number; the instruction is skipped</source>
         <translation>il valore di preset %1 non è un numero BCD; l&apos;istruzione viene saltata</translation>
     </message>
@@ -8702,18 +8702,18 @@ Valutazione: %4 µs (%5..%6)</translation>
         <translation>il risultato %1 è fuori da 0..9999; viene scritto %2</translation>
     </message>
     <message>
-        <location line="+424"/>
+        <location line="+33"/>
         <source>subroutines nest deeper than %1 levels; the call is skipped</source>
         <translation>le subroutine sono annidate oltre %1 livelli; la chiamata non viene eseguita</translation>
     </message>
     <message>
-        <location line="+88"/>
-        <location line="+56"/>
+        <location filename="../simulator/engine_arith.h" line="+54"/>
+        <location line="+42"/>
         <source>division by zero; the destination is unchanged</source>
         <translation>divisione per zero; la destinazione resta invariata</translation>
     </message>
     <message>
-        <location line="+42"/>
+        <location line="+37"/>
         <source>MOVIND index %1 is outside 0..%2; nothing is written</source>
         <translation>l&apos;indice %1 di MOVIND è fuori da 0..%2; non viene scritto nulla</translation>
     </message>
