@@ -53,7 +53,7 @@ TimingCanvas::TimingCanvas(QWidget *parent)
     setAttribute(Qt::WA_OpaquePaintEvent);
 }
 
-void TimingCanvas::setChannels(const std::vector<TimingChannel> *channels) {
+void TimingCanvas::setChannels(const std::vector<model::TimingChannel> *channels) {
     m_channels = channels;
     // Every row drawn: the chart's scroll area scrolls them when the dock is low.
     setMinimumHeight(std::max(60, contentHeight()));
@@ -61,7 +61,7 @@ void TimingCanvas::setChannels(const std::vector<TimingChannel> *channels) {
     update();
 }
 
-void TimingCanvas::setWindow(TimingWindow window) {
+void TimingCanvas::setWindow(model::TimingWindow window) {
     m_window = std::move(window);
     update();
 }
@@ -91,7 +91,7 @@ int TimingCanvas::nameWidth() const {
     const QFontMetrics fm(font());
     int width = fm.horizontalAdvance(QStringLiteral("MMMMMM"));
     if (m_channels)
-        for (const TimingChannel &c : *m_channels)
+        for (const model::TimingChannel &c : *m_channels)
             width = std::max(
                 width, fm.horizontalAdvance(c.symbol.isEmpty()
                                                 ? c.device
@@ -158,7 +158,7 @@ void TimingCanvas::render(QPainter &p, QSize size) const {
     if (m_channels) {
         const QFontMetrics fm(p.font());
         for (int k = 0; k < static_cast<int>(m_channels->size()); ++k) {
-            const TimingChannel &c = (*m_channels)[static_cast<std::size_t>(k)];
+            const model::TimingChannel &c = (*m_channels)[static_cast<std::size_t>(k)];
             const QRect row(0, rowTop(k), size.width(), rowHeight(k));
             if (k == m_selected)
                 p.fillRect(row, palette().color(QPalette::Highlight).lighter(170));
@@ -326,7 +326,7 @@ void TimingCanvas::paintBit(QPainter &p, const QRect &r, std::size_t k, qint64 f
 void TimingCanvas::paintWord(QPainter &p, const QRect &r, std::size_t k, qint64 from) const {
     if (k >= m_window.changes.size())
         return;
-    const TimingChannel &c = (*m_channels)[k];
+    const model::TimingChannel &c = (*m_channels)[k];
     const auto &changes = m_window.changes[k];
     const double right = r.right() + 1;
     const qint64 known = m_window.knownFromMs[k];

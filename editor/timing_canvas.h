@@ -5,7 +5,7 @@
 // two cursors. Draws into any painter, so PNG and SVG exports are the same drawing. The chart
 // (timing_chart.h) owns the data and the view; the canvas turns mouse and wheel into requests.
 
-#include "timing_data.h"
+#include "model/image/timing_data.h"
 
 #include <QRectF>
 #include <QWidget>
@@ -21,8 +21,8 @@ class TimingCanvas : public QWidget {
 public:
     explicit TimingCanvas(QWidget *parent = nullptr);
 
-    void setChannels(const std::vector<TimingChannel> *channels);
-    void setWindow(TimingWindow window);
+    void setChannels(const std::vector<model::TimingChannel> *channels);
+    void setWindow(model::TimingWindow window);
     // The right edge's time and the zoom (virtual milliseconds per pixel).
     void setView(qint64 endMs, double msPerPixel);
     qint64 endMs() const { return m_endMs; }
@@ -80,8 +80,8 @@ private:
     void paintBit(QPainter &p, const QRect &r, std::size_t k, qint64 from) const;
     void paintWord(QPainter &p, const QRect &r, std::size_t k, qint64 from) const;
 
-    const std::vector<TimingChannel> *m_channels = nullptr;
-    TimingWindow m_window;
+    const std::vector<model::TimingChannel> *m_channels = nullptr;
+    model::TimingWindow m_window;
     std::vector<model::HistoryRecorder::Mark> m_pastMarks;
     qint64 m_endMs = 0;
     double m_msPerPixel = 10.0;

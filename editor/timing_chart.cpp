@@ -153,7 +153,7 @@ TimingChart::TimingChart(Document *document, QWidget *parent)
         if (&m_document->target() != m_hintsTarget)
             retranslate(); // another family: the hints' examples are its devices
         // Symbols renamed: the names column follows.
-        for (TimingChannel &c : m_channels) {
+        for (model::TimingChannel &c : m_channels) {
             const model::Symbol *s = m_document->project().symbol(c.address);
             c.symbol = s ? s->name : QString();
         }
@@ -227,7 +227,7 @@ void TimingChart::watchChannels() {
         return;
     std::vector<model::Address> devices;
     bool kept = true;
-    for (const TimingChannel &c : m_channels) {
+    for (const model::TimingChannel &c : m_channels) {
         kept = m_source->watchHistory(c.address) && kept;
         devices.push_back(c.address);
     }
@@ -251,13 +251,13 @@ bool TimingChart::addDevices(const QStringList &texts) {
     }
     for (const model::Address &a : found) {
         if (std::any_of(m_channels.begin(), m_channels.end(),
-                        [&a](const TimingChannel &c) { return c.address == a; }))
+                        [&a](const model::TimingChannel &c) { return c.address == a; }))
             continue;
         if (static_cast<int>(m_channels.size()) >= kMaxChannels) {
             emit message(tr("The timing chart draws at most %1 devices").arg(kMaxChannels));
             break;
         }
-        TimingChannel c;
+        model::TimingChannel c;
         c.address = a;
         c.device = model::formatAddress(t, a);
         const model::Symbol *s = m_document->project().symbol(a);
@@ -284,7 +284,7 @@ void TimingChart::removeChannel(int index) {
 
 void TimingChart::rowMenu(int row, const QPoint &at) {
     QMenu menu;
-    TimingChannel &c = m_channels[static_cast<std::size_t>(row)];
+    model::TimingChannel &c = m_channels[static_cast<std::size_t>(row)];
     if (!c.bit) {
         QMenu *show = menu.addMenu(tr("Show As"));
         for (const model::ValueFormat f : model::kValueFormats) {
@@ -363,7 +363,7 @@ void TimingChart::refresh() {
     qint64 earliest = m_latestMs;
     if (m_source)
         m_source->readHistory([&](const model::HistoryRecorder &h) {
-            for (const TimingChannel &c : m_channels)
+            for (const model::TimingChannel &c : m_channels)
                 if (const auto first = h.oldest(c.address))
                     earliest = std::min(earliest, first->timeMs);
         });
@@ -378,7 +378,8 @@ void TimingChart::applyView() {
     m_canvas->setView(m_endMs, m_msPerPixel);
     if (m_source) {
         const qint64 from = m_canvas->fromMs();
-        m_canvas->setWindow(readWindow(*m_source, m_channels, from, std::min(m_endMs, m_latestMs)));
+        m_canvas->setWindow(
+            model::readWindow(*m_source, m_channels, from, std::min(m_endMs, m_latestMs)));
     } else {
         m_canvas->setWindow({});
     }
@@ -446,9 +447,10 @@ bool TimingChart::armTrigger(const QString &text, model::Trigger::Action action)
     std::vector<model::HistoryRecorder::Mark> past;
     if (m_source)
         m_source->readHistory([&](const model::HistoryRecorder &h) {
-            past = triggerMoments(h.changes(trigger.device, std::numeric_limits<qint64>::min() / 2,
-                                            std::numeric_limits<qint64>::max() / 2),
-                                  trigger);
+            past = model::triggerMoments(h.changes(trigger.device,
+                                                   std::numeric_limits<qint64>::min() / 2,
+                                                   std::numeric_limits<qint64>::max() / 2),
+                                         trigger);
         });
     m_canvas->setPastMarks(past);
     m_triggerStatus = action == model::Trigger::Action::Stop
@@ -498,7 +500,7 @@ bool TimingChart::exportTo(const QString &path, const QString &format, QString *
         }
         QTextStream out(&file);
         if (m_source)
-            writeCsv(*m_source, m_channels, out);
+            model::writeCsv(*m_source, m_channels, out);
         out.flush();
         if (!file.commit()) {
             *error = tr("Cannot write %1: %2").arg(path, file.errorString());

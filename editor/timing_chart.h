@@ -8,7 +8,7 @@
 // recorded scan that stops the simulation or marks the moment, and exports to CSV, PNG and
 // SVG. Devices come in by typing (ranges too), or dragged from the ladder or the watch table.
 
-#include "timing_data.h"
+#include "model/image/timing_data.h"
 
 #include "model/image/monitor_source.h"
 
@@ -40,7 +40,7 @@ public:
     // Adds devices and ranges ("Y0", "D0..D3"); false, with message(), when one is none.
     bool addDevices(const QStringList &texts);
     void removeChannel(int index);
-    const std::vector<TimingChannel> &channels() const { return m_channels; }
+    const std::vector<model::TimingChannel> &channels() const { return m_channels; }
     TimingCanvas *canvas() const { return m_canvas; }
 
     // The view: newest time on the right edge while following.
@@ -88,7 +88,7 @@ private:
     Document *m_document;
     const model::Target *m_hintsTarget = nullptr; // whose devices the hints show
     QPointer<model::MonitorSource> m_source;
-    std::vector<TimingChannel> m_channels;
+    std::vector<model::TimingChannel> m_channels;
     TimingCanvas *m_canvas;
     QScrollBar *m_scroll;
     QLineEdit *m_add;

@@ -5047,7 +5047,7 @@ Kiértékelés: %4 µs (%5..%6)</translation>
         <translation>Eltávolítás</translation>
     </message>
     <message>
-        <location line="+109"/>
+        <location line="+110"/>
         <source>A: %1</source>
         <translation>A: %1</translation>
     </message>
@@ -5080,7 +5080,7 @@ Kiértékelés: %4 µs (%5..%6)</translation>
         <translation>A trigger nincs élesítve: ez a forrás nem tudja figyelni: %1</translation>
     </message>
     <message>
-        <location line="+23"/>
+        <location line="+24"/>
         <source>Armed: stops when %1</source>
         <translation>Élesítve: megáll, ha %1</translation>
     </message>

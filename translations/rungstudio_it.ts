@@ -5060,7 +5060,7 @@ Valutazione: %4 µs (%5..%6)</translation>
         <translation>Rimuovi</translation>
     </message>
     <message>
-        <location line="+109"/>
+        <location line="+110"/>
         <source>A: %1</source>
         <translation>A: %1</translation>
     </message>
@@ -5094,7 +5094,7 @@ Valutazione: %4 µs (%5..%6)</translation>
         <translation>Trigger non armato: questa sorgente non può osservare %1</translation>
     </message>
     <message>
-        <location line="+23"/>
+        <location line="+24"/>
         <source>Armed: stops when %1</source>
         <translation>Armato: si ferma quando %1</translation>
     </message>

@@ -1,4 +1,4 @@
-#include "timing_data.h"
+#include "model/image/timing_data.h"
 
 #include "model/image/monitor_source.h"
 #include "model/image/scan_csv.h"
@@ -9,18 +9,18 @@
 #include <limits>
 #include <map>
 
-namespace rung::editor {
+namespace rung::model {
 
-using Change = model::HistoryRecorder::Change;
+using Change = HistoryRecorder::Change;
 
-TimingWindow readWindow(const model::MonitorSource &source,
-                        const std::vector<TimingChannel> &channels, qint64 fromMs, qint64 toMs) {
+TimingWindow readWindow(const MonitorSource &source, const std::vector<TimingChannel> &channels,
+                        qint64 fromMs, qint64 toMs) {
     TimingWindow w;
     w.fromMs = fromMs;
     w.toMs = toMs;
     w.changes.resize(channels.size());
     w.knownFromMs.assign(channels.size(), -1);
-    source.readHistory([&](const model::HistoryRecorder &h) {
+    source.readHistory([&](const HistoryRecorder &h) {
         for (std::size_t k = 0; k < channels.size(); ++k) {
             w.changes[k] = h.changes(channels[k].address, fromMs, toMs);
             if (const auto first = h.oldest(channels[k].address))
@@ -33,19 +33,19 @@ TimingWindow readWindow(const model::MonitorSource &source,
     return w;
 }
 
-int writeCsv(const model::MonitorSource &source, const std::vector<TimingChannel> &channels,
+int writeCsv(const MonitorSource &source, const std::vector<TimingChannel> &channels,
              QTextStream &out) {
     constexpr qint64 lowest = std::numeric_limits<qint64>::min() / 2;
     constexpr qint64 highest = std::numeric_limits<qint64>::max() / 2;
     std::vector<std::vector<Change>> all(channels.size());
-    source.readHistory([&](const model::HistoryRecorder &h) {
+    source.readHistory([&](const HistoryRecorder &h) {
         for (std::size_t k = 0; k < channels.size(); ++k)
             all[k] = h.changes(channels[k].address, lowest, highest);
     });
     QStringList devices;
     for (const TimingChannel &c : channels)
         devices << c.device;
-    model::ScanCsvWriter csv(out, devices);
+    ScanCsvWriter csv(out, devices);
     // Every scan at which something changed, in order; then each channel's value after it.
     std::map<quint64, qint64> moments; // scan -> time
     for (const auto &changes : all)
@@ -62,13 +62,13 @@ int writeCsv(const model::MonitorSource &source, const std::vector<TimingChannel
     return csv.rows();
 }
 
-std::vector<model::HistoryRecorder::Mark> triggerMoments(const std::vector<Change> &changes,
-                                                         const model::Trigger &trigger) {
-    std::vector<model::HistoryRecorder::Mark> out;
+std::vector<HistoryRecorder::Mark> triggerMoments(const std::vector<Change> &changes,
+                                                  const Trigger &trigger) {
+    std::vector<HistoryRecorder::Mark> out;
     for (std::size_t k = 1; k < changes.size(); ++k)
         if (trigger.fires(changes[k - 1].value, changes[k].value))
             out.push_back({changes[k].scan, changes[k].timeMs});
     return out;
 }
 
-} // namespace rung::editor
+} // namespace rung::model
