@@ -4423,8 +4423,8 @@ Kiértékelés: %4 µs (%5..%6)</translation>
 <context>
     <name>rung::editor::IlEditor</name>
     <message>
-        <location filename="../editor/il_editor.cpp" line="+274"/>
-        <location line="+395"/>
+        <location filename="../editor/il_editor.cpp" line="+105"/>
+        <location line="+386"/>
         <source>Instruction list</source>
         <translation>Utasításlista</translation>
     </message>
@@ -4432,7 +4432,7 @@ Kiértékelés: %4 µs (%5..%6)</translation>
 <context>
     <name>rung::editor::IlLexer</name>
     <message>
-        <location line="-601"/>
+        <location filename="../editor/il_lexer.cpp" line="+22"/>
         <source>Default</source>
         <translation>Alapértelmezett</translation>
     </message>

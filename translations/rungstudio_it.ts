@@ -4436,8 +4436,8 @@ Valutazione: %4 µs (%5..%6)</translation>
 <context>
     <name>rung::editor::IlEditor</name>
     <message>
-        <location filename="../editor/il_editor.cpp" line="+274"/>
-        <location line="+395"/>
+        <location filename="../editor/il_editor.cpp" line="+105"/>
+        <location line="+386"/>
         <source>Instruction list</source>
         <translation>Lista istruzioni</translation>
     </message>
@@ -4445,7 +4445,7 @@ Valutazione: %4 µs (%5..%6)</translation>
 <context>
     <name>rung::editor::IlLexer</name>
     <message>
-        <location line="-601"/>
+        <location filename="../editor/il_lexer.cpp" line="+22"/>
         <source>Default</source>
         <translation>Predefinito</translation>
     </message>
