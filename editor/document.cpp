@@ -1,10 +1,11 @@
 #include "document.h"
 
+#include "commands/document_commands.h"
+
 #include "model/ladder/ladder_text.h"
 #include "model/target/address.h"
 
 #include <QFileInfo>
-#include <QUndoCommand>
 
 #include <algorithm>
 
@@ -12,66 +13,6 @@
 #include <set>
 
 namespace rung::editor {
-
-namespace {
-
-// Replaces rungs [first, first + oldRungs.size()) by newRungs; stores both as values (the
-// serialized state of the rungs), never pointers into the document.
-class ReplaceRungsCommand : public QUndoCommand {
-public:
-    ReplaceRungsCommand(Document *doc, int first, std::vector<model::Rung> oldRungs,
-                        std::vector<model::Rung> newRungs, const QString &label)
-        : QUndoCommand(label)
-        , m_doc(doc)
-        , m_first(first)
-        , m_old(std::move(oldRungs))
-        , m_new(std::move(newRungs)) {}
-
-    void redo() override { m_doc->applyRungs(m_first, static_cast<int>(m_old.size()), m_new); }
-    void undo() override { m_doc->applyRungs(m_first, static_cast<int>(m_new.size()), m_old); }
-
-private:
-    Document *m_doc;
-    int m_first;
-    std::vector<model::Rung> m_old;
-    std::vector<model::Rung> m_new;
-};
-
-class SymbolsCommand : public QUndoCommand {
-public:
-    SymbolsCommand(Document *doc, std::vector<model::Symbol> oldSymbols,
-                   std::vector<model::Symbol> newSymbols)
-        : QUndoCommand(Document::tr("Edit symbols"))
-        , m_doc(doc)
-        , m_old(std::move(oldSymbols))
-        , m_new(std::move(newSymbols)) {}
-    void redo() override { m_doc->applySymbols(m_new); }
-    void undo() override { m_doc->applySymbols(m_old); }
-
-private:
-    Document *m_doc;
-    std::vector<model::Symbol> m_old;
-    std::vector<model::Symbol> m_new;
-};
-
-class WatchListsCommand : public QUndoCommand {
-public:
-    WatchListsCommand(Document *doc, std::vector<model::WatchList> oldLists,
-                      std::vector<model::WatchList> newLists, const QString &label)
-        : QUndoCommand(label)
-        , m_doc(doc)
-        , m_old(std::move(oldLists))
-        , m_new(std::move(newLists)) {}
-    void redo() override { m_doc->applyWatchLists(m_new); }
-    void undo() override { m_doc->applyWatchLists(m_old); }
-
-private:
-    Document *m_doc;
-    std::vector<model::WatchList> m_old;
-    std::vector<model::WatchList> m_new;
-};
-
-} // namespace
 
 Document::Document(QObject *parent)
     : QObject(parent) {

@@ -1,8 +1,8 @@
 #include "listing_controller.h"
 
+#include "editor/commands/listing_lines_command.h"
 #include "editor/il_editor.h"
 #include "editor/ladder_view.h"
-#include "editor/listing_lines_command.h"
 #include "editor/problems_view.h"
 
 #include <QAction>

@@ -1,6 +1,6 @@
-#include "listing_lines_command.h"
+#include "editor/commands/listing_lines_command.h"
 
-#include "il_editor.h"
+#include "editor/il_editor.h"
 
 namespace rung::editor {
 
