@@ -4373,12 +4373,12 @@ Kiértékelés: %4 µs (%5..%6)</translation>
 <context>
     <name>rung::editor::Document</name>
     <message>
-        <location filename="../editor/document.cpp" line="+44"/>
+        <location filename="../editor/commands/document_commands.cpp" line="+26"/>
         <source>Edit symbols</source>
         <translation>Szimbólumok szerkesztése</translation>
     </message>
     <message>
-        <location line="+92"/>
+        <location filename="../editor/document.cpp" line="+77"/>
         <source>Untitled</source>
         <translation>Névtelen</translation>
     </message>
@@ -4423,7 +4423,7 @@ Kiértékelés: %4 µs (%5..%6)</translation>
 <context>
     <name>rung::editor::IlEditor</name>
     <message>
-        <location filename="../editor/il_editor.cpp" line="+105"/>
+        <location filename="../editor/il_editor.cpp" line="+104"/>
         <location line="+386"/>
         <source>Instruction list</source>
         <translation>Utasításlista</translation>
@@ -5487,12 +5487,12 @@ Kiértékelés: %4 µs (%5..%6)</translation>
     </message>
     <message>
         <location line="+58"/>
-        <location filename="../model/checks/checks_list.cpp" line="+82"/>
+        <location filename="../model/checks/checks_list.cpp" line="+55"/>
         <source>Append %1</source>
         <translation>%1 hozzáfűzése a végére</translation>
     </message>
     <message>
-        <location filename="../model/checks/checks_list.cpp" line="+77"/>
+        <location filename="../model/checks/checks_blocks_and_stack.cpp" line="+59"/>
         <source>Rewrite the rung in the canonical form</source>
         <translation>A létrafok átírása kanonikus formára</translation>
     </message>
@@ -5507,14 +5507,14 @@ Kiértékelés: %4 µs (%5..%6)</translation>
         <translation>Halmozott %1: minden blokkot kapcsoljon %1-vel, amint elkészült</translation>
     </message>
     <message numerus="yes">
-        <location line="+4"/>
+        <location line="+3"/>
         <source>Stacked %1: %n blocks are open; an OR chain needs less stack</source>
         <translation>
             <numerusform>Halmozott %1: %n blokk nyitott; egy OR-lánc kevesebb vermet igényel</numerusform>
         </translation>
     </message>
     <message>
-        <location line="+8"/>
+        <location line="+7"/>
         <source>A single contact joined with %1 is simpler as %2</source>
         <translation>Egyetlen érintkező %1 kapcsolással egyszerűbb %2 formában</translation>
     </message>
@@ -5539,7 +5539,7 @@ Kiértékelés: %4 µs (%5..%6)</translation>
         <translation>Az egyetlen érintkező utáni blokk előre kerülhet, így elmarad a(z) %1</translation>
     </message>
     <message>
-        <location line="+12"/>
+        <location line="+11"/>
         <source>Put the single device below the block and drop the %1</source>
         <translation>Az egyetlen operandus kerüljön a blokk alá, így elmarad a(z) %1</translation>
     </message>
@@ -5569,24 +5569,24 @@ Kiértékelés: %4 µs (%5..%6)</translation>
         <translation>A saját érintkező nélküli kimenet az ág tetejére való, és nem kell hozzá %1</translation>
     </message>
     <message>
-        <location line="+6"/>
+        <location line="+5"/>
         <source>Put the output on top and drop the %1</source>
         <translation>A kimenet kerüljön felülre, így elmarad a(z) %1</translation>
     </message>
     <message numerus="yes">
-        <location line="+13"/>
+        <location line="+12"/>
         <source>%n MPS left without MPP at the end of the rung</source>
         <translation>
             <numerusform>%n MPS maradt MPP nélkül a létrafok végén</numerusform>
         </translation>
     </message>
     <message>
-        <location line="+148"/>
+        <location filename="../model/checks/checks_operands.cpp" line="+149"/>
         <source>%1 cannot be written: the program only reads it (%2)</source>
         <translation>%1 nem írható: a program csak olvassa (%2)</translation>
     </message>
     <message>
-        <location line="+58"/>
+        <location filename="../model/checks/checks_duplicates.cpp" line="+26"/>
         <source>%1 is driven twice; a coil may be driven only once (the first is on line %2)</source>
         <translation>%1 kétszer van vezérelve; egy tekercs csak egyszer vezérelhető (az első a(z) %2. sorban)</translation>
     </message>
@@ -5723,12 +5723,12 @@ Kiértékelés: %4 µs (%5..%6)</translation>
         <translation>A léptetőlánc nincs RET-tel lezárva</translation>
     </message>
     <message>
-        <location filename="../model/checks/checks_list.cpp" line="-96"/>
+        <location filename="../model/checks/checks_operands.cpp" line="-20"/>
         <source>Set value %1 is out of range</source>
         <translation>A(z) %1 beállított érték tartományon kívül esik</translation>
     </message>
     <message>
-        <location line="+29"/>
+        <location line="+26"/>
         <source>%1 cannot be written: the PLC drives it (%2)</source>
         <translation>%1 nem írható: a PLC vezérli (%2)</translation>
     </message>
@@ -5743,17 +5743,17 @@ Kiértékelés: %4 µs (%5..%6)</translation>
         <translation>A(z) %1 szám időzítőként és számlálóként is használatban van; közös tartományuk van</translation>
     </message>
     <message>
-        <location line="+31"/>
+        <location filename="../model/checks/checks_duplicates.cpp" line="-11"/>
         <source>%1 is driven twice; the later one wins (first on line %2)</source>
         <translation>%1 kétszer van vezérelve; a későbbi érvényesül (az első a(z) %2. sorban)</translation>
     </message>
     <message>
-        <location line="+16"/>
+        <location line="+15"/>
         <source>%1 is driven twice; the later one wins (first in rung %2)</source>
         <translation>%1 kétszer van vezérelve; a későbbi érvényesül (az első a(z) %2. létrafokon)</translation>
     </message>
     <message>
-        <location line="+13"/>
+        <location filename="../model/checks/checks_length.cpp" line="+15"/>
         <source>The program needs %1 steps; %2 holds %3</source>
         <translation>A program %1 lépést igényel; a(z) %2 kapacitása %3</translation>
     </message>

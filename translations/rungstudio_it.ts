@@ -4385,12 +4385,12 @@ Valutazione: %4 µs (%5..%6)</translation>
 <context>
     <name>rung::editor::Document</name>
     <message>
-        <location filename="../editor/document.cpp" line="+44"/>
+        <location filename="../editor/commands/document_commands.cpp" line="+26"/>
         <source>Edit symbols</source>
         <translation>Modifica simboli</translation>
     </message>
     <message>
-        <location line="+92"/>
+        <location filename="../editor/document.cpp" line="+77"/>
         <source>Untitled</source>
         <translation>Senza titolo</translation>
     </message>
@@ -4436,7 +4436,7 @@ Valutazione: %4 µs (%5..%6)</translation>
 <context>
     <name>rung::editor::IlEditor</name>
     <message>
-        <location filename="../editor/il_editor.cpp" line="+105"/>
+        <location filename="../editor/il_editor.cpp" line="+104"/>
         <location line="+386"/>
         <source>Instruction list</source>
         <translation>Lista istruzioni</translation>
@@ -5501,12 +5501,12 @@ Valutazione: %4 µs (%5..%6)</translation>
     </message>
     <message>
         <location line="+58"/>
-        <location filename="../model/checks/checks_list.cpp" line="+82"/>
+        <location filename="../model/checks/checks_list.cpp" line="+55"/>
         <source>Append %1</source>
         <translation>Aggiungi %1 in fondo</translation>
     </message>
     <message>
-        <location filename="../model/checks/checks_list.cpp" line="+77"/>
+        <location filename="../model/checks/checks_blocks_and_stack.cpp" line="+59"/>
         <source>Rewrite the rung in the canonical form</source>
         <translation>Riscrivi il segmento nella forma canonica</translation>
     </message>
@@ -5521,7 +5521,7 @@ Valutazione: %4 µs (%5..%6)</translation>
         <translation>%1 impilati: combinare ogni blocco con %1 appena è completo</translation>
     </message>
     <message numerus="yes">
-        <location line="+4"/>
+        <location line="+3"/>
         <source>Stacked %1: %n blocks are open; an OR chain needs less stack</source>
         <translation>
             <numerusform>%1 impilati: %n blocco è aperto; una catena OR richiede meno stack</numerusform>
@@ -5529,7 +5529,7 @@ Valutazione: %4 µs (%5..%6)</translation>
         </translation>
     </message>
     <message>
-        <location line="+8"/>
+        <location line="+7"/>
         <source>A single contact joined with %1 is simpler as %2</source>
         <translation>Un singolo contatto unito con %1 è più semplice come %2</translation>
     </message>
@@ -5554,7 +5554,7 @@ Valutazione: %4 µs (%5..%6)</translation>
         <translation>Il blocco dopo un singolo contatto può essere spostato in testa, senza %1</translation>
     </message>
     <message>
-        <location line="+12"/>
+        <location line="+11"/>
         <source>Put the single device below the block and drop the %1</source>
         <translation>Metti il singolo operando sotto il blocco ed elimina %1</translation>
     </message>
@@ -5584,12 +5584,12 @@ Valutazione: %4 µs (%5..%6)</translation>
         <translation>Un&apos;uscita senza contatti propri va in cima alla diramazione e non richiede %1</translation>
     </message>
     <message>
-        <location line="+6"/>
+        <location line="+5"/>
         <source>Put the output on top and drop the %1</source>
         <translation>Metti l&apos;uscita in cima ed elimina %1</translation>
     </message>
     <message numerus="yes">
-        <location line="+13"/>
+        <location line="+12"/>
         <source>%n MPS left without MPP at the end of the rung</source>
         <translation>
             <numerusform>%n MPS senza MPP alla fine del segmento</numerusform>
@@ -5597,12 +5597,12 @@ Valutazione: %4 µs (%5..%6)</translation>
         </translation>
     </message>
     <message>
-        <location line="+148"/>
+        <location filename="../model/checks/checks_operands.cpp" line="+149"/>
         <source>%1 cannot be written: the program only reads it (%2)</source>
         <translation>%1 non può essere scritto: il programma lo legge soltanto (%2)</translation>
     </message>
     <message>
-        <location line="+58"/>
+        <location filename="../model/checks/checks_duplicates.cpp" line="+26"/>
         <source>%1 is driven twice; a coil may be driven only once (the first is on line %2)</source>
         <translation>%1 è comandato due volte; una bobina può essere comandata una volta sola (il primo è alla riga %2)</translation>
     </message>
@@ -5739,12 +5739,12 @@ Valutazione: %4 µs (%5..%6)</translation>
         <translation>Lo step ladder non è chiuso con RET</translation>
     </message>
     <message>
-        <location filename="../model/checks/checks_list.cpp" line="-96"/>
+        <location filename="../model/checks/checks_operands.cpp" line="-20"/>
         <source>Set value %1 is out of range</source>
         <translation>Il valore di preset %1 è fuori campo</translation>
     </message>
     <message>
-        <location line="+29"/>
+        <location line="+26"/>
         <source>%1 cannot be written: the PLC drives it (%2)</source>
         <translation>%1 non è scrivibile: lo gestisce il PLC (%2)</translation>
     </message>
@@ -5759,17 +5759,17 @@ Valutazione: %4 µs (%5..%6)</translation>
         <translation>Il numero %1 è usato come temporizzatore e come contatore; condividono un banco</translation>
     </message>
     <message>
-        <location line="+31"/>
+        <location filename="../model/checks/checks_duplicates.cpp" line="-11"/>
         <source>%1 is driven twice; the later one wins (first on line %2)</source>
         <translation>%1 è comandato due volte; prevale l&apos;ultimo (il primo alla riga %2)</translation>
     </message>
     <message>
-        <location line="+16"/>
+        <location line="+15"/>
         <source>%1 is driven twice; the later one wins (first in rung %2)</source>
         <translation>%1 è comandato due volte; prevale l&apos;ultimo (il primo nel segmento %2)</translation>
     </message>
     <message>
-        <location line="+13"/>
+        <location filename="../model/checks/checks_length.cpp" line="+15"/>
         <source>The program needs %1 steps; %2 holds %3</source>
         <translation>Il programma richiede %1 passi; %2 ne contiene %3</translation>
     </message>
