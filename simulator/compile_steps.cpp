@@ -220,6 +220,10 @@ void Compiler::compileApply(const model::Instruction &ins, Step &s) {
     case ApplyFunction::Sub:
     case ApplyFunction::Mul:
     case ApplyFunction::Div:
+        if (ins.spec->doubleWord) {
+            compileDoubleDivide(ins, s); // compile_comm.cpp
+            break;
+        }
         s.code = ins.spec->function == ApplyFunction::Add   ? Code::Add
                  : ins.spec->function == ApplyFunction::Sub ? Code::Sub
                  : ins.spec->function == ApplyFunction::Mul ? Code::Mul
@@ -362,6 +366,22 @@ void Compiler::compileApply(const model::Instruction &ins, Step &s) {
         break;
     case ApplyFunction::CheckCode:
         compileCheckCode(ins, s); // compile_words.cpp
+        break;
+    case ApplyFunction::Swap:
+    case ApplyFunction::ToAscii:
+    case ApplyFunction::FromAscii:
+    case ApplyFunction::ShiftDigits:
+    case ApplyFunction::ReadVolume:
+        compileText(ins, s); // compile_comm.cpp
+        break;
+    case ApplyFunction::EasyLink:
+    case ApplyFunction::ModbusMaster:
+    case ApplyFunction::SerialData:
+    case ApplyFunction::ModuleRead:
+    case ApplyFunction::ModuleWrite:
+    case ApplyFunction::FreePortSend:
+    case ApplyFunction::MasterQuery:
+        compileComm(ins, s); // compile_comm.cpp
         break;
     case ApplyFunction::Toggle:
         // OUTB (PL110 manual 4.2.3): each activation of the coil flips the bit

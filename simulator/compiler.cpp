@@ -56,7 +56,32 @@ void Compiler::compileSystem() {
             bindFlag(d.role, m_layout->bit(a)); // compile_cpm1.cpp
             break;
         case model::SystemRole::Other:
-        case model::SystemRole::ByteMode: // read by CCD (compile_words.cpp)
+        case model::SystemRole::ByteMode:  // read by CCD (compile_words.cpp)
+        case model::SystemRole::HexDigits: // read by SMOV (compile_comm.cpp)
+        // Communication (compile_comm.cpp, engine_comm.cpp; the network drives CPU Link's and
+        // Parallel Link's).
+        case model::SystemRole::LinkCycleDone:
+        case model::SystemRole::RsSendRequest:
+        case model::SystemRole::RsReceiveDone:
+        case model::SystemRole::RsTimeout:
+        case model::SystemRole::CommError:
+        case model::SystemRole::CommErrorCode:
+        case model::SystemRole::RsSendLeft:
+        case model::SystemRole::RsReceived:
+        case model::SystemRole::CommTimeout:
+        case model::SystemRole::CpuLinkFailed:
+        case model::SystemRole::CpuLinkTimeout:
+        case model::SystemRole::CpuLinkSlaves:
+        case model::SystemRole::CpuLinkRange:
+        case model::SystemRole::CpuLinkRetries:
+        case model::SystemRole::NetworkScanTime:
+        case model::SystemRole::NetworkScanMax:
+        case model::SystemRole::CpuLinkErrorCount:
+        case model::SystemRole::CpuLinkErrorCode:
+        case model::SystemRole::ParallelMaster:
+        case model::SystemRole::ParallelSlave:
+        case model::SystemRole::ParallelNormal:
+        case model::SystemRole::ParallelHighSpeed:
         case model::SystemRole::Error:
         case model::SystemRole::Connected:
             break;
@@ -323,6 +348,8 @@ CompileResult Compiler::run() {
     }
     m_muted = false;
     resolveJumps();
+    if (!m_program->comms.empty())
+        compileCommDevices(); // compile_comm.cpp
     CompileResult result;
     result.diagnostics = std::move(m_diagnostics);
     std::stable_sort(result.diagnostics.begin(), result.diagnostics.end(),

@@ -255,6 +255,14 @@ private:
     // compile_words.cpp: Vigor DMOV and CCD.
     void compileDoubleMove(const model::Instruction &ins, Step &s);
     void compileCheckCode(const model::Instruction &ins, Step &s);
+    // compile_comm.cpp: SWAP, ASCI, HEX, SMOV, VRRD, DDIV and the communication instructions.
+    void compileText(const model::Instruction &ins, Step &s);
+    void compileDoubleDivide(const model::Instruction &ins, Step &s);
+    void compileComm(const model::Instruction &ins, Step &s);
+    void compileCommDevices();
+    BitRef systemBit(model::SystemRole role);
+    std::int32_t systemWord(model::SystemRole role);
+    std::int32_t wordsToAreaEnd(const model::Operand &o) const;
     void compileSystem();
     // Omron CPM1 (compile_cpm1.cpp): the W353 application instructions, SBN / RET / STEP,
     // the arithmetic flags, and the subroutines' targets.

@@ -42,6 +42,7 @@ Engine::Engine(std::shared_ptr<const Program> program)
     m_edges.assign(static_cast<std::size_t>(m_program->edgeSlots), 0);
     m_flow.assign(m_program->steps.size(), 0);
     m_reported.assign(m_program->steps.size(), 0);
+    m_comm.tasks.assign(m_program->comms.size(), {});
     loadPresets();
 }
 
@@ -56,9 +57,11 @@ void Engine::reset() {
     const std::vector<Breakpoint> breakpoints =
         m_pendingProgram ? m_pendingBreakpoints : m_breakpointList;
     std::shared_ptr<const Program> program = m_pendingProgram ? m_pendingProgram : m_program;
+    model::PlcPorts *ports = m_ports;
     *this = Engine(std::move(program));
     m_stats.periodMs = period;
     m_record = record;
+    attachPorts(ports);
     setBreakpoints(breakpoints);
 }
 
@@ -217,6 +220,8 @@ void Engine::endScan() {
     if (p.deferredBitWrites)
         for (const auto &[begin, end] : p.bitWordRanges)
             std::copy(m_write.begin() + begin, m_write.begin() + end, m_words.begin() + begin);
+    if (!p.comms.empty())
+        serviceComms(); // engine_comm.cpp
     ++m_stats.scans;
     ++m_scansSincePowerOn;
     m_stats.timeMs += m_stats.periodMs;
@@ -356,6 +361,9 @@ void Engine::powerCycle() {
     }
     std::fill(m_edges.begin(), m_edges.end(), 0);
     std::fill(m_flow.begin(), m_flow.end(), 0);
+    // The communication starts afresh (a module's buffer memory too); the ports stay.
+    m_comm = CommState{};
+    m_comm.tasks.assign(m_program->comms.size(), {});
     loadPresets();
     applyForces(m_words.data());
     m_scansSincePowerOn = 0;

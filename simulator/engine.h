@@ -6,7 +6,11 @@
 // Not thread-safe: one thread drives an Engine (SimulatorSession: its worker; other threads
 // post to a CommandInbox and read the snapshots the worker publishes).
 
+#include "comm_state.h"
 #include "program.h"
+
+#include "model/comm/link_table.h"
+#include "model/comm/plc_port.h"
 
 #include "model/image/snapshot.h"
 
@@ -139,10 +143,21 @@ public:
     const ScanStatistics &statistics() const { return m_stats; }
     const std::vector<RuntimeError> &runtimeErrors() const { return m_errors; }
 
+    // The station's ports in a network (docs/network.md): the communication instructions
+    // drive them. Without (nullptr, the default) a port is connected to nothing: what is sent
+    // leaves at once and nothing comes back. The ports must outlive the engine's use of them.
+    void attachPorts(model::PlcPorts *ports);
+
     Snapshot snapshot() const;
     // The memory image in MemoryLayout order (the history recorder reads it after a scan): the
     // layout's words only, as in a snapshot; the scratch words behind them are the engine's.
     std::span<const std::int32_t> words() const { return {m_words.data(), m_scratch}; }
+    // A network's exchange without instructions (CPU Link, Parallel Link, docs/network.md)
+    // writes the image between scans by word index and bit, forced bits kept.
+    void storeImageWord(std::size_t index, std::int32_t value, int width) {
+        storeWord(index, value, width);
+    }
+    void storeImageBit(const BitRef &bit, bool on) { put(m_words.data(), bit, on); }
 
 private:
     void loadPresets(); // Program::presetLoads, at start and at each power cycle
@@ -297,6 +312,36 @@ private:
     // An operand that is not what the instruction reads: ER ON and nothing written (W353).
     void operandError(std::size_t step, const QString &message);
     void clearArithmeticFlags();
+    // engine_text.cpp: SWAP, ASCI, HEX, SMOV, DDIV with their input ON.
+    void swapBytes(const Step &s);
+    void toAscii(const Step &s, std::size_t step);
+    void fromAscii(const Step &s, std::size_t step);
+    void shiftDigits(const Step &s, std::size_t step);
+    void doubleDivide(const Step &s, std::size_t step);
+    // engine_comm.cpp: a communication instruction in the scan (every scan, ON or OFF), and
+    // the communication work after the user program (seed 001 B-3-4: "after the PLC completes
+    // the user program").
+    void communicate(const Step &s, std::size_t step, bool on);
+    void serviceComms();
+    qint64 commNowUs() const;
+    model::PlcPort *commPort(std::size_t task) const {
+        return task < m_commPorts.size() ? m_commPorts[task] : nullptr;
+    }
+    void serviceMaster(std::size_t task);
+    bool planSet(std::size_t task);
+    void endSet(std::size_t task, model::LinkStatus status);
+    void sendFrame(std::size_t task);
+    void applyReply(const MasterFrame &frame, const std::vector<std::uint16_t> &values);
+    void serviceSerial();
+    void moduleWrite(const CommStep &c, std::size_t step, int bfm, int words);
+    void moduleRead(const CommStep &c, std::size_t step, int bfm, int words);
+    void serviceModule(int module);
+    ModuleState &module(int number);
+    qint64 timeoutUs() const;
+    bool readBit(const BitRef &b) const {
+        return b.valid() && (static_cast<std::uint32_t>(m_words[static_cast<std::size_t>(b.word)]) &
+                             b.mask) != 0;
+    }
     [[gnu::noinline, gnu::cold]] std::int64_t outOfDecimalRange(std::size_t step,
                                                                 std::int64_t value);
 
@@ -330,6 +375,10 @@ private:
     std::vector<Breakpoint> m_breakpointList;
     std::vector<ArmedBreakpoint> m_armed; // sorted by instruction
     std::vector<int> m_nextBreak;         // per step (and one past): first armed index at or after
+    // Communication (engine_comm.cpp): the state, and each instruction's port (null: none).
+    CommState m_comm;
+    model::PlcPorts *m_ports = nullptr;
+    std::vector<model::PlcPort *> m_commPorts;
     std::shared_ptr<const Program> m_pendingProgram; // an edit waiting for the scan's END
     std::vector<Breakpoint> m_pendingBreakpoints;    // and its breakpoints
 };

@@ -298,6 +298,11 @@ EditApplied Engine::replaceProgram(std::shared_ptr<const Program> program,
     m_edges = std::move(edges);
     m_flow.assign(m_program->steps.size(), 0);
     m_reported.assign(m_program->steps.size(), 0);
+    // The communication instructions are the new program's: each starts afresh on its port (a
+    // module keeps its buffer memory, as the hardware would).
+    m_comm.tasks.assign(m_program->comms.size(), {});
+    m_comm.serial = -1;
+    attachPorts(m_ports);
     // Breakpoints name instructions: the old program's go, the new program's come.
     m_breakpointList.clear();
     m_armed.clear();

@@ -499,6 +499,29 @@ std::size_t Engine::execute(std::size_t from, std::size_t to) {
             if (acc)
                 checkCode(s, i); // engine_words.cpp
             break;
+        case Code::Swap:
+            if (acc)
+                swapBytes(s); // engine_text.cpp
+            break;
+        case Code::ToAscii:
+            if (acc)
+                toAscii(s, i);
+            break;
+        case Code::FromAscii:
+            if (acc)
+                fromAscii(s, i);
+            break;
+        case Code::ShiftDigits:
+            if (acc)
+                shiftDigits(s, i);
+            break;
+        case Code::DoubleDivide:
+            if (acc)
+                doubleDivide(s, i);
+            break;
+        case Code::Communicate:
+            communicate(s, i, acc); // engine_comm.cpp: every scan, ON or OFF
+            break;
         case Code::IndirectMove:
             if (acc)
                 indirectMove(s, i, pass);

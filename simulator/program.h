@@ -73,6 +73,20 @@ enum class Code : std::uint8_t {
     // always 16-bit), dest = the sum, slot = the parity, y.constant = the words from x to the
     // end of its area (engine_words.cpp).
     CheckCode,
+    // Vigor SWAP D (dest), ASCI S D n / HEX S D n (x, dest, count = n; bit = the 8-bit mode
+    // flag; y.constant = words from dest (ASCI) or x (HEX) to the end of its area), SMOV
+    // S m1 m2 D n (x, dest; op = m1, count = m2, width-independent slot = n; bit = M9168's
+    // hexadecimal mode); engine_text.cpp.
+    Swap,
+    ToAscii,
+    FromAscii,
+    ShiftDigits,
+    // DDIV S1 S2 D (32 bits): Program::wordLists from slot: S1 low, S1 high (or -1 with
+    // x.constant), S2 low, S2 high (or -1 with y.constant), D, D+1, D+2, D+3.
+    DoubleDivide,
+    // A communication instruction (LINK, MBUS, RS, FROM, TO, SEND, COM / EXP): slot =
+    // Program::comms index; engine_comm.cpp. Runs every scan, ON or OFF.
+    Communicate,
     // Omron CPM1 (W353), with the arithmetic flags (Program::flags): op = ArithOp; engine_cpm1.cpp
     Arithmetic,
     ShiftRegister, // SFT(10): data, shift pulse (edge slot), reset; dest = St, count = words
@@ -226,6 +240,56 @@ struct ElementGate {
     bool whenOn = true;
 };
 
+// What a communication instruction does (Code::Communicate's op).
+enum class CommKind : std::uint8_t {
+    EasyLink,     // Vigor LINK S1 S2
+    ModbusMaster, // Vigor MBUS S1 S2
+    SerialData,   // Vigor RS S m D n
+    ModuleRead,   // Vigor FROM m1 m2 D n
+    ModuleWrite,  // Vigor TO / TOP m1 m2 S n
+    FreePortSend, // PL110 SEND port n
+    MasterQuery,  // PL110 COM / EXP index op slave type number area count
+};
+
+// A communication instruction's operands (Program::comms; docs/network.md).
+struct CommStep {
+    CommKind kind = CommKind::EasyLink;
+    QString port;             // the port it drives (Target::ports)
+    std::int32_t step = 0;    // its instruction
+    std::int32_t first = -1;  // LINK / MBUS S1, RS S, FROM D, TO S, COM's area
+    std::int32_t second = -1; // LINK / MBUS S2 (4 words), RS D
+    // Words from first / second to the end of their area: a block must stay inside.
+    std::int32_t firstWords = 0;
+    std::int32_t secondWords = 0;
+    WordOperand m, n;        // RS m, n; FROM / TO: m = the buffer memory word, n = the words;
+                             // SEND: n = the characters
+    std::int32_t module = 0; // FROM / TO: the module number m1
+    // PL110 COM / EXP (4.2.21): index 1..16, operation 0 read / 1 write / 2 read-write,
+    // slave, 1 = bits, data number, count; the area is `first` (words) or `bits`.
+    std::int32_t index = 0;
+    std::int32_t operation = 0;
+    std::int32_t slave = 0;
+    bool bitData = false;
+    std::int32_t number = 0;
+    std::int32_t count = 0;
+    std::vector<BitRef> bits;
+};
+
+// The system devices communication drives or reads (model::SystemRole), invalid / -1 where
+// the target has none.
+struct CommDevices {
+    BitRef cycleDone;   // LinkCycleDone
+    BitRef sendRequest; // RsSendRequest
+    BitRef receiveDone; // RsReceiveDone
+    BitRef timeout;     // RsTimeout
+    BitRef error;       // CommError
+    BitRef byteMode;    // ByteMode
+    std::int32_t errorCode = -1;
+    std::int32_t sendLeft = -1;
+    std::int32_t received = -1;
+    std::int32_t timeoutWord = -1;
+};
+
 struct Program {
     std::shared_ptr<const MemoryLayout> layout;
     std::vector<Step> steps; // index = instruction index in the list
@@ -269,6 +333,11 @@ struct Program {
     ArithmeticFlags flags;             // turned OFF at END (W353 appendix B)
     // physical inputs refreshed from the stimulus image: [begin, end) words
     std::vector<std::pair<int, int>> inputWordRanges;
+    // Word indices a step reads from a list (DDIV's eight words).
+    std::vector<std::int32_t> wordLists;
+    // Communication instructions; empty: the scan's END does no communication work.
+    std::vector<CommStep> comms;
+    CommDevices commDevices;
 };
 
 struct CompileResult {

@@ -37,6 +37,69 @@ bool isTimerOrCounter(const model::Target &target, const model::Address &a) {
 
 } // namespace
 
+bool parseTraceDevice(const model::Target &target, const QString &text, model::Address *address,
+                      QString *error) {
+    return device(target, text, address, error);
+}
+
+bool parseTraceValue(const QString &value, qint64 *into) {
+    bool ok = false;
+    *into = value.startsWith(QLatin1Char('#')) ? value.mid(1).toLongLong(&ok, 16)
+                                               : value.toLongLong(&ok);
+    return ok;
+}
+
+bool parseTraceColumn(const model::Target &target, const QString &name, TraceColumn *column,
+                      QString *error) {
+    TraceColumn c;
+    c.name = name.trimmed();
+    QString dev = c.name;
+    if (dev.startsWith(QLatin1String("cv:"), Qt::CaseInsensitive)) {
+        c.kind = TraceColumn::Kind::Word;
+        dev = dev.mid(3);
+    } else if (dev.startsWith(QLatin1String("sv:"), Qt::CaseInsensitive)) {
+        c.kind = TraceColumn::Kind::SetValue;
+        dev = dev.mid(3);
+    } else if (dev.startsWith(QLatin1String("hex:"), Qt::CaseInsensitive)) {
+        c.kind = TraceColumn::Kind::Hex; // BCD words read as their digits
+        dev = dev.mid(4);
+    }
+    if (!device(target, dev, &c.address, error))
+        return false;
+    if (c.kind == TraceColumn::Kind::Bit && isWord(target, c.address))
+        c.kind = TraceColumn::Kind::Word;
+    *column = c;
+    return true;
+}
+
+void applyStimulus(Engine &engine, const TraceStimulus &s) {
+    const model::Target &target = engine.layout().target();
+    if (isTimerOrCounter(target, s.address))
+        engine.writeSetValue(s.address, s.value);
+    else if (isWord(target, s.address))
+        engine.writeWord(s.address, s.value);
+    else
+        engine.setBit(s.address, s.value != 0);
+}
+
+QString traceValue(const Engine &engine, const TraceColumn &c) {
+    switch (c.kind) {
+    case TraceColumn::Kind::Bit:
+        return engine.bit(c.address) ? QStringLiteral("1") : QStringLiteral("0");
+    case TraceColumn::Kind::Word:
+        return QString::number(engine.value(c.address));
+    case TraceColumn::Kind::SetValue:
+        return QString::number(engine.setValue(c.address));
+    case TraceColumn::Kind::Hex:
+        return QLatin1Char('#') +
+               QStringLiteral("%1")
+                   .arg(static_cast<std::uint32_t>(engine.value(c.address)) & 0xFFFFu, 4, 16,
+                        QLatin1Char('0'))
+                   .toUpper();
+    }
+    return {};
+}
+
 bool parseTraceOptions(const model::Target &target, const QStringList &args, TraceRequest *request,
                        QString *error) {
     // A value is a number, or a word written in hexadecimal digits as CPM1 listings write
@@ -98,22 +161,8 @@ bool parseTraceOptions(const model::Target &target, const QStringList &args, Tra
         } else if (a == QLatin1String("--trace")) {
             for (const QString &name : v.split(QLatin1Char(','), Qt::SkipEmptyParts)) {
                 TraceColumn c;
-                c.name = name.trimmed();
-                QString dev = c.name;
-                if (dev.startsWith(QLatin1String("cv:"), Qt::CaseInsensitive)) {
-                    c.kind = TraceColumn::Kind::Word;
-                    dev = dev.mid(3);
-                } else if (dev.startsWith(QLatin1String("sv:"), Qt::CaseInsensitive)) {
-                    c.kind = TraceColumn::Kind::SetValue;
-                    dev = dev.mid(3);
-                } else if (dev.startsWith(QLatin1String("hex:"), Qt::CaseInsensitive)) {
-                    c.kind = TraceColumn::Kind::Hex; // BCD words read as their digits
-                    dev = dev.mid(4);
-                }
-                if (!device(target, dev, &c.address, error))
+                if (!parseTraceColumn(target, name, &c, error))
                     return false;
-                if (c.kind == TraceColumn::Kind::Bit && isWord(target, c.address))
-                    c.kind = TraceColumn::Kind::Word;
                 request->columns.push_back(c);
             }
         } else {

@@ -44,6 +44,17 @@ constexpr qint64 kMaxTraceScans = 10000000;
 bool parseTraceOptions(const model::Target &target, const QStringList &args, TraceRequest *request,
                        QString *error);
 
+// The pieces both traces use (a program's, and a network's where each column names a
+// station): a column as --trace writes it ("cv:T0", "hex:DM 0100", "D0"), a --set value
+// ("-5", "#6103"), a stimulus applied to an engine, a column's value as the CSV prints it.
+bool parseTraceColumn(const model::Target &target, const QString &text, TraceColumn *column,
+                      QString *error);
+bool parseTraceDevice(const model::Target &target, const QString &text, model::Address *address,
+                      QString *error);
+bool parseTraceValue(const QString &text, qint64 *value);
+void applyStimulus(Engine &engine, const TraceStimulus &stimulus);
+QString traceValue(const Engine &engine, const TraceColumn &column);
+
 // Runs the request on a fresh engine, writing the CSV (model/image/scan_csv.h: scans from 1,
 // the time at a scan's end) with a row per scan. Stimuli on a timer/counter set its set
 // value; on a word device its value; otherwise the bit.

@@ -91,6 +91,8 @@ int loadProgram(const ProgramOptions &options, LoadedProgram *loaded, QTextStrea
     loaded->target = input.target;
     loaded->kind = input.kind;
     loaded->origin = std::move(origin);
+    loaded->model = input.model ? input.model : &input.target->defaultModel();
+    loaded->ports = input.project.ports;
     return 0;
 }
 

@@ -11,6 +11,7 @@
 #include "model/convert/convert.h"
 #include "simulator/program.h"
 
+#include <QJsonObject>
 #include <QString>
 #include <QTextStream>
 
@@ -32,6 +33,8 @@ struct LoadedProgram {
     // its steps' instruction indices), so a runtime error can name its rung. Empty for a
     // listing, whose instructions carry their lines.
     std::vector<model::CellOrigin> origin;
+    const model::ModelVariant *model = nullptr; // the model it runs on
+    QJsonObject ports; // a project's port settings (docs/network-format.md); empty otherwise
 };
 
 // 0 with *loaded set; 1 when the program does not start (its errors, and why, are written to

@@ -2,6 +2,7 @@
 
 #include "cli_common.h"
 #include "cli_load_program.h"
+#include "cli_network.h"
 
 #include "app/tr.h"
 #include "simulator/trace.h"
@@ -21,6 +22,16 @@ QString usage() {
 } // namespace
 
 int runSimulateCommand(const QStringList &args, QTextStream &out, QTextStream &err) {
+    // A network of stations (docs/network.md): its own options, devices named NAME/DEV.
+    for (qsizetype i = 0; i < args.size(); ++i) {
+        if (args[i].startsWith(QLatin1String("--"))) {
+            ++i;
+            continue;
+        }
+        if (isNetworkFile(args[i]))
+            return runNetworkSimulate(args[i], args.mid(0, i) + args.mid(i + 1), out, err);
+        break;
+    }
     ProgramOptions common;
     QStringList options; // the trace's: each with its value
     QString error;

@@ -28,6 +28,55 @@ QByteArray rtuFrame(int unit, QByteArrayView pdu) {
     return frame;
 }
 
+std::uint8_t lrc(QByteArrayView bytes) {
+    std::uint8_t sum = 0;
+    for (char c : bytes)
+        sum = std::uint8_t(sum + static_cast<quint8>(c));
+    return std::uint8_t(-sum);
+}
+
+QByteArray asciiFrame(int unit, QByteArrayView pdu) {
+    QByteArray body(1, char(unit & 0xFF));
+    body += pdu;
+    QByteArray frame(1, ':');
+    frame += body.toHex().toUpper();
+    frame += hex2(lrc(body)).toLatin1();
+    frame += "\r\n";
+    return frame;
+}
+
+std::optional<QByteArray> detail::asciiBody(QByteArrayView text, QString *why) {
+    if (text.size() < 6 || text.size() % 2 != 0) {
+        *why = QCoreApplication::translate("rung::comms::Protocol",
+                                           "Modbus ASCII: a frame of %1 characters: %2")
+                   .arg(text.size())
+                   .arg(hexDump(text));
+        return std::nullopt;
+    }
+    QByteArray body;
+    for (qsizetype i = 0; i < text.size(); i += 2) {
+        const auto v = comms::detail::hexValue(text, i, 2);
+        if (!v) {
+            *why = QCoreApplication::translate("rung::comms::Protocol",
+                                               "Modbus ASCII: \"%1\" is no hex digit pair")
+                       .arg(QString::fromLatin1(text.sliced(i, 2)));
+            return std::nullopt;
+        }
+        body += char(*v);
+    }
+    const QByteArrayView data = QByteArrayView(body).first(body.size() - 1);
+    if (lrc(data) != static_cast<quint8>(body.back())) {
+        *why = QCoreApplication::translate(
+                   "rung::comms::Protocol",
+                   "Modbus ASCII: wrong LRC (received %1, computed %2): noise on the line or a "
+                   "wrong baud rate or parity")
+                   .arg(hex2(static_cast<quint8>(body.back())), hex2(lrc(data)));
+        return std::nullopt;
+    }
+    body.chop(1);
+    return body;
+}
+
 QByteArray tcpFrame(int transaction, int unit, QByteArrayView pdu) {
     QByteArray frame;
     put16(frame, transaction);

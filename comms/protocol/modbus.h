@@ -10,6 +10,7 @@
 #include <QByteArray>
 
 #include <cstdint>
+#include <optional>
 #include <vector>
 
 namespace rung::comms::modbus {
@@ -47,6 +48,9 @@ inline constexpr int BroadcastUnit = 0;
 // TCP frame the 7-byte MBAP header and a PDU of at most 253 (Application Protocol 4.1).
 inline constexpr int MaxRtuFrame = 256;
 inline constexpr int MaxTcpFrame = 7 + 253;
+// ASCII (serial line V1.02, 2.5.2): ':', the RTU frame's address and PDU as hex digits, the
+// LRC as two more, CR LF: at most 513 characters.
+inline constexpr int MaxAsciiFrame = 1 + 2 * (1 + 253 + 1) + 2;
 
 struct Request {
     std::uint8_t function = ReadHoldingRegisters;
@@ -68,9 +72,19 @@ struct Response {
 std::uint16_t crc16(QByteArrayView bytes);
 QByteArray rtuFrame(int unit, QByteArrayView pdu);                  // unit, PDU, CRC low first
 QByteArray tcpFrame(int transaction, int unit, QByteArrayView pdu); // MBAP + PDU
+// ':' address PDU LRC CR LF, upper-case hex (serial line V1.02, 2.5.2, 6.2.1).
+QByteArray asciiFrame(int unit, QByteArrayView pdu);
+// The LRC of the address and the PDU: the two's complement of their 8-bit sum.
+std::uint8_t lrc(QByteArrayView bytes);
 
 QString exceptionText(int code);
 
-enum class Framing : std::uint8_t { Rtu, Tcp };
+enum class Framing : std::uint8_t { Rtu, Tcp, Ascii };
+
+namespace detail {
+// The address, the PDU and the LRC of an ASCII frame between ':' and CR LF, the LRC checked
+// and removed; nullopt with the reason when the characters are not a frame.
+std::optional<QByteArray> asciiBody(QByteArrayView text, QString *why);
+} // namespace detail
 
 } // namespace rung::comms::modbus

@@ -70,6 +70,10 @@ FrameStatus ReplyDecoder::feed(QByteArrayView bytes) {
         return m_status;
     // Whatever the peer sends, one byte past the longest reply is enough to know it is wrong.
     m_received += bytes.size();
+    if (m_framing == Framing::Ascii) {
+        m_buffer += bytes.first(std::min(bytes.size(), MaxAsciiBuffered - m_buffer.size()));
+        return feedAscii();
+    }
     m_buffer += bytes.first(std::min(bytes.size(), MaxBuffered - m_buffer.size()));
     if (m_framing == Framing::Rtu) {
         const qsizetype length = expectedRtuLength();
@@ -131,6 +135,40 @@ FrameStatus ReplyDecoder::feed(QByteArrayView bytes) {
                         .arg(transaction)
                         .arg(m_transaction));
     return decodePdu(QByteArrayView(m_buffer).sliced(7), byte(m_buffer, 6));
+}
+
+FrameStatus ReplyDecoder::feedAscii() {
+    // Noise before the colon is dropped, as a slave does (serial line 2.5.2.1).
+    const qsizetype colon = m_buffer.indexOf(':');
+    if (colon < 0) {
+        m_buffer.clear();
+        return m_status;
+    }
+    m_buffer.remove(0, colon);
+    const qsizetype end = m_buffer.indexOf("\r\n");
+    if (end < 0) {
+        if (m_buffer.size() >= MaxAsciiBuffered)
+            return fail(Kind::Garbage,
+                        QCoreApplication::translate(
+                            "rung::comms::Protocol",
+                            "Modbus ASCII: no CR LF within %1 characters of the colon")
+                            .arg(MaxAsciiFrame));
+        return m_status;
+    }
+    QString why;
+    const auto body = detail::asciiBody(QByteArrayView(m_buffer).sliced(1, end - 1), &why);
+    if (!body)
+        return fail(Kind::BadChecksum, why);
+    if (m_buffer.size() > end + 2)
+        return fail(Kind::Garbage, QCoreApplication::translate(
+                                       "rung::comms::Protocol",
+                                       "Modbus ASCII: %1 characters after the reply's CR LF")
+                                       .arg(m_buffer.size() - end - 2));
+    if (body->size() < 2)
+        return fail(Kind::Malformed,
+                    QCoreApplication::translate("rung::comms::Protocol",
+                                                "Modbus ASCII: a reply without a function code"));
+    return decodePdu(QByteArrayView(*body).sliced(1), byte(*body, 0));
 }
 
 FrameStatus ReplyDecoder::decodePdu(QByteArrayView pdu, int unit) {

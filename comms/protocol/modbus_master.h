@@ -17,12 +17,15 @@ public:
     FrameStatus feed(QByteArrayView bytes);
     ProtocolError deadlinePassed(int waitedMs) const;
     const Response &response() const { return m_response; }
-    // Bytes held: never more than one byte past the longest reply a header can announce.
+    // Bytes held: never more than one byte past the longest reply a header can announce
+    // (ASCII: MaxAsciiBuffered, two characters a byte).
     qsizetype buffered() const { return m_buffer.size(); }
     static constexpr qsizetype MaxBuffered = 3 + 255 + 2 + 1;
+    static constexpr qsizetype MaxAsciiBuffered = MaxAsciiFrame + 1;
 
 private:
     FrameStatus decodePdu(QByteArrayView pdu, int unit);
+    FrameStatus feedAscii();
     qsizetype expectedRtuLength() const; // 0 = not known yet
 
     Framing m_framing;

@@ -154,10 +154,51 @@ void RequestDecoder::keepPending() {
     m_buffer.truncate(m_used + MaxTcpFrame);
 }
 
+void RequestDecoder::feedAscii() {
+    while (m_status == FrameStatus::NeedMore) {
+        // Characters before the colon are noise between frames (serial line 2.5.2.1).
+        const qsizetype colon = m_buffer.indexOf(':');
+        if (colon < 0) {
+            m_buffer.clear();
+            return;
+        }
+        m_buffer.remove(0, colon);
+        const qsizetype end = m_buffer.indexOf("\r\n");
+        if (end < 0) {
+            if (m_buffer.size() > MaxAsciiFrame) {
+                drop(QCoreApplication::translate(
+                         "rung::comms::Protocol",
+                         "Modbus ASCII: no CR LF within %1 characters of the colon: dropped")
+                         .arg(MaxAsciiFrame));
+            }
+            return;
+        }
+        QString why;
+        const auto body = detail::asciiBody(QByteArrayView(m_buffer).sliced(1, end - 1), &why);
+        m_buffer.remove(0, end + 2);
+        if (!body || body->size() < 2) {
+            // A frame with a wrong LRC gets no answer, as one with a wrong CRC (2.5.2.1).
+            m_discarded = {Kind::BadChecksum, 0, why};
+            ++m_dropped;
+            continue;
+        }
+        m_unit = byte(*body, 0);
+        m_parsed = parseRequestPdu(QByteArrayView(*body).sliced(1));
+        m_used = 0;
+        m_status = FrameStatus::Complete;
+    }
+}
+
 FrameStatus RequestDecoder::feed(QByteArrayView bytes) {
     if (m_skipToSilence)
         bytes = {}; // the rest of a frame already dropped: nothing in it can be trusted
     m_buffer += bytes;
+    if (m_framing == Framing::Ascii) {
+        feedAscii();
+        if (m_status == FrameStatus::Complete && m_buffer.size() > MaxAsciiFrame)
+            m_buffer.truncate(MaxAsciiFrame); // a request waits: one more frame is kept
+        return m_status;
+    }
     while (m_status == FrameStatus::NeedMore) {
         if (m_framing == Framing::Tcp) {
             if (m_buffer.size() < 7)

@@ -20,6 +20,7 @@ ParsedRequest parseRequestPdu(QByteArrayView pdu);
 //  RTU: length from the function code; an unknown function ends at silence() (the 3.5
 //  character gap); a frame with a bad CRC is dropped, as the RTU spec says (no reply).
 //  TCP: the MBAP length field.
+//  ASCII: ':' to CR LF; a frame with a wrong LRC is dropped without a reply.
 // Memory stays bounded whatever arrives: an RTU frame that grows past 256 bytes (an unknown
 // function on a line without gaps, or a byte count no request can have) is dropped with all
 // that follows until silence(); bytes that arrive while a request waits for next() are kept
@@ -39,10 +40,12 @@ public:
     const ProtocolError &discarded() const { return m_discarded; }
     qsizetype buffered() const { return m_buffer.size(); }
     static constexpr qsizetype MaxBuffered = 2 * MaxTcpFrame; // a request and the next one
+    static constexpr qsizetype MaxAsciiBuffered = 2 * MaxAsciiFrame;
     void next();
 
 private:
     FrameStatus take(qsizetype length);
+    void feedAscii();
     void drop(QString why);
     void keepPending();
     Framing m_framing;

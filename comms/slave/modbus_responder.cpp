@@ -29,6 +29,8 @@ int ModbusResponder::silenceMicroseconds() const {
 QByteArray ModbusResponder::breakChecksum(QByteArray frame) const {
     if (m_framing == Framing::Rtu && !frame.isEmpty())
         frame[frame.size() - 1] = char(frame.back() ^ 0x5A); // the CRC's high byte
+    else if (m_framing == Framing::Ascii && frame.size() > 4)
+        frame[frame.size() - 3] = frame[frame.size() - 3] == '0' ? '1' : '0'; // the LRC
     return frame;
 }
 
@@ -56,7 +58,7 @@ QByteArrayList ModbusResponder::take() {
         const int unit = m_decoder.unit();
         const bool own = unit == m_station || unit == m_mapped.map().anyStationUnit ||
                          (m_framing == Framing::Tcp && (unit == 0 || unit == 0xFF));
-        const bool broadcast = m_framing == Framing::Rtu && unit == BroadcastUnit;
+        const bool broadcast = m_framing != Framing::Tcp && unit == BroadcastUnit;
         if (!own && !broadcast) {
             ++m_statistics.ignored;
         } else {
@@ -65,6 +67,8 @@ QByteArrayList ModbusResponder::take() {
                 ++m_statistics.ignored;
             else if (m_framing == Framing::Rtu)
                 out << rtuFrame(unit == m_station ? m_replyStation : unit, pdu);
+            else if (m_framing == Framing::Ascii)
+                out << asciiFrame(unit == m_station ? m_replyStation : unit, pdu);
             else
                 out << tcpFrame(m_decoder.transaction(), unit == m_station ? m_replyStation : unit,
                                 pdu);

@@ -1,5 +1,7 @@
 #include "model/project/project.h"
 
+#include "model/comm/port_config.h"
+
 #include "model/ladder/ladder_text.h"
 #include "model/project/file_read.h"
 #include "model/tr.h"
@@ -238,7 +240,8 @@ public:
             !expect(root, "setValues", QJsonValue::Object, QString()) ||
             !expect(root, "watchLists", QJsonValue::Array, QString()) ||
             !expect(root, "pendingListing", QJsonValue::String, QString()) ||
-            !expect(root, "pendingSymbols", QJsonValue::Array, QString()))
+            !expect(root, "pendingSymbols", QJsonValue::Array, QString()) ||
+            !expect(root, "ports", QJsonValue::Object, QString()))
             return std::nullopt;
         Project p;
         const QString targetId = root.value(QStringLiteral("target")).toString();
@@ -260,6 +263,12 @@ public:
                 return std::nullopt;
             p.program.rungs.push_back(std::move(rung));
         }
+        // The PLC's port settings (docs/network-format.md), checked against the target's ports
+        // and kept as written.
+        p.ports = root.value(QStringLiteral("ports")).toObject();
+        QString portError;
+        if (!checkPortsJson(*p.target, model, p.ports, QStringLiteral("ports"), &portError))
+            return fail(portError);
         const QJsonArray symbols = root.value(QStringLiteral("symbols")).toArray();
         for (qsizetype i = 0; i < symbols.size(); ++i) {
             const QString where = QStringLiteral("symbols[%1]").arg(i);
@@ -616,6 +625,19 @@ QByteArray projectToJson(const Project &project) {
             w.out += symbolLine(s.device, s.name, s.comment);
         }
         w.close(1, ']');
+    }
+    if (!project.ports.isEmpty()) {
+        // One port a line, its settings as written (docs/network-format.md).
+        w.key(1, "ports");
+        w.open('{');
+        for (auto it = project.ports.begin(); it != project.ports.end(); ++it) {
+            w.element(2);
+            w.out += jsonString(it.key()) + ": " +
+                     (it.value().isObject()
+                          ? QJsonDocument(it.value().toObject()).toJson(QJsonDocument::Compact)
+                          : QByteArray("null"));
+        }
+        w.close(1, '}');
     }
     w.close(0, '}');
     w.out += '\n';

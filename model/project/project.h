@@ -6,6 +6,7 @@
 #include "model/image/value_format.h"
 #include "model/ladder/ladder.h"
 
+#include <QJsonObject>
 #include <QString>
 
 #include <map>
@@ -52,6 +53,10 @@ struct Project {
     // typed, errors and all. Empty when the list and the program agree.
     QString pendingListing;
     std::vector<PendingSymbol> pendingSymbols; // after the symbols in the table, marked
+    // The PLC's serial port settings (what Ladder Master calls the "2nd COM Port Setting"),
+    // port name -> settings as docs/network-format.md describes them; a network file may
+    // override them. Kept as written.
+    QJsonObject ports;
 
     const Symbol *symbol(const Address &address) const;
 };

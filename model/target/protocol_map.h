@@ -28,6 +28,7 @@ enum class ProtocolSpace : std::uint8_t {
     Coils,              // Modbus 0x, 0-based (component 00001 = coil 0)
     DiscreteInputs,     // Modbus 1x, 0-based (component 10000 of the Vigor map = input 0)
     HoldingRegisters,   // Modbus 4x, 0-based (component 40000 of the Vigor map = register 0)
+    InputRegisters,     // Modbus 3x, 0-based (function 04; a master's read-only registers)
     HostLinkIr,         // RR / WR, channel number
     HostLinkHr,         // RH / WH
     HostLinkDm,         // RD / WD

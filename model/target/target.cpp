@@ -222,6 +222,13 @@ const SystemDevice *Target::systemDevice(SystemRole role) const {
     return nullptr;
 }
 
+const PortSpec *Target::port(QStringView name) const {
+    for (const PortSpec &p : ports)
+        if (name.compare(p.name, Qt::CaseInsensitive) == 0)
+            return &p;
+    return nullptr;
+}
+
 bool drivenByPlc(const SystemDevice &device) {
     switch (device.role) {
     case SystemRole::Other:

@@ -4,6 +4,7 @@
 // table and the limits. Every room reads these tables; no address or mnemonic rule is
 // written anywhere else.
 
+#include "model/comm/port_spec.h"
 #include "model/target/op.h"
 #include "model/target/protocol_map.h"
 
@@ -143,6 +144,35 @@ enum class SystemRole : std::uint8_t {
     // B-3-9: "16-bit mode (M9161=OFF) and 8-bit mode (M9161=ON)"): while ON, CCD and the RS
     // family take one byte, the low one, from each word; OFF, both bytes, low first.
     ByteMode,
+    // SMOV moves hexadecimal digits instead of BCD ones while ON (Vigor M9168, set by the
+    // program: seed 001 B-4-5 "M9168 SMOV hexadecimal").
+    HexDigits,
+    // Communication (seed 001 B-3-3 .. B-3-9; docs/network.md). Driven by the PLC unless the
+    // manual says the program writes them (SystemDevice::programWrites).
+    LinkCycleDone, // Vigor M9199: ON for one scan when LINK / MBUS completed its table
+    RsSendRequest, // Vigor M9122: the program sets it to send, the PLC resets it when sent
+    RsReceiveDone, // Vigor M9123: reception ended (n data, end code or time-out)
+    RsTimeout,     // Vigor M9129: the reception timed out (reset by the program)
+    CommError,     // Vigor M9063: parallel link or RS communication error
+    CommErrorCode, // Vigor D9063: RS error code
+    RsSendLeft,    // Vigor D9122: data still to send
+    RsReceived,    // Vigor D9123: data received
+    CommTimeout,   // Vigor D9129: time-out of RS, LINK and MBUS, x 10 ms (0: 100 ms)
+    // Vigor CPU Link (B-3-4). SystemDevice::count consecutive devices from the one named.
+    CpuLinkFailed,     // M9183 (master), M9184..M9190 (slaves 1..7): communication failed
+    CpuLinkTimeout,    // D9172: time-out, x 10 ms
+    CpuLinkSlaves,     // D9177: number of slave stations
+    CpuLinkRange,      // D9178: transfer range mode
+    CpuLinkRetries,    // D9179: retries
+    NetworkScanTime,   // D9201: current network scan time (ms)
+    NetworkScanMax,    // D9202: maximum network scan time (ms)
+    CpuLinkErrorCount, // D9203 (master), D9204..D9210 (slaves 1..7): communication errors
+    CpuLinkErrorCode,  // D9212..D9218 (slaves 1..7): 00H none, 01H time-out, 05H sum error
+    // Vigor Parallel Link (B-3-5).
+    ParallelMaster,    // M9070: this unit is the master
+    ParallelSlave,     // M9071: this unit is the slave
+    ParallelNormal,    // M9072: parallel operation normal
+    ParallelHighSpeed, // M9162: high-speed transfer (the master's decides)
     Other,
 };
 
@@ -156,6 +186,7 @@ struct SystemDevice {
     // The manual lets the program write it as well (VPC: drop r88 RUN to stop, raise r89 ERR).
     bool programWrites = false;
     int inputs = 0; // InputTestImage: how many inputs, from the first, the word stands for
+    int count = 1;  // consecutive devices of the role from `device` (CpuLinkFailed: 8)
 };
 
 // Whether the PLC drives the device so that the program cannot write it (OP002): every role
@@ -245,7 +276,9 @@ struct OperandSpec {
     int highest = INT_MAX;
     std::vector<int> allowedValues; // a constant must be one of these (PL110 time base)
     const char *area = nullptr;     // a device must be of this Area::key ("Q" for OUTQI)
-    const char *name = nullptr;     // QT_TRANSLATE_NOOP("rung::model::Target", "time base")
+    // A constant that numbers an element of this area (Area::key): Vigor VRRD K1 reads VR1.
+    const char *elementOf = nullptr;
+    const char *name = nullptr; // QT_TRANSLATE_NOOP("rung::model::Target", "time base")
     // A device in this slot must be of one of these areas (Area::key); constants are free
     // (PL110 presets PT / PV: "da una variabile dell'area VW, SMW, AI e TR", 4.2.4, 4.2.5).
     std::vector<const char *> sourceAreas;
@@ -324,6 +357,20 @@ enum class ApplyFunction : std::uint8_t {
     // Vigor CCD S D n (FX / Delta FNC 84): the sum of n bytes from S into D, their parity
     // (XOR) into D+1; bytes as SystemRole::ByteMode says.
     CheckCode,
+    // Vigor instructions of seed 001's communication programs (docs/simulator.md):
+    Swap,        // SWAP D: the two bytes of D exchanged
+    ToAscii,     // ASCI S D n: the last n hex digits of S as ASCII characters
+    FromAscii,   // HEX S D n: n ASCII hex characters from S as a number in D
+    ShiftDigits, // SMOV S m1 m2 D n: m2 digits of S from digit m1 into D from digit n
+    ReadVolume,  // VRRD K D: the variable resistor VRk (a panel input word) into D
+    // Communication instructions: they drive the port InstructionSpec::port names.
+    EasyLink,     // Vigor LINK S1 S2 (B-3-3): the master of Computer Link
+    ModbusMaster, // Vigor MBUS S1 S2 (B-3-6): the master of MODBUS
+    SerialData,   // Vigor RS S m D n (B-3-9): non-protocol send and receive
+    ModuleRead,   // Vigor FROM m1 m2 D n: a special module's buffer memory into D
+    ModuleWrite,  // Vigor TO / TOP m1 m2 S n: S into a special module's buffer memory
+    FreePortSend, // PL110 SEND port n (4.2.19): send n characters of the port's buffer
+    MasterQuery,  // PL110 COM / EXP (4.2.21): one interrogation of the port's master
 };
 
 // Timer behaviours beyond the plain on-delay (PL110 TOFF / TONR).
@@ -356,6 +403,16 @@ struct InstructionSpec {
     // The 32-bit form (the FX family's D prefix, Vigor DMOV): each word operand is the pair
     // D (low word), D+1 (high word), or one 32-bit device; constants are 32-bit.
     bool doubleWord = false;
+    // A communication instruction: the port it drives (Target::ports; PL110 SEND names it in
+    // its first operand: null) and the applications that port must run for it.
+    const char *port = nullptr;
+    std::vector<const char *> portApplications;
+    // The operand that numbers or names the port: a constant appended to `port` (Vigor FROM K1:
+    // MODULE1), or a word that is the port's name (PL110 SEND COM1 n); -1: `port` alone.
+    int portOperand = -1;
+    // The manual allows it once in a program (seed 001 B-3-3, B-3-6: LINK, MBUS "can be used
+    // once only in the program"): model::onceOnlyBreaches.
+    bool oncePerProgram = false;
 };
 
 struct Limits {
@@ -498,7 +555,9 @@ public:
     double defaultTimerBaseMs = 100.0; // Vigor TMR default resolution
     ConstantNotation constants;
     Semantics semantics;
-    std::vector<ProtocolMap> protocolMaps; // protocol_map.h: where devices sit on the wire
+    std::vector<ProtocolMap> protocolMaps;       // protocol_map.h: where devices sit on the wire
+    std::vector<PortSpec> ports;                 // port_spec.h: the serial ports and what they run
+    std::vector<LinkDeviceCode> linkDeviceCodes; // port_spec.h: LINK / MBUS device types
     ConsoleTexts console;
 
     // The four families, built once.
@@ -532,6 +591,8 @@ public:
     // Effective range of an area on a model (after the model's overrides); nullopt = absent.
     std::optional<std::pair<int, int>> range(int areaIndex, const ModelVariant *model) const;
     const SystemDevice *systemDevice(SystemRole role) const;
+    // The port named (case-insensitive), nullptr when the target has none of that name.
+    const PortSpec *port(QStringView name) const;
 
     // Builds the spelling index findInstruction(text) uses; the registry calls it once.
     void buildIndex();

@@ -55,6 +55,48 @@ InstructionSpec &addBox(Target &t, const char *mnemonic, ApplyFunction function,
     return s;
 }
 
+// The serial ports (1.3, 1.5.4, 3.1, 4.2.19, 4.2.21): COM1 (RS-485) and EXP1 answer MODBUS RTU
+// or run a master protocol for COM / EXP; COM2 is the USB programming port, MODBUS RTU at
+// 57600 8N1 only. Any port may be switched to free-port by the program (SM78 / SM88 / SM98),
+// whatever its protocol. The one master protocol the manual describes (NAIS MATSUSHITA) has
+// no published frames; the product's master is MODBUS RTU, the protocol of chapter 3
+// (docs/network.md).
+std::vector<PortSpec> pl110Ports() {
+    const std::vector<int> bauds = {
+        19200, 110,  150,  300,   600,   1200,
+        2400,  4800, 9600, 28800, 38400, 57600}; // the baud codes of SM71 (2.1.2)
+    PortApplication slave;
+    slave.id = "modbus";
+    slave.name = QT_TRANSLATE_NOOP("rung::model::Target", "MODBUS RTU slave");
+    slave.bauds = bauds;
+    slave.frame = "8N1";
+    slave.stationMin = 1;
+    slave.stationMax = 255;
+    slave.station = 1;
+    slave.answersModbus = true;
+    PortApplication master = slave;
+    master.id = "modbus-master";
+    master.name = QT_TRANSLATE_NOOP("rung::model::Target", "MODBUS RTU master (COM / EXP)");
+    master.answersModbus = false;
+    master.master = true;
+    PortSpec com1;
+    com1.name = QStringLiteral("COM1");
+    com1.description = QT_TRANSLATE_NOOP("rung::model::Target", "COM1, the RS-485 port");
+    com1.applications = {slave, master};
+    PortSpec exp1 = com1;
+    exp1.name = QStringLiteral("EXP1");
+    exp1.description = QT_TRANSLATE_NOOP("rung::model::Target", "EXP1, the expansion port");
+    PortSpec com2;
+    com2.name = QStringLiteral("COM2");
+    com2.description =
+        QT_TRANSLATE_NOOP("rung::model::Target", "COM2, the USB programming port (57600 8N1)");
+    PortApplication usb = slave;
+    usb.bauds = {57600};
+    usb.fixedFrame = true;
+    com2.applications = {usb};
+    return {com1, exp1, com2};
+}
+
 } // namespace
 
 Target makePl110Target() {
@@ -461,6 +503,7 @@ Target makePl110Target() {
         addWordTerminals(v, "AQ", 1, 1, -32768, 32767);
     }
     t.protocolMaps = pl110ProtocolMaps();
+    t.ports = pl110Ports();
     return t;
 }
 

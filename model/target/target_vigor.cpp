@@ -68,6 +68,120 @@ InstructionSpec apply(const char *mnemonic, ApplyFunction function,
     return s;
 }
 
+// The serial ports (seed 001 B-2, B-3-1 and the tables of B-3-2 .. B-3-9, B-4; the digest's
+// A.1): CP1 on every main unit, CP2 on a communication card or module, CP3 on a VB-CADP,
+// VB-1COM modules. Applications per series as the manual's tables give them.
+std::vector<PortSpec> vigorPorts() {
+    const QStringList mAndVb = {QStringLiteral("M"), QStringLiteral("VB")};
+    const std::vector<int> link = {19200, 4800, 9600, 38400}; // B-3-2, B-3-3
+    PortApplication computerLink;
+    computerLink.id = "computer-link";
+    computerLink.name = QT_TRANSLATE_NOOP("rung::model::Target", "Computer Link");
+    computerLink.bauds = link;
+    computerLink.frame = "7E1";
+    computerLink.fixedFrame = true;
+    computerLink.stationMax = 255;
+    computerLink.answersVigorLink = true;
+
+    PortSpec cp1;
+    cp1.name = QStringLiteral("CP1");
+    cp1.description = QT_TRANSLATE_NOOP("rung::model::Target",
+                                        "CP1, the main unit's RS-232 port (Computer Link, 19200 "
+                                        "bps, station 0)");
+    PortApplication cp1Link = computerLink;
+    cp1Link.bauds = {19200};
+    cp1Link.stationMax = 0;
+    cp1.applications = {cp1Link};
+
+    PortSpec cp2;
+    cp2.name = QStringLiteral("CP2");
+    cp2.description = QT_TRANSLATE_NOOP("rung::model::Target",
+                                        "CP2, the second communication port (a card or a module)");
+    // The slaves answer Computer Link with either setting; the master runs LINK (B-3-3). The
+    // VH takes part as a slave only, with Computer Link.
+    PortApplication easyLink = computerLink;
+    easyLink.id = "easy-link";
+    easyLink.name = QT_TRANSLATE_NOOP("rung::model::Target", "Easy Link");
+    easyLink.models = mAndVb;
+    PortApplication cpuLink;
+    cpuLink.id = "cpu-link";
+    cpuLink.name = QT_TRANSLATE_NOOP("rung::model::Target", "CPU Link");
+    cpuLink.models = mAndVb;
+    cpuLink.bauds = {38400}; // B-3-4: 38400 bps
+    cpuLink.frame = "7E1";
+    cpuLink.stationMax = 7;
+    cpuLink.published = false;
+    cpuLink.sharedLink = 1;
+    // B-3-4's transfer ranges: station s has D(10s).. and, from mode 2, M(1000 + 64s)..; the
+    // table prints M1256..M1391 for station 4 in mode 3, the pattern gives M1256..M1319.
+    cpuLink.sharedModes = {
+        {{{"D", 0, 10, 4}}, {7, 11, 15, 19, 23, 27, 31}},
+        {{{"D", 0, 10, 4}, {"M", 1000, 64, 32}}, {10, 15, 20, 25, 30, 35, 40}},
+        {{{"D", 0, 10, 8}, {"M", 1000, 64, 64}}, {16, 24, 33, 42, 50, 59, 68}},
+    };
+    PortApplication parallelLink;
+    parallelLink.id = "parallel-link";
+    parallelLink.name = QT_TRANSLATE_NOOP("rung::model::Target", "Parallel Link");
+    parallelLink.models = mAndVb;
+    parallelLink.bauds = link;
+    parallelLink.frame = "7E1";
+    parallelLink.published = false;
+    parallelLink.sharedLink = 2;
+    // B-3-5: master -> slave M800..M899, D490..D499 (high speed D490, D491); slave -> master
+    // M900..M999, D500..D509 (D500, D501); 73 ms (14 ms) at 19200 bps plus both scans.
+    parallelLink.sharedModes = {
+        {{{"M", 800, 100, 100}, {"D", 490, 10, 10}}, {73}},
+        {{{"D", 490, 10, 2}}, {14}},
+    };
+    PortApplication modbus;
+    modbus.id = "modbus";
+    modbus.name = QT_TRANSLATE_NOOP("rung::model::Target", "MODBUS");
+    modbus.bauds = {19200, 300, 600, 1200, 2400, 4800, 9600, 38400}; // B-3-6
+    modbus.frame = "8N1";
+    modbus.stationMin = 0; // the master of MBUS (B-3-6: "station 0")
+    modbus.stationMax = 247;
+    modbus.station = 1;
+    modbus.answersModbus = true;
+    PortApplication nonProtocol;
+    nonProtocol.id = "non-protocol";
+    nonProtocol.name = QT_TRANSLATE_NOOP("rung::model::Target", "Non Protocol");
+    nonProtocol.bauds = {19200, 300, 600, 1200, 2400, 4800, 9600}; // B-3-9 stops at 19200
+    nonProtocol.frame = "7E1";
+    nonProtocol.programDriven = true;
+    cp2.applications = {computerLink, easyLink, cpuLink, parallelLink, modbus, nonProtocol};
+
+    PortSpec cp3;
+    cp3.name = QStringLiteral("CP3");
+    cp3.description = QT_TRANSLATE_NOOP("rung::model::Target",
+                                        "CP3, the VB-CADP's RS-485 port (Computer Link, 19200 "
+                                        "bps, station 0..99)");
+    cp3.models = {QStringLiteral("VB")};
+    PortApplication cp3Link = computerLink;
+    cp3Link.bauds = {19200};
+    cp3Link.stationMax = 99;
+    cp3.applications = {cp3Link};
+
+    std::vector<PortSpec> ports = {cp1, cp2, cp3};
+    // VB-1COM (B-4): no protocol, the program sets the line through BFM #0 (initial 0087H:
+    // 9600 bps, 8 data bits, even parity, 1 stop bit) and drives it with FROM / TO.
+    PortApplication module;
+    module.id = "vb-1com";
+    module.name = QT_TRANSLATE_NOOP("rung::model::Target", "VB-1COM serial module");
+    module.bauds = {9600, 300, 600, 1200, 2400, 4800, 19200, 38400, 76800, 14400, 28800, 57600};
+    module.frame = "8E1";
+    module.programDriven = true;
+    for (int k = 1; k <= 16; ++k) {
+        PortSpec m;
+        m.name = QStringLiteral("MODULE%1").arg(k);
+        m.description = QT_TRANSLATE_NOOP("rung::model::Target",
+                                          "a VB-1COM serial module, numbered as FROM / TO name it");
+        m.models = {QStringLiteral("VB")};
+        m.applications = {module};
+        ports.push_back(m);
+    }
+    return ports;
+}
+
 } // namespace
 
 Target makeVigorTarget() {
@@ -154,6 +268,13 @@ Target makeVigorTarget() {
                       QT_TRANSLATE_NOOP("rung::model::Target", "index registers"));
     v.indexRegister = true;
     v.prefixAliases = {QStringLiteral("F")};
+    // The VB's variable resistors VR1, VR2 on its panel, read by VRRD (seed 001's display
+    // programs: "VRRD K1 D0  Read the value of VR1"): word inputs 0..255 that the simulator
+    // takes as a stimulus like a terminal (--set VR1=120@0). Not on the link map.
+    Area &vr = addArea(t, "VR", "VR", AreaKind::Word, 1, 2,
+                       QT_TRANSLATE_NOOP("rung::model::Target", "variable resistors (panel)"));
+    vr.writable = false;
+    vr.physical = true;
 
     t.systemDevices = {
         {QStringLiteral("M9000"), SystemRole::AlwaysOn,
@@ -174,45 +295,48 @@ Target makeVigorTarget() {
          QT_TRANSLATE_NOOP("rung::model::Target",
                            "RS, CCD, ASCI, HEX: 8-bit mode, one byte a word (OFF: 16-bit)"),
          1000, true},
-        {QStringLiteral("M9168"), SystemRole::Other,
-         QT_TRANSLATE_NOOP("rung::model::Target", "SMOV works on hexadecimal digits")},
-        {QStringLiteral("M9199"), SystemRole::Other,
-         QT_TRANSLATE_NOOP("rung::model::Target", "ON for one scan when an MBUS cycle completes")},
+        {QStringLiteral("M9168"), SystemRole::HexDigits,
+         QT_TRANSLATE_NOOP("rung::model::Target", "SMOV works on hexadecimal digits"), 1000, true},
+        {QStringLiteral("M9199"), SystemRole::LinkCycleDone,
+         QT_TRANSLATE_NOOP("rung::model::Target",
+                           "ON for one scan when LINK or MBUS completed its table")},
         {QStringLiteral("D9010"), SystemRole::ScanTimeCurrent,
          QT_TRANSLATE_NOOP("rung::model::Target", "current scan time (0.1 ms)"), 100},
         {QStringLiteral("D9011"), SystemRole::ScanTimeMin,
          QT_TRANSLATE_NOOP("rung::model::Target", "minimum scan time (0.1 ms)"), 100},
         {QStringLiteral("D9012"), SystemRole::ScanTimeMax,
          QT_TRANSLATE_NOOP("rung::model::Target", "maximum scan time (0.1 ms)"), 100},
-        // Named in the communication chapters of the Vigor M/VB/VH communication manual; the
-        // simulator leaves them alone.
-        {QStringLiteral("M9063"), SystemRole::Other,
+        // Seed 001's communication chapters (B-3-4, B-3-5, B-3-8, B-3-9); docs/network.md.
+        {QStringLiteral("M9063"), SystemRole::CommError,
          QT_TRANSLATE_NOOP("rung::model::Target",
                            "parallel operation or RS communication error, PLC keeps running")},
-        {QStringLiteral("M9070"), SystemRole::Other,
+        {QStringLiteral("M9070"), SystemRole::ParallelMaster,
          QT_TRANSLATE_NOOP("rung::model::Target", "parallel link: this unit is the master")},
-        {QStringLiteral("M9071"), SystemRole::Other,
+        {QStringLiteral("M9071"), SystemRole::ParallelSlave,
          QT_TRANSLATE_NOOP("rung::model::Target", "parallel link: this unit is a slave")},
-        {QStringLiteral("M9072"), SystemRole::Other,
+        {QStringLiteral("M9072"), SystemRole::ParallelNormal,
          QT_TRANSLATE_NOOP("rung::model::Target", "parallel operation normal")},
         {QStringLiteral("M9100"), SystemRole::Other,
          QT_TRANSLATE_NOOP("rung::model::Target", "CP2 modem: start dialing (OFF to ON)")},
         {QStringLiteral("M9101"), SystemRole::Other,
          QT_TRANSLATE_NOOP("rung::model::Target", "CP2 modem: dialing failed")},
-        {QStringLiteral("M9122"), SystemRole::Other,
-         QT_TRANSLATE_NOOP("rung::model::Target", "RS instruction send flag")},
-        {QStringLiteral("M9123"), SystemRole::Other,
-         QT_TRANSLATE_NOOP("rung::model::Target", "RS instruction receive done")},
+        // "Do not use the RST instruction to reset the M9122"; the program sets it to send,
+        // resets M9123 to receive again and M9129 after a time-out (B-3-9).
+        {QStringLiteral("M9122"), SystemRole::RsSendRequest,
+         QT_TRANSLATE_NOOP("rung::model::Target", "RS instruction send flag"), 1000, true},
+        {QStringLiteral("M9123"), SystemRole::RsReceiveDone,
+         QT_TRANSLATE_NOOP("rung::model::Target", "RS instruction receive done"), 1000, true},
         {QStringLiteral("M9124"), SystemRole::Other,
          QT_TRANSLATE_NOOP("rung::model::Target", "CP2 modem CD signal")},
-        {QStringLiteral("M9129"), SystemRole::Other,
-         QT_TRANSLATE_NOOP("rung::model::Target", "time-out during RS")},
-        {QStringLiteral("M9162"), SystemRole::Other,
+        {QStringLiteral("M9129"), SystemRole::RsTimeout,
+         QT_TRANSLATE_NOOP("rung::model::Target", "time-out during RS"), 1000, true},
+        {QStringLiteral("M9162"), SystemRole::ParallelHighSpeed,
          QT_TRANSLATE_NOOP("rung::model::Target", "parallel operation high-speed transfer")},
-        {QStringLiteral("M9183"), SystemRole::Other,
+        {QStringLiteral("M9183"), SystemRole::CpuLinkFailed,
          QT_TRANSLATE_NOOP("rung::model::Target",
-                           "CPU link communication failed (master); M9184..M9190 slaves 1..7")},
-        {QStringLiteral("D9063"), SystemRole::Other,
+                           "CPU link communication failed (master); M9184..M9190 slaves 1..7"),
+         1000, false, 0, 8},
+        {QStringLiteral("D9063"), SystemRole::CommErrorCode,
          QT_TRANSLATE_NOOP("rung::model::Target", "RS communication error code")},
         {QStringLiteral("D9080"), SystemRole::Other,
          QT_TRANSLATE_NOOP("rung::model::Target", "display mode of the display screen")},
@@ -220,10 +344,36 @@ Target makeVigorTarget() {
          QT_TRANSLATE_NOOP("rung::model::Target", "number of the D register shown in mode 3")},
         {QStringLiteral("D9121"), SystemRole::Other,
          QT_TRANSLATE_NOOP("rung::model::Target", "computer link station number")},
-        {QStringLiteral("D9201"), SystemRole::Other,
+        {QStringLiteral("D9122"), SystemRole::RsSendLeft,
+         QT_TRANSLATE_NOOP("rung::model::Target", "RS: number of data left to send")},
+        {QStringLiteral("D9123"), SystemRole::RsReceived,
+         QT_TRANSLATE_NOOP("rung::model::Target", "RS: number of data received")},
+        {QStringLiteral("D9129"), SystemRole::CommTimeout,
+         QT_TRANSLATE_NOOP("rung::model::Target",
+                           "RS, LINK and MBUS time-out, x 10 ms (0: 100 ms)"),
+         1000, true},
+        {QStringLiteral("D9172"), SystemRole::CpuLinkTimeout,
+         QT_TRANSLATE_NOOP("rung::model::Target", "CPU link communication time-out time")},
+        {QStringLiteral("D9177"), SystemRole::CpuLinkSlaves,
+         QT_TRANSLATE_NOOP("rung::model::Target", "CPU link: number of slave stations")},
+        {QStringLiteral("D9178"), SystemRole::CpuLinkRange,
+         QT_TRANSLATE_NOOP("rung::model::Target", "CPU link: transfer range mode")},
+        {QStringLiteral("D9179"), SystemRole::CpuLinkRetries,
+         QT_TRANSLATE_NOOP("rung::model::Target", "CPU link: communication retries")},
+        {QStringLiteral("D9201"), SystemRole::NetworkScanTime,
          QT_TRANSLATE_NOOP("rung::model::Target", "current network scan time")},
-        {QStringLiteral("D9202"), SystemRole::Other,
+        {QStringLiteral("D9202"), SystemRole::NetworkScanMax,
          QT_TRANSLATE_NOOP("rung::model::Target", "maximum network scan time")},
+        {QStringLiteral("D9203"), SystemRole::CpuLinkErrorCount,
+         QT_TRANSLATE_NOOP("rung::model::Target",
+                           "CPU link: communication errors of the master; D9204..D9210 slaves "
+                           "1..7"),
+         1000, false, 0, 8},
+        {QStringLiteral("D9212"), SystemRole::CpuLinkErrorCode,
+         QT_TRANSLATE_NOOP("rung::model::Target",
+                           "CPU link: error code of slave 1 (D9213..D9218: slaves 2..7): 00H "
+                           "none, 01H time-out, 05H sum error"),
+         1000, false, 0, 7},
     };
 
     auto &in = t.instructions;
@@ -411,39 +561,54 @@ Target makeVigorTarget() {
     in.push_back(apply(
         "BIN", ApplyFunction::FromBcd, {src, dst}, 5,
         QT_TRANSLATE_NOOP("rung::model::Target", "D = the value of the BCD digits S"), "S D"));
-    // Special modules, I/O refresh and communication: accepted, not simulated (check warns,
-    // SIM100); CCD is simulated. Neither manual gives step counts: each is the FX family's
-    // 16-bit size, one step for the instruction and two for each operand (Delta's tables, to
-    // which PLC concepts (WPLSoft family) belongs, give FROM/TO 9, CCD 7, REF 5 the same way).
-    // Operands as the pages and example programs of the Vigor M/VB/VH communication manual
-    // write them.
-    // FROM / TO m1 m2 D n (the VB-1COM pages of the Vigor M/VB/VH communication manual: FROM K1
-    // K2000 D50 K15, TO K1 K1000 D0 K15): n words at least one, the block D..D+n-1 inside the
-    // registers.
+    // Special modules, I/O refresh and communication (docs/network.md). REF is accepted and not
+    // simulated (check warns, SIM100); the rest is simulated. Neither seed gives step counts:
+    // each is the FX family's 16-bit size, one step for the instruction and two for each
+    // operand (Delta's tables, which seed 004 belongs to, give FROM/TO 9, CCD 7, REF 5 the same
+    // way). Operands as seed 001's pages and example programs write them.
+    // FROM / TO m1 m2 D n (seed 001's VB-1COM pages: FROM K1 K2000 D50 K15, TO K1 K1000 D0
+    // K15): n words at least one, the block D..D+n-1 inside the registers.
     OperandSpec moduleWords{K::Count};
     moduleWords.lowest = 1;
+    // m1: the module, K1..K16 (seed 001 B-4-1: "up to 16" VB-1COM modules; the examples use
+    // K1); m2: the first buffer memory word (B-4-4: #0..#30, #1000..#1256, #2000..#2256).
+    OperandSpec moduleNumber{K::Constant};
+    moduleNumber.lowest = 1;
+    moduleNumber.highest = 16;
+    moduleNumber.name = QT_TRANSLATE_NOOP("rung::model::Target", "module number");
+    OperandSpec moduleWord{K::Constant};
+    moduleWord.lowest = 0;
+    moduleWord.highest = 32767;
+    moduleWord.name = QT_TRANSLATE_NOOP("rung::model::Target", "buffer memory word");
     moduleWords.name = QT_TRANSLATE_NOOP("rung::model::Target", "number of words");
     OperandSpec moduleDst = dst;
     moduleDst.countFrom = 3;
     OperandSpec moduleSrc = src;
     moduleSrc.countFrom = 3;
-    in.push_back(apply(
-        "FROM", ApplyFunction::NotSimulated, {src, src, moduleDst, moduleWords}, 9,
+    // The module's port is MODULE1..MODULE16 (Target::ports), numbered by m1.
+    auto modulePort = [](InstructionSpec s) {
+        s.port = "MODULE";
+        s.portOperand = 0;
+        s.portApplications = {"vb-1com"};
+        return s;
+    };
+    in.push_back(modulePort(apply(
+        "FROM", ApplyFunction::ModuleRead, {moduleNumber, moduleWord, moduleDst, moduleWords}, 9,
         QT_TRANSLATE_NOOP("rung::model::Target", "Read n words of special module m1, from m2"),
-        "m1 m2 D n"));
-    in.push_back(
-        apply("TO", ApplyFunction::NotSimulated, {src, src, moduleSrc, moduleWords}, 9,
-              QT_TRANSLATE_NOOP("rung::model::Target", "Write n words to special module m1, at m2"),
-              "m1 m2 S n"));
-    // TOP K1 K0 H7096 K1 (Vigor M/VB/VH communication manual, B-4-5, the VB-1COM's
-    // communication format): TO's pulse form, FNC 79, run once when its condition turns ON; not
-    // simulated either.
-    InstructionSpec top =
-        apply("TOP", ApplyFunction::NotSimulated, {src, src, moduleSrc, moduleWords}, 9,
-              QT_TRANSLATE_NOOP("rung::model::Target",
-                                "Write n words to special module m1, at m2, once on a rising edge"),
-              "m1 m2 S n");
+        "m1 m2 D n")));
+    in.push_back(modulePort(apply(
+        "TO", ApplyFunction::ModuleWrite, {moduleNumber, moduleWord, moduleSrc, moduleWords}, 9,
+        QT_TRANSLATE_NOOP("rung::model::Target", "Write n words to special module m1, at m2"),
+        "m1 m2 S n")));
+    // TOP K1 K0 H7096 K1 (seed 001 B-4-5, the VB-1COM's communication format): TO's pulse
+    // form, FNC 79, run once when its condition turns ON.
+    InstructionSpec top = modulePort(apply(
+        "TOP", ApplyFunction::ModuleWrite, {moduleNumber, moduleWord, moduleSrc, moduleWords}, 9,
+        QT_TRANSLATE_NOOP("rung::model::Target",
+                          "Write n words to special module m1, at m2, once on a rising edge"),
+        "m1 m2 S n"));
     top.functionCode = 79;
+    top.differentiated = true;
     in.push_back(top);
     // CCD D52 D104 K11 (Vigor M/VB/VH communication manual, B-3-9, B-4-5: the check code of a
     // frame, one character a word with M9161 ON). FNC 84; n = 1..256 bytes (FX, Delta).
@@ -474,16 +639,32 @@ Target makeVigorTarget() {
     in.push_back(apply("REF", ApplyFunction::NotSimulated, {refreshed, {K::Count}}, 5,
                        QT_TRANSLATE_NOOP("rung::model::Target", "Refresh n inputs or outputs now"),
                        "D n"));
-    // HEX D59 D106 K2, ASCI D111 D12 K4 (the VB-1COM programs of the Vigor M/VB/VH
-    // communication manual).
-    in.push_back(apply("HEX", ApplyFunction::NotSimulated, {src, dst, {K::Count}}, 7,
-                       QT_TRANSLATE_NOOP("rung::model::Target",
-                                         "Convert n ASCII characters from S to hexadecimal in D"),
-                       "S D n"));
-    in.push_back(apply("ASCI", ApplyFunction::NotSimulated, {src, dst, {K::Count}}, 7,
-                       QT_TRANSLATE_NOOP("rung::model::Target",
-                                         "Convert n hexadecimal digits from S to ASCII in D"),
-                       "S D n"));
+    // HEX D59 D106 K2, ASCI D111 D12 K4 (seed 001's RS and VB-1COM programs). The manual
+    // defines them only by those programs: a word's last n hexadecimal digits (n = 2 or 4),
+    // one character a word with M9161 ON. n is 1..4, one word's digits (docs/simulator.md).
+    OperandSpec digits{K::Count};
+    digits.lowest = 1;
+    digits.highest = 4;
+    digits.name = QT_TRANSLATE_NOOP("rung::model::Target", "number of digits");
+    OperandSpec characters = src;
+    characters.deviceOnly = true; // the characters are read from words
+    characters.wholeWords = true;
+    OperandSpec charactersOut = dst;
+    charactersOut.wholeWords = true;
+    InstructionSpec hex =
+        apply("HEX", ApplyFunction::FromAscii, {characters, dst, digits}, 7,
+              QT_TRANSLATE_NOOP("rung::model::Target", "Convert n ASCII characters from S to "
+                                                       "hexadecimal in D"),
+              "S D n");
+    hex.functionCode = 83;
+    in.push_back(hex);
+    InstructionSpec asci = apply("ASCI", ApplyFunction::ToAscii, {src, charactersOut, digits}, 7,
+                                 QT_TRANSLATE_NOOP("rung::model::Target",
+                                                   "Convert n hexadecimal digits from S to ASCII "
+                                                   "in D"),
+                                 "S D n");
+    asci.functionCode = 82;
+    in.push_back(asci);
     // RS D0 D200 D100 D201 (FNC 80): send m words from S, receive n words into D.
     // Vigor M/VB/VH communication manual, FNC 80 RS, "Operand Devices": S and D in the D column
     // only; m and n a D or a K/H constant, "m,n=0~256".
@@ -501,11 +682,16 @@ Target makeVigorTarget() {
     rsCount.lowest = 0;
     rsCount.highest = 256;
     rsCount.name = QT_TRANSLATE_NOOP("rung::model::Target", "number of words");
-    in.push_back(apply("RS", ApplyFunction::NotSimulated, {rsFirst, rsCount, rsInto, rsCount}, 9,
-                       QT_TRANSLATE_NOOP("rung::model::Target",
-                                         "Serial communication on CP2: send m words from S, "
-                                         "receive n words into D"),
-                       "S m D n"));
+    InstructionSpec rs =
+        apply("RS", ApplyFunction::SerialData, {rsFirst, rsCount, rsInto, rsCount}, 9,
+              QT_TRANSLATE_NOOP("rung::model::Target",
+                                "Serial communication on CP2: send m words from S, "
+                                "receive n words into D"),
+              "S m D n");
+    rs.functionCode = 80;
+    rs.port = "CP2";
+    rs.portApplications = {"non-protocol"};
+    in.push_back(rs);
     // LINK D1000 D100 (FNC 89), MBUS D1000 D100 (FNC 149): a table from S1, 4 working words
     // from S2.
     // Vigor M/VB/VH communication manual, FNC 89 LINK and FNC 149 MBUS, "Operand Devices": S1
@@ -519,29 +705,86 @@ Target makeVigorTarget() {
     linkWork.deviceOnly = true;
     linkWork.words = 4;
     linkWork.name = QT_TRANSLATE_NOOP("rung::model::Target", "working area");
-    in.push_back(apply("LINK", ApplyFunction::NotSimulated, {linkTable, linkWork}, 5,
-                       QT_TRANSLATE_NOOP("rung::model::Target",
-                                         "Easy Link between PLCs: table from S1, working area S2"),
-                       "S1 S2"));
-    in.push_back(apply(
-        "MBUS", ApplyFunction::NotSimulated, {linkTable, linkWork}, 5,
+    // The table: a count, then 7 registers a set; at most 255 sets (B-3-3, B-3-6).
+    linkTable.words = 1;
+    // B-3-3: "When the CP2 is assigned to this instruction, the communication type should use
+    // EASY LINK or COMPUTER LINK"; B-3-6: MBUS on CP2 "MODBUS".
+    InstructionSpec link =
+        apply("LINK", ApplyFunction::EasyLink, {linkTable, linkWork}, 5,
+              QT_TRANSLATE_NOOP("rung::model::Target",
+                                "Easy Link between PLCs: table from S1, working area S2"),
+              "S1 S2");
+    link.functionCode = 89;
+    link.port = "CP2";
+    link.portApplications = {"easy-link", "computer-link"};
+    link.oncePerProgram = true;
+    in.push_back(link);
+    InstructionSpec mbus = apply(
+        "MBUS", ApplyFunction::ModbusMaster, {linkTable, linkWork}, 5,
         QT_TRANSLATE_NOOP("rung::model::Target", "MODBUS master: table from S1, working area S2"),
-        "S1 S2"));
-    // VRRD K1 D0: the value of the volume VR1 into D0.
-    in.push_back(apply(
-        "VRRD", ApplyFunction::NotSimulated, {src, dst}, 5,
+        "S1 S2");
+    mbus.functionCode = 149;
+    mbus.port = "CP2";
+    mbus.portApplications = {"modbus"};
+    mbus.oncePerProgram = true;
+    in.push_back(mbus);
+    // VRRD K1 D0: the value of the volume VR1 into D0 (the panel's VR words, a stimulus).
+    OperandSpec volume{K::Constant};
+    volume.lowest = 1;
+    volume.highest = 2;
+    volume.name = QT_TRANSLATE_NOOP("rung::model::Target", "variable resistor");
+    volume.elementOf = "VR";
+    InstructionSpec vrrd = apply(
+        "VRRD", ApplyFunction::ReadVolume, {volume, dst}, 5,
         QT_TRANSLATE_NOOP("rung::model::Target", "Read the variable resistor (volume) VRn into D"),
-        "K D"));
-    in.push_back(apply("SWAP", ApplyFunction::NotSimulated, {dst}, 3,
-                       QT_TRANSLATE_NOOP("rung::model::Target", "Swap the high and low bytes of D"),
-                       "D"));
-    // SMOV D55 K2 K2 D110 K4 (Vigor M/VB/VH communication manual, with M9168 choosing
-    // hexadecimal digits).
-    in.push_back(apply("SMOV", ApplyFunction::NotSimulated,
-                       {src, {K::Count}, {K::Count}, dst, {K::Count}}, 11,
-                       QT_TRANSLATE_NOOP("rung::model::Target",
-                                         "Move m2 digits of S from digit m1 to D from digit n"),
-                       "S m1 m2 D n"));
+        "K D");
+    vrrd.functionCode = 85;
+    in.push_back(vrrd);
+    OperandSpec swapped = dst;
+    swapped.wholeWords = true;
+    InstructionSpec swap =
+        apply("SWAP", ApplyFunction::Swap, {swapped}, 3,
+              QT_TRANSLATE_NOOP("rung::model::Target", "Swap the high and low bytes of D"), "D");
+    swap.functionCode = 147;
+    in.push_back(swap);
+    // SMOV D55 K2 K2 D110 K4 (seed 001, with M9168 choosing hexadecimal digits): digit
+    // positions 1..4, the count no more than the digits from m1 down and from n down.
+    OperandSpec digitPosition{K::Count};
+    digitPosition.lowest = 1;
+    digitPosition.highest = 4;
+    digitPosition.name = QT_TRANSLATE_NOOP("rung::model::Target", "digit position");
+    InstructionSpec smov = apply(
+        "SMOV", ApplyFunction::ShiftDigits, {src, digitPosition, digits, dst, digitPosition}, 11,
+        QT_TRANSLATE_NOOP("rung::model::Target",
+                          "Move m2 digits of S from digit m1 to D from digit n"),
+        "S m1 m2 D n");
+    smov.functionCode = 13;
+    in.push_back(smov);
+    // DDIV D12 K255 D14 (seed 001 B-3-6, the MBUS example's slaves: "D10x99/255"): DIV's
+    // 32-bit form; the quotient into D, D+1, the remainder into D+2, D+3.
+    InstructionSpec ddiv =
+        apply("DDIV", ApplyFunction::Div, {src, src, dst}, 13,
+              QT_TRANSLATE_NOOP("rung::model::Target",
+                                "32 bits: D, D+1 = (S1, S1+1) / (S2, S2+1), D+2, D+3 = remainder"),
+              "S1 S2 D");
+    ddiv.functionCode = 23;
+    ddiv.doubleWord = true;
+    for (OperandSpec &o : ddiv.operands)
+        o.wholeWords = true;
+    ddiv.operands[0].words = 2;
+    ddiv.operands[1].words = 2;
+    ddiv.operands[2].words = 4;
+    in.push_back(ddiv);
+    // ALTP M0 (seed 001 B-3-9: the read and write periods): M0 changes state at each rising
+    // edge of the input, ALT's pulse form (FNC 66).
+    OperandSpec alternated{K::BitDest};
+    InstructionSpec altp =
+        apply("ALTP", ApplyFunction::Toggle, {alternated}, 3,
+              QT_TRANSLATE_NOOP("rung::model::Target",
+                                "Alternate: D changes state at each rising edge of the input"),
+              "D");
+    altp.functionCode = 66;
+    in.push_back(altp);
 
     t.limits.programSteps = 16000;
     t.limits.stackDepth = 8;
@@ -570,6 +813,14 @@ Target makeVigorTarget() {
         addTerminals(v, "Y", 0, 16);
     }
     t.protocolMaps = vigorProtocolMaps();
+    t.ports = vigorPorts();
+    // The device types of the LINK / MBUS tables (B-3-3, B-3-6).
+    t.linkDeviceCodes = {
+        {1, "X", true},   {2, "Y", true},       {3, "M", true},
+        {4, "S", true},   {5, "T", true},       {6, "C", true},
+        {10, "T", false}, {11, "C", false, 16}, {12, "C", false, 32, false},
+        {13, "D", false},
+    };
     return t;
 }
 

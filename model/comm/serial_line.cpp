@@ -1,6 +1,6 @@
-#include "comms/transport/serial_settings.h"
+#include "model/comm/serial_line.h"
 
-namespace rung::comms {
+namespace rung::model {
 
 bool parseFrameFormat(QStringView text, SerialSettings *line) {
     if (text.size() != 3)
@@ -30,4 +30,4 @@ QString frameFormatText(const SerialSettings &line) {
     return QStringLiteral("%1%2%3").arg(line.dataBits).arg(QLatin1Char(parity)).arg(line.stopBits);
 }
 
-} // namespace rung::comms
+} // namespace rung::model

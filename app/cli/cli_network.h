@@ -1,0 +1,24 @@
+#pragma once
+
+// The command-line tool on a network file (.rungnet, docs/network-format.md): simulate it,
+// check it, serve it with its bridges (docs/cli.md).
+
+#include "network/network.h"
+
+#include <QStringList>
+#include <QTextStream>
+
+namespace rung::app {
+
+bool isNetworkFile(const QString &file);
+
+// The stations' programs loaded as `simulate` loads one program (cli_load_program.h): a
+// listing, a ladder text or a project, checked, compiled; the errors with their places.
+network::ProgramLoader cliProgramLoader();
+
+// `simulate NET.rungnet --scans N [--period MS] [--set NAME/DEV=V@SCAN]... --trace NAME/DEV,...
+// [--traffic FILE]`: args after the file.
+int runNetworkSimulate(const QString &file, const QStringList &args, QTextStream &out,
+                       QTextStream &err);
+
+} // namespace rung::app

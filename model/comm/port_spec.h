@@ -1,0 +1,94 @@
+#pragma once
+
+// A PLC's serial ports as target data (Target::ports): which ports a model has, the
+// applications each can run (what Ladder Master's "2nd COM Port Setting" offers, seed 001
+// B-3-1; the PL110's protocols, seed 003 chapter 3 and 4.2.19 / 4.2.21), their rates, formats
+// and station numbers. The network file, a project's port settings and the wiring checks read
+// these tables and nothing else. target.h includes this header, so it must not include
+// target.h.
+
+#include <QString>
+#include <QStringList>
+
+#include <vector>
+
+namespace rung::model {
+
+// One station's share of a link that exchanges memory without published frames (CPU Link,
+// Parallel Link): elements first + stride x station, count of them, of the devices written
+// with `prefix` (station 0 is the master).
+struct SharedArea {
+    const char *prefix = "";
+    int first = 0;
+    int stride = 0;
+    int count = 0;
+};
+
+// A transfer range (CPU Link's "Transfer Range Mode", Parallel Link's speed): the areas, and
+// the time of one exchange in ms: CPU Link's network scan time by the number of stations
+// (cycleMs[stations - 2], B-3-4's table), Parallel Link's communication time at 19200 bps
+// (B-3-5), to which both stations' scan times add.
+struct SharedMode {
+    std::vector<SharedArea> areas;
+    std::vector<int> cycleMs;
+};
+
+// What a port runs and how.
+struct PortApplication {
+    const char *id = "";        // as files spell it: "easy-link"
+    const char *name = nullptr; // QT_TRANSLATE_NOOP("rung::model::Target", "Easy Link")
+    QStringList models;         // the models that have it; empty: every model
+    std::vector<int> bauds;     // the rates it takes; the first is the default
+    const char *frame = "8N1";  // the default character format
+    bool fixedFrame = false;    // the format cannot be changed (Computer Link: 7E1)
+    int stationMin = 0;         // station numbers it takes
+    int stationMax = 0;
+    int station = 0; // the default
+    // The port answers a master as a slave would, with the protocol of the target's map
+    // (Computer Link, MODBUS slave).
+    bool answersVigorLink = false;
+    bool answersModbus = false;
+    // The port's program is a master of this protocol (LINK: Computer Link; MBUS, COM/EXP:
+    // MODBUS), so a wire may carry only one such port.
+    bool master = false;
+    // The manual publishes the frames of this application. False for CPU Link and Parallel
+    // Link ("dedicated protocol", seed 001 B-3-4, B-3-5): the simulation exchanges their data
+    // at the level the manual publishes and never puts a frame of its own on a real port.
+    bool published = true;
+    // The program drives the port byte by byte (RS, VB-1COM, PL110 free-port).
+    bool programDriven = false;
+    // CPU Link (by range mode 1..3) and Parallel Link (low, high speed): what is exchanged.
+    std::vector<SharedMode> sharedModes;
+    int sharedLink = 0; // 1: CPU Link (stations 0..7), 2: Parallel Link (a master, a slave)
+};
+
+struct PortSpec {
+    QString name;                              // "CP2", "COM1", "MODULE1"
+    const char *description = nullptr;         // QT_TRANSLATE_NOOP("rung::model::Target", ...)
+    QStringList models;                        // the models that have the port; empty: every model
+    std::vector<PortApplication> applications; // the first is the port's default
+    const PortApplication *application(QStringView id) const {
+        for (const PortApplication &a : applications)
+            if (id == QLatin1String(a.id))
+                return &a;
+        return nullptr;
+    }
+    bool on(const QString &model) const { return models.isEmpty() || models.contains(model); }
+};
+
+// A device type code of the LINK / MBUS communication table (seed 001 B-3-3: 1 X, 2 Y, 3 M,
+// 4 S, 5 T contact, 6 C contact, 10 timer present value, 11 16-bit counter present value, 12
+// 32-bit counter present value, 13 D; B-3-6: MBUS takes them but 12).
+struct LinkDeviceCode {
+    int code = 0;
+    const char *prefix = ""; // the devices' prefix, as the target writes it
+    bool bits = false;       // bit devices (contacts), else values
+    int valueBits = 0;       // values of this width only (16 or 32); 0: any
+    bool modbus = true;      // MBUS takes it too
+};
+
+inline bool applicationOn(const PortApplication &a, const QString &model) {
+    return a.models.isEmpty() || a.models.contains(model);
+}
+
+} // namespace rung::model

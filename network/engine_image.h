@@ -1,0 +1,32 @@
+#pragma once
+
+// A station's engine as the image a slave serves (comms/slave/device_image.h): a request is
+// answered from the engine's memory after the scan, a write changes it at once, between
+// scans, as a PLC does its communication work after the user program. One thread: the
+// network's.
+
+#include "comms/slave/device_image.h"
+#include "simulator/engine.h"
+
+namespace rung::network {
+
+class EngineImage final : public comms::slave::DeviceImage {
+public:
+    explicit EngineImage(simulator::Engine *engine)
+        : m_engine(engine) {}
+
+    std::shared_ptr<const model::Snapshot> snapshot() const override;
+    comms::slave::ImageChange apply(const std::vector<model::DeviceCommand> &commands,
+                                    QDeadlineTimer deadline) override;
+    comms::slave::OperatingMode mode() const override { return comms::slave::OperatingMode::Run; }
+    comms::slave::ImageChange setMode(comms::slave::OperatingMode mode,
+                                      QDeadlineTimer deadline) override;
+
+private:
+    simulator::Engine *m_engine;
+    // The snapshot of the last scan, taken once for the requests answered after it.
+    mutable std::shared_ptr<const model::Snapshot> m_snapshot;
+    mutable quint64 m_scans = ~quint64(0);
+};
+
+} // namespace rung::network

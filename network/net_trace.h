@@ -1,0 +1,42 @@
+#pragma once
+
+// The trace of a network (`rungstudio-cli simulate NET.rungnet`): the CSV of a program's trace
+// (simulator/trace.h) with every device named NAME/DEVICE, a row every --period ms of virtual
+// time after the scans of that instant.
+
+#include "network/network.h"
+
+#include "simulator/trace.h"
+
+#include <QTextStream>
+
+namespace rung::network {
+
+struct NetTraceColumn {
+    Station *station = nullptr;
+    simulator::TraceColumn column;
+    QString name; // "master/D20"
+};
+
+struct NetStimulus {
+    Station *station = nullptr;
+    simulator::TraceStimulus stimulus;
+};
+
+struct NetTraceRequest {
+    quint64 rows = 0;
+    qint64 periodMs = 0; // 0: the network's
+    std::vector<NetStimulus> stimuli;
+    std::vector<NetTraceColumn> columns;
+};
+
+// --scans N (rows), --period MS, --set NAME/DEV=VALUE@ROW, --trace NAME/DEV[,...]; false with
+// a translated reason for anything else, or a station or device that is not there.
+bool parseNetworkTraceOptions(const Network &network, const QStringList &args,
+                              NetTraceRequest *request, QString *error);
+
+// Row k: the virtual time k x period, the devices after everything up to that time (the
+// scans of that instant included); stimuli of row k are applied before it.
+void runNetworkTrace(Network &network, const NetTraceRequest &request, QTextStream &out);
+
+} // namespace rung::network

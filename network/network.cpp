@@ -1,0 +1,249 @@
+#include "network/network.h"
+
+#include "network/devices.h"
+#include "network/shared_link.h"
+#include "network/station.h"
+#include "network/uart.h"
+
+#include <QCoreApplication>
+
+#include <limits>
+
+namespace rung::network {
+
+namespace {
+
+struct Tr {
+    Q_DECLARE_TR_FUNCTIONS(rung::network::Network)
+};
+
+constexpr qint64 kNever = std::numeric_limits<qint64>::max();
+
+} // namespace
+
+Network::~Network() = default;
+
+Station *Network::station(const QString &name) const {
+    for (const auto &s : m_stations)
+        if (s->name() == name)
+            return s.get();
+    return nullptr;
+}
+
+Endpoint *Network::endpoint(const QString &name) const {
+    const qsizetype slash = name.indexOf(QLatin1Char('/'));
+    if (slash < 0) {
+        for (const auto &d : m_devices)
+            if (d->name == name)
+                return d.get();
+        return nullptr;
+    }
+    const Station *s = station(name.left(slash));
+    return s ? s->findPort(name.mid(slash + 1)) : nullptr;
+}
+
+std::unique_ptr<Network> Network::build(const NetworkDescription &d, const ProgramLoader &loader,
+                                        QString *error) {
+    std::unique_ptr<Network> net(new Network);
+    net->m_description = d;
+    const QString prefix = d.file + QStringLiteral(": ");
+    auto fail = [&](const QString &why) {
+        *error = prefix + why;
+        return nullptr;
+    };
+    for (const StationDescription &sd : d.stations) {
+        LoadedStation loaded;
+        QString why;
+        if (!loader(sd, &loaded, &why)) {
+            *error = why;
+            return nullptr;
+        }
+        const qint64 period = sd.periodMs > 0 ? sd.periodMs : d.periodMs;
+        auto station = std::make_unique<Station>(net.get(), sd.name, loaded, period);
+        // The project's port settings, then the network's over them, key by key.
+        QStringList names = loaded.ports.keys();
+        for (const QString &k : sd.ports.keys())
+            if (!names.contains(k))
+                names << k;
+        for (const QString &port : names) {
+            std::vector<model::PortLayer> layers;
+            if (loaded.ports.contains(port))
+                layers.push_back({loaded.ports.value(port).toObject(),
+                                  sd.program + QStringLiteral(": ports.") + port});
+            if (sd.ports.contains(port))
+                layers.push_back(
+                    {sd.ports.value(port).toObject(), sd.where + QStringLiteral(".ports.") + port});
+            model::PortConfig config;
+            if (!model::readPortConfig(*loaded.target, loaded.model, port, layers, &config, &why))
+                return fail(why);
+            if (station->findPort(config.port))
+                return fail(Tr::tr("%1.ports: %2 is named twice").arg(sd.where, config.port));
+            station->addPort(std::move(config));
+        }
+        net->m_stations.push_back(std::move(station));
+    }
+    for (const DeviceDescription &dd : d.devices) {
+        QString why;
+        std::unique_ptr<Endpoint> device = makeDevice(net.get(), dd, &why);
+        if (!device)
+            return fail(why);
+        net->m_actors.push_back(dynamic_cast<Actor *>(device.get()));
+        net->m_devices.push_back(std::move(device));
+    }
+    for (const WireDescription &wd : d.wires) {
+        auto wire = std::make_unique<Wire>();
+        wire->name = wd.name;
+        for (qsizetype k = 0; k < wd.ends.size(); ++k) {
+            const QString &end = wd.ends[k];
+            const QString where = QStringLiteral("%1[%2]").arg(wd.where).arg(k);
+            Endpoint *e = net->endpoint(end);
+            const qsizetype slash = end.indexOf(QLatin1Char('/'));
+            if (!e && slash > 0) {
+                Station *s = net->station(end.left(slash));
+                if (!s)
+                    return fail(Tr::tr("%1: no station \"%2\"").arg(where, end.left(slash)));
+                // A port the settings do not name: the port's first application, as a new
+                // PLC has it.
+                model::PortConfig config;
+                QString why;
+                if (!model::readPortConfig(s->target(), s->model(), end.mid(slash + 1),
+                                           {{QJsonObject(), where}}, &config, &why))
+                    return fail(why);
+                e = s->addPort(std::move(config));
+            }
+            if (!e)
+                return fail(Tr::tr("%1: no station or device \"%2\"").arg(where, end));
+            if (e->wire)
+                return fail(Tr::tr("%1: %2 is on wire %3 already; a port has one wire")
+                                .arg(where, e->name, e->wire->name));
+            e->wire = wire.get();
+            wire->ends.push_back(e);
+        }
+        net->m_wires.push_back(std::move(wire));
+    }
+    for (const FaultDescription &f : d.faults) {
+        if (!f.wire.isEmpty()) {
+            bool found = false;
+            for (const auto &w : net->m_wires)
+                found = found || w->name == f.wire;
+            if (!found)
+                return fail(Tr::tr("%1: no wire \"%2\"").arg(f.where, f.wire));
+        }
+        if (!f.station.isEmpty() && !net->station(f.station) && !net->endpoint(f.station))
+            return fail(Tr::tr("%1: no station or device \"%2\"").arg(f.where, f.station));
+    }
+    QString why;
+    if (!makeSharedLinks(net.get(), &net->m_groups, &why))
+        return fail(why);
+    for (const auto &g : net->m_groups)
+        net->m_actors.push_back(g.get());
+    for (const auto &s : net->m_stations) {
+        s->start();
+        net->m_actors.push_back(s.get());
+    }
+    return net;
+}
+
+bool Network::silent(const QString &owner, qint64 us) const {
+    for (const FaultDescription &f : m_description.faults)
+        if (f.kind == FaultDescription::Kind::Silent && f.station == owner &&
+            us >= f.fromMs * 1000 && (f.toMs < 0 || us < f.toMs * 1000))
+            return true;
+    return false;
+}
+
+bool Network::cut(const Wire &wire, qint64 us) const {
+    for (const FaultDescription &f : m_description.faults)
+        if (f.kind == FaultDescription::Kind::Cut && f.wire == wire.name && us >= f.fromMs * 1000 &&
+            (f.toMs < 0 || us < f.toMs * 1000))
+            return true;
+    return false;
+}
+
+qint64 Network::transmit(Endpoint *from, const QByteArray &sent) {
+    const qint64 start = std::max(m_now, from->txEndUs);
+    const qint64 end = start + wireTimeUs(sent.size(), from->lineSettings());
+    from->txEndUs = end;
+    TrafficRecord r{start, end, from->wire ? from->wire->name : QString(), from->name, sent, {}};
+    if (silent(from->owner, start)) {
+        r.note = Tr::tr("silent (fault): not sent");
+        record(r);
+        return end;
+    }
+    if (!from->wire) {
+        r.note = Tr::tr("the port is on no wire");
+        record(r);
+        return end;
+    }
+    Wire &w = *from->wire;
+    const int frame = w.frames++;
+    QByteArray bytes = sent;
+    for (const FaultDescription &f : m_description.faults)
+        if (f.kind == FaultDescription::Kind::Corrupt && f.wire == w.name && f.frame == frame &&
+            f.byte < bytes.size()) {
+            bytes[f.byte] = char(bytes[f.byte] ^ f.mask);
+            r.bytes = bytes;
+            r.note = Tr::tr("byte %1 corrupted (fault): XOR %2h")
+                         .arg(f.byte)
+                         .arg(QString::number(f.mask, 16).toUpper());
+        }
+    if (cut(w, start)) {
+        r.note = Tr::tr("wire cut (fault): not delivered");
+        record(r);
+        return end;
+    }
+    // Two senders at once on a half-duplex line: both frames are lost as sent.
+    auto transmission = std::make_shared<Wire::Transmission>(Wire::Transmission{from, start, end});
+    std::erase_if(w.active, [&](const auto &t) { return t->endUs <= start; });
+    for (const auto &t : w.active)
+        if (t->sender != from) {
+            t->collided = true;
+            transmission->collided = true;
+            r.note = Tr::tr("collision with %1: both frames garbled").arg(t->sender->name);
+        }
+    w.active.push_back(transmission);
+    record(r);
+    for (Endpoint *e : w.ends)
+        if (e != from)
+            m_deliveries.push(
+                Delivery{end, m_sequence++, e, bytes, from->lineSettings(), transmission});
+    return end;
+}
+
+void Network::inject(Endpoint *at, const QByteArray &bytes) {
+    transmit(at, bytes);
+}
+
+void Network::runUntil(qint64 until) {
+    while (true) {
+        qint64 next = m_deliveries.empty() ? kNever : m_deliveries.top().atUs;
+        for (const Actor *a : m_actors)
+            next = std::min(next, a->nextUs());
+        if (next > until || next == kNever)
+            break;
+        m_now = std::max(m_now, next);
+        // What arrives at an instant is there for what runs at it.
+        while (!m_deliveries.empty() && m_deliveries.top().atUs <= m_now) {
+            Delivery d = m_deliveries.top();
+            m_deliveries.pop();
+            if (d.transmission->collided) {
+                // Two drivers on a half-duplex line: the receivers read nothing sent; the
+                // model's choice is every bit inverted, each character a framing error.
+                QByteArray garbled = d.bytes;
+                for (char &c : garbled)
+                    c = char(~c);
+                const Received got = acrossLine(garbled, d.line, d.to->lineSettings());
+                d.to->deliver(got.bytes, int(got.bytes.size()), d.atUs);
+            } else {
+                const Received got = acrossLine(d.bytes, d.line, d.to->lineSettings());
+                d.to->deliver(got.bytes, got.errors, d.atUs);
+            }
+        }
+        for (Actor *a : m_actors)
+            if (a->nextUs() <= m_now)
+                a->run(m_now);
+    }
+    m_now = std::max(m_now, until);
+}
+
+} // namespace rung::network

@@ -1,0 +1,159 @@
+#pragma once
+
+// A network of PLCs on one virtual clock (docs/network.md): stations (each a program on its
+// engine, with its ports), simulated devices, wires between ports, CPU Link and Parallel Link
+// groups, faults. Everything runs on the caller's thread, deterministically: the same network
+// and stimulus give the same traces and the same traffic, byte for byte.
+//
+//   NetworkDescription d;                     // network_file.h
+//   readNetworkFile("plant.rungnet", &d, &error);
+//   auto net = Network::build(d, loader, &error);
+//   net->runUntil(1'000'000);                 // one second of virtual time
+
+#include "network/network_file.h"
+
+#include "model/comm/port_config.h"
+#include "simulator/program.h"
+
+#include <QByteArray>
+#include <QJsonObject>
+
+#include <functional>
+#include <memory>
+#include <queue>
+#include <vector>
+
+namespace rung::simulator {
+class Engine;
+}
+
+namespace rung::network {
+
+class Network;
+class Station;
+class StationPort;
+
+// A station's program as its file gives it.
+struct LoadedStation {
+    std::shared_ptr<const simulator::Program> program;
+    const model::Target *target = nullptr;
+    const model::ModelVariant *model = nullptr;
+    QJsonObject ports; // a project's port settings ("ports"); empty for a listing
+};
+// Loads a station's program (the command line's loader, which `simulate` uses too, or a
+// test's); false with the reasons in *error, a line each.
+using ProgramLoader =
+    std::function<bool(const StationDescription &station, LoadedStation *loaded, QString *error)>;
+
+// What went over a wire, or what a group exchanged without frames.
+struct TrafficRecord {
+    qint64 startUs = 0;
+    qint64 endUs = 0;
+    QString wire;
+    QString sender; // "master/CP2", a device's name
+    QByteArray bytes;
+    QString note; // translated; empty for a frame delivered as sent
+};
+
+// Anything with a port on a wire: a station's port, a device.
+class Endpoint {
+public:
+    virtual ~Endpoint() = default;
+    QString name;  // "master/CP2", "tc"
+    QString owner; // the station's or device's name
+    class Wire *wire = nullptr;
+    qint64 txEndUs = 0; // when the last byte it sent left
+    virtual const model::SerialSettings &lineSettings() const = 0;
+    // Bytes the wire brings, read at this end's line (uart.h), at virtual time atUs.
+    virtual void deliver(const QByteArray &bytes, int errors, qint64 atUs) = 0;
+};
+
+// Something the clock drives: a station's scans, a device's answers, a group's exchange.
+class Actor {
+public:
+    virtual ~Actor() = default;
+    // The next time it does something; INT64_MAX: nothing planned.
+    virtual qint64 nextUs() const = 0;
+    virtual void run(qint64 nowUs) = 0;
+};
+
+class Wire {
+public:
+    QString name;
+    std::vector<Endpoint *> ends;
+    int frames = 0; // transmissions so far (the corrupt fault counts them)
+    struct Transmission {
+        Endpoint *sender = nullptr;
+        qint64 startUs = 0;
+        qint64 endUs = 0;
+        bool collided = false;
+    };
+    std::vector<std::shared_ptr<Transmission>> active;
+};
+
+class Network {
+public:
+    // Loads every station's program, reads every port's settings, joins the wires; false (and
+    // nullptr) with what, where and why.
+    static std::unique_ptr<Network> build(const NetworkDescription &description,
+                                          const ProgramLoader &loader, QString *error);
+    ~Network();
+
+    qint64 nowUs() const { return m_now; }
+    // Runs every event up to and including virtual time `us`.
+    void runUntil(qint64 us);
+
+    const NetworkDescription &description() const { return m_description; }
+    const std::vector<std::unique_ptr<Station>> &stations() const { return m_stations; }
+    Station *station(const QString &name) const;
+    Endpoint *endpoint(const QString &name) const; // "master/CP2", "tc"
+    const std::vector<std::unique_ptr<Wire>> &wires() const { return m_wires; }
+
+    // Every transmission and exchange from now on; null: not recorded (the default).
+    void setTrafficSink(std::function<void(const TrafficRecord &)> sink) {
+        m_traffic = std::move(sink);
+    }
+    void record(TrafficRecord record) const {
+        if (m_traffic)
+            m_traffic(record);
+    }
+    bool recording() const { return bool(m_traffic); }
+
+    // A port's bytes onto its wire from now (after what it is still sending); returns when the
+    // last byte will have left. Faults (cut, silent, corrupt) and collisions apply here.
+    qint64 transmit(Endpoint *from, const QByteArray &bytes);
+    // A station or device the faults keep silent at time t.
+    bool silent(const QString &owner, qint64 us) const;
+    bool cut(const Wire &wire, qint64 us) const;
+
+    // Bytes a bridge (a real port) puts on the endpoint's wire as if that port sent them.
+    void inject(Endpoint *at, const QByteArray &bytes);
+
+private:
+    Network() = default;
+    struct Delivery {
+        qint64 atUs = 0;
+        quint64 sequence = 0;
+        Endpoint *to = nullptr;
+        QByteArray bytes;
+        model::SerialSettings line; // the sender's
+        std::shared_ptr<Wire::Transmission> transmission;
+        bool operator>(const Delivery &o) const {
+            return atUs != o.atUs ? atUs > o.atUs : sequence > o.sequence;
+        }
+    };
+    friend class NetworkBuilder;
+
+    NetworkDescription m_description;
+    std::vector<std::unique_ptr<Station>> m_stations;
+    std::vector<std::unique_ptr<Endpoint>> m_devices; // also in m_actors
+    std::vector<std::unique_ptr<Actor>> m_groups;     // CPU Link, Parallel Link
+    std::vector<Actor *> m_actors;                    // devices, groups, stations: this order
+    std::vector<std::unique_ptr<Wire>> m_wires;
+    std::priority_queue<Delivery, std::vector<Delivery>, std::greater<>> m_deliveries;
+    quint64 m_sequence = 0;
+    qint64 m_now = 0;
+    std::function<void(const TrafficRecord &)> m_traffic;
+};
+
+} // namespace rung::network

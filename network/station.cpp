@@ -1,0 +1,150 @@
+#include "network/station.h"
+
+#include "network/engine_image.h"
+
+#include "comms/protocol/plc_master.h"
+#include "comms/slave/modbus_responder.h"
+#include "comms/slave/vigor_responder.h"
+
+namespace rung::network {
+
+namespace {
+
+// A port keeps at most this much received and not yet taken (a program that never looks at
+// its port, a flood on the wire).
+constexpr qsizetype kMaxKept = 64 * 1024;
+
+void keep(QByteArray &into, const QByteArray &bytes) {
+    into += bytes;
+    if (into.size() > kMaxKept)
+        into.remove(0, into.size() - kMaxKept);
+}
+
+} // namespace
+
+StationPort::StationPort(Network *network, Station *station, model::PortConfig config)
+    : m_network(network)
+    , m_station(station)
+    , m_config(std::move(config))
+    , m_line(m_config.line) {
+    name = station->name() + QLatin1Char('/') + m_config.port;
+    owner = station->name();
+    const model::PortApplication &app = *m_config.application;
+    // The master a program's instruction drives on this port speaks the application's
+    // protocol: Computer Link for LINK, MODBUS for MBUS and COM / EXP.
+    if (app.answersVigorLink)
+        m_master = std::make_unique<comms::VigorLinkMaster>();
+    else if (app.answersModbus || app.master)
+        m_master = std::make_unique<comms::ModbusMaster>(
+            m_config.modbusAscii ? comms::modbus::Framing::Ascii : comms::modbus::Framing::Rtu);
+}
+
+StationPort::~StationPort() = default;
+
+void StationPort::makeResponder(const std::shared_ptr<EngineImage> &image) {
+    const model::PortApplication &app = *m_config.application;
+    const model::Target &target = m_station->target();
+    if (app.answersVigorLink) {
+        if (const auto *map = model::findProtocolMap(target, model::ProtocolId::VigorLink))
+            m_responder = std::make_unique<comms::slave::VigorResponder>(target, *map,
+                                                                         m_config.station, image);
+    } else if (app.answersModbus && m_config.station > 0) {
+        // Station 0 is MBUS's master (B-3-6): MODBUS unit 0 is the broadcast address, which
+        // no slave answers, so the port answers nothing.
+        if (const auto *map = model::findProtocolMap(target, model::ProtocolId::Modbus))
+            m_responder = std::make_unique<comms::slave::ModbusResponder>(
+                target, *map, m_config.station, image,
+                m_config.modbusAscii ? comms::modbus::Framing::Ascii : comms::modbus::Framing::Rtu,
+                m_line);
+    }
+}
+
+qint64 StationPort::nowUs() const {
+    return m_network->nowUs();
+}
+
+qint64 StationPort::send(QByteArrayView bytes) {
+    return m_network->transmit(this, bytes.toByteArray());
+}
+
+QByteArray StationPort::receive() {
+    return std::exchange(m_forProgram, QByteArray());
+}
+
+int StationPort::takeCharacterErrors() {
+    return std::exchange(m_errors, 0);
+}
+
+void StationPort::deliver(const QByteArray &bytes, int errors, qint64 atUs) {
+    m_lastUs = atUs;
+    m_errors += errors;
+    if (m_used)
+        keep(m_forProgram, bytes);
+    if (m_responder)
+        keep(m_forResponder, bytes);
+}
+
+void StationPort::answer(qint64 nowUs) {
+    if (!m_responder)
+        return;
+    QByteArrayList frames;
+    if (!m_forResponder.isEmpty())
+        frames = m_responder->feed(std::exchange(m_forResponder, QByteArray()));
+    // A MODBUS RTU frame of an unknown length ends at 3.5 characters of silence.
+    const int gap = m_responder->silenceMicroseconds();
+    if (frames.isEmpty() && gap > 0 && m_responder->buffered() > 0 && m_lastUs >= 0 &&
+        nowUs - m_lastUs >= gap)
+        frames = m_responder->silence();
+    for (const QByteArray &frame : frames)
+        m_network->transmit(this, frame);
+}
+
+Station::Station(Network *network, QString name, const LoadedStation &loaded, qint64 periodMs)
+    : m_network(network)
+    , m_name(std::move(name))
+    , m_target(loaded.target)
+    , m_model(loaded.model)
+    , m_periodMs(periodMs)
+    , m_engine(std::make_unique<simulator::Engine>(loaded.program)) {
+    m_engine->setPeriodMs(periodMs);
+    m_image = std::make_shared<EngineImage>(m_engine.get());
+}
+
+Station::~Station() = default;
+
+StationPort *Station::findPort(const QString &name) const {
+    for (const auto &[key, port] : m_ports)
+        if (key.compare(name, Qt::CaseInsensitive) == 0)
+            return port.get();
+    return nullptr;
+}
+
+StationPort *Station::addPort(model::PortConfig config) {
+    const QString key = config.port;
+    auto port = std::make_unique<StationPort>(m_network, this, std::move(config));
+    StationPort *p = port.get();
+    m_ports[key] = std::move(port);
+    return p;
+}
+
+void Station::start() {
+    for (auto &[key, port] : m_ports)
+        port->makeResponder(m_image);
+    m_engine->attachPorts(this);
+}
+
+model::PlcPort *Station::port(const QString &name) {
+    StationPort *p = findPort(name);
+    if (p)
+        p->setUsedByProgram();
+    return p;
+}
+
+void Station::run(qint64 nowUs) {
+    m_engine->scan();
+    for (auto &[key, port] : m_ports)
+        port->answer(nowUs);
+    m_nextUs += m_periodMs * 1000;
+}
+
+} // namespace rung::network

@@ -1,0 +1,98 @@
+#pragma once
+
+// A station of a network: a PLC's program on its engine, its ports, and the slaves' side of
+// the protocols its ports answer (comms' responders over the engine's image).
+
+#include "network/network.h"
+
+#include "comms/slave/responder.h"
+#include "model/comm/plc_port.h"
+#include "simulator/engine.h"
+
+#include <map>
+
+namespace rung::network {
+
+class EngineImage;
+
+// A port of a station: an end of a wire for the network, a PlcPort for the engine.
+class StationPort final : public Endpoint, public model::PlcPort {
+public:
+    StationPort(Network *network, Station *station, model::PortConfig config);
+    ~StationPort() override;
+
+    // Endpoint
+    const model::SerialSettings &lineSettings() const override { return m_line; }
+    void deliver(const QByteArray &bytes, int errors, qint64 atUs) override;
+
+    // model::PlcPort
+    const model::PortConfig &config() const override { return m_config; }
+    const model::SerialSettings &line() const override { return m_line; }
+    void setLine(const model::SerialSettings &line) override { m_line = line; }
+    qint64 nowUs() const override;
+    qint64 send(QByteArrayView bytes) override;
+    bool sending() const override { return nowUs() < txEndUs; }
+    QByteArray receive() override;
+    qint64 lastReceivedUs() const override { return m_lastUs; }
+    int takeCharacterErrors() override;
+    model::MasterProtocol *master() override { return m_master.get(); }
+
+    // The station's program drives the port (an instruction named it).
+    void setUsedByProgram() { m_used = true; }
+    bool usedByProgram() const { return m_used; }
+    // The slave's side after the station's scan: the requests that came, answered.
+    void answer(qint64 nowUs);
+    comms::slave::Responder *responder() const { return m_responder.get(); }
+    void makeResponder(const std::shared_ptr<EngineImage> &image);
+
+private:
+    Network *m_network;
+    Station *m_station;
+    model::PortConfig m_config;
+    model::SerialSettings m_line;
+    std::unique_ptr<model::MasterProtocol> m_master;
+    std::unique_ptr<comms::slave::Responder> m_responder;
+    bool m_used = false;
+    QByteArray m_forProgram;   // received, for the engine
+    QByteArray m_forResponder; // received, for the slave's side
+    qint64 m_lastUs = -1;
+    int m_errors = 0;
+};
+
+class Station final : public Actor, public model::PlcPorts {
+public:
+    Station(Network *network, QString name, const LoadedStation &loaded, qint64 periodMs);
+    ~Station() override;
+
+    const QString &name() const { return m_name; }
+    const model::Target &target() const { return *m_target; }
+    const model::ModelVariant *model() const { return m_model; }
+    simulator::Engine &engine() { return *m_engine; }
+    const simulator::Engine &engine() const { return *m_engine; }
+    qint64 periodMs() const { return m_periodMs; }
+    const std::map<QString, std::unique_ptr<StationPort>> &ports() const { return m_ports; }
+    StationPort *findPort(const QString &name) const;
+    StationPort *addPort(model::PortConfig config);
+    // Attaches the ports to the engine and the slaves' sides to the image (after addPort).
+    void start();
+
+    // Actor
+    qint64 nextUs() const override { return m_nextUs; }
+    void run(qint64 nowUs) override;
+
+    // model::PlcPorts
+    model::PlcPort *port(const QString &name) override;
+
+private:
+    Network *m_network;
+    QString m_name;
+    const model::Target *m_target;
+    const model::ModelVariant *m_model;
+    qint64 m_periodMs;
+    qint64 m_nextUs = 0;
+    std::unique_ptr<simulator::Engine> m_engine;
+    std::shared_ptr<EngineImage> m_image;
+    std::map<QString, std::unique_ptr<StationPort>> m_ports;
+};
+
+} // namespace rung::network

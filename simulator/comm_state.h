@@ -1,0 +1,68 @@
+#pragma once
+
+// What the engine's communication instructions keep between scans (engine_comm.cpp): a value,
+// copied with the engine (history checkpoints), holding no port.
+
+#include "program.h"
+
+#include "model/comm/master_protocol.h"
+
+#include <QByteArray>
+
+#include <cstdint>
+#include <vector>
+
+namespace rung::simulator {
+
+// One frame of a LINK / MBUS set and where its reply goes.
+struct MasterFrame {
+    model::MasterRequest request;
+    std::vector<std::int32_t> words; // Read of values: the master's words, in order
+    int unitsPerWord = 1;            // link bytes (2, 4 for a 32-bit counter) or 1 register
+    int wordBits = 16;               // the master words' width
+    std::vector<BitRef> bits;        // Read of bits: the master's bits, in order
+    int firstBit = 0;                // the reply's bit (across its units) of bits[0]
+};
+
+// A VB-1COM module's buffer memory and what it is doing (seed 001 B-4-4).
+struct ModuleState {
+    std::vector<std::int32_t> bfm; // #0 .. #2256
+    bool attached = false;         // the port is in the network
+    bool sending = false;
+    bool started = false; // receiving: the first byte came
+    QByteArray received;
+    qint64 lastUs = -1;
+    std::int32_t command = 0; // BFM #1 as last written
+};
+
+// One communication instruction's state (Program::comms, same index).
+struct CommTask {
+    bool on = false;     // its input in this scan
+    bool seenOn = false; // its input was ON in some scan since the last END
+    // LINK / MBUS
+    bool running = false; // a set is being worked through
+    int set = 0;          // the set (0-based)
+    std::vector<MasterFrame> frames;
+    std::size_t frame = 0;
+    bool waiting = false;
+    qint64 deadlineUs = 0;
+    bool cycleClean = true;
+    int station = 0;
+    std::int32_t cycles = 0;
+    // PL110 SEND: the rising edge
+    bool previous = false;
+};
+
+struct CommState {
+    std::vector<CommTask> tasks;
+    bool cycleDone = false; // M9199 was turned ON at the last END
+    // RS (one active at a time, seed 001 B-3-9)
+    int serial = -1; // the RS that was ON in the last scan, -1 none
+    bool sending = false;
+    bool started = false;
+    QByteArray received;
+    qint64 lastUs = -1;
+    std::vector<ModuleState> modules; // by module number - 1, sized on first use
+};
+
+} // namespace rung::simulator

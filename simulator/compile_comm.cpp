@@ -1,0 +1,234 @@
+#include "compiler_detail.h"
+
+#include "model/comm/port_config.h"
+
+#include <variant>
+
+// The instructions of seed 001's communication programs: the ones that build and read frames
+// (SWAP, ASCI, HEX, SMOV, VRRD, DDIV) and the ones that drive a port (LINK, MBUS, RS, FROM / TO;
+// PL110 SEND, COM / EXP). docs/simulator.md and docs/network.md say what each does.
+
+namespace rung::simulator::detail {
+
+BitRef Compiler::systemBit(model::SystemRole role) {
+    const model::SystemDevice *d = m_target.systemDevice(role);
+    if (!d)
+        return {};
+    const auto parsed = model::parseAddress(m_target, d->device);
+    const auto *a = std::get_if<model::Address>(&parsed);
+    return a ? m_layout->bit(*a) : BitRef{};
+}
+
+std::int32_t Compiler::systemWord(model::SystemRole role) {
+    const model::SystemDevice *d = m_target.systemDevice(role);
+    if (!d)
+        return -1;
+    const auto parsed = model::parseAddress(m_target, d->device);
+    const auto *a = std::get_if<model::Address>(&parsed);
+    return a ? m_layout->word(*a) : -1;
+}
+
+std::int32_t Compiler::wordsToAreaEnd(const model::Operand &o) const {
+    if (!isDevice(o))
+        return 0;
+    return m_target.area(o.address.area).last - o.address.index + 1;
+}
+
+void Compiler::compileCommDevices() {
+    using R = model::SystemRole;
+    CommDevices &d = m_program->commDevices;
+    d.cycleDone = systemBit(R::LinkCycleDone);
+    d.sendRequest = systemBit(R::RsSendRequest);
+    d.receiveDone = systemBit(R::RsReceiveDone);
+    d.timeout = systemBit(R::RsTimeout);
+    d.error = systemBit(R::CommError);
+    d.byteMode = systemBit(R::ByteMode);
+    d.errorCode = systemWord(R::CommErrorCode);
+    d.sendLeft = systemWord(R::RsSendLeft);
+    d.received = systemWord(R::RsReceived);
+    d.timeoutWord = systemWord(R::CommTimeout);
+}
+
+void Compiler::compileText(const model::Instruction &ins, Step &s) {
+    using model::ApplyFunction;
+    const ApplyFunction f = ins.spec->function;
+    auto constantOf = [&](std::size_t i) -> int {
+        const model::Operand *o = operand(ins, i);
+        if (!o)
+            return 0;
+        if (o->kind != model::Operand::Kind::Constant || o->modified()) {
+            error(ins,
+                  Tr::tr("%1 needs a constant as operand %2").arg(ins.spec->mnemonic).arg(i + 1));
+            return 0;
+        }
+        return static_cast<int>(o->constant.value);
+    };
+    switch (f) {
+    case ApplyFunction::Swap:
+        s.code = Code::Swap;
+        s.dest = destOf(ins, 0, false, &s.width);
+        break;
+    case ApplyFunction::ToAscii:
+    case ApplyFunction::FromAscii: {
+        const bool toAscii = f == ApplyFunction::ToAscii;
+        s.code = toAscii ? Code::ToAscii : Code::FromAscii;
+        s.x = sourceOf(ins, 0);
+        s.dest = destOf(ins, 1, false, &s.width);
+        s.count = constantOf(2);
+        s.bit = systemBit(model::SystemRole::ByteMode);
+        // The characters' block stays in its area: D's for ASCI, S's for HEX.
+        const model::Operand *block = operand(ins, toAscii ? 1 : 0);
+        s.y.constant = block && !resolvedAtRunTime(*block) ? wordsToAreaEnd(*block) : 1 << 20;
+        break;
+    }
+    case ApplyFunction::ShiftDigits: {
+        s.code = Code::ShiftDigits;
+        s.x = sourceOf(ins, 0);
+        const int m1 = constantOf(1);
+        s.count = constantOf(2);
+        s.dest = destOf(ins, 3, false, &s.width);
+        s.slot = constantOf(4);
+        s.op = static_cast<std::uint8_t>(std::clamp(m1, 0, 4));
+        s.bit = systemBit(model::SystemRole::HexDigits);
+        // The digits moved are m1 down to m1 - m2 + 1 of S and n down to n - m2 + 1 of D.
+        if (!m_muted && (s.count > m1 || s.count > s.slot))
+            error(ins, Tr::tr("%1 moves %2 digits from digit %3 to digit %4: the digits would run "
+                              "below digit 1")
+                           .arg(ins.spec->mnemonic)
+                           .arg(s.count)
+                           .arg(m1)
+                           .arg(s.slot));
+        break;
+    }
+    case ApplyFunction::ReadVolume: {
+        // VRRD K D: a move from the element K of the panel's area (OperandSpec::elementOf).
+        s.code = Code::Move;
+        const int k = constantOf(0);
+        s.dest = destOf(ins, 1, false, &s.width);
+        const char *areaKey =
+            ins.spec->operands.empty() ? nullptr : ins.spec->operands[0].elementOf;
+        for (int a = 0; areaKey && a < m_layout->areaCount(); ++a)
+            if (m_target.area(a).key == QLatin1String(areaKey))
+                s.x.index = m_layout->word(model::Address{a, k, -1});
+        if (s.x.index < 0 && !m_muted)
+            error(ins, Tr::tr("%1 has no variable resistor %2").arg(m_target.displayName).arg(k));
+        break;
+    }
+    default:
+        break;
+    }
+}
+
+// DDIV S1 S2 D: (S1+1, S1) / (S2+1, S2) into (D+1, D), the remainder into (D+3, D+2); a
+// 32-bit constant or counter is one value.
+void Compiler::compileDoubleDivide(const model::Instruction &ins, Step &s) {
+    s.code = Code::DoubleDivide;
+    s.slot = static_cast<int>(m_program->wordLists.size());
+    auto pair = [&](std::size_t i, WordOperand *constant) {
+        const model::Operand *o = operand(ins, i);
+        std::int32_t low = -1;
+        std::int32_t high = -1;
+        if (o && o->kind == model::Operand::Kind::Constant && !o->modified()) {
+            constant->constant =
+                static_cast<std::int32_t>(model::wrapToWidth(o->constant.value, 32));
+        } else if (o && (!isDevice(*o) || resolvedAtRunTime(*o))) {
+            error(ins, Tr::tr("%1 takes a register, a 32-bit counter or a constant, not %2")
+                           .arg(ins.spec->mnemonic, describe(*o)));
+        } else if (o) {
+            low = m_layout->word(o->address);
+            if (m_layout->wordBits(o->address) < 32)
+                high = nextWord(ins, i);
+        }
+        m_program->wordLists.push_back(low);
+        m_program->wordLists.push_back(high);
+    };
+    pair(0, &s.x);
+    pair(1, &s.y);
+    const model::Operand *d = operand(ins, 2);
+    if (!d)
+        return;
+    if (!isDevice(*d) || resolvedAtRunTime(*d) || m_layout->wordBits(d->address) >= 32 ||
+        !m_target.area(d->address.area).writable) {
+        error(ins, Tr::tr("%1 writes four registers from %2: give a data register")
+                       .arg(ins.spec->mnemonic, describe(*d)));
+        return;
+    }
+    for (int k = 0; k < 4; ++k) {
+        const int w = m_layout->word(model::offsetAddress(m_target, d->address, k));
+        if (w < 0)
+            error(ins,
+                  trCompiler(QT_TRANSLATE_NOOP("rung::simulator::Compiler",
+                                               "%1 needs the next word too, which does not exist"))
+                      .arg(describe(*d)));
+        m_program->wordLists.push_back(w);
+    }
+    s.width = 16;
+}
+
+void Compiler::compileComm(const model::Instruction &ins, Step &s) {
+    using model::ApplyFunction;
+    CommStep c;
+    c.port = model::instructionPort(ins);
+    c.step = static_cast<std::int32_t>(&s - m_program->steps.data());
+    // The tables, buffers and counts are plain registers: an index register would move a
+    // table the PLC reads in the background, which no example does.
+    for (const model::Operand &o : ins.operands)
+        if (resolvedAtRunTime(o)) {
+            error(ins,
+                  Tr::tr("%1 takes plain registers, not %2").arg(ins.spec->mnemonic, describe(o)));
+            return;
+        }
+    auto word = [&](std::size_t i, std::int32_t *index, std::int32_t *words) {
+        const model::Operand *o = operand(ins, i);
+        if (!o)
+            return;
+        *index = isDevice(*o) ? m_layout->word(o->address) : -1;
+        *words = wordsToAreaEnd(*o);
+        if (*index < 0)
+            error(ins, Tr::tr("%1 is not a word device").arg(describe(*o)));
+    };
+    switch (ins.spec->function) {
+    case ApplyFunction::EasyLink:
+    case ApplyFunction::ModbusMaster:
+        c.kind = ins.spec->function == ApplyFunction::EasyLink ? CommKind::EasyLink
+                                                               : CommKind::ModbusMaster;
+        word(0, &c.first, &c.firstWords);
+        word(1, &c.second, &c.secondWords);
+        break;
+    case ApplyFunction::SerialData:
+        c.kind = CommKind::SerialData;
+        word(0, &c.first, &c.firstWords);
+        c.m = sourceOf(ins, 1);
+        word(2, &c.second, &c.secondWords);
+        c.n = sourceOf(ins, 3);
+        break;
+    case ApplyFunction::ModuleRead:
+    case ApplyFunction::ModuleWrite: {
+        c.kind = ins.spec->function == ApplyFunction::ModuleRead ? CommKind::ModuleRead
+                                                                 : CommKind::ModuleWrite;
+        const model::Operand *m1 = operand(ins, 0);
+        c.module = m1 && m1->kind == model::Operand::Kind::Constant
+                       ? static_cast<std::int32_t>(m1->constant.value)
+                       : 0;
+        c.m = sourceOf(ins, 1);
+        word(2, &c.first, &c.firstWords);
+        c.n = sourceOf(ins, 3);
+        break;
+    }
+    case ApplyFunction::FreePortSend:
+        c.kind = CommKind::FreePortSend;
+        c.n = sourceOf(ins, 1);
+        break;
+    case ApplyFunction::MasterQuery:
+        c.kind = CommKind::MasterQuery;
+        break;
+    default:
+        return;
+    }
+    s.code = Code::Communicate;
+    s.op = static_cast<std::uint8_t>(c.kind);
+    s.slot = static_cast<std::int32_t>(m_program->comms.size());
+    m_program->comms.push_back(std::move(c));
+}
+
+} // namespace rung::simulator::detail
