@@ -15,6 +15,9 @@ struct CliTr {
 struct DiffTr {
     Q_DECLARE_TR_FUNCTIONS(rung::app::Diff)
 };
+struct NetworkTr {
+    Q_DECLARE_TR_FUNCTIONS(rung::app::Network)
+};
 struct OnlineTr {
     Q_DECLARE_TR_FUNCTIONS(rung::app::Online)
 };

@@ -29,6 +29,9 @@ struct LadderTextTr {
 struct PlcopenTr {
     Q_DECLARE_TR_FUNCTIONS(rung::model::Plcopen)
 };
+struct PortConfigTr {
+    Q_DECLARE_TR_FUNCTIONS(rung::model::PortConfig)
+};
 struct PowerFlowTr {
     Q_DECLARE_TR_FUNCTIONS(rung::model::PowerFlow)
 };

@@ -1,4 +1,5 @@
 #include "network/devices.h"
+#include "network/tr.h"
 
 #include <QCoreApplication>
 #include <QJsonArray>
@@ -9,10 +10,6 @@ namespace rung::network {
 
 namespace {
 
-struct Tr {
-    Q_DECLARE_TR_FUNCTIONS(rung::network::Devices)
-};
-
 using namespace comms::modbus;
 
 // A device keeps at most this much of what it received.
@@ -22,18 +19,18 @@ bool readLine(const QJsonObject &o, const QString &where, const char *defaultFra
               model::SerialSettings *line, QString *error) {
     line->baud = o.value(QLatin1String("baud")).toInt(19200);
     if (line->baud < 50 || line->baud > 1000000) {
-        *error = Tr::tr("%1.baud: needs a rate from 50 to 1000000").arg(where);
+        *error = DevicesTr::tr("%1.baud: needs a rate from 50 to 1000000").arg(where);
         return false;
     }
     const QString frame = o.value(QLatin1String("frame")).toString(QLatin1String(defaultFrame));
     if (!model::parseFrameFormat(frame, line)) {
         *error =
-            Tr::tr("%1.frame: \"%2\" is no character format (8N1, 7E1, ...)").arg(where, frame);
+            DevicesTr::tr("%1.frame: \"%2\" is no character format (8N1, 7E1, ...)").arg(where, frame);
         return false;
     }
     const double delay = o.value(QLatin1String("delay")).toDouble(2);
     if (delay < 0 || delay > 60000) {
-        *error = Tr::tr("%1.delay: needs milliseconds from 0 to 60000").arg(where);
+        *error = DevicesTr::tr("%1.delay: needs milliseconds from 0 to 60000").arg(where);
         return false;
     }
     return true;
@@ -42,7 +39,7 @@ bool readLine(const QJsonObject &o, const QString &where, const char *defaultFra
 bool onlyKeys(const QJsonObject &o, const QStringList &keys, const QString &where, QString *error) {
     for (auto it = o.begin(); it != o.end(); ++it)
         if (!keys.contains(it.key())) {
-            *error = Tr::tr("%1.%2: unknown key (this device takes: %3)")
+            *error = DevicesTr::tr("%1.%2: unknown key (this device takes: %3)")
                          .arg(where, it.key(), keys.join(QStringLiteral(", ")));
             return false;
         }
@@ -115,12 +112,12 @@ bool ModbusSlaveDevice::read(const DeviceDescription &d, QString *error) {
     m_delayUs = qint64(o.value(QLatin1String("delay")).toDouble(2) * 1000);
     station = o.value(QLatin1String("station")).toInt(1);
     if (station < 1 || station > 247) {
-        *error = Tr::tr("%1.station: needs a MODBUS station from 1 to 247").arg(d.where);
+        *error = DevicesTr::tr("%1.station: needs a MODBUS station from 1 to 247").arg(d.where);
         return false;
     }
     const QString mode = o.value(QLatin1String("mode")).toString(QStringLiteral("rtu"));
     if (mode != QLatin1String("rtu") && mode != QLatin1String("ascii")) {
-        *error = Tr::tr("%1.mode: needs \"rtu\" or \"ascii\"").arg(d.where);
+        *error = DevicesTr::tr("%1.mode: needs \"rtu\" or \"ascii\"").arg(d.where);
         return false;
     }
     m_framing = mode == QLatin1String("ascii") ? Framing::Ascii : Framing::Rtu;
@@ -134,7 +131,7 @@ bool ModbusSlaveDevice::read(const DeviceDescription &d, QString *error) {
             if (!ok || address < 0 || address > 65535 || v != double(qint64(v)) ||
                 v < (bits ? 0 : -32768) || v > (bits ? 1 : 65535)) {
                 *error =
-                    Tr::tr("%1.%2.%3: needs an address 0..65535 and a value %4")
+                    DevicesTr::tr("%1.%2.%3: needs an address 0..65535 and a value %4")
                         .arg(d.where, QLatin1String(key), it.key(),
                              bits ? QStringLiteral("0 or 1") : QStringLiteral("-32768..65535"));
                 return false;
@@ -279,7 +276,7 @@ bool LineDevice::read(const DeviceDescription &d, QString *error) {
         };
         if (!bytes("expect", "expectText", &answer.expect) ||
             !bytes("reply", "replyText", &answer.reply)) {
-            *error = Tr::tr("%1: needs \"expect\" and \"reply\" as hex bytes (\"02 30 31\"), or "
+            *error = DevicesTr::tr("%1: needs \"expect\" and \"reply\" as hex bytes (\"02 30 31\"), or "
                             "\"expectText\" and \"replyText\" as text (\"\\x02"
                             "01\")")
                          .arg(where);

@@ -7,7 +7,7 @@
 
 #include "network/network.h"
 
-#include "comms/protocol/modbus.h"
+#include "comms/protocol/modbus_slave.h"
 
 #include <map>
 

@@ -1,18 +1,11 @@
 #include "network/engine_image.h"
+#include "network/tr.h"
 
 #include "simulator/command_inbox.h"
 
 #include <QCoreApplication>
 
 namespace rung::network {
-
-namespace {
-
-struct Tr {
-    Q_DECLARE_TR_FUNCTIONS(rung::network::EngineImage)
-};
-
-} // namespace
 
 std::shared_ptr<const model::Snapshot> EngineImage::snapshot() const {
     if (!m_snapshot || m_scans != m_engine->statistics().scans) {
@@ -41,7 +34,7 @@ comms::slave::ImageChange EngineImage::setMode(comms::slave::OperatingMode mode,
     comms::slave::ImageChange change;
     if (mode != comms::slave::OperatingMode::Run && mode != comms::slave::OperatingMode::Monitor) {
         change.status = comms::slave::ImageChange::Status::Refused;
-        change.message = Tr::tr("a station of a network keeps running: it is not stopped from "
+        change.message = EngineImageTr::tr("a station of a network keeps running: it is not stopped from "
                                 "its port");
     }
     return change;

@@ -1,4 +1,5 @@
 #include "network/net_trace.h"
+#include "network/tr.h"
 
 #include "network/station.h"
 
@@ -9,16 +10,12 @@ namespace rung::network {
 
 namespace {
 
-struct Tr {
-    Q_DECLARE_TR_FUNCTIONS(rung::network::Trace)
-};
-
 // "master/D20" -> the station and "D20".
 Station *split(const Network &network, const QString &text, QString *device, QString *error) {
     const qsizetype slash = text.indexOf(QLatin1Char('/'));
     if (slash <= 0) {
         *error =
-            Tr::tr("%1: name a station's device as STATION/DEVICE, e.g. %2/%3")
+            TraceTr::tr("%1: name a station's device as STATION/DEVICE, e.g. %2/%3")
                 .arg(text, network.stations().front()->name(),
                      network.stations().front()->target().areas.front().prefix +
                          QString::number(network.stations().front()->target().areas.front().first));
@@ -29,7 +26,7 @@ Station *split(const Network &network, const QString &text, QString *device, QSt
         QStringList names;
         for (const auto &st : network.stations())
             names << st->name();
-        *error = Tr::tr("%1: no station \"%2\" (the stations: %3)")
+        *error = TraceTr::tr("%1: no station \"%2\" (the stations: %3)")
                      .arg(text, text.left(slash), names.join(QStringLiteral(", ")));
         return nullptr;
     }
@@ -47,8 +44,8 @@ bool parseNetworkTraceOptions(const Network &network, const QStringList &args,
     for (qsizetype i = 0; i < args.size(); ++i) {
         const QString &a = args[i];
         if (i + 1 >= args.size() || !a.startsWith(QLatin1String("--"))) {
-            *error = a.startsWith(QLatin1String("--")) ? Tr::tr("%1 needs a value").arg(a)
-                                                       : Tr::tr("unexpected argument %1").arg(a);
+            *error = a.startsWith(QLatin1String("--")) ? TraceTr::tr("%1 needs a value").arg(a)
+                                                       : TraceTr::tr("unexpected argument %1").arg(a);
             return false;
         }
         const QString v = args[++i];
@@ -58,7 +55,7 @@ bool parseNetworkTraceOptions(const Network &network, const QStringList &args,
             const bool rows = a == QLatin1String("--scans");
             const qint64 most = rows ? simulator::kMaxTraceScans : 1000000000;
             if (!ok || n < 1 || n > most) {
-                *error = Tr::tr("%1 needs a whole number from 1 to %2, not \"%3\"")
+                *error = TraceTr::tr("%1 needs a whole number from 1 to %2, not \"%3\"")
                              .arg(a)
                              .arg(most)
                              .arg(v);
@@ -73,7 +70,7 @@ bool parseNetworkTraceOptions(const Network &network, const QStringList &args,
         } else if (a == QLatin1String("--set")) {
             const auto m = setRe.match(v);
             if (!m.hasMatch()) {
-                *error = Tr::tr("--set needs STATION/DEV=VALUE@SCAN, not \"%1\"").arg(v);
+                *error = TraceTr::tr("--set needs STATION/DEV=VALUE@SCAN, not \"%1\"").arg(v);
                 return false;
             }
             NetStimulus s;
@@ -107,17 +104,17 @@ bool parseNetworkTraceOptions(const Network &network, const QStringList &args,
                 request->columns.push_back(c);
             }
         } else {
-            *error = Tr::tr("unknown option %1").arg(a);
+            *error = TraceTr::tr("unknown option %1").arg(a);
             return false;
         }
     }
     if (!haveRows || request->columns.empty()) {
-        *error = Tr::tr("--scans and --trace are required");
+        *error = TraceTr::tr("--scans and --trace are required");
         return false;
     }
     for (const NetStimulus &s : request->stimuli)
         if (s.stimulus.scan >= request->rows) {
-            *error = Tr::tr("--set at row %1 comes after the last row: %2 rows run, numbered 0 "
+            *error = TraceTr::tr("--set at row %1 comes after the last row: %2 rows run, numbered 0 "
                             "to %3, so it would never apply")
                          .arg(s.stimulus.scan)
                          .arg(request->rows)

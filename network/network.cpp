@@ -1,4 +1,5 @@
 #include "network/network.h"
+#include "network/tr.h"
 
 #include "network/devices.h"
 #include "network/shared_link.h"
@@ -12,10 +13,6 @@
 namespace rung::network {
 
 namespace {
-
-struct Tr {
-    Q_DECLARE_TR_FUNCTIONS(rung::network::Network)
-};
 
 constexpr qint64 kNever = std::numeric_limits<qint64>::max();
 
@@ -77,7 +74,7 @@ std::unique_ptr<Network> Network::build(const NetworkDescription &d, const Progr
             if (!model::readPortConfig(*loaded.target, loaded.model, port, layers, &config, &why))
                 return fail(why);
             if (station->findPort(config.port))
-                return fail(Tr::tr("%1.ports: %2 is named twice").arg(sd.where, config.port));
+                return fail(NetworkTr::tr("%1.ports: %2 is named twice").arg(sd.where, config.port));
             station->addPort(std::move(config));
         }
         net->m_stations.push_back(std::move(station));
@@ -101,7 +98,7 @@ std::unique_ptr<Network> Network::build(const NetworkDescription &d, const Progr
             if (!e && slash > 0) {
                 Station *s = net->station(end.left(slash));
                 if (!s)
-                    return fail(Tr::tr("%1: no station \"%2\"").arg(where, end.left(slash)));
+                    return fail(NetworkTr::tr("%1: no station \"%2\"").arg(where, end.left(slash)));
                 // A port the settings do not name: the port's first application, as a new
                 // PLC has it.
                 model::PortConfig config;
@@ -112,9 +109,9 @@ std::unique_ptr<Network> Network::build(const NetworkDescription &d, const Progr
                 e = s->addPort(std::move(config));
             }
             if (!e)
-                return fail(Tr::tr("%1: no station or device \"%2\"").arg(where, end));
+                return fail(NetworkTr::tr("%1: no station or device \"%2\"").arg(where, end));
             if (e->wire)
-                return fail(Tr::tr("%1: %2 is on wire %3 already; a port has one wire")
+                return fail(NetworkTr::tr("%1: %2 is on wire %3 already; a port has one wire")
                                 .arg(where, e->name, e->wire->name));
             e->wire = wire.get();
             wire->ends.push_back(e);
@@ -127,10 +124,10 @@ std::unique_ptr<Network> Network::build(const NetworkDescription &d, const Progr
             for (const auto &w : net->m_wires)
                 found = found || w->name == f.wire;
             if (!found)
-                return fail(Tr::tr("%1: no wire \"%2\"").arg(f.where, f.wire));
+                return fail(NetworkTr::tr("%1: no wire \"%2\"").arg(f.where, f.wire));
         }
         if (!f.station.isEmpty() && !net->station(f.station) && !net->endpoint(f.station))
-            return fail(Tr::tr("%1: no station or device \"%2\"").arg(f.where, f.station));
+            return fail(NetworkTr::tr("%1: no station or device \"%2\"").arg(f.where, f.station));
     }
     QString why;
     if (!makeSharedLinks(net.get(), &net->m_groups, &why))
@@ -166,12 +163,12 @@ qint64 Network::transmit(Endpoint *from, const QByteArray &sent) {
     from->txEndUs = end;
     TrafficRecord r{start, end, from->wire ? from->wire->name : QString(), from->name, sent, {}};
     if (silent(from->owner, start)) {
-        r.note = Tr::tr("silent (fault): not sent");
+        r.note = NetworkTr::tr("silent (fault): not sent");
         record(r);
         return end;
     }
     if (!from->wire) {
-        r.note = Tr::tr("the port is on no wire");
+        r.note = NetworkTr::tr("the port is on no wire");
         record(r);
         return end;
     }
@@ -183,12 +180,12 @@ qint64 Network::transmit(Endpoint *from, const QByteArray &sent) {
             f.byte < bytes.size()) {
             bytes[f.byte] = char(bytes[f.byte] ^ f.mask);
             r.bytes = bytes;
-            r.note = Tr::tr("byte %1 corrupted (fault): XOR %2h")
+            r.note = NetworkTr::tr("byte %1 corrupted (fault): XOR %2h")
                          .arg(f.byte)
                          .arg(QString::number(f.mask, 16).toUpper());
         }
     if (cut(w, start)) {
-        r.note = Tr::tr("wire cut (fault): not delivered");
+        r.note = NetworkTr::tr("wire cut (fault): not delivered");
         record(r);
         return end;
     }
@@ -199,7 +196,7 @@ qint64 Network::transmit(Endpoint *from, const QByteArray &sent) {
         if (t->sender != from) {
             t->collided = true;
             transmission->collided = true;
-            r.note = Tr::tr("collision with %1: both frames garbled").arg(t->sender->name);
+            r.note = NetworkTr::tr("collision with %1: both frames garbled").arg(t->sender->name);
         }
     w.active.push_back(transmission);
     record(r);

@@ -1,4 +1,5 @@
 #include "network/network_file.h"
+#include "network/tr.h"
 
 #include "model/project/file_read.h"
 
@@ -13,10 +14,6 @@
 namespace rung::network {
 
 namespace {
-
-struct Tr {
-    Q_DECLARE_TR_FUNCTIONS(rung::network::NetworkFile)
-};
 
 // A network file holds names and settings: a few kilobytes. 8 MB, as a listing.
 constexpr qint64 kMaxNetworkBytes = 8 * 1024 * 1024;
@@ -37,7 +34,7 @@ bool validName(const QString &name) {
 bool onlyKeys(const QJsonObject &o, const QStringList &keys, const QString &path, QString *error) {
     for (auto it = o.begin(); it != o.end(); ++it)
         if (!keys.contains(it.key())) {
-            *error = Tr::tr("%1: unknown key (this object takes: %2)")
+            *error = NetworkFileTr::tr("%1: unknown key (this object takes: %2)")
                          .arg(at(path, it.key()), keys.join(QStringLiteral(", ")));
             return false;
         }
@@ -50,8 +47,8 @@ bool string(const QJsonObject &o, const char *key, const QString &path, bool req
     if (v.isUndefined() && !required)
         return true;
     if (!v.isString() || v.toString().isEmpty()) {
-        *error = v.isUndefined() ? Tr::tr("%1: missing").arg(at(path, QLatin1String(key)))
-                                 : Tr::tr("%1: needs a text").arg(at(path, QLatin1String(key)));
+        *error = v.isUndefined() ? NetworkFileTr::tr("%1: missing").arg(at(path, QLatin1String(key)))
+                                 : NetworkFileTr::tr("%1: needs a text").arg(at(path, QLatin1String(key)));
         return false;
     }
     *into = v.toString();
@@ -65,7 +62,7 @@ bool number(const QJsonObject &o, const char *key, const QString &path, qint64 l
         return true;
     const double d = v.toDouble(-1e300);
     if (!v.isDouble() || d != double(qint64(d)) || d < double(lowest) || d > double(highest)) {
-        *error = Tr::tr("%1: needs a whole number from %2 to %3")
+        *error = NetworkFileTr::tr("%1: needs a whole number from %2 to %3")
                      .arg(at(path, QLatin1String(key)))
                      .arg(lowest)
                      .arg(highest);
@@ -80,7 +77,7 @@ bool array(const QJsonObject &o, const char *key, QJsonArray *into, QString *err
     if (v.isUndefined())
         return true;
     if (!v.isArray()) {
-        *error = Tr::tr("%1: needs a list").arg(QLatin1String(key));
+        *error = NetworkFileTr::tr("%1: needs a list").arg(QLatin1String(key));
         return false;
     }
     *into = v.toArray();
@@ -111,7 +108,7 @@ bool parseNetwork(const QByteArray &json, const QString &file, NetworkDescriptio
         const QByteArray before = json.left(offset);
         const qsizetype line = before.count('\n') + 1;
         const qsizetype column = offset - (before.lastIndexOf('\n') + 1) + 1;
-        *error = Tr::tr("%1: line %2, column %3: the file is not valid JSON (%4)")
+        *error = NetworkFileTr::tr("%1: line %2, column %3: the file is not valid JSON (%4)")
                      .arg(file)
                      .arg(line)
                      .arg(column)
@@ -120,7 +117,7 @@ bool parseNetwork(const QByteArray &json, const QString &file, NetworkDescriptio
     }
     if (!doc.isObject()) {
         *error =
-            Tr::tr("%1: a network file is a JSON object with \"stations\" and \"wires\"").arg(file);
+            NetworkFileTr::tr("%1: a network file is a JSON object with \"stations\" and \"wires\"").arg(file);
         return false;
     }
     const QJsonObject root = doc.object();
@@ -143,11 +140,11 @@ bool parseNetwork(const QByteArray &json, const QString &file, NetworkDescriptio
     if (!array(root, "stations", &list, &why))
         return fail(why);
     if (list.isEmpty())
-        return fail(Tr::tr("stations: a network needs at least one station"));
+        return fail(NetworkFileTr::tr("stations: a network needs at least one station"));
     for (qsizetype i = 0; i < list.size(); ++i) {
         const QString where = item(QStringLiteral("stations"), i);
         if (!list[i].isObject())
-            return fail(Tr::tr("%1: needs an object").arg(where));
+            return fail(NetworkFileTr::tr("%1: needs an object").arg(where));
         const QJsonObject o = list[i].toObject();
         StationDescription s;
         s.where = where;
@@ -163,20 +160,20 @@ bool parseNetwork(const QByteArray &json, const QString &file, NetworkDescriptio
             !number(o, "period", where, 1, 1000000, &s.periodMs, &why))
             return fail(why);
         if (!validName(s.name))
-            return fail(Tr::tr("%1: \"%2\" is no name (letters, digits, _ and -, at most 32)")
+            return fail(NetworkFileTr::tr("%1: \"%2\" is no name (letters, digits, _ and -, at most 32)")
                             .arg(at(where, QStringLiteral("name")), s.name));
         if (names.contains(s.name))
-            return fail(Tr::tr("%1: a second \"%2\"; names are unique")
+            return fail(NetworkFileTr::tr("%1: a second \"%2\"; names are unique")
                             .arg(at(where, QStringLiteral("name")), s.name));
         names.insert(s.name);
         const QJsonValue ports = o.value(QLatin1String("ports"));
         if (!ports.isUndefined() && !ports.isObject())
             return fail(
-                Tr::tr("%1: needs an object of ports").arg(at(where, QStringLiteral("ports"))));
+                NetworkFileTr::tr("%1: needs an object of ports").arg(at(where, QStringLiteral("ports"))));
         s.ports = ports.toObject();
         for (auto it = s.ports.begin(); it != s.ports.end(); ++it)
             if (!it.value().isObject())
-                return fail(Tr::tr("%1: needs an object of settings")
+                return fail(NetworkFileTr::tr("%1: needs an object of settings")
                                 .arg(at(at(where, QStringLiteral("ports")), it.key())));
         s.path = dir.filePath(s.program);
         d->stations.push_back(s);
@@ -187,7 +184,7 @@ bool parseNetwork(const QByteArray &json, const QString &file, NetworkDescriptio
     for (qsizetype i = 0; i < list.size(); ++i) {
         const QString where = item(QStringLiteral("devices"), i);
         if (!list[i].isObject())
-            return fail(Tr::tr("%1: needs an object").arg(where));
+            return fail(NetworkFileTr::tr("%1: needs an object").arg(where));
         DeviceDescription v;
         v.where = where;
         v.json = list[i].toObject();
@@ -195,14 +192,14 @@ bool parseNetwork(const QByteArray &json, const QString &file, NetworkDescriptio
             !string(v.json, "kind", where, true, &v.kind, &why))
             return fail(why);
         if (!validName(v.name))
-            return fail(Tr::tr("%1: \"%2\" is no name (letters, digits, _ and -, at most 32)")
+            return fail(NetworkFileTr::tr("%1: \"%2\" is no name (letters, digits, _ and -, at most 32)")
                             .arg(at(where, QStringLiteral("name")), v.name));
         if (names.contains(v.name))
-            return fail(Tr::tr("%1: a second \"%2\"; names are unique")
+            return fail(NetworkFileTr::tr("%1: a second \"%2\"; names are unique")
                             .arg(at(where, QStringLiteral("name")), v.name));
         names.insert(v.name);
         if (v.kind != QLatin1String("modbus-slave") && v.kind != QLatin1String("line"))
-            return fail(Tr::tr("%1: \"%2\" is no kind of device (modbus-slave, line)")
+            return fail(NetworkFileTr::tr("%1: \"%2\" is no kind of device (modbus-slave, line)")
                             .arg(at(where, QStringLiteral("kind")), v.kind));
         d->devices.push_back(v);
     }
@@ -224,17 +221,17 @@ bool parseNetwork(const QByteArray &json, const QString &file, NetworkDescriptio
                 !string(o, "name", where, false, &w.name, &why) || !array(o, "ends", &ends, &why))
                 return fail(why);
         } else {
-            return fail(Tr::tr("%1: needs a list of ends, [\"a/CP2\", \"b/CP2\"]").arg(where));
+            return fail(NetworkFileTr::tr("%1: needs a list of ends, [\"a/CP2\", \"b/CP2\"]").arg(where));
         }
         if (wireNames.contains(w.name))
-            return fail(Tr::tr("%1: a second wire \"%2\"").arg(where, w.name));
+            return fail(NetworkFileTr::tr("%1: a second wire \"%2\"").arg(where, w.name));
         wireNames.insert(w.name);
         if (ends.size() < 2)
-            return fail(Tr::tr("%1: a wire joins at least two ends").arg(where));
+            return fail(NetworkFileTr::tr("%1: a wire joins at least two ends").arg(where));
         for (qsizetype k = 0; k < ends.size(); ++k) {
             if (!ends[k].isString())
                 return fail(
-                    Tr::tr("%1: needs \"STATION/PORT\" or a device's name").arg(item(where, k)));
+                    NetworkFileTr::tr("%1: needs \"STATION/PORT\" or a device's name").arg(item(where, k)));
             w.ends << ends[k].toString();
         }
         d->wires.push_back(w);
@@ -245,7 +242,7 @@ bool parseNetwork(const QByteArray &json, const QString &file, NetworkDescriptio
     for (qsizetype i = 0; i < list.size(); ++i) {
         const QString where = item(QStringLiteral("bridges"), i);
         if (!list[i].isObject())
-            return fail(Tr::tr("%1: needs an object").arg(where));
+            return fail(NetworkFileTr::tr("%1: needs an object").arg(where));
         const QJsonObject o = list[i].toObject();
         BridgeDescription b;
         b.path = where;
@@ -259,7 +256,7 @@ bool parseNetwork(const QByteArray &json, const QString &file, NetworkDescriptio
                           int(o.contains(QLatin1String("serial"))) +
                           int(o.contains(QLatin1String("tcp")));
         if (kinds != 1)
-            return fail(Tr::tr("%1: a bridge goes to one of \"pty\": true, \"serial\": "
+            return fail(NetworkFileTr::tr("%1: a bridge goes to one of \"pty\": true, \"serial\": "
                                "\"/dev/ttyUSB0\", \"tcp\": \"HOST:PORT\"")
                             .arg(where));
         if (o.contains(QLatin1String("pty"))) {
@@ -281,7 +278,7 @@ bool parseNetwork(const QByteArray &json, const QString &file, NetworkDescriptio
     for (qsizetype i = 0; i < list.size(); ++i) {
         const QString where = item(QStringLiteral("faults"), i);
         if (!list[i].isObject())
-            return fail(Tr::tr("%1: needs an object").arg(where));
+            return fail(NetworkFileTr::tr("%1: needs an object").arg(where));
         const QJsonObject o = list[i].toObject();
         FaultDescription f;
         f.where = where;
@@ -303,7 +300,7 @@ bool parseNetwork(const QByteArray &json, const QString &file, NetworkDescriptio
                 !number(o, "to", where, 0, qint64(1) << 40, &f.toMs, &why))
                 return fail(why);
             if (f.toMs >= 0 && f.toMs <= f.fromMs)
-                return fail(Tr::tr("%1: \"to\" comes before \"from\"").arg(where));
+                return fail(NetworkFileTr::tr("%1: \"to\" comes before \"from\"").arg(where));
         } else if (kind == QLatin1String("corrupt")) {
             f.kind = FaultDescription::Kind::Corrupt;
             if (!onlyKeys(o,
@@ -319,7 +316,7 @@ bool parseNetwork(const QByteArray &json, const QString &file, NetworkDescriptio
             f.byte = int(byte);
             f.mask = int(mask);
         } else {
-            return fail(Tr::tr("%1: \"%2\" is no fault (cut, silent, corrupt)")
+            return fail(NetworkFileTr::tr("%1: \"%2\" is no fault (cut, silent, corrupt)")
                             .arg(at(where, QStringLiteral("kind")), kind));
         }
         d->faults.push_back(f);

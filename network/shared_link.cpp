@@ -1,4 +1,5 @@
 #include "network/shared_link.h"
+#include "network/tr.h"
 
 #include "network/station.h"
 
@@ -12,10 +13,6 @@
 namespace rung::network {
 
 namespace {
-
-struct Tr {
-    Q_DECLARE_TR_FUNCTIONS(rung::network::SharedLink)
-};
 
 using model::SystemRole;
 
@@ -183,9 +180,9 @@ public:
                  m_wire->name,
                  m_master ? m_master->port->name : m_members.front().port->name,
                  {},
-                 Tr::tr("CPU Link exchange among %1 (%2 ms); no frames: the "
+                 SharedLinkTr::tr("CPU Link exchange among %1 (%2 ms); no frames: the "
                         "manual does not publish them")
-                     .arg(who.isEmpty() ? Tr::tr("no station") : who.join(QStringLiteral(", ")))
+                     .arg(who.isEmpty() ? SharedLinkTr::tr("no station") : who.join(QStringLiteral(", ")))
                      .arg(cycle)});
         }
         m_next = now + cycle * 1000;
@@ -262,9 +259,9 @@ public:
                  m_wire->name,
                  m_members.front().port->name,
                  {},
-                 ok ? Tr::tr("Parallel Link exchange; no frames: the manual does not publish "
+                 ok ? SharedLinkTr::tr("Parallel Link exchange; no frames: the manual does not publish "
                              "them")
-                    : Tr::tr("Parallel Link: no exchange, the other station does not answer")});
+                    : SharedLinkTr::tr("Parallel Link: no exchange, the other station does not answer")});
         m_next = now + m_cycleUs;
     }
 
@@ -296,14 +293,14 @@ bool makeSharedLinks(Network *network, std::vector<std::unique_ptr<Actor>> *grou
         }
         if (!cpu.empty() && !parallel.empty()) {
             *error =
-                Tr::tr("wire %1: CPU Link and Parallel Link cannot share a wire").arg(wire->name);
+                SharedLinkTr::tr("wire %1: CPU Link and Parallel Link cannot share a wire").arg(wire->name);
             return false;
         }
         if (!cpu.empty()) {
             for (std::size_t i = 0; i < cpu.size(); ++i)
                 for (std::size_t j = i + 1; j < cpu.size(); ++j)
                     if (cpu[i].number == cpu[j].number) {
-                        *error = Tr::tr("wire %1: %2 and %3 are both CPU Link station %4")
+                        *error = SharedLinkTr::tr("wire %1: %2 and %3 are both CPU Link station %4")
                                      .arg(wire->name, cpu[i].port->name, cpu[j].port->name)
                                      .arg(cpu[i].number);
                         return false;
@@ -316,7 +313,7 @@ bool makeSharedLinks(Network *network, std::vector<std::unique_ptr<Actor>> *grou
                 masters += m.port->config().parallelMaster ? 1 : 0;
             if (parallel.size() > 2 || masters != 1) {
                 *error =
-                    Tr::tr("wire %1: Parallel Link joins one master and one slave").arg(wire->name);
+                    SharedLinkTr::tr("wire %1: Parallel Link joins one master and one slave").arg(wire->name);
                 return false;
             }
             groups->push_back(

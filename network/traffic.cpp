@@ -1,19 +1,12 @@
 #include "network/traffic.h"
+#include "network/tr.h"
 
 #include <QCoreApplication>
 
 namespace rung::network {
 
-namespace {
-
-struct Tr {
-    Q_DECLARE_TR_FUNCTIONS(rung::network::Traffic)
-};
-
-} // namespace
-
 QString trafficHeader(const QString &networkFile) {
-    return Tr::tr("# traffic of %1: virtual time (ms), wire, sender, bytes, |as text|, note")
+    return TrafficTr::tr("# traffic of %1: virtual time (ms), wire, sender, bytes, |as text|, note")
         .arg(networkFile);
 }
 

@@ -58,7 +58,7 @@ void Compiler::compileText(const model::Instruction &ins, Step &s) {
             return 0;
         if (o->kind != model::Operand::Kind::Constant || o->modified()) {
             error(ins,
-                  Tr::tr("%1 needs a constant as operand %2").arg(ins.spec->mnemonic).arg(i + 1));
+                  CompilerTr::tr("%1 needs a constant as operand %2").arg(ins.spec->mnemonic).arg(i + 1));
             return 0;
         }
         return static_cast<int>(o->constant.value);
@@ -92,7 +92,7 @@ void Compiler::compileText(const model::Instruction &ins, Step &s) {
         s.bit = systemBit(model::SystemRole::HexDigits);
         // The digits moved are m1 down to m1 - m2 + 1 of S and n down to n - m2 + 1 of D.
         if (!m_muted && (s.count > m1 || s.count > s.slot))
-            error(ins, Tr::tr("%1 moves %2 digits from digit %3 to digit %4: the digits would run "
+            error(ins, CompilerTr::tr("%1 moves %2 digits from digit %3 to digit %4: the digits would run "
                               "below digit 1")
                            .arg(ins.spec->mnemonic)
                            .arg(s.count)
@@ -111,7 +111,7 @@ void Compiler::compileText(const model::Instruction &ins, Step &s) {
             if (m_target.area(a).key == QLatin1String(areaKey))
                 s.x.index = m_layout->word(model::Address{a, k, -1});
         if (s.x.index < 0 && !m_muted)
-            error(ins, Tr::tr("%1 has no variable resistor %2").arg(m_target.displayName).arg(k));
+            error(ins, CompilerTr::tr("%1 has no variable resistor %2").arg(m_target.displayName).arg(k));
         break;
     }
     default:
@@ -132,7 +132,7 @@ void Compiler::compileDoubleDivide(const model::Instruction &ins, Step &s) {
             constant->constant =
                 static_cast<std::int32_t>(model::wrapToWidth(o->constant.value, 32));
         } else if (o && (!isDevice(*o) || resolvedAtRunTime(*o))) {
-            error(ins, Tr::tr("%1 takes a register, a 32-bit counter or a constant, not %2")
+            error(ins, CompilerTr::tr("%1 takes a register, a 32-bit counter or a constant, not %2")
                            .arg(ins.spec->mnemonic, describe(*o)));
         } else if (o) {
             low = m_layout->word(o->address);
@@ -149,7 +149,7 @@ void Compiler::compileDoubleDivide(const model::Instruction &ins, Step &s) {
         return;
     if (!isDevice(*d) || resolvedAtRunTime(*d) || m_layout->wordBits(d->address) >= 32 ||
         !m_target.area(d->address.area).writable) {
-        error(ins, Tr::tr("%1 writes four registers from %2: give a data register")
+        error(ins, CompilerTr::tr("%1 writes four registers from %2: give a data register")
                        .arg(ins.spec->mnemonic, describe(*d)));
         return;
     }
@@ -175,7 +175,7 @@ void Compiler::compileComm(const model::Instruction &ins, Step &s) {
     for (const model::Operand &o : ins.operands)
         if (resolvedAtRunTime(o)) {
             error(ins,
-                  Tr::tr("%1 takes plain registers, not %2").arg(ins.spec->mnemonic, describe(o)));
+                  CompilerTr::tr("%1 takes plain registers, not %2").arg(ins.spec->mnemonic, describe(o)));
             return;
         }
     auto word = [&](std::size_t i, std::int32_t *index, std::int32_t *words) {
@@ -185,7 +185,7 @@ void Compiler::compileComm(const model::Instruction &ins, Step &s) {
         *index = isDevice(*o) ? m_layout->word(o->address) : -1;
         *words = wordsToAreaEnd(*o);
         if (*index < 0)
-            error(ins, Tr::tr("%1 is not a word device").arg(describe(*o)));
+            error(ins, CompilerTr::tr("%1 is not a word device").arg(describe(*o)));
     };
     switch (ins.spec->function) {
     case ApplyFunction::EasyLink:

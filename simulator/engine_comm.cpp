@@ -1,4 +1,5 @@
 #include "engine.h"
+#include "simulator/tr.h"
 
 #include "model/target/address.h"
 
@@ -15,10 +16,6 @@
 namespace rung::simulator {
 
 namespace {
-
-struct Tr {
-    Q_DECLARE_TR_FUNCTIONS(rung::simulator::Engine)
-};
 
 using model::LinkStatus;
 using model::MasterRequest;
@@ -348,11 +345,11 @@ void Engine::serviceMaster(std::size_t task) {
         1 + model::kLinkSetRegisters * sets > c.firstWords) {
         runtimeError(static_cast<std::size_t>(c.step),
                      sets < 1 || sets > model::kLinkMaxSets
-                         ? Tr::tr("operation error: the communication table holds %1 sets; it "
+                         ? EngineTr::tr("operation error: the communication table holds %1 sets; it "
                                   "takes 1 to %2")
                                .arg(sets)
                                .arg(model::kLinkMaxSets)
-                         : Tr::tr("operation error: a table of %1 sets needs %2 registers, past "
+                         : EngineTr::tr("operation error: a table of %1 sets needs %2 registers, past "
                                   "the end of its area")
                                .arg(sets)
                                .arg(1 + model::kLinkSetRegisters * sets));
@@ -406,7 +403,7 @@ void Engine::serviceSerial() {
             // "More than one RS instruction can be programmed but only one may be active at
             // any one time" (B-3-9).
             runtimeError(static_cast<std::size_t>(m_program->comms[k].step),
-                         Tr::tr("operation error: another RS is active; only one may be active "
+                         EngineTr::tr("operation error: another RS is active; only one may be active "
                                 "at a time, this one does nothing"));
             continue;
         }
@@ -443,7 +440,7 @@ void Engine::serviceSerial() {
         const int words = bytes8 ? m : (m + 1) / 2;
         if (m < 0 || m > 256 || words > c.firstWords) {
             runtimeError(static_cast<std::size_t>(c.step),
-                         Tr::tr("operation error: %1 data to send from a block that ends after "
+                         EngineTr::tr("operation error: %1 data to send from a block that ends after "
                                 "%2 words; nothing is sent")
                              .arg(m)
                              .arg(c.firstWords));
@@ -518,7 +515,7 @@ void Engine::serviceSerial() {
     const qsizetype words = bytes8 ? count : (count + 1) / 2;
     if (words > c.secondWords) {
         runtimeError(static_cast<std::size_t>(c.step),
-                     Tr::tr("operation error: %1 data received for a block that ends after %2 "
+                     EngineTr::tr("operation error: %1 data received for a block that ends after %2 "
                             "words; they are not stored")
                          .arg(count)
                          .arg(c.secondWords));

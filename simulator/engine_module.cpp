@@ -1,4 +1,5 @@
 #include "engine.h"
+#include "simulator/tr.h"
 
 #include <QCoreApplication>
 
@@ -10,10 +11,6 @@
 namespace rung::simulator {
 
 namespace {
-
-struct Tr {
-    Q_DECLARE_TR_FUNCTIONS(rung::simulator::Engine)
-};
 
 // B-4-4's buffer memory: #0 .. #30, #1000 .. #1256 (send), #2000 .. #2256 (receive).
 constexpr int kModelId = 7030; // BFM #30: "K7030"
@@ -108,13 +105,13 @@ ModuleState &Engine::module(int number) {
 void Engine::moduleRead(const CommStep &c, std::size_t step, int bfm, int words) {
     ModuleState &m = module(c.module);
     if (!m.attached) {
-        runtimeError(step, Tr::tr("operation error: no special module %1 is connected (in a "
+        runtimeError(step, EngineTr::tr("operation error: no special module %1 is connected (in a "
                                   "network a VB-1COM is the station's port MODULE%1)")
                                .arg(c.module));
         return;
     }
     if (words < 1 || words > c.firstWords || !readable(bfm) || !readable(bfm + words - 1)) {
-        runtimeError(step, Tr::tr("operation error: buffer memory #%1..#%2 of module %3 does not "
+        runtimeError(step, EngineTr::tr("operation error: buffer memory #%1..#%2 of module %3 does not "
                                   "exist or the block runs past its area; nothing is read")
                                .arg(bfm)
                                .arg(bfm + words - 1)
@@ -128,13 +125,13 @@ void Engine::moduleRead(const CommStep &c, std::size_t step, int bfm, int words)
 void Engine::moduleWrite(const CommStep &c, std::size_t step, int bfm, int words) {
     ModuleState &m = module(c.module);
     if (!m.attached) {
-        runtimeError(step, Tr::tr("operation error: no special module %1 is connected (in a "
+        runtimeError(step, EngineTr::tr("operation error: no special module %1 is connected (in a "
                                   "network a VB-1COM is the station's port MODULE%1)")
                                .arg(c.module));
         return;
     }
     if (words < 1 || words > c.firstWords || !writable(bfm) || !writable(bfm + words - 1)) {
-        runtimeError(step, Tr::tr("operation error: buffer memory #%1..#%2 of module %3 cannot "
+        runtimeError(step, EngineTr::tr("operation error: buffer memory #%1..#%2 of module %3 cannot "
                                   "be written (B-4-4 marks it R, or it does not exist); nothing "
                                   "is written")
                                .arg(bfm)

@@ -1,4 +1,5 @@
 #include "engine.h"
+#include "simulator/tr.h"
 
 #include <QCoreApplication>
 
@@ -9,10 +10,6 @@
 namespace rung::simulator {
 
 namespace {
-
-struct Tr {
-    Q_DECLARE_TR_FUNCTIONS(rung::simulator::Engine)
-};
 
 constexpr char kHexDigits[] = "0123456789ABCDEF";
 
@@ -40,7 +37,7 @@ void Engine::toAscii(const Step &s, std::size_t step) {
     const bool bytes = readBit(s.bit);
     const int words = bytes ? s.count : (s.count + 1) / 2;
     if (words > s.y.constant) {
-        runtimeError(step, Tr::tr("operation error: %1 characters need %2 words from the "
+        runtimeError(step, EngineTr::tr("operation error: %1 characters need %2 words from the "
                                   "destination, past the end of its area; the instruction is not "
                                   "executed")
                                .arg(s.count)
@@ -71,7 +68,7 @@ void Engine::fromAscii(const Step &s, std::size_t step) {
     const bool bytes = readBit(s.bit);
     const int words = bytes ? s.count : (s.count + 1) / 2;
     if (s.x.index < 0 || words > s.y.constant) {
-        runtimeError(step, Tr::tr("operation error: %1 characters need %2 words from the "
+        runtimeError(step, EngineTr::tr("operation error: %1 characters need %2 words from the "
                                   "source, past the end of its area; the instruction is not "
                                   "executed")
                                .arg(s.count)
@@ -85,7 +82,7 @@ void Engine::fromAscii(const Step &s, std::size_t step) {
         const std::uint32_t c = (bytes || k % 2 == 0 ? w : w >> 8) & 0xFFu;
         const int digit = hexValue(c);
         if (digit < 0) {
-            runtimeError(step, Tr::tr("operation error: character %1 (%2H) is no hexadecimal "
+            runtimeError(step, EngineTr::tr("operation error: character %1 (%2H) is no hexadecimal "
                                       "digit; the destination is unchanged")
                                    .arg(k + 1)
                                    .arg(QString::number(c, 16).toUpper().rightJustified(2, u'0')));
@@ -110,7 +107,7 @@ void Engine::shiftDigits(const Step &s, std::size_t step) {
     if (!hex) {
         for (const std::int32_t v : {source, target})
             if (v < 0 || v > 9999) {
-                runtimeError(step, Tr::tr("operation error: %1 is no 4-digit BCD value (0..9999; "
+                runtimeError(step, EngineTr::tr("operation error: %1 is no 4-digit BCD value (0..9999; "
                                           "M9168 ON moves hexadecimal digits); the destination "
                                           "is unchanged")
                                        .arg(v));
@@ -147,7 +144,7 @@ void Engine::doubleDivide(const Step &s, std::size_t step) {
     const std::int64_t a = value(w[0], w[1], s.x.constant);
     const std::int64_t b = value(w[2], w[3], s.y.constant);
     if (b == 0) {
-        runtimeError(step, Tr::tr("division by zero; the destination is unchanged"));
+        runtimeError(step, EngineTr::tr("division by zero; the destination is unchanged"));
         return;
     }
     const std::int64_t q = a / b;

@@ -1,4 +1,5 @@
 #include "cli_network.h"
+#include "app/tr.h"
 
 #include "cli_load_program.h"
 
@@ -14,12 +15,8 @@ namespace rung::app {
 
 namespace {
 
-struct Tr {
-    Q_DECLARE_TR_FUNCTIONS(rung::app::Network)
-};
-
 QString usage() {
-    return Tr::tr("usage: rungstudio-cli simulate NET.rungnet --scans N [--period MS] "
+    return NetworkTr::tr("usage: rungstudio-cli simulate NET.rungnet --scans N [--period MS] "
                   "[--set STATION/DEV=VALUE@SCAN]... --trace STATION/DEV[,...] [--traffic FILE]");
 }
 
@@ -44,7 +41,7 @@ network::ProgramLoader cliProgramLoader() {
         err.flush();
         if (status != 0) {
             *error = messages.trimmed() + QLatin1Char('\n') +
-                     Tr::tr("station %1 (%2) does not start").arg(station.name, station.where);
+                     NetworkTr::tr("station %1 (%2) does not start").arg(station.name, station.where);
             return false;
         }
         loaded->program = program.program;
@@ -62,12 +59,12 @@ int runNetworkSimulate(const QString &file, const QStringList &args, QTextStream
     for (qsizetype i = 0; i < args.size(); ++i) {
         if (args[i] == QLatin1String("--traffic")) {
             if (i + 1 >= args.size()) {
-                err << Tr::tr("--traffic needs a file") << '\n' << usage() << '\n';
+                err << NetworkTr::tr("--traffic needs a file") << '\n' << usage() << '\n';
                 return 2;
             }
             trafficFile = args[++i];
         } else if (args[i] == QLatin1String("--target") || args[i] == QLatin1String("--model")) {
-            err << Tr::tr("%1: a network file names each station's PLC").arg(args[i]) << '\n'
+            err << NetworkTr::tr("%1: a network file names each station's PLC").arg(args[i]) << '\n'
                 << usage() << '\n';
             return 2;
         } else {
@@ -96,7 +93,7 @@ int runNetworkSimulate(const QString &file, const QStringList &args, QTextStream
     QTextStream trafficOut(&traffic);
     if (!trafficFile.isEmpty()) {
         if (!traffic.open(QIODevice::WriteOnly | QIODevice::Text)) {
-            err << Tr::tr("cannot write %1: %2").arg(trafficFile, traffic.errorString()) << '\n';
+            err << NetworkTr::tr("cannot write %1: %2").arg(trafficFile, traffic.errorString()) << '\n';
             return 2;
         }
         trafficOut << network::trafficHeader(file) << '\n';
@@ -109,14 +106,14 @@ int runNetworkSimulate(const QString &file, const QStringList &args, QTextStream
     if (!trafficFile.isEmpty()) {
         trafficOut.flush();
         if (!traffic.commit()) {
-            err << Tr::tr("cannot write %1: %2").arg(trafficFile, traffic.errorString()) << '\n';
+            err << NetworkTr::tr("cannot write %1: %2").arg(trafficFile, traffic.errorString()) << '\n';
             return 2;
         }
     }
     // Runtime errors of every station, named by station and line.
     for (const auto &s : net->stations())
         for (const simulator::RuntimeError &e : s->engine().runtimeErrors())
-            err << Tr::tr("%1: line %2: runtime error at step %3: %4")
+            err << NetworkTr::tr("%1: line %2: runtime error at step %3: %4")
                        .arg(s->name())
                        .arg(e.line)
                        .arg(e.instruction)

@@ -5,8 +5,8 @@
 // PL110's COM / EXP (seed 003 4.2.21). The same encoders and decoders as the IDE's driver and
 // the virtual PLC's responders, so the frames on a simulated wire are the product's frames.
 
-#include "comms/protocol/modbus.h"
-#include "comms/protocol/vigor_link.h"
+#include "comms/protocol/modbus_master.h"
+#include "comms/protocol/vigor_link_master.h"
 #include "model/comm/master_protocol.h"
 
 #include <memory>

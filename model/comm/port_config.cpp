@@ -1,4 +1,5 @@
 #include "model/comm/port_config.h"
+#include "model/tr.h"
 
 #include <QCoreApplication>
 #include <QJsonArray>
@@ -6,10 +7,6 @@
 namespace rung::model {
 
 namespace {
-
-struct Tr {
-    Q_DECLARE_TR_FUNCTIONS(rung::model::PortConfig)
-};
 
 QString at(const QString &path, const QString &key) {
     return path.isEmpty() ? key : path + QLatin1Char('.') + key;
@@ -56,7 +53,7 @@ bool readInt(const QJsonObject &o, const char *key, const QString &path, int low
     const double d = v.toDouble(-1e300);
     if (!v.isDouble() || d != static_cast<double>(static_cast<qint64>(d)) || d < lowest ||
         d > highest) {
-        *error = Tr::tr("%1: needs a whole number from %2 to %3")
+        *error = PortConfigTr::tr("%1: needs a whole number from %2 to %3")
                      .arg(at(path, QLatin1String(key)))
                      .arg(lowest)
                      .arg(highest);
@@ -79,7 +76,7 @@ bool readChoice(const QJsonObject &o, const char *key, const QString &path, cons
         *into = false;
         return true;
     }
-    *error = Tr::tr("%1: needs \"%2\" or \"%3\"")
+    *error = PortConfigTr::tr("%1: needs \"%2\" or \"%3\"")
                  .arg(at(path, QLatin1String(key)), QLatin1String(yes), QLatin1String(no));
     return false;
 }
@@ -118,14 +115,14 @@ bool readPortConfig(const Target &target, const ModelVariant *model, const QStri
             if (p.on(modelName))
                 names << p.name;
         *error = names.isEmpty()
-                     ? Tr::tr("%1: %2 has no serial port a network can use")
+                     ? PortConfigTr::tr("%1: %2 has no serial port a network can use")
                            .arg(where, target.displayName)
-                     : Tr::tr("%1: %2 has no port %3 (its ports: %4)")
+                     : PortConfigTr::tr("%1: %2 has no port %3 (its ports: %4)")
                            .arg(where, target.displayName, port, names.join(QStringLiteral(", ")));
         return false;
     }
     if (!spec->on(modelName)) {
-        *error = Tr::tr("%1: the %2 %3 has no port %4")
+        *error = PortConfigTr::tr("%1: the %2 %3 has no port %4")
                      .arg(where, target.displayName, modelName, spec->name);
         return false;
     }
@@ -138,7 +135,7 @@ bool readPortConfig(const Target &target, const ModelVariant *model, const QStri
         if (v.isUndefined())
             continue;
         if (!v.isString()) {
-            *error = Tr::tr("%1: needs the name of an application")
+            *error = PortConfigTr::tr("%1: needs the name of an application")
                          .arg(at(layer.path, QStringLiteral("application")));
             return false;
         }
@@ -147,13 +144,13 @@ bool readPortConfig(const Target &target, const ModelVariant *model, const QStri
     }
     const PortApplication *app = id.isEmpty() ? &spec->applications.front() : spec->application(id);
     if (!app) {
-        *error = Tr::tr("%1: %2 is no application of %3 (%4)")
+        *error = PortConfigTr::tr("%1: %2 is no application of %3 (%4)")
                      .arg(at(applicationPath, QStringLiteral("application")), id, spec->name,
                           applicationIds(*spec, model));
         return false;
     }
     if (!applicationOn(*app, modelName)) {
-        *error = Tr::tr("%1: the %2 %3 has no %4 on %5 (it has: %6)")
+        *error = PortConfigTr::tr("%1: the %2 %3 has no %4 on %5 (it has: %6)")
                      .arg(at(applicationPath, QStringLiteral("application")), target.displayName,
                           modelName, QCoreApplication::translate("rung::model::Target", app->name),
                           spec->name, applicationIds(*spec, model));
@@ -168,7 +165,7 @@ bool readPortConfig(const Target &target, const ModelVariant *model, const QStri
         const QJsonObject &o = layer.json;
         for (auto it = o.begin(); it != o.end(); ++it)
             if (!keyBelongs(it.key(), *app)) {
-                *error = Tr::tr("%1: %2 takes no setting \"%3\"")
+                *error = PortConfigTr::tr("%1: %2 takes no setting \"%3\"")
                              .arg(at(layer.path, it.key()),
                                   QCoreApplication::translate("rung::model::Target", app->name),
                                   it.key());
@@ -181,7 +178,7 @@ bool readPortConfig(const Target &target, const ModelVariant *model, const QStri
         if (!baud.isUndefined()) {
             const int b = baud.toInt(-1);
             if (std::find(app->bauds.begin(), app->bauds.end(), b) == app->bauds.end()) {
-                *error = Tr::tr("%1: %2 is not a rate of %3 (%4)")
+                *error = PortConfigTr::tr("%1: %2 is not a rate of %3 (%4)")
                              .arg(at(layer.path, QStringLiteral("baud")),
                                   baud.isDouble() ? QString::number(baud.toDouble())
                                                   : baud.toVariant().toString(),
@@ -195,13 +192,13 @@ bool readPortConfig(const Target &target, const ModelVariant *model, const QStri
         if (!frame.isUndefined()) {
             SerialSettings line = config->line;
             if (!frame.isString() || !parseFrameFormat(frame.toString(), &line)) {
-                *error = Tr::tr("%1: \"%2\" is no character format (data bits 7 or 8, parity N, "
+                *error = PortConfigTr::tr("%1: \"%2\" is no character format (data bits 7 or 8, parity N, "
                                 "E or O, stop bits 1 or 2: 8N1, 7E1)")
                              .arg(at(layer.path, QStringLiteral("frame")), frame.toString());
                 return false;
             }
             if (app->fixedFrame && !line.sameLine(config->line)) {
-                *error = Tr::tr("%1: %2 always uses %3")
+                *error = PortConfigTr::tr("%1: %2 always uses %3")
                              .arg(at(layer.path, QStringLiteral("frame")),
                                   QCoreApplication::translate("rung::model::Target", app->name),
                                   QLatin1String(app->frame));
@@ -228,7 +225,7 @@ bool checkPortsJson(const Target &target, const ModelVariant *model, const QJson
     for (auto it = ports.begin(); it != ports.end(); ++it) {
         const QString where = at(path, it.key());
         if (!it.value().isObject()) {
-            *error = Tr::tr("%1: needs an object of settings").arg(where);
+            *error = PortConfigTr::tr("%1: needs an object of settings").arg(where);
             return false;
         }
         PortConfig config;

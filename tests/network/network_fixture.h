@@ -58,7 +58,7 @@ inline ProgramLoader listingLoader(std::map<QString, QString> programs = {}) {
     };
 }
 
-struct Run {
+struct NetRun {
     std::unique_ptr<Network> net;
     QString error;
     QString trace;
@@ -68,9 +68,9 @@ struct Run {
 
 // Builds the network from its JSON (or reads `file` when json is empty) and, when args are
 // given, runs a trace with them; the traffic is recorded from the start.
-inline Run runNetwork(const QByteArray &json, const std::map<QString, QString> &programs,
+inline NetRun runNetwork(const QByteArray &json, const std::map<QString, QString> &programs,
                       const QStringList &args = {}, const QString &file = QStringLiteral("t.rungnet")) {
-    Run r;
+    NetRun r;
     NetworkDescription d;
     const bool read = json.isEmpty() ? readNetworkFile(file, &d, &r.error)
                                      : parseNetwork(json, file, &d, &r.error);

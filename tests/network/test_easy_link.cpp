@@ -4,7 +4,7 @@
 
 #include "network_fixture.h"
 
-#include "comms/protocol/vigor_link.h"
+#include "comms/protocol/vigor_link_master.h"
 
 using namespace rung;
 using namespace rung::network;
@@ -32,7 +32,7 @@ QByteArray easyLink(const QString &faults = QString(), int s5Baud = 19200) {
         .toUtf8();
 }
 
-Run easyLinkRun(const QString &faults = QString(), int s5Baud = 19200, int rows = 60) {
+NetRun easyLinkRun(const QString &faults = QString(), int s5Baud = 19200, int rows = 60) {
     return runNetwork(easyLink(faults, s5Baud), {},
                       {QStringLiteral("--scans"), QString::number(rows), QStringLiteral("--set"),
                        QStringLiteral("s5/D10=123@0"), QStringLiteral("--set"),
@@ -59,7 +59,7 @@ std::vector<int> column(const QString &trace, int k) {
 // Set 1 reads D10..D19 of station 5 into D0..D9; set 2 writes M0..M29 to M100..M129 of
 // station 2; M9199 is ON for one scan each time both have run.
 TEST(EasyLink, TheManualsExampleReadsAndWritesItsTwoSets) {
-    const Run r = easyLinkRun();
+    const NetRun r = easyLinkRun();
     ASSERT_TRUE(r.net) << r.error.toStdString();
     ASSERT_TRUE(r.error.isEmpty()) << r.error.toStdString();
     EXPECT_EQ(value(*r.net, QStringLiteral("master"), QStringLiteral("D0")), 123);
@@ -74,8 +74,9 @@ TEST(EasyLink, TheManualsExampleReadsAndWritesItsTwoSets) {
     int pulses = 0;
     for (std::size_t k = 0; k < done.size(); ++k) {
         pulses += done[k];
-        if (k > 0)
+        if (k > 0) {
             EXPECT_FALSE(done[k] && done[k - 1]) << "row " << k;
+        }
     }
     EXPECT_GE(pulses, 2);
     // The first frame is the Computer Link read the product's codec makes: station 5, 51h,
@@ -95,12 +96,12 @@ TEST(EasyLink, TheManualsExampleReadsAndWritesItsTwoSets) {
 // Bits that start inside a link byte go one by one (70h / 71h), whole bytes with 61h: no
 // other bit of the slave is written (M96..M99 and M130.. stay as the slave has them).
 TEST(EasyLink, BitsOutsideTheSetAreNotTouched) {
-    Run r = runNetwork(easyLink(), {}, {}, kDir + QStringLiteral("test.rungnet"));
+    NetRun r = runNetwork(easyLink(), {}, {}, kDir + QStringLiteral("test.rungnet"));
     ASSERT_TRUE(r.net) << r.error.toStdString();
     Station *s2 = r.net->station(QStringLiteral("s2"));
     for (const char *d : {"M99", "M130", "M131"})
         s2->engine().setBit(std::get<model::Address>(model::parseAddress(s2->target(),
-                                                                         QLatin1String(d))),
+                                                                         QString::fromLatin1(d))),
                             true);
     r.net->runUntil(400'000);
     EXPECT_TRUE(bit(*r.net, QStringLiteral("s2"), QStringLiteral("M99")));
@@ -122,7 +123,7 @@ TEST(EasyLink, BitsOutsideTheSetAreNotTouched) {
 // status A and the station in S2's lower byte; the table still completes (M9199) and the
 // simulation goes on.
 TEST(EasyLink, ACutWireShowsNoResponseA) {
-    const Run r = easyLinkRun(QStringLiteral(R"({"kind": "cut", "wire": "w1", "from": 0})"));
+    const NetRun r = easyLinkRun(QStringLiteral(R"({"kind": "cut", "wire": "w1", "from": 0})"));
     ASSERT_TRUE(r.net) << r.error.toStdString();
     const std::vector<int> status = column(r.trace, 5);
     EXPECT_EQ(status[5], 0);      // before the first time-out (100 ms after the request)
@@ -138,7 +139,7 @@ TEST(EasyLink, ACutWireShowsNoResponseA) {
 // A silent station: its set times out (A, station 5), the other set runs; S2 keeps the error
 // until a whole table runs clean, and shows 0 again once the station is back.
 TEST(EasyLink, ASilentStationShowsAAndTheOthersRun) {
-    const Run r =
+    const NetRun r =
         easyLinkRun(QStringLiteral(R"({"kind": "silent", "station": "s5", "from": 0, "to": 300})"),
                     19200, 80);
     ASSERT_TRUE(r.net) << r.error.toStdString();
@@ -152,7 +153,7 @@ TEST(EasyLink, ASilentStationShowsAAndTheOthersRun) {
 // A corrupted byte in the request: the slave answers with its sum error (11h), which is an
 // abnormal communication, status B.
 TEST(EasyLink, ACorruptedByteShowsAbnormalB) {
-    const Run r = easyLinkRun(
+    const NetRun r = easyLinkRun(
         QStringLiteral(R"({"kind": "corrupt", "wire": "w1", "frame": 0, "byte": 3, "xor": 1})"),
         19200, 10);
     ASSERT_TRUE(r.net) << r.error.toStdString();
@@ -164,7 +165,7 @@ TEST(EasyLink, ACorruptedByteShowsAbnormalB) {
 
 // Station 5 at 9600 bps on a 19200 bps line reads other characters: it never answers (A).
 TEST(EasyLink, AMismatchedBaudRateShowsA) {
-    const Run r = easyLinkRun(QString(), 9600, 20);
+    const NetRun r = easyLinkRun(QString(), 9600, 20);
     ASSERT_TRUE(r.net) << r.error.toStdString();
     EXPECT_EQ(column(r.trace, 5)[15], 0x0A05);
 }
@@ -172,7 +173,7 @@ TEST(EasyLink, AMismatchedBaudRateShowsA) {
 // A wrong table: a device type the manual does not list is status 4, found before anything
 // is sent; the other set still runs.
 TEST(EasyLink, AWrongDeviceTypeShowsStatus4) {
-    Run r = runNetwork(easyLink(), {},
+    NetRun r = runNetwork(easyLink(), {},
                        {QStringLiteral("--scans"), QStringLiteral("30"), QStringLiteral("--set"),
                         QStringLiteral("master/D1006=7@1"), QStringLiteral("--trace"),
                         QStringLiteral("hex:master/D100")},

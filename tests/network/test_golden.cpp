@@ -34,14 +34,14 @@ TEST(NetworkGolden, EveryExampleRunsAsRecorded) {
         ASSERT_GE(lines.size(), 2);
         const QString file = QStringLiteral(RUNG_SOURCE_DIR "/") + lines[0].trimmed();
         const QStringList args = QProcess::splitCommand(lines[1]);
-        const Run first = runNetwork({}, {}, args, file);
+        const NetRun first = runNetwork({}, {}, args, file);
         ASSERT_TRUE(first.net) << first.error.toStdString();
         ASSERT_TRUE(first.error.isEmpty()) << first.error.toStdString();
         const QString stem = kData + QFileInfo(name).completeBaseName();
         EXPECT_EQ(first.trace.toStdString(), readText(stem + QStringLiteral(".csv")).toStdString());
         EXPECT_EQ(first.traffic.toStdString(),
                   readText(stem + QStringLiteral(".traffic")).toStdString());
-        const Run second = runNetwork({}, {}, args, file);
+        const NetRun second = runNetwork({}, {}, args, file);
         EXPECT_EQ(first.trace, second.trace);
         EXPECT_EQ(first.traffic, second.traffic);
     }

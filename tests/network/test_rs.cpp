@@ -20,7 +20,7 @@ QByteArray readFrame() {
 } // namespace
 
 TEST(NonProtocol, TheManualsExampleSendsItsFramesAndChecksTheReplies) {
-    const Run r = runNetwork({}, {},
+    const NetRun r = runNetwork({}, {},
                              {QStringLiteral("--scans"), QStringLiteral("60"),
                               QStringLiteral("--set"), QStringLiteral("left/VR1=120@0"),
                               QStringLiteral("--set"), QStringLiteral("right/VR1=77@0"),
@@ -90,13 +90,13 @@ const char *kRs = "; target: vigor\n"
                   "LD M9000\nRS D0 D200 D100 D201\n"
                   "END\n";
 
-Run rsRun(const QString &port, const QString &device, bool bytes8, int count, int receive) {
-    Run r = runNetwork(rsNetwork(port, device), {{QStringLiteral("rs.il"), QString::fromLatin1(kRs)}});
+NetRun rsRun(const QString &port, const QString &device, bool bytes8, int count, int receive) {
+    NetRun r = runNetwork(rsNetwork(port, device), {{QStringLiteral("rs.il"), QString::fromLatin1(kRs)}});
     if (!r.net)
         return r;
     Station *s = r.net->station(QStringLiteral("plc"));
     auto at = [&](const char *d) {
-        return std::get<model::Address>(model::parseAddress(s->target(), QLatin1String(d)));
+        return std::get<model::Address>(model::parseAddress(s->target(), QString::fromLatin1(d)));
     };
     s->engine().setBit(at("M9161"), bytes8);
     s->engine().writeWord(at("D0"), bytes8 ? 'A' : ('B' << 8 | 'A'));
@@ -118,7 +118,7 @@ const QString kPort = QStringLiteral(R"({"application": "non-protocol", "baud": 
 // 8-bit mode (M9161 ON): a byte a word, the low one; reception ends with n bytes, M9123 ON and
 // D9123 their count; M9122 goes OFF when the last byte has left.
 TEST(NonProtocol, EightBitModeSendsLowBytesAndReceivesNBytes) {
-    const Run r = rsRun(kPort, kLine, true, 2, 3);
+    const NetRun r = rsRun(kPort, kLine, true, 2, 3);
     ASSERT_TRUE(r.net) << r.error.toStdString();
     ASSERT_FALSE(r.records.empty());
     EXPECT_EQ(r.records[0].bytes, QByteArray("AB"));
@@ -134,7 +134,7 @@ TEST(NonProtocol, EightBitModeSendsLowBytesAndReceivesNBytes) {
 // 16-bit mode: both bytes of a word, low first, m and n counting bytes; fewer bytes than n
 // end with the time-out (D9129 = 0: 100 ms after the last one), M9129 and M9123 ON.
 TEST(NonProtocol, SixteenBitModeAndTheTimeOut) {
-    const Run r = rsRun(kPort, kLine, false, 2, 10);
+    const NetRun r = rsRun(kPort, kLine, false, 2, 10);
     ASSERT_TRUE(r.net) << r.error.toStdString();
     EXPECT_EQ(r.records[0].bytes, QByteArray("AB"));
     EXPECT_TRUE(bit(*r.net, QStringLiteral("plc"), QStringLiteral("M9129")));
@@ -147,7 +147,7 @@ TEST(NonProtocol, SixteenBitModeAndTheTimeOut) {
 // The port's start and end characters ("Start Char", "End Char"): added when sending, and the
 // end character ends reception without being stored.
 TEST(NonProtocol, StartAndEndCharacters) {
-    const Run r = rsRun(QStringLiteral(R"({"application": "non-protocol", "baud": 19200,
+    const NetRun r = rsRun(QStringLiteral(R"({"application": "non-protocol", "baud": 19200,
                                          "frame": "7E1", "start": 2, "end": 13})"),
                         QStringLiteral(R"({"name": "dev", "kind": "line", "baud": 19200,
                             "frame": "7E1", "answers": [{"expect": "02 41 42 0D",
@@ -164,7 +164,7 @@ TEST(NonProtocol, StartAndEndCharacters) {
 // A device at another format (8N1 against the port's 7E1) sends characters the port reads
 // with parity errors: M9063 and D9063 say so.
 TEST(NonProtocol, AWrongFormatShowsACommunicationError) {
-    const Run r = rsRun(kPort,
+    const NetRun r = rsRun(kPort,
                         QStringLiteral(R"({"name": "dev", "kind": "line", "baud": 19200,
                             "frame": "8N1", "answers": [{"expect": "41 42",
                             "reply": "CF 4B 0D"}]})"),

@@ -15,7 +15,7 @@ namespace {
 model::SerialSettings line(int baud, const char *frame) {
     model::SerialSettings s;
     s.baud = baud;
-    model::parseFrameFormat(QLatin1String(frame), &s);
+    model::parseFrameFormat(QString::fromLatin1(frame), &s);
     return s;
 }
 
@@ -90,7 +90,7 @@ TEST(NetworkFile, PortSettingsAreCheckedAgainstTheTargetsTables) {
                                     .arg(QLatin1String(ports[0] == 'H' ? "VH" : "VB"),
                                          QLatin1String(ports + 1))
                                     .toUtf8();
-        const Run r = runNetwork(json, {{QStringLiteral("p.il"), QStringLiteral("; target: vigor\nEND\n")}});
+        const NetRun r = runNetwork(json, {{QStringLiteral("p.il"), QStringLiteral("; target: vigor\nEND\n")}});
         return r.error.toStdString();
     };
     EXPECT_EQ(build(R"(B{"CP2": {"application": "easy-link", "baud": 12345}})"),
@@ -115,7 +115,7 @@ TEST(NetworkFile, PortSettingsAreCheckedAgainstTheTargetsTables) {
 // the traffic says so.
 TEST(Wire, ACollisionGarblesBothFrames) {
     const char *sender = "; target: vigor\nLD M9002\nSET M9122\nLD M9000\nRS D0 K2 D100 K2\nEND\n";
-    Run r = runNetwork(R"({"stations": [
+    NetRun r = runNetwork(R"({"stations": [
             {"name": "a", "program": "s.il", "ports": {"CP2": {"application": "non-protocol"}}},
             {"name": "b", "program": "s.il", "ports": {"CP2": {"application": "non-protocol"}}}],
         "devices": [{"name": "dev", "kind": "line", "frame": "7E1"}],
