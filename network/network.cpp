@@ -8,6 +8,7 @@
 
 #include <QCoreApplication>
 
+#include <algorithm>
 #include <limits>
 
 namespace rung::network {
@@ -135,6 +136,30 @@ std::unique_ptr<Network> Network::build(const NetworkDescription &d, const Progr
     for (const auto &g : net->m_groups)
         net->m_actors.push_back(g.get());
     for (const auto &s : net->m_stations) {
+        // An instruction on a port that runs another application would speak the wrong
+        // protocol (LINK's Computer Link frames on a MODBUS port): the station does not start.
+        const simulator::Program &program = s->engine().program();
+        for (const simulator::CommStep &c : program.comms) {
+            const StationPort *port = s->findPort(c.port);
+            if (!port || !c.spec || c.spec->portApplications.empty())
+                continue;
+            const char *id = port->config().application->id;
+            const auto &allowed = c.spec->portApplications;
+            if (std::none_of(allowed.begin(), allowed.end(),
+                             [id](const char *a) { return qstrcmp(a, id) == 0; })) {
+                QStringList names;
+                for (const char *a : allowed)
+                    names << QString::fromLatin1(a);
+                //: %1 station, %2 line, %3 instruction (LINK), %4 port (CP2), %5 what it runs, %6 the
+                //: applications %3 takes
+                return fail(NetworkTr::tr("%1: line %2: %3 drives %4, which runs %5; %3 needs "
+                                          "%6")
+                                .arg(s->name())
+                                .arg(program.lines[std::size_t(c.step)])
+                                .arg(c.spec->mnemonic, port->name,
+                                     QString::fromLatin1(id), names.join(QStringLiteral(" / "))));
+            }
+        }
         s->start();
         net->m_actors.push_back(s.get());
     }

@@ -14,6 +14,9 @@ struct DevicesTr {
 struct EngineImageTr {
     Q_DECLARE_TR_FUNCTIONS(rung::network::EngineImage)
 };
+struct NetworkCheckTr {
+    Q_DECLARE_TR_FUNCTIONS(rung::network::NetworkCheck)
+};
 struct NetworkFileTr {
     Q_DECLARE_TR_FUNCTIONS(rung::network::NetworkFile)
 };

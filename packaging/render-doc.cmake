@@ -7,7 +7,10 @@ execute_process(COMMAND ${CMARK} --extension table --extension autolink --to htm
 if(NOT status EQUAL 0)
     message(FATAL_ERROR "${CMARK} could not render ${IN}")
 endif()
-string(REGEX REPLACE "href=\"([A-Za-z0-9_-]+)\\.md(#[^\"]*)?\"" "href=\"\\1.html\\2\"" body "${body}")
+# Two passes: CMake refuses a replacement naming a group that did not take part in the match
+# (a link without an anchor).
+string(REGEX REPLACE "href=\"([A-Za-z0-9_-]+)\\.md#" "href=\"\\1.html#" body "${body}")
+string(REGEX REPLACE "href=\"([A-Za-z0-9_-]+)\\.md\"" "href=\"\\1.html\"" body "${body}")
 file(STRINGS ${IN} first LIMIT_COUNT 1)
 string(REGEX REPLACE "^#+ *" "" title "${first}")
 file(WRITE ${OUT} "<!DOCTYPE html>

@@ -24,7 +24,7 @@ struct MasterFrame {
     int firstBit = 0;                // the reply's bit (across its units) of bits[0]
 };
 
-// A VB-1COM module's buffer memory and what it is doing (seed 001 B-4-4).
+// A VB-1COM module's buffer memory and what it is doing (Vigor M/VB/VH communication manual, B-4-4).
 struct ModuleState {
     std::vector<std::int32_t> bfm; // #0 .. #2256
     bool attached = false;         // the port is in the network
@@ -56,7 +56,7 @@ struct CommTask {
 struct CommState {
     std::vector<CommTask> tasks;
     bool cycleDone = false; // M9199 was turned ON at the last END
-    // RS (one active at a time, seed 001 B-3-9)
+    // RS (one active at a time, Vigor M/VB/VH communication manual, B-3-9)
     int serial = -1; // the RS that was ON in the last scan, -1 none
     bool sending = false;
     bool started = false;

@@ -4,7 +4,7 @@
 
 #include <variant>
 
-// The instructions of seed 001's communication programs: the ones that build and read frames
+// The instructions of the Vigor M/VB/VH communication manual's communication programs: the ones that build and read frames
 // (SWAP, ASCI, HEX, SMOV, VRRD, DDIV) and the ones that drive a port (LINK, MBUS, RS, FROM / TO;
 // PL110 SEND, COM / EXP). docs/simulator.md and docs/network.md say what each does.
 
@@ -169,6 +169,7 @@ void Compiler::compileComm(const model::Instruction &ins, Step &s) {
     using model::ApplyFunction;
     CommStep c;
     c.port = model::instructionPort(ins);
+    c.spec = ins.spec;
     c.step = static_cast<std::int32_t>(&s - m_program->steps.data());
     // The tables, buffers and counts are plain registers: an index register would move a
     // table the PLC reads in the background, which no example does.

@@ -319,7 +319,7 @@ private:
     void shiftDigits(const Step &s, std::size_t step);
     void doubleDivide(const Step &s, std::size_t step);
     // engine_comm.cpp: a communication instruction in the scan (every scan, ON or OFF), and
-    // the communication work after the user program (seed 001 B-3-4: "after the PLC completes
+    // the communication work after the user program (Vigor M/VB/VH communication manual, B-3-4: "after the PLC completes
     // the user program").
     void communicate(const Step &s, std::size_t step, bool on);
     void serviceComms();

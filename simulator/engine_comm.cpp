@@ -8,7 +8,7 @@
 #include <algorithm>
 
 // The communication instructions (docs/network.md): LINK and MBUS work through their table,
-// RS sends and receives, after the user program (seed 001 B-3-4: "nearly all" modes "do their
+// RS sends and receives, after the user program (Vigor M/VB/VH communication manual, B-3-4: "nearly all" modes "do their
 // communication work after the PLC completes the user program"). The bytes go through the
 // station's ports (model/comm/plc_port.h) and the protocols through comms' codecs behind
 // model::MasterProtocol; the engine knows neither the network nor comms.
@@ -23,7 +23,8 @@ using model::MasterStatus;
 using model::ProtocolSpace;
 
 // FX numbers a character received with a parity, overrun or framing error 6301 in D8063; the
-// Vigor's M9063 / D9063 are the FX's M8063 / D8063 renumbered, and seed 001 lists no codes.
+// Vigor's M9063 / D9063 are the FX's M8063 / D8063 renumbered, and the Vigor M/VB/VH
+// communication manual lists no codes.
 constexpr std::int32_t kCharacterError = 6301;
 
 } // namespace

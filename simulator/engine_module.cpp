@@ -3,7 +3,7 @@
 
 #include <QCoreApplication>
 
-// The VB-1COM serial module (seed 001 B-4): its buffer memory (BFM) as FROM / TO reach it, and
+// The VB-1COM serial module (Vigor M/VB/VH communication manual, B-4): its buffer memory (BFM) as FROM / TO reach it, and
 // what the module does with its port when the program sets the command bits of BFM #1. The
 // module is the station's port MODULEn in a network (docs/network.md); without one FROM / TO
 // name a module that is not there.

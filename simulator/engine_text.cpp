@@ -3,7 +3,7 @@
 
 #include <QCoreApplication>
 
-// The Vigor instructions seed 001's communication programs build and read frames with (SWAP,
+// The Vigor instructions the Vigor M/VB/VH communication manual's communication programs build and read frames with (SWAP,
 // ASCI, HEX, SMOV) and DDIV, which its MBUS example scales with. The manual defines them by
 // those programs only; docs/simulator.md gives each reading and what it rests on.
 
@@ -23,7 +23,7 @@ int hexValue(std::uint32_t c) {
 
 } // namespace
 
-// SWAP D (FNC 147): "the high and low bytes of D" exchanged; seed 001 B-3-9 swaps the value a
+// SWAP D (FNC 147): "the high and low bytes of D" exchanged; Vigor M/VB/VH communication manual, B-3-9 swaps the value a
 // Computer Link reply carries low byte first.
 void Engine::swapBytes(const Step &s) {
     const auto v = static_cast<std::uint32_t>(m_words[static_cast<std::size_t>(s.dest)]);
@@ -95,7 +95,7 @@ void Engine::fromAscii(const Step &s, std::size_t step) {
 
 // SMOV S m1 m2 D n: the m2 digits of S from digit m1 down go to D from digit n down; D's
 // other digits stay. Digits are BCD (S and D 0..9999, the FX rule) unless M9168 is ON, when
-// they are hexadecimal: seed 001 B-4-5, SMOV D55 K2 K2 D110 K4 puts the low byte of D55
+// they are hexadecimal: Vigor M/VB/VH communication manual, B-4-5, SMOV D55 K2 K2 D110 K4 puts the low byte of D55
 // into the high byte of D110.
 void Engine::shiftDigits(const Step &s, std::size_t step) {
     const bool hex = readBit(s.bit);

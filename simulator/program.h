@@ -256,6 +256,9 @@ struct CommStep {
     CommKind kind = CommKind::EasyLink;
     QString port;             // the port it drives (Target::ports)
     std::int32_t step = 0;    // its instruction
+    // Its table entry: the mnemonic and the applications its port must run (the network's
+    // wiring and check read them).
+    const model::InstructionSpec *spec = nullptr;
     std::int32_t first = -1;  // LINK / MBUS S1, RS S, FROM D, TO S, COM's area
     std::int32_t second = -1; // LINK / MBUS S2 (4 words), RS D
     // Words from first / second to the end of their area: a block must stay inside.

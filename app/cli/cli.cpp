@@ -1,6 +1,7 @@
 #include "cli.h"
 
 #include "cli_common.h"
+#include "cli_network.h"
 #include "cli_diff.h"
 #include "cli_online.h"
 #include "cli_plcopen.h"
@@ -42,13 +43,17 @@ QString usage() {
                      "--lang en|hu|it: the language of the messages (else the locale's, LANG).\n"
                      "Exit status: 0 no error, 1 the program has errors, 2 usage or I/O error.")
                .arg(model::targetIds().join(QLatin1Char('|'))) +
-           QLatin1Char('\n') + diffUsage() + QLatin1Char('\n') + showUsage() + QLatin1Char('\n') +
+           QLatin1Char('\n') + networkUsage() + QLatin1Char('\n') + diffUsage() + QLatin1Char('\n') + showUsage() + QLatin1Char('\n') +
            testUsage() + QLatin1Char('\n') + onlineUsage() + QLatin1Char('\n') + recordUsage() +
            QLatin1Char('\n') + terminalUsage() + QLatin1Char('\n') +
            QStringLiteral("  rungstudio-cli --help | --version");
 }
 
 int check(const QStringList &args, QTextStream &out, QTextStream &err) {
+    // A network (docs/network.md): every station's program, then the wiring.
+    for (qsizetype i = 0; i < args.size(); ++i)
+        if (!args[i].startsWith(QLatin1String("--")) && isNetworkFile(args[i]))
+            return runNetworkCheck(args[i], args.mid(0, i) + args.mid(i + 1), out, err);
     CommonOptions options;
     QStringList rest;
     QString error;

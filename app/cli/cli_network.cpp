@@ -1,8 +1,10 @@
 #include "cli_network.h"
 #include "app/tr.h"
 
+#include "cli_common.h"
 #include "cli_load_program.h"
 
+#include "network/check.h"
 #include "network/net_trace.h"
 #include "network/station.h"
 #include "network/traffic.h"
@@ -16,11 +18,17 @@ namespace rung::app {
 namespace {
 
 QString usage() {
-    return NetworkTr::tr("usage: rungstudio-cli simulate NET.rungnet --scans N [--period MS] "
-                  "[--set STATION/DEV=VALUE@SCAN]... --trace STATION/DEV[,...] [--traffic FILE]");
+    return NetworkTr::tr("usage:") + QLatin1Char('\n') + networkUsage();
 }
 
 } // namespace
+
+QString networkUsage() {
+    return NetworkTr::tr("  rungstudio-cli check NET.rungnet\n"
+                         "  rungstudio-cli simulate NET.rungnet --scans N [--period MS] "
+                         "[--set STATION/DEV=VALUE@SCAN]... --trace STATION/DEV[,...] "
+                         "[--traffic FILE]");
+}
 
 bool isNetworkFile(const QString &file) {
     return QFileInfo(file).suffix().compare(QLatin1String(network::kNetworkExtension),
@@ -120,6 +128,61 @@ int runNetworkSimulate(const QString &file, const QStringList &args, QTextStream
                        .arg(e.message)
                 << '\n';
     return 0;
+}
+
+int runNetworkCheck(const QString &file, const QStringList &args, QTextStream &out,
+                    QTextStream &err) {
+    if (!args.isEmpty()) {
+        err << CliTr::tr("unexpected argument %1").arg(args.front()) << '\n'
+            << usage() << '\n';
+        return 2;
+    }
+    network::NetworkDescription description;
+    QString error;
+    if (!network::readNetworkFile(file, &description, &error)) {
+        err << error << '\n';
+        return 2;
+    }
+    // Every station's program, as `check FILE` checks it.
+    bool errors = false;
+    for (const network::StationDescription &station : description.stations) {
+        CommonOptions options;
+        options.file = station.path;
+        options.target = station.target;
+        options.model = station.model;
+        Input input;
+        if (!loadInput(options, &input, &error)) {
+            err << NetworkTr::tr("%1: %2: %3").arg(file, station.where, error) << '\n';
+            return 2;
+        }
+        const std::vector<model::Diagnostic> found = findings(input);
+        for (const model::Diagnostic &d : found)
+            out << formatDiagnostic(station.path, d) << '\n';
+        errors = errors || model::hasErrors(found);
+    }
+    if (errors) {
+        err << NetworkTr::tr("%1: a station's program has errors; the wiring is checked once "
+                             "every program starts")
+                   .arg(file)
+            << '\n';
+        return 1;
+    }
+    // The ports, the wires and the tables.
+    std::unique_ptr<network::Network> net =
+        network::Network::build(description, cliProgramLoader(), &error);
+    if (!net) {
+        out << error << '\n';
+        return 1;
+    }
+    for (const network::NetworkFinding &f : network::checkNetwork(*net)) {
+        //: %1 the network file, %2 where in it (a wire, a station's line), %3 error or warning
+        out << NetworkTr::tr("%1: %2: %3: %4")
+                   .arg(file, f.where, f.error ? CliTr::tr("error") : CliTr::tr("warning"),
+                        f.message)
+            << '\n';
+        errors = errors || f.error;
+    }
+    return errors ? 1 : 0;
 }
 
 } // namespace rung::app

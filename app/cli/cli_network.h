@@ -11,6 +11,8 @@
 namespace rung::app {
 
 bool isNetworkFile(const QString &file);
+// The network's lines of the tool's usage.
+QString networkUsage();
 
 // The stations' programs loaded as `simulate` loads one program (cli_load_program.h): a
 // listing, a ladder text or a project, checked, compiled; the errors with their places.
@@ -20,5 +22,11 @@ network::ProgramLoader cliProgramLoader();
 // [--traffic FILE]`: args after the file.
 int runNetworkSimulate(const QString &file, const QStringList &args, QTextStream &out,
                        QTextStream &err);
+
+// `check NET.rungnet`: each station's program as `check` checks one (its findings named by
+// the program's file), then the network: port settings, wiring, the LINK / MBUS tables
+// (network/check.h). 0 clean, 1 errors, 2 usage or I/O.
+int runNetworkCheck(const QString &file, const QStringList &args, QTextStream &out,
+                    QTextStream &err);
 
 } // namespace rung::app

@@ -145,9 +145,9 @@ enum class SystemRole : std::uint8_t {
     // family take one byte, the low one, from each word; OFF, both bytes, low first.
     ByteMode,
     // SMOV moves hexadecimal digits instead of BCD ones while ON (Vigor M9168, set by the
-    // program: seed 001 B-4-5 "M9168 SMOV hexadecimal").
+    // program: Vigor M/VB/VH communication manual, B-4-5 "M9168 SMOV hexadecimal").
     HexDigits,
-    // Communication (seed 001 B-3-3 .. B-3-9; docs/network.md). Driven by the PLC unless the
+    // Communication (Vigor M/VB/VH communication manual, B-3-3 .. B-3-9; docs/network.md). Driven by the PLC unless the
     // manual says the program writes them (SystemDevice::programWrites).
     LinkCycleDone, // Vigor M9199: ON for one scan when LINK / MBUS completed its table
     RsSendRequest, // Vigor M9122: the program sets it to send, the PLC resets it when sent
@@ -357,7 +357,7 @@ enum class ApplyFunction : std::uint8_t {
     // Vigor CCD S D n (FX / Delta FNC 84): the sum of n bytes from S into D, their parity
     // (XOR) into D+1; bytes as SystemRole::ByteMode says.
     CheckCode,
-    // Vigor instructions of seed 001's communication programs (docs/simulator.md):
+    // Vigor instructions of the Vigor M/VB/VH communication manual's communication programs (docs/simulator.md):
     Swap,        // SWAP D: the two bytes of D exchanged
     ToAscii,     // ASCI S D n: the last n hex digits of S as ASCII characters
     FromAscii,   // HEX S D n: n ASCII hex characters from S as a number in D
@@ -410,7 +410,7 @@ struct InstructionSpec {
     // The operand that numbers or names the port: a constant appended to `port` (Vigor FROM K1:
     // MODULE1), or a word that is the port's name (PL110 SEND COM1 n); -1: `port` alone.
     int portOperand = -1;
-    // The manual allows it once in a program (seed 001 B-3-3, B-3-6: LINK, MBUS "can be used
+    // The manual allows it once in a program (Vigor M/VB/VH communication manual, B-3-3, B-3-6: LINK, MBUS "can be used
     // once only in the program"): model::onceOnlyBreaches.
     bool oncePerProgram = false;
 };

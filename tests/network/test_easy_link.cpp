@@ -1,4 +1,4 @@
-// Vigor Easy Link (seed 001 B-3-3): the manual's programming example, verbatim, on a network
+// Vigor Easy Link (Vigor M/VB/VH communication manual, B-3-3): the manual's programming example, verbatim, on a network
 // whose slaves answer with the product's Computer Link responder; and each fault the issue
 // names, shown by the working area's status codes as the manual lists them.
 

@@ -1,4 +1,4 @@
-// Vigor RS (seed 001 B-3-9): the manual's application example, verbatim, sends the frames the
+// Vigor RS (Vigor M/VB/VH communication manual, B-3-9): the manual's application example, verbatim, sends the frames the
 // manual prints byte for byte and its reply check accepts the answer of the Computer Link
 // station on the wire; and RS's flags and counts against a line device.
 

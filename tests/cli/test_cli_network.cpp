@@ -1,0 +1,160 @@
+// `rungstudio-cli simulate NET.rungnet` and `check NET.rungnet` (docs/network.md): a network's
+// trace with every device named STATION/DEVICE, its traffic file, and the wiring checks.
+
+#include "tests/cli/cli_run.h"
+
+#include <QDir>
+#include <QFile>
+#include <QTemporaryDir>
+
+#include <gtest/gtest.h>
+
+using rung::test::cli;
+
+namespace {
+
+const QString kExamples = QStringLiteral(RUNG_SOURCE_DIR "/resources/examples/networks/");
+
+// Writes the files into the directory; the network is "net.rungnet".
+QString network(const QTemporaryDir &dir, const std::map<QString, QString> &files) {
+    for (const auto &[name, text] : files) {
+        QFile f(dir.filePath(name));
+        if (!f.open(QIODevice::WriteOnly))
+            return {};
+        f.write(text.toUtf8());
+    }
+    return dir.filePath(QStringLiteral("net.rungnet"));
+}
+
+QString readAll(const QString &path) {
+    QFile f(path);
+    return f.open(QIODevice::ReadOnly) ? QString::fromUtf8(f.readAll()) : QString();
+}
+
+} // namespace
+
+// The B-3-9 example through the command line: the trace names each column STATION/DEVICE,
+// the traffic file holds every frame with its virtual time, wire, sender and bytes; run
+// twice, both are the same byte for byte.
+TEST(CliNetwork, SimulateWritesTheTraceAndTheTraffic) {
+    QTemporaryDir dir;
+    const QStringList args = {QStringLiteral("simulate"),
+                              kExamples + QStringLiteral("non-protocol/non-protocol.rungnet"),
+                              QStringLiteral("--scans"),
+                              QStringLiteral("30"),
+                              QStringLiteral("--set"),
+                              QStringLiteral("left/VR1=120@0"),
+                              QStringLiteral("--set"),
+                              QStringLiteral("right/VR1=77@0"),
+                              QStringLiteral("--trace"),
+                              QStringLiteral("left/D110,right/D1"),
+                              QStringLiteral("--traffic")};
+    const auto first = cli(args + QStringList{dir.filePath(QStringLiteral("a.traffic"))});
+    ASSERT_EQ(first.code, 0) << first.err.toStdString();
+    EXPECT_TRUE(first.err.isEmpty()) << first.err.toStdString();
+    const QStringList lines = first.out.split(QLatin1Char('\n'), Qt::SkipEmptyParts);
+    ASSERT_EQ(lines.size(), 31);
+    EXPECT_TRUE(lines[0].endsWith(QStringLiteral("left/D110,right/D1"))) << lines[0].toStdString();
+    EXPECT_TRUE(lines.back().endsWith(QStringLiteral(",77,120"))) << lines.back().toStdString();
+    const QString traffic = readAll(dir.filePath(QStringLiteral("a.traffic")));
+    // The read of D0 as the manual prints it, from the left PLC on wire w1.
+    EXPECT_TRUE(traffic.contains(QStringLiteral(
+        "w1 left/CP2 02 30 31 35 31 31 43 30 30 30 32 03 30 30")))
+        << traffic.toStdString();
+    const auto second = cli(args + QStringList{dir.filePath(QStringLiteral("b.traffic"))});
+    EXPECT_EQ(second.out, first.out);
+    EXPECT_EQ(readAll(dir.filePath(QStringLiteral("b.traffic"))), traffic);
+}
+
+TEST(CliNetwork, ADeviceOfAStationThatIsNotThereIsAnError) {
+    const auto r = cli({QStringLiteral("simulate"),
+                        kExamples + QStringLiteral("easy-link/easy-link.rungnet"),
+                        QStringLiteral("--scans"), QStringLiteral("3"), QStringLiteral("--trace"),
+                        QStringLiteral("s9/D0")});
+    EXPECT_EQ(r.code, 2);
+    EXPECT_TRUE(r.err.contains(QStringLiteral("s9"))) << r.err.toStdString();
+}
+
+TEST(CliNetwork, EveryExampleChecksClean) {
+    for (const QString &name : QDir(kExamples).entryList(QDir::Dirs | QDir::NoDotAndDotDot)) {
+        const QString file = kExamples + name + QLatin1Char('/') + name + QStringLiteral(".rungnet");
+        const auto r = cli({QStringLiteral("check"), file});
+        EXPECT_EQ(r.code, 0) << name.toStdString() << "\n"
+                             << r.out.toStdString() << r.err.toStdString();
+        EXPECT_TRUE(r.out.isEmpty()) << r.out.toStdString();
+    }
+}
+
+// The wiring checks the issue names: two masters on one wire, one station number twice, a
+// LINK table naming a station that is not there, an application the model does not have.
+TEST(CliNetwork, CheckFindsWiringMistakes) {
+    QTemporaryDir dir;
+    const QString link = QStringLiteral("; target: vigor\nLD M9002\nMOV K1 D1000\nMOV K7 D1001\n"
+                                        "MOV K1 D1002\nMOV K1 D1003\nMOV K13 D1004\nMOV K0 "
+                                        "D1005\nMOV K13 D1006\nMOV K0 D1007\nLD M9000\nLINK "
+                                        "D1000 D100\nEND\n");
+    const QString file = network(
+        dir, {{QStringLiteral("m.il"), link},
+              {QStringLiteral("s.il"), QStringLiteral("; target: vigor\nEND\n")},
+              {QStringLiteral("net.rungnet"), QStringLiteral(R"({"stations": [
+                {"name": "m1", "program": "m.il", "model": "VB",
+                 "ports": {"CP2": {"application": "easy-link", "station": 0}}},
+                {"name": "m2", "program": "m.il", "model": "VB",
+                 "ports": {"CP2": {"application": "easy-link", "station": 1}}},
+                {"name": "a", "program": "s.il", "ports": {"CP2": {"station": 5}}},
+                {"name": "b", "program": "s.il", "ports": {"CP2": {"station": 5}}}],
+                "wires": [["m1/CP2", "m2/CP2", "a/CP2", "b/CP2"]]})")}});
+    const auto r = cli({QStringLiteral("check"), file});
+    EXPECT_EQ(r.code, 1);
+    EXPECT_TRUE(r.out.contains(QStringLiteral(
+        "wire w1: error: 2 masters on one wire: m1/CP2 (LINK), m2/CP2 (LINK)")))
+        << r.out.toStdString();
+    EXPECT_TRUE(r.out.contains(
+        QStringLiteral("wire w1: error: a/CP2 and b/CP2 both answer Computer Link station 5")))
+        << r.out.toStdString();
+    EXPECT_TRUE(r.out.contains(QStringLiteral(
+        "m1: line 12: error: LINK set 1 names station 7, which no port or device on w1 answers "
+        "with Computer Link")))
+        << r.out.toStdString();
+
+    QTemporaryDir other;
+    const QString vh = network(
+        other, {{QStringLiteral("s.il"), QStringLiteral("; target: vigor\nEND\n")},
+                {QStringLiteral("net.rungnet"), QStringLiteral(R"({"stations": [
+                {"name": "a", "program": "s.il", "model": "VH",
+                 "ports": {"CP2": {"application": "cpu-link"}}}]})")}});
+    const auto h = cli({QStringLiteral("check"), vh});
+    EXPECT_EQ(h.code, 1);
+    EXPECT_TRUE(h.out.contains(QStringLiteral(
+        "stations[0].ports.CP2.application: the Vigor VH has no CPU Link on CP2")))
+        << h.out.toStdString();
+}
+
+// A station's program with an error: named by its file and line, as `check FILE` names it.
+TEST(CliNetwork, CheckNamesAStationsProgramErrors) {
+    QTemporaryDir dir;
+    const QString file =
+        network(dir, {{QStringLiteral("p.il"), QStringLiteral("; target: vigor\nLD X0\nOUT\nEND\n")},
+                      {QStringLiteral("net.rungnet"),
+                       QStringLiteral(R"({"stations": [{"name": "a", "program": "p.il"}]})")}});
+    const auto r = cli({QStringLiteral("check"), file});
+    EXPECT_EQ(r.code, 1);
+    EXPECT_TRUE(r.out.contains(dir.filePath(QStringLiteral("p.il")) + QStringLiteral(":3:")))
+        << r.out.toStdString();
+}
+
+// An instruction on a port that runs another application: the network does not start.
+TEST(CliNetwork, LinkOnAModbusPortDoesNotStart) {
+    QTemporaryDir dir;
+    const QString file = network(
+        dir, {{QStringLiteral("p.il"),
+               QStringLiteral("; target: vigor\nLD M9000\nLINK D1000 D100\nEND\n")},
+              {QStringLiteral("net.rungnet"), QStringLiteral(R"({"stations": [{"name": "a",
+                "program": "p.il", "model": "VB", "ports": {"CP2": {"application": "modbus"}}}]})")}});
+    const auto r = cli({QStringLiteral("simulate"), file, QStringLiteral("--scans"),
+                        QStringLiteral("1"), QStringLiteral("--trace"), QStringLiteral("a/D100")});
+    EXPECT_EQ(r.code, 1);
+    EXPECT_TRUE(r.err.contains(QStringLiteral(
+        "a: line 3: LINK drives a/CP2, which runs modbus; LINK needs easy-link / computer-link")))
+        << r.err.toStdString();
+}
