@@ -6,6 +6,7 @@
 
 #include "model/comm/link_table.h"
 
+#include <algorithm>
 #include <map>
 #include <set>
 
@@ -111,8 +112,11 @@ std::vector<NetworkFinding> checkNetwork(Network &network) {
                                        .arg(all[i].name, all[j].name, protocolName(all[i].protocol))
                                        .arg(all[i].station)});
     }
-    // The tables as the first scan leaves them.
-    network.runUntil(0);
+    // The tables as the first scan leaves them (a station's first scan ends at its period).
+    qint64 firstScans = 0;
+    for (const auto &s : network.stations())
+        firstScans = std::max(firstScans, s->periodMs() * 1000);
+    network.runUntil(firstScans);
     for (const auto &s : network.stations()) {
         const simulator::Program &program = s->engine().program();
         const auto words = s->engine().words();

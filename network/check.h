@@ -18,7 +18,7 @@ struct NetworkFinding {
     QString message;   // translated
 };
 
-// Runs the network's first scan (time 0) to read the tables: give it a network built for the
+// Runs the stations' first scans to read the tables: give it a network built for the
 // check, not one that is simulating.
 std::vector<NetworkFinding> checkNetwork(Network &network);
 

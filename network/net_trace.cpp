@@ -3,6 +3,8 @@
 
 #include "network/station.h"
 
+#include "model/image/scan_csv.h"
+
 #include <QCoreApplication>
 #include <QRegularExpression>
 
@@ -112,13 +114,14 @@ bool parseNetworkTraceOptions(const Network &network, const QStringList &args,
         *error = TraceTr::tr("--scans and --trace are required");
         return false;
     }
+    // A stimulus after the last row would never apply: said, not dropped.
     for (const NetStimulus &s : request->stimuli)
         if (s.stimulus.scan >= request->rows) {
-            *error = TraceTr::tr("--set at row %1 comes after the last row: %2 rows run, numbered 0 "
-                            "to %3, so it would never apply")
+            //: --set DEV=VALUE@N applies once N (%1) rows of scans have run; %2 rows run
+            *error = TraceTr::tr("--set at %1 comes after the last row: it applies once %1 rows "
+                                 "have run, and %2 run, so it would never apply")
                          .arg(s.stimulus.scan)
-                         .arg(request->rows)
-                         .arg(request->rows - 1);
+                         .arg(request->rows);
             return false;
         }
     std::stable_sort(request->stimuli.begin(), request->stimuli.end(),
@@ -130,20 +133,24 @@ bool parseNetworkTraceOptions(const Network &network, const QStringList &args,
 
 void runNetworkTrace(Network &network, const NetTraceRequest &request, QTextStream &out) {
     const qint64 period = request.periodMs > 0 ? request.periodMs : network.description().periodMs;
-    out << "scan,time_ms";
+    QStringList names;
     for (const NetTraceColumn &c : request.columns)
-        out << ',' << c.name;
-    out << '\n';
+        names << c.name;
+    // The CSV of a program's trace (model/image/scan_csv.h): row k at the virtual time k x
+    // period, the end of the k-th scan of a station scanning at that period.
+    model::ScanCsvWriter csv(out, names);
+    QStringList values(names.size());
     auto next = request.stimuli.begin();
-    for (quint64 row = 0; row < request.rows; ++row) {
-        for (; next != request.stimuli.end() && next->stimulus.scan <= row; ++next)
+    for (quint64 row = 1; row <= request.rows; ++row) {
+        for (; next != request.stimuli.end() && next->stimulus.scan < row; ++next)
             simulator::applyStimulus(next->station->engine(), next->stimulus);
         const qint64 time = qint64(row) * period;
         network.runUntil(time * 1000);
-        out << row << ',' << time;
-        for (const NetTraceColumn &c : request.columns)
-            out << ',' << simulator::traceValue(c.station->engine(), c.column);
-        out << '\n';
+        for (qsizetype k = 0; k < values.size(); ++k) {
+            const NetTraceColumn &c = request.columns[std::size_t(k)];
+            values[k] = simulator::traceValue(c.station->engine(), c.column);
+        }
+        csv.row(row, time, values);
     }
 }
 

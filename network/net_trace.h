@@ -2,7 +2,7 @@
 
 // The trace of a network (`rungstudio-cli simulate NET.rungnet`): the CSV of a program's trace
 // (simulator/trace.h) with every device named NAME/DEVICE, a row every --period ms of virtual
-// time after the scans of that instant.
+// time (the network's period unless given), after everything up to that time.
 
 #include "network/network.h"
 
@@ -30,13 +30,14 @@ struct NetTraceRequest {
     std::vector<NetTraceColumn> columns;
 };
 
-// --scans N (rows), --period MS, --set NAME/DEV=VALUE@ROW, --trace NAME/DEV[,...]; false with
-// a translated reason for anything else, or a station or device that is not there.
+// --scans N (rows), --period MS (between rows), --set NAME/DEV=VALUE@N (applied once N rows
+// have run: @0 before anything), --trace NAME/DEV[,...]; false with a translated reason for
+// anything else, or a station or device that is not there.
 bool parseNetworkTraceOptions(const Network &network, const QStringList &args,
                               NetTraceRequest *request, QString *error);
 
-// Row k: the virtual time k x period, the devices after everything up to that time (the
-// scans of that instant included); stimuli of row k are applied before it.
+// Row k (from 1): the virtual time k x period, the devices after everything up to that time
+// (the scans ending at that instant included), as `simulate` prints a program's scan k.
 void runNetworkTrace(Network &network, const NetTraceRequest &request, QTextStream &out);
 
 } // namespace rung::network

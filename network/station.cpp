@@ -1,6 +1,7 @@
 #include "network/station.h"
 
 #include "network/engine_image.h"
+#include "network/uart.h"
 
 #include "comms/protocol/plc_master.h"
 #include "comms/slave/modbus_responder.h"
@@ -76,25 +77,36 @@ int StationPort::takeCharacterErrors() {
 }
 
 void StationPort::deliver(const QByteArray &bytes, int errors, qint64 atUs) {
+    if (m_responder) {
+        // A MODBUS RTU frame ends at 3.5 characters of silence: when these bytes began after
+        // such a gap, what came before them is a frame of its own (another slave's reply on
+        // the bus, a request cut short), decided now, as the PLC's UART would, though its
+        // answer waits for the station's next END.
+        const int gap = m_responder->silenceMicroseconds();
+        const qint64 start = atUs - wireTimeUs(bytes.size(), m_line);
+        if (gap > 0 && m_lastUs >= 0 && start - m_lastUs >= gap) {
+            if (!m_forResponder.isEmpty())
+                m_replies += m_responder->feed(std::exchange(m_forResponder, QByteArray()));
+            if (m_responder->buffered() > 0)
+                m_replies += m_responder->silence();
+        }
+        keep(m_forResponder, bytes);
+    }
     m_lastUs = atUs;
     m_errors += errors;
     if (m_used)
         keep(m_forProgram, bytes);
-    if (m_responder)
-        keep(m_forResponder, bytes);
 }
 
 void StationPort::answer(qint64 nowUs) {
     if (!m_responder)
         return;
-    QByteArrayList frames;
+    QByteArrayList frames = std::exchange(m_replies, QByteArrayList());
     if (!m_forResponder.isEmpty())
-        frames = m_responder->feed(std::exchange(m_forResponder, QByteArray()));
-    // A MODBUS RTU frame of an unknown length ends at 3.5 characters of silence.
+        frames += m_responder->feed(std::exchange(m_forResponder, QByteArray()));
     const int gap = m_responder->silenceMicroseconds();
-    if (frames.isEmpty() && gap > 0 && m_responder->buffered() > 0 && m_lastUs >= 0 &&
-        nowUs - m_lastUs >= gap)
-        frames = m_responder->silence();
+    if (gap > 0 && m_responder->buffered() > 0 && m_lastUs >= 0 && nowUs - m_lastUs >= gap)
+        frames += m_responder->silence();
     for (const QByteArray &frame : frames)
         m_network->transmit(this, frame);
 }
@@ -107,6 +119,9 @@ Station::Station(Network *network, QString name, const LoadedStation &loaded, qi
     , m_periodMs(periodMs)
     , m_engine(std::make_unique<simulator::Engine>(loaded.program)) {
     m_engine->setPeriodMs(periodMs);
+    // A scan's END, where its communication work happens, is at the end of its period: scan 1
+    // ends at one period, as a program's trace counts its scans (docs/network.md).
+    m_nextUs = periodMs * 1000;
     m_image = std::make_shared<EngineImage>(m_engine.get());
 }
 

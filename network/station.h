@@ -55,6 +55,7 @@ private:
     bool m_used = false;
     QByteArray m_forProgram;   // received, for the engine
     QByteArray m_forResponder; // received, for the slave's side
+    QByteArrayList m_replies;  // the slave's answers to frames ended by a silence, not sent yet
     qint64 m_lastUs = -1;
     int m_errors = 0;
 };
@@ -89,7 +90,7 @@ private:
     const model::Target *m_target;
     const model::ModelVariant *m_model;
     qint64 m_periodMs;
-    qint64 m_nextUs = 0;
+    qint64 m_nextUs = 0; // the end of the next scan
     std::unique_ptr<simulator::Engine> m_engine;
     std::shared_ptr<EngineImage> m_image;
     std::map<QString, std::unique_ptr<StationPort>> m_ports;

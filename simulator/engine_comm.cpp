@@ -42,8 +42,9 @@ void Engine::attachPorts(model::PlcPorts *ports) {
 }
 
 qint64 Engine::commNowUs() const {
-    // A scan is an instant of the virtual clock; the network runs it at the same time.
-    return m_stats.timeMs * 1000;
+    // The communication work is done at the scan's END, the end of its period (timeMs counts
+    // up after it): a network runs the scan at that instant of its clock.
+    return (m_stats.timeMs + m_stats.periodMs) * 1000;
 }
 
 qint64 Engine::timeoutUs() const {

@@ -147,7 +147,7 @@ TEST(Mbus, ACorruptedReplyShowsAbnormalB) {
     f.byte = 4;
     auto net = build(kTable, {f}, nullptr);
     ASSERT_TRUE(net);
-    net->runUntil(35'000);
+    net->runUntil(45'000);
     EXPECT_EQ(value(*net, QStringLiteral("master"), QStringLiteral("D100")), 0x0B05);
 }
 
@@ -156,7 +156,7 @@ TEST(Mbus, ACorruptedReplyShowsAbnormalB) {
 TEST(Mbus, AWrongSlaveTypeShowsStatus4) {
     auto net = build(kTable, {}, nullptr);
     ASSERT_TRUE(net);
-    net->runUntil(0);
+    net->runUntil(10'000); // the first scan writes the table
     write(*net, "master", "D1006", 2);
     net->runUntil(300'000);
     EXPECT_EQ(value(*net, QStringLiteral("master"), QStringLiteral("D100")), 0x0405);
