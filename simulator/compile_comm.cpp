@@ -171,12 +171,16 @@ void Compiler::compileComm(const model::Instruction &ins, Step &s) {
     c.port = model::instructionPort(ins);
     c.spec = ins.spec;
     c.step = static_cast<std::int32_t>(&s - m_program->steps.data());
+    const bool module = ins.spec->function == ApplyFunction::ModuleRead ||
+                        ins.spec->function == ApplyFunction::ModuleWrite;
     // The tables, buffers and counts are plain registers: an index register would move a
-    // table the PLC reads in the background, which no example does.
-    for (const model::Operand &o : ins.operands)
-        if (resolvedAtRunTime(o)) {
-            error(ins,
-                  CompilerTr::tr("%1 takes plain registers, not %2").arg(ins.spec->mnemonic, describe(o)));
+    // table the PLC reads in the background, which no example does. FROM / TO alone take a
+    // digit group, and TO a constant, for one word (TO K1 K1 K1M20 K1, TOP K1 K0 H7096 K1:
+    // the VB-1COM programs of B-4-5).
+    for (std::size_t i = 0; i < ins.operands.size(); ++i)
+        if (resolvedAtRunTime(ins.operands[i]) && !(module && i == 2)) {
+            error(ins, CompilerTr::tr("%1 takes plain registers, not %2")
+                           .arg(ins.spec->mnemonic, describe(ins.operands[i])));
             return;
         }
     auto word = [&](std::size_t i, std::int32_t *index, std::int32_t *words) {
@@ -212,8 +216,27 @@ void Compiler::compileComm(const model::Instruction &ins, Step &s) {
                        ? static_cast<std::int32_t>(m1->constant.value)
                        : 0;
         c.m = sourceOf(ins, 1);
-        word(2, &c.first, &c.firstWords);
         c.n = sourceOf(ins, 3);
+        const model::Operand *data = operand(ins, 2);
+        const bool constant = data && data->kind == model::Operand::Kind::Constant &&
+                              c.kind == CommKind::ModuleWrite;
+        if (data && (resolvedAtRunTime(*data) || constant)) {
+            // One word through the step: a constant (TOP K1 K0 H7096 K1), or a group the
+            // engine resolves each time (K2M30).
+            const model::Operand *n = operand(ins, 3);
+            if (!n || n->kind != model::Operand::Kind::Constant || n->constant.value != 1) {
+                error(ins, CompilerTr::tr("%1 moves one word with %2: n must be K1")
+                               .arg(ins.spec->mnemonic, describe(*data)));
+                return;
+            }
+            if (c.kind == CommKind::ModuleRead)
+                s.dest = destOf(ins, 2, false, &s.width);
+            else
+                s.x = sourceOf(ins, 2);
+            c.firstWords = 1;
+        } else {
+            word(2, &c.first, &c.firstWords);
+        }
         break;
     }
     case ApplyFunction::FreePortSend:
@@ -228,7 +251,8 @@ void Compiler::compileComm(const model::Instruction &ins, Step &s) {
     }
     s.code = Code::Communicate;
     s.op = static_cast<std::uint8_t>(c.kind);
-    s.slot = static_cast<std::int32_t>(m_program->comms.size());
+    // Not `slot`: TOP is differentiated, and its edge memory is the step's slot.
+    s.count = static_cast<std::int32_t>(m_program->comms.size());
     m_program->comms.push_back(std::move(c));
 }
 

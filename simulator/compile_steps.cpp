@@ -383,11 +383,20 @@ void Compiler::compileApply(const model::Instruction &ins, Step &s) {
     case ApplyFunction::MasterQuery:
         compileComm(ins, s); // compile_comm.cpp
         break;
-    case ApplyFunction::Toggle:
-        // OUTB (PL110 manual 4.2.3): each activation of the coil flips the bit
+    case ApplyFunction::Toggle: {
+        // OUTB (PL110 manual 4.2.3): each activation of the coil flips the bit; Vigor ALTP
+        // flips it at each rising edge. Either writes it: not an input.
+        const model::Operand *d = operand(ins, 0);
+        if (d && isDevice(*d) && !m_target.area(d->address.area).writable) {
+            error(ins,
+                  trCompiler(QT_TRANSLATE_NOOP("rung::simulator::Compiler", "%1 cannot be written"))
+                      .arg(describe(*d)));
+            break;
+        }
         s.bit = bitOf(ins, 0);
         edgeStep(s, Code::Toggle, false);
         break;
+    }
     case ApplyFunction::CompareToFlags:
     case ApplyFunction::ShiftRegister:
     case ApplyFunction::WordShift:

@@ -333,8 +333,8 @@ private:
     void sendFrame(std::size_t task);
     void applyReply(const MasterFrame &frame, const std::vector<std::uint16_t> &values);
     void serviceSerial();
-    void moduleWrite(const CommStep &c, std::size_t step, int bfm, int words);
-    void moduleRead(const CommStep &c, std::size_t step, int bfm, int words);
+    void moduleWrite(const CommStep &c, const Step &s, std::size_t step, int bfm, int words);
+    void moduleRead(const CommStep &c, const Step &s, std::size_t step, int bfm, int words);
     void serviceModule(int module);
     ModuleState &module(int number);
     qint64 timeoutUs() const;

@@ -56,9 +56,9 @@ qint64 Engine::timeoutUs() const {
 }
 
 void Engine::communicate(const Step &s, std::size_t step, bool on) {
-    CommTask &t = m_comm.tasks[static_cast<std::size_t>(s.slot)];
+    CommTask &t = m_comm.tasks[static_cast<std::size_t>(s.count)];
     t.on = on;
-    const CommStep &c = m_program->comms[static_cast<std::size_t>(s.slot)];
+    const CommStep &c = m_program->comms[static_cast<std::size_t>(s.count)];
     if (!on)
         return;
     auto value = [&](const WordOperand &o) {
@@ -66,9 +66,9 @@ void Engine::communicate(const Step &s, std::size_t step, bool on) {
     };
     // FROM / TO reach the module's buffer memory at once, in the scan (engine_module.cpp).
     if (c.kind == CommKind::ModuleRead)
-        moduleRead(c, step, value(c.m), value(c.n));
+        moduleRead(c, s, step, value(c.m), value(c.n));
     else if (c.kind == CommKind::ModuleWrite)
-        moduleWrite(c, step, value(c.m), value(c.n));
+        moduleWrite(c, s, step, value(c.m), value(c.n));
 }
 
 void Engine::serviceComms() {

@@ -102,7 +102,8 @@ ModuleState &Engine::module(int number) {
     return m;
 }
 
-void Engine::moduleRead(const CommStep &c, std::size_t step, int bfm, int words) {
+void Engine::moduleRead(const CommStep &c, const Step &s, std::size_t step, int bfm,
+                        int words) {
     ModuleState &m = module(c.module);
     if (!m.attached) {
         runtimeError(step, EngineTr::tr("operation error: no special module %1 is connected (in a "
@@ -118,11 +119,16 @@ void Engine::moduleRead(const CommStep &c, std::size_t step, int bfm, int words)
                                .arg(c.module));
         return;
     }
+    if (c.first < 0) { // a digit group: one word, written back to its bits after the step
+        storeWord(static_cast<std::size_t>(s.dest), m.bfm[std::size_t(slot(bfm))], s.width);
+        return;
+    }
     for (int k = 0; k < words; ++k)
         storeWord(static_cast<std::size_t>(c.first + k), m.bfm[std::size_t(slot(bfm + k))], 16);
 }
 
-void Engine::moduleWrite(const CommStep &c, std::size_t step, int bfm, int words) {
+void Engine::moduleWrite(const CommStep &c, const Step &s, std::size_t step, int bfm,
+                         int words) {
     ModuleState &m = module(c.module);
     if (!m.attached) {
         runtimeError(step, EngineTr::tr("operation error: no special module %1 is connected (in a "
@@ -140,7 +146,9 @@ void Engine::moduleWrite(const CommStep &c, std::size_t step, int bfm, int words
         return;
     }
     for (int k = 0; k < words; ++k)
-        m.bfm[std::size_t(slot(bfm + k))] = m_words[static_cast<std::size_t>(c.first + k)];
+        m.bfm[std::size_t(slot(bfm + k))] =
+            c.first < 0 ? readWord(m_words.data(), s.x) // a digit group: one word
+                        : m_words[static_cast<std::size_t>(c.first + k)];
     if (bfm > Command || bfm + words - 1 < Command)
         return;
     // The command bits act on their rising edge (B-4-4, BFM #1).

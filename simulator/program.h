@@ -84,8 +84,9 @@ enum class Code : std::uint8_t {
     // DDIV S1 S2 D (32 bits): Program::wordLists from slot: S1 low, S1 high (or -1 with
     // x.constant), S2 low, S2 high (or -1 with y.constant), D, D+1, D+2, D+3.
     DoubleDivide,
-    // A communication instruction (LINK, MBUS, RS, FROM, TO, SEND, COM / EXP): slot =
-    // Program::comms index; engine_comm.cpp. Runs every scan, ON or OFF.
+    // A communication instruction (LINK, MBUS, RS, FROM, TO, SEND, COM / EXP): count =
+    // Program::comms index (slot is TOP's edge); FROM / TO of a digit group: the word in dest
+    // / x; engine_comm.cpp. Runs every scan, ON or OFF.
     Communicate,
     // Omron CPM1 (W353), with the arithmetic flags (Program::flags): op = ArithOp; engine_cpm1.cpp
     Arithmetic,
@@ -259,7 +260,8 @@ struct CommStep {
     // Its table entry: the mnemonic and the applications its port must run (the network's
     // wiring and check read them).
     const model::InstructionSpec *spec = nullptr;
-    std::int32_t first = -1;  // LINK / MBUS S1, RS S, FROM D, TO S, COM's area
+    std::int32_t first = -1;  // LINK / MBUS S1, RS S, FROM D, TO S (-1: a digit group, in the
+                              // step), COM's area
     std::int32_t second = -1; // LINK / MBUS S2 (4 words), RS D
     // Words from first / second to the end of their area: a block must stay inside.
     std::int32_t firstWords = 0;
