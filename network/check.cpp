@@ -87,9 +87,8 @@ std::vector<NetworkFinding> checkNetwork(Network &network) {
         }
         for (const auto &[name, port] : s->ports())
             if (port->config().application->master && !masters.count(port.get()))
-                masters[port.get()] =
-                    QCoreApplication::translate("rung::model::Target",
-                                                port->config().application->name);
+                masters[port.get()] = QCoreApplication::translate("rung::model::Target",
+                                                                  port->config().application->name);
     }
     for (const auto &wire : network.wires()) {
         const QString where = NetworkCheckTr::tr("wire %1").arg(wire->name);

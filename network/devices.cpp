@@ -24,8 +24,8 @@ bool readLine(const QJsonObject &o, const QString &where, const char *defaultFra
     }
     const QString frame = o.value(QLatin1String("frame")).toString(QLatin1String(defaultFrame));
     if (!model::parseFrameFormat(frame, line)) {
-        *error =
-            DevicesTr::tr("%1.frame: \"%2\" is no character format (8N1, 7E1, ...)").arg(where, frame);
+        *error = DevicesTr::tr("%1.frame: \"%2\" is no character format (8N1, 7E1, ...)")
+                     .arg(where, frame);
         return false;
     }
     const double delay = o.value(QLatin1String("delay")).toDouble(2);
@@ -276,10 +276,11 @@ bool LineDevice::read(const DeviceDescription &d, QString *error) {
         };
         if (!bytes("expect", "expectText", &answer.expect) ||
             !bytes("reply", "replyText", &answer.reply)) {
-            *error = DevicesTr::tr("%1: needs \"expect\" and \"reply\" as hex bytes (\"02 30 31\"), or "
-                            "\"expectText\" and \"replyText\" as text (\"\\x02"
-                            "01\")")
-                         .arg(where);
+            *error =
+                DevicesTr::tr("%1: needs \"expect\" and \"reply\" as hex bytes (\"02 30 31\"), or "
+                              "\"expectText\" and \"replyText\" as text (\"\\x02"
+                              "01\")")
+                    .arg(where);
             return false;
         }
         m_answers.push_back(answer);

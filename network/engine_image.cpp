@@ -34,8 +34,9 @@ comms::slave::ImageChange EngineImage::setMode(comms::slave::OperatingMode mode,
     comms::slave::ImageChange change;
     if (mode != comms::slave::OperatingMode::Run && mode != comms::slave::OperatingMode::Monitor) {
         change.status = comms::slave::ImageChange::Status::Refused;
-        change.message = EngineImageTr::tr("a station of a network keeps running: it is not stopped from "
-                                "its port");
+        change.message =
+            EngineImageTr::tr("a station of a network keeps running: it is not stopped from "
+                              "its port");
     }
     return change;
 }

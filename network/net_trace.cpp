@@ -46,8 +46,9 @@ bool parseNetworkTraceOptions(const Network &network, const QStringList &args,
     for (qsizetype i = 0; i < args.size(); ++i) {
         const QString &a = args[i];
         if (i + 1 >= args.size() || !a.startsWith(QLatin1String("--"))) {
-            *error = a.startsWith(QLatin1String("--")) ? TraceTr::tr("%1 needs a value").arg(a)
-                                                       : TraceTr::tr("unexpected argument %1").arg(a);
+            *error = a.startsWith(QLatin1String("--"))
+                         ? TraceTr::tr("%1 needs a value").arg(a)
+                         : TraceTr::tr("unexpected argument %1").arg(a);
             return false;
         }
         const QString v = args[++i];

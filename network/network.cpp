@@ -75,7 +75,8 @@ std::unique_ptr<Network> Network::build(const NetworkDescription &d, const Progr
             if (!model::readPortConfig(*loaded.target, loaded.model, port, layers, &config, &why))
                 return fail(why);
             if (station->findPort(config.port))
-                return fail(NetworkTr::tr("%1.ports: %2 is named twice").arg(sd.where, config.port));
+                return fail(
+                    NetworkTr::tr("%1.ports: %2 is named twice").arg(sd.where, config.port));
             station->addPort(std::move(config));
         }
         net->m_stations.push_back(std::move(station));
@@ -150,14 +151,14 @@ std::unique_ptr<Network> Network::build(const NetworkDescription &d, const Progr
                 QStringList names;
                 for (const char *a : allowed)
                     names << QString::fromLatin1(a);
-                //: %1 station, %2 line, %3 instruction (LINK), %4 port (CP2), %5 what it runs, %6 the
-                //: applications %3 takes
+                //: %1 station, %2 line, %3 instruction (LINK), %4 port (CP2), %5 what it runs, %6
+                //: the applications %3 takes
                 return fail(NetworkTr::tr("%1: line %2: %3 drives %4, which runs %5; %3 needs "
                                           "%6")
                                 .arg(s->name())
                                 .arg(program.lines[std::size_t(c.step)])
-                                .arg(c.spec->mnemonic, port->name,
-                                     QString::fromLatin1(id), names.join(QStringLiteral(" / "))));
+                                .arg(c.spec->mnemonic, port->name, QString::fromLatin1(id),
+                                     names.join(QStringLiteral(" / "))));
             }
         }
         s->start();

@@ -47,8 +47,9 @@ bool string(const QJsonObject &o, const char *key, const QString &path, bool req
     if (v.isUndefined() && !required)
         return true;
     if (!v.isString() || v.toString().isEmpty()) {
-        *error = v.isUndefined() ? NetworkFileTr::tr("%1: missing").arg(at(path, QLatin1String(key)))
-                                 : NetworkFileTr::tr("%1: needs a text").arg(at(path, QLatin1String(key)));
+        *error = v.isUndefined()
+                     ? NetworkFileTr::tr("%1: missing").arg(at(path, QLatin1String(key)))
+                     : NetworkFileTr::tr("%1: needs a text").arg(at(path, QLatin1String(key)));
         return false;
     }
     *into = v.toString();
@@ -117,7 +118,8 @@ bool parseNetwork(const QByteArray &json, const QString &file, NetworkDescriptio
     }
     if (!doc.isObject()) {
         *error =
-            NetworkFileTr::tr("%1: a network file is a JSON object with \"stations\" and \"wires\"").arg(file);
+            NetworkFileTr::tr("%1: a network file is a JSON object with \"stations\" and \"wires\"")
+                .arg(file);
         return false;
     }
     const QJsonObject root = doc.object();
@@ -160,16 +162,17 @@ bool parseNetwork(const QByteArray &json, const QString &file, NetworkDescriptio
             !number(o, "period", where, 1, 1000000, &s.periodMs, &why))
             return fail(why);
         if (!validName(s.name))
-            return fail(NetworkFileTr::tr("%1: \"%2\" is no name (letters, digits, _ and -, at most 32)")
-                            .arg(at(where, QStringLiteral("name")), s.name));
+            return fail(
+                NetworkFileTr::tr("%1: \"%2\" is no name (letters, digits, _ and -, at most 32)")
+                    .arg(at(where, QStringLiteral("name")), s.name));
         if (names.contains(s.name))
             return fail(NetworkFileTr::tr("%1: a second \"%2\"; names are unique")
                             .arg(at(where, QStringLiteral("name")), s.name));
         names.insert(s.name);
         const QJsonValue ports = o.value(QLatin1String("ports"));
         if (!ports.isUndefined() && !ports.isObject())
-            return fail(
-                NetworkFileTr::tr("%1: needs an object of ports").arg(at(where, QStringLiteral("ports"))));
+            return fail(NetworkFileTr::tr("%1: needs an object of ports")
+                            .arg(at(where, QStringLiteral("ports"))));
         s.ports = ports.toObject();
         for (auto it = s.ports.begin(); it != s.ports.end(); ++it)
             if (!it.value().isObject())
@@ -192,8 +195,9 @@ bool parseNetwork(const QByteArray &json, const QString &file, NetworkDescriptio
             !string(v.json, "kind", where, true, &v.kind, &why))
             return fail(why);
         if (!validName(v.name))
-            return fail(NetworkFileTr::tr("%1: \"%2\" is no name (letters, digits, _ and -, at most 32)")
-                            .arg(at(where, QStringLiteral("name")), v.name));
+            return fail(
+                NetworkFileTr::tr("%1: \"%2\" is no name (letters, digits, _ and -, at most 32)")
+                    .arg(at(where, QStringLiteral("name")), v.name));
         if (names.contains(v.name))
             return fail(NetworkFileTr::tr("%1: a second \"%2\"; names are unique")
                             .arg(at(where, QStringLiteral("name")), v.name));
@@ -221,7 +225,8 @@ bool parseNetwork(const QByteArray &json, const QString &file, NetworkDescriptio
                 !string(o, "name", where, false, &w.name, &why) || !array(o, "ends", &ends, &why))
                 return fail(why);
         } else {
-            return fail(NetworkFileTr::tr("%1: needs a list of ends, [\"a/CP2\", \"b/CP2\"]").arg(where));
+            return fail(
+                NetworkFileTr::tr("%1: needs a list of ends, [\"a/CP2\", \"b/CP2\"]").arg(where));
         }
         if (wireNames.contains(w.name))
             return fail(NetworkFileTr::tr("%1: a second wire \"%2\"").arg(where, w.name));
@@ -230,8 +235,8 @@ bool parseNetwork(const QByteArray &json, const QString &file, NetworkDescriptio
             return fail(NetworkFileTr::tr("%1: a wire joins at least two ends").arg(where));
         for (qsizetype k = 0; k < ends.size(); ++k) {
             if (!ends[k].isString())
-                return fail(
-                    NetworkFileTr::tr("%1: needs \"STATION/PORT\" or a device's name").arg(item(where, k)));
+                return fail(NetworkFileTr::tr("%1: needs \"STATION/PORT\" or a device's name")
+                                .arg(item(where, k)));
             w.ends << ends[k].toString();
         }
         d->wires.push_back(w);
@@ -257,7 +262,7 @@ bool parseNetwork(const QByteArray &json, const QString &file, NetworkDescriptio
                           int(o.contains(QLatin1String("tcp")));
         if (kinds != 1)
             return fail(NetworkFileTr::tr("%1: a bridge goes to one of \"pty\": true, \"serial\": "
-                               "\"/dev/ttyUSB0\", \"tcp\": \"HOST:PORT\"")
+                                          "\"/dev/ttyUSB0\", \"tcp\": \"HOST:PORT\"")
                             .arg(where));
         if (o.contains(QLatin1String("pty"))) {
             b.kind = BridgeDescription::Kind::Pty;

@@ -181,8 +181,9 @@ public:
                  m_master ? m_master->port->name : m_members.front().port->name,
                  {},
                  SharedLinkTr::tr("CPU Link exchange among %1 (%2 ms); no frames: the "
-                        "manual does not publish them")
-                     .arg(who.isEmpty() ? SharedLinkTr::tr("no station") : who.join(QStringLiteral(", ")))
+                                  "manual does not publish them")
+                     .arg(who.isEmpty() ? SharedLinkTr::tr("no station")
+                                        : who.join(QStringLiteral(", ")))
                      .arg(cycle)});
         }
         m_next = now + cycle * 1000;
@@ -259,9 +260,11 @@ public:
                  m_wire->name,
                  m_members.front().port->name,
                  {},
-                 ok ? SharedLinkTr::tr("Parallel Link exchange; no frames: the manual does not publish "
-                             "them")
-                    : SharedLinkTr::tr("Parallel Link: no exchange, the other station does not answer")});
+                 ok ? SharedLinkTr::tr(
+                          "Parallel Link exchange; no frames: the manual does not publish "
+                          "them")
+                    : SharedLinkTr::tr(
+                          "Parallel Link: no exchange, the other station does not answer")});
         m_next = now + m_cycleUs;
     }
 
@@ -292,8 +295,8 @@ bool makeSharedLinks(Network *network, std::vector<std::unique_ptr<Actor>> *grou
                 parallel.push_back(m);
         }
         if (!cpu.empty() && !parallel.empty()) {
-            *error =
-                SharedLinkTr::tr("wire %1: CPU Link and Parallel Link cannot share a wire").arg(wire->name);
+            *error = SharedLinkTr::tr("wire %1: CPU Link and Parallel Link cannot share a wire")
+                         .arg(wire->name);
             return false;
         }
         if (!cpu.empty()) {
@@ -312,8 +315,8 @@ bool makeSharedLinks(Network *network, std::vector<std::unique_ptr<Actor>> *grou
             for (const Member &m : parallel)
                 masters += m.port->config().parallelMaster ? 1 : 0;
             if (parallel.size() > 2 || masters != 1) {
-                *error =
-                    SharedLinkTr::tr("wire %1: Parallel Link joins one master and one slave").arg(wire->name);
+                *error = SharedLinkTr::tr("wire %1: Parallel Link joins one master and one slave")
+                             .arg(wire->name);
                 return false;
             }
             groups->push_back(

@@ -24,7 +24,8 @@ struct MasterFrame {
     int firstBit = 0;                // the reply's bit (across its units) of bits[0]
 };
 
-// A VB-1COM module's buffer memory and what it is doing (Vigor M/VB/VH communication manual, B-4-4).
+// A VB-1COM module's buffer memory and what it is doing (Vigor M/VB/VH communication manual,
+// B-4-4).
 struct ModuleState {
     std::vector<std::int32_t> bfm; // #0 .. #2256
     bool attached = false;         // the port is in the network

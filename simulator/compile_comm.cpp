@@ -4,9 +4,10 @@
 
 #include <variant>
 
-// The instructions of the Vigor M/VB/VH communication manual's communication programs: the ones that build and read frames
-// (SWAP, ASCI, HEX, SMOV, VRRD, DDIV) and the ones that drive a port (LINK, MBUS, RS, FROM / TO;
-// PL110 SEND, COM / EXP). docs/simulator.md and docs/network.md say what each does.
+// The instructions of the Vigor M/VB/VH communication manual's communication programs: the ones
+// that build and read frames (SWAP, ASCI, HEX, SMOV, VRRD, DDIV) and the ones that drive a port
+// (LINK, MBUS, RS, FROM / TO; PL110 SEND, COM / EXP). docs/simulator.md and docs/network.md say
+// what each does.
 
 namespace rung::simulator::detail {
 
@@ -57,8 +58,9 @@ void Compiler::compileText(const model::Instruction &ins, Step &s) {
         if (!o)
             return 0;
         if (o->kind != model::Operand::Kind::Constant || o->modified()) {
-            error(ins,
-                  CompilerTr::tr("%1 needs a constant as operand %2").arg(ins.spec->mnemonic).arg(i + 1));
+            error(ins, CompilerTr::tr("%1 needs a constant as operand %2")
+                           .arg(ins.spec->mnemonic)
+                           .arg(i + 1));
             return 0;
         }
         return static_cast<int>(o->constant.value);
@@ -92,8 +94,9 @@ void Compiler::compileText(const model::Instruction &ins, Step &s) {
         s.bit = systemBit(model::SystemRole::HexDigits);
         // The digits moved are m1 down to m1 - m2 + 1 of S and n down to n - m2 + 1 of D.
         if (!m_muted && (s.count > m1 || s.count > s.slot))
-            error(ins, CompilerTr::tr("%1 moves %2 digits from digit %3 to digit %4: the digits would run "
-                              "below digit 1")
+            error(ins, CompilerTr::tr(
+                           "%1 moves %2 digits from digit %3 to digit %4: the digits would run "
+                           "below digit 1")
                            .arg(ins.spec->mnemonic)
                            .arg(s.count)
                            .arg(m1)
@@ -111,7 +114,9 @@ void Compiler::compileText(const model::Instruction &ins, Step &s) {
             if (m_target.area(a).key == QLatin1String(areaKey))
                 s.x.index = m_layout->word(model::Address{a, k, -1});
         if (s.x.index < 0 && !m_muted)
-            error(ins, CompilerTr::tr("%1 has no variable resistor %2").arg(m_target.displayName).arg(k));
+            error(
+                ins,
+                CompilerTr::tr("%1 has no variable resistor %2").arg(m_target.displayName).arg(k));
         break;
     }
     default:
@@ -218,8 +223,8 @@ void Compiler::compileComm(const model::Instruction &ins, Step &s) {
         c.m = sourceOf(ins, 1);
         c.n = sourceOf(ins, 3);
         const model::Operand *data = operand(ins, 2);
-        const bool constant = data && data->kind == model::Operand::Kind::Constant &&
-                              c.kind == CommKind::ModuleWrite;
+        const bool constant =
+            data && data->kind == model::Operand::Kind::Constant && c.kind == CommKind::ModuleWrite;
         if (data && (resolvedAtRunTime(*data) || constant)) {
             // One word through the step: a constant (TOP K1 K0 H7096 K1), or a group the
             // engine resolves each time (K2M30).

@@ -319,8 +319,8 @@ private:
     void shiftDigits(const Step &s, std::size_t step);
     void doubleDivide(const Step &s, std::size_t step);
     // engine_comm.cpp: a communication instruction in the scan (every scan, ON or OFF), and
-    // the communication work after the user program (Vigor M/VB/VH communication manual, B-3-4: "after the PLC completes
-    // the user program").
+    // the communication work after the user program (Vigor M/VB/VH communication manual, B-3-4:
+    // "after the PLC completes the user program").
     void communicate(const Step &s, std::size_t step, bool on);
     void serviceComms();
     qint64 commNowUs() const;

@@ -8,10 +8,10 @@
 #include <algorithm>
 
 // The communication instructions (docs/network.md): LINK and MBUS work through their table,
-// RS sends and receives, after the user program (Vigor M/VB/VH communication manual, B-3-4: "nearly all" modes "do their
-// communication work after the PLC completes the user program"). The bytes go through the
-// station's ports (model/comm/plc_port.h) and the protocols through comms' codecs behind
-// model::MasterProtocol; the engine knows neither the network nor comms.
+// RS sends and receives, after the user program (Vigor M/VB/VH communication manual, B-3-4: "nearly
+// all" modes "do their communication work after the PLC completes the user program"). The bytes go
+// through the station's ports (model/comm/plc_port.h) and the protocols through comms' codecs
+// behind model::MasterProtocol; the engine knows neither the network nor comms.
 
 namespace rung::simulator {
 
@@ -345,16 +345,17 @@ void Engine::serviceMaster(std::size_t task) {
     const std::int32_t sets = m_words[static_cast<std::size_t>(c.first)];
     if (sets < 1 || sets > model::kLinkMaxSets ||
         1 + model::kLinkSetRegisters * sets > c.firstWords) {
-        runtimeError(static_cast<std::size_t>(c.step),
-                     sets < 1 || sets > model::kLinkMaxSets
-                         ? EngineTr::tr("operation error: the communication table holds %1 sets; it "
-                                  "takes 1 to %2")
-                               .arg(sets)
-                               .arg(model::kLinkMaxSets)
-                         : EngineTr::tr("operation error: a table of %1 sets needs %2 registers, past "
-                                  "the end of its area")
-                               .arg(sets)
-                               .arg(1 + model::kLinkSetRegisters * sets));
+        runtimeError(
+            static_cast<std::size_t>(c.step),
+            sets < 1 || sets > model::kLinkMaxSets
+                ? EngineTr::tr("operation error: the communication table holds %1 sets; it "
+                               "takes 1 to %2")
+                      .arg(sets)
+                      .arg(model::kLinkMaxSets)
+                : EngineTr::tr("operation error: a table of %1 sets needs %2 registers, past "
+                               "the end of its area")
+                      .arg(sets)
+                      .arg(1 + model::kLinkSetRegisters * sets));
         return;
     }
     if (t.set >= sets)
@@ -404,9 +405,10 @@ void Engine::serviceSerial() {
         if (active >= 0) {
             // "More than one RS instruction can be programmed but only one may be active at
             // any one time" (B-3-9).
-            runtimeError(static_cast<std::size_t>(m_program->comms[k].step),
-                         EngineTr::tr("operation error: another RS is active; only one may be active "
-                                "at a time, this one does nothing"));
+            runtimeError(
+                static_cast<std::size_t>(m_program->comms[k].step),
+                EngineTr::tr("operation error: another RS is active; only one may be active "
+                             "at a time, this one does nothing"));
             continue;
         }
         active = static_cast<int>(k);
@@ -441,11 +443,12 @@ void Engine::serviceSerial() {
         const std::int32_t m = value(c.m);
         const int words = bytes8 ? m : (m + 1) / 2;
         if (m < 0 || m > 256 || words > c.firstWords) {
-            runtimeError(static_cast<std::size_t>(c.step),
-                         EngineTr::tr("operation error: %1 data to send from a block that ends after "
-                                "%2 words; nothing is sent")
-                             .arg(m)
-                             .arg(c.firstWords));
+            runtimeError(
+                static_cast<std::size_t>(c.step),
+                EngineTr::tr("operation error: %1 data to send from a block that ends after "
+                             "%2 words; nothing is sent")
+                    .arg(m)
+                    .arg(c.firstWords));
             put(m_words.data(), d.sendRequest, false);
         } else {
             QByteArray frame;
@@ -516,11 +519,12 @@ void Engine::serviceSerial() {
     const qsizetype count = m_comm.received.size();
     const qsizetype words = bytes8 ? count : (count + 1) / 2;
     if (words > c.secondWords) {
-        runtimeError(static_cast<std::size_t>(c.step),
-                     EngineTr::tr("operation error: %1 data received for a block that ends after %2 "
-                            "words; they are not stored")
-                         .arg(count)
-                         .arg(c.secondWords));
+        runtimeError(
+            static_cast<std::size_t>(c.step),
+            EngineTr::tr("operation error: %1 data received for a block that ends after %2 "
+                         "words; they are not stored")
+                .arg(count)
+                .arg(c.secondWords));
     } else {
         for (qsizetype k = 0; k < count; ++k) {
             const auto b = static_cast<std::uint32_t>(static_cast<quint8>(m_comm.received[k]));

@@ -3,10 +3,10 @@
 
 #include <QCoreApplication>
 
-// The VB-1COM serial module (Vigor M/VB/VH communication manual, B-4): its buffer memory (BFM) as FROM / TO reach it, and
-// what the module does with its port when the program sets the command bits of BFM #1. The
-// module is the station's port MODULEn in a network (docs/network.md); without one FROM / TO
-// name a module that is not there.
+// The VB-1COM serial module (Vigor M/VB/VH communication manual, B-4): its buffer memory (BFM) as
+// FROM / TO reach it, and what the module does with its port when the program sets the command bits
+// of BFM #1. The module is the station's port MODULEn in a network (docs/network.md); without one
+// FROM / TO name a module that is not there.
 
 namespace rung::simulator {
 
@@ -102,21 +102,21 @@ ModuleState &Engine::module(int number) {
     return m;
 }
 
-void Engine::moduleRead(const CommStep &c, const Step &s, std::size_t step, int bfm,
-                        int words) {
+void Engine::moduleRead(const CommStep &c, const Step &s, std::size_t step, int bfm, int words) {
     ModuleState &m = module(c.module);
     if (!m.attached) {
         runtimeError(step, EngineTr::tr("operation error: no special module %1 is connected (in a "
-                                  "network a VB-1COM is the station's port MODULE%1)")
+                                        "network a VB-1COM is the station's port MODULE%1)")
                                .arg(c.module));
         return;
     }
     if (words < 1 || words > c.firstWords || !readable(bfm) || !readable(bfm + words - 1)) {
-        runtimeError(step, EngineTr::tr("operation error: buffer memory #%1..#%2 of module %3 does not "
+        runtimeError(step,
+                     EngineTr::tr("operation error: buffer memory #%1..#%2 of module %3 does not "
                                   "exist or the block runs past its area; nothing is read")
-                               .arg(bfm)
-                               .arg(bfm + words - 1)
-                               .arg(c.module));
+                         .arg(bfm)
+                         .arg(bfm + words - 1)
+                         .arg(c.module));
         return;
     }
     if (c.first < 0) { // a digit group: one word, written back to its bits after the step
@@ -127,22 +127,24 @@ void Engine::moduleRead(const CommStep &c, const Step &s, std::size_t step, int 
         storeWord(static_cast<std::size_t>(c.first + k), m.bfm[std::size_t(slot(bfm + k))], 16);
 }
 
-void Engine::moduleWrite(const CommStep &c, const Step &s, std::size_t step, int bfm,
-                         int words) {
+void Engine::moduleWrite(const CommStep &c, const Step &s, std::size_t step, int bfm, int words) {
     ModuleState &m = module(c.module);
     if (!m.attached) {
         runtimeError(step, EngineTr::tr("operation error: no special module %1 is connected (in a "
-                                  "network a VB-1COM is the station's port MODULE%1)")
+                                        "network a VB-1COM is the station's port MODULE%1)")
                                .arg(c.module));
         return;
     }
     if (words < 1 || words > c.firstWords || !writable(bfm) || !writable(bfm + words - 1)) {
-        runtimeError(step, EngineTr::tr("operation error: buffer memory #%1..#%2 of module %3 cannot "
-                                  "be written (B-4-4 marks it R, or it does not exist); nothing "
-                                  "is written")
-                               .arg(bfm)
-                               .arg(bfm + words - 1)
-                               .arg(c.module));
+        runtimeError(
+            step,
+            EngineTr::tr(
+                "operation error: buffer memory #%1..#%2 of module %3 cannot "
+                "be written (the module's table marks it read-only, or it does not exist); nothing "
+                "is written")
+                .arg(bfm)
+                .arg(bfm + words - 1)
+                .arg(c.module));
         return;
     }
     for (int k = 0; k < words; ++k)

@@ -3,9 +3,9 @@
 
 #include <QCoreApplication>
 
-// The Vigor instructions the Vigor M/VB/VH communication manual's communication programs build and read frames with (SWAP,
-// ASCI, HEX, SMOV) and DDIV, which its MBUS example scales with. The manual defines them by
-// those programs only; docs/simulator.md gives each reading and what it rests on.
+// The Vigor instructions the Vigor M/VB/VH communication manual's communication programs build and
+// read frames with (SWAP, ASCI, HEX, SMOV) and DDIV, which its MBUS example scales with. The manual
+// defines them by those programs only; docs/simulator.md gives each reading and what it rests on.
 
 namespace rung::simulator {
 
@@ -23,8 +23,8 @@ int hexValue(std::uint32_t c) {
 
 } // namespace
 
-// SWAP D (FNC 147): "the high and low bytes of D" exchanged; Vigor M/VB/VH communication manual, B-3-9 swaps the value a
-// Computer Link reply carries low byte first.
+// SWAP D (FNC 147): "the high and low bytes of D" exchanged; Vigor M/VB/VH communication manual,
+// B-3-9 swaps the value a Computer Link reply carries low byte first.
 void Engine::swapBytes(const Step &s) {
     const auto v = static_cast<std::uint32_t>(m_words[static_cast<std::size_t>(s.dest)]);
     storeWord(static_cast<std::size_t>(s.dest), ((v & 0xFFu) << 8) | ((v >> 8) & 0xFFu), 16);
@@ -37,11 +37,12 @@ void Engine::toAscii(const Step &s, std::size_t step) {
     const bool bytes = readBit(s.bit);
     const int words = bytes ? s.count : (s.count + 1) / 2;
     if (words > s.y.constant) {
-        runtimeError(step, EngineTr::tr("operation error: %1 characters need %2 words from the "
+        runtimeError(step,
+                     EngineTr::tr("operation error: %1 characters need %2 words from the "
                                   "destination, past the end of its area; the instruction is not "
                                   "executed")
-                               .arg(s.count)
-                               .arg(words));
+                         .arg(s.count)
+                         .arg(words));
         return;
     }
     const auto value =
@@ -69,8 +70,8 @@ void Engine::fromAscii(const Step &s, std::size_t step) {
     const int words = bytes ? s.count : (s.count + 1) / 2;
     if (s.x.index < 0 || words > s.y.constant) {
         runtimeError(step, EngineTr::tr("operation error: %1 characters need %2 words from the "
-                                  "source, past the end of its area; the instruction is not "
-                                  "executed")
+                                        "source, past the end of its area; the instruction is not "
+                                        "executed")
                                .arg(s.count)
                                .arg(words));
         return;
@@ -83,7 +84,7 @@ void Engine::fromAscii(const Step &s, std::size_t step) {
         const int digit = hexValue(c);
         if (digit < 0) {
             runtimeError(step, EngineTr::tr("operation error: character %1 (%2H) is no hexadecimal "
-                                      "digit; the destination is unchanged")
+                                            "digit; the destination is unchanged")
                                    .arg(k + 1)
                                    .arg(QString::number(c, 16).toUpper().rightJustified(2, u'0')));
             return;
@@ -95,8 +96,8 @@ void Engine::fromAscii(const Step &s, std::size_t step) {
 
 // SMOV S m1 m2 D n: the m2 digits of S from digit m1 down go to D from digit n down; D's
 // other digits stay. Digits are BCD (S and D 0..9999, the FX rule) unless M9168 is ON, when
-// they are hexadecimal: Vigor M/VB/VH communication manual, B-4-5, SMOV D55 K2 K2 D110 K4 puts the low byte of D55
-// into the high byte of D110.
+// they are hexadecimal: Vigor M/VB/VH communication manual, B-4-5, SMOV D55 K2 K2 D110 K4 puts the
+// low byte of D55 into the high byte of D110.
 void Engine::shiftDigits(const Step &s, std::size_t step) {
     const bool hex = readBit(s.bit);
     const std::int32_t source =
@@ -107,10 +108,11 @@ void Engine::shiftDigits(const Step &s, std::size_t step) {
     if (!hex) {
         for (const std::int32_t v : {source, target})
             if (v < 0 || v > 9999) {
-                runtimeError(step, EngineTr::tr("operation error: %1 is no 4-digit BCD value (0..9999; "
+                runtimeError(step,
+                             EngineTr::tr("operation error: %1 is no 4-digit BCD value (0..9999; "
                                           "M9168 ON moves hexadecimal digits); the destination "
                                           "is unchanged")
-                                       .arg(v));
+                                 .arg(v));
                 return;
             }
         from = std::uint32_t(model::toBcd(source));

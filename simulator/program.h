@@ -255,8 +255,8 @@ enum class CommKind : std::uint8_t {
 // A communication instruction's operands (Program::comms; docs/network.md).
 struct CommStep {
     CommKind kind = CommKind::EasyLink;
-    QString port;             // the port it drives (Target::ports)
-    std::int32_t step = 0;    // its instruction
+    QString port;          // the port it drives (Target::ports)
+    std::int32_t step = 0; // its instruction
     // Its table entry: the mnemonic and the applications its port must run (the network's
     // wiring and check read them).
     const model::InstructionSpec *spec = nullptr;

@@ -178,13 +178,14 @@
 <context>
     <name>rung::app::Cli</name>
     <message>
-        <location filename="../app/cli/cli.cpp" line="+56"/>
+        <location filename="../app/cli/cli.cpp" line="+61"/>
         <location line="+48"/>
+        <location filename="../app/cli/cli_network.cpp" line="+142"/>
         <source>unexpected argument %1</source>
         <translation>váratlan argumentum: %1</translation>
     </message>
     <message>
-        <location line="-74"/>
+        <location line="-78"/>
         <source>usage:
   rungstudio-cli check FILE [--target %1] [--model M]
   rungstudio-cli convert FILE [--target T] [--model M] [--from il|ladder|project|plcopen] --to il|ladder|project|plcopen [-o OUT] [--force] [--map FILE]
@@ -203,7 +204,7 @@ A FILE utasításlista (.il), létra-szöveg (.ladder) vagy projekt (.rung).
 Kilépési kód: 0 nincs hiba, 1 a programban hiba van, 2 használati vagy I/O hiba.</translation>
     </message>
     <message>
-        <location line="+107"/>
+        <location line="+111"/>
         <source>nothing written: the list as typed would be lost</source>
         <translation>semmi sem íródott ki: a begépelt lista elveszne</translation>
     </message>
@@ -277,6 +278,7 @@ Kilépési kód: 0 nincs hiba, 1 a programban hiba van, 2 használati vagy I/O h
     </message>
     <message>
         <location line="+18"/>
+        <location filename="../app/cli/cli_network.cpp" line="+43"/>
         <location filename="../app/cli/cli_plcopen.cpp" line="+34"/>
         <location line="+3"/>
         <source>error</source>
@@ -284,6 +286,7 @@ Kilépési kód: 0 nincs hiba, 1 a programban hiba van, 2 használati vagy I/O h
     </message>
     <message>
         <location line="+1"/>
+        <location filename="../app/cli/cli_network.cpp" line="+0"/>
         <source>warning</source>
         <translation>figyelmeztetés</translation>
     </message>
@@ -1994,6 +1997,63 @@ Ctrl+Z / Ctrl+Y: visszavonás / mégis, Ctrl+görgő: nagyítás, F4: a program 
     </message>
 </context>
 <context>
+    <name>rung::app::Network</name>
+    <message>
+        <location filename="../app/cli/cli_network.cpp" line="-164"/>
+        <source>usage:</source>
+        <translation>használat:</translation>
+    </message>
+    <message>
+        <location line="+5"/>
+        <source>station %1 (%2) does not start</source>
+        <translation>a(z) %1 állomás (%2) nem indul el</translation>
+    </message>
+    <message>
+        <location line="+6"/>
+        <source>  rungstudio-cli check NET.rungnet
+  rungstudio-cli simulate NET.rungnet --scans N [--period MS] [--set STATION/DEV=VALUE@SCAN]... --trace STATION/DEV[,...] [--traffic FILE]</source>
+        <translation>  rungstudio-cli check NET.rungnet
+  rungstudio-cli simulate NET.rungnet --scans N [--period MS] [--set ÁLLOMÁS/OPERANDUS=ÉRTÉK@CIKLUS]... --trace ÁLLOMÁS/OPERANDUS[,...] [--traffic FÁJL]</translation>
+    </message>
+    <message>
+        <location line="+42"/>
+        <source>--traffic needs a file</source>
+        <translation>a --traffic után fájlnév kell</translation>
+    </message>
+    <message>
+        <location line="+5"/>
+        <source>%1: a network file names each station&apos;s PLC</source>
+        <translation>%1: a hálózatfájl minden állomás PLC-jét maga nevezi meg</translation>
+    </message>
+    <message>
+        <location line="+29"/>
+        <location line="+14"/>
+        <source>cannot write %1: %2</source>
+        <translation>%1 nem írható: %2</translation>
+    </message>
+    <message>
+        <location line="+8"/>
+        <source>%1: line %2: runtime error at step %3: %4</source>
+        <translation>%1: %2. sor: futási hiba a(z) %3. lépésnél: %4</translation>
+    </message>
+    <message>
+        <location line="+30"/>
+        <source>%1: %2: %3</source>
+        <translation>%1: %2: %3</translation>
+    </message>
+    <message>
+        <location line="+9"/>
+        <source>%1: a station&apos;s program has errors; the wiring is checked once every program starts</source>
+        <translation>%1: egy állomás programja hibás; a bekötés ellenőrzése akkor következik, ha minden program elindul</translation>
+    </message>
+    <message>
+        <location line="+15"/>
+        <source>%1: %2: %3: %4</source>
+        <extracomment>%1 the network file, %2 where in it (a wire, a station&apos;s line), %3 error or warning</extracomment>
+        <translation>%1: %2: %3: %4</translation>
+    </message>
+</context>
+<context>
     <name>rung::app::Online</name>
     <message>
         <location filename="../app/cli/cli_online.cpp" line="+17"/>
@@ -2741,14 +2801,14 @@ A read és a write kilépési kódja: 0 kész, 1 a PLC nem válaszolt vagy eluta
 <context>
     <name>rung::app::Simulate</name>
     <message>
-        <location filename="../app/cli/cli_simulate.cpp" line="+16"/>
+        <location filename="../app/cli/cli_simulate.cpp" line="+17"/>
         <source>usage: rungstudio-cli simulate FILE [--target T] [--model M] --scans N [--period MS] [--set DEV=VALUE@SCAN]... --trace DEV[,DEV...]
 FILE is a listing (.il), a ladder text (.ladder) or a project (.rung).</source>
         <translation>használat: rungstudio-cli simulate FÁJL [--target T] [--model M] --scans N [--period MS] [--set OPERANDUS=ÉRTÉK@CIKLUS]... --trace OPERANDUS[,OPERANDUS...]
 A FÁJL utasításlista (.il), létradiagram-szöveg (.ladder) vagy projekt (.rung).</translation>
     </message>
     <message>
-        <location line="+15"/>
+        <location line="+25"/>
         <source>%1 needs a value</source>
         <translation>%1 után érték kell</translation>
     </message>
@@ -3829,7 +3889,22 @@ Kiértékelés: %4 µs (%5..%6)</translation>
         <translation>Host Link: a válasz %1 rész és %2 karakter (%3) után megszakadt %4 ms alatt</translation>
     </message>
     <message>
-        <location filename="../comms/protocol/modbus.cpp" line="+45"/>
+        <location filename="../comms/protocol/modbus.cpp" line="+50"/>
+        <source>Modbus ASCII: a frame of %1 characters: %2</source>
+        <translation>Modbus ASCII: %1 karakteres keret: %2</translation>
+    </message>
+    <message>
+        <location line="+10"/>
+        <source>Modbus ASCII: &quot;%1&quot; is no hex digit pair</source>
+        <translation>Modbus ASCII: a(z) „%1” nem hexadecimális számjegypár</translation>
+    </message>
+    <message>
+        <location line="+9"/>
+        <source>Modbus ASCII: wrong LRC (received %1, computed %2): noise on the line or a wrong baud rate or parity</source>
+        <translation>Modbus ASCII: hibás LRC (érkezett %1, számított %2): zaj a vonalon, vagy hibás átviteli sebesség vagy paritás</translation>
+    </message>
+    <message>
+        <location line="+25"/>
         <source>illegal function (exception %1h): the device does not support this function code</source>
         <translation>érvénytelen funkció (%1h kivétel): az eszköz nem támogatja ezt a funkciókódot</translation>
     </message>
@@ -3879,7 +3954,7 @@ Kiértékelés: %4 µs (%5..%6)</translation>
         <translation>ismeretlen kivételkód: %1h</translation>
     </message>
     <message>
-        <location filename="../comms/protocol/modbus_master.cpp" line="+78"/>
+        <location filename="../comms/protocol/modbus_master.cpp" line="+82"/>
         <source>Modbus RTU: the reply starts %1, not an answer to function %2h</source>
         <translation>Modbus RTU: a válasz így kezdődik: %1, ez nem a(z) %2h funkció válasza</translation>
     </message>
@@ -3895,7 +3970,7 @@ Kiértékelés: %4 µs (%5..%6)</translation>
     </message>
     <message>
         <location line="+15"/>
-        <location filename="../comms/protocol/modbus_slave.cpp" line="+169"/>
+        <location filename="../comms/protocol/modbus_slave.cpp" line="+210"/>
         <source>Modbus TCP: not a Modbus header (protocol %1, length %2): %3</source>
         <translation>Modbus TCP: nem Modbus fejléc (protokoll: %1, hossz: %2): %3</translation>
     </message>
@@ -3910,7 +3985,22 @@ Kiértékelés: %4 µs (%5..%6)</translation>
         <translation>Modbus TCP: a válasz a(z) %1. tranzakcióra szól, a kérés %2 volt</translation>
     </message>
     <message>
-        <location line="+12"/>
+        <location line="+21"/>
+        <source>Modbus ASCII: no CR LF within %1 characters of the colon</source>
+        <translation>Modbus ASCII: a kettőspont után %1 karakteren belül nincs CR LF</translation>
+    </message>
+    <message>
+        <location line="+11"/>
+        <source>Modbus ASCII: %1 characters after the reply&apos;s CR LF</source>
+        <translation>Modbus ASCII: %1 karakter a válasz CR LF-je után</translation>
+    </message>
+    <message>
+        <location line="+6"/>
+        <source>Modbus ASCII: a reply without a function code</source>
+        <translation>Modbus ASCII: válasz funkciókód nélkül</translation>
+    </message>
+    <message>
+        <location line="+8"/>
         <source>Modbus: unit %1 answered, unit %2 was asked</source>
         <translation>Modbus: a(z) %1. egység válaszolt, a(z) %2. egységet kérdeztük</translation>
     </message>
@@ -4166,12 +4256,17 @@ Kiértékelés: %4 µs (%5..%6)</translation>
         <translation>Host Link: a(z) %1 parancs %3 részben túlmegy %2 karakteren, hosszabb bármely parancsnál; válasz: 18-as végkód</translation>
     </message>
     <message>
-        <location filename="../comms/protocol/modbus_slave.cpp" line="-22"/>
+        <location filename="../comms/protocol/modbus_slave.cpp" line="-63"/>
         <source>Modbus: %1 bytes arrived before the request was answered; the %2 beyond the first %3 were dropped</source>
         <translation>Modbus: %1 bájt érkezett, mielőtt a kérés választ kapott volna; az első %3 utáni %2 bájt eldobva</translation>
     </message>
     <message>
-        <location line="+53"/>
+        <location line="+22"/>
+        <source>Modbus ASCII: no CR LF within %1 characters of the colon: dropped</source>
+        <translation>Modbus ASCII: a kettőspont után %1 karakteren belül nincs CR LF: eldobva</translation>
+    </message>
+    <message>
+        <location line="+72"/>
         <source>Modbus RTU: a frame of function %1h runs past %2 bytes, the longest an RTU frame can be: dropped with what follows until the line is quiet</source>
         <translation>Modbus RTU: a(z) %1h funkció kerete túlmegy %2 bájton, ami egy RTU keret legnagyobb hossza: eldobva a vonal elcsendesedéséig érkezőkkel együtt</translation>
     </message>
@@ -6669,6 +6764,74 @@ Kiértékelés: %4 µs (%5..%6)</translation>
     </message>
 </context>
 <context>
+    <name>rung::model::PortConfig</name>
+    <message>
+        <location filename="../model/comm/port_config.cpp" line="+56"/>
+        <source>%1: needs a whole number from %2 to %3</source>
+        <translation>%1: %2 és %3 közötti egész szám kell</translation>
+    </message>
+    <message>
+        <location line="+23"/>
+        <source>%1: needs &quot;%2&quot; or &quot;%3&quot;</source>
+        <translation>%1: „%2” vagy „%3” kell</translation>
+    </message>
+    <message>
+        <location line="+39"/>
+        <source>%1: %2 has no serial port a network can use</source>
+        <translation>%1: a(z) %2 PLC-nek nincs hálózatban használható soros portja</translation>
+    </message>
+    <message>
+        <location line="+2"/>
+        <source>%1: %2 has no port %3 (its ports: %4)</source>
+        <translation>%1: a(z) %2 PLC-nek nincs %3 portja (a portjai: %4)</translation>
+    </message>
+    <message>
+        <location line="+5"/>
+        <source>%1: the %2 %3 has no port %4</source>
+        <translation>%1: a(z) %2 %3 típusnak nincs %4 portja</translation>
+    </message>
+    <message>
+        <location line="+13"/>
+        <source>%1: needs the name of an application</source>
+        <translation>%1: egy alkalmazás neve kell</translation>
+    </message>
+    <message>
+        <location line="+9"/>
+        <source>%1: %2 is no application of %3 (%4)</source>
+        <translation>%1: a(z) %2 nem alkalmazása a(z) %3 portnak (%4)</translation>
+    </message>
+    <message>
+        <location line="+6"/>
+        <source>%1: the %2 %3 has no %4 on %5 (it has: %6)</source>
+        <translation>%1: a(z) %2 %3 típuson a(z) %5 porton nincs %4 (ami van: %6)</translation>
+    </message>
+    <message>
+        <location line="+15"/>
+        <source>%1: %2 takes no setting &quot;%3&quot;</source>
+        <translation>%1: a(z) %2 nem fogad „%3” beállítást</translation>
+    </message>
+    <message>
+        <location line="+13"/>
+        <source>%1: %2 is not a rate of %3 (%4)</source>
+        <translation>%1: a(z) %2 nem átviteli sebessége a(z) %3 alkalmazásnak (%4)</translation>
+    </message>
+    <message>
+        <location line="+14"/>
+        <source>%1: &quot;%2&quot; is no character format (data bits 7 or 8, parity N, E or O, stop bits 1 or 2: 8N1, 7E1)</source>
+        <translation>%1: a(z) „%2” nem karakterformátum (adatbitek 7 vagy 8, paritás N, E vagy O, stopbitek 1 vagy 2: 8N1, 7E1)</translation>
+    </message>
+    <message>
+        <location line="+7"/>
+        <source>%1: %2 always uses %3</source>
+        <translation>%1: a(z) %2 mindig %3 formátumot használ</translation>
+    </message>
+    <message>
+        <location line="+27"/>
+        <source>%1: needs an object of settings</source>
+        <translation>%1: beállításokat tartalmazó objektum kell</translation>
+    </message>
+</context>
+<context>
     <name>rung::model::PowerFlow</name>
     <message>
         <location filename="../model/image/power_flow.cpp" line="+416"/>
@@ -6696,7 +6859,7 @@ Kiértékelés: %4 µs (%5..%6)</translation>
 <context>
     <name>rung::model::Project</name>
     <message>
-        <location filename="../model/project/project.cpp" line="+209"/>
+        <location filename="../model/project/project.cpp" line="+211"/>
         <source>Line %1, column %2 (byte %3): the file is not valid JSON (%4)</source>
         <translation>%1. sor, %2. oszlop (%3. bájt): a fájl nem érvényes JSON (%4)</translation>
     </message>
@@ -6721,7 +6884,7 @@ Kiértékelés: %4 µs (%5..%6)</translation>
         <translation>A &quot;schema&quot; pozitív szám kell legyen</translation>
     </message>
     <message>
-        <location line="+14"/>
+        <location line="+15"/>
         <source>&quot;target&quot;: unknown PLC family &quot;%1&quot;</source>
         <translation>&quot;target&quot;: ismeretlen PLC-család: &quot;%1&quot;</translation>
     </message>
@@ -6731,7 +6894,7 @@ Kiértékelés: %4 µs (%5..%6)</translation>
         <translation>&quot;model&quot;: a(z) %1 rendszernek nincs &quot;%2&quot; modellje</translation>
     </message>
     <message>
-        <location line="+16"/>
+        <location line="+22"/>
         <location line="+67"/>
         <source>%1: an object with &quot;device&quot; and &quot;name&quot; is expected</source>
         <translation>%1: &quot;device&quot; és &quot;name&quot; mezőket tartalmazó objektum a várt</translation>
@@ -6862,7 +7025,7 @@ Kiértékelés: %4 µs (%5..%6)</translation>
         <translation>%1: a fájl nagyobb %2 MB-nál, ennél többet a Rung Studio nem olvas be</translation>
     </message>
     <message>
-        <location filename="../model/project/project.cpp" line="+152"/>
+        <location filename="../model/project/project.cpp" line="+165"/>
         <source>%1: cannot write the file (%2)</source>
         <translation>%1: a fájl nem írható (%2)</translation>
     </message>
@@ -6934,7 +7097,7 @@ Kiértékelés: %4 µs (%5..%6)</translation>
     </message>
     <message>
         <location line="+4"/>
-        <location filename="../model/target/target_pl110.cpp" line="+87"/>
+        <location filename="../model/target/target_pl110.cpp" line="+129"/>
         <location filename="../model/target/target_vpc.cpp" line="+61"/>
         <source>timers</source>
         <translation>időzítők</translation>
@@ -6942,7 +7105,7 @@ Kiértékelés: %4 µs (%5..%6)</translation>
     <message>
         <location line="+8"/>
         <location filename="../model/target/target_pl110.cpp" line="+5"/>
-        <location filename="../model/target/target_vigor.cpp" line="+127"/>
+        <location filename="../model/target/target_vigor.cpp" line="+241"/>
         <location filename="../model/target/target_vpc.cpp" line="+5"/>
         <source>counters</source>
         <translation>számlálók</translation>
@@ -6970,7 +7133,7 @@ Kiértékelés: %4 µs (%5..%6)</translation>
     <message>
         <location line="+2"/>
         <location filename="../model/target/target_pl110.cpp" line="+72"/>
-        <location filename="../model/target/target_vigor.cpp" line="+35"/>
+        <location filename="../model/target/target_vigor.cpp" line="+43"/>
         <source>ON for the first scan</source>
         <translation>az első ciklusban BE</translation>
     </message>
@@ -7046,7 +7209,7 @@ Kiértékelés: %4 µs (%5..%6)</translation>
     <message>
         <location line="+5"/>
         <location filename="../model/target/target_pl110.cpp" line="+85"/>
-        <location filename="../model/target/target_vigor.cpp" line="+65"/>
+        <location filename="../model/target/target_vigor.cpp" line="+95"/>
         <location filename="../model/target/target_vpc.cpp" line="+5"/>
         <source>Start a block with a normally open contact</source>
         <translation>Blokk kezdése záró érintkezővel</translation>
@@ -7386,12 +7549,12 @@ Kiértékelés: %4 µs (%5..%6)</translation>
         <translation>A program vége</translation>
     </message>
     <message>
-        <location filename="../model/target/target_pl110.cpp" line="-383"/>
+        <location filename="../model/target/target_pl110.cpp" line="-425"/>
         <source>IF contact: ON while S1 ? S2 is true</source>
         <translation>IF érintkező: BE, amíg S1 ? S2 igaz</translation>
     </message>
     <message>
-        <location line="+27"/>
+        <location line="+69"/>
         <source>digital inputs</source>
         <translation>digitális bemenetek</translation>
     </message>
@@ -7521,7 +7684,7 @@ Kiértékelés: %4 µs (%5..%6)</translation>
     </message>
     <message>
         <location line="+2"/>
-        <location filename="../model/target/target_vigor.cpp" line="-145"/>
+        <location filename="../model/target/target_vigor.cpp" line="-174"/>
         <source>minimum scan time (0.1 ms)</source>
         <translation>legkisebb ciklusidő (0,1 ms)</translation>
     </message>
@@ -7557,7 +7720,32 @@ Kiértékelés: %4 µs (%5..%6)</translation>
         <translation>az időzített megszakításokat és a léptetőmotor rámpáját a szimulátor nem modellezi (megszakításprogram nem támogatott)</translation>
     </message>
     <message>
-        <location line="+8"/>
+        <location line="-179"/>
+        <source>MODBUS RTU slave</source>
+        <translation>MODBUS RTU slave</translation>
+    </message>
+    <message>
+        <location line="+9"/>
+        <source>MODBUS RTU master (COM / EXP)</source>
+        <translation>MODBUS RTU master (COM / EXP)</translation>
+    </message>
+    <message>
+        <location line="+5"/>
+        <source>COM1, the RS-485 port</source>
+        <translation>COM1, az RS-485 port</translation>
+    </message>
+    <message>
+        <location line="+4"/>
+        <source>EXP1, the expansion port</source>
+        <translation>EXP1, a bővítőport</translation>
+    </message>
+    <message>
+        <location line="+4"/>
+        <source>COM2, the USB programming port (57600 8N1)</source>
+        <translation>COM2, az USB programozóport (57600 8N1)</translation>
+    </message>
+    <message>
+        <location line="+165"/>
         <source>the input filters and analog settings are not modelled: an analog input reads the value set in the simulator</source>
         <translation>a bemeneti szűrőket és az analóg beállításokat a szimulátor nem modellezi: az analóg bemenet a szimulátorban beállított értéket olvassa</translation>
     </message>
@@ -7713,9 +7901,9 @@ Kiértékelés: %4 µs (%5..%6)</translation>
     </message>
     <message>
         <location line="+11"/>
-        <location filename="../model/target/target_vigor.cpp" line="+175"/>
-        <location line="+64"/>
-        <location line="+78"/>
+        <location filename="../model/target/target_vigor.cpp" line="+204"/>
+        <location line="+74"/>
+        <location line="+102"/>
         <source>number of words</source>
         <translation>szavak száma</translation>
     </message>
@@ -7805,12 +7993,12 @@ Kiértékelés: %4 µs (%5..%6)</translation>
         <translation>Kijelzőparaméter elhelyezése</translation>
     </message>
     <message>
-        <location filename="../model/target/target_vigor.cpp" line="-470"/>
+        <location filename="../model/target/target_vigor.cpp" line="-656"/>
         <source>Compare contact: ON while S1 ? S2</source>
         <translation>Összehasonlító érintkező: BE, amíg S1 ? S2</translation>
     </message>
     <message>
-        <location line="+48"/>
+        <location line="+162"/>
         <location filename="../model/target/target_vpc.cpp" line="-68"/>
         <source>inputs</source>
         <translation>bemenetek</translation>
@@ -7899,7 +8087,7 @@ Kiértékelés: %4 µs (%5..%6)</translation>
         <translation>indexregiszterek</translation>
     </message>
     <message>
-        <location line="+6"/>
+        <location line="+14"/>
         <source>ON while the PLC runs</source>
         <translation>BE, amíg a PLC fut</translation>
     </message>
@@ -7919,12 +8107,7 @@ Kiértékelés: %4 µs (%5..%6)</translation>
         <translation>Az SMOV hexadecimális számjegyekkel dolgozik</translation>
     </message>
     <message>
-        <location line="+2"/>
-        <source>ON for one scan when an MBUS cycle completes</source>
-        <translation>egy ciklusig BE, amikor egy MBUS-ciklus befejeződik</translation>
-    </message>
-    <message>
-        <location line="+2"/>
+        <location line="+5"/>
         <source>current scan time (0.1 ms)</source>
         <translation>aktuális ciklusidő (0,1 ms)</translation>
     </message>
@@ -7959,7 +8142,7 @@ Kiértékelés: %4 µs (%5..%6)</translation>
         <translation>CP2 modem: a tárcsázás sikertelen</translation>
     </message>
     <message>
-        <location line="+2"/>
+        <location line="+4"/>
         <source>RS instruction send flag</source>
         <translation>RS utasítás küldésjelzője</translation>
     </message>
@@ -7989,7 +8172,7 @@ Kiértékelés: %4 µs (%5..%6)</translation>
         <translation>a CPU-kapcsolat kommunikációja sikertelen (master); M9184..M9190: 1..7. slave</translation>
     </message>
     <message>
-        <location line="+3"/>
+        <location line="+4"/>
         <source>RS communication error code</source>
         <translation>RS-kommunikáció hibakódja</translation>
     </message>
@@ -8010,6 +8193,41 @@ Kiértékelés: %4 µs (%5..%6)</translation>
     </message>
     <message>
         <location line="+2"/>
+        <source>RS: number of data left to send</source>
+        <translation>RS: a még elküldendő adatok száma</translation>
+    </message>
+    <message>
+        <location line="+2"/>
+        <source>RS: number of data received</source>
+        <translation>RS: a fogadott adatok száma</translation>
+    </message>
+    <message>
+        <location line="+2"/>
+        <source>RS, LINK and MBUS time-out, x 10 ms (0: 100 ms)</source>
+        <translation>RS, LINK és MBUS időtúllépés, x 10 ms (0: 100 ms)</translation>
+    </message>
+    <message>
+        <location line="+4"/>
+        <source>CPU link communication time-out time</source>
+        <translation>CPU-kapcsolat: kommunikációs időtúllépési idő</translation>
+    </message>
+    <message>
+        <location line="+2"/>
+        <source>CPU link: number of slave stations</source>
+        <translation>CPU-kapcsolat: a slave állomások száma</translation>
+    </message>
+    <message>
+        <location line="+2"/>
+        <source>CPU link: transfer range mode</source>
+        <translation>CPU-kapcsolat: átviteli tartomány módja</translation>
+    </message>
+    <message>
+        <location line="+2"/>
+        <source>CPU link: communication retries</source>
+        <translation>CPU-kapcsolat: kommunikációs ismétlések száma</translation>
+    </message>
+    <message>
+        <location line="+2"/>
         <source>current network scan time</source>
         <translation>aktuális hálózati ciklusidő</translation>
     </message>
@@ -8019,7 +8237,17 @@ Kiértékelés: %4 µs (%5..%6)</translation>
         <translation>legnagyobb hálózati ciklusidő</translation>
     </message>
     <message>
-        <location line="+13"/>
+        <location line="+2"/>
+        <source>CPU link: communication errors of the master; D9204..D9210 slaves 1..7</source>
+        <translation>CPU-kapcsolat: a master kommunikációs hibáinak száma; D9204..D9210: 1..7. slave</translation>
+    </message>
+    <message>
+        <location line="+5"/>
+        <source>CPU link: error code of slave 1 (D9213..D9218: slaves 2..7): 00H none, 01H time-out, 05H sum error</source>
+        <translation>CPU-kapcsolat: az 1. slave hibakódja (D9213..D9218: 2..7. slave): 00H nincs, 01H időtúllépés, 05H ellenőrzőösszeg-hiba</translation>
+    </message>
+    <message>
+        <location line="+16"/>
         <source>Start a block with a rising-edge contact</source>
         <translation>Blokk kezdése felfutó él érintkezővel</translation>
     </message>
@@ -8089,12 +8317,22 @@ Kiértékelés: %4 µs (%5..%6)</translation>
         <translation>32 bit mozgatása: S (S, S+1) a D-be (alsó szó) és a D+1-be (felső szó)</translation>
     </message>
     <message>
-        <location line="+101"/>
+        <location line="+88"/>
+        <source>module number</source>
+        <translation>modul száma</translation>
+    </message>
+    <message>
+        <location line="+4"/>
+        <source>buffer memory word</source>
+        <translation>puffermemória-szó</translation>
+    </message>
+    <message>
+        <location line="+25"/>
         <source>Write n words to special module m1, at m2, once on a rising edge</source>
         <translation>n szó írása az m1 speciális modulba, m2-től, egyszer, felfutó élre</translation>
     </message>
     <message>
-        <location line="+17"/>
+        <location line="+18"/>
         <source>Check code: the sum of n bytes from S into D, their parity into D+1 (M9161 ON: one byte a word)</source>
         <translation>Ellenőrző kód: az S-től kezdődő n bájt összege a D-be, paritásuk a D+1-be (M9161 BE: szavanként egy bájt)</translation>
     </message>
@@ -8104,17 +8342,22 @@ Kiértékelés: %4 µs (%5..%6)</translation>
         <translation>első bemenet vagy kimenet</translation>
     </message>
     <message>
-        <location line="+7"/>
+        <location line="+11"/>
+        <source>number of digits</source>
+        <translation>számjegyek száma</translation>
+    </message>
+    <message>
+        <location line="+8"/>
         <source>Convert n ASCII characters from S to hexadecimal in D</source>
         <translation>n ASCII karakter átalakítása S-től hexadecimálissá D-be</translation>
     </message>
     <message>
-        <location line="+4"/>
+        <location line="+6"/>
         <source>Convert n hexadecimal digits from S to ASCII in D</source>
         <translation>n hexadecimális számjegy átalakítása S-től ASCII-vé D-be</translation>
     </message>
     <message>
-        <location line="+10"/>
+        <location line="+13"/>
         <source>first word to send</source>
         <translation>első küldendő szó</translation>
     </message>
@@ -8124,12 +8367,12 @@ Kiértékelés: %4 µs (%5..%6)</translation>
         <translation>első fogadott szó</translation>
     </message>
     <message>
-        <location line="+7"/>
+        <location line="+8"/>
         <source>Serial communication on CP2: send m words from S, receive n words into D</source>
         <translation>Soros kommunikáció a CP2-n: m szó küldése S-től, n szó fogadása D-be</translation>
     </message>
     <message>
-        <location line="+11"/>
+        <location line="+15"/>
         <source>table</source>
         <translation>táblázat</translation>
     </message>
@@ -8139,42 +8382,127 @@ Kiértékelés: %4 µs (%5..%6)</translation>
         <translation>munkaterület</translation>
     </message>
     <message>
-        <location line="+2"/>
+        <location line="+7"/>
         <source>Easy Link between PLCs: table from S1, working area S2</source>
         <translation>Easy Link PLC-k között: táblázat S1-től, munkaterület S2</translation>
     </message>
     <message>
-        <location line="+5"/>
+        <location line="+10"/>
         <source>MODBUS master: table from S1, working area S2</source>
         <translation>MODBUS master: táblázat S1-től, munkaterület S2</translation>
     </message>
     <message>
-        <location line="+5"/>
+        <location line="+11"/>
+        <source>variable resistor</source>
+        <translation>potenciométer</translation>
+    </message>
+    <message>
+        <location line="+4"/>
         <source>Read the variable resistor (volume) VRn into D</source>
         <translation>A VRn változtatható ellenállás (potenciométer) értékének beolvasása D-be</translation>
     </message>
     <message>
-        <location line="+3"/>
+        <location line="+8"/>
         <source>Swap the high and low bytes of D</source>
         <translation>D felső és alsó bájtjának felcserélése</translation>
     </message>
     <message>
-        <location line="+6"/>
+        <location line="+9"/>
+        <source>digit position</source>
+        <translation>számjegy helye</translation>
+    </message>
+    <message>
+        <location line="+3"/>
         <source>Move m2 digits of S from digit m1 to D from digit n</source>
         <translation>S m2 számjegyének mozgatása az m1. számjegytől D-be az n. számjegytől</translation>
     </message>
     <message>
-        <location line="-224"/>
+        <location line="+9"/>
+        <source>32 bits: D, D+1 = (S1, S1+1) / (S2, S2+1), D+2, D+3 = remainder</source>
+        <translation>32 bit: D, D+1 = (S1, S1+1) / (S2, S2+1), D+2, D+3 = maradék</translation>
+    </message>
+    <message>
+        <location line="+16"/>
+        <source>Alternate: D changes state at each rising edge of the input</source>
+        <translation>Váltás: D minden felfutó élnél állapotot vált</translation>
+    </message>
+    <message>
+        <location line="-319"/>
         <source>Counter: counts rising edges, reset with RST</source>
         <translation>Számláló: a felfutó éleket számolja, törlés RST-vel</translation>
     </message>
     <message>
-        <location line="-144"/>
+        <location line="-391"/>
+        <source>Computer Link</source>
+        <translation>Computer Link</translation>
+    </message>
+    <message>
+        <location line="+9"/>
+        <source>CP1, the main unit&apos;s RS-232 port (Computer Link, 19200 bps, station 0)</source>
+        <translation>CP1, az alapegység RS-232 portja (Computer Link, 19200 bps, 0. állomás)</translation>
+    </message>
+    <message>
+        <location line="+10"/>
+        <source>CP2, the second communication port (a card or a module)</source>
+        <translation>CP2, a második kommunikációs port (kártya vagy modul)</translation>
+    </message>
+    <message>
+        <location line="+6"/>
+        <source>Easy Link</source>
+        <translation>Easy Link</translation>
+    </message>
+    <message>
+        <location line="+4"/>
+        <source>CPU Link</source>
+        <translation>CPU Link</translation>
+    </message>
+    <message>
+        <location line="+16"/>
+        <source>Parallel Link</source>
+        <translation>Parallel Link</translation>
+    </message>
+    <message>
+        <location line="+14"/>
+        <source>MODBUS</source>
+        <translation>MODBUS</translation>
+    </message>
+    <message>
+        <location line="+9"/>
+        <source>Non Protocol</source>
+        <translation>Non Protocol (protokoll nélküli)</translation>
+    </message>
+    <message>
+        <location line="+8"/>
+        <source>CP3, the VB-CADP&apos;s RS-485 port (Computer Link, 19200 bps, station 0..99)</source>
+        <translation>CP3, a VB-CADP RS-485 portja (Computer Link, 19200 bps, 0..99. állomás)</translation>
+    </message>
+    <message>
+        <location line="+14"/>
+        <source>VB-1COM serial module</source>
+        <translation>VB-1COM soros modul</translation>
+    </message>
+    <message>
+        <location line="+7"/>
+        <source>a VB-1COM serial module, numbered as FROM / TO name it</source>
+        <translation>VB-1COM soros modul, a FROM / TO által használt számmal</translation>
+    </message>
+    <message>
+        <location line="+100"/>
+        <source>variable resistors (panel)</source>
+        <translation>potenciométerek (előlap)</translation>
+    </message>
+    <message>
+        <location line="+20"/>
         <source>RS, CCD, ASCI, HEX: 8-bit mode, one byte a word (OFF: 16-bit)</source>
         <translation>RS, CCD, ASCI, HEX: 8 bites mód, szavanként egy bájt (KI: 16 bites)</translation>
     </message>
     <message>
-        <location line="+150"/>
+        <location line="+6"/>
+        <source>ON for one scan when LINK or MBUS completed its table</source>
+        <translation>egy ciklusig ON, amikor a LINK vagy az MBUS végigért a táblázatán</translation>
+    </message>
+    <message>
+        <location line="+174"/>
         <source>Step ladder: start of step S</source>
         <translation>Léptetőlánc: az S lépés kezdete</translation>
     </message>
@@ -8264,7 +8592,7 @@ Kiértékelés: %4 µs (%5..%6)</translation>
         <translation>D = az S BCD számjegyek értéke</translation>
     </message>
     <message>
-        <location line="+19"/>
+        <location line="+36"/>
         <source>Read n words of special module m1, from m2</source>
         <translation>n szó olvasása az m1 speciális modul m2 címétől</translation>
     </message>
@@ -8496,6 +8824,399 @@ Kiértékelés: %4 µs (%5..%6)</translation>
     </message>
 </context>
 <context>
+    <name>rung::network::Devices</name>
+    <message>
+        <location filename="../network/devices.cpp" line="+22"/>
+        <source>%1.baud: needs a rate from 50 to 1000000</source>
+        <translation>%1.baud: 50 és 1000000 közötti átviteli sebesség kell</translation>
+    </message>
+    <message>
+        <location line="+5"/>
+        <source>%1.frame: &quot;%2&quot; is no character format (8N1, 7E1, ...)</source>
+        <translation>%1.frame: a(z) „%2” nem karakterformátum (8N1, 7E1, ...)</translation>
+    </message>
+    <message>
+        <location line="+6"/>
+        <source>%1.delay: needs milliseconds from 0 to 60000</source>
+        <translation>%1.delay: 0 és 60000 közötti milliszekundum kell</translation>
+    </message>
+    <message>
+        <location line="+9"/>
+        <source>%1.%2: unknown key (this device takes: %3)</source>
+        <translation>%1.%2: ismeretlen kulcs (ez az eszköz ezeket fogadja: %3)</translation>
+    </message>
+    <message>
+        <location line="+73"/>
+        <source>%1.station: needs a MODBUS station from 1 to 247</source>
+        <translation>%1.station: 1 és 247 közötti MODBUS-állomás kell</translation>
+    </message>
+    <message>
+        <location line="+5"/>
+        <source>%1.mode: needs &quot;rtu&quot; or &quot;ascii&quot;</source>
+        <translation>%1.mode: „rtu” vagy „ascii” kell</translation>
+    </message>
+    <message>
+        <location line="+14"/>
+        <source>%1.%2.%3: needs an address 0..65535 and a value %4</source>
+        <translation>%1.%2.%3: 0..65535 közötti cím és %4 érték kell</translation>
+    </message>
+    <message>
+        <location line="+146"/>
+        <source>%1: needs &quot;expect&quot; and &quot;reply&quot; as hex bytes (&quot;02 30 31&quot;), or &quot;expectText&quot; and &quot;replyText&quot; as text (&quot;\x0201&quot;)</source>
+        <translation>%1: „expect” és „reply” kell hexadecimális bájtokként („02 30 31”), vagy „expectText” és „replyText” szövegként („\x0201”)</translation>
+    </message>
+</context>
+<context>
+    <name>rung::network::EngineImage</name>
+    <message>
+        <location filename="../network/engine_image.cpp" line="+38"/>
+        <source>a station of a network keeps running: it is not stopped from its port</source>
+        <translation>a hálózat állomása tovább fut: a portjáról nem állítható le</translation>
+    </message>
+</context>
+<context>
+    <name>rung::network::Network</name>
+    <message>
+        <location filename="../network/network.cpp" line="+79"/>
+        <source>%1.ports: %2 is named twice</source>
+        <translation>%1.ports: a(z) %2 kétszer szerepel</translation>
+    </message>
+    <message>
+        <location line="+24"/>
+        <source>%1: no station &quot;%2&quot;</source>
+        <translation>%1: nincs „%2” állomás</translation>
+    </message>
+    <message>
+        <location line="+11"/>
+        <location line="+18"/>
+        <source>%1: no station or device &quot;%2&quot;</source>
+        <translation>%1: nincs „%2” állomás vagy eszköz</translation>
+    </message>
+    <message>
+        <location line="-16"/>
+        <source>%1: %2 is on wire %3 already; a port has one wire</source>
+        <translation>%1: a(z) %2 már a(z) %3 vezetéken van; egy porton egy vezeték lehet</translation>
+    </message>
+    <message>
+        <location line="+13"/>
+        <source>%1: no wire &quot;%2&quot;</source>
+        <translation>%1: nincs „%2” vezeték</translation>
+    </message>
+    <message>
+        <location line="+27"/>
+        <source>%1: line %2: %3 drives %4, which runs %5; %3 needs %6</source>
+        <extracomment>%1 station, %2 line, %3 instruction (LINK), %4 port (CP2), %5 what it runs, %6 the applications %3 takes</extracomment>
+        <translation>%1: %2. sor: a(z) %3 a(z) %4 portot hajtja, amelyen %5 fut; a(z) %3 ezt igényli: %6</translation>
+    </message>
+    <message>
+        <location line="+36"/>
+        <source>silent (fault): not sent</source>
+        <translation>néma (hiba): nem ment ki</translation>
+    </message>
+    <message>
+        <location line="+5"/>
+        <source>the port is on no wire</source>
+        <translation>a port nincs vezetéken</translation>
+    </message>
+    <message>
+        <location line="+12"/>
+        <source>byte %1 corrupted (fault): XOR %2h</source>
+        <translation>a(z) %1. bájt elrontva (hiba): XOR %2h</translation>
+    </message>
+    <message>
+        <location line="+5"/>
+        <source>wire cut (fault): not delivered</source>
+        <translation>elvágott vezeték (hiba): nem érkezett meg</translation>
+    </message>
+    <message>
+        <location line="+11"/>
+        <source>collision with %1: both frames garbled</source>
+        <translation>ütközés ezzel: %1; mindkét keret sérült</translation>
+    </message>
+</context>
+<context>
+    <name>rung::network::NetworkCheck</name>
+    <message>
+        <location filename="../network/check.cpp" line="+20"/>
+        <source>Computer Link</source>
+        <translation>Computer Link</translation>
+    </message>
+    <message>
+        <location line="+1"/>
+        <source>MODBUS</source>
+        <translation>MODBUS</translation>
+    </message>
+    <message>
+        <location line="+29"/>
+        <source>status 2: the length is not 1..64</source>
+        <translation>2-es állapot: a hossz nem 1..64</translation>
+    </message>
+    <message>
+        <location line="+2"/>
+        <source>status 4: a wrong device type or command</source>
+        <translation>4-es állapot: hibás operandustípus vagy parancs</translation>
+    </message>
+    <message>
+        <location line="+2"/>
+        <source>status 5: a wrong device number</source>
+        <translation>5-ös állapot: hibás operandusszám</translation>
+    </message>
+    <message>
+        <location line="+2"/>
+        <source>status 6: the master&apos;s and the slave&apos;s devices differ (bits and words)</source>
+        <translation>6-os állapot: a master és a slave operandusai eltérnek (bitek és szavak)</translation>
+    </message>
+    <message>
+        <location line="+19"/>
+        <location line="+54"/>
+        <source>%1: line %2</source>
+        <translation>%1: %2. sor</translation>
+    </message>
+    <message>
+        <location line="-48"/>
+        <source>%1 drives %2, which is on no wire: every set ends in a time-out (status A)</source>
+        <translation>a(z) %1 a(z) %2 portot hajtja, amely nincs vezetéken: minden készlet időtúllépéssel zárul (A állapot)</translation>
+    </message>
+    <message>
+        <location line="+13"/>
+        <source>wire %1</source>
+        <translation>%1 vezeték</translation>
+    </message>
+    <message>
+        <location line="+7"/>
+        <source>%1 masters on one wire: %2; their requests collide</source>
+        <translation>%1 master egy vezetéken: %2; a kéréseik ütköznek</translation>
+    </message>
+    <message>
+        <location line="+9"/>
+        <source>%1 and %2 both answer %3 station %4</source>
+        <translation>a(z) %1 és a(z) %2 is válaszol %3 %4. állomásként</translation>
+    </message>
+    <message>
+        <location line="+26"/>
+        <source>%1&apos;s table holds %2 sets after the first scan; it takes 1 to %3 within its area</source>
+        <translation>a(z) %1 táblázata az első ciklus után %2 készletet tartalmaz; 1..%3 lehet, a területén belül</translation>
+    </message>
+    <message>
+        <location line="+20"/>
+        <source>%1 set %2: %3</source>
+        <translation>%1, %2. készlet: %3</translation>
+    </message>
+    <message>
+        <location line="+9"/>
+        <source>%1 set %2 names station %3, which no port or device on %4 answers with %5: the set ends in a time-out (status A)</source>
+        <translation>%1, %2. készlet: a(z) %3. állomást nevezi meg, amelyként a(z) %4 vezetéken egyetlen port vagy eszköz sem válaszol %5 protokollal: a készlet időtúllépéssel zárul (A állapot)</translation>
+    </message>
+</context>
+<context>
+    <name>rung::network::NetworkFile</name>
+    <message>
+        <location filename="../network/network_file.cpp" line="+37"/>
+        <source>%1: unknown key (this object takes: %2)</source>
+        <translation>%1: ismeretlen kulcs (ez az objektum ezeket fogadja: %2)</translation>
+    </message>
+    <message>
+        <location line="+14"/>
+        <source>%1: missing</source>
+        <translation>%1: hiányzik</translation>
+    </message>
+    <message>
+        <location line="+1"/>
+        <source>%1: needs a text</source>
+        <translation>%1: szöveg kell</translation>
+    </message>
+    <message>
+        <location line="+14"/>
+        <source>%1: needs a whole number from %2 to %3</source>
+        <translation>%1: %2 és %3 közötti egész szám kell</translation>
+    </message>
+    <message>
+        <location line="+15"/>
+        <source>%1: needs a list</source>
+        <translation>%1: lista kell</translation>
+    </message>
+    <message>
+        <location line="+31"/>
+        <source>%1: line %2, column %3: the file is not valid JSON (%4)</source>
+        <translation>%1: %2. sor, %3. oszlop: a fájl nem érvényes JSON (%4)</translation>
+    </message>
+    <message>
+        <location line="+9"/>
+        <source>%1: a network file is a JSON object with &quot;stations&quot; and &quot;wires&quot;</source>
+        <translation>%1: a hálózatfájl „stations” és „wires” kulcsú JSON-objektum</translation>
+    </message>
+    <message>
+        <location line="+24"/>
+        <source>stations: a network needs at least one station</source>
+        <translation>stations: a hálózathoz legalább egy állomás kell</translation>
+    </message>
+    <message>
+        <location line="+4"/>
+        <location line="+41"/>
+        <location line="+60"/>
+        <location line="+36"/>
+        <source>%1: needs an object</source>
+        <translation>%1: objektum kell</translation>
+    </message>
+    <message>
+        <location line="-120"/>
+        <location line="+33"/>
+        <source>%1: &quot;%2&quot; is no name (letters, digits, _ and -, at most 32)</source>
+        <translation>%1: a(z) „%2” nem név (betűk, számjegyek, _ és -, legfeljebb 32)</translation>
+    </message>
+    <message>
+        <location line="-30"/>
+        <location line="+33"/>
+        <source>%1: a second &quot;%2&quot;; names are unique</source>
+        <translation>%1: második „%2”; a neveknek egyedinek kell lenniük</translation>
+    </message>
+    <message>
+        <location line="-28"/>
+        <source>%1: needs an object of ports</source>
+        <translation>%1: portokat tartalmazó objektum kell</translation>
+    </message>
+    <message>
+        <location line="+5"/>
+        <source>%1: needs an object of settings</source>
+        <translation>%1: beállításokat tartalmazó objektum kell</translation>
+    </message>
+    <message>
+        <location line="+27"/>
+        <source>%1: &quot;%2&quot; is no kind of device (modbus-slave, line)</source>
+        <translation>%1: a(z) „%2” nem eszköztípus (modbus-slave, line)</translation>
+    </message>
+    <message>
+        <location line="+23"/>
+        <source>%1: needs a list of ends, [&quot;a/CP2&quot;, &quot;b/CP2&quot;]</source>
+        <translation>%1: végpontok listája kell, [&quot;a/CP2&quot;, &quot;b/CP2&quot;]</translation>
+    </message>
+    <message>
+        <location line="+3"/>
+        <source>%1: a second wire &quot;%2&quot;</source>
+        <translation>%1: második „%2” vezeték</translation>
+    </message>
+    <message>
+        <location line="+3"/>
+        <source>%1: a wire joins at least two ends</source>
+        <translation>%1: egy vezeték legalább két végpontot köt össze</translation>
+    </message>
+    <message>
+        <location line="+3"/>
+        <source>%1: needs &quot;STATION/PORT&quot; or a device&apos;s name</source>
+        <translation>%1: „ÁLLOMÁS/PORT” vagy egy eszköz neve kell</translation>
+    </message>
+    <message>
+        <location line="+26"/>
+        <source>%1: a bridge goes to one of &quot;pty&quot;: true, &quot;serial&quot;: &quot;/dev/ttyUSB0&quot;, &quot;tcp&quot;: &quot;HOST:PORT&quot;</source>
+        <translation>%1: a híd ezek egyikéhez vezet: &quot;pty&quot;: true, &quot;serial&quot;: &quot;/dev/ttyUSB0&quot;, &quot;tcp&quot;: &quot;HOST:PORT&quot;</translation>
+    </message>
+    <message>
+        <location line="+44"/>
+        <source>%1: &quot;to&quot; comes before &quot;from&quot;</source>
+        <translation>%1: a „to” a „from” elé esik</translation>
+    </message>
+    <message>
+        <location line="+16"/>
+        <source>%1: &quot;%2&quot; is no fault (cut, silent, corrupt)</source>
+        <translation>%1: a(z) „%2” nem hibafajta (cut, silent, corrupt)</translation>
+    </message>
+</context>
+<context>
+    <name>rung::network::SharedLink</name>
+    <message>
+        <location filename="../network/shared_link.cpp" line="+183"/>
+        <source>CPU Link exchange among %1 (%2 ms); no frames: the manual does not publish them</source>
+        <translation>CPU Link adatcsere: %1 (%2 ms); keretek nélkül: a kézikönyv nem közli őket</translation>
+    </message>
+    <message>
+        <location line="+2"/>
+        <source>no station</source>
+        <translation>nincs állomás</translation>
+    </message>
+    <message>
+        <location line="+78"/>
+        <source>Parallel Link exchange; no frames: the manual does not publish them</source>
+        <translation>Parallel Link adatcsere; keretek nélkül: a kézikönyv nem közli őket</translation>
+    </message>
+    <message>
+        <location line="+3"/>
+        <source>Parallel Link: no exchange, the other station does not answer</source>
+        <translation>Parallel Link: nincs adatcsere, a másik állomás nem válaszol</translation>
+    </message>
+    <message>
+        <location line="+32"/>
+        <source>wire %1: CPU Link and Parallel Link cannot share a wire</source>
+        <translation>%1 vezeték: a CPU Link és a Parallel Link nem lehet egy vezetéken</translation>
+    </message>
+    <message>
+        <location line="+8"/>
+        <source>wire %1: %2 and %3 are both CPU Link station %4</source>
+        <translation>%1 vezeték: a(z) %2 és a(z) %3 is %4. CPU Link állomás</translation>
+    </message>
+    <message>
+        <location line="+12"/>
+        <source>wire %1: Parallel Link joins one master and one slave</source>
+        <translation>%1 vezeték: a Parallel Link egy mastert és egy slave-et köt össze</translation>
+    </message>
+</context>
+<context>
+    <name>rung::network::Trace</name>
+    <message>
+        <location filename="../network/net_trace.cpp" line="+20"/>
+        <source>%1: name a station&apos;s device as STATION/DEVICE, e.g. %2/%3</source>
+        <translation>%1: egy állomás operandusát ÁLLOMÁS/OPERANDUS alakban adja meg, pl. %2/%3</translation>
+    </message>
+    <message>
+        <location line="+11"/>
+        <source>%1: no station &quot;%2&quot; (the stations: %3)</source>
+        <translation>%1: nincs „%2” állomás (az állomások: %3)</translation>
+    </message>
+    <message>
+        <location line="+19"/>
+        <source>%1 needs a value</source>
+        <translation>%1 után érték kell</translation>
+    </message>
+    <message>
+        <location line="+1"/>
+        <source>unexpected argument %1</source>
+        <translation>váratlan argumentum: %1</translation>
+    </message>
+    <message>
+        <location line="+10"/>
+        <source>%1 needs a whole number from 1 to %2, not &quot;%3&quot;</source>
+        <translation>%1 után 1 és %2 közötti egész szám kell, nem „%3”</translation>
+    </message>
+    <message>
+        <location line="+15"/>
+        <source>--set needs STATION/DEV=VALUE@SCAN, not &quot;%1&quot;</source>
+        <translation>a --set után ÁLLOMÁS/OPERANDUS=ÉRTÉK@CIKLUS kell, nem „%1”</translation>
+    </message>
+    <message>
+        <location line="+34"/>
+        <source>unknown option %1</source>
+        <translation>ismeretlen kapcsoló: %1</translation>
+    </message>
+    <message>
+        <location line="+5"/>
+        <source>--scans and --trace are required</source>
+        <translation>a --scans és a --trace megadása kötelező</translation>
+    </message>
+    <message>
+        <location line="+7"/>
+        <source>--set at %1 comes after the last row: it applies once %1 rows have run, and %2 run, so it would never apply</source>
+        <extracomment>--set DEV=VALUE@N applies once N (%1) rows of scans have run; %2 rows run</extracomment>
+        <translation>a @%1 --set az utolsó sor utánra esik: %1 sor lefutása után érvényesülne, de csak %2 fut le, így sosem érvényesülne</translation>
+    </message>
+</context>
+<context>
+    <name>rung::network::Traffic</name>
+    <message>
+        <location filename="../network/traffic.cpp" line="+9"/>
+        <source># traffic of %1: virtual time (ms), wire, sender, bytes, |as text|, note</source>
+        <translation># %1 forgalma: virtuális idő (ms), vezeték, küldő, bájtok, |szövegként|, megjegyzés</translation>
+    </message>
+</context>
+<context>
     <name>rung::simulator::CommandInbox</name>
     <message>
         <location filename="../simulator/command_inbox.cpp" line="+15"/>
@@ -8561,23 +9282,61 @@ Kiértékelés: %4 µs (%5..%6)</translation>
         <location line="+16"/>
         <location filename="../simulator/compile_steps.cpp" line="-13"/>
         <location line="+41"/>
+        <location line="+187"/>
         <location filename="../simulator/compiler_detail.h" line="+24"/>
         <source>%1 cannot be written</source>
         <translation>%1 nem írható</translation>
     </message>
     <message>
+        <location filename="../simulator/compile_comm.cpp" line="+61"/>
+        <source>%1 needs a constant as operand %2</source>
+        <translation>a(z) %1 %2. operandusa konstans kell legyen</translation>
+    </message>
+    <message>
+        <location line="+36"/>
+        <source>%1 moves %2 digits from digit %3 to digit %4: the digits would run below digit 1</source>
+        <translation>a(z) %1 %2 számjegyet mozgat a(z) %3. számjegytől a(z) %4. számjegyre: a számjegyek az 1. alá futnának</translation>
+    </message>
+    <message>
+        <location line="+22"/>
+        <source>%1 has no variable resistor %2</source>
+        <translation>a(z) %1 PLC-nek nincs %2. potenciométere</translation>
+    </message>
+    <message>
+        <location line="+21"/>
+        <source>%1 takes a register, a 32-bit counter or a constant, not %2</source>
+        <translation>a(z) %1 regisztert, 32 bites számlálót vagy konstanst fogad, nem ezt: %2</translation>
+    </message>
+    <message>
+        <location line="+17"/>
+        <source>%1 writes four registers from %2: give a data register</source>
+        <translation>a(z) %1 négy regisztert ír %2-től: adatregisztert adjon meg</translation>
+    </message>
+    <message>
+        <location line="+30"/>
+        <source>%1 takes plain registers, not %2</source>
+        <translation>a(z) %1 egyszerű regisztereket fogad, nem ezt: %2</translation>
+    </message>
+    <message>
+        <location line="+11"/>
         <location filename="../simulator/compiler_detail.h" line="+3"/>
         <source>%1 is not a word device</source>
         <translation>%1 nem szó típusú operandus</translation>
     </message>
     <message>
+        <location line="+35"/>
+        <source>%1 moves one word with %2: n must be K1</source>
+        <translation>a(z) %1 egy szót mozgat ezzel: %2; n értéke K1 kell legyen</translation>
+    </message>
+    <message>
+        <location line="-68"/>
         <location filename="../simulator/compile_words.cpp" line="+32"/>
         <location filename="../simulator/compiler_detail.h" line="+17"/>
         <source>%1 needs the next word too, which does not exist</source>
         <translation>%1 a következő szót is igényli, de az nem létezik</translation>
     </message>
     <message>
-        <location line="+22"/>
+        <location filename="../simulator/compile_words.cpp" line="+22"/>
         <source>%1 reads a block of words: %2 is not a word device</source>
         <translation>%1 szavak blokkját olvassa: %2 nem szó típusú operandus</translation>
     </message>
@@ -8587,7 +9346,7 @@ Kiértékelés: %4 µs (%5..%6)</translation>
         <translation>%1 előtt %2 nyitott blokk kell</translation>
     </message>
     <message>
-        <location filename="../simulator/compile_steps.cpp" line="-187"/>
+        <location filename="../simulator/compile_steps.cpp" line="-374"/>
         <source>more than %1 open blocks</source>
         <translation>több mint %1 nyitott blokk</translation>
     </message>
@@ -8602,7 +9361,7 @@ Kiértékelés: %4 µs (%5..%6)</translation>
         <translation>%1 nem számláló</translation>
     </message>
     <message>
-        <location line="+162"/>
+        <location line="+166"/>
         <source>the simulator has no operator %1</source>
         <translation>a szimulátor nem ismeri ezt a műveleti jelet: %1</translation>
     </message>
@@ -8627,7 +9386,7 @@ Kiértékelés: %4 µs (%5..%6)</translation>
         <translation>a(z) %1 szavas blokk túlnyúlik a terület végén</translation>
     </message>
     <message>
-        <location filename="../simulator/compiler.cpp" line="+164"/>
+        <location filename="../simulator/compiler.cpp" line="+189"/>
         <source>unknown instruction</source>
         <translation>ismeretlen utasítás</translation>
     </message>
@@ -8647,13 +9406,13 @@ Kiértékelés: %4 µs (%5..%6)</translation>
         <translation>%1 nem törölhető</translation>
     </message>
     <message>
-        <location filename="../simulator/compile_steps.cpp" line="-139"/>
+        <location filename="../simulator/compile_steps.cpp" line="-143"/>
         <location filename="../simulator/compiler.cpp" line="+5"/>
         <source>%1 is not a device</source>
         <translation>%1 nem operandus</translation>
     </message>
     <message>
-        <location filename="../simulator/compiler.cpp" line="+111"/>
+        <location filename="../simulator/compiler.cpp" line="+113"/>
         <source>the program has no target</source>
         <translation>a programnak nincs célrendszere</translation>
     </message>
@@ -8688,6 +9447,7 @@ Kiértékelés: %4 µs (%5..%6)</translation>
     <message>
         <location filename="../simulator/engine_arith.h" line="+54"/>
         <location line="+42"/>
+        <location filename="../simulator/engine_text.cpp" line="+149"/>
         <source>division by zero; the destination is unchanged</source>
         <translation>osztás nullával; a cél változatlan marad</translation>
     </message>
@@ -8762,6 +9522,67 @@ Kiértékelés: %4 µs (%5..%6)</translation>
         <location filename="../simulator/engine_words.cpp" line="+15"/>
         <source>operation error: %1 bytes need %2 words from the source, past the end of its area; the instruction is not executed</source>
         <translation>műveleti hiba: %1 bájthoz %2 szó kell a forrástól, túl a terület végén; az utasítás nem hajtódik végre</translation>
+    </message>
+    <message>
+        <location filename="../simulator/engine_comm.cpp" line="+351"/>
+        <source>operation error: the communication table holds %1 sets; it takes 1 to %2</source>
+        <translation>műveleti hiba: a kommunikációs táblázat %1 készletet tartalmaz; 1..%2 lehet</translation>
+    </message>
+    <message>
+        <location line="+4"/>
+        <source>operation error: a table of %1 sets needs %2 registers, past the end of its area</source>
+        <translation>műveleti hiba: egy %1 készletes táblázathoz %2 regiszter kell, ami túlnyúlik a területe végén</translation>
+    </message>
+    <message>
+        <location line="+55"/>
+        <source>operation error: another RS is active; only one may be active at a time, this one does nothing</source>
+        <translation>műveleti hiba: egy másik RS aktív; egyszerre csak egy lehet aktív, ez nem csinál semmit</translation>
+    </message>
+    <message>
+        <location line="+38"/>
+        <source>operation error: %1 data to send from a block that ends after %2 words; nothing is sent</source>
+        <translation>műveleti hiba: %1 elküldendő adat egy %2 szó után véget érő blokkból; semmi sem megy ki</translation>
+    </message>
+    <message>
+        <location line="+76"/>
+        <source>operation error: %1 data received for a block that ends after %2 words; they are not stored</source>
+        <translation>műveleti hiba: %1 fogadott adat egy %2 szó után véget érő blokkba; nem tárolódnak</translation>
+    </message>
+    <message>
+        <location filename="../simulator/engine_module.cpp" line="+108"/>
+        <location line="+25"/>
+        <source>operation error: no special module %1 is connected (in a network a VB-1COM is the station&apos;s port MODULE%1)</source>
+        <translation>műveleti hiba: nincs csatlakoztatva %1. speciális modul (hálózatban a VB-1COM az állomás MODULE%1 portja)</translation>
+    </message>
+    <message>
+        <location line="-18"/>
+        <source>operation error: buffer memory #%1..#%2 of module %3 does not exist or the block runs past its area; nothing is read</source>
+        <translation>műveleti hiba: a(z) %3. modul #%1..#%2 puffermemóriája nem létezik, vagy a blokk túlnyúlik a területén; semmi sem olvasódik be</translation>
+    </message>
+    <message>
+        <location line="+26"/>
+        <source>operation error: buffer memory #%1..#%2 of module %3 cannot be written (the module&apos;s table marks it read-only, or it does not exist); nothing is written</source>
+        <translation>műveleti hiba: a(z) %3. modul #%1..#%2 puffermemóriája nem írható (a modul táblázata szerint csak olvasható, vagy nem létezik); semmi sem íródik</translation>
+    </message>
+    <message>
+        <location filename="../simulator/engine_text.cpp" line="-108"/>
+        <source>operation error: %1 characters need %2 words from the destination, past the end of its area; the instruction is not executed</source>
+        <translation>műveleti hiba: %1 karakterhez %2 szó kell a céltól, ami túlnyúlik a területe végén; az utasítás nem hajtódik végre</translation>
+    </message>
+    <message>
+        <location line="+31"/>
+        <source>operation error: %1 characters need %2 words from the source, past the end of its area; the instruction is not executed</source>
+        <translation>műveleti hiba: %1 karakterhez %2 szó kell a forrástól, ami túlnyúlik a területe végén; az utasítás nem hajtódik végre</translation>
+    </message>
+    <message>
+        <location line="+14"/>
+        <source>operation error: character %1 (%2H) is no hexadecimal digit; the destination is unchanged</source>
+        <translation>műveleti hiba: a(z) %1. karakter (%2H) nem hexadecimális számjegy; a cél nem változik</translation>
+    </message>
+    <message>
+        <location line="+26"/>
+        <source>operation error: %1 is no 4-digit BCD value (0..9999; M9168 ON moves hexadecimal digits); the destination is unchanged</source>
+        <translation>műveleti hiba: a(z) %1 nem négyjegyű BCD érték (0..9999; M9168 ON esetén hexadecimális számjegyek mozognak); a cél nem változik</translation>
     </message>
 </context>
 <context>
@@ -9001,7 +9822,7 @@ Kiértékelés: %4 µs (%5..%6)</translation>
         <translation>ismeretlen operandus: %1: %2</translation>
     </message>
     <message>
-        <location line="+30"/>
+        <location line="+93"/>
         <source>%1 needs a value</source>
         <translation>%1 után érték kell</translation>
     </message>
@@ -9031,7 +9852,7 @@ Kiértékelés: %4 µs (%5..%6)</translation>
         <translation>--set formája DEV=VALUE@SCAN, nem &quot;%1&quot;</translation>
     </message>
     <message>
-        <location line="+34"/>
+        <location line="+20"/>
         <source>unknown option %1</source>
         <translation>ismeretlen kapcsoló: %1</translation>
     </message>

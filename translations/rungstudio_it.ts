@@ -178,13 +178,14 @@
 <context>
     <name>rung::app::Cli</name>
     <message>
-        <location filename="../app/cli/cli.cpp" line="+56"/>
+        <location filename="../app/cli/cli.cpp" line="+61"/>
         <location line="+48"/>
+        <location filename="../app/cli/cli_network.cpp" line="+142"/>
         <source>unexpected argument %1</source>
         <translation>argomento non previsto: %1</translation>
     </message>
     <message>
-        <location line="-74"/>
+        <location line="-78"/>
         <source>usage:
   rungstudio-cli check FILE [--target %1] [--model M]
   rungstudio-cli convert FILE [--target T] [--model M] [--from il|ladder|project|plcopen] --to il|ladder|project|plcopen [-o OUT] [--force] [--map FILE]
@@ -203,7 +204,7 @@ FILE è una lista istruzioni (.il), un testo ladder (.ladder) o un progetto (.ru
 Codice di uscita: 0 nessun errore, 1 il programma contiene errori, 2 errore di utilizzo o di I/O.</translation>
     </message>
     <message>
-        <location line="+107"/>
+        <location line="+111"/>
         <source>nothing written: the list as typed would be lost</source>
         <translation>non è stato scritto nulla: la lista digitata andrebbe persa</translation>
     </message>
@@ -277,6 +278,7 @@ Codice di uscita: 0 nessun errore, 1 il programma contiene errori, 2 errore di u
     </message>
     <message>
         <location line="+18"/>
+        <location filename="../app/cli/cli_network.cpp" line="+43"/>
         <location filename="../app/cli/cli_plcopen.cpp" line="+34"/>
         <location line="+3"/>
         <source>error</source>
@@ -284,6 +286,7 @@ Codice di uscita: 0 nessun errore, 1 il programma contiene errori, 2 errore di u
     </message>
     <message>
         <location line="+1"/>
+        <location filename="../app/cli/cli_network.cpp" line="+0"/>
         <source>warning</source>
         <translation>avviso</translation>
     </message>
@@ -2001,6 +2004,63 @@ Ctrl+Z / Ctrl+Y: annulla / ripeti, Ctrl+rotellina: zoom, F4: verifica il program
     </message>
 </context>
 <context>
+    <name>rung::app::Network</name>
+    <message>
+        <location filename="../app/cli/cli_network.cpp" line="-164"/>
+        <source>usage:</source>
+        <translation>uso:</translation>
+    </message>
+    <message>
+        <location line="+5"/>
+        <source>station %1 (%2) does not start</source>
+        <translation>la stazione %1 (%2) non si avvia</translation>
+    </message>
+    <message>
+        <location line="+6"/>
+        <source>  rungstudio-cli check NET.rungnet
+  rungstudio-cli simulate NET.rungnet --scans N [--period MS] [--set STATION/DEV=VALUE@SCAN]... --trace STATION/DEV[,...] [--traffic FILE]</source>
+        <translation>  rungstudio-cli check NET.rungnet
+  rungstudio-cli simulate NET.rungnet --scans N [--period MS] [--set STAZIONE/DISP=VALORE@SCANSIONE]... --trace STAZIONE/DISP[,...] [--traffic FILE]</translation>
+    </message>
+    <message>
+        <location line="+42"/>
+        <source>--traffic needs a file</source>
+        <translation>--traffic richiede un file</translation>
+    </message>
+    <message>
+        <location line="+5"/>
+        <source>%1: a network file names each station&apos;s PLC</source>
+        <translation>%1: il file di rete indica il PLC di ogni stazione</translation>
+    </message>
+    <message>
+        <location line="+29"/>
+        <location line="+14"/>
+        <source>cannot write %1: %2</source>
+        <translation>impossibile scrivere %1: %2</translation>
+    </message>
+    <message>
+        <location line="+8"/>
+        <source>%1: line %2: runtime error at step %3: %4</source>
+        <translation>%1: riga %2: errore di esecuzione al passo %3: %4</translation>
+    </message>
+    <message>
+        <location line="+30"/>
+        <source>%1: %2: %3</source>
+        <translation>%1: %2: %3</translation>
+    </message>
+    <message>
+        <location line="+9"/>
+        <source>%1: a station&apos;s program has errors; the wiring is checked once every program starts</source>
+        <translation>%1: il programma di una stazione ha errori; il cablaggio si controlla quando ogni programma si avvia</translation>
+    </message>
+    <message>
+        <location line="+15"/>
+        <source>%1: %2: %3: %4</source>
+        <extracomment>%1 the network file, %2 where in it (a wire, a station&apos;s line), %3 error or warning</extracomment>
+        <translation>%1: %2: %3: %4</translation>
+    </message>
+</context>
+<context>
     <name>rung::app::Online</name>
     <message>
         <location filename="../app/cli/cli_online.cpp" line="+17"/>
@@ -2750,14 +2810,14 @@ Codice di uscita di read e write: 0 fatto, 1 il PLC non ha risposto o ha rifiuta
 <context>
     <name>rung::app::Simulate</name>
     <message>
-        <location filename="../app/cli/cli_simulate.cpp" line="+16"/>
+        <location filename="../app/cli/cli_simulate.cpp" line="+17"/>
         <source>usage: rungstudio-cli simulate FILE [--target T] [--model M] --scans N [--period MS] [--set DEV=VALUE@SCAN]... --trace DEV[,DEV...]
 FILE is a listing (.il), a ladder text (.ladder) or a project (.rung).</source>
         <translation>uso: rungstudio-cli simulate FILE [--target T] [--model M] --scans N [--period MS] [--set OPERANDO=VALORE@SCANSIONE]... --trace OPERANDO[,OPERANDO...]
 FILE è una lista istruzioni (.il), un testo ladder (.ladder) o un progetto (.rung).</translation>
     </message>
     <message>
-        <location line="+15"/>
+        <location line="+25"/>
         <source>%1 needs a value</source>
         <translation>%1 richiede un valore</translation>
     </message>
@@ -3841,7 +3901,22 @@ Valutazione: %4 µs (%5..%6)</translation>
         <translation>Host Link: la risposta si è interrotta dopo %1 parti e %2 caratteri (%3) entro %4 ms</translation>
     </message>
     <message>
-        <location filename="../comms/protocol/modbus.cpp" line="+45"/>
+        <location filename="../comms/protocol/modbus.cpp" line="+50"/>
+        <source>Modbus ASCII: a frame of %1 characters: %2</source>
+        <translation>Modbus ASCII: un frame di %1 caratteri: %2</translation>
+    </message>
+    <message>
+        <location line="+10"/>
+        <source>Modbus ASCII: &quot;%1&quot; is no hex digit pair</source>
+        <translation>Modbus ASCII: &quot;%1&quot; non è una coppia di cifre esadecimali</translation>
+    </message>
+    <message>
+        <location line="+9"/>
+        <source>Modbus ASCII: wrong LRC (received %1, computed %2): noise on the line or a wrong baud rate or parity</source>
+        <translation>Modbus ASCII: LRC errato (ricevuto %1, calcolato %2): disturbi sulla linea o velocità o parità errate</translation>
+    </message>
+    <message>
+        <location line="+25"/>
         <source>illegal function (exception %1h): the device does not support this function code</source>
         <translation>funzione non valida (eccezione %1h): il dispositivo non supporta questo codice funzione</translation>
     </message>
@@ -3891,7 +3966,7 @@ Valutazione: %4 µs (%5..%6)</translation>
         <translation>codice di eccezione sconosciuto %1h</translation>
     </message>
     <message>
-        <location filename="../comms/protocol/modbus_master.cpp" line="+78"/>
+        <location filename="../comms/protocol/modbus_master.cpp" line="+82"/>
         <source>Modbus RTU: the reply starts %1, not an answer to function %2h</source>
         <translation>Modbus RTU: la risposta inizia con %1, non è una risposta alla funzione %2h</translation>
     </message>
@@ -3907,7 +3982,7 @@ Valutazione: %4 µs (%5..%6)</translation>
     </message>
     <message>
         <location line="+15"/>
-        <location filename="../comms/protocol/modbus_slave.cpp" line="+169"/>
+        <location filename="../comms/protocol/modbus_slave.cpp" line="+210"/>
         <source>Modbus TCP: not a Modbus header (protocol %1, length %2): %3</source>
         <translation>Modbus TCP: non è un&apos;intestazione Modbus (protocollo %1, lunghezza %2): %3</translation>
     </message>
@@ -3922,7 +3997,22 @@ Valutazione: %4 µs (%5..%6)</translation>
         <translation>Modbus TCP: la risposta è per la transazione %1, la richiesta era %2</translation>
     </message>
     <message>
-        <location line="+12"/>
+        <location line="+21"/>
+        <source>Modbus ASCII: no CR LF within %1 characters of the colon</source>
+        <translation>Modbus ASCII: nessun CR LF entro %1 caratteri dai due punti</translation>
+    </message>
+    <message>
+        <location line="+11"/>
+        <source>Modbus ASCII: %1 characters after the reply&apos;s CR LF</source>
+        <translation>Modbus ASCII: %1 caratteri dopo il CR LF della risposta</translation>
+    </message>
+    <message>
+        <location line="+6"/>
+        <source>Modbus ASCII: a reply without a function code</source>
+        <translation>Modbus ASCII: una risposta senza codice funzione</translation>
+    </message>
+    <message>
+        <location line="+8"/>
         <source>Modbus: unit %1 answered, unit %2 was asked</source>
         <translation>Modbus: ha risposto l&apos;unità %1, era interrogata l&apos;unità %2</translation>
     </message>
@@ -4178,12 +4268,17 @@ Valutazione: %4 µs (%5..%6)</translation>
         <translation>Host Link: il comando %1 va oltre %2 caratteri in %3 parti, più lungo di qualsiasi comando; risposto con codice di fine 18</translation>
     </message>
     <message>
-        <location filename="../comms/protocol/modbus_slave.cpp" line="-22"/>
+        <location filename="../comms/protocol/modbus_slave.cpp" line="-63"/>
         <source>Modbus: %1 bytes arrived before the request was answered; the %2 beyond the first %3 were dropped</source>
         <translation>Modbus: sono arrivati %1 byte prima della risposta alla richiesta; i %2 oltre i primi %3 sono stati scartati</translation>
     </message>
     <message>
-        <location line="+53"/>
+        <location line="+22"/>
+        <source>Modbus ASCII: no CR LF within %1 characters of the colon: dropped</source>
+        <translation>Modbus ASCII: nessun CR LF entro %1 caratteri dai due punti: scartato</translation>
+    </message>
+    <message>
+        <location line="+72"/>
         <source>Modbus RTU: a frame of function %1h runs past %2 bytes, the longest an RTU frame can be: dropped with what follows until the line is quiet</source>
         <translation>Modbus RTU: un frame della funzione %1h supera %2 byte, la lunghezza massima di un frame RTU: scartato con ciò che segue finché la linea tace</translation>
     </message>
@@ -6690,6 +6785,74 @@ Valutazione: %4 µs (%5..%6)</translation>
     </message>
 </context>
 <context>
+    <name>rung::model::PortConfig</name>
+    <message>
+        <location filename="../model/comm/port_config.cpp" line="+56"/>
+        <source>%1: needs a whole number from %2 to %3</source>
+        <translation>%1: richiede un numero intero da %2 a %3</translation>
+    </message>
+    <message>
+        <location line="+23"/>
+        <source>%1: needs &quot;%2&quot; or &quot;%3&quot;</source>
+        <translation>%1: richiede &quot;%2&quot; o &quot;%3&quot;</translation>
+    </message>
+    <message>
+        <location line="+39"/>
+        <source>%1: %2 has no serial port a network can use</source>
+        <translation>%1: %2 non ha una porta seriale utilizzabile in una rete</translation>
+    </message>
+    <message>
+        <location line="+2"/>
+        <source>%1: %2 has no port %3 (its ports: %4)</source>
+        <translation>%1: %2 non ha la porta %3 (le sue porte: %4)</translation>
+    </message>
+    <message>
+        <location line="+5"/>
+        <source>%1: the %2 %3 has no port %4</source>
+        <translation>%1: il %2 %3 non ha la porta %4</translation>
+    </message>
+    <message>
+        <location line="+13"/>
+        <source>%1: needs the name of an application</source>
+        <translation>%1: richiede il nome di un&apos;applicazione</translation>
+    </message>
+    <message>
+        <location line="+9"/>
+        <source>%1: %2 is no application of %3 (%4)</source>
+        <translation>%1: %2 non è un&apos;applicazione di %3 (%4)</translation>
+    </message>
+    <message>
+        <location line="+6"/>
+        <source>%1: the %2 %3 has no %4 on %5 (it has: %6)</source>
+        <translation>%1: il %2 %3 non ha %4 su %5 (ha: %6)</translation>
+    </message>
+    <message>
+        <location line="+15"/>
+        <source>%1: %2 takes no setting &quot;%3&quot;</source>
+        <translation>%1: %2 non accetta l&apos;impostazione &quot;%3&quot;</translation>
+    </message>
+    <message>
+        <location line="+13"/>
+        <source>%1: %2 is not a rate of %3 (%4)</source>
+        <translation>%1: %2 non è una velocità di %3 (%4)</translation>
+    </message>
+    <message>
+        <location line="+14"/>
+        <source>%1: &quot;%2&quot; is no character format (data bits 7 or 8, parity N, E or O, stop bits 1 or 2: 8N1, 7E1)</source>
+        <translation>%1: &quot;%2&quot; non è un formato di carattere (bit di dati 7 o 8, parità N, E o O, bit di stop 1 o 2: 8N1, 7E1)</translation>
+    </message>
+    <message>
+        <location line="+7"/>
+        <source>%1: %2 always uses %3</source>
+        <translation>%1: %2 usa sempre %3</translation>
+    </message>
+    <message>
+        <location line="+27"/>
+        <source>%1: needs an object of settings</source>
+        <translation>%1: richiede un oggetto di impostazioni</translation>
+    </message>
+</context>
+<context>
     <name>rung::model::PowerFlow</name>
     <message>
         <location filename="../model/image/power_flow.cpp" line="+416"/>
@@ -6717,7 +6880,7 @@ Valutazione: %4 µs (%5..%6)</translation>
 <context>
     <name>rung::model::Project</name>
     <message>
-        <location filename="../model/project/project.cpp" line="+209"/>
+        <location filename="../model/project/project.cpp" line="+211"/>
         <source>Line %1, column %2 (byte %3): the file is not valid JSON (%4)</source>
         <translation>Riga %1, colonna %2 (byte %3): il file non è JSON valido (%4)</translation>
     </message>
@@ -6742,7 +6905,7 @@ Valutazione: %4 µs (%5..%6)</translation>
         <translation>&quot;schema&quot; deve essere un numero positivo</translation>
     </message>
     <message>
-        <location line="+14"/>
+        <location line="+15"/>
         <source>&quot;target&quot;: unknown PLC family &quot;%1&quot;</source>
         <translation>&quot;target&quot;: famiglia PLC sconosciuta &quot;%1&quot;</translation>
     </message>
@@ -6752,7 +6915,7 @@ Valutazione: %4 µs (%5..%6)</translation>
         <translation>&quot;model&quot;: %1 non ha il modello &quot;%2&quot;</translation>
     </message>
     <message>
-        <location line="+16"/>
+        <location line="+22"/>
         <location line="+67"/>
         <source>%1: an object with &quot;device&quot; and &quot;name&quot; is expected</source>
         <translation>%1: è atteso un oggetto con &quot;device&quot; e &quot;name&quot;</translation>
@@ -6883,7 +7046,7 @@ Valutazione: %4 µs (%5..%6)</translation>
         <translation>%1: il file supera %2 MB, il massimo che Rung Studio legge</translation>
     </message>
     <message>
-        <location filename="../model/project/project.cpp" line="+152"/>
+        <location filename="../model/project/project.cpp" line="+165"/>
         <source>%1: cannot write the file (%2)</source>
         <translation>%1: impossibile scrivere il file (%2)</translation>
     </message>
@@ -6955,7 +7118,7 @@ Valutazione: %4 µs (%5..%6)</translation>
     </message>
     <message>
         <location line="+4"/>
-        <location filename="../model/target/target_pl110.cpp" line="+87"/>
+        <location filename="../model/target/target_pl110.cpp" line="+129"/>
         <location filename="../model/target/target_vpc.cpp" line="+61"/>
         <source>timers</source>
         <translation>temporizzatori</translation>
@@ -6963,7 +7126,7 @@ Valutazione: %4 µs (%5..%6)</translation>
     <message>
         <location line="+8"/>
         <location filename="../model/target/target_pl110.cpp" line="+5"/>
-        <location filename="../model/target/target_vigor.cpp" line="+127"/>
+        <location filename="../model/target/target_vigor.cpp" line="+241"/>
         <location filename="../model/target/target_vpc.cpp" line="+5"/>
         <source>counters</source>
         <translation>contatori</translation>
@@ -6991,7 +7154,7 @@ Valutazione: %4 µs (%5..%6)</translation>
     <message>
         <location line="+2"/>
         <location filename="../model/target/target_pl110.cpp" line="+72"/>
-        <location filename="../model/target/target_vigor.cpp" line="+35"/>
+        <location filename="../model/target/target_vigor.cpp" line="+43"/>
         <source>ON for the first scan</source>
         <translation>ON per la prima scansione</translation>
     </message>
@@ -7067,7 +7230,7 @@ Valutazione: %4 µs (%5..%6)</translation>
     <message>
         <location line="+5"/>
         <location filename="../model/target/target_pl110.cpp" line="+85"/>
-        <location filename="../model/target/target_vigor.cpp" line="+65"/>
+        <location filename="../model/target/target_vigor.cpp" line="+95"/>
         <location filename="../model/target/target_vpc.cpp" line="+5"/>
         <source>Start a block with a normally open contact</source>
         <translation>Inizia un blocco con un contatto normalmente aperto</translation>
@@ -7407,12 +7570,12 @@ Valutazione: %4 µs (%5..%6)</translation>
         <translation>Fine del programma</translation>
     </message>
     <message>
-        <location filename="../model/target/target_pl110.cpp" line="-383"/>
+        <location filename="../model/target/target_pl110.cpp" line="-425"/>
         <source>IF contact: ON while S1 ? S2 is true</source>
         <translation>Contatto IF: ON mentre S1 ? S2 è vero</translation>
     </message>
     <message>
-        <location line="+27"/>
+        <location line="+69"/>
         <source>digital inputs</source>
         <translation>ingressi digitali</translation>
     </message>
@@ -7542,7 +7705,7 @@ Valutazione: %4 µs (%5..%6)</translation>
     </message>
     <message>
         <location line="+2"/>
-        <location filename="../model/target/target_vigor.cpp" line="-145"/>
+        <location filename="../model/target/target_vigor.cpp" line="-174"/>
         <source>minimum scan time (0.1 ms)</source>
         <translation>tempo di scansione minimo (0,1 ms)</translation>
     </message>
@@ -7578,7 +7741,32 @@ Valutazione: %4 µs (%5..%6)</translation>
         <translation>gli interrupt a tempo e la rampa del motore passo passo non sono modellati (i programmi di interrupt non sono supportati)</translation>
     </message>
     <message>
-        <location line="+8"/>
+        <location line="-179"/>
+        <source>MODBUS RTU slave</source>
+        <translation>Slave MODBUS RTU</translation>
+    </message>
+    <message>
+        <location line="+9"/>
+        <source>MODBUS RTU master (COM / EXP)</source>
+        <translation>Master MODBUS RTU (COM / EXP)</translation>
+    </message>
+    <message>
+        <location line="+5"/>
+        <source>COM1, the RS-485 port</source>
+        <translation>COM1, la porta RS-485</translation>
+    </message>
+    <message>
+        <location line="+4"/>
+        <source>EXP1, the expansion port</source>
+        <translation>EXP1, la porta di espansione</translation>
+    </message>
+    <message>
+        <location line="+4"/>
+        <source>COM2, the USB programming port (57600 8N1)</source>
+        <translation>COM2, la porta USB di programmazione (57600 8N1)</translation>
+    </message>
+    <message>
+        <location line="+165"/>
         <source>the input filters and analog settings are not modelled: an analog input reads the value set in the simulator</source>
         <translation>i filtri degli ingressi e le impostazioni analogiche non sono modellati: un ingresso analogico legge il valore impostato nel simulatore</translation>
     </message>
@@ -7734,9 +7922,9 @@ Valutazione: %4 µs (%5..%6)</translation>
     </message>
     <message>
         <location line="+11"/>
-        <location filename="../model/target/target_vigor.cpp" line="+175"/>
-        <location line="+64"/>
-        <location line="+78"/>
+        <location filename="../model/target/target_vigor.cpp" line="+204"/>
+        <location line="+74"/>
+        <location line="+102"/>
         <source>number of words</source>
         <translation>numero di word</translation>
     </message>
@@ -7826,12 +8014,12 @@ Valutazione: %4 µs (%5..%6)</translation>
         <translation>Posiziona un parametro del display</translation>
     </message>
     <message>
-        <location filename="../model/target/target_vigor.cpp" line="-470"/>
+        <location filename="../model/target/target_vigor.cpp" line="-656"/>
         <source>Compare contact: ON while S1 ? S2</source>
         <translation>Contatto di confronto: ON mentre S1 ? S2</translation>
     </message>
     <message>
-        <location line="+48"/>
+        <location line="+162"/>
         <location filename="../model/target/target_vpc.cpp" line="-68"/>
         <source>inputs</source>
         <translation>ingressi</translation>
@@ -7920,7 +8108,7 @@ Valutazione: %4 µs (%5..%6)</translation>
         <translation>registri indice</translation>
     </message>
     <message>
-        <location line="+6"/>
+        <location line="+14"/>
         <source>ON while the PLC runs</source>
         <translation>ON mentre il PLC è in RUN</translation>
     </message>
@@ -7940,12 +8128,7 @@ Valutazione: %4 µs (%5..%6)</translation>
         <translation>SMOV opera su cifre esadecimali</translation>
     </message>
     <message>
-        <location line="+2"/>
-        <source>ON for one scan when an MBUS cycle completes</source>
-        <translation>ON per una scansione al termine di un ciclo MBUS</translation>
-    </message>
-    <message>
-        <location line="+2"/>
+        <location line="+5"/>
         <source>current scan time (0.1 ms)</source>
         <translation>tempo di scansione attuale (0,1 ms)</translation>
     </message>
@@ -7980,7 +8163,7 @@ Valutazione: %4 µs (%5..%6)</translation>
         <translation>modem CP2: composizione non riuscita</translation>
     </message>
     <message>
-        <location line="+2"/>
+        <location line="+4"/>
         <source>RS instruction send flag</source>
         <translation>flag di invio dell&apos;istruzione RS</translation>
     </message>
@@ -8010,7 +8193,7 @@ Valutazione: %4 µs (%5..%6)</translation>
         <translation>comunicazione del collegamento CPU non riuscita (master); M9184..M9190 slave 1..7</translation>
     </message>
     <message>
-        <location line="+3"/>
+        <location line="+4"/>
         <source>RS communication error code</source>
         <translation>codice di errore della comunicazione RS</translation>
     </message>
@@ -8031,6 +8214,41 @@ Valutazione: %4 µs (%5..%6)</translation>
     </message>
     <message>
         <location line="+2"/>
+        <source>RS: number of data left to send</source>
+        <translation>RS: numero di dati ancora da inviare</translation>
+    </message>
+    <message>
+        <location line="+2"/>
+        <source>RS: number of data received</source>
+        <translation>RS: numero di dati ricevuti</translation>
+    </message>
+    <message>
+        <location line="+2"/>
+        <source>RS, LINK and MBUS time-out, x 10 ms (0: 100 ms)</source>
+        <translation>time-out di RS, LINK e MBUS, x 10 ms (0: 100 ms)</translation>
+    </message>
+    <message>
+        <location line="+4"/>
+        <source>CPU link communication time-out time</source>
+        <translation>collegamento CPU: tempo di time-out della comunicazione</translation>
+    </message>
+    <message>
+        <location line="+2"/>
+        <source>CPU link: number of slave stations</source>
+        <translation>collegamento CPU: numero di stazioni slave</translation>
+    </message>
+    <message>
+        <location line="+2"/>
+        <source>CPU link: transfer range mode</source>
+        <translation>collegamento CPU: modo del campo di trasferimento</translation>
+    </message>
+    <message>
+        <location line="+2"/>
+        <source>CPU link: communication retries</source>
+        <translation>collegamento CPU: tentativi di comunicazione</translation>
+    </message>
+    <message>
+        <location line="+2"/>
         <source>current network scan time</source>
         <translation>tempo di scansione attuale della rete</translation>
     </message>
@@ -8040,7 +8258,17 @@ Valutazione: %4 µs (%5..%6)</translation>
         <translation>tempo di scansione massimo della rete</translation>
     </message>
     <message>
-        <location line="+13"/>
+        <location line="+2"/>
+        <source>CPU link: communication errors of the master; D9204..D9210 slaves 1..7</source>
+        <translation>collegamento CPU: errori di comunicazione del master; D9204..D9210 slave 1..7</translation>
+    </message>
+    <message>
+        <location line="+5"/>
+        <source>CPU link: error code of slave 1 (D9213..D9218: slaves 2..7): 00H none, 01H time-out, 05H sum error</source>
+        <translation>collegamento CPU: codice di errore dello slave 1 (D9213..D9218: slave 2..7): 00H nessuno, 01H time-out, 05H errore di somma</translation>
+    </message>
+    <message>
+        <location line="+16"/>
         <source>Start a block with a rising-edge contact</source>
         <translation>Inizia un blocco con un contatto sul fronte di salita</translation>
     </message>
@@ -8110,12 +8338,22 @@ Valutazione: %4 µs (%5..%6)</translation>
         <translation>Sposta 32 bit: S (S, S+1) in D (word bassa), D+1 (word alta)</translation>
     </message>
     <message>
-        <location line="+101"/>
+        <location line="+88"/>
+        <source>module number</source>
+        <translation>numero del modulo</translation>
+    </message>
+    <message>
+        <location line="+4"/>
+        <source>buffer memory word</source>
+        <translation>word della memoria buffer</translation>
+    </message>
+    <message>
+        <location line="+25"/>
         <source>Write n words to special module m1, at m2, once on a rising edge</source>
         <translation>Scrive n word nel modulo speciale m1, da m2, una volta sul fronte di salita</translation>
     </message>
     <message>
-        <location line="+17"/>
+        <location line="+18"/>
         <source>Check code: the sum of n bytes from S into D, their parity into D+1 (M9161 ON: one byte a word)</source>
         <translation>Codice di controllo: la somma di n byte da S in D, la loro parità in D+1 (M9161 ON: un byte per word)</translation>
     </message>
@@ -8125,17 +8363,22 @@ Valutazione: %4 µs (%5..%6)</translation>
         <translation>primo ingresso o uscita</translation>
     </message>
     <message>
-        <location line="+7"/>
+        <location line="+11"/>
+        <source>number of digits</source>
+        <translation>numero di cifre</translation>
+    </message>
+    <message>
+        <location line="+8"/>
         <source>Convert n ASCII characters from S to hexadecimal in D</source>
         <translation>Converte n caratteri ASCII da S in esadecimale in D</translation>
     </message>
     <message>
-        <location line="+4"/>
+        <location line="+6"/>
         <source>Convert n hexadecimal digits from S to ASCII in D</source>
         <translation>Converte n cifre esadecimali da S in ASCII in D</translation>
     </message>
     <message>
-        <location line="+10"/>
+        <location line="+13"/>
         <source>first word to send</source>
         <translation>primo registro da inviare</translation>
     </message>
@@ -8145,12 +8388,12 @@ Valutazione: %4 µs (%5..%6)</translation>
         <translation>primo registro ricevuto</translation>
     </message>
     <message>
-        <location line="+7"/>
+        <location line="+8"/>
         <source>Serial communication on CP2: send m words from S, receive n words into D</source>
         <translation>Comunicazione seriale su CP2: invia m word da S, riceve n word in D</translation>
     </message>
     <message>
-        <location line="+11"/>
+        <location line="+15"/>
         <source>table</source>
         <translation>inizio tabella</translation>
     </message>
@@ -8160,42 +8403,127 @@ Valutazione: %4 µs (%5..%6)</translation>
         <translation>blocco di lavoro</translation>
     </message>
     <message>
-        <location line="+2"/>
+        <location line="+7"/>
         <source>Easy Link between PLCs: table from S1, working area S2</source>
         <translation>Easy Link tra PLC: tabella da S1, area di lavoro S2</translation>
     </message>
     <message>
-        <location line="+5"/>
+        <location line="+10"/>
         <source>MODBUS master: table from S1, working area S2</source>
         <translation>Master MODBUS: tabella da S1, area di lavoro S2</translation>
     </message>
     <message>
-        <location line="+5"/>
+        <location line="+11"/>
+        <source>variable resistor</source>
+        <translation>potenziometro</translation>
+    </message>
+    <message>
+        <location line="+4"/>
         <source>Read the variable resistor (volume) VRn into D</source>
         <translation>Legge il potenziometro VRn in D</translation>
     </message>
     <message>
-        <location line="+3"/>
+        <location line="+8"/>
         <source>Swap the high and low bytes of D</source>
         <translation>Scambia il byte alto e il byte basso di D</translation>
     </message>
     <message>
-        <location line="+6"/>
+        <location line="+9"/>
+        <source>digit position</source>
+        <translation>posizione della cifra</translation>
+    </message>
+    <message>
+        <location line="+3"/>
         <source>Move m2 digits of S from digit m1 to D from digit n</source>
         <translation>Sposta m2 cifre di S dalla cifra m1 in D dalla cifra n</translation>
     </message>
     <message>
-        <location line="-224"/>
+        <location line="+9"/>
+        <source>32 bits: D, D+1 = (S1, S1+1) / (S2, S2+1), D+2, D+3 = remainder</source>
+        <translation>32 bit: D, D+1 = (S1, S1+1) / (S2, S2+1), D+2, D+3 = resto</translation>
+    </message>
+    <message>
+        <location line="+16"/>
+        <source>Alternate: D changes state at each rising edge of the input</source>
+        <translation>Alterna: D cambia stato a ogni fronte di salita dell&apos;ingresso</translation>
+    </message>
+    <message>
+        <location line="-319"/>
         <source>Counter: counts rising edges, reset with RST</source>
         <translation>Contatore: conta i fronti di salita, reset con RST</translation>
     </message>
     <message>
-        <location line="-144"/>
+        <location line="-391"/>
+        <source>Computer Link</source>
+        <translation>Computer Link</translation>
+    </message>
+    <message>
+        <location line="+9"/>
+        <source>CP1, the main unit&apos;s RS-232 port (Computer Link, 19200 bps, station 0)</source>
+        <translation>CP1, la porta RS-232 dell&apos;unità base (Computer Link, 19200 bps, stazione 0)</translation>
+    </message>
+    <message>
+        <location line="+10"/>
+        <source>CP2, the second communication port (a card or a module)</source>
+        <translation>CP2, la seconda porta di comunicazione (una scheda o un modulo)</translation>
+    </message>
+    <message>
+        <location line="+6"/>
+        <source>Easy Link</source>
+        <translation>Easy Link</translation>
+    </message>
+    <message>
+        <location line="+4"/>
+        <source>CPU Link</source>
+        <translation>CPU Link</translation>
+    </message>
+    <message>
+        <location line="+16"/>
+        <source>Parallel Link</source>
+        <translation>Parallel Link</translation>
+    </message>
+    <message>
+        <location line="+14"/>
+        <source>MODBUS</source>
+        <translation>MODBUS</translation>
+    </message>
+    <message>
+        <location line="+9"/>
+        <source>Non Protocol</source>
+        <translation>Non Protocol (senza protocollo)</translation>
+    </message>
+    <message>
+        <location line="+8"/>
+        <source>CP3, the VB-CADP&apos;s RS-485 port (Computer Link, 19200 bps, station 0..99)</source>
+        <translation>CP3, la porta RS-485 del VB-CADP (Computer Link, 19200 bps, stazione 0..99)</translation>
+    </message>
+    <message>
+        <location line="+14"/>
+        <source>VB-1COM serial module</source>
+        <translation>modulo seriale VB-1COM</translation>
+    </message>
+    <message>
+        <location line="+7"/>
+        <source>a VB-1COM serial module, numbered as FROM / TO name it</source>
+        <translation>un modulo seriale VB-1COM, numerato come lo indicano FROM / TO</translation>
+    </message>
+    <message>
+        <location line="+100"/>
+        <source>variable resistors (panel)</source>
+        <translation>potenziometri (pannello)</translation>
+    </message>
+    <message>
+        <location line="+20"/>
         <source>RS, CCD, ASCI, HEX: 8-bit mode, one byte a word (OFF: 16-bit)</source>
         <translation>RS, CCD, ASCI, HEX: modalità a 8 bit, un byte per word (OFF: 16 bit)</translation>
     </message>
     <message>
-        <location line="+150"/>
+        <location line="+6"/>
+        <source>ON for one scan when LINK or MBUS completed its table</source>
+        <translation>ON per una scansione quando LINK o MBUS ha completato la sua tabella</translation>
+    </message>
+    <message>
+        <location line="+174"/>
         <source>Step ladder: start of step S</source>
         <translation>Step ladder: inizio del passo S</translation>
     </message>
@@ -8285,7 +8613,7 @@ Valutazione: %4 µs (%5..%6)</translation>
         <translation>D = il valore delle cifre BCD di S</translation>
     </message>
     <message>
-        <location line="+19"/>
+        <location line="+36"/>
         <source>Read n words of special module m1, from m2</source>
         <translation>Legge n word dal modulo speciale m1, da m2</translation>
     </message>
@@ -8517,6 +8845,399 @@ Valutazione: %4 µs (%5..%6)</translation>
     </message>
 </context>
 <context>
+    <name>rung::network::Devices</name>
+    <message>
+        <location filename="../network/devices.cpp" line="+22"/>
+        <source>%1.baud: needs a rate from 50 to 1000000</source>
+        <translation>%1.baud: richiede una velocità da 50 a 1000000</translation>
+    </message>
+    <message>
+        <location line="+5"/>
+        <source>%1.frame: &quot;%2&quot; is no character format (8N1, 7E1, ...)</source>
+        <translation>%1.frame: &quot;%2&quot; non è un formato di carattere (8N1, 7E1, ...)</translation>
+    </message>
+    <message>
+        <location line="+6"/>
+        <source>%1.delay: needs milliseconds from 0 to 60000</source>
+        <translation>%1.delay: richiede millisecondi da 0 a 60000</translation>
+    </message>
+    <message>
+        <location line="+9"/>
+        <source>%1.%2: unknown key (this device takes: %3)</source>
+        <translation>%1.%2: chiave sconosciuta (questo dispositivo accetta: %3)</translation>
+    </message>
+    <message>
+        <location line="+73"/>
+        <source>%1.station: needs a MODBUS station from 1 to 247</source>
+        <translation>%1.station: richiede una stazione MODBUS da 1 a 247</translation>
+    </message>
+    <message>
+        <location line="+5"/>
+        <source>%1.mode: needs &quot;rtu&quot; or &quot;ascii&quot;</source>
+        <translation>%1.mode: richiede &quot;rtu&quot; o &quot;ascii&quot;</translation>
+    </message>
+    <message>
+        <location line="+14"/>
+        <source>%1.%2.%3: needs an address 0..65535 and a value %4</source>
+        <translation>%1.%2.%3: richiede un indirizzo 0..65535 e un valore %4</translation>
+    </message>
+    <message>
+        <location line="+146"/>
+        <source>%1: needs &quot;expect&quot; and &quot;reply&quot; as hex bytes (&quot;02 30 31&quot;), or &quot;expectText&quot; and &quot;replyText&quot; as text (&quot;\x0201&quot;)</source>
+        <translation>%1: richiede &quot;expect&quot; e &quot;reply&quot; come byte esadecimali (&quot;02 30 31&quot;), o &quot;expectText&quot; e &quot;replyText&quot; come testo (&quot;\x0201&quot;)</translation>
+    </message>
+</context>
+<context>
+    <name>rung::network::EngineImage</name>
+    <message>
+        <location filename="../network/engine_image.cpp" line="+38"/>
+        <source>a station of a network keeps running: it is not stopped from its port</source>
+        <translation>una stazione di una rete continua a funzionare: non si ferma dalla sua porta</translation>
+    </message>
+</context>
+<context>
+    <name>rung::network::Network</name>
+    <message>
+        <location filename="../network/network.cpp" line="+79"/>
+        <source>%1.ports: %2 is named twice</source>
+        <translation>%1.ports: %2 è indicata due volte</translation>
+    </message>
+    <message>
+        <location line="+24"/>
+        <source>%1: no station &quot;%2&quot;</source>
+        <translation>%1: nessuna stazione &quot;%2&quot;</translation>
+    </message>
+    <message>
+        <location line="+11"/>
+        <location line="+18"/>
+        <source>%1: no station or device &quot;%2&quot;</source>
+        <translation>%1: nessuna stazione o dispositivo &quot;%2&quot;</translation>
+    </message>
+    <message>
+        <location line="-16"/>
+        <source>%1: %2 is on wire %3 already; a port has one wire</source>
+        <translation>%1: %2 è già sul cavo %3; una porta ha un solo cavo</translation>
+    </message>
+    <message>
+        <location line="+13"/>
+        <source>%1: no wire &quot;%2&quot;</source>
+        <translation>%1: nessun cavo &quot;%2&quot;</translation>
+    </message>
+    <message>
+        <location line="+27"/>
+        <source>%1: line %2: %3 drives %4, which runs %5; %3 needs %6</source>
+        <extracomment>%1 station, %2 line, %3 instruction (LINK), %4 port (CP2), %5 what it runs, %6 the applications %3 takes</extracomment>
+        <translation>%1: riga %2: %3 usa %4, che esegue %5; %3 richiede %6</translation>
+    </message>
+    <message>
+        <location line="+36"/>
+        <source>silent (fault): not sent</source>
+        <translation>muto (guasto): non inviato</translation>
+    </message>
+    <message>
+        <location line="+5"/>
+        <source>the port is on no wire</source>
+        <translation>la porta non è su alcun cavo</translation>
+    </message>
+    <message>
+        <location line="+12"/>
+        <source>byte %1 corrupted (fault): XOR %2h</source>
+        <translation>byte %1 alterato (guasto): XOR %2h</translation>
+    </message>
+    <message>
+        <location line="+5"/>
+        <source>wire cut (fault): not delivered</source>
+        <translation>cavo tagliato (guasto): non consegnato</translation>
+    </message>
+    <message>
+        <location line="+11"/>
+        <source>collision with %1: both frames garbled</source>
+        <translation>collisione con %1: entrambi i frame alterati</translation>
+    </message>
+</context>
+<context>
+    <name>rung::network::NetworkCheck</name>
+    <message>
+        <location filename="../network/check.cpp" line="+20"/>
+        <source>Computer Link</source>
+        <translation>Computer Link</translation>
+    </message>
+    <message>
+        <location line="+1"/>
+        <source>MODBUS</source>
+        <translation>MODBUS</translation>
+    </message>
+    <message>
+        <location line="+29"/>
+        <source>status 2: the length is not 1..64</source>
+        <translation>stato 2: la lunghezza non è 1..64</translation>
+    </message>
+    <message>
+        <location line="+2"/>
+        <source>status 4: a wrong device type or command</source>
+        <translation>stato 4: tipo di operando o comando errato</translation>
+    </message>
+    <message>
+        <location line="+2"/>
+        <source>status 5: a wrong device number</source>
+        <translation>stato 5: numero di operando errato</translation>
+    </message>
+    <message>
+        <location line="+2"/>
+        <source>status 6: the master&apos;s and the slave&apos;s devices differ (bits and words)</source>
+        <translation>stato 6: gli operandi del master e dello slave differiscono (bit e word)</translation>
+    </message>
+    <message>
+        <location line="+19"/>
+        <location line="+54"/>
+        <source>%1: line %2</source>
+        <translation>%1: riga %2</translation>
+    </message>
+    <message>
+        <location line="-48"/>
+        <source>%1 drives %2, which is on no wire: every set ends in a time-out (status A)</source>
+        <translation>%1 usa %2, che non è su alcun cavo: ogni set termina in time-out (stato A)</translation>
+    </message>
+    <message>
+        <location line="+13"/>
+        <source>wire %1</source>
+        <translation>cavo %1</translation>
+    </message>
+    <message>
+        <location line="+7"/>
+        <source>%1 masters on one wire: %2; their requests collide</source>
+        <translation>%1 master su un cavo: %2; le loro richieste collidono</translation>
+    </message>
+    <message>
+        <location line="+9"/>
+        <source>%1 and %2 both answer %3 station %4</source>
+        <translation>%1 e %2 rispondono entrambi come stazione %3 %4</translation>
+    </message>
+    <message>
+        <location line="+26"/>
+        <source>%1&apos;s table holds %2 sets after the first scan; it takes 1 to %3 within its area</source>
+        <translation>la tabella di %1 contiene %2 set dopo la prima scansione; ne accetta da 1 a %3 entro la sua area</translation>
+    </message>
+    <message>
+        <location line="+20"/>
+        <source>%1 set %2: %3</source>
+        <translation>%1 set %2: %3</translation>
+    </message>
+    <message>
+        <location line="+9"/>
+        <source>%1 set %2 names station %3, which no port or device on %4 answers with %5: the set ends in a time-out (status A)</source>
+        <translation>%1 set %2 indica la stazione %3, a cui nessuna porta o dispositivo su %4 risponde con %5: il set termina in time-out (stato A)</translation>
+    </message>
+</context>
+<context>
+    <name>rung::network::NetworkFile</name>
+    <message>
+        <location filename="../network/network_file.cpp" line="+37"/>
+        <source>%1: unknown key (this object takes: %2)</source>
+        <translation>%1: chiave sconosciuta (questo oggetto accetta: %2)</translation>
+    </message>
+    <message>
+        <location line="+14"/>
+        <source>%1: missing</source>
+        <translation>%1: manca</translation>
+    </message>
+    <message>
+        <location line="+1"/>
+        <source>%1: needs a text</source>
+        <translation>%1: richiede un testo</translation>
+    </message>
+    <message>
+        <location line="+14"/>
+        <source>%1: needs a whole number from %2 to %3</source>
+        <translation>%1: richiede un numero intero da %2 a %3</translation>
+    </message>
+    <message>
+        <location line="+15"/>
+        <source>%1: needs a list</source>
+        <translation>%1: richiede una lista</translation>
+    </message>
+    <message>
+        <location line="+31"/>
+        <source>%1: line %2, column %3: the file is not valid JSON (%4)</source>
+        <translation>%1: riga %2, colonna %3: il file non è JSON valido (%4)</translation>
+    </message>
+    <message>
+        <location line="+9"/>
+        <source>%1: a network file is a JSON object with &quot;stations&quot; and &quot;wires&quot;</source>
+        <translation>%1: un file di rete è un oggetto JSON con &quot;stations&quot; e &quot;wires&quot;</translation>
+    </message>
+    <message>
+        <location line="+24"/>
+        <source>stations: a network needs at least one station</source>
+        <translation>stations: una rete richiede almeno una stazione</translation>
+    </message>
+    <message>
+        <location line="+4"/>
+        <location line="+41"/>
+        <location line="+60"/>
+        <location line="+36"/>
+        <source>%1: needs an object</source>
+        <translation>%1: richiede un oggetto</translation>
+    </message>
+    <message>
+        <location line="-120"/>
+        <location line="+33"/>
+        <source>%1: &quot;%2&quot; is no name (letters, digits, _ and -, at most 32)</source>
+        <translation>%1: &quot;%2&quot; non è un nome (lettere, cifre, _ e -, al massimo 32)</translation>
+    </message>
+    <message>
+        <location line="-30"/>
+        <location line="+33"/>
+        <source>%1: a second &quot;%2&quot;; names are unique</source>
+        <translation>%1: un secondo &quot;%2&quot;; i nomi sono unici</translation>
+    </message>
+    <message>
+        <location line="-28"/>
+        <source>%1: needs an object of ports</source>
+        <translation>%1: richiede un oggetto di porte</translation>
+    </message>
+    <message>
+        <location line="+5"/>
+        <source>%1: needs an object of settings</source>
+        <translation>%1: richiede un oggetto di impostazioni</translation>
+    </message>
+    <message>
+        <location line="+27"/>
+        <source>%1: &quot;%2&quot; is no kind of device (modbus-slave, line)</source>
+        <translation>%1: &quot;%2&quot; non è un tipo di dispositivo (modbus-slave, line)</translation>
+    </message>
+    <message>
+        <location line="+23"/>
+        <source>%1: needs a list of ends, [&quot;a/CP2&quot;, &quot;b/CP2&quot;]</source>
+        <translation>%1: richiede una lista di estremi, [&quot;a/CP2&quot;, &quot;b/CP2&quot;]</translation>
+    </message>
+    <message>
+        <location line="+3"/>
+        <source>%1: a second wire &quot;%2&quot;</source>
+        <translation>%1: un secondo cavo &quot;%2&quot;</translation>
+    </message>
+    <message>
+        <location line="+3"/>
+        <source>%1: a wire joins at least two ends</source>
+        <translation>%1: un cavo collega almeno due estremi</translation>
+    </message>
+    <message>
+        <location line="+3"/>
+        <source>%1: needs &quot;STATION/PORT&quot; or a device&apos;s name</source>
+        <translation>%1: richiede &quot;STAZIONE/PORTA&quot; o il nome di un dispositivo</translation>
+    </message>
+    <message>
+        <location line="+26"/>
+        <source>%1: a bridge goes to one of &quot;pty&quot;: true, &quot;serial&quot;: &quot;/dev/ttyUSB0&quot;, &quot;tcp&quot;: &quot;HOST:PORT&quot;</source>
+        <translation>%1: un ponte va a uno tra &quot;pty&quot;: true, &quot;serial&quot;: &quot;/dev/ttyUSB0&quot;, &quot;tcp&quot;: &quot;HOST:PORT&quot;</translation>
+    </message>
+    <message>
+        <location line="+44"/>
+        <source>%1: &quot;to&quot; comes before &quot;from&quot;</source>
+        <translation>%1: &quot;to&quot; viene prima di &quot;from&quot;</translation>
+    </message>
+    <message>
+        <location line="+16"/>
+        <source>%1: &quot;%2&quot; is no fault (cut, silent, corrupt)</source>
+        <translation>%1: &quot;%2&quot; non è un guasto (cut, silent, corrupt)</translation>
+    </message>
+</context>
+<context>
+    <name>rung::network::SharedLink</name>
+    <message>
+        <location filename="../network/shared_link.cpp" line="+183"/>
+        <source>CPU Link exchange among %1 (%2 ms); no frames: the manual does not publish them</source>
+        <translation>scambio CPU Link tra %1 (%2 ms); nessun frame: il manuale non li pubblica</translation>
+    </message>
+    <message>
+        <location line="+2"/>
+        <source>no station</source>
+        <translation>nessuna stazione</translation>
+    </message>
+    <message>
+        <location line="+78"/>
+        <source>Parallel Link exchange; no frames: the manual does not publish them</source>
+        <translation>scambio Parallel Link; nessun frame: il manuale non li pubblica</translation>
+    </message>
+    <message>
+        <location line="+3"/>
+        <source>Parallel Link: no exchange, the other station does not answer</source>
+        <translation>Parallel Link: nessuno scambio, l&apos;altra stazione non risponde</translation>
+    </message>
+    <message>
+        <location line="+32"/>
+        <source>wire %1: CPU Link and Parallel Link cannot share a wire</source>
+        <translation>cavo %1: CPU Link e Parallel Link non possono condividere un cavo</translation>
+    </message>
+    <message>
+        <location line="+8"/>
+        <source>wire %1: %2 and %3 are both CPU Link station %4</source>
+        <translation>cavo %1: %2 e %3 sono entrambe la stazione CPU Link %4</translation>
+    </message>
+    <message>
+        <location line="+12"/>
+        <source>wire %1: Parallel Link joins one master and one slave</source>
+        <translation>cavo %1: Parallel Link collega un master e uno slave</translation>
+    </message>
+</context>
+<context>
+    <name>rung::network::Trace</name>
+    <message>
+        <location filename="../network/net_trace.cpp" line="+20"/>
+        <source>%1: name a station&apos;s device as STATION/DEVICE, e.g. %2/%3</source>
+        <translation>%1: indicare un operando di una stazione come STAZIONE/OPERANDO, ad es. %2/%3</translation>
+    </message>
+    <message>
+        <location line="+11"/>
+        <source>%1: no station &quot;%2&quot; (the stations: %3)</source>
+        <translation>%1: nessuna stazione &quot;%2&quot; (le stazioni: %3)</translation>
+    </message>
+    <message>
+        <location line="+19"/>
+        <source>%1 needs a value</source>
+        <translation>%1 richiede un valore</translation>
+    </message>
+    <message>
+        <location line="+1"/>
+        <source>unexpected argument %1</source>
+        <translation>argomento inatteso %1</translation>
+    </message>
+    <message>
+        <location line="+10"/>
+        <source>%1 needs a whole number from 1 to %2, not &quot;%3&quot;</source>
+        <translation>%1 richiede un numero intero da 1 a %2, non &quot;%3&quot;</translation>
+    </message>
+    <message>
+        <location line="+15"/>
+        <source>--set needs STATION/DEV=VALUE@SCAN, not &quot;%1&quot;</source>
+        <translation>--set richiede STAZIONE/DISP=VALORE@SCANSIONE, non &quot;%1&quot;</translation>
+    </message>
+    <message>
+        <location line="+34"/>
+        <source>unknown option %1</source>
+        <translation>opzione sconosciuta %1</translation>
+    </message>
+    <message>
+        <location line="+5"/>
+        <source>--scans and --trace are required</source>
+        <translation>--scans e --trace sono obbligatori</translation>
+    </message>
+    <message>
+        <location line="+7"/>
+        <source>--set at %1 comes after the last row: it applies once %1 rows have run, and %2 run, so it would never apply</source>
+        <extracomment>--set DEV=VALUE@N applies once N (%1) rows of scans have run; %2 rows run</extracomment>
+        <translation>--set a %1 viene dopo l&apos;ultima riga: vale dopo %1 righe, e ne vengono eseguite %2, quindi non varrebbe mai</translation>
+    </message>
+</context>
+<context>
+    <name>rung::network::Traffic</name>
+    <message>
+        <location filename="../network/traffic.cpp" line="+9"/>
+        <source># traffic of %1: virtual time (ms), wire, sender, bytes, |as text|, note</source>
+        <translation># traffico di %1: tempo virtuale (ms), cavo, mittente, byte, |come testo|, nota</translation>
+    </message>
+</context>
+<context>
     <name>rung::simulator::CommandInbox</name>
     <message>
         <location filename="../simulator/command_inbox.cpp" line="+15"/>
@@ -8582,23 +9303,61 @@ Valutazione: %4 µs (%5..%6)</translation>
         <location line="+16"/>
         <location filename="../simulator/compile_steps.cpp" line="-13"/>
         <location line="+41"/>
+        <location line="+187"/>
         <location filename="../simulator/compiler_detail.h" line="+24"/>
         <source>%1 cannot be written</source>
         <translation>%1 non può essere scritto</translation>
     </message>
     <message>
+        <location filename="../simulator/compile_comm.cpp" line="+61"/>
+        <source>%1 needs a constant as operand %2</source>
+        <translation>%1 richiede una costante come operando %2</translation>
+    </message>
+    <message>
+        <location line="+36"/>
+        <source>%1 moves %2 digits from digit %3 to digit %4: the digits would run below digit 1</source>
+        <translation>%1 sposta %2 cifre dalla cifra %3 alla cifra %4: le cifre andrebbero sotto la cifra 1</translation>
+    </message>
+    <message>
+        <location line="+22"/>
+        <source>%1 has no variable resistor %2</source>
+        <translation>%1 non ha il potenziometro %2</translation>
+    </message>
+    <message>
+        <location line="+21"/>
+        <source>%1 takes a register, a 32-bit counter or a constant, not %2</source>
+        <translation>%1 accetta un registro, un contatore a 32 bit o una costante, non %2</translation>
+    </message>
+    <message>
+        <location line="+17"/>
+        <source>%1 writes four registers from %2: give a data register</source>
+        <translation>%1 scrive quattro registri da %2: indicare un registro dati</translation>
+    </message>
+    <message>
+        <location line="+30"/>
+        <source>%1 takes plain registers, not %2</source>
+        <translation>%1 accetta registri semplici, non %2</translation>
+    </message>
+    <message>
+        <location line="+11"/>
         <location filename="../simulator/compiler_detail.h" line="+3"/>
         <source>%1 is not a word device</source>
         <translation>%1 non è un operando word</translation>
     </message>
     <message>
+        <location line="+35"/>
+        <source>%1 moves one word with %2: n must be K1</source>
+        <translation>%1 sposta una word con %2: n deve essere K1</translation>
+    </message>
+    <message>
+        <location line="-68"/>
         <location filename="../simulator/compile_words.cpp" line="+32"/>
         <location filename="../simulator/compiler_detail.h" line="+17"/>
         <source>%1 needs the next word too, which does not exist</source>
         <translation>%1 richiede anche la word successiva, che non esiste</translation>
     </message>
     <message>
-        <location line="+22"/>
+        <location filename="../simulator/compile_words.cpp" line="+22"/>
         <source>%1 reads a block of words: %2 is not a word device</source>
         <translation>%1 legge un blocco di word: %2 non è un operando word</translation>
     </message>
@@ -8608,7 +9367,7 @@ Valutazione: %4 µs (%5..%6)</translation>
         <translation>%1 richiede %2 blocchi aperti prima di sé</translation>
     </message>
     <message>
-        <location filename="../simulator/compile_steps.cpp" line="-187"/>
+        <location filename="../simulator/compile_steps.cpp" line="-374"/>
         <source>more than %1 open blocks</source>
         <translation>più di %1 blocchi aperti</translation>
     </message>
@@ -8623,7 +9382,7 @@ Valutazione: %4 µs (%5..%6)</translation>
         <translation>%1 non è un contatore</translation>
     </message>
     <message>
-        <location line="+162"/>
+        <location line="+166"/>
         <source>the simulator has no operator %1</source>
         <translation>il simulatore non ha l&apos;operatore %1</translation>
     </message>
@@ -8648,7 +9407,7 @@ Valutazione: %4 µs (%5..%6)</translation>
         <translation>il blocco di %1 word va oltre la fine della sua area</translation>
     </message>
     <message>
-        <location filename="../simulator/compiler.cpp" line="+164"/>
+        <location filename="../simulator/compiler.cpp" line="+189"/>
         <source>unknown instruction</source>
         <translation>istruzione sconosciuta</translation>
     </message>
@@ -8668,13 +9427,13 @@ Valutazione: %4 µs (%5..%6)</translation>
         <translation>%1 non può essere resettato</translation>
     </message>
     <message>
-        <location filename="../simulator/compile_steps.cpp" line="-139"/>
+        <location filename="../simulator/compile_steps.cpp" line="-143"/>
         <location filename="../simulator/compiler.cpp" line="+5"/>
         <source>%1 is not a device</source>
         <translation>%1 non è un operando</translation>
     </message>
     <message>
-        <location filename="../simulator/compiler.cpp" line="+111"/>
+        <location filename="../simulator/compiler.cpp" line="+113"/>
         <source>the program has no target</source>
         <translation>il programma non ha una famiglia PLC</translation>
     </message>
@@ -8709,6 +9468,7 @@ Valutazione: %4 µs (%5..%6)</translation>
     <message>
         <location filename="../simulator/engine_arith.h" line="+54"/>
         <location line="+42"/>
+        <location filename="../simulator/engine_text.cpp" line="+149"/>
         <source>division by zero; the destination is unchanged</source>
         <translation>divisione per zero; la destinazione resta invariata</translation>
     </message>
@@ -8783,6 +9543,67 @@ Valutazione: %4 µs (%5..%6)</translation>
         <location filename="../simulator/engine_words.cpp" line="+15"/>
         <source>operation error: %1 bytes need %2 words from the source, past the end of its area; the instruction is not executed</source>
         <translation>errore operativo: %1 byte richiedono %2 word dalla sorgente, oltre la fine della sua area; l&apos;istruzione non viene eseguita</translation>
+    </message>
+    <message>
+        <location filename="../simulator/engine_comm.cpp" line="+351"/>
+        <source>operation error: the communication table holds %1 sets; it takes 1 to %2</source>
+        <translation>errore operativo: la tabella di comunicazione contiene %1 set; ne accetta da 1 a %2</translation>
+    </message>
+    <message>
+        <location line="+4"/>
+        <source>operation error: a table of %1 sets needs %2 registers, past the end of its area</source>
+        <translation>errore operativo: una tabella di %1 set richiede %2 registri, oltre la fine della sua area</translation>
+    </message>
+    <message>
+        <location line="+55"/>
+        <source>operation error: another RS is active; only one may be active at a time, this one does nothing</source>
+        <translation>errore operativo: un altro RS è attivo; ne può essere attivo uno solo alla volta, questo non fa nulla</translation>
+    </message>
+    <message>
+        <location line="+38"/>
+        <source>operation error: %1 data to send from a block that ends after %2 words; nothing is sent</source>
+        <translation>errore operativo: %1 dati da inviare da un blocco che finisce dopo %2 word; non viene inviato nulla</translation>
+    </message>
+    <message>
+        <location line="+76"/>
+        <source>operation error: %1 data received for a block that ends after %2 words; they are not stored</source>
+        <translation>errore operativo: %1 dati ricevuti per un blocco che finisce dopo %2 word; non vengono memorizzati</translation>
+    </message>
+    <message>
+        <location filename="../simulator/engine_module.cpp" line="+108"/>
+        <location line="+25"/>
+        <source>operation error: no special module %1 is connected (in a network a VB-1COM is the station&apos;s port MODULE%1)</source>
+        <translation>errore operativo: nessun modulo speciale %1 collegato (in una rete un VB-1COM è la porta MODULE%1 della stazione)</translation>
+    </message>
+    <message>
+        <location line="-18"/>
+        <source>operation error: buffer memory #%1..#%2 of module %3 does not exist or the block runs past its area; nothing is read</source>
+        <translation>errore operativo: la memoria buffer #%1..#%2 del modulo %3 non esiste o il blocco va oltre la sua area; non viene letto nulla</translation>
+    </message>
+    <message>
+        <location line="+26"/>
+        <source>operation error: buffer memory #%1..#%2 of module %3 cannot be written (the module&apos;s table marks it read-only, or it does not exist); nothing is written</source>
+        <translation>errore operativo: la memoria buffer #%1..#%2 del modulo %3 non si può scrivere (la tabella del modulo la indica di sola lettura, o non esiste); non viene scritto nulla</translation>
+    </message>
+    <message>
+        <location filename="../simulator/engine_text.cpp" line="-108"/>
+        <source>operation error: %1 characters need %2 words from the destination, past the end of its area; the instruction is not executed</source>
+        <translation>errore operativo: %1 caratteri richiedono %2 word dalla destinazione, oltre la fine della sua area; l&apos;istruzione non viene eseguita</translation>
+    </message>
+    <message>
+        <location line="+31"/>
+        <source>operation error: %1 characters need %2 words from the source, past the end of its area; the instruction is not executed</source>
+        <translation>errore operativo: %1 caratteri richiedono %2 word dalla sorgente, oltre la fine della sua area; l&apos;istruzione non viene eseguita</translation>
+    </message>
+    <message>
+        <location line="+14"/>
+        <source>operation error: character %1 (%2H) is no hexadecimal digit; the destination is unchanged</source>
+        <translation>errore operativo: il carattere %1 (%2H) non è una cifra esadecimale; la destinazione non cambia</translation>
+    </message>
+    <message>
+        <location line="+26"/>
+        <source>operation error: %1 is no 4-digit BCD value (0..9999; M9168 ON moves hexadecimal digits); the destination is unchanged</source>
+        <translation>errore operativo: %1 non è un valore BCD di 4 cifre (0..9999; con M9168 ON si spostano cifre esadecimali); la destinazione non cambia</translation>
     </message>
 </context>
 <context>
@@ -9022,7 +9843,7 @@ Valutazione: %4 µs (%5..%6)</translation>
         <translation>operando sconosciuto %1: %2</translation>
     </message>
     <message>
-        <location line="+30"/>
+        <location line="+93"/>
         <source>%1 needs a value</source>
         <translation>%1 richiede un valore</translation>
     </message>
@@ -9052,7 +9873,7 @@ Valutazione: %4 µs (%5..%6)</translation>
         <translation>--set richiede DEV=VALUE@SCAN, non &quot;%1&quot;</translation>
     </message>
     <message>
-        <location line="+34"/>
+        <location line="+20"/>
         <source>unknown option %1</source>
         <translation>opzione sconosciuta %1</translation>
     </message>

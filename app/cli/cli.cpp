@@ -1,8 +1,8 @@
 #include "cli.h"
 
 #include "cli_common.h"
-#include "cli_network.h"
 #include "cli_diff.h"
+#include "cli_network.h"
 #include "cli_online.h"
 #include "cli_plcopen.h"
 #include "cli_record.h"
@@ -43,10 +43,10 @@ QString usage() {
                      "--lang en|hu|it: the language of the messages (else the locale's, LANG).\n"
                      "Exit status: 0 no error, 1 the program has errors, 2 usage or I/O error.")
                .arg(model::targetIds().join(QLatin1Char('|'))) +
-           QLatin1Char('\n') + networkUsage() + QLatin1Char('\n') + diffUsage() + QLatin1Char('\n') + showUsage() + QLatin1Char('\n') +
-           testUsage() + QLatin1Char('\n') + onlineUsage() + QLatin1Char('\n') + recordUsage() +
-           QLatin1Char('\n') + terminalUsage() + QLatin1Char('\n') +
-           QStringLiteral("  rungstudio-cli --help | --version");
+           QLatin1Char('\n') + networkUsage() + QLatin1Char('\n') + diffUsage() +
+           QLatin1Char('\n') + showUsage() + QLatin1Char('\n') + testUsage() + QLatin1Char('\n') +
+           onlineUsage() + QLatin1Char('\n') + recordUsage() + QLatin1Char('\n') + terminalUsage() +
+           QLatin1Char('\n') + QStringLiteral("  rungstudio-cli --help | --version");
 }
 
 int check(const QStringList &args, QTextStream &out, QTextStream &err) {

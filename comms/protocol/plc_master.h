@@ -1,9 +1,10 @@
 #pragma once
 
 // The codecs of this room as the master a PLC's program drives (model/comm/master_protocol.h):
-// Vigor Computer Link for LINK (Vigor M/VB/VH communication manual, B-3-3), MODBUS RTU or ASCII for MBUS (B-3-6) and the
-// PL110's COM / EXP (PL110 manual 4.2.21). The same encoders and decoders as the IDE's driver and
-// the virtual PLC's responders, so the frames on a simulated wire are the product's frames.
+// Vigor Computer Link for LINK (Vigor M/VB/VH communication manual, B-3-3), MODBUS RTU or ASCII for
+// MBUS (B-3-6) and the PL110's COM / EXP (PL110 manual 4.2.21). The same encoders and decoders as
+// the IDE's driver and the virtual PLC's responders, so the frames on a simulated wire are the
+// product's frames.
 
 #include "comms/protocol/modbus_master.h"
 #include "comms/protocol/vigor_link_master.h"

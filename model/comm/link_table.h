@@ -1,9 +1,10 @@
 #pragma once
 
-// One set of a LINK or MBUS communication table (Vigor M/VB/VH communication manual, B-3-3, B-3-6): seven registers
-// read and checked as the PLC does, giving the working area's status codes (2 length, 4 device
-// type, 5 device number, 6 attributes differ). The engine runs the sets; the network's wiring
-// check reads the same table to find the stations it names (one function, two rooms).
+// One set of a LINK or MBUS communication table (Vigor M/VB/VH communication manual, B-3-3, B-3-6):
+// seven registers read and checked as the PLC does, giving the working area's status codes (2
+// length, 4 device type, 5 device number, 6 attributes differ). The engine runs the sets; the
+// network's wiring check reads the same table to find the stations it names (one function, two
+// rooms).
 
 #include "model/target/protocol_map.h"
 #include "model/target/target.h"

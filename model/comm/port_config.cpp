@@ -192,8 +192,9 @@ bool readPortConfig(const Target &target, const ModelVariant *model, const QStri
         if (!frame.isUndefined()) {
             SerialSettings line = config->line;
             if (!frame.isString() || !parseFrameFormat(frame.toString(), &line)) {
-                *error = PortConfigTr::tr("%1: \"%2\" is no character format (data bits 7 or 8, parity N, "
-                                "E or O, stop bits 1 or 2: 8N1, 7E1)")
+                *error = PortConfigTr::tr(
+                             "%1: \"%2\" is no character format (data bits 7 or 8, parity N, "
+                             "E or O, stop bits 1 or 2: 8N1, 7E1)")
                              .arg(at(layer.path, QStringLiteral("frame")), frame.toString());
                 return false;
             }

@@ -1,9 +1,10 @@
 #pragma once
 
 // A port's settings as a project or a network file gives them: what Ladder Master calls the
-// "2nd COM Port Setting" (Vigor M/VB/VH communication manual, B-3-1: application, station number, baud rate, format and a
-// panel per application), the PL110's port protocol (PL110 manual 3.1, 4.2.21). JSON, documented in
-// docs/network-format.md; the tables of Target::ports say what each port and model allow.
+// "2nd COM Port Setting" (Vigor M/VB/VH communication manual, B-3-1: application, station number,
+// baud rate, format and a panel per application), the PL110's port protocol (PL110
+// manual 3.1, 4.2.21). JSON, documented in docs/network-format.md; the tables of Target::ports say
+// what each port and model allow.
 
 #include "model/comm/serial_line.h"
 #include "model/listing/il.h"

@@ -2,10 +2,10 @@
 
 // A PLC's serial ports as target data (Target::ports): which ports a model has, the
 // applications each can run (what Ladder Master's "2nd COM Port Setting" offers, Vigor M/VB/VH
-// communication manual, B-3-1; the PL110's protocols, PL110 manual chapter 3 and 4.2.19 / 4.2.21), their rates, formats
-// and station numbers. The network file, a project's port settings and the wiring checks read
-// these tables and nothing else. target.h includes this header, so it must not include
-// target.h.
+// communication manual, B-3-1; the PL110's protocols, PL110 manual chapter 3 and 4.2.19 / 4.2.21),
+// their rates, formats and station numbers. The network file, a project's port settings and the
+// wiring checks read these tables and nothing else. target.h includes this header, so it must not
+// include target.h.
 
 #include <QString>
 #include <QStringList>
@@ -52,8 +52,9 @@ struct PortApplication {
     // MODBUS), so a wire may carry only one such port.
     bool master = false;
     // The manual publishes the frames of this application. False for CPU Link and Parallel
-    // Link ("dedicated protocol", Vigor M/VB/VH communication manual, B-3-4, B-3-5): the simulation exchanges their data
-    // at the level the manual publishes and never puts a frame of its own on a real port.
+    // Link ("dedicated protocol", Vigor M/VB/VH communication manual, B-3-4, B-3-5): the simulation
+    // exchanges their data at the level the manual publishes and never puts a frame of its own on a
+    // real port.
     bool published = true;
     // The program drives the port byte by byte (RS, VB-1COM, PL110 free-port).
     bool programDriven = false;
@@ -76,9 +77,9 @@ struct PortSpec {
     bool on(const QString &model) const { return models.isEmpty() || models.contains(model); }
 };
 
-// A device type code of the LINK / MBUS communication table (Vigor M/VB/VH communication manual, B-3-3: 1 X, 2 Y, 3 M,
-// 4 S, 5 T contact, 6 C contact, 10 timer present value, 11 16-bit counter present value, 12
-// 32-bit counter present value, 13 D; B-3-6: MBUS takes them but 12).
+// A device type code of the LINK / MBUS communication table (Vigor M/VB/VH communication manual,
+// B-3-3: 1 X, 2 Y, 3 M, 4 S, 5 T contact, 6 C contact, 10 timer present value, 11 16-bit counter
+// present value, 12 32-bit counter present value, 13 D; B-3-6: MBUS takes them but 12).
 struct LinkDeviceCode {
     int code = 0;
     const char *prefix = ""; // the devices' prefix, as the target writes it

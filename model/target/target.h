@@ -147,8 +147,8 @@ enum class SystemRole : std::uint8_t {
     // SMOV moves hexadecimal digits instead of BCD ones while ON (Vigor M9168, set by the
     // program: Vigor M/VB/VH communication manual, B-4-5 "M9168 SMOV hexadecimal").
     HexDigits,
-    // Communication (Vigor M/VB/VH communication manual, B-3-3 .. B-3-9; docs/network.md). Driven by the PLC unless the
-    // manual says the program writes them (SystemDevice::programWrites).
+    // Communication (Vigor M/VB/VH communication manual, B-3-3 .. B-3-9; docs/network.md). Driven
+    // by the PLC unless the manual says the program writes them (SystemDevice::programWrites).
     LinkCycleDone, // Vigor M9199: ON for one scan when LINK / MBUS completed its table
     RsSendRequest, // Vigor M9122: the program sets it to send, the PLC resets it when sent
     RsReceiveDone, // Vigor M9123: reception ended (n data, end code or time-out)
@@ -357,7 +357,8 @@ enum class ApplyFunction : std::uint8_t {
     // Vigor CCD S D n (FX / Delta FNC 84): the sum of n bytes from S into D, their parity
     // (XOR) into D+1; bytes as SystemRole::ByteMode says.
     CheckCode,
-    // Vigor instructions of the Vigor M/VB/VH communication manual's communication programs (docs/simulator.md):
+    // Vigor instructions of the Vigor M/VB/VH communication manual's communication programs
+    // (docs/simulator.md):
     Swap,        // SWAP D: the two bytes of D exchanged
     ToAscii,     // ASCI S D n: the last n hex digits of S as ASCII characters
     FromAscii,   // HEX S D n: n ASCII hex characters from S as a number in D
@@ -410,8 +411,8 @@ struct InstructionSpec {
     // The operand that numbers or names the port: a constant appended to `port` (Vigor FROM K1:
     // MODULE1), or a word that is the port's name (PL110 SEND COM1 n); -1: `port` alone.
     int portOperand = -1;
-    // The manual allows it once in a program (Vigor M/VB/VH communication manual, B-3-3, B-3-6: LINK, MBUS "can be used
-    // once only in the program"): model::onceOnlyBreaches.
+    // The manual allows it once in a program (Vigor M/VB/VH communication manual, B-3-3, B-3-6:
+    // LINK, MBUS "can be used once only in the program"): model::onceOnlyBreaches.
     bool oncePerProgram = false;
 };
 

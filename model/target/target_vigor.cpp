@@ -268,9 +268,10 @@ Target makeVigorTarget() {
                       QT_TRANSLATE_NOOP("rung::model::Target", "index registers"));
     v.indexRegister = true;
     v.prefixAliases = {QStringLiteral("F")};
-    // The VB's variable resistors VR1, VR2 on its panel, read by VRRD (the Vigor M/VB/VH communication manual's display
-    // programs: "VRRD K1 D0  Read the value of VR1"): word inputs 0..255 that the simulator
-    // takes as a stimulus like a terminal (--set VR1=120@0). Not on the link map.
+    // The VB's variable resistors VR1, VR2 on its panel, read by VRRD (the Vigor M/VB/VH
+    // communication manual's display programs: "VRRD K1 D0  Read the value of VR1"): word inputs
+    // 0..255 that the simulator takes as a stimulus like a terminal (--set VR1=120@0). Not on the
+    // link map.
     Area &vr = addArea(t, "VR", "VR", AreaKind::Word, 1, 2,
                        QT_TRANSLATE_NOOP("rung::model::Target", "variable resistors (panel)"));
     vr.writable = false;
@@ -306,7 +307,8 @@ Target makeVigorTarget() {
          QT_TRANSLATE_NOOP("rung::model::Target", "minimum scan time (0.1 ms)"), 100},
         {QStringLiteral("D9012"), SystemRole::ScanTimeMax,
          QT_TRANSLATE_NOOP("rung::model::Target", "maximum scan time (0.1 ms)"), 100},
-        // The Vigor M/VB/VH communication manual's communication chapters (B-3-4, B-3-5, B-3-8, B-3-9); docs/network.md.
+        // The Vigor M/VB/VH communication manual's communication chapters (B-3-4, B-3-5, B-3-8,
+        // B-3-9); docs/network.md.
         {QStringLiteral("M9063"), SystemRole::CommError,
          QT_TRANSLATE_NOOP("rung::model::Target",
                            "parallel operation or RS communication error, PLC keeps running")},
@@ -564,14 +566,16 @@ Target makeVigorTarget() {
     // Special modules, I/O refresh and communication (docs/network.md). REF is accepted and not
     // simulated (check warns, SIM100); the rest is simulated. Neither manual gives step counts:
     // each is the FX family's 16-bit size, one step for the instruction and two for each
-    // operand (Delta's tables, to which PLC concepts (WPLSoft family) belongs, give FROM/TO 9, CCD 7, REF 5 the same
-    // way). Operands as the Vigor M/VB/VH communication manual's pages and example programs write them.
-    // FROM / TO m1 m2 D n (the Vigor M/VB/VH communication manual's VB-1COM pages: FROM K1 K2000 D50 K15, TO K1 K1000 D0
-    // K15): n words at least one, the block D..D+n-1 inside the registers.
+    // operand (Delta's tables, to which PLC concepts (WPLSoft family) belongs, give FROM/TO 9, CCD
+    // 7, REF 5 the same way). Operands as the Vigor M/VB/VH communication manual's pages and
+    // example programs write them. FROM / TO m1 m2 D n (the Vigor M/VB/VH communication manual's
+    // VB-1COM pages: FROM K1 K2000 D50 K15, TO K1 K1000 D0 K15): n words at least one, the block
+    // D..D+n-1 inside the registers.
     OperandSpec moduleWords{K::Count};
     moduleWords.lowest = 1;
-    // m1: the module, K1..K16 (Vigor M/VB/VH communication manual, B-4-1: "up to 16" VB-1COM modules; the examples use
-    // K1); m2: the first buffer memory word (B-4-4: #0..#30, #1000..#1256, #2000..#2256).
+    // m1: the module, K1..K16 (Vigor M/VB/VH communication manual, B-4-1: "up to 16" VB-1COM
+    // modules; the examples use K1); m2: the first buffer memory word (B-4-4: #0..#30,
+    // #1000..#1256, #2000..#2256).
     OperandSpec moduleNumber{K::Constant};
     moduleNumber.lowest = 1;
     moduleNumber.highest = 16;
@@ -600,8 +604,8 @@ Target makeVigorTarget() {
         "TO", ApplyFunction::ModuleWrite, {moduleNumber, moduleWord, moduleSrc, moduleWords}, 9,
         QT_TRANSLATE_NOOP("rung::model::Target", "Write n words to special module m1, at m2"),
         "m1 m2 S n")));
-    // TOP K1 K0 H7096 K1 (Vigor M/VB/VH communication manual, B-4-5, the VB-1COM's communication format): TO's pulse
-    // form, FNC 79, run once when its condition turns ON.
+    // TOP K1 K0 H7096 K1 (Vigor M/VB/VH communication manual, B-4-5, the VB-1COM's communication
+    // format): TO's pulse form, FNC 79, run once when its condition turns ON.
     InstructionSpec top = modulePort(apply(
         "TOP", ApplyFunction::ModuleWrite, {moduleNumber, moduleWord, moduleSrc, moduleWords}, 9,
         QT_TRANSLATE_NOOP("rung::model::Target",
@@ -639,9 +643,10 @@ Target makeVigorTarget() {
     in.push_back(apply("REF", ApplyFunction::NotSimulated, {refreshed, {K::Count}}, 5,
                        QT_TRANSLATE_NOOP("rung::model::Target", "Refresh n inputs or outputs now"),
                        "D n"));
-    // HEX D59 D106 K2, ASCI D111 D12 K4 (the Vigor M/VB/VH communication manual's RS and VB-1COM programs). The manual
-    // defines them only by those programs: a word's last n hexadecimal digits (n = 2 or 4),
-    // one character a word with M9161 ON. n is 1..4, one word's digits (docs/simulator.md).
+    // HEX D59 D106 K2, ASCI D111 D12 K4 (the Vigor M/VB/VH communication manual's RS and VB-1COM
+    // programs). The manual defines them only by those programs: a word's last n hexadecimal digits
+    // (n = 2 or 4), one character a word with M9161 ON. n is 1..4, one word's digits
+    // (docs/simulator.md).
     OperandSpec digits{K::Count};
     digits.lowest = 1;
     digits.highest = 4;
@@ -747,8 +752,9 @@ Target makeVigorTarget() {
               QT_TRANSLATE_NOOP("rung::model::Target", "Swap the high and low bytes of D"), "D");
     swap.functionCode = 147;
     in.push_back(swap);
-    // SMOV D55 K2 K2 D110 K4 (Vigor M/VB/VH communication manual, with M9168 choosing hexadecimal digits): digit
-    // positions 1..4, the count no more than the digits from m1 down and from n down.
+    // SMOV D55 K2 K2 D110 K4 (Vigor M/VB/VH communication manual, with M9168 choosing hexadecimal
+    // digits): digit positions 1..4, the count no more than the digits from m1 down and from n
+    // down.
     OperandSpec digitPosition{K::Count};
     digitPosition.lowest = 1;
     digitPosition.highest = 4;
@@ -760,8 +766,8 @@ Target makeVigorTarget() {
         "S m1 m2 D n");
     smov.functionCode = 13;
     in.push_back(smov);
-    // DDIV D12 K255 D14 (Vigor M/VB/VH communication manual, B-3-6, the MBUS example's slaves: "D10x99/255"): DIV's
-    // 32-bit form; the quotient into D, D+1, the remainder into D+2, D+3.
+    // DDIV D12 K255 D14 (Vigor M/VB/VH communication manual, B-3-6, the MBUS example's slaves:
+    // "D10x99/255"): DIV's 32-bit form; the quotient into D, D+1, the remainder into D+2, D+3.
     InstructionSpec ddiv =
         apply("DDIV", ApplyFunction::Div, {src, src, dst}, 13,
               QT_TRANSLATE_NOOP("rung::model::Target",
@@ -775,8 +781,8 @@ Target makeVigorTarget() {
     ddiv.operands[1].words = 2;
     ddiv.operands[2].words = 4;
     in.push_back(ddiv);
-    // ALTP M0 (Vigor M/VB/VH communication manual, B-3-9: the read and write periods): M0 changes state at each rising
-    // edge of the input, ALT's pulse form (FNC 66).
+    // ALTP M0 (Vigor M/VB/VH communication manual, B-3-9: the read and write periods): M0 changes
+    // state at each rising edge of the input, ALT's pulse form (FNC 66).
     OperandSpec alternated{K::BitDest};
     InstructionSpec altp =
         apply("ALTP", ApplyFunction::Toggle, {alternated}, 3,

@@ -38,17 +38,13 @@ QString readAll(const QString &path) {
 // twice, both are the same byte for byte.
 TEST(CliNetwork, SimulateWritesTheTraceAndTheTraffic) {
     QTemporaryDir dir;
-    const QStringList args = {QStringLiteral("simulate"),
-                              kExamples + QStringLiteral("non-protocol/non-protocol.rungnet"),
-                              QStringLiteral("--scans"),
-                              QStringLiteral("30"),
-                              QStringLiteral("--set"),
-                              QStringLiteral("left/VR1=120@0"),
-                              QStringLiteral("--set"),
-                              QStringLiteral("right/VR1=77@0"),
-                              QStringLiteral("--trace"),
-                              QStringLiteral("left/D110,right/D1"),
-                              QStringLiteral("--traffic")};
+    const QStringList args = {
+        QStringLiteral("simulate"), kExamples + QStringLiteral("non-protocol/non-protocol.rungnet"),
+        QStringLiteral("--scans"),  QStringLiteral("30"),
+        QStringLiteral("--set"),    QStringLiteral("left/VR1=120@0"),
+        QStringLiteral("--set"),    QStringLiteral("right/VR1=77@0"),
+        QStringLiteral("--trace"),  QStringLiteral("left/D110,right/D1"),
+        QStringLiteral("--traffic")};
     const auto first = cli(args + QStringList{dir.filePath(QStringLiteral("a.traffic"))});
     ASSERT_EQ(first.code, 0) << first.err.toStdString();
     EXPECT_TRUE(first.err.isEmpty()) << first.err.toStdString();
@@ -58,8 +54,8 @@ TEST(CliNetwork, SimulateWritesTheTraceAndTheTraffic) {
     EXPECT_TRUE(lines.back().endsWith(QStringLiteral(",77,120"))) << lines.back().toStdString();
     const QString traffic = readAll(dir.filePath(QStringLiteral("a.traffic")));
     // The read of D0 as the manual prints it, from the left PLC on wire w1.
-    EXPECT_TRUE(traffic.contains(QStringLiteral(
-        "w1 left/CP2 02 30 31 35 31 31 43 30 30 30 32 03 30 30")))
+    EXPECT_TRUE(
+        traffic.contains(QStringLiteral("w1 left/CP2 02 30 31 35 31 31 43 30 30 30 32 03 30 30")))
         << traffic.toStdString();
     const auto second = cli(args + QStringList{dir.filePath(QStringLiteral("b.traffic"))});
     EXPECT_EQ(second.out, first.out);
@@ -67,17 +63,18 @@ TEST(CliNetwork, SimulateWritesTheTraceAndTheTraffic) {
 }
 
 TEST(CliNetwork, ADeviceOfAStationThatIsNotThereIsAnError) {
-    const auto r = cli({QStringLiteral("simulate"),
-                        kExamples + QStringLiteral("easy-link/easy-link.rungnet"),
-                        QStringLiteral("--scans"), QStringLiteral("3"), QStringLiteral("--trace"),
-                        QStringLiteral("s9/D0")});
+    const auto r =
+        cli({QStringLiteral("simulate"), kExamples + QStringLiteral("easy-link/easy-link.rungnet"),
+             QStringLiteral("--scans"), QStringLiteral("3"), QStringLiteral("--trace"),
+             QStringLiteral("s9/D0")});
     EXPECT_EQ(r.code, 2);
     EXPECT_TRUE(r.err.contains(QStringLiteral("s9"))) << r.err.toStdString();
 }
 
 TEST(CliNetwork, EveryExampleChecksClean) {
     for (const QString &name : QDir(kExamples).entryList(QDir::Dirs | QDir::NoDotAndDotDot)) {
-        const QString file = kExamples + name + QLatin1Char('/') + name + QStringLiteral(".rungnet");
+        const QString file =
+            kExamples + name + QLatin1Char('/') + name + QStringLiteral(".rungnet");
         const auto r = cli({QStringLiteral("check"), file});
         EXPECT_EQ(r.code, 0) << name.toStdString() << "\n"
                              << r.out.toStdString() << r.err.toStdString();
@@ -93,10 +90,10 @@ TEST(CliNetwork, CheckFindsWiringMistakes) {
                                         "MOV K1 D1002\nMOV K1 D1003\nMOV K13 D1004\nMOV K0 "
                                         "D1005\nMOV K13 D1006\nMOV K0 D1007\nLD M9000\nLINK "
                                         "D1000 D100\nEND\n");
-    const QString file = network(
-        dir, {{QStringLiteral("m.il"), link},
-              {QStringLiteral("s.il"), QStringLiteral("; target: vigor\nEND\n")},
-              {QStringLiteral("net.rungnet"), QStringLiteral(R"({"stations": [
+    const QString file =
+        network(dir, {{QStringLiteral("m.il"), link},
+                      {QStringLiteral("s.il"), QStringLiteral("; target: vigor\nEND\n")},
+                      {QStringLiteral("net.rungnet"), QStringLiteral(R"({"stations": [
                 {"name": "m1", "program": "m.il", "model": "VB",
                  "ports": {"CP2": {"application": "easy-link", "station": 0}}},
                 {"name": "m2", "program": "m.il", "model": "VB",
@@ -106,8 +103,8 @@ TEST(CliNetwork, CheckFindsWiringMistakes) {
                 "wires": [["m1/CP2", "m2/CP2", "a/CP2", "b/CP2"]]})")}});
     const auto r = cli({QStringLiteral("check"), file});
     EXPECT_EQ(r.code, 1);
-    EXPECT_TRUE(r.out.contains(QStringLiteral(
-        "wire w1: error: 2 masters on one wire: m1/CP2 (LINK), m2/CP2 (LINK)")))
+    EXPECT_TRUE(r.out.contains(
+        QStringLiteral("wire w1: error: 2 masters on one wire: m1/CP2 (LINK), m2/CP2 (LINK)")))
         << r.out.toStdString();
     EXPECT_TRUE(r.out.contains(
         QStringLiteral("wire w1: error: a/CP2 and b/CP2 both answer Computer Link station 5")))
@@ -118,25 +115,25 @@ TEST(CliNetwork, CheckFindsWiringMistakes) {
         << r.out.toStdString();
 
     QTemporaryDir other;
-    const QString vh = network(
-        other, {{QStringLiteral("s.il"), QStringLiteral("; target: vigor\nEND\n")},
-                {QStringLiteral("net.rungnet"), QStringLiteral(R"({"stations": [
+    const QString vh =
+        network(other, {{QStringLiteral("s.il"), QStringLiteral("; target: vigor\nEND\n")},
+                        {QStringLiteral("net.rungnet"), QStringLiteral(R"({"stations": [
                 {"name": "a", "program": "s.il", "model": "VH",
                  "ports": {"CP2": {"application": "cpu-link"}}}]})")}});
     const auto h = cli({QStringLiteral("check"), vh});
     EXPECT_EQ(h.code, 1);
-    EXPECT_TRUE(h.out.contains(QStringLiteral(
-        "stations[0].ports.CP2.application: the Vigor VH has no CPU Link on CP2")))
+    EXPECT_TRUE(h.out.contains(
+        QStringLiteral("stations[0].ports.CP2.application: the Vigor VH has no CPU Link on CP2")))
         << h.out.toStdString();
 }
 
 // A station's program with an error: named by its file and line, as `check FILE` names it.
 TEST(CliNetwork, CheckNamesAStationsProgramErrors) {
     QTemporaryDir dir;
-    const QString file =
-        network(dir, {{QStringLiteral("p.il"), QStringLiteral("; target: vigor\nLD X0\nOUT\nEND\n")},
-                      {QStringLiteral("net.rungnet"),
-                       QStringLiteral(R"({"stations": [{"name": "a", "program": "p.il"}]})")}});
+    const QString file = network(
+        dir, {{QStringLiteral("p.il"), QStringLiteral("; target: vigor\nLD X0\nOUT\nEND\n")},
+              {QStringLiteral("net.rungnet"),
+               QStringLiteral(R"({"stations": [{"name": "a", "program": "p.il"}]})")}});
     const auto r = cli({QStringLiteral("check"), file});
     EXPECT_EQ(r.code, 1);
     EXPECT_TRUE(r.out.contains(dir.filePath(QStringLiteral("p.il")) + QStringLiteral(":3:")))
@@ -146,10 +143,10 @@ TEST(CliNetwork, CheckNamesAStationsProgramErrors) {
 // An instruction on a port that runs another application: the network does not start.
 TEST(CliNetwork, LinkOnAModbusPortDoesNotStart) {
     QTemporaryDir dir;
-    const QString file = network(
-        dir, {{QStringLiteral("p.il"),
-               QStringLiteral("; target: vigor\nLD M9000\nLINK D1000 D100\nEND\n")},
-              {QStringLiteral("net.rungnet"), QStringLiteral(R"({"stations": [{"name": "a",
+    const QString file =
+        network(dir, {{QStringLiteral("p.il"),
+                       QStringLiteral("; target: vigor\nLD M9000\nLINK D1000 D100\nEND\n")},
+                      {QStringLiteral("net.rungnet"), QStringLiteral(R"({"stations": [{"name": "a",
                 "program": "p.il", "model": "VB", "ports": {"CP2": {"application": "modbus"}}}]})")}});
     const auto r = cli({QStringLiteral("simulate"), file, QStringLiteral("--scans"),
                         QStringLiteral("1"), QStringLiteral("--trace"), QStringLiteral("a/D100")});

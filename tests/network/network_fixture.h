@@ -69,7 +69,8 @@ struct NetRun {
 // Builds the network from its JSON (or reads `file` when json is empty) and, when args are
 // given, runs a trace with them; the traffic is recorded from the start.
 inline NetRun runNetwork(const QByteArray &json, const std::map<QString, QString> &programs,
-                      const QStringList &args = {}, const QString &file = QStringLiteral("t.rungnet")) {
+                         const QStringList &args = {},
+                         const QString &file = QStringLiteral("t.rungnet")) {
     NetRun r;
     NetworkDescription d;
     const bool read = json.isEmpty() ? readNetworkFile(file, &d, &r.error)

@@ -1,6 +1,6 @@
-// Vigor Easy Link (Vigor M/VB/VH communication manual, B-3-3): the manual's programming example, verbatim, on a network
-// whose slaves answer with the product's Computer Link responder; and each fault the issue
-// names, shown by the working area's status codes as the manual lists them.
+// Vigor Easy Link (Vigor M/VB/VH communication manual, B-3-3): the manual's programming example,
+// verbatim, on a network whose slaves answer with the product's Computer Link responder; and each
+// fault the issue names, shown by the working area's status codes as the manual lists them.
 
 #include "network_fixture.h"
 
@@ -67,7 +67,7 @@ TEST(EasyLink, TheManualsExampleReadsAndWritesItsTwoSets) {
     EXPECT_TRUE(bit(*r.net, QStringLiteral("s2"), QStringLiteral("M100")));
     EXPECT_TRUE(bit(*r.net, QStringLiteral("s2"), QStringLiteral("M129")));
     EXPECT_FALSE(bit(*r.net, QStringLiteral("s2"), QStringLiteral("M128")));
-    EXPECT_FALSE(bit(*r.net, QStringLiteral("s2"), QStringLiteral("M130"))); // past the set
+    EXPECT_FALSE(bit(*r.net, QStringLiteral("s2"), QStringLiteral("M130")));       // past the set
     EXPECT_EQ(value(*r.net, QStringLiteral("master"), QStringLiteral("D100")), 0); // normal
     // M9199: one scan ON per completed table, never two in a row.
     const std::vector<int> done = column(r.trace, 4);
@@ -90,7 +90,10 @@ TEST(EasyLink, TheManualsExampleReadsAndWritesItsTwoSets) {
     EXPECT_EQ(r.records.front().bytes, comms::vigor::encodeRequest(read));
     EXPECT_EQ(r.records.front().sender, QStringLiteral("master/CP2"));
     // The slave's answer: its D10 = 123 (007Bh) low byte first.
-    EXPECT_TRUE(r.records[1].bytes.startsWith(QByteArray("\x06" "05510" "07B00", 10)));
+    EXPECT_TRUE(r.records[1].bytes.startsWith(QByteArray("\x06"
+                                                         "05510"
+                                                         "07B00",
+                                                         10)));
 }
 
 // Bits that start inside a link byte go one by one (70h / 71h), whole bytes with 61h: no
@@ -100,9 +103,9 @@ TEST(EasyLink, BitsOutsideTheSetAreNotTouched) {
     ASSERT_TRUE(r.net) << r.error.toStdString();
     Station *s2 = r.net->station(QStringLiteral("s2"));
     for (const char *d : {"M99", "M130", "M131"})
-        s2->engine().setBit(std::get<model::Address>(model::parseAddress(s2->target(),
-                                                                         QString::fromLatin1(d))),
-                            true);
+        s2->engine().setBit(
+            std::get<model::Address>(model::parseAddress(s2->target(), QString::fromLatin1(d))),
+            true);
     r.net->runUntil(400'000);
     EXPECT_TRUE(bit(*r.net, QStringLiteral("s2"), QStringLiteral("M99")));
     EXPECT_TRUE(bit(*r.net, QStringLiteral("s2"), QStringLiteral("M130")));
@@ -127,7 +130,7 @@ TEST(EasyLink, ACutWireShowsNoResponseA) {
     const NetRun r = easyLinkRun(QStringLiteral(R"({"kind": "cut", "wire": "w1", "from": 0})"));
     ASSERT_TRUE(r.net) << r.error.toStdString();
     const std::vector<int> status = column(r.trace, 5);
-    EXPECT_EQ(status[5], 0);      // before the first time-out (100 ms after the request)
+    EXPECT_EQ(status[5], 0);       // before the first time-out (100 ms after the request)
     EXPECT_EQ(status[12], 0x0A05); // station 5 did not answer
     EXPECT_EQ(status[25], 0x0A02); // nor station 2
     EXPECT_EQ(value(*r.net, QStringLiteral("master"), QStringLiteral("D0")), 0);
@@ -140,9 +143,8 @@ TEST(EasyLink, ACutWireShowsNoResponseA) {
 // A silent station: its set times out (A, station 5), the other set runs; S2 keeps the error
 // until a whole table runs clean, and shows 0 again once the station is back.
 TEST(EasyLink, ASilentStationShowsAAndTheOthersRun) {
-    const NetRun r =
-        easyLinkRun(QStringLiteral(R"({"kind": "silent", "station": "s5", "from": 0, "to": 300})"),
-                    19200, 80);
+    const NetRun r = easyLinkRun(
+        QStringLiteral(R"({"kind": "silent", "station": "s5", "from": 0, "to": 300})"), 19200, 80);
     ASSERT_TRUE(r.net) << r.error.toStdString();
     const std::vector<int> status = column(r.trace, 5);
     EXPECT_EQ(status[20], 0x0A05);
@@ -175,10 +177,10 @@ TEST(EasyLink, AMismatchedBaudRateShowsA) {
 // is sent; the other set still runs.
 TEST(EasyLink, AWrongDeviceTypeShowsStatus4) {
     NetRun r = runNetwork(easyLink(), {},
-                       {QStringLiteral("--scans"), QStringLiteral("30"), QStringLiteral("--set"),
-                        QStringLiteral("master/D1006=7@1"), QStringLiteral("--trace"),
-                        QStringLiteral("hex:master/D100")},
-                       kDir + QStringLiteral("test.rungnet"));
+                          {QStringLiteral("--scans"), QStringLiteral("30"), QStringLiteral("--set"),
+                           QStringLiteral("master/D1006=7@1"), QStringLiteral("--trace"),
+                           QStringLiteral("hex:master/D100")},
+                          kDir + QStringLiteral("test.rungnet"));
     ASSERT_TRUE(r.net) << r.error.toStdString();
     EXPECT_EQ(column(r.trace, 2).back(), 0x0405); // the set is read again in the next table
     EXPECT_TRUE(r.net->station(QStringLiteral("master"))->engine().runtimeErrors().empty());

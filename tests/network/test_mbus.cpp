@@ -35,9 +35,8 @@ std::unique_ptr<Network> build(const QString &file, const std::vector<FaultDescr
 
 void write(Network &net, const char *station, const char *device, int v) {
     Station *s = net.station(QString::fromLatin1(station));
-    s->engine().writeWord(std::get<model::Address>(
-                              model::parseAddress(s->target(), QString::fromLatin1(device))),
-                          v);
+    s->engine().writeWord(
+        std::get<model::Address>(model::parseAddress(s->target(), QString::fromLatin1(device))), v);
 }
 
 QByteArray rtu(const char *hexPdu, int unit) {

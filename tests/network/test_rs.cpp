@@ -1,6 +1,6 @@
-// Vigor RS (Vigor M/VB/VH communication manual, B-3-9): the manual's application example, verbatim, sends the frames the
-// manual prints byte for byte and its reply check accepts the answer of the Computer Link
-// station on the wire; and RS's flags and counts against a line device.
+// Vigor RS (Vigor M/VB/VH communication manual, B-3-9): the manual's application example, verbatim,
+// sends the frames the manual prints byte for byte and its reply check accepts the answer of the
+// Computer Link station on the wire; and RS's flags and counts against a line device.
 
 #include "network_fixture.h"
 
@@ -10,8 +10,8 @@ using namespace rung::network::test;
 
 namespace {
 
-const QString kExample =
-    QStringLiteral(RUNG_SOURCE_DIR "/resources/examples/networks/non-protocol/non-protocol.rungnet");
+const QString kExample = QStringLiteral(
+    RUNG_SOURCE_DIR "/resources/examples/networks/non-protocol/non-protocol.rungnet");
 
 QByteArray readFrame() {
     return hex("02 30 31 35 31 31 43 30 30 30 32 03 30 30");
@@ -21,11 +21,11 @@ QByteArray readFrame() {
 
 TEST(NonProtocol, TheManualsExampleSendsItsFramesAndChecksTheReplies) {
     const NetRun r = runNetwork({}, {},
-                             {QStringLiteral("--scans"), QStringLiteral("60"),
-                              QStringLiteral("--set"), QStringLiteral("left/VR1=120@0"),
-                              QStringLiteral("--set"), QStringLiteral("right/VR1=77@0"),
-                              QStringLiteral("--trace"), QStringLiteral("left/Y0,left/Y1")},
-                             kExample);
+                                {QStringLiteral("--scans"), QStringLiteral("60"),
+                                 QStringLiteral("--set"), QStringLiteral("left/VR1=120@0"),
+                                 QStringLiteral("--set"), QStringLiteral("right/VR1=77@0"),
+                                 QStringLiteral("--trace"), QStringLiteral("left/Y0,left/Y1")},
+                                kExample);
     ASSERT_TRUE(r.net) << r.error.toStdString();
     ASSERT_TRUE(r.error.isEmpty()) << r.error.toStdString();
     // Each PLC shows the other's VR1: the left D110 (its display), the right D1.
@@ -91,7 +91,8 @@ const char *kRs = "; target: vigor\n"
                   "END\n";
 
 NetRun rsRun(const QString &port, const QString &device, bool bytes8, int count, int receive) {
-    NetRun r = runNetwork(rsNetwork(port, device), {{QStringLiteral("rs.il"), QString::fromLatin1(kRs)}});
+    NetRun r =
+        runNetwork(rsNetwork(port, device), {{QStringLiteral("rs.il"), QString::fromLatin1(kRs)}});
     if (!r.net)
         return r;
     Station *s = r.net->station(QStringLiteral("plc"));
@@ -111,7 +112,8 @@ NetRun rsRun(const QString &port, const QString &device, bool bytes8, int count,
 const QString kLine = QStringLiteral(
     R"({"name": "dev", "kind": "line", "baud": 19200, "frame": "7E1",
         "answers": [{"expect": "41 42", "reply": "4F 4B 0D"}]})");
-const QString kPort = QStringLiteral(R"({"application": "non-protocol", "baud": 19200, "frame": "7E1"})");
+const QString kPort =
+    QStringLiteral(R"({"application": "non-protocol", "baud": 19200, "frame": "7E1"})");
 
 } // namespace
 
@@ -149,10 +151,10 @@ TEST(NonProtocol, SixteenBitModeAndTheTimeOut) {
 TEST(NonProtocol, StartAndEndCharacters) {
     const NetRun r = rsRun(QStringLiteral(R"({"application": "non-protocol", "baud": 19200,
                                          "frame": "7E1", "start": 2, "end": 13})"),
-                        QStringLiteral(R"({"name": "dev", "kind": "line", "baud": 19200,
+                           QStringLiteral(R"({"name": "dev", "kind": "line", "baud": 19200,
                             "frame": "7E1", "answers": [{"expect": "02 41 42 0D",
                             "reply": "02 4F 4B 0D"}]})"),
-                        true, 2, 10);
+                           true, 2, 10);
     ASSERT_TRUE(r.net) << r.error.toStdString();
     EXPECT_EQ(r.records[0].bytes, hex("02 41 42 0D"));
     EXPECT_TRUE(bit(*r.net, QStringLiteral("plc"), QStringLiteral("M9123")));
@@ -164,11 +166,10 @@ TEST(NonProtocol, StartAndEndCharacters) {
 // A device at another format (8N1 against the port's 7E1) sends characters the port reads
 // with parity errors: M9063 and D9063 say so.
 TEST(NonProtocol, AWrongFormatShowsACommunicationError) {
-    const NetRun r = rsRun(kPort,
-                        QStringLiteral(R"({"name": "dev", "kind": "line", "baud": 19200,
+    const NetRun r = rsRun(kPort, QStringLiteral(R"({"name": "dev", "kind": "line", "baud": 19200,
                             "frame": "8N1", "answers": [{"expect": "41 42",
                             "reply": "CF 4B 0D"}]})"),
-                        true, 2, 3);
+                           true, 2, 3);
     ASSERT_TRUE(r.net) << r.error.toStdString();
     EXPECT_TRUE(bit(*r.net, QStringLiteral("plc"), QStringLiteral("M9063")));
     EXPECT_EQ(value(*r.net, QStringLiteral("plc"), QStringLiteral("D9063")), 6301);

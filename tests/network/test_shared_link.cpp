@@ -45,8 +45,9 @@ FaultDescription silent(const char *station, qint64 fromMs, qint64 toMs = -1) {
     return f;
 }
 
-const std::map<QString, int> kCpuVr1 = {
-    {QStringLiteral("master"), 100}, {QStringLiteral("slave1"), 150}, {QStringLiteral("slave2"), 200}};
+const std::map<QString, int> kCpuVr1 = {{QStringLiteral("master"), 100},
+                                        {QStringLiteral("slave1"), 150},
+                                        {QStringLiteral("slave2"), 200}};
 
 } // namespace
 
@@ -195,8 +196,8 @@ TEST(CpuLink, TheTrafficCarriesNoInventedFrame) {
 // master ("each PLC shows the other's VR1"); M9070 / M9071 say which is which, M9072 that the
 // link is normal, M9162 the high speed the master chose.
 TEST(ParallelLink, TheManualsExampleExchangesTheHighSpeedAreas) {
-    auto net = example(kParallel, {},
-                       {{QStringLiteral("master"), 90}, {QStringLiteral("slave"), 180}});
+    auto net =
+        example(kParallel, {}, {{QStringLiteral("master"), 90}, {QStringLiteral("slave"), 180}});
     ASSERT_TRUE(net);
     net->runUntil(200'000);
     const Network &n = *net;
@@ -218,8 +219,8 @@ TEST(ParallelLink, TheManualsExampleExchangesTheHighSpeedAreas) {
 // The communication time: 14 ms at 19200 bps plus both scans (10 ms each): the first exchange
 // at 34 ms.
 TEST(ParallelLink, TheCommunicationTimeAddsBothScans) {
-    auto net = example(kParallel, {},
-                       {{QStringLiteral("master"), 90}, {QStringLiteral("slave"), 180}});
+    auto net =
+        example(kParallel, {}, {{QStringLiteral("master"), 90}, {QStringLiteral("slave"), 180}});
     ASSERT_TRUE(net);
     net->runUntil(33'999);
     EXPECT_EQ(value(*net, QStringLiteral("slave"), QStringLiteral("D490")), 0);
@@ -256,8 +257,8 @@ TEST(ParallelLink, ACutWireShowsTheErrorAndThePlcsKeepRunning) {
     FaultDescription cut;
     cut.kind = FaultDescription::Kind::Cut;
     cut.wire = QStringLiteral("w1");
-    auto net = example(kParallel, {cut},
-                       {{QStringLiteral("master"), 90}, {QStringLiteral("slave"), 180}});
+    auto net =
+        example(kParallel, {cut}, {{QStringLiteral("master"), 90}, {QStringLiteral("slave"), 180}});
     ASSERT_TRUE(net);
     net->runUntil(200'000);
     for (const char *s : {"master", "slave"}) {

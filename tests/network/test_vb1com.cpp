@@ -17,7 +17,7 @@ const QString kVbOneCom =
     QStringLiteral(RUNG_SOURCE_DIR "/resources/examples/networks/vb-1com/vb-1com.rungnet");
 
 std::unique_ptr<Network> vbOneCom(std::vector<TrafficRecord> *records,
-                                 const std::vector<FaultDescription> &faults = {}) {
+                                  const std::vector<FaultDescription> &faults = {}) {
     NetworkDescription d;
     QString error;
     EXPECT_TRUE(readNetworkFile(kVbOneCom, &d, &error)) << error.toStdString();
@@ -101,9 +101,10 @@ TEST(VbOneCom, ACorruptedAnswerIsTheModulesSumError) {
 
 // Without the module in the network, FROM / TO are an operation error that names it.
 TEST(VbOneCom, AModuleThatIsNotThereIsAnOperationError) {
-    NetRun r = runNetwork(R"({"stations": [{"name": "a", "program": "p.il", "model": "VB"}]})",
-                          {{QStringLiteral("p.il"),
-                            QStringLiteral("; target: vigor\nLD M9000\nFROM K1 K30 D0 K1\nEND\n")}});
+    NetRun r =
+        runNetwork(R"({"stations": [{"name": "a", "program": "p.il", "model": "VB"}]})",
+                   {{QStringLiteral("p.il"),
+                     QStringLiteral("; target: vigor\nLD M9000\nFROM K1 K30 D0 K1\nEND\n")}});
     ASSERT_TRUE(r.net) << r.error.toStdString();
     r.net->runUntil(20'000);
     const auto &errors = r.net->station(QStringLiteral("a"))->engine().runtimeErrors();
@@ -114,10 +115,11 @@ TEST(VbOneCom, AModuleThatIsNotThereIsAnOperationError) {
 
 // The module answers FROM with its model ID, K7030, at BFM #30.
 TEST(VbOneCom, TheModelIdIs7030) {
-    NetRun r = runNetwork(R"({"stations": [{"name": "a", "program": "p.il", "model": "VB",
+    NetRun r =
+        runNetwork(R"({"stations": [{"name": "a", "program": "p.il", "model": "VB",
                               "ports": {"MODULE1": {"application": "vb-1com"}}}]})",
-                          {{QStringLiteral("p.il"),
-                            QStringLiteral("; target: vigor\nLD M9000\nFROM K1 K30 D0 K1\nEND\n")}});
+                   {{QStringLiteral("p.il"),
+                     QStringLiteral("; target: vigor\nLD M9000\nFROM K1 K30 D0 K1\nEND\n")}});
     ASSERT_TRUE(r.net) << r.error.toStdString();
     r.net->runUntil(20'000);
     EXPECT_EQ(value(*r.net, QStringLiteral("a"), QStringLiteral("D0")), 7030);

@@ -22,16 +22,19 @@ model::SerialSettings line(int baud, const char *frame) {
 } // namespace
 
 TEST(Uart, TheSameLineCarriesTheBytes) {
-    const Received r = acrossLine("\x02" "0551\x03", line(19200, "8N1"), line(19200, "8N1"));
-    EXPECT_EQ(r.bytes, QByteArray("\x02" "0551\x03"));
+    const Received r = acrossLine("\x02"
+                                  "0551\x03",
+                                  line(19200, "8N1"), line(19200, "8N1"));
+    EXPECT_EQ(r.bytes, QByteArray("\x02"
+                                  "0551\x03"));
     EXPECT_EQ(r.errors, 0);
 }
 
 // 7E1 read as 8N1 at the same rate: ten bits a character either way; the parity bit arrives
 // as bit 7 (even parity: set when the seven bits have an odd number of ones).
 TEST(Uart, SevenEvenOneReadAsEightNoneOneKeepsTheParityAsBit7) {
-    const Received r = acrossLine(QByteArray("\x30\x31\x43", 3), line(19200, "7E1"),
-                                  line(19200, "8N1"));
+    const Received r =
+        acrossLine(QByteArray("\x30\x31\x43", 3), line(19200, "7E1"), line(19200, "8N1"));
     EXPECT_EQ(r.bytes, QByteArray("\x30\xB1\xC3", 3));
     EXPECT_EQ(r.errors, 0);
 }
@@ -68,29 +71,36 @@ TEST(NetworkFile, ErrorsSayWhatWhereAndWhy) {
         EXPECT_FALSE(parseNetwork(QByteArray(json), QStringLiteral("n.rungnet"), &d, &e));
         return e.toStdString();
     };
-    EXPECT_EQ(error("{"), "n.rungnet: line 1, column 2: the file is not valid JSON (unterminated object)");
-    EXPECT_EQ(error(R"({"stations": []})"), "n.rungnet: stations: a network needs at least one station");
-    EXPECT_EQ(error(R"({"stations": [{"name": "a b", "program": "p.il"}]})"),
-              "n.rungnet: stations[0].name: \"a b\" is no name (letters, digits, _ and -, at most 32)");
-    EXPECT_EQ(error(R"({"stations": [{"name": "a", "program": "p.il"}, {"name": "a", "program": "p.il"}]})"),
-              "n.rungnet: stations[1].name: a second \"a\"; names are unique");
+    EXPECT_EQ(error("{"),
+              "n.rungnet: line 1, column 2: the file is not valid JSON (unterminated object)");
+    EXPECT_EQ(error(R"({"stations": []})"),
+              "n.rungnet: stations: a network needs at least one station");
+    EXPECT_EQ(
+        error(R"({"stations": [{"name": "a b", "program": "p.il"}]})"),
+        "n.rungnet: stations[0].name: \"a b\" is no name (letters, digits, _ and -, at most 32)");
+    EXPECT_EQ(
+        error(
+            R"({"stations": [{"name": "a", "program": "p.il"}, {"name": "a", "program": "p.il"}]})"),
+        "n.rungnet: stations[1].name: a second \"a\"; names are unique");
     EXPECT_EQ(error(R"({"stations": [{"name": "a", "program": "p.il", "prog": 1}]})"),
               "n.rungnet: stations[0].prog: unknown key (this object takes: name, program, target, "
               "model, period, ports, comment)");
     EXPECT_EQ(error(R"({"stations": [{"name": "a", "program": "p.il"}], "wires": [["a/CP2"]]})"),
               "n.rungnet: wires[0]: a wire joins at least two ends");
-    EXPECT_EQ(error(R"({"stations": [{"name": "a", "program": "p.il"}], "faults": [{"kind": "fire"}]})"),
-              "n.rungnet: faults[0].kind: \"fire\" is no fault (cut, silent, corrupt)");
+    EXPECT_EQ(
+        error(R"({"stations": [{"name": "a", "program": "p.il"}], "faults": [{"kind": "fire"}]})"),
+        "n.rungnet: faults[0].kind: \"fire\" is no fault (cut, silent, corrupt)");
 }
 
 TEST(NetworkFile, PortSettingsAreCheckedAgainstTheTargetsTables) {
     auto build = [](const char *ports) {
-        const QByteArray json = QStringLiteral(R"({"stations": [{"name": "a", "program": "p.il",
+        const QByteArray json =
+            QStringLiteral(R"({"stations": [{"name": "a", "program": "p.il",
             "model": "%1", "ports": %2}]})")
-                                    .arg(QLatin1String(ports[0] == 'H' ? "VH" : "VB"),
-                                         QLatin1String(ports + 1))
-                                    .toUtf8();
-        const NetRun r = runNetwork(json, {{QStringLiteral("p.il"), QStringLiteral("; target: vigor\nEND\n")}});
+                .arg(QLatin1String(ports[0] == 'H' ? "VH" : "VB"), QLatin1String(ports + 1))
+                .toUtf8();
+        const NetRun r =
+            runNetwork(json, {{QStringLiteral("p.il"), QStringLiteral("; target: vigor\nEND\n")}});
         return r.error.toStdString();
     };
     EXPECT_EQ(build(R"(B{"CP2": {"application": "easy-link", "baud": 12345}})"),
@@ -120,7 +130,7 @@ TEST(Wire, ACollisionGarblesBothFrames) {
             {"name": "b", "program": "s.il", "ports": {"CP2": {"application": "non-protocol"}}}],
         "devices": [{"name": "dev", "kind": "line", "frame": "7E1"}],
         "wires": [["a/CP2", "b/CP2", "dev"]]})",
-                       {{QStringLiteral("s.il"), QString::fromLatin1(sender)}});
+                          {{QStringLiteral("s.il"), QString::fromLatin1(sender)}});
     ASSERT_TRUE(r.net) << r.error.toStdString();
     r.net->runUntil(50'000);
     ASSERT_EQ(r.records.size(), 2u);
