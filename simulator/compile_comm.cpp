@@ -175,6 +175,15 @@ void Compiler::compileComm(const model::Instruction &ins, Step &s) {
     CommStep c;
     c.port = model::instructionPort(ins);
     c.spec = ins.spec;
+    // LINK and MBUS "can be used once only in the program" (B-3-3, B-3-6; check's DC002).
+    if (ins.spec->oncePerProgram)
+        for (const CommStep &other : m_program->comms)
+            if (other.spec == ins.spec) {
+                error(ins, CompilerTr::tr("%1 is programmed twice; the PLC allows it once only in "
+                                          "a program")
+                               .arg(ins.spec->mnemonic));
+                return;
+            }
     c.step = static_cast<std::int32_t>(&s - m_program->steps.data());
     const bool module = ins.spec->function == ApplyFunction::ModuleRead ||
                         ins.spec->function == ApplyFunction::ModuleWrite;

@@ -108,11 +108,14 @@ void Engine::shiftDigits(const Step &s, std::size_t step) {
     if (!hex) {
         for (const std::int32_t v : {source, target})
             if (v < 0 || v > 9999) {
-                runtimeError(step,
-                             EngineTr::tr("operation error: %1 is no 4-digit BCD value (0..9999; "
-                                          "M9168 ON moves hexadecimal digits); the destination "
-                                          "is unchanged")
-                                 .arg(v));
+                const model::SystemDevice *hexMode =
+                    layout().target().systemDevice(model::SystemRole::HexDigits);
+                //: %2 the relay that makes SMOV move hexadecimal digits (Vigor M9168)
+                runtimeError(step, EngineTr::tr("operation error: %1 is no 4-digit BCD value "
+                                                "(0..9999; %2 ON moves hexadecimal digits); the "
+                                                "destination is unchanged")
+                                       .arg(v)
+                                       .arg(hexMode ? hexMode->device : QString()));
                 return;
             }
         from = std::uint32_t(model::toBcd(source));

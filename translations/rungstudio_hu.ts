@@ -5681,7 +5681,17 @@ Kiértékelés: %4 µs (%5..%6)</translation>
         <translation>%1 nem írható: a program csak olvassa (%2)</translation>
     </message>
     <message>
-        <location filename="../model/checks/checks_duplicates.cpp" line="+26"/>
+        <location filename="../model/checks/checks_duplicates.cpp" line="+20"/>
+        <source>%1 is programmed twice; the PLC allows it once only in a program (the first is on line %2)</source>
+        <translation>a(z) %1 kétszer szerepel a programban; a PLC csak egyszer engedi egy programban (az első a(z) %2. sorban van)</translation>
+    </message>
+    <message>
+        <location line="+6"/>
+        <source>%1 is programmed twice; the PLC allows it once only in a program (the first is in rung %2)</source>
+        <translation>a(z) %1 kétszer szerepel a programban; a PLC csak egyszer engedi egy programban (az első a(z) %2. létrafokon van)</translation>
+    </message>
+    <message>
+        <location line="+19"/>
         <source>%1 is driven twice; a coil may be driven only once (the first is on line %2)</source>
         <translation>%1 kétszer van vezérelve; egy tekercs csak egyszer vezérelhető (az első a(z) %2. sorban)</translation>
     </message>
@@ -9313,7 +9323,12 @@ Kiértékelés: %4 µs (%5..%6)</translation>
         <translation>a(z) %1 négy regisztert ír %2-től: adatregisztert adjon meg</translation>
     </message>
     <message>
-        <location line="+30"/>
+        <location line="+25"/>
+        <source>%1 is programmed twice; the PLC allows it once only in a program</source>
+        <translation>a(z) %1 kétszer szerepel a programban; a PLC csak egyszer engedi egy programban</translation>
+    </message>
+    <message>
+        <location line="+14"/>
         <source>%1 takes plain registers, not %2</source>
         <translation>a(z) %1 egyszerű regisztereket fogad, nem ezt: %2</translation>
     </message>
@@ -9329,7 +9344,7 @@ Kiértékelés: %4 µs (%5..%6)</translation>
         <translation>a(z) %1 egy szót mozgat ezzel: %2; n értéke K1 kell legyen</translation>
     </message>
     <message>
-        <location line="-68"/>
+        <location line="-77"/>
         <location filename="../simulator/compile_words.cpp" line="+32"/>
         <location filename="../simulator/compiler_detail.h" line="+17"/>
         <source>%1 needs the next word too, which does not exist</source>
@@ -9447,7 +9462,7 @@ Kiértékelés: %4 µs (%5..%6)</translation>
     <message>
         <location filename="../simulator/engine_arith.h" line="+54"/>
         <location line="+42"/>
-        <location filename="../simulator/engine_text.cpp" line="+149"/>
+        <location filename="../simulator/engine_text.cpp" line="+152"/>
         <source>division by zero; the destination is unchanged</source>
         <translation>osztás nullával; a cél változatlan marad</translation>
     </message>
@@ -9565,7 +9580,7 @@ Kiértékelés: %4 µs (%5..%6)</translation>
         <translation>műveleti hiba: a(z) %3. modul #%1..#%2 puffermemóriája nem írható (a modul táblázata szerint csak olvasható, vagy nem létezik); semmi sem íródik</translation>
     </message>
     <message>
-        <location filename="../simulator/engine_text.cpp" line="-108"/>
+        <location filename="../simulator/engine_text.cpp" line="-111"/>
         <source>operation error: %1 characters need %2 words from the destination, past the end of its area; the instruction is not executed</source>
         <translation>műveleti hiba: %1 karakterhez %2 szó kell a céltól, ami túlnyúlik a területe végén; az utasítás nem hajtódik végre</translation>
     </message>
@@ -9580,9 +9595,10 @@ Kiértékelés: %4 µs (%5..%6)</translation>
         <translation>műveleti hiba: a(z) %1. karakter (%2H) nem hexadecimális számjegy; a cél nem változik</translation>
     </message>
     <message>
-        <location line="+26"/>
-        <source>operation error: %1 is no 4-digit BCD value (0..9999; M9168 ON moves hexadecimal digits); the destination is unchanged</source>
-        <translation>műveleti hiba: a(z) %1 nem négyjegyű BCD érték (0..9999; M9168 ON esetén hexadecimális számjegyek mozognak); a cél nem változik</translation>
+        <location line="+28"/>
+        <source>operation error: %1 is no 4-digit BCD value (0..9999; %2 ON moves hexadecimal digits); the destination is unchanged</source>
+        <extracomment>%2 the relay that makes SMOV move hexadecimal digits (Vigor M9168)</extracomment>
+        <translation>műveleti hiba: a(z) %1 nem négyjegyű BCD érték (0..9999; %2 ON esetén hexadecimális számjegyek mozognak); a cél nem változik</translation>
     </message>
 </context>
 <context>

@@ -5697,7 +5697,17 @@ Valutazione: %4 µs (%5..%6)</translation>
         <translation>%1 non può essere scritto: il programma lo legge soltanto (%2)</translation>
     </message>
     <message>
-        <location filename="../model/checks/checks_duplicates.cpp" line="+26"/>
+        <location filename="../model/checks/checks_duplicates.cpp" line="+20"/>
+        <source>%1 is programmed twice; the PLC allows it once only in a program (the first is on line %2)</source>
+        <translation>%1 è programmata due volte; il PLC la ammette una sola volta in un programma (la prima è alla riga %2)</translation>
+    </message>
+    <message>
+        <location line="+6"/>
+        <source>%1 is programmed twice; the PLC allows it once only in a program (the first is in rung %2)</source>
+        <translation>%1 è programmata due volte; il PLC la ammette una sola volta in un programma (la prima è nel segmento %2)</translation>
+    </message>
+    <message>
+        <location line="+19"/>
         <source>%1 is driven twice; a coil may be driven only once (the first is on line %2)</source>
         <translation>%1 è comandato due volte; una bobina può essere comandata una volta sola (il primo è alla riga %2)</translation>
     </message>
@@ -9334,7 +9344,12 @@ Valutazione: %4 µs (%5..%6)</translation>
         <translation>%1 scrive quattro registri da %2: indicare un registro dati</translation>
     </message>
     <message>
-        <location line="+30"/>
+        <location line="+25"/>
+        <source>%1 is programmed twice; the PLC allows it once only in a program</source>
+        <translation>%1 è programmata due volte; il PLC la ammette una sola volta in un programma</translation>
+    </message>
+    <message>
+        <location line="+14"/>
         <source>%1 takes plain registers, not %2</source>
         <translation>%1 accetta registri semplici, non %2</translation>
     </message>
@@ -9350,7 +9365,7 @@ Valutazione: %4 µs (%5..%6)</translation>
         <translation>%1 sposta una word con %2: n deve essere K1</translation>
     </message>
     <message>
-        <location line="-68"/>
+        <location line="-77"/>
         <location filename="../simulator/compile_words.cpp" line="+32"/>
         <location filename="../simulator/compiler_detail.h" line="+17"/>
         <source>%1 needs the next word too, which does not exist</source>
@@ -9468,7 +9483,7 @@ Valutazione: %4 µs (%5..%6)</translation>
     <message>
         <location filename="../simulator/engine_arith.h" line="+54"/>
         <location line="+42"/>
-        <location filename="../simulator/engine_text.cpp" line="+149"/>
+        <location filename="../simulator/engine_text.cpp" line="+152"/>
         <source>division by zero; the destination is unchanged</source>
         <translation>divisione per zero; la destinazione resta invariata</translation>
     </message>
@@ -9586,7 +9601,7 @@ Valutazione: %4 µs (%5..%6)</translation>
         <translation>errore operativo: la memoria buffer #%1..#%2 del modulo %3 non si può scrivere (la tabella del modulo la indica di sola lettura, o non esiste); non viene scritto nulla</translation>
     </message>
     <message>
-        <location filename="../simulator/engine_text.cpp" line="-108"/>
+        <location filename="../simulator/engine_text.cpp" line="-111"/>
         <source>operation error: %1 characters need %2 words from the destination, past the end of its area; the instruction is not executed</source>
         <translation>errore operativo: %1 caratteri richiedono %2 word dalla destinazione, oltre la fine della sua area; l&apos;istruzione non viene eseguita</translation>
     </message>
@@ -9601,9 +9616,10 @@ Valutazione: %4 µs (%5..%6)</translation>
         <translation>errore operativo: il carattere %1 (%2H) non è una cifra esadecimale; la destinazione non cambia</translation>
     </message>
     <message>
-        <location line="+26"/>
-        <source>operation error: %1 is no 4-digit BCD value (0..9999; M9168 ON moves hexadecimal digits); the destination is unchanged</source>
-        <translation>errore operativo: %1 non è un valore BCD di 4 cifre (0..9999; con M9168 ON si spostano cifre esadecimali); la destinazione non cambia</translation>
+        <location line="+28"/>
+        <source>operation error: %1 is no 4-digit BCD value (0..9999; %2 ON moves hexadecimal digits); the destination is unchanged</source>
+        <extracomment>%2 the relay that makes SMOV move hexadecimal digits (Vigor M9168)</extracomment>
+        <translation>errore operativo: %1 non è un valore BCD di 4 cifre (0..9999; con %2 ON si spostano cifre esadecimali); la destinazione non cambia</translation>
     </message>
 </context>
 <context>

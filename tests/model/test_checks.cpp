@@ -142,6 +142,8 @@ const Case kCases[] = {
     {"OP004", Family::Vigor, nullptr, "LD X0;TMR T0 K40000;END", "LD X0;TMR T0 K100;END"},
     {"DC001", Family::Vpc, nullptr, "LD i00;OUT o00;LD i01;OUT o00;END",
      "LD i00;OUT o00;LD i01;OUT o01;END"},
+    {"DC002", Family::Vigor, nullptr, "LD M9000;LINK D1000 D100;LD X0;LINK D1200 D200;END",
+     "LD M9000;LINK D1000 D100;LD X0;MBUS D1200 D200;END"},
     {"OC001", Family::Vigor, nullptr, "OUT Y0;END", "LD M9000;OUT Y0;END"},
     {"BL001", Family::Vigor, nullptr, "LD X0;LD X1;OUT Y0;END", "LD X0;AND X1;OUT Y0;END"},
 };

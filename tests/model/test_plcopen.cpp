@@ -95,9 +95,9 @@ TEST(PlcopenNames, LocatedVariablesFollowTheDocumentedRule) {
         {&vigor(), "%QX0.1", "Y1"},    {&vigor(), "%MW10", "D10"},    {&vigor(), "%MW200", "D200"},
         {&cpm1(), "%IX0.0", "000.00"}, {&cpm1(), "%IX1.7", "000.15"}, {&cpm1(), "%IX2.0", "001.00"},
         {&cpm1(), "%QX0.0", "010.00"}, {&cpm1(), "%MW5", "DM 0005"},  {&pl110(), "%IX0.0", "I1"},
-        {&pl110(), "%QX1.0", "Q9"},    {&pl110(), "%IW0", "AI1"},     {&pl110(), "%MW3", "V3"},
-        {&vpc(), "%IX0.5", "i05"},     {&vpc(), "%QX1.1", "o09"},     {&vpc(), "%IW1", "a01"},
-        {&vpc(), "%QW0", "d00"},       {&vpc(), "%MW7", "p07"},
+        {&pl110(), "%QX1.0", "Q9"},    {&pl110(), "%IW0", "AI1"},     {&vigor(), "%IW1", "VR2"},
+        {&pl110(), "%MW3", "V3"},      {&vpc(), "%IX0.5", "i05"},     {&vpc(), "%QX1.1", "o09"},
+        {&vpc(), "%IW1", "a01"},       {&vpc(), "%QW0", "d00"},       {&vpc(), "%MW7", "p07"},
     };
     for (const auto &c : cases) {
         const auto a = deviceOfLocation(*c.target, QString::fromLatin1(c.location));
@@ -108,7 +108,7 @@ TEST(PlcopenNames, LocatedVariablesFollowTheDocumentedRule) {
     // No such device: beyond the area, a bit above 7, a word where the target has none.
     EXPECT_FALSE(deviceOfLocation(vigor(), QStringLiteral("%IX64.0")));
     EXPECT_FALSE(deviceOfLocation(vigor(), QStringLiteral("%IX0.8")));
-    EXPECT_FALSE(deviceOfLocation(vigor(), QStringLiteral("%IW0")));
+    EXPECT_FALSE(deviceOfLocation(vigor(), QStringLiteral("%IW2"))); // VR1, VR2 only
     EXPECT_FALSE(deviceOfLocation(vigor(), QStringLiteral("%MX0.0")));
     EXPECT_TRUE(locationOfDevice(vigor(), at(vigor(), "M0")).isEmpty());
     EXPECT_TRUE(locationOfDevice(cpm1(), at(cpm1(), "200.00")).isEmpty());

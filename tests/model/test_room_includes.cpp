@@ -1,5 +1,5 @@
 // The rooms and their arrows (docs/architecture.md): an include runs down only. model uses
-// nothing of ours; simulator and comms use model; network (to come) uses simulator and comms;
+// nothing of ours; simulator and comms use model; network uses simulator and comms;
 // editor uses model alone; app uses them all. Below editor no file includes QtGui or
 // QtWidgets, so the command-line tool and the tests run without a display. These tests read
 // the source tree and name the file and line that breaks the rule.

@@ -569,8 +569,21 @@ TEST(Instructions, VigorApplicationInstructionsTheSimulatorNeeds) {
         EXPECT_EQ(spec(vigor(), name).function, function) << name;
     }
     EXPECT_EQ(spec(vigor(), "CMP").operands.size(), 3u);
-    for (const char *name : {"SWAP", "ASCI", "HEX", "RS", "LINK", "MBUS", "VRRD"})
-        EXPECT_EQ(spec(vigor(), name).function, ApplyFunction::NotSimulated) << name;
+    // The communication instructions and the ones their programs build frames with
+    // (docs/network.md); REF alone is not simulated.
+    const std::pair<const char *, ApplyFunction> communication[] = {
+        {"SWAP", ApplyFunction::Swap},       {"ASCI", ApplyFunction::ToAscii},
+        {"HEX", ApplyFunction::FromAscii},   {"RS", ApplyFunction::SerialData},
+        {"LINK", ApplyFunction::EasyLink},   {"MBUS", ApplyFunction::ModbusMaster},
+        {"VRRD", ApplyFunction::ReadVolume}, {"SMOV", ApplyFunction::ShiftDigits},
+        {"FROM", ApplyFunction::ModuleRead}, {"TO", ApplyFunction::ModuleWrite},
+        {"TOP", ApplyFunction::ModuleWrite}, {"ALTP", ApplyFunction::Toggle},
+        {"REF", ApplyFunction::NotSimulated}};
+    for (const auto &[name, function] : communication)
+        EXPECT_EQ(spec(vigor(), name).function, function) << name;
+    EXPECT_TRUE(spec(vigor(), "LINK").oncePerProgram);
+    EXPECT_TRUE(spec(vigor(), "MBUS").oncePerProgram);
+    EXPECT_FALSE(spec(vigor(), "RS").oncePerProgram);
 }
 
 TEST(Instructions, Pl110ListingElements) {
