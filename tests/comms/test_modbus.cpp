@@ -44,11 +44,17 @@ TEST(Modbus, EncodesEveryFunctionsRequestPdu) {
     EXPECT_EQ(encodeRequestPdu(regs), bytes("10 00 01 00 02 04 00 0A 01 02"));
 }
 
-// Each function through both sides over RTU and TCP, the reply fed one byte at a time.
+QByteArray framed(Framing framing, int transaction, int unit, const QByteArray &pdu) {
+    return framing == Framing::Rtu     ? rtuFrame(unit, pdu)
+           : framing == Framing::Ascii ? asciiFrame(unit, pdu)
+                                       : tcpFrame(transaction, unit, pdu);
+}
+
+// Each function through both sides over RTU, ASCII and TCP, the reply fed one byte at a time.
 void roundTrip(Framing framing, const Request &request, const Response &answer) {
     const int unit = 17;
     const QByteArray pdu = encodeRequestPdu(request);
-    const QByteArray sent = framing == Framing::Rtu ? rtuFrame(unit, pdu) : tcpFrame(9, unit, pdu);
+    const QByteArray sent = framed(framing, 9, unit, pdu);
     RequestDecoder slave(framing);
     ASSERT_EQ(slave.feed(sent), FrameStatus::Complete);
     EXPECT_EQ(slave.unit(), unit);
@@ -58,9 +64,7 @@ void roundTrip(Framing framing, const Request &request, const Response &answer) 
     EXPECT_EQ(slave.parsed().request.registers, request.registers);
     EXPECT_EQ(slave.parsed().request.bits, request.bits);
     const QByteArray replyPdu = encodeResponsePdu(answer);
-    const QByteArray reply = framing == Framing::Rtu
-                                 ? rtuFrame(unit, replyPdu)
-                                 : tcpFrame(slave.transaction(), unit, replyPdu);
+    const QByteArray reply = framed(framing, slave.transaction(), unit, replyPdu);
     ReplyDecoder master(framing, unit, request, 9);
     for (qsizetype i = 0; i < reply.size(); ++i)
         master.feed(reply.sliced(i, 1));
@@ -69,9 +73,9 @@ void roundTrip(Framing framing, const Request &request, const Response &answer) 
     EXPECT_EQ(master.response().bits, answer.bits);
 }
 
-TEST(Modbus, EveryFunctionRoundTripsOverRtuAndTcp) {
-    for (auto framing : {Framing::Rtu, Framing::Tcp}) {
-        SCOPED_TRACE(framing == Framing::Rtu ? "RTU" : "TCP");
+TEST(Modbus, EveryFunctionRoundTripsOverRtuAsciiAndTcp) {
+    for (auto framing : {Framing::Rtu, Framing::Ascii, Framing::Tcp}) {
+        SCOPED_TRACE(framing == Framing::Rtu ? "RTU" : framing == Framing::Ascii ? "ASCII" : "TCP");
         const std::vector<bool> ten{true, false, true, true, false, false, true, true, true, false};
         roundTrip(framing, read(ReadCoils, 0, 10), {ReadCoils, 0, 0, 0, {}, ten});
         roundTrip(framing, read(ReadDiscreteInputs, 5, 10), {ReadDiscreteInputs, 0, 0, 0, {}, ten});
@@ -243,6 +247,50 @@ TEST(Modbus, TruncatedAndSilentRepliesSayWhatArrived) {
     EXPECT_TRUE(d.deadlinePassed(100).message.contains(QLatin1String("unit 1")));
     EXPECT_EQ(d.feed(bytes("01 03 04 00")), FrameStatus::NeedMore);
     EXPECT_TRUE(d.deadlinePassed(100).message.contains(QLatin1String("4 bytes")));
+}
+
+// Serial line V1.02, 2.5.2 and 6.2.1: the same request as ASCII, ':' then the address and PDU
+// as hex digits, the LRC (the two's complement of their sum: 11h+03h+6Bh+03h = 82h -> 7Eh),
+// CR LF.
+TEST(Modbus, AsciiFrameAndLrcOfTheSerialLineSpecExample) {
+    EXPECT_EQ(lrc(bytes("11 03 00 6B 00 03")), 0x7E);
+    EXPECT_EQ(asciiFrame(0x11, encodeRequestPdu(read(ReadHoldingRegisters, 0x6B, 3))),
+              QByteArray(":1103006B00037E\r\n"));
+}
+
+// A slave drops an ASCII frame with a wrong LRC (no answer, as with a wrong CRC) and noise
+// before a colon, and reads the next frame.
+TEST(Modbus, AsciiSlaveDropsABadLrcAndNoiseAndReadsTheNextFrame) {
+    RequestDecoder s(Framing::Ascii);
+    EXPECT_EQ(s.feed(QByteArray("\x7Fzz:1103006B00037F\r\n:1103006B00037E\r\n")),
+              FrameStatus::Complete);
+    EXPECT_EQ(s.droppedFrames(), 1);
+    EXPECT_EQ(s.discarded().kind, Kind::BadChecksum);
+    EXPECT_EQ(s.unit(), 0x11);
+    EXPECT_EQ(s.parsed().request.address, 0x6B);
+    EXPECT_EQ(s.parsed().request.count, 3);
+}
+
+// The master's side: a wrong LRC names both values; characters after CR LF are garbage; a
+// colon and no CR LF within the longest frame is too.
+TEST(Modbus, AsciiMasterSaysWhatIsWrongWithAReply) {
+    const Request q = read(ReadHoldingRegisters, 0x6B, 1);
+    ReplyDecoder bad(Framing::Ascii, 0x11, q);
+    EXPECT_EQ(bad.feed(QByteArray(":1103020001E8\r\n")), FrameStatus::Failed);
+    EXPECT_EQ(bad.error().kind, Kind::BadChecksum);
+    EXPECT_TRUE(bad.error().message.contains(QStringLiteral("E8")))
+        << bad.error().message.toStdString();
+    ReplyDecoder good(Framing::Ascii, 0x11, q);
+    EXPECT_EQ(good.feed(QByteArray(":1103020001E9\r\n")), FrameStatus::Complete)
+        << good.error().message.toStdString();
+    EXPECT_EQ(good.response().registers, (std::vector<std::uint16_t>{1}));
+    ReplyDecoder extra(Framing::Ascii, 0x11, q);
+    EXPECT_EQ(extra.feed(QByteArray(":1103020001E9\r\nX")), FrameStatus::Failed);
+    EXPECT_EQ(extra.error().kind, Kind::Garbage);
+    ReplyDecoder endless(Framing::Ascii, 0x11, q);
+    endless.feed(QByteArray(":") + QByteArray(ReplyDecoder::MaxAsciiBuffered, '0'));
+    EXPECT_EQ(endless.status(), FrameStatus::Failed);
+    EXPECT_LE(endless.buffered(), ReplyDecoder::MaxAsciiBuffered);
 }
 
 TEST(Modbus, SlaveDropsBadCrcFramesAndReadsTheNextOne) {

@@ -203,3 +203,32 @@ TEST(Mbus, TheApplicationExampleWithAMismatchedSlave) {
     EXPECT_EQ(value(*net, QStringLiteral("master"), QStringLiteral("D10")), 99);
     EXPECT_EQ(value(*net, QStringLiteral("s1"), QStringLiteral("D100")), 200);
 }
+
+// The application example in MODBUS ASCII (CP2 "Modbus", mode ASCII, B-3-6), 7E1 on every
+// station: the same exchange, the frames ':' .. LRC CR LF.
+TEST(Mbus, TheApplicationExampleInAscii) {
+    NetworkDescription d;
+    QString error;
+    ASSERT_TRUE(readNetworkFile(kApplication, &d, &error)) << error.toStdString();
+    for (StationDescription &s : d.stations) {
+        QJsonObject cp2 = s.ports.value(QStringLiteral("CP2")).toObject();
+        cp2.insert(QStringLiteral("mode"), QStringLiteral("ascii"));
+        cp2.insert(QStringLiteral("frame"), QStringLiteral("7E1"));
+        s.ports.insert(QStringLiteral("CP2"), cp2);
+    }
+    auto net = Network::build(d, listingLoader(), &error);
+    ASSERT_TRUE(net) << error.toStdString();
+    std::vector<TrafficRecord> records;
+    net->setTrafficSink([&records](const TrafficRecord &t) { records.push_back(t); });
+    write(*net, "master", "VR1", 200);
+    write(*net, "s1", "VR1", 255);
+    net->runUntil(500'000);
+    EXPECT_EQ(value(*net, QStringLiteral("master"), QStringLiteral("D10")), 99);
+    EXPECT_EQ(value(*net, QStringLiteral("s1"), QStringLiteral("D100")), 200);
+    EXPECT_EQ(value(*net, QStringLiteral("master"), QStringLiteral("D100")), 0);
+    ASSERT_GE(records.size(), 2u);
+    // Read station 1, holding register 0, one register: 01 03 0000 0001, LRC FBh.
+    EXPECT_EQ(records[0].bytes, QByteArray(":010300000001FB\r\n"));
+    EXPECT_EQ(records[1].bytes, QByteArray(":0103020063"
+                                           "97\r\n"));
+}
