@@ -5,6 +5,8 @@
 
 #include <QDir>
 #include <QFile>
+#include <QJsonDocument>
+#include <QJsonObject>
 #include <QTemporaryDir>
 
 #include <gtest/gtest.h>
@@ -154,4 +156,64 @@ TEST(CliNetwork, LinkOnAModbusPortDoesNotStart) {
     EXPECT_TRUE(r.err.contains(QStringLiteral(
         "a: line 3: LINK drives a/CP2, which runs modbus; LINK needs easy-link / computer-link")))
         << r.err.toStdString();
+}
+
+// A station's program may be a project: it brings its target, model and port settings
+// ("ports"), which the network's settings override key by key.
+TEST(CliNetwork, AProjectBringsItsPortSettings) {
+    QTemporaryDir dir;
+    const QString slave = dir.filePath(QStringLiteral("s5.il"));
+    {
+        QFile f(slave);
+        ASSERT_TRUE(f.open(QIODevice::WriteOnly));
+        f.write("; target: vigor\nLD M9000\nMOV K321 D10\nEND\n");
+    }
+    const QString project = dir.filePath(QStringLiteral("s5.rung"));
+    const auto converted = cli({QStringLiteral("convert"), slave, QStringLiteral("--to"),
+                                QStringLiteral("project"), QStringLiteral("-o"), project});
+    ASSERT_EQ(converted.code, 0) << converted.err.toStdString();
+    QFile pf(project);
+    ASSERT_TRUE(pf.open(QIODevice::ReadOnly));
+    QJsonObject root = QJsonDocument::fromJson(pf.readAll()).object();
+    pf.close();
+    root.insert(QStringLiteral("model"), QStringLiteral("VB"));
+    // Station 5 at 9600 bps in the project; the network sets 19200, its master's rate.
+    root.insert(QStringLiteral("ports"),
+                QJsonObject{{QStringLiteral("CP2"), QJsonObject{{QStringLiteral("application"),
+                                                                 QStringLiteral("computer-link")},
+                                                                {QStringLiteral("station"), 5},
+                                                                {QStringLiteral("baud"), 9600}}}});
+    ASSERT_TRUE(pf.open(QIODevice::WriteOnly | QIODevice::Truncate));
+    pf.write(QJsonDocument(root).toJson());
+    pf.close();
+    const QString master = QStringLiteral("; target: vigor\nLD M9002\nMOV K1 D1000\nMOV K5 D1001\n"
+                                          "MOV K1 D1002\nMOV K1 D1003\nMOV K13 D1004\nMOV K0 "
+                                          "D1005\nMOV K13 D1006\nMOV K10 D1007\nLD M9000\nLINK "
+                                          "D1000 D100\nEND\n");
+    const QString file =
+        network(dir, {{QStringLiteral("m.il"), master},
+                      {QStringLiteral("net.rungnet"), QStringLiteral(R"({"stations": [
+                {"name": "m", "program": "m.il", "model": "VB",
+                 "ports": {"CP2": {"application": "easy-link", "station": 0}}},
+                {"name": "s5", "program": "s5.rung", "ports": {"CP2": {"baud": 19200}}}],
+                "wires": [["m/CP2", "s5/CP2"]]})")}});
+    const auto r =
+        cli({QStringLiteral("simulate"), file, QStringLiteral("--scans"), QStringLiteral("10"),
+             QStringLiteral("--trace"), QStringLiteral("m/D0,hex:m/D100")});
+    ASSERT_EQ(r.code, 0) << r.err.toStdString();
+    EXPECT_TRUE(r.out.trimmed().endsWith(QStringLiteral(",321,#0000"))) << r.out.toStdString();
+    // Without the override the slave listens at 9600 bps and never answers: status A, 05.
+    QFile nf(file);
+    ASSERT_TRUE(nf.open(QIODevice::ReadOnly));
+    QByteArray text = nf.readAll();
+    nf.close();
+    text.replace(R"(, "ports": {"CP2": {"baud": 19200}})", "");
+    ASSERT_TRUE(nf.open(QIODevice::WriteOnly | QIODevice::Truncate));
+    nf.write(text);
+    nf.close();
+    const auto slow =
+        cli({QStringLiteral("simulate"), file, QStringLiteral("--scans"), QStringLiteral("20"),
+             QStringLiteral("--trace"), QStringLiteral("m/D0,hex:m/D100")});
+    ASSERT_EQ(slow.code, 0) << slow.err.toStdString();
+    EXPECT_TRUE(slow.out.trimmed().endsWith(QStringLiteral(",0,#0A05"))) << slow.out.toStdString();
 }

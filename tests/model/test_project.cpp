@@ -349,3 +349,27 @@ TEST(ProjectFile, TheOldLayoutReadsAndSavesToTheSameProject) {
     ASSERT_TRUE(fromOld) << error.message.toStdString();
     EXPECT_EQ(projectToJson(*fromOld), projectToJson(rich));
 }
+
+// The PLC's port settings ("2nd COM Port Setting", docs/network-format.md): kept as written,
+// one port a line, checked against the target's table with the place and the reason.
+TEST(ProjectFile, PortSettingsAreKeptAndChecked) {
+    Project p = sample();
+    p.ports = QJsonDocument::fromJson(R"({"CP2": {"application": "computer-link", "station": 5,
+                                          "baud": 9600}})")
+                  .object();
+    const QByteArray json = projectToJson(p);
+    EXPECT_TRUE(json.contains(R"("CP2": {"application":"computer-link","baud":9600,"station":5})"))
+        << json.toStdString();
+    ProjectError e;
+    const auto loaded = projectFromJson(json, &e);
+    ASSERT_TRUE(loaded.has_value()) << e.message.toStdString();
+    EXPECT_EQ(loaded->ports, p.ports);
+    EXPECT_EQ(projectToJson(*loaded), json);
+    // A project without settings writes no key.
+    EXPECT_FALSE(projectToJson(sample()).contains("\"ports\""));
+    QByteArray wrong = json;
+    wrong.replace("9600", "12345");
+    EXPECT_FALSE(projectFromJson(wrong, &e).has_value());
+    EXPECT_TRUE(e.message.contains(QStringLiteral("ports.CP2.baud: 12345 is not a rate")))
+        << e.message.toStdString();
+}
