@@ -237,6 +237,19 @@ void Network::inject(Endpoint *at, const QByteArray &bytes) {
     transmit(at, bytes);
 }
 
+void Network::attach(std::unique_ptr<Endpoint> endpoint, Endpoint *beside) {
+    if (!beside->wire) {
+        auto wire = std::make_unique<Wire>();
+        wire->name = endpoint->name;
+        wire->ends.push_back(beside);
+        beside->wire = wire.get();
+        m_wires.push_back(std::move(wire));
+    }
+    endpoint->wire = beside->wire;
+    beside->wire->ends.push_back(endpoint.get());
+    m_devices.push_back(std::move(endpoint));
+}
+
 void Network::runUntil(qint64 until) {
     while (true) {
         qint64 next = m_deliveries.empty() ? kNever : m_deliveries.top().atUs;

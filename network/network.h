@@ -128,6 +128,9 @@ public:
 
     // Bytes a bridge (a real port) puts on the endpoint's wire as if that port sent them.
     void inject(Endpoint *at, const QByteArray &bytes);
+    // An endpoint joined to the wire of `beside` (a bridge's real line beside a station's
+    // port; bridge.h); a wire of their own when the port is on none. The network keeps it.
+    void attach(std::unique_ptr<Endpoint> endpoint, Endpoint *beside);
 
 private:
     Network() = default;

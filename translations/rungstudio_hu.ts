@@ -180,7 +180,8 @@
     <message>
         <location filename="../app/cli/cli.cpp" line="+61"/>
         <location line="+48"/>
-        <location filename="../app/cli/cli_network.cpp" line="+142"/>
+        <location filename="../app/cli/cli_network.cpp" line="+145"/>
+        <location line="+54"/>
         <source>unexpected argument %1</source>
         <translation>váratlan argumentum: %1</translation>
     </message>
@@ -278,7 +279,7 @@ Kilépési kód: 0 nincs hiba, 1 a programban hiba van, 2 használati vagy I/O h
     </message>
     <message>
         <location line="+18"/>
-        <location filename="../app/cli/cli_network.cpp" line="+43"/>
+        <location filename="../app/cli/cli_network.cpp" line="-11"/>
         <location filename="../app/cli/cli_plcopen.cpp" line="+34"/>
         <location line="+3"/>
         <source>error</source>
@@ -1999,7 +2000,7 @@ Ctrl+Z / Ctrl+Y: visszavonás / mégis, Ctrl+görgő: nagyítás, F4: a program 
 <context>
     <name>rung::app::Network</name>
     <message>
-        <location filename="../app/cli/cli_network.cpp" line="-164"/>
+        <location filename="../app/cli/cli_network.cpp" line="-165"/>
         <source>usage:</source>
         <translation>használat:</translation>
     </message>
@@ -2011,12 +2012,14 @@ Ctrl+Z / Ctrl+Y: visszavonás / mégis, Ctrl+görgő: nagyítás, F4: a program 
     <message>
         <location line="+6"/>
         <source>  rungstudio-cli check NET.rungnet
+  rungstudio-cli serve NET.rungnet
   rungstudio-cli simulate NET.rungnet --scans N [--period MS] [--set STATION/DEV=VALUE@SCAN]... --trace STATION/DEV[,...] [--traffic FILE]</source>
         <translation>  rungstudio-cli check NET.rungnet
+  rungstudio-cli serve NET.rungnet
   rungstudio-cli simulate NET.rungnet --scans N [--period MS] [--set ÁLLOMÁS/OPERANDUS=ÉRTÉK@CIKLUS]... --trace ÁLLOMÁS/OPERANDUS[,...] [--traffic FÁJL]</translation>
     </message>
     <message>
-        <location line="+42"/>
+        <location line="+43"/>
         <source>--traffic needs a file</source>
         <translation>a --traffic után fájlnév kell</translation>
     </message>
@@ -2051,6 +2054,16 @@ Ctrl+Z / Ctrl+Y: visszavonás / mégis, Ctrl+görgő: nagyítás, F4: a program 
         <source>%1: %2: %3: %4</source>
         <extracomment>%1 the network file, %2 where in it (a wire, a station&apos;s line), %3 error or warning</extracomment>
         <translation>%1: %2: %3: %4</translation>
+    </message>
+    <message>
+        <location line="+22"/>
+        <source>%1: no bridges: nothing of the network reaches a real line (&quot;bridges&quot;, docs/network-format.md); simulate runs it on virtual time</source>
+        <translation>%1: nincsenek hidak: a hálózatból semmi sem jut el valódi vonalra („bridges”, docs/network-format.md); a simulate virtuális időben futtatja</translation>
+    </message>
+    <message>
+        <location line="+24"/>
+        <source>%1 runs in real time; stop it with Ctrl+C</source>
+        <translation>a(z) %1 valós időben fut; leállítás: Ctrl+C</translation>
     </message>
 </context>
 <context>
@@ -2693,7 +2706,7 @@ A read és a write kilépési kódja: 0 kész, 1 a PLC nem válaszolt vagy eluta
 <context>
     <name>rung::app::Serve</name>
     <message>
-        <location filename="../app/cli/cli_serve.cpp" line="+183"/>
+        <location filename="../app/cli/cli_serve.cpp" line="+188"/>
         <source>unexpected argument %1</source>
         <translation>váratlan argumentum: %1</translation>
     </message>
@@ -2763,7 +2776,7 @@ A read és a write kilépési kódja: 0 kész, 1 a PLC nem válaszolt vagy eluta
         <translation>%1 kérés megválaszolva, %2 hibakóddal elutasítva, %3 más állomásnak szólt vagy körözvény volt, %4 keret eldobva; %5 írás</translation>
     </message>
     <message>
-        <location line="-300"/>
+        <location line="-304"/>
         <source>usage: rungstudio-cli serve FILE [--target T] [--model M] --protocol vigor|modbus|modbus-tcp|hostlink (--pty [--link PATH] | --port NAME | --tcp HOST:PORT) [--station N] [--baud B] [--frame 8N1|7E1|7E2|...] [--period MS] [--fault bad-checksum|silent|wrong-station|garbage|truncated|split]</source>
         <translation>használat: rungstudio-cli serve FILE [--target T] [--model M] --protocol vigor|modbus|modbus-tcp|hostlink (--pty [--link PATH] | --port NAME | --tcp HOST:PORT) [--station N] [--baud B] [--frame 8N1|7E1|7E2|...] [--period MS] [--fault bad-checksum|silent|wrong-station|garbage|truncated|split]</translation>
     </message>
@@ -2783,7 +2796,7 @@ A read és a write kilépési kódja: 0 kész, 1 a PLC nem válaszolt vagy eluta
         <translation>--link %1: a hivatkozás nem hozható létre: %2</translation>
     </message>
     <message>
-        <location line="+104"/>
+        <location line="+108"/>
         <source>--link names the pseudo-terminal of --pty (a port keeps its own name, a TCP address is given)</source>
         <translation>a --link a --pty pszeudoterminálját nevezi meg (egy port megtartja a saját nevét, a TCP-cím adott)</translation>
     </message>
@@ -8942,6 +8955,26 @@ Kiértékelés: %4 µs (%5..%6)</translation>
         <location line="+11"/>
         <source>collision with %1: both frames garbled</source>
         <translation>ütközés ezzel: %1; mindkét keret sérült</translation>
+    </message>
+    <message>
+        <location filename="../network/bridge.cpp" line="+51"/>
+        <source>%1: no station port &quot;%2&quot;</source>
+        <translation>%1: nincs „%2” állomásport</translation>
+    </message>
+    <message>
+        <location line="+22"/>
+        <source>%1.tcp: &quot;%2&quot; is not HOST:PORT</source>
+        <translation>%1.tcp: a(z) „%2” nem HOST:PORT alakú</translation>
+    </message>
+    <message>
+        <location line="+17"/>
+        <source>no station port &quot;%1&quot;</source>
+        <translation>nincs „%1” állomásport</translation>
+    </message>
+    <message>
+        <location line="+4"/>
+        <source>%1 runs %2, whose frames the manual does not publish: it is not put on a real line</source>
+        <translation>a(z) %1 portján %2 fut, amelynek kereteit a kézikönyv nem közli: nem kerül valódi vonalra</translation>
     </message>
 </context>
 <context>

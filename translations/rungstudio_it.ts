@@ -180,7 +180,8 @@
     <message>
         <location filename="../app/cli/cli.cpp" line="+61"/>
         <location line="+48"/>
-        <location filename="../app/cli/cli_network.cpp" line="+142"/>
+        <location filename="../app/cli/cli_network.cpp" line="+145"/>
+        <location line="+54"/>
         <source>unexpected argument %1</source>
         <translation>argomento non previsto: %1</translation>
     </message>
@@ -278,7 +279,7 @@ Codice di uscita: 0 nessun errore, 1 il programma contiene errori, 2 errore di u
     </message>
     <message>
         <location line="+18"/>
-        <location filename="../app/cli/cli_network.cpp" line="+43"/>
+        <location filename="../app/cli/cli_network.cpp" line="-11"/>
         <location filename="../app/cli/cli_plcopen.cpp" line="+34"/>
         <location line="+3"/>
         <source>error</source>
@@ -2006,7 +2007,7 @@ Ctrl+Z / Ctrl+Y: annulla / ripeti, Ctrl+rotellina: zoom, F4: verifica il program
 <context>
     <name>rung::app::Network</name>
     <message>
-        <location filename="../app/cli/cli_network.cpp" line="-164"/>
+        <location filename="../app/cli/cli_network.cpp" line="-165"/>
         <source>usage:</source>
         <translation>uso:</translation>
     </message>
@@ -2018,12 +2019,14 @@ Ctrl+Z / Ctrl+Y: annulla / ripeti, Ctrl+rotellina: zoom, F4: verifica il program
     <message>
         <location line="+6"/>
         <source>  rungstudio-cli check NET.rungnet
+  rungstudio-cli serve NET.rungnet
   rungstudio-cli simulate NET.rungnet --scans N [--period MS] [--set STATION/DEV=VALUE@SCAN]... --trace STATION/DEV[,...] [--traffic FILE]</source>
         <translation>  rungstudio-cli check NET.rungnet
+  rungstudio-cli serve NET.rungnet
   rungstudio-cli simulate NET.rungnet --scans N [--period MS] [--set STAZIONE/DISP=VALORE@SCANSIONE]... --trace STAZIONE/DISP[,...] [--traffic FILE]</translation>
     </message>
     <message>
-        <location line="+42"/>
+        <location line="+43"/>
         <source>--traffic needs a file</source>
         <translation>--traffic richiede un file</translation>
     </message>
@@ -2058,6 +2061,16 @@ Ctrl+Z / Ctrl+Y: annulla / ripeti, Ctrl+rotellina: zoom, F4: verifica il program
         <source>%1: %2: %3: %4</source>
         <extracomment>%1 the network file, %2 where in it (a wire, a station&apos;s line), %3 error or warning</extracomment>
         <translation>%1: %2: %3: %4</translation>
+    </message>
+    <message>
+        <location line="+22"/>
+        <source>%1: no bridges: nothing of the network reaches a real line (&quot;bridges&quot;, docs/network-format.md); simulate runs it on virtual time</source>
+        <translation>%1: nessun ponte: niente della rete raggiunge una linea reale (&quot;bridges&quot;, docs/network-format.md); simulate la esegue in tempo virtuale</translation>
+    </message>
+    <message>
+        <location line="+24"/>
+        <source>%1 runs in real time; stop it with Ctrl+C</source>
+        <translation>%1 è in esecuzione in tempo reale; per fermarlo Ctrl+C</translation>
     </message>
 </context>
 <context>
@@ -2702,7 +2715,7 @@ Codice di uscita di read e write: 0 fatto, 1 il PLC non ha risposto o ha rifiuta
 <context>
     <name>rung::app::Serve</name>
     <message>
-        <location filename="../app/cli/cli_serve.cpp" line="+183"/>
+        <location filename="../app/cli/cli_serve.cpp" line="+188"/>
         <source>unexpected argument %1</source>
         <translation>argomento inatteso %1</translation>
     </message>
@@ -2772,7 +2785,7 @@ Codice di uscita di read e write: 0 fatto, 1 il PLC non ha risposto o ha rifiuta
         <translation>%1 richieste con risposta, %2 rifiutate con un errore, %3 per altre stazioni o broadcast, %4 frame scartati; %5 scritture</translation>
     </message>
     <message>
-        <location line="-300"/>
+        <location line="-304"/>
         <source>usage: rungstudio-cli serve FILE [--target T] [--model M] --protocol vigor|modbus|modbus-tcp|hostlink (--pty [--link PATH] | --port NAME | --tcp HOST:PORT) [--station N] [--baud B] [--frame 8N1|7E1|7E2|...] [--period MS] [--fault bad-checksum|silent|wrong-station|garbage|truncated|split]</source>
         <translation>uso: rungstudio-cli serve FILE [--target T] [--model M] --protocol vigor|modbus|modbus-tcp|hostlink (--pty [--link PATH] | --port NAME | --tcp HOST:PORT) [--station N] [--baud B] [--frame 8N1|7E1|7E2|...] [--period MS] [--fault bad-checksum|silent|wrong-station|garbage|truncated|split]</translation>
     </message>
@@ -2792,7 +2805,7 @@ Codice di uscita di read e write: 0 fatto, 1 il PLC non ha risposto o ha rifiuta
         <translation>--link %1: impossibile creare il collegamento: %2</translation>
     </message>
     <message>
-        <location line="+104"/>
+        <location line="+108"/>
         <source>--link names the pseudo-terminal of --pty (a port keeps its own name, a TCP address is given)</source>
         <translation>--link dà un nome allo pseudo-terminale di --pty (una porta ha già il suo nome, un indirizzo TCP è dato)</translation>
     </message>
@@ -8963,6 +8976,26 @@ Valutazione: %4 µs (%5..%6)</translation>
         <location line="+11"/>
         <source>collision with %1: both frames garbled</source>
         <translation>collisione con %1: entrambi i frame alterati</translation>
+    </message>
+    <message>
+        <location filename="../network/bridge.cpp" line="+51"/>
+        <source>%1: no station port &quot;%2&quot;</source>
+        <translation>%1: nessuna porta di stazione &quot;%2&quot;</translation>
+    </message>
+    <message>
+        <location line="+22"/>
+        <source>%1.tcp: &quot;%2&quot; is not HOST:PORT</source>
+        <translation>%1.tcp: &quot;%2&quot; non è HOST:PORTA</translation>
+    </message>
+    <message>
+        <location line="+17"/>
+        <source>no station port &quot;%1&quot;</source>
+        <translation>nessuna porta di stazione &quot;%1&quot;</translation>
+    </message>
+    <message>
+        <location line="+4"/>
+        <source>%1 runs %2, whose frames the manual does not publish: it is not put on a real line</source>
+        <translation>%1 esegue %2, i cui frame il manuale non pubblica: non viene messa su una linea reale</translation>
     </message>
 </context>
 <context>

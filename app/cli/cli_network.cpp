@@ -3,7 +3,9 @@
 
 #include "cli_common.h"
 #include "cli_load_program.h"
+#include "cli_stop_signals.h"
 
+#include "network/bridge.h"
 #include "network/check.h"
 #include "network/net_trace.h"
 #include "network/station.h"
@@ -30,6 +32,7 @@ QString stationDoesNotStart(const network::StationDescription &station) {
 
 QString networkUsage() {
     return NetworkTr::tr("  rungstudio-cli check NET.rungnet\n"
+                         "  rungstudio-cli serve NET.rungnet\n"
                          "  rungstudio-cli simulate NET.rungnet --scans N [--period MS] "
                          "[--set STATION/DEV=VALUE@SCAN]... --trace STATION/DEV[,...] "
                          "[--traffic FILE]");
@@ -188,6 +191,53 @@ int runNetworkCheck(const QString &file, const QStringList &args, QTextStream &o
         errors = errors || f.error;
     }
     return errors ? 1 : 0;
+}
+
+int runNetworkServe(const QString &file, const QStringList &args, QTextStream &out,
+                    QTextStream &err) {
+    if (!args.isEmpty()) {
+        err << CliTr::tr("unexpected argument %1").arg(args.front()) << '\n' << usage() << '\n';
+        return 2;
+    }
+    network::NetworkDescription description;
+    QString error;
+    if (!network::readNetworkFile(file, &description, &error)) {
+        err << error << '\n';
+        return 2;
+    }
+    if (description.bridges.empty()) {
+        err << NetworkTr::tr("%1: no bridges: nothing of the network reaches a real line "
+                             "(\"bridges\", docs/network-format.md); simulate runs it on "
+                             "virtual time")
+                   .arg(file)
+            << '\n';
+        return 2;
+    }
+    std::unique_ptr<network::Network> net =
+        network::Network::build(description, cliProgramLoader(), &error);
+    if (!net) {
+        err << error << '\n';
+        return 1;
+    }
+    StopSignals stopSignals;
+    network::RealTime realTime(*net);
+    for (const network::BridgeDescription &b : description.bridges) {
+        QString where;
+        if (!realTime.addBridge(b, &where, &error)) {
+            err << file << ": " << error << '\n';
+            return 2;
+        }
+        // A script reads where each port is reached before anything else.
+        out << b.end << ' ' << where << Qt::endl;
+    }
+    err << NetworkTr::tr("%1 runs in real time; stop it with Ctrl+C").arg(file) << Qt::endl;
+    QString failure;
+    while (!stopSignals.wait(0))
+        if (!realTime.turn(5, &failure)) {
+            err << failure << '\n';
+            return 2;
+        }
+    return 0;
 }
 
 } // namespace rung::app

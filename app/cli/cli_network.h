@@ -29,4 +29,10 @@ int runNetworkSimulate(const QString &file, const QStringList &args, QTextStream
 int runNetworkCheck(const QString &file, const QStringList &args, QTextStream &out,
                     QTextStream &err);
 
+// `serve NET.rungnet`: the network in real time with its bridges (docs/network.md,
+// "Bridges"): one line on stdout per bridge, "STATION/PORT WHERE", flushed at once, then
+// running until SIGINT or SIGTERM (exit 0) or a line fails (exit 2).
+int runNetworkServe(const QString &file, const QStringList &args, QTextStream &out,
+                    QTextStream &err);
+
 } // namespace rung::app

@@ -1,6 +1,7 @@
 #include "cli_serve.h"
 
 #include "cli_load_program.h"
+#include "cli_network.h"
 #include "cli_stop_signals.h"
 
 #include "app/tr.h"
@@ -125,6 +126,10 @@ private:
 } // namespace
 
 int runServeCommand(const QStringList &args, QTextStream &out, QTextStream &err) {
+    // A network (docs/network.md): its bridges on real lines, in real time.
+    for (qsizetype i = 0; i < args.size(); ++i)
+        if (!args[i].startsWith(QLatin1String("--")) && isNetworkFile(args[i]))
+            return runNetworkServe(args[i], args.mid(0, i) + args.mid(i + 1), out, err);
     ProgramOptions program;
     QString protocolName, portName, tcp, faultName, linkPath;
     bool pty = false;

@@ -3,10 +3,15 @@
 
 #include "tests/cli/cli_run.h"
 
+#include "comms/protocol/modbus_master.h"
+#include "comms/transport/pty_transport.h"
+
+#include <QDeadlineTimer>
 #include <QDir>
 #include <QFile>
 #include <QJsonDocument>
 #include <QJsonObject>
+#include <QProcess>
 #include <QTemporaryDir>
 
 #include <gtest/gtest.h>
@@ -216,4 +221,50 @@ TEST(CliNetwork, AProjectBringsItsPortSettings) {
              QStringLiteral("--trace"), QStringLiteral("m/D0,hex:m/D100")});
     ASSERT_EQ(slow.code, 0) << slow.err.toStdString();
     EXPECT_TRUE(slow.out.trimmed().endsWith(QStringLiteral(",0,#0A05"))) << slow.out.toStdString();
+}
+
+// `serve NET.rungnet` as a user runs it: the first line names where each bridged port is
+// reached; a master polls the simulated PLC through the pseudo-terminal; SIGTERM ends it, 0.
+TEST(CliNetwork, ServeBridgesAPortToAPseudoTerminal) {
+    QTemporaryDir dir;
+    const QString file = network(
+        dir,
+        {{QStringLiteral("s.il"), QStringLiteral("; target: vigor\nLD M9000\nMOV K321 D0\nEND\n")},
+         {QStringLiteral("net.rungnet"), QStringLiteral(R"({"stations": [{"name": "plc",
+                "program": "s.il", "model": "VB",
+                "ports": {"CP2": {"application": "modbus", "station": 1}}}],
+                "bridges": [{"port": "plc/CP2", "pty": true}]})")}});
+    QProcess serve;
+    serve.start(QStringLiteral(RUNG_CLI_PATH), {QStringLiteral("serve"), file});
+    ASSERT_TRUE(serve.waitForStarted(10000));
+    QString first;
+    const QDeadlineTimer started(20000);
+    while (!serve.canReadLine() && !started.hasExpired())
+        serve.waitForReadyRead(100);
+    first = QString::fromUtf8(serve.readLine()).trimmed();
+    ASSERT_TRUE(first.startsWith(QStringLiteral("plc/CP2 /dev/pts/")))
+        << first.toStdString() << serve.readAllStandardError().toStdString();
+    rung::comms::PtyTransport hmi(first.section(QLatin1Char(' '), 1));
+    QString error;
+    ASSERT_TRUE(hmi.open(&error)) << error.toStdString();
+    rung::comms::modbus::Request read;
+    read.function = rung::comms::modbus::ReadHoldingRegisters;
+    read.count = 1;
+    ASSERT_TRUE(
+        hmi.write(rung::comms::modbus::rtuFrame(1, rung::comms::modbus::encodeRequestPdu(read)),
+                  QDeadlineTimer(1000), &error));
+    rung::comms::modbus::ReplyDecoder reply(rung::comms::modbus::Framing::Rtu, 1, read);
+    const QDeadlineTimer deadline(10000);
+    while (reply.status() == rung::comms::FrameStatus::NeedMore && !deadline.hasExpired()) {
+        const auto r = hmi.read(QDeadlineTimer(100));
+        if (r.status == rung::comms::ReadResult::Status::Data)
+            reply.feed(r.bytes);
+    }
+    ASSERT_EQ(reply.status(), rung::comms::FrameStatus::Complete)
+        << reply.error().message.toStdString();
+    EXPECT_EQ(reply.response().registers, (std::vector<std::uint16_t>{321}));
+    serve.terminate(); // SIGTERM
+    ASSERT_TRUE(serve.waitForFinished(10000));
+    EXPECT_EQ(serve.exitStatus(), QProcess::NormalExit);
+    EXPECT_EQ(serve.exitCode(), 0) << serve.readAllStandardError().toStdString();
 }

@@ -1,0 +1,82 @@
+// Bridges (docs/network.md): a station's port on a real pseudo-terminal, the network in real
+// time. A master on the other end (here the test, as an HMI would) polls the simulated PLC
+// with the product's own Modbus RTU codec over the real pty, and the PLC answers from its
+// program's memory; a port whose frames are unpublished is never bridged.
+
+#include "network_fixture.h"
+
+#include "network/bridge.h"
+
+#include "comms/protocol/modbus_master.h"
+#include "comms/transport/pty_transport.h"
+
+#include <QDeadlineTimer>
+
+using namespace rung;
+using namespace rung::network;
+using namespace rung::network::test;
+
+namespace {
+
+const char *kSlave = "; target: vigor\nLD M9000\nMOV K321 D0\nEND\n";
+
+// A request through the pty, the network turned until its reply is whole (at most 3 s).
+comms::FrameStatus poll(RealTime &rt, comms::Transport &hmi, comms::modbus::ReplyDecoder &reply,
+                        const QByteArray &request) {
+    QString error;
+    EXPECT_TRUE(hmi.write(request, QDeadlineTimer(1000), &error)) << error.toStdString();
+    const QDeadlineTimer deadline(3000);
+    while (reply.status() == comms::FrameStatus::NeedMore && !deadline.hasExpired()) {
+        QString failure;
+        EXPECT_TRUE(rt.turn(2, &failure)) << failure.toStdString();
+        const comms::ReadResult r = hmi.read(QDeadlineTimer(1));
+        if (r.status == comms::ReadResult::Status::Data)
+            reply.feed(r.bytes);
+    }
+    return reply.status();
+}
+
+} // namespace
+
+TEST(Bridge, ARealMasterPollsASimulatedSlaveThroughAPty) {
+    NetRun r = runNetwork(R"({"stations": [{"name": "plc", "program": "s.il", "model": "VB",
+                              "ports": {"CP2": {"application": "modbus", "station": 1}}}]})",
+                          {{QStringLiteral("s.il"), QString::fromLatin1(kSlave)}});
+    ASSERT_TRUE(r.net) << r.error.toStdString();
+    QString error;
+    auto pty = comms::PtyTransport::createPair(&error);
+    ASSERT_TRUE(pty) << error.toStdString();
+    comms::PtyTransport hmi(pty->peerPath());
+    ASSERT_TRUE(hmi.open(&error)) << error.toStdString();
+    RealTime rt(*r.net);
+    ASSERT_TRUE(rt.addBridge(QStringLiteral("plc/CP2"), std::move(pty), &error))
+        << error.toStdString();
+    comms::modbus::Request read;
+    read.function = comms::modbus::ReadHoldingRegisters;
+    read.address = 0; // D0
+    read.count = 1;
+    comms::modbus::ReplyDecoder reply(comms::modbus::Framing::Rtu, 1, read);
+    ASSERT_EQ(
+        poll(rt, hmi, reply, comms::modbus::rtuFrame(1, comms::modbus::encodeRequestPdu(read))),
+        comms::FrameStatus::Complete)
+        << reply.error().message.toStdString();
+    EXPECT_EQ(reply.response().registers, (std::vector<std::uint16_t>{321}));
+    // The traffic shows the real line's bytes on the wire, as a station's would be.
+    bool fromBridge = false;
+    for (const TrafficRecord &t : r.records)
+        fromBridge = fromBridge || t.sender == QLatin1String("bridge:plc/CP2");
+    EXPECT_TRUE(fromBridge);
+}
+
+TEST(Bridge, ACpuLinkPortIsNeverPutOnARealLine) {
+    NetRun r = runNetwork(
+        {}, {}, {},
+        QStringLiteral(RUNG_SOURCE_DIR "/resources/examples/networks/cpu-link/cpu-link.rungnet"));
+    ASSERT_TRUE(r.net) << r.error.toStdString();
+    QString error;
+    auto pty = comms::PtyTransport::createPair(&error);
+    ASSERT_TRUE(pty) << error.toStdString();
+    RealTime rt(*r.net);
+    EXPECT_FALSE(rt.addBridge(QStringLiteral("master/CP2"), std::move(pty), &error));
+    EXPECT_TRUE(error.contains(QStringLiteral("does not publish"))) << error.toStdString();
+}
