@@ -12,6 +12,8 @@
 #include <QJsonDocument>
 #include <QJsonObject>
 #include <QProcess>
+#include <QRegularExpression>
+#include <QStandardPaths>
 #include <QTemporaryDir>
 
 #include <gtest/gtest.h>
@@ -266,5 +268,55 @@ TEST(CliNetwork, ServeBridgesAPortToAPseudoTerminal) {
     serve.terminate(); // SIGTERM
     ASSERT_TRUE(serve.waitForFinished(10000));
     EXPECT_EQ(serve.exitStatus(), QProcess::NormalExit);
+    EXPECT_EQ(serve.exitCode(), 0) << serve.readAllStandardError().toStdString();
+}
+
+// mbpoll, a real Modbus master from Debian, as an HMI would poll the MODBUS application
+// example's slave (Vigor M/VB/VH communication manual, B-3-6) bridged to a pseudo-terminal:
+// it writes the slave's D100 (holding register 100, what the example's master writes) and
+// reads it back.
+TEST(CliNetwork, MbpollPollsABridgedStation) {
+    const QString mbpoll = QStandardPaths::findExecutable(QStringLiteral("mbpoll"));
+    if (mbpoll.isEmpty())
+        GTEST_SKIP() << "mbpoll is not installed (Debian package mbpoll; scripts/install-deps.sh)";
+    QTemporaryDir dir;
+    const QString file = network(
+        dir, {{QStringLiteral("net.rungnet"),
+               QStringLiteral(R"({"stations": [{"name": "s1", "program": "%1", "model": "VB",
+                "ports": {"CP2": {"application": "modbus", "station": 1, "mode": "rtu"}}}],
+                "bridges": [{"port": "s1/CP2", "pty": true}]})")
+                   .arg(kExamples + QStringLiteral("modbus/slave.il"))}});
+    QProcess serve;
+    serve.start(QStringLiteral(RUNG_CLI_PATH), {QStringLiteral("serve"), file});
+    ASSERT_TRUE(serve.waitForStarted(10000));
+    const QDeadlineTimer started(20000);
+    while (!serve.canReadLine() && !started.hasExpired())
+        serve.waitForReadyRead(100);
+    const QString first = QString::fromUtf8(serve.readLine()).trimmed();
+    ASSERT_TRUE(first.startsWith(QStringLiteral("s1/CP2 /dev/pts/"))) << first.toStdString();
+    const QString pty = first.section(QLatin1Char(' '), 1);
+    auto run = [&](QStringList args) {
+        args = QStringList{QStringLiteral("-m"),    QStringLiteral("rtu"), QStringLiteral("-b"),
+                           QStringLiteral("19200"), QStringLiteral("-P"),  QStringLiteral("none"),
+                           QStringLiteral("-a"),    QStringLiteral("1"),   QStringLiteral("-0"),
+                           QStringLiteral("-1"),    QStringLiteral("-o"),  QStringLiteral("1"),
+                           QStringLiteral("-t"),    QStringLiteral("4")} +
+               args;
+        QProcess p;
+        p.start(mbpoll, args);
+        EXPECT_TRUE(p.waitForFinished(20000));
+        return std::pair{p.exitCode(), QString::fromUtf8(p.readAllStandardOutput())};
+    };
+    const auto written =
+        run({QStringLiteral("-r"), QStringLiteral("100"), pty, QStringLiteral("555")});
+    EXPECT_EQ(written.first, 0) << written.second.toStdString();
+    const auto read = run({QStringLiteral("-r"), QStringLiteral("100"), QStringLiteral("-c"),
+                           QStringLiteral("1"), pty});
+    EXPECT_EQ(read.first, 0) << read.second.toStdString();
+    const auto m = QRegularExpression(QStringLiteral(R"(\[100\]:\s+(-?\d+))")).match(read.second);
+    ASSERT_TRUE(m.hasMatch()) << read.second.toStdString();
+    EXPECT_EQ(m.captured(1).toInt(), 555);
+    serve.terminate();
+    ASSERT_TRUE(serve.waitForFinished(10000));
     EXPECT_EQ(serve.exitCode(), 0) << serve.readAllStandardError().toStdString();
 }
