@@ -3,8 +3,12 @@
 
 #include "tests/cli/cli_run.h"
 
+#include "app/cli/cli_network.h"
 #include "comms/protocol/modbus_master.h"
 #include "comms/transport/pty_transport.h"
+#include "network/bridge.h"
+#include "network/station.h"
+#include "tests/comms/peers/peer_values.h"
 
 #include <QDeadlineTimer>
 #include <QDir>
@@ -319,4 +323,64 @@ TEST(CliNetwork, MbpollPollsABridgedStation) {
     serve.terminate();
     ASSERT_TRUE(serve.waitForFinished(10000));
     EXPECT_EQ(serve.exitCode(), 0) << serve.readAllStandardError().toStdString();
+}
+
+// A simulated master polls a real device: the MBUS of a VB station, its CP2 bridged to a
+// pseudo-terminal on which Debian's libmodbus serves as slave 1 (tests/comms/peers), reads
+// holding registers 0..9 into D2000..D2009, writes D2010 to register 20 and reads it back
+// into D2020.
+TEST(CliNetwork, AnMbusMasterPollsALibmodbusSlave) {
+#ifndef RUNG_MODBUS_PEER
+    GTEST_SKIP() << "libmodbus-dev is not installed (scripts/install-deps.sh)";
+#else
+    QTemporaryDir dir;
+    const QString file = network(
+        dir,
+        {{QStringLiteral("m.il"),
+          QStringLiteral(
+              "; target: vigor\nLD M9002\nMOV K3 D1000\nMOV K1 D1001\nMOV K1 "
+              "D1002\nMOV K10 D1003\nMOV K13 D1004\nMOV K2000 D1005\nMOV K4 "
+              "D1006\nMOV K0 D1007\nMOV K1 D1008\nMOV K3 D1009\nMOV K1 D1010\n"
+              "MOV K13 D1011\nMOV K2010 D1012\nMOV K4 D1013\nMOV K20 D1014\n"
+              "MOV K1 D1015\nMOV K1 D1016\nMOV K1 D1017\nMOV K13 D1018\nMOV K2020 D1019\n"
+              "MOV K4 D1020\nMOV K20 D1021\nMOV K4321 D2010\nLD M9000\nMBUS D1000 D100\nEND\n")},
+         {QStringLiteral("net.rungnet"), QStringLiteral(R"({"stations": [{"name": "m",
+                "program": "m.il", "model": "VB",
+                "ports": {"CP2": {"application": "modbus", "station": 0, "mode": "rtu"}}}]})")}});
+    rung::network::NetworkDescription d;
+    QString error;
+    ASSERT_TRUE(rung::network::readNetworkFile(file, &d, &error)) << error.toStdString();
+    auto net = rung::network::Network::build(d, rung::app::cliProgramLoader(), &error);
+    ASSERT_TRUE(net) << error.toStdString();
+    auto pty = rung::comms::PtyTransport::createPair(&error);
+    ASSERT_TRUE(pty) << error.toStdString();
+    const QString path = pty->peerPath();
+    rung::network::RealTime rt(*net);
+    ASSERT_TRUE(rt.addBridge(QStringLiteral("m/CP2"), std::move(pty), &error))
+        << error.toStdString();
+    QProcess peer;
+    peer.start(QStringLiteral(RUNG_MODBUS_PEER),
+               {QStringLiteral("rtu"), path, QStringLiteral("1")});
+    ASSERT_TRUE(peer.waitForReadyRead(10000)) << peer.readAllStandardError().toStdString();
+    ASSERT_TRUE(peer.readLine().startsWith("ready"));
+    rung::network::Station *m = net->station(QStringLiteral("m"));
+    auto value = [&](int d) {
+        return m->engine().value(std::get<rung::model::Address>(
+            rung::model::parseAddress(m->target(), QStringLiteral("D%1").arg(d))));
+    };
+    using rung::comms::test::peer::reg;
+    const QDeadlineTimer deadline(15000);
+    bool done = false;
+    while (!done && !deadline.hasExpired()) {
+        QString failure;
+        ASSERT_TRUE(rt.turn(5, &failure)) << failure.toStdString();
+        done = value(2009) == reg(9) && value(100) == 0 && value(102) >= 2; // two tables
+    }
+    EXPECT_TRUE(done) << "S2 " << std::hex << value(100);
+    for (int k = 0; k < 10; ++k)
+        EXPECT_EQ(value(2000 + k), reg(k)) << k;
+    EXPECT_EQ(value(2020), 4321); // written to the slave, read back from it
+    peer.kill();
+    peer.waitForFinished(5000);
+#endif
 }
