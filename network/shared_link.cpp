@@ -7,7 +7,10 @@
 
 #include <QCoreApplication>
 
+#include <array>
 #include <limits>
+#include <optional>
+#include <span>
 #include <variant>
 
 namespace rung::network {
@@ -59,27 +62,48 @@ std::vector<model::Address> roleDevices(const model::Target &t, SystemRole role)
     return out;
 }
 
-void setBit(Station &s, SystemRole role, int k, bool on) {
-    const auto all = roleDevices(s.target(), role);
-    if (std::size_t(k) < all.size())
-        s.engine().storeImageBit(s.engine().layout().bit(all[std::size_t(k)]), on);
-}
-
-void setWord(Station &s, SystemRole role, int k, std::int32_t value) {
-    const auto all = roleDevices(s.target(), role);
-    if (std::size_t(k) < all.size()) {
-        const int w = s.engine().layout().word(all[std::size_t(k)]);
-        if (w >= 0)
-            s.engine().storeImageWord(std::size_t(w), value, 16);
-    }
-}
+// A role's devices in a station's image, resolved once: an exchange writes them every network
+// scan, and parsing their names each time cost seven times the stations' scans (bench_network).
+struct Resolved {
+    std::vector<model::BitRef> bits;
+    std::vector<int> words;
+};
 
 struct Member {
     StationPort *port = nullptr;
     Station *station = nullptr;
     int number = 0;
     Share share;
+    mutable std::vector<std::optional<Resolved>> roles; // by SystemRole
 };
+
+const Resolved &resolved(const Member &m, SystemRole role) {
+    const auto index = static_cast<std::size_t>(role);
+    if (index < m.roles.size() && m.roles[index])
+        return *m.roles[index];
+    if (m.roles.size() <= index)
+        m.roles.resize(index + 1);
+    Resolved r;
+    const model::MemoryLayout &l = m.station->engine().layout();
+    for (const model::Address &a : roleDevices(m.station->target(), role)) {
+        r.bits.push_back(l.bit(a));
+        r.words.push_back(l.word(a));
+    }
+    m.roles[index] = std::move(r);
+    return *m.roles[index];
+}
+
+void setBit(const Member &m, SystemRole role, int k, bool on) {
+    const Resolved &r = resolved(m, role);
+    if (std::size_t(k) < r.bits.size() && r.bits[std::size_t(k)].valid())
+        m.station->engine().storeImageBit(r.bits[std::size_t(k)], on);
+}
+
+void setWord(const Member &m, SystemRole role, int k, std::int32_t value) {
+    const Resolved &r = resolved(m, role);
+    if (std::size_t(k) < r.words.size() && r.words[std::size_t(k)] >= 0)
+        m.station->engine().storeImageWord(std::size_t(r.words[std::size_t(k)]), value, 16);
+}
 
 void copy(const Member &from, const Member &to) {
     const simulator::Engine &src = from.station->engine();
@@ -120,11 +144,20 @@ public:
             m.share = shareOf(*m.station, mode, m.number);
         m_errors.assign(8, 0);
         m_next = qint64(m_cycleMs) * 1000;
+        for (const Member &m : m_members)
+            for (SystemRole role :
+                 {SystemRole::CpuLinkFailed, SystemRole::CpuLinkErrorCount,
+                  SystemRole::CpuLinkErrorCode, SystemRole::NetworkScanTime,
+                  SystemRole::NetworkScanMax, SystemRole::CpuLinkTimeout, SystemRole::CpuLinkSlaves,
+                  SystemRole::CpuLinkRange, SystemRole::CpuLinkRetries})
+                resolved(m, role); // once, before the first exchange
     }
     qint64 nextUs() const override { return m_next; }
     void run(qint64 now) override {
-        std::vector<const Member *> present;
-        std::vector<int> codes(8, 0); // 0 none, 1 time-out, 5 sum error (D9212..)
+        // Fixed arrays: an exchange runs every few ms of virtual time and allocates nothing.
+        std::array<const Member *, 8> presentAt{};
+        std::size_t presentCount = 0;
+        std::array<int, 8> codes{}; // 0 none, 1 time-out, 5 sum error (D9212..)
         int failed = 0;
         for (int n = 0; n <= std::max(m_slaves, 0); ++n) {
             const Member *m = member(n);
@@ -137,7 +170,7 @@ public:
                 corrupted = corrupted || (f.kind == FaultDescription::Kind::Corrupt &&
                                           f.wire == m_wire->name && f.frame == frame);
             if (there && !corrupted) {
-                present.push_back(m);
+                presentAt[presentCount++] = m;
                 continue;
             }
             codes[std::size_t(n)] = there ? 5 : 1;
@@ -146,6 +179,7 @@ public:
         }
         if (!m_master) // no station 0: nobody polls, every station's link has failed
             codes[0] = 1;
+        const auto present = std::span(presentAt).first(presentCount);
         // Station 0 drives the exchange: without it nothing moves.
         const bool polled = std::find(present.begin(), present.end(), m_master) != present.end();
         for (const Member *from : present)
@@ -155,20 +189,25 @@ public:
         // A station that does not answer costs the time-out once and each retry.
         const qint64 cycle = qint64(m_cycleMs) + qint64(failed) * m_timeout * 10 * (m_retries + 1);
         m_max = std::max<qint64>(m_max, cycle);
-        for (const Member &m : m_members) {
-            Station &s = *m.station;
-            for (int n = 0; n < 8; ++n) {
-                setBit(s, SystemRole::CpuLinkFailed, n, codes[std::size_t(n)] != 0);
-                setWord(s, SystemRole::CpuLinkErrorCount, n, m_errors[std::size_t(n)]);
-                if (n > 0)
-                    setWord(s, SystemRole::CpuLinkErrorCode, n - 1, codes[std::size_t(n)]);
+        // The status devices are the PLC's (the checks refuse a program that writes them):
+        // written when what they show changes, not at every exchange (bench_network).
+        const Shown shown{codes, m_errors, cycle, m_max};
+        if (!m_shown || !(*m_shown == shown)) {
+            m_shown = shown;
+            for (const Member &s : m_members) {
+                for (int n = 0; n < 8; ++n) {
+                    setBit(s, SystemRole::CpuLinkFailed, n, codes[std::size_t(n)] != 0);
+                    setWord(s, SystemRole::CpuLinkErrorCount, n, m_errors[std::size_t(n)]);
+                    if (n > 0)
+                        setWord(s, SystemRole::CpuLinkErrorCode, n - 1, codes[std::size_t(n)]);
+                }
+                setWord(s, SystemRole::NetworkScanTime, 0, std::int32_t(cycle));
+                setWord(s, SystemRole::NetworkScanMax, 0, std::int32_t(m_max));
+                setWord(s, SystemRole::CpuLinkTimeout, 0, m_timeout);
+                setWord(s, SystemRole::CpuLinkSlaves, 0, m_slaves);
+                setWord(s, SystemRole::CpuLinkRange, 0, m_range);
+                setWord(s, SystemRole::CpuLinkRetries, 0, m_retries);
             }
-            setWord(s, SystemRole::NetworkScanTime, 0, std::int32_t(cycle));
-            setWord(s, SystemRole::NetworkScanMax, 0, std::int32_t(m_max));
-            setWord(s, SystemRole::CpuLinkTimeout, 0, m_timeout);
-            setWord(s, SystemRole::CpuLinkSlaves, 0, m_slaves);
-            setWord(s, SystemRole::CpuLinkRange, 0, m_range);
-            setWord(s, SystemRole::CpuLinkRetries, 0, m_retries);
         }
         if (m_network->recording()) {
             QStringList who;
@@ -203,6 +242,14 @@ private:
     int m_slaves = 0, m_range = 1, m_retries = 0, m_timeout = 5, m_cycleMs = 7;
     std::vector<int> m_errors;
     qint64 m_max = 0;
+    struct Shown {
+        std::array<int, 8> codes;
+        std::vector<int> errors;
+        qint64 cycle;
+        qint64 max;
+        bool operator==(const Shown &) const = default;
+    };
+    std::optional<Shown> m_shown; // what the status devices show
     qint64 m_next = 0;
 };
 
@@ -245,7 +292,7 @@ public:
             copy(m_members[1], m_members[0]);
         }
         for (const Member &m : m_members) {
-            Station &s = *m.station;
+            const Member &s = m;
             setBit(s, SystemRole::ParallelMaster, 0, m.number == 0);
             setBit(s, SystemRole::ParallelSlave, 0, m.number == 1);
             setBit(s, SystemRole::ParallelNormal, 0, ok);
