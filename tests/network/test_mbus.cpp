@@ -232,3 +232,25 @@ TEST(Mbus, TheApplicationExampleInAscii) {
     EXPECT_EQ(records[1].bytes, QByteArray(":0103020063"
                                            "97\r\n"));
 }
+
+// A PL110 on the wire as the MODBUS RTU slave of its COM1 (PL110 manual, chapter 3): a Vigor
+// MBUS reads its V0 (holding register 2000 of the PL110's map) into D10.
+TEST(Mbus, AVigorMasterReadsAPl110) {
+    NetRun r = runNetwork(
+        R"({"stations": [
+        {"name": "vb", "program": "m.il", "model": "VB",
+         "ports": {"CP2": {"application": "modbus", "station": 0}}},
+        {"name": "pl", "program": "p.il", "target": "pl110",
+         "ports": {"COM1": {"application": "modbus", "station": 1}}}],
+        "wires": [["vb/CP2", "pl/COM1"]]})",
+        {{QStringLiteral("m.il"),
+          QStringLiteral("; target: vigor\nLD M9002\nMOV K1 D1000\nMOV K1 D1001\n"
+                         "MOV K1 D1002\nMOV K1 D1003\nMOV K13 D1004\nMOV K10 "
+                         "D1005\nMOV K4 D1006\nMOV K2000 D1007\nLD M9000\nMBUS "
+                         "D1000 D100\nEND\n")},
+         {QStringLiteral("p.il"), QStringLiteral("; target: pl110\nLD SM0.0\nMOV 321 V0\nEND\n")}});
+    ASSERT_TRUE(r.net) << r.error.toStdString();
+    r.net->runUntil(200'000);
+    EXPECT_EQ(value(*r.net, QStringLiteral("vb"), QStringLiteral("D10")), 321);
+    EXPECT_EQ(value(*r.net, QStringLiteral("vb"), QStringLiteral("D100")), 0);
+}
