@@ -23,7 +23,7 @@
 <context>
     <name>rung::app::MainWindow</name>
     <message numerus="yes">
-        <location filename="../app/gui/main_window.cpp" line="+262"/>
+        <location filename="../app/gui/main_window.cpp" line="+209"/>
         <source>%n rung(s)</source>
         <translation>
             <numerusform>%n rung</numerusform>
@@ -39,7 +39,7 @@
         </translation>
     </message>
     <message numerus="yes">
-        <location filename="../app/gui/main_window_tools.cpp" line="+120"/>
+        <location filename="../app/gui/main_window_tools.cpp" line="+122"/>
         <source>Paste %n rungs</source>
         <translation>
             <numerusform>Paste %n rung</numerusform>
@@ -47,7 +47,7 @@
         </translation>
     </message>
     <message numerus="yes">
-        <location line="+46"/>
+        <location line="+45"/>
         <source>%n place(s) changed</source>
         <translation>
             <numerusform>%n place changed</numerusform>

@@ -550,7 +550,7 @@ Kilépési kód: 0 nincs hiba, 1 a programban hiba van, 2 használati vagy I/O h
         <translation>Megszakítva: semmi sem lett elküldve a PLC-nek</translation>
     </message>
     <message>
-        <location filename="../app/gui/connection_panel.cpp" line="+260"/>
+        <location filename="../app/gui/connection_panel.cpp" line="+267"/>
         <source>Settings</source>
         <translation>Beállítások</translation>
     </message>
@@ -578,6 +578,11 @@ Kilépési kód: 0 nincs hiba, 1 a programban hiba van, 2 használati vagy I/O h
         <location line="+5"/>
         <source>Refresh</source>
         <translation>Frissítés</translation>
+    </message>
+    <message>
+        <location line="+1"/>
+        <source>Look for serial ports again</source>
+        <translation>Soros portok keresése újra</translation>
     </message>
     <message>
         <location line="+2"/>
@@ -871,7 +876,7 @@ Válaszidő: %6 ms (átlag %7, max. %8); frissítés: %9 ms, %10 keret</translat
         <translation>%1 nem írható: %2</translation>
     </message>
     <message>
-        <location filename="../app/gui/connection_panel.cpp" line="-130"/>
+        <location filename="../app/gui/connection_panel.cpp" line="-131"/>
         <source>A serial port, or a path typed in: a pseudo-terminal such as the one
 &apos;rungstudio-cli serve --pty&apos; prints, or the link that
 &apos;serve --pty --link PATH&apos; keeps at PATH, which still leads to the
@@ -1382,6 +1387,34 @@ PLC after serve restarts</source>
     </message>
 </context>
 <context>
+    <name>rung::app::LayoutController</name>
+    <message>
+        <location filename="../app/gui/layout_controller.cpp" line="+156"/>
+        <source>Ladder and List &amp;Side by Side</source>
+        <translation>Létradiagram és lista &amp;egymás mellett</translation>
+    </message>
+    <message>
+        <location line="+7"/>
+        <source>&amp;Reset Window Layout</source>
+        <translation>&amp;Ablakelrendezés visszaállítása</translation>
+    </message>
+    <message>
+        <location line="+2"/>
+        <source>Every panel back to its first place, closed ones shown again</source>
+        <translation>Minden panel vissza az első helyére, a bezártak újra látszanak</translation>
+    </message>
+    <message>
+        <location line="+5"/>
+        <source>Ladder</source>
+        <translation>Létradiagram</translation>
+    </message>
+    <message>
+        <location line="+1"/>
+        <source>Instruction List</source>
+        <translation>Utasításlista</translation>
+    </message>
+</context>
+<context>
     <name>rung::app::ListingController</name>
     <message>
         <location filename="../app/gui/listing_controller.cpp" line="+66"/>
@@ -1453,24 +1486,24 @@ PLC after serve restarts</source>
 <context>
     <name>rung::app::MainWindow</name>
     <message>
-        <location filename="../app/gui/main_window.cpp" line="+197"/>
+        <location filename="../app/gui/main_window.cpp" line="+163"/>
         <source>Problems</source>
         <translation>Problémák</translation>
     </message>
     <message>
         <location line="+5"/>
-        <location line="+175"/>
+        <location line="+141"/>
         <source>Project</source>
         <translation>Projekt</translation>
     </message>
     <message>
-        <location line="-168"/>
-        <location line="+171"/>
+        <location line="-134"/>
+        <location line="+137"/>
         <source>Symbols</source>
         <translation>Szimbólumok</translation>
     </message>
     <message>
-        <location filename="../app/gui/main_window_actions.cpp" line="+53"/>
+        <location filename="../app/gui/main_window_actions.cpp" line="+55"/>
         <source>&amp;File</source>
         <translation>&amp;Fájl</translation>
     </message>
@@ -1585,7 +1618,7 @@ PLC after serve restarts</source>
         <translation>S&amp;or törlése</translation>
     </message>
     <message>
-        <location line="+61"/>
+        <location line="+59"/>
         <source>F5 normally open contact, F6 normally closed contact, F7 coil, F8 instruction
 Shift+F5 / Shift+F6 the same contacts in parallel with the row above
 Shift+F7 / Shift+F8 rising / falling edge contact (Alt: in parallel)
@@ -1614,7 +1647,7 @@ Ctrl+Z / Ctrl+Y: visszavonás / mégis, Ctrl+görgő: nagyítás, F4: a program 
         <translation>Online: Ctrl+W online kapcsolódás / bontás, Ctrl+1 STOP (PROGRAM), Ctrl+3 MONITOR, Ctrl+4 RUN</translation>
     </message>
     <message>
-        <location line="-158"/>
+        <location line="-156"/>
         <source>Select</source>
         <translation>Kijelölés</translation>
     </message>
@@ -1676,7 +1709,7 @@ Ctrl+Z / Ctrl+Y: visszavonás / mégis, Ctrl+görgő: nagyítás, F4: a program 
     </message>
     <message>
         <location line="+0"/>
-        <location filename="../app/gui/main_window_tools.cpp" line="+222"/>
+        <location filename="../app/gui/main_window_tools.cpp" line="+223"/>
         <source>CSV files (*.csv)</source>
         <translation>CSV-fájlok (*.csv)</translation>
     </message>
@@ -1696,12 +1729,7 @@ Ctrl+Z / Ctrl+Y: visszavonás / mégis, Ctrl+görgő: nagyítás, F4: a program 
         <translation>&amp;Nézet</translation>
     </message>
     <message>
-        <location line="+1"/>
-        <source>Ladder and List &amp;Side by Side</source>
-        <translation>Létradiagram és lista &amp;egymás mellett</translation>
-    </message>
-    <message>
-        <location line="+4"/>
+        <location line="+3"/>
         <source>Show Symbol &amp;Names</source>
         <translation>Szimbólumne&amp;vek megjelenítése</translation>
     </message>
@@ -1756,7 +1784,7 @@ Ctrl+Z / Ctrl+Y: visszavonás / mégis, Ctrl+görgő: nagyítás, F4: a program 
         <translation>A Rung Studio &amp;névjegye</translation>
     </message>
     <message>
-        <location filename="../app/gui/main_window.cpp" line="-153"/>
+        <location filename="../app/gui/main_window.cpp" line="-119"/>
         <source>Rung Comment</source>
         <translation>Létrafok megjegyzése</translation>
     </message>
@@ -1766,19 +1794,7 @@ Ctrl+Z / Ctrl+Y: visszavonás / mégis, Ctrl+görgő: nagyítás, F4: a program 
         <translation>Megjegyzés a(z) %1. létrafok fölött:</translation>
     </message>
     <message>
-        <location line="+22"/>
-        <location line="+136"/>
-        <source>Ladder</source>
-        <translation>Létradiagram</translation>
-    </message>
-    <message>
-        <location line="-135"/>
-        <location line="+136"/>
-        <source>Instruction List</source>
-        <translation>Utasításlista</translation>
-    </message>
-    <message>
-        <location line="-127"/>
+        <location line="+13"/>
         <source>&lt;b&gt;%1&lt;/b&gt;&lt;br&gt;Target: %2, model %3&lt;br&gt;%4, %5</source>
         <translation>&lt;b&gt;%1&lt;/b&gt;&lt;br&gt;PLC-család: %2, modell: %3&lt;br&gt;%4, %5</translation>
     </message>
@@ -1828,7 +1844,7 @@ Ctrl+Z / Ctrl+Y: visszavonás / mégis, Ctrl+görgő: nagyítás, F4: a program 
         <translation>Az exportálás nem sikerült</translation>
     </message>
     <message>
-        <location filename="../app/gui/main_window_tools.cpp" line="-159"/>
+        <location filename="../app/gui/main_window_tools.cpp" line="-158"/>
         <source>Cut rungs</source>
         <translation>Létrafokok kivágása</translation>
     </message>
@@ -1875,7 +1891,7 @@ Ctrl+Z / Ctrl+Y: visszavonás / mégis, Ctrl+görgő: nagyítás, F4: a program 
         <translation>Operandus:</translation>
     </message>
     <message>
-        <location line="+28"/>
+        <location line="+27"/>
         <location line="+3"/>
         <location line="+6"/>
         <source>Replace Device</source>
@@ -1916,7 +1932,7 @@ Ctrl+Z / Ctrl+Y: visszavonás / mégis, Ctrl+görgő: nagyítás, F4: a program 
         </translation>
     </message>
     <message>
-        <location filename="../app/gui/main_window.cpp" line="+99"/>
+        <location filename="../app/gui/main_window.cpp" line="+84"/>
         <location filename="../app/gui/main_window_tools.cpp" line="-24"/>
         <source>Cross Reference</source>
         <translation>Kereszthivatkozás</translation>

@@ -552,7 +552,7 @@ Codice di uscita: 0 nessun errore, 1 il programma contiene errori, 2 errore di u
         <translation>Annullato: nulla è stato inviato al PLC</translation>
     </message>
     <message>
-        <location filename="../app/gui/connection_panel.cpp" line="+260"/>
+        <location filename="../app/gui/connection_panel.cpp" line="+267"/>
         <source>Settings</source>
         <translation>Impostazioni</translation>
     </message>
@@ -580,6 +580,11 @@ Codice di uscita: 0 nessun errore, 1 il programma contiene errori, 2 errore di u
         <location line="+5"/>
         <source>Refresh</source>
         <translation>Aggiorna</translation>
+    </message>
+    <message>
+        <location line="+1"/>
+        <source>Look for serial ports again</source>
+        <translation>Cerca di nuovo le porte seriali</translation>
     </message>
     <message>
         <location line="+2"/>
@@ -873,7 +878,7 @@ Andata e ritorno %6 ms (media %7, max %8); aggiornamento %9 ms, %10 frame</trans
         <translation>Impossibile scrivere %1: %2</translation>
     </message>
     <message>
-        <location filename="../app/gui/connection_panel.cpp" line="-130"/>
+        <location filename="../app/gui/connection_panel.cpp" line="-131"/>
         <source>A serial port, or a path typed in: a pseudo-terminal such as the one
 &apos;rungstudio-cli serve --pty&apos; prints, or the link that
 &apos;serve --pty --link PATH&apos; keeps at PATH, which still leads to the
@@ -1384,6 +1389,34 @@ PLC dopo il riavvio di serve</translation>
     </message>
 </context>
 <context>
+    <name>rung::app::LayoutController</name>
+    <message>
+        <location filename="../app/gui/layout_controller.cpp" line="+156"/>
+        <source>Ladder and List &amp;Side by Side</source>
+        <translation>Schema ladder e lista &amp;affiancati</translation>
+    </message>
+    <message>
+        <location line="+7"/>
+        <source>&amp;Reset Window Layout</source>
+        <translation>Ripristina &amp;disposizione finestre</translation>
+    </message>
+    <message>
+        <location line="+2"/>
+        <source>Every panel back to its first place, closed ones shown again</source>
+        <translation>Ogni pannello torna al suo posto iniziale, quelli chiusi sono mostrati di nuovo</translation>
+    </message>
+    <message>
+        <location line="+5"/>
+        <source>Ladder</source>
+        <translation>Ladder</translation>
+    </message>
+    <message>
+        <location line="+1"/>
+        <source>Instruction List</source>
+        <translation>Lista istruzioni</translation>
+    </message>
+</context>
+<context>
     <name>rung::app::ListingController</name>
     <message>
         <location filename="../app/gui/listing_controller.cpp" line="+66"/>
@@ -1455,24 +1488,24 @@ PLC dopo il riavvio di serve</translation>
 <context>
     <name>rung::app::MainWindow</name>
     <message>
-        <location filename="../app/gui/main_window.cpp" line="+197"/>
+        <location filename="../app/gui/main_window.cpp" line="+163"/>
         <source>Problems</source>
         <translation>Problemi</translation>
     </message>
     <message>
         <location line="+5"/>
-        <location line="+175"/>
+        <location line="+141"/>
         <source>Project</source>
         <translation>Progetto</translation>
     </message>
     <message>
-        <location line="-168"/>
-        <location line="+171"/>
+        <location line="-134"/>
+        <location line="+137"/>
         <source>Symbols</source>
         <translation>Simboli</translation>
     </message>
     <message>
-        <location filename="../app/gui/main_window_actions.cpp" line="+53"/>
+        <location filename="../app/gui/main_window_actions.cpp" line="+55"/>
         <source>&amp;File</source>
         <translation>&amp;File</translation>
     </message>
@@ -1587,7 +1620,7 @@ PLC dopo il riavvio di serve</translation>
         <translation>E&amp;limina riga</translation>
     </message>
     <message>
-        <location line="+61"/>
+        <location line="+59"/>
         <source>F5 normally open contact, F6 normally closed contact, F7 coil, F8 instruction
 Shift+F5 / Shift+F6 the same contacts in parallel with the row above
 Shift+F7 / Shift+F8 rising / falling edge contact (Alt: in parallel)
@@ -1616,7 +1649,7 @@ Ctrl+Z / Ctrl+Y: annulla / ripeti, Ctrl+rotellina: zoom, F4: verifica il program
         <translation>In linea: Ctrl+W vai online / offline, Ctrl+1 STOP (PROGRAM), Ctrl+3 MONITOR, Ctrl+4 RUN</translation>
     </message>
     <message>
-        <location line="-158"/>
+        <location line="-156"/>
         <source>Select</source>
         <translation>Seleziona</translation>
     </message>
@@ -1678,7 +1711,7 @@ Ctrl+Z / Ctrl+Y: annulla / ripeti, Ctrl+rotellina: zoom, F4: verifica il program
     </message>
     <message>
         <location line="+0"/>
-        <location filename="../app/gui/main_window_tools.cpp" line="+222"/>
+        <location filename="../app/gui/main_window_tools.cpp" line="+223"/>
         <source>CSV files (*.csv)</source>
         <translation>File CSV (*.csv)</translation>
     </message>
@@ -1698,12 +1731,7 @@ Ctrl+Z / Ctrl+Y: annulla / ripeti, Ctrl+rotellina: zoom, F4: verifica il program
         <translation>&amp;Visualizza</translation>
     </message>
     <message>
-        <location line="+1"/>
-        <source>Ladder and List &amp;Side by Side</source>
-        <translation>Schema ladder e lista &amp;affiancati</translation>
-    </message>
-    <message>
-        <location line="+4"/>
+        <location line="+3"/>
         <source>Show Symbol &amp;Names</source>
         <translation>Mostra &amp;nomi simbolici</translation>
     </message>
@@ -1758,7 +1786,7 @@ Ctrl+Z / Ctrl+Y: annulla / ripeti, Ctrl+rotellina: zoom, F4: verifica il program
         <translation>&amp;Informazioni su Rung Studio</translation>
     </message>
     <message>
-        <location filename="../app/gui/main_window.cpp" line="-153"/>
+        <location filename="../app/gui/main_window.cpp" line="-119"/>
         <source>Rung Comment</source>
         <translation>Commento del segmento</translation>
     </message>
@@ -1768,19 +1796,7 @@ Ctrl+Z / Ctrl+Y: annulla / ripeti, Ctrl+rotellina: zoom, F4: verifica il program
         <translation>Commento sopra il segmento %1:</translation>
     </message>
     <message>
-        <location line="+22"/>
-        <location line="+136"/>
-        <source>Ladder</source>
-        <translation>Ladder</translation>
-    </message>
-    <message>
-        <location line="-135"/>
-        <location line="+136"/>
-        <source>Instruction List</source>
-        <translation>Lista istruzioni</translation>
-    </message>
-    <message>
-        <location line="-127"/>
+        <location line="+13"/>
         <source>&lt;b&gt;%1&lt;/b&gt;&lt;br&gt;Target: %2, model %3&lt;br&gt;%4, %5</source>
         <translation>&lt;b&gt;%1&lt;/b&gt;&lt;br&gt;Famiglia PLC: %2, modello %3&lt;br&gt;%4, %5</translation>
     </message>
@@ -1832,7 +1848,7 @@ Ctrl+Z / Ctrl+Y: annulla / ripeti, Ctrl+rotellina: zoom, F4: verifica il program
         <translation>Impossibile esportare</translation>
     </message>
     <message>
-        <location filename="../app/gui/main_window_tools.cpp" line="-159"/>
+        <location filename="../app/gui/main_window_tools.cpp" line="-158"/>
         <source>Cut rungs</source>
         <translation>Taglia segmenti</translation>
     </message>
@@ -1880,7 +1896,7 @@ Ctrl+Z / Ctrl+Y: annulla / ripeti, Ctrl+rotellina: zoom, F4: verifica il program
         <translation>Operando:</translation>
     </message>
     <message>
-        <location line="+28"/>
+        <location line="+27"/>
         <location line="+3"/>
         <location line="+6"/>
         <source>Replace Device</source>
@@ -1923,7 +1939,7 @@ Ctrl+Z / Ctrl+Y: annulla / ripeti, Ctrl+rotellina: zoom, F4: verifica il program
         </translation>
     </message>
     <message>
-        <location filename="../app/gui/main_window.cpp" line="+99"/>
+        <location filename="../app/gui/main_window.cpp" line="+84"/>
         <location filename="../app/gui/main_window_tools.cpp" line="-24"/>
         <source>Cross Reference</source>
         <translation>Riferimenti incrociati</translation>

@@ -50,6 +50,7 @@ class ConnectionPanel;
 class DebugController;
 class ElidingLabel;
 class FileController;
+class LayoutController;
 class ListingController;
 class OnlineController;
 class RecoveryFile;
@@ -74,6 +75,7 @@ public:
     // The window's files (file_controller.h): open, save, the recovery file. The window's
     // own entry points are its controller's.
     FileController *files() const { return m_files; }
+    LayoutController *layoutController() const { return m_layout; }
     bool openFile(const QString &path, const QString &targetId = QString(), bool quiet = false);
     bool saveTo(const QString &path);
     QString completeSavePath(const QString &chosen, const QStringList &suffixes);
@@ -125,8 +127,6 @@ public:
 protected:
     void closeEvent(QCloseEvent *event) override;
     void changeEvent(QEvent *event) override; // LanguageChange: retranslate()
-    // The docks' tab bars, as Qt makes them: whole titles (scrolled), never "P..." / "Si...".
-    void childEvent(QChildEvent *event) override;
 
 private:
     void buildActions();
@@ -165,8 +165,6 @@ private:
     editor::IoPanel *m_ioPanel = nullptr;
     editor::TimingChart *m_chart = nullptr;
     bool m_panelsShown = false; // the first simulation showed the inputs and outputs
-    QTabWidget *m_tabs;
-    QSplitter *m_split;
     SymbolTable *m_symbols = nullptr;
     editor::CrossReferenceView *m_crossReference = nullptr;
     QLineEdit *m_crossDevice = nullptr;
@@ -186,8 +184,8 @@ private:
     QLabel *m_statusOrigin = nullptr;
     ListingController *m_listing = nullptr; // the list as typed, in step with the program
     FileController *m_files = nullptr;
-    QString m_findText; // the device of the last Find, for F3 / Shift+F3
-    bool m_sideBySide = false;
+    LayoutController *m_layout = nullptr; // tabs or side by side, the docks' places
+    QString m_findText;                   // the device of the last Find, for F3 / Shift+F3
 };
 
 } // namespace rung::app

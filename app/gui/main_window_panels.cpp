@@ -84,7 +84,10 @@ void MainWindow::retranslatePanels() {
 
 void MainWindow::addPanelActions(QMenu *menu) {
     menu->addSeparator();
-    for (const char *name : {"watchDock", "ioDock", "timingChartDock", "testsDock"})
+    // Every dock of the window can be opened again from here (the live ones from the
+    // Simulation menu and Online's entry below): a closed Project or Problems had no way back.
+    for (const char *name : {"projectDock", "crossReferenceDock", "problemsDock", "watchDock",
+                             "ioDock", "timingChartDock", "testsDock"})
         if (auto *d = findChild<QDockWidget *>(QString::fromLatin1(name)))
             menu->addAction(d->toggleViewAction());
 }

@@ -1,5 +1,7 @@
 #include "main_window.h"
 
+#include "layout_controller.h"
+
 #include "dialogs.h"
 #include "file_controller.h"
 #include "symbol_table.h"
@@ -141,8 +143,7 @@ bool MainWindow::findDevice(const QString &text, bool backwards) {
         return false;
     }
     m_findText = text.trimmed();
-    if (m_tabs->isVisible())
-        m_tabs->setCurrentWidget(m_ladder);
+    m_layout->showPage(m_ladder);
     m_ladder->setFocus();
     return m_ladder->findDevice(std::get<model::Address>(parsed), backwards);
 }
