@@ -3611,12 +3611,12 @@ Kiértékelés: %4 µs (%5..%6)</translation>
         <translation>eszköztípus: %1</translation>
     </message>
     <message>
-        <location filename="../comms/driver/online_session.cpp" line="+115"/>
+        <location filename="../comms/driver/online_session.cpp" line="+116"/>
         <source>%1 is not connected: nothing was sent</source>
         <translation>%1 nincs csatlakoztatva: semmi sem lett elküldve</translation>
     </message>
     <message>
-        <location line="+183"/>
+        <location line="+230"/>
         <source>Connection lost: %1. Trying again.</source>
         <translation>Megszakadt a kapcsolat: %1. Újrapróbálkozás.</translation>
     </message>
@@ -3631,12 +3631,12 @@ Kiértékelés: %4 µs (%5..%6)</translation>
         <translation>%1 nem érhető el: %2. Újrapróbálkozás.</translation>
     </message>
     <message>
-        <location line="-199"/>
+        <location line="-246"/>
         <source>%1 cannot force bits: its protocol has no force command. Set the bit instead (the program may overwrite it).</source>
         <translation>%1 nem tud biteket kényszeríteni: a protokolljának nincs kényszerítő parancsa. Állítsa inkább a bitet (a program felülírhatja).</translation>
     </message>
     <message>
-        <location line="+258"/>
+        <location line="+305"/>
         <source>Cannot connect to %1: %2</source>
         <translation>Nem sikerült kapcsolódni ide: %1: %2</translation>
     </message>
@@ -4303,7 +4303,7 @@ Kiértékelés: %4 µs (%5..%6)</translation>
         <translation>törölve</translation>
     </message>
     <message>
-        <location line="+166"/>
+        <location line="+161"/>
         <source>Both programs are empty.</source>
         <translation>Mindkét program üres.</translation>
     </message>
@@ -4582,7 +4582,7 @@ Kiértékelés: %4 µs (%5..%6)</translation>
     <name>rung::editor::LadderView</name>
     <message>
         <location filename="../editor/ladder_view.cpp" line="+41"/>
-        <location line="+510"/>
+        <location line="+503"/>
         <source>Ladder diagram</source>
         <translation>Létradiagram</translation>
     </message>
@@ -8966,7 +8966,7 @@ Kiértékelés: %4 µs (%5..%6)</translation>
         <translation>a program nem indul el</translation>
     </message>
     <message>
-        <location filename="../simulator/scenario_record.cpp" line="+36"/>
+        <location filename="../simulator/scenario_record.cpp" line="+48"/>
         <source>the simulation has run no scan yet: run it, work its inputs, then record</source>
         <translation>a szimuláció még egy ciklust sem futott: indítsa el, kezelje a bemeneteit, aztán rögzítsen</translation>
     </message>
@@ -8981,7 +8981,7 @@ Kiértékelés: %4 µs (%5..%6)</translation>
         <translation>Szimulációból rögzítve: a bemenetek, ahogy kezelték őket, a kimenetek, ahogy látszottak.</translation>
     </message>
     <message>
-        <location line="+33"/>
+        <location line="+24"/>
         <source>a command given while a scan was stopped inside is applied at the start of the next scan</source>
         <translation>a ciklus belsejében megállított állapotban adott parancs a következő ciklus elején érvényesül</translation>
     </message>
@@ -8994,6 +8994,21 @@ Kiértékelés: %4 µs (%5..%6)</translation>
         <location line="+27"/>
         <source>a power cycle, reset or online edit at %1 is not in the scenario</source>
         <translation>a(z) %1 időpontbeli tápciklus, alaphelyzetbe állítás vagy online szerkesztés nincs a forgatókönyvben</translation>
+    </message>
+    <message>
+        <location line="+51"/>
+        <source>nothing was recorded: the PLC&apos;s inputs and outputs were not read while recording</source>
+        <translation>semmi sem lett rögzítve: a PLC bemeneteit és kimeneteit a rögzítés alatt nem olvasta ki az IDE</translation>
+    </message>
+    <message>
+        <location line="+17"/>
+        <source>Recorded from an online PLC: its inputs and outputs as each refresh read them.</source>
+        <translation>Online PLC-ről rögzítve: a bemenetei és kimenetei, ahogy az egyes frissítések kiolvasták őket.</translation>
+    </message>
+    <message>
+        <location line="+4"/>
+        <source>the PLC was read refresh by refresh: what changed between two refreshes is not in the scenario, and the scenario runs at a %1 ms scan, not the PLC&apos;s own</source>
+        <translation>a PLC-t frissítésenként olvasta ki az IDE: ami két frissítés között változott, nincs a forgatókönyvben, és a forgatókönyv %1 ms-os ciklussal fut, nem a PLC sajátjával</translation>
     </message>
     <message>
         <location filename="../simulator/scenario_trace.cpp" line="+57"/>

@@ -3623,12 +3623,12 @@ Valutazione: %4 µs (%5..%6)</translation>
         <translation>tipo di dispositivo %1</translation>
     </message>
     <message>
-        <location filename="../comms/driver/online_session.cpp" line="+115"/>
+        <location filename="../comms/driver/online_session.cpp" line="+116"/>
         <source>%1 is not connected: nothing was sent</source>
         <translation>%1 non è connesso: non è stato inviato nulla</translation>
     </message>
     <message>
-        <location line="+183"/>
+        <location line="+230"/>
         <source>Connection lost: %1. Trying again.</source>
         <translation>Connessione persa: %1. Nuovo tentativo in corso.</translation>
     </message>
@@ -3643,12 +3643,12 @@ Valutazione: %4 µs (%5..%6)</translation>
         <translation>Impossibile raggiungere %1: %2. Nuovo tentativo in corso.</translation>
     </message>
     <message>
-        <location line="-199"/>
+        <location line="-246"/>
         <source>%1 cannot force bits: its protocol has no force command. Set the bit instead (the program may overwrite it).</source>
         <translation>%1 non può forzare i bit: il suo protocollo non ha un comando di forzatura. Impostare invece il bit (il programma può sovrascriverlo).</translation>
     </message>
     <message>
-        <location line="+258"/>
+        <location line="+305"/>
         <source>Cannot connect to %1: %2</source>
         <translation>Impossibile connettersi a %1: %2</translation>
     </message>
@@ -4315,7 +4315,7 @@ Valutazione: %4 µs (%5..%6)</translation>
         <translation>eliminato</translation>
     </message>
     <message>
-        <location line="+166"/>
+        <location line="+161"/>
         <source>Both programs are empty.</source>
         <translation>Entrambi i programmi sono vuoti.</translation>
     </message>
@@ -4595,7 +4595,7 @@ Valutazione: %4 µs (%5..%6)</translation>
     <name>rung::editor::LadderView</name>
     <message>
         <location filename="../editor/ladder_view.cpp" line="+41"/>
-        <location line="+510"/>
+        <location line="+503"/>
         <source>Ladder diagram</source>
         <translation>Schema ladder</translation>
     </message>
@@ -8987,7 +8987,7 @@ Valutazione: %4 µs (%5..%6)</translation>
         <translation>il programma non si avvia</translation>
     </message>
     <message>
-        <location filename="../simulator/scenario_record.cpp" line="+36"/>
+        <location filename="../simulator/scenario_record.cpp" line="+48"/>
         <source>the simulation has run no scan yet: run it, work its inputs, then record</source>
         <translation>la simulazione non ha ancora eseguito alcuna scansione: avviarla, azionarne gli ingressi, poi registrare</translation>
     </message>
@@ -9002,7 +9002,7 @@ Valutazione: %4 µs (%5..%6)</translation>
         <translation>Registrato da una simulazione: gli ingressi come sono stati azionati, le uscite come sono state viste.</translation>
     </message>
     <message>
-        <location line="+33"/>
+        <location line="+24"/>
         <source>a command given while a scan was stopped inside is applied at the start of the next scan</source>
         <translation>un comando dato mentre una scansione era ferma al suo interno viene applicato all&apos;inizio della scansione successiva</translation>
     </message>
@@ -9015,6 +9015,21 @@ Valutazione: %4 µs (%5..%6)</translation>
         <location line="+27"/>
         <source>a power cycle, reset or online edit at %1 is not in the scenario</source>
         <translation>un ciclo di alimentazione, un reset o una modifica online a %1 non è nello scenario</translation>
+    </message>
+    <message>
+        <location line="+51"/>
+        <source>nothing was recorded: the PLC&apos;s inputs and outputs were not read while recording</source>
+        <translation>non è stato registrato nulla: gli ingressi e le uscite del PLC non sono stati letti durante la registrazione</translation>
+    </message>
+    <message>
+        <location line="+17"/>
+        <source>Recorded from an online PLC: its inputs and outputs as each refresh read them.</source>
+        <translation>Registrato da un PLC in linea: i suoi ingressi e uscite come li ha letti ogni aggiornamento.</translation>
+    </message>
+    <message>
+        <location line="+4"/>
+        <source>the PLC was read refresh by refresh: what changed between two refreshes is not in the scenario, and the scenario runs at a %1 ms scan, not the PLC&apos;s own</source>
+        <translation>il PLC è stato letto aggiornamento per aggiornamento: ciò che è cambiato tra due aggiornamenti non è nello scenario, e lo scenario gira con una scansione di %1 ms, non quella del PLC</translation>
     </message>
     <message>
         <location filename="../simulator/scenario_trace.cpp" line="+57"/>
