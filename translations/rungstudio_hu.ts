@@ -1676,7 +1676,7 @@ Ctrl+Z / Ctrl+Y: visszavonás / mégis, Ctrl+görgő: nagyítás, F4: a program 
     </message>
     <message>
         <location line="+0"/>
-        <location filename="../app/gui/main_window_tools.cpp" line="+222"/>
+        <location filename="../app/gui/main_window_tools.cpp" line="+220"/>
         <source>CSV files (*.csv)</source>
         <translation>CSV-fájlok (*.csv)</translation>
     </message>
@@ -1828,7 +1828,7 @@ Ctrl+Z / Ctrl+Y: visszavonás / mégis, Ctrl+görgő: nagyítás, F4: a program 
         <translation>Az exportálás nem sikerült</translation>
     </message>
     <message>
-        <location filename="../app/gui/main_window_tools.cpp" line="-159"/>
+        <location filename="../app/gui/main_window_tools.cpp" line="-158"/>
         <source>Cut rungs</source>
         <translation>Létrafokok kivágása</translation>
     </message>
@@ -1904,7 +1904,7 @@ Ctrl+Z / Ctrl+Y: visszavonás / mégis, Ctrl+görgő: nagyítás, F4: a program 
         <translation>%1 cseréje erre: %2</translation>
     </message>
     <message>
-        <location line="+27"/>
+        <location line="+26"/>
         <source>(no device) %1</source>
         <translation>(nincs operandus) %1</translation>
     </message>
@@ -1917,12 +1917,12 @@ Ctrl+Z / Ctrl+Y: visszavonás / mégis, Ctrl+görgő: nagyítás, F4: a program 
     </message>
     <message>
         <location filename="../app/gui/main_window.cpp" line="+99"/>
-        <location filename="../app/gui/main_window_tools.cpp" line="-24"/>
+        <location filename="../app/gui/main_window_tools.cpp" line="-23"/>
         <source>Cross Reference</source>
         <translation>Kereszthivatkozás</translation>
     </message>
     <message>
-        <location filename="../app/gui/main_window_tools.cpp" line="+23"/>
+        <location filename="../app/gui/main_window_tools.cpp" line="+22"/>
         <location line="+7"/>
         <source>Export Symbols</source>
         <translation>Szimbólumok exportálása</translation>
@@ -4313,9 +4313,57 @@ Kiértékelés: %4 µs (%5..%6)</translation>
     </message>
 </context>
 <context>
+    <name>rung::editor::CrossReferenceModel</name>
+    <message>
+        <location filename="../editor/cross_reference_model.cpp" line="+120"/>
+        <source>contact</source>
+        <translation>érintkező</translation>
+    </message>
+    <message>
+        <location line="+2"/>
+        <source>coil</source>
+        <translation>tekercs</translation>
+    </message>
+    <message>
+        <location line="+4"/>
+        <source>box</source>
+        <translation>funkcióblokk</translation>
+    </message>
+    <message>
+        <location line="+33"/>
+        <source>rung %1</source>
+        <translation>%1. létrafok</translation>
+    </message>
+    <message>
+        <location line="+16"/>
+        <source>The first %1 uses; type a device or a prefix for the rest</source>
+        <translation>Az első %1 előfordulás; a többihez írjon be egy operandust vagy előtagot</translation>
+    </message>
+    <message>
+        <location line="+23"/>
+        <source>Device</source>
+        <translation>Operandus</translation>
+    </message>
+    <message>
+        <location line="+2"/>
+        <source>Step</source>
+        <translation>Lépés</translation>
+    </message>
+    <message>
+        <location line="+2"/>
+        <source>Use</source>
+        <translation>Használat</translation>
+    </message>
+    <message>
+        <location line="+2"/>
+        <source>Instruction</source>
+        <translation>Utasítás</translation>
+    </message>
+</context>
+<context>
     <name>rung::editor::CrossReferenceView</name>
     <message>
-        <location filename="../editor/cross_reference_view.cpp" line="+84"/>
+        <location filename="../editor/cross_reference_view.cpp" line="+36"/>
         <source>Device or prefix (%1, %2)</source>
         <translation>Operandus vagy előtag (%1, %2)</translation>
     </message>
@@ -4323,51 +4371,6 @@ Kiértékelés: %4 µs (%5..%6)</translation>
         <location line="+1"/>
         <source>Device or prefix (%1, %2); empty: every device</source>
         <translation>Operandus vagy előtag (%1, %2); üresen: minden operandus</translation>
-    </message>
-    <message>
-        <location line="+3"/>
-        <source>Step</source>
-        <translation>Lépés</translation>
-    </message>
-    <message>
-        <location line="+0"/>
-        <source>Use</source>
-        <translation>Használat</translation>
-    </message>
-    <message>
-        <location line="+0"/>
-        <source>Instruction</source>
-        <translation>Utasítás</translation>
-    </message>
-    <message>
-        <location line="+0"/>
-        <source>Device</source>
-        <translation>Operandus</translation>
-    </message>
-    <message>
-        <location line="+119"/>
-        <source>contact</source>
-        <translation>érintkező</translation>
-    </message>
-    <message>
-        <location line="+0"/>
-        <source>coil</source>
-        <translation>tekercs</translation>
-    </message>
-    <message>
-        <location line="+0"/>
-        <source>box</source>
-        <translation>funkcióblokk</translation>
-    </message>
-    <message>
-        <location line="+14"/>
-        <source>rung %1</source>
-        <translation>%1. létrafok</translation>
-    </message>
-    <message>
-        <location line="+21"/>
-        <source>The first %1 uses; type a device or a prefix for the rest</source>
-        <translation>Az első %1 előfordulás; a többihez írjon be egy operandust vagy előtagot</translation>
     </message>
 </context>
 <context>

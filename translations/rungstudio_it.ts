@@ -1678,7 +1678,7 @@ Ctrl+Z / Ctrl+Y: annulla / ripeti, Ctrl+rotellina: zoom, F4: verifica il program
     </message>
     <message>
         <location line="+0"/>
-        <location filename="../app/gui/main_window_tools.cpp" line="+222"/>
+        <location filename="../app/gui/main_window_tools.cpp" line="+220"/>
         <source>CSV files (*.csv)</source>
         <translation>File CSV (*.csv)</translation>
     </message>
@@ -1832,7 +1832,7 @@ Ctrl+Z / Ctrl+Y: annulla / ripeti, Ctrl+rotellina: zoom, F4: verifica il program
         <translation>Impossibile esportare</translation>
     </message>
     <message>
-        <location filename="../app/gui/main_window_tools.cpp" line="-159"/>
+        <location filename="../app/gui/main_window_tools.cpp" line="-158"/>
         <source>Cut rungs</source>
         <translation>Taglia segmenti</translation>
     </message>
@@ -1910,7 +1910,7 @@ Ctrl+Z / Ctrl+Y: annulla / ripeti, Ctrl+rotellina: zoom, F4: verifica il program
         <translation>Sostituisci %1 con %2</translation>
     </message>
     <message>
-        <location line="+27"/>
+        <location line="+26"/>
         <source>(no device) %1</source>
         <translation>(nessun operando) %1</translation>
     </message>
@@ -1924,12 +1924,12 @@ Ctrl+Z / Ctrl+Y: annulla / ripeti, Ctrl+rotellina: zoom, F4: verifica il program
     </message>
     <message>
         <location filename="../app/gui/main_window.cpp" line="+99"/>
-        <location filename="../app/gui/main_window_tools.cpp" line="-24"/>
+        <location filename="../app/gui/main_window_tools.cpp" line="-23"/>
         <source>Cross Reference</source>
         <translation>Riferimenti incrociati</translation>
     </message>
     <message>
-        <location filename="../app/gui/main_window_tools.cpp" line="+23"/>
+        <location filename="../app/gui/main_window_tools.cpp" line="+22"/>
         <location line="+7"/>
         <source>Export Symbols</source>
         <translation>Esporta simboli</translation>
@@ -4325,9 +4325,57 @@ Valutazione: %4 µs (%5..%6)</translation>
     </message>
 </context>
 <context>
+    <name>rung::editor::CrossReferenceModel</name>
+    <message>
+        <location filename="../editor/cross_reference_model.cpp" line="+120"/>
+        <source>contact</source>
+        <translation>contatto</translation>
+    </message>
+    <message>
+        <location line="+2"/>
+        <source>coil</source>
+        <translation>bobina</translation>
+    </message>
+    <message>
+        <location line="+4"/>
+        <source>box</source>
+        <translation>blocco funzione</translation>
+    </message>
+    <message>
+        <location line="+33"/>
+        <source>rung %1</source>
+        <translation>segmento %1</translation>
+    </message>
+    <message>
+        <location line="+16"/>
+        <source>The first %1 uses; type a device or a prefix for the rest</source>
+        <translation>Primi %1 utilizzi; digitare un operando o un prefisso per vedere gli altri</translation>
+    </message>
+    <message>
+        <location line="+23"/>
+        <source>Device</source>
+        <translation>Operando</translation>
+    </message>
+    <message>
+        <location line="+2"/>
+        <source>Step</source>
+        <translation>Passo</translation>
+    </message>
+    <message>
+        <location line="+2"/>
+        <source>Use</source>
+        <translation>Uso</translation>
+    </message>
+    <message>
+        <location line="+2"/>
+        <source>Instruction</source>
+        <translation>Istruzione</translation>
+    </message>
+</context>
+<context>
     <name>rung::editor::CrossReferenceView</name>
     <message>
-        <location filename="../editor/cross_reference_view.cpp" line="+84"/>
+        <location filename="../editor/cross_reference_view.cpp" line="+36"/>
         <source>Device or prefix (%1, %2)</source>
         <translation>Operando o prefisso (%1, %2)</translation>
     </message>
@@ -4335,51 +4383,6 @@ Valutazione: %4 µs (%5..%6)</translation>
         <location line="+1"/>
         <source>Device or prefix (%1, %2); empty: every device</source>
         <translation>Operando o prefisso (%1, %2); vuoto: tutti gli operandi</translation>
-    </message>
-    <message>
-        <location line="+3"/>
-        <source>Step</source>
-        <translation>Passo</translation>
-    </message>
-    <message>
-        <location line="+0"/>
-        <source>Use</source>
-        <translation>Uso</translation>
-    </message>
-    <message>
-        <location line="+0"/>
-        <source>Instruction</source>
-        <translation>Istruzione</translation>
-    </message>
-    <message>
-        <location line="+0"/>
-        <source>Device</source>
-        <translation>Operando</translation>
-    </message>
-    <message>
-        <location line="+119"/>
-        <source>contact</source>
-        <translation>contatto</translation>
-    </message>
-    <message>
-        <location line="+0"/>
-        <source>coil</source>
-        <translation>bobina</translation>
-    </message>
-    <message>
-        <location line="+0"/>
-        <source>box</source>
-        <translation>blocco funzione</translation>
-    </message>
-    <message>
-        <location line="+14"/>
-        <source>rung %1</source>
-        <translation>segmento %1</translation>
-    </message>
-    <message>
-        <location line="+21"/>
-        <source>The first %1 uses; type a device or a prefix for the rest</source>
-        <translation>Primi %1 utilizzi; digitare un operando o un prefisso per vedere gli altri</translation>
     </message>
 </context>
 <context>

@@ -4,6 +4,7 @@
 
 #include "app/gui/main_window.h"
 #include "app/gui/symbol_table.h"
+#include "editor/cross_reference_view.h"
 #include "editor/ladder_view.h"
 #include "model/target/address.h"
 
@@ -20,7 +21,7 @@
 #include <QTemporaryDir>
 #include <QTest>
 #include <QTimer>
-#include <QTreeWidget>
+#include <QTreeView>
 #include <QUndoStack>
 
 #include "tests/editor/window_fixture.h"
@@ -36,11 +37,17 @@ model::Address address(const char *text) {
         model::parseAddress(model::Target::get(model::Family::Vigor), QString::fromLatin1(text)));
 }
 
-QSet<QString> devicesListed(QTreeWidget *tree) {
+// The rows as the cross reference's tree shows them.
+QSet<QString> devicesListed(editor::CrossReferenceView *view) {
+    const QAbstractItemModel *rows = view->tree()->model();
     QSet<QString> names;
-    for (int i = 0; i < tree->topLevelItemCount(); ++i)
-        names << tree->topLevelItem(i)->text(0).section(QLatin1Char(' '), 0, 0);
+    for (int i = 0; i < rows->rowCount(); ++i)
+        names << rows->index(i, 0).data().toString().section(QLatin1Char(' '), 0, 0);
     return names;
+}
+
+QString text(const QModelIndex &index, int role = Qt::DisplayRole) {
+    return index.data(role).toString();
 }
 
 struct XrefFixture : test::WindowFixture {
@@ -58,33 +65,36 @@ struct XrefFixture : test::WindowFixture {
 
 TEST_F(XrefFixture, AnEmptyFilterListsEveryDeviceAPrefixSome) {
     filter(QString());
-    QTreeWidget *tree = window.crossReference();
-    EXPECT_EQ(devicesListed(tree),
+    editor::CrossReferenceView *xref = window.crossReference();
+    EXPECT_EQ(devicesListed(xref),
               (QSet<QString>{QStringLiteral("X0"), QStringLiteral("X1"), QStringLiteral("Y0"),
                              QStringLiteral("Y1"), QStringLiteral("M0"), QStringLiteral("T0")}));
     filter(QStringLiteral("x"));
-    EXPECT_EQ(devicesListed(tree), (QSet<QString>{QStringLiteral("X0"), QStringLiteral("X1")}));
+    EXPECT_EQ(devicesListed(xref), (QSet<QString>{QStringLiteral("X0"), QStringLiteral("X1")}));
     filter(QStringLiteral("T0"));
-    ASSERT_EQ(tree->topLevelItemCount(), 1);
-    ASSERT_EQ(tree->topLevelItem(0)->childCount(), 1);
-    EXPECT_EQ(tree->topLevelItem(0)->child(0)->text(2), QStringLiteral("box"));
-    EXPECT_EQ(tree->topLevelItem(0)->child(0)->text(3), QStringLiteral("TMR T0 K10"));
+    const QAbstractItemModel *rows = xref->tree()->model();
+    ASSERT_EQ(rows->rowCount(), 1);
+    const QModelIndex t0 = rows->index(0, 0);
+    ASSERT_EQ(rows->rowCount(t0), 1);
+    EXPECT_EQ(text(rows->index(0, 2, t0)), QStringLiteral("box"));
+    EXPECT_EQ(text(rows->index(0, 3, t0)), QStringLiteral("TMR T0 K10"));
 }
 
 TEST_F(XrefFixture, ADeviceShowsItsNameAndEachUseLeadsToItsRung) {
     window.document()->setSymbols(
         {{address("Y0"), QStringLiteral("Pump"), QStringLiteral("main")}});
     filter(QStringLiteral("Y0"));
-    QTreeWidget *tree = window.crossReference();
-    ASSERT_EQ(tree->topLevelItemCount(), 1);
-    QTreeWidgetItem *y0 = tree->topLevelItem(0);
-    EXPECT_EQ(y0->text(0), QStringLiteral("Y0  Pump"));
-    EXPECT_EQ(y0->toolTip(0), y0->text(0)); // whole, when the column cuts a long name
-    EXPECT_EQ(y0->text(3), QStringLiteral("main"));
-    EXPECT_TRUE(y0->isExpanded());
-    ASSERT_EQ(y0->childCount(), 2);
-    EXPECT_EQ(y0->child(1)->text(1), QStringLiteral("0002")); // LD Y0 is step 2
-    emit tree->itemActivated(y0->child(1), 0);
+    QTreeView *tree = window.crossReference()->tree();
+    const QAbstractItemModel *rows = tree->model();
+    ASSERT_EQ(rows->rowCount(), 1);
+    const QModelIndex y0 = rows->index(0, 0);
+    EXPECT_EQ(text(y0), QStringLiteral("Y0  Pump"));
+    EXPECT_EQ(text(y0, Qt::ToolTipRole), text(y0)); // whole, when the column cuts a long name
+    EXPECT_EQ(text(rows->index(0, 3)), QStringLiteral("main"));
+    EXPECT_TRUE(tree->isExpanded(y0));
+    ASSERT_EQ(rows->rowCount(y0), 2);
+    EXPECT_EQ(text(rows->index(1, 1, y0)), QStringLiteral("0002")); // LD Y0 is step 2
+    emit tree->activated(rows->index(1, 0, y0));
     EXPECT_EQ(window.ladderView()->cursor().rung, 1);
 }
 
