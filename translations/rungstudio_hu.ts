@@ -3129,22 +3129,7 @@ Kiértékelés: %4 µs (%5..%6)</translation>
 <context>
     <name>rung::app::SymbolTable</name>
     <message>
-        <location filename="../app/gui/symbol_table.cpp" line="+36"/>
-        <source>Device</source>
-        <translation>Operandus</translation>
-    </message>
-    <message>
-        <location line="+0"/>
-        <source>Name</source>
-        <translation>Név</translation>
-    </message>
-    <message>
-        <location line="+0"/>
-        <source>Comment</source>
-        <translation>Megjegyzés</translation>
-    </message>
-    <message>
-        <location line="+89"/>
+        <location filename="../app/gui/symbol_table.cpp" line="+95"/>
         <source>%1: %2</source>
         <translation>%1: %2</translation>
     </message>
@@ -4925,6 +4910,34 @@ Kiértékelés: %4 µs (%5..%6)</translation>
         <location line="+16"/>
         <source>Show</source>
         <translation>Megjelenítés</translation>
+    </message>
+</context>
+<context>
+    <name>rung::editor::SymbolTableModel</name>
+    <message>
+        <location filename="../editor/symbol_table_model.cpp" line="+34"/>
+        <source>No device yet: the row becomes a symbol when it names one</source>
+        <translation>Még nincs operandus: a sor szimbólum lesz, amint operandust kap</translation>
+    </message>
+    <message>
+        <location line="+6"/>
+        <source>No symbol yet: edit the row to make it one</source>
+        <translation>Még nem szimbólum: szerkessze a sort, hogy az legyen</translation>
+    </message>
+    <message>
+        <location line="+122"/>
+        <source>Device</source>
+        <translation>Operandus</translation>
+    </message>
+    <message>
+        <location line="+2"/>
+        <source>Name</source>
+        <translation>Név</translation>
+    </message>
+    <message>
+        <location line="+2"/>
+        <source>Comment</source>
+        <translation>Megjegyzés</translation>
     </message>
 </context>
 <context>

@@ -3139,22 +3139,7 @@ Valutazione: %4 µs (%5..%6)</translation>
 <context>
     <name>rung::app::SymbolTable</name>
     <message>
-        <location filename="../app/gui/symbol_table.cpp" line="+36"/>
-        <source>Device</source>
-        <translation>Operando</translation>
-    </message>
-    <message>
-        <location line="+0"/>
-        <source>Name</source>
-        <translation>Nome</translation>
-    </message>
-    <message>
-        <location line="+0"/>
-        <source>Comment</source>
-        <translation>Commento</translation>
-    </message>
-    <message>
-        <location line="+89"/>
+        <location filename="../app/gui/symbol_table.cpp" line="+95"/>
         <source>%1: %2</source>
         <translation>%1: %2</translation>
     </message>
@@ -4938,6 +4923,34 @@ Valutazione: %4 µs (%5..%6)</translation>
         <location line="+16"/>
         <source>Show</source>
         <translation>Mostra</translation>
+    </message>
+</context>
+<context>
+    <name>rung::editor::SymbolTableModel</name>
+    <message>
+        <location filename="../editor/symbol_table_model.cpp" line="+34"/>
+        <source>No device yet: the row becomes a symbol when it names one</source>
+        <translation>Nessun operando: la riga diventa un simbolo quando ne indica uno</translation>
+    </message>
+    <message>
+        <location line="+6"/>
+        <source>No symbol yet: edit the row to make it one</source>
+        <translation>Non ancora un simbolo: modificare la riga per renderla tale</translation>
+    </message>
+    <message>
+        <location line="+122"/>
+        <source>Device</source>
+        <translation>Operando</translation>
+    </message>
+    <message>
+        <location line="+2"/>
+        <source>Name</source>
+        <translation>Nome</translation>
+    </message>
+    <message>
+        <location line="+2"/>
+        <source>Comment</source>
+        <translation>Commento</translation>
     </message>
 </context>
 <context>

@@ -17,7 +17,7 @@
 #include <QPushButton>
 #include <QSet>
 #include <QSignalSpy>
-#include <QTableWidget>
+#include <QTableView>
 #include <QTemporaryDir>
 #include <QTest>
 #include <QTimer>
@@ -48,6 +48,17 @@ QSet<QString> devicesListed(editor::CrossReferenceView *view) {
 
 QString text(const QModelIndex &index, int role = Qt::DisplayRole) {
     return index.data(role).toString();
+}
+
+// The symbol table's cells, as the view shows them and as a user types them.
+QTableView *symbolsTable(app::MainWindow &window) {
+    return window.findChild<QTableView *>(QStringLiteral("symbolsTable"));
+}
+QModelIndex cell(QTableView *table, int row, int column) {
+    return table->model()->index(row, column);
+}
+void type(QTableView *table, int row, int column, const QString &text) {
+    ASSERT_TRUE(table->model()->setData(cell(table, row, column), text));
 }
 
 struct XrefFixture : test::WindowFixture {
@@ -168,44 +179,48 @@ TEST(SymbolsTable, EditedInPlaceKeepsIncompleteRowsAndMarksInvalidDevices) {
     app::MainWindow window;
     const model::Target &vigor = model::Target::get(model::Family::Vigor);
     window.newProject(vigor, QStringLiteral("VB"));
-    auto *table = window.findChild<QTableWidget *>(QStringLiteral("symbolsTable"));
+    QTableView *table = symbolsTable(window);
     ASSERT_NE(table, nullptr);
+    const QAbstractItemModel *rows = table->model();
     QUndoStack *undo = window.document()->undoStack();
     const int before = undo->count();
-    ASSERT_EQ(table->rowCount(), 1); // the free row
+    ASSERT_EQ(rows->rowCount(), 1); // the free row
     // A name before the device: no symbol yet, no undo step, and the row stays.
-    table->item(0, 1)->setText(QStringLiteral("Start"));
+    type(table, 0, 1, QStringLiteral("Start"));
     EXPECT_EQ(undo->count(), before);
     EXPECT_TRUE(window.document()->project().symbols.empty());
-    ASSERT_EQ(table->rowCount(), 2); // the typed row and a new free row
-    EXPECT_EQ(table->item(0, 1)->text(), QStringLiteral("Start"));
+    ASSERT_EQ(rows->rowCount(), 2); // the typed row and a new free row
+    EXPECT_EQ(text(cell(table, 0, 1)), QStringLiteral("Start"));
     // Its device completes it: one undo step.
-    table->item(0, 0)->setText(QStringLiteral("X0"));
+    type(table, 0, 0, QStringLiteral("X0"));
     EXPECT_EQ(undo->count(), before + 1);
     EXPECT_EQ(undo->undoText(), QStringLiteral("Edit symbols"));
     ASSERT_EQ(window.document()->project().symbols.size(), 1u);
     EXPECT_EQ(window.document()->project().symbols.front().name, QStringLiteral("Start"));
     // A device the target does not have stays, marked, with the reason as its tooltip.
-    ASSERT_EQ(table->rowCount(), 2);
-    table->item(1, 0)->setText(QStringLiteral("X9"));
+    ASSERT_EQ(rows->rowCount(), 2);
+    type(table, 1, 0, QStringLiteral("X9"));
     EXPECT_EQ(undo->count(), before + 1);
-    ASSERT_EQ(table->rowCount(), 3);
+    ASSERT_EQ(rows->rowCount(), 3);
     const auto parsed =
         model::parseAddress(vigor, QStringLiteral("X9"), vigor.model(QStringLiteral("VB")));
     ASSERT_TRUE(std::holds_alternative<model::AddressError>(parsed));
-    EXPECT_EQ(table->item(1, 0)->text(), QStringLiteral("X9"));
-    EXPECT_EQ(table->item(1, 0)->toolTip(), std::get<model::AddressError>(parsed).message);
-    EXPECT_NE(table->item(1, 0)->background(), table->item(0, 0)->background());
+    EXPECT_EQ(text(cell(table, 1, 0)), QStringLiteral("X9"));
+    EXPECT_EQ(text(cell(table, 1, 0), Qt::ToolTipRole),
+              std::get<model::AddressError>(parsed).message);
+    EXPECT_NE(cell(table, 1, 0).data(Qt::BackgroundRole),
+              cell(table, 0, 0).data(Qt::BackgroundRole));
+    EXPECT_TRUE(cell(table, 1, 0).data(Qt::BackgroundRole).value<QColor>().isValid());
     // Corrected, it becomes a symbol.
-    table->item(1, 0)->setText(QStringLiteral("X7"));
+    type(table, 1, 0, QStringLiteral("X7"));
     EXPECT_EQ(undo->count(), before + 2);
     EXPECT_EQ(window.document()->project().symbols.size(), 2u);
-    EXPECT_EQ(table->rowCount(), 3);
+    EXPECT_EQ(rows->rowCount(), 3);
     // A typed row cleared of everything goes.
-    table->item(2, 1)->setText(QStringLiteral("Spare"));
-    ASSERT_EQ(table->rowCount(), 4);
-    table->item(2, 1)->setText(QString());
-    EXPECT_EQ(table->rowCount(), 3);
+    type(table, 2, 1, QStringLiteral("Spare"));
+    ASSERT_EQ(rows->rowCount(), 4);
+    type(table, 2, 1, QString());
+    EXPECT_EQ(rows->rowCount(), 3);
     EXPECT_EQ(undo->count(), before + 2);
 }
 
@@ -218,11 +233,11 @@ TEST(SymbolsTable, AnInvalidRowIsSavedAndReopensMarked) {
     const model::Target &vigor = model::Target::get(model::Family::Vigor);
     window.newProject(vigor, QStringLiteral("VB"));
     ASSERT_TRUE(window.saveTo(path));
-    auto *table = window.findChild<QTableWidget *>(QStringLiteral("symbolsTable"));
+    QTableView *table = symbolsTable(window);
     ASSERT_NE(table, nullptr);
-    table->item(0, 0)->setText(QStringLiteral("X9"));
-    table->item(0, 1)->setText(QStringLiteral("Spare"));
-    table->item(0, 2)->setText(QStringLiteral("wired later"));
+    type(table, 0, 0, QStringLiteral("X9"));
+    type(table, 0, 1, QStringLiteral("Spare"));
+    type(table, 0, 2, QStringLiteral("wired later"));
     EXPECT_TRUE(window.isModified());
     EXPECT_TRUE(window.isWindowModified());
     ASSERT_TRUE(window.saveTo(path));
@@ -237,20 +252,21 @@ TEST(SymbolsTable, AnInvalidRowIsSavedAndReopensMarked) {
 
     app::MainWindow reopened;
     ASSERT_TRUE(reopened.openFile(path, QString(), true));
-    auto *back = reopened.findChild<QTableWidget *>(QStringLiteral("symbolsTable"));
+    QTableView *back = symbolsTable(reopened);
     ASSERT_NE(back, nullptr);
-    ASSERT_EQ(back->rowCount(), 2); // the row and the free row
-    EXPECT_EQ(back->item(0, 0)->text(), QStringLiteral("X9"));
-    EXPECT_EQ(back->item(0, 1)->text(), QStringLiteral("Spare"));
-    EXPECT_EQ(back->item(0, 2)->text(), QStringLiteral("wired later"));
+    ASSERT_EQ(back->model()->rowCount(), 2); // the row and the free row
+    EXPECT_EQ(text(cell(back, 0, 0)), QStringLiteral("X9"));
+    EXPECT_EQ(text(cell(back, 0, 1)), QStringLiteral("Spare"));
+    EXPECT_EQ(text(cell(back, 0, 2)), QStringLiteral("wired later"));
     const auto parsed =
         model::parseAddress(vigor, QStringLiteral("X9"), vigor.model(QStringLiteral("VB")));
     ASSERT_TRUE(std::holds_alternative<model::AddressError>(parsed));
-    EXPECT_EQ(back->item(0, 0)->toolTip(), std::get<model::AddressError>(parsed).message);
-    EXPECT_NE(back->item(0, 0)->background(), back->item(1, 0)->background());
+    EXPECT_EQ(text(cell(back, 0, 0), Qt::ToolTipRole),
+              std::get<model::AddressError>(parsed).message);
+    EXPECT_NE(cell(back, 0, 0).data(Qt::BackgroundRole), cell(back, 1, 0).data(Qt::BackgroundRole));
     EXPECT_FALSE(reopened.isModified());
     // Corrected, it is a symbol, and the next save leaves the key out.
-    back->item(0, 0)->setText(QStringLiteral("X7"));
+    type(back, 0, 0, QStringLiteral("X7"));
     ASSERT_EQ(reopened.document()->project().symbols.size(), 1u);
     ASSERT_TRUE(reopened.saveTo(path));
     const auto fixed = model::loadProject(path, nullptr);
@@ -264,10 +280,10 @@ TEST(SymbolsTable, AnInvalidRowIsSavedAndReopensMarked) {
 TEST(SymbolsTable, ExportSaysWhichRowsItLeavesOutAndAsks) {
     app::MainWindow window;
     window.newProject(model::Target::get(model::Family::Vigor), QStringLiteral("VB"));
-    auto *table = window.findChild<QTableWidget *>(QStringLiteral("symbolsTable"));
+    QTableView *table = symbolsTable(window);
     ASSERT_NE(table, nullptr);
-    table->item(0, 0)->setText(QStringLiteral("X9"));
-    table->item(0, 1)->setText(QStringLiteral("Spare"));
+    type(table, 0, 0, QStringLiteral("X9"));
+    type(table, 0, 1, QStringLiteral("Spare"));
     QAction *exportAction = test::editMenuEntry(window, QStringLiteral("Export Symbols (CSV)..."));
     ASSERT_NE(exportAction, nullptr);
     QString asked;
