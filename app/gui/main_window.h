@@ -18,7 +18,6 @@
 class QLabel;
 class QSplitter;
 class QTabWidget;
-class QTreeWidget;
 class QLineEdit;
 class QMenu;
 class QToolBar;
@@ -108,7 +107,7 @@ public:
     ConnectionPanel *connectionPanel() const;
     OnlineController *online() const { return m_online; }
     QLineEdit *crossReferenceDevice() { return m_crossDevice; }
-    QTreeWidget *crossReference() { return m_crossTree; }
+    editor::CrossReferenceView *crossReference() const { return m_crossReference; }
     void writeRecovery();
     bool offerRecovery(bool ask = true);
     void start(const QString &file, const QString &targetId, bool askToRecover = true);
@@ -168,7 +167,6 @@ private:
     SymbolTable *m_symbols = nullptr;
     editor::CrossReferenceView *m_crossReference = nullptr;
     QLineEdit *m_crossDevice = nullptr;
-    QTreeWidget *m_crossTree = nullptr;
     QLabel *m_projectInfo = nullptr;
     QLabel *m_symbolsLabel = nullptr;
     QToolBar *m_toolBar = nullptr;

@@ -21,7 +21,6 @@
 #include <QMessageBox>
 #include <QMimeData>
 #include <QStatusBar>
-#include <QTreeWidget>
 #include <QVBoxLayout>
 
 // Clipboard, find and replace, cross reference: the tools that work on the whole program
@@ -194,7 +193,6 @@ void MainWindow::buildCrossReference() {
     dock->setObjectName(QStringLiteral("crossReferenceDock"));
     m_crossReference = new editor::CrossReferenceView(m_document);
     m_crossDevice = m_crossReference->filter();
-    m_crossTree = m_crossReference->tree();
     dock->setWidget(m_crossReference);
     addDockWidget(Qt::LeftDockWidgetArea, dock); // a tab beside the project (dock_layout.h)
     connect(dock, &QDockWidget::visibilityChanged, m_crossReference,

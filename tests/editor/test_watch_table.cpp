@@ -17,6 +17,7 @@
 #include <QSignalSpy>
 #include <QTemporaryDir>
 #include <QTest>
+#include <QTreeView>
 #include <QTreeWidget>
 #include <QUndoStack>
 
@@ -229,13 +230,15 @@ TEST_F(WatchDrag, ADeviceDraggedOutOfTheLadderLandsInTheWatchTable) {
 
 TEST_F(WatchDrag, TheCrossReferenceDragsTheDeviceOfARowOrAUse) {
     load("LD X0\nOUT Y0\nLD X0\nOUT Y1\nEND\n");
-    QTreeWidget *tree = window.crossReference();
+    QTreeView *tree = window.crossReference()->tree();
     window.crossReferenceDevice()->setText(QStringLiteral("X0"));
-    ASSERT_GE(tree->topLevelItemCount(), 1);
-    QTreeWidgetItem *device = tree->topLevelItem(0);
-    ASSERT_GE(device->childCount(), 1);
+    ASSERT_GE(tree->model()->rowCount(), 1);
+    const QModelIndex device = tree->model()->index(0, 0);
+    ASSERT_GE(tree->model()->rowCount(device), 2);
     tree->clearSelection();
-    device->child(1)->setSelected(true); // a use: the device it is a use of
+    // a use: the device it is a use of
+    tree->selectionModel()->select(tree->model()->index(1, 0, device),
+                                   QItemSelectionModel::Select | QItemSelectionModel::Rows);
     std::unique_ptr<QMimeData> data(
         tree->model()->mimeData(tree->selectionModel()->selectedIndexes()));
     ASSERT_NE(data, nullptr);
