@@ -49,6 +49,8 @@ void MainWindow::buildMonitorDocks() {
     tests->setHistory([this] {
         return m_simulation->session() ? m_simulation->session()->scanHistory() : nullptr;
     });
+    tests->setOnlineSource(
+        [this]() -> model::MonitorSource * { return m_online ? m_online->session() : nullptr; });
     connect(tests, &TestsPanel::message, this,
             [this](const QString &t) { statusBar()->showMessage(t, 10000); });
     dock("testsDock", tests, Qt::BottomDockWidgetArea);
