@@ -5138,6 +5138,163 @@ Valutazione: %4 µs (%5..%6)</translation>
     </message>
 </context>
 <context>
+    <name>rung::editor::WatchListModel</name>
+    <message>
+        <location filename="../editor/watch_list_model.cpp" line="+116"/>
+        <location line="+10"/>
+        <location line="+52"/>
+        <location line="+7"/>
+        <location line="+170"/>
+        <source>ON</source>
+        <translation>ON</translation>
+    </message>
+    <message>
+        <location line="-239"/>
+        <location line="+10"/>
+        <location line="+52"/>
+        <location line="+7"/>
+        <location line="+173"/>
+        <source>OFF</source>
+        <translation>OFF</translation>
+    </message>
+    <message>
+        <location line="-236"/>
+        <source>%1 of %2, %3</source>
+        <translation>%1 di %2, %3</translation>
+    </message>
+    <message>
+        <location line="+7"/>
+        <source>%1 (forced)</source>
+        <translation>%1 (forzato)</translation>
+    </message>
+    <message>
+        <location line="+14"/>
+        <source>Watch list %1</source>
+        <translation>Lista di osservazione %1</translation>
+    </message>
+    <message>
+        <location line="+22"/>
+        <source>not a device</source>
+        <translation>non è un operando</translation>
+    </message>
+    <message>
+        <location line="+24"/>
+        <source>Not forced</source>
+        <translation>Non forzato</translation>
+    </message>
+    <message>
+        <location line="+0"/>
+        <source>Forced %1</source>
+        <translation>Forzato %1</translation>
+    </message>
+    <message>
+        <location line="+0"/>
+        <location line="+32"/>
+        <source>Forced</source>
+        <translation>Forzato</translation>
+    </message>
+    <message>
+        <location line="-8"/>
+        <source>Device</source>
+        <translation>Operando</translation>
+    </message>
+    <message>
+        <location line="+2"/>
+        <source>Symbol</source>
+        <translation>Simbolo</translation>
+    </message>
+    <message>
+        <location line="+2"/>
+        <source>Value</source>
+        <translation>Valore</translation>
+    </message>
+    <message>
+        <location line="+2"/>
+        <source>Format</source>
+        <translation>Formato</translation>
+    </message>
+    <message>
+        <location line="+8"/>
+        <source>Double-click or F2: write a value; a bit flips</source>
+        <translation>Doppio clic o F2: scrive un valore; un bit si inverte</translation>
+    </message>
+    <message>
+        <location line="+2"/>
+        <source>Double-click: show the word in decimal, signed, hexadecimal, binary or BCD</source>
+        <translation>Doppio clic: mostra la word in decimale, con segno, esadecimale, binario o BCD</translation>
+    </message>
+    <message>
+        <location line="+3"/>
+        <source>Double-click: force a bit ON or OFF, or release it</source>
+        <translation>Doppio clic: forza un bit ON o OFF, o lo rilascia</translation>
+    </message>
+    <message>
+        <location line="+82"/>
+        <source>%1 is a timer or counter: its current value follows the program and cannot be written here</source>
+        <translation>%1 è un temporizzatore o un contatore: il suo valore corrente segue il programma e qui non si può scrivere</translation>
+    </message>
+    <message>
+        <location line="+47"/>
+        <source>&quot;%1&quot; is no value for %2: type ON or OFF (1 or 0)</source>
+        <translation>&quot;%1&quot; non è un valore per %2: scrivere ON o OFF (1 o 0)</translation>
+    </message>
+    <message>
+        <location line="+17"/>
+        <source>type a whole number (0x before a hexadecimal one)</source>
+        <translation>digitare un numero intero (0x prima di uno esadecimale)</translation>
+    </message>
+    <message>
+        <location line="+3"/>
+        <source>type up to %1 hexadecimal digits</source>
+        <translation>digitare al massimo %1 cifre esadecimali</translation>
+    </message>
+    <message>
+        <location line="+3"/>
+        <source>type up to %1 binary digits (0 and 1)</source>
+        <translation>digitare al massimo %1 cifre binarie (0 e 1)</translation>
+    </message>
+    <message>
+        <location line="+3"/>
+        <source>type up to %1 decimal digits (BCD)</source>
+        <translation>digitare al massimo %1 cifre decimali (BCD)</translation>
+    </message>
+    <message>
+        <location line="+6"/>
+        <source>a %1-bit word holds %2..%3</source>
+        <translation>una word a %1 bit contiene %2..%3</translation>
+    </message>
+    <message>
+        <location line="+4"/>
+        <source>&quot;%1&quot; is no value for %2: %3</source>
+        <translation>&quot;%1&quot; non è un valore per %2: %3</translation>
+    </message>
+    <message>
+        <location filename="../editor/watch_list_model_rows.cpp" line="+218"/>
+        <source>Not added to the watch list: %1</source>
+        <translation>Non aggiunto alla lista di osservazione: %1</translation>
+    </message>
+    <message>
+        <location line="+8"/>
+        <source>Watch 1</source>
+        <translation>Osservazione 1</translation>
+    </message>
+    <message>
+        <location line="+13"/>
+        <source>Add %1 to the watch list</source>
+        <translation>Aggiungi %1 alla lista di osservazione</translation>
+    </message>
+    <message>
+        <location line="+24"/>
+        <source>Remove %1 from the watch list</source>
+        <translation>Rimuovi %1 dalla lista di osservazione</translation>
+    </message>
+    <message>
+        <location line="+12"/>
+        <source>Show %1 as %2</source>
+        <translation>Mostra %1 come %2</translation>
+    </message>
+</context>
+<context>
     <name>rung::editor::WatchListView</name>
     <message>
         <location filename="../editor/watch_list_view.cpp" line="+104"/>
