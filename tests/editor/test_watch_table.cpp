@@ -59,11 +59,7 @@ struct WatchTable : ::testing::Test {
         return std::get<model::Address>(model::parseAddress(target, QString::fromLatin1(device)));
     }
     void publish(const std::function<void(model::Snapshot &)> &fill) {
-        auto snapshot = source.blank(target);
-        fill(*snapshot);
-        QSignalSpy changed(&source, &model::MonitorSource::snapshotChanged);
-        source.publish(snapshot);
-        ASSERT_TRUE(changed.wait(5000));
+        ASSERT_TRUE(source.publishFilled(target, fill));
     }
     void setWord(model::Snapshot &s, const char *device, std::int32_t value) {
         s.words[static_cast<std::size_t>(s.layout->word(at(device)))] = value;
