@@ -5187,127 +5187,133 @@ Kiértékelés: %4 µs (%5..%6)</translation>
     </message>
 </context>
 <context>
-    <name>rung::editor::WatchListView</name>
+    <name>rung::editor::WatchListModel</name>
     <message>
-        <location filename="../editor/watch_list_view.cpp" line="+104"/>
-        <source>Watch lists</source>
-        <translation>Figyelőlisták</translation>
-    </message>
-    <message>
-        <location line="-5"/>
-        <source>Value</source>
-        <translation>Érték</translation>
-    </message>
-    <message>
-        <location line="+81"/>
-        <source>not a device</source>
-        <translation>nem operandus</translation>
-    </message>
-    <message>
-        <location line="+21"/>
-        <location line="+9"/>
-        <location line="+6"/>
-        <location line="+50"/>
+        <location filename="../editor/watch_list_model.cpp" line="+116"/>
+        <location line="+10"/>
+        <location line="+52"/>
+        <location line="+7"/>
+        <location line="+170"/>
         <source>ON</source>
         <translation>BE</translation>
     </message>
     <message>
-        <location line="-37"/>
-        <source>%1 is a timer or counter: its current value follows the program and cannot be written here</source>
-        <translation>%1 időzítő vagy számláló: aktuális értékét a program határozza meg, itt nem írható</translation>
-    </message>
-    <message>
-        <location line="-28"/>
-        <location line="+9"/>
-        <location line="+6"/>
-        <location line="+53"/>
+        <location line="-239"/>
+        <location line="+10"/>
+        <location line="+52"/>
+        <location line="+7"/>
+        <location line="+173"/>
         <source>OFF</source>
         <translation>KI</translation>
     </message>
     <message>
-        <location line="+3"/>
-        <source>&quot;%1&quot; is no value for %2: type ON or OFF (1 or 0)</source>
-        <translation>„%1” nem érték ehhez: %2; írjon BE vagy KI értéket (1 vagy 0)</translation>
-    </message>
-    <message>
-        <location line="+60"/>
-        <location line="+33"/>
-        <source>Set ON</source>
-        <translation>BE-kapcsolás</translation>
-    </message>
-    <message>
-        <location line="-33"/>
-        <location line="+37"/>
-        <source>Set OFF</source>
-        <translation>KI-kapcsolás</translation>
-    </message>
-    <message>
-        <location line="+4"/>
-        <source>Force ON</source>
-        <translation>Kényszerítés BE</translation>
-    </message>
-    <message>
-        <location line="+4"/>
-        <source>Force OFF</source>
-        <translation>Kényszerítés KI</translation>
-    </message>
-    <message>
-        <location line="+4"/>
-        <source>Release</source>
-        <translation>Kényszerítés feloldása</translation>
-    </message>
-    <message>
-        <location line="+13"/>
-        <source>Write Value...</source>
-        <translation>Érték írása...</translation>
-    </message>
-    <message>
-        <location line="-187"/>
+        <location line="-236"/>
         <source>%1 of %2, %3</source>
         <translation>%1 / %2, %3</translation>
     </message>
     <message>
-        <location line="-108"/>
-        <source>Device</source>
-        <translation>Operandus</translation>
-    </message>
-    <message>
-        <location line="+0"/>
-        <source>Symbol</source>
-        <translation>Szimbólum</translation>
-    </message>
-    <message>
-        <location line="+0"/>
-        <source>Format</source>
-        <translation>Formátum</translation>
-    </message>
-    <message>
-        <location line="+0"/>
-        <source>Forced</source>
-        <translation>Kényszerítve</translation>
-    </message>
-    <message>
-        <location line="+1"/>
-        <source>Double-click or F2: write a value; a bit flips</source>
-        <translation>Dupla kattintás vagy F2: érték írása; egy bit átvált</translation>
-    </message>
-    <message>
-        <location line="+1"/>
-        <source>Double-click: show the word in decimal, signed, hexadecimal, binary or BCD</source>
-        <translation>Dupla kattintás: a szó decimális, előjeles, hexadecimális, bináris vagy BCD alakban</translation>
-    </message>
-    <message>
-        <location line="+2"/>
-        <source>Double-click: force a bit ON or OFF, or release it</source>
-        <translation>Dupla kattintás: egy bit kényszerítése BE vagy KI, vagy feloldása</translation>
-    </message>
-    <message>
-        <location line="+111"/>
+        <location line="+7"/>
         <source>%1 (forced)</source>
         <translation>%1 (kényszerített)</translation>
     </message>
     <message>
-        <location line="+75"/>
+        <location line="+14"/>
+        <source>Watch list %1</source>
+        <translation>Figyelőlista: %1</translation>
+    </message>
+    <message>
+        <location line="+22"/>
+        <source>not a device</source>
+        <translation>nem operandus</translation>
+    </message>
+    <message>
+        <location line="+24"/>
+        <source>Not forced</source>
+        <translation>Nincs kényszerítve</translation>
+    </message>
+    <message>
+        <location line="+0"/>
+        <source>Forced %1</source>
+        <translation>Kényszerítve: %1</translation>
+    </message>
+    <message>
+        <location line="+0"/>
+        <location line="+32"/>
+        <source>Forced</source>
+        <translation>Kényszerítve</translation>
+    </message>
+    <message>
+        <location line="-8"/>
+        <source>Device</source>
+        <translation>Operandus</translation>
+    </message>
+    <message>
+        <location line="+2"/>
+        <source>Symbol</source>
+        <translation>Szimbólum</translation>
+    </message>
+    <message>
+        <location line="+2"/>
+        <source>Value</source>
+        <translation>Érték</translation>
+    </message>
+    <message>
+        <location line="+2"/>
+        <source>Format</source>
+        <translation>Formátum</translation>
+    </message>
+    <message>
+        <location line="+8"/>
+        <source>Double-click or F2: write a value; a bit flips</source>
+        <translation>Dupla kattintás vagy F2: érték írása; egy bit átvált</translation>
+    </message>
+    <message>
+        <location line="+2"/>
+        <source>Double-click: show the word in decimal, signed, hexadecimal, binary or BCD</source>
+        <translation>Dupla kattintás: a szó decimális, előjeles, hexadecimális, bináris vagy BCD alakban</translation>
+    </message>
+    <message>
+        <location line="+3"/>
+        <source>Double-click: force a bit ON or OFF, or release it</source>
+        <translation>Dupla kattintás: egy bit kényszerítése BE vagy KI, vagy feloldása</translation>
+    </message>
+    <message>
+        <location filename="../editor/watch_list_model_rows.cpp" line="+218"/>
+        <source>Not added to the watch list: %1</source>
+        <translation>Nem került a figyelőlistára: %1</translation>
+    </message>
+    <message>
+        <location line="+8"/>
+        <source>Watch 1</source>
+        <translation>Figyelés 1</translation>
+    </message>
+    <message>
+        <location line="+13"/>
+        <source>Add %1 to the watch list</source>
+        <translation>%1 hozzáadása a figyelőlistához</translation>
+    </message>
+    <message>
+        <location line="+24"/>
+        <source>Remove %1 from the watch list</source>
+        <translation>%1 eltávolítása a figyelőlistáról</translation>
+    </message>
+    <message>
+        <location line="+12"/>
+        <source>Show %1 as %2</source>
+        <translation>%1 megjelenítése: %2</translation>
+    </message>
+    <message>
+        <location filename="../editor/watch_list_model.cpp" line="+82"/>
+        <source>%1 is a timer or counter: its current value follows the program and cannot be written here</source>
+        <translation>%1 időzítő vagy számláló: aktuális értékét a program határozza meg, itt nem írható</translation>
+    </message>
+    <message>
+        <location line="+47"/>
+        <source>&quot;%1&quot; is no value for %2: type ON or OFF (1 or 0)</source>
+        <translation>„%1” nem érték ehhez: %2; írjon BE vagy KI értéket (1 vagy 0)</translation>
+    </message>
+    <message>
+        <location line="+17"/>
         <source>type a whole number (0x before a hexadecimal one)</source>
         <translation>írjon be egy egész számot (hexadecimális előtt 0x)</translation>
     </message>
@@ -5336,40 +5342,56 @@ Kiértékelés: %4 µs (%5..%6)</translation>
         <source>&quot;%1&quot; is no value for %2: %3</source>
         <translation>„%1” nem érték ehhez: %2: %3</translation>
     </message>
+</context>
+<context>
+    <name>rung::editor::WatchListView</name>
     <message>
+        <location filename="../editor/watch_list_view.cpp" line="+57"/>
         <location line="+41"/>
-        <source>Show %1 as %2</source>
-        <translation>%1 megjelenítése: %2</translation>
+        <source>Watch lists</source>
+        <translation>Figyelőlisták</translation>
     </message>
     <message>
-        <location line="+57"/>
+        <location line="+71"/>
+        <location line="+20"/>
+        <source>Set ON</source>
+        <translation>BE-kapcsolás</translation>
+    </message>
+    <message>
+        <location line="-20"/>
+        <location line="+24"/>
+        <source>Set OFF</source>
+        <translation>KI-kapcsolás</translation>
+    </message>
+    <message>
+        <location line="+4"/>
+        <source>Force ON</source>
+        <translation>Kényszerítés BE</translation>
+    </message>
+    <message>
+        <location line="+4"/>
+        <source>Force OFF</source>
+        <translation>Kényszerítés KI</translation>
+    </message>
+    <message>
+        <location line="+4"/>
+        <source>Release</source>
+        <translation>Kényszerítés feloldása</translation>
+    </message>
+    <message>
+        <location line="+12"/>
+        <source>Write Value...</source>
+        <translation>Érték írása...</translation>
+    </message>
+    <message>
+        <location line="+11"/>
         <source>Show As</source>
         <translation>Megjelenítés</translation>
     </message>
     <message>
-        <location line="+10"/>
+        <location line="+3"/>
         <source>Remove</source>
         <translation>Eltávolítás</translation>
-    </message>
-    <message>
-        <location line="+77"/>
-        <source>Not added to the watch list: %1</source>
-        <translation>Nem került a figyelőlistára: %1</translation>
-    </message>
-    <message>
-        <location line="+9"/>
-        <source>Watch 1</source>
-        <translation>Figyelés 1</translation>
-    </message>
-    <message>
-        <location line="+13"/>
-        <source>Add %1 to the watch list</source>
-        <translation>%1 hozzáadása a figyelőlistához</translation>
-    </message>
-    <message>
-        <location line="+36"/>
-        <source>Remove %1 from the watch list</source>
-        <translation>%1 eltávolítása a figyelőlistáról</translation>
     </message>
 </context>
 <context>

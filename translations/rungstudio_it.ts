@@ -5201,127 +5201,133 @@ Valutazione: %4 µs (%5..%6)</translation>
     </message>
 </context>
 <context>
-    <name>rung::editor::WatchListView</name>
+    <name>rung::editor::WatchListModel</name>
     <message>
-        <location filename="../editor/watch_list_view.cpp" line="+104"/>
-        <source>Watch lists</source>
-        <translation>Liste di osservazione</translation>
-    </message>
-    <message>
-        <location line="-5"/>
-        <source>Value</source>
-        <translation>Valore</translation>
-    </message>
-    <message>
-        <location line="+81"/>
-        <source>not a device</source>
-        <translation>non è un operando</translation>
-    </message>
-    <message>
-        <location line="+21"/>
-        <location line="+9"/>
-        <location line="+6"/>
-        <location line="+50"/>
+        <location filename="../editor/watch_list_model.cpp" line="+116"/>
+        <location line="+10"/>
+        <location line="+52"/>
+        <location line="+7"/>
+        <location line="+170"/>
         <source>ON</source>
         <translation>ON</translation>
     </message>
     <message>
-        <location line="-37"/>
-        <source>%1 is a timer or counter: its current value follows the program and cannot be written here</source>
-        <translation>%1 è un temporizzatore o un contatore: il suo valore corrente segue il programma e qui non si può scrivere</translation>
-    </message>
-    <message>
-        <location line="-28"/>
-        <location line="+9"/>
-        <location line="+6"/>
-        <location line="+53"/>
+        <location line="-239"/>
+        <location line="+10"/>
+        <location line="+52"/>
+        <location line="+7"/>
+        <location line="+173"/>
         <source>OFF</source>
         <translation>OFF</translation>
     </message>
     <message>
-        <location line="+3"/>
-        <source>&quot;%1&quot; is no value for %2: type ON or OFF (1 or 0)</source>
-        <translation>&quot;%1&quot; non è un valore per %2: scrivere ON o OFF (1 o 0)</translation>
-    </message>
-    <message>
-        <location line="+60"/>
-        <location line="+33"/>
-        <source>Set ON</source>
-        <translation>Imposta ON</translation>
-    </message>
-    <message>
-        <location line="-33"/>
-        <location line="+37"/>
-        <source>Set OFF</source>
-        <translation>Imposta OFF</translation>
-    </message>
-    <message>
-        <location line="+4"/>
-        <source>Force ON</source>
-        <translation>Forza ON</translation>
-    </message>
-    <message>
-        <location line="+4"/>
-        <source>Force OFF</source>
-        <translation>Forza OFF</translation>
-    </message>
-    <message>
-        <location line="+4"/>
-        <source>Release</source>
-        <translation>Rilascia</translation>
-    </message>
-    <message>
-        <location line="+13"/>
-        <source>Write Value...</source>
-        <translation>Scrivi valore...</translation>
-    </message>
-    <message>
-        <location line="-187"/>
+        <location line="-236"/>
         <source>%1 of %2, %3</source>
         <translation>%1 di %2, %3</translation>
     </message>
     <message>
-        <location line="-108"/>
-        <source>Device</source>
-        <translation>Operando</translation>
-    </message>
-    <message>
-        <location line="+0"/>
-        <source>Symbol</source>
-        <translation>Simbolo</translation>
-    </message>
-    <message>
-        <location line="+0"/>
-        <source>Format</source>
-        <translation>Formato</translation>
-    </message>
-    <message>
-        <location line="+0"/>
-        <source>Forced</source>
-        <translation>Forzato</translation>
-    </message>
-    <message>
-        <location line="+1"/>
-        <source>Double-click or F2: write a value; a bit flips</source>
-        <translation>Doppio clic o F2: scrive un valore; un bit si inverte</translation>
-    </message>
-    <message>
-        <location line="+1"/>
-        <source>Double-click: show the word in decimal, signed, hexadecimal, binary or BCD</source>
-        <translation>Doppio clic: mostra la word in decimale, con segno, esadecimale, binario o BCD</translation>
-    </message>
-    <message>
-        <location line="+2"/>
-        <source>Double-click: force a bit ON or OFF, or release it</source>
-        <translation>Doppio clic: forza un bit ON o OFF, o lo rilascia</translation>
-    </message>
-    <message>
-        <location line="+111"/>
+        <location line="+7"/>
         <source>%1 (forced)</source>
         <translation>%1 (forzato)</translation>
     </message>
     <message>
-        <location line="+75"/>
+        <location line="+14"/>
+        <source>Watch list %1</source>
+        <translation>Lista di osservazione %1</translation>
+    </message>
+    <message>
+        <location line="+22"/>
+        <source>not a device</source>
+        <translation>non è un operando</translation>
+    </message>
+    <message>
+        <location line="+24"/>
+        <source>Not forced</source>
+        <translation>Non forzato</translation>
+    </message>
+    <message>
+        <location line="+0"/>
+        <source>Forced %1</source>
+        <translation>Forzato %1</translation>
+    </message>
+    <message>
+        <location line="+0"/>
+        <location line="+32"/>
+        <source>Forced</source>
+        <translation>Forzato</translation>
+    </message>
+    <message>
+        <location line="-8"/>
+        <source>Device</source>
+        <translation>Operando</translation>
+    </message>
+    <message>
+        <location line="+2"/>
+        <source>Symbol</source>
+        <translation>Simbolo</translation>
+    </message>
+    <message>
+        <location line="+2"/>
+        <source>Value</source>
+        <translation>Valore</translation>
+    </message>
+    <message>
+        <location line="+2"/>
+        <source>Format</source>
+        <translation>Formato</translation>
+    </message>
+    <message>
+        <location line="+8"/>
+        <source>Double-click or F2: write a value; a bit flips</source>
+        <translation>Doppio clic o F2: scrive un valore; un bit si inverte</translation>
+    </message>
+    <message>
+        <location line="+2"/>
+        <source>Double-click: show the word in decimal, signed, hexadecimal, binary or BCD</source>
+        <translation>Doppio clic: mostra la word in decimale, con segno, esadecimale, binario o BCD</translation>
+    </message>
+    <message>
+        <location line="+3"/>
+        <source>Double-click: force a bit ON or OFF, or release it</source>
+        <translation>Doppio clic: forza un bit ON o OFF, o lo rilascia</translation>
+    </message>
+    <message>
+        <location filename="../editor/watch_list_model_rows.cpp" line="+218"/>
+        <source>Not added to the watch list: %1</source>
+        <translation>Non aggiunto alla lista di osservazione: %1</translation>
+    </message>
+    <message>
+        <location line="+8"/>
+        <source>Watch 1</source>
+        <translation>Osservazione 1</translation>
+    </message>
+    <message>
+        <location line="+13"/>
+        <source>Add %1 to the watch list</source>
+        <translation>Aggiungi %1 alla lista di osservazione</translation>
+    </message>
+    <message>
+        <location line="+24"/>
+        <source>Remove %1 from the watch list</source>
+        <translation>Rimuovi %1 dalla lista di osservazione</translation>
+    </message>
+    <message>
+        <location line="+12"/>
+        <source>Show %1 as %2</source>
+        <translation>Mostra %1 come %2</translation>
+    </message>
+    <message>
+        <location filename="../editor/watch_list_model.cpp" line="+82"/>
+        <source>%1 is a timer or counter: its current value follows the program and cannot be written here</source>
+        <translation>%1 è un temporizzatore o un contatore: il suo valore corrente segue il programma e qui non si può scrivere</translation>
+    </message>
+    <message>
+        <location line="+47"/>
+        <source>&quot;%1&quot; is no value for %2: type ON or OFF (1 or 0)</source>
+        <translation>&quot;%1&quot; non è un valore per %2: scrivere ON o OFF (1 o 0)</translation>
+    </message>
+    <message>
+        <location line="+17"/>
         <source>type a whole number (0x before a hexadecimal one)</source>
         <translation>digitare un numero intero (0x prima di uno esadecimale)</translation>
     </message>
@@ -5350,40 +5356,56 @@ Valutazione: %4 µs (%5..%6)</translation>
         <source>&quot;%1&quot; is no value for %2: %3</source>
         <translation>&quot;%1&quot; non è un valore per %2: %3</translation>
     </message>
+</context>
+<context>
+    <name>rung::editor::WatchListView</name>
     <message>
+        <location filename="../editor/watch_list_view.cpp" line="+57"/>
         <location line="+41"/>
-        <source>Show %1 as %2</source>
-        <translation>Mostra %1 come %2</translation>
+        <source>Watch lists</source>
+        <translation>Liste di osservazione</translation>
     </message>
     <message>
-        <location line="+57"/>
+        <location line="+71"/>
+        <location line="+20"/>
+        <source>Set ON</source>
+        <translation>Imposta ON</translation>
+    </message>
+    <message>
+        <location line="-20"/>
+        <location line="+24"/>
+        <source>Set OFF</source>
+        <translation>Imposta OFF</translation>
+    </message>
+    <message>
+        <location line="+4"/>
+        <source>Force ON</source>
+        <translation>Forza ON</translation>
+    </message>
+    <message>
+        <location line="+4"/>
+        <source>Force OFF</source>
+        <translation>Forza OFF</translation>
+    </message>
+    <message>
+        <location line="+4"/>
+        <source>Release</source>
+        <translation>Rilascia</translation>
+    </message>
+    <message>
+        <location line="+12"/>
+        <source>Write Value...</source>
+        <translation>Scrivi valore...</translation>
+    </message>
+    <message>
+        <location line="+11"/>
         <source>Show As</source>
         <translation>Mostra come</translation>
     </message>
     <message>
-        <location line="+10"/>
+        <location line="+3"/>
         <source>Remove</source>
         <translation>Rimuovi</translation>
-    </message>
-    <message>
-        <location line="+77"/>
-        <source>Not added to the watch list: %1</source>
-        <translation>Non aggiunto alla lista di osservazione: %1</translation>
-    </message>
-    <message>
-        <location line="+9"/>
-        <source>Watch 1</source>
-        <translation>Osservazione 1</translation>
-    </message>
-    <message>
-        <location line="+13"/>
-        <source>Add %1 to the watch list</source>
-        <translation>Aggiungi %1 alla lista di osservazione</translation>
-    </message>
-    <message>
-        <location line="+36"/>
-        <source>Remove %1 from the watch list</source>
-        <translation>Rimuovi %1 dalla lista di osservazione</translation>
     </message>
 </context>
 <context>
