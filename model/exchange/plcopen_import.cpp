@@ -24,8 +24,12 @@ QString describe(const Element &e) {
     if (!e.typeName.isEmpty())
         return QStringLiteral("block %1").arg(e.typeName);
     if (!e.variable.isEmpty() &&
-        (e.kind == QLatin1String("contact") || e.kind == QLatin1String("coil")))
+        (e.kind == QLatin1String("contact") || e.kind == QLatin1String("coil") ||
+         e.kind == QLatin1String("inVariable") || e.kind == QLatin1String("outVariable")))
         return QStringLiteral("%1 %2").arg(e.kind, e.variable);
+    if (!e.name.isEmpty() &&
+        (e.kind == QLatin1String("connector") || e.kind == QLatin1String("continuation")))
+        return QStringLiteral("%1 %2").arg(e.kind, e.name);
     return e.kind;
 }
 
@@ -33,7 +37,18 @@ bool isTimerType(const QString &t) {
     return t == QLatin1String("TON") || t == QLatin1String("TOF") || t == QLatin1String("TP");
 }
 bool isCounterType(const QString &t) {
-    return t == QLatin1String("CTU") || t == QLatin1String("CTD") || t == QLatin1String("CTUD");
+    return !counterKind(t).isEmpty();
+}
+
+std::optional<bool> boolLiteral(const QString &text) {
+    const QString t = text.trimmed();
+    if (t.compare(QLatin1String("TRUE"), Qt::CaseInsensitive) == 0 ||
+        t.compare(QLatin1String("BOOL#TRUE"), Qt::CaseInsensitive) == 0 || t == QLatin1String("1"))
+        return true;
+    if (t.compare(QLatin1String("FALSE"), Qt::CaseInsensitive) == 0 ||
+        t.compare(QLatin1String("BOOL#FALSE"), Qt::CaseInsensitive) == 0 || t == QLatin1String("0"))
+        return false;
+    return std::nullopt;
 }
 
 std::optional<CompareOp> compareOf(const QString &t) {
@@ -160,6 +175,8 @@ PlcopenImport Importer::run(const QByteArray &bytes) {
               PlcopenTr::tr("the program has no ladder (LD) body"));
         return finish();
     }
+    if (const XmlNode *listing = ourData(*program, "instructionList"))
+        m_listing = listing->text;
     readElements(*ld);
     buildProgram();
     if (const XmlNode *data = root->child("addData"))
@@ -341,6 +358,17 @@ std::optional<Operand> Importer::operandOf(const QString &expression, int line, 
     }
     if (timeAllowed && timeLiteral(expression))
         return std::nullopt;
+    // A counter's present value: CTU0.CV.
+    if (expression.trimmed().endsWith(QLatin1String(".CV"), Qt::CaseInsensitive)) {
+        if (m_t.constants.bcdSetValues) {
+            issue(line, expression,
+                  PlcopenTr::tr("%1 is not imported: %2 keeps a counter's present value as BCD "
+                                "digits")
+                      .arg(expression.trimmed(), m_t.displayName));
+            return std::nullopt;
+        }
+        return counterValue(expression.trimmed().chopped(3), line);
+    }
     const auto device = resolve(expression, line);
     if (!device)
         return std::nullopt;
@@ -393,7 +421,11 @@ void Importer::readElements(const XmlNode &ld) {
             for (const XmlNode *v : vars->all("variable")) {
                 Pin p;
                 p.formal = v->attribute("formalParameter");
-                p.negated = v->attribute("negated") == QLatin1String("true");
+                p.negated = v->attribute("negated") == QLatin1String("true") ||
+                            v->attribute("negated") == QLatin1String("1");
+                p.edge = v->attribute("edge");
+                if (p.edge == QLatin1String("none"))
+                    p.edge.clear();
                 if (const XmlNode *in = v->child("connectionPointIn")) {
                     p.connections = connectionsOf(*in);
                     if (const XmlNode *x = in->child("expression"))

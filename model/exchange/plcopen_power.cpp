@@ -20,11 +20,37 @@ Factor Importer::leaf(const Element &e, const Contact &c) const {
 }
 
 std::optional<Contact> Importer::contactOfVariable(const QString &variable, int line) {
-    QString name = variable;
+    QString name = variable.trimmed();
     Contact c;
-    // A timer's or counter's output Q (an IEC instance): its done bit.
-    if (name.endsWith(QLatin1String(".Q"), Qt::CaseInsensitive))
-        name.chop(2);
+    // A timer's or counter's output Q (QU, QD: a CTUD's) as a contact: its done bit.
+    const qsizetype dot = name.lastIndexOf(QLatin1Char('.'));
+    const auto instance = [this](const QString &n) {
+        if (const auto v = m_vars.constFind(n);
+            v != m_vars.constEnd() && (isTimerType(v->type) || isCounterType(v->type)))
+            return true;
+        return std::any_of(m_elements.begin(), m_elements.end(),
+                           [&n](const Element &b) { return b.instanceName == n; });
+    };
+    if (dot > 0 && instance(name.left(dot))) {
+        const QString member = name.mid(dot + 1).toUpper();
+        name.truncate(dot);
+        if (member != QLatin1String("Q") && member != QLatin1String("QU") &&
+            member != QLatin1String("QD")) {
+            issue(line, variable,
+                  PlcopenTr::tr("%1 as a contact is not imported: only a timer's or counter's "
+                                "bit (Q) is")
+                      .arg(variable));
+            return std::nullopt;
+        }
+        if (const ImportedCounter *counter = importedCounter(name);
+            counter && member != QLatin1String("Q") && member != counter->choice.form.done) {
+            issue(line, variable,
+                  PlcopenTr::tr("%1 is not imported: the bit of %2 %3 is %4")
+                      .arg(variable, counter->choice.spec->mnemonic,
+                           formatAddress(m_t, counter->device), counter->choice.form.done));
+            return std::nullopt;
+        }
+    }
     const auto a = resolve(name, line, QStringLiteral("BOOL"));
     if (!a)
         return std::nullopt;
@@ -38,6 +64,21 @@ std::optional<Chain> Importer::chainIn(const Pin *p, const Element &owner) {
     if (!p || p->connections.empty()) {
         issue(owner.line, describe(owner),
               PlcopenTr::tr("its input is connected to nothing: not imported"));
+        return std::nullopt;
+    }
+    if (p->negated) {
+        issue(owner.line, describe(owner),
+              PlcopenTr::tr("its input %1 is negated: not imported").arg(p->formal));
+        return std::nullopt;
+    }
+    // A counter counts rising edges of CU and CD anyway; any other input on an edge is an edge
+    // detection the box does not have.
+    const bool countInput = isCounterType(owner.typeName) &&
+                            (p->formal.compare(QLatin1String("CU"), Qt::CaseInsensitive) == 0 ||
+                             p->formal.compare(QLatin1String("CD"), Qt::CaseInsensitive) == 0);
+    if (!p->edge.isEmpty() && !(countInput && p->edge == QLatin1String("rising"))) {
+        issue(owner.line, describe(owner),
+              PlcopenTr::tr("its input %1 on a %2 edge is not imported").arg(p->formal, p->edge));
         return std::nullopt;
     }
     std::vector<Chain> chains;
@@ -132,7 +173,8 @@ std::optional<Chain> Importer::chainOf(int id, const QString &formal, const Elem
     }
     auto chain = computeChain(*e, formal);
     m_visiting.erase(key);
-    if (chain)
+    // A timer or counter whose Q is read is imported when its own output is, not here.
+    if (chain && !consumesPower(*e))
         m_used.insert(e->id);
     m_chains[key] = chain;
     return chain;
@@ -270,9 +312,14 @@ std::optional<Chain> Importer::blockChain(const Element &e, const QString &forma
         return chain;
     }
     if ((isTimerType(e.typeName) || isCounterType(e.typeName)) &&
-        (out.isEmpty() || out == QLatin1String("Q") || out == QLatin1String("QU"))) {
-        // Q: the element's done bit, a contact of its device.
-        auto c = contactOfVariable(e.instanceName, e.line);
+        (out.isEmpty() || out == QLatin1String("Q") || out == QLatin1String("QU") ||
+         out == QLatin1String("QD"))) {
+        // Q: the element's done bit, a contact of its device; none when the block is not
+        // imported (what reads it is listed with it).
+        if (m_failedBlocks.contains(e.id))
+            return std::nullopt;
+        auto c =
+            contactOfVariable(out.isEmpty() ? e.instanceName : e.instanceName + '.' + out, e.line);
         if (!c)
             return std::nullopt;
         return Chain{{QStringLiteral("q%1").arg(e.id), Expr::leafOf(*c)}};
@@ -286,7 +333,9 @@ std::optional<Chain> Importer::blockChain(const Element &e, const QString &forma
 // An output straight from the rail: the target's always-ON contact (W353's 253.13, Vigor's
 // M8000...) stands in for the rail, as the PLC needs a condition.
 Chain Importer::railChain() {
-    const Address on = systemAddress(m_t, SystemRole::AlwaysOn);
+    Address on = systemAddress(m_t, SystemRole::AlwaysOn);
+    if (!on.valid())
+        on = systemAddress(m_t, SystemRole::Run); // PL110 SM0.0: ON while the program runs
     if (!on.valid())
         return {};
     Contact c;
@@ -294,6 +343,74 @@ Chain Importer::railChain() {
     o.address = on;
     c.operands.push_back(o);
     return {{QStringLiteral("always"), Expr::leafOf(c)}};
+}
+
+std::optional<Chain> Importer::neverChain(const Element &owner) {
+    // The always-ON bit negated (railChain's).
+    Address on = systemAddress(m_t, SystemRole::AlwaysOn);
+    if (!on.valid())
+        on = systemAddress(m_t, SystemRole::Run);
+    if (!on.valid() || !m_t.findInstruction(Op::And, ContactMode::Negated)) {
+        issue(owner.line, describe(owner),
+              PlcopenTr::tr("%1 has no contact that is never ON for an input left FALSE")
+                  .arg(m_t.displayName));
+        return std::nullopt;
+    }
+    Contact c;
+    c.mode = ContactMode::Negated;
+    Operand o;
+    o.address = on;
+    c.operands.push_back(o);
+    return Chain{{QStringLiteral("never"), Expr::leafOf(c)}};
+}
+
+bool Importer::enAlwaysOn(const Element &e) {
+    const Pin *en = pin(e, "EN");
+    if (!en || (en->connections.empty() && en->expression.isEmpty()))
+        return true;
+    if (boolLiteral(en->expression).value_or(false))
+        return true;
+    const auto chain = chainIn(en, e);
+    if (!chain)
+        return false;
+    if (std::all_of(chain->begin(), chain->end(), [](const Factor &f) {
+            return f.expr.empty() || f.key == QLatin1String("always");
+        }))
+        return true;
+    issue(e.line, describe(e),
+          PlcopenTr::tr("its EN has a condition: while EN is OFF an IEC block stops where it "
+                        "stands, which %1's timers and counters do not; not imported")
+              .arg(m_t.displayName));
+    return false;
+}
+
+std::optional<Chain> Importer::powerPin(const Pin *p, const Element &owner, bool *never) {
+    *never = false;
+    std::optional<QString> literal;
+    if (p && !p->expression.isEmpty())
+        literal = p->expression;
+    else if (p && p->connections.size() == 1)
+        if (const Element *src = element(p->connections.front().ref);
+            src && src->kind == QLatin1String("inVariable") && boolLiteral(src->variable)) {
+            m_used.insert(src->id);
+            literal = src->variable;
+        }
+    if (!p || (p->connections.empty() && !literal)) {
+        *never = true; // an IEC input left open is FALSE
+        return std::nullopt;
+    }
+    if (literal) {
+        if (const auto b = boolLiteral(*literal)) {
+            if (*b)
+                return railChain();
+            *never = true;
+            return std::nullopt;
+        }
+        issue(owner.line, describe(owner),
+              PlcopenTr::tr("input %1 is %2, not power: not imported").arg(p->formal, *literal));
+        return std::nullopt;
+    }
+    return chainIn(p, owner);
 }
 
 std::optional<Instruction> Importer::parseInstruction(const QString &text, const Element &e) {
@@ -362,6 +479,8 @@ std::optional<Output> Importer::coilOutput(const Element &e) {
 // An IEC timer (TON, TOF) as the target's timer of that kind: its instance a timer device,
 // PT in the timer's units.
 std::optional<Output> Importer::timerOutput(const Element &e) {
+    if (!enAlwaysOn(e))
+        return std::nullopt;
     const Pin *pt = pin(e, "PT");
     const auto ptText = pt ? pinExpression(*pt, e.line) : std::nullopt;
     const auto ms = ptText ? timeLiteral(*ptText) : std::nullopt;
@@ -472,6 +591,27 @@ std::optional<Instruction> Importer::timerInstruction(const InstructionSpec &spe
     return std::nullopt;
 }
 
+std::optional<Instruction> Importer::copyInstruction(const Operand &source, const Operand &dest,
+                                                     bool fromBcd, const Element &e) {
+    // The target's move (MOV, MOV(21)), its BCD-to-binary one (BIN(23)), or the VPC's transfer
+    // OUT d,s (VPC user's manual, III), which writes while its condition is ON.
+    const ApplyFunction function = fromBcd ? ApplyFunction::FromBcd : ApplyFunction::Mov;
+    for (const InstructionSpec &x : m_t.instructions) {
+        if (x.differentiated || x.doubleWord || x.operands.size() != 2)
+            continue;
+        if (x.op == Op::Apply && x.function == function)
+            return build(&x, {source, dest}, e);
+        if (!fromBcd && x.op == Op::Transfer && x.transfer == TransferOp::Assign && !x.negated)
+            return build(&x, {dest, source}, e);
+    }
+    issue(
+        e.line, describe(e),
+        fromBcd
+            ? PlcopenTr::tr("%1 has no instruction to make a BCD value binary").arg(m_t.displayName)
+            : PlcopenTr::tr("%1 has no move instruction").arg(m_t.displayName));
+    return std::nullopt;
+}
+
 std::optional<Output> Importer::moveOutput(const Element &e) {
     const Pin *in = pin(e, "IN");
     const auto source = in ? pinExpression(*in, e.line) : std::nullopt;
@@ -493,21 +633,9 @@ std::optional<Output> Importer::moveOutput(const Element &e) {
     const auto d = operandOf(dest->variable, dest->line);
     if (!s || !d)
         return std::nullopt;
-    const InstructionSpec *spec = nullptr;
-    for (const InstructionSpec &x : m_t.instructions)
-        if (x.op == Op::Apply && x.function == ApplyFunction::Mov && !x.differentiated &&
-            !x.doubleWord && x.operands.size() == 2) {
-            spec = &x;
-            break;
-        }
-    if (!spec) {
-        issue(e.line, describe(e),
-              PlcopenTr::tr("%1 has no move instruction").arg(m_t.displayName));
-        return std::nullopt;
-    }
     Output out;
     out.element = &e;
-    auto ins = build(spec, {*s, *d}, e);
+    auto ins = copyInstruction(*s, *d, false, e);
     if (!ins)
         return std::nullopt;
     out.instruction = *ins;
@@ -523,22 +651,35 @@ std::optional<Output> Importer::moveOutput(const Element &e) {
     return out;
 }
 
-// A block of Rung Studio's own file: its instruction; its power inputs EN (IN for a timer)
-// or IN1..INk; its operands are the instruction's.
+// A block of Rung Studio's own file: its instruction; its power inputs EN (IN for a timer, a
+// counter's CU, CD, R, LD as plcopen_counters.h writes them) or IN1..INk; its operands are the
+// instruction's. A connector of the file is an RST of a counter: its power the connector's.
 std::optional<Output> Importer::ownBlockOutput(const Element &e) {
     auto ins = parseInstruction(e.instruction, e);
     if (!ins)
         return std::nullopt;
-    const Pin *power = pin(e, "EN");
-    if (!power && pin(e, "IN") && !pin(e, "IN1"))
-        power = pin(e, "IN");
+    std::vector<const Pin *> power;
+    if (e.kind == QLatin1String("connector")) {
+        if (!e.inputs.empty())
+            power.push_back(&e.inputs.front());
+    } else if (const auto form = isCounterType(e.typeName) && !ins->operands.empty()
+                                     ? counterForm(m_t, *ins->spec, ins->operands.front().address)
+                                     : std::nullopt) {
+        for (const QString &formal : form->pins)
+            power.push_back(pin(e, formal.toLatin1().constData()));
+    } else if (const Pin *en = pin(e, "EN")) {
+        power.push_back(en);
+    } else if (pin(e, "IN") && !pin(e, "IN1")) {
+        power.push_back(pin(e, "IN"));
+    } else {
+        for (int i = 1; i <= std::max(1, ins->spec->inputs); ++i)
+            if (const Pin *p = pin(e, QStringLiteral("IN%1").arg(i).toLatin1().constData()))
+                power.push_back(p);
+    }
+    // The operands' variables, a counter's PV, FALSE and R's continuations go with the block.
     for (const Pin &p : e.inputs)
-        if (&p != power && !p.formal.startsWith(QLatin1String("IN"), Qt::CaseInsensitive))
+        if (std::find(power.begin(), power.end(), &p) == power.end())
             for (const Connection &c : p.connections)
-                m_used.insert(c.ref);
-    if (e.typeName.compare(QLatin1String("MOVE"), Qt::CaseInsensitive) == 0)
-        if (const Pin *in = pin(e, "IN"))
-            for (const Connection &c : in->connections)
                 m_used.insert(c.ref);
     for (const Element &o : m_elements)
         if (o.kind == QLatin1String("outVariable") && !o.inputs.empty())
@@ -550,18 +691,15 @@ std::optional<Output> Importer::ownBlockOutput(const Element &e) {
     out.instruction = *ins;
     if (isUnconditional(ins->op()))
         return out;
-    const int k = std::max(1, ins->spec->inputs);
-    if (k == 1 || power) {
-        auto chain = chainIn(power, e);
+    if (power.size() <= 1) {
+        auto chain = chainIn(power.empty() ? nullptr : power.front(), e);
         if (!chain)
             return std::nullopt;
         out.chain = *chain;
         return out;
     }
     out.multi = true;
-    for (int i = 1; i <= k; ++i) {
-        const QByteArray formal = QStringLiteral("IN%1").arg(i).toLatin1();
-        const Pin *p = pin(e, formal.constData());
+    for (const Pin *p : power) {
         if (!p)
             break;
         auto chain = chainIn(p, e);
@@ -575,10 +713,12 @@ std::optional<Output> Importer::ownBlockOutput(const Element &e) {
 std::optional<Output> Importer::outputOf(const Element &e) {
     if (e.kind == QLatin1String("coil"))
         return coilOutput(e);
-    if (e.kind != QLatin1String("block"))
-        return std::nullopt;
+    if (e.kind == QLatin1String("outVariable"))
+        return valueOutput(e);
     if (!e.instruction.isEmpty())
         return ownBlockOutput(e);
+    if (e.kind != QLatin1String("block"))
+        return std::nullopt;
     if (isTimerType(e.typeName))
         return timerOutput(e);
     if (e.typeName.compare(QLatin1String("MOVE"), Qt::CaseInsensitive) == 0)
@@ -589,12 +729,37 @@ std::optional<Output> Importer::outputOf(const Element &e) {
 bool Importer::consumesPower(const Element &e) const {
     if (e.kind == QLatin1String("coil"))
         return true;
+    if (e.kind == QLatin1String("connector"))
+        return !e.instruction.isEmpty(); // Rung Studio's RST of a counter
+    if (e.kind == QLatin1String("outVariable")) {
+        // A timer's or counter's value to a variable (a MOVE's OUT goes with the MOVE).
+        QString formal;
+        const Element *source = valueSource(e, &formal);
+        return source && e.instruction.isEmpty() && source->instruction.isEmpty() &&
+               isInstanceBlock(*source);
+    }
     if (e.kind != QLatin1String("block") || !e.contact.isEmpty() || compareOf(e.typeName))
         return false;
     if (!e.instruction.isEmpty())
         return true;
-    return isTimerType(e.typeName) ||
+    return isInstanceBlock(e) ||
            e.typeName.compare(QLatin1String("MOVE"), Qt::CaseInsensitive) == 0;
+}
+
+bool Importer::isInstanceBlock(const Element &e) {
+    return e.kind == QLatin1String("block") &&
+           (isTimerType(e.typeName) || isCounterType(e.typeName));
+}
+
+const Element *Importer::valueSource(const Element &e, QString *formal) const {
+    if (e.inputs.empty() || e.inputs.front().connections.size() != 1)
+        return nullptr;
+    const Connection &c = e.inputs.front().connections.front();
+    const Element *source = element(c.ref);
+    if (!source || source->kind != QLatin1String("block"))
+        return nullptr;
+    *formal = c.formal;
+    return source;
 }
 
 } // namespace rung::model::plcopen
