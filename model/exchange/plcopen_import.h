@@ -1,8 +1,9 @@
 #pragma once
 
-// The reader of PLCopen TC6 XML LD bodies (model/exchange/plcopen.h), in three files: the file,
-// its variables and elements (plcopen_import.cpp); the power flow and the outputs
-// (plcopen_power.cpp); the rungs, symbols and what is left over (plcopen_rungs.cpp).
+// The reader of PLCopen TC6 XML LD bodies (model/exchange/plcopen.h), in five files: the file,
+// its variables and elements (plcopen_import.cpp); the power flow (plcopen_power.cpp); the
+// outputs (plcopen_outputs.cpp) and the counters among them (plcopen_import_counters.cpp); the
+// rungs, symbols and what is left over (plcopen_rungs.cpp).
 // Internal to model/exchange.
 
 #include "model/exchange/plcopen.h"
