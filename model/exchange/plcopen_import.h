@@ -64,6 +64,9 @@ struct VariableInfo {
     QString symbol, symbolComment;
     std::optional<qint64> setValue;
     bool used = false;
+    // A CONSTANT's value (a constant="true" list's initialValue, Beremiz writes its global
+    // constants so): a literal wherever the ladder names it.
+    QString constant;
 };
 
 struct Factor {
@@ -113,6 +116,9 @@ private:
 
     void readHeader(const XmlNode &root);
 
+    // The POUs the configurations' resources run (pouInstance, in a task or not), by type.
+    static QStringList runningPous(const XmlNode &root);
+
     void readVarList(const XmlNode &list);
 
     void readVariables(const XmlNode &pou);
@@ -141,8 +147,12 @@ private:
 
     const Pin *pin(const Element &e, const char *formal) const;
 
-    // The expression an operand pin carries: an inVariable connected to it, or its own.
+    // The expression an operand pin carries: an inVariable connected to it, or its own; a
+    // constant's value for its name.
     std::optional<QString> pinExpression(const Pin &p, int line);
+
+    // The value of a CONSTANT the expression names, else the expression.
+    QString constantValue(const QString &expression);
 
     // ---- power flow as chains -------------------------------------------------------------
 

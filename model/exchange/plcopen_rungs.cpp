@@ -233,7 +233,7 @@ void Importer::collectSymbols(Project &p) {
     for (const QString &name : m_varOrder) {
         // A variable an element names whose element waits for another variable's device (a
         // counter's CV to it, the counter not mapped yet): it needs one too.
-        if (!m_resolved.contains(name) && !m_vars[name].used &&
+        if (!m_resolved.contains(name) && !m_vars[name].used && m_vars[name].constant.isEmpty() &&
             m_vars[name].type.compare(QLatin1String("R_TRIG"), Qt::CaseInsensitive) != 0 &&
             m_vars[name].type.compare(QLatin1String("F_TRIG"), Qt::CaseInsensitive) != 0 &&
             std::any_of(m_elements.begin(), m_elements.end(), [&name](const Element &e) {
@@ -242,6 +242,8 @@ void Importer::collectSymbols(Project &p) {
             }))
             resolve(name, m_vars[name].line, m_vars[name].type);
         const VariableInfo &v = m_vars[name];
+        if (!v.constant.isEmpty())
+            continue; // a literal where the ladder names it, no device
         const bool named = m_resolved.contains(name) || v.used;
         const auto a = quietDevice(name, v);
         if (!a) {
@@ -392,6 +394,16 @@ void Importer::reportUnused() {
 // A free device for each variable without one: of the kind its type needs.
 void Importer::proposeDevices() {
     std::set<Address> taken = m_usedDevices;
+    // Areas that share element numbers (VPC t / c, CPM1 TIM / CNT): a number taken in one is
+    // taken in all (Area::bank).
+    const auto takenInBank = [&](const Address &a) {
+        const int bank = m_t.area(a.area).bank;
+        if (bank < 0)
+            return false;
+        return std::any_of(taken.begin(), taken.end(), [&](const Address &t) {
+            return t.index == a.index && t.area != a.area && m_t.area(t.area).bank == bank;
+        });
+    };
     for (UnmappedVariable &u : m_result.unmapped) {
         const QString t = u.type.toUpper();
         AreaKind kind = AreaKind::Bit;
@@ -439,7 +451,7 @@ void Importer::proposeDevices() {
                         };
                         if (kind == AreaKind::Counter && !alike(n) && alike(range->second))
                             continue;
-                        if (taken.insert(candidate).second) {
+                        if (!takenInBank(candidate) && taken.insert(candidate).second) {
                             u.proposed = formatAddress(m_t, candidate);
                             break;
                         }

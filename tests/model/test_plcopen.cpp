@@ -309,3 +309,33 @@ TEST(PlcopenImport, BadFilesSayWhatAndWhere) {
         return i.message.startsWith(QStringLiteral("the mapping file gives X8:"));
     })) << issues(r);
 }
+
+// Beremiz writes a configuration's constants as globalVars constant="true" with an initial
+// value: the ladder's use of one is that literal. Of two programs, the one the configuration's
+// task runs is the program, though it comes second.
+TEST(PlcopenImport, GlobalConstantsAreLiteralsAndTheTasksProgramIsTheProgram) {
+    QByteArray xml(kForeign);
+    ASSERT_TRUE(xml.contains("<expression>100</expression>"));
+    xml.replace("<expression>100</expression>", "<expression>limit</expression>");
+    xml.replace("        </resource>\n",
+                "        </resource>\n"
+                "        <globalVars constant=\"true\"><variable name=\"limit\"><type><INT/></type>"
+                "<initialValue><simpleValue value=\"100\"/></initialValue></variable>"
+                "</globalVars>\n");
+    xml.replace("      <pou name=\"main\" pouType=\"program\">",
+                "      <pou name=\"helper\" pouType=\"program\"><body><ST><xhtml:p>x := 1;"
+                "</xhtml:p></ST></body></pou>\n"
+                "      <pou name=\"main\" pouType=\"program\">");
+    QString error;
+    const auto mapping = readDeviceMapping(QStringLiteral("delay = T0\nlatched = M100\n"), &error);
+    ASSERT_TRUE(mapping);
+    const PlcopenImport r = importPlcopen(xml, vigor(), nullptr, *mapping);
+    ASSERT_TRUE(r.project);
+    EXPECT_EQ(issues(r), "14: pou helper: a second program is not imported: a project is one "
+                         "ladder (the program main is)\n");
+    EXPECT_EQ(listing(*r.project), QStringLiteral("LD X0\nOR Y0\nANI X1\nOUT Y0\n"
+                                                  "LD Y0\nTMR T0 K50\n"
+                                                  "LD T0\nSET M100\n"
+                                                  "LD M100\nAND> D10 K100\nOUT Y1\n"
+                                                  "END\n"));
+}
