@@ -164,6 +164,10 @@ private:
 
     void writeInstruction(QXmlStreamWriter &xml, const Elem &e);
 
+    // An element's start tag with its localId and size (and a connector's name).
+    static void startElement(QXmlStreamWriter &xml, const QString &tag, const Elem &e,
+                             bool named = false);
+
     void writeElem(QXmlStreamWriter &xml, const Elem &e);
 
     const Project &m_p;

@@ -210,6 +210,9 @@ private:
     // PT in the timer's units.
     std::optional<Output> timerOutput(const Element &e);
 
+    // A set value as the target writes one: K10 (Vigor), #0010 (CPM1: BCD digits), 10.
+    std::variant<Constant, AddressError> setValueConstant(qint64 value) const;
+
     std::optional<Instruction> timerInstruction(const InstructionSpec &spec, const Address &timer,
                                                 qint64 ms, std::optional<qint64> *kept);
 

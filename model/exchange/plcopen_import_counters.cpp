@@ -117,11 +117,7 @@ bool Importer::counterOutputs(const Element &e, std::vector<Output> *outs) {
         } else if (s.kind == OperandKind::SetValue) {
             hasSetValue = true;
             if (pv) {
-                const QString text = m_t.constants.prefixed ? QStringLiteral("K%1").arg(*pv)
-                                     : m_t.constants.bcdSetValues
-                                         ? QStringLiteral("#%1").arg(*pv, 4, 10, QLatin1Char('0'))
-                                         : QString::number(*pv);
-                const auto c = parseConstant(m_t, text);
+                const auto c = setValueConstant(*pv);
                 if (const auto *error = std::get_if<AddressError>(&c)) {
                     issue(e.line, describe(e),
                           QStringLiteral("PV %1: %2").arg(*pvText, error->message));
@@ -129,8 +125,6 @@ bool Importer::counterOutputs(const Element &e, std::vector<Output> *outs) {
                 }
                 o.kind = Operand::Kind::Constant;
                 o.constant = std::get<Constant>(c);
-                if (o.constant.style == Constant::Style::Plain && m_t.constants.prefixed)
-                    o.constant.style = Constant::Style::Decimal;
             } else if (m_t.constants.bcdSetValues) {
                 issue(e.line, describe(e),
                       PlcopenTr::tr("PV %1 is a variable: %2 reads a set value in a word as BCD "

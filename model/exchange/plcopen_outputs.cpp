@@ -124,6 +124,18 @@ std::optional<Output> Importer::timerOutput(const Element &e) {
     return std::nullopt;
 }
 
+std::variant<Constant, AddressError> Importer::setValueConstant(qint64 value) const {
+    const QString text = m_t.constants.prefixed ? QStringLiteral("K%1").arg(value)
+                         : m_t.constants.bcdSetValues
+                             ? QStringLiteral("#%1").arg(value, 4, 10, QLatin1Char('0'))
+                             : QString::number(value);
+    auto c = parseConstant(m_t, text);
+    if (auto *k = std::get_if<Constant>(&c);
+        k && k->style == Constant::Style::Plain && m_t.constants.prefixed)
+        k->style = Constant::Style::Decimal;
+    return c;
+}
+
 std::optional<Instruction> Importer::timerInstruction(const InstructionSpec &spec,
                                                       const Address &timer, qint64 ms,
                                                       std::optional<qint64> *kept) {
@@ -167,11 +179,7 @@ std::optional<Instruction> Importer::timerInstruction(const InstructionSpec &spe
         const auto units = static_cast<qint64>(static_cast<double>(ms) / step);
         if (setSlot >= 0) {
             Operand &o = ins.operands[static_cast<std::size_t>(setSlot)];
-            const QString text = m_t.constants.prefixed ? QStringLiteral("K%1").arg(units)
-                                 : m_t.constants.bcdSetValues
-                                     ? QStringLiteral("#%1").arg(units, 4, 10, QLatin1Char('0'))
-                                     : QString::number(units);
-            const auto c = parseConstant(m_t, text);
+            const auto c = setValueConstant(units);
             if (!std::holds_alternative<Constant>(c))
                 continue;
             o.constant = std::get<Constant>(c);

@@ -275,23 +275,25 @@ void Exporter::writeInstruction(QXmlStreamWriter &xml, const Elem &e) {
     endData(xml);
 }
 
+void Exporter::startElement(QXmlStreamWriter &xml, const QString &tag, const Elem &e, bool named) {
+    xml.writeStartElement(tag);
+    if (named) // a connector's or continuation's name
+        xml.writeAttribute(QStringLiteral("name"), e.variable);
+    xml.writeAttribute(QStringLiteral("localId"), QString::number(e.id));
+    xml.writeAttribute(QStringLiteral("height"), QString::number(e.height));
+    xml.writeAttribute(QStringLiteral("width"), QString::number(e.width));
+}
+
 void Exporter::writeElem(QXmlStreamWriter &xml, const Elem &e) {
-    const QString id = QString::number(e.id);
     switch (e.kind) {
     case Elem::Kind::Comment:
-        xml.writeStartElement(QStringLiteral("comment"));
-        xml.writeAttribute(QStringLiteral("localId"), id);
-        xml.writeAttribute(QStringLiteral("height"), QString::number(e.height));
-        xml.writeAttribute(QStringLiteral("width"), QString::number(e.width));
+        startElement(xml, QStringLiteral("comment"), e);
         writePosition(xml, "position", e.x, e.y);
         writeText(xml, "content", e.variable);
         xml.writeEndElement();
         return;
     case Elem::Kind::LeftRail:
-        xml.writeStartElement(QStringLiteral("leftPowerRail"));
-        xml.writeAttribute(QStringLiteral("localId"), id);
-        xml.writeAttribute(QStringLiteral("height"), QString::number(e.height));
-        xml.writeAttribute(QStringLiteral("width"), QString::number(e.width));
+        startElement(xml, QStringLiteral("leftPowerRail"), e);
         writePosition(xml, "position", e.x, e.y);
         xml.writeStartElement(QStringLiteral("connectionPointOut"));
         xml.writeAttribute(QStringLiteral("formalParameter"), QString());
@@ -300,10 +302,7 @@ void Exporter::writeElem(QXmlStreamWriter &xml, const Elem &e) {
         xml.writeEndElement();
         return;
     case Elem::Kind::RightRail:
-        xml.writeStartElement(QStringLiteral("rightPowerRail"));
-        xml.writeAttribute(QStringLiteral("localId"), id);
-        xml.writeAttribute(QStringLiteral("height"), QString::number(e.height));
-        xml.writeAttribute(QStringLiteral("width"), QString::number(e.width));
+        startElement(xml, QStringLiteral("rightPowerRail"), e);
         writePosition(xml, "position", e.x, e.y);
         for (const auto &[formal, conns] : e.inputs)
             writeConnections(xml, conns, 20);
@@ -311,11 +310,9 @@ void Exporter::writeElem(QXmlStreamWriter &xml, const Elem &e) {
         return;
     case Elem::Kind::Contact:
     case Elem::Kind::Coil:
-        xml.writeStartElement(e.kind == Elem::Kind::Contact ? QStringLiteral("contact")
-                                                            : QStringLiteral("coil"));
-        xml.writeAttribute(QStringLiteral("localId"), id);
-        xml.writeAttribute(QStringLiteral("height"), QString::number(e.height));
-        xml.writeAttribute(QStringLiteral("width"), QString::number(e.width));
+        startElement(
+            xml, e.kind == Elem::Kind::Contact ? QStringLiteral("contact") : QStringLiteral("coil"),
+            e);
         if (e.negated)
             xml.writeAttribute(QStringLiteral("negated"), QStringLiteral("true"));
         if (!e.edge.isEmpty())
@@ -333,11 +330,10 @@ void Exporter::writeElem(QXmlStreamWriter &xml, const Elem &e) {
         return;
     case Elem::Kind::InVar:
     case Elem::Kind::OutVar:
-        xml.writeStartElement(e.kind == Elem::Kind::InVar ? QStringLiteral("inVariable")
-                                                          : QStringLiteral("outVariable"));
-        xml.writeAttribute(QStringLiteral("localId"), id);
-        xml.writeAttribute(QStringLiteral("height"), QString::number(e.height));
-        xml.writeAttribute(QStringLiteral("width"), QString::number(e.width));
+        startElement(xml,
+                     e.kind == Elem::Kind::InVar ? QStringLiteral("inVariable")
+                                                 : QStringLiteral("outVariable"),
+                     e);
         writePosition(xml, "position", e.x, e.y);
         if (e.kind == Elem::Kind::InVar) {
             xml.writeStartElement(QStringLiteral("connectionPointOut"));
@@ -350,11 +346,7 @@ void Exporter::writeElem(QXmlStreamWriter &xml, const Elem &e) {
         xml.writeEndElement();
         return;
     case Elem::Kind::Connector:
-        xml.writeStartElement(QStringLiteral("connector"));
-        xml.writeAttribute(QStringLiteral("name"), e.variable);
-        xml.writeAttribute(QStringLiteral("localId"), id);
-        xml.writeAttribute(QStringLiteral("height"), QString::number(e.height));
-        xml.writeAttribute(QStringLiteral("width"), QString::number(e.width));
+        startElement(xml, QStringLiteral("connector"), e, true);
         writePosition(xml, "position", e.x, e.y);
         writeConnections(xml, e.inputs.empty() ? std::vector<Conn>{} : e.inputs.front().second,
                          e.height / 2);
@@ -362,11 +354,7 @@ void Exporter::writeElem(QXmlStreamWriter &xml, const Elem &e) {
         xml.writeEndElement();
         return;
     case Elem::Kind::Continuation:
-        xml.writeStartElement(QStringLiteral("continuation"));
-        xml.writeAttribute(QStringLiteral("name"), e.variable);
-        xml.writeAttribute(QStringLiteral("localId"), id);
-        xml.writeAttribute(QStringLiteral("height"), QString::number(e.height));
-        xml.writeAttribute(QStringLiteral("width"), QString::number(e.width));
+        startElement(xml, QStringLiteral("continuation"), e, true);
         writePosition(xml, "position", e.x, e.y);
         xml.writeStartElement(QStringLiteral("connectionPointOut"));
         writePosition(xml, "relPosition", e.width, e.height / 2);
@@ -376,10 +364,7 @@ void Exporter::writeElem(QXmlStreamWriter &xml, const Elem &e) {
     case Elem::Kind::Block:
         break;
     }
-    xml.writeStartElement(QStringLiteral("block"));
-    xml.writeAttribute(QStringLiteral("localId"), id);
-    xml.writeAttribute(QStringLiteral("width"), QString::number(e.width));
-    xml.writeAttribute(QStringLiteral("height"), QString::number(e.height));
+    startElement(xml, QStringLiteral("block"), e);
     xml.writeAttribute(QStringLiteral("typeName"), e.typeName);
     if (!e.instanceName.isEmpty())
         xml.writeAttribute(QStringLiteral("instanceName"), e.instanceName);
