@@ -66,7 +66,7 @@
 <context>
     <name>rung::app::PlcopenImportDialog</name>
     <message numerus="yes">
-        <location filename="../app/gui/plcopen_exchange.cpp" line="+210"/>
+        <location filename="../app/gui/plcopen_exchange.cpp" line="+215"/>
         <source>Everything in the file is imported: %n rung(s).</source>
         <translation>
             <numerusform>Everything in the file is imported: %n rung.</numerusform>

@@ -277,7 +277,7 @@ Kilépési kód: 0 nincs hiba, 1 a programban hiba van, 2 használati vagy I/O h
     </message>
     <message>
         <location line="+18"/>
-        <location filename="../app/cli/cli_plcopen.cpp" line="+34"/>
+        <location filename="../app/cli/cli_plcopen.cpp" line="+36"/>
         <location line="+3"/>
         <source>error</source>
         <translation>hiba</translation>
@@ -289,7 +289,8 @@ Kilépési kód: 0 nincs hiba, 1 a programban hiba van, 2 használati vagy I/O h
     </message>
     <message>
         <location line="+1"/>
-        <location filename="../app/cli/cli_plcopen.cpp" line="+50"/>
+        <location filename="../app/cli/cli_plcopen.cpp" line="-8"/>
+        <location line="+58"/>
         <source>note</source>
         <translation>megjegyzés</translation>
     </message>
@@ -309,7 +310,7 @@ Kilépési kód: 0 nincs hiba, 1 a programban hiba van, 2 használati vagy I/O h
         <translation>a --map a --from plcopen mellé való</translation>
     </message>
     <message>
-        <location filename="../app/cli/cli_plcopen.cpp" line="-99"/>
+        <location filename="../app/cli/cli_plcopen.cpp" line="-101"/>
         <source>--from plcopen needs --target: which PLC the program is for</source>
         <translation>a --from plcopen mellé --target kell: melyik PLC-hez készül a program</translation>
     </message>
@@ -324,7 +325,7 @@ Kilépési kód: 0 nincs hiba, 1 a programban hiba van, 2 használati vagy I/O h
         <translation>%1: megjegyzés: a fájlt a Rung Studio %2 PLC-hez írta; %3 PLC-hez olvassuk be</translation>
     </message>
     <message>
-        <location line="+12"/>
+        <location line="+14"/>
         <source>variable %1 (%2) names no device of %3, and none is free for it</source>
         <translation>a(z) %1 (%2) változó nem a(z) %3 PLC operandusa, és nincs szabad operandus hozzá</translation>
     </message>
@@ -2230,10 +2231,10 @@ A read és a write kilépési kódja: 0 kész, 1 a PLC nem válaszolt vagy eluta
     </message>
     <message>
         <location line="+6"/>
-        <source>%1 is written. Other tools will read it, but not these blocks:
+        <source>%1 is written. Other tools will read it, with these notes:
 
 %2</source>
-        <translation>%1 elkészült. Más eszközök beolvassák, de ezeket a blokkokat nem:
+        <translation>A(z) %1 kiíródott. Más eszközök beolvassák, ezekkel a megjegyzésekkel:
 
 %2</translation>
     </message>
@@ -2303,7 +2304,7 @@ A read és a write kilépési kódja: 0 kész, 1 a PLC nem válaszolt vagy eluta
         <translation>A többi beolvasása, a felsoroltak kihagyásával</translation>
     </message>
     <message>
-        <location line="+6"/>
+        <location line="+11"/>
         <source>&amp;Import</source>
         <translation>&amp;Beolvasás</translation>
     </message>
@@ -2338,7 +2339,12 @@ A read és a write kilépési kódja: 0 kész, 1 a PLC nem válaszolt vagy eluta
         </translation>
     </message>
     <message>
-        <location line="+25"/>
+        <location line="+7"/>
+        <source>Imported, but working otherwise than in the file:</source>
+        <translation>Beolvasva, de a fájlban leírttól eltérően működik:</translation>
+    </message>
+    <message>
+        <location line="+24"/>
         <source>Some variables still have no device: give each one a device of %1.</source>
         <translation>Néhány változónak még nincs operandusa: adjon mindegyiknek egy %1 operandust.</translation>
     </message>
@@ -6558,14 +6564,14 @@ Kiértékelés: %4 µs (%5..%6)</translation>
 <context>
     <name>rung::model::Plcopen</name>
     <message>
-        <location filename="../model/exchange/plcopen_import.cpp" line="+113"/>
+        <location filename="../model/exchange/plcopen_import.cpp" line="+128"/>
         <source>not a PLCopen TC6 XML 2.01 project (the root is &lt;%1&gt; in &quot;%2&quot;, &lt;project&gt; in &quot;%3&quot; is expected)</source>
         <translation>nem PLCopen TC6 XML 2.01 projekt (a gyökér &lt;%1&gt; a(z) „%2” névtérben, &lt;project&gt; várható a(z) „%3” névtérben)</translation>
     </message>
     <message>
-        <location line="+18"/>
-        <source>a second program is not imported: a project is one ladder (the first program, %1, is)</source>
-        <translation>a második program nem kerül beolvasásra: egy projekt egy létradiagram (az első program, %1, igen)</translation>
+        <location line="+24"/>
+        <source>a second program is not imported: a project is one ladder (the program %1 is)</source>
+        <translation>a második program nem kerül beolvasásra: egy projekt egy létradiagram (a(z) %1 program kerül beolvasásra)</translation>
     </message>
     <message>
         <location line="+3"/>
@@ -6588,7 +6594,7 @@ Kiértékelés: %4 µs (%5..%6)</translation>
         <translation>a programnak nincs létradiagram (LD) törzse</translation>
     </message>
     <message>
-        <location line="+131"/>
+        <location line="+159"/>
         <source>the mapping file gives %1: %2</source>
         <translation>a hozzárendelő fájl szerint %1: %2</translation>
     </message>
@@ -6598,7 +6604,12 @@ Kiértékelés: %4 µs (%5..%6)</translation>
         <translation>%1 itt: %2: a(z) %3 PLC-nek nincs ilyen operandusa (docs/plcopen.md, címzett változók); adjon meg egyet hozzárendelő fájlban</translation>
     </message>
     <message>
-        <location line="+135"/>
+        <location line="+54"/>
+        <source>%1 is not imported: %2 keeps a counter&apos;s present value as BCD digits</source>
+        <translation>a(z) %1 nem kerül beolvasásra: a(z) %2 a számláló aktuális értékét BCD számjegyekként tárolja</translation>
+    </message>
+    <message>
+        <location line="+105"/>
         <source>input %1 is not a variable or a literal</source>
         <translation>a(z) %1 bemenet nem változó és nem konstans</translation>
     </message>
@@ -6609,8 +6620,28 @@ Kiértékelés: %4 µs (%5..%6)</translation>
     </message>
     <message>
         <location filename="../model/exchange/plcopen_power.cpp" line="+40"/>
+        <source>%1 as a contact is not imported: only a timer&apos;s or counter&apos;s bit (Q) is</source>
+        <translation>a(z) %1 érintkezőként nem kerül beolvasásra: csak az időzítő vagy a számláló bitje (Q)</translation>
+    </message>
+    <message>
+        <location line="+8"/>
+        <source>%1 is not imported: the bit of %2 %3 is %4</source>
+        <translation>a(z) %1 nem kerül beolvasásra: a(z) %2 %3 bitje a(z) %4</translation>
+    </message>
+    <message>
+        <location line="+18"/>
         <source>its input is connected to nothing: not imported</source>
         <translation>a bemenete semmihez sem kapcsolódik: nem kerül beolvasásra</translation>
+    </message>
+    <message>
+        <location line="+5"/>
+        <source>its input %1 is negated: not imported</source>
+        <translation>a(z) %1 bemenete negált: nem kerül beolvasásra</translation>
+    </message>
+    <message>
+        <location line="+10"/>
+        <source>its input %1 on a %2 edge is not imported</source>
+        <translation>a(z) %1 bemenet edge=„%2” jelöléssel nem kerül beolvasásra</translation>
     </message>
     <message>
         <location line="+83"/>
@@ -6623,7 +6654,7 @@ Kiértékelés: %4 µs (%5..%6)</translation>
         <translation>az áramút körbe fut: nem kerül beolvasásra</translation>
     </message>
     <message>
-        <location line="+25"/>
+        <location line="+26"/>
         <source>a contact both negated and on an edge is not imported</source>
         <translation>a nyitó és egyben élvezérelt érintkező nem kerül beolvasásra</translation>
     </message>
@@ -6658,12 +6689,27 @@ Kiértékelés: %4 µs (%5..%6)</translation>
         <translation>a(z) %1 PLC-nek nincs az áramútban %2 elemnek megfelelő eleme</translation>
     </message>
     <message>
-        <location line="+19"/>
+        <location line="+24"/>
         <source>output %1 of %2 as power flow is not imported</source>
         <translation>a(z) %2 %1 kimenete áramútként nem kerül beolvasásra</translation>
     </message>
     <message>
-        <location line="+23"/>
+        <location line="+27"/>
+        <source>%1 has no contact that is never ON for an input left FALSE</source>
+        <translation>a(z) %1 PLC-nek nincs soha BE nem kapcsoló érintkezője a FALSE értéken hagyott bemenethez</translation>
+    </message>
+    <message>
+        <location line="+26"/>
+        <source>its EN has a condition: while EN is OFF an IEC block stops where it stands, which %1&apos;s timers and counters do not; not imported</source>
+        <translation>az EN bemenetének feltétele van: amíg az EN KI, az IEC blokk ott áll meg, ahol tart, a(z) %1 időzítői és számlálói viszont nem; nem kerül beolvasásra</translation>
+    </message>
+    <message>
+        <location line="+29"/>
+        <source>input %1 is %2, not power: not imported</source>
+        <translation>a(z) %1 bemenet értéke %2, nem áramút: nem kerül beolvasásra</translation>
+    </message>
+    <message>
+        <location filename="../model/exchange/plcopen_outputs.cpp" line="+22"/>
         <source>one instruction is expected</source>
         <translation>egy utasítás várható</translation>
     </message>
@@ -6678,7 +6724,7 @@ Kiértékelés: %4 µs (%5..%6)</translation>
         <translation>a(z) %1 PLC-nek nincs ilyen tekercse</translation>
     </message>
     <message>
-        <location line="+23"/>
+        <location line="+25"/>
         <source>PT must be a time literal (T#1s) to be a set value: not imported</source>
         <translation>a PT-nek időkonstansnak (T#1s) kell lennie, hogy beállított érték legyen: nem kerül beolvasásra</translation>
     </message>
@@ -6693,17 +6739,22 @@ Kiértékelés: %4 µs (%5..%6)</translation>
         <translation>a(z) %1 PLC-nek nincs olyan %2 időzítője, amely %3 ms-ot mér a(z) %4 operandussal</translation>
     </message>
     <message>
-        <location line="+88"/>
+        <location line="+91"/>
+        <source>%1 has no instruction to make a BCD value binary</source>
+        <translation>a(z) %1 PLC-nek nincs utasítása BCD érték binárissá alakítására</translation>
+    </message>
+    <message>
+        <location line="+18"/>
         <source>MOVE&apos;s OUT goes to no variable: not imported</source>
         <translation>a MOVE OUT kimenete nem megy változóba: nem kerül beolvasásra</translation>
     </message>
     <message>
-        <location line="+17"/>
+        <location line="-17"/>
         <source>%1 has no move instruction</source>
         <translation>a(z) %1 PLC-nek nincs mozgató utasítása</translation>
     </message>
     <message>
-        <location filename="../model/exchange/plcopen_rungs.cpp" line="+219"/>
+        <location filename="../model/exchange/plcopen_rungs.cpp" line="+256"/>
         <source>the ladder does not use it and it names no device: not imported</source>
         <translation>a létradiagram nem használja, és nem jelöl operandust: nem kerül beolvasásra</translation>
     </message>
@@ -6713,12 +6764,17 @@ Kiértékelés: %4 µs (%5..%6)</translation>
         <translation>az IEC ugrások, címkék és visszatérések nem kerülnek beolvasásra: a(z) %1 saját ugrásai másként működnek; írja meg őket a Rung Studióban</translation>
     </message>
     <message>
-        <location line="+5"/>
-        <source>this block is not imported: contacts, coils, TON, TOF, MOVE, the comparisons, NOT, R_TRIG and F_TRIG are (docs/plcopen.md)</source>
-        <translation>ez a blokk nem kerül beolvasásra: az érintkezők, tekercsek, TON, TOF, MOVE, az összehasonlítások, NOT, R_TRIG és F_TRIG igen (docs/plcopen.md)</translation>
+        <location line="-191"/>
+        <source>the instruction list in the file differs from its ladder (another tool changed the ladder?): the ladder is imported</source>
+        <translation>a fájlban lévő utasításlista eltér a létradiagramjától (egy másik eszköz módosította a létradiagramot?): a létradiagram kerül beolvasásra</translation>
     </message>
     <message>
-        <location line="+4"/>
+        <location line="+196"/>
+        <source>this block is not imported: contacts, coils, TON, TOF, CTU, CTD, CTUD, MOVE, the comparisons, NOT, R_TRIG and F_TRIG are (docs/plcopen.md)</source>
+        <translation>ez a blokk nem kerül beolvasásra: az érintkezők, tekercsek, a TON, TOF, CTU, CTD, CTUD, MOVE, az összehasonlítások, a NOT, R_TRIG és F_TRIG igen (docs/plcopen.md)</translation>
+    </message>
+    <message>
+        <location line="+5"/>
         <source>its power comes from %1 (line %2), which is not imported</source>
         <translation>az áramútja innen jön: %1 (%2. sor), amely nem kerül beolvasásra</translation>
     </message>
@@ -6733,9 +6789,19 @@ Kiértékelés: %4 µs (%5..%6)</translation>
         <translation>egyetlen kimenet sem használja: nem kerül beolvasásra</translation>
     </message>
     <message>
-        <location filename="../model/exchange/plcopen_write.cpp" line="+92"/>
+        <location filename="../model/exchange/plcopen_write.cpp" line="+96"/>
         <source>%1 is written as a block of %2&apos;s own: other tools read the file but do not know this block</source>
         <translation>a(z) %1 a(z) %2 saját blokkjaként íródik ki: más eszközök beolvassák a fájlt, de ezt a blokkot nem ismerik</translation>
+    </message>
+    <message>
+        <location line="+3"/>
+        <source>%1 is written as a block of %2&apos;s own (%3): other tools read the file but do not know this block</source>
+        <translation>a(z) %1 a(z) %2 saját blokkjaként íródik ki (%3): más eszközök beolvassák a fájlt, de ezt a blokkot nem ismerik</translation>
+    </message>
+    <message>
+        <location line="+17"/>
+        <source>the instruction list is not written beside the ladder: rung %1 does not convert (%2)</source>
+        <translation>az utasításlista nem íródik ki a létradiagram mellé: a(z) %1. létrafok nem alakítható át (%2)</translation>
     </message>
     <message>
         <location filename="../model/exchange/plcopen_xml.cpp" line="+25"/>
@@ -6751,6 +6817,96 @@ Kiértékelés: %4 µs (%5..%6)</translation>
         <location line="+7"/>
         <source>the file holds no XML element</source>
         <translation>a fájlban nincs XML elem</translation>
+    </message>
+    <message>
+        <location filename="../model/exchange/plcopen_counters.cpp" line="+26"/>
+        <source>%1&apos;s %2 stops counting at its set value, where CV counts on past PV (Q is the same); its reset is an RST, which acts where it stands in the program, not when the counter runs as R does</source>
+        <translation>a(z) %1 %2 számlálója megáll a beállított értéknél, míg a CV a PV fölött is tovább számol (a Q ugyanaz); törlése RST, amely ott hat, ahol a programban áll, nem akkor, amikor a számláló fut, ahogy az R</translation>
+    </message>
+    <message>
+        <location line="+11"/>
+        <source>%1&apos;s %2 stops counting at 0, where CV counts on below 0 (Q is the same), and it is OFF until it has counted down, where a CTD is ON until LD first loads PV</source>
+        <translation>a(z) %1 %2 számlálója 0-nál megáll, míg a CV 0 alá is tovább számol (a Q ugyanaz), és KI marad, amíg le nem számolt, míg a CTD BE van, amíg az LD először be nem tölti a PV-t</translation>
+    </message>
+    <message>
+        <location line="+7"/>
+        <source>%1&apos;s %2 stops counting at its set value, where CV counts on past PV (Q is the same)</source>
+        <translation>a(z) %1 %2 számlálója megáll a beállított értéknél, míg a CV a PV fölött is tovább számol (a Q ugyanaz)</translation>
+    </message>
+    <message>
+        <location line="+10"/>
+        <source>%1&apos;s %2 stops counting at 0, where CV counts on below 0, and %1 compares the count at the end of the scan, where a CTUD sets QD when it runs</source>
+        <translation>a(z) %1 %2 számlálója 0-nál megáll, míg a CV 0 alá is tovább számol, és a(z) %1 a programciklus végén hasonlítja össze a számlálást, míg a CTUD a futásakor állítja a QD-t</translation>
+    </message>
+    <message>
+        <location line="+8"/>
+        <source>%1 compares the count of %2 with PV at the end of the scan, where a CTUD sets QU when it runs</source>
+        <translation>a(z) %1 a programciklus végén hasonlítja össze a(z) %2 számlálását a PV-vel, míg a CTUD a futásakor állítja a QU-t</translation>
+    </message>
+    <message>
+        <location line="+6"/>
+        <source>%1&apos;s %2 wraps around at its limits, where IEC&apos;s CTUD stops</source>
+        <translation>a(z) %1 %2 számlálója a határainál körbefordul, míg az IEC CTUD megáll</translation>
+    </message>
+    <message>
+        <location filename="../model/exchange/plcopen_export.cpp" line="+139"/>
+        <source>%1 reads a set value in a word as BCD digits, where PV is a number</source>
+        <translation>a(z) %1 a szóban tárolt beállított értéket BCD számjegyekként olvassa, míg a PV egy szám</translation>
+    </message>
+    <message>
+        <location line="+280"/>
+        <source>%1 is written as an IEC %2: %3</source>
+        <translation>a(z) %1 IEC %2 blokkként íródik ki: %3</translation>
+    </message>
+    <message>
+        <location filename="../model/exchange/plcopen_import_counters.cpp" line="+59"/>
+        <source>%1 is no counter of %2: give %3 a counter in the mapping file</source>
+        <translation>a(z) %1 nem a(z) %2 számlálója: adjon a(z) %3 változónak számlálót a hozzárendelő fájlban</translation>
+    </message>
+    <message>
+        <location line="+34"/>
+        <source>%1 has no counter that counts as %2 does on %3</source>
+        <translation>a(z) %1 PLC-nek nincs olyan számlálója a(z) %3 operanduson, amely úgy számol, mint a(z) %2</translation>
+    </message>
+    <message>
+        <location line="+2"/>
+        <source>it uses %1 together, which no counter of %2 has</source>
+        <translation>együtt használja a(z) %1 bemeneteket, amelyek a(z) %2 egyik számlálójának sincsenek meg</translation>
+    </message>
+    <message>
+        <location line="+8"/>
+        <source>PV is not given: not imported</source>
+        <translation>nincs megadva PV: nem kerül beolvasásra</translation>
+    </message>
+    <message>
+        <location line="+33"/>
+        <source>PV %1 is a variable: %2 reads a set value in a word as BCD digits; not imported</source>
+        <translation>a(z) %1 PV változó: a(z) %2 a szóban tárolt beállított értéket BCD számjegyekként olvassa; nem kerül beolvasásra</translation>
+    </message>
+    <message>
+        <location line="+21"/>
+        <source>PV %1 is a variable: %2 keeps a counter&apos;s set value in the PLC, a number; not imported</source>
+        <translation>a(z) %1 PV változó: a(z) %2 a számláló beállított értékét a PLC-ben tárolja, számként; nem kerül beolvasásra</translation>
+    </message>
+    <message>
+        <location line="+62"/>
+        <source>%1 (%2) is imported as %3&apos;s %4: %5</source>
+        <translation>a(z) %1 (%2) a(z) %3 %4 utasításaként kerül beolvasásra: %5</translation>
+    </message>
+    <message>
+        <location line="+3"/>
+        <source>%1 (%2) is imported as %3&apos;s %4, which counts the other way: its bit is %1&apos;s Q once %5 has been ON, and its present value is not CV</source>
+        <translation>a(z) %1 (%2) a(z) %3 %4 utasításaként kerül beolvasásra, amely a másik irányba számol: a bitje a(z) %1 Q kimenete, miután a(z) %5 egyszer BE volt, aktuális értéke viszont nem a CV</translation>
+    </message>
+    <message>
+        <location line="+13"/>
+        <source>%1.CV is not imported: %2 counts the other way, its present value is not CV</source>
+        <translation>a(z) %1.CV nem kerül beolvasásra: a(z) %2 a másik irányba számol, aktuális értéke nem a CV</translation>
+    </message>
+    <message>
+        <location line="+24"/>
+        <source>%1 of %2 to a variable is not imported: only a counter&apos;s CV is</source>
+        <translation>a(z) %2 %1 kimenete változóba nem kerül beolvasásra: csak a számláló CV kimenete</translation>
     </message>
 </context>
 <context>

@@ -277,7 +277,7 @@ Codice di uscita: 0 nessun errore, 1 il programma contiene errori, 2 errore di u
     </message>
     <message>
         <location line="+18"/>
-        <location filename="../app/cli/cli_plcopen.cpp" line="+34"/>
+        <location filename="../app/cli/cli_plcopen.cpp" line="+36"/>
         <location line="+3"/>
         <source>error</source>
         <translation>errore</translation>
@@ -289,7 +289,8 @@ Codice di uscita: 0 nessun errore, 1 il programma contiene errori, 2 errore di u
     </message>
     <message>
         <location line="+1"/>
-        <location filename="../app/cli/cli_plcopen.cpp" line="+50"/>
+        <location filename="../app/cli/cli_plcopen.cpp" line="-8"/>
+        <location line="+58"/>
         <source>note</source>
         <translation>nota</translation>
     </message>
@@ -309,7 +310,7 @@ Codice di uscita: 0 nessun errore, 1 il programma contiene errori, 2 errore di u
         <translation>--map si usa con --from plcopen</translation>
     </message>
     <message>
-        <location filename="../app/cli/cli_plcopen.cpp" line="-99"/>
+        <location filename="../app/cli/cli_plcopen.cpp" line="-101"/>
         <source>--from plcopen needs --target: which PLC the program is for</source>
         <translation>--from plcopen richiede --target: per quale PLC è il programma</translation>
     </message>
@@ -324,7 +325,7 @@ Codice di uscita: 0 nessun errore, 1 il programma contiene errori, 2 errore di u
         <translation>%1: nota: il file è stato scritto da Rung Studio per %2; viene letto per %3</translation>
     </message>
     <message>
-        <location line="+12"/>
+        <location line="+14"/>
         <source>variable %1 (%2) names no device of %3, and none is free for it</source>
         <translation>la variabile %1 (%2) non indica un operando di %3, e non ne resta uno libero</translation>
     </message>
@@ -2237,10 +2238,10 @@ Codice di uscita di read e write: 0 fatto, 1 il PLC non ha risposto o ha rifiuta
     </message>
     <message>
         <location line="+6"/>
-        <source>%1 is written. Other tools will read it, but not these blocks:
+        <source>%1 is written. Other tools will read it, with these notes:
 
 %2</source>
-        <translation>%1 è scritto. Altri strumenti lo leggeranno, ma non questi blocchi:
+        <translation>%1 è scritto. Altri strumenti lo leggeranno, con queste note:
 
 %2</translation>
     </message>
@@ -2310,7 +2311,7 @@ Codice di uscita di read e write: 0 fatto, 1 il PLC non ha risposto o ha rifiuta
         <translation>Importa il resto e tralascia quanto elencato</translation>
     </message>
     <message>
-        <location line="+6"/>
+        <location line="+11"/>
         <source>&amp;Import</source>
         <translation>&amp;Importa</translation>
     </message>
@@ -2347,7 +2348,12 @@ Codice di uscita di read e write: 0 fatto, 1 il PLC non ha risposto o ha rifiuta
         </translation>
     </message>
     <message>
-        <location line="+25"/>
+        <location line="+7"/>
+        <source>Imported, but working otherwise than in the file:</source>
+        <translation>Importato, ma funziona diversamente che nel file:</translation>
+    </message>
+    <message>
+        <location line="+24"/>
         <source>Some variables still have no device: give each one a device of %1.</source>
         <translation>Alcune variabili non hanno ancora un operando: assegnare a ciascuna un operando di %1.</translation>
     </message>
@@ -6579,14 +6585,14 @@ Valutazione: %4 µs (%5..%6)</translation>
 <context>
     <name>rung::model::Plcopen</name>
     <message>
-        <location filename="../model/exchange/plcopen_import.cpp" line="+113"/>
+        <location filename="../model/exchange/plcopen_import.cpp" line="+128"/>
         <source>not a PLCopen TC6 XML 2.01 project (the root is &lt;%1&gt; in &quot;%2&quot;, &lt;project&gt; in &quot;%3&quot; is expected)</source>
         <translation>non è un progetto PLCopen TC6 XML 2.01 (la radice è &lt;%1&gt; in &quot;%2&quot;, è atteso &lt;project&gt; in &quot;%3&quot;)</translation>
     </message>
     <message>
-        <location line="+18"/>
-        <source>a second program is not imported: a project is one ladder (the first program, %1, is)</source>
-        <translation>un secondo programma non viene importato: un progetto è un solo schema ladder (il primo programma, %1, sì)</translation>
+        <location line="+24"/>
+        <source>a second program is not imported: a project is one ladder (the program %1 is)</source>
+        <translation>un secondo programma non viene importato: un progetto è un solo schema ladder (viene importato il programma %1)</translation>
     </message>
     <message>
         <location line="+3"/>
@@ -6609,7 +6615,7 @@ Valutazione: %4 µs (%5..%6)</translation>
         <translation>il programma non ha un corpo ladder (LD)</translation>
     </message>
     <message>
-        <location line="+131"/>
+        <location line="+159"/>
         <source>the mapping file gives %1: %2</source>
         <translation>il file di corrispondenze indica %1: %2</translation>
     </message>
@@ -6619,7 +6625,12 @@ Valutazione: %4 µs (%5..%6)</translation>
         <translation>%1 in %2: %3 non ha un tale operando (docs/plcopen.md, variabili allocate); indicarne uno in un file di corrispondenze</translation>
     </message>
     <message>
-        <location line="+135"/>
+        <location line="+54"/>
+        <source>%1 is not imported: %2 keeps a counter&apos;s present value as BCD digits</source>
+        <translation>%1 non viene importato: %2 tiene il valore corrente di un contatore in cifre BCD</translation>
+    </message>
+    <message>
+        <location line="+105"/>
         <source>input %1 is not a variable or a literal</source>
         <translation>l&apos;ingresso %1 non è una variabile né un letterale</translation>
     </message>
@@ -6630,8 +6641,28 @@ Valutazione: %4 µs (%5..%6)</translation>
     </message>
     <message>
         <location filename="../model/exchange/plcopen_power.cpp" line="+40"/>
+        <source>%1 as a contact is not imported: only a timer&apos;s or counter&apos;s bit (Q) is</source>
+        <translation>%1 come contatto non viene importato: solo il bit (Q) di un temporizzatore o di un contatore</translation>
+    </message>
+    <message>
+        <location line="+8"/>
+        <source>%1 is not imported: the bit of %2 %3 is %4</source>
+        <translation>%1 non viene importato: il bit di %2 %3 è %4</translation>
+    </message>
+    <message>
+        <location line="+18"/>
         <source>its input is connected to nothing: not imported</source>
         <translation>il suo ingresso non è collegato a nulla: non importato</translation>
+    </message>
+    <message>
+        <location line="+5"/>
+        <source>its input %1 is negated: not imported</source>
+        <translation>il suo ingresso %1 è negato: non importato</translation>
+    </message>
+    <message>
+        <location line="+10"/>
+        <source>its input %1 on a %2 edge is not imported</source>
+        <translation>il suo ingresso %1 con edge=&quot;%2&quot; non viene importato</translation>
     </message>
     <message>
         <location line="+83"/>
@@ -6644,7 +6675,7 @@ Valutazione: %4 µs (%5..%6)</translation>
         <translation>il flusso di potenza gira in un anello: non importato</translation>
     </message>
     <message>
-        <location line="+25"/>
+        <location line="+26"/>
         <source>a contact both negated and on an edge is not imported</source>
         <translation>un contatto insieme negato e sul fronte non viene importato</translation>
     </message>
@@ -6679,12 +6710,27 @@ Valutazione: %4 µs (%5..%6)</translation>
         <translation>%1 non ha un elemento per %2 nel flusso di potenza</translation>
     </message>
     <message>
-        <location line="+19"/>
+        <location line="+24"/>
         <source>output %1 of %2 as power flow is not imported</source>
         <translation>l&apos;uscita %1 di %2 come flusso di potenza non viene importata</translation>
     </message>
     <message>
-        <location line="+23"/>
+        <location line="+27"/>
+        <source>%1 has no contact that is never ON for an input left FALSE</source>
+        <translation>%1 non ha un contatto mai ON per un ingresso lasciato a FALSE</translation>
+    </message>
+    <message>
+        <location line="+26"/>
+        <source>its EN has a condition: while EN is OFF an IEC block stops where it stands, which %1&apos;s timers and counters do not; not imported</source>
+        <translation>il suo EN ha una condizione: mentre EN è OFF un blocco IEC si ferma dove si trova, i temporizzatori e i contatori di %1 no; non importato</translation>
+    </message>
+    <message>
+        <location line="+29"/>
+        <source>input %1 is %2, not power: not imported</source>
+        <translation>l&apos;ingresso %1 è %2, non flusso di potenza: non importato</translation>
+    </message>
+    <message>
+        <location filename="../model/exchange/plcopen_outputs.cpp" line="+22"/>
         <source>one instruction is expected</source>
         <translation>è attesa un&apos;istruzione</translation>
     </message>
@@ -6699,7 +6745,7 @@ Valutazione: %4 µs (%5..%6)</translation>
         <translation>%1 non ha una tale bobina</translation>
     </message>
     <message>
-        <location line="+23"/>
+        <location line="+25"/>
         <source>PT must be a time literal (T#1s) to be a set value: not imported</source>
         <translation>PT deve essere un letterale di tempo (T#1s) per essere un valore di preset: non importato</translation>
     </message>
@@ -6714,17 +6760,22 @@ Valutazione: %4 µs (%5..%6)</translation>
         <translation>%1 non ha un temporizzatore %2 che misuri %3 ms su %4</translation>
     </message>
     <message>
-        <location line="+88"/>
+        <location line="+91"/>
+        <source>%1 has no instruction to make a BCD value binary</source>
+        <translation>%1 non ha un&apos;istruzione per rendere binario un valore BCD</translation>
+    </message>
+    <message>
+        <location line="+18"/>
         <source>MOVE&apos;s OUT goes to no variable: not imported</source>
         <translation>l&apos;OUT di MOVE non va a una variabile: non importato</translation>
     </message>
     <message>
-        <location line="+17"/>
+        <location line="-17"/>
         <source>%1 has no move instruction</source>
         <translation>%1 non ha un&apos;istruzione di trasferimento</translation>
     </message>
     <message>
-        <location filename="../model/exchange/plcopen_rungs.cpp" line="+219"/>
+        <location filename="../model/exchange/plcopen_rungs.cpp" line="+256"/>
         <source>the ladder does not use it and it names no device: not imported</source>
         <translation>lo schema ladder non la usa e non indica un operando: non importata</translation>
     </message>
@@ -6734,12 +6785,17 @@ Valutazione: %4 µs (%5..%6)</translation>
         <translation>i salti, le etichette e i ritorni IEC non vengono importati: i salti propri di %1 funzionano diversamente; scriverli in Rung Studio</translation>
     </message>
     <message>
-        <location line="+5"/>
-        <source>this block is not imported: contacts, coils, TON, TOF, MOVE, the comparisons, NOT, R_TRIG and F_TRIG are (docs/plcopen.md)</source>
-        <translation>questo blocco non viene importato: lo sono contatti, bobine, TON, TOF, MOVE, i confronti, NOT, R_TRIG e F_TRIG (docs/plcopen.md)</translation>
+        <location line="-191"/>
+        <source>the instruction list in the file differs from its ladder (another tool changed the ladder?): the ladder is imported</source>
+        <translation>la lista istruzioni nel file differisce dal suo schema ladder (un altro strumento ha modificato lo schema?): viene importato lo schema ladder</translation>
     </message>
     <message>
-        <location line="+4"/>
+        <location line="+196"/>
+        <source>this block is not imported: contacts, coils, TON, TOF, CTU, CTD, CTUD, MOVE, the comparisons, NOT, R_TRIG and F_TRIG are (docs/plcopen.md)</source>
+        <translation>questo blocco non viene importato: lo sono contatti, bobine, TON, TOF, CTU, CTD, CTUD, MOVE, i confronti, NOT, R_TRIG e F_TRIG (docs/plcopen.md)</translation>
+    </message>
+    <message>
+        <location line="+5"/>
         <source>its power comes from %1 (line %2), which is not imported</source>
         <translation>il suo flusso viene da %1 (riga %2), che non viene importato</translation>
     </message>
@@ -6754,9 +6810,19 @@ Valutazione: %4 µs (%5..%6)</translation>
         <translation>nessuna uscita lo usa: non importato</translation>
     </message>
     <message>
-        <location filename="../model/exchange/plcopen_write.cpp" line="+92"/>
+        <location filename="../model/exchange/plcopen_write.cpp" line="+96"/>
         <source>%1 is written as a block of %2&apos;s own: other tools read the file but do not know this block</source>
         <translation>%1 viene scritto come blocco proprio di %2: altri strumenti leggono il file ma non conoscono questo blocco</translation>
+    </message>
+    <message>
+        <location line="+3"/>
+        <source>%1 is written as a block of %2&apos;s own (%3): other tools read the file but do not know this block</source>
+        <translation>%1 viene scritto come blocco proprio di %2 (%3): altri strumenti leggono il file ma non conoscono questo blocco</translation>
+    </message>
+    <message>
+        <location line="+17"/>
+        <source>the instruction list is not written beside the ladder: rung %1 does not convert (%2)</source>
+        <translation>la lista istruzioni non viene scritta accanto allo schema ladder: il segmento %1 non si converte (%2)</translation>
     </message>
     <message>
         <location filename="../model/exchange/plcopen_xml.cpp" line="+25"/>
@@ -6772,6 +6838,96 @@ Valutazione: %4 µs (%5..%6)</translation>
         <location line="+7"/>
         <source>the file holds no XML element</source>
         <translation>il file non contiene elementi XML</translation>
+    </message>
+    <message>
+        <location filename="../model/exchange/plcopen_counters.cpp" line="+26"/>
+        <source>%1&apos;s %2 stops counting at its set value, where CV counts on past PV (Q is the same); its reset is an RST, which acts where it stands in the program, not when the counter runs as R does</source>
+        <translation>il %2 di %1 smette di contare al valore di preset, mentre CV continua oltre PV (Q è lo stesso); il suo reset è un RST, che agisce dove si trova nel programma, non quando il contatore viene eseguito come fa R</translation>
+    </message>
+    <message>
+        <location line="+11"/>
+        <source>%1&apos;s %2 stops counting at 0, where CV counts on below 0 (Q is the same), and it is OFF until it has counted down, where a CTD is ON until LD first loads PV</source>
+        <translation>il %2 di %1 smette di contare a 0, mentre CV continua sotto 0 (Q è lo stesso), ed è OFF finché non ha contato fino in fondo, mentre un CTD è ON finché LD non carica PV la prima volta</translation>
+    </message>
+    <message>
+        <location line="+7"/>
+        <source>%1&apos;s %2 stops counting at its set value, where CV counts on past PV (Q is the same)</source>
+        <translation>il %2 di %1 smette di contare al valore di preset, mentre CV continua oltre PV (Q è lo stesso)</translation>
+    </message>
+    <message>
+        <location line="+10"/>
+        <source>%1&apos;s %2 stops counting at 0, where CV counts on below 0, and %1 compares the count at the end of the scan, where a CTUD sets QD when it runs</source>
+        <translation>il %2 di %1 smette di contare a 0, mentre CV continua sotto 0, e %1 confronta il conteggio alla fine della scansione, mentre un CTUD imposta QD quando viene eseguito</translation>
+    </message>
+    <message>
+        <location line="+8"/>
+        <source>%1 compares the count of %2 with PV at the end of the scan, where a CTUD sets QU when it runs</source>
+        <translation>%1 confronta il conteggio di %2 con PV alla fine della scansione, mentre un CTUD imposta QU quando viene eseguito</translation>
+    </message>
+    <message>
+        <location line="+6"/>
+        <source>%1&apos;s %2 wraps around at its limits, where IEC&apos;s CTUD stops</source>
+        <translation>il %2 di %1 ricomincia da capo ai suoi limiti, mentre il CTUD IEC si ferma</translation>
+    </message>
+    <message>
+        <location filename="../model/exchange/plcopen_export.cpp" line="+139"/>
+        <source>%1 reads a set value in a word as BCD digits, where PV is a number</source>
+        <translation>%1 legge un valore di preset in una word come cifre BCD, mentre PV è un numero</translation>
+    </message>
+    <message>
+        <location line="+280"/>
+        <source>%1 is written as an IEC %2: %3</source>
+        <translation>%1 viene scritto come %2 IEC: %3</translation>
+    </message>
+    <message>
+        <location filename="../model/exchange/plcopen_import_counters.cpp" line="+59"/>
+        <source>%1 is no counter of %2: give %3 a counter in the mapping file</source>
+        <translation>%1 non è un contatore di %2: assegnare a %3 un contatore nel file di corrispondenze</translation>
+    </message>
+    <message>
+        <location line="+34"/>
+        <source>%1 has no counter that counts as %2 does on %3</source>
+        <translation>%1 non ha un contatore che conti come %2 su %3</translation>
+    </message>
+    <message>
+        <location line="+2"/>
+        <source>it uses %1 together, which no counter of %2 has</source>
+        <translation>usa insieme %1, che nessun contatore di %2 ha</translation>
+    </message>
+    <message>
+        <location line="+8"/>
+        <source>PV is not given: not imported</source>
+        <translation>PV non è indicato: non importato</translation>
+    </message>
+    <message>
+        <location line="+33"/>
+        <source>PV %1 is a variable: %2 reads a set value in a word as BCD digits; not imported</source>
+        <translation>PV %1 è una variabile: %2 legge un valore di preset in una word come cifre BCD; non importato</translation>
+    </message>
+    <message>
+        <location line="+21"/>
+        <source>PV %1 is a variable: %2 keeps a counter&apos;s set value in the PLC, a number; not imported</source>
+        <translation>PV %1 è una variabile: %2 tiene il valore di preset di un contatore nel PLC, un numero; non importato</translation>
+    </message>
+    <message>
+        <location line="+62"/>
+        <source>%1 (%2) is imported as %3&apos;s %4: %5</source>
+        <translation>%1 (%2) viene importato come %4 di %3: %5</translation>
+    </message>
+    <message>
+        <location line="+3"/>
+        <source>%1 (%2) is imported as %3&apos;s %4, which counts the other way: its bit is %1&apos;s Q once %5 has been ON, and its present value is not CV</source>
+        <translation>%1 (%2) viene importato come %4 di %3, che conta nell&apos;altro verso: il suo bit è il Q di %1 dopo che %5 è stato ON, e il suo valore corrente non è CV</translation>
+    </message>
+    <message>
+        <location line="+13"/>
+        <source>%1.CV is not imported: %2 counts the other way, its present value is not CV</source>
+        <translation>%1.CV non viene importato: %2 conta nell&apos;altro verso, il suo valore corrente non è CV</translation>
+    </message>
+    <message>
+        <location line="+24"/>
+        <source>%1 of %2 to a variable is not imported: only a counter&apos;s CV is</source>
+        <translation>%1 di %2 verso una variabile non viene importato: solo il CV di un contatore</translation>
     </message>
 </context>
 <context>
