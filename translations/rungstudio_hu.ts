@@ -6739,7 +6739,7 @@ Kiértékelés: %4 µs (%5..%6)</translation>
         <translation>a(z) %1 PLC-nek nincs olyan %2 időzítője, amely %3 ms-ot mér a(z) %4 operandussal</translation>
     </message>
     <message>
-        <location line="+91"/>
+        <location line="+99"/>
         <source>%1 has no instruction to make a BCD value binary</source>
         <translation>a(z) %1 PLC-nek nincs utasítása BCD érték binárissá alakítására</translation>
     </message>
@@ -6879,7 +6879,7 @@ Kiértékelés: %4 µs (%5..%6)</translation>
         <translation>nincs megadva PV: nem kerül beolvasásra</translation>
     </message>
     <message>
-        <location line="+33"/>
+        <location line="+27"/>
         <source>PV %1 is a variable: %2 reads a set value in a word as BCD digits; not imported</source>
         <translation>a(z) %1 PV változó: a(z) %2 a szóban tárolt beállított értéket BCD számjegyekként olvassa; nem kerül beolvasásra</translation>
     </message>

@@ -6760,7 +6760,7 @@ Valutazione: %4 µs (%5..%6)</translation>
         <translation>%1 non ha un temporizzatore %2 che misuri %3 ms su %4</translation>
     </message>
     <message>
-        <location line="+91"/>
+        <location line="+99"/>
         <source>%1 has no instruction to make a BCD value binary</source>
         <translation>%1 non ha un&apos;istruzione per rendere binario un valore BCD</translation>
     </message>
@@ -6900,7 +6900,7 @@ Valutazione: %4 µs (%5..%6)</translation>
         <translation>PV non è indicato: non importato</translation>
     </message>
     <message>
-        <location line="+33"/>
+        <location line="+27"/>
         <source>PV %1 is a variable: %2 reads a set value in a word as BCD digits; not imported</source>
         <translation>PV %1 è una variabile: %2 legge un valore di preset in una word come cifre BCD; non importato</translation>
     </message>
