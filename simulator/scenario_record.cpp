@@ -27,16 +27,6 @@ QString seen(const ScanHistory &history, const model::Target &t,
     return parts.join(QLatin1Char(' '));
 }
 
-// Seconds with their decimals, as the scenario reads them back ("65.32s").
-QString seconds(qint64 ms) {
-    QString s = QString::number(static_cast<double>(ms) / 1000.0, 'f', 3);
-    while (s.endsWith(QLatin1Char('0')))
-        s.chop(1);
-    if (s.endsWith(QLatin1Char('.')))
-        s.chop(1);
-    return s + QLatin1Char('s');
-}
-
 } // namespace
 
 std::optional<RecordedScenario> recordScenario(const ScanHistory &history, const model::Target &t,
@@ -64,7 +54,9 @@ std::optional<RecordedScenario> recordScenario(const ScanHistory &history, const
           << QStringLiteral("program %1").arg(programLine)
           << QStringLiteral("period %1ms").arg(period) << QString();
     const std::vector<ScanHistory::Recorded> events = history.recorded();
-    auto time = [period](quint64 scan) { return seconds(static_cast<qint64>(scan) * period); };
+    auto time = [period](quint64 scan) {
+        return formatSeconds(static_cast<qint64>(scan) * period);
+    };
     bool periodNoted = false;
     bool insideNoted = false;
     std::size_t k = 0;
@@ -197,7 +189,7 @@ recordObservedScenario(const model::HistoryRecorder &history, const model::Targe
         if (previous >= 0 && at - period > previous && !outputs.empty()) {
             const QString values = expectation(events[k].seen - 1);
             if (!values.isEmpty())
-                lines << QStringLiteral("at %1 expect %2").arg(seconds(at - period), values);
+                lines << QStringLiteral("at %1 expect %2").arg(formatSeconds(at - period), values);
         }
         // One statement per input at this time: its last value.
         QStringList sets;
@@ -211,7 +203,7 @@ recordObservedScenario(const model::HistoryRecorder &history, const model::Targe
                              .arg(device(t, inputs[events[j].input]))
                              .arg(events[j].value));
         }
-        lines << QStringLiteral("at %1 set %2").arg(seconds(at), sets.join(QLatin1Char(' ')));
+        lines << QStringLiteral("at %1 set %2").arg(formatSeconds(at), sets.join(QLatin1Char(' ')));
         while (k < events.size() && events[k].at == at)
             ++k;
         previous = at;
@@ -220,7 +212,7 @@ recordObservedScenario(const model::HistoryRecorder &history, const model::Targe
     if (!outputs.empty() && end > previous) {
         const QString values = expectation(toMs - fromMs);
         if (!values.isEmpty())
-            lines << QStringLiteral("at %1 expect %2").arg(seconds(end), values);
+            lines << QStringLiteral("at %1 expect %2").arg(formatSeconds(end), values);
     }
     out.text = lines.join(QLatin1Char('\n')) + QLatin1Char('\n');
     return out;

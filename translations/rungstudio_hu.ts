@@ -1834,7 +1834,7 @@ Ctrl+Z / Ctrl+Y: visszavonás / mégis, Ctrl+görgő: nagyítás, F4: a program 
         <translation>%1. létrafok, %2. sor, %3. oszlop</translation>
     </message>
     <message>
-        <location filename="../app/gui/main_window_monitor.cpp" line="+50"/>
+        <location filename="../app/gui/main_window_monitor.cpp" line="+54"/>
         <source>Cannot save</source>
         <translation>A mentés nem sikerült</translation>
     </message>
@@ -3268,7 +3268,7 @@ Kiértékelés: %4 µs (%5..%6)</translation>
         <translation>Frissítés</translation>
     </message>
     <message>
-        <location filename="../app/gui/tests_panel_record.cpp" line="+57"/>
+        <location filename="../app/gui/tests_panel_record.cpp" line="+70"/>
         <source>Record...</source>
         <translation>Rögzítés...</translation>
     </message>
@@ -3373,7 +3373,12 @@ Kiértékelés: %4 µs (%5..%6)</translation>
         <translation>%1 idődiagramja, %2. sor</translation>
     </message>
     <message>
-        <location filename="../app/gui/tests_panel_record.cpp" line="+0"/>
+        <location filename="../app/gui/tests_panel_record.cpp" line="-5"/>
+        <source>Offline: the recording ends here; Stop Recording... writes it</source>
+        <translation>Offline: a rögzítés itt véget ér; a Rögzítés leállítása... megírja</translation>
+    </message>
+    <message>
+        <location line="+5"/>
         <source>Stop Recording...</source>
         <translation>Rögzítés leállítása...</translation>
     </message>
@@ -3408,7 +3413,7 @@ Kiértékelés: %4 µs (%5..%6)</translation>
         <translation>A PLC bemeneteinek és kimeneteinek rögzítése: a Rögzítés leállítása... megírja a forgatókönyvet</translation>
     </message>
     <message>
-        <location line="+38"/>
+        <location line="+46"/>
         <source>Nothing to record: start a simulation and work its inputs first</source>
         <translation>Nincs mit rögzíteni: előbb indítson szimulációt és kezelje a bemeneteit</translation>
     </message>
@@ -9191,7 +9196,7 @@ Kiértékelés: %4 µs (%5..%6)</translation>
         <translation>a program nem indul el</translation>
     </message>
     <message>
-        <location filename="../simulator/scenario_record.cpp" line="+48"/>
+        <location filename="../simulator/scenario_record.cpp" line="+38"/>
         <source>the simulation has run no scan yet: run it, work its inputs, then record</source>
         <translation>a szimuláció még egy ciklust sem futott: indítsa el, kezelje a bemeneteit, aztán rögzítsen</translation>
     </message>
@@ -9206,7 +9211,7 @@ Kiértékelés: %4 µs (%5..%6)</translation>
         <translation>Szimulációból rögzítve: a bemenetek, ahogy kezelték őket, a kimenetek, ahogy látszottak.</translation>
     </message>
     <message>
-        <location line="+24"/>
+        <location line="+26"/>
         <source>a command given while a scan was stopped inside is applied at the start of the next scan</source>
         <translation>a ciklus belsejében megállított állapotban adott parancs a következő ciklus elején érvényesül</translation>
     </message>

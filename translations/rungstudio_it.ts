@@ -1838,7 +1838,7 @@ Ctrl+Z / Ctrl+Y: annulla / ripeti, Ctrl+rotellina: zoom, F4: verifica il program
         <translation>Segmento %1, riga %2, colonna %3</translation>
     </message>
     <message>
-        <location filename="../app/gui/main_window_monitor.cpp" line="+50"/>
+        <location filename="../app/gui/main_window_monitor.cpp" line="+54"/>
         <source>Cannot save</source>
         <translation>Impossibile salvare</translation>
     </message>
@@ -3278,7 +3278,7 @@ Valutazione: %4 µs (%5..%6)</translation>
         <translation>Aggiorna</translation>
     </message>
     <message>
-        <location filename="../app/gui/tests_panel_record.cpp" line="+57"/>
+        <location filename="../app/gui/tests_panel_record.cpp" line="+70"/>
         <source>Record...</source>
         <translation>Registra...</translation>
     </message>
@@ -3385,7 +3385,12 @@ Valutazione: %4 µs (%5..%6)</translation>
         <translation>Diagramma temporale di %1, riga %2</translation>
     </message>
     <message>
-        <location filename="../app/gui/tests_panel_record.cpp" line="+0"/>
+        <location filename="../app/gui/tests_panel_record.cpp" line="-5"/>
+        <source>Offline: the recording ends here; Stop Recording... writes it</source>
+        <translation>Non in linea: la registrazione finisce qui; Ferma registrazione... la scrive</translation>
+    </message>
+    <message>
+        <location line="+5"/>
         <source>Stop Recording...</source>
         <translation>Ferma registrazione...</translation>
     </message>
@@ -3420,7 +3425,7 @@ Valutazione: %4 µs (%5..%6)</translation>
         <translation>Registrazione degli ingressi e delle uscite del PLC: Ferma registrazione... scrive lo scenario</translation>
     </message>
     <message>
-        <location line="+38"/>
+        <location line="+46"/>
         <source>Nothing to record: start a simulation and work its inputs first</source>
         <translation>Niente da registrare: avviare prima una simulazione e azionarne gli ingressi</translation>
     </message>
@@ -9212,7 +9217,7 @@ Valutazione: %4 µs (%5..%6)</translation>
         <translation>il programma non si avvia</translation>
     </message>
     <message>
-        <location filename="../simulator/scenario_record.cpp" line="+48"/>
+        <location filename="../simulator/scenario_record.cpp" line="+38"/>
         <source>the simulation has run no scan yet: run it, work its inputs, then record</source>
         <translation>la simulazione non ha ancora eseguito alcuna scansione: avviarla, azionarne gli ingressi, poi registrare</translation>
     </message>
@@ -9227,7 +9232,7 @@ Valutazione: %4 µs (%5..%6)</translation>
         <translation>Registrato da una simulazione: gli ingressi come sono stati azionati, le uscite come sono state viste.</translation>
     </message>
     <message>
-        <location line="+24"/>
+        <location line="+26"/>
         <source>a command given while a scan was stopped inside is applied at the start of the next scan</source>
         <translation>un comando dato mentre una scansione era ferma al suo interno viene applicato all&apos;inizio della scansione successiva</translation>
     </message>

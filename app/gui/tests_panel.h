@@ -71,6 +71,9 @@ public:
     // at every refresh; false with *error when not online or the program names none.
     bool startOnlineRecording(QString *error);
     bool recordingOnline() const;
+    // The PLC's session is about to go (Go Offline, the connection closed): what it recorded
+    // is kept, and Stop Recording... still writes it.
+    void keepOnlineRecording();
     void stopOnlineRecording(); // forgets what was recorded
     // The scenario Record... writes to `path` (the program named relative to it): of the
     // online recording while one runs, else of the simulation; empty with *error; *notes says
@@ -112,7 +115,9 @@ private:
     SourceGetter m_onlineSource;
     // The online recording: from the session's time m_recordingFrom (-1: none).
     QPointer<model::MonitorSource> m_recordSource;
+    std::unique_ptr<model::HistoryRecorder> m_recordKept; // after the session went
     qint64 m_recordingFrom = -1;
+    qint64 m_recordingTo = -1; // when kept: the session's last time
     std::vector<model::Address> m_recordInputs;
     std::vector<model::Address> m_recordOutputs;
     QObject m_recordReader; // what the recording watches, as a reader of the source

@@ -49,7 +49,20 @@ std::vector<model::Address> physicalBits(const editor::Document &document, bool 
 } // namespace
 
 bool TestsPanel::recordingOnline() const {
-    return m_recordingFrom >= 0 && m_recordSource;
+    return m_recordingFrom >= 0 && (m_recordSource || m_recordKept);
+}
+
+void TestsPanel::keepOnlineRecording() {
+    if (m_recordingFrom < 0 || !m_recordSource)
+        return;
+    const auto snapshot = m_recordSource->snapshot();
+    m_recordingTo = snapshot ? snapshot->statistics.timeMs : m_recordingFrom;
+    m_recordSource->readHistory([this](const model::HistoryRecorder &history) {
+        m_recordKept = std::make_unique<model::HistoryRecorder>(history);
+    });
+    m_recordSource->setWatched(&m_recordReader, {});
+    m_recordSource = nullptr;
+    emit message(tr("Offline: the recording ends here; Stop Recording... writes it"));
 }
 
 void TestsPanel::updateRecordButton() {
@@ -97,7 +110,9 @@ void TestsPanel::stopOnlineRecording() {
     if (m_recordSource)
         m_recordSource->setWatched(&m_recordReader, {});
     m_recordSource = nullptr;
+    m_recordKept.reset();
     m_recordingFrom = -1;
+    m_recordingTo = -1;
     updateRecordButton();
 }
 
@@ -111,14 +126,20 @@ QString TestsPanel::programLine(const QString &path) const {
 QString TestsPanel::recordedText(const QString &path, QString *error, QStringList *notes) const {
     const model::Target &t = m_document->target();
     if (recordingOnline()) {
-        const auto snapshot = m_recordSource->snapshot();
-        const qint64 to = snapshot ? snapshot->statistics.timeMs : m_recordingFrom;
         std::optional<simulator::RecordedScenario> recorded;
-        m_recordSource->readHistory([&](const model::HistoryRecorder &history) {
+        const auto write = [&](const model::HistoryRecorder &history, qint64 to) {
             recorded = simulator::recordObservedScenario(
                 history, t, programLine(path), m_recordInputs, m_recordOutputs, m_recordingFrom, to,
                 model::ScanStatistics{}.periodMs, error); // the engine's period
-        });
+        };
+        if (m_recordKept) {
+            write(*m_recordKept, m_recordingTo);
+        } else {
+            const auto snapshot = m_recordSource->snapshot();
+            const qint64 to = snapshot ? snapshot->statistics.timeMs : m_recordingFrom;
+            m_recordSource->readHistory(
+                [&](const model::HistoryRecorder &history) { write(history, to); });
+        }
         if (!recorded)
             return {};
         *notes = recorded->notes;

@@ -102,6 +102,14 @@ ConnectionSettings pl110Settings() {
     return s;
 }
 
+// The Vigor Computer Link with a fast poll and a short patience, for a PLC that answers at once.
+ConnectionSettings vigorSettings() {
+    ConnectionSettings s = defaultSettings(ProtocolKind::VigorLink);
+    s.link = {50, 1, 5};
+    s.pollIntervalMs = 5;
+    return s;
+}
+
 TEST(OnlineSession, PollsOnlyTheWatchedDevicesIntoTheSimulatorsSnapshotShape) {
     FakeModbusPlc plc;
     plc.setRegister(2010, 1234); // V10
@@ -391,10 +399,8 @@ TEST(OnlineSession, AVigorOnTheComputerLinkShowsItsBitsWordsAndRunState) {
     plc.setByte(0x0081, 0x04); // M10
     plc.setByte(0x1C0A, 0x39); // D5 = 3039h, low byte first
     plc.setByte(0x1C0B, 0x30);
-    ConnectionSettings s = defaultSettings(ProtocolKind::VigorLink);
-    s.link = {50, 1, 5};
-    s.pollIntervalMs = 5;
-    Harness h(model::Family::Vigor, s, [&](FakeTransport &t) { t.setResponder(plc.responder()); });
+    Harness h(model::Family::Vigor, vigorSettings(),
+              [&](FakeTransport &t) { t.setResponder(plc.responder()); });
     h.watch({"M10", "D5", "Y0", "T0"});
     QSignalSpy finished(h.session.get(), &model::MonitorSource::commandFinished);
     h.session->connectToPlc();
@@ -481,10 +487,8 @@ TEST(OnlineSession, KeepsAHistoryOfTheChartsDevicesRefreshByRefresh) {
     plc.setByte(0x03E0, 0x01); // M9000: RUN
     plc.setByte(0x1C0A, 0x39); // D5 = 3039h, low byte first
     plc.setByte(0x1C0B, 0x30);
-    ConnectionSettings s = defaultSettings(ProtocolKind::VigorLink);
-    s.link = {50, 1, 5};
-    s.pollIntervalMs = 5;
-    Harness h(model::Family::Vigor, s, [&](FakeTransport &t) { t.setResponder(plc.responder()); });
+    Harness h(model::Family::Vigor, vigorSettings(),
+              [&](FakeTransport &t) { t.setResponder(plc.responder()); });
     const model::Address m10 = address(h.target, "M10");
     const model::Address d5 = address(h.target, "D5");
     ASSERT_TRUE(h.session->watchHistory(m10));

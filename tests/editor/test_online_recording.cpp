@@ -17,6 +17,8 @@
 
 #include <gtest/gtest.h>
 
+#include <memory>
+
 using namespace rung;
 using rung::waits::kPatienceMs;
 
@@ -54,8 +56,9 @@ TEST(TestsPanelAlone, RecordsWhatAnOnlinePlcDidAsAScenarioThatPasses) {
     comms::ConnectionSettings s = comms::defaultSettings(comms::ProtocolKind::VigorLink);
     s.port = plc.path;
     s.pollIntervalMs = 20;
-    comms::OnlineSession session(vigor, s);
-    panel.setOnlineSource([&]() -> model::MonitorSource * { return &session; });
+    auto owned = std::make_unique<comms::OnlineSession>(vigor, s);
+    comms::OnlineSession &session = *owned;
+    panel.setOnlineSource([&]() -> model::MonitorSource * { return owned.get(); });
     session.connectToPlc();
     ASSERT_TRUE(QTest::qWaitFor(
         [&] { return session.connectionState() == comms::OnlineSession::ConnectionState::Online; },
@@ -99,6 +102,16 @@ TEST(TestsPanelAlone, RecordsWhatAnOnlinePlcDidAsAScenarioThatPasses) {
                        "at %1 set X0=1\nat %1 expect Y0=1\nat %1 set X0=0\nat %1 expect Y0=0\n$")
             .arg(time));
     EXPECT_TRUE(shape.match(text).hasMatch()) << text.toStdString();
+    // Going offline ends the recording but keeps it: the session goes, the scenario is the same
+    // but for its last instant.
+    panel.keepOnlineRecording();
+    session.disconnectFromPlc();
+    owned.reset();
+    EXPECT_TRUE(panel.recordingOnline());
+    EXPECT_NE(buttonSaying(panel, QStringLiteral("Stop Recording...")), nullptr);
+    const QString kept = panel.recordedText(file, &error, &notes);
+    EXPECT_TRUE(shape.match(kept).hasMatch()) << kept.toStdString();
+    EXPECT_EQ(kept.section(QLatin1Char('\n'), 0, 6), text.section(QLatin1Char('\n'), 0, 6));
     {
         QFile out(file);
         ASSERT_TRUE(out.open(QIODevice::WriteOnly));
@@ -114,5 +127,4 @@ TEST(TestsPanelAlone, RecordsWhatAnOnlinePlcDidAsAScenarioThatPasses) {
     ASSERT_TRUE(finished.wait(20000));
     ASSERT_EQ(panel.results().size(), 1u);
     EXPECT_TRUE(panel.results()[0].passed());
-    session.disconnectFromPlc();
 }
