@@ -148,12 +148,7 @@ LadderMetrics CompareView::metricsFor(double zoom) const {
     m.gridColumns = widest;
     if (m_a.target)
         m.foldColumns = std::max(0, m_a.target->limits.contactsPerRow);
-    m.cellWidth = std::floor(m.cellWidth * zoom);
-    m.rowHeight = std::round(m.rowHeight * zoom);
-    m.gutter = std::round(m.gutter * zoom);
-    m.outputWidth = std::floor(m.outputWidth * zoom);
-    m.commentHeight = std::round(m.commentHeight * zoom);
-    m.rungGap = std::round(m.rungGap * zoom);
+    m.zoomTo(zoom);
     return m;
 }
 

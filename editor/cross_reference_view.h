@@ -1,19 +1,19 @@
 #pragma once
 
-// The cross reference: for each device of the program every rung and step that uses it, as a
-// contact, a coil or in a box. The filter takes a device ("X0", only its uses), a prefix
-// ("X", every input) or nothing (every device). Activating a use shows its rung. It refreshes
-// only while it is on screen (setOnScreen), so a large program edits as fast with it as
-// without; a very long list stops at kMaxUses and says so.
-
-#include "document.h"
+// The cross reference panel: a filter field over the uses of the program's devices
+// (CrossReferenceModel: a device, a prefix or nothing), as a tree. Activating a use shows its
+// rung. It refreshes only while it is on screen (setOnScreen), so a large program edits as fast
+// with it as without; a very long list stops at the model's limit and says so.
 
 #include <QWidget>
 
 class QLineEdit;
-class QTreeWidget;
+class QTreeView;
 
 namespace rung::editor {
+
+class CrossReferenceModel;
+class Document;
 
 class CrossReferenceView : public QWidget {
     Q_OBJECT
@@ -22,12 +22,12 @@ public:
     explicit CrossReferenceView(Document *document, QWidget *parent = nullptr);
 
     QLineEdit *filter() const { return m_filter; }
-    QTreeWidget *tree() const { return m_tree; }
+    QTreeView *tree() const { return m_tree; }
+    CrossReferenceModel *model() const { return m_model; }
     void refresh();
     // Whether the user can see it (a dock tab behind another cannot be seen, yet counts as
     // visible); it catches up when it comes on screen.
     void setOnScreen(bool onScreen);
-    static constexpr int kMaxUses = 5000;
 
 signals:
     void rungActivated(int rung);
@@ -38,14 +38,17 @@ protected:
 
 private:
     void retranslate();
+    void setHint(); // the filter's, with the target's own devices as examples
+    // After the rows came anew: a device's uses open when the filter names it or when few
+    // devices are listed; the note of the limit spans the columns.
+    void arrangeRows();
     // Each column at least as wide as its title, the step as its digits; the device, the use
     // and the instruction share what is left of the tree's width.
     void fitColumns();
     Document *m_document;
+    CrossReferenceModel *m_model;
     QLineEdit *m_filter;
-    QTreeWidget *m_tree;
-    bool m_stale = true;
-    bool m_onScreen = false;
+    QTreeView *m_tree;
 };
 
 } // namespace rung::editor

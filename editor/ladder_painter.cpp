@@ -51,6 +51,15 @@ double LadderMetrics::commentBlock(const model::Rung &rung) const {
                                   : commentHeight * (rung.comment.count(QLatin1Char('\n')) + 1);
 }
 
+void LadderMetrics::zoomTo(double zoom) {
+    cellWidth = std::floor(cellWidth * zoom);
+    rowHeight = std::round(rowHeight * zoom);
+    gutter = std::round(gutter * zoom);
+    outputWidth = std::floor(outputWidth * zoom);
+    commentHeight = std::round(commentHeight * zoom);
+    rungGap = std::round(rungGap * zoom);
+}
+
 double LadderMetrics::rungHeight(const model::Rung &rung) const {
     const int lines = (blocks(rung) - 1) * blockStride(rung) + rung.rows;
     return commentBlock(rung) + lines * rowHeight + rungGap;

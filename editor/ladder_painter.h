@@ -32,6 +32,10 @@ struct LadderMetrics {
     int foldColumns = 0;
     static constexpr double kRightMargin = 12; // not zoomed
 
+    // The sizes at a zoom (1: as above) in whole pixels: rails, wires and cell borders fall on
+    // the pixel grid and stay crisp; the cell sizes round down, so fit-to-width never
+    // overshoots. The one rule of the ladder and of the compare view.
+    void zoomTo(double zoom);
     double rungHeight(const model::Rung &rung) const;
     // Drawn contact columns per line, and the blocks a rung takes.
     int shownColumns() const {

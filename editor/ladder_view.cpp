@@ -85,14 +85,7 @@ LadderMetrics LadderView::metricsAt(double zoom) const {
         widest = std::max(widest, r.columns);
     m.gridColumns = widest;
     m.foldColumns = std::max(0, m_document->target().limits.contactsPerRow);
-    // Whole pixels at every zoom: rails, wires and cell borders fall on the pixel grid and
-    // stay crisp (the cell sizes round down, so fit-to-width never overshoots).
-    m.cellWidth = std::floor(m.cellWidth * zoom);
-    m.rowHeight = std::round(m.rowHeight * zoom);
-    m.gutter = std::round(m.gutter * zoom);
-    m.outputWidth = std::floor(m.outputWidth * zoom);
-    m.commentHeight = std::round(m.commentHeight * zoom);
-    m.rungGap = std::round(m.rungGap * zoom);
+    m.zoomTo(zoom);
     return m;
 }
 

@@ -1,24 +1,16 @@
 #pragma once
 
-// The project's watch lists as a live table (the Watch dock): each list with its devices,
-// their symbols, the value (a word in the row's format: decimal, signed, hexadecimal, binary
-// or BCD, saved with the project), and whether a bit is forced. While a MonitorSource is set
-// the values follow its snapshots; a value typed in the value column is written, the force
-// column forces and releases. Devices come in by typing (WatchPanel), by a drop of devices
-// (from the ladder, the cross reference) or a range ("D0..D15"). Adding, removing and
-// changing a format are undo steps of the document. The view does not know which origin
-// (simulation or a PLC) feeds the source.
+// The Watch dock's table: a view over the project's watch lists (watch_list_model.h), each
+// list with its devices, their symbols, the value in the row's format and whether a bit is
+// forced. The view is the interaction: a double-click or F2 writes a value (a bit flips), the
+// format and force columns open their choices, the context menu sets, forces and releases,
+// Delete removes, devices are dropped in (from the ladder, the cross reference) and rows
+// dragged out (to the timing chart). Devices also come in by typing (WatchPanel). The view
+// does not know which origin (simulation or a PLC) feeds the source.
 
-#include "model/image/monitor_source.h"
-#include "model/image/value_format.h"
-#include "model/listing/il.h"
+#include "watch_list_model.h"
 
-#include <QHash>
-#include <QList>
-#include <QPointer>
-#include <QTreeWidget>
-
-#include <optional>
+#include <QTreeView>
 
 class QAction;
 
@@ -26,41 +18,43 @@ namespace rung::editor {
 
 class Document;
 
-class WatchListView : public QTreeWidget {
+class WatchListView : public QTreeView {
     Q_OBJECT
 
 public:
-    enum Column { DeviceColumn, SymbolColumn, ValueColumn, FormatColumn, ForceColumn, Columns };
+    using Column = WatchListModel::Column;
+    using enum WatchListModel::Column;
 
     explicit WatchListView(Document *document, QWidget *parent = nullptr);
+
+    WatchListModel *watchModel() const { return m_model; }
 
     // Adds a device (as the target writes it) to the selected list, or to the first, which is
     // made when there is none; a device already there is not added twice.
     void addDevice(const QString &device);
-    // Adds devices and ranges ("X0, D0..D15", "X0..X17") as one undo step; false, with
-    // message() naming what is wrong and nothing added, when a part is no device or range.
+    // Adds devices and ranges ("X0, D0..D15", "X0..X17") to the selected list as one undo
+    // step; false, with message() naming what is wrong and nothing added, when a part is no
+    // device or range.
     bool addDevices(const QStringList &texts);
-    // Removes the selected devices from their lists.
+    // Removes the selected devices (else the current one) from their lists.
     void removeSelected();
     // How a row's word value is shown (saved with the project, one undo step).
-    void setFormat(QTreeWidgetItem *item, model::ValueFormat format);
-    model::ValueFormat format(const QTreeWidgetItem *item) const;
+    void setFormat(const QModelIndex &index, model::ValueFormat format);
+    model::ValueFormat format(const QModelIndex &index) const;
 
     // Shows the values of the source's snapshots (null: the value column stays empty) and
     // tells the source which devices are watched.
     void setMonitorSource(model::MonitorSource *source);
-    model::MonitorSource *monitorSource() const { return m_source; }
+    model::MonitorSource *monitorSource() const { return m_model->monitorSource(); }
 
     // What the context menu offers for a device row while a source is set: a bit can be set,
     // reset, forced ON or OFF and released; a word takes a value typed in the value column
     // (Write Value..., F2 or a double-click); a timer or counter offers nothing (the engine
     // computes its current value). Empty for anything else.
-    QList<QAction *> deviceActions(QTreeWidgetItem *item, QObject *parent);
-    // Writes what the value column's text says to the row's device: ON/OFF or 1/0 for a
-    // bit, a value in the row's format for a word; false, with message(), when the text is
-    // no value for the device.
-    bool writeValue(QTreeWidgetItem *item, const QString &text);
-    // The devices of the selected rows, as the target writes them.
+    QList<QAction *> deviceActions(const QModelIndex &index, QObject *parent);
+    // Writes what the text says to the row's device (WatchListModel::writeValue).
+    bool writeValue(const QModelIndex &index, const QString &text);
+    // The devices of the selected rows, as the target writes them, in the table's order.
     QStringList selectedDevices() const;
     // What a drop at this viewport position does: the devices (or ranges) the data carries
     // go into the list under it (or the selected one); false when it carries none or one is
@@ -77,33 +71,18 @@ protected:
     void dragEnterEvent(QDragEnterEvent *event) override;
     void dragMoveEvent(QDragMoveEvent *event) override;
     void dropEvent(QDropEvent *event) override;
-    QMimeData *mimeData(const QList<QTreeWidgetItem *> &items) const override;
-    QStringList mimeTypes() const override;
+    void rowsInserted(const QModelIndex &parent, int first, int last) override;
+    void reset() override;
 
 private:
-    void refresh();
-    void setTexts(); // the header and the accessible name, in the language installed
-    void showValues();
-    void tellWatched();
-    void showRow(QTreeWidgetItem *item, const model::Snapshot *snapshot);
+    void showLists(int first, int last); // spanned and expanded
     int selectedList() const;
-    std::optional<model::Address> addressOf(const QTreeWidgetItem *item) const;
-    bool isBit(const model::Address &address) const;
-    int bitsOf(const model::Address &address) const;
-    void editValue(QTreeWidgetItem *item); // a bit flips, a word opens the value cell
-    void chooseFormat(QTreeWidgetItem *item);
-    void chooseForce(QTreeWidgetItem *item);
-    // True, with message(), for a timer or counter (its current value cannot be written).
-    bool refuseElement(const model::Address &address, const QString &device);
+    void editValue(const QModelIndex &index); // a bit flips, a word opens the value cell
+    void chooseFormat(const QModelIndex &index);
+    void chooseForce(const QModelIndex &index);
+    void addFormats(QMenu *menu, const QModelIndex &index);
 
-    Document *m_document;
-    QPointer<model::MonitorSource> m_source;
-    bool m_showing = false;               // the view writes the value column itself: not an edit
-    QTreeWidgetItem *m_editing = nullptr; // whose value is being typed (editValue)
-    // The program's timer and counter boxes of the rows (their constant presets), from the
-    // instructions held here.
-    std::shared_ptr<const std::vector<model::Instruction>> m_program;
-    QHash<const QTreeWidgetItem *, const model::Instruction *> m_boxes;
+    WatchListModel *m_model;
 };
 
 } // namespace rung::editor

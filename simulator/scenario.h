@@ -110,6 +110,8 @@ ScenarioResult runScenario(const Scenario &scenario, const std::shared_ptr<const
                            const std::function<void(const Engine &)> &afterScan = {});
 
 // A duration as the reports write it: "35s", "12.34s", "150ms", "2min 5s".
+// A time in seconds with the decimals it needs, as a scenario reads it back ("65.32s", "3s").
+QString formatSeconds(qint64 ms);
 QString formatScenarioTime(qint64 ms);
 
 // JUnit XML (the schema CI servers read: testsuites / testsuite / testcase / failure, error):

@@ -194,17 +194,20 @@ Scenario parseScenario(const QString &text, const QString &file,
     return s;
 }
 
+QString formatSeconds(qint64 ms) {
+    QString s = QString::number(static_cast<double>(ms) / 1000.0, 'f', 3);
+    while (s.endsWith(QLatin1Char('0')))
+        s.chop(1);
+    if (s.endsWith(QLatin1Char('.')))
+        s.chop(1);
+    return s + QLatin1Char('s');
+}
+
 QString formatScenarioTime(qint64 ms) {
     if (ms < 1000)
         return QStringLiteral("%1ms").arg(ms);
-    if (ms < 60000) {
-        QString s = QString::number(static_cast<double>(ms) / 1000.0, 'f', 3);
-        while (s.endsWith(QLatin1Char('0')))
-            s.chop(1);
-        if (s.endsWith(QLatin1Char('.')))
-            s.chop(1);
-        return s + QLatin1Char('s');
-    }
+    if (ms < 60000)
+        return formatSeconds(ms);
     const qint64 minutes = ms / 60000;
     const qint64 rest = ms % 60000;
     if (minutes >= 60) {

@@ -8,6 +8,8 @@
 #include "scan_history.h"
 #include "scenario.h"
 
+#include "model/image/history.h"
+
 #include <QString>
 #include <QStringList>
 
@@ -27,5 +29,16 @@ struct RecordedScenario {
 std::optional<RecordedScenario>
 recordScenario(const ScanHistory &history, const model::Target &target, const QString &programLine,
                const std::vector<model::Address> &outputs, QString *error);
+
+// A scenario from what a PLC was seen doing online: the history of its inputs and outputs,
+// refresh by refresh, between fromMs and toMs of the session's time. Each change of an input
+// becomes a set statement at its time from fromMs, rounded up to `periodMs`, the period the
+// scenario runs at; before each next one, and at the end, the outputs seen are expectations.
+// nullopt with *error (translated) when the history holds no input or output in that time.
+std::optional<RecordedScenario>
+recordObservedScenario(const model::HistoryRecorder &history, const model::Target &target,
+                       const QString &programLine, const std::vector<model::Address> &inputs,
+                       const std::vector<model::Address> &outputs, qint64 fromMs, qint64 toMs,
+                       qint64 periodMs, QString *error);
 
 } // namespace rung::simulator

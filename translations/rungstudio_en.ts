@@ -23,7 +23,7 @@
 <context>
     <name>rung::app::MainWindow</name>
     <message numerus="yes">
-        <location filename="../app/gui/main_window.cpp" line="+262"/>
+        <location filename="../app/gui/main_window.cpp" line="+209"/>
         <source>%n rung(s)</source>
         <translation>
             <numerusform>%n rung</numerusform>
@@ -39,7 +39,7 @@
         </translation>
     </message>
     <message numerus="yes">
-        <location filename="../app/gui/main_window_tools.cpp" line="+120"/>
+        <location filename="../app/gui/main_window_tools.cpp" line="+121"/>
         <source>Paste %n rungs</source>
         <translation>
             <numerusform>Paste %n rung</numerusform>
@@ -47,7 +47,7 @@
         </translation>
     </message>
     <message numerus="yes">
-        <location line="+46"/>
+        <location line="+45"/>
         <source>%n place(s) changed</source>
         <translation>
             <numerusform>%n place changed</numerusform>
@@ -55,7 +55,7 @@
         </translation>
     </message>
     <message numerus="yes">
-        <location line="+50"/>
+        <location line="+49"/>
         <source>%n row(s) of the symbol table name no device of this PLC and are left out of the file: %1. Export the other symbols?</source>
         <translation>
             <numerusform>%n row of the symbol table names no device of this PLC and is left out of the file: %1. Export the other symbols?</numerusform>
@@ -66,7 +66,7 @@
 <context>
     <name>rung::app::PlcopenImportDialog</name>
     <message numerus="yes">
-        <location filename="../app/gui/plcopen_exchange.cpp" line="+210"/>
+        <location filename="../app/gui/plcopen_exchange.cpp" line="+215"/>
         <source>Everything in the file is imported: %n rung(s).</source>
         <translation>
             <numerusform>Everything in the file is imported: %n rung.</numerusform>
@@ -96,7 +96,7 @@
 <context>
     <name>rung::app::TestsPanel</name>
     <message numerus="yes">
-        <location filename="../app/gui/tests_panel.cpp" line="+345"/>
+        <location filename="../app/gui/tests_panel.cpp" line="+343"/>
         <source>passed: %n expectation(s)</source>
         <translation>
             <numerusform>passed: %n expectation</numerusform>

@@ -55,6 +55,8 @@ int loadPlcopenInput(const CommonOptions &options, const QString &mapFile, bool 
         err << CliTr::tr("%1: note: the file was written by Rung Studio for %2; it is read for %3")
                    .arg(options.file, imported.fileTarget, target->id)
             << '\n';
+    for (const QString &note : imported.notes)
+        err << options.file << ": " << CliTr::tr("note") << ": " << note << '\n';
     for (const model::ImportIssue &i : imported.issues)
         err << QStringLiteral("%1:%2: %3: %4: %5")
                    .arg(options.file)

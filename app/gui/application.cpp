@@ -115,9 +115,9 @@ int runGui(int argc, char **argv) {
                 const model::ValueFormat formats[] = {
                     model::ValueFormat::Decimal, model::ValueFormat::Hex,
                     model::ValueFormat::Binary, model::ValueFormat::Bcd};
-                for (int k = 0;
-                     k < static_cast<int>(words.size()) && watch->topLevelItemCount() > 0; ++k)
-                    if (QTreeWidgetItem *row = watch->topLevelItem(0)->child(k))
+                const QModelIndex list = watch->model()->index(0, 0);
+                for (int k = 0; k < static_cast<int>(words.size()); ++k)
+                    if (const QModelIndex row = watch->model()->index(k, 0, list); row.isValid())
                         watch->setFormat(row, formats[k]);
                 editor::TimingChart *timing = window.timingChart();
                 timing->addDevices(named);

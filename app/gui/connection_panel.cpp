@@ -29,7 +29,9 @@
 #include <QRadioButton>
 #include <QSettings>
 #include <QSpinBox>
+#include <QStyle>
 #include <QTimer>
+#include <QToolButton>
 #include <QVBoxLayout>
 
 namespace rung::app {
@@ -119,8 +121,13 @@ void ConnectionPanel::build() {
     m_port->setInsertPolicy(QComboBox::NoInsert);
     m_port->setSizeAdjustPolicy(QComboBox::AdjustToMinimumContentsLengthWithIcon);
     m_port->setMinimumContentsLength(12);
-    m_refresh = new QPushButton;
+    // An icon beside the port, as the vendors' port lists have it: a button's word here made
+    // the panel wider than its column and pushed the settings behind a sideways scroll bar.
+    m_refresh = new QToolButton;
     m_refresh->setObjectName(QStringLiteral("connectionRefresh"));
+    m_refresh->setToolButtonStyle(Qt::ToolButtonIconOnly);
+    m_refresh->setIcon(QIcon::fromTheme(QStringLiteral("view-refresh"),
+                                        style()->standardIcon(QStyle::SP_BrowserReload)));
     portRow->addWidget(m_port, 1);
     portRow->addWidget(m_refresh);
     m_portLabel = new QLabel;
@@ -239,7 +246,7 @@ void ConnectionPanel::build() {
     connect(m_protocol, &QComboBox::activated, this, [this] { protocolChosen(); });
     connect(m_viaSerial, &QRadioButton::toggled, this,
             [this](bool serial) { showVia(serial ? 0 : 1); });
-    connect(m_refresh, &QPushButton::clicked, this, &ConnectionPanel::refreshPorts);
+    connect(m_refresh, &QToolButton::clicked, this, &ConnectionPanel::refreshPorts);
     connect(m_testButton, &QPushButton::clicked, this, [this] { testConnection(); });
     connect(m_connect, &QPushButton::clicked, this, [this] {
         if (m_session)
@@ -266,7 +273,8 @@ void ConnectionPanel::retranslate() {
                           "'rungstudio-cli serve --pty' prints, or the link that\n"
                           "'serve --pty --link PATH' keeps at PATH, which still leads to the\n"
                           "PLC after serve restarts"));
-    m_refresh->setText(tr("Refresh"));
+    m_refresh->setText(tr("Refresh")); // its accessible name
+    m_refresh->setToolTip(tr("Look for serial ports again"));
     updatePortHint();
     m_baudLabel->setText(tr("Baud rate:"));
     m_frameLabel->setText(tr("Format:"));

@@ -27,6 +27,7 @@ class QLabel;
 class QLineEdit;
 class QPlainTextEdit;
 class QPushButton;
+class QToolButton;
 class QRadioButton;
 class QSpinBox;
 class QTimer;
@@ -154,7 +155,7 @@ private:
     QWidget *m_via = nullptr;
     QWidget *m_viaPages[2] = {}; // the serial settings, the TCP ones
     QComboBox *m_port = nullptr;
-    QPushButton *m_refresh = nullptr;
+    QToolButton *m_refresh = nullptr;
     QComboBox *m_baud = nullptr;
     QComboBox *m_frame = nullptr;
     QLineEdit *m_host = nullptr;

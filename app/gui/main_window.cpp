@@ -3,9 +3,9 @@
 #include "connection_panel.h"
 #include "debug_controller.h"
 #include "dialogs.h"
-#include "dock_layout.h"
 #include "eliding_label.h"
 #include "file_controller.h"
+#include "layout_controller.h"
 #include "listing_controller.h"
 #include "online_controller.h"
 #include "simulation_controller.h"
@@ -29,12 +29,7 @@
 #include <QMenuBar>
 #include <QMessageBox>
 #include <QPushButton>
-#include <QScreen>
-#include <QSettings>
-#include <QSplitter>
 #include <QStatusBar>
-#include <QTabBar>
-#include <QTabWidget>
 #include <QTimer>
 #include <QVBoxLayout>
 
@@ -53,14 +48,8 @@ MainWindow::MainWindow(QWidget *parent)
     m_il->setObjectName(QStringLiteral("ilEditor"));
     m_problems = new editor::ProblemsView;
     m_problems->setObjectName(QStringLiteral("problemsView"));
-    m_tabs = new QTabWidget;
-    m_split = new QSplitter(Qt::Horizontal);
-    auto *central = new QWidget;
-    auto *layout = new QVBoxLayout(central);
-    layout->setContentsMargins(0, 0, 0, 0);
-    layout->addWidget(m_tabs);
-    layout->addWidget(m_split);
-    setCentralWidget(central);
+    // The ladder and the list as tabs or side by side; the docks' places (layout_controller.h).
+    m_layout = new LayoutController(this, m_ladder, m_il, this);
     setStatusBar(new StatusBar); // a long message ends in "…" before the fields
 
     m_statusTarget = new QLabel;
@@ -75,14 +64,6 @@ MainWindow::MainWindow(QWidget *parent)
     buildMonitorDocks(); // main_window_panels.cpp
     setupSimulation();
     setupOnline(); // main_window_monitor.cpp
-    // Editing docks left, live ones together, findings below (dock_layout.h); a saved
-    // layout, restored below, keeps the user's own.
-    const bool wide = screen()->availableGeometry().width() >= kWideScreen;
-    arrangeDocks(this, wide);
-    // The layout took its minimum size while the docks were added one beside the other
-    // (four below the ladder: wider than an 800 px screen); grouped, they need less, and the
-    // resize below must not be held to the old minimum.
-    QMainWindow::layout()->activate();
     // The list as typed follows the program after the simulation and the connection did
     // (their programChanged first), as the window always had it.
     m_listing =
@@ -137,22 +118,7 @@ MainWindow::MainWindow(QWidget *parent)
             updateStatus();
     });
 
-    QSettings settings;
-    setSideBySide(settings.value(QStringLiteral("view/sideBySide"), false).toBool());
-    m_split->restoreState(settings.value(QStringLiteral("view/split")).toByteArray());
-    // Roomy where the screen allows, never larger than it: on a 1366x768 laptop a 1400x900
-    // window would hide the problems and the status bar below the screen's edge.
-    const QSize available = screen()->availableGeometry().size();
-    resize(QSize(1400, 900).boundedTo(available - QSize(16, 32)));
-    resizeDocks({findChild<QDockWidget *>(QStringLiteral("problemsDock"))}, {150}, Qt::Vertical);
-    resizeDocks({findChild<QDockWidget *>(QStringLiteral("projectDock"))}, {230}, Qt::Horizontal);
-    restoreGeometry(settings.value(QStringLiteral("window/geometry")).toByteArray());
-    if (!restoreState(settings.value(QStringLiteral("window/state")).toByteArray(),
-                      kDockLayoutVersion)) {
-        // First start (or a layout of the docks before issue 31): the columns as wide as the
-        // ladder leaves them. Docks take sizes once laid out.
-        QTimer::singleShot(0, this, [this, wide] { sizeDocks(this, wide); });
-    }
+    m_layout->restore(); // the first start's places, or those the user left
     m_listing->refreshFromDocument();
     updateTitle();
 }
@@ -231,26 +197,7 @@ void MainWindow::editRungComment() {
 }
 
 void MainWindow::setSideBySide(bool sideBySide) {
-    m_sideBySide = sideBySide;
-    QSettings().setValue(QStringLiteral("view/sideBySide"), sideBySide);
-    m_tabs->clear();
-    if (sideBySide) {
-        m_split->addWidget(m_ladder);
-        m_split->addWidget(m_il);
-        // The list's comment lines want about 60 characters; the ladder keeps the larger part.
-        m_split->setStretchFactor(0, 3);
-        m_split->setStretchFactor(1, 2);
-        // Out of the tabs the pages come hidden (a tab widget hides all but its current one).
-        m_ladder->show();
-        m_il->show();
-        m_split->show();
-        m_tabs->hide();
-    } else {
-        m_tabs->addTab(m_ladder, tr("Ladder"));
-        m_tabs->addTab(m_il, tr("Instruction List"));
-        m_tabs->show();
-        m_split->hide();
-    }
+    m_layout->setSideBySide(sideBySide);
 }
 
 void MainWindow::refreshProjectInfo() {
@@ -336,14 +283,12 @@ void MainWindow::start(const QString &file, const QString &targetId, bool askToR
 
 void MainWindow::locate(const model::Diagnostic &d) {
     if (d.location.onLadder()) {
-        if (m_tabs->isVisible())
-            m_tabs->setCurrentWidget(m_ladder);
+        m_layout->showPage(m_ladder);
         m_ladder->setCursor(
             {d.location.rung, std::max(0, d.location.row), std::max(0, d.location.cell)});
         m_ladder->setFocus();
     } else if (d.location.onListing()) {
-        if (m_tabs->isVisible())
-            m_tabs->setCurrentWidget(m_il);
+        m_layout->showPage(m_il);
         m_il->goToLine(d.location.line);
     }
 }
@@ -352,19 +297,6 @@ void MainWindow::changeEvent(QEvent *event) {
     if (event->type() == QEvent::LanguageChange && m_toolBar)
         retranslate();
     QMainWindow::changeEvent(event);
-}
-
-void MainWindow::childEvent(QChildEvent *event) {
-    // Qt makes a tab bar for docks tabbed together when it lays them out, eliding the titles
-    // to the dock's width: with the project, the cross reference, the terminals and the
-    // simulation beside the ladder at 1366x768 every tab read "P...", "Si...". Whole titles
-    // and scroll arrows tell each apart; polished is after Qt's own settings.
-    if (event->polished())
-        if (auto *tabs = qobject_cast<QTabBar *>(event->child())) {
-            tabs->setElideMode(Qt::ElideNone);
-            tabs->setUsesScrollButtons(true);
-        }
-    QMainWindow::childEvent(event);
 }
 
 void MainWindow::retranslate() {
@@ -381,10 +313,7 @@ void MainWindow::retranslate() {
     m_debug->retranslate();
     m_simulationMenu->updateStatus();
     retranslatePanels();
-    if (m_tabs->count() == 2) {
-        m_tabs->setTabText(0, tr("Ladder"));
-        m_tabs->setTabText(1, tr("Instruction List"));
-    }
+    m_layout->retranslate();
     // The findings again, now in this language; the list as typed (errors or forms of its own)
     // stays, and its own findings are read again from it.
     m_listing->recheck();
@@ -399,11 +328,7 @@ void MainWindow::closeEvent(QCloseEvent *event) {
         event->ignore();
         return;
     }
-    QSettings settings;
-    settings.setValue(QStringLiteral("window/geometry"), saveGeometry());
-    settings.setValue(QStringLiteral("window/state"), saveState(kDockLayoutVersion));
-    if (m_sideBySide)
-        settings.setValue(QStringLiteral("view/split"), m_split->saveState());
+    m_layout->save();
     m_files->closing();
     event->accept();
 }

@@ -18,7 +18,6 @@
 class QLabel;
 class QSplitter;
 class QTabWidget;
-class QTreeWidget;
 class QLineEdit;
 class QMenu;
 class QToolBar;
@@ -50,6 +49,7 @@ class ConnectionPanel;
 class DebugController;
 class ElidingLabel;
 class FileController;
+class LayoutController;
 class ListingController;
 class OnlineController;
 class RecoveryFile;
@@ -74,6 +74,7 @@ public:
     // The window's files (file_controller.h): open, save, the recovery file. The window's
     // own entry points are its controller's.
     FileController *files() const { return m_files; }
+    LayoutController *layoutController() const { return m_layout; }
     bool openFile(const QString &path, const QString &targetId = QString(), bool quiet = false);
     bool saveTo(const QString &path);
     QString completeSavePath(const QString &chosen, const QStringList &suffixes);
@@ -106,7 +107,7 @@ public:
     ConnectionPanel *connectionPanel() const;
     OnlineController *online() const { return m_online; }
     QLineEdit *crossReferenceDevice() { return m_crossDevice; }
-    QTreeWidget *crossReference() { return m_crossTree; }
+    editor::CrossReferenceView *crossReference() const { return m_crossReference; }
     void writeRecovery();
     bool offerRecovery(bool ask = true);
     void start(const QString &file, const QString &targetId, bool askToRecover = true);
@@ -125,8 +126,6 @@ public:
 protected:
     void closeEvent(QCloseEvent *event) override;
     void changeEvent(QEvent *event) override; // LanguageChange: retranslate()
-    // The docks' tab bars, as Qt makes them: whole titles (scrolled), never "P..." / "Si...".
-    void childEvent(QChildEvent *event) override;
 
 private:
     void buildActions();
@@ -165,12 +164,9 @@ private:
     editor::IoPanel *m_ioPanel = nullptr;
     editor::TimingChart *m_chart = nullptr;
     bool m_panelsShown = false; // the first simulation showed the inputs and outputs
-    QTabWidget *m_tabs;
-    QSplitter *m_split;
     SymbolTable *m_symbols = nullptr;
     editor::CrossReferenceView *m_crossReference = nullptr;
     QLineEdit *m_crossDevice = nullptr;
-    QTreeWidget *m_crossTree = nullptr;
     QLabel *m_projectInfo = nullptr;
     QLabel *m_symbolsLabel = nullptr;
     QToolBar *m_toolBar = nullptr;
@@ -186,8 +182,8 @@ private:
     QLabel *m_statusOrigin = nullptr;
     ListingController *m_listing = nullptr; // the list as typed, in step with the program
     FileController *m_files = nullptr;
-    QString m_findText; // the device of the last Find, for F3 / Shift+F3
-    bool m_sideBySide = false;
+    LayoutController *m_layout = nullptr; // tabs or side by side, the docks' places
+    QString m_findText;                   // the device of the last Find, for F3 / Shift+F3
 };
 
 } // namespace rung::app

@@ -1,5 +1,7 @@
 #include "main_window.h"
 
+#include "layout_controller.h"
+
 #include "about_dialog.h"
 #include "dialogs.h"
 #include "file_controller.h"
@@ -214,10 +216,8 @@ void MainWindow::buildActions() {
                   QKeySequence(Qt::CTRL | Qt::Key_Delete));
 
     QMenu *view = menuBar()->addMenu(tr("&View"));
-    QAction *side = view->addAction(tr("Ladder and List &Side by Side"));
-    side->setCheckable(true);
-    side->setChecked(QSettings().value(QStringLiteral("view/sideBySide"), false).toBool());
-    connect(side, &QAction::toggled, this, &MainWindow::setSideBySide);
+    m_layout->addActions(view); // side by side, reset the layout (layout_controller.cpp)
+    view->addSeparator();
     QAction *names = view->addAction(tr("Show Symbol &Names"));
     names->setCheckable(true);
     names->setToolTip(tr("Names from the symbol table in place of the addresses"));

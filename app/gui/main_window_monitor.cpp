@@ -10,6 +10,7 @@
 #include "online_controller.h"
 #include "simulation_controller.h"
 #include "simulation_menu.h"
+#include "tests_panel.h"
 
 #include "editor/il_editor.h"
 #include "editor/io_panel.h"
@@ -36,6 +37,9 @@ void MainWindow::setupOnline() {
                     setPanelsSource(session);
                     return;
                 }
+                // A recording of the PLC keeps what it has: the session goes next.
+                if (auto *tests = findChild<TestsPanel *>())
+                    tests->keepOnlineRecording();
                 // Offline: the simulation's values again (or none).
                 setMonitorSource(m_simulation->monitorSource(), m_simulation->historyShown()
                                                                     ? MonitorOrigin::History

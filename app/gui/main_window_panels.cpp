@@ -49,6 +49,8 @@ void MainWindow::buildMonitorDocks() {
     tests->setHistory([this] {
         return m_simulation->session() ? m_simulation->session()->scanHistory() : nullptr;
     });
+    tests->setOnlineSource(
+        [this]() -> model::MonitorSource * { return m_online ? m_online->session() : nullptr; });
     connect(tests, &TestsPanel::message, this,
             [this](const QString &t) { statusBar()->showMessage(t, 10000); });
     dock("testsDock", tests, Qt::BottomDockWidgetArea);
@@ -84,7 +86,10 @@ void MainWindow::retranslatePanels() {
 
 void MainWindow::addPanelActions(QMenu *menu) {
     menu->addSeparator();
-    for (const char *name : {"watchDock", "ioDock", "timingChartDock", "testsDock"})
+    // Every dock of the window can be opened again from here (the live ones from the
+    // Simulation menu and Online's entry below): a closed Project or Problems had no way back.
+    for (const char *name : {"projectDock", "crossReferenceDock", "problemsDock", "watchDock",
+                             "ioDock", "timingChartDock", "testsDock"})
         if (auto *d = findChild<QDockWidget *>(QString::fromLatin1(name)))
             menu->addAction(d->toggleViewAction());
 }

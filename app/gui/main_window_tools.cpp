@@ -1,5 +1,7 @@
 #include "main_window.h"
 
+#include "layout_controller.h"
+
 #include "dialogs.h"
 #include "file_controller.h"
 #include "symbol_table.h"
@@ -19,7 +21,6 @@
 #include <QMessageBox>
 #include <QMimeData>
 #include <QStatusBar>
-#include <QTreeWidget>
 #include <QVBoxLayout>
 
 // Clipboard, find and replace, cross reference: the tools that work on the whole program
@@ -141,8 +142,7 @@ bool MainWindow::findDevice(const QString &text, bool backwards) {
         return false;
     }
     m_findText = text.trimmed();
-    if (m_tabs->isVisible())
-        m_tabs->setCurrentWidget(m_ladder);
+    m_layout->showPage(m_ladder);
     m_ladder->setFocus();
     return m_ladder->findDevice(std::get<model::Address>(parsed), backwards);
 }
@@ -193,7 +193,6 @@ void MainWindow::buildCrossReference() {
     dock->setObjectName(QStringLiteral("crossReferenceDock"));
     m_crossReference = new editor::CrossReferenceView(m_document);
     m_crossDevice = m_crossReference->filter();
-    m_crossTree = m_crossReference->tree();
     dock->setWidget(m_crossReference);
     addDockWidget(Qt::LeftDockWidgetArea, dock); // a tab beside the project (dock_layout.h)
     connect(dock, &QDockWidget::visibilityChanged, m_crossReference,

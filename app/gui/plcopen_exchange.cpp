@@ -54,8 +54,8 @@ void exportPlcopenFile(QWidget *parent, const model::Project &project, const QSt
     }
     if (!out.notes.isEmpty())
         messageBox(QMessageBox::Information, parent, PlcopenImportDialog::tr("Export PLCopen XML"),
-                   PlcopenImportDialog::tr("%1 is written. Other tools will read it, but not these "
-                                           "blocks:\n\n%2")
+                   PlcopenImportDialog::tr("%1 is written. Other tools will read it, with these "
+                                           "notes:\n\n%2")
                        .arg(QDir::toNativeSeparators(path), out.notes.join(QLatin1Char('\n'))));
 }
 
@@ -118,6 +118,11 @@ PlcopenImportDialog::PlcopenImportDialog(const QByteArray &xml, const QString &f
     m_summary = new QLabel;
     m_summary->setWordWrap(true);
     layout->addWidget(m_summary);
+    // What is imported but works otherwise than in the file (an IEC CTU as the PLC's counter).
+    m_notes = new QLabel;
+    m_notes->setWordWrap(true);
+    m_notes->setTextInteractionFlags(Qt::TextSelectableByMouse);
+    layout->addWidget(m_notes);
     auto *buttons = new QDialogButtonBox(QDialogButtonBox::Cancel);
     m_import = buttons->addButton(tr("&Import"), QDialogButtonBox::AcceptRole);
     connect(buttons, &QDialogButtonBox::accepted, this, &PlcopenImportDialog::accept);
@@ -214,6 +219,12 @@ void PlcopenImportDialog::refresh() {
                               "device yet.",
                               nullptr, static_cast<int>(m_result.issues.size()))
                                .arg(m_result.unmapped.size()));
+    m_notes->setVisible(!m_result.notes.isEmpty());
+    m_notes->setText(m_result.notes.isEmpty()
+                         ? QString()
+                         : tr("Imported, but working otherwise than in the file:") +
+                               QStringLiteral("\n- ") +
+                               m_result.notes.join(QStringLiteral("\n- ")));
     m_import->setEnabled(canImport());
 }
 

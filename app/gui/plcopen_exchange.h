@@ -48,6 +48,8 @@ public:
     QTableWidget *devices() const { return m_devices; }
     QListWidget *issues() const { return m_issues; }
     QCheckBox *leaveOut() const { return m_leaveOut; }
+    // What is imported but works otherwise than in the file (PlcopenImport::notes).
+    QLabel *notes() const { return m_notes; }
     QComboBox *targetBox() const { return m_target; }
     bool canImport() const;
     // Import: refreshed with the devices as typed; stays open, saying why, while a variable
@@ -65,6 +67,7 @@ private:
     QListWidget *m_issues;
     QCheckBox *m_leaveOut;
     QLabel *m_summary;
+    QLabel *m_notes;
     QPushButton *m_import = nullptr;
     model::PlcopenImport m_result;
     std::map<QString, QString> m_typed; // devices the user typed, by variable

@@ -1,6 +1,7 @@
 #include "symbol_table.h"
 
 #include "editor/document.h"
+#include "editor/symbol_table_model.h"
 #include "model/project/symbols_csv.h"
 
 #include "model/project/file_read.h"
@@ -8,6 +9,7 @@
 #include <QDir>
 #include <QEvent>
 #include <QHeaderView>
+#include <QIdentityProxyModel>
 #include <QSaveFile>
 #include <QStyle>
 
@@ -16,104 +18,72 @@ namespace rung::app {
 namespace {
 // A symbol table opened, imported: read no further than this.
 constexpr qint64 kMaxCsvBytes = 64 * 1024 * 1024;
+
+// A row that is no symbol yet, as the table shows it: its device's cell in the colours of an
+// error (editor::SymbolTableModel::PendingRole; the tooltip says why).
+class MarkedRows : public QIdentityProxyModel {
+public:
+    using QIdentityProxyModel::QIdentityProxyModel;
+
+    QVariant data(const QModelIndex &index, int role) const override {
+        if ((role == Qt::ForegroundRole || role == Qt::BackgroundRole) &&
+            index.column() == editor::SymbolTableModel::DeviceColumn &&
+            index.data(editor::SymbolTableModel::PendingRole).toBool())
+            return role == Qt::ForegroundRole ? QColor(0xb0, 0x00, 0x20) : QColor(0xfd, 0xe7, 0xea);
+        return QIdentityProxyModel::data(index, role);
+    }
+};
+
 } // namespace
 
 SymbolTable::SymbolTable(editor::Document *document, QWidget *parent)
-    : QTableWidget(0, 3, parent)
-    , m_document(document) {
+    : QTableView(parent)
+    , m_document(document)
+    , m_model(new editor::SymbolTableModel(document, this)) {
     setObjectName(QStringLiteral("symbolsTable"));
+    auto *shown = new MarkedRows(this);
+    shown->setSourceModel(m_model);
+    setModel(shown);
     horizontalHeader()->setStretchLastSection(true);
     setHeaders();
     verticalHeader()->hide();
     verticalHeader()->setDefaultSectionSize(fontMetrics().height() + 8);
-    connect(this, &QTableWidget::cellChanged, this, [this](int row, int) {
-        if (!m_updating)
-            edited(row);
-    });
+    connect(m_model, &editor::SymbolTableModel::message, this, &SymbolTable::message);
+    connect(m_model, &editor::SymbolTableModel::pendingChanged, this, &SymbolTable::pendingChanged);
 }
 
 void SymbolTable::setHeaders() {
-    const QStringList titles{tr("Device"), tr("Name"), tr("Comment")};
-    setHorizontalHeaderLabels(titles);
     // The device and name columns as wide as their titles ("Operandus" was cut at 70 px),
     // never narrower than a device and a short name; the comment takes the rest.
     const QFontMetrics metrics(horizontalHeader()->font());
     const int padding = 2 * horizontalHeader()->style()->pixelMetric(QStyle::PM_HeaderMargin) + 12;
-    setColumnWidth(0, std::max(70, metrics.horizontalAdvance(titles[0]) + padding));
-    setColumnWidth(1, std::max(90, metrics.horizontalAdvance(titles[1]) + padding));
+    auto title = [this](int column) {
+        return m_model->headerData(column, Qt::Horizontal).toString();
+    };
+    setColumnWidth(editor::SymbolTableModel::DeviceColumn,
+                   std::max(70, metrics.horizontalAdvance(title(0)) + padding));
+    setColumnWidth(editor::SymbolTableModel::NameColumn,
+                   std::max(90, metrics.horizontalAdvance(title(1)) + padding));
 }
 
 void SymbolTable::changeEvent(QEvent *event) {
-    if (event->type() == QEvent::LanguageChange)
+    if (event->type() == QEvent::LanguageChange) {
+        m_model->retranslate();
         setHeaders();
-    QTableWidget::changeEvent(event);
+    }
+    QTableView::changeEvent(event);
+}
+
+const std::vector<model::PendingSymbol> &SymbolTable::pending() const {
+    return m_model->pending();
 }
 
 void SymbolTable::setPending(const std::vector<model::PendingSymbol> &rows) {
-    m_pending = rows;
-}
-
-void SymbolTable::edited(int row) {
-    // Edited in place: the complete rows make the new symbol list (one undo step when it
-    // changed), the others wait in the table; a row cleared of everything goes.
-    std::vector<model::Symbol> symbols;
-    const std::vector<model::PendingSymbol> before = std::move(m_pending);
-    m_pending.clear();
-    auto text = [this](int r, int c) { return item(r, c) ? item(r, c)->text() : QString(); };
-    for (int r = 0; r < rowCount(); ++r) {
-        const model::PendingSymbol typed{text(r, 0).trimmed(), text(r, 1), text(r, 2)};
-        if (typed.device.isEmpty() && typed.name.isEmpty() && typed.comment.isEmpty())
-            continue;
-        const auto parsed =
-            typed.device.isEmpty()
-                ? std::variant<model::Address, model::AddressError>(model::AddressError{})
-                : model::parseAddress(m_document->target(), typed.device,
-                                      m_document->modelVariant());
-        if (const auto *e = std::get_if<model::AddressError>(&parsed)) {
-            if (r == row && !typed.device.isEmpty())
-                emit message(e->message);
-            m_pending.push_back(typed);
-            continue;
-        }
-        symbols.push_back({std::get<model::Address>(parsed), typed.name, typed.comment});
-    }
-    m_document->setSymbols(symbols); // refreshes the table when it changed anything
-    refresh();
-    if (m_pending != before)
-        emit pendingChanged();
+    m_model->setPending(rows);
 }
 
 void SymbolTable::refresh() {
-    m_updating = true;
-    const auto &symbols = m_document->project().symbols;
-    const int count = static_cast<int>(symbols.size());
-    const int pending = static_cast<int>(m_pending.size());
-    setRowCount(count + pending + 1); // a free row for a new symbol
-    for (int r = 0; r < count; ++r) {
-        const model::Symbol &s = symbols[static_cast<std::size_t>(r)];
-        setItem(r, 0, new QTableWidgetItem(model::formatAddress(m_document->target(), s.address)));
-        setItem(r, 1, new QTableWidgetItem(s.name));
-        setItem(r, 2, new QTableWidgetItem(s.comment));
-    }
-    for (int i = 0; i < pending; ++i) {
-        const model::PendingSymbol &p = m_pending[static_cast<std::size_t>(i)];
-        auto *device = new QTableWidgetItem(p.device);
-        if (!p.device.isEmpty()) {
-            const auto parsed =
-                model::parseAddress(m_document->target(), p.device, m_document->modelVariant());
-            if (const auto *e = std::get_if<model::AddressError>(&parsed)) {
-                device->setForeground(QColor(0xb0, 0x00, 0x20));
-                device->setBackground(QColor(0xfd, 0xe7, 0xea));
-                device->setToolTip(e->message);
-            }
-        }
-        setItem(count + i, 0, device);
-        setItem(count + i, 1, new QTableWidgetItem(p.name));
-        setItem(count + i, 2, new QTableWidgetItem(p.comment));
-    }
-    for (int c = 0; c < 3; ++c)
-        setItem(count + pending, c, new QTableWidgetItem);
-    m_updating = false;
+    m_model->refresh();
 }
 
 bool SymbolTable::exportCsv(const QString &path, QString *error) const {

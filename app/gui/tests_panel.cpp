@@ -146,10 +146,8 @@ void TestsPanel::retranslate() {
     m_runAll->setText(tr("Run All"));
     m_runOne->setText(tr("Run"));
     m_refresh->setText(tr("Refresh"));
-    m_record->setText(tr("Record..."));
+    updateRecordButton();
     m_runOne->setToolTip(tr("Runs the selected scenario"));
-    m_record->setToolTip(tr("Writes a scenario of the simulation so far: the inputs as you "
-                            "worked them, the outputs as they were seen"));
     m_tree->setHeaderLabels({tr("Scenario / expectation"), tr("Result")});
     const bool saved = !m_document->path().isEmpty();
     m_unsavedHint->setText(tr("Save the project: its scenario tests (.rungtest) are the files "
@@ -426,81 +424,6 @@ void TestsPanel::showFailure(const QString &file, std::size_t index) {
     chart->centreOn(failure.timeMs);
     chart->placeCursor(0, failure.timeMs);
     dialog.exec();
-}
-
-QString TestsPanel::recordedText(const QString &path, QString *error, QStringList *notes) const {
-    const auto history = m_history ? m_history() : nullptr;
-    if (!history) {
-        *error = tr("Nothing to record: start a simulation and work its inputs first");
-        return {};
-    }
-    // The outputs the program drives: the expectations.
-    const model::Target &t = m_document->target();
-    std::vector<model::Address> outputs;
-    for (const model::Instruction &ins : m_document->listing().list.instructions) {
-        if (!model::isOutput(ins.op()) || ins.operands.empty())
-            continue;
-        const model::Operand &o = ins.operands.front();
-        if (o.kind != model::Operand::Kind::Device || o.modified())
-            continue;
-        const model::Area &area = t.area(o.address.area);
-        const bool bit = area.kind == model::AreaKind::Bit || o.address.bit >= 0;
-        if (area.physical && area.writable && bit &&
-            std::find(outputs.begin(), outputs.end(), o.address) == outputs.end())
-            outputs.push_back(o.address);
-    }
-    std::sort(outputs.begin(), outputs.end());
-    const QString program =
-        QFileInfo(path).dir().relativeFilePath(QFileInfo(m_document->path()).absoluteFilePath());
-    const auto recorded = simulator::recordScenario(
-        *history, t,
-        program.contains(QLatin1Char(' ')) ? QLatin1Char('"') + program + QLatin1Char('"')
-                                           : program,
-        outputs, error);
-    if (!recorded)
-        return {};
-    *notes = recorded->notes;
-    return recorded->text;
-}
-
-void TestsPanel::record() {
-    const QString project = m_document->path();
-    if (project.isEmpty()) {
-        messageBox(QMessageBox::Information, this, tr("Record a Scenario"),
-                   tr("Save the project first: a scenario names the project's file."));
-        return;
-    }
-    QString error;
-    QStringList notes;
-    // Asked first, so that a simulation that has nothing to record says so before a file is
-    // chosen for nothing.
-    if (recordedText(project, &error, &notes).isEmpty()) {
-        messageBox(QMessageBox::Information, this, tr("Record a Scenario"), error);
-        return;
-    }
-    QString path = askSaveFile(this, tr("Record a Scenario"), QFileInfo(project).absolutePath(),
-                               tr("Scenario tests (*.rungtest)"));
-    if (path.isEmpty())
-        return;
-    if (QFileInfo(path).suffix().isEmpty())
-        path += QStringLiteral(".rungtest");
-    const QString text = recordedText(path, &error, &notes);
-    if (text.isEmpty()) {
-        messageBox(QMessageBox::Warning, this, tr("Record a Scenario"), error);
-        return;
-    }
-    QSaveFile out(path);
-    const QByteArray bytes = text.toUtf8();
-    if (!out.open(QIODevice::WriteOnly) || out.write(bytes) != bytes.size() || !out.commit()) {
-        messageBox(QMessageBox::Critical, this, tr("Record a Scenario"),
-                   QStringLiteral("%1: %2").arg(QDir::toNativeSeparators(path), out.errorString()));
-        return;
-    }
-    if (!notes.isEmpty())
-        messageBox(QMessageBox::Information, this, tr("Record a Scenario"),
-                   notes.join(QLatin1Char('\n')));
-    refresh();
-    emit message(tr("Recorded %1").arg(QDir::toNativeSeparators(path)));
 }
 
 } // namespace rung::app

@@ -6,6 +6,7 @@
 // failed, in words and colour. A failed one opens the timing chart of the run at its instant
 // with the devices it names. Record... writes a scenario from the simulation's history.
 
+#include "model/image/monitor_source.h"
 #include "simulator/scan_history.h"
 #include "simulator/scenario.h"
 
@@ -61,9 +62,22 @@ public:
     // null while none runs).
     using HistoryGetter = std::function<std::shared_ptr<const simulator::ScanHistory>()>;
     void setHistory(HistoryGetter history) { m_history = std::move(history); }
+    // The online PLC while the IDE is online (null otherwise): Record... then records what it
+    // does until Stop Recording... (tests_panel_record.cpp).
+    using SourceGetter = std::function<model::MonitorSource *()>;
+    void setOnlineSource(SourceGetter source) { m_onlineSource = std::move(source); }
     void record();
-    // The scenario Record... writes to `path` (the program named relative to it), or empty
-    // with *error; *notes says what it holds otherwise than the run.
+    // Online: starts recording the PLC's inputs and outputs (those the program names), read
+    // at every refresh; false with *error when not online or the program names none.
+    bool startOnlineRecording(QString *error);
+    bool recordingOnline() const;
+    // The PLC's session is about to go (Go Offline, the connection closed): what it recorded
+    // is kept, and Stop Recording... still writes it.
+    void keepOnlineRecording();
+    void stopOnlineRecording(); // forgets what was recorded
+    // The scenario Record... writes to `path` (the program named relative to it): of the
+    // online recording while one runs, else of the simulation; empty with *error; *notes says
+    // what it holds otherwise than the run.
     QString recordedText(const QString &path, QString *error, QStringList *notes) const;
 
 signals:
@@ -75,6 +89,8 @@ protected:
 
 private:
     void retranslate();
+    void updateRecordButton(); // Record... or Stop Recording..., with its tooltip
+    QString programLine(const QString &path) const; // the program, relative to `path`
     void showResults();
     // The program as it is in the window, compiled, or why not.
     simulator::ScenarioProgram documentProgram() const;
@@ -96,6 +112,15 @@ private:
     std::thread m_worker;
     std::atomic<bool> m_done{true};
     HistoryGetter m_history;
+    SourceGetter m_onlineSource;
+    // The online recording: from the session's time m_recordingFrom (-1: none).
+    QPointer<model::MonitorSource> m_recordSource;
+    std::unique_ptr<model::HistoryRecorder> m_recordKept; // after the session went
+    qint64 m_recordingFrom = -1;
+    qint64 m_recordingTo = -1; // when kept: the session's last time
+    std::vector<model::Address> m_recordInputs;
+    std::vector<model::Address> m_recordOutputs;
+    QObject m_recordReader; // what the recording watches, as a reader of the source
 };
 
 } // namespace rung::app

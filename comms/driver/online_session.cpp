@@ -32,7 +32,8 @@ OnlineSession::OnlineSession(const model::Target &target, ConnectionSettings set
     , m_target(target)
     , m_settings(std::move(settings))
     , m_factory(std::move(factory))
-    , m_layout(std::make_shared<const model::MemoryLayout>(target)) {
+    , m_layout(std::make_shared<const model::MemoryLayout>(target))
+    , m_history(m_layout) {
     setRunState(RunState::Offline);
     connect(this, &MonitorSource::watchedChanged, this, [this] {
         const std::vector<model::Address> devices = watched();
@@ -183,6 +184,53 @@ void OnlineSession::publish(const std::vector<std::int32_t> &words, bool stale,
         }
     }
     publishSnapshot(std::move(s));
+}
+
+bool OnlineSession::watchHistory(const model::Address &address) {
+    std::lock_guard lock(m_historyMutex);
+    if (m_history.wordOf(address) < 0)
+        return false;
+    if (std::find(m_historyPending.begin(), m_historyPending.end(), address) ==
+        m_historyPending.end())
+        m_historyPending.push_back(address);
+    return true;
+}
+
+void OnlineSession::readHistory(
+    const std::function<void(const model::HistoryRecorder &)> &read) const {
+    std::lock_guard lock(m_historyMutex);
+    read(m_history);
+}
+
+bool OnlineSession::setTrigger(std::optional<model::Trigger> trigger) {
+    if (trigger)
+        trigger->action = model::Trigger::Action::Mark; // a PLC does not stop for the chart
+    std::lock_guard lock(m_historyMutex);
+    return m_history.setTrigger(std::move(trigger));
+}
+
+void OnlineSession::recordHistory(const std::vector<std::int32_t> &words,
+                                  const std::vector<bool> *wordsRead,
+                                  const model::ScanStatistics &statistics) {
+    bool fired = false;
+    {
+        std::lock_guard lock(m_historyMutex);
+        std::erase_if(m_historyPending, [&](const model::Address &a) {
+            const int word = m_history.wordOf(a);
+            if (!wordsRead || word < 0 || std::size_t(word) >= wordsRead->size() ||
+                !(*wordsRead)[std::size_t(word)])
+                return false;
+            m_history.watch(a);
+            return true;
+        });
+        if (m_history.deviceCount() == 0)
+            return;
+        fired = m_history.record(statistics.scans, statistics.timeMs, words.data());
+    }
+    if (fired)
+        postToOwner([this, scan = statistics.scans, time = statistics.timeMs] {
+            emit triggered(scan, time);
+        });
 }
 
 void OnlineSession::postState(ConnectionState state, const QString &error) {
@@ -494,6 +542,7 @@ void OnlineSession::workerLoop() {
         ++figures.scans;
         figures.timeMs = connectedClock.elapsed();
         figures.periodMs = clock.elapsed();
+        recordHistory(words, wordsRead.get(), figures);
         publish(words, false, driver->forced(), figures, wordsRead);
         if (now != mode || !up)
             postMode(now);

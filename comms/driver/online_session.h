@@ -22,6 +22,7 @@
 
 #include "comms/driver/connection.h"
 #include "comms/driver/traffic.h"
+#include "model/image/history.h"
 #include "model/image/monitor_source.h"
 
 #include <condition_variable>
@@ -82,6 +83,15 @@ public:
     // Once the protocol is known to have no force command: says so and what to do instead.
     QString forceRefusal() const override;
 
+    // History (MonitorSource), refresh by refresh: "scans" are refreshes, the time is since the
+    // connection. A device is recorded from the first refresh that read it (before that its
+    // word holds a 0 the PLC never said); a reader that wants it recorded also watches it
+    // (setWatched), or it is never read. A trigger only marks: the PLC does not stop for it.
+    bool watchHistory(const model::Address &address) override;
+    void
+    readHistory(const std::function<void(const model::HistoryRecorder &)> &read) const override;
+    bool setTrigger(std::optional<model::Trigger> trigger) override;
+
     // Any thread.
     LinkStatistics statistics() const;
     // The bytes both ways since sequence `from` (see TrafficTap::records).
@@ -121,6 +131,9 @@ private:
                  const std::map<model::Address, bool> &forced,
                  const model::ScanStatistics &statistics,
                  std::shared_ptr<const std::vector<bool>> wordsRead);
+    // Worker: the refresh's values into the history (devices read by now start recording).
+    void recordHistory(const std::vector<std::int32_t> &words, const std::vector<bool> *wordsRead,
+                       const model::ScanStatistics &statistics);
     void postState(ConnectionState state, const QString &error);
     void postMode(PlcMode mode);
     void postStatistics();
@@ -131,6 +144,11 @@ private:
     const TransportFactory m_factory;
     std::shared_ptr<const model::MemoryLayout> m_layout;
     TrafficTap m_traffic; // the driver's tap forwards here so it outlives reconnects
+
+    // The history: the owner asks and reads, the worker records, under m_historyMutex.
+    mutable std::mutex m_historyMutex;
+    model::HistoryRecorder m_history;
+    std::vector<model::Address> m_historyPending; // asked for, not read from the PLC yet
 
     // Owner thread.
     ConnectionState m_state = ConnectionState::Disconnected;

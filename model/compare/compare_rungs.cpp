@@ -1,3 +1,4 @@
+#include "lcs.h"
 #include "model/compare/compare.h"
 
 #include "model/compare/rung_matching.h"
@@ -60,9 +61,7 @@ std::vector<std::pair<int, int>> commonInstructions(const std::vector<Instructio
                                                     const std::vector<Instruction> &b) {
     const std::size_t n = a.size();
     const std::size_t m = b.size();
-    // A rung longer than this is compared by its common start and end only: the table would
-    // be over 16 MB.
-    constexpr std::size_t kMaxCells = 4'000'000;
+    // A rung longer than kLcsMaxCells allows is compared by its common start and end only.
     std::vector<std::pair<int, int>> pairs;
     std::size_t head = 0;
     while (head < n && head < m && a[head].sameAs(b[head]))
@@ -74,27 +73,12 @@ std::vector<std::pair<int, int>> commonInstructions(const std::vector<Instructio
         pairs.emplace_back(static_cast<int>(k), static_cast<int>(k));
     const std::size_t rn = n - head - tail;
     const std::size_t rm = m - head - tail;
-    if (rn > 0 && rm > 0 && (rn + 1) * (rm + 1) <= kMaxCells) {
-        std::vector<int> len((rn + 1) * (rm + 1), 0);
-        auto at = [&](std::size_t i, std::size_t j) -> int & { return len[i * (rm + 1) + j]; };
-        for (std::size_t i = rn; i-- > 0;)
-            for (std::size_t j = rm; j-- > 0;)
-                at(i, j) = a[head + i].sameAs(b[head + j]) ? at(i + 1, j + 1) + 1
-                                                           : std::max(at(i + 1, j), at(i, j + 1));
-        std::size_t i = 0;
-        std::size_t j = 0;
-        while (i < rn && j < rm) {
-            if (a[head + i].sameAs(b[head + j])) {
+    if (rn > 0 && rm > 0)
+        longestCommonSubsequence(
+            rn, rm, [&](std::size_t i, std::size_t j) { return a[head + i].sameAs(b[head + j]); },
+            [&](std::size_t i, std::size_t j) {
                 pairs.emplace_back(static_cast<int>(head + i), static_cast<int>(head + j));
-                ++i;
-                ++j;
-            } else if (at(i + 1, j) >= at(i, j + 1)) {
-                ++i;
-            } else {
-                ++j;
-            }
-        }
-    }
+            });
     for (std::size_t k = tail; k > 0; --k)
         pairs.emplace_back(static_cast<int>(n - k), static_cast<int>(m - k));
     return pairs;

@@ -1,4 +1,5 @@
 #include "model/compare/rung_matching.h"
+#include "lcs.h"
 
 #include <QHash>
 #include <QRegularExpression>
@@ -96,27 +97,11 @@ void alignEqual(const std::vector<QString> &a, const std::vector<QString> &b, Ru
         // No anchor: the longest common subsequence when the table is small enough.
         const auto n = static_cast<std::size_t>(r.a1 - r.a0);
         const auto k = static_cast<std::size_t>(r.b1 - r.b0);
-        if ((n + 1) * (k + 1) > 4'000'000)
-            continue;
-        std::vector<int> len((n + 1) * (k + 1), 0);
-        auto at = [&](std::size_t i, std::size_t j) -> int & { return len[i * (k + 1) + j]; };
-        for (std::size_t i = n; i-- > 0;)
-            for (std::size_t j = k; j-- > 0;)
-                at(i, j) = a[r.a0 + i] == b[r.b0 + j] ? at(i + 1, j + 1) + 1
-                                                      : std::max(at(i + 1, j), at(i, j + 1));
-        std::size_t i = 0;
-        std::size_t j = 0;
-        while (i < n && j < k) {
-            if (a[r.a0 + i] == b[r.b0 + j]) {
+        longestCommonSubsequence(
+            n, k, [&](std::size_t i, std::size_t j) { return a[r.a0 + i] == b[r.b0 + j]; },
+            [&](std::size_t i, std::size_t j) {
                 pair(r.a0 + static_cast<int>(i), r.b0 + static_cast<int>(j));
-                ++i;
-                ++j;
-            } else if (at(i + 1, j) >= at(i, j + 1)) {
-                ++i;
-            } else {
-                ++j;
-            }
-        }
+            });
     }
 }
 

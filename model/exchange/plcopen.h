@@ -37,13 +37,16 @@ std::optional<Address> deviceOfLocation(const Target &target, const QString &loc
                                         const ModelVariant *model = nullptr);
 // The location of a device by the same rule, or empty when it has none (M0, T0).
 QString locationOfDevice(const Target &target, const Address &address);
+// The area of the data memory %MWn names (Vigor D, CPM1 DM, PL110 V, VPC p); -1: none.
+int dataMemoryArea(const Target &target);
 
 // ---- export (plcopen_export.cpp) ----------------------------------------------------------
 
 struct PlcopenExport {
     QByteArray xml;
     // Instructions written as blocks of the PLC's own (no IEC 61131-3 block does what they
-    // do): another tool reads the file but not those blocks. Translated, one per kind.
+    // do): another tool reads the file but not those blocks; counters written as IEC counters,
+    // with what they do otherwise. Translated, one per kind.
     QStringList notes;
 };
 // `name`: the project's name (contentHeader, the POU is "main"). creationDateTime is now,
@@ -82,6 +85,10 @@ struct PlcopenImport {
     std::vector<ImportIssue> issues; // everything not imported
     std::vector<UnmappedVariable> unmapped;
     QString fileTarget; // the target a Rung Studio export names, if any
+    // What is imported but works otherwise than in the file (an IEC CTU as the target's
+    // counter, which stops at its set value), translated, one per kind; and a Rung Studio file
+    // whose instruction list no longer matches its ladder. Not issues: nothing is left out.
+    QStringList notes;
     bool complete() const { return project && issues.empty() && unmapped.empty(); }
 };
 

@@ -1,4 +1,5 @@
 #include "model/exchange/plcopen_export.h"
+#include "model/tr.h"
 
 #include "model/exchange/plcopen_xml.h"
 #include "model/ladder/ladder_text.h"
@@ -21,11 +22,23 @@
 namespace rung::model::plcopen {
 
 PlcopenExport Exporter::run(const QString &name, const QDateTime &created) {
-    // Timers written as IEC timers are declared as such; plan every rung first.
+    // Timers and counters written as IEC timers and counters are declared as such; plan every
+    // rung first.
     for (const Rung &r : m_p.program.rungs)
-        for (const auto &out : r.outputs)
-            if (out && standardTimer(*out))
-                declare(out->operands.front().address, timerType(*out), true);
+        for (const auto &out : r.outputs) {
+            if (!out)
+                continue;
+            QString pv;
+            if (standardTimer(*out)) {
+                declare(out->operands.front().address, timerType(*out), true, QStringLiteral("Q"));
+            } else if (const auto form = standardCounter(*out, &pv)) {
+                const Address &counter = out->operands.front().address;
+                declare(counter, form->type, true, form->done);
+                m_vars.at(counter).counter = true;
+                if (form->resetByRst)
+                    m_resetByRst.insert(counter);
+            }
+        }
     int y = 20;
     const auto &rungs = m_p.program.rungs;
     for (std::size_t i = 0; i < rungs.size(); ++i) {
@@ -36,6 +49,7 @@ PlcopenExport Exporter::run(const QString &name, const QDateTime &created) {
             continue;
         planRung(rung, &y);
     }
+    wireResets();
     for (const Symbol &s : m_p.symbols)
         declare(s.address, {}, false);
     for (const auto &[address, value] : m_p.setValues)
@@ -98,26 +112,74 @@ std::optional<qint64> Exporter::presetMs(const Instruction &ins) const {
     return static_cast<qint64>(ms);
 }
 
+std::optional<CounterForm> Exporter::standardCounter(const Instruction &ins, QString *pv,
+                                                     QString *why) {
+    const Op op = ins.op();
+    if ((op != Op::Counter && op != Op::UpDownCounter) || ins.operands.empty() ||
+        ins.spec->differentiated || ins.spec->doubleWord ||
+        ins.operands.front().kind != Operand::Kind::Device || ins.operands.front().modified())
+        return std::nullopt;
+    const Address &counter = ins.operands.front().address;
+    auto form = counterForm(m_t, *ins.spec, counter, why);
+    if (!form)
+        return std::nullopt;
+    for (std::size_t k = 0; k < ins.spec->operands.size() && k < ins.operands.size(); ++k)
+        if (ins.spec->operands[k].kind == OperandKind::SetValue) {
+            const Operand &o = ins.operands[k];
+            if (o.kind == Operand::Kind::Constant && !o.modified()) {
+                *pv = QString::number(o.constant.value);
+                return form;
+            }
+            // A set value in a word: PV the word's variable, where the word holds the number.
+            if (o.kind == Operand::Kind::Device && !o.modified() && !m_t.constants.bcdSetValues) {
+                *pv = expression(o, true);
+                return form;
+            }
+            if (why && m_t.constants.bcdSetValues)
+                *why = PlcopenTr::tr("%1 reads a set value in a word as BCD digits, where PV is "
+                                     "a number")
+                           .arg(m_t.displayName);
+            return std::nullopt;
+        }
+    // The set value kept in the PLC (VPC CNT05: the instruction has none).
+    const auto it = m_p.setValues.find(counter);
+    if (it == m_p.setValues.end())
+        return std::nullopt;
+    *pv = QString::number(it->second);
+    return form;
+}
+
 bool Exporter::standardMove(const Instruction &ins) const {
     if (ins.op() != Op::Apply || ins.spec->function != ApplyFunction::Mov ||
         ins.spec->differentiated || ins.spec->doubleWord || ins.operands.size() != 2)
         return false;
     const Operand &d = ins.operands[1];
-    return !ins.operands[0].modified() && d.kind == Operand::Kind::Device && !d.modified();
+    // A timer or counter written as an IEC instance is no variable to move a value into.
+    const auto instance = m_vars.find(d.address);
+    return !ins.operands[0].modified() && d.kind == Operand::Kind::Device && !d.modified() &&
+           (instance == m_vars.end() || !instance->second.instance);
 }
 
-void Exporter::declare(const Address &a, const QString &type, bool instance) {
+bool Exporter::counterReset(const Instruction &ins) const {
+    return ins.op() == Op::Reset && ins.operands.size() == 1 &&
+           ins.operands.front().kind == Operand::Kind::Device && !ins.operands.front().modified() &&
+           m_resetByRst.contains(ins.operands.front().address);
+}
+
+void Exporter::declare(const Address &a, const QString &type, bool instance, const QString &done) {
     auto it = m_vars.find(a);
     if (it != m_vars.end()) {
         if (instance) {
             it->second.type = type;
             it->second.instance = true;
+            it->second.done = done;
         }
         return;
     }
     Variable v;
     v.address = a;
     v.instance = instance;
+    v.done = done;
     if (!type.isEmpty()) {
         v.type = type;
     } else {
@@ -134,16 +196,18 @@ void Exporter::declare(const Address &a, const QString &type, bool instance) {
 QString Exporter::variableOf(const Address &a) {
     declare(a, {}, false);
     const Variable &v = m_vars.at(a);
-    return v.instance ? iecName(m_t, a) + QStringLiteral(".Q") : iecName(m_t, a);
+    return v.instance ? iecName(m_t, a) + QLatin1Char('.') + v.done : iecName(m_t, a);
 }
 
 // An operand as an IEC expression: a device's name, a constant as a literal.
-QString Exporter::expression(const Operand &o) {
+QString Exporter::expression(const Operand &o, bool value) {
     switch (o.kind) {
     case Operand::Kind::Device:
         if (o.modified())
             return formatOperand(m_t, o); // K4M0, D0E0: no IEC form (addData has it)
         declare(o.address, {}, false);
+        if (value && m_vars.at(o.address).counter)
+            return iecName(m_t, o.address) + QStringLiteral(".CV");
         return iecName(m_t, o.address);
     case Operand::Kind::Constant:
         switch (o.constant.style) {
@@ -235,8 +299,10 @@ void Exporter::planRung(const Rung &rung, int *y0) {
                 static const char *const names[] = {"", "EQ", "NE", "LT", "LE", "GT", "GE"};
                 const QString contactText = contactToText(m_t, k);
                 const int x = cellX(c);
-                const int in1 = inVariable(expression(k.operands.at(0)), x - 30, rowY(r) + 20);
-                const int in2 = inVariable(expression(k.operands.at(1)), x - 30, rowY(r) + 30);
+                const int in1 =
+                    inVariable(expression(k.operands.at(0), true), x - 30, rowY(r) + 20);
+                const int in2 =
+                    inVariable(expression(k.operands.at(1), true), x - 30, rowY(r) + 30);
                 Elem &b = add(Elem::Kind::Block, x, rowY(r));
                 b.typeName = QLatin1String(names[static_cast<int>(k.compare)]);
                 b.inputs = {{QStringLiteral("EN"), {}},
@@ -302,6 +368,58 @@ void Exporter::planRung(const Rung &rung, int *y0) {
             coils.push_back(e.id);
             continue;
         }
+        if (counterReset(ins)) {
+            // The counter's R: its power goes there through a continuation (wireResets).
+            const Address &counter = ins.operands.front().address;
+            auto &resets = m_resets[counter];
+            Elem &k = add(Elem::Kind::Connector, outX, rowY(r));
+            k.variable = QStringLiteral("RESET_%1").arg(iecName(m_t, counter));
+            if (!resets.empty())
+                k.variable += QStringLiteral("_%1").arg(resets.size() + 1);
+            k.instruction = text;
+            k.width = 80;
+            k.height = 20;
+            k.inputGroup = group;
+            resets.push_back(k.id);
+            powered.push_back(m_elems.size() - 1);
+            continue;
+        }
+        QString pv;
+        QString why;
+        if (const auto form = standardCounter(ins, &pv, &why)) {
+            const int pvId = inVariable(pv, outX - 40, rowY(r) + 50);
+            const int never = form->unused.isEmpty()
+                                  ? 0
+                                  : inVariable(QStringLiteral("FALSE"), outX - 40, rowY(r) + 40);
+            Elem &b = add(Elem::Kind::Block, outX, rowY(r));
+            b.typeName = form->type;
+            b.instanceName = iecName(m_t, ins.operands.front().address);
+            for (const QString &pin : form->pins)
+                b.inputs.push_back({pin, {}});
+            if (never)
+                b.inputs.push_back({form->unused, {{never, {}}}});
+            if (form->resetByRst)
+                b.inputs.push_back({QStringLiteral("R"), {}}); // wireResets
+            b.inputs.push_back({QStringLiteral("PV"), {{pvId, {}}}});
+            if (form->kind == QLatin1String("CTUD"))
+                b.outputs << QStringLiteral("QU") << QStringLiteral("QD");
+            else
+                b.outputs << QStringLiteral("Q");
+            b.outputs << QStringLiteral("CV");
+            b.instruction = text;
+            b.width = 60;
+            b.height = 30 + 10 * static_cast<int>(b.inputs.size());
+            if (rows.size() == 1)
+                b.inputGroup = group;
+            else
+                for (const int row : rows)
+                    b.boxRows.push_back(nodes.find(nodes.node(row, rung.columns)));
+            m_counterBlocks[ins.operands.front().address].push_back(m_elems.size() - 1);
+            powered.push_back(m_elems.size() - 1);
+            m_counterNotes.insert(PlcopenTr::tr("%1 is written as an IEC %2: %3")
+                                      .arg(blockName(*ins.spec), form->kind, form->difference));
+            continue;
+        }
         if (standardTimer(ins)) {
             const int pt =
                 inVariable(QStringLiteral("T#%1ms").arg(*presetMs(ins)), outX - 40, rowY(r) + 20);
@@ -318,7 +436,8 @@ void Exporter::planRung(const Rung &rung, int *y0) {
             continue;
         }
         if (standardMove(ins)) {
-            const int source = inVariable(expression(ins.operands[0]), outX - 40, rowY(r) + 20);
+            const int source =
+                inVariable(expression(ins.operands[0], true), outX - 40, rowY(r) + 20);
             Elem &b = add(Elem::Kind::Block, outX, rowY(r));
             b.typeName = QStringLiteral("MOVE");
             b.inputs = {{QStringLiteral("EN"), {}}, {QStringLiteral("IN"), {{source, {}}}}};
@@ -362,6 +481,8 @@ void Exporter::planRung(const Rung &rung, int *y0) {
         b.outputs << QStringLiteral("ENO");
         powered.push_back(m_elems.size() - 1);
         m_vendor.insert(b.typeName);
+        if (!why.isEmpty())
+            m_vendorWhy[b.typeName] = why;
     }
     // Every element's power input: the outputs that reach its node group, the rail first,
     // then the branches from top to bottom as the grid draws them.
@@ -378,7 +499,8 @@ void Exporter::planRung(const Rung &rung, int *y0) {
         }
         if (e.inputGroup < 0)
             continue;
-        if (e.kind == Elem::Kind::Contact || e.kind == Elem::Kind::Coil)
+        if (e.kind == Elem::Kind::Contact || e.kind == Elem::Kind::Coil ||
+            e.kind == Elem::Kind::Connector)
             e.inputs.insert(e.inputs.begin(), {QString(), sources[e.inputGroup]});
         else
             e.inputs.front().second = sources[e.inputGroup];
@@ -391,6 +513,33 @@ void Exporter::planRung(const Rung &rung, int *y0) {
             right.inputs.push_back({QString(), {{id, {}}}});
     }
     *y0 = top + rung.rows * kRow + 20;
+}
+
+void Exporter::wireResets() {
+    for (const auto &[counter, blocks] : m_counterBlocks) {
+        const auto resets = m_resets.find(counter);
+        if (resets == m_resets.end() || blocks.empty())
+            continue;
+        // One continuation for each RST, left of the (first) block, feeding every block's R.
+        const Elem first = m_elems[blocks.front()];
+        std::vector<Conn> conns;
+        int k = 0;
+        for (const int connector : resets->second) {
+            const QString name =
+                std::find_if(m_elems.begin(), m_elems.end(), [connector](const Elem &e) {
+                    return e.id == connector;
+                })->variable;
+            Elem &c = add(Elem::Kind::Continuation, first.x - 100, first.y + 30 + 20 * k++);
+            c.variable = name;
+            c.width = 80;
+            c.height = 20;
+            conns.push_back({c.id, {}});
+        }
+        for (const std::size_t index : blocks)
+            for (auto &[formal, list] : m_elems[index].inputs)
+                if (formal == QLatin1String("R"))
+                    list = conns;
+    }
 }
 
 QString Exporter::blockName(const InstructionSpec &spec) {

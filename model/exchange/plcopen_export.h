@@ -5,6 +5,7 @@
 // Internal to model/exchange.
 
 #include "model/exchange/plcopen.h"
+#include "model/exchange/plcopen_counters.h"
 
 #include <QXmlStreamWriter>
 
@@ -30,7 +31,9 @@ struct Elem {
         Block,
         InVar,
         OutVar,
-        Comment
+        Comment,
+        Connector,   // a counter's RST: its power, to the counter's R through a continuation
+        Continuation // variable: the connector's name
     };
     Kind kind = Kind::Contact;
     int id = 0;
@@ -82,8 +85,10 @@ private:
 
 struct Variable {
     Address address;
-    QString type; // BOOL, INT, DINT, TON, TOF, R_TRIG, F_TRIG
+    QString type; // BOOL, INT, DINT, TON, TOF, CTU, CTD, CTUD, R_TRIG, F_TRIG
     bool instance = false;
+    QString done;         // an instance's output that is its bit: Q, QU, QD
+    bool counter = false; // a counter instance: its value is CV
 };
 
 constexpr int kCell = 60;
@@ -107,15 +112,29 @@ private:
     static QString timerType(const Instruction &ins);
     std::optional<qint64> presetMs(const Instruction &ins) const;
 
+    // A counter that an IEC counter does alike (plcopen_counters.h), with a constant set value,
+    // a word's (where the word holds the number, not BCD digits) or the VPC's, kept in
+    // setValues: its form, PV's expression in *pv; *why when the target's counter is none.
+    std::optional<CounterForm> standardCounter(const Instruction &ins, QString *pv,
+                                               QString *why = nullptr);
+
     bool standardMove(const Instruction &ins) const;
 
-    void declare(const Address &a, const QString &type, bool instance);
+    void declare(const Address &a, const QString &type, bool instance, const QString &done = {});
 
-    // A device as a contact or coil names it: a timer declared as TON is its output Q.
+    // A device as a contact or coil names it: a timer declared as TON is its output Q, a counter
+    // its Q, QU or QD.
     QString variableOf(const Address &a);
 
-    // An operand as an IEC expression: a device's name, a constant as a literal.
-    QString expression(const Operand &o);
+    // An operand as an IEC expression: a device's name, a constant as a literal; with `value`,
+    // a counter instance's present value, CV.
+    QString expression(const Operand &o, bool value = false);
+
+    // An RST of a counter written as CTU with R from its RSTs: a connector at the RST's place.
+    bool counterReset(const Instruction &ins) const;
+
+    // Every RST of a one-input counter, wired to the counter's R through a continuation.
+    void wireResets();
 
     Elem &add(Elem::Kind kind, int x, int y);
 
@@ -139,7 +158,15 @@ private:
 
     static void writeConnections(QXmlStreamWriter &xml, const std::vector<Conn> &conns, int relY);
 
+    // The instruction list beside the ladder (docs/plcopen.md "The instruction list"), in the
+    // POU's addData; empty when the ladder does not convert whole.
+    void writeListing(QXmlStreamWriter &xml, QStringList *notes);
+
     void writeInstruction(QXmlStreamWriter &xml, const Elem &e);
+
+    // An element's start tag with its localId and size (and a connector's name).
+    static void startElement(QXmlStreamWriter &xml, const QString &tag, const Elem &e,
+                             bool named = false);
 
     void writeElem(QXmlStreamWriter &xml, const Elem &e);
 
@@ -149,6 +176,11 @@ private:
     std::map<Address, Variable> m_vars;
     std::vector<std::pair<QString, QString>> m_edgeInstances;
     std::set<QString> m_vendor;
+    std::map<QString, QString> m_vendorWhy; // a vendor block's reason to be one
+    std::set<QString> m_counterNotes;
+    std::set<Address> m_resetByRst;               // counters whose R is their RSTs
+    std::map<Address, std::vector<int>> m_resets; // their RSTs: connector element ids
+    std::map<Address, std::vector<std::size_t>> m_counterBlocks; // their blocks: element indexes
     int m_nextId = 1;
     int m_edges = 0;
 };

@@ -24,8 +24,12 @@ QString describe(const Element &e) {
     if (!e.typeName.isEmpty())
         return QStringLiteral("block %1").arg(e.typeName);
     if (!e.variable.isEmpty() &&
-        (e.kind == QLatin1String("contact") || e.kind == QLatin1String("coil")))
+        (e.kind == QLatin1String("contact") || e.kind == QLatin1String("coil") ||
+         e.kind == QLatin1String("inVariable") || e.kind == QLatin1String("outVariable")))
         return QStringLiteral("%1 %2").arg(e.kind, e.variable);
+    if (!e.name.isEmpty() &&
+        (e.kind == QLatin1String("connector") || e.kind == QLatin1String("continuation")))
+        return QStringLiteral("%1 %2").arg(e.kind, e.name);
     return e.kind;
 }
 
@@ -33,7 +37,18 @@ bool isTimerType(const QString &t) {
     return t == QLatin1String("TON") || t == QLatin1String("TOF") || t == QLatin1String("TP");
 }
 bool isCounterType(const QString &t) {
-    return t == QLatin1String("CTU") || t == QLatin1String("CTD") || t == QLatin1String("CTUD");
+    return !counterKind(t).isEmpty();
+}
+
+std::optional<bool> boolLiteral(const QString &text) {
+    const QString t = text.trimmed();
+    if (t.compare(QLatin1String("TRUE"), Qt::CaseInsensitive) == 0 ||
+        t.compare(QLatin1String("BOOL#TRUE"), Qt::CaseInsensitive) == 0 || t == QLatin1String("1"))
+        return true;
+    if (t.compare(QLatin1String("FALSE"), Qt::CaseInsensitive) == 0 ||
+        t.compare(QLatin1String("BOOL#FALSE"), Qt::CaseInsensitive) == 0 || t == QLatin1String("0"))
+        return false;
+    return std::nullopt;
 }
 
 std::optional<CompareOp> compareOf(const QString &t) {
@@ -116,25 +131,31 @@ PlcopenImport Importer::run(const QByteArray &bytes) {
         return finish();
     }
     readHeader(*root);
-    const XmlNode *program = nullptr;
+    // The program: the one the configuration's task runs, else the first.
+    std::vector<const XmlNode *> pous;
     if (const XmlNode *types = root->child("types"))
-        if (const XmlNode *pous = types->child("pous"))
-            for (const XmlNode *pou : pous->all("pou")) {
-                const QString name = pou->attribute("name");
-                const QString kind = pou->attribute("pouType");
-                if (kind == QLatin1String("program") && !program) {
-                    program = pou;
-                    continue;
-                }
-                issue(pou->line, QStringLiteral("pou %1").arg(name),
-                      kind == QLatin1String("program")
-                          ? PlcopenTr::tr("a second program is not imported: a project is one "
-                                          "ladder (the first program, %1, is)")
-                                .arg(program->attribute("name"))
-                          : PlcopenTr::tr("a %1 is not imported: %2 runs one ladder, with no user "
-                                          "functions or function blocks")
-                                .arg(kind, m_t.displayName));
-            }
+        if (const XmlNode *list = types->child("pous"))
+            pous = list->all("pou");
+    const QStringList running = runningPous(*root);
+    const XmlNode *program = nullptr;
+    for (const bool run : {true, false})
+        for (const XmlNode *pou : pous)
+            if (!program && pou->attribute("pouType") == QLatin1String("program") &&
+                (!run || running.contains(pou->attribute("name"))))
+                program = pou;
+    for (const XmlNode *pou : pous) {
+        if (pou == program)
+            continue;
+        const QString kind = pou->attribute("pouType");
+        issue(pou->line, QStringLiteral("pou %1").arg(pou->attribute("name")),
+              kind == QLatin1String("program")
+                  ? PlcopenTr::tr("a second program is not imported: a project is one ladder "
+                                  "(the program %1 is)")
+                        .arg(program->attribute("name"))
+                  : PlcopenTr::tr("a %1 is not imported: %2 runs one ladder, with no user "
+                                  "functions or function blocks")
+                        .arg(kind, m_t.displayName));
+    }
     if (!program) {
         issue(root->line, QStringLiteral("project"), PlcopenTr::tr("the file has no program"));
         return finish();
@@ -160,11 +181,30 @@ PlcopenImport Importer::run(const QByteArray &bytes) {
               PlcopenTr::tr("the program has no ladder (LD) body"));
         return finish();
     }
+    if (const XmlNode *listing = ourData(*program, "instructionList"))
+        m_listing = listing->text;
     readElements(*ld);
     buildProgram();
     if (const XmlNode *data = root->child("addData"))
         readProjectData(*data);
     return finish();
+}
+
+QStringList Importer::runningPous(const XmlNode &root) {
+    QStringList out;
+    const XmlNode *instances = root.child("instances");
+    const XmlNode *configurations = instances ? instances->child("configurations") : nullptr;
+    if (!configurations)
+        return out;
+    for (const XmlNode *c : configurations->all("configuration"))
+        for (const XmlNode *r : c->all("resource")) {
+            for (const XmlNode *i : r->all("pouInstance"))
+                out << i->attribute("typeName");
+            for (const XmlNode *t : r->all("task"))
+                for (const XmlNode *i : t->all("pouInstance"))
+                    out << i->attribute("typeName");
+        }
+    return out;
 }
 
 void Importer::issue(int line, const QString &element, const QString &message) {
@@ -201,8 +241,13 @@ void Importer::readHeader(const XmlNode &root) {
 }
 
 void Importer::readVarList(const XmlNode &list) {
+    const bool constants = list.attribute("constant") == QLatin1String("true") ||
+                           list.attribute("constant") == QLatin1String("1");
     for (const XmlNode *v : list.all("variable")) {
         VariableInfo info;
+        if (const XmlNode *initial = v->child("initialValue"); constants && initial)
+            if (const XmlNode *simple = initial->child("simpleValue"))
+                info.constant = simple->attribute("value").trimmed();
         info.name = v->attribute("name");
         info.line = v->line;
         info.location = v->attribute("address");
@@ -221,6 +266,10 @@ void Importer::readVarList(const XmlNode &list) {
         }
         if (!m_vars.contains(info.name))
             m_varOrder << info.name;
+        // A global the POU declares external: the global's declaration says what it is.
+        if (m_vars.contains(info.name) && info.constant.isEmpty() &&
+            !m_vars[info.name].constant.isEmpty())
+            continue;
         m_vars.insert(info.name, info);
     }
 }
@@ -319,8 +368,17 @@ std::optional<Address> Importer::resolve(const QString &name, int line, const QS
     return found;
 }
 
+QString Importer::constantValue(const QString &expression) {
+    const auto it = m_vars.find(expression.trimmed());
+    if (it == m_vars.end() || it->constant.isEmpty())
+        return expression;
+    it->used = true;
+    return it->constant;
+}
+
 // An operand written as an expression: a variable (a device) or a literal.
-std::optional<Operand> Importer::operandOf(const QString &expression, int line, bool timeAllowed) {
+std::optional<Operand> Importer::operandOf(const QString &named, int line, bool timeAllowed) {
+    const QString expression = constantValue(named);
     Operand o;
     if (const auto v = integerLiteral(expression)) {
         o.kind = Operand::Kind::Constant;
@@ -341,6 +399,17 @@ std::optional<Operand> Importer::operandOf(const QString &expression, int line, 
     }
     if (timeAllowed && timeLiteral(expression))
         return std::nullopt;
+    // A counter's present value: CTU0.CV.
+    if (expression.trimmed().endsWith(QLatin1String(".CV"), Qt::CaseInsensitive)) {
+        if (m_t.constants.bcdSetValues) {
+            issue(line, expression,
+                  PlcopenTr::tr("%1 is not imported: %2 keeps a counter's present value as BCD "
+                                "digits")
+                      .arg(expression.trimmed(), m_t.displayName));
+            return std::nullopt;
+        }
+        return counterValue(expression.trimmed().chopped(3), line);
+    }
     const auto device = resolve(expression, line);
     if (!device)
         return std::nullopt;
@@ -393,7 +462,11 @@ void Importer::readElements(const XmlNode &ld) {
             for (const XmlNode *v : vars->all("variable")) {
                 Pin p;
                 p.formal = v->attribute("formalParameter");
-                p.negated = v->attribute("negated") == QLatin1String("true");
+                p.negated = v->attribute("negated") == QLatin1String("true") ||
+                            v->attribute("negated") == QLatin1String("1");
+                p.edge = v->attribute("edge");
+                if (p.edge == QLatin1String("none"))
+                    p.edge.clear();
                 if (const XmlNode *in = v->child("connectionPointIn")) {
                     p.connections = connectionsOf(*in);
                     if (const XmlNode *x = in->child("expression"))
@@ -427,13 +500,13 @@ const Pin *Importer::pin(const Element &e, const char *formal) const {
 // The expression an operand pin carries: an inVariable connected to it, or its own.
 std::optional<QString> Importer::pinExpression(const Pin &p, int line) {
     if (!p.expression.isEmpty())
-        return p.expression;
+        return constantValue(p.expression);
     if (p.connections.size() == 1)
         if (const Element *src = element(p.connections.front().ref);
             src && (src->kind == QLatin1String("inVariable") ||
                     src->kind == QLatin1String("inOutVariable"))) {
             m_used.insert(src->id);
-            return src->variable;
+            return constantValue(src->variable);
         }
     issue(line, p.formal, PlcopenTr::tr("input %1 is not a variable or a literal").arg(p.formal));
     return std::nullopt;

@@ -1,11 +1,13 @@
 #pragma once
 
-// The reader of PLCopen TC6 XML LD bodies (model/exchange/plcopen.h), in three files: the file,
-// its variables and elements (plcopen_import.cpp); the power flow and the outputs
-// (plcopen_power.cpp); the rungs, symbols and what is left over (plcopen_rungs.cpp).
+// The reader of PLCopen TC6 XML LD bodies (model/exchange/plcopen.h), in five files: the file,
+// its variables and elements (plcopen_import.cpp); the power flow (plcopen_power.cpp); the
+// outputs (plcopen_outputs.cpp) and the counters among them (plcopen_import_counters.cpp); the
+// rungs, symbols and what is left over (plcopen_rungs.cpp).
 // Internal to model/exchange.
 
 #include "model/exchange/plcopen.h"
+#include "model/exchange/plcopen_counters.h"
 #include "model/exchange/plcopen_xml.h"
 #include "model/ladder/network.h"
 
@@ -14,6 +16,7 @@
 #include <map>
 #include <memory>
 #include <set>
+#include <tuple>
 
 namespace rung::model::plcopen {
 
@@ -31,6 +34,7 @@ struct Pin {
     std::vector<Connection> connections;
     QString expression; // connectionPointIn/expression (a value without an element)
     bool negated = false;
+    QString edge; // an input on an edge (CU edge="rising")
 };
 
 struct Element {
@@ -60,6 +64,9 @@ struct VariableInfo {
     QString symbol, symbolComment;
     std::optional<qint64> setValue;
     bool used = false;
+    // A CONSTANT's value (a constant="true" list's initialValue, Beremiz writes its global
+    // constants so): a literal wherever the ladder names it.
+    QString constant;
 };
 
 struct Factor {
@@ -80,7 +87,9 @@ struct Output {
 // "block TON", "contact start", "coil pump", "jump": how an issue names an element.
 QString describe(const Element &e);
 bool isTimerType(const QString &type);
-bool isCounterType(const QString &type);
+bool isCounterType(const QString &type); // CTU, CTD, CTUD and their typed forms (CTU_DINT)
+// TRUE / FALSE (or 1 / 0) as an IEC literal, nullopt for anything else.
+std::optional<bool> boolLiteral(const QString &text);
 std::optional<CompareOp> compareOf(const QString &type);
 // An IEC TIME literal in milliseconds: T#1s, TIME#1m30s, t#1.5s, T#250ms.
 std::optional<qint64> timeLiteral(const QString &text);
@@ -106,6 +115,9 @@ private:
     static const XmlNode *ourData(const XmlNode &node, const char *what);
 
     void readHeader(const XmlNode &root);
+
+    // The POUs the configurations' resources run (pouInstance, in a task or not), by type.
+    static QStringList runningPous(const XmlNode &root);
 
     void readVarList(const XmlNode &list);
 
@@ -135,8 +147,12 @@ private:
 
     const Pin *pin(const Element &e, const char *formal) const;
 
-    // The expression an operand pin carries: an inVariable connected to it, or its own.
+    // The expression an operand pin carries: an inVariable connected to it, or its own; a
+    // constant's value for its name.
     std::optional<QString> pinExpression(const Pin &p, int line);
+
+    // The value of a CONSTANT the expression names, else the expression.
+    QString constantValue(const QString &expression);
 
     // ---- power flow as chains -------------------------------------------------------------
 
@@ -165,8 +181,20 @@ private:
     std::optional<Chain> blockChain(const Element &e, const QString &formal);
 
     // An output straight from the rail: the target's always-ON contact (W353's 253.13, Vigor's
-    // M8000...) stands in for the rail, as the PLC needs a condition.
+    // M9000, PL110's RUN bit SM0.0) stands in for the rail, as the PLC needs a condition.
     Chain railChain();
+
+    // An input that is never ON, for a box input the IEC block leaves FALSE (a CTU's R on a
+    // counter with a reset input): the always-ON (or RUN) contact negated. nullopt: the target
+    // has none.
+    std::optional<Chain> neverChain(const Element &owner);
+
+    // An IEC block's EN: absent, or ON whenever the rail is. Otherwise listed (while EN is OFF
+    // an IEC block stops where it stands, which no target's timer or counter does).
+    bool enAlwaysOn(const Element &e);
+
+    // A power input of a block: its chain; TRUE the rail's, FALSE nullopt in *never.
+    std::optional<Chain> powerPin(const Pin *p, const Element &owner, bool *never);
 
     // ---- outputs ------------------------------------------------------------------------
 
@@ -182,8 +210,16 @@ private:
     // PT in the timer's units.
     std::optional<Output> timerOutput(const Element &e);
 
+    // A set value as the target writes one: K10 (Vigor), #0010 (CPM1: BCD digits), 10.
+    std::variant<Constant, AddressError> setValueConstant(qint64 value) const;
+
     std::optional<Instruction> timerInstruction(const InstructionSpec &spec, const Address &timer,
                                                 qint64 ms, std::optional<qint64> *kept);
+
+    // The target's instruction that copies `source` to `dest` (from BCD digits to binary with
+    // `fromBcd`), checked as its listing reads it; nullopt, listed, when it has none.
+    std::optional<Instruction> copyInstruction(const Operand &source, const Operand &dest,
+                                               bool fromBcd, const Element &e);
 
     std::optional<Output> moveOutput(const Element &e);
 
@@ -193,7 +229,36 @@ private:
 
     std::optional<Output> outputOf(const Element &e);
 
+    // ---- counters (plcopen_import_counters.cpp) ---------------------------------------------
+
+    // An IEC counter (CTU, CTD, CTUD) as the target's counter (plcopen_counters.h): the counter
+    // instruction, and on a one-input counter an RST after it for R.
+    bool counterOutputs(const Element &e, std::vector<Output> *outs);
+
+    // A counter's CV (or a timer's ET) to an output variable: the present value moved there.
+    std::optional<Output> valueOutput(const Element &e);
+
+    // A counter this file's block was imported as, by instance name.
+    struct ImportedCounter {
+        Address device;
+        CounterChoice choice;
+    };
+    const ImportedCounter *importedCounter(const QString &instance) const;
+
+    // A counter's present value (CTU0.CV): its device as a word, where the target's counter
+    // counts as the IEC one does and keeps the value binary.
+    std::optional<Operand> counterValue(const QString &instance, int line,
+                                        const QString &element = {});
+
+    void note(const QString &text);
+    // The notes of the counters imported (counterOutputs), one a kind.
+    void noteCounters();
+
     bool consumesPower(const Element &e) const;
+    // A timer or counter block: built first, so that what reads its Q knows whether it is there.
+    static bool isInstanceBlock(const Element &e);
+    // The block whose output this element's (first) input takes, and that output's name.
+    const Element *valueSource(const Element &e, QString *formal) const;
 
     // ---- rungs --------------------------------------------------------------------------
 
@@ -257,7 +322,16 @@ private:
     std::set<QString> m_visiting;
     std::set<int> m_used;
     std::vector<Output> m_outputs;
-    std::vector<int> m_rungLine; // the line of each rung's first output
+    std::vector<int> m_rungLine;  // the line of each rung's first output
+    std::set<int> m_failedBlocks; // timer and counter blocks not imported
+    std::map<QString, ImportedCounter> m_counters;
+    struct CounterNote {
+        QStringList instances;
+        QString difference;
+    };
+    // By the file's kind, the target's mnemonic, whether it counts alike.
+    std::map<std::tuple<QString, QString, bool>, CounterNote> m_counterNotes;
+    QString m_listing; // the instruction list of Rung Studio's file, beside its ladder
 };
 
 } // namespace rung::model::plcopen

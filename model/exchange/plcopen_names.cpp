@@ -29,6 +29,13 @@ int physicalArea(const Target &t, bool output, bool words) {
     return -1;
 }
 
+bool inRange(const Target &t, const Address &a, const ModelVariant *model) {
+    const auto range = t.range(a.area, model);
+    return range && a.index >= range->first && a.index <= range->second;
+}
+
+} // namespace
+
 // The plain data memory (model::exampleWord's rule): a word area the program writes freely;
 // a channel area with a prefix where the target has no such word area (CPM1 DM).
 int dataMemoryArea(const Target &t) {
@@ -43,13 +50,6 @@ int dataMemoryArea(const Target &t) {
         }
     return -1;
 }
-
-bool inRange(const Target &t, const Address &a, const ModelVariant *model) {
-    const auto range = t.range(a.area, model);
-    return range && a.index >= range->first && a.index <= range->second;
-}
-
-} // namespace
 
 QString iecName(const Target &target, const Address &address) {
     QString text = formatAddress(target, address);

@@ -11,7 +11,7 @@
 #include <cmath>
 
 // The power flow of an LD body as chains (an element's input: the factors from the rail to it),
-// and the outputs they feed as the target's instructions (docs/plcopen.md "Import").
+// for the outputs (plcopen_outputs.cpp) it feeds (docs/plcopen.md "Import").
 
 namespace rung::model::plcopen {
 
@@ -20,11 +20,37 @@ Factor Importer::leaf(const Element &e, const Contact &c) const {
 }
 
 std::optional<Contact> Importer::contactOfVariable(const QString &variable, int line) {
-    QString name = variable;
+    QString name = variable.trimmed();
     Contact c;
-    // A timer's or counter's output Q (an IEC instance): its done bit.
-    if (name.endsWith(QLatin1String(".Q"), Qt::CaseInsensitive))
-        name.chop(2);
+    // A timer's or counter's output Q (QU, QD: a CTUD's) as a contact: its done bit.
+    const qsizetype dot = name.lastIndexOf(QLatin1Char('.'));
+    const auto instance = [this](const QString &n) {
+        if (const auto v = m_vars.constFind(n);
+            v != m_vars.constEnd() && (isTimerType(v->type) || isCounterType(v->type)))
+            return true;
+        return std::any_of(m_elements.begin(), m_elements.end(),
+                           [&n](const Element &b) { return b.instanceName == n; });
+    };
+    if (dot > 0 && instance(name.left(dot))) {
+        const QString member = name.mid(dot + 1).toUpper();
+        name.truncate(dot);
+        if (member != QLatin1String("Q") && member != QLatin1String("QU") &&
+            member != QLatin1String("QD")) {
+            issue(line, variable,
+                  PlcopenTr::tr("%1 as a contact is not imported: only a timer's or counter's "
+                                "bit (Q) is")
+                      .arg(variable));
+            return std::nullopt;
+        }
+        if (const ImportedCounter *counter = importedCounter(name);
+            counter && member != QLatin1String("Q") && member != counter->choice.form.done) {
+            issue(line, variable,
+                  PlcopenTr::tr("%1 is not imported: the bit of %2 %3 is %4")
+                      .arg(variable, counter->choice.spec->mnemonic,
+                           formatAddress(m_t, counter->device), counter->choice.form.done));
+            return std::nullopt;
+        }
+    }
     const auto a = resolve(name, line, QStringLiteral("BOOL"));
     if (!a)
         return std::nullopt;
@@ -38,6 +64,21 @@ std::optional<Chain> Importer::chainIn(const Pin *p, const Element &owner) {
     if (!p || p->connections.empty()) {
         issue(owner.line, describe(owner),
               PlcopenTr::tr("its input is connected to nothing: not imported"));
+        return std::nullopt;
+    }
+    if (p->negated) {
+        issue(owner.line, describe(owner),
+              PlcopenTr::tr("its input %1 is negated: not imported").arg(p->formal));
+        return std::nullopt;
+    }
+    // A counter counts rising edges of CU and CD anyway; any other input on an edge is an edge
+    // detection the box does not have.
+    const bool countInput = isCounterType(owner.typeName) &&
+                            (p->formal.compare(QLatin1String("CU"), Qt::CaseInsensitive) == 0 ||
+                             p->formal.compare(QLatin1String("CD"), Qt::CaseInsensitive) == 0);
+    if (!p->edge.isEmpty() && !(countInput && p->edge == QLatin1String("rising"))) {
+        issue(owner.line, describe(owner),
+              PlcopenTr::tr("its input %1 on a %2 edge is not imported").arg(p->formal, p->edge));
         return std::nullopt;
     }
     std::vector<Chain> chains;
@@ -132,7 +173,8 @@ std::optional<Chain> Importer::chainOf(int id, const QString &formal, const Elem
     }
     auto chain = computeChain(*e, formal);
     m_visiting.erase(key);
-    if (chain)
+    // A timer or counter whose Q is read is imported when its own output is, not here.
+    if (chain && !consumesPower(*e))
         m_used.insert(e->id);
     m_chains[key] = chain;
     return chain;
@@ -270,9 +312,14 @@ std::optional<Chain> Importer::blockChain(const Element &e, const QString &forma
         return chain;
     }
     if ((isTimerType(e.typeName) || isCounterType(e.typeName)) &&
-        (out.isEmpty() || out == QLatin1String("Q") || out == QLatin1String("QU"))) {
-        // Q: the element's done bit, a contact of its device.
-        auto c = contactOfVariable(e.instanceName, e.line);
+        (out.isEmpty() || out == QLatin1String("Q") || out == QLatin1String("QU") ||
+         out == QLatin1String("QD"))) {
+        // Q: the element's done bit, a contact of its device; none when the block is not
+        // imported (what reads it is listed with it).
+        if (m_failedBlocks.contains(e.id))
+            return std::nullopt;
+        auto c =
+            contactOfVariable(out.isEmpty() ? e.instanceName : e.instanceName + '.' + out, e.line);
         if (!c)
             return std::nullopt;
         return Chain{{QStringLiteral("q%1").arg(e.id), Expr::leafOf(*c)}};
@@ -286,7 +333,9 @@ std::optional<Chain> Importer::blockChain(const Element &e, const QString &forma
 // An output straight from the rail: the target's always-ON contact (W353's 253.13, Vigor's
 // M8000...) stands in for the rail, as the PLC needs a condition.
 Chain Importer::railChain() {
-    const Address on = systemAddress(m_t, SystemRole::AlwaysOn);
+    Address on = systemAddress(m_t, SystemRole::AlwaysOn);
+    if (!on.valid())
+        on = systemAddress(m_t, SystemRole::Run); // PL110 SM0.0: ON while the program runs
     if (!on.valid())
         return {};
     Contact c;
@@ -296,305 +345,72 @@ Chain Importer::railChain() {
     return {{QStringLiteral("always"), Expr::leafOf(c)}};
 }
 
-std::optional<Instruction> Importer::parseInstruction(const QString &text, const Element &e) {
-    const ParseResult parsed = parseInstructionList(m_t, text, m_model);
-    if (!parsed.ok() || parsed.list.instructions.size() != 1) {
-        issue(e.line, describe(e),
-              QStringLiteral("\"%1\": %2")
-                  .arg(text, parsed.errors.empty() ? PlcopenTr::tr("one instruction is expected")
-                                                   : parsed.errors.front().message));
+std::optional<Chain> Importer::neverChain(const Element &owner) {
+    // The always-ON bit negated (railChain's).
+    Address on = systemAddress(m_t, SystemRole::AlwaysOn);
+    if (!on.valid())
+        on = systemAddress(m_t, SystemRole::Run);
+    if (!on.valid() || !m_t.findInstruction(Op::And, ContactMode::Negated)) {
+        issue(owner.line, describe(owner),
+              PlcopenTr::tr("%1 has no contact that is never ON for an input left FALSE")
+                  .arg(m_t.displayName));
         return std::nullopt;
     }
-    Instruction ins = parsed.list.instructions.front();
-    ins.line = ins.column = ins.step = 0;
-    return ins;
+    Contact c;
+    c.mode = ContactMode::Negated;
+    Operand o;
+    o.address = on;
+    c.operands.push_back(o);
+    return Chain{{QStringLiteral("never"), Expr::leafOf(c)}};
 }
 
-// The instruction with these operands, checked as the target's listing reads it.
-std::optional<Instruction> Importer::build(const InstructionSpec *spec,
-                                           std::vector<Operand> operands, const Element &e) {
-    Instruction ins;
-    ins.spec = spec;
-    ins.operands = std::move(operands);
-    return parseInstruction(printInstruction(m_t, ins), e);
-}
-
-std::optional<Output> Importer::coilOutput(const Element &e) {
-    Output out;
-    out.element = &e;
-    if (!e.instruction.isEmpty()) {
-        auto ins = parseInstruction(e.instruction, e);
-        if (!ins)
-            return std::nullopt;
-        out.instruction = *ins;
-    } else {
-        auto c = contactOfVariable(e.variable, e.line);
-        if (!c)
-            return std::nullopt;
-        const Op op = e.storage == QLatin1String("set")     ? Op::Set
-                      : e.storage == QLatin1String("reset") ? Op::Reset
-                      : e.edge == QLatin1String("rising")   ? Op::PulseRise
-                      : e.edge == QLatin1String("falling")  ? Op::PulseFall
-                                                            : Op::Out;
-        if (e.negated && op != Op::Out) {
-            issue(e.line, describe(e),
-                  PlcopenTr::tr("a negated coil that also sets, resets or pulses is not imported"));
-            return std::nullopt;
-        }
-        const InstructionSpec *spec =
-            m_t.findInstruction(op, ContactMode::Normal, CompareOp::None, e.negated);
-        if (!spec) {
-            issue(e.line, describe(e), PlcopenTr::tr("%1 has no such coil").arg(m_t.displayName));
-            return std::nullopt;
-        }
-        auto ins = build(spec, c->operands, e);
-        if (!ins)
-            return std::nullopt;
-        out.instruction = *ins;
-    }
-    auto chain = chainIn(e.inputs.empty() ? nullptr : &e.inputs.front(), e);
-    if (!chain)
-        return std::nullopt;
-    out.chain = *chain;
-    return out;
-}
-
-// An IEC timer (TON, TOF) as the target's timer of that kind: its instance a timer device,
-// PT in the timer's units.
-std::optional<Output> Importer::timerOutput(const Element &e) {
-    const Pin *pt = pin(e, "PT");
-    const auto ptText = pt ? pinExpression(*pt, e.line) : std::nullopt;
-    const auto ms = ptText ? timeLiteral(*ptText) : std::nullopt;
-    if (!ms) {
-        issue(e.line, describe(e),
-              PlcopenTr::tr("PT must be a time literal (T#1s) to be a set value: not imported"));
-        return std::nullopt;
-    }
-    const auto device = resolve(e.instanceName, e.line, e.typeName);
-    if (!device)
-        return std::nullopt;
-    const TimerMode mode = e.typeName.compare(QLatin1String("TOF"), Qt::CaseInsensitive) == 0
-                               ? TimerMode::OffDelay
-                               : TimerMode::OnDelay;
-    if (e.typeName.compare(QLatin1String("TP"), Qt::CaseInsensitive) == 0) {
-        issue(e.line, describe(e),
-              PlcopenTr::tr("%1 has no pulse timer (TP)").arg(m_t.displayName));
-        return std::nullopt;
-    }
-    for (const InstructionSpec &spec : m_t.instructions) {
-        if (spec.op != Op::Timer || spec.timerMode != mode || spec.differentiated ||
-            spec.doubleWord)
-            continue;
-        Output out;
-        out.element = &e;
-        if (auto ins = timerInstruction(spec, *device, *ms, &out.setValue)) {
-            out.instruction = *ins;
-            auto chain = chainIn(pin(e, "IN"), e);
-            if (!chain)
-                return std::nullopt;
-            out.chain = *chain;
-            return out;
-        }
-    }
-    issue(e.line, describe(e),
-          PlcopenTr::tr("%1 has no %2 timer that times %3 ms on %4")
-              .arg(m_t.displayName, e.typeName)
-              .arg(*ms)
-              .arg(formatAddress(m_t, *device)));
-    return std::nullopt;
-}
-
-std::optional<Instruction> Importer::timerInstruction(const InstructionSpec &spec,
-                                                      const Address &timer, qint64 ms,
-                                                      std::optional<qint64> *kept) {
-    // The slots: the timer, a set value, a time base chosen among its allowed values.
-    std::vector<std::vector<int>> bases{{}};
-    for (std::size_t k = 0; k < spec.operands.size(); ++k)
-        if (spec.operands[k].kind == OperandKind::Constant &&
-            !spec.operands[k].allowedValues.empty()) {
-            std::vector<int> values = spec.operands[k].allowedValues;
-            std::sort(values.rbegin(), values.rend());
-            bases = {values};
-        }
-    for (const int base : bases.front().empty() ? std::vector<int>{0} : bases.front()) {
-        Instruction ins;
-        ins.spec = &spec;
-        bool ok = true;
-        int setSlot = -1;
-        for (std::size_t k = 0; k < spec.operands.size() && ok; ++k) {
-            const OperandSpec &s = spec.operands[k];
-            Operand o;
-            if (s.kind == OperandKind::TimerNumber) {
-                o.address = timer;
-            } else if (s.kind == OperandKind::SetValue) {
-                setSlot = static_cast<int>(k);
-                o.kind = Operand::Kind::Constant;
-            } else if (s.kind == OperandKind::Constant && !s.allowedValues.empty()) {
-                o.kind = Operand::Kind::Constant;
-                o.constant.value = base;
-            } else if (!s.optional) {
-                ok = false;
-            } else {
-                continue;
-            }
-            ins.operands.push_back(o);
-        }
-        if (!ok || ins.operands.empty())
-            continue;
-        const double step = timerBaseMs(m_t, ins);
-        if (step <= 0 || std::fmod(static_cast<double>(ms), step) != 0)
-            continue;
-        const auto units = static_cast<qint64>(static_cast<double>(ms) / step);
-        if (setSlot >= 0) {
-            Operand &o = ins.operands[static_cast<std::size_t>(setSlot)];
-            const QString text = m_t.constants.prefixed ? QStringLiteral("K%1").arg(units)
-                                 : m_t.constants.bcdSetValues
-                                     ? QStringLiteral("#%1").arg(units, 4, 10, QLatin1Char('0'))
-                                     : QString::number(units);
-            const auto c = parseConstant(m_t, text);
-            if (!std::holds_alternative<Constant>(c))
-                continue;
-            o.constant = std::get<Constant>(c);
-        } else {
-            *kept = units; // kept in the PLC (VPC TIM00): a set value of the project
-        }
-        for (Operand &o : ins.operands)
-            if (o.kind == Operand::Kind::Constant && o.constant.style == Constant::Style::Plain &&
-                m_t.constants.prefixed)
-                o.constant.style = Constant::Style::Decimal;
-        const ParseResult parsed = parseInstructionList(m_t, printInstruction(m_t, ins), m_model);
-        if (!parsed.ok() || parsed.list.instructions.size() != 1)
-            continue;
-        Instruction done = parsed.list.instructions.front();
-        done.line = done.column = done.step = 0;
-        return done;
-    }
-    return std::nullopt;
-}
-
-std::optional<Output> Importer::moveOutput(const Element &e) {
-    const Pin *in = pin(e, "IN");
-    const auto source = in ? pinExpression(*in, e.line) : std::nullopt;
-    if (!source)
-        return std::nullopt;
-    // OUT goes to an output variable: the destination.
-    const Element *dest = nullptr;
-    for (const Element &o : m_elements)
-        if (o.kind == QLatin1String("outVariable") && !o.inputs.empty())
-            for (const Connection &c : o.inputs.front().connections)
-                if (c.ref == e.id)
-                    dest = &o;
-    if (!dest) {
-        issue(e.line, describe(e), PlcopenTr::tr("MOVE's OUT goes to no variable: not imported"));
-        return std::nullopt;
-    }
-    m_used.insert(dest->id);
-    const auto s = operandOf(*source, e.line);
-    const auto d = operandOf(dest->variable, dest->line);
-    if (!s || !d)
-        return std::nullopt;
-    const InstructionSpec *spec = nullptr;
-    for (const InstructionSpec &x : m_t.instructions)
-        if (x.op == Op::Apply && x.function == ApplyFunction::Mov && !x.differentiated &&
-            !x.doubleWord && x.operands.size() == 2) {
-            spec = &x;
-            break;
-        }
-    if (!spec) {
-        issue(e.line, describe(e),
-              PlcopenTr::tr("%1 has no move instruction").arg(m_t.displayName));
-        return std::nullopt;
-    }
-    Output out;
-    out.element = &e;
-    auto ins = build(spec, {*s, *d}, e);
-    if (!ins)
-        return std::nullopt;
-    out.instruction = *ins;
+bool Importer::enAlwaysOn(const Element &e) {
     const Pin *en = pin(e, "EN");
-    if (en && !en->connections.empty()) {
-        auto chain = chainIn(en, e);
-        if (!chain)
-            return std::nullopt;
-        out.chain = *chain;
-    } else {
-        out.chain = railChain();
-    }
-    return out;
-}
-
-// A block of Rung Studio's own file: its instruction; its power inputs EN (IN for a timer)
-// or IN1..INk; its operands are the instruction's.
-std::optional<Output> Importer::ownBlockOutput(const Element &e) {
-    auto ins = parseInstruction(e.instruction, e);
-    if (!ins)
-        return std::nullopt;
-    const Pin *power = pin(e, "EN");
-    if (!power && pin(e, "IN") && !pin(e, "IN1"))
-        power = pin(e, "IN");
-    for (const Pin &p : e.inputs)
-        if (&p != power && !p.formal.startsWith(QLatin1String("IN"), Qt::CaseInsensitive))
-            for (const Connection &c : p.connections)
-                m_used.insert(c.ref);
-    if (e.typeName.compare(QLatin1String("MOVE"), Qt::CaseInsensitive) == 0)
-        if (const Pin *in = pin(e, "IN"))
-            for (const Connection &c : in->connections)
-                m_used.insert(c.ref);
-    for (const Element &o : m_elements)
-        if (o.kind == QLatin1String("outVariable") && !o.inputs.empty())
-            for (const Connection &c : o.inputs.front().connections)
-                if (c.ref == e.id)
-                    m_used.insert(o.id);
-    Output out;
-    out.element = &e;
-    out.instruction = *ins;
-    if (isUnconditional(ins->op()))
-        return out;
-    const int k = std::max(1, ins->spec->inputs);
-    if (k == 1 || power) {
-        auto chain = chainIn(power, e);
-        if (!chain)
-            return std::nullopt;
-        out.chain = *chain;
-        return out;
-    }
-    out.multi = true;
-    for (int i = 1; i <= k; ++i) {
-        const QByteArray formal = QStringLiteral("IN%1").arg(i).toLatin1();
-        const Pin *p = pin(e, formal.constData());
-        if (!p)
-            break;
-        auto chain = chainIn(p, e);
-        if (!chain)
-            return std::nullopt;
-        out.inputs.push_back(*chain);
-    }
-    return out;
-}
-
-std::optional<Output> Importer::outputOf(const Element &e) {
-    if (e.kind == QLatin1String("coil"))
-        return coilOutput(e);
-    if (e.kind != QLatin1String("block"))
-        return std::nullopt;
-    if (!e.instruction.isEmpty())
-        return ownBlockOutput(e);
-    if (isTimerType(e.typeName))
-        return timerOutput(e);
-    if (e.typeName.compare(QLatin1String("MOVE"), Qt::CaseInsensitive) == 0)
-        return moveOutput(e);
-    return std::nullopt;
-}
-
-bool Importer::consumesPower(const Element &e) const {
-    if (e.kind == QLatin1String("coil"))
+    if (!en || (en->connections.empty() && en->expression.isEmpty()))
         return true;
-    if (e.kind != QLatin1String("block") || !e.contact.isEmpty() || compareOf(e.typeName))
+    if (boolLiteral(en->expression).value_or(false))
+        return true;
+    const auto chain = chainIn(en, e);
+    if (!chain)
         return false;
-    if (!e.instruction.isEmpty())
+    if (std::all_of(chain->begin(), chain->end(), [](const Factor &f) {
+            return f.expr.empty() || f.key == QLatin1String("always");
+        }))
         return true;
-    return isTimerType(e.typeName) ||
-           e.typeName.compare(QLatin1String("MOVE"), Qt::CaseInsensitive) == 0;
+    issue(e.line, describe(e),
+          PlcopenTr::tr("its EN has a condition: while EN is OFF an IEC block stops where it "
+                        "stands, which %1's timers and counters do not; not imported")
+              .arg(m_t.displayName));
+    return false;
+}
+
+std::optional<Chain> Importer::powerPin(const Pin *p, const Element &owner, bool *never) {
+    *never = false;
+    std::optional<QString> literal;
+    if (p && !p->expression.isEmpty())
+        literal = p->expression;
+    else if (p && p->connections.size() == 1)
+        if (const Element *src = element(p->connections.front().ref);
+            src && src->kind == QLatin1String("inVariable") && boolLiteral(src->variable)) {
+            m_used.insert(src->id);
+            literal = src->variable;
+        }
+    if (!p || (p->connections.empty() && !literal)) {
+        *never = true; // an IEC input left open is FALSE
+        return std::nullopt;
+    }
+    if (literal) {
+        if (const auto b = boolLiteral(*literal)) {
+            if (*b)
+                return railChain();
+            *never = true;
+            return std::nullopt;
+        }
+        issue(owner.line, describe(owner),
+              PlcopenTr::tr("input %1 is %2, not power: not imported").arg(p->formal, *literal));
+        return std::nullopt;
+    }
+    return chainIn(p, owner);
 }
 
 } // namespace rung::model::plcopen

@@ -74,13 +74,32 @@ void Importer::buildProgram() {
             return a->y < b->y;
         return a->x < b->x;
     });
-    for (const Element *e : order) {
-        auto out = outputOf(*e);
-        if (!out)
-            continue;
-        m_used.insert(e->id);
-        m_outputs.push_back(std::move(*out));
-    }
+    // Timers and counters first, so that what reads their Q knows whether they are there.
+    std::map<int, std::vector<Output>> built;
+    for (const bool instances : {true, false})
+        for (const Element *e : order) {
+            if (isInstanceBlock(*e) != instances)
+                continue;
+            std::vector<Output> outs;
+            if (e->instruction.isEmpty() && isCounterType(e->typeName)) {
+                if (!counterOutputs(*e, &outs))
+                    outs.clear();
+            } else if (auto out = outputOf(*e)) {
+                outs.push_back(std::move(*out));
+            }
+            if (outs.empty()) {
+                if (instances)
+                    m_failedBlocks.insert(e->id);
+                continue;
+            }
+            m_used.insert(e->id);
+            built[e->id] = std::move(outs);
+        }
+    for (const Element *e : order)
+        if (const auto it = built.find(e->id); it != built.end())
+            for (Output &out : it->second)
+                m_outputs.push_back(std::move(out));
+    noteCounters();
     Project p;
     p.target = &m_t;
     p.model = !m_fileModel.isEmpty() && m_t.model(m_fileModel) ? m_fileModel
@@ -154,6 +173,12 @@ void Importer::buildProgram() {
     reportUnused();
     proposeDevices();
     checkListing(p);
+    // Rung Studio's file keeps the listing beside the ladder: a ladder changed by another tool
+    // no longer gives it. The ladder is the program; the note says the listing was not taken.
+    if (!m_listing.isEmpty() && m_result.issues.empty() && m_result.unmapped.empty() &&
+        printInstructionList(ladderToList(p.program).list).trimmed() != m_listing.trimmed())
+        note(PlcopenTr::tr("the instruction list in the file differs from its ladder (another tool "
+                           "changed the ladder?): the ladder is imported"));
     m_result.project = std::move(p);
 }
 
@@ -206,7 +231,19 @@ std::optional<Address> Importer::quietDevice(const QString &name, const Variable
 // device is listed.
 void Importer::collectSymbols(Project &p) {
     for (const QString &name : m_varOrder) {
+        // A variable an element names whose element waits for another variable's device (a
+        // counter's CV to it, the counter not mapped yet): it needs one too.
+        if (!m_resolved.contains(name) && !m_vars[name].used && m_vars[name].constant.isEmpty() &&
+            m_vars[name].type.compare(QLatin1String("R_TRIG"), Qt::CaseInsensitive) != 0 &&
+            m_vars[name].type.compare(QLatin1String("F_TRIG"), Qt::CaseInsensitive) != 0 &&
+            std::any_of(m_elements.begin(), m_elements.end(), [&name](const Element &e) {
+                return e.variable == name || e.instanceName == name ||
+                       e.variable.startsWith(name + QLatin1Char('.'));
+            }))
+            resolve(name, m_vars[name].line, m_vars[name].type);
         const VariableInfo &v = m_vars[name];
+        if (!v.constant.isEmpty())
+            continue; // a literal where the ladder names it, no device
         const bool named = m_resolved.contains(name) || v.used;
         const auto a = quietDevice(name, v);
         if (!a) {
@@ -336,8 +373,9 @@ void Importer::reportUnused() {
                       .arg(m_t.displayName));
         else if (e.kind == QLatin1String("block"))
             issue(e.line, describe(e),
-                  PlcopenTr::tr("this block is not imported: contacts, coils, TON, TOF, MOVE, the "
-                                "comparisons, NOT, R_TRIG and F_TRIG are (docs/plcopen.md)"));
+                  PlcopenTr::tr("this block is not imported: contacts, coils, TON, TOF, CTU, "
+                                "CTD, CTUD, MOVE, the comparisons, NOT, R_TRIG and F_TRIG are "
+                                "(docs/plcopen.md)"));
         else if (const Element *source = sourceNotImported(e))
             issue(e.line, describe(e),
                   PlcopenTr::tr("its power comes from %1 (line %2), which is not imported")
@@ -356,6 +394,16 @@ void Importer::reportUnused() {
 // A free device for each variable without one: of the kind its type needs.
 void Importer::proposeDevices() {
     std::set<Address> taken = m_usedDevices;
+    // Areas that share element numbers (VPC t / c, CPM1 TIM / CNT): a number taken in one is
+    // taken in all (Area::bank).
+    const auto takenInBank = [&](const Address &a) {
+        const int bank = m_t.area(a.area).bank;
+        if (bank < 0)
+            return false;
+        return std::any_of(taken.begin(), taken.end(), [&](const Address &t) {
+            return t.index == a.index && t.area != a.area && m_t.area(t.area).bank == bank;
+        });
+    };
     for (UnmappedVariable &u : m_result.unmapped) {
         const QString t = u.type.toUpper();
         AreaKind kind = AreaKind::Bit;
@@ -365,27 +413,45 @@ void Importer::proposeDevices() {
             kind = AreaKind::Counter;
         else if (t != QLatin1String("BOOL") && !t.isEmpty())
             kind = AreaKind::Word;
+        // A word: the data memory first, as %MWn names it (PL110 V, not its display's DISP).
+        if (kind == AreaKind::Word)
+            if (const int data = dataMemoryArea(m_t); data >= 0)
+                if (const auto range = m_t.range(data, m_model))
+                    for (int n = range->first; n <= range->second && u.proposed.isEmpty(); ++n)
+                        if (const Address candidate{data, n, -1}; taken.insert(candidate).second)
+                            u.proposed = formatAddress(m_t, candidate);
         // Areas of the kind first; then the bits (or the words) of channel areas, where the
-        // target keeps its work bits in channels (CPM1 200.00).
-        for (int pass = 0; pass < 2 && u.proposed.isEmpty(); ++pass) {
-            const AreaKind wanted = pass == 0 ? kind : AreaKind::Channel;
-            if (pass == 1 && kind != AreaKind::Bit && kind != AreaKind::Word)
-                break;
+        // target keeps its work bits in channels (CPM1 200.00); memory kept over a power loss
+        // last (the VPC's timers and counters are all kept, VPC user's manual, III).
+        for (int pass = 0; pass < 4 && u.proposed.isEmpty(); ++pass) {
+            const bool retentiveToo = pass >= 2;
+            const AreaKind wanted = pass % 2 == 0 ? kind : AreaKind::Channel;
+            if (pass % 2 == 1 && kind != AreaKind::Bit && kind != AreaKind::Word)
+                continue;
             for (std::size_t i = 0; i < m_t.areas.size() && u.proposed.isEmpty(); ++i) {
                 const Area &a = m_t.areas[i];
                 const bool plain = a.writable && !a.system && !a.physical && !a.indexRegister &&
                                    !a.presetsOf && !a.branchMemory &&
-                                   a.onlyWrittenBy == ApplyFunction::None && !a.retentive;
+                                   a.onlyWrittenBy == ApplyFunction::None &&
+                                   (!a.retentive || retentiveToo);
                 if (a.kind != wanted || !plain)
                     continue;
                 const auto range = m_t.range(static_cast<int>(i), m_model);
                 if (!range)
                     continue;
-                const int bits = pass == 1 && kind == AreaKind::Bit ? 16 : 0;
+                const int bits = pass % 2 == 1 && kind == AreaKind::Bit ? 16 : 0;
                 for (int n = range->first; n <= range->second && u.proposed.isEmpty(); ++n)
                     for (int b = bits > 0 ? 0 : -1; b < std::max(0, bits); ++b) {
                         const Address candidate{static_cast<int>(i), n, b};
-                        if (taken.insert(candidate).second) {
+                        // A counter that counts as the file's does (VPC: c16.. count up).
+                        const auto alike = [&](int number) {
+                            const auto c = counterChoices(m_t, counterKind(t),
+                                                          {static_cast<int>(i), number, -1});
+                            return !c.empty() && c.front().sameKind;
+                        };
+                        if (kind == AreaKind::Counter && !alike(n) && alike(range->second))
+                            continue;
+                        if (!takenInBank(candidate) && taken.insert(candidate).second) {
                             u.proposed = formatAddress(m_t, candidate);
                             break;
                         }

@@ -1,6 +1,7 @@
 #include "model/exchange/plcopen_export.h"
 #include "model/tr.h"
 
+#include "model/convert/convert.h"
 #include "model/exchange/plcopen_xml.h"
 #include "model/ladder/ladder_text.h"
 #include "model/target/address.h"
@@ -63,6 +64,7 @@ PlcopenExport Exporter::write(const QString &name, const QDateTime &created) {
         writeElem(xml, e);
     xml.writeEndElement(); // LD
     xml.writeEndElement(); // body
+    writeListing(xml, &result.notes);
     xml.writeEndElement(); // pou
     xml.writeEndElement(); // pous
     xml.writeEndElement(); // types
@@ -88,11 +90,42 @@ PlcopenExport Exporter::write(const QString &name, const QDateTime &created) {
     writeProjectData(xml);
     xml.writeEndElement(); // project
     xml.writeEndDocument();
-    for (const QString &block : m_vendor)
-        result.notes << PlcopenTr::tr("%1 is written as a block of %2's own: other tools read the "
-                                      "file but do not know this block")
-                            .arg(block, m_t.displayName);
+    for (const QString &block : m_vendor) {
+        const auto why = m_vendorWhy.find(block);
+        result.notes << (why == m_vendorWhy.end()
+                             ? PlcopenTr::tr("%1 is written as a block of %2's own: other tools "
+                                             "read the file but do not know this block")
+                                   .arg(block, m_t.displayName)
+                             : PlcopenTr::tr("%1 is written as a block of %2's own (%3): other "
+                                             "tools read the file but do not know this block")
+                                   .arg(block, m_t.displayName, why->second));
+    }
+    for (const QString &note : m_counterNotes)
+        result.notes << note;
     return result;
+}
+
+void Exporter::writeListing(QXmlStreamWriter &xml, QStringList *notes) {
+    // The listing the vendor's tool downloads, as `convert --to il` writes it. Not an IL body:
+    // IEC 61131-3 IL is another language (LD X0 / ANDN X1 / ST Y0), and Beremiz and OpenPLC
+    // compile every POU's body, so TMR T0 K50 there would stop their build.
+    const ToListingResult listed = ladderToList(m_p.program);
+    if (!listed.ok()) {
+        for (const Diagnostic &d : listed.problems)
+            if (d.severity == Severity::Error) {
+                *notes << PlcopenTr::tr("the instruction list is not written beside the ladder: "
+                                        "rung %1 does not convert (%2)")
+                              .arg(d.location.rung + 1)
+                              .arg(d.message);
+                return;
+            }
+    }
+    beginData(xml, "instructionList");
+    xml.writeStartElement(QLatin1String(kRungNs), QStringLiteral("instructionList"));
+    xml.writeAttribute(QStringLiteral("target"), m_t.id);
+    xml.writeCharacters(printInstructionList(listed.list));
+    xml.writeEndElement();
+    endData(xml);
 }
 
 void Exporter::beginData(QXmlStreamWriter &xml, const char *what) {
@@ -242,23 +275,25 @@ void Exporter::writeInstruction(QXmlStreamWriter &xml, const Elem &e) {
     endData(xml);
 }
 
+void Exporter::startElement(QXmlStreamWriter &xml, const QString &tag, const Elem &e, bool named) {
+    xml.writeStartElement(tag);
+    if (named) // a connector's or continuation's name
+        xml.writeAttribute(QStringLiteral("name"), e.variable);
+    xml.writeAttribute(QStringLiteral("localId"), QString::number(e.id));
+    xml.writeAttribute(QStringLiteral("height"), QString::number(e.height));
+    xml.writeAttribute(QStringLiteral("width"), QString::number(e.width));
+}
+
 void Exporter::writeElem(QXmlStreamWriter &xml, const Elem &e) {
-    const QString id = QString::number(e.id);
     switch (e.kind) {
     case Elem::Kind::Comment:
-        xml.writeStartElement(QStringLiteral("comment"));
-        xml.writeAttribute(QStringLiteral("localId"), id);
-        xml.writeAttribute(QStringLiteral("height"), QString::number(e.height));
-        xml.writeAttribute(QStringLiteral("width"), QString::number(e.width));
+        startElement(xml, QStringLiteral("comment"), e);
         writePosition(xml, "position", e.x, e.y);
         writeText(xml, "content", e.variable);
         xml.writeEndElement();
         return;
     case Elem::Kind::LeftRail:
-        xml.writeStartElement(QStringLiteral("leftPowerRail"));
-        xml.writeAttribute(QStringLiteral("localId"), id);
-        xml.writeAttribute(QStringLiteral("height"), QString::number(e.height));
-        xml.writeAttribute(QStringLiteral("width"), QString::number(e.width));
+        startElement(xml, QStringLiteral("leftPowerRail"), e);
         writePosition(xml, "position", e.x, e.y);
         xml.writeStartElement(QStringLiteral("connectionPointOut"));
         xml.writeAttribute(QStringLiteral("formalParameter"), QString());
@@ -267,10 +302,7 @@ void Exporter::writeElem(QXmlStreamWriter &xml, const Elem &e) {
         xml.writeEndElement();
         return;
     case Elem::Kind::RightRail:
-        xml.writeStartElement(QStringLiteral("rightPowerRail"));
-        xml.writeAttribute(QStringLiteral("localId"), id);
-        xml.writeAttribute(QStringLiteral("height"), QString::number(e.height));
-        xml.writeAttribute(QStringLiteral("width"), QString::number(e.width));
+        startElement(xml, QStringLiteral("rightPowerRail"), e);
         writePosition(xml, "position", e.x, e.y);
         for (const auto &[formal, conns] : e.inputs)
             writeConnections(xml, conns, 20);
@@ -278,11 +310,9 @@ void Exporter::writeElem(QXmlStreamWriter &xml, const Elem &e) {
         return;
     case Elem::Kind::Contact:
     case Elem::Kind::Coil:
-        xml.writeStartElement(e.kind == Elem::Kind::Contact ? QStringLiteral("contact")
-                                                            : QStringLiteral("coil"));
-        xml.writeAttribute(QStringLiteral("localId"), id);
-        xml.writeAttribute(QStringLiteral("height"), QString::number(e.height));
-        xml.writeAttribute(QStringLiteral("width"), QString::number(e.width));
+        startElement(
+            xml, e.kind == Elem::Kind::Contact ? QStringLiteral("contact") : QStringLiteral("coil"),
+            e);
         if (e.negated)
             xml.writeAttribute(QStringLiteral("negated"), QStringLiteral("true"));
         if (!e.edge.isEmpty())
@@ -300,11 +330,10 @@ void Exporter::writeElem(QXmlStreamWriter &xml, const Elem &e) {
         return;
     case Elem::Kind::InVar:
     case Elem::Kind::OutVar:
-        xml.writeStartElement(e.kind == Elem::Kind::InVar ? QStringLiteral("inVariable")
-                                                          : QStringLiteral("outVariable"));
-        xml.writeAttribute(QStringLiteral("localId"), id);
-        xml.writeAttribute(QStringLiteral("height"), QString::number(e.height));
-        xml.writeAttribute(QStringLiteral("width"), QString::number(e.width));
+        startElement(xml,
+                     e.kind == Elem::Kind::InVar ? QStringLiteral("inVariable")
+                                                 : QStringLiteral("outVariable"),
+                     e);
         writePosition(xml, "position", e.x, e.y);
         if (e.kind == Elem::Kind::InVar) {
             xml.writeStartElement(QStringLiteral("connectionPointOut"));
@@ -316,13 +345,26 @@ void Exporter::writeElem(QXmlStreamWriter &xml, const Elem &e) {
         xml.writeTextElement(QStringLiteral("expression"), e.variable);
         xml.writeEndElement();
         return;
+    case Elem::Kind::Connector:
+        startElement(xml, QStringLiteral("connector"), e, true);
+        writePosition(xml, "position", e.x, e.y);
+        writeConnections(xml, e.inputs.empty() ? std::vector<Conn>{} : e.inputs.front().second,
+                         e.height / 2);
+        writeInstruction(xml, e);
+        xml.writeEndElement();
+        return;
+    case Elem::Kind::Continuation:
+        startElement(xml, QStringLiteral("continuation"), e, true);
+        writePosition(xml, "position", e.x, e.y);
+        xml.writeStartElement(QStringLiteral("connectionPointOut"));
+        writePosition(xml, "relPosition", e.width, e.height / 2);
+        xml.writeEndElement();
+        xml.writeEndElement();
+        return;
     case Elem::Kind::Block:
         break;
     }
-    xml.writeStartElement(QStringLiteral("block"));
-    xml.writeAttribute(QStringLiteral("localId"), id);
-    xml.writeAttribute(QStringLiteral("width"), QString::number(e.width));
-    xml.writeAttribute(QStringLiteral("height"), QString::number(e.height));
+    startElement(xml, QStringLiteral("block"), e);
     xml.writeAttribute(QStringLiteral("typeName"), e.typeName);
     if (!e.instanceName.isEmpty())
         xml.writeAttribute(QStringLiteral("instanceName"), e.instanceName);

@@ -9,26 +9,37 @@ HistoryRecorder::HistoryRecorder(std::shared_ptr<const MemoryLayout> layout,
     : m_layout(std::move(layout))
     , m_capacity(std::max<std::size_t>(2, changesPerDevice)) {}
 
-bool HistoryRecorder::watch(const Address &address) {
-    if (find(address) >= 0)
-        return true;
+HistoryRecorder::Device HistoryRecorder::deviceOf(const Address &address) const {
+    Device d{address, -1, 0};
     // A double word (PL110 VD) is two words: the recorder follows one word per device.
     if (address.area >= 0 && address.area < m_layout->areaCount() &&
         m_layout->area(address.area).doubleWords)
-        return false;
-    Device d{address, -1, 0};
+        return d;
     // A bit of a word (D0.3) or a bit device (X0, a timer's done bit) records 0/1; a word,
     // a channel or a timer/counter (its current value) records the value.
     if (address.bit >= 0 || m_layout->word(address) < 0 ||
         m_layout->target().area(address.area).kind == AreaKind::Bit) {
         const BitRef r = m_layout->bit(address);
-        if (!r.valid())
-            return false;
-        d.word = r.word;
-        d.mask = r.mask;
+        if (r.valid()) {
+            d.word = r.word;
+            d.mask = r.mask;
+        }
     } else {
         d.word = m_layout->word(address);
     }
+    return d;
+}
+
+int HistoryRecorder::wordOf(const Address &address) const {
+    return deviceOf(address).word;
+}
+
+bool HistoryRecorder::watch(const Address &address) {
+    if (find(address) >= 0)
+        return true;
+    const Device d = deviceOf(address);
+    if (d.word < 0)
+        return false;
     m_index.emplace(address, static_cast<int>(m_devices.size()));
     m_devices.push_back(d);
     m_last.push_back(0);

@@ -39,6 +39,8 @@ public:
     // Starts recording a device from the next record(); false when the layout has no such
     // bit or word. Watching a device twice records it once.
     bool watch(const Address &address);
+    // The image word a device's values are recorded from; -1 when it cannot be recorded.
+    int wordOf(const Address &address) const;
     int deviceCount() const { return static_cast<int>(m_devices.size()); }
     std::size_t changesPerDevice() const { return m_capacity; }
     void clear(); // forgets the past, keeps the watched devices
@@ -89,6 +91,7 @@ private:
     };
 
     int find(const Address &address) const;
+    Device deviceOf(const Address &address) const; // word -1: cannot be recorded
     void rebuildWords();
     template <typename Key> std::optional<std::int32_t> valueAt(int device, Key key) const;
 

@@ -109,3 +109,33 @@ TEST(CliPlcopen, ImportListsWhatHasNoDeviceAndTakesAMappingFile) {
     EXPECT_TRUE(QFile::exists(out));
     EXPECT_TRUE(r.err.contains(QStringLiteral("written without what is listed above (--force)")));
 }
+
+// Counters: the export says which counters are IEC counters and what they do otherwise; the
+// import of another tool's CTU says how it is imported, as a note beside the errors.
+TEST(CliPlcopen, CountersAreNotedBothWays) {
+    QTemporaryDir dir;
+    const QString xml = dir.filePath(QStringLiteral("count.xml"));
+    CliRun r = cli({QStringLiteral("convert"),
+                    exampleDir() + QStringLiteral("/vigor/counting-range-extension.rung"),
+                    QStringLiteral("--to"), QStringLiteral("plcopen"), QStringLiteral("-o"), xml});
+    EXPECT_EQ(r.code, 0) << r.err.toStdString();
+    EXPECT_TRUE(r.err.contains(QStringLiteral("note: CNT is written as an IEC CTU: Vigor's CNT "
+                                              "stops counting at its set value")))
+        << r.err.toStdString();
+    const QString foreign =
+        QStringLiteral(RUNG_TEST_DATA_DIR "/plcopen/foreign/openplc-7-segments.xml");
+    const QString map = rung::test::writeFile(
+        dir, QStringLiteral("seg.map"),
+        "TON0 = T0\nTOF0 = T1\nCTU0 = C0\nsquare_wave = M0\nctu_reset = M1\ncurrent_count = D0\n");
+    r = cli({QStringLiteral("convert"), foreign, QStringLiteral("--from"),
+             QStringLiteral("plcopen"), QStringLiteral("--target"), QStringLiteral("vigor"),
+             QStringLiteral("--map"), map, QStringLiteral("--to"), QStringLiteral("il"),
+             QStringLiteral("--force")});
+    EXPECT_EQ(r.code, 1); // the TOF is listed
+    EXPECT_TRUE(r.err.contains(QStringLiteral("openplc-7-segments.xml: note: CTU (CTU0) is "
+                                              "imported as Vigor's CNT: ")))
+        << r.err.toStdString();
+    EXPECT_TRUE(r.err.contains(QStringLiteral("openplc-7-segments.xml:249: error: block TOF: ")));
+    EXPECT_TRUE(r.out.contains(QStringLiteral("LD M0\nCNT C0 K10\nLD M1\nRST C0\n")))
+        << r.out.toStdString();
+}

@@ -14,6 +14,7 @@
 #include <gtest/gtest.h>
 
 #include <chrono>
+#include <limits>
 #include <thread>
 
 namespace rung::comms::test {
@@ -98,6 +99,14 @@ ConnectionSettings pl110Settings() {
     s.pollIntervalMs = 5;
     s.reconnectMinMs = 20;
     s.reconnectMaxMs = 80;
+    return s;
+}
+
+// The Vigor Computer Link with a fast poll and a short patience, for a PLC that answers at once.
+ConnectionSettings vigorSettings() {
+    ConnectionSettings s = defaultSettings(ProtocolKind::VigorLink);
+    s.link = {50, 1, 5};
+    s.pollIntervalMs = 5;
     return s;
 }
 
@@ -390,10 +399,8 @@ TEST(OnlineSession, AVigorOnTheComputerLinkShowsItsBitsWordsAndRunState) {
     plc.setByte(0x0081, 0x04); // M10
     plc.setByte(0x1C0A, 0x39); // D5 = 3039h, low byte first
     plc.setByte(0x1C0B, 0x30);
-    ConnectionSettings s = defaultSettings(ProtocolKind::VigorLink);
-    s.link = {50, 1, 5};
-    s.pollIntervalMs = 5;
-    Harness h(model::Family::Vigor, s, [&](FakeTransport &t) { t.setResponder(plc.responder()); });
+    Harness h(model::Family::Vigor, vigorSettings(),
+              [&](FakeTransport &t) { t.setResponder(plc.responder()); });
     h.watch({"M10", "D5", "Y0", "T0"});
     QSignalSpy finished(h.session.get(), &model::MonitorSource::commandFinished);
     h.session->connectToPlc();
@@ -463,6 +470,70 @@ TEST(OnlineSession, StatisticsAndTheTrafficTapReachTheOwner) {
     EXPECT_EQ(records[0].direction, TrafficRecord::Direction::Sent);
     EXPECT_EQ(records[1].direction, TrafficRecord::Direction::Received);
     EXPECT_GT(next, 1u);
+}
+
+} // namespace
+} // namespace rung::comms::test
+
+namespace rung::comms::test {
+namespace {
+
+// Online, the timing chart draws the PLC's values refresh by refresh, as it draws a
+// simulation scan by scan: the session keeps the history of the devices asked for, each from
+// the first refresh that read it (a word not read yet holds a 0 the PLC never said), and a
+// trigger marks the refresh where it became true (the PLC does not stop for it).
+TEST(OnlineSession, KeepsAHistoryOfTheChartsDevicesRefreshByRefresh) {
+    FakeVigorPlc plc;
+    plc.setByte(0x03E0, 0x01); // M9000: RUN
+    plc.setByte(0x1C0A, 0x39); // D5 = 3039h, low byte first
+    plc.setByte(0x1C0B, 0x30);
+    Harness h(model::Family::Vigor, vigorSettings(),
+              [&](FakeTransport &t) { t.setResponder(plc.responder()); });
+    const model::Address m10 = address(h.target, "M10");
+    const model::Address d5 = address(h.target, "D5");
+    ASSERT_TRUE(h.session->watchHistory(m10));
+    ASSERT_TRUE(h.session->watchHistory(d5));
+    model::Trigger rises;
+    rises.device = m10;
+    rises.kind = model::Trigger::Kind::Rises;
+    rises.action = model::Trigger::Action::Stop; // as the chart asks: online it only marks
+    ASSERT_TRUE(h.session->setTrigger(rises));
+    QSignalSpy triggered(h.session.get(), &model::MonitorSource::triggered);
+    h.watch({"M10", "D5"});
+    h.session->connectToPlc();
+    ASSERT_TRUE(eventually([&] { return h.value("D5") == 0x3039; }));
+    plc.setByte(0x0081, 0x04); // M10 ON
+    ASSERT_TRUE(eventually([&] { return h.bit("M10"); }));
+    plc.setByte(0x0081, 0x00); // and OFF again
+    ASSERT_TRUE(eventually([&] { return !h.bit("M10"); }));
+    ASSERT_TRUE(eventually([&] { return triggered.count() == 1; }));
+    EXPECT_EQ(h.session->runState(), RunState::Running);
+
+    std::vector<model::HistoryRecorder::Change> bit;
+    std::vector<model::HistoryRecorder::Change> word;
+    std::vector<model::HistoryRecorder::Mark> marks;
+    h.session->readHistory([&](const model::HistoryRecorder &r) {
+        bit = r.changes(m10, 0, std::numeric_limits<qint64>::max());
+        word = r.changes(d5, 0, std::numeric_limits<qint64>::max());
+        marks = r.marks();
+    });
+    // D5's first value is the PLC's, not the 0 before it was read.
+    ASSERT_FALSE(word.empty());
+    EXPECT_EQ(word.front().value, 0x3039);
+    EXPECT_EQ(word.size(), 1u);
+    // M10: OFF, ON, OFF, refresh numbers and times since the connection rising.
+    ASSERT_EQ(bit.size(), 3u);
+    EXPECT_EQ(bit[0].value, 0);
+    EXPECT_EQ(bit[1].value, 1);
+    EXPECT_EQ(bit[2].value, 0);
+    EXPECT_LT(bit[0].scan, bit[1].scan);
+    EXPECT_LT(bit[1].scan, bit[2].scan);
+    EXPECT_LE(bit[1].timeMs, bit[2].timeMs);
+    ASSERT_EQ(marks.size(), 1u);
+    EXPECT_EQ(marks[0].scan, bit[1].scan);
+    EXPECT_EQ(triggered[0][0].value<quint64>(), bit[1].scan);
+    // A device the image has no word for is refused, as by the simulation.
+    EXPECT_FALSE(h.session->watchHistory(model::Address{}));
 }
 
 } // namespace

@@ -6,6 +6,9 @@
 #include "model/image/monitor_source.h"
 #include "tests/eventually.h"
 
+#include <QSignalSpy>
+
+#include <functional>
 #include <vector>
 
 namespace rung::test {
@@ -30,6 +33,16 @@ public:
     }
     void publish(std::shared_ptr<const model::Snapshot> snapshot) {
         publishSnapshot(std::move(snapshot));
+    }
+    // Publishes the image of `target` that `fill` makes and waits until the readers were
+    // told; false when they were not.
+    bool publishFilled(const model::Target &target,
+                       const std::function<void(model::Snapshot &)> &fill) {
+        auto snapshot = blank(target);
+        fill(*snapshot);
+        QSignalSpy changed(this, &MonitorSource::snapshotChanged);
+        publish(snapshot);
+        return changed.wait(waits::kPatienceMs);
     }
     void setState(RunState state) { setRunState(state); }
     void setError(const QString &text) { setErrorText(text); }

@@ -25,6 +25,8 @@
 #include <QLabel>
 #include <QMessageBox>
 #include <QRegularExpression>
+#include <QScrollArea>
+#include <QScrollBar>
 #include <QSettings>
 #include <QStatusBar>
 #include <QTabBar>
@@ -391,4 +393,36 @@ TEST_P(DialogFit, TheStatusBarTheLadderAndTheChartShowTheirTextsWhole) {
                 EXPECT_FALSE(label.intersects(tag)) << GetParam() << " at " << t << " ms";
     }
     EXPECT_GT(numbers, 0);
+}
+
+// The Connection dock in its column (Ctrl+W without a port shows it): every setting, button
+// and notice in sight, not behind a sideways scroll bar (its protocol, Refresh and Connect
+// were cut at 1366x768 in all three languages), over a serial port and over TCP.
+TEST_P(DialogFit, TheConnectionDockFitsItsColumn) {
+    auto *dock = window.findChild<QDockWidget *>(QStringLiteral("connectionDock"));
+    ASSERT_NE(dock, nullptr);
+    auto *scroll = qobject_cast<QScrollArea *>(dock->widget());
+    ASSERT_NE(scroll, nullptr);
+    auto *tcp = dock->findChild<QAbstractButton *>(QStringLiteral("connectionViaTcp"));
+    auto *serial = dock->findChild<QAbstractButton *>(QStringLiteral("connectionViaSerial"));
+    ASSERT_TRUE(tcp && serial);
+    dock->show();
+    dock->raise();
+    for (const QSize size : {QSize(1366, 768), QSize(1024, 600)}) {
+        window.resize(size);
+        for (QAbstractButton *via : {tcp, serial}) {
+            via->click();
+            for (int k = 0; k < 3; ++k)
+                QCoreApplication::processEvents();
+            const std::string where = std::string(GetParam()) + " at " +
+                                      std::to_string(size.width()) + ", " +
+                                      via->objectName().toStdString();
+            EXPECT_FALSE(scroll->horizontalScrollBar()->isVisible())
+                << where << ": the panel needs " << scroll->widget()->minimumSizeHint().width()
+                << " px, the dock shows " << scroll->viewport()->width();
+            const QStringList cut = cutTexts(dock);
+            EXPECT_TRUE(cut.isEmpty())
+                << where << ": " << cut.join(QStringLiteral("; ")).toStdString();
+        }
+    }
 }

@@ -131,6 +131,20 @@ void addItem(std::vector<Text> &out, const QString &where, QTreeWidgetItem *item
         addItem(out, where, item->child(i), columns);
 }
 
+// The rows of a model under `parent` and theirs (the watch lists' devices), as drawn.
+void addRows(std::vector<Text> &out, const QString &where, const QAbstractItemModel &m,
+             const QModelIndex &parent) {
+    for (int r = 0; r < m.rowCount(parent); ++r) {
+        for (int c = 0; c < m.columnCount(parent); ++c) {
+            const QModelIndex index = m.index(r, c, parent);
+            out.push_back({where + QStringLiteral(" item"), index.data().toString()});
+            out.push_back(
+                {where + QStringLiteral(" item tooltip"), index.data(Qt::ToolTipRole).toString()});
+        }
+        addRows(out, where, m, m.index(r, 0, parent));
+    }
+}
+
 // Every text the window holds for the user to read.
 std::vector<Text> windowTexts(QMainWindow &window) {
     std::vector<Text> out;
@@ -174,16 +188,14 @@ std::vector<Text> windowTexts(QMainWindow &window) {
             view && view->model() && !qobject_cast<QTreeWidget *>(w) &&
             !qobject_cast<QTableWidget *>(w) && !qobject_cast<QHeaderView *>(w)) {
             const QAbstractItemModel *m = view->model();
-            for (int c = 0; c < m->columnCount(); ++c)
+            for (int c = 0; c < m->columnCount(); ++c) {
                 out.push_back({where + QStringLiteral(" header"),
                                m->headerData(c, Qt::Horizontal).toString()});
-            for (int r = 0; view->isVisible() && r < m->rowCount(); ++r)
-                for (int c = 0; c < m->columnCount(); ++c) {
-                    const QModelIndex index = m->index(r, c);
-                    out.push_back({where + QStringLiteral(" item"), index.data().toString()});
-                    out.push_back({where + QStringLiteral(" item tooltip"),
-                                   index.data(Qt::ToolTipRole).toString()});
-                }
+                out.push_back({where + QStringLiteral(" header tooltip"),
+                               m->headerData(c, Qt::Horizontal, Qt::ToolTipRole).toString()});
+            }
+            if (view->isVisible())
+                addRows(out, where, *m, {});
         }
         if (auto *table = qobject_cast<QTableWidget *>(w))
             for (int c = 0; c < table->columnCount(); ++c) {

@@ -1,5 +1,6 @@
 #include "app/gui/main_window.h"
 #include "app/gui/symbol_table.h"
+#include "editor/cross_reference_view.h"
 #include "editor/il_editor.h"
 #include "editor/ladder_view.h"
 #include "editor/problems_view.h"
@@ -18,7 +19,7 @@
 #include <QTemporaryDir>
 #include <QTest>
 #include <QTimer>
-#include <QTreeWidget>
+#include <QTreeView>
 #include <QUndoStack>
 
 #include "tests/test_files.h"
@@ -447,13 +448,13 @@ TEST_F(Fixture, CrossReferenceListsEveryUse) {
     window.ilEditor()->setText(QStringLiteral("LD X0\nOUT Y0\nLD Y0\nAND X0\nOUT Y1\nEND\n"));
     window.applyListing();
     window.crossReferenceDevice()->setText(QStringLiteral("Y0"));
-    QTreeWidget *tree = window.crossReference();
-    ASSERT_EQ(tree->topLevelItemCount(), 1); // the device, its uses below it
-    QTreeWidgetItem *y0 = tree->topLevelItem(0);
-    ASSERT_EQ(y0->childCount(), 2);
-    EXPECT_EQ(y0->child(0)->text(2), QStringLiteral("coil"));
-    EXPECT_EQ(y0->child(1)->text(0), QStringLiteral("rung 2"));
-    EXPECT_EQ(y0->child(1)->text(2), QStringLiteral("contact"));
+    const QAbstractItemModel *rows = window.crossReference()->tree()->model();
+    ASSERT_EQ(rows->rowCount(), 1); // the device, its uses below it
+    const QModelIndex y0 = rows->index(0, 0);
+    ASSERT_EQ(rows->rowCount(y0), 2);
+    EXPECT_EQ(rows->index(0, 2, y0).data().toString(), QStringLiteral("coil"));
+    EXPECT_EQ(rows->index(1, 0, y0).data().toString(), QStringLiteral("rung 2"));
+    EXPECT_EQ(rows->index(1, 2, y0).data().toString(), QStringLiteral("contact"));
 }
 
 TEST_F(Fixture, SymbolsImportFromCsvAndShowByName) {

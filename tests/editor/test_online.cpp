@@ -12,6 +12,7 @@
 #include "editor/watch_list_view.h"
 #include "model/target/address.h"
 #include "tests/cli/virtual_plc_fixture.h"
+#include "tests/editor/watch_rows.h"
 
 #include <QAction>
 #include <QApplication>
@@ -476,17 +477,17 @@ TEST_P(Online, TheWatchTableShowsATimersPresetAsTheBoxDoes) {
                         : c.protocol == comms::ProtocolKind::ModbusRtu ? "T1"
                                                                        : "TIM 000";
     watch->addDevice(model::formatAddress(target, at(timer)));
-    ASSERT_EQ(watch->topLevelItemCount(), 1);
-    QTreeWidgetItem *row = watch->topLevelItem(0)->child(0);
-    ASSERT_NE(row, nullptr);
+    ASSERT_EQ(test::watchRows(watch), 1);
+    const QPersistentModelIndex row =
+        test::watchIndex(watch, 0, 0, editor::WatchListView::ValueColumn);
+    ASSERT_TRUE(row.isValid());
     goOnline();
     const QString preset =
         QStringLiteral(" of %1, ")
             .arg(QString::fromUtf8(c.timer).section(QLatin1Char(' '), 0, 0).mid(1));
-    EXPECT_TRUE(QTest::qWaitFor(
-        [&] { return row->text(editor::WatchListView::ValueColumn).contains(preset); },
-        kPatienceMs))
-        << row->text(editor::WatchListView::ValueColumn).toStdString();
+    EXPECT_TRUE(
+        QTest::qWaitFor([&] { return row.data().toString().contains(preset); }, kPatienceMs))
+        << row.data().toString().toStdString();
 }
 
 // Issue 31: a value typed in the watch table is not shown while the first write of the
@@ -494,10 +495,11 @@ TEST_P(Online, TheWatchTableShowsATimersPresetAsTheBoxDoes) {
 TEST_P(Online, AWatchValueIsNotShownBeforeTheWriteIsConfirmed) {
     editor::WatchListView *watch = window.watchListView();
     watch->addDevice(model::formatAddress(target, at(c.word)));
-    QTreeWidgetItem *row = watch->topLevelItem(0)->child(0);
-    ASSERT_NE(row, nullptr);
+    const QPersistentModelIndex row =
+        test::watchIndex(watch, 0, 0, editor::WatchListView::ValueColumn);
+    ASSERT_TRUE(row.isValid());
     goOnline();
-    const auto shownValue = [&] { return row->text(editor::WatchListView::ValueColumn); };
+    const auto shownValue = [&] { return row.data().toString(); };
     ASSERT_TRUE(QTest::qWaitFor([&] { return !shownValue().isEmpty(); }, kPatienceMs));
     const QString before = shownValue();
     QString whileAsked = QStringLiteral("(not asked)");
@@ -505,7 +507,8 @@ TEST_P(Online, AWatchValueIsNotShownBeforeTheWriteIsConfirmed) {
         whileAsked = shownValue();
         return false;
     });
-    row->setText(editor::WatchListView::ValueColumn, QStringLiteral("4321"));
+    // Typed into the value column, as the cell editor commits it.
+    watch->model()->setData(row, QStringLiteral("4321"));
     ASSERT_TRUE(
         QTest::qWaitFor([&] { return whileAsked != QStringLiteral("(not asked)"); }, kPatienceMs));
     EXPECT_EQ(whileAsked, before);

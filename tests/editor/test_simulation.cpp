@@ -18,6 +18,7 @@
 #include <QApplication>
 #include <QDockWidget>
 
+#include "tests/editor/watch_rows.h"
 #include "tests/editor/window_fixture.h"
 #include "tests/eventually.h"
 
@@ -277,9 +278,9 @@ TEST_F(Simulation, TheWatchListShowsTheRunningValues) {
     EXPECT_EQ(watch->monitorSource(), sim()->session());
     ASSERT_NE(waitFor([](const model::Snapshot &s) { return s.statistics.scans == 1; }), nullptr);
     EXPECT_TRUE(test::eventually([&] {
-        return watch->topLevelItem(0)->child(0)->text(editor::WatchListView::ValueColumn) ==
+        return test::watchText(watch, 0, 0, editor::WatchListView::ValueColumn) ==
                QStringLiteral("ON");
-    })) << watch->topLevelItem(0)->child(0)->text(editor::WatchListView::ValueColumn).toStdString();
+    })) << test::watchText(watch, 0, 0, editor::WatchListView::ValueColumn).toStdString();
     // Every monitoring view was handed the same source.
     EXPECT_EQ(window.ioPanel()->monitorSource(), sim()->session());
     EXPECT_EQ(window.timingChart()->monitorSource(), sim()->session());

@@ -11,6 +11,7 @@
 #include <QApplication>
 #include <QDockWidget>
 #include <QLabel>
+#include <QMenu>
 #include <QMenuBar>
 #include <QSettings>
 #include <QSignalSpy>
@@ -179,4 +180,25 @@ TEST(DockTabs, TitlesAreWholeAt1366x768) {
                 << bar->tabText(i).toStdString();
     }
     EXPECT_GE(tabs, 4); // the left column's four
+}
+
+// A dock closed with its x comes back from a menu: each of the window's docks has its entry
+// (View, or the Simulation menu for the run controls and the scan debugger), and View > Reset
+// Window Layout brings a closed one back too.
+TEST_F(StatusBar, EveryDockOpensAgainFromAMenu) {
+    QList<QAction *> entries;
+    for (QMenu *menu : window.menuBar()->findChildren<QMenu *>())
+        entries += menu->actions();
+    const QList<QDockWidget *> docks = window.findChildren<QDockWidget *>();
+    ASSERT_GE(docks.size(), 10);
+    for (QDockWidget *dock : docks)
+        EXPECT_TRUE(entries.contains(dock->toggleViewAction())) << dock->objectName().toStdString();
+    auto *project = window.findChild<QDockWidget *>(QStringLiteral("projectDock"));
+    window.show();
+    project->close();
+    ASSERT_FALSE(project->isVisible());
+    QAction *reset = window.menuBar()->findChild<QAction *>(QStringLiteral("resetLayoutAction"));
+    ASSERT_NE(reset, nullptr);
+    reset->trigger();
+    EXPECT_TRUE(project->isVisible());
 }

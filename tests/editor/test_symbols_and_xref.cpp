@@ -4,6 +4,7 @@
 
 #include "app/gui/main_window.h"
 #include "app/gui/symbol_table.h"
+#include "editor/cross_reference_view.h"
 #include "editor/ladder_view.h"
 #include "model/target/address.h"
 
@@ -16,11 +17,11 @@
 #include <QPushButton>
 #include <QSet>
 #include <QSignalSpy>
-#include <QTableWidget>
+#include <QTableView>
 #include <QTemporaryDir>
 #include <QTest>
 #include <QTimer>
-#include <QTreeWidget>
+#include <QTreeView>
 #include <QUndoStack>
 
 #include "tests/editor/window_fixture.h"
@@ -36,11 +37,28 @@ model::Address address(const char *text) {
         model::parseAddress(model::Target::get(model::Family::Vigor), QString::fromLatin1(text)));
 }
 
-QSet<QString> devicesListed(QTreeWidget *tree) {
+// The rows as the cross reference's tree shows them.
+QSet<QString> devicesListed(editor::CrossReferenceView *view) {
+    const QAbstractItemModel *rows = view->tree()->model();
     QSet<QString> names;
-    for (int i = 0; i < tree->topLevelItemCount(); ++i)
-        names << tree->topLevelItem(i)->text(0).section(QLatin1Char(' '), 0, 0);
+    for (int i = 0; i < rows->rowCount(); ++i)
+        names << rows->index(i, 0).data().toString().section(QLatin1Char(' '), 0, 0);
     return names;
+}
+
+QString text(const QModelIndex &index, int role = Qt::DisplayRole) {
+    return index.data(role).toString();
+}
+
+// The symbol table's cells, as the view shows them and as a user types them.
+QTableView *symbolsTable(app::MainWindow &window) {
+    return window.findChild<QTableView *>(QStringLiteral("symbolsTable"));
+}
+QModelIndex cell(QTableView *table, int row, int column) {
+    return table->model()->index(row, column);
+}
+void type(QTableView *table, int row, int column, const QString &text) {
+    ASSERT_TRUE(table->model()->setData(cell(table, row, column), text));
 }
 
 struct XrefFixture : test::WindowFixture {
@@ -58,33 +76,36 @@ struct XrefFixture : test::WindowFixture {
 
 TEST_F(XrefFixture, AnEmptyFilterListsEveryDeviceAPrefixSome) {
     filter(QString());
-    QTreeWidget *tree = window.crossReference();
-    EXPECT_EQ(devicesListed(tree),
+    editor::CrossReferenceView *xref = window.crossReference();
+    EXPECT_EQ(devicesListed(xref),
               (QSet<QString>{QStringLiteral("X0"), QStringLiteral("X1"), QStringLiteral("Y0"),
                              QStringLiteral("Y1"), QStringLiteral("M0"), QStringLiteral("T0")}));
     filter(QStringLiteral("x"));
-    EXPECT_EQ(devicesListed(tree), (QSet<QString>{QStringLiteral("X0"), QStringLiteral("X1")}));
+    EXPECT_EQ(devicesListed(xref), (QSet<QString>{QStringLiteral("X0"), QStringLiteral("X1")}));
     filter(QStringLiteral("T0"));
-    ASSERT_EQ(tree->topLevelItemCount(), 1);
-    ASSERT_EQ(tree->topLevelItem(0)->childCount(), 1);
-    EXPECT_EQ(tree->topLevelItem(0)->child(0)->text(2), QStringLiteral("box"));
-    EXPECT_EQ(tree->topLevelItem(0)->child(0)->text(3), QStringLiteral("TMR T0 K10"));
+    const QAbstractItemModel *rows = xref->tree()->model();
+    ASSERT_EQ(rows->rowCount(), 1);
+    const QModelIndex t0 = rows->index(0, 0);
+    ASSERT_EQ(rows->rowCount(t0), 1);
+    EXPECT_EQ(text(rows->index(0, 2, t0)), QStringLiteral("box"));
+    EXPECT_EQ(text(rows->index(0, 3, t0)), QStringLiteral("TMR T0 K10"));
 }
 
 TEST_F(XrefFixture, ADeviceShowsItsNameAndEachUseLeadsToItsRung) {
     window.document()->setSymbols(
         {{address("Y0"), QStringLiteral("Pump"), QStringLiteral("main")}});
     filter(QStringLiteral("Y0"));
-    QTreeWidget *tree = window.crossReference();
-    ASSERT_EQ(tree->topLevelItemCount(), 1);
-    QTreeWidgetItem *y0 = tree->topLevelItem(0);
-    EXPECT_EQ(y0->text(0), QStringLiteral("Y0  Pump"));
-    EXPECT_EQ(y0->toolTip(0), y0->text(0)); // whole, when the column cuts a long name
-    EXPECT_EQ(y0->text(3), QStringLiteral("main"));
-    EXPECT_TRUE(y0->isExpanded());
-    ASSERT_EQ(y0->childCount(), 2);
-    EXPECT_EQ(y0->child(1)->text(1), QStringLiteral("0002")); // LD Y0 is step 2
-    emit tree->itemActivated(y0->child(1), 0);
+    QTreeView *tree = window.crossReference()->tree();
+    const QAbstractItemModel *rows = tree->model();
+    ASSERT_EQ(rows->rowCount(), 1);
+    const QModelIndex y0 = rows->index(0, 0);
+    EXPECT_EQ(text(y0), QStringLiteral("Y0  Pump"));
+    EXPECT_EQ(text(y0, Qt::ToolTipRole), text(y0)); // whole, when the column cuts a long name
+    EXPECT_EQ(text(rows->index(0, 3)), QStringLiteral("main"));
+    EXPECT_TRUE(tree->isExpanded(y0));
+    ASSERT_EQ(rows->rowCount(y0), 2);
+    EXPECT_EQ(text(rows->index(1, 1, y0)), QStringLiteral("0002")); // LD Y0 is step 2
+    emit tree->activated(rows->index(1, 0, y0));
     EXPECT_EQ(window.ladderView()->cursor().rung, 1);
 }
 
@@ -158,44 +179,48 @@ TEST(SymbolsTable, EditedInPlaceKeepsIncompleteRowsAndMarksInvalidDevices) {
     app::MainWindow window;
     const model::Target &vigor = model::Target::get(model::Family::Vigor);
     window.newProject(vigor, QStringLiteral("VB"));
-    auto *table = window.findChild<QTableWidget *>(QStringLiteral("symbolsTable"));
+    QTableView *table = symbolsTable(window);
     ASSERT_NE(table, nullptr);
+    const QAbstractItemModel *rows = table->model();
     QUndoStack *undo = window.document()->undoStack();
     const int before = undo->count();
-    ASSERT_EQ(table->rowCount(), 1); // the free row
+    ASSERT_EQ(rows->rowCount(), 1); // the free row
     // A name before the device: no symbol yet, no undo step, and the row stays.
-    table->item(0, 1)->setText(QStringLiteral("Start"));
+    type(table, 0, 1, QStringLiteral("Start"));
     EXPECT_EQ(undo->count(), before);
     EXPECT_TRUE(window.document()->project().symbols.empty());
-    ASSERT_EQ(table->rowCount(), 2); // the typed row and a new free row
-    EXPECT_EQ(table->item(0, 1)->text(), QStringLiteral("Start"));
+    ASSERT_EQ(rows->rowCount(), 2); // the typed row and a new free row
+    EXPECT_EQ(text(cell(table, 0, 1)), QStringLiteral("Start"));
     // Its device completes it: one undo step.
-    table->item(0, 0)->setText(QStringLiteral("X0"));
+    type(table, 0, 0, QStringLiteral("X0"));
     EXPECT_EQ(undo->count(), before + 1);
     EXPECT_EQ(undo->undoText(), QStringLiteral("Edit symbols"));
     ASSERT_EQ(window.document()->project().symbols.size(), 1u);
     EXPECT_EQ(window.document()->project().symbols.front().name, QStringLiteral("Start"));
     // A device the target does not have stays, marked, with the reason as its tooltip.
-    ASSERT_EQ(table->rowCount(), 2);
-    table->item(1, 0)->setText(QStringLiteral("X9"));
+    ASSERT_EQ(rows->rowCount(), 2);
+    type(table, 1, 0, QStringLiteral("X9"));
     EXPECT_EQ(undo->count(), before + 1);
-    ASSERT_EQ(table->rowCount(), 3);
+    ASSERT_EQ(rows->rowCount(), 3);
     const auto parsed =
         model::parseAddress(vigor, QStringLiteral("X9"), vigor.model(QStringLiteral("VB")));
     ASSERT_TRUE(std::holds_alternative<model::AddressError>(parsed));
-    EXPECT_EQ(table->item(1, 0)->text(), QStringLiteral("X9"));
-    EXPECT_EQ(table->item(1, 0)->toolTip(), std::get<model::AddressError>(parsed).message);
-    EXPECT_NE(table->item(1, 0)->background(), table->item(0, 0)->background());
+    EXPECT_EQ(text(cell(table, 1, 0)), QStringLiteral("X9"));
+    EXPECT_EQ(text(cell(table, 1, 0), Qt::ToolTipRole),
+              std::get<model::AddressError>(parsed).message);
+    EXPECT_NE(cell(table, 1, 0).data(Qt::BackgroundRole),
+              cell(table, 0, 0).data(Qt::BackgroundRole));
+    EXPECT_TRUE(cell(table, 1, 0).data(Qt::BackgroundRole).value<QColor>().isValid());
     // Corrected, it becomes a symbol.
-    table->item(1, 0)->setText(QStringLiteral("X7"));
+    type(table, 1, 0, QStringLiteral("X7"));
     EXPECT_EQ(undo->count(), before + 2);
     EXPECT_EQ(window.document()->project().symbols.size(), 2u);
-    EXPECT_EQ(table->rowCount(), 3);
+    EXPECT_EQ(rows->rowCount(), 3);
     // A typed row cleared of everything goes.
-    table->item(2, 1)->setText(QStringLiteral("Spare"));
-    ASSERT_EQ(table->rowCount(), 4);
-    table->item(2, 1)->setText(QString());
-    EXPECT_EQ(table->rowCount(), 3);
+    type(table, 2, 1, QStringLiteral("Spare"));
+    ASSERT_EQ(rows->rowCount(), 4);
+    type(table, 2, 1, QString());
+    EXPECT_EQ(rows->rowCount(), 3);
     EXPECT_EQ(undo->count(), before + 2);
 }
 
@@ -208,11 +233,11 @@ TEST(SymbolsTable, AnInvalidRowIsSavedAndReopensMarked) {
     const model::Target &vigor = model::Target::get(model::Family::Vigor);
     window.newProject(vigor, QStringLiteral("VB"));
     ASSERT_TRUE(window.saveTo(path));
-    auto *table = window.findChild<QTableWidget *>(QStringLiteral("symbolsTable"));
+    QTableView *table = symbolsTable(window);
     ASSERT_NE(table, nullptr);
-    table->item(0, 0)->setText(QStringLiteral("X9"));
-    table->item(0, 1)->setText(QStringLiteral("Spare"));
-    table->item(0, 2)->setText(QStringLiteral("wired later"));
+    type(table, 0, 0, QStringLiteral("X9"));
+    type(table, 0, 1, QStringLiteral("Spare"));
+    type(table, 0, 2, QStringLiteral("wired later"));
     EXPECT_TRUE(window.isModified());
     EXPECT_TRUE(window.isWindowModified());
     ASSERT_TRUE(window.saveTo(path));
@@ -227,20 +252,21 @@ TEST(SymbolsTable, AnInvalidRowIsSavedAndReopensMarked) {
 
     app::MainWindow reopened;
     ASSERT_TRUE(reopened.openFile(path, QString(), true));
-    auto *back = reopened.findChild<QTableWidget *>(QStringLiteral("symbolsTable"));
+    QTableView *back = symbolsTable(reopened);
     ASSERT_NE(back, nullptr);
-    ASSERT_EQ(back->rowCount(), 2); // the row and the free row
-    EXPECT_EQ(back->item(0, 0)->text(), QStringLiteral("X9"));
-    EXPECT_EQ(back->item(0, 1)->text(), QStringLiteral("Spare"));
-    EXPECT_EQ(back->item(0, 2)->text(), QStringLiteral("wired later"));
+    ASSERT_EQ(back->model()->rowCount(), 2); // the row and the free row
+    EXPECT_EQ(text(cell(back, 0, 0)), QStringLiteral("X9"));
+    EXPECT_EQ(text(cell(back, 0, 1)), QStringLiteral("Spare"));
+    EXPECT_EQ(text(cell(back, 0, 2)), QStringLiteral("wired later"));
     const auto parsed =
         model::parseAddress(vigor, QStringLiteral("X9"), vigor.model(QStringLiteral("VB")));
     ASSERT_TRUE(std::holds_alternative<model::AddressError>(parsed));
-    EXPECT_EQ(back->item(0, 0)->toolTip(), std::get<model::AddressError>(parsed).message);
-    EXPECT_NE(back->item(0, 0)->background(), back->item(1, 0)->background());
+    EXPECT_EQ(text(cell(back, 0, 0), Qt::ToolTipRole),
+              std::get<model::AddressError>(parsed).message);
+    EXPECT_NE(cell(back, 0, 0).data(Qt::BackgroundRole), cell(back, 1, 0).data(Qt::BackgroundRole));
     EXPECT_FALSE(reopened.isModified());
     // Corrected, it is a symbol, and the next save leaves the key out.
-    back->item(0, 0)->setText(QStringLiteral("X7"));
+    type(back, 0, 0, QStringLiteral("X7"));
     ASSERT_EQ(reopened.document()->project().symbols.size(), 1u);
     ASSERT_TRUE(reopened.saveTo(path));
     const auto fixed = model::loadProject(path, nullptr);
@@ -254,10 +280,10 @@ TEST(SymbolsTable, AnInvalidRowIsSavedAndReopensMarked) {
 TEST(SymbolsTable, ExportSaysWhichRowsItLeavesOutAndAsks) {
     app::MainWindow window;
     window.newProject(model::Target::get(model::Family::Vigor), QStringLiteral("VB"));
-    auto *table = window.findChild<QTableWidget *>(QStringLiteral("symbolsTable"));
+    QTableView *table = symbolsTable(window);
     ASSERT_NE(table, nullptr);
-    table->item(0, 0)->setText(QStringLiteral("X9"));
-    table->item(0, 1)->setText(QStringLiteral("Spare"));
+    type(table, 0, 0, QStringLiteral("X9"));
+    type(table, 0, 1, QStringLiteral("Spare"));
     QAction *exportAction = test::editMenuEntry(window, QStringLiteral("Export Symbols (CSV)..."));
     ASSERT_NE(exportAction, nullptr);
     QString asked;

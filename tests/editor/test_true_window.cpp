@@ -37,6 +37,7 @@
 #include <QTreeWidget>
 #include <QWheelEvent>
 
+#include "tests/editor/watch_rows.h"
 #include "tests/editor/window_fixture.h"
 
 #include <gtest/gtest.h>
@@ -59,14 +60,10 @@ struct TrueWindow : test::WindowFixture {
     bool paused() {
         return QTest::qWaitFor([&] { return sim()->runState() == RunState::Paused; }, 5000);
     }
-    QTreeWidgetItem *watchRow(const QString &device) {
-        editor::WatchListView *w = window.watchListView();
-        for (int i = 0; i < w->topLevelItemCount(); ++i)
-            for (int k = 0; k < w->topLevelItem(i)->childCount(); ++k)
-                if (w->topLevelItem(i)->child(k)->text(editor::WatchListView::DeviceColumn) ==
-                    device)
-                    return w->topLevelItem(i)->child(k);
-        return nullptr;
+    // The value cell of a device's row in the watch table.
+    QPersistentModelIndex watchValue(const QString &device) {
+        return test::watchRowOf(window.watchListView(), device)
+            .siblingAtColumn(editor::WatchListView::ValueColumn);
     }
     QString originLabel() {
         auto *origin = window.statusBar()->findChild<QLabel *>(QStringLiteral("monitorOrigin"));
@@ -138,23 +135,22 @@ TEST_F(TrueWindow, AWatchValueTheHistoryRefusesIsNotShown) {
             return s && s->statistics.scans == 5;
         },
         5000));
-    QTreeWidgetItem *row = watchRow(QStringLiteral("D0"));
-    ASSERT_NE(row, nullptr);
-    ASSERT_TRUE(QTest::qWaitFor(
-        [&] { return row->text(editor::WatchListView::ValueColumn) == QStringLiteral("5"); }, 5000))
-        << row->text(editor::WatchListView::ValueColumn).toStdString();
+    const QPersistentModelIndex row = watchValue(QStringLiteral("D0"));
+    ASSERT_TRUE(row.isValid());
+    ASSERT_TRUE(QTest::qWaitFor([&] { return row.data().toString() == QStringLiteral("5"); }, 5000))
+        << row.data().toString().toStdString();
     // Typed in the value cell (F2) and committed with Return, as a user does.
     editor::WatchListView *watch = window.watchListView();
     window.show();
     ASSERT_TRUE(QTest::qWaitForWindowExposed(&window));
-    watch->setCurrentItem(row, editor::WatchListView::ValueColumn);
+    watch->setCurrentIndex(row);
     QTest::keyClick(watch, Qt::Key_F2);
     auto *editor = watch->viewport()->findChild<QLineEdit *>();
     ASSERT_NE(editor, nullptr);
     editor->setText(QStringLiteral("777"));
     QTest::keyClick(editor, Qt::Key_Return);
     QApplication::processEvents();
-    EXPECT_EQ(row->text(editor::WatchListView::ValueColumn), QStringLiteral("5"));
+    EXPECT_EQ(row.data().toString(), QStringLiteral("5"));
     ASSERT_TRUE(QTest::qWaitFor(
         [&] {
             return window.statusBar()->currentMessage().startsWith(
@@ -162,7 +158,7 @@ TEST_F(TrueWindow, AWatchValueTheHistoryRefusesIsNotShown) {
         },
         5000))
         << window.statusBar()->currentMessage().toStdString();
-    EXPECT_EQ(row->text(editor::WatchListView::ValueColumn), QStringLiteral("5"));
+    EXPECT_EQ(row.data().toString(), QStringLiteral("5"));
 }
 
 // Item 4: a K preset is the program's: after Stop the box, the list and the watch table show
@@ -189,11 +185,11 @@ TEST_F(TrueWindow, AConstantPresetIsShownWhenStopped) {
     EXPECT_TRUE(QTest::qWaitFor([&] { return value(0).startsWith(QStringLiteral("0/350")); }, 5000))
         << value(0).toStdString();
     EXPECT_EQ(value(1), QStringLiteral("0/10"));
-    QTreeWidgetItem *timer = watchRow(QStringLiteral("T0"));
-    QTreeWidgetItem *counter = watchRow(QStringLiteral("C0"));
-    ASSERT_TRUE(timer && counter);
-    EXPECT_EQ(timer->text(editor::WatchListView::ValueColumn), QStringLiteral("0 of 350, OFF"));
-    EXPECT_EQ(counter->text(editor::WatchListView::ValueColumn), QStringLiteral("0 of 10, OFF"));
+    const QModelIndex timer = watchValue(QStringLiteral("T0"));
+    const QModelIndex counter = watchValue(QStringLiteral("C0"));
+    ASSERT_TRUE(timer.isValid() && counter.isValid());
+    EXPECT_EQ(timer.data().toString(), QStringLiteral("0 of 350, OFF"));
+    EXPECT_EQ(counter.data().toString(), QStringLiteral("0 of 10, OFF"));
 }
 
 // Item 6: the wheel over the connection dock scrolls it; the format and the station stay.
@@ -347,7 +343,7 @@ TEST_F(TrueWindow, AddingAWatchRowLeavesTheLadderWhereItWasScrolled) {
     ASSERT_GT(bar->maximum(), 0);
     bar->setValue(bar->maximum());
     window.watchListView()->addDevice(QStringLiteral("D5"));
-    EXPECT_NE(watchRow(QStringLiteral("D5")), nullptr);
+    EXPECT_TRUE(watchValue(QStringLiteral("D5")).isValid());
     EXPECT_EQ(bar->value(), bar->maximum());
     // An edit of the rungs still shows where it was made.
     window.document()->insertRung(0, window.document()->ladder().rungs.front());

@@ -21,6 +21,7 @@
 #include <QDockWidget>
 #include <QFile>
 #include <QFileInfo>
+#include <QLabel>
 #include <QListWidget>
 #include <QPlainTextEdit>
 #include <QSignalSpy>
@@ -164,6 +165,26 @@ TEST(PlcopenImportDialog, ProposesDevicesAndLeavesNothingOutUnasked) {
     EXPECT_EQ(omron.devices()->item(1, 3)->text(), QStringLiteral("200.00"));
     omron.leaveOut()->setChecked(true);
     EXPECT_TRUE(omron.canImport());
+}
+
+// An IEC counter imported as the PLC's, which stops at its set value: the dialog says so.
+TEST(PlcopenImportDialog, SaysWhatIsImportedButWorksOtherwise) {
+    QFile f(QStringLiteral(RUNG_TEST_DATA_DIR "/plcopen/foreign/openplc-7-segments.xml"));
+    ASSERT_TRUE(f.open(QIODevice::ReadOnly));
+    app::PlcopenImportDialog dialog(f.readAll(), QStringLiteral("plc.xml"), rung::testing::vigor());
+    // The devices proposed are taken: the counter is imported as CNT C0.
+    EXPECT_FALSE(dialog.notes()->isHidden());
+    EXPECT_TRUE(dialog.notes()->text().contains(
+        QStringLiteral("CTU (CTU0) is imported as Vigor's CNT: Vigor's CNT stops counting at its "
+                       "set value")))
+        << dialog.notes()->text().toStdString();
+    app::PlcopenImportDialog pump(
+        [] {
+            QFile p(QStringLiteral(RUNG_TEST_DATA_DIR "/plcopen/pump.xml"));
+            return p.open(QIODevice::ReadOnly) ? p.readAll() : QByteArray();
+        }(),
+        QStringLiteral("pump.xml"), rung::testing::vigor());
+    EXPECT_TRUE(pump.notes()->isHidden());
 }
 
 namespace {

@@ -5,6 +5,7 @@
 
 #include "fake_monitor_source.h"
 #include "tests/eventually.h"
+#include "watch_rows.h"
 
 #include "editor/document.h"
 #include "editor/watch_list_view.h"
@@ -38,7 +39,14 @@ struct WatchCommands : ::testing::Test {
         view = std::make_unique<editor::WatchListView>(&document);
         view->setMonitorSource(&source);
     }
-    QTreeWidgetItem *row(int k) { return view->topLevelItem(0)->child(k); }
+    QModelIndex row(int k, int column = editor::WatchListView::DeviceColumn) {
+        return test::watchIndex(view.get(), 0, k, column);
+    }
+    QString shown(int k, int column) { return test::watchText(view.get(), 0, k, column); }
+    // Typed into the value column, as the cell editor commits it.
+    bool type(int k, const QString &value) {
+        return view->model()->setData(row(k, kValue), value, Qt::EditRole);
+    }
     model::Address at(const char *device) {
         return std::get<model::Address>(model::parseAddress(target, QString::fromLatin1(device)));
     }
@@ -72,7 +80,7 @@ TEST_F(WatchCommands, ABitIsSetForcedAndReleasedFromItsContextActions) {
     for (const auto &c : source.commands)
         EXPECT_EQ(c.address, at("X0"));
     // A list's own row, and a view without a source, offer nothing.
-    EXPECT_TRUE(view->deviceActions(view->topLevelItem(0), &owner).isEmpty());
+    EXPECT_TRUE(view->deviceActions(view->model()->index(0, 0), &owner).isEmpty());
     view->setMonitorSource(nullptr);
     EXPECT_TRUE(view->deviceActions(row(0), &owner).isEmpty());
 }
@@ -99,7 +107,7 @@ TEST_F(WatchCommands, AWordOffersToWriteAValueAndTheValueColumnWritesIt) {
     EXPECT_EQ(actions[0]->text(), QStringLiteral("Write Value..."));
 
     // Typed into the value column, as the cell editor commits it.
-    row(1)->setText(kValue, QStringLiteral("1234"));
+    EXPECT_TRUE(type(1, QStringLiteral("1234")));
     ASSERT_EQ(source.commands.size(), 1u);
     EXPECT_EQ(source.commands[0].kind, Kind::WriteWord);
     EXPECT_EQ(source.commands[0].address, at("D5"));
@@ -141,8 +149,8 @@ TEST_F(WatchCommands, TextThatIsNoValueIsRefusedWithTheReason) {
     auto snapshot = source.blank(target);
     snapshot->words[static_cast<std::size_t>(snapshot->layout->word(at("D5")))] = 42;
     source.publish(snapshot);
-    row(1)->setText(kValue, QStringLiteral("junk"));
-    EXPECT_EQ(row(1)->text(kValue), QStringLiteral("42"));
+    EXPECT_FALSE(type(1, QStringLiteral("junk")));
+    EXPECT_EQ(shown(1, kValue), QStringLiteral("42"));
 }
 
 TEST_F(WatchCommands, ADoubleClickFlipsABitAndARefusedCommandIsSaid) {
@@ -152,7 +160,7 @@ TEST_F(WatchCommands, ADoubleClickFlipsABitAndARefusedCommandIsSaid) {
     source.publish(snapshot);
     QSignalSpy messages(view.get(), &editor::WatchListView::message);
     source.failWith = QStringLiteral("X0 cannot be written");
-    emit view->itemDoubleClicked(row(0), kValue);
+    emit view->doubleClicked(row(0, kValue));
     ASSERT_EQ(source.commands.size(), 1u);
     EXPECT_EQ(source.commands[0].kind, Kind::WriteBit);
     EXPECT_EQ(source.commands[0].value, 0); // it was ON
@@ -167,8 +175,8 @@ TEST_F(WatchCommands, TheValueEditorOpensOnTheNumberAndSnapshotsDoNotOverwriteWh
     const auto d5 = static_cast<std::size_t>(snapshot->layout->word(at("D5")));
     snapshot->words[d5] = 12;
     source.publish(snapshot);
-    EXPECT_TRUE(test::eventually([&] { return row(1)->text(kValue) == QStringLiteral("12"); }))
-        << row(1)->text(kValue).toStdString();
+    EXPECT_TRUE(test::eventually([&] { return shown(1, kValue) == QStringLiteral("12"); }))
+        << shown(1, kValue).toStdString();
     QObject owner;
     const QList<QAction *> actions = view->deviceActions(row(1), &owner);
     ASSERT_EQ(actions.size(), 1);
@@ -184,8 +192,8 @@ TEST_F(WatchCommands, TheValueEditorOpensOnTheNumberAndSnapshotsDoNotOverwriteWh
     const model::BitRef x0 = later->layout->bit(at("X0"));
     later->words[static_cast<std::size_t>(x0.word)] |= static_cast<std::int32_t>(x0.mask);
     source.publish(later);
-    ASSERT_TRUE(test::eventually([&] { return row(0)->text(kValue) == QStringLiteral("ON"); }))
-        << row(0)->text(kValue).toStdString();
+    ASSERT_TRUE(test::eventually([&] { return shown(0, kValue) == QStringLiteral("ON"); }))
+        << shown(0, kValue).toStdString();
     EXPECT_EQ(editor->text(), QStringLiteral("30"));
     QTest::keyClick(editor, Qt::Key_Return);
     // The delegate commits queued.
@@ -196,8 +204,8 @@ TEST_F(WatchCommands, TheValueEditorOpensOnTheNumberAndSnapshotsDoNotOverwriteWh
     EXPECT_EQ(source.commands[0].value, 30);
     // Closed, the column follows the snapshots again.
     source.publish(later);
-    EXPECT_TRUE(test::eventually([&] { return row(1)->text(kValue) == QStringLiteral("13"); }))
-        << row(1)->text(kValue).toStdString();
+    EXPECT_TRUE(test::eventually([&] { return shown(1, kValue) == QStringLiteral("13"); }))
+        << shown(1, kValue).toStdString();
 }
 
 } // namespace

@@ -10,6 +10,7 @@
 #include <QTest>
 #include <QUndoStack>
 
+#include "tests/editor/watch_rows.h"
 #include "tests/editor/window_fixture.h"
 
 #include <gtest/gtest.h>
@@ -36,10 +37,10 @@ TEST_F(WatchLists, TheDeviceUnderTheCursorIsAddedOnceAndRemovedWithDelete) {
     const auto &lists = window.document()->project().watchLists;
     ASSERT_EQ(lists.size(), 1u);
     EXPECT_EQ(lists[0].devices, (QStringList{QStringLiteral("X0"), QStringLiteral("Y0")}));
-    ASSERT_EQ(watch->topLevelItemCount(), 1);
-    EXPECT_EQ(watch->topLevelItem(0)->childCount(), 2);
+    ASSERT_EQ(test::watchRows(watch), 1);
+    EXPECT_EQ(test::watchRows(watch, 0), 2);
 
-    watch->setCurrentItem(watch->topLevelItem(0)->child(0));
+    watch->setCurrentIndex(test::watchIndex(watch, 0, 0));
     watch->setFocus();
     QTest::keyClick(watch, Qt::Key_Delete);
     EXPECT_EQ(window.document()->project().watchLists[0].devices,
@@ -54,7 +55,7 @@ TEST_F(WatchLists, TheDeviceUnderTheCursorIsAddedOnceAndRemovedWithDelete) {
     ASSERT_TRUE(again.openFile(path, QString(), true));
     ASSERT_EQ(again.document()->project().watchLists.size(), 1u);
     EXPECT_EQ(again.document()->project().watchLists[0].devices.size(), 2);
-    EXPECT_EQ(again.watchListView()->topLevelItem(0)->childCount(), 2);
+    EXPECT_EQ(test::watchRows(again.watchListView(), 0), 2);
 }
 
 using ElementHelp = test::WindowFixture;

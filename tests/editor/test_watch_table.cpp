@@ -5,6 +5,7 @@
 
 #include "fake_monitor_source.h"
 #include "monitor_fixture.h"
+#include "watch_rows.h"
 
 #include "editor/cross_reference_view.h"
 #include "editor/device_mime.h"
@@ -17,6 +18,7 @@
 #include <QSignalSpy>
 #include <QTemporaryDir>
 #include <QTest>
+#include <QTreeView>
 #include <QTreeWidget>
 #include <QUndoStack>
 
@@ -52,16 +54,13 @@ struct WatchTable : ::testing::Test {
         view = std::make_unique<DropTarget>(&document);
         view->setMonitorSource(&source);
     }
-    QTreeWidgetItem *row(int k) { return view->topLevelItem(0)->child(k); }
+    QModelIndex row(int k) { return test::watchIndex(view.get(), 0, k); }
+    QString shown(int k, int column) { return test::watchText(view.get(), 0, k, column); }
     model::Address at(const char *device) {
         return std::get<model::Address>(model::parseAddress(target, QString::fromLatin1(device)));
     }
     void publish(const std::function<void(model::Snapshot &)> &fill) {
-        auto snapshot = source.blank(target);
-        fill(*snapshot);
-        QSignalSpy changed(&source, &model::MonitorSource::snapshotChanged);
-        source.publish(snapshot);
-        ASSERT_TRUE(changed.wait(5000));
+        ASSERT_TRUE(source.publishFilled(target, fill));
     }
     void setWord(model::Snapshot &s, const char *device, std::int32_t value) {
         s.words[static_cast<std::size_t>(s.layout->word(at(device)))] = value;
@@ -75,8 +74,8 @@ TEST_F(WatchTable, AWordIsShownInTheRowsFormat) {
         setWord(s, "D0", -5);
         setWord(s, "C200", -1); // a 32-bit counter
     });
-    EXPECT_EQ(row(0)->text(Column::ValueColumn), QStringLiteral("65531"));
-    EXPECT_EQ(row(0)->text(Column::FormatColumn), QStringLiteral("Decimal"));
+    EXPECT_EQ(shown(0, Column::ValueColumn), QStringLiteral("65531"));
+    EXPECT_EQ(shown(0, Column::FormatColumn), QStringLiteral("Decimal"));
     const std::pair<ValueFormat, const char *> expected[] = {
         {ValueFormat::Signed, "-5"},
         {ValueFormat::Hex, "0xFFFB"},
@@ -85,20 +84,20 @@ TEST_F(WatchTable, AWordIsShownInTheRowsFormat) {
     };
     for (const auto &[format, text] : expected) {
         view->setFormat(row(0), format);
-        EXPECT_EQ(row(0)->text(Column::ValueColumn), QString::fromLatin1(text));
-        EXPECT_EQ(row(0)->text(Column::FormatColumn), model::valueFormatName(format));
+        EXPECT_EQ(shown(0, Column::ValueColumn), QString::fromLatin1(text));
+        EXPECT_EQ(shown(0, Column::FormatColumn), model::valueFormatName(format));
     }
     view->setFormat(row(0), ValueFormat::Bcd);
     publish([&](model::Snapshot &s) { setWord(s, "D0", 0x1234); });
-    EXPECT_EQ(row(0)->text(Column::ValueColumn), QStringLiteral("1234"));
+    EXPECT_EQ(shown(0, Column::ValueColumn), QStringLiteral("1234"));
     publish([&](model::Snapshot &s) { setWord(s, "D0", 0x12A4); });
-    EXPECT_EQ(row(0)->text(Column::ValueColumn), QStringLiteral("0x12A4 (not BCD)"));
+    EXPECT_EQ(shown(0, Column::ValueColumn), QStringLiteral("0x12A4 (not BCD)"));
     // A bit has no format; a 32-bit word keeps its width.
-    EXPECT_EQ(row(1)->text(Column::FormatColumn), QString());
+    EXPECT_EQ(shown(1, Column::FormatColumn), QString());
     view->setFormat(row(2), ValueFormat::Hex);
     publish([&](model::Snapshot &s) { setWord(s, "C200", -1); });
-    EXPECT_TRUE(row(2)->text(Column::ValueColumn).startsWith(QStringLiteral("0xFFFFFFFF of ")))
-        << row(2)->text(Column::ValueColumn).toStdString();
+    EXPECT_TRUE(shown(2, Column::ValueColumn).startsWith(QStringLiteral("0xFFFFFFFF of ")))
+        << shown(2, Column::ValueColumn).toStdString();
     // Saved with the project, each change one undo step.
     EXPECT_EQ(document.project().watchLists[0].format(QStringLiteral("D0")), ValueFormat::Bcd);
     document.undoStack()->undo();
@@ -131,15 +130,15 @@ TEST_F(WatchTable, AValueTypedInTheRowsFormatIsWritten) {
 TEST_F(WatchTable, SymbolAndForceColumns) {
     document.setSymbols(
         {model::Symbol{at("X0"), QStringLiteral("Start"), QStringLiteral("green")}});
-    EXPECT_EQ(row(1)->text(Column::SymbolColumn), QStringLiteral("Start"));
-    EXPECT_EQ(row(1)->text(Column::ForceColumn), QString());
+    EXPECT_EQ(shown(1, Column::SymbolColumn), QStringLiteral("Start"));
+    EXPECT_EQ(shown(1, Column::ForceColumn), QString());
     publish([&](model::Snapshot &s) {
         const model::BitRef r = s.layout->bit(at("X0"));
         s.words[static_cast<std::size_t>(r.word)] |= static_cast<std::int32_t>(r.mask);
         s.forceMask[static_cast<std::size_t>(r.word)] |= r.mask;
     });
-    EXPECT_EQ(row(1)->text(Column::ForceColumn), QStringLiteral("ON"));
-    EXPECT_EQ(row(1)->text(Column::ValueColumn), QStringLiteral("ON (forced)"));
+    EXPECT_EQ(shown(1, Column::ForceColumn), QStringLiteral("ON"));
+    EXPECT_EQ(shown(1, Column::ValueColumn), QStringLiteral("ON (forced)"));
 }
 
 TEST_F(WatchTable, RangesAreAddedInTheTargetsNumberingAsOneStep) {
@@ -153,7 +152,7 @@ TEST_F(WatchTable, RangesAreAddedInTheTargetsNumberingAsOneStep) {
     EXPECT_EQ(devices[3 + 6], QStringLiteral("X7"));
     EXPECT_EQ(devices[3 + 7], QStringLiteral("X10"));
     EXPECT_EQ(devices.back(), QStringLiteral("X17"));
-    EXPECT_EQ(view->topLevelItem(0)->childCount(), 18);
+    EXPECT_EQ(test::watchRows(view.get(), 0), 18);
     // The source watches every row.
     EXPECT_EQ(source.watched().size(), 18u);
     // A part that is no range adds nothing and says why.
@@ -190,8 +189,9 @@ TEST_F(WatchTable, DroppedDevicesBecomeRowsAndRowsDragOut) {
     EXPECT_EQ(document.project().watchLists[0].devices.mid(3), (QStringList{"M5", "T1"}));
     // Rows dragged out carry their devices (to the timing chart).
     view->clearSelection();
-    row(0)->setSelected(true);
-    row(3)->setSelected(true);
+    const auto select = QItemSelectionModel::Select | QItemSelectionModel::Rows;
+    view->selectionModel()->select(row(3), select); // the order the selection is made in
+    view->selectionModel()->select(row(0), select);
     std::unique_ptr<QMimeData> out(
         view->model()->mimeData(view->selectionModel()->selectedIndexes()));
     ASSERT_NE(out, nullptr);
@@ -229,13 +229,15 @@ TEST_F(WatchDrag, ADeviceDraggedOutOfTheLadderLandsInTheWatchTable) {
 
 TEST_F(WatchDrag, TheCrossReferenceDragsTheDeviceOfARowOrAUse) {
     load("LD X0\nOUT Y0\nLD X0\nOUT Y1\nEND\n");
-    QTreeWidget *tree = window.crossReference();
+    QTreeView *tree = window.crossReference()->tree();
     window.crossReferenceDevice()->setText(QStringLiteral("X0"));
-    ASSERT_GE(tree->topLevelItemCount(), 1);
-    QTreeWidgetItem *device = tree->topLevelItem(0);
-    ASSERT_GE(device->childCount(), 1);
+    ASSERT_GE(tree->model()->rowCount(), 1);
+    const QModelIndex device = tree->model()->index(0, 0);
+    ASSERT_GE(tree->model()->rowCount(device), 2);
     tree->clearSelection();
-    device->child(1)->setSelected(true); // a use: the device it is a use of
+    // a use: the device it is a use of
+    tree->selectionModel()->select(tree->model()->index(1, 0, device),
+                                   QItemSelectionModel::Select | QItemSelectionModel::Rows);
     std::unique_ptr<QMimeData> data(
         tree->model()->mimeData(tree->selectionModel()->selectedIndexes()));
     ASSERT_NE(data, nullptr);
@@ -245,7 +247,7 @@ TEST_F(WatchDrag, TheCrossReferenceDragsTheDeviceOfARowOrAUse) {
 
 TEST_F(WatchDrag, FormatsAreSavedWithTheProjectAndOldProjectsStillOpen) {
     window.watchListView()->addDevices({QStringLiteral("D0..D1")});
-    window.watchListView()->setFormat(window.watchListView()->topLevelItem(0)->child(1),
+    window.watchListView()->setFormat(test::watchIndex(window.watchListView(), 0, 1),
                                       ValueFormat::Hex);
     QTemporaryDir dir;
     const QString path = dir.filePath(QStringLiteral("w.rung"));
@@ -254,7 +256,7 @@ TEST_F(WatchDrag, FormatsAreSavedWithTheProjectAndOldProjectsStillOpen) {
     ASSERT_TRUE(again.openFile(path, QString(), true));
     EXPECT_EQ(again.document()->project().watchLists[0].format(QStringLiteral("D1")),
               ValueFormat::Hex);
-    EXPECT_EQ(again.watchListView()->topLevelItem(0)->child(1)->text(Column::FormatColumn),
+    EXPECT_EQ(test::watchText(again.watchListView(), 0, 1, Column::FormatColumn),
               QStringLiteral("Hexadecimal"));
     // A project of the examples, written before the formats, opens with decimal rows.
     app::MainWindow old;

@@ -2,6 +2,7 @@
 // the simulator or a PLC: the view must not care which it is.
 
 #include "fake_monitor_source.h"
+#include "watch_rows.h"
 
 #include "app/gui/language.h"
 #include "editor/document.h"
@@ -34,9 +35,10 @@ TEST(WatchValues, TheValueColumnShowsEachSnapshotAndTheSourceLearnsWhatIsWatched
     editor::WatchListView view(&document);
     test::FakeMonitorSource source;
     // Device, symbol, value, format, forced: the value column is empty without a source.
-    EXPECT_EQ(view.columnCount(), 5);
+    EXPECT_EQ(view.model()->columnCount(), 5);
+    EXPECT_TRUE(test::watchText(&view, 0, 1, kValueColumn).isEmpty());
     view.setMonitorSource(&source);
-    EXPECT_EQ(view.columnCount(), 5);
+    EXPECT_EQ(view.model()->columnCount(), 5);
     std::vector<model::Address> expected{at(target, "X0"), at(target, "D5"), at(target, "T3")};
     std::sort(expected.begin(), expected.end());
     EXPECT_EQ(source.watched(), expected);
@@ -52,11 +54,11 @@ TEST(WatchValues, TheValueColumnShowsEachSnapshotAndTheSourceLearnsWhatIsWatched
     QSignalSpy changed(&source, &model::MonitorSource::snapshotChanged);
     source.publish(snapshot);
     ASSERT_TRUE(changed.wait(5000));
-    const QTreeWidgetItem *list = view.topLevelItem(0);
-    ASSERT_EQ(list->childCount(), 3);
-    EXPECT_EQ(list->child(0)->text(kValueColumn), QStringLiteral("ON (forced)"));
-    EXPECT_EQ(list->child(1)->text(kValueColumn), QStringLiteral("1234"));
-    EXPECT_EQ(list->child(2)->text(kValueColumn), QStringLiteral("12 of 50, OFF"));
+    const auto value = [&view](int row) { return test::watchText(&view, 0, row, kValueColumn); };
+    ASSERT_EQ(test::watchRows(&view, 0), 3);
+    EXPECT_EQ(value(0), QStringLiteral("ON (forced)"));
+    EXPECT_EQ(value(1), QStringLiteral("1234"));
+    EXPECT_EQ(value(2), QStringLiteral("12 of 50, OFF"));
 
     // Online, the PLC answered for T3's present value but nobody could read its set value
     // (a Vigor K preset lives in the program): not "of 0".
@@ -67,18 +69,18 @@ TEST(WatchValues, TheValueColumnShowsEachSnapshotAndTheSourceLearnsWhatIsWatched
     online->wordsRead = read;
     source.publish(online);
     ASSERT_TRUE(changed.wait(5000));
-    EXPECT_EQ(list->child(2)->text(kValueColumn), QStringLiteral("12 of ?, OFF"));
-    EXPECT_EQ(list->child(1)->text(kValueColumn), QStringLiteral("1234"));
+    EXPECT_EQ(value(2), QStringLiteral("12 of ?, OFF"));
+    EXPECT_EQ(value(1), QStringLiteral("1234"));
 
     // A device added to the list is watched and shown at once.
-    view.setCurrentItem(view.topLevelItem(0));
+    view.setCurrentIndex(view.model()->index(0, 0));
     view.addDevice(QStringLiteral("Y1"));
     EXPECT_EQ(source.watched().size(), 4u);
-    ASSERT_EQ(view.topLevelItem(0)->childCount(), 4);
-    EXPECT_EQ(view.topLevelItem(0)->child(3)->text(kValueColumn), QStringLiteral("OFF"));
+    ASSERT_EQ(test::watchRows(&view, 0), 4);
+    EXPECT_EQ(value(3), QStringLiteral("OFF"));
 
     view.setMonitorSource(nullptr);
-    EXPECT_TRUE(view.topLevelItem(0)->child(0)->text(kValueColumn).isEmpty());
+    EXPECT_TRUE(value(0).isEmpty());
     EXPECT_TRUE(source.watched().empty());
 }
 
@@ -137,19 +139,22 @@ TEST(WatchValues, HeadersAndValuesFollowALanguageSwitch) {
     QSignalSpy changed(&source, &model::MonitorSource::snapshotChanged);
     source.publish(snapshot);
     ASSERT_TRUE(changed.wait(5000));
-    ASSERT_EQ(view.headerItem()->text(kValueColumn), QStringLiteral("Value"));
-    ASSERT_EQ(view.topLevelItem(0)->child(0)->text(kValueColumn), QStringLiteral("ON"));
+    const auto header = [&view](int column) {
+        return view.model()->headerData(column, Qt::Horizontal).toString();
+    };
+    ASSERT_EQ(header(kValueColumn), QStringLiteral("Value"));
+    ASSERT_EQ(test::watchText(&view, 0, 0, kValueColumn), QStringLiteral("ON"));
 
     ASSERT_TRUE(app::setLanguage(QStringLiteral("hu"), false));
     QCoreApplication::sendPostedEvents(nullptr, QEvent::LanguageChange);
     const auto hu = [](const char *text) {
-        return QCoreApplication::translate("rung::editor::WatchListView", text);
+        return QCoreApplication::translate("rung::editor::WatchListModel", text);
     };
     ASSERT_NE(hu("Value"), QStringLiteral("Value")); // the catalogue is there
-    EXPECT_EQ(view.headerItem()->text(0), hu("Device"));
-    EXPECT_EQ(view.headerItem()->text(kValueColumn), hu("Value"));
-    EXPECT_EQ(view.topLevelItem(0)->child(0)->text(kValueColumn), hu("ON"));
+    EXPECT_EQ(header(0), hu("Device"));
+    EXPECT_EQ(header(kValueColumn), hu("Value"));
+    EXPECT_EQ(test::watchText(&view, 0, 0, kValueColumn), hu("ON"));
     app::setLanguage(QStringLiteral("en"), false);
     QCoreApplication::sendPostedEvents(nullptr, QEvent::LanguageChange);
-    EXPECT_EQ(view.headerItem()->text(kValueColumn), QStringLiteral("Value"));
+    EXPECT_EQ(header(kValueColumn), QStringLiteral("Value"));
 }

@@ -7,6 +7,7 @@
 #include "model/exchange/plcopen.h"
 #include "model/target/address.h"
 
+#include "tests/model/plcopen_test_util.h"
 #include "tests/model/random_program.h"
 #include "tests/targets.h"
 
@@ -21,55 +22,21 @@
 
 using namespace rung::model;
 using rung::testing::cpm1;
+using rung::testing::deviceAt;
+using rung::testing::exampleProjects;
+using rung::testing::issues;
+using rung::testing::listing;
 using rung::testing::pl110;
+using rung::testing::schemaPath;
 using rung::testing::vigor;
 using rung::testing::vpc;
-
-namespace {
-
-std::vector<QString> exampleProjects() {
-    std::vector<QString> out;
-    QDirIterator it(QStringLiteral(RUNG_SOURCE_DIR "/resources/examples"),
-                    {QStringLiteral("*.rung")}, QDir::Files, QDirIterator::Subdirectories);
-    while (it.hasNext())
-        out.push_back(it.next());
-    std::sort(out.begin(), out.end());
-    return out;
-}
-
-// PLCopen's TC6 XML 2.01 schema, kept with the test data so that every clone validates
-// against it (a copy beside the repository was missing in CI's clone, and the test skipped).
-QString schemaPath() {
-    return QStringLiteral(RUNG_TEST_DATA_DIR "/plcopen/tc6_xml_v201.xsd");
-}
-
-std::string issues(const PlcopenImport &r) {
-    std::string s;
-    for (const ImportIssue &i : r.issues)
-        s += std::to_string(i.line) + ": " + i.element.toStdString() + ": " +
-             i.message.toStdString() + "\n";
-    for (const UnmappedVariable &u : r.unmapped)
-        s += std::to_string(u.line) + ": unmapped " + u.name.toStdString() + " -> " +
-             u.proposed.toStdString() + "\n";
-    return s;
-}
-
-QString listing(const Project &p) {
-    return printInstructionList(ladderToList(p.program).list, {false, false});
-}
-
-Address at(const Target &t, const char *device) {
-    return std::get<Address>(parseAddress(t, QString::fromLatin1(device)));
-}
-
-} // namespace
 
 TEST(PlcopenNames, DevicesAreIecIdentifiersAndBack) {
     const std::pair<const Target *, const char *> cases[] = {
         {&vigor(), "X10"},    {&cpm1(), "000.01"}, {&cpm1(), "DM 0010"}, {&cpm1(), "TIM 000"},
         {&cpm1(), "HR00.05"}, {&pl110(), "SM0.0"}, {&pl110(), "V10"},    {&vpc(), "i00"}};
     for (const auto &[t, device] : cases) {
-        const Address a = at(*t, device);
+        const Address a = deviceAt(*t, device);
         const QString name = iecName(*t, a);
         EXPECT_TRUE(
             QRegularExpression(QStringLiteral("^[A-Za-z_][A-Za-z0-9_]*$")).match(name).hasMatch())
@@ -78,8 +45,8 @@ TEST(PlcopenNames, DevicesAreIecIdentifiersAndBack) {
         ASSERT_TRUE(back) << name.toStdString();
         EXPECT_EQ(*back, a) << device;
     }
-    EXPECT_EQ(iecName(cpm1(), at(cpm1(), "000.01")), QStringLiteral("IN000_01"));
-    EXPECT_EQ(iecName(cpm1(), at(cpm1(), "DM 0010")), QStringLiteral("DM0010"));
+    EXPECT_EQ(iecName(cpm1(), deviceAt(cpm1(), "000.01")), QStringLiteral("IN000_01"));
+    EXPECT_EQ(iecName(cpm1(), deviceAt(cpm1(), "DM 0010")), QStringLiteral("DM0010"));
     EXPECT_FALSE(deviceOfIecName(vigor(), QStringLiteral("start_button")));
     EXPECT_FALSE(deviceOfIecName(vigor(), QStringLiteral("X8"))); // octal
 }
@@ -110,8 +77,8 @@ TEST(PlcopenNames, LocatedVariablesFollowTheDocumentedRule) {
     EXPECT_FALSE(deviceOfLocation(vigor(), QStringLiteral("%IX0.8")));
     EXPECT_FALSE(deviceOfLocation(vigor(), QStringLiteral("%IW2"))); // VR1, VR2 only
     EXPECT_FALSE(deviceOfLocation(vigor(), QStringLiteral("%MX0.0")));
-    EXPECT_TRUE(locationOfDevice(vigor(), at(vigor(), "M0")).isEmpty());
-    EXPECT_TRUE(locationOfDevice(cpm1(), at(cpm1(), "200.00")).isEmpty());
+    EXPECT_TRUE(locationOfDevice(vigor(), deviceAt(vigor(), "M0")).isEmpty());
+    EXPECT_TRUE(locationOfDevice(cpm1(), deviceAt(cpm1(), "200.00")).isEmpty());
 }
 
 TEST(PlcopenExport, EveryExampleValidatesAgainstTheSchema) {
@@ -231,12 +198,12 @@ TEST(PlcopenImport, AFileLaidOutAsOtherToolsWriteOneImportsWithAMapping) {
                                                   "LD M100\nAND> D10 K100\nOUT Y1\n"
                                                   "END\n"));
     // The variables' names and documentation are the devices' symbols.
-    const Symbol *start = r.project->symbol(at(vigor(), "X0"));
+    const Symbol *start = r.project->symbol(deviceAt(vigor(), "X0"));
     ASSERT_TRUE(start);
     EXPECT_EQ(start->name, QStringLiteral("start"));
     EXPECT_EQ(start->comment, QStringLiteral("green button"));
-    ASSERT_TRUE(r.project->symbol(at(vigor(), "T0")));
-    EXPECT_EQ(r.project->symbol(at(vigor(), "T0"))->name, QStringLiteral("delay"));
+    ASSERT_TRUE(r.project->symbol(deviceAt(vigor(), "T0")));
+    EXPECT_EQ(r.project->symbol(deviceAt(vigor(), "T0"))->name, QStringLiteral("delay"));
 }
 
 // The same file for the CPM1: its devices by the located rule, its timer's units (BCD set
@@ -341,4 +308,34 @@ TEST(PlcopenImport, BadFilesSayWhatAndWhere) {
     EXPECT_TRUE(std::any_of(r.issues.begin(), r.issues.end(), [](const ImportIssue &i) {
         return i.message.startsWith(QStringLiteral("the mapping file gives X8:"));
     })) << issues(r);
+}
+
+// Beremiz writes a configuration's constants as globalVars constant="true" with an initial
+// value: the ladder's use of one is that literal. Of two programs, the one the configuration's
+// task runs is the program, though it comes second.
+TEST(PlcopenImport, GlobalConstantsAreLiteralsAndTheTasksProgramIsTheProgram) {
+    QByteArray xml(kForeign);
+    ASSERT_TRUE(xml.contains("<expression>100</expression>"));
+    xml.replace("<expression>100</expression>", "<expression>limit</expression>");
+    xml.replace("        </resource>\n",
+                "        </resource>\n"
+                "        <globalVars constant=\"true\"><variable name=\"limit\"><type><INT/></type>"
+                "<initialValue><simpleValue value=\"100\"/></initialValue></variable>"
+                "</globalVars>\n");
+    xml.replace("      <pou name=\"main\" pouType=\"program\">",
+                "      <pou name=\"helper\" pouType=\"program\"><body><ST><xhtml:p>x := 1;"
+                "</xhtml:p></ST></body></pou>\n"
+                "      <pou name=\"main\" pouType=\"program\">");
+    QString error;
+    const auto mapping = readDeviceMapping(QStringLiteral("delay = T0\nlatched = M100\n"), &error);
+    ASSERT_TRUE(mapping);
+    const PlcopenImport r = importPlcopen(xml, vigor(), nullptr, *mapping);
+    ASSERT_TRUE(r.project);
+    EXPECT_EQ(issues(r), "14: pou helper: a second program is not imported: a project is one "
+                         "ladder (the program main is)\n");
+    EXPECT_EQ(listing(*r.project), QStringLiteral("LD X0\nOR Y0\nANI X1\nOUT Y0\n"
+                                                  "LD Y0\nTMR T0 K50\n"
+                                                  "LD T0\nSET M100\n"
+                                                  "LD M100\nAND> D10 K100\nOUT Y1\n"
+                                                  "END\n"));
 }

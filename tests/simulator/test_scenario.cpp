@@ -325,3 +325,74 @@ TEST(ScenarioRecord, NothingToRecordIsSaid) {
         recordScenario(r.history, rung::testing::vigor(), QStringLiteral("x.il"), {}, &error));
     EXPECT_TRUE(error.startsWith(QStringLiteral("the simulation has run no scan yet")));
 }
+
+// An online PLC recorded as a scenario: the PLC here is an engine scanning every 10 ms, read
+// every 70 ms as an online session refreshes (the history of its inputs and outputs, refresh
+// by refresh); an input switched between two refreshes is seen at the next one. The scenario
+// replays on the program and says what a longer timer changed.
+TEST(ScenarioRecord, AnOnlinePlcsRefreshesBecomeAScenarioThatReplays) {
+    const model::Target &t = rung::testing::vigor();
+    const auto address = [&](const char *name) {
+        return std::get<model::Address>(model::parseAddress(t, QString::fromLatin1(name)));
+    };
+    Recording plc(latch());
+    model::HistoryRecorder history(plc.program->layout);
+    const std::vector<model::Address> inputs{address("X0"), address("X1")};
+    const std::vector<model::Address> outputs{address("Y0"), address("Y1")};
+    for (const auto &a : inputs)
+        ASSERT_TRUE(history.watch(a));
+    for (const auto &a : outputs)
+        ASSERT_TRUE(history.watch(a));
+    quint64 refreshes = 0;
+    const qint64 connectedAt = 500; // the session's time runs from the connection
+    const auto runFor = [&](int scans) {
+        for (int k = 0; k < scans; ++k) {
+            plc.scans(1);
+            const qint64 now = connectedAt + plc.engine.statistics().timeMs;
+            if (plc.engine.statistics().scans % 7 == 0)
+                history.record(++refreshes, now, plc.engine.words().data());
+        }
+    };
+    using K = model::DeviceCommand::Kind;
+    runFor(30);
+    plc.command(K::WriteBit, "X0", 1); // after scan 30 (0.3 s): seen at the 0.35 s refresh
+    runFor(20);
+    plc.command(K::WriteBit, "X0", 0);
+    runFor(260); // T0 (2 s) done: Y1 ON
+    plc.command(K::WriteBit, "X1", 1);
+    runFor(40);
+    const qint64 from = connectedAt; // recording started with the connection
+    const qint64 to = connectedAt + plc.engine.statistics().timeMs;
+    QString error;
+    const auto recorded = recordObservedScenario(history, t, QStringLiteral("latch.il"), inputs,
+                                                 outputs, from, to, 10, &error);
+    ASSERT_TRUE(recorded) << error.toStdString();
+    EXPECT_EQ(recorded->notes.size(), 1);
+    EXPECT_EQ(recorded->text.section(QLatin1Char('\n'), 1),
+              QStringLiteral("program latch.il\n"
+                             "period 10ms\n"
+                             "\n"
+                             "at 0.35s set X0=1\n"
+                             "at 0.55s expect Y0=1 Y1=0\n"
+                             "at 0.56s set X0=0\n"
+                             "at 3.14s expect Y0=1 Y1=1\n"
+                             "at 3.15s set X1=1\n"
+                             "at 3.5s expect Y0=0 Y1=0\n"));
+    ListingLoader same{&t, kLatch, {}};
+    const ScenarioResult replay =
+        runScenario(recorded->text, QStringLiteral("/p/latch.rungtest"), std::cref(same));
+    EXPECT_TRUE(replay.passed()) << why(replay);
+    QString longer = kLatch;
+    longer.replace(QStringLiteral("K20"), QStringLiteral("K30"));
+    ListingLoader changed{&t, longer, {}};
+    const ScenarioResult failed =
+        runScenario(recorded->text, QStringLiteral("/p/latch.rungtest"), std::cref(changed));
+    ASSERT_EQ(failed.failures.size(), 1u) << why(failed);
+    EXPECT_EQ(failed.failures[0].message,
+              QStringLiteral("at 3.14s: expected Y0=1 Y1=1, seen Y0=1 Y1=0"));
+    // Nothing read while recording: said.
+    model::HistoryRecorder empty(plc.program->layout);
+    EXPECT_FALSE(recordObservedScenario(empty, t, QStringLiteral("latch.il"), inputs, outputs, from,
+                                        to, 10, &error));
+    EXPECT_TRUE(error.startsWith(QStringLiteral("nothing was recorded"))) << error.toStdString();
+}
