@@ -5,6 +5,7 @@
 
 #include "comms/transport/pty_transport.h"
 #include "comms/transport/serial_transport.h"
+#include "comms/transport/tcp_listen_transport.h"
 #include "comms/transport/tcp_transport.h"
 
 #include <QDeadlineTimer>
@@ -77,9 +78,29 @@ bool RealTime::addBridge(const BridgeDescription &b, QString *where, QString *er
         *where = b.where;
         break;
     }
+    case BridgeDescription::Kind::Listen: {
+        // Port 0 takes any free port; *where then says which.
+        const qsizetype colon = b.where.lastIndexOf(QLatin1Char(':'));
+        bool ok = false;
+        const uint tcpPort = colon > 0 ? b.where.mid(colon + 1).toUInt(&ok) : 0;
+        const QString hostName = b.where.left(std::max<qsizetype>(colon, 0));
+        const QHostAddress host = hostName == QLatin1String("localhost")
+                                      ? QHostAddress(QHostAddress::LocalHost)
+                                      : QHostAddress(hostName);
+        if (!ok || tcpPort > 65535 || host.isNull()) {
+            *error = NetworkTr::tr("%1.listen: \"%2\" is not ADDRESS:PORT (an IP address of "
+                                   "this machine, 0.0.0.0 for all, or localhost)")
+                         .arg(b.path, b.where);
+            return false;
+        }
+        transport = std::make_unique<comms::TcpListenTransport>(host, quint16(tcpPort));
+        break;
+    }
     }
     if (!transport->isOpen() && !transport->open(error))
         return false;
+    if (b.kind == BridgeDescription::Kind::Listen)
+        *where = transport->name();
     return addBridge(b.end, std::move(transport), error);
 }
 

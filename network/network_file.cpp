@@ -253,16 +253,17 @@ bool parseNetwork(const QByteArray &json, const QString &file, NetworkDescriptio
         b.path = where;
         if (!onlyKeys(o,
                       {QStringLiteral("port"), QStringLiteral("pty"), QStringLiteral("serial"),
-                       QStringLiteral("tcp")},
+                       QStringLiteral("tcp"), QStringLiteral("listen")},
                       where, &why) ||
             !string(o, "port", where, true, &b.end, &why))
             return fail(why);
-        const int kinds = int(o.contains(QLatin1String("pty"))) +
-                          int(o.contains(QLatin1String("serial"))) +
-                          int(o.contains(QLatin1String("tcp")));
+        const int kinds =
+            int(o.contains(QLatin1String("pty"))) + int(o.contains(QLatin1String("serial"))) +
+            int(o.contains(QLatin1String("tcp"))) + int(o.contains(QLatin1String("listen")));
         if (kinds != 1)
             return fail(NetworkFileTr::tr("%1: a bridge goes to one of \"pty\": true, \"serial\": "
-                                          "\"/dev/ttyUSB0\", \"tcp\": \"HOST:PORT\"")
+                                          "\"/dev/ttyUSB0\", \"tcp\": \"HOST:PORT\", "
+                                          "\"listen\": \"HOST:PORT\"")
                             .arg(where));
         if (o.contains(QLatin1String("pty"))) {
             b.kind = BridgeDescription::Kind::Pty;
@@ -270,9 +271,13 @@ bool parseNetwork(const QByteArray &json, const QString &file, NetworkDescriptio
             b.kind = BridgeDescription::Kind::Serial;
             if (!string(o, "serial", where, true, &b.where, &why))
                 return fail(why);
-        } else {
+        } else if (o.contains(QLatin1String("tcp"))) {
             b.kind = BridgeDescription::Kind::Tcp;
             if (!string(o, "tcp", where, true, &b.where, &why))
+                return fail(why);
+        } else {
+            b.kind = BridgeDescription::Kind::Listen;
+            if (!string(o, "listen", where, true, &b.where, &why))
                 return fail(why);
         }
         d->bridges.push_back(b);

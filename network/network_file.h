@@ -38,10 +38,10 @@ struct WireDescription {
 };
 
 struct BridgeDescription {
-    enum class Kind { Pty, Serial, Tcp };
+    enum class Kind { Pty, Serial, Tcp, Listen };
     QString end; // "station/PORT"
     Kind kind = Kind::Pty;
-    QString where; // the serial port's name, or HOST:PORT
+    QString where; // the serial port's name, or HOST:PORT (to connect to, or to listen on)
     QString path;  // "bridges[0]"
 };
 

@@ -4205,6 +4205,8 @@ Kiértékelés: %4 µs (%5..%6)</translation>
         <location line="+34"/>
         <location filename="../comms/transport/serial_transport.cpp" line="+38"/>
         <location line="+23"/>
+        <location filename="../comms/transport/tcp_listen_transport.cpp" line="+46"/>
+        <location line="+16"/>
         <location filename="../comms/transport/tcp_transport.cpp" line="+116"/>
         <location line="+30"/>
         <source>%1 is not open</source>
@@ -9203,7 +9205,7 @@ Kiértékelés: %4 µs (%5..%6)</translation>
         <translation>ütközés ezzel: %1; mindkét keret sérült</translation>
     </message>
     <message>
-        <location filename="../network/bridge.cpp" line="+51"/>
+        <location filename="../network/bridge.cpp" line="+52"/>
         <source>%1: no station port &quot;%2&quot;</source>
         <translation>%1: nincs „%2” állomásport</translation>
     </message>
@@ -9214,6 +9216,11 @@ Kiértékelés: %4 µs (%5..%6)</translation>
     </message>
     <message>
         <location line="+17"/>
+        <source>%1.listen: &quot;%2&quot; is not ADDRESS:PORT (an IP address of this machine, 0.0.0.0 for all, or localhost)</source>
+        <translation>%1.listen: a(z) „%2” nem CÍM:PORT alakú (a gép egy IP-címe, 0.0.0.0 mindegyikhez, vagy localhost)</translation>
+    </message>
+    <message>
+        <location line="+20"/>
         <source>no station port &quot;%1&quot;</source>
         <translation>nincs „%1” állomásport</translation>
     </message>
@@ -9343,12 +9350,12 @@ Kiértékelés: %4 µs (%5..%6)</translation>
         <location line="+4"/>
         <location line="+41"/>
         <location line="+60"/>
-        <location line="+36"/>
+        <location line="+41"/>
         <source>%1: needs an object</source>
         <translation>%1: objektum kell</translation>
     </message>
     <message>
-        <location line="-120"/>
+        <location line="-125"/>
         <location line="+33"/>
         <source>%1: &quot;%2&quot; is no name (letters, digits, _ and -, at most 32)</source>
         <translation>%1: a(z) „%2” nem név (betűk, számjegyek, _ és -, legfeljebb 32)</translation>
@@ -9396,11 +9403,11 @@ Kiértékelés: %4 µs (%5..%6)</translation>
     </message>
     <message>
         <location line="+26"/>
-        <source>%1: a bridge goes to one of &quot;pty&quot;: true, &quot;serial&quot;: &quot;/dev/ttyUSB0&quot;, &quot;tcp&quot;: &quot;HOST:PORT&quot;</source>
-        <translation>%1: a híd ezek egyikéhez vezet: &quot;pty&quot;: true, &quot;serial&quot;: &quot;/dev/ttyUSB0&quot;, &quot;tcp&quot;: &quot;HOST:PORT&quot;</translation>
+        <source>%1: a bridge goes to one of &quot;pty&quot;: true, &quot;serial&quot;: &quot;/dev/ttyUSB0&quot;, &quot;tcp&quot;: &quot;HOST:PORT&quot;, &quot;listen&quot;: &quot;HOST:PORT&quot;</source>
+        <translation>%1: a híd ezek egyikéhez vezet: &quot;pty&quot;: true, &quot;serial&quot;: &quot;/dev/ttyUSB0&quot;, &quot;tcp&quot;: &quot;HOST:PORT&quot;, &quot;listen&quot;: &quot;HOST:PORT&quot;</translation>
     </message>
     <message>
-        <location line="+44"/>
+        <location line="+49"/>
         <source>%1: &quot;to&quot; comes before &quot;from&quot;</source>
         <translation>%1: a „to” a „from” elé esik</translation>
     </message>

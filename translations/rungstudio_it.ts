@@ -4217,6 +4217,8 @@ Valutazione: %4 µs (%5..%6)</translation>
         <location line="+34"/>
         <location filename="../comms/transport/serial_transport.cpp" line="+38"/>
         <location line="+23"/>
+        <location filename="../comms/transport/tcp_listen_transport.cpp" line="+46"/>
+        <location line="+16"/>
         <location filename="../comms/transport/tcp_transport.cpp" line="+116"/>
         <location line="+30"/>
         <source>%1 is not open</source>
@@ -9224,7 +9226,7 @@ Valutazione: %4 µs (%5..%6)</translation>
         <translation>collisione con %1: entrambi i frame alterati</translation>
     </message>
     <message>
-        <location filename="../network/bridge.cpp" line="+51"/>
+        <location filename="../network/bridge.cpp" line="+52"/>
         <source>%1: no station port &quot;%2&quot;</source>
         <translation>%1: nessuna porta di stazione &quot;%2&quot;</translation>
     </message>
@@ -9235,6 +9237,11 @@ Valutazione: %4 µs (%5..%6)</translation>
     </message>
     <message>
         <location line="+17"/>
+        <source>%1.listen: &quot;%2&quot; is not ADDRESS:PORT (an IP address of this machine, 0.0.0.0 for all, or localhost)</source>
+        <translation>%1.listen: &quot;%2&quot; non è INDIRIZZO:PORTA (un indirizzo IP di questa macchina, 0.0.0.0 per tutti, oppure localhost)</translation>
+    </message>
+    <message>
+        <location line="+20"/>
         <source>no station port &quot;%1&quot;</source>
         <translation>nessuna porta di stazione &quot;%1&quot;</translation>
     </message>
@@ -9364,12 +9371,12 @@ Valutazione: %4 µs (%5..%6)</translation>
         <location line="+4"/>
         <location line="+41"/>
         <location line="+60"/>
-        <location line="+36"/>
+        <location line="+41"/>
         <source>%1: needs an object</source>
         <translation>%1: richiede un oggetto</translation>
     </message>
     <message>
-        <location line="-120"/>
+        <location line="-125"/>
         <location line="+33"/>
         <source>%1: &quot;%2&quot; is no name (letters, digits, _ and -, at most 32)</source>
         <translation>%1: &quot;%2&quot; non è un nome (lettere, cifre, _ e -, al massimo 32)</translation>
@@ -9417,11 +9424,11 @@ Valutazione: %4 µs (%5..%6)</translation>
     </message>
     <message>
         <location line="+26"/>
-        <source>%1: a bridge goes to one of &quot;pty&quot;: true, &quot;serial&quot;: &quot;/dev/ttyUSB0&quot;, &quot;tcp&quot;: &quot;HOST:PORT&quot;</source>
-        <translation>%1: un ponte va a uno tra &quot;pty&quot;: true, &quot;serial&quot;: &quot;/dev/ttyUSB0&quot;, &quot;tcp&quot;: &quot;HOST:PORT&quot;</translation>
+        <source>%1: a bridge goes to one of &quot;pty&quot;: true, &quot;serial&quot;: &quot;/dev/ttyUSB0&quot;, &quot;tcp&quot;: &quot;HOST:PORT&quot;, &quot;listen&quot;: &quot;HOST:PORT&quot;</source>
+        <translation>%1: un ponte va a uno tra &quot;pty&quot;: true, &quot;serial&quot;: &quot;/dev/ttyUSB0&quot;, &quot;tcp&quot;: &quot;HOST:PORT&quot;, &quot;listen&quot;: &quot;HOST:PORT&quot;</translation>
     </message>
     <message>
-        <location line="+44"/>
+        <location line="+49"/>
         <source>%1: &quot;to&quot; comes before &quot;from&quot;</source>
         <translation>%1: &quot;to&quot; viene prima di &quot;from&quot;</translation>
     </message>

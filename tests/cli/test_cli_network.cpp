@@ -18,7 +18,9 @@
 #include <QProcess>
 #include <QRegularExpression>
 #include <QStandardPaths>
+#include <QTcpServer>
 #include <QTemporaryDir>
+#include <QThread>
 
 #include <gtest/gtest.h>
 
@@ -383,4 +385,136 @@ TEST(CliNetwork, AnMbusMasterPollsALibmodbusSlave) {
     peer.kill();
     peer.waitForFinished(5000);
 #endif
+}
+
+// A simulated master polls a real device behind a serial device server: the same MBUS
+// station as above, its CP2 bridged over TCP ("tcp": HOST:PORT) to socat, which stands for
+// the device server and passes the bytes to a pseudo-terminal, where Debian's libmodbus
+// serves as slave 1.
+TEST(CliNetwork, AnMbusMasterPollsALibmodbusSlaveBehindADeviceServer) {
+#ifndef RUNG_MODBUS_PEER
+    GTEST_SKIP() << "libmodbus-dev is not installed (scripts/install-deps.sh)";
+#else
+    const QString socat = QStandardPaths::findExecutable(QStringLiteral("socat"));
+    if (socat.isEmpty())
+        GTEST_SKIP() << "socat is not installed (scripts/install-deps.sh)";
+    QTemporaryDir dir;
+    const QString file = network(
+        dir, {{QStringLiteral("m.il"),
+               QStringLiteral("; target: vigor\nLD M9002\nMOV K1 D1000\nMOV K1 D1001\nMOV K1 "
+                              "D1002\nMOV K10 D1003\nMOV K13 D1004\nMOV K2000 D1005\nMOV K4 "
+                              "D1006\nMOV K0 D1007\nLD M9000\nMBUS D1000 D100\nEND\n")},
+              {QStringLiteral("net.rungnet"), QStringLiteral(R"({"stations": [{"name": "m",
+                "program": "m.il", "model": "VB",
+                "ports": {"CP2": {"application": "modbus", "station": 0, "mode": "rtu"}}}]})")}});
+    quint16 tcpPort = 0;
+    {
+        QTcpServer probe; // a free port for the device server
+        ASSERT_TRUE(probe.listen(QHostAddress::LocalHost, 0));
+        tcpPort = probe.serverPort();
+    }
+    const QString line = dir.filePath(QStringLiteral("line"));
+    QProcess server;
+    server.start(socat, {QStringLiteral("PTY,link=%1,raw,echo=0").arg(line),
+                         QStringLiteral("TCP-LISTEN:%1,bind=127.0.0.1,reuseaddr").arg(tcpPort)});
+    ASSERT_TRUE(server.waitForStarted(10000));
+    const QDeadlineTimer made(10000);
+    while (!QFile::exists(line) && !made.hasExpired())
+        QThread::msleep(20);
+    ASSERT_TRUE(QFile::exists(line)) << server.readAllStandardError().toStdString();
+    QProcess peer;
+    peer.start(QStringLiteral(RUNG_MODBUS_PEER),
+               {QStringLiteral("rtu"), line, QStringLiteral("1")});
+    ASSERT_TRUE(peer.waitForReadyRead(10000)) << peer.readAllStandardError().toStdString();
+    ASSERT_TRUE(peer.readLine().startsWith("ready"));
+
+    rung::network::NetworkDescription d;
+    QString error;
+    ASSERT_TRUE(rung::network::readNetworkFile(file, &d, &error)) << error.toStdString();
+    auto net = rung::network::Network::build(d, rung::app::cliProgramLoader(), &error);
+    ASSERT_TRUE(net) << error.toStdString();
+    rung::network::RealTime rt(*net);
+    rung::network::BridgeDescription tcp;
+    tcp.end = QStringLiteral("m/CP2");
+    tcp.kind = rung::network::BridgeDescription::Kind::Tcp;
+    tcp.where = QStringLiteral("127.0.0.1:%1").arg(tcpPort);
+    tcp.path = QStringLiteral("bridges[0]");
+    QString where;
+    ASSERT_TRUE(rt.addBridge(tcp, &where, &error)) << error.toStdString();
+    EXPECT_EQ(where, tcp.where);
+    rung::network::Station *m = net->station(QStringLiteral("m"));
+    auto value = [&](int d) {
+        return m->engine().value(std::get<rung::model::Address>(
+            rung::model::parseAddress(m->target(), QStringLiteral("D%1").arg(d))));
+    };
+    using rung::comms::test::peer::reg;
+    const QDeadlineTimer deadline(15000);
+    bool done = false;
+    while (!done && !deadline.hasExpired()) {
+        QString failure;
+        ASSERT_TRUE(rt.turn(5, &failure)) << failure.toStdString();
+        done = value(2009) == reg(9) && value(100) == 0 && value(102) >= 2; // two tables
+    }
+    EXPECT_TRUE(done) << "S2 " << std::hex << value(100);
+    for (int k = 0; k < 10; ++k)
+        EXPECT_EQ(value(2000 + k), reg(k)) << k;
+    peer.kill();
+    peer.waitForFinished(5000);
+    server.kill();
+    server.waitForFinished(5000);
+#endif
+}
+
+// pymodbus, a real Modbus master from Debian, as an HMI connecting over TCP with RTU framing
+// to a "listen" bridge of a served network (what it would do with a serial device server in
+// server mode): it writes the MODBUS example slave's D100 and reads it back.
+TEST(CliNetwork, PymodbusPollsAStationListeningOnTcp) {
+    QTemporaryDir dir;
+    const QString file = network(
+        dir, {{QStringLiteral("net.rungnet"),
+               QStringLiteral(R"({"stations": [{"name": "s1", "program": "%1", "model": "VB",
+                "ports": {"CP2": {"application": "modbus", "station": 1, "mode": "rtu"}}}],
+                "bridges": [{"port": "s1/CP2", "listen": "127.0.0.1:0"}]})")
+                   .arg(kExamples + QStringLiteral("modbus/slave.il"))}});
+    QProcess serve;
+    serve.start(QStringLiteral(RUNG_CLI_PATH), {QStringLiteral("serve"), file});
+    ASSERT_TRUE(serve.waitForStarted(10000));
+    const QDeadlineTimer started(20000);
+    while (!serve.canReadLine() && !started.hasExpired())
+        serve.waitForReadyRead(100);
+    const QString first = QString::fromUtf8(serve.readLine()).trimmed();
+    ASSERT_TRUE(first.startsWith(QStringLiteral("s1/CP2 127.0.0.1:"))) << first.toStdString();
+    const QString port = first.section(QLatin1Char(':'), 1);
+    const char *script = R"(
+import sys, time
+from pymodbus.client import ModbusTcpClient
+from pymodbus.transaction import ModbusRtuFramer
+c = ModbusTcpClient('127.0.0.1', port=int(sys.argv[1]), framer=ModbusRtuFramer, timeout=2,
+                    retries=3)
+if not c.connect():
+    sys.exit('cannot connect')
+w = c.write_register(100, 777, slave=1)
+if w.isError():
+    sys.exit('write_register: %s' % w)
+r = c.read_holding_registers(100, 1, slave=1)
+if r.isError():
+    sys.exit('read_holding_registers: %s' % r)
+print('D100=%d' % r.registers[0])
+c.close()
+)";
+    QProcess py;
+    py.start(QStringLiteral("/usr/bin/python3"),
+             {QStringLiteral("-c"), QLatin1String(script), port});
+    ASSERT_TRUE(py.waitForFinished(30000));
+    const QString err = QString::fromUtf8(py.readAllStandardError());
+    if (py.exitCode() != 0 && (err.contains(QLatin1String("ModuleNotFoundError")) ||
+                               err.contains(QLatin1String("ImportError"))))
+        GTEST_SKIP() << "python3-pymodbus is not installed (scripts/install-deps.sh): "
+                     << err.toStdString();
+    EXPECT_EQ(py.exitCode(), 0) << err.toStdString();
+    EXPECT_EQ(QString::fromUtf8(py.readAllStandardOutput()).trimmed(), QStringLiteral("D100=777"))
+        << err.toStdString();
+    serve.terminate();
+    ASSERT_TRUE(serve.waitForFinished(10000));
+    EXPECT_EQ(serve.exitCode(), 0) << serve.readAllStandardError().toStdString();
 }

@@ -1,5 +1,6 @@
 #include "comms/protocol/modbus_master.h"
 #include "comms/protocol/modbus_slave.h"
+#include "comms/transport/tcp_listen_transport.h"
 #include "comms/transport/tcp_transport.h"
 
 #include <gtest/gtest.h>
@@ -138,6 +139,45 @@ TEST(TcpTransport, AcceptEndsAtItsDeadlineWithNoClient) {
     QString error;
     ASSERT_TRUE(s.listen(QHostAddress::LocalHost, 0, &error));
     EXPECT_EQ(s.accept(QDeadlineTimer(30)), nullptr);
+}
+
+// The listening side of a device server (tcp_listen_transport.h): one client at a time,
+// bytes both ways; what is written with nobody connected goes nowhere; a client that leaves
+// hands the line to the next.
+TEST(TcpListenTransport, ServesOneClientAfterTheOther) {
+    TcpListenTransport line(QHostAddress::LocalHost, 0);
+    QString error;
+    ASSERT_TRUE(line.open(&error)) << error.toStdString();
+    const quint16 port = quint16(line.name().section(QLatin1Char(':'), 1).toUInt());
+    ASSERT_NE(port, 0);
+    EXPECT_TRUE(line.write("lost", QDeadlineTimer(1000), &error)); // nobody there
+    EXPECT_EQ(line.read(QDeadlineTimer(30)).status, R::Timeout);
+    for (const QByteArray &request : {QByteArray("first"), QByteArray("second")}) {
+        TcpTransport client(QStringLiteral("127.0.0.1"), port);
+        ASSERT_TRUE(client.open(&error)) << error.toStdString();
+        ASSERT_TRUE(client.write(request, QDeadlineTimer(3000), &error));
+        EXPECT_EQ(readAll(line, request.size()), request);
+        EXPECT_TRUE(line.hasClient());
+        ASSERT_TRUE(line.write("reply-" + request, QDeadlineTimer(3000), &error));
+        EXPECT_EQ(readAll(client, 6 + request.size()), "reply-" + request); // not "lost"
+        client.close();
+        // The line notices the client left at its next read and waits for another.
+        const QDeadlineTimer gone(3000);
+        while (line.hasClient() && !gone.hasExpired())
+            EXPECT_NE(line.read(QDeadlineTimer(20)).status, R::Failed);
+        EXPECT_FALSE(line.hasClient());
+    }
+}
+
+TEST(TcpListenTransport, CancelEndsTheWaitForAClient) {
+    TcpListenTransport line(QHostAddress::LocalHost, 0);
+    QString error;
+    ASSERT_TRUE(line.open(&error)) << error.toStdString();
+    line.cancel();
+    QElapsedTimer t;
+    t.start();
+    EXPECT_EQ(line.read(QDeadlineTimer(5000)).status, R::Cancelled);
+    EXPECT_LT(t.elapsed(), 2000);
 }
 
 } // namespace

@@ -9,6 +9,7 @@
 
 #include "comms/protocol/modbus_master.h"
 #include "comms/transport/pty_transport.h"
+#include "comms/transport/tcp_listen_transport.h"
 
 #include <QDeadlineTimer>
 
@@ -66,6 +67,58 @@ TEST(Bridge, ARealMasterPollsASimulatedSlaveThroughAPty) {
     for (const TrafficRecord &t : r.records)
         fromBridge = fromBridge || t.sender == QLatin1String("bridge:plc/CP2");
     EXPECT_TRUE(fromBridge);
+}
+
+// A "listen" bridge: the port waits on TCP for a master (an HMI or SCADA carrying RTU frames
+// over raw TCP, as to a serial device server in server mode). A master that leaves does not
+// end the line: the next one that connects is answered.
+TEST(Bridge, MastersConnectingOverTcpOneAfterTheOtherPollASimulatedSlave) {
+    NetRun r = runNetwork(R"({"stations": [{"name": "plc", "program": "s.il", "model": "VB",
+                              "ports": {"CP2": {"application": "modbus", "station": 1}}}]})",
+                          {{QStringLiteral("s.il"), QString::fromLatin1(kSlave)}});
+    ASSERT_TRUE(r.net) << r.error.toStdString();
+    RealTime rt(*r.net);
+    BridgeDescription listen;
+    listen.end = QStringLiteral("plc/CP2");
+    listen.kind = BridgeDescription::Kind::Listen;
+    listen.where = QStringLiteral("127.0.0.1:0");
+    listen.path = QStringLiteral("bridges[0]");
+    QString where, error;
+    ASSERT_TRUE(rt.addBridge(listen, &where, &error)) << error.toStdString();
+    ASSERT_TRUE(where.startsWith(QStringLiteral("127.0.0.1:"))) << where.toStdString();
+    const quint16 port = quint16(where.section(QLatin1Char(':'), 1).toUInt());
+    ASSERT_NE(port, 0);
+    comms::modbus::Request read;
+    read.function = comms::modbus::ReadHoldingRegisters;
+    read.address = 0; // D0
+    read.count = 1;
+    for (int client = 0; client < 2; ++client) {
+        comms::TcpTransport hmi(QStringLiteral("127.0.0.1"), port);
+        ASSERT_TRUE(hmi.open(&error)) << error.toStdString();
+        comms::modbus::ReplyDecoder reply(comms::modbus::Framing::Rtu, 1, read);
+        ASSERT_EQ(
+            poll(rt, hmi, reply, comms::modbus::rtuFrame(1, comms::modbus::encodeRequestPdu(read))),
+            comms::FrameStatus::Complete)
+            << "client " << client << ": " << reply.error().message.toStdString();
+        EXPECT_EQ(reply.response().registers, (std::vector<std::uint16_t>{321})) << client;
+    } // each client closes its connection here
+}
+
+TEST(Bridge, AListenAddressThatIsNotOneIsRefusedWithWhatAndWhere) {
+    NetRun r = runNetwork(R"({"stations": [{"name": "plc", "program": "s.il", "model": "VB",
+                              "ports": {"CP2": {"application": "modbus", "station": 1}}}]})",
+                          {{QStringLiteral("s.il"), QString::fromLatin1(kSlave)}});
+    ASSERT_TRUE(r.net) << r.error.toStdString();
+    RealTime rt(*r.net);
+    BridgeDescription listen;
+    listen.end = QStringLiteral("plc/CP2");
+    listen.kind = BridgeDescription::Kind::Listen;
+    listen.where = QStringLiteral("plc.example:5020");
+    listen.path = QStringLiteral("bridges[0]");
+    QString where, error;
+    EXPECT_FALSE(rt.addBridge(listen, &where, &error));
+    EXPECT_TRUE(error.startsWith(QStringLiteral("bridges[0].listen: \"plc.example:5020\"")))
+        << error.toStdString();
 }
 
 TEST(Bridge, ACpuLinkPortIsNeverPutOnARealLine) {
