@@ -10,10 +10,8 @@
 
 namespace rung::network {
 
-namespace {
-
-// "master/D20" -> the station and "D20".
-Station *split(const Network &network, const QString &text, QString *device, QString *error) {
+Station *stationDevice(const Network &network, const QString &text, QString *device,
+                       QString *error) {
     const qsizetype slash = text.indexOf(QLatin1Char('/'));
     if (slash <= 0) {
         *error =
@@ -35,8 +33,6 @@ Station *split(const Network &network, const QString &text, QString *device, QSt
     *device = text.mid(slash + 1);
     return s;
 }
-
-} // namespace
 
 bool parseNetworkTraceOptions(const Network &network, const QStringList &args,
                               NetTraceRequest *request, QString *error) {
@@ -78,7 +74,7 @@ bool parseNetworkTraceOptions(const Network &network, const QStringList &args,
             }
             NetStimulus s;
             QString device;
-            s.station = split(network, m.captured(1), &device, error);
+            s.station = stationDevice(network, m.captured(1), &device, error);
             if (!s.station ||
                 !simulator::parseTraceDevice(s.station->target(), device, &s.stimulus.address,
                                              error) ||
@@ -100,7 +96,7 @@ bool parseNetworkTraceOptions(const Network &network, const QStringList &args,
                     kind = pm.captured(1);
                     rest = pm.captured(2);
                 }
-                c.station = split(network, rest, &device, error);
+                c.station = stationDevice(network, rest, &device, error);
                 if (!c.station || !simulator::parseTraceColumn(c.station->target(), kind + device,
                                                                &c.column, error))
                     return false;

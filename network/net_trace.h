@@ -30,6 +30,11 @@ struct NetTraceRequest {
     std::vector<NetTraceColumn> columns;
 };
 
+// "master/D20": the station and "D20"; null with what and why (no slash, no such station:
+// the stations named).
+Station *stationDevice(const Network &network, const QString &text, QString *device,
+                       QString *error);
+
 // --scans N (rows), --period MS (between rows), --set NAME/DEV=VALUE@N (applied once N rows
 // have run: @0 before anything), --trace NAME/DEV[,...]; false with a translated reason for
 // anything else, or a station or device that is not there.

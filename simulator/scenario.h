@@ -100,14 +100,42 @@ struct ScenarioProgram {
 using ScenarioProgramLoader = std::function<ScenarioProgram(
     const QString &path, const QString &target, const QString &model)>;
 
+// What a scenario drives on virtual time: one program on its engine (here), or a network of
+// stations (the network room's, network/network_scenario.h; the simulator knows no network).
+class ScenarioSubject {
+public:
+    virtual ~ScenarioSubject() = default;
+    // The engine a device written in the scenario belongs to, and the device as that engine's
+    // target writes it: a network's "st1/D0" is station st1's "D0". Null with *error (what
+    // and why) when it names none.
+    virtual Engine *engineFor(const QString &written, QString *device, QString *error) = 0;
+    virtual qint64 defaultPeriodMs() const = 0;
+    // Before the first step: the scenario's period, the virtual time one step moves on.
+    virtual void start(qint64 periodMs) = 0;
+    // One period: a program's one scan; a network's every event up to the period's end.
+    virtual void step() = 0;
+    // `release all`: every engine's forces.
+    virtual void releaseAll() {}
+    // The programs' own errors (a division by zero ...), said in the report, not failures.
+    virtual QStringList runtimeErrors() const = 0;
+};
+
+// A network (`program plant.rungnet`) as a subject, or null with the reasons.
+using ScenarioNetworkLoader =
+    std::function<std::unique_ptr<ScenarioSubject>(const QString &path, QStringList *errors)>;
+
 // Parses, loads the program and runs it on a fresh engine (docs/scenario-tests.md "How a
-// scenario runs"). The default period is the engine's (10 ms).
+// scenario runs"). The default period is the engine's (10 ms); a network's is its file's.
+// Without a network loader a scenario of a network does not start (the error says so).
 ScenarioResult runScenario(const QString &text, const QString &file,
-                           const ScenarioProgramLoader &loader);
+                           const ScenarioProgramLoader &loader,
+                           const ScenarioNetworkLoader &networkLoader = {});
 // The same from a parsed scenario and a program at hand; `afterScan`, when given, sees the
 // engine after every scan (the timing chart of a run records from it).
 ScenarioResult runScenario(const Scenario &scenario, const std::shared_ptr<const Program> &program,
                            const std::function<void(const Engine &)> &afterScan = {});
+// The same on any subject.
+ScenarioResult runScenario(const Scenario &scenario, ScenarioSubject &subject);
 
 // A duration as the reports write it: "35s", "12.34s", "150ms", "2min 5s".
 // A time in seconds with the decimals it needs, as a scenario reads it back ("65.32s", "3s").

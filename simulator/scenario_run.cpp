@@ -21,11 +21,14 @@ namespace {
 struct Value {
     enum class Kind : std::uint8_t { Bit, Word, Current, SetValue, Constant } kind = Kind::Constant;
     model::Address address;
+    Engine *engine = nullptr; // the device's (a network's station's)
+    bool inStation = false;   // written STATION/DEVICE
     qint64 constant = 0;
     QString text; // as written
 
     bool isDevice() const { return kind != Kind::Constant; }
-    qint64 read(const Engine &e) const {
+    qint64 read() const {
+        const Engine &e = *engine;
         switch (kind) {
         case Kind::Bit:
             return e.bit(address) ? 1 : 0;
@@ -47,22 +50,22 @@ struct Condition {
     Value left, right;
     model::CompareOp op = model::CompareOp::Eq;
 
-    bool holds(const Engine &e) const {
+    bool holds() const {
         switch (kind) {
         case Kind::And:
             return std::all_of(items.begin(), items.end(),
-                               [&](const Condition &c) { return c.holds(e); });
+                               [&](const Condition &c) { return c.holds(); });
         case Kind::Or:
             return std::any_of(items.begin(), items.end(),
-                               [&](const Condition &c) { return c.holds(e); });
+                               [&](const Condition &c) { return c.holds(); });
         case Kind::Not:
-            return !items.front().holds(e);
+            return !items.front().holds();
         case Kind::Truth:
-            return left.read(e) != 0;
+            return left.read() != 0;
         case Kind::Compare:
             break;
         }
-        return model::compareHolds(op, left.read(e), right.read(e));
+        return model::compareHolds(op, left.read(), right.read());
     }
     void devices(std::vector<const Value *> *out) const {
         for (const Condition &c : items)
@@ -80,12 +83,13 @@ struct Assignment {
 };
 
 // Reads the devices, values and conditions of one statement with the target's spelling of
-// devices ("DM 0010", "000.01", "TIM 000", "V10"). A device may hold one space (the CPM1's
-// "DM 0010"): a word that is no device is tried with the word after it.
+// devices ("DM 0010", "000.01", "TIM 000", "V10"; "st1/D0" in a network: the subject says
+// which engine and target). A device may hold one space (the CPM1's "DM 0010"): a word that
+// is no device is tried with the word after it.
 class StatementReader {
 public:
-    StatementReader(const model::Target &target, const QString &text)
-        : m_target(target)
+    StatementReader(ScenarioSubject &subject, const QString &text)
+        : m_subject(subject)
         , m_text(text) {}
 
     QString error() const { return m_error; }
@@ -239,7 +243,15 @@ private:
                 prefix = name.left(3).toLower();
                 name = name.mid(3);
             }
-        auto parsed = model::parseAddress(m_target, name);
+        const bool inStation = name.contains(QLatin1Char('/'));
+        QString device;
+        QString why;
+        Engine *engine = m_subject.engineFor(name, &device, &why);
+        if (!engine)
+            return fail(why);
+        name = device;
+        const model::Target &target = engine->program().layout->target();
+        auto parsed = model::parseAddress(target, name);
         qsizetype used = end;
         QString written = word;
         if (std::holds_alternative<model::AddressError>(parsed)) {
@@ -248,7 +260,7 @@ private:
             if (!next.isEmpty() && next.compare(QLatin1String("and"), Qt::CaseInsensitive) != 0 &&
                 next.compare(QLatin1String("or"), Qt::CaseInsensitive) != 0 &&
                 next.compare(QLatin1String("not"), Qt::CaseInsensitive) != 0) {
-                auto two = model::parseAddress(m_target, name + QLatin1Char(' ') + next);
+                auto two = model::parseAddress(target, name + QLatin1Char(' ') + next);
                 if (std::holds_alternative<model::Address>(two)) {
                     parsed = two;
                     used = end2;
@@ -266,13 +278,15 @@ private:
                     return v;
                 }
             return fail(ScenarioTr::tr("%1 is no device of %2: %3")
-                            .arg(word, m_target.displayName, e->message));
+                            .arg(word, target.displayName, e->message));
         }
         m_pos = used;
         Value v;
         v.text = written;
         v.address = std::get<model::Address>(parsed);
-        const model::AreaKind kind = m_target.area(v.address.area).kind;
+        v.engine = engine;
+        v.inStation = inStation;
+        const model::AreaKind kind = target.area(v.address.area).kind;
         const bool element = kind == model::AreaKind::Timer || kind == model::AreaKind::Counter;
         if (!prefix.isEmpty() && (!element || v.address.bit >= 0))
             return fail(
@@ -372,7 +386,7 @@ private:
         return c;
     }
 
-    const model::Target &m_target;
+    ScenarioSubject &m_subject;
     QString m_text;
     qsizetype m_pos = 0;
     QString m_error;
@@ -386,32 +400,77 @@ struct PreparedStatement {
     Condition condition; // expect, within, always
 };
 
-QString seenText(const Condition &c, const Engine &e) {
+QString seenText(const Condition &c) {
     std::vector<const Value *> devices;
     c.devices(&devices);
     QStringList parts;
     for (const Value *v : devices)
-        parts << QStringLiteral("%1=%2").arg(v->text).arg(v->read(e));
+        parts << QStringLiteral("%1=%2").arg(v->text).arg(v->read());
     return parts.join(QLatin1Char(' '));
 }
 
+// The devices for a timing chart of the program; a network's (STATION/DEVICE) have no place
+// in one program's chart.
 std::vector<model::Address> addressesOf(const Condition &c) {
     std::vector<const Value *> devices;
     c.devices(&devices);
     std::vector<model::Address> out;
     for (const Value *v : devices)
-        out.push_back(v->address);
+        if (!v->inStation)
+            out.push_back(v->address);
     return out;
 }
+
+// One program on one engine: a device is the program's, written as its target writes it.
+class ProgramSubject final : public ScenarioSubject {
+public:
+    explicit ProgramSubject(const std::shared_ptr<const Program> &program,
+                            const std::function<void(const Engine &)> &afterScan)
+        : m_engine(program)
+        , m_afterScan(afterScan) {}
+    Engine *engineFor(const QString &written, QString *device, QString *error) override {
+        if (written.contains(QLatin1Char('/'))) {
+            *error = ScenarioTr::tr("%1: STATION/DEVICE names a device of a network's station; "
+                                    "this scenario's program is one PLC")
+                         .arg(written);
+            return nullptr;
+        }
+        *device = written;
+        return &m_engine;
+    }
+    qint64 defaultPeriodMs() const override { return 10; }
+    void start(qint64 periodMs) override { m_engine.setPeriodMs(periodMs); }
+    void releaseAll() override { m_engine.releaseAll(); }
+    void step() override {
+        m_engine.scan();
+        if (m_afterScan)
+            m_afterScan(m_engine);
+    }
+    QStringList runtimeErrors() const override {
+        QStringList out;
+        for (const RuntimeError &e : m_engine.runtimeErrors())
+            out << ScenarioTr::tr("runtime error at step %1: %2").arg(e.instruction).arg(e.message);
+        return out;
+    }
+
+private:
+    Engine m_engine;
+    std::function<void(const Engine &)> m_afterScan;
+};
 
 } // namespace
 
 ScenarioResult runScenario(const Scenario &s, const std::shared_ptr<const Program> &program,
                            const std::function<void(const Engine &)> &afterScan) {
+    ProgramSubject subject(program, afterScan);
+    return runScenario(s, subject);
+}
+
+ScenarioResult runScenario(const Scenario &s, ScenarioSubject &subject) {
     ScenarioResult result;
     result.file = s.file;
-    const model::Target &target = program->layout->target();
-    const qint64 period = s.period ? s.period->resolve(10) : 10;
+    const qint64 period =
+        s.period ? s.period->resolve(subject.defaultPeriodMs()) : subject.defaultPeriodMs();
     std::vector<PreparedStatement> steps;
     std::vector<std::size_t> always;
     qint64 lastAt = 0;
@@ -419,7 +478,7 @@ ScenarioResult runScenario(const Scenario &s, const std::shared_ptr<const Progra
     for (const ScenarioStatement &st : s.statements) {
         PreparedStatement step;
         step.statement = &st;
-        StatementReader reader(target, st.text);
+        StatementReader reader(subject, st.text);
         bool ok = true;
         using K = ScenarioStatement::Kind;
         if (st.kind != K::Within && st.kind != K::Always && st.kind != K::Run) {
@@ -479,19 +538,16 @@ ScenarioResult runScenario(const Scenario &s, const std::shared_ptr<const Progra
         return result;
 
     result.ran = true;
-    Engine engine(program);
-    engine.setPeriodMs(period);
+    subject.start(period);
     quint64 done = 0;
     // `always`: the first failing scan is reported, with how many failed.
     std::vector<std::optional<ScenarioFailure>> alwaysFailure(always.size());
     auto scan = [&] {
-        engine.scan();
+        subject.step();
         ++done;
-        if (afterScan)
-            afterScan(engine);
         for (std::size_t k = 0; k < always.size(); ++k) {
             const PreparedStatement &st = steps[always[k]];
-            if (st.condition.holds(engine))
+            if (st.condition.holds())
                 continue;
             if (alwaysFailure[k]) {
                 ++alwaysFailure[k]->failingScans;
@@ -501,7 +557,7 @@ ScenarioResult runScenario(const Scenario &s, const std::shared_ptr<const Progra
             f.line = st.statement->line;
             f.timeMs = static_cast<qint64>(done - 1) * period;
             f.statement = st.statement->source;
-            f.seen = seenText(st.condition, engine);
+            f.seen = seenText(st.condition);
             f.devices = addressesOf(st.condition);
             alwaysFailure[k] = f;
         }
@@ -517,7 +573,7 @@ ScenarioResult runScenario(const Scenario &s, const std::shared_ptr<const Progra
         f.line = st.statement->line;
         f.timeMs = time;
         f.statement = st.statement->source;
-        f.seen = seenText(st.condition, engine);
+        f.seen = seenText(st.condition);
         f.devices = addressesOf(st.condition);
         f.message = message;
         result.failures.push_back(f);
@@ -533,6 +589,8 @@ ScenarioResult runScenario(const Scenario &s, const std::shared_ptr<const Progra
             const qint64 t = statement.time.resolve(period);
             runTo(scanOf(t));
             for (const Assignment &a : st.assignments) {
+                Engine &engine = *a.device.engine;
+                const model::Target &target = engine.program().layout->target();
                 if (statement.kind == K::Force)
                     engine.force(a.device.address, a.value != 0);
                 else if (a.device.kind == Value::Kind::SetValue ||
@@ -546,9 +604,9 @@ ScenarioResult runScenario(const Scenario &s, const std::shared_ptr<const Progra
                     engine.writeWord(a.device.address, a.value);
             }
             if (st.releaseAll)
-                engine.releaseAll();
+                subject.releaseAll();
             for (const Value &d : st.devices)
-                engine.release(d.address);
+                d.engine->release(d.address);
             previous = t;
             break;
         }
@@ -567,13 +625,12 @@ ScenarioResult runScenario(const Scenario &s, const std::shared_ptr<const Progra
                 break;
             }
             runTo(k + 1);
-            if (!st.condition.holds(engine))
+            if (!st.condition.holds())
                 fail(st, t,
                      //: A failed expectation: %1 the time, %2 what was expected, %3 the devices'
                      //: values then ("Y0=1 Y1=0").
                      ScenarioTr::tr("at %1: expected %2, seen %3")
-                         .arg(formatScenarioTime(t), statement.text,
-                              seenText(st.condition, engine)));
+                         .arg(formatScenarioTime(t), statement.text, seenText(st.condition)));
             previous = t;
             break;
         }
@@ -583,7 +640,7 @@ ScenarioResult runScenario(const Scenario &s, const std::shared_ptr<const Progra
             const quint64 last = scanOf(deadline);
             bool met = false;
             while (true) {
-                if (done > first && st.condition.holds(engine)) {
+                if (done > first && st.condition.holds()) {
                     met = true;
                     break;
                 }
@@ -599,7 +656,7 @@ ScenarioResult runScenario(const Scenario &s, const std::shared_ptr<const Progra
                      ScenarioTr::tr("within %1 of %2 (until %3): expected %4, seen %5")
                          .arg(statement.time.text, formatScenarioTime(previous),
                               formatScenarioTime(deadline), statement.text,
-                              seenText(st.condition, engine)));
+                              seenText(st.condition)));
             previous = met ? at : deadline;
             break;
         }
@@ -631,14 +688,13 @@ ScenarioResult runScenario(const Scenario &s, const std::shared_ptr<const Progra
         [](const ScenarioFailure &x, const ScenarioFailure &y) { return x.line < y.line; });
     result.scans = done;
     result.durationMs = static_cast<qint64>(done) * period;
-    for (const RuntimeError &e : engine.runtimeErrors())
-        result.runtimeErrors
-            << ScenarioTr::tr("runtime error at step %1: %2").arg(e.instruction).arg(e.message);
+    result.runtimeErrors = subject.runtimeErrors();
     return result;
 }
 
 ScenarioResult runScenario(const QString &text, const QString &file,
-                           const ScenarioProgramLoader &loader) {
+                           const ScenarioProgramLoader &loader,
+                           const ScenarioNetworkLoader &networkLoader) {
     std::vector<ScenarioError> errors;
     const Scenario scenario = parseScenario(text, file, &errors);
     ScenarioResult result;
@@ -650,6 +706,28 @@ ScenarioResult runScenario(const QString &text, const QString &file,
     const QString path = QFileInfo(scenario.program).isAbsolute()
                              ? scenario.program
                              : QFileInfo(file).dir().filePath(scenario.program);
+    if (path.endsWith(QLatin1String(".rungnet"), Qt::CaseInsensitive)) {
+        if (!scenario.target.isEmpty() || !scenario.model.isEmpty()) {
+            result.errors.push_back({scenario.programLine,
+                                     ScenarioTr::tr("a network's stations bring their own targets "
+                                                    "and models: --target and --model are for "
+                                                    "one program")});
+            return result;
+        }
+        QStringList errors;
+        std::unique_ptr<ScenarioSubject> network =
+            networkLoader ? networkLoader(QDir::cleanPath(path), &errors) : nullptr;
+        if (!network) {
+            for (const QString &e : errors)
+                result.errors.push_back({scenario.programLine, e});
+            if (result.errors.empty())
+                result.errors.push_back(
+                    {scenario.programLine,
+                     ScenarioTr::tr("%1 is a network: rungstudio-cli test runs it").arg(path)});
+            return result;
+        }
+        return runScenario(scenario, *network);
+    }
     const ScenarioProgram loaded = loader(QDir::cleanPath(path), scenario.target, scenario.model);
     if (!loaded.program) {
         for (const QString &e : loaded.errors)

@@ -3267,7 +3267,7 @@ Kiértékelés: %4 µs (%5..%6)</translation>
 <context>
     <name>rung::app::Test</name>
     <message>
-        <location filename="../app/cli/cli_test.cpp" line="+44"/>
+        <location filename="../app/cli/cli_test.cpp" line="+46"/>
         <source>  rungstudio-cli test FILE|DIR... [--junit OUT.xml]   (scenario tests, .rungtest)</source>
         <translation>  rungstudio-cli test FILE|DIR... [--junit OUT.xml]   (forgatókönyv-tesztek, .rungtest)</translation>
     </message>
@@ -3297,7 +3297,7 @@ Kiértékelés: %4 µs (%5..%6)</translation>
         <translation>%1: nincs ilyen fájl vagy mappa</translation>
     </message>
     <message>
-        <location line="+21"/>
+        <location line="+24"/>
         <source>error</source>
         <translation>hiba</translation>
     </message>
@@ -9229,6 +9229,12 @@ Kiértékelés: %4 µs (%5..%6)</translation>
         <source>%1 runs %2, whose frames the manual does not publish: it is not put on a real line</source>
         <translation>a(z) %1 portján %2 fut, amelynek kereteit a kézikönyv nem közli: nem kerül valódi vonalra</translation>
     </message>
+    <message>
+        <location filename="../network/network_scenario.cpp" line="+37"/>
+        <source>%1: runtime error at step %2: %3</source>
+        <extracomment>%1 the station, %2 the step, %3 what went wrong</extracomment>
+        <translation>%1: futásidejű hiba a(z) %2. lépésnél: %3</translation>
+    </message>
 </context>
 <context>
     <name>rung::network::NetworkCheck</name>
@@ -9458,7 +9464,7 @@ Kiértékelés: %4 µs (%5..%6)</translation>
 <context>
     <name>rung::network::Trace</name>
     <message>
-        <location filename="../network/net_trace.cpp" line="+20"/>
+        <location filename="../network/net_trace.cpp" line="+18"/>
         <source>%1: name a station&apos;s device as STATION/DEVICE, e.g. %2/%3</source>
         <translation>%1: egy állomás operandusát ÁLLOMÁS/OPERANDUS alakban adja meg, pl. %2/%3</translation>
     </message>
@@ -9468,7 +9474,7 @@ Kiértékelés: %4 µs (%5..%6)</translation>
         <translation>%1: nincs „%2” állomás (az állomások: %3)</translation>
     </message>
     <message>
-        <location line="+19"/>
+        <location line="+17"/>
         <source>%1 needs a value</source>
         <translation>%1 után érték kell</translation>
     </message>
@@ -9965,7 +9971,7 @@ Kiértékelés: %4 µs (%5..%6)</translation>
         <translation>nincs program: a forgatókönyv „program FÁJL” sorral kezdődik</translation>
     </message>
     <message>
-        <location filename="../simulator/scenario_run.cpp" line="+97"/>
+        <location filename="../simulator/scenario_run.cpp" line="+101"/>
         <source>&quot;%1&quot; is not understood here</source>
         <translation>„%1” itt nem értelmezhető</translation>
     </message>
@@ -10010,12 +10016,12 @@ Kiértékelés: %4 µs (%5..%6)</translation>
         <translation>operandus vagy érték várható itt: „%1”</translation>
     </message>
     <message>
-        <location line="+44"/>
+        <location line="+52"/>
         <source>%1 is no device of %2: %3</source>
         <translation>%1 nem operandusa a(z) %2 PLC-nek: %3</translation>
     </message>
     <message>
-        <location line="+11"/>
+        <location line="+13"/>
         <source>%1: cv: and sv: name a timer&apos;s or a counter&apos;s current and set value</source>
         <translation>%1: a cv: és az sv: egy időzítő vagy számláló aktuális és beállított értékét jelöli</translation>
     </message>
@@ -10035,12 +10041,17 @@ Kiértékelés: %4 µs (%5..%6)</translation>
         <translation>%1 önmagában nem feltétel</translation>
     </message>
     <message>
-        <location line="+62"/>
+        <location line="+51"/>
+        <source>%1: STATION/DEVICE names a device of a network&apos;s station; this scenario&apos;s program is one PLC</source>
+        <translation>%1: az ÁLLOMÁS/OPERANDUS egy hálózat állomásának operandusát nevezi meg; ennek a forgatókönyvnek a programja egyetlen PLC</translation>
+    </message>
+    <message>
+        <location line="+56"/>
         <source>at %1 comes before line %2&apos;s %3: statements stand in the order of their times</source>
         <translation>az at %1 korábbi, mint a(z) %2. sor %3 ideje: az utasítások időrendben követik egymást</translation>
     </message>
     <message>
-        <location line="+130"/>
+        <location line="+129"/>
         <source>%1: the run was already at %2 (the statement before waited until then), so at %3 could not be checked</source>
         <translation>%1: a futás már %2-nál tartott (az előző utasítás addig várt), ezért az at %3 nem volt ellenőrizhető</translation>
     </message>
@@ -10051,7 +10062,7 @@ Kiértékelés: %4 µs (%5..%6)</translation>
         <translation>%1-kor: elvárt %2, tapasztalt %3</translation>
     </message>
     <message>
-        <location line="+25"/>
+        <location line="+24"/>
         <source>within %1 of %2 (until %3): expected %4, seen %5</source>
         <extracomment>%1 the time allowed (&quot;2s&quot;), %2 the time it counted from, %3 until when, %4 what was expected, %5 the values seen at the end.</extracomment>
         <translation>%2 után %1-on belül (%3-ig): elvárt %4, tapasztalt %5</translation>
@@ -10063,12 +10074,22 @@ Kiértékelés: %4 µs (%5..%6)</translation>
         <translation>%1-kor: mindig elvárt %2, tapasztalt %3 (%5 ciklusból %4-ban nem teljesült)</translation>
     </message>
     <message>
-        <location line="+13"/>
+        <location line="-228"/>
         <source>runtime error at step %1: %2</source>
         <translation>futásidejű hiba a(z) %1. lépésnél: %2</translation>
     </message>
     <message>
-        <location line="+23"/>
+        <location line="+260"/>
+        <source>a network&apos;s stations bring their own targets and models: --target and --model are for one program</source>
+        <translation>a hálózat állomásai saját céleszközt és modellt hoznak: a --target és a --model egyetlen programhoz való</translation>
+    </message>
+    <message>
+        <location line="+14"/>
+        <source>%1 is a network: rungstudio-cli test runs it</source>
+        <translation>%1 egy hálózat: a rungstudio-cli test futtatja</translation>
+    </message>
+    <message>
+        <location line="+11"/>
         <source>the program does not start</source>
         <translation>a program nem indul el</translation>
     </message>

@@ -3277,7 +3277,7 @@ Valutazione: %4 µs (%5..%6)</translation>
 <context>
     <name>rung::app::Test</name>
     <message>
-        <location filename="../app/cli/cli_test.cpp" line="+44"/>
+        <location filename="../app/cli/cli_test.cpp" line="+46"/>
         <source>  rungstudio-cli test FILE|DIR... [--junit OUT.xml]   (scenario tests, .rungtest)</source>
         <translation>  rungstudio-cli test FILE|DIR... [--junit OUT.xml]   (test di scenario, .rungtest)</translation>
     </message>
@@ -3307,7 +3307,7 @@ Valutazione: %4 µs (%5..%6)</translation>
         <translation>%1: file o cartella inesistente</translation>
     </message>
     <message>
-        <location line="+21"/>
+        <location line="+24"/>
         <source>error</source>
         <translation>errore</translation>
     </message>
@@ -9250,6 +9250,12 @@ Valutazione: %4 µs (%5..%6)</translation>
         <source>%1 runs %2, whose frames the manual does not publish: it is not put on a real line</source>
         <translation>%1 esegue %2, i cui frame il manuale non pubblica: non viene messa su una linea reale</translation>
     </message>
+    <message>
+        <location filename="../network/network_scenario.cpp" line="+37"/>
+        <source>%1: runtime error at step %2: %3</source>
+        <extracomment>%1 the station, %2 the step, %3 what went wrong</extracomment>
+        <translation>%1: errore di esecuzione al passo %2: %3</translation>
+    </message>
 </context>
 <context>
     <name>rung::network::NetworkCheck</name>
@@ -9479,7 +9485,7 @@ Valutazione: %4 µs (%5..%6)</translation>
 <context>
     <name>rung::network::Trace</name>
     <message>
-        <location filename="../network/net_trace.cpp" line="+20"/>
+        <location filename="../network/net_trace.cpp" line="+18"/>
         <source>%1: name a station&apos;s device as STATION/DEVICE, e.g. %2/%3</source>
         <translation>%1: indicare un operando di una stazione come STAZIONE/OPERANDO, ad es. %2/%3</translation>
     </message>
@@ -9489,7 +9495,7 @@ Valutazione: %4 µs (%5..%6)</translation>
         <translation>%1: nessuna stazione &quot;%2&quot; (le stazioni: %3)</translation>
     </message>
     <message>
-        <location line="+19"/>
+        <location line="+17"/>
         <source>%1 needs a value</source>
         <translation>%1 richiede un valore</translation>
     </message>
@@ -9986,7 +9992,7 @@ Valutazione: %4 µs (%5..%6)</translation>
         <translation>nessun programma: uno scenario inizia con &quot;program FILE&quot;</translation>
     </message>
     <message>
-        <location filename="../simulator/scenario_run.cpp" line="+97"/>
+        <location filename="../simulator/scenario_run.cpp" line="+101"/>
         <source>&quot;%1&quot; is not understood here</source>
         <translation>&quot;%1&quot; non è comprensibile qui</translation>
     </message>
@@ -10031,12 +10037,12 @@ Valutazione: %4 µs (%5..%6)</translation>
         <translation>è atteso un operando o un valore in &quot;%1&quot;</translation>
     </message>
     <message>
-        <location line="+44"/>
+        <location line="+52"/>
         <source>%1 is no device of %2: %3</source>
         <translation>%1 non è un operando di %2: %3</translation>
     </message>
     <message>
-        <location line="+11"/>
+        <location line="+13"/>
         <source>%1: cv: and sv: name a timer&apos;s or a counter&apos;s current and set value</source>
         <translation>%1: cv: e sv: indicano il valore corrente e di preset di un temporizzatore o contatore</translation>
     </message>
@@ -10056,12 +10062,17 @@ Valutazione: %4 µs (%5..%6)</translation>
         <translation>%1 da solo non è una condizione</translation>
     </message>
     <message>
-        <location line="+62"/>
+        <location line="+51"/>
+        <source>%1: STATION/DEVICE names a device of a network&apos;s station; this scenario&apos;s program is one PLC</source>
+        <translation>%1: STAZIONE/OPERANDO indica un operando di una stazione di una rete; il programma di questo scenario è un solo PLC</translation>
+    </message>
+    <message>
+        <location line="+56"/>
         <source>at %1 comes before line %2&apos;s %3: statements stand in the order of their times</source>
         <translation>at %1 viene prima di %3 della riga %2: le istruzioni seguono l&apos;ordine dei loro tempi</translation>
     </message>
     <message>
-        <location line="+130"/>
+        <location line="+129"/>
         <source>%1: the run was already at %2 (the statement before waited until then), so at %3 could not be checked</source>
         <translation>%1: l&apos;esecuzione era già a %2 (l&apos;istruzione precedente ha atteso fin lì), quindi at %3 non si è potuto verificare</translation>
     </message>
@@ -10072,7 +10083,7 @@ Valutazione: %4 µs (%5..%6)</translation>
         <translation>a %1: atteso %2, visto %3</translation>
     </message>
     <message>
-        <location line="+25"/>
+        <location line="+24"/>
         <source>within %1 of %2 (until %3): expected %4, seen %5</source>
         <extracomment>%1 the time allowed (&quot;2s&quot;), %2 the time it counted from, %3 until when, %4 what was expected, %5 the values seen at the end.</extracomment>
         <translation>entro %1 da %2 (fino a %3): atteso %4, visto %5</translation>
@@ -10084,12 +10095,22 @@ Valutazione: %4 µs (%5..%6)</translation>
         <translation>a %1: atteso sempre %2, visto %3 (non soddisfatto in %4 di %5 scansioni)</translation>
     </message>
     <message>
-        <location line="+13"/>
+        <location line="-228"/>
         <source>runtime error at step %1: %2</source>
         <translation>errore di esecuzione al passo %1: %2</translation>
     </message>
     <message>
-        <location line="+23"/>
+        <location line="+260"/>
+        <source>a network&apos;s stations bring their own targets and models: --target and --model are for one program</source>
+        <translation>le stazioni di una rete portano i propri target e modelli: --target e --model valgono per un solo programma</translation>
+    </message>
+    <message>
+        <location line="+14"/>
+        <source>%1 is a network: rungstudio-cli test runs it</source>
+        <translation>%1 è una rete: la esegue rungstudio-cli test</translation>
+    </message>
+    <message>
+        <location line="+11"/>
         <source>the program does not start</source>
         <translation>il programma non si avvia</translation>
     </message>

@@ -3,7 +3,9 @@
 
 #include "cli_common.h"
 #include "cli_load_program.h"
+#include "cli_network.h"
 
+#include "network/network_scenario.h"
 #include "simulator/scenario.h"
 
 #include <QCoreApplication>
@@ -99,8 +101,11 @@ int runTestCommand(const QStringList &args, QTextStream &out, QTextStream &err) 
             err << error << '\n';
             return 2;
         }
-        simulator::ScenarioResult r =
-            simulator::runScenario(QString::fromUtf8(bytes), file, loadScenarioProgram);
+        simulator::ScenarioResult r = simulator::runScenario(
+            QString::fromUtf8(bytes), file, loadScenarioProgram,
+            [](const QString &path, QStringList *errors) {
+                return network::networkScenarioSubject(path, cliProgramLoader(), errors);
+            });
         for (const simulator::ScenarioError &e : r.errors)
             out << QStringLiteral("%1:%2: %3: %4")
                        .arg(file)
