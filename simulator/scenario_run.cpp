@@ -578,7 +578,8 @@ ScenarioResult runScenario(const Scenario &s, ScenarioSubject &subject) {
         f.message = message;
         result.failures.push_back(f);
     };
-    qint64 previous = 0; // the previous statement's time (within counts from it)
+    qint64 previous = 0;                 // the previous statement's time (within counts from it)
+    std::optional<quint64> expectedScan; // the scan of the last `at T expect`
     for (const PreparedStatement &st : steps) {
         using K = ScenarioStatement::Kind;
         const ScenarioStatement &statement = *st.statement;
@@ -587,6 +588,19 @@ ScenarioResult runScenario(const Scenario &s, ScenarioSubject &subject) {
         case K::Force:
         case K::Release: {
             const qint64 t = statement.time.resolve(period);
+            // A `within` before it may have run past t: applied late it would change what the
+            // rest of the run shows without a word, so the scenario fails here, saying so.
+            // (`at T expect` then `at T set` is the one scan the expectation needed, as
+            // written: the set follows it.)
+            const bool afterExpectSameScan =
+                expectedScan && *expectedScan == scanOf(t) && done == scanOf(t) + 1;
+            if (done > scanOf(t) && !afterExpectSameScan)
+                fail(st, t,
+                     ScenarioTr::tr("%1: the run was already at %2 (the statement before waited "
+                                    "until then), so it applied then, not at %3")
+                         .arg(statement.source,
+                              formatScenarioTime(static_cast<qint64>(done) * period),
+                              statement.time.text));
             runTo(scanOf(t));
             for (const Assignment &a : st.assignments) {
                 Engine &engine = *a.device.engine;
@@ -625,6 +639,7 @@ ScenarioResult runScenario(const Scenario &s, ScenarioSubject &subject) {
                 break;
             }
             runTo(k + 1);
+            expectedScan = k;
             if (!st.condition.holds())
                 fail(st, t,
                      //: A failed expectation: %1 the time, %2 what was expected, %3 the devices'

@@ -10051,12 +10051,17 @@ Kiértékelés: %4 µs (%5..%6)</translation>
         <translation>az at %1 korábbi, mint a(z) %2. sor %3 ideje: az utasítások időrendben követik egymást</translation>
     </message>
     <message>
-        <location line="+129"/>
+        <location line="+110"/>
+        <source>%1: the run was already at %2 (the statement before waited until then), so it applied then, not at %3</source>
+        <translation>%1: a futás már %2-nál tartott (az előző utasítás addig várt), ezért akkor hajtódott végre, nem %3-kor</translation>
+    </message>
+    <message>
+        <location line="+33"/>
         <source>%1: the run was already at %2 (the statement before waited until then), so at %3 could not be checked</source>
         <translation>%1: a futás már %2-nál tartott (az előző utasítás addig várt), ezért az at %3 nem volt ellenőrizhető</translation>
     </message>
     <message>
-        <location line="+14"/>
+        <location line="+15"/>
         <source>at %1: expected %2, seen %3</source>
         <extracomment>A failed expectation: %1 the time, %2 what was expected, %3 the devices&apos; values then (&quot;Y0=1 Y1=0&quot;).</extracomment>
         <translation>%1-kor: elvárt %2, tapasztalt %3</translation>
@@ -10074,12 +10079,12 @@ Kiértékelés: %4 µs (%5..%6)</translation>
         <translation>%1-kor: mindig elvárt %2, tapasztalt %3 (%5 ciklusból %4-ban nem teljesült)</translation>
     </message>
     <message>
-        <location line="-228"/>
+        <location line="-243"/>
         <source>runtime error at step %1: %2</source>
         <translation>futásidejű hiba a(z) %1. lépésnél: %2</translation>
     </message>
     <message>
-        <location line="+260"/>
+        <location line="+275"/>
         <source>a network&apos;s stations bring their own targets and models: --target and --model are for one program</source>
         <translation>a hálózat állomásai saját céleszközt és modellt hoznak: a --target és a --model egyetlen programhoz való</translation>
     </message>

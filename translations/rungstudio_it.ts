@@ -10072,12 +10072,17 @@ Valutazione: %4 µs (%5..%6)</translation>
         <translation>at %1 viene prima di %3 della riga %2: le istruzioni seguono l&apos;ordine dei loro tempi</translation>
     </message>
     <message>
-        <location line="+129"/>
+        <location line="+110"/>
+        <source>%1: the run was already at %2 (the statement before waited until then), so it applied then, not at %3</source>
+        <translation>%1: l&apos;esecuzione era già a %2 (l&apos;istruzione precedente ha atteso fin lì), quindi è stata applicata allora, non a %3</translation>
+    </message>
+    <message>
+        <location line="+33"/>
         <source>%1: the run was already at %2 (the statement before waited until then), so at %3 could not be checked</source>
         <translation>%1: l&apos;esecuzione era già a %2 (l&apos;istruzione precedente ha atteso fin lì), quindi at %3 non si è potuto verificare</translation>
     </message>
     <message>
-        <location line="+14"/>
+        <location line="+15"/>
         <source>at %1: expected %2, seen %3</source>
         <extracomment>A failed expectation: %1 the time, %2 what was expected, %3 the devices&apos; values then (&quot;Y0=1 Y1=0&quot;).</extracomment>
         <translation>a %1: atteso %2, visto %3</translation>
@@ -10095,12 +10100,12 @@ Valutazione: %4 µs (%5..%6)</translation>
         <translation>a %1: atteso sempre %2, visto %3 (non soddisfatto in %4 di %5 scansioni)</translation>
     </message>
     <message>
-        <location line="-228"/>
+        <location line="-243"/>
         <source>runtime error at step %1: %2</source>
         <translation>errore di esecuzione al passo %1: %2</translation>
     </message>
     <message>
-        <location line="+260"/>
+        <location line="+275"/>
         <source>a network&apos;s stations bring their own targets and models: --target and --model are for one program</source>
         <translation>le stazioni di una rete portano i propri target e modelli: --target e --model valgono per un solo programma</translation>
     </message>

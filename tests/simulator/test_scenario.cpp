@@ -72,6 +72,29 @@ TEST(Scenario, TheIssuesStatementsPass) {
     EXPECT_EQ(r.scans, 301u);
 }
 
+// A `within` that waited past the next `at` would apply it late without a word: the scenario
+// fails there, saying when the run was. An `at T expect` before an `at T set` is as written.
+TEST(Scenario, AStatementTheRunHasPassedIsAFailureNotALateChange) {
+    const ScenarioResult late =
+        run(QStringLiteral("program ../latch.il\n"
+                           "at 0s set X0=1\n"
+                           "within 3s expect Y1=1\n" // met in the scan at 2 s
+                           "at 1s set X1=1\n"));
+    ASSERT_EQ(late.failures.size(), 1u) << why(late);
+    EXPECT_EQ(late.failures[0].line, 4);
+    EXPECT_EQ(late.failures[0].message.toStdString(),
+              QStringLiteral("at 1s set X1=1: the run was already at 2.01s (the statement before "
+                             "waited until then), so it applied then, not at 1s")
+                  .toStdString());
+    const ScenarioResult asWritten = run(QStringLiteral("program ../latch.il\n"
+                                                        "at 0s set X0=1\n"
+                                                        "at 1s expect Y0=1\n"
+                                                        "at 1s set X1=1\n"
+                                                        "at 1s expect Y0=1\n"
+                                                        "at 1.02s expect Y0=0\n"));
+    EXPECT_TRUE(asWritten.passed()) << why(asWritten);
+}
+
 TEST(Scenario, TheProgramIsFoundBesideTheScenario) {
     ListingLoader loader{&rung::testing::vigor(), kLatch, {}};
     runScenario(QStringLiteral("program ../latch.il\nat 0s expect Y0=0\n"),
