@@ -16,10 +16,6 @@ namespace {
 using K = DriverError::Kind;
 using model::DevicePart;
 
-bool isWordArea(const model::Area &area) {
-    return area.kind == model::AreaKind::Word || area.kind == model::AreaKind::Channel;
-}
-
 bool isCounterOrTimer(const model::Area &area) {
     return area.kind == model::AreaKind::Timer || area.kind == model::AreaKind::Counter;
 }
@@ -116,7 +112,7 @@ std::vector<Driver::Placement> Driver::placementsOf(const model::Address &addres
     };
     if (address.bit >= 0 || area.kind == model::AreaKind::Bit) {
         bitOf(address);
-    } else if (isWordArea(area)) {
+    } else if (area.holdsWords()) {
         valueOf(address, m_layout->word(address));
     } else if (isCounterOrTimer(area)) {
         bitOf(address);

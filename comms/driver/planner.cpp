@@ -10,10 +10,6 @@ namespace rung::comms {
 
 namespace {
 
-bool isWordArea(const model::Area &area) {
-    return area.kind == model::AreaKind::Word || area.kind == model::AreaKind::Channel;
-}
-
 int areaIndex(const model::Target &target, const char *key) {
     const QString k = QString::fromLatin1(key);
     for (std::size_t i = 0; i < target.areas.size(); ++i)
@@ -56,7 +52,7 @@ std::vector<UnitSpan> mappedSegments(const model::Target &target, const model::P
             s.start = r.start + (first - r.origin) * units;
             s.count = (last - first + 1) * units;
         } else {
-            const int per = isWordArea(area) ? area.wordBits : 1;
+            const int per = area.holdsWords() ? area.wordBits : 1;
             const int from = (first - r.origin) * per;
             const int to = (last - r.origin + 1) * per; // one past the last bit
             s.start = r.start + from / width;

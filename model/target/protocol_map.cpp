@@ -14,10 +14,6 @@ int areaIndex(const Target &target, const char *key) {
     return -1;
 }
 
-bool isWordArea(const Area &area) {
-    return area.kind == AreaKind::Word || area.kind == AreaKind::Channel;
-}
-
 int unitsOf(const Area &area, ProtocolSpace space) {
     return std::max(1, area.wordBits / unitBits(space));
 }
@@ -69,7 +65,7 @@ std::optional<ProtocolAddress> toProtocol(const Target &target, const ProtocolMa
             return ProtocolAddress{r.space, r.start + element * unitsOf(area, r.space), -1,
                                    unitsOf(area, r.space)};
         int position = element;
-        if (isWordArea(area)) {
+        if (area.holdsWords()) {
             if (address.bit < 0 || address.bit >= area.wordBits)
                 return std::nullopt;
             position = element * area.wordBits + address.bit;
@@ -101,7 +97,7 @@ std::optional<MappedDevice> fromProtocol(const Target &target, const ProtocolMap
             d.unitOffset = (unit - r.start) % units;
         } else {
             const int position = (unit - r.start) * width + (width == 1 ? 0 : bit);
-            if (isWordArea(area)) {
+            if (area.holdsWords()) {
                 d.index = r.origin + position / area.wordBits;
                 d.bit = position % area.wordBits;
             } else {

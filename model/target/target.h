@@ -55,6 +55,9 @@ struct Area {
     bool physical = false; // mapped to terminals: inputs are refreshed from the I/O image
     int bank = -1;         // areas with the same bank share element numbers (VPC t/c, CPM1 TIM/CNT)
     int wordBits = 16;     // value width for Word/Timer/Counter/Channel areas (Vigor C200+: 32)
+    // A data word or a channel: addressed and transferred by whole words (a word of a timer
+    // or counter area is its value, which the protocols move apart).
+    bool holdsWords() const { return kind == AreaKind::Word || kind == AreaKind::Channel; }
     const char *description = nullptr; // QT_TRANSLATE_NOOP("rung::model::Target", ...)
     // Only instructions of this function may write the area (PL110 B: its bistable coil OUTB,
     // PL110 manual 4.2.3); None: any instruction that writes.
