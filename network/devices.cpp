@@ -36,16 +36,6 @@ bool readLine(const QJsonObject &o, const QString &where, const char *defaultFra
     return true;
 }
 
-bool onlyKeys(const QJsonObject &o, const QStringList &keys, const QString &where, QString *error) {
-    for (auto it = o.begin(); it != o.end(); ++it)
-        if (!keys.contains(it.key())) {
-            *error = DevicesTr::tr("%1.%2: unknown key (this device takes: %3)")
-                         .arg(where, it.key(), keys.join(QStringLiteral(", ")));
-            return false;
-        }
-    return true;
-}
-
 } // namespace
 
 bool hexBytes(const QString &text, QByteArray *bytes) {
@@ -100,13 +90,13 @@ std::unique_ptr<Endpoint> makeDevice(Network *network, const DeviceDescription &
 
 bool ModbusSlaveDevice::read(const DeviceDescription &d, QString *error) {
     const QJsonObject &o = d.json;
-    if (!onlyKeys(o,
-                  {QStringLiteral("name"), QStringLiteral("kind"), QStringLiteral("station"),
-                   QStringLiteral("baud"), QStringLiteral("frame"), QStringLiteral("mode"),
-                   QStringLiteral("delay"), QStringLiteral("registers"),
-                   QStringLiteral("inputRegisters"), QStringLiteral("coils"),
-                   QStringLiteral("inputs"), QStringLiteral("comment")},
-                  d.where, error) ||
+    if (!onlyJsonKeys(o,
+                      {QStringLiteral("name"), QStringLiteral("kind"), QStringLiteral("station"),
+                       QStringLiteral("baud"), QStringLiteral("frame"), QStringLiteral("mode"),
+                       QStringLiteral("delay"), QStringLiteral("registers"),
+                       QStringLiteral("inputRegisters"), QStringLiteral("coils"),
+                       QStringLiteral("inputs"), QStringLiteral("comment")},
+                      d.where, error) ||
         !readLine(o, d.where, "8N1", &m_line, error))
         return false;
     m_delayUs = qint64(o.value(QLatin1String("delay")).toDouble(2) * 1000);
@@ -254,11 +244,11 @@ void ModbusSlaveDevice::run(qint64 nowUs) {
 
 bool LineDevice::read(const DeviceDescription &d, QString *error) {
     const QJsonObject &o = d.json;
-    if (!onlyKeys(o,
-                  {QStringLiteral("name"), QStringLiteral("kind"), QStringLiteral("baud"),
-                   QStringLiteral("frame"), QStringLiteral("delay"), QStringLiteral("answers"),
-                   QStringLiteral("comment")},
-                  d.where, error) ||
+    if (!onlyJsonKeys(o,
+                      {QStringLiteral("name"), QStringLiteral("kind"), QStringLiteral("baud"),
+                       QStringLiteral("frame"), QStringLiteral("delay"), QStringLiteral("answers"),
+                       QStringLiteral("comment")},
+                      d.where, error) ||
         !readLine(o, d.where, "8N1", &m_line, error))
         return false;
     m_delayUs = qint64(o.value(QLatin1String("delay")).toDouble(2) * 1000);

@@ -31,16 +31,6 @@ bool validName(const QString &name) {
     return re.match(name).hasMatch();
 }
 
-bool onlyKeys(const QJsonObject &o, const QStringList &keys, const QString &path, QString *error) {
-    for (auto it = o.begin(); it != o.end(); ++it)
-        if (!keys.contains(it.key())) {
-            *error = NetworkFileTr::tr("%1: unknown key (this object takes: %2)")
-                         .arg(at(path, it.key()), keys.join(QStringLiteral(", ")));
-            return false;
-        }
-    return true;
-}
-
 bool string(const QJsonObject &o, const char *key, const QString &path, bool required,
             QString *into, QString *error) {
     const QJsonValue v = o.value(QLatin1String(key));
@@ -87,6 +77,17 @@ bool array(const QJsonObject &o, const char *key, QJsonArray *into, QString *err
 
 } // namespace
 
+bool onlyJsonKeys(const QJsonObject &o, const QStringList &keys, const QString &path,
+                  QString *error) {
+    for (auto it = o.begin(); it != o.end(); ++it)
+        if (!keys.contains(it.key())) {
+            *error = NetworkFileTr::tr("%1: unknown key (this object takes: %2)")
+                         .arg(at(path, it.key()), keys.join(QStringLiteral(", ")));
+            return false;
+        }
+    return true;
+}
+
 bool readNetworkFile(const QString &file, NetworkDescription *description, QString *error) {
     QByteArray bytes;
     QString ioError;
@@ -129,11 +130,12 @@ bool parseNetwork(const QByteArray &json, const QString &file, NetworkDescriptio
         return false;
     };
     QString why;
-    if (!onlyKeys(root,
-                  {QStringLiteral("format"), QStringLiteral("period"), QStringLiteral("stations"),
-                   QStringLiteral("devices"), QStringLiteral("wires"), QStringLiteral("bridges"),
-                   QStringLiteral("faults"), QStringLiteral("comment")},
-                  QString(), &why) ||
+    if (!onlyJsonKeys(root,
+                      {QStringLiteral("format"), QStringLiteral("period"),
+                       QStringLiteral("stations"), QStringLiteral("devices"),
+                       QStringLiteral("wires"), QStringLiteral("bridges"), QStringLiteral("faults"),
+                       QStringLiteral("comment")},
+                      QString(), &why) ||
         !number(root, "period", QString(), 1, 1000000, &d->periodMs, &why))
         return fail(why);
     const QDir dir = QFileInfo(file).absoluteDir();
@@ -150,11 +152,12 @@ bool parseNetwork(const QByteArray &json, const QString &file, NetworkDescriptio
         const QJsonObject o = list[i].toObject();
         StationDescription s;
         s.where = where;
-        if (!onlyKeys(o,
-                      {QStringLiteral("name"), QStringLiteral("program"), QStringLiteral("target"),
-                       QStringLiteral("model"), QStringLiteral("period"), QStringLiteral("ports"),
-                       QStringLiteral("comment")},
-                      where, &why) ||
+        if (!onlyJsonKeys(o,
+                          {QStringLiteral("name"), QStringLiteral("program"),
+                           QStringLiteral("target"), QStringLiteral("model"),
+                           QStringLiteral("period"), QStringLiteral("ports"),
+                           QStringLiteral("comment")},
+                          where, &why) ||
             !string(o, "name", where, true, &s.name, &why) ||
             !string(o, "program", where, true, &s.program, &why) ||
             !string(o, "target", where, false, &s.target, &why) ||
@@ -221,7 +224,7 @@ bool parseNetwork(const QByteArray &json, const QString &file, NetworkDescriptio
             ends = list[i].toArray();
         } else if (list[i].isObject()) {
             const QJsonObject o = list[i].toObject();
-            if (!onlyKeys(o, {QStringLiteral("name"), QStringLiteral("ends")}, where, &why) ||
+            if (!onlyJsonKeys(o, {QStringLiteral("name"), QStringLiteral("ends")}, where, &why) ||
                 !string(o, "name", where, false, &w.name, &why) || !array(o, "ends", &ends, &why))
                 return fail(why);
         } else {
@@ -251,10 +254,10 @@ bool parseNetwork(const QByteArray &json, const QString &file, NetworkDescriptio
         const QJsonObject o = list[i].toObject();
         BridgeDescription b;
         b.path = where;
-        if (!onlyKeys(o,
-                      {QStringLiteral("port"), QStringLiteral("pty"), QStringLiteral("serial"),
-                       QStringLiteral("tcp"), QStringLiteral("listen")},
-                      where, &why) ||
+        if (!onlyJsonKeys(o,
+                          {QStringLiteral("port"), QStringLiteral("pty"), QStringLiteral("serial"),
+                           QStringLiteral("tcp"), QStringLiteral("listen")},
+                          where, &why) ||
             !string(o, "port", where, true, &b.end, &why))
             return fail(why);
         const int kinds =
@@ -300,10 +303,10 @@ bool parseNetwork(const QByteArray &json, const QString &file, NetworkDescriptio
             f.kind = kind == QLatin1String("cut") ? FaultDescription::Kind::Cut
                                                   : FaultDescription::Kind::Silent;
             const char *what = f.kind == FaultDescription::Kind::Cut ? "wire" : "station";
-            if (!onlyKeys(o,
-                          {QStringLiteral("kind"), QLatin1String(what), QStringLiteral("from"),
-                           QStringLiteral("to")},
-                          where, &why) ||
+            if (!onlyJsonKeys(o,
+                              {QStringLiteral("kind"), QLatin1String(what), QStringLiteral("from"),
+                               QStringLiteral("to")},
+                              where, &why) ||
                 !string(o, what, where, true,
                         f.kind == FaultDescription::Kind::Cut ? &f.wire : &f.station, &why) ||
                 !number(o, "from", where, 0, qint64(1) << 40, &f.fromMs, &why) ||
@@ -313,10 +316,11 @@ bool parseNetwork(const QByteArray &json, const QString &file, NetworkDescriptio
                 return fail(NetworkFileTr::tr("%1: \"to\" comes before \"from\"").arg(where));
         } else if (kind == QLatin1String("corrupt")) {
             f.kind = FaultDescription::Kind::Corrupt;
-            if (!onlyKeys(o,
-                          {QStringLiteral("kind"), QStringLiteral("wire"), QStringLiteral("frame"),
-                           QStringLiteral("byte"), QStringLiteral("xor")},
-                          where, &why) ||
+            if (!onlyJsonKeys(o,
+                              {QStringLiteral("kind"), QStringLiteral("wire"),
+                               QStringLiteral("frame"), QStringLiteral("byte"),
+                               QStringLiteral("xor")},
+                              where, &why) ||
                 !string(o, "wire", where, true, &f.wire, &why) ||
                 !number(o, "frame", where, 0, 1 << 30, &frame, &why) ||
                 !number(o, "byte", where, 0, 1 << 20, &byte, &why) ||

@@ -76,4 +76,9 @@ bool readNetworkFile(const QString &file, NetworkDescription *description, QStri
 bool parseNetwork(const QByteArray &json, const QString &file, NetworkDescription *description,
                   QString *error);
 
+// False with "PATH.KEY: unknown key (this object takes: ...)" for a key not in `keys`: a
+// misspelt key is said, never ignored.
+bool onlyJsonKeys(const QJsonObject &o, const QStringList &keys, const QString &path,
+                  QString *error);
+
 } // namespace rung::network

@@ -3516,6 +3516,11 @@ Kiértékelés: %4 µs (%5..%6)</translation>
         <source>Recording the PLC&apos;s inputs and outputs: Stop Recording... writes the scenario</source>
         <translation>A PLC bemeneteinek és kimeneteinek rögzítése: a Rögzítés leállítása... megírja a forgatókönyvet</translation>
     </message>
+    <message>
+        <location line="+107"/>
+        <source>%1 is written. What it does not hold:</source>
+        <translation>A(z) %1 elkészült. Amit nem tartalmaz:</translation>
+    </message>
 </context>
 <context>
     <name>rung::app::VirtualPlc</name>
@@ -3539,7 +3544,7 @@ Kiértékelés: %4 µs (%5..%6)</translation>
 <context>
     <name>rung::comms::Driver</name>
     <message>
-        <location filename="../comms/driver/driver.cpp" line="+46"/>
+        <location filename="../comms/driver/driver.cpp" line="+42"/>
         <source>station 0 is the Modbus broadcast address: no PLC answers it, so nothing could be read and no write acknowledged; give the PLC&apos;s own station (1..247, or 255 for any PL110)</source>
         <translation>a 0-s állomás a Modbus körüzenet-címe: egyetlen PLC sem válaszol rá, így semmit sem lehetne olvasni, és egyetlen írást sem nyugtázna senki; adja meg a PLC saját állomáscímét (1..247, vagy bármely PL110-hez 255)</translation>
     </message>
@@ -9112,12 +9117,7 @@ Kiértékelés: %4 µs (%5..%6)</translation>
         <translation>%1.delay: 0 és 60000 közötti milliszekundum kell</translation>
     </message>
     <message>
-        <location line="+9"/>
-        <source>%1.%2: unknown key (this device takes: %3)</source>
-        <translation>%1.%2: ismeretlen kulcs (ez az eszköz ezeket fogadja: %3)</translation>
-    </message>
-    <message>
-        <location line="+73"/>
+        <location line="+72"/>
         <source>%1.station: needs a MODBUS station from 1 to 247</source>
         <translation>%1.station: 1 és 247 közötti MODBUS-állomás kell</translation>
     </message>
@@ -9313,12 +9313,12 @@ Kiértékelés: %4 µs (%5..%6)</translation>
 <context>
     <name>rung::network::NetworkFile</name>
     <message>
-        <location filename="../network/network_file.cpp" line="+37"/>
+        <location filename="../network/network_file.cpp" line="+84"/>
         <source>%1: unknown key (this object takes: %2)</source>
         <translation>%1: ismeretlen kulcs (ez az objektum ezeket fogadja: %2)</translation>
     </message>
     <message>
-        <location line="+14"/>
+        <location line="-43"/>
         <source>%1: missing</source>
         <translation>%1: hiányzik</translation>
     </message>
@@ -9338,7 +9338,7 @@ Kiértékelés: %4 µs (%5..%6)</translation>
         <translation>%1: lista kell</translation>
     </message>
     <message>
-        <location line="+31"/>
+        <location line="+42"/>
         <source>%1: line %2, column %3: the file is not valid JSON (%4)</source>
         <translation>%1: %2. sor, %3. oszlop: a fájl nem érvényes JSON (%4)</translation>
     </message>
@@ -9348,13 +9348,13 @@ Kiértékelés: %4 µs (%5..%6)</translation>
         <translation>%1: a hálózatfájl „stations” és „wires” kulcsú JSON-objektum</translation>
     </message>
     <message>
-        <location line="+24"/>
+        <location line="+25"/>
         <source>stations: a network needs at least one station</source>
         <translation>stations: a hálózathoz legalább egy állomás kell</translation>
     </message>
     <message>
         <location line="+4"/>
-        <location line="+41"/>
+        <location line="+42"/>
         <location line="+60"/>
         <location line="+41"/>
         <source>%1: needs an object</source>
@@ -9418,7 +9418,7 @@ Kiértékelés: %4 µs (%5..%6)</translation>
         <translation>%1: a „to” a „from” elé esik</translation>
     </message>
     <message>
-        <location line="+16"/>
+        <location line="+17"/>
         <source>%1: &quot;%2&quot; is no fault (cut, silent, corrupt)</source>
         <translation>%1: a(z) „%2” nem hibafajta (cut, silent, corrupt)</translation>
     </message>

@@ -3528,6 +3528,11 @@ Valutazione: %4 µs (%5..%6)</translation>
         <source>Recording the PLC&apos;s inputs and outputs: Stop Recording... writes the scenario</source>
         <translation>Registrazione degli ingressi e delle uscite del PLC: Ferma registrazione... scrive lo scenario</translation>
     </message>
+    <message>
+        <location line="+107"/>
+        <source>%1 is written. What it does not hold:</source>
+        <translation>%1 è stato scritto. Ciò che non contiene:</translation>
+    </message>
 </context>
 <context>
     <name>rung::app::VirtualPlc</name>
@@ -3551,7 +3556,7 @@ Valutazione: %4 µs (%5..%6)</translation>
 <context>
     <name>rung::comms::Driver</name>
     <message>
-        <location filename="../comms/driver/driver.cpp" line="+46"/>
+        <location filename="../comms/driver/driver.cpp" line="+42"/>
         <source>station 0 is the Modbus broadcast address: no PLC answers it, so nothing could be read and no write acknowledged; give the PLC&apos;s own station (1..247, or 255 for any PL110)</source>
         <translation>la stazione 0 è l&apos;indirizzo broadcast Modbus: nessun PLC risponde, quindi nulla potrebbe essere letto né alcuna scrittura confermata; indicare la stazione del PLC (1..247, o 255 per qualsiasi PL110)</translation>
     </message>
@@ -9133,12 +9138,7 @@ Valutazione: %4 µs (%5..%6)</translation>
         <translation>%1.delay: richiede millisecondi da 0 a 60000</translation>
     </message>
     <message>
-        <location line="+9"/>
-        <source>%1.%2: unknown key (this device takes: %3)</source>
-        <translation>%1.%2: chiave sconosciuta (questo dispositivo accetta: %3)</translation>
-    </message>
-    <message>
-        <location line="+73"/>
+        <location line="+72"/>
         <source>%1.station: needs a MODBUS station from 1 to 247</source>
         <translation>%1.station: richiede una stazione MODBUS da 1 a 247</translation>
     </message>
@@ -9334,12 +9334,12 @@ Valutazione: %4 µs (%5..%6)</translation>
 <context>
     <name>rung::network::NetworkFile</name>
     <message>
-        <location filename="../network/network_file.cpp" line="+37"/>
+        <location filename="../network/network_file.cpp" line="+84"/>
         <source>%1: unknown key (this object takes: %2)</source>
         <translation>%1: chiave sconosciuta (questo oggetto accetta: %2)</translation>
     </message>
     <message>
-        <location line="+14"/>
+        <location line="-43"/>
         <source>%1: missing</source>
         <translation>%1: manca</translation>
     </message>
@@ -9359,7 +9359,7 @@ Valutazione: %4 µs (%5..%6)</translation>
         <translation>%1: richiede una lista</translation>
     </message>
     <message>
-        <location line="+31"/>
+        <location line="+42"/>
         <source>%1: line %2, column %3: the file is not valid JSON (%4)</source>
         <translation>%1: riga %2, colonna %3: il file non è JSON valido (%4)</translation>
     </message>
@@ -9369,13 +9369,13 @@ Valutazione: %4 µs (%5..%6)</translation>
         <translation>%1: un file di rete è un oggetto JSON con &quot;stations&quot; e &quot;wires&quot;</translation>
     </message>
     <message>
-        <location line="+24"/>
+        <location line="+25"/>
         <source>stations: a network needs at least one station</source>
         <translation>stations: una rete richiede almeno una stazione</translation>
     </message>
     <message>
         <location line="+4"/>
-        <location line="+41"/>
+        <location line="+42"/>
         <location line="+60"/>
         <location line="+41"/>
         <source>%1: needs an object</source>
@@ -9439,7 +9439,7 @@ Valutazione: %4 µs (%5..%6)</translation>
         <translation>%1: &quot;to&quot; viene prima di &quot;from&quot;</translation>
     </message>
     <message>
-        <location line="+16"/>
+        <location line="+17"/>
         <source>%1: &quot;%2&quot; is no fault (cut, silent, corrupt)</source>
         <translation>%1: &quot;%2&quot; non è un guasto (cut, silent, corrupt)</translation>
     </message>

@@ -79,6 +79,9 @@ public:
     // online recording while one runs, else of the simulation; empty with *error; *notes says
     // what it holds otherwise than the run.
     QString recordedText(const QString &path, QString *error, QStringList *notes) const;
+    // What the message box says after writing a recording: the file, then what the scenario
+    // does not hold, a sentence each.
+    static QString recordingNotes(const QString &path, const QStringList &notes);
 
 signals:
     void runFinished();

@@ -202,9 +202,20 @@ void TestsPanel::record() {
     }
     if (!notes.isEmpty())
         messageBox(QMessageBox::Information, this, tr("Record a Scenario"),
-                   notes.join(QLatin1Char('\n')));
+                   recordingNotes(path, notes));
     refresh();
     emit message(tr("Recorded %1").arg(QDir::toNativeSeparators(path)));
+}
+
+QString TestsPanel::recordingNotes(const QString &path, const QStringList &notes) {
+    QStringList lines{tr("%1 is written. What it does not hold:").arg(QFileInfo(path).fileName())};
+    for (QString note : notes) {
+        // The notes are also the scenario's comments, which begin in lower case.
+        if (!note.isEmpty())
+            note[0] = note[0].toUpper();
+        lines << QStringLiteral("\u2022 ") + note;
+    }
+    return lines.join(QLatin1Char('\n'));
 }
 
 } // namespace rung::app

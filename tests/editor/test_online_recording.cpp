@@ -128,3 +128,14 @@ TEST(TestsPanelAlone, RecordsWhatAnOnlinePlcDidAsAScenarioThatPasses) {
     ASSERT_EQ(panel.results().size(), 1u);
     EXPECT_TRUE(panel.results()[0].passed());
 }
+
+// The notes of a recording, shown when it is written: the file, then each note a sentence.
+TEST(TestsPanelAlone, ARecordingsNotesReadAsSentencesUnderTheFile) {
+    EXPECT_EQ(app::TestsPanel::recordingNotes(
+                  QStringLiteral("/plant/tests/online.rungtest"),
+                  {QStringLiteral("a change between two refreshes is not seen"),
+                   QStringLiteral("the scenario runs at 10 ms scans")}),
+              QStringLiteral("online.rungtest is written. What it does not hold:\n"
+                             "\u2022 A change between two refreshes is not seen\n"
+                             "\u2022 The scenario runs at 10 ms scans"));
+}
