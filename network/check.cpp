@@ -60,6 +60,8 @@ QString statusText(model::LinkStatus s) {
     }
 }
 
+void checkPl110Ports(Network &network, std::vector<NetworkFinding> *out);
+
 } // namespace
 
 std::vector<NetworkFinding> checkNetwork(Network &network) {
@@ -172,7 +174,85 @@ std::vector<NetworkFinding> checkNetwork(Network &network) {
             }
         }
     }
+    checkPl110Ports(network, &out);
     return out;
 }
+
+namespace {
+
+// The PL110's ports (PL110 manual 4.2.19, 4.2.21), the tables' first scan run: a COM / EXP query
+// naming a slave that nothing on its wire answers, a port in NAIS MATSUSHITA-MASTER (no
+// published frames: its queries never reach a wire), a SEND on a port that the first scan left
+// out of free-port or that is on no wire.
+void checkPl110Ports(Network &network, std::vector<NetworkFinding> *out) {
+    for (const auto &s : network.stations()) {
+        const simulator::Program &program = s->engine().program();
+        const auto words = s->engine().words();
+        for (const auto &[name, port] : s->ports()) {
+            const model::PortApplication &app = *port->config().application;
+            if (app.master && !app.published)
+                out->push_back(
+                    {false, port->name,
+                     NetworkCheckTr::tr("%1 runs %2: the PL110 manual publishes no frames of it, "
+                                        "so the simulation puts none on the wire and every COM / "
+                                        "EXP query of the port times out")
+                         .arg(port->name,
+                              QCoreApplication::translate("rung::model::Target", app.name))});
+        }
+        for (const simulator::CommStep &c : program.comms) {
+            if (c.kind != simulator::CommKind::MasterQuery &&
+                c.kind != simulator::CommKind::FreePortSend)
+                continue;
+            const QString where = NetworkCheckTr::tr("%1: line %2")
+                                      .arg(s->name())
+                                      .arg(program.lines[std::size_t(c.step)]);
+            const StationPort *port = s->findPort(c.port);
+            const QString mnemonic = c.spec ? c.spec->mnemonic : QString();
+            if (!port || !port->wire) {
+                out->push_back({false, where,
+                                c.kind == simulator::CommKind::FreePortSend
+                                    ? NetworkCheckTr::tr("SEND sends on %1, which is on no wire: "
+                                                         "the characters reach nobody")
+                                          .arg(c.port)
+                                    : NetworkCheckTr::tr("%1_%2 queries on %3, which is on no "
+                                                         "wire: every query times out")
+                                          .arg(mnemonic)
+                                          .arg(c.index)
+                                          .arg(c.port)});
+                continue;
+            }
+            if (c.kind == simulator::CommKind::FreePortSend) {
+                if (c.portIndex < 0)
+                    continue;
+                const simulator::PortDevices &d = program.ports[std::size_t(c.portIndex)];
+                if (d.freePort >= 0 && !(words[std::size_t(d.freePort)] & 0x100))
+                    out->push_back({false, where,
+                                    NetworkCheckTr::tr("SEND on %1, which is not in free-port "
+                                                       "after the first scan (%2 bit 8 is OFF): "
+                                                       "the PLC ignores SEND until the program "
+                                                       "sets it")
+                                        .arg(c.port, QString::fromLatin1(d.markers->freePort))});
+                continue;
+            }
+            if (!port->config().application->published || c.slave == 0)
+                continue; // no frames; slave 0 is MODBUS's broadcast, which nobody answers
+            std::set<int> stations;
+            for (const Answerer &a : answerers(*port->wire))
+                if (a.protocol == Protocol::Modbus)
+                    stations.insert(a.station);
+            if (!stations.count(c.slave))
+                out->push_back({true, where,
+                                NetworkCheckTr::tr("%1_%2 queries slave %3, which no port or "
+                                                   "device on %4 answers with MODBUS: every "
+                                                   "query times out and sets its status bit")
+                                    .arg(mnemonic)
+                                    .arg(c.index)
+                                    .arg(c.slave)
+                                    .arg(port->wire->name)});
+        }
+    }
+}
+
+} // namespace
 
 } // namespace rung::network

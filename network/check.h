@@ -3,8 +3,10 @@
 // What `rungstudio-cli check NET.rungnet` finds in a network beyond each station's program
 // (docs/network.md, "Checking a network"): two masters on one wire, two ports answering one
 // station number, a LINK or MBUS table naming a station that no port on its wire answers,
-// a master instruction on a port that is on no wire. The tables are read as the stations'
-// first scan leaves them (a table is built by the program, one MOV a register).
+// a master instruction on a port that is on no wire; the PL110's COM / EXP queries naming a
+// slave nothing answers, NAIS MATSUSHITA-MASTER ports, SEND outside free-port. The tables are
+// read as the stations' first scan leaves them (a table is built by the program, one MOV a
+// register).
 
 #include "network/network.h"
 

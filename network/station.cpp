@@ -32,10 +32,12 @@ StationPort::StationPort(Network *network, Station *station, model::PortConfig c
     owner = station->name();
     const model::PortApplication &app = *m_config.application;
     // The master a program's instruction drives on this port speaks the application's
-    // protocol: Computer Link for LINK, MODBUS for MBUS and COM / EXP.
+    // protocol: Computer Link for LINK, MODBUS for MBUS and COM / EXP. A master whose frames
+    // the manual does not publish (the PL110's NAIS MATSUSHITA-MASTER) has none: its queries
+    // put nothing on the wire and time out (docs/network.md).
     if (app.answersVigorLink)
         m_master = std::make_unique<comms::VigorLinkMaster>();
-    else if (app.answersModbus || app.master)
+    else if (app.answersModbus || (app.master && app.published))
         m_master = std::make_unique<comms::ModbusMaster>(
             m_config.modbusAscii ? comms::modbus::Framing::Ascii : comms::modbus::Framing::Rtu);
 }
@@ -76,8 +78,19 @@ int StationPort::takeCharacterErrors() {
     return std::exchange(m_errors, 0);
 }
 
+void StationPort::setProgramDriven(bool on) {
+    if (on == m_programDriven)
+        return;
+    m_programDriven = on;
+    // What the protocol had half read is not the program's, nor a request once it is back.
+    m_forResponder.clear();
+    m_replies.clear();
+    if (m_responder && m_responder->buffered() > 0)
+        m_responder->silence();
+}
+
 void StationPort::deliver(const QByteArray &bytes, int errors, qint64 atUs) {
-    if (m_responder) {
+    if (m_responder && !m_programDriven) {
         // A MODBUS RTU frame ends at 3.5 characters of silence: when these bytes began after
         // such a gap, what came before them is a frame of its own (another slave's reply on
         // the bus, a request cut short), decided now, as the PLC's UART would, though its
@@ -99,7 +112,7 @@ void StationPort::deliver(const QByteArray &bytes, int errors, qint64 atUs) {
 }
 
 void StationPort::answer(qint64 nowUs) {
-    if (!m_responder)
+    if (!m_responder || m_programDriven)
         return;
     QByteArrayList frames = std::exchange(m_replies, QByteArrayList());
     if (!m_forResponder.isEmpty())

@@ -36,6 +36,7 @@ public:
     qint64 lastReceivedUs() const override { return m_lastUs; }
     int takeCharacterErrors() override;
     model::MasterProtocol *master() override { return m_master.get(); }
+    void setProgramDriven(bool on) override;
 
     // The station's program drives the port (an instruction named it).
     void setUsedByProgram() { m_used = true; }
@@ -53,9 +54,10 @@ private:
     std::unique_ptr<model::MasterProtocol> m_master;
     std::unique_ptr<comms::slave::Responder> m_responder;
     bool m_used = false;
-    QByteArray m_forProgram;   // received, for the engine
-    QByteArray m_forResponder; // received, for the slave's side
-    QByteArrayList m_replies;  // the slave's answers to frames ended by a silence, not sent yet
+    bool m_programDriven = false; // free-port: the responder is off
+    QByteArray m_forProgram;      // received, for the engine
+    QByteArray m_forResponder;    // received, for the slave's side
+    QByteArrayList m_replies;     // the slave's answers to frames ended by a silence, not sent yet
     qint64 m_lastUs = -1;
     int m_errors = 0;
 };

@@ -52,6 +52,25 @@ struct CommTask {
     std::int32_t cycles = 0;
     // PL110 SEND: the rising edge
     bool previous = false;
+    // PL110 COM / EXP: consecutive failures (SM75 of them set the status bit), and for
+    // read-write the values last read or written, to see what the program changed.
+    int failures = 0;
+    std::vector<std::int32_t> shadow;
+};
+
+// A PL110 port's free-port and COM / EXP master state (Program::ports, same index).
+struct PortState {
+    std::int32_t control = 0;   // SM78 as last applied
+    bool freePort = false;      // its bit 8
+    qint64 sendingUntilUs = -1; // SEND: the last byte leaves then; -1: not sending
+    std::int32_t count = 0;     // characters in the receive buffer (SM79 as the PLC wrote it)
+    // COM / EXP: one request at a time.
+    int query = -1; // the task (Program::comms index) last served, -1: none yet
+    bool waiting = false;
+    qint64 startUs = 0; // the request's start
+    qint64 readyUs = 0; // no request before this: the last reply's end + SM74
+    int writeAt = -1;   // read-write: the datum being written, -1: a read
+    std::int32_t writeValue = 0;
 };
 
 struct CommState {
@@ -64,6 +83,7 @@ struct CommState {
     QByteArray received;
     qint64 lastUs = -1;
     std::vector<ModuleState> modules; // by module number - 1, sized on first use
+    std::vector<PortState> ports;     // Program::ports, sized on first use
 };
 
 } // namespace rung::simulator

@@ -256,9 +256,13 @@ void Compiler::compileComm(const model::Instruction &ins, Step &s) {
     case ApplyFunction::FreePortSend:
         c.kind = CommKind::FreePortSend;
         c.n = sourceOf(ins, 1);
+        c.portIndex = portIndex(c.port);
         break;
     case ApplyFunction::MasterQuery:
         c.kind = CommKind::MasterQuery;
+        c.portIndex = portIndex(c.port);
+        if (!compileQuery(ins, &c))
+            return;
         break;
     default:
         return;
@@ -268,6 +272,154 @@ void Compiler::compileComm(const model::Instruction &ins, Step &s) {
     // Not `slot`: TOP is differentiated, and its edge memory is the step's slot.
     s.count = static_cast<std::int32_t>(m_program->comms.size());
     m_program->comms.push_back(std::move(c));
+}
+
+// The markers and buffers of the target's ports (model::PortMarkers) and their power-on
+// values: SM73 20 ms, SM74 5 ms, SM75 10 (PL110 manual 2.1.2); the counters, free-port and
+// the receive count 0.
+void Compiler::compilePorts() {
+    auto word = [&](const char *device) -> std::int32_t {
+        if (!device)
+            return -1;
+        const auto parsed = model::parseAddress(m_target, QString::fromLatin1(device));
+        const auto *a = std::get_if<model::Address>(&parsed);
+        return a ? m_layout->word(*a) : -1;
+    };
+    auto area = [&](const char *device, std::int32_t *first, std::int32_t *size) {
+        *first = word(device);
+        if (!device || *first < 0)
+            return;
+        const auto parsed = model::parseAddress(m_target, QString::fromLatin1(device));
+        const model::Address &a = std::get<model::Address>(parsed);
+        *size = m_target.area(a.area).last - a.index + 1;
+    };
+    for (const model::PortSpec &spec : m_target.ports) {
+        const model::PortMarkers &m = spec.markers;
+        if (!m.freePort && !m.status)
+            continue;
+        PortDevices d;
+        d.port = spec.name;
+        d.markers = &m;
+        d.status = word(m.status);
+        d.replyTimeout = word(m.replyTimeout);
+        d.requestGap = word(m.requestGap);
+        d.errorLimit = word(m.errorLimit);
+        d.timeouts = word(m.timeouts);
+        d.errors = word(m.errors);
+        d.freePort = word(m.freePort);
+        d.received = word(m.received);
+        if (m.sending) {
+            const auto parsed = model::parseAddress(m_target, QString::fromLatin1(m.sending));
+            if (const auto *a = std::get_if<model::Address>(&parsed))
+                d.sending = m_layout->bit(*a);
+        }
+        area(m.transmit, &d.transmit, &d.transmitSize);
+        area(m.receive, &d.receive, &d.receiveSize);
+        const std::pair<std::int32_t, std::int32_t> loads[] = {{d.replyTimeout, m.replyTimeoutMs},
+                                                               {d.requestGap, m.requestGapMs},
+                                                               {d.errorLimit, m.errorLimitCount},
+                                                               {d.timeouts, 0},
+                                                               {d.errors, 0},
+                                                               {d.freePort, 0},
+                                                               {d.received, 0}};
+        for (const auto &[w, v] : loads)
+            if (w >= 0)
+                m_program->presetLoads.emplace_back(w, v);
+        m_program->ports.push_back(std::move(d));
+    }
+}
+
+std::int32_t Compiler::portIndex(const QString &port) const {
+    for (std::size_t k = 0; k < m_program->ports.size(); ++k)
+        if (m_program->ports[k].port.compare(port, Qt::CaseInsensitive) == 0)
+            return static_cast<std::int32_t>(k);
+    return -1;
+}
+
+// COM / EXP index operation slave type number area count (PL110 manual 4.2.21). The table's
+// rules (ranges, the words READ / WRITE / READWRITE and WORD / BIT) are check's OP005; here the
+// area: every word or bit of it there, and writable when the query reads into it.
+bool Compiler::compileQuery(const model::Instruction &ins, CommStep *c) {
+    auto constant = [&](std::size_t i) -> std::int32_t {
+        const model::Operand *o = operand(ins, i);
+        return o && o->kind == model::Operand::Kind::Constant
+                   ? static_cast<std::int32_t>(o->constant.value)
+                   : 0;
+    };
+    auto text = [&](std::size_t i) {
+        const model::Operand *o = operand(ins, i);
+        return o ? o->text.trimmed().toUpper() : QString();
+    };
+    c->index = constant(0);
+    const QString operation = text(1);
+    c->operation = operation == QLatin1String("WRITE")       ? 1
+                   : operation == QLatin1String("READWRITE") ? 2
+                                                             : 0;
+    c->slave = constant(2);
+    c->bitData = text(3) == QLatin1String("BIT");
+    c->number = constant(4);
+    c->count = constant(6);
+    if (m_failed || m_muted)
+        return false;
+    // "si possono impostare al massimo 16 interrogazioni seriali diverse": COM_1..COM_16, one
+    // query each; the index names the query's status bit.
+    for (const CommStep &other : m_program->comms)
+        if (other.kind == CommKind::MasterQuery && other.portIndex == c->portIndex &&
+            other.index == c->index) {
+            error(ins, CompilerTr::tr("%1_%2 is programmed twice; each index is one query of "
+                                      "the port")
+                           .arg(ins.spec->mnemonic)
+                           .arg(c->index));
+            return false;
+        }
+    const model::Operand *o = operand(ins, 5);
+    if (!o || !isDevice(*o))
+        return false;
+    const model::Area &area = m_target.area(o->address.area);
+    if (c->operation != 1 && !area.writable) {
+        error(ins, CompilerTr::tr("%1 reads into %2, which the program cannot write")
+                       .arg(ins.spec->mnemonic, describe(*o)));
+        return false;
+    }
+    for (std::int32_t k = 0; k < c->count; ++k) {
+        if (c->bitData) {
+            // Bits from the word's bit 0 on, 16 to a word: V10 holds the bits V10.0..V10.15,
+            // M1 (16 markers read as a word) M1..M16.
+            model::Address a = o->address;
+            if (area.kind == model::AreaKind::Bit) {
+                a.index += k;
+            } else {
+                a.index += k / 16;
+                a.bit = k % 16;
+            }
+            const BitRef b = m_layout->bit(a);
+            if (!b.valid()) {
+                error(ins, CompilerTr::tr("%1 needs %2 bits from %3, past the end of its area")
+                               .arg(ins.spec->mnemonic)
+                               .arg(c->count)
+                               .arg(describe(*o)));
+                return false;
+            }
+            c->bits.push_back(b);
+        } else {
+            // A bit area read as words (Area::bitsAsWords): M1, M17, ...
+            model::Address a = o->address;
+            if (area.kind == model::AreaKind::Bit)
+                a.index += 16 * k;
+            else
+                a = model::offsetAddress(m_target, a, k);
+            const std::int32_t w = m_layout->word(a);
+            if (w < 0) {
+                error(ins, CompilerTr::tr("%1 needs %2 words from %3, past the end of its area")
+                               .arg(ins.spec->mnemonic)
+                               .arg(c->count)
+                               .arg(describe(*o)));
+                return false;
+            }
+            c->words.push_back(w);
+        }
+    }
+    return true;
 }
 
 } // namespace rung::simulator::detail

@@ -260,6 +260,10 @@ private:
     void compileDoubleDivide(const model::Instruction &ins, Step &s);
     void compileComm(const model::Instruction &ins, Step &s);
     void compileCommDevices();
+    // The PL110's port markers (Program::ports) and COM / EXP's operands.
+    void compilePorts();
+    std::int32_t portIndex(const QString &port) const;
+    bool compileQuery(const model::Instruction &ins, CommStep *c);
     BitRef systemBit(model::SystemRole role);
     std::int32_t systemWord(model::SystemRole role);
     std::int32_t wordsToAreaEnd(const model::Operand &o) const;

@@ -220,7 +220,7 @@ void Engine::endScan() {
     if (p.deferredBitWrites)
         for (const auto &[begin, end] : p.bitWordRanges)
             std::copy(m_write.begin() + begin, m_write.begin() + end, m_words.begin() + begin);
-    if (!p.comms.empty())
+    if (!p.comms.empty() || !p.ports.empty())
         serviceComms(); // engine_comm.cpp
     ++m_stats.scans;
     ++m_scansSincePowerOn;

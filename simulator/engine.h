@@ -338,6 +338,17 @@ private:
     void serviceModule(int module);
     ModuleState &module(int number);
     qint64 timeoutUs() const;
+    // engine_ports.cpp: the PL110's ports (Program::ports): free-port and SEND (PL110 manual
+    // 4.2.19), the COM / EXP master (4.2.21).
+    void freePortSend(const CommStep &c, std::size_t step);
+    void servicePorts();
+    void applyFreePort(std::size_t port);
+    void serviceQueries(std::size_t port);
+    void sendQuery(std::size_t port, std::size_t task);
+    void endQuery(std::size_t port, model::MasterStatus outcome);
+    std::int32_t portWord(std::int32_t index, std::int32_t otherwise = 0) const {
+        return index >= 0 ? m_words[static_cast<std::size_t>(index)] : otherwise;
+    }
     bool readBit(const BitRef &b) const {
         return b.valid() && (static_cast<std::uint32_t>(m_words[static_cast<std::size_t>(b.word)]) &
                              b.mask) != 0;
@@ -379,6 +390,7 @@ private:
     CommState m_comm;
     model::PlcPorts *m_ports = nullptr;
     std::vector<model::PlcPort *> m_commPorts;
+    std::vector<model::PlcPort *> m_portLinks;       // Program::ports' ports (null: none)
     std::shared_ptr<const Program> m_pendingProgram; // an edit waiting for the scan's END
     std::vector<Breakpoint> m_pendingBreakpoints;    // and its breakpoints
 };

@@ -39,6 +39,15 @@ void Engine::attachPorts(model::PlcPorts *ports) {
         if (c.kind == CommKind::ModuleRead || c.kind == CommKind::ModuleWrite)
             module(c.module).attached = m_commPorts[k] != nullptr;
     }
+    m_portLinks.assign(m_program->ports.size(), nullptr);
+    for (std::size_t k = 0; ports && k < m_program->ports.size(); ++k) {
+        m_portLinks[k] = ports->port(m_program->ports[k].port);
+        // Power-on: free-port is off (SM78 = 0), the port runs its protocol at its settings.
+        if (model::PlcPort *p = m_portLinks[k]) {
+            p->setProgramDriven(false);
+            p->setLine(p->config().line);
+        }
+    }
 }
 
 qint64 Engine::commNowUs() const {
@@ -59,6 +68,13 @@ void Engine::communicate(const Step &s, std::size_t step, bool on) {
     CommTask &t = m_comm.tasks[static_cast<std::size_t>(s.count)];
     t.on = on;
     const CommStep &c = m_program->comms[static_cast<std::size_t>(s.count)];
+    if (c.kind == CommKind::FreePortSend) {
+        // SEND transmits when its coil is activated (engine_ports.cpp).
+        if (on && !t.previous)
+            freePortSend(c, step);
+        t.previous = on;
+        return;
+    }
     if (!on)
         return;
     auto value = [&](const WordOperand &o) {
@@ -84,6 +100,8 @@ void Engine::serviceComms() {
             serviceMaster(k);
     }
     serviceSerial();
+    if (!m_program->ports.empty())
+        servicePorts(); // engine_ports.cpp
     for (std::size_t n = 0; n < m_comm.modules.size(); ++n)
         if (m_comm.modules[n].attached || !m_comm.modules[n].bfm.empty())
             serviceModule(static_cast<int>(n) + 1);

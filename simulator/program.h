@@ -278,6 +278,28 @@ struct CommStep {
     std::int32_t number = 0;
     std::int32_t count = 0;
     std::vector<BitRef> bits;
+    std::vector<std::int32_t> words; // COM / EXP of words: the area's words, in order
+    std::int32_t portIndex = -1;     // SEND, COM / EXP: Program::ports index (-1: none)
+};
+
+// A port's special markers and byte buffers (model::PortMarkers, PL110 manual 2.1.2, 2.1.14,
+// 2.1.15), resolved: word indices, -1 / invalid where the target has none.
+struct PortDevices {
+    QString port;
+    const model::PortMarkers *markers = nullptr; // the codes of SM78
+    std::int32_t status = -1;
+    std::int32_t replyTimeout = -1;
+    std::int32_t requestGap = -1;
+    std::int32_t errorLimit = -1;
+    std::int32_t timeouts = -1;
+    std::int32_t errors = -1;
+    std::int32_t freePort = -1;
+    std::int32_t received = -1;
+    BitRef sending;
+    std::int32_t transmit = -1; // the first byte's word, and the bytes
+    std::int32_t transmitSize = 0;
+    std::int32_t receive = -1;
+    std::int32_t receiveSize = 0;
 };
 
 // The system devices communication drives or reads (model::SystemRole), invalid / -1 where
@@ -343,6 +365,9 @@ struct Program {
     // Communication instructions; empty: the scan's END does no communication work.
     std::vector<CommStep> comms;
     CommDevices commDevices;
+    // The ports the program drives through their markers (PL110 free-port, COM / EXP);
+    // empty: none. The scan's END serves them.
+    std::vector<PortDevices> ports;
 };
 
 struct CompileResult {

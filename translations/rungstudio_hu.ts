@@ -7373,7 +7373,7 @@ Kiértékelés: %4 µs (%5..%6)</translation>
     </message>
     <message>
         <location line="+4"/>
-        <location filename="../model/target/target_pl110.cpp" line="+129"/>
+        <location filename="../model/target/target_pl110.cpp" line="+87"/>
         <location filename="../model/target/target_vpc.cpp" line="+61"/>
         <source>timers</source>
         <translation>időzítők</translation>
@@ -7408,7 +7408,7 @@ Kiértékelés: %4 µs (%5..%6)</translation>
     </message>
     <message>
         <location line="+2"/>
-        <location filename="../model/target/target_pl110.cpp" line="+72"/>
+        <location filename="../model/target/target_pl110.cpp" line="+73"/>
         <location filename="../model/target/target_vigor.cpp" line="+43"/>
         <source>ON for the first scan</source>
         <translation>az első ciklusban BE</translation>
@@ -7484,7 +7484,7 @@ Kiértékelés: %4 µs (%5..%6)</translation>
     </message>
     <message>
         <location line="+5"/>
-        <location filename="../model/target/target_pl110.cpp" line="+85"/>
+        <location filename="../model/target/target_pl110.cpp" line="+107"/>
         <location filename="../model/target/target_vigor.cpp" line="+95"/>
         <location filename="../model/target/target_vpc.cpp" line="+5"/>
         <source>Start a block with a normally open contact</source>
@@ -7818,19 +7818,19 @@ Kiértékelés: %4 µs (%5..%6)</translation>
     </message>
     <message>
         <location line="+3"/>
-        <location filename="../model/target/target_pl110.cpp" line="+128"/>
+        <location filename="../model/target/target_pl110.cpp" line="+127"/>
         <location filename="../model/target/target_vigor.cpp" line="-1"/>
         <location filename="../model/target/target_vpc.cpp" line="+5"/>
         <source>End of the program</source>
         <translation>A program vége</translation>
     </message>
     <message>
-        <location filename="../model/target/target_pl110.cpp" line="-425"/>
+        <location filename="../model/target/target_pl110.cpp" line="-405"/>
         <source>IF contact: ON while S1 ? S2 is true</source>
         <translation>IF érintkező: BE, amíg S1 ? S2 igaz</translation>
     </message>
     <message>
-        <location line="+69"/>
+        <location line="+27"/>
         <source>digital inputs</source>
         <translation>digitális bemenetek</translation>
     </message>
@@ -7918,7 +7918,7 @@ Kiértékelés: %4 µs (%5..%6)</translation>
         <translation>kijelző karakterei</translation>
     </message>
     <message>
-        <location line="+6"/>
+        <location line="+7"/>
         <source>RUN/STOP (1 = RUN)</source>
         <translation>RUN/STOP (1 = RUN)</translation>
     </message>
@@ -7971,7 +7971,7 @@ Kiértékelés: %4 µs (%5..%6)</translation>
         <translation>legnagyobb ciklusidő (0,1 ms)</translation>
     </message>
     <message>
-        <location line="+10"/>
+        <location line="+12"/>
         <source>the encoders&apos; load bits and the stepper motor output on AQ1 are not modelled; the word is plain memory</source>
         <translation>az enkóderek betöltőbitjeit és az AQ1 léptetőmotor-kimenetét a szimulátor nem modellezi; a szó egyszerű memória</translation>
     </message>
@@ -7996,7 +7996,7 @@ Kiértékelés: %4 µs (%5..%6)</translation>
         <translation>az időzített megszakításokat és a léptetőmotor rámpáját a szimulátor nem modellezi (megszakításprogram nem támogatott)</translation>
     </message>
     <message>
-        <location line="-179"/>
+        <location filename="../model/target/target_pl110_comm.cpp" line="+38"/>
         <source>MODBUS RTU slave</source>
         <translation>MODBUS RTU slave</translation>
     </message>
@@ -8006,29 +8006,135 @@ Kiértékelés: %4 µs (%5..%6)</translation>
         <translation>MODBUS RTU master (COM / EXP)</translation>
     </message>
     <message>
-        <location line="+5"/>
+        <location line="+7"/>
+        <source>NAIS MATSUSHITA-MASTER (COM / EXP, no frames)</source>
+        <translation>NAIS MATSUSHITA-MASTER (COM / EXP, keretek nélkül)</translation>
+    </message>
+    <message>
+        <location line="+26"/>
         <source>COM1, the RS-485 port</source>
         <translation>COM1, az RS-485 port</translation>
     </message>
     <message>
-        <location line="+4"/>
+        <location line="+6"/>
         <source>EXP1, the expansion port</source>
         <translation>EXP1, a bővítőport</translation>
     </message>
     <message>
-        <location line="+4"/>
+        <location line="+6"/>
         <source>COM2, the USB programming port (57600 8N1)</source>
         <translation>COM2, az USB programozóport (57600 8N1)</translation>
     </message>
     <message>
-        <location line="+165"/>
+        <location line="+18"/>
+        <source>COM1 transmit buffer (bytes)</source>
+        <translation>COM1 adási puffer (bájtok)</translation>
+    </message>
+    <message>
+        <location line="+1"/>
+        <source>COM1 receive buffer (bytes)</source>
+        <translation>COM1 vételi puffer (bájtok)</translation>
+    </message>
+    <message>
+        <location line="+1"/>
+        <source>EXP1 transmit buffer (bytes)</source>
+        <translation>EXP1 adási puffer (bájtok)</translation>
+    </message>
+    <message>
+        <location line="+1"/>
+        <source>EXP1 receive buffer (bytes)</source>
+        <translation>EXP1 vételi puffer (bájtok)</translation>
+    </message>
+    <message>
+        <location line="+1"/>
+        <source>COM2 transmit buffer (bytes)</source>
+        <translation>COM2 adási puffer (bájtok)</translation>
+    </message>
+    <message>
+        <location line="+1"/>
+        <source>COM2 receive buffer (bytes)</source>
+        <translation>COM2 vételi puffer (bájtok)</translation>
+    </message>
+    <message>
+        <location line="+19"/>
+        <source>serial port</source>
+        <translation>soros port</translation>
+    </message>
+    <message>
+        <location line="+5"/>
+        <source>number of characters</source>
+        <translation>karakterek száma</translation>
+    </message>
+    <message>
+        <location line="+3"/>
+        <source>Send n characters of the port&apos;s transmit buffer (free-port mode)</source>
+        <translation>A port adási pufferének n karakterét küldi (free-port mód)</translation>
+    </message>
+    <message>
+        <location line="+12"/>
+        <source>index</source>
+        <translation>index</translation>
+    </message>
+    <message>
+        <location line="+3"/>
+        <source>operation</source>
+        <translation>művelet</translation>
+    </message>
+    <message>
+        <location line="+4"/>
+        <source>slave</source>
+        <translation>slave</translation>
+    </message>
+    <message>
+        <location line="+3"/>
+        <source>data type</source>
+        <translation>adattípus</translation>
+    </message>
+    <message>
+        <location line="+4"/>
+        <source>data number</source>
+        <translation>adatszám</translation>
+    </message>
+    <message>
+        <location line="+4"/>
+        <source>PL110 area</source>
+        <translation>PL110 terület</translation>
+    </message>
+    <message>
+        <location line="+4"/>
+        <source>number of words or bits</source>
+        <translation>szavak vagy bitek száma</translation>
+    </message>
+    <message>
+        <location line="+4"/>
+        <source>COM1 master query COM_1..COM_16: read or write a slave&apos;s words or bits while ON</source>
+        <translation>COM1 master lekérdezés COM_1..COM_16: egy slave szavait vagy bitjeit olvassa vagy írja, amíg BE</translation>
+    </message>
+    <message>
+        <location line="+8"/>
+        <source>EXP1 master query EXP_1..EXP_16: read or write a slave&apos;s words or bits while ON</source>
+        <translation>EXP1 master lekérdezés EXP_1..EXP_16: egy slave szavait vagy bitjeit olvassa vagy írja, amíg BE</translation>
+    </message>
+    <message>
+        <location filename="../model/target/target_pl110.cpp" line="+8"/>
         <source>the input filters and analog settings are not modelled: an analog input reads the value set in the simulator</source>
         <translation>a bemeneti szűrőket és az analóg beállításokat a szimulátor nem modellezi: az analóg bemenet a szimulátorban beállított értéket olvassa</translation>
     </message>
     <message>
-        <location line="+4"/>
-        <source>the serial ports COM1, EXP1 and COM2 are not modelled; the word is plain memory</source>
-        <translation>a COM1, EXP1 és COM2 soros portokat a szimulátor nem modellezi; a szó egyszerű memória</translation>
+        <location line="+8"/>
+        <source>not in the manual&apos;s table of special markers: 4.2.19 names SM32..SM34 for free-port and SM35..SM37 for the characters received, the table (2.1.2) has SM78 / SM88 / SM98 and SM79 / SM89 / SM99, which the simulator follows; the word is plain memory</source>
+        <translation>nincs a kézikönyv speciális markereinek táblázatában: a 4.2.19 az SM32..SM34-et nevezi meg a free-porthoz és az SM35..SM37-et a vett karakterekhez, a táblázat (2.1.2) szerint ezek az SM78 / SM88 / SM98 és az SM79 / SM89 / SM99, és a szimulátor a táblázatot követi; a szó egyszerű memória</translation>
+    </message>
+    <message>
+        <location line="+6"/>
+        <location line="+5"/>
+        <source>the protocol&apos;s baud rate and format come from the port&apos;s settings (project or network file), not from the program; the word is plain memory</source>
+        <translation>a protokoll átviteli sebessége és formátuma a port beállításaiból (projekt vagy hálózati fájl) jön, nem a programból; a szó egyszerű memória</translation>
+    </message>
+    <message>
+        <location line="+5"/>
+        <source>COM2 runs the MODBUS slave only: its status, reply delay, supervision time and counters are not modelled; the word is plain memory</source>
+        <translation>a COM2 csak MODBUS slave-ként működik: állapotát, válaszkésleltetését, felügyeleti idejét és számlálóit a szimulátor nem modellezi; a szó egyszerű memória</translation>
     </message>
     <message>
         <location line="+4"/>
@@ -8194,7 +8300,7 @@ Kiértékelés: %4 µs (%5..%6)</translation>
         <translation>Indexelt mozgatás: D[index] = S, a terület vektorként használva</translation>
     </message>
     <message>
-        <location line="+6"/>
+        <location line="+8"/>
         <source>Store a text string in words</source>
         <translation>Szöveg tárolása szavakban</translation>
     </message>
@@ -8202,21 +8308,6 @@ Kiértékelés: %4 µs (%5..%6)</translation>
         <location line="+2"/>
         <source>Set the range of an AI, TR, AQ or PID output</source>
         <translation>AI, TR, AQ vagy PID kimenet tartományának beállítása</translation>
-    </message>
-    <message>
-        <location line="+1"/>
-        <source>Send data on a serial port</source>
-        <translation>Adatküldés soros porton</translation>
-    </message>
-    <message>
-        <location line="+1"/>
-        <source>Serial communication on COM1/COM2</source>
-        <translation>Soros kommunikáció a COM1/COM2 porton</translation>
-    </message>
-    <message>
-        <location line="+1"/>
-        <source>Communication with an expansion</source>
-        <translation>Kommunikáció egy bővítőegységgel</translation>
     </message>
     <message>
         <location line="+1"/>
@@ -9269,13 +9360,14 @@ Kiértékelés: %4 µs (%5..%6)</translation>
         <translation>6-os állapot: a master és a slave operandusai eltérnek (bitek és szavak)</translation>
     </message>
     <message>
-        <location line="+19"/>
+        <location line="+21"/>
         <location line="+54"/>
+        <location line="+75"/>
         <source>%1: line %2</source>
         <translation>%1: %2. sor</translation>
     </message>
     <message>
-        <location line="-48"/>
+        <location line="-123"/>
         <source>%1 drives %2, which is on no wire: every set ends in a time-out (status A)</source>
         <translation>a(z) %1 a(z) %2 portot hajtja, amely nincs vezetéken: minden készlet időtúllépéssel zárul (A állapot)</translation>
     </message>
@@ -9308,6 +9400,31 @@ Kiértékelés: %4 µs (%5..%6)</translation>
         <location line="+9"/>
         <source>%1 set %2 names station %3, which no port or device on %4 answers with %5: the set ends in a time-out (status A)</source>
         <translation>%1, %2. készlet: a(z) %3. állomást nevezi meg, amelyként a(z) %4 vezetéken egyetlen port vagy eszköz sem válaszol %5 protokollal: a készlet időtúllépéssel zárul (A állapot)</translation>
+    </message>
+    <message>
+        <location line="+29"/>
+        <source>%1 runs %2: the PL110 manual publishes no frames of it, so the simulation puts none on the wire and every COM / EXP query of the port times out</source>
+        <translation>a(z) %1 a(z) %2 protokollt futtatja: a PL110 kézikönyve nem közli a kereteit, így a szimuláció egyet sem tesz a vezetékre, és a port minden COM / EXP lekérdezése időtúllépéssel zárul</translation>
+    </message>
+    <message>
+        <location line="+18"/>
+        <source>SEND sends on %1, which is on no wire: the characters reach nobody</source>
+        <translation>a SEND a(z) %1 porton küld, amely nincs vezetéken: a karakterek senkihez sem jutnak el</translation>
+    </message>
+    <message>
+        <location line="+3"/>
+        <source>%1_%2 queries on %3, which is on no wire: every query times out</source>
+        <translation>a(z) %1_%2 a(z) %3 porton kérdez le, amely nincs vezetéken: minden lekérdezés időtúllépéssel zárul</translation>
+    </message>
+    <message>
+        <location line="+13"/>
+        <source>SEND on %1, which is not in free-port after the first scan (%2 bit 8 is OFF): the PLC ignores SEND until the program sets it</source>
+        <translation>SEND a(z) %1 porton, amely az első ciklus után nincs free-port módban (a(z) %2 8. bitje KI): a PLC figyelmen kívül hagyja a SEND-et, amíg a program be nem állítja</translation>
+    </message>
+    <message>
+        <location line="+15"/>
+        <source>%1_%2 queries slave %3, which no port or device on %4 answers with MODBUS: every query times out and sets its status bit</source>
+        <translation>a(z) %1_%2 a(z) %3. slave-et kérdezi le, amelyként a(z) %4 vezetéken egyetlen port vagy eszköz sem válaszol MODBUS protokollal: minden lekérdezés időtúllépéssel zárul, és beállítja az állapotbitjét</translation>
     </message>
 </context>
 <context>
@@ -9636,7 +9753,27 @@ Kiértékelés: %4 µs (%5..%6)</translation>
         <translation>a(z) %1 egy szót mozgat ezzel: %2; n értéke K1 kell legyen</translation>
     </message>
     <message>
-        <location line="-77"/>
+        <location line="+127"/>
+        <source>%1_%2 is programmed twice; each index is one query of the port</source>
+        <translation>a(z) %1_%2 kétszer szerepel a programban; minden index a port egy lekérdezése</translation>
+    </message>
+    <message>
+        <location line="+11"/>
+        <source>%1 reads into %2, which the program cannot write</source>
+        <translation>a(z) %1 a(z) %2 operandusba olvas, amelyet a program nem írhat</translation>
+    </message>
+    <message>
+        <location line="+17"/>
+        <source>%1 needs %2 bits from %3, past the end of its area</source>
+        <translation>a(z) %1 %2 bitet igényel a(z) %3 operandustól, a területe végén túl</translation>
+    </message>
+    <message>
+        <location line="+16"/>
+        <source>%1 needs %2 words from %3, past the end of its area</source>
+        <translation>a(z) %1 %2 szót igényel a(z) %3 operandustól, a területe végén túl</translation>
+    </message>
+    <message>
+        <location line="-248"/>
         <location filename="../simulator/compile_words.cpp" line="+32"/>
         <location filename="../simulator/compiler_detail.h" line="+17"/>
         <source>%1 needs the next word too, which does not exist</source>
@@ -9693,7 +9830,7 @@ Kiértékelés: %4 µs (%5..%6)</translation>
         <translation>a(z) %1 szavas blokk túlnyúlik a terület végén</translation>
     </message>
     <message>
-        <location filename="../simulator/compiler.cpp" line="+189"/>
+        <location filename="../simulator/compiler.cpp" line="+190"/>
         <source>unknown instruction</source>
         <translation>ismeretlen utasítás</translation>
     </message>
@@ -9831,7 +9968,7 @@ Kiértékelés: %4 µs (%5..%6)</translation>
         <translation>műveleti hiba: %1 bájthoz %2 szó kell a forrástól, túl a terület végén; az utasítás nem hajtódik végre</translation>
     </message>
     <message>
-        <location filename="../simulator/engine_comm.cpp" line="+351"/>
+        <location filename="../simulator/engine_comm.cpp" line="+363"/>
         <source>operation error: the communication table holds %1 sets; it takes 1 to %2</source>
         <translation>műveleti hiba: a kommunikációs táblázat %1 készletet tartalmaz; 1..%2 lehet</translation>
     </message>
@@ -9891,6 +10028,11 @@ Kiértékelés: %4 µs (%5..%6)</translation>
         <source>operation error: %1 is no 4-digit BCD value (0..9999; %2 ON moves hexadecimal digits); the destination is unchanged</source>
         <extracomment>%2 the relay that makes SMOV move hexadecimal digits (Vigor M9168)</extracomment>
         <translation>műveleti hiba: a(z) %1 nem négyjegyű BCD érték (0..9999; %2 ON esetén hexadecimális számjegyek mozognak); a cél nem változik</translation>
+    </message>
+    <message>
+        <location filename="../simulator/engine_ports.cpp" line="+55"/>
+        <source>operation error: SEND of %1 characters; the transmit buffer holds 1 to %2, nothing is sent</source>
+        <translation>műveleti hiba: SEND %1 karakterrel; az adási puffer 1..%2 karaktert tartalmaz, semmi sem megy el</translation>
     </message>
 </context>
 <context>

@@ -7394,7 +7394,7 @@ Valutazione: %4 µs (%5..%6)</translation>
     </message>
     <message>
         <location line="+4"/>
-        <location filename="../model/target/target_pl110.cpp" line="+129"/>
+        <location filename="../model/target/target_pl110.cpp" line="+87"/>
         <location filename="../model/target/target_vpc.cpp" line="+61"/>
         <source>timers</source>
         <translation>temporizzatori</translation>
@@ -7429,7 +7429,7 @@ Valutazione: %4 µs (%5..%6)</translation>
     </message>
     <message>
         <location line="+2"/>
-        <location filename="../model/target/target_pl110.cpp" line="+72"/>
+        <location filename="../model/target/target_pl110.cpp" line="+73"/>
         <location filename="../model/target/target_vigor.cpp" line="+43"/>
         <source>ON for the first scan</source>
         <translation>ON per la prima scansione</translation>
@@ -7505,7 +7505,7 @@ Valutazione: %4 µs (%5..%6)</translation>
     </message>
     <message>
         <location line="+5"/>
-        <location filename="../model/target/target_pl110.cpp" line="+85"/>
+        <location filename="../model/target/target_pl110.cpp" line="+107"/>
         <location filename="../model/target/target_vigor.cpp" line="+95"/>
         <location filename="../model/target/target_vpc.cpp" line="+5"/>
         <source>Start a block with a normally open contact</source>
@@ -7839,19 +7839,19 @@ Valutazione: %4 µs (%5..%6)</translation>
     </message>
     <message>
         <location line="+3"/>
-        <location filename="../model/target/target_pl110.cpp" line="+128"/>
+        <location filename="../model/target/target_pl110.cpp" line="+127"/>
         <location filename="../model/target/target_vigor.cpp" line="-1"/>
         <location filename="../model/target/target_vpc.cpp" line="+5"/>
         <source>End of the program</source>
         <translation>Fine del programma</translation>
     </message>
     <message>
-        <location filename="../model/target/target_pl110.cpp" line="-425"/>
+        <location filename="../model/target/target_pl110.cpp" line="-405"/>
         <source>IF contact: ON while S1 ? S2 is true</source>
         <translation>Contatto IF: ON mentre S1 ? S2 è vero</translation>
     </message>
     <message>
-        <location line="+69"/>
+        <location line="+27"/>
         <source>digital inputs</source>
         <translation>ingressi digitali</translation>
     </message>
@@ -7939,7 +7939,7 @@ Valutazione: %4 µs (%5..%6)</translation>
         <translation>caratteri del display</translation>
     </message>
     <message>
-        <location line="+6"/>
+        <location line="+7"/>
         <source>RUN/STOP (1 = RUN)</source>
         <translation>RUN/STOP (1 = RUN)</translation>
     </message>
@@ -7992,7 +7992,7 @@ Valutazione: %4 µs (%5..%6)</translation>
         <translation>tempo di scansione massimo (0,1 ms)</translation>
     </message>
     <message>
-        <location line="+10"/>
+        <location line="+12"/>
         <source>the encoders&apos; load bits and the stepper motor output on AQ1 are not modelled; the word is plain memory</source>
         <translation>i bit di caricamento degli encoder e l&apos;uscita AQ1 del motore passo passo non sono modellati; la word è semplice memoria</translation>
     </message>
@@ -8017,7 +8017,7 @@ Valutazione: %4 µs (%5..%6)</translation>
         <translation>gli interrupt a tempo e la rampa del motore passo passo non sono modellati (i programmi di interrupt non sono supportati)</translation>
     </message>
     <message>
-        <location line="-179"/>
+        <location filename="../model/target/target_pl110_comm.cpp" line="+38"/>
         <source>MODBUS RTU slave</source>
         <translation>Slave MODBUS RTU</translation>
     </message>
@@ -8027,29 +8027,135 @@ Valutazione: %4 µs (%5..%6)</translation>
         <translation>Master MODBUS RTU (COM / EXP)</translation>
     </message>
     <message>
-        <location line="+5"/>
+        <location line="+7"/>
+        <source>NAIS MATSUSHITA-MASTER (COM / EXP, no frames)</source>
+        <translation>NAIS MATSUSHITA-MASTER (COM / EXP, senza frame)</translation>
+    </message>
+    <message>
+        <location line="+26"/>
         <source>COM1, the RS-485 port</source>
         <translation>COM1, la porta RS-485</translation>
     </message>
     <message>
-        <location line="+4"/>
+        <location line="+6"/>
         <source>EXP1, the expansion port</source>
         <translation>EXP1, la porta di espansione</translation>
     </message>
     <message>
-        <location line="+4"/>
+        <location line="+6"/>
         <source>COM2, the USB programming port (57600 8N1)</source>
         <translation>COM2, la porta USB di programmazione (57600 8N1)</translation>
     </message>
     <message>
-        <location line="+165"/>
+        <location line="+18"/>
+        <source>COM1 transmit buffer (bytes)</source>
+        <translation>buffer di trasmissione COM1 (byte)</translation>
+    </message>
+    <message>
+        <location line="+1"/>
+        <source>COM1 receive buffer (bytes)</source>
+        <translation>buffer di ricezione COM1 (byte)</translation>
+    </message>
+    <message>
+        <location line="+1"/>
+        <source>EXP1 transmit buffer (bytes)</source>
+        <translation>buffer di trasmissione EXP1 (byte)</translation>
+    </message>
+    <message>
+        <location line="+1"/>
+        <source>EXP1 receive buffer (bytes)</source>
+        <translation>buffer di ricezione EXP1 (byte)</translation>
+    </message>
+    <message>
+        <location line="+1"/>
+        <source>COM2 transmit buffer (bytes)</source>
+        <translation>buffer di trasmissione COM2 (byte)</translation>
+    </message>
+    <message>
+        <location line="+1"/>
+        <source>COM2 receive buffer (bytes)</source>
+        <translation>buffer di ricezione COM2 (byte)</translation>
+    </message>
+    <message>
+        <location line="+19"/>
+        <source>serial port</source>
+        <translation>porta seriale</translation>
+    </message>
+    <message>
+        <location line="+5"/>
+        <source>number of characters</source>
+        <translation>numero di caratteri</translation>
+    </message>
+    <message>
+        <location line="+3"/>
+        <source>Send n characters of the port&apos;s transmit buffer (free-port mode)</source>
+        <translation>Trasmette n caratteri del buffer di trasmissione della porta (modalità free-port)</translation>
+    </message>
+    <message>
+        <location line="+12"/>
+        <source>index</source>
+        <translation>indice</translation>
+    </message>
+    <message>
+        <location line="+3"/>
+        <source>operation</source>
+        <translation>operazione</translation>
+    </message>
+    <message>
+        <location line="+4"/>
+        <source>slave</source>
+        <translation>slave</translation>
+    </message>
+    <message>
+        <location line="+3"/>
+        <source>data type</source>
+        <translation>tipo di dato</translation>
+    </message>
+    <message>
+        <location line="+4"/>
+        <source>data number</source>
+        <translation>numero del dato</translation>
+    </message>
+    <message>
+        <location line="+4"/>
+        <source>PL110 area</source>
+        <translation>area del PL110</translation>
+    </message>
+    <message>
+        <location line="+4"/>
+        <source>number of words or bits</source>
+        <translation>numero di word o bit</translation>
+    </message>
+    <message>
+        <location line="+4"/>
+        <source>COM1 master query COM_1..COM_16: read or write a slave&apos;s words or bits while ON</source>
+        <translation>Interrogazione master COM1 COM_1..COM_16: legge o scrive word o bit di uno slave finché è attiva</translation>
+    </message>
+    <message>
+        <location line="+8"/>
+        <source>EXP1 master query EXP_1..EXP_16: read or write a slave&apos;s words or bits while ON</source>
+        <translation>Interrogazione master EXP1 EXP_1..EXP_16: legge o scrive word o bit di uno slave finché è attiva</translation>
+    </message>
+    <message>
+        <location filename="../model/target/target_pl110.cpp" line="+8"/>
         <source>the input filters and analog settings are not modelled: an analog input reads the value set in the simulator</source>
         <translation>i filtri degli ingressi e le impostazioni analogiche non sono modellati: un ingresso analogico legge il valore impostato nel simulatore</translation>
     </message>
     <message>
-        <location line="+4"/>
-        <source>the serial ports COM1, EXP1 and COM2 are not modelled; the word is plain memory</source>
-        <translation>le seriali COM1, EXP1 e COM2 non sono modellate; la word è semplice memoria</translation>
+        <location line="+8"/>
+        <source>not in the manual&apos;s table of special markers: 4.2.19 names SM32..SM34 for free-port and SM35..SM37 for the characters received, the table (2.1.2) has SM78 / SM88 / SM98 and SM79 / SM89 / SM99, which the simulator follows; the word is plain memory</source>
+        <translation>non è nella tabella degli special marker del manuale: il 4.2.19 indica SM32..SM34 per il free-port e SM35..SM37 per i caratteri ricevuti, la tabella (2.1.2) ha SM78 / SM88 / SM98 e SM79 / SM89 / SM99, che il simulatore segue; la word è semplice memoria</translation>
+    </message>
+    <message>
+        <location line="+6"/>
+        <location line="+5"/>
+        <source>the protocol&apos;s baud rate and format come from the port&apos;s settings (project or network file), not from the program; the word is plain memory</source>
+        <translation>il baud-rate e il formato del protocollo vengono dalle impostazioni della porta (progetto o file di rete), non dal programma; la word è semplice memoria</translation>
+    </message>
+    <message>
+        <location line="+5"/>
+        <source>COM2 runs the MODBUS slave only: its status, reply delay, supervision time and counters are not modelled; the word is plain memory</source>
+        <translation>COM2 funziona solo da slave MODBUS: il suo stato, il ritardo di risposta, il tempo di controllo e i contatori non sono modellati; la word è semplice memoria</translation>
     </message>
     <message>
         <location line="+4"/>
@@ -8215,7 +8321,7 @@ Valutazione: %4 µs (%5..%6)</translation>
         <translation>Spostamento indicizzato: D[indice] = S, l&apos;area usata come vettore</translation>
     </message>
     <message>
-        <location line="+6"/>
+        <location line="+8"/>
         <source>Store a text string in words</source>
         <translation>Memorizza una stringa di testo in word</translation>
     </message>
@@ -8223,21 +8329,6 @@ Valutazione: %4 µs (%5..%6)</translation>
         <location line="+2"/>
         <source>Set the range of an AI, TR, AQ or PID output</source>
         <translation>Imposta il campo di un&apos;uscita AI, TR, AQ o PID</translation>
-    </message>
-    <message>
-        <location line="+1"/>
-        <source>Send data on a serial port</source>
-        <translation>Invia dati su una porta seriale</translation>
-    </message>
-    <message>
-        <location line="+1"/>
-        <source>Serial communication on COM1/COM2</source>
-        <translation>Comunicazione seriale su COM1/COM2</translation>
-    </message>
-    <message>
-        <location line="+1"/>
-        <source>Communication with an expansion</source>
-        <translation>Comunicazione con un&apos;espansione</translation>
     </message>
     <message>
         <location line="+1"/>
@@ -9290,13 +9381,14 @@ Valutazione: %4 µs (%5..%6)</translation>
         <translation>stato 6: gli operandi del master e dello slave differiscono (bit e word)</translation>
     </message>
     <message>
-        <location line="+19"/>
+        <location line="+21"/>
         <location line="+54"/>
+        <location line="+75"/>
         <source>%1: line %2</source>
         <translation>%1: riga %2</translation>
     </message>
     <message>
-        <location line="-48"/>
+        <location line="-123"/>
         <source>%1 drives %2, which is on no wire: every set ends in a time-out (status A)</source>
         <translation>%1 usa %2, che non è su alcun cavo: ogni set termina in time-out (stato A)</translation>
     </message>
@@ -9329,6 +9421,31 @@ Valutazione: %4 µs (%5..%6)</translation>
         <location line="+9"/>
         <source>%1 set %2 names station %3, which no port or device on %4 answers with %5: the set ends in a time-out (status A)</source>
         <translation>%1 set %2 indica la stazione %3, a cui nessuna porta o dispositivo su %4 risponde con %5: il set termina in time-out (stato A)</translation>
+    </message>
+    <message>
+        <location line="+29"/>
+        <source>%1 runs %2: the PL110 manual publishes no frames of it, so the simulation puts none on the wire and every COM / EXP query of the port times out</source>
+        <translation>%1 usa %2: il manuale del PL110 non ne pubblica i frame, quindi la simulazione non ne mette alcuno sul cavo e ogni interrogazione COM / EXP della porta va in time-out</translation>
+    </message>
+    <message>
+        <location line="+18"/>
+        <source>SEND sends on %1, which is on no wire: the characters reach nobody</source>
+        <translation>SEND trasmette su %1, che non è su alcun cavo: i caratteri non raggiungono nessuno</translation>
+    </message>
+    <message>
+        <location line="+3"/>
+        <source>%1_%2 queries on %3, which is on no wire: every query times out</source>
+        <translation>%1_%2 interroga su %3, che non è su alcun cavo: ogni interrogazione va in time-out</translation>
+    </message>
+    <message>
+        <location line="+13"/>
+        <source>SEND on %1, which is not in free-port after the first scan (%2 bit 8 is OFF): the PLC ignores SEND until the program sets it</source>
+        <translation>SEND su %1, che dopo la prima scansione non è in free-port (il bit 8 di %2 è OFF): il PLC ignora SEND finché il programma non lo imposta</translation>
+    </message>
+    <message>
+        <location line="+15"/>
+        <source>%1_%2 queries slave %3, which no port or device on %4 answers with MODBUS: every query times out and sets its status bit</source>
+        <translation>%1_%2 interroga lo slave %3, a cui nessuna porta o dispositivo su %4 risponde con MODBUS: ogni interrogazione va in time-out e imposta il suo bit di stato</translation>
     </message>
 </context>
 <context>
@@ -9657,7 +9774,27 @@ Valutazione: %4 µs (%5..%6)</translation>
         <translation>%1 sposta una word con %2: n deve essere K1</translation>
     </message>
     <message>
-        <location line="-77"/>
+        <location line="+127"/>
+        <source>%1_%2 is programmed twice; each index is one query of the port</source>
+        <translation>%1_%2 è programmata due volte; ogni indice è una sola interrogazione della porta</translation>
+    </message>
+    <message>
+        <location line="+11"/>
+        <source>%1 reads into %2, which the program cannot write</source>
+        <translation>%1 legge in %2, che il programma non può scrivere</translation>
+    </message>
+    <message>
+        <location line="+17"/>
+        <source>%1 needs %2 bits from %3, past the end of its area</source>
+        <translation>%1 richiede %2 bit da %3, oltre la fine della sua area</translation>
+    </message>
+    <message>
+        <location line="+16"/>
+        <source>%1 needs %2 words from %3, past the end of its area</source>
+        <translation>%1 richiede %2 word da %3, oltre la fine della sua area</translation>
+    </message>
+    <message>
+        <location line="-248"/>
         <location filename="../simulator/compile_words.cpp" line="+32"/>
         <location filename="../simulator/compiler_detail.h" line="+17"/>
         <source>%1 needs the next word too, which does not exist</source>
@@ -9714,7 +9851,7 @@ Valutazione: %4 µs (%5..%6)</translation>
         <translation>il blocco di %1 word va oltre la fine della sua area</translation>
     </message>
     <message>
-        <location filename="../simulator/compiler.cpp" line="+189"/>
+        <location filename="../simulator/compiler.cpp" line="+190"/>
         <source>unknown instruction</source>
         <translation>istruzione sconosciuta</translation>
     </message>
@@ -9852,7 +9989,7 @@ Valutazione: %4 µs (%5..%6)</translation>
         <translation>errore operativo: %1 byte richiedono %2 word dalla sorgente, oltre la fine della sua area; l&apos;istruzione non viene eseguita</translation>
     </message>
     <message>
-        <location filename="../simulator/engine_comm.cpp" line="+351"/>
+        <location filename="../simulator/engine_comm.cpp" line="+363"/>
         <source>operation error: the communication table holds %1 sets; it takes 1 to %2</source>
         <translation>errore operativo: la tabella di comunicazione contiene %1 set; ne accetta da 1 a %2</translation>
     </message>
@@ -9912,6 +10049,11 @@ Valutazione: %4 µs (%5..%6)</translation>
         <source>operation error: %1 is no 4-digit BCD value (0..9999; %2 ON moves hexadecimal digits); the destination is unchanged</source>
         <extracomment>%2 the relay that makes SMOV move hexadecimal digits (Vigor M9168)</extracomment>
         <translation>errore operativo: %1 non è un valore BCD di 4 cifre (0..9999; con %2 ON si spostano cifre esadecimali); la destinazione non cambia</translation>
+    </message>
+    <message>
+        <location filename="../simulator/engine_ports.cpp" line="+55"/>
+        <source>operation error: SEND of %1 characters; the transmit buffer holds 1 to %2, nothing is sent</source>
+        <translation>errore operativo: SEND di %1 caratteri; il buffer di trasmissione ne contiene da 1 a %2, non viene trasmesso nulla</translation>
     </message>
 </context>
 <context>

@@ -41,6 +41,9 @@ public:
     // The codec of the master protocol the port's application speaks (Computer Link for LINK,
     // MODBUS RTU / ASCII for MBUS and COM / EXP); nullptr when it has none.
     virtual MasterProtocol *master() = 0;
+    // The program takes the port from its protocol (PL110 free-port, PL110 manual 4.2.19): while
+    // on, the port answers no master and what arrives is the program's alone.
+    virtual void setProgramDriven(bool on) = 0;
 };
 
 // A station's ports, by name (Target::ports: "CP2", "MODULE1", "COM1"); an engine asks once,

@@ -63,6 +63,31 @@ struct PortApplication {
     int sharedLink = 0; // 1: CPU Link (stations 0..7), 2: Parallel Link (a master, a slave)
 };
 
+// The special markers and byte areas through which a PL110 program drives a port (PL110
+// manual 2.1.2, 2.1.14, 2.1.15, 4.2.19, 4.2.21), as the target writes them; nullptr: none. The
+// simulator resolves them once (Program::ports) and runs the COM / EXP master and free-port
+// from them; the network's checks read them too.
+struct PortMarkers {
+    const char *status = nullptr;       // SM70: master: bit i-1 = COM_i / EXP_i in error
+    const char *replyTimeout = nullptr; // SM73: ms from the start of a request to the whole reply
+    const char *requestGap = nullptr;   // SM74: ms from the end of a reply to the next request
+    const char *errorLimit = nullptr;   // SM75: consecutive errors before the status bit
+    const char *timeouts = nullptr;     // SM76: time-outs counted
+    const char *errors = nullptr;       // SM77: errors counted (CRC, data count, exception)
+    const char *freePort = nullptr;     // SM78: bits 0-3 baud code, 4-7 format code, bit 8 on
+    const char *received = nullptr; // SM79: characters in the receive buffer; a write empties it
+    const char *sending = nullptr;  // SM0.6: ON while the port transmits
+    const char *transmit = nullptr; // COM1_TX: the transmit buffer's area (bytes)
+    const char *receive = nullptr;  // COM1_RX: the receive buffer's area (bytes)
+    // The power-on values of SM73, SM74, SM75 (2.1.2: 20 ms, 5 ms, 10; COM2's SM73: 0).
+    int replyTimeoutMs = 20;
+    int requestGapMs = 5;
+    int errorLimitCount = 10;
+    // The free-port codes of SM78: bauds[code] and formats[code] ("8N1"), 2.1.2's lists.
+    std::vector<int> bauds;
+    std::vector<const char *> formats;
+};
+
 struct PortSpec {
     QString name;                              // "CP2", "COM1", "MODULE1"
     const char *description = nullptr;         // QT_TRANSLATE_NOOP("rung::model::Target", ...)
@@ -75,6 +100,7 @@ struct PortSpec {
         return nullptr;
     }
     bool on(const QString &model) const { return models.isEmpty() || models.contains(model); }
+    PortMarkers markers; // the PL110's port markers; empty elsewhere
 };
 
 // A device type code of the LINK / MBUS communication table (Vigor M/VB/VH communication manual,

@@ -18,6 +18,11 @@ Target makePl110Target();
 // The CPM1's application instructions (target_cpm1_instructions.cpp).
 void addCpm1ApplicationInstructions(Target &t);
 
+// The PL110's serial ports, their byte buffers and SEND / COM / EXP (target_pl110_comm.cpp).
+std::vector<PortSpec> pl110Ports();
+void addPl110SerialBuffers(Target &t);
+void addPl110Communication(Target &t);
+
 // Appends an area and returns it for the fields that differ from the defaults.
 inline Area &addArea(Target &t, const char *key, const char *prefix, AreaKind kind, int first,
                      int last, const char *description) {

@@ -55,48 +55,6 @@ InstructionSpec &addBox(Target &t, const char *mnemonic, ApplyFunction function,
     return s;
 }
 
-// The serial ports (1.3, 1.5.4, 3.1, 4.2.19, 4.2.21): COM1 (RS-485) and EXP1 answer MODBUS RTU
-// or run a master protocol for COM / EXP; COM2 is the USB programming port, MODBUS RTU at
-// 57600 8N1 only. Any port may be switched to free-port by the program (SM78 / SM88 / SM98),
-// whatever its protocol. The one master protocol the manual describes (NAIS MATSUSHITA) has
-// no published frames; the product's master is MODBUS RTU, the protocol of chapter 3
-// (docs/network.md).
-std::vector<PortSpec> pl110Ports() {
-    const std::vector<int> bauds = {
-        19200, 110,  150,  300,   600,   1200,
-        2400,  4800, 9600, 28800, 38400, 57600}; // the baud codes of SM71 (2.1.2)
-    PortApplication slave;
-    slave.id = "modbus";
-    slave.name = QT_TRANSLATE_NOOP("rung::model::Target", "MODBUS RTU slave");
-    slave.bauds = bauds;
-    slave.frame = "8N1";
-    slave.stationMin = 1;
-    slave.stationMax = 255;
-    slave.station = 1;
-    slave.answersModbus = true;
-    PortApplication master = slave;
-    master.id = "modbus-master";
-    master.name = QT_TRANSLATE_NOOP("rung::model::Target", "MODBUS RTU master (COM / EXP)");
-    master.answersModbus = false;
-    master.master = true;
-    PortSpec com1;
-    com1.name = QStringLiteral("COM1");
-    com1.description = QT_TRANSLATE_NOOP("rung::model::Target", "COM1, the RS-485 port");
-    com1.applications = {slave, master};
-    PortSpec exp1 = com1;
-    exp1.name = QStringLiteral("EXP1");
-    exp1.description = QT_TRANSLATE_NOOP("rung::model::Target", "EXP1, the expansion port");
-    PortSpec com2;
-    com2.name = QStringLiteral("COM2");
-    com2.description =
-        QT_TRANSLATE_NOOP("rung::model::Target", "COM2, the USB programming port (57600 8N1)");
-    PortApplication usb = slave;
-    usb.bauds = {57600};
-    usb.fixedFrame = true;
-    com2.applications = {usb};
-    return {com1, exp1, com2};
-}
-
 } // namespace
 
 Target makePl110Target() {
@@ -196,7 +154,8 @@ Target makePl110Target() {
         .retentive = true;
     Area &disp = addArea(t, "DISP", "DISP", AreaKind::Word, 0, 167,
                          QT_TRANSLATE_NOOP("rung::model::Target", "display characters"));
-    disp.wordBits = 8; // one character per byte, 8 rows x 21 (2.1.16)
+    disp.wordBits = 8;        // one character per byte, 8 rows x 21 (2.1.16)
+    addPl110SerialBuffers(t); // COM1_TX, COM1_RX, ... (target_pl110_comm.cpp)
 
     // SM0 bits and the scan-time words SM6..SM8 (section 2.1.2).
     t.systemDevices = {
@@ -229,9 +188,11 @@ Target makePl110Target() {
 
     // What the simulator keeps as plain memory (2.1.2): the hardware behind the special
     // markers (encoders, stepper output, clock, protocol address, filters and analog
-    // configuration, serial ports), the timed interrupts and the display of the PL110-2A and its
-    // terminal. `check` warns at each use (SIM101). SM1 (faults) reads 0, no fault, as it should
-    // in a simulation; SM3, SM19, SM32..SM36 and SM111..SM117 are not in the manual's table.
+    // configuration, the protocols' line settings and COM2's slave markers), the timed
+    // interrupts and the display of the PL110-2A and its terminal. `check` warns at each use
+    // (SIM101). SM1 (faults) reads 0, no fault, as it should in a simulation; SM3, SM19 and
+    // SM111..SM117 are not in the manual's table. The ports' markers of COM / EXP and free-port
+    // (SM0.6..SM0.8, SM70, SM73..SM80, SM83..SM89, SM98, SM99) are simulated (PortMarkers).
     t.unmodelled = {
         {QStringLiteral("SM2"), QStringLiteral("SM2"),
          QT_TRANSLATE_NOOP("rung::model::Target",
@@ -257,10 +218,30 @@ Target makePl110Target() {
          QT_TRANSLATE_NOOP("rung::model::Target",
                            "the input filters and analog settings are not modelled: an analog "
                            "input reads the value set in the simulator")},
-        {QStringLiteral("SM70"), QStringLiteral("SM99"),
+        // 4.2.19 switches free-port with SM32..SM34 and counts what came in SM35..SM37; the
+        // table of 2.1.2 has SM78 / SM88 / SM98 and SM79 / SM89 / SM99 for that, SM37 for the
+        // TEST inputs and no SM32..SM36. The table is the more detailed: the simulator follows
+        // it (docs/targets.md), and a program that uses SM32..SM36 is told so.
+        {QStringLiteral("SM32"), QStringLiteral("SM36"),
          QT_TRANSLATE_NOOP("rung::model::Target",
-                           "the serial ports COM1, EXP1 and COM2 are not modelled; the word is "
-                           "plain memory")},
+                           "not in the manual's table of special markers: 4.2.19 names SM32..SM34 "
+                           "for free-port and SM35..SM37 for the characters received, the table "
+                           "(2.1.2) has SM78 / SM88 / SM98 and SM79 / SM89 / SM99, which the "
+                           "simulator follows; the word is plain memory")},
+        {QStringLiteral("SM71"), QStringLiteral("SM72"),
+         QT_TRANSLATE_NOOP("rung::model::Target",
+                           "the protocol's baud rate and format come from the port's settings "
+                           "(project or network file), not from the program; the word is plain "
+                           "memory")},
+        {QStringLiteral("SM81"), QStringLiteral("SM82"),
+         QT_TRANSLATE_NOOP("rung::model::Target",
+                           "the protocol's baud rate and format come from the port's settings "
+                           "(project or network file), not from the program; the word is plain "
+                           "memory")},
+        {QStringLiteral("SM90"), QStringLiteral("SM97"),
+         QT_TRANSLATE_NOOP("rung::model::Target",
+                           "COM2 runs the MODBUS slave only: its status, reply delay, supervision "
+                           "time and counters are not modelled; the word is plain memory")},
         {QStringLiteral("SM100"), QStringLiteral("SM105"),
          QT_TRANSLATE_NOOP("rung::model::Target",
                            "the display (standby brightness and delay, system and user pages "
@@ -439,15 +420,14 @@ Target makePl110Target() {
            QT_TRANSLATE_NOOP("rung::model::Target",
                              "Indexed move: D[index] = S, the area used as a vector"),
            "S D INDEX");
-    // Known to the editor, not simulated (communication, positioning, PID, display).
+    // SEND, COM and EXP (4.2.19, 4.2.21): target_pl110_comm.cpp.
+    addPl110Communication(t);
+    // Known to the editor, not simulated (positioning, PID, display).
     const OperandSpec any{K::Constant, true};
     const std::pair<const char *, const char *> boxes[] = {
         {"MOVTXT", QT_TRANSLATE_NOOP("rung::model::Target", "Store a text string in words")},
         {"RANGE",
          QT_TRANSLATE_NOOP("rung::model::Target", "Set the range of an AI, TR, AQ or PID output")},
-        {"SEND", QT_TRANSLATE_NOOP("rung::model::Target", "Send data on a serial port")},
-        {"COM", QT_TRANSLATE_NOOP("rung::model::Target", "Serial communication on COM1/COM2")},
-        {"EXP", QT_TRANSLATE_NOOP("rung::model::Target", "Communication with an expansion")},
         {"TunePOS", QT_TRANSLATE_NOOP("rung::model::Target", "Tune an on/off positioner")},
         {"POS", QT_TRANSLATE_NOOP("rung::model::Target", "On/off positioner")},
         {"StartPID", QT_TRANSLATE_NOOP("rung::model::Target", "Start a PID loop")},

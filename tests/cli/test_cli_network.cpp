@@ -142,6 +142,53 @@ TEST(CliNetwork, CheckFindsWiringMistakes) {
         << h.out.toStdString();
 }
 
+// The PL110's wiring checks (PL110 manual 4.2.19, 4.2.21): a COM master and a Vigor MBUS on one
+// wire, a COM query naming a slave nothing answers, SEND on a port the first scan left out of
+// free-port, a port in NAIS MATSUSHITA-MASTER (no published frames).
+TEST(CliNetwork, CheckFindsPl110WiringMistakes) {
+    QTemporaryDir dir;
+    const QString file = network(
+        dir, {{QStringLiteral("pl.il"),
+               QStringLiteral("; target: pl110\nLD SM0.0\nCOM 1 READ 1 WORD 0 V0 1\n"
+                              "COM 2 READ 9 WORD 0 V1 1\nSEND COM2 1\nEND\n")},
+              {QStringLiteral("nais.il"),
+               QStringLiteral("; target: pl110\nLD SM0.0\nEXP 1 READ 1 WORD 10000 V0 10\nEND\n")},
+              {QStringLiteral("vb.il"),
+               QStringLiteral("; target: vigor\nLD M9002\nMOV K1 D1000\nMOV K1 D1001\nMOV K1 "
+                              "D1002\nMOV K1 D1003\nMOV K13 D1004\nMOV K0 D1005\nMOV K4 "
+                              "D1006\nMOV K0 D1007\nLD M9000\nMBUS D1000 D100\nEND\n")},
+              {QStringLiteral("s.il"), QStringLiteral("; target: pl110\nEND\n")},
+              {QStringLiteral("net.rungnet"), QStringLiteral(R"({"stations": [
+                {"name": "pl", "program": "pl.il", "target": "pl110",
+                 "ports": {"COM1": {"application": "modbus-master"}}},
+                {"name": "vb", "program": "vb.il", "model": "VB",
+                 "ports": {"CP2": {"application": "modbus", "station": 0, "frame": "8N1"}}},
+                {"name": "s", "program": "s.il", "target": "pl110",
+                 "ports": {"COM1": {"application": "modbus", "station": 1}}},
+                {"name": "n", "program": "nais.il", "target": "pl110",
+                 "ports": {"EXP1": {"application": "nais-master"}}}],
+                "wires": [["pl/COM1", "vb/CP2", "s/COM1"], ["pl/COM2", "n/EXP1"]]})")}});
+    const auto r = cli({QStringLiteral("check"), file});
+    EXPECT_EQ(r.code, 1);
+    EXPECT_TRUE(r.out.contains(QStringLiteral(
+        "wire w1: error: 2 masters on one wire: pl/COM1 (MODBUS RTU master (COM / EXP)), "
+        "vb/CP2 (MBUS)")))
+        << r.out.toStdString();
+    EXPECT_TRUE(r.out.contains(
+        QStringLiteral("pl: line 4: error: COM_2 queries slave 9, which no port or device on w1 "
+                       "answers with MODBUS")))
+        << r.out.toStdString();
+    EXPECT_FALSE(r.out.contains(QStringLiteral("COM_1 queries"))) << r.out.toStdString();
+    EXPECT_TRUE(r.out.contains(QStringLiteral(
+        "pl: line 5: warning: SEND on COM2, which is not in free-port after the first scan "
+        "(SM98 bit 8 is OFF)")))
+        << r.out.toStdString();
+    EXPECT_TRUE(r.out.contains(QStringLiteral(
+        "n/EXP1: warning: n/EXP1 runs NAIS MATSUSHITA-MASTER (COM / EXP, no frames): the PL110 "
+        "manual publishes no frames of it")))
+        << r.out.toStdString();
+}
+
 // A station's program with an error: named by its file and line, as `check FILE` names it.
 TEST(CliNetwork, CheckNamesAStationsProgramErrors) {
     QTemporaryDir dir;

@@ -230,8 +230,11 @@ TEST(Pl110Checks, DisplayKeyAndPortMarkersWarn) {
 // have is named at `check` time, first and last word of each range: the timed interrupts'
 // intervals SM16 / SM17 ("Intervallo dell'interrupt a tempo n° 1"), the clock SM9..SM15, the
 // encoders SM20..SM31 and SM2, the protocol address SM4 / SM5, filters and analog
-// configuration SM38..SM69, the serial ports SM70..SM99. What the simulator models (SM0, SM6..SM8
-// scan time, SM37 TEST inputs) and the faults SM1 (no fault in a simulation) stay quiet.
+// configuration SM38..SM69, the protocols' line settings SM71 / SM72, SM81 / SM82 and COM2's
+// slave markers SM90..SM97; SM32..SM36, which 4.2.19 names for free-port against the table. What
+// the simulator models (SM0, SM6..SM8 scan time, SM37 TEST inputs, the COM / EXP and free-port
+// markers SM70, SM73..SM80, SM83..SM89, SM98, SM99) and the faults SM1 (no fault in a
+// simulation) stay quiet.
 TEST(Pl110Checks, HardwareAndInterruptMarkersWarnWhereTheyAreUsed) {
     const std::pair<const char *, const char *> warned[] = {
         {"SM16", "the timed interrupts"},
@@ -246,8 +249,12 @@ TEST(Pl110Checks, HardwareAndInterruptMarkersWarnWhereTheyAreUsed) {
         {"SM31", "encoders"},
         {"SM38", "input filters"},
         {"SM69", "analog settings"},
-        {"SM70", "serial ports"},
-        {"SM99", "serial ports"},
+        {"SM71", "baud rate and format"},
+        {"SM82", "baud rate and format"},
+        {"SM90", "COM2 runs the MODBUS slave only"},
+        {"SM97", "COM2 runs the MODBUS slave only"},
+        {"SM32", "4.2.19 names SM32..SM34 for free-port"},
+        {"SM36", "SM78 / SM88 / SM98"},
     };
     for (const auto &[device, phrase] : warned) {
         const QString text = QStringLiteral("LD SM0.0\nMOV 10 %1\nEND").arg(QLatin1String(device));
@@ -269,19 +276,20 @@ TEST(Pl110Checks, HardwareAndInterruptMarkersWarnWhereTheyAreUsed) {
     // A bit of an interval word and the double word over the encoder count warn as well.
     EXPECT_EQ(count(check("LD SM17.3\nOUT Q1\nEND"), "SIM101"), 1);
     EXPECT_EQ(count(check("LD SM0.0\nMOV SMD22 VD0\nEND"), "SIM101"), 1);
-    for (const char *quiet : {"SM1", "SM3", "SM6", "SM8", "SM19", "SM32", "SM36", "SM37"}) {
+    for (const char *quiet : {"SM1", "SM3", "SM6", "SM8", "SM19", "SM37", "SM70", "SM73", "SM79",
+                              "SM80", "SM88", "SM98", "SM99"}) {
         const QString text = QStringLiteral("LD SM0.0\nMOV %1 V0\nEND").arg(QLatin1String(quiet));
         EXPECT_EQ(count(checkList(parseInstructionList(pl110(), text).list), "SIM101"), 0) << quiet;
     }
 }
 
 // Issue 14: what the PL110 simulator does not model among the instructions (PID, POS, RANGE
-// scaling, MOVTXT, SEND, COM / EXP, the display parameters) is named by `check` at each use
+// scaling, MOVTXT, the display parameters) is named by `check` at each use
 // (SIM100), the instruction's own mnemonic in the message, not only when simulating.
 TEST(Pl110Checks, EveryInstructionNotSimulatedWarnsAtCheckTime) {
-    QStringList expected = {"MOVTXT",  "RANGE", "SEND",     "COM",       "EXP",
-                            "TunePOS", "POS",   "StartPID", "PID",       "SetOutPID",
-                            "GENSET",  "CONV",  "SetPAR",   "FormatPAR", "PosPAR"};
+    // SEND, COM and EXP are simulated (docs/network.md).
+    QStringList expected = {"MOVTXT",    "RANGE",  "TunePOS", "POS",    "StartPID",  "PID",
+                            "SetOutPID", "GENSET", "CONV",    "SetPAR", "FormatPAR", "PosPAR"};
     QStringList seen;
     for (const InstructionSpec &spec : pl110().instructions) {
         if (spec.function != ApplyFunction::NotSimulated)

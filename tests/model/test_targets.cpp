@@ -617,8 +617,15 @@ TEST(Instructions, Pl110ListingElements) {
     EXPECT_EQ(spec(pl110(), "MOV").function, ApplyFunction::Mov);
     EXPECT_EQ(spec(pl110(), "BLKMOV").function, ApplyFunction::BlockMove);
     EXPECT_EQ(spec(pl110(), "MOVIND").function, ApplyFunction::IndirectMove);
-    for (const char *box : {"PID", "POS", "GENSET", "SEND", "COM", "EXP", "StartPID", "RANGE"})
+    for (const char *box : {"PID", "POS", "GENSET", "StartPID", "RANGE"})
         EXPECT_EQ(spec(pl110(), box).function, ApplyFunction::NotSimulated) << box;
+    // PL110 manual 4.2.19, 4.2.21: SEND names its port, COM drives COM1 and EXP EXP1.
+    EXPECT_EQ(spec(pl110(), "SEND").function, ApplyFunction::FreePortSend);
+    EXPECT_EQ(spec(pl110(), "SEND").portOperand, 0);
+    EXPECT_EQ(spec(pl110(), "COM").function, ApplyFunction::MasterQuery);
+    EXPECT_STREQ(spec(pl110(), "COM").port, "COM1");
+    EXPECT_STREQ(spec(pl110(), "EXP").port, "EXP1");
+    EXPECT_EQ(spec(pl110(), "EXP").operands.size(), 7u);
 }
 
 TEST(Instructions, CanonicalSpecForAnOperation) {
