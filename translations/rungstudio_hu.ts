@@ -9968,7 +9968,7 @@ Kiértékelés: %4 µs (%5..%6)</translation>
         <translation>műveleti hiba: %1 bájthoz %2 szó kell a forrástól, túl a terület végén; az utasítás nem hajtódik végre</translation>
     </message>
     <message>
-        <location filename="../simulator/engine_comm.cpp" line="+363"/>
+        <location filename="../simulator/engine_comm.cpp" line="+369"/>
         <source>operation error: the communication table holds %1 sets; it takes 1 to %2</source>
         <translation>műveleti hiba: a kommunikációs táblázat %1 készletet tartalmaz; 1..%2 lehet</translation>
     </message>

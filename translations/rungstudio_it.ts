@@ -9989,7 +9989,7 @@ Valutazione: %4 µs (%5..%6)</translation>
         <translation>errore operativo: %1 byte richiedono %2 word dalla sorgente, oltre la fine della sua area; l&apos;istruzione non viene eseguita</translation>
     </message>
     <message>
-        <location filename="../simulator/engine_comm.cpp" line="+363"/>
+        <location filename="../simulator/engine_comm.cpp" line="+369"/>
         <source>operation error: the communication table holds %1 sets; it takes 1 to %2</source>
         <translation>errore operativo: la tabella di comunicazione contiene %1 set; ne accetta da 1 a %2</translation>
     </message>

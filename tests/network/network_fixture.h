@@ -58,12 +58,21 @@ inline ProgramLoader listingLoader(std::map<QString, QString> programs = {}) {
     };
 }
 
+// The traffic the network's sink records lives apart from the NetRun, so that moving a
+// NetRun (returning it without copy elision, assigning it) leaves the sink writing where
+// records and traffic still read.
+struct NetRunLog {
+    QString traffic;
+    std::vector<TrafficRecord> records;
+};
+
 struct NetRun {
     std::unique_ptr<Network> net;
     QString error;
     QString trace;
-    QString traffic;
-    std::vector<TrafficRecord> records;
+    std::shared_ptr<NetRunLog> log = std::make_shared<NetRunLog>();
+    QString &traffic = log->traffic;
+    std::vector<TrafficRecord> &records = log->records;
 };
 
 // Builds the network from its JSON (or reads `file` when json is empty) and, when args are
@@ -80,9 +89,9 @@ inline NetRun runNetwork(const QByteArray &json, const std::map<QString, QString
     r.net = Network::build(d, listingLoader(programs), &r.error);
     if (!r.net)
         return r;
-    r.net->setTrafficSink([&r](const TrafficRecord &t) {
-        r.records.push_back(t);
-        r.traffic += formatTraffic(t) + QLatin1Char('\n');
+    r.net->setTrafficSink([log = r.log](const TrafficRecord &t) {
+        log->records.push_back(t);
+        log->traffic += formatTraffic(t) + QLatin1Char('\n');
     });
     if (args.isEmpty())
         return r;

@@ -33,7 +33,7 @@ const char *kFreePort = "; target: pl110\n"
                         "LD SM0.6\nOUT M1\n"
                         "END\n";
 
-// Built in place: the fixture's traffic sink holds the NetRun it filled, which must not move.
+// A network of one PL110 in free-port mode and its station.
 struct FreePortRun {
     explicit FreePortRun(const QString &frame)
         : run(runNetwork(freePortNetwork(frame),
