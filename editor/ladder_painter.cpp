@@ -264,6 +264,30 @@ QStringList LadderPainter::valueLines(const QString &live, const QFontMetricsF &
     return lines;
 }
 
+QStringList LadderPainter::wrappedLines(const QString &text, const QFontMetricsF &metrics,
+                                        double width, int maxLines) {
+    QStringList lines;
+    QString line;
+    const QStringList words = text.split(QLatin1Char(' '), Qt::SkipEmptyParts);
+    for (qsizetype i = 0; i < words.size(); ++i) {
+        const QString longer = line.isEmpty() ? words[i] : line + QLatin1Char(' ') + words[i];
+        if (line.isEmpty() || metrics.horizontalAdvance(longer) <= width) {
+            line = longer;
+            continue;
+        }
+        if (lines.size() + 1 == maxLines) { // the last line takes the rest, elided
+            line =
+                QStringList(words.mid(i - line.count(QLatin1Char(' ')) - 1)).join(QLatin1Char(' '));
+            break;
+        }
+        lines << line;
+        line = words[i];
+    }
+    if (!line.isEmpty())
+        lines << metrics.elidedText(line, Qt::ElideRight, width);
+    return lines;
+}
+
 QFont LadderPainter::liveFont() const {
     QFont bold = m_small;
     bold.setBold(true);
@@ -373,15 +397,34 @@ void LadderPainter::paintOutput(QPainter &p, const QRectF &area, const model::In
     bold.setBold(true);
     const QFontMetricsF fb(bold);
     const QFontMetricsF fs(m_small);
-    const double textHeight = fb.height() + (operands.isEmpty() ? 0.0 : fs.height());
+    // Operands that do not fit on one line (PL110 COM / EXP take seven) wrap onto the lines
+    // the box has room for; when the title leaves room for only one, the mnemonic leads the
+    // small lines instead of standing above them, so that every operand can still be read.
+    const int roomWithTitle = std::max(1, int((inner.height() - fb.height()) / fs.height()));
+    QStringList lines = wrappedLines(operands, fs, inner.width(), roomWithTitle);
+    bool titled = true;
+    if (!operands.isEmpty() && fs.horizontalAdvance(operands) > inner.width() &&
+        roomWithTitle < 2) {
+        const int room = std::max(1, int(inner.height() / fs.height()));
+        lines = wrappedLines(text, fs, inner.width(), room);
+        titled = false;
+    }
+    const double textHeight = (titled ? fb.height() : 0.0) +
+                              (operands.isEmpty() && titled ? 0.0 : fs.height() * lines.size());
     const double top = tall ? inner.top() + 2 : inner.center().y() - textHeight / 2;
-    p.setFont(bold);
-    p.drawText(QRectF(inner.left(), top, inner.width(), fb.height()), Qt::AlignCenter,
-               fb.elidedText(title, Qt::ElideRight, inner.width()));
-    if (!operands.isEmpty()) {
-        p.setFont(m_small);
-        p.drawText(QRectF(inner.left(), top + fb.height(), inner.width(), fs.height()),
-                   Qt::AlignCenter, fs.elidedText(operands, Qt::ElideRight, inner.width()));
+    double at = top;
+    if (titled) {
+        p.setFont(bold);
+        p.drawText(QRectF(inner.left(), at, inner.width(), fb.height()), Qt::AlignCenter,
+                   fb.elidedText(title, Qt::ElideRight, inner.width()));
+        at += fb.height();
+    }
+    if (operands.isEmpty() && titled)
+        return;
+    p.setFont(m_small);
+    for (const QString &line : lines) {
+        p.drawText(QRectF(inner.left(), at, inner.width(), fs.height()), Qt::AlignCenter, line);
+        at += fs.height();
     }
 }
 

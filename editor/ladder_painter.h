@@ -114,6 +114,10 @@ public:
     // The values under a box's instruction, as lines that fit `width` in `metrics`: one
     // line when it fits (compacted if need be), else a device a line.
     static QStringList valueLines(const QString &live, const QFontMetricsF &metrics, double width);
+    // Words (an instruction's operands) on at most maxLines lines of `width`, broken between
+    // words; what still does not fit is elided at the end of the last line.
+    static QStringList wrappedLines(const QString &text, const QFontMetricsF &metrics, double width,
+                                    int maxLines);
     // A box's inner rectangle (where its text goes) in an output area, and the badge of a
     // forced contact in its cell: for the tests of what fits.
     QRectF boxTextRect(const QRectF &area) const;
