@@ -19,7 +19,7 @@ namespace rung::app {
 
 namespace {
 
-QString usage() {
+QString networkUsageText() {
     return NetworkTr::tr("usage:") + QLatin1Char('\n') + networkUsage();
 }
 
@@ -74,13 +74,14 @@ int runNetworkSimulate(const QString &file, const QStringList &args, QTextStream
     for (qsizetype i = 0; i < args.size(); ++i) {
         if (args[i] == QLatin1String("--traffic")) {
             if (i + 1 >= args.size()) {
-                err << NetworkTr::tr("--traffic needs a file") << '\n' << usage() << '\n';
+                err << NetworkTr::tr("--traffic needs a file") << '\n'
+                    << networkUsageText() << '\n';
                 return 2;
             }
             trafficFile = args[++i];
         } else if (args[i] == QLatin1String("--target") || args[i] == QLatin1String("--model")) {
             err << NetworkTr::tr("%1: a network file names each station's PLC").arg(args[i]) << '\n'
-                << usage() << '\n';
+                << networkUsageText() << '\n';
             return 2;
         } else {
             options << args[i];
@@ -100,7 +101,7 @@ int runNetworkSimulate(const QString &file, const QStringList &args, QTextStream
     }
     network::NetTraceRequest request;
     if (!network::parseNetworkTraceOptions(*net, options, &request, &error)) {
-        err << error << '\n' << usage() << '\n';
+        err << error << '\n' << networkUsageText() << '\n';
         return 2;
     }
     // The traffic goes to the file as it happens; written atomically at the end.
@@ -142,7 +143,8 @@ int runNetworkSimulate(const QString &file, const QStringList &args, QTextStream
 int runNetworkCheck(const QString &file, const QStringList &args, QTextStream &out,
                     QTextStream &err) {
     if (!args.isEmpty()) {
-        err << CliTr::tr("unexpected argument %1").arg(args.front()) << '\n' << usage() << '\n';
+        err << CliTr::tr("unexpected argument %1").arg(args.front()) << '\n'
+            << networkUsageText() << '\n';
         return 2;
     }
     network::NetworkDescription description;
@@ -196,7 +198,8 @@ int runNetworkCheck(const QString &file, const QStringList &args, QTextStream &o
 int runNetworkServe(const QString &file, const QStringList &args, QTextStream &out,
                     QTextStream &err) {
     if (!args.isEmpty()) {
-        err << CliTr::tr("unexpected argument %1").arg(args.front()) << '\n' << usage() << '\n';
+        err << CliTr::tr("unexpected argument %1").arg(args.front()) << '\n'
+            << networkUsageText() << '\n';
         return 2;
     }
     network::NetworkDescription description;

@@ -13,7 +13,7 @@ namespace rung::app {
 
 namespace {
 
-QString usage() {
+QString onlineUsageText() {
     return OnlineTr::tr("usage:") + QLatin1Char('\n') + onlineUsage();
 }
 
@@ -74,8 +74,8 @@ bool parseOptions(const QStringList &args, Options *o, QString *error) {
         return false;
     }
     if (kind == comms::ProtocolKind::ModbusTcp && tcp.isEmpty()) {
-        *error = OnlineTr::tr(
-            "modbus-tcp needs --tcp HOST:PORT (for RTU frames on a port: modbus)");
+        *error =
+            OnlineTr::tr("modbus-tcp needs --tcp HOST:PORT (for RTU frames on a port: modbus)");
         return false;
     }
     if (!tcp.isEmpty()) {
@@ -83,8 +83,7 @@ bool parseOptions(const QStringList &args, Options *o, QString *error) {
         bool ok = false;
         const int number = colon > 0 ? tcp.mid(colon + 1).toInt(&ok) : 0;
         if (!ok || number < 1 || number > 65535) {
-            *error =
-                OnlineTr::tr("--tcp needs HOST:PORT, e.g. 127.0.0.1:502; got %1").arg(tcp);
+            *error = OnlineTr::tr("--tcp needs HOST:PORT, e.g. 127.0.0.1:502; got %1").arg(tcp);
             return false;
         }
         o->settings.via = comms::ConnectionSettings::Via::Tcp;
@@ -118,9 +117,9 @@ bool parseOptions(const QStringList &args, Options *o, QString *error) {
         !number(retries, "--retries", 0, 10, &o->settings.link.retries))
         return false;
     if (!frame.isEmpty() && !comms::parseFrameFormat(frame, &o->settings.serial)) {
-        *error = OnlineTr::tr(
-                     "--frame must be data bits, parity and stop bits, e.g. 8N1 or 7E2; got %1")
-                     .arg(frame);
+        *error =
+            OnlineTr::tr("--frame must be data bits, parity and stop bits, e.g. 8N1 or 7E2; got %1")
+                .arg(frame);
         return false;
     }
     if (o->items.isEmpty()) {
@@ -211,7 +210,7 @@ int runReadCommand(const QStringList &args, QTextStream &out, QTextStream &err) 
     Options o;
     QString error;
     if (!parseOptions(args, &o, &error)) {
-        err << error << '\n' << usage() << '\n';
+        err << error << '\n' << onlineUsageText() << '\n';
         return 2;
     }
     // Every device is checked before the port is opened: a typo costs no time on the line.
@@ -258,7 +257,7 @@ int runWriteCommand(const QStringList &args, QTextStream &out, QTextStream &err)
     Options o;
     QString error;
     if (!parseOptions(args, &o, &error)) {
-        err << error << '\n' << usage() << '\n';
+        err << error << '\n' << onlineUsageText() << '\n';
         return 2;
     }
     // Every item is checked before the port is opened and anything is written: nothing of a

@@ -33,7 +33,7 @@ namespace {
 using comms::SerialSettings;
 using comms::slave::Fault;
 
-QString usage() {
+QString serveUsageText() {
     return ServeTr::tr(
         "usage: rungstudio-cli serve FILE [--target T] [--model M] --protocol "
         "vigor|modbus|modbus-tcp|hostlink (--pty [--link PATH] | --port NAME | --tcp "
@@ -137,7 +137,7 @@ int runServeCommand(const QStringList &args, QTextStream &out, QTextStream &err)
     qint64 period = 0;
     QString format;
     auto fail = [&err](const QString &message) {
-        err << message << '\n' << usage() << '\n';
+        err << message << '\n' << serveUsageText() << '\n';
         return 2;
     };
     for (qsizetype i = 0; i < args.size(); ++i) {

@@ -13,7 +13,7 @@ namespace rung::app {
 
 namespace {
 
-QString usage() {
+QString simulateUsageText() {
     return SimulateTr::tr("usage: rungstudio-cli simulate FILE [--target T] [--model M] --scans N "
                           "[--period MS] [--set DEV=VALUE@SCAN]... --trace DEV[,DEV...]\n"
                           "FILE is a listing (.il), a ladder text (.ladder) or a project (.rung).");
@@ -39,7 +39,8 @@ int runSimulateCommand(const QStringList &args, QTextStream &out, QTextStream &e
         const QString &a = args[i];
         if (a.startsWith(QLatin1String("--"))) {
             if (i + 1 >= args.size()) {
-                err << SimulateTr::tr("%1 needs a value").arg(a) << '\n' << usage() << '\n';
+                err << SimulateTr::tr("%1 needs a value").arg(a) << '\n'
+                    << simulateUsageText() << '\n';
                 return 2;
             }
             const QString value = args[++i];
@@ -52,12 +53,13 @@ int runSimulateCommand(const QStringList &args, QTextStream &out, QTextStream &e
         } else if (common.file.isEmpty()) {
             common.file = a;
         } else {
-            err << SimulateTr::tr("unexpected argument %1").arg(a) << '\n' << usage() << '\n';
+            err << SimulateTr::tr("unexpected argument %1").arg(a) << '\n'
+                << simulateUsageText() << '\n';
             return 2;
         }
     }
     if (common.file.isEmpty()) {
-        err << usage() << '\n';
+        err << simulateUsageText() << '\n';
         return 2;
     }
     LoadedProgram program;
@@ -65,7 +67,7 @@ int runSimulateCommand(const QStringList &args, QTextStream &out, QTextStream &e
         return status;
     simulator::TraceRequest request;
     if (!simulator::parseTraceOptions(*program.target, options, &request, &error)) {
-        err << error << '\n' << usage() << '\n';
+        err << error << '\n' << simulateUsageText() << '\n';
         return 2;
     }
 
