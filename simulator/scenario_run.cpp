@@ -27,16 +27,15 @@ struct Value {
     QString text; // as written
 
     bool isDevice() const { return kind != Kind::Constant; }
-    qint64 read() const {
-        const Engine &e = *engine;
+    qint64 read() const { // a constant has no engine
         switch (kind) {
         case Kind::Bit:
-            return e.bit(address) ? 1 : 0;
+            return engine->bit(address) ? 1 : 0;
         case Kind::Word:
         case Kind::Current:
-            return e.value(address);
+            return engine->value(address);
         case Kind::SetValue:
-            return e.setValue(address);
+            return engine->setValue(address);
         case Kind::Constant:
             break;
         }

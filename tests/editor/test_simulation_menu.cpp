@@ -15,6 +15,7 @@
 #include <QLabel>
 #include <QMainWindow>
 #include <QMenuBar>
+#include <QSettings>
 #include <QStatusBar>
 #include <QTest>
 #include <QToolBar>
@@ -26,8 +27,25 @@ using rung::waits::kPatienceMs;
 
 namespace {
 
+// The simulation's speed and period are remembered in the settings: what a test here chooses
+// is put back when it ends, so that no later test of the binary starts at 20 ms scans.
+struct RememberedSimulation {
+    QVariant speed = QSettings().value(QStringLiteral("simulation/speed"));
+    QVariant period = QSettings().value(QStringLiteral("simulation/periodMs"));
+    ~RememberedSimulation() {
+        QSettings settings;
+        for (const auto &[key, value] : {std::pair{QStringLiteral("simulation/speed"), speed},
+                                         std::pair{QStringLiteral("simulation/periodMs"), period}})
+            if (value.isValid())
+                settings.setValue(key, value);
+            else
+                settings.remove(key);
+    }
+};
+
 struct MenuAlone {
-    QMainWindow window; // the menu bar's place: no Rung Studio window
+    RememberedSimulation remembered; // first: restored after the controller has gone
+    QMainWindow window;              // the menu bar's place: no Rung Studio window
     editor::Document document;
     editor::LadderView ladder{&document};
     editor::IlEditor il{model::Target::get(model::Family::Vigor)};
