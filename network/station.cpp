@@ -98,10 +98,13 @@ void StationPort::deliver(const QByteArray &bytes, int errors, qint64 atUs) {
         const int gap = m_responder->silenceMicroseconds();
         const qint64 start = atUs - wireTimeUs(bytes.size(), m_line);
         if (gap > 0 && m_lastUs >= 0 && start - m_lastUs >= gap) {
+            const qsizetype before = m_replies.size();
             if (!m_forResponder.isEmpty())
                 m_replies += m_responder->feed(std::exchange(m_forResponder, QByteArray()));
             if (m_responder->buffered() > 0)
                 m_replies += m_responder->silence();
+            if (m_replies.size() > before)
+                m_lastAnsweredUs = m_lastUs; // the request ended with the bytes before these
         }
         keep(m_forResponder, bytes);
     }
@@ -115,11 +118,14 @@ void StationPort::answer(qint64 nowUs) {
     if (!m_responder || m_programDriven)
         return;
     QByteArrayList frames = std::exchange(m_replies, QByteArrayList());
+    const qsizetype decided = frames.size(); // answers to requests ended before, timed then
     if (!m_forResponder.isEmpty())
         frames += m_responder->feed(std::exchange(m_forResponder, QByteArray()));
     const int gap = m_responder->silenceMicroseconds();
     if (gap > 0 && m_responder->buffered() > 0 && m_lastUs >= 0 && nowUs - m_lastUs >= gap)
         frames += m_responder->silence();
+    if (frames.size() > decided)
+        m_lastAnsweredUs = m_lastUs; // the request's last byte
     for (const QByteArray &frame : frames)
         m_network->transmit(this, frame);
 }

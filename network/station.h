@@ -37,6 +37,7 @@ public:
     int takeCharacterErrors() override;
     model::MasterProtocol *master() override { return m_master.get(); }
     void setProgramDriven(bool on) override;
+    qint64 lastAnsweredRequestUs() const override { return m_lastAnsweredUs; }
 
     // The station's program drives the port (an instruction named it).
     void setUsedByProgram() { m_used = true; }
@@ -58,6 +59,7 @@ private:
     QByteArray m_forProgram;      // received, for the engine
     QByteArray m_forResponder;    // received, for the slave's side
     QByteArrayList m_replies;     // the slave's answers to frames ended by a silence, not sent yet
+    qint64 m_lastAnsweredUs = -1; // the end of the last request answered
     qint64 m_lastUs = -1;
     int m_errors = 0;
 };

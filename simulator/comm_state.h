@@ -71,6 +71,8 @@ struct PortState {
     qint64 readyUs = 0; // no request before this: the last reply's end + SM74
     int writeAt = -1;   // read-write: the datum being written, -1: a read
     std::int32_t writeValue = 0;
+    // A slave port's link supervision (SM70): counted from the first END after power-on.
+    qint64 supervisedFromUs = -1;
 };
 
 struct CommState {

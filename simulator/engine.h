@@ -344,6 +344,7 @@ private:
     void servicePorts();
     void applyFreePort(std::size_t port);
     void serviceQueries(std::size_t port);
+    void superviseSlave(std::size_t port);
     void sendQuery(std::size_t port, std::size_t task);
     void endQuery(std::size_t port, model::MasterStatus outcome);
     std::int32_t portWord(std::int32_t index, std::int32_t otherwise = 0) const {

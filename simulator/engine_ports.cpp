@@ -133,8 +133,29 @@ void Engine::servicePorts() {
                 storeWord(static_cast<std::size_t>(d.received), p.count, 16);
             continue;
         }
-        serviceQueries(k);
+        if (port && !port->config().application->master)
+            superviseSlave(k);
+        else
+            serviceQueries(k);
     }
+}
+
+// A slave port's status word (PL110 manual 2.1.2, SM70 / SM80 / SM90: "tutti i bit a 1" when
+// no correct packet with the PLC's address came for the time SM75 / SM85 / SM95 sets, in
+// seconds; 0 again with the next one). An answered request is a correct packet for it.
+void Engine::superviseSlave(std::size_t k) {
+    PortState &p = m_comm.ports[k];
+    const PortDevices &d = m_program->ports[k];
+    const model::PlcPort *port = m_portLinks[k];
+    if (d.status < 0 || d.errorLimit < 0)
+        return;
+    const qint64 now = commNowUs();
+    if (p.supervisedFromUs < 0)
+        p.supervisedFromUs = now;
+    const qint64 since = std::max(p.supervisedFromUs, port->lastAnsweredRequestUs());
+    const qint64 limitUs = qint64(portWord(d.errorLimit)) * 1'000'000;
+    const bool lost = limitUs > 0 && now - since >= limitUs;
+    storeWord(static_cast<std::size_t>(d.status), lost ? 0xFFFF : 0, 16);
 }
 
 // ----- COM / EXP -----

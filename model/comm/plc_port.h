@@ -44,6 +44,10 @@ public:
     // The program takes the port from its protocol (PL110 free-port, PL110 manual 4.2.19): while
     // on, the port answers no master and what arrives is the program's alone.
     virtual void setProgramDriven(bool on) = 0;
+    // The slave's side (a port that answers its protocol): when the last request for this
+    // station came whole and was answered (-1: none yet), for the PL110's link supervision
+    // (PL110 manual 2.1.2, SM70 / SM80 / SM90 of a slave port).
+    virtual qint64 lastAnsweredRequestUs() const { return -1; }
 };
 
 // A station's ports, by name (Target::ports: "CP2", "MODULE1", "COM1"); an engine asks once,

@@ -192,7 +192,8 @@ Target makePl110Target() {
     // interrupts and the display of the PL110-2A and its terminal. `check` warns at each use
     // (SIM101). SM1 (faults) reads 0, no fault, as it should in a simulation; SM3, SM19 and
     // SM111..SM117 are not in the manual's table. The ports' markers of COM / EXP and free-port
-    // (SM0.6..SM0.8, SM70, SM73..SM80, SM83..SM89, SM98, SM99) are simulated (PortMarkers).
+    // (SM0.6..SM0.8, SM70, SM73..SM80, SM83..SM89, SM98, SM99) are simulated (PortMarkers);
+    // of a slave port, SM70 / SM80 (the link supervision) too.
     t.unmodelled = {
         {QStringLiteral("SM2"), QStringLiteral("SM2"),
          QT_TRANSLATE_NOOP("rung::model::Target",
