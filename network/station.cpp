@@ -99,10 +99,7 @@ void StationPort::deliver(const QByteArray &bytes, int errors, qint64 atUs) {
         const qint64 start = atUs - wireTimeUs(bytes.size(), m_line);
         if (gap > 0 && m_lastUs >= 0 && start - m_lastUs >= gap) {
             const qsizetype before = m_replies.size();
-            if (!m_forResponder.isEmpty())
-                m_replies += m_responder->feed(std::exchange(m_forResponder, QByteArray()));
-            if (m_responder->buffered() > 0)
-                m_replies += m_responder->silence();
+            m_replies += feedResponder(std::exchange(m_forResponder, QByteArray()), true);
             if (m_replies.size() > before)
                 m_lastAnsweredUs = m_lastUs; // the request ended with the bytes before these
         }
@@ -114,16 +111,32 @@ void StationPort::deliver(const QByteArray &bytes, int errors, qint64 atUs) {
         keep(m_forProgram, bytes);
 }
 
+// The bytes to the slave's side, and the frame ended by a silence when `silence`: a frame the
+// responder drops (a wrong CRC or length) whose first byte is this station's address is a
+// request for it that came wrong; another slave's reply on the bus is not.
+QByteArrayList StationPort::feedResponder(QByteArray bytes, bool silence) {
+    const quint64 dropped = m_responder->statistics().dropped;
+    if (m_responder->buffered() == 0 && !bytes.isEmpty())
+        m_frameAddress = quint8(bytes.front()); // a frame begins: its address
+    const bool ours = m_frameAddress == m_config.station;
+    QByteArrayList frames;
+    if (!bytes.isEmpty())
+        frames += m_responder->feed(bytes);
+    if (silence && m_responder->buffered() > 0)
+        frames += m_responder->silence();
+    if (ours && m_responder->statistics().dropped > dropped)
+        ++m_requestErrors;
+    return frames;
+}
+
 void StationPort::answer(qint64 nowUs) {
     if (!m_responder || m_programDriven)
         return;
     QByteArrayList frames = std::exchange(m_replies, QByteArrayList());
     const qsizetype decided = frames.size(); // answers to requests ended before, timed then
-    if (!m_forResponder.isEmpty())
-        frames += m_responder->feed(std::exchange(m_forResponder, QByteArray()));
     const int gap = m_responder->silenceMicroseconds();
-    if (gap > 0 && m_responder->buffered() > 0 && m_lastUs >= 0 && nowUs - m_lastUs >= gap)
-        frames += m_responder->silence();
+    frames += feedResponder(std::exchange(m_forResponder, QByteArray()),
+                            gap > 0 && m_lastUs >= 0 && nowUs - m_lastUs >= gap);
     if (frames.size() > decided)
         m_lastAnsweredUs = m_lastUs; // the request's last byte
     for (const QByteArray &frame : frames)

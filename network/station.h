@@ -38,6 +38,7 @@ public:
     model::MasterProtocol *master() override { return m_master.get(); }
     void setProgramDriven(bool on) override;
     qint64 lastAnsweredRequestUs() const override { return m_lastAnsweredUs; }
+    quint64 requestErrors() const override { return m_requestErrors; }
 
     // The station's program drives the port (an instruction named it).
     void setUsedByProgram() { m_used = true; }
@@ -60,6 +61,9 @@ private:
     QByteArray m_forResponder;    // received, for the slave's side
     QByteArrayList m_replies;     // the slave's answers to frames ended by a silence, not sent yet
     qint64 m_lastAnsweredUs = -1; // the end of the last request answered
+    quint64 m_requestErrors = 0;  // requests addressed to the station that did not read
+    int m_frameAddress = -1;      // the first byte of the frame the responder is reading
+    QByteArrayList feedResponder(QByteArray frame, bool silence);
     qint64 m_lastUs = -1;
     int m_errors = 0;
 };

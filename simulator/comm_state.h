@@ -73,6 +73,7 @@ struct PortState {
     std::int32_t writeValue = 0;
     // A slave port's link supervision (SM70): counted from the first END after power-on.
     qint64 supervisedFromUs = -1;
+    quint64 requestErrorsBase = 0; // the port's count at power-on (SM77 counts from 0)
 };
 
 struct CommState {

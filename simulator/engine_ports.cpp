@@ -150,8 +150,14 @@ void Engine::superviseSlave(std::size_t k) {
     if (d.status < 0 || d.errorLimit < 0)
         return;
     const qint64 now = commNowUs();
-    if (p.supervisedFromUs < 0)
+    if (p.supervisedFromUs < 0) {
         p.supervisedFromUs = now;
+        p.requestErrorsBase = port->requestErrors();
+    }
+    // SM77: requests for the station that came wrong (a wrong CRC, a wrong length).
+    if (d.errors >= 0)
+        storeWord(static_cast<std::size_t>(d.errors),
+                  std::int32_t((port->requestErrors() - p.requestErrorsBase) & 0xFFFF), 16);
     const qint64 since = std::max(p.supervisedFromUs, port->lastAnsweredRequestUs());
     const qint64 limitUs = qint64(portWord(d.errorLimit)) * 1'000'000;
     const bool lost = limitUs > 0 && now - since >= limitUs;

@@ -48,6 +48,9 @@ public:
     // station came whole and was answered (-1: none yet), for the PL110's link supervision
     // (PL110 manual 2.1.2, SM70 / SM80 / SM90 of a slave port).
     virtual qint64 lastAnsweredRequestUs() const { return -1; }
+    // Requests for this station that came wrong (a wrong CRC or sum, a wrong length) so far;
+    // other stations' frames on the bus are not counted (SM77 / SM87 of a slave port).
+    virtual quint64 requestErrors() const { return 0; }
 };
 
 // A station's ports, by name (Target::ports: "CP2", "MODULE1", "COM1"); an engine asks once,
