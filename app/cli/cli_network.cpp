@@ -140,19 +140,28 @@ int runNetworkSimulate(const QString &file, const QStringList &args, QTextStream
     return 0;
 }
 
-int runNetworkCheck(const QString &file, const QStringList &args, QTextStream &out,
-                    QTextStream &err) {
+// `check` and `serve` take the file alone: read into *description, 0; else 2, said on err.
+static int readNetworkOnly(const QString &file, const QStringList &args,
+                           network::NetworkDescription *description, QTextStream &err) {
     if (!args.isEmpty()) {
         err << CliTr::tr("unexpected argument %1").arg(args.front()) << '\n'
             << networkUsageText() << '\n';
         return 2;
     }
-    network::NetworkDescription description;
     QString error;
-    if (!network::readNetworkFile(file, &description, &error)) {
+    if (!network::readNetworkFile(file, description, &error)) {
         err << error << '\n';
         return 2;
     }
+    return 0;
+}
+
+int runNetworkCheck(const QString &file, const QStringList &args, QTextStream &out,
+                    QTextStream &err) {
+    network::NetworkDescription description;
+    if (const int status = readNetworkOnly(file, args, &description, err); status != 0)
+        return status;
+    QString error;
     // Every station's program, as `check FILE` checks it.
     bool errors = false;
     for (const network::StationDescription &station : description.stations) {
@@ -197,17 +206,10 @@ int runNetworkCheck(const QString &file, const QStringList &args, QTextStream &o
 
 int runNetworkServe(const QString &file, const QStringList &args, QTextStream &out,
                     QTextStream &err) {
-    if (!args.isEmpty()) {
-        err << CliTr::tr("unexpected argument %1").arg(args.front()) << '\n'
-            << networkUsageText() << '\n';
-        return 2;
-    }
     network::NetworkDescription description;
+    if (const int status = readNetworkOnly(file, args, &description, err); status != 0)
+        return status;
     QString error;
-    if (!network::readNetworkFile(file, &description, &error)) {
-        err << error << '\n';
-        return 2;
-    }
     if (description.bridges.empty()) {
         err << NetworkTr::tr("%1: no bridges: nothing of the network reaches a real line "
                              "(\"bridges\", docs/network-format.md); simulate runs it on "

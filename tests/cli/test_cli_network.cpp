@@ -24,6 +24,8 @@
 
 #include <gtest/gtest.h>
 
+#include <functional>
+
 using rung::test::cli;
 
 namespace {
@@ -44,6 +46,32 @@ QString network(const QTemporaryDir &dir, const std::map<QString, QString> &file
 QString readAll(const QString &path) {
     QFile f(path);
     return f.open(QIODevice::ReadOnly) ? QString::fromUtf8(f.readAll()) : QString();
+}
+
+// Station `name`'s D registers, by number.
+std::function<int(int)> dRegister(const rung::network::Network &net, const QString &name) {
+    rung::network::Station *s = net.station(name);
+    return [s](int d) {
+        return s->engine().value(std::get<rung::model::Address>(
+            rung::model::parseAddress(s->target(), QStringLiteral("D%1").arg(d))));
+    };
+}
+
+// Runs a bridged network in real time until its MBUS (working area D100) has completed its
+// table twice without an error, having read the libmodbus peer's registers 0..9 into
+// D2000..D2009 (at most 15 s); false on a failed line or at the deadline.
+bool turnUntilTwoTablesRead(rung::network::RealTime &rt, const std::function<int(int)> &value,
+                            QString *failure) {
+    using rung::comms::test::peer::reg;
+    const QDeadlineTimer deadline(15000);
+    while (!deadline.hasExpired()) {
+        if (!rt.turn(5, failure))
+            return false;
+        if (value(2009) == reg(9) && value(100) == 0 && value(102) >= 2)
+            return true;
+    }
+    *failure = QStringLiteral("the MBUS did not read its table twice in 15 s");
+    return false;
 }
 
 } // namespace
@@ -412,20 +440,11 @@ TEST(CliNetwork, AnMbusMasterPollsALibmodbusSlave) {
                {QStringLiteral("rtu"), path, QStringLiteral("1")});
     ASSERT_TRUE(peer.waitForReadyRead(10000)) << peer.readAllStandardError().toStdString();
     ASSERT_TRUE(peer.readLine().startsWith("ready"));
-    rung::network::Station *m = net->station(QStringLiteral("m"));
-    auto value = [&](int d) {
-        return m->engine().value(std::get<rung::model::Address>(
-            rung::model::parseAddress(m->target(), QStringLiteral("D%1").arg(d))));
-    };
+    const auto value = dRegister(*net, QStringLiteral("m"));
     using rung::comms::test::peer::reg;
-    const QDeadlineTimer deadline(15000);
-    bool done = false;
-    while (!done && !deadline.hasExpired()) {
-        QString failure;
-        ASSERT_TRUE(rt.turn(5, &failure)) << failure.toStdString();
-        done = value(2009) == reg(9) && value(100) == 0 && value(102) >= 2; // two tables
-    }
-    EXPECT_TRUE(done) << "S2 " << std::hex << value(100);
+    QString failure;
+    EXPECT_TRUE(turnUntilTwoTablesRead(rt, value, &failure))
+        << failure.toStdString() << " S2 " << std::hex << value(100);
     for (int k = 0; k < 10; ++k)
         EXPECT_EQ(value(2000 + k), reg(k)) << k;
     EXPECT_EQ(value(2020), 4321); // written to the slave, read back from it
@@ -489,20 +508,11 @@ TEST(CliNetwork, AnMbusMasterPollsALibmodbusSlaveBehindADeviceServer) {
     QString where;
     ASSERT_TRUE(rt.addBridge(tcp, &where, &error)) << error.toStdString();
     EXPECT_EQ(where, tcp.where);
-    rung::network::Station *m = net->station(QStringLiteral("m"));
-    auto value = [&](int d) {
-        return m->engine().value(std::get<rung::model::Address>(
-            rung::model::parseAddress(m->target(), QStringLiteral("D%1").arg(d))));
-    };
+    const auto value = dRegister(*net, QStringLiteral("m"));
     using rung::comms::test::peer::reg;
-    const QDeadlineTimer deadline(15000);
-    bool done = false;
-    while (!done && !deadline.hasExpired()) {
-        QString failure;
-        ASSERT_TRUE(rt.turn(5, &failure)) << failure.toStdString();
-        done = value(2009) == reg(9) && value(100) == 0 && value(102) >= 2; // two tables
-    }
-    EXPECT_TRUE(done) << "S2 " << std::hex << value(100);
+    QString failure;
+    EXPECT_TRUE(turnUntilTwoTablesRead(rt, value, &failure))
+        << failure.toStdString() << " S2 " << std::hex << value(100);
     for (int k = 0; k < 10; ++k)
         EXPECT_EQ(value(2000 + k), reg(k)) << k;
     peer.kill();
