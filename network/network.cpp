@@ -175,6 +175,15 @@ bool Network::silent(const QString &owner, qint64 us) const {
     return false;
 }
 
+void Network::endFaults(FaultDescription::Kind kind, const QString &target) {
+    const qint64 nowMs = m_now / 1000;
+    for (FaultDescription &f : m_description.faults) {
+        const QString &on = kind == FaultDescription::Kind::Cut ? f.wire : f.station;
+        if (f.kind == kind && on == target && (f.toMs < 0 || f.toMs > nowMs))
+            f.toMs = std::max(f.fromMs, nowMs);
+    }
+}
+
 bool Network::cut(const Wire &wire, qint64 us) const {
     for (const FaultDescription &f : m_description.faults)
         if (f.kind == FaultDescription::Kind::Cut && f.wire == wire.name && us >= f.fromMs * 1000 &&

@@ -126,6 +126,13 @@ public:
     bool silent(const QString &owner, qint64 us) const;
     bool cut(const Wire &wire, qint64 us) const;
 
+    // A fault from the network's present on (the IDE's Faults menu): as the file's faults
+    // section, fromMs at or before now.
+    void addFault(FaultDescription fault) { m_description.faults.push_back(std::move(fault)); }
+    // Ends now every cut of a wire (Kind::Cut) or silence of a station or device
+    // (Kind::Silent) that lasts past now.
+    void endFaults(FaultDescription::Kind kind, const QString &target);
+
     // Bytes a bridge (a real port) puts on the endpoint's wire as if that port sent them.
     void inject(Endpoint *at, const QByteArray &bytes);
     // An endpoint joined to the wire of `beside` (a bridge's real line beside a station's

@@ -23,6 +23,9 @@ struct NetworkFileTr {
 struct NetworkTr {
     Q_DECLARE_TR_FUNCTIONS(rung::network::Network)
 };
+struct NetworkSessionTr {
+    Q_DECLARE_TR_FUNCTIONS(rung::network::NetworkSession)
+};
 struct SharedLinkTr {
     Q_DECLARE_TR_FUNCTIONS(rung::network::SharedLink)
 };

@@ -5,6 +5,8 @@
 
 #include "network_fixture.h"
 
+#include "network/devices.h"
+
 using namespace rung;
 using namespace rung::network;
 using namespace rung::network::test;

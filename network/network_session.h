@@ -1,0 +1,190 @@
+#pragma once
+
+// A network simulated in the IDE: the Network (network.h) runs on a worker thread, paced
+// against the wall clock by a speed factor, as SimulatorSession runs one program. Each
+// station is a MonitorSource of its own (StationSource), so every view the IDE has for one
+// PLC (ladder overlay, instruction list values, inputs and outputs, watch table, timing chart,
+// front panel) shows a station unchanged; device commands go to the station's engine between
+// two slices of virtual time. The control calls return at once; the owner thread never waits
+// for the network. Traffic (every frame) is collected for the owner in batches.
+//
+// Threads: the worker alone touches the Network and its engines. The owner thread (the UI)
+// calls the controls and reads snapshots, history and traffic; everything between them goes
+// through mutexes (the stations' inboxes, the history, the traffic queue, the controls).
+
+#include "network/network.h"
+
+#include "model/image/history.h"
+#include "model/image/monitor_source.h"
+#include "simulator/command_inbox.h"
+
+#include <QObject>
+
+#include <condition_variable>
+#include <memory>
+#include <mutex>
+#include <thread>
+#include <vector>
+
+namespace rung::network {
+
+class NetworkSession;
+
+// One station of a simulated network, as the views see a PLC.
+class StationSource final : public model::MonitorSource {
+    Q_OBJECT
+
+public:
+    ~StationSource() override;
+
+    const QString &stationName() const { return m_name; }
+    const model::Target &target() const { return *m_target; }
+    const model::ModelVariant *model() const { return m_model; }
+    // The file of the station's program (resolved against the network file).
+    const QString &programPath() const { return m_programPath; }
+
+    // History: the station's devices recorded after every slice of virtual time in which it
+    // scanned (MonitorSource).
+    bool watchHistory(const model::Address &address) override;
+    void
+    readHistory(const std::function<void(const model::HistoryRecorder &)> &read) const override;
+    bool setTrigger(std::optional<model::Trigger> trigger) override;
+
+protected:
+    void startCommand(CommandId id, const model::DeviceCommand &command) override;
+
+private:
+    friend class NetworkSession;
+    StationSource(NetworkSession *session, const Station &station, const QString &programPath);
+
+    NetworkSession *m_session;
+    QString m_name;
+    const model::Target *m_target;
+    const model::ModelVariant *m_model;
+    QString m_programPath;
+    simulator::CommandInbox m_inbox;
+    mutable std::mutex m_historyMutex;
+    model::HistoryRecorder m_history;
+    std::size_t m_errorsReported = 0; // worker thread
+    quint64 m_scansRecorded = 0;      // worker thread
+};
+
+class NetworkSession : public QObject {
+    Q_OBJECT
+
+public:
+    using RunState = model::MonitorSource::RunState;
+
+    // Builds the network (its programs loaded by `loader`) and starts its worker, Stopped at
+    // virtual time 0; null with what, where and why.
+    static std::unique_ptr<NetworkSession> start(const NetworkDescription &description,
+                                                 ProgramLoader loader, QString *error,
+                                                 QObject *parent = nullptr);
+    ~NetworkSession() override; // stops the worker and waits for it
+
+    const NetworkDescription &description() const { return m_description; }
+    const std::vector<StationSource *> &stations() const { return m_sources; }
+    StationSource *station(const QString &name) const;
+    // The wires as the network joined them: name and ends ("master/CP2", "tc").
+    struct WireInfo {
+        QString name;
+        QStringList ends;
+    };
+    const std::vector<WireInfo> &wires() const { return m_wires; }
+
+    void run();
+    void pause();
+    // Back to power-on: the network is built again from its description (the programs read
+    // again from their files), virtual time 0, the traffic and the faults made by hand gone.
+    void stop();
+    // One period of the network's virtual time (every station scans once at the default
+    // period), then Paused.
+    void singleScan();
+    // As much virtual time, then Paused.
+    void runFor(qint64 durationMs);
+    // Times real time; 0 or less: as fast as it goes.
+    void setSpeed(double factor);
+    double speed() const;
+    RunState runState() const { return m_runState; }
+    // Virtual time of the latest slice (any thread).
+    qint64 nowUs() const { return m_nowUs.load(std::memory_order_relaxed); }
+    // Why the network could not be built again at stop, or a station's runtime error; empty
+    // when nothing is wrong.
+    QString errorText() const { return m_errorText; }
+
+    // Faults from now on (virtual time), as the network file's faults section has them
+    // (docs/network-format.md): a cut wire delivers nothing, a silent station or device
+    // sends nothing, the next frame on a wire has a byte changed. Each returns at once.
+    void setWireCut(const QString &wire, bool cut);
+    void setSilent(const QString &stationOrDevice, bool silent);
+    void corruptNextFrame(const QString &wire, int byte = 0, int mask = 0x01);
+    bool wireCut(const QString &wire) const;
+    bool silent(const QString &stationOrDevice) const;
+
+    // The frames sent since the last call, oldest first (owner thread).
+    std::vector<TrafficRecord> takeTraffic();
+
+signals:
+    void runStateChanged(rung::model::MonitorSource::RunState state);
+    void errorTextChanged(const QString &text);
+    // Frames are waiting for takeTraffic() (once per batch, not per frame).
+    void trafficAvailable();
+    // The virtual clock moved (on the readers' beat).
+    void clockChanged(qint64 nowUs);
+
+private:
+    friend class StationSource;
+    NetworkSession(NetworkDescription description, ProgramLoader loader,
+                   std::unique_ptr<Network> network, QObject *parent);
+    enum class Mode { Stopped, Paused, Running };
+    struct Fault {
+        enum class Kind { Cut, Silent, Corrupt } kind;
+        QString target;
+        bool on = true;
+        int byte = 0;
+        int mask = 1;
+    };
+
+    void control(const std::function<void()> &change);
+    void setRunState(RunState state);
+    void setError(const QString &text);
+    void post(std::function<void()> function); // any thread -> owner thread
+    Q_INVOKABLE void runPosted();
+    void workerLoop();
+    void attachTraffic(Network &network);
+    void applyFaults(Network &network, std::vector<Fault> faults);
+    void publish(Network &network, bool answer);
+    void afterSlice(Network &network);
+
+    NetworkDescription m_description;
+    ProgramLoader m_loader;
+    std::unique_ptr<Network> m_initial; // built on the owner thread, handed to the worker
+    std::vector<StationSource *> m_sources;
+    std::vector<WireInfo> m_wires;
+    RunState m_runState = RunState::Stopped; // owner thread
+    QString m_errorText;                     // owner thread
+    std::atomic<qint64> m_nowUs{0};
+
+    // Controls, under m_mutex.
+    mutable std::mutex m_mutex;
+    std::condition_variable m_wake;
+    Mode m_mode = Mode::Stopped;
+    qint64 m_budgetUs = 0; // Paused: virtual time still to run (single scan, run for)
+    bool m_reset = false;
+    bool m_quit = false;
+    double m_speed = 1.0;
+    quint64 m_generation = 0;
+    std::vector<Fault> m_faults;      // to apply at the next slice
+    std::vector<Fault> m_faultsShown; // as the user set them (owner's view)
+
+    std::mutex m_trafficMutex;
+    std::vector<TrafficRecord> m_traffic;
+    bool m_trafficTold = false;
+
+    std::mutex m_postMutex;
+    std::vector<std::function<void()>> m_posted;
+
+    std::thread m_worker;
+};
+
+} // namespace rung::network
