@@ -30,6 +30,20 @@ constexpr ExampleTitle kTitles[] = {
      QT_TRANSLATE_NOOP("rung::app::ExampleTitles", "Latch, START has priority")},
     {"stop-first-latch", QT_TRANSLATE_NOOP("rung::app::ExampleTitles", "Latch, STOP has priority")},
     {"traffic-light", QT_TRANSLATE_NOOP("rung::app::ExampleTitles", "Traffic light")},
+    // The networks (File > Examples > Networks).
+    {"easy-link",
+     QT_TRANSLATE_NOOP("rung::app::ExampleTitles", "Easy Link: a master and two slaves")},
+    {"cpu-link", QT_TRANSLATE_NOOP("rung::app::ExampleTitles", "CPU Link")},
+    {"parallel-link", QT_TRANSLATE_NOOP("rung::app::ExampleTitles", "Parallel Link")},
+    {"modbus", QT_TRANSLATE_NOOP("rung::app::ExampleTitles", "MODBUS master (MBUS) and slaves")},
+    {"modbus-table",
+     QT_TRANSLATE_NOOP("rung::app::ExampleTitles", "MODBUS master with a table of requests")},
+    {"non-protocol",
+     QT_TRANSLATE_NOOP("rung::app::ExampleTitles", "Non-protocol communication (RS)")},
+    {"vb-1com", QT_TRANSLATE_NOOP("rung::app::ExampleTitles", "VB-1COM module (FROM / TO)")},
+    {"pl110-exp", QT_TRANSLATE_NOOP("rung::app::ExampleTitles", "PL110 EXP1 MODBUS master")},
+    {"pl110-free-port", QT_TRANSLATE_NOOP("rung::app::ExampleTitles", "PL110 free-port (SEND)")},
+    {"pl110-vigor", QT_TRANSLATE_NOOP("rung::app::ExampleTitles", "A PL110 polling a Vigor")},
 };
 
 } // namespace

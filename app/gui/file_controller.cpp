@@ -20,6 +20,7 @@
 #include "model/ladder/ladder_text.h"
 #include "model/project/program_file.h"
 #include "model/project/project.h"
+#include "network/network_file.h"
 
 #include <QComboBox>
 #include <QDialog>
@@ -223,13 +224,17 @@ bool FileController::openFile(const QString &path, const QString &targetId, bool
         return false;
     };
     const QString suffix = QFileInfo(path).suffix().toLower();
-    // Networks are a file type of the product (the desktop's MIME types name it) that this
-    // window does not open yet: said plainly, not read as a listing.
-    // TODO(issue 30): open them here, then add their MIME type to the .desktop file.
-    if (suffix == QLatin1String("rungnet"))
-        return fail(tr("%1: this version of Rung Studio cannot open networks (.rungnet) in "
-                       "the window yet")
-                        .arg(QDir::toNativeSeparators(path)));
+    // A network opens in a window of its own (network_window.h), beside this one.
+    if (suffix == QLatin1String(network::kNetworkExtension)) {
+        QString error;
+        if (!m_networkOpener || !m_networkOpener(path, &error))
+            return fail(
+                error.isEmpty()
+                    ? tr("%1: networks cannot be opened here").arg(QDir::toNativeSeparators(path))
+                    : error);
+        addRecent(path);
+        return true;
+    }
     // A scenario test opens the program it names, with the scenario chosen in the Tests dock
     // (what a double-click on a .rungtest in a file manager means).
     if (suffix == QLatin1String("rungtest")) {
@@ -402,13 +407,16 @@ void FileController::fileNew() {
 }
 
 void FileController::fileOpen() {
-    if (!maybeSave())
-        return;
     const QString path = askOpenFile(
         m_window, tr("Open"), m_document->path(),
         tr("Rung Studio projects (*.rung);;Instruction lists (*.il *.txt);;Ladder texts "
-           "(*.ladder);;Scenario tests (*.rungtest)"));
-    if (!path.isEmpty())
+           "(*.ladder);;Scenario tests (*.rungtest);;Networks of PLCs (*.rungnet)"));
+    if (path.isEmpty())
+        return;
+    // A network opens beside the program shown, which stays as it is: nothing to save first.
+    const bool network = QFileInfo(path).suffix().compare(QLatin1String(network::kNetworkExtension),
+                                                          Qt::CaseInsensitive) == 0;
+    if (network || maybeSave())
         openFile(path);
 }
 
@@ -562,7 +570,23 @@ void FileController::rebuildExamplesMenu() {
             });
         }
     }
-    m_examplesMenu->setEnabled(!byTarget.empty());
+    // The networks of the manuals' communication chapters, each in a window of its own.
+    QStringList networks;
+    if (const QString folder = examplesFolder(); !folder.isEmpty()) {
+        QDirIterator it(folder, {QStringLiteral("*.") + QLatin1String(network::kNetworkExtension)},
+                        QDir::Files, QDirIterator::Subdirectories);
+        while (it.hasNext())
+            networks << it.next();
+    }
+    networks.sort();
+    if (!networks.isEmpty()) {
+        QMenu *sub = m_examplesMenu->addMenu(tr("Networks"));
+        sub->setObjectName(QStringLiteral("networkExamplesMenu"));
+        for (const QString &path : networks)
+            sub->addAction(exampleTitle(nullptr, QFileInfo(path).completeBaseName()), this,
+                           [this, path] { openFile(path); });
+    }
+    m_examplesMenu->setEnabled(!byTarget.empty() || !networks.isEmpty());
 }
 
 } // namespace rung::app

@@ -14,6 +14,7 @@
 #include <QStringList>
 #include <QTimer>
 
+#include <functional>
 #include <memory>
 #include <vector>
 
@@ -68,6 +69,11 @@ public:
     void closing();
 
     QString recoveryPath() const; // this window's (recovery.h)
+
+    // Opens a network (.rungnet) in a window of its own; false with why. The main window
+    // sets it (network_window.h); without one a network is refused with a reason.
+    using NetworkOpener = std::function<bool(const QString &path, QString *error)>;
+    void setNetworkOpener(NetworkOpener opener) { m_networkOpener = std::move(opener); }
     void writeRecovery();
     // Offers the recovery file of an instance that is gone (crashed), newest first; true when
     // one was recovered: it is then the open program, modified, with its original file.
@@ -116,6 +122,7 @@ private:
     QPointer<QWidget> m_window;
     QPointer<QMenu> m_recentMenu;
     QPointer<QMenu> m_examplesMenu;
+    NetworkOpener m_networkOpener;
     QTimer m_recoveryTimer;
     std::unique_ptr<RecoveryFile> m_recovery;
     QString m_savedPending; // the list as typed that the file holds (pendingListing)

@@ -80,6 +80,8 @@ MainWindow::MainWindow(QWidget *parent)
         refreshProjectInfo();
         updateTitle();
     });
+    m_files->setNetworkOpener(
+        [this](const QString &path, QString *error) { return openNetwork(path, error) != nullptr; });
     buildActions();
 
     connect(m_document, &editor::Document::nameChanged, this, [this] {

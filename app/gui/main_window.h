@@ -51,6 +51,7 @@ class ElidingLabel;
 class FileController;
 class LayoutController;
 class ListingController;
+class NetworkWindow;
 class OnlineController;
 class RecoveryFile;
 class ScanDebuggerView;
@@ -111,6 +112,10 @@ public:
     void writeRecovery();
     bool offerRecovery(bool ask = true);
     void start(const QString &file, const QString &targetId, bool askToRecover = true);
+
+    // A network (.rungnet) in a window of its own beside this one (main_window_network.cpp);
+    // null with why. Its stations' programs open here for editing.
+    NetworkWindow *openNetwork(const QString &path, QString *error);
 
     // Where the live values come from (main_window_monitor.cpp).
     enum class MonitorOrigin { Simulation, Online, History };

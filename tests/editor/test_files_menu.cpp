@@ -26,6 +26,9 @@
 #include <QTimer>
 
 #include "tests/editor/window_fixture.h"
+#include "app/gui/network_window.h"
+
+#include <QDir>
 
 #include <gtest/gtest.h>
 
@@ -38,6 +41,9 @@ TEST(FilesMenu, ExamplesForEveryTargetOpenAsUntitledCopies) {
     QStringList targets;
     for (QAction *sub : examples->actions()) {
         ASSERT_NE(sub->menu(), nullptr);
+        // The networks open in windows of their own (ExamplesIncludeTheManualsNetworks).
+        if (sub->menu()->objectName() == QStringLiteral("networkExamplesMenu"))
+            continue;
         targets << sub->text();
         ASSERT_FALSE(sub->menu()->actions().isEmpty()) << sub->text().toStdString();
         for (QAction *example : sub->menu()->actions()) {
@@ -52,6 +58,29 @@ TEST(FilesMenu, ExamplesForEveryTargetOpenAsUntitledCopies) {
     for (model::Family f : model::Target::families())
         EXPECT_TRUE(targets.contains(model::Target::get(f).displayName))
             << model::Target::get(f).displayName.toStdString();
+}
+
+// File > Examples > Networks: every network of the manuals' communication chapters, each
+// opening in a window of its own, the program shown in the main window kept.
+TEST(FilesMenu, ExamplesIncludeTheManualsNetworks) {
+    app::MainWindow window;
+    QMenu *examples = test::submenu(window, QStringLiteral("Examples"));
+    ASSERT_NE(examples, nullptr);
+    QMenu *networks = examples->findChild<QMenu *>(QStringLiteral("networkExamplesMenu"));
+    ASSERT_NE(networks, nullptr);
+    const QDir folder(QStringLiteral(RUNG_SOURCE_DIR "/resources/examples/networks"));
+    const auto files = folder.entryList(QDir::Dirs | QDir::NoDotAndDotDot);
+    ASSERT_EQ(networks->actions().size(), files.size());
+    const int rungs = int(window.document()->ladder().rungs.size());
+    for (QAction *example : networks->actions()) {
+        example->trigger();
+        EXPECT_FALSE(files.contains(example->text())) << example->text().toStdString(); // a title
+        EXPECT_EQ(window.findChildren<app::NetworkWindow *>().size(), 1)
+            << example->text().toStdString();
+        for (app::NetworkWindow *w : window.findChildren<app::NetworkWindow *>())
+            delete w;
+    }
+    EXPECT_EQ(int(window.document()->ladder().rungs.size()), rungs);
 }
 
 // Titles to read, not file names: the resource "vigor/traffic-light.rung" is "Traffic light",

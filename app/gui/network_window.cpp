@@ -1,0 +1,486 @@
+#include "app/gui/network_window.h"
+
+#include "app/cli/cli_network.h"
+#include "app/gui/network_watch_model.h"
+#include "app/gui/simulation_controller.h"
+
+#include "editor/document.h"
+#include "editor/io_panel.h"
+#include "editor/ladder_view.h"
+#include "model/convert/convert.h"
+#include "model/ladder/ladder_text.h"
+#include "model/listing/il.h"
+#include "model/project/program_file.h"
+#include "network/network_file.h"
+#include "network/network_session.h"
+
+#include <QActionGroup>
+#include <QCloseEvent>
+#include <QComboBox>
+#include <QDir>
+#include <QDockWidget>
+#include <QFileInfo>
+#include <QHBoxLayout>
+#include <QHeaderView>
+#include <QKeySequence>
+#include <QLabel>
+#include <QLineEdit>
+#include <QListWidget>
+#include <QMenuBar>
+#include <QPushButton>
+#include <QStackedWidget>
+#include <QStatusBar>
+#include <QStyle>
+#include <QTableView>
+#include <QToolBar>
+#include <QVBoxLayout>
+
+namespace rung::app {
+
+using RunState = model::MonitorSource::RunState;
+
+NetworkWindow::NetworkWindow(QWidget *parent)
+    : QMainWindow(parent) {
+    setObjectName(QStringLiteral("networkWindow"));
+    setAttribute(Qt::WA_DeleteOnClose);
+    buildWindow();
+    buildMenus();
+    retranslate();
+    resize(1280, 720);
+}
+
+NetworkWindow::~NetworkWindow() {
+    // The views first: they read the stations' sources, which the session owns.
+    for (StationView &v : m_views) {
+        v.ladder->setMonitorSource(nullptr);
+        v.io->setMonitorSource(nullptr);
+    }
+    m_watch->setSession(nullptr);
+}
+
+void NetworkWindow::buildWindow() {
+    m_ladders = new QStackedWidget(this);
+    m_ladders->setObjectName(QStringLiteral("networkLadders"));
+    setCentralWidget(m_ladders);
+
+    m_stationList = new QListWidget(this);
+    m_stationList->setObjectName(QStringLiteral("networkStations"));
+    connect(m_stationList, &QListWidget::currentRowChanged, this, [this](int row) {
+        if (row >= 0 && row < int(m_views.size()))
+            selectStation(m_views[std::size_t(row)].name);
+    });
+    connect(m_stationList, &QListWidget::itemActivated, this, [this](QListWidgetItem *item) {
+        const int row = m_stationList->row(item);
+        if (row >= 0 && row < int(m_views.size()))
+            emit openProgramRequested(m_views[std::size_t(row)].source->programPath());
+    });
+    m_stationsDock = new QDockWidget(this);
+    m_stationsDock->setObjectName(QStringLiteral("networkStationsDock"));
+    m_stationsDock->setWidget(m_stationList);
+    addDockWidget(Qt::LeftDockWidgetArea, m_stationsDock);
+
+    m_ioPanels = new QStackedWidget(this);
+    m_ioDock = new QDockWidget(this);
+    m_ioDock->setObjectName(QStringLiteral("networkIoDock"));
+    m_ioDock->setWidget(m_ioPanels);
+    addDockWidget(Qt::LeftDockWidgetArea, m_ioDock);
+
+    m_watch = new NetworkWatchModel(this);
+    auto *watchBox = new QWidget(this);
+    auto *watchLayout = new QVBoxLayout(watchBox);
+    watchLayout->setContentsMargins(2, 2, 2, 2);
+    auto *line = new QHBoxLayout;
+    m_watchLine = new QLineEdit(watchBox);
+    m_watchLine->setObjectName(QStringLiteral("networkWatchLine"));
+    connect(m_watchLine, &QLineEdit::returnPressed, this, &NetworkWindow::addWatchedFromLine);
+    auto *add = new QPushButton(watchBox);
+    add->setObjectName(QStringLiteral("networkWatchAdd"));
+    connect(add, &QPushButton::clicked, this, &NetworkWindow::addWatchedFromLine);
+    line->addWidget(m_watchLine, 1);
+    line->addWidget(add);
+    watchLayout->addLayout(line);
+    m_watchView = new QTableView(watchBox);
+    m_watchView->setObjectName(QStringLiteral("networkWatchTable"));
+    m_watchView->setModel(m_watch);
+    m_watchView->verticalHeader()->hide();
+    m_watchView->horizontalHeader()->setSectionResizeMode(NetworkWatchModel::Device,
+                                                          QHeaderView::ResizeToContents);
+    m_watchView->horizontalHeader()->setStretchLastSection(true);
+    m_watchView->setSelectionBehavior(QAbstractItemView::SelectRows);
+    m_watchView->setEditTriggers(QAbstractItemView::DoubleClicked |
+                                 QAbstractItemView::EditKeyPressed |
+                                 QAbstractItemView::AnyKeyPressed);
+    watchLayout->addWidget(m_watchView, 1);
+    m_removeWatch = new QAction(this);
+    m_removeWatch->setShortcut(QKeySequence::Delete);
+    m_removeWatch->setShortcutContext(Qt::WidgetShortcut);
+    connect(m_removeWatch, &QAction::triggered, this, [this] {
+        const QModelIndex i = m_watchView->currentIndex();
+        if (i.isValid())
+            m_watch->removeRow(i.row());
+    });
+    m_watchView->addAction(m_removeWatch);
+    m_watchView->setContextMenuPolicy(Qt::ActionsContextMenu);
+    m_watchDock = new QDockWidget(this);
+    m_watchDock->setObjectName(QStringLiteral("networkWatchDock"));
+    m_watchDock->setWidget(watchBox);
+    addDockWidget(Qt::RightDockWidgetArea, m_watchDock);
+
+    m_status = new QLabel(this);
+    m_status->setObjectName(QStringLiteral("networkStatus"));
+    statusBar()->addPermanentWidget(m_status);
+}
+
+void NetworkWindow::buildMenus() {
+    menuBar()->clear();
+    for (QToolBar *bar : findChildren<QToolBar *>())
+        delete bar;
+    auto *tools = addToolBar(tr("Network"));
+    tools->setObjectName(QStringLiteral("networkToolBar"));
+
+    QMenu *file = menuBar()->addMenu(tr("&Network"));
+    m_editProgram = file->addAction(tr("&Edit Station Program"), this, [this] {
+        for (const StationView &v : m_views)
+            if (v.name == currentStation())
+                emit openProgramRequested(v.source->programPath());
+    });
+    m_editProgram->setObjectName(QStringLiteral("networkEditProgram"));
+    file->addSeparator();
+    m_close = file->addAction(tr("&Close Network"), QKeySequence::Close, this, &QWidget::close);
+
+    m_simulationMenu = menuBar()->addMenu(tr("&Simulation"));
+    auto add = [&](const char *name, const QString &text, QStyle::StandardPixmap icon,
+                   const QKeySequence &key, auto slot) {
+        QAction *a = m_simulationMenu->addAction(style()->standardIcon(icon), text);
+        a->setObjectName(QString::fromLatin1(name));
+        a->setShortcut(key);
+        //: a toolbar button's tooltip: its name and its key
+        a->setToolTip(tr("%1 (%2)").arg(QString(text).remove(QLatin1Char('&')),
+                                        key.toString(QKeySequence::NativeText)));
+        connect(a, &QAction::triggered, this, slot);
+        tools->addAction(a);
+        return a;
+    };
+    m_run = add("networkRun", tr("&Run"), QStyle::SP_MediaPlay, QKeySequence(Qt::Key_F10),
+                [this] { m_session->run(); });
+    m_pause = add("networkPause", tr("&Pause"), QStyle::SP_MediaPause, QKeySequence(Qt::Key_F11),
+                  [this] { m_session->pause(); });
+    m_stop = add("networkStop", tr("&Stop"), QStyle::SP_MediaStop,
+                 QKeySequence(Qt::SHIFT | Qt::Key_F11), [this] { m_session->stop(); });
+    m_scan = add("networkSingleScan", tr("Single S&can"), QStyle::SP_MediaSeekForward,
+                 QKeySequence(Qt::Key_F12), [this] { m_session->singleScan(); });
+    m_speedMenu = m_simulationMenu->addMenu(tr("Spee&d"));
+    auto *speeds = new QActionGroup(m_speedMenu);
+    for (const double factor : {0.1, 0.5, 1.0, 2.0, 5.0, 10.0, 100.0, 0.0}) {
+        QAction *a = m_speedMenu->addAction(factor > 0 ? tr("x%1 Real Time").arg(factor)
+                                                       : tr("As &Fast as Possible"));
+        a->setData(factor);
+        a->setCheckable(true);
+        a->setChecked(m_session ? qFuzzyCompare(factor + 1, m_session->speed() + 1)
+                                : factor == 1.0);
+        speeds->addAction(a);
+        connect(a, &QAction::triggered, this, [this, factor] {
+            if (m_session)
+                m_session->setSpeed(factor);
+        });
+    }
+    tools->addSeparator();
+    m_selectorLabel = new QLabel(tr("Station:"), tools);
+    tools->addWidget(m_selectorLabel);
+    if (!m_selector) {
+        m_selector = new QComboBox(this);
+        m_selector->setObjectName(QStringLiteral("networkStationSelector"));
+        m_selector->setSizeAdjustPolicy(QComboBox::AdjustToContents);
+        connect(m_selector, &QComboBox::currentIndexChanged, this, [this](int i) {
+            if (i >= 0 && i < int(m_views.size()))
+                selectStation(m_views[std::size_t(i)].name);
+        });
+    }
+    tools->addWidget(m_selector);
+
+    m_faultsMenu = menuBar()->addMenu(tr("F&aults"));
+    m_faultsMenu->setObjectName(QStringLiteral("networkFaultsMenu"));
+    connect(m_faultsMenu, &QMenu::aboutToShow, this, &NetworkWindow::buildFaultsMenu);
+    buildFaultsMenu();
+
+    QMenu *view = menuBar()->addMenu(tr("&View"));
+    view->addAction(m_stationsDock->toggleViewAction());
+    view->addAction(m_ioDock->toggleViewAction());
+    view->addAction(m_watchDock->toggleViewAction());
+    updateActions();
+}
+
+void NetworkWindow::buildFaultsMenu() {
+    m_faultsMenu->clear();
+    if (!m_session) {
+        m_faultsMenu->addAction(tr("No network is open"))->setEnabled(false);
+        return;
+    }
+    for (const auto &w : m_session->wires()) {
+        //: %1 a wire's name, %2 its ends ("master/CP2, s5/CP2")
+        QAction *cut = m_faultsMenu->addAction(
+            tr("Cut Wire %1 (%2)").arg(w.name, w.ends.join(QStringLiteral(", "))));
+        cut->setObjectName(QStringLiteral("faultCut_") + w.name);
+        cut->setCheckable(true);
+        cut->setChecked(m_session->wireCut(w.name));
+        connect(cut, &QAction::toggled, this, [this, name = w.name](bool on) {
+            m_session->setWireCut(name, on);
+            statusBar()->showMessage(on ? tr("Wire %1 is cut: nothing it carries arrives").arg(name)
+                                        : tr("Wire %1 is joined again").arg(name),
+                                     5000);
+        });
+        QAction *corrupt = m_faultsMenu->addAction(tr("Corrupt the Next Frame on %1").arg(w.name));
+        corrupt->setObjectName(QStringLiteral("faultCorrupt_") + w.name);
+        connect(corrupt, &QAction::triggered, this, [this, name = w.name] {
+            m_session->corruptNextFrame(name, 1, 0x01);
+            statusBar()->showMessage(
+                tr("The next frame on %1 will arrive with its second byte changed").arg(name),
+                5000);
+        });
+    }
+    m_faultsMenu->addSeparator();
+    QStringList owners;
+    for (const auto &s : m_session->description().stations)
+        owners << s.name;
+    for (const auto &d : m_session->description().devices)
+        owners << d.name;
+    for (const QString &owner : owners) {
+        QAction *silence = m_faultsMenu->addAction(tr("Silence %1").arg(owner));
+        silence->setObjectName(QStringLiteral("faultSilent_") + owner);
+        silence->setCheckable(true);
+        silence->setChecked(m_session->silent(owner));
+        connect(silence, &QAction::toggled, this,
+                [this, owner](bool on) { m_session->setSilent(owner, on); });
+    }
+    m_faultsMenu->addSeparator();
+    QAction *note = m_faultsMenu->addAction(tr("Stop ends every fault made here"));
+    note->setEnabled(false);
+}
+
+void NetworkWindow::retranslate() {
+    m_stationsDock->setWindowTitle(tr("Stations"));
+    m_ioDock->setWindowTitle(tr("Inputs and Outputs"));
+    m_watchDock->setWindowTitle(tr("Network Watch"));
+    m_watchLine->setPlaceholderText(tr("Station/device, e.g. s5/D10"));
+    if (auto *add = findChild<QPushButton *>(QStringLiteral("networkWatchAdd")))
+        add->setText(tr("&Watch"));
+    m_removeWatch->setText(tr("Remove From Watch"));
+    m_stationList->setToolTip(tr("Double-click a station to edit its program"));
+    if (!m_path.isEmpty())
+        //: the window's title: the network file's name
+        setWindowTitle(tr("%1 - Network - Rung Studio").arg(QFileInfo(m_path).fileName()));
+    else
+        setWindowTitle(tr("Network - Rung Studio"));
+    updateStatus();
+}
+
+void NetworkWindow::changeEvent(QEvent *event) {
+    if (event->type() == QEvent::LanguageChange) {
+        buildMenus();
+        retranslate();
+    }
+    QMainWindow::changeEvent(event);
+}
+
+void NetworkWindow::closeEvent(QCloseEvent *event) {
+    if (m_session)
+        m_session->pause();
+    event->accept();
+}
+
+bool NetworkWindow::loadStationDocument(StationView &view, QString *error) {
+    model::ProgramFileOptions options;
+    options.target = view.source->target().id;
+    std::optional<model::ProgramFile> file =
+        model::openProgramFile(view.source->programPath(),
+                               model::programFileKind(view.source->programPath()), options, error);
+    if (!file)
+        return false;
+    model::Project project;
+    if (file->kind == model::ProgramFileKind::Project) {
+        project = file->project;
+    } else {
+        project.target = file->target;
+        if (file->kind == model::ProgramFileKind::LadderText) {
+            const model::LadderTextResult ladder =
+                model::parseLadderText(*file->target, file->text);
+            if (!ladder.ok()) {
+                *error = ladder.errors.front().message;
+                return false;
+            }
+            project.program = ladder.ladder;
+        } else {
+            const model::ParseResult parsed =
+                model::parseInstructionList(*file->target, file->text, view.source->model());
+            const model::ToLadderResult ladder =
+                parsed.ok() ? model::listToLadder(parsed.list) : model::ToLadderResult{};
+            if (!parsed.ok() || !ladder.ok()) {
+                *error = parsed.ok()
+                             ? tr("%1: the listing does not draw as a ladder")
+                                   .arg(QDir::toNativeSeparators(view.source->programPath()))
+                             : parsed.errors.front().message;
+                return false;
+            }
+            project.program = ladder.ladder;
+        }
+    }
+    if (view.source->model())
+        project.model = view.source->model()->name;
+    view.document->setProject(project, view.source->programPath());
+    return true;
+}
+
+bool NetworkWindow::open(const QString &path, QString *error) {
+    network::NetworkDescription description;
+    if (!network::readNetworkFile(path, &description, error))
+        return false;
+    std::unique_ptr<network::NetworkSession> session =
+        network::NetworkSession::start(description, cliProgramLoader(), error);
+    if (!session)
+        return false;
+    m_path = QFileInfo(path).absoluteFilePath();
+    m_session = std::move(session);
+    m_watch->setSession(m_session.get());
+    m_selector->blockSignals(true);
+    for (network::StationSource *source : m_session->stations()) {
+        StationView v;
+        v.name = source->stationName();
+        v.source = source;
+        v.document = new editor::Document(this);
+        QString why;
+        if (!loadStationDocument(v, &why))
+            statusBar()->showMessage(why, 10000);
+        // The running network has the program as its file was at the start (or the last
+        // Stop): the ladder here shows it, and edits are made in the main window.
+        v.document->setRungEditGuard([this](int, int) {
+            statusBar()->showMessage(tr("A station's program is edited in the main window: "
+                                        "Network > Edit Station Program; Stop reads it again"),
+                                     8000);
+            return false;
+        });
+        v.ladder = new editor::LadderView(v.document, m_ladders);
+        v.ladder->setObjectName(QStringLiteral("networkLadder_") + v.name);
+        v.ladder->setMonitorSource(source);
+        m_ladders->addWidget(v.ladder);
+        v.io = new editor::IoPanel(v.document, m_ioPanels);
+        v.io->setMonitorSource(source);
+        m_ioPanels->addWidget(v.io);
+        //: a station in the selector: its name, the PLC family and model, e.g. "s5 (Vigor M/VB/VH
+        //: VB)"
+        const QString label = tr("%1 (%2 %3)")
+                                  .arg(v.name, source->target().displayName,
+                                       source->model() ? source->model()->name : QString())
+                                  .trimmed();
+        m_selector->addItem(label);
+        m_stationList->addItem(label);
+        m_views.push_back(v);
+    }
+    m_selector->blockSignals(false);
+    connect(m_session.get(), &network::NetworkSession::runStateChanged, this, [this] {
+        updateActions();
+        updateStatus();
+    });
+    connect(m_session.get(), &network::NetworkSession::clockChanged, this,
+            &NetworkWindow::updateStatus);
+    connect(m_session.get(), &network::NetworkSession::errorTextChanged, this,
+            [this](const QString &text) {
+                if (!text.isEmpty())
+                    statusBar()->showMessage(text, 15000);
+            });
+    if (!m_views.empty())
+        selectStation(m_views.front().name);
+    buildFaultsMenu();
+    updateActions();
+    retranslate();
+    return true;
+}
+
+QString NetworkWindow::currentStation() const {
+    const int i = m_ladders->currentIndex();
+    return i >= 0 && i < int(m_views.size()) ? m_views[std::size_t(i)].name : QString();
+}
+
+bool NetworkWindow::selectStation(const QString &name) {
+    for (std::size_t i = 0; i < m_views.size(); ++i)
+        if (m_views[i].name == name) {
+            const bool changed = m_ladders->currentIndex() != int(i);
+            m_ladders->setCurrentIndex(int(i));
+            m_ioPanels->setCurrentIndex(int(i));
+            m_selector->setCurrentIndex(int(i));
+            m_stationList->setCurrentRow(int(i));
+            if (changed)
+                emit stationChanged(name);
+            return true;
+        }
+    return false;
+}
+
+editor::LadderView *NetworkWindow::ladderView(const QString &station) const {
+    for (const StationView &v : m_views)
+        if (v.name == station)
+            return v.ladder;
+    return nullptr;
+}
+
+editor::Document *NetworkWindow::document(const QString &station) const {
+    for (const StationView &v : m_views)
+        if (v.name == station)
+            return v.document;
+    return nullptr;
+}
+
+bool NetworkWindow::watch(const QString &device) {
+    QString error;
+    if (!m_watch->addDevice(device, &error)) {
+        statusBar()->showMessage(error, 10000);
+        return false;
+    }
+    return true;
+}
+
+void NetworkWindow::addWatchedFromLine() {
+    if (watch(m_watchLine->text()))
+        m_watchLine->clear();
+}
+
+QString NetworkWindow::statusText() const {
+    if (!m_session)
+        return tr("No network");
+    QString state;
+    switch (m_session->runState()) {
+    case RunState::Running:
+        state = tr("Running");
+        break;
+    case RunState::Stepping:
+        state = tr("Stepping");
+        break;
+    case RunState::Paused:
+        state = tr("Paused");
+        break;
+    default:
+        state = tr("Stopped");
+        break;
+    }
+    //: %1 run state, %2 virtual time, %3 number of stations
+    return tr("%1, %2, %n station(s)", nullptr, int(m_views.size()))
+        .arg(state, SimulationController::clockText(m_session->nowUs() / 1000));
+}
+
+void NetworkWindow::updateStatus() {
+    if (m_status)
+        m_status->setText(statusText());
+}
+
+void NetworkWindow::updateActions() {
+    const bool have = m_session != nullptr;
+    const RunState s = have ? m_session->runState() : RunState::Offline;
+    if (m_run) {
+        m_run->setEnabled(have && s != RunState::Running);
+        m_pause->setEnabled(have && (s == RunState::Running || s == RunState::Stepping));
+        m_stop->setEnabled(have && s != RunState::Stopped);
+        m_scan->setEnabled(have && s != RunState::Running);
+        m_editProgram->setEnabled(have);
+    }
+}
+
+} // namespace rung::app

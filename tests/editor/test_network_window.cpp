@@ -1,0 +1,155 @@
+// A network in the IDE (network_window.h): File > Open of a .rungnet opens its window, the
+// station selector chooses what the ladder shows, a value crosses from one station to another
+// in the network's watch table, a wire cut from the Faults menu raises the master's error, and
+// a station's program opens in the main window for editing.
+
+#include "app/gui/network_watch_model.h"
+#include "app/gui/network_window.h"
+#include "window_fixture.h"
+
+#include "editor/document.h"
+#include "network/network_session.h"
+
+#include <QComboBox>
+#include <QListWidget>
+#include <QMenu>
+
+namespace rung::test {
+namespace {
+
+using RunState = model::MonitorSource::RunState;
+
+const QString kExamples = QStringLiteral(RUNG_SOURCE_DIR "/resources/examples/networks/");
+
+QString example(const char *name) {
+    return kExamples + QLatin1String(name) + QLatin1Char('/') + QLatin1String(name) +
+           QStringLiteral(".rungnet");
+}
+
+app::NetworkWindow *openedNetwork(app::MainWindow &window) {
+    const auto windows = window.findChildren<app::NetworkWindow *>();
+    return windows.isEmpty() ? nullptr : windows.back();
+}
+
+// The value of a watch row as the table shows it.
+QString shown(app::NetworkWatchModel *model, int row) {
+    return model->data(model->index(row, app::NetworkWatchModel::Value)).toString();
+}
+
+TEST(NetworkWindow, OpeningANetworkFileShowsItsStationsInAWindowOfItsOwn) {
+    app::MainWindow window;
+    ASSERT_TRUE(window.openFile(example("easy-link"), QString(), true));
+    app::NetworkWindow *net = openedNetwork(window);
+    ASSERT_NE(net, nullptr);
+    EXPECT_TRUE(net->isWindow());
+    EXPECT_TRUE(net->windowTitle().startsWith(QStringLiteral("easy-link.rungnet")));
+    ASSERT_EQ(net->stationSelector()->count(), 3);
+    EXPECT_EQ(net->stationSelector()->itemText(1), QStringLiteral("s5 (Vigor VB)"));
+    EXPECT_EQ(net->currentStation(), QStringLiteral("master"));
+    EXPECT_EQ(net->session()->runState(), RunState::Stopped);
+    // The master's ladder is its listing drawn: the LINK of the manual's example.
+    ASSERT_NE(net->document(QStringLiteral("master")), nullptr);
+    EXPECT_TRUE(net->document(QStringLiteral("master"))
+                    ->listingText()
+                    .contains(QStringLiteral("LINK D1000 D100")));
+    // The main window still shows its own program: nothing of it was replaced.
+    EXPECT_FALSE(window.document()->listingText().contains(QStringLiteral("LINK")));
+}
+
+TEST(NetworkWindow, TheStationSelectorChoosesWhatTheLadderShows) {
+    app::MainWindow window;
+    ASSERT_TRUE(window.openFile(example("easy-link"), QString(), true));
+    app::NetworkWindow *net = openedNetwork(window);
+    ASSERT_NE(net, nullptr);
+    QSignalSpy changed(net, &app::NetworkWindow::stationChanged);
+    net->stationSelector()->setCurrentIndex(2);
+    EXPECT_EQ(net->currentStation(), QStringLiteral("s2"));
+    EXPECT_EQ(changed.count(), 1);
+    auto *list = net->findChild<QListWidget *>(QStringLiteral("networkStations"));
+    ASSERT_NE(list, nullptr);
+    EXPECT_EQ(list->currentRow(), 2);
+    list->setCurrentRow(1);
+    EXPECT_EQ(net->currentStation(), QStringLiteral("s5"));
+    EXPECT_EQ(net->stationSelector()->currentIndex(), 1);
+    EXPECT_TRUE(net->ladderView(QStringLiteral("s5"))->isVisibleTo(net));
+}
+
+// The issue's test: a value crossing from one station to another in the watch table.
+TEST(NetworkWindow, AValueCrossesFromOneStationToAnotherInTheWatchTable) {
+    app::MainWindow window;
+    ASSERT_TRUE(window.openFile(example("easy-link"), QString(), true));
+    app::NetworkWindow *net = openedNetwork(window);
+    ASSERT_NE(net, nullptr);
+    app::NetworkWatchModel *watch = net->watchModel();
+    ASSERT_TRUE(net->watch(QStringLiteral("s5/D10")));
+    ASSERT_TRUE(net->watch(QStringLiteral("master/D0")));
+    EXPECT_TRUE(net->watch(QStringLiteral("master/D0"))); // listed once
+    EXPECT_EQ(watch->rowCount(), 2);
+    EXPECT_FALSE(net->watch(QStringLiteral("x/D0")));
+    EXPECT_TRUE(net->statusBar()->currentMessage().contains(QStringLiteral("master, s5, s2")))
+        << net->statusBar()->currentMessage().toStdString();
+    EXPECT_FALSE(net->watch(QStringLiteral("D0")));
+    EXPECT_TRUE(watch->setData(watch->index(0, app::NetworkWatchModel::Value), 4321));
+    ASSERT_TRUE(eventually([&] { return shown(watch, 0) == QStringLiteral("4321"); }));
+    EXPECT_EQ(shown(watch, 1), QStringLiteral("0"));
+    net->session()->setSpeed(0);
+    toolbarAction(*net, QStringLiteral("Run"))->trigger();
+    EXPECT_EQ(net->session()->runState(), RunState::Running);
+    EXPECT_TRUE(eventually([&] { return shown(watch, 1) == QStringLiteral("4321"); }));
+    EXPECT_TRUE(net->statusText().startsWith(QStringLiteral("Running")));
+}
+
+// The issue's test: a cut wire raising the master's error. LINK's working area (S2 = D100 in
+// the example) holds in its high byte the status: A, "communication normal but no response
+// from the slave" (Vigor M/VB/VH communication manual, B-3-3).
+TEST(NetworkWindow, AWireCutFromTheFaultsMenuRaisesTheMastersError) {
+    app::MainWindow window;
+    ASSERT_TRUE(window.openFile(example("easy-link"), QString(), true));
+    app::NetworkWindow *net = openedNetwork(window);
+    ASSERT_NE(net, nullptr);
+    ASSERT_TRUE(net->watch(QStringLiteral("master/D100")));
+    net->session()->setSpeed(0);
+    net->session()->runFor(300);
+    ASSERT_TRUE(eventually([&] { return net->session()->runState() == RunState::Paused; }));
+    const auto status = [&] {
+        return net->watchModel()->data(net->watchModel()->index(0, 1), Qt::EditRole).toLongLong() >>
+               8;
+    };
+    EXPECT_EQ(status(), 0);
+    auto *faults = net->findChild<QMenu *>(QStringLiteral("networkFaultsMenu"));
+    ASSERT_NE(faults, nullptr);
+    QAction *cut = nullptr;
+    for (QAction *a : faults->actions())
+        if (a->objectName() == QStringLiteral("faultCut_w1"))
+            cut = a;
+    ASSERT_NE(cut, nullptr);
+    EXPECT_TRUE(cut->text().contains(QStringLiteral("master/CP2")));
+    cut->trigger();
+    EXPECT_TRUE(net->session()->wireCut(QStringLiteral("w1")));
+    net->session()->runFor(1000);
+    ASSERT_TRUE(eventually([&] { return net->session()->runState() == RunState::Paused; }));
+    EXPECT_TRUE(eventually([&] { return status() == 0x0A; })) << status();
+    // Stop: the network as its file describes it, the fault gone.
+    toolbarAction(*net, QStringLiteral("Stop"))->trigger();
+    EXPECT_FALSE(net->session()->wireCut(QStringLiteral("w1")));
+    EXPECT_TRUE(eventually([&] { return status() == 0 && net->session()->nowUs() == 0; }));
+}
+
+TEST(NetworkWindow, AStationsProgramOpensInTheMainWindowForEditing) {
+    app::MainWindow window;
+    ASSERT_TRUE(window.openFile(example("easy-link"), QString(), true));
+    app::NetworkWindow *net = openedNetwork(window);
+    ASSERT_NE(net, nullptr);
+    // The station's ladder here refuses edits and says where they are made.
+    editor::Document *doc = net->document(QStringLiteral("master"));
+    const QString before = doc->listingText();
+    doc->replaceRungs(0, 1, {}, QStringLiteral("delete"));
+    EXPECT_EQ(doc->listingText(), before);
+    EXPECT_TRUE(net->statusBar()->currentMessage().contains(QStringLiteral("main window")));
+    emit net->openProgramRequested(
+        net->session()->station(QStringLiteral("master"))->programPath());
+    EXPECT_TRUE(window.document()->listingText().contains(QStringLiteral("LINK D1000 D100")));
+}
+
+} // namespace
+} // namespace rung::test
