@@ -23,7 +23,7 @@
 <context>
     <name>rung::app::MainWindow</name>
     <message numerus="yes">
-        <location filename="../app/gui/main_window.cpp" line="+209"/>
+        <location filename="../app/gui/main_window.cpp" line="+211"/>
         <source>%n rung(s)</source>
         <translation>
             <numerusform>%n rung</numerusform>
@@ -60,6 +60,18 @@
         <translation>
             <numerusform>%n row of the symbol table names no device of this PLC and is left out of the file: %1. Export the other symbols?</numerusform>
             <numerusform>%n rows of the symbol table name no device of this PLC and are left out of the file: %1. Export the other symbols?</numerusform>
+        </translation>
+    </message>
+</context>
+<context>
+    <name>rung::app::NetworkWindow</name>
+    <message numerus="yes">
+        <location filename="../app/gui/network_window.cpp" line="+465"/>
+        <source>%1, %2, %n station(s)</source>
+        <extracomment>%1 run state, %2 virtual time, %3 number of stations</extracomment>
+        <translation>
+            <numerusform>%1, %2, %n station</numerusform>
+            <numerusform>%1, %2, %n stations</numerusform>
         </translation>
     </message>
 </context>

@@ -180,8 +180,7 @@
     <message>
         <location filename="../app/cli/cli.cpp" line="+61"/>
         <location line="+48"/>
-        <location filename="../app/cli/cli_network.cpp" line="+145"/>
-        <location line="+54"/>
+        <location filename="../app/cli/cli_network.cpp" line="+147"/>
         <source>unexpected argument %1</source>
         <translation>váratlan argumentum: %1</translation>
     </message>
@@ -279,7 +278,7 @@ Kilépési kód: 0 nincs hiba, 1 a programban hiba van, 2 használati vagy I/O h
     </message>
     <message>
         <location line="+18"/>
-        <location filename="../app/cli/cli_network.cpp" line="-11"/>
+        <location filename="../app/cli/cli_network.cpp" line="+52"/>
         <location filename="../app/cli/cli_plcopen.cpp" line="+36"/>
         <location line="+3"/>
         <source>error</source>
@@ -1111,11 +1110,61 @@ PLC after serve restarts</source>
         <source>Traffic light</source>
         <translation>Közlekedési lámpa</translation>
     </message>
+    <message>
+        <location line="+3"/>
+        <source>Easy Link: a master and two slaves</source>
+        <translation>Easy Link: egy master és két slave</translation>
+    </message>
+    <message>
+        <location line="+1"/>
+        <source>CPU Link</source>
+        <translation>CPU Link</translation>
+    </message>
+    <message>
+        <location line="+1"/>
+        <source>Parallel Link</source>
+        <translation>Parallel Link</translation>
+    </message>
+    <message>
+        <location line="+1"/>
+        <source>MODBUS master (MBUS) and slaves</source>
+        <translation>MODBUS master (MBUS) és slave-ek</translation>
+    </message>
+    <message>
+        <location line="+2"/>
+        <source>MODBUS master with a table of requests</source>
+        <translation>MODBUS master kéréstáblázattal</translation>
+    </message>
+    <message>
+        <location line="+2"/>
+        <source>Non-protocol communication (RS)</source>
+        <translation>Protokoll nélküli kommunikáció (RS)</translation>
+    </message>
+    <message>
+        <location line="+1"/>
+        <source>VB-1COM module (FROM / TO)</source>
+        <translation>VB-1COM modul (FROM / TO)</translation>
+    </message>
+    <message>
+        <location line="+1"/>
+        <source>PL110 EXP1 MODBUS master</source>
+        <translation>PL110 EXP1 MODBUS master</translation>
+    </message>
+    <message>
+        <location line="+1"/>
+        <source>PL110 free-port (SEND)</source>
+        <translation>PL110 szabad port (SEND)</translation>
+    </message>
+    <message>
+        <location line="+1"/>
+        <source>A PL110 polling a Vigor</source>
+        <translation>Egy Vigort lekérdező PL110</translation>
+    </message>
 </context>
 <context>
     <name>rung::app::FileController</name>
     <message>
-        <location filename="../app/gui/file_controller.cpp" line="+71"/>
+        <location filename="../app/gui/file_controller.cpp" line="+72"/>
         <source>&amp;New Project...</source>
         <translation>Ú&amp;j projekt...</translation>
     </message>
@@ -1226,12 +1275,22 @@ PLC after serve restarts</source>
         <translation>A fájl nem nyitható meg</translation>
     </message>
     <message>
-        <location line="+9"/>
-        <source>%1: this version of Rung Studio cannot open networks (.rungnet) in the window yet</source>
-        <translation>%1: a Rung Studio ezen változata az ablakban még nem tud hálózatot (.rungnet) megnyitni</translation>
+        <location line="+11"/>
+        <source>%1: networks cannot be opened here</source>
+        <translation>%1: hálózat itt nem nyitható meg</translation>
     </message>
     <message>
-        <location line="+25"/>
+        <location line="+179"/>
+        <source>Rung Studio projects (*.rung);;Instruction lists (*.il *.txt);;Ladder texts (*.ladder);;Scenario tests (*.rungtest);;Networks of PLCs (*.rungnet)</source>
+        <translation>Rung Studio projektek (*.rung);;Utasításlisták (*.il *.txt);;Létra-szövegek (*.ladder);;Forgatókönyv-tesztek (*.rungtest);;PLC-hálózatok (*.rungnet)</translation>
+    </message>
+    <message>
+        <location line="+171"/>
+        <source>Networks</source>
+        <translation>Hálózatok</translation>
+    </message>
+    <message>
+        <location line="-323"/>
         <source>%1 names %2, but the Tests dock lists the scenarios beside the project</source>
         <translation>%1 a(z) %2 programot nevezi meg, de a Tesztek panel a projekt melletti forgatókönyveket sorolja fel</translation>
     </message>
@@ -1286,17 +1345,12 @@ PLC after serve restarts</source>
         <translation>Modell:</translation>
     </message>
     <message>
-        <location line="+16"/>
+        <location line="+14"/>
         <source>Open</source>
         <translation>Megnyitás</translation>
     </message>
     <message>
-        <location line="+1"/>
-        <source>Rung Studio projects (*.rung);;Instruction lists (*.il *.txt);;Ladder texts (*.ladder);;Scenario tests (*.rungtest)</source>
-        <translation>Rung Studio projektek (*.rung);;Utasításlisták (*.il *.txt);;Létra-szövegek (*.ladder);;Forgatókönyv-tesztek (*.rungtest)</translation>
-    </message>
-    <message>
-        <location line="+19"/>
+        <location line="+25"/>
         <source>Replace File</source>
         <translation>Fájl cseréje</translation>
     </message>
@@ -1491,7 +1545,7 @@ PLC after serve restarts</source>
 <context>
     <name>rung::app::MainWindow</name>
     <message>
-        <location filename="../app/gui/main_window.cpp" line="+163"/>
+        <location filename="../app/gui/main_window.cpp" line="+165"/>
         <source>Problems</source>
         <translation>Problémák</translation>
     </message>
@@ -2017,7 +2071,7 @@ Ctrl+Z / Ctrl+Y: visszavonás / mégis, Ctrl+görgő: nagyítás, F4: a program 
 <context>
     <name>rung::app::Network</name>
     <message>
-        <location filename="../app/cli/cli_network.cpp" line="-165"/>
+        <location filename="../app/cli/cli_network.cpp" line="-176"/>
         <source>usage:</source>
         <translation>használat:</translation>
     </message>
@@ -2041,7 +2095,7 @@ Ctrl+Z / Ctrl+Y: visszavonás / mégis, Ctrl+görgő: nagyítás, F4: a program 
         <translation>a --traffic után fájlnév kell</translation>
     </message>
     <message>
-        <location line="+5"/>
+        <location line="+6"/>
         <source>%1: a network file names each station&apos;s PLC</source>
         <translation>%1: a hálózatfájl minden állomás PLC-jét maga nevezi meg</translation>
     </message>
@@ -2057,7 +2111,7 @@ Ctrl+Z / Ctrl+Y: visszavonás / mégis, Ctrl+görgő: nagyítás, F4: a program 
         <translation>%1: %2. sor: futási hiba a(z) %3. lépésnél: %4</translation>
     </message>
     <message>
-        <location line="+30"/>
+        <location line="+40"/>
         <source>%1: %2: %3</source>
         <translation>%1: %2: %3</translation>
     </message>
@@ -2073,7 +2127,7 @@ Ctrl+Z / Ctrl+Y: visszavonás / mégis, Ctrl+görgő: nagyítás, F4: a program 
         <translation>%1: %2: %3: %4</translation>
     </message>
     <message>
-        <location line="+22"/>
+        <location line="+16"/>
         <source>%1: no bridges: nothing of the network reaches a real line (&quot;bridges&quot;, docs/network-format.md); simulate runs it on virtual time</source>
         <translation>%1: nincsenek hidak: a hálózatból semmi sem jut el valódi vonalra („bridges”, docs/network-format.md); a simulate virtuális időben futtatja</translation>
     </message>
@@ -2081,6 +2135,272 @@ Ctrl+Z / Ctrl+Y: visszavonás / mégis, Ctrl+görgő: nagyítás, F4: a program 
         <location line="+24"/>
         <source>%1 runs in real time; stop it with Ctrl+C</source>
         <translation>a(z) %1 valós időben fut; leállítás: Ctrl+C</translation>
+    </message>
+</context>
+<context>
+    <name>rung::app::NetworkWatchModel</name>
+    <message>
+        <location filename="../app/gui/network_watch_model.cpp" line="+37"/>
+        <source>No network is open</source>
+        <translation>Nincs megnyitott hálózat</translation>
+    </message>
+    <message>
+        <location line="+8"/>
+        <source>%1: write STATION/DEVICE, e.g. %2/D0 (stations: %3)</source>
+        <extracomment>%1 what was typed, %2 the stations, e.g. &quot;master, s5, s2&quot;</extracomment>
+        <translation>%1: ÁLLOMÁS/OPERANDUS alakban írja, pl. %2/D0 (állomások: %3)</translation>
+    </message>
+    <message>
+        <location line="+6"/>
+        <source>%1: no station &quot;%2&quot; (stations: %3)</source>
+        <translation>%1: nincs „%2” nevű állomás (állomások: %3)</translation>
+    </message>
+    <message>
+        <location line="+70"/>
+        <location line="+42"/>
+        <source>ON</source>
+        <translation>BE</translation>
+    </message>
+    <message>
+        <location line="-42"/>
+        <source>OFF</source>
+        <translation>KI</translation>
+    </message>
+    <message>
+        <location line="+14"/>
+        <source>Station/Device</source>
+        <translation>Állomás/operandus</translation>
+    </message>
+    <message>
+        <location line="+2"/>
+        <source>Value</source>
+        <translation>Érték</translation>
+    </message>
+    <message>
+        <location line="+3"/>
+        <source>Model</source>
+        <extracomment>the PLC model of the row&apos;s station (&quot;VB&quot;, &quot;PL110-2A&quot;)</extracomment>
+        <translation>Modell</translation>
+    </message>
+</context>
+<context>
+    <name>rung::app::NetworkWindow</name>
+    <message>
+        <location filename="../app/gui/network_window.cpp" line="+138"/>
+        <source>Network</source>
+        <translation>Hálózat</translation>
+    </message>
+    <message>
+        <location line="+3"/>
+        <source>&amp;Network</source>
+        <translation>&amp;Hálózat</translation>
+    </message>
+    <message>
+        <location line="+1"/>
+        <source>&amp;Edit Station Program</source>
+        <translation>Állomás programjának &amp;szerkesztése</translation>
+    </message>
+    <message>
+        <location line="+7"/>
+        <source>&amp;Close Network</source>
+        <translation>Hálózat &amp;bezárása</translation>
+    </message>
+    <message>
+        <location line="+2"/>
+        <source>&amp;Simulation</source>
+        <translation>Szi&amp;muláció</translation>
+    </message>
+    <message>
+        <location line="+7"/>
+        <source>%1 (%2)</source>
+        <extracomment>a toolbar button&apos;s tooltip: its name and its key</extracomment>
+        <translation>%1 (%2)</translation>
+    </message>
+    <message>
+        <location line="+6"/>
+        <source>&amp;Run</source>
+        <translation>&amp;Futtatás</translation>
+    </message>
+    <message>
+        <location line="+2"/>
+        <source>&amp;Pause</source>
+        <translation>&amp;Szünet</translation>
+    </message>
+    <message>
+        <location line="+2"/>
+        <source>&amp;Stop</source>
+        <translation>&amp;Megállás</translation>
+    </message>
+    <message>
+        <location line="+2"/>
+        <source>Single S&amp;can</source>
+        <translation>Egy &amp;ciklus</translation>
+    </message>
+    <message>
+        <location line="+2"/>
+        <source>Spee&amp;d</source>
+        <translation>S&amp;ebesség</translation>
+    </message>
+    <message>
+        <location line="+3"/>
+        <source>x%1 Real Time</source>
+        <translation>x%1 valós idő</translation>
+    </message>
+    <message>
+        <location line="+1"/>
+        <source>As &amp;Fast as Possible</source>
+        <translation>A lehető &amp;leggyorsabban</translation>
+    </message>
+    <message>
+        <location line="+12"/>
+        <source>Station:</source>
+        <translation>Állomás:</translation>
+    </message>
+    <message>
+        <location line="+13"/>
+        <source>F&amp;aults</source>
+        <translation>&amp;Hibák</translation>
+    </message>
+    <message>
+        <location line="+5"/>
+        <source>&amp;View</source>
+        <translation>&amp;Nézet</translation>
+    </message>
+    <message>
+        <location line="+10"/>
+        <source>No network is open</source>
+        <translation>Nincs megnyitott hálózat</translation>
+    </message>
+    <message>
+        <location line="+6"/>
+        <source>Cut Wire %1 (%2)</source>
+        <extracomment>%1 a wire&apos;s name, %2 its ends (&quot;master/CP2, s5/CP2&quot;)</extracomment>
+        <translation>%1 vezeték elvágása (%2)</translation>
+    </message>
+    <message>
+        <location line="+6"/>
+        <source>Wire %1 is cut: nothing it carries arrives</source>
+        <translation>A(z) %1 vezeték elvágva: semmi sem jut át rajta</translation>
+    </message>
+    <message>
+        <location line="+1"/>
+        <source>Wire %1 is joined again</source>
+        <translation>A(z) %1 vezeték újra összekötve</translation>
+    </message>
+    <message>
+        <location line="+3"/>
+        <source>Corrupt the Next Frame on %1</source>
+        <translation>A következő keret elrontása ezen: %1</translation>
+    </message>
+    <message>
+        <location line="+5"/>
+        <source>The next frame on %1 will arrive with its second byte changed</source>
+        <translation>A(z) %1 következő kerete megváltozott második bájttal érkezik</translation>
+    </message>
+    <message>
+        <location line="+11"/>
+        <source>Silence %1</source>
+        <translation>%1 elnémítása</translation>
+    </message>
+    <message>
+        <location line="+8"/>
+        <source>Stop ends every fault made here</source>
+        <translation>A Megállás minden itt okozott hibát megszüntet</translation>
+    </message>
+    <message>
+        <location line="+5"/>
+        <source>Stations</source>
+        <translation>Állomások</translation>
+    </message>
+    <message>
+        <location line="+1"/>
+        <source>Inputs and Outputs</source>
+        <translation>Be- és kimenetek</translation>
+    </message>
+    <message>
+        <location line="+1"/>
+        <source>Network Watch</source>
+        <translation>Hálózat figyelése</translation>
+    </message>
+    <message>
+        <location line="+1"/>
+        <source>Station/device, e.g. s5/D10</source>
+        <translation>Állomás/operandus, pl. s5/D10</translation>
+    </message>
+    <message>
+        <location line="+2"/>
+        <source>&amp;Watch</source>
+        <translation>&amp;Figyelés</translation>
+    </message>
+    <message>
+        <location line="+1"/>
+        <source>Remove From Watch</source>
+        <translation>Eltávolítás a figyelésből</translation>
+    </message>
+    <message>
+        <location line="+1"/>
+        <source>Double-click a station to edit its program</source>
+        <translation>Kattintson duplán egy állomásra a programja szerkesztéséhez</translation>
+    </message>
+    <message>
+        <location line="+3"/>
+        <source>%1 - Network - Rung Studio</source>
+        <extracomment>the window&apos;s title: the network file&apos;s name</extracomment>
+        <translation>%1 - Hálózat - Rung Studio</translation>
+    </message>
+    <message>
+        <location line="+2"/>
+        <source>Network - Rung Studio</source>
+        <translation>Hálózat - Rung Studio</translation>
+    </message>
+    <message>
+        <location line="+46"/>
+        <source>%1: the listing does not draw as a ladder</source>
+        <translation>%1: az utasításlista nem rajzolható létradiagramként</translation>
+    </message>
+    <message>
+        <location line="+37"/>
+        <source>A station&apos;s program is edited in the main window: Network &gt; Edit Station Program; Stop reads it again</source>
+        <translation>Az állomás programja a főablakban szerkeszthető: Hálózat &gt; Állomás programjának szerkesztése; a Megállás újra beolvassa</translation>
+    </message>
+    <message>
+        <location line="+14"/>
+        <source>%1 (%2 %3)</source>
+        <extracomment>a station in the selector: its name, the PLC family and model, e.g. &quot;s5 (Vigor M/VB/VH VB)&quot;</extracomment>
+        <translation>%1 (%2 %3)</translation>
+    </message>
+    <message>
+        <location line="+78"/>
+        <source>No network</source>
+        <translation>Nincs hálózat</translation>
+    </message>
+    <message>
+        <location line="+4"/>
+        <source>Running</source>
+        <translation>Fut</translation>
+    </message>
+    <message>
+        <location line="+3"/>
+        <source>Stepping</source>
+        <translation>Léptetés</translation>
+    </message>
+    <message>
+        <location line="+3"/>
+        <source>Paused</source>
+        <translation>Szüneteltetve</translation>
+    </message>
+    <message>
+        <location line="+3"/>
+        <source>Stopped</source>
+        <translation>Leállítva</translation>
+    </message>
+    <message numerus="yes">
+        <location line="+4"/>
+        <source>%1, %2, %n station(s)</source>
+        <extracomment>%1 run state, %2 virtual time, %3 number of stations</extracomment>
+        <translation>
+            <numerusform>%1, %2, %n állomás</numerusform>
+        </translation>
     </message>
 </context>
 <context>
@@ -2121,12 +2441,12 @@ Ctrl+Z / Ctrl+Y: visszavonás / mégis, Ctrl+görgő: nagyítás, F4: a program 
         <translation>a --port, a --tcp és a --pty közül pontosan egyet adjon meg</translation>
     </message>
     <message>
-        <location line="+4"/>
+        <location line="+5"/>
         <source>modbus-tcp needs --tcp HOST:PORT (for RTU frames on a port: modbus)</source>
         <translation>a modbus-tcp a --tcp HOST:PORT kapcsolót igényli (RTU keretekhez porton: modbus)</translation>
     </message>
     <message>
-        <location line="+10"/>
+        <location line="+8"/>
         <source>--tcp needs HOST:PORT, e.g. 127.0.0.1:502; got %1</source>
         <translation>a --tcp HOST:PORT alakú értéket vár, pl. 127.0.0.1:502; kapott érték: %1</translation>
     </message>
@@ -2136,12 +2456,12 @@ Ctrl+Z / Ctrl+Y: visszavonás / mégis, Ctrl+görgő: nagyítás, F4: a program 
         <translation>%1 értéke %2 és %3 közötti szám legyen; kapott érték: %4</translation>
     </message>
     <message>
-        <location line="+16"/>
+        <location line="+17"/>
         <source>--frame must be data bits, parity and stop bits, e.g. 8N1 or 7E2; got %1</source>
         <translation>a --frame adatbitek, paritás és stopbitek megadása, pl. 8N1 vagy 7E2; kapott érték: %1</translation>
     </message>
     <message>
-        <location line="+6"/>
+        <location line="+5"/>
         <source>no device given</source>
         <translation>nincs megadva operandus</translation>
     </message>
@@ -2848,7 +3168,7 @@ A FÁJL utasításlista (.il), létradiagram-szöveg (.ladder) vagy projekt (.ru
         <translation>%1 után érték kell</translation>
     </message>
     <message>
-        <location line="+13"/>
+        <location line="+14"/>
         <source>unexpected argument %1</source>
         <translation>váratlan argumentum: %1</translation>
     </message>
@@ -2860,7 +3180,7 @@ A FÁJL utasításlista (.il), létradiagram-szöveg (.ladder) vagy projekt (.ru
         <translation>a program nem indul el</translation>
     </message>
     <message>
-        <location filename="../app/cli/cli_simulate.cpp" line="+28"/>
+        <location filename="../app/cli/cli_simulate.cpp" line="+29"/>
         <source>runtime error at step %1: %2</source>
         <translation>futási hiba a(z) %1. lépésnél: %2</translation>
     </message>
@@ -7484,7 +7804,7 @@ Kiértékelés: %4 µs (%5..%6)</translation>
     </message>
     <message>
         <location line="+5"/>
-        <location filename="../model/target/target_pl110.cpp" line="+107"/>
+        <location filename="../model/target/target_pl110.cpp" line="+108"/>
         <location filename="../model/target/target_vigor.cpp" line="+95"/>
         <location filename="../model/target/target_vpc.cpp" line="+5"/>
         <source>Start a block with a normally open contact</source>
@@ -7825,7 +8145,7 @@ Kiértékelés: %4 µs (%5..%6)</translation>
         <translation>A program vége</translation>
     </message>
     <message>
-        <location filename="../model/target/target_pl110.cpp" line="-405"/>
+        <location filename="../model/target/target_pl110.cpp" line="-406"/>
         <source>IF contact: ON while S1 ? S2 is true</source>
         <translation>IF érintkező: BE, amíg S1 ? S2 igaz</translation>
     </message>
@@ -7971,7 +8291,7 @@ Kiértékelés: %4 µs (%5..%6)</translation>
         <translation>legnagyobb ciklusidő (0,1 ms)</translation>
     </message>
     <message>
-        <location line="+12"/>
+        <location line="+13"/>
         <source>the encoders&apos; load bits and the stepper motor output on AQ1 are not modelled; the word is plain memory</source>
         <translation>az enkóderek betöltőbitjeit és az AQ1 léptetőmotor-kimenetét a szimulátor nem modellezi; a szó egyszerű memória</translation>
     </message>
@@ -9271,7 +9591,7 @@ Kiértékelés: %4 µs (%5..%6)</translation>
         <translation>%1: %2. sor: a(z) %3 a(z) %4 portot hajtja, amelyen %5 fut; a(z) %3 ezt igényli: %6</translation>
     </message>
     <message>
-        <location line="+36"/>
+        <location line="+45"/>
         <source>silent (fault): not sent</source>
         <translation>néma (hiba): nem ment ki</translation>
     </message>
@@ -9538,6 +9858,25 @@ Kiértékelés: %4 µs (%5..%6)</translation>
         <location line="+17"/>
         <source>%1: &quot;%2&quot; is no fault (cut, silent, corrupt)</source>
         <translation>%1: a(z) „%2” nem hibafajta (cut, silent, corrupt)</translation>
+    </message>
+</context>
+<context>
+    <name>rung::network::NetworkSession</name>
+    <message>
+        <location filename="../network/network_session.cpp" line="+275"/>
+        <source>a fault made in the IDE</source>
+        <translation>az IDE-ben okozott hiba</translation>
+    </message>
+    <message>
+        <location line="+56"/>
+        <source>%1: line %2: %3</source>
+        <extracomment>%1 station, %2 line, %3 what went wrong</extracomment>
+        <translation>%1: %2. sor: %3</translation>
+    </message>
+    <message>
+        <location line="+4"/>
+        <source>%1: %2</source>
+        <translation>%1: %2</translation>
     </message>
 </context>
 <context>
@@ -10113,7 +10452,7 @@ Kiértékelés: %4 µs (%5..%6)</translation>
         <translation>nincs program: a forgatókönyv „program FÁJL” sorral kezdődik</translation>
     </message>
     <message>
-        <location filename="../simulator/scenario_run.cpp" line="+101"/>
+        <location filename="../simulator/scenario_run.cpp" line="+100"/>
         <source>&quot;%1&quot; is not understood here</source>
         <translation>„%1” itt nem értelmezhető</translation>
     </message>

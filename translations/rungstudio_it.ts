@@ -180,8 +180,7 @@
     <message>
         <location filename="../app/cli/cli.cpp" line="+61"/>
         <location line="+48"/>
-        <location filename="../app/cli/cli_network.cpp" line="+145"/>
-        <location line="+54"/>
+        <location filename="../app/cli/cli_network.cpp" line="+147"/>
         <source>unexpected argument %1</source>
         <translation>argomento non previsto: %1</translation>
     </message>
@@ -279,7 +278,7 @@ Codice di uscita: 0 nessun errore, 1 il programma contiene errori, 2 errore di u
     </message>
     <message>
         <location line="+18"/>
-        <location filename="../app/cli/cli_network.cpp" line="-11"/>
+        <location filename="../app/cli/cli_network.cpp" line="+52"/>
         <location filename="../app/cli/cli_plcopen.cpp" line="+36"/>
         <location line="+3"/>
         <source>error</source>
@@ -1113,11 +1112,61 @@ PLC dopo il riavvio di serve</translation>
         <source>Traffic light</source>
         <translation>Semaforo</translation>
     </message>
+    <message>
+        <location line="+3"/>
+        <source>Easy Link: a master and two slaves</source>
+        <translation>Easy Link: un master e due slave</translation>
+    </message>
+    <message>
+        <location line="+1"/>
+        <source>CPU Link</source>
+        <translation>CPU Link</translation>
+    </message>
+    <message>
+        <location line="+1"/>
+        <source>Parallel Link</source>
+        <translation>Parallel Link</translation>
+    </message>
+    <message>
+        <location line="+1"/>
+        <source>MODBUS master (MBUS) and slaves</source>
+        <translation>Master MODBUS (MBUS) e slave</translation>
+    </message>
+    <message>
+        <location line="+2"/>
+        <source>MODBUS master with a table of requests</source>
+        <translation>Master MODBUS con una tabella di richieste</translation>
+    </message>
+    <message>
+        <location line="+2"/>
+        <source>Non-protocol communication (RS)</source>
+        <translation>Comunicazione senza protocollo (RS)</translation>
+    </message>
+    <message>
+        <location line="+1"/>
+        <source>VB-1COM module (FROM / TO)</source>
+        <translation>Modulo VB-1COM (FROM / TO)</translation>
+    </message>
+    <message>
+        <location line="+1"/>
+        <source>PL110 EXP1 MODBUS master</source>
+        <translation>PL110 master MODBUS su EXP1</translation>
+    </message>
+    <message>
+        <location line="+1"/>
+        <source>PL110 free-port (SEND)</source>
+        <translation>PL110 free-port (SEND)</translation>
+    </message>
+    <message>
+        <location line="+1"/>
+        <source>A PL110 polling a Vigor</source>
+        <translation>Un PL110 che interroga un Vigor</translation>
+    </message>
 </context>
 <context>
     <name>rung::app::FileController</name>
     <message>
-        <location filename="../app/gui/file_controller.cpp" line="+71"/>
+        <location filename="../app/gui/file_controller.cpp" line="+72"/>
         <source>&amp;New Project...</source>
         <translation>&amp;Nuovo progetto...</translation>
     </message>
@@ -1228,12 +1277,22 @@ PLC dopo il riavvio di serve</translation>
         <translation>Impossibile aprire il file</translation>
     </message>
     <message>
-        <location line="+9"/>
-        <source>%1: this version of Rung Studio cannot open networks (.rungnet) in the window yet</source>
-        <translation>%1: questa versione di Rung Studio non può ancora aprire reti (.rungnet) nella finestra</translation>
+        <location line="+11"/>
+        <source>%1: networks cannot be opened here</source>
+        <translation>%1: qui non si possono aprire reti</translation>
     </message>
     <message>
-        <location line="+25"/>
+        <location line="+179"/>
+        <source>Rung Studio projects (*.rung);;Instruction lists (*.il *.txt);;Ladder texts (*.ladder);;Scenario tests (*.rungtest);;Networks of PLCs (*.rungnet)</source>
+        <translation>Progetti Rung Studio (*.rung);;Liste istruzioni (*.il *.txt);;Testi ladder (*.ladder);;Test di scenario (*.rungtest);;Reti di PLC (*.rungnet)</translation>
+    </message>
+    <message>
+        <location line="+171"/>
+        <source>Networks</source>
+        <translation>Reti</translation>
+    </message>
+    <message>
+        <location line="-323"/>
         <source>%1 names %2, but the Tests dock lists the scenarios beside the project</source>
         <translation>%1 nomina %2, ma il pannello Test elenca gli scenari accanto al progetto</translation>
     </message>
@@ -1288,17 +1347,12 @@ PLC dopo il riavvio di serve</translation>
         <translation>Modello:</translation>
     </message>
     <message>
-        <location line="+16"/>
+        <location line="+14"/>
         <source>Open</source>
         <translation>Apri</translation>
     </message>
     <message>
-        <location line="+1"/>
-        <source>Rung Studio projects (*.rung);;Instruction lists (*.il *.txt);;Ladder texts (*.ladder);;Scenario tests (*.rungtest)</source>
-        <translation>Progetti Rung Studio (*.rung);;Liste istruzioni (*.il *.txt);;Testi ladder (*.ladder);;Test di scenario (*.rungtest)</translation>
-    </message>
-    <message>
-        <location line="+19"/>
+        <location line="+25"/>
         <source>Replace File</source>
         <translation>Sostituisci file</translation>
     </message>
@@ -1493,7 +1547,7 @@ PLC dopo il riavvio di serve</translation>
 <context>
     <name>rung::app::MainWindow</name>
     <message>
-        <location filename="../app/gui/main_window.cpp" line="+163"/>
+        <location filename="../app/gui/main_window.cpp" line="+165"/>
         <source>Problems</source>
         <translation>Problemi</translation>
     </message>
@@ -2024,7 +2078,7 @@ Ctrl+Z / Ctrl+Y: annulla / ripeti, Ctrl+rotellina: zoom, F4: verifica il program
 <context>
     <name>rung::app::Network</name>
     <message>
-        <location filename="../app/cli/cli_network.cpp" line="-165"/>
+        <location filename="../app/cli/cli_network.cpp" line="-176"/>
         <source>usage:</source>
         <translation>uso:</translation>
     </message>
@@ -2048,7 +2102,7 @@ Ctrl+Z / Ctrl+Y: annulla / ripeti, Ctrl+rotellina: zoom, F4: verifica il program
         <translation>--traffic richiede un file</translation>
     </message>
     <message>
-        <location line="+5"/>
+        <location line="+6"/>
         <source>%1: a network file names each station&apos;s PLC</source>
         <translation>%1: il file di rete indica il PLC di ogni stazione</translation>
     </message>
@@ -2064,7 +2118,7 @@ Ctrl+Z / Ctrl+Y: annulla / ripeti, Ctrl+rotellina: zoom, F4: verifica il program
         <translation>%1: riga %2: errore di esecuzione al passo %3: %4</translation>
     </message>
     <message>
-        <location line="+30"/>
+        <location line="+40"/>
         <source>%1: %2: %3</source>
         <translation>%1: %2: %3</translation>
     </message>
@@ -2080,7 +2134,7 @@ Ctrl+Z / Ctrl+Y: annulla / ripeti, Ctrl+rotellina: zoom, F4: verifica il program
         <translation>%1: %2: %3: %4</translation>
     </message>
     <message>
-        <location line="+22"/>
+        <location line="+16"/>
         <source>%1: no bridges: nothing of the network reaches a real line (&quot;bridges&quot;, docs/network-format.md); simulate runs it on virtual time</source>
         <translation>%1: nessun ponte: niente della rete raggiunge una linea reale (&quot;bridges&quot;, docs/network-format.md); simulate la esegue in tempo virtuale</translation>
     </message>
@@ -2088,6 +2142,273 @@ Ctrl+Z / Ctrl+Y: annulla / ripeti, Ctrl+rotellina: zoom, F4: verifica il program
         <location line="+24"/>
         <source>%1 runs in real time; stop it with Ctrl+C</source>
         <translation>%1 è in esecuzione in tempo reale; per fermarlo Ctrl+C</translation>
+    </message>
+</context>
+<context>
+    <name>rung::app::NetworkWatchModel</name>
+    <message>
+        <location filename="../app/gui/network_watch_model.cpp" line="+37"/>
+        <source>No network is open</source>
+        <translation>Nessuna rete aperta</translation>
+    </message>
+    <message>
+        <location line="+8"/>
+        <source>%1: write STATION/DEVICE, e.g. %2/D0 (stations: %3)</source>
+        <extracomment>%1 what was typed, %2 the stations, e.g. &quot;master, s5, s2&quot;</extracomment>
+        <translation>%1: scrivere STAZIONE/OPERANDO, ad es. %2/D0 (stazioni: %3)</translation>
+    </message>
+    <message>
+        <location line="+6"/>
+        <source>%1: no station &quot;%2&quot; (stations: %3)</source>
+        <translation>%1: nessuna stazione «%2» (stazioni: %3)</translation>
+    </message>
+    <message>
+        <location line="+70"/>
+        <location line="+42"/>
+        <source>ON</source>
+        <translation>ON</translation>
+    </message>
+    <message>
+        <location line="-42"/>
+        <source>OFF</source>
+        <translation>OFF</translation>
+    </message>
+    <message>
+        <location line="+14"/>
+        <source>Station/Device</source>
+        <translation>Stazione/operando</translation>
+    </message>
+    <message>
+        <location line="+2"/>
+        <source>Value</source>
+        <translation>Valore</translation>
+    </message>
+    <message>
+        <location line="+3"/>
+        <source>Model</source>
+        <extracomment>the PLC model of the row&apos;s station (&quot;VB&quot;, &quot;PL110-2A&quot;)</extracomment>
+        <translation>Modello</translation>
+    </message>
+</context>
+<context>
+    <name>rung::app::NetworkWindow</name>
+    <message>
+        <location filename="../app/gui/network_window.cpp" line="+138"/>
+        <source>Network</source>
+        <translation>Rete</translation>
+    </message>
+    <message>
+        <location line="+3"/>
+        <source>&amp;Network</source>
+        <translation>&amp;Rete</translation>
+    </message>
+    <message>
+        <location line="+1"/>
+        <source>&amp;Edit Station Program</source>
+        <translation>&amp;Modifica il programma della stazione</translation>
+    </message>
+    <message>
+        <location line="+7"/>
+        <source>&amp;Close Network</source>
+        <translation>&amp;Chiudi la rete</translation>
+    </message>
+    <message>
+        <location line="+2"/>
+        <source>&amp;Simulation</source>
+        <translation>&amp;Simulazione</translation>
+    </message>
+    <message>
+        <location line="+7"/>
+        <source>%1 (%2)</source>
+        <extracomment>a toolbar button&apos;s tooltip: its name and its key</extracomment>
+        <translation>%1 (%2)</translation>
+    </message>
+    <message>
+        <location line="+6"/>
+        <source>&amp;Run</source>
+        <translation>&amp;Esegui</translation>
+    </message>
+    <message>
+        <location line="+2"/>
+        <source>&amp;Pause</source>
+        <translation>&amp;Pausa</translation>
+    </message>
+    <message>
+        <location line="+2"/>
+        <source>&amp;Stop</source>
+        <translation>&amp;Fermati</translation>
+    </message>
+    <message>
+        <location line="+2"/>
+        <source>Single S&amp;can</source>
+        <translation>Singola s&amp;cansione</translation>
+    </message>
+    <message>
+        <location line="+2"/>
+        <source>Spee&amp;d</source>
+        <translation>&amp;Velocità</translation>
+    </message>
+    <message>
+        <location line="+3"/>
+        <source>x%1 Real Time</source>
+        <translation>x%1 tempo reale</translation>
+    </message>
+    <message>
+        <location line="+1"/>
+        <source>As &amp;Fast as Possible</source>
+        <translation>Il più &amp;veloce possibile</translation>
+    </message>
+    <message>
+        <location line="+12"/>
+        <source>Station:</source>
+        <translation>Stazione:</translation>
+    </message>
+    <message>
+        <location line="+13"/>
+        <source>F&amp;aults</source>
+        <translation>&amp;Guasti</translation>
+    </message>
+    <message>
+        <location line="+5"/>
+        <source>&amp;View</source>
+        <translation>&amp;Visualizza</translation>
+    </message>
+    <message>
+        <location line="+10"/>
+        <source>No network is open</source>
+        <translation>Nessuna rete aperta</translation>
+    </message>
+    <message>
+        <location line="+6"/>
+        <source>Cut Wire %1 (%2)</source>
+        <extracomment>%1 a wire&apos;s name, %2 its ends (&quot;master/CP2, s5/CP2&quot;)</extracomment>
+        <translation>Taglia il collegamento %1 (%2)</translation>
+    </message>
+    <message>
+        <location line="+6"/>
+        <source>Wire %1 is cut: nothing it carries arrives</source>
+        <translation>Il collegamento %1 è tagliato: non arriva nulla di ciò che trasporta</translation>
+    </message>
+    <message>
+        <location line="+1"/>
+        <source>Wire %1 is joined again</source>
+        <translation>Il collegamento %1 è di nuovo unito</translation>
+    </message>
+    <message>
+        <location line="+3"/>
+        <source>Corrupt the Next Frame on %1</source>
+        <translation>Altera il prossimo frame su %1</translation>
+    </message>
+    <message>
+        <location line="+5"/>
+        <source>The next frame on %1 will arrive with its second byte changed</source>
+        <translation>Il prossimo frame su %1 arriverà con il secondo byte cambiato</translation>
+    </message>
+    <message>
+        <location line="+11"/>
+        <source>Silence %1</source>
+        <translation>Ammutolisci %1</translation>
+    </message>
+    <message>
+        <location line="+8"/>
+        <source>Stop ends every fault made here</source>
+        <translation>Fermati annulla ogni guasto creato qui</translation>
+    </message>
+    <message>
+        <location line="+5"/>
+        <source>Stations</source>
+        <translation>Stazioni</translation>
+    </message>
+    <message>
+        <location line="+1"/>
+        <source>Inputs and Outputs</source>
+        <translation>Ingressi e uscite</translation>
+    </message>
+    <message>
+        <location line="+1"/>
+        <source>Network Watch</source>
+        <translation>Osservazione della rete</translation>
+    </message>
+    <message>
+        <location line="+1"/>
+        <source>Station/device, e.g. s5/D10</source>
+        <translation>Stazione/operando, ad es. s5/D10</translation>
+    </message>
+    <message>
+        <location line="+2"/>
+        <source>&amp;Watch</source>
+        <translation>&amp;Osserva</translation>
+    </message>
+    <message>
+        <location line="+1"/>
+        <source>Remove From Watch</source>
+        <translation>Rimuovi dall'osservazione</translation>
+    </message>
+    <message>
+        <location line="+1"/>
+        <source>Double-click a station to edit its program</source>
+        <translation>Doppio clic su una stazione per modificarne il programma</translation>
+    </message>
+    <message>
+        <location line="+3"/>
+        <source>%1 - Network - Rung Studio</source>
+        <extracomment>the window&apos;s title: the network file&apos;s name</extracomment>
+        <translation>%1 - Rete - Rung Studio</translation>
+    </message>
+    <message>
+        <location line="+2"/>
+        <source>Network - Rung Studio</source>
+        <translation>Rete - Rung Studio</translation>
+    </message>
+    <message>
+        <location line="+46"/>
+        <source>%1: the listing does not draw as a ladder</source>
+        <translation>%1: la lista istruzioni non si disegna come ladder</translation>
+    </message>
+    <message>
+        <location line="+37"/>
+        <source>A station&apos;s program is edited in the main window: Network &gt; Edit Station Program; Stop reads it again</source>
+        <translation>Il programma di una stazione si modifica nella finestra principale: Rete &gt; Modifica il programma della stazione; Fermati lo rilegge</translation>
+    </message>
+    <message>
+        <location line="+14"/>
+        <source>%1 (%2 %3)</source>
+        <extracomment>a station in the selector: its name, the PLC family and model, e.g. &quot;s5 (Vigor M/VB/VH VB)&quot;</extracomment>
+        <translation>%1 (%2 %3)</translation>
+    </message>
+    <message>
+        <location line="+78"/>
+        <source>No network</source>
+        <translation>Nessuna rete</translation>
+    </message>
+    <message>
+        <location line="+4"/>
+        <source>Running</source>
+        <translation>In esecuzione</translation>
+    </message>
+    <message>
+        <location line="+3"/>
+        <source>Stepping</source>
+        <translation>Passo passo</translation>
+    </message>
+    <message>
+        <location line="+3"/>
+        <source>Paused</source>
+        <translation>In pausa</translation>
+    </message>
+    <message>
+        <location line="+3"/>
+        <source>Stopped</source>
+        <translation>Fermata</translation>
+    </message>
+    <message numerus="yes">
+        <location line="+4"/>
+        <source>%1, %2, %n station(s)</source>
+        <extracomment>%1 run state, %2 virtual time, %3 number of stations</extracomment>
+        <translation>
+            <numerusform>%1, %2, %n stazione</numerusform>
+            <numerusform>%1, %2, %n stazioni</numerusform>
+        </translation>
     </message>
 </context>
 <context>
@@ -2128,12 +2449,12 @@ Ctrl+Z / Ctrl+Y: annulla / ripeti, Ctrl+rotellina: zoom, F4: verifica il program
         <translation>indicare esattamente uno tra --port, --tcp e --pty</translation>
     </message>
     <message>
-        <location line="+4"/>
+        <location line="+5"/>
         <source>modbus-tcp needs --tcp HOST:PORT (for RTU frames on a port: modbus)</source>
         <translation>modbus-tcp richiede --tcp HOST:PORTA (per frame RTU su una porta: modbus)</translation>
     </message>
     <message>
-        <location line="+10"/>
+        <location line="+8"/>
         <source>--tcp needs HOST:PORT, e.g. 127.0.0.1:502; got %1</source>
         <translation>--tcp richiede HOST:PORTA, ad es. 127.0.0.1:502; ricevuto %1</translation>
     </message>
@@ -2143,12 +2464,12 @@ Ctrl+Z / Ctrl+Y: annulla / ripeti, Ctrl+rotellina: zoom, F4: verifica il program
         <translation>%1 deve essere un numero da %2 a %3; ricevuto %4</translation>
     </message>
     <message>
-        <location line="+16"/>
+        <location line="+17"/>
         <source>--frame must be data bits, parity and stop bits, e.g. 8N1 or 7E2; got %1</source>
         <translation>--frame indica bit di dati, parità e bit di stop, ad es. 8N1 o 7E2; ricevuto %1</translation>
     </message>
     <message>
-        <location line="+6"/>
+        <location line="+5"/>
         <source>no device given</source>
         <translation>nessun operando indicato</translation>
     </message>
@@ -2857,7 +3178,7 @@ FILE è una lista istruzioni (.il), un testo ladder (.ladder) o un progetto (.ru
         <translation>%1 richiede un valore</translation>
     </message>
     <message>
-        <location line="+13"/>
+        <location line="+14"/>
         <source>unexpected argument %1</source>
         <translation>argomento non previsto: %1</translation>
     </message>
@@ -2869,7 +3190,7 @@ FILE è una lista istruzioni (.il), un testo ladder (.ladder) o un progetto (.ru
         <translation>il programma non si avvia</translation>
     </message>
     <message>
-        <location filename="../app/cli/cli_simulate.cpp" line="+28"/>
+        <location filename="../app/cli/cli_simulate.cpp" line="+29"/>
         <source>runtime error at step %1: %2</source>
         <translation>errore di esecuzione al passo %1: %2</translation>
     </message>
@@ -7505,7 +7826,7 @@ Valutazione: %4 µs (%5..%6)</translation>
     </message>
     <message>
         <location line="+5"/>
-        <location filename="../model/target/target_pl110.cpp" line="+107"/>
+        <location filename="../model/target/target_pl110.cpp" line="+108"/>
         <location filename="../model/target/target_vigor.cpp" line="+95"/>
         <location filename="../model/target/target_vpc.cpp" line="+5"/>
         <source>Start a block with a normally open contact</source>
@@ -7846,7 +8167,7 @@ Valutazione: %4 µs (%5..%6)</translation>
         <translation>Fine del programma</translation>
     </message>
     <message>
-        <location filename="../model/target/target_pl110.cpp" line="-405"/>
+        <location filename="../model/target/target_pl110.cpp" line="-406"/>
         <source>IF contact: ON while S1 ? S2 is true</source>
         <translation>Contatto IF: ON mentre S1 ? S2 è vero</translation>
     </message>
@@ -7992,7 +8313,7 @@ Valutazione: %4 µs (%5..%6)</translation>
         <translation>tempo di scansione massimo (0,1 ms)</translation>
     </message>
     <message>
-        <location line="+12"/>
+        <location line="+13"/>
         <source>the encoders&apos; load bits and the stepper motor output on AQ1 are not modelled; the word is plain memory</source>
         <translation>i bit di caricamento degli encoder e l&apos;uscita AQ1 del motore passo passo non sono modellati; la word è semplice memoria</translation>
     </message>
@@ -9292,7 +9613,7 @@ Valutazione: %4 µs (%5..%6)</translation>
         <translation>%1: riga %2: %3 usa %4, che esegue %5; %3 richiede %6</translation>
     </message>
     <message>
-        <location line="+36"/>
+        <location line="+45"/>
         <source>silent (fault): not sent</source>
         <translation>muto (guasto): non inviato</translation>
     </message>
@@ -9559,6 +9880,25 @@ Valutazione: %4 µs (%5..%6)</translation>
         <location line="+17"/>
         <source>%1: &quot;%2&quot; is no fault (cut, silent, corrupt)</source>
         <translation>%1: &quot;%2&quot; non è un guasto (cut, silent, corrupt)</translation>
+    </message>
+</context>
+<context>
+    <name>rung::network::NetworkSession</name>
+    <message>
+        <location filename="../network/network_session.cpp" line="+275"/>
+        <source>a fault made in the IDE</source>
+        <translation>un guasto creato nell'IDE</translation>
+    </message>
+    <message>
+        <location line="+56"/>
+        <source>%1: line %2: %3</source>
+        <extracomment>%1 station, %2 line, %3 what went wrong</extracomment>
+        <translation>%1: riga %2: %3</translation>
+    </message>
+    <message>
+        <location line="+4"/>
+        <source>%1: %2</source>
+        <translation>%1: %2</translation>
     </message>
 </context>
 <context>
@@ -10134,7 +10474,7 @@ Valutazione: %4 µs (%5..%6)</translation>
         <translation>nessun programma: uno scenario inizia con &quot;program FILE&quot;</translation>
     </message>
     <message>
-        <location filename="../simulator/scenario_run.cpp" line="+101"/>
+        <location filename="../simulator/scenario_run.cpp" line="+100"/>
         <source>&quot;%1&quot; is not understood here</source>
         <translation>&quot;%1&quot; non è comprensibile qui</translation>
     </message>

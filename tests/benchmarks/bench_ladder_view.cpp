@@ -7,6 +7,8 @@
 #include "tests/model/random_program.cpp"
 
 #include "app/gui/main_window.h"
+#include "app/gui/network_window.h"
+#include "network/network_session.h"
 #include "app/gui/simulation_controller.h"
 #include "editor/il_editor.h"
 #include "editor/ladder_painter.h"
@@ -21,6 +23,7 @@
 #include <QFile>
 #include <QPaintEvent>
 #include <QScrollBar>
+#include <QTableView>
 #include <QStandardPaths>
 #include <QTemporaryDir>
 #include <QThread>
@@ -392,8 +395,87 @@ void inputToScreenLatency(benchmark::State &state) {
     state.counters["max_ms"] = latencies.back();
 }
 
+// Issue 30: a network of eight Vigor stations in CPU Link, each running about 200 rungs,
+// simulated as fast as the machine goes in the network window at 1366x768, a station's ladder
+// on screen and eight devices of eight stations in the watch table. Counters: the ladder's
+// repaints a second (limit >= 30, as the single program's overlay), the watch table's, and
+// how many times real time the network runs.
+void networkFramesAtFullSpeed(benchmark::State &state) {
+    QTemporaryDir dir;
+    QString stations;
+    QStringList ends;
+    const model::Target &vigor = model::Target::get(model::Family::Vigor);
+    rung::testing::RandomProgramOptions o;
+    o.rungs = bench::sized(200, 20);
+    for (int k = 0; k < 8; ++k) {
+        QFile program(dir.filePath(QStringLiteral("s%1.il").arg(k)));
+        if (!program.open(QIODevice::WriteOnly)) {
+            state.SkipWithError("cannot write the stations' programs");
+            return;
+        }
+        program.write("; target: vigor\n");
+        program.write(rung::testing::randomProgram(vigor, 11 + k, o).toUtf8());
+        program.close();
+        stations += QStringLiteral(R"(%1{"name": "s%2", "program": "s%2.il", "model": "VB",
+            "ports": {"CP2": {"application": "cpu-link", "station": %2%3}}})")
+                        .arg(k ? QStringLiteral(",") : QString())
+                        .arg(k)
+                        .arg(k ? QString() : QStringLiteral(R"(, "slaves": 7, "range": 1)"));
+        ends << QStringLiteral("\"s%1/CP2\"").arg(k);
+    }
+    QFile net(dir.filePath(QStringLiteral("eight.rungnet")));
+    if (!net.open(QIODevice::WriteOnly)) {
+        state.SkipWithError("cannot write the network");
+        return;
+    }
+    net.write(QStringLiteral(R"({"stations": [%1], "wires": [[%2]]})")
+                  .arg(stations, ends.join(QLatin1Char(',')))
+                  .toUtf8());
+    net.close();
+    app::NetworkWindow window;
+    QString error;
+    if (!window.open(net.fileName(), &error)) {
+        state.SkipWithError(error.toStdString().c_str());
+        return;
+    }
+    window.resize(1366, 768);
+    window.show();
+    for (int k = 0; k < 8; ++k)
+        window.watch(QStringLiteral("s%1/D%2").arg(k).arg(k));
+    window.selectStation(QStringLiteral("s3"));
+    editor::LadderView *view = window.ladderView(QStringLiteral("s3"));
+    auto *table = window.findChild<QTableView *>(QStringLiteral("networkWatchTable"));
+    PaintCounter frames, tableFrames;
+    view->viewport()->installEventFilter(&frames);
+    table->viewport()->installEventFilter(&tableFrames);
+    network::NetworkSession *session = window.session();
+    session->setSpeed(0);
+    session->run();
+    QApplication::processEvents();
+    const qint64 startUs = session->nowUs();
+    QElapsedTimer clock;
+    clock.start();
+    frames.reset();
+    tableFrames.reset();
+    for (auto _ : state) {
+        QElapsedTimer second;
+        second.start();
+        while (second.elapsed() < 1000)
+            QApplication::processEvents(QEventLoop::AllEvents, 5);
+    }
+    const double seconds = static_cast<double>(clock.elapsed()) / 1000.0;
+    state.counters["ladder_fps"] = frames.rate();
+    state.counters["watch_fps"] = tableFrames.rate();
+    state.counters["realtime_x"] =
+        static_cast<double>(session->nowUs() - startUs) / 1e6 / seconds;
+    session->stop();
+    view->viewport()->removeEventFilter(&frames);
+    table->viewport()->removeEventFilter(&tableFrames);
+}
+
 } // namespace
 
+BENCHMARK(networkFramesAtFullSpeed)->Unit(benchmark::kMillisecond)->Iterations(bench::times(3));
 BENCHMARK(overlayFramesAtFullSpeed)->Unit(benchmark::kMillisecond)->Iterations(bench::times(3));
 BENCHMARK(overlayFrameCost)->Unit(benchmark::kMillisecond)->Iterations(bench::times(40));
 BENCHMARK(inputToScreenLatency)
