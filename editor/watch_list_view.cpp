@@ -1,6 +1,7 @@
 #include "watch_list_view.h"
 
 #include "device_mime.h"
+#include "keep_typed_delegate.h"
 
 #include <QAction>
 #include <QContextMenuEvent>
@@ -18,19 +19,10 @@ namespace rung::editor {
 namespace {
 
 // Draws a list's name and a forced device's value and force bold, and keeps what the user
-// types: the value cell's editor is filled once, when it opens, and the snapshots that
-// change the cell meanwhile do not overwrite it.
-class WatchDelegate : public QStyledItemDelegate {
+// types (KeepTypedDelegate).
+class WatchDelegate : public KeepTypedDelegate {
 public:
-    using QStyledItemDelegate::QStyledItemDelegate;
-
-    void setEditorData(QWidget *editor, const QModelIndex &index) const override {
-        static const char *const filled = "rungFilled";
-        if (editor->property(filled).toBool())
-            return;
-        QStyledItemDelegate::setEditorData(editor, index);
-        editor->setProperty(filled, true);
-    }
+    using KeepTypedDelegate::KeepTypedDelegate;
 
 protected:
     void initStyleOption(QStyleOptionViewItem *option, const QModelIndex &index) const override {

@@ -2138,6 +2138,44 @@ Ctrl+Z / Ctrl+Y: visszavonás / mégis, Ctrl+görgő: nagyítás, F4: a program 
     </message>
 </context>
 <context>
+    <name>rung::app::NetworkChart</name>
+    <message>
+        <location filename="../app/gui/network_chart.cpp" line="+66"/>
+        <source>Add station/device, e.g. s5/D10</source>
+        <translation>Állomás/operandus hozzáadása, pl. s5/D10</translation>
+    </message>
+    <message>
+        <location line="+1"/>
+        <source>Follow</source>
+        <translation>Követés</translation>
+    </message>
+    <message>
+        <location line="+1"/>
+        <source>Type a station&apos;s device above (s5/D10) to draw it</source>
+        <translation>Írjon be fent egy állomás operandusát (s5/D10) a kirajzolásához</translation>
+    </message>
+    <message>
+        <location line="+36"/>
+        <source>%1: write STATION/DEVICE, e.g. %2/D0 (stations: %3)</source>
+        <translation>%1: ÁLLOMÁS/OPERANDUS alakban írja, pl. %2/D0 (állomások: %3)</translation>
+    </message>
+    <message>
+        <location line="+7"/>
+        <source>Not added to the timing chart: %1</source>
+        <translation>Nem került az idődiagramra: %1</translation>
+    </message>
+    <message>
+        <location line="+15"/>
+        <source>%1 keeps no history of %2</source>
+        <translation>%1 nem őrzi %2 előzményeit</translation>
+    </message>
+    <message>
+        <location line="+47"/>
+        <source>A: %1</source>
+        <translation>A: %1</translation>
+    </message>
+</context>
+<context>
     <name>rung::app::NetworkWatchModel</name>
     <message>
         <location filename="../app/gui/network_watch_model.cpp" line="+37"/>
@@ -2186,7 +2224,7 @@ Ctrl+Z / Ctrl+Y: visszavonás / mégis, Ctrl+görgő: nagyítás, F4: a program 
 <context>
     <name>rung::app::NetworkWindow</name>
     <message>
-        <location filename="../app/gui/network_window.cpp" line="+138"/>
+        <location filename="../app/gui/network_window.cpp" line="+157"/>
         <source>Network</source>
         <translation>Hálózat</translation>
     </message>
@@ -2267,7 +2305,7 @@ Ctrl+Z / Ctrl+Y: visszavonás / mégis, Ctrl+görgő: nagyítás, F4: a program 
         <translation>&amp;Nézet</translation>
     </message>
     <message>
-        <location line="+10"/>
+        <location line="+11"/>
         <source>No network is open</source>
         <translation>Nincs megnyitott hálózat</translation>
     </message>
@@ -2339,6 +2377,16 @@ Ctrl+Z / Ctrl+Y: visszavonás / mégis, Ctrl+görgő: nagyítás, F4: a program 
     </message>
     <message>
         <location line="+1"/>
+        <source>Add to the Timing Chart</source>
+        <translation>Hozzáadás az idődiagramhoz</translation>
+    </message>
+    <message>
+        <location line="+1"/>
+        <source>Timing Chart</source>
+        <translation>Idődiagram</translation>
+    </message>
+    <message>
+        <location line="+1"/>
         <source>Double-click a station to edit its program</source>
         <translation>Kattintson duplán egy állomásra a programja szerkesztéséhez</translation>
     </message>
@@ -2359,7 +2407,7 @@ Ctrl+Z / Ctrl+Y: visszavonás / mégis, Ctrl+görgő: nagyítás, F4: a program 
         <translation>%1: az utasításlista nem rajzolható létradiagramként</translation>
     </message>
     <message>
-        <location line="+37"/>
+        <location line="+38"/>
         <source>A station&apos;s program is edited in the main window: Network &gt; Edit Station Program; Stop reads it again</source>
         <translation>Az állomás programja a főablakban szerkeszthető: Hálózat &gt; Állomás programjának szerkesztése; a Megállás újra beolvassa</translation>
     </message>
@@ -2370,7 +2418,7 @@ Ctrl+Z / Ctrl+Y: visszavonás / mégis, Ctrl+görgő: nagyítás, F4: a program 
         <translation>%1 (%2 %3)</translation>
     </message>
     <message>
-        <location line="+78"/>
+        <location line="+85"/>
         <source>No network</source>
         <translation>Nincs hálózat</translation>
     </message>
@@ -5792,7 +5840,7 @@ Kiértékelés: %4 µs (%5..%6)</translation>
 <context>
     <name>rung::editor::WatchListView</name>
     <message>
-        <location filename="../editor/watch_list_view.cpp" line="+57"/>
+        <location filename="../editor/watch_list_view.cpp" line="+49"/>
         <location line="+41"/>
         <source>Watch lists</source>
         <translation>Figyelőlisták</translation>

@@ -2145,6 +2145,44 @@ Ctrl+Z / Ctrl+Y: annulla / ripeti, Ctrl+rotellina: zoom, F4: verifica il program
     </message>
 </context>
 <context>
+    <name>rung::app::NetworkChart</name>
+    <message>
+        <location filename="../app/gui/network_chart.cpp" line="+66"/>
+        <source>Add station/device, e.g. s5/D10</source>
+        <translation>Aggiungi stazione/operando, ad es. s5/D10</translation>
+    </message>
+    <message>
+        <location line="+1"/>
+        <source>Follow</source>
+        <translation>Segui</translation>
+    </message>
+    <message>
+        <location line="+1"/>
+        <source>Type a station&apos;s device above (s5/D10) to draw it</source>
+        <translation>Scrivere sopra un operando di una stazione (s5/D10) per disegnarlo</translation>
+    </message>
+    <message>
+        <location line="+36"/>
+        <source>%1: write STATION/DEVICE, e.g. %2/D0 (stations: %3)</source>
+        <translation>%1: scrivere STAZIONE/OPERANDO, ad es. %2/D0 (stazioni: %3)</translation>
+    </message>
+    <message>
+        <location line="+7"/>
+        <source>Not added to the timing chart: %1</source>
+        <translation>Non aggiunto al diagramma temporale: %1</translation>
+    </message>
+    <message>
+        <location line="+15"/>
+        <source>%1 keeps no history of %2</source>
+        <translation>%1 non conserva la storia di %2</translation>
+    </message>
+    <message>
+        <location line="+47"/>
+        <source>A: %1</source>
+        <translation>A: %1</translation>
+    </message>
+</context>
+<context>
     <name>rung::app::NetworkWatchModel</name>
     <message>
         <location filename="../app/gui/network_watch_model.cpp" line="+37"/>
@@ -2193,7 +2231,7 @@ Ctrl+Z / Ctrl+Y: annulla / ripeti, Ctrl+rotellina: zoom, F4: verifica il program
 <context>
     <name>rung::app::NetworkWindow</name>
     <message>
-        <location filename="../app/gui/network_window.cpp" line="+138"/>
+        <location filename="../app/gui/network_window.cpp" line="+157"/>
         <source>Network</source>
         <translation>Rete</translation>
     </message>
@@ -2274,7 +2312,7 @@ Ctrl+Z / Ctrl+Y: annulla / ripeti, Ctrl+rotellina: zoom, F4: verifica il program
         <translation>&amp;Visualizza</translation>
     </message>
     <message>
-        <location line="+10"/>
+        <location line="+11"/>
         <source>No network is open</source>
         <translation>Nessuna rete aperta</translation>
     </message>
@@ -2342,7 +2380,17 @@ Ctrl+Z / Ctrl+Y: annulla / ripeti, Ctrl+rotellina: zoom, F4: verifica il program
     <message>
         <location line="+1"/>
         <source>Remove From Watch</source>
-        <translation>Rimuovi dall'osservazione</translation>
+        <translation>Rimuovi dall&apos;osservazione</translation>
+    </message>
+    <message>
+        <location line="+1"/>
+        <source>Add to the Timing Chart</source>
+        <translation>Aggiungi al diagramma temporale</translation>
+    </message>
+    <message>
+        <location line="+1"/>
+        <source>Timing Chart</source>
+        <translation>Diagramma temporale</translation>
     </message>
     <message>
         <location line="+1"/>
@@ -2366,7 +2414,7 @@ Ctrl+Z / Ctrl+Y: annulla / ripeti, Ctrl+rotellina: zoom, F4: verifica il program
         <translation>%1: la lista istruzioni non si disegna come ladder</translation>
     </message>
     <message>
-        <location line="+37"/>
+        <location line="+38"/>
         <source>A station&apos;s program is edited in the main window: Network &gt; Edit Station Program; Stop reads it again</source>
         <translation>Il programma di una stazione si modifica nella finestra principale: Rete &gt; Modifica il programma della stazione; Fermati lo rilegge</translation>
     </message>
@@ -2377,7 +2425,7 @@ Ctrl+Z / Ctrl+Y: annulla / ripeti, Ctrl+rotellina: zoom, F4: verifica il program
         <translation>%1 (%2 %3)</translation>
     </message>
     <message>
-        <location line="+78"/>
+        <location line="+85"/>
         <source>No network</source>
         <translation>Nessuna rete</translation>
     </message>
@@ -5807,7 +5855,7 @@ Valutazione: %4 µs (%5..%6)</translation>
 <context>
     <name>rung::editor::WatchListView</name>
     <message>
-        <location filename="../editor/watch_list_view.cpp" line="+57"/>
+        <location filename="../editor/watch_list_view.cpp" line="+49"/>
         <location line="+41"/>
         <source>Watch lists</source>
         <translation>Liste di osservazione</translation>
@@ -9887,7 +9935,7 @@ Valutazione: %4 µs (%5..%6)</translation>
     <message>
         <location filename="../network/network_session.cpp" line="+275"/>
         <source>a fault made in the IDE</source>
-        <translation>un guasto creato nell'IDE</translation>
+        <translation>un guasto creato nell&apos;IDE</translation>
     </message>
     <message>
         <location line="+56"/>

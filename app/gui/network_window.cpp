@@ -1,11 +1,13 @@
 #include "app/gui/network_window.h"
 
 #include "app/cli/cli_network.h"
+#include "app/gui/network_chart.h"
 #include "app/gui/network_watch_model.h"
 #include "app/gui/simulation_controller.h"
 
 #include "editor/document.h"
 #include "editor/io_panel.h"
+#include "editor/keep_typed_delegate.h"
 #include "editor/ladder_view.h"
 #include "model/convert/convert.h"
 #include "model/ladder/ladder_text.h"
@@ -56,6 +58,7 @@ NetworkWindow::~NetworkWindow() {
         v.io->setMonitorSource(nullptr);
     }
     m_watch->setSession(nullptr);
+    m_chart->setSession(nullptr);
 }
 
 void NetworkWindow::buildWindow() {
@@ -102,9 +105,9 @@ void NetworkWindow::buildWindow() {
     m_watchView = new QTableView(watchBox);
     m_watchView->setObjectName(QStringLiteral("networkWatchTable"));
     m_watchView->setModel(m_watch);
+    m_watchView->setItemDelegate(new editor::KeepTypedDelegate(m_watchView));
     m_watchView->verticalHeader()->hide();
-    m_watchView->horizontalHeader()->setSectionResizeMode(NetworkWatchModel::Device,
-                                                          QHeaderView::ResizeToContents);
+    m_watchView->horizontalHeader()->setSectionResizeMode(QHeaderView::ResizeToContents);
     m_watchView->horizontalHeader()->setStretchLastSection(true);
     m_watchView->setSelectionBehavior(QAbstractItemView::SelectRows);
     m_watchView->setEditTriggers(QAbstractItemView::DoubleClicked |
@@ -120,11 +123,27 @@ void NetworkWindow::buildWindow() {
             m_watch->removeRow(i.row());
     });
     m_watchView->addAction(m_removeWatch);
+    m_chartWatched = new QAction(this);
+    connect(m_chartWatched, &QAction::triggered, this, [this] {
+        const QModelIndex i = m_watchView->currentIndex();
+        if (i.isValid())
+            m_chart->addDevice(m_watch->devices().value(i.row()));
+    });
+    m_watchView->addAction(m_chartWatched);
     m_watchView->setContextMenuPolicy(Qt::ActionsContextMenu);
     m_watchDock = new QDockWidget(this);
     m_watchDock->setObjectName(QStringLiteral("networkWatchDock"));
     m_watchDock->setWidget(watchBox);
     addDockWidget(Qt::RightDockWidgetArea, m_watchDock);
+
+    m_chart = new NetworkChart(this);
+    m_chart->setObjectName(QStringLiteral("networkChart"));
+    connect(m_chart, &NetworkChart::message, this,
+            [this](const QString &text) { statusBar()->showMessage(text, 10000); });
+    m_chartDock = new QDockWidget(this);
+    m_chartDock->setObjectName(QStringLiteral("networkChartDock"));
+    m_chartDock->setWidget(m_chart);
+    addDockWidget(Qt::BottomDockWidgetArea, m_chartDock);
 
     m_status = new QLabel(this);
     m_status->setObjectName(QStringLiteral("networkStatus"));
@@ -207,6 +226,7 @@ void NetworkWindow::buildMenus() {
     view->addAction(m_stationsDock->toggleViewAction());
     view->addAction(m_ioDock->toggleViewAction());
     view->addAction(m_watchDock->toggleViewAction());
+    view->addAction(m_chartDock->toggleViewAction());
     updateActions();
 }
 
@@ -265,6 +285,8 @@ void NetworkWindow::retranslate() {
     if (auto *add = findChild<QPushButton *>(QStringLiteral("networkWatchAdd")))
         add->setText(tr("&Watch"));
     m_removeWatch->setText(tr("Remove From Watch"));
+    m_chartWatched->setText(tr("Add to the Timing Chart"));
+    m_chartDock->setWindowTitle(tr("Timing Chart"));
     m_stationList->setToolTip(tr("Double-click a station to edit its program"));
     if (!m_path.isEmpty())
         //: the window's title: the network file's name
@@ -341,6 +363,7 @@ bool NetworkWindow::open(const QString &path, QString *error) {
     m_path = QFileInfo(path).absoluteFilePath();
     m_session = std::move(session);
     m_watch->setSession(m_session.get());
+    m_chart->setSession(m_session.get());
     m_selector->blockSignals(true);
     for (network::StationSource *source : m_session->stations()) {
         StationView v;
@@ -389,6 +412,13 @@ bool NetworkWindow::open(const QString &path, QString *error) {
             });
     if (!m_views.empty())
         selectStation(m_views.front().name);
+    // The stations' list as tall as its rows, the inputs and outputs below it the rest; the
+    // ladder the middle of a 1366x768 screen.
+    const int rows = std::min<int>(int(m_views.size()), 8);
+    resizeDocks({m_stationsDock, m_ioDock},
+                {rows * m_stationList->fontMetrics().height() + 12, 400}, Qt::Vertical);
+    resizeDocks({m_stationsDock, m_watchDock}, {330, 300}, Qt::Horizontal);
+    resizeDocks({m_chartDock}, {200}, Qt::Vertical);
     buildFaultsMenu();
     updateActions();
     retranslate();

@@ -34,6 +34,7 @@ class StationSource;
 
 namespace rung::app {
 
+class NetworkChart;
 class NetworkWatchModel;
 
 class NetworkWindow : public QMainWindow {
@@ -56,6 +57,7 @@ public:
     editor::LadderView *ladderView(const QString &station) const;
     editor::Document *document(const QString &station) const;
     NetworkWatchModel *watchModel() const { return m_watch; }
+    NetworkChart *chart() const { return m_chart; }
     // Adds "STATION/DEVICE" to the watch table; false with the reason in the status bar.
     bool watch(const QString &device);
     // The status line: run state and virtual time.
@@ -98,6 +100,8 @@ private:
     QTableView *m_watchView = nullptr;
     QLineEdit *m_watchLine = nullptr;
     NetworkWatchModel *m_watch = nullptr;
+    NetworkChart *m_chart = nullptr;
+    QAction *m_chartWatched = nullptr;
     QLabel *m_status = nullptr;
     QLabel *m_selectorLabel = nullptr;
     QMenu *m_simulationMenu = nullptr;
@@ -113,6 +117,7 @@ private:
     class QDockWidget *m_stationsDock = nullptr;
     class QDockWidget *m_watchDock = nullptr;
     class QDockWidget *m_ioDock = nullptr;
+    class QDockWidget *m_chartDock = nullptr;
 };
 
 } // namespace rung::app

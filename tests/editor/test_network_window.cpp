@@ -3,16 +3,19 @@
 // in the network's watch table, a wire cut from the Faults menu raises the master's error, and
 // a station's program opens in the main window for editing.
 
+#include "app/gui/network_chart.h"
 #include "app/gui/network_watch_model.h"
 #include "app/gui/network_window.h"
 #include "window_fixture.h"
 
 #include "editor/document.h"
+#include "model/target/address.h"
 #include "network/network_session.h"
 
 #include <QComboBox>
 #include <QListWidget>
 #include <QMenu>
+#include <QTableView>
 
 namespace rung::test {
 namespace {
@@ -133,6 +136,73 @@ TEST(NetworkWindow, AWireCutFromTheFaultsMenuRaisesTheMastersError) {
     toolbarAction(*net, QStringLiteral("Stop"))->trigger();
     EXPECT_FALSE(net->session()->wireCut(QStringLiteral("w1")));
     EXPECT_TRUE(eventually([&] { return status() == 0 && net->session()->nowUs() == 0; }));
+}
+
+// The chart takes devices of any station on one time axis: the value written in s5 shows in
+// its row, and later, after the LINK's read, in the master's.
+TEST(NetworkWindow, TheTimingChartDrawsDevicesOfTwoStationsOnOneClock) {
+    app::MainWindow window;
+    ASSERT_TRUE(window.openFile(example("easy-link"), QString(), true));
+    app::NetworkWindow *net = openedNetwork(window);
+    ASSERT_NE(net, nullptr);
+    app::NetworkChart *chart = net->chart();
+    ASSERT_TRUE(chart->addDevice(QStringLiteral("s5/D10")));
+    ASSERT_TRUE(chart->addDevice(QStringLiteral("master/D0")));
+    EXPECT_TRUE(chart->addDevice(QStringLiteral("master/D0"))); // drawn once
+    QSignalSpy said(chart, &app::NetworkChart::message);
+    EXPECT_FALSE(chart->addDevice(QStringLiteral("nowhere/D0")));
+    EXPECT_EQ(said.count(), 1);
+    EXPECT_EQ(chart->devices(),
+              (QStringList{QStringLiteral("s5/D10"), QStringLiteral("master/D0")}));
+    network::StationSource *s5 = net->session()->station(QStringLiteral("s5"));
+    const auto d10 =
+        std::get<model::Address>(model::parseAddress(s5->target(), QStringLiteral("D10")));
+    s5->writeWord(d10, 99);
+    net->session()->setSpeed(0);
+    net->session()->runFor(500);
+    ASSERT_TRUE(eventually([&] { return net->session()->runState() == RunState::Paused; }));
+    // The chart refreshes on the clock's signals; the last one follows the last slice.
+    const auto lastValue = [&](int row) -> qint64 {
+        const auto &changes = chart->window().changes;
+        return row < int(changes.size()) && !changes[std::size_t(row)].empty()
+                   ? changes[std::size_t(row)].back().value
+                   : -1;
+    };
+    EXPECT_TRUE(eventually([&] { return lastValue(0) == 99 && lastValue(1) == 99; }));
+    // The value arrived in the master after it was in s5.
+    const auto &master = chart->window().changes[1];
+    ASSERT_FALSE(master.empty());
+    EXPECT_GT(master.back().timeMs, 0);
+}
+
+// A value typed into the network's watch table while the network runs is not overwritten by
+// the snapshots that come meanwhile.
+TEST(NetworkWindow, TypingAValueWhileTheNetworkRunsKeepsWhatIsTyped) {
+    app::MainWindow window;
+    ASSERT_TRUE(window.openFile(example("easy-link"), QString(), true));
+    app::NetworkWindow *net = openedNetwork(window);
+    ASSERT_NE(net, nullptr);
+    ASSERT_TRUE(net->watch(QStringLiteral("master/D1001")));
+    auto *table = net->findChild<QTableView *>(QStringLiteral("networkWatchTable"));
+    ASSERT_NE(table, nullptr);
+    net->session()->run();
+    const QModelIndex value = net->watchModel()->index(0, app::NetworkWatchModel::Value);
+    table->setCurrentIndex(value);
+    table->edit(value);
+    QWidget *editor = table->indexWidget(value);
+    if (!editor)
+        editor = table->viewport()->findChild<QWidget *>();
+    ASSERT_NE(editor, nullptr);
+    auto *line = qobject_cast<QLineEdit *>(editor);
+    if (!line)
+        line = editor->findChild<QLineEdit *>();
+    ASSERT_NE(line, nullptr) << editor->metaObject()->className();
+    line->setText(QStringLiteral("1234"));
+    // Several beats of snapshots while the editor is open.
+    const qint64 start = net->session()->nowUs();
+    EXPECT_TRUE(eventually([&] { return net->session()->nowUs() > start + 200'000; }));
+    QCoreApplication::processEvents();
+    EXPECT_EQ(line->text(), QStringLiteral("1234"));
 }
 
 TEST(NetworkWindow, AStationsProgramOpensInTheMainWindowForEditing) {

@@ -1,0 +1,176 @@
+#include "app/gui/network_chart.h"
+
+#include "app/gui/simulation_controller.h"
+#include "editor/timing_canvas.h"
+#include "model/target/address.h"
+#include "network/network_session.h"
+
+#include <QCheckBox>
+#include <QEvent>
+#include <QHBoxLayout>
+#include <QLabel>
+#include <QLineEdit>
+#include <QVBoxLayout>
+
+#include <cmath>
+
+namespace rung::app {
+
+NetworkChart::NetworkChart(QWidget *parent)
+    : QWidget(parent) {
+    auto *layout = new QVBoxLayout(this);
+    layout->setContentsMargins(2, 2, 2, 2);
+    auto *top = new QHBoxLayout;
+    m_add = new QLineEdit(this);
+    m_add->setObjectName(QStringLiteral("networkChartAdd"));
+    connect(m_add, &QLineEdit::returnPressed, this, [this] {
+        if (addDevice(m_add->text()))
+            m_add->clear();
+    });
+    m_follow = new QCheckBox(this);
+    m_follow->setChecked(true);
+    connect(m_follow, &QCheckBox::toggled, this, [this] { refresh(); });
+    m_readout = new QLabel(this);
+    top->addWidget(m_add, 1);
+    top->addWidget(m_follow);
+    top->addWidget(m_readout);
+    layout->addLayout(top);
+    m_canvas = new editor::TimingCanvas(this);
+    m_canvas->setObjectName(QStringLiteral("networkChartCanvas"));
+    m_canvas->setChannels(&m_channels);
+    layout->addWidget(m_canvas, 1);
+    connect(m_canvas, &editor::TimingCanvas::zoomRequested, this, [this](double factor, qint64) {
+        m_msPerPixel = std::clamp(m_msPerPixel * factor, 0.01, 100000.0);
+        refresh();
+    });
+    connect(m_canvas, &editor::TimingCanvas::scrollRequested, this, [this](qint64 delta) {
+        m_follow->setChecked(false);
+        m_endMs = std::max<qint64>(0, m_endMs + delta);
+        refresh();
+    });
+    connect(m_canvas, &editor::TimingCanvas::cursorRequested, this, [this](int which, qint64 ms) {
+        m_canvas->setCursorTime(which, ms);
+        refresh();
+        if (which == 0)
+            emit cursorMoved(ms);
+    });
+    connect(m_canvas, &editor::TimingCanvas::removeRequested, this, &NetworkChart::removeRow);
+    connect(m_canvas, &editor::TimingCanvas::devicesDropped, this, [this](const QStringList &l) {
+        for (const QString &d : l)
+            addDevice(d);
+    });
+    retranslate();
+}
+
+void NetworkChart::retranslate() {
+    m_add->setPlaceholderText(tr("Add station/device, e.g. s5/D10"));
+    m_follow->setText(tr("Follow"));
+    m_canvas->setEmptyText(tr("Type a station's device above (s5/D10) to draw it"));
+}
+
+void NetworkChart::changeEvent(QEvent *event) {
+    if (event->type() == QEvent::LanguageChange)
+        retranslate();
+    QWidget::changeEvent(event);
+}
+
+void NetworkChart::setSession(network::NetworkSession *session) {
+    if (m_session)
+        disconnect(m_session, nullptr, this, nullptr);
+    m_session = session;
+    m_channels.clear();
+    m_stations.clear();
+    m_canvas->setChannels(&m_channels);
+    if (session)
+        connect(session, &network::NetworkSession::clockChanged, this, &NetworkChart::refresh);
+    refresh();
+}
+
+void NetworkChart::setFollow(bool follow) {
+    m_follow->setChecked(follow);
+}
+
+bool NetworkChart::addDevice(const QString &text) {
+    if (!m_session)
+        return false;
+    const QString trimmed = text.trimmed();
+    const qsizetype slash = trimmed.indexOf(QLatin1Char('/'));
+    network::StationSource *station =
+        slash > 0 ? m_session->station(trimmed.left(slash).trimmed()) : nullptr;
+    if (!station) {
+        QStringList names;
+        for (network::StationSource *s : m_session->stations())
+            names << s->stationName();
+        emit message(tr("%1: write STATION/DEVICE, e.g. %2/D0 (stations: %3)")
+                         .arg(trimmed, names.value(0), names.join(QStringLiteral(", "))));
+        return false;
+    }
+    const auto parsed =
+        model::parseAddress(station->target(), trimmed.mid(slash + 1).trimmed(), station->model());
+    if (const auto *e = std::get_if<model::AddressError>(&parsed)) {
+        emit message(tr("Not added to the timing chart: %1").arg(e->message));
+        return false;
+    }
+    const model::Address a = std::get<model::Address>(parsed);
+    model::TimingChannel c;
+    c.address = a;
+    c.device =
+        station->stationName() + QLatin1Char('/') + model::formatAddress(station->target(), a);
+    for (const model::TimingChannel &o : m_channels)
+        if (o.device == c.device)
+            return true;
+    const model::Area &area = station->target().area(a.area);
+    c.bit = a.bit >= 0 || area.kind == model::AreaKind::Bit;
+    c.bits = area.wordBits;
+    if (!station->watchHistory(a)) {
+        emit message(tr("%1 keeps no history of %2").arg(station->stationName(), c.device));
+        return false;
+    }
+    m_channels.push_back(c);
+    m_stations.emplace_back(station);
+    m_canvas->setChannels(&m_channels);
+    refresh();
+    return true;
+}
+
+void NetworkChart::removeRow(int row) {
+    if (row < 0 || row >= int(m_channels.size()))
+        return;
+    m_channels.erase(m_channels.begin() + row);
+    m_stations.erase(m_stations.begin() + row);
+    m_canvas->setSelectedRow(-1);
+    m_canvas->setChannels(&m_channels);
+    refresh();
+}
+
+QStringList NetworkChart::devices() const {
+    QStringList out;
+    for (const model::TimingChannel &c : m_channels)
+        out << c.device;
+    return out;
+}
+
+void NetworkChart::refresh() {
+    const qint64 now = m_session ? m_session->nowUs() / 1000 : 0;
+    if (m_follow->isChecked())
+        m_endMs = std::max<qint64>(now, std::llround(m_canvas->waveWidth() * m_msPerPixel));
+    m_canvas->setView(m_endMs, m_msPerPixel);
+    // One window over every row: each row read from its own station's history.
+    model::TimingWindow window;
+    window.fromMs = m_canvas->fromMs();
+    window.toMs = std::min(m_endMs, now);
+    for (std::size_t k = 0; k < m_channels.size(); ++k) {
+        model::TimingWindow one;
+        if (m_stations[k])
+            one = model::readWindow(*m_stations[k], {m_channels[k]}, window.fromMs, window.toMs);
+        window.changes.push_back(one.changes.empty() ? std::vector<model::HistoryRecorder::Change>{}
+                                                     : one.changes.front());
+        window.knownFromMs.push_back(one.knownFromMs.empty() ? -1 : one.knownFromMs.front());
+    }
+    m_window = window;
+    m_canvas->setWindow(window);
+    const auto a = m_canvas->cursorTime(0);
+    m_readout->setText(a ? tr("A: %1").arg(SimulationController::clockText(*a)) : QString());
+}
+
+} // namespace rung::app

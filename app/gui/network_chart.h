@@ -1,0 +1,71 @@
+#pragma once
+
+// The timing chart of a network: bits and words of any station on one time axis ("s5/D10"
+// beside "master/D0"), so a value is seen leaving one PLC and arriving in another, with the
+// scans between. Each row reads its station's history (network_session.h: every station
+// records the devices asked for); the drawing is the single program's chart's canvas
+// (editor/timing_canvas.h): zoom with Ctrl+wheel, scroll with the wheel, two cursors.
+
+#include "model/image/timing_data.h"
+
+#include <QPointer>
+#include <QWidget>
+
+#include <vector>
+
+class QCheckBox;
+class QLabel;
+class QLineEdit;
+
+namespace rung::editor {
+class TimingCanvas;
+}
+namespace rung::network {
+class NetworkSession;
+class StationSource;
+} // namespace rung::network
+
+namespace rung::app {
+
+class NetworkChart : public QWidget {
+    Q_OBJECT
+
+public:
+    explicit NetworkChart(QWidget *parent = nullptr);
+
+    void setSession(network::NetworkSession *session);
+    // Adds "STATION/DEVICE" (a device listed already is not added twice); false with the
+    // reason in message().
+    bool addDevice(const QString &text);
+    void removeRow(int row);
+    QStringList devices() const;
+    editor::TimingCanvas *canvas() const { return m_canvas; }
+    // The values drawn for a row, as the chart read them last (for the tests and the readout).
+    const model::TimingWindow &window() const { return m_window; }
+    void setFollow(bool follow);
+
+signals:
+    void message(const QString &text);
+    // The user put cursor A on this virtual time.
+    void cursorMoved(qint64 timeMs);
+
+protected:
+    void changeEvent(QEvent *event) override;
+
+private:
+    void retranslate();
+    void refresh();
+
+    QPointer<network::NetworkSession> m_session;
+    std::vector<model::TimingChannel> m_channels; // device "s5/D10"
+    std::vector<QPointer<network::StationSource>> m_stations;
+    model::TimingWindow m_window;
+    editor::TimingCanvas *m_canvas;
+    QLineEdit *m_add;
+    QCheckBox *m_follow;
+    QLabel *m_readout;
+    double m_msPerPixel = 10.0;
+    qint64 m_endMs = 0;
+};
+
+} // namespace rung::app
