@@ -215,6 +215,27 @@ void NetworkSession::corruptNextFrame(const QString &wire, int byte, int mask) {
     });
 }
 
+void NetworkSession::setBaud(const QString &port, int baud) {
+    const Fault f{Fault::Kind::Baud, port, true, 0, baud};
+    std::erase_if(m_faultsShown,
+                  [&](const Fault &o) { return o.kind == f.kind && o.target == port; });
+    m_faultsShown.push_back(f);
+    control([this, f] { m_faults.push_back(f); });
+}
+
+int NetworkSession::baudSet(const QString &port) const {
+    for (const Fault &f : m_faultsShown)
+        if (f.kind == Fault::Kind::Baud && f.target == port)
+            return f.mask;
+    return 0;
+}
+
+void NetworkSession::powerCycle() {
+    for (StationSource *s : m_sources)
+        s->m_inbox.post({0, simulator::PowerCycle{}});
+    control([] {});
+}
+
 bool NetworkSession::wireCut(const QString &wire) const {
     return std::any_of(m_faultsShown.begin(), m_faultsShown.end(), [&](const Fault &f) {
         return f.kind == Fault::Kind::Cut && f.target == wire;
@@ -283,6 +304,17 @@ void NetworkSession::applyFaults(Network &network, std::vector<Fault> faults) {
                 d.kind = kind;
                 (kind == FaultDescription::Kind::Cut ? d.wire : d.station) = f.target;
                 network.addFault(d);
+            }
+            break;
+        }
+        case Fault::Kind::Baud: {
+            const qsizetype slash = f.target.indexOf(QLatin1Char('/'));
+            Station *station = slash > 0 ? network.station(f.target.left(slash)) : nullptr;
+            StationPort *port = station ? station->findPort(f.target.mid(slash + 1)) : nullptr;
+            if (port) {
+                model::SerialSettings line = port->line();
+                line.baud = f.mask;
+                port->setLine(line);
             }
             break;
         }

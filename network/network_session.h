@@ -102,6 +102,9 @@ public:
     void singleScan();
     // As much virtual time, then Paused.
     void runFor(qint64 durationMs);
+    // Every station powered off and on at the next slice: retentive areas survive, the rest
+    // clears (simulator::PowerCycle); the network's clock goes on.
+    void powerCycle();
     // Times real time; 0 or less: as fast as it goes.
     void setSpeed(double factor);
     double speed() const;
@@ -118,6 +121,11 @@ public:
     void setWireCut(const QString &wire, bool cut);
     void setSilent(const QString &stationOrDevice, bool silent);
     void corruptNextFrame(const QString &wire, int byte = 0, int mask = 0x01);
+    // A station's port ("s5/CP2") sends and reads at another rate from now on, as a port set
+    // wrongly would: the other ends read its characters garbled (uart.h). Stop restores it.
+    void setBaud(const QString &port, int baud);
+    // The rate set by setBaud, or 0 while the port runs at its own.
+    int baudSet(const QString &port) const;
     bool wireCut(const QString &wire) const;
     bool silent(const QString &stationOrDevice) const;
 
@@ -138,7 +146,7 @@ private:
                    std::unique_ptr<Network> network, QObject *parent);
     enum class Mode { Stopped, Paused, Running };
     struct Fault {
-        enum class Kind { Cut, Silent, Corrupt } kind;
+        enum class Kind { Cut, Silent, Corrupt, Baud } kind;
         QString target;
         bool on = true;
         int byte = 0;

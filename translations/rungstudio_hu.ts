@@ -2224,7 +2224,7 @@ Ctrl+Z / Ctrl+Y: visszavonás / mégis, Ctrl+görgő: nagyítás, F4: a program 
 <context>
     <name>rung::app::NetworkWindow</name>
     <message>
-        <location filename="../app/gui/network_window.cpp" line="+157"/>
+        <location filename="../app/gui/network_window.cpp" line="+158"/>
         <source>Network</source>
         <translation>Hálózat</translation>
     </message>
@@ -2276,6 +2276,27 @@ Ctrl+Z / Ctrl+Y: visszavonás / mégis, Ctrl+görgő: nagyítás, F4: a program 
     </message>
     <message>
         <location line="+2"/>
+        <source>Run &amp;For...</source>
+        <translation>Futtatás &amp;ennyi ideig...</translation>
+    </message>
+    <message>
+        <location line="+7"/>
+        <source>Run For</source>
+        <extracomment>the virtual time to run the network for, in seconds</extracomment>
+        <translation>Futtatás ennyi ideig</translation>
+    </message>
+    <message>
+        <location line="+0"/>
+        <source>Virtual time to run the network for (seconds):</source>
+        <translation>A hálózat futtatásának virtuális ideje (másodperc):</translation>
+    </message>
+    <message>
+        <location line="+5"/>
+        <source>Power C&amp;ycle</source>
+        <translation>&amp;Ki-bekapcsolás</translation>
+    </message>
+    <message>
+        <location line="+7"/>
         <source>Spee&amp;d</source>
         <translation>S&amp;ebesség</translation>
     </message>
@@ -2336,7 +2357,28 @@ Ctrl+Z / Ctrl+Y: visszavonás / mégis, Ctrl+görgő: nagyítás, F4: a program 
         <translation>A(z) %1 következő kerete megváltozott második bájttal érkezik</translation>
     </message>
     <message>
-        <location line="+11"/>
+        <location line="+13"/>
+        <source>Baud Rate of %1: %2 (changed)...</source>
+        <extracomment>%1 a station&apos;s port (&quot;s5/CP2&quot;); %2 the rate set by hand, if any</extracomment>
+        <translation>%1 átviteli sebessége: %2 (módosítva)...</translation>
+    </message>
+    <message>
+        <location line="+1"/>
+        <source>Change the Baud Rate of %1...</source>
+        <translation>%1 átviteli sebességének módosítása...</translation>
+    </message>
+    <message>
+        <location line="+8"/>
+        <source>Baud Rate</source>
+        <translation>Átviteli sebesség</translation>
+    </message>
+    <message>
+        <location line="+1"/>
+        <source>%1 sends and reads at (the other ends keep theirs):</source>
+        <translation>%1 ezzel a sebességgel küld és olvas (a többi végpont megtartja a sajátját):</translation>
+    </message>
+    <message>
+        <location line="+13"/>
         <source>Silence %1</source>
         <translation>%1 elnémítása</translation>
     </message>
@@ -9911,12 +9953,12 @@ Kiértékelés: %4 µs (%5..%6)</translation>
 <context>
     <name>rung::network::NetworkSession</name>
     <message>
-        <location filename="../network/network_session.cpp" line="+275"/>
+        <location filename="../network/network_session.cpp" line="+296"/>
         <source>a fault made in the IDE</source>
         <translation>az IDE-ben okozott hiba</translation>
     </message>
     <message>
-        <location line="+56"/>
+        <location line="+67"/>
         <source>%1: line %2: %3</source>
         <extracomment>%1 station, %2 line, %3 what went wrong</extracomment>
         <translation>%1: %2. sor: %3</translation>

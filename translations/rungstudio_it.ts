@@ -2231,7 +2231,7 @@ Ctrl+Z / Ctrl+Y: annulla / ripeti, Ctrl+rotellina: zoom, F4: verifica il program
 <context>
     <name>rung::app::NetworkWindow</name>
     <message>
-        <location filename="../app/gui/network_window.cpp" line="+157"/>
+        <location filename="../app/gui/network_window.cpp" line="+158"/>
         <source>Network</source>
         <translation>Rete</translation>
     </message>
@@ -2283,6 +2283,27 @@ Ctrl+Z / Ctrl+Y: annulla / ripeti, Ctrl+rotellina: zoom, F4: verifica il program
     </message>
     <message>
         <location line="+2"/>
+        <source>Run &amp;For...</source>
+        <translation>Esegui &amp;per...</translation>
+    </message>
+    <message>
+        <location line="+7"/>
+        <source>Run For</source>
+        <extracomment>the virtual time to run the network for, in seconds</extracomment>
+        <translation>Esegui per</translation>
+    </message>
+    <message>
+        <location line="+0"/>
+        <source>Virtual time to run the network for (seconds):</source>
+        <translation>Tempo virtuale per cui eseguire la rete (secondi):</translation>
+    </message>
+    <message>
+        <location line="+5"/>
+        <source>Power C&amp;ycle</source>
+        <translation>&amp;Spegni e riaccendi</translation>
+    </message>
+    <message>
+        <location line="+7"/>
         <source>Spee&amp;d</source>
         <translation>&amp;Velocità</translation>
     </message>
@@ -2343,7 +2364,28 @@ Ctrl+Z / Ctrl+Y: annulla / ripeti, Ctrl+rotellina: zoom, F4: verifica il program
         <translation>Il prossimo frame su %1 arriverà con il secondo byte cambiato</translation>
     </message>
     <message>
-        <location line="+11"/>
+        <location line="+13"/>
+        <source>Baud Rate of %1: %2 (changed)...</source>
+        <extracomment>%1 a station&apos;s port (&quot;s5/CP2&quot;); %2 the rate set by hand, if any</extracomment>
+        <translation>Velocità di %1: %2 (cambiata)...</translation>
+    </message>
+    <message>
+        <location line="+1"/>
+        <source>Change the Baud Rate of %1...</source>
+        <translation>Cambia la velocità di %1...</translation>
+    </message>
+    <message>
+        <location line="+8"/>
+        <source>Baud Rate</source>
+        <translation>Velocità di trasmissione</translation>
+    </message>
+    <message>
+        <location line="+1"/>
+        <source>%1 sends and reads at (the other ends keep theirs):</source>
+        <translation>%1 trasmette e riceve a (gli altri capi mantengono la propria):</translation>
+    </message>
+    <message>
+        <location line="+13"/>
         <source>Silence %1</source>
         <translation>Ammutolisci %1</translation>
     </message>
@@ -9933,12 +9975,12 @@ Valutazione: %4 µs (%5..%6)</translation>
 <context>
     <name>rung::network::NetworkSession</name>
     <message>
-        <location filename="../network/network_session.cpp" line="+275"/>
+        <location filename="../network/network_session.cpp" line="+296"/>
         <source>a fault made in the IDE</source>
         <translation>un guasto creato nell&apos;IDE</translation>
     </message>
     <message>
-        <location line="+56"/>
+        <location line="+67"/>
         <source>%1: line %2: %3</source>
         <extracomment>%1 station, %2 line, %3 what went wrong</extracomment>
         <translation>%1: riga %2: %3</translation>

@@ -24,6 +24,7 @@
 #include <QFileInfo>
 #include <QHBoxLayout>
 #include <QHeaderView>
+#include <QInputDialog>
 #include <QKeySequence>
 #include <QLabel>
 #include <QLineEdit>
@@ -188,6 +189,25 @@ void NetworkWindow::buildMenus() {
                  QKeySequence(Qt::SHIFT | Qt::Key_F11), [this] { m_session->stop(); });
     m_scan = add("networkSingleScan", tr("Single S&can"), QStyle::SP_MediaSeekForward,
                  QKeySequence(Qt::Key_F12), [this] { m_session->singleScan(); });
+    QAction *runFor = m_simulationMenu->addAction(tr("Run &For..."));
+    runFor->setObjectName(QStringLiteral("networkRunFor"));
+    runFor->setShortcut(QKeySequence(Qt::CTRL | Qt::SHIFT | Qt::Key_F10));
+    connect(runFor, &QAction::triggered, this, [this] {
+        bool ok = false;
+        //: the virtual time to run the network for, in seconds
+        const double seconds = QInputDialog::getDouble(
+            this, tr("Run For"), tr("Virtual time to run the network for (seconds):"), 1.0, 0.001,
+            86400.0, 3, &ok);
+        if (ok && m_session)
+            m_session->runFor(static_cast<qint64>(seconds * 1000.0 + 0.5));
+    });
+    m_powerCycle = m_simulationMenu->addAction(tr("Power C&ycle"));
+    m_powerCycle->setObjectName(QStringLiteral("networkPowerCycle"));
+    m_powerCycle->setShortcut(QKeySequence(Qt::CTRL | Qt::SHIFT | Qt::Key_F12));
+    connect(m_powerCycle, &QAction::triggered, this, [this] {
+        if (m_session)
+            m_session->powerCycle();
+    });
     m_speedMenu = m_simulationMenu->addMenu(tr("Spee&d"));
     auto *speeds = new QActionGroup(m_speedMenu);
     for (const double factor : {0.1, 0.5, 1.0, 2.0, 5.0, 10.0, 100.0, 0.0}) {
@@ -258,6 +278,31 @@ void NetworkWindow::buildFaultsMenu() {
                 5000);
         });
     }
+    m_faultsMenu->addSeparator();
+    for (const auto &w : m_session->wires())
+        for (const QString &end : w.ends) {
+            const qsizetype slash = end.indexOf(QLatin1Char('/'));
+            if (slash <= 0 || !m_session->station(end.left(slash)))
+                continue; // a simulated device's line is its own
+            const int set = m_session->baudSet(end);
+            //: %1 a station's port ("s5/CP2"); %2 the rate set by hand, if any
+            QAction *baud = m_faultsMenu->addAction(
+                set ? tr("Baud Rate of %1: %2 (changed)...").arg(end).arg(set)
+                    : tr("Change the Baud Rate of %1...").arg(end));
+            baud->setObjectName(QStringLiteral("faultBaud_") + end);
+            connect(baud, &QAction::triggered, this, [this, end] {
+                QStringList rates;
+                for (const int b : {1200, 2400, 4800, 9600, 19200, 38400, 57600, 115200})
+                    rates << QString::number(b);
+                bool ok = false;
+                const QString chosen = QInputDialog::getItem(
+                    this, tr("Baud Rate"),
+                    tr("%1 sends and reads at (the other ends keep theirs):").arg(end), rates,
+                    rates.indexOf(QStringLiteral("9600")), false, &ok);
+                if (ok)
+                    m_session->setBaud(end, chosen.toInt());
+            });
+        }
     m_faultsMenu->addSeparator();
     QStringList owners;
     for (const auto &s : m_session->description().stations)
@@ -509,6 +554,7 @@ void NetworkWindow::updateActions() {
         m_pause->setEnabled(have && (s == RunState::Running || s == RunState::Stepping));
         m_stop->setEnabled(have && s != RunState::Stopped);
         m_scan->setEnabled(have && s != RunState::Running);
+        m_powerCycle->setEnabled(have);
         m_editProgram->setEnabled(have);
     }
 }

@@ -111,6 +111,7 @@ private:
     QAction *m_pause = nullptr;
     QAction *m_stop = nullptr;
     QAction *m_scan = nullptr;
+    QAction *m_powerCycle = nullptr;
     QAction *m_close = nullptr;
     QAction *m_editProgram = nullptr;
     QAction *m_removeWatch = nullptr;

@@ -127,6 +127,25 @@ TEST(NetworkWindow, AWireCutFromTheFaultsMenuRaisesTheMastersError) {
             cut = a;
     ASSERT_NE(cut, nullptr);
     EXPECT_TRUE(cut->text().contains(QStringLiteral("master/CP2")));
+    // Every station's port on a wire can be set to another baud rate; what was set shows.
+    QStringList baud;
+    for (QAction *a : faults->actions())
+        if (a->objectName().startsWith(QStringLiteral("faultBaud_")))
+            baud << a->objectName().mid(10);
+    EXPECT_EQ(baud, (QStringList{QStringLiteral("master/CP2"), QStringLiteral("s5/CP2"),
+                                 QStringLiteral("s2/CP2")}));
+    net->session()->setBaud(QStringLiteral("s2/CP2"), 4800);
+    emit faults->aboutToShow();
+    for (QAction *a : faults->actions()) {
+        if (a->objectName() == QStringLiteral("faultBaud_s2/CP2")) {
+            EXPECT_TRUE(a->text().contains(QStringLiteral("4800"))) << a->text().toStdString();
+        }
+    }
+    cut = nullptr;
+    for (QAction *a : faults->actions())
+        if (a->objectName() == QStringLiteral("faultCut_w1"))
+            cut = a;
+    ASSERT_NE(cut, nullptr);
     cut->trigger();
     EXPECT_TRUE(net->session()->wireCut(QStringLiteral("w1")));
     net->session()->runFor(1000);

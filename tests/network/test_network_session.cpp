@@ -188,6 +188,44 @@ TEST(NetworkSession, ASilentStationSendsNothingAndTheCorruptedFrameIsMarked) {
     EXPECT_FALSE(f.session->silent(QStringLiteral("s5")));
 }
 
+TEST(NetworkSession, ASlavesPortAtAnotherBaudRateLeavesTheMasterWithoutItsData) {
+    SessionFixture f;
+    ASSERT_TRUE(f.session);
+    StationSource *s5 = f.station("s5");
+    StationSource *master = f.station("master");
+    f.session->setBaud(QStringLiteral("s5/CP2"), 9600);
+    EXPECT_EQ(f.session->baudSet(QStringLiteral("s5/CP2")), 9600);
+    f.finish(s5, s5->writeWord(SessionFixture::at(s5, "D10"), 31));
+    f.session->runFor(1000);
+    ASSERT_TRUE(eventually([&] { return f.session->runState() == RunState::Paused; }));
+    EXPECT_EQ(SessionFixture::value(master, "D0"), 0);
+    // LINK's working area: the master heard no answer it could read from station 5.
+    EXPECT_NE(SessionFixture::value(master, "D100") >> 8, 0);
+    f.session->stop();
+    EXPECT_EQ(f.session->baudSet(QStringLiteral("s5/CP2")), 0);
+    f.finish(s5, s5->writeWord(SessionFixture::at(s5, "D10"), 31));
+    f.session->runFor(1000);
+    ASSERT_TRUE(eventually([&] { return f.session->runState() == RunState::Paused; }));
+    EXPECT_EQ(SessionFixture::value(master, "D0"), 31);
+}
+
+// Vigor's D200.. are latched (retentive); D0.. clear at a power cycle.
+TEST(NetworkSession, APowerCycleKeepsTheLatchedRegistersAndTheClock) {
+    SessionFixture f;
+    ASSERT_TRUE(f.session);
+    StationSource *s2 = f.station("s2");
+    f.session->runFor(50);
+    ASSERT_TRUE(eventually([&] { return f.session->runState() == RunState::Paused; }));
+    f.finish(s2, s2->writeWord(SessionFixture::at(s2, "D0"), 5));
+    f.finish(s2, s2->writeWord(SessionFixture::at(s2, "D200"), 7));
+    f.session->powerCycle();
+    f.session->runFor(10);
+    ASSERT_TRUE(eventually([&] { return f.session->runState() == RunState::Paused; }));
+    EXPECT_TRUE(eventually([&] { return SessionFixture::value(s2, "D0") == 0; }));
+    EXPECT_EQ(SessionFixture::value(s2, "D200"), 7);
+    EXPECT_EQ(f.session->nowUs(), 60'000);
+}
+
 TEST(NetworkSession, AStationKeepsTheHistoryOfItsDevices) {
     SessionFixture f;
     ASSERT_TRUE(f.session);
