@@ -128,7 +128,8 @@ stage "package checks" bash scripts/check-package.sh build-package
 # itself is not instrumented: its cross-thread event posting is not seen as synchronisation,
 # hence the suppressions of reports inside libQt6Core alone.
 stage "build (ThreadSanitizer)" configure_and_build build-tsan "${sanitizer_build[@]}" \
-    -DRUNG_TSAN=ON -DRUNG_BUILD_GUI=OFF -DRUNG_BUILD_BENCHMARKS=OFF -- test_simulator test_comms
+    -DRUNG_TSAN=ON -DRUNG_BUILD_GUI=OFF -DRUNG_BUILD_BENCHMARKS=OFF -- test_simulator test_comms \
+    test_network
 export TSAN_OPTIONS="halt_on_error=1:second_deadlock_stack=1:suppressions=$PWD/scripts/tsan.supp"
 tsan_suites() {
     # The simulator's session, inbox and history; all of comms (the online session, the slave
@@ -138,8 +139,12 @@ tsan_suites() {
     local comms_status=0 simulator_status=0
     build-tsan/tests/test_comms --gtest_brief=1 || comms_status=$?
     wait "$simulator" || simulator_status=$?
-    ((comms_status == 0 && simulator_status == 0)) ||
-        { echo "ThreadSanitizer: test_comms exit $comms_status, test_simulator exit $simulator_status"; return 1; }
+    # The network's session: a network on its worker thread, its stations read by the owner.
+    local network_status=0
+    build-tsan/tests/test_network --gtest_brief=1 --gtest_filter='NetworkSession.*' ||
+        network_status=$?
+    ((comms_status == 0 && simulator_status == 0 && network_status == 0)) ||
+        { echo "ThreadSanitizer: test_comms exit $comms_status, test_simulator exit $simulator_status, test_network exit $network_status"; return 1; }
 }
 stage "tests (ThreadSanitizer)" tsan_suites
 # The summary closes the output.
