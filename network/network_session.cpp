@@ -67,12 +67,14 @@ void StationSource::startCommand(CommandId id, const model::DeviceCommand &comma
 
 // ---- NetworkSession -----------------------------------------------------------------------
 
-std::unique_ptr<NetworkSession> NetworkSession::start(const NetworkDescription &description,
-                                                      ProgramLoader loader, QString *error,
-                                                      QObject *parent) {
+std::unique_ptr<NetworkSession>
+NetworkSession::start(const NetworkDescription &description, ProgramLoader loader, QString *error,
+                      QObject *parent, const std::function<void(const Network &)> &learn) {
     std::unique_ptr<Network> network = Network::build(description, loader, error);
     if (!network)
         return nullptr;
+    if (learn)
+        learn(*network);
     return std::unique_ptr<NetworkSession>(
         new NetworkSession(description, std::move(loader), std::move(network), parent));
 }

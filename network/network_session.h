@@ -76,10 +76,12 @@ public:
     using RunState = model::MonitorSource::RunState;
 
     // Builds the network (its programs loaded by `loader`) and starts its worker, Stopped at
-    // virtual time 0; null with what, where and why.
-    static std::unique_ptr<NetworkSession> start(const NetworkDescription &description,
-                                                 ProgramLoader loader, QString *error,
-                                                 QObject *parent = nullptr);
+    // virtual time 0; null with what, where and why. `learn`, when given, reads the network
+    // built, on the caller's thread, before the worker touches it (a traffic decoder learning
+    // the wiring); it must keep no reference to it.
+    static std::unique_ptr<NetworkSession>
+    start(const NetworkDescription &description, ProgramLoader loader, QString *error,
+          QObject *parent = nullptr, const std::function<void(const Network &)> &learn = {});
     ~NetworkSession() override; // stops the worker and waits for it
 
     const NetworkDescription &description() const { return m_description; }
