@@ -250,9 +250,12 @@ bool NetworkSession::silent(const QString &stationOrDevice) const {
     });
 }
 
-std::vector<TrafficRecord> NetworkSession::takeTraffic() {
+std::vector<TrafficRecord> NetworkSession::takeTraffic(bool *startedOver) {
     std::lock_guard lock(m_trafficMutex);
     m_trafficTold = false;
+    if (startedOver)
+        *startedOver = m_takenEpoch != m_trafficEpoch;
+    m_takenEpoch = m_trafficEpoch;
     return std::exchange(m_traffic, {});
 }
 
@@ -456,6 +459,12 @@ void NetworkSession::workerLoop() {
                 continue;
             }
             network = std::move(fresh);
+            {
+                // What the old network sent is gone with it.
+                std::lock_guard lock(m_trafficMutex);
+                m_traffic.clear();
+                ++m_trafficEpoch;
+            }
             attachTraffic(*network);
             for (StationSource *s : m_sources) {
                 s->m_errorsReported = 0;

@@ -131,8 +131,10 @@ public:
     bool wireCut(const QString &wire) const;
     bool silent(const QString &stationOrDevice) const;
 
-    // The frames sent since the last call, oldest first (owner thread).
-    std::vector<TrafficRecord> takeTraffic();
+    // The frames sent since the last call, oldest first (owner thread). *startedOver: the
+    // network was built again (Stop) since the last call, and these are the new network's: a
+    // reader drops what it kept of the old one first.
+    std::vector<TrafficRecord> takeTraffic(bool *startedOver = nullptr);
 
 signals:
     void runStateChanged(rung::model::MonitorSource::RunState state);
@@ -190,6 +192,8 @@ private:
     std::mutex m_trafficMutex;
     std::vector<TrafficRecord> m_traffic;
     bool m_trafficTold = false;
+    quint64 m_trafficEpoch = 0; // under m_trafficMutex: networks built so far
+    quint64 m_takenEpoch = 0;   // owner thread: the epoch takeTraffic last handed out
 
     std::mutex m_postMutex;
     std::vector<std::function<void()>> m_posted;

@@ -136,7 +136,19 @@ TEST(NetworkSession, TrafficComesInBatchesWithItsWireAndSender) {
     EXPECT_EQ(records.front().wire, QStringLiteral("w1"));
     EXPECT_EQ(records.front().sender, QStringLiteral("master/CP2"));
     EXPECT_LE(records.back().startUs, f.session->nowUs());
-    EXPECT_TRUE(f.session->takeTraffic().empty()); // taken once
+    bool startedOver = true;
+    EXPECT_TRUE(f.session->takeTraffic(&startedOver).empty()); // taken once
+    EXPECT_FALSE(startedOver);
+    // Stop builds the network again: the next frames are the new network's, and say so.
+    f.session->stop();
+    f.session->runFor(100);
+    EXPECT_TRUE(eventually([&] { return f.session->runState() == RunState::Paused; }));
+    const auto fresh = f.session->takeTraffic(&startedOver);
+    EXPECT_TRUE(startedOver);
+    ASSERT_FALSE(fresh.empty());
+    EXPECT_LE(fresh.back().startUs, 100'000);
+    f.session->takeTraffic(&startedOver);
+    EXPECT_FALSE(startedOver);
 }
 
 TEST(NetworkSession, ACutWireStopsTheDataAndMarksTheTrafficUntilItIsJoinedAgain) {
