@@ -84,8 +84,8 @@ model::ProtocolSpace modbusSpace(int function, const model::ProtocolMap &map) {
 }
 
 // The device at a unit of a space as the target writes it; empty when the map has none.
-QString deviceAt(const model::Target *target, model::ProtocolId protocol, model::ProtocolSpace space,
-                 int unit, int bit) {
+QString deviceAt(const model::Target *target, model::ProtocolId protocol,
+                 model::ProtocolSpace space, int unit, int bit) {
     if (!target)
         return {};
     const model::ProtocolMap *map = model::findProtocolMap(*target, protocol);
@@ -195,8 +195,8 @@ TrafficDecoder::TrafficDecoder(const Network &network) {
                     // A PL110 port its program may switch to free-port (SEND; PL110 manual
                     // 4.2.19) sends bytes of no protocol then.
                     const model::PortSpec *spec = end.target->port(config.port);
-                    end.programDriven = !app.master && spec && spec->markers.freePort &&
-                                        port->usedByProgram();
+                    end.programDriven =
+                        !app.master && spec && spec->markers.freePort && port->usedByProgram();
                     if (const auto *map =
                             model::findProtocolMap(*end.target, model::ProtocolId::Modbus))
                         end.anyStation = map->anyStationUnit;
@@ -212,8 +212,8 @@ TrafficDecoder::TrafficDecoder(const Network &network) {
                                           QStringLiteral("ascii");
             } else {
                 end.programDriven = true;
-                end.application = dynamic_cast<const LineDevice *>(e) ? tr("line device")
-                                                                      : tr("real line");
+                end.application =
+                    dynamic_cast<const LineDevice *>(e) ? tr("line device") : tr("real line");
             }
             names << end.name;
             m_ends[end.name] = end;
@@ -265,7 +265,10 @@ DecodedFrame TrafficDecoder::raw(const End *from, const QByteArray &bytes,
                                  const QString &wire) const {
     DecodedFrame f;
     f.kind = DecodedFrame::Kind::Raw;
-    f.protocol = from && !from->application.isEmpty() ? from->application : tr("bytes");
+    // A port of a protocol sends bytes of none in free-port (PL110 manual 4.2.19).
+    f.protocol = !from                             ? tr("bytes")
+                 : from->speaks != Speaks::Nothing ? tr("free-port")
+                                                   : from->application;
     f.receiver = receiversOf(wire, from ? from->name : QString());
     f.count = int(bytes.size());
     f.data = quoted(bytes);
@@ -317,9 +320,8 @@ DecodedFrame TrafficDecoder::decode(const TrafficRecord &record) {
             return std::nullopt;
         };
         if (bytes.front() == vg::Stx)
-            if (auto f = keep(Speaks::VigorLink, [&](const End &) {
-                    return decodeVigorRequest(*from, bytes, wire);
-                }))
+            if (auto f = keep(Speaks::VigorLink,
+                              [&](const End &) { return decodeVigorRequest(*from, bytes, wire); }))
                 return *f;
         if (auto f = keep(Speaks::Modbus, [&](const End &slave) {
                 return decodeModbusRequest(*from, bytes, slave.modbusAscii, wire);
@@ -366,12 +368,12 @@ DecodedFrame TrafficDecoder::decodeVigorRequest(const End &from, const QByteArra
     const bool bitCommand = r.command == vg::Command::BitOn || r.command == vg::Command::BitOff;
     const model::Target *target = slave ? slave->target : nullptr;
     f.rawAddress = r.address;
-    f.address = withDevice(
-        bitCommand ? deviceAt(target, model::ProtocolId::VigorLink, model::ProtocolSpace::LinkBytes,
-                              r.address >> 3, r.address & 7)
-                   : deviceAt(target, model::ProtocolId::VigorLink, model::ProtocolSpace::LinkBytes,
-                              r.address, 0),
-        hex4(r.address) + u'h');
+    f.address = withDevice(bitCommand ? deviceAt(target, model::ProtocolId::VigorLink,
+                                                 model::ProtocolSpace::LinkBytes, r.address >> 3,
+                                                 r.address & 7)
+                                      : deviceAt(target, model::ProtocolId::VigorLink,
+                                                 model::ProtocolSpace::LinkBytes, r.address, 0),
+                           hex4(r.address) + u'h');
     if (!bitCommand)
         f.count = r.length;
     if (r.command == vg::Command::Write)
@@ -459,11 +461,10 @@ DecodedFrame TrafficDecoder::decodeModbusRequest(const End &from, const QByteArr
             f.problem = decoder.discarded().message;
         else if (!ascii && bytes.size() >= 4) {
             const QByteArrayView frame(bytes);
-            const int received = quint8(frame[frame.size() - 2]) |
-                                 quint8(frame[frame.size() - 1]) << 8;
-            f.problem =
-                tr("wrong CRC (received %1, computed %2): the slave answers nothing")
-                    .arg(hex4(received), hex4(mb::crc16(frame.first(frame.size() - 2))));
+            const int received = quint8(frame[frame.size() - 2]) | quint8(frame[frame.size() - 1])
+                                                                       << 8;
+            f.problem = tr("wrong CRC (received %1, computed %2): the slave answers nothing")
+                            .arg(hex4(received), hex4(mb::crc16(frame.first(frame.size() - 2))));
         } else {
             f.problem = truncatedText(bytes.size());
         }
@@ -514,8 +515,8 @@ DecodedFrame TrafficDecoder::decodeModbusRequest(const End &from, const QByteArr
     return f;
 }
 
-DecodedFrame TrafficDecoder::decodeModbusReply(const End &from, const QByteArray &bytes,
-                                               bool ascii, const QString &wire) {
+DecodedFrame TrafficDecoder::decodeModbusReply(const End &from, const QByteArray &bytes, bool ascii,
+                                               const QString &wire) {
     DecodedFrame f;
     f.kind = DecodedFrame::Kind::Reply;
     f.protocol = ascii ? tr("MODBUS ASCII") : tr("MODBUS RTU");
@@ -544,8 +545,8 @@ DecodedFrame TrafficDecoder::decodeModbusReply(const End &from, const QByteArray
             request.function = quint8(body[1]) & 0x7F;
             const int counted = quint8(body[2]);
             if (request.function <= mb::ReadInputRegisters)
-                request.count = request.function <= mb::ReadDiscreteInputs ? counted * 8
-                                                                           : counted / 2;
+                request.count =
+                    request.function <= mb::ReadDiscreteInputs ? counted * 8 : counted / 2;
             else if (body.size() >= 6) {
                 request.address = quint8(body[2]) << 8 | quint8(body[3]);
                 const int value = quint8(body[4]) << 8 | quint8(body[5]);

@@ -38,13 +38,13 @@ struct DecodedFrame {
     int station = -1; // the station number the frame names; -1: none
     int command = -1; // Computer Link command, MODBUS function; -1: none
     QString commandText;
-    int rawAddress = -1;  // as on the wire; -1: none
-    QString address;      // "D1 (1C02h)", "D100 (100)", "100" where no map applies
-    int count = -1;       // bytes (Computer Link), registers or bits (MODBUS); -1: none
-    QString data;         // the values carried, or the frame as text for a raw frame
-    int errorCode = -1;   // the PLC's error / exception code; -1: none
-    QString errorText;    // translated: "illegal data address (exception 02h)"
-    QString problem;      // translated: what is wrong with the frame; empty when it reads
+    int rawAddress = -1; // as on the wire; -1: none
+    QString address;     // "D1 (1C02h)", "D100 (100)", "100" where no map applies
+    int count = -1;      // bytes (Computer Link), registers or bits (MODBUS); -1: none
+    QString data;        // the values carried, or the frame as text for a raw frame
+    int errorCode = -1;  // the PLC's error / exception code; -1: none
+    QString errorText;   // translated: "illegal data address (exception 02h)"
+    QString problem;     // translated: what is wrong with the frame; empty when it reads
 
     bool failed() const { return errorCode >= 0 || !problem.isEmpty(); }
 };
@@ -78,7 +78,7 @@ public:
         bool sharedLink = false; // CPU Link, Parallel Link: no frames
         QString application;     // translated name of what it runs
         int station = -1;
-        int anyStation = -1;                    // a unit every slave of its map answers (PL110: FFh)
+        int anyStation = -1;                   // a unit every slave of its map answers (PL110: FFh)
         const model::Target *target = nullptr; // null for a device
     };
 
@@ -96,8 +96,8 @@ private:
     const End *slaveOn(const QString &wire, End::Speaks speaks, int station) const;
     QString receiversOf(const QString &wire, const QString &sender) const;
 
-    std::map<QString, End> m_ends;                // by name
-    std::map<QString, QStringList> m_wires;       // wire -> its ends
+    std::map<QString, End> m_ends;                         // by name
+    std::map<QString, QStringList> m_wires;                // wire -> its ends
     std::map<QString, std::unique_ptr<Pending>> m_pending; // wire -> its last request
 };
 

@@ -56,7 +56,8 @@ void NetworkTrafficModel::append(std::vector<network::TrafficRecord> records) {
         row.frame = m_decoder ? m_decoder->decode(r) : DecodedFrame{};
         const QString sender = m_decoder ? m_decoder->ownerOf(r.sender) : r.sender;
         row.owners << sender;
-        for (const QString &end : row.frame.receiver.split(QStringLiteral(", "), Qt::SkipEmptyParts))
+        for (const QString &end :
+             row.frame.receiver.split(QStringLiteral(", "), Qt::SkipEmptyParts))
             if (const QString owner = m_decoder ? m_decoder->ownerOf(end) : end;
                 !row.owners.contains(owner))
                 row.owners << owner;
@@ -197,8 +198,7 @@ QVariant NetworkTrafficModel::data(const QModelIndex &index, int role) const {
     }
 }
 
-QVariant NetworkTrafficModel::headerData(int section, Qt::Orientation orientation,
-                                         int role) const {
+QVariant NetworkTrafficModel::headerData(int section, Qt::Orientation orientation, int role) const {
     if (orientation != Qt::Horizontal || section < 0 || section >= ColumnCount)
         return {};
     if (role == Qt::ToolTipRole) {

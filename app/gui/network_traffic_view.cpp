@@ -1,9 +1,9 @@
 #include "network_traffic_view.h"
 
 #include "file_dialogs.h"
-#include "network_traffic_model.h"
 #include "network/station.h"
 #include "network/traffic.h"
+#include "network_traffic_model.h"
 
 #include <QCheckBox>
 #include <QComboBox>
@@ -115,12 +115,12 @@ NetworkTrafficView::NetworkTrafficView(QWidget *parent)
     header->setHighlightSections(false);
     const int em = m_table->fontMetrics().horizontalAdvance(QLatin1Char('M'));
     const std::pair<int, int> widths[] = {
-        {NetworkTrafficModel::Time, 7}, {NetworkTrafficModel::Wire, 4},
-        {NetworkTrafficModel::Sender, 7}, {NetworkTrafficModel::Receiver, 7},
+        {NetworkTrafficModel::Time, 7},     {NetworkTrafficModel::Wire, 4},
+        {NetworkTrafficModel::Sender, 7},   {NetworkTrafficModel::Receiver, 7},
         {NetworkTrafficModel::Protocol, 7}, {NetworkTrafficModel::Station, 4},
         {NetworkTrafficModel::Command, 12}, {NetworkTrafficModel::Address, 8},
-        {NetworkTrafficModel::Count, 4}, {NetworkTrafficModel::Data, 10},
-        {NetworkTrafficModel::Error, 12}, {NetworkTrafficModel::Note, 8},
+        {NetworkTrafficModel::Count, 4},    {NetworkTrafficModel::Data, 10},
+        {NetworkTrafficModel::Error, 12},   {NetworkTrafficModel::Note, 8},
     };
     for (const auto &[column, ems] : widths)
         m_table->setColumnWidth(column, ems * em);
@@ -134,8 +134,7 @@ NetworkTrafficView::NetworkTrafficView(QWidget *parent)
     m_station->addItem(tr("All stations"), QString());
 
     connect(m_wire, &QComboBox::currentIndexChanged, this, &NetworkTrafficView::chooserChanged);
-    connect(m_station, &QComboBox::currentIndexChanged, this,
-            &NetworkTrafficView::chooserChanged);
+    connect(m_station, &QComboBox::currentIndexChanged, this, &NetworkTrafficView::chooserChanged);
     connect(m_errorsOnly, &QCheckBox::toggled, this, &NetworkTrafficView::chooserChanged);
     connect(m_save, &QPushButton::clicked, this, &NetworkTrafficView::save);
     connect(m_model, &NetworkTrafficModel::rowsDropped, this, &NetworkTrafficView::updateStatus);
@@ -146,9 +145,8 @@ NetworkTrafficView::NetworkTrafficView(QWidget *parent)
     });
     connect(m_filter, &QAbstractItemModel::modelReset, this, &NetworkTrafficView::updateStatus);
     connect(m_filter, &QAbstractItemModel::rowsRemoved, this, &NetworkTrafficView::updateStatus);
-    connect(m_table->verticalScrollBar(), &QScrollBar::valueChanged, this, [this](int value) {
-        m_follow = value >= m_table->verticalScrollBar()->maximum();
-    });
+    connect(m_table->verticalScrollBar(), &QScrollBar::valueChanged, this,
+            [this](int value) { m_follow = value >= m_table->verticalScrollBar()->maximum(); });
     connect(m_table->selectionModel(), &QItemSelectionModel::currentRowChanged, this,
             [this](const QModelIndex &current) {
                 if (current.isValid())
@@ -213,16 +211,16 @@ void NetworkTrafficView::chooserChanged() {
 
 void NetworkTrafficView::updateStatus() {
     const QLocale locale;
-    QString text = m_filter->rowCount() == m_model->rowCount()
-                       ? tr("%n frame(s)", "", m_model->rowCount())
-                       : tr("%1 of %2 frames")
-                             .arg(locale.toString(m_filter->rowCount()),
-                                  locale.toString(m_model->rowCount()));
+    QString text =
+        m_filter->rowCount() == m_model->rowCount()
+            ? tr("%n frame(s)", "", m_model->rowCount())
+            : tr("%1 of %2 frames")
+                  .arg(locale.toString(m_filter->rowCount()), locale.toString(m_model->rowCount()));
     if (m_model->droppedRows() > 0)
-        text += QStringLiteral("; ") +
-                tr("%1 older frames were let go (the view keeps the last %2)")
-                    .arg(locale.toString(m_model->droppedRows()),
-                         locale.toString(m_model->maxRows()));
+        text +=
+            QStringLiteral("; ") +
+            tr("%1 older frames were let go (the view keeps the last %2)")
+                .arg(locale.toString(m_model->droppedRows()), locale.toString(m_model->maxRows()));
     m_status->setText(text);
     m_save->setEnabled(m_filter->rowCount() > 0);
 }
@@ -268,17 +266,19 @@ bool NetworkTrafficView::saveText(const QString &path, QString *error) const {
     out << network::trafficHeader(QFileInfo(m_file).fileName()) << '\n';
     // What the file does not hold, it says (the view's cap, the filters).
     if (m_model->droppedRows() > 0)
-        out << "# " << tr("%1 older frames were let go before these (the view keeps the last %2)")
-                           .arg(m_model->droppedRows())
-                           .arg(m_model->maxRows())
+        out << "# "
+            << tr("%1 older frames were let go before these (the view keeps the last %2)")
+                   .arg(m_model->droppedRows())
+                   .arg(m_model->maxRows())
             << '\n';
     if (m_filter->rowCount() != m_model->rowCount())
-        out << "# " << tr("%1 of %2 frames: wire %3, station %4%5")
-                           .arg(m_filter->rowCount())
-                           .arg(m_model->rowCount())
-                           .arg(m_filter->wire().isEmpty() ? tr("all") : m_filter->wire(),
-                                m_filter->station().isEmpty() ? tr("all") : m_filter->station(),
-                                m_filter->errorsOnly() ? tr(", errors only") : QString())
+        out << "# "
+            << tr("%1 of %2 frames: wire %3, station %4%5")
+                   .arg(m_filter->rowCount())
+                   .arg(m_model->rowCount())
+                   .arg(m_filter->wire().isEmpty() ? tr("all") : m_filter->wire(),
+                        m_filter->station().isEmpty() ? tr("all") : m_filter->station(),
+                        m_filter->errorsOnly() ? tr(", errors only") : QString())
             << '\n';
     for (int row = 0; row < m_filter->rowCount(); ++row) {
         const int source = m_filter->mapToSource(m_filter->index(row, 0)).row();
@@ -293,11 +293,10 @@ bool NetworkTrafficView::saveText(const QString &path, QString *error) const {
 }
 
 void NetworkTrafficView::save() {
-    const QString start = m_file.isEmpty()
-                              ? QString()
-                              : QFileInfo(m_file).absolutePath() + u'/' +
-                                    QFileInfo(m_file).completeBaseName() +
-                                    QStringLiteral("-traffic.csv");
+    const QString start = m_file.isEmpty() ? QString()
+                                           : QFileInfo(m_file).absolutePath() + u'/' +
+                                                 QFileInfo(m_file).completeBaseName() +
+                                                 QStringLiteral("-traffic.csv");
     QString path = askSaveFile(this, tr("Save Traffic"), start,
                                tr("CSV (*.csv);;Text, as rungstudio-cli writes it (*.txt)"));
     if (path.isEmpty())
@@ -306,9 +305,10 @@ void NetworkTrafficView::save() {
     if (suffix != QStringLiteral("csv") && suffix != QStringLiteral("txt")) {
         path += QStringLiteral(".csv");
         if (QFileInfo::exists(path) &&
-            QMessageBox::question(this, tr("Save Traffic"),
-                                  tr("%1 already exists. Replace it?")
-                                      .arg(QDir::toNativeSeparators(path))) != QMessageBox::Yes)
+            QMessageBox::question(
+                this, tr("Save Traffic"),
+                tr("%1 already exists. Replace it?").arg(QDir::toNativeSeparators(path))) !=
+                QMessageBox::Yes)
             return;
     }
     QString error;

@@ -57,7 +57,8 @@ TrafficRun runExample(const QString &file, qint64 ms,
 
 QString readAll(const QString &path) {
     QFile f(path);
-    return f.open(QIODevice::ReadOnly | QIODevice::Text) ? QString::fromUtf8(f.readAll()) : QString();
+    return f.open(QIODevice::ReadOnly | QIODevice::Text) ? QString::fromUtf8(f.readAll())
+                                                         : QString();
 }
 
 int columnOf(const QString &title) {
@@ -129,7 +130,9 @@ TEST(NetworkTrafficView, DecodesTheFramesOfARealRun) {
     view.append(run.records);
     QAbstractItemModel *shown = view.table()->model();
     ASSERT_EQ(shown->rowCount(), int(run.records.size()));
-    const auto cell = [&](int row, int column) { return shown->index(row, column).data().toString(); };
+    const auto cell = [&](int row, int column) {
+        return shown->index(row, column).data().toString();
+    };
     // Find the first request and its reply.
     int request = -1;
     for (int row = 0; row < shown->rowCount() && request < 0; ++row)
@@ -153,9 +156,9 @@ TEST(NetworkTrafficView, DecodesTheFramesOfARealRun) {
     const int reply = request + 1;
     EXPECT_TRUE(cell(reply, NetworkTrafficModel::Command).startsWith(QStringLiteral("\u2190")));
     EXPECT_EQ(cell(reply, NetworkTrafficModel::Receiver).toStdString(), "master/CP2");
-    EXPECT_EQ(cell(reply, NetworkTrafficModel::Sender),
-              QStringLiteral("s%1/CP2").arg(f.station));
-    EXPECT_EQ(cell(reply, NetworkTrafficModel::Address), cell(request, NetworkTrafficModel::Address));
+    EXPECT_EQ(cell(reply, NetworkTrafficModel::Sender), QStringLiteral("s%1/CP2").arg(f.station));
+    EXPECT_EQ(cell(reply, NetworkTrafficModel::Address),
+              cell(request, NetworkTrafficModel::Address));
     EXPECT_EQ(cell(reply, NetworkTrafficModel::Error).toStdString(), "");
     // The status line counts the frames.
     EXPECT_NE(view.findChild<QLabel *>(QStringLiteral("trafficStatus"))
@@ -204,7 +207,8 @@ TEST(NetworkTrafficView, FiltersByWireStationAndErrors) {
             sawCorrupted = true;
             EXPECT_NE(error.indexOf(QStringLiteral("CRC")), -1) << error.toStdString();
             // The fault's row is marked: its background is not the table's.
-            EXPECT_TRUE(shown->index(row, NetworkTrafficModel::Note).data(Qt::BackgroundRole).isValid());
+            EXPECT_TRUE(
+                shown->index(row, NetworkTrafficModel::Note).data(Qt::BackgroundRole).isValid());
         }
     }
     EXPECT_TRUE(sawCorrupted);
@@ -263,11 +267,13 @@ TEST(NetworkTrafficView, SavesCsvAndTextThatReadBack) {
     ASSERT_TRUE(view.saveCsv(csv, &error)) << error.toStdString();
     const QStringList lines = readAll(csv).split(u'\n', Qt::SkipEmptyParts);
     ASSERT_EQ(lines.size(), int(run.records.size()) + 1);
-    EXPECT_TRUE(lines[0].startsWith(QStringLiteral("Time (s),Wire,Sender,Receiver,Protocol,Station,")))
+    EXPECT_TRUE(
+        lines[0].startsWith(QStringLiteral("Time (s),Wire,Sender,Receiver,Protocol,Station,")))
         << lines[0].toStdString();
     const QStringList first = lines[1].split(u',');
     ASSERT_EQ(first.size(), NetworkTrafficModel::ColumnCount) << lines[1].toStdString();
-    EXPECT_EQ(first[NetworkTrafficModel::Time], NetworkTrafficModel::timeText(run.records[0].startUs));
+    EXPECT_EQ(first[NetworkTrafficModel::Time],
+              NetworkTrafficModel::timeText(run.records[0].startUs));
     EXPECT_EQ(first[NetworkTrafficModel::Sender], run.records[0].sender);
     EXPECT_EQ(first[NetworkTrafficModel::Bytes],
               QString::fromLatin1(run.records[0].bytes.toHex(' ').toUpper()));

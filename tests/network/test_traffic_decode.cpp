@@ -27,7 +27,8 @@ const QByteArray kPcAndPlc = R"({
     "devices": [{"name": "pc", "kind": "line", "baud": 19200, "frame": "7E1"}],
     "wires": [["pc", "plc/CP2"]]
 })";
-const std::map<QString, QString> kIdle = {{QStringLiteral("p.il"), QStringLiteral("LD X0\nOUT Y0\nEND\n")}};
+const std::map<QString, QString> kIdle = {
+    {QStringLiteral("p.il"), QStringLiteral("LD X0\nOUT Y0\nEND\n")}};
 
 TrafficRecord frame(const char *sender, const QByteArray &bytes, const char *wire = "w1") {
     static qint64 us = 0;
@@ -117,11 +118,12 @@ TEST(TrafficDecode, ComputerLinkErrorsAndSpoiledFrames) {
               "wrong sum (received F5, computed F4): the slave answers error 11h");
     // The slave's refusal: error 28h (address out of range) is the PLC's code, not a problem.
     decoder.decode(frame("pc", hex("02 30 30 35 31 30 30 38 31 30 32 03 46 34")));
-    const DecodedFrame refused = decoder.decode(frame(
-        "plc/CP2", comms::vigor::encodeReply({0, comms::vigor::Command::Read, 0x28, {}})));
+    const DecodedFrame refused = decoder.decode(
+        frame("plc/CP2", comms::vigor::encodeReply({0, comms::vigor::Command::Read, 0x28, {}})));
     EXPECT_EQ(refused.problem.toStdString(), "");
     EXPECT_EQ(refused.errorCode, 0x28);
-    EXPECT_NE(refused.errorText.indexOf(QStringLiteral("28h")), -1) << refused.errorText.toStdString();
+    EXPECT_NE(refused.errorText.indexOf(QStringLiteral("28h")), -1)
+        << refused.errorText.toStdString();
     // A reply cut short, a reply of noise, an empty-looking request: a problem each.
     decoder.decode(frame("pc", hex("02 30 30 35 31 30 30 38 31 30 32 03 46 34")));
     const DecodedFrame cut = decoder.decode(frame("plc/CP2", hex("06 30 30 35 31 30")));
@@ -144,7 +146,8 @@ TEST(TrafficDecode, ComputerLinkErrorsAndSpoiledFrames) {
 // B-3-6: D0..D8191 are registers 0..8191).
 TEST(TrafficDecode, ModbusRequestsRepliesAndExceptions) {
     const NetRun run = runNetwork(
-        {}, {}, {}, QStringLiteral(RUNG_SOURCE_DIR "/resources/examples/networks/modbus/modbus.rungnet"));
+        {}, {}, {},
+        QStringLiteral(RUNG_SOURCE_DIR "/resources/examples/networks/modbus/modbus.rungnet"));
     ASSERT_TRUE(run.net) << run.error.toStdString();
     TrafficDecoder decoder(*run.net);
     namespace mb = comms::modbus;
@@ -246,10 +249,9 @@ TEST(TrafficDecode, EveryExampleNetworkDecodesWithoutAProblem) {
             requests += f.kind == DecodedFrame::Kind::Request;
             replies += f.kind == DecodedFrame::Kind::Reply;
         }
-        const bool framesOfAProtocol =
-            !file.contains(QStringLiteral("cpu-link")) &&
-            !file.contains(QStringLiteral("parallel-link")) &&
-            !file.contains(QStringLiteral("free-port"));
+        const bool framesOfAProtocol = !file.contains(QStringLiteral("cpu-link")) &&
+                                       !file.contains(QStringLiteral("parallel-link")) &&
+                                       !file.contains(QStringLiteral("free-port"));
         if (framesOfAProtocol) {
             EXPECT_GT(requests, 0);
             EXPECT_GT(replies, 0);
