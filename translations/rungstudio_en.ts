@@ -64,6 +64,17 @@
     </message>
 </context>
 <context>
+    <name>rung::app::NetworkTrafficView</name>
+    <message numerus="yes">
+        <location filename="../app/gui/network_traffic_view.cpp" line="+216"/>
+        <source>%n frame(s)</source>
+        <translation>
+            <numerusform>%n frame</numerusform>
+            <numerusform>%n frames</numerusform>
+        </translation>
+    </message>
+</context>
+<context>
     <name>rung::app::PlcopenImportDialog</name>
     <message numerus="yes">
         <location filename="../app/gui/plcopen_exchange.cpp" line="+215"/>
@@ -197,6 +208,25 @@
         <translation>
             <numerusform>Unexpected &apos;%1&apos;: %2 takes %n operand</numerusform>
             <numerusform>Unexpected &apos;%1&apos;: %2 takes %n operands</numerusform>
+        </translation>
+    </message>
+</context>
+<context>
+    <name>rung::network::TrafficDecode</name>
+    <message numerus="yes">
+        <location filename="../network/traffic_decode.cpp" line="+147"/>
+        <source>the frame stops after %n byte(s): cut short or not a frame</source>
+        <translation>
+            <numerusform>the frame stops after %n byte: cut short or not a frame</numerusform>
+            <numerusform>the frame stops after %n bytes: cut short or not a frame</numerusform>
+        </translation>
+    </message>
+    <message numerus="yes">
+        <location line="+5"/>
+        <source>%n byte(s) after the end of the frame</source>
+        <translation>
+            <numerusform>%n byte after the end of the frame</numerusform>
+            <numerusform>%n bytes after the end of the frame</numerusform>
         </translation>
     </message>
 </context>

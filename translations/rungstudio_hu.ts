@@ -180,8 +180,7 @@
     <message>
         <location filename="../app/cli/cli.cpp" line="+61"/>
         <location line="+48"/>
-        <location filename="../app/cli/cli_network.cpp" line="+145"/>
-        <location line="+54"/>
+        <location filename="../app/cli/cli_network.cpp" line="+147"/>
         <source>unexpected argument %1</source>
         <translation>váratlan argumentum: %1</translation>
     </message>
@@ -279,7 +278,7 @@ Kilépési kód: 0 nincs hiba, 1 a programban hiba van, 2 használati vagy I/O h
     </message>
     <message>
         <location line="+18"/>
-        <location filename="../app/cli/cli_network.cpp" line="-11"/>
+        <location filename="../app/cli/cli_network.cpp" line="+52"/>
         <location filename="../app/cli/cli_plcopen.cpp" line="+36"/>
         <location line="+3"/>
         <source>error</source>
@@ -2017,7 +2016,7 @@ Ctrl+Z / Ctrl+Y: visszavonás / mégis, Ctrl+görgő: nagyítás, F4: a program 
 <context>
     <name>rung::app::Network</name>
     <message>
-        <location filename="../app/cli/cli_network.cpp" line="-165"/>
+        <location filename="../app/cli/cli_network.cpp" line="-176"/>
         <source>usage:</source>
         <translation>használat:</translation>
     </message>
@@ -2041,7 +2040,7 @@ Ctrl+Z / Ctrl+Y: visszavonás / mégis, Ctrl+görgő: nagyítás, F4: a program 
         <translation>a --traffic után fájlnév kell</translation>
     </message>
     <message>
-        <location line="+5"/>
+        <location line="+6"/>
         <source>%1: a network file names each station&apos;s PLC</source>
         <translation>%1: a hálózatfájl minden állomás PLC-jét maga nevezi meg</translation>
     </message>
@@ -2057,7 +2056,7 @@ Ctrl+Z / Ctrl+Y: visszavonás / mégis, Ctrl+görgő: nagyítás, F4: a program 
         <translation>%1: %2. sor: futási hiba a(z) %3. lépésnél: %4</translation>
     </message>
     <message>
-        <location line="+30"/>
+        <location line="+40"/>
         <source>%1: %2: %3</source>
         <translation>%1: %2: %3</translation>
     </message>
@@ -2073,7 +2072,7 @@ Ctrl+Z / Ctrl+Y: visszavonás / mégis, Ctrl+görgő: nagyítás, F4: a program 
         <translation>%1: %2: %3: %4</translation>
     </message>
     <message>
-        <location line="+22"/>
+        <location line="+16"/>
         <source>%1: no bridges: nothing of the network reaches a real line (&quot;bridges&quot;, docs/network-format.md); simulate runs it on virtual time</source>
         <translation>%1: nincsenek hidak: a hálózatból semmi sem jut el valódi vonalra („bridges”, docs/network-format.md); a simulate virtuális időben futtatja</translation>
     </message>
@@ -2081,6 +2080,222 @@ Ctrl+Z / Ctrl+Y: visszavonás / mégis, Ctrl+görgő: nagyítás, F4: a program 
         <location line="+24"/>
         <source>%1 runs in real time; stop it with Ctrl+C</source>
         <translation>a(z) %1 valós időben fut; leállítás: Ctrl+C</translation>
+    </message>
+</context>
+<context>
+    <name>rung::app::NetworkTrafficModel</name>
+    <message>
+        <location filename="../app/gui/network_traffic_model.cpp" line="+151"/>
+        <source>Request: %1</source>
+        <translation>Kérés: %1</translation>
+    </message>
+    <message>
+        <location line="+2"/>
+        <source>Reply: %1</source>
+        <translation>Válasz: %1</translation>
+    </message>
+    <message>
+        <location line="+54"/>
+        <source>When the frame&apos;s first byte left: virtual time, seconds.milliseconds.microseconds</source>
+        <translation>Amikor a keret első bájtja elindult: virtuális idő, másodperc.ezredmásodperc.mikroszekundum</translation>
+    </message>
+    <message>
+        <location line="+3"/>
+        <source>The station or device the frame is for; a reply&apos;s is the master</source>
+        <translation>Az állomás vagy eszköz, amelynek a keret szól; a válaszé a master</translation>
+    </message>
+    <message>
+        <location line="+2"/>
+        <source>The address as the receiving PLC&apos;s device, with the address on the wire</source>
+        <translation>A cím a fogadó PLC operandusaként, mellette a vezetéken utazó cím</translation>
+    </message>
+    <message>
+        <location line="+2"/>
+        <source>Bytes (Computer Link), registers or bits (MODBUS), characters (text)</source>
+        <translation>Bájtok (Computer Link), regiszterek vagy bitek (MODBUS), karakterek (szöveg)</translation>
+    </message>
+    <message>
+        <location line="+2"/>
+        <source>The PLC&apos;s error or exception code, or what is wrong with the frame</source>
+        <translation>A PLC hiba- vagy kivételkódja, vagy hogy mi a hiba a keretben</translation>
+    </message>
+    <message>
+        <location line="+2"/>
+        <source>A fault or a collision that changed the frame</source>
+        <translation>Hiba vagy ütközés, amely megváltoztatta a keretet</translation>
+    </message>
+    <message>
+        <location line="+9"/>
+        <source>Time (s)</source>
+        <translation>Idő (s)</translation>
+    </message>
+    <message>
+        <location line="+2"/>
+        <source>Wire</source>
+        <translation>Vezeték</translation>
+    </message>
+    <message>
+        <location line="+2"/>
+        <source>Sender</source>
+        <translation>Küldő</translation>
+    </message>
+    <message>
+        <location line="+2"/>
+        <source>Receiver</source>
+        <translation>Címzett</translation>
+    </message>
+    <message>
+        <location line="+2"/>
+        <source>Protocol</source>
+        <translation>Protokoll</translation>
+    </message>
+    <message>
+        <location line="+2"/>
+        <source>Station</source>
+        <translation>Állomás</translation>
+    </message>
+    <message>
+        <location line="+2"/>
+        <source>Command</source>
+        <translation>Parancs</translation>
+    </message>
+    <message>
+        <location line="+2"/>
+        <source>Address</source>
+        <translation>Cím</translation>
+    </message>
+    <message>
+        <location line="+2"/>
+        <source>Count</source>
+        <translation>Darab</translation>
+    </message>
+    <message>
+        <location line="+2"/>
+        <source>Data</source>
+        <translation>Adat</translation>
+    </message>
+    <message>
+        <location line="+2"/>
+        <source>Error</source>
+        <translation>Hiba</translation>
+    </message>
+    <message>
+        <location line="+2"/>
+        <source>Note</source>
+        <translation>Megjegyzés</translation>
+    </message>
+    <message>
+        <location line="+2"/>
+        <source>Bytes</source>
+        <translation>Bájtok</translation>
+    </message>
+</context>
+<context>
+    <name>rung::app::NetworkTrafficView</name>
+    <message>
+        <location filename="../app/gui/network_traffic_view.cpp" line="+68"/>
+        <source>&amp;Errors only</source>
+        <translation>Csak &amp;hibák</translation>
+    </message>
+    <message>
+        <location line="+2"/>
+        <source>&amp;Save...</source>
+        <translation>&amp;Mentés...</translation>
+    </message>
+    <message>
+        <location line="+7"/>
+        <source>Only the frames with an error code, a problem (a wrong sum or CRC, a frame cut short) or a fault&apos;s note</source>
+        <translation>Csak a hibakódos, hibás (rossz összeg vagy CRC, csonka keret) vagy hibajelzéssel (fault) megjelölt keretek</translation>
+    </message>
+    <message>
+        <location line="+3"/>
+        <source>Save the frames shown as CSV or as text</source>
+        <translation>A látható keretek mentése CSV-ként vagy szövegként</translation>
+    </message>
+    <message>
+        <location line="+6"/>
+        <source>&amp;Wire:</source>
+        <translation>&amp;Vezeték:</translation>
+    </message>
+    <message>
+        <location line="+2"/>
+        <source>S&amp;tation:</source>
+        <translation>Ál&amp;lomás:</translation>
+    </message>
+    <message>
+        <location line="+45"/>
+        <location line="+33"/>
+        <source>All wires</source>
+        <translation>Minden vezeték</translation>
+    </message>
+    <message>
+        <location line="-32"/>
+        <location line="+36"/>
+        <source>All stations</source>
+        <translation>Minden állomás</translation>
+    </message>
+    <message numerus="yes">
+        <location line="+46"/>
+        <source>%n frame(s)</source>
+        <translation>
+            <numerusform>%n keret</numerusform>
+        </translation>
+    </message>
+    <message>
+        <location line="+1"/>
+        <source>%1 of %2 frames</source>
+        <translation>%1 / %2 keret</translation>
+    </message>
+    <message>
+        <location line="+5"/>
+        <source>%1 older frames were let go (the view keeps the last %2)</source>
+        <translation>%1 régebbi keret elengedve (a nézet az utolsó %2 keretet tartja meg)</translation>
+    </message>
+    <message>
+        <location line="+9"/>
+        <location line="+22"/>
+        <location line="+9"/>
+        <location line="+27"/>
+        <source>Cannot write %1: %2</source>
+        <translation>Nem írható: %1: %2</translation>
+    </message>
+    <message>
+        <location line="-19"/>
+        <source>%1 older frames were let go before these (the view keeps the last %2)</source>
+        <translation>ezek előtt %1 régebbi keret elengedve (a nézet az utolsó %2 keretet tartja meg)</translation>
+    </message>
+    <message>
+        <location line="+6"/>
+        <source>%1 of %2 frames: wire %3, station %4%5</source>
+        <translation>%1 / %2 keret: vezeték: %3, állomás: %4%5</translation>
+    </message>
+    <message>
+        <location line="+3"/>
+        <location line="+1"/>
+        <source>all</source>
+        <translation>mind</translation>
+    </message>
+    <message>
+        <location line="+1"/>
+        <source>, errors only</source>
+        <translation>, csak hibák</translation>
+    </message>
+    <message>
+        <location line="+19"/>
+        <location line="+9"/>
+        <location line="+10"/>
+        <source>Save Traffic</source>
+        <translation>Adatforgalom mentése</translation>
+    </message>
+    <message>
+        <location line="-18"/>
+        <source>CSV (*.csv);;Text, as rungstudio-cli writes it (*.txt)</source>
+        <translation>CSV (*.csv);;Szöveg, ahogy a rungstudio-cli írja (*.txt)</translation>
+    </message>
+    <message>
+        <location line="+9"/>
+        <source>%1 already exists. Replace it?</source>
+        <translation>%1 már létezik. Lecseréli?</translation>
     </message>
 </context>
 <context>
@@ -2121,12 +2336,12 @@ Ctrl+Z / Ctrl+Y: visszavonás / mégis, Ctrl+görgő: nagyítás, F4: a program 
         <translation>a --port, a --tcp és a --pty közül pontosan egyet adjon meg</translation>
     </message>
     <message>
-        <location line="+4"/>
+        <location line="+5"/>
         <source>modbus-tcp needs --tcp HOST:PORT (for RTU frames on a port: modbus)</source>
         <translation>a modbus-tcp a --tcp HOST:PORT kapcsolót igényli (RTU keretekhez porton: modbus)</translation>
     </message>
     <message>
-        <location line="+10"/>
+        <location line="+8"/>
         <source>--tcp needs HOST:PORT, e.g. 127.0.0.1:502; got %1</source>
         <translation>a --tcp HOST:PORT alakú értéket vár, pl. 127.0.0.1:502; kapott érték: %1</translation>
     </message>
@@ -2136,12 +2351,12 @@ Ctrl+Z / Ctrl+Y: visszavonás / mégis, Ctrl+görgő: nagyítás, F4: a program 
         <translation>%1 értéke %2 és %3 közötti szám legyen; kapott érték: %4</translation>
     </message>
     <message>
-        <location line="+16"/>
+        <location line="+17"/>
         <source>--frame must be data bits, parity and stop bits, e.g. 8N1 or 7E2; got %1</source>
         <translation>a --frame adatbitek, paritás és stopbitek megadása, pl. 8N1 vagy 7E2; kapott érték: %1</translation>
     </message>
     <message>
-        <location line="+6"/>
+        <location line="+5"/>
         <source>no device given</source>
         <translation>nincs megadva operandus</translation>
     </message>
@@ -2848,7 +3063,7 @@ A FÁJL utasításlista (.il), létradiagram-szöveg (.ladder) vagy projekt (.ru
         <translation>%1 után érték kell</translation>
     </message>
     <message>
-        <location line="+13"/>
+        <location line="+14"/>
         <source>unexpected argument %1</source>
         <translation>váratlan argumentum: %1</translation>
     </message>
@@ -2860,7 +3075,7 @@ A FÁJL utasításlista (.il), létradiagram-szöveg (.ladder) vagy projekt (.ru
         <translation>a program nem indul el</translation>
     </message>
     <message>
-        <location filename="../app/cli/cli_simulate.cpp" line="+28"/>
+        <location filename="../app/cli/cli_simulate.cpp" line="+29"/>
         <source>runtime error at step %1: %2</source>
         <translation>futási hiba a(z) %1. lépésnél: %2</translation>
     </message>
@@ -7484,7 +7699,7 @@ Kiértékelés: %4 µs (%5..%6)</translation>
     </message>
     <message>
         <location line="+5"/>
-        <location filename="../model/target/target_pl110.cpp" line="+107"/>
+        <location filename="../model/target/target_pl110.cpp" line="+108"/>
         <location filename="../model/target/target_vigor.cpp" line="+95"/>
         <location filename="../model/target/target_vpc.cpp" line="+5"/>
         <source>Start a block with a normally open contact</source>
@@ -7825,7 +8040,7 @@ Kiértékelés: %4 µs (%5..%6)</translation>
         <translation>A program vége</translation>
     </message>
     <message>
-        <location filename="../model/target/target_pl110.cpp" line="-405"/>
+        <location filename="../model/target/target_pl110.cpp" line="-406"/>
         <source>IF contact: ON while S1 ? S2 is true</source>
         <translation>IF érintkező: BE, amíg S1 ? S2 igaz</translation>
     </message>
@@ -7971,7 +8186,7 @@ Kiértékelés: %4 µs (%5..%6)</translation>
         <translation>legnagyobb ciklusidő (0,1 ms)</translation>
     </message>
     <message>
-        <location line="+12"/>
+        <location line="+13"/>
         <source>the encoders&apos; load bits and the stepper motor output on AQ1 are not modelled; the word is plain memory</source>
         <translation>az enkóderek betöltőbitjeit és az AQ1 léptetőmotor-kimenetét a szimulátor nem modellezi; a szó egyszerű memória</translation>
     </message>
@@ -9191,6 +9406,79 @@ Kiértékelés: %4 µs (%5..%6)</translation>
     </message>
 </context>
 <context>
+    <name>rung::network</name>
+    <message>
+        <location filename="../network/traffic_decode.cpp" line="+34"/>
+        <source>read coils</source>
+        <translation>tekercsek olvasása</translation>
+    </message>
+    <message>
+        <location line="+2"/>
+        <source>read discrete inputs</source>
+        <translation>bemenetek olvasása</translation>
+    </message>
+    <message>
+        <location line="+2"/>
+        <source>read holding registers</source>
+        <translation>tartóregiszterek olvasása</translation>
+    </message>
+    <message>
+        <location line="+2"/>
+        <source>read input registers</source>
+        <translation>bemeneti regiszterek olvasása</translation>
+    </message>
+    <message>
+        <location line="+2"/>
+        <source>write single coil</source>
+        <translation>egy tekercs írása</translation>
+    </message>
+    <message>
+        <location line="+2"/>
+        <source>write single register</source>
+        <translation>egy regiszter írása</translation>
+    </message>
+    <message>
+        <location line="+2"/>
+        <source>write multiple coils</source>
+        <translation>több tekercs írása</translation>
+    </message>
+    <message>
+        <location line="+2"/>
+        <source>write multiple registers</source>
+        <translation>több regiszter írása</translation>
+    </message>
+    <message>
+        <location line="+2"/>
+        <source>unknown function</source>
+        <translation>ismeretlen funkció</translation>
+    </message>
+    <message>
+        <location line="+7"/>
+        <source>read</source>
+        <translation>olvasás</translation>
+    </message>
+    <message>
+        <location line="+2"/>
+        <source>write</source>
+        <translation>írás</translation>
+    </message>
+    <message>
+        <location line="+2"/>
+        <source>bit ON</source>
+        <translation>bit BE</translation>
+    </message>
+    <message>
+        <location line="+2"/>
+        <source>bit OFF</source>
+        <translation>bit KI</translation>
+    </message>
+    <message>
+        <location line="+2"/>
+        <source>unknown command</source>
+        <translation>ismeretlen parancs</translation>
+    </message>
+</context>
+<context>
     <name>rung::network::Devices</name>
     <message>
         <location filename="../network/devices.cpp" line="+22"/>
@@ -9633,6 +9921,104 @@ Kiértékelés: %4 µs (%5..%6)</translation>
         <location filename="../network/traffic.cpp" line="+9"/>
         <source># traffic of %1: virtual time (ms), wire, sender, bytes, |as text|, note</source>
         <translation># %1 forgalma: virtuális idő (ms), vezeték, küldő, bájtok, |szövegként|, megjegyzés</translation>
+    </message>
+</context>
+<context>
+    <name>rung::network::TrafficDecode</name>
+    <message>
+        <location filename="../network/traffic_decode.cpp" line="+40"/>
+        <source>%1 (%2)</source>
+        <translation>%1 (%2)</translation>
+    </message>
+    <message numerus="yes">
+        <location line="+42"/>
+        <source>the frame stops after %n byte(s): cut short or not a frame</source>
+        <translation>
+            <numerusform>a keret %n bájt után véget ér: csonka, vagy nem is keret</numerusform>
+        </translation>
+    </message>
+    <message numerus="yes">
+        <location line="+5"/>
+        <source>%n byte(s) after the end of the frame</source>
+        <translation>
+            <numerusform>%n bájt a keret vége után</numerusform>
+        </translation>
+    </message>
+</context>
+<context>
+    <name>rung::network::TrafficDecoder</name>
+    <message>
+        <location line="+56"/>
+        <source>MODBUS slave device</source>
+        <translation>MODBUS slave eszköz</translation>
+    </message>
+    <message>
+        <location line="+8"/>
+        <source>line device</source>
+        <translation>soros vonali eszköz</translation>
+    </message>
+    <message>
+        <location line="+0"/>
+        <source>real line</source>
+        <translation>valódi vonal</translation>
+    </message>
+    <message>
+        <location line="+53"/>
+        <source>bytes</source>
+        <translation>bájtok</translation>
+    </message>
+    <message>
+        <location line="+1"/>
+        <source>free-port</source>
+        <translation>free-port</translation>
+    </message>
+    <message>
+        <location line="+68"/>
+        <location line="+60"/>
+        <source>Computer Link</source>
+        <translation>Computer Link</translation>
+    </message>
+    <message>
+        <location line="-53"/>
+        <source>not a Computer Link request: it does not start with STX (02h)</source>
+        <translation>nem Computer Link kérés: nem STX-szel (02h) kezdődik</translation>
+    </message>
+    <message>
+        <location line="+14"/>
+        <source>wrong sum (received %1, computed %2): the slave answers error 11h</source>
+        <translation>hibás összeg (érkezett: %1, számított: %2): a slave 11h hibával válaszol</translation>
+    </message>
+    <message>
+        <location line="+6"/>
+        <source>the slave refuses it: %1</source>
+        <translation>a slave elutasítja: %1</translation>
+    </message>
+    <message>
+        <location line="+88"/>
+        <location line="+69"/>
+        <source>MODBUS ASCII</source>
+        <translation>MODBUS ASCII</translation>
+    </message>
+    <message>
+        <location line="-69"/>
+        <location line="+69"/>
+        <source>MODBUS RTU</source>
+        <translation>MODBUS RTU</translation>
+    </message>
+    <message>
+        <location line="-56"/>
+        <source>wrong CRC (received %1, computed %2): the slave answers nothing</source>
+        <translation>hibás CRC (érkezett: %1, számított: %2): a slave nem válaszol</translation>
+    </message>
+    <message>
+        <location line="+16"/>
+        <source>every slave (broadcast)</source>
+        <translation>minden slave (körüzenet)</translation>
+    </message>
+    <message>
+        <location line="+4"/>
+        <source>not a request a slave can carry out: it answers %1</source>
+        <translation>olyan kérés, amelyet a slave nem tud végrehajtani: a válasza %1</translation>
     </message>
 </context>
 <context>
@@ -10113,7 +10499,7 @@ Kiértékelés: %4 µs (%5..%6)</translation>
         <translation>nincs program: a forgatókönyv „program FÁJL” sorral kezdődik</translation>
     </message>
     <message>
-        <location filename="../simulator/scenario_run.cpp" line="+101"/>
+        <location filename="../simulator/scenario_run.cpp" line="+100"/>
         <source>&quot;%1&quot; is not understood here</source>
         <translation>„%1” itt nem értelmezhető</translation>
     </message>

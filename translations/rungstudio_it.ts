@@ -180,8 +180,7 @@
     <message>
         <location filename="../app/cli/cli.cpp" line="+61"/>
         <location line="+48"/>
-        <location filename="../app/cli/cli_network.cpp" line="+145"/>
-        <location line="+54"/>
+        <location filename="../app/cli/cli_network.cpp" line="+147"/>
         <source>unexpected argument %1</source>
         <translation>argomento non previsto: %1</translation>
     </message>
@@ -279,7 +278,7 @@ Codice di uscita: 0 nessun errore, 1 il programma contiene errori, 2 errore di u
     </message>
     <message>
         <location line="+18"/>
-        <location filename="../app/cli/cli_network.cpp" line="-11"/>
+        <location filename="../app/cli/cli_network.cpp" line="+52"/>
         <location filename="../app/cli/cli_plcopen.cpp" line="+36"/>
         <location line="+3"/>
         <source>error</source>
@@ -2024,7 +2023,7 @@ Ctrl+Z / Ctrl+Y: annulla / ripeti, Ctrl+rotellina: zoom, F4: verifica il program
 <context>
     <name>rung::app::Network</name>
     <message>
-        <location filename="../app/cli/cli_network.cpp" line="-165"/>
+        <location filename="../app/cli/cli_network.cpp" line="-176"/>
         <source>usage:</source>
         <translation>uso:</translation>
     </message>
@@ -2048,7 +2047,7 @@ Ctrl+Z / Ctrl+Y: annulla / ripeti, Ctrl+rotellina: zoom, F4: verifica il program
         <translation>--traffic richiede un file</translation>
     </message>
     <message>
-        <location line="+5"/>
+        <location line="+6"/>
         <source>%1: a network file names each station&apos;s PLC</source>
         <translation>%1: il file di rete indica il PLC di ogni stazione</translation>
     </message>
@@ -2064,7 +2063,7 @@ Ctrl+Z / Ctrl+Y: annulla / ripeti, Ctrl+rotellina: zoom, F4: verifica il program
         <translation>%1: riga %2: errore di esecuzione al passo %3: %4</translation>
     </message>
     <message>
-        <location line="+30"/>
+        <location line="+40"/>
         <source>%1: %2: %3</source>
         <translation>%1: %2: %3</translation>
     </message>
@@ -2080,7 +2079,7 @@ Ctrl+Z / Ctrl+Y: annulla / ripeti, Ctrl+rotellina: zoom, F4: verifica il program
         <translation>%1: %2: %3: %4</translation>
     </message>
     <message>
-        <location line="+22"/>
+        <location line="+16"/>
         <source>%1: no bridges: nothing of the network reaches a real line (&quot;bridges&quot;, docs/network-format.md); simulate runs it on virtual time</source>
         <translation>%1: nessun ponte: niente della rete raggiunge una linea reale (&quot;bridges&quot;, docs/network-format.md); simulate la esegue in tempo virtuale</translation>
     </message>
@@ -2088,6 +2087,223 @@ Ctrl+Z / Ctrl+Y: annulla / ripeti, Ctrl+rotellina: zoom, F4: verifica il program
         <location line="+24"/>
         <source>%1 runs in real time; stop it with Ctrl+C</source>
         <translation>%1 è in esecuzione in tempo reale; per fermarlo Ctrl+C</translation>
+    </message>
+</context>
+<context>
+    <name>rung::app::NetworkTrafficModel</name>
+    <message>
+        <location filename="../app/gui/network_traffic_model.cpp" line="+151"/>
+        <source>Request: %1</source>
+        <translation>Richiesta: %1</translation>
+    </message>
+    <message>
+        <location line="+2"/>
+        <source>Reply: %1</source>
+        <translation>Risposta: %1</translation>
+    </message>
+    <message>
+        <location line="+54"/>
+        <source>When the frame&apos;s first byte left: virtual time, seconds.milliseconds.microseconds</source>
+        <translation>Quando è partito il primo byte del frame: tempo virtuale, secondi.millisecondi.microsecondi</translation>
+    </message>
+    <message>
+        <location line="+3"/>
+        <source>The station or device the frame is for; a reply&apos;s is the master</source>
+        <translation>La stazione o il dispositivo a cui è destinato il frame; per una risposta, il master</translation>
+    </message>
+    <message>
+        <location line="+2"/>
+        <source>The address as the receiving PLC&apos;s device, with the address on the wire</source>
+        <translation>L&apos;indirizzo come operando del PLC che riceve, con l&apos;indirizzo sul cavo</translation>
+    </message>
+    <message>
+        <location line="+2"/>
+        <source>Bytes (Computer Link), registers or bits (MODBUS), characters (text)</source>
+        <translation>Byte (Computer Link), registri o bit (MODBUS), caratteri (testo)</translation>
+    </message>
+    <message>
+        <location line="+2"/>
+        <source>The PLC&apos;s error or exception code, or what is wrong with the frame</source>
+        <translation>Il codice di errore o di eccezione del PLC, o che cosa non va nel frame</translation>
+    </message>
+    <message>
+        <location line="+2"/>
+        <source>A fault or a collision that changed the frame</source>
+        <translation>Un guasto o una collisione che ha alterato il frame</translation>
+    </message>
+    <message>
+        <location line="+9"/>
+        <source>Time (s)</source>
+        <translation>Tempo (s)</translation>
+    </message>
+    <message>
+        <location line="+2"/>
+        <source>Wire</source>
+        <translation>Cavo</translation>
+    </message>
+    <message>
+        <location line="+2"/>
+        <source>Sender</source>
+        <translation>Mittente</translation>
+    </message>
+    <message>
+        <location line="+2"/>
+        <source>Receiver</source>
+        <translation>Destinatario</translation>
+    </message>
+    <message>
+        <location line="+2"/>
+        <source>Protocol</source>
+        <translation>Protocollo</translation>
+    </message>
+    <message>
+        <location line="+2"/>
+        <source>Station</source>
+        <translation>Stazione</translation>
+    </message>
+    <message>
+        <location line="+2"/>
+        <source>Command</source>
+        <translation>Comando</translation>
+    </message>
+    <message>
+        <location line="+2"/>
+        <source>Address</source>
+        <translation>Indirizzo</translation>
+    </message>
+    <message>
+        <location line="+2"/>
+        <source>Count</source>
+        <translation>Quantità</translation>
+    </message>
+    <message>
+        <location line="+2"/>
+        <source>Data</source>
+        <translation>Dati</translation>
+    </message>
+    <message>
+        <location line="+2"/>
+        <source>Error</source>
+        <translation>Errore</translation>
+    </message>
+    <message>
+        <location line="+2"/>
+        <source>Note</source>
+        <translation>Nota</translation>
+    </message>
+    <message>
+        <location line="+2"/>
+        <source>Bytes</source>
+        <translation>Byte</translation>
+    </message>
+</context>
+<context>
+    <name>rung::app::NetworkTrafficView</name>
+    <message>
+        <location filename="../app/gui/network_traffic_view.cpp" line="+68"/>
+        <source>&amp;Errors only</source>
+        <translation>Solo &amp;errori</translation>
+    </message>
+    <message>
+        <location line="+2"/>
+        <source>&amp;Save...</source>
+        <translation>&amp;Salva...</translation>
+    </message>
+    <message>
+        <location line="+7"/>
+        <source>Only the frames with an error code, a problem (a wrong sum or CRC, a frame cut short) or a fault&apos;s note</source>
+        <translation>Solo i frame con un codice di errore, un problema (somma o CRC errati, frame troncato) o la nota di un guasto</translation>
+    </message>
+    <message>
+        <location line="+3"/>
+        <source>Save the frames shown as CSV or as text</source>
+        <translation>Salva i frame visualizzati come CSV o come testo</translation>
+    </message>
+    <message>
+        <location line="+6"/>
+        <source>&amp;Wire:</source>
+        <translation>&amp;Cavo:</translation>
+    </message>
+    <message>
+        <location line="+2"/>
+        <source>S&amp;tation:</source>
+        <translation>S&amp;tazione:</translation>
+    </message>
+    <message>
+        <location line="+45"/>
+        <location line="+33"/>
+        <source>All wires</source>
+        <translation>Tutti i cavi</translation>
+    </message>
+    <message>
+        <location line="-32"/>
+        <location line="+36"/>
+        <source>All stations</source>
+        <translation>Tutte le stazioni</translation>
+    </message>
+    <message numerus="yes">
+        <location line="+46"/>
+        <source>%n frame(s)</source>
+        <translation>
+            <numerusform>%n frame</numerusform>
+            <numerusform>%n frame</numerusform>
+        </translation>
+    </message>
+    <message>
+        <location line="+1"/>
+        <source>%1 of %2 frames</source>
+        <translation>%1 di %2 frame</translation>
+    </message>
+    <message>
+        <location line="+5"/>
+        <source>%1 older frames were let go (the view keeps the last %2)</source>
+        <translation>%1 frame più vecchi scartati (la vista conserva gli ultimi %2)</translation>
+    </message>
+    <message>
+        <location line="+9"/>
+        <location line="+22"/>
+        <location line="+9"/>
+        <location line="+27"/>
+        <source>Cannot write %1: %2</source>
+        <translation>Impossibile scrivere %1: %2</translation>
+    </message>
+    <message>
+        <location line="-19"/>
+        <source>%1 older frames were let go before these (the view keeps the last %2)</source>
+        <translation>%1 frame più vecchi scartati prima di questi (la vista conserva gli ultimi %2)</translation>
+    </message>
+    <message>
+        <location line="+6"/>
+        <source>%1 of %2 frames: wire %3, station %4%5</source>
+        <translation>%1 di %2 frame: cavo %3, stazione %4%5</translation>
+    </message>
+    <message>
+        <location line="+3"/>
+        <location line="+1"/>
+        <source>all</source>
+        <translation>tutti</translation>
+    </message>
+    <message>
+        <location line="+1"/>
+        <source>, errors only</source>
+        <translation>, solo errori</translation>
+    </message>
+    <message>
+        <location line="+19"/>
+        <location line="+9"/>
+        <location line="+10"/>
+        <source>Save Traffic</source>
+        <translation>Salva il traffico</translation>
+    </message>
+    <message>
+        <location line="-18"/>
+        <source>CSV (*.csv);;Text, as rungstudio-cli writes it (*.txt)</source>
+        <translation>CSV (*.csv);;Testo, come lo scrive rungstudio-cli (*.txt)</translation>
+    </message>
+    <message>
+        <location line="+9"/>
+        <source>%1 already exists. Replace it?</source>
+        <translation>%1 esiste già. Sostituirlo?</translation>
     </message>
 </context>
 <context>
@@ -2128,12 +2344,12 @@ Ctrl+Z / Ctrl+Y: annulla / ripeti, Ctrl+rotellina: zoom, F4: verifica il program
         <translation>indicare esattamente uno tra --port, --tcp e --pty</translation>
     </message>
     <message>
-        <location line="+4"/>
+        <location line="+5"/>
         <source>modbus-tcp needs --tcp HOST:PORT (for RTU frames on a port: modbus)</source>
         <translation>modbus-tcp richiede --tcp HOST:PORTA (per frame RTU su una porta: modbus)</translation>
     </message>
     <message>
-        <location line="+10"/>
+        <location line="+8"/>
         <source>--tcp needs HOST:PORT, e.g. 127.0.0.1:502; got %1</source>
         <translation>--tcp richiede HOST:PORTA, ad es. 127.0.0.1:502; ricevuto %1</translation>
     </message>
@@ -2143,12 +2359,12 @@ Ctrl+Z / Ctrl+Y: annulla / ripeti, Ctrl+rotellina: zoom, F4: verifica il program
         <translation>%1 deve essere un numero da %2 a %3; ricevuto %4</translation>
     </message>
     <message>
-        <location line="+16"/>
+        <location line="+17"/>
         <source>--frame must be data bits, parity and stop bits, e.g. 8N1 or 7E2; got %1</source>
         <translation>--frame indica bit di dati, parità e bit di stop, ad es. 8N1 o 7E2; ricevuto %1</translation>
     </message>
     <message>
-        <location line="+6"/>
+        <location line="+5"/>
         <source>no device given</source>
         <translation>nessun operando indicato</translation>
     </message>
@@ -2857,7 +3073,7 @@ FILE è una lista istruzioni (.il), un testo ladder (.ladder) o un progetto (.ru
         <translation>%1 richiede un valore</translation>
     </message>
     <message>
-        <location line="+13"/>
+        <location line="+14"/>
         <source>unexpected argument %1</source>
         <translation>argomento non previsto: %1</translation>
     </message>
@@ -2869,7 +3085,7 @@ FILE è una lista istruzioni (.il), un testo ladder (.ladder) o un progetto (.ru
         <translation>il programma non si avvia</translation>
     </message>
     <message>
-        <location filename="../app/cli/cli_simulate.cpp" line="+28"/>
+        <location filename="../app/cli/cli_simulate.cpp" line="+29"/>
         <source>runtime error at step %1: %2</source>
         <translation>errore di esecuzione al passo %1: %2</translation>
     </message>
@@ -7505,7 +7721,7 @@ Valutazione: %4 µs (%5..%6)</translation>
     </message>
     <message>
         <location line="+5"/>
-        <location filename="../model/target/target_pl110.cpp" line="+107"/>
+        <location filename="../model/target/target_pl110.cpp" line="+108"/>
         <location filename="../model/target/target_vigor.cpp" line="+95"/>
         <location filename="../model/target/target_vpc.cpp" line="+5"/>
         <source>Start a block with a normally open contact</source>
@@ -7846,7 +8062,7 @@ Valutazione: %4 µs (%5..%6)</translation>
         <translation>Fine del programma</translation>
     </message>
     <message>
-        <location filename="../model/target/target_pl110.cpp" line="-405"/>
+        <location filename="../model/target/target_pl110.cpp" line="-406"/>
         <source>IF contact: ON while S1 ? S2 is true</source>
         <translation>Contatto IF: ON mentre S1 ? S2 è vero</translation>
     </message>
@@ -7992,7 +8208,7 @@ Valutazione: %4 µs (%5..%6)</translation>
         <translation>tempo di scansione massimo (0,1 ms)</translation>
     </message>
     <message>
-        <location line="+12"/>
+        <location line="+13"/>
         <source>the encoders&apos; load bits and the stepper motor output on AQ1 are not modelled; the word is plain memory</source>
         <translation>i bit di caricamento degli encoder e l&apos;uscita AQ1 del motore passo passo non sono modellati; la word è semplice memoria</translation>
     </message>
@@ -9212,6 +9428,79 @@ Valutazione: %4 µs (%5..%6)</translation>
     </message>
 </context>
 <context>
+    <name>rung::network</name>
+    <message>
+        <location filename="../network/traffic_decode.cpp" line="+34"/>
+        <source>read coils</source>
+        <translation>lettura bobine</translation>
+    </message>
+    <message>
+        <location line="+2"/>
+        <source>read discrete inputs</source>
+        <translation>lettura ingressi</translation>
+    </message>
+    <message>
+        <location line="+2"/>
+        <source>read holding registers</source>
+        <translation>lettura holding register</translation>
+    </message>
+    <message>
+        <location line="+2"/>
+        <source>read input registers</source>
+        <translation>lettura registri di ingresso</translation>
+    </message>
+    <message>
+        <location line="+2"/>
+        <source>write single coil</source>
+        <translation>scrittura di una bobina</translation>
+    </message>
+    <message>
+        <location line="+2"/>
+        <source>write single register</source>
+        <translation>scrittura di un registro</translation>
+    </message>
+    <message>
+        <location line="+2"/>
+        <source>write multiple coils</source>
+        <translation>scrittura di più bobine</translation>
+    </message>
+    <message>
+        <location line="+2"/>
+        <source>write multiple registers</source>
+        <translation>scrittura di più registri</translation>
+    </message>
+    <message>
+        <location line="+2"/>
+        <source>unknown function</source>
+        <translation>funzione sconosciuta</translation>
+    </message>
+    <message>
+        <location line="+7"/>
+        <source>read</source>
+        <translation>lettura</translation>
+    </message>
+    <message>
+        <location line="+2"/>
+        <source>write</source>
+        <translation>scrittura</translation>
+    </message>
+    <message>
+        <location line="+2"/>
+        <source>bit ON</source>
+        <translation>bit ON</translation>
+    </message>
+    <message>
+        <location line="+2"/>
+        <source>bit OFF</source>
+        <translation>bit OFF</translation>
+    </message>
+    <message>
+        <location line="+2"/>
+        <source>unknown command</source>
+        <translation>comando sconosciuto</translation>
+    </message>
+</context>
+<context>
     <name>rung::network::Devices</name>
     <message>
         <location filename="../network/devices.cpp" line="+22"/>
@@ -9654,6 +9943,106 @@ Valutazione: %4 µs (%5..%6)</translation>
         <location filename="../network/traffic.cpp" line="+9"/>
         <source># traffic of %1: virtual time (ms), wire, sender, bytes, |as text|, note</source>
         <translation># traffico di %1: tempo virtuale (ms), cavo, mittente, byte, |come testo|, nota</translation>
+    </message>
+</context>
+<context>
+    <name>rung::network::TrafficDecode</name>
+    <message>
+        <location filename="../network/traffic_decode.cpp" line="+40"/>
+        <source>%1 (%2)</source>
+        <translation>%1 (%2)</translation>
+    </message>
+    <message numerus="yes">
+        <location line="+42"/>
+        <source>the frame stops after %n byte(s): cut short or not a frame</source>
+        <translation>
+            <numerusform>il frame si ferma dopo %n byte: troncato o non è un frame</numerusform>
+            <numerusform>il frame si ferma dopo %n byte: troncato o non è un frame</numerusform>
+        </translation>
+    </message>
+    <message numerus="yes">
+        <location line="+5"/>
+        <source>%n byte(s) after the end of the frame</source>
+        <translation>
+            <numerusform>%n byte dopo la fine del frame</numerusform>
+            <numerusform>%n byte dopo la fine del frame</numerusform>
+        </translation>
+    </message>
+</context>
+<context>
+    <name>rung::network::TrafficDecoder</name>
+    <message>
+        <location line="+56"/>
+        <source>MODBUS slave device</source>
+        <translation>dispositivo slave MODBUS</translation>
+    </message>
+    <message>
+        <location line="+8"/>
+        <source>line device</source>
+        <translation>dispositivo di linea</translation>
+    </message>
+    <message>
+        <location line="+0"/>
+        <source>real line</source>
+        <translation>linea reale</translation>
+    </message>
+    <message>
+        <location line="+53"/>
+        <source>bytes</source>
+        <translation>byte</translation>
+    </message>
+    <message>
+        <location line="+1"/>
+        <source>free-port</source>
+        <translation>free-port</translation>
+    </message>
+    <message>
+        <location line="+68"/>
+        <location line="+60"/>
+        <source>Computer Link</source>
+        <translation>Computer Link</translation>
+    </message>
+    <message>
+        <location line="-53"/>
+        <source>not a Computer Link request: it does not start with STX (02h)</source>
+        <translation>non è una richiesta Computer Link: non inizia con STX (02h)</translation>
+    </message>
+    <message>
+        <location line="+14"/>
+        <source>wrong sum (received %1, computed %2): the slave answers error 11h</source>
+        <translation>somma errata (ricevuta %1, calcolata %2): lo slave risponde con l&apos;errore 11h</translation>
+    </message>
+    <message>
+        <location line="+6"/>
+        <source>the slave refuses it: %1</source>
+        <translation>lo slave la rifiuta: %1</translation>
+    </message>
+    <message>
+        <location line="+88"/>
+        <location line="+69"/>
+        <source>MODBUS ASCII</source>
+        <translation>MODBUS ASCII</translation>
+    </message>
+    <message>
+        <location line="-69"/>
+        <location line="+69"/>
+        <source>MODBUS RTU</source>
+        <translation>MODBUS RTU</translation>
+    </message>
+    <message>
+        <location line="-56"/>
+        <source>wrong CRC (received %1, computed %2): the slave answers nothing</source>
+        <translation>CRC errato (ricevuto %1, calcolato %2): lo slave non risponde</translation>
+    </message>
+    <message>
+        <location line="+16"/>
+        <source>every slave (broadcast)</source>
+        <translation>tutti gli slave (broadcast)</translation>
+    </message>
+    <message>
+        <location line="+4"/>
+        <source>not a request a slave can carry out: it answers %1</source>
+        <translation>non è una richiesta che uno slave possa eseguire: risponde %1</translation>
     </message>
 </context>
 <context>
@@ -10134,7 +10523,7 @@ Valutazione: %4 µs (%5..%6)</translation>
         <translation>nessun programma: uno scenario inizia con &quot;program FILE&quot;</translation>
     </message>
     <message>
-        <location filename="../simulator/scenario_run.cpp" line="+101"/>
+        <location filename="../simulator/scenario_run.cpp" line="+100"/>
         <source>&quot;%1&quot; is not understood here</source>
         <translation>&quot;%1&quot; non è comprensibile qui</translation>
     </message>
