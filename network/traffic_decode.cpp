@@ -20,10 +20,6 @@ namespace mb = comms::modbus;
 namespace vg = comms::vigor;
 using comms::detail::hex2;
 
-QString tr(const char *text) {
-    return TrafficDecodeTr::tr(text);
-}
-
 QString hex4(int value) {
     return QString::number(value, 16).toUpper().rightJustified(4, u'0');
 }
@@ -31,38 +27,38 @@ QString hex4(int value) {
 QString modbusFunctionName(int function) {
     switch (function) {
     case mb::ReadCoils:
-        return tr("read coils");
+        return TrafficDecodeTr::tr("read coils");
     case mb::ReadDiscreteInputs:
-        return tr("read discrete inputs");
+        return TrafficDecodeTr::tr("read discrete inputs");
     case mb::ReadHoldingRegisters:
-        return tr("read holding registers");
+        return TrafficDecodeTr::tr("read holding registers");
     case mb::ReadInputRegisters:
-        return tr("read input registers");
+        return TrafficDecodeTr::tr("read input registers");
     case mb::WriteSingleCoil:
-        return tr("write single coil");
+        return TrafficDecodeTr::tr("write single coil");
     case mb::WriteSingleRegister:
-        return tr("write single register");
+        return TrafficDecodeTr::tr("write single register");
     case mb::WriteMultipleCoils:
-        return tr("write multiple coils");
+        return TrafficDecodeTr::tr("write multiple coils");
     case mb::WriteMultipleRegisters:
-        return tr("write multiple registers");
+        return TrafficDecodeTr::tr("write multiple registers");
     default:
-        return tr("unknown function");
+        return TrafficDecodeTr::tr("unknown function");
     }
 }
 
 QString vigorCommandName(int command) {
     switch (vg::Command(command)) {
     case vg::Command::Read:
-        return tr("read");
+        return TrafficDecodeTr::tr("read");
     case vg::Command::Write:
-        return tr("write");
+        return TrafficDecodeTr::tr("write");
     case vg::Command::BitOn:
-        return tr("bit ON");
+        return TrafficDecodeTr::tr("bit ON");
     case vg::Command::BitOff:
-        return tr("bit OFF");
+        return TrafficDecodeTr::tr("bit OFF");
     }
-    return tr("unknown command");
+    return TrafficDecodeTr::tr("unknown command");
 }
 
 // The space a MODBUS function reaches in a map (PL110: 02 and 04 read the tables of 01 and 03).
@@ -205,15 +201,16 @@ TrafficDecoder::TrafficDecoder(const Network &network) {
                 end.speaks = Speaks::Modbus;
                 end.answers = true;
                 end.station = slave->station;
-                end.application = tr("MODBUS slave device");
+                end.application = TrafficDecodeTr::tr("MODBUS slave device");
                 for (const DeviceDescription &d : network.description().devices)
                     if (d.name == e->name)
                         end.modbusAscii = d.json.value(QStringLiteral("mode")).toString() ==
                                           QStringLiteral("ascii");
             } else {
                 end.programDriven = true;
-                end.application =
-                    dynamic_cast<const LineDevice *>(e) ? tr("line device") : tr("real line");
+                end.application = dynamic_cast<const LineDevice *>(e)
+                                      ? TrafficDecodeTr::tr("line device")
+                                      : TrafficDecodeTr::tr("real line");
             }
             names << end.name;
             m_ends[end.name] = end;
@@ -266,8 +263,8 @@ DecodedFrame TrafficDecoder::raw(const End *from, const QByteArray &bytes,
     DecodedFrame f;
     f.kind = DecodedFrame::Kind::Raw;
     // A port of a protocol sends bytes of none in free-port (PL110 manual 4.2.19).
-    f.protocol = !from                             ? tr("bytes")
-                 : from->speaks != Speaks::Nothing ? tr("free-port")
+    f.protocol = !from                             ? TrafficDecodeTr::tr("bytes")
+                 : from->speaks != Speaks::Nothing ? TrafficDecodeTr::tr("free-port")
                                                    : from->application;
     f.receiver = receiversOf(wire, from ? from->name : QString());
     f.count = int(bytes.size());
@@ -335,14 +332,15 @@ DecodedFrame TrafficDecoder::decodeVigorRequest(const End &from, const QByteArra
                                                 const QString &wire) {
     DecodedFrame f;
     f.kind = DecodedFrame::Kind::Request;
-    f.protocol = tr("Computer Link");
+    f.protocol = TrafficDecodeTr::tr("Computer Link");
     vg::RequestDecoder decoder;
     decoder.feed(bytes);
     m_pending.erase(wire);
     if (decoder.status() != comms::FrameStatus::Complete) {
         f.problem = !decoder.discarded().ok() ? decoder.discarded().message
                     : bytes.front() != vg::Stx
-                        ? tr("not a Computer Link request: it does not start with STX (02h)")
+                        ? TrafficDecodeTr::tr(
+                              "not a Computer Link request: it does not start with STX (02h)")
                         : truncatedText(bytes.size());
         return f;
     }
@@ -356,13 +354,14 @@ DecodedFrame TrafficDecoder::decodeVigorRequest(const End &from, const QByteArra
     const int code = decoder.errorCode();
     if (code == int(vg::ErrorCode::SumCheck)) {
         const qsizetype etx = bytes.indexOf(vg::Etx);
-        f.problem = tr("wrong sum (received %1, computed %2): the slave answers error 11h")
-                        .arg(QString::fromLatin1(bytes.mid(etx + 1, 2)),
-                             QString::fromLatin1(vg::sum(QByteArrayView(bytes).sliced(1, etx))));
+        f.problem =
+            TrafficDecodeTr::tr("wrong sum (received %1, computed %2): the slave answers error 11h")
+                .arg(QString::fromLatin1(bytes.mid(etx + 1, 2)),
+                     QString::fromLatin1(vg::sum(QByteArrayView(bytes).sliced(1, etx))));
         return f;
     }
     if (code != 0) {
-        f.problem = tr("the slave refuses it: %1").arg(vg::errorText(code));
+        f.problem = TrafficDecodeTr::tr("the slave refuses it: %1").arg(vg::errorText(code));
         return f;
     }
     const bool bitCommand = r.command == vg::Command::BitOn || r.command == vg::Command::BitOff;
@@ -395,7 +394,7 @@ DecodedFrame TrafficDecoder::decodeVigorReply(const End &from, const QByteArray 
                                               const QString &wire) {
     DecodedFrame f;
     f.kind = DecodedFrame::Kind::Reply;
-    f.protocol = tr("Computer Link");
+    f.protocol = TrafficDecodeTr::tr("Computer Link");
     vg::Request request;
     const auto it = m_pending.find(wire);
     const bool known = it != m_pending.end() && it->second->speaks == Speaks::VigorLink;
@@ -450,7 +449,7 @@ DecodedFrame TrafficDecoder::decodeModbusRequest(const End &from, const QByteArr
                                                  bool ascii, const QString &wire) {
     DecodedFrame f;
     f.kind = DecodedFrame::Kind::Request;
-    f.protocol = ascii ? tr("MODBUS ASCII") : tr("MODBUS RTU");
+    f.protocol = ascii ? TrafficDecodeTr::tr("MODBUS ASCII") : TrafficDecodeTr::tr("MODBUS RTU");
     m_pending.erase(wire);
     mb::RequestDecoder decoder(ascii ? mb::Framing::Ascii : mb::Framing::Rtu);
     decoder.feed(bytes);
@@ -463,7 +462,8 @@ DecodedFrame TrafficDecoder::decodeModbusRequest(const End &from, const QByteArr
             const QByteArrayView frame(bytes);
             const int received = quint8(frame[frame.size() - 2]) | quint8(frame[frame.size() - 1])
                                                                        << 8;
-            f.problem = tr("wrong CRC (received %1, computed %2): the slave answers nothing")
+            f.problem = TrafficDecodeTr::tr(
+                            "wrong CRC (received %1, computed %2): the slave answers nothing")
                             .arg(hex4(received), hex4(mb::crc16(frame.first(frame.size() - 2))));
         } else {
             f.problem = truncatedText(bytes.size());
@@ -479,11 +479,11 @@ DecodedFrame TrafficDecoder::decodeModbusRequest(const End &from, const QByteArr
     f.commandText = QStringLiteral("%1h %2").arg(hex2(r.function), modbusFunctionName(r.function));
     const End *slave =
         f.station == mb::BroadcastUnit ? nullptr : slaveOn(wire, Speaks::Modbus, f.station);
-    f.receiver = f.station == mb::BroadcastUnit ? tr("every slave (broadcast)")
+    f.receiver = f.station == mb::BroadcastUnit ? TrafficDecodeTr::tr("every slave (broadcast)")
                  : slave                        ? slave->name
                                                 : QString();
     if (parsed.exception) {
-        f.problem = tr("not a request a slave can carry out: it answers %1")
+        f.problem = TrafficDecodeTr::tr("not a request a slave can carry out: it answers %1")
                         .arg(mb::exceptionText(parsed.exception));
         return f;
     }
@@ -519,7 +519,7 @@ DecodedFrame TrafficDecoder::decodeModbusReply(const End &from, const QByteArray
                                                const QString &wire) {
     DecodedFrame f;
     f.kind = DecodedFrame::Kind::Reply;
-    f.protocol = ascii ? tr("MODBUS ASCII") : tr("MODBUS RTU");
+    f.protocol = ascii ? TrafficDecodeTr::tr("MODBUS ASCII") : TrafficDecodeTr::tr("MODBUS RTU");
     mb::Request request;
     int unit = from.station;
     const auto it = m_pending.find(wire);

@@ -66,7 +66,7 @@
 <context>
     <name>rung::app::NetworkTrafficView</name>
     <message numerus="yes">
-        <location filename="../app/gui/network_traffic_view.cpp" line="+216"/>
+        <location filename="../app/gui/network_traffic_view.cpp" line="+238"/>
         <source>%n frame(s)</source>
         <translation>
             <numerusform>%n frame</numerusform>
@@ -214,7 +214,7 @@
 <context>
     <name>rung::network::TrafficDecode</name>
     <message numerus="yes">
-        <location filename="../network/traffic_decode.cpp" line="+147"/>
+        <location filename="../network/traffic_decode.cpp" line="+143"/>
         <source>the frame stops after %n byte(s): cut short or not a frame</source>
         <translation>
             <numerusform>the frame stops after %n byte: cut short or not a frame</numerusform>

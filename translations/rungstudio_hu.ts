@@ -2085,7 +2085,7 @@ Ctrl+Z / Ctrl+Y: visszavonás / mégis, Ctrl+görgő: nagyítás, F4: a program 
 <context>
     <name>rung::app::NetworkTrafficModel</name>
     <message>
-        <location filename="../app/gui/network_traffic_model.cpp" line="+151"/>
+        <location filename="../app/gui/network_traffic_model.cpp" line="+161"/>
         <source>Request: %1</source>
         <translation>Kérés: %1</translation>
     </message>
@@ -2193,17 +2193,17 @@ Ctrl+Z / Ctrl+Y: visszavonás / mégis, Ctrl+görgő: nagyítás, F4: a program 
 <context>
     <name>rung::app::NetworkTrafficView</name>
     <message>
-        <location filename="../app/gui/network_traffic_view.cpp" line="+68"/>
+        <location filename="../app/gui/network_traffic_view.cpp" line="+161"/>
         <source>&amp;Errors only</source>
         <translation>Csak &amp;hibák</translation>
     </message>
     <message>
-        <location line="+2"/>
+        <location line="+4"/>
         <source>&amp;Save...</source>
         <translation>&amp;Mentés...</translation>
     </message>
     <message>
-        <location line="+7"/>
+        <location line="-2"/>
         <source>Only the frames with an error code, a problem (a wrong sum or CRC, a frame cut short) or a fault&apos;s note</source>
         <translation>Csak a hibakódos, hibás (rossz összeg vagy CRC, csonka keret) vagy hibajelzéssel (fault) megjelölt keretek</translation>
     </message>
@@ -2213,29 +2213,27 @@ Ctrl+Z / Ctrl+Y: visszavonás / mégis, Ctrl+görgő: nagyítás, F4: a program 
         <translation>A látható keretek mentése CSV-ként vagy szövegként</translation>
     </message>
     <message>
-        <location line="+6"/>
+        <location line="-7"/>
         <source>&amp;Wire:</source>
         <translation>&amp;Vezeték:</translation>
     </message>
     <message>
-        <location line="+2"/>
+        <location line="+1"/>
         <source>S&amp;tation:</source>
         <translation>Ál&amp;lomás:</translation>
     </message>
     <message>
-        <location line="+45"/>
-        <location line="+33"/>
+        <location line="+7"/>
         <source>All wires</source>
         <translation>Minden vezeték</translation>
     </message>
     <message>
-        <location line="-32"/>
-        <location line="+36"/>
+        <location line="+1"/>
         <source>All stations</source>
         <translation>Minden állomás</translation>
     </message>
     <message numerus="yes">
-        <location line="+46"/>
+        <location line="+70"/>
         <source>%n frame(s)</source>
         <translation>
             <numerusform>%n keret</numerusform>
@@ -9406,79 +9404,6 @@ Kiértékelés: %4 µs (%5..%6)</translation>
     </message>
 </context>
 <context>
-    <name>rung::network</name>
-    <message>
-        <location filename="../network/traffic_decode.cpp" line="+34"/>
-        <source>read coils</source>
-        <translation>tekercsek olvasása</translation>
-    </message>
-    <message>
-        <location line="+2"/>
-        <source>read discrete inputs</source>
-        <translation>bemenetek olvasása</translation>
-    </message>
-    <message>
-        <location line="+2"/>
-        <source>read holding registers</source>
-        <translation>tartóregiszterek olvasása</translation>
-    </message>
-    <message>
-        <location line="+2"/>
-        <source>read input registers</source>
-        <translation>bemeneti regiszterek olvasása</translation>
-    </message>
-    <message>
-        <location line="+2"/>
-        <source>write single coil</source>
-        <translation>egy tekercs írása</translation>
-    </message>
-    <message>
-        <location line="+2"/>
-        <source>write single register</source>
-        <translation>egy regiszter írása</translation>
-    </message>
-    <message>
-        <location line="+2"/>
-        <source>write multiple coils</source>
-        <translation>több tekercs írása</translation>
-    </message>
-    <message>
-        <location line="+2"/>
-        <source>write multiple registers</source>
-        <translation>több regiszter írása</translation>
-    </message>
-    <message>
-        <location line="+2"/>
-        <source>unknown function</source>
-        <translation>ismeretlen funkció</translation>
-    </message>
-    <message>
-        <location line="+7"/>
-        <source>read</source>
-        <translation>olvasás</translation>
-    </message>
-    <message>
-        <location line="+2"/>
-        <source>write</source>
-        <translation>írás</translation>
-    </message>
-    <message>
-        <location line="+2"/>
-        <source>bit ON</source>
-        <translation>bit BE</translation>
-    </message>
-    <message>
-        <location line="+2"/>
-        <source>bit OFF</source>
-        <translation>bit KI</translation>
-    </message>
-    <message>
-        <location line="+2"/>
-        <source>unknown command</source>
-        <translation>ismeretlen parancs</translation>
-    </message>
-</context>
-<context>
     <name>rung::network::Devices</name>
     <message>
         <location filename="../network/devices.cpp" line="+22"/>
@@ -9926,7 +9851,77 @@ Kiértékelés: %4 µs (%5..%6)</translation>
 <context>
     <name>rung::network::TrafficDecode</name>
     <message>
-        <location filename="../network/traffic_decode.cpp" line="+40"/>
+        <location filename="../network/traffic_decode.cpp" line="+30"/>
+        <source>read coils</source>
+        <translation>tekercsek olvasása</translation>
+    </message>
+    <message>
+        <location line="+2"/>
+        <source>read discrete inputs</source>
+        <translation>bemenetek olvasása</translation>
+    </message>
+    <message>
+        <location line="+2"/>
+        <source>read holding registers</source>
+        <translation>tartóregiszterek olvasása</translation>
+    </message>
+    <message>
+        <location line="+2"/>
+        <source>read input registers</source>
+        <translation>bemeneti regiszterek olvasása</translation>
+    </message>
+    <message>
+        <location line="+2"/>
+        <source>write single coil</source>
+        <translation>egy tekercs írása</translation>
+    </message>
+    <message>
+        <location line="+2"/>
+        <source>write single register</source>
+        <translation>egy regiszter írása</translation>
+    </message>
+    <message>
+        <location line="+2"/>
+        <source>write multiple coils</source>
+        <translation>több tekercs írása</translation>
+    </message>
+    <message>
+        <location line="+2"/>
+        <source>write multiple registers</source>
+        <translation>több regiszter írása</translation>
+    </message>
+    <message>
+        <location line="+2"/>
+        <source>unknown function</source>
+        <translation>ismeretlen funkció</translation>
+    </message>
+    <message>
+        <location line="+7"/>
+        <source>read</source>
+        <translation>olvasás</translation>
+    </message>
+    <message>
+        <location line="+2"/>
+        <source>write</source>
+        <translation>írás</translation>
+    </message>
+    <message>
+        <location line="+2"/>
+        <source>bit ON</source>
+        <translation>bit BE</translation>
+    </message>
+    <message>
+        <location line="+2"/>
+        <source>bit OFF</source>
+        <translation>bit KI</translation>
+    </message>
+    <message>
+        <location line="+2"/>
+        <source>unknown command</source>
+        <translation>ismeretlen parancs</translation>
+    </message>
+    <message>
+        <location line="+40"/>
         <source>%1 (%2)</source>
         <translation>%1 (%2)</translation>
     </message>
@@ -9944,9 +9939,6 @@ Kiértékelés: %4 µs (%5..%6)</translation>
             <numerusform>%n bájt a keret vége után</numerusform>
         </translation>
     </message>
-</context>
-<context>
-    <name>rung::network::TrafficDecoder</name>
     <message>
         <location line="+56"/>
         <source>MODBUS slave device</source>
@@ -9958,7 +9950,7 @@ Kiértékelés: %4 µs (%5..%6)</translation>
         <translation>soros vonali eszköz</translation>
     </message>
     <message>
-        <location line="+0"/>
+        <location line="+1"/>
         <source>real line</source>
         <translation>valódi vonal</translation>
     </message>
@@ -9974,17 +9966,17 @@ Kiértékelés: %4 µs (%5..%6)</translation>
     </message>
     <message>
         <location line="+68"/>
-        <location line="+60"/>
+        <location line="+62"/>
         <source>Computer Link</source>
         <translation>Computer Link</translation>
     </message>
     <message>
-        <location line="-53"/>
+        <location line="-55"/>
         <source>not a Computer Link request: it does not start with STX (02h)</source>
         <translation>nem Computer Link kérés: nem STX-szel (02h) kezdődik</translation>
     </message>
     <message>
-        <location line="+14"/>
+        <location line="+16"/>
         <source>wrong sum (received %1, computed %2): the slave answers error 11h</source>
         <translation>hibás összeg (érkezett: %1, számított: %2): a slave 11h hibával válaszol</translation>
     </message>
@@ -9995,23 +9987,23 @@ Kiértékelés: %4 µs (%5..%6)</translation>
     </message>
     <message>
         <location line="+88"/>
-        <location line="+69"/>
+        <location line="+70"/>
         <source>MODBUS ASCII</source>
         <translation>MODBUS ASCII</translation>
     </message>
     <message>
-        <location line="-69"/>
-        <location line="+69"/>
+        <location line="-70"/>
+        <location line="+70"/>
         <source>MODBUS RTU</source>
         <translation>MODBUS RTU</translation>
     </message>
     <message>
-        <location line="-56"/>
+        <location line="-57"/>
         <source>wrong CRC (received %1, computed %2): the slave answers nothing</source>
         <translation>hibás CRC (érkezett: %1, számított: %2): a slave nem válaszol</translation>
     </message>
     <message>
-        <location line="+16"/>
+        <location line="+17"/>
         <source>every slave (broadcast)</source>
         <translation>minden slave (körüzenet)</translation>
     </message>

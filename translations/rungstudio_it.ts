@@ -2092,7 +2092,7 @@ Ctrl+Z / Ctrl+Y: annulla / ripeti, Ctrl+rotellina: zoom, F4: verifica il program
 <context>
     <name>rung::app::NetworkTrafficModel</name>
     <message>
-        <location filename="../app/gui/network_traffic_model.cpp" line="+151"/>
+        <location filename="../app/gui/network_traffic_model.cpp" line="+161"/>
         <source>Request: %1</source>
         <translation>Richiesta: %1</translation>
     </message>
@@ -2200,17 +2200,17 @@ Ctrl+Z / Ctrl+Y: annulla / ripeti, Ctrl+rotellina: zoom, F4: verifica il program
 <context>
     <name>rung::app::NetworkTrafficView</name>
     <message>
-        <location filename="../app/gui/network_traffic_view.cpp" line="+68"/>
+        <location filename="../app/gui/network_traffic_view.cpp" line="+161"/>
         <source>&amp;Errors only</source>
         <translation>Solo &amp;errori</translation>
     </message>
     <message>
-        <location line="+2"/>
+        <location line="+4"/>
         <source>&amp;Save...</source>
         <translation>&amp;Salva...</translation>
     </message>
     <message>
-        <location line="+7"/>
+        <location line="-2"/>
         <source>Only the frames with an error code, a problem (a wrong sum or CRC, a frame cut short) or a fault&apos;s note</source>
         <translation>Solo i frame con un codice di errore, un problema (somma o CRC errati, frame troncato) o la nota di un guasto</translation>
     </message>
@@ -2220,29 +2220,27 @@ Ctrl+Z / Ctrl+Y: annulla / ripeti, Ctrl+rotellina: zoom, F4: verifica il program
         <translation>Salva i frame visualizzati come CSV o come testo</translation>
     </message>
     <message>
-        <location line="+6"/>
+        <location line="-7"/>
         <source>&amp;Wire:</source>
         <translation>&amp;Cavo:</translation>
     </message>
     <message>
-        <location line="+2"/>
+        <location line="+1"/>
         <source>S&amp;tation:</source>
         <translation>S&amp;tazione:</translation>
     </message>
     <message>
-        <location line="+45"/>
-        <location line="+33"/>
+        <location line="+7"/>
         <source>All wires</source>
         <translation>Tutti i cavi</translation>
     </message>
     <message>
-        <location line="-32"/>
-        <location line="+36"/>
+        <location line="+1"/>
         <source>All stations</source>
         <translation>Tutte le stazioni</translation>
     </message>
     <message numerus="yes">
-        <location line="+46"/>
+        <location line="+70"/>
         <source>%n frame(s)</source>
         <translation>
             <numerusform>%n frame</numerusform>
@@ -9428,79 +9426,6 @@ Valutazione: %4 µs (%5..%6)</translation>
     </message>
 </context>
 <context>
-    <name>rung::network</name>
-    <message>
-        <location filename="../network/traffic_decode.cpp" line="+34"/>
-        <source>read coils</source>
-        <translation>lettura bobine</translation>
-    </message>
-    <message>
-        <location line="+2"/>
-        <source>read discrete inputs</source>
-        <translation>lettura ingressi</translation>
-    </message>
-    <message>
-        <location line="+2"/>
-        <source>read holding registers</source>
-        <translation>lettura holding register</translation>
-    </message>
-    <message>
-        <location line="+2"/>
-        <source>read input registers</source>
-        <translation>lettura registri di ingresso</translation>
-    </message>
-    <message>
-        <location line="+2"/>
-        <source>write single coil</source>
-        <translation>scrittura di una bobina</translation>
-    </message>
-    <message>
-        <location line="+2"/>
-        <source>write single register</source>
-        <translation>scrittura di un registro</translation>
-    </message>
-    <message>
-        <location line="+2"/>
-        <source>write multiple coils</source>
-        <translation>scrittura di più bobine</translation>
-    </message>
-    <message>
-        <location line="+2"/>
-        <source>write multiple registers</source>
-        <translation>scrittura di più registri</translation>
-    </message>
-    <message>
-        <location line="+2"/>
-        <source>unknown function</source>
-        <translation>funzione sconosciuta</translation>
-    </message>
-    <message>
-        <location line="+7"/>
-        <source>read</source>
-        <translation>lettura</translation>
-    </message>
-    <message>
-        <location line="+2"/>
-        <source>write</source>
-        <translation>scrittura</translation>
-    </message>
-    <message>
-        <location line="+2"/>
-        <source>bit ON</source>
-        <translation>bit ON</translation>
-    </message>
-    <message>
-        <location line="+2"/>
-        <source>bit OFF</source>
-        <translation>bit OFF</translation>
-    </message>
-    <message>
-        <location line="+2"/>
-        <source>unknown command</source>
-        <translation>comando sconosciuto</translation>
-    </message>
-</context>
-<context>
     <name>rung::network::Devices</name>
     <message>
         <location filename="../network/devices.cpp" line="+22"/>
@@ -9948,7 +9873,77 @@ Valutazione: %4 µs (%5..%6)</translation>
 <context>
     <name>rung::network::TrafficDecode</name>
     <message>
-        <location filename="../network/traffic_decode.cpp" line="+40"/>
+        <location filename="../network/traffic_decode.cpp" line="+30"/>
+        <source>read coils</source>
+        <translation>lettura bobine</translation>
+    </message>
+    <message>
+        <location line="+2"/>
+        <source>read discrete inputs</source>
+        <translation>lettura ingressi</translation>
+    </message>
+    <message>
+        <location line="+2"/>
+        <source>read holding registers</source>
+        <translation>lettura holding register</translation>
+    </message>
+    <message>
+        <location line="+2"/>
+        <source>read input registers</source>
+        <translation>lettura registri di ingresso</translation>
+    </message>
+    <message>
+        <location line="+2"/>
+        <source>write single coil</source>
+        <translation>scrittura di una bobina</translation>
+    </message>
+    <message>
+        <location line="+2"/>
+        <source>write single register</source>
+        <translation>scrittura di un registro</translation>
+    </message>
+    <message>
+        <location line="+2"/>
+        <source>write multiple coils</source>
+        <translation>scrittura di più bobine</translation>
+    </message>
+    <message>
+        <location line="+2"/>
+        <source>write multiple registers</source>
+        <translation>scrittura di più registri</translation>
+    </message>
+    <message>
+        <location line="+2"/>
+        <source>unknown function</source>
+        <translation>funzione sconosciuta</translation>
+    </message>
+    <message>
+        <location line="+7"/>
+        <source>read</source>
+        <translation>lettura</translation>
+    </message>
+    <message>
+        <location line="+2"/>
+        <source>write</source>
+        <translation>scrittura</translation>
+    </message>
+    <message>
+        <location line="+2"/>
+        <source>bit ON</source>
+        <translation>bit ON</translation>
+    </message>
+    <message>
+        <location line="+2"/>
+        <source>bit OFF</source>
+        <translation>bit OFF</translation>
+    </message>
+    <message>
+        <location line="+2"/>
+        <source>unknown command</source>
+        <translation>comando sconosciuto</translation>
+    </message>
+    <message>
+        <location line="+40"/>
         <source>%1 (%2)</source>
         <translation>%1 (%2)</translation>
     </message>
@@ -9968,9 +9963,6 @@ Valutazione: %4 µs (%5..%6)</translation>
             <numerusform>%n byte dopo la fine del frame</numerusform>
         </translation>
     </message>
-</context>
-<context>
-    <name>rung::network::TrafficDecoder</name>
     <message>
         <location line="+56"/>
         <source>MODBUS slave device</source>
@@ -9982,7 +9974,7 @@ Valutazione: %4 µs (%5..%6)</translation>
         <translation>dispositivo di linea</translation>
     </message>
     <message>
-        <location line="+0"/>
+        <location line="+1"/>
         <source>real line</source>
         <translation>linea reale</translation>
     </message>
@@ -9998,17 +9990,17 @@ Valutazione: %4 µs (%5..%6)</translation>
     </message>
     <message>
         <location line="+68"/>
-        <location line="+60"/>
+        <location line="+62"/>
         <source>Computer Link</source>
         <translation>Computer Link</translation>
     </message>
     <message>
-        <location line="-53"/>
+        <location line="-55"/>
         <source>not a Computer Link request: it does not start with STX (02h)</source>
         <translation>non è una richiesta Computer Link: non inizia con STX (02h)</translation>
     </message>
     <message>
-        <location line="+14"/>
+        <location line="+16"/>
         <source>wrong sum (received %1, computed %2): the slave answers error 11h</source>
         <translation>somma errata (ricevuta %1, calcolata %2): lo slave risponde con l&apos;errore 11h</translation>
     </message>
@@ -10019,23 +10011,23 @@ Valutazione: %4 µs (%5..%6)</translation>
     </message>
     <message>
         <location line="+88"/>
-        <location line="+69"/>
+        <location line="+70"/>
         <source>MODBUS ASCII</source>
         <translation>MODBUS ASCII</translation>
     </message>
     <message>
-        <location line="-69"/>
-        <location line="+69"/>
+        <location line="-70"/>
+        <location line="+70"/>
         <source>MODBUS RTU</source>
         <translation>MODBUS RTU</translation>
     </message>
     <message>
-        <location line="-56"/>
+        <location line="-57"/>
         <source>wrong CRC (received %1, computed %2): the slave answers nothing</source>
         <translation>CRC errato (ricevuto %1, calcolato %2): lo slave non risponde</translation>
     </message>
     <message>
-        <location line="+16"/>
+        <location line="+17"/>
         <source>every slave (broadcast)</source>
         <translation>tutti gli slave (broadcast)</translation>
     </message>

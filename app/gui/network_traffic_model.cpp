@@ -30,6 +30,16 @@ void NetworkTrafficModel::clear() {
     endResetModel();
 }
 
+void NetworkTrafficModel::retranslate() {
+    if (m_decoder && !m_rows.empty()) {
+        m_decoder->reset();
+        for (Row &row : m_rows)
+            row.frame = m_decoder->decode(row.record);
+        emit dataChanged(index(0, 0), index(int(m_rows.size()) - 1, ColumnCount - 1));
+    }
+    emit headerDataChanged(Qt::Horizontal, 0, ColumnCount - 1);
+}
+
 void NetworkTrafficModel::setMaxRows(int rows) {
     m_maxRows = std::max(1, rows);
     if (int(m_rows.size()) > m_maxRows)

@@ -52,6 +52,9 @@ public:
     // Decodes the records in order and adds them; beyond maxRows() the oldest rows go.
     void append(std::vector<network::TrafficRecord> records);
     void clear();
+    // Decodes the rows kept again, in the language now installed (a language switch); the
+    // notes stay as the network wrote them.
+    void retranslate();
 
     void setMaxRows(int rows);
     int maxRows() const { return m_maxRows; }

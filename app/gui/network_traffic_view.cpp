@@ -8,6 +8,7 @@
 #include <QCheckBox>
 #include <QComboBox>
 #include <QDir>
+#include <QEvent>
 #include <QFileInfo>
 #include <QHBoxLayout>
 #include <QHeaderView>
@@ -65,33 +66,29 @@ NetworkTrafficView::NetworkTrafficView(QWidget *parent)
     , m_filter(new NetworkTrafficFilter(this))
     , m_wire(new QComboBox(this))
     , m_station(new QComboBox(this))
-    , m_errorsOnly(new QCheckBox(tr("&Errors only"), this))
+    , m_errorsOnly(new QCheckBox(this))
+    , m_wireLabel(new QLabel(this))
+    , m_stationLabel(new QLabel(this))
     , m_status(new QLabel(this))
-    , m_save(new QPushButton(tr("&Save..."), this))
+    , m_save(new QPushButton(this))
     , m_table(new QTableView(this)) {
     m_filter->setSourceModel(m_model);
     m_wire->setObjectName(QStringLiteral("trafficWire"));
     m_station->setObjectName(QStringLiteral("trafficStation"));
     m_errorsOnly->setObjectName(QStringLiteral("trafficErrorsOnly"));
-    m_errorsOnly->setToolTip(
-        tr("Only the frames with an error code, a problem (a wrong sum or CRC, a frame cut "
-           "short) or a fault's note"));
     m_save->setObjectName(QStringLiteral("trafficSave"));
-    m_save->setToolTip(tr("Save the frames shown as CSV or as text"));
     m_status->setObjectName(QStringLiteral("trafficStatus"));
     m_table->setObjectName(QStringLiteral("trafficTable"));
     m_wire->setSizeAdjustPolicy(QComboBox::AdjustToContents);
     m_station->setSizeAdjustPolicy(QComboBox::AdjustToContents);
 
-    auto *wireLabel = new QLabel(tr("&Wire:"), this);
-    wireLabel->setBuddy(m_wire);
-    auto *stationLabel = new QLabel(tr("S&tation:"), this);
-    stationLabel->setBuddy(m_station);
+    m_wireLabel->setBuddy(m_wire);
+    m_stationLabel->setBuddy(m_station);
     auto *bar = new QHBoxLayout;
-    bar->addWidget(wireLabel);
+    bar->addWidget(m_wireLabel);
     bar->addWidget(m_wire);
     bar->addSpacing(8);
-    bar->addWidget(stationLabel);
+    bar->addWidget(m_stationLabel);
     bar->addWidget(m_station);
     bar->addSpacing(8);
     bar->addWidget(m_errorsOnly);
@@ -130,8 +127,9 @@ NetworkTrafficView::NetworkTrafficView(QWidget *parent)
     layout->addLayout(bar);
     layout->addWidget(m_table, 1);
 
-    m_wire->addItem(tr("All wires"), QString());
-    m_station->addItem(tr("All stations"), QString());
+    m_wire->addItem(QString(), QString());
+    m_station->addItem(QString(), QString());
+    retranslate();
 
     connect(m_wire, &QComboBox::currentIndexChanged, this, &NetworkTrafficView::chooserChanged);
     connect(m_station, &QComboBox::currentIndexChanged, this, &NetworkTrafficView::chooserChanged);
@@ -157,17 +155,41 @@ NetworkTrafficView::NetworkTrafficView(QWidget *parent)
 
 NetworkTrafficView::~NetworkTrafficView() = default;
 
+void NetworkTrafficView::retranslate() {
+    m_wireLabel->setText(tr("&Wire:"));
+    m_stationLabel->setText(tr("S&tation:"));
+    m_errorsOnly->setText(tr("&Errors only"));
+    m_errorsOnly->setToolTip(
+        tr("Only the frames with an error code, a problem (a wrong sum or CRC, a frame cut "
+           "short) or a fault's note"));
+    m_save->setText(tr("&Save..."));
+    m_save->setToolTip(tr("Save the frames shown as CSV or as text"));
+    m_wire->setItemText(0, tr("All wires"));
+    m_station->setItemText(0, tr("All stations"));
+    updateStatus();
+}
+
+void NetworkTrafficView::changeEvent(QEvent *event) {
+    if (event->type() == QEvent::LanguageChange) {
+        retranslate();
+        m_model->retranslate();
+    }
+    QWidget::changeEvent(event);
+}
+
 void NetworkTrafficView::setNetwork(const network::Network &network, const QString &file) {
     m_file = file.isEmpty() ? network.description().file : file;
     m_model->setNetwork(network);
     const QSignalBlocker wireBlock(m_wire);
     const QSignalBlocker stationBlock(m_station);
-    m_wire->clear();
-    m_wire->addItem(tr("All wires"), QString());
+    while (m_wire->count() > 1)
+        m_wire->removeItem(1);
     for (const auto &wire : network.wires())
         m_wire->addItem(wire->name, wire->name);
-    m_station->clear();
-    m_station->addItem(tr("All stations"), QString());
+    while (m_station->count() > 1)
+        m_station->removeItem(1);
+    m_wire->setCurrentIndex(0);
+    m_station->setCurrentIndex(0);
     for (const auto &station : network.stations())
         m_station->addItem(station->name(), station->name());
     for (const network::DeviceDescription &device : network.description().devices)

@@ -54,12 +54,16 @@ public:
     bool saveCsv(const QString &path, QString *error) const;
     bool saveText(const QString &path, QString *error) const;
 
+protected:
+    void changeEvent(QEvent *event) override;
+
 signals:
     // The user chose a frame: its start on the virtual clock, for the timing chart's cursor.
     void frameChosen(qint64 startUs);
 
 private:
     void save();
+    void retranslate();
     void updateStatus();
     void chooserChanged();
 
@@ -68,6 +72,8 @@ private:
     QComboBox *m_wire;
     QComboBox *m_station;
     QCheckBox *m_errorsOnly;
+    QLabel *m_wireLabel;
+    QLabel *m_stationLabel;
     QLabel *m_status;
     QPushButton *m_save;
     QTableView *m_table;

@@ -5,11 +5,13 @@
 // and text saved to real files and read back.
 
 #include "app/cli/cli_network.h"
+#include "app/gui/language.h"
 #include "app/gui/network_traffic_model.h"
 #include "app/gui/network_traffic_view.h"
 #include "network/traffic.h"
 
 #include "tests/editor/model_tester.h"
+#include "tests/eventually.h"
 
 #include <QCheckBox>
 #include <QComboBox>
@@ -290,4 +292,37 @@ TEST(NetworkTrafficView, SavesCsvAndTextThatReadBack) {
     // A folder that is not there: a clear error, no file.
     EXPECT_FALSE(view.saveCsv(dir.filePath(QStringLiteral("no/such/folder/t.csv")), &error));
     EXPECT_NE(error.indexOf(QStringLiteral("Cannot write")), -1) << error.toStdString();
+}
+
+// Language > Magyar while frames are shown: the choosers, the column titles and the decoded
+// cells follow; back to English, they read as before.
+TEST(NetworkTrafficView, FollowsALanguageSwitch) {
+    TrafficRun run = runExample(QStringLiteral("modbus/modbus.rungnet"), 300);
+    ASSERT_TRUE(run.net) << run.error.toStdString();
+    NetworkTrafficView view;
+    view.setNetwork(*run.net);
+    view.append(run.records);
+    QAbstractItemModel *shown = view.table()->model();
+    const QString english = shown->index(0, NetworkTrafficModel::Command).data().toString();
+    ASSERT_NE(english.indexOf(QStringLiteral("read holding registers")), -1)
+        << english.toStdString();
+    ASSERT_TRUE(app::setLanguage(QStringLiteral("hu"), false));
+    // The switch reaches the widgets as a posted LanguageChange.
+    auto *errorsOnly = view.findChild<QCheckBox *>(QStringLiteral("trafficErrorsOnly"));
+    ASSERT_TRUE(rung::waits::eventually(
+        [&] { return errorsOnly->text() == QStringLiteral("Csak &hibák"); }));
+    EXPECT_EQ(shown->headerData(NetworkTrafficModel::Wire, Qt::Horizontal).toString().toStdString(),
+              "Vezeték");
+    EXPECT_NE(shown->index(0, NetworkTrafficModel::Command)
+                  .data()
+                  .toString()
+                  .indexOf(QStringLiteral("tartóregiszterek olvasása")),
+              -1);
+    EXPECT_EQ(view.findChild<QComboBox *>(QStringLiteral("trafficWire"))->itemText(0).toStdString(),
+              "Minden vezeték");
+    app::setLanguage(QStringLiteral("en"), false);
+    ASSERT_TRUE(rung::waits::eventually(
+        [&] { return errorsOnly->text() == QStringLiteral("&Errors only"); }));
+    EXPECT_EQ(shown->index(0, NetworkTrafficModel::Command).data().toString(), english);
+    EXPECT_EQ(shown->rowCount(), int(run.records.size()));
 }
