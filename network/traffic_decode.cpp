@@ -468,8 +468,12 @@ DecodedFrame TrafficDecoder::decodeModbusRequest(const End &from, const QByteArr
         } else {
             f.problem = truncatedText(bytes.size());
         }
-        if (!ascii && !bytes.isEmpty())
+        // The unit is the first byte: whom the frame was for, though it does not read.
+        if (!ascii && !bytes.isEmpty()) {
             f.station = quint8(bytes[0]);
+            if (const End *slave = slaveOn(wire, Speaks::Modbus, f.station))
+                f.receiver = slave->name;
+        }
         return f;
     }
     const mb::ParsedRequest parsed = decoder.parsed(); // next() below starts the decoder over

@@ -110,17 +110,10 @@ NetworkTrafficView::NetworkTrafficView(QWidget *parent)
     header->setSectionResizeMode(QHeaderView::Interactive);
     header->setStretchLastSection(true);
     header->setHighlightSections(false);
-    const int em = m_table->fontMetrics().horizontalAdvance(QLatin1Char('M'));
-    const std::pair<int, int> widths[] = {
-        {NetworkTrafficModel::Time, 7},     {NetworkTrafficModel::Wire, 4},
-        {NetworkTrafficModel::Sender, 7},   {NetworkTrafficModel::Receiver, 7},
-        {NetworkTrafficModel::Protocol, 7}, {NetworkTrafficModel::Station, 4},
-        {NetworkTrafficModel::Command, 12}, {NetworkTrafficModel::Address, 8},
-        {NetworkTrafficModel::Count, 4},    {NetworkTrafficModel::Data, 10},
-        {NetworkTrafficModel::Error, 12},   {NetworkTrafficModel::Note, 8},
-    };
-    for (const auto &[column, ems] : widths)
-        m_table->setColumnWidth(column, ems * em);
+    // The table samples its first rows for the columns' widths (fitColumns); the long
+    // texts (data, error, note) stop at a width that leaves the bytes in sight.
+    m_table->horizontalHeader()->setResizeContentsPrecision(200);
+    fitColumns();
 
     auto *layout = new QVBoxLayout(this);
     layout->setContentsMargins(4, 4, 4, 4);
@@ -173,6 +166,7 @@ void NetworkTrafficView::changeEvent(QEvent *event) {
     if (event->type() == QEvent::LanguageChange) {
         retranslate();
         m_model->retranslate();
+        fitColumns();
     }
     QWidget::changeEvent(event);
 }
@@ -200,7 +194,23 @@ void NetworkTrafficView::setNetwork(const network::Network &network, const QStri
 }
 
 void NetworkTrafficView::append(std::vector<network::TrafficRecord> records) {
+    const bool first = m_model->rowCount() == 0;
     m_model->append(std::move(records));
+    if (first && m_model->rowCount() > 0)
+        fitColumns();
+}
+
+void NetworkTrafficView::fitColumns() {
+    m_table->resizeColumnsToContents();
+    const int em = m_table->fontMetrics().horizontalAdvance(QLatin1Char('M'));
+    for (int column :
+         {NetworkTrafficModel::Sender, NetworkTrafficModel::Receiver, NetworkTrafficModel::Address})
+        m_table->setColumnWidth(column, std::min(m_table->columnWidth(column), 14 * em));
+    m_table->setColumnWidth(NetworkTrafficModel::Command,
+                            std::min(m_table->columnWidth(NetworkTrafficModel::Command), 20 * em));
+    for (int column :
+         {NetworkTrafficModel::Data, NetworkTrafficModel::Error, NetworkTrafficModel::Note})
+        m_table->setColumnWidth(column, std::clamp(m_table->columnWidth(column), 5 * em, 12 * em));
 }
 
 void NetworkTrafficView::clear() {

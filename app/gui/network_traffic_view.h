@@ -64,6 +64,7 @@ signals:
 private:
     void save();
     void retranslate();
+    void fitColumns();
     void updateStatus();
     void chooserChanged();
 
