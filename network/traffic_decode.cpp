@@ -304,7 +304,10 @@ DecodedFrame TrafficDecoder::decode(const TrafficRecord &record) {
         // A Computer Link frame (STX .. ETX sum) for a station on the wire is shown as one even
         // when it is wrong (a wrong sum); MODBUS has no start character to tell it from text.
         const auto keep = [&](Speaks speaks, auto decodeRequest) -> std::optional<DecodedFrame> {
-            for (const QString &name : m_wires[wire]) {
+            const auto ends = m_wires.find(wire);
+            if (ends == m_wires.end())
+                return std::nullopt;
+            for (const QString &name : ends->second) {
                 const End *e = end(name);
                 if (!e || e == from || e->speaks != speaks || !e->answers)
                     continue;

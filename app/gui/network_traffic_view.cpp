@@ -37,7 +37,10 @@ public:
         m_wire = wire;
         m_station = station;
         m_errorsOnly = errorsOnly;
-        invalidateRowsFilter();
+        // One new mapping and one layoutChanged: invalidateRowsFilter() would remove the rows
+        // range by range, a signal each, and a filter that keeps every other of 100,000 rows
+        // took the header seconds to follow.
+        invalidate();
     }
     QString wire() const { return m_wire; }
     QString station() const { return m_station; }

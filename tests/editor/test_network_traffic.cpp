@@ -326,3 +326,42 @@ TEST(NetworkTrafficView, FollowsALanguageSwitch) {
     EXPECT_EQ(shown->index(0, NetworkTrafficModel::Command).data().toString(), english);
     EXPECT_EQ(shown->rowCount(), int(run.records.size()));
 }
+
+// A long run: 100,500 frames in batches of 500, as a dock receives them. The view keeps the
+// newest 100,000 in one table (no widget per row), says how many it let go, and a filter over
+// all of them still answers.
+TEST(NetworkTrafficView, KeepsTheNewestFramesOfALongRunWithinItsCap) {
+    TrafficRun run = runExample(QStringLiteral("modbus/modbus.rungnet"), 1000);
+    ASSERT_TRUE(run.net) << run.error.toStdString();
+    ASSERT_GE(run.records.size(), 50u);
+    NetworkTrafficView view;
+    view.resize(1366, 500);
+    view.setNetwork(*run.net);
+    view.show();
+    const int total = NetworkTrafficModel::DefaultMaxRows + 500;
+    const qint64 period = run.records.back().endUs;
+    std::vector<network::TrafficRecord> batch;
+    for (int i = 0; i < total; ++i) {
+        network::TrafficRecord r = run.records[std::size_t(i) % run.records.size()];
+        const qint64 shift = qint64(i / int(run.records.size())) * period;
+        r.startUs += shift;
+        r.endUs += shift;
+        batch.push_back(std::move(r));
+        if (batch.size() == 500)
+            view.append(std::exchange(batch, {}));
+    }
+    view.append(std::move(batch));
+    NetworkTrafficModel *model = view.model();
+    EXPECT_EQ(model->rowCount(), NetworkTrafficModel::DefaultMaxRows);
+    EXPECT_EQ(model->droppedRows(), 500);
+    EXPECT_EQ(view.shownRows(), NetworkTrafficModel::DefaultMaxRows);
+    EXPECT_TRUE(view.findChildren<QCheckBox *>().size() == 1); // the filter's, none per row
+    const QString status = view.findChild<QLabel *>(QStringLiteral("trafficStatus"))->text();
+    EXPECT_NE(status.indexOf(QStringLiteral("500 older frames were let go")), -1)
+        << status.toStdString();
+    // The rows read as the decoder reads them: the last one is the newest frame.
+    EXPECT_FALSE(model->decoded(model->rowCount() - 1).failed());
+    view.setStationFilter(QStringLiteral("s2"));
+    EXPECT_GT(view.shownRows(), 0);
+    EXPECT_LT(view.shownRows(), NetworkTrafficModel::DefaultMaxRows);
+}
