@@ -225,6 +225,19 @@ void TrafficDecoder::reset() {
     m_pending.clear();
 }
 
+QString TrafficDecoder::noReplyText() {
+    return TrafficDecodeTr::tr("no reply came before the next request (a time-out)");
+}
+
+bool TrafficDecoder::takeUnanswered(const QString &wire) {
+    const auto it = m_pending.find(wire);
+    if (it == m_pending.end())
+        return false;
+    const bool waiting = it->second->slave != nullptr;
+    m_pending.erase(it);
+    return waiting;
+}
+
 const TrafficDecoder::End *TrafficDecoder::end(const QString &name) const {
     const auto it = m_ends.find(name);
     return it == m_ends.end() ? nullptr : &it->second;
@@ -287,15 +300,24 @@ DecodedFrame TrafficDecoder::decode(const TrafficRecord &record) {
     const QByteArray &bytes = record.bytes;
     const auto pending = m_pending.find(wire);
     const bool askedHere = pending != m_pending.end() && pending->second->slave == from;
+    // A frame a fault kept off the wire answered nobody: the request before it still waits.
+    std::unique_ptr<Pending> waiting;
+    if (!record.delivered && pending != m_pending.end())
+        waiting = std::make_unique<Pending>(*pending->second);
+    const auto restore = [&](DecodedFrame f) {
+        if (waiting && f.kind == DecodedFrame::Kind::Reply)
+            m_pending[wire] = std::move(waiting);
+        return f;
+    };
     if (from->speaks == Speaks::VigorLink && !from->programDriven) {
         if (bytes.front() == vg::Stx || (bytes.front() != vg::Ack && from->master))
             return decodeVigorRequest(*from, bytes, wire);
-        return decodeVigorReply(*from, bytes, wire);
+        return restore(decodeVigorReply(*from, bytes, wire));
     }
     if (from->speaks == Speaks::Modbus && (!from->programDriven || askedHere)) {
         if (from->master)
             return decodeModbusRequest(*from, bytes, from->modbusAscii, wire);
-        return decodeModbusReply(*from, bytes, from->modbusAscii, wire);
+        return restore(decodeModbusReply(*from, bytes, from->modbusAscii, wire));
     }
     // A program that builds a protocol's request itself (RS, a VB-1COM: Vigor M/VB/VH
     // communication manual, B-3-9 and B-4-5 speak Computer Link so) is read as one when a
@@ -338,7 +360,7 @@ DecodedFrame TrafficDecoder::decodeVigorRequest(const End &from, const QByteArra
     f.protocol = TrafficDecodeTr::tr("Computer Link");
     vg::RequestDecoder decoder;
     decoder.feed(bytes);
-    m_pending.erase(wire);
+    f.previousUnanswered = takeUnanswered(wire);
     if (decoder.status() != comms::FrameStatus::Complete) {
         f.problem = !decoder.discarded().ok() ? decoder.discarded().message
                     : bytes.front() != vg::Stx
@@ -453,7 +475,7 @@ DecodedFrame TrafficDecoder::decodeModbusRequest(const End &from, const QByteArr
     DecodedFrame f;
     f.kind = DecodedFrame::Kind::Request;
     f.protocol = ascii ? TrafficDecodeTr::tr("MODBUS ASCII") : TrafficDecodeTr::tr("MODBUS RTU");
-    m_pending.erase(wire);
+    f.previousUnanswered = takeUnanswered(wire);
     mb::RequestDecoder decoder(ascii ? mb::Framing::Ascii : mb::Framing::Rtu);
     decoder.feed(bytes);
     if (decoder.status() == comms::FrameStatus::NeedMore && !ascii)

@@ -45,6 +45,9 @@ struct DecodedFrame {
     int errorCode = -1;  // the PLC's error / exception code; -1: none
     QString errorText;   // translated: "illegal data address (exception 02h)"
     QString problem;     // translated: what is wrong with the frame; empty when it reads
+    // A request that comes while the last request on its wire is still unanswered: that one
+    // got no reply (a time-out, a silent or absent slave). The request itself is fine.
+    bool previousUnanswered = false;
 
     bool failed() const { return errorCode >= 0 || !problem.isEmpty(); }
 };
@@ -61,6 +64,9 @@ public:
     DecodedFrame decode(const TrafficRecord &record);
     // Forgets the requests in flight (the traffic starts over: the network was rebuilt).
     void reset();
+
+    // The problem of a request whose reply never came (DecodedFrame::previousUnanswered).
+    static QString noReplyText();
 
     // The station or device an end belongs to ("master" for "master/CP2").
     QString ownerOf(const QString &end) const;
@@ -85,6 +91,8 @@ public:
 private:
     struct Pending; // the last request on a wire
     const End *end(const QString &name) const;
+    // Forgets the wire's last request; true when it was waiting for a slave's reply.
+    bool takeUnanswered(const QString &wire);
     DecodedFrame decodeVigorRequest(const End &from, const QByteArray &bytes, const QString &wire);
     DecodedFrame decodeVigorReply(const End &from, const QByteArray &bytes, const QString &wire);
     DecodedFrame decodeModbusRequest(const End &from, const QByteArray &bytes, bool ascii,

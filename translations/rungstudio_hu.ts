@@ -2085,7 +2085,7 @@ Ctrl+Z / Ctrl+Y: visszavonás / mégis, Ctrl+görgő: nagyítás, F4: a program 
 <context>
     <name>rung::app::NetworkTrafficModel</name>
     <message>
-        <location filename="../app/gui/network_traffic_model.cpp" line="+161"/>
+        <location filename="../app/gui/network_traffic_model.cpp" line="+204"/>
         <source>Request: %1</source>
         <translation>Kérés: %1</translation>
     </message>
@@ -2193,7 +2193,7 @@ Ctrl+Z / Ctrl+Y: visszavonás / mégis, Ctrl+görgő: nagyítás, F4: a program 
 <context>
     <name>rung::app::NetworkTrafficView</name>
     <message>
-        <location filename="../app/gui/network_traffic_view.cpp" line="+161"/>
+        <location filename="../app/gui/network_traffic_view.cpp" line="+157"/>
         <source>&amp;Errors only</source>
         <translation>Csak &amp;hibák</translation>
     </message>
@@ -2233,7 +2233,7 @@ Ctrl+Z / Ctrl+Y: visszavonás / mégis, Ctrl+görgő: nagyítás, F4: a program 
         <translation>Minden állomás</translation>
     </message>
     <message numerus="yes">
-        <location line="+70"/>
+        <location line="+87"/>
         <source>%n frame(s)</source>
         <translation>
             <numerusform>%n keret</numerusform>
@@ -9489,12 +9489,12 @@ Kiértékelés: %4 µs (%5..%6)</translation>
         <translation>néma (hiba): nem ment ki</translation>
     </message>
     <message>
-        <location line="+5"/>
+        <location line="+6"/>
         <source>the port is on no wire</source>
         <translation>a port nincs vezetéken</translation>
     </message>
     <message>
-        <location line="+12"/>
+        <location line="+13"/>
         <source>byte %1 corrupted (fault): XOR %2h</source>
         <translation>a(z) %1. bájt elrontva (hiba): XOR %2h</translation>
     </message>
@@ -9504,7 +9504,7 @@ Kiértékelés: %4 µs (%5..%6)</translation>
         <translation>elvágott vezeték (hiba): nem érkezett meg</translation>
     </message>
     <message>
-        <location line="+11"/>
+        <location line="+12"/>
         <source>collision with %1: both frames garbled</source>
         <translation>ütközés ezzel: %1; mindkét keret sérült</translation>
     </message>
@@ -9955,7 +9955,12 @@ Kiértékelés: %4 µs (%5..%6)</translation>
         <translation>valódi vonal</translation>
     </message>
     <message>
-        <location line="+53"/>
+        <location line="+16"/>
+        <source>no reply came before the next request (a time-out)</source>
+        <translation>nem jött válasz a következő kérés előtt (időtúllépés)</translation>
+    </message>
+    <message>
+        <location line="+50"/>
         <source>bytes</source>
         <translation>bájtok</translation>
     </message>
@@ -9965,7 +9970,7 @@ Kiértékelés: %4 µs (%5..%6)</translation>
         <translation>free-port</translation>
     </message>
     <message>
-        <location line="+68"/>
+        <location line="+80"/>
         <location line="+62"/>
         <source>Computer Link</source>
         <translation>Computer Link</translation>
@@ -9987,23 +9992,23 @@ Kiértékelés: %4 µs (%5..%6)</translation>
     </message>
     <message>
         <location line="+88"/>
-        <location line="+70"/>
+        <location line="+74"/>
         <source>MODBUS ASCII</source>
         <translation>MODBUS ASCII</translation>
     </message>
     <message>
-        <location line="-70"/>
-        <location line="+70"/>
+        <location line="-74"/>
+        <location line="+74"/>
         <source>MODBUS RTU</source>
         <translation>MODBUS RTU</translation>
     </message>
     <message>
-        <location line="-57"/>
+        <location line="-61"/>
         <source>wrong CRC (received %1, computed %2): the slave answers nothing</source>
         <translation>hibás CRC (érkezett: %1, számított: %2): a slave nem válaszol</translation>
     </message>
     <message>
-        <location line="+17"/>
+        <location line="+21"/>
         <source>every slave (broadcast)</source>
         <translation>minden slave (körüzenet)</translation>
     </message>

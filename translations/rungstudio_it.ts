@@ -2092,7 +2092,7 @@ Ctrl+Z / Ctrl+Y: annulla / ripeti, Ctrl+rotellina: zoom, F4: verifica il program
 <context>
     <name>rung::app::NetworkTrafficModel</name>
     <message>
-        <location filename="../app/gui/network_traffic_model.cpp" line="+161"/>
+        <location filename="../app/gui/network_traffic_model.cpp" line="+204"/>
         <source>Request: %1</source>
         <translation>Richiesta: %1</translation>
     </message>
@@ -2200,7 +2200,7 @@ Ctrl+Z / Ctrl+Y: annulla / ripeti, Ctrl+rotellina: zoom, F4: verifica il program
 <context>
     <name>rung::app::NetworkTrafficView</name>
     <message>
-        <location filename="../app/gui/network_traffic_view.cpp" line="+161"/>
+        <location filename="../app/gui/network_traffic_view.cpp" line="+157"/>
         <source>&amp;Errors only</source>
         <translation>Solo &amp;errori</translation>
     </message>
@@ -2240,7 +2240,7 @@ Ctrl+Z / Ctrl+Y: annulla / ripeti, Ctrl+rotellina: zoom, F4: verifica il program
         <translation>Tutte le stazioni</translation>
     </message>
     <message numerus="yes">
-        <location line="+70"/>
+        <location line="+87"/>
         <source>%n frame(s)</source>
         <translation>
             <numerusform>%n frame</numerusform>
@@ -9511,12 +9511,12 @@ Valutazione: %4 µs (%5..%6)</translation>
         <translation>muto (guasto): non inviato</translation>
     </message>
     <message>
-        <location line="+5"/>
+        <location line="+6"/>
         <source>the port is on no wire</source>
         <translation>la porta non è su alcun cavo</translation>
     </message>
     <message>
-        <location line="+12"/>
+        <location line="+13"/>
         <source>byte %1 corrupted (fault): XOR %2h</source>
         <translation>byte %1 alterato (guasto): XOR %2h</translation>
     </message>
@@ -9526,7 +9526,7 @@ Valutazione: %4 µs (%5..%6)</translation>
         <translation>cavo tagliato (guasto): non consegnato</translation>
     </message>
     <message>
-        <location line="+11"/>
+        <location line="+12"/>
         <source>collision with %1: both frames garbled</source>
         <translation>collisione con %1: entrambi i frame alterati</translation>
     </message>
@@ -9979,7 +9979,12 @@ Valutazione: %4 µs (%5..%6)</translation>
         <translation>linea reale</translation>
     </message>
     <message>
-        <location line="+53"/>
+        <location line="+16"/>
+        <source>no reply came before the next request (a time-out)</source>
+        <translation>nessuna risposta prima della richiesta successiva (timeout)</translation>
+    </message>
+    <message>
+        <location line="+50"/>
         <source>bytes</source>
         <translation>byte</translation>
     </message>
@@ -9989,7 +9994,7 @@ Valutazione: %4 µs (%5..%6)</translation>
         <translation>free-port</translation>
     </message>
     <message>
-        <location line="+68"/>
+        <location line="+80"/>
         <location line="+62"/>
         <source>Computer Link</source>
         <translation>Computer Link</translation>
@@ -10011,23 +10016,23 @@ Valutazione: %4 µs (%5..%6)</translation>
     </message>
     <message>
         <location line="+88"/>
-        <location line="+70"/>
+        <location line="+74"/>
         <source>MODBUS ASCII</source>
         <translation>MODBUS ASCII</translation>
     </message>
     <message>
-        <location line="-70"/>
-        <location line="+70"/>
+        <location line="-74"/>
+        <location line="+74"/>
         <source>MODBUS RTU</source>
         <translation>MODBUS RTU</translation>
     </message>
     <message>
-        <location line="-57"/>
+        <location line="-61"/>
         <source>wrong CRC (received %1, computed %2): the slave answers nothing</source>
         <translation>CRC errato (ricevuto %1, calcolato %2): lo slave non risponde</translation>
     </message>
     <message>
-        <location line="+17"/>
+        <location line="+21"/>
         <source>every slave (broadcast)</source>
         <translation>tutti gli slave (broadcast)</translation>
     </message>

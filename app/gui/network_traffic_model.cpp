@@ -18,6 +18,8 @@ void NetworkTrafficModel::setNetwork(const network::Network &network) {
     m_decoder = std::make_unique<network::TrafficDecoder>(network);
     m_rows.clear();
     m_dropped = 0;
+    m_firstId = 0;
+    m_lastRequest.clear();
     endResetModel();
 }
 
@@ -25,6 +27,8 @@ void NetworkTrafficModel::clear() {
     beginResetModel();
     m_rows.clear();
     m_dropped = 0;
+    m_firstId = 0;
+    m_lastRequest.clear();
     if (m_decoder)
         m_decoder->reset();
     endResetModel();
@@ -33,8 +37,17 @@ void NetworkTrafficModel::clear() {
 void NetworkTrafficModel::retranslate() {
     if (m_decoder && !m_rows.empty()) {
         m_decoder->reset();
-        for (Row &row : m_rows)
+        std::map<QString, std::size_t> last;
+        for (std::size_t i = 0; i < m_rows.size(); ++i) {
+            Row &row = m_rows[i];
             row.frame = m_decoder->decode(row.record);
+            const auto it = last.find(row.record.wire);
+            if (row.frame.previousUnanswered && it != last.end() &&
+                m_rows[it->second].frame.problem.isEmpty())
+                m_rows[it->second].frame.problem = network::TrafficDecoder::noReplyText();
+            if (row.frame.kind == DecodedFrame::Kind::Request)
+                last[row.record.wire] = i;
+        }
         emit dataChanged(index(0, 0), index(int(m_rows.size()) - 1, ColumnCount - 1));
     }
     emit headerDataChanged(Qt::Horizontal, 0, ColumnCount - 1);
@@ -50,8 +63,21 @@ void NetworkTrafficModel::dropOldest(int rows) {
     beginRemoveRows({}, 0, rows - 1);
     m_rows.erase(m_rows.begin(), m_rows.begin() + rows);
     endRemoveRows();
+    m_firstId += rows;
     m_dropped += rows;
     emit rowsDropped(m_dropped);
+}
+
+NetworkTrafficModel::Row NetworkTrafficModel::decodeRow(network::TrafficRecord record) const {
+    Row row;
+    row.frame = m_decoder ? m_decoder->decode(record) : DecodedFrame{};
+    row.owners << (m_decoder ? m_decoder->ownerOf(record.sender) : record.sender);
+    for (const QString &end : row.frame.receiver.split(QStringLiteral(", "), Qt::SkipEmptyParts))
+        if (const QString owner = m_decoder ? m_decoder->ownerOf(end) : end;
+            !row.owners.contains(owner))
+            row.owners << owner;
+    row.record = std::move(record);
+    return row;
 }
 
 void NetworkTrafficModel::append(std::vector<network::TrafficRecord> records) {
@@ -59,20 +85,29 @@ void NetworkTrafficModel::append(std::vector<network::TrafficRecord> records) {
         return;
     // Every record is decoded, in order, even those the cap lets go at once: a reply is read
     // against the request before it.
+    const qint64 firstNew = m_firstId + qint64(m_rows.size());
     std::vector<Row> rows;
     rows.reserve(records.size());
+    std::vector<qint64> marked; // rows already shown that turned out unanswered
+    const auto markUnanswered = [](DecodedFrame &f) {
+        if (f.problem.isEmpty())
+            f.problem = network::TrafficDecoder::noReplyText();
+    };
     for (network::TrafficRecord &r : records) {
-        Row row;
-        row.frame = m_decoder ? m_decoder->decode(r) : DecodedFrame{};
-        const QString sender = m_decoder ? m_decoder->ownerOf(r.sender) : r.sender;
-        row.owners << sender;
-        for (const QString &end :
-             row.frame.receiver.split(QStringLiteral(", "), Qt::SkipEmptyParts))
-            if (const QString owner = m_decoder ? m_decoder->ownerOf(end) : end;
-                !row.owners.contains(owner))
-                row.owners << owner;
-        row.record = std::move(r);
-        rows.push_back(std::move(row));
+        const qint64 id = firstNew + qint64(rows.size());
+        rows.push_back(decodeRow(std::move(r)));
+        const Row &row = rows.back();
+        const auto last = m_lastRequest.find(row.record.wire);
+        if (row.frame.previousUnanswered && last != m_lastRequest.end()) {
+            if (last->second >= firstNew) {
+                markUnanswered(rows[std::size_t(last->second - firstNew)].frame);
+            } else if (last->second >= m_firstId) {
+                markUnanswered(m_rows[std::size_t(last->second - m_firstId)].frame);
+                marked.push_back(last->second);
+            }
+        }
+        if (row.frame.kind == DecodedFrame::Kind::Request)
+            m_lastRequest[row.record.wire] = id;
     }
     const qint64 excessNew = qint64(rows.size()) - m_maxRows;
     if (excessNew > 0) {
@@ -84,6 +119,13 @@ void NetworkTrafficModel::append(std::vector<network::TrafficRecord> records) {
         dropOldest(overflow); // emits with the new rows let go counted too
     else if (excessNew > 0)
         emit rowsDropped(m_dropped);
+    if (excessNew > 0)
+        m_firstId += excessNew; // every old row went too: the first kept is a new one
+    for (qint64 id : marked)
+        if (id >= m_firstId && id < m_firstId + qint64(m_rows.size())) {
+            const int row = int(id - m_firstId);
+            emit dataChanged(index(row, 0), index(row, ColumnCount - 1));
+        }
     const int first = int(m_rows.size());
     beginInsertRows({}, first, first + int(rows.size()) - 1);
     for (Row &row : rows)

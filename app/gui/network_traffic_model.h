@@ -10,6 +10,7 @@
 #include <QAbstractTableModel>
 
 #include <deque>
+#include <map>
 #include <memory>
 #include <vector>
 
@@ -86,6 +87,12 @@ private:
         QStringList owners;
     };
     void dropOldest(int rows);
+    Row decodeRow(network::TrafficRecord record) const;
+
+    // Rows are numbered from the start (an id); m_firstId is the first kept row's. The last
+    // request of each wire, by id: a request that comes while it is unanswered marks it.
+    qint64 m_firstId = 0;
+    std::map<QString, qint64> m_lastRequest;
 
     std::unique_ptr<network::TrafficDecoder> m_decoder;
     std::deque<Row> m_rows;

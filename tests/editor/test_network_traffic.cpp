@@ -9,6 +9,7 @@
 #include "app/gui/network_traffic_model.h"
 #include "app/gui/network_traffic_view.h"
 #include "network/traffic.h"
+#include "network/traffic_decode.h"
 
 #include "tests/editor/model_tester.h"
 #include "tests/eventually.h"
@@ -364,4 +365,40 @@ TEST(NetworkTrafficView, KeepsTheNewestFramesOfALongRunWithinItsCap) {
     view.setStationFilter(QStringLiteral("s2"));
     EXPECT_GT(view.shownRows(), 0);
     EXPECT_LT(view.shownRows(), NetworkTrafficModel::DefaultMaxRows);
+}
+
+// A slave that stays silent: the master's requests to it are marked in the table once the next
+// request shows that no reply came, and "Errors only" finds them.
+TEST(NetworkTrafficView, MarksTheRequestsThatGotNoReply) {
+    network::FaultDescription silent;
+    silent.kind = network::FaultDescription::Kind::Silent;
+    silent.station = QStringLiteral("s1");
+    TrafficRun run = runExample(QStringLiteral("modbus/modbus.rungnet"), 2000, silent);
+    ASSERT_TRUE(run.net) << run.error.toStdString();
+    NetworkTrafficView view;
+    view.setNetwork(*run.net);
+    // Batches of 3: a request and the request that shows it unanswered often fall apart.
+    for (std::size_t i = 0; i < run.records.size(); i += 3)
+        view.append({run.records.begin() + std::ptrdiff_t(i),
+                     run.records.begin() + std::ptrdiff_t(std::min(i + 3, run.records.size()))});
+    view.setErrorsOnly(true);
+    QAbstractItemModel *shown = view.table()->model();
+    int noReply = 0;
+    for (int row = 0; row < shown->rowCount(); ++row) {
+        const QString error = shown->index(row, NetworkTrafficModel::Error).data().toString();
+        if (error != network::TrafficDecoder::noReplyText())
+            continue;
+        ++noReply;
+        EXPECT_EQ(shown->index(row, NetworkTrafficModel::Receiver).data().toString().toStdString(),
+                  "s1/CP2");
+        EXPECT_EQ(shown->index(row, NetworkTrafficModel::Sender).data().toString().toStdString(),
+                  "master/CP2");
+    }
+    EXPECT_GT(noReply, 0);
+    // s2 answers: none of its requests is marked.
+    view.setErrorsOnly(false);
+    view.setStationFilter(QStringLiteral("s2"));
+    for (int row = 0; row < shown->rowCount(); ++row)
+        EXPECT_EQ(shown->index(row, NetworkTrafficModel::Error).data().toString().toStdString(),
+                  "");
 }

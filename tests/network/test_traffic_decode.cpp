@@ -240,6 +240,7 @@ TEST(TrafficDecode, EveryExampleNetworkDecodesWithoutAProblem) {
             EXPECT_EQ(f.problem.toStdString(), "");
             EXPECT_EQ(f.errorCode, -1) << f.errorText.toStdString();
             EXPECT_FALSE(f.protocol.isEmpty());
+            EXPECT_FALSE(f.previousUnanswered); // every request of the examples is answered
             if (f.kind == DecodedFrame::Kind::Request || f.kind == DecodedFrame::Kind::Reply) {
                 EXPECT_FALSE(f.receiver.isEmpty());
                 EXPECT_GE(f.station, 0);
@@ -300,4 +301,45 @@ TEST(TrafficDecode, ACorruptedFrameIsDecodedWithItsProblem) {
             fine += decoder.decode(records[i]).problem.isEmpty();
         EXPECT_GT(fine, 0);
     }
+}
+
+// A silent slave (network-format.md, "Faults"): the master's request to it gets no reply, and
+// the next request on the wire says so; a request that was answered is not marked.
+TEST(TrafficDecode, TheRequestAfterAnUnansweredOneSaysSo) {
+    NetworkDescription d;
+    QString error;
+    ASSERT_TRUE(readNetworkFile(
+        QStringLiteral(RUNG_SOURCE_DIR "/resources/examples/networks/easy-link/easy-link.rungnet"),
+        &d, &error))
+        << error.toStdString();
+    FaultDescription silent;
+    silent.kind = FaultDescription::Kind::Silent;
+    silent.station = QStringLiteral("s5");
+    d.faults.push_back(silent);
+    auto net = Network::build(d, listingLoader(), &error);
+    ASSERT_TRUE(net) << error.toStdString();
+    std::vector<TrafficRecord> records;
+    net->setTrafficSink([&](const TrafficRecord &r) { records.push_back(r); });
+    net->runUntil(2'000'000);
+    TrafficDecoder decoder(*net);
+    std::vector<DecodedFrame> frames;
+    for (const TrafficRecord &r : records)
+        frames.push_back(decoder.decode(r));
+    int unanswered = 0;
+    for (std::size_t i = 0; i + 1 < frames.size(); ++i) {
+        if (frames[i].kind != DecodedFrame::Kind::Request)
+            continue;
+        // s5 is silent: what it "sends" is recorded with the fault's note and never arrives.
+        const bool toS5 = frames[i].receiver == QStringLiteral("s5/CP2");
+        std::size_t next = i + 1;
+        while (next < frames.size() && records[next].sender == QStringLiteral("s5/CP2"))
+            ++next;
+        if (next >= frames.size() || frames[next].kind != DecodedFrame::Kind::Request)
+            continue;
+        EXPECT_EQ(frames[next].previousUnanswered, toS5) << i;
+        unanswered += toS5;
+    }
+    EXPECT_GT(unanswered, 0);
+    EXPECT_EQ(TrafficDecoder::noReplyText().toStdString(),
+              "no reply came before the next request (a time-out)");
 }
