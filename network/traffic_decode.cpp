@@ -148,6 +148,29 @@ QString extraText(qsizetype size) {
     return TrafficDecodeTr::tr("%n byte(s) after the end of the frame", "", int(size));
 }
 
+// A master's reply decoder's verdict on a whole frame, into `f`: the PLC's error or exception
+// code (its text by codeText), or what is wrong with the frame; true when the reply reads.
+template <typename ReplyDecoder>
+bool verdict(const ReplyDecoder &decoder, qsizetype size, QString (*codeText)(int),
+             DecodedFrame &f) {
+    switch (decoder.status()) {
+    case comms::FrameStatus::NeedMore:
+        f.problem = truncatedText(size);
+        return false;
+    case comms::FrameStatus::Failed:
+        if (decoder.error().kind == comms::ProtocolError::Kind::DeviceError) {
+            f.errorCode = decoder.error().code;
+            f.errorText = codeText(f.errorCode);
+        } else {
+            f.problem = decoder.error().message;
+        }
+        return false;
+    case comms::FrameStatus::Complete:
+        return true;
+    }
+    return false;
+}
+
 } // namespace
 
 struct TrafficDecoder::Pending {
@@ -450,23 +473,8 @@ DecodedFrame TrafficDecoder::decodeVigorReply(const End &from, const QByteArray 
     }
     vg::ReplyDecoder decoder(request);
     decoder.feed(bytes);
-    switch (decoder.status()) {
-    case comms::FrameStatus::NeedMore:
-        f.problem = truncatedText(bytes.size());
-        break;
-    case comms::FrameStatus::Failed:
-        if (decoder.error().kind == comms::ProtocolError::Kind::DeviceError) {
-            f.errorCode = decoder.error().code;
-            f.errorText = vg::errorText(f.errorCode);
-        } else {
-            f.problem = decoder.error().message;
-        }
-        break;
-    case comms::FrameStatus::Complete:
-        if (request.command == vg::Command::Read)
-            f.data = hexBytes(decoder.reply().data);
-        break;
-    }
+    if (verdict(decoder, bytes.size(), &vg::errorText, f) && request.command == vg::Command::Read)
+        f.data = hexBytes(decoder.reply().data);
     return f;
 }
 
@@ -608,26 +616,12 @@ DecodedFrame TrafficDecoder::decodeModbusReply(const End &from, const QByteArray
     }
     mb::ReplyDecoder decoder(ascii ? mb::Framing::Ascii : mb::Framing::Rtu, unit, request);
     decoder.feed(bytes);
-    switch (decoder.status()) {
-    case comms::FrameStatus::NeedMore:
-        f.problem = truncatedText(bytes.size());
-        break;
-    case comms::FrameStatus::Failed:
-        if (decoder.error().kind == comms::ProtocolError::Kind::DeviceError) {
-            f.errorCode = decoder.error().code;
-            f.errorText = mb::exceptionText(f.errorCode);
-        } else {
-            f.problem = decoder.error().message;
-        }
-        break;
-    case comms::FrameStatus::Complete: {
+    if (verdict(decoder, bytes.size(), &mb::exceptionText, f)) {
         const mb::Response &r = decoder.response();
         if (!r.registers.empty())
             f.data = registersText(r.registers);
         else if (!r.bits.empty())
             f.data = bitsText(r.bits, request.count);
-        break;
-    }
     }
     return f;
 }
