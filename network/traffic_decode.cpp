@@ -101,7 +101,7 @@ QString withDevice(const QString &device, const QString &raw) {
     return device.isEmpty() ? raw : TrafficDecodeTr::tr("%1 (%2)").arg(device, raw);
 }
 
-QString hexBytes(QByteArrayView bytes) {
+QString hexText(QByteArrayView bytes) {
     return QString::fromLatin1(bytes.toByteArray().toHex(' ').toUpper());
 }
 
@@ -424,7 +424,7 @@ DecodedFrame TrafficDecoder::decodeVigorRequest(const End &from, const QByteArra
     if (!bitCommand)
         f.count = r.length;
     if (r.command == vg::Command::Write)
-        f.data = hexBytes(r.data);
+        f.data = hexText(r.data);
     decoder.next();
     if (decoder.buffered() > 0)
         f.problem = extraText(decoder.buffered());
@@ -474,7 +474,7 @@ DecodedFrame TrafficDecoder::decodeVigorReply(const End &from, const QByteArray 
     vg::ReplyDecoder decoder(request);
     decoder.feed(bytes);
     if (verdict(decoder, bytes.size(), &vg::errorText, f) && request.command == vg::Command::Read)
-        f.data = hexBytes(decoder.reply().data);
+        f.data = hexText(decoder.reply().data);
     return f;
 }
 
