@@ -58,7 +58,7 @@ TrafficRun runExample(const QString &file, qint64 ms,
     return run;
 }
 
-QString readAll(const QString &path) {
+QString readBack(const QString &path) {
     QFile f(path);
     return f.open(QIODevice::ReadOnly | QIODevice::Text) ? QString::fromUtf8(f.readAll())
                                                          : QString();
@@ -263,12 +263,12 @@ TEST(NetworkTrafficView, SavesCsvAndTextThatReadBack) {
     QString expected = network::trafficHeader(QStringLiteral("modbus.rungnet")) + u'\n';
     for (const network::TrafficRecord &r : run.records)
         expected += network::formatTraffic(r) + u'\n';
-    EXPECT_EQ(readAll(text).toStdString(), expected.toStdString());
+    EXPECT_EQ(readBack(text).toStdString(), expected.toStdString());
 
     // CSV: a header of the columns, a line per frame, the cells as the table shows them.
     const QString csv = dir.filePath(QStringLiteral("traffic.csv"));
     ASSERT_TRUE(view.saveCsv(csv, &error)) << error.toStdString();
-    const QStringList lines = readAll(csv).split(u'\n', Qt::SkipEmptyParts);
+    const QStringList lines = readBack(csv).split(u'\n', Qt::SkipEmptyParts);
     ASSERT_EQ(lines.size(), int(run.records.size()) + 1);
     EXPECT_TRUE(
         lines[0].startsWith(QStringLiteral("Time (s),Wire,Sender,Receiver,Protocol,Station,")))
@@ -285,7 +285,7 @@ TEST(NetworkTrafficView, SavesCsvAndTextThatReadBack) {
     // Filtered, a text file says what it leaves out.
     view.setStationFilter(QStringLiteral("s2"));
     ASSERT_TRUE(view.saveText(text, &error)) << error.toStdString();
-    const QStringList filtered = readAll(text).split(u'\n', Qt::SkipEmptyParts);
+    const QStringList filtered = readBack(text).split(u'\n', Qt::SkipEmptyParts);
     ASSERT_EQ(filtered.size(), view.shownRows() + 2);
     EXPECT_TRUE(filtered[1].startsWith(QStringLiteral("# "))) << filtered[1].toStdString();
     EXPECT_NE(filtered[1].indexOf(QStringLiteral("station s2")), -1) << filtered[1].toStdString();

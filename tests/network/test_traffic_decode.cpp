@@ -30,7 +30,7 @@ const QByteArray kPcAndPlc = R"({
 const std::map<QString, QString> kIdle = {
     {QStringLiteral("p.il"), QStringLiteral("LD X0\nOUT Y0\nEND\n")}};
 
-TrafficRecord frame(const char *sender, const QByteArray &bytes, const char *wire = "w1") {
+TrafficRecord transmission(const char *sender, const QByteArray &bytes, const char *wire = "w1") {
     static qint64 us = 0;
     us += 10'000;
     return {us, us + 5'000, QString::fromLatin1(wire), QString::fromLatin1(sender), bytes, {}};
@@ -80,7 +80,7 @@ TEST(TrafficDecode, ComputerLinkVectorsOfTheManual) {
     };
     for (const VigorVector &v : vectors) {
         SCOPED_TRACE(v.request);
-        const DecodedFrame request = decoder.decode(frame("pc", hex(v.request)));
+        const DecodedFrame request = decoder.decode(transmission("pc", hex(v.request)));
         EXPECT_EQ(request.kind, DecodedFrame::Kind::Request);
         EXPECT_EQ(request.protocol.toStdString(), "Computer Link");
         EXPECT_EQ(request.receiver.toStdString(), "plc/CP2");
@@ -90,7 +90,7 @@ TEST(TrafficDecode, ComputerLinkVectorsOfTheManual) {
         EXPECT_EQ(request.count, v.count);
         EXPECT_EQ(request.data.toStdString(), v.requestData);
         EXPECT_EQ(request.problem.toStdString(), "");
-        const DecodedFrame reply = decoder.decode(frame("plc/CP2", hex(v.reply)));
+        const DecodedFrame reply = decoder.decode(transmission("plc/CP2", hex(v.reply)));
         EXPECT_EQ(reply.kind, DecodedFrame::Kind::Reply);
         EXPECT_EQ(reply.receiver.toStdString(), "pc");
         EXPECT_EQ(reply.station, 0);
@@ -101,7 +101,7 @@ TEST(TrafficDecode, ComputerLinkVectorsOfTheManual) {
         EXPECT_EQ(reply.problem.toStdString(), "");
     }
     // The commands' names come with the code.
-    EXPECT_EQ(decoder.decode(frame("pc", hex("02 30 30 35 31 30 30 38 31 30 32 03 46 34")))
+    EXPECT_EQ(decoder.decode(transmission("pc", hex("02 30 30 35 31 30 30 38 31 30 32 03 46 34")))
                   .commandText.toStdString(),
               "51h read");
 }
@@ -112,29 +112,29 @@ TEST(TrafficDecode, ComputerLinkErrorsAndSpoiledFrames) {
     TrafficDecoder decoder(*run.net);
     // Vector 1 with its sum spoiled: the slave answers 11h; the decoder says both sums.
     const DecodedFrame badSum =
-        decoder.decode(frame("pc", hex("02 30 30 35 31 30 30 38 31 30 32 03 46 35")));
+        decoder.decode(transmission("pc", hex("02 30 30 35 31 30 30 38 31 30 32 03 46 35")));
     EXPECT_TRUE(badSum.failed());
     EXPECT_EQ(badSum.problem.toStdString(),
               "wrong sum (received F5, computed F4): the slave answers error 11h");
     // The slave's refusal: error 28h (address out of range) is the PLC's code, not a problem.
-    decoder.decode(frame("pc", hex("02 30 30 35 31 30 30 38 31 30 32 03 46 34")));
-    const DecodedFrame refused = decoder.decode(
-        frame("plc/CP2", comms::vigor::encodeReply({0, comms::vigor::Command::Read, 0x28, {}})));
+    decoder.decode(transmission("pc", hex("02 30 30 35 31 30 30 38 31 30 32 03 46 34")));
+    const DecodedFrame refused = decoder.decode(transmission(
+        "plc/CP2", comms::vigor::encodeReply({0, comms::vigor::Command::Read, 0x28, {}})));
     EXPECT_EQ(refused.problem.toStdString(), "");
     EXPECT_EQ(refused.errorCode, 0x28);
     EXPECT_NE(refused.errorText.indexOf(QStringLiteral("28h")), -1)
         << refused.errorText.toStdString();
     // A reply cut short, a reply of noise, an empty-looking request: a problem each.
-    decoder.decode(frame("pc", hex("02 30 30 35 31 30 30 38 31 30 32 03 46 34")));
-    const DecodedFrame cut = decoder.decode(frame("plc/CP2", hex("06 30 30 35 31 30")));
+    decoder.decode(transmission("pc", hex("02 30 30 35 31 30 30 38 31 30 32 03 46 34")));
+    const DecodedFrame cut = decoder.decode(transmission("plc/CP2", hex("06 30 30 35 31 30")));
     EXPECT_NE(cut.problem.indexOf(QStringLiteral("stops after 6 byte")), -1)
         << cut.problem.toStdString();
-    const DecodedFrame noise = decoder.decode(frame("plc/CP2", hex("FF 00 13")));
+    const DecodedFrame noise = decoder.decode(transmission("plc/CP2", hex("FF 00 13")));
     EXPECT_FALSE(noise.problem.isEmpty());
-    const DecodedFrame lone = decoder.decode(frame("plc/CP2", hex("06")));
+    const DecodedFrame lone = decoder.decode(transmission("plc/CP2", hex("06")));
     EXPECT_FALSE(lone.problem.isEmpty());
     // Bytes from the PC that are no request are its text.
-    const DecodedFrame text = decoder.decode(frame("pc", QByteArrayLiteral("HELLO\r")));
+    const DecodedFrame text = decoder.decode(transmission("pc", QByteArrayLiteral("HELLO\r")));
     EXPECT_EQ(text.kind, DecodedFrame::Kind::Raw);
     EXPECT_EQ(text.data.toStdString(), "HELLO\\r");
     EXPECT_EQ(text.receiver.toStdString(), "plc/CP2");
@@ -156,7 +156,7 @@ TEST(TrafficDecode, ModbusRequestsRepliesAndExceptions) {
     read.address = 100;
     read.count = 2;
     const DecodedFrame request =
-        decoder.decode(frame("master/CP2", mb::rtuFrame(2, mb::encodeRequestPdu(read))));
+        decoder.decode(transmission("master/CP2", mb::rtuFrame(2, mb::encodeRequestPdu(read))));
     EXPECT_EQ(request.kind, DecodedFrame::Kind::Request);
     EXPECT_EQ(request.protocol.toStdString(), "MODBUS RTU");
     EXPECT_EQ(request.receiver.toStdString(), "s2/CP2");
@@ -171,7 +171,7 @@ TEST(TrafficDecode, ModbusRequestsRepliesAndExceptions) {
     response.function = mb::ReadHoldingRegisters;
     response.registers = {1234, 65535};
     const DecodedFrame reply =
-        decoder.decode(frame("s2/CP2", mb::rtuFrame(2, mb::encodeResponsePdu(response))));
+        decoder.decode(transmission("s2/CP2", mb::rtuFrame(2, mb::encodeResponsePdu(response))));
     EXPECT_EQ(reply.kind, DecodedFrame::Kind::Reply);
     EXPECT_EQ(reply.receiver.toStdString(), "master/CP2");
     EXPECT_EQ(reply.address.toStdString(), "D100 (100)");
@@ -183,7 +183,7 @@ TEST(TrafficDecode, ModbusRequestsRepliesAndExceptions) {
     write.address = 512 + 10; // M10 (B-3-6: M0 is coil 512)
     write.bits = {true};
     const DecodedFrame coil =
-        decoder.decode(frame("master/CP2", mb::rtuFrame(1, mb::encodeRequestPdu(write))));
+        decoder.decode(transmission("master/CP2", mb::rtuFrame(1, mb::encodeRequestPdu(write))));
     EXPECT_EQ(coil.receiver.toStdString(), "s1/CP2");
     EXPECT_EQ(coil.address.toStdString(), "M10 (522)");
     EXPECT_EQ(coil.data.toStdString(), "1");
@@ -191,7 +191,7 @@ TEST(TrafficDecode, ModbusRequestsRepliesAndExceptions) {
     refused.function = mb::WriteSingleCoil;
     refused.exception = mb::IllegalDataAddress;
     const DecodedFrame exception =
-        decoder.decode(frame("s1/CP2", mb::rtuFrame(1, mb::encodeResponsePdu(refused))));
+        decoder.decode(transmission("s1/CP2", mb::rtuFrame(1, mb::encodeResponsePdu(refused))));
     EXPECT_EQ(exception.errorCode, 2);
     EXPECT_NE(exception.errorText.indexOf(QStringLiteral("illegal data address")), -1);
     EXPECT_EQ(exception.problem.toStdString(), "");
@@ -202,20 +202,20 @@ TEST(TrafficDecode, ModbusRequestsRepliesAndExceptions) {
     all.function = mb::WriteSingleRegister;
     all.registers = {7};
     const DecodedFrame broadcast =
-        decoder.decode(frame("master/CP2", mb::rtuFrame(0, mb::encodeRequestPdu(all))));
+        decoder.decode(transmission("master/CP2", mb::rtuFrame(0, mb::encodeRequestPdu(all))));
     EXPECT_EQ(broadcast.receiver.toStdString(), "every slave (broadcast)");
     EXPECT_EQ(broadcast.data.toStdString(), "7");
 
     // Spoiled: a CRC, a frame cut short, noise, a lone byte: a problem each, no crash.
     QByteArray bad = mb::rtuFrame(2, mb::encodeRequestPdu(read));
     bad[bad.size() - 1] = char(bad[bad.size() - 1] ^ 0x01);
-    const DecodedFrame crc = decoder.decode(frame("master/CP2", bad));
+    const DecodedFrame crc = decoder.decode(transmission("master/CP2", bad));
     EXPECT_NE(crc.problem.indexOf(QStringLiteral("wrong CRC")), -1) << crc.problem.toStdString();
     for (const QByteArray &garbled : {hex("02 03"), hex("02"), hex("FF FF FF FF FF FF FF FF FF"),
                                       mb::rtuFrame(2, mb::encodeRequestPdu(read)).left(5)}) {
         SCOPED_TRACE(garbled.toHex(' ').toStdString());
-        EXPECT_FALSE(decoder.decode(frame("master/CP2", garbled)).problem.isEmpty());
-        EXPECT_FALSE(decoder.decode(frame("s2/CP2", garbled)).problem.isEmpty());
+        EXPECT_FALSE(decoder.decode(transmission("master/CP2", garbled)).problem.isEmpty());
+        EXPECT_FALSE(decoder.decode(transmission("s2/CP2", garbled)).problem.isEmpty());
     }
 }
 
