@@ -199,11 +199,13 @@ qint64 Network::transmit(Endpoint *from, const QByteArray &sent) {
     TrafficRecord r{start, end, from->wire ? from->wire->name : QString(), from->name, sent, {}};
     if (silent(from->owner, start)) {
         r.note = NetworkTr::tr("silent (fault): not sent");
+        r.delivered = false;
         record(r);
         return end;
     }
     if (!from->wire) {
         r.note = NetworkTr::tr("the port is on no wire");
+        r.delivered = false;
         record(r);
         return end;
     }
@@ -221,6 +223,7 @@ qint64 Network::transmit(Endpoint *from, const QByteArray &sent) {
         }
     if (cut(w, start)) {
         r.note = NetworkTr::tr("wire cut (fault): not delivered");
+        r.delivered = false;
         record(r);
         return end;
     }

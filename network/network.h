@@ -53,6 +53,9 @@ struct TrafficRecord {
     QString sender; // "master/CP2", a device's name
     QByteArray bytes;
     QString note; // translated; empty for a frame delivered as sent
+    // The frame reached the other ends (garbled perhaps); false when a fault kept it from
+    // the wire (silent, cut) or the port is on none.
+    bool delivered = true;
 };
 
 // Anything with a port on a wire: a station's port, a device.

@@ -35,5 +35,8 @@ struct TraceTr {
 struct TrafficTr {
     Q_DECLARE_TR_FUNCTIONS(rung::network::Traffic)
 };
+struct TrafficDecodeTr {
+    Q_DECLARE_TR_FUNCTIONS(rung::network::TrafficDecode)
+};
 
 } // namespace rung::network
