@@ -90,6 +90,13 @@ void NetworkChart::setFollow(bool follow) {
     m_follow->setChecked(follow);
 }
 
+void NetworkChart::placeCursor(qint64 timeMs) {
+    m_follow->setChecked(false);
+    m_endMs = timeMs + std::llround(m_canvas->waveWidth() * m_msPerPixel / 2);
+    m_canvas->setCursorTime(0, timeMs);
+    refresh();
+}
+
 bool NetworkChart::addDevice(const QString &text) {
     if (!m_session)
         return false;

@@ -43,6 +43,9 @@ public:
     // The values drawn for a row, as the chart read them last (for the tests and the readout).
     const model::TimingWindow &window() const { return m_window; }
     void setFollow(bool follow);
+    // Cursor A at this virtual time, the view centred on it, following stopped (a frame
+    // chosen in the Traffic view).
+    void placeCursor(qint64 timeMs);
 
 signals:
     void message(const QString &text);

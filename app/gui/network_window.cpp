@@ -2,6 +2,7 @@
 
 #include "app/cli/cli_network.h"
 #include "app/gui/network_chart.h"
+#include "app/gui/network_traffic_view.h"
 #include "app/gui/network_watch_model.h"
 #include "app/gui/simulation_controller.h"
 
@@ -146,6 +147,20 @@ void NetworkWindow::buildWindow() {
     m_chartDock->setWidget(m_chart);
     addDockWidget(Qt::BottomDockWidgetArea, m_chartDock);
 
+    m_traffic = new NetworkTrafficView(this);
+    m_traffic->setObjectName(QStringLiteral("networkTraffic"));
+    // A frame chosen: the chart shows that instant.
+    connect(m_traffic, &NetworkTrafficView::frameChosen, this, [this](qint64 startUs) {
+        m_chartDock->show();
+        m_chart->placeCursor(startUs / 1000);
+    });
+    m_trafficDock = new QDockWidget(this);
+    m_trafficDock->setObjectName(QStringLiteral("networkTrafficDock"));
+    m_trafficDock->setWidget(m_traffic);
+    addDockWidget(Qt::BottomDockWidgetArea, m_trafficDock);
+    tabifyDockWidget(m_chartDock, m_trafficDock);
+    m_chartDock->raise();
+
     m_status = new QLabel(this);
     m_status->setObjectName(QStringLiteral("networkStatus"));
     statusBar()->addPermanentWidget(m_status);
@@ -247,6 +262,7 @@ void NetworkWindow::buildMenus() {
     view->addAction(m_ioDock->toggleViewAction());
     view->addAction(m_watchDock->toggleViewAction());
     view->addAction(m_chartDock->toggleViewAction());
+    view->addAction(m_trafficDock->toggleViewAction());
     updateActions();
 }
 
@@ -332,6 +348,7 @@ void NetworkWindow::retranslate() {
     m_removeWatch->setText(tr("Remove From Watch"));
     m_chartWatched->setText(tr("Add to the Timing Chart"));
     m_chartDock->setWindowTitle(tr("Timing Chart"));
+    m_trafficDock->setWindowTitle(tr("Traffic"));
     m_stationList->setToolTip(tr("Double-click a station to edit its program"));
     if (!m_path.isEmpty())
         //: the window's title: the network file's name
@@ -401,8 +418,9 @@ bool NetworkWindow::open(const QString &path, QString *error) {
     network::NetworkDescription description;
     if (!network::readNetworkFile(path, &description, error))
         return false;
-    std::unique_ptr<network::NetworkSession> session =
-        network::NetworkSession::start(description, cliProgramLoader(), error);
+    std::unique_ptr<network::NetworkSession> session = network::NetworkSession::start(
+        description, cliProgramLoader(), error, nullptr,
+        [this, &path](const network::Network &built) { m_traffic->setNetwork(built, path); });
     if (!session)
         return false;
     m_path = QFileInfo(path).absoluteFilePath();
@@ -450,6 +468,13 @@ bool NetworkWindow::open(const QString &path, QString *error) {
     });
     connect(m_session.get(), &network::NetworkSession::clockChanged, this,
             &NetworkWindow::updateStatus);
+    connect(m_session.get(), &network::NetworkSession::trafficAvailable, this, [this] {
+        bool startedOver = false;
+        std::vector<network::TrafficRecord> records = m_session->takeTraffic(&startedOver);
+        if (startedOver)
+            m_traffic->clear();
+        m_traffic->append(std::move(records));
+    });
     connect(m_session.get(), &network::NetworkSession::errorTextChanged, this,
             [this](const QString &text) {
                 if (!text.isEmpty())

@@ -35,6 +35,7 @@ class StationSource;
 namespace rung::app {
 
 class NetworkChart;
+class NetworkTrafficView;
 class NetworkWatchModel;
 
 class NetworkWindow : public QMainWindow {
@@ -58,6 +59,7 @@ public:
     editor::Document *document(const QString &station) const;
     NetworkWatchModel *watchModel() const { return m_watch; }
     NetworkChart *chart() const { return m_chart; }
+    NetworkTrafficView *traffic() const { return m_traffic; }
     // Adds "STATION/DEVICE" to the watch table; false with the reason in the status bar.
     bool watch(const QString &device);
     // The status line: run state and virtual time.
@@ -101,6 +103,7 @@ private:
     QLineEdit *m_watchLine = nullptr;
     NetworkWatchModel *m_watch = nullptr;
     NetworkChart *m_chart = nullptr;
+    NetworkTrafficView *m_traffic = nullptr;
     QAction *m_chartWatched = nullptr;
     QLabel *m_status = nullptr;
     QLabel *m_selectorLabel = nullptr;
@@ -119,6 +122,7 @@ private:
     class QDockWidget *m_watchDock = nullptr;
     class QDockWidget *m_ioDock = nullptr;
     class QDockWidget *m_chartDock = nullptr;
+    class QDockWidget *m_trafficDock = nullptr;
 };
 
 } // namespace rung::app

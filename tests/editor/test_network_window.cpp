@@ -4,6 +4,9 @@
 // a station's program opens in the main window for editing.
 
 #include "app/gui/network_chart.h"
+#include "editor/timing_canvas.h"
+#include "app/gui/network_traffic_model.h"
+#include "app/gui/network_traffic_view.h"
 #include "app/gui/network_watch_model.h"
 #include "app/gui/network_window.h"
 #include "window_fixture.h"
@@ -11,6 +14,7 @@
 #include "editor/document.h"
 #include "model/target/address.h"
 #include "network/network_session.h"
+#include "network/traffic_decode.h"
 
 #include <QComboBox>
 #include <QListWidget>
@@ -222,6 +226,47 @@ TEST(NetworkWindow, TypingAValueWhileTheNetworkRunsKeepsWhatIsTyped) {
     EXPECT_TRUE(eventually([&] { return net->session()->nowUs() > start + 200'000; }));
     QCoreApplication::processEvents();
     EXPECT_EQ(line->text(), QStringLiteral("1234"));
+}
+
+// The test: the Traffic view decoding a frame of the running network; a frame chosen
+// puts the chart's cursor at its time; Stop starts the traffic over with the new network's.
+TEST(NetworkWindow, TheTrafficViewDecodesTheFramesOfTheRunningNetwork) {
+    app::MainWindow window;
+    ASSERT_TRUE(window.openFile(example("easy-link"), QString(), true));
+    app::NetworkWindow *net = openedNetwork(window);
+    ASSERT_NE(net, nullptr);
+    app::NetworkTrafficModel *traffic = net->traffic()->model();
+    net->session()->setSpeed(0);
+    net->session()->runFor(300);
+    ASSERT_TRUE(eventually([&] { return net->session()->runState() == RunState::Paused; }));
+    ASSERT_TRUE(eventually([&] { return traffic->rowCount() >= 4; }));
+    // The master's first request of set 1 (read D10.. of station 5) and station 5's reply.
+    const network::DecodedFrame &request = traffic->decoded(0);
+    EXPECT_EQ(traffic->record(0).sender, QStringLiteral("master/CP2"));
+    EXPECT_EQ(request.kind, network::DecodedFrame::Kind::Request);
+    EXPECT_EQ(request.protocol, QStringLiteral("Computer Link"));
+    EXPECT_EQ(request.station, 5);
+    EXPECT_TRUE(request.address.startsWith(QStringLiteral("D10"))) << request.address.toStdString();
+    EXPECT_TRUE(request.problem.isEmpty()) << request.problem.toStdString();
+    EXPECT_EQ(traffic->decoded(1).kind, network::DecodedFrame::Kind::Reply);
+    EXPECT_EQ(traffic->decoded(1).receiver, QStringLiteral("master/CP2"));
+
+    QTableView *table = net->traffic()->table();
+    table->selectionModel()->setCurrentIndex(table->model()->index(2, 0),
+                                             QItemSelectionModel::ClearAndSelect |
+                                                 QItemSelectionModel::Rows);
+    const auto cursor = net->chart()->canvas()->cursorTime(0);
+    ASSERT_TRUE(cursor.has_value());
+    EXPECT_EQ(*cursor, traffic->record(2).startUs / 1000);
+
+    toolbarAction(*net, QStringLiteral("Stop"))->trigger();
+    net->session()->runFor(50);
+    ASSERT_TRUE(eventually([&] { return net->session()->runState() == RunState::Paused; }));
+    EXPECT_TRUE(eventually([&] {
+        return traffic->rowCount() > 0 &&
+               traffic->record(traffic->rowCount() - 1).startUs <= 50'000;
+    }));
+    EXPECT_LE(traffic->record(0).startUs, 50'000);
 }
 
 TEST(NetworkWindow, AStationsProgramOpensInTheMainWindowForEditing) {
