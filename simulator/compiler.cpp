@@ -357,8 +357,10 @@ CompileResult Compiler::run() {
                      [](const model::Diagnostic &a, const model::Diagnostic &b) {
                          return a.location.line < b.location.line;
                      });
-    if (!m_failed)
+    if (!m_failed) {
+        m_program->ops = lowerSteps(*m_program); // compile_lower.cpp
         result.program = m_program;
+    }
     return result;
 }
 
