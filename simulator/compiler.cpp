@@ -357,10 +357,8 @@ CompileResult Compiler::run() {
                      [](const model::Diagnostic &a, const model::Diagnostic &b) {
                          return a.location.line < b.location.line;
                      });
-    if (!m_failed) {
-        m_program->ops = lowerSteps(*m_program); // compile_lower.cpp
+    if (!m_failed)
         result.program = m_program;
-    }
     return result;
 }
 

@@ -29,7 +29,7 @@ qint64 clockPeriodMs(model::SystemRole role) {
 } // namespace
 
 Engine::Engine(std::shared_ptr<const Program> program)
-    : m_program(withOps(std::move(program))) {
+    : m_program(std::move(program)) {
     m_scratch = static_cast<std::size_t>(m_program->layout->wordCount());
     const std::size_t words = m_scratch + kScratchWords;
     m_words.assign(words, 0);

@@ -224,15 +224,6 @@ private:
             return;
         writeBit(words[bit.word], bit.mask, on);
     }
-    // put() and readBit() for a lowered step (program.h, Op).
-    void putOp(std::int32_t *words, const Op &o, bool on) const {
-        if (m_forceMask[static_cast<std::size_t>(o.word)] & o.mask)
-            return;
-        writeBit(words[o.word], o.mask, on);
-    }
-    static bool opBit(const std::int32_t *words, const Op &o) {
-        return (static_cast<std::uint32_t>(words[o.word]) & o.mask) != 0;
-    }
     // Every word write of the engine: wrapped to the word's width, forced bits kept.
     void storeWord(std::size_t i, std::int64_t value, int width) {
         const auto v = static_cast<std::uint32_t>(model::wrapToWidth(value, width));
@@ -287,10 +278,6 @@ private:
     void upDownCounter(const Step &s, std::size_t step, bool up, bool down, bool reset,
                        const Pass &pass);
     void plTimer(const Step &s, std::size_t step, bool on, const Pass &pass);
-    // Code::TimerPlain, Code::CounterPlain (compile_lower.cpp): timer() and counter() with
-    // nothing to test but the input.
-    void timerPlain(const Step &s, bool on, const Pass &pass);
-    void counterPlain(const Step &s, bool input, const Pass &pass);
     void plCounter(const Step &s, std::size_t step, bool up, bool down, bool reset,
                    const Pass &pass);
     // Word instructions with their input ON (engine_arith.h).

@@ -294,7 +294,7 @@ EditApplied Engine::replaceProgram(std::shared_ptr<const Program> program,
         if (found == oldPresets.end() || found->second != value)
             m_words[static_cast<std::size_t>(word)] = value;
     }
-    m_program = withOps(std::move(program));
+    m_program = std::move(program);
     m_edges = std::move(edges);
     m_flow.assign(m_program->steps.size(), 0);
     m_reported.assign(m_program->steps.size(), 0);

@@ -166,7 +166,6 @@ template <bool Record, bool Resumable, bool Special>
 std::size_t Engine::execute(std::size_t from, std::size_t to) {
     const Program &p = *m_program;
     const Step *steps = p.steps.data();
-    const Op *ops = p.ops.data();
     const std::size_t n = p.steps.size();
     std::int32_t *R = m_words.data();
     std::int32_t *W = p.deferredBitWrites ? m_write.data() : R;
@@ -251,70 +250,6 @@ std::size_t Engine::execute(std::size_t from, std::size_t to) {
     Step resolved;
     std::size_t i = from;
     for (; i < to; ++i) {
-        const Op &o = ops[i];
-        // A lowered step (compile_lower.cpp) runs from its Op alone, never special: the loop's
-        // first test sends it here, past the Step and the flag tests of the rest.
-        if (o.code >= Code::LoadStartBit) {
-            switch (o.code) {
-            case Code::LoadStartBit:
-                bsp = 0;
-                psp = 0;
-                acc = opBit(R, o) & gate;
-                break;
-            case Code::LoadStartNot:
-                bsp = 0;
-                psp = 0;
-                acc = !opBit(R, o) & gate;
-                break;
-            case Code::LoadBit:
-                if (bsp < kBlockStack)
-                    blocks[bsp++] = acc;
-                acc = opBit(R, o) & gate;
-                break;
-            case Code::LoadNot:
-                if (bsp < kBlockStack)
-                    blocks[bsp++] = acc;
-                acc = !opBit(R, o) & gate;
-                break;
-            case Code::AndBit:
-                acc = acc & opBit(R, o);
-                break;
-            case Code::AndNot:
-                acc = acc & !opBit(R, o);
-                break;
-            case Code::OrBit:
-                acc = acc | (opBit(R, o) & gate);
-                break;
-            case Code::OrNot:
-                acc = acc | (!opBit(R, o) & gate);
-                break;
-            case Code::OutBit:
-                putOp(W, o, acc);
-                break;
-            case Code::OutNot:
-                putOp(W, o, !acc);
-                break;
-            case Code::MoveWord:
-                if (acc)
-                    store(o.dest, R[o.word], o.width);
-                break;
-            case Code::MoveConstant:
-                if (acc)
-                    store(o.dest, static_cast<std::int32_t>(o.mask), o.width);
-                break;
-            case Code::TimerPlain:
-                timerPlain(steps[i], acc, pass);
-                break;
-            case Code::CounterPlain:
-                counterPlain(steps[i], acc, pass);
-                break;
-            default:
-                break;
-            }
-            if constexpr (Record)
-                m_flow[i] = acc;
-            continue;
-        }
         const Step *step = &steps[i];
         // One test per step for the rare ones, so that the plain scan pays little for them:
         // an operand resolved at run time, or "@MOV(21)", which runs on the rising edge of
@@ -605,21 +540,6 @@ std::size_t Engine::execute(std::size_t from, std::size_t to) {
             break;
         case Code::JumpEnd:
         case Code::Nop:
-        // lowered forms: run above
-        case Code::LoadStartBit:
-        case Code::LoadStartNot:
-        case Code::LoadBit:
-        case Code::LoadNot:
-        case Code::AndBit:
-        case Code::AndNot:
-        case Code::OrBit:
-        case Code::OrNot:
-        case Code::OutBit:
-        case Code::OutNot:
-        case Code::MoveWord:
-        case Code::MoveConstant:
-        case Code::TimerPlain:
-        case Code::CounterPlain:
             break;
         case Code::StepLadder:
             stepActive = rd(s.bit);

@@ -50,43 +50,6 @@ namespace rung::simulator {
         (s.flags & kBcd) ? wrapToWidth(toBcd(present), 16) : static_cast<std::int32_t>(present);
 }
 
-// timer() for an up timer with a plain set value, no gate and no accumulation (Vigor TMR).
-[[gnu::always_inline]] inline void Engine::timerPlain(const Step &s, bool on, const Pass &pass) {
-    ElementState &st = m_states[static_cast<std::size_t>(s.slot)];
-    const std::int32_t set = std::max<std::int32_t>(0, readWord(pass.R, s.x));
-    if (s.y.index >= 0)
-        pass.R[s.y.index] = set;
-    if (!on) {
-        st.accumulated = 0;
-        st.running = 0;
-        put(pass.W, s.bit, false);
-        pass.R[s.dest] = 0;
-        return;
-    }
-    if (st.running)
-        st.accumulated =
-            std::min<std::int64_t>(st.accumulated + pass.period, std::int64_t{set} * s.count);
-    st.running = 1;
-    const std::int64_t units = st.accumulated / s.count;
-    put(pass.W, s.bit, units >= set);
-    pass.R[s.dest] =
-        static_cast<std::int32_t>(std::min<std::int64_t>(units, pass.program.timerMax));
-}
-
-// counter() for a one-input counter counting up (Vigor CNT), no BCD, no gate.
-[[gnu::always_inline]] inline void Engine::counterPlain(const Step &s, bool input,
-                                                        const Pass &pass) {
-    ElementState &st = m_states[static_cast<std::size_t>(s.slot)];
-    const std::int32_t set = std::max<std::int32_t>(0, readWord(pass.R, s.x));
-    if (s.y.index >= 0)
-        pass.R[s.y.index] = set;
-    if (input && !st.previous && st.accumulated < set)
-        ++st.accumulated;
-    st.previous = input;
-    put(pass.W, s.bit, st.accumulated >= set);
-    pass.R[s.dest] = wrapToWidth(st.accumulated, s.width);
-}
-
 [[gnu::always_inline]] inline void Engine::counter(const Step &s, std::size_t step, bool input,
                                                    bool reset, const Pass &pass) {
     ElementState &st = m_states[static_cast<std::size_t>(s.slot)];

@@ -105,24 +105,6 @@ enum class Code : std::uint8_t {
     Return,
     End,
     Nop,
-    // The engine's own forms of the commonest steps (Program::ops, compile_lower.cpp): every
-    // operand in the Op, no flag tested at run time. The compiler's steps never hold them.
-    LoadStartBit, // LD at a rung start: the stacks emptied, acc = the bit
-    LoadStartNot, // LDI at a rung start
-    LoadBit,      // LD inside a rung: acc pushed on the block stack first
-    LoadNot,
-    AndBit,
-    AndNot,
-    OrBit,
-    OrNot,
-    OutBit,
-    OutNot,
-    MoveWord,     // MOV of a word into a word (dest), on a target without arithmetic flags
-    MoveConstant, // the same from a constant (mask: its bits)
-    // Read from the Step: a timer counting up (Vigor TMR) and a one-input counter (Vigor CNT)
-    // with no BCD, no gate (Area::enabledBy) and no accumulation to test.
-    TimerPlain,
-    CounterPlain,
 };
 
 enum StepFlag : std::uint16_t {
@@ -244,24 +226,6 @@ struct Step {
     std::int32_t count = 0;  // list length; timers: time base in ms
 };
 
-// A step as the engine's scan loop reads it first (Program::ops, parallel to Program::steps):
-// 16 bytes, so the commonest steps (contacts, coils, moves) run from it alone and four fit a
-// cache line. Any other step keeps its Step's code here and runs from its Step.
-struct Op {
-    Code code = Code::Nop;
-    std::uint8_t width = 16; // MoveWord / MoveConstant: the destination's width
-    std::int32_t word = 0;   // the bit's word, MoveWord's source
-    std::uint32_t mask = 0;  // the bit's mask, MoveConstant's value
-    std::int32_t dest = 0;   // MoveWord / MoveConstant: the destination word
-};
-static_assert(sizeof(Op) == 16);
-
-// Program::ops of `program` (compile_lower.cpp): the lowered form of each step.
-struct Program;
-std::vector<Op> lowerSteps(const Program &program);
-// `program` itself when it has its ops (the compiler gives them), else a copy with them.
-std::shared_ptr<const Program> withOps(std::shared_ptr<const Program> program);
-
 // A system device the engine drives at the start of every scan.
 struct SystemBinding {
     model::SystemRole role = model::SystemRole::Other;
@@ -356,7 +320,6 @@ struct CommDevices {
 struct Program {
     std::shared_ptr<const MemoryLayout> layout;
     std::vector<Step> steps; // index = instruction index in the list
-    std::vector<Op> ops;     // lowerSteps(*this), one per step: what the scan loop runs
     std::vector<int> lines;  // source line of each step
     std::vector<BitRef> bitLists;
     std::vector<ResetTarget> resets;
