@@ -220,8 +220,8 @@ void Engine::endScan() {
     if (p.deferredBitWrites)
         for (const auto &[begin, end] : p.bitWordRanges)
             std::copy(m_write.begin() + begin, m_write.begin() + end, m_words.begin() + begin);
-    if (!p.comms.empty() || !p.ports.empty())
-        serviceComms(); // engine_comm.cpp
+    if (!p.comms.empty() || (!p.ports.empty() && portsBusy()))
+        serviceComms(); // engine_comm.cpp, engine_ports.cpp
     ++m_stats.scans;
     ++m_scansSincePowerOn;
     m_stats.timeMs += m_stats.periodMs;

@@ -323,6 +323,10 @@ private:
     // "after the PLC completes the user program").
     void communicate(const Step &s, std::size_t step, bool on);
     void serviceComms();
+    // engine_ports.cpp: whether the END has port work to do (a port attached, free-port on or
+    // being switched, a transmission or a query under way); a PL110 program that uses no port
+    // pays one test a port for its ports.
+    bool portsBusy() const;
     qint64 commNowUs() const;
     model::PlcPort *commPort(std::size_t task) const {
         return task < m_commPorts.size() ? m_commPorts[task] : nullptr;
@@ -392,6 +396,7 @@ private:
     model::PlcPorts *m_ports = nullptr;
     std::vector<model::PlcPort *> m_commPorts;
     std::vector<model::PlcPort *> m_portLinks;       // Program::ports' ports (null: none)
+    bool m_portAttached = false;                     // some m_portLinks is not null
     std::shared_ptr<const Program> m_pendingProgram; // an edit waiting for the scan's END
     std::vector<Breakpoint> m_pendingBreakpoints;    // and its breakpoints
 };

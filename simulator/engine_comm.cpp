@@ -40,8 +40,10 @@ void Engine::attachPorts(model::PlcPorts *ports) {
             module(c.module).attached = m_commPorts[k] != nullptr;
     }
     m_portLinks.assign(m_program->ports.size(), nullptr);
+    m_portAttached = false;
     for (std::size_t k = 0; ports && k < m_program->ports.size(); ++k) {
         m_portLinks[k] = ports->port(m_program->ports[k].port);
+        m_portAttached = m_portAttached || m_portLinks[k];
         // Power-on: free-port is off (SM78 = 0), the port runs its protocol at its settings.
         if (model::PlcPort *p = m_portLinks[k]) {
             p->setProgramDriven(false);

@@ -4,8 +4,10 @@
 // device tables; the instruction mix is what a real program holds.
 
 #include "tests/benchmarks/compiled_scan.h"
+#include "tests/benchmarks/hand_written/mixed_scan.h"
 #include "tests/benchmarks/mixed_program.h"
 #include "tests/benchmarks/smoke.h"
+#include "tests/model/random_program.cpp"
 #include "tests/simulator/sim_test_target.h"
 
 #include "model/image/history.h"
@@ -81,6 +83,57 @@ void BM_Scan2048Steps(benchmark::State &state) {
 }
 void BM_Scan2048StepsWithPowerFlow(benchmark::State &state) {
     scanMixed(state, true);
+}
+
+// One scan of the 10,000-rung program of bench_core (the property tests' random Vigor program:
+// series / parallel blocks, several outputs a rung, MPS branches, KEEP boxes) on the real
+// Vigor table; its inputs X0..X7 change every 8 scans.
+void BM_Scan10000Rungs(benchmark::State &state) {
+    const model::Target &vigor = model::Target::get(model::Family::Vigor);
+    testing::RandomProgramOptions o;
+    o.rungs = bench::sized(10000, 200);
+    const model::ParseResult parsed =
+        model::parseInstructionList(vigor, testing::randomProgram(vigor, 42, o));
+    const CompileResult compiled = parsed.ok() ? compileProgram(parsed.list) : CompileResult{};
+    if (!compiled.ok()) {
+        state.SkipWithError("the 10,000-rung program did not compile");
+        return;
+    }
+    Engine engine(compiled.program);
+    std::vector<model::Address> inputs;
+    for (int k = 0; k < 8; ++k)
+        inputs.push_back(
+            std::get<model::Address>(model::parseAddress(vigor, QStringLiteral("X%1").arg(k))));
+    quint64 k = 0;
+    for (auto _ : state) {
+        const quint64 pattern = ++k / 8;
+        for (std::size_t i = 0; i < inputs.size(); ++i)
+            engine.setBit(inputs[i], ((pattern * 0x9E3779B97F4A7C15ull) >> (40 + i)) & 1u);
+        engine.scan();
+    }
+    state.counters["steps"] = static_cast<double>(compiled.program->steps.size());
+}
+
+// A small PL110 program with no communication instruction (the timers of PL110 manual 4.2.4):
+// what a scan's END costs beside the program when the PL110's ports are not used (issue 35:
+// serviceComms ran every scan of every PL110 program).
+void BM_ScanPl110NoPorts(benchmark::State &state) {
+    const model::Target &pl110 = model::Target::get(model::Family::Pl110);
+    const model::ParseResult parsed = model::parseInstructionList(
+        pl110, QStringLiteral("LD I1\nTON T1 3 100\nLD I1\nTOFF T2 3 100\nLD I1\n"
+                              "TONR T3 6 100\nLD T1\nOUT Q1\nEND\n"));
+    const CompileResult compiled = parsed.ok() ? compileProgram(parsed.list) : CompileResult{};
+    if (!compiled.ok() || !compiled.program->comms.empty()) {
+        state.SkipWithError("the PL110 program did not compile");
+        return;
+    }
+    Engine engine(compiled.program);
+    const model::Address input = parsed.list.instructions[0].operands[0].address;
+    int k = 0;
+    for (auto _ : state) {
+        engine.setBit(input, (++k & 8) != 0);
+        engine.scan();
+    }
 }
 
 // A feature's cost as one figure: blocks of scans alternate on two engines of the same
@@ -209,6 +262,102 @@ void BM_CompiledRatio(benchmark::State &state) {
             }
         });
     benchmark::DoNotOptimize(words.data());
+}
+
+// The goal of issue 35: the engine against the same logic written by hand in C++
+// (hand_written/mixed_scan.cpp: arrays of bool and 16-bit integers, one function a scan),
+// checked first to leave the engine's image scan after scan, then blocks alternated; ratio =
+// engine / hand-written (the goal: 3x at most).
+void BM_HandWrittenRatio(benchmark::State &state) {
+    Fixture f(mixedProgram());
+    if (!f.result.ok() || f.list.instructions.size() != 2048) {
+        state.SkipWithError("program did not compile to 2048 steps");
+        return;
+    }
+    const MemoryLayout &layout = *f.result.program->layout;
+    const model::Target &t = *f.target;
+    auto address = [&](const QString &name) {
+        const auto parsed = model::parseAddress(t, name);
+        return std::get<model::Address>(parsed);
+    };
+    // Where each of the hand-written program's variables sits in the engine's image.
+    bench::HandWrittenPlc plc;
+    std::vector<std::pair<BitRef, const bool *>> bits;
+    std::vector<std::pair<int, const std::int16_t *>> words;
+    auto bitsOf = [&](const char *prefix, int first, int count, const bool *values) {
+        for (int k = 0; k < count; ++k)
+            bits.emplace_back(
+                layout.bit(
+                    address(QStringLiteral("%1%2").arg(QLatin1String(prefix)).arg(first + k))),
+                values + k);
+    };
+    bitsOf("X", 0, 32, plc.X);
+    bitsOf("Y", 0, 32, plc.Y);
+    bitsOf("M", 0, 500, plc.M);
+    bitsOf("SM", 9000, 16, plc.SM);
+    bitsOf("T", 0, 32, plc.T);
+    bitsOf("C", 0, 32, plc.C);
+    for (int k = 0; k < 32; ++k) {
+        const model::Address timer = address(QStringLiteral("T%1").arg(k));
+        const model::Address counter = address(QStringLiteral("C%1").arg(k));
+        words.emplace_back(layout.word(timer), plc.TV + k);
+        words.emplace_back(layout.setValueWord(timer), plc.TS + k);
+        words.emplace_back(layout.word(counter), plc.CV + k);
+        words.emplace_back(layout.setValueWord(counter), plc.CS + k);
+    }
+    for (int k = 0; k < 100; ++k)
+        words.emplace_back(layout.word(address(QStringLiteral("D%1").arg(k))), plc.D + k);
+    std::vector<std::int32_t> image(static_cast<std::size_t>(layout.wordCount()), 0);
+    auto imageOf = [&] {
+        std::fill(image.begin(), image.end(), 0);
+        for (const auto &[b, v] : bits)
+            if (*v)
+                image[static_cast<std::size_t>(b.word)] |= static_cast<std::int32_t>(b.mask);
+        for (const auto &[w, v] : words)
+            image[static_cast<std::size_t>(w)] = *v;
+    };
+    const model::Address input = f.list.instructions[0].operands[0].address; // X0
+    bool inputs[32] = {};
+    int k = 0;
+    for (; k < 2000; ++k) { // the same logic: the same image after every scan
+        inputs[0] = (k & 8) != 0;
+        f.engine.setBit(input, inputs[0]);
+        f.engine.scan();
+        bench::handWrittenScan(plc, inputs, 10);
+        imageOf();
+        const auto engineWords = f.engine.words();
+        if (!std::equal(image.begin(), image.end(), engineWords.begin(), engineWords.end())) {
+            const auto diff = std::mismatch(image.begin(), image.end(), engineWords.begin());
+            const std::string why =
+                QStringLiteral("the hand-written program and the engine differ after scan %1: "
+                               "word %2 is %3 hand-written, %4 in the engine")
+                    .arg(k)
+                    .arg(diff.first - image.begin())
+                    .arg(*diff.first)
+                    .arg(*diff.second)
+                    .toStdString();
+            state.SkipWithError(why.c_str());
+            return;
+        }
+    }
+    int a = k;
+    int b = k;
+    alternate(
+        state, "hand_written",
+        [&](int n) {
+            for (int i = 0; i < n; ++i, ++a) {
+                inputs[0] = (a & 8) != 0;
+                bench::handWrittenScan(plc, inputs, 10);
+            }
+        },
+        "engine",
+        [&](int n) {
+            for (int i = 0; i < n; ++i, ++b) {
+                f.engine.setBit(input, (b & 8) != 0);
+                f.engine.scan();
+            }
+        });
+    benchmark::DoNotOptimize(plc.D);
 }
 
 // Breakpoints set (ten, on instructions spread over the program, with conditions that never
@@ -535,6 +684,8 @@ void BM_TrafficLight24HoursVigorListing(benchmark::State &state) {
 
 // Repetitions give medians (the figures docs/simulator.md quotes).
 BENCHMARK(BM_Scan2048Steps)->Repetitions(bench::times(5))->DisplayAggregatesOnly(true);
+BENCHMARK(BM_Scan10000Rungs)->Repetitions(bench::times(3))->DisplayAggregatesOnly(true);
+BENCHMARK(BM_ScanPl110NoPorts)->Repetitions(bench::times(3))->DisplayAggregatesOnly(true);
 BENCHMARK(BM_Scan2048StepsWithPowerFlow)->Repetitions(bench::times(5))->DisplayAggregatesOnly(true);
 BENCHMARK(BM_PowerFlowRatio)
     ->Unit(benchmark::kMillisecond)
@@ -549,6 +700,10 @@ BENCHMARK(BM_ResolvedOperandsRatio)
     ->Repetitions(bench::times(5))
     ->DisplayAggregatesOnly(true);
 BENCHMARK(BM_CompiledRatio)
+    ->Unit(benchmark::kMillisecond)
+    ->Repetitions(bench::times(5))
+    ->DisplayAggregatesOnly(true);
+BENCHMARK(BM_HandWrittenRatio)
     ->Unit(benchmark::kMillisecond)
     ->Repetitions(bench::times(5))
     ->DisplayAggregatesOnly(true);

@@ -499,3 +499,22 @@ TEST(Pl110Unmodelled, TheSimulatorWarnsAsCheckDoesAndKeepsThePageRequest) {
     s.engine->scan();
     EXPECT_EQ(s.value("SM106"), 17); // the PLC would have reset it once the page was shown
 }
+
+// The END's port work is skipped while no port is used (issue 35, Engine::portsBusy), and
+// comes back when the program switches a port to free-port without any instruction or
+// network: SM79 then counts the receive buffer, and a write to it empties the buffer (PL110
+// manual 2.1.2: "qualsiasi scrittura ... equivale allo svuotamento del buffer").
+TEST(Pl110Ports, FreePortSwitchedOnByTheProgramAloneKeepsTheReceiveCount) {
+    Pl110 s("LD I2\nMOV 256 SM78\nLD I1\nMOV 5 SM79\nEND");
+    ASSERT_TRUE(s.result.ok());
+    s.in("I1", true);
+    s.engine->scan();
+    EXPECT_EQ(s.value("SM79"), 5); // no port in use: SM79 is the program's word
+    s.in("I2", true);
+    s.engine->scan();
+    EXPECT_EQ(s.value("SM78"), 256);
+    EXPECT_EQ(s.value("SM79"), 0); // free-port: the write emptied the buffer
+    s.in("I2", false);
+    s.engine->scan();
+    EXPECT_EQ(s.value("SM79"), 0);
+}
