@@ -138,6 +138,9 @@ bool parseNetwork(const QByteArray &json, const QString &file, NetworkDescriptio
                       QString(), &why) ||
         !number(root, "period", QString(), 1, 1000000, &d->periodMs, &why))
         return fail(why);
+    d->periodGiven = root.contains(QLatin1String("period"));
+    d->comment = root.value(QLatin1String("comment"));
+    d->format = root.value(QLatin1String("format"));
     const QDir dir = QFileInfo(file).absoluteDir();
     QSet<QString> names;
     QJsonArray list;
@@ -177,6 +180,7 @@ bool parseNetwork(const QByteArray &json, const QString &file, NetworkDescriptio
             return fail(NetworkFileTr::tr("%1: needs an object of ports")
                             .arg(at(where, QStringLiteral("ports"))));
         s.ports = ports.toObject();
+        s.comment = o.value(QLatin1String("comment"));
         for (auto it = s.ports.begin(); it != s.ports.end(); ++it)
             if (!it.value().isObject())
                 return fail(NetworkFileTr::tr("%1: needs an object of settings")
@@ -224,6 +228,7 @@ bool parseNetwork(const QByteArray &json, const QString &file, NetworkDescriptio
             ends = list[i].toArray();
         } else if (list[i].isObject()) {
             const QJsonObject o = list[i].toObject();
+            w.named = o.contains(QLatin1String("name"));
             if (!onlyJsonKeys(o, {QStringLiteral("name"), QStringLiteral("ends")}, where, &why) ||
                 !string(o, "name", where, false, &w.name, &why) || !array(o, "ends", &ends, &why))
                 return fail(why);
@@ -299,6 +304,9 @@ bool parseNetwork(const QByteArray &json, const QString &file, NetworkDescriptio
         if (!string(o, "kind", where, true, &kind, &why))
             return fail(why);
         qint64 frame = 0, byte = 0, mask = 1;
+        for (const char *key : {"from", "to", "frame", "byte", "xor"})
+            if (o.contains(QLatin1String(key)))
+                f.given << QLatin1String(key);
         if (kind == QLatin1String("cut") || kind == QLatin1String("silent")) {
             f.kind = kind == QLatin1String("cut") ? FaultDescription::Kind::Cut
                                                   : FaultDescription::Kind::Silent;
