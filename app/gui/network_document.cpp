@@ -5,6 +5,7 @@
 #include "model/project/project.h"
 #include "model/target/target.h"
 
+#include <QCoreApplication>
 #include <QDir>
 #include <QFile>
 #include <QFileInfo>
@@ -24,8 +25,10 @@ class NetworkEditCommand : public QUndoCommand {
 public:
     NetworkEditCommand(NetworkDocument *document, NetworkDescription before,
                        NetworkDescription after, const QString &label)
-        : QUndoCommand(label), m_document(document), m_before(std::move(before)),
-          m_after(std::move(after)) {}
+        : QUndoCommand(label)
+        , m_document(document)
+        , m_before(std::move(before))
+        , m_after(std::move(after)) {}
     void redo() override { m_document->apply(m_after); }
     void undo() override { m_document->apply(m_before); }
 
@@ -42,7 +45,9 @@ bool validStationName(const QString &name) {
     return re.match(name).hasMatch();
 }
 
-QString endStation(const QString &end) { return end.section(QLatin1Char('/'), 0, 0); }
+QString endStation(const QString &end) {
+    return end.section(QLatin1Char('/'), 0, 0);
+}
 
 QString bridgeKindText(BridgeDescription::Kind kind) {
     switch (kind) {
@@ -60,7 +65,8 @@ QString bridgeKindText(BridgeDescription::Kind kind) {
 
 } // namespace
 
-NetworkDocument::NetworkDocument(QObject *parent) : QObject(parent) {
+NetworkDocument::NetworkDocument(QObject *parent)
+    : QObject(parent) {
     connect(&m_undo, &QUndoStack::cleanChanged, this,
             [this](bool clean) { emit modifiedChanged(!clean); });
 }
@@ -218,8 +224,7 @@ QStringList NetworkDocument::stationPorts(const QString &name) const {
     return out;
 }
 
-QJsonObject NetworkDocument::effectivePortSettings(const QString &name,
-                                                   const QString &port) const {
+QJsonObject NetworkDocument::effectivePortSettings(const QString &name, const QString &port) const {
     const StationDescription *s = station(name);
     if (!s)
         return {};
@@ -280,9 +285,8 @@ bool NetworkDocument::addStation(const StationDescription &s, QString *error) {
     NetworkDescription d = m_description;
     StationDescription added = s;
     if (added.program.isEmpty())
-        added.program = m_file.isEmpty()
-                            ? QFileInfo(s.path).absoluteFilePath()
-                            : QFileInfo(m_file).absoluteDir().relativeFilePath(s.path);
+        added.program = m_file.isEmpty() ? QFileInfo(s.path).absoluteFilePath()
+                                         : QFileInfo(m_file).absoluteDir().relativeFilePath(s.path);
     d.stations.push_back(added);
     push(std::move(d), tr("Add Station %1").arg(s.name));
     return true;
@@ -382,7 +386,8 @@ bool NetworkDocument::removeStation(const QString &name, QString *error) {
         if (d.wires[i].ends.size() < 2)
             removeWireAt(&d, i);
     }
-    std::erase_if(d.bridges, [&name](const BridgeDescription &b) { return endStation(b.end) == name; });
+    std::erase_if(d.bridges,
+                  [&name](const BridgeDescription &b) { return endStation(b.end) == name; });
     std::erase_if(d.faults, [&name](const FaultDescription &f) {
         return f.kind == FaultDescription::Kind::Silent && f.station == name;
     });
@@ -407,8 +412,8 @@ bool NetworkDocument::endExists(const QString &end, QString *error) const {
     const NetworkStationInfo info = stationInfo(name);
     const model::PortSpec *spec = info.target->port(port);
     if (!spec || !spec->on(info.model) || spec->name != port) {
-        *error = tr("%1 (%2 %3) has no port %4")
-                     .arg(name, info.target->displayName, info.model, port);
+        *error =
+            tr("%1 (%2 %3) has no port %4").arg(name, info.target->displayName, info.model, port);
         return false;
     }
     return true;
@@ -478,6 +483,18 @@ bool NetworkDocument::disconnectEnd(const QString &end, QString *error) {
     return false;
 }
 
+bool NetworkDocument::removeWire(const QString &wire, QString *error) {
+    NetworkDescription d = m_description;
+    for (std::size_t i = 0; i < d.wires.size(); ++i)
+        if (d.wires[i].name == wire) {
+            removeWireAt(&d, i);
+            push(std::move(d), tr("Remove Wire %1").arg(wire));
+            return true;
+        }
+    *error = tr("No wire is named \"%1\"").arg(wire);
+    return false;
+}
+
 bool NetworkDocument::setPortSettings(const QString &name, const QString &port,
                                       const QJsonObject &settings, QString *error) {
     const StationDescription *s = station(name);
@@ -496,7 +513,8 @@ bool NetworkDocument::setPortSettings(const QString &name, const QString &port,
     if (!model::readPortConfig(*info.target, info.target->model(info.model), port, layers, &config,
                                error))
         return false;
-    if (s->ports.value(port).toObject() == settings && s->ports.contains(port) == !settings.isEmpty())
+    if (s->ports.value(port).toObject() == settings &&
+        s->ports.contains(port) == !settings.isEmpty())
         return true; // nothing changed: no undo step
     NetworkDescription d = m_description;
     for (StationDescription &e : d.stations)
@@ -527,7 +545,8 @@ bool NetworkDocument::addBridge(const BridgeDescription &bridge, QString *error)
         *error = tr("A %1 bridge needs where it goes").arg(bridgeKindText(bridge.kind));
         return false;
     }
-    if (bridge.kind == BridgeDescription::Kind::Tcp || bridge.kind == BridgeDescription::Kind::Listen) {
+    if (bridge.kind == BridgeDescription::Kind::Tcp ||
+        bridge.kind == BridgeDescription::Kind::Listen) {
         const qsizetype colon = bridge.where.lastIndexOf(QLatin1Char(':'));
         bool ok = false;
         const uint port = colon >= 0 ? bridge.where.mid(colon + 1).toUInt(&ok) : 0;
@@ -545,9 +564,8 @@ bool NetworkDocument::addBridge(const BridgeDescription &bridge, QString *error)
                               {{effectivePortSettings(name, port), bridge.end}}, &config, &why) &&
         !config.application->published) {
         *error = tr("%1 runs %2, whose frames are not published: it cannot be bridged")
-                     .arg(bridge.end,
-                          QCoreApplication::translate("rung::model::Target",
-                                                      config.application->name));
+                     .arg(bridge.end, QCoreApplication::translate("rung::model::Target",
+                                                                  config.application->name));
         return false;
     }
     NetworkDescription d = m_description;
@@ -558,7 +576,8 @@ bool NetworkDocument::addBridge(const BridgeDescription &bridge, QString *error)
 
 bool NetworkDocument::removeBridge(const QString &end, QString *error) {
     NetworkDescription d = m_description;
-    if (std::erase_if(d.bridges, [&end](const BridgeDescription &b) { return b.end == end; }) == 0) {
+    if (std::erase_if(d.bridges, [&end](const BridgeDescription &b) { return b.end == end; }) ==
+        0) {
         *error = tr("%1 has no bridge").arg(end);
         return false;
     }

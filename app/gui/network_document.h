@@ -79,6 +79,8 @@ public:
     bool connectEnds(const QString &a, const QString &b, QString *error);
     // Takes an end off its wire (the wire goes when one end is left, with its faults).
     bool disconnectEnd(const QString &end, QString *error);
+    // Removes a wire with all its ends (and its faults).
+    bool removeWire(const QString &wire, QString *error);
     // The network's settings of a port (an empty object removes them: the project's or the
     // defaults apply), checked against the target's table.
     bool setPortSettings(const QString &station, const QString &port, const QJsonObject &settings,
