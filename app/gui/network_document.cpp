@@ -104,12 +104,19 @@ bool NetworkDocument::save(QStringList *notKept, QString *error) {
 }
 
 bool NetworkDocument::saveAs(const QString &file, QStringList *notKept, QString *error) {
-    if (!network::writeNetworkFile(m_description, file, notKept, error))
+    NetworkDescription d = m_description;
+    if (m_file.isEmpty()) {
+        // A network never saved kept its programs as absolute paths for want of a folder: the
+        // first save writes them relative to it, as a user writes them.
+        const QDir dir = QFileInfo(file).absoluteDir();
+        for (StationDescription &s : d.stations)
+            s.program = QDir::fromNativeSeparators(dir.relativeFilePath(s.path));
+    }
+    if (!network::writeNetworkFile(d, file, notKept, error))
         return false;
     const bool moved = file != m_file;
     m_file = file;
     // The programs stay where they are; their paths as the new file writes them.
-    NetworkDescription d = m_description;
     apply(d);
     m_undo.setClean();
     if (moved)

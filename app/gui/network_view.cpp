@@ -346,14 +346,16 @@ void NetworkCanvas::paintEvent(QPaintEvent *) {
             double ty = row.rect.top() + kNetPad / 2;
             for (qsizetype i = 0; i < row.text.size(); ++i) {
                 p.setPen(row.problem ? wrong : (row.set ? ink : faint));
-                p.drawText(QRectF(row.rect.left() + kNetPad, ty, row.rect.width() - kNetPad - 12, line),
-                           Qt::AlignLeft | Qt::AlignVCenter, row.text[i]);
+                p.drawText(
+                    QRectF(row.rect.left() + kNetPad, ty, row.rect.width() - kNetPad - 12, line),
+                    Qt::AlignLeft | Qt::AlignVCenter, row.text[i]);
                 ty += line;
             }
             if (!row.bridge.isEmpty()) {
                 p.setPen(accent.darker(130));
-                p.drawText(QRectF(row.rect.left() + kNetPad, ty, row.rect.width() - kNetPad - 12, line),
-                           Qt::AlignLeft | Qt::AlignVCenter, row.bridge);
+                p.drawText(
+                    QRectF(row.rect.left() + kNetPad, ty, row.rect.width() - kNetPad - 12, line),
+                    Qt::AlignLeft | Qt::AlignVCenter, row.bridge);
             }
             p.setPen(QPen(ink, 1.2));
             p.setBrush(m_view->document()->wireOf(row.end) ? ink : pal.color(QPalette::Base));
@@ -681,6 +683,12 @@ void NetworkView::contextMenuAt(const QPoint &canvasPoint, const QPoint &global)
     menu.addAction(tr("Zoom &In"), this, &NetworkView::zoomIn);
     menu.addAction(tr("Zoom &Out"), this, &NetworkView::zoomOut);
     menu.exec(global);
+}
+
+void NetworkView::changeEvent(QEvent *event) {
+    if (event->type() == QEvent::LanguageChange)
+        m_canvas->relayout();
+    QScrollArea::changeEvent(event);
 }
 
 void NetworkView::keyPressEvent(QKeyEvent *event) {

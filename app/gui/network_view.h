@@ -59,6 +59,7 @@ signals:
     void editRefused(const QString &why);
 
 protected:
+    void changeEvent(QEvent *event) override;
     void keyPressEvent(QKeyEvent *event) override;
     void wheelEvent(QWheelEvent *event) override;
 
