@@ -65,6 +65,8 @@ struct NetworkLayout {
     };
     QStringList title;
     QRectF titleRect;
+    QString comment; // the network's comment, wrapped under the title
+    QRectF commentRect;
     std::vector<Box> boxes;
     std::vector<Bus> buses;
     QSizeF size;
@@ -112,12 +114,9 @@ void NetworkCanvas::relayout() {
     const QFontMetricsF fmBold(bold);
     const double line = fm.height();
 
-    l.title << NetworkView::tr("Network %1: period %2 ms, %3 stations, %4 devices, %5 wires")
-                   .arg(doc.displayName())
-                   .arg(d.periodMs)
-                   .arg(d.stations.size())
-                   .arg(d.devices.size())
-                   .arg(d.wires.size());
+    l.title << NetworkView::tr("%1: scan period %2 ms").arg(doc.displayName()).arg(d.periodMs);
+    if (d.comment.isString())
+        l.comment = d.comment.toString();
 
     // The boxes' contents.
     for (const auto &s : d.stations) {
@@ -144,10 +143,17 @@ void NetworkCanvas::relayout() {
                                       {{doc.effectivePortSettings(s.name, port), row.end}}, &config,
                                       &why)) {
                 row.text << QStringLiteral("%1  %2").arg(port, applicationName(config.application));
-                QString second = NetworkView::tr("station %1, %2 %3")
-                                     .arg(config.station)
-                                     .arg(config.line.baud)
-                                     .arg(model::frameFormatText(config.line));
+                // A station number means something where the port answers or links; a
+                // master's or a program's port has none.
+                const model::PortApplication &a = *config.application;
+                const bool numbered = a.answersVigorLink || a.answersModbus || a.sharedLink == 1;
+                QString second = numbered ? NetworkView::tr("station %1, %2 %3")
+                                                .arg(config.station)
+                                                .arg(config.line.baud)
+                                                .arg(model::frameFormatText(config.line))
+                                          : QStringLiteral("%1 %2")
+                                                .arg(config.line.baud)
+                                                .arg(model::frameFormatText(config.line));
                 if (config.application->sharedLink == 1 && config.station == 0)
                     second += NetworkView::tr(", %1 slaves, range %2")
                                   .arg(config.slaves)
@@ -202,6 +208,21 @@ void NetworkCanvas::relayout() {
     double top = kNetMargin;
     const double titleWidth = fmBold.horizontalAdvance(l.title.front());
     top += line * 1.6;
+    if (!l.comment.isEmpty()) {
+        // Wrapped to the boxes' width (at least 700), whole: the user wrote it.
+        double boxesWidth = 0;
+        for (const auto &box : l.boxes) {
+            double width = kNetMinBoxWidth;
+            for (const QString &h : box.head)
+                width = std::max(width, fmBold.horizontalAdvance(h) + 2 * kNetPad);
+            boxesWidth += width + kNetGap;
+        }
+        const double width = std::max(700.0, boxesWidth);
+        const QRectF bounds =
+            fm.boundingRect(QRectF(kNetMargin, top, width, 1e6), Qt::TextWordWrap, l.comment);
+        l.commentRect = QRectF(kNetMargin, top, width, bounds.height());
+        top += bounds.height() + line * 0.8;
+    }
     double bottom = top;
     for (auto &box : l.boxes) {
         double width = kNetMinBoxWidth;
@@ -254,7 +275,8 @@ void NetworkCanvas::relayout() {
         busY += kNetBusStep;
         ++index;
     }
-    l.size = QSizeF(std::max(x - kNetGap + kNetMargin + 80, titleWidth + 2 * kNetMargin),
+    l.size = QSizeF(std::max({x - kNetGap + kNetMargin + 80, titleWidth + 2 * kNetMargin,
+                              l.commentRect.right() + kNetMargin}),
                     (l.buses.empty() ? bottom : busY) + kNetMargin + line);
     m_layout = std::move(l);
     setFixedSize((m_layout.size * m_view->zoom()).toSize());
@@ -277,7 +299,7 @@ QString NetworkCanvas::itemAt(QPointF p) const {
             if (std::abs(p.x() - dropX) <= 4 && p.y() >= anchor.y() && p.y() <= bus.y)
                 return QStringLiteral("wire:") + bus.wire;
         }
-        if (std::abs(p.y() - bus.y) <= 4 && p.x() >= x0 - 40 && p.x() <= x1 + 4)
+        if (std::abs(p.y() - bus.y) <= 4 && p.x() >= x0 - 8 && p.x() <= x1 + 4)
             return QStringLiteral("wire:") + bus.wire;
     }
     return {};
@@ -302,6 +324,11 @@ void NetworkCanvas::paintEvent(QPaintEvent *) {
     p.setFont(bold);
     p.setPen(ink);
     p.drawText(m_layout.titleRect, Qt::AlignLeft | Qt::AlignVCenter, m_layout.title.front());
+    if (!m_layout.comment.isEmpty()) {
+        p.setFont(font());
+        p.setPen(faint);
+        p.drawText(m_layout.commentRect, Qt::TextWordWrap, m_layout.comment);
+    }
 
     for (const auto &bus : m_layout.buses) {
         const bool on = selected == QStringLiteral("wire:") + bus.wire;
@@ -316,10 +343,15 @@ void NetworkCanvas::paintEvent(QPaintEvent *) {
             x1 = std::max(x1, dropX);
         }
         if (!bus.drops.empty())
-            p.drawLine(QPointF(x0 - 36, bus.y), QPointF(x1, bus.y));
+            p.drawLine(QPointF(x0 - 8, bus.y), QPointF(x1, bus.y));
         p.setFont(font());
-        p.drawText(QRectF(x0 - 36, bus.y - line - 1, 200, line), Qt::AlignLeft | Qt::AlignBottom,
-                   bus.wire);
+        // The wire's name left of its bus; a link without frames says so after it.
+        const QString label =
+            NetworkView::tr("dashed: no frames on the wire (the manual does not publish them)");
+        p.drawText(QRectF(x0 - 8 - 400 - 6, bus.y - line / 2, 400, line),
+                   Qt::AlignRight | Qt::AlignVCenter, bus.wire);
+        if (!bus.framed)
+            p.drawText(QRectF(x0, bus.y + 2, 2000, line), Qt::AlignLeft | Qt::AlignTop, label);
     }
 
     for (const auto &box : m_layout.boxes) {
