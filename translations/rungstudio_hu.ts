@@ -180,8 +180,7 @@
     <message>
         <location filename="../app/cli/cli.cpp" line="+61"/>
         <location line="+48"/>
-        <location filename="../app/cli/cli_network.cpp" line="+145"/>
-        <location line="+54"/>
+        <location filename="../app/cli/cli_network.cpp" line="+147"/>
         <source>unexpected argument %1</source>
         <translation>váratlan argumentum: %1</translation>
     </message>
@@ -279,7 +278,7 @@ Kilépési kód: 0 nincs hiba, 1 a programban hiba van, 2 használati vagy I/O h
     </message>
     <message>
         <location line="+18"/>
-        <location filename="../app/cli/cli_network.cpp" line="-11"/>
+        <location filename="../app/cli/cli_network.cpp" line="+52"/>
         <location filename="../app/cli/cli_plcopen.cpp" line="+36"/>
         <location line="+3"/>
         <source>error</source>
@@ -2017,7 +2016,7 @@ Ctrl+Z / Ctrl+Y: visszavonás / mégis, Ctrl+görgő: nagyítás, F4: a program 
 <context>
     <name>rung::app::Network</name>
     <message>
-        <location filename="../app/cli/cli_network.cpp" line="-165"/>
+        <location filename="../app/cli/cli_network.cpp" line="-176"/>
         <source>usage:</source>
         <translation>használat:</translation>
     </message>
@@ -2041,7 +2040,7 @@ Ctrl+Z / Ctrl+Y: visszavonás / mégis, Ctrl+görgő: nagyítás, F4: a program 
         <translation>a --traffic után fájlnév kell</translation>
     </message>
     <message>
-        <location line="+5"/>
+        <location line="+6"/>
         <source>%1: a network file names each station&apos;s PLC</source>
         <translation>%1: a hálózatfájl minden állomás PLC-jét maga nevezi meg</translation>
     </message>
@@ -2057,7 +2056,7 @@ Ctrl+Z / Ctrl+Y: visszavonás / mégis, Ctrl+görgő: nagyítás, F4: a program 
         <translation>%1: %2. sor: futási hiba a(z) %3. lépésnél: %4</translation>
     </message>
     <message>
-        <location line="+30"/>
+        <location line="+40"/>
         <source>%1: %2: %3</source>
         <translation>%1: %2: %3</translation>
     </message>
@@ -2073,7 +2072,7 @@ Ctrl+Z / Ctrl+Y: visszavonás / mégis, Ctrl+görgő: nagyítás, F4: a program 
         <translation>%1: %2: %3: %4</translation>
     </message>
     <message>
-        <location line="+22"/>
+        <location line="+16"/>
         <source>%1: no bridges: nothing of the network reaches a real line (&quot;bridges&quot;, docs/network-format.md); simulate runs it on virtual time</source>
         <translation>%1: nincsenek hidak: a hálózatból semmi sem jut el valódi vonalra („bridges”, docs/network-format.md); a simulate virtuális időben futtatja</translation>
     </message>
@@ -2081,6 +2080,683 @@ Ctrl+Z / Ctrl+Y: visszavonás / mégis, Ctrl+görgő: nagyítás, F4: a program 
         <location line="+24"/>
         <source>%1 runs in real time; stop it with Ctrl+C</source>
         <translation>a(z) %1 valós időben fut; leállítás: Ctrl+C</translation>
+    </message>
+</context>
+<context>
+    <name>rung::app::NetworkDocument</name>
+    <message>
+        <location filename="../app/gui/network_document.cpp" line="+55"/>
+        <source>pseudo-terminal</source>
+        <translation>pszeudoterminál</translation>
+    </message>
+    <message>
+        <location line="+2"/>
+        <source>serial port</source>
+        <translation>soros port</translation>
+    </message>
+    <message>
+        <location line="+2"/>
+        <source>TCP connection</source>
+        <translation>TCP-kapcsolat</translation>
+    </message>
+    <message>
+        <location line="+2"/>
+        <source>TCP listener</source>
+        <translation>TCP-figyelő</translation>
+    </message>
+    <message>
+        <location line="+39"/>
+        <source>The network has no file yet: use Save As</source>
+        <translation>A hálózatnak még nincs fájlja: használja a Mentés másként parancsot</translation>
+    </message>
+    <message>
+        <location line="+28"/>
+        <source>Untitled network</source>
+        <translation>Névtelen hálózat</translation>
+    </message>
+    <message>
+        <location line="+54"/>
+        <source>%1: cannot read the program (%2)</source>
+        <translation>%1: a program nem olvasható (%2)</translation>
+    </message>
+    <message>
+        <location line="+95"/>
+        <source>&quot;%1&quot; is no station name (letters, digits, _ and -, at most 32)</source>
+        <translation>„%1” nem állomásnév (betűk, számjegyek, _ és -, legfeljebb 32)</translation>
+    </message>
+    <message>
+        <location line="+4"/>
+        <source>A station or device is already named &quot;%1&quot;</source>
+        <translation>Már van „%1” nevű állomás vagy eszköz</translation>
+    </message>
+    <message>
+        <location line="+4"/>
+        <source>%1: no such program</source>
+        <translation>%1: nincs ilyen program</translation>
+    </message>
+    <message>
+        <location line="+4"/>
+        <location line="+29"/>
+        <source>&quot;%1&quot; is no target</source>
+        <translation>„%1” nem célrendszer</translation>
+    </message>
+    <message>
+        <location line="-20"/>
+        <source>Add Station %1</source>
+        <translation>%1 állomás hozzáadása</translation>
+    </message>
+    <message>
+        <location line="+24"/>
+        <source>%1 has no model &quot;%2&quot;</source>
+        <translation>A(z) %1 rendszernek nincs „%2” modellje</translation>
+    </message>
+    <message>
+        <location line="+10"/>
+        <source>%1 exists already: choose another name</source>
+        <translation>%1 már létezik: válasszon másik nevet</translation>
+    </message>
+    <message>
+        <location line="+32"/>
+        <source>wire %1 (%2) goes: fewer than two ends are left</source>
+        <translation>a(z) %1 vezeték (%2) megszűnik: kettőnél kevesebb végpontja marad</translation>
+    </message>
+    <message>
+        <location line="+4"/>
+        <source>the fault %1 on wire %2 goes</source>
+        <translation>a(z) %2 vezeték %1 hibája megszűnik</translation>
+    </message>
+    <message>
+        <location line="+2"/>
+        <source>%1 comes off wire %2</source>
+        <translation>%1 lekerül a(z) %2 vezetékről</translation>
+    </message>
+    <message>
+        <location line="+5"/>
+        <source>the bridge of %1 (%2) goes</source>
+        <translation>a(z) %1 hídja (%2) megszűnik</translation>
+    </message>
+    <message>
+        <location line="+3"/>
+        <source>the fault %1 (silent) goes</source>
+        <translation>a(z) %1 hiba (néma) megszűnik</translation>
+    </message>
+    <message>
+        <location line="+6"/>
+        <location line="+32"/>
+        <location line="+93"/>
+        <source>No station is named &quot;%1&quot;</source>
+        <translation>Nincs „%1” nevű állomás</translation>
+    </message>
+    <message>
+        <location line="-108"/>
+        <source>Remove Station %1</source>
+        <translation>%1 állomás eltávolítása</translation>
+    </message>
+    <message>
+        <location line="+9"/>
+        <source>No station port or device is named &quot;%1&quot;</source>
+        <translation>Nincs „%1” nevű állomásport vagy eszköz</translation>
+    </message>
+    <message>
+        <location line="+13"/>
+        <source>%1 (%2 %3) has no port %4</source>
+        <translation>A(z) %1 (%2 %3) állomásnak nincs %4 portja</translation>
+    </message>
+    <message>
+        <location line="+8"/>
+        <source>A wire joins two different ends</source>
+        <translation>Egy vezeték két különböző végpontot köt össze</translation>
+    </message>
+    <message>
+        <location line="+14"/>
+        <source>%1 and %2 are on wire %3 already</source>
+        <translation>%1 és %2 már a(z) %3 vezetéken van</translation>
+    </message>
+    <message>
+        <location line="+29"/>
+        <source>Connect %1 to %2</source>
+        <translation>%1 összekötése ezzel: %2</translation>
+    </message>
+    <message>
+        <location line="+12"/>
+        <source>Disconnect %1</source>
+        <translation>%1 leválasztása</translation>
+    </message>
+    <message>
+        <location line="+3"/>
+        <source>%1 is on no wire</source>
+        <translation>%1 nincs vezetéken</translation>
+    </message>
+    <message>
+        <location line="+9"/>
+        <source>Remove Wire %1</source>
+        <translation>%1 vezeték eltávolítása</translation>
+    </message>
+    <message>
+        <location line="+3"/>
+        <source>No wire is named &quot;%1&quot;</source>
+        <translation>Nincs „%1” nevű vezeték</translation>
+    </message>
+    <message>
+        <location line="+33"/>
+        <source>Port Settings of %1/%2</source>
+        <translation>%1/%2 port beállításai</translation>
+    </message>
+    <message>
+        <location line="+6"/>
+        <source>A bridge goes from a station&apos;s port (STATION/PORT), not from &quot;%1&quot;</source>
+        <translation>A híd egy állomás portjából indul (ÁLLOMÁS/PORT), nem ebből: „%1”</translation>
+    </message>
+    <message>
+        <location line="+8"/>
+        <source>%1 has a bridge already</source>
+        <translation>%1 már rendelkezik híddal</translation>
+    </message>
+    <message>
+        <location line="+4"/>
+        <source>A %1 bridge needs where it goes</source>
+        <translation>A híd (%1) célját meg kell adni</translation>
+    </message>
+    <message>
+        <location line="+9"/>
+        <source>&quot;%1&quot; is not HOST:PORT</source>
+        <translation>„%1” nem GÉP:PORT alakú</translation>
+    </message>
+    <message>
+        <location line="+12"/>
+        <source>%1 runs %2, whose frames are not published: it cannot be bridged</source>
+        <translation>%1 a(z) %2 protokollt futtatja, amelynek keretei nem publikusak: nem köthető hídra</translation>
+    </message>
+    <message>
+        <location line="+7"/>
+        <source>Add Bridge %1</source>
+        <translation>%1 híd hozzáadása</translation>
+    </message>
+    <message>
+        <location line="+8"/>
+        <source>%1 has no bridge</source>
+        <translation>%1 nem rendelkezik híddal</translation>
+    </message>
+    <message>
+        <location line="+3"/>
+        <source>Remove Bridge %1</source>
+        <translation>%1 híd eltávolítása</translation>
+    </message>
+    <message>
+        <location line="+6"/>
+        <source>The period is 1 to 1000000 ms, not %1</source>
+        <translation>A ciklusidő 1 és 1000000 ms között lehet, nem %1</translation>
+    </message>
+    <message>
+        <location line="+8"/>
+        <source>Network Period %1 ms</source>
+        <translation>Hálózati ciklusidő: %1 ms</translation>
+    </message>
+</context>
+<context>
+    <name>rung::app::NetworkPortDialog</name>
+    <message>
+        <location filename="../app/gui/network_port_dialog.cpp" line="+65"/>
+        <source>Port Settings: %1</source>
+        <translation>Port beállításai: %1</translation>
+    </message>
+    <message>
+        <location line="+3"/>
+        <source>%1 %2, port %3</source>
+        <translation>%1 %2, %3 port</translation>
+    </message>
+    <message>
+        <location line="+23"/>
+        <source>&amp;Application:</source>
+        <translation>&amp;Alkalmazás:</translation>
+    </message>
+    <message>
+        <location line="+1"/>
+        <source>&amp;Station number:</source>
+        <translation>Á&amp;llomásszám:</translation>
+    </message>
+    <message>
+        <location line="+1"/>
+        <source>&amp;Baud rate:</source>
+        <translation>Átviteli &amp;sebesség (baud):</translation>
+    </message>
+    <message>
+        <location line="+1"/>
+        <source>&amp;Format:</source>
+        <translation>&amp;Formátum:</translation>
+    </message>
+    <message>
+        <location line="+5"/>
+        <source>CPU Link master (station 0)</source>
+        <translation>CPU Link master (0. állomás)</translation>
+    </message>
+    <message>
+        <location line="+6"/>
+        <source> x 10 ms</source>
+        <translation> x 10 ms</translation>
+    </message>
+    <message>
+        <location line="+1"/>
+        <source>Total s&amp;laves (1..7):</source>
+        <translation>S&amp;lave-ek száma (1..7):</translation>
+    </message>
+    <message>
+        <location line="+1"/>
+        <source>&amp;Transfer range mode (1..3):</source>
+        <translation>Átviteli &amp;tartomány módja (1..3):</translation>
+    </message>
+    <message>
+        <location line="+1"/>
+        <source>&amp;Retries (0..255):</source>
+        <translation>Ismét&amp;lések (0..255):</translation>
+    </message>
+    <message>
+        <location line="+1"/>
+        <source>T&amp;ime-out (1..255):</source>
+        <translation>&amp;Időtúllépés (1..255):</translation>
+    </message>
+    <message>
+        <location line="+3"/>
+        <source>Parallel Link</source>
+        <translation>Parallel Link</translation>
+    </message>
+    <message>
+        <location line="+3"/>
+        <source>Master</source>
+        <translation>Master</translation>
+    </message>
+    <message>
+        <location line="+1"/>
+        <source>Slave</source>
+        <translation>Slave</translation>
+    </message>
+    <message>
+        <location line="+2"/>
+        <source>Low speed</source>
+        <translation>Alacsony sebesség</translation>
+    </message>
+    <message>
+        <location line="+1"/>
+        <source>High speed</source>
+        <translation>Nagy sebesség</translation>
+    </message>
+    <message>
+        <location line="+1"/>
+        <source>R&amp;ole:</source>
+        <translation>S&amp;zerep:</translation>
+    </message>
+    <message>
+        <location line="+1"/>
+        <source>S&amp;peed (the master&apos;s decides):</source>
+        <translation>Se&amp;besség (a masteré dönt):</translation>
+    </message>
+    <message>
+        <location line="+3"/>
+        <source>MODBUS</source>
+        <translation>MODBUS</translation>
+    </message>
+    <message>
+        <location line="+5"/>
+        <source>&amp;Mode:</source>
+        <translation>&amp;Mód:</translation>
+    </message>
+    <message>
+        <location line="+3"/>
+        <source>Start and end characters</source>
+        <translation>Kezdő- és zárókarakter</translation>
+    </message>
+    <message>
+        <location line="+4"/>
+        <location line="+1"/>
+        <source>none</source>
+        <translation>nincs</translation>
+    </message>
+    <message>
+        <location line="+1"/>
+        <source>Start c&amp;haracter (0..255):</source>
+        <translation>&amp;Kezdőkarakter (0..255):</translation>
+    </message>
+    <message>
+        <location line="+1"/>
+        <source>&amp;End character (0..255):</source>
+        <translation>&amp;Zárókarakter (0..255):</translation>
+    </message>
+    <message>
+        <location line="+25"/>
+        <location line="+88"/>
+        <location line="+10"/>
+        <source>%1 (default)</source>
+        <translation>%1 (alapértelmezett)</translation>
+    </message>
+    <message>
+        <location line="-37"/>
+        <source>%1 %2 has no such port</source>
+        <translation>A(z) %1 %2 rendszernek nincs ilyen portja</translation>
+    </message>
+    <message>
+        <location line="+13"/>
+        <source>default: %1</source>
+        <translation>alapértelmezett: %1</translation>
+    </message>
+    <message>
+        <location line="+6"/>
+        <source>%1..%2, default %3</source>
+        <translation>%1..%2, alapértelmezett: %3</translation>
+    </message>
+    <message>
+        <location line="+11"/>
+        <source>%1 (not a rate of %2)</source>
+        <translation>%1 (nem a(z) %2 sebessége)</translation>
+    </message>
+    <message>
+        <location line="+14"/>
+        <source>%1 always uses %2</source>
+        <translation>A(z) %1 mindig %2 formátumú</translation>
+    </message>
+    <message>
+        <location line="+61"/>
+        <source>the project&apos;s settings</source>
+        <translation>a projekt beállításai</translation>
+    </message>
+    <message>
+        <location line="+37"/>
+        <source>Port Settings</source>
+        <translation>Port beállításai</translation>
+    </message>
+    <message>
+        <location line="+1"/>
+        <source>The %1 %2&apos;s port:</source>
+        <translation>A(z) %1 %2 portja:</translation>
+    </message>
+</context>
+<context>
+    <name>rung::app::NetworkStationDialog</name>
+    <message>
+        <location filename="../app/gui/network_station_dialog.cpp" line="+25"/>
+        <source>Add New Project Station</source>
+        <translation>Állomás új projekttel</translation>
+    </message>
+    <message>
+        <location line="+11"/>
+        <source>&amp;Browse...</source>
+        <translation>&amp;Tallózás...</translation>
+    </message>
+    <message>
+        <location line="+4"/>
+        <source>&amp;Name:</source>
+        <translation>&amp;Név:</translation>
+    </message>
+    <message>
+        <location line="+1"/>
+        <source>&amp;PLC:</source>
+        <translation>&amp;PLC:</translation>
+    </message>
+    <message>
+        <location line="+1"/>
+        <source>&amp;Model:</source>
+        <translation>&amp;Modell:</translation>
+    </message>
+    <message>
+        <location line="+1"/>
+        <source>Project &amp;file:</source>
+        <translation>Projekt&amp;fájl:</translation>
+    </message>
+    <message>
+        <location line="+27"/>
+        <source>New Project</source>
+        <translation>Új projekt</translation>
+    </message>
+    <message>
+        <location line="+1"/>
+        <source>Rung Studio projects (*.rung)</source>
+        <translation>Rung Studio projektek (*.rung)</translation>
+    </message>
+    <message>
+        <location line="+25"/>
+        <source>A name is letters, digits, _ and -, at most 32</source>
+        <translation>A név betűkből, számjegyekből, _ és - jelekből áll, legfeljebb 32</translation>
+    </message>
+    <message>
+        <location line="+2"/>
+        <source>A station or device is already named &quot;%1&quot;</source>
+        <translation>Már van „%1” nevű állomás vagy eszköz</translation>
+    </message>
+    <message>
+        <location line="+2"/>
+        <source>Choose where the project is saved</source>
+        <translation>Válassza ki, hová kerüljön a projekt</translation>
+    </message>
+    <message>
+        <location line="+2"/>
+        <source>%1 exists already: a new project never overwrites a file</source>
+        <translation>%1 már létezik: egy új projekt sosem ír felül fájlt</translation>
+    </message>
+</context>
+<context>
+    <name>rung::app::NetworkView</name>
+    <message>
+        <location filename="../app/gui/network_view.cpp" line="+117"/>
+        <source>%1: scan period %2 ms</source>
+        <translation>%1: ciklusidő %2 ms</translation>
+    </message>
+    <message>
+        <location line="+12"/>
+        <source>scan period %1 ms</source>
+        <translation>ciklusidő %1 ms</translation>
+    </message>
+    <message>
+        <location line="+2"/>
+        <source>program not readable</source>
+        <translation>a program nem olvasható</translation>
+    </message>
+    <message>
+        <location line="+19"/>
+        <source>station %1, %2 %3</source>
+        <translation>%1. állomás, %2 %3</translation>
+    </message>
+    <message>
+        <location line="+8"/>
+        <source>, %1 slaves, range %2</source>
+        <translation>, %1 slave, %2. tartomány</translation>
+    </message>
+    <message>
+        <location line="+5"/>
+        <source>master</source>
+        <translation>master</translation>
+    </message>
+    <message>
+        <location line="+1"/>
+        <source>slave</source>
+        <translation>slave</translation>
+    </message>
+    <message>
+        <location line="+3"/>
+        <source>settings refused</source>
+        <translation>a beállítások hibásak</translation>
+    </message>
+    <message>
+        <location line="+8"/>
+        <source>bridge: pseudo-terminal</source>
+        <translation>híd: pszeudoterminál</translation>
+    </message>
+    <message>
+        <location line="+1"/>
+        <source>bridge: serial %1</source>
+        <translation>híd: soros port %1</translation>
+    </message>
+    <message>
+        <location line="+1"/>
+        <source>bridge: TCP to %1</source>
+        <translation>híd: TCP ide: %1</translation>
+    </message>
+    <message>
+        <location line="+1"/>
+        <source>bridge: listens on %1</source>
+        <translation>híd: figyel itt: %1</translation>
+    </message>
+    <message>
+        <location line="+12"/>
+        <source>MODBUS slave (simulated)</source>
+        <translation>MODBUS slave (szimulált)</translation>
+    </message>
+    <message>
+        <location line="+1"/>
+        <source>serial line (simulated)</source>
+        <translation>soros vonal (szimulált)</translation>
+    </message>
+    <message>
+        <location line="+7"/>
+        <source>station %1, %2</source>
+        <translation>%1. állomás, %2</translation>
+    </message>
+    <message>
+        <location line="+152"/>
+        <source>dashed: no frames on the wire (the manual does not publish them)</source>
+        <translation>szaggatott: a vezetéken nincsenek keretek (a kézikönyv nem közli őket)</translation>
+    </message>
+    <message>
+        <location line="+210"/>
+        <source>Network</source>
+        <translation>Hálózat</translation>
+    </message>
+    <message>
+        <location line="+17"/>
+        <source>%1 is a simulated device: edit it in the network file</source>
+        <translation>%1 szimulált eszköz: a hálózatfájlban szerkeszthető</translation>
+    </message>
+    <message>
+        <location line="+6"/>
+        <source>Remove Station</source>
+        <translation>Állomás eltávolítása</translation>
+    </message>
+    <message>
+        <location line="+1"/>
+        <source>Remove station %1? With it:
+%2
+(Edit &gt; Undo brings it back.)</source>
+        <translation>Eltávolítja a(z) %1 állomást? Vele együtt:
+%2
+(A Szerkesztés &gt; Visszavonás visszahozza.)</translation>
+    </message>
+    <message>
+        <location line="+25"/>
+        <source>Add Station from Program</source>
+        <translation>Állomás programból</translation>
+    </message>
+    <message>
+        <location line="+1"/>
+        <source>Programs (*.rung *.il *.ladder);;All files (*)</source>
+        <translation>Programok (*.rung *.il *.ladder);;Minden fájl (*)</translation>
+    </message>
+    <message>
+        <location line="+26"/>
+        <source>Network Period</source>
+        <translation>Hálózati ciklusidő</translation>
+    </message>
+    <message>
+        <location line="+0"/>
+        <source>Scan period of the stations that give none (ms):</source>
+        <translation>A saját ciklusidőt nem adó állomások ciklusideje (ms):</translation>
+    </message>
+    <message>
+        <location line="+9"/>
+        <source>Add &amp;Bridge</source>
+        <translation>&amp;Híd hozzáadása</translation>
+    </message>
+    <message>
+        <location line="+7"/>
+        <source>Add Bridge</source>
+        <translation>Híd hozzáadása</translation>
+    </message>
+    <message>
+        <location line="+9"/>
+        <source>&amp;Pseudo-terminal</source>
+        <translation>&amp;Pszeudoterminál</translation>
+    </message>
+    <message>
+        <location line="+1"/>
+        <source>&amp;Serial Port...</source>
+        <translation>&amp;Soros port...</translation>
+    </message>
+    <message>
+        <location line="+1"/>
+        <source>Serial port:</source>
+        <translation>Soros port:</translation>
+    </message>
+    <message>
+        <location line="+2"/>
+        <source>&amp;TCP Connect...</source>
+        <translation>&amp;TCP-kapcsolódás...</translation>
+    </message>
+    <message>
+        <location line="+1"/>
+        <source>Serial device server (HOST:PORT):</source>
+        <translation>Soros eszközszerver (GÉP:PORT):</translation>
+    </message>
+    <message>
+        <location line="+2"/>
+        <source>TCP &amp;Listen...</source>
+        <translation>TCP-&amp;figyelés...</translation>
+    </message>
+    <message>
+        <location line="+1"/>
+        <source>Listen on (ADDRESS:PORT):</source>
+        <translation>Figyelés itt (CÍM:PORT):</translation>
+    </message>
+    <message>
+        <location line="+11"/>
+        <source>Port &amp;Settings...</source>
+        <translation>Port &amp;beállításai...</translation>
+    </message>
+    <message>
+        <location line="+2"/>
+        <source>&amp;Disconnect</source>
+        <translation>&amp;Leválasztás</translation>
+    </message>
+    <message>
+        <location line="+9"/>
+        <source>Remove &amp;Bridge</source>
+        <translation>&amp;Híd eltávolítása</translation>
+    </message>
+    <message>
+        <location line="+21"/>
+        <source>Add New Pro&amp;ject Station...</source>
+        <translation>Állomás új pro&amp;jekttel...</translation>
+    </message>
+    <message>
+        <location line="+1"/>
+        <source>&amp;Network Period...</source>
+        <translation>&amp;Hálózati ciklusidő...</translation>
+    </message>
+    <message>
+        <location line="+3"/>
+        <source>Zoom O&amp;ut</source>
+        <translation>&amp;Kicsinyítés</translation>
+    </message>
+    <message>
+        <location line="-15"/>
+        <source>Remove &amp;Wire</source>
+        <translation>&amp;Vezeték eltávolítása</translation>
+    </message>
+    <message>
+        <location line="+2"/>
+        <source>&amp;Open Program</source>
+        <translation>Program &amp;megnyitása</translation>
+    </message>
+    <message>
+        <location line="+2"/>
+        <source>&amp;Remove Station %1...</source>
+        <translation>%1 állomás &amp;eltávolítása...</translation>
+    </message>
+    <message>
+        <location line="+6"/>
+        <source>Add Station from &amp;Program...</source>
+        <translation>Állomás &amp;programból...</translation>
+    </message>
+    <message>
+        <location line="+4"/>
+        <source>Zoom &amp;In</source>
+        <translation>&amp;Nagyítás</translation>
     </message>
 </context>
 <context>
@@ -2121,12 +2797,12 @@ Ctrl+Z / Ctrl+Y: visszavonás / mégis, Ctrl+görgő: nagyítás, F4: a program 
         <translation>a --port, a --tcp és a --pty közül pontosan egyet adjon meg</translation>
     </message>
     <message>
-        <location line="+4"/>
+        <location line="+5"/>
         <source>modbus-tcp needs --tcp HOST:PORT (for RTU frames on a port: modbus)</source>
         <translation>a modbus-tcp a --tcp HOST:PORT kapcsolót igényli (RTU keretekhez porton: modbus)</translation>
     </message>
     <message>
-        <location line="+10"/>
+        <location line="+8"/>
         <source>--tcp needs HOST:PORT, e.g. 127.0.0.1:502; got %1</source>
         <translation>a --tcp HOST:PORT alakú értéket vár, pl. 127.0.0.1:502; kapott érték: %1</translation>
     </message>
@@ -2136,12 +2812,12 @@ Ctrl+Z / Ctrl+Y: visszavonás / mégis, Ctrl+görgő: nagyítás, F4: a program 
         <translation>%1 értéke %2 és %3 közötti szám legyen; kapott érték: %4</translation>
     </message>
     <message>
-        <location line="+16"/>
+        <location line="+17"/>
         <source>--frame must be data bits, parity and stop bits, e.g. 8N1 or 7E2; got %1</source>
         <translation>a --frame adatbitek, paritás és stopbitek megadása, pl. 8N1 vagy 7E2; kapott érték: %1</translation>
     </message>
     <message>
-        <location line="+6"/>
+        <location line="+5"/>
         <source>no device given</source>
         <translation>nincs megadva operandus</translation>
     </message>
@@ -2848,7 +3524,7 @@ A FÁJL utasításlista (.il), létradiagram-szöveg (.ladder) vagy projekt (.ru
         <translation>%1 után érték kell</translation>
     </message>
     <message>
-        <location line="+13"/>
+        <location line="+14"/>
         <source>unexpected argument %1</source>
         <translation>váratlan argumentum: %1</translation>
     </message>
@@ -2860,7 +3536,7 @@ A FÁJL utasításlista (.il), létradiagram-szöveg (.ladder) vagy projekt (.ru
         <translation>a program nem indul el</translation>
     </message>
     <message>
-        <location filename="../app/cli/cli_simulate.cpp" line="+28"/>
+        <location filename="../app/cli/cli_simulate.cpp" line="+29"/>
         <source>runtime error at step %1: %2</source>
         <translation>futási hiba a(z) %1. lépésnél: %2</translation>
     </message>
@@ -7484,7 +8160,7 @@ Kiértékelés: %4 µs (%5..%6)</translation>
     </message>
     <message>
         <location line="+5"/>
-        <location filename="../model/target/target_pl110.cpp" line="+107"/>
+        <location filename="../model/target/target_pl110.cpp" line="+108"/>
         <location filename="../model/target/target_vigor.cpp" line="+95"/>
         <location filename="../model/target/target_vpc.cpp" line="+5"/>
         <source>Start a block with a normally open contact</source>
@@ -7825,7 +8501,7 @@ Kiértékelés: %4 µs (%5..%6)</translation>
         <translation>A program vége</translation>
     </message>
     <message>
-        <location filename="../model/target/target_pl110.cpp" line="-405"/>
+        <location filename="../model/target/target_pl110.cpp" line="-406"/>
         <source>IF contact: ON while S1 ? S2 is true</source>
         <translation>IF érintkező: BE, amíg S1 ? S2 igaz</translation>
     </message>
@@ -7971,7 +8647,7 @@ Kiértékelés: %4 µs (%5..%6)</translation>
         <translation>legnagyobb ciklusidő (0,1 ms)</translation>
     </message>
     <message>
-        <location line="+12"/>
+        <location line="+13"/>
         <source>the encoders&apos; load bits and the stepper motor output on AQ1 are not modelled; the word is plain memory</source>
         <translation>az enkóderek betöltőbitjeit és az AQ1 léptetőmotor-kimenetét a szimulátor nem modellezi; a szó egyszerű memória</translation>
     </message>
@@ -9465,37 +10141,37 @@ Kiértékelés: %4 µs (%5..%6)</translation>
         <translation>%1: a hálózatfájl „stations” és „wires” kulcsú JSON-objektum</translation>
     </message>
     <message>
-        <location line="+25"/>
+        <location line="+28"/>
         <source>stations: a network needs at least one station</source>
         <translation>stations: a hálózathoz legalább egy állomás kell</translation>
     </message>
     <message>
         <location line="+4"/>
-        <location line="+42"/>
-        <location line="+60"/>
+        <location line="+43"/>
+        <location line="+61"/>
         <location line="+41"/>
         <source>%1: needs an object</source>
         <translation>%1: objektum kell</translation>
     </message>
     <message>
-        <location line="-125"/>
-        <location line="+33"/>
+        <location line="-127"/>
+        <location line="+34"/>
         <source>%1: &quot;%2&quot; is no name (letters, digits, _ and -, at most 32)</source>
         <translation>%1: a(z) „%2” nem név (betűk, számjegyek, _ és -, legfeljebb 32)</translation>
     </message>
     <message>
-        <location line="-30"/>
-        <location line="+33"/>
+        <location line="-31"/>
+        <location line="+34"/>
         <source>%1: a second &quot;%2&quot;; names are unique</source>
         <translation>%1: második „%2”; a neveknek egyedinek kell lenniük</translation>
     </message>
     <message>
-        <location line="-28"/>
+        <location line="-29"/>
         <source>%1: needs an object of ports</source>
         <translation>%1: portokat tartalmazó objektum kell</translation>
     </message>
     <message>
-        <location line="+5"/>
+        <location line="+6"/>
         <source>%1: needs an object of settings</source>
         <translation>%1: beállításokat tartalmazó objektum kell</translation>
     </message>
@@ -9505,7 +10181,7 @@ Kiértékelés: %4 µs (%5..%6)</translation>
         <translation>%1: a(z) „%2” nem eszköztípus (modbus-slave, line)</translation>
     </message>
     <message>
-        <location line="+23"/>
+        <location line="+24"/>
         <source>%1: needs a list of ends, [&quot;a/CP2&quot;, &quot;b/CP2&quot;]</source>
         <translation>%1: végpontok listája kell, [&quot;a/CP2&quot;, &quot;b/CP2&quot;]</translation>
     </message>
@@ -9530,7 +10206,7 @@ Kiértékelés: %4 µs (%5..%6)</translation>
         <translation>%1: a híd ezek egyikéhez vezet: &quot;pty&quot;: true, &quot;serial&quot;: &quot;/dev/ttyUSB0&quot;, &quot;tcp&quot;: &quot;HOST:PORT&quot;, &quot;listen&quot;: &quot;HOST:PORT&quot;</translation>
     </message>
     <message>
-        <location line="+49"/>
+        <location line="+52"/>
         <source>%1: &quot;to&quot; comes before &quot;from&quot;</source>
         <translation>%1: a „to” a „from” elé esik</translation>
     </message>
@@ -9538,6 +10214,21 @@ Kiértékelés: %4 µs (%5..%6)</translation>
         <location line="+17"/>
         <source>%1: &quot;%2&quot; is no fault (cut, silent, corrupt)</source>
         <translation>%1: a(z) „%2” nem hibafajta (cut, silent, corrupt)</translation>
+    </message>
+    <message>
+        <location filename="../network/network_write.cpp" line="+221"/>
+        <source>%1: %2 items where there were %3</source>
+        <translation>%1: %2 elem, holott %3 volt</translation>
+    </message>
+    <message>
+        <location line="+9"/>
+        <source>%1[%2]: written differently</source>
+        <translation>%1[%2]: másképp íródott ki</translation>
+    </message>
+    <message>
+        <location line="+120"/>
+        <source>%1: cannot write the network (%2)</source>
+        <translation>%1: a hálózat nem írható ki (%2)</translation>
     </message>
 </context>
 <context>
@@ -10113,7 +10804,7 @@ Kiértékelés: %4 µs (%5..%6)</translation>
         <translation>nincs program: a forgatókönyv „program FÁJL” sorral kezdődik</translation>
     </message>
     <message>
-        <location filename="../simulator/scenario_run.cpp" line="+101"/>
+        <location filename="../simulator/scenario_run.cpp" line="+100"/>
         <source>&quot;%1&quot; is not understood here</source>
         <translation>„%1” itt nem értelmezhető</translation>
     </message>

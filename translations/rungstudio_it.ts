@@ -180,8 +180,7 @@
     <message>
         <location filename="../app/cli/cli.cpp" line="+61"/>
         <location line="+48"/>
-        <location filename="../app/cli/cli_network.cpp" line="+145"/>
-        <location line="+54"/>
+        <location filename="../app/cli/cli_network.cpp" line="+147"/>
         <source>unexpected argument %1</source>
         <translation>argomento non previsto: %1</translation>
     </message>
@@ -279,7 +278,7 @@ Codice di uscita: 0 nessun errore, 1 il programma contiene errori, 2 errore di u
     </message>
     <message>
         <location line="+18"/>
-        <location filename="../app/cli/cli_network.cpp" line="-11"/>
+        <location filename="../app/cli/cli_network.cpp" line="+52"/>
         <location filename="../app/cli/cli_plcopen.cpp" line="+36"/>
         <location line="+3"/>
         <source>error</source>
@@ -2024,7 +2023,7 @@ Ctrl+Z / Ctrl+Y: annulla / ripeti, Ctrl+rotellina: zoom, F4: verifica il program
 <context>
     <name>rung::app::Network</name>
     <message>
-        <location filename="../app/cli/cli_network.cpp" line="-165"/>
+        <location filename="../app/cli/cli_network.cpp" line="-176"/>
         <source>usage:</source>
         <translation>uso:</translation>
     </message>
@@ -2048,7 +2047,7 @@ Ctrl+Z / Ctrl+Y: annulla / ripeti, Ctrl+rotellina: zoom, F4: verifica il program
         <translation>--traffic richiede un file</translation>
     </message>
     <message>
-        <location line="+5"/>
+        <location line="+6"/>
         <source>%1: a network file names each station&apos;s PLC</source>
         <translation>%1: il file di rete indica il PLC di ogni stazione</translation>
     </message>
@@ -2064,7 +2063,7 @@ Ctrl+Z / Ctrl+Y: annulla / ripeti, Ctrl+rotellina: zoom, F4: verifica il program
         <translation>%1: riga %2: errore di esecuzione al passo %3: %4</translation>
     </message>
     <message>
-        <location line="+30"/>
+        <location line="+40"/>
         <source>%1: %2: %3</source>
         <translation>%1: %2: %3</translation>
     </message>
@@ -2080,7 +2079,7 @@ Ctrl+Z / Ctrl+Y: annulla / ripeti, Ctrl+rotellina: zoom, F4: verifica il program
         <translation>%1: %2: %3: %4</translation>
     </message>
     <message>
-        <location line="+22"/>
+        <location line="+16"/>
         <source>%1: no bridges: nothing of the network reaches a real line (&quot;bridges&quot;, docs/network-format.md); simulate runs it on virtual time</source>
         <translation>%1: nessun ponte: niente della rete raggiunge una linea reale (&quot;bridges&quot;, docs/network-format.md); simulate la esegue in tempo virtuale</translation>
     </message>
@@ -2088,6 +2087,683 @@ Ctrl+Z / Ctrl+Y: annulla / ripeti, Ctrl+rotellina: zoom, F4: verifica il program
         <location line="+24"/>
         <source>%1 runs in real time; stop it with Ctrl+C</source>
         <translation>%1 è in esecuzione in tempo reale; per fermarlo Ctrl+C</translation>
+    </message>
+</context>
+<context>
+    <name>rung::app::NetworkDocument</name>
+    <message>
+        <location filename="../app/gui/network_document.cpp" line="+55"/>
+        <source>pseudo-terminal</source>
+        <translation>pseudo-terminale</translation>
+    </message>
+    <message>
+        <location line="+2"/>
+        <source>serial port</source>
+        <translation>porta seriale</translation>
+    </message>
+    <message>
+        <location line="+2"/>
+        <source>TCP connection</source>
+        <translation>connessione TCP</translation>
+    </message>
+    <message>
+        <location line="+2"/>
+        <source>TCP listener</source>
+        <translation>ascolto TCP</translation>
+    </message>
+    <message>
+        <location line="+39"/>
+        <source>The network has no file yet: use Save As</source>
+        <translation>La rete non ha ancora un file: usare Salva con nome</translation>
+    </message>
+    <message>
+        <location line="+28"/>
+        <source>Untitled network</source>
+        <translation>Rete senza nome</translation>
+    </message>
+    <message>
+        <location line="+54"/>
+        <source>%1: cannot read the program (%2)</source>
+        <translation>%1: impossibile leggere il programma (%2)</translation>
+    </message>
+    <message>
+        <location line="+95"/>
+        <source>&quot;%1&quot; is no station name (letters, digits, _ and -, at most 32)</source>
+        <translation>&quot;%1&quot; non è un nome di stazione (lettere, cifre, _ e -, al massimo 32)</translation>
+    </message>
+    <message>
+        <location line="+4"/>
+        <source>A station or device is already named &quot;%1&quot;</source>
+        <translation>Esiste già una stazione o un dispositivo di nome &quot;%1&quot;</translation>
+    </message>
+    <message>
+        <location line="+4"/>
+        <source>%1: no such program</source>
+        <translation>%1: programma inesistente</translation>
+    </message>
+    <message>
+        <location line="+4"/>
+        <location line="+29"/>
+        <source>&quot;%1&quot; is no target</source>
+        <translation>&quot;%1&quot; non è una famiglia PLC</translation>
+    </message>
+    <message>
+        <location line="-20"/>
+        <source>Add Station %1</source>
+        <translation>Aggiungi stazione %1</translation>
+    </message>
+    <message>
+        <location line="+24"/>
+        <source>%1 has no model &quot;%2&quot;</source>
+        <translation>%1 non ha il modello &quot;%2&quot;</translation>
+    </message>
+    <message>
+        <location line="+10"/>
+        <source>%1 exists already: choose another name</source>
+        <translation>%1 esiste già: scegliere un altro nome</translation>
+    </message>
+    <message>
+        <location line="+32"/>
+        <source>wire %1 (%2) goes: fewer than two ends are left</source>
+        <translation>il cavo %1 (%2) viene rimosso: gli restano meno di due estremi</translation>
+    </message>
+    <message>
+        <location line="+4"/>
+        <source>the fault %1 on wire %2 goes</source>
+        <translation>il guasto %1 sul cavo %2 viene rimosso</translation>
+    </message>
+    <message>
+        <location line="+2"/>
+        <source>%1 comes off wire %2</source>
+        <translation>%1 viene staccato dal cavo %2</translation>
+    </message>
+    <message>
+        <location line="+5"/>
+        <source>the bridge of %1 (%2) goes</source>
+        <translation>il ponte di %1 (%2) viene rimosso</translation>
+    </message>
+    <message>
+        <location line="+3"/>
+        <source>the fault %1 (silent) goes</source>
+        <translation>il guasto %1 (silenzio) viene rimosso</translation>
+    </message>
+    <message>
+        <location line="+6"/>
+        <location line="+32"/>
+        <location line="+93"/>
+        <source>No station is named &quot;%1&quot;</source>
+        <translation>Nessuna stazione si chiama &quot;%1&quot;</translation>
+    </message>
+    <message>
+        <location line="-108"/>
+        <source>Remove Station %1</source>
+        <translation>Rimuovi stazione %1</translation>
+    </message>
+    <message>
+        <location line="+9"/>
+        <source>No station port or device is named &quot;%1&quot;</source>
+        <translation>Nessuna porta di stazione o dispositivo si chiama &quot;%1&quot;</translation>
+    </message>
+    <message>
+        <location line="+13"/>
+        <source>%1 (%2 %3) has no port %4</source>
+        <translation>%1 (%2 %3) non ha la porta %4</translation>
+    </message>
+    <message>
+        <location line="+8"/>
+        <source>A wire joins two different ends</source>
+        <translation>Un cavo collega due estremi diversi</translation>
+    </message>
+    <message>
+        <location line="+14"/>
+        <source>%1 and %2 are on wire %3 already</source>
+        <translation>%1 e %2 sono già sul cavo %3</translation>
+    </message>
+    <message>
+        <location line="+29"/>
+        <source>Connect %1 to %2</source>
+        <translation>Collega %1 a %2</translation>
+    </message>
+    <message>
+        <location line="+12"/>
+        <source>Disconnect %1</source>
+        <translation>Scollega %1</translation>
+    </message>
+    <message>
+        <location line="+3"/>
+        <source>%1 is on no wire</source>
+        <translation>%1 non è su alcun cavo</translation>
+    </message>
+    <message>
+        <location line="+9"/>
+        <source>Remove Wire %1</source>
+        <translation>Rimuovi cavo %1</translation>
+    </message>
+    <message>
+        <location line="+3"/>
+        <source>No wire is named &quot;%1&quot;</source>
+        <translation>Nessun cavo si chiama &quot;%1&quot;</translation>
+    </message>
+    <message>
+        <location line="+33"/>
+        <source>Port Settings of %1/%2</source>
+        <translation>Impostazioni della porta %1/%2</translation>
+    </message>
+    <message>
+        <location line="+6"/>
+        <source>A bridge goes from a station&apos;s port (STATION/PORT), not from &quot;%1&quot;</source>
+        <translation>Un ponte parte dalla porta di una stazione (STAZIONE/PORTA), non da &quot;%1&quot;</translation>
+    </message>
+    <message>
+        <location line="+8"/>
+        <source>%1 has a bridge already</source>
+        <translation>%1 ha già un ponte</translation>
+    </message>
+    <message>
+        <location line="+4"/>
+        <source>A %1 bridge needs where it goes</source>
+        <translation>Un ponte (%1) ha bisogno della destinazione</translation>
+    </message>
+    <message>
+        <location line="+9"/>
+        <source>&quot;%1&quot; is not HOST:PORT</source>
+        <translation>&quot;%1&quot; non è HOST:PORTA</translation>
+    </message>
+    <message>
+        <location line="+12"/>
+        <source>%1 runs %2, whose frames are not published: it cannot be bridged</source>
+        <translation>%1 usa %2, i cui frame non sono pubblicati: non può avere un ponte</translation>
+    </message>
+    <message>
+        <location line="+7"/>
+        <source>Add Bridge %1</source>
+        <translation>Aggiungi ponte %1</translation>
+    </message>
+    <message>
+        <location line="+8"/>
+        <source>%1 has no bridge</source>
+        <translation>%1 non ha un ponte</translation>
+    </message>
+    <message>
+        <location line="+3"/>
+        <source>Remove Bridge %1</source>
+        <translation>Rimuovi ponte %1</translation>
+    </message>
+    <message>
+        <location line="+6"/>
+        <source>The period is 1 to 1000000 ms, not %1</source>
+        <translation>Il periodo va da 1 a 1000000 ms, non %1</translation>
+    </message>
+    <message>
+        <location line="+8"/>
+        <source>Network Period %1 ms</source>
+        <translation>Periodo della rete %1 ms</translation>
+    </message>
+</context>
+<context>
+    <name>rung::app::NetworkPortDialog</name>
+    <message>
+        <location filename="../app/gui/network_port_dialog.cpp" line="+65"/>
+        <source>Port Settings: %1</source>
+        <translation>Impostazioni porta: %1</translation>
+    </message>
+    <message>
+        <location line="+3"/>
+        <source>%1 %2, port %3</source>
+        <translation>%1 %2, porta %3</translation>
+    </message>
+    <message>
+        <location line="+23"/>
+        <source>&amp;Application:</source>
+        <translation>&amp;Applicazione:</translation>
+    </message>
+    <message>
+        <location line="+1"/>
+        <source>&amp;Station number:</source>
+        <translation>Numero di &amp;stazione:</translation>
+    </message>
+    <message>
+        <location line="+1"/>
+        <source>&amp;Baud rate:</source>
+        <translation>&amp;Baud rate:</translation>
+    </message>
+    <message>
+        <location line="+1"/>
+        <source>&amp;Format:</source>
+        <translation>&amp;Formato:</translation>
+    </message>
+    <message>
+        <location line="+5"/>
+        <source>CPU Link master (station 0)</source>
+        <translation>Master CPU Link (stazione 0)</translation>
+    </message>
+    <message>
+        <location line="+6"/>
+        <source> x 10 ms</source>
+        <translation> x 10 ms</translation>
+    </message>
+    <message>
+        <location line="+1"/>
+        <source>Total s&amp;laves (1..7):</source>
+        <translation>Numero di s&amp;lave (1..7):</translation>
+    </message>
+    <message>
+        <location line="+1"/>
+        <source>&amp;Transfer range mode (1..3):</source>
+        <translation>Modo dell&apos;area di &amp;trasferimento (1..3):</translation>
+    </message>
+    <message>
+        <location line="+1"/>
+        <source>&amp;Retries (0..255):</source>
+        <translation>&amp;Ritentativi (0..255):</translation>
+    </message>
+    <message>
+        <location line="+1"/>
+        <source>T&amp;ime-out (1..255):</source>
+        <translation>T&amp;ime-out (1..255):</translation>
+    </message>
+    <message>
+        <location line="+3"/>
+        <source>Parallel Link</source>
+        <translation>Parallel Link</translation>
+    </message>
+    <message>
+        <location line="+3"/>
+        <source>Master</source>
+        <translation>Master</translation>
+    </message>
+    <message>
+        <location line="+1"/>
+        <source>Slave</source>
+        <translation>Slave</translation>
+    </message>
+    <message>
+        <location line="+2"/>
+        <source>Low speed</source>
+        <translation>Bassa velocità</translation>
+    </message>
+    <message>
+        <location line="+1"/>
+        <source>High speed</source>
+        <translation>Alta velocità</translation>
+    </message>
+    <message>
+        <location line="+1"/>
+        <source>R&amp;ole:</source>
+        <translation>R&amp;uolo:</translation>
+    </message>
+    <message>
+        <location line="+1"/>
+        <source>S&amp;peed (the master&apos;s decides):</source>
+        <translation>&amp;Velocità (decide quella del master):</translation>
+    </message>
+    <message>
+        <location line="+3"/>
+        <source>MODBUS</source>
+        <translation>MODBUS</translation>
+    </message>
+    <message>
+        <location line="+5"/>
+        <source>&amp;Mode:</source>
+        <translation>&amp;Modo:</translation>
+    </message>
+    <message>
+        <location line="+3"/>
+        <source>Start and end characters</source>
+        <translation>Caratteri di inizio e di fine</translation>
+    </message>
+    <message>
+        <location line="+4"/>
+        <location line="+1"/>
+        <source>none</source>
+        <translation>nessuno</translation>
+    </message>
+    <message>
+        <location line="+1"/>
+        <source>Start c&amp;haracter (0..255):</source>
+        <translation>Carattere di &amp;inizio (0..255):</translation>
+    </message>
+    <message>
+        <location line="+1"/>
+        <source>&amp;End character (0..255):</source>
+        <translation>Carattere di &amp;fine (0..255):</translation>
+    </message>
+    <message>
+        <location line="+25"/>
+        <location line="+88"/>
+        <location line="+10"/>
+        <source>%1 (default)</source>
+        <translation>%1 (predefinito)</translation>
+    </message>
+    <message>
+        <location line="-37"/>
+        <source>%1 %2 has no such port</source>
+        <translation>%1 %2 non ha questa porta</translation>
+    </message>
+    <message>
+        <location line="+13"/>
+        <source>default: %1</source>
+        <translation>predefinito: %1</translation>
+    </message>
+    <message>
+        <location line="+6"/>
+        <source>%1..%2, default %3</source>
+        <translation>%1..%2, predefinito %3</translation>
+    </message>
+    <message>
+        <location line="+11"/>
+        <source>%1 (not a rate of %2)</source>
+        <translation>%1 (non è una velocità di %2)</translation>
+    </message>
+    <message>
+        <location line="+14"/>
+        <source>%1 always uses %2</source>
+        <translation>%1 usa sempre %2</translation>
+    </message>
+    <message>
+        <location line="+61"/>
+        <source>the project&apos;s settings</source>
+        <translation>le impostazioni del progetto</translation>
+    </message>
+    <message>
+        <location line="+37"/>
+        <source>Port Settings</source>
+        <translation>Impostazioni porta</translation>
+    </message>
+    <message>
+        <location line="+1"/>
+        <source>The %1 %2&apos;s port:</source>
+        <translation>La porta del %1 %2:</translation>
+    </message>
+</context>
+<context>
+    <name>rung::app::NetworkStationDialog</name>
+    <message>
+        <location filename="../app/gui/network_station_dialog.cpp" line="+25"/>
+        <source>Add New Project Station</source>
+        <translation>Aggiungi stazione con nuovo progetto</translation>
+    </message>
+    <message>
+        <location line="+11"/>
+        <source>&amp;Browse...</source>
+        <translation>&amp;Sfoglia...</translation>
+    </message>
+    <message>
+        <location line="+4"/>
+        <source>&amp;Name:</source>
+        <translation>&amp;Nome:</translation>
+    </message>
+    <message>
+        <location line="+1"/>
+        <source>&amp;PLC:</source>
+        <translation>&amp;PLC:</translation>
+    </message>
+    <message>
+        <location line="+1"/>
+        <source>&amp;Model:</source>
+        <translation>&amp;Modello:</translation>
+    </message>
+    <message>
+        <location line="+1"/>
+        <source>Project &amp;file:</source>
+        <translation>&amp;File del progetto:</translation>
+    </message>
+    <message>
+        <location line="+27"/>
+        <source>New Project</source>
+        <translation>Nuovo progetto</translation>
+    </message>
+    <message>
+        <location line="+1"/>
+        <source>Rung Studio projects (*.rung)</source>
+        <translation>Progetti Rung Studio (*.rung)</translation>
+    </message>
+    <message>
+        <location line="+25"/>
+        <source>A name is letters, digits, _ and -, at most 32</source>
+        <translation>Un nome è fatto di lettere, cifre, _ e -, al massimo 32</translation>
+    </message>
+    <message>
+        <location line="+2"/>
+        <source>A station or device is already named &quot;%1&quot;</source>
+        <translation>Esiste già una stazione o un dispositivo di nome &quot;%1&quot;</translation>
+    </message>
+    <message>
+        <location line="+2"/>
+        <source>Choose where the project is saved</source>
+        <translation>Scegliere dove salvare il progetto</translation>
+    </message>
+    <message>
+        <location line="+2"/>
+        <source>%1 exists already: a new project never overwrites a file</source>
+        <translation>%1 esiste già: un nuovo progetto non sovrascrive mai un file</translation>
+    </message>
+</context>
+<context>
+    <name>rung::app::NetworkView</name>
+    <message>
+        <location filename="../app/gui/network_view.cpp" line="+117"/>
+        <source>%1: scan period %2 ms</source>
+        <translation>%1: periodo di scansione %2 ms</translation>
+    </message>
+    <message>
+        <location line="+12"/>
+        <source>scan period %1 ms</source>
+        <translation>periodo di scansione %1 ms</translation>
+    </message>
+    <message>
+        <location line="+2"/>
+        <source>program not readable</source>
+        <translation>programma non leggibile</translation>
+    </message>
+    <message>
+        <location line="+19"/>
+        <source>station %1, %2 %3</source>
+        <translation>stazione %1, %2 %3</translation>
+    </message>
+    <message>
+        <location line="+8"/>
+        <source>, %1 slaves, range %2</source>
+        <translation>, %1 slave, area %2</translation>
+    </message>
+    <message>
+        <location line="+5"/>
+        <source>master</source>
+        <translation>master</translation>
+    </message>
+    <message>
+        <location line="+1"/>
+        <source>slave</source>
+        <translation>slave</translation>
+    </message>
+    <message>
+        <location line="+3"/>
+        <source>settings refused</source>
+        <translation>impostazioni rifiutate</translation>
+    </message>
+    <message>
+        <location line="+8"/>
+        <source>bridge: pseudo-terminal</source>
+        <translation>ponte: pseudo-terminale</translation>
+    </message>
+    <message>
+        <location line="+1"/>
+        <source>bridge: serial %1</source>
+        <translation>ponte: seriale %1</translation>
+    </message>
+    <message>
+        <location line="+1"/>
+        <source>bridge: TCP to %1</source>
+        <translation>ponte: TCP verso %1</translation>
+    </message>
+    <message>
+        <location line="+1"/>
+        <source>bridge: listens on %1</source>
+        <translation>ponte: in ascolto su %1</translation>
+    </message>
+    <message>
+        <location line="+12"/>
+        <source>MODBUS slave (simulated)</source>
+        <translation>Slave MODBUS (simulato)</translation>
+    </message>
+    <message>
+        <location line="+1"/>
+        <source>serial line (simulated)</source>
+        <translation>linea seriale (simulata)</translation>
+    </message>
+    <message>
+        <location line="+7"/>
+        <source>station %1, %2</source>
+        <translation>stazione %1, %2</translation>
+    </message>
+    <message>
+        <location line="+152"/>
+        <source>dashed: no frames on the wire (the manual does not publish them)</source>
+        <translation>tratteggiato: nessun frame sul cavo (il manuale non li pubblica)</translation>
+    </message>
+    <message>
+        <location line="+210"/>
+        <source>Network</source>
+        <translation>Rete</translation>
+    </message>
+    <message>
+        <location line="+17"/>
+        <source>%1 is a simulated device: edit it in the network file</source>
+        <translation>%1 è un dispositivo simulato: si modifica nel file di rete</translation>
+    </message>
+    <message>
+        <location line="+6"/>
+        <source>Remove Station</source>
+        <translation>Rimuovi stazione</translation>
+    </message>
+    <message>
+        <location line="+1"/>
+        <source>Remove station %1? With it:
+%2
+(Edit &gt; Undo brings it back.)</source>
+        <translation>Rimuovere la stazione %1? Con essa:
+%2
+(Modifica &gt; Annulla la ripristina.)</translation>
+    </message>
+    <message>
+        <location line="+25"/>
+        <source>Add Station from Program</source>
+        <translation>Aggiungi stazione da programma</translation>
+    </message>
+    <message>
+        <location line="+1"/>
+        <source>Programs (*.rung *.il *.ladder);;All files (*)</source>
+        <translation>Programmi (*.rung *.il *.ladder);;Tutti i file (*)</translation>
+    </message>
+    <message>
+        <location line="+26"/>
+        <source>Network Period</source>
+        <translation>Periodo della rete</translation>
+    </message>
+    <message>
+        <location line="+0"/>
+        <source>Scan period of the stations that give none (ms):</source>
+        <translation>Periodo di scansione delle stazioni che non ne indicano uno (ms):</translation>
+    </message>
+    <message>
+        <location line="+9"/>
+        <source>Add &amp;Bridge</source>
+        <translation>Aggiungi &amp;ponte</translation>
+    </message>
+    <message>
+        <location line="+7"/>
+        <source>Add Bridge</source>
+        <translation>Aggiungi ponte</translation>
+    </message>
+    <message>
+        <location line="+9"/>
+        <source>&amp;Pseudo-terminal</source>
+        <translation>&amp;Pseudo-terminale</translation>
+    </message>
+    <message>
+        <location line="+1"/>
+        <source>&amp;Serial Port...</source>
+        <translation>Porta &amp;seriale...</translation>
+    </message>
+    <message>
+        <location line="+1"/>
+        <source>Serial port:</source>
+        <translation>Porta seriale:</translation>
+    </message>
+    <message>
+        <location line="+2"/>
+        <source>&amp;TCP Connect...</source>
+        <translation>Connessione &amp;TCP...</translation>
+    </message>
+    <message>
+        <location line="+1"/>
+        <source>Serial device server (HOST:PORT):</source>
+        <translation>Server seriale di dispositivi (HOST:PORTA):</translation>
+    </message>
+    <message>
+        <location line="+2"/>
+        <source>TCP &amp;Listen...</source>
+        <translation>&amp;Ascolto TCP...</translation>
+    </message>
+    <message>
+        <location line="+1"/>
+        <source>Listen on (ADDRESS:PORT):</source>
+        <translation>In ascolto su (INDIRIZZO:PORTA):</translation>
+    </message>
+    <message>
+        <location line="+11"/>
+        <source>Port &amp;Settings...</source>
+        <translation>&amp;Impostazioni porta...</translation>
+    </message>
+    <message>
+        <location line="+2"/>
+        <source>&amp;Disconnect</source>
+        <translation>&amp;Scollega</translation>
+    </message>
+    <message>
+        <location line="+9"/>
+        <source>Remove &amp;Bridge</source>
+        <translation>Rimuovi &amp;ponte</translation>
+    </message>
+    <message>
+        <location line="+21"/>
+        <source>Add New Pro&amp;ject Station...</source>
+        <translation>Aggiungi stazione con nuovo pro&amp;getto...</translation>
+    </message>
+    <message>
+        <location line="+1"/>
+        <source>&amp;Network Period...</source>
+        <translation>Periodo della &amp;rete...</translation>
+    </message>
+    <message>
+        <location line="+3"/>
+        <source>Zoom O&amp;ut</source>
+        <translation>Rim&amp;picciolisci</translation>
+    </message>
+    <message>
+        <location line="-15"/>
+        <source>Remove &amp;Wire</source>
+        <translation>Rimuovi &amp;cavo</translation>
+    </message>
+    <message>
+        <location line="+2"/>
+        <source>&amp;Open Program</source>
+        <translation>&amp;Apri programma</translation>
+    </message>
+    <message>
+        <location line="+2"/>
+        <source>&amp;Remove Station %1...</source>
+        <translation>&amp;Rimuovi stazione %1...</translation>
+    </message>
+    <message>
+        <location line="+6"/>
+        <source>Add Station from &amp;Program...</source>
+        <translation>Aggiungi stazione da &amp;programma...</translation>
+    </message>
+    <message>
+        <location line="+4"/>
+        <source>Zoom &amp;In</source>
+        <translation>&amp;Ingrandisci</translation>
     </message>
 </context>
 <context>
@@ -2128,12 +2804,12 @@ Ctrl+Z / Ctrl+Y: annulla / ripeti, Ctrl+rotellina: zoom, F4: verifica il program
         <translation>indicare esattamente uno tra --port, --tcp e --pty</translation>
     </message>
     <message>
-        <location line="+4"/>
+        <location line="+5"/>
         <source>modbus-tcp needs --tcp HOST:PORT (for RTU frames on a port: modbus)</source>
         <translation>modbus-tcp richiede --tcp HOST:PORTA (per frame RTU su una porta: modbus)</translation>
     </message>
     <message>
-        <location line="+10"/>
+        <location line="+8"/>
         <source>--tcp needs HOST:PORT, e.g. 127.0.0.1:502; got %1</source>
         <translation>--tcp richiede HOST:PORTA, ad es. 127.0.0.1:502; ricevuto %1</translation>
     </message>
@@ -2143,12 +2819,12 @@ Ctrl+Z / Ctrl+Y: annulla / ripeti, Ctrl+rotellina: zoom, F4: verifica il program
         <translation>%1 deve essere un numero da %2 a %3; ricevuto %4</translation>
     </message>
     <message>
-        <location line="+16"/>
+        <location line="+17"/>
         <source>--frame must be data bits, parity and stop bits, e.g. 8N1 or 7E2; got %1</source>
         <translation>--frame indica bit di dati, parità e bit di stop, ad es. 8N1 o 7E2; ricevuto %1</translation>
     </message>
     <message>
-        <location line="+6"/>
+        <location line="+5"/>
         <source>no device given</source>
         <translation>nessun operando indicato</translation>
     </message>
@@ -2857,7 +3533,7 @@ FILE è una lista istruzioni (.il), un testo ladder (.ladder) o un progetto (.ru
         <translation>%1 richiede un valore</translation>
     </message>
     <message>
-        <location line="+13"/>
+        <location line="+14"/>
         <source>unexpected argument %1</source>
         <translation>argomento non previsto: %1</translation>
     </message>
@@ -2869,7 +3545,7 @@ FILE è una lista istruzioni (.il), un testo ladder (.ladder) o un progetto (.ru
         <translation>il programma non si avvia</translation>
     </message>
     <message>
-        <location filename="../app/cli/cli_simulate.cpp" line="+28"/>
+        <location filename="../app/cli/cli_simulate.cpp" line="+29"/>
         <source>runtime error at step %1: %2</source>
         <translation>errore di esecuzione al passo %1: %2</translation>
     </message>
@@ -7505,7 +8181,7 @@ Valutazione: %4 µs (%5..%6)</translation>
     </message>
     <message>
         <location line="+5"/>
-        <location filename="../model/target/target_pl110.cpp" line="+107"/>
+        <location filename="../model/target/target_pl110.cpp" line="+108"/>
         <location filename="../model/target/target_vigor.cpp" line="+95"/>
         <location filename="../model/target/target_vpc.cpp" line="+5"/>
         <source>Start a block with a normally open contact</source>
@@ -7846,7 +8522,7 @@ Valutazione: %4 µs (%5..%6)</translation>
         <translation>Fine del programma</translation>
     </message>
     <message>
-        <location filename="../model/target/target_pl110.cpp" line="-405"/>
+        <location filename="../model/target/target_pl110.cpp" line="-406"/>
         <source>IF contact: ON while S1 ? S2 is true</source>
         <translation>Contatto IF: ON mentre S1 ? S2 è vero</translation>
     </message>
@@ -7992,7 +8668,7 @@ Valutazione: %4 µs (%5..%6)</translation>
         <translation>tempo di scansione massimo (0,1 ms)</translation>
     </message>
     <message>
-        <location line="+12"/>
+        <location line="+13"/>
         <source>the encoders&apos; load bits and the stepper motor output on AQ1 are not modelled; the word is plain memory</source>
         <translation>i bit di caricamento degli encoder e l&apos;uscita AQ1 del motore passo passo non sono modellati; la word è semplice memoria</translation>
     </message>
@@ -9486,37 +10162,37 @@ Valutazione: %4 µs (%5..%6)</translation>
         <translation>%1: un file di rete è un oggetto JSON con &quot;stations&quot; e &quot;wires&quot;</translation>
     </message>
     <message>
-        <location line="+25"/>
+        <location line="+28"/>
         <source>stations: a network needs at least one station</source>
         <translation>stations: una rete richiede almeno una stazione</translation>
     </message>
     <message>
         <location line="+4"/>
-        <location line="+42"/>
-        <location line="+60"/>
+        <location line="+43"/>
+        <location line="+61"/>
         <location line="+41"/>
         <source>%1: needs an object</source>
         <translation>%1: richiede un oggetto</translation>
     </message>
     <message>
-        <location line="-125"/>
-        <location line="+33"/>
+        <location line="-127"/>
+        <location line="+34"/>
         <source>%1: &quot;%2&quot; is no name (letters, digits, _ and -, at most 32)</source>
         <translation>%1: &quot;%2&quot; non è un nome (lettere, cifre, _ e -, al massimo 32)</translation>
     </message>
     <message>
-        <location line="-30"/>
-        <location line="+33"/>
+        <location line="-31"/>
+        <location line="+34"/>
         <source>%1: a second &quot;%2&quot;; names are unique</source>
         <translation>%1: un secondo &quot;%2&quot;; i nomi sono unici</translation>
     </message>
     <message>
-        <location line="-28"/>
+        <location line="-29"/>
         <source>%1: needs an object of ports</source>
         <translation>%1: richiede un oggetto di porte</translation>
     </message>
     <message>
-        <location line="+5"/>
+        <location line="+6"/>
         <source>%1: needs an object of settings</source>
         <translation>%1: richiede un oggetto di impostazioni</translation>
     </message>
@@ -9526,7 +10202,7 @@ Valutazione: %4 µs (%5..%6)</translation>
         <translation>%1: &quot;%2&quot; non è un tipo di dispositivo (modbus-slave, line)</translation>
     </message>
     <message>
-        <location line="+23"/>
+        <location line="+24"/>
         <source>%1: needs a list of ends, [&quot;a/CP2&quot;, &quot;b/CP2&quot;]</source>
         <translation>%1: richiede una lista di estremi, [&quot;a/CP2&quot;, &quot;b/CP2&quot;]</translation>
     </message>
@@ -9551,7 +10227,7 @@ Valutazione: %4 µs (%5..%6)</translation>
         <translation>%1: un ponte va a uno tra &quot;pty&quot;: true, &quot;serial&quot;: &quot;/dev/ttyUSB0&quot;, &quot;tcp&quot;: &quot;HOST:PORT&quot;, &quot;listen&quot;: &quot;HOST:PORT&quot;</translation>
     </message>
     <message>
-        <location line="+49"/>
+        <location line="+52"/>
         <source>%1: &quot;to&quot; comes before &quot;from&quot;</source>
         <translation>%1: &quot;to&quot; viene prima di &quot;from&quot;</translation>
     </message>
@@ -9559,6 +10235,21 @@ Valutazione: %4 µs (%5..%6)</translation>
         <location line="+17"/>
         <source>%1: &quot;%2&quot; is no fault (cut, silent, corrupt)</source>
         <translation>%1: &quot;%2&quot; non è un guasto (cut, silent, corrupt)</translation>
+    </message>
+    <message>
+        <location filename="../network/network_write.cpp" line="+221"/>
+        <source>%1: %2 items where there were %3</source>
+        <translation>%1: %2 elementi dove ce n&apos;erano %3</translation>
+    </message>
+    <message>
+        <location line="+9"/>
+        <source>%1[%2]: written differently</source>
+        <translation>%1[%2]: scritto diversamente</translation>
+    </message>
+    <message>
+        <location line="+120"/>
+        <source>%1: cannot write the network (%2)</source>
+        <translation>%1: impossibile scrivere la rete (%2)</translation>
     </message>
 </context>
 <context>
@@ -10134,7 +10825,7 @@ Valutazione: %4 µs (%5..%6)</translation>
         <translation>nessun programma: uno scenario inizia con &quot;program FILE&quot;</translation>
     </message>
     <message>
-        <location filename="../simulator/scenario_run.cpp" line="+101"/>
+        <location filename="../simulator/scenario_run.cpp" line="+100"/>
         <source>&quot;%1&quot; is not understood here</source>
         <translation>&quot;%1&quot; non è comprensibile qui</translation>
     </message>

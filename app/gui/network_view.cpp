@@ -688,7 +688,7 @@ void NetworkView::contextMenuAt(const QPoint &canvasPoint, const QPoint &global)
         for (const auto &b : m_document->description().bridges)
             bridged = bridged || b.end == item;
         if (bridged)
-            menu.addAction(tr("Remove B&ridge"), this, [this, item] {
+            menu.addAction(tr("Remove &Bridge"), this, [this, item] {
                 QString why;
                 if (!m_document->removeBridge(item, &why))
                     refuse(why);
@@ -709,11 +709,11 @@ void NetworkView::contextMenuAt(const QPoint &canvasPoint, const QPoint &global)
         menu.addSeparator();
     }
     menu.addAction(tr("Add Station from &Program..."), this, &NetworkView::addStationFromProgram);
-    menu.addAction(tr("Add &New Project Station..."), this, &NetworkView::addNewProjectStation);
-    menu.addAction(tr("Network &Period..."), this, &NetworkView::editPeriod);
+    menu.addAction(tr("Add New Pro&ject Station..."), this, &NetworkView::addNewProjectStation);
+    menu.addAction(tr("&Network Period..."), this, &NetworkView::editPeriod);
     menu.addSeparator();
     menu.addAction(tr("Zoom &In"), this, &NetworkView::zoomIn);
-    menu.addAction(tr("Zoom &Out"), this, &NetworkView::zoomOut);
+    menu.addAction(tr("Zoom O&ut"), this, &NetworkView::zoomOut);
     menu.exec(global);
 }
 
