@@ -98,13 +98,13 @@ bool parseNetwork(const QByteArray &json, const QString &file, NetworkDescriptio
 // on one line where it fits in 100 columns. parseNetwork of the result gives `description`
 // back, but for `file` and the paths ("where") that say where each item sits in the file.
 QByteArray networkToJson(const NetworkDescription &description, const QString &file);
-// Writes networkToJson to `file` (through a temporary file, so that a failed save leaves the
-// old file whole), then reads it back: if the reading differs from `description` (something
-// the file format cannot hold), the file is still written and `notKept` says what was not
-// kept; the caller must tell the user. False with what and why when the file cannot be
-// written.
+// Writes networkToJson to `file` through a temporary file (a failed save leaves the old file
+// whole). First it reads the JSON back: if the reading differs from `description` (something
+// the file format cannot hold), `notKept` says what, and the file is written only when
+// `evenIfNotKept` (the user was told and chose to); else false with the reason and nothing
+// written. False with what and why when the file cannot be written.
 bool writeNetworkFile(const NetworkDescription &description, const QString &file,
-                      QStringList *notKept, QString *error);
+                      QStringList *notKept, QString *error, bool evenIfNotKept = false);
 // What differs between two descriptions, as a reader would say it ("stations[1].ports": ...),
 // ignoring the file and the "where" paths; empty when they are the same network.
 QStringList networkDifferences(const NetworkDescription &a, const NetworkDescription &b);

@@ -335,7 +335,7 @@ void renumberNetwork(NetworkDescription *d) {
 }
 
 bool writeNetworkFile(const NetworkDescription &d, const QString &file, QStringList *notKept,
-                      QString *error) {
+                      QString *error, bool evenIfNotKept) {
     const QByteArray json = networkToJson(d, file);
     NetworkDescription back;
     QString why;
@@ -344,6 +344,11 @@ bool writeNetworkFile(const NetworkDescription &d, const QString &file, QStringL
         *notKept << why;
     else
         *notKept = networkDifferences(d, back);
+    if (!notKept->isEmpty() && !evenIfNotKept) {
+        *error = NetworkFileTr::tr("%1: not saved: the file would not hold everything (%2)")
+                     .arg(file, notKept->join(QStringLiteral("; ")));
+        return false;
+    }
     QSaveFile out(file);
     if (!out.open(QIODevice::WriteOnly) || out.write(json) != json.size() || !out.commit()) {
         *error =

@@ -95,15 +95,16 @@ bool NetworkDocument::open(const QString &file, QString *error) {
     return true;
 }
 
-bool NetworkDocument::save(QStringList *notKept, QString *error) {
+bool NetworkDocument::save(QStringList *notKept, QString *error, bool evenIfNotKept) {
     if (m_file.isEmpty()) {
         *error = tr("The network has no file yet: use Save As");
         return false;
     }
-    return saveAs(m_file, notKept, error);
+    return saveAs(m_file, notKept, error, evenIfNotKept);
 }
 
-bool NetworkDocument::saveAs(const QString &file, QStringList *notKept, QString *error) {
+bool NetworkDocument::saveAs(const QString &file, QStringList *notKept, QString *error,
+                             bool evenIfNotKept) {
     NetworkDescription d = m_description;
     if (m_file.isEmpty()) {
         // A network never saved kept its programs as absolute paths for want of a folder: the
@@ -112,7 +113,7 @@ bool NetworkDocument::saveAs(const QString &file, QStringList *notKept, QString 
         for (StationDescription &s : d.stations)
             s.program = QDir::fromNativeSeparators(dir.relativeFilePath(s.path));
     }
-    if (!network::writeNetworkFile(d, file, notKept, error))
+    if (!network::writeNetworkFile(d, file, notKept, error, evenIfNotKept))
         return false;
     const bool moved = file != m_file;
     m_file = file;

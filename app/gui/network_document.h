@@ -38,9 +38,11 @@ public:
     void newNetwork();
     bool open(const QString &file, QString *error);
     // Save writes where the network came from; false with why (a network never saved needs
-    // Save As). `notKept` lists what the file could not hold (the user must be told).
-    bool save(QStringList *notKept, QString *error);
-    bool saveAs(const QString &file, QStringList *notKept, QString *error);
+    // Save As). When the file could not hold everything, nothing is written and `notKept` says
+    // what, unless `evenIfNotKept` (the user was asked: saveNetwork in network_view.h asks).
+    bool save(QStringList *notKept, QString *error, bool evenIfNotKept = false);
+    bool saveAs(const QString &file, QStringList *notKept, QString *error,
+                bool evenIfNotKept = false);
 
     const network::NetworkDescription &description() const { return m_description; }
     QString filePath() const { return m_file; }

@@ -64,11 +64,14 @@ NetworkPortDialog::NetworkPortDialog(const model::Target &target, const QString 
     , m_lower(lower) {
     setWindowTitle(tr("Port Settings: %1").arg(title.isEmpty() ? port : title));
     auto *layout = new QVBoxLayout(this);
+    // The table's description names the port ("CP2, the second communication port ...").
     auto *head = new QLabel(
-        tr("%1 %2, port %3").arg(target.displayName, model, m_spec ? m_spec->name : port), this);
-    if (m_spec && m_spec->description)
-        head->setText(head->text() + QStringLiteral(": ") +
-                      QCoreApplication::translate("rung::model::Target", m_spec->description));
+        m_spec && m_spec->description
+            ? tr("%1 %2: %3")
+                  .arg(target.displayName, model,
+                       QCoreApplication::translate("rung::model::Target", m_spec->description))
+            : tr("%1 %2, port %3").arg(target.displayName, model, m_spec ? m_spec->name : port),
+        this);
     head->setWordWrap(true);
     layout->addWidget(head);
 

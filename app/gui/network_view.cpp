@@ -755,4 +755,27 @@ void NetworkView::wheelEvent(QWheelEvent *event) {
     QScrollArea::wheelEvent(event);
 }
 
+bool saveNetwork(QWidget *parent, NetworkDocument *document, const QString &file) {
+    const QString to = file.isEmpty() ? document->filePath() : file;
+    QStringList notKept;
+    QString why;
+    if (file.isEmpty() ? document->save(&notKept, &why) : document->saveAs(to, &notKept, &why))
+        return true;
+    if (!notKept.isEmpty()) {
+        // Never write less than the user has without saying so and letting them choose.
+        const auto answer = QMessageBox::warning(
+            parent, NetworkView::tr("Save Network"),
+            NetworkView::tr("%1 cannot hold everything in this network:\n%2\n\nSave anyway, "
+                            "leaving this out of the file?")
+                .arg(to, QStringLiteral("- ") + notKept.join(QStringLiteral("\n- "))),
+            QMessageBox::Save | QMessageBox::Cancel, QMessageBox::Cancel);
+        if (answer != QMessageBox::Save)
+            return false;
+        if (document->saveAs(to, &notKept, &why, true))
+            return true;
+    }
+    QMessageBox::critical(parent, NetworkView::tr("Save Network"), why);
+    return false;
+}
+
 } // namespace rung::app

@@ -75,4 +75,9 @@ private:
     QString m_selection;
 };
 
+// File > Save / Save As of a network: writes `document` to `file` (empty: where it came from);
+// when the file could not hold everything the user has, says what and asks before writing
+// anything; an error is shown. True when the file was written.
+bool saveNetwork(QWidget *parent, NetworkDocument *document, const QString &file = {});
+
 } // namespace rung::app

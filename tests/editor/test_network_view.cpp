@@ -262,8 +262,7 @@ TEST(NetworkDocument, SaveAndSaveAsRoundTripThroughRealFiles) {
         << error.toStdString();
     ASSERT_TRUE(doc.setPeriod(20, &error));
     EXPECT_TRUE(doc.isModified());
-    ASSERT_TRUE(doc.save(&notKept, &error)) << error.toStdString();
-    EXPECT_TRUE(notKept.isEmpty());
+    ASSERT_TRUE(saveNetwork(nullptr, &doc)); // File > Save: nothing to ask
     EXPECT_FALSE(doc.isModified());
     EXPECT_EQ(modified.count(), 2); // on, then off
 
@@ -396,6 +395,41 @@ TEST(NetworkView, FitsTheScreenInEveryLanguage) {
             if (!shots.isEmpty())
                 view.grab().save(QStringLiteral("%1/network-%2-%3.png")
                                      .arg(shots, QLatin1String(example), QLatin1String(language)));
+        }
+        // The port dialog with CPU Link's panel and with the PL110's longest protocol name:
+        // every label, combo box and group title as wide as its text needs.
+        const model::Target &vigor = *model::Target::byId(QStringLiteral("vigor"));
+        const model::Target &pl = *model::Target::byId(QStringLiteral("pl110"));
+        const QJsonObject cpu{{QStringLiteral("application"), QStringLiteral("cpu-link")},
+                              {QStringLiteral("slaves"), 2}};
+        const QJsonObject nais{{QStringLiteral("application"), QStringLiteral("nais-master")}};
+        NetworkPortDialog vigorDialog(vigor, QStringLiteral("VB"), QStringLiteral("CP2"), cpu, {},
+                                      QStringLiteral("master/CP2"));
+        NetworkPortDialog plDialog(pl, QStringLiteral("PL110-1A"), QStringLiteral("COM1"), nais, {},
+                                   QStringLiteral("pl/COM1"));
+        for (NetworkPortDialog *dialog : {&vigorDialog, &plDialog}) {
+            dialog->show();
+            QCoreApplication::processEvents();
+            for (QLabel *label : dialog->findChildren<QLabel *>()) {
+                if (label->isVisible() && !label->wordWrap()) {
+                    EXPECT_GE(label->width(), label->sizeHint().width())
+                        << language << " " << label->text().toStdString();
+                }
+            }
+            for (QComboBox *box : dialog->findChildren<QComboBox *>()) {
+                if (box->isVisible()) {
+                    EXPECT_GE(box->width(), box->sizeHint().width())
+                        << language << " " << box->currentText().toStdString();
+                }
+            }
+            EXPECT_LE(dialog->width(), 1366);
+            EXPECT_LE(dialog->height(), 768);
+            if (!shots.isEmpty())
+                dialog->grab().save(QStringLiteral("%1/network-port-%2-%3.png")
+                                        .arg(shots,
+                                             dialog == &plDialog ? QStringLiteral("pl110")
+                                                                 : QStringLiteral("vigor"),
+                                             QLatin1String(language)));
         }
     }
     setLanguage(QStringLiteral("en"), false);

@@ -6,6 +6,7 @@
 #include <QDir>
 #include <QDirIterator>
 #include <QFile>
+#include <QFileInfo>
 #include <QJsonDocument>
 #include <QTemporaryDir>
 
@@ -131,9 +132,9 @@ TEST(NetworkWrite, SaveAsElsewhereKeepsTheProgramsWhereTheyAre) {
     EXPECT_EQ(back.stations[1].program, QStringLiteral("/abs/b.il"));
 }
 
-TEST(NetworkWrite, ASaveThatCannotHoldEverythingSaysWhat) {
-    // Settings that are not an object cannot be read back: the file is written, and the save
-    // says what was not kept instead of losing it in silence.
+TEST(NetworkWrite, ASaveThatCannotHoldEverythingSaysWhatAndWritesOnlyWhenTold) {
+    // Settings that are not an object cannot be read back: the save says what would not be
+    // kept and writes nothing, unless the caller (the user, asked) says to write anyway.
     QTemporaryDir dir;
     ASSERT_TRUE(dir.isValid());
     const QString file = dir.filePath(QStringLiteral("n.rungnet"));
@@ -147,14 +148,19 @@ TEST(NetworkWrite, ASaveThatCannotHoldEverythingSaysWhat) {
     d.stations.push_back(s);
     QStringList notKept;
     QString error;
-    ASSERT_TRUE(writeNetworkFile(d, file, &notKept, &error)) << error.toStdString();
+    EXPECT_FALSE(writeNetworkFile(d, file, &notKept, &error));
+    EXPECT_FALSE(QFileInfo::exists(file));
     ASSERT_FALSE(notKept.isEmpty());
     EXPECT_TRUE(notKept.join(QLatin1Char(' ')).contains(QStringLiteral("stations[0].ports.CP2")))
         << notKept.join(QLatin1Char(' ')).toStdString();
+    EXPECT_TRUE(error.contains(QStringLiteral("stations[0].ports.CP2"))) << error.toStdString();
+    ASSERT_TRUE(writeNetworkFile(d, file, &notKept, &error, true)) << error.toStdString();
+    EXPECT_TRUE(QFileInfo::exists(file));
+    EXPECT_FALSE(notKept.isEmpty());
 
     // A network without stations is no network file: said too.
     d.stations.clear();
-    ASSERT_TRUE(writeNetworkFile(d, file, &notKept, &error)) << error.toStdString();
+    EXPECT_FALSE(writeNetworkFile(d, file, &notKept, &error));
     EXPECT_FALSE(notKept.isEmpty());
 }
 
