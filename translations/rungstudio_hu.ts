@@ -2110,7 +2110,7 @@ Ctrl+Z / Ctrl+Y: visszavonás / mégis, Ctrl+görgő: nagyítás, F4: a program 
         <translation>A hálózatnak még nincs fájlja: használja a Mentés másként parancsot</translation>
     </message>
     <message>
-        <location line="+28"/>
+        <location line="+29"/>
         <source>Untitled network</source>
         <translation>Névtelen hálózat</translation>
     </message>
@@ -2301,12 +2301,17 @@ Ctrl+Z / Ctrl+Y: visszavonás / mégis, Ctrl+görgő: nagyítás, F4: a program 
         <translation>Port beállításai: %1</translation>
     </message>
     <message>
+        <location line="+5"/>
+        <source>%1 %2: %3</source>
+        <translation>%1 %2: %3</translation>
+    </message>
+    <message>
         <location line="+3"/>
         <source>%1 %2, port %3</source>
         <translation>%1 %2, %3 port</translation>
     </message>
     <message>
-        <location line="+23"/>
+        <location line="+21"/>
         <source>&amp;Application:</source>
         <translation>&amp;Alkalmazás:</translation>
     </message>
@@ -2734,7 +2739,24 @@ Ctrl+Z / Ctrl+Y: visszavonás / mégis, Ctrl+görgő: nagyítás, F4: a program 
         <translation>&amp;Kicsinyítés</translation>
     </message>
     <message>
-        <location line="-15"/>
+        <location line="+51"/>
+        <location line="+10"/>
+        <source>Save Network</source>
+        <translation>Hálózat mentése</translation>
+    </message>
+    <message>
+        <location line="-9"/>
+        <source>%1 cannot hold everything in this network:
+%2
+
+Save anyway, leaving this out of the file?</source>
+        <translation>A(z) %1 nem tudja megőrizni a hálózat minden részét:
+%2
+
+Menti mégis, ezek nélkül?</translation>
+    </message>
+    <message>
+        <location line="-67"/>
         <source>Remove &amp;Wire</source>
         <translation>&amp;Vezeték eltávolítása</translation>
     </message>
@@ -10226,7 +10248,12 @@ Kiértékelés: %4 µs (%5..%6)</translation>
         <translation>%1[%2]: másképp íródott ki</translation>
     </message>
     <message>
-        <location line="+120"/>
+        <location line="+118"/>
+        <source>%1: not saved: the file would not hold everything (%2)</source>
+        <translation>%1: nincs mentve: a fájl nem őrizne meg mindent (%2)</translation>
+    </message>
+    <message>
+        <location line="+7"/>
         <source>%1: cannot write the network (%2)</source>
         <translation>%1: a hálózat nem írható ki (%2)</translation>
     </message>

@@ -2117,7 +2117,7 @@ Ctrl+Z / Ctrl+Y: annulla / ripeti, Ctrl+rotellina: zoom, F4: verifica il program
         <translation>La rete non ha ancora un file: usare Salva con nome</translation>
     </message>
     <message>
-        <location line="+28"/>
+        <location line="+29"/>
         <source>Untitled network</source>
         <translation>Rete senza nome</translation>
     </message>
@@ -2308,12 +2308,17 @@ Ctrl+Z / Ctrl+Y: annulla / ripeti, Ctrl+rotellina: zoom, F4: verifica il program
         <translation>Impostazioni porta: %1</translation>
     </message>
     <message>
+        <location line="+5"/>
+        <source>%1 %2: %3</source>
+        <translation>%1 %2: %3</translation>
+    </message>
+    <message>
         <location line="+3"/>
         <source>%1 %2, port %3</source>
         <translation>%1 %2, porta %3</translation>
     </message>
     <message>
-        <location line="+23"/>
+        <location line="+21"/>
         <source>&amp;Application:</source>
         <translation>&amp;Applicazione:</translation>
     </message>
@@ -2741,7 +2746,24 @@ Ctrl+Z / Ctrl+Y: annulla / ripeti, Ctrl+rotellina: zoom, F4: verifica il program
         <translation>Rim&amp;picciolisci</translation>
     </message>
     <message>
-        <location line="-15"/>
+        <location line="+51"/>
+        <location line="+10"/>
+        <source>Save Network</source>
+        <translation>Salva rete</translation>
+    </message>
+    <message>
+        <location line="-9"/>
+        <source>%1 cannot hold everything in this network:
+%2
+
+Save anyway, leaving this out of the file?</source>
+        <translation>%1 non può contenere tutto ciò che c&apos;è in questa rete:
+%2
+
+Salvare comunque, lasciando fuori questo dal file?</translation>
+    </message>
+    <message>
+        <location line="-67"/>
         <source>Remove &amp;Wire</source>
         <translation>Rimuovi &amp;cavo</translation>
     </message>
@@ -10247,7 +10269,12 @@ Valutazione: %4 µs (%5..%6)</translation>
         <translation>%1[%2]: scritto diversamente</translation>
     </message>
     <message>
-        <location line="+120"/>
+        <location line="+118"/>
+        <source>%1: not saved: the file would not hold everything (%2)</source>
+        <translation>%1: non salvato: il file non conterrebbe tutto (%2)</translation>
+    </message>
+    <message>
+        <location line="+7"/>
         <source>%1: cannot write the network (%2)</source>
         <translation>%1: impossibile scrivere la rete (%2)</translation>
     </message>

@@ -18,18 +18,22 @@
 #include <QDirIterator>
 #include <QFile>
 #include <QGroupBox>
+#include <QInputDialog>
 #include <QLabel>
 #include <QLineEdit>
+#include <QMessageBox>
 #include <QMouseEvent>
 #include <QPushButton>
 #include <QSignalSpy>
 #include <QSpinBox>
 #include <QTemporaryDir>
 #include <QTest>
+#include <QTimer>
 
 #include <gtest/gtest.h>
 
 #include <functional>
+#include <optional>
 
 namespace rung::app {
 namespace {
@@ -513,6 +517,82 @@ TEST(NetworkPortDialog, OffersThePl110sProtocolsPortByPort) {
     EXPECT_EQ(layered.baudBox()->currentData().toInt(), 9600);
     EXPECT_TRUE(layered.baudBox()->currentText().contains(QStringLiteral("(default)")));
     EXPECT_TRUE(layered.settings().isEmpty());
+}
+
+// Answers the modal dialogs that open while `run` runs, each with `answer`, which returns true
+// once it has closed the dialog.
+void answerDialogs(const std::function<bool(QWidget *)> &answer, const std::function<void()> &run) {
+    QTimer timer;
+    timer.setInterval(5);
+    QObject::connect(&timer, &QTimer::timeout, [&answer] {
+        if (QWidget *modal = QApplication::activeModalWidget())
+            answer(modal);
+    });
+    timer.start();
+    run();
+    timer.stop();
+}
+
+TEST(NetworkView, DeleteOnAStationAsksWhatGoesWithIt) {
+    NetworkDocument doc;
+    QString error;
+    ASSERT_TRUE(
+        doc.open(kNetExamples + QStringLiteral("/pl110-vigor/pl110-vigor.rungnet"), &error));
+    NetworkView view(&doc);
+    view.resize(1366, 768);
+    view.show();
+    view.select(QStringLiteral("vb"));
+    QString asked;
+    const auto press = [&asked](QMessageBox::StandardButton which) {
+        return [&asked, which](QWidget *modal) {
+            auto *box = qobject_cast<QMessageBox *>(modal);
+            if (!box)
+                return false;
+            asked = box->text();
+            box->button(which)->click();
+            return true;
+        };
+    };
+    answerDialogs(press(QMessageBox::Cancel), [&] { QTest::keyClick(&view, Qt::Key_Delete); });
+    EXPECT_TRUE(asked.contains(QStringLiteral("wire rs485 (pl/COM1, vb/CP2) goes")))
+        << asked.toStdString();
+    EXPECT_NE(doc.station(QStringLiteral("vb")), nullptr);
+    EXPECT_EQ(doc.undoStack()->count(), 0);
+    answerDialogs(press(QMessageBox::Yes), [&] { QTest::keyClick(&view, Qt::Key_Delete); });
+    EXPECT_EQ(doc.station(QStringLiteral("vb")), nullptr);
+    EXPECT_TRUE(doc.description().wires.empty());
+    EXPECT_EQ(doc.undoStack()->count(), 1);
+}
+
+TEST(NetworkPortDialog, EditsASingleProjectsPorts) {
+    // A project's "ports" (no network): the port chosen, then its settings; the other ports
+    // stay as they were.
+    const model::Target &vigor = *model::Target::byId(QStringLiteral("vigor"));
+    const QJsonObject ports{{QStringLiteral("CP1"), QJsonObject{{QStringLiteral("station"), 0}}}};
+    std::optional<QJsonObject> edited;
+    answerDialogs(
+        [](QWidget *modal) {
+            if (auto *choose = qobject_cast<QInputDialog *>(modal)) {
+                choose->setTextValue(QStringLiteral("CP2"));
+                choose->accept();
+                return true;
+            }
+            if (auto *port = qobject_cast<NetworkPortDialog *>(modal)) {
+                port->applicationBox()->setCurrentIndex(
+                    port->applicationBox()->findData(QStringLiteral("modbus")));
+                port->stationBox()->setValue(4);
+                port->accept();
+                return true;
+            }
+            return false;
+        },
+        [&] { edited = editProjectPorts(nullptr, vigor, QStringLiteral("VB"), ports); });
+    ASSERT_TRUE(edited.has_value());
+    EXPECT_EQ(*edited,
+              (QJsonObject{{QStringLiteral("CP1"), QJsonObject{{QStringLiteral("station"), 0}}},
+                           {QStringLiteral("CP2"),
+                            QJsonObject{{QStringLiteral("application"), QStringLiteral("modbus")},
+                                        {QStringLiteral("station"), 4}}}}));
 }
 
 TEST(NetworkStationDialog, NeverOverwritesAFile) {
