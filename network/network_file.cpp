@@ -26,11 +26,6 @@ QString item(const QString &path, qsizetype index) {
     return QStringLiteral("%1[%2]").arg(path).arg(index);
 }
 
-bool validName(const QString &name) {
-    static const QRegularExpression re(QStringLiteral("^[A-Za-z0-9_-]{1,32}$"));
-    return re.match(name).hasMatch();
-}
-
 bool string(const QJsonObject &o, const char *key, const QString &path, bool required,
             QString *into, QString *error) {
     const QJsonValue v = o.value(QLatin1String(key));
@@ -76,6 +71,11 @@ bool array(const QJsonObject &o, const char *key, QJsonArray *into, QString *err
 }
 
 } // namespace
+
+bool validNetworkName(const QString &name) {
+    static const QRegularExpression re(QStringLiteral("^[A-Za-z0-9_-]{1,32}$"));
+    return re.match(name).hasMatch();
+}
 
 bool onlyJsonKeys(const QJsonObject &o, const QStringList &keys, const QString &path,
                   QString *error) {
@@ -167,7 +167,7 @@ bool parseNetwork(const QByteArray &json, const QString &file, NetworkDescriptio
             !string(o, "model", where, false, &s.model, &why) ||
             !number(o, "period", where, 1, 1000000, &s.periodMs, &why))
             return fail(why);
-        if (!validName(s.name))
+        if (!validNetworkName(s.name))
             return fail(
                 NetworkFileTr::tr("%1: \"%2\" is no name (letters, digits, _ and -, at most 32)")
                     .arg(at(where, QStringLiteral("name")), s.name));
@@ -201,7 +201,7 @@ bool parseNetwork(const QByteArray &json, const QString &file, NetworkDescriptio
         if (!string(v.json, "name", where, true, &v.name, &why) ||
             !string(v.json, "kind", where, true, &v.kind, &why))
             return fail(why);
-        if (!validName(v.name))
+        if (!validNetworkName(v.name))
             return fail(
                 NetworkFileTr::tr("%1: \"%2\" is no name (letters, digits, _ and -, at most 32)")
                     .arg(at(where, QStringLiteral("name")), v.name));

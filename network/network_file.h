@@ -112,6 +112,9 @@ QStringList networkDifferences(const NetworkDescription &a, const NetworkDescrip
 // items (after an edit moved them).
 void renumberNetwork(NetworkDescription *description);
 
+// A station's or a device's name: letters, digits, _ and -, at most 32 (network-format.md).
+bool validNetworkName(const QString &name);
+
 // False with "PATH.KEY: unknown key (this object takes: ...)" for a key not in `keys`: a
 // misspelt key is said, never ignored.
 bool onlyJsonKeys(const QJsonObject &o, const QStringList &keys, const QString &path,

@@ -40,11 +40,6 @@ private:
 
 namespace {
 
-bool validStationName(const QString &name) {
-    static const QRegularExpression re(QStringLiteral("^[A-Za-z0-9_-]{1,32}$"));
-    return re.match(name).hasMatch();
-}
-
 QString endStation(const QString &end) {
     return end.section(QLatin1Char('/'), 0, 0);
 }
@@ -274,7 +269,7 @@ QString NetworkDocument::freeName(const QString &base) const {
 }
 
 bool NetworkDocument::addStation(const StationDescription &s, QString *error) {
-    if (!validStationName(s.name)) {
+    if (!network::validNetworkName(s.name)) {
         *error = tr("\"%1\" is no station name (letters, digits, _ and -, at most 32)").arg(s.name);
         return false;
     }
@@ -323,7 +318,7 @@ bool NetworkDocument::addNewProject(const QString &name, const QString &projectF
         *error = tr("%1 has no model \"%2\"").arg(target->displayName, modelName);
         return false;
     }
-    if (!validStationName(name) || freeName(name) != name) {
+    if (!network::validNetworkName(name) || freeName(name) != name) {
         StationDescription probe;
         probe.name = name;
         return addStation(probe, error);

@@ -4,6 +4,7 @@
 
 #include "model/project/project.h"
 #include "model/target/target.h"
+#include "network/network_file.h"
 
 #include <QComboBox>
 #include <QDialogButtonBox>
@@ -15,7 +16,6 @@
 #include <QLabel>
 #include <QLineEdit>
 #include <QPushButton>
-#include <QRegularExpression>
 
 namespace rung::app {
 
@@ -91,8 +91,7 @@ void NetworkStationDialog::fillModels() {
 
 void NetworkStationDialog::check() {
     QString why;
-    static const QRegularExpression re(QStringLiteral("^[A-Za-z0-9_-]{1,32}$"));
-    if (!re.match(name()).hasMatch())
+    if (!network::validNetworkName(name()))
         why = tr("A name is letters, digits, _ and -, at most 32");
     else if (m_document->freeName(name()) != name())
         why = tr("A station or device is already named \"%1\"").arg(name());

@@ -556,7 +556,7 @@ QString NetworkView::itemAt(const QPoint &canvasPoint) const {
 
 void NetworkView::refuse(const QString &why) {
     emit editRefused(why);
-    if (!property("quiet").toBool())
+    if (!m_quiet)
         QMessageBox::warning(this, tr("Network"), why);
 }
 

@@ -51,6 +51,9 @@ public:
     void addNewProjectStation();
     void editPeriod();
 
+    // Quiet: a refused edit is only signalled (editRefused), no message box (tests, scripts).
+    void setQuiet(bool quiet) { m_quiet = quiet; }
+
 signals:
     void stationActivated(const QString &name);
     void stationSelected(const QString &name);
@@ -73,6 +76,7 @@ private:
     NetworkCanvas *m_canvas;
     double m_zoom = 1.0;
     QString m_selection;
+    bool m_quiet = false;
 };
 
 // File > Save / Save As of a network: writes `document` to `file` (empty: where it came from);

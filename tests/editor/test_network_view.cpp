@@ -96,6 +96,9 @@ TEST(NetworkDocument, EveryExampleOpensAsTheFileReads) {
         EXPECT_FALSE(doc.isModified());
         NetworkView view(&doc);
         view.resize(1366, 768);
+        if (const QString shots = qEnvironmentVariable("RUNG_SCREENSHOT_DIR"); !shots.isEmpty())
+            view.grab().save(shots + QStringLiteral("/all-") + QFileInfo(file).baseName() +
+                             QStringLiteral(".png"));
         for (const auto &s : read.stations) {
             EXPECT_TRUE(doc.stationInfo(s.name).problem.isEmpty()) << s.name.toStdString();
             EXPECT_FALSE(view.itemRect(s.name).isEmpty()) << s.name.toStdString();
@@ -309,7 +312,8 @@ TEST(NetworkView, DraggingFromPortToPortMakesAWireAndDeleteTakesItOff) {
     QString error;
     ASSERT_TRUE(doc.open(kNetExamples + QStringLiteral("/easy-link/easy-link.rungnet"), &error));
     NetworkView view(&doc);
-    view.setProperty("quiet", true);
+    view.setQuiet(true);
+    QSignalSpy refused(&view, &NetworkView::editRefused);
     view.resize(1366, 768);
     view.show();
     QWidget *canvas = view.canvas();
@@ -322,7 +326,7 @@ TEST(NetworkView, DraggingFromPortToPortMakesAWireAndDeleteTakesItOff) {
                      Qt::LeftButton, Qt::NoModifier);
     QApplication::sendEvent(canvas, &move);
     QTest::mouseRelease(canvas, Qt::LeftButton, {}, to);
-    ASSERT_EQ(doc.description().wires.size(), 2u);
+    ASSERT_EQ(doc.description().wires.size(), 2u) << refused.count();
     EXPECT_EQ(doc.description().wires[1].ends,
               (QStringList{QStringLiteral("master/CP1"), QStringLiteral("s5/CP1")}));
     EXPECT_EQ(doc.undoStack()->count(), 1);
@@ -332,6 +336,18 @@ TEST(NetworkView, DraggingFromPortToPortMakesAWireAndDeleteTakesItOff) {
     EXPECT_EQ(view.selection(), QStringLiteral("s5/CP1"));
     QTest::keyClick(&view, Qt::Key_Delete);
     EXPECT_EQ(doc.description().wires.size(), 1u);
+    EXPECT_EQ(doc.undoStack()->count(), 2);
+
+    // A drag the network refuses (a port onto another end of its own wire) says why.
+    const QPoint master = view.endPoint(QStringLiteral("master/CP2"));
+    const QPoint s2 = view.endPoint(QStringLiteral("s2/CP2"));
+    QTest::mousePress(canvas, Qt::LeftButton, {}, master);
+    QMouseEvent again(QEvent::MouseMove, QPointF(s2), canvas->mapToGlobal(QPointF(s2)),
+                      Qt::NoButton, Qt::LeftButton, Qt::NoModifier);
+    QApplication::sendEvent(canvas, &again);
+    QTest::mouseRelease(canvas, Qt::LeftButton, {}, s2);
+    ASSERT_EQ(refused.count(), 1);
+    EXPECT_TRUE(refused.at(0).at(0).toString().contains(QStringLiteral("w1")));
     EXPECT_EQ(doc.undoStack()->count(), 2);
 }
 
