@@ -2085,7 +2085,7 @@ Ctrl+Z / Ctrl+Y: visszavonás / mégis, Ctrl+görgő: nagyítás, F4: a program 
 <context>
     <name>rung::app::NetworkDocument</name>
     <message>
-        <location filename="../app/gui/network_document.cpp" line="+55"/>
+        <location filename="../app/gui/network_document.cpp" line="+49"/>
         <source>pseudo-terminal</source>
         <translation>pszeudoterminál</translation>
     </message>
@@ -2120,7 +2120,7 @@ Ctrl+Z / Ctrl+Y: visszavonás / mégis, Ctrl+görgő: nagyítás, F4: a program 
         <translation>%1: a program nem olvasható (%2)</translation>
     </message>
     <message>
-        <location line="+95"/>
+        <location line="+101"/>
         <source>&quot;%1&quot; is no station name (letters, digits, _ and -, at most 32)</source>
         <translation>„%1” nem állomásnév (betűk, számjegyek, _ és -, legfeljebb 32)</translation>
     </message>
@@ -2296,7 +2296,7 @@ Ctrl+Z / Ctrl+Y: visszavonás / mégis, Ctrl+görgő: nagyítás, F4: a program 
 <context>
     <name>rung::app::NetworkPortDialog</name>
     <message>
-        <location filename="../app/gui/network_port_dialog.cpp" line="+65"/>
+        <location filename="../app/gui/network_port_dialog.cpp" line="+71"/>
         <source>Port Settings: %1</source>
         <translation>Port beállításai: %1</translation>
     </message>
@@ -2342,23 +2342,23 @@ Ctrl+Z / Ctrl+Y: visszavonás / mégis, Ctrl+görgő: nagyítás, F4: a program 
     </message>
     <message>
         <location line="+1"/>
-        <source>Total s&amp;laves (1..7):</source>
-        <translation>S&amp;lave-ek száma (1..7):</translation>
+        <source>Total s&amp;laves (%1..%2):</source>
+        <translation>S&amp;lave-ek száma (%1..%2):</translation>
     </message>
     <message>
         <location line="+1"/>
-        <source>&amp;Transfer range mode (1..3):</source>
-        <translation>Átviteli &amp;tartomány módja (1..3):</translation>
+        <source>&amp;Transfer range mode (%1..%2):</source>
+        <translation>Átviteli &amp;tartomány módja (%1..%2):</translation>
     </message>
     <message>
         <location line="+1"/>
-        <source>&amp;Retries (0..255):</source>
-        <translation>Ismét&amp;lések (0..255):</translation>
+        <source>&amp;Retries (%1..%2):</source>
+        <translation>Ismét&amp;lések (%1..%2):</translation>
     </message>
     <message>
         <location line="+1"/>
-        <source>T&amp;ime-out (1..255):</source>
-        <translation>&amp;Időtúllépés (1..255):</translation>
+        <source>T&amp;ime-out (%1..%2):</source>
+        <translation>&amp;Időtúllépés (%1..%2):</translation>
     </message>
     <message>
         <location line="+3"/>
@@ -2411,20 +2411,20 @@ Ctrl+Z / Ctrl+Y: visszavonás / mégis, Ctrl+görgő: nagyítás, F4: a program 
         <translation>Kezdő- és zárókarakter</translation>
     </message>
     <message>
-        <location line="+4"/>
+        <location line="+5"/>
         <location line="+1"/>
         <source>none</source>
         <translation>nincs</translation>
     </message>
     <message>
         <location line="+1"/>
-        <source>Start c&amp;haracter (0..255):</source>
-        <translation>&amp;Kezdőkarakter (0..255):</translation>
+        <source>Start c&amp;haracter (%1..%2):</source>
+        <translation>&amp;Kezdőkarakter (%1..%2):</translation>
     </message>
     <message>
         <location line="+1"/>
-        <source>&amp;End character (0..255):</source>
-        <translation>&amp;Zárókarakter (0..255):</translation>
+        <source>&amp;End character (%1..%2):</source>
+        <translation>&amp;Zárókarakter (%1..%2):</translation>
     </message>
     <message>
         <location line="+25"/>
@@ -2459,7 +2459,7 @@ Ctrl+Z / Ctrl+Y: visszavonás / mégis, Ctrl+görgő: nagyítás, F4: a program 
         <translation>A(z) %1 mindig %2 formátumú</translation>
     </message>
     <message>
-        <location line="+61"/>
+        <location line="+62"/>
         <source>the project&apos;s settings</source>
         <translation>a projekt beállításai</translation>
     </message>
@@ -2517,7 +2517,7 @@ Ctrl+Z / Ctrl+Y: visszavonás / mégis, Ctrl+görgő: nagyítás, F4: a program 
         <translation>Rung Studio projektek (*.rung)</translation>
     </message>
     <message>
-        <location line="+25"/>
+        <location line="+24"/>
         <source>A name is letters, digits, _ and -, at most 32</source>
         <translation>A név betűkből, számjegyekből, _ és - jelekből áll, legfeljebb 32</translation>
     </message>
@@ -7800,7 +7800,7 @@ Kiértékelés: %4 µs (%5..%6)</translation>
         <translation>%1: a(z) %2 mindig %3 formátumot használ</translation>
     </message>
     <message>
-        <location line="+27"/>
+        <location line="+31"/>
         <source>%1: needs an object of settings</source>
         <translation>%1: beállításokat tartalmazó objektum kell</translation>
     </message>
@@ -10133,7 +10133,7 @@ Kiértékelés: %4 µs (%5..%6)</translation>
         <translation>%1: ismeretlen kulcs (ez az objektum ezeket fogadja: %2)</translation>
     </message>
     <message>
-        <location line="-43"/>
+        <location line="-48"/>
         <source>%1: missing</source>
         <translation>%1: hiányzik</translation>
     </message>
@@ -10153,7 +10153,7 @@ Kiértékelés: %4 µs (%5..%6)</translation>
         <translation>%1: lista kell</translation>
     </message>
     <message>
-        <location line="+42"/>
+        <location line="+47"/>
         <source>%1: line %2, column %3: the file is not valid JSON (%4)</source>
         <translation>%1: %2. sor, %3. oszlop: a fájl nem érvényes JSON (%4)</translation>
     </message>

@@ -2092,7 +2092,7 @@ Ctrl+Z / Ctrl+Y: annulla / ripeti, Ctrl+rotellina: zoom, F4: verifica il program
 <context>
     <name>rung::app::NetworkDocument</name>
     <message>
-        <location filename="../app/gui/network_document.cpp" line="+55"/>
+        <location filename="../app/gui/network_document.cpp" line="+49"/>
         <source>pseudo-terminal</source>
         <translation>pseudo-terminale</translation>
     </message>
@@ -2127,7 +2127,7 @@ Ctrl+Z / Ctrl+Y: annulla / ripeti, Ctrl+rotellina: zoom, F4: verifica il program
         <translation>%1: impossibile leggere il programma (%2)</translation>
     </message>
     <message>
-        <location line="+95"/>
+        <location line="+101"/>
         <source>&quot;%1&quot; is no station name (letters, digits, _ and -, at most 32)</source>
         <translation>&quot;%1&quot; non è un nome di stazione (lettere, cifre, _ e -, al massimo 32)</translation>
     </message>
@@ -2303,7 +2303,7 @@ Ctrl+Z / Ctrl+Y: annulla / ripeti, Ctrl+rotellina: zoom, F4: verifica il program
 <context>
     <name>rung::app::NetworkPortDialog</name>
     <message>
-        <location filename="../app/gui/network_port_dialog.cpp" line="+65"/>
+        <location filename="../app/gui/network_port_dialog.cpp" line="+71"/>
         <source>Port Settings: %1</source>
         <translation>Impostazioni porta: %1</translation>
     </message>
@@ -2349,23 +2349,23 @@ Ctrl+Z / Ctrl+Y: annulla / ripeti, Ctrl+rotellina: zoom, F4: verifica il program
     </message>
     <message>
         <location line="+1"/>
-        <source>Total s&amp;laves (1..7):</source>
-        <translation>Numero di s&amp;lave (1..7):</translation>
+        <source>Total s&amp;laves (%1..%2):</source>
+        <translation>Numero di s&amp;lave (%1..%2):</translation>
     </message>
     <message>
         <location line="+1"/>
-        <source>&amp;Transfer range mode (1..3):</source>
-        <translation>Modo dell&apos;area di &amp;trasferimento (1..3):</translation>
+        <source>&amp;Transfer range mode (%1..%2):</source>
+        <translation>Modo dell&apos;area di &amp;trasferimento (%1..%2):</translation>
     </message>
     <message>
         <location line="+1"/>
-        <source>&amp;Retries (0..255):</source>
-        <translation>&amp;Ritentativi (0..255):</translation>
+        <source>&amp;Retries (%1..%2):</source>
+        <translation>&amp;Ritentativi (%1..%2):</translation>
     </message>
     <message>
         <location line="+1"/>
-        <source>T&amp;ime-out (1..255):</source>
-        <translation>T&amp;ime-out (1..255):</translation>
+        <source>T&amp;ime-out (%1..%2):</source>
+        <translation>T&amp;ime-out (%1..%2):</translation>
     </message>
     <message>
         <location line="+3"/>
@@ -2418,20 +2418,20 @@ Ctrl+Z / Ctrl+Y: annulla / ripeti, Ctrl+rotellina: zoom, F4: verifica il program
         <translation>Caratteri di inizio e di fine</translation>
     </message>
     <message>
-        <location line="+4"/>
+        <location line="+5"/>
         <location line="+1"/>
         <source>none</source>
         <translation>nessuno</translation>
     </message>
     <message>
         <location line="+1"/>
-        <source>Start c&amp;haracter (0..255):</source>
-        <translation>Carattere di &amp;inizio (0..255):</translation>
+        <source>Start c&amp;haracter (%1..%2):</source>
+        <translation>Carattere di &amp;inizio (%1..%2):</translation>
     </message>
     <message>
         <location line="+1"/>
-        <source>&amp;End character (0..255):</source>
-        <translation>Carattere di &amp;fine (0..255):</translation>
+        <source>&amp;End character (%1..%2):</source>
+        <translation>Carattere di &amp;fine (%1..%2):</translation>
     </message>
     <message>
         <location line="+25"/>
@@ -2466,7 +2466,7 @@ Ctrl+Z / Ctrl+Y: annulla / ripeti, Ctrl+rotellina: zoom, F4: verifica il program
         <translation>%1 usa sempre %2</translation>
     </message>
     <message>
-        <location line="+61"/>
+        <location line="+62"/>
         <source>the project&apos;s settings</source>
         <translation>le impostazioni del progetto</translation>
     </message>
@@ -2524,7 +2524,7 @@ Ctrl+Z / Ctrl+Y: annulla / ripeti, Ctrl+rotellina: zoom, F4: verifica il program
         <translation>Progetti Rung Studio (*.rung)</translation>
     </message>
     <message>
-        <location line="+25"/>
+        <location line="+24"/>
         <source>A name is letters, digits, _ and -, at most 32</source>
         <translation>Un nome è fatto di lettere, cifre, _ e -, al massimo 32</translation>
     </message>
@@ -7821,7 +7821,7 @@ Valutazione: %4 µs (%5..%6)</translation>
         <translation>%1: %2 usa sempre %3</translation>
     </message>
     <message>
-        <location line="+27"/>
+        <location line="+31"/>
         <source>%1: needs an object of settings</source>
         <translation>%1: richiede un oggetto di impostazioni</translation>
     </message>
@@ -10154,7 +10154,7 @@ Valutazione: %4 µs (%5..%6)</translation>
         <translation>%1: chiave sconosciuta (questo oggetto accetta: %2)</translation>
     </message>
     <message>
-        <location line="-43"/>
+        <location line="-48"/>
         <source>%1: missing</source>
         <translation>%1: manca</translation>
     </message>
@@ -10174,7 +10174,7 @@ Valutazione: %4 µs (%5..%6)</translation>
         <translation>%1: richiede una lista</translation>
     </message>
     <message>
-        <location line="+42"/>
+        <location line="+47"/>
         <source>%1: line %2, column %3: the file is not valid JSON (%4)</source>
         <translation>%1: riga %2, colonna %3: il file non è JSON valido (%4)</translation>
     </message>

@@ -9,7 +9,6 @@
 #include <QDir>
 #include <QFile>
 #include <QFileInfo>
-#include <QRegularExpression>
 #include <QUndoCommand>
 
 namespace rung::app {
@@ -211,9 +210,11 @@ QStringList NetworkDocument::stationPorts(const QString &name) const {
     for (const model::PortSpec &p : info.target->ports) {
         if (!p.on(info.model))
             continue;
+        // A port only a program drives byte by byte (a VB-1COM module's slot: the table gives
+        // the VB sixteen) is shown once something names it, not sixteen times empty.
         bool moduleOnly = true;
         for (const model::PortApplication &a : p.applications)
-            moduleOnly = moduleOnly && QLatin1String(a.id) == QLatin1String("vb-1com");
+            moduleOnly = moduleOnly && a.programDriven;
         bool isNamed = false;
         for (const QString &n : named)
             isNamed = isNamed || n.compare(p.name, Qt::CaseInsensitive) == 0;
@@ -249,7 +250,11 @@ const WireDescription *NetworkDocument::wireOf(const QString &end) const {
 
 QString NetworkDocument::freeName(const QString &base) const {
     QString stem = base;
-    stem.replace(QRegularExpression(QStringLiteral("[^A-Za-z0-9_-]")), QStringLiteral("_"));
+    // What a name may not hold (network::validNetworkName) becomes "_".
+    for (QChar &c : stem)
+        if (c.unicode() > 127 ||
+            (!c.isLetterOrNumber() && c != QLatin1Char('_') && c != QLatin1Char('-')))
+            c = QLatin1Char('_');
     stem = stem.left(28);
     if (stem.isEmpty())
         stem = QStringLiteral("plc");

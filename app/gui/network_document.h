@@ -52,8 +52,8 @@ public:
 
     NetworkStationInfo stationInfo(const QString &station) const;
     const network::StationDescription *station(const QString &name) const;
-    // The ports a view shows for a station: those its model has but modules (VB-1COM slots)
-    // not named anywhere, then any named in the network or the project.
+    // The ports a view shows for a station: those its model has but the ones only a program
+    // drives (VB-1COM slots) not named anywhere, then any named in the network or the project.
     QStringList stationPorts(const QString &station) const;
     // A port's settings as the station runs them: the project's, the network's over them.
     QJsonObject effectivePortSettings(const QString &station, const QString &port) const;

@@ -15,6 +15,7 @@
 #include <QVBoxLayout>
 
 #include <algorithm>
+#include <tuple>
 
 namespace rung::app {
 
@@ -34,10 +35,15 @@ QStringList portFrames() {
     return out;
 }
 
-QSpinBox *portSpin(int lowest, int highest, QWidget *parent) {
+QSpinBox *portSpin(model::SettingRange range, QWidget *parent) {
     auto *box = new QSpinBox(parent);
-    box->setRange(lowest, highest);
+    box->setRange(range.lowest, range.highest);
     return box;
+}
+
+// "Total slaves (1..7):": the range as the table gives it, in the label.
+QString withRange(const QString &label, model::SettingRange range) {
+    return label.arg(range.lowest).arg(range.highest);
 }
 
 // A value outside the range stays as it is (and the problem says why), never clamped away.
@@ -78,7 +84,7 @@ NetworkPortDialog::NetworkPortDialog(const model::Target &target, const QString 
     auto *form = new QFormLayout;
     m_application = new QComboBox(this);
     m_applicationNote = new QLabel(this);
-    m_station = portSpin(0, 255, this);
+    m_station = portSpin({0, 255}, this);
     m_stationNote = new QLabel(this);
     m_baud = new QComboBox(this);
     m_frame = new QComboBox(this);
@@ -101,15 +107,15 @@ NetworkPortDialog::NetworkPortDialog(const model::Target &target, const QString 
     // "Timeout unit (10mS)"; the ranges are those readPortConfig takes.
     m_cpuLink = new QGroupBox(tr("CPU Link master (station 0)"), this);
     auto *cpu = new QFormLayout(m_cpuLink);
-    m_slaves = portSpin(1, 7, this);
-    m_range = portSpin(1, 3, this);
-    m_retry = portSpin(0, 255, this);
-    m_timeout = portSpin(1, 255, this);
+    m_slaves = portSpin(model::kCpuLinkSlaves, this);
+    m_range = portSpin(model::kCpuLinkRange, this);
+    m_retry = portSpin(model::kCpuLinkRetries, this);
+    m_timeout = portSpin(model::kCpuLinkTimeout, this);
     m_timeout->setSuffix(tr(" x 10 ms"));
-    cpu->addRow(tr("Total s&laves (1..7):"), m_slaves);
-    cpu->addRow(tr("&Transfer range mode (1..3):"), m_range);
-    cpu->addRow(tr("&Retries (0..255):"), m_retry);
-    cpu->addRow(tr("T&ime-out (1..255):"), m_timeout);
+    cpu->addRow(withRange(tr("Total s&laves (%1..%2):"), model::kCpuLinkSlaves), m_slaves);
+    cpu->addRow(withRange(tr("&Transfer range mode (%1..%2):"), model::kCpuLinkRange), m_range);
+    cpu->addRow(withRange(tr("&Retries (%1..%2):"), model::kCpuLinkRetries), m_retry);
+    cpu->addRow(withRange(tr("T&ime-out (%1..%2):"), model::kCpuLinkTimeout), m_timeout);
     layout->addWidget(m_cpuLink);
 
     m_parallel = new QGroupBox(tr("Parallel Link"), this);
@@ -134,12 +140,13 @@ NetworkPortDialog::NetworkPortDialog(const model::Target &target, const QString 
 
     m_characters = new QGroupBox(tr("Start and end characters"), this);
     auto *chars = new QFormLayout(m_characters);
-    m_start = portSpin(-1, 255, this);
-    m_end = portSpin(-1, 255, this);
+    // -1 (shown as "none") below the range: no character.
+    m_start = portSpin({model::kCharacterCode.lowest - 1, model::kCharacterCode.highest}, this);
+    m_end = portSpin({model::kCharacterCode.lowest - 1, model::kCharacterCode.highest}, this);
     m_start->setSpecialValueText(tr("none"));
     m_end->setSpecialValueText(tr("none"));
-    chars->addRow(tr("Start c&haracter (0..255):"), m_start);
-    chars->addRow(tr("&End character (0..255):"), m_end);
+    chars->addRow(withRange(tr("Start c&haracter (%1..%2):"), model::kCharacterCode), m_start);
+    chars->addRow(withRange(tr("&End character (%1..%2):"), model::kCharacterCode), m_end);
     layout->addWidget(m_characters);
 
     m_problem = new QLabel(this);
@@ -273,10 +280,11 @@ void NetworkPortDialog::fill(const QJsonObject &settings) {
                       : QString());
 
     m_cpuLink->setVisible(a->sharedLink == 1);
-    setSpin(m_slaves, 1, 7, value("slaves").toInt());
-    setSpin(m_range, 1, 3, value("range").toInt());
-    setSpin(m_retry, 0, 255, value("retry").toInt());
-    setSpin(m_timeout, 1, 255, value("timeout").toInt());
+    for (const auto &[box, range, key] : {std::tuple{m_slaves, model::kCpuLinkSlaves, "slaves"},
+                                          std::tuple{m_range, model::kCpuLinkRange, "range"},
+                                          std::tuple{m_retry, model::kCpuLinkRetries, "retry"},
+                                          std::tuple{m_timeout, model::kCpuLinkTimeout, "timeout"}})
+        setSpin(box, range.lowest, range.highest, value(key).toInt());
     m_parallel->setVisible(a->sharedLink == 2);
     m_role->setCurrentIndex(m_role->findData(value("role").toString()));
     m_speed->setCurrentIndex(m_speed->findData(value("speed").toString()));
