@@ -26,11 +26,6 @@ QString item(const QString &path, qsizetype index) {
     return QStringLiteral("%1[%2]").arg(path).arg(index);
 }
 
-bool validName(const QString &name) {
-    static const QRegularExpression re(QStringLiteral("^[A-Za-z0-9_-]{1,32}$"));
-    return re.match(name).hasMatch();
-}
-
 bool string(const QJsonObject &o, const char *key, const QString &path, bool required,
             QString *into, QString *error) {
     const QJsonValue v = o.value(QLatin1String(key));
@@ -76,6 +71,11 @@ bool array(const QJsonObject &o, const char *key, QJsonArray *into, QString *err
 }
 
 } // namespace
+
+bool validNetworkName(const QString &name) {
+    static const QRegularExpression re(QStringLiteral("^[A-Za-z0-9_-]{1,32}$"));
+    return re.match(name).hasMatch();
+}
 
 bool onlyJsonKeys(const QJsonObject &o, const QStringList &keys, const QString &path,
                   QString *error) {
@@ -138,6 +138,9 @@ bool parseNetwork(const QByteArray &json, const QString &file, NetworkDescriptio
                       QString(), &why) ||
         !number(root, "period", QString(), 1, 1000000, &d->periodMs, &why))
         return fail(why);
+    d->periodGiven = root.contains(QLatin1String("period"));
+    d->comment = root.value(QLatin1String("comment"));
+    d->format = root.value(QLatin1String("format"));
     const QDir dir = QFileInfo(file).absoluteDir();
     QSet<QString> names;
     QJsonArray list;
@@ -164,7 +167,7 @@ bool parseNetwork(const QByteArray &json, const QString &file, NetworkDescriptio
             !string(o, "model", where, false, &s.model, &why) ||
             !number(o, "period", where, 1, 1000000, &s.periodMs, &why))
             return fail(why);
-        if (!validName(s.name))
+        if (!validNetworkName(s.name))
             return fail(
                 NetworkFileTr::tr("%1: \"%2\" is no name (letters, digits, _ and -, at most 32)")
                     .arg(at(where, QStringLiteral("name")), s.name));
@@ -177,6 +180,7 @@ bool parseNetwork(const QByteArray &json, const QString &file, NetworkDescriptio
             return fail(NetworkFileTr::tr("%1: needs an object of ports")
                             .arg(at(where, QStringLiteral("ports"))));
         s.ports = ports.toObject();
+        s.comment = o.value(QLatin1String("comment"));
         for (auto it = s.ports.begin(); it != s.ports.end(); ++it)
             if (!it.value().isObject())
                 return fail(NetworkFileTr::tr("%1: needs an object of settings")
@@ -197,7 +201,7 @@ bool parseNetwork(const QByteArray &json, const QString &file, NetworkDescriptio
         if (!string(v.json, "name", where, true, &v.name, &why) ||
             !string(v.json, "kind", where, true, &v.kind, &why))
             return fail(why);
-        if (!validName(v.name))
+        if (!validNetworkName(v.name))
             return fail(
                 NetworkFileTr::tr("%1: \"%2\" is no name (letters, digits, _ and -, at most 32)")
                     .arg(at(where, QStringLiteral("name")), v.name));
@@ -224,6 +228,7 @@ bool parseNetwork(const QByteArray &json, const QString &file, NetworkDescriptio
             ends = list[i].toArray();
         } else if (list[i].isObject()) {
             const QJsonObject o = list[i].toObject();
+            w.named = o.contains(QLatin1String("name"));
             if (!onlyJsonKeys(o, {QStringLiteral("name"), QStringLiteral("ends")}, where, &why) ||
                 !string(o, "name", where, false, &w.name, &why) || !array(o, "ends", &ends, &why))
                 return fail(why);
@@ -299,6 +304,9 @@ bool parseNetwork(const QByteArray &json, const QString &file, NetworkDescriptio
         if (!string(o, "kind", where, true, &kind, &why))
             return fail(why);
         qint64 frame = 0, byte = 0, mask = 1;
+        for (const char *key : {"from", "to", "frame", "byte", "xor"})
+            if (o.contains(QLatin1String(key)))
+                f.given << QLatin1String(key);
         if (kind == QLatin1String("cut") || kind == QLatin1String("silent")) {
             f.kind = kind == QLatin1String("cut") ? FaultDescription::Kind::Cut
                                                   : FaultDescription::Kind::Silent;

@@ -91,7 +91,7 @@ bool readCode(const QJsonObject &o, const char *key, const QString &path, int *i
         *into = -1;
         return true;
     }
-    return readInt(o, key, path, 0, 255, into, error);
+    return readInt(o, key, path, kCharacterCode.lowest, kCharacterCode.highest, into, error);
 }
 
 } // namespace
@@ -207,10 +207,14 @@ bool readPortConfig(const Target &target, const ModelVariant *model, const QStri
             }
             config->line = line;
         }
-        if (!readInt(o, "slaves", layer.path, 1, 7, &config->slaves, error) ||
-            !readInt(o, "range", layer.path, 1, 3, &config->range, error) ||
-            !readInt(o, "retry", layer.path, 0, 255, &config->retries, error) ||
-            !readInt(o, "timeout", layer.path, 1, 255, &config->timeout, error) ||
+        if (!readInt(o, "slaves", layer.path, kCpuLinkSlaves.lowest, kCpuLinkSlaves.highest,
+                     &config->slaves, error) ||
+            !readInt(o, "range", layer.path, kCpuLinkRange.lowest, kCpuLinkRange.highest,
+                     &config->range, error) ||
+            !readInt(o, "retry", layer.path, kCpuLinkRetries.lowest, kCpuLinkRetries.highest,
+                     &config->retries, error) ||
+            !readInt(o, "timeout", layer.path, kCpuLinkTimeout.lowest, kCpuLinkTimeout.highest,
+                     &config->timeout, error) ||
             !readChoice(o, "role", layer.path, "master", "slave", &config->parallelMaster, error) ||
             !readChoice(o, "speed", layer.path, "high", "low", &config->highSpeed, error) ||
             !readChoice(o, "mode", layer.path, "ascii", "rtu", &config->modbusAscii, error) ||

@@ -14,6 +14,19 @@
 
 namespace rung::model {
 
+// The ranges of the settings that are the same for every family: CPU Link's master panel
+// (B-3-4: "Total Slaves" 1..7, "Transfer Range Mode" 1..3, "Retry", "Timeout unit (10mS)") and
+// a start or end character (a byte). readPortConfig checks them and the port dialog offers them.
+struct SettingRange {
+    int lowest = 0;
+    int highest = 0;
+};
+inline constexpr SettingRange kCpuLinkSlaves{1, 7};
+inline constexpr SettingRange kCpuLinkRange{1, 3};
+inline constexpr SettingRange kCpuLinkRetries{0, 255};
+inline constexpr SettingRange kCpuLinkTimeout{1, 255};
+inline constexpr SettingRange kCharacterCode{0, 255};
+
 struct PortConfig {
     QString port;                                 // the port's name, as the table writes it
     const PortApplication *application = nullptr; // never null once read

@@ -1,0 +1,87 @@
+#pragma once
+
+// The Network view (issue 30): the open network drawn as boxes, one per station (its name,
+// target, model and program, then each port with its application, station number, rate and
+// format, and its bridge to a real line) and per simulated device, with the wires as buses
+// beneath them joining the ports. Zoomable (Ctrl+wheel, Ctrl++ / Ctrl+- / Ctrl+0); a click
+// selects a station, a port or a wire; a drag from one port to another wires them; Delete
+// removes what is selected (a station after saying what goes with it); the context menu holds
+// every edit of NetworkDocument. Double-click on a station asks for its program.
+
+#include <QScrollArea>
+
+#include <vector>
+
+namespace rung::app {
+
+class NetworkDocument;
+class NetworkCanvas;
+
+class NetworkView : public QScrollArea {
+    Q_OBJECT
+public:
+    explicit NetworkView(NetworkDocument *document, QWidget *parent = nullptr);
+
+    NetworkDocument *document() const { return m_document; }
+    QWidget *canvas() const;
+
+    double zoom() const { return m_zoom; }
+    void setZoom(double zoom); // 0.5 .. 3
+    void zoomIn();
+    void zoomOut();
+
+    // What is selected: a station or device ("master"), a port ("master/CP2") or a wire
+    // ("wire:w1"); "" for nothing.
+    QString selection() const { return m_selection; }
+    void select(const QString &item);
+    // The selected station's name (also when one of its ports is selected).
+    QString selectedStation() const;
+
+    // Where things are drawn, in the canvas's coordinates at the current zoom (for tests and
+    // for the lead's integration: scrolling to a station).
+    QRect itemRect(const QString &item) const; // a station or a device box
+    QPoint endPoint(const QString &end) const; // a port's row or a device's connector
+    QString itemAt(const QPoint &canvasPoint) const;
+
+    // The edits the menus run (each says why when refused). Remove asks before it removes
+    // anything else; `confirm` false skips the question (tests, scripts).
+    void removeSelected(bool confirm = true);
+    void editPort(const QString &end);
+    void addStationFromProgram();
+    void addNewProjectStation();
+    void editPeriod();
+
+    // Quiet: a refused edit is only signalled (editRefused), no message box (tests, scripts).
+    void setQuiet(bool quiet) { m_quiet = quiet; }
+
+signals:
+    void stationActivated(const QString &name);
+    void stationSelected(const QString &name);
+    void selectionChanged(const QString &item);
+    // An edit was refused; the view has said why in a message box unless quiet.
+    void editRefused(const QString &why);
+
+protected:
+    void changeEvent(QEvent *event) override;
+    void keyPressEvent(QKeyEvent *event) override;
+    void wheelEvent(QWheelEvent *event) override;
+
+private:
+    friend class NetworkCanvas;
+    void refuse(const QString &why);
+    void contextMenuAt(const QPoint &canvasPoint, const QPoint &global);
+    void addBridgeMenu(class QMenu *menu, const QString &end);
+
+    NetworkDocument *m_document;
+    NetworkCanvas *m_canvas;
+    double m_zoom = 1.0;
+    QString m_selection;
+    bool m_quiet = false;
+};
+
+// File > Save / Save As of a network: writes `document` to `file` (empty: where it came from);
+// when the file could not hold everything the user has, says what and asks before writing
+// anything; an error is shown. True when the file was written.
+bool saveNetwork(QWidget *parent, NetworkDocument *document, const QString &file = {});
+
+} // namespace rung::app
