@@ -71,6 +71,12 @@ void FileController::addActions(QMenu *file, QToolBar *bar) {
     QAction *newAction = file->addAction(editor::toolIcon(editor::ToolIcon::NewFile),
                                          tr("&New Project..."), this, &FileController::fileNew);
     newAction->setShortcut(QKeySequence::New);
+    QAction *newNetwork = file->addAction(tr("New Ne&twork"), this, [this] {
+        QString error;
+        if (m_networkOpener && !m_networkOpener(QString(), &error))
+            statusBar()->showMessage(error, 10000);
+    });
+    newNetwork->setObjectName(QStringLiteral("fileNewNetwork"));
     QAction *open = file->addAction(editor::toolIcon(editor::ToolIcon::OpenFile), tr("&Open..."),
                                     this, &FileController::fileOpen);
     open->setShortcut(QKeySequence::Open);

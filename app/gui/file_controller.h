@@ -70,8 +70,9 @@ public:
 
     QString recoveryPath() const; // this window's (recovery.h)
 
-    // Opens a network (.rungnet) in a window of its own; false with why. The main window
-    // sets it (network_window.h); without one a network is refused with a reason.
+    // Opens a network (.rungnet; an empty path: a new network) in a window of its own; false
+    // with why. The main window sets it (network_window.h); without one a network is refused
+    // with a reason.
     using NetworkOpener = std::function<bool(const QString &path, QString *error)>;
     void setNetworkOpener(NetworkOpener opener) { m_networkOpener = std::move(opener); }
     void writeRecovery();

@@ -11,7 +11,7 @@ NetworkWindow *MainWindow::openNetwork(const QString &path, QString *error) {
     // A window of its own (not a child widget), closed with this one.
     auto *window = new NetworkWindow(this);
     window->setWindowFlag(Qt::Window);
-    if (!window->open(path, error)) {
+    if (path.isEmpty() ? !window->newNetwork(error) : !window->open(path, error)) {
         delete window;
         return nullptr;
     }

@@ -1,8 +1,11 @@
 #include "app/gui/network_window.h"
 
 #include "app/cli/cli_network.h"
+#include "app/gui/file_dialogs.h"
 #include "app/gui/network_chart.h"
+#include "app/gui/network_document.h"
 #include "app/gui/network_traffic_view.h"
+#include "app/gui/network_view.h"
 #include "app/gui/network_watch_model.h"
 #include "app/gui/simulation_controller.h"
 
@@ -31,12 +34,15 @@
 #include <QLineEdit>
 #include <QListWidget>
 #include <QMenuBar>
+#include <QMessageBox>
 #include <QPushButton>
 #include <QStackedWidget>
 #include <QStatusBar>
 #include <QStyle>
+#include <QTabWidget>
 #include <QTableView>
 #include <QToolBar>
+#include <QUndoStack>
 #include <QVBoxLayout>
 
 namespace rung::app {
@@ -64,15 +70,32 @@ NetworkWindow::~NetworkWindow() {
 }
 
 void NetworkWindow::buildWindow() {
+    m_doc = new NetworkDocument(this);
+    m_view = new NetworkView(m_doc, this);
+    m_view->setObjectName(QStringLiteral("networkView"));
+    connect(m_doc, &NetworkDocument::changed, this, &NetworkWindow::documentChanged);
+    connect(m_doc, &NetworkDocument::modifiedChanged, this, &NetworkWindow::updateTitle);
+    connect(m_view, &NetworkView::stationSelected, this,
+            [this](const QString &name) { selectStation(name); });
+    connect(m_view, &NetworkView::stationActivated, this, [this](const QString &name) {
+        if (const network::StationDescription *s = m_doc->station(name))
+            emit openProgramRequested(s->path);
+    });
+    connect(m_view, &NetworkView::editRefused, this,
+            [this](const QString &why) { statusBar()->showMessage(why, 10000); });
     m_ladders = new QStackedWidget(this);
     m_ladders->setObjectName(QStringLiteral("networkLadders"));
-    setCentralWidget(m_ladders);
+    m_tabs = new QTabWidget(this);
+    m_tabs->setObjectName(QStringLiteral("networkTabs"));
+    m_tabs->addTab(m_view, QString());
+    m_tabs->addTab(m_ladders, QString());
+    setCentralWidget(m_tabs);
 
     m_stationList = new QListWidget(this);
     m_stationList->setObjectName(QStringLiteral("networkStations"));
     connect(m_stationList, &QListWidget::currentRowChanged, this, [this](int row) {
-        if (row >= 0 && row < int(m_views.size()))
-            selectStation(m_views[std::size_t(row)].name);
+        if (row >= 0 && row < int(m_views.size()) && selectStation(m_views[std::size_t(row)].name))
+            m_tabs->setCurrentWidget(m_ladders);
     });
     connect(m_stationList, &QListWidget::itemActivated, this, [this](QListWidgetItem *item) {
         const int row = m_stationList->row(item);
@@ -181,7 +204,25 @@ void NetworkWindow::buildMenus() {
     });
     m_editProgram->setObjectName(QStringLiteral("networkEditProgram"));
     file->addSeparator();
+    m_save = file->addAction(tr("&Save Network"), QKeySequence::Save, this, [this] { save(); });
+    m_save->setObjectName(QStringLiteral("networkSave"));
+    m_saveAs = file->addAction(tr("Save Network &As..."), QKeySequence::SaveAs, this,
+                               [this] { save(true); });
+    file->addSeparator();
     m_close = file->addAction(tr("&Close Network"), QKeySequence::Close, this, &QWidget::close);
+    QMenu *edit = menuBar()->addMenu(tr("&Edit"));
+    m_undo = m_doc->undoStack()->createUndoAction(edit, tr("&Undo"));
+    m_undo->setShortcut(QKeySequence::Undo);
+    edit->addAction(m_undo);
+    m_redo = m_doc->undoStack()->createRedoAction(edit, tr("&Redo"));
+    m_redo->setShortcut(QKeySequence::Redo);
+    edit->addAction(m_redo);
+    edit->addSeparator();
+    edit->addAction(tr("Add Station From a &Program..."), m_view,
+                    &NetworkView::addStationFromProgram);
+    edit->addAction(tr("Add Station as a &New Project..."), m_view,
+                    &NetworkView::addNewProjectStation);
+    edit->addAction(tr("Network &Period..."), m_view, &NetworkView::editPeriod);
 
     m_simulationMenu = menuBar()->addMenu(tr("&Simulation"));
     auto add = [&](const char *name, const QString &text, QStyle::StandardPixmap icon,
@@ -196,14 +237,30 @@ void NetworkWindow::buildMenus() {
         tools->addAction(a);
         return a;
     };
-    m_run = add("networkRun", tr("&Run"), QStyle::SP_MediaPlay, QKeySequence(Qt::Key_F10),
-                [this] { m_session->run(); });
-    m_pause = add("networkPause", tr("&Pause"), QStyle::SP_MediaPause, QKeySequence(Qt::Key_F11),
-                  [this] { m_session->pause(); });
+    m_run = add("networkRun", tr("&Run"), QStyle::SP_MediaPlay, QKeySequence(Qt::Key_F10), [this] {
+        if (m_session)
+            m_session->run();
+    });
+    m_pause =
+        add("networkPause", tr("&Pause"), QStyle::SP_MediaPause, QKeySequence(Qt::Key_F11), [this] {
+            if (m_session)
+                m_session->pause();
+        });
     m_stop = add("networkStop", tr("&Stop"), QStyle::SP_MediaStop,
-                 QKeySequence(Qt::SHIFT | Qt::Key_F11), [this] { m_session->stop(); });
+                 QKeySequence(Qt::SHIFT | Qt::Key_F11), [this] {
+                     if (m_session)
+                         m_session->stop();
+                     if (m_stale) {
+                         QString why;
+                         if (!buildSession(&why))
+                             statusBar()->showMessage(why, 15000);
+                     }
+                 });
     m_scan = add("networkSingleScan", tr("Single S&can"), QStyle::SP_MediaSeekForward,
-                 QKeySequence(Qt::Key_F12), [this] { m_session->singleScan(); });
+                 QKeySequence(Qt::Key_F12), [this] {
+                     if (m_session)
+                         m_session->singleScan();
+                 });
     QAction *runFor = m_simulationMenu->addAction(tr("Run &For..."));
     runFor->setObjectName(QStringLiteral("networkRunFor"));
     runFor->setShortcut(QKeySequence(Qt::CTRL | Qt::SHIFT | Qt::Key_F10));
@@ -246,8 +303,8 @@ void NetworkWindow::buildMenus() {
         m_selector->setObjectName(QStringLiteral("networkStationSelector"));
         m_selector->setSizeAdjustPolicy(QComboBox::AdjustToContents);
         connect(m_selector, &QComboBox::currentIndexChanged, this, [this](int i) {
-            if (i >= 0 && i < int(m_views.size()))
-                selectStation(m_views[std::size_t(i)].name);
+            if (i >= 0 && i < int(m_views.size()) && selectStation(m_views[std::size_t(i)].name))
+                m_tabs->setCurrentWidget(m_ladders);
         });
     }
     tools->addWidget(m_selector);
@@ -350,11 +407,9 @@ void NetworkWindow::retranslate() {
     m_chartDock->setWindowTitle(tr("Timing Chart"));
     m_trafficDock->setWindowTitle(tr("Traffic"));
     m_stationList->setToolTip(tr("Double-click a station to edit its program"));
-    if (!m_path.isEmpty())
-        //: the window's title: the network file's name
-        setWindowTitle(tr("%1 - Network - Rung Studio").arg(QFileInfo(m_path).fileName()));
-    else
-        setWindowTitle(tr("Network - Rung Studio"));
+    m_tabs->setTabText(m_tabs->indexOf(m_view), tr("Network"));
+    m_tabs->setTabText(m_tabs->indexOf(m_ladders), tr("Ladder"));
+    updateTitle();
     updateStatus();
 }
 
@@ -367,6 +422,16 @@ void NetworkWindow::changeEvent(QEvent *event) {
 }
 
 void NetworkWindow::closeEvent(QCloseEvent *event) {
+    if (m_doc->isModified()) {
+        const auto answer = QMessageBox::question(
+            this, tr("Close Network"),
+            tr("%1 has edits that are not saved. Save them?").arg(m_doc->displayName()),
+            QMessageBox::Save | QMessageBox::Discard | QMessageBox::Cancel, QMessageBox::Save);
+        if (answer == QMessageBox::Cancel || (answer == QMessageBox::Save && !save())) {
+            event->ignore();
+            return;
+        }
+    }
     if (m_session)
         m_session->pause();
     event->accept();
@@ -415,15 +480,76 @@ bool NetworkWindow::loadStationDocument(StationView &view, QString *error) {
 }
 
 bool NetworkWindow::open(const QString &path, QString *error) {
-    network::NetworkDescription description;
-    if (!network::readNetworkFile(path, &description, error))
-        return false;
-    std::unique_ptr<network::NetworkSession> session = network::NetworkSession::start(
-        description, cliProgramLoader(), error, nullptr,
-        [this, &path](const network::Network &built) { m_traffic->setNetwork(built, path); });
-    if (!session)
+    if (!m_doc->open(path, error))
         return false;
     m_path = QFileInfo(path).absoluteFilePath();
+    QString why;
+    if (!buildSession(&why))
+        statusBar()->showMessage(why, 15000);
+    // The stations' list as tall as its rows, the inputs and outputs below it the rest; the
+    // ladder the middle of a 1366x768 screen.
+    const int rows = std::clamp<int>(int(m_views.size()), 1, 8);
+    resizeDocks({m_stationsDock, m_ioDock},
+                {rows * m_stationList->fontMetrics().height() + 12, 400}, Qt::Vertical);
+    resizeDocks({m_stationsDock, m_watchDock}, {330, 300}, Qt::Horizontal);
+    resizeDocks({m_chartDock}, {200}, Qt::Vertical);
+    retranslate();
+    return true;
+}
+
+bool NetworkWindow::newNetwork(QString *) {
+    m_doc->newNetwork();
+    m_path.clear();
+    dropSession();
+    m_tabs->setCurrentWidget(m_view);
+    statusBar()->showMessage(
+        tr("An empty network: add stations from the Network view's menu (right click)"), 15000);
+    retranslate();
+    return true;
+}
+
+void NetworkWindow::dropSession() {
+    for (StationView &v : m_views) {
+        v.ladder->setMonitorSource(nullptr);
+        v.io->setMonitorSource(nullptr);
+        delete v.ladder;
+        delete v.io;
+        delete v.document;
+    }
+    m_views.clear();
+    m_selector->blockSignals(true);
+    m_selector->clear();
+    m_selector->blockSignals(false);
+    m_stationList->blockSignals(true);
+    m_stationList->clear();
+    m_stationList->blockSignals(false);
+    m_watch->setSession(nullptr);
+    m_chart->setSession(nullptr);
+    m_traffic->clear();
+    m_session.reset();
+    m_stale = false;
+    buildFaultsMenu();
+    updateActions();
+    updateStatus();
+}
+
+bool NetworkWindow::buildSession(QString *error) {
+    const QStringList watched = m_watch->devices();
+    const QStringList charted = m_chart->devices();
+    const QString station = currentStation();
+    dropSession();
+    const network::NetworkDescription &description = m_doc->description();
+    if (description.stations.empty()) {
+        *error = tr("The network has no station yet: add one from the Network view's menu");
+        return false;
+    }
+    std::unique_ptr<network::NetworkSession> session =
+        network::NetworkSession::start(description, cliProgramLoader(), error, nullptr,
+                                       [this, &description](const network::Network &built) {
+                                           m_traffic->setNetwork(built, description.file);
+                                       });
+    if (!session)
+        return false;
     m_session = std::move(session);
     m_watch->setSession(m_session.get());
     m_chart->setSession(m_session.get());
@@ -480,18 +606,54 @@ bool NetworkWindow::open(const QString &path, QString *error) {
                 if (!text.isEmpty())
                     statusBar()->showMessage(text, 15000);
             });
-    if (!m_views.empty())
+    QString ignored;
+    for (const QString &d : watched)
+        m_watch->addDevice(d, &ignored);
+    for (const QString &d : charted)
+        m_chart->addDevice(d);
+    if (!m_views.empty() && !selectStation(station))
         selectStation(m_views.front().name);
-    // The stations' list as tall as its rows, the inputs and outputs below it the rest; the
-    // ladder the middle of a 1366x768 screen.
-    const int rows = std::min<int>(int(m_views.size()), 8);
-    resizeDocks({m_stationsDock, m_ioDock},
-                {rows * m_stationList->fontMetrics().height() + 12, 400}, Qt::Vertical);
-    resizeDocks({m_stationsDock, m_watchDock}, {330, 300}, Qt::Horizontal);
-    resizeDocks({m_chartDock}, {200}, Qt::Vertical);
     buildFaultsMenu();
     updateActions();
-    retranslate();
+    updateStatus();
+    return true;
+}
+
+void NetworkWindow::documentChanged() {
+    updateTitle();
+    if (m_session && m_session->runState() != RunState::Stopped) {
+        // A running network goes on as it was built; Stop builds the edited one.
+        m_stale = true;
+        statusBar()->showMessage(tr("The network was edited: Stop builds it again with the change"),
+                                 10000);
+        return;
+    }
+    QString why;
+    if (!buildSession(&why))
+        statusBar()->showMessage(why, 15000);
+}
+
+void NetworkWindow::updateTitle() {
+    const QString name = m_doc ? m_doc->displayName() : QString();
+    //: the window's title: the network file's name, * when it has unsaved edits
+    setWindowTitle(tr("%1%2 - Network - Rung Studio")
+                       .arg(name, m_doc && m_doc->isModified() ? QStringLiteral("*") : QString()));
+}
+
+bool NetworkWindow::save(bool askWhere) {
+    QString file;
+    if (askWhere || m_doc->filePath().isEmpty()) {
+        file = askSaveFile(this, tr("Save Network"), m_doc->filePath(),
+                           tr("Networks of PLCs (*.rungnet)"));
+        if (file.isEmpty())
+            return false;
+        if (QFileInfo(file).suffix().isEmpty())
+            file += QStringLiteral(".rungnet");
+    }
+    if (!saveNetwork(this, m_doc, file))
+        return false;
+    m_path = m_doc->filePath();
+    updateTitle();
     return true;
 }
 
@@ -506,8 +668,11 @@ bool NetworkWindow::selectStation(const QString &name) {
             const bool changed = m_ladders->currentIndex() != int(i);
             m_ladders->setCurrentIndex(int(i));
             m_ioPanels->setCurrentIndex(int(i));
+            const QSignalBlocker selector(m_selector), list(m_stationList);
             m_selector->setCurrentIndex(int(i));
             m_stationList->setCurrentRow(int(i));
+            if (m_view->selectedStation() != name)
+                m_view->select(name);
             if (changed)
                 emit stationChanged(name);
             return true;

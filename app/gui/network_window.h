@@ -35,6 +35,8 @@ class StationSource;
 namespace rung::app {
 
 class NetworkChart;
+class NetworkDocument;
+class NetworkView;
 class NetworkTrafficView;
 class NetworkWatchModel;
 
@@ -45,9 +47,17 @@ public:
     explicit NetworkWindow(QWidget *parent = nullptr);
     ~NetworkWindow() override;
 
-    // Reads the file, loads every station's program and builds the network, Stopped at time
-    // 0; false with what, where and why (and the window shows no network).
+    // Reads the file into the Network view, loads every station's program and builds the
+    // network, Stopped at time 0; false with what, where and why when the file does not read.
+    // A network that reads but does not build (a program missing) opens in the view, with why
+    // in the status bar, to be mended there.
     bool open(const QString &path, QString *error);
+    // An empty network in the view: add stations there (its context menu), then simulate.
+    bool newNetwork(QString *error);
+    NetworkDocument *networkDocument() const { return m_doc; }
+    NetworkView *networkView() const { return m_view; }
+    // Saves the network (asks where when it has no file yet); false when it was not written.
+    bool save(bool askWhere = false);
     QString path() const { return m_path; }
     network::NetworkSession *session() const { return m_session.get(); }
 
@@ -90,9 +100,23 @@ private:
     void updateStatus();
     void updateActions();
     bool loadStationDocument(StationView &view, QString *error);
+    // The session and the stations' views built again from the document (its edits taken);
+    // the watch table's and the chart's devices kept where the stations still have them.
+    bool buildSession(QString *error);
+    void dropSession();
+    void documentChanged();
+    void updateTitle();
     void addWatchedFromLine();
 
     QString m_path;
+    NetworkDocument *m_doc = nullptr;
+    NetworkView *m_view = nullptr;
+    class QTabWidget *m_tabs = nullptr;
+    bool m_stale = false; // the document was edited since the session was built
+    QAction *m_save = nullptr;
+    QAction *m_saveAs = nullptr;
+    QAction *m_undo = nullptr;
+    QAction *m_redo = nullptr;
     std::unique_ptr<network::NetworkSession> m_session;
     std::vector<StationView> m_views;
     QComboBox *m_selector = nullptr;

@@ -4,11 +4,13 @@
 // a station's program opens in the main window for editing.
 
 #include "app/gui/network_chart.h"
-#include "editor/timing_canvas.h"
+#include "app/gui/network_document.h"
 #include "app/gui/network_traffic_model.h"
 #include "app/gui/network_traffic_view.h"
+#include "app/gui/network_view.h"
 #include "app/gui/network_watch_model.h"
 #include "app/gui/network_window.h"
+#include "editor/timing_canvas.h"
 #include "window_fixture.h"
 
 #include "editor/document.h"
@@ -267,6 +269,60 @@ TEST(NetworkWindow, TheTrafficViewDecodesTheFramesOfTheRunningNetwork) {
                traffic->record(traffic->rowCount() - 1).startUs <= 50'000;
     }));
     EXPECT_LE(traffic->record(0).startUs, 50'000);
+}
+
+// The Network view edits what the window simulates: an edit of a stopped network builds it
+// again at once; a running one goes on as built until Stop, which takes the edit.
+TEST(NetworkWindow, AnEditInTheNetworkViewIsSimulatedFromTheNextStop) {
+    app::MainWindow window;
+    ASSERT_TRUE(window.openFile(example("easy-link"), QString(), true));
+    app::NetworkWindow *net = openedNetwork(window);
+    ASSERT_NE(net, nullptr);
+    ASSERT_TRUE(net->watch(QStringLiteral("master/D0")));
+    app::NetworkDocument *doc = net->networkDocument();
+    QString error;
+    net->session()->setSpeed(0);
+    net->session()->run();
+    ASSERT_TRUE(doc->removeStation(QStringLiteral("s2"), &error)) << error.toStdString();
+    EXPECT_TRUE(net->windowTitle().startsWith(QStringLiteral("easy-link.rungnet*")));
+    EXPECT_EQ(net->stationSelector()->count(), 3); // still running as built
+    EXPECT_TRUE(net->statusBar()->currentMessage().contains(QStringLiteral("Stop")));
+    toolbarAction(*net, QStringLiteral("Stop"))->trigger();
+    ASSERT_EQ(net->stationSelector()->count(), 2);
+    EXPECT_EQ(net->session()->stations().size(), 2u);
+    EXPECT_EQ(net->watchModel()->devices(), QStringList{QStringLiteral("master/D0")}); // kept
+    // Stopped: an edit is built at once; undo gives the station back.
+    doc->undoStack()->undo();
+    EXPECT_EQ(net->session()->stations().size(), 3u);
+    EXPECT_FALSE(doc->isModified());
+}
+
+// File > New Network: an empty network in the view; a station added there can be run.
+TEST(NetworkWindow, ANewNetworkRunsOnceAStationIsAdded) {
+    app::MainWindow window;
+    QAction *newNetwork = window.findChild<QAction *>(QStringLiteral("fileNewNetwork"));
+    ASSERT_NE(newNetwork, nullptr);
+    newNetwork->trigger();
+    app::NetworkWindow *net = openedNetwork(window);
+    ASSERT_NE(net, nullptr);
+    EXPECT_EQ(net->session(), nullptr);
+    EXPECT_FALSE(toolbarAction(*net, QStringLiteral("Run"))->isEnabled());
+    QString error;
+    ASSERT_TRUE(net->networkDocument()->addExistingProgram(
+        QStringLiteral("a"), kExamples + QStringLiteral("easy-link/master.il"), QString(),
+        QString(), &error))
+        << error.toStdString();
+    ASSERT_NE(net->session(), nullptr);
+    EXPECT_EQ(net->stationSelector()->count(), 1);
+    EXPECT_TRUE(toolbarAction(*net, QStringLiteral("Run"))->isEnabled());
+    QTemporaryDir dir;
+    const QString file = dir.filePath(QStringLiteral("mine.rungnet"));
+    QStringList notKept;
+    ASSERT_TRUE(net->networkDocument()->saveAs(file, &notKept, &error)) << error.toStdString();
+    network::NetworkDescription read;
+    ASSERT_TRUE(network::readNetworkFile(file, &read, &error)) << error.toStdString();
+    ASSERT_EQ(read.stations.size(), 1u);
+    EXPECT_EQ(read.stations[0].name, QStringLiteral("a"));
 }
 
 TEST(NetworkWindow, AStationsProgramOpensInTheMainWindowForEditing) {
