@@ -1173,7 +1173,7 @@ PLC dopo il riavvio di serve</translation>
     <message>
         <location line="+2"/>
         <source>New Ne&amp;twork</source>
-        <translation>Nuova re<translation>Nuova &amp;rete</translation>amp;te</translation>
+        <translation>Nuova re&amp;te</translation>
     </message>
     <message>
         <location line="+6"/>
