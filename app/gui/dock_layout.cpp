@@ -43,6 +43,11 @@ void arrangeDocks(QMainWindow *window, bool wide) {
         window->tabifyDockWidget(crossReference, simulation);
     window->tabifyDockWidget(simulation, debugger);
     window->tabifyDockWidget(debugger, connection);
+    // The front panel beside the terminals it goes with, a tab behind them.
+    if (QDockWidget *front = dock(window, "frontPanelDock")) {
+        window->tabifyDockWidget(io, front);
+        io->raise();
+    }
     window->addDockWidget(Qt::BottomDockWidgetArea, problems);
     window->tabifyDockWidget(problems, watch);
     window->tabifyDockWidget(watch, chart);
