@@ -180,8 +180,7 @@
     <message>
         <location filename="../app/cli/cli.cpp" line="+61"/>
         <location line="+48"/>
-        <location filename="../app/cli/cli_network.cpp" line="+145"/>
-        <location line="+54"/>
+        <location filename="../app/cli/cli_network.cpp" line="+147"/>
         <source>unexpected argument %1</source>
         <translation>váratlan argumentum: %1</translation>
     </message>
@@ -279,7 +278,7 @@ Kilépési kód: 0 nincs hiba, 1 a programban hiba van, 2 használati vagy I/O h
     </message>
     <message>
         <location line="+18"/>
-        <location filename="../app/cli/cli_network.cpp" line="-11"/>
+        <location filename="../app/cli/cli_network.cpp" line="+52"/>
         <location filename="../app/cli/cli_plcopen.cpp" line="+36"/>
         <location line="+3"/>
         <source>error</source>
@@ -1354,6 +1353,14 @@ PLC after serve restarts</source>
     </message>
 </context>
 <context>
+    <name>rung::app::FrontPanelController</name>
+    <message>
+        <location filename="../app/gui/front_panel_controller.cpp" line="+56"/>
+        <source>Front Panel</source>
+        <translation>Előlap</translation>
+    </message>
+</context>
+<context>
     <name>rung::app::Gui</name>
     <message>
         <location filename="../app/gui/command_line.cpp" line="+22"/>
@@ -1843,7 +1850,7 @@ Ctrl+Z / Ctrl+Y: visszavonás / mégis, Ctrl+görgő: nagyítás, F4: a program 
         <translation>A mentés nem sikerült</translation>
     </message>
     <message>
-        <location filename="../app/gui/main_window_panels.cpp" line="+71"/>
+        <location filename="../app/gui/main_window_panels.cpp" line="+73"/>
         <location filename="../app/gui/main_window_tools.cpp" line="+4"/>
         <source>Cannot export</source>
         <translation>Az exportálás nem sikerült</translation>
@@ -2017,7 +2024,7 @@ Ctrl+Z / Ctrl+Y: visszavonás / mégis, Ctrl+görgő: nagyítás, F4: a program 
 <context>
     <name>rung::app::Network</name>
     <message>
-        <location filename="../app/cli/cli_network.cpp" line="-165"/>
+        <location filename="../app/cli/cli_network.cpp" line="-176"/>
         <source>usage:</source>
         <translation>használat:</translation>
     </message>
@@ -2041,7 +2048,7 @@ Ctrl+Z / Ctrl+Y: visszavonás / mégis, Ctrl+görgő: nagyítás, F4: a program 
         <translation>a --traffic után fájlnév kell</translation>
     </message>
     <message>
-        <location line="+5"/>
+        <location line="+6"/>
         <source>%1: a network file names each station&apos;s PLC</source>
         <translation>%1: a hálózatfájl minden állomás PLC-jét maga nevezi meg</translation>
     </message>
@@ -2057,7 +2064,7 @@ Ctrl+Z / Ctrl+Y: visszavonás / mégis, Ctrl+görgő: nagyítás, F4: a program 
         <translation>%1: %2. sor: futási hiba a(z) %3. lépésnél: %4</translation>
     </message>
     <message>
-        <location line="+30"/>
+        <location line="+40"/>
         <source>%1: %2: %3</source>
         <translation>%1: %2: %3</translation>
     </message>
@@ -2073,7 +2080,7 @@ Ctrl+Z / Ctrl+Y: visszavonás / mégis, Ctrl+görgő: nagyítás, F4: a program 
         <translation>%1: %2: %3: %4</translation>
     </message>
     <message>
-        <location line="+22"/>
+        <location line="+16"/>
         <source>%1: no bridges: nothing of the network reaches a real line (&quot;bridges&quot;, docs/network-format.md); simulate runs it on virtual time</source>
         <translation>%1: nincsenek hidak: a hálózatból semmi sem jut el valódi vonalra („bridges”, docs/network-format.md); a simulate virtuális időben futtatja</translation>
     </message>
@@ -2121,12 +2128,12 @@ Ctrl+Z / Ctrl+Y: visszavonás / mégis, Ctrl+görgő: nagyítás, F4: a program 
         <translation>a --port, a --tcp és a --pty közül pontosan egyet adjon meg</translation>
     </message>
     <message>
-        <location line="+4"/>
+        <location line="+5"/>
         <source>modbus-tcp needs --tcp HOST:PORT (for RTU frames on a port: modbus)</source>
         <translation>a modbus-tcp a --tcp HOST:PORT kapcsolót igényli (RTU keretekhez porton: modbus)</translation>
     </message>
     <message>
-        <location line="+10"/>
+        <location line="+8"/>
         <source>--tcp needs HOST:PORT, e.g. 127.0.0.1:502; got %1</source>
         <translation>a --tcp HOST:PORT alakú értéket vár, pl. 127.0.0.1:502; kapott érték: %1</translation>
     </message>
@@ -2136,12 +2143,12 @@ Ctrl+Z / Ctrl+Y: visszavonás / mégis, Ctrl+görgő: nagyítás, F4: a program 
         <translation>%1 értéke %2 és %3 közötti szám legyen; kapott érték: %4</translation>
     </message>
     <message>
-        <location line="+16"/>
+        <location line="+17"/>
         <source>--frame must be data bits, parity and stop bits, e.g. 8N1 or 7E2; got %1</source>
         <translation>a --frame adatbitek, paritás és stopbitek megadása, pl. 8N1 vagy 7E2; kapott érték: %1</translation>
     </message>
     <message>
-        <location line="+6"/>
+        <location line="+5"/>
         <source>no device given</source>
         <translation>nincs megadva operandus</translation>
     </message>
@@ -2848,7 +2855,7 @@ A FÁJL utasításlista (.il), létradiagram-szöveg (.ladder) vagy projekt (.ru
         <translation>%1 után érték kell</translation>
     </message>
     <message>
-        <location line="+13"/>
+        <location line="+14"/>
         <source>unexpected argument %1</source>
         <translation>váratlan argumentum: %1</translation>
     </message>
@@ -2860,7 +2867,7 @@ A FÁJL utasításlista (.il), létradiagram-szöveg (.ladder) vagy projekt (.ru
         <translation>a program nem indul el</translation>
     </message>
     <message>
-        <location filename="../app/cli/cli_simulate.cpp" line="+28"/>
+        <location filename="../app/cli/cli_simulate.cpp" line="+29"/>
         <source>runtime error at step %1: %2</source>
         <translation>futási hiba a(z) %1. lépésnél: %2</translation>
     </message>
@@ -4579,6 +4586,39 @@ Kiértékelés: %4 µs (%5..%6)</translation>
         <location line="+3"/>
         <source>Rung %1 is not in the list: %2. Edit it in the ladder; this line keeps its place.</source>
         <translation>A(z) %1. létrafok nincs a listában: %2. A létradiagramon szerkeszthető; ez a sor őrzi a helyét.</translation>
+    </message>
+</context>
+<context>
+    <name>rung::editor::FrontPanel</name>
+    <message>
+        <location filename="../editor/front_panel.cpp" line="+313"/>
+        <source>%1: %2 (key %3; held down, %4 is 1)</source>
+        <translation>%1: %2 (billentyű: %3; lenyomva tartva %4 = 1)</translation>
+    </message>
+    <message>
+        <location line="+5"/>
+        <source>%1: %2 (writes %3)</source>
+        <translation>%1: %2 (ide ír: %3)</translation>
+    </message>
+    <message>
+        <location line="+35"/>
+        <source>This PLC has no front panel that its manual describes</source>
+        <translation>Ennek a PLC-nek a kézikönyve nem ír le előlapot</translation>
+    </message>
+    <message>
+        <location line="+2"/>
+        <source>Run the simulation (F10) to see the PLC&apos;s front panel</source>
+        <translation>A PLC előlapjának megjelenítéséhez indítsa a szimulációt (F10)</translation>
+    </message>
+    <message>
+        <location line="+29"/>
+        <source>Display mode %1 (%2)</source>
+        <translation>%1. kijelzési mód (%2)</translation>
+    </message>
+    <message>
+        <location line="+2"/>
+        <source>Page %1 (%2)</source>
+        <translation>%1. oldal (%2)</translation>
     </message>
 </context>
 <context>
@@ -6692,6 +6732,24 @@ Kiértékelés: %4 µs (%5..%6)</translation>
     </message>
 </context>
 <context>
+    <name>rung::model::PanelView</name>
+    <message>
+        <location filename="../model/image/panel_view.cpp" line="+92"/>
+        <source>Display mode %1: the manual describes mode %2 (one %3-digit value) and mode %4 (two %5-digit values)</source>
+        <translation>%1. kijelzési mód: a kézikönyv a(z) %2. módot (egy %3 jegyű érték) és a(z) %4. módot (két %5 jegyű érték) írja le</translation>
+    </message>
+    <message>
+        <location line="+14"/>
+        <source>The register named by %1 (%2) does not exist</source>
+        <translation>A(z) %1 által megnevezett regiszter (%2) nem létezik</translation>
+    </message>
+    <message>
+        <location line="+143"/>
+        <source>No page is shown: the program enables none</source>
+        <translation>Nincs megjelenített oldal: a program egyet sem engedélyez</translation>
+    </message>
+</context>
+<context>
     <name>rung::model::Plcopen</name>
     <message>
         <location filename="../model/exchange/plcopen_import.cpp" line="+128"/>
@@ -7484,7 +7542,7 @@ Kiértékelés: %4 µs (%5..%6)</translation>
     </message>
     <message>
         <location line="+5"/>
-        <location filename="../model/target/target_pl110.cpp" line="+107"/>
+        <location filename="../model/target/target_pl110.cpp" line="+101"/>
         <location filename="../model/target/target_vigor.cpp" line="+95"/>
         <location filename="../model/target/target_vpc.cpp" line="+5"/>
         <source>Start a block with a normally open contact</source>
@@ -7633,6 +7691,31 @@ Kiértékelés: %4 µs (%5..%6)</translation>
         <location line="+42"/>
         <source>analog settings</source>
         <translation>analóg beállítások</translation>
+    </message>
+    <message>
+        <location line="+31"/>
+        <source>lit while the PLC has power</source>
+        <translation>világít, amíg a PLC feszültség alatt van</translation>
+    </message>
+    <message>
+        <location line="+6"/>
+        <source>lit in RUN or MONITOR mode; dark in PROGRAM mode or on an error</source>
+        <translation>világít RUN vagy MONITOR üzemmódban; nem világít PROGRAM üzemmódban vagy hiba esetén</translation>
+    </message>
+    <message>
+        <location line="+7"/>
+        <source>lit on a fatal error: the CPU stopped</source>
+        <translation>világít lényegi hibánál: a CPU leállt</translation>
+    </message>
+    <message>
+        <location line="+6"/>
+        <source>lit while the PLC communicates (not simulated: always dark)</source>
+        <translation>világít, amíg a PLC kommunikál (nincs szimulálva: mindig sötét)</translation>
+    </message>
+    <message>
+        <location line="+6"/>
+        <source>analog setting: 0..200 as BCD into its channel</source>
+        <translation>analóg beállítás: 0..200 BCD-ben a csatornájába</translation>
     </message>
     <message>
         <location filename="../model/target/target_cpm1_instructions.cpp" line="+70"/>
@@ -7811,7 +7894,7 @@ Kiértékelés: %4 µs (%5..%6)</translation>
         <translation>Az aktuális lépés lezárása és a B vezérlőbitű lépés indítása</translation>
     </message>
     <message>
-        <location filename="../model/target/target_cpm1.cpp" line="-37"/>
+        <location filename="../model/target/target_cpm1.cpp" line="-93"/>
         <location filename="../model/target/target_vigor.cpp" line="+25"/>
         <source>No operation</source>
         <translation>Nincs művelet</translation>
@@ -7825,7 +7908,7 @@ Kiértékelés: %4 µs (%5..%6)</translation>
         <translation>A program vége</translation>
     </message>
     <message>
-        <location filename="../model/target/target_pl110.cpp" line="-405"/>
+        <location filename="../model/target/target_pl110.cpp" line="-399"/>
         <source>IF contact: ON while S1 ? S2 is true</source>
         <translation>IF érintkező: BE, amíg S1 ? S2 igaz</translation>
     </message>
@@ -7971,7 +8054,7 @@ Kiértékelés: %4 µs (%5..%6)</translation>
         <translation>legnagyobb ciklusidő (0,1 ms)</translation>
     </message>
     <message>
-        <location line="+12"/>
+        <location line="+13"/>
         <source>the encoders&apos; load bits and the stepper motor output on AQ1 are not modelled; the word is plain memory</source>
         <translation>az enkóderek betöltőbitjeit és az AQ1 léptetőmotor-kimenetét a szimulátor nem modellezi; a szó egyszerű memória</translation>
     </message>
@@ -8137,32 +8220,22 @@ Kiértékelés: %4 µs (%5..%6)</translation>
         <translation>a COM2 csak MODBUS slave-ként működik: állapotát, válaszkésleltetését, felügyeleti idejét és számlálóit a szimulátor nem modellezi; a szó egyszerű memória</translation>
     </message>
     <message>
-        <location line="+4"/>
-        <source>the display (standby brightness and delay, system and user pages enabled, start page, page shown) is not modelled; the word is plain memory</source>
-        <translation>a kijelzőt (készenléti fényerő és késleltetés, engedélyezett rendszer- és felhasználói oldalak, kezdőoldal, megjelenített oldal) a szimulátor nem modellezi; a szó egyszerű memória</translation>
-    </message>
-    <message>
-        <location line="+5"/>
-        <source>the PLC shows the page requested and then resets SM106 to 0; the simulator shows no page and keeps the value written</source>
-        <translation>a PLC megjeleníti a kért oldalt, majd az SM106-ot 0-ra állítja; a szimulátor nem jelenít meg oldalt, és megtartja a beírt értéket</translation>
-    </message>
-    <message>
-        <location line="+4"/>
+        <location line="+9"/>
         <source>the terminal (the last variable changed from the keys, the password entered) is not modelled; the word stays as the program leaves it</source>
         <translation>a kezelőegységet (a gombokkal utoljára módosított változó, a beírt jelszó) a szimulátor nem modellezi; a szó úgy marad, ahogy a program hagyja</translation>
     </message>
     <message>
-        <location line="+4"/>
-        <source>the terminal&apos;s keys (SWAP, UP, DOWN, SET) are not modelled: no key is ever pressed unless you write the word</source>
-        <translation>a kezelőegység gombjait (SWAP, UP, DOWN, SET) a szimulátor nem modellezi: egyik gomb sincs lenyomva, hacsak be nem írja a szót</translation>
+        <location line="-5"/>
+        <source>the display&apos;s standby (its brightness and the delay after the last key) is not modelled: the front panel&apos;s display stays bright; the word is plain memory</source>
+        <translation>a kijelző készenléti módját (fényerejét és az utolsó gombnyomás utáni késleltetést) a szimulátor nem modellezi: az előlap kijelzője világos marad; a szó egyszerű memória</translation>
     </message>
     <message>
-        <location line="+4"/>
-        <source>the user pages&apos; parameter fields (SetPAR, FormatPAR, PosPAR) are not modelled: nothing is shown or edited</source>
-        <translation>a felhasználói oldalak paramétermezőit (SetPAR, FormatPAR, PosPAR) a szimulátor nem modellezi: semmi sem jelenik meg és semmi sem módosítható</translation>
+        <location line="+9"/>
+        <source>the user pages&apos; parameter fields (SetPAR, FormatPAR, PosPAR) are shown on the front panel, but editing a field with the keys SET, UP and DOWN is not modelled</source>
+        <translation>a felhasználói oldalak paramétermezői (SetPAR, FormatPAR, PosPAR) megjelennek az előlapon, de egy mező módosítását a SET, UP és DOWN gombokkal a szimulátor nem modellezi</translation>
     </message>
     <message>
-        <location line="+26"/>
+        <location line="+27"/>
         <source>NOT contact: invert the power flow</source>
         <translation>NOT érintkező: az áramút negálása</translation>
     </message>
@@ -8794,7 +8867,22 @@ Kiértékelés: %4 µs (%5..%6)</translation>
         <translation>Váltás: D minden felfutó élnél állapotot vált</translation>
     </message>
     <message>
-        <location line="-319"/>
+        <location line="+58"/>
+        <source>variable resistor read by VRRD, 0..255</source>
+        <translation>a VRRD által olvasott potenciométer, 0..255</translation>
+    </message>
+    <message>
+        <location line="+7"/>
+        <source>lit while the program runs</source>
+        <translation>világít, amíg a program fut</translation>
+    </message>
+    <message>
+        <location line="+6"/>
+        <source>lit when a program error stopped the PLC</source>
+        <translation>világít, ha programhiba leállította a PLC-t</translation>
+    </message>
+    <message>
+        <location line="-390"/>
         <source>Counter: counts rising edges, reset with RST</source>
         <translation>Számláló: a felfutó éleket számolja, törlés RST-vel</translation>
     </message>
@@ -9083,6 +9171,38 @@ Kiértékelés: %4 µs (%5..%6)</translation>
         <location line="+25"/>
         <source>Vigor CP2 MODBUS slave</source>
         <translation>Vigor CP2 MODBUS szolga</translation>
+    </message>
+    <message>
+        <location filename="../model/target/target_pl110_panel.cpp" line="+23"/>
+        <source>steady: the PLC is in RUN; slow blink (0.5 s on, 0.5 s off): no ladder program runs</source>
+        <translation>folyamatosan világít: a PLC RUN üzemmódban van; lassan villog (0,5 s be, 0,5 s ki): nem fut létraprogram</translation>
+    </message>
+    <message>
+        <location line="+4"/>
+        <location line="+2"/>
+        <location line="+2"/>
+        <source>lit while the port transmits a packet</source>
+        <translation>világít, amíg a port adatcsomagot küld</translation>
+    </message>
+    <message>
+        <location line="+43"/>
+        <source>scrolls through the pages the program enables</source>
+        <translation>körbelapoz a program által engedélyezett oldalakon</translation>
+    </message>
+    <message>
+        <location line="+2"/>
+        <source>increments the field being edited</source>
+        <translation>növeli a módosítás alatt álló mezőt</translation>
+    </message>
+    <message>
+        <location line="+2"/>
+        <source>decrements the field being edited</source>
+        <translation>csökkenti a módosítás alatt álló mezőt</translation>
+    </message>
+    <message>
+        <location line="+2"/>
+        <source>edits the page&apos;s fields in turn</source>
+        <translation>sorban módosíthatóvá teszi az oldal mezőit</translation>
     </message>
 </context>
 <context>
@@ -9830,7 +9950,7 @@ Kiértékelés: %4 µs (%5..%6)</translation>
         <translation>a(z) %1 szavas blokk túlnyúlik a terület végén</translation>
     </message>
     <message>
-        <location filename="../simulator/compiler.cpp" line="+190"/>
+        <location filename="../simulator/compiler.cpp" line="+191"/>
         <source>unknown instruction</source>
         <translation>ismeretlen utasítás</translation>
     </message>
@@ -10113,7 +10233,7 @@ Kiértékelés: %4 µs (%5..%6)</translation>
         <translation>nincs program: a forgatókönyv „program FÁJL” sorral kezdődik</translation>
     </message>
     <message>
-        <location filename="../simulator/scenario_run.cpp" line="+101"/>
+        <location filename="../simulator/scenario_run.cpp" line="+100"/>
         <source>&quot;%1&quot; is not understood here</source>
         <translation>„%1” itt nem értelmezhető</translation>
     </message>

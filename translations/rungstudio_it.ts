@@ -180,8 +180,7 @@
     <message>
         <location filename="../app/cli/cli.cpp" line="+61"/>
         <location line="+48"/>
-        <location filename="../app/cli/cli_network.cpp" line="+145"/>
-        <location line="+54"/>
+        <location filename="../app/cli/cli_network.cpp" line="+147"/>
         <source>unexpected argument %1</source>
         <translation>argomento non previsto: %1</translation>
     </message>
@@ -279,7 +278,7 @@ Codice di uscita: 0 nessun errore, 1 il programma contiene errori, 2 errore di u
     </message>
     <message>
         <location line="+18"/>
-        <location filename="../app/cli/cli_network.cpp" line="-11"/>
+        <location filename="../app/cli/cli_network.cpp" line="+52"/>
         <location filename="../app/cli/cli_plcopen.cpp" line="+36"/>
         <location line="+3"/>
         <source>error</source>
@@ -1356,6 +1355,14 @@ PLC dopo il riavvio di serve</translation>
     </message>
 </context>
 <context>
+    <name>rung::app::FrontPanelController</name>
+    <message>
+        <location filename="../app/gui/front_panel_controller.cpp" line="+56"/>
+        <source>Front Panel</source>
+        <translation>Pannello frontale</translation>
+    </message>
+</context>
+<context>
     <name>rung::app::Gui</name>
     <message>
         <location filename="../app/gui/command_line.cpp" line="+22"/>
@@ -1847,7 +1854,7 @@ Ctrl+Z / Ctrl+Y: annulla / ripeti, Ctrl+rotellina: zoom, F4: verifica il program
         <translation>Impossibile salvare</translation>
     </message>
     <message>
-        <location filename="../app/gui/main_window_panels.cpp" line="+71"/>
+        <location filename="../app/gui/main_window_panels.cpp" line="+73"/>
         <location filename="../app/gui/main_window_tools.cpp" line="+4"/>
         <source>Cannot export</source>
         <translation>Impossibile esportare</translation>
@@ -2024,7 +2031,7 @@ Ctrl+Z / Ctrl+Y: annulla / ripeti, Ctrl+rotellina: zoom, F4: verifica il program
 <context>
     <name>rung::app::Network</name>
     <message>
-        <location filename="../app/cli/cli_network.cpp" line="-165"/>
+        <location filename="../app/cli/cli_network.cpp" line="-176"/>
         <source>usage:</source>
         <translation>uso:</translation>
     </message>
@@ -2048,7 +2055,7 @@ Ctrl+Z / Ctrl+Y: annulla / ripeti, Ctrl+rotellina: zoom, F4: verifica il program
         <translation>--traffic richiede un file</translation>
     </message>
     <message>
-        <location line="+5"/>
+        <location line="+6"/>
         <source>%1: a network file names each station&apos;s PLC</source>
         <translation>%1: il file di rete indica il PLC di ogni stazione</translation>
     </message>
@@ -2064,7 +2071,7 @@ Ctrl+Z / Ctrl+Y: annulla / ripeti, Ctrl+rotellina: zoom, F4: verifica il program
         <translation>%1: riga %2: errore di esecuzione al passo %3: %4</translation>
     </message>
     <message>
-        <location line="+30"/>
+        <location line="+40"/>
         <source>%1: %2: %3</source>
         <translation>%1: %2: %3</translation>
     </message>
@@ -2080,7 +2087,7 @@ Ctrl+Z / Ctrl+Y: annulla / ripeti, Ctrl+rotellina: zoom, F4: verifica il program
         <translation>%1: %2: %3: %4</translation>
     </message>
     <message>
-        <location line="+22"/>
+        <location line="+16"/>
         <source>%1: no bridges: nothing of the network reaches a real line (&quot;bridges&quot;, docs/network-format.md); simulate runs it on virtual time</source>
         <translation>%1: nessun ponte: niente della rete raggiunge una linea reale (&quot;bridges&quot;, docs/network-format.md); simulate la esegue in tempo virtuale</translation>
     </message>
@@ -2128,12 +2135,12 @@ Ctrl+Z / Ctrl+Y: annulla / ripeti, Ctrl+rotellina: zoom, F4: verifica il program
         <translation>indicare esattamente uno tra --port, --tcp e --pty</translation>
     </message>
     <message>
-        <location line="+4"/>
+        <location line="+5"/>
         <source>modbus-tcp needs --tcp HOST:PORT (for RTU frames on a port: modbus)</source>
         <translation>modbus-tcp richiede --tcp HOST:PORTA (per frame RTU su una porta: modbus)</translation>
     </message>
     <message>
-        <location line="+10"/>
+        <location line="+8"/>
         <source>--tcp needs HOST:PORT, e.g. 127.0.0.1:502; got %1</source>
         <translation>--tcp richiede HOST:PORTA, ad es. 127.0.0.1:502; ricevuto %1</translation>
     </message>
@@ -2143,12 +2150,12 @@ Ctrl+Z / Ctrl+Y: annulla / ripeti, Ctrl+rotellina: zoom, F4: verifica il program
         <translation>%1 deve essere un numero da %2 a %3; ricevuto %4</translation>
     </message>
     <message>
-        <location line="+16"/>
+        <location line="+17"/>
         <source>--frame must be data bits, parity and stop bits, e.g. 8N1 or 7E2; got %1</source>
         <translation>--frame indica bit di dati, parità e bit di stop, ad es. 8N1 o 7E2; ricevuto %1</translation>
     </message>
     <message>
-        <location line="+6"/>
+        <location line="+5"/>
         <source>no device given</source>
         <translation>nessun operando indicato</translation>
     </message>
@@ -2857,7 +2864,7 @@ FILE è una lista istruzioni (.il), un testo ladder (.ladder) o un progetto (.ru
         <translation>%1 richiede un valore</translation>
     </message>
     <message>
-        <location line="+13"/>
+        <location line="+14"/>
         <source>unexpected argument %1</source>
         <translation>argomento non previsto: %1</translation>
     </message>
@@ -2869,7 +2876,7 @@ FILE è una lista istruzioni (.il), un testo ladder (.ladder) o un progetto (.ru
         <translation>il programma non si avvia</translation>
     </message>
     <message>
-        <location filename="../app/cli/cli_simulate.cpp" line="+28"/>
+        <location filename="../app/cli/cli_simulate.cpp" line="+29"/>
         <source>runtime error at step %1: %2</source>
         <translation>errore di esecuzione al passo %1: %2</translation>
     </message>
@@ -4592,6 +4599,39 @@ Valutazione: %4 µs (%5..%6)</translation>
         <location line="+3"/>
         <source>Rung %1 is not in the list: %2. Edit it in the ladder; this line keeps its place.</source>
         <translation>Il segmento %1 non è nella lista: %2. Modificalo nel ladder; questa riga ne tiene il posto.</translation>
+    </message>
+</context>
+<context>
+    <name>rung::editor::FrontPanel</name>
+    <message>
+        <location filename="../editor/front_panel.cpp" line="+313"/>
+        <source>%1: %2 (key %3; held down, %4 is 1)</source>
+        <translation>%1: %2 (tasto %3; tenuto premuto, %4 vale 1)</translation>
+    </message>
+    <message>
+        <location line="+5"/>
+        <source>%1: %2 (writes %3)</source>
+        <translation>%1: %2 (scrive %3)</translation>
+    </message>
+    <message>
+        <location line="+35"/>
+        <source>This PLC has no front panel that its manual describes</source>
+        <translation>Il manuale di questo PLC non descrive un pannello frontale</translation>
+    </message>
+    <message>
+        <location line="+2"/>
+        <source>Run the simulation (F10) to see the PLC&apos;s front panel</source>
+        <translation>Avviare la simulazione (F10) per vedere il pannello frontale del PLC</translation>
+    </message>
+    <message>
+        <location line="+29"/>
+        <source>Display mode %1 (%2)</source>
+        <translation>Modo di visualizzazione %1 (%2)</translation>
+    </message>
+    <message>
+        <location line="+2"/>
+        <source>Page %1 (%2)</source>
+        <translation>Pagina %1 (%2)</translation>
     </message>
 </context>
 <context>
@@ -6713,6 +6753,24 @@ Valutazione: %4 µs (%5..%6)</translation>
     </message>
 </context>
 <context>
+    <name>rung::model::PanelView</name>
+    <message>
+        <location filename="../model/image/panel_view.cpp" line="+92"/>
+        <source>Display mode %1: the manual describes mode %2 (one %3-digit value) and mode %4 (two %5-digit values)</source>
+        <translation>Modo di visualizzazione %1: il manuale descrive il modo %2 (un valore di %3 cifre) e il modo %4 (due valori di %5 cifre)</translation>
+    </message>
+    <message>
+        <location line="+14"/>
+        <source>The register named by %1 (%2) does not exist</source>
+        <translation>Il registro indicato da %1 (%2) non esiste</translation>
+    </message>
+    <message>
+        <location line="+143"/>
+        <source>No page is shown: the program enables none</source>
+        <translation>Nessuna pagina visualizzata: il programma non ne abilita alcuna</translation>
+    </message>
+</context>
+<context>
     <name>rung::model::Plcopen</name>
     <message>
         <location filename="../model/exchange/plcopen_import.cpp" line="+128"/>
@@ -7505,7 +7563,7 @@ Valutazione: %4 µs (%5..%6)</translation>
     </message>
     <message>
         <location line="+5"/>
-        <location filename="../model/target/target_pl110.cpp" line="+107"/>
+        <location filename="../model/target/target_pl110.cpp" line="+101"/>
         <location filename="../model/target/target_vigor.cpp" line="+95"/>
         <location filename="../model/target/target_vpc.cpp" line="+5"/>
         <source>Start a block with a normally open contact</source>
@@ -7654,6 +7712,31 @@ Valutazione: %4 µs (%5..%6)</translation>
         <location line="+42"/>
         <source>analog settings</source>
         <translation>regolazioni analogiche</translation>
+    </message>
+    <message>
+        <location line="+31"/>
+        <source>lit while the PLC has power</source>
+        <translation>acceso finché il PLC è alimentato</translation>
+    </message>
+    <message>
+        <location line="+6"/>
+        <source>lit in RUN or MONITOR mode; dark in PROGRAM mode or on an error</source>
+        <translation>acceso in modo RUN o MONITOR; spento in modo PROGRAM o in caso di errore</translation>
+    </message>
+    <message>
+        <location line="+7"/>
+        <source>lit on a fatal error: the CPU stopped</source>
+        <translation>acceso per un errore grave: la CPU si è fermata</translation>
+    </message>
+    <message>
+        <location line="+6"/>
+        <source>lit while the PLC communicates (not simulated: always dark)</source>
+        <translation>acceso mentre il PLC comunica (non simulato: sempre spento)</translation>
+    </message>
+    <message>
+        <location line="+6"/>
+        <source>analog setting: 0..200 as BCD into its channel</source>
+        <translation>impostazione analogica: 0..200 in BCD nel suo canale</translation>
     </message>
     <message>
         <location filename="../model/target/target_cpm1_instructions.cpp" line="+70"/>
@@ -7832,7 +7915,7 @@ Valutazione: %4 µs (%5..%6)</translation>
         <translation>Termina la fase corrente e avvia la fase con bit di controllo B</translation>
     </message>
     <message>
-        <location filename="../model/target/target_cpm1.cpp" line="-37"/>
+        <location filename="../model/target/target_cpm1.cpp" line="-93"/>
         <location filename="../model/target/target_vigor.cpp" line="+25"/>
         <source>No operation</source>
         <translation>Nessuna operazione</translation>
@@ -7846,7 +7929,7 @@ Valutazione: %4 µs (%5..%6)</translation>
         <translation>Fine del programma</translation>
     </message>
     <message>
-        <location filename="../model/target/target_pl110.cpp" line="-405"/>
+        <location filename="../model/target/target_pl110.cpp" line="-399"/>
         <source>IF contact: ON while S1 ? S2 is true</source>
         <translation>Contatto IF: ON mentre S1 ? S2 è vero</translation>
     </message>
@@ -7992,7 +8075,7 @@ Valutazione: %4 µs (%5..%6)</translation>
         <translation>tempo di scansione massimo (0,1 ms)</translation>
     </message>
     <message>
-        <location line="+12"/>
+        <location line="+13"/>
         <source>the encoders&apos; load bits and the stepper motor output on AQ1 are not modelled; the word is plain memory</source>
         <translation>i bit di caricamento degli encoder e l&apos;uscita AQ1 del motore passo passo non sono modellati; la word è semplice memoria</translation>
     </message>
@@ -8158,32 +8241,22 @@ Valutazione: %4 µs (%5..%6)</translation>
         <translation>COM2 funziona solo da slave MODBUS: il suo stato, il ritardo di risposta, il tempo di controllo e i contatori non sono modellati; la word è semplice memoria</translation>
     </message>
     <message>
-        <location line="+4"/>
-        <source>the display (standby brightness and delay, system and user pages enabled, start page, page shown) is not modelled; the word is plain memory</source>
-        <translation>il display (luminosità e ritardo dello standby, pagine di sistema e utente abilitate, pagina di avvio, pagina visualizzata) non è modellato; la word è semplice memoria</translation>
-    </message>
-    <message>
-        <location line="+5"/>
-        <source>the PLC shows the page requested and then resets SM106 to 0; the simulator shows no page and keeps the value written</source>
-        <translation>il PLC visualizza la pagina richiesta e poi forza SM106 a 0; il simulatore non visualizza pagine e mantiene il valore scritto</translation>
-    </message>
-    <message>
-        <location line="+4"/>
+        <location line="+9"/>
         <source>the terminal (the last variable changed from the keys, the password entered) is not modelled; the word stays as the program leaves it</source>
         <translation>il terminale (ultima variabile modificata dai pulsanti, password immessa) non è modellato; la word resta come la lascia il programma</translation>
     </message>
     <message>
-        <location line="+4"/>
-        <source>the terminal&apos;s keys (SWAP, UP, DOWN, SET) are not modelled: no key is ever pressed unless you write the word</source>
-        <translation>i pulsanti del terminale (SWAP, UP, DOWN, SET) non sono modellati: nessun pulsante risulta premuto se non si scrive la word</translation>
+        <location line="-5"/>
+        <source>the display&apos;s standby (its brightness and the delay after the last key) is not modelled: the front panel&apos;s display stays bright; the word is plain memory</source>
+        <translation>lo standby del display (la luminosità e il ritardo dall&apos;ultima pressione di un tasto) non è modellato: il display del pannello frontale resta alla massima luminosità; la word è semplice memoria</translation>
     </message>
     <message>
-        <location line="+4"/>
-        <source>the user pages&apos; parameter fields (SetPAR, FormatPAR, PosPAR) are not modelled: nothing is shown or edited</source>
-        <translation>i campi parametro delle pagine utente (SetPAR, FormatPAR, PosPAR) non sono modellati: nulla viene visualizzato o modificato</translation>
+        <location line="+9"/>
+        <source>the user pages&apos; parameter fields (SetPAR, FormatPAR, PosPAR) are shown on the front panel, but editing a field with the keys SET, UP and DOWN is not modelled</source>
+        <translation>i campi parametro delle pagine utente (SetPAR, FormatPAR, PosPAR) sono visualizzati sul pannello frontale, ma la modifica di un campo con i tasti SET, UP e DOWN non è modellata</translation>
     </message>
     <message>
-        <location line="+26"/>
+        <location line="+27"/>
         <source>NOT contact: invert the power flow</source>
         <translation>Contatto NOT: inverte il flusso di corrente</translation>
     </message>
@@ -8815,7 +8888,22 @@ Valutazione: %4 µs (%5..%6)</translation>
         <translation>Alterna: D cambia stato a ogni fronte di salita dell&apos;ingresso</translation>
     </message>
     <message>
-        <location line="-319"/>
+        <location line="+58"/>
+        <source>variable resistor read by VRRD, 0..255</source>
+        <translation>potenziometro letto da VRRD, 0..255</translation>
+    </message>
+    <message>
+        <location line="+7"/>
+        <source>lit while the program runs</source>
+        <translation>acceso mentre il programma è in esecuzione</translation>
+    </message>
+    <message>
+        <location line="+6"/>
+        <source>lit when a program error stopped the PLC</source>
+        <translation>acceso quando un errore di programma ha fermato il PLC</translation>
+    </message>
+    <message>
+        <location line="-390"/>
         <source>Counter: counts rising edges, reset with RST</source>
         <translation>Contatore: conta i fronti di salita, reset con RST</translation>
     </message>
@@ -9104,6 +9192,38 @@ Valutazione: %4 µs (%5..%6)</translation>
         <location line="+25"/>
         <source>Vigor CP2 MODBUS slave</source>
         <translation>Vigor CP2 slave MODBUS</translation>
+    </message>
+    <message>
+        <location filename="../model/target/target_pl110_panel.cpp" line="+23"/>
+        <source>steady: the PLC is in RUN; slow blink (0.5 s on, 0.5 s off): no ladder program runs</source>
+        <translation>acceso fisso: il PLC è in RUN; lampeggio lento (0,5 s on / 0,5 s off): nessun applicativo ladder in esecuzione</translation>
+    </message>
+    <message>
+        <location line="+4"/>
+        <location line="+2"/>
+        <location line="+2"/>
+        <source>lit while the port transmits a packet</source>
+        <translation>acceso durante la trasmissione di un pacchetto di dati sulla porta</translation>
+    </message>
+    <message>
+        <location line="+43"/>
+        <source>scrolls through the pages the program enables</source>
+        <translation>scorre in modo circolare le pagine abilitate dal programma</translation>
+    </message>
+    <message>
+        <location line="+2"/>
+        <source>increments the field being edited</source>
+        <translation>incrementa il campo in modifica</translation>
+    </message>
+    <message>
+        <location line="+2"/>
+        <source>decrements the field being edited</source>
+        <translation>decrementa il campo in modifica</translation>
+    </message>
+    <message>
+        <location line="+2"/>
+        <source>edits the page&apos;s fields in turn</source>
+        <translation>abilita a turno la modifica dei campi della pagina</translation>
     </message>
 </context>
 <context>
@@ -9851,7 +9971,7 @@ Valutazione: %4 µs (%5..%6)</translation>
         <translation>il blocco di %1 word va oltre la fine della sua area</translation>
     </message>
     <message>
-        <location filename="../simulator/compiler.cpp" line="+190"/>
+        <location filename="../simulator/compiler.cpp" line="+191"/>
         <source>unknown instruction</source>
         <translation>istruzione sconosciuta</translation>
     </message>
@@ -10134,7 +10254,7 @@ Valutazione: %4 µs (%5..%6)</translation>
         <translation>nessun programma: uno scenario inizia con &quot;program FILE&quot;</translation>
     </message>
     <message>
-        <location filename="../simulator/scenario_run.cpp" line="+101"/>
+        <location filename="../simulator/scenario_run.cpp" line="+100"/>
         <source>&quot;%1&quot; is not understood here</source>
         <translation>&quot;%1&quot; non è comprensibile qui</translation>
     </message>

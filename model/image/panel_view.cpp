@@ -72,10 +72,6 @@ PanelLampView lampView(const Target &target, const PanelLamp &lamp, const PanelI
     return v;
 }
 
-QString tr(const char *text) {
-    return QCoreApplication::translate("rung::model::PanelView", text);
-}
-
 void digitsView(const Target &target, const PanelDisplay &d, const PanelInput &in, PanelView &v) {
     v.digits = d.digits;
     if (!in.snapshot)
@@ -93,8 +89,10 @@ void digitsView(const Target &target, const PanelDisplay &d, const PanelInput &i
         return in.snapshot->value(*a);
     };
     if (mode != d.singleValueMode && mode != d.pairMode) {
-        v.note = tr("Display mode %1: the manual describes mode %2 (one %3-digit value) and "
-                    "mode %4 (two %5-digit values)")
+        v.note = QCoreApplication::translate(
+                     "rung::model::PanelView",
+                     "Display mode %1: the manual describes mode %2 (one %3-digit value) and "
+                     "mode %4 (two %5-digit values)")
                      .arg(mode)
                      .arg(d.singleValueMode)
                      .arg(d.digits)
@@ -105,7 +103,10 @@ void digitsView(const Target &target, const PanelDisplay &d, const PanelInput &i
     const auto first = registerValue(reg);
     const auto second = mode == d.pairMode ? registerValue(reg + 1) : std::optional<qint64>(0);
     if (!first || !second) {
-        v.note = tr("The register named by %1 (%2) does not exist").arg(d.registerDevice).arg(reg);
+        v.note = QCoreApplication::translate("rung::model::PanelView",
+                                             "The register named by %1 (%2) does not exist")
+                     .arg(d.registerDevice)
+                     .arg(reg);
         return;
     }
     const auto fitsIn = [](qint64 value, int places) {
@@ -245,7 +246,8 @@ void textView(const Target &target, const ModelVariant *model, const PanelDispla
     } else if (v.page >= 1 && v.page <= d.systemPages) {
         systemPage(target, model, in, v.page, v);
     } else {
-        v.note = tr("No page is shown: the program enables none");
+        v.note = QCoreApplication::translate("rung::model::PanelView",
+                                             "No page is shown: the program enables none");
     }
 }
 
