@@ -231,7 +231,12 @@ void FrontPanel::setPlc(const model::Target *target, const QString &modelName) {
 }
 
 void FrontPanel::setMonitorSource(model::MonitorSource *source) {
-    if (model::MonitorSource::switchSource(m_source, source, this) && source) {
+    if (model::MonitorSource::switchSource(m_source, source, this)) {
+        m_watched.clear();
+        if (!source) {
+            refresh();
+            return;
+        }
         connect(source, &model::MonitorSource::snapshotChanged, this, &FrontPanel::refresh);
         connect(source, &model::MonitorSource::runStateChanged, this, &FrontPanel::refresh);
         connect(source, &model::MonitorSource::errorTextChanged, this, &FrontPanel::refresh);
@@ -348,6 +353,15 @@ void FrontPanel::refresh() {
     input.nowMs = m_clock.elapsed();
     m_view = hasPanel ? model::panelView(*m_target, m_target->model(m_modelName), input)
                       : model::PanelView{};
+    // An online PLC is polled for what the panel shows (the page's characters, the register the
+    // display names: they change with the PLC's words).
+    std::vector<model::Address> devices = m_view.devices;
+    std::sort(devices.begin(), devices.end());
+    devices.erase(std::unique(devices.begin(), devices.end()), devices.end());
+    if (m_source && devices != m_watched) {
+        m_watched = devices;
+        m_source->setWatched(this, std::move(devices));
+    }
     QString hint;
     if (!hasPanel)
         hint = tr("This PLC has no front panel that its manual describes");

@@ -90,6 +90,7 @@ private:
     std::vector<PanelLamp *> m_lamps;
     std::vector<QPushButton *> m_keys;
     std::vector<Knob> m_knobs;
+    std::vector<model::Address> m_watched; // told the source (setWatched)
 };
 
 // A lamp: a coloured disc, lit or dark, its label as printed on the PLC beside it; the

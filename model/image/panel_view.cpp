@@ -33,8 +33,18 @@ bool modelHasArea(const Target &target, const ModelVariant *model, const QString
     return false;
 }
 
-qint64 wordOf(const Snapshot *s, const std::optional<Address> &a) {
-    return s && a ? s->value(*a) : 0;
+// Every read goes through these, so the view lists the devices it showed (PanelView::devices:
+// an online source polls those).
+qint64 readValue(const PanelInput &in, PanelView &v, const Address &a) {
+    v.devices.push_back(a);
+    return in.snapshot ? in.snapshot->value(a) : 0;
+}
+bool readBit(const PanelInput &in, PanelView &v, const Address &a) {
+    v.devices.push_back(a);
+    return in.snapshot && in.snapshot->bit(a);
+}
+qint64 wordOf(const PanelInput &in, PanelView &v, const std::optional<Address> &a) {
+    return a ? readValue(in, v, *a) : 0;
 }
 
 bool running(MonitorSource::RunState state) {
@@ -42,7 +52,8 @@ bool running(MonitorSource::RunState state) {
     return state == R::Running || state == R::Stepping || state == R::Paused;
 }
 
-PanelLampView lampView(const Target &target, const PanelLamp &lamp, const PanelInput &in) {
+PanelLampView lampView(const Target &target, const PanelLamp &lamp, const PanelInput &in,
+                       PanelView &view) {
     PanelLampView v{lamp.label, lamp.colour, false, 0, lamp.meaning};
     using R = MonitorSource::RunState;
     switch (lamp.signal) {
@@ -63,8 +74,8 @@ PanelLampView lampView(const Target &target, const PanelLamp &lamp, const PanelI
         v.lit = in.fault;
         break;
     case LampSignal::Device:
-        if (const auto a = panelDevice(target, lamp.device); a && in.snapshot)
-            v.lit = in.snapshot->bit(*a);
+        if (const auto a = panelDevice(target, lamp.device))
+            v.lit = readBit(in, view, *a);
         break;
     case LampSignal::Never:
         break;
@@ -76,8 +87,8 @@ void digitsView(const Target &target, const PanelDisplay &d, const PanelInput &i
     v.digits = d.digits;
     if (!in.snapshot)
         return;
-    const qint64 mode = wordOf(in.snapshot, panelDevice(target, d.modeDevice));
-    const qint64 reg = wordOf(in.snapshot, panelDevice(target, d.registerDevice));
+    const qint64 mode = wordOf(in, v, panelDevice(target, d.modeDevice));
+    const qint64 reg = wordOf(in, v, panelDevice(target, d.registerDevice));
     v.mode = static_cast<int>(mode);
     const Area *area = areaByKey(target, d.registerArea);
     const auto registerValue = [&](qint64 n) -> std::optional<qint64> {
@@ -86,7 +97,7 @@ void digitsView(const Target &target, const PanelDisplay &d, const PanelInput &i
         const auto a = panelDevice(target, area->prefix + QString::number(n));
         if (!a)
             return std::nullopt;
-        return in.snapshot->value(*a);
+        return readValue(in, v, *a);
     };
     if (mode != d.singleValueMode && mode != d.pairMode) {
         v.note = QCoreApplication::translate(
@@ -162,7 +173,7 @@ void systemPage(const Target &target, const ModelVariant *model, const PanelInpu
                 QString text = area->prefix.leftJustified(4, QLatin1Char(' '));
                 for (int k = 0; k < b.count; ++k) {
                     const auto a = panelDevice(target, area->prefix + QString::number(b.first + k));
-                    text += a && in.snapshot && in.snapshot->bit(*a) ? filled : empty;
+                    text += a && readBit(in, v, *a) ? filled : empty;
                 }
                 put(text);
                 continue;
@@ -170,7 +181,7 @@ void systemPage(const Target &target, const ModelVariant *model, const PanelInpu
             for (int k = 0; k < b.count; ++k) {
                 const QString name = area->prefix + QString::number(b.first + k);
                 put(name.leftJustified(6, QLatin1Char(' ')) +
-                    QString::number(wordOf(in.snapshot, panelDevice(target, name)))
+                    QString::number(wordOf(in, v, panelDevice(target, name)))
                         .rightJustified(6, QLatin1Char(' ')));
             }
         }
@@ -191,7 +202,7 @@ void fieldsView(const Target &target, const PanelDisplay &d, const PanelInput &i
         const auto at = [&](int offset) {
             Address a = *base;
             a.index += offset;
-            return in.snapshot->value(a);
+            return readValue(in, v, a);
         };
         // 2.1.2: state 0 disabled, 1 shown, 2 editable; area (SM107's list); number, high and
         // low word; ...; format 0 16 bit signed, 1 unsigned, 2 32 bit signed; total digits;
@@ -213,7 +224,7 @@ void fieldsView(const Target &target, const PanelDisplay &d, const PanelInput &i
         if (!device) {
             text = QStringLiteral("?");
         } else {
-            qint64 value = in.snapshot->value(*device);
+            qint64 value = readValue(in, v, *device);
             if (at(10) == 1)
                 value &= 0xffff;
             else if (at(10) == 0)
@@ -234,14 +245,14 @@ void textView(const Target &target, const ModelVariant *model, const PanelDispla
         v.lines << QString(d.columns, QLatin1Char(' '));
     if (!in.snapshot)
         return;
-    v.page = static_cast<int>(wordOf(in.snapshot, panelDevice(target, d.pageShownDevice)));
+    v.page = static_cast<int>(wordOf(in, v, panelDevice(target, d.pageShownDevice)));
     if (v.page >= d.firstUserPage && v.page < d.firstUserPage + d.userPages) {
         const Area *chars = areaByKey(target, d.charArea);
         for (int r = 0; chars && r < d.rows; ++r)
             for (int c = 0; c < d.columns; ++c)
                 if (const auto a =
                         panelDevice(target, chars->prefix + QString::number(r * d.columns + c)))
-                    v.lines[r][c] = displayChar(in.snapshot->value(*a));
+                    v.lines[r][c] = displayChar(readValue(in, v, *a));
         fieldsView(target, d, in, v);
     } else if (v.page >= 1 && v.page <= d.systemPages) {
         systemPage(target, model, in, v.page, v);
@@ -267,7 +278,7 @@ void ioLinesView(const Target &target, const ModelVariant *model, const PanelDis
                 const int last = std::min(range->second, first + d.perLine - 1);
                 for (int n = first; n <= last; ++n) {
                     const Address a{static_cast<int>(k), n, -1};
-                    line += in.snapshot && in.snapshot->bit(a) ? filled : empty;
+                    line += readBit(in, v, a) ? filled : empty;
                 }
                 v.lines << line;
                 v.lineLabels << formatAddress(target, Address{static_cast<int>(k), first, -1});
@@ -291,12 +302,12 @@ PanelView panelView(const Target &target, const ModelVariant *model, const Panel
     PanelView v;
     const FrontPanel &p = target.panel;
     for (const PanelLamp &lamp : p.lamps)
-        v.lamps.push_back(lampView(target, lamp, input));
+        v.lamps.push_back(lampView(target, lamp, input, v));
     for (const PanelKnob &k : p.knobs) {
         const auto a = panelDevice(target, k.device);
         if (!a)
             continue;
-        const qint64 word = wordOf(input.snapshot, a);
+        const qint64 word = wordOf(input, v, a);
         const qint64 value = k.bcd ? fromBcd(word).value_or(0) : word;
         v.knobs.push_back(
             {k.label, *a, static_cast<int>(value), k.lowest, k.highest, k.bcd, k.meaning});
@@ -309,8 +320,7 @@ PanelView panelView(const Target &target, const ModelVariant *model, const Panel
     if (v.display != DisplayKind::None || p.display.kind != DisplayKind::Text)
         for (const PanelKey &k : p.keys)
             if (const auto a = panelDevice(target, k.device))
-                v.keys.push_back({k.label, *a, input.snapshot && input.snapshot->bit(*a),
-                                  k.shortcut, k.meaning});
+                v.keys.push_back({k.label, *a, readBit(input, v, *a), k.shortcut, k.meaning});
     switch (v.display) {
     case DisplayKind::Digits:
         digitsView(target, p.display, input, v);

@@ -73,6 +73,9 @@ struct PanelView {
     // Translated, empty when there is nothing to say: why the display shows nothing or what
     // the manual leaves open ("display mode 7: the manual describes modes 3 and 4").
     QString note;
+    // Every device the view read, in reading order (repeats possible): what an online source
+    // is to poll for the panel.
+    std::vector<Address> devices;
 };
 
 struct PanelInput {

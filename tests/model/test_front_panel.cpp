@@ -75,6 +75,11 @@ TEST(FrontPanel, VigorModeThreeShowsTheRegisterD9081Names) {
     EXPECT_EQ(v.digitsText, QStringLiteral(" 123"));
     EXPECT_TRUE(v.fits);
     EXPECT_TRUE(v.note.isEmpty());
+    // What an online source is to poll for the panel: the mode, the register's number and the
+    // register it names.
+    for (const char *device : {"D9080", "D9081", "D1", "VR1", "VR2"})
+        EXPECT_NE(std::find(v.devices.begin(), v.devices.end(), image.at(device)), v.devices.end())
+            << device;
     image.set("D1", 9999);
     EXPECT_EQ(image.view().digitsText, QStringLiteral("9999"));
     // Beyond four digits the manual does not say what the PLC shows: the value, plainly.
