@@ -4,8 +4,8 @@
 // was): what a user needs together is visible together (issue 31, docs/user-guide.md "The
 // docks").
 //  - Editing: Project and Cross Reference, tabs of the left column.
-//  - Live values, from a simulation or a PLC: Inputs and Outputs (the Front Panel a tab
-//    behind it), with Simulation, Scan
+//  - Live values, from a simulation or a PLC: Inputs and Outputs, with Simulation (the Front
+//    Panel a tab behind it; on a narrow screen behind Inputs and Outputs), Scan
 //    Debugger and Connection as tabs below it (a simulation and a PLC never feed the views
 //    together, so their docks share a place). On a wide screen this is a right-hand column;
 //    on a narrow one (1024x600) there is room beside the ladder for one column only, so the

@@ -105,15 +105,17 @@ void MainWindow::setPanelsSource(model::MonitorSource *source) {
     m_ioPanel->setMonitorSource(source);
     m_chart->setMonitorSource(source);
     m_frontPanel->setSimulationSource(source);
-    // The first simulation of the window shows its terminals and its front panel, a tab
-    // behind them (closed again, they stay so).
+    // The first simulation of the window shows its terminals, and its front panel as a tab
+    // behind the docks in front (closed again, they stay so).
     if (source && !m_panelsShown) {
         m_panelsShown = true;
-        for (const char *name : {"frontPanelDock", "ioDock"})
-            if (auto *d = findChild<QDockWidget *>(QLatin1String(name)); d && !d->isVisible()) {
-                d->show();
-                d->raise();
-            }
+        if (auto *d = findChild<QDockWidget *>(QStringLiteral("frontPanelDock"));
+            d && !d->isVisible())
+            d->show();
+        if (auto *d = findChild<QDockWidget *>(QStringLiteral("ioDock")); d && !d->isVisible()) {
+            d->show();
+            d->raise();
+        }
     }
 }
 

@@ -202,7 +202,7 @@ void fieldsView(const Target &target, const PanelDisplay &d, const PanelInput &i
         const auto at = [&](int offset) {
             Address a = *base;
             a.index += offset;
-            return readValue(in, v, a);
+            return static_cast<int>(readValue(in, v, a));
         };
         // 2.1.2: state 0 disabled, 1 shown, 2 editable; area (SM107's list); number, high and
         // low word; ...; format 0 16 bit signed, 1 unsigned, 2 32 bit signed; total digits;

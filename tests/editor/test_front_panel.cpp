@@ -1,9 +1,15 @@
 // Issue 30: the PLC's front panel in the IDE, drawn from a real simulation (SimulatorSession)
 // and worked with the mouse and the keyboard as a user would.
 
+#include "app/gui/front_panel_controller.h"
+#include "app/gui/simulation_controller.h"
 #include "editor/front_panel.h"
 #include "monitor_fixture.h"
+#include "tests/editor/window_fixture.h"
 #include "tests/targets.h"
+
+#include <QApplication>
+#include <QDockWidget>
 
 #include <QDial>
 #include <QPushButton>
@@ -37,7 +43,6 @@ TEST(FrontPanelView, VigorDisplayShowsTheRegisterTheProgramNamesInD9081) {
     PanelFixture f;
     f.start(rung::testing::vigor(), QStringLiteral("VB"),
             "LD M9002\nMOV K3 D9080\nMOV K10 D9081\nLD M9000\nMOV K1234 D10\nEND\n");
-    EXPECT_FALSE(f.panel.hint().isEmpty()) << "before the first scan nothing runs";
     f.scan();
     EXPECT_EQ(f.panel.view().digitsText, QStringLiteral("1234"));
     EXPECT_EQ(f.panel.display()->text(), QStringLiteral("1234"));
@@ -155,7 +160,8 @@ TEST(FrontPanelView, WithoutASimulationTheDockSaysHowToStart) {
 // Omron CPM1 guide 3.4: the analog setting written as BCD into channel 250.
 TEST(FrontPanelView, Cpm1AnalogSettingWritesBcd) {
     PanelFixture f;
-    f.start(rung::testing::cpm1(), QStringLiteral("CPM1-20CDR"), "LD 253.13\nMOV(21) 250 DM0000\nEND\n");
+    f.start(rung::testing::cpm1(), QStringLiteral("CPM1-20CDR"),
+            "LD 253.13\nMOV(21) 250 DM0000\nEND\n");
     f.scan();
     QSpinBox *number = f.panel.knobNumber(QStringLiteral("0"));
     ASSERT_NE(number, nullptr);
@@ -164,4 +170,40 @@ TEST(FrontPanelView, Cpm1AnalogSettingWritesBcd) {
     f.scan();
     EXPECT_EQ(f.value("DM0000"), 0x0150);
     EXPECT_TRUE(f.panel.lamp(QStringLiteral("POWER"))->isLit());
+}
+
+// The window: View > Front Panel, fed by the simulation as the other monitoring docks are (F10
+// shows it); showSource points it at any source of any PLC (a network station's) and
+// showSimulation back.
+struct FrontPanelDock : test::WindowFixture {};
+
+TEST_F(FrontPanelDock, FollowsTheSimulationAndAnySourceItIsPointedAt) {
+    FrontPanelDock &f = *this;
+    f.load("LD M9002\nMOV K3 D9080\nMOV K0 D9081\nLD M9000\nMOV K42 D0\nEND\n");
+    auto *dock = f.window.findChild<QDockWidget *>(QStringLiteral("frontPanelDock"));
+    ASSERT_NE(dock, nullptr);
+    EXPECT_EQ(dock->windowTitle(), QStringLiteral("Front Panel"));
+    editor::FrontPanel *panel = f.window.frontPanel()->panel();
+    EXPECT_EQ(panel->monitorSource(), nullptr);
+    f.window.show();
+    QApplication::setActiveWindow(&f.window);
+    ASSERT_TRUE(QTest::qWaitForWindowActive(&f.window));
+    f.view->setFocus();
+    QTest::keyClick(f.view, Qt::Key_F10);
+    ASSERT_NE(f.window.simulation()->session(), nullptr);
+    EXPECT_EQ(panel->monitorSource(), f.window.simulation()->session());
+    EXPECT_FALSE(dock->isHidden()) << "the first simulation opens it";
+    EXPECT_TRUE(eventually([&] { return panel->view().digitsText == QStringLiteral("  42"); }))
+        << panel->view().digitsText.toStdString();
+    // A station of another PLC: its table and model.
+    PanelFixture station;
+    station.start(rung::testing::pl110(), QStringLiteral("PL110-2A"), "LD I1\nOUT Q1\nEND\n");
+    f.window.frontPanel()->showSource(station.session.get(), rung::testing::pl110(),
+                                      QStringLiteral("PL110-2A"));
+    EXPECT_EQ(panel->monitorSource(), station.session.get());
+    EXPECT_NE(panel->key(QStringLiteral("SWAP")), nullptr);
+    f.window.frontPanel()->showSimulation();
+    EXPECT_EQ(panel->monitorSource(), f.window.simulation()->session());
+    EXPECT_EQ(panel->key(QStringLiteral("SWAP")), nullptr);
+    EXPECT_NE(panel->knob(QStringLiteral("VR1")), nullptr);
 }
