@@ -4591,7 +4591,7 @@ Kiértékelés: %4 µs (%5..%6)</translation>
 <context>
     <name>rung::editor::FrontPanel</name>
     <message>
-        <location filename="../editor/front_panel.cpp" line="+313"/>
+        <location filename="../editor/front_panel.cpp" line="+318"/>
         <source>%1: %2 (key %3; held down, %4 is 1)</source>
         <translation>%1: %2 (billentyű: %3; lenyomva tartva %4 = 1)</translation>
     </message>
@@ -4601,7 +4601,7 @@ Kiértékelés: %4 µs (%5..%6)</translation>
         <translation>%1: %2 (ide ír: %3)</translation>
     </message>
     <message>
-        <location line="+35"/>
+        <location line="+44"/>
         <source>This PLC has no front panel that its manual describes</source>
         <translation>Ennek a PLC-nek a kézikönyve nem ír le előlapot</translation>
     </message>
@@ -6734,7 +6734,7 @@ Kiértékelés: %4 µs (%5..%6)</translation>
 <context>
     <name>rung::model::PanelView</name>
     <message>
-        <location filename="../model/image/panel_view.cpp" line="+92"/>
+        <location filename="../model/image/panel_view.cpp" line="+103"/>
         <source>Display mode %1: the manual describes mode %2 (one %3-digit value) and mode %4 (two %5-digit values)</source>
         <translation>%1. kijelzési mód: a kézikönyv a(z) %2. módot (egy %3 jegyű érték) és a(z) %4. módot (két %5 jegyű érték) írja le</translation>
     </message>
@@ -7542,7 +7542,7 @@ Kiértékelés: %4 µs (%5..%6)</translation>
     </message>
     <message>
         <location line="+5"/>
-        <location filename="../model/target/target_pl110.cpp" line="+101"/>
+        <location filename="../model/target/target_pl110.cpp" line="+96"/>
         <location filename="../model/target/target_vigor.cpp" line="+95"/>
         <location filename="../model/target/target_vpc.cpp" line="+5"/>
         <source>Start a block with a normally open contact</source>
@@ -7908,7 +7908,7 @@ Kiértékelés: %4 µs (%5..%6)</translation>
         <translation>A program vége</translation>
     </message>
     <message>
-        <location filename="../model/target/target_pl110.cpp" line="-399"/>
+        <location filename="../model/target/target_pl110.cpp" line="-394"/>
         <source>IF contact: ON while S1 ? S2 is true</source>
         <translation>IF érintkező: BE, amíg S1 ? S2 igaz</translation>
     </message>
@@ -8230,12 +8230,7 @@ Kiértékelés: %4 µs (%5..%6)</translation>
         <translation>a kijelző készenléti módját (fényerejét és az utolsó gombnyomás utáni késleltetést) a szimulátor nem modellezi: az előlap kijelzője világos marad; a szó egyszerű memória</translation>
     </message>
     <message>
-        <location line="+9"/>
-        <source>the user pages&apos; parameter fields (SetPAR, FormatPAR, PosPAR) are shown on the front panel, but editing a field with the keys SET, UP and DOWN is not modelled</source>
-        <translation>a felhasználói oldalak paramétermezői (SetPAR, FormatPAR, PosPAR) megjelennek az előlapon, de egy mező módosítását a SET, UP és DOWN gombokkal a szimulátor nem modellezi</translation>
-    </message>
-    <message>
-        <location line="+27"/>
+        <location line="+31"/>
         <source>NOT contact: invert the power flow</source>
         <translation>NOT érintkező: az áramút negálása</translation>
     </message>

@@ -4604,7 +4604,7 @@ Valutazione: %4 µs (%5..%6)</translation>
 <context>
     <name>rung::editor::FrontPanel</name>
     <message>
-        <location filename="../editor/front_panel.cpp" line="+313"/>
+        <location filename="../editor/front_panel.cpp" line="+318"/>
         <source>%1: %2 (key %3; held down, %4 is 1)</source>
         <translation>%1: %2 (tasto %3; tenuto premuto, %4 vale 1)</translation>
     </message>
@@ -4614,7 +4614,7 @@ Valutazione: %4 µs (%5..%6)</translation>
         <translation>%1: %2 (scrive %3)</translation>
     </message>
     <message>
-        <location line="+35"/>
+        <location line="+44"/>
         <source>This PLC has no front panel that its manual describes</source>
         <translation>Il manuale di questo PLC non descrive un pannello frontale</translation>
     </message>
@@ -6755,7 +6755,7 @@ Valutazione: %4 µs (%5..%6)</translation>
 <context>
     <name>rung::model::PanelView</name>
     <message>
-        <location filename="../model/image/panel_view.cpp" line="+92"/>
+        <location filename="../model/image/panel_view.cpp" line="+103"/>
         <source>Display mode %1: the manual describes mode %2 (one %3-digit value) and mode %4 (two %5-digit values)</source>
         <translation>Modo di visualizzazione %1: il manuale descrive il modo %2 (un valore di %3 cifre) e il modo %4 (due valori di %5 cifre)</translation>
     </message>
@@ -7563,7 +7563,7 @@ Valutazione: %4 µs (%5..%6)</translation>
     </message>
     <message>
         <location line="+5"/>
-        <location filename="../model/target/target_pl110.cpp" line="+101"/>
+        <location filename="../model/target/target_pl110.cpp" line="+96"/>
         <location filename="../model/target/target_vigor.cpp" line="+95"/>
         <location filename="../model/target/target_vpc.cpp" line="+5"/>
         <source>Start a block with a normally open contact</source>
@@ -7929,7 +7929,7 @@ Valutazione: %4 µs (%5..%6)</translation>
         <translation>Fine del programma</translation>
     </message>
     <message>
-        <location filename="../model/target/target_pl110.cpp" line="-399"/>
+        <location filename="../model/target/target_pl110.cpp" line="-394"/>
         <source>IF contact: ON while S1 ? S2 is true</source>
         <translation>Contatto IF: ON mentre S1 ? S2 è vero</translation>
     </message>
@@ -8251,12 +8251,7 @@ Valutazione: %4 µs (%5..%6)</translation>
         <translation>lo standby del display (la luminosità e il ritardo dall&apos;ultima pressione di un tasto) non è modellato: il display del pannello frontale resta alla massima luminosità; la word è semplice memoria</translation>
     </message>
     <message>
-        <location line="+9"/>
-        <source>the user pages&apos; parameter fields (SetPAR, FormatPAR, PosPAR) are shown on the front panel, but editing a field with the keys SET, UP and DOWN is not modelled</source>
-        <translation>i campi parametro delle pagine utente (SetPAR, FormatPAR, PosPAR) sono visualizzati sul pannello frontale, ma la modifica di un campo con i tasti SET, UP e DOWN non è modellata</translation>
-    </message>
-    <message>
-        <location line="+27"/>
+        <location line="+31"/>
         <source>NOT contact: invert the power flow</source>
         <translation>Contatto NOT: inverte il flusso di corrente</translation>
     </message>

@@ -252,11 +252,6 @@ Target makePl110Target() {
          QT_TRANSLATE_NOOP("rung::model::Target",
                            "the terminal (the last variable changed from the keys, the password "
                            "entered) is not modelled; the word stays as the program leaves it")},
-        {QStringLiteral("SM118"), QStringLiteral("SM185"),
-         QT_TRANSLATE_NOOP("rung::model::Target",
-                           "the user pages' parameter fields (SetPAR, FormatPAR, PosPAR) are "
-                           "shown on the front panel, but editing a field with the keys SET, UP "
-                           "and DOWN is not modelled")},
     };
 
     // Contacts. The plain spellings come first: Target::findInstruction(op, mode) returns the
