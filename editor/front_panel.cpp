@@ -13,10 +13,10 @@
 #include <QKeySequence>
 #include <QLabel>
 #include <QPainter>
-#include <QPushButton>
 #include <QScrollArea>
 #include <QSignalBlocker>
 #include <QSpinBox>
+#include <QToolButton>
 #include <QVBoxLayout>
 
 #include <algorithm>
@@ -115,7 +115,7 @@ QFont PanelDisplay::displayFont() const {
     // The digits are the panel's main reading: large; the OLED's 21 columns and the LCD's 16
     // at the window's size.
     const bool digits = m_view && m_view->display == model::DisplayKind::Digits && m_view->fits;
-    f.setPointSizeF(digits ? base * 2.6 : base * 1.1);
+    f.setPointSizeF(digits ? base * 2.6 : base);
     f.setBold(digits);
     return f;
 }
@@ -206,10 +206,10 @@ FrontPanel::FrontPanel(QWidget *parent)
     m_caption->setWordWrap(true);
     parts->addWidget(m_caption);
     auto *lamps = new QWidget;
-    m_lampRow = new FlowLayout(lamps, 10);
+    m_lampRow = new FlowLayout(lamps, 6);
     parts->addWidget(lamps);
     auto *keys = new QWidget;
-    m_keyRow = new FlowLayout(keys, 6);
+    m_keyRow = new FlowLayout(keys, 4);
     parts->addWidget(keys);
     auto *knobs = new QWidget;
     m_knobRow = new FlowLayout(knobs, 10);
@@ -252,7 +252,7 @@ void FrontPanel::setMonitorSource(model::MonitorSource *source) {
 void FrontPanel::rebuild() {
     for (PanelLamp *l : m_lamps)
         delete l;
-    for (QPushButton *k : m_keys)
+    for (QToolButton *k : m_keys)
         delete k;
     for (Knob &k : m_knobs)
         delete k.dial->parentWidget();
@@ -268,11 +268,16 @@ void FrontPanel::rebuild() {
             m_lamps.push_back(lamp);
         }
         for (std::size_t k = 0; k < shape.keys.size(); ++k) {
-            auto *button = new QPushButton(shape.keys[k].label);
+            auto *button = new QToolButton;
+            button->setText(shape.keys[k].label);
             button->setObjectName(QStringLiteral("panelKey_") + shape.keys[k].label);
             button->setAutoRepeat(false);
-            connect(button, &QPushButton::pressed, this, [this, k] { pressKey(k, true); });
-            connect(button, &QPushButton::released, this, [this, k] { pressKey(k, false); });
+            button->setToolButtonStyle(Qt::ToolButtonTextOnly);
+            // The keys as the terminal has them, side by side: a tool button is as wide as its
+            // word (a push button's style minimum put SET and DOWN on a second row).
+            button->setFocusPolicy(Qt::StrongFocus);
+            connect(button, &QToolButton::pressed, this, [this, k] { pressKey(k, true); });
+            connect(button, &QToolButton::released, this, [this, k] { pressKey(k, false); });
             m_keyRow->addWidget(button);
             m_keys.push_back(button);
         }
@@ -390,7 +395,7 @@ void FrontPanel::refresh() {
             knob.number->setValue(m_view.knobs[k].value);
         }
     }
-    for (QPushButton *key : m_keys)
+    for (QToolButton *key : m_keys)
         key->setEnabled(snapshot != nullptr);
     QString caption;
     const model::PanelDisplay &d = m_target ? m_target->panel.display : model::PanelDisplay{};
@@ -472,8 +477,8 @@ QSpinBox *FrontPanel::knobNumber(const QString &label) const {
     return nullptr;
 }
 
-QPushButton *FrontPanel::key(const QString &label) const {
-    for (QPushButton *k : m_keys)
+QToolButton *FrontPanel::key(const QString &label) const {
+    for (QToolButton *k : m_keys)
         if (k->text() == label)
             return k;
     return nullptr;

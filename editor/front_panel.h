@@ -19,7 +19,7 @@
 
 class QDial;
 class QLabel;
-class QPushButton;
+class QToolButton;
 class QSpinBox;
 class QVBoxLayout;
 
@@ -47,7 +47,7 @@ public:
     // The parts, by the label the manual gives them (for tests and accessibility).
     QDial *knob(const QString &label) const;
     QSpinBox *knobNumber(const QString &label) const;
-    QPushButton *key(const QString &label) const;
+    QToolButton *key(const QString &label) const;
     PanelLamp *lamp(const QString &label) const;
     PanelDisplay *display() const { return m_display; }
     // The sentence shown when there is no panel or nothing runs (empty otherwise).
@@ -88,7 +88,7 @@ private:
     FlowLayout *m_keyRow = nullptr;
     FlowLayout *m_knobRow = nullptr;
     std::vector<PanelLamp *> m_lamps;
-    std::vector<QPushButton *> m_keys;
+    std::vector<QToolButton *> m_keys;
     std::vector<Knob> m_knobs;
     std::vector<model::Address> m_watched; // told the source (setWatched)
 };

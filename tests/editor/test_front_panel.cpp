@@ -12,9 +12,9 @@
 #include <QDockWidget>
 
 #include <QDial>
-#include <QPushButton>
 #include <QSpinBox>
 #include <QTest>
+#include <QToolButton>
 
 using namespace rung;
 using namespace rung::test;
@@ -101,7 +101,7 @@ TEST(FrontPanelView, Pl110PageShowsTheProgramsTextAndSwapTurnsThePage) {
     const QStringList rows = f.panel.display()->text().split(QLatin1Char('\n'));
     ASSERT_EQ(rows.size(), 8);
     EXPECT_EQ(rows[2], QStringLiteral("TESTO                "));
-    QPushButton *swap = f.panel.key(QStringLiteral("SWAP"));
+    QToolButton *swap = f.panel.key(QStringLiteral("SWAP"));
     ASSERT_NE(swap, nullptr);
     QTest::mousePress(swap, Qt::LeftButton);
     f.settle();
