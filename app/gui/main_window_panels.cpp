@@ -98,19 +98,23 @@ void MainWindow::addPanelActions(QMenu *menu) {
 }
 
 void MainWindow::setPanelsSource(model::MonitorSource *source) {
+    // The front panel is the simulated PLC's (a real PLC has its own): an online session does
+    // not feed it, nor is it polled for the panel's words.
+    const bool online = m_online && m_online->session() && source == m_online->session();
+    if (!online)
+        m_frontPanel->setSimulationSource(source);
     // Online, the PLC keeps the panels (main_window_online.cpp).
     if (m_online && m_online->session() && source != m_online->session())
         return;
     m_watchPanel->setMonitorSource(source);
     m_ioPanel->setMonitorSource(source);
     m_chart->setMonitorSource(source);
-    m_frontPanel->setSimulationSource(source);
     // The first simulation of the window shows its terminals, and its front panel as a tab
     // behind the docks in front (closed again, they stay so).
     if (source && !m_panelsShown) {
         m_panelsShown = true;
         if (auto *d = findChild<QDockWidget *>(QStringLiteral("frontPanelDock"));
-            d && !d->isVisible())
+            d && !d->isVisible() && !online)
             d->show();
         if (auto *d = findChild<QDockWidget *>(QStringLiteral("ioDock")); d && !d->isVisible()) {
             d->show();
