@@ -171,6 +171,7 @@ CompileResult Compiler::run() {
     m_program->steps.resize(m_list.instructions.size());
     m_program->lines.resize(m_list.instructions.size());
     compileSystem();
+    compilePanel(); // compile_panel.cpp
     compilePorts(); // compile_comm.cpp
     // MPS levels are the PLC's (Limits::stackDepth, ST001); the engine's stack holds any
     // target's (kMaxStackDepthOfAnyTarget).

@@ -268,6 +268,9 @@ private:
     std::int32_t systemWord(model::SystemRole role);
     std::int32_t wordsToAreaEnd(const model::Operand &o) const;
     void compileSystem();
+    // The front panel (model::FrontPanel): its power-on values, the PL110-2A's pages
+    // (compile_panel.cpp).
+    void compilePanel();
     // Omron CPM1 (compile_cpm1.cpp): the W353 application instructions, SBN / RET / STEP,
     // the arithmetic flags, and the subroutines' targets.
     void compileArithmetic(const model::Instruction &ins, Step &s);

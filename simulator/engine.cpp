@@ -222,6 +222,8 @@ void Engine::endScan() {
             std::copy(m_write.begin() + begin, m_write.begin() + end, m_words.begin() + begin);
     if (!p.comms.empty() || (!p.ports.empty() && portsBusy()))
         serviceComms(); // engine_comm.cpp, engine_ports.cpp
+    if (p.terminal.pageShown >= 0)
+        serviceTerminal(); // engine_panel.cpp
     ++m_stats.scans;
     ++m_scansSincePowerOn;
     m_stats.timeMs += m_stats.periodMs;

@@ -161,6 +161,9 @@ public:
 
 private:
     void loadPresets(); // Program::presetLoads, at start and at each power cycle
+    // The PL110-2A's terminal between two scans (Program::terminal, engine_panel.cpp).
+    void serviceTerminal();
+    bool m_swapHeld = false; // the SWAP key's bit at the last serviceTerminal
     struct ElementState {
         std::int64_t accumulated = 0; // timers: ms with the input ON; counters: count
         std::uint8_t previous = 0;    // counters: input state at the last execution

@@ -352,6 +352,15 @@ struct Program {
     // Constant presets the program may read and write (PL110 PT/PV): (set-value word, value),
     // loaded when the engine starts and at each power cycle.
     std::vector<std::pair<std::int32_t, std::int32_t>> presetLoads;
+    // The PL110-2A's terminal (model::PanelDisplay, PL110 manual 2.1.2 SM102..SM106, SM110):
+    // between scans the page request is shown and reset, the SWAP key steps through the pages
+    // enabled, the page shown is kept in its word. pageShown -1: no terminal.
+    struct TerminalPages {
+        std::int32_t systemPages = -1, userPages = -1, startPage = -1, pageShown = -1,
+                     pageRequest = -1;
+        BitRef swap;
+        int systemCount = 0, firstUser = 0, userCount = 0;
+    } terminal;
     // TEST mode (PL110 SM0.5 / SM37): while inputTest is ON the inputs inputTestBits read
     // the bits of inputTestWord instead of the terminals.
     BitRef inputTest;

@@ -43,6 +43,14 @@ void arrangeDocks(QMainWindow *window, bool wide) {
         window->tabifyDockWidget(crossReference, simulation);
     window->tabifyDockWidget(simulation, debugger);
     window->tabifyDockWidget(debugger, connection);
+    // The front panel a tab behind the run controls (wide: the terminals' tab bar has no room
+    // for a second title at 1366 px) or behind the terminals (narrow: the run controls' group
+    // already holds the left column's tabs).
+    if (QDockWidget *front = dock(window, "frontPanelDock")) {
+        QDockWidget *beside = wide ? simulation : io;
+        window->tabifyDockWidget(beside, front);
+        beside->raise();
+    }
     window->addDockWidget(Qt::BottomDockWidgetArea, problems);
     window->tabifyDockWidget(problems, watch);
     window->tabifyDockWidget(watch, chart);

@@ -4,7 +4,8 @@
 // was): what a user needs together is visible together (issue 31, docs/user-guide.md "The
 // docks").
 //  - Editing: Project and Cross Reference, tabs of the left column.
-//  - Live values, from a simulation or a PLC: Inputs and Outputs, with Simulation, Scan
+//  - Live values, from a simulation or a PLC: Inputs and Outputs, with Simulation (the Front
+//    Panel a tab behind it; on a narrow screen behind Inputs and Outputs), Scan
 //    Debugger and Connection as tabs below it (a simulation and a PLC never feed the views
 //    together, so their docks share a place). On a wide screen this is a right-hand column;
 //    on a narrow one (1024x600) there is room beside the ladder for one column only, so the
@@ -23,7 +24,7 @@ inline constexpr int kDockLayoutVersion = 2;
 // A screen at least this wide gets the right-hand column.
 inline constexpr int kWideScreen = 1280;
 
-// Places the docks by their object names (projectDock, crossReferenceDock, ioDock,
+// Places the docks by their object names (projectDock, crossReferenceDock, ioDock, frontPanelDock,
 // simulationDock, scanDebuggerDock, connectionDock, problemsDock, watchDock, timingChartDock,
 // testsDock).
 void arrangeDocks(QMainWindow *window, bool wide);

@@ -49,6 +49,7 @@ class ConnectionPanel;
 class DebugController;
 class ElidingLabel;
 class FileController;
+class FrontPanelController;
 class LayoutController;
 class ListingController;
 class NetworkWindow;
@@ -99,6 +100,8 @@ public:
     editor::WatchListView *watchListView() const { return m_watch; }
     editor::WatchPanel *watchPanel() const { return m_watchPanel; }
     editor::IoPanel *ioPanel() const { return m_ioPanel; }
+    // The Front Panel dock; showSource points it at any source (a network station's).
+    FrontPanelController *frontPanel() const { return m_frontPanel; }
     editor::TimingChart *timingChart() const { return m_chart; }
     SimulationController *simulation() const { return m_simulation; }
     // The simulation's docks, breakpoints and stepping (debug_controller.h).
@@ -167,6 +170,7 @@ private:
     editor::WatchListView *m_watch = nullptr;
     editor::WatchPanel *m_watchPanel = nullptr;
     editor::IoPanel *m_ioPanel = nullptr;
+    FrontPanelController *m_frontPanel = nullptr;
     editor::TimingChart *m_chart = nullptr;
     bool m_panelsShown = false; // the first simulation showed the inputs and outputs
     SymbolTable *m_symbols = nullptr;

@@ -1,6 +1,7 @@
 #include "main_window.h"
 
 #include "file_controller.h"
+#include "front_panel_controller.h"
 #include "online_controller.h"
 #include "simulation_controller.h"
 #include "tests_panel.h"
@@ -44,6 +45,7 @@ void MainWindow::buildMonitorDocks() {
     dock("watchDock", m_watchPanel, Qt::BottomDockWidgetArea);
     dock("timingChartDock", m_chart, Qt::BottomDockWidgetArea);
     dock("ioDock", m_ioPanel, Qt::LeftDockWidgetArea)->hide();
+    m_frontPanel = new FrontPanelController(m_document, this); // "frontPanelDock", hidden
     // The scenario tests of the project, a tab with the findings and records (dock_layout.h).
     auto *tests = new TestsPanel(m_document);
     tests->setHistory([this] {
@@ -82,6 +84,7 @@ void MainWindow::retranslatePanels() {
     title("ioDock", tr("Inputs and Outputs"));
     title("timingChartDock", tr("Timing Chart"));
     title("testsDock", tr("Tests"));
+    m_frontPanel->retranslate();
 }
 
 void MainWindow::addPanelActions(QMenu *menu) {
@@ -89,21 +92,30 @@ void MainWindow::addPanelActions(QMenu *menu) {
     // Every dock of the window can be opened again from here (the live ones from the
     // Simulation menu and Online's entry below): a closed Project or Problems had no way back.
     for (const char *name : {"projectDock", "crossReferenceDock", "problemsDock", "watchDock",
-                             "ioDock", "timingChartDock", "testsDock"})
+                             "ioDock", "frontPanelDock", "timingChartDock", "testsDock"})
         if (auto *d = findChild<QDockWidget *>(QString::fromLatin1(name)))
             menu->addAction(d->toggleViewAction());
 }
 
 void MainWindow::setPanelsSource(model::MonitorSource *source) {
+    // The front panel is the simulated PLC's (a real PLC has its own): an online session does
+    // not feed it, nor is it polled for the panel's words.
+    const bool online = m_online && m_online->session() && source == m_online->session();
+    if (!online)
+        m_frontPanel->setSimulationSource(source);
     // Online, the PLC keeps the panels (main_window_online.cpp).
     if (m_online && m_online->session() && source != m_online->session())
         return;
     m_watchPanel->setMonitorSource(source);
     m_ioPanel->setMonitorSource(source);
     m_chart->setMonitorSource(source);
-    // The first simulation of the window shows its terminals (closed again, they stay so).
+    // The first simulation of the window shows its terminals, and its front panel as a tab
+    // behind the docks in front (closed again, they stay so).
     if (source && !m_panelsShown) {
         m_panelsShown = true;
+        if (auto *d = findChild<QDockWidget *>(QStringLiteral("frontPanelDock"));
+            d && !d->isVisible() && !online)
+            d->show();
         if (auto *d = findChild<QDockWidget *>(QStringLiteral("ioDock")); d && !d->isVisible()) {
             d->show();
             d->raise();

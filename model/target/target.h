@@ -5,6 +5,7 @@
 // written anywhere else.
 
 #include "model/comm/port_spec.h"
+#include "model/target/front_panel.h"
 #include "model/target/op.h"
 #include "model/target/protocol_map.h"
 
@@ -563,6 +564,7 @@ public:
     std::vector<PortSpec> ports;                 // port_spec.h: the serial ports and what they run
     std::vector<LinkDeviceCode> linkDeviceCodes; // port_spec.h: LINK / MBUS device types
     ConsoleTexts console;
+    FrontPanel panel; // front_panel.h: lamps, display, knobs, keys as the manual shows them
 
     // The four families, built once.
     static const Target &get(Family family);

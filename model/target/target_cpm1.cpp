@@ -269,6 +269,44 @@ Target makeCpm1Target() {
     strip(expanded, 18, 12);
     t.models.push_back(expanded);
     t.protocolMaps = cpm1ProtocolMaps();
+    // The CPU unit's front (Omron CPM1 guide 2.1, "A CPU egységen található állapotjelző
+    // LED-ek értelmezése"; 3.4 the analog settings: "0. Potenciométer: 250 -es csatorna").
+    // ERROR/ALARM also blinks on an error that lets the CPU go on ("Nem lényegi hiba"); the
+    // simulation stops on every error it reports, so it is lit or dark. COMM: the simulation of
+    // one PLC does not communicate.
+    t.panel.lamps = {
+        {QStringLiteral("POWER"),
+         LampColour::Green,
+         LampSignal::Power,
+         {},
+         0,
+         QT_TRANSLATE_NOOP("rung::model::Target", "lit while the PLC has power")},
+        {QStringLiteral("RUN"),
+         LampColour::Green,
+         LampSignal::Running,
+         {},
+         0,
+         QT_TRANSLATE_NOOP("rung::model::Target",
+                           "lit in RUN or MONITOR mode; dark in PROGRAM mode or on an error")},
+        {QStringLiteral("ERROR/ALARM"),
+         LampColour::Red,
+         LampSignal::Fault,
+         {},
+         0,
+         QT_TRANSLATE_NOOP("rung::model::Target", "lit on a fatal error: the CPU stopped")},
+        {QStringLiteral("COMM"),
+         LampColour::Orange,
+         LampSignal::Never,
+         {},
+         0,
+         QT_TRANSLATE_NOOP("rung::model::Target",
+                           "lit while the PLC communicates (not simulated: always dark)")},
+    };
+    for (int pot = 0; pot < 2; ++pot)
+        t.panel.knobs.push_back(
+            {QString::number(pot), QString::number(250 + pot), 0, 200, true,
+             QT_TRANSLATE_NOOP("rung::model::Target",
+                               "analog setting: 0..200 as BCD into its channel")});
     return t;
 }
 

@@ -22,6 +22,8 @@ void addCpm1ApplicationInstructions(Target &t);
 std::vector<PortSpec> pl110Ports();
 void addPl110SerialBuffers(Target &t);
 void addPl110Communication(Target &t);
+// The PL110's front panel: its lamps, the PL110-2A's terminal (target_pl110_panel.cpp).
+void addPl110Panel(Target &t);
 
 // Appends an area and returns it for the fields that differ from the defaults.
 inline Area &addArea(Target &t, const char *key, const char *prefix, AreaKind kind, int first,

@@ -243,27 +243,15 @@ Target makePl110Target() {
          QT_TRANSLATE_NOOP("rung::model::Target",
                            "COM2 runs the MODBUS slave only: its status, reply delay, supervision "
                            "time and counters are not modelled; the word is plain memory")},
-        {QStringLiteral("SM100"), QStringLiteral("SM105"),
+        {QStringLiteral("SM100"), QStringLiteral("SM101"),
          QT_TRANSLATE_NOOP("rung::model::Target",
-                           "the display (standby brightness and delay, system and user pages "
-                           "enabled, start page, page shown) is not modelled; the word is plain "
-                           "memory")},
-        {QStringLiteral("SM106"), QStringLiteral("SM106"),
-         QT_TRANSLATE_NOOP("rung::model::Target",
-                           "the PLC shows the page requested and then resets SM106 to 0; the "
-                           "simulator shows no page and keeps the value written")},
+                           "the display's standby (its brightness and the delay after the last "
+                           "key) is not modelled: the front panel's display stays bright; the "
+                           "word is plain memory")},
         {QStringLiteral("SM107"), QStringLiteral("SM109"),
          QT_TRANSLATE_NOOP("rung::model::Target",
                            "the terminal (the last variable changed from the keys, the password "
                            "entered) is not modelled; the word stays as the program leaves it")},
-        {QStringLiteral("SM110"), QStringLiteral("SM110"),
-         QT_TRANSLATE_NOOP("rung::model::Target",
-                           "the terminal's keys (SWAP, UP, DOWN, SET) are not modelled: no key "
-                           "is ever pressed unless you write the word")},
-        {QStringLiteral("SM118"), QStringLiteral("SM185"),
-         QT_TRANSLATE_NOOP("rung::model::Target",
-                           "the user pages' parameter fields (SetPAR, FormatPAR, PosPAR) are not "
-                           "modelled: nothing is shown or edited")},
     };
 
     // Contacts. The plain spellings come first: Target::findInstruction(op, mode) returns the
@@ -485,6 +473,7 @@ Target makePl110Target() {
     }
     t.protocolMaps = pl110ProtocolMaps();
     t.ports = pl110Ports();
+    addPl110Panel(t);
     return t;
 }
 

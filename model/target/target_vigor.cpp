@@ -827,6 +827,38 @@ Target makeVigorTarget() {
         {10, "T", false}, {11, "C", false, 16}, {12, "C", false, 32, false},
         {13, "D", false},
     };
+    // The VB's front (Vigor M/VB/VH communication manual, B-3: the display programs). The
+    // 4-digit display: "MOV K3 D9080 Set the display screen to display mode 3 (displays a
+    // 4-digits numeric value)", D9081 naming the D register shown; mode 4 "displays two
+    // 2-digits numeric values", D[D9081] on the right and the next register on the left. The
+    // manual names no other mode. The variable resistors VR1, VR2 (0..255) that VRRD reads.
+    // The manual does not describe the lamps: RUN and ERROR show the run state and a program
+    // error the simulation stopped on.
+    t.panel.display.kind = DisplayKind::Digits;
+    t.panel.display.modeDevice = QStringLiteral("D9080");
+    t.panel.display.registerDevice = QStringLiteral("D9081");
+    t.panel.display.registerArea = QStringLiteral("D");
+    t.panel.display.digits = 4;
+    t.panel.display.singleValueMode = 3;
+    t.panel.display.pairMode = 4;
+    for (const char *vr : {"VR1", "VR2"})
+        t.panel.knobs.push_back(
+            {QString::fromLatin1(vr), QString::fromLatin1(vr), 0, 255, false,
+             QT_TRANSLATE_NOOP("rung::model::Target", "variable resistor read by VRRD, 0..255")});
+    t.panel.lamps = {
+        {QStringLiteral("RUN"),
+         LampColour::Green,
+         LampSignal::Running,
+         {},
+         0,
+         QT_TRANSLATE_NOOP("rung::model::Target", "lit while the program runs")},
+        {QStringLiteral("ERROR"),
+         LampColour::Red,
+         LampSignal::Fault,
+         {},
+         0,
+         QT_TRANSLATE_NOOP("rung::model::Target", "lit when a program error stopped the PLC")},
+    };
     return t;
 }
 

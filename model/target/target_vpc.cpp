@@ -242,6 +242,14 @@ Target makeVpcTarget() {
     t.console.blockMissing = "IL (JMP) missing";
     t.console.interlace = "IL-JMP interlace";
     t.console.duplicate = "Oper duplication";
+    // The console's LCD in its first RUN & MONITOR window (VPC user's manual, V.a): "The upper
+    // part of the display is for the outputs, shown by 16 per line. The lower part of the
+    // display is for the inputs, shown in the same manner. A filled field represents the state
+    // ON, the empty one - OFF." The other windows and the console's keys edit and search the
+    // program; they are not simulated.
+    t.panel.display.kind = DisplayKind::IoLines;
+    t.panel.display.lineAreas = {QStringLiteral("o"), QStringLiteral("i")};
+    t.panel.display.perLine = 16;
     return t;
 }
 

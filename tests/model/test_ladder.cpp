@@ -38,7 +38,7 @@ Instruction outputOf(const char *text) {
     return p.list.instructions.at(0);
 }
 
-QString deviceAt(const Rung &r, int row, int column) {
+QString cellDevice(const Rung &r, int row, int column) {
     const Cell &c = r.cell(row, column);
     if (c.kind != CellKind::Contact || c.contact.operands.empty())
         return {};
@@ -93,8 +93,8 @@ TEST(LadderGrid, ResizeKeepsWhatFits) {
     r.resize(1, 3);
     EXPECT_EQ(r.rows, 1);
     EXPECT_EQ(r.columns, 3);
-    EXPECT_EQ(deviceAt(r, 0, 0), QStringLiteral("X0"));
-    EXPECT_EQ(deviceAt(r, 0, 1), QStringLiteral("X1"));
+    EXPECT_EQ(cellDevice(r, 0, 0), QStringLiteral("X0"));
+    EXPECT_EQ(cellDevice(r, 0, 1), QStringLiteral("X1"));
     EXPECT_EQ(r.cell(0, 2).kind, CellKind::Empty);
     EXPECT_EQ(r.outputs.size(), 1u);
     ASSERT_TRUE(r.outputs[0].has_value());
@@ -116,16 +116,16 @@ TEST(LadderGrid, WideningKeepsTheWiresToTheCoils) {
     EXPECT_EQ(r.cell(0, 3).kind, CellKind::Wire);
     EXPECT_EQ(r.cell(1, 2).kind, CellKind::Empty);
     EXPECT_EQ(r.cell(2, 3).kind, CellKind::Empty);
-    EXPECT_EQ(deviceAt(r, 0, 1), QStringLiteral("X1"));
+    EXPECT_EQ(cellDevice(r, 0, 1), QStringLiteral("X1"));
 }
 
 TEST(LadderGrid, InsertRowShiftsRowsBelowAndKeepsLinksThrough) {
     Rung r = twoRowRung();
     r.insertRow(1);
     ASSERT_EQ(r.rows, 3);
-    EXPECT_EQ(deviceAt(r, 0, 0), QStringLiteral("X0"));
+    EXPECT_EQ(cellDevice(r, 0, 0), QStringLiteral("X0"));
     EXPECT_EQ(r.cell(1, 1).kind, CellKind::Empty);
-    EXPECT_EQ(deviceAt(r, 2, 1), QStringLiteral("X2"));
+    EXPECT_EQ(cellDevice(r, 2, 1), QStringLiteral("X2"));
     EXPECT_FALSE(r.outputs[1].has_value());
     ASSERT_TRUE(r.outputs[2].has_value());
     EXPECT_TRUE(r.outputs[2]->sameAs(outputOf("OUT Y1")));
@@ -152,11 +152,11 @@ TEST(LadderGrid, InsertColumnInsideAWiredRowContinuesTheWire) {
     Rung r = twoRowRung();
     r.insertColumn(1);
     ASSERT_EQ(r.columns, 3);
-    EXPECT_EQ(deviceAt(r, 0, 0), QStringLiteral("X0"));
+    EXPECT_EQ(cellDevice(r, 0, 0), QStringLiteral("X0"));
     EXPECT_EQ(r.cell(0, 1).kind, CellKind::Wire); // between X0 and X1
-    EXPECT_EQ(deviceAt(r, 0, 2), QStringLiteral("X1"));
+    EXPECT_EQ(cellDevice(r, 0, 2), QStringLiteral("X1"));
     EXPECT_EQ(r.cell(1, 1).kind, CellKind::Empty); // row 1 starts at the link
-    EXPECT_EQ(deviceAt(r, 1, 2), QStringLiteral("X2"));
+    EXPECT_EQ(cellDevice(r, 1, 2), QStringLiteral("X2"));
     EXPECT_TRUE(r.link(0, 1)); // the branch point stays in front of the new column
     EXPECT_FALSE(r.link(0, 2));
 }
@@ -169,7 +169,7 @@ TEST(LadderGrid, RemoveColumnMergesTheNodesAndUndoesInsertColumn) {
     EXPECT_TRUE(r == before);
     r.removeColumn(0);
     ASSERT_EQ(r.columns, 1);
-    EXPECT_EQ(deviceAt(r, 0, 0), QStringLiteral("X1"));
+    EXPECT_EQ(cellDevice(r, 0, 0), QStringLiteral("X1"));
     EXPECT_TRUE(r.link(0, 0)); // the link at node 1 lands on the new node 0
     r.removeColumn(7);         // outside the grid: nothing happens
     EXPECT_EQ(r.columns, 1);
@@ -219,7 +219,7 @@ TEST(LadderText, BridgeDrawingReadsAndPrintsBackExactly) {
     const Rung &r = ladder.rungs[0];
     EXPECT_EQ(r.rows, 3);
     EXPECT_EQ(r.columns, 3);
-    EXPECT_EQ(deviceAt(r, 1, 1), QStringLiteral("X2"));
+    EXPECT_EQ(cellDevice(r, 1, 1), QStringLiteral("X2"));
     EXPECT_TRUE(r.link(0, 1));
     EXPECT_TRUE(r.link(1, 2));
     EXPECT_TRUE(r.link(0, 3));
@@ -401,9 +401,9 @@ TEST(LadderGrid, ReplaceDeviceRenamesEveryUseInContactsAndOutputsOnly) {
     const Address y0 = std::get<Address>(parseAddress(vigor(), QStringLiteral("Y0")));
     const Address m5 = std::get<Address>(parseAddress(vigor(), QStringLiteral("M5")));
     EXPECT_EQ(replaceDevice(rungs, vigor(), x0, x7), 1);
-    EXPECT_EQ(deviceAt(rungs[0], 0, 0), QStringLiteral("X7"));
-    EXPECT_EQ(deviceAt(rungs[0], 0, 1), QStringLiteral("X1")); // the others untouched
-    EXPECT_EQ(deviceAt(rungs[1], 0, 0), QStringLiteral("X2"));
+    EXPECT_EQ(cellDevice(rungs[0], 0, 0), QStringLiteral("X7"));
+    EXPECT_EQ(cellDevice(rungs[0], 0, 1), QStringLiteral("X1")); // the others untouched
+    EXPECT_EQ(cellDevice(rungs[1], 0, 0), QStringLiteral("X2"));
     EXPECT_EQ(replaceDevice(rungs, vigor(), y0, m5), 2); // an output in each rung
     EXPECT_EQ(rungs[0].outputs[0]->operands.front().address, m5);
     EXPECT_EQ(rungs[1].outputs[0]->operands.front().address, m5);

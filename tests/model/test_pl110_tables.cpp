@@ -173,22 +173,26 @@ TEST(Pl110Sm013, ACounterBesideAWriteOfSm013IsAWarning) {
     EXPECT_EQ(count(check("LD I1\nLD I2\nLD I3\nMUP C1 5\nLD I1\nTON T1 5\nEND"), "OP006"), 0);
 }
 
-// Issue 14, PL110 manual 2.1.2: the display's pages, the terminal's keys and SM106 (the PLC shows
-// the page requested and resets the word to 0) are plain memory in the simulator: `check`
-// says so at each use, naming the device (SIM101), and nothing of the rest of SM.
+// Issue 14, PL110 manual 2.1.2; issue 30: the display's pages (SM102..SM106), the terminal's
+// keys (SM110) and the user pages' fields (SM118..SM185) are simulated now (the front panel
+// shows them), so they are quiet; what is still plain memory -- the standby (SM100, SM101), the
+// last variable changed and the password (SM107..SM109) -- is named at each use (SIM101), and
+// nothing of the rest of SM.
 TEST(Pl110Checks, DisplayKeyAndPortMarkersWarn) {
     const char *program = "LD SM0.1\n"      // 1 first scan: no warning
-                          "SBIT SM103.0\n"  // 2 user page 17 enabled (5.4)
-                          "LD= SMW105 17\n" // 3 the page shown
-                          "MOV 17 SM106\n"  // 4 the page request
-                          "LD SM110.1\n"    // 5 the UP key
+                          "SBIT SM103.0\n"  // 2 user page 17 enabled (5.4): simulated
+                          "LD= SMW105 17\n" // 3 the page shown: simulated
+                          "MOV 17 SM106\n"  // 4 the page request: simulated
+                          "LD SM110.1\n"    // 5 the UP key: simulated
                           "OUT M1\n"        // 6
                           "LD SM0.0\n"      // 7
-                          "MOV V0 SMD120\n" // 8 parameter 1's number (SM120, SM121)
+                          "MOV V0 SMD120\n" // 8 parameter 1's number: simulated
                           "LD SM0.0\n"      // 9
                           "MOV 3 SM37\n"    // 10 TEST inputs: simulated
                           "LD SM0.0\n"      // 11
                           "MOV SM111 V1\n"  // 12 not in the manual's table
+                          "LD SM0.1\n"      // 13
+                          "MOV 50 SM100\n"  // 14 the standby brightness
                           "END\n";
     const std::vector<Diagnostic> found = check(program);
     std::vector<std::pair<int, QString>> warned;
@@ -197,21 +201,11 @@ TEST(Pl110Checks, DisplayKeyAndPortMarkersWarn) {
             EXPECT_EQ(d.severity, Severity::Warning);
             warned.emplace_back(d.location.line, d.message);
         }
-    ASSERT_EQ(warned.size(), 5u);
-    EXPECT_EQ(warned[0].first, 2);
-    EXPECT_TRUE(warned[0].second.startsWith(QLatin1String("SM103.0 is not simulated: the display")))
+    ASSERT_EQ(warned.size(), 1u);
+    EXPECT_EQ(warned[0].first, 14);
+    EXPECT_TRUE(warned[0].second.startsWith(QLatin1String("SM100 is not simulated: the "
+                                                          "display's standby")))
         << warned[0].second.toStdString();
-    EXPECT_EQ(warned[1].first, 3);
-    EXPECT_TRUE(warned[1].second.startsWith(QLatin1String("SM105 is not simulated")));
-    EXPECT_EQ(warned[2].first, 4);
-    EXPECT_EQ(warned[2].second,
-              QLatin1String("SM106 is not simulated: the PLC shows the page requested and then "
-                            "resets SM106 to 0; the simulator shows no page and keeps the value "
-                            "written"));
-    EXPECT_EQ(warned[3].first, 5);
-    EXPECT_TRUE(warned[3].second.contains(QLatin1String("keys")));
-    EXPECT_EQ(warned[4].first, 8);
-    EXPECT_TRUE(warned[4].second.startsWith(QLatin1String("SMD120 is not simulated")));
     EXPECT_EQ(count(found, "SIM100"), 0);
     // With the source at hand the column is the device's, for the editor's marker.
     const QString text = QString::fromLatin1(program);
@@ -219,11 +213,11 @@ TEST(Pl110Checks, DisplayKeyAndPortMarkersWarn) {
     options.source = &text;
     const std::vector<Diagnostic> placed =
         checkList(parseInstructionList(pl110(), text).list, options);
-    const auto sm106 = std::find_if(placed.begin(), placed.end(), [](const Diagnostic &d) {
-        return d.code == QLatin1String("SIM101") && d.location.line == 4;
+    const auto sm100 = std::find_if(placed.begin(), placed.end(), [](const Diagnostic &d) {
+        return d.code == QLatin1String("SIM101") && d.location.line == 14;
     });
-    ASSERT_NE(sm106, placed.end());
-    EXPECT_EQ(sm106->location.column, 8);
+    ASSERT_NE(sm100, placed.end());
+    EXPECT_EQ(sm100->location.column, 8);
 }
 
 // Issue 14, PL110 manual 2.1.2: every special-marker word behind hardware the simulator does not

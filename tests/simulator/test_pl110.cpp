@@ -480,24 +480,90 @@ TEST(Pl110Contacts, IfComparesWithASignedHashConstant) {
 }
 
 // Issue 14: what `check` warns as not simulated (SIM101, PL110 manual 2.1.2) the simulator says
-// again when it starts, with the same words, and SM106 keeps what the program wrote.
-TEST(Pl110Unmodelled, TheSimulatorWarnsAsCheckDoesAndKeepsThePageRequest) {
-    Pl110 s("LD SM0.0\nMOV 17 SM106\nLD SM110.3\nOUT Q1\nEND");
+// again when it starts, with the same words.
+TEST(Pl110Unmodelled, TheSimulatorWarnsAsCheckDoes) {
+    Pl110 s("LD SM0.0\nMOV 50 SM100\nLD SM0.0\nMOV SM109 V0\nLD SM110.3\nOUT Q1\nEND");
     ASSERT_TRUE(s.result.ok());
     std::vector<model::Diagnostic> fromCheck;
     for (const model::Diagnostic &d : model::checkList(s.parsed.list, {}))
         if (d.code == QLatin1String("SIM101"))
             fromCheck.push_back(d);
-    ASSERT_EQ(fromCheck.size(), 2u);
+    ASSERT_EQ(fromCheck.size(), 2u); // SM100 and SM109; the SET key SM110.3 is simulated
     ASSERT_EQ(s.result.diagnostics.size(), 2u);
     for (std::size_t k = 0; k < 2; ++k) {
         EXPECT_EQ(s.result.diagnostics[k].code, QLatin1String("SIM101"));
         EXPECT_EQ(s.result.diagnostics[k].location.line, fromCheck[k].location.line);
         EXPECT_EQ(s.result.diagnostics[k].message, fromCheck[k].message);
     }
+}
+
+// Issue 30, PL110 manual 2.1.2: the terminal's words at power-on are the table's defaults
+// ("SM102 ... default 31=tutte abilit.", "SM104 Numero pagina di avvio (default 1)", SM129
+// "Cifre totali campo parametro 1 (default 1)", SM132 row 2, SM133 column 15), and the page
+// shown (SM105) is the start page from the end of the first scan.
+TEST(Pl110Terminal, PowerOnDefaultsAndTheStartPage) {
+    Pl110 s("LD I1\nOUT Q1\nEND");
+    ASSERT_TRUE(s.result.ok());
+    EXPECT_EQ(s.value("SM101"), 2);
+    EXPECT_EQ(s.value("SM102"), 31);
+    EXPECT_EQ(s.value("SM104"), 1);
+    EXPECT_EQ(s.value("SM129"), 1);
+    EXPECT_EQ(s.value("SM132"), 2);
+    EXPECT_EQ(s.value("SM149"), 4);
+    EXPECT_EQ(s.value("SM183"), 8);
+    EXPECT_EQ(s.value("SM184"), 15);
+    EXPECT_EQ(s.value("SM105"), 0);
     s.engine->scan();
+    EXPECT_EQ(s.value("SM105"), 1);
+}
+
+// 5.4: the initialisation enables user pages 17 and 18 ("settando a 1 i bit SMW103.0 e
+// SMW103.1 si abilitano le prime 2 pagine utente"); a start page set there (SM104: "impostare
+// questa word SM nel codice di inizializzazione") is the first page shown.
+TEST(Pl110Terminal, TheStartPageTheInitialisationSets) {
+    Pl110 s("LD SM0.1\nSBIT SMW103 0\nLD SM0.1\nSBIT SMW103 1\nLD SM0.1\nMOV 18 SM104\nEND");
+    ASSERT_TRUE(s.result.ok());
     s.engine->scan();
-    EXPECT_EQ(s.value("SM106"), 17); // the PLC would have reset it once the page was shown
+    EXPECT_EQ(s.value("SM105"), 18);
+}
+
+// SM106: "Se la pagina esiste ed è abilitata, verrà visualizzata, mentre se il valore scritto non
+// è congruente, la visualizzazione rimarrà alla pagina attuale. Una volta richiamata la pagina
+// richiesta, la word verrà automaticamente forzata al valore 0".
+TEST(Pl110Terminal, APageRequestIsShownAndResetAnUnknownOneIsKept) {
+    Pl110 s("LD SM0.1\nSBIT SMW103 0\nLD I1\nMOV 17 SM106\nLD I2\nMOV 20 SM106\nEND");
+    ASSERT_TRUE(s.result.ok());
+    s.engine->scan();
+    EXPECT_EQ(s.value("SM105"), 1);
+    s.in("I1", true);
+    s.engine->scan();
+    EXPECT_EQ(s.value("SM105"), 17);
+    EXPECT_EQ(s.value("SM106"), 0);
+    s.in("I1", false);
+    s.in("I2", true); // page 20 is not enabled
+    s.engine->scan();
+    EXPECT_EQ(s.value("SM105"), 17);
+    EXPECT_EQ(s.value("SM106"), 20);
+}
+
+// 5.2: "Il tasto swap permette di scorrere in modo circolare tutte le pagine rese disponibili
+// dal programma ladder": one page a press (SM110.0 from 0 to 1), the system pages SM102 enables
+// then the user pages SM103 enables, back to the first.
+TEST(Pl110Terminal, SwapStepsThroughTheEnabledPagesInACircle) {
+    Pl110 s("LD SM0.1\nMOV 5 SM102\nLD SM0.1\nMOV 2 SM103\nEND"); // pages 1, 3 and 18
+    ASSERT_TRUE(s.result.ok());
+    s.engine->scan();
+    ASSERT_EQ(s.value("SM105"), 1);
+    std::vector<int> shown;
+    for (int press = 0; press < 3; ++press) {
+        s.engine->writeWord(s.at("SM110"), 1);
+        s.engine->scan();
+        s.engine->scan(); // held: one step only
+        shown.push_back(s.value("SM105"));
+        s.engine->writeWord(s.at("SM110"), 0);
+        s.engine->scan();
+    }
+    EXPECT_EQ(shown, (std::vector<int>{3, 18, 1}));
 }
 
 // The END's port work is skipped while no port is used (issue 35, Engine::portsBusy), and

@@ -1,0 +1,361 @@
+#include "model/image/panel_view.h"
+
+#include "model/image/bcd.h"
+#include "model/target/address.h"
+
+#include <QCoreApplication>
+#include <algorithm>
+
+namespace rung::model {
+
+namespace {
+
+std::optional<Address> panelDevice(const Target &target, const QString &text) {
+    if (text.isEmpty())
+        return std::nullopt;
+    const auto parsed = parseAddress(target, text);
+    if (const auto *a = std::get_if<Address>(&parsed))
+        return *a;
+    return std::nullopt;
+}
+
+const Area *areaByKey(const Target &target, const QString &key) {
+    for (const Area &a : target.areas)
+        if (a.key == key)
+            return &a;
+    return nullptr;
+}
+
+bool modelHasArea(const Target &target, const ModelVariant *model, const QString &key) {
+    for (std::size_t k = 0; k < target.areas.size(); ++k)
+        if (target.areas[k].key == key)
+            return target.range(static_cast<int>(k), model).has_value();
+    return false;
+}
+
+// Every read goes through these, so the view lists the devices it showed (PanelView::devices:
+// an online source polls those).
+qint64 readValue(const PanelInput &in, PanelView &v, const Address &a) {
+    v.devices.push_back(a);
+    return in.snapshot ? in.snapshot->value(a) : 0;
+}
+bool readBit(const PanelInput &in, PanelView &v, const Address &a) {
+    v.devices.push_back(a);
+    return in.snapshot && in.snapshot->bit(a);
+}
+qint64 wordOf(const PanelInput &in, PanelView &v, const std::optional<Address> &a) {
+    return a ? readValue(in, v, *a) : 0;
+}
+
+bool running(MonitorSource::RunState state) {
+    using R = MonitorSource::RunState;
+    return state == R::Running || state == R::Stepping || state == R::Paused;
+}
+
+PanelLampView lampView(const Target &target, const PanelLamp &lamp, const PanelInput &in,
+                       PanelView &view) {
+    PanelLampView v{lamp.label, lamp.colour, false, 0, lamp.meaning};
+    using R = MonitorSource::RunState;
+    switch (lamp.signal) {
+    case LampSignal::Power:
+        v.lit = in.runState != R::Offline;
+        break;
+    case LampSignal::Running:
+        if (in.fault || in.runState == R::Offline)
+            break;
+        if (running(in.runState)) {
+            v.lit = true;
+        } else if (lamp.stoppedBlinkMs > 0) {
+            v.blinkMs = lamp.stoppedBlinkMs;
+            v.lit = (in.nowMs % (2 * lamp.stoppedBlinkMs)) < lamp.stoppedBlinkMs;
+        }
+        break;
+    case LampSignal::Fault:
+        v.lit = in.fault;
+        break;
+    case LampSignal::Device:
+        if (const auto a = panelDevice(target, lamp.device))
+            v.lit = readBit(in, view, *a);
+        break;
+    case LampSignal::Never:
+        break;
+    }
+    return v;
+}
+
+void digitsView(const Target &target, const PanelDisplay &d, const PanelInput &in, PanelView &v) {
+    v.digits = d.digits;
+    if (!in.snapshot)
+        return;
+    const qint64 mode = wordOf(in, v, panelDevice(target, d.modeDevice));
+    const qint64 reg = wordOf(in, v, panelDevice(target, d.registerDevice));
+    v.mode = static_cast<int>(mode);
+    const Area *area = areaByKey(target, d.registerArea);
+    const auto registerValue = [&](qint64 n) -> std::optional<qint64> {
+        if (!area || n < 0)
+            return std::nullopt;
+        const auto a = panelDevice(target, area->prefix + QString::number(n));
+        if (!a)
+            return std::nullopt;
+        return readValue(in, v, *a);
+    };
+    if (mode != d.singleValueMode && mode != d.pairMode) {
+        v.note = QCoreApplication::translate(
+                     "rung::model::PanelView",
+                     "Display mode %1: the manual describes mode %2 (one %3-digit value) and "
+                     "mode %4 (two %5-digit values)")
+                     .arg(mode)
+                     .arg(d.singleValueMode)
+                     .arg(d.digits)
+                     .arg(d.pairMode)
+                     .arg(d.digits / 2);
+        return;
+    }
+    const auto first = registerValue(reg);
+    const auto second = mode == d.pairMode ? registerValue(reg + 1) : std::optional<qint64>(0);
+    if (!first || !second) {
+        v.note = QCoreApplication::translate("rung::model::PanelView",
+                                             "The register named by %1 (%2) does not exist")
+                     .arg(d.registerDevice)
+                     .arg(reg);
+        return;
+    }
+    const auto fitsIn = [](qint64 value, int places) {
+        return value >= 0 && QString::number(value).size() <= places;
+    };
+    if (mode == d.singleValueMode) {
+        v.fits = fitsIn(*first, d.digits);
+        v.digitsText = v.fits ? QString::number(*first).rightJustified(d.digits, QLatin1Char(' '))
+                              : QString::number(*first);
+        return;
+    }
+    // Mode 4: "Show the value of D10 on the right side of the screen, and show the value of
+    // D11 on the left side" (D9081 = 10).
+    const int half = d.digits / 2;
+    v.fits = fitsIn(*first, half) && fitsIn(*second, half);
+    v.digitsText = v.fits ? QString::number(*second).rightJustified(half, QLatin1Char(' ')) +
+                                QString::number(*first).rightJustified(half, QLatin1Char(' '))
+                          : QString::number(*second) + QLatin1Char(' ') + QString::number(*first);
+}
+
+// A byte of the character area as the display draws it: printable ASCII as is, the rest
+// (0 included, which a cleared area that was never filled holds) as a space.
+QChar displayChar(qint64 byte) {
+    const int c = static_cast<int>(byte & 0xff);
+    return c >= 32 && c < 127 ? QChar(c) : (c >= 160 ? QChar(c) : QChar(' '));
+}
+
+void putText(QString &line, int column, const QString &text) {
+    for (int k = 0; k < text.size() && column + k < line.size(); ++k)
+        if (column + k >= 0)
+            line[column + k] = text[k];
+}
+
+// System pages 1 and 2 (PL110 manual 5.3): the digital inputs and outputs, "attive ... con un
+// quadratino pieno", and the analog inputs' values, from the model's terminal strip.
+void systemPage(const Target &target, const ModelVariant *model, const PanelInput &in, int page,
+                PanelView &v) {
+    const QString filled = QStringLiteral("\u25a0"), empty = QStringLiteral("\u25a1");
+    int row = 0;
+    const auto put = [&](const QString &text) {
+        if (row < v.lines.size())
+            putText(v.lines[row++], 0, text);
+    };
+    const ModelVariant &m = model ? *model : target.defaultModel();
+    if (page == 1 || page == 2) {
+        for (const TerminalBlock &b : m.terminals) {
+            const Area *area = areaByKey(target, b.area);
+            if (!area || b.words() != (page == 2))
+                continue;
+            if (page == 2 && area->writable)
+                continue;
+            if (!b.words()) {
+                QString text = area->prefix.leftJustified(4, QLatin1Char(' '));
+                for (int k = 0; k < b.count; ++k) {
+                    const auto a = panelDevice(target, area->prefix + QString::number(b.first + k));
+                    text += a && readBit(in, v, *a) ? filled : empty;
+                }
+                put(text);
+                continue;
+            }
+            for (int k = 0; k < b.count; ++k) {
+                const QString name = area->prefix + QString::number(b.first + k);
+                put(name.leftJustified(6, QLatin1Char(' ')) +
+                    QString::number(wordOf(in, v, panelDevice(target, name)))
+                        .rightJustified(6, QLatin1Char(' ')));
+            }
+        }
+        return;
+    }
+    // Pages 3..5: system info, date and time, display setup. Their contents are the PLC's
+    // (versions, the clock) and not simulated: the page's title, as the manual names it.
+    static const char *const titles[] = {"SYSTEM INFO", "DATE & TIME", "DISPLAY SETUP"};
+    if (page >= 3 && page <= 5)
+        put(QString::fromLatin1(titles[page - 3]));
+}
+
+void fieldsView(const Target &target, const PanelDisplay &d, const PanelInput &in, PanelView &v) {
+    for (const PanelField &f : d.fields) {
+        const auto base = panelDevice(target, f.first);
+        if (!base)
+            continue;
+        const auto at = [&](int offset) {
+            Address a = *base;
+            a.index += offset;
+            return static_cast<int>(readValue(in, v, a));
+        };
+        // 2.1.2: state 0 disabled, 1 shown, 2 editable; area (SM107's list); number, high and
+        // low word; ...; format 0 16 bit signed, 1 unsigned, 2 32 bit signed; total digits;
+        // decimals; fill; row 1..8; column 1..21.
+        const int state = at(0);
+        if (state != 1 && state != 2)
+            continue;
+        const int code = at(1);
+        const qint64 number = (static_cast<qint64>(at(2) & 0xffff) << 16) | (at(3) & 0xffff);
+        const auto entry = std::find_if(d.areaCodes.begin(), d.areaCodes.end(),
+                                        [code](const PanelAreaCode &c) { return c.code == code; });
+        const Area *area = entry == d.areaCodes.end() ? nullptr : areaByKey(target, entry->area);
+        const int row = at(14) - 1, column = at(15) - 1;
+        if (row < 0 || row >= v.lines.size() || column < 0 || column >= d.columns)
+            continue;
+        QString text;
+        const auto device =
+            area ? panelDevice(target, area->prefix + QString::number(number)) : std::nullopt;
+        if (!device) {
+            text = QStringLiteral("?");
+        } else {
+            qint64 value = readValue(in, v, *device);
+            if (at(10) == 1)
+                value &= 0xffff;
+            else if (at(10) == 0)
+                value = static_cast<qint16>(value & 0xffff);
+            text = formatPanelField(value, std::clamp(at(11), 1, 12), std::clamp(at(12), 0, 10),
+                                    at(13) == 1);
+        }
+        putText(v.lines[row], column, text);
+        v.fields.push_back({row, column,
+                            static_cast<int>(std::min<qsizetype>(text.size(), d.columns - column)),
+                            state == 2});
+    }
+}
+
+void textView(const Target &target, const ModelVariant *model, const PanelDisplay &d,
+              const PanelInput &in, PanelView &v) {
+    for (int r = 0; r < d.rows; ++r)
+        v.lines << QString(d.columns, QLatin1Char(' '));
+    if (!in.snapshot)
+        return;
+    v.page = static_cast<int>(wordOf(in, v, panelDevice(target, d.pageShownDevice)));
+    if (v.page >= d.firstUserPage && v.page < d.firstUserPage + d.userPages) {
+        const Area *chars = areaByKey(target, d.charArea);
+        for (int r = 0; chars && r < d.rows; ++r)
+            for (int c = 0; c < d.columns; ++c)
+                if (const auto a =
+                        panelDevice(target, chars->prefix + QString::number(r * d.columns + c)))
+                    v.lines[r][c] = displayChar(readValue(in, v, *a));
+        fieldsView(target, d, in, v);
+    } else if (v.page >= 1 && v.page <= d.systemPages) {
+        systemPage(target, model, in, v.page, v);
+    } else {
+        v.note = QCoreApplication::translate("rung::model::PanelView",
+                                             "No page is shown: the program enables none");
+    }
+}
+
+void ioLinesView(const Target &target, const ModelVariant *model, const PanelDisplay &d,
+                 const PanelInput &in, PanelView &v) {
+    const QString filled = QStringLiteral("\u25a0"), empty = QStringLiteral("\u25a1");
+    for (const QString &key : d.lineAreas) {
+        for (std::size_t k = 0; k < target.areas.size(); ++k) {
+            const Area &area = target.areas[k];
+            if (area.key != key)
+                continue;
+            const auto range = target.range(static_cast<int>(k), model);
+            if (!range)
+                continue;
+            for (int first = range->first; first <= range->second; first += d.perLine) {
+                QString line;
+                const int last = std::min(range->second, first + d.perLine - 1);
+                for (int n = first; n <= last; ++n) {
+                    const Address a{static_cast<int>(k), n, -1};
+                    line += readBit(in, v, a) ? filled : empty;
+                }
+                v.lines << line;
+                v.lineLabels << formatAddress(target, Address{static_cast<int>(k), first, -1});
+            }
+        }
+    }
+}
+
+} // namespace
+
+bool hasFrontPanel(const Target &target, const ModelVariant *model) {
+    const FrontPanel &p = target.panel;
+    if (!p.lamps.empty() || !p.knobs.empty())
+        return true;
+    if (p.display.kind == DisplayKind::Text)
+        return modelHasArea(target, model, p.display.charArea);
+    return p.display.kind != DisplayKind::None;
+}
+
+PanelView panelView(const Target &target, const ModelVariant *model, const PanelInput &input) {
+    PanelView v;
+    const FrontPanel &p = target.panel;
+    for (const PanelLamp &lamp : p.lamps)
+        v.lamps.push_back(lampView(target, lamp, input, v));
+    for (const PanelKnob &k : p.knobs) {
+        const auto a = panelDevice(target, k.device);
+        if (!a)
+            continue;
+        const qint64 word = wordOf(input, v, a);
+        const qint64 value = k.bcd ? fromBcd(word).value_or(0) : word;
+        v.knobs.push_back(
+            {k.label, *a, static_cast<int>(value), k.lowest, k.highest, k.bcd, k.meaning});
+    }
+    v.display = p.display.kind;
+    // The terminal (display and keys) exists on the models that have its character area
+    // (PL110 manual 1.2: "Terminale con display OLED e tasti. (solo modello PL110-2A)").
+    if (v.display == DisplayKind::Text && !modelHasArea(target, model, p.display.charArea))
+        v.display = DisplayKind::None;
+    if (v.display != DisplayKind::None || p.display.kind != DisplayKind::Text)
+        for (const PanelKey &k : p.keys)
+            if (const auto a = panelDevice(target, k.device))
+                v.keys.push_back({k.label, *a, readBit(input, v, *a), k.shortcut, k.meaning});
+    switch (v.display) {
+    case DisplayKind::Digits:
+        digitsView(target, p.display, input, v);
+        break;
+    case DisplayKind::Text:
+        textView(target, model, p.display, input, v);
+        break;
+    case DisplayKind::IoLines:
+        ioLinesView(target, model, p.display, input, v);
+        break;
+    case DisplayKind::None:
+        break;
+    }
+    return v;
+}
+
+QString formatPanelField(qint64 value, int total, int decimals, bool zeros) {
+    const bool negative = value < 0;
+    QString digits = QString::number(negative ? -value : value);
+    if (decimals > 0) {
+        digits = digits.rightJustified(decimals + 1, QLatin1Char('0'));
+        digits.insert(digits.size() - decimals, QLatin1Char('.'));
+    }
+    const int width = total + (decimals > 0 ? 1 : 0);
+    if (zeros) {
+        digits = digits.rightJustified(width - (negative ? 1 : 0), QLatin1Char('0'));
+        return (negative ? QStringLiteral("-") : QString()) + digits;
+    }
+    return ((negative ? QStringLiteral("-") : QString()) + digits)
+        .rightJustified(width, QLatin1Char(' '));
+}
+
+qint64 panelKnobWord(const PanelKnobView &knob, int value) {
+    const int v = std::clamp(value, knob.lowest, knob.highest);
+    return knob.bcd ? toBcd(v) : v;
+}
+
+} // namespace rung::model

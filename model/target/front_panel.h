@@ -1,0 +1,131 @@
+#pragma once
+
+// The PLC's front panel as the manuals describe it, as table data (Target::panel): its lamps
+// and what lights them, its display and the devices it shows, the knobs and keys and the
+// devices they write. model/image/panel_view.h turns a target and a snapshot into what the
+// panel shows; the editor's FrontPanel draws that. A family whose manual describes no panel
+// leaves the table empty.
+
+#include <QString>
+#include <cstdint>
+#include <vector>
+
+namespace rung::model {
+
+enum class LampColour : std::uint8_t { Green, Red, Yellow, Orange };
+
+// What lights a lamp.
+enum class LampSignal : std::uint8_t {
+    Power,   // the PLC has power: the source is not Offline
+    Running, // the program runs (a paused simulation is a PLC in RUN frozen in time)
+    Fault,   // the source reports an error that stopped the program
+    Device,  // a bit device of the table (PL110 COM1: its port's "transmitting" marker)
+    Never,   // what lights it is not simulated; the lamp is shown dark with its meaning
+};
+
+struct PanelLamp {
+    QString label; // as printed on the PLC ("RUN", "COM1", "ERROR/ALARM"): not translated
+    LampColour colour = LampColour::Green;
+    LampSignal signal = LampSignal::Running;
+    QString device; // LampSignal::Device: the bit
+    // LampSignal::Running: while a program is loaded but does not run, the lamp blinks this
+    // many ms on and as many off (PL110 manual 1.2: "Lampeggio lento - (0,5s on /0,5 s off)");
+    // 0: it is dark then.
+    int stoppedBlinkMs = 0;
+    // QT_TRANSLATE_NOOP("rung::model::Target", ...): what the manual's table says it means.
+    const char *meaning = nullptr;
+};
+
+enum class DisplayKind : std::uint8_t {
+    None,
+    // Vigor VB: a 4-digit display whose mode word says what it shows and whose register word
+    // names the D register (Vigor M/VB/VH communication manual, B-3: mode 3 one 4-digit value,
+    // mode 4 two 2-digit values).
+    Digits,
+    // PL110-2A: the OLED terminal, rows x columns of characters from a byte area, system and
+    // user pages, four parameter fields (PL110 manual 2.1.2, 2.1.16, 5).
+    Text,
+    // VPC: the console's LCD in its first RUN & MONITOR window: the outputs, then the inputs,
+    // 16 to a line, a filled field ON (VPC user's manual, V.a).
+    IoLines,
+};
+
+// One numeric field of a user page (PL110 manual 2.1.2, SM118..SM134 for the first): the
+// words from `first` on, in the manual's order.
+struct PanelField {
+    QString first; // "SM118": state, area, number (high, low), min and max, format, digits,
+                   // decimals, fill, row, column, access
+};
+
+// SM107's list of areas (PL110 manual 2.1.2): the number a field names its variable's area by.
+struct PanelAreaCode {
+    int code = 0;
+    QString area;         // Area::key
+    bool doubles = false; // the area's double words (VD, SMD)
+};
+
+struct PanelDisplay {
+    DisplayKind kind = DisplayKind::None;
+    // Digits: the mode word and the word naming the register shown; the register area.
+    QString modeDevice;
+    QString registerDevice;
+    QString registerArea;
+    int digits = 4;
+    int singleValueMode = 0; // the mode that shows one value on all digits
+    int pairMode = 0;        // the mode that shows two values, the register's on the right
+    // Text: the character area (absent on a model without the terminal), its rows and columns.
+    QString charArea;
+    int rows = 0;
+    int columns = 0;
+    QString systemPagesDevice; // a bit a page, system page 1 at bit 0
+    QString userPagesDevice;   // a bit a user page, the first user page at bit 0
+    QString startPageDevice;
+    QString pageShownDevice;
+    QString pageRequestDevice;
+    int systemPages = 0;   // 1..systemPages
+    int firstUserPage = 0; // firstUserPage..firstUserPage + userPages - 1
+    int userPages = 0;
+    std::vector<PanelField> fields;
+    std::vector<PanelAreaCode> areaCodes;
+    // IoLines: the areas shown, in order, and how many to a line.
+    std::vector<QString> lineAreas;
+    int perLine = 16;
+};
+
+// A knob with a number box (Vigor VR1, CPM1 analog setting 0): writes its word.
+struct PanelKnob {
+    QString label; // as the manual names it ("VR1"); a number on the CPM1 ("0")
+    QString device;
+    int lowest = 0;
+    int highest = 0;
+    bool bcd = false;              // the word holds the value as BCD digits (CPM1 0..200)
+    const char *meaning = nullptr; // QT_TRANSLATE_NOOP("rung::model::Target", ...)
+};
+
+// A key: held down, its bit is 1 (PL110 SM110: "Il bit a 1 indica che il rispettivo pulsante
+// è attualmente premuto").
+struct PanelKey {
+    QString label;    // as printed ("SWAP", "UP", "DOWN", "SET")
+    QString device;   // its bit
+    QString shortcut; // the keyboard key that presses it in the IDE (a QKeySequence text)
+    const char *meaning = nullptr; // QT_TRANSLATE_NOOP("rung::model::Target", ...)
+};
+
+// A word's value at power-on (PL110 SM102 31: every system page enabled).
+struct PowerOnValue {
+    QString device;
+    int value = 0;
+};
+
+struct FrontPanel {
+    std::vector<PanelLamp> lamps;
+    PanelDisplay display;
+    std::vector<PanelKnob> knobs;
+    std::vector<PanelKey> keys; // the display's terminal: absent when the display is
+    std::vector<PowerOnValue> powerOn;
+    bool empty() const {
+        return lamps.empty() && display.kind == DisplayKind::None && knobs.empty();
+    }
+};
+
+} // namespace rung::model

@@ -1,0 +1,96 @@
+// The PL110's front panel (PL110 manual 1.2 "Descrizione generale e pannello frontale", 2.1.2
+// SM100..SM185, 2.1.16 the display characters, 5 the PL110-2A's terminal).
+
+#include "model/target/target_data.h"
+
+namespace rung::model::detail {
+
+void addPl110Panel(Target &t) {
+    FrontPanel &p = t.panel;
+    // 1.2: "Led verde RUN: Acceso fisso -> il PLC è in RUN ... Lampeggio lento - (0,5s on /0,5 s
+    // off) il PL110 è usato come modulo di IN/OUT senza l'applicativo ladder caricato.
+    // Lampeggio veloce - (0,2 s on /0,2 s off) ... solo il programma di boot". A simulation
+    // stopped runs no ladder: the slow blink. The boot-only state does not arise.
+    // "Led gialli COM1 ed EXP1: Acceso - alla trasmissione di ogni pacchetto di dati sulla
+    // porta seriale corrispondente"; "Led giallo COM2: ... traffico dati in uscita": lit while
+    // the port's transmitting marker (SM0.6, SM0.7, SM0.8) is.
+    p.lamps = {
+        {QStringLiteral("RUN"),
+         LampColour::Green,
+         LampSignal::Running,
+         {},
+         500,
+         QT_TRANSLATE_NOOP("rung::model::Target",
+                           "steady: the PLC is in RUN; slow blink (0.5 s on, 0.5 s off): no "
+                           "ladder program runs")},
+        {QStringLiteral("COM1"), LampColour::Yellow, LampSignal::Device, QStringLiteral("SM0.6"), 0,
+         QT_TRANSLATE_NOOP("rung::model::Target", "lit while the port transmits a packet")},
+        {QStringLiteral("EXP1"), LampColour::Yellow, LampSignal::Device, QStringLiteral("SM0.7"), 0,
+         QT_TRANSLATE_NOOP("rung::model::Target", "lit while the port transmits a packet")},
+        {QStringLiteral("COM2"), LampColour::Yellow, LampSignal::Device, QStringLiteral("SM0.8"), 0,
+         QT_TRANSLATE_NOOP("rung::model::Target", "lit while the port transmits a packet")},
+    };
+
+    // 2.1.16: "Il display è organizzato in 8 righe, ciascuna da 21 caratteri" from DISP0;
+    // 2.1.2: SM102 the system pages 1..5, SM103 the user pages 17..32, SM104 the start page,
+    // SM105 the page shown, SM106 the page requested; 5.4: "fino a 16 pagine utente, a cui il
+    // sistema assegna i numeri da 17 a 32".
+    PanelDisplay &d = p.display;
+    d.kind = DisplayKind::Text;
+    d.charArea = QStringLiteral("DISP");
+    d.rows = 8;
+    d.columns = 21;
+    d.systemPagesDevice = QStringLiteral("SM102");
+    d.userPagesDevice = QStringLiteral("SM103");
+    d.startPageDevice = QStringLiteral("SM104");
+    d.pageShownDevice = QStringLiteral("SM105");
+    d.pageRequestDevice = QStringLiteral("SM106");
+    d.systemPages = 5;
+    d.firstUserPage = 17;
+    d.userPages = 16;
+    // The four parameter fields: SM118..SM134, SM135..SM151, SM152..SM168, SM169..SM185.
+    d.fields = {{QStringLiteral("SM118")},
+                {QStringLiteral("SM135")},
+                {QStringLiteral("SM152")},
+                {QStringLiteral("SM169")}};
+    // SM107's list (2.1.2): "se tramite il terminale si modifica la variabile VW30, si avrà
+    // ... SM107 = 1". The list in the manual's order; the serial buffers (17..22) are not
+    // shown as fields here.
+    d.areaCodes = {
+        {1, QStringLiteral("V")},          {2, QStringLiteral("SM")},
+        {3, QStringLiteral("AI")},         {4, QStringLiteral("TR")},
+        {5, QStringLiteral("AQ")},         {6, QStringLiteral("I")},
+        {7, QStringLiteral("Q")},          {8, QStringLiteral("T")},
+        {9, QStringLiteral("PT")},         {10, QStringLiteral("C")},
+        {11, QStringLiteral("PV")},        {12, QStringLiteral("VD"), true},
+        {13, QStringLiteral("SMD"), true}, {14, QStringLiteral("M")},
+        {15, QStringLiteral("EEP")},       {16, QStringLiteral("MMC")},
+        {23, QStringLiteral("DISP")},
+    };
+
+    // 2.1.2 SM110: "Bit0 Pulsante SWAP, Bit1 Pulsante UP, Bit2 Pulsante DOWN, Bit3 Pulsante SET".
+    p.keys = {
+        {QStringLiteral("SWAP"), QStringLiteral("SM110.0"), QStringLiteral("S"),
+         QT_TRANSLATE_NOOP("rung::model::Target", "scrolls through the pages the program enables")},
+        {QStringLiteral("UP"), QStringLiteral("SM110.1"), QStringLiteral("Up"),
+         QT_TRANSLATE_NOOP("rung::model::Target", "increments the field being edited")},
+        {QStringLiteral("DOWN"), QStringLiteral("SM110.2"), QStringLiteral("Down"),
+         QT_TRANSLATE_NOOP("rung::model::Target", "decrements the field being edited")},
+        {QStringLiteral("SET"), QStringLiteral("SM110.3"), QStringLiteral("Return"),
+         QT_TRANSLATE_NOOP("rung::model::Target", "edits the page's fields in turn")},
+    };
+
+    // The defaults of 2.1.2's table: SM101 2 minutes, SM102 31 (every system page), SM104 page
+    // 1, each field one digit at rows 2, 4, 6, 8, column 15.
+    p.powerOn = {
+        {QStringLiteral("SM101"), 2}, {QStringLiteral("SM102"), 31}, {QStringLiteral("SM104"), 1}};
+    const int rows[] = {2, 4, 6, 8};
+    for (int k = 0; k < 4; ++k) {
+        const int first = 118 + 17 * k;
+        p.powerOn.push_back({QStringLiteral("SM%1").arg(first + 11), 1});       // digits
+        p.powerOn.push_back({QStringLiteral("SM%1").arg(first + 14), rows[k]}); // row
+        p.powerOn.push_back({QStringLiteral("SM%1").arg(first + 15), 15});      // column
+    }
+}
+
+} // namespace rung::model::detail

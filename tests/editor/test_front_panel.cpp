@@ -1,0 +1,209 @@
+// Issue 30: the PLC's front panel in the IDE, drawn from a real simulation (SimulatorSession)
+// and worked with the mouse and the keyboard as a user would.
+
+#include "app/gui/front_panel_controller.h"
+#include "app/gui/simulation_controller.h"
+#include "editor/front_panel.h"
+#include "monitor_fixture.h"
+#include "tests/editor/window_fixture.h"
+#include "tests/targets.h"
+
+#include <QApplication>
+#include <QDockWidget>
+
+#include <QDial>
+#include <QSpinBox>
+#include <QTest>
+#include <QToolButton>
+
+using namespace rung;
+using namespace rung::test;
+
+namespace {
+
+struct PanelFixture : MonitorFixture {
+    editor::FrontPanel panel;
+    void start(const model::Target &target, const QString &modelName, const char *listing) {
+        MonitorFixture::start(target, modelName, listing);
+        panel.setPlc(&document.target(), modelName);
+        panel.setMonitorSource(session.get());
+        panel.resize(600, 500);
+        panel.show();
+    }
+    std::int32_t value(const char *device) const { return session->snapshot()->value(at(device)); }
+    bool bit(const char *device) const { return session->snapshot()->bit(at(device)); }
+};
+
+} // namespace
+
+// The Vigor M/VB/VH communication manual's display stub (B-3): "MOV K3 D9080 Set the display
+// screen to display mode 3 (displays a 4-digits numeric value)", D9081 naming the register
+// shown; the program moves 1234 into that register and the panel shows it.
+TEST(FrontPanelView, VigorDisplayShowsTheRegisterTheProgramNamesInD9081) {
+    PanelFixture f;
+    f.start(rung::testing::vigor(), QStringLiteral("VB"),
+            "LD M9002\nMOV K3 D9080\nMOV K10 D9081\nLD M9000\nMOV K1234 D10\nEND\n");
+    f.scan();
+    EXPECT_EQ(f.panel.view().digitsText, QStringLiteral("1234"));
+    EXPECT_EQ(f.panel.display()->text(), QStringLiteral("1234"));
+    EXPECT_TRUE(f.panel.display()->isVisible());
+    EXPECT_TRUE(f.panel.hint().isEmpty());
+    EXPECT_EQ(f.panel.lamp(QStringLiteral("RUN"))->isLit(), true);
+    EXPECT_EQ(f.panel.lamp(QStringLiteral("ERROR"))->isLit(), false);
+    // The display's size is what its digits need: nothing clipped.
+    EXPECT_GE(f.panel.display()->width(), f.panel.display()->sizeHint().width());
+}
+
+// "VRRD K1 D0 Read the value of VR1, and store it to D0": the number typed into VR1's box is
+// what VRRD reads, and mode 3 shows it; the knob follows.
+TEST(FrontPanelView, VigorVrKnobIsWrittenAndReadBackByVrrd) {
+    PanelFixture f;
+    f.start(rung::testing::vigor(), QStringLiteral("VB"),
+            "LD M9002\nMOV K3 D9080\nMOV K1 D9081\nLD M9000\nVRRD K1 D1\nEND\n");
+    f.scan();
+    QSpinBox *number = f.panel.knobNumber(QStringLiteral("VR1"));
+    QDial *dial = f.panel.knob(QStringLiteral("VR1"));
+    ASSERT_NE(number, nullptr);
+    ASSERT_NE(dial, nullptr);
+    EXPECT_EQ(number->maximum(), 255);
+    // Typed as a user types it: select, digits, Enter.
+    number->setFocus();
+    number->selectAll();
+    QTest::keyClicks(number, QStringLiteral("200"));
+    QTest::keyClick(number, Qt::Key_Return);
+    f.settle();
+    f.scan();
+    EXPECT_EQ(f.value("D1"), 200);
+    EXPECT_EQ(f.panel.view().digitsText, QStringLiteral(" 200"));
+    EXPECT_EQ(dial->value(), 200);
+    // The knob turned with the keyboard (PageUp steps the dial).
+    dial->setFocus();
+    QTest::keyClick(dial, Qt::Key_End);
+    f.settle();
+    f.scan();
+    EXPECT_EQ(f.value("D1"), 255);
+    EXPECT_EQ(f.panel.display()->text(), QStringLiteral(" 255"));
+}
+
+// PL110 manual 2.1.16 / 5.4: the program writes its text into DISP from row 3 (DISP42; MOVTXT is
+// not simulated, so here one character a MOV) and enables user page 17 as its start page: the
+// OLED shows it. SWAP (the mouse) steps to the next page enabled; "S" (the keyboard) too.
+TEST(FrontPanelView, Pl110PageShowsTheProgramsTextAndSwapTurnsThePage) {
+    PanelFixture f;
+    f.start(rung::testing::pl110(), QStringLiteral("PL110-2A"),
+            "LD SM0.1\nSBIT SMW103 0\nLD SM0.1\nMOV 17 SM104\n"
+            "LD SM0.0\nMOV 84 DISP42\nLD SM0.0\nMOV 69 DISP43\nLD SM0.0\nMOV 83 DISP44\n"
+            "LD SM0.0\nMOV 84 DISP45\nLD SM0.0\nMOV 79 DISP46\n"
+            "LD SM110.0\nOUT Q1\nEND\n");
+    f.scan();
+    f.scan();
+    ASSERT_EQ(f.panel.view().page, 17);
+    const QStringList rows = f.panel.display()->text().split(QLatin1Char('\n'));
+    ASSERT_EQ(rows.size(), 8);
+    EXPECT_EQ(rows[2], QStringLiteral("TESTO                "));
+    QToolButton *swap = f.panel.key(QStringLiteral("SWAP"));
+    ASSERT_NE(swap, nullptr);
+    QTest::mousePress(swap, Qt::LeftButton);
+    f.settle();
+    f.scan();
+    EXPECT_TRUE(f.bit("SM110.0"));
+    EXPECT_TRUE(f.bit("Q1")) << "the program sees the key held";
+    EXPECT_EQ(f.value("SM105"), 1) << "after page 17 the circle starts again at page 1";
+    QTest::mouseRelease(swap, Qt::LeftButton);
+    f.settle();
+    f.scan();
+    EXPECT_FALSE(f.bit("SM110.0"));
+    EXPECT_TRUE(f.panel.display()->text().startsWith(QStringLiteral("I   "))) << "page 1: I/O";
+    // The keyboard: S is SWAP while the panel has the focus.
+    f.panel.setFocus();
+    QTest::keyPress(&f.panel, Qt::Key_S);
+    f.settle();
+    f.scan();
+    EXPECT_EQ(f.value("SM105"), 2);
+    QTest::keyRelease(&f.panel, Qt::Key_S);
+    f.settle();
+    f.scan();
+    EXPECT_FALSE(f.bit("SM110.0"));
+}
+
+// PL110 manual 1.2: "Lampeggio lento - (0,5s on /0,5 s off)" while no ladder program runs (the
+// simulation stopped); "Acceso fisso" in RUN.
+TEST(FrontPanelView, Pl110RunLampBlinksAtTheTablesRateUntilTheProgramRuns) {
+    PanelFixture f;
+    f.start(rung::testing::pl110(), QStringLiteral("PL110-2A"), "LD I1\nOUT Q1\nEND\n");
+    editor::PanelLamp *run = f.panel.lamp(QStringLiteral("RUN"));
+    ASSERT_NE(run, nullptr);
+    ASSERT_EQ(f.session->runState(), model::MonitorSource::RunState::Stopped);
+    EXPECT_EQ(run->blinkMs(), 500);
+    EXPECT_TRUE(eventually([&] { return run->isLit(); }));
+    QElapsedTimer clock;
+    clock.start();
+    EXPECT_TRUE(eventually([&] { return !run->isLit(); }));
+    EXPECT_TRUE(eventually([&] { return run->isLit(); }));
+    // A whole period passed between two lightings: not a flicker.
+    EXPECT_GE(clock.elapsed(), 400);
+    f.scan();
+    EXPECT_EQ(run->blinkMs(), 0);
+    EXPECT_TRUE(run->isLit());
+}
+
+// No source, or no panel: a sentence, not an empty dock.
+TEST(FrontPanelView, WithoutASimulationTheDockSaysHowToStart) {
+    editor::FrontPanel panel;
+    panel.setPlc(&rung::testing::cpm1(), QStringLiteral("CPM1-20CDR"));
+    panel.show();
+    EXPECT_TRUE(panel.hint().contains(QStringLiteral("F10"))) << panel.hint().toStdString();
+    ASSERT_NE(panel.knob(QStringLiteral("0")), nullptr);
+    EXPECT_FALSE(panel.knob(QStringLiteral("0"))->isEnabled());
+}
+
+// Omron CPM1 guide 3.4: the analog setting written as BCD into channel 250.
+TEST(FrontPanelView, Cpm1AnalogSettingWritesBcd) {
+    PanelFixture f;
+    f.start(rung::testing::cpm1(), QStringLiteral("CPM1-20CDR"),
+            "LD 253.13\nMOV(21) 250 DM0000\nEND\n");
+    f.scan();
+    QSpinBox *number = f.panel.knobNumber(QStringLiteral("0"));
+    ASSERT_NE(number, nullptr);
+    number->setValue(150);
+    f.settle();
+    f.scan();
+    EXPECT_EQ(f.value("DM0000"), 0x0150);
+    EXPECT_TRUE(f.panel.lamp(QStringLiteral("POWER"))->isLit());
+}
+
+// The window: View > Front Panel, fed by the simulation as the other monitoring docks are (F10
+// shows it); showSource points it at any source of any PLC (a network station's) and
+// showSimulation back.
+struct FrontPanelDock : test::WindowFixture {};
+
+TEST_F(FrontPanelDock, FollowsTheSimulationAndAnySourceItIsPointedAt) {
+    FrontPanelDock &f = *this;
+    f.load("LD M9002\nMOV K3 D9080\nMOV K0 D9081\nLD M9000\nMOV K42 D0\nEND\n");
+    auto *dock = f.window.findChild<QDockWidget *>(QStringLiteral("frontPanelDock"));
+    ASSERT_NE(dock, nullptr);
+    EXPECT_EQ(dock->windowTitle(), QStringLiteral("Front Panel"));
+    editor::FrontPanel *panel = f.window.frontPanel()->panel();
+    EXPECT_EQ(panel->monitorSource(), nullptr);
+    f.window.show();
+    QApplication::setActiveWindow(&f.window);
+    ASSERT_TRUE(QTest::qWaitForWindowActive(&f.window));
+    f.view->setFocus();
+    QTest::keyClick(f.view, Qt::Key_F10);
+    ASSERT_NE(f.window.simulation()->session(), nullptr);
+    EXPECT_EQ(panel->monitorSource(), f.window.simulation()->session());
+    EXPECT_FALSE(dock->isHidden()) << "the first simulation opens it";
+    EXPECT_TRUE(eventually([&] { return panel->view().digitsText == QStringLiteral("  42"); }))
+        << panel->view().digitsText.toStdString();
+    // A station of another PLC: its table and model.
+    PanelFixture station;
+    station.start(rung::testing::pl110(), QStringLiteral("PL110-2A"), "LD I1\nOUT Q1\nEND\n");
+    f.window.frontPanel()->showSource(station.session.get(), rung::testing::pl110(),
+                                      QStringLiteral("PL110-2A"));
+    EXPECT_EQ(panel->monitorSource(), station.session.get());
+    EXPECT_NE(panel->key(QStringLiteral("SWAP")), nullptr);
+    f.window.frontPanel()->showSimulation();
+    EXPECT_EQ(panel->monitorSource(), f.window.simulation()->session());
+    EXPECT_EQ(panel->key(QStringLiteral("SWAP")), nullptr);
+    EXPECT_NE(panel->knob(QStringLiteral("VR1")), nullptr);
+}

@@ -1,0 +1,294 @@
+// Issue 30: the PLC's front panel as table data (Target::panel) and what it shows for a snapshot
+// (model::panelView), with the manuals' examples.
+
+#include "model/image/panel_view.h"
+#include "model/target/address.h"
+#include "tests/targets.h"
+
+#include <gtest/gtest.h>
+
+using namespace rung;
+using rung::model::MonitorSource;
+
+namespace {
+
+// A memory image of one target whose words the test sets by their names.
+struct PanelImage {
+    explicit PanelImage(const model::Target &t)
+        : target(t) {
+        snapshot.layout = std::make_shared<model::MemoryLayout>(t);
+        snapshot.words.assign(static_cast<std::size_t>(snapshot.layout->wordCount()), 0);
+    }
+    model::Address at(const char *name) const {
+        const auto parsed = model::parseAddress(target, QString::fromLatin1(name));
+        return std::get<model::Address>(parsed);
+    }
+    void set(const char *name, std::int32_t value) {
+        const model::Address a = at(name);
+        if (a.bit >= 0 || target.area(a.area).kind == model::AreaKind::Bit) {
+            const model::BitRef r = snapshot.layout->bit(a);
+            auto &w = snapshot.words[static_cast<std::size_t>(r.word)];
+            w = value ? (w | static_cast<std::int32_t>(r.mask))
+                      : (w & ~static_cast<std::int32_t>(r.mask));
+            return;
+        }
+        snapshot.words[static_cast<std::size_t>(snapshot.layout->word(a))] = value;
+    }
+    // Text into a byte area from `first`, one character a word, as MOVTXT's
+    // UN_CARATTERE_PER_WORD stores it (PL110 manual 4.2.10).
+    void text(const char *area, int first, const char *text) {
+        for (int k = 0; text[k]; ++k)
+            set(QStringLiteral("%1%2").arg(QLatin1String(area)).arg(first + k).toLatin1(), text[k]);
+    }
+    void set(const QByteArray &name, std::int32_t value) { set(name.constData(), value); }
+    model::PanelView view(MonitorSource::RunState state = MonitorSource::RunState::Running,
+                          const char *modelName = nullptr, qint64 nowMs = 0,
+                          bool fault = false) const {
+        const model::ModelVariant *m =
+            modelName ? target.model(QString::fromLatin1(modelName)) : nullptr;
+        return model::panelView(target, m, {&snapshot, state, fault, nowMs});
+    }
+    const model::Target &target;
+    model::Snapshot snapshot;
+};
+
+const model::PanelLampView *lamp(const model::PanelView &v, const char *label) {
+    for (const model::PanelLampView &l : v.lamps)
+        if (l.label == QLatin1String(label))
+            return &l;
+    return nullptr;
+}
+
+} // namespace
+
+// Vigor M/VB/VH communication manual, B-3 (Computer Link example): "MOV K3 D9080 Set the display
+// screen to display mode 3 (displays a 4-digits numeric value), and show the value of D1 onto
+// the screen. MOV K1 D9081".
+TEST(FrontPanel, VigorModeThreeShowsTheRegisterD9081Names) {
+    PanelImage image(rung::testing::vigor());
+    image.set("D9080", 3);
+    image.set("D9081", 1);
+    image.set("D1", 123);
+    model::PanelView v = image.view();
+    EXPECT_EQ(v.display, model::DisplayKind::Digits);
+    EXPECT_EQ(v.mode, 3);
+    EXPECT_EQ(v.digitsText, QStringLiteral(" 123"));
+    EXPECT_TRUE(v.fits);
+    EXPECT_TRUE(v.note.isEmpty());
+    // What an online source is to poll for the panel: the mode, the register's number and the
+    // register it names.
+    for (const char *device : {"D9080", "D9081", "D1", "VR1", "VR2"})
+        EXPECT_NE(std::find(v.devices.begin(), v.devices.end(), image.at(device)), v.devices.end())
+            << device;
+    image.set("D1", 9999);
+    EXPECT_EQ(image.view().digitsText, QStringLiteral("9999"));
+    // Beyond four digits the manual does not say what the PLC shows: the value, plainly.
+    image.set("D1", 12345);
+    v = image.view();
+    EXPECT_FALSE(v.fits);
+    EXPECT_EQ(v.digitsText, QStringLiteral("12345"));
+}
+
+// B-3-4 (CPU Link example): "MOV K4 D9080 Set the display screen to display mode 4 (displays two
+// 2-digits numeric values) Show the value of D10 on the right side of the screen, and show the
+// value of D11 on the left side of the screen. MOV K10 D9081".
+TEST(FrontPanel, VigorModeFourShowsTwoValuesTheNamedOneOnTheRight) {
+    PanelImage image(rung::testing::vigor());
+    image.set("D9080", 4);
+    image.set("D9081", 10);
+    image.set("D10", 7);
+    image.set("D11", 42);
+    const model::PanelView v = image.view();
+    EXPECT_EQ(v.digitsText, QStringLiteral("42 7"));
+    EXPECT_TRUE(v.fits);
+}
+
+// A mode the manual does not describe (0 at power-on) shows nothing and says so.
+TEST(FrontPanel, VigorUndescribedModeIsSaidNotInvented) {
+    PanelImage image(rung::testing::vigor());
+    const model::PanelView v = image.view();
+    EXPECT_TRUE(v.digitsText.isEmpty());
+    EXPECT_TRUE(v.note.contains(QStringLiteral("Display mode 0"))) << v.note.toStdString();
+    EXPECT_TRUE(v.note.contains(QStringLiteral("mode 3"))) << v.note.toStdString();
+}
+
+// "VRRD K1 D0 Read the value of VR1": the knobs VR1 and VR2, 0..255, write their VR word.
+TEST(FrontPanel, VigorKnobsAreTheVariableResistors) {
+    PanelImage image(rung::testing::vigor());
+    image.set("VR1", 200);
+    const model::PanelView v = image.view();
+    ASSERT_EQ(v.knobs.size(), 2u);
+    EXPECT_EQ(v.knobs[0].label, QStringLiteral("VR1"));
+    EXPECT_EQ(v.knobs[0].value, 200);
+    EXPECT_EQ(v.knobs[0].highest, 255);
+    EXPECT_EQ(v.knobs[0].address, image.at("VR1"));
+    EXPECT_EQ(model::panelKnobWord(v.knobs[1], 300), 255);
+    ASSERT_NE(lamp(v, "RUN"), nullptr);
+    EXPECT_TRUE(lamp(v, "RUN")->lit);
+    EXPECT_FALSE(lamp(v, "ERROR")->lit);
+    const model::PanelView fault =
+        image.view(MonitorSource::RunState::Paused, nullptr, 0, /*fault=*/true);
+    EXPECT_FALSE(lamp(fault, "RUN")->lit);
+    EXPECT_TRUE(lamp(fault, "ERROR")->lit);
+}
+
+// PL110 manual 1.2: "Led verde RUN: Acceso fisso -> il PLC è in RUN ... Lampeggio lento -
+// (0,5s on /0,5 s off) il PL110 è usato come modulo di IN/OUT senza l'applicativo ladder".
+TEST(FrontPanel, Pl110RunLampBlinksSlowlyWhenNoLadderRuns) {
+    PanelImage image(rung::testing::pl110());
+    const auto run = [&](MonitorSource::RunState state, qint64 ms) {
+        const model::PanelView v = image.view(state, nullptr, ms);
+        return *lamp(v, "RUN");
+    };
+    using R = MonitorSource::RunState;
+    EXPECT_TRUE(run(R::Running, 0).lit);
+    EXPECT_EQ(run(R::Running, 0).blinkMs, 0);
+    EXPECT_EQ(run(R::Stopped, 0).blinkMs, 500);
+    EXPECT_TRUE(run(R::Stopped, 0).lit);
+    EXPECT_TRUE(run(R::Stopped, 499).lit);
+    EXPECT_FALSE(run(R::Stopped, 500).lit);
+    EXPECT_FALSE(run(R::Stopped, 999).lit);
+    EXPECT_TRUE(run(R::Stopped, 1000).lit);
+    EXPECT_FALSE(run(R::Offline, 0).lit);
+}
+
+// "Led gialli COM1 ed EXP1: Acceso - alla trasmissione di ogni pacchetto di dati": lit while the
+// port's transmitting marker is.
+TEST(FrontPanel, Pl110PortLampsFollowTheTransmittingMarkers) {
+    PanelImage image(rung::testing::pl110());
+    image.set("SM0.7", 1);
+    const model::PanelView v = image.view();
+    EXPECT_FALSE(lamp(v, "COM1")->lit);
+    EXPECT_TRUE(lamp(v, "EXP1")->lit);
+    EXPECT_FALSE(lamp(v, "COM2")->lit);
+}
+
+// 2.1.16: "Per scrivere "TESTO DISPLAY" nella riga 3 del display per esempio ... MOVTXT
+// (DISP42, 1 Char per word) "TESTO DISPLAY"": on a user page (SM105 17..32) the rows are DISP.
+TEST(FrontPanel, Pl110UserPageShowsTheDisplayCharacters) {
+    PanelImage image(rung::testing::pl110());
+    image.set("SM105", 17);
+    image.text("DISP", 0, "PAGINA UTENTE N1");
+    image.text("DISP", 42, "TESTO DISPLAY");
+    const model::PanelView v = image.view(MonitorSource::RunState::Running, "PL110-2A");
+    ASSERT_EQ(v.display, model::DisplayKind::Text);
+    ASSERT_EQ(v.lines.size(), 8);
+    for (const QString &line : v.lines)
+        EXPECT_EQ(line.size(), 21);
+    EXPECT_EQ(v.page, 17);
+    EXPECT_EQ(v.lines[0], QStringLiteral("PAGINA UTENTE N1     "));
+    EXPECT_EQ(v.lines[1].trimmed(), QString());
+    EXPECT_EQ(v.lines[2], QStringLiteral("TESTO DISPLAY        "));
+}
+
+// 5.4: "IMPOSTA AI1 COME PRIMO CAMPO IN VISUALIZZAZIONE, 16 BIT CON SEGNO, 7 CIFRE TOTALI
+// 1 DECIMALE, VISUALIZZA IN RIGA 4 COLONNA 10" -- SM118 1 (Visualizzato), SM119 3 (area AI in
+// SM107's list), SM120 / SM121 the number 1, SM128 0 (16 bit con segno), SM129 7, SM130 1,
+// SM131 0 (spazi), SM132 4, SM133 10.
+TEST(FrontPanel, Pl110FieldIsFormattedWhereThePageSays) {
+    PanelImage image(rung::testing::pl110());
+    image.set("SM105", 17);
+    const std::pair<const char *, int> field[] = {
+        {"SM118", 1}, {"SM119", 3}, {"SM120", 0}, {"SM121", 1}, {"SM128", 0},
+        {"SM129", 7}, {"SM130", 1}, {"SM131", 0}, {"SM132", 4}, {"SM133", 10}};
+    for (const auto &[name, value] : field)
+        image.set(name, value);
+    image.set("AI1", 250);
+    model::PanelView v = image.view(MonitorSource::RunState::Running, "PL110-2A");
+    EXPECT_EQ(v.lines[3], QStringLiteral("             25.0    "));
+    ASSERT_EQ(v.fields.size(), 1u);
+    EXPECT_EQ(v.fields[0].row, 3);
+    EXPECT_EQ(v.fields[0].column, 9);
+    EXPECT_EQ(v.fields[0].length, 8);
+    EXPECT_FALSE(v.fields[0].editable);
+    image.set("SM118", 0); // "0 - Disabilitato"
+    EXPECT_TRUE(image.view(MonitorSource::RunState::Running, "PL110-2A").fields.empty());
+}
+
+TEST(FrontPanel, Pl110FieldFormats) {
+    EXPECT_EQ(model::formatPanelField(250, 7, 1, false), QStringLiteral("    25.0"));
+    EXPECT_EQ(model::formatPanelField(250, 7, 1, true), QStringLiteral("000025.0"));
+    EXPECT_EQ(model::formatPanelField(-5, 4, 0, false), QStringLiteral("  -5"));
+    EXPECT_EQ(model::formatPanelField(-5, 4, 0, true), QStringLiteral("-005"));
+    EXPECT_EQ(model::formatPanelField(5, 3, 2, false), QStringLiteral("0.05"));
+    EXPECT_EQ(model::formatPanelField(123456, 3, 0, false), QStringLiteral("123456"));
+}
+
+// 5.3: page 1 "viene visualizzato lo stato degli ingressi e uscite digitali ... con un
+// quadratino pieno"; page 2 the analog inputs.
+TEST(FrontPanel, Pl110SystemPagesShowTheTerminals) {
+    PanelImage image(rung::testing::pl110());
+    image.set("SM105", 1);
+    image.set("I2", 1);
+    image.set("Q8", 1);
+    model::PanelView v = image.view(MonitorSource::RunState::Running, "PL110-2A");
+    EXPECT_EQ(v.lines[0].trimmed(),
+              QStringLiteral("I   \u25a1\u25a0\u25a1\u25a1\u25a1\u25a1\u25a1\u25a1"));
+    EXPECT_EQ(v.lines[1].trimmed(),
+              QStringLiteral("Q   \u25a1\u25a1\u25a1\u25a1\u25a1\u25a1\u25a1\u25a0"));
+    image.set("SM105", 2);
+    image.set("AI3", 1023);
+    v = image.view(MonitorSource::RunState::Running, "PL110-2A");
+    EXPECT_EQ(v.lines[2].trimmed(), QStringLiteral("AI3     1023"));
+}
+
+// 1.2: "Terminale con display OLED e tasti. (solo modello PL110-2A)": the PL110-1A has the
+// lamps only.
+TEST(FrontPanel, Pl110TerminalOnlyOnThe2A) {
+    PanelImage image(rung::testing::pl110());
+    const model::PanelView one = image.view(MonitorSource::RunState::Running, "PL110-1A");
+    EXPECT_EQ(one.display, model::DisplayKind::None);
+    EXPECT_TRUE(one.keys.empty());
+    EXPECT_EQ(one.lamps.size(), 4u);
+    image.set("SM110.3", 1);
+    const model::PanelView two = image.view(MonitorSource::RunState::Running, "PL110-2A");
+    ASSERT_EQ(two.keys.size(), 4u);
+    EXPECT_EQ(two.keys[0].label, QStringLiteral("SWAP"));
+    EXPECT_EQ(two.keys[3].label, QStringLiteral("SET"));
+    EXPECT_TRUE(two.keys[3].pressed);
+    EXPECT_FALSE(two.keys[0].pressed);
+}
+
+// Omron CPM1 guide 3.4: "Mindkét potenciométer a hozzájuk tartozó csatornán BCD 0000 - 0200
+// között állítja az adott csatorna értékét"; 2.1: the POWER, RUN, ERROR/ALARM and COMM lamps.
+TEST(FrontPanel, Cpm1AnalogSettingsAreBcdAndItsLampsAreTheGuides) {
+    PanelImage image(rung::testing::cpm1());
+    image.set("250", 0x0150);
+    const model::PanelView v = image.view();
+    ASSERT_EQ(v.knobs.size(), 2u);
+    EXPECT_EQ(v.knobs[0].value, 150);
+    EXPECT_EQ(model::panelKnobWord(v.knobs[0], 150), 0x0150);
+    EXPECT_EQ(model::panelKnobWord(v.knobs[1], 250), 0x0200);
+    QStringList labels;
+    for (const model::PanelLampView &l : v.lamps)
+        labels << l.label;
+    EXPECT_EQ(labels, (QStringList{"POWER", "RUN", "ERROR/ALARM", "COMM"}));
+    EXPECT_TRUE(lamp(v, "POWER")->lit);
+    const model::PanelView off = image.view(MonitorSource::RunState::Offline);
+    EXPECT_FALSE(lamp(off, "POWER")->lit);
+    EXPECT_EQ(v.display, model::DisplayKind::None);
+}
+
+// VPC user's manual, V.a: "The upper part of the display is for the outputs, shown by 16 per
+// line. The lower part of the display is for the inputs ... A filled field represents the state
+// ON".
+TEST(FrontPanel, VpcLcdShowsOutputsThenInputsSixteenALine) {
+    PanelImage image(rung::testing::vpc());
+    image.set("o00", 1);
+    image.set("i01", 1);
+    const model::PanelView v = image.view(MonitorSource::RunState::Running, "VPC2416");
+    ASSERT_EQ(v.display, model::DisplayKind::IoLines);
+    ASSERT_GE(v.lines.size(), 2);
+    EXPECT_EQ(v.lineLabels.first(), QStringLiteral("o00"));
+    EXPECT_TRUE(v.lines.first().startsWith(QStringLiteral("\u25a0\u25a1")));
+    const qsizetype firstInputs = v.lineLabels.indexOf(QStringLiteral("i00"));
+    ASSERT_GT(firstInputs, 0);
+    EXPECT_TRUE(v.lines[firstInputs].startsWith(QStringLiteral("\u25a1\u25a0")));
+    for (const QString &line : v.lines)
+        EXPECT_LE(line.size(), 16);
+}
+
+TEST(FrontPanel, EveryFamilyHasAPanel) {
+    for (const model::Family f : model::Target::families())
+        EXPECT_TRUE(model::hasFrontPanel(model::Target::get(f), nullptr));
+}
