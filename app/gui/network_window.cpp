@@ -10,6 +10,7 @@
 #include "app/gui/simulation_controller.h"
 
 #include "editor/document.h"
+#include "editor/front_panel.h"
 #include "editor/io_panel.h"
 #include "editor/keep_typed_delegate.h"
 #include "editor/ladder_view.h"
@@ -65,6 +66,7 @@ NetworkWindow::~NetworkWindow() {
         v.ladder->setMonitorSource(nullptr);
         v.io->setMonitorSource(nullptr);
     }
+    m_panel->setMonitorSource(nullptr);
     m_watch->setSession(nullptr);
     m_chart->setSession(nullptr);
 }
@@ -112,6 +114,18 @@ void NetworkWindow::buildWindow() {
     m_ioDock->setObjectName(QStringLiteral("networkIoDock"));
     m_ioDock->setWidget(m_ioPanels);
     addDockWidget(Qt::LeftDockWidgetArea, m_ioDock);
+
+    // The selected station's front panel, as its manual draws it (editor/front_panel.h).
+    m_panel = new editor::FrontPanel(this);
+    m_panel->setObjectName(QStringLiteral("networkFrontPanel"));
+    connect(m_panel, &editor::FrontPanel::message, this,
+            [this](const QString &text) { statusBar()->showMessage(text, 10000); });
+    m_panelDock = new QDockWidget(this);
+    m_panelDock->setObjectName(QStringLiteral("networkFrontPanelDock"));
+    m_panelDock->setWidget(m_panel);
+    addDockWidget(Qt::LeftDockWidgetArea, m_panelDock);
+    tabifyDockWidget(m_ioDock, m_panelDock);
+    m_ioDock->raise();
 
     m_watch = new NetworkWatchModel(this);
     auto *watchBox = new QWidget(this);
@@ -317,6 +331,7 @@ void NetworkWindow::buildMenus() {
     QMenu *view = menuBar()->addMenu(tr("&View"));
     view->addAction(m_stationsDock->toggleViewAction());
     view->addAction(m_ioDock->toggleViewAction());
+    view->addAction(m_panelDock->toggleViewAction());
     view->addAction(m_watchDock->toggleViewAction());
     view->addAction(m_chartDock->toggleViewAction());
     view->addAction(m_trafficDock->toggleViewAction());
@@ -398,6 +413,7 @@ void NetworkWindow::buildFaultsMenu() {
 void NetworkWindow::retranslate() {
     m_stationsDock->setWindowTitle(tr("Stations"));
     m_ioDock->setWindowTitle(tr("Inputs and Outputs"));
+    m_panelDock->setWindowTitle(tr("Front Panel"));
     m_watchDock->setWindowTitle(tr("Network Watch"));
     m_watchLine->setPlaceholderText(tr("Station/device, e.g. s5/D10"));
     if (auto *add = findChild<QPushButton *>(QStringLiteral("networkWatchAdd")))
@@ -509,6 +525,7 @@ bool NetworkWindow::newNetwork(QString *) {
 }
 
 void NetworkWindow::dropSession() {
+    m_panel->setMonitorSource(nullptr);
     for (StationView &v : m_views) {
         v.ladder->setMonitorSource(nullptr);
         v.io->setMonitorSource(nullptr);
@@ -668,6 +685,10 @@ bool NetworkWindow::selectStation(const QString &name) {
             const bool changed = m_ladders->currentIndex() != int(i);
             m_ladders->setCurrentIndex(int(i));
             m_ioPanels->setCurrentIndex(int(i));
+            network::StationSource *source = m_views[i].source;
+            m_panel->setPlc(&source->target(),
+                            source->model() ? source->model()->name : QString());
+            m_panel->setMonitorSource(source);
             const QSignalBlocker selector(m_selector), list(m_stationList);
             m_selector->setCurrentIndex(int(i));
             m_stationList->setCurrentRow(int(i));

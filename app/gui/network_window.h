@@ -24,6 +24,7 @@ class QLineEdit;
 
 namespace rung::editor {
 class Document;
+class FrontPanel;
 class IoPanel;
 class LadderView;
 } // namespace rung::editor
@@ -70,6 +71,7 @@ public:
     NetworkWatchModel *watchModel() const { return m_watch; }
     NetworkChart *chart() const { return m_chart; }
     NetworkTrafficView *traffic() const { return m_traffic; }
+    editor::FrontPanel *frontPanel() const { return m_panel; }
     // Adds "STATION/DEVICE" to the watch table; false with the reason in the status bar.
     bool watch(const QString &device);
     // The status line: run state and virtual time.
@@ -128,6 +130,7 @@ private:
     NetworkWatchModel *m_watch = nullptr;
     NetworkChart *m_chart = nullptr;
     NetworkTrafficView *m_traffic = nullptr;
+    editor::FrontPanel *m_panel = nullptr;
     QAction *m_chartWatched = nullptr;
     QLabel *m_status = nullptr;
     QLabel *m_selectorLabel = nullptr;
@@ -147,6 +150,7 @@ private:
     class QDockWidget *m_ioDock = nullptr;
     class QDockWidget *m_chartDock = nullptr;
     class QDockWidget *m_trafficDock = nullptr;
+    class QDockWidget *m_panelDock = nullptr;
 };
 
 } // namespace rung::app
