@@ -5,6 +5,8 @@
 #include <QCoreApplication>
 #include <QStringList>
 
+#include <algorithm>
+
 namespace rung::app {
 
 namespace {
@@ -43,7 +45,6 @@ constexpr ExampleTitle kTitles[] = {
     {"vb-1com", QT_TRANSLATE_NOOP("rung::app::ExampleTitles", "VB-1COM module (FROM / TO)")},
     {"pl110-exp", QT_TRANSLATE_NOOP("rung::app::ExampleTitles", "PL110 EXP1 MODBUS master")},
     {"pl110-free-port", QT_TRANSLATE_NOOP("rung::app::ExampleTitles", "PL110 free-port (SEND)")},
-    {"pl110-vigor", QT_TRANSLATE_NOOP("rung::app::ExampleTitles", "A PL110 polling a Vigor")},
 };
 
 } // namespace
@@ -55,6 +56,14 @@ QString exampleTitle(const model::Target *target, const QString &baseName) {
     QStringList words = baseName.split(QLatin1Char('-'), Qt::SkipEmptyParts);
     if (words.isEmpty())
         return baseName;
+    // A network's name of the families it joins ("pl110-vigor"): their names as the tables
+    // write them ("PL110 / Vigor").
+    if (std::all_of(words.begin(), words.end(),
+                    [](const QString &w) { return model::Target::byId(w) != nullptr; })) {
+        for (QString &w : words)
+            w = model::Target::byId(w)->displayName;
+        return words.join(QStringLiteral(" / "));
+    }
     int mnemonics = 0;
     for (QString &w : words)
         if (target && target->findInstruction(w.toUpper())) {

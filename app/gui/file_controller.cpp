@@ -71,7 +71,7 @@ void FileController::addActions(QMenu *file, QToolBar *bar) {
     QAction *newAction = file->addAction(editor::toolIcon(editor::ToolIcon::NewFile),
                                          tr("&New Project..."), this, &FileController::fileNew);
     newAction->setShortcut(QKeySequence::New);
-    QAction *newNetwork = file->addAction(tr("New Ne&twork"), this, [this] {
+    QAction *newNetwork = file->addAction(tr("New Net&work"), this, [this] {
         QString error;
         if (m_networkOpener && !m_networkOpener(QString(), &error))
             statusBar()->showMessage(error, 10000);

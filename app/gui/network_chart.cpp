@@ -1,5 +1,6 @@
 #include "app/gui/network_chart.h"
 
+#include "app/gui/network_watch_model.h"
 #include "app/gui/simulation_controller.h"
 #include "editor/timing_canvas.h"
 #include "model/target/address.h"
@@ -63,9 +64,10 @@ NetworkChart::NetworkChart(QWidget *parent)
 }
 
 void NetworkChart::retranslate() {
-    m_add->setPlaceholderText(tr("Add station/device, e.g. s5/D10"));
+    const QString example = exampleStationDevice(m_session);
+    m_add->setPlaceholderText(tr("Add station/device, e.g. %1").arg(example));
     m_follow->setText(tr("Follow"));
-    m_canvas->setEmptyText(tr("Type a station's device above (s5/D10) to draw it"));
+    m_canvas->setEmptyText(tr("Type a station's device above (%1) to draw it").arg(example));
 }
 
 void NetworkChart::changeEvent(QEvent *event) {
@@ -83,6 +85,7 @@ void NetworkChart::setSession(network::NetworkSession *session) {
     m_canvas->setChannels(&m_channels);
     if (session)
         connect(session, &network::NetworkSession::clockChanged, this, &NetworkChart::refresh);
+    retranslate();
     refresh();
 }
 
@@ -108,8 +111,9 @@ bool NetworkChart::addDevice(const QString &text) {
         QStringList names;
         for (network::StationSource *s : m_session->stations())
             names << s->stationName();
-        emit message(tr("%1: write STATION/DEVICE, e.g. %2/D0 (stations: %3)")
-                         .arg(trimmed, names.value(0), names.join(QStringLiteral(", "))));
+        emit message(
+            tr("%1: write STATION/DEVICE, e.g. %2 (stations: %3)")
+                .arg(trimmed, exampleStationDevice(m_session), names.join(QStringLiteral(", "))));
         return false;
     }
     const auto parsed =

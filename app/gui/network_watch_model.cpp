@@ -1,9 +1,17 @@
 #include "app/gui/network_watch_model.h"
 
 #include "model/target/address.h"
+#include "model/target/target_lists.h"
 #include "network/network_session.h"
 
 namespace rung::app {
+
+QString exampleStationDevice(const network::NetworkSession *session) {
+    if (!session || session->stations().empty())
+        return QStringLiteral("STATION/DEVICE");
+    const network::StationSource *s = session->stations().front();
+    return s->stationName() + QLatin1Char('/') + model::exampleDevice(s->target());
+}
 
 NetworkWatchModel::NetworkWatchModel(QObject *parent)
     : QAbstractTableModel(parent) {
@@ -42,8 +50,9 @@ bool NetworkWatchModel::addDevice(const QString &text, QString *error) {
         names << s->stationName();
     if (slash <= 0) {
         //: %1 what was typed, %2 the stations, e.g. "master, s5, s2"
-        *error = tr("%1: write STATION/DEVICE, e.g. %2/D0 (stations: %3)")
-                     .arg(trimmed, names.value(0), names.join(QStringLiteral(", ")));
+        *error =
+            tr("%1: write STATION/DEVICE, e.g. %2 (stations: %3)")
+                .arg(trimmed, exampleStationDevice(m_session), names.join(QStringLiteral(", ")));
         return false;
     }
     network::StationSource *station = m_session->station(trimmed.left(slash).trimmed());

@@ -21,6 +21,10 @@ class StationSource;
 
 namespace rung::app {
 
+// A device as the network's tables take it, from its first station ("master/D0", the target's
+// own example device); "STATION/DEVICE" without a network.
+QString exampleStationDevice(const network::NetworkSession *session);
+
 class NetworkWatchModel : public QAbstractTableModel {
     Q_OBJECT
 

@@ -415,7 +415,8 @@ void NetworkWindow::retranslate() {
     m_ioDock->setWindowTitle(tr("Inputs and Outputs"));
     m_panelDock->setWindowTitle(tr("Front Panel"));
     m_watchDock->setWindowTitle(tr("Network Watch"));
-    m_watchLine->setPlaceholderText(tr("Station/device, e.g. s5/D10"));
+    m_watchLine->setPlaceholderText(
+        tr("Station/device, e.g. %1").arg(exampleStationDevice(m_session.get())));
     if (auto *add = findChild<QPushButton *>(QStringLiteral("networkWatchAdd")))
         add->setText(tr("&Watch"));
     m_removeWatch->setText(tr("Remove From Watch"));
@@ -632,7 +633,7 @@ bool NetworkWindow::buildSession(QString *error) {
         selectStation(m_views.front().name);
     buildFaultsMenu();
     updateActions();
-    updateStatus();
+    retranslate();
     return true;
 }
 
@@ -686,8 +687,7 @@ bool NetworkWindow::selectStation(const QString &name) {
             m_ladders->setCurrentIndex(int(i));
             m_ioPanels->setCurrentIndex(int(i));
             network::StationSource *source = m_views[i].source;
-            m_panel->setPlc(&source->target(),
-                            source->model() ? source->model()->name : QString());
+            m_panel->setPlc(&source->target(), source->model() ? source->model()->name : QString());
             m_panel->setMonitorSource(source);
             const QSignalBlocker selector(m_selector), list(m_stationList);
             m_selector->setCurrentIndex(int(i));

@@ -113,7 +113,8 @@ TEST_F(FileControllerAlone, AddsTheFileMenusEntriesAndTheToolbarsButtons) {
     for (QAction *a : file.actions())
         if (!a->isSeparator())
             entries << a->text();
-    EXPECT_EQ(entries, QStringList({QStringLiteral("&New Project..."), QStringLiteral("&Open..."),
+    EXPECT_EQ(entries, QStringList({QStringLiteral("&New Project..."),
+                                    QStringLiteral("New Net&work"), QStringLiteral("&Open..."),
                                     QStringLiteral("Open &Recent"), QStringLiteral("E&xamples"),
                                     QStringLiteral("&Save"), QStringLiteral("Save &As..."),
                                     QStringLiteral("Co&mpare With..."),
