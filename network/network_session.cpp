@@ -184,6 +184,10 @@ void NetworkSession::runFor(qint64 durationMs) {
     setRunState(RunState::Stepping);
 }
 
+void NetworkSession::setPowerFlowStation(const QString &station) {
+    control([this, station] { m_flowStation = station; });
+}
+
 void NetworkSession::setSpeed(double factor) {
     control([this, factor] { m_speed = factor; });
 }
@@ -389,6 +393,11 @@ void NetworkSession::workerLoop() {
         paceWall = Clock::now();
         paceVirtualUs = network->nowUs();
     };
+    QString flowStation; // the worker's copy of m_flowStation, taken with the controls
+    auto applyFlow = [&] {
+        for (const auto &station : network->stations())
+            station->engine().setPowerFlowRecording(station->name() == flowStation);
+    };
     Clock::time_point lastPublish = Clock::now();
     bool unpublished = false;
     bool answerDue = false;
@@ -407,6 +416,10 @@ void NetworkSession::workerLoop() {
                 if (m_generation != seen) {
                     seen = m_generation;
                     anchor();
+                    if (flowStation != m_flowStation) {
+                        flowStation = m_flowStation;
+                        applyFlow();
+                    }
                 }
                 if (m_reset) {
                     m_reset = false;
@@ -459,6 +472,7 @@ void NetworkSession::workerLoop() {
                 continue;
             }
             network = std::move(fresh);
+            applyFlow();
             {
                 // What the old network sent is gone with it.
                 std::lock_guard lock(m_trafficMutex);

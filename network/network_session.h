@@ -108,6 +108,9 @@ public:
     // clears (simulator::PowerCycle); the network's clock goes on.
     void powerCycle();
     // Times real time; 0 or less: as fast as it goes.
+    // The station whose ladder is on screen records power flow for the overlay; the others
+    // pay nothing for it. Empty: none.
+    void setPowerFlowStation(const QString &station);
     void setSpeed(double factor);
     double speed() const;
     RunState runState() const { return m_runState; }
@@ -185,6 +188,7 @@ private:
     bool m_reset = false;
     bool m_quit = false;
     double m_speed = 1.0;
+    QString m_flowStation;
     quint64 m_generation = 0;
     std::vector<Fault> m_faults;      // to apply at the next slice
     std::vector<Fault> m_faultsShown; // as the user set them (owner's view)

@@ -687,6 +687,7 @@ bool NetworkWindow::selectStation(const QString &name) {
             m_ladders->setCurrentIndex(int(i));
             m_ioPanels->setCurrentIndex(int(i));
             network::StationSource *source = m_views[i].source;
+            m_session->setPowerFlowStation(name);
             m_panel->setPlc(&source->target(), source->model() ? source->model()->name : QString());
             m_panel->setMonitorSource(source);
             const QSignalBlocker selector(m_selector), list(m_stationList);

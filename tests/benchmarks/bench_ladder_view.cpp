@@ -8,11 +8,11 @@
 
 #include "app/gui/main_window.h"
 #include "app/gui/network_window.h"
-#include "network/network_session.h"
 #include "app/gui/simulation_controller.h"
 #include "editor/il_editor.h"
 #include "editor/ladder_painter.h"
 #include "editor/ladder_view.h"
+#include "network/network_session.h"
 #include "simulator/session.h"
 
 #include "model/convert/convert.h"
@@ -22,9 +22,11 @@
 #include <QElapsedTimer>
 #include <QFile>
 #include <QPaintEvent>
+#include <QComboBox>
 #include <QScrollBar>
-#include <QTableView>
 #include <QStandardPaths>
+#include <QStatusBar>
+#include <QTableView>
 #include <QTemporaryDir>
 #include <QThread>
 
@@ -404,17 +406,27 @@ void networkFramesAtFullSpeed(benchmark::State &state) {
     QTemporaryDir dir;
     QString stations;
     QStringList ends;
-    const model::Target &vigor = model::Target::get(model::Family::Vigor);
-    rung::testing::RandomProgramOptions o;
-    o.rungs = bench::sized(200, 20);
+    const int rungs = bench::sized(200, 20);
     for (int k = 0; k < 8; ++k) {
         QFile program(dir.filePath(QStringLiteral("s%1.il").arg(k)));
         if (!program.open(QIODevice::WriteOnly)) {
             state.SkipWithError("cannot write the stations' programs");
             return;
         }
-        program.write("; target: vigor\n");
-        program.write(rung::testing::randomProgram(vigor, 11 + k, o).toUtf8());
+        // As bench_network's stations (contacts, a coil, a move and an addition a rung), the
+        // addition a counter of scans, so that every rung on screen changes every scan.
+        QString text = QStringLiteral("; target: vigor\n");
+        for (int r = 0; r < rungs; ++r)
+            text += QStringLiteral("LD X%1\nAND M%2\nOR M%3\nOUT Y%4\nLD M9000\nMOV D%5 D%6\n"
+                                   "ADD D%7 K1 D%7\n")
+                        .arg(QString::number(r % 8, 8))
+                        .arg(r % 100 + 100)
+                        .arg(r % 100 + 200)
+                        .arg(QString::number(r % 16, 8))
+                        .arg(k * 10 + r % 4)
+                        .arg(100 + r % 100)
+                        .arg(300 + r % 100);
+        program.write((text + QStringLiteral("END\n")).toUtf8());
         program.close();
         stations += QStringLiteral(R"(%1{"name": "s%2", "program": "s%2.il", "model": "VB",
             "ports": {"CP2": {"application": "cpu-link", "station": %2%3}}})")
@@ -438,11 +450,17 @@ void networkFramesAtFullSpeed(benchmark::State &state) {
         state.SkipWithError(error.toStdString().c_str());
         return;
     }
+    if (!window.session() || window.session()->stations().size() != 8) {
+        const std::string why =
+            ("the network does not build: " + window.statusBar()->currentMessage()).toStdString();
+        state.SkipWithError(why.c_str());
+        return;
+    }
     window.resize(1366, 768);
     window.show();
     for (int k = 0; k < 8; ++k)
         window.watch(QStringLiteral("s%1/D%2").arg(k).arg(k));
-    window.selectStation(QStringLiteral("s3"));
+    window.stationSelector()->setCurrentIndex(3); // s3, the Ladder tab in front
     editor::LadderView *view = window.ladderView(QStringLiteral("s3"));
     auto *table = window.findChild<QTableView *>(QStringLiteral("networkWatchTable"));
     PaintCounter frames, tableFrames;
@@ -466,8 +484,7 @@ void networkFramesAtFullSpeed(benchmark::State &state) {
     const double seconds = static_cast<double>(clock.elapsed()) / 1000.0;
     state.counters["ladder_fps"] = frames.rate();
     state.counters["watch_fps"] = tableFrames.rate();
-    state.counters["realtime_x"] =
-        static_cast<double>(session->nowUs() - startUs) / 1e6 / seconds;
+    state.counters["realtime_x"] = static_cast<double>(session->nowUs() - startUs) / 1e6 / seconds;
     session->stop();
     view->viewport()->removeEventFilter(&frames);
     table->viewport()->removeEventFilter(&tableFrames);

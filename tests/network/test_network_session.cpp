@@ -238,6 +238,22 @@ TEST(NetworkSession, APowerCycleKeepsTheLatchedRegistersAndTheClock) {
     EXPECT_EQ(f.session->nowUs(), 60'000);
 }
 
+// Power flow for the overlay: recorded by the station on screen only.
+TEST(NetworkSession, OnlyTheStationShownRecordsPowerFlow) {
+    SessionFixture f;
+    ASSERT_TRUE(f.session);
+    f.session->setPowerFlowStation(QStringLiteral("master"));
+    f.session->runFor(30);
+    ASSERT_TRUE(eventually([&] { return f.session->runState() == RunState::Paused; }));
+    EXPECT_FALSE(f.station("master")->snapshot()->powerFlow.empty());
+    EXPECT_TRUE(f.station("s5")->snapshot()->powerFlow.empty());
+    f.session->setPowerFlowStation(QStringLiteral("s5"));
+    f.session->runFor(30);
+    ASSERT_TRUE(eventually([&] { return f.session->runState() == RunState::Paused; }));
+    EXPECT_TRUE(eventually([&] { return !f.station("s5")->snapshot()->powerFlow.empty(); }));
+    EXPECT_TRUE(f.station("master")->snapshot()->powerFlow.empty());
+}
+
 TEST(NetworkSession, AStationKeepsTheHistoryOfItsDevices) {
     SessionFixture f;
     ASSERT_TRUE(f.session);
