@@ -149,7 +149,14 @@ NetworkTrafficView::NetworkTrafficView(QWidget *parent)
     updateStatus();
 }
 
-NetworkTrafficView::~NetworkTrafficView() = default;
+NetworkTrafficView::~NetworkTrafficView() {
+    // Closing a window hides its children before they go: the scroll bar and the selection
+    // would still call into this view while its members are gone.
+    for (QObject *child : findChildren<QObject *>())
+        disconnect(child, nullptr, this, nullptr);
+    disconnect(m_table->selectionModel(), nullptr, this, nullptr);
+    disconnect(m_filter, nullptr, this, nullptr);
+}
 
 void NetworkTrafficView::retranslate() {
     m_wireLabel->setText(tr("&Wire:"));

@@ -61,6 +61,12 @@ NetworkWindow::NetworkWindow(QWidget *parent)
 }
 
 NetworkWindow::~NetworkWindow() {
+    // Its children are hidden and deleted after this body, its members before: nothing of
+    // theirs may call back into the window meanwhile.
+    for (QObject *child : findChildren<QObject *>())
+        disconnect(child, nullptr, this, nullptr);
+    if (m_session)
+        disconnect(m_session.get(), nullptr, this, nullptr);
     // The views first: they read the stations' sources, which the session owns.
     for (StationView &v : m_views) {
         v.ladder->setMonitorSource(nullptr);
