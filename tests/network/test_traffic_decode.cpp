@@ -19,7 +19,7 @@ using namespace rung::network::test;
 
 namespace {
 
-// A PC (a line device) on the Computer Link port of a VB, station 0, as protocols.md's
+// A PC (a line device) on the Computer Link port of a VB, station 0, as the manual's
 // vectors address it.
 const QByteArray kPcAndPlc = R"({
     "stations": [{"name": "plc", "program": "p.il", "model": "VB",
@@ -58,7 +58,7 @@ std::vector<QString> exampleNetworks() {
 
 } // namespace
 
-// Vigor M/VB/VH communication manual, B-5: protocols.md's six vectors, request then reply.
+// Vigor M/VB/VH communication manual, B-5: its six example frames, request then reply.
 TEST(TrafficDecode, ComputerLinkVectorsOfTheManual) {
     const NetRun run = runNetwork(kPcAndPlc, kIdle);
     ASSERT_TRUE(run.net) << run.error.toStdString();
