@@ -165,6 +165,16 @@ void Document::setWatchLists(const std::vector<model::WatchList> &lists, const Q
     m_undo.push(new WatchListsCommand(this, m_project.watchLists, lists, label));
 }
 
+void Document::setPorts(const QJsonObject &ports, const QString &label) {
+    if (ports != m_project.ports)
+        m_undo.push(new PortsCommand(this, m_project.ports, ports, label));
+}
+
+void Document::applyPorts(const QJsonObject &ports) {
+    m_project.ports = ports;
+    emit programChanged();
+}
+
 void Document::applyWatchLists(const std::vector<model::WatchList> &lists) {
     m_project.watchLists = lists;
     emit programChanged();

@@ -109,6 +109,9 @@ public:
     void removeRungs(int first, int count);
     void setSymbols(const std::vector<model::Symbol> &symbols);
     void setWatchLists(const std::vector<model::WatchList> &lists, const QString &label);
+    // The project's communication ports (model::Project::ports), as a whole; no step when
+    // they are the same.
+    void setPorts(const QJsonObject &ports, const QString &label);
     // How setListing changes the program: as an undo step of its own, or in place for an undo
     // step that holds the change itself (a fix of the typed list, ListingLinesCommand), or not
     // at all: Check only says whether the text would be taken (and its errors).
@@ -133,6 +136,7 @@ public:
     void applyRungs(int first, int count, const std::vector<model::Rung> &rungs);
     void applySymbols(const std::vector<model::Symbol> &symbols);
     void applyWatchLists(const std::vector<model::WatchList> &lists);
+    void applyPorts(const QJsonObject &ports);
 
 signals:
     void programChanged();

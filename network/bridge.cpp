@@ -15,55 +15,56 @@
 
 namespace rung::network {
 
-// The real line's end on a wire: what the wire delivers is written to the line.
-class BridgeEndpoint final : public Endpoint {
-public:
-    BridgeEndpoint(const QString &portName, const model::SerialSettings &line,
-                   std::unique_ptr<comms::Transport> transport)
-        : m_line(line)
-        , m_transport(std::move(transport)) {
-        name = QStringLiteral("bridge:") + portName;
-        owner = name;
-    }
-    const model::SerialSettings &lineSettings() const override { return m_line; }
-    void deliver(const QByteArray &bytes, int, qint64) override {
-        if (bytes.isEmpty() || !m_failure.isEmpty())
-            return;
-        QString error;
-        if (!m_transport->write(bytes, QDeadlineTimer(1000), &error))
-            m_failure = error;
-    }
-    comms::Transport &transport() { return *m_transport; }
-    QString m_failure;
+BridgeEndpoint::BridgeEndpoint(const QString &portName, const model::SerialSettings &line,
+                               std::shared_ptr<comms::Transport> transport)
+    : m_line(line)
+    , m_transport(std::move(transport)) {
+    name = QStringLiteral("bridge:") + portName;
+    owner = name;
+}
 
-private:
-    model::SerialSettings m_line;
-    std::unique_ptr<comms::Transport> m_transport;
-};
+void BridgeEndpoint::deliver(const QByteArray &bytes, int, qint64) {
+    if (bytes.isEmpty() || !m_failure.isEmpty())
+        return;
+    QString error;
+    if (!m_transport->write(bytes, QDeadlineTimer(1000), &error))
+        m_failure = error;
+}
 
-RealTime::RealTime(Network &network)
-    : m_network(network) {}
-
-RealTime::~RealTime() = default;
-
-bool RealTime::addBridge(const BridgeDescription &b, QString *where, QString *error) {
-    const StationPort *port = dynamic_cast<StationPort *>(m_network.endpoint(b.end));
+bool bridgeablePort(Network &network, const QString &portName, const QString &where,
+                    model::SerialSettings *line, QString *error) {
+    const auto *port = dynamic_cast<StationPort *>(network.endpoint(portName));
     if (!port) {
-        *error = NetworkTr::tr("%1: no station port \"%2\"").arg(b.path, b.end);
+        *error = where.isEmpty() ? NetworkTr::tr("no station port \"%1\"").arg(portName)
+                                 : NetworkTr::tr("%1: no station port \"%2\"").arg(where, portName);
         return false;
     }
+    if (!port->config().application->published) {
+        *error = NetworkTr::tr("%1 runs %2, whose frames the manual does not publish: it is not "
+                               "put on a real line")
+                     .arg(port->name, QCoreApplication::translate(
+                                          "rung::model::Target", port->config().application->name));
+        return false;
+    }
+    *line = port->line();
+    return true;
+}
+
+std::unique_ptr<comms::Transport> openBridgeLine(const BridgeDescription &b,
+                                                 const model::SerialSettings &line, QString *where,
+                                                 QString *error) {
     std::unique_ptr<comms::Transport> transport;
     switch (b.kind) {
     case BridgeDescription::Kind::Pty: {
         auto pty = comms::PtyTransport::createPair(error);
         if (!pty)
-            return false;
+            return nullptr;
         *where = pty->peerPath();
         transport = std::move(pty);
         break;
     }
     case BridgeDescription::Kind::Serial:
-        transport = std::make_unique<comms::SerialTransport>(b.where, port->line());
+        transport = std::make_unique<comms::SerialTransport>(b.where, line);
         *where = b.where;
         break;
     case BridgeDescription::Kind::Tcp: {
@@ -72,7 +73,7 @@ bool RealTime::addBridge(const BridgeDescription &b, QString *where, QString *er
         const uint tcpPort = colon > 0 ? b.where.mid(colon + 1).toUInt(&ok) : 0;
         if (!ok || tcpPort == 0 || tcpPort > 65535) {
             *error = NetworkTr::tr("%1.tcp: \"%2\" is not HOST:PORT").arg(b.path, b.where);
-            return false;
+            return nullptr;
         }
         transport = std::make_unique<comms::TcpTransport>(b.where.left(colon), quint16(tcpPort));
         *where = b.where;
@@ -91,37 +92,50 @@ bool RealTime::addBridge(const BridgeDescription &b, QString *where, QString *er
             *error = NetworkTr::tr("%1.listen: \"%2\" is not ADDRESS:PORT (an IP address of "
                                    "this machine, 0.0.0.0 for all, or localhost)")
                          .arg(b.path, b.where);
-            return false;
+            return nullptr;
         }
         transport = std::make_unique<comms::TcpListenTransport>(host, quint16(tcpPort));
         break;
     }
     }
     if (!transport->isOpen() && !transport->open(error))
-        return false;
+        return nullptr;
     if (b.kind == BridgeDescription::Kind::Listen)
         *where = transport->name();
-    return addBridge(b.end, std::move(transport), error);
+    return transport;
+}
+
+BridgeEndpoint *attachBridgeLine(Network &network, const QString &portName,
+                                 std::shared_ptr<comms::Transport> transport, QString *error) {
+    model::SerialSettings line;
+    if (!bridgeablePort(network, portName, {}, &line, error))
+        return nullptr;
+    auto *port = network.endpoint(portName);
+    auto bridge = std::make_unique<BridgeEndpoint>(port->name, line, std::move(transport));
+    BridgeEndpoint *endpoint = bridge.get();
+    network.attach(std::move(bridge), port);
+    return endpoint;
+}
+
+RealTime::RealTime(Network &network)
+    : m_network(network) {}
+
+RealTime::~RealTime() = default;
+
+bool RealTime::addBridge(const BridgeDescription &b, QString *where, QString *error) {
+    model::SerialSettings line;
+    if (!bridgeablePort(m_network, b.end, b.path, &line, error))
+        return false;
+    std::unique_ptr<comms::Transport> transport = openBridgeLine(b, line, where, error);
+    return transport && addBridge(b.end, std::move(transport), error);
 }
 
 bool RealTime::addBridge(const QString &portName, std::unique_ptr<comms::Transport> transport,
                          QString *error) {
-    auto *port = dynamic_cast<StationPort *>(m_network.endpoint(portName));
-    if (!port) {
-        *error = NetworkTr::tr("no station port \"%1\"").arg(portName);
-        return false;
-    }
-    if (!port->config().application->published) {
-        *error = NetworkTr::tr("%1 runs %2, whose frames the manual does not publish: it is not "
-                               "put on a real line")
-                     .arg(port->name, QCoreApplication::translate(
-                                          "rung::model::Target", port->config().application->name));
-        return false;
-    }
-    auto bridge = std::make_unique<BridgeEndpoint>(port->name, port->line(), std::move(transport));
-    m_bridges.push_back(bridge.get());
-    m_network.attach(std::move(bridge), port);
-    return true;
+    BridgeEndpoint *bridge = attachBridgeLine(m_network, portName, std::move(transport), error);
+    if (bridge)
+        m_bridges.push_back(bridge);
+    return bridge != nullptr;
 }
 
 bool RealTime::turn(int waitMs, QString *failure) {
@@ -132,8 +146,8 @@ bool RealTime::turn(int waitMs, QString *failure) {
     m_network.runUntil(m_startUs + m_clock.nsecsElapsed() / 1000);
     const int each = m_bridges.empty() ? waitMs : std::max(1, waitMs / int(m_bridges.size()));
     for (BridgeEndpoint *b : m_bridges) {
-        if (!b->m_failure.isEmpty()) {
-            *failure = b->m_failure;
+        if (!b->failure().isEmpty()) {
+            *failure = b->failure();
             return false;
         }
         const comms::ReadResult r = b->transport().read(QDeadlineTimer(each));

@@ -18,7 +18,41 @@
 
 namespace rung::network {
 
-class BridgeEndpoint;
+// The real line's end on a wire: what the wire delivers is written to the line. The line is
+// shared: the IDE keeps a bridge's pseudo-terminal open across the networks a Stop builds
+// again (network_session_bridges.cpp), so that a master on it need not be told a new path.
+class BridgeEndpoint final : public Endpoint {
+public:
+    BridgeEndpoint(const QString &portName, const model::SerialSettings &line,
+                   std::shared_ptr<comms::Transport> transport);
+    const model::SerialSettings &lineSettings() const override { return m_line; }
+    void deliver(const QByteArray &bytes, int errors, qint64 atUs) override;
+    comms::Transport &transport() { return *m_transport; }
+    // Why the last write to the line failed; empty while it works.
+    const QString &failure() const { return m_failure; }
+
+private:
+    model::SerialSettings m_line;
+    std::shared_ptr<comms::Transport> m_transport;
+    QString m_failure;
+};
+
+// The line a bridge of `port` ("s5/CP2") carries: the port's rate and format. False with what
+// and why when it cannot be bridged: no such station port, or a CPU Link or Parallel Link
+// port (their frames are not published). `where` names the bridge ("bridges[0]"), may be "".
+bool bridgeablePort(Network &network, const QString &port, const QString &where,
+                    model::SerialSettings *line, QString *error);
+// Opens a bridge's real line: a new pseudo-terminal, the serial port at `line`'s rate and
+// format, a TCP connection to a device server, or a socket listening for a master. *reached
+// says how a peer reaches it (the pseudo-terminal's path, the serial port's name, HOST:PORT).
+// Null with what, where and why. Blocks while it connects: not for the UI thread.
+std::unique_ptr<comms::Transport> openBridgeLine(const BridgeDescription &bridge,
+                                                 const model::SerialSettings &line,
+                                                 QString *reached, QString *error);
+// Joins an open line to the port's wire (a wire of its own when the port is on none); the
+// network owns the endpoint, which it returns (null with why when the port cannot be bridged).
+BridgeEndpoint *attachBridgeLine(Network &network, const QString &port,
+                                 std::shared_ptr<comms::Transport> transport, QString *error);
 
 class RealTime {
 public:

@@ -120,6 +120,19 @@ std::unique_ptr<Network> Network::build(const NetworkDescription &d, const Progr
         }
         net->m_wires.push_back(std::move(wire));
     }
+    // A port named only by a bridge runs its first application, as one named only in a wire
+    // (the Network view offers every port of the model for a bridge).
+    for (const BridgeDescription &b : d.bridges) {
+        const qsizetype slash = b.end.indexOf(QLatin1Char('/'));
+        Station *s = slash > 0 ? net->station(b.end.left(slash)) : nullptr;
+        if (!s || net->endpoint(b.end))
+            continue; // bridge.h says why when it cannot be bridged
+        model::PortConfig config;
+        QString why;
+        if (model::readPortConfig(s->target(), s->model(), b.end.mid(slash + 1),
+                                  {{QJsonObject(), b.path}}, &config, &why))
+            s->addPort(std::move(config));
+    }
     for (const FaultDescription &f : d.faults) {
         if (!f.wire.isEmpty()) {
             bool found = false;

@@ -263,6 +263,17 @@ std::vector<TrafficRecord> NetworkSession::takeTraffic(bool *startedOver) {
     return std::exchange(m_traffic, {});
 }
 
+void NetworkSession::startBridges(std::shared_ptr<BridgeLines> lines) {
+    control([this, &lines] { m_bridgeLines = std::move(lines); });
+}
+
+void NetworkSession::postBridgeStatus(const std::vector<BridgeStatus> &status) {
+    post([this, status] {
+        m_bridgeStatus = status;
+        emit bridgesChanged();
+    });
+}
+
 void NetworkSession::post(std::function<void()> function) {
     bool first = false;
     {
@@ -408,6 +419,7 @@ void NetworkSession::workerLoop() {
         quint64 generation = 0;
         std::vector<Fault> faults;
         qint64 until = 0;
+        std::shared_ptr<BridgeLines> bridgeLines;
         {
             std::unique_lock lock(m_mutex);
             for (;;) {
@@ -424,6 +436,10 @@ void NetworkSession::workerLoop() {
                 if (m_reset) {
                     m_reset = false;
                     reset = true;
+                    break;
+                }
+                if (m_bridgeLines) {
+                    bridgeLines = std::move(m_bridgeLines);
                     break;
                 }
                 faults.swap(m_faults);
@@ -463,6 +479,13 @@ void NetworkSession::workerLoop() {
                 m_wake.wait(lock);
             }
         }
+        if (bridgeLines) {
+            // Opened here, not on the owner thread: a port may take seconds to open.
+            m_bridges =
+                std::make_unique<SessionBridges>(std::move(bridgeLines), m_description.bridges);
+            postBridgeStatus(m_bridges->attach(*network));
+            continue;
+        }
         if (reset) {
             QString error;
             std::unique_ptr<Network> fresh = Network::build(m_description, m_loader, &error);
@@ -480,6 +503,8 @@ void NetworkSession::workerLoop() {
                 ++m_trafficEpoch;
             }
             attachTraffic(*network);
+            if (m_bridges) // the same lines on the new network's wires
+                postBridgeStatus(m_bridges->attach(*network));
             for (StationSource *s : m_sources) {
                 s->m_errorsReported = 0;
                 s->m_scansRecorded = 0;
@@ -520,6 +545,8 @@ void NetworkSession::workerLoop() {
             continue;
         }
         network->runUntil(until);
+        if (m_bridges && m_bridges->poll(*network))
+            postBridgeStatus(m_bridges->statuses());
         afterSlice(*network);
         unpublished = true;
         const auto now = Clock::now();

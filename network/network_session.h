@@ -13,6 +13,7 @@
 // through mutexes (the stations' inboxes, the history, the traffic queue, the controls).
 
 #include "network/network.h"
+#include "network/network_session_bridges.h"
 
 #include "model/image/history.h"
 #include "model/image/monitor_source.h"
@@ -139,6 +140,13 @@ public:
     // reader drops what it kept of the old one first.
     std::vector<TrafficRecord> takeTraffic(bool *startedOver = nullptr);
 
+    // Puts the description's bridges on real lines from now on (network_session_bridges.h):
+    // the worker opens them (or takes them from `lines`, where they stay open across Stop and
+    // sessions) and carries their bytes while the network runs. bridgeStatus() says where
+    // each is reached or why it did not open (bridgesChanged). Owner thread.
+    void startBridges(std::shared_ptr<BridgeLines> lines);
+    const std::vector<BridgeStatus> &bridgeStatus() const { return m_bridgeStatus; }
+
 signals:
     void runStateChanged(rung::model::MonitorSource::RunState state);
     void errorTextChanged(const QString &text);
@@ -146,6 +154,8 @@ signals:
     void trafficAvailable();
     // The virtual clock moved (on the readers' beat).
     void clockChanged(qint64 nowUs);
+    // bridgeStatus() changed: a bridge opened, failed or was opened again.
+    void bridgesChanged();
 
 private:
     friend class StationSource;
@@ -201,6 +211,13 @@ private:
 
     std::mutex m_postMutex;
     std::vector<std::function<void()>> m_posted;
+
+    // Bridges: lines handed by startBridges under m_mutex; the worker's bridges; their
+    // statuses as the owner thread last heard them.
+    std::shared_ptr<BridgeLines> m_bridgeLines;
+    std::unique_ptr<SessionBridges> m_bridges; // worker thread
+    std::vector<BridgeStatus> m_bridgeStatus;  // owner thread
+    void postBridgeStatus(const std::vector<BridgeStatus> &status);
 
     std::thread m_worker;
 };

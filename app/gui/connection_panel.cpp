@@ -5,6 +5,7 @@
 #include "connection_panel.h"
 
 #include "dialogs.h"
+#include "line_settings_form.h"
 #include "wheel_guard.h"
 
 #include "comms/driver/connection.h"
@@ -41,9 +42,6 @@ namespace {
 using comms::ConnectionSettings;
 using comms::ProtocolKind;
 
-// The frame formats the manuals name (data bits, parity, stop bits).
-constexpr const char *kFrames[] = {"7E1", "7E2", "7O1", "7O2", "8N1", "8N2", "8E1", "8O1"};
-constexpr int kBauds[] = {1200, 2400, 4800, 9600, 19200, 38400, 57600, 115200};
 // The traffic log keeps this many lines (the session's tap keeps its own ring).
 constexpr int kTrafficLines = 5000;
 
@@ -105,65 +103,10 @@ void ConnectionPanel::build() {
     via->addStretch();
     form->addRow(via);
 
-    m_via = new QWidget;
-    m_via->setObjectName(QStringLiteral("connectionVia"));
-    auto *viaPages = new QVBoxLayout(m_via);
-    viaPages->setContentsMargins(0, 0, 0, 0);
-    auto *serial = new QWidget;
-    auto *serialForm = new QFormLayout(serial);
-    serialForm->setContentsMargins(0, 0, 0, 0);
-    serialForm->setFieldGrowthPolicy(QFormLayout::AllNonFixedFieldsGrow);
-    serialForm->setRowWrapPolicy(QFormLayout::WrapLongRows);
-    auto *portRow = new QHBoxLayout;
-    m_port = new QComboBox;
-    m_port->setObjectName(QStringLiteral("connectionPort"));
-    m_port->setEditable(true); // a pseudo-terminal or a port the list does not show
-    m_port->setInsertPolicy(QComboBox::NoInsert);
-    m_port->setSizeAdjustPolicy(QComboBox::AdjustToMinimumContentsLengthWithIcon);
-    m_port->setMinimumContentsLength(12);
-    // An icon beside the port, as the vendors' port lists have it: a button's word here made
-    // the panel wider than its column and pushed the settings behind a sideways scroll bar.
-    m_refresh = new QToolButton;
-    m_refresh->setObjectName(QStringLiteral("connectionRefresh"));
-    m_refresh->setToolButtonStyle(Qt::ToolButtonIconOnly);
-    m_refresh->setIcon(QIcon::fromTheme(QStringLiteral("view-refresh"),
-                                        style()->standardIcon(QStyle::SP_BrowserReload)));
-    portRow->addWidget(m_port, 1);
-    portRow->addWidget(m_refresh);
-    m_portLabel = new QLabel;
-    serialForm->addRow(m_portLabel, portRow);
-    m_baud = new QComboBox;
-    m_baud->setObjectName(QStringLiteral("connectionBaud"));
-    for (int b : kBauds)
-        m_baud->addItem(QString::number(b), b);
-    m_frame = new QComboBox;
-    m_frame->setObjectName(QStringLiteral("connectionFrame"));
-    for (const char *f : kFrames)
-        m_frame->addItem(QString::fromLatin1(f));
-    m_frameLabel = new QLabel;
-    m_baudLabel = new QLabel;
-    serialForm->addRow(m_baudLabel, m_baud);
-    serialForm->addRow(m_frameLabel, m_frame);
-    viaPages->addWidget(serial);
-    m_viaPages[0] = serial;
-    auto *tcp = new QWidget;
-    auto *tcpForm = new QFormLayout(tcp);
-    tcpForm->setContentsMargins(0, 0, 0, 0);
-    tcpForm->setRowWrapPolicy(QFormLayout::WrapLongRows);
-    m_host = new QLineEdit(QStringLiteral("127.0.0.1"));
-    m_host->setObjectName(QStringLiteral("connectionHost"));
-    m_tcpPort = new QSpinBox;
-    m_tcpPort->setObjectName(QStringLiteral("connectionTcpPort"));
-    m_tcpPort->setRange(1, 65535);
-    m_tcpPort->setValue(502);
-    m_hostLabel = new QLabel;
-    m_tcpPortLabel = new QLabel;
-    tcpForm->addRow(m_hostLabel, m_host);
-    tcpForm->addRow(m_tcpPortLabel, m_tcpPort);
-    viaPages->addWidget(tcp);
-    m_viaPages[1] = tcp;
+    // The port or host and the line (line_settings_form.h), as a network's bridges ask them.
+    m_line = new LineSettingsForm(QStringLiteral("connection"));
     showVia(0);
-    form->addRow(m_via);
+    form->addRow(m_line);
 
     m_station = new QSpinBox;
     m_station->setObjectName(QStringLiteral("connectionStation"));
@@ -246,7 +189,6 @@ void ConnectionPanel::build() {
     connect(m_protocol, &QComboBox::activated, this, [this] { protocolChosen(); });
     connect(m_viaSerial, &QRadioButton::toggled, this,
             [this](bool serial) { showVia(serial ? 0 : 1); });
-    connect(m_refresh, &QToolButton::clicked, this, &ConnectionPanel::refreshPorts);
     connect(m_testButton, &QPushButton::clicked, this, [this] { testConnection(); });
     connect(m_connect, &QPushButton::clicked, this, [this] {
         if (m_session)
@@ -268,19 +210,11 @@ void ConnectionPanel::retranslate() {
     m_protocolLabel->setText(tr("Protocol:"));
     m_viaSerial->setText(tr("Serial port"));
     m_viaTcp->setText(tr("TCP"));
-    m_portLabel->setText(tr("Port:"));
-    m_port->setToolTip(tr("A serial port, or a path typed in: a pseudo-terminal such as the one\n"
-                          "'rungstudio-cli serve --pty' prints, or the link that\n"
-                          "'serve --pty --link PATH' keeps at PATH, which still leads to the\n"
-                          "PLC after serve restarts"));
-    m_refresh->setText(tr("Refresh")); // its accessible name
-    m_refresh->setToolTip(tr("Look for serial ports again"));
-    updatePortHint();
-    m_baudLabel->setText(tr("Baud rate:"));
-    m_frameLabel->setText(tr("Format:"));
-    m_frame->setToolTip(tr("Data bits, parity (N none, E even, O odd) and stop bits"));
-    m_hostLabel->setText(tr("Host:"));
-    m_tcpPortLabel->setText(tr("TCP port:"));
+    m_line->portBox()->setToolTip(
+        tr("A serial port, or a path typed in: a pseudo-terminal such as the one\n"
+           "'rungstudio-cli serve --pty' prints, or the link that\n"
+           "'serve --pty --link PATH' keeps at PATH, which still leads to the\n"
+           "PLC after serve restarts"));
     m_stationLabel->setText(tr("Station:"));
     m_timeoutLabel->setText(tr("Timeout (ms):"));
     m_retriesLabel->setText(tr("Retries:"));
@@ -367,10 +301,7 @@ void ConnectionPanel::protocolChosen() {
 }
 
 void ConnectionPanel::showVia(int page) {
-    // Only the page shown takes room (a stack would be as tall as its tallest page, and leave
-    // the serial settings' room empty under the TCP ones).
-    m_viaPages[1 - page]->hide();
-    m_viaPages[page]->show();
+    m_line->showPage(page == 0 ? LineSettingsForm::Page::Serial : LineSettingsForm::Page::Tcp);
 }
 
 QString ConnectionPanel::cannotConnectReason() const {
@@ -378,43 +309,16 @@ QString ConnectionPanel::cannotConnectReason() const {
 }
 
 void ConnectionPanel::refreshPorts() {
-    const QString typed = m_port->currentText();
-    const QString current = m_port->currentData().toString();
-    m_port->clear();
-    for (const comms::SerialPortInfo &p : comms::availableSerialPorts()) {
-        QString text = p.name;
-        if (!p.description.isEmpty())
-            text += QStringLiteral(" - ") + p.description;
-        if (!p.usbId().isEmpty())
-            text += QStringLiteral(" [%1]").arg(p.usbId());
-        m_port->addItem(text, p.name);
-    }
-    const QString keep = current.isEmpty() ? typed : current;
-    if (const int i = m_port->findData(keep); i >= 0)
-        m_port->setCurrentIndex(i);
-    else
-        m_port->setEditText(keep);
-    updatePortHint();
-}
-
-void ConnectionPanel::updatePortHint() {
-    // An empty field says whether the list has anything to choose from.
-    m_port->lineEdit()->setPlaceholderText(m_port->count() == 0 ? tr("No port found")
-                                                                : tr("Choose or type a port"));
+    m_line->refreshPorts();
 }
 
 comms::ConnectionSettings ConnectionPanel::settings() const {
     ConnectionSettings s = comms::defaultSettings(protocol());
     s.via = m_viaTcp->isChecked() ? ConnectionSettings::Via::Tcp : ConnectionSettings::Via::Serial;
-    // A port chosen from the list stands for its name; anything else is as typed.
-    const int i = m_port->currentIndex();
-    s.port = i >= 0 && m_port->itemText(i) == m_port->currentText()
-                 ? m_port->itemData(i).toString()
-                 : m_port->currentText().trimmed();
-    s.serial.baud = m_baud->currentText().toInt();
-    comms::parseFrameFormat(m_frame->currentText(), &s.serial);
-    s.host = m_host->text().trimmed();
-    s.tcpPort = quint16(m_tcpPort->value());
+    s.port = m_line->port();
+    s.serial = m_line->line();
+    s.host = m_line->host();
+    s.tcpPort = quint16(m_line->tcpPort());
     s.station = m_station->value();
     s.link.timeoutMs = m_timeout->value();
     s.link.retries = m_retries->value();
@@ -425,19 +329,10 @@ void ConnectionPanel::setSettings(const comms::ConnectionSettings &s) {
     if (const int i = m_protocol->findData(int(s.protocol)); i >= 0)
         m_protocol->setCurrentIndex(i);
     (s.via == ConnectionSettings::Via::Tcp ? m_viaTcp : m_viaSerial)->setChecked(true);
-    if (const int i = m_port->findData(s.port); i >= 0)
-        m_port->setCurrentIndex(i);
-    else
-        m_port->setEditText(s.port);
-    if (int i = m_baud->findData(s.serial.baud); i >= 0)
-        m_baud->setCurrentIndex(i);
-    else {
-        m_baud->addItem(QString::number(s.serial.baud), s.serial.baud);
-        m_baud->setCurrentIndex(m_baud->count() - 1);
-    }
-    m_frame->setCurrentText(comms::frameFormatText(s.serial));
-    m_host->setText(s.host);
-    m_tcpPort->setValue(s.tcpPort);
+    m_line->setPort(s.port);
+    m_line->setLine(s.serial);
+    m_line->setHost(s.host);
+    m_line->setTcpPort(s.tcpPort);
     // The stations the protocol numbers (Vigor 0..255, Modbus 1..247, Host Link 0..31); a
     // PL110 answers 255 too, "any station" (PL110 manual 3.1).
     comms::StationRange stations = comms::stationRange(s.protocol);

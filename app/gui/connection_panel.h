@@ -126,7 +126,6 @@ private:
     // the port's field; false.
     bool askForPort();
     void showVia(int page); // 0: the serial settings, 1: TCP
-    void updatePortHint();
     void remember() const;
     std::unique_ptr<comms::OnlineSession> makeSession() const;
     comms::ProtocolKind protocol() const;
@@ -152,22 +151,10 @@ private:
     QComboBox *m_protocol = nullptr;
     QRadioButton *m_viaSerial = nullptr;
     QRadioButton *m_viaTcp = nullptr;
-    QWidget *m_via = nullptr;
-    QWidget *m_viaPages[2] = {}; // the serial settings, the TCP ones
-    QComboBox *m_port = nullptr;
-    QToolButton *m_refresh = nullptr;
-    QComboBox *m_baud = nullptr;
-    QComboBox *m_frame = nullptr;
-    QLineEdit *m_host = nullptr;
-    QSpinBox *m_tcpPort = nullptr;
+    class LineSettingsForm *m_line = nullptr; // the port or host and the line
     QSpinBox *m_station = nullptr;
     QSpinBox *m_timeout = nullptr;
     QSpinBox *m_retries = nullptr;
-    QLabel *m_portLabel = nullptr;
-    QLabel *m_baudLabel = nullptr;
-    QLabel *m_frameLabel = nullptr;
-    QLabel *m_hostLabel = nullptr;
-    QLabel *m_tcpPortLabel = nullptr;
     QLabel *m_stationLabel = nullptr;
     QLabel *m_timeoutLabel = nullptr;
     QLabel *m_retriesLabel = nullptr;

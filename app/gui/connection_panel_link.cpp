@@ -5,6 +5,7 @@
 #include "connection_panel.h"
 
 #include "dialogs.h"
+#include "line_settings_form.h"
 
 #include "comms/driver/relay.h"
 #include "model/target/address.h"
@@ -229,7 +230,8 @@ bool ConnectionPanel::askForPort() {
         },
         kBad);
     emit message(m_testResult->text());
-    QWidget *field = m_viaTcp->isChecked() ? static_cast<QWidget *>(m_host) : m_port;
+    QWidget *field = m_viaTcp->isChecked() ? static_cast<QWidget *>(m_line->hostEdit())
+                                           : static_cast<QWidget *>(m_line->portBox());
     field->setFocus(Qt::OtherFocusReason);
     return false;
 }

@@ -84,6 +84,9 @@ public:
     void newProject(const model::Target &target, const QString &modelName);
     void setSideBySide(bool sideBySide);
     void editRungComment(); // asks for the comment of the rung under the cursor
+    // Edit > Communication Ports...: the project's port settings (the Vigor's "2nd COM Port
+    // Setting", CPU Link, the PL110's COM1 / EXP1 / COM2 protocols), one undo step.
+    void editCommunicationPorts();
     // Applies the IL editor's text now (the editor also does it after a short pause).
     void applyListing();
     QString recoveryPath() const;

@@ -206,6 +206,12 @@ void MainWindow::buildActions() {
         ->setShortcut(QKeySequence(Qt::CTRL | Qt::SHIFT | Qt::Key_W));
     edit->addAction(tr("Rung Co&mment..."), this, &MainWindow::editRungComment)
         ->setShortcut(QKeySequence(Qt::CTRL | Qt::SHIFT | Qt::Key_M));
+    QAction *ports =
+        edit->addAction(tr("Communic&ation Ports..."), this, &MainWindow::editCommunicationPorts);
+    ports->setObjectName(QStringLiteral("communicationPorts"));
+    ports->setStatusTip(tr("The PLC's own port settings, kept in the project: what Ladder "
+                           "Master calls the 2nd COM Port Setting, CPU Link, the PL110's "
+                           "COM1 / EXP1 / COM2 protocols"));
     showKeyInMenu(edit->addAction(tr("In&sert Rung"), this, [this] { m_ladder->insertRung(); }),
                   QKeySequence(Qt::SHIFT | Qt::Key_Insert));
     showKeyInMenu(edit->addAction(tr("De&lete Rung"), this, [this] { m_ladder->deleteRung(); }),

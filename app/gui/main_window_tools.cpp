@@ -4,15 +4,18 @@
 
 #include "dialogs.h"
 #include "file_controller.h"
+#include "network_port_dialog.h"
 #include "symbol_table.h"
 
 #include "editor/cross_reference_view.h"
 #include "editor/il_editor.h"
 #include "editor/ladder_view.h"
 
+#include "model/comm/port_spec.h"
 #include "model/convert/convert.h"
 #include "model/ladder/ladder_text.h"
 #include "model/ladder/replace_device.h"
+#include "model/target/target.h"
 
 #include <QApplication>
 #include <QClipboard>
@@ -223,6 +226,30 @@ void MainWindow::exportSymbols() {
     QString error;
     if (!path.isEmpty() && !m_symbols->exportCsv(path, &error))
         messageBox(QMessageBox::Critical, this, tr("Cannot export"), error);
+}
+
+void MainWindow::editCommunicationPorts() {
+    const model::Project &project = m_document->project();
+    const model::Target &target = m_document->target();
+    if (std::none_of(target.ports.begin(), target.ports.end(),
+                     [&project](const model::PortSpec &p) { return p.on(project.model); })) {
+        messageBox(
+            QMessageBox::Information, this, tr("Communication Ports"),
+            tr("The %1 has no port settings a program or a network uses.").arg(target.displayName));
+        return;
+    }
+    // The port dialog checks every setting against the target's table (model::readPortConfig),
+    // as the project's reader and a network do.
+    const std::optional<QJsonObject> ports =
+        editProjectPorts(this, target, project.model, project.ports);
+    if (!ports)
+        return;
+    const bool same = *ports == project.ports;
+    m_document->setPorts(*ports, tr("Communication Ports"));
+    statusBar()->showMessage(same ? tr("The communication ports are as they were")
+                                  : tr("Communication ports set: File > Save keeps them in the "
+                                       "project"),
+                             8000);
 }
 
 } // namespace rung::app

@@ -537,6 +537,16 @@ bool NetworkDocument::setPortSettings(const QString &name, const QString &port,
 }
 
 bool NetworkDocument::addBridge(const BridgeDescription &bridge, QString *error) {
+    for (const BridgeDescription &b : m_description.bridges)
+        if (b.end == bridge.end) {
+            *error = tr("%1 has a bridge already").arg(bridge.end);
+            return false;
+        }
+    return setBridge(bridge, std::nullopt, error);
+}
+
+bool NetworkDocument::setBridge(const BridgeDescription &bridge,
+                                const std::optional<QJsonObject> &portSettings, QString *error) {
     if (!bridge.end.contains(QLatin1Char('/'))) {
         *error = tr("A bridge goes from a station's port (STATION/PORT), not from \"%1\"")
                      .arg(bridge.end);
@@ -544,11 +554,6 @@ bool NetworkDocument::addBridge(const BridgeDescription &bridge, QString *error)
     }
     if (!endExists(bridge.end, error))
         return false;
-    for (const BridgeDescription &b : m_description.bridges)
-        if (b.end == bridge.end) {
-            *error = tr("%1 has a bridge already").arg(bridge.end);
-            return false;
-        }
     if (bridge.kind != BridgeDescription::Kind::Pty && bridge.where.trimmed().isEmpty()) {
         *error = tr("A %1 bridge needs where it goes").arg(bridgeKindText(bridge.kind));
         return false;
@@ -563,23 +568,60 @@ bool NetworkDocument::addBridge(const BridgeDescription &bridge, QString *error)
             return false;
         }
     }
-    // CPU Link and Parallel Link publish no frames: nothing could cross a real line.
     const QString name = endStation(bridge.end), port = bridge.end.section(QLatin1Char('/'), 1);
+    const StationDescription *s = station(name);
     const NetworkStationInfo info = stationInfo(name);
+    // The port's settings as they will be: the network's new ones over the project's.
+    std::vector<model::PortLayer> layers;
+    if (info.projectPorts.contains(port))
+        layers.push_back({info.projectPorts.value(port).toObject(), s->program});
+    layers.push_back({portSettings ? *portSettings : s->ports.value(port).toObject(),
+                      s->where + QStringLiteral(".ports.") + port});
     model::PortConfig config;
     QString why;
-    if (model::readPortConfig(*info.target, info.target->model(info.model), port,
-                              {{effectivePortSettings(name, port), bridge.end}}, &config, &why) &&
-        !config.application->published) {
+    const bool read = model::readPortConfig(*info.target, info.target->model(info.model), port,
+                                            layers, &config, &why);
+    if (!read && portSettings) {
+        *error = why;
+        return false;
+    }
+    // CPU Link and Parallel Link publish no frames: nothing could cross a real line.
+    if (read && !config.application->published) {
         *error = tr("%1 runs %2, whose frames are not published: it cannot be bridged")
                      .arg(bridge.end, QCoreApplication::translate("rung::model::Target",
                                                                   config.application->name));
         return false;
     }
     NetworkDescription d = m_description;
-    d.bridges.push_back(bridge);
-    push(std::move(d), tr("Add Bridge %1").arg(bridge.end));
+    bool replaced = false;
+    for (BridgeDescription &b : d.bridges)
+        if (b.end == bridge.end) {
+            b.kind = bridge.kind;
+            b.where = bridge.kind == BridgeDescription::Kind::Pty ? QString() : bridge.where;
+            replaced = true;
+        }
+    if (!replaced)
+        d.bridges.push_back(bridge);
+    if (portSettings)
+        for (StationDescription &e : d.stations)
+            if (e.name == name) {
+                if (portSettings->isEmpty())
+                    e.ports.remove(port);
+                else
+                    e.ports.insert(port, *portSettings);
+            }
+    if (d.bridges == m_description.bridges && d.stations == m_description.stations)
+        return true; // nothing changed: no undo step
+    push(std::move(d),
+         replaced ? tr("Change Bridge %1").arg(bridge.end) : tr("Add Bridge %1").arg(bridge.end));
     return true;
+}
+
+const BridgeDescription *NetworkDocument::bridgeOf(const QString &end) const {
+    for (const BridgeDescription &b : m_description.bridges)
+        if (b.end == end)
+            return &b;
+    return nullptr;
 }
 
 bool NetworkDocument::removeBridge(const QString &end, QString *error) {

@@ -12,6 +12,7 @@
 #include <QUndoStack>
 
 #include <map>
+#include <optional>
 
 namespace rung::model {
 class Target;
@@ -88,6 +89,13 @@ public:
     bool setPortSettings(const QString &station, const QString &port, const QJsonObject &settings,
                          QString *error);
     bool addBridge(const network::BridgeDescription &bridge, QString *error);
+    // Makes the port's bridge or changes the one it has (its place in the file kept), and with
+    // it the network's settings of the port when `portSettings` is given (the rate and format
+    // the bridge's line opens at): one undo step.
+    bool setBridge(const network::BridgeDescription &bridge,
+                   const std::optional<QJsonObject> &portSettings, QString *error);
+    // The bridge of a port ("s5/CP2"); nullptr when it has none.
+    const network::BridgeDescription *bridgeOf(const QString &end) const;
     bool removeBridge(const QString &end, QString *error);
     bool setPeriod(qint64 periodMs, QString *error);
 

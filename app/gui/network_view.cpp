@@ -1,5 +1,6 @@
 #include "app/gui/network_view.h"
 
+#include "app/gui/network_bridge_dialog.h"
 #include "app/gui/network_document.h"
 #include "app/gui/network_port_dialog.h"
 #include "app/gui/network_station_dialog.h"
@@ -7,6 +8,8 @@
 #include "model/comm/port_config.h"
 #include "model/target/target.h"
 
+#include <QApplication>
+#include <QClipboard>
 #include <QContextMenuEvent>
 #include <QCoreApplication>
 #include <QFileDialog>
@@ -168,15 +171,12 @@ void NetworkCanvas::relayout() {
                 row.problem = true;
                 row.tip = why;
             }
-            for (const auto &b : d.bridges)
-                if (b.end == row.end) {
-                    using K = network::BridgeDescription::Kind;
-                    row.bridge =
-                        b.kind == K::Pty      ? NetworkView::tr("bridge: pseudo-terminal")
-                        : b.kind == K::Serial ? NetworkView::tr("bridge: serial %1").arg(b.where)
-                        : b.kind == K::Tcp    ? NetworkView::tr("bridge: TCP to %1").arg(b.where)
-                                           : NetworkView::tr("bridge: listens on %1").arg(b.where);
-                }
+            row.bridge = m_view->bridgeText(row.end);
+            if (const auto live = m_view->liveBridges().find(row.end);
+                live != m_view->liveBridges().end() && !live->second.error.isEmpty()) {
+                row.problem = true;
+                row.tip = live->second.error;
+            }
             box.rows.push_back(row);
         }
         l.boxes.push_back(box);
@@ -640,34 +640,93 @@ void NetworkView::editPeriod() {
         refuse(why);
 }
 
+QString NetworkView::bridgeText(const QString &end) const {
+    const network::BridgeDescription *b = m_document->bridgeOf(end);
+    if (!b)
+        return {};
+    using K = network::BridgeDescription::Kind;
+    const auto live = m_live.find(end);
+    const QString reached = live == m_live.end() ? QString() : live->second.reached;
+    if (live != m_live.end() && !live->second.error.isEmpty())
+        //: a bridge whose line did not open; the tooltip says why
+        return tr("bridge: failed (%1)").arg(b->kind == K::Pty ? tr("pseudo-terminal") : b->where);
+    switch (b->kind) {
+    case K::Pty:
+        //: %1 the pseudo-terminal's path while the network runs
+        return reached.isEmpty() ? tr("bridge: pseudo-terminal")
+                                 : tr("bridge: pseudo-terminal %1").arg(reached);
+    case K::Serial:
+        return tr("bridge: serial %1").arg(b->where);
+    case K::Tcp:
+        return tr("bridge: TCP to %1").arg(b->where);
+    case K::Listen:
+        return tr("bridge: listens on %1").arg(reached.isEmpty() ? b->where : reached);
+    }
+    return {};
+}
+
+void NetworkView::setLiveBridges(std::map<QString, LiveBridge> live) {
+    if (live.size() == m_live.size() &&
+        std::equal(live.begin(), live.end(), m_live.begin(), [](const auto &a, const auto &b) {
+            return a.first == b.first && a.second.reached == b.second.reached &&
+                   a.second.error == b.second.error;
+        }))
+        return;
+    m_live = std::move(live);
+    m_canvas->relayout();
+}
+
+void NetworkView::editBridge(const QString &end,
+                             std::optional<network::BridgeDescription::Kind> kind) {
+    const QString station = end.section(QLatin1Char('/'), 0, 0);
+    const QString port = end.section(QLatin1Char('/'), 1);
+    const auto *s = m_document->station(station);
+    if (!s)
+        return;
+    const NetworkStationInfo info = m_document->stationInfo(station);
+    model::PortConfig config;
+    QString why;
+    if (!model::readPortConfig(*info.target, info.target->model(info.model), port,
+                               {{m_document->effectivePortSettings(station, port), end}}, &config,
+                               &why)) {
+        refuse(why);
+        return;
+    }
+    network::BridgeDescription bridge;
+    bridge.end = end;
+    if (const network::BridgeDescription *b = m_document->bridgeOf(end))
+        bridge = *b;
+    NetworkBridgeDialog dialog(bridge, *config.application, config.line,
+                               s->ports.value(port).toObject(), this);
+    if (kind)
+        dialog.setKind(*kind);
+    if (dialog.exec() != QDialog::Accepted)
+        return;
+    if (!m_document->setBridge(dialog.bridge(), dialog.portSettings(), &why))
+        refuse(why);
+}
+
+void NetworkView::removeBridge(const QString &end) {
+    QString why;
+    if (!m_document->removeBridge(end, &why))
+        refuse(why);
+}
+
 void NetworkView::addBridgeMenu(QMenu *menu, const QString &end) {
     using K = network::BridgeDescription::Kind;
-    QMenu *bridges = menu->addMenu(tr("Add &Bridge"));
-    const auto add = [this, end](K kind, const QString &label, const QString &example) {
+    QMenu *bridges = menu->addMenu(tr("&Bridge To"));
+    bridges->setObjectName(QStringLiteral("networkBridgeTo"));
+    // A pseudo-terminal needs nothing more; the others ask where (network_bridge_dialog.h).
+    bridges->addAction(tr("&Pseudo-terminal"), this, [this, end] {
         network::BridgeDescription b;
         b.end = end;
-        b.kind = kind;
-        if (kind != K::Pty) {
-            bool ok = false;
-            b.where = QInputDialog::getText(this, tr("Add Bridge"), label, QLineEdit::Normal,
-                                            example, &ok);
-            if (!ok)
-                return;
-        }
         QString why;
         if (!m_document->addBridge(b, &why))
             refuse(why);
-    };
-    bridges->addAction(tr("&Pseudo-terminal"), this, [add] { add(K::Pty, {}, {}); });
-    bridges->addAction(tr("&Serial Port..."), this, [add] {
-        add(K::Serial, tr("Serial port:"), QStringLiteral("/dev/ttyUSB0"));
     });
-    bridges->addAction(tr("&TCP Connect..."), this, [add] {
-        add(K::Tcp, tr("Serial device server (HOST:PORT):"), QStringLiteral("192.168.1.50:4001"));
-    });
-    bridges->addAction(tr("TCP &Listen..."), this, [add] {
-        add(K::Listen, tr("Listen on (ADDRESS:PORT):"), QStringLiteral("0.0.0.0:5020"));
-    });
+    bridges->addAction(tr("&Serial Port..."), this, [this, end] { editBridge(end, K::Serial); });
+    bridges->addAction(tr("&TCP Device Server..."), this, [this, end] { editBridge(end, K::Tcp); });
+    bridges->addAction(tr("TCP &Listen..."), this, [this, end] { editBridge(end, K::Listen); });
 }
 
 void NetworkView::contextMenuAt(const QPoint &canvasPoint, const QPoint &global) {
@@ -687,14 +746,18 @@ void NetworkView::contextMenuAt(const QPoint &canvasPoint, const QPoint &global)
         bool bridged = false;
         for (const auto &b : m_document->description().bridges)
             bridged = bridged || b.end == item;
-        if (bridged)
-            menu.addAction(tr("Remove &Bridge"), this, [this, item] {
-                QString why;
-                if (!m_document->removeBridge(item, &why))
-                    refuse(why);
-            });
-        else
+        if (bridged) {
+            menu.addAction(tr("Edit &Bridge..."), this, [this, item] { editBridge(item); });
+            if (const auto live = m_live.find(item);
+                live != m_live.end() && !live->second.reached.isEmpty())
+                menu.addAction(tr("&Copy %1").arg(live->second.reached), this,
+                               [reached = live->second.reached] {
+                                   QApplication::clipboard()->setText(reached);
+                               });
+            menu.addAction(tr("Remove Brid&ge"), this, [this, item] { removeBridge(item); });
+        } else {
             addBridgeMenu(&menu, item);
+        }
         menu.addSeparator();
     }
     if (item.startsWith(QLatin1String("wire:")))

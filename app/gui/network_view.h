@@ -8,8 +8,12 @@
 // removes what is selected (a station after saying what goes with it); the context menu holds
 // every edit of NetworkDocument. Double-click on a station asks for its program.
 
+#include "network/network_file.h"
+
 #include <QScrollArea>
 
+#include <map>
+#include <optional>
 #include <vector>
 
 namespace rung::app {
@@ -50,6 +54,23 @@ public:
     void addStationFromProgram();
     void addNewProjectStation();
     void editPeriod();
+    // A port's bridge (network_bridge_dialog.h): made, or changed when the port has one; the
+    // dialog opens on `kind` when given. removeBridge takes it away. Each is one undo step.
+    void editBridge(const QString &end,
+                    std::optional<network::BridgeDescription::Kind> kind = std::nullopt);
+    void removeBridge(const QString &end);
+
+    // The bridges of the running network (network_bridge_controller.h): where each port's line
+    // is reached, or why it failed; drawn on the port.
+    struct LiveBridge {
+        QString reached;
+        QString error;
+    };
+    void setLiveBridges(std::map<QString, LiveBridge> live);
+    const std::map<QString, LiveBridge> &liveBridges() const { return m_live; }
+    // The text the view draws for a port's bridge ("bridge: pseudo-terminal /dev/pts/5"); ""
+    // when it has none.
+    QString bridgeText(const QString &end) const;
 
     // Quiet: a refused edit is only signalled (editRefused), no message box (tests, scripts).
     void setQuiet(bool quiet) { m_quiet = quiet; }
@@ -77,6 +98,7 @@ private:
     double m_zoom = 1.0;
     QString m_selection;
     bool m_quiet = false;
+    std::map<QString, LiveBridge> m_live;
 };
 
 // File > Save / Save As of a network: writes `document` to `file` (empty: where it came from);

@@ -2,6 +2,7 @@
 
 #include "app/cli/cli_network.h"
 #include "app/gui/file_dialogs.h"
+#include "app/gui/network_bridge_controller.h"
 #include "app/gui/network_chart.h"
 #include "app/gui/network_document.h"
 #include "app/gui/network_traffic_view.h"
@@ -204,6 +205,13 @@ void NetworkWindow::buildWindow() {
     tabifyDockWidget(m_chartDock, m_trafficDock);
     m_chartDock->raise();
 
+    // The bridges, live: where each is reached (a pseudo-terminal's path, to copy).
+    m_bridges = new NetworkBridgeController(m_doc, m_view, this);
+    connect(m_bridges, &NetworkBridgeController::message, this,
+            [this](const QString &text) { statusBar()->showMessage(text, 10000); });
+    addDockWidget(Qt::RightDockWidgetArea, m_bridges->dock());
+    m_bridges->dock()->hide(); // until the network has a bridge
+
     m_status = new QLabel(this);
     m_status->setObjectName(QStringLiteral("networkStatus"));
     statusBar()->addPermanentWidget(m_status);
@@ -341,6 +349,7 @@ void NetworkWindow::buildMenus() {
     view->addAction(m_watchDock->toggleViewAction());
     view->addAction(m_chartDock->toggleViewAction());
     view->addAction(m_trafficDock->toggleViewAction());
+    view->addAction(m_bridges->dock()->toggleViewAction());
     updateActions();
 }
 
@@ -550,6 +559,7 @@ void NetworkWindow::dropSession() {
     m_watch->setSession(nullptr);
     m_chart->setSession(nullptr);
     m_traffic->clear();
+    m_bridges->setSession(nullptr);
     m_session.reset();
     m_stale = false;
     buildFaultsMenu();
@@ -637,6 +647,7 @@ bool NetworkWindow::buildSession(QString *error) {
         m_chart->addDevice(d);
     if (!m_views.empty() && !selectStation(station))
         selectStation(m_views.front().name);
+    m_bridges->setSession(m_session.get());
     buildFaultsMenu();
     updateActions();
     retranslate();

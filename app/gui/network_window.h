@@ -35,6 +35,7 @@ class StationSource;
 
 namespace rung::app {
 
+class NetworkBridgeController;
 class NetworkChart;
 class NetworkDocument;
 class NetworkView;
@@ -72,6 +73,7 @@ public:
     NetworkChart *chart() const { return m_chart; }
     NetworkTrafficView *traffic() const { return m_traffic; }
     editor::FrontPanel *frontPanel() const { return m_panel; }
+    NetworkBridgeController *bridges() const { return m_bridges; }
     // Adds "STATION/DEVICE" to the watch table; false with the reason in the status bar.
     bool watch(const QString &device);
     // The status line: run state and virtual time.
@@ -151,6 +153,7 @@ private:
     class QDockWidget *m_chartDock = nullptr;
     class QDockWidget *m_trafficDock = nullptr;
     class QDockWidget *m_panelDock = nullptr;
+    NetworkBridgeController *m_bridges = nullptr; // the Bridges dock, live bridges
 };
 
 } // namespace rung::app

@@ -51,4 +51,19 @@ void WatchListsCommand::undo() {
     m_doc->applyWatchLists(m_old);
 }
 
+PortsCommand::PortsCommand(Document *doc, QJsonObject oldPorts, QJsonObject newPorts,
+                           const QString &label)
+    : QUndoCommand(label)
+    , m_doc(doc)
+    , m_old(std::move(oldPorts))
+    , m_new(std::move(newPorts)) {}
+
+void PortsCommand::redo() {
+    m_doc->applyPorts(m_new);
+}
+
+void PortsCommand::undo() {
+    m_doc->applyPorts(m_old);
+}
+
 } // namespace rung::editor

@@ -58,4 +58,18 @@ private:
     std::vector<model::WatchList> m_new;
 };
 
+// The project's communication ports ("ports": the 2nd COM Port Setting and the like) replaced
+// as a whole.
+class PortsCommand : public QUndoCommand {
+public:
+    PortsCommand(Document *doc, QJsonObject oldPorts, QJsonObject newPorts, const QString &label);
+    void redo() override;
+    void undo() override;
+
+private:
+    Document *m_doc;
+    QJsonObject m_old;
+    QJsonObject m_new;
+};
+
 } // namespace rung::editor

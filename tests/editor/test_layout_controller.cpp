@@ -36,16 +36,22 @@ struct LayoutAlone {
     app::LayoutController layout{&window, ladder, listing, &window};
     QMenu view;
 
-    LayoutAlone() {
-        for (const char *name :
-             {"projectDock", "crossReferenceDock", "ioDock", "simulationDock", "scanDebuggerDock",
-              "connectionDock", "problemsDock", "watchDock", "timingChartDock", "testsDock"}) {
+    // `frontPanel`: with the Front Panel dock (hidden until a simulation, as the window has
+    // it); without it, the docks of a window before it came.
+    explicit LayoutAlone(bool frontPanel = false) {
+        for (const char *name : {"projectDock", "crossReferenceDock", "ioDock", "simulationDock",
+                                 "scanDebuggerDock", "connectionDock", "problemsDock", "watchDock",
+                                 "timingChartDock", "testsDock", "frontPanelDock"}) {
+            if (!frontPanel && QLatin1String(name) == QLatin1String("frontPanelDock"))
+                continue;
             auto *d = new QDockWidget(QString::fromLatin1(name), &window);
             d->setObjectName(QString::fromLatin1(name));
             d->setWidget(new QLabel(QString::fromLatin1(name)));
             window.addDockWidget(Qt::BottomDockWidgetArea, d);
         }
         dock("ioDock")->hide();
+        if (frontPanel)
+            dock("frontPanelDock")->hide();
         layout.addActions(&view);
     }
     QDockWidget *dock(const char *name) {
@@ -161,6 +167,32 @@ TEST(LayoutControllerAlone, TheNextStartRestoresTheDocks) {
     EXPECT_FALSE(next.dock("watchDock")->isVisible());
     EXPECT_EQ(next.window.dockWidgetArea(next.dock("timingChartDock")), Qt::RightDockWidgetArea);
     EXPECT_TRUE(next.dock("problemsDock")->isVisible());
+    forgetLayout();
+}
+
+// A layout saved by a window before the Front Panel dock (layout version 2): restored as it
+// was, the new dock would be left where it was added, alone below the findings, not a tab
+// beside the run controls or the terminals where dock_layout.h puts it. Such a layout is not
+// restored (kDockLayoutVersion 3): the first start's groups come instead.
+TEST(LayoutControllerAlone, ALayoutSavedBeforeTheFrontPanelPutsItsDockWhereItBelongs) {
+    forgetLayout();
+    {
+        LayoutAlone before;
+        before.layout.restore();
+        before.window.show();
+        before.settle();
+        QSettings().setValue(QStringLiteral("window/state"), before.window.saveState(2));
+    }
+    LayoutAlone next(true);
+    next.layout.restore();
+    next.window.show();
+    next.settle();
+    next.dock("frontPanelDock")->show(); // the first simulation shows it
+    next.settle();
+    EXPECT_FALSE(next.dock("frontPanelDock")->isFloating());
+    EXPECT_TRUE(next.together("simulationDock", "frontPanelDock") ||
+                next.together("ioDock", "frontPanelDock"))
+        << "the front panel is a tab beside the run controls or the terminals";
     forgetLayout();
 }
 

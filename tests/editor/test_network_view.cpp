@@ -3,6 +3,8 @@
 // the target's tables, and the view draws, selects, wires and fits the screen in every
 // language.
 
+#include "answer_dialogs.h"
+
 #include "app/gui/language.h"
 #include "app/gui/network_document.h"
 #include "app/gui/network_port_dialog.h"
@@ -535,19 +537,7 @@ TEST(NetworkPortDialog, OffersThePl110sProtocolsPortByPort) {
     EXPECT_TRUE(layered.settings().isEmpty());
 }
 
-// Answers the modal dialogs that open while `run` runs, each with `answer`, which returns true
-// once it has closed the dialog.
-void answerDialogs(const std::function<bool(QWidget *)> &answer, const std::function<void()> &run) {
-    QTimer timer;
-    timer.setInterval(5);
-    QObject::connect(&timer, &QTimer::timeout, [&answer] {
-        if (QWidget *modal = QApplication::activeModalWidget())
-            answer(modal);
-    });
-    timer.start();
-    run();
-    timer.stop();
-}
+using test::answerDialogs;
 
 TEST(NetworkView, DeleteOnAStationAsksWhatGoesWithIt) {
     NetworkDocument doc;

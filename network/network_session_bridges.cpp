@@ -1,0 +1,152 @@
+#include "network/network_session_bridges.h"
+
+#include "network/bridge.h"
+#include "network/network.h"
+#include "network/tr.h"
+
+#include "comms/transport/transport.h"
+
+#include <QDeadlineTimer>
+
+#include <algorithm>
+
+namespace rung::network {
+
+// ---- BridgeLines --------------------------------------------------------------------------
+
+BridgeLines::BridgeLines() = default;
+BridgeLines::~BridgeLines() = default;
+
+QString BridgeLines::lineKey(const BridgeDescription &b, const model::SerialSettings &line) {
+    // A serial port opened at another rate is another line; a pseudo-terminal or a socket
+    // carries bytes only.
+    const QString rate =
+        b.kind == BridgeDescription::Kind::Serial
+            ? QStringLiteral(" %1 %2").arg(line.baud).arg(model::frameFormatText(line))
+            : QString();
+    return QStringLiteral("%1 %2 %3%4").arg(b.end).arg(int(b.kind)).arg(b.where, rate);
+}
+
+std::shared_ptr<comms::Transport> BridgeLines::take(const BridgeDescription &bridge,
+                                                    const model::SerialSettings &line,
+                                                    QString *reached, QString *error) {
+    const QString key = lineKey(bridge, line);
+    {
+        std::lock_guard lock(m_mutex);
+        for (const Line &l : m_lines)
+            if (l.key == key) {
+                *reached = l.reached;
+                return l.transport;
+            }
+    }
+    // Opened outside the lock: a TCP connection may take seconds.
+    std::shared_ptr<comms::Transport> transport = openBridgeLine(bridge, line, reached, error);
+    if (!transport)
+        return nullptr;
+    std::lock_guard lock(m_mutex);
+    m_lines.push_back({key, transport, *reached});
+    return transport;
+}
+
+void BridgeLines::keepOnly(const std::vector<QString> &used) {
+    std::vector<Line> closing; // closed outside the lock
+    {
+        std::lock_guard lock(m_mutex);
+        auto unused = std::stable_partition(m_lines.begin(), m_lines.end(), [&](const Line &l) {
+            return std::find(used.begin(), used.end(), l.key) != used.end();
+        });
+        std::move(unused, m_lines.end(), std::back_inserter(closing));
+        m_lines.erase(unused, m_lines.end());
+    }
+}
+
+void BridgeLines::drop(const QString &key) {
+    std::vector<Line> closing;
+    {
+        std::lock_guard lock(m_mutex);
+        auto gone = std::stable_partition(m_lines.begin(), m_lines.end(),
+                                          [&](const Line &l) { return l.key != key; });
+        std::move(gone, m_lines.end(), std::back_inserter(closing));
+        m_lines.erase(gone, m_lines.end());
+    }
+}
+
+std::size_t BridgeLines::size() const {
+    std::lock_guard lock(m_mutex);
+    return m_lines.size();
+}
+
+// ---- SessionBridges -----------------------------------------------------------------------
+
+SessionBridges::SessionBridges(std::shared_ptr<BridgeLines> lines,
+                               std::vector<BridgeDescription> bridges)
+    : m_lines(std::move(lines)) {
+    for (BridgeDescription &b : bridges)
+        m_status.push_back({std::move(b), {}, {}, false});
+}
+
+SessionBridges::~SessionBridges() = default;
+
+const std::vector<BridgeStatus> &SessionBridges::attach(Network &network) {
+    m_live.clear();
+    std::vector<QString> used;
+    for (std::size_t i = 0; i < m_status.size(); ++i) {
+        BridgeStatus &s = m_status[i];
+        s.open = false;
+        s.error.clear();
+        model::SerialSettings line;
+        QString why;
+        std::shared_ptr<comms::Transport> transport;
+        BridgeEndpoint *endpoint = nullptr;
+        if (bridgeablePort(network, s.bridge.end, {}, &line, &why))
+            transport = m_lines->take(s.bridge, line, &s.reached, &why);
+        if (transport)
+            endpoint = attachBridgeLine(network, s.bridge.end, transport, &why);
+        if (!endpoint) {
+            //: %1 the bridged port ("s5/CP2"), %2 why its line did not open
+            s.error =
+                NetworkSessionTr::tr("%1: the bridge did not open: %2").arg(s.bridge.end, why);
+            continue;
+        }
+        const QString key = BridgeLines::lineKey(s.bridge, line);
+        used.push_back(key);
+        s.open = true;
+        m_live.push_back({i, endpoint, std::move(transport), key});
+    }
+    m_lines->keepOnly(used);
+    return m_status;
+}
+
+bool SessionBridges::poll(Network &network) {
+    bool changed = false;
+    for (auto it = m_live.begin(); it != m_live.end();) {
+        BridgeStatus &s = m_status[it->index];
+        QString failure = it->endpoint->failure();
+        if (failure.isEmpty()) {
+            // Whatever is there now; the worker never waits for a line.
+            for (int reads = 0; reads < 16; ++reads) {
+                const comms::ReadResult r = it->line->read(QDeadlineTimer(0));
+                if (r.status == comms::ReadResult::Status::Data)
+                    network.transmit(it->endpoint, r.bytes);
+                else if (r.status == comms::ReadResult::Status::Failed)
+                    failure = r.message;
+                if (r.status != comms::ReadResult::Status::Data)
+                    break;
+            }
+        }
+        if (failure.isEmpty()) {
+            ++it;
+            continue;
+        }
+        //: %1 the bridged port ("s5/CP2"), %2 what happened to its line
+        s.error = NetworkSessionTr::tr("%1: the bridge's line failed: %2 (Stop opens it again)")
+                      .arg(s.bridge.end, failure);
+        s.open = false;
+        m_lines->drop(it->key);
+        it = m_live.erase(it);
+        changed = true;
+    }
+    return changed;
+}
+
+} // namespace rung::network

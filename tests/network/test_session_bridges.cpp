@@ -1,0 +1,135 @@
+// Bridges of a network running in a NetworkSession, as the IDE runs it
+// (network_session_bridges.h): the worker opens the lines, a real master on the pseudo-terminal
+// polls the simulated slave, Stop builds the network again on the same line, a line that does
+// not open says what, where and why, and the lines close when no bridge needs them.
+
+#include "network/network_session.h"
+
+#include "network_fixture.h"
+
+#include "../eventually.h"
+
+#include "comms/protocol/modbus_master.h"
+#include "comms/transport/pty_transport.h"
+
+#include <QDeadlineTimer>
+
+#include <gtest/gtest.h>
+
+namespace rung::network::test {
+namespace {
+
+using waits::eventually;
+
+const char *kBridgedVb = "; target: vigor\nLD M9000\nMOV K321 D0\nEND\n";
+
+std::unique_ptr<NetworkSession> bridgedSession(const char *bridges, QString *error) {
+    NetworkDescription d;
+    const QByteArray json =
+        QByteArray(R"({"stations": [{"name": "plc", "program": "s.il", "model": "VB",
+            "ports": {"CP2": {"application": "modbus", "station": 1}}}], "bridges": )") +
+        bridges + "}";
+    if (!parseNetwork(json, QStringLiteral("t.rungnet"), &d, error))
+        return nullptr;
+    return NetworkSession::start(
+        d, listingLoader({{QStringLiteral("s.il"), QString::fromLatin1(kBridgedVb)}}), error);
+}
+
+// D0 of MODBUS station 1 through the pseudo-terminal at `path`, by the product's own master.
+std::vector<std::uint16_t> holdingRegister0(const QString &path, QString *error) {
+    comms::PtyTransport hmi(path);
+    if (!hmi.open(error))
+        return {};
+    comms::modbus::Request read;
+    read.function = comms::modbus::ReadHoldingRegisters;
+    read.count = 1;
+    comms::modbus::ReplyDecoder reply(comms::modbus::Framing::Rtu, 1, read);
+    if (!hmi.write(comms::modbus::rtuFrame(1, comms::modbus::encodeRequestPdu(read)),
+                   QDeadlineTimer(1000), error))
+        return {};
+    eventually([&] {
+        const comms::ReadResult r = hmi.read(QDeadlineTimer(2));
+        if (r.status == comms::ReadResult::Status::Data)
+            reply.feed(r.bytes);
+        return reply.status() != comms::FrameStatus::NeedMore;
+    });
+    if (reply.status() != comms::FrameStatus::Complete) {
+        *error = QStringLiteral("no whole reply");
+        return {};
+    }
+    return reply.response().registers;
+}
+
+TEST(SessionBridges, AMasterOnThePtyPollsTheRunningNetworkAndStopKeepsThePath) {
+    QString error;
+    std::unique_ptr<NetworkSession> session =
+        bridgedSession(R"([{"port": "plc/CP2", "pty": true}])", &error);
+    ASSERT_TRUE(session) << error.toStdString();
+    EXPECT_TRUE(session->bridgeStatus().empty()) << "no line before startBridges";
+    auto lines = std::make_shared<BridgeLines>();
+    session->startBridges(lines);
+    ASSERT_TRUE(eventually(
+        [&] { return !session->bridgeStatus().empty() && session->bridgeStatus()[0].open; }));
+    const QString path = session->bridgeStatus()[0].reached;
+    EXPECT_TRUE(path.startsWith(QStringLiteral("/dev/pts/"))) << path.toStdString();
+    EXPECT_TRUE(session->bridgeStatus()[0].error.isEmpty());
+    session->run();
+    EXPECT_EQ(holdingRegister0(path, &error), (std::vector<std::uint16_t>{321}))
+        << error.toStdString();
+    bool fromBridge = false;
+    EXPECT_TRUE(eventually([&] {
+        for (const TrafficRecord &t : session->takeTraffic())
+            fromBridge = fromBridge || t.sender == QLatin1String("bridge:plc/CP2");
+        return fromBridge;
+    }));
+
+    // Stop: the network built again, on the same pseudo-terminal.
+    session->stop();
+    session->run();
+    EXPECT_EQ(holdingRegister0(path, &error), (std::vector<std::uint16_t>{321}))
+        << error.toStdString();
+    EXPECT_EQ(session->bridgeStatus()[0].reached, path);
+
+    // A new session (an edit) with the same lines: the same path again.
+    session.reset();
+    session = bridgedSession(R"([{"port": "plc/CP2", "pty": true}])", &error);
+    ASSERT_TRUE(session) << error.toStdString();
+    session->startBridges(lines);
+    ASSERT_TRUE(eventually(
+        [&] { return !session->bridgeStatus().empty() && session->bridgeStatus()[0].open; }));
+    EXPECT_EQ(session->bridgeStatus()[0].reached, path);
+    EXPECT_EQ(lines->size(), 1u);
+
+    // A session without the bridge closes its line.
+    session.reset();
+    session = bridgedSession(R"([])", &error);
+    ASSERT_TRUE(session) << error.toStdString();
+    session->startBridges(lines);
+    EXPECT_TRUE(eventually([&] { return lines->size() == 0; }));
+}
+
+TEST(SessionBridges, ALineThatDoesNotOpenSaysWhatWhereAndWhyAndTheNetworkRunsOn) {
+    QString error;
+    std::unique_ptr<NetworkSession> session = bridgedSession(
+        R"([{"port": "plc/CP2", "serial": "/dev/ttyRUNGNOSUCHPORT"},
+            {"port": "plc/CP1", "pty": true}])",
+        &error);
+    ASSERT_TRUE(session) << error.toStdString();
+    auto lines = std::make_shared<BridgeLines>();
+    session->startBridges(lines);
+    ASSERT_TRUE(eventually([&] { return session->bridgeStatus().size() == 2; }));
+    const BridgeStatus &serial = session->bridgeStatus()[0];
+    EXPECT_FALSE(serial.open);
+    EXPECT_TRUE(serial.error.contains(QStringLiteral("plc/CP2"))) << serial.error.toStdString();
+    EXPECT_TRUE(serial.error.contains(QStringLiteral("/dev/ttyRUNGNOSUCHPORT")))
+        << serial.error.toStdString();
+    EXPECT_TRUE(session->bridgeStatus()[1].open) << "the other bridge opens all the same: "
+                                                 << session->bridgeStatus()[1].error.toStdString();
+    EXPECT_EQ(lines->size(), 1u);
+    session->setSpeed(0);
+    session->run();
+    EXPECT_TRUE(eventually([&] { return session->nowUs() > 100000; }));
+}
+
+} // namespace
+} // namespace rung::network::test
