@@ -50,9 +50,9 @@ bool bridgeablePort(Network &network, const QString &portName, const QString &wh
     return true;
 }
 
-std::unique_ptr<comms::Transport> openBridgeLine(const BridgeDescription &b,
-                                                 const model::SerialSettings &line, QString *where,
-                                                 QString *error) {
+std::unique_ptr<comms::Transport>
+openBridgeLine(const BridgeDescription &b, const model::SerialSettings &line, QString *where,
+               QString *error, const std::function<void(comms::Transport *)> &opening) {
     std::unique_ptr<comms::Transport> transport;
     switch (b.kind) {
     case BridgeDescription::Kind::Pty: {
@@ -98,6 +98,8 @@ std::unique_ptr<comms::Transport> openBridgeLine(const BridgeDescription &b,
         break;
     }
     }
+    if (opening)
+        opening(transport.get());
     if (!transport->isOpen() && !transport->open(error))
         return nullptr;
     if (b.kind == BridgeDescription::Kind::Listen)

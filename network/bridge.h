@@ -13,6 +13,7 @@
 
 #include <QElapsedTimer>
 
+#include <functional>
 #include <memory>
 #include <vector>
 
@@ -46,9 +47,11 @@ bool bridgeablePort(Network &network, const QString &port, const QString &where,
 // format, a TCP connection to a device server, or a socket listening for a master. *reached
 // says how a peer reaches it (the pseudo-terminal's path, the serial port's name, HOST:PORT).
 // Null with what, where and why. Blocks while it connects: not for the UI thread.
-std::unique_ptr<comms::Transport> openBridgeLine(const BridgeDescription &bridge,
-                                                 const model::SerialSettings &line,
-                                                 QString *reached, QString *error);
+// `opening`, when given, is told of the line before it opens (to cancel() a connection that
+// takes long from another thread).
+std::unique_ptr<comms::Transport>
+openBridgeLine(const BridgeDescription &bridge, const model::SerialSettings &line, QString *reached,
+               QString *error, const std::function<void(comms::Transport *)> &opening = {});
 // Joins an open line to the port's wire (a wire of its own when the port is on none); the
 // network owns the endpoint, which it returns (null with why when the port cannot be bridged).
 BridgeEndpoint *attachBridgeLine(Network &network, const QString &port,

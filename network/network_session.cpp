@@ -105,6 +105,8 @@ NetworkSession::NetworkSession(NetworkDescription description, ProgramLoader loa
 }
 
 NetworkSession::~NetworkSession() {
+    if (m_bridgeLinesShown) // a bridge's connection being opened gives up: no wait for it
+        m_bridgeLinesShown->cancelOpening();
     control([this] { m_quit = true; });
     m_worker.join();
 }
@@ -264,6 +266,7 @@ std::vector<TrafficRecord> NetworkSession::takeTraffic(bool *startedOver) {
 }
 
 void NetworkSession::startBridges(std::shared_ptr<BridgeLines> lines) {
+    m_bridgeLinesShown = lines;
     control([this, &lines] { m_bridgeLines = std::move(lines); });
 }
 

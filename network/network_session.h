@@ -215,8 +215,9 @@ private:
     // Bridges: lines handed by startBridges under m_mutex; the worker's bridges; their
     // statuses as the owner thread last heard them.
     std::shared_ptr<BridgeLines> m_bridgeLines;
-    std::unique_ptr<SessionBridges> m_bridges; // worker thread
-    std::vector<BridgeStatus> m_bridgeStatus;  // owner thread
+    std::shared_ptr<BridgeLines> m_bridgeLinesShown; // owner thread: to cancel an opening
+    std::unique_ptr<SessionBridges> m_bridges;       // worker thread
+    std::vector<BridgeStatus> m_bridgeStatus;        // owner thread
     void postBridgeStatus(const std::vector<BridgeStatus> &status);
 
     std::thread m_worker;

@@ -9,6 +9,7 @@
 #include <QDeadlineTimer>
 
 #include <algorithm>
+#include <utility>
 
 namespace rung::network {
 
@@ -39,11 +40,16 @@ std::shared_ptr<comms::Transport> BridgeLines::take(const BridgeDescription &bri
                 return l.transport;
             }
     }
-    // Opened outside the lock: a TCP connection may take seconds.
-    std::shared_ptr<comms::Transport> transport = openBridgeLine(bridge, line, reached, error);
+    // Opened outside the lock: a TCP connection may take seconds (cancelOpening ends it).
+    std::shared_ptr<comms::Transport> transport =
+        openBridgeLine(bridge, line, reached, error, [this](comms::Transport *t) {
+            std::lock_guard lock(m_mutex);
+            m_opening = t;
+        });
+    std::lock_guard lock(m_mutex);
+    m_opening = nullptr;
     if (!transport)
         return nullptr;
-    std::lock_guard lock(m_mutex);
     m_lines.push_back({key, transport, *reached});
     return transport;
 }
@@ -69,6 +75,12 @@ void BridgeLines::drop(const QString &key) {
         std::move(gone, m_lines.end(), std::back_inserter(closing));
         m_lines.erase(gone, m_lines.end());
     }
+}
+
+void BridgeLines::cancelOpening() {
+    std::lock_guard lock(m_mutex);
+    if (m_opening)
+        m_opening->cancel();
 }
 
 std::size_t BridgeLines::size() const {

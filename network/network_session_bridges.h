@@ -56,6 +56,9 @@ public:
     void keepOnly(const std::vector<QString> &used);
     // Forgets a line that failed, so that the next take opens it again.
     void drop(const QString &key);
+    // Any thread: a line being opened now gives up (a TCP connection that takes long), so
+    // that a session ending does not wait for it.
+    void cancelOpening();
     // Lines open now (tests).
     std::size_t size() const;
 
@@ -69,6 +72,7 @@ private:
     };
     mutable std::mutex m_mutex;
     std::vector<Line> m_lines;
+    comms::Transport *m_opening = nullptr; // under m_mutex: the line being opened
 };
 
 // The worker's side: a network's bridges joined to their lines, and what the lines brought

@@ -509,7 +509,7 @@ Kilépési kód: 0 nincs hiba, 1 a programban hiba van, 2 használati vagy I/O h
 <context>
     <name>rung::app::ConnectionPanel</name>
     <message>
-        <location filename="../app/gui/connection_panel_link.cpp" line="+49"/>
+        <location filename="../app/gui/connection_panel_link.cpp" line="+50"/>
         <source>ON</source>
         <translation>BE</translation>
     </message>
@@ -554,7 +554,7 @@ Kilépési kód: 0 nincs hiba, 1 a programban hiba van, 2 használati vagy I/O h
         <translation>Megszakítva: semmi sem lett elküldve a PLC-nek</translation>
     </message>
     <message>
-        <location filename="../app/gui/connection_panel.cpp" line="+267"/>
+        <location filename="../app/gui/connection_panel.cpp" line="+209"/>
         <source>Settings</source>
         <translation>Beállítások</translation>
     </message>
@@ -574,42 +574,7 @@ Kilépési kód: 0 nincs hiba, 1 a programban hiba van, 2 használati vagy I/O h
         <translation>TCP</translation>
     </message>
     <message>
-        <location line="+1"/>
-        <source>Port:</source>
-        <translation>Port:</translation>
-    </message>
-    <message>
-        <location line="+5"/>
-        <source>Refresh</source>
-        <translation>Frissítés</translation>
-    </message>
-    <message>
-        <location line="+3"/>
-        <source>Baud rate:</source>
-        <translation>Átviteli sebesség (baud):</translation>
-    </message>
-    <message>
-        <location line="+1"/>
-        <source>Format:</source>
-        <translation>Formátum:</translation>
-    </message>
-    <message>
-        <location line="+1"/>
-        <source>Data bits, parity (N none, E even, O odd) and stop bits</source>
-        <translation>Adatbitek, paritás (N nincs, E páros, O páratlan) és stopbitek</translation>
-    </message>
-    <message>
-        <location line="+1"/>
-        <source>Host:</source>
-        <translation>Gép:</translation>
-    </message>
-    <message>
-        <location line="+1"/>
-        <source>TCP port:</source>
-        <translation>TCP-port:</translation>
-    </message>
-    <message>
-        <location line="+1"/>
+        <location line="+6"/>
         <source>Station:</source>
         <translation>Állomás:</translation>
     </message>
@@ -662,16 +627,6 @@ Kilépési kód: 0 nincs hiba, 1 a programban hiba van, 2 használati vagy I/O h
         <location line="+4"/>
         <source>The link protocol of the %1 is not published, so the IDE cannot talk to it. Instead: export the program as a console listing (File &gt; Export Instruction List) and load it with the PLC&apos;s own tool; to study the link, capture its traffic with &apos;rungstudio-cli record&apos;.</source>
         <translation>A(z) %1 kommunikációs protokollja nem nyilvános, ezért az IDE nem tud vele kapcsolatot teremteni. Helyette: exportálja a programot konzollistaként (Fájl &gt; Utasításlista exportálása), és töltse be a PLC saját eszközével; a kapcsolat tanulmányozásához rögzítse az adatforgalmát a &apos;rungstudio-cli record&apos; paranccsal.</translation>
-    </message>
-    <message>
-        <location line="+83"/>
-        <source>No port found</source>
-        <translation>Nem található port</translation>
-    </message>
-    <message>
-        <location line="+1"/>
-        <source>Choose or type a port</source>
-        <translation>Válasszon vagy írjon be portot</translation>
     </message>
     <message>
         <location filename="../app/gui/connection_panel_link.cpp" line="+23"/>
@@ -752,7 +707,7 @@ Ez egy valódi PLC memóriáját módosítja, amely gépet vezérelhet. Kapcsola
         <translation>Írja be a PLC vagy az átjárója gépnevét vagy IP-címét</translation>
     </message>
     <message>
-        <location line="+12"/>
+        <location line="+13"/>
         <source>Already connected: the panel shows what the PLC reports</source>
         <translation>Már csatlakozva: a panel mutatja, amit a PLC jelent</translation>
     </message>
@@ -875,7 +830,7 @@ Válaszidő: %6 ms (átlag %7, max. %8); frissítés: %9 ms, %10 keret</translat
         <translation>%1 nem írható: %2</translation>
     </message>
     <message>
-        <location filename="../app/gui/connection_panel.cpp" line="-131"/>
+        <location filename="../app/gui/connection_panel.cpp" line="-39"/>
         <source>A serial port, or a path typed in: a pseudo-terminal such as the one
 &apos;rungstudio-cli serve --pty&apos; prints, or the link that
 &apos;serve --pty --link PATH&apos; keeps at PATH, which still leads to the
@@ -884,11 +839,6 @@ PLC after serve restarts</source>
 &apos;rungstudio-cli serve --pty&apos; kiír, vagy a hivatkozás, amelyet a
 &apos;serve --pty --link ÚTVONAL&apos; az ÚTVONAL helyén tart, és amely a serve
 újraindítása után is a PLC-hez vezet</translation>
-    </message>
-    <message>
-        <location line="+5"/>
-        <source>Look for serial ports again</source>
-        <translation>Soros portok keresése újra</translation>
     </message>
 </context>
 <context>
@@ -1482,6 +1432,60 @@ PLC after serve restarts</source>
     </message>
 </context>
 <context>
+    <name>rung::app::LineSettingsForm</name>
+    <message>
+        <location filename="../app/gui/line_settings_form.cpp" line="+105"/>
+        <source>Port:</source>
+        <translation>Port:</translation>
+    </message>
+    <message>
+        <location line="+1"/>
+        <source>Refresh</source>
+        <translation>Frissítés</translation>
+    </message>
+    <message>
+        <location line="+1"/>
+        <source>Look for serial ports again</source>
+        <translation>Soros portok keresése újra</translation>
+    </message>
+    <message>
+        <location line="+2"/>
+        <source>Baud rate:</source>
+        <translation>Átviteli sebesség (baud):</translation>
+    </message>
+    <message>
+        <location line="+1"/>
+        <source>Format:</source>
+        <translation>Formátum:</translation>
+    </message>
+    <message>
+        <location line="+1"/>
+        <source>Data bits, parity (N none, E even, O odd) and stop bits</source>
+        <translation>Adatbitek, paritás (N nincs, E páros, O páratlan) és stopbitek</translation>
+    </message>
+    <message>
+        <location line="+1"/>
+        <location line="+12"/>
+        <source>Host:</source>
+        <translation>Gép:</translation>
+    </message>
+    <message>
+        <location line="-11"/>
+        <source>TCP port:</source>
+        <translation>TCP-port:</translation>
+    </message>
+    <message>
+        <location line="+45"/>
+        <source>No port found</source>
+        <translation>Nem található port</translation>
+    </message>
+    <message>
+        <location line="+1"/>
+        <source>Choose or type a port</source>
+        <translation>Válasszon vagy írjon be portot</translation>
+    </message>
+</context>
+<context>
     <name>rung::app::ListingController</name>
     <message>
         <location filename="../app/gui/listing_controller.cpp" line="+66"/>
@@ -1665,7 +1669,7 @@ PLC after serve restarts</source>
         <translation>Hozzá&amp;adás a figyelőlistához</translation>
     </message>
     <message>
-        <location line="+5"/>
+        <location line="+11"/>
         <source>In&amp;sert Rung</source>
         <translation>Létra&amp;fok beszúrása</translation>
     </message>
@@ -1714,7 +1718,7 @@ Ctrl+Z / Ctrl+Y: visszavonás / mégis, Ctrl+görgő: nagyítás, F4: a program 
         <translation>Online: Ctrl+W online kapcsolódás / bontás, Ctrl+1 STOP (PROGRAM), Ctrl+3 MONITOR, Ctrl+4 RUN</translation>
     </message>
     <message>
-        <location line="-156"/>
+        <location line="-162"/>
         <source>Select</source>
         <translation>Kijelölés</translation>
     </message>
@@ -1776,7 +1780,7 @@ Ctrl+Z / Ctrl+Y: visszavonás / mégis, Ctrl+görgő: nagyítás, F4: a program 
     </message>
     <message>
         <location line="+0"/>
-        <location filename="../app/gui/main_window_tools.cpp" line="+221"/>
+        <location filename="../app/gui/main_window_tools.cpp" line="+224"/>
         <source>CSV files (*.csv)</source>
         <translation>CSV-fájlok (*.csv)</translation>
     </message>
@@ -1791,7 +1795,17 @@ Ctrl+Z / Ctrl+Y: visszavonás / mégis, Ctrl+görgő: nagyítás, F4: a program 
         <translation>Létrafok megje&amp;gyzése...</translation>
     </message>
     <message>
-        <location line="+11"/>
+        <location line="+3"/>
+        <source>Communic&amp;ation Ports...</source>
+        <translation>Kommu&amp;nikációs portok...</translation>
+    </message>
+    <message>
+        <location line="+2"/>
+        <source>The PLC&apos;s own port settings, kept in the project: what Ladder Master calls the 2nd COM Port Setting, CPU Link, the PL110&apos;s COM1 / EXP1 / COM2 protocols</source>
+        <translation>A PLC saját portbeállításai, a projektben tárolva: amit a Ladder Master 2nd COM Port Settingnek nevez, a CPU Link, a PL110 COM1 / EXP1 / COM2 protokolljai</translation>
+    </message>
+    <message>
+        <location line="+12"/>
         <source>&amp;View</source>
         <translation>&amp;Nézet</translation>
     </message>
@@ -1999,8 +2013,29 @@ Ctrl+Z / Ctrl+Y: visszavonás / mégis, Ctrl+görgő: nagyítás, F4: a program 
         </translation>
     </message>
     <message>
+        <location line="+19"/>
+        <location line="+11"/>
+        <source>Communication Ports</source>
+        <translation>Kommunikációs portok</translation>
+    </message>
+    <message>
+        <location line="-10"/>
+        <source>The %1 has no port settings a program or a network uses.</source>
+        <translation>A(z) %1 nem rendelkezik olyan portbeállítással, amelyet program vagy hálózat használ.</translation>
+    </message>
+    <message>
+        <location line="+11"/>
+        <source>The communication ports are as they were</source>
+        <translation>A kommunikációs portok változatlanok</translation>
+    </message>
+    <message>
+        <location line="+1"/>
+        <source>Communication ports set: File &gt; Save keeps them in the project</source>
+        <translation>Kommunikációs portok beállítva: a Fájl &gt; Mentés a projektben tárolja őket</translation>
+    </message>
+    <message>
         <location filename="../app/gui/main_window.cpp" line="+84"/>
-        <location filename="../app/gui/main_window_tools.cpp" line="-23"/>
+        <location filename="../app/gui/main_window_tools.cpp" line="-55"/>
         <source>Cross Reference</source>
         <translation>Kereszthivatkozás</translation>
     </message>
@@ -2143,6 +2178,189 @@ Ctrl+Z / Ctrl+Y: visszavonás / mégis, Ctrl+görgő: nagyítás, F4: a program 
         <location line="+24"/>
         <source>%1 runs in real time; stop it with Ctrl+C</source>
         <translation>a(z) %1 valós időben fut; leállítás: Ctrl+C</translation>
+    </message>
+</context>
+<context>
+    <name>rung::app::NetworkBridgeController</name>
+    <message>
+        <location filename="../app/gui/network_bridge_controller.cpp" line="+30"/>
+        <source>%1: pseudo-terminal</source>
+        <extracomment>%1 a station&apos;s port (&quot;s5/CP2&quot;); the rest what its bridge goes to</extracomment>
+        <translation>%1: pszeudoterminál</translation>
+    </message>
+    <message>
+        <location line="+2"/>
+        <source>%1: serial port %2</source>
+        <translation>%1: %2 soros port</translation>
+    </message>
+    <message>
+        <location line="+2"/>
+        <source>%1: TCP to %2</source>
+        <translation>%1: TCP-kapcsolat ide: %2</translation>
+    </message>
+    <message>
+        <location line="+2"/>
+        <source>%1: listens on %2</source>
+        <translation>%1: figyel itt: %2</translation>
+    </message>
+    <message>
+        <location line="+74"/>
+        <source>Copied %1: where %2 is reached</source>
+        <translation>Másolva: %1, itt érhető el a(z) %2</translation>
+    </message>
+    <message>
+        <location line="+5"/>
+        <source>Bridges</source>
+        <translation>Hidak</translation>
+    </message>
+    <message>
+        <location line="+13"/>
+        <source>No bridge: right-click a station&apos;s port in the Network view and choose Bridge To to put it on a pseudo-terminal, a serial port or TCP.</source>
+        <translation>Nincs híd: kattintson jobb gombbal egy állomás portjára a Hálózat nézetben, és válassza a Híd ide menüt, hogy pszeudoterminálra, soros portra vagy TCP-re tegye.</translation>
+    </message>
+    <message>
+        <location line="+24"/>
+        <source>not open</source>
+        <translation>nincs nyitva</translation>
+    </message>
+    <message>
+        <location line="+1"/>
+        <source>Copy</source>
+        <translation>Másolás</translation>
+    </message>
+    <message>
+        <location line="+2"/>
+        <source>Copy where the bridge is reached to the clipboard</source>
+        <translation>A híd elérési helyének másolása a vágólapra</translation>
+    </message>
+    <message>
+        <location line="+3"/>
+        <source>Edit...</source>
+        <translation>Szerkesztés...</translation>
+    </message>
+    <message>
+        <location line="+4"/>
+        <source>Remove</source>
+        <translation>Eltávolítás</translation>
+    </message>
+    <message>
+        <location line="+19"/>
+        <source>Not running: the network is not built (the status bar says why)</source>
+        <translation>Nem fut: a hálózat nincs felépítve (az állapotsor megmondja, miért)</translation>
+    </message>
+    <message>
+        <location line="+2"/>
+        <source>Changed: Stop builds the network again with this bridge</source>
+        <translation>Módosítva: a Megállás ezzel a híddal építi fel újra a hálózatot</translation>
+    </message>
+    <message>
+        <location line="+6"/>
+        <source>Open: a master on this computer opens %1</source>
+        <translation>Nyitva: ezen a számítógépen egy master a(z) %1 útvonalat nyitja meg</translation>
+    </message>
+    <message>
+        <location line="+1"/>
+        <source>Open: %1</source>
+        <translation>Nyitva: %1</translation>
+    </message>
+    <message>
+        <location line="+2"/>
+        <source>Opening...</source>
+        <translation>Megnyitás...</translation>
+    </message>
+</context>
+<context>
+    <name>rung::app::NetworkBridgeDialog</name>
+    <message>
+        <location filename="../app/gui/network_bridge_dialog.cpp" line="+49"/>
+        <source>Bridge of %1</source>
+        <extracomment>%1 a station&apos;s port, &quot;s5/CP2&quot;</extracomment>
+        <translation>%1 hídja</translation>
+    </message>
+    <message>
+        <location line="+2"/>
+        <source>While the network runs, %1 is put on a real line: a master on this computer or the network reaches the simulated station, or the station reaches a real device.</source>
+        <translation>Amíg a hálózat fut, a(z) %1 valódi vonalra kerül: ezen a számítógépen vagy a hálózaton egy master eléri a szimulált állomást, vagy az állomás elér egy valódi eszközt.</translation>
+    </message>
+    <message>
+        <location line="+7"/>
+        <source>&amp;Pseudo-terminal (a master on this computer)</source>
+        <translation>&amp;Pszeudoterminál (master ezen a számítógépen)</translation>
+    </message>
+    <message>
+        <location line="+1"/>
+        <source>&amp;Serial port</source>
+        <translation>&amp;Soros port</translation>
+    </message>
+    <message>
+        <location line="+0"/>
+        <source>TCP: &amp;connect to a serial device server</source>
+        <translation>TCP: &amp;kapcsolódás soros eszközszerverhez</translation>
+    </message>
+    <message>
+        <location line="+1"/>
+        <source>TCP: &amp;listen for a master</source>
+        <translation>TCP: &amp;várakozás egy masterre</translation>
+    </message>
+    <message>
+        <location line="+13"/>
+        <source>The serial port the real line is on (a USB adapter: /dev/ttyUSB0)</source>
+        <translation>A soros port, amelyen a valódi vonal van (USB-átalakító: /dev/ttyUSB0)</translation>
+    </message>
+    <message>
+        <location line="+63"/>
+        <source>Listen on:</source>
+        <translation>Figyelési cím:</translation>
+    </message>
+    <message>
+        <location line="+2"/>
+        <source>any free port</source>
+        <translation>bármely szabad port</translation>
+    </message>
+    <message>
+        <location line="+2"/>
+        <source>An IP address of this computer, 0.0.0.0 for all of them, or localhost</source>
+        <translation>E számítógép egy IP-címe, 0.0.0.0 az összeshez, vagy localhost</translation>
+    </message>
+    <message>
+        <location line="+7"/>
+        <source>The serial device server&apos;s host name or IP address</source>
+        <translation>A soros eszközszerver gépneve vagy IP-címe</translation>
+    </message>
+    <message>
+        <location line="+4"/>
+        <source>A new pseudo-terminal (/dev/pts/N) opens when the network window builds the network, and stays while the window is open (Stop keeps it). Its path is shown on the port and in the Bridges dock, with a Copy button: give it to the master (mbpoll, an HMI, another Rung Studio&apos;s Connection dock).</source>
+        <translation>Amikor a hálózati ablak felépíti a hálózatot, új pszeudoterminál (/dev/pts/N) nyílik, és megmarad, amíg az ablak nyitva van (a Megállás megtartja). Útvonala a porton és a Hidak panelen látszik, Másolás gombbal: adja meg a masternek (mbpoll, HMI, egy másik Rung Studio Kapcsolat panelje).</translation>
+    </message>
+    <message>
+        <location line="+7"/>
+        <source>The serial port opens at the port&apos;s own rate and format, so that the simulated station and the real line agree: changing them here changes the port&apos;s settings.</source>
+        <translation>A soros port a port saját sebességével és formátumával nyílik meg, hogy a szimulált állomás és a valódi vonal egyezzen: ha itt módosítja őket, a port beállításai változnak.</translation>
+    </message>
+    <message>
+        <location line="+5"/>
+        <source>A serial device server in TCP server mode passes the bytes to its serial line: the simulated station reaches the real device behind it.</source>
+        <translation>A TCP-szerver módban működő soros eszközszerver a bájtokat a soros vonalára továbbítja: a szimulált állomás eléri a mögötte lévő valódi eszközt.</translation>
+    </message>
+    <message>
+        <location line="+5"/>
+        <source>A master connects over TCP and sends the serial line&apos;s bytes (RTU over TCP, not Modbus TCP), one master at a time.</source>
+        <translation>Egy master TCP-n kapcsolódik, és a soros vonal bájtjait küldi (RTU TCP-n át, nem Modbus TCP), egyszerre egy master.</translation>
+    </message>
+    <message>
+        <location line="+44"/>
+        <source>Choose the serial port, or type its name</source>
+        <translation>Válassza ki a soros portot, vagy írja be a nevét</translation>
+    </message>
+    <message>
+        <location line="+3"/>
+        <source>Type the device server&apos;s host name or IP address</source>
+        <translation>Írja be az eszközszerver gépnevét vagy IP-címét</translation>
+    </message>
+    <message>
+        <location line="+4"/>
+        <source>Type the address to listen on (0.0.0.0 for all of them)</source>
+        <translation>Írja be a figyelési címet (0.0.0.0 az összeshez)</translation>
     </message>
 </context>
 <context>
@@ -2344,17 +2562,17 @@ Ctrl+Z / Ctrl+Y: visszavonás / mégis, Ctrl+görgő: nagyítás, F4: a program 
         <translation>%1/%2 port beállításai</translation>
     </message>
     <message>
-        <location line="+6"/>
+        <location line="+16"/>
         <source>A bridge goes from a station&apos;s port (STATION/PORT), not from &quot;%1&quot;</source>
         <translation>A híd egy állomás portjából indul (ÁLLOMÁS/PORT), nem ebből: „%1”</translation>
     </message>
     <message>
-        <location line="+8"/>
+        <location line="-9"/>
         <source>%1 has a bridge already</source>
         <translation>%1 már rendelkezik híddal</translation>
     </message>
     <message>
-        <location line="+4"/>
+        <location line="+16"/>
         <source>A %1 bridge needs where it goes</source>
         <translation>A híd (%1) célját meg kell adni</translation>
     </message>
@@ -2364,17 +2582,22 @@ Ctrl+Z / Ctrl+Y: visszavonás / mégis, Ctrl+görgő: nagyítás, F4: a program 
         <translation>„%1” nem GÉP:PORT alakú</translation>
     </message>
     <message>
-        <location line="+12"/>
+        <location line="+23"/>
         <source>%1 runs %2, whose frames are not published: it cannot be bridged</source>
         <translation>%1 a(z) %2 protokollt futtatja, amelynek keretei nem publikusak: nem köthető hídra</translation>
     </message>
     <message>
-        <location line="+7"/>
+        <location line="+26"/>
         <source>Add Bridge %1</source>
         <translation>%1 híd hozzáadása</translation>
     </message>
     <message>
-        <location line="+8"/>
+        <location line="+0"/>
+        <source>Change Bridge %1</source>
+        <translation>%1 hídjának módosítása</translation>
+    </message>
+    <message>
+        <location line="+15"/>
         <source>%1 has no bridge</source>
         <translation>%1 nem rendelkezik híddal</translation>
     </message>
@@ -2749,7 +2972,7 @@ Ctrl+Z / Ctrl+Y: visszavonás / mégis, Ctrl+görgő: nagyítás, F4: a program 
 <context>
     <name>rung::app::NetworkTrafficView</name>
     <message>
-        <location filename="../app/gui/network_traffic_view.cpp" line="+157"/>
+        <location filename="../app/gui/network_traffic_view.cpp" line="+164"/>
         <source>&amp;Errors only</source>
         <translation>Csak &amp;hibák</translation>
     </message>
@@ -2855,7 +3078,7 @@ Ctrl+Z / Ctrl+Y: visszavonás / mégis, Ctrl+görgő: nagyítás, F4: a program 
 <context>
     <name>rung::app::NetworkView</name>
     <message>
-        <location filename="../app/gui/network_view.cpp" line="+117"/>
+        <location filename="../app/gui/network_view.cpp" line="+120"/>
         <source>%1: scan period %2 ms</source>
         <translation>%1: ciklusidő %2 ms</translation>
     </message>
@@ -2895,27 +3118,44 @@ Ctrl+Z / Ctrl+Y: visszavonás / mégis, Ctrl+görgő: nagyítás, F4: a program 
         <translation>a beállítások hibásak</translation>
     </message>
     <message>
-        <location line="+8"/>
+        <location line="+482"/>
+        <source>bridge: failed (%1)</source>
+        <extracomment>a bridge whose line did not open; the tooltip says why</extracomment>
+        <translation>híd: hibás (%1)</translation>
+    </message>
+    <message>
+        <location line="+0"/>
+        <source>pseudo-terminal</source>
+        <translation>pszeudoterminál</translation>
+    </message>
+    <message>
+        <location line="+4"/>
         <source>bridge: pseudo-terminal</source>
+        <extracomment>%1 the pseudo-terminal&apos;s path while the network runs</extracomment>
         <translation>híd: pszeudoterminál</translation>
     </message>
     <message>
         <location line="+1"/>
+        <source>bridge: pseudo-terminal %1</source>
+        <translation>híd: pszeudoterminál %1</translation>
+    </message>
+    <message>
+        <location line="+2"/>
         <source>bridge: serial %1</source>
         <translation>híd: soros port %1</translation>
     </message>
     <message>
-        <location line="+1"/>
+        <location line="+2"/>
         <source>bridge: TCP to %1</source>
         <translation>híd: TCP ide: %1</translation>
     </message>
     <message>
-        <location line="+1"/>
+        <location line="+2"/>
         <source>bridge: listens on %1</source>
         <translation>híd: figyel itt: %1</translation>
     </message>
     <message>
-        <location line="+12"/>
+        <location line="-473"/>
         <source>MODBUS slave (simulated)</source>
         <translation>MODBUS slave (szimulált)</translation>
     </message>
@@ -2979,39 +3219,14 @@ Ctrl+Z / Ctrl+Y: visszavonás / mégis, Ctrl+görgő: nagyítás, F4: a program 
         <translation>A saját ciklusidőt nem adó állomások ciklusideje (ms):</translation>
     </message>
     <message>
-        <location line="+9"/>
-        <source>Add &amp;Bridge</source>
-        <translation>&amp;Híd hozzáadása</translation>
-    </message>
-    <message>
-        <location line="+7"/>
-        <source>Add Bridge</source>
-        <translation>Híd hozzáadása</translation>
-    </message>
-    <message>
-        <location line="+9"/>
+        <location line="+84"/>
         <source>&amp;Pseudo-terminal</source>
         <translation>&amp;Pszeudoterminál</translation>
     </message>
     <message>
-        <location line="+1"/>
+        <location line="+7"/>
         <source>&amp;Serial Port...</source>
         <translation>&amp;Soros port...</translation>
-    </message>
-    <message>
-        <location line="+1"/>
-        <source>Serial port:</source>
-        <translation>Soros port:</translation>
-    </message>
-    <message>
-        <location line="+2"/>
-        <source>&amp;TCP Connect...</source>
-        <translation>&amp;TCP-kapcsolódás...</translation>
-    </message>
-    <message>
-        <location line="+1"/>
-        <source>Serial device server (HOST:PORT):</source>
-        <translation>Soros eszközszerver (GÉP:PORT):</translation>
     </message>
     <message>
         <location line="+2"/>
@@ -3019,12 +3234,7 @@ Ctrl+Z / Ctrl+Y: visszavonás / mégis, Ctrl+görgő: nagyítás, F4: a program 
         <translation>TCP-&amp;figyelés...</translation>
     </message>
     <message>
-        <location line="+1"/>
-        <source>Listen on (ADDRESS:PORT):</source>
-        <translation>Figyelés itt (CÍM:PORT):</translation>
-    </message>
-    <message>
-        <location line="+11"/>
+        <location line="+10"/>
         <source>Port &amp;Settings...</source>
         <translation>Port &amp;beállításai...</translation>
     </message>
@@ -3034,12 +3244,7 @@ Ctrl+Z / Ctrl+Y: visszavonás / mégis, Ctrl+görgő: nagyítás, F4: a program 
         <translation>&amp;Leválasztás</translation>
     </message>
     <message>
-        <location line="+9"/>
-        <source>Remove &amp;Bridge</source>
-        <translation>&amp;Híd eltávolítása</translation>
-    </message>
-    <message>
-        <location line="+21"/>
+        <location line="+34"/>
         <source>Add New Pro&amp;ject Station...</source>
         <translation>Állomás új pro&amp;jekttel...</translation>
     </message>
@@ -3076,7 +3281,32 @@ Menti mégis, ezek nélkül?</translation>
         <translation>&amp;Vezeték eltávolítása</translation>
     </message>
     <message>
-        <location line="+2"/>
+        <location line="-47"/>
+        <source>&amp;Bridge To</source>
+        <translation>Híd &amp;ide</translation>
+    </message>
+    <message>
+        <location line="+11"/>
+        <source>&amp;TCP Device Server...</source>
+        <translation>&amp;TCP-eszközszerver...</translation>
+    </message>
+    <message>
+        <location line="+22"/>
+        <source>Edit &amp;Bridge...</source>
+        <translation>Hí&amp;d szerkesztése...</translation>
+    </message>
+    <message>
+        <location line="+3"/>
+        <source>&amp;Copy %1</source>
+        <translation>%1 má&amp;solása</translation>
+    </message>
+    <message>
+        <location line="+4"/>
+        <source>Remove Brid&amp;ge</source>
+        <translation>Híd &amp;törlése</translation>
+    </message>
+    <message>
+        <location line="+9"/>
         <source>&amp;Open Program</source>
         <translation>Program &amp;megnyitása</translation>
     </message>
@@ -3145,13 +3375,13 @@ Menti mégis, ezek nélkül?</translation>
 <context>
     <name>rung::app::NetworkWindow</name>
     <message>
-        <location filename="../app/gui/network_window.cpp" line="+210"/>
-        <location line="+217"/>
+        <location filename="../app/gui/network_window.cpp" line="+224"/>
+        <location line="+218"/>
         <source>Network</source>
         <translation>Hálózat</translation>
     </message>
     <message>
-        <location line="-214"/>
+        <location line="-215"/>
         <source>&amp;Network</source>
         <translation>&amp;Hálózat</translation>
     </message>
@@ -3288,7 +3518,7 @@ Menti mégis, ezek nélkül?</translation>
         <translation>&amp;Nézet</translation>
     </message>
     <message>
-        <location line="+13"/>
+        <location line="+14"/>
         <source>No network is open</source>
         <translation>Nincs megnyitott hálózat</translation>
     </message>
@@ -3430,7 +3660,7 @@ Menti mégis, ezek nélkül?</translation>
         <translation>Üres hálózat: állomásokat a Hálózat nézet menüjéből adhat hozzá (jobb kattintás)</translation>
     </message>
     <message>
-        <location line="+38"/>
+        <location line="+39"/>
         <source>The network has no station yet: add one from the Network view&apos;s menu</source>
         <translation>A hálózatnak még nincs állomása: adjon hozzá egyet a Hálózat nézet menüjéből</translation>
     </message>
@@ -3446,7 +3676,7 @@ Menti mégis, ezek nélkül?</translation>
         <translation>%1 (%2 %3)</translation>
     </message>
     <message>
-        <location line="+45"/>
+        <location line="+46"/>
         <source>The network was edited: Stop builds it again with the change</source>
         <translation>A hálózat módosult: a Megállás a módosítással építi fel újra</translation>
     </message>
@@ -3467,7 +3697,7 @@ Menti mégis, ezek nélkül?</translation>
         <translation>PLC-hálózatok (*.rungnet)</translation>
     </message>
     <message>
-        <location line="+69"/>
+        <location line="+70"/>
         <source>No network</source>
         <translation>Nincs hálózat</translation>
     </message>
@@ -5978,7 +6208,7 @@ Kiértékelés: %4 µs (%5..%6)</translation>
         </translation>
     </message>
     <message>
-        <location line="+36"/>
+        <location line="+46"/>
         <source>Edit instruction list</source>
         <translation>Utasításlista szerkesztése</translation>
     </message>
@@ -10775,17 +11005,17 @@ Kiértékelés: %4 µs (%5..%6)</translation>
     </message>
     <message>
         <location line="+11"/>
-        <location line="+18"/>
+        <location line="+31"/>
         <source>%1: no station or device &quot;%2&quot;</source>
         <translation>%1: nincs „%2” állomás vagy eszköz</translation>
     </message>
     <message>
-        <location line="-16"/>
+        <location line="-29"/>
         <source>%1: %2 is on wire %3 already; a port has one wire</source>
         <translation>%1: a(z) %2 már a(z) %3 vezetéken van; egy porton egy vezeték lehet</translation>
     </message>
     <message>
-        <location line="+13"/>
+        <location line="+26"/>
         <source>%1: no wire &quot;%2&quot;</source>
         <translation>%1: nincs „%2” vezeték</translation>
     </message>
@@ -10821,12 +11051,12 @@ Kiértékelés: %4 µs (%5..%6)</translation>
         <translation>ütközés ezzel: %1; mindkét keret sérült</translation>
     </message>
     <message>
-        <location filename="../network/bridge.cpp" line="+52"/>
+        <location filename="../network/bridge.cpp" line="+39"/>
         <source>%1: no station port &quot;%2&quot;</source>
         <translation>%1: nincs „%2” állomásport</translation>
     </message>
     <message>
-        <location line="+22"/>
+        <location line="+36"/>
         <source>%1.tcp: &quot;%2&quot; is not HOST:PORT</source>
         <translation>%1.tcp: a(z) „%2” nem HOST:PORT alakú</translation>
     </message>
@@ -10836,12 +11066,12 @@ Kiértékelés: %4 µs (%5..%6)</translation>
         <translation>%1.listen: a(z) „%2” nem CÍM:PORT alakú (a gép egy IP-címe, 0.0.0.0 mindegyikhez, vagy localhost)</translation>
     </message>
     <message>
-        <location line="+20"/>
+        <location line="-54"/>
         <source>no station port &quot;%1&quot;</source>
         <translation>nincs „%1” állomásport</translation>
     </message>
     <message>
-        <location line="+4"/>
+        <location line="+5"/>
         <source>%1 runs %2, whose frames the manual does not publish: it is not put on a real line</source>
         <translation>a(z) %1 portján %2 fut, amelynek kereteit a kézikönyv nem közli: nem kerül valódi vonalra</translation>
     </message>
@@ -11088,7 +11318,7 @@ Kiértékelés: %4 µs (%5..%6)</translation>
 <context>
     <name>rung::network::NetworkSession</name>
     <message>
-        <location filename="../network/network_session.cpp" line="+301"/>
+        <location filename="../network/network_session.cpp" line="+319"/>
         <source>a fault made in the IDE</source>
         <translation>az IDE-ben okozott hiba</translation>
     </message>
@@ -11102,6 +11332,18 @@ Kiértékelés: %4 µs (%5..%6)</translation>
         <location line="+4"/>
         <source>%1: %2</source>
         <translation>%1: %2</translation>
+    </message>
+    <message>
+        <location filename="../network/network_session_bridges.cpp" line="+120"/>
+        <source>%1: the bridge did not open: %2</source>
+        <extracomment>%1 the bridged port (&quot;s5/CP2&quot;), %2 why its line did not open</extracomment>
+        <translation>%1: a híd nem nyílt meg: %2</translation>
+    </message>
+    <message>
+        <location line="+34"/>
+        <source>%1: the bridge&apos;s line failed: %2 (Stop opens it again)</source>
+        <extracomment>%1 the bridged port (&quot;s5/CP2&quot;), %2 what happened to its line</extracomment>
+        <translation>%1: a híd vonala meghibásodott: %2 (a Megállás újra megnyitja)</translation>
     </message>
 </context>
 <context>

@@ -511,7 +511,7 @@ Codice di uscita: 0 nessun errore, 1 il programma contiene errori, 2 errore di u
 <context>
     <name>rung::app::ConnectionPanel</name>
     <message>
-        <location filename="../app/gui/connection_panel_link.cpp" line="+49"/>
+        <location filename="../app/gui/connection_panel_link.cpp" line="+50"/>
         <source>ON</source>
         <translation>ON</translation>
     </message>
@@ -556,7 +556,7 @@ Codice di uscita: 0 nessun errore, 1 il programma contiene errori, 2 errore di u
         <translation>Annullato: nulla è stato inviato al PLC</translation>
     </message>
     <message>
-        <location filename="../app/gui/connection_panel.cpp" line="+267"/>
+        <location filename="../app/gui/connection_panel.cpp" line="+209"/>
         <source>Settings</source>
         <translation>Impostazioni</translation>
     </message>
@@ -576,42 +576,7 @@ Codice di uscita: 0 nessun errore, 1 il programma contiene errori, 2 errore di u
         <translation>TCP</translation>
     </message>
     <message>
-        <location line="+1"/>
-        <source>Port:</source>
-        <translation>Porta:</translation>
-    </message>
-    <message>
-        <location line="+5"/>
-        <source>Refresh</source>
-        <translation>Aggiorna</translation>
-    </message>
-    <message>
-        <location line="+3"/>
-        <source>Baud rate:</source>
-        <translation>Velocità (baud):</translation>
-    </message>
-    <message>
-        <location line="+1"/>
-        <source>Format:</source>
-        <translation>Formato:</translation>
-    </message>
-    <message>
-        <location line="+1"/>
-        <source>Data bits, parity (N none, E even, O odd) and stop bits</source>
-        <translation>Bit di dati, parità (N nessuna, E pari, O dispari) e bit di stop</translation>
-    </message>
-    <message>
-        <location line="+1"/>
-        <source>Host:</source>
-        <translation>Host:</translation>
-    </message>
-    <message>
-        <location line="+1"/>
-        <source>TCP port:</source>
-        <translation>Porta TCP:</translation>
-    </message>
-    <message>
-        <location line="+1"/>
+        <location line="+6"/>
         <source>Station:</source>
         <translation>Stazione:</translation>
     </message>
@@ -664,16 +629,6 @@ Codice di uscita: 0 nessun errore, 1 il programma contiene errori, 2 errore di u
         <location line="+4"/>
         <source>The link protocol of the %1 is not published, so the IDE cannot talk to it. Instead: export the program as a console listing (File &gt; Export Instruction List) and load it with the PLC&apos;s own tool; to study the link, capture its traffic with &apos;rungstudio-cli record&apos;.</source>
         <translation>Il protocollo di comunicazione del %1 non è pubblicato, quindi l&apos;IDE non può dialogare con esso. In alternativa: esportare il programma come listato per console (File &gt; Esporta lista istruzioni) e caricarlo con lo strumento proprio del PLC; per studiare il collegamento, registrarne il traffico con &apos;rungstudio-cli record&apos;.</translation>
-    </message>
-    <message>
-        <location line="+83"/>
-        <source>No port found</source>
-        <translation>Nessuna porta trovata</translation>
-    </message>
-    <message>
-        <location line="+1"/>
-        <source>Choose or type a port</source>
-        <translation>Scegliere o digitare una porta</translation>
     </message>
     <message>
         <location filename="../app/gui/connection_panel_link.cpp" line="+23"/>
@@ -754,7 +709,7 @@ Questo modifica la memoria di un PLC reale, che potrebbe comandare una macchina.
         <translation>Digitare il nome host o l&apos;indirizzo IP del PLC o del suo gateway</translation>
     </message>
     <message>
-        <location line="+12"/>
+        <location line="+13"/>
         <source>Already connected: the panel shows what the PLC reports</source>
         <translation>Già connesso: il pannello mostra ciò che il PLC riporta</translation>
     </message>
@@ -877,7 +832,7 @@ Andata e ritorno %6 ms (media %7, max %8); aggiornamento %9 ms, %10 frame</trans
         <translation>Impossibile scrivere %1: %2</translation>
     </message>
     <message>
-        <location filename="../app/gui/connection_panel.cpp" line="-131"/>
+        <location filename="../app/gui/connection_panel.cpp" line="-39"/>
         <source>A serial port, or a path typed in: a pseudo-terminal such as the one
 &apos;rungstudio-cli serve --pty&apos; prints, or the link that
 &apos;serve --pty --link PATH&apos; keeps at PATH, which still leads to the
@@ -886,11 +841,6 @@ PLC after serve restarts</source>
 stampato da &apos;rungstudio-cli serve --pty&apos;, o il collegamento che
 &apos;serve --pty --link PERCORSO&apos; mantiene in PERCORSO, che porta ancora al
 PLC dopo il riavvio di serve</translation>
-    </message>
-    <message>
-        <location line="+5"/>
-        <source>Look for serial ports again</source>
-        <translation>Cerca di nuovo le porte seriali</translation>
     </message>
 </context>
 <context>
@@ -1484,6 +1434,60 @@ PLC dopo il riavvio di serve</translation>
     </message>
 </context>
 <context>
+    <name>rung::app::LineSettingsForm</name>
+    <message>
+        <location filename="../app/gui/line_settings_form.cpp" line="+105"/>
+        <source>Port:</source>
+        <translation>Porta:</translation>
+    </message>
+    <message>
+        <location line="+1"/>
+        <source>Refresh</source>
+        <translation>Aggiorna</translation>
+    </message>
+    <message>
+        <location line="+1"/>
+        <source>Look for serial ports again</source>
+        <translation>Cerca di nuovo le porte seriali</translation>
+    </message>
+    <message>
+        <location line="+2"/>
+        <source>Baud rate:</source>
+        <translation>Velocità (baud):</translation>
+    </message>
+    <message>
+        <location line="+1"/>
+        <source>Format:</source>
+        <translation>Formato:</translation>
+    </message>
+    <message>
+        <location line="+1"/>
+        <source>Data bits, parity (N none, E even, O odd) and stop bits</source>
+        <translation>Bit di dati, parità (N nessuna, E pari, O dispari) e bit di stop</translation>
+    </message>
+    <message>
+        <location line="+1"/>
+        <location line="+12"/>
+        <source>Host:</source>
+        <translation>Host:</translation>
+    </message>
+    <message>
+        <location line="-11"/>
+        <source>TCP port:</source>
+        <translation>Porta TCP:</translation>
+    </message>
+    <message>
+        <location line="+45"/>
+        <source>No port found</source>
+        <translation>Nessuna porta trovata</translation>
+    </message>
+    <message>
+        <location line="+1"/>
+        <source>Choose or type a port</source>
+        <translation>Scegliere o digitare una porta</translation>
+    </message>
+</context>
+<context>
     <name>rung::app::ListingController</name>
     <message>
         <location filename="../app/gui/listing_controller.cpp" line="+66"/>
@@ -1667,7 +1671,7 @@ PLC dopo il riavvio di serve</translation>
         <translation>Aggiungi alla lista &amp;di osservazione</translation>
     </message>
     <message>
-        <location line="+5"/>
+        <location line="+11"/>
         <source>In&amp;sert Rung</source>
         <translation>I&amp;nserisci segmento</translation>
     </message>
@@ -1716,7 +1720,7 @@ Ctrl+Z / Ctrl+Y: annulla / ripeti, Ctrl+rotellina: zoom, F4: verifica il program
         <translation>In linea: Ctrl+W vai online / offline, Ctrl+1 STOP (PROGRAM), Ctrl+3 MONITOR, Ctrl+4 RUN</translation>
     </message>
     <message>
-        <location line="-156"/>
+        <location line="-162"/>
         <source>Select</source>
         <translation>Seleziona</translation>
     </message>
@@ -1778,7 +1782,7 @@ Ctrl+Z / Ctrl+Y: annulla / ripeti, Ctrl+rotellina: zoom, F4: verifica il program
     </message>
     <message>
         <location line="+0"/>
-        <location filename="../app/gui/main_window_tools.cpp" line="+221"/>
+        <location filename="../app/gui/main_window_tools.cpp" line="+224"/>
         <source>CSV files (*.csv)</source>
         <translation>File CSV (*.csv)</translation>
     </message>
@@ -1793,7 +1797,17 @@ Ctrl+Z / Ctrl+Y: annulla / ripeti, Ctrl+rotellina: zoom, F4: verifica il program
         <translation>Co&amp;mmento del segmento...</translation>
     </message>
     <message>
-        <location line="+11"/>
+        <location line="+3"/>
+        <source>Communic&amp;ation Ports...</source>
+        <translation>Porte di comunica&amp;zione...</translation>
+    </message>
+    <message>
+        <location line="+2"/>
+        <source>The PLC&apos;s own port settings, kept in the project: what Ladder Master calls the 2nd COM Port Setting, CPU Link, the PL110&apos;s COM1 / EXP1 / COM2 protocols</source>
+        <translation>Le impostazioni delle porte del PLC, conservate nel progetto: ciò che Ladder Master chiama 2nd COM Port Setting, CPU Link, i protocolli COM1 / EXP1 / COM2 del PL110</translation>
+    </message>
+    <message>
+        <location line="+12"/>
         <source>&amp;View</source>
         <translation>&amp;Visualizza</translation>
     </message>
@@ -2006,8 +2020,29 @@ Ctrl+Z / Ctrl+Y: annulla / ripeti, Ctrl+rotellina: zoom, F4: verifica il program
         </translation>
     </message>
     <message>
+        <location line="+19"/>
+        <location line="+11"/>
+        <source>Communication Ports</source>
+        <translation>Porte di comunicazione</translation>
+    </message>
+    <message>
+        <location line="-10"/>
+        <source>The %1 has no port settings a program or a network uses.</source>
+        <translation>Il %1 non ha impostazioni di porta usate da un programma o da una rete.</translation>
+    </message>
+    <message>
+        <location line="+11"/>
+        <source>The communication ports are as they were</source>
+        <translation>Le porte di comunicazione sono rimaste come erano</translation>
+    </message>
+    <message>
+        <location line="+1"/>
+        <source>Communication ports set: File &gt; Save keeps them in the project</source>
+        <translation>Porte di comunicazione impostate: File &gt; Salva le conserva nel progetto</translation>
+    </message>
+    <message>
         <location filename="../app/gui/main_window.cpp" line="+84"/>
-        <location filename="../app/gui/main_window_tools.cpp" line="-23"/>
+        <location filename="../app/gui/main_window_tools.cpp" line="-55"/>
         <source>Cross Reference</source>
         <translation>Riferimenti incrociati</translation>
     </message>
@@ -2150,6 +2185,189 @@ Ctrl+Z / Ctrl+Y: annulla / ripeti, Ctrl+rotellina: zoom, F4: verifica il program
         <location line="+24"/>
         <source>%1 runs in real time; stop it with Ctrl+C</source>
         <translation>%1 è in esecuzione in tempo reale; per fermarlo Ctrl+C</translation>
+    </message>
+</context>
+<context>
+    <name>rung::app::NetworkBridgeController</name>
+    <message>
+        <location filename="../app/gui/network_bridge_controller.cpp" line="+30"/>
+        <source>%1: pseudo-terminal</source>
+        <extracomment>%1 a station&apos;s port (&quot;s5/CP2&quot;); the rest what its bridge goes to</extracomment>
+        <translation>%1: pseudo-terminale</translation>
+    </message>
+    <message>
+        <location line="+2"/>
+        <source>%1: serial port %2</source>
+        <translation>%1: porta seriale %2</translation>
+    </message>
+    <message>
+        <location line="+2"/>
+        <source>%1: TCP to %2</source>
+        <translation>%1: TCP verso %2</translation>
+    </message>
+    <message>
+        <location line="+2"/>
+        <source>%1: listens on %2</source>
+        <translation>%1: in ascolto su %2</translation>
+    </message>
+    <message>
+        <location line="+74"/>
+        <source>Copied %1: where %2 is reached</source>
+        <translation>Copiato %1: dove si raggiunge %2</translation>
+    </message>
+    <message>
+        <location line="+5"/>
+        <source>Bridges</source>
+        <translation>Ponti</translation>
+    </message>
+    <message>
+        <location line="+13"/>
+        <source>No bridge: right-click a station&apos;s port in the Network view and choose Bridge To to put it on a pseudo-terminal, a serial port or TCP.</source>
+        <translation>Nessun ponte: fare clic destro sulla porta di una stazione nella vista Rete e scegliere Ponte verso per metterla su uno pseudo-terminale, una porta seriale o TCP.</translation>
+    </message>
+    <message>
+        <location line="+24"/>
+        <source>not open</source>
+        <translation>non aperto</translation>
+    </message>
+    <message>
+        <location line="+1"/>
+        <source>Copy</source>
+        <translation>Copia</translation>
+    </message>
+    <message>
+        <location line="+2"/>
+        <source>Copy where the bridge is reached to the clipboard</source>
+        <translation>Copia negli appunti dove si raggiunge il ponte</translation>
+    </message>
+    <message>
+        <location line="+3"/>
+        <source>Edit...</source>
+        <translation>Modifica...</translation>
+    </message>
+    <message>
+        <location line="+4"/>
+        <source>Remove</source>
+        <translation>Rimuovi</translation>
+    </message>
+    <message>
+        <location line="+19"/>
+        <source>Not running: the network is not built (the status bar says why)</source>
+        <translation>Non in funzione: la rete non è costruita (la barra di stato dice perché)</translation>
+    </message>
+    <message>
+        <location line="+2"/>
+        <source>Changed: Stop builds the network again with this bridge</source>
+        <translation>Modificato: Stop ricostruisce la rete con questo ponte</translation>
+    </message>
+    <message>
+        <location line="+6"/>
+        <source>Open: a master on this computer opens %1</source>
+        <translation>Aperto: un master su questo computer apre %1</translation>
+    </message>
+    <message>
+        <location line="+1"/>
+        <source>Open: %1</source>
+        <translation>Aperto: %1</translation>
+    </message>
+    <message>
+        <location line="+2"/>
+        <source>Opening...</source>
+        <translation>Apertura...</translation>
+    </message>
+</context>
+<context>
+    <name>rung::app::NetworkBridgeDialog</name>
+    <message>
+        <location filename="../app/gui/network_bridge_dialog.cpp" line="+49"/>
+        <source>Bridge of %1</source>
+        <extracomment>%1 a station&apos;s port, &quot;s5/CP2&quot;</extracomment>
+        <translation>Ponte di %1</translation>
+    </message>
+    <message>
+        <location line="+2"/>
+        <source>While the network runs, %1 is put on a real line: a master on this computer or the network reaches the simulated station, or the station reaches a real device.</source>
+        <translation>Mentre la rete è in funzione, %1 viene messa su una linea reale: un master su questo computer o in rete raggiunge la stazione simulata, oppure la stazione raggiunge un dispositivo reale.</translation>
+    </message>
+    <message>
+        <location line="+7"/>
+        <source>&amp;Pseudo-terminal (a master on this computer)</source>
+        <translation>&amp;Pseudo-terminale (un master su questo computer)</translation>
+    </message>
+    <message>
+        <location line="+1"/>
+        <source>&amp;Serial port</source>
+        <translation>Porta &amp;seriale</translation>
+    </message>
+    <message>
+        <location line="+0"/>
+        <source>TCP: &amp;connect to a serial device server</source>
+        <translation>TCP: &amp;connessione a un device server seriale</translation>
+    </message>
+    <message>
+        <location line="+1"/>
+        <source>TCP: &amp;listen for a master</source>
+        <translation>TCP: in &amp;ascolto di un master</translation>
+    </message>
+    <message>
+        <location line="+13"/>
+        <source>The serial port the real line is on (a USB adapter: /dev/ttyUSB0)</source>
+        <translation>La porta seriale su cui si trova la linea reale (un adattatore USB: /dev/ttyUSB0)</translation>
+    </message>
+    <message>
+        <location line="+63"/>
+        <source>Listen on:</source>
+        <translation>In ascolto su:</translation>
+    </message>
+    <message>
+        <location line="+2"/>
+        <source>any free port</source>
+        <translation>qualsiasi porta libera</translation>
+    </message>
+    <message>
+        <location line="+2"/>
+        <source>An IP address of this computer, 0.0.0.0 for all of them, or localhost</source>
+        <translation>Un indirizzo IP di questo computer, 0.0.0.0 per tutti, oppure localhost</translation>
+    </message>
+    <message>
+        <location line="+7"/>
+        <source>The serial device server&apos;s host name or IP address</source>
+        <translation>Il nome host o l&apos;indirizzo IP del device server seriale</translation>
+    </message>
+    <message>
+        <location line="+4"/>
+        <source>A new pseudo-terminal (/dev/pts/N) opens when the network window builds the network, and stays while the window is open (Stop keeps it). Its path is shown on the port and in the Bridges dock, with a Copy button: give it to the master (mbpoll, an HMI, another Rung Studio&apos;s Connection dock).</source>
+        <translation>Un nuovo pseudo-terminale (/dev/pts/N) si apre quando la finestra della rete costruisce la rete e resta finché la finestra è aperta (Stop lo mantiene). Il suo percorso è mostrato sulla porta e nel pannello Ponti, con un pulsante Copia: datelo al master (mbpoll, un HMI, il pannello Connessione di un altro Rung Studio).</translation>
+    </message>
+    <message>
+        <location line="+7"/>
+        <source>The serial port opens at the port&apos;s own rate and format, so that the simulated station and the real line agree: changing them here changes the port&apos;s settings.</source>
+        <translation>La porta seriale si apre alla velocità e al formato della porta stessa, perché la stazione simulata e la linea reale concordino: cambiarli qui cambia le impostazioni della porta.</translation>
+    </message>
+    <message>
+        <location line="+5"/>
+        <source>A serial device server in TCP server mode passes the bytes to its serial line: the simulated station reaches the real device behind it.</source>
+        <translation>Un device server seriale in modalità server TCP passa i byte alla sua linea seriale: la stazione simulata raggiunge il dispositivo reale collegato a esso.</translation>
+    </message>
+    <message>
+        <location line="+5"/>
+        <source>A master connects over TCP and sends the serial line&apos;s bytes (RTU over TCP, not Modbus TCP), one master at a time.</source>
+        <translation>Un master si collega via TCP e invia i byte della linea seriale (RTU su TCP, non Modbus TCP), un master alla volta.</translation>
+    </message>
+    <message>
+        <location line="+44"/>
+        <source>Choose the serial port, or type its name</source>
+        <translation>Scegliere la porta seriale o digitarne il nome</translation>
+    </message>
+    <message>
+        <location line="+3"/>
+        <source>Type the device server&apos;s host name or IP address</source>
+        <translation>Digitare il nome host o l&apos;indirizzo IP del device server</translation>
+    </message>
+    <message>
+        <location line="+4"/>
+        <source>Type the address to listen on (0.0.0.0 for all of them)</source>
+        <translation>Digitare l&apos;indirizzo su cui ascoltare (0.0.0.0 per tutti)</translation>
     </message>
 </context>
 <context>
@@ -2351,17 +2569,17 @@ Ctrl+Z / Ctrl+Y: annulla / ripeti, Ctrl+rotellina: zoom, F4: verifica il program
         <translation>Impostazioni della porta %1/%2</translation>
     </message>
     <message>
-        <location line="+6"/>
+        <location line="+16"/>
         <source>A bridge goes from a station&apos;s port (STATION/PORT), not from &quot;%1&quot;</source>
         <translation>Un ponte parte dalla porta di una stazione (STAZIONE/PORTA), non da &quot;%1&quot;</translation>
     </message>
     <message>
-        <location line="+8"/>
+        <location line="-9"/>
         <source>%1 has a bridge already</source>
         <translation>%1 ha già un ponte</translation>
     </message>
     <message>
-        <location line="+4"/>
+        <location line="+16"/>
         <source>A %1 bridge needs where it goes</source>
         <translation>Un ponte (%1) ha bisogno della destinazione</translation>
     </message>
@@ -2371,17 +2589,22 @@ Ctrl+Z / Ctrl+Y: annulla / ripeti, Ctrl+rotellina: zoom, F4: verifica il program
         <translation>&quot;%1&quot; non è HOST:PORTA</translation>
     </message>
     <message>
-        <location line="+12"/>
+        <location line="+23"/>
         <source>%1 runs %2, whose frames are not published: it cannot be bridged</source>
         <translation>%1 usa %2, i cui frame non sono pubblicati: non può avere un ponte</translation>
     </message>
     <message>
-        <location line="+7"/>
+        <location line="+26"/>
         <source>Add Bridge %1</source>
         <translation>Aggiungi ponte %1</translation>
     </message>
     <message>
-        <location line="+8"/>
+        <location line="+0"/>
+        <source>Change Bridge %1</source>
+        <translation>Modifica ponte %1</translation>
+    </message>
+    <message>
+        <location line="+15"/>
         <source>%1 has no bridge</source>
         <translation>%1 non ha un ponte</translation>
     </message>
@@ -2756,7 +2979,7 @@ Ctrl+Z / Ctrl+Y: annulla / ripeti, Ctrl+rotellina: zoom, F4: verifica il program
 <context>
     <name>rung::app::NetworkTrafficView</name>
     <message>
-        <location filename="../app/gui/network_traffic_view.cpp" line="+157"/>
+        <location filename="../app/gui/network_traffic_view.cpp" line="+164"/>
         <source>&amp;Errors only</source>
         <translation>Solo &amp;errori</translation>
     </message>
@@ -2863,7 +3086,7 @@ Ctrl+Z / Ctrl+Y: annulla / ripeti, Ctrl+rotellina: zoom, F4: verifica il program
 <context>
     <name>rung::app::NetworkView</name>
     <message>
-        <location filename="../app/gui/network_view.cpp" line="+117"/>
+        <location filename="../app/gui/network_view.cpp" line="+120"/>
         <source>%1: scan period %2 ms</source>
         <translation>%1: periodo di scansione %2 ms</translation>
     </message>
@@ -2903,27 +3126,44 @@ Ctrl+Z / Ctrl+Y: annulla / ripeti, Ctrl+rotellina: zoom, F4: verifica il program
         <translation>impostazioni rifiutate</translation>
     </message>
     <message>
-        <location line="+8"/>
+        <location line="+482"/>
+        <source>bridge: failed (%1)</source>
+        <extracomment>a bridge whose line did not open; the tooltip says why</extracomment>
+        <translation>ponte: guasto (%1)</translation>
+    </message>
+    <message>
+        <location line="+0"/>
+        <source>pseudo-terminal</source>
+        <translation>pseudo-terminale</translation>
+    </message>
+    <message>
+        <location line="+4"/>
         <source>bridge: pseudo-terminal</source>
+        <extracomment>%1 the pseudo-terminal&apos;s path while the network runs</extracomment>
         <translation>ponte: pseudo-terminale</translation>
     </message>
     <message>
         <location line="+1"/>
+        <source>bridge: pseudo-terminal %1</source>
+        <translation>ponte: pseudo-terminale %1</translation>
+    </message>
+    <message>
+        <location line="+2"/>
         <source>bridge: serial %1</source>
         <translation>ponte: seriale %1</translation>
     </message>
     <message>
-        <location line="+1"/>
+        <location line="+2"/>
         <source>bridge: TCP to %1</source>
         <translation>ponte: TCP verso %1</translation>
     </message>
     <message>
-        <location line="+1"/>
+        <location line="+2"/>
         <source>bridge: listens on %1</source>
         <translation>ponte: in ascolto su %1</translation>
     </message>
     <message>
-        <location line="+12"/>
+        <location line="-473"/>
         <source>MODBUS slave (simulated)</source>
         <translation>Slave MODBUS (simulato)</translation>
     </message>
@@ -2987,39 +3227,14 @@ Ctrl+Z / Ctrl+Y: annulla / ripeti, Ctrl+rotellina: zoom, F4: verifica il program
         <translation>Periodo di scansione delle stazioni che non ne indicano uno (ms):</translation>
     </message>
     <message>
-        <location line="+9"/>
-        <source>Add &amp;Bridge</source>
-        <translation>Aggiungi &amp;ponte</translation>
-    </message>
-    <message>
-        <location line="+7"/>
-        <source>Add Bridge</source>
-        <translation>Aggiungi ponte</translation>
-    </message>
-    <message>
-        <location line="+9"/>
+        <location line="+84"/>
         <source>&amp;Pseudo-terminal</source>
         <translation>&amp;Pseudo-terminale</translation>
     </message>
     <message>
-        <location line="+1"/>
+        <location line="+7"/>
         <source>&amp;Serial Port...</source>
         <translation>Porta &amp;seriale...</translation>
-    </message>
-    <message>
-        <location line="+1"/>
-        <source>Serial port:</source>
-        <translation>Porta seriale:</translation>
-    </message>
-    <message>
-        <location line="+2"/>
-        <source>&amp;TCP Connect...</source>
-        <translation>Connessione &amp;TCP...</translation>
-    </message>
-    <message>
-        <location line="+1"/>
-        <source>Serial device server (HOST:PORT):</source>
-        <translation>Server seriale di dispositivi (HOST:PORTA):</translation>
     </message>
     <message>
         <location line="+2"/>
@@ -3027,12 +3242,7 @@ Ctrl+Z / Ctrl+Y: annulla / ripeti, Ctrl+rotellina: zoom, F4: verifica il program
         <translation>&amp;Ascolto TCP...</translation>
     </message>
     <message>
-        <location line="+1"/>
-        <source>Listen on (ADDRESS:PORT):</source>
-        <translation>In ascolto su (INDIRIZZO:PORTA):</translation>
-    </message>
-    <message>
-        <location line="+11"/>
+        <location line="+10"/>
         <source>Port &amp;Settings...</source>
         <translation>&amp;Impostazioni porta...</translation>
     </message>
@@ -3042,12 +3252,7 @@ Ctrl+Z / Ctrl+Y: annulla / ripeti, Ctrl+rotellina: zoom, F4: verifica il program
         <translation>&amp;Scollega</translation>
     </message>
     <message>
-        <location line="+9"/>
-        <source>Remove &amp;Bridge</source>
-        <translation>Rimuovi &amp;ponte</translation>
-    </message>
-    <message>
-        <location line="+21"/>
+        <location line="+34"/>
         <source>Add New Pro&amp;ject Station...</source>
         <translation>Aggiungi stazione con nuovo pro&amp;getto...</translation>
     </message>
@@ -3084,7 +3289,32 @@ Salvare comunque, lasciando fuori questo dal file?</translation>
         <translation>Rimuovi &amp;cavo</translation>
     </message>
     <message>
-        <location line="+2"/>
+        <location line="-47"/>
+        <source>&amp;Bridge To</source>
+        <translation>Pon&amp;te verso</translation>
+    </message>
+    <message>
+        <location line="+11"/>
+        <source>&amp;TCP Device Server...</source>
+        <translation>Device server &amp;TCP...</translation>
+    </message>
+    <message>
+        <location line="+22"/>
+        <source>Edit &amp;Bridge...</source>
+        <translation>Modifica p&amp;onte...</translation>
+    </message>
+    <message>
+        <location line="+3"/>
+        <source>&amp;Copy %1</source>
+        <translation>&amp;Copia %1</translation>
+    </message>
+    <message>
+        <location line="+4"/>
+        <source>Remove Brid&amp;ge</source>
+        <translation>Rimuovi pon&amp;te</translation>
+    </message>
+    <message>
+        <location line="+9"/>
         <source>&amp;Open Program</source>
         <translation>&amp;Apri programma</translation>
     </message>
@@ -3153,13 +3383,13 @@ Salvare comunque, lasciando fuori questo dal file?</translation>
 <context>
     <name>rung::app::NetworkWindow</name>
     <message>
-        <location filename="../app/gui/network_window.cpp" line="+210"/>
-        <location line="+217"/>
+        <location filename="../app/gui/network_window.cpp" line="+224"/>
+        <location line="+218"/>
         <source>Network</source>
         <translation>Rete</translation>
     </message>
     <message>
-        <location line="-214"/>
+        <location line="-215"/>
         <source>&amp;Network</source>
         <translation>&amp;Rete</translation>
     </message>
@@ -3296,7 +3526,7 @@ Salvare comunque, lasciando fuori questo dal file?</translation>
         <translation>&amp;Visualizza</translation>
     </message>
     <message>
-        <location line="+13"/>
+        <location line="+14"/>
         <source>No network is open</source>
         <translation>Nessuna rete aperta</translation>
     </message>
@@ -3438,7 +3668,7 @@ Salvare comunque, lasciando fuori questo dal file?</translation>
         <translation>Una rete vuota: aggiungere stazioni dal menu della vista Rete (clic destro)</translation>
     </message>
     <message>
-        <location line="+38"/>
+        <location line="+39"/>
         <source>The network has no station yet: add one from the Network view&apos;s menu</source>
         <translation>La rete non ha ancora stazioni: aggiungerne una dal menu della vista Rete</translation>
     </message>
@@ -3454,7 +3684,7 @@ Salvare comunque, lasciando fuori questo dal file?</translation>
         <translation>%1 (%2 %3)</translation>
     </message>
     <message>
-        <location line="+45"/>
+        <location line="+46"/>
         <source>The network was edited: Stop builds it again with the change</source>
         <translation>La rete è stata modificata: Fermati la ricostruisce con la modifica</translation>
     </message>
@@ -3475,7 +3705,7 @@ Salvare comunque, lasciando fuori questo dal file?</translation>
         <translation>Reti di PLC (*.rungnet)</translation>
     </message>
     <message>
-        <location line="+69"/>
+        <location line="+70"/>
         <source>No network</source>
         <translation>Nessuna rete</translation>
     </message>
@@ -5993,7 +6223,7 @@ Valutazione: %4 µs (%5..%6)</translation>
         </translation>
     </message>
     <message>
-        <location line="+36"/>
+        <location line="+46"/>
         <source>Edit instruction list</source>
         <translation>Modifica lista istruzioni</translation>
     </message>
@@ -10798,17 +11028,17 @@ Valutazione: %4 µs (%5..%6)</translation>
     </message>
     <message>
         <location line="+11"/>
-        <location line="+18"/>
+        <location line="+31"/>
         <source>%1: no station or device &quot;%2&quot;</source>
         <translation>%1: nessuna stazione o dispositivo &quot;%2&quot;</translation>
     </message>
     <message>
-        <location line="-16"/>
+        <location line="-29"/>
         <source>%1: %2 is on wire %3 already; a port has one wire</source>
         <translation>%1: %2 è già sul cavo %3; una porta ha un solo cavo</translation>
     </message>
     <message>
-        <location line="+13"/>
+        <location line="+26"/>
         <source>%1: no wire &quot;%2&quot;</source>
         <translation>%1: nessun cavo &quot;%2&quot;</translation>
     </message>
@@ -10844,12 +11074,12 @@ Valutazione: %4 µs (%5..%6)</translation>
         <translation>collisione con %1: entrambi i frame alterati</translation>
     </message>
     <message>
-        <location filename="../network/bridge.cpp" line="+52"/>
+        <location filename="../network/bridge.cpp" line="+39"/>
         <source>%1: no station port &quot;%2&quot;</source>
         <translation>%1: nessuna porta di stazione &quot;%2&quot;</translation>
     </message>
     <message>
-        <location line="+22"/>
+        <location line="+36"/>
         <source>%1.tcp: &quot;%2&quot; is not HOST:PORT</source>
         <translation>%1.tcp: &quot;%2&quot; non è HOST:PORTA</translation>
     </message>
@@ -10859,12 +11089,12 @@ Valutazione: %4 µs (%5..%6)</translation>
         <translation>%1.listen: &quot;%2&quot; non è INDIRIZZO:PORTA (un indirizzo IP di questa macchina, 0.0.0.0 per tutti, oppure localhost)</translation>
     </message>
     <message>
-        <location line="+20"/>
+        <location line="-54"/>
         <source>no station port &quot;%1&quot;</source>
         <translation>nessuna porta di stazione &quot;%1&quot;</translation>
     </message>
     <message>
-        <location line="+4"/>
+        <location line="+5"/>
         <source>%1 runs %2, whose frames the manual does not publish: it is not put on a real line</source>
         <translation>%1 esegue %2, i cui frame il manuale non pubblica: non viene messa su una linea reale</translation>
     </message>
@@ -11111,7 +11341,7 @@ Valutazione: %4 µs (%5..%6)</translation>
 <context>
     <name>rung::network::NetworkSession</name>
     <message>
-        <location filename="../network/network_session.cpp" line="+301"/>
+        <location filename="../network/network_session.cpp" line="+319"/>
         <source>a fault made in the IDE</source>
         <translation>un guasto creato nell&apos;IDE</translation>
     </message>
@@ -11125,6 +11355,18 @@ Valutazione: %4 µs (%5..%6)</translation>
         <location line="+4"/>
         <source>%1: %2</source>
         <translation>%1: %2</translation>
+    </message>
+    <message>
+        <location filename="../network/network_session_bridges.cpp" line="+120"/>
+        <source>%1: the bridge did not open: %2</source>
+        <extracomment>%1 the bridged port (&quot;s5/CP2&quot;), %2 why its line did not open</extracomment>
+        <translation>%1: il ponte non si è aperto: %2</translation>
+    </message>
+    <message>
+        <location line="+34"/>
+        <source>%1: the bridge&apos;s line failed: %2 (Stop opens it again)</source>
+        <extracomment>%1 the bridged port (&quot;s5/CP2&quot;), %2 what happened to its line</extracomment>
+        <translation>%1: la linea del ponte si è guastata: %2 (Stop la riapre)</translation>
     </message>
 </context>
 <context>

@@ -150,16 +150,16 @@ void NetworkBridgeController::refresh() {
         where->setReadOnly(true);
         where->setText(current && s->open ? s->reached : QString());
         where->setPlaceholderText(tr("not open"));
-        auto *copy = new QPushButton(tr("&Copy"), row);
+        auto *copy = new QPushButton(tr("Copy"), row);
         copy->setObjectName(QStringLiteral("bridgeCopy_") + b.end);
         copy->setToolTip(tr("Copy where the bridge is reached to the clipboard"));
         copy->setEnabled(current && s->open);
         connect(copy, &QPushButton::clicked, this, [this, end = b.end] { copyReached(end); });
-        auto *edit = new QPushButton(tr("&Edit..."), row);
+        auto *edit = new QPushButton(tr("Edit..."), row);
         edit->setObjectName(QStringLiteral("bridgeEdit_") + b.end);
         connect(edit, &QPushButton::clicked, m_view,
                 [view = m_view, end = b.end] { view->editBridge(end); });
-        auto *remove = new QPushButton(tr("&Remove"), row);
+        auto *remove = new QPushButton(tr("Remove"), row);
         remove->setObjectName(QStringLiteral("bridgeRemove_") + b.end);
         connect(remove, &QPushButton::clicked, m_view,
                 [view = m_view, end = b.end] { view->removeBridge(end); });

@@ -7,6 +7,7 @@
 #include "answer_dialogs.h"
 #include "window_fixture.h"
 
+#include "app/gui/language.h"
 #include "app/gui/line_settings_form.h"
 #include "app/gui/network_bridge_controller.h"
 #include "app/gui/network_bridge_dialog.h"
@@ -26,12 +27,17 @@
 #include <QApplication>
 #include <QClipboard>
 #include <QComboBox>
+#include <QDialogButtonBox>
+#include <QDockWidget>
 #include <QDeadlineTimer>
 #include <QFile>
 #include <QInputDialog>
 #include <QLabel>
 #include <QLineEdit>
+#include <QProcess>
 #include <QPushButton>
+#include <QRegularExpression>
+#include <QStandardPaths>
 #include <QSpinBox>
 #include <QUndoStack>
 
@@ -147,6 +153,25 @@ TEST(NetworkBridges, APtyBridgeMadeInTheUiIsPolledThroughThePathItShows) {
     QString error;
     EXPECT_EQ(readD0Through(path, &error), (std::vector<std::uint16_t>{321}))
         << error.toStdString();
+
+    // And Debian's mbpoll, a real MODBUS master, on the same path (as CliNetwork's tests run it
+    // against `serve`; installed by scripts/install-deps.sh).
+    if (const QString mbpoll = QStandardPaths::findExecutable(QStringLiteral("mbpoll"));
+        !mbpoll.isEmpty()) {
+        QProcess p;
+        p.start(mbpoll, {QStringLiteral("-m"), QStringLiteral("rtu"), QStringLiteral("-b"),
+                         QStringLiteral("19200"), QStringLiteral("-P"), QStringLiteral("none"),
+                         QStringLiteral("-a"), QStringLiteral("1"), QStringLiteral("-0"),
+                         QStringLiteral("-1"), QStringLiteral("-o"), QStringLiteral("1"),
+                         QStringLiteral("-t"), QStringLiteral("4"), QStringLiteral("-r"),
+                         QStringLiteral("0"), QStringLiteral("-c"), QStringLiteral("1"), path});
+        ASSERT_TRUE(p.waitForFinished(20000));
+        const QString out = QString::fromUtf8(p.readAllStandardOutput());
+        EXPECT_EQ(p.exitCode(), 0) << out.toStdString();
+        const auto m = QRegularExpression(QStringLiteral(R"(\[0\]:\s+(-?\d+))")).match(out);
+        ASSERT_TRUE(m.hasMatch()) << out.toStdString();
+        EXPECT_EQ(m.captured(1).toInt(), 321);
+    }
 
     // Stop builds the network again on the same pseudo-terminal: the master keeps its path.
     toolbarAction(*net, QStringLiteral("Stop"))->trigger();
@@ -317,6 +342,86 @@ TEST(ProjectPorts, EditCommunicationPortsIsOneUndoStepKeptInTheProject) {
     const std::optional<model::Project> read = model::loadProject(file, &error);
     ASSERT_TRUE(read.has_value()) << error.message.toStdString();
     EXPECT_EQ(read->ports, expected);
+}
+
+// At 1366x768 in English, Hungarian and Italian the bridge dialog and the network window with
+// a live bridge show every text whole. RUNG_SCREENSHOT_DIR set: the pictures are saved there
+// (docs/screenshots/network-bridge-*.png; run under Xvfb with QT_QPA_PLATFORM=xcb).
+TEST(NetworkBridges, FitTheScreenInEveryLanguage) {
+    const QString shots = qEnvironmentVariable("RUNG_SCREENSHOT_DIR");
+    const char *bridged = R"({"stations": [{"name": "plc", "program": "s.il", "model": "VB",
+        "ports": {"CP2": {"application": "modbus", "station": 1}}}],
+        "bridges": [{"port": "plc/CP2", "pty": true}]})";
+    for (const char *language : {"en", "hu", "it"}) {
+        SCOPED_TRACE(language);
+        ASSERT_TRUE(app::setLanguage(QString::fromLatin1(language), false));
+        QCoreApplication::sendPostedEvents(nullptr, QEvent::LanguageChange);
+        QTemporaryDir dir;
+        const QString file = dir.filePath(QStringLiteral("plant.rungnet"));
+        ASSERT_TRUE(writeText(file, bridged));
+        ASSERT_TRUE(writeText(dir.filePath(QStringLiteral("s.il")), kBridgedSlave));
+        app::MainWindow window;
+        ASSERT_TRUE(window.openFile(file, QString(), true));
+        auto *net = window.findChildren<app::NetworkWindow *>().back();
+        net->resize(1366, 768);
+        net->show();
+        const QString end = QStringLiteral("plc/CP2");
+        ASSERT_TRUE(eventually([&] { return !shownReached(net, end).isEmpty(); }));
+        net->session()->run();
+        QCoreApplication::processEvents();
+        EXPECT_TRUE(net->bridges()->dock()->isVisible());
+        for (QLabel *label : net->bridges()->dock()->findChildren<QLabel *>())
+            if (label->isVisible() && !label->wordWrap()) {
+                EXPECT_GE(label->width(), label->sizeHint().width())
+                    << label->text().toStdString();
+            }
+        for (QPushButton *button : net->bridges()->dock()->findChildren<QPushButton *>())
+            if (button->isVisible()) {
+                EXPECT_GE(button->width(), button->sizeHint().width())
+                    << button->text().toStdString();
+            }
+        const QRect port = net->networkView()->itemRect(QStringLiteral("plc"));
+        EXPECT_GE(port.width(), QFontMetrics(net->networkView()->canvas()->font())
+                                    .horizontalAdvance(net->networkView()->bridgeText(end)));
+        if (!shots.isEmpty())
+            net->grab().save(
+                QStringLiteral("%1/network-bridge-%2.png").arg(shots, QLatin1String(language)));
+
+        // The dialog on a serial bridge, and on a listening one.
+        const model::Target &vigor = *model::Target::byId(QStringLiteral("vigor"));
+        model::PortConfig config;
+        QString error;
+        ASSERT_TRUE(model::readPortConfig(
+            vigor, vigor.model(QStringLiteral("VB")), QStringLiteral("CP2"),
+            {{QJsonObject{{QStringLiteral("application"), QStringLiteral("modbus")}}, end}},
+            &config, &error));
+        network::BridgeDescription serial;
+        serial.end = end;
+        serial.kind = Kind::Serial;
+        serial.where = QStringLiteral("/dev/ttyUSB0");
+        app::NetworkBridgeDialog dialog(serial, *config.application, config.line, {});
+        for (const Kind kind : {Kind::Listen, Kind::Serial}) {
+            dialog.setKind(kind);
+            dialog.show();
+            dialog.adjustSize();
+            QCoreApplication::processEvents();
+            EXPECT_LE(dialog.width(), 1366);
+            EXPECT_LE(dialog.height(), 768);
+            for (QWidget *w : dialog.findChildren<QWidget *>()) {
+                auto *label = qobject_cast<QLabel *>(w);
+                auto *radio = qobject_cast<QAbstractButton *>(w);
+                if (!w->isVisible() || (label && label->wordWrap()) || (!label && !radio))
+                    continue;
+                EXPECT_GE(w->width(), w->sizeHint().width())
+                    << (label ? label->text() : radio->text()).toStdString();
+            }
+        }
+        if (!shots.isEmpty())
+            dialog.grab().save(QStringLiteral("%1/network-bridge-dialog-%2.png")
+                                   .arg(shots, QLatin1String(language)));
+    }
+    app::setLanguage(QStringLiteral("en"), false);
+    QCoreApplication::sendPostedEvents(nullptr, QEvent::LanguageChange);
 }
 
 } // namespace
