@@ -19,8 +19,10 @@ class QMainWindow;
 namespace rung::app {
 
 // The layout's version in the saved window state: a layout saved before these groups
-// (six tabs on the left, 1) or before the Tests dock (2) is not restored.
-inline constexpr int kDockLayoutVersion = 2;
+// (six tabs on the left, 1), before the Tests dock (2) or before the Front Panel dock (3: an
+// older layout restored left it alone where it was added, not a tab beside the run controls)
+// is not restored.
+inline constexpr int kDockLayoutVersion = 3;
 // A screen at least this wide gets the right-hand column.
 inline constexpr int kWideScreen = 1280;
 

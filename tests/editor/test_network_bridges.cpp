@@ -27,9 +27,9 @@
 #include <QApplication>
 #include <QClipboard>
 #include <QComboBox>
+#include <QDeadlineTimer>
 #include <QDialogButtonBox>
 #include <QDockWidget>
-#include <QDeadlineTimer>
 #include <QFile>
 #include <QInputDialog>
 #include <QLabel>
@@ -37,8 +37,8 @@
 #include <QProcess>
 #include <QPushButton>
 #include <QRegularExpression>
-#include <QStandardPaths>
 #include <QSpinBox>
+#include <QStandardPaths>
 #include <QUndoStack>
 
 namespace rung::test {
@@ -372,8 +372,7 @@ TEST(NetworkBridges, FitTheScreenInEveryLanguage) {
         EXPECT_TRUE(net->bridges()->dock()->isVisible());
         for (QLabel *label : net->bridges()->dock()->findChildren<QLabel *>())
             if (label->isVisible() && !label->wordWrap()) {
-                EXPECT_GE(label->width(), label->sizeHint().width())
-                    << label->text().toStdString();
+                EXPECT_GE(label->width(), label->sizeHint().width()) << label->text().toStdString();
             }
         for (QPushButton *button : net->bridges()->dock()->findChildren<QPushButton *>())
             if (button->isVisible()) {
