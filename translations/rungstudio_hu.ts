@@ -2254,9 +2254,9 @@ Ctrl+Z / Ctrl+Y: visszavonás / mégis, Ctrl+görgő: nagyítás, F4: a program 
         <translation>Módosítva: a Megállás ezzel a híddal építi fel újra a hálózatot</translation>
     </message>
     <message>
-        <location line="+6"/>
-        <source>Open: a master on this computer opens %1</source>
-        <translation>Nyitva: ezen a számítógépen egy master a(z) %1 útvonalat nyitja meg</translation>
+        <location line="+5"/>
+        <source>Open: give this path to a master on this computer</source>
+        <translation>Nyitva: adja meg ezt az útvonalat egy masternek ezen a számítógépen</translation>
     </message>
     <message>
         <location line="+1"/>

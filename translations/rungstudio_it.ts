@@ -2261,9 +2261,9 @@ Ctrl+Z / Ctrl+Y: annulla / ripeti, Ctrl+rotellina: zoom, F4: verifica il program
         <translation>Modificato: Stop ricostruisce la rete con questo ponte</translation>
     </message>
     <message>
-        <location line="+6"/>
-        <source>Open: a master on this computer opens %1</source>
-        <translation>Aperto: un master su questo computer apre %1</translation>
+        <location line="+5"/>
+        <source>Open: give this path to a master on this computer</source>
+        <translation>Aperto: date questo percorso a un master su questo computer</translation>
     </message>
     <message>
         <location line="+1"/>

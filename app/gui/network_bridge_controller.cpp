@@ -185,9 +185,8 @@ void NetworkBridgeController::refresh() {
             text = s->error;
             bad = true;
         } else if (s->open)
-            text = b.kind == Kind::Pty
-                       ? tr("Open: a master on this computer opens %1").arg(s->reached)
-                       : tr("Open: %1").arg(s->reached);
+            text = b.kind == Kind::Pty ? tr("Open: give this path to a master on this computer")
+                                       : tr("Open: %1").arg(s->reached);
         else
             text = tr("Opening...");
         state->setText(text);

@@ -138,7 +138,7 @@ TEST(NetworkBridges, APtyBridgeMadeInTheUiIsPolledThroughThePathItShows) {
     EXPECT_TRUE(path.startsWith(QStringLiteral("/dev/pts/"))) << path.toStdString();
     EXPECT_EQ(net->networkView()->bridgeText(end),
               QStringLiteral("bridge: pseudo-terminal %1").arg(path));
-    EXPECT_TRUE(shownState(net, end).contains(path));
+    EXPECT_TRUE(shownState(net, end).startsWith(QStringLiteral("Open")));
 
     // Copy puts the path on the clipboard.
     auto *copy = net->findChild<QPushButton *>(QStringLiteral("bridgeCopy_") + end);
