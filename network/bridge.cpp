@@ -100,7 +100,10 @@ openBridgeLine(const BridgeDescription &b, const model::SerialSettings &line, QS
     }
     if (opening)
         opening(transport.get());
-    if (!transport->isOpen() && !transport->open(error))
+    const bool open = transport->isOpen() || transport->open(error);
+    if (opening)
+        opening(nullptr); // before the line may go: nobody may cancel it any more
+    if (!open)
         return nullptr;
     if (b.kind == BridgeDescription::Kind::Listen)
         *where = transport->name();

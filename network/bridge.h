@@ -47,8 +47,8 @@ bool bridgeablePort(Network &network, const QString &port, const QString &where,
 // format, a TCP connection to a device server, or a socket listening for a master. *reached
 // says how a peer reaches it (the pseudo-terminal's path, the serial port's name, HOST:PORT).
 // Null with what, where and why. Blocks while it connects: not for the UI thread.
-// `opening`, when given, is told of the line before it opens (to cancel() a connection that
-// takes long from another thread).
+// `opening`, when given, is told of the line before it opens and of null once the opening is
+// over (to cancel() a connection that takes long from another thread meanwhile).
 std::unique_ptr<comms::Transport>
 openBridgeLine(const BridgeDescription &bridge, const model::SerialSettings &line, QString *reached,
                QString *error, const std::function<void(comms::Transport *)> &opening = {});

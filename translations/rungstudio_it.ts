@@ -1799,7 +1799,7 @@ Ctrl+Z / Ctrl+Y: annulla / ripeti, Ctrl+rotellina: zoom, F4: verifica il program
     <message>
         <location line="+3"/>
         <source>Communic&amp;ation Ports...</source>
-        <translation>Porte di comunica&amp;zione...</translation>
+        <translation>Con&amp;figurazione delle porte di comunicazione...</translation>
     </message>
     <message>
         <location line="+2"/>
