@@ -135,9 +135,15 @@ bool SessionBridges::poll(Network &network) {
         BridgeStatus &s = m_status[it->index];
         QString failure = it->endpoint->failure();
         if (failure.isEmpty()) {
-            // Whatever is there now; the worker never waits for a line.
+            // Whatever is there now. A pseudo-terminal or a serial port is polled without a
+            // wait; a TCP socket of a thread without an event loop takes in what came (and a
+            // listening one a master) only while it waits, so it gets a millisecond.
+            const BridgeDescription::Kind kind = s.bridge.kind;
+            const int waitMs =
+                kind == BridgeDescription::Kind::Tcp || kind == BridgeDescription::Kind::Listen ? 1
+                                                                                                : 0;
             for (int reads = 0; reads < 16; ++reads) {
-                const comms::ReadResult r = it->line->read(QDeadlineTimer(0));
+                const comms::ReadResult r = it->line->read(QDeadlineTimer(reads == 0 ? waitMs : 0));
                 if (r.status == comms::ReadResult::Status::Data)
                     network.transmit(it->endpoint, r.bytes);
                 else if (r.status == comms::ReadResult::Status::Failed)

@@ -1,6 +1,7 @@
 #include "app/gui/network_bridge_dialog.h"
 
 #include "app/gui/line_settings_form.h"
+#include "app/gui/network_port_dialog.h"
 
 #include "model/comm/port_spec.h"
 #include "model/comm/serial_line.h"
@@ -22,14 +23,7 @@ using Kind = network::BridgeDescription::Kind;
 
 // The formats a bridged serial port may take: the application's own when it has one.
 QStringList bridgeFrames(const model::PortApplication &a) {
-    if (a.fixedFrame)
-        return {QString::fromLatin1(a.frame)};
-    QStringList out;
-    for (const char *data : {"8", "7"})
-        for (const char *parity : {"N", "E", "O"})
-            for (const char *stop : {"1", "2"})
-                out << QLatin1String(data) + QLatin1String(parity) + QLatin1String(stop);
-    return out;
+    return a.fixedFrame ? QStringList{QString::fromLatin1(a.frame)} : portFrameChoices();
 }
 
 } // namespace

@@ -25,16 +25,6 @@ QString applicationText(const model::PortApplication &a) {
     return QCoreApplication::translate("rung::model::Target", a.name);
 }
 
-// The formats a UART takes (parseFrameFormat: 7 or 8 data bits, N / E / O, 1 or 2 stop bits).
-QStringList portFrames() {
-    QStringList out;
-    for (const char *data : {"8", "7"})
-        for (const char *parity : {"N", "E", "O"})
-            for (const char *stop : {"1", "2"})
-                out << QLatin1String(data) + QLatin1String(parity) + QLatin1String(stop);
-    return out;
-}
-
 QSpinBox *portSpin(model::SettingRange range, QWidget *parent) {
     auto *box = new QSpinBox(parent);
     box->setRange(range.lowest, range.highest);
@@ -268,7 +258,7 @@ void NetworkPortDialog::fill(const QJsonObject &settings) {
 
     m_frame->clear();
     const QString defaultFrame = defaults.value(QStringLiteral("frame")).toString();
-    for (const QString &f : portFrames())
+    for (const QString &f : portFrameChoices())
         m_frame->addItem(f == defaultFrame ? tr("%1 (default)").arg(f) : f, f);
     const QString frame = value("frame").toString();
     if (m_frame->findData(frame) < 0)
@@ -353,6 +343,16 @@ void NetworkPortDialog::check() {
     m_problem->setText(why);
     m_problem->setVisible(!why.isEmpty());
     m_buttons->button(QDialogButtonBox::Ok)->setEnabled(why.isEmpty());
+}
+
+// The formats a UART takes (parseFrameFormat: 7 or 8 data bits, N / E / O, 1 or 2 stop bits).
+QStringList portFrameChoices() {
+    QStringList out;
+    for (const char *data : {"8", "7"})
+        for (const char *parity : {"N", "E", "O"})
+            for (const char *stop : {"1", "2"})
+                out << QLatin1String(data) + QLatin1String(parity) + QLatin1String(stop);
+    return out;
 }
 
 std::optional<QJsonObject> editPortSettings(QWidget *parent, const model::Target &target,

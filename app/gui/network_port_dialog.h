@@ -12,6 +12,7 @@
 
 #include <QDialog>
 #include <QJsonObject>
+#include <QStringList>
 
 #include <optional>
 
@@ -92,6 +93,10 @@ private:
     QDialogButtonBox *m_buttons;
     bool m_filling = false;
 };
+
+// The character formats a UART takes, as the port dialogs offer them: 8N1 .. 7O2
+// (model::parseFrameFormat reads each).
+QStringList portFrameChoices();
 
 // Edits one port of a network's station or of a single project: the settings after OK, nullopt
 // when cancelled. `lower` as above (empty for a project's own ports).

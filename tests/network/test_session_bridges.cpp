@@ -11,6 +11,7 @@
 
 #include "comms/protocol/modbus_master.h"
 #include "comms/transport/pty_transport.h"
+#include "comms/transport/tcp_transport.h"
 
 #include <QDeadlineTimer>
 
@@ -35,9 +36,8 @@ std::unique_ptr<NetworkSession> bridgedSession(const char *bridges, QString *err
         d, listingLoader({{QStringLiteral("s.il"), QString::fromLatin1(kBridgedVb)}}), error);
 }
 
-// D0 of MODBUS station 1 through the pseudo-terminal at `path`, by the product's own master.
-std::vector<std::uint16_t> holdingRegister0(const QString &path, QString *error) {
-    comms::PtyTransport hmi(path);
+// D0 of MODBUS station 1 through `hmi` (opened here), by the product's own master.
+std::vector<std::uint16_t> holdingRegister0(comms::Transport &hmi, QString *error) {
     if (!hmi.open(error))
         return {};
     comms::modbus::Request read;
@@ -58,6 +58,11 @@ std::vector<std::uint16_t> holdingRegister0(const QString &path, QString *error)
         return {};
     }
     return reply.response().registers;
+}
+
+std::vector<std::uint16_t> holdingRegister0(const QString &path, QString *error) {
+    comms::PtyTransport hmi(path);
+    return holdingRegister0(hmi, error);
 }
 
 TEST(SessionBridges, AMasterOnThePtyPollsTheRunningNetworkAndStopKeepsThePath) {
@@ -106,6 +111,26 @@ TEST(SessionBridges, AMasterOnThePtyPollsTheRunningNetworkAndStopKeepsThePath) {
     ASSERT_TRUE(session) << error.toStdString();
     session->startBridges(lines);
     EXPECT_TRUE(eventually([&] { return lines->size() == 0; }));
+}
+
+// A "listen" bridge: a master connecting over TCP (RTU over TCP) polls the running network;
+// the port chosen for "0" is the one shown.
+TEST(SessionBridges, AMasterConnectingOverTcpPollsTheRunningNetwork) {
+    QString error;
+    std::unique_ptr<NetworkSession> session =
+        bridgedSession(R"([{"port": "plc/CP2", "listen": "127.0.0.1:0"}])", &error);
+    ASSERT_TRUE(session) << error.toStdString();
+    session->startBridges(std::make_shared<BridgeLines>());
+    ASSERT_TRUE(eventually(
+        [&] { return !session->bridgeStatus().empty() && session->bridgeStatus()[0].open; }));
+    const QString where = session->bridgeStatus()[0].reached;
+    ASSERT_TRUE(where.startsWith(QStringLiteral("127.0.0.1:"))) << where.toStdString();
+    const quint16 port = quint16(where.section(QLatin1Char(':'), 1).toUInt());
+    ASSERT_NE(port, 0);
+    session->run();
+    comms::TcpTransport hmi(QStringLiteral("127.0.0.1"), port);
+    EXPECT_EQ(holdingRegister0(hmi, &error), (std::vector<std::uint16_t>{321}))
+        << error.toStdString();
 }
 
 TEST(SessionBridges, ALineThatDoesNotOpenSaysWhatWhereAndWhyAndTheNetworkRunsOn) {
