@@ -21,18 +21,18 @@ namespace rung::app {
 
 namespace {
 
-using Kind = network::BridgeDescription::Kind;
+using BridgeKind = network::BridgeDescription::Kind;
 
 QString bridgeTitle(const network::BridgeDescription &b) {
     //: %1 a station's port ("s5/CP2"); the rest what its bridge goes to
     switch (b.kind) {
-    case Kind::Pty:
+    case BridgeKind::Pty:
         return NetworkBridgeController::tr("%1: pseudo-terminal").arg(b.end);
-    case Kind::Serial:
+    case BridgeKind::Serial:
         return NetworkBridgeController::tr("%1: serial port %2").arg(b.end, b.where);
-    case Kind::Tcp:
+    case BridgeKind::Tcp:
         return NetworkBridgeController::tr("%1: TCP to %2").arg(b.end, b.where);
-    case Kind::Listen:
+    case BridgeKind::Listen:
         return NetworkBridgeController::tr("%1: listens on %2").arg(b.end, b.where);
     }
     return b.end;
@@ -185,8 +185,9 @@ void NetworkBridgeController::refresh() {
             text = s->error;
             bad = true;
         } else if (s->open)
-            text = b.kind == Kind::Pty ? tr("Open: give this path to a master on this computer")
-                                       : tr("Open: %1").arg(s->reached);
+            text = b.kind == BridgeKind::Pty
+                       ? tr("Open: give this path to a master on this computer")
+                       : tr("Open: %1").arg(s->reached);
         else
             text = tr("Opening...");
         state->setText(text);

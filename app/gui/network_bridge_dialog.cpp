@@ -19,7 +19,7 @@ namespace rung::app {
 
 namespace {
 
-using Kind = network::BridgeDescription::Kind;
+using BridgeKind = network::BridgeDescription::Kind;
 
 // The formats a bridged serial port may take: the application's own when it has one.
 QStringList bridgeFrames(const model::PortApplication &a) {
@@ -92,47 +92,47 @@ NetworkBridgeDialog::NetworkBridgeDialog(const network::BridgeDescription &bridg
     // The bridge as it is.
     const qsizetype colon = bridge.where.lastIndexOf(QLatin1Char(':'));
     switch (bridge.kind) {
-    case Kind::Serial:
+    case BridgeKind::Serial:
         m_line->setPort(bridge.where);
         break;
-    case Kind::Tcp:
-    case Kind::Listen:
+    case BridgeKind::Tcp:
+    case BridgeKind::Listen:
         if (colon > 0) {
             m_line->setHost(bridge.where.left(colon));
             m_line->setTcpPort(bridge.where.mid(colon + 1).toInt());
         }
         break;
-    case Kind::Pty:
+    case BridgeKind::Pty:
         break;
     }
     setKind(bridge.kind);
     setMinimumWidth(480);
 }
 
-void NetworkBridgeDialog::setKind(Kind kind) {
+void NetworkBridgeDialog::setKind(BridgeKind kind) {
     m_kinds[int(kind)]->setChecked(true);
     kindChosen();
 }
 
-Kind NetworkBridgeDialog::kind() const {
+BridgeKind NetworkBridgeDialog::kind() const {
     for (int i = 0; i < 4; ++i)
         if (m_kinds[i]->isChecked())
-            return Kind(i);
-    return Kind::Pty;
+            return BridgeKind(i);
+    return BridgeKind::Pty;
 }
 
 void NetworkBridgeDialog::kindChosen() {
-    const Kind k = kind();
-    m_line->setVisible(k != Kind::Pty);
-    m_line->showPage(k == Kind::Serial ? LineSettingsForm::Page::Serial
-                                       : LineSettingsForm::Page::Tcp);
-    if (k == Kind::Listen) {
+    const BridgeKind k = kind();
+    m_line->setVisible(k != BridgeKind::Pty);
+    m_line->showPage(k == BridgeKind::Serial ? LineSettingsForm::Page::Serial
+                                             : LineSettingsForm::Page::Tcp);
+    if (k == BridgeKind::Listen) {
         m_line->setHostLabel(tr("Listen on:"));
         m_line->setTcpPortRange(0, 65535);
         m_line->tcpPortBox()->setSpecialValueText(tr("any free port"));
         m_line->hostEdit()->setToolTip(
             tr("An IP address of this computer, 0.0.0.0 for all of them, or localhost"));
-        if (m_bridge.kind != Kind::Listen && m_line->host() == QLatin1String("127.0.0.1"))
+        if (m_bridge.kind != BridgeKind::Listen && m_line->host() == QLatin1String("127.0.0.1"))
             m_line->setHost(QStringLiteral("0.0.0.0"));
     } else {
         m_line->setHostLabel({});
@@ -141,24 +141,24 @@ void NetworkBridgeDialog::kindChosen() {
         m_line->hostEdit()->setToolTip(tr("The serial device server's host name or IP address"));
     }
     switch (k) {
-    case Kind::Pty:
+    case BridgeKind::Pty:
         m_note->setText(tr("A new pseudo-terminal (/dev/pts/N) opens when the network window "
                            "builds the network, and stays while the window is open (Stop keeps "
                            "it). Its path is shown on the port and in the Bridges dock, with a "
                            "Copy button: give it to the master (mbpoll, an HMI, another Rung "
                            "Studio's Connection dock)."));
         break;
-    case Kind::Serial:
+    case BridgeKind::Serial:
         m_note->setText(tr("The serial port opens at the port's own rate and format, so that the "
                            "simulated station and the real line agree: changing them here "
                            "changes the port's settings."));
         break;
-    case Kind::Tcp:
+    case BridgeKind::Tcp:
         m_note->setText(tr("A serial device server in TCP server mode passes the bytes to its "
                            "serial line: the simulated station reaches the real device behind "
                            "it."));
         break;
-    case Kind::Listen:
+    case BridgeKind::Listen:
         m_note->setText(tr("A master connects over TCP and sends the serial line's bytes (RTU "
                            "over TCP, not Modbus TCP), one master at a time."));
         break;
@@ -170,14 +170,14 @@ network::BridgeDescription NetworkBridgeDialog::bridge() const {
     network::BridgeDescription b = m_bridge;
     b.kind = kind();
     switch (b.kind) {
-    case Kind::Pty:
+    case BridgeKind::Pty:
         b.where.clear();
         break;
-    case Kind::Serial:
+    case BridgeKind::Serial:
         b.where = m_line->port();
         break;
-    case Kind::Tcp:
-    case Kind::Listen:
+    case BridgeKind::Tcp:
+    case BridgeKind::Listen:
         b.where = QStringLiteral("%1:%2").arg(m_line->host()).arg(m_line->tcpPort());
         break;
     }
@@ -185,7 +185,7 @@ network::BridgeDescription NetworkBridgeDialog::bridge() const {
 }
 
 std::optional<QJsonObject> NetworkBridgeDialog::portSettings() const {
-    if (kind() != Kind::Serial)
+    if (kind() != BridgeKind::Serial)
         return std::nullopt;
     const model::SerialSettings line = m_line->line();
     const QString frame = model::frameFormatText(line);
@@ -200,15 +200,15 @@ std::optional<QJsonObject> NetworkBridgeDialog::portSettings() const {
 
 QString NetworkBridgeDialog::problem() const {
     switch (kind()) {
-    case Kind::Pty:
+    case BridgeKind::Pty:
         return {};
-    case Kind::Serial:
+    case BridgeKind::Serial:
         return m_line->port().isEmpty() ? tr("Choose the serial port, or type its name")
                                         : QString();
-    case Kind::Tcp:
+    case BridgeKind::Tcp:
         return m_line->host().isEmpty() ? tr("Type the device server's host name or IP address")
                                         : QString();
-    case Kind::Listen:
+    case BridgeKind::Listen:
         return m_line->host().isEmpty()
                    ? tr("Type the address to listen on (0.0.0.0 for all of them)")
                    : QString();

@@ -44,7 +44,7 @@
 namespace rung::test {
 namespace {
 
-using Kind = network::BridgeDescription::Kind;
+using BridgeKind = network::BridgeDescription::Kind;
 
 // A Vigor VB answering MODBUS RTU as station 1 on CP2, its D0 holding 321.
 const char *kBridgedNet =
@@ -124,9 +124,9 @@ TEST(NetworkBridges, APtyBridgeMadeInTheUiIsPolledThroughThePathItShows) {
             dialog->accept();
             return true;
         },
-        [&] { net->networkView()->editBridge(end, Kind::Pty); });
+        [&] { net->networkView()->editBridge(end, BridgeKind::Pty); });
     ASSERT_NE(doc->bridgeOf(end), nullptr);
-    EXPECT_EQ(doc->bridgeOf(end)->kind, Kind::Pty);
+    EXPECT_EQ(doc->bridgeOf(end)->kind, BridgeKind::Pty);
     EXPECT_EQ(doc->undoStack()->count(), 1);
     EXPECT_TRUE(net->bridges()->dock()->isVisibleTo(net));
 
@@ -187,7 +187,7 @@ TEST(NetworkBridges, APtyBridgeMadeInTheUiIsPolledThroughThePathItShows) {
     ASSERT_TRUE(network::readNetworkFile(doc->filePath(), &read, &error)) << error.toStdString();
     ASSERT_EQ(read.bridges.size(), 1u);
     EXPECT_EQ(read.bridges[0].end, end);
-    EXPECT_EQ(read.bridges[0].kind, Kind::Pty);
+    EXPECT_EQ(read.bridges[0].kind, BridgeKind::Pty);
     EXPECT_TRUE(network::networkDifferences(read, doc->description()).isEmpty())
         << network::networkDifferences(read, doc->description())
                .join(QLatin1Char('\n'))
@@ -227,9 +227,9 @@ TEST(NetworkBridges, ASerialPortThatDoesNotOpenSaysWhatWhereAndWhy) {
             dialog->accept();
             return true;
         },
-        [&] { net->networkView()->editBridge(end, Kind::Serial); });
+        [&] { net->networkView()->editBridge(end, BridgeKind::Serial); });
     ASSERT_NE(doc->bridgeOf(end), nullptr);
-    EXPECT_EQ(doc->bridgeOf(end)->kind, Kind::Serial);
+    EXPECT_EQ(doc->bridgeOf(end)->kind, BridgeKind::Serial);
     EXPECT_EQ(doc->bridgeOf(end)->where, missing);
     EXPECT_EQ(doc->description()
                   .stations[0]
@@ -273,7 +273,7 @@ TEST(NetworkBridges, TheDialogAsksEachKindWhatItNeeds) {
         << error.toStdString();
     network::BridgeDescription old;
     old.end = QStringLiteral("plc/CP2");
-    old.kind = Kind::Tcp;
+    old.kind = BridgeKind::Tcp;
     old.where = QStringLiteral("192.168.1.50:4001");
     app::NetworkBridgeDialog dialog(old, *config.application, config.line, {});
     EXPECT_EQ(dialog.lineForm()->host(), QStringLiteral("192.168.1.50"));
@@ -282,16 +282,16 @@ TEST(NetworkBridges, TheDialogAsksEachKindWhatItNeeds) {
     // Computer Link is always 7E1: the form offers only that.
     EXPECT_EQ(dialog.lineForm()->frameBox()->count(), 1);
     EXPECT_EQ(dialog.lineForm()->frameBox()->currentText(), QStringLiteral("7E1"));
-    dialog.setKind(Kind::Listen);
+    dialog.setKind(BridgeKind::Listen);
     EXPECT_EQ(dialog.lineForm()->tcpPortBox()->minimum(), 0);
     dialog.lineForm()->setHost(QStringLiteral("0.0.0.0"));
     dialog.lineForm()->setTcpPort(0);
-    EXPECT_EQ(dialog.bridge().kind, Kind::Listen);
+    EXPECT_EQ(dialog.bridge().kind, BridgeKind::Listen);
     EXPECT_EQ(dialog.bridge().where, QStringLiteral("0.0.0.0:0"));
     dialog.lineForm()->setHost(QString());
     EXPECT_FALSE(dialog.problem().isEmpty());
     EXPECT_FALSE(dialog.buttons()->button(QDialogButtonBox::Ok)->isEnabled());
-    dialog.setKind(Kind::Pty);
+    dialog.setKind(BridgeKind::Pty);
     EXPECT_FALSE(dialog.lineForm()->isVisibleTo(&dialog));
     EXPECT_TRUE(dialog.problem().isEmpty());
     EXPECT_EQ(dialog.bridge().where, QString());
@@ -396,10 +396,10 @@ TEST(NetworkBridges, FitTheScreenInEveryLanguage) {
             &config, &error));
         network::BridgeDescription serial;
         serial.end = end;
-        serial.kind = Kind::Serial;
+        serial.kind = BridgeKind::Serial;
         serial.where = QStringLiteral("/dev/ttyUSB0");
         app::NetworkBridgeDialog dialog(serial, *config.application, config.line, {});
-        for (const Kind kind : {Kind::Listen, Kind::Serial}) {
+        for (const BridgeKind kind : {BridgeKind::Listen, BridgeKind::Serial}) {
             dialog.setKind(kind);
             dialog.show();
             dialog.adjustSize();
