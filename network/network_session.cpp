@@ -145,6 +145,8 @@ void NetworkSession::run() {
     control([this] {
         m_mode = Mode::Running;
         m_budgetUs = 0;
+        m_instructionSteps = 0;
+        m_finishScan = false;
     });
     setRunState(RunState::Running);
 }
@@ -154,6 +156,8 @@ void NetworkSession::pause() {
         if (m_mode == Mode::Running)
             m_mode = Mode::Paused;
         m_budgetUs = 0;
+        m_instructionSteps = 0;
+        m_finishScan = false;
     });
     if (m_runState == RunState::Running || m_runState == RunState::Stepping)
         setRunState(RunState::Paused);
@@ -163,6 +167,8 @@ void NetworkSession::stop() {
     control([this] {
         m_mode = Mode::Stopped;
         m_budgetUs = 0;
+        m_instructionSteps = 0;
+        m_finishScan = false;
         m_reset = true;
         m_faults.clear();
     });
@@ -180,6 +186,8 @@ void NetworkSession::runFor(qint64 durationMs) {
     control([this, durationMs] {
         m_mode = Mode::Paused;
         m_budgetUs = durationMs * 1000;
+        m_instructionSteps = 0;
+        m_finishScan = false;
     });
     setRunState(RunState::Stepping);
 }
@@ -356,13 +364,7 @@ void NetworkSession::afterSlice(Network &network) {
     for (std::size_t i = 0; i < m_sources.size() && i < network.stations().size(); ++i) {
         StationSource &source = *m_sources[i];
         const simulator::Engine &engine = network.stations()[i]->engine();
-        const quint64 scans = engine.statistics().scans;
-        if (scans != source.m_scansRecorded) {
-            source.m_scansRecorded = scans;
-            std::lock_guard lock(source.m_historyMutex);
-            if (source.m_history.deviceCount() > 0)
-                source.m_history.record(scans, engine.statistics().timeMs, engine.words().data());
-        }
+        // The history is recorded after each scan (recordScan).
         const auto &errors = engine.runtimeErrors();
         if (errors.size() != source.m_errorsReported) {
             source.m_errorsReported = errors.size();
@@ -385,6 +387,7 @@ void NetworkSession::afterSlice(Network &network) {
 
 void NetworkSession::workerLoop() {
     std::unique_ptr<Network> network = std::move(m_initial);
+    prepareNetwork(*network);
     const qint64 slice = sliceUs(m_description);
     quint64 seen = ~quint64{0};
     Clock::time_point paceWall;
@@ -406,6 +409,7 @@ void NetworkSession::workerLoop() {
         bool scan = false;
         bool stepsDone = false;
         quint64 generation = 0;
+        DebugWork debug;
         std::vector<Fault> faults;
         qint64 until = 0;
         {
@@ -426,6 +430,8 @@ void NetworkSession::workerLoop() {
                     reset = true;
                     break;
                 }
+                if (takeDebugWork(&debug))
+                    break;
                 faults.swap(m_faults);
                 bool commands = false;
                 for (StationSource *s : m_sources)
@@ -480,6 +486,7 @@ void NetworkSession::workerLoop() {
                 ++m_trafficEpoch;
             }
             attachTraffic(*network);
+            prepareNetwork(*network);
             for (StationSource *s : m_sources) {
                 s->m_errorsReported = 0;
                 s->m_scansRecorded = 0;
@@ -491,6 +498,12 @@ void NetworkSession::workerLoop() {
             post([this] { setError({}); });
             anchor();
             publish(*network, true);
+            lastPublish = Clock::now();
+            unpublished = false;
+            continue;
+        }
+        if (debug.breakpoints || debug.step || debug.finish) {
+            doDebugWork(*network, debug);
             lastPublish = Clock::now();
             unpublished = false;
             continue;
@@ -519,15 +532,19 @@ void NetworkSession::workerLoop() {
             unpublished = false;
             continue;
         }
-        network->runUntil(until);
+        const bool reached = runSlice(*network, until);
         afterSlice(*network);
         unpublished = true;
         const auto now = Clock::now();
-        if (stepsDone || answerDue || now - lastPublish >= kPublishInterval) {
+        if (!reached || !m_fired.empty() || stepsDone || answerDue ||
+            now - lastPublish >= kPublishInterval) {
             publish(*network, std::exchange(answerDue, false));
             lastPublish = now;
             unpublished = false;
         }
+        reportTriggers(); // after the snapshot: a reader told finds that scan in it
+        if (!reached)
+            continue; // paused where it stopped (runSlice)
         if (stepsDone)
             post([this, generation] {
                 std::unique_lock lock(m_mutex);
