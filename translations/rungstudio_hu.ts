@@ -2184,6 +2184,149 @@ Ctrl+Z / Ctrl+Y: visszavonás / mégis, Ctrl+görgő: nagyítás, F4: a program 
     </message>
 </context>
 <context>
+    <name>rung::app::NetworkDebugController</name>
+    <message>
+        <location filename="../app/gui/network_debug_controller.cpp" line="+182"/>
+        <source>No instruction on line %1 to stop at</source>
+        <translation>A(z) %1. sorban nincs utasítás, amelynél meg lehetne állni</translation>
+    </message>
+    <message>
+        <location line="+14"/>
+        <source>Rung %1 is not in the instruction list: no breakpoint there</source>
+        <translation>A(z) %1. létrafok nincs az utasításlistában: ott nem lehet töréspont</translation>
+    </message>
+    <message>
+        <location line="+21"/>
+        <source>%1 stopped at its breakpoint on line %2; the other stations wait at the end of their scan</source>
+        <extracomment>%1 station, %2 line of its instruction list</extracomment>
+        <translation>%1 megállt a(z) %2. sor töréspontjánál; a többi állomás a ciklusa végén várakozik</translation>
+    </message>
+    <message>
+        <location line="+48"/>
+        <source>S&amp;tep Instruction</source>
+        <translation>Lé&amp;pés egy utasítással</translation>
+    </message>
+    <message>
+        <location line="+3"/>
+        <source>F&amp;inish Scan</source>
+        <translation>Ciklus &amp;befejezése</translation>
+    </message>
+    <message>
+        <location line="+2"/>
+        <source>Toggle &amp;Breakpoint</source>
+        <translation>&amp;Töréspont be/ki</translation>
+    </message>
+    <message>
+        <location line="+2"/>
+        <source>Breakpoint Co&amp;ndition...</source>
+        <translation>Tö&amp;réspont feltétele...</translation>
+    </message>
+    <message>
+        <location line="+5"/>
+        <location line="+147"/>
+        <source>No instruction at %1 to stop at</source>
+        <translation>Itt (%1) nincs utasítás, amelynél meg lehetne állni</translation>
+    </message>
+    <message>
+        <location line="-143"/>
+        <source>Remove All Brea&amp;kpoints</source>
+        <translation>Minden töréspont eltá&amp;volítása</translation>
+    </message>
+    <message>
+        <location line="+3"/>
+        <source>Stop &amp;When...</source>
+        <translation>Megállási feltéte&amp;l...</translation>
+    </message>
+    <message>
+        <location line="+11"/>
+        <source>Stop When</source>
+        <translation>Megállási feltétel</translation>
+    </message>
+    <message>
+        <location line="-5"/>
+        <source>Stop the network after the scan in which a station&apos;s condition becomes true,
+written STATION/CONDITION, e.g. %1/D10 &gt; 100 or %1/X0 rises (empty: never):</source>
+        <extracomment>%1 a station&apos;s name</extracomment>
+        <translation>A hálózat megáll annak a ciklusnak a végén, amelyben egy állomás feltétele igazzá válik,
+ÁLLOMÁS/FELTÉTEL alakban, pl. %1/D10 &gt; 100 vagy %1/X0 rises (üres: soha):</translation>
+    </message>
+    <message>
+        <location line="+19"/>
+        <source>Scan Debugger</source>
+        <translation>Ciklushibakereső</translation>
+    </message>
+    <message>
+        <location line="+1"/>
+        <source>Instruction List</source>
+        <translation>Utasításlista</translation>
+    </message>
+    <message>
+        <location line="+91"/>
+        <source>no station</source>
+        <translation>nincs állomás</translation>
+    </message>
+    <message>
+        <location line="+6"/>
+        <source>line %1</source>
+        <translation>%1. sor</translation>
+    </message>
+    <message>
+        <location line="+5"/>
+        <source>rung %1</source>
+        <translation>%1. létrafok</translation>
+    </message>
+    <message>
+        <location line="+17"/>
+        <source>Breakpoint set at %1 of %2</source>
+        <extracomment>%1 the place (&quot;line 3&quot;, &quot;rung 2&quot;), %2 the station</extracomment>
+        <translation>Töréspont beállítva: %2, %1</translation>
+    </message>
+    <message>
+        <location line="+1"/>
+        <source>Breakpoint at %1 of %2 removed</source>
+        <translation>Töréspont eltávolítva: %2, %1</translation>
+    </message>
+    <message>
+        <location line="+19"/>
+        <source>Stop %1 before line %2: %3</source>
+        <extracomment>where the breakpoint is: %1 station, %2 line, %3 the instruction</extracomment>
+        <translation>%1 álljon meg a(z) %2. sor előtt: %3</translation>
+    </message>
+    <message>
+        <location line="+70"/>
+        <source>%1 stopped before line %2</source>
+        <extracomment>the status bar while a station&apos;s scan is stopped inside: %1 station, %2 line</extracomment>
+        <translation>%1 megállt a(z) %2. sor előtt</translation>
+    </message>
+    <message>
+        <location line="+11"/>
+        <source>No stop condition</source>
+        <translation>Nincs megállási feltétel</translation>
+    </message>
+    <message>
+        <location line="+1"/>
+        <source>The network stops when %1 becomes true</source>
+        <translation>A hálózat megáll, amikor %1 igazzá válik</translation>
+    </message>
+    <message>
+        <location line="+24"/>
+        <source>%1: write STATION/CONDITION with a station of the network (%2)</source>
+        <extracomment>%1 what was typed, %2 the stations&apos; names</extracomment>
+        <translation>%1: ÁLLOMÁS/FELTÉTEL alakban írja, a hálózat egy állomásával (%2)</translation>
+    </message>
+    <message>
+        <location line="+17"/>
+        <source>%1 cannot be watched in %2</source>
+        <translation>%1 nem figyelhető a(z) %2 állomásban</translation>
+    </message>
+    <message>
+        <location line="+9"/>
+        <source>%1 became true after scan %2 (%3): the network stopped there</source>
+        <extracomment>%1 the condition (&quot;s2/D10 &gt; 100&quot;), %2 scan number, %3 virtual time</extracomment>
+        <translation>%1 igazzá vált a(z) %2. ciklus után (%3): a hálózat ott megállt</translation>
+    </message>
+</context>
+<context>
     <name>rung::app::NetworkDocument</name>
     <message>
         <location filename="../app/gui/network_document.cpp" line="+49"/>
@@ -2749,7 +2892,7 @@ Ctrl+Z / Ctrl+Y: visszavonás / mégis, Ctrl+görgő: nagyítás, F4: a program 
 <context>
     <name>rung::app::NetworkTrafficView</name>
     <message>
-        <location filename="../app/gui/network_traffic_view.cpp" line="+157"/>
+        <location filename="../app/gui/network_traffic_view.cpp" line="+164"/>
         <source>&amp;Errors only</source>
         <translation>Csak &amp;hibák</translation>
     </message>
@@ -3145,13 +3288,13 @@ Menti mégis, ezek nélkül?</translation>
 <context>
     <name>rung::app::NetworkWindow</name>
     <message>
-        <location filename="../app/gui/network_window.cpp" line="+210"/>
-        <location line="+217"/>
+        <location filename="../app/gui/network_window.cpp" line="+227"/>
+        <location line="+220"/>
         <source>Network</source>
         <translation>Hálózat</translation>
     </message>
     <message>
-        <location line="-214"/>
+        <location line="-217"/>
         <source>&amp;Network</source>
         <translation>&amp;Hálózat</translation>
     </message>
@@ -3273,12 +3416,12 @@ Menti mégis, ezek nélkül?</translation>
         <translation>A lehető &amp;leggyorsabban</translation>
     </message>
     <message>
-        <location line="+12"/>
+        <location line="+13"/>
         <source>Station:</source>
         <translation>Állomás:</translation>
     </message>
     <message>
-        <location line="+13"/>
+        <location line="+15"/>
         <source>F&amp;aults</source>
         <translation>&amp;Hibák</translation>
     </message>
@@ -3410,7 +3553,7 @@ Menti mégis, ezek nélkül?</translation>
         <translation>Létradiagram</translation>
     </message>
     <message>
-        <location line="+16"/>
+        <location line="+17"/>
         <source>Close Network</source>
         <translation>Hálózat bezárása</translation>
     </message>
@@ -3430,7 +3573,7 @@ Menti mégis, ezek nélkül?</translation>
         <translation>Üres hálózat: állomásokat a Hálózat nézet menüjéből adhat hozzá (jobb kattintás)</translation>
     </message>
     <message>
-        <location line="+38"/>
+        <location line="+39"/>
         <source>The network has no station yet: add one from the Network view&apos;s menu</source>
         <translation>A hálózatnak még nincs állomása: adjon hozzá egyet a Hálózat nézet menüjéből</translation>
     </message>
@@ -3446,7 +3589,7 @@ Menti mégis, ezek nélkül?</translation>
         <translation>%1 (%2 %3)</translation>
     </message>
     <message>
-        <location line="+45"/>
+        <location line="+49"/>
         <source>The network was edited: Stop builds it again with the change</source>
         <translation>A hálózat módosult: a Megállás a módosítással építi fel újra</translation>
     </message>
@@ -3467,7 +3610,7 @@ Menti mégis, ezek nélkül?</translation>
         <translation>PLC-hálózatok (*.rungnet)</translation>
     </message>
     <message>
-        <location line="+69"/>
+        <location line="+71"/>
         <source>No network</source>
         <translation>Nincs hálózat</translation>
     </message>
@@ -3994,7 +4137,7 @@ A read és a write kilépési kódja: 0 kész, 1 a PLC nem válaszolt vagy eluta
 <context>
     <name>rung::app::ScanDebuggerView</name>
     <message>
-        <location filename="../app/gui/scan_debugger_view.cpp" line="+22"/>
+        <location filename="../app/gui/scan_debugger_view.cpp" line="+23"/>
         <source>ON</source>
         <translation>BE</translation>
     </message>
@@ -4020,7 +4163,7 @@ A read és a write kilépési kódja: 0 kész, 1 a PLC nem válaszolt vagy eluta
         <translation>(üres)</translation>
     </message>
     <message>
-        <location line="+104"/>
+        <location line="+155"/>
         <source>Logic result:</source>
         <translation>Logikai eredmény:</translation>
     </message>
@@ -4070,7 +4213,7 @@ A read és a write kilépési kódja: 0 kész, 1 a PLC nem válaszolt vagy eluta
         <translation>Mindet eltávolítja</translation>
     </message>
     <message>
-        <location line="+29"/>
+        <location line="+30"/>
         <source>Block stack (%1 / %2):</source>
         <translation>Blokkverem (%1 / %2):</translation>
     </message>
@@ -4121,7 +4264,7 @@ A read és a write kilépési kódja: 0 kész, 1 a PLC nem válaszolt vagy eluta
         <translation>Nem aktív lépésen (STL) belül</translation>
     </message>
     <message>
-        <location line="+19"/>
+        <location line="+20"/>
         <source>Rung %1 (no longer there)</source>
         <translation>%1. létrafok (már nincs meg)</translation>
     </message>
@@ -4385,7 +4528,7 @@ A FÁJL utasításlista (.il), létradiagram-szöveg (.ladder) vagy projekt (.ru
         <translation>Egy ciklus kiértékelése ezen a számítógépen: %1 µs (%2..%3)</translation>
     </message>
     <message>
-        <location filename="../app/gui/simulation_debug.cpp" line="+96"/>
+        <location filename="../app/gui/simulation_debug.cpp" line="+117"/>
         <source>always</source>
         <translation>mindig</translation>
     </message>
@@ -10764,7 +10907,7 @@ Kiértékelés: %4 µs (%5..%6)</translation>
 <context>
     <name>rung::network::Network</name>
     <message>
-        <location filename="../network/network.cpp" line="+79"/>
+        <location filename="../network/network.cpp" line="+80"/>
         <source>%1.ports: %2 is named twice</source>
         <translation>%1.ports: a(z) %2 kétszer szerepel</translation>
     </message>
@@ -11088,19 +11231,21 @@ Kiértékelés: %4 µs (%5..%6)</translation>
 <context>
     <name>rung::network::NetworkSession</name>
     <message>
-        <location filename="../network/network_session.cpp" line="+301"/>
+        <location filename="../network/network_session.cpp" line="+313"/>
         <source>a fault made in the IDE</source>
         <translation>az IDE-ben okozott hiba</translation>
     </message>
     <message>
-        <location line="+67"/>
+        <location line="+61"/>
         <source>%1: line %2: %3</source>
         <extracomment>%1 station, %2 line, %3 what went wrong</extracomment>
         <translation>%1: %2. sor: %3</translation>
     </message>
     <message>
         <location line="+4"/>
+        <location filename="../network/network_session_debug.cpp" line="+106"/>
         <source>%1: %2</source>
+        <extracomment>%1 station, %2 why its breakpoints were not taken</extracomment>
         <translation>%1: %2</translation>
     </message>
 </context>

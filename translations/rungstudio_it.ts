@@ -2191,6 +2191,149 @@ Ctrl+Z / Ctrl+Y: annulla / ripeti, Ctrl+rotellina: zoom, F4: verifica il program
     </message>
 </context>
 <context>
+    <name>rung::app::NetworkDebugController</name>
+    <message>
+        <location filename="../app/gui/network_debug_controller.cpp" line="+182"/>
+        <source>No instruction on line %1 to stop at</source>
+        <translation>Nessuna istruzione alla riga %1 dove fermarsi</translation>
+    </message>
+    <message>
+        <location line="+14"/>
+        <source>Rung %1 is not in the instruction list: no breakpoint there</source>
+        <translation>Il segmento %1 non è nella lista istruzioni: lì non c&apos;è punto di interruzione</translation>
+    </message>
+    <message>
+        <location line="+21"/>
+        <source>%1 stopped at its breakpoint on line %2; the other stations wait at the end of their scan</source>
+        <extracomment>%1 station, %2 line of its instruction list</extracomment>
+        <translation>%1 si è fermata al punto di interruzione della riga %2; le altre stazioni attendono alla fine della loro scansione</translation>
+    </message>
+    <message>
+        <location line="+48"/>
+        <source>S&amp;tep Instruction</source>
+        <translation>P&amp;asso di una istruzione</translation>
+    </message>
+    <message>
+        <location line="+3"/>
+        <source>F&amp;inish Scan</source>
+        <translation>Co&amp;mpleta la scansione</translation>
+    </message>
+    <message>
+        <location line="+2"/>
+        <source>Toggle &amp;Breakpoint</source>
+        <translation>Punto di interr&amp;uzione sì/no</translation>
+    </message>
+    <message>
+        <location line="+2"/>
+        <source>Breakpoint Co&amp;ndition...</source>
+        <translation>Con&amp;dizione del punto di interruzione...</translation>
+    </message>
+    <message>
+        <location line="+5"/>
+        <location line="+147"/>
+        <source>No instruction at %1 to stop at</source>
+        <translation>Nessuna istruzione in %1 dove fermarsi</translation>
+    </message>
+    <message>
+        <location line="-143"/>
+        <source>Remove All Brea&amp;kpoints</source>
+        <translation>Rimuovi &amp;tutti i punti di interruzione</translation>
+    </message>
+    <message>
+        <location line="+3"/>
+        <source>Stop &amp;When...</source>
+        <translation>Fermati &amp;quando...</translation>
+    </message>
+    <message>
+        <location line="+11"/>
+        <source>Stop When</source>
+        <translation>Fermati quando</translation>
+    </message>
+    <message>
+        <location line="-5"/>
+        <source>Stop the network after the scan in which a station&apos;s condition becomes true,
+written STATION/CONDITION, e.g. %1/D10 &gt; 100 or %1/X0 rises (empty: never):</source>
+        <extracomment>%1 a station&apos;s name</extracomment>
+        <translation>Ferma la rete dopo la scansione in cui la condizione di una stazione diventa vera,
+scritta STAZIONE/CONDIZIONE, per es. %1/D10 &gt; 100 o %1/X0 rises (vuoto: mai):</translation>
+    </message>
+    <message>
+        <location line="+19"/>
+        <source>Scan Debugger</source>
+        <translation>Debugger della scansione</translation>
+    </message>
+    <message>
+        <location line="+1"/>
+        <source>Instruction List</source>
+        <translation>Lista istruzioni</translation>
+    </message>
+    <message>
+        <location line="+91"/>
+        <source>no station</source>
+        <translation>nessuna stazione</translation>
+    </message>
+    <message>
+        <location line="+6"/>
+        <source>line %1</source>
+        <translation>riga %1</translation>
+    </message>
+    <message>
+        <location line="+5"/>
+        <source>rung %1</source>
+        <translation>segmento %1</translation>
+    </message>
+    <message>
+        <location line="+17"/>
+        <source>Breakpoint set at %1 of %2</source>
+        <extracomment>%1 the place (&quot;line 3&quot;, &quot;rung 2&quot;), %2 the station</extracomment>
+        <translation>Punto di interruzione impostato: %2, %1</translation>
+    </message>
+    <message>
+        <location line="+1"/>
+        <source>Breakpoint at %1 of %2 removed</source>
+        <translation>Punto di interruzione rimosso: %2, %1</translation>
+    </message>
+    <message>
+        <location line="+19"/>
+        <source>Stop %1 before line %2: %3</source>
+        <extracomment>where the breakpoint is: %1 station, %2 line, %3 the instruction</extracomment>
+        <translation>Ferma %1 prima della riga %2: %3</translation>
+    </message>
+    <message>
+        <location line="+70"/>
+        <source>%1 stopped before line %2</source>
+        <extracomment>the status bar while a station&apos;s scan is stopped inside: %1 station, %2 line</extracomment>
+        <translation>%1 ferma prima della riga %2</translation>
+    </message>
+    <message>
+        <location line="+11"/>
+        <source>No stop condition</source>
+        <translation>Nessuna condizione di arresto</translation>
+    </message>
+    <message>
+        <location line="+1"/>
+        <source>The network stops when %1 becomes true</source>
+        <translation>La rete si ferma quando %1 diventa vera</translation>
+    </message>
+    <message>
+        <location line="+24"/>
+        <source>%1: write STATION/CONDITION with a station of the network (%2)</source>
+        <extracomment>%1 what was typed, %2 the stations&apos; names</extracomment>
+        <translation>%1: scrivere STAZIONE/CONDIZIONE con una stazione della rete (%2)</translation>
+    </message>
+    <message>
+        <location line="+17"/>
+        <source>%1 cannot be watched in %2</source>
+        <translation>%1 non si può osservare in %2</translation>
+    </message>
+    <message>
+        <location line="+9"/>
+        <source>%1 became true after scan %2 (%3): the network stopped there</source>
+        <extracomment>%1 the condition (&quot;s2/D10 &gt; 100&quot;), %2 scan number, %3 virtual time</extracomment>
+        <translation>%1 è diventata vera dopo la scansione %2 (%3): la rete si è fermata lì</translation>
+    </message>
+</context>
+<context>
     <name>rung::app::NetworkDocument</name>
     <message>
         <location filename="../app/gui/network_document.cpp" line="+49"/>
@@ -2756,7 +2899,7 @@ Ctrl+Z / Ctrl+Y: annulla / ripeti, Ctrl+rotellina: zoom, F4: verifica il program
 <context>
     <name>rung::app::NetworkTrafficView</name>
     <message>
-        <location filename="../app/gui/network_traffic_view.cpp" line="+157"/>
+        <location filename="../app/gui/network_traffic_view.cpp" line="+164"/>
         <source>&amp;Errors only</source>
         <translation>Solo &amp;errori</translation>
     </message>
@@ -3153,13 +3296,13 @@ Salvare comunque, lasciando fuori questo dal file?</translation>
 <context>
     <name>rung::app::NetworkWindow</name>
     <message>
-        <location filename="../app/gui/network_window.cpp" line="+210"/>
-        <location line="+217"/>
+        <location filename="../app/gui/network_window.cpp" line="+227"/>
+        <location line="+220"/>
         <source>Network</source>
         <translation>Rete</translation>
     </message>
     <message>
-        <location line="-214"/>
+        <location line="-217"/>
         <source>&amp;Network</source>
         <translation>&amp;Rete</translation>
     </message>
@@ -3281,12 +3424,12 @@ Salvare comunque, lasciando fuori questo dal file?</translation>
         <translation>Il più &amp;veloce possibile</translation>
     </message>
     <message>
-        <location line="+12"/>
+        <location line="+13"/>
         <source>Station:</source>
         <translation>Stazione:</translation>
     </message>
     <message>
-        <location line="+13"/>
+        <location line="+15"/>
         <source>F&amp;aults</source>
         <translation>&amp;Guasti</translation>
     </message>
@@ -3418,7 +3561,7 @@ Salvare comunque, lasciando fuori questo dal file?</translation>
         <translation>Ladder</translation>
     </message>
     <message>
-        <location line="+16"/>
+        <location line="+17"/>
         <source>Close Network</source>
         <translation>Chiudi la rete</translation>
     </message>
@@ -3438,7 +3581,7 @@ Salvare comunque, lasciando fuori questo dal file?</translation>
         <translation>Una rete vuota: aggiungere stazioni dal menu della vista Rete (clic destro)</translation>
     </message>
     <message>
-        <location line="+38"/>
+        <location line="+39"/>
         <source>The network has no station yet: add one from the Network view&apos;s menu</source>
         <translation>La rete non ha ancora stazioni: aggiungerne una dal menu della vista Rete</translation>
     </message>
@@ -3454,7 +3597,7 @@ Salvare comunque, lasciando fuori questo dal file?</translation>
         <translation>%1 (%2 %3)</translation>
     </message>
     <message>
-        <location line="+45"/>
+        <location line="+49"/>
         <source>The network was edited: Stop builds it again with the change</source>
         <translation>La rete è stata modificata: Fermati la ricostruisce con la modifica</translation>
     </message>
@@ -3475,7 +3618,7 @@ Salvare comunque, lasciando fuori questo dal file?</translation>
         <translation>Reti di PLC (*.rungnet)</translation>
     </message>
     <message>
-        <location line="+69"/>
+        <location line="+71"/>
         <source>No network</source>
         <translation>Nessuna rete</translation>
     </message>
@@ -4005,7 +4148,7 @@ Codice di uscita di read e write: 0 fatto, 1 il PLC non ha risposto o ha rifiuta
 <context>
     <name>rung::app::ScanDebuggerView</name>
     <message>
-        <location filename="../app/gui/scan_debugger_view.cpp" line="+22"/>
+        <location filename="../app/gui/scan_debugger_view.cpp" line="+23"/>
         <source>ON</source>
         <translation>ON</translation>
     </message>
@@ -4031,7 +4174,7 @@ Codice di uscita di read e write: 0 fatto, 1 il PLC non ha risposto o ha rifiuta
         <translation>(vuoto)</translation>
     </message>
     <message>
-        <location line="+104"/>
+        <location line="+155"/>
         <source>Logic result:</source>
         <translation>Risultato logico:</translation>
     </message>
@@ -4081,7 +4224,7 @@ Codice di uscita di read e write: 0 fatto, 1 il PLC non ha risposto o ha rifiuta
         <translation>Rimuovi tutti</translation>
     </message>
     <message>
-        <location line="+29"/>
+        <location line="+30"/>
         <source>Block stack (%1 / %2):</source>
         <translation>Stack dei blocchi (%1 / %2):</translation>
     </message>
@@ -4132,7 +4275,7 @@ Codice di uscita di read e write: 0 fatto, 1 il PLC non ha risposto o ha rifiuta
         <translation>Dentro un passo (STL) non attivo</translation>
     </message>
     <message>
-        <location line="+19"/>
+        <location line="+20"/>
         <source>Rung %1 (no longer there)</source>
         <translation>Segmento %1 (non esiste più)</translation>
     </message>
@@ -4397,7 +4540,7 @@ FILE è una lista istruzioni (.il), un testo ladder (.ladder) o un progetto (.ru
         <translation>Valutazione di una scansione su questo computer: %1 µs (%2..%3)</translation>
     </message>
     <message>
-        <location filename="../app/gui/simulation_debug.cpp" line="+96"/>
+        <location filename="../app/gui/simulation_debug.cpp" line="+117"/>
         <source>always</source>
         <translation>sempre</translation>
     </message>
@@ -10787,7 +10930,7 @@ Valutazione: %4 µs (%5..%6)</translation>
 <context>
     <name>rung::network::Network</name>
     <message>
-        <location filename="../network/network.cpp" line="+79"/>
+        <location filename="../network/network.cpp" line="+80"/>
         <source>%1.ports: %2 is named twice</source>
         <translation>%1.ports: %2 è indicata due volte</translation>
     </message>
@@ -11111,19 +11254,21 @@ Valutazione: %4 µs (%5..%6)</translation>
 <context>
     <name>rung::network::NetworkSession</name>
     <message>
-        <location filename="../network/network_session.cpp" line="+301"/>
+        <location filename="../network/network_session.cpp" line="+313"/>
         <source>a fault made in the IDE</source>
         <translation>un guasto creato nell&apos;IDE</translation>
     </message>
     <message>
-        <location line="+67"/>
+        <location line="+61"/>
         <source>%1: line %2: %3</source>
         <extracomment>%1 station, %2 line, %3 what went wrong</extracomment>
         <translation>%1: riga %2: %3</translation>
     </message>
     <message>
         <location line="+4"/>
+        <location filename="../network/network_session_debug.cpp" line="+106"/>
         <source>%1: %2</source>
+        <extracomment>%1 station, %2 why its breakpoints were not taken</extracomment>
         <translation>%1: %2</translation>
     </message>
 </context>

@@ -36,6 +36,7 @@ class StationSource;
 namespace rung::app {
 
 class NetworkChart;
+class NetworkDebugController;
 class NetworkDocument;
 class NetworkView;
 class NetworkTrafficView;
@@ -72,6 +73,8 @@ public:
     NetworkChart *chart() const { return m_chart; }
     NetworkTrafficView *traffic() const { return m_traffic; }
     editor::FrontPanel *frontPanel() const { return m_panel; }
+    // The selected station's list, the Scan Debugger, breakpoints and stepping.
+    NetworkDebugController *debugger() const { return m_debug; }
     // Adds "STATION/DEVICE" to the watch table; false with the reason in the status bar.
     bool watch(const QString &device);
     // The status line: run state and virtual time.
@@ -151,6 +154,7 @@ private:
     class QDockWidget *m_chartDock = nullptr;
     class QDockWidget *m_trafficDock = nullptr;
     class QDockWidget *m_panelDock = nullptr;
+    NetworkDebugController *m_debug = nullptr;
 };
 
 } // namespace rung::app
