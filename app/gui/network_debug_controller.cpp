@@ -24,6 +24,7 @@
 #include <QStatusBar>
 #include <QStyle>
 #include <QTabWidget>
+#include <QTreeWidget>
 
 namespace rung::app {
 
@@ -85,6 +86,10 @@ NetworkDebugController::NetworkDebugController(QMainWindow *window, QTabWidget *
     m_subject = new StationDebugSubject(this);
     m_debugger = new ScanDebuggerView(m_subject);
     m_debugger->setObjectName(QStringLiteral("networkScanDebugger"));
+    // The breakpoint list takes the height the dock has left, from a few rows: its size hint
+    // (192 px) made the dock scroll at 1366 x 768 with the Timing Chart below it.
+    m_debugger->breakpointList()->setSizePolicy(QSizePolicy::Expanding, QSizePolicy::Ignored);
+    m_debugger->breakpointList()->setMinimumHeight(m_debugger->fontMetrics().height() * 5);
     // Scrolled, as in the main window: its stacks and list must not make the window taller
     // than the screen.
     auto *scroll = new QScrollArea;
@@ -206,8 +211,7 @@ void NetworkDebugController::setSession(network::NetworkSession *session,
             [this](const QString &name, int instruction) {
                 const Station *s = find(name);
                 emit stationWanted(name);
-                m_dock->show();
-                m_dock->raise();
+                showDebugger();
                 const auto &lines =
                     s ? s->parts.document->printedListing().instructionLine : std::vector<int>{};
                 //: %1 station, %2 line of its instruction list
@@ -579,6 +583,19 @@ bool NetworkDebugController::armStopCondition(QString *error) {
                                  .arg(SimulationController::clockText(timeMs)));
             });
     return true;
+}
+
+void NetworkDebugController::showDebugger() {
+    m_dock->show();
+    m_dock->raise();
+    // As wide as its buttons and stacks need (the Hungarian and Italian ones are long), the
+    // ladder or list keeping the most of the window.
+    const int needed = m_debugger->minimumSizeHint().width();
+    const int wanted = needed + m_debugger->style()->pixelMetric(QStyle::PM_ScrollBarExtent) +
+                       4 * m_dock->style()->pixelMetric(QStyle::PM_DockWidgetFrameWidth) + 8;
+    if (m_debugger->parentWidget() && m_debugger->parentWidget()->width() < needed)
+        m_window->resizeDocks({m_dock}, {std::min(wanted, m_window->width() * 2 / 5)},
+                              Qt::Horizontal);
 }
 
 void NetworkDebugController::updateHeld() {

@@ -108,6 +108,7 @@ private:
     void snapshotArrived(Station &station);
     void showStoppedAt(const Station &station, int instruction);
     void updateHeld();
+    void showDebugger(); // shown, raised, as wide as it needs
     bool armStopCondition(QString *error);
 
     QMainWindow *m_window;

@@ -3,6 +3,7 @@
 // list and ladder mark the place, the Scan Debugger follows it, the other stations wait at
 // their scan boundary; a step moves the held station alone; Continue runs the network on.
 
+#include "app/gui/language.h"
 #include "app/gui/network_debug_controller.h"
 #include "app/gui/network_window.h"
 #include "app/gui/scan_debugger_view.h"
@@ -16,6 +17,7 @@
 #include <QAction>
 #include <QDockWidget>
 #include <QLabel>
+#include <QPushButton>
 #include <QSignalSpy>
 #include <QTabWidget>
 #include <QTreeWidget>
@@ -208,6 +210,70 @@ TEST(NetworkDebug, AStopConditionOnAStationsDeviceStopsTheNetworkAfterThatScan) 
     EXPECT_TRUE(eventually([&] { return session->nowUs() > 100000; }));
     EXPECT_EQ(fired.count(), 1);
     networkAction(*net, "networkPause")->trigger();
+}
+
+TEST(NetworkDebug, PausedAtABreakpointFitsTheScreenInEveryLanguage) {
+    // At 1366 x 768 the network window held at a breakpoint in slave1 of the CPU Link example,
+    // its list shown, in English, Hungarian and Italian: the Scan Debugger's buttons and the
+    // status bar's texts as wide as they need. RUNG_SCREENSHOT_DIR set: the pictures are saved
+    // there (docs/screenshots/).
+    const QString shots = qEnvironmentVariable("RUNG_SCREENSHOT_DIR");
+    for (const char *language : {"en", "hu", "it"}) {
+        SCOPED_TRACE(language);
+        ASSERT_TRUE(app::setLanguage(QString::fromLatin1(language), false));
+        QCoreApplication::sendPostedEvents(nullptr, QEvent::LanguageChange);
+        app::MainWindow window;
+        ASSERT_TRUE(window.openFile(kCpuLink, QString(), true));
+        app::NetworkWindow *net = debuggedNetwork(window);
+        ASSERT_NE(net, nullptr);
+        net->resize(1366, 768);
+        net->show();
+        app::NetworkDebugController *debug = net->debugger();
+        network::NetworkSession *session = net->session();
+        ASSERT_TRUE(net->selectStation(QStringLiteral("slave1")));
+        auto *tabs = net->findChild<QTabWidget *>(QStringLiteral("networkTabs"));
+        tabs->setCurrentWidget(debug->listPage());
+        editor::IlEditor *il = debug->listView(QStringLiteral("slave1"));
+        const int vrrd = lineHolding(il, QStringLiteral("VRRD"));
+        ASSERT_GT(vrrd, 0);
+        emit il->breakpointToggleRequested(vrrd);
+        session->setSpeed(0);
+        networkAction(*net, "networkRun")->trigger();
+        ASSERT_TRUE(eventually(
+            [&] { return session->runState() == RunState::Paused && il->stoppedLine() == vrrd; }));
+        ASSERT_TRUE(eventually([&] {
+            return debug->scanDebugger()->positionText().contains(QStringLiteral("VRRD"));
+        }));
+        // The docks' layout settles over a few posted events.
+        for (int k = 0; k < 5; ++k)
+            QCoreApplication::processEvents();
+        EXPECT_LE(net->minimumSizeHint().width(), 1366);
+        EXPECT_LE(net->minimumSizeHint().height(), 768);
+        for (QPushButton *b : debug->scanDebugger()->findChildren<QPushButton *>())
+            EXPECT_GE(b->width(), b->sizeHint().width()) << b->text().toStdString();
+        // In sight: the debugger's dock is as wide as its buttons and stacks need (its scroll
+        // area scrolls only up and down).
+        EXPECT_GE(debug->scanDebugger()->parentWidget()->width(),
+                  debug->scanDebugger()->minimumSizeHint().width());
+        EXPECT_GE(debug->scanDebugger()->parentWidget()->height(),
+                  debug->scanDebugger()->minimumSizeHint().height());
+        auto *held = net->findChild<QLabel *>(QStringLiteral("networkHeld"));
+        ASSERT_NE(held, nullptr);
+        EXPECT_TRUE(held->isVisible());
+        EXPECT_GE(held->width(), held->sizeHint().width()) << held->text().toStdString();
+        if (!shots.isEmpty()) {
+            net->grab().save(
+                QStringLiteral("%1/network-breakpoint-%2.png").arg(shots, QLatin1String(language)));
+            tabs->setCurrentIndex(
+                tabs->indexOf(net->ladderView(QStringLiteral("slave1"))->parentWidget()));
+            QCoreApplication::processEvents();
+            net->grab().save(QStringLiteral("%1/network-breakpoint-ladder-%2.png")
+                                 .arg(shots, QLatin1String(language)));
+        }
+        session->pause();
+    }
+    ASSERT_TRUE(app::setLanguage(QStringLiteral("en"), false));
+    QCoreApplication::sendPostedEvents(nullptr, QEvent::LanguageChange);
 }
 
 } // namespace
