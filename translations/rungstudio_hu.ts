@@ -2186,7 +2186,7 @@ Ctrl+Z / Ctrl+Y: visszavonás / mégis, Ctrl+görgő: nagyítás, F4: a program 
 <context>
     <name>rung::app::NetworkDebugController</name>
     <message>
-        <location filename="../app/gui/network_debug_controller.cpp" line="+182"/>
+        <location filename="../app/gui/network_debug_controller.cpp" line="+187"/>
         <source>No instruction on line %1 to stop at</source>
         <translation>A(z) %1. sorban nincs utasítás, amelynél meg lehetne állni</translation>
     </message>
@@ -2196,13 +2196,13 @@ Ctrl+Z / Ctrl+Y: visszavonás / mégis, Ctrl+görgő: nagyítás, F4: a program 
         <translation>A(z) %1. létrafok nincs az utasításlistában: ott nem lehet töréspont</translation>
     </message>
     <message>
-        <location line="+21"/>
+        <location line="+18"/>
         <source>%1 stopped at its breakpoint on line %2; the other stations wait at the end of their scan</source>
         <extracomment>%1 station, %2 line of its instruction list</extracomment>
         <translation>%1 megállt a(z) %2. sor töréspontjánál; a többi állomás a ciklusa végén várakozik</translation>
     </message>
     <message>
-        <location line="+48"/>
+        <location line="+46"/>
         <source>S&amp;tep Instruction</source>
         <translation>Lé&amp;pés egy utasítással</translation>
     </message>
@@ -2223,35 +2223,40 @@ Ctrl+Z / Ctrl+Y: visszavonás / mégis, Ctrl+görgő: nagyítás, F4: a program 
     </message>
     <message>
         <location line="+5"/>
-        <location line="+147"/>
+        <location line="+152"/>
         <source>No instruction at %1 to stop at</source>
         <translation>Itt (%1) nincs utasítás, amelynél meg lehetne állni</translation>
     </message>
     <message>
-        <location line="-143"/>
+        <location line="-148"/>
         <source>Remove All Brea&amp;kpoints</source>
         <translation>Minden töréspont eltá&amp;volítása</translation>
     </message>
     <message>
-        <location line="+3"/>
+        <location line="+2"/>
         <source>Stop &amp;When...</source>
         <translation>Megállási feltéte&amp;l...</translation>
     </message>
     <message>
-        <location line="+11"/>
+        <location line="+3"/>
+        <source>No network is running</source>
+        <translation>Nem fut hálózat</translation>
+    </message>
+    <message>
+        <location line="+9"/>
+        <source>Stop the network after the scan in which a station&apos;s condition becomes true,
+written STATION/CONDITION, e.g. %1/%2 &gt; 100 or %1/%3 rises (empty: never):</source>
+        <extracomment>%1 a station&apos;s name, %2 a word of it, %3 a bit of it</extracomment>
+        <translation>A hálózat megáll annak a ciklusnak a végén, amelyben egy állomás feltétele igazzá válik,
+ÁLLOMÁS/FELTÉTEL alakban, pl. %1/%2 &gt; 100 vagy %1/%3 rises (üres: soha):</translation>
+    </message>
+    <message>
+        <location line="+5"/>
         <source>Stop When</source>
         <translation>Megállási feltétel</translation>
     </message>
     <message>
-        <location line="-5"/>
-        <source>Stop the network after the scan in which a station&apos;s condition becomes true,
-written STATION/CONDITION, e.g. %1/D10 &gt; 100 or %1/X0 rises (empty: never):</source>
-        <extracomment>%1 a station&apos;s name</extracomment>
-        <translation>A hálózat megáll annak a ciklusnak a végén, amelyben egy állomás feltétele igazzá válik,
-ÁLLOMÁS/FELTÉTEL alakban, pl. %1/D10 &gt; 100 vagy %1/X0 rises (üres: soha):</translation>
-    </message>
-    <message>
-        <location line="+19"/>
+        <location line="+14"/>
         <source>Scan Debugger</source>
         <translation>Ciklushibakereső</translation>
     </message>
@@ -2299,7 +2304,7 @@ written STATION/CONDITION, e.g. %1/D10 &gt; 100 or %1/X0 rises (empty: never):</
         <translation>%1 megállt a(z) %2. sor előtt</translation>
     </message>
     <message>
-        <location line="+11"/>
+        <location line="+12"/>
         <source>No stop condition</source>
         <translation>Nincs megállási feltétel</translation>
     </message>
@@ -3289,12 +3294,12 @@ Menti mégis, ezek nélkül?</translation>
     <name>rung::app::NetworkWindow</name>
     <message>
         <location filename="../app/gui/network_window.cpp" line="+227"/>
-        <location line="+220"/>
+        <location line="+219"/>
         <source>Network</source>
         <translation>Hálózat</translation>
     </message>
     <message>
-        <location line="-217"/>
+        <location line="-216"/>
         <source>&amp;Network</source>
         <translation>&amp;Hálózat</translation>
     </message>
@@ -3421,7 +3426,7 @@ Menti mégis, ezek nélkül?</translation>
         <translation>Állomás:</translation>
     </message>
     <message>
-        <location line="+15"/>
+        <location line="+14"/>
         <source>F&amp;aults</source>
         <translation>&amp;Hibák</translation>
     </message>
@@ -4163,7 +4168,7 @@ A read és a write kilépési kódja: 0 kész, 1 a PLC nem válaszolt vagy eluta
         <translation>(üres)</translation>
     </message>
     <message>
-        <location line="+155"/>
+        <location line="+151"/>
         <source>Logic result:</source>
         <translation>Logikai eredmény:</translation>
     </message>

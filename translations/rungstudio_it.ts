@@ -2193,7 +2193,7 @@ Ctrl+Z / Ctrl+Y: annulla / ripeti, Ctrl+rotellina: zoom, F4: verifica il program
 <context>
     <name>rung::app::NetworkDebugController</name>
     <message>
-        <location filename="../app/gui/network_debug_controller.cpp" line="+182"/>
+        <location filename="../app/gui/network_debug_controller.cpp" line="+187"/>
         <source>No instruction on line %1 to stop at</source>
         <translation>Nessuna istruzione alla riga %1 dove fermarsi</translation>
     </message>
@@ -2203,13 +2203,13 @@ Ctrl+Z / Ctrl+Y: annulla / ripeti, Ctrl+rotellina: zoom, F4: verifica il program
         <translation>Il segmento %1 non è nella lista istruzioni: lì non c&apos;è punto di interruzione</translation>
     </message>
     <message>
-        <location line="+21"/>
+        <location line="+18"/>
         <source>%1 stopped at its breakpoint on line %2; the other stations wait at the end of their scan</source>
         <extracomment>%1 station, %2 line of its instruction list</extracomment>
         <translation>%1 si è fermata al punto di interruzione della riga %2; le altre stazioni attendono alla fine della loro scansione</translation>
     </message>
     <message>
-        <location line="+48"/>
+        <location line="+46"/>
         <source>S&amp;tep Instruction</source>
         <translation>P&amp;asso di una istruzione</translation>
     </message>
@@ -2230,35 +2230,40 @@ Ctrl+Z / Ctrl+Y: annulla / ripeti, Ctrl+rotellina: zoom, F4: verifica il program
     </message>
     <message>
         <location line="+5"/>
-        <location line="+147"/>
+        <location line="+152"/>
         <source>No instruction at %1 to stop at</source>
         <translation>Nessuna istruzione in %1 dove fermarsi</translation>
     </message>
     <message>
-        <location line="-143"/>
+        <location line="-148"/>
         <source>Remove All Brea&amp;kpoints</source>
         <translation>Rimuovi &amp;tutti i punti di interruzione</translation>
     </message>
     <message>
-        <location line="+3"/>
+        <location line="+2"/>
         <source>Stop &amp;When...</source>
         <translation>Fermati &amp;quando...</translation>
     </message>
     <message>
-        <location line="+11"/>
+        <location line="+3"/>
+        <source>No network is running</source>
+        <translation>Nessuna rete in esecuzione</translation>
+    </message>
+    <message>
+        <location line="+9"/>
+        <source>Stop the network after the scan in which a station&apos;s condition becomes true,
+written STATION/CONDITION, e.g. %1/%2 &gt; 100 or %1/%3 rises (empty: never):</source>
+        <extracomment>%1 a station&apos;s name, %2 a word of it, %3 a bit of it</extracomment>
+        <translation>Ferma la rete dopo la scansione in cui la condizione di una stazione diventa vera,
+scritta STAZIONE/CONDIZIONE, per es. %1/%2 &gt; 100 o %1/%3 rises (vuoto: mai):</translation>
+    </message>
+    <message>
+        <location line="+5"/>
         <source>Stop When</source>
         <translation>Fermati quando</translation>
     </message>
     <message>
-        <location line="-5"/>
-        <source>Stop the network after the scan in which a station&apos;s condition becomes true,
-written STATION/CONDITION, e.g. %1/D10 &gt; 100 or %1/X0 rises (empty: never):</source>
-        <extracomment>%1 a station&apos;s name</extracomment>
-        <translation>Ferma la rete dopo la scansione in cui la condizione di una stazione diventa vera,
-scritta STAZIONE/CONDIZIONE, per es. %1/D10 &gt; 100 o %1/X0 rises (vuoto: mai):</translation>
-    </message>
-    <message>
-        <location line="+19"/>
+        <location line="+14"/>
         <source>Scan Debugger</source>
         <translation>Debugger della scansione</translation>
     </message>
@@ -2306,7 +2311,7 @@ scritta STAZIONE/CONDIZIONE, per es. %1/D10 &gt; 100 o %1/X0 rises (vuoto: mai):
         <translation>%1 ferma prima della riga %2</translation>
     </message>
     <message>
-        <location line="+11"/>
+        <location line="+12"/>
         <source>No stop condition</source>
         <translation>Nessuna condizione di arresto</translation>
     </message>
@@ -3297,12 +3302,12 @@ Salvare comunque, lasciando fuori questo dal file?</translation>
     <name>rung::app::NetworkWindow</name>
     <message>
         <location filename="../app/gui/network_window.cpp" line="+227"/>
-        <location line="+220"/>
+        <location line="+219"/>
         <source>Network</source>
         <translation>Rete</translation>
     </message>
     <message>
-        <location line="-217"/>
+        <location line="-216"/>
         <source>&amp;Network</source>
         <translation>&amp;Rete</translation>
     </message>
@@ -3429,7 +3434,7 @@ Salvare comunque, lasciando fuori questo dal file?</translation>
         <translation>Stazione:</translation>
     </message>
     <message>
-        <location line="+15"/>
+        <location line="+14"/>
         <source>F&amp;aults</source>
         <translation>&amp;Guasti</translation>
     </message>
@@ -4174,7 +4179,7 @@ Codice di uscita di read e write: 0 fatto, 1 il PLC non ha risposto o ha rifiuta
         <translation>(vuoto)</translation>
     </message>
     <message>
-        <location line="+155"/>
+        <location line="+151"/>
         <source>Logic result:</source>
         <translation>Risultato logico:</translation>
     </message>

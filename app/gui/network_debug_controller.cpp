@@ -11,6 +11,7 @@
 #include "network/network_session.h"
 
 #include "model/image/trigger.h"
+#include "model/target/target_lists.h"
 
 #include <QAction>
 #include <QDockWidget>
@@ -280,15 +281,21 @@ void NetworkDebugController::addActions(QMenu *menu) {
     menu->addAction(tr("Remove All Brea&kpoints"), this, &NetworkDebugController::clearBreakpoints);
     menu->addSeparator();
     QAction *when = menu->addAction(tr("Stop &When..."), this, [this] {
+        const Station *shown = find(m_current);
+        if (!shown) {
+            emit message(tr("No network is running"));
+            return;
+        }
         bool ok = false;
-        const QString example = m_current.isEmpty() ? QStringLiteral("s2") : m_current;
         QString text = m_stopCondition;
-        //: %1 a station's name
+        // The example in the station's own devices.
+        const model::Target &target = shown->parts.source->target();
+        //: %1 a station's name, %2 a word of it, %3 a bit of it
         const QString prompt =
             tr("Stop the network after the scan in which a station's condition becomes "
-               "true,\nwritten STATION/CONDITION, e.g. %1/D10 > 100 or %1/X0 rises "
+               "true,\nwritten STATION/CONDITION, e.g. %1/%2 > 100 or %1/%3 rises "
                "(empty: never):")
-                .arg(example);
+                .arg(m_current, model::exampleWord(target, 10), model::exampleDevice(target));
         for (;;) {
             text = QInputDialog::getText(m_window, tr("Stop When"), prompt, QLineEdit::Normal, text,
                                          &ok);
