@@ -20,6 +20,7 @@
 #include <QLineEdit>
 #include <QMainWindow>
 #include <QMenu>
+#include <QPointer>
 #include <QScrollArea>
 #include <QStackedWidget>
 #include <QStatusBar>
@@ -31,24 +32,27 @@ namespace rung::app {
 
 using RunState = model::MonitorSource::RunState;
 
-// The selected station as the Scan Debugger's subject.
+// The selected station as the Scan Debugger's subject. The view owns it: whichever of the
+// window's children goes first while the window is destroyed, the view never reads a subject
+// that is gone, and the subject answers "nothing" once the controller is.
 class StationDebugSubject final : public ScanDebugSubject {
 public:
     explicit StationDebugSubject(NetworkDebugController *controller)
         : ScanDebugSubject(controller)
-        , m_c(controller) {}
+        , m_c(controller)
+        , m_noProgram(new editor::Document(this)) {}
 
     editor::Document *document() const override {
-        const auto *s = m_c->find(m_c->m_current);
-        return s ? s->parts.document : m_c->m_noProgram;
+        const auto *s = m_c ? m_c->find(m_c->m_current) : nullptr;
+        return s ? s->parts.document : m_noProgram;
     }
-    bool active() const override { return m_c->m_session != nullptr; }
+    bool active() const override { return m_c && m_c->m_session != nullptr; }
     std::shared_ptr<const model::Snapshot> snapshot() const override {
-        const auto *s = m_c->find(m_c->m_current);
+        const auto *s = m_c ? m_c->find(m_c->m_current) : nullptr;
         return s ? s->parts.source->snapshot() : nullptr;
     }
     std::vector<BreakpointSpec> breakpoints() const override {
-        return m_c->breakpoints(m_c->m_current);
+        return m_c ? m_c->breakpoints(m_c->m_current) : std::vector<BreakpointSpec>{};
     }
     int instructionOf(const BreakpointSpec &b) const override {
         return SimulationController::instructionOf(document()->listing().rungFirst, b);
@@ -56,22 +60,32 @@ public:
     QString conditionText(const BreakpointSpec &b) const override {
         return SimulationController::conditionText(document()->target(), b);
     }
-    void stepInstruction() override { m_c->stepInstruction(); }
-    void finishScan() override { m_c->finishScan(); }
+    void stepInstruction() override {
+        if (m_c)
+            m_c->stepInstruction();
+    }
+    void finishScan() override {
+        if (m_c)
+            m_c->finishScan();
+    }
     void proceed() override {
-        if (m_c->m_session)
+        if (m_c && m_c->m_session)
             m_c->m_session->run();
     }
     void removeBreakpoint(int instruction) override {
-        m_c->removeBreakpoint(m_c->m_current, instruction);
+        if (m_c)
+            m_c->removeBreakpoint(m_c->m_current, instruction);
     }
     void clearBreakpoints() override {
+        if (!m_c)
+            return;
         m_c->m_breakpoints.erase(m_c->m_current);
         m_c->sendBreakpoints(m_c->m_current);
     }
 
 private:
-    NetworkDebugController *m_c;
+    QPointer<NetworkDebugController> m_c;
+    editor::Document *m_noProgram; // what is read while no station is chosen
 };
 
 NetworkDebugController::NetworkDebugController(QMainWindow *window, QTabWidget *tabs,
@@ -79,13 +93,13 @@ NetworkDebugController::NetworkDebugController(QMainWindow *window, QTabWidget *
     : QObject(parent)
     , m_window(window)
     , m_tabs(tabs) {
-    m_noProgram = new editor::Document(this);
     m_lists = new QStackedWidget(window);
     m_lists->setObjectName(QStringLiteral("networkLists"));
     m_tabs->addTab(m_lists, QString());
 
     m_subject = new StationDebugSubject(this);
     m_debugger = new ScanDebuggerView(m_subject);
+    m_subject->setParent(m_debugger);
     m_debugger->setObjectName(QStringLiteral("networkScanDebugger"));
     // The breakpoint list takes the height the dock has left, from a few rows: its size hint
     // (192 px) made the dock scroll at 1366 x 768 with the Timing Chart below it.

@@ -118,7 +118,6 @@ private:
     StationDebugSubject *m_subject;
     ScanDebuggerView *m_debugger;
     QLabel *m_held;
-    editor::Document *m_noProgram; // what the debugger reads while no station is chosen
     network::NetworkSession *m_session = nullptr;
     std::vector<Station> m_stations;
     QString m_current;
