@@ -2186,7 +2186,7 @@ Ctrl+Z / Ctrl+Y: visszavonás / mégis, Ctrl+görgő: nagyítás, F4: a program 
 <context>
     <name>rung::app::NetworkDebugController</name>
     <message>
-        <location filename="../app/gui/network_debug_controller.cpp" line="+187"/>
+        <location filename="../app/gui/network_debug_controller.cpp" line="+200"/>
         <source>No instruction on line %1 to stop at</source>
         <translation>A(z) %1. sorban nincs utasítás, amelynél meg lehetne állni</translation>
     </message>
@@ -2304,7 +2304,7 @@ written STATION/CONDITION, e.g. %1/%2 &gt; 100 or %1/%3 rises (empty: never):</s
         <translation>%1 megállt a(z) %2. sor előtt</translation>
     </message>
     <message>
-        <location line="+12"/>
+        <location filename="../app/gui/network_debug_stop.cpp" line="+17"/>
         <source>No stop condition</source>
         <translation>Nincs megállási feltétel</translation>
     </message>

@@ -2193,7 +2193,7 @@ Ctrl+Z / Ctrl+Y: annulla / ripeti, Ctrl+rotellina: zoom, F4: verifica il program
 <context>
     <name>rung::app::NetworkDebugController</name>
     <message>
-        <location filename="../app/gui/network_debug_controller.cpp" line="+187"/>
+        <location filename="../app/gui/network_debug_controller.cpp" line="+200"/>
         <source>No instruction on line %1 to stop at</source>
         <translation>Nessuna istruzione alla riga %1 dove fermarsi</translation>
     </message>
@@ -2311,7 +2311,7 @@ scritta STAZIONE/CONDIZIONE, per es. %1/%2 &gt; 100 o %1/%3 rises (vuoto: mai):<
         <translation>%1 ferma prima della riga %2</translation>
     </message>
     <message>
-        <location line="+12"/>
+        <location filename="../app/gui/network_debug_stop.cpp" line="+17"/>
         <source>No stop condition</source>
         <translation>Nessuna condizione di arresto</translation>
     </message>
