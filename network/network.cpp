@@ -10,6 +10,7 @@
 
 #include <algorithm>
 #include <limits>
+#include <utility>
 
 namespace rung::network {
 
@@ -275,7 +276,12 @@ void Network::attach(std::unique_ptr<Endpoint> endpoint, Endpoint *beside) {
     m_devices.push_back(std::move(endpoint));
 }
 
-void Network::runUntil(qint64 until) {
+bool Network::runUntil(qint64 until) {
+    m_interrupt = false; // only an actor run here interrupts it
+    if (holdingStation())
+        return false;
+    if (m_resumeFrom > 0 && !runActors(std::exchange(m_resumeFrom, 0)))
+        return false;
     while (true) {
         qint64 next = m_deliveries.empty() ? kNever : m_deliveries.top().atUs;
         for (const Actor *a : m_actors)
@@ -300,11 +306,32 @@ void Network::runUntil(qint64 until) {
                 d.to->deliver(got.bytes, got.errors, d.atUs);
             }
         }
-        for (Actor *a : m_actors)
-            if (a->nextUs() <= m_now)
-                a->run(m_now);
+        if (!runActors(0))
+            return false;
     }
     m_now = std::max(m_now, until);
+    return true;
+}
+
+bool Network::runActors(std::size_t from) {
+    for (std::size_t i = from; i < m_actors.size(); ++i) {
+        Actor *a = m_actors[i];
+        if (a->nextUs() > m_now)
+            continue;
+        a->run(m_now);
+        if (a->holding() || std::exchange(m_interrupt, false)) {
+            m_resumeFrom = i + 1;
+            return false;
+        }
+    }
+    return true;
+}
+
+Station *Network::holdingStation() const {
+    for (const auto &s : m_stations)
+        if (s->holding())
+            return s.get();
+    return nullptr;
 }
 
 } // namespace rung::network

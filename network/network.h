@@ -78,6 +78,9 @@ public:
     // The next time it does something; INT64_MAX: nothing planned.
     virtual qint64 nextUs() const = 0;
     virtual void run(qint64 nowUs) = 0;
+    // Stopped inside its work (a station's scan held at a breakpoint or a step): the network
+    // goes no further until it is not.
+    virtual bool holding() const { return false; }
 };
 
 class Wire {
@@ -103,8 +106,18 @@ public:
     ~Network();
 
     qint64 nowUs() const { return m_now; }
-    // Runs every event up to and including virtual time `us`.
-    void runUntil(qint64 us);
+    // Runs every event up to and including virtual time `us`; true when it got there. False
+    // when a station holds inside its scan (a breakpoint, a step) or interrupt() was called:
+    // the clock stays at that instant, every other station at its scan boundary, and the next
+    // call goes on from there exactly as an uninterrupted run would have (the actors due at
+    // that instant after the one that stopped run first). While a station holds it runs nothing.
+    bool runUntil(qint64 us);
+    // Stops runUntil after the actor running now (a trigger that stops the network after the
+    // scan in which it fired). From an actor's run, on the network's thread; outside a run it
+    // does nothing.
+    void interrupt() { m_interrupt = true; }
+    // A station holding inside its scan, or null.
+    Station *holdingStation() const;
 
     const NetworkDescription &description() const { return m_description; }
     const std::vector<std::unique_ptr<Station>> &stations() const { return m_stations; }
@@ -167,6 +180,12 @@ private:
     quint64 m_sequence = 0;
     qint64 m_now = 0;
     std::function<void(const TrafficRecord &)> m_traffic;
+    // The actors of the instant runUntil stopped at: m_actors from this index still to run
+    // (0: none).
+    std::size_t m_resumeFrom = 0;
+    bool m_interrupt = false;
+    // Runs the actors due now from index `from`; false when one held or interrupted.
+    bool runActors(std::size_t from);
 };
 
 } // namespace rung::network

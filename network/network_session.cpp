@@ -147,6 +147,8 @@ void NetworkSession::run() {
     control([this] {
         m_mode = Mode::Running;
         m_budgetUs = 0;
+        m_instructionSteps = 0;
+        m_finishScan = false;
     });
     setRunState(RunState::Running);
 }
@@ -156,6 +158,8 @@ void NetworkSession::pause() {
         if (m_mode == Mode::Running)
             m_mode = Mode::Paused;
         m_budgetUs = 0;
+        m_instructionSteps = 0;
+        m_finishScan = false;
     });
     if (m_runState == RunState::Running || m_runState == RunState::Stepping)
         setRunState(RunState::Paused);
@@ -165,6 +169,8 @@ void NetworkSession::stop() {
     control([this] {
         m_mode = Mode::Stopped;
         m_budgetUs = 0;
+        m_instructionSteps = 0;
+        m_finishScan = false;
         m_reset = true;
         m_faults.clear();
     });
@@ -182,6 +188,8 @@ void NetworkSession::runFor(qint64 durationMs) {
     control([this, durationMs] {
         m_mode = Mode::Paused;
         m_budgetUs = durationMs * 1000;
+        m_instructionSteps = 0;
+        m_finishScan = false;
     });
     setRunState(RunState::Stepping);
 }
@@ -370,13 +378,7 @@ void NetworkSession::afterSlice(Network &network) {
     for (std::size_t i = 0; i < m_sources.size() && i < network.stations().size(); ++i) {
         StationSource &source = *m_sources[i];
         const simulator::Engine &engine = network.stations()[i]->engine();
-        const quint64 scans = engine.statistics().scans;
-        if (scans != source.m_scansRecorded) {
-            source.m_scansRecorded = scans;
-            std::lock_guard lock(source.m_historyMutex);
-            if (source.m_history.deviceCount() > 0)
-                source.m_history.record(scans, engine.statistics().timeMs, engine.words().data());
-        }
+        // The history is recorded after each scan (recordScan).
         const auto &errors = engine.runtimeErrors();
         if (errors.size() != source.m_errorsReported) {
             source.m_errorsReported = errors.size();
@@ -399,6 +401,7 @@ void NetworkSession::afterSlice(Network &network) {
 
 void NetworkSession::workerLoop() {
     std::unique_ptr<Network> network = std::move(m_initial);
+    prepareNetwork(*network);
     const qint64 slice = sliceUs(m_description);
     quint64 seen = ~quint64{0};
     Clock::time_point paceWall;
@@ -420,6 +423,7 @@ void NetworkSession::workerLoop() {
         bool scan = false;
         bool stepsDone = false;
         quint64 generation = 0;
+        DebugWork debug;
         std::vector<Fault> faults;
         qint64 until = 0;
         std::shared_ptr<BridgeLines> bridgeLines;
@@ -445,6 +449,8 @@ void NetworkSession::workerLoop() {
                     bridgeLines = std::move(m_bridgeLines);
                     break;
                 }
+                if (takeDebugWork(&debug))
+                    break;
                 faults.swap(m_faults);
                 bool commands = false;
                 for (StationSource *s : m_sources)
@@ -506,6 +512,7 @@ void NetworkSession::workerLoop() {
                 ++m_trafficEpoch;
             }
             attachTraffic(*network);
+            prepareNetwork(*network);
             if (m_bridges) // the same lines on the new network's wires
                 postBridgeStatus(m_bridges->attach(*network));
             for (StationSource *s : m_sources) {
@@ -519,6 +526,12 @@ void NetworkSession::workerLoop() {
             post([this] { setError({}); });
             anchor();
             publish(*network, true);
+            lastPublish = Clock::now();
+            unpublished = false;
+            continue;
+        }
+        if (debug.breakpoints || debug.step || debug.finish) {
+            doDebugWork(*network, debug);
             lastPublish = Clock::now();
             unpublished = false;
             continue;
@@ -547,17 +560,21 @@ void NetworkSession::workerLoop() {
             unpublished = false;
             continue;
         }
-        network->runUntil(until);
+        const bool reached = runSlice(*network, until);
         if (m_bridges && m_bridges->poll(*network))
             postBridgeStatus(m_bridges->statuses());
         afterSlice(*network);
         unpublished = true;
         const auto now = Clock::now();
-        if (stepsDone || answerDue || now - lastPublish >= kPublishInterval) {
+        if (!reached || !m_fired.empty() || stepsDone || answerDue ||
+            now - lastPublish >= kPublishInterval) {
             publish(*network, std::exchange(answerDue, false));
             lastPublish = now;
             unpublished = false;
         }
+        reportTriggers(); // after the snapshot: a reader told finds that scan in it
+        if (!reached)
+            continue; // paused where it stopped (runSlice)
         if (stepsDone)
             post([this, generation] {
                 std::unique_lock lock(m_mutex);

@@ -18,10 +18,12 @@
 #include "model/image/history.h"
 #include "model/image/monitor_source.h"
 #include "simulator/command_inbox.h"
+#include "simulator/engine.h"
 
 #include <QObject>
 
 #include <condition_variable>
+#include <map>
 #include <memory>
 #include <mutex>
 #include <thread>
@@ -44,8 +46,9 @@ public:
     // The file of the station's program (resolved against the network file).
     const QString &programPath() const { return m_programPath; }
 
-    // History: the station's devices recorded after every slice of virtual time in which it
-    // scanned (MonitorSource).
+    // History: the station's devices recorded after every scan it completes (MonitorSource). A
+    // trigger is evaluated there: it reports triggered(), and with Trigger::Action::Stop the
+    // whole network pauses right after that scan, every other station at its scan boundary.
     bool watchHistory(const model::Address &address) override;
     void
     readHistory(const std::function<void(const model::HistoryRecorder &)> &read) const override;
@@ -69,6 +72,8 @@ private:
     std::size_t m_errorsReported = 0; // worker thread
     quint64 m_scansRecorded = 0;      // worker thread
 };
+
+class Station;
 
 class NetworkSession : public QObject {
     Q_OBJECT
@@ -135,6 +140,25 @@ public:
     bool wireCut(const QString &wire) const;
     bool silent(const QString &stationOrDevice) const;
 
+    // Debugging inside a station's scan (network_session_debug.cpp; docs/network.md,
+    // "Breakpoints"). A breakpoint that holds stops its station before the instruction and the
+    // whole network with it: every other station stays at its scan boundary (no scan is left
+    // half run), the virtual clock stands, the run state is Paused and breakpointHit follows.
+    // run(), singleScan() and runFor() go on from there: the held scan first (up to its next
+    // breakpoint), then the network.
+    // A station's breakpoints (instructions of its program), replacing its others; kept over
+    // Stop. One the program cannot take is said by errorText and changes nothing.
+    void setBreakpoints(const QString &station, std::vector<simulator::Breakpoint> breakpoints);
+    // One instruction of the held scan; with no scan held, `station`'s next scan starts and
+    // holds before its first instruction (the network runs up to it). Stepping, then Paused.
+    void stepInstruction(const QString &station);
+    // The rest of the held scan, breakpoints ignored; then Paused at that instant, the
+    // stations after it not yet run.
+    void finishScan();
+    // The station whose scan holds as its latest snapshot shows; empty when none (owner
+    // thread).
+    QString heldStation() const;
+
     // The frames sent since the last call, oldest first (owner thread). *startedOver: the
     // network was built again (Stop) since the last call, and these are the new network's: a
     // reader drops what it kept of the old one first.
@@ -156,6 +180,8 @@ signals:
     void clockChanged(qint64 nowUs);
     // bridgeStatus() changed: a bridge opened, failed or was opened again.
     void bridgesChanged();
+    // A breakpoint stopped `station`'s scan before `instruction` (the run state is Paused).
+    void breakpointHit(const QString &station, int instruction);
 
 private:
     friend class StationSource;
@@ -180,6 +206,25 @@ private:
     void applyFaults(Network &network, std::vector<Fault> faults);
     void publish(Network &network, bool answer);
     void afterSlice(Network &network);
+    // network_session_debug.cpp, on the worker thread.
+    struct DebugWork {
+        bool breakpoints = false; // the stations' breakpoints changed
+        bool step = false;
+        QString stepStation;
+        bool finish = false;
+        quint64 generation = 0;
+        bool stepsDone = false;
+    };
+    bool takeDebugWork(DebugWork *work);   // under m_mutex: true when there is some
+    void prepareNetwork(Network &network); // the scan hooks and breakpoints of a network built
+    void applyBreakpoints(Network &network);
+    void doDebugWork(Network &network, const DebugWork &work);
+    // Runs the network to `until`: the held scan first; false when it stopped on the way (a
+    // breakpoint, a stopping trigger), the session then Paused.
+    bool runSlice(Network &network, qint64 until);
+    void pauseFromWorker(const QString &station, int breakpoint);
+    void recordScan(Network &network, StationSource &source, const Station &station);
+    void reportTriggers();
 
     NetworkDescription m_description;
     ProgramLoader m_loader;
@@ -202,6 +247,19 @@ private:
     quint64 m_generation = 0;
     std::vector<Fault> m_faults;      // to apply at the next slice
     std::vector<Fault> m_faultsShown; // as the user set them (owner's view)
+    // Debugging (network_session_debug.cpp).
+    std::map<QString, std::vector<simulator::Breakpoint>> m_breakpoints; // by station
+    bool m_breakpointsChanged = false;
+    int m_instructionSteps = 0;
+    QString m_stepStation;
+    bool m_finishScan = false;
+    struct Fired { // a trigger that fired, to report after the snapshot (worker thread)
+        StationSource *source = nullptr;
+        quint64 scan = 0;
+        qint64 timeMs = 0;
+    };
+    std::vector<Fired> m_fired;
+    bool m_stopFired = false; // a stopping trigger fired since the worker last looked
 
     std::mutex m_trafficMutex;
     std::vector<TrafficRecord> m_traffic;

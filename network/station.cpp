@@ -188,10 +188,44 @@ model::PlcPort *Station::port(const QString &name) {
 }
 
 void Station::run(qint64 nowUs) {
-    m_engine->scan();
+    if (m_holdAtStart) {
+        m_holdAtStart = false;
+        m_engine->stepInstruction(); // the scan starts: inputs read, before its first instruction
+        return;
+    }
+    // Without breakpoints this is the plain scan.
+    if (m_engine->scanToBreakpoint() == simulator::ScanStop::Breakpoint)
+        return;
+    scanEnded(nowUs);
+}
+
+void Station::scanEnded(qint64 nowUs) {
     for (auto &[key, port] : m_ports)
         port->answer(nowUs);
     m_nextUs += m_periodMs * 1000;
+    if (m_scanHook)
+        m_scanHook(*this);
+}
+
+simulator::ScanStop Station::stepInstruction() {
+    const simulator::ScanStop stop = m_engine->stepInstruction();
+    if (stop == simulator::ScanStop::Completed)
+        scanEnded(m_network->nowUs());
+    return stop;
+}
+
+void Station::finishScan() {
+    if (!m_engine->insideScan())
+        return;
+    m_engine->scan();
+    scanEnded(m_network->nowUs());
+}
+
+simulator::ScanStop Station::continueScan() {
+    const simulator::ScanStop stop = m_engine->scanToBreakpoint();
+    if (stop == simulator::ScanStop::Completed)
+        scanEnded(m_network->nowUs());
+    return stop;
 }
 
 } // namespace rung::network

@@ -88,6 +88,22 @@ public:
     // Actor
     qint64 nextUs() const override { return m_nextUs; }
     void run(qint64 nowUs) override;
+    bool holding() const override { return m_engine->insideScan(); }
+
+    // Debugging inside a scan (network_session_debug.cpp). With breakpoints set on the engine
+    // a scan runs to the first that holds and the station holds there (the network with it);
+    // these go on from a hold, and a scan they complete ends as run() ends one (the ports'
+    // answers, the next scan planned, the scan hook).
+    // Its next scan starts and holds before its first instruction.
+    void setHoldAtNextScan(bool on) { m_holdAtStart = on; }
+    // One instruction of the held scan.
+    simulator::ScanStop stepInstruction();
+    // The rest of the held scan, breakpoints ignored.
+    void finishScan();
+    // The rest of the held scan up to the next breakpoint that holds.
+    simulator::ScanStop continueScan();
+    // Called after each scan the station completes, on the network's thread.
+    void setScanHook(std::function<void(Station &)> hook) { m_scanHook = std::move(hook); }
 
     // model::PlcPorts
     model::PlcPort *port(const QString &name) override;
@@ -102,6 +118,9 @@ private:
     std::unique_ptr<simulator::Engine> m_engine;
     std::shared_ptr<EngineImage> m_image;
     std::map<QString, std::unique_ptr<StationPort>> m_ports;
+    bool m_holdAtStart = false;
+    std::function<void(Station &)> m_scanHook;
+    void scanEnded(qint64 nowUs);
 };
 
 } // namespace rung::network

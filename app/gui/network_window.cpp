@@ -4,6 +4,7 @@
 #include "app/gui/file_dialogs.h"
 #include "app/gui/network_bridge_controller.h"
 #include "app/gui/network_chart.h"
+#include "app/gui/network_debug_controller.h"
 #include "app/gui/network_document.h"
 #include "app/gui/network_traffic_view.h"
 #include "app/gui/network_view.h"
@@ -74,6 +75,7 @@ NetworkWindow::~NetworkWindow() {
         v.io->setMonitorSource(nullptr);
     }
     m_panel->setMonitorSource(nullptr);
+    m_debug->setSession(nullptr, {});
     m_watch->setSession(nullptr);
     m_chart->setSession(nullptr);
 }
@@ -103,7 +105,10 @@ void NetworkWindow::buildWindow() {
     m_stationList = new QListWidget(this);
     m_stationList->setObjectName(QStringLiteral("networkStations"));
     connect(m_stationList, &QListWidget::currentRowChanged, this, [this](int row) {
-        if (row >= 0 && row < int(m_views.size()) && selectStation(m_views[std::size_t(row)].name))
+        // The station's program shows: as a ladder, or as the list when that is shown.
+        if (row >= 0 && row < int(m_views.size()) &&
+            selectStation(m_views[std::size_t(row)].name) &&
+            m_tabs->currentWidget() != m_debug->listPage())
             m_tabs->setCurrentWidget(m_ladders);
     });
     connect(m_stationList, &QListWidget::itemActivated, this, [this](QListWidgetItem *item) {
@@ -215,6 +220,12 @@ void NetworkWindow::buildWindow() {
     m_status = new QLabel(this);
     m_status->setObjectName(QStringLiteral("networkStatus"));
     statusBar()->addPermanentWidget(m_status);
+
+    m_debug = new NetworkDebugController(this, m_tabs, this);
+    connect(m_debug, &NetworkDebugController::stationWanted, this,
+            [this](const QString &name) { selectStation(name); });
+    connect(m_debug, &NetworkDebugController::message, this,
+            [this](const QString &text) { statusBar()->showMessage(text, 10000); });
 }
 
 void NetworkWindow::buildMenus() {
@@ -323,6 +334,7 @@ void NetworkWindow::buildMenus() {
                 m_session->setSpeed(factor);
         });
     }
+    m_debug->addActions(m_simulationMenu);
     tools->addSeparator();
     m_selectorLabel = new QLabel(tr("Station:"), tools);
     tools->addWidget(m_selectorLabel);
@@ -331,7 +343,8 @@ void NetworkWindow::buildMenus() {
         m_selector->setObjectName(QStringLiteral("networkStationSelector"));
         m_selector->setSizeAdjustPolicy(QComboBox::AdjustToContents);
         connect(m_selector, &QComboBox::currentIndexChanged, this, [this](int i) {
-            if (i >= 0 && i < int(m_views.size()) && selectStation(m_views[std::size_t(i)].name))
+            if (i >= 0 && i < int(m_views.size()) && selectStation(m_views[std::size_t(i)].name) &&
+                m_tabs->currentWidget() != m_debug->listPage())
                 m_tabs->setCurrentWidget(m_ladders);
         });
     }
@@ -441,6 +454,7 @@ void NetworkWindow::retranslate() {
     m_stationList->setToolTip(tr("Double-click a station to edit its program"));
     m_tabs->setTabText(m_tabs->indexOf(m_view), tr("Network"));
     m_tabs->setTabText(m_tabs->indexOf(m_ladders), tr("Ladder"));
+    m_debug->retranslate();
     updateTitle();
     updateStatus();
 }
@@ -542,6 +556,7 @@ bool NetworkWindow::newNetwork(QString *) {
 
 void NetworkWindow::dropSession() {
     m_panel->setMonitorSource(nullptr);
+    m_debug->setSession(nullptr, {});
     for (StationView &v : m_views) {
         v.ladder->setMonitorSource(nullptr);
         v.io->setMonitorSource(nullptr);
@@ -645,6 +660,10 @@ bool NetworkWindow::buildSession(QString *error) {
         m_watch->addDevice(d, &ignored);
     for (const QString &d : charted)
         m_chart->addDevice(d);
+    std::vector<NetworkDebugController::StationParts> debugged;
+    for (const StationView &v : m_views)
+        debugged.push_back({v.name, v.source, v.document, v.ladder});
+    m_debug->setSession(m_session.get(), debugged);
     if (!m_views.empty() && !selectStation(station))
         selectStation(m_views.front().name);
     m_bridges->setSession(m_session.get());
@@ -707,6 +726,7 @@ bool NetworkWindow::selectStation(const QString &name) {
             m_session->setPowerFlowStation(name);
             m_panel->setPlc(&source->target(), source->model() ? source->model()->name : QString());
             m_panel->setMonitorSource(source);
+            m_debug->selectStation(name);
             const QSignalBlocker selector(m_selector), list(m_stationList);
             m_selector->setCurrentIndex(int(i));
             m_stationList->setCurrentRow(int(i));

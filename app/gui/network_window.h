@@ -37,6 +37,7 @@ namespace rung::app {
 
 class NetworkBridgeController;
 class NetworkChart;
+class NetworkDebugController;
 class NetworkDocument;
 class NetworkView;
 class NetworkTrafficView;
@@ -74,6 +75,8 @@ public:
     NetworkTrafficView *traffic() const { return m_traffic; }
     editor::FrontPanel *frontPanel() const { return m_panel; }
     NetworkBridgeController *bridges() const { return m_bridges; }
+    // The selected station's list, the Scan Debugger, breakpoints and stepping.
+    NetworkDebugController *debugger() const { return m_debug; }
     // Adds "STATION/DEVICE" to the watch table; false with the reason in the status bar.
     bool watch(const QString &device);
     // The status line: run state and virtual time.
@@ -154,6 +157,7 @@ private:
     class QDockWidget *m_trafficDock = nullptr;
     class QDockWidget *m_panelDock = nullptr;
     NetworkBridgeController *m_bridges = nullptr; // the Bridges dock, live bridges
+    NetworkDebugController *m_debug = nullptr;
 };
 
 } // namespace rung::app

@@ -1,5 +1,6 @@
 #include "scan_debugger_view.h"
 
+#include "scan_debug_subject.h"
 #include "simulation_controller.h"
 
 #include "editor/document.h"
@@ -44,13 +45,62 @@ QStringList items(const QListWidget *list) {
     return all;
 }
 
+// The main window's simulation as a subject.
+class SimulationDebugSubject final : public ScanDebugSubject {
+public:
+    SimulationDebugSubject(SimulationController *simulation, editor::Document *document,
+                           QObject *parent)
+        : ScanDebugSubject(parent)
+        , m_simulation(simulation)
+        , m_document(document) {
+        connect(simulation, &SimulationController::breakpointsChanged, this,
+                &ScanDebugSubject::breakpointsChanged);
+        connect(simulation, &SimulationController::statusChanged, this,
+                &ScanDebugSubject::stateChanged);
+        connect(simulation, &SimulationController::stoppedAtChanged, this,
+                &ScanDebugSubject::stateChanged);
+    }
+    editor::Document *document() const override { return m_document; }
+    bool active() const override { return m_simulation->session() != nullptr; }
+    std::shared_ptr<const model::Snapshot> snapshot() const override {
+        const simulator::SimulatorSession *session = m_simulation->session();
+        return session ? session->snapshot() : nullptr;
+    }
+    bool live() const override { return !m_simulation->historyShown(); }
+    std::vector<BreakpointSpec> breakpoints() const override { return m_simulation->breakpoints(); }
+    int instructionOf(const BreakpointSpec &b) const override {
+        return m_simulation->instructionOf(b);
+    }
+    QString conditionText(const BreakpointSpec &b) const override {
+        return m_simulation->conditionText(b);
+    }
+    void stepInstruction() override { m_simulation->stepInstruction(); }
+    void finishScan() override { m_simulation->finishScan(); }
+    void proceed() override { m_simulation->run(); }
+    void removeBreakpoint(int instruction) override { m_simulation->removeBreakpoint(instruction); }
+    void clearBreakpoints() override { m_simulation->clearBreakpoints(); }
+
+private:
+    SimulationController *m_simulation;
+    editor::Document *m_document;
+};
+
 } // namespace
 
 ScanDebuggerView::ScanDebuggerView(SimulationController *simulation, editor::Document *document,
                                    QWidget *parent)
     : QWidget(parent)
-    , m_simulation(simulation)
-    , m_document(document) {
+    , m_subject(new SimulationDebugSubject(simulation, document, this)) {
+    build();
+}
+
+ScanDebuggerView::ScanDebuggerView(ScanDebugSubject *subject, QWidget *parent)
+    : QWidget(parent)
+    , m_subject(subject) {
+    build();
+}
+
+void ScanDebuggerView::build() {
     auto *layout = new QVBoxLayout(this);
     m_position = new QLabel;
     m_position->setObjectName(QStringLiteral("debuggerPosition"));
@@ -106,9 +156,9 @@ ScanDebuggerView::ScanDebuggerView(SimulationController *simulation, editor::Doc
         bpButtons->addWidget(b);
     layout->addLayout(bpButtons);
 
-    connect(m_step, &QPushButton::clicked, simulation, &SimulationController::stepInstruction);
-    connect(m_finish, &QPushButton::clicked, simulation, &SimulationController::finishScan);
-    connect(m_continue, &QPushButton::clicked, simulation, &SimulationController::run);
+    connect(m_step, &QPushButton::clicked, this, [this] { m_subject->stepInstruction(); });
+    connect(m_finish, &QPushButton::clicked, this, [this] { m_subject->finishScan(); });
+    connect(m_continue, &QPushButton::clicked, this, [this] { m_subject->proceed(); });
     auto selected = [this]() -> int {
         const QTreeWidgetItem *item = m_breakpoints->currentItem();
         return item ? item->data(0, Qt::UserRole).toInt() : -1;
@@ -119,10 +169,9 @@ ScanDebuggerView::ScanDebuggerView(SimulationController *simulation, editor::Doc
     });
     connect(m_remove, &QPushButton::clicked, this, [this, selected] {
         if (selected() >= 0)
-            m_simulation->removeBreakpoint(selected());
+            m_subject->removeBreakpoint(selected());
     });
-    connect(m_removeAll, &QPushButton::clicked, simulation,
-            &SimulationController::clearBreakpoints);
+    connect(m_removeAll, &QPushButton::clicked, this, [this] { m_subject->clearBreakpoints(); });
     // Remove and Condition... act on the breakpoint chosen in the list: greyed, saying so,
     // while none is (a click that did nothing and said nothing left the user guessing).
     connect(m_breakpoints, &QTreeWidget::itemSelectionChanged, this,
@@ -130,10 +179,9 @@ ScanDebuggerView::ScanDebuggerView(SimulationController *simulation, editor::Doc
     connect(m_breakpoints, &QTreeWidget::itemDoubleClicked, this, [this](QTreeWidgetItem *item) {
         emit goToInstruction(item->data(0, Qt::UserRole).toInt());
     });
-    connect(simulation, &SimulationController::breakpointsChanged, this,
+    connect(m_subject, &ScanDebugSubject::breakpointsChanged, this,
             &ScanDebuggerView::refreshBreakpoints);
-    connect(simulation, &SimulationController::statusChanged, this, &ScanDebuggerView::refresh);
-    connect(simulation, &SimulationController::stoppedAtChanged, this, &ScanDebuggerView::refresh);
+    connect(m_subject, &ScanDebugSubject::stateChanged, this, &ScanDebuggerView::refresh);
     retranslate();
 }
 
@@ -170,7 +218,8 @@ QStringList ScanDebuggerView::memoryStack() const {
 void ScanDebuggerView::refresh() {
     // The stacks in the family's words: a CPM1 user reads AND LD / OR LD, and only the
     // Vigor has a branch stack (MPS); the others branch through TR bits or none.
-    const model::Target &target = m_document->target();
+    const editor::Document *document = m_subject->document();
+    const model::Target &target = document->target();
     const auto mnemonic = [&target](model::Op op) {
         const model::InstructionSpec *spec = target.findInstruction(op);
         return spec ? spec->mnemonic : QString();
@@ -181,10 +230,10 @@ void ScanDebuggerView::refresh() {
     m_stackCaption->setText(tr("%1 stack:").arg(push));
     m_stackCaption->setVisible(!push.isEmpty());
     m_stack->setVisible(!push.isEmpty());
-    simulator::SimulatorSession *session = m_simulation->session();
-    const auto snapshot = session ? session->snapshot() : nullptr;
+    const bool session = m_subject->active();
+    const auto snapshot = m_subject->snapshot();
     const bool inside = snapshot && snapshot->pause.has_value();
-    const bool live = !m_simulation->historyShown();
+    const bool live = m_subject->live();
     m_step->setEnabled(live);
     m_finish->setEnabled(live && inside);
     m_continue->setEnabled(live && session);
@@ -200,9 +249,9 @@ void ScanDebuggerView::refresh() {
         return;
     }
     const model::ScanPause &p = *snapshot->pause;
-    const auto &list = m_document->listing().list.instructions;
-    const auto &printed = m_document->printedListing();
-    const auto &first = m_document->listing().rungFirst;
+    const auto &list = document->listing().list.instructions;
+    const auto &printed = document->printedListing();
+    const auto &first = document->listing().rungFirst;
     QString what;
     if (p.instruction >= 0 && static_cast<std::size_t>(p.instruction) < list.size()) {
         const auto i = static_cast<std::size_t>(p.instruction);
@@ -214,7 +263,7 @@ void ScanDebuggerView::refresh() {
                    .arg(list[i].step)
                    .arg(line)
                    .arg(rung)
-                   .arg(model::printInstruction(m_document->target(), list[i]));
+                   .arg(model::printInstruction(target, list[i]));
     } else {
         what = tr("Stopped at the end of the program");
     }
@@ -238,10 +287,11 @@ void ScanDebuggerView::refreshBreakpoints() {
     const int chosen =
         current && current->isSelected() ? current->data(0, Qt::UserRole).toInt() : -1;
     m_breakpoints->clear();
-    const auto &list = m_document->listing().list.instructions;
-    const auto &printed = m_document->printedListing();
-    for (const SimulationController::BreakpointSpec &b : m_simulation->breakpoints()) {
-        const int at = m_simulation->instructionOf(b);
+    const editor::Document *document = m_subject->document();
+    const auto &list = document->listing().list.instructions;
+    const auto &printed = document->printedListing();
+    for (const SimulationController::BreakpointSpec &b : m_subject->breakpoints()) {
+        const int at = m_subject->instructionOf(b);
         auto *item = new QTreeWidgetItem(m_breakpoints);
         item->setData(0, Qt::UserRole, at);
         if (at < 0) {
@@ -254,10 +304,10 @@ void ScanDebuggerView::refreshBreakpoints() {
                                  .arg(b.rung + 1)
                                  .arg(line)
                                  .arg(i < list.size()
-                                          ? model::printInstruction(m_document->target(), list[i])
+                                          ? model::printInstruction(document->target(), list[i])
                                           : QString()));
         }
-        item->setText(1, m_simulation->conditionText(b));
+        item->setText(1, m_subject->conditionText(b));
     }
     // The place is the longer text: it takes what the condition leaves.
     m_breakpoints->resizeColumnToContents(0);
@@ -270,7 +320,7 @@ void ScanDebuggerView::refreshBreakpoints() {
 }
 
 void ScanDebuggerView::updateButtons() {
-    const bool any = !m_simulation->breakpoints().empty();
+    const bool any = !m_subject->breakpoints().empty();
     const QTreeWidgetItem *item = m_breakpoints->currentItem();
     const bool chosen = item && item->isSelected() && item->data(0, Qt::UserRole).toInt() >= 0;
     const QString why = !any      ? tr("No breakpoint is set: Ctrl+B sets one where the cursor is")

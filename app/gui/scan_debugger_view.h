@@ -4,7 +4,8 @@
 // and rung, and whether a breakpoint or a step stopped it), the logic result, the block stack
 // (ANB/ORB, AND LD/OR LD) and the MPS stack as the interpreter holds them, the interlock and
 // step state; buttons to step one instruction, finish the scan and continue; and the list of
-// breakpoints with their conditions.
+// breakpoints with their conditions. It shows a ScanDebugSubject (scan_debug_subject.h): the
+// main window's simulation, or a station of a simulated network.
 
 #include <QWidget>
 
@@ -19,14 +20,18 @@ class Document;
 
 namespace rung::app {
 
+class ScanDebugSubject;
 class SimulationController;
 
 class ScanDebuggerView : public QWidget {
     Q_OBJECT
 
 public:
+    // The main window's simulation of `document`.
     ScanDebuggerView(SimulationController *simulation, editor::Document *document,
                      QWidget *parent = nullptr);
+    // Any subject (kept, not owned: it must outlive the view or be its child).
+    explicit ScanDebuggerView(ScanDebugSubject *subject, QWidget *parent = nullptr);
 
     void refresh();
     void retranslate();
@@ -48,8 +53,9 @@ private:
     void refreshBreakpoints();
     void updateButtons(); // Remove and Condition... need a breakpoint chosen in the list
 
-    SimulationController *m_simulation;
-    editor::Document *m_document;
+    void build();
+
+    ScanDebugSubject *m_subject;
     QLabel *m_position;
     QLabel *m_resultCaption;
     QLabel *m_result;

@@ -17,6 +17,7 @@
 
 #include <functional>
 #include <memory>
+#include <optional>
 #include <vector>
 
 namespace rung::editor {
@@ -81,6 +82,16 @@ public:
     // The instruction (index in the listing) a breakpoint stands on; -1 when the program no
     // longer has it.
     int instructionOf(const BreakpointSpec &b) const;
+    // The same against any program's rungs (ProgramListing::rungFirst); a network's stations
+    // keep their breakpoints so too.
+    static int instructionOf(const std::vector<int> &rungFirst, const BreakpointSpec &b);
+    // The breakpoint on `instruction` of a program with these rungs, at its rung and place.
+    static std::optional<BreakpointSpec> placeBreakpoint(const std::vector<int> &rungFirst,
+                                                         int instruction,
+                                                         const BreakpointSpec &condition);
+    // The engine's breakpoints for these (those whose rung is too short now wait).
+    static std::vector<simulator::Breakpoint>
+    engineBreakpoints(const std::vector<int> &rungFirst, const std::vector<BreakpointSpec> &all);
     // Sets a plain breakpoint on the instruction, or clears the one there; true when set.
     bool toggleBreakpoint(int instruction);
     void setBreakpoint(int instruction, const BreakpointSpec &condition);
@@ -90,6 +101,7 @@ public:
     const BreakpointSpec *breakpointAt(int instruction) const;
     // "when Y0 rises", "when D10 > 100", "always" (translated), for lists and tooltips.
     QString conditionText(const BreakpointSpec &b) const;
+    static QString conditionText(const model::Target &target, const BreakpointSpec &b);
     // Inside a scan: one instruction; the rest of the scan.
     bool stepInstruction();
     void finishScan();

@@ -13,11 +13,26 @@
 namespace rung::app {
 
 int SimulationController::instructionOf(const BreakpointSpec &b) const {
-    const auto &first = m_document->listing().rungFirst;
+    return instructionOf(m_document->listing().rungFirst, b);
+}
+
+int SimulationController::instructionOf(const std::vector<int> &first, const BreakpointSpec &b) {
     if (b.rung < 0 || static_cast<std::size_t>(b.rung) + 1 >= first.size())
         return -1;
     const int at = first[static_cast<std::size_t>(b.rung)] + b.offset;
     return at < first[static_cast<std::size_t>(b.rung) + 1] ? at : -1;
+}
+
+std::optional<SimulationController::BreakpointSpec>
+SimulationController::placeBreakpoint(const std::vector<int> &first, int instruction,
+                                      const BreakpointSpec &condition) {
+    const auto rung = std::upper_bound(first.begin(), first.end(), instruction) - first.begin() - 1;
+    if (instruction < 0 || rung < 0 || static_cast<std::size_t>(rung) + 1 >= first.size())
+        return std::nullopt;
+    BreakpointSpec b = condition;
+    b.rung = static_cast<int>(rung);
+    b.offset = instruction - first[static_cast<std::size_t>(rung)];
+    return b;
 }
 
 const SimulationController::BreakpointSpec *
@@ -29,16 +44,13 @@ SimulationController::breakpointAt(int instruction) const {
 }
 
 void SimulationController::setBreakpoint(int instruction, const BreakpointSpec &condition) {
-    const auto &first = m_document->listing().rungFirst;
-    const auto rung = std::upper_bound(first.begin(), first.end(), instruction) - first.begin() - 1;
-    if (instruction < 0 || rung < 0 || static_cast<std::size_t>(rung) + 1 >= first.size())
+    const std::optional<BreakpointSpec> b =
+        placeBreakpoint(m_document->listing().rungFirst, instruction, condition);
+    if (!b)
         return;
-    BreakpointSpec b = condition;
-    b.rung = static_cast<int>(rung);
-    b.offset = instruction - first[static_cast<std::size_t>(rung)];
     std::erase_if(m_breakpoints,
                   [&](const BreakpointSpec &x) { return instructionOf(x) == instruction; });
-    m_breakpoints.push_back(b);
+    m_breakpoints.push_back(*b);
     sendBreakpoints();
 }
 
@@ -63,9 +75,15 @@ void SimulationController::clearBreakpoints() {
 }
 
 std::vector<simulator::Breakpoint> SimulationController::engineBreakpoints() const {
+    return engineBreakpoints(m_document->listing().rungFirst, m_breakpoints);
+}
+
+std::vector<simulator::Breakpoint>
+SimulationController::engineBreakpoints(const std::vector<int> &rungFirst,
+                                        const std::vector<BreakpointSpec> &specs) {
     std::vector<simulator::Breakpoint> all;
-    for (const BreakpointSpec &b : m_breakpoints) {
-        const int at = instructionOf(b);
+    for (const BreakpointSpec &b : specs) {
+        const int at = instructionOf(rungFirst, b);
         if (at < 0)
             continue; // its rung is shorter now: it waits
         simulator::Breakpoint e;
@@ -88,9 +106,12 @@ void SimulationController::sendBreakpoints() {
 }
 
 QString SimulationController::conditionText(const BreakpointSpec &b) const {
+    return conditionText(m_document->target(), b);
+}
+
+QString SimulationController::conditionText(const model::Target &target, const BreakpointSpec &b) {
     using When = simulator::Breakpoint::When;
-    const QString device =
-        b.device.valid() ? model::formatAddress(m_document->target(), b.device) : QString();
+    const QString device = b.device.valid() ? model::formatAddress(target, b.device) : QString();
     switch (b.when) {
     case When::Always:
         return tr("always");
