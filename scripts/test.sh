@@ -139,9 +139,11 @@ tsan_suites() {
     local comms_status=0 simulator_status=0
     build-tsan/tests/test_comms --gtest_brief=1 || comms_status=$?
     wait "$simulator" || simulator_status=$?
-    # The network's session: a network on its worker thread, its stations read by the owner.
+    # The network's session: a network on its worker thread, its stations read by the owner;
+    # its bridges (lines opened and read on the worker, cancelled from the owner).
     local network_status=0
-    build-tsan/tests/test_network --gtest_brief=1 --gtest_filter='NetworkSession.*' ||
+    build-tsan/tests/test_network --gtest_brief=1 \
+        --gtest_filter='NetworkSession.*:SessionBridges.*:NetworkHold.*' ||
         network_status=$?
     ((comms_status == 0 && simulator_status == 0 && network_status == 0)) ||
         { echo "ThreadSanitizer: test_comms exit $comms_status, test_simulator exit $simulator_status, test_network exit $network_status"; return 1; }
