@@ -100,6 +100,7 @@ NetworkSession::NetworkSession(NetworkDescription description, ProgramLoader loa
         m_wires.push_back(info);
     }
     attachTraffic(*m_initial);
+    m_networkHistory->start(*m_initial);
     publish(*m_initial, false);
     m_worker = std::thread([this] { workerLoop(); });
 }
@@ -480,6 +481,7 @@ void NetworkSession::workerLoop() {
                 ++m_trafficEpoch;
             }
             attachTraffic(*network);
+            m_networkHistory->start(*network);
             for (StationSource *s : m_sources) {
                 s->m_errorsReported = 0;
                 s->m_scansRecorded = 0;
@@ -505,6 +507,7 @@ void NetworkSession::workerLoop() {
                 applied = true;
             }
         if (applied) {
+            m_networkHistory->record(*network, true);
             publish(*network, true);
             for (StationSource *s : m_sources)
                 s->m_inbox.complete();
@@ -521,6 +524,7 @@ void NetworkSession::workerLoop() {
         }
         network->runUntil(until);
         afterSlice(*network);
+        m_networkHistory->record(*network, false);
         unpublished = true;
         const auto now = Clock::now();
         if (stepsDone || answerDue || now - lastPublish >= kPublishInterval) {

@@ -13,6 +13,7 @@
 // through mutexes (the stations' inboxes, the history, the traffic queue, the controls).
 
 #include "network/network.h"
+#include "network/network_history.h"
 
 #include "model/image/history.h"
 #include "model/image/monitor_source.h"
@@ -139,6 +140,10 @@ public:
     // reader drops what it kept of the old one first.
     std::vector<TrafficRecord> takeTraffic(bool *startedOver = nullptr);
 
+    // Every station's past (network_history.h): recorded after every slice of virtual time
+    // and every command, started again at Stop. Any thread reads it.
+    std::shared_ptr<const NetworkHistory> history() const { return m_networkHistory; }
+
 signals:
     void runStateChanged(rung::model::MonitorSource::RunState state);
     void errorTextChanged(const QString &text);
@@ -201,6 +206,9 @@ private:
 
     std::mutex m_postMutex;
     std::vector<std::function<void()>> m_posted;
+
+    // Worker records; readers under its own lock. Before m_worker, which uses it.
+    std::shared_ptr<NetworkHistory> m_networkHistory = std::make_shared<NetworkHistory>();
 
     std::thread m_worker;
 };

@@ -37,6 +37,7 @@ namespace rung::app {
 
 class NetworkChart;
 class NetworkDocument;
+class NetworkHistoryController;
 class NetworkView;
 class NetworkTrafficView;
 class NetworkWatchModel;
@@ -71,6 +72,7 @@ public:
     NetworkWatchModel *watchModel() const { return m_watch; }
     NetworkChart *chart() const { return m_chart; }
     NetworkTrafficView *traffic() const { return m_traffic; }
+    NetworkHistoryController *history() const { return m_history; }
     editor::FrontPanel *frontPanel() const { return m_panel; }
     // Adds "STATION/DEVICE" to the watch table; false with the reason in the status bar.
     bool watch(const QString &device);
@@ -131,6 +133,7 @@ private:
     NetworkChart *m_chart = nullptr;
     NetworkTrafficView *m_traffic = nullptr;
     editor::FrontPanel *m_panel = nullptr;
+    NetworkHistoryController *m_history = nullptr;
     QAction *m_chartWatched = nullptr;
     QLabel *m_status = nullptr;
     QLabel *m_selectorLabel = nullptr;
