@@ -21,6 +21,7 @@
 #include <QComboBox>
 #include <QListWidget>
 #include <QMenu>
+#include <QSignalSpy>
 #include <QTableView>
 
 namespace rung::test {

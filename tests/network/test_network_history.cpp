@@ -1,7 +1,7 @@
 // The history of a whole network (network_history.h): every station of every example network
 // shown at a past instant is what it was at that instant while the network ran, word for
 // word; commands between slices; the memory budget; the session recording it on its worker
-// (the NetworkSession* names run under ThreadSanitizer) and a station's past as a read-only
+// (NetworkSession.* runs under ThreadSanitizer) and a station's past as a read-only
 // MonitorSource.
 
 #include "network/network_history.h"
@@ -220,7 +220,7 @@ TEST(NetworkHistory, OverItsBudgetTheOldestGoAndTheRestIsShownExactly) {
     expectHistoryShownAsLive(history, kept);
 }
 
-TEST(NetworkSessionHistory, TheWorkerRecordsEveryStationAndAPastStationIsReadOnly) {
+TEST(NetworkSession, ItsWorkerRecordsTheHistoryOfEveryStationAndAPastStationIsReadOnly) {
     NetworkDescription d;
     QString error;
     ASSERT_TRUE(readNetworkFile(kHistoryEasyLink, &d, &error)) << error.toStdString();
