@@ -2395,6 +2395,41 @@ Ctrl+Z / Ctrl+Y: visszavonás / mégis, Ctrl+görgő: nagyítás, F4: a program 
     </message>
 </context>
 <context>
+    <name>rung::app::NetworkHistoryController</name>
+    <message>
+        <location filename="../app/gui/network_history_controller.cpp" line="+55"/>
+        <source>Return to &amp;Live</source>
+        <translation>Vissza az élő állapot&amp;hoz</translation>
+    </message>
+    <message>
+        <location line="+42"/>
+        <source>The network is stopped: run it, then pause it to see any instant of its past</source>
+        <translation>A hálózat le van állítva: futtassa, majd állítsa szünetre, hogy a múltja bármely pillanatát lássa</translation>
+    </message>
+    <message>
+        <location line="+2"/>
+        <source>Pause the network to see every station at the cursor&apos;s time</source>
+        <translation>Állítsa szünetre a hálózatot, hogy minden állomást a kurzor időpontjában lásson</translation>
+    </message>
+    <message>
+        <location line="+6"/>
+        <source>That instant is no longer recorded: the history starts at %1</source>
+        <extracomment>%1 the oldest virtual time still recorded, h:mm:ss.hh</extracomment>
+        <translation>Az a pillanat már nincs rögzítve: az előzmények %1-tól kezdődnek</translation>
+    </message>
+    <message>
+        <location line="+50"/>
+        <source>History: %1, every station (read-only)</source>
+        <extracomment>%1 the virtual time shown, h:mm:ss.hh; every station of the network shows that instant</extracomment>
+        <translation>Előzmények: %1, minden állomás (csak olvasható)</translation>
+    </message>
+    <message>
+        <location line="+11"/>
+        <source>Every station&apos;s ladder, inputs and outputs, front panel and watched values show this instant. Run, Single Scan, Stop or Return to Live (Ctrl+Shift+L) go back to the present</source>
+        <translation>Minden állomás létradiagramja, be- és kimenetei, előlapja és figyelt értékei ezt a pillanatot mutatják. A Futtatás, az Egy ciklus, a Megállás vagy a Vissza az élő állapothoz (Ctrl+Shift+L) visszavisz a jelenbe</translation>
+    </message>
+</context>
+<context>
     <name>rung::app::NetworkPortDialog</name>
     <message>
         <location filename="../app/gui/network_port_dialog.cpp" line="+71"/>
@@ -2749,7 +2784,7 @@ Ctrl+Z / Ctrl+Y: visszavonás / mégis, Ctrl+görgő: nagyítás, F4: a program 
 <context>
     <name>rung::app::NetworkTrafficView</name>
     <message>
-        <location filename="../app/gui/network_traffic_view.cpp" line="+157"/>
+        <location filename="../app/gui/network_traffic_view.cpp" line="+164"/>
         <source>&amp;Errors only</source>
         <translation>Csak &amp;hibák</translation>
     </message>
@@ -3099,7 +3134,7 @@ Menti mégis, ezek nélkül?</translation>
 <context>
     <name>rung::app::NetworkWatchModel</name>
     <message>
-        <location filename="../app/gui/network_watch_model.cpp" line="+45"/>
+        <location filename="../app/gui/network_watch_model.cpp" line="+49"/>
         <source>No network is open</source>
         <translation>Nincs megnyitott hálózat</translation>
     </message>
@@ -3115,7 +3150,7 @@ Menti mégis, ezek nélkül?</translation>
         <translation>%1: nincs „%2” nevű állomás (állomások: %3)</translation>
     </message>
     <message>
-        <location line="+70"/>
+        <location line="+71"/>
         <location line="+42"/>
         <source>ON</source>
         <translation>BE</translation>
@@ -3145,13 +3180,13 @@ Menti mégis, ezek nélkül?</translation>
 <context>
     <name>rung::app::NetworkWindow</name>
     <message>
-        <location filename="../app/gui/network_window.cpp" line="+210"/>
-        <location line="+217"/>
+        <location filename="../app/gui/network_window.cpp" line="+234"/>
+        <location line="+218"/>
         <source>Network</source>
         <translation>Hálózat</translation>
     </message>
     <message>
-        <location line="-214"/>
+        <location line="-215"/>
         <source>&amp;Network</source>
         <translation>&amp;Hálózat</translation>
     </message>
@@ -3258,7 +3293,7 @@ Menti mégis, ezek nélkül?</translation>
         <translation>&amp;Ki-bekapcsolás</translation>
     </message>
     <message>
-        <location line="+7"/>
+        <location line="+8"/>
         <source>Spee&amp;d</source>
         <translation>S&amp;ebesség</translation>
     </message>
@@ -3430,12 +3465,12 @@ Menti mégis, ezek nélkül?</translation>
         <translation>Üres hálózat: állomásokat a Hálózat nézet menüjéből adhat hozzá (jobb kattintás)</translation>
     </message>
     <message>
-        <location line="+38"/>
+        <location line="+39"/>
         <source>The network has no station yet: add one from the Network view&apos;s menu</source>
         <translation>A hálózatnak még nincs állomása: adjon hozzá egyet a Hálózat nézet menüjéből</translation>
     </message>
     <message>
-        <location line="+25"/>
+        <location line="+26"/>
         <source>A station&apos;s program is edited in the main window: Network &gt; Edit Station Program; Stop reads it again</source>
         <translation>Az állomás programja a főablakban szerkeszthető: Hálózat &gt; Állomás programjának szerkesztése; a Megállás újra beolvassa</translation>
     </message>
@@ -3467,7 +3502,7 @@ Menti mégis, ezek nélkül?</translation>
         <translation>PLC-hálózatok (*.rungnet)</translation>
     </message>
     <message>
-        <location line="+69"/>
+        <location line="+70"/>
         <source>No network</source>
         <translation>Nincs hálózat</translation>
     </message>
@@ -11088,7 +11123,7 @@ Kiértékelés: %4 µs (%5..%6)</translation>
 <context>
     <name>rung::network::NetworkSession</name>
     <message>
-        <location filename="../network/network_session.cpp" line="+301"/>
+        <location filename="../network/network_session.cpp" line="+306"/>
         <source>a fault made in the IDE</source>
         <translation>az IDE-ben okozott hiba</translation>
     </message>
@@ -11140,6 +11175,14 @@ Kiértékelés: %4 µs (%5..%6)</translation>
         <location line="+12"/>
         <source>wire %1: Parallel Link joins one master and one slave</source>
         <translation>%1 vezeték: a Parallel Link egy mastert és egy slave-et köt össze</translation>
+    </message>
+</context>
+<context>
+    <name>rung::network::StationPastSource</name>
+    <message>
+        <location filename="../network/station_past_source.cpp" line="+38"/>
+        <source>history is read-only: return to live to write, force or release</source>
+        <translation>az előzmények csak olvashatók: íráshoz, kényszerítéshez vagy feloldáshoz térjen vissza az élő állapothoz</translation>
     </message>
 </context>
 <context>

@@ -2402,6 +2402,41 @@ Ctrl+Z / Ctrl+Y: annulla / ripeti, Ctrl+rotellina: zoom, F4: verifica il program
     </message>
 </context>
 <context>
+    <name>rung::app::NetworkHistoryController</name>
+    <message>
+        <location filename="../app/gui/network_history_controller.cpp" line="+55"/>
+        <source>Return to &amp;Live</source>
+        <translation>Torna a&amp;l vivo</translation>
+    </message>
+    <message>
+        <location line="+42"/>
+        <source>The network is stopped: run it, then pause it to see any instant of its past</source>
+        <translation>La rete è fermata: eseguirla, poi metterla in pausa per vedere qualsiasi istante del suo passato</translation>
+    </message>
+    <message>
+        <location line="+2"/>
+        <source>Pause the network to see every station at the cursor&apos;s time</source>
+        <translation>Mettere in pausa la rete per vedere ogni stazione all&apos;istante del cursore</translation>
+    </message>
+    <message>
+        <location line="+6"/>
+        <source>That instant is no longer recorded: the history starts at %1</source>
+        <extracomment>%1 the oldest virtual time still recorded, h:mm:ss.hh</extracomment>
+        <translation>Quell&apos;istante non è più registrato: la cronologia inizia a %1</translation>
+    </message>
+    <message>
+        <location line="+50"/>
+        <source>History: %1, every station (read-only)</source>
+        <extracomment>%1 the virtual time shown, h:mm:ss.hh; every station of the network shows that instant</extracomment>
+        <translation>Cronologia: %1, tutte le stazioni (sola lettura)</translation>
+    </message>
+    <message>
+        <location line="+11"/>
+        <source>Every station&apos;s ladder, inputs and outputs, front panel and watched values show this instant. Run, Single Scan, Stop or Return to Live (Ctrl+Shift+L) go back to the present</source>
+        <translation>Il ladder, gli ingressi e le uscite, il pannello frontale e i valori osservati di ogni stazione mostrano questo istante. Esegui, Singola scansione, Fermati o Torna al vivo (Ctrl+Shift+L) riportano al presente</translation>
+    </message>
+</context>
+<context>
     <name>rung::app::NetworkPortDialog</name>
     <message>
         <location filename="../app/gui/network_port_dialog.cpp" line="+71"/>
@@ -2756,7 +2791,7 @@ Ctrl+Z / Ctrl+Y: annulla / ripeti, Ctrl+rotellina: zoom, F4: verifica il program
 <context>
     <name>rung::app::NetworkTrafficView</name>
     <message>
-        <location filename="../app/gui/network_traffic_view.cpp" line="+157"/>
+        <location filename="../app/gui/network_traffic_view.cpp" line="+164"/>
         <source>&amp;Errors only</source>
         <translation>Solo &amp;errori</translation>
     </message>
@@ -3107,7 +3142,7 @@ Salvare comunque, lasciando fuori questo dal file?</translation>
 <context>
     <name>rung::app::NetworkWatchModel</name>
     <message>
-        <location filename="../app/gui/network_watch_model.cpp" line="+45"/>
+        <location filename="../app/gui/network_watch_model.cpp" line="+49"/>
         <source>No network is open</source>
         <translation>Nessuna rete aperta</translation>
     </message>
@@ -3123,7 +3158,7 @@ Salvare comunque, lasciando fuori questo dal file?</translation>
         <translation>%1: nessuna stazione «%2» (stazioni: %3)</translation>
     </message>
     <message>
-        <location line="+70"/>
+        <location line="+71"/>
         <location line="+42"/>
         <source>ON</source>
         <translation>ON</translation>
@@ -3153,13 +3188,13 @@ Salvare comunque, lasciando fuori questo dal file?</translation>
 <context>
     <name>rung::app::NetworkWindow</name>
     <message>
-        <location filename="../app/gui/network_window.cpp" line="+210"/>
-        <location line="+217"/>
+        <location filename="../app/gui/network_window.cpp" line="+234"/>
+        <location line="+218"/>
         <source>Network</source>
         <translation>Rete</translation>
     </message>
     <message>
-        <location line="-214"/>
+        <location line="-215"/>
         <source>&amp;Network</source>
         <translation>&amp;Rete</translation>
     </message>
@@ -3266,7 +3301,7 @@ Salvare comunque, lasciando fuori questo dal file?</translation>
         <translation>&amp;Spegni e riaccendi</translation>
     </message>
     <message>
-        <location line="+7"/>
+        <location line="+8"/>
         <source>Spee&amp;d</source>
         <translation>&amp;Velocità</translation>
     </message>
@@ -3438,12 +3473,12 @@ Salvare comunque, lasciando fuori questo dal file?</translation>
         <translation>Una rete vuota: aggiungere stazioni dal menu della vista Rete (clic destro)</translation>
     </message>
     <message>
-        <location line="+38"/>
+        <location line="+39"/>
         <source>The network has no station yet: add one from the Network view&apos;s menu</source>
         <translation>La rete non ha ancora stazioni: aggiungerne una dal menu della vista Rete</translation>
     </message>
     <message>
-        <location line="+25"/>
+        <location line="+26"/>
         <source>A station&apos;s program is edited in the main window: Network &gt; Edit Station Program; Stop reads it again</source>
         <translation>Il programma di una stazione si modifica nella finestra principale: Rete &gt; Modifica il programma della stazione; Fermati lo rilegge</translation>
     </message>
@@ -3475,7 +3510,7 @@ Salvare comunque, lasciando fuori questo dal file?</translation>
         <translation>Reti di PLC (*.rungnet)</translation>
     </message>
     <message>
-        <location line="+69"/>
+        <location line="+70"/>
         <source>No network</source>
         <translation>Nessuna rete</translation>
     </message>
@@ -11111,7 +11146,7 @@ Valutazione: %4 µs (%5..%6)</translation>
 <context>
     <name>rung::network::NetworkSession</name>
     <message>
-        <location filename="../network/network_session.cpp" line="+301"/>
+        <location filename="../network/network_session.cpp" line="+306"/>
         <source>a fault made in the IDE</source>
         <translation>un guasto creato nell&apos;IDE</translation>
     </message>
@@ -11163,6 +11198,14 @@ Valutazione: %4 µs (%5..%6)</translation>
         <location line="+12"/>
         <source>wire %1: Parallel Link joins one master and one slave</source>
         <translation>cavo %1: Parallel Link collega un master e uno slave</translation>
+    </message>
+</context>
+<context>
+    <name>rung::network::StationPastSource</name>
+    <message>
+        <location filename="../network/station_past_source.cpp" line="+38"/>
+        <source>history is read-only: return to live to write, force or release</source>
+        <translation>la cronologia è di sola lettura: tornare al vivo per scrivere, forzare o rilasciare</translation>
     </message>
 </context>
 <context>

@@ -4,6 +4,7 @@
 // marked as history and read-only; a frame chosen in the Traffic view does the same; Run leaves
 // the past; while running the cursor only measures.
 
+#include "app/gui/language.h"
 #include "app/gui/network_chart.h"
 #include "app/gui/network_history_controller.h"
 #include "app/gui/network_traffic_model.h"
@@ -19,7 +20,11 @@
 #include "model/target/address.h"
 #include "network/network_session.h"
 
+#include <QDockWidget>
+#include <QScrollBar>
 #include <QLabel>
+#include <QStatusBar>
+#include <QTabWidget>
 #include <QTableView>
 
 namespace rung::test {
@@ -70,15 +75,19 @@ struct NetworkPastFixture {
         return std::get<model::Address>(
             model::parseAddress(s->target(), QString::fromLatin1(device)));
     }
-    // Sets the master's VR1 and runs the network for `ms`, then waits until it is paused.
-    void runWithVr1(int vr1, qint64 ms) {
+    // Writes a word of a station and waits until it is written.
+    void write(network::StationSource *station, const char *device, int value) {
         bool done = false;
-        const auto id = master->writeWord(at(master, "VR1"), vr1);
+        const auto id = station->writeWord(at(station, device), value);
         const auto c = QObject::connect(
-            master, &model::MonitorSource::commandFinished, net,
+            station, &model::MonitorSource::commandFinished, net,
             [&](model::MonitorSource::CommandId got, bool, const QString &) { done = got == id; });
         ASSERT_TRUE(eventually([&] { return done; }));
         QObject::disconnect(c);
+    }
+    // Sets the master's VR1 and runs the network for `ms`, then waits until it is paused.
+    void runWithVr1(int vr1, qint64 ms) {
+        write(master, "VR1", vr1);
         net->session()->runFor(ms);
         ASSERT_TRUE(eventually([&] { return net->session()->runState() == RunState::Paused; }));
     }
@@ -201,6 +210,60 @@ TEST(NetworkHistoryWindow, AFrameChosenInTheTrafficViewShowsItsInstantAndReturnT
     ASSERT_TRUE(history->historyShown());
     toolbarAction(*net, QStringLiteral("Stop"))->trigger();
     EXPECT_FALSE(history->historyShown());
+}
+
+// At 1366 x 768, in English, Hungarian and Italian, the history's mark stands whole in the
+// status bar beside the run state. RUNG_SCREENSHOT_DIR set: the window showing a past instant
+// is saved there (docs/screenshots/network-history-LANG.png; run under Xvfb for the real look).
+TEST(NetworkHistoryWindow, TheHistoryMarkStandsWholeInEveryLanguage) {
+    const QString shots = qEnvironmentVariable("RUNG_SCREENSHOT_DIR");
+    for (const char *language : {"en", "hu", "it"}) {
+        SCOPED_TRACE(language);
+        ASSERT_TRUE(app::setLanguage(QString::fromLatin1(language), false));
+        QCoreApplication::sendPostedEvents(nullptr, QEvent::LanguageChange);
+        NetworkPastFixture f;
+        f.open();
+        app::NetworkWindow *net = f.net;
+        for (const char *device : {"master/D0", "slave1/D0", "slave2/D0", "master/D20"}) {
+            ASSERT_TRUE(net->watch(QString::fromLatin1(device)));
+            ASSERT_TRUE(net->chart()->addDevice(QString::fromLatin1(device)));
+        }
+        net->resize(1366, 768);
+        net->show();
+        // Slave 2's VR1 goes to the master's display (D20, shown by D9080 / D9081).
+        network::StationSource *slave2 = net->session()->station(QStringLiteral("slave2"));
+        f.write(slave2, "VR1", 120);
+        f.runWithVr1(50, 1000);
+        f.write(slave2, "VR1", 240);
+        f.runWithVr1(200, 1000);
+        ASSERT_TRUE(eventually(
+            [&] { return historyWatched(net->watchModel(), 1) == QStringLiteral("200"); }));
+        // The master's ladder and its front panel in view.
+        if (auto *tabs = net->findChild<QTabWidget *>(QStringLiteral("networkTabs")))
+            tabs->setCurrentIndex(1);
+        if (auto *panel = net->findChild<QDockWidget *>(QStringLiteral("networkFrontPanelDock")))
+            panel->raise();
+        f.moveCursor(900);
+        ASSERT_TRUE(net->history()->historyShown());
+        ASSERT_TRUE(eventually(
+            [&] { return historyWatched(net->watchModel(), 1) == QStringLiteral("50"); }));
+        EXPECT_EQ(historyWatched(net->watchModel(), 3), QStringLiteral("120"));
+        QCoreApplication::processEvents();
+        auto *label = net->findChild<QLabel *>(QStringLiteral("networkHistoryStatus"));
+        ASSERT_NE(label, nullptr);
+        EXPECT_TRUE(label->isVisible());
+        EXPECT_GE(label->width(), label->sizeHint().width()) << label->text().toStdString();
+        EXPECT_TRUE(net->statusBar()->rect().contains(label->geometry()));
+        // The master's boxes in view: VRRD's D0 as it was then.
+        editor::LadderView *ladder = net->ladderView(QStringLiteral("master"));
+        ladder->horizontalScrollBar()->setValue(ladder->horizontalScrollBar()->maximum());
+        QCoreApplication::processEvents();
+        if (!shots.isEmpty())
+            net->grab().save(
+                QStringLiteral("%1/network-history-%2.png").arg(shots, QLatin1String(language)));
+    }
+    app::setLanguage(QStringLiteral("en"), false);
+    QCoreApplication::sendPostedEvents(nullptr, QEvent::LanguageChange);
 }
 
 } // namespace
