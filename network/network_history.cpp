@@ -80,14 +80,19 @@ void NetworkHistory::record(const Network &network, bool commands) {
         return; // not the network start() was given
     Instant instant;
     instant.us = network.nowUs();
-    instant.statistics.reserve(stations.size());
     bool key = w.sinceKey >= m_limits.keyEvery || w.changeBytes >= w.keyBytes;
     std::vector<std::uint32_t> &changes = w.changes;
     changes.clear();
     for (std::size_t i = 0; i < stations.size(); ++i) {
         const simulator::Engine &engine = stations[i]->engine();
         Worker::Station &prev = w.stations[i];
-        instant.statistics.push_back(engine.statistics());
+        const model::ScanStatistics &statistics = engine.statistics();
+        const auto scans = static_cast<quint64>(statistics.scans);
+        const auto ms = static_cast<quint64>(statistics.timeMs);
+        changes.push_back(static_cast<std::uint32_t>(scans));
+        changes.push_back(static_cast<std::uint32_t>(scans >> 32));
+        changes.push_back(static_cast<std::uint32_t>(ms));
+        changes.push_back(static_cast<std::uint32_t>(ms >> 32));
         // Forced bits change only by a command, between two slices.
         if (commands) {
             const model::Snapshot s = engine.snapshot();
@@ -145,6 +150,8 @@ void NetworkHistory::record(const Network &network, bool commands) {
     if (key) {
         std::size_t keyBytes = 0;
         instant.keys.reserve(stations.size());
+        for (const auto &station : stations)
+            instant.statistics.push_back(station->engine().statistics());
         for (const Worker::Station &s : w.stations) {
             auto k = std::make_shared<Key>();
             k->words = s.words;
@@ -225,14 +232,21 @@ model::Snapshot NetworkHistory::rebuild(std::size_t station, std::size_t instant
     s.words = key.words;
     s.forceMask = key.forceMask;
     s.forceValue = key.forceValue;
+    s.statistics = m_instants[k].statistics[station];
     std::vector<std::uint8_t> flow = key.flow;
     for (std::size_t j = k + 1; j <= instant; ++j) {
         const std::vector<std::uint32_t> &c = m_instants[j].changes;
         std::size_t p = 0;
         for (std::size_t t = 0; t < station; ++t) {
+            p += 4;
             p += 1 + 2 * std::size_t(c[p]);
             p += 1 + std::size_t(c[p]);
         }
+        if (j == instant) {
+            s.statistics.scans = c[p] | quint64(c[p + 1]) << 32;
+            s.statistics.timeMs = static_cast<qint64>(c[p + 2] | quint64(c[p + 3]) << 32);
+        }
+        p += 4;
         const std::size_t words = c[p++];
         for (std::size_t n = 0; n < words; ++n, p += 2)
             s.words[c[p]] = static_cast<std::int32_t>(c[p + 1]);
@@ -241,7 +255,6 @@ model::Snapshot NetworkHistory::rebuild(std::size_t station, std::size_t instant
             flow[c[p]] = flow[c[p]] ? 0 : 1;
     }
     s.powerFlow.assign(flow.begin(), flow.end());
-    s.statistics = m_instants[instant].statistics[station];
     return s;
 }
 

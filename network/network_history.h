@@ -19,6 +19,10 @@
 // the changes since the last one have cost as much as a key, and whenever a station's forced
 // bits or its power-flow recording changed, so a rebuild applies at most keyEvery changes.
 //
+// Cost: finding the changed words reads every station's whole image each slice, which at full
+// speed costs more than the scans themselves (BM_NetworkHistoryRatio, docs/performance.md: the
+// engine does not say which words a scan wrote).
+//
 // Threads: the session's worker records (start, record); any thread reads (window, at,
 // stationAt) under the history's lock, which the worker takes only to append an instant.
 // The comparison with the slice before runs outside the lock, on the worker's own copy.
@@ -78,11 +82,13 @@ private:
     struct Key; // a full copy of one station
     struct Instant {
         qint64 us = 0;
-        std::vector<model::ScanStatistics> statistics; // per station
         // Per station, when this instant is a key; else empty.
+        std::vector<model::ScanStatistics> statistics;
         std::vector<std::shared_ptr<const Key>> keys;
-        // Per station, when not a key: [word changes n, (index, value) x n, flow changes m,
-        // index x m] (a flow change toggles that instruction's result).
+        // Per station, when not a key: [scans (2 words, low first), virtual ms (2 words),
+        // word changes n, (index, value) x n, flow changes m, index x m] (a flow change
+        // toggles that instruction's result). The other statistics (period, evaluation times)
+        // are the key's.
         std::vector<std::uint32_t> changes;
         std::size_t bytes() const;
     };

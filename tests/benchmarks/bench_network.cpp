@@ -216,8 +216,11 @@ void BM_NetworkHistoryRatio(benchmark::State &state) {
         state.SkipWithError("the history does not show the network as it is");
         return;
     }
-    if (bench::judgesTime() && ratio > (busy ? 1.5 : 1.25))
-        state.SkipWithError("recording the history costs more than its limit");
+    if (bench::judgesTime() && ratio > (busy ? 1.5 : 1.25)) {
+        const std::string why =
+            "recording the history costs more than its limit: " + std::to_string(ratio);
+        state.SkipWithError(why.c_str());
+    }
 }
 
 // A minute of virtual time of the eight stations recorded (6,000 slices of 10 ms): the memory
