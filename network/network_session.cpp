@@ -100,6 +100,7 @@ NetworkSession::NetworkSession(NetworkDescription description, ProgramLoader loa
         m_wires.push_back(info);
     }
     attachTraffic(*m_initial);
+    m_networkHistory->start(*m_initial);
     publish(*m_initial, false);
     m_worker = std::thread([this] { workerLoop(); });
 }
@@ -515,6 +516,7 @@ void NetworkSession::workerLoop() {
             prepareNetwork(*network);
             if (m_bridges) // the same lines on the new network's wires
                 postBridgeStatus(m_bridges->attach(*network));
+            m_networkHistory->start(*network);
             for (StationSource *s : m_sources) {
                 s->m_errorsReported = 0;
                 s->m_scansRecorded = 0;
@@ -546,6 +548,7 @@ void NetworkSession::workerLoop() {
                 applied = true;
             }
         if (applied) {
+            m_networkHistory->record(*network, true);
             publish(*network, true);
             for (StationSource *s : m_sources)
                 s->m_inbox.complete();
@@ -564,6 +567,10 @@ void NetworkSession::workerLoop() {
         if (m_bridges && m_bridges->poll(*network))
             postBridgeStatus(m_bridges->statuses());
         afterSlice(*network);
+        // A station held inside its scan has a half-scanned image: the past is recorded when
+        // the slice is whole.
+        if (reached)
+            m_networkHistory->record(*network, false);
         unpublished = true;
         const auto now = Clock::now();
         if (!reached || !m_fired.empty() || stepsDone || answerDue ||

@@ -14,6 +14,7 @@
 
 #include "network/network.h"
 #include "network/network_session_bridges.h"
+#include "network/network_history.h"
 
 #include "model/image/history.h"
 #include "model/image/monitor_source.h"
@@ -170,6 +171,9 @@ public:
     // each is reached or why it did not open (bridgesChanged). Owner thread.
     void startBridges(std::shared_ptr<BridgeLines> lines);
     const std::vector<BridgeStatus> &bridgeStatus() const { return m_bridgeStatus; }
+    // Every station's past (network_history.h): recorded after every slice of virtual time
+    // and every command, started again at Stop. Any thread reads it.
+    std::shared_ptr<const NetworkHistory> history() const { return m_networkHistory; }
 
 signals:
     void runStateChanged(rung::model::MonitorSource::RunState state);
@@ -277,6 +281,8 @@ private:
     std::unique_ptr<SessionBridges> m_bridges;       // worker thread
     std::vector<BridgeStatus> m_bridgeStatus;        // owner thread
     void postBridgeStatus(const std::vector<BridgeStatus> &status);
+    // Worker records; readers under its own lock. Before m_worker, which uses it.
+    std::shared_ptr<NetworkHistory> m_networkHistory = std::make_shared<NetworkHistory>();
 
     std::thread m_worker;
 };

@@ -12559,4 +12559,41 @@ written STATION/CONDITION, e.g. %1/%2 &gt; 100 or %1/%3 rises (empty: never):</s
         <extracomment>%1 the condition ("s2/D10 &gt; 100"), %2 scan number, %3 virtual time</extracomment>
         <translation>%1 igazzá vált a(z) %2. ciklus után (%3): a hálózat ott megállt</translation>
     </message>
+</context><context><name>rung::app::NetworkHistoryController</name><message>
+        <location filename="../app/gui/network_history_controller.cpp" line="+55" />
+        <source>Return to &amp;Live</source>
+        <translation>Vissza az élő állapot&amp;hoz</translation>
+    </message>
+    <message>
+        <location line="+42" />
+        <source>The network is stopped: run it, then pause it to see any instant of its past</source>
+        <translation>A hálózat le van állítva: futtassa, majd állítsa szünetre, hogy a múltja bármely pillanatát lássa</translation>
+    </message>
+    <message>
+        <location line="+2" />
+        <source>Pause the network to see every station at the cursor's time</source>
+        <translation>Állítsa szünetre a hálózatot, hogy minden állomást a kurzor időpontjában lásson</translation>
+    </message>
+    <message>
+        <location line="+6" />
+        <source>That instant is no longer recorded: the history starts at %1</source>
+        <extracomment>%1 the oldest virtual time still recorded, h:mm:ss.hh</extracomment>
+        <translation>Az a pillanat már nincs rögzítve: az előzmények %1-tól kezdődnek</translation>
+    </message>
+    <message>
+        <location line="+50" />
+        <source>History: %1, every station (read-only)</source>
+        <extracomment>%1 the virtual time shown, h:mm:ss.hh; every station of the network shows that instant</extracomment>
+        <translation>Előzmények: %1, minden állomás (csak olvasható)</translation>
+    </message>
+    <message>
+        <location line="+11" />
+        <source>Every station's ladder, inputs and outputs, front panel and watched values show this instant. Run, Single Scan, Stop or Return to Live (Ctrl+Shift+L) go back to the present</source>
+        <translation>Minden állomás létradiagramja, be- és kimenetei, előlapja és figyelt értékei ezt a pillanatot mutatják. A Futtatás, az Egy ciklus, a Megállás vagy a Vissza az élő állapothoz (Ctrl+Shift+L) visszavisz a jelenbe</translation>
+    </message>
+</context><context><name>rung::network::StationPastSource</name><message>
+        <location filename="../network/station_past_source.cpp" line="+38" />
+        <source>history is read-only: return to live to write, force or release</source>
+        <translation>az előzmények csak olvashatók: íráshoz, kényszerítéshez vagy feloldáshoz térjen vissza az élő állapothoz</translation>
+    </message>
 </context></TS>

@@ -12584,4 +12584,41 @@ scritta STAZIONE/CONDIZIONE, per es. %1/%2 &gt; 100 o %1/%3 rises (vuoto: mai):<
         <extracomment>%1 the condition ("s2/D10 &gt; 100"), %2 scan number, %3 virtual time</extracomment>
         <translation>%1 è diventata vera dopo la scansione %2 (%3): la rete si è fermata lì</translation>
     </message>
+</context><context><name>rung::app::NetworkHistoryController</name><message>
+        <location filename="../app/gui/network_history_controller.cpp" line="+55" />
+        <source>Return to &amp;Live</source>
+        <translation>Torna a&amp;l vivo</translation>
+    </message>
+    <message>
+        <location line="+42" />
+        <source>The network is stopped: run it, then pause it to see any instant of its past</source>
+        <translation>La rete è fermata: eseguirla, poi metterla in pausa per vedere qualsiasi istante del suo passato</translation>
+    </message>
+    <message>
+        <location line="+2" />
+        <source>Pause the network to see every station at the cursor's time</source>
+        <translation>Mettere in pausa la rete per vedere ogni stazione all'istante del cursore</translation>
+    </message>
+    <message>
+        <location line="+6" />
+        <source>That instant is no longer recorded: the history starts at %1</source>
+        <extracomment>%1 the oldest virtual time still recorded, h:mm:ss.hh</extracomment>
+        <translation>Quell'istante non è più registrato: la cronologia inizia a %1</translation>
+    </message>
+    <message>
+        <location line="+50" />
+        <source>History: %1, every station (read-only)</source>
+        <extracomment>%1 the virtual time shown, h:mm:ss.hh; every station of the network shows that instant</extracomment>
+        <translation>Cronologia: %1, tutte le stazioni (sola lettura)</translation>
+    </message>
+    <message>
+        <location line="+11" />
+        <source>Every station's ladder, inputs and outputs, front panel and watched values show this instant. Run, Single Scan, Stop or Return to Live (Ctrl+Shift+L) go back to the present</source>
+        <translation>Il ladder, gli ingressi e le uscite, il pannello frontale e i valori osservati di ogni stazione mostrano questo istante. Esegui, Singola scansione, Fermati o Torna al vivo (Ctrl+Shift+L) riportano al presente</translation>
+    </message>
+</context><context><name>rung::network::StationPastSource</name><message>
+        <location filename="../network/station_past_source.cpp" line="+38" />
+        <source>history is read-only: return to live to write, force or release</source>
+        <translation>la cronologia è di sola lettura: tornare al vivo per scrivere, forzare o rilasciare</translation>
+    </message>
 </context></TS>

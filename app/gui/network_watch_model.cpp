@@ -29,6 +29,10 @@ void NetworkWatchModel::setSession(network::NetworkSession *session) {
             disconnect(s, nullptr, this, nullptr);
     m_session = session;
     m_rows.clear();
+    for (const auto &shown : m_shown)
+        if (shown.second)
+            disconnect(shown.second, nullptr, this, nullptr);
+    m_shown.clear();
     if (session)
         for (network::StationSource *s : session->stations())
             connect(s, &model::MonitorSource::snapshotChanged, this, [this] {
@@ -121,7 +125,8 @@ QVariant NetworkWatchModel::data(const QModelIndex &index, int role) const {
     case Station:
         return r.station && r.station->model() ? r.station->model()->name : QString();
     case Value: {
-        const auto snapshot = r.station ? r.station->snapshot() : nullptr;
+        const model::MonitorSource *from = source(r);
+        const auto snapshot = from ? from->snapshot() : nullptr;
         if (!snapshot)
             return role == Qt::EditRole ? QVariant(0) : QVariant(QStringLiteral("-"));
         if (r.bit) {
@@ -171,15 +176,42 @@ bool NetworkWatchModel::setData(const QModelIndex &index, const QVariant &value,
         const bool on = text == QLatin1String("1") ||
                         text.compare(tr("ON"), Qt::CaseInsensitive) == 0 ||
                         text.compare(QLatin1String("on"), Qt::CaseInsensitive) == 0;
-        r.station->writeBit(r.address, on);
+        source(r)->writeBit(r.address, on);
         return true;
     }
     bool ok = false;
     const qint64 number = text.toLongLong(&ok);
     if (!ok)
         return false;
-    r.station->writeWord(r.address, number);
+    source(r)->writeWord(r.address, number);
     return true;
+}
+
+void NetworkWatchModel::setShownSource(network::StationSource *station,
+                                       model::MonitorSource *shown) {
+    for (auto it = m_shown.begin(); it != m_shown.end();)
+        if (!it->first || it->first == station) {
+            if (it->second && it->second != shown)
+                disconnect(it->second, nullptr, this, nullptr);
+            it = m_shown.erase(it);
+        } else {
+            ++it;
+        }
+    if (shown && shown != station) {
+        m_shown.emplace_back(station, shown);
+        connect(shown, &model::MonitorSource::snapshotChanged, this, [this] {
+            if (!m_beat.isActive())
+                m_beat.start();
+        });
+    }
+    refreshValues();
+}
+
+model::MonitorSource *NetworkWatchModel::source(const Row &row) const {
+    for (const auto &[station, shown] : m_shown)
+        if (station == row.station && shown)
+            return shown;
+    return row.station;
 }
 
 void NetworkWatchModel::refreshValues() {

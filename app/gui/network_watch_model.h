@@ -41,6 +41,10 @@ public:
     bool addDevice(const QString &text, QString *error);
     void removeRow(int row);
     QStringList devices() const; // as written, "s5/D10"
+    // The rows of `station` read `shown` in place of the station (its past while the network
+    // window shows the history: network_history_controller.h); null: the station itself.
+    // A value typed then goes to `shown`, which refuses it.
+    void setShownSource(network::StationSource *station, model::MonitorSource *shown);
 
     int rowCount(const QModelIndex &parent = {}) const override;
     int columnCount(const QModelIndex &parent = {}) const override;
@@ -58,9 +62,12 @@ private:
         bool bit = false;
     };
     void refreshValues();
+    model::MonitorSource *source(const Row &row) const;
 
     QPointer<network::NetworkSession> m_session;
     std::vector<Row> m_rows;
+    std::vector<std::pair<QPointer<network::StationSource>, QPointer<model::MonitorSource>>>
+        m_shown;
     QTimer m_beat; // coalesces the stations' snapshots into one repaint a beat
 };
 

@@ -6,6 +6,7 @@
 #include "app/gui/network_chart.h"
 #include "app/gui/network_debug_controller.h"
 #include "app/gui/network_document.h"
+#include "app/gui/network_history_controller.h"
 #include "app/gui/network_traffic_view.h"
 #include "app/gui/network_view.h"
 #include "app/gui/network_watch_model.h"
@@ -216,6 +217,22 @@ void NetworkWindow::buildWindow() {
             [this](const QString &text) { statusBar()->showMessage(text, 10000); });
     addDockWidget(Qt::RightDockWidgetArea, m_bridges->dock());
     m_bridges->dock()->hide(); // until the network has a bridge
+    // History across the network: cursor A, or a frame chosen, shows every station then.
+    m_history = new NetworkHistoryController(
+        m_chart, m_traffic, m_watch,
+        [this](network::StationSource *station, model::MonitorSource *source) {
+            for (StationView &v : m_views)
+                if (v.source == station) {
+                    v.ladder->setMonitorSource(source);
+                    v.io->setMonitorSource(source);
+                }
+            if (station->stationName() == currentStation())
+                m_panel->setMonitorSource(source);
+        },
+        this);
+    connect(m_history, &NetworkHistoryController::message, this,
+            [this](const QString &text) { statusBar()->showMessage(text, 10000); });
+    statusBar()->addPermanentWidget(m_history->label());
 
     m_status = new QLabel(this);
     m_status->setObjectName(QStringLiteral("networkStatus"));
@@ -319,6 +336,7 @@ void NetworkWindow::buildMenus() {
         if (m_session)
             m_session->powerCycle();
     });
+    m_simulationMenu->addAction(m_history->returnAction());
     m_speedMenu = m_simulationMenu->addMenu(tr("Spee&d"));
     auto *speeds = new QActionGroup(m_speedMenu);
     for (const double factor : {0.1, 0.5, 1.0, 2.0, 5.0, 10.0, 100.0, 0.0}) {
@@ -555,6 +573,7 @@ bool NetworkWindow::newNetwork(QString *) {
 }
 
 void NetworkWindow::dropSession() {
+    m_history->setSession(nullptr); // the views back to live while they exist
     m_panel->setMonitorSource(nullptr);
     m_debug->setSession(nullptr, {});
     for (StationView &v : m_views) {
@@ -602,6 +621,7 @@ bool NetworkWindow::buildSession(QString *error) {
     m_session = std::move(session);
     m_watch->setSession(m_session.get());
     m_chart->setSession(m_session.get());
+    m_history->setSession(m_session.get());
     m_selector->blockSignals(true);
     for (network::StationSource *source : m_session->stations()) {
         StationView v;
@@ -725,7 +745,7 @@ bool NetworkWindow::selectStation(const QString &name) {
             network::StationSource *source = m_views[i].source;
             m_session->setPowerFlowStation(name);
             m_panel->setPlc(&source->target(), source->model() ? source->model()->name : QString());
-            m_panel->setMonitorSource(source);
+            m_panel->setMonitorSource(m_history->shownSource(source));
             m_debug->selectStation(name);
             const QSignalBlocker selector(m_selector), list(m_stationList);
             m_selector->setCurrentIndex(int(i));

@@ -39,6 +39,7 @@ class NetworkBridgeController;
 class NetworkChart;
 class NetworkDebugController;
 class NetworkDocument;
+class NetworkHistoryController;
 class NetworkView;
 class NetworkTrafficView;
 class NetworkWatchModel;
@@ -73,6 +74,7 @@ public:
     NetworkWatchModel *watchModel() const { return m_watch; }
     NetworkChart *chart() const { return m_chart; }
     NetworkTrafficView *traffic() const { return m_traffic; }
+    NetworkHistoryController *history() const { return m_history; }
     editor::FrontPanel *frontPanel() const { return m_panel; }
     NetworkBridgeController *bridges() const { return m_bridges; }
     // The selected station's list, the Scan Debugger, breakpoints and stepping.
@@ -136,6 +138,7 @@ private:
     NetworkChart *m_chart = nullptr;
     NetworkTrafficView *m_traffic = nullptr;
     editor::FrontPanel *m_panel = nullptr;
+    NetworkHistoryController *m_history = nullptr;
     QAction *m_chartWatched = nullptr;
     QLabel *m_status = nullptr;
     QLabel *m_selectorLabel = nullptr;

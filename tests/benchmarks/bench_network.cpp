@@ -8,6 +8,7 @@
 #include "smoke.h"
 
 #include "network/network.h"
+#include "network/network_history.h"
 #include "network/station.h"
 
 #include "model/listing/il.h"
@@ -23,45 +24,47 @@ namespace {
 using namespace rung;
 
 // About 1,000 steps: 59 rungs of 17 (contacts, a coil, a move and an addition), then END.
-QString thousandSteps(int station) {
+// busy: each addition counts its own register up, so 59 registers change every scan.
+QString thousandSteps(int station, bool busy = false) {
     QString p = QStringLiteral("; target: vigor\n");
     for (int r = 0; r < 59; ++r)
         p += QStringLiteral("LD X%1\nAND M%2\nOR M%3\nOUT Y%4\nLD M9000\nMOV D%5 D%6\n"
-                            "ADD D%6 K1 D%7\n")
+                            "ADD D%8 K1 D%7\n")
                  .arg(QString::number(r % 8, 8))
                  .arg(r + 100)
                  .arg(r + 200)
                  .arg(QString::number(r % 16, 8))
                  .arg(station * 10 + r % 4)
                  .arg(100 + r)
-                 .arg(300 + r);
+                 .arg(300 + r)
+                 .arg(busy ? 300 + r : 100 + r);
     return p + QStringLiteral("END\n");
 }
 
-network::ProgramLoader loader() {
-    return
-        [](const network::StationDescription &s, network::LoadedStation *loaded, QString *error) {
-            const model::Target *target = model::Target::byId(QStringLiteral("vigor"));
-            const model::ModelVariant *variant = target->model(QStringLiteral("VB"));
-            const model::ParseResult parsed =
-                model::parseInstructionList(*target, thousandSteps(s.name.mid(1).toInt()), variant);
-            model::CheckOptions checks;
-            checks.model = variant;
-            const simulator::CompileResult compiled =
-                parsed.ok() ? simulator::prepareProgram(parsed.list, checks)
-                            : simulator::CompileResult{};
-            if (!compiled.ok()) {
-                *error = QStringLiteral("the benchmark's program does not compile");
-                return false;
-            }
-            loaded->program = compiled.program;
-            loaded->target = target;
-            loaded->model = variant;
-            return true;
-        };
+network::ProgramLoader loader(bool busy = false) {
+    return [busy](const network::StationDescription &s, network::LoadedStation *loaded,
+                  QString *error) {
+        const model::Target *target = model::Target::byId(QStringLiteral("vigor"));
+        const model::ModelVariant *variant = target->model(QStringLiteral("VB"));
+        const model::ParseResult parsed = model::parseInstructionList(
+            *target, thousandSteps(s.name.mid(1).toInt(), busy), variant);
+        model::CheckOptions checks;
+        checks.model = variant;
+        const simulator::CompileResult compiled =
+            parsed.ok() ? simulator::prepareProgram(parsed.list, checks)
+                        : simulator::CompileResult{};
+        if (!compiled.ok()) {
+            *error = QStringLiteral("the benchmark's program does not compile");
+            return false;
+        }
+        loaded->program = compiled.program;
+        loaded->target = target;
+        loaded->model = variant;
+        return true;
+    };
 }
 
-std::unique_ptr<network::Network> eightInCpuLink(QString *error) {
+std::unique_ptr<network::Network> eightInCpuLink(QString *error, bool busy = false) {
     QString stations;
     QStringList ends;
     for (int k = 0; k < 8; ++k) {
@@ -78,7 +81,7 @@ std::unique_ptr<network::Network> eightInCpuLink(QString *error) {
                                    .toUtf8(),
                                QStringLiteral("bench.rungnet"), &d, error))
         return nullptr;
-    return network::Network::build(d, loader(), error);
+    return network::Network::build(d, loader(busy), error);
 }
 
 void BM_NetworkCpuLink8(benchmark::State &state) {
@@ -161,6 +164,106 @@ void BM_NetworkCostRatio(benchmark::State &state) {
         state.SkipWithError("the network costs more than 1.10x the plain scans");
 }
 
+// History across the network (network/network_history.h): the same eight stations run in two
+// networks side by side, one plain, one recording every station after every 10 ms slice;
+// alternating blocks of 1,000 slices; ratio = recording / plain. Argument 1: the busy
+// programs (59 registers of each station change every scan, the worst the recording sees).
+void BM_NetworkHistoryRatio(benchmark::State &state) {
+    const bool busy = state.range(0) != 0;
+    QString error;
+    auto plain = eightInCpuLink(&error, busy);
+    auto recorded = eightInCpuLink(&error, busy);
+    if (!plain || !recorded) {
+        state.SkipWithError(error.toStdString().c_str());
+        return;
+    }
+    network::NetworkHistory history;
+    history.start(*recorded);
+    using Clock = std::chrono::steady_clock;
+    const int block = bench::sized(1000, 2);
+    qint64 virtualUs = 100'000;
+    plain->runUntil(virtualUs);
+    recorded->runUntil(virtualUs);
+    history.record(*recorded, false);
+    Clock::duration withHistory{}, without{};
+    for (auto _ : state) {
+        qint64 us = virtualUs;
+        const auto a = Clock::now();
+        for (int k = 0; k < block; ++k) {
+            us += 10'000;
+            plain->runUntil(us);
+        }
+        const auto b = Clock::now();
+        us = virtualUs;
+        for (int k = 0; k < block; ++k) {
+            us += 10'000;
+            recorded->runUntil(us);
+            history.record(*recorded, false);
+        }
+        const auto c = Clock::now();
+        virtualUs = us;
+        without += b - a;
+        withHistory += c - b;
+    }
+    const double ratio = std::chrono::duration<double>(withHistory).count() /
+                         std::max(1e-12, std::chrono::duration<double>(without).count());
+    state.counters["ratio"] = ratio;
+    // Recorded exactly: the newest instant is the network as it is.
+    const auto now = history.stationAt(3, recorded->nowUs());
+    if (!now ||
+        now->words != std::vector<std::int32_t>(recorded->stations()[3]->engine().words().begin(),
+                                                recorded->stations()[3]->engine().words().end())) {
+        state.SkipWithError("the history does not show the network as it is");
+        return;
+    }
+    if (bench::judgesTime() && ratio > (busy ? 1.5 : 1.25)) {
+        const std::string why =
+            "recording the history costs more than its limit: " + std::to_string(ratio);
+        state.SkipWithError(why.c_str());
+    }
+}
+
+// A minute of virtual time of the eight stations recorded (6,000 slices of 10 ms): the memory
+// it takes (MB_minute), how many minutes the default budget (128 MB) therefore keeps, and how
+// long showing an instant takes (every station rebuilt; the timed part), the instant farthest
+// from its key (the worst) and random ones. Argument 1: the busy programs.
+void BM_NetworkHistoryMinute(benchmark::State &state) {
+    const bool busy = state.range(0) != 0;
+    QString error;
+    auto net = eightInCpuLink(&error, busy);
+    if (!net) {
+        state.SkipWithError(error.toStdString().c_str());
+        return;
+    }
+    network::NetworkHistory history;
+    history.start(*net);
+    const int slices = bench::sized(6000, 50);
+    for (int k = 1; k <= slices; ++k) {
+        net->runUntil(qint64(k) * 10'000);
+        history.record(*net, false);
+    }
+    const network::NetworkHistory::Window w = history.window();
+    const double mb = double(w.bytes) / (1024.0 * 1024.0) * 6000.0 / slices;
+    std::uint64_t seed = 12345;
+    std::size_t shown = 0;
+    for (auto _ : state) {
+        seed = seed * 6364136223846793005ULL + 1442695040888963407ULL;
+        const qint64 us = qint64(seed >> 33) % (w.lastUs + 1);
+        const auto all = history.at(us);
+        shown += all ? all->size() : 0;
+        benchmark::DoNotOptimize(all);
+    }
+    if (shown != state.iterations() * net->stations().size()) {
+        state.SkipWithError("an instant of the window was not shown");
+        return;
+    }
+    state.counters["MB_minute"] = mb;
+    state.counters["minutes_kept"] = 128.0 / std::max(1e-9, mb);
+    state.counters["keys"] = double(w.keys);
+    if (bench::judgesTime() && mb > (busy ? 64.0 : 16.0))
+        state.SkipWithError("a minute of history takes more memory than its limit");
+}
+
 } // namespace
 
 BENCHMARK(BM_NetworkCpuLink8)->Unit(benchmark::kMicrosecond);
@@ -168,4 +271,11 @@ BENCHMARK(BM_NetworkCostRatio)
     ->Unit(benchmark::kMillisecond)
     ->Repetitions(rung::bench::times(5))
     ->DisplayAggregatesOnly(true);
+BENCHMARK(BM_NetworkHistoryRatio)
+    ->Arg(0)
+    ->Arg(1)
+    ->Unit(benchmark::kMillisecond)
+    ->Repetitions(rung::bench::times(5))
+    ->DisplayAggregatesOnly(true);
+BENCHMARK(BM_NetworkHistoryMinute)->Arg(0)->Arg(1)->Unit(benchmark::kMicrosecond);
 BENCHMARK_MAIN();

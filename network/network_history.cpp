@@ -1,0 +1,280 @@
+#include "network/network_history.h"
+
+#include "network/network.h"
+#include "network/station.h"
+#include "simulator/engine.h"
+
+#include <algorithm>
+#include <cstring>
+
+namespace rung::network {
+
+struct NetworkHistory::Key {
+    std::vector<std::int32_t> words;
+    std::vector<std::uint32_t> forceMask;
+    std::vector<std::uint32_t> forceValue;
+    std::vector<std::uint8_t> flow; // empty: power flow not recorded then
+    std::size_t bytes() const {
+        return sizeof(Key) + words.size() * 4 + forceMask.size() * 4 + forceValue.size() * 4 +
+               flow.size();
+    }
+};
+
+// The worker's copy of every station as the last instant left it.
+struct NetworkHistory::Worker {
+    struct Station {
+        std::vector<std::int32_t> words;
+        std::vector<std::uint32_t> forceMask;
+        std::vector<std::uint32_t> forceValue;
+        std::vector<std::uint8_t> flow;
+        bool flowRecorded = false;
+    };
+    std::vector<Station> stations;
+    std::size_t sinceKey = 0;           // instants since the last key
+    std::size_t changeBytes = 0;        // bytes of changes since the last key
+    std::size_t keyBytes = 0;           // what a key of every station costs
+    std::vector<std::uint32_t> changes; // reused between instants
+};
+
+std::size_t NetworkHistory::Instant::bytes() const {
+    std::size_t n = sizeof(Instant) + statistics.capacity() * sizeof(model::ScanStatistics) +
+                    changes.capacity() * sizeof(std::uint32_t) +
+                    keys.capacity() * sizeof(std::shared_ptr<const Key>);
+    for (const auto &k : keys)
+        n += k ? k->bytes() : 0;
+    return n;
+}
+
+NetworkHistory::NetworkHistory()
+    : NetworkHistory(Limits{}) {}
+
+NetworkHistory::NetworkHistory(Limits limits)
+    : m_limits(limits)
+    , m_worker(std::make_unique<Worker>()) {
+    m_limits.keyEvery = std::max<std::size_t>(1, m_limits.keyEvery);
+}
+
+NetworkHistory::~NetworkHistory() = default;
+
+void NetworkHistory::start(const Network &network) {
+    std::vector<std::shared_ptr<const model::MemoryLayout>> layouts;
+    for (const auto &s : network.stations())
+        layouts.push_back(s->engine().program().layout);
+    {
+        std::lock_guard lock(m_mutex);
+        m_instants.clear();
+        m_bytes = 0;
+        m_keys = 0;
+        m_layouts = std::move(layouts);
+    }
+    *m_worker = Worker{};
+    m_worker->stations.resize(network.stations().size());
+    m_worker->sinceKey = m_limits.keyEvery; // the first instant is a key
+    record(network, true);
+}
+
+void NetworkHistory::record(const Network &network, bool commands) {
+    Worker &w = *m_worker;
+    const auto &stations = network.stations();
+    if (stations.size() != w.stations.size())
+        return; // not the network start() was given
+    Instant instant;
+    instant.us = network.nowUs();
+    bool key = w.sinceKey >= m_limits.keyEvery || w.changeBytes >= w.keyBytes;
+    std::vector<std::uint32_t> &changes = w.changes;
+    changes.clear();
+    for (std::size_t i = 0; i < stations.size(); ++i) {
+        const simulator::Engine &engine = stations[i]->engine();
+        Worker::Station &prev = w.stations[i];
+        const model::ScanStatistics &statistics = engine.statistics();
+        const auto scans = static_cast<quint64>(statistics.scans);
+        const auto ms = static_cast<quint64>(statistics.timeMs);
+        changes.push_back(static_cast<std::uint32_t>(scans));
+        changes.push_back(static_cast<std::uint32_t>(scans >> 32));
+        changes.push_back(static_cast<std::uint32_t>(ms));
+        changes.push_back(static_cast<std::uint32_t>(ms >> 32));
+        // Forced bits change only by a command, between two slices.
+        if (commands) {
+            const model::Snapshot s = engine.snapshot();
+            if (s.forceMask != prev.forceMask || s.forceValue != prev.forceValue) {
+                prev.forceMask = s.forceMask;
+                prev.forceValue = s.forceValue;
+                key = true;
+            }
+        }
+        // The words that changed, a block at a time (a block compares at memcmp's speed; the
+        // few that differ are looked at word by word).
+        const std::span<const std::int32_t> words = engine.words();
+        if (prev.words.size() != words.size()) {
+            prev.words.assign(words.begin(), words.end());
+            key = true;
+        }
+        const std::size_t countAt = changes.size();
+        changes.push_back(0);
+        constexpr std::size_t kBlock = 64;
+        std::int32_t *old = prev.words.data();
+        for (std::size_t b = 0; b < words.size(); b += kBlock) {
+            const std::size_t e = std::min(words.size(), b + kBlock);
+            if (std::memcmp(old + b, words.data() + b, (e - b) * sizeof(std::int32_t)) == 0)
+                continue;
+            for (std::size_t k = b; k < e; ++k)
+                if (old[k] != words[k]) {
+                    old[k] = words[k];
+                    changes.push_back(static_cast<std::uint32_t>(k));
+                    changes.push_back(static_cast<std::uint32_t>(words[k]));
+                }
+        }
+        changes[countAt] = static_cast<std::uint32_t>((changes.size() - countAt - 1) / 2);
+        // The power flow of the station whose ladder is on screen (the others record none).
+        const bool flowRecorded = engine.powerFlowRecording();
+        const std::vector<std::uint8_t> &flow = engine.powerFlow();
+        const std::size_t flowAt = changes.size();
+        changes.push_back(0);
+        if (flowRecorded != prev.flowRecorded ||
+            (flowRecorded && flow.size() != prev.flow.size())) {
+            prev.flowRecorded = flowRecorded;
+            if (flowRecorded)
+                prev.flow = flow;
+            else
+                prev.flow.clear();
+            key = true;
+        } else if (flowRecorded) {
+            for (std::size_t k = 0; k < flow.size(); ++k)
+                if ((flow[k] != 0) != (prev.flow[k] != 0)) {
+                    prev.flow[k] = flow[k];
+                    changes.push_back(static_cast<std::uint32_t>(k));
+                }
+        }
+        changes[flowAt] = static_cast<std::uint32_t>(changes.size() - flowAt - 1);
+    }
+    if (key) {
+        std::size_t keyBytes = 0;
+        instant.keys.reserve(stations.size());
+        for (const auto &station : stations)
+            instant.statistics.push_back(station->engine().statistics());
+        for (const Worker::Station &s : w.stations) {
+            auto k = std::make_shared<Key>();
+            k->words = s.words;
+            k->forceMask = s.forceMask;
+            k->forceValue = s.forceValue;
+            k->flow = s.flow;
+            keyBytes += k->bytes();
+            instant.keys.push_back(std::move(k));
+        }
+        w.keyBytes = keyBytes;
+        w.sinceKey = 0;
+        w.changeBytes = 0;
+    } else {
+        instant.changes.assign(changes.begin(), changes.end());
+        w.changeBytes += instant.changes.size() * sizeof(std::uint32_t);
+        ++w.sinceKey;
+    }
+    append(std::move(instant));
+}
+
+void NetworkHistory::append(Instant instant) {
+    const std::size_t bytes = instant.bytes();
+    const bool key = !instant.keys.empty();
+    std::lock_guard lock(m_mutex);
+    m_instants.push_back(std::move(instant));
+    m_bytes += bytes;
+    m_keys += key ? 1 : 0;
+    // Over the budget: the oldest key goes with the changes that run from it, while another
+    // key stays.
+    while (m_bytes > m_limits.maxBytes && m_keys > 1) {
+        do {
+            m_bytes -= m_instants.front().bytes();
+            m_keys -= m_instants.front().keys.empty() ? 0 : 1;
+            m_instants.pop_front();
+        } while (!m_instants.empty() && m_instants.front().keys.empty());
+    }
+}
+
+NetworkHistory::Window NetworkHistory::window() const {
+    std::lock_guard lock(m_mutex);
+    Window w;
+    if (m_instants.empty())
+        return w;
+    w.firstUs = m_instants.front().us;
+    w.lastUs = m_instants.back().us;
+    w.instants = m_instants.size();
+    w.keys = m_keys;
+    w.bytes = m_bytes;
+    return w;
+}
+
+std::size_t NetworkHistory::stationCount() const {
+    std::lock_guard lock(m_mutex);
+    return m_layouts.size();
+}
+
+std::ptrdiff_t NetworkHistory::find(qint64 us) const {
+    const auto after = std::upper_bound(m_instants.begin(), m_instants.end(), us,
+                                        [](qint64 t, const Instant &i) { return t < i.us; });
+    return (after - m_instants.begin()) - 1;
+}
+
+std::optional<qint64> NetworkHistory::instantAt(qint64 us) const {
+    std::lock_guard lock(m_mutex);
+    const std::ptrdiff_t i = find(us);
+    if (i < 0)
+        return std::nullopt;
+    return m_instants[static_cast<std::size_t>(i)].us;
+}
+
+model::Snapshot NetworkHistory::rebuild(std::size_t station, std::size_t instant) const {
+    std::size_t k = instant;
+    while (m_instants[k].keys.empty())
+        --k; // the front is always a key
+    const Key &key = *m_instants[k].keys[station];
+    model::Snapshot s;
+    s.layout = m_layouts[station];
+    s.words = key.words;
+    s.forceMask = key.forceMask;
+    s.forceValue = key.forceValue;
+    s.statistics = m_instants[k].statistics[station];
+    std::vector<std::uint8_t> flow = key.flow;
+    for (std::size_t j = k + 1; j <= instant; ++j) {
+        const std::vector<std::uint32_t> &c = m_instants[j].changes;
+        std::size_t p = 0;
+        for (std::size_t t = 0; t < station; ++t) {
+            p += 4;
+            p += 1 + 2 * std::size_t(c[p]);
+            p += 1 + std::size_t(c[p]);
+        }
+        if (j == instant) {
+            s.statistics.scans = c[p] | quint64(c[p + 1]) << 32;
+            s.statistics.timeMs = static_cast<qint64>(c[p + 2] | quint64(c[p + 3]) << 32);
+        }
+        p += 4;
+        const std::size_t words = c[p++];
+        for (std::size_t n = 0; n < words; ++n, p += 2)
+            s.words[c[p]] = static_cast<std::int32_t>(c[p + 1]);
+        const std::size_t toggles = c[p++];
+        for (std::size_t n = 0; n < toggles; ++n, ++p)
+            flow[c[p]] = flow[c[p]] ? 0 : 1;
+    }
+    s.powerFlow.assign(flow.begin(), flow.end());
+    return s;
+}
+
+std::optional<std::vector<model::Snapshot>> NetworkHistory::at(qint64 us) const {
+    std::lock_guard lock(m_mutex);
+    const std::ptrdiff_t i = find(us);
+    if (i < 0)
+        return std::nullopt;
+    std::vector<model::Snapshot> out;
+    for (std::size_t s = 0; s < m_layouts.size(); ++s)
+        out.push_back(rebuild(s, static_cast<std::size_t>(i)));
+    return out;
+}
+
+std::optional<model::Snapshot> NetworkHistory::stationAt(std::size_t station, qint64 us) const {
+    std::lock_guard lock(m_mutex);
+    const std::ptrdiff_t i = find(us);
+    if (i < 0 || station >= m_layouts.size())
+        return std::nullopt;
+    return rebuild(station, static_cast<std::size_t>(i));
+}
+
+} // namespace rung::network

@@ -1,0 +1,111 @@
+#pragma once
+
+// The recent past of a whole network, able to show every station at any instant of it
+// (docs/network.md, "History across the network").
+//
+// Why a record and not a replay: one PLC's past is rebuilt by running its engine again from a
+// checkpoint (simulator/scan_history.h), but a station alone cannot be run again: what its
+// ports received came from the other stations, and a copy of the whole network would have to
+// copy every port's protocol state, every slave's half-read frame and the frames in flight on
+// the wires. What the views show of a station is its image, its forced bits, its statistics
+// and the power flow of its last scan, so that is what is kept: after each slice of virtual
+// time, every station's words that changed since the slice before (a few dozen in a scan of a
+// typical program), and now and then a full copy of every station (a key) from which the
+// changes run on. Showing an instant copies the key at or before it and applies the changes
+// up to it: what is shown is what the station held then, word for word, by construction.
+//
+// The window is bounded by memory: once the record passes Limits::maxBytes, the oldest key
+// and the changes that run from it go. A key is taken every Limits::keyEvery instants, when
+// the changes since the last one have cost as much as a key, and whenever a station's forced
+// bits or its power-flow recording changed, so a rebuild applies at most keyEvery changes.
+//
+// Cost: finding the changed words reads every station's whole image each slice, which at full
+// speed costs more than the scans themselves (BM_NetworkHistoryRatio, docs/performance.md: the
+// engine does not say which words a scan wrote).
+//
+// Threads: the session's worker records (start, record); any thread reads (window, at,
+// stationAt) under the history's lock, which the worker takes only to append an instant.
+// The comparison with the slice before runs outside the lock, on the worker's own copy.
+
+#include "model/image/snapshot.h"
+
+#include <QtGlobal>
+
+#include <deque>
+#include <memory>
+#include <mutex>
+#include <optional>
+#include <vector>
+
+namespace rung::network {
+
+class Network;
+
+class NetworkHistory {
+public:
+    struct Limits {
+        std::size_t maxBytes = 128u << 20; // then the oldest key and its changes go
+        std::size_t keyEvery = 1000;       // instants between two keys at most
+    };
+    struct Window {
+        qint64 firstUs = 0; // the oldest instant that can be shown
+        qint64 lastUs = 0;  // the newest
+        std::size_t instants = 0;
+        std::size_t keys = 0;
+        std::size_t bytes = 0;
+        bool empty() const { return instants == 0; }
+    };
+
+    NetworkHistory();
+    explicit NetworkHistory(Limits limits);
+    ~NetworkHistory();
+
+    // Worker: forgets the past; the network as it is now is the first instant.
+    void start(const Network &network);
+    // Worker: the network after a slice of virtual time, or after commands were applied
+    // between two (commands: forced bits may have changed). A second instant at the same
+    // virtual time is shown in place of the first.
+    void record(const Network &network, bool commands);
+
+    // Any thread.
+    Window window() const;
+    std::size_t stationCount() const;
+    // Every station (the network's order) as it was at virtual time `us`: the last instant
+    // recorded at or before it; empty before the window (or when nothing is recorded).
+    std::optional<std::vector<model::Snapshot>> at(qint64 us) const;
+    // One station only (cheaper).
+    std::optional<model::Snapshot> stationAt(std::size_t station, qint64 us) const;
+    // The virtual time of the instant `at(us)` shows; empty before the window.
+    std::optional<qint64> instantAt(qint64 us) const;
+
+private:
+    struct Key; // a full copy of one station
+    struct Instant {
+        qint64 us = 0;
+        // Per station, when this instant is a key; else empty.
+        std::vector<model::ScanStatistics> statistics;
+        std::vector<std::shared_ptr<const Key>> keys;
+        // Per station, when not a key: [scans (2 words, low first), virtual ms (2 words),
+        // word changes n, (index, value) x n, flow changes m, index x m] (a flow change
+        // toggles that instruction's result). The other statistics (period, evaluation times)
+        // are the key's.
+        std::vector<std::uint32_t> changes;
+        std::size_t bytes() const;
+    };
+    struct Worker; // what the worker compares against
+
+    // Under m_mutex: the index of the last instant at or before us, or -1.
+    std::ptrdiff_t find(qint64 us) const;
+    model::Snapshot rebuild(std::size_t station, std::size_t instant) const;
+    void append(Instant instant); // takes m_mutex
+
+    Limits m_limits;
+    std::unique_ptr<Worker> m_worker;
+    mutable std::mutex m_mutex;
+    std::deque<Instant> m_instants; // the front one is a key
+    std::vector<std::shared_ptr<const model::MemoryLayout>> m_layouts;
+    std::size_t m_bytes = 0;
+    std::size_t m_keys = 0;
+};
+
+} // namespace rung::network

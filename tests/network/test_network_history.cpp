@@ -1,0 +1,293 @@
+// The history of a whole network (network_history.h): every station of every example network
+// shown at a past instant is what it was at that instant while the network ran, word for
+// word; commands between slices; the memory budget; the session recording it on its worker
+// (NetworkSession.* runs under ThreadSanitizer) and a station's past as a read-only
+// MonitorSource.
+
+#include "network/network_history.h"
+#include "network/network_session.h"
+#include "network/station_past_source.h"
+
+#include "network_fixture.h"
+
+#include "../eventually.h"
+
+#include "model/target/target.h"
+
+#include <QDirIterator>
+
+#include <gtest/gtest.h>
+
+namespace rung::network::test {
+namespace {
+
+using waits::eventually;
+using RunState = model::MonitorSource::RunState;
+
+const QString kHistoryExamples = QStringLiteral(RUNG_SOURCE_DIR "/resources/examples/networks");
+const QString kHistoryEasyLink = kHistoryExamples + QStringLiteral("/easy-link/easy-link.rungnet");
+
+// The networks File > Examples > Networks lists: every .rungnet under the examples.
+QStringList historyExampleNetworks() {
+    QStringList out;
+    QDirIterator it(kHistoryExamples, {QStringLiteral("*.rungnet")}, QDir::Files,
+                    QDirIterator::Subdirectories);
+    while (it.hasNext())
+        out << it.next();
+    out.sort();
+    return out;
+}
+
+std::unique_ptr<Network> buildForHistory(const QString &file) {
+    NetworkDescription d;
+    QString error;
+    EXPECT_TRUE(readNetworkFile(file, &d, &error)) << error.toStdString();
+    std::unique_ptr<Network> net = Network::build(d, listingLoader(), &error);
+    EXPECT_TRUE(net) << error.toStdString();
+    return net;
+}
+
+model::Address historyAddress(const Station &s, const char *device) {
+    const auto a = model::parseAddress(s.target(), QString::fromLatin1(device));
+    EXPECT_TRUE(std::holds_alternative<model::Address>(a)) << device;
+    return std::holds_alternative<model::Address>(a) ? std::get<model::Address>(a)
+                                                     : model::Address{};
+}
+
+// What a view shows of a station: its words, forced bits, power flow and scan count.
+struct SeenThen {
+    std::vector<std::int32_t> words;
+    std::vector<std::uint32_t> forceMask;
+    std::vector<bool> flow;
+    quint64 scans = 0;
+    qint64 timeMs = 0;
+    friend bool operator==(const SeenThen &, const SeenThen &) = default;
+};
+
+SeenThen seenThen(const model::Snapshot &s) {
+    return {s.words, s.forceMask, s.powerFlow, s.statistics.scans, s.statistics.timeMs};
+}
+
+SeenThen seenThen(const Station &s) {
+    return seenThen(s.engine().snapshot());
+}
+
+struct LiveInstant {
+    qint64 us = 0;
+    std::vector<SeenThen> stations;
+};
+
+LiveInstant captureLive(const Network &net) {
+    LiveInstant l;
+    l.us = net.nowUs();
+    for (const auto &s : net.stations())
+        l.stations.push_back(seenThen(*s));
+    return l;
+}
+
+// Every instant recorded, and a moment between two, shows every station as it was then.
+void expectHistoryShownAsLive(const NetworkHistory &history, const std::vector<LiveInstant> &live) {
+    for (std::size_t k = 0; k < live.size(); ++k) {
+        // A later instant at the same time (a command) is the one shown.
+        if (k + 1 < live.size() && live[k + 1].us == live[k].us)
+            continue;
+        const auto shown = history.at(live[k].us);
+        ASSERT_TRUE(shown) << "at " << live[k].us;
+        ASSERT_EQ(shown->size(), live[k].stations.size());
+        for (std::size_t s = 0; s < shown->size(); ++s)
+            ASSERT_TRUE(seenThen((*shown)[s]) == live[k].stations[s])
+                << "station " << s << " at " << live[k].us << " us";
+        if (k + 1 < live.size() && live[k + 1].us > live[k].us + 1) {
+            const qint64 between = (live[k].us + live[k + 1].us) / 2;
+            const auto one = history.stationAt(0, between);
+            ASSERT_TRUE(one);
+            EXPECT_TRUE(seenThen(*one) == live[k].stations[0]) << "between, at " << between;
+            EXPECT_EQ(history.instantAt(between), live[k].us);
+        }
+    }
+}
+
+} // namespace
+
+TEST(NetworkHistory, EveryStationOfEveryExampleNetworkIsShownAsItWasAtEachInstant) {
+    const QStringList files = historyExampleNetworks();
+    ASSERT_GE(files.size(), 10);
+    for (const QString &file : files) {
+        SCOPED_TRACE(file.toStdString());
+        std::unique_ptr<Network> net = buildForHistory(file);
+        ASSERT_TRUE(net);
+        const qint64 slice = std::max<qint64>(1, net->description().periodMs) * 1000;
+        // Keys close together, so that rebuilds cross several of them.
+        NetworkHistory history(NetworkHistory::Limits{256u << 20, 16});
+        net->stations().front()->engine().setPowerFlowRecording(true);
+        history.start(*net);
+        std::vector<LiveInstant> live{captureLive(*net)};
+        for (int k = 1; k <= 300; ++k) {
+            if (k == 120) { // the user chose another station: its power flow from now on
+                net->stations().front()->engine().setPowerFlowRecording(false);
+                net->stations().back()->engine().setPowerFlowRecording(true);
+            }
+            net->runUntil(k * slice);
+            history.record(*net, false);
+            live.push_back(captureLive(*net));
+        }
+        expectHistoryShownAsLive(history, live);
+        EXPECT_FALSE(history.at(-1));
+        const NetworkHistory::Window w = history.window();
+        EXPECT_EQ(w.firstUs, 0);
+        EXPECT_EQ(w.lastUs, 300 * slice);
+        EXPECT_EQ(w.instants, 301u);
+        // Not a still picture: the stations' images changed while the network ran.
+        bool changed = false;
+        for (std::size_t s = 0; s < live.front().stations.size(); ++s)
+            changed = changed || live.front().stations[s].words != live.back().stations[s].words;
+        EXPECT_TRUE(changed);
+    }
+}
+
+// The Easy Link example's set 1 reads D10..D19 of station 5 into the master's D0..D9: a value
+// written in s5 is seen arriving in the master, and the master's past before it arrived shows
+// the old value.
+TEST(NetworkHistory, AValueArrivingInAnotherStationIsShownAtTheInstantItArrived) {
+    std::unique_ptr<Network> net = buildForHistory(kHistoryEasyLink);
+    ASSERT_TRUE(net);
+    Station &s5 = *net->station(QStringLiteral("s5"));
+    Station &master = *net->station(QStringLiteral("master"));
+    NetworkHistory history;
+    history.start(*net);
+    std::vector<LiveInstant> live{captureLive(*net)};
+    qint64 arrived = -1;
+    for (int k = 1; k <= 200; ++k) {
+        if (k == 50) { // a command between two slices, as the session applies it
+            ASSERT_TRUE(s5.engine().writeWord(historyAddress(s5, "D10"), 1234));
+            ASSERT_TRUE(s5.engine().force(historyAddress(s5, "Y0"), true));
+            history.record(*net, true);
+            live.push_back(captureLive(*net));
+        }
+        net->runUntil(k * 10'000);
+        history.record(*net, false);
+        live.push_back(captureLive(*net));
+        if (arrived < 0 && master.engine().value(historyAddress(master, "D0")) == 1234)
+            arrived = net->nowUs();
+    }
+    ASSERT_GT(arrived, 500'000);
+    expectHistoryShownAsLive(history, live);
+    const std::size_t m = 0; // the master is the first station
+    ASSERT_EQ(net->stations()[m].get(), &master);
+    const auto then = history.stationAt(m, arrived);
+    const auto before = history.stationAt(m, arrived - 10'000);
+    ASSERT_TRUE(then && before);
+    EXPECT_EQ(then->value(historyAddress(master, "D0")), 1234);
+    EXPECT_NE(before->value(historyAddress(master, "D0")), 1234);
+    // The command's instant, between the slices ending at 0.49 s and 0.5 s: the write and the
+    // force, shown from 0.49 s on (in place of the slice's instant at that time).
+    const auto written = history.stationAt(1, 490'000);
+    ASSERT_TRUE(written);
+    EXPECT_EQ(written->value(historyAddress(s5, "D10")), 1234);
+    EXPECT_TRUE(written->forced(historyAddress(s5, "Y0")));
+    const auto earlier = history.stationAt(1, 489'999);
+    ASSERT_TRUE(earlier);
+    EXPECT_NE(earlier->value(historyAddress(s5, "D10")), 1234);
+    EXPECT_FALSE(earlier->forced(historyAddress(s5, "Y0")));
+}
+
+TEST(NetworkHistory, OverItsBudgetTheOldestGoAndTheRestIsShownExactly) {
+    std::unique_ptr<Network> net = buildForHistory(kHistoryEasyLink);
+    ASSERT_TRUE(net);
+    // Room for a few keys of the three VBs and their changes.
+    NetworkHistory probe;
+    probe.start(*net);
+    const std::size_t key = probe.window().bytes;
+    NetworkHistory history(NetworkHistory::Limits{4 * key, 50});
+    history.start(*net);
+    std::vector<LiveInstant> live{captureLive(*net)};
+    for (int k = 1; k <= 600; ++k) {
+        net->runUntil(k * 10'000);
+        history.record(*net, false);
+        live.push_back(captureLive(*net));
+    }
+    const NetworkHistory::Window w = history.window();
+    EXPECT_GT(w.firstUs, 0);
+    EXPECT_EQ(w.lastUs, 6'000'000);
+    EXPECT_LE(w.bytes, 4 * key);
+    EXPECT_GE(w.keys, 2u);
+    EXPECT_FALSE(history.at(w.firstUs - 1));
+    std::vector<LiveInstant> kept;
+    for (const LiveInstant &l : live)
+        if (l.us >= w.firstUs)
+            kept.push_back(l);
+    EXPECT_EQ(kept.size(), w.instants);
+    expectHistoryShownAsLive(history, kept);
+}
+
+TEST(NetworkSession, ItsWorkerRecordsTheHistoryOfEveryStationAndAPastStationIsReadOnly) {
+    NetworkDescription d;
+    QString error;
+    ASSERT_TRUE(readNetworkFile(kHistoryEasyLink, &d, &error)) << error.toStdString();
+    std::unique_ptr<NetworkSession> session = NetworkSession::start(d, listingLoader(), &error);
+    ASSERT_TRUE(session) << error.toStdString();
+    StationSource *s5 = session->station(QStringLiteral("s5"));
+    StationSource *master = session->station(QStringLiteral("master"));
+    const auto address = [](const StationSource *s, const char *device) {
+        return std::get<model::Address>(
+            model::parseAddress(s->target(), QString::fromLatin1(device)));
+    };
+    bool written = false;
+    QObject::connect(
+        s5, &model::MonitorSource::commandFinished, s5,
+        [&](model::MonitorSource::CommandId, bool ok, const QString &) { written = ok; });
+    s5->writeWord(address(s5, "D10"), 4321);
+    ASSERT_TRUE(eventually([&] { return written; }));
+    std::shared_ptr<const NetworkHistory> history = session->history();
+    session->setSpeed(0);
+    session->runFor(2000);
+    // Read while the worker records.
+    std::size_t reads = 0;
+    ASSERT_TRUE(eventually([&] {
+        const NetworkHistory::Window w = history->window();
+        if (!w.empty() && history->at(w.lastUs))
+            ++reads;
+        return session->runState() == RunState::Paused;
+    }));
+    EXPECT_GT(reads, 0u);
+    const NetworkHistory::Window w = history->window();
+    EXPECT_EQ(w.lastUs, 2'000'000);
+    EXPECT_EQ(session->nowUs(), 2'000'000);
+    // The newest instant is what the stations published last.
+    ASSERT_TRUE(eventually(
+        [&] { return master->snapshot() && master->snapshot()->statistics.timeMs == 2000; }));
+    const auto now = history->at(w.lastUs);
+    ASSERT_TRUE(now);
+    for (std::size_t s = 0; s < session->stations().size(); ++s)
+        EXPECT_EQ((*now)[s].words, session->stations()[s]->snapshot()->words) << s;
+    // The master's D0 arrived some time after the start: before then the past shows 0.
+    EXPECT_EQ(master->snapshot()->value(address(master, "D0")), 4321);
+    StationPastSource past(history, 0, master);
+    ASSERT_TRUE(past.show(10'000));
+    EXPECT_EQ(past.snapshot()->value(address(master, "D0")), 0);
+    EXPECT_EQ(past.snapshot()->statistics.timeMs, 10);
+    ASSERT_TRUE(past.show(2'000'000));
+    EXPECT_EQ(past.snapshot()->value(address(master, "D0")), 4321);
+    EXPECT_EQ(past.runState(), RunState::Paused);
+    // Read-only: a write is refused, and the live station keeps its value.
+    QString refused;
+    QObject::connect(&past, &model::MonitorSource::commandFinished, &past,
+                     [&](model::MonitorSource::CommandId, bool ok, const QString &why) {
+                         if (!ok)
+                             refused = why;
+                     });
+    past.writeWord(address(master, "D0"), 1);
+    ASSERT_TRUE(eventually([&] { return !refused.isEmpty(); }));
+    EXPECT_TRUE(refused.contains(QStringLiteral("read-only")));
+    EXPECT_FALSE(past.forceRefusal().isEmpty());
+    // The chart's rows read the live station's recorder through it.
+    EXPECT_TRUE(past.watchHistory(address(master, "D0")));
+    // Stop starts the history again at power-on.
+    session->stop();
+    EXPECT_TRUE(eventually([&] {
+        const NetworkHistory::Window after = history->window();
+        return after.instants == 1 && after.lastUs == 0;
+    }));
+}
+
+} // namespace rung::network::test
