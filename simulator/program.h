@@ -226,6 +226,53 @@ struct Step {
     std::int32_t count = 0;  // list length; timers: time base in ms
 };
 
+// The plain scan's form of a step (Engine::runFast, engine_fast.cpp): one per Step, same
+// index, 16 bytes (and a Stop after the last), so that the loop a whole scan runs reads a quarter
+// of the Step array and tests no flag at run time. What the fast loop does not run itself (Slow)
+// goes to the full interpreter for that one step; the other ops read anything beyond a bit from the
+// Step.
+enum class FastOp : std::uint8_t {
+    Slow,
+    LoadStart, // LD at a rung start: the block and push stacks empty
+    LoadStartNot,
+    Load, // LD inside a rung: the accumulator goes onto the block stack
+    LoadNot,
+    And,
+    AndNot,
+    Or,
+    OrNot,
+    LoadEdge, // LDP / LDF ..., the edge memory in the Step's slot
+    AndEdge,
+    OrEdge,
+    AndBlock,
+    OrBlock,
+    Push,
+    ReadStack,
+    Pop,
+    Invert,
+    Out,
+    OutNot,
+    Set,
+    Reset,
+    Timer,
+    Counter, // Code::Counter, either form
+    Move,
+    Add,
+    Sub,
+    Inc,
+    Dec,
+    Nop, // NOP, JPE / JME
+    End,
+    Stop, // after the last step: the list ended without END
+};
+
+struct FastStep {
+    FastOp op = FastOp::Slow;
+    std::int32_t word = -1; // contacts and coils: the bit (Step::bit)
+    std::uint32_t mask = 0;
+    std::int32_t spare = 0;
+};
+
 // A system device the engine drives at the start of every scan.
 struct SystemBinding {
     model::SystemRole role = model::SystemRole::Other;
@@ -319,8 +366,9 @@ struct CommDevices {
 
 struct Program {
     std::shared_ptr<const MemoryLayout> layout;
-    std::vector<Step> steps; // index = instruction index in the list
-    std::vector<int> lines;  // source line of each step
+    std::vector<Step> steps;    // index = instruction index in the list
+    std::vector<FastStep> fast; // one per step and a Stop (buildFastSteps, compile_fast.cpp)
+    std::vector<int> lines;     // source line of each step
     std::vector<BitRef> bitLists;
     std::vector<ResetTarget> resets;
     std::vector<OperandRef> refs; // operands resolved at run time (kResolve)

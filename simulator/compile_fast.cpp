@@ -1,0 +1,92 @@
+#include "compiler_detail.h"
+
+// Program::fast: which steps the plain scan's loop (Engine::runFast, engine_fast.cpp) runs
+// itself. A step keeps the full interpreter (Slow) when it has an operand resolved at run
+// time or runs differentiated, or when its code moves the loop or the interlock state.
+
+namespace rung::simulator::detail {
+
+namespace {
+
+FastOp fastOf(const Step &s) {
+    if (s.flags & (kResolve | kDifferentiated))
+        return FastOp::Slow;
+    const bool negated = (s.flags & kNegated) != 0;
+    const bool bit = s.bit.valid();
+    switch (s.code) {
+    case Code::Load:
+        if (!bit)
+            return FastOp::Slow;
+        if (s.flags & kRungStart)
+            return negated ? FastOp::LoadStartNot : FastOp::LoadStart;
+        return negated ? FastOp::LoadNot : FastOp::Load;
+    case Code::And:
+        return !bit ? FastOp::Slow : negated ? FastOp::AndNot : FastOp::And;
+    case Code::Or:
+        return !bit ? FastOp::Slow : negated ? FastOp::OrNot : FastOp::Or;
+    case Code::LoadEdge:
+        return bit ? FastOp::LoadEdge : FastOp::Slow;
+    case Code::AndEdge:
+        return bit ? FastOp::AndEdge : FastOp::Slow;
+    case Code::OrEdge:
+        return bit ? FastOp::OrEdge : FastOp::Slow;
+    case Code::AndBlock:
+        return FastOp::AndBlock;
+    case Code::OrBlock:
+        return FastOp::OrBlock;
+    case Code::Push:
+        return FastOp::Push;
+    case Code::ReadStack:
+        return FastOp::ReadStack;
+    case Code::Pop:
+        return FastOp::Pop;
+    case Code::Invert:
+        return FastOp::Invert;
+    case Code::Out:
+        return !bit ? FastOp::Slow : negated ? FastOp::OutNot : FastOp::Out;
+    case Code::Set:
+        return bit ? FastOp::Set : FastOp::Slow;
+    case Code::Reset:
+        return FastOp::Reset;
+    case Code::Timer:
+        return FastOp::Timer;
+    case Code::Counter:
+        return FastOp::Counter;
+    case Code::Move:
+        return FastOp::Move;
+    case Code::Add:
+        return FastOp::Add;
+    case Code::Sub:
+        return FastOp::Sub;
+    case Code::Inc:
+        return FastOp::Inc;
+    case Code::Dec:
+        return FastOp::Dec;
+    case Code::Nop:
+    case Code::JumpEnd:
+        return FastOp::Nop;
+    case Code::End:
+        return FastOp::End;
+    default:
+        return FastOp::Slow;
+    }
+}
+
+} // namespace
+
+void buildFastSteps(Program &program) {
+    program.fast.clear();
+    program.fast.reserve(program.steps.size() + 1);
+    for (const Step &s : program.steps) {
+        FastStep f;
+        f.op = fastOf(s);
+        f.word = s.bit.word;
+        f.mask = s.bit.mask;
+        program.fast.push_back(f);
+    }
+    FastStep stop;
+    stop.op = FastOp::Stop;
+    program.fast.push_back(stop);
+}
+
+} // namespace rung::simulator::detail
