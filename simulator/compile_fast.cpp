@@ -1,5 +1,7 @@
 #include "compiler_detail.h"
 
+#include <algorithm>
+
 // Program::fast: which steps the plain scan's loop (Engine::runFast, engine_fast.cpp) runs
 // itself. A step keeps the full interpreter (Slow) when it has an operand resolved at run
 // time or runs differentiated, or when its code moves the loop or the interlock state.
@@ -72,6 +74,38 @@ FastOp fastOf(const Step &s) {
     }
 }
 
+// Runs of fast steps that run as one (FastOp::SeriesStart2 ...): the first step's op
+// becomes the run's, the others keep theirs.
+void fuse(std::vector<FastStep> &fast) {
+    auto is = [&](std::size_t i, std::initializer_list<FastOp> ops) {
+        return i < fast.size() && std::find(ops.begin(), ops.end(), fast[i].op) != ops.end();
+    };
+    const auto contactAnd = {FastOp::And, FastOp::AndNot};
+    const auto load = {FastOp::Load, FastOp::LoadNot};
+    for (std::size_t i = 0; i < fast.size();) {
+        if (is(i, {FastOp::LoadStart, FastOp::LoadStartNot}) && is(i + 1, contactAnd)) {
+            fast[i].op = FastOp::SeriesStart2;
+            i += 2;
+        } else if (is(i, load) && is(i + 1, {FastOp::Or, FastOp::OrNot}) &&
+                   is(i + 2, {FastOp::AndBlock})) {
+            fast[i].op = FastOp::ParallelAnd;
+            i += 3;
+        } else if (is(i, load) && is(i + 1, contactAnd) && is(i + 2, {FastOp::OrBlock})) {
+            fast[i].op = FastOp::SeriesOr;
+            i += 3;
+        } else if (is(i, contactAnd) && is(i + 1, contactAnd)) {
+            fast[i].op = FastOp::SeriesAnd2;
+            i += 2;
+        } else if (is(i, {FastOp::Push}) && is(i + 1, contactAnd) &&
+                   is(i + 2, {FastOp::Out, FastOp::OutNot}) && is(i + 3, {FastOp::Pop})) {
+            fast[i].op = FastOp::BranchOut;
+            i += 4;
+        } else {
+            ++i;
+        }
+    }
+}
+
 } // namespace
 
 void buildFastSteps(Program &program) {
@@ -82,8 +116,10 @@ void buildFastSteps(Program &program) {
         f.op = fastOf(s);
         f.word = s.bit.word;
         f.mask = s.bit.mask;
+        f.flip = (s.flags & kNegated) ? s.bit.mask : 0;
         program.fast.push_back(f);
     }
+    fuse(program.fast);
     FastStep stop;
     stop.op = FastOp::Stop;
     program.fast.push_back(stop);

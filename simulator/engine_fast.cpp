@@ -56,6 +56,10 @@ template <bool Record, bool Forced> std::size_t Engine::runFast() {
     auto bitOf = [R](const FastStep &f) {
         return (static_cast<std::uint32_t>(R[f.word]) & f.mask) != 0;
     };
+    // A contact's value, negated or not (FastStep::flip).
+    auto contact = [R](const FastStep &f) {
+        return ((static_cast<std::uint32_t>(R[f.word]) ^ f.flip) & f.mask) != 0;
+    };
     auto write = [W, forced](const FastStep &f, bool on) {
         if constexpr (Forced)
             if (forced[f.word] & f.mask)
@@ -123,12 +127,14 @@ template <bool Record, bool Forced> std::size_t Engine::runFast() {
     // 12 instructions a step, callgrind). Program::fast ends with a Stop sentinel, so the
     // loop tests no bound. The order is FastOp's.
     static constexpr const void *table[] = {
-        &&opSlow,     &&opLoadStart, &&opLoadStartNot, &&opLoad,      &&opLoadNot, &&opAnd,
-        &&opAndNot,   &&opOr,        &&opOrNot,        &&opLoadEdge,  &&opAndEdge, &&opOrEdge,
-        &&opAndBlock, &&opOrBlock,   &&opPush,         &&opReadStack, &&opPop,     &&opInvert,
-        &&opOut,      &&opOutNot,    &&opSet,          &&opReset,     &&opTimer,   &&opCounter,
-        &&opMove,     &&opAdd,       &&opSub,          &&opInc,       &&opDec,     &&opNop,
-        &&opEnd,      &&opStop};
+        &&opSlow,      &&opLoadStart,    &&opLoadStartNot, &&opLoad,        &&opLoadNot,
+        &&opAnd,       &&opAndNot,       &&opOr,           &&opOrNot,       &&opLoadEdge,
+        &&opAndEdge,   &&opOrEdge,       &&opAndBlock,     &&opOrBlock,     &&opPush,
+        &&opReadStack, &&opPop,          &&opInvert,       &&opOut,         &&opOutNot,
+        &&opSet,       &&opReset,        &&opTimer,        &&opCounter,     &&opMove,
+        &&opAdd,       &&opSub,          &&opInc,          &&opDec,         &&opNop,
+        &&opEnd,       &&opSeriesStart2, &&opSeriesAnd2,   &&opParallelAnd, &&opSeriesOr,
+        &&opBranchOut, &&opStop};
     static_assert(std::size(table) == static_cast<std::size_t>(FastOp::Stop) + 1);
     const FastStep *f = fast;
     auto at = [&] { return static_cast<std::size_t>(f - fast); };
@@ -311,6 +317,63 @@ opSlow : {
         return next;
     f = fast + next;
     goto *table[static_cast<std::size_t>(f->op)];
+}
+opSeriesStart2 : {
+    const bool a = contact(f[0]) & gate;
+    bsp = 0;
+    psp = 0;
+    if constexpr (Record)
+        m_flow[at()] = a;
+    acc = a & contact(f[1]);
+    ++f;
+    RUNG_NEXT();
+}
+opSeriesAnd2:
+    acc = acc & contact(f[0]);
+    if constexpr (Record)
+        m_flow[at()] = acc;
+    acc = acc & contact(f[1]);
+    ++f;
+    RUNG_NEXT();
+opParallelAnd : {
+    // The block stack's bound, as LD and ANB keep it (the compiler never comes near it).
+    if (bsp >= kBlockStack) [[unlikely]]
+        goto *table[static_cast<std::size_t>(f->flip ? FastOp::LoadNot : FastOp::Load)];
+    const bool a = contact(f[0]) & gate;
+    const bool branch = a | (contact(f[1]) & gate);
+    if constexpr (Record) {
+        m_flow[at()] = a;
+        m_flow[at() + 1] = branch;
+    }
+    acc = acc & branch;
+    f += 2;
+    RUNG_NEXT();
+}
+opSeriesOr : {
+    if (bsp >= kBlockStack) [[unlikely]]
+        goto *table[static_cast<std::size_t>(f->flip ? FastOp::LoadNot : FastOp::Load)];
+    const bool a = contact(f[0]) & gate;
+    const bool series = a & contact(f[1]);
+    if constexpr (Record) {
+        m_flow[at()] = a;
+        m_flow[at() + 1] = series;
+    }
+    acc = acc | series;
+    f += 2;
+    RUNG_NEXT();
+}
+opBranchOut : {
+    if (psp >= kPushStack) [[unlikely]]
+        goto *table[static_cast<std::size_t>(FastOp::Push)];
+    const bool on = acc & contact(f[1]);
+    if constexpr (Record) {
+        m_flow[at()] = acc;
+        m_flow[at() + 1] = on;
+        m_flow[at() + 2] = on;
+    }
+    write(f[2], on != (f[2].flip != 0)); // the coil's value; MPP gives acc back as it was
+    f += 3;
+    RUNG_NEXT();
 }
 opEnd:
     if constexpr (Record)

@@ -263,14 +263,23 @@ enum class FastOp : std::uint8_t {
     Dec,
     Nop, // NOP, JPE / JME
     End,
-    Stop, // after the last step: the list ended without END
+    // Runs of steps as one (the first step's op; the others keep theirs, so a jump may still
+    // land inside). A contact's `flip` says whether it is negated.
+    SeriesStart2, // LD / LDI a, AND / ANI b
+    SeriesAnd2,   // AND / ANI a, AND / ANI b
+    ParallelAnd,  // LD / LDI a, OR / ORI b, ANB: a two-contact branch in series
+    SeriesOr,     // LD / LDI a, AND / ANI b, ORB: a two-contact series in parallel
+    BranchOut,    // MPS, AND / ANI a, OUT / OUTN y, MPP: an output branch with a contact
+    Stop,         // after the last step: the list ended without END
 };
 
 struct FastStep {
     FastOp op = FastOp::Slow;
     std::int32_t word = -1; // contacts and coils: the bit (Step::bit)
     std::uint32_t mask = 0;
-    std::int32_t spare = 0;
+    // Negated contacts and coils: the mask, so that ((word ^ flip) & mask) is the contact's
+    // value; 0 otherwise.
+    std::uint32_t flip = 0;
 };
 
 // A system device the engine drives at the start of every scan.
