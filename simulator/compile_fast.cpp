@@ -111,12 +111,66 @@ void fuse(std::vector<FastStep> &fast) {
 void buildFastSteps(Program &program) {
     program.fast.clear();
     program.fast.reserve(program.steps.size() + 1);
-    for (const Step &s : program.steps) {
+    const bool lean = program.gates.empty(); // no timer or counter is gated
+    const bool flags = program.flags.any();
+    for (std::size_t i = 0; i < program.steps.size(); ++i) {
+        const Step &s = program.steps[i];
         FastStep f;
         f.op = fastOf(s);
         f.word = s.bit.word;
         f.mask = s.bit.mask;
         f.flip = (s.flags & kNegated) ? s.bit.mask : 0;
+        const bool word16 = s.width == 16 && !flags && s.dest >= 0 && s.x.index >= 0;
+        auto operands = [&](FastOp wordConst, FastOp wordWord) {
+            f.op = s.y.index >= 0 ? wordWord : wordConst;
+            f.word = s.dest;
+            f.mask = static_cast<std::uint32_t>(s.x.index);
+            f.flip = static_cast<std::uint32_t>(s.y.index >= 0 ? s.y.index : s.y.constant);
+        };
+        switch (f.op) {
+        case FastOp::Timer:
+        case FastOp::Counter:
+            if (!lean || (s.flags & kBcd))
+                f.op = f.op == FastOp::Timer ? FastOp::TimerFull : FastOp::CounterFull;
+            break;
+        case FastOp::Move:
+            if (s.width == 16 && !flags && s.dest >= 0) {
+                f.op = s.x.index >= 0 ? FastOp::MoveWord16 : FastOp::MoveConst16;
+                f.word = s.dest;
+                f.mask = static_cast<std::uint32_t>(s.x.index >= 0 ? s.x.index
+                                                                   : wrapToWidth(s.x.constant, 16));
+            }
+            break;
+        case FastOp::Add:
+            if (word16)
+                operands(FastOp::AddWordConst16, FastOp::AddWordWord16);
+            break;
+        case FastOp::Sub:
+            if (word16)
+                operands(FastOp::SubWordConst16, FastOp::SubWordWord16);
+            break;
+        default:
+            break;
+        }
+        switch (f.op) { // the ops that read their Step find it by its byte offset
+        case FastOp::LoadEdge:
+        case FastOp::AndEdge:
+        case FastOp::OrEdge:
+        case FastOp::Reset:
+        case FastOp::Timer:
+        case FastOp::Counter:
+        case FastOp::TimerFull:
+        case FastOp::CounterFull:
+        case FastOp::Move:
+        case FastOp::Add:
+        case FastOp::Sub:
+        case FastOp::Inc:
+        case FastOp::Dec:
+            f.word = static_cast<std::int32_t>(i * sizeof(Step));
+            break;
+        default:
+            break;
+        }
         program.fast.push_back(f);
     }
     fuse(program.fast);

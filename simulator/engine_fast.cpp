@@ -83,8 +83,7 @@ template <bool Record, bool Forced> std::size_t Engine::runFast() {
     const std::int64_t period = m_stats.periodMs;
     const std::int64_t timerMax = p.timerMax;
     // Timers and counters whose set value is BCD or that an area gates take the full body
-    // (engine_timers.h); the rest run the lean one below, the same rules.
-    const bool gated = !p.gates.empty();
+    // (FastOp::TimerFull, engine_timers.h); the rest run the lean one below, the same rules.
     auto setOf = [R](const Step &s) {
         const std::int32_t set =
             std::max<std::int32_t>(0, s.x.index >= 0 ? R[s.x.index] : s.x.constant);
@@ -117,24 +116,65 @@ template <bool Record, bool Forced> std::size_t Engine::runFast() {
         }
         acc = v & gate;
     };
-    auto edgeAt = [&](std::size_t i, const FastStep &f) {
-        return edgeOf(edges[static_cast<std::size_t>(steps[i].slot)], bitOf(f),
-                      (steps[i].flags & kFalling) != 0);
+    // The Step of an op that reads it (FastStep::word holds its byte offset).
+    auto stepOf = [steps](const FastStep &f) -> const Step & {
+        return *reinterpret_cast<const Step *>(reinterpret_cast<const char *>(steps) + f.word);
+    };
+    auto edgeAt = [&](const FastStep &f) {
+        const Step &s = stepOf(f);
+        return edgeOf(edges[static_cast<std::size_t>(s.slot)], readBit(R, s.bit),
+                      (s.flags & kFalling) != 0);
     };
 
     // Direct-threaded: each op ends by jumping to the next op's code through the table, so
     // the processor predicts each op's successor on its own (a switch at the loop's head cost
     // 12 instructions a step, callgrind). Program::fast ends with a Stop sentinel, so the
     // loop tests no bound. The order is FastOp's.
-    static constexpr const void *table[] = {
-        &&opSlow,      &&opLoadStart,    &&opLoadStartNot, &&opLoad,        &&opLoadNot,
-        &&opAnd,       &&opAndNot,       &&opOr,           &&opOrNot,       &&opLoadEdge,
-        &&opAndEdge,   &&opOrEdge,       &&opAndBlock,     &&opOrBlock,     &&opPush,
-        &&opReadStack, &&opPop,          &&opInvert,       &&opOut,         &&opOutNot,
-        &&opSet,       &&opReset,        &&opTimer,        &&opCounter,     &&opMove,
-        &&opAdd,       &&opSub,          &&opInc,          &&opDec,         &&opNop,
-        &&opEnd,       &&opSeriesStart2, &&opSeriesAnd2,   &&opParallelAnd, &&opSeriesOr,
-        &&opBranchOut, &&opStop};
+    static constexpr const void *table[] = {&&opSlow,
+                                            &&opLoadStart,
+                                            &&opLoadStartNot,
+                                            &&opLoad,
+                                            &&opLoadNot,
+                                            &&opAnd,
+                                            &&opAndNot,
+                                            &&opOr,
+                                            &&opOrNot,
+                                            &&opLoadEdge,
+                                            &&opAndEdge,
+                                            &&opOrEdge,
+                                            &&opAndBlock,
+                                            &&opOrBlock,
+                                            &&opPush,
+                                            &&opReadStack,
+                                            &&opPop,
+                                            &&opInvert,
+                                            &&opOut,
+                                            &&opOutNot,
+                                            &&opSet,
+                                            &&opReset,
+                                            &&opTimer,
+                                            &&opCounter,
+                                            &&opMove,
+                                            &&opAdd,
+                                            &&opSub,
+                                            &&opInc,
+                                            &&opDec,
+                                            &&opNop,
+                                            &&opEnd,
+                                            &&opSeriesStart2,
+                                            &&opSeriesAnd2,
+                                            &&opParallelAnd,
+                                            &&opSeriesOr,
+                                            &&opBranchOut,
+                                            &&opTimerFull,
+                                            &&opCounterFull,
+                                            &&opMoveWord16,
+                                            &&opMoveConst16,
+                                            &&opAddWordConst16,
+                                            &&opAddWordWord16,
+                                            &&opSubWordConst16,
+                                            &&opSubWordWord16,
+                                            &&opStop};
     static_assert(std::size(table) == static_cast<std::size_t>(FastOp::Stop) + 1);
     const FastStep *f = fast;
     auto at = [&] { return static_cast<std::size_t>(f - fast); };
@@ -172,13 +212,13 @@ opOrNot:
     acc = acc | (!bitOf(*f) & gate);
     RUNG_NEXT();
 opLoadEdge:
-    load(edgeAt(at(), *f), (steps[at()].flags & kRungStart) != 0);
+    load(edgeAt(*f), (stepOf(*f).flags & kRungStart) != 0);
     RUNG_NEXT();
 opAndEdge:
-    acc = acc & edgeAt(at(), *f);
+    acc = acc & edgeAt(*f);
     RUNG_NEXT();
 opOrEdge:
-    acc = acc | (edgeAt(at(), *f) & gate);
+    acc = acc | (edgeAt(*f) & gate);
     RUNG_NEXT();
 opAndBlock:
     if (bsp > 0)
@@ -215,15 +255,11 @@ opSet:
     RUNG_NEXT();
 opReset:
     if (acc)
-        resetTargets(steps[at()], W);
+        resetTargets(stepOf(*f), W);
     RUNG_NEXT();
 opTimer : {
-    const Step &s = steps[at()];
-    if (gated || (s.flags & kBcd)) [[unlikely]] {
-        timer(s, at(), acc, pass);
-        RUNG_NEXT();
-    }
     // Engine::timer (engine_timers.h) for a set value in binary on an ungated element.
+    const Step &s = stepOf(*f);
     ElementState &st = states[s.slot];
     const std::int32_t set = setOf(s);
     const bool keeps = s.op == kTimerAccumulates;
@@ -243,16 +279,12 @@ opTimer : {
     RUNG_NEXT();
 }
 opCounter : {
-    const Step &s = steps[at()];
+    const Step &s = stepOf(*f);
     const bool oneInput = (s.flags & kOneInput) != 0;
     bool input = acc;
     if (!oneInput)
         input = bsp > 0 ? blocks[--bsp] : false;
     const bool reset = !oneInput && acc;
-    if (gated || (s.flags & kBcd)) [[unlikely]] {
-        counter(s, at(), input, reset, pass);
-        RUNG_NEXT();
-    }
     // Engine::counter (engine_timers.h) for a set value in binary on an ungated element.
     ElementState &st = states[s.slot];
     const std::int32_t set = setOf(s);
@@ -267,7 +299,7 @@ opCounter : {
 }
 opMove:
     if (acc) {
-        const Step &s = steps[at()];
+        const Step &s = stepOf(*f);
         const std::int32_t v = readWord(R, s.x);
         storeAt(s.dest, v, s.width);
         if (flags) [[unlikely]]
@@ -276,25 +308,25 @@ opMove:
     RUNG_NEXT();
 opAdd:
     if (acc) {
-        const Step &s = steps[at()];
+        const Step &s = stepOf(*f);
         storeAt(s.dest, std::int64_t{readWord(R, s.x)} + readWord(R, s.y), s.width);
     }
     RUNG_NEXT();
 opSub:
     if (acc) {
-        const Step &s = steps[at()];
+        const Step &s = stepOf(*f);
         storeAt(s.dest, std::int64_t{readWord(R, s.x)} - readWord(R, s.y), s.width);
     }
     RUNG_NEXT();
 opInc:
     if (acc) {
-        const Step &s = steps[at()];
+        const Step &s = stepOf(*f);
         storeAt(s.dest, std::int64_t{R[s.dest]} + 1, s.width);
     }
     RUNG_NEXT();
 opDec:
     if (acc) {
-        const Step &s = steps[at()];
+        const Step &s = stepOf(*f);
         storeAt(s.dest, std::int64_t{R[s.dest]} - 1, s.width);
     }
     RUNG_NEXT();
@@ -375,6 +407,42 @@ opBranchOut : {
     f += 3;
     RUNG_NEXT();
 }
+opTimerFull:
+    timer(stepOf(*f), at(), acc, pass);
+    RUNG_NEXT();
+opCounterFull : {
+    const Step &s = stepOf(*f);
+    const bool oneInput = (s.flags & kOneInput) != 0;
+    bool input = acc;
+    if (!oneInput)
+        input = bsp > 0 ? blocks[--bsp] : false;
+    counter(s, at(), input, !oneInput && acc, pass);
+    RUNG_NEXT();
+}
+opMoveWord16:
+    if (acc)
+        storeAt(f->word, R[f->mask], 16);
+    RUNG_NEXT();
+opMoveConst16:
+    if (acc)
+        storeAt(f->word, static_cast<std::int32_t>(f->mask), 16);
+    RUNG_NEXT();
+opAddWordConst16:
+    if (acc)
+        storeAt(f->word, std::int64_t{R[f->mask]} + static_cast<std::int32_t>(f->flip), 16);
+    RUNG_NEXT();
+opAddWordWord16:
+    if (acc)
+        storeAt(f->word, std::int64_t{R[f->mask]} + R[f->flip], 16);
+    RUNG_NEXT();
+opSubWordConst16:
+    if (acc)
+        storeAt(f->word, std::int64_t{R[f->mask]} - static_cast<std::int32_t>(f->flip), 16);
+    RUNG_NEXT();
+opSubWordWord16:
+    if (acc)
+        storeAt(f->word, std::int64_t{R[f->mask]} - R[f->flip], 16);
+    RUNG_NEXT();
 opEnd:
     if constexpr (Record)
         m_flow[at()] = acc;

@@ -270,12 +270,26 @@ enum class FastOp : std::uint8_t {
     ParallelAnd,  // LD / LDI a, OR / ORI b, ANB: a two-contact branch in series
     SeriesOr,     // LD / LDI a, AND / ANI b, ORB: a two-contact series in parallel
     BranchOut,    // MPS, AND / ANI a, OUT / OUTN y, MPP: an output branch with a contact
-    Stop,         // after the last step: the list ended without END
+    // A timer or counter with a BCD set value or on a gated element (Area::enabledBy): the
+    // full body (engine_timers.h). Timer and Counter are the others.
+    TimerFull,
+    CounterFull,
+    // 16-bit word moves and sums without the W353 flags, operands in the fast step (word =
+    // the destination, mask = x, flip = y; a K operand is its value): no Step read.
+    MoveWord16,
+    MoveConst16,
+    AddWordConst16,
+    AddWordWord16,
+    SubWordConst16,
+    SubWordWord16,
+    Stop, // after the last step: the list ended without END
 };
 
 struct FastStep {
     FastOp op = FastOp::Slow;
-    std::int32_t word = -1; // contacts and coils: the bit (Step::bit)
+    // Contacts and coils: the bit (Step::bit). Ops that read their Step: its byte offset in
+    // Program::steps.
+    std::int32_t word = -1;
     std::uint32_t mask = 0;
     // Negated contacts and coils: the mask, so that ((word ^ flip) & mask) is the contact's
     // value; 0 otherwise.

@@ -111,15 +111,15 @@ TEST(FastLoop, RandomProgramsOfEveryFamilyScanAsTheFullInterpreter) {
 }
 
 // What the random programs do not write: SET / RST of bits, words, timers and counters, the
-// word arithmetic, a jump over a rung, an interlock (Slow steps between fast ones), a
-// one-input counter and its reset.
+// word arithmetic (16-bit moves and sums of words and constants, INC, DEC), a jump over a
+// rung, an interlock (Slow steps between fast ones), a one-input counter and its reset.
 TEST(FastLoop, CoilsBoxesJumpsAndInterlocksScanAsTheFullInterpreter) {
     const char *program = "LD X0\nSET M0\nLD X1\nRST M0\nLD X2\nANI M0\nOUT Y0\n"
                           "LD X3\nCNT C0 K3\nLD X4\nAND X5\nAND X6\nRST C0\nLD C0\nOUT Y1\n"
                           "LD X5\nTMR T0 K2\nLD T0\nOUT Y2\nLD X6\nRST T0\n"
                           "LD X7\nJMP K1\nLD X0\nOUT Y3\nMOV D0 D1\nJME K1\n"
                           "LD X1\nIL\nLD X2\nORI X3\nOUT Y4\nADD D1 K7 D2\nSUB D2 K3 D3\nILC\n"
-                          "LD SM9000\nINC D4\nDEC D5\nADD D4 D5 D6\nMOV D6 D7\n"
+                          "LD SM9000\nINC D4\nDEC D5\nADD D4 D5 D6\nMOV D6 D7\nLD X2\nMOV K-7 D8\nSUB D4 D5 D9\n"
                           "LDP X3\nOR X4\nANDP X5\nOUTN Y5\nLDF X6\nINV\nOUT Y6\nEND";
     test::TableSim sim(program);
     ASSERT_TRUE(sim.result.ok()) << sim.result.diagnostics.front().message.toStdString();
