@@ -69,6 +69,18 @@ FastOp fastOf(const Step &s) {
         return FastOp::Nop;
     case Code::End:
         return FastOp::End;
+    case Code::StepLadder:
+        return bit ? FastOp::StepLadder : FastOp::Slow;
+    case Code::Return:
+        return FastOp::Return;
+    case Code::Interlock:
+        return FastOp::Interlock;
+    case Code::InterlockClear:
+        return FastOp::InterlockClear;
+    case Code::SetStep:
+        return bit ? FastOp::SetStep : FastOp::Slow;
+    case Code::Jump:
+        return FastOp::Jump;
     default:
         return FastOp::Slow;
     }
@@ -166,7 +178,11 @@ void buildFastSteps(Program &program) {
         case FastOp::Sub:
         case FastOp::Inc:
         case FastOp::Dec:
+        case FastOp::SetStep:
             f.word = static_cast<std::int32_t>(i * sizeof(Step));
+            break;
+        case FastOp::Jump:
+            f.word = s.slot;
             break;
         default:
             break;

@@ -49,8 +49,8 @@ template <bool Record, bool Forced> std::size_t Engine::runFast() {
     int psp = 0;
     bool acc = false;
     bool gate = true;
-    m_regs.interlock = true;
-    m_regs.stepActive = true;
+    bool interlock = true;
+    bool stepActive = true;
     m_regs.depth = 0;
 
     auto bitOf = [R](const FastStep &f) {
@@ -174,6 +174,12 @@ template <bool Record, bool Forced> std::size_t Engine::runFast() {
                                             &&opAddWordWord16,
                                             &&opSubWordConst16,
                                             &&opSubWordWord16,
+                                            &&opStepLadder,
+                                            &&opReturn,
+                                            &&opInterlock,
+                                            &&opInterlockClear,
+                                            &&opSetStep,
+                                            &&opJump,
                                             &&opStop};
     static_assert(std::size(table) == static_cast<std::size_t>(FastOp::Stop) + 1);
     const FastStep *f = fast;
@@ -338,11 +344,15 @@ opSlow : {
     Registers &r = m_regs;
     r.acc = acc;
     r.gate = gate;
+    r.interlock = interlock;
+    r.stepActive = stepActive;
     r.bsp = bsp;
     r.psp = psp;
     const std::size_t next = execute<Record, true>(at(), at() + 1);
     acc = r.acc;
     gate = r.gate;
+    interlock = r.interlock;
+    stepActive = r.stepActive;
     bsp = r.bsp;
     psp = r.psp;
     if (next >= n)
@@ -442,6 +452,38 @@ opSubWordConst16:
 opSubWordWord16:
     if (acc)
         storeAt(f->word, std::int64_t{R[f->mask]} - R[f->flip], 16);
+    RUNG_NEXT();
+opStepLadder:
+    // STL: what follows runs while the step's bit is ON, up to the next STL or RET.
+    stepActive = bitOf(*f);
+    gate = interlock && stepActive;
+    acc = gate;
+    RUNG_NEXT();
+opReturn:
+    stepActive = true;
+    gate = interlock;
+    acc = gate;
+    RUNG_NEXT();
+opInterlock:
+    interlock = acc;
+    gate = interlock && stepActive;
+    RUNG_NEXT();
+opInterlockClear:
+    interlock = true;
+    gate = stepActive;
+    RUNG_NEXT();
+opSetStep:
+    if (acc) { // SET of a step relay inside an STL block: the current step is reset
+        const Step &s = stepOf(*f);
+        putBit(s.bit, true);
+        putBit(p.bitLists[static_cast<std::size_t>(s.slot)], false);
+    }
+    RUNG_NEXT();
+opJump:
+    // JMP / CJ forward while its condition is OFF: on at its JME, whose power flow it
+    // records, as the full interpreter does.
+    if (!acc && f->word > static_cast<std::int32_t>(at()))
+        f = fast + f->word;
     RUNG_NEXT();
 opEnd:
     if constexpr (Record)

@@ -282,6 +282,14 @@ enum class FastOp : std::uint8_t {
     AddWordWord16,
     SubWordConst16,
     SubWordWord16,
+    // Control that only changes the interpreter's registers (the interlock, the step ladder)
+    // or the next step: word = the bit (STL), the target step (JMP / CJ).
+    StepLadder,
+    Return,
+    Interlock,
+    InterlockClear,
+    SetStep,
+    Jump,
     Stop, // after the last step: the list ended without END
 };
 

@@ -130,6 +130,21 @@ TEST(FastLoop, CoilsBoxesJumpsAndInterlocksScanAsTheFullInterpreter) {
                     2);
 }
 
+// A step ladder (STL / RET, SET of the next step), as the benchmarks' traffic light runs it for
+// a simulated day: two full cycles of its lights.
+TEST(FastLoop, AStepLadderScansAsTheFullInterpreter) {
+    test::TableSim sim("LD SM9002\nSET S0\n"
+                       "STL S0\nOUT Y0\nTMR T0 K350\nLD T0\nSET S1\n"
+                       "STL S1\nOUT Y1\nTMR T1 K50\nLD T1\nSET S2\n"
+                       "STL S2\nOUT M2\nTMR T2 K250\nLD T2\nSET S3\n"
+                       "STL S3\nTMR T3 K50\nLDI T5\nTMR T4 K5\nLD T4\nTMR T5 K5\nLDI T4\n"
+                       "OUT M3\nLD T3\nSET S0\nRET\nLD M2\nOR M3\nOUT Y2\nEND");
+    ASSERT_TRUE(sim.result.ok()) << sim.result.diagnostics.front().message.toStdString();
+    for (const FastStep &f : sim.result.program->fast)
+        EXPECT_NE(f.op, FastOp::Slow);
+    expectSameScans(sim.result.program, {}, {sim.at("Y0"), sim.at("S1")}, 2000, 9);
+}
+
 // The benchmark's 2048 steps run in the fast loop alone: no step goes to the full
 // interpreter (so the benchmark measures the loop), and the results agree.
 TEST(FastLoop, TheBenchmarkProgramRunsInTheFastLoopAlone) {
