@@ -358,8 +358,10 @@ CompileResult Compiler::run() {
                      [](const model::Diagnostic &a, const model::Diagnostic &b) {
                          return a.location.line < b.location.line;
                      });
-    if (!m_failed)
+    if (!m_failed) {
+        buildFastSteps(*m_program);
         result.program = m_program;
+    }
     return result;
 }
 

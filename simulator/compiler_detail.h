@@ -26,6 +26,9 @@ inline QString trCompiler(const char *text) {
     return QCoreApplication::translate("rung::simulator::Compiler", text);
 }
 
+// Program::fast from Program::steps (compile_fast.cpp).
+void buildFastSteps(Program &program);
+
 // Blocks saved under the accumulator: every open block but the one in the accumulator.
 constexpr int kMaxBlockDepth = model::kMaxOpenBlocks - 1;
 constexpr int kMaxZoneElements = 65536;

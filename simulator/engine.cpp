@@ -83,12 +83,20 @@ void Engine::scan() {
     const std::size_t n = m_program->steps.size();
     beginScan();
     // The plain program's loop has no test for the rare steps at all (a test per step cost
-    // ~10% of a scan, docs/performance.md).
-    const bool special = m_program->specialSteps;
-    if (m_record)
-        special ? execute<true, false>(0, n) : execute<true, false, false>(0, n);
-    else
-        special ? execute<false, false>(0, n) : execute<false, false, false>(0, n);
+    // ~10% of a scan, docs/performance.md); the fast loop runs it when the compiler made one.
+    if (m_program->fast.size() == n + 1) {
+        const bool forced = !m_forcedWords.empty();
+        if (m_record)
+            forced ? runFast<true, true>() : runFast<true, false>();
+        else
+            forced ? runFast<false, true>() : runFast<false, false>();
+    } else {
+        const bool special = m_program->specialSteps;
+        if (m_record)
+            special ? execute<true, false>(0, n) : execute<true, false, false>(0, n);
+        else
+            special ? execute<false, false>(0, n) : execute<false, false, false>(0, n);
+    }
     endScan();
     recordExecTime(std::chrono::duration_cast<std::chrono::nanoseconds>(
                        std::chrono::steady_clock::now() - start)

@@ -200,6 +200,10 @@ private:
     template <bool Record, bool Resumable, bool Special = true>
     std::size_t execute(std::size_t from, std::size_t to);
     std::size_t runSegment(std::size_t from, std::size_t to);
+    // A whole scan's steps from the first (engine_fast.cpp): Program::fast's loop, the full
+    // interpreter for a Slow step. Forced: some bit is forced (without, no write looks).
+    template <bool Record, bool Forced>
+    std::size_t runFast();
     void startInsideScan();
     void completeInsideScan();
     bool breakpointHolds(std::size_t instruction);

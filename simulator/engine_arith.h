@@ -3,8 +3,9 @@
 // The word instructions longer than a line, as execute() runs them with their input ON:
 // transfers and moves, the three-way compare, multiplication, division, the PL110 FM
 // functions. (Word logic and BCD are Engine::wordLogic, the CPM1's own Engine::arithmetic.)
-// Included by engine_execute.cpp alone: the bodies are inlined into the scan's loop (engine.h,
-// Engine::Pass). Not part of the simulator's interface: include engine.h instead.
+// Included by engine_execute.cpp and engine_fast.cpp alone: the bodies are inlined into the
+// scans' loops (engine.h, Engine::Pass). Not part of the simulator's interface: include engine.h
+// instead.
 
 #include "engine.h"
 

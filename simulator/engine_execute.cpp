@@ -128,23 +128,6 @@ std::int64_t Engine::outOfDecimalRange(std::size_t step, std::int64_t value) {
     return wrapped;
 }
 
-// RST: the listed bits OFF, words 0, timer and counter elements cleared.
-[[gnu::always_inline]] inline void Engine::resetTargets(const Step &s, std::int32_t *W) {
-    const Program &p = *m_program;
-    for (int k = 0; k < s.count; ++k) {
-        const ResetTarget &t = p.resets[static_cast<std::size_t>(s.slot + k)];
-        if (t.bit.valid())
-            put(W, t.bit, false);
-        if (t.word >= 0)
-            store(t.word, 0, 32);
-        if (t.state >= 0) { // the input edge memory stays: no count on release
-            ElementState &st = m_states[static_cast<std::size_t>(t.state)];
-            st.accumulated = 0;
-            st.running = 0;
-        }
-    }
-}
-
 // STEP(08) B: 254.07 is ON in the cycle a step starts (W353).
 [[gnu::always_inline]] inline void Engine::markStepStart(const Step &s, bool active,
                                                          std::int32_t *R) {

@@ -2,14 +2,32 @@
 
 // The timer and counter boxes of every family, as execute() runs them: the set value read
 // (readSet), the element's state in m_states, the done bit and the current value written.
-// Included by engine_execute.cpp alone: the bodies are inlined into the scan's loop (engine.h,
-// Engine::Pass). Not part of the simulator's interface: include engine.h instead.
+// Included by engine_execute.cpp and engine_fast.cpp alone: the bodies are inlined into the
+// scans' loops (engine.h, Engine::Pass). Not part of the simulator's interface: include engine.h
+// instead.
 
 #include "engine.h"
 
 #include <algorithm>
 
 namespace rung::simulator {
+
+// RST: the listed bits OFF, words 0, timer and counter elements cleared.
+[[gnu::always_inline]] inline void Engine::resetTargets(const Step &s, std::int32_t *W) {
+    const Program &p = *m_program;
+    for (int k = 0; k < s.count; ++k) {
+        const ResetTarget &t = p.resets[static_cast<std::size_t>(s.slot + k)];
+        if (t.bit.valid())
+            put(W, t.bit, false);
+        if (t.word >= 0)
+            store(t.word, 0, 32);
+        if (t.state >= 0) { // the input edge memory stays: no count on release
+            ElementState &st = m_states[static_cast<std::size_t>(t.state)];
+            st.accumulated = 0;
+            st.running = 0;
+        }
+    }
+}
 
 [[gnu::always_inline]] inline bool Engine::gateOpen(const Pass &pass, std::int32_t slot) const {
     const Program &p = pass.program;

@@ -226,6 +226,84 @@ struct Step {
     std::int32_t count = 0;  // list length; timers: time base in ms
 };
 
+// The plain scan's form of a step (Engine::runFast, engine_fast.cpp): one per Step, same
+// index, 16 bytes (and a Stop after the last), so that the loop a whole scan runs reads a quarter
+// of the Step array and tests no flag at run time. What the fast loop does not run itself (Slow)
+// goes to the full interpreter for that one step; the other ops read anything beyond a bit from the
+// Step.
+enum class FastOp : std::uint8_t {
+    Slow,
+    LoadStart, // LD at a rung start: the block and push stacks empty
+    LoadStartNot,
+    Load, // LD inside a rung: the accumulator goes onto the block stack
+    LoadNot,
+    And,
+    AndNot,
+    Or,
+    OrNot,
+    LoadEdge, // LDP / LDF ..., the edge memory in the Step's slot
+    AndEdge,
+    OrEdge,
+    AndBlock,
+    OrBlock,
+    Push,
+    ReadStack,
+    Pop,
+    Invert,
+    Out,
+    OutNot,
+    Set,
+    Reset,
+    Timer,
+    Counter, // Code::Counter, either form
+    Move,
+    Add,
+    Sub,
+    Inc,
+    Dec,
+    Nop, // NOP, JPE / JME
+    End,
+    // Runs of steps as one (the first step's op; the others keep theirs, so a jump may still
+    // land inside). A contact's `flip` says whether it is negated.
+    SeriesStart2, // LD / LDI a, AND / ANI b
+    SeriesAnd2,   // AND / ANI a, AND / ANI b
+    ParallelAnd,  // LD / LDI a, OR / ORI b, ANB: a two-contact branch in series
+    SeriesOr,     // LD / LDI a, AND / ANI b, ORB: a two-contact series in parallel
+    BranchOut,    // MPS, AND / ANI a, OUT / OUTN y, MPP: an output branch with a contact
+    // A timer or counter with a BCD set value or on a gated element (Area::enabledBy): the
+    // full body (engine_timers.h). Timer and Counter are the others.
+    TimerFull,
+    CounterFull,
+    // 16-bit word moves and sums without the W353 flags, operands in the fast step (word =
+    // the destination, mask = x, flip = y; a K operand is its value): no Step read.
+    MoveWord16,
+    MoveConst16,
+    AddWordConst16,
+    AddWordWord16,
+    SubWordConst16,
+    SubWordWord16,
+    // Control that only changes the interpreter's registers (the interlock, the step ladder)
+    // or the next step: word = the bit (STL), the target step (JMP / CJ).
+    StepLadder,
+    Return,
+    Interlock,
+    InterlockClear,
+    SetStep,
+    Jump,
+    Stop, // after the last step: the list ended without END
+};
+
+struct FastStep {
+    FastOp op = FastOp::Slow;
+    // Contacts and coils: the bit (Step::bit). Ops that read their Step: its byte offset in
+    // Program::steps.
+    std::int32_t word = -1;
+    std::uint32_t mask = 0;
+    // Negated contacts and coils: the mask, so that ((word ^ flip) & mask) is the contact's
+    // value; 0 otherwise.
+    std::uint32_t flip = 0;
+};
+
 // A system device the engine drives at the start of every scan.
 struct SystemBinding {
     model::SystemRole role = model::SystemRole::Other;
@@ -319,8 +397,9 @@ struct CommDevices {
 
 struct Program {
     std::shared_ptr<const MemoryLayout> layout;
-    std::vector<Step> steps; // index = instruction index in the list
-    std::vector<int> lines;  // source line of each step
+    std::vector<Step> steps;    // index = instruction index in the list
+    std::vector<FastStep> fast; // one per step and a Stop (buildFastSteps, compile_fast.cpp)
+    std::vector<int> lines;     // source line of each step
     std::vector<BitRef> bitLists;
     std::vector<ResetTarget> resets;
     std::vector<OperandRef> refs; // operands resolved at run time (kResolve)

@@ -63,7 +63,7 @@ Loaded load(const QString &text) {
     return l;
 }
 
-class GoldenTrace : public testing::TestWithParam<std::string> {};
+class GoldenTrace : public ::testing::TestWithParam<std::string> {};
 
 } // namespace
 
@@ -87,8 +87,8 @@ TEST_P(GoldenTrace, PrintsTheExpectedTrace) {
     EXPECT_EQ(actual.toStdString(), expected.toStdString());
 }
 
-INSTANTIATE_TEST_SUITE_P(Manuals, GoldenTrace, testing::ValuesIn(goldenNames()),
-                         [](const testing::TestParamInfo<std::string> &info) {
+INSTANTIATE_TEST_SUITE_P(Manuals, GoldenTrace, ::testing::ValuesIn(goldenNames()),
+                         [](const ::testing::TestParamInfo<std::string> &info) {
                              return info.param;
                          });
 

@@ -28,7 +28,7 @@ std::vector<std::string> programs() {
     return names;
 }
 
-class GoldenAgreement : public testing::TestWithParam<std::string> {};
+class GoldenAgreement : public ::testing::TestWithParam<std::string> {};
 
 } // namespace
 
@@ -57,7 +57,7 @@ TEST_P(GoldenAgreement, CheckConvertAndSimulateTakeTheSameProgram) {
               model::printInstructionList(parsed.list, bare).toStdString());
 }
 
-INSTANTIATE_TEST_SUITE_P(Manuals, GoldenAgreement, testing::ValuesIn(programs()),
-                         [](const testing::TestParamInfo<std::string> &info) {
+INSTANTIATE_TEST_SUITE_P(Manuals, GoldenAgreement, ::testing::ValuesIn(programs()),
+                         [](const ::testing::TestParamInfo<std::string> &info) {
                              return info.param;
                          });

@@ -1,0 +1,198 @@
+#include "compiler_detail.h"
+
+#include <algorithm>
+
+// Program::fast: which steps the plain scan's loop (Engine::runFast, engine_fast.cpp) runs
+// itself. A step keeps the full interpreter (Slow) when it has an operand resolved at run
+// time or runs differentiated, or when its code moves the loop or the interlock state.
+
+namespace rung::simulator::detail {
+
+namespace {
+
+FastOp fastOf(const Step &s) {
+    if (s.flags & (kResolve | kDifferentiated))
+        return FastOp::Slow;
+    const bool negated = (s.flags & kNegated) != 0;
+    const bool bit = s.bit.valid();
+    switch (s.code) {
+    case Code::Load:
+        if (!bit)
+            return FastOp::Slow;
+        if (s.flags & kRungStart)
+            return negated ? FastOp::LoadStartNot : FastOp::LoadStart;
+        return negated ? FastOp::LoadNot : FastOp::Load;
+    case Code::And:
+        return !bit ? FastOp::Slow : negated ? FastOp::AndNot : FastOp::And;
+    case Code::Or:
+        return !bit ? FastOp::Slow : negated ? FastOp::OrNot : FastOp::Or;
+    case Code::LoadEdge:
+        return bit ? FastOp::LoadEdge : FastOp::Slow;
+    case Code::AndEdge:
+        return bit ? FastOp::AndEdge : FastOp::Slow;
+    case Code::OrEdge:
+        return bit ? FastOp::OrEdge : FastOp::Slow;
+    case Code::AndBlock:
+        return FastOp::AndBlock;
+    case Code::OrBlock:
+        return FastOp::OrBlock;
+    case Code::Push:
+        return FastOp::Push;
+    case Code::ReadStack:
+        return FastOp::ReadStack;
+    case Code::Pop:
+        return FastOp::Pop;
+    case Code::Invert:
+        return FastOp::Invert;
+    case Code::Out:
+        return !bit ? FastOp::Slow : negated ? FastOp::OutNot : FastOp::Out;
+    case Code::Set:
+        return bit ? FastOp::Set : FastOp::Slow;
+    case Code::Reset:
+        return FastOp::Reset;
+    case Code::Timer:
+        return FastOp::Timer;
+    case Code::Counter:
+        return FastOp::Counter;
+    case Code::Move:
+        return FastOp::Move;
+    case Code::Add:
+        return FastOp::Add;
+    case Code::Sub:
+        return FastOp::Sub;
+    case Code::Inc:
+        return FastOp::Inc;
+    case Code::Dec:
+        return FastOp::Dec;
+    case Code::Nop:
+    case Code::JumpEnd:
+        return FastOp::Nop;
+    case Code::End:
+        return FastOp::End;
+    case Code::StepLadder:
+        return bit ? FastOp::StepLadder : FastOp::Slow;
+    case Code::Return:
+        return FastOp::Return;
+    case Code::Interlock:
+        return FastOp::Interlock;
+    case Code::InterlockClear:
+        return FastOp::InterlockClear;
+    case Code::SetStep:
+        return bit ? FastOp::SetStep : FastOp::Slow;
+    case Code::Jump:
+        return FastOp::Jump;
+    default:
+        return FastOp::Slow;
+    }
+}
+
+// Runs of fast steps that run as one (FastOp::SeriesStart2 ...): the first step's op
+// becomes the run's, the others keep theirs.
+void fuse(std::vector<FastStep> &fast) {
+    auto is = [&](std::size_t i, std::initializer_list<FastOp> ops) {
+        return i < fast.size() && std::find(ops.begin(), ops.end(), fast[i].op) != ops.end();
+    };
+    const auto contactAnd = {FastOp::And, FastOp::AndNot};
+    const auto load = {FastOp::Load, FastOp::LoadNot};
+    for (std::size_t i = 0; i < fast.size();) {
+        if (is(i, {FastOp::LoadStart, FastOp::LoadStartNot}) && is(i + 1, contactAnd)) {
+            fast[i].op = FastOp::SeriesStart2;
+            i += 2;
+        } else if (is(i, load) && is(i + 1, {FastOp::Or, FastOp::OrNot}) &&
+                   is(i + 2, {FastOp::AndBlock})) {
+            fast[i].op = FastOp::ParallelAnd;
+            i += 3;
+        } else if (is(i, load) && is(i + 1, contactAnd) && is(i + 2, {FastOp::OrBlock})) {
+            fast[i].op = FastOp::SeriesOr;
+            i += 3;
+        } else if (is(i, contactAnd) && is(i + 1, contactAnd)) {
+            fast[i].op = FastOp::SeriesAnd2;
+            i += 2;
+        } else if (is(i, {FastOp::Push}) && is(i + 1, contactAnd) &&
+                   is(i + 2, {FastOp::Out, FastOp::OutNot}) && is(i + 3, {FastOp::Pop})) {
+            fast[i].op = FastOp::BranchOut;
+            i += 4;
+        } else {
+            ++i;
+        }
+    }
+}
+
+} // namespace
+
+void buildFastSteps(Program &program) {
+    program.fast.clear();
+    program.fast.reserve(program.steps.size() + 1);
+    const bool lean = program.gates.empty(); // no timer or counter is gated
+    const bool flags = program.flags.any();
+    for (std::size_t i = 0; i < program.steps.size(); ++i) {
+        const Step &s = program.steps[i];
+        FastStep f;
+        f.op = fastOf(s);
+        f.word = s.bit.word;
+        f.mask = s.bit.mask;
+        f.flip = (s.flags & kNegated) ? s.bit.mask : 0;
+        const bool word16 = s.width == 16 && !flags && s.dest >= 0 && s.x.index >= 0;
+        auto operands = [&](FastOp wordConst, FastOp wordWord) {
+            f.op = s.y.index >= 0 ? wordWord : wordConst;
+            f.word = s.dest;
+            f.mask = static_cast<std::uint32_t>(s.x.index);
+            f.flip = static_cast<std::uint32_t>(s.y.index >= 0 ? s.y.index : s.y.constant);
+        };
+        switch (f.op) {
+        case FastOp::Timer:
+        case FastOp::Counter:
+            if (!lean || (s.flags & kBcd))
+                f.op = f.op == FastOp::Timer ? FastOp::TimerFull : FastOp::CounterFull;
+            break;
+        case FastOp::Move:
+            if (s.width == 16 && !flags && s.dest >= 0) {
+                f.op = s.x.index >= 0 ? FastOp::MoveWord16 : FastOp::MoveConst16;
+                f.word = s.dest;
+                f.mask = static_cast<std::uint32_t>(s.x.index >= 0 ? s.x.index
+                                                                   : wrapToWidth(s.x.constant, 16));
+            }
+            break;
+        case FastOp::Add:
+            if (word16)
+                operands(FastOp::AddWordConst16, FastOp::AddWordWord16);
+            break;
+        case FastOp::Sub:
+            if (word16)
+                operands(FastOp::SubWordConst16, FastOp::SubWordWord16);
+            break;
+        default:
+            break;
+        }
+        switch (f.op) { // the ops that read their Step find it by its byte offset
+        case FastOp::LoadEdge:
+        case FastOp::AndEdge:
+        case FastOp::OrEdge:
+        case FastOp::Reset:
+        case FastOp::Timer:
+        case FastOp::Counter:
+        case FastOp::TimerFull:
+        case FastOp::CounterFull:
+        case FastOp::Move:
+        case FastOp::Add:
+        case FastOp::Sub:
+        case FastOp::Inc:
+        case FastOp::Dec:
+        case FastOp::SetStep:
+            f.word = static_cast<std::int32_t>(i * sizeof(Step));
+            break;
+        case FastOp::Jump:
+            f.word = s.slot;
+            break;
+        default:
+            break;
+        }
+        program.fast.push_back(f);
+    }
+    fuse(program.fast);
+    FastStep stop;
+    stop.op = FastOp::Stop;
+    program.fast.push_back(stop);
+}
+
+} // namespace rung::simulator::detail

@@ -1,0 +1,187 @@
+// The plain scan's fast loop (Engine::runFast, issue 35) against the full interpreter: the
+// same image, the same power flow and the same runtime errors, scan after scan, on random
+// programs of every family, on the example projects, on forced bits and on the steps the loop
+// hands to the full interpreter. The reference is the engine stepped one instruction at a
+// time (stepInstruction), which never runs the fast loop.
+
+#include "sim_test_target.h"
+
+#include "tests/benchmarks/mixed_program.h"
+#include "tests/model/random_program.h"
+
+#include "model/convert/convert.h"
+#include "model/project/project.h"
+#include "model/target/address.h"
+
+#include <QDirIterator>
+
+#include <gtest/gtest.h>
+
+#include <random>
+
+namespace rung::simulator {
+
+namespace {
+
+void stepWholeScan(Engine &e) {
+    int steps = 0;
+    while (e.stepInstruction() != ScanStop::Completed)
+        ASSERT_LT(++steps, 1000000);
+}
+
+// Scans `fast` and `stepped` (both built from `program`) side by side with random inputs,
+// forcing a bit now and then; every scan the images, the power flow and the errors agree.
+void expectSameScans(const std::shared_ptr<const Program> &program,
+                     const std::vector<model::Address> &inputs,
+                     const std::vector<model::Address> &forceable, int scans, unsigned seed,
+                     unsigned onInFour = 3) {
+    Engine fast(program);
+    Engine stepped(program);
+    for (Engine *e : {&fast, &stepped})
+        e->setPowerFlowRecording(true);
+    std::mt19937 rng(seed);
+    for (int scan = 0; scan < scans; ++scan) {
+        for (const model::Address &in : inputs) {
+            const bool on = (rng() % 4u) < onInFour;
+            fast.setBit(in, on);
+            stepped.setBit(in, on);
+        }
+        if (!forceable.empty() && scan % 7 == 3) {
+            const model::Address &a = forceable[rng() % forceable.size()];
+            if (scan % 21 == 3) {
+                fast.releaseAll();
+                stepped.releaseAll();
+            } else {
+                const bool on = (rng() & 1u) != 0;
+                fast.force(a, on);
+                stepped.force(a, on);
+            }
+        }
+        const bool record = scan % 5 != 4; // the scans nobody watches too
+        fast.setPowerFlowRecording(record);
+        stepped.setPowerFlowRecording(record);
+        fast.scan();
+        stepWholeScan(stepped);
+        ASSERT_EQ(test::image(fast), test::image(stepped)) << "scan " << scan;
+        if (record) {
+            ASSERT_EQ(fast.powerFlow(), stepped.powerFlow()) << "scan " << scan;
+        }
+        ASSERT_EQ(fast.runtimeErrors().size(), stepped.runtimeErrors().size()) << "scan " << scan;
+    }
+}
+
+std::vector<model::Address> inputsOf(const model::Target &t, const model::InstructionList &list,
+                                     std::vector<model::Address> *written = nullptr) {
+    std::vector<model::Address> inputs;
+    for (const model::Instruction &ins : list.instructions)
+        for (const model::Operand &op : ins.operands) {
+            if (op.kind != model::Operand::Kind::Device)
+                continue;
+            const model::Area &area = t.area(op.address.area);
+            if (area.physical && !area.writable)
+                inputs.push_back(op.address);
+            else if (written && area.kind == model::AreaKind::Bit)
+                written->push_back(op.address);
+        }
+    return inputs;
+}
+
+} // namespace
+
+TEST(FastLoop, RandomProgramsOfEveryFamilyScanAsTheFullInterpreter) {
+    for (const model::Family family :
+         {model::Family::Vpc, model::Family::Vigor, model::Family::Cpm1, model::Family::Pl110}) {
+        const model::Target &t = model::Target::get(family);
+        for (std::uint64_t seed = 1; seed <= 30; ++seed) {
+            rung::testing::RandomProgramOptions o;
+            o.rungs = 10;
+            o.extended = true;
+            const QString text = rung::testing::randomProgram(t, seed, o);
+            SCOPED_TRACE(
+                QStringLiteral("%1 seed %2\n%3").arg(t.id).arg(seed).arg(text).toStdString());
+            const model::ParseResult parsed = model::parseInstructionList(t, text);
+            ASSERT_TRUE(parsed.ok());
+            const CompileResult compiled = compileProgram(parsed.list);
+            ASSERT_TRUE(compiled.ok());
+            std::vector<model::Address> written;
+            const auto inputs = inputsOf(t, parsed.list, &written);
+            expectSameScans(compiled.program, inputs, written, 40, static_cast<unsigned>(seed));
+        }
+    }
+}
+
+// What the random programs do not write: SET / RST of bits, words, timers and counters, the
+// word arithmetic (16-bit moves and sums of words and constants, INC, DEC), a jump over a
+// rung, an interlock (Slow steps between fast ones), a one-input counter and its reset.
+TEST(FastLoop, CoilsBoxesJumpsAndInterlocksScanAsTheFullInterpreter) {
+    const char *program = "LD X0\nSET M0\nLD X1\nRST M0\nLD X2\nANI M0\nOUT Y0\n"
+                          "LD X3\nCNT C0 K3\nLD X4\nAND X5\nAND X6\nRST C0\nLD C0\nOUT Y1\n"
+                          "LD X5\nTMR T0 K2\nLD T0\nOUT Y2\nLD X6\nRST T0\n"
+                          "LD X7\nJMP K1\nLD X0\nOUT Y3\nMOV D0 D1\nJME K1\n"
+                          "LD X1\nIL\nLD X2\nORI X3\nOUT Y4\nADD D1 K7 D2\nSUB D2 K3 D3\nILC\n"
+                          "LD SM9000\nINC D4\nDEC D5\nADD D4 D5 D6\nMOV D6 D7\nLD X2\nMOV K-7 D8\nSUB D4 D5 D9\n"
+                          "LDP X3\nOR X4\nANDP X5\nOUTN Y5\nLDF X6\nINV\nOUT Y6\nEND";
+    test::TableSim sim(program);
+    ASSERT_TRUE(sim.result.ok()) << sim.result.diagnostics.front().message.toStdString();
+    std::vector<model::Address> inputs;
+    for (int k = 0; k < 8; ++k)
+        inputs.push_back(sim.at(QStringLiteral("X%1").arg(k).toLatin1().constData()));
+    expectSameScans(sim.result.program, inputs, {sim.at("Y0"), sim.at("M0"), sim.at("Y4")}, 300, 3,
+                    2);
+}
+
+// A step ladder (STL / RET, SET of the next step), as the benchmarks' traffic light runs it for
+// a simulated day: two full cycles of its lights.
+TEST(FastLoop, AStepLadderScansAsTheFullInterpreter) {
+    test::TableSim sim("LD SM9002\nSET S0\n"
+                       "STL S0\nOUT Y0\nTMR T0 K350\nLD T0\nSET S1\n"
+                       "STL S1\nOUT Y1\nTMR T1 K50\nLD T1\nSET S2\n"
+                       "STL S2\nOUT M2\nTMR T2 K250\nLD T2\nSET S3\n"
+                       "STL S3\nTMR T3 K50\nLDI T5\nTMR T4 K5\nLD T4\nTMR T5 K5\nLDI T4\n"
+                       "OUT M3\nLD T3\nSET S0\nRET\nLD M2\nOR M3\nOUT Y2\nEND");
+    ASSERT_TRUE(sim.result.ok()) << sim.result.diagnostics.front().message.toStdString();
+    for (const FastStep &f : sim.result.program->fast)
+        EXPECT_NE(f.op, FastOp::Slow);
+    expectSameScans(sim.result.program, {}, {sim.at("Y0"), sim.at("S1")}, 2000, 9);
+}
+
+// The benchmark's 2048 steps run in the fast loop alone: no step goes to the full
+// interpreter (so the benchmark measures the loop), and the results agree.
+TEST(FastLoop, TheBenchmarkProgramRunsInTheFastLoopAlone) {
+    const QString text = bench::mixedProgram();
+    auto target = test::makeTestTarget();
+    const model::InstructionList list = test::assemble(*target, text);
+    const CompileResult compiled = compileProgram(list);
+    ASSERT_TRUE(compiled.ok());
+    ASSERT_EQ(compiled.program->fast.size(), compiled.program->steps.size() + 1);
+    for (std::size_t i = 0; i < compiled.program->steps.size(); ++i)
+        EXPECT_NE(compiled.program->fast[i].op, FastOp::Slow) << "step " << i;
+    std::vector<model::Address> inputs;
+    for (int k = 0; k < 32; ++k)
+        inputs.push_back(test::operandOf(*target, QStringLiteral("X%1").arg(k)).address);
+    expectSameScans(compiled.program, inputs, {}, 60, 5);
+}
+
+TEST(FastLoop, EveryExampleProjectScansAsTheFullInterpreter) {
+    QDirIterator it(QStringLiteral(RUNG_SOURCE_DIR "/resources/examples"),
+                    {QStringLiteral("*.rung")}, QDir::Files, QDirIterator::Subdirectories);
+    int examples = 0;
+    while (it.hasNext()) {
+        const QString path = it.next();
+        SCOPED_TRACE(path.toStdString());
+        model::ProjectError error;
+        const auto project = model::loadProject(path, &error);
+        ASSERT_TRUE(project) << error.message.toStdString();
+        const model::ToListingResult listing = model::ladderToList(project->program);
+        ASSERT_TRUE(listing.ok());
+        const CompileResult compiled = compileProgram(listing.list);
+        ASSERT_TRUE(compiled.ok());
+        std::vector<model::Address> written;
+        const auto inputs = inputsOf(*project->target, listing.list, &written);
+        expectSameScans(compiled.program, inputs, written, 400, 11);
+        ++examples;
+    }
+    EXPECT_GE(examples, 10);
+}
+
+} // namespace rung::simulator
