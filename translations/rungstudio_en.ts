@@ -66,7 +66,7 @@
 <context>
     <name>rung::app::NetworkTrafficView</name>
     <message numerus="yes">
-        <location filename="../app/gui/network_traffic_view.cpp" line="+251"/>
+        <location filename="../app/gui/network_traffic_view.cpp" line="+258"/>
         <source>%n frame(s)</source>
         <translation>
             <numerusform>%n frame</numerusform>
@@ -77,7 +77,7 @@
 <context>
     <name>rung::app::NetworkWindow</name>
     <message numerus="yes">
-        <location filename="../app/gui/network_window.cpp" line="+751"/>
+        <location filename="../app/gui/network_window.cpp" line="+758"/>
         <source>%1, %2, %n station(s)</source>
         <extracomment>%1 run state, %2 virtual time, %3 number of stations</extracomment>
         <translation>
@@ -207,7 +207,7 @@
 <context>
     <name>rung::model::InstructionList</name>
     <message numerus="yes">
-        <location filename="../model/listing/il_parse.cpp" line="+445"/>
+        <location filename="../model/listing/il_parse.cpp" line="+506"/>
         <source>%1 needs %n operand(s): %2</source>
         <translation>
             <numerusform>%1 needs %n operand: %2</numerusform>

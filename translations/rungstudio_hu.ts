@@ -2749,7 +2749,7 @@ Ctrl+Z / Ctrl+Y: visszavonás / mégis, Ctrl+görgő: nagyítás, F4: a program 
 <context>
     <name>rung::app::NetworkTrafficView</name>
     <message>
-        <location filename="../app/gui/network_traffic_view.cpp" line="+157"/>
+        <location filename="../app/gui/network_traffic_view.cpp" line="+164"/>
         <source>&amp;Errors only</source>
         <translation>Csak &amp;hibák</translation>
     </message>
@@ -3145,7 +3145,7 @@ Menti mégis, ezek nélkül?</translation>
 <context>
     <name>rung::app::NetworkWindow</name>
     <message>
-        <location filename="../app/gui/network_window.cpp" line="+210"/>
+        <location filename="../app/gui/network_window.cpp" line="+216"/>
         <location line="+217"/>
         <source>Network</source>
         <translation>Hálózat</translation>
@@ -3467,7 +3467,7 @@ Menti mégis, ezek nélkül?</translation>
         <translation>PLC-hálózatok (*.rungnet)</translation>
     </message>
     <message>
-        <location line="+69"/>
+        <location line="+70"/>
         <source>No network</source>
         <translation>Nincs hálózat</translation>
     </message>
@@ -6001,7 +6001,7 @@ Kiértékelés: %4 µs (%5..%6)</translation>
 <context>
     <name>rung::editor::FrontPanel</name>
     <message>
-        <location filename="../editor/front_panel.cpp" line="+323"/>
+        <location filename="../editor/front_panel.cpp" line="+352"/>
         <source>%1: %2 (key %3; held down, %4 is 1)</source>
         <translation>%1: %2 (billentyű: %3; lenyomva tartva %4 = 1)</translation>
     </message>
@@ -6011,7 +6011,7 @@ Kiértékelés: %4 µs (%5..%6)</translation>
         <translation>%1: %2 (ide ír: %3)</translation>
     </message>
     <message>
-        <location line="+44"/>
+        <location line="+50"/>
         <source>This PLC has no front panel that its manual describes</source>
         <translation>Ennek a PLC-nek a kézikönyve nem ír le előlapot</translation>
     </message>
@@ -6021,7 +6021,7 @@ Kiértékelés: %4 µs (%5..%6)</translation>
         <translation>A PLC előlapjának megjelenítéséhez indítsa a szimulációt (F10)</translation>
     </message>
     <message>
-        <location line="+29"/>
+        <location line="+31"/>
         <source>Display mode %1 (%2)</source>
         <translation>%1. kijelzési mód (%2)</translation>
     </message>
@@ -7242,7 +7242,7 @@ Kiértékelés: %4 µs (%5..%6)</translation>
         </translation>
     </message>
     <message>
-        <location filename="../model/checks/checks_operands.cpp" line="+149"/>
+        <location filename="../model/checks/checks_operands.cpp" line="+160"/>
         <source>%1 cannot be written: the program only reads it (%2)</source>
         <translation>%1 nem írható: a program csak olvassa (%2)</translation>
     </message>
@@ -7444,7 +7444,7 @@ Kiértékelés: %4 µs (%5..%6)</translation>
         <translation>a(z) %2 %1 értéke #0DNS legyen, D, N és S számjegy 0 és 3 között, nem %3</translation>
     </message>
     <message>
-        <location line="+88"/>
+        <location line="+157"/>
         <source>the %1 of %2 must be BCD (#0000..#9999), not %3</source>
         <translation>a(z) %2 %1 értéke BCD legyen (#0000..#9999), nem %3</translation>
     </message>
@@ -7454,7 +7454,7 @@ Kiértékelés: %4 µs (%5..%6)</translation>
         <translation>%1 vagy %2</translation>
     </message>
     <message>
-        <location line="-26"/>
+        <location line="-95"/>
         <source>%1 uses %2..%3, which runs from %4 into %5: a block stays in one</source>
         <translation>%1 a(z) %2..%3 tartományt használja, amely a(z) %4 területről átnyúlik a(z) %5 területre: egy blokk egy területen belül marad</translation>
     </message>
@@ -7464,19 +7464,34 @@ Kiértékelés: %4 µs (%5..%6)</translation>
         <translation>%1 a(z) %2..%3 tartományt használja, de %4 nem létezik</translation>
     </message>
     <message>
-        <location line="+44"/>
+        <location line="+54"/>
+        <source>the %1 of %2 holds %3 (character %4), which does not fit a byte: a character is stored as its Latin-1 code, 0..255</source>
+        <translation>%2 %1 operandusa %3 karaktert tartalmaz (a(z) %4. karakter), amely nem fér el egy bájtban: egy karakter a Latin-1 kódjaként tárolódik, 0..255</translation>
+    </message>
+    <message>
+        <location line="+10"/>
+        <source>%1 stores two characters a word, but %2 holds %3 bits a word: write 1 character per word</source>
+        <translation>%1 szavanként két karaktert tárol, de %2 szavai %3 bitesek: írjon szavanként 1 karaktert</translation>
+    </message>
+    <message>
+        <location line="+10"/>
+        <source>the %1 of %2 (length %3) is stored in %4..%5, but %6 does not exist: the text is too long for its place</source>
+        <translation>%2 %1 operandusa (hossza %3) a(z) %4..%5 helyre kerül, de %6 nem létezik: a szöveg túl hosszú a helyéhez</translation>
+    </message>
+    <message>
+        <location line="+39"/>
         <location line="+38"/>
         <source>the %1 of %2 must be %3, not %4</source>
         <translation>a(z) %2 %1 értéke %3 lehet, nem %4</translation>
     </message>
     <message>
         <location line="-33"/>
-        <location line="+75"/>
+        <location line="+80"/>
         <source>%1 takes its %2 from %3 only, not %4</source>
         <translation>%1 a(z) %2 értékét csak ebből veszi: %3, nem ebből: %4</translation>
     </message>
     <message>
-        <location line="-67"/>
+        <location line="-72"/>
         <source>the %1 of %2 must be a device, not %3</source>
         <translation>a(z) %2 %1 operandus legyen, nem %3</translation>
     </message>
@@ -7496,7 +7511,7 @@ Kiértékelés: %4 µs (%5..%6)</translation>
         <translation>a(z) %2 %1 értéke szám kell legyen, nem %3</translation>
     </message>
     <message>
-        <location line="+11"/>
+        <location line="+16"/>
         <source>%1 moves whole words: %2 cannot be its %3</source>
         <translation>%1 egész szavakat mozgat: %2 nem lehet a(z) %3</translation>
     </message>
@@ -7554,6 +7569,11 @@ Kiértékelés: %4 µs (%5..%6)</translation>
         <location line="+10"/>
         <source>%1 is not simulated: it does nothing in the simulator</source>
         <translation>%1 nincs szimulálva: a szimulátorban nem csinál semmit</translation>
+    </message>
+    <message>
+        <location line="+46"/>
+        <source>the display shows %1 of the %2 of %3 as a space: it draws the character codes %4</source>
+        <translation>a kijelző %3 %2 operandusában a(z) %1 helyén szóközt mutat: a(z) %4 karakterkódokat jeleníti meg</translation>
     </message>
     <message>
         <location filename="../model/checks/checks_switched.cpp" line="+64"/>
@@ -7903,12 +7923,12 @@ Kiértékelés: %4 µs (%5..%6)</translation>
 <context>
     <name>rung::model::InstructionList</name>
     <message>
-        <location filename="../model/listing/il_parse.cpp" line="+114"/>
+        <location filename="../model/listing/il_parse.cpp" line="+164"/>
         <source>Too many errors; the rest of the listing was not read</source>
         <translation>Túl sok hiba; a lista többi része nem lett beolvasva</translation>
     </message>
     <message>
-        <location line="+160"/>
+        <location line="+158"/>
         <source>Program sections such as &apos;%1&apos; are not supported: a listing is one main program, run at every scan</source>
         <translation>A programszakaszok (például &apos;%1&apos;) nem támogatottak: az utasításlista egyetlen főprogram, amely minden ciklusban lefut</translation>
     </message>
@@ -7939,12 +7959,17 @@ Kiértékelés: %4 µs (%5..%6)</translation>
     </message>
     <message>
         <location line="+19"/>
-        <location line="+184"/>
+        <location line="+210"/>
         <source>&apos;%1...&apos; is too long for an operand</source>
         <translation>A(z) &apos;%1...&apos; túl hosszú egy operandushoz</translation>
     </message>
+    <message>
+        <location line="-205"/>
+        <source>The text &quot;%1&quot; has no closing quote; a quote inside a text is written twice (&quot;&quot;)</source>
+        <translation>A(z) &quot;%1&quot; szövegnek nincs záró idézőjele; a szövegen belüli idézőjelet kétszer kell írni (&quot;&quot;)</translation>
+    </message>
     <message numerus="yes">
-        <location line="-122"/>
+        <location line="+70"/>
         <source>%1 needs %n operand(s): %2</source>
         <translation>
             <numerusform>%1 %n operandust igényel: %2</numerusform>
@@ -7973,7 +7998,17 @@ Kiértékelés: %4 µs (%5..%6)</translation>
         <translation>%1 tartományon kívül esik: itt %2..%3 lehet</translation>
     </message>
     <message>
-        <location line="+60"/>
+        <location line="+53"/>
+        <source>&quot;%1&quot;: a text in quotes is not expected here</source>
+        <translation>&quot;%1&quot;: itt nem állhat idézőjeles szöveg</translation>
+    </message>
+    <message>
+        <location line="+1"/>
+        <source>%1: a text in double quotes is expected here, as &quot;%2&quot;</source>
+        <translation>%1: itt idézőjeles szöveg kell, például &quot;%2&quot;</translation>
+    </message>
+    <message>
+        <location line="+19"/>
         <source>%1: a label number is expected</source>
         <translation>%1: címkeszám kell</translation>
     </message>
@@ -8154,7 +8189,7 @@ Kiértékelés: %4 µs (%5..%6)</translation>
         <translation>A(z) %1 által megnevezett regiszter (%2) nem létezik</translation>
     </message>
     <message>
-        <location line="+143"/>
+        <location line="+183"/>
         <source>No page is shown: the program enables none</source>
         <translation>Nincs megjelenített oldal: a program egyet sem engedélyez</translation>
     </message>
@@ -8452,7 +8487,7 @@ Kiértékelés: %4 µs (%5..%6)</translation>
         <translation>a(z) %1 a szóban tárolt beállított értéket BCD számjegyekként olvassa, míg a PV egy szám</translation>
     </message>
     <message>
-        <location line="+280"/>
+        <location line="+287"/>
         <source>%1 is written as an IEC %2: %3</source>
         <translation>a(z) %1 IEC %2 blokkként íródik ki: %3</translation>
     </message>
@@ -8952,7 +8987,7 @@ Kiértékelés: %4 µs (%5..%6)</translation>
     </message>
     <message>
         <location line="+5"/>
-        <location filename="../model/target/target_pl110.cpp" line="+96"/>
+        <location filename="../model/target/target_pl110.cpp" line="+93"/>
         <location filename="../model/target/target_vigor.cpp" line="+95"/>
         <location filename="../model/target/target_vpc.cpp" line="+5"/>
         <source>Start a block with a normally open contact</source>
@@ -9286,14 +9321,14 @@ Kiértékelés: %4 µs (%5..%6)</translation>
     </message>
     <message>
         <location line="+3"/>
-        <location filename="../model/target/target_pl110.cpp" line="+127"/>
+        <location filename="../model/target/target_pl110.cpp" line="+143"/>
         <location filename="../model/target/target_vigor.cpp" line="-1"/>
         <location filename="../model/target/target_vpc.cpp" line="+5"/>
         <source>End of the program</source>
         <translation>A program vége</translation>
     </message>
     <message>
-        <location filename="../model/target/target_pl110.cpp" line="-394"/>
+        <location filename="../model/target/target_pl110.cpp" line="-407"/>
         <source>IF contact: ON while S1 ? S2 is true</source>
         <translation>IF érintkező: BE, amíg S1 ? S2 igaz</translation>
     </message>
@@ -9459,7 +9494,27 @@ Kiértékelés: %4 µs (%5..%6)</translation>
         <translation>az enkódereket a szimulátor nem modellezi: nincs számlálás, betöltés, sebesség; a szó egyszerű memória</translation>
     </message>
     <message>
-        <location line="-4"/>
+        <location line="+34"/>
+        <source>the terminal&apos;s note of the last variable changed from the keys is not modelled; the word stays as the program leaves it</source>
+        <translation>a terminál feljegyzése a billentyűkkel utoljára módosított változóról nincs modellezve; a szó úgy marad, ahogy a program hagyja</translation>
+    </message>
+    <message>
+        <location line="+170"/>
+        <source>characters per word</source>
+        <translation>karakter szavanként</translation>
+    </message>
+    <message>
+        <location line="+4"/>
+        <source>text</source>
+        <translation>szöveg</translation>
+    </message>
+    <message>
+        <location line="+2"/>
+        <source>Store a text from D: 1 or 2 characters per word, high byte first</source>
+        <translation>Szöveg tárolása D-től: szavanként 1 vagy 2 karakter, elöl a felső bájt</translation>
+    </message>
+    <message>
+        <location line="-214"/>
         <source>the timed interrupts and the stepper ramp are not modelled (interrupt programs are not supported)</source>
         <translation>az időzített megszakításokat és a léptetőmotor rámpáját a szimulátor nem modellezi (megszakításprogram nem támogatott)</translation>
     </message>
@@ -9605,12 +9660,7 @@ Kiértékelés: %4 µs (%5..%6)</translation>
         <translation>a COM2 csak MODBUS slave-ként működik: állapotát, válaszkésleltetését, felügyeleti idejét és számlálóit a szimulátor nem modellezi; a szó egyszerű memória</translation>
     </message>
     <message>
-        <location line="+9"/>
-        <source>the terminal (the last variable changed from the keys, the password entered) is not modelled; the word stays as the program leaves it</source>
-        <translation>a kezelőegységet (a gombokkal utoljára módosított változó, a beírt jelszó) a szimulátor nem modellezi; a szó úgy marad, ahogy a program hagyja</translation>
-    </message>
-    <message>
-        <location line="+26"/>
+        <location line="+32"/>
         <source>NOT contact: invert the power flow</source>
         <translation>NOT érintkező: az áramút negálása</translation>
     </message>
@@ -9748,12 +9798,7 @@ Kiértékelés: %4 µs (%5..%6)</translation>
         <translation>Indexelt mozgatás: D[index] = S, a terület vektorként használva</translation>
     </message>
     <message>
-        <location line="+8"/>
-        <source>Store a text string in words</source>
-        <translation>Szöveg tárolása szavakban</translation>
-    </message>
-    <message>
-        <location line="+2"/>
+        <location line="+26"/>
         <source>Set the range of an AI, TR, AQ or PID output</source>
         <translation>AI, TR, AQ vagy PID kimenet tartományának beállítása</translation>
     </message>
@@ -10558,11 +10603,6 @@ Kiértékelés: %4 µs (%5..%6)</translation>
         <translation>analóg beállítás: 0..200 BCD-ben a csatornájába</translation>
     </message>
     <message>
-        <location filename="../model/target/target_pl110.cpp" line="-184"/>
-        <source>the display&apos;s standby (its brightness and the delay after the last key) is not modelled: the front panel&apos;s display stays bright; the word is plain memory</source>
-        <translation>a kijelző készenléti módját (fényerejét és az utolsó gombnyomás utáni késleltetést) a szimulátor nem modellezi: az előlap kijelzője világos marad; a szó egyszerű memória</translation>
-    </message>
-    <message>
         <location filename="../model/target/target_vigor.cpp" line="+203"/>
         <source>variable resistor read by VRRD, 0..255</source>
         <translation>a VRRD által olvasott potenciométer, 0..255</translation>
@@ -10590,24 +10630,24 @@ Kiértékelés: %4 µs (%5..%6)</translation>
         <translation>világít, amíg a port adatcsomagot küld</translation>
     </message>
     <message>
-        <location line="+43"/>
-        <source>scrolls through the pages the program enables</source>
-        <translation>körbelapoz a program által engedélyezett oldalakon</translation>
+        <location line="+53"/>
+        <source>scrolls through the pages the program enables; while a value is entered, switches between steps of one and editing digit by digit</source>
+        <translation>lapozza a program által engedélyezett oldalakat; érték bevitele közben vált az egyesével léptetés és a számjegyenkénti szerkesztés között</translation>
     </message>
     <message>
-        <location line="+2"/>
+        <location line="+11"/>
+        <source>edits the page&apos;s fields in turn, storing each value; held for 2 s, opens the password page</source>
+        <translation>sorra szerkeszti az oldal mezőit, mindegyik értékét eltárolva; 2 s-ig nyomva tartva megnyitja a jelszó oldalát</translation>
+    </message>
+    <message>
+        <location line="-6"/>
         <source>increments the field being edited</source>
         <translation>növeli a módosítás alatt álló mezőt</translation>
     </message>
     <message>
-        <location line="+2"/>
+        <location line="+3"/>
         <source>decrements the field being edited</source>
         <translation>csökkenti a módosítás alatt álló mezőt</translation>
-    </message>
-    <message>
-        <location line="+2"/>
-        <source>edits the page&apos;s fields in turn</source>
-        <translation>sorban módosíthatóvá teszi az oldal mezőit</translation>
     </message>
 </context>
 <context>
@@ -11088,7 +11128,7 @@ Kiértékelés: %4 µs (%5..%6)</translation>
 <context>
     <name>rung::network::NetworkSession</name>
     <message>
-        <location filename="../network/network_session.cpp" line="+301"/>
+        <location filename="../network/network_session.cpp" line="+305"/>
         <source>a fault made in the IDE</source>
         <translation>az IDE-ben okozott hiba</translation>
     </message>

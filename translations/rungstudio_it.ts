@@ -2756,7 +2756,7 @@ Ctrl+Z / Ctrl+Y: annulla / ripeti, Ctrl+rotellina: zoom, F4: verifica il program
 <context>
     <name>rung::app::NetworkTrafficView</name>
     <message>
-        <location filename="../app/gui/network_traffic_view.cpp" line="+157"/>
+        <location filename="../app/gui/network_traffic_view.cpp" line="+164"/>
         <source>&amp;Errors only</source>
         <translation>Solo &amp;errori</translation>
     </message>
@@ -3153,7 +3153,7 @@ Salvare comunque, lasciando fuori questo dal file?</translation>
 <context>
     <name>rung::app::NetworkWindow</name>
     <message>
-        <location filename="../app/gui/network_window.cpp" line="+210"/>
+        <location filename="../app/gui/network_window.cpp" line="+216"/>
         <location line="+217"/>
         <source>Network</source>
         <translation>Rete</translation>
@@ -3475,7 +3475,7 @@ Salvare comunque, lasciando fuori questo dal file?</translation>
         <translation>Reti di PLC (*.rungnet)</translation>
     </message>
     <message>
-        <location line="+69"/>
+        <location line="+70"/>
         <source>No network</source>
         <translation>Nessuna rete</translation>
     </message>
@@ -6016,7 +6016,7 @@ Valutazione: %4 µs (%5..%6)</translation>
 <context>
     <name>rung::editor::FrontPanel</name>
     <message>
-        <location filename="../editor/front_panel.cpp" line="+323"/>
+        <location filename="../editor/front_panel.cpp" line="+352"/>
         <source>%1: %2 (key %3; held down, %4 is 1)</source>
         <translation>%1: %2 (tasto %3; tenuto premuto, %4 vale 1)</translation>
     </message>
@@ -6026,7 +6026,7 @@ Valutazione: %4 µs (%5..%6)</translation>
         <translation>%1: %2 (scrive %3)</translation>
     </message>
     <message>
-        <location line="+44"/>
+        <location line="+50"/>
         <source>This PLC has no front panel that its manual describes</source>
         <translation>Il manuale di questo PLC non descrive un pannello frontale</translation>
     </message>
@@ -6036,7 +6036,7 @@ Valutazione: %4 µs (%5..%6)</translation>
         <translation>Avviare la simulazione (F10) per vedere il pannello frontale del PLC</translation>
     </message>
     <message>
-        <location line="+29"/>
+        <location line="+31"/>
         <source>Display mode %1 (%2)</source>
         <translation>Modo di visualizzazione %1 (%2)</translation>
     </message>
@@ -7260,7 +7260,7 @@ Valutazione: %4 µs (%5..%6)</translation>
         </translation>
     </message>
     <message>
-        <location filename="../model/checks/checks_operands.cpp" line="+149"/>
+        <location filename="../model/checks/checks_operands.cpp" line="+160"/>
         <source>%1 cannot be written: the program only reads it (%2)</source>
         <translation>%1 non può essere scritto: il programma lo legge soltanto (%2)</translation>
     </message>
@@ -7462,7 +7462,7 @@ Valutazione: %4 µs (%5..%6)</translation>
         <translation>il %1 di %2 deve essere #0DNS con le cifre D, N e S da 0 a 3, non %3</translation>
     </message>
     <message>
-        <location line="+88"/>
+        <location line="+157"/>
         <source>the %1 of %2 must be BCD (#0000..#9999), not %3</source>
         <translation>il %1 di %2 deve essere BCD (#0000..#9999), non %3</translation>
     </message>
@@ -7472,7 +7472,7 @@ Valutazione: %4 µs (%5..%6)</translation>
         <translation>%1 o %2</translation>
     </message>
     <message>
-        <location line="-26"/>
+        <location line="-95"/>
         <source>%1 uses %2..%3, which runs from %4 into %5: a block stays in one</source>
         <translation>%1 usa %2..%3, che passa da %4 a %5: un blocco resta in un&apos;area sola</translation>
     </message>
@@ -7482,19 +7482,34 @@ Valutazione: %4 µs (%5..%6)</translation>
         <translation>%1 usa %2..%3, ma %4 non esiste</translation>
     </message>
     <message>
-        <location line="+44"/>
+        <location line="+54"/>
+        <source>the %1 of %2 holds %3 (character %4), which does not fit a byte: a character is stored as its Latin-1 code, 0..255</source>
+        <translation>il %1 di %2 contiene %3 (carattere %4), che non sta in un byte: un carattere è salvato come il suo codice Latin-1, 0..255</translation>
+    </message>
+    <message>
+        <location line="+10"/>
+        <source>%1 stores two characters a word, but %2 holds %3 bits a word: write 1 character per word</source>
+        <translation>%1 salva due caratteri per word, ma %2 ha word di %3 bit: scrivere 1 carattere per word</translation>
+    </message>
+    <message>
+        <location line="+10"/>
+        <source>the %1 of %2 (length %3) is stored in %4..%5, but %6 does not exist: the text is too long for its place</source>
+        <translation>il %1 di %2 (lunghezza %3) è salvato in %4..%5, ma %6 non esiste: il testo è troppo lungo per la sua posizione</translation>
+    </message>
+    <message>
+        <location line="+39"/>
         <location line="+38"/>
         <source>the %1 of %2 must be %3, not %4</source>
         <translation>il %1 di %2 deve essere %3, non %4</translation>
     </message>
     <message>
         <location line="-33"/>
-        <location line="+75"/>
+        <location line="+80"/>
         <source>%1 takes its %2 from %3 only, not %4</source>
         <translation>%1 prende il suo %2 solo da %3, non da %4</translation>
     </message>
     <message>
-        <location line="-67"/>
+        <location line="-72"/>
         <source>the %1 of %2 must be a device, not %3</source>
         <translation>il %1 di %2 deve essere un operando, non %3</translation>
     </message>
@@ -7514,7 +7529,7 @@ Valutazione: %4 µs (%5..%6)</translation>
         <translation>il %1 di %2 deve essere un numero, non %3</translation>
     </message>
     <message>
-        <location line="+11"/>
+        <location line="+16"/>
         <source>%1 moves whole words: %2 cannot be its %3</source>
         <translation>%1 sposta word intere: %2 non può essere il suo %3</translation>
     </message>
@@ -7572,6 +7587,11 @@ Valutazione: %4 µs (%5..%6)</translation>
         <location line="+10"/>
         <source>%1 is not simulated: it does nothing in the simulator</source>
         <translation>%1 non è simulato: nel simulatore non fa nulla</translation>
+    </message>
+    <message>
+        <location line="+46"/>
+        <source>the display shows %1 of the %2 of %3 as a space: it draws the character codes %4</source>
+        <translation>il display mostra %1 del %2 di %3 come uno spazio: visualizza i codici di carattere %4</translation>
     </message>
     <message>
         <location filename="../model/checks/checks_switched.cpp" line="+64"/>
@@ -7924,12 +7944,12 @@ Valutazione: %4 µs (%5..%6)</translation>
 <context>
     <name>rung::model::InstructionList</name>
     <message>
-        <location filename="../model/listing/il_parse.cpp" line="+114"/>
+        <location filename="../model/listing/il_parse.cpp" line="+164"/>
         <source>Too many errors; the rest of the listing was not read</source>
         <translation>Troppi errori; il resto della lista non è stato letto</translation>
     </message>
     <message>
-        <location line="+160"/>
+        <location line="+158"/>
         <source>Program sections such as &apos;%1&apos; are not supported: a listing is one main program, run at every scan</source>
         <translation>Le sezioni di programma come &apos;%1&apos; non sono supportate: una lista istruzioni è un solo programma principale, eseguito a ogni scansione</translation>
     </message>
@@ -7960,12 +7980,17 @@ Valutazione: %4 µs (%5..%6)</translation>
     </message>
     <message>
         <location line="+19"/>
-        <location line="+184"/>
+        <location line="+210"/>
         <source>&apos;%1...&apos; is too long for an operand</source>
         <translation>&apos;%1...&apos; è troppo lungo per un operando</translation>
     </message>
+    <message>
+        <location line="-205"/>
+        <source>The text &quot;%1&quot; has no closing quote; a quote inside a text is written twice (&quot;&quot;)</source>
+        <translation>Il testo &quot;%1&quot; non ha le virgolette di chiusura; le virgolette dentro un testo si scrivono due volte (&quot;&quot;)</translation>
+    </message>
     <message numerus="yes">
-        <location line="-122"/>
+        <location line="+70"/>
         <source>%1 needs %n operand(s): %2</source>
         <translation>
             <numerusform>%1 richiede %n operando: %2</numerusform>
@@ -7996,7 +8021,17 @@ Valutazione: %4 µs (%5..%6)</translation>
         <translation>%1 è fuori campo: qui sono ammessi %2..%3</translation>
     </message>
     <message>
-        <location line="+60"/>
+        <location line="+53"/>
+        <source>&quot;%1&quot;: a text in quotes is not expected here</source>
+        <translation>&quot;%1&quot;: qui non è atteso un testo tra virgolette</translation>
+    </message>
+    <message>
+        <location line="+1"/>
+        <source>%1: a text in double quotes is expected here, as &quot;%2&quot;</source>
+        <translation>%1: qui è atteso un testo tra virgolette doppie, come &quot;%2&quot;</translation>
+    </message>
+    <message>
+        <location line="+19"/>
         <source>%1: a label number is expected</source>
         <translation>%1: è atteso un numero di etichetta</translation>
     </message>
@@ -8177,7 +8212,7 @@ Valutazione: %4 µs (%5..%6)</translation>
         <translation>Il registro indicato da %1 (%2) non esiste</translation>
     </message>
     <message>
-        <location line="+143"/>
+        <location line="+183"/>
         <source>No page is shown: the program enables none</source>
         <translation>Nessuna pagina visualizzata: il programma non ne abilita alcuna</translation>
     </message>
@@ -8475,7 +8510,7 @@ Valutazione: %4 µs (%5..%6)</translation>
         <translation>%1 legge un valore di preset in una word come cifre BCD, mentre PV è un numero</translation>
     </message>
     <message>
-        <location line="+280"/>
+        <location line="+287"/>
         <source>%1 is written as an IEC %2: %3</source>
         <translation>%1 viene scritto come %2 IEC: %3</translation>
     </message>
@@ -8975,7 +9010,7 @@ Valutazione: %4 µs (%5..%6)</translation>
     </message>
     <message>
         <location line="+5"/>
-        <location filename="../model/target/target_pl110.cpp" line="+96"/>
+        <location filename="../model/target/target_pl110.cpp" line="+93"/>
         <location filename="../model/target/target_vigor.cpp" line="+95"/>
         <location filename="../model/target/target_vpc.cpp" line="+5"/>
         <source>Start a block with a normally open contact</source>
@@ -9309,14 +9344,14 @@ Valutazione: %4 µs (%5..%6)</translation>
     </message>
     <message>
         <location line="+3"/>
-        <location filename="../model/target/target_pl110.cpp" line="+127"/>
+        <location filename="../model/target/target_pl110.cpp" line="+143"/>
         <location filename="../model/target/target_vigor.cpp" line="-1"/>
         <location filename="../model/target/target_vpc.cpp" line="+5"/>
         <source>End of the program</source>
         <translation>Fine del programma</translation>
     </message>
     <message>
-        <location filename="../model/target/target_pl110.cpp" line="-394"/>
+        <location filename="../model/target/target_pl110.cpp" line="-407"/>
         <source>IF contact: ON while S1 ? S2 is true</source>
         <translation>Contatto IF: ON mentre S1 ? S2 è vero</translation>
     </message>
@@ -9482,7 +9517,27 @@ Valutazione: %4 µs (%5..%6)</translation>
         <translation>gli encoder non sono modellati: nessun conteggio, caricamento o frequenza; la word è semplice memoria</translation>
     </message>
     <message>
-        <location line="-4"/>
+        <location line="+34"/>
+        <source>the terminal&apos;s note of the last variable changed from the keys is not modelled; the word stays as the program leaves it</source>
+        <translation>l&apos;indicazione dell&apos;ultima variabile modificata tramite il terminale non è modellata; la word resta come la lascia il programma</translation>
+    </message>
+    <message>
+        <location line="+170"/>
+        <source>characters per word</source>
+        <translation>caratteri per word</translation>
+    </message>
+    <message>
+        <location line="+4"/>
+        <source>text</source>
+        <translation>testo</translation>
+    </message>
+    <message>
+        <location line="+2"/>
+        <source>Store a text from D: 1 or 2 characters per word, high byte first</source>
+        <translation>Salva un testo a partire da D: 1 o 2 caratteri per word, iniziando dalla parte alta</translation>
+    </message>
+    <message>
+        <location line="-214"/>
         <source>the timed interrupts and the stepper ramp are not modelled (interrupt programs are not supported)</source>
         <translation>gli interrupt a tempo e la rampa del motore passo passo non sono modellati (i programmi di interrupt non sono supportati)</translation>
     </message>
@@ -9628,12 +9683,7 @@ Valutazione: %4 µs (%5..%6)</translation>
         <translation>COM2 funziona solo da slave MODBUS: il suo stato, il ritardo di risposta, il tempo di controllo e i contatori non sono modellati; la word è semplice memoria</translation>
     </message>
     <message>
-        <location line="+9"/>
-        <source>the terminal (the last variable changed from the keys, the password entered) is not modelled; the word stays as the program leaves it</source>
-        <translation>il terminale (ultima variabile modificata dai pulsanti, password immessa) non è modellato; la word resta come la lascia il programma</translation>
-    </message>
-    <message>
-        <location line="+26"/>
+        <location line="+32"/>
         <source>NOT contact: invert the power flow</source>
         <translation>Contatto NOT: inverte il flusso di corrente</translation>
     </message>
@@ -9771,12 +9821,7 @@ Valutazione: %4 µs (%5..%6)</translation>
         <translation>Spostamento indicizzato: D[indice] = S, l&apos;area usata come vettore</translation>
     </message>
     <message>
-        <location line="+8"/>
-        <source>Store a text string in words</source>
-        <translation>Memorizza una stringa di testo in word</translation>
-    </message>
-    <message>
-        <location line="+2"/>
+        <location line="+26"/>
         <source>Set the range of an AI, TR, AQ or PID output</source>
         <translation>Imposta il campo di un&apos;uscita AI, TR, AQ o PID</translation>
     </message>
@@ -10581,11 +10626,6 @@ Valutazione: %4 µs (%5..%6)</translation>
         <translation>impostazione analogica: 0..200 in BCD nel suo canale</translation>
     </message>
     <message>
-        <location filename="../model/target/target_pl110.cpp" line="-184"/>
-        <source>the display&apos;s standby (its brightness and the delay after the last key) is not modelled: the front panel&apos;s display stays bright; the word is plain memory</source>
-        <translation>lo standby del display (la luminosità e il ritardo dall&apos;ultima pressione di un tasto) non è modellato: il display del pannello frontale resta alla massima luminosità; la word è semplice memoria</translation>
-    </message>
-    <message>
         <location filename="../model/target/target_vigor.cpp" line="+203"/>
         <source>variable resistor read by VRRD, 0..255</source>
         <translation>potenziometro letto da VRRD, 0..255</translation>
@@ -10613,24 +10653,24 @@ Valutazione: %4 µs (%5..%6)</translation>
         <translation>acceso durante la trasmissione di un pacchetto di dati sulla porta</translation>
     </message>
     <message>
-        <location line="+43"/>
-        <source>scrolls through the pages the program enables</source>
-        <translation>scorre in modo circolare le pagine abilitate dal programma</translation>
+        <location line="+53"/>
+        <source>scrolls through the pages the program enables; while a value is entered, switches between steps of one and editing digit by digit</source>
+        <translation>scorre le pagine abilitate dal programma; durante l&apos;immissione di un valore passa dalla modifica incrementale alla modifica a cifre</translation>
     </message>
     <message>
-        <location line="+2"/>
+        <location line="+11"/>
+        <source>edits the page&apos;s fields in turn, storing each value; held for 2 s, opens the password page</source>
+        <translation>abilita in sequenza la modifica dei campi della pagina, salvando ogni valore; tenuto premuto per 2 s, apre la pagina della password</translation>
+    </message>
+    <message>
+        <location line="-6"/>
         <source>increments the field being edited</source>
         <translation>incrementa il campo in modifica</translation>
     </message>
     <message>
-        <location line="+2"/>
+        <location line="+3"/>
         <source>decrements the field being edited</source>
         <translation>decrementa il campo in modifica</translation>
-    </message>
-    <message>
-        <location line="+2"/>
-        <source>edits the page&apos;s fields in turn</source>
-        <translation>abilita a turno la modifica dei campi della pagina</translation>
     </message>
 </context>
 <context>
@@ -11111,7 +11151,7 @@ Valutazione: %4 µs (%5..%6)</translation>
 <context>
     <name>rung::network::NetworkSession</name>
     <message>
-        <location filename="../network/network_session.cpp" line="+301"/>
+        <location filename="../network/network_session.cpp" line="+305"/>
         <source>a fault made in the IDE</source>
         <translation>un guasto creato nell&apos;IDE</translation>
     </message>
