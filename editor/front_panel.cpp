@@ -190,12 +190,17 @@ void PanelDisplay::paintEvent(QPaintEvent *) {
         return;
     // The field the keys edit "viene visualizzato in reverse" (PL110 manual 5.2); the digit UP
     // and DOWN change is underlined.
-    const int cell = fm.horizontalAdvance(QLatin1Char('M'));
     for (const model::PanelFieldView &field : m_view->fields) {
-        if (!field.editing || field.row >= lines.size())
+        if (!field.editing || field.row >= lines.size() || lines[field.row].isEmpty())
             continue;
-        const QRect box(margin + field.column * cell, margin + field.row * fm.lineSpacing(),
-                        field.length * cell, fm.lineSpacing());
+        // A character's width as the row was drawn (a fallback font's advance may differ
+        // from its 'M').
+        const QString &row = lines[field.row];
+        const int left = fm.horizontalAdvance(row.left(field.column));
+        const int width = fm.horizontalAdvance(row.mid(field.column, field.length));
+        const QRect box(margin + left, margin + field.row * fm.lineSpacing(), width,
+                        fm.lineSpacing());
+        const int cell = field.length > 0 ? width / field.length : 0;
         p.fillRect(box, ink);
         p.setPen(screen);
         p.drawText(box.left(), box.top() + fm.ascent(),
@@ -306,7 +311,12 @@ void FrontPanel::rebuild() {
             // word (a push button's style minimum put SET and DOWN on a second row).
             button->setFocusPolicy(Qt::StrongFocus);
             connect(button, &QToolButton::pressed, this, [this, k] { pressKey(k, true); });
-            connect(button, &QToolButton::released, this, [this, k] { pressKey(k, false); });
+            // Released, the panel takes the focus from the button: the arrow keys then press
+            // UP and DOWN, as the shortcuts say, instead of moving between the buttons.
+            connect(button, &QToolButton::released, this, [this, k] {
+                pressKey(k, false);
+                setFocus(Qt::MouseFocusReason);
+            });
             m_keyRow->addWidget(button);
             m_keys.push_back(button);
         }
