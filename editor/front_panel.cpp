@@ -173,10 +173,42 @@ void PanelDisplay::paintEvent(QPaintEvent *) {
         ink = QColor(0xff, 0x60, 0x40);
     else if (m_view->display == model::DisplayKind::IoLines)
         ink = QColor(0xc8, 0xf0, 0xa0);
+    // The standby dims the characters (PL110 SM100: 0 % is a dark screen).
+    const QColor screen(0x10, 0x14, 0x18);
+    const double light = std::clamp(m_view->brightness, 0, 100) / 100.0;
+    const auto mix = [&](const QColor &c) {
+        return QColor::fromRgbF(screen.redF() + (c.redF() - screen.redF()) * light,
+                                screen.greenF() + (c.greenF() - screen.greenF()) * light,
+                                screen.blueF() + (c.blueF() - screen.blueF()) * light);
+    };
+    ink = mix(ink);
     p.setFont(f);
     p.setPen(ink);
     for (qsizetype k = 0; k < lines.size(); ++k)
         p.drawText(margin, margin + static_cast<int>(k) * fm.lineSpacing() + fm.ascent(), lines[k]);
+    if (m_view->display != model::DisplayKind::Text)
+        return;
+    // The field the keys edit "viene visualizzato in reverse" (PL110 manual 5.2); the digit UP
+    // and DOWN change is underlined.
+    for (const model::PanelFieldView &field : m_view->fields) {
+        if (!field.editing || field.row >= lines.size() || lines[field.row].isEmpty())
+            continue;
+        // A character's width as the row was drawn (a fallback font's advance may differ
+        // from its 'M').
+        const QString &row = lines[field.row];
+        const int left = fm.horizontalAdvance(row.left(field.column));
+        const int width = fm.horizontalAdvance(row.mid(field.column, field.length));
+        const QRect box(margin + left, margin + field.row * fm.lineSpacing(), width,
+                        fm.lineSpacing());
+        const int cell = field.length > 0 ? width / field.length : 0;
+        p.fillRect(box, ink);
+        p.setPen(screen);
+        p.drawText(box.left(), box.top() + fm.ascent(),
+                   lines[field.row].mid(field.column, field.length));
+        if (field.cursor >= 0)
+            p.fillRect(QRect(box.left() + field.cursor * cell, box.bottom() - 1, cell, 2), screen);
+        p.setPen(ink);
+    }
 }
 
 // ---- FrontPanel -------------------------------------------------------------------------
@@ -233,6 +265,7 @@ void FrontPanel::setPlc(const model::Target *target, const QString &modelName) {
 void FrontPanel::setMonitorSource(model::MonitorSource *source) {
     if (model::MonitorSource::switchSource(m_source, source, this)) {
         m_watched.clear();
+        m_terminal = {};
         if (!source) {
             refresh();
             return;
@@ -259,6 +292,7 @@ void FrontPanel::rebuild() {
     m_lamps.clear();
     m_keys.clear();
     m_knobs.clear();
+    m_terminal = {};
     if (m_target) {
         const model::ModelVariant *variant = m_target->model(m_modelName);
         const model::PanelView shape = model::panelView(*m_target, variant, {});
@@ -277,7 +311,12 @@ void FrontPanel::rebuild() {
             // word (a push button's style minimum put SET and DOWN on a second row).
             button->setFocusPolicy(Qt::StrongFocus);
             connect(button, &QToolButton::pressed, this, [this, k] { pressKey(k, true); });
-            connect(button, &QToolButton::released, this, [this, k] { pressKey(k, false); });
+            // Released, the panel takes the focus from the button: the arrow keys then press
+            // UP and DOWN, as the shortcuts say, instead of moving between the buttons.
+            connect(button, &QToolButton::released, this, [this, k] {
+                pressKey(k, false);
+                setFocus(Qt::MouseFocusReason);
+            });
             m_keyRow->addWidget(button);
             m_keys.push_back(button);
         }
@@ -356,6 +395,12 @@ void FrontPanel::refresh() {
     input.runState = m_source ? m_source->runState() : model::MonitorSource::RunState::Offline;
     input.fault = m_source && !m_source->errorText().isEmpty();
     input.nowMs = m_clock.elapsed();
+    if (snapshot && hasPanel) {
+        model::terminalTick(*m_target, *snapshot, m_terminal, input.nowMs);
+        input.terminal = &m_terminal;
+    } else {
+        m_terminal = {};
+    }
     m_view = hasPanel ? model::panelView(*m_target, m_target->model(m_modelName), input)
                       : model::PanelView{};
     // An online PLC is polled for what the panel shows (the page's characters, the register the
@@ -380,6 +425,8 @@ void FrontPanel::refresh() {
         m_lamps[k]->setState(m_view.lamps[k].lit, m_view.lamps[k].blinkMs);
         blinking = blinking || m_view.lamps[k].blinkMs > 0;
     }
+    // SET held: the password page opens after its hold without waiting for a snapshot.
+    blinking = blinking || m_terminal.setDownMs >= 0;
     if (blinking && !m_blink.isActive())
         m_blink.start();
     else if (!blinking)
@@ -425,9 +472,21 @@ void FrontPanel::writeKnob(std::size_t index, int value) {
 }
 
 void FrontPanel::pressKey(std::size_t index, bool down) {
-    if (!m_source || index >= m_view.keys.size())
+    if (!m_source || !m_target || index >= m_view.keys.size())
         return;
-    m_source->writeBit(m_view.keys[index].address, down);
+    const model::PanelKeyView &key = m_view.keys[index];
+    // SWAP's bit is not pressed while a value is entered: it chooses the digit there, and the
+    // engine would step the page (model::terminalPassesKey).
+    if (!down || model::terminalPassesKey(m_terminal, key.role))
+        m_source->writeBit(key.address, down);
+    const std::shared_ptr<const model::Snapshot> snapshot = m_source->snapshot();
+    if (key.role == model::PanelKeyRole::Other || !snapshot || !snapshot->layout ||
+        &snapshot->layout->target() != m_target)
+        return;
+    for (const model::TerminalWrite &w :
+         model::terminalKey(*m_target, *snapshot, m_terminal, key.role, down, m_clock.elapsed()))
+        m_source->writeWord(w.device, w.value);
+    refresh();
 }
 
 int FrontPanel::keyIndexFor(int qtKey) const {

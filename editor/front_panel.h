@@ -44,6 +44,8 @@ public:
 
     // What the panel shows now (for tests and for the keyboard's user: the display as text).
     const model::PanelView &view() const { return m_view; }
+    // What the terminal's keys are doing (a field being edited, the password page).
+    const model::TerminalState &terminal() const { return m_terminal; }
     // The parts, by the label the manual gives them (for tests and accessibility).
     QDial *knob(const QString &label) const;
     QSpinBox *knobNumber(const QString &label) const;
@@ -78,6 +80,7 @@ private:
     QString m_modelName;
     QPointer<model::MonitorSource> m_source;
     model::PanelView m_view;
+    model::TerminalState m_terminal; // the keys' editing, the standby (model/image/panel_keys.h)
     QElapsedTimer m_clock;
     QTimer m_blink;
     QLabel *m_hint;

@@ -7885,7 +7885,27 @@ Kiértékelés: %4 µs (%5..%6)</translation>
         <source>%1 is not simulated: %2</source>
         <translation>%1 nincs szimulálva: %2</translation>
     </message>
-</context>
+<message>
+        <location line="+54" />
+        <source>the %1 of %2 holds %3 (character %4), which does not fit a byte: a character is stored as its Latin-1 code, 0..255</source>
+        <translation>%2 %1 operandusa %3 karaktert tartalmaz (a(z) %4. karakter), amely nem fér el egy bájtban: egy karakter a Latin-1 kódjaként tárolódik, 0..255</translation>
+    </message>
+    <message>
+        <location line="+10" />
+        <source>%1 stores two characters a word, but %2 holds %3 bits a word: write 1 character per word</source>
+        <translation>%1 szavanként két karaktert tárol, de %2 szavai %3 bitesek: írjon szavanként 1 karaktert</translation>
+    </message>
+    <message>
+        <location line="+10" />
+        <source>the %1 of %2 (length %3) is stored in %4..%5, but %6 does not exist: the text is too long for its place</source>
+        <translation>%2 %1 operandusa (hossza %3) a(z) %4..%5 helyre kerül, de %6 nem létezik: a szöveg túl hosszú a helyéhez</translation>
+    </message>
+    <message>
+        <location line="+46" />
+        <source>the display shows %1 of the %2 of %3 as a space: it draws the character codes %4</source>
+        <translation>a kijelző %3 %2 operandusában a(z) %1 helyén szóközt mutat: a(z) %4 karakterkódokat jeleníti meg</translation>
+    </message>
+    </context>
 <context>
     <name>rung::model::Compare</name>
     <message>
@@ -8368,7 +8388,22 @@ Kiértékelés: %4 µs (%5..%6)</translation>
         <source>%1: %2 is not an index register (%3)</source>
         <translation>%1: %2 nem indexregiszter (%3)</translation>
     </message>
-</context>
+<message>
+        <location line="-205" />
+        <source>The text "%1" has no closing quote; a quote inside a text is written twice ("")</source>
+        <translation>A(z) "%1" szövegnek nincs záró idézőjele; a szövegen belüli idézőjelet kétszer kell írni ("")</translation>
+    </message>
+    <message>
+        <location line="+53" />
+        <source>"%1": a text in quotes is not expected here</source>
+        <translation>"%1": itt nem állhat idézőjeles szöveg</translation>
+    </message>
+    <message>
+        <location line="+1" />
+        <source>%1: a text in double quotes is expected here, as "%2"</source>
+        <translation>%1: itt idézőjeles szöveg kell, például "%2"</translation>
+    </message>
+    </context>
 <context>
     <name>rung::model::Ladder</name>
     <message>
@@ -10924,7 +10959,37 @@ Kiértékelés: %4 µs (%5..%6)</translation>
         <source>edits the page's fields in turn</source>
         <translation>sorban módosíthatóvá teszi az oldal mezőit</translation>
     </message>
-</context>
+<message>
+        <location line="+34" />
+        <source>the terminal's note of the last variable changed from the keys is not modelled; the word stays as the program leaves it</source>
+        <translation>a terminál feljegyzése a billentyűkkel utoljára módosított változóról nincs modellezve; a szó úgy marad, ahogy a program hagyja</translation>
+    </message>
+    <message>
+        <location line="+170" />
+        <source>characters per word</source>
+        <translation>karakter szavanként</translation>
+    </message>
+    <message>
+        <location line="+4" />
+        <source>text</source>
+        <translation>szöveg</translation>
+    </message>
+    <message>
+        <location line="+2" />
+        <source>Store a text from D: 1 or 2 characters per word, high byte first</source>
+        <translation>Szöveg tárolása D-től: szavanként 1 vagy 2 karakter, elöl a felső bájt</translation>
+    </message>
+    <message>
+        <location line="+53" />
+        <source>scrolls through the pages the program enables; while a value is entered, switches between steps of one and editing digit by digit</source>
+        <translation>lapozza a program által engedélyezett oldalakat; érték bevitele közben vált az egyesével léptetés és a számjegyenkénti szerkesztés között</translation>
+    </message>
+    <message>
+        <location line="+11" />
+        <source>edits the page's fields in turn, storing each value; held for 2 s, opens the password page</source>
+        <translation>sorra szerkeszti az oldal mezőit, mindegyik értékét eltárolva; 2 s-ig nyomva tartva megnyitja a jelszó oldalát</translation>
+    </message>
+    </context>
 <context>
     <name>rung::model::Trigger</name>
     <message>

@@ -7903,7 +7903,27 @@ Valutazione: %4 µs (%5..%6)</translation>
         <source>%1 is not simulated: %2</source>
         <translation>%1 non è simulato: %2</translation>
     </message>
-</context>
+<message>
+        <location line="+54" />
+        <source>the %1 of %2 holds %3 (character %4), which does not fit a byte: a character is stored as its Latin-1 code, 0..255</source>
+        <translation>il %1 di %2 contiene %3 (carattere %4), che non sta in un byte: un carattere è salvato come il suo codice Latin-1, 0..255</translation>
+    </message>
+    <message>
+        <location line="+10" />
+        <source>%1 stores two characters a word, but %2 holds %3 bits a word: write 1 character per word</source>
+        <translation>%1 salva due caratteri per word, ma %2 ha word di %3 bit: scrivere 1 carattere per word</translation>
+    </message>
+    <message>
+        <location line="+10" />
+        <source>the %1 of %2 (length %3) is stored in %4..%5, but %6 does not exist: the text is too long for its place</source>
+        <translation>il %1 di %2 (lunghezza %3) è salvato in %4..%5, ma %6 non esiste: il testo è troppo lungo per la sua posizione</translation>
+    </message>
+    <message>
+        <location line="+46" />
+        <source>the display shows %1 of the %2 of %3 as a space: it draws the character codes %4</source>
+        <translation>il display mostra %1 del %2 di %3 come uno spazio: visualizza i codici di carattere %4</translation>
+    </message>
+    </context>
 <context>
     <name>rung::model::Compare</name>
     <message>
@@ -8391,7 +8411,22 @@ Valutazione: %4 µs (%5..%6)</translation>
         <source>%1: %2 is not an index register (%3)</source>
         <translation>%1: %2 non è un registro indice (%3)</translation>
     </message>
-</context>
+<message>
+        <location line="-205" />
+        <source>The text "%1" has no closing quote; a quote inside a text is written twice ("")</source>
+        <translation>Il testo "%1" non ha le virgolette di chiusura; le virgolette dentro un testo si scrivono due volte ("")</translation>
+    </message>
+    <message>
+        <location line="+53" />
+        <source>"%1": a text in quotes is not expected here</source>
+        <translation>"%1": qui non è atteso un testo tra virgolette</translation>
+    </message>
+    <message>
+        <location line="+1" />
+        <source>%1: a text in double quotes is expected here, as "%2"</source>
+        <translation>%1: qui è atteso un testo tra virgolette doppie, come "%2"</translation>
+    </message>
+    </context>
 <context>
     <name>rung::model::Ladder</name>
     <message>
@@ -10947,7 +10982,37 @@ Valutazione: %4 µs (%5..%6)</translation>
         <source>edits the page's fields in turn</source>
         <translation>abilita a turno la modifica dei campi della pagina</translation>
     </message>
-</context>
+<message>
+        <location line="+34" />
+        <source>the terminal's note of the last variable changed from the keys is not modelled; the word stays as the program leaves it</source>
+        <translation>l'indicazione dell'ultima variabile modificata tramite il terminale non è modellata; la word resta come la lascia il programma</translation>
+    </message>
+    <message>
+        <location line="+170" />
+        <source>characters per word</source>
+        <translation>caratteri per word</translation>
+    </message>
+    <message>
+        <location line="+4" />
+        <source>text</source>
+        <translation>testo</translation>
+    </message>
+    <message>
+        <location line="+2" />
+        <source>Store a text from D: 1 or 2 characters per word, high byte first</source>
+        <translation>Salva un testo a partire da D: 1 o 2 caratteri per word, iniziando dalla parte alta</translation>
+    </message>
+    <message>
+        <location line="+53" />
+        <source>scrolls through the pages the program enables; while a value is entered, switches between steps of one and editing digit by digit</source>
+        <translation>scorre le pagine abilitate dal programma; durante l'immissione di un valore passa dalla modifica incrementale alla modifica a cifre</translation>
+    </message>
+    <message>
+        <location line="+11" />
+        <source>edits the page's fields in turn, storing each value; held for 2 s, opens the password page</source>
+        <translation>abilita in sequenza la modifica dei campi della pagina, salvando ogni valore; tenuto premuto per 2 s, apre la pagina della password</translation>
+    </message>
+    </context>
 <context>
     <name>rung::model::Trigger</name>
     <message>

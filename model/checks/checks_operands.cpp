@@ -65,6 +65,14 @@ void ListChecker::atWordOperand(Finding &f, int i, std::size_t k) {
                : o.kind == Operand::Kind::Text   ? o.text.trimmed()
                                                  : formatOperand(m_t, o);
     };
+    if (ins.operands[k].kind == Operand::Kind::String) {
+        // A quoted text: the first quote after the mnemonic (MOVTXT takes one text).
+        const QString line = m_sourceLines.value(ins.line - 1);
+        if (const qsizetype quote = line.indexOf(QLatin1Char('"'), std::max(0, ins.column - 1));
+            quote >= 0)
+            f.diagnostic.location.column = static_cast<int>(quote) + 1;
+        return;
+    }
     const QString wanted = written(ins.operands[k]);
     int skip = 0; // earlier operands written the same way
     for (std::size_t j = 0; j < k; ++j)
@@ -117,6 +125,9 @@ void ListChecker::operands() {
             else
                 atWordOperand(f, i, static_cast<std::size_t>(b.operand));
         }
+        for (std::size_t k = 0; k < ins.operands.size(); ++k)
+            if (const QString why = undisplayedCharacters(m_t, ins, k); !why.isEmpty())
+                atWordOperand(add("OP007", Severity::Warning, i, why), i, k);
         for (std::size_t k = 0; k < ins.operands.size(); ++k) {
             const Operand &o = ins.operands[k];
             const OperandKind kind =

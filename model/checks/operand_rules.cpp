@@ -107,6 +107,75 @@ QString areaPrefixes(const Target &target, const std::vector<const char *> &keys
     return prefixes.join(QStringLiteral(", "));
 }
 
+// A text's destination and how many characters a word holds (OperandSpec::storedFrom,
+// charactersPerWord); no destination when operand storedFrom is no device.
+struct StoredText {
+    const Operand *dest = nullptr;
+    int perWord = 1;
+};
+
+StoredText storedTextOf(const Instruction &ins, const OperandSpec &rule) {
+    StoredText t;
+    const auto operandAt = [&ins](int k) -> const Operand * {
+        return k >= 0 && static_cast<std::size_t>(k) < ins.operands.size()
+                   ? &ins.operands[static_cast<std::size_t>(k)]
+                   : nullptr;
+    };
+    if (const Operand *d = operandAt(rule.storedFrom);
+        d && d->kind == Operand::Kind::Device && d->address.valid() && !d->modified())
+        t.dest = d;
+    if (const Operand *n = operandAt(rule.charactersPerWord);
+        n && n->kind == Operand::Kind::Constant && n->constant.value == 2)
+        t.perWord = 2;
+    return t;
+}
+
+// One character of a text as a message shows it: itself, or its code when it has no glyph.
+QString shownCharacter(const QString &text, qsizetype i) {
+    const QChar c = text[i];
+    if (c.unicode() < 32 || (c.unicode() >= 127 && c.unicode() < 160))
+        return QStringLiteral("\\x%1").arg(c.unicode(), 2, 16, QLatin1Char('0'));
+    return QLatin1Char('\'') + text.mid(i, c.isHighSurrogate() ? 2 : 1) + QLatin1Char('\'');
+}
+
+// A text that does not fit where it is stored: a character of more than a byte, two
+// characters a word into words of 8 bits, more words than its area has from D.
+QString storedTextBreach(const Target &target, const Instruction &ins, std::size_t k) {
+    const InstructionSpec &spec = *ins.spec;
+    const OperandSpec &rule = spec.operands[k];
+    const QString &text = ins.operands[k].text;
+    for (qsizetype i = 0; i < text.size(); ++i)
+        if (text[i].unicode() > 255)
+            return ChecksTr::tr("the %1 of %2 holds %3 (character %4), which does not fit a "
+                                "byte: a character is stored as its Latin-1 code, 0..255")
+                .arg(slotName(rule, k), spec.mnemonic, shownCharacter(text, i))
+                .arg(i + 1);
+    const StoredText s = storedTextOf(ins, rule);
+    if (!s.dest)
+        return {};
+    const Address &first = s.dest->address;
+    const Area &area = target.area(first.area);
+    if (s.perWord == 2 && area.wordBits < 16)
+        return ChecksTr::tr("%1 stores two characters a word, but %2 holds %3 bits a word: "
+                            "write 1 character per word")
+            .arg(spec.mnemonic, formatAddress(target, first))
+            .arg(area.wordBits);
+    const qint64 words = s.perWord == 2 ? (text.size() + 1) / 2 : text.size();
+    if (words < 1)
+        return {};
+    if (const std::optional<Address> missing = runBreaks(target, first, words, true)) {
+        Address last = first;
+        last.index = static_cast<int>(std::min<qint64>(qint64{first.index} + words - 1, INT_MAX));
+        return ChecksTr::tr("the %1 of %2 (length %3) is stored in %4..%5, but %6 does not "
+                            "exist: the text is too long for its place")
+            .arg(slotName(rule, k), spec.mnemonic)
+            .arg(text.size())
+            .arg(formatAddress(target, first), formatAddress(target, last),
+                 formatAddress(target, *missing));
+    }
+    return {};
+}
+
 QString choiceList(const QStringList &all) {
     QStringList values = all;
     const QString last = values.takeLast();
@@ -197,6 +266,11 @@ std::vector<OperandBreach> operandBreaches(const Target &target, const Instructi
             // PL110 keeps a word in a constant slot verbatim; a slot with a range wants a number.
             found.push_back({at, ChecksTr::tr("the %1 of %2 must be a number, not %3")
                                      .arg(slotName(rule, k), spec.mnemonic, o.text.trimmed())});
+            continue;
+        }
+        if (o.kind == Operand::Kind::String) {
+            if (const QString why = storedTextBreach(target, ins, k); !why.isEmpty())
+                found.push_back({at, why});
             continue;
         }
         if (o.kind != Operand::Kind::Device || !o.address.valid() ||
@@ -380,6 +454,55 @@ std::vector<OperandBreach> operandBreaches(const Target &target, const Instructi
 
 QString notSimulatedMessage(const InstructionSpec &spec) {
     return ChecksTr::tr("%1 is not simulated: it does nothing in the simulator").arg(spec.mnemonic);
+}
+
+} // namespace rung::model
+
+namespace rung::model {
+
+std::vector<std::int32_t> textWords(const QString &text, int charactersPerWord) {
+    std::vector<std::int32_t> words;
+    const auto code = [&text](qsizetype i) -> std::int32_t {
+        return i < text.size() && text[i].unicode() <= 255 ? text[i].unicode() : 0;
+    };
+    if (charactersPerWord == 2) {
+        for (qsizetype i = 0; i < text.size(); i += 2)
+            words.push_back(code(i) << 8 | code(i + 1));
+    } else {
+        for (qsizetype i = 0; i < text.size(); ++i)
+            words.push_back(code(i));
+    }
+    return words;
+}
+
+QString undisplayedCharacters(const Target &target, const Instruction &ins, std::size_t k) {
+    if (!ins.spec || k >= ins.operands.size() || k >= ins.spec->operands.size())
+        return {};
+    const Operand &o = ins.operands[k];
+    const PanelDisplay &d = target.panel.display;
+    if (o.kind != Operand::Kind::String || d.charArea.isEmpty())
+        return {};
+    const StoredText s = storedTextOf(ins, ins.spec->operands[k]);
+    if (!s.dest || target.area(s.dest->address.area).key != d.charArea)
+        return {};
+    QStringList missed;
+    for (qsizetype i = 0; i < o.text.size(); ++i) {
+        const char16_t c = o.text[i].unicode();
+        if (c > 255 || d.shows(c))
+            continue; // beyond a byte: OP005 says it
+        const QString shown = shownCharacter(o.text, i);
+        if (!missed.contains(shown))
+            missed << shown;
+    }
+    if (missed.isEmpty())
+        return {};
+    QStringList codes;
+    for (const auto &[low, high] : d.shownCodes)
+        codes << QStringLiteral("%1..%2").arg(low).arg(high);
+    return ChecksTr::tr("the display shows %1 of the %2 of %3 as a space: it draws the "
+                        "character codes %4")
+        .arg(missed.join(QStringLiteral(", ")), slotName(ins.spec->operands[k], k),
+             ins.spec->mnemonic, codes.join(QStringLiteral(", ")));
 }
 
 } // namespace rung::model

@@ -27,4 +27,15 @@ bool controlWordFits(ControlWord control, qint64 word);
 // warning SIM100 that `check` gives and the simulator gives again when a simulation starts.
 QString notSimulatedMessage(const InstructionSpec &spec);
 
+// The words a text (Operand::Kind::String) is stored as (OperandSpec::storedFrom, PL110 MOVTXT,
+// PL110 manual 4.2.10): each character's Latin-1 code a word, or two characters a word, "iniziando
+// dalla parte alta della word" (an odd last character leaves the low byte 0). A character
+// beyond Latin-1 is stored as 0; operandBreaches refuses it.
+std::vector<std::int32_t> textWords(const QString &text, int charactersPerWord);
+
+// The characters of operand k, a text stored in the front panel's display (its character
+// area, FrontPanel::display.shownCodes), that the display does not draw, with why; empty when
+// it draws them all or the text goes elsewhere. `check` warns it (OP007).
+QString undisplayedCharacters(const Target &target, const Instruction &ins, std::size_t k);
+
 } // namespace rung::model

@@ -221,6 +221,13 @@ QString Exporter::expression(const Operand &o, bool value) {
         }
     case Operand::Kind::Text:
         break;
+    case Operand::Kind::String: {
+        // An IEC 61131-3 STRING literal: in single quotes, $ escaping a quote and a dollar.
+        QString text = o.text;
+        text.replace(QLatin1Char('$'), QLatin1String("$$"));
+        text.replace(QLatin1Char('\''), QLatin1String("$'"));
+        return QLatin1Char('\'') + text + QLatin1Char('\'');
+    }
     }
     return o.text;
 }

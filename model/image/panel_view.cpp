@@ -138,11 +138,12 @@ void digitsView(const Target &target, const PanelDisplay &d, const PanelInput &i
                           : QString::number(*second) + QLatin1Char(' ') + QString::number(*first);
 }
 
-// A byte of the character area as the display draws it: printable ASCII as is, the rest
-// (0 included, which a cleared area that was never filled holds) as a space.
-QChar displayChar(qint64 byte) {
+// A byte of the character area as the display draws it: the codes the table says it shows
+// as their Latin-1 characters, the rest (0 included, which a cleared area that was never
+// filled holds) as a space.
+QChar displayChar(const PanelDisplay &d, qint64 byte) {
     const int c = static_cast<int>(byte & 0xff);
-    return c >= 32 && c < 127 ? QChar(c) : (c >= 160 ? QChar(c) : QChar(' '));
+    return d.shows(c) ? QChar(c) : QChar(' ');
 }
 
 void putText(QString &line, int column, const QString &text) {
@@ -194,8 +195,19 @@ void systemPage(const Target &target, const ModelVariant *model, const PanelInpu
         put(QString::fromLatin1(titles[page - 3]));
 }
 
+// Where digit n (0: the units) of a formatted field stands in it, the decimal point skipped.
+int digitColumn(const QString &text, int n, int decimals) {
+    const int at = static_cast<int>(text.size()) - 1 - n - (decimals > 0 && n >= decimals ? 1 : 0);
+    return std::max(at, -1);
+}
+
 void fieldsView(const Target &target, const PanelDisplay &d, const PanelInput &in, PanelView &v) {
-    for (const PanelField &f : d.fields) {
+    const TerminalState *keys = in.terminal;
+    for (std::size_t index = 0; index < d.fields.size(); ++index) {
+        const PanelField &f = d.fields[index];
+        // The field the keys edit shows the value being entered, not yet stored (5.2).
+        const bool editing = keys && keys->mode == TerminalState::Mode::Field &&
+                             keys->field == static_cast<int>(index) && keys->page == v.page;
         const auto base = panelDevice(target, f.first);
         if (!base)
             continue;
@@ -224,7 +236,7 @@ void fieldsView(const Target &target, const PanelDisplay &d, const PanelInput &i
         if (!device) {
             text = QStringLiteral("?");
         } else {
-            qint64 value = readValue(in, v, *device);
+            qint64 value = editing ? keys->value : readValue(in, v, *device);
             if (at(10) == 1)
                 value &= 0xffff;
             else if (at(10) == 0)
@@ -233,10 +245,31 @@ void fieldsView(const Target &target, const PanelDisplay &d, const PanelInput &i
                                     at(13) == 1);
         }
         putText(v.lines[row], column, text);
-        v.fields.push_back({row, column,
-                            static_cast<int>(std::min<qsizetype>(text.size(), d.columns - column)),
-                            state == 2});
+        const int length = static_cast<int>(std::min<qsizetype>(text.size(), d.columns - column));
+        const int cursor = editing && keys->digit >= 0
+                               ? digitColumn(text, keys->digit, std::clamp(at(12), 0, 10))
+                               : -1;
+        v.fields.push_back(
+            {row, column, length, state == 2, editing, cursor < length ? cursor : -1});
     }
+}
+
+// The password page (PL110 manual 5.5, page 253: "*** PASSWORD ***" over the number entered),
+// the digit SWAP chose marked.
+void passwordView(const PanelDisplay &d, const TerminalState &keys, PanelView &v) {
+    v.page = d.passwordPage;
+    const auto centred = [&](int row, const QString &text) {
+        const int column = std::max(0, (d.columns - static_cast<int>(text.size())) / 2);
+        putText(v.lines[row], column, text);
+        return column;
+    };
+    centred(1, QStringLiteral("*** PASSWORD ***"));
+    const int digits = std::max(1, d.passwordDigits);
+    const QString number =
+        QStringLiteral("%1").arg(keys.value, digits, 10, QLatin1Char('0')).right(digits);
+    const int column = centred(4, number);
+    v.fields.push_back({4, column, digits, true, true,
+                        keys.digit >= 0 && keys.digit < digits ? digits - 1 - keys.digit : -1});
 }
 
 void textView(const Target &target, const ModelVariant *model, const PanelDisplay &d,
@@ -246,13 +279,20 @@ void textView(const Target &target, const ModelVariant *model, const PanelDispla
     if (!in.snapshot)
         return;
     v.page = static_cast<int>(wordOf(in, v, panelDevice(target, d.pageShownDevice)));
+    if (in.terminal) {
+        v.brightness = terminalBrightness(target, *in.snapshot, *in.terminal);
+        if (in.terminal->mode == TerminalState::Mode::Password && d.passwordPage > 0) {
+            passwordView(d, *in.terminal, v);
+            return;
+        }
+    }
     if (v.page >= d.firstUserPage && v.page < d.firstUserPage + d.userPages) {
         const Area *chars = areaByKey(target, d.charArea);
         for (int r = 0; chars && r < d.rows; ++r)
             for (int c = 0; c < d.columns; ++c)
                 if (const auto a =
                         panelDevice(target, chars->prefix + QString::number(r * d.columns + c)))
-                    v.lines[r][c] = displayChar(readValue(in, v, *a));
+                    v.lines[r][c] = displayChar(d, readValue(in, v, *a));
         fieldsView(target, d, in, v);
     } else if (v.page >= 1 && v.page <= d.systemPages) {
         systemPage(target, model, in, v.page, v);
@@ -320,7 +360,8 @@ PanelView panelView(const Target &target, const ModelVariant *model, const Panel
     if (v.display != DisplayKind::None || p.display.kind != DisplayKind::Text)
         for (const PanelKey &k : p.keys)
             if (const auto a = panelDevice(target, k.device))
-                v.keys.push_back({k.label, *a, readBit(input, v, *a), k.shortcut, k.meaning});
+                v.keys.push_back(
+                    {k.label, *a, readBit(input, v, *a), k.shortcut, k.meaning, k.role});
     switch (v.display) {
     case DisplayKind::Digits:
         digitsView(target, p.display, input, v);

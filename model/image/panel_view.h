@@ -7,6 +7,7 @@
 // the editor's FrontPanel draws the result, the tests check it without a display.
 
 #include "model/image/monitor_source.h"
+#include "model/image/panel_keys.h"
 #include "model/target/front_panel.h"
 #include "model/target/target.h"
 
@@ -41,6 +42,7 @@ struct PanelKeyView {
     bool pressed = false;
     QString shortcut;
     const char *meaning = nullptr;
+    PanelKeyRole role = PanelKeyRole::Other;
 };
 
 // A numeric field drawn over a page's text (PL110 SM118..): where it is, for the reverse
@@ -50,6 +52,8 @@ struct PanelFieldView {
     int column = 0; // 0-based
     int length = 0;
     bool editable = false; // state 2, "Modifica"
+    bool editing = false;  // the keys edit it now: shown in reverse (PL110 manual 5.2)
+    int cursor = -1;       // the character of the digit UP / DOWN change, -1: the value
 };
 
 struct PanelView {
@@ -69,7 +73,8 @@ struct PanelView {
     QStringList lines;
     QStringList lineLabels; // IoLines: the first device of each line ("o00")
     std::vector<PanelFieldView> fields;
-    int page = 0; // Text: the page shown (SM105), 0 none
+    int page = 0; // Text: the page shown (SM105), 0 none; the password page while it is open
+    int brightness = 100; // Text: % (the standby dims it, model/image/panel_keys.h)
     // Translated, empty when there is nothing to say: why the display shows nothing or what
     // the manual leaves open ("display mode 7: the manual describes modes 3 and 4").
     QString note;
@@ -83,6 +88,8 @@ struct PanelInput {
     MonitorSource::RunState runState = MonitorSource::RunState::Offline;
     bool fault = false; // the source reports an error
     qint64 nowMs = 0;   // wall-clock ms for the blinking lamps
+    // The terminal's keys (a field being edited, the password page, the standby); null: none.
+    const TerminalState *terminal = nullptr;
 };
 
 // True when the target (on this model, null: the default) has a panel to show.

@@ -13,10 +13,13 @@
 namespace rung::model {
 
 struct Operand {
-    enum class Kind : std::uint8_t { Device, Constant, Text } kind = Kind::Device;
+    enum class Kind : std::uint8_t { Device, Constant, Text, String } kind = Kind::Device;
     Address address;   // Kind::Device
     Constant constant; // Kind::Constant
-    QString text;      // Kind::Text: PL110 FM operator, labels kept verbatim
+    // Kind::Text: PL110 FM operator, labels kept verbatim. Kind::String: a text written in
+    // double quotes (PL110 MOVTXT's "TESTO DISPLAY"), held here without its quotes; a quote
+    // inside it is written twice in a listing.
+    QString text;
     // Vigor, as in PLC concepts (WPLSoft family): a Device with digits n > 0 is the word of the
     // n x 4 bits from `address` (K4Y0 = Y0..Y17, K1M20 = M20..M23,
     // ConstantNotation::digitGroups).

@@ -23,10 +23,32 @@ constexpr std::size_t kMaxTokens = 16;
 // Longer tokens are no mnemonic, address or constant of any family.
 constexpr qsizetype kMaxTokenLength = 64;
 
+// A quoted text (PL110 MOVTXT's "TESTO DISPLAY") may be longer than any other operand: a
+// display of 8 x 21 characters and then some, so that a text too long for its words is told
+// by the check that counts them, not cut here.
+constexpr qsizetype kMaxTextLength = 1024;
+
 struct Token {
-    QString text;
+    QString text;   // a quoted token: the characters between the quotes, "" read as "
     int column = 0; // 1-based
+    bool quoted = false;
+    bool unterminated = false; // a quoted token without its closing quote
 };
+
+// Where a quoted text that starts at `open` ends: the index of its closing quote, -1 when the
+// line ends first. A quote written twice inside it is one quote of the text.
+qsizetype closingQuote(QStringView line, qsizetype open) {
+    for (qsizetype i = open + 1; i < line.size(); ++i) {
+        if (line[i] != QLatin1Char('"'))
+            continue;
+        if (i + 1 < line.size() && line[i + 1] == QLatin1Char('"')) {
+            ++i;
+            continue;
+        }
+        return i;
+    }
+    return -1;
+}
 
 std::vector<Token> tokenize(QStringView line, int firstColumn) {
     std::vector<Token> tokens;
@@ -37,14 +59,42 @@ std::vector<Token> tokenize(QStringView line, int firstColumn) {
         if (i >= line.size())
             break;
         const qsizetype start = i;
-        while (i < line.size() && !line[i].isSpace())
-            ++i;
-        tokens.push_back({line.mid(start, std::min(i - start, kMaxTokenLength + 1)).toString(),
-                          firstColumn + static_cast<int>(start)});
+        if (line[i] == QLatin1Char('"')) {
+            const qsizetype close = closingQuote(line, i);
+            const qsizetype end = close < 0 ? line.size() : close;
+            QString text = line.mid(start + 1, std::min(end - start - 1, kMaxTextLength + 1))
+                               .toString()
+                               .replace(QLatin1String("\"\""), QLatin1String("\""));
+            tokens.push_back(
+                {std::move(text), firstColumn + static_cast<int>(start), true, close < 0});
+            i = close < 0 ? line.size() : close + 1;
+        } else {
+            while (i < line.size() && !line[i].isSpace())
+                ++i;
+            tokens.push_back({line.mid(start, std::min(i - start, kMaxTokenLength + 1)).toString(),
+                              firstColumn + static_cast<int>(start)});
+        }
         if (tokens.size() > kMaxTokens)
             break;
     }
     return tokens;
+}
+
+// Where the comment of a line starts (';' or '//' outside a quoted text), -1: none.
+qsizetype commentStart(QStringView line) {
+    for (qsizetype i = 0; i < line.size(); ++i) {
+        const QChar c = line[i];
+        if (c == QLatin1Char('"')) {
+            const qsizetype close = closingQuote(line, i);
+            if (close < 0)
+                return -1;
+            i = close;
+        } else if (c == QLatin1Char(';') ||
+                   (c == QLatin1Char('/') && i + 1 < line.size() && line[i + 1] == c)) {
+            return i;
+        }
+    }
+    return -1;
 }
 
 bool allDigits(QStringView s) {
@@ -121,10 +171,8 @@ private:
     void parseLine(QStringView line, int lineNumber) {
         // Comments: ';' or '//' to the end of the line. A comment on a line of its own is
         // kept for the instruction that follows (rung comments travel IL -> ladder -> IL).
-        qsizetype cut = line.indexOf(QLatin1Char(';'));
-        const qsizetype slashes = line.indexOf(QLatin1String("//"));
-        if (slashes >= 0 && (cut < 0 || slashes < cut))
-            cut = slashes;
+        // Not inside a quoted text: MOVTXT V0 1 "A;B" holds a semicolon.
+        const qsizetype cut = commentStart(line);
         QStringView code = cut >= 0 ? line.left(cut) : line;
         QString comment;
         if (cut >= 0) {
@@ -157,7 +205,7 @@ private:
         ins.comment = std::move(comment);
         std::size_t used = 0;
         QString fusedNumber;
-        if (tokens[0].text.size() > kMaxTokenLength ||
+        if (tokens[0].quoted || tokens[0].text.size() > kMaxTokenLength ||
             !matchMnemonic(tokens, &ins.spec, &used, &fusedNumber)) {
             // A section header may hold spaces ("[Interrupt 1]"): quote it whole.
             Token shown = tokens[0];
@@ -230,7 +278,7 @@ private:
                        std::size_t *used, QString *fusedNumber) const {
         // Two-word mnemonics first: "LD NOT", "AND LD", "OUT NOT", "KEEP (11)". A second word
         // with a digit outside brackets is an operand; skipping the lookup halves the work.
-        if (tokens.size() >= 2 &&
+        if (tokens.size() >= 2 && !tokens[1].quoted &&
             (isLetters(tokens[1].text) || tokens[1].text.startsWith(QLatin1Char('(')))) {
             if (const InstructionSpec *s =
                     m_target.findInstruction(tokens[0].text + QLatin1Char(' ') + tokens[1].text)) {
@@ -377,14 +425,22 @@ private:
 
     bool readOperands(Instruction *ins, std::vector<Token> tokens, int lineNumber,
                       const Token &mnemonic) {
-        for (const Token &t : tokens)
-            if (t.text.size() > kMaxTokenLength) {
+        for (const Token &t : tokens) {
+            if (t.text.size() > (t.quoted ? kMaxTextLength : kMaxTokenLength)) {
                 error(lineNumber, t.column,
                       tr("'%1...' is too long for an operand").arg(t.text.left(20)));
                 return false;
             }
+            if (t.unterminated) {
+                error(lineNumber, t.column,
+                      tr("The text \"%1\" has no closing quote; a quote inside a text is "
+                         "written twice (\"\")")
+                          .arg(t.text.left(20)));
+                return false;
+            }
+        }
         // An infix operand is one token holding two operands.
-        if (tokens.size() == 1) {
+        if (tokens.size() == 1 && !tokens[0].quoted) {
             const bool contact = isContact(ins->spec->op);
             const bool output = ins->spec->op == Op::Out;
             const QString &t = tokens[0].text;
@@ -404,7 +460,8 @@ private:
         }
         // "TIM 000" written with a space is one operand (CPM1 "LD TIM 000").
         for (std::size_t i = 0; i + 1 < tokens.size(); ++i) {
-            if (isLetters(tokens[i].text) && allDigits(QStringView(tokens[i + 1].text).left(1))) {
+            if (!tokens[i].quoted && !tokens[i + 1].quoted && isLetters(tokens[i].text) &&
+                allDigits(QStringView(tokens[i + 1].text).left(1))) {
                 const bool isPrefix =
                     std::any_of(m_target.areas.begin(), m_target.areas.end(), [&](const Area &a) {
                         const auto same = [&](const QString &p) {
@@ -424,6 +481,10 @@ private:
         if (tokens.size() < ins->spec->operands.size()) {
             std::vector<Token> split;
             for (const Token &t : tokens) {
+                if (t.quoted) {
+                    split.push_back(t);
+                    continue;
+                }
                 int offset = 0;
                 for (const QString &part : t.text.split(QLatin1Char(','))) {
                     if (!part.isEmpty() && split.size() <= kMaxTokens)
@@ -562,6 +623,19 @@ private:
 
     bool readOperand(OperandKind kind, const Token &token, int lineNumber, Operand *out) {
         const QString &t = token.text;
+        // A text in quotes stands in a text slot only, and a text slot takes nothing else.
+        if (token.quoted || kind == OperandKind::Text) {
+            if (token.quoted && kind == OperandKind::Text) {
+                out->kind = Operand::Kind::String;
+                out->text = t;
+                return true;
+            }
+            error(lineNumber, token.column,
+                  token.quoted ? tr("\"%1\": a text in quotes is not expected here").arg(t.left(40))
+                               : tr("%1: a text in double quotes is expected here, as \"%2\"")
+                                     .arg(t.left(40), t.left(40)));
+            return false;
+        }
         if (t.size() > kMaxTokenLength) {
             error(lineNumber, token.column,
                   tr("'%1...' is too long for an operand").arg(t.left(20)));

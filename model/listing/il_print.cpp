@@ -24,6 +24,12 @@ QString withModifiers(const Target &target, const Operand &operand, QString text
     return text;
 }
 
+// A text as a listing writes it: in double quotes, a quote inside it twice.
+QString quoted(const QString &text) {
+    return QLatin1Char('"') + QString(text).replace(QLatin1String("\""), QLatin1String("\"\"")) +
+           QLatin1Char('"');
+}
+
 QString operandText(const Target &target, const InstructionSpec &spec, std::size_t index,
                     const Operand &operand) {
     if (operand.modified())
@@ -31,6 +37,8 @@ QString operandText(const Target &target, const InstructionSpec &spec, std::size
     switch (operand.kind) {
     case Operand::Kind::Text:
         return operand.text;
+    case Operand::Kind::String:
+        return quoted(operand.text);
     case Operand::Kind::Constant:
         if (index < spec.operands.size() && spec.operands[index].kind == OperandKind::Label)
             return QStringLiteral("%1").arg(operand.constant.value, 2, 10, QLatin1Char('0'));
@@ -62,6 +70,8 @@ QString formatOperand(const Target &target, const Operand &operand) {
         return withModifiers(target, operand, formatConstant(target, operand.constant));
     case Operand::Kind::Text:
         return operand.text;
+    case Operand::Kind::String:
+        return quoted(operand.text);
     }
     return {};
 }

@@ -8,6 +8,7 @@
 
 #include <QString>
 #include <cstdint>
+#include <utility>
 #include <vector>
 
 namespace rung::model {
@@ -87,6 +88,29 @@ struct PanelDisplay {
     int userPages = 0;
     std::vector<PanelField> fields;
     std::vector<PanelAreaCode> areaCodes;
+    // Text: the character codes the display draws as characters, ranges inclusive; any other
+    // byte is drawn as a space. A text stored in the character area with another character
+    // is warned by `check` (OP007).
+    std::vector<std::pair<int, int>> shownCodes;
+    bool shows(int code) const {
+        for (const auto &[low, high] : shownCodes)
+            if (code >= low && code <= high)
+                return true;
+        return false;
+    }
+    // Text: the keys editing the fields and the password page (model/image/panel_keys.h):
+    // SET held this long opens the page `passwordPage`, where a number of `passwordDigits`
+    // is entered into `passwordDevice`; a field of access 1 is edited only while that word
+    // holds `userPassword`. 0 / empty: the terminal edits nothing.
+    int passwordPage = 0;
+    QString passwordDevice;
+    int passwordDigits = 0;
+    int userPassword = 0;
+    int passwordHoldMs = 0;
+    // Text: the standby (the brightness in % after `standbyDelayDevice` minutes without a
+    // key; a delay of 0 turns it off); empty: the display is never dimmed.
+    QString standbyBrightnessDevice;
+    QString standbyDelayDevice;
     // IoLines: the areas shown, in order, and how many to a line.
     std::vector<QString> lineAreas;
     int perLine = 16;
@@ -102,6 +126,11 @@ struct PanelKnob {
     const char *meaning = nullptr; // QT_TRANSLATE_NOOP("rung::model::Target", ...)
 };
 
+// What a key does on a text display's terminal (model/image/panel_keys.h): SWAP steps the
+// pages (the engine) and, while a field is edited, the digit; UP / DOWN change the value; SET
+// edits the fields in turn and, held, opens the password page.
+enum class PanelKeyRole : std::uint8_t { Other, Swap, Up, Down, Set };
+
 // A key: held down, its bit is 1 (PL110 SM110: "Il bit a 1 indica che il rispettivo pulsante
 // è attualmente premuto").
 struct PanelKey {
@@ -109,6 +138,7 @@ struct PanelKey {
     QString device;   // its bit
     QString shortcut; // the keyboard key that presses it in the IDE (a QKeySequence text)
     const char *meaning = nullptr; // QT_TRANSLATE_NOOP("rung::model::Target", ...)
+    PanelKeyRole role = PanelKeyRole::Other;
 };
 
 // A word's value at power-on (PL110 SM102 31: every system page enabled).

@@ -258,6 +258,7 @@ enum class OperandKind : std::uint8_t {
     Label,     // jump label number (CPM1 JMP 00..49)
     SetValue,  // timer/counter preset: constant or word device
     Count,     // a repetition count n (ZRST range end is a device, so this is for n only)
+    Text,      // a text in double quotes (PL110 MOVTXT, PL110 manual 4.2.10): Operand::Kind::String
 };
 
 // A control word whose digits say what an instruction does (W353): checked when it is a
@@ -310,6 +311,11 @@ struct OperandSpec {
     // A word operand (Operand::Kind::Text) must be one of these (PL110 FM's operators, 4.2.10).
     std::vector<const char *> allowedTexts;
     ControlWord control = ControlWord::None;
+    // OperandKind::Text: its characters are stored one or two to a word (high byte first)
+    // from the word of operand `storedFrom`, as many to a word as the constant of operand
+    // `charactersPerWord` says (PL110 MOVTXT D n "TEXT", PL110 manual 4.2.10); -1: none.
+    int storedFrom = -1;
+    int charactersPerWord = -1;
 };
 
 // Application-instruction semantics the simulator implements (Op::Apply).

@@ -243,15 +243,12 @@ Target makePl110Target() {
          QT_TRANSLATE_NOOP("rung::model::Target",
                            "COM2 runs the MODBUS slave only: its status, reply delay, supervision "
                            "time and counters are not modelled; the word is plain memory")},
-        {QStringLiteral("SM100"), QStringLiteral("SM101"),
+        // The standby (SM100, SM101) and the password (SM109) are the front panel's
+        // (model/image/panel_keys.h); which variable the keys changed last is not told.
+        {QStringLiteral("SM107"), QStringLiteral("SM108"),
          QT_TRANSLATE_NOOP("rung::model::Target",
-                           "the display's standby (its brightness and the delay after the last "
-                           "key) is not modelled: the front panel's display stays bright; the "
-                           "word is plain memory")},
-        {QStringLiteral("SM107"), QStringLiteral("SM109"),
-         QT_TRANSLATE_NOOP("rung::model::Target",
-                           "the terminal (the last variable changed from the keys, the password "
-                           "entered) is not modelled; the word stays as the program leaves it")},
+                           "the terminal's note of the last variable changed from the keys is "
+                           "not modelled; the word stays as the program leaves it")},
     };
 
     // Contacts. The plain spellings come first: Target::findInstruction(op, mode) returns the
@@ -411,10 +408,26 @@ Target makePl110Target() {
            "S D INDEX");
     // SEND, COM and EXP (4.2.19, 4.2.21): target_pl110_comm.cpp.
     addPl110Communication(t);
+    // MOVTXT D n "TEXT" (4.2.10): the characters of the text from D, one a word
+    // (UN_CARATTERE_PER_WORD, n = 1) or two, "iniziando dalla parte alta della word"
+    // (DUE_CARATTERI_PER_WORD, n = 2); 2.1.16 writes a display row with it: MOVTXT (DISP42,
+    // 1 Char per word) "TESTO DISPLAY". The listing's order is PLProg's box: D, n, the text.
+    OperandSpec textDest = dst;
+    textDest.wholeWords = true;
+    OperandSpec perWord{K::Constant};
+    perWord.allowedValues = {1, 2};
+    perWord.name = QT_TRANSLATE_NOOP("rung::model::Target", "characters per word");
+    OperandSpec text{K::Text};
+    text.storedFrom = 0;
+    text.charactersPerWord = 1;
+    text.name = QT_TRANSLATE_NOOP("rung::model::Target", "text");
+    addBox(t, "MOVTXT", ApplyFunction::NotSimulated, {textDest, perWord, text},
+           QT_TRANSLATE_NOOP("rung::model::Target",
+                             "Store a text from D: 1 or 2 characters per word, high byte first"),
+           "D 1|2 \"TEXT\"");
     // Known to the editor, not simulated (positioning, PID, display).
     const OperandSpec any{K::Constant, true};
     const std::pair<const char *, const char *> boxes[] = {
-        {"MOVTXT", QT_TRANSLATE_NOOP("rung::model::Target", "Store a text string in words")},
         {"RANGE",
          QT_TRANSLATE_NOOP("rung::model::Target", "Set the range of an AI, TR, AQ or PID output")},
         {"TunePOS", QT_TRANSLATE_NOOP("rung::model::Target", "Tune an on/off positioner")},

@@ -48,6 +48,10 @@ void addPl110Panel(Target &t) {
     d.systemPages = 5;
     d.firstUserPage = 17;
     d.userPages = 16;
+    // The manual gives no character set. It clears the area with "il carattere ascii 32
+    // (spazio)" (2.1.16) and its user page of 5.4 shows "25.0°C": printable ASCII and the
+    // Latin-1 characters from 160 (the degree sign is 176) are the product's choice.
+    d.shownCodes = {{32, 126}, {160, 255}};
     // The four parameter fields: SM118..SM134, SM135..SM151, SM152..SM168, SM169..SM185.
     d.fields = {{QStringLiteral("SM118")},
                 {QStringLiteral("SM135")},
@@ -69,16 +73,40 @@ void addPl110Panel(Target &t) {
     };
 
     // 2.1.2 SM110: "Bit0 Pulsante SWAP, Bit1 Pulsante UP, Bit2 Pulsante DOWN, Bit3 Pulsante SET".
+    // 5.2: SWAP "permette di scorrere in modo circolare tutte le pagine" and, a field being
+    // edited, "passare dalla modifica dei campi in modo incrementale alla modifica a cifre";
+    // UP / DOWN change the value by one or by 1*10^n; SET "permette di abilitare la modifica
+    // ai campi numerici ... con la pressione del tasto SET si passa alla modifica da un campo
+    // all'altro", held "per circa 2 secondi ... si entra nella pagina di immissione della
+    // password".
     p.keys = {
         {QStringLiteral("SWAP"), QStringLiteral("SM110.0"), QStringLiteral("S"),
-         QT_TRANSLATE_NOOP("rung::model::Target", "scrolls through the pages the program enables")},
+         QT_TRANSLATE_NOOP("rung::model::Target",
+                           "scrolls through the pages the program enables; while a value is "
+                           "entered, switches between steps of one and editing digit by digit"),
+         PanelKeyRole::Swap},
         {QStringLiteral("UP"), QStringLiteral("SM110.1"), QStringLiteral("Up"),
-         QT_TRANSLATE_NOOP("rung::model::Target", "increments the field being edited")},
+         QT_TRANSLATE_NOOP("rung::model::Target", "increments the field being edited"),
+         PanelKeyRole::Up},
         {QStringLiteral("DOWN"), QStringLiteral("SM110.2"), QStringLiteral("Down"),
-         QT_TRANSLATE_NOOP("rung::model::Target", "decrements the field being edited")},
+         QT_TRANSLATE_NOOP("rung::model::Target", "decrements the field being edited"),
+         PanelKeyRole::Down},
         {QStringLiteral("SET"), QStringLiteral("SM110.3"), QStringLiteral("Return"),
-         QT_TRANSLATE_NOOP("rung::model::Target", "edits the page's fields in turn")},
+         QT_TRANSLATE_NOOP("rung::model::Target",
+                           "edits the page's fields in turn, storing each value; held for 2 s, "
+                           "opens the password page"),
+         PanelKeyRole::Set},
     };
+    // 5.5: page 253 "A questa pagina si accede tenendo premuto per circa 2 secondi il tasto
+    // SET"; 2.1.2 SM109: "per permettere la modifica dei campi input protetti da password è
+    // necessario immettere la password utente 1234"; SM100 / SM101 the standby.
+    d.passwordPage = 253;
+    d.passwordDevice = QStringLiteral("SM109");
+    d.passwordDigits = 4;
+    d.userPassword = 1234;
+    d.passwordHoldMs = 2000;
+    d.standbyBrightnessDevice = QStringLiteral("SM100");
+    d.standbyDelayDevice = QStringLiteral("SM101");
 
     // The defaults of 2.1.2's table: SM101 2 minutes, SM102 31 (every system page), SM104 page
     // 1, each field one digit at rows 2, 4, 6, 8, column 15.

@@ -207,3 +207,69 @@ TEST_F(FrontPanelDock, FollowsTheSimulationAndAnySourceItIsPointedAt) {
     EXPECT_EQ(panel->key(QStringLiteral("SWAP")), nullptr);
     EXPECT_NE(panel->knob(QStringLiteral("VR1")), nullptr);
 }
+
+// PL110 manual 5.4, page 18: "SetPAR1 [Modifiable, Par = VW0, Min = #0, Max = #1400]",
+// "FormatPAR1 [16 bit signed, Tot7, Dec1, Spaces]", "PosPAR1 [Row4, Column10, Free]" -- the
+// program's words for it, and the keys of 5.2 worked with the mouse and the keyboard: SET edits
+// the field (in reverse), UP changes the value, SET (Return) stores it into V0.
+TEST(FrontPanelView, Pl110KeysEditAFieldAndSetStoresTheValue) {
+    PanelFixture f;
+    f.start(rung::testing::pl110(), QStringLiteral("PL110-2A"),
+            "LD SM0.1\nSBIT SMW103 1\nLD SM0.1\nMOV 18 SM104\n"
+            "LD SM0.1\nMOV 2 SM118\nLD SM0.1\nMOV 1 SM119\nLD SM0.1\nMOV 1400 SM127\n"
+            "LD SM0.1\nMOV 7 SM129\nLD SM0.1\nMOV 1 SM130\nLD SM0.1\nMOV 4 SM132\n"
+            "LD SM0.1\nMOV 10 SM133\nLD SM0.1\nMOV 250 V0\nEND\n");
+    f.scan();
+    f.scan();
+    ASSERT_EQ(f.panel.view().page, 18);
+    EXPECT_EQ(f.panel.display()->text().split(QLatin1Char('\n')).value(3),
+              QStringLiteral("             25.0    "));
+    QToolButton *set = f.panel.key(QStringLiteral("SET"));
+    ASSERT_NE(set, nullptr);
+    QTest::mouseClick(set, Qt::LeftButton);
+    ASSERT_EQ(f.panel.terminal().mode, model::TerminalState::Mode::Field);
+    ASSERT_EQ(f.panel.view().fields.size(), 1u);
+    EXPECT_TRUE(f.panel.view().fields[0].editing) << "shown in reverse";
+    f.panel.setFocus();
+    QTest::keyClick(&f.panel, Qt::Key_Up);
+    QTest::keyClick(&f.panel, Qt::Key_Up);
+    EXPECT_EQ(f.panel.display()->text().split(QLatin1Char('\n')).value(3),
+              QStringLiteral("             25.2    "));
+    f.scan();
+    EXPECT_EQ(f.value("V0"), 250) << "not stored before SET";
+    QTest::keyClick(&f.panel, Qt::Key_Return);
+    f.settle();
+    f.scan();
+    EXPECT_EQ(f.value("V0"), 252);
+    EXPECT_EQ(f.panel.terminal().mode, model::TerminalState::Mode::Pages);
+    EXPECT_FALSE(f.panel.view().fields[0].editing);
+}
+
+// 5.5: page 253 "A questa pagina si accede tenendo premuto per circa 2 secondi il tasto SET";
+// the number entered goes to SM109 (2.1.2), which the program reads.
+TEST(FrontPanelView, Pl110SetHeldOpensThePasswordPageAndSetEntersIt) {
+    PanelFixture f;
+    f.start(rung::testing::pl110(), QStringLiteral("PL110-2A"), "LD SM0.0\nMOV SM109 V5\nEND\n");
+    f.scan();
+    QToolButton *set = f.panel.key(QStringLiteral("SET"));
+    ASSERT_NE(set, nullptr);
+    QTest::mousePress(set, Qt::LeftButton);
+    ASSERT_TRUE(eventually(
+        [&] { return f.panel.terminal().mode == model::TerminalState::Mode::Password; }, 10000));
+    QTest::mouseRelease(set, Qt::LeftButton);
+    EXPECT_EQ(f.panel.view().page, 253);
+    EXPECT_TRUE(f.panel.display()->text().contains(QStringLiteral("*** PASSWORD ***")));
+    f.panel.setFocus();
+    QTest::keyClick(&f.panel, Qt::Key_Up); // 1000
+    QTest::keyClick(&f.panel, Qt::Key_S);  // the next digit
+    QTest::keyClick(&f.panel, Qt::Key_Up); // 1100
+    EXPECT_TRUE(f.panel.display()->text().contains(QStringLiteral("1100")));
+    f.scan();
+    EXPECT_EQ(f.value("SM105"), 1) << "SWAP chose the digit: the page did not turn";
+    QTest::keyClick(&f.panel, Qt::Key_Return);
+    f.settle();
+    f.scan();
+    EXPECT_EQ(f.value("SM109"), 1100);
+    EXPECT_EQ(f.value("V5"), 1100);
+    EXPECT_EQ(f.panel.view().page, 1);
+}

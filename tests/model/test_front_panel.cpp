@@ -292,3 +292,219 @@ TEST(FrontPanel, EveryFamilyHasAPanel) {
     for (const model::Family f : model::Target::families())
         EXPECT_TRUE(model::hasFrontPanel(model::Target::get(f), nullptr));
 }
+
+// ---- The PL110-2A's keys editing the fields, the password page, the standby (issue 30) -----
+
+namespace {
+
+using Role = model::PanelKeyRole;
+using Mode = model::TerminalState::Mode;
+
+// 5.4's page 18: "SetPAR1 [Modifiable, Par = VW0, Min = #0, Max = #1400]", "FormatPAR1 [16 bit
+// signed, Tot7, Dec1, Spaces]", "PosPAR1 [Row4, Column10, Free]": field `k` (0-based) as its
+// words from SM118 + 17 k hold it, the limits constants (area 0).
+void editableField(PanelImage &image, int k, const char *variable, int areaCode, int number,
+                   int row, int lowest, int highest, int access = 0) {
+    const int first = 118 + 17 * k;
+    const auto sm = [&](int offset, std::int32_t value) {
+        image.set(QStringLiteral("SM%1").arg(first + offset).toLatin1(), value);
+    };
+    sm(0, 2); // Modifica
+    sm(1, areaCode);
+    sm(2, 0);
+    sm(3, number);
+    sm(4, 0);
+    sm(5, 0);
+    sm(6, lowest);
+    sm(7, 0);
+    sm(8, 0);
+    sm(9, highest);
+    sm(10, 0); // 16 bit signed
+    sm(11, 7);
+    sm(12, 1);
+    sm(13, 0);
+    sm(14, row);
+    sm(15, 10);
+    sm(16, access);
+    (void)variable;
+}
+
+struct Terminal {
+    PanelImage image{rung::testing::pl110()};
+    model::TerminalState state;
+    qint64 wallMs = 0;
+    std::vector<model::TerminalWrite> press(Role role, qint64 holdMs = 0) {
+        auto writes = model::terminalKey(image.target, image.snapshot, state, role, true, wallMs);
+        wallMs += holdMs;
+        model::terminalTick(image.target, image.snapshot, state, wallMs);
+        auto more = model::terminalKey(image.target, image.snapshot, state, role, false, wallMs);
+        writes.insert(writes.end(), more.begin(), more.end());
+        return writes;
+    }
+    model::PanelView view() {
+        model::terminalTick(image.target, image.snapshot, state, wallMs);
+        model::PanelInput in{&image.snapshot, MonitorSource::RunState::Running, false, 0};
+        in.terminal = &state;
+        return model::panelView(image.target, image.target.model(QStringLiteral("PL110-2A")), in);
+    }
+    model::Address at(const char *name) const { return image.at(name); }
+};
+
+} // namespace
+
+// 5.2: "Il tasto SET permette di abilitare la modifica ai campi numerici ... il campo numerico
+// viene visualizzato in reverse"; UP / DOWN "incrementerà di una sola unità oppure di un valore
+// 1*10^n" once SWAP has switched "alla modifica a cifre"; the value stays within SetPAR's
+// Min / Max and SET stores it.
+TEST(FrontPanelKeys, Pl110SetEditsAFieldUpDownChangeItSetStoresIt) {
+    Terminal t;
+    t.image.set("SM105", 18);
+    editableField(t.image, 0, "V0", 1, 0, 4, 0, 1400);
+    t.image.set("V0", 250);
+    EXPECT_EQ(t.view().lines[3], QStringLiteral("             25.0    "));
+    EXPECT_TRUE(t.press(Role::Set).empty());
+    EXPECT_EQ(t.state.mode, Mode::Field);
+    EXPECT_EQ(t.state.value, 250);
+    EXPECT_TRUE(t.press(Role::Up).empty()); // nothing is stored before SET
+    model::PanelView v = t.view();
+    EXPECT_EQ(v.lines[3], QStringLiteral("             25.1    "));
+    ASSERT_EQ(v.fields.size(), 1u);
+    EXPECT_TRUE(v.fields[0].editing);
+    EXPECT_EQ(v.fields[0].cursor, -1);
+    t.press(Role::Swap); // digit by digit: the units (the tenths here) first
+    t.press(Role::Swap); // then the next digit to the left
+    t.press(Role::Up);
+    EXPECT_EQ(t.state.value, 261);
+    v = t.view();
+    EXPECT_EQ(v.lines[3], QStringLiteral("             26.1    "));
+    EXPECT_EQ(v.fields[0].cursor, 5); // "   26.1": the 6
+    t.press(Role::Swap);
+    t.press(Role::Swap);
+    t.press(Role::Up); // + 1000
+    EXPECT_EQ(t.state.value, 1261);
+    t.press(Role::Up); // not beyond Max = #1400
+    EXPECT_EQ(t.state.value, 1400);
+    // SWAP's bit does not reach the engine while a value is entered (it would step the page).
+    EXPECT_FALSE(model::terminalPassesKey(t.state, Role::Swap));
+    EXPECT_TRUE(model::terminalPassesKey(t.state, Role::Up));
+    const auto writes = t.press(Role::Set);
+    ASSERT_EQ(writes.size(), 1u);
+    EXPECT_EQ(writes[0], (model::TerminalWrite{t.at("V0"), 1400}));
+    EXPECT_EQ(t.state.mode, Mode::Pages); // the page's only field: back to the page
+    EXPECT_TRUE(model::terminalPassesKey(t.state, Role::Swap));
+}
+
+// "Se in una pagina ci sono più campi abilitati alla modifica, con la pressione del tasto SET si
+// passa alla modifica da un campo all'altro": each SET stores the field and edits the next; a
+// field only shown (state 1) is passed over.
+TEST(FrontPanelKeys, Pl110SetGoesFromFieldToFieldStoringEach) {
+    Terminal t;
+    t.image.set("SM105", 18);
+    editableField(t.image, 0, "V0", 1, 0, 4, 0, 1400);
+    editableField(t.image, 1, "AI1", 3, 1, 6, 0, 1000);
+    t.image.set("SM135", 1); // field 2 only shown
+    editableField(t.image, 2, "V2", 1, 2, 8, 200, 999);
+    t.image.set("V2", 300);
+    t.press(Role::Set);
+    EXPECT_EQ(t.state.field, 0);
+    t.press(Role::Down); // 0 is Min: stays
+    auto writes = t.press(Role::Set);
+    ASSERT_EQ(writes.size(), 1u);
+    EXPECT_EQ(writes[0], (model::TerminalWrite{t.at("V0"), 0}));
+    EXPECT_EQ(t.state.field, 2);
+    EXPECT_EQ(t.state.value, 300);
+    t.press(Role::Down);
+    writes = t.press(Role::Set);
+    ASSERT_EQ(writes.size(), 1u);
+    EXPECT_EQ(writes[0], (model::TerminalWrite{t.at("V2"), 299}));
+    EXPECT_EQ(t.state.mode, Mode::Pages);
+}
+
+// A page changed by the program (SM106 -> SM105) ends the editing; the value entered is not
+// stored.
+TEST(FrontPanelKeys, Pl110APageChangeLeavesTheFieldUnstored) {
+    Terminal t;
+    t.image.set("SM105", 18);
+    editableField(t.image, 0, "V0", 1, 0, 4, 0, 1400);
+    t.press(Role::Set);
+    t.press(Role::Up);
+    t.image.set("SM105", 17);
+    t.view();
+    EXPECT_EQ(t.state.mode, Mode::Pages);
+    t.image.set("SM105", 18);
+    EXPECT_TRUE(t.press(Role::Up).empty());
+}
+
+// 5.5, page 253: "A questa pagina si accede tenendo premuto per circa 2 secondi il tasto SET.
+// Tramite le frecce e il tasto swap inserire la password per l'accesso alla modifica dei campi
+// parametro"; 2.1.2 SM109 and SM134 / SM185: a field "protetto da password" is edited "solamente
+// dopo aver inserito la password utente 1234".
+TEST(FrontPanelKeys, Pl110SetHeldOpensThePasswordPageThatUnlocksProtectedFields) {
+    Terminal t;
+    t.image.set("SM105", 18);
+    editableField(t.image, 0, "V0", 1, 0, 4, 0, 1400, 1);
+    t.press(Role::Set);
+    EXPECT_EQ(t.state.mode, Mode::Pages) << "protected, no password yet";
+    // Held for less than 2 s: a press; for 2 s: the password page, and its release stores
+    // nothing.
+    EXPECT_TRUE(t.press(Role::Set, 1999).empty());
+    EXPECT_EQ(t.state.mode, Mode::Pages);
+    EXPECT_TRUE(t.press(Role::Set, 2000).empty());
+    ASSERT_EQ(t.state.mode, Mode::Password);
+    model::PanelView v = t.view();
+    EXPECT_EQ(v.page, 253);
+    EXPECT_EQ(v.lines[1].trimmed(), QStringLiteral("*** PASSWORD ***"));
+    EXPECT_EQ(v.lines[4].trimmed(), QStringLiteral("0000"));
+    ASSERT_EQ(v.fields.size(), 1u);
+    EXPECT_EQ(v.fields[0].cursor, 0); // the first digit
+    // 1, 2, 3, 4 digit by digit; DOWN turns a digit round (0 -> 9).
+    t.press(Role::Up);
+    t.press(Role::Swap);
+    t.press(Role::Up);
+    t.press(Role::Up);
+    t.press(Role::Swap);
+    t.press(Role::Down);
+    t.press(Role::Down);
+    t.press(Role::Down);
+    t.press(Role::Down);
+    t.press(Role::Down);
+    t.press(Role::Down);
+    t.press(Role::Down); // 0 -> 9 -> ... -> 3
+    t.press(Role::Swap);
+    for (int k = 0; k < 4; ++k)
+        t.press(Role::Up);
+    EXPECT_EQ(t.view().lines[4].trimmed(), QStringLiteral("1234"));
+    const auto writes = t.press(Role::Set);
+    ASSERT_EQ(writes.size(), 1u);
+    EXPECT_EQ(writes[0], (model::TerminalWrite{t.at("SM109"), 1234}));
+    EXPECT_EQ(t.state.mode, Mode::Pages);
+    t.image.set("SM109", 1234); // as the source stores it
+    EXPECT_EQ(t.view().page, 18);
+    t.press(Role::Set);
+    EXPECT_EQ(t.state.mode, Mode::Field) << "unlocked by the user password";
+}
+
+// 2.1.2 SM100 / SM101: "la modalità standby, se abilitata, si attiva dopo il tempo in minuti
+// specificato da SMW101 dall'ultima pressione di un pulsante"; "bastera la pressione di uno dei
+// pulsanti del terminale per riportare il display alla massima luminosità"; "Il cambio pagina da
+// programma, tramite scrittura di SMW106, equivale alla pressione di un tasto"; "Impostando
+// questa word a 0, si disabilita la modalità standby".
+TEST(FrontPanelKeys, Pl110StandbyDimsAfterTheDelayAndAKeyOrAPageWakesIt) {
+    Terminal t;
+    t.image.set("SM105", 1);
+    t.image.set("SM100", 30);
+    t.image.set("SM101", 2);
+    t.image.snapshot.statistics.timeMs = 119999;
+    EXPECT_EQ(t.view().brightness, 100);
+    t.image.snapshot.statistics.timeMs = 120000;
+    EXPECT_EQ(t.view().brightness, 30);
+    t.press(Role::Up);
+    EXPECT_EQ(t.view().brightness, 100);
+    t.image.snapshot.statistics.timeMs = 240000;
+    EXPECT_EQ(t.view().brightness, 30);
+    t.image.set("SM105", 2); // the program changed the page
+    EXPECT_EQ(t.view().brightness, 100);
+    t.image.set("SM101", 0);
+    t.image.snapshot.statistics.timeMs = 10000000;
+    EXPECT_EQ(t.view().brightness, 100);
+}

@@ -482,13 +482,13 @@ TEST(Pl110Contacts, IfComparesWithASignedHashConstant) {
 // Issue 14: what `check` warns as not simulated (SIM101, PL110 manual 2.1.2) the simulator says
 // again when it starts, with the same words.
 TEST(Pl110Unmodelled, TheSimulatorWarnsAsCheckDoes) {
-    Pl110 s("LD SM0.0\nMOV 50 SM100\nLD SM0.0\nMOV SM109 V0\nLD SM110.3\nOUT Q1\nEND");
+    Pl110 s("LD SM0.0\nMOV 50 SM107\nLD SM0.0\nMOV SM108 V0\nLD SM110.3\nOUT Q1\nEND");
     ASSERT_TRUE(s.result.ok());
     std::vector<model::Diagnostic> fromCheck;
     for (const model::Diagnostic &d : model::checkList(s.parsed.list, {}))
         if (d.code == QLatin1String("SIM101"))
             fromCheck.push_back(d);
-    ASSERT_EQ(fromCheck.size(), 2u); // SM100 and SM109; the SET key SM110.3 is simulated
+    ASSERT_EQ(fromCheck.size(), 2u); // SM107 and SM108; the SET key SM110.3 is simulated
     ASSERT_EQ(s.result.diagnostics.size(), 2u);
     for (std::size_t k = 0; k < 2; ++k) {
         EXPECT_EQ(s.result.diagnostics[k].code, QLatin1String("SIM101"));
